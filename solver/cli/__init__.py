@@ -1,0 +1,67 @@
+"""The ``teleop-ui`` command line: a thin layer over the library.
+
+Each command lives in its own module here (found automatically: every module whose name does
+not start with an underscore) and exposes ``register(subparsers)``; the module's
+``run(args)`` parses nothing itself, calls the library, writes the result and returns the exit
+status. :func:`main` is the one place that turns a :class:`~solver.errors.SolverError` into a
+message on stderr and exit status 2. Heavy imports happen inside ``run`` so that start-up
+stays fast.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+from collections.abc import Sequence
+from pathlib import Path
+
+from solver.errors import SolverError
+
+__all__ = ["main"]
+
+
+def command_modules() -> list[str]:
+    """The command modules, in name order (the order ``teleop-ui --help`` lists them)."""
+    package = Path(__file__).parent
+    return sorted(path.stem for path in package.glob("*.py") if not path.stem.startswith("_"))
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="teleop-ui",
+        description="Design teleoperation UI configurations for heterogeneous robot teams: "
+                    "robot characteristics, relationship rules, team selections.")
+    parser.add_argument("--version", action="version", version=f"%(prog)s {_version()}")
+    subparsers = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
+    for name in command_modules():
+        importlib.import_module(f"solver.cli.{name}").register(subparsers)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run the command line; returns the exit status (0 ok, 1 findings, 2 unusable input)."""
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    try:
+        status: int = args.run(args)
+    except SolverError as error:
+        print(error, file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print("interrupted", file=sys.stderr)
+        return 130
+    except BrokenPipeError:
+        # The reader went away (| head); nothing more to say.
+        sys.stderr.close()
+        return 0
+    return status
+
+
+def _version() -> str:
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        return version("teleop-ui")
+    except PackageNotFoundError:
+        return "unknown"

@@ -1,0 +1,37 @@
+"""Options and helpers the commands share: output format, rule and team arguments, writing."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from solver.team import Team
+
+__all__ = ["add_format", "add_rules", "load_team_argument", "write"]
+
+
+def add_format(parser: argparse.ArgumentParser, choices: tuple[str, ...],
+               default: str = "text") -> None:
+    parser.add_argument("--format", "-f", choices=choices, default=default,
+                        help=f"output format (default: {default})")
+
+
+def add_rules(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--rules", "-r", metavar="RULES.yaml",
+                        help="rule set to use instead of the one the team file names "
+                             "(default: the team's 'rules:', else the shipped paper rules)")
+
+
+def load_team_argument(text: str, rules: str | None) -> Team:
+    """A team given on the command line: a file, or the name of a shipped team (``case3``)."""
+    from solver.team import load_team, resolve_team_path
+
+    path = resolve_team_path(text)
+    return load_team(path, rules, display=text if str(path) == text else str(path))
+
+
+def write(text: str) -> None:
+    sys.stdout.write(text)
+    sys.stdout.flush()

@@ -1,0 +1,103 @@
+"""The project's one exception root and the located faults its errors carry.
+
+Every error a user can cause (a malformed rule file, an unknown robot value, an unreadable URDF)
+is a :class:`SolverError`. It carries one or more :class:`Fault` records, each naming the file,
+line, column and the path inside the document (``team.UAV.sensor_type[1]``), so a whole file is
+validated and every problem in it is reported at once. The CLI catches :class:`SolverError` at
+its boundary, prints the faults and exits with status 2; nothing below the CLI prints or exits.
+
+Not here: the findings of ``teleop-ui check`` (they are results, not errors).
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+from typing import Self
+
+__all__ = [
+    "Fault",
+    "InputError",
+    "Location",
+    "RulesError",
+    "SolverError",
+    "TeamError",
+    "did_you_mean",
+]
+
+
+@dataclass(frozen=True, slots=True)
+class Location:
+    """Where something is: a file, a 1-based line and column, and a path inside the document."""
+
+    file: str
+    line: int | None = None
+    column: int | None = None
+    path: str = ""
+
+    def __str__(self) -> str:
+        text = self.file
+        if self.line is not None:
+            text += f":{self.line}"
+            if self.column is not None:
+                text += f":{self.column}"
+        return text
+
+
+@dataclass(frozen=True, slots=True)
+class Fault:
+    """One problem at one location: ``rules/x.yaml:14:5: team.UAV.sensor_type[1]: message``.
+
+    ``code`` names the kind of problem (``unknown-reference``, ``duplicate-key``, ...) so that
+    tools such as ``teleop-ui check`` can report it under a stable id.
+    """
+
+    location: Location
+    message: str
+    code: str = "invalid"
+
+    def __str__(self) -> str:
+        prefix = f"{self.location}: "
+        if self.location.path:
+            prefix += f"{self.location.path}: "
+        return prefix + self.message
+
+
+class SolverError(Exception):
+    """Root of every error the project raises on purpose; carries the faults that caused it."""
+
+    def __init__(self, faults: Fault | Sequence[Fault]) -> None:
+        self.faults: tuple[Fault, ...] = (faults,) if isinstance(faults, Fault) else tuple(faults)
+        if not self.faults:
+            raise ValueError("a SolverError needs at least one fault")
+        super().__init__("\n".join(str(fault) for fault in self.faults))
+
+    @classmethod
+    def at(cls, file: str, message: str, *, line: int | None = None, column: int | None = None,
+           path: str = "", code: str = "invalid") -> Self:
+        """An error with a single fault, built in one call."""
+        return cls(Fault(Location(file, line, column, path), message, code))
+
+
+class InputError(SolverError, ValueError):
+    """A file or argument cannot be used at all: missing, unreadable, not the expected format."""
+
+
+class RulesError(SolverError, ValueError):
+    """A rule set file is malformed or inconsistent with itself."""
+
+
+class TeamError(SolverError, ValueError):
+    """A team selection file is malformed or does not fit its rule set."""
+
+
+def did_you_mean(word: str, choices: Iterable[str]) -> str:
+    """`` (did you mean 'X'?)`` for the closest choice, or an empty string when none is close."""
+    options = list(choices)
+    matches = difflib.get_close_matches(word, options, n=1, cutoff=0.6)
+    if not matches:
+        lowered = {option.lower(): option for option in options}
+        if word.lower() in lowered:
+            matches = [lowered[word.lower()]]
+    return f" (did you mean {matches[0]!r}?)" if matches else ""

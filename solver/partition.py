@@ -1,0 +1,206 @@
+"""Partitioning valid robots into UI configurations, and numbering the configurations.
+
+A UI configuration is one component per characteristic. A robot can use a configuration when
+each of its values belongs to that configuration's component. When every value belongs to
+exactly one component (the relation "needs the same component" is an equivalence, as in the
+article), each robot has exactly one configuration and the classes are unique.
+
+When a value belongs to several components (overlapping presentation groups or arrangements),
+"can share a component" is no longer transitive and choosing the fewest configurations is a
+minimum hitting-set problem: pick configurations so that every robot can use at least one. It
+is solved exactly by branch and bound (:func:`minimum_cover`); each robot then goes to the
+lowest-numbered chosen configuration it can use. A value in no component (a gap) leaves its
+robots *unserved*: they get the default configuration.
+
+Configurations are numbered 1..k by kinematic type in rule-file order, then by the component
+order of the other characteristics in characteristic order; the default configuration is k+1.
+
+Not here: producing the robots (:mod:`solver.model`, :mod:`solver.enumerate`).
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+
+from solver.constraints import Value
+from solver.rules import Component, RuleSet
+
+__all__ = ["Configuration", "Partition", "minimum_cover", "partition", "sort_key"]
+
+Key = tuple[int, ...]
+
+# Search nodes the exact cover may visit before settling for the best cover found so far.
+COVER_NODE_LIMIT = 200_000
+
+
+@dataclass(frozen=True, slots=True)
+class Configuration:
+    """One UI configuration: its number, its components and the robots it serves."""
+
+    number: int
+    kinematic_type: str
+    key: Key
+    components: tuple[Component, ...]
+    robots: int
+    # served[i]: the values of characteristic i among the robots this configuration serves.
+    served: tuple[tuple[Value, ...], ...]
+
+    def clusters(self, position: int) -> tuple[int, int]:
+        """The fewest and most clusters the served counts of characteristic ``position`` take."""
+        component = self.components[position]
+        counts = [int(v) for v in self.served[position]]
+        return component.clusters(min(counts)), component.clusters(max(counts))
+
+
+@dataclass(frozen=True, slots=True)
+class Partition:
+    """The configurations of one kinematic type, before numbering across the team."""
+
+    kinematic_type: str
+    # (key, robots served, served values per characteristic), in sort-key order.
+    classes: tuple[tuple[Key, int, tuple[tuple[Value, ...], ...]], ...]
+    valid_robots: int
+    unserved_robots: int
+    proven_minimal: bool
+
+
+def sort_key(rules: RuleSet, key: Key) -> Key:
+    """Numbering order: kinematic type first, then the other characteristics in order."""
+    position = rules.key_position
+    return (key[position], *key[:position], *key[position + 1:])
+
+
+def partition(rules: RuleSet, kinematic_type: str, robots: Iterable[Sequence[Value]]) -> Partition:
+    """Partition the valid robots of one kinematic type into the fewest configurations."""
+    characteristics = rules.characteristics
+    if all(c.is_partition for c in characteristics):
+        return _partition_equivalence(rules, kinematic_type, robots)
+    positions = [c.positions for c in characteristics]
+    memberships = [c.membership for c in characteristics]
+    width = len(characteristics)
+    # Overlapping components: gather robots by the configurations each could use.
+    by_candidates: dict[frozenset[Key], list[Sequence[Value]]] = {}
+    unserved = total = 0
+    for robot in robots:
+        total += 1
+        options = [memberships[i][positions[i][robot[i]]] for i in range(width)]
+        if not all(options):
+            unserved += 1
+            continue
+        candidates = frozenset(itertools.product(*options))
+        by_candidates.setdefault(candidates, []).append(robot)
+    chosen, proven = minimum_cover(list(by_candidates))
+    order = sorted(chosen, key=lambda key: sort_key(rules, key))
+    rank = {key: index for index, key in enumerate(order)}
+    counts = dict.fromkeys(order, 0)
+    served: dict[Key, list[set[Value]]] = {key: [set() for _ in range(width)] for key in order}
+    for candidates, members in by_candidates.items():
+        key = min((k for k in candidates if k in rank), key=rank.__getitem__)
+        counts[key] += len(members)
+        for robot in members:
+            for i in range(width):
+                served[key][i].add(robot[i])
+    classes = tuple((key, counts[key], _ordered(rules, served[key])) for key in order)
+    return Partition(kinematic_type, classes, total, unserved, proven)
+
+
+def _partition_equivalence(rules: RuleSet, kinematic_type: str,
+                           robots: Iterable[Sequence[Value]]) -> Partition:
+    characteristics = rules.characteristics
+    width = len(characteristics)
+    lookup = [{value: c.membership[i][0] for i, value in enumerate(c.values) if c.membership[i]}
+              for c in characteristics]
+    counts: dict[Key, int] = {}
+    served: dict[Key, list[set[Value]]] = {}
+    unserved = total = 0
+    for robot in robots:
+        total += 1
+        try:
+            key = tuple(lookup[i][robot[i]] for i in range(width))
+        except KeyError:  # a value in no component: a gap in the rules
+            unserved += 1
+            continue
+        if key in counts:
+            counts[key] += 1
+        else:
+            counts[key] = 1
+            served[key] = [set() for _ in range(width)]
+        sets = served[key]
+        for i in range(width):
+            sets[i].add(robot[i])
+    order = sorted(counts, key=lambda key: sort_key(rules, key))
+    classes = tuple((key, counts[key], _ordered(rules, served[key])) for key in order)
+    return Partition(kinematic_type, classes, total, unserved, True)
+
+
+def _ordered(rules: RuleSet, sets: list[set[Value]]) -> tuple[tuple[Value, ...], ...]:
+    return tuple(tuple(v for v in c.values if v in values)
+                 for c, values in zip(rules.characteristics, sets, strict=True))
+
+
+def minimum_cover(elements: Sequence[frozenset[Key]],
+                  node_limit: int = COVER_NODE_LIMIT) -> tuple[frozenset[Key], bool]:
+    """The fewest keys such that every element contains at least one of them.
+
+    Exact branch and bound: branch on the element with the fewest options, bound by a greedy
+    packing of pairwise disjoint elements (each needs its own key). Returns the cover and
+    whether it is proven minimal (``False`` only when ``node_limit`` nodes were not enough;
+    the cover is then the best found, never worse than greedy).
+    """
+    # An element that contains another is hit whenever the smaller one is: drop it.
+    unique = sorted(set(elements), key=lambda e: (len(e), sorted(e)))
+    reduced: list[frozenset[Key]] = []
+    for element in unique:
+        if not any(other <= element for other in reduced):
+            reduced.append(element)
+    best = _greedy_cover(reduced)
+    nodes = 0
+    exhausted = False
+
+    def search(remaining: list[frozenset[Key]], chosen: list[Key]) -> None:
+        nonlocal best, nodes, exhausted
+        nodes += 1
+        if nodes > node_limit:
+            exhausted = True
+            return
+        if not remaining:
+            if len(chosen) < len(best):
+                best = frozenset(chosen)
+            return
+        if len(chosen) + _disjoint_packing(remaining) >= len(best):
+            return
+        pivot = min(remaining, key=lambda e: (len(e), sorted(e)))
+        hits = {key: sum(key in e for e in remaining) for key in pivot}
+        for key in sorted(pivot, key=lambda k: (-hits[k], k)):
+            search([e for e in remaining if key not in e], [*chosen, key])
+            if exhausted:
+                return
+
+    search(reduced, [])
+    return best, not exhausted
+
+
+def _greedy_cover(elements: list[frozenset[Key]]) -> frozenset[Key]:
+    remaining = list(elements)
+    chosen: set[Key] = set()
+    while remaining:
+        hits: dict[Key, int] = {}
+        for element in remaining:
+            for key in element:
+                hits[key] = hits.get(key, 0) + 1
+        key = min(hits, key=lambda k: (-hits[k], k))
+        chosen.add(key)
+        remaining = [e for e in remaining if key not in e]
+    return frozenset(chosen)
+
+
+def _disjoint_packing(elements: list[frozenset[Key]]) -> int:
+    used: set[Key] = set()
+    packed = 0
+    for element in sorted(elements, key=len):
+        if used.isdisjoint(element):
+            used |= element
+            packed += 1
+    return packed

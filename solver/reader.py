@@ -1,0 +1,152 @@
+"""Typed access to a loaded YAML document that collects located faults instead of stopping.
+
+The rule-set and team loaders validate a whole file and report every problem at once; this is
+the small toolkit they share: "give me a mapping here", "a list of strings there", "which keys
+are unknown", each recording a :class:`~solver.errors.Fault` on a mismatch and returning a
+harmless placeholder so validation can continue.
+
+Not here: the meaning of any key (see :mod:`solver.rules` and :mod:`solver.team`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Collection, Sequence
+from typing import Any
+
+from solver.errors import Fault, did_you_mean
+from solver.yamlio import Document, PathPart
+
+__all__ = ["Reader", "type_name"]
+
+Path = tuple[PathPart, ...]
+
+
+def type_name(value: Any) -> str:
+    """How a YAML user would call the type of ``value``."""
+    if value is None:
+        return "nothing (null)"
+    if isinstance(value, bool):
+        return f"a boolean ({str(value).lower()})"
+    if isinstance(value, int | float):
+        return f"a number ({value})"
+    if isinstance(value, str):
+        return f"a string ({value!r})"
+    if isinstance(value, list):
+        return "a list"
+    if isinstance(value, dict):
+        return "a mapping"
+    return type(value).__name__
+
+
+class Reader:
+    """Reads one document, remembering every fault it finds."""
+
+    def __init__(self, document: Document) -> None:
+        self.document = document
+        self.faults: list[Fault] = []
+
+    @property
+    def file(self) -> str:
+        return self.document.file
+
+    def fault(self, path: Sequence[PathPart], message: str, *, key: bool = False,
+              code: str = "invalid") -> None:
+        location = self.document.location(path, key=key)
+        self.faults.append(Fault(location, message, code))
+
+    def get(self, path: Sequence[PathPart]) -> Any:
+        """The raw value at ``path`` (``None`` when absent)."""
+        value: Any = self.document.data
+        for part in path:
+            if isinstance(part, int):
+                if not isinstance(value, list) or part >= len(value):
+                    return None
+            elif not isinstance(value, dict):
+                return None
+            value = value[part] if isinstance(part, int) else _lookup(value, part)
+        return value
+
+    def mapping(self, path: Path, what: str, *, required: bool = True) -> dict[str, Any]:
+        """The mapping at ``path``; its keys converted to strings."""
+        value = self.get(path)
+        if value is None:
+            if required:
+                self.missing(path, what)
+            return {}
+        if not isinstance(value, dict):
+            self.fault(path, f"{what} must be a mapping, got {type_name(value)}",
+                       code="wrong-type")
+            return {}
+        return {str(key): item for key, item in value.items()}
+
+    def missing(self, path: Path, what: str) -> None:
+        self.fault(path, f"missing {what}", code="missing-field")
+
+    def string(self, path: Path, what: str, *, required: bool = True,
+               default: str = "") -> str:
+        value = self.get(path)
+        if value is None:
+            if required:
+                self.missing(path, what)
+            return default
+        if isinstance(value, bool) or not isinstance(value, str | int | float):
+            self.fault(path, f"{what} must be a string, got {type_name(value)}",
+                       code="wrong-type")
+            return default
+        text = str(value).strip()
+        if required and not text:
+            self.fault(path, f"{what} must not be empty", code="wrong-type")
+        return text
+
+    def integer(self, path: Path, what: str, *, required: bool = True) -> int | None:
+        value = self.get(path)
+        if value is None:
+            if required:
+                self.missing(path, what)
+            return None
+        if isinstance(value, bool) or not isinstance(value, int):
+            self.fault(path, f"{what} must be a whole number, got {type_name(value)}",
+                       code="wrong-type")
+            return None
+        return value
+
+    def names(self, path: Path, what: str) -> list[tuple[Path, str]]:
+        """A list of strings (or one string), each with its own path."""
+        value = self.get(path)
+        if value is None:
+            self.missing(path, what)
+            return []
+        if isinstance(value, str | int) and not isinstance(value, bool):
+            return [(path, str(value))]
+        if not isinstance(value, list):
+            self.fault(path, f"{what} must be a list of names, got {type_name(value)}",
+                       code="wrong-type")
+            return []
+        found: list[tuple[Path, str]] = []
+        for index, item in enumerate(value):
+            item_path = (*path, index)
+            if isinstance(item, bool) or not isinstance(item, str | int | float):
+                self.fault(item_path, f"{what} must be names, got {type_name(item)}",
+                           code="wrong-type")
+                continue
+            found.append((item_path, str(item).strip()))
+        return found
+
+    def unknown_keys(self, path: Path, mapping: dict[str, Any], allowed: Collection[str],
+                     what: str) -> None:
+        """A fault for every key of ``mapping`` that is not in ``allowed``."""
+        for key in mapping:
+            if key not in allowed:
+                hint = did_you_mean(key, allowed)
+                self.fault((*path, key), f"unknown {what} {key!r}{hint}; allowed: "
+                                         f"{', '.join(sorted(allowed))}",
+                           key=True, code="unknown-field")
+
+
+def _lookup(mapping: dict[Any, Any], key: str) -> Any:
+    if key in mapping:
+        return mapping[key]
+    for candidate, value in mapping.items():
+        if str(candidate) == key:
+            return value
+    return None

@@ -1,0 +1,61 @@
+"""Published figures beside computed ones: does the project reproduce the article?
+
+A team file may carry the figures a publication reports for it (``published:``). This module
+solves such teams and sets the two side by side; it never adjusts anything to agree. The README's
+reproduction table is this module's Markdown output, and a test keeps the two in step.
+
+Not here: the hypothesis that explains a disagreement; it lives as data in
+``rules/teams/case3-hypothesis.yaml`` and the README.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass
+from pathlib import Path
+
+from solver.errors import InputError
+from solver.rules import shipped_path
+from solver.solve import Solution, solve
+from solver.team import Published, load_team
+
+__all__ = ["Comparison", "compare"]
+
+
+@dataclass(frozen=True, slots=True)
+class Comparison:
+    """One team: what a publication reports and what the rules give."""
+
+    file: str
+    solution: Solution
+    published: Published
+
+    @property
+    def agrees(self) -> bool:
+        totals = self.solution.totals
+        return (totals.valid_robots, totals.ui_configurations) == \
+            (self.published.valid_robots, self.published.ui_configurations)
+
+
+def compare(paths: Iterable[str | Path] | None = None) -> list[Comparison]:
+    """Solve each team file and set its published figures beside the computed ones.
+
+    Without ``paths``: every shipped team that carries published figures, by file name,
+    shown as ``rules/teams/<name>.yaml``. A file given explicitly without published figures is an
+    :class:`InputError`.
+    """
+    if paths is None:
+        root = shipped_path()
+        found = [(path, "rules/" + path.relative_to(root).as_posix())
+                 for path in sorted(shipped_path("teams").glob("*.yaml"), key=lambda p: p.stem)]
+    else:
+        found = [(Path(path), str(path)) for path in paths]
+    comparisons = []
+    for path, shown in found:
+        team = load_team(path, display=shown)
+        if team.published is None:
+            if paths is None:
+                continue
+            raise InputError.at(shown, "has no 'published:' figures to compare with")
+        comparisons.append(Comparison(shown, solve(team), team.published))
+    return comparisons

@@ -1,0 +1,224 @@
+"""Safe YAML loading that remembers where every value came from.
+
+PyYAML's loaders lose positions and silently keep the last of two duplicate keys. Here a file is
+*composed* into nodes (no Python objects are constructed from tags, so ``!!python/object`` and
+friends are refused), then walked into plain ``dict``/``list``/scalar data while recording the
+line and column of every key and value under its path. Duplicate keys, recursive or exploding
+aliases, unsupported tags, oversized files and non-UTF-8 bytes are all reported as located faults.
+
+Not here: what the data means. :mod:`solver.rules` and :mod:`solver.team` read the data and use
+:meth:`Document.location` to say where a problem is.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+from solver.errors import Fault, InputError, Location
+
+__all__ = ["Document", "PathPart", "format_path", "load_document", "parse_document"]
+
+PathPart = str | int
+YamlPath = tuple[PathPart, ...]
+
+MAX_FILE_BYTES = 16 * 1024 * 1024
+# A document with more nodes than this, counting every alias expansion, is refused: this is
+# what stops "billion laughs" style alias bombs from exhausting memory.
+MAX_NODES = 1_000_000
+
+_PLAIN_TAGS = {
+    "tag:yaml.org,2002:str",
+    "tag:yaml.org,2002:int",
+    "tag:yaml.org,2002:float",
+    "tag:yaml.org,2002:bool",
+    "tag:yaml.org,2002:null",
+}
+_TIMESTAMP_TAG = "tag:yaml.org,2002:timestamp"
+_MAP_TAG = "tag:yaml.org,2002:map"
+_SEQ_TAG = "tag:yaml.org,2002:seq"
+
+
+def format_path(path: Sequence[PathPart]) -> str:
+    """``("team", "UAV", "sensor_type", 1)`` -> ``team.UAV.sensor_type[1]``."""
+    text = ""
+    for part in path:
+        if isinstance(part, int):
+            text += f"[{part}]"
+        else:
+            text += f".{part}" if text else str(part)
+    return text
+
+
+@dataclass(frozen=True)
+class Document:
+    """Plain data loaded from one YAML file, with the position of every key and value."""
+
+    file: str
+    data: Any
+    value_marks: dict[YamlPath, tuple[int, int]] = field(default_factory=dict, repr=False)
+    key_marks: dict[YamlPath, tuple[int, int]] = field(default_factory=dict, repr=False)
+
+    def location(self, path: Sequence[PathPart] = (), *, key: bool = False) -> Location:
+        """Where the value at ``path`` is (or its key, with ``key=True``).
+
+        A path that was never recorded (a missing key, say) is located at its nearest recorded
+        ancestor, which is where a user would add it.
+        """
+        path = tuple(path)
+        line: int | None
+        column: int | None
+        if key and path in self.key_marks:
+            line, column = self.key_marks[path]
+        else:
+            probe = path
+            while probe and probe not in self.value_marks:
+                probe = probe[:-1]
+            line, column = self.value_marks.get(probe, (None, None))
+        return Location(self.file, line, column, format_path(path))
+
+    def fault(self, path: Sequence[PathPart], message: str, *, key: bool = False) -> Fault:
+        """A fault located at ``path`` in this document."""
+        return Fault(self.location(path, key=key), message)
+
+
+def load_document(path: str | Path, *, display: str | None = None) -> Document:
+    """Read and compose one YAML file; :class:`InputError` with a location on any problem."""
+    name = display if display is not None else str(path)
+    file = Path(path)
+    try:
+        if file.is_dir():
+            raise InputError.at(name, "is a directory, not a YAML file")
+        size = file.stat().st_size
+        if size > MAX_FILE_BYTES:
+            raise InputError.at(name, f"file is {size} bytes; YAML files over "
+                                      f"{MAX_FILE_BYTES} bytes are refused")
+        raw = file.read_bytes()
+    except FileNotFoundError:
+        raise InputError.at(name, "no such file") from None
+    except PermissionError:
+        raise InputError.at(name, "permission denied") from None
+    except OSError as error:
+        raise InputError.at(name, f"cannot read: {error.strerror or error}") from None
+    try:
+        text = raw.decode("utf-8-sig")
+    except UnicodeDecodeError as error:
+        raise InputError.at(name, f"not UTF-8 text (invalid byte at offset {error.start}); "
+                                  "is this a YAML file?") from None
+    return parse_document(text, name)
+
+
+def parse_document(text: str, name: str = "<string>") -> Document:
+    """Compose YAML text into a :class:`Document`; :class:`InputError` on any problem."""
+    if "\x00" in text:
+        raise InputError.at(name, "contains NUL bytes; is this a YAML file?")
+    try:
+        node = yaml.compose(text, Loader=yaml.SafeLoader)
+    except yaml.MarkedYAMLError as error:
+        mark = error.problem_mark or error.context_mark
+        problem = error.problem or error.context or "invalid YAML"
+        if mark is None:
+            raise InputError.at(name, f"YAML syntax error: {problem}") from None
+        raise InputError.at(name, f"YAML syntax error: {problem}",
+                            line=mark.line + 1, column=mark.column + 1, code="yaml") from None
+    except yaml.YAMLError as error:
+        raise InputError.at(name, f"YAML error: {error}") from None
+    walker = _Walker(name)
+    data = walker.convert(node, ()) if node is not None else None
+    if walker.faults:
+        raise InputError(walker.faults)
+    return Document(name, data, walker.value_marks, walker.key_marks)
+
+
+class _Walker:
+    """Turns composed nodes into plain data, collecting faults instead of stopping at the first."""
+
+    def __init__(self, name: str) -> None:
+        self.name = name
+        self.faults: list[Fault] = []
+        self.value_marks: dict[YamlPath, tuple[int, int]] = {}
+        self.key_marks: dict[YamlPath, tuple[int, int]] = {}
+        self.nodes = 0
+        self.active: set[int] = set()
+        self.constructor = yaml.SafeLoader("")
+
+    def fault(self, node: yaml.Node, path: YamlPath, message: str, code: str = "yaml") -> None:
+        mark = node.start_mark
+        self.faults.append(Fault(Location(self.name, mark.line + 1, mark.column + 1,
+                                          format_path(path)), message, code))
+
+    def convert(self, node: yaml.Node, path: YamlPath) -> Any:
+        self.nodes += 1
+        if self.nodes > MAX_NODES:
+            if self.nodes == MAX_NODES + 1:
+                self.fault(node, path, f"document expands to more than {MAX_NODES} nodes "
+                                       "(alias bomb?); refused")
+            return None
+        self.value_marks.setdefault(path, (node.start_mark.line + 1, node.start_mark.column + 1))
+        if id(node) in self.active:
+            self.fault(node, path, "recursive alias: a value refers to itself")
+            return None
+        self.active.add(id(node))
+        try:
+            if isinstance(node, yaml.MappingNode):
+                return self._mapping(node, path)
+            if isinstance(node, yaml.SequenceNode):
+                return self._sequence(node, path)
+            return self._scalar(node, path)
+        finally:
+            self.active.discard(id(node))
+
+    def _mapping(self, node: yaml.MappingNode, path: YamlPath) -> dict[Any, Any] | None:
+        if node.tag != _MAP_TAG:
+            self.fault(node, path, f"unsupported YAML tag {node.tag!r}")
+            return None
+        result: dict[Any, Any] = {}
+        first_seen: dict[Any, int] = {}
+        for key_node, value_node in node.value:
+            if key_node.tag == "tag:yaml.org,2002:merge":
+                self.fault(key_node, path, "YAML merge keys ('<<') are not supported; "
+                                           "write the keys out")
+                continue
+            if not isinstance(key_node, yaml.ScalarNode):
+                self.fault(key_node, path, "mapping keys must be plain scalars")
+                continue
+            key = self._scalar(key_node, path)
+            if key is None and key_node.tag != "tag:yaml.org,2002:null":
+                continue
+            try:
+                hash(key)
+            except TypeError:
+                self.fault(key_node, path, "mapping keys must be plain scalars")
+                continue
+            child = (*path, str(key))
+            if key in first_seen:
+                self.fault(key_node, child, f"duplicate key {key!r} (first at line "
+                                            f"{first_seen[key]})", "duplicate-key")
+                continue
+            first_seen[key] = key_node.start_mark.line + 1
+            self.key_marks[child] = (key_node.start_mark.line + 1, key_node.start_mark.column + 1)
+            result[key] = self.convert(value_node, child)
+        return result
+
+    def _sequence(self, node: yaml.SequenceNode, path: YamlPath) -> list[Any] | None:
+        if node.tag != _SEQ_TAG:
+            self.fault(node, path, f"unsupported YAML tag {node.tag!r}")
+            return None
+        return [self.convert(item, (*path, index)) for index, item in enumerate(node.value)]
+
+    def _scalar(self, node: yaml.Node, path: YamlPath) -> Any:
+        if node.tag == _TIMESTAMP_TAG:
+            return str(node.value)
+        if node.tag not in _PLAIN_TAGS:
+            self.fault(node, path, f"unsupported YAML tag {node.tag!r}; only plain strings, "
+                                   "numbers, booleans, lists and mappings are allowed")
+            return None
+        try:
+            return self.constructor.construct_object(node)
+        except yaml.YAMLError as error:
+            self.fault(node, path, f"cannot read value: {error}")
+            return None
