@@ -65,10 +65,14 @@ class Fault:
 
 
 class SolverError(Exception):
-    """Root of every error the project raises on purpose; carries the faults that caused it."""
+    """Root of every error the project raises on purpose; carries the faults that caused it.
+
+    Faults are kept sorted by file and position, so a file's problems read top to bottom.
+    """
 
     def __init__(self, faults: Fault | Sequence[Fault]) -> None:
-        self.faults: tuple[Fault, ...] = (faults,) if isinstance(faults, Fault) else tuple(faults)
+        found = (faults,) if isinstance(faults, Fault) else tuple(faults)
+        self.faults: tuple[Fault, ...] = tuple(sorted(found, key=_position))
         if not self.faults:
             raise ValueError("a SolverError needs at least one fault")
         super().__init__("\n".join(str(fault) for fault in self.faults))
@@ -92,12 +96,18 @@ class TeamError(SolverError, ValueError):
     """A team selection file is malformed or does not fit its rule set."""
 
 
+def _position(fault: Fault) -> tuple[str, int, int]:
+    location = fault.location
+    return (location.file, location.line or 0, location.column or 0)
+
+
 def did_you_mean(word: str, choices: Iterable[str]) -> str:
     """`` (did you mean 'X'?)`` for the closest choice, or an empty string when none is close."""
     options = list(choices)
     matches = difflib.get_close_matches(word, options, n=1, cutoff=0.6)
     if not matches:
-        lowered = {option.lower(): option for option in options}
-        if word.lower() in lowered:
-            matches = [lowered[word.lower()]]
+        # Abbreviations ("Mic" for "Microphone") and case slips are too short for difflib.
+        lowered = word.lower()
+        matches = [o for o in options if o.lower() == lowered] or \
+            ([o for o in options if o.lower().startswith(lowered)] if len(word) >= 2 else [])
     return f" (did you mean {matches[0]!r}?)" if matches else ""

@@ -266,11 +266,12 @@ def render_assignment(solution: Solution, assignment: Assignment, fmt: str = "te
     configuration = assignment.configuration
     if configuration is not None:
         lines = [f"UI configuration {assignment.number} for {given}"]
-        for characteristic, component, served in zip(rules.characteristics,
-                                                     configuration.components,
-                                                     configuration.served, strict=True):
+        values = dict(assignment.given)
+        for characteristic, component in zip(rules.characteristics, configuration.components,
+                                             strict=True):
+            own = [characteristic.parse_value(values[characteristic.name])]
             lines.append(f"  {characteristic.label}: "
-                         f"{_component_text(characteristic, component, served)}")
+                         f"{_component_text(characteristic, component, own)}")
         lines.append(f"  (serves {configuration.robots} valid robots of team "
                      f"{solution.team.name!r})")
         return "\n".join(lines) + "\n"

@@ -66,6 +66,18 @@ class Reader:
             value = value[part] if isinstance(part, int) else _lookup(value, part)
         return value
 
+    def top(self, what: str) -> dict[str, Any] | None:
+        """The document's top-level mapping, or ``None`` after a fault (empty file, a list...)."""
+        data = self.document.data
+        if data is None:
+            self.fault((), f"the file is empty; expected a {what}", code="missing-field")
+            return None
+        if not isinstance(data, dict):
+            self.fault((), f"expected a {what} (a mapping of fields) at the top level, got "
+                           f"{type_name(data)}", code="wrong-type")
+            return None
+        return {str(key): item for key, item in data.items()}
+
     def mapping(self, path: Path, what: str, *, required: bool = True) -> dict[str, Any]:
         """The mapping at ``path``; its keys converted to strings."""
         value = self.get(path)

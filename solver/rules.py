@@ -203,8 +203,8 @@ def load_rules(path: str | Path, *, display: str | None = None) -> RuleSet:
 def parse_rules(document: Document) -> RuleSet:
     """Build a :class:`RuleSet` from an already loaded document."""
     reader = Reader(document)
-    top = reader.mapping((), "rule set")
-    if document.data is not None and not isinstance(document.data, dict):
+    top = reader.top("rule set")
+    if top is None:
         raise RulesError(reader.faults)
     reader.unknown_keys((), top, _RULES_KEYS, "rule set field")
     name = reader.string(("name",), "rule set name", required=False,

@@ -114,8 +114,8 @@ def parse_team(document: Document, rules: RuleSet | str | Path | None = None, *,
     A relative ``rules:`` path resolves against ``folder`` (default: the document's folder).
     """
     reader = Reader(document)
-    top = reader.mapping((), "team file")
-    if not isinstance(document.data, dict):
+    top = reader.top("team file")
+    if top is None:
         raise TeamError(reader.faults)
     reader.unknown_keys((), top, _TEAM_KEYS, "team file field")
     name = reader.string(("name",), "team name", required=False,

@@ -27,9 +27,9 @@ PathPart = str | int
 YamlPath = tuple[PathPart, ...]
 
 MAX_FILE_BYTES = 16 * 1024 * 1024
-# A document with more nodes than this, counting every alias expansion, is refused: this is
+# A document with more values than this, counting every alias expansion, is refused: this is
 # what stops "billion laughs" style alias bombs from exhausting memory.
-MAX_NODES = 1_000_000
+MAX_NODES = 200_000
 
 _PLAIN_TAGS = {
     "tag:yaml.org,2002:str",
@@ -128,10 +128,17 @@ def parse_document(text: str, name: str = "<string>") -> Document:
     except yaml.YAMLError as error:
         raise InputError.at(name, f"YAML error: {error}") from None
     walker = _Walker(name)
-    data = walker.convert(node, ()) if node is not None else None
+    try:
+        data = walker.convert(node, ()) if node is not None else None
+    except _TooLarge:
+        data = None
     if walker.faults:
         raise InputError(walker.faults)
     return Document(name, data, walker.value_marks, walker.key_marks)
+
+
+class _TooLarge(Exception):
+    """Stops the walk at once: finishing it is exactly the work an alias bomb asks for."""
 
 
 class _Walker:
@@ -154,10 +161,9 @@ class _Walker:
     def convert(self, node: yaml.Node, path: YamlPath) -> Any:
         self.nodes += 1
         if self.nodes > MAX_NODES:
-            if self.nodes == MAX_NODES + 1:
-                self.fault(node, path, f"document expands to more than {MAX_NODES} nodes "
-                                       "(alias bomb?); refused")
-            return None
+            self.fault(node, path, f"document expands to more than {MAX_NODES} values "
+                                   "(an alias bomb?); refused", "too-large")
+            raise _TooLarge
         self.value_marks.setdefault(path, (node.start_mark.line + 1, node.start_mark.column + 1))
         if id(node) in self.active:
             self.fault(node, path, "recursive alias: a value refers to itself")

@@ -1,0 +1,143 @@
+"""The command line as a user runs it: outputs, formats, exit codes, bad input."""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import subprocess
+import sys
+from collections.abc import Callable
+from pathlib import Path
+
+import pytest
+
+from tests.conftest import ROOT, TEAMS, run_cli
+
+WriteFile = Callable[[str, str], Path]
+
+
+def test_solve_prints_the_per_type_table_and_the_bound() -> None:
+    result = run_cli("solve", "rules/teams/case3.yaml")
+    assert result.returncode == 0, result.stderr
+    lines = result.stdout.splitlines()
+    assert lines[0] == "Case 3  (rules: Mortimer et al. 2017, rules/paper.yaml)"
+    assert lines[3].split() == ["UAV", "30", "6", "5.00"]
+    assert lines[7].split() == ["total", "872", "102", "8.55"]
+    assert "bound T = 900 (6 x 6 x 5 x 5)" in lines
+    assert any(line.startswith("published (") and "NOT reproduced" in line for line in lines)
+
+
+def test_solve_json_follows_the_documented_contract() -> None:
+    result = run_cli("solve", "rules/teams/case2.yaml", "--format", "json", "--list")
+    data = json.loads(result.stdout)
+    assert {"team", "rules", "bound", "by_type", "totals", "default_configuration",
+            "configurations"} <= set(data)
+    assert data["team"] == "Case 2"
+    assert data["bound"] == 900
+    assert data["by_type"][1] == {"kinematic_type": "UGV", "valid_robots": 80,
+                                  "ui_configurations": 12, "reduction_ratio": 6.6667,
+                                  "unserved_robots": 0}
+    assert data["totals"]["valid_robots"] == 110
+    assert data["default_configuration"] == 19
+    first = data["configurations"][0]
+    assert first["number"] == 1
+    assert first["components"][3] == {"characteristic": "sensor_count",
+                                      "component": "individual", "range": [1, 5],
+                                      "clusters": [1, 5]}
+
+
+def test_solve_lists_every_configuration_with_its_components() -> None:
+    result = run_cli("solve", "rules/teams/case1.yaml", "--rules", "rules/paper.yaml", "--list")
+    table = result.stdout.split("\n\n")[-1].splitlines()
+    assert table[0].split()[:3] == ["#", "Robot", "Kinematic"]
+    assert len(table) == 1 + 6
+    assert table[1].split() == ["1", "UAV", "Flight", "visual", "display", "individual",
+                                "(1..5:", "1..5", "clusters)", "5"]
+
+
+def test_solve_csv_and_markdown_carry_the_same_counts() -> None:
+    rows = list(csv.reader(io.StringIO(run_cli("solve", "case2", "-f", "csv").stdout)))
+    assert rows[0] == ["kinematic_type", "valid_robots", "ui_configurations", "reduction_ratio"]
+    assert rows[-1][:3] == ["total", "110", "18"]
+    markdown = run_cli("solve", "case2", "-f", "markdown").stdout
+    assert "| total | 110 | 18 | 6.11 |" in markdown
+
+
+def test_output_is_identical_across_runs() -> None:
+    first = run_cli("solve", "case3", "--list", "-f", "json").stdout
+    assert first == run_cli("solve", "case3", "--list", "-f", "json").stdout
+
+
+def test_shipped_teams_and_the_default_rules_work_from_any_directory(tmp_path: Path) -> None:
+    result = run_cli("solve", "case1", cwd=tmp_path)
+    assert result.returncode == 0, result.stderr
+    assert "reproduced" in result.stdout
+
+
+def test_assign_gives_the_configuration_number_and_components() -> None:
+    result = run_cli("assign", "--team", "rules/teams/case3.yaml", "kinematic_type=UAV",
+                     "motion_control=Flight", "sensor_type=2D Camera", "sensor_count=3")
+    assert result.returncode == 0
+    assert result.stdout.splitlines()[:5] == [
+        "UI configuration 1 for kinematic_type=UAV motion_control=Flight "
+        "sensor_type=2D Camera sensor_count=3",
+        "  Robot Kinematic Type: UAV", "  Robot Motion Control: Flight",
+        "  Sensor Type: visual display", "  No. of Sensors: individual (3: 3 clusters)"]
+
+
+def test_assign_answers_an_invalid_robot_with_the_default_and_exits_0() -> None:
+    result = run_cli("assign", "--team", "case3", "-f", "json", "kinematic_type=Quadruped",
+                     "motion_control=Walking", "sensor_type=360 Camera", "sensor_count=4")
+    assert result.returncode == 0
+    data = json.loads(result.stdout)
+    assert (data["configuration"], data["default"]) == (103, True)
+    assert data["reasons"] == ["unknown robot kinematic type 'Quadruped'"]
+    assert data["relevant_components"]["sensor_type"] == ["spherical display"]
+
+
+def test_python_dash_m_solver_is_the_same_command_line() -> None:
+    script = subprocess.run([Path(sys.executable).parent / "teleop-ui", "reproduce"],
+                            capture_output=True, text=True, cwd=ROOT, check=False)
+    assert script.returncode == 0
+    assert script.stdout == run_cli("reproduce").stdout
+
+
+@pytest.mark.parametrize(("content", "message"), [
+    ("team: [unclosed\n", "t.yaml:2:1: YAML syntax error"),
+    ("team:\n  UAV: {}\n  UAV: {}\n", "t.yaml:3:3: team.UAV: duplicate key 'UAV'"),
+    ("team:\n  Quadruped: {}\n", "t.yaml:2:3: team.Quadruped: unknown robot kinematic type"),
+    ("team:\n  UAV: {sensor_count: -1}\n", "maximum must be at least 1, got -1"),
+    ("rules: none.yaml\nteam:\n  UAV: {}\n", "t.yaml:1:8: rules: cannot use rules file"),
+    ("just words", "expected a team file (a mapping of fields) at the top level"),
+    ("team: !!python/object/apply:os.system [ls]\n", "unsupported YAML tag"),
+])
+def test_bad_team_files_exit_2_with_a_located_message_and_no_traceback(
+        write_file: WriteFile, content: str, message: str) -> None:
+    path = write_file("t.yaml", content)
+    result = run_cli("solve", path)
+    assert result.returncode == 2
+    assert message in result.stderr
+    assert "Traceback" not in result.stderr
+    assert result.stdout == ""
+
+
+def test_a_missing_team_file_exits_2() -> None:
+    result = run_cli("solve", "rules/teams/case9.yaml")
+    assert (result.returncode, result.stderr) == (2, "rules/teams/case9.yaml: no such file\n")
+
+
+def test_assign_with_an_unknown_characteristic_name_exits_2() -> None:
+    result = run_cli("assign", "--team", "case1", "colour=red")
+    assert result.returncode == 2
+    assert "unknown characteristic 'colour'" in result.stderr
+
+
+def test_reproduce_compares_every_shipped_article_case() -> None:
+    result = run_cli("reproduce", "-f", "json")
+    rows = {row["file"]: row for row in json.loads(result.stdout)}
+    assert set(rows) == {f"rules/teams/{p.name}" for p in TEAMS.glob("*.yaml")}
+    assert rows["rules/teams/case3.yaml"]["computed"] == {"valid_robots": 872,
+                                                          "ui_configurations": 102}
+    assert not rows["rules/teams/case3.yaml"]["reproduced"]
+    assert all(row["reproduced"] for name, row in rows.items() if name != "rules/teams/case3.yaml")
