@@ -22,6 +22,11 @@ Modules, one concept each:
 ``assign``             :func:`assign` one combination -> :class:`Assignment`
 ``reproduce``          published figures beside computed ones
 ``formats``            text / JSON / CSV / Markdown rendering
+``plot``               radar chart (the article's Figure 9) and bar chart, PNG/SVG/PDF
+``report``             self-contained HTML and Markdown reports of a solved team
+``batch``              many teams at once: parallel solving, summary, up-to-date skipping
+``identify``           real robots from ROS metadata (URDF, xacro, SRDF, topics, bags)
+``check``              linting rule sets and teams: coverage, void, dead, conflicts
 ``cli``                the ``teleop-ui`` command line
 =====================  ==========================================================
 
@@ -33,15 +38,80 @@ Example::
     (30, 6)
 """
 
-from solver.assign import Assignment, assign, parse_combination
-from solver.constraints import Condition, RuleConstraint
-from solver.errors import Fault, InputError, Location, RulesError, SolverError, TeamError
-from solver.model import Robot, build_problem, robots
-from solver.partition import Configuration
-from solver.reproduce import Comparison, compare
-from solver.rules import Characteristic, Component, RuleSet, default_rules_path, load_rules
-from solver.solve import Solution, TypeSummary, solve
-from solver.team import Published, Team, TypeSelection, load_team
+# The public API is loaded lazily (PEP 562): `import solver` and the command line stay fast,
+# and each name is imported from its module on first use. Keep _EXPORTS and the TYPE_CHECKING
+# imports and __all__ in step (tests/test_api.py checks they match).
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
+__version__ = "0.1.0"
+
+if TYPE_CHECKING:
+    from solver.assign import Assignment, assign, parse_combination
+    from solver.batch import Outcome, find_teams, plan, run_batch, write_summary
+    from solver.check import Finding, check_files
+    from solver.constraints import Condition, RuleConstraint
+    from solver.errors import Fault, InputError, Location, RulesError, SolverError, TeamError
+    from solver.identify import Identification, IdentificationCache, identify_fleet, identify_urdf
+    from solver.model import Robot, build_problem, robots
+    from solver.partition import Configuration
+    from solver.plot import bars_figure, radar_figure, write_plot
+    from solver.report import render_html, render_markdown, write_report
+    from solver.reproduce import Comparison, compare
+    from solver.rules import Characteristic, Component, RuleSet, default_rules_path, load_rules
+    from solver.solve import Solution, TypeSummary, solve
+    from solver.team import Published, Team, TypeSelection, load_team
+
+_EXPORTS = {
+    "Assignment": "solver.assign",
+    "Characteristic": "solver.rules",
+    "Comparison": "solver.reproduce",
+    "Component": "solver.rules",
+    "Condition": "solver.constraints",
+    "Configuration": "solver.partition",
+    "Fault": "solver.errors",
+    "Finding": "solver.check",
+    "Identification": "solver.identify",
+    "IdentificationCache": "solver.identify",
+    "InputError": "solver.errors",
+    "Location": "solver.errors",
+    "Outcome": "solver.batch",
+    "Published": "solver.team",
+    "Robot": "solver.model",
+    "RuleConstraint": "solver.constraints",
+    "RuleSet": "solver.rules",
+    "RulesError": "solver.errors",
+    "Solution": "solver.solve",
+    "SolverError": "solver.errors",
+    "Team": "solver.team",
+    "TeamError": "solver.errors",
+    "TypeSelection": "solver.team",
+    "TypeSummary": "solver.solve",
+    "assign": "solver.assign",
+    "bars_figure": "solver.plot",
+    "build_problem": "solver.model",
+    "check_files": "solver.check",
+    "compare": "solver.reproduce",
+    "default_rules_path": "solver.rules",
+    "find_teams": "solver.batch",
+    "identify_fleet": "solver.identify",
+    "identify_urdf": "solver.identify",
+    "load_rules": "solver.rules",
+    "load_team": "solver.team",
+    "parse_combination": "solver.assign",
+    "plan": "solver.batch",
+    "radar_figure": "solver.plot",
+    "render_html": "solver.report",
+    "render_markdown": "solver.report",
+    "robots": "solver.model",
+    "run_batch": "solver.batch",
+    "solve": "solver.solve",
+    "write_plot": "solver.plot",
+    "write_report": "solver.report",
+    "write_summary": "solver.batch",
+}
 
 __all__ = [
     "Assignment",
@@ -51,8 +121,12 @@ __all__ = [
     "Condition",
     "Configuration",
     "Fault",
+    "Finding",
+    "Identification",
+    "IdentificationCache",
     "InputError",
     "Location",
+    "Outcome",
     "Published",
     "Robot",
     "RuleConstraint",
@@ -65,12 +139,45 @@ __all__ = [
     "TypeSelection",
     "TypeSummary",
     "assign",
+    "bars_figure",
     "build_problem",
+    "check_files",
     "compare",
     "default_rules_path",
+    "find_teams",
+    "identify_fleet",
+    "identify_urdf",
     "load_rules",
     "load_team",
     "parse_combination",
+    "plan",
+    "radar_figure",
+    "render_html",
+    "render_markdown",
     "robots",
+    "run_batch",
     "solve",
+    "write_plot",
+    "write_report",
+    "write_summary",
 ]
+
+
+# `solve` and `assign` share their names with the modules that define them: importing a module
+# binds it on the package, so these two are bound eagerly, after their modules, where nothing
+# can rebind them.
+from solver.assign import assign  # noqa: E402
+from solver.solve import solve  # noqa: E402
+
+
+def __getattr__(name: str) -> Any:
+    module = _EXPORTS.get(name)
+    if module is None:
+        raise AttributeError(f"module 'solver' has no attribute {name!r}")
+    value = getattr(importlib.import_module(module), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted({*globals(), *_EXPORTS})

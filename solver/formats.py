@@ -26,8 +26,11 @@ __all__ = [
     "FORMATS",
     "assignment_data",
     "configuration_data",
+    "dumps",
+    "method_text",
     "render_assignment",
     "render_comparisons",
+    "render_counts",
     "render_solution",
     "solution_data",
     "text_table",
@@ -42,9 +45,28 @@ def _ratio(summary: TypeSummary) -> float | None:
 
 
 def _summary_data(summary: TypeSummary) -> dict[str, Any]:
-    return {"kinematic_type": summary.kinematic_type, "valid_robots": summary.valid_robots,
+    data = {"kinematic_type": summary.kinematic_type, "valid_robots": summary.valid_robots,
             "ui_configurations": summary.ui_configurations,
             "reduction_ratio": _ratio(summary), "unserved_robots": summary.unserved_robots}
+    if summary.method:
+        data["method"] = summary.method
+    return data
+
+
+METHODS = {
+    "structure": "counted from the rules' structure, no robots enumerated",
+    "fast": "robots enumerated with numpy (fast engine)",
+    "csp": "robots enumerated with python-constraint (csp engine)",
+}
+
+
+def method_text(solution: Solution) -> str:
+    """How the counts were obtained, in words, per kinematic type where they differ."""
+    methods = [t.method for t in solution.by_type]
+    if len(set(methods)) <= 1:
+        return METHODS.get(methods[0], methods[0]) if methods else "nothing to count"
+    return "; ".join(f"{t.kinematic_type}: {METHODS.get(t.method, t.method)}"
+                     for t in solution.by_type)
 
 
 def _component_data(characteristic: Characteristic, component: Component,
@@ -93,6 +115,7 @@ def solution_data(solution: Solution, *, configurations: bool = False) -> dict[s
                    if k != "kinematic_type"},
         "default_configuration": solution.default_configuration,
         "default_components": _default_components(rules),
+        "listed": solution.listed,
         "proven_minimal": solution.proven_minimal,
         "published": None if team.published is None else {
             "valid_robots": team.published.valid_robots,
@@ -231,10 +254,31 @@ def render_solution(solution: Solution, fmt: str = "text", *, configurations: bo
     return text
 
 
+def render_counts(solution: Solution, fmt: str = "text") -> str:
+    """Per-type counts only (``teleop-ui count``): text, JSON or Markdown."""
+    if fmt == "json":
+        return dumps({"team": solution.team.name, "rules": solution.rules.name,
+                      "rules_file": solution.rules.file, "bound": solution.bound,
+                      "by_type": [_summary_data(t) for t in solution.by_type],
+                      "totals": {k: v for k, v in _summary_data(solution.totals).items()
+                                 if k != "kinematic_type"},
+                      "default_configuration": solution.default_configuration})
+    headers = ["kinematic type", "valid robots", "UI configurations", "how"]
+    rows = [[t.kinematic_type, t.valid_robots, t.ui_configurations, t.method]
+            for t in solution.by_type]
+    totals = solution.totals
+    rows.append(["total", totals.valid_robots, totals.ui_configurations, ""])
+    align = [False, True, True, False]
+    if fmt == "markdown":
+        return f"## {solution.team.name}\n\n" + markdown_table(headers, rows, align)
+    return (f"{solution.team.name}  (rules: {solution.rules.name}, {solution.rules.file})\n\n"
+            + text_table(headers, rows, align))
+
+
 def _footer(solution: Solution) -> list[str]:
     rules = solution.rules
     factors = " x ".join(str(n) for n in rules.bound_factors)
-    lines = [f"bound T = {solution.bound} ({factors})",
+    lines = [f"bound T = {solution.bound} ({factors})", f"how: {method_text(solution)}",
              f"default UI configuration: {solution.default_configuration} "
              f"(every component: {sum(rules.bound_factors)})"]
     totals = solution.totals

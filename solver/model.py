@@ -14,11 +14,13 @@ Not here: partitioning robots into UI configurations (:mod:`solver.partition`).
 from __future__ import annotations
 
 from collections.abc import Iterable, Iterator, Sequence
-
-from constraint import FunctionConstraint, Problem
+from typing import TYPE_CHECKING
 
 from solver.constraints import RuleConstraint, Value
 from solver.rules import RuleSet
+
+if TYPE_CHECKING:
+    from constraint import Problem
 
 __all__ = ["Robot", "build_problem", "is_satisfiable", "robots", "violated_constraints"]
 
@@ -34,6 +36,9 @@ def build_problem(rules: RuleSet, domains: Sequence[Sequence[Value]],
     happens without some (redundancy, explanations). ``None`` when a domain is empty: such a
     problem has no solutions and python-constraint refuses empty domains.
     """
+    # Imported here: the structural counter and the command line do not need the solver.
+    from constraint import FunctionConstraint, Problem
+
     if any(len(domain) == 0 for domain in domains):
         return None
     problem = Problem()

@@ -27,9 +27,20 @@ from dataclasses import dataclass
 from solver.constraints import Value
 from solver.rules import Component, RuleSet
 
-__all__ = ["Configuration", "Partition", "minimum_cover", "partition", "sort_key"]
+__all__ = [
+    "Configuration",
+    "Partition",
+    "RobotClass",
+    "minimum_cover",
+    "partition",
+    "partition_classes",
+    "sort_key",
+]
 
 Key = tuple[int, ...]
+# A class of interchangeable robots: for each characteristic the values its robots take (all in
+# the same components), and how many robots the class stands for.
+RobotClass = tuple[tuple[tuple[Value, ...], ...], int]
 
 # Search nodes the exact cover may visit before settling for the best cover found so far.
 COVER_NODE_LIMIT = 200_000
@@ -74,36 +85,50 @@ def sort_key(rules: RuleSet, key: Key) -> Key:
 
 def partition(rules: RuleSet, kinematic_type: str, robots: Iterable[Sequence[Value]]) -> Partition:
     """Partition the valid robots of one kinematic type into the fewest configurations."""
-    characteristics = rules.characteristics
-    if all(c.is_partition for c in characteristics):
+    if all(c.is_partition for c in rules.characteristics):
         return _partition_equivalence(rules, kinematic_type, robots)
-    positions = [c.positions for c in characteristics]
-    memberships = [c.membership for c in characteristics]
+    singletons = ((tuple((value,) for value in robot), 1) for robot in robots)
+    return partition_classes(rules, kinematic_type, singletons)
+
+
+def partition_classes(rules: RuleSet, kinematic_type: str,
+                      classes: Iterable[RobotClass]) -> Partition:
+    """Partition weighted classes of robots (see :data:`RobotClass`) into configurations.
+
+    All values a class lists for one characteristic must belong to the same components, so
+    every robot of the class has the same candidate configurations. Used by the structural
+    counter, which never lists robots one by one.
+    """
+    characteristics = rules.characteristics
     width = len(characteristics)
-    # Overlapping components: gather robots by the configurations each could use.
-    by_candidates: dict[frozenset[Key], list[Sequence[Value]]] = {}
+    by_candidates: dict[frozenset[Key], list[tuple[tuple[tuple[Value, ...], ...], int]]] = {}
     unserved = total = 0
-    for robot in robots:
-        total += 1
-        options = [memberships[i][positions[i][robot[i]]] for i in range(width)]
+    for values, weight in classes:
+        total += weight
+        options = [c.membership[c.positions[members[0]]]
+                   for c, members in zip(characteristics, values, strict=True)]
         if not all(options):
-            unserved += 1
+            unserved += weight
             continue
         candidates = frozenset(itertools.product(*options))
-        by_candidates.setdefault(candidates, []).append(robot)
-    chosen, proven = minimum_cover(list(by_candidates))
+        by_candidates.setdefault(candidates, []).append((values, weight))
+    if all(len(candidates) == 1 for candidates in by_candidates):
+        chosen, proven = frozenset(next(iter(c)) for c in by_candidates), True
+    else:
+        chosen, proven = minimum_cover(list(by_candidates))
     order = sorted(chosen, key=lambda key: sort_key(rules, key))
     rank = {key: index for index, key in enumerate(order)}
     counts = dict.fromkeys(order, 0)
     served: dict[Key, list[set[Value]]] = {key: [set() for _ in range(width)] for key in order}
     for candidates, members in by_candidates.items():
+        # Each robot goes to the lowest-numbered chosen configuration it can use.
         key = min((k for k in candidates if k in rank), key=rank.__getitem__)
-        counts[key] += len(members)
-        for robot in members:
+        for values, weight in members:
+            counts[key] += weight
             for i in range(width):
-                served[key][i].add(robot[i])
-    classes = tuple((key, counts[key], _ordered(rules, served[key])) for key in order)
-    return Partition(kinematic_type, classes, total, unserved, proven)
+                served[key][i].update(values[i])
+    classes_out = tuple((key, counts[key], _ordered(rules, served[key])) for key in order)
+    return Partition(kinematic_type, classes_out, total, unserved, proven)
 
 
 def _partition_equivalence(rules: RuleSet, kinematic_type: str,

@@ -23,7 +23,6 @@ import math
 from collections.abc import Iterable
 from dataclasses import dataclass, field, replace
 from functools import cached_property
-from importlib import resources
 from pathlib import Path
 from typing import Any, Literal
 
@@ -123,7 +122,7 @@ class Characteristic:
     def component(self, name: str) -> Component | None:
         return next((c for c in self.components if c.name == name), None)
 
-    @property
+    @cached_property
     def is_partition(self) -> bool:
         """Every value in exactly one component: "shares a component" is an equivalence."""
         return all(len(members) == 1 for members in self.membership)
@@ -161,7 +160,7 @@ class RuleSet:
         """The characteristic called ``name``; :class:`KeyError` if there is none."""
         return self._by_name[name]
 
-    @property
+    @cached_property
     def names(self) -> tuple[str, ...]:
         return tuple(c.name for c in self.characteristics)
 
@@ -170,7 +169,7 @@ class RuleSet:
         """The characteristic team files are keyed by (the kinematic type)."""
         return self._by_name[self.team_key]
 
-    @property
+    @cached_property
     def key_position(self) -> int:
         return self.names.index(self.team_key)
 
@@ -183,10 +182,31 @@ class RuleSet:
     def bound_factors(self) -> tuple[int, ...]:
         return tuple(len(c.components) for c in self.characteristics)
 
+    @cached_property
+    def value_classes(self) -> tuple[tuple[tuple[Value, ...], ...], ...]:
+        """Per characteristic: its values grouped into classes the rules cannot tell apart.
+
+        Two values are in one class when they belong to the same components and meet exactly
+        the same conditions of every constraint. Classes keep domain order (by first value).
+        Counting works on classes instead of values (:mod:`solver.structure`).
+        """
+        found = []
+        for characteristic in self.characteristics:
+            conditions = [condition.allowed for rule in self.constraints
+                          for condition in (*rule.when, *rule.conditions)
+                          if condition.characteristic == characteristic.name]
+            groups: dict[tuple[object, ...], list[Value]] = {}
+            for value, membership in zip(characteristic.values, characteristic.membership,
+                                         strict=True):
+                signature = (membership, *(value in allowed for allowed in conditions))
+                groups.setdefault(signature, []).append(value)
+            found.append(tuple(tuple(members) for members in groups.values()))
+        return tuple(found)
+
 
 def shipped_path(*parts: str) -> Path:
     """A file shipped with the package (``rules/...``), wherever the package is installed."""
-    return Path(str(resources.files("solver").joinpath("rules", *parts)))
+    return Path(__file__).parent.joinpath("rules", *parts)
 
 
 def default_rules_path() -> Path:
@@ -230,10 +250,8 @@ def _read_team_key(reader: Reader, top: dict[str, Any],
                    characteristics: list[Characteristic]) -> str:
     if not characteristics:
         return ""
-    if "team_key" not in top:
-        return characteristics[0].name
-    key = reader.string(("team_key",), "team_key")
     names = [c.name for c in characteristics]
+    key = reader.string(("team_key",), "team_key") if "team_key" in top else names[0]
     if key not in names:
         reader.fault(("team_key",), f"team_key names no characteristic: {key!r}"
                                     f"{did_you_mean(key, names)}", code="unknown-reference")
@@ -241,7 +259,8 @@ def _read_team_key(reader: Reader, top: dict[str, Any],
     chosen = characteristics[names.index(key)]
     if chosen.kind != "categorical":
         reader.fault(("team_key",), f"team_key {key!r} must be a categorical characteristic "
-                                    "(a list of values)", code="invalid")
+                                    "(a list of values); without a team_key it is the first "
+                                    "characteristic", code="invalid")
     if chosen.declared_components:
         reader.fault(("characteristics", key, "components"),
                      f"{key!r} is the team key: each of its values is its own component, "
@@ -294,8 +313,11 @@ def _read_characteristic(reader: Reader, path: YPath, name: str) -> Characterist
                       high=value if isinstance(value, int) else None)
             for i, value in enumerate(values))
         declared = False
-    membership = tuple(
-        tuple(c.index for c in components if value in c.values) for value in values)
+    holders: dict[Value, list[int]] = {}
+    for component in components:
+        for value in component.values:
+            holders.setdefault(value, []).append(component.index)
+    membership = tuple(tuple(holders.get(value, ())) for value in values)
     return Characteristic(name=name, label=label, kind=kind, values=values,
                           components=components, membership=membership,
                           declared_components=declared, description=description,

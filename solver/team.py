@@ -32,7 +32,15 @@ from solver.reader import Reader
 from solver.rules import RuleSet, default_rules_path, load_rules, read_selection, shipped_path
 from solver.yamlio import Document, load_document
 
-__all__ = ["Published", "Team", "TypeSelection", "load_team", "parse_team", "resolve_team_path"]
+__all__ = [
+    "Published",
+    "Team",
+    "TypeSelection",
+    "full_team",
+    "load_team",
+    "parse_team",
+    "resolve_team_path",
+]
 
 _TEAM_KEYS = {"name", "description", "rules", "team", "published"}
 _PUBLISHED_KEYS = {"source", "valid_robots", "ui_configurations"}
@@ -85,6 +93,17 @@ class Team:
     @property
     def kinematic_types(self) -> tuple[str, ...]:
         return tuple(s.kinematic_type for s in self.selections)
+
+
+def full_team(rules: RuleSet) -> Team:
+    """The whole design space of a rule set: every kinematic type, every value selected."""
+    key = rules.key_position
+    selections = []
+    for value in rules.key.values:
+        domains = [c.values for c in rules.characteristics]
+        domains[key] = (value,)
+        selections.append(TypeSelection(str(value), tuple(domains), rules.key.location))
+    return Team(f"every value of {rules.name}", rules.file, rules, tuple(selections))
 
 
 def resolve_team_path(text: str) -> Path:

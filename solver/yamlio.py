@@ -12,7 +12,7 @@ Not here: what the data means. :mod:`solver.rules` and :mod:`solver.team` read t
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -62,6 +62,9 @@ class Document:
     data: Any
     value_marks: dict[YamlPath, tuple[int, int]] = field(default_factory=dict, repr=False)
     key_marks: dict[YamlPath, tuple[int, int]] = field(default_factory=dict, repr=False)
+    # Faults the caller chose to tolerate (``tolerate=`` of :func:`load_document`), e.g. the
+    # duplicate keys that ``teleop-ui check`` reports as findings; the first value was kept.
+    tolerated: tuple[Fault, ...] = field(default=(), repr=False)
 
     def location(self, path: Sequence[PathPart] = (), *, key: bool = False) -> Location:
         """Where the value at ``path`` is (or its key, with ``key=True``).
@@ -86,8 +89,13 @@ class Document:
         return Fault(self.location(path, key=key), message)
 
 
-def load_document(path: str | Path, *, display: str | None = None) -> Document:
-    """Read and compose one YAML file; :class:`InputError` with a location on any problem."""
+def load_document(path: str | Path, *, display: str | None = None,
+                  tolerate: Collection[str] = ()) -> Document:
+    """Read and compose one YAML file; :class:`InputError` with a location on any problem.
+
+    Faults whose ``code`` is in ``tolerate`` (only ``duplicate-key`` makes sense: the first
+    value is kept) do not raise; they are kept in :attr:`Document.tolerated`.
+    """
     name = display if display is not None else str(path)
     file = Path(path)
     try:
@@ -109,11 +117,15 @@ def load_document(path: str | Path, *, display: str | None = None) -> Document:
     except UnicodeDecodeError as error:
         raise InputError.at(name, f"not UTF-8 text (invalid byte at offset {error.start}); "
                                   "is this a YAML file?") from None
-    return parse_document(text, name)
+    return parse_document(text, name, tolerate=tolerate)
 
 
-def parse_document(text: str, name: str = "<string>") -> Document:
-    """Compose YAML text into a :class:`Document`; :class:`InputError` on any problem."""
+def parse_document(text: str, name: str = "<string>", *,
+                   tolerate: Collection[str] = ()) -> Document:
+    """Compose YAML text into a :class:`Document`; :class:`InputError` on any problem.
+
+    ``tolerate``: fault codes kept in :attr:`Document.tolerated` instead of raised.
+    """
     if "\x00" in text:
         raise InputError.at(name, "contains NUL bytes; is this a YAML file?")
     try:
@@ -132,9 +144,9 @@ def parse_document(text: str, name: str = "<string>") -> Document:
         data = walker.convert(node, ()) if node is not None else None
     except _TooLarge:
         data = None
-    if walker.faults:
+    if any(fault.code not in tolerate for fault in walker.faults):
         raise InputError(walker.faults)
-    return Document(name, data, walker.value_marks, walker.key_marks)
+    return Document(name, data, walker.value_marks, walker.key_marks, tuple(walker.faults))
 
 
 class _TooLarge(Exception):

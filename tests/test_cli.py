@@ -25,6 +25,7 @@ def test_solve_prints_the_per_type_table_and_the_bound() -> None:
     assert lines[3].split() == ["UAV", "30", "6", "5.00"]
     assert lines[7].split() == ["total", "872", "102", "8.55"]
     assert "bound T = 900 (6 x 6 x 5 x 5)" in lines
+    assert "how: counted from the rules' structure, no robots enumerated" in lines
     assert any(line.startswith("published (") and "NOT reproduced" in line for line in lines)
 
 
@@ -37,7 +38,7 @@ def test_solve_json_follows_the_documented_contract() -> None:
     assert data["bound"] == 900
     assert data["by_type"][1] == {"kinematic_type": "UGV", "valid_robots": 80,
                                   "ui_configurations": 12, "reduction_ratio": 6.6667,
-                                  "unserved_robots": 0}
+                                  "unserved_robots": 0, "method": "structure"}
     assert data["totals"]["valid_robots"] == 110
     assert data["default_configuration"] == 19
     first = data["configurations"][0]

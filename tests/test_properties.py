@@ -9,20 +9,24 @@ from __future__ import annotations
 
 import itertools
 import math
+from dataclasses import replace
 from typing import Any
 
 import yaml
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from solver import RuleSet, Team, solve
+from solver import RuleSet, Team, robots, solve
 from solver.rules import parse_rules
+from solver.stream import robots_stream
 from solver.team import parse_team
 from solver.yamlio import parse_document
 
 
 @st.composite
-def rule_data(draw: st.DrawFn, with_constraints: bool = True) -> dict[str, Any]:
+def rule_data(draw: st.DrawFn, with_constraints: bool = True, irregular: bool = False
+              ) -> dict[str, Any]:
+    """A random rule set; ``irregular`` adds overlapping components and gaps."""
     types = [f"T{i}" for i in range(draw(st.integers(1, 3)))]
     characteristics: dict[str, Any] = {"kind": {"values": types}}
     for j in range(draw(st.integers(1, 3))):
@@ -34,6 +38,12 @@ def rule_data(draw: st.DrawFn, with_constraints: bool = True) -> dict[str, Any]:
                            "values": [v for v, lab in zip(values, labels, strict=True)
                                       if lab == label]}
                           for label in sorted(set(labels))]
+            if irregular and draw(st.booleans()):
+                # One more component over random values: overlaps with the others.
+                components.append({"name": f"extra{j}", "values": draw(st.lists(
+                    st.sampled_from(values), min_size=1, unique=True))})
+            if irregular and len(components) > 1 and draw(st.booleans()):
+                components.pop(0)  # its values may now be in no component: a gap
             characteristics[f"cat{j}"] = {"values": values, "components": components}
         else:
             high = draw(st.integers(1, 12))
@@ -69,9 +79,9 @@ def _domain(spec: dict[str, Any]) -> list[Any]:
 
 
 @st.composite
-def problems(draw: st.DrawFn, with_constraints: bool = True) -> Team:
-    data = draw(rule_data(with_constraints))
-    rules = parse_rules(parse_document(yaml.safe_dump(data), "rules.yaml"))
+def problems(draw: st.DrawFn, with_constraints: bool = True, irregular: bool = False) -> Team:
+    data = draw(rule_data(with_constraints, irregular))
+    rules = parse_rules(parse_document(yaml.safe_dump(data, sort_keys=False), "rules.yaml"))
     key, *others = rules.characteristics
     chosen = draw(st.lists(st.sampled_from([str(v) for v in key.values]), min_size=1,
                            unique=True))
@@ -85,7 +95,8 @@ def problems(draw: st.DrawFn, with_constraints: bool = True) -> Team:
                 selection[characteristic.name] = draw(st.lists(
                     st.sampled_from(characteristic.values), min_size=1, unique=True))
         team[type_name] = selection
-    return parse_team(parse_document(yaml.safe_dump({"team": team}), "team.yaml"), rules)
+    document = parse_document(yaml.safe_dump({"team": team}, sort_keys=False), "team.yaml")
+    return parse_team(document, rules)
 
 
 def brute_force(team: Team, type_index: int) -> list[tuple[Any, ...]]:
@@ -144,3 +155,35 @@ def test_without_constraints_the_counts_follow_the_closed_form(team: Team) -> No
                    for c, domain in zip(team.rules.characteristics, selection.domains,
                                         strict=True)]
         assert summary.ui_configurations == math.prod(reached)
+
+
+@settings(max_examples=150, deadline=None)
+@given(problems(irregular=True))
+def test_all_engines_give_identical_partitions(team: Team) -> None:
+    reference = solve(team, engine="csp")
+    for engine in ("fast", "structure", "auto"):
+        other = solve(team, engine=engine)
+        assert other.by_type == tuple(replace(t, method=m.method) for t, m in
+                                      zip(reference.by_type, other.by_type, strict=True))
+        assert other.configurations == reference.configurations
+        assert other.proven_minimal == reference.proven_minimal
+
+
+@settings(max_examples=150, deadline=None)
+@given(problems(irregular=True))
+def test_fast_enumeration_yields_exactly_the_reference_robots(team: Team) -> None:
+    for selection in team.selections:
+        reference = sorted(robots(team.rules, selection.domains), key=repr)
+        assert sorted(robots_stream(team.rules, selection), key=repr) == reference
+
+
+@settings(max_examples=150, deadline=None)
+@given(problems(irregular=True))
+def test_counting_without_enumeration_equals_the_enumerated_counts(team: Team) -> None:
+    counted = solve(team, count_only=True)
+    enumerated = solve(team, engine="fast")
+    assert [(t.valid_robots, t.ui_configurations, t.unserved_robots) for t in counted.by_type] \
+        == [(t.valid_robots, t.ui_configurations, t.unserved_robots)
+            for t in enumerated.by_type]
+    assert counted.configurations == ()
+    assert counted.default_configuration == enumerated.default_configuration

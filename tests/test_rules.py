@@ -153,6 +153,13 @@ def test_a_team_key_must_name_a_categorical_characteristic(write_file: WriteFile
                               "team_key: count\n"))
 
 
+def test_the_default_team_key_may_not_declare_components(write_file: WriteFile) -> None:
+    with pytest.raises(RulesError, match="is the team key: each of its values is its own"):
+        load_rules(write_file("r.yaml", MINIMAL.replace(
+            "    values: [UAV, UGV]\n",
+            "    values: [UAV, UGV]\n    components: [{name: air, values: [UAV, UGV]}]\n")))
+
+
 def test_integer_arrangements_accept_exclusive_bounds(write_file: WriteFile) -> None:
     rules = load_rules(write_file("r.yaml", """\
 characteristics:

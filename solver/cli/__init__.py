@@ -59,9 +59,6 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 
 def _version() -> str:
-    from importlib.metadata import PackageNotFoundError, version
+    from solver import __version__
 
-    try:
-        return version("teleop-ui")
-    except PackageNotFoundError:
-        return "unknown"
+    return __version__

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from solver.cli._common import add_format, add_rules, load_team_argument, write
+from solver.cli._common import add_engine, add_format, add_rules, load_team_argument, write
 
 FORMATS = ("text", "json", "csv", "markdown")
 
@@ -20,7 +20,13 @@ def register(subparsers: Any) -> None:
     add_rules(parser)
     parser.add_argument("--list", "-l", action="store_true",
                         help="list every UI configuration with its components")
+    add_engine(parser)
+    parser.add_argument("--count-only", action="store_true",
+                        help="exact counts only, at any size: no configuration list")
     add_format(parser, FORMATS)
+    parser.add_argument("--plot", metavar="FILE",
+                        help="also draw the team's radar chart (the article's Figure 9) to FILE; "
+                             "the format follows the extension: .png, .svg or .pdf")
     parser.set_defaults(run=run)
 
 
@@ -28,6 +34,16 @@ def run(args: argparse.Namespace) -> int:
     from solver.formats import render_solution
     from solver.solve import solve
 
+    if args.plot:
+        from solver.plot import plot_format
+
+        plot_format(args.plot)  # an unusable file name fails before any solving
     team = load_team_argument(args.team, args.rules)
-    write(render_solution(solve(team), args.format, configurations=args.list))
+    solution = solve(team, engine=args.engine, count_only=args.count_only,
+                     max_robots=args.max_robots)
+    if args.plot:
+        from solver.plot import write_plot
+
+        write_plot(solution, args.plot)
+    write(render_solution(solution, args.format, configurations=args.list and solution.listed))
     return 0

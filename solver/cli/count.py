@@ -1,0 +1,55 @@
+"""``teleop-ui count FILE``: exact counts (and, with --symbolic, formulas) for a team or rules."""
+
+from __future__ import annotations
+
+import argparse
+from typing import TYPE_CHECKING, Any
+
+from solver.cli._common import add_engine, add_format, add_rules, load_team_argument, write
+
+if TYPE_CHECKING:
+    from solver.team import Team
+
+
+def register(subparsers: Any) -> None:
+    parser: argparse.ArgumentParser = subparsers.add_parser(
+        "count", help="exact counts at any size; --symbolic: formulas of the maxima",
+        description="Count valid robots and UI configurations per kinematic type without "
+                    "listing them. FILE is a team file, or a rule set (then every value of "
+                    "every kinematic type is selected: the whole design space). --symbolic "
+                    "gives the counts as formulas of each type's maximum count (sympy).")
+    parser.add_argument("file", metavar="FILE.yaml", help="team file or rule set file")
+    add_rules(parser)
+    parser.add_argument("--symbolic", "-s", action="store_true",
+                        help="counts as closed-form expressions of each type's maximum")
+    add_engine(parser)
+    add_format(parser, ("text", "json", "markdown"))
+    parser.set_defaults(run=run)
+
+
+def load(text: str, rules: str | None) -> Team:
+    """A team file, or a rule set file standing for its whole design space."""
+    from solver.rules import parse_rules
+    from solver.team import full_team, resolve_team_path
+    from solver.yamlio import load_document
+
+    path = resolve_team_path(text)
+    document = load_document(path, display=text)
+    if isinstance(document.data, dict) and "characteristics" in document.data:
+        return full_team(parse_rules(document))
+    return load_team_argument(text, rules)
+
+
+def run(args: argparse.Namespace) -> int:
+    from solver.formats import render_counts
+    from solver.solve import solve
+
+    team = load(args.file, args.rules)
+    solution = solve(team, engine=args.engine, count_only=True, max_robots=args.max_robots)
+    if not args.symbolic:
+        write(render_counts(solution, args.format))
+        return 0
+    from solver.symbolic import formulas, render_growth
+
+    write(render_growth(formulas(team), solution, args.format))
+    return 0

@@ -1,0 +1,39 @@
+"""``teleop-ui robots TEAM``: every valid robot with its UI configuration number, streamed."""
+
+from __future__ import annotations
+
+import argparse
+from typing import Any
+
+from solver.cli._common import add_engine, add_rules, load_team_argument
+
+
+def register(subparsers: Any) -> None:
+    parser: argparse.ArgumentParser = subparsers.add_parser(
+        "robots", help="list every valid robot with its UI configuration number",
+        description="Stream every valid robot combination of a team, one per line, with the "
+                    "number of the UI configuration it is given (the lookup table an operator "
+                    "station needs). Robots are enumerated, not counted: the --max-robots "
+                    "guard applies.")
+    parser.add_argument("team", metavar="TEAM.yaml",
+                        help="team selection file (or a shipped team name)")
+    add_rules(parser)
+    add_engine(parser)
+    parser.add_argument("--format", "-f", choices=("csv", "jsonl"), default="csv",
+                        help="csv (default) or JSON lines")
+    parser.set_defaults(run=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    import sys
+
+    from solver.listing import write_robots
+    from solver.solve import solve
+
+    team = load_team_argument(args.team, args.rules)
+    # Numbering needs the partition; "auto" gets it from the structure without enumerating.
+    solution = solve(team, engine=args.engine, max_robots=args.max_robots)
+    engine = "csp" if args.engine == "csp" else "fast"
+    write_robots(solution, sys.stdout, fmt=args.format, engine=engine,
+                 max_robots=args.max_robots)
+    return 0

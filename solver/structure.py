@@ -1,0 +1,324 @@
+"""Exact counting from the structure of a team, without enumerating robots.
+
+Two observations make counting independent of how many robots there are:
+
+* **Interchangeable values.** Two values of a characteristic that belong to the same components
+  and satisfy exactly the same conditions of every rule constraint can never be told apart by
+  the rules. Each characteristic's selected values are grouped into such *value classes*
+  (:attr:`RuleSet.value_classes`; 1..50 sensors under the article's rules: five classes, one
+  per arrangement).
+* **Independent characteristics.** Characteristics that no constraint links vary freely, so
+  counts multiply. Characteristics linked by constraints form a *block*; only the block's class
+  combinations are enumerated (a handful, whatever the domain sizes), each weighted by the
+  number of robots it stands for.
+
+For one kinematic type: valid robots = product over blocks of the block's weight; UI
+configurations = product over blocks of the distinct component combinations the block reaches
+(SPEC.md section 4's closed form is the constraint-free special case). Team totals are sums over
+kinematic types. All arithmetic is on Python integers, so 10^30 robots are counted exactly.
+Kinematic types whose selections have the same structure are counted once (:class:`Memo`).
+
+Where the structure does not allow this (a block whose class combinations exceed
+:data:`BLOCK_LIMIT`), :class:`StructureTooComplex` says so and the caller falls back to
+enumeration. Overlapping components (a value in two components) are handled by partitioning the
+weighted classes with the exact minimum cover of :mod:`solver.partition`.
+
+Not here: enumerating robots (:mod:`solver.model`, :mod:`solver.stream`), symbolic formulas
+(:mod:`solver.symbolic`).
+"""
+
+from __future__ import annotations
+
+import bisect
+import itertools
+import math
+from collections.abc import Iterator, Sequence
+from dataclasses import dataclass
+
+from solver.constraints import Value
+from solver.partition import Key, Partition, RobotClass, partition_classes
+from solver.rules import RuleSet
+from solver.team import TypeSelection
+
+__all__ = ["BLOCK_LIMIT", "Counts", "Memo", "StructureTooComplex", "count",
+           "partition_structure"]
+
+# Class combinations one block may have before counting falls back to enumeration.
+BLOCK_LIMIT = 1_000_000
+
+Members = tuple[Value, ...]
+
+
+class Memo:
+    """What one team's kinematic types can share: counts by selection structure, and the
+    value classes of whole domains (most selections leave most characteristics whole)."""
+
+    def __init__(self) -> None:
+        self.counts: dict[tuple[object, ...], Counts] = {}
+        self.whole: dict[int, list[_Class]] = {}
+        # The blocks count() built for each kinematic type, for partition_structure to reuse.
+        self.blocks: dict[str, list[_Block]] = {}
+
+
+class StructureTooComplex(Exception):
+    """The team's constraints do not decompose into blocks small enough to count."""
+
+
+@dataclass(frozen=True, slots=True)
+class Counts:
+    """Exact counts for one kinematic type."""
+
+    kinematic_type: str
+    valid_robots: int
+    ui_configurations: int
+    unserved_robots: int
+
+
+@dataclass(frozen=True, slots=True)
+class _Class:
+    """Selected values of one characteristic that the rules cannot tell apart."""
+
+    index: int              # its position in RuleSet.value_classes
+    members: Members
+    membership: tuple[int, ...]   # the components every member belongs to
+
+
+@dataclass(frozen=True, slots=True)
+class _Block:
+    """Characteristics linked by constraints, and their valid class combinations."""
+
+    positions: tuple[int, ...]
+    combinations: tuple[tuple[tuple[_Class, ...], int], ...]   # (one class per position, weight)
+
+    def partial_key(self, classes: tuple[_Class, ...]) -> Key | None:
+        """The block's components for a combination (``None``: a class in no component)."""
+        if not all(c.membership for c in classes):
+            return None
+        return tuple(c.membership[0] for c in classes)
+
+    @property
+    def robots(self) -> int:
+        return sum(weight for _, weight in self.combinations)
+
+
+def count(rules: RuleSet, selection: TypeSelection, memo: Memo | None = None) -> Counts:
+    """Valid robots and UI configurations of one kinematic type, without enumerating robots.
+
+    ``memo``, shared across the kinematic types of a team, avoids counting twice a structure
+    that several types share (their robots differ only by the type's name).
+    """
+    classes = _selected_classes(rules, selection, memo)
+    signature: list[object] = [tuple((c.index, len(c.members)) for c in found)
+                               for found in classes]
+    # The type itself only matters through the constraint conditions it meets (each type is
+    # its own component, so which one it is never changes a count).
+    kinematic_type = selection.kinematic_type
+    signature[rules.key_position] = tuple(
+        kinematic_type in condition.allowed for rule in rules.constraints
+        for condition in (*rule.when, *rule.conditions)
+        if condition.characteristic == rules.team_key)
+    memo_key = tuple(signature)
+    if memo is not None and memo_key in memo.counts:
+        return _renamed(memo.counts[memo_key], kinematic_type)
+    blocks = _blocks(rules, classes)
+    if memo is not None:
+        memo.blocks[kinematic_type] = blocks
+    if _overlaps(blocks):
+        part = partition_structure(rules, selection, blocks)
+        result = Counts(selection.kinematic_type, part.valid_robots, len(part.classes),
+                        part.unserved_robots)
+    else:
+        robots = served = configurations = 1
+        for block in blocks:
+            keys = set()
+            block_served = 0
+            for combination, weight in block.combinations:
+                key = block.partial_key(combination)
+                if key is not None:
+                    keys.add(key)
+                    block_served += weight
+            robots *= block.robots
+            served *= block_served
+            configurations *= len(keys)
+        result = Counts(selection.kinematic_type, robots, configurations, robots - served)
+    if memo is not None:
+        memo.counts[memo_key] = result
+    return result
+
+
+def _renamed(counts: Counts, kinematic_type: str) -> Counts:
+    return Counts(kinematic_type, counts.valid_robots, counts.ui_configurations,
+                  counts.unserved_robots)
+
+
+def partition_structure(rules: RuleSet, selection: TypeSelection,
+                        blocks: Sequence[_Block] | Memo | None = None) -> Partition:
+    """The configurations of one kinematic type, with robot counts and served values.
+
+    ``blocks``: the type's blocks if already built, or a :class:`Memo` that :func:`count`
+    filled for this type.
+    """
+    if isinstance(blocks, Memo):
+        blocks = blocks.blocks.get(selection.kinematic_type)
+    if blocks is None:
+        blocks = _blocks(rules, _selected_classes(rules, selection))
+    if not _overlaps(blocks):
+        return _partition_product(rules, selection, blocks)
+    if math.prod(len(b.combinations) for b in blocks) > BLOCK_LIMIT:
+        raise StructureTooComplex("overlapping components over too many class combinations")
+    return partition_classes(rules, selection.kinematic_type, _joint_classes(rules, blocks))
+
+
+def _partition_product(rules: RuleSet, selection: TypeSelection,
+                       blocks: Sequence[_Block]) -> Partition:
+    """Configurations as the product of each block's partial configurations."""
+    width = len(rules.characteristics)
+    per_block = []
+    robots = served_robots = 1
+    for block in blocks:
+        partial: dict[Key, tuple[int, list[set[Value]]]] = {}
+        for combination, weight in block.combinations:
+            key = block.partial_key(combination)
+            if key is None:
+                continue
+            so_far, held = partial.get(key, (0, [set() for _ in block.positions]))
+            for values, found in zip(held, combination, strict=True):
+                values.update(found.members)
+            partial[key] = (so_far + weight, held)
+        robots *= block.robots
+        served_robots *= sum(weight for weight, _ in partial.values())
+        orders = [rules.characteristics[p].positions.__getitem__ for p in block.positions]
+        per_block.append([(key, weight, tuple(tuple(sorted(values, key=order))
+                                              for values, order in zip(held, orders,
+                                                                       strict=True)))
+                          for key, (weight, held) in sorted(partial.items())])
+    found_classes = []
+    for choice in itertools.product(*per_block):
+        full_key = [0] * width
+        served: list[Members] = [()] * width
+        weight = 1
+        for block, (partial_key, partial_weight, values_of) in zip(blocks, choice, strict=True):
+            weight *= partial_weight
+            for position, component, shown in zip(block.positions, partial_key, values_of,
+                                                  strict=True):
+                full_key[position] = component
+                served[position] = shown
+        found_classes.append((tuple(full_key), weight, tuple(served)))
+    position = rules.key_position
+    found_classes.sort(key=lambda item: (item[0][position], item[0]))
+    return Partition(selection.kinematic_type, tuple(found_classes), robots,
+                     robots - served_robots, True)
+
+
+def _overlaps(blocks: Sequence[_Block]) -> bool:
+    """Whether any selected value belongs to more than one component."""
+    return any(len(c.membership) > 1 for block in blocks
+               for combination, _ in block.combinations for c in combination)
+
+
+def _joint_classes(rules: RuleSet, blocks: Sequence[_Block]) -> Iterator[RobotClass]:
+    width = len(rules.characteristics)
+    for choice in itertools.product(*(block.combinations for block in blocks)):
+        values: list[Members] = [()] * width
+        weight = 1
+        for block, (combination, block_weight) in zip(blocks, choice, strict=True):
+            weight *= block_weight
+            for position, found in zip(block.positions, combination, strict=True):
+                values[position] = found.members
+        yield tuple(values), weight
+
+
+def _selected_classes(rules: RuleSet, selection: TypeSelection, memo: Memo | None = None
+                      ) -> list[list[_Class]]:
+    """Per characteristic: the selected values, grouped into the rule set's value classes."""
+    found = []
+    for position, domain in enumerate(selection.domains):
+        whole = len(domain) == len(rules.characteristics[position].values)
+        if whole and memo is not None and position in memo.whole:
+            found.append(memo.whole[position])
+            continue
+        classes = _cut(rules, position, domain)
+        if whole and memo is not None:
+            memo.whole[position] = classes
+        found.append(classes)
+    return found
+
+
+def _cut(rules: RuleSet, position: int, domain: Sequence[Value]) -> list[_Class]:
+    characteristic = rules.characteristics[position]
+    classes = rules.value_classes[position]
+
+    def made(index: int, members: Members) -> _Class:
+        return _Class(index, members,
+                      characteristic.membership[characteristic.positions[members[0]]])
+
+    if len(domain) == len(characteristic.values):
+        return [made(i, members) for i, members in enumerate(classes)]
+    found = []
+    if characteristic.kind == "integer" and int(domain[-1]) - int(domain[0]) + 1 == len(domain):
+        # A range low..high (a team's "sensor_count: 13"): cut each class by bisection.
+        low, high = int(domain[0]), int(domain[-1])
+        for index, members in enumerate(classes):
+            start = bisect.bisect_left(members, low, key=int)
+            stop = bisect.bisect_right(members, high, key=int)
+            if stop > start:
+                found.append(made(index, members[start:stop]))
+        return found
+    chosen = set(domain)
+    for index, members in enumerate(classes):
+        kept = tuple(v for v in members if v in chosen)
+        if kept:
+            found.append(made(index, kept))
+    return found
+
+
+def _blocks(rules: RuleSet, classes: list[list[_Class]]) -> list[_Block]:
+    """Group characteristics linked by constraints; list each group's valid class combinations."""
+    width = len(rules.characteristics)
+    index = {name: i for i, name in enumerate(rules.names)}
+    parent = list(range(width))
+
+    def find(i: int) -> int:
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    # A characteristic with a single class cannot link anything: its value never matters.
+    linked = [[index[name] for name in rule.characteristics if len(classes[index[name]]) > 1]
+              for rule in rules.constraints]
+    for positions in linked:
+        for a, b in itertools.pairwise(positions):
+            parent[find(a)] = find(b)
+    members: dict[int, list[int]] = {}
+    for i in range(width):
+        members.setdefault(find(i), []).append(i)
+    groups = sorted(members.values())
+    home = {find(group[0]): n for n, group in enumerate(groups)}
+    rules_of: list[list[int]] = [[] for _ in groups]
+    for number, positions in enumerate(linked):
+        # A rule over single-class characteristics only is a constant: attach it to the first
+        # block, where it keeps every combination or none.
+        rules_of[home[find(positions[0])] if positions else 0].append(number)
+    values: list[Value] = [found[0].members[0] if found else "" for found in classes]
+    blocks = []
+    for group, numbers in zip(groups, rules_of, strict=True):
+        if any(not classes[i] for i in group):
+            blocks.append(_Block(tuple(group), ()))
+            continue
+        size = math.prod(len(classes[i]) for i in group)
+        if size > BLOCK_LIMIT:
+            names = ", ".join(rules.names[i] for i in group)
+            raise StructureTooComplex(f"constraints link {names} into {size} class "
+                                      f"combinations (more than {BLOCK_LIMIT})")
+        checks = [(rules.constraints[n].predicate(),
+                   [index[name] for name in rules.constraints[n].characteristics])
+                  for n in numbers]
+        combinations = []
+        for choice in itertools.product(*(classes[i] for i in group)):
+            for i, found in zip(group, choice, strict=True):
+                values[i] = found.members[0]
+            if all(check(*(values[i] for i in positions)) for check, positions in checks):
+                combinations.append((choice, math.prod(len(c.members) for c in choice)))
+        blocks.append(_Block(tuple(group), tuple(combinations)))
+    return blocks
