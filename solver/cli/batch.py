@@ -1,0 +1,140 @@
+"""``teleop-ui batch PATTERN... -o DIR``: solve many teams, with progress and a summary.
+
+Progress goes to stderr: a rich progress bar when stderr is a terminal, one plain line per
+team otherwise (logs, CI). The summary table goes to stdout and, with the per-team outputs, to
+the output folder. Exit status: 0 every team solved (or skipped), 1 at least one team failed
+(each is reported with its error), 2 the batch could not run at all (a pattern that matches
+nothing, an unusable output folder or rule file).
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+from collections.abc import Iterator
+from typing import IO, TYPE_CHECKING, Any
+
+from solver.cli._common import write
+
+if TYPE_CHECKING:
+    from solver.batch import Outcome
+
+
+def _positive(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a whole number, got {text!r}") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"must be at least 1, got {value}")
+    return value
+
+
+def _default_jobs() -> int:
+    try:
+        return len(os.sched_getaffinity(0))
+    except AttributeError:  # not on every platform
+        return os.cpu_count() or 1
+
+
+def register(subparsers: Any) -> None:
+    parser: argparse.ArgumentParser = subparsers.add_parser(
+        "batch", help="solve many team files at once: progress, summary, per-team JSON",
+        description="Solve every team file named by the patterns (files, folders searched "
+                    "recursively, or globs such as 'teams/**/*.yaml'; quote them) in parallel. "
+                    "Writes DIR/<name>.json per team (the JSON of 'solve --format json "
+                    "--list'), DIR/summary.csv and DIR/summary.md. A rerun skips teams whose "
+                    "team file, rule file and options are unchanged (content hashes kept in "
+                    "DIR/.stamps/). Exit 0 all solved, 1 some team failed, 2 nothing could run.")
+    parser.add_argument("patterns", nargs="+", metavar="PATTERN",
+                        help="team file, folder or glob pattern")
+    parser.add_argument("--output", "-o", required=True, metavar="DIR",
+                        help="folder for the per-team outputs and the summary")
+    parser.add_argument("--jobs", "-j", type=_positive, default=_default_jobs(), metavar="N",
+                        help="worker processes (default: the CPUs available, here "
+                             f"{_default_jobs()})")
+    parser.add_argument("--force", action="store_true",
+                        help="solve every team again, even those that are up to date")
+    parser.add_argument("--report", choices=("html", "markdown"),
+                        help="also write a report per team (DIR/<name>.html or .md)")
+    parser.add_argument("--rules", "-r", metavar="RULES.yaml",
+                        help="rule set for every team instead of each team's own 'rules:'")
+    parser.set_defaults(run=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    from pathlib import Path
+
+    from solver.batch import find_teams, plan, run_batch, write_summary
+    from solver.errors import InputError
+    from solver.formats import text_table
+
+    out = Path(args.output)
+    if out.exists() and not out.is_dir():
+        raise InputError.at(args.output, "is not a folder")
+    if args.rules is not None:
+        from solver.rules import load_rules
+
+        load_rules(args.rules)  # a bad override would fail every team: say so once
+    jobs = plan(find_teams(args.patterns), out, rules=args.rules, report=args.report,
+                force=args.force)
+    show = _progress_bar if sys.stderr.isatty() else _progress_lines
+    outcomes = list(show(run_batch(jobs, args.jobs), len(jobs), sys.stderr))
+    rows, written = write_summary(outcomes, jobs, out)
+    write(text_table(["file", "status", "team", "rules", "valid robots", "UI configurations"],
+                     [[r.file, r.status, r.team, r.rules, r.valid_robots, r.ui_configurations]
+                      for r in rows], [False, False, False, False, True, True]))
+    actions = [o.action for o in outcomes]
+    counts = ", ".join(f"{actions.count(a)} {a}" for a in ("solved", "up to date", "failed",
+                                                           "skipped") if a in actions)
+    print(f"{len(jobs)} team files: {counts}; summary: "
+          f"{', '.join(str(p) for p in written)}", file=sys.stderr)
+    return 1 if any(o.failed for o in outcomes) else 0
+
+
+def _describe(outcome: Outcome) -> str:
+    row = outcome.row
+    if outcome.action in ("solved", "up to date"):
+        text = f"{row.file}: {row.valid_robots} valid robots, {row.ui_configurations} UI " \
+               f"configurations"
+        return text + (f" ({outcome.seconds:.2f} s)" if outcome.action == "solved" else "")
+    if outcome.action == "skipped":
+        return f"{row.file}: {row.message}"
+    return row.file + "\n" + "\n".join(f"    {line}" for line in row.message.splitlines())
+
+
+def _progress_lines(outcomes: Iterator[Outcome], total: int, stream: IO[str]
+                    ) -> Iterator[Outcome]:
+    """One line per finished team, for logs and pipes."""
+    width = len(str(total))
+    for done, outcome in enumerate(outcomes, 1):
+        action = "FAILED" if outcome.failed else outcome.action
+        print(f"[{done:>{width}}/{total}] {action:<10} {_describe(outcome)}", file=stream,
+              flush=True)
+        yield outcome
+
+
+def _progress_bar(outcomes: Iterator[Outcome], total: int, stream: IO[str]
+                  ) -> Iterator[Outcome]:
+    """A rich progress bar; failures are printed above it as they happen."""
+    from rich.console import Console
+    from rich.markup import escape
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+
+    console = Console(file=stream)
+    colours: dict[str, str] = {"solved": "green", "up to date": "cyan", "failed": "bold red",
+                               "skipped": "yellow"}
+    with Progress(TextColumn("[bold]solving teams"), BarColumn(), MofNCompleteColumn(),
+                  TimeElapsedColumn(), TextColumn("{task.description}"), console=console,
+                  transient=False) as progress:
+        task = progress.add_task("", total=total)
+        for outcome in outcomes:
+            if outcome.action in ("failed", "skipped"):
+                label = "FAILED" if outcome.failed else outcome.action
+                progress.console.print(f"[{colours[outcome.action]}]{label}[/] "
+                                       f"{escape(_describe(outcome))}", highlight=False,
+                                       soft_wrap=True)
+            progress.update(task, advance=1, description=escape(outcome.job.shown))
+            yield outcome
+

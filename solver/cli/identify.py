@@ -1,0 +1,102 @@
+"""``teleop-ui identify ROBOT.urdf``: what a real robot is, from its ROS metadata."""
+
+from __future__ import annotations
+
+import argparse
+from typing import TYPE_CHECKING, Any
+
+from solver.cli._common import add_format, add_rules, load_team_argument, write
+
+if TYPE_CHECKING:
+    from pathlib import Path
+
+    from solver.identify.profile import Profile
+    from solver.rules import RuleSet
+
+
+def add_description_options(parser: argparse.ArgumentParser) -> None:
+    """Options ``identify`` and ``fleet`` share: profile, xacro arguments, package path."""
+    parser.add_argument("--profile", "-p", metavar="PROFILE.yaml",
+                        help="identification profile (default: the shipped "
+                             "rules/identification.yaml)")
+    parser.add_argument("--arg", dest="xacro_args", action="append", default=[],
+                        metavar="NAME:=VALUE", help="xacro argument (repeatable)")
+    parser.add_argument("--package-path", action="append", default=[], metavar="DIR",
+                        help="folder holding ROS packages for $(find pkg) and package:// "
+                             "(repeatable; default: $TELEOP_UI_PACKAGE_PATH)")
+
+
+def register(subparsers: Any) -> None:
+    parser: argparse.ArgumentParser = subparsers.add_parser(
+        "identify", help="identify a robot (kinematic type, sensors, motion controls) from its "
+                         "URDF, SRDF, topics or bag",
+        description="Read a robot's URDF (xacro is compiled first), and optionally its SRDF, "
+                    "topic lists and bags; print its structure, the rule set's kinematic type, "
+                    "a confidence, the evidence, its sensors and motion controls. With --team, "
+                    "also each characteristic combination and its UI configuration.")
+    parser.add_argument("description", metavar="ROBOT.urdf",
+                        help="URDF or xacro file")
+    parser.add_argument("--srdf", metavar="ROBOT.srdf", help="MoveIt SRDF of the robot")
+    parser.add_argument("--topics", action="append", default=[], metavar="TOPICS.txt",
+                        help="topic list: `rostopic list -v`, `ros2 topic list -t`, or "
+                             "'TOPIC TYPE' lines (repeatable)")
+    parser.add_argument("--bag", action="append", default=[], metavar="RUN.bag",
+                        help="recorded bag: ROS 1 .bag, ROS 2 folder, .db3 or .mcap "
+                             "(repeatable)")
+    parser.add_argument("--team", "-t", metavar="TEAM.yaml",
+                        help="team selection: also give each combination its UI configuration")
+    add_rules(parser)
+    add_description_options(parser)
+    add_format(parser, ("text", "json"))
+    parser.set_defaults(run=run)
+
+
+def xacro_arguments(pairs: list[str]) -> dict[str, str]:
+    from solver.errors import InputError
+
+    found: dict[str, str] = {}
+    for pair in pairs:
+        name, sep, value = pair.partition(":=")
+        if not sep or not name.strip():
+            raise InputError.at("<arguments>", f"--arg expects NAME:=VALUE, got {pair!r}")
+        found[name.strip()] = value
+    return found
+
+
+def package_path(folders: list[str]) -> tuple[Path, ...]:
+    import os
+    from pathlib import Path
+
+    from solver.identify.xacros import package_path_from_env
+
+    given = tuple(Path(p) for text in folders for p in text.split(os.pathsep) if p)
+    return given or package_path_from_env()
+
+
+def load_rules_and_profile(rules: str | None, profile: str | None) -> tuple[RuleSet, Profile]:
+    from solver.identify.profile import load_profile
+    from solver.rules import default_rules_path, load_rules
+
+    return load_rules(rules or default_rules_path()), load_profile(profile)
+
+
+def run(args: argparse.Namespace) -> int:
+    from solver.formats import dumps
+    from solver.identify.combinations import combinations
+    from solver.identify.identify import identify
+    from solver.identify.render import identification_data, render_identification
+    from solver.solve import solve
+
+    team = load_team_argument(args.team, args.rules) if args.team else None
+    rules, profile = load_rules_and_profile(None if team else args.rules, args.profile)
+    result = identify(args.description, srdf=args.srdf, topic_lists=args.topics,
+                      bags=args.bag, xacro_args=xacro_arguments(args.xacro_args),
+                      package_path=package_path(args.package_path),
+                      rules=team.rules if team else rules, profile=profile)
+    solution = solve(team) if team else None
+    found = combinations(result, solution, profile) if solution else ()
+    if args.format == "json":
+        write(dumps(identification_data(result, found, solution)))
+    else:
+        write(render_identification(result, found, solution))
+    return 0

@@ -1,0 +1,79 @@
+"""Identifying real robots from their ROS metadata (the article's future work, Section 6).
+
+A URDF (or xacro), optionally an SRDF, topic lists and bags go in; out comes the robot's body
+*structure* (UAV, Humanoid, Quadruped, Hand, ...), the rule set's *kinematic type* for it (or
+none), a confidence, the evidence, its *sensors* mapped to the rule set's sensor types, and its
+*motion controls*. Every pattern, threshold and mapping is data: ``rules/identification.yaml``.
+
+Modules, one concept each:
+
+=====================  ==========================================================
+``safexml``            safe XML parsing (no entities, no network, size cap)
+``urdf``               URDF text -> checked tree of links, joints, sensors, plugins
+``xacros``             xacro -> URDF text via xacrodoc, package path resolution
+``srdf``               MoveIt SRDF: groups, chains, end effectors, virtual joints
+``profile``            the identification profile (patterns, rules, mappings)
+``body``               body parts from the tree: wheels, rotors, limbs, grippers
+``structure``          structure + kinematic type + confidence from the parts
+``sensors``            sensors from URDF, merged, mapped to sensor types
+``topics``             topic list files -> :class:`Topic` triples
+``bags``               topics recorded in ROS 1/2 bags (rosbags)
+``interfaces``         sensors and motion controls from topic triples
+``motion``             motion controls the description itself shows
+``identify``           :func:`identify` / :func:`identify_urdf`, the cache
+``combinations``       characteristic combinations -> UI configurations
+``fleet``              a folder of robots -> a team selection
+``render``             JSON contract and text report
+=====================  ==========================================================
+
+For a live ROS master (``teleop-ui watch``): :func:`identify_urdf` takes URDF *text* and
+:class:`IdentificationCache` keeps results by content; :func:`sensors_from_topics` and
+:func:`controls_from_topics` take (topic, type, direction) :class:`Topic` triples.
+
+Heavy libraries (lxml, xacrodoc, rosbags) are imported inside the functions that use them.
+"""
+
+from solver.identify.combinations import Combination, combinations
+from solver.identify.fleet import Fleet, FleetEntry, identify_fleet, team_text
+from solver.identify.identify import (
+    Identification,
+    IdentificationCache,
+    TopicSource,
+    content_key,
+    identify,
+    identify_urdf,
+)
+from solver.identify.interfaces import Control, controls_from_topics, sensors_from_topics
+from solver.identify.profile import Profile, ProfileError, default_profile_path, load_profile
+from solver.identify.render import identification_data, render_identification
+from solver.identify.sensors import Detection, Sensor
+from solver.identify.topics import Topic, parse_topic_list, read_topic_list
+
+__all__ = [
+    "Combination",
+    "Control",
+    "Detection",
+    "Fleet",
+    "FleetEntry",
+    "Identification",
+    "IdentificationCache",
+    "Profile",
+    "ProfileError",
+    "Sensor",
+    "Topic",
+    "TopicSource",
+    "combinations",
+    "content_key",
+    "controls_from_topics",
+    "default_profile_path",
+    "identification_data",
+    "identify",
+    "identify_fleet",
+    "identify_urdf",
+    "load_profile",
+    "parse_topic_list",
+    "read_topic_list",
+    "render_identification",
+    "sensors_from_topics",
+    "team_text",
+]

@@ -1,0 +1,191 @@
+"""A folder of real robots -> identifications and a team selection ``teleop-ui solve`` accepts.
+
+Layout: every ``NAME.urdf``, ``NAME.urdf.xacro`` or ``NAME.xacro`` directly in the folder is one
+robot; ``NAME.srdf``, ``NAME.topics`` / ``NAME.topics.txt`` and ``NAME.bag`` beside it are used
+when present. Robots are identified in name order; one that cannot be identified (malformed,
+a missing xacro package, ...) is kept with its reason and the others still go through.
+
+The team selection (:func:`team_text`) has, per kinematic type of the rule set that at least one
+robot maps to: the union of the robots' motion controls and sensor types (in the rule set's
+order, values the rule set lacks left out) and the largest number of sensors with a
+presentation. Robots with no kinematic type in the rule set are listed in a comment. The text
+is checked by :func:`solver.team.parse_team` before it is returned.
+
+Not here: printing progress (the caller passes a callback) or writing files.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+from solver.errors import InputError, SolverError
+from solver.identify.identify import Identification, identify
+from solver.identify.profile import Profile
+from solver.rules import RuleSet
+from solver.team import parse_team
+from solver.yamlio import parse_document
+
+__all__ = ["Fleet", "FleetEntry", "find_descriptions", "identify_fleet", "rules_reference",
+           "team_text"]
+
+_SUFFIXES = (".urdf.xacro", ".urdf", ".xacro")
+
+Progress = Callable[[int, int, str], None]
+
+
+@dataclass(frozen=True, slots=True)
+class FleetEntry:
+    name: str
+    file: str
+    identification: Identification | None = None
+    error: str | None = None
+
+
+@dataclass(frozen=True)
+class Fleet:
+    folder: str
+    entries: tuple[FleetEntry, ...]
+
+    @property
+    def identified(self) -> tuple[Identification, ...]:
+        return tuple(e.identification for e in self.entries if e.identification is not None)
+
+    @property
+    def failed(self) -> tuple[FleetEntry, ...]:
+        return tuple(e for e in self.entries if e.identification is None)
+
+
+def _stem(path: Path) -> str | None:
+    return next((path.name[: -len(s)] for s in _SUFFIXES if path.name.endswith(s)), None)
+
+
+def find_descriptions(folder: str | Path) -> tuple[Path, ...]:
+    """The robot descriptions directly in ``folder``, in name order."""
+    base = Path(folder)
+    if not base.is_dir():
+        raise InputError.at(str(folder), "not a folder of robot descriptions", code="fleet")
+    found = sorted((p for p in base.iterdir() if p.is_file() and _stem(p)),
+                   key=lambda p: p.name)
+    if not found:
+        raise InputError.at(str(folder), "no robot descriptions (*.urdf, *.urdf.xacro, "
+                                         "*.xacro) in this folder", code="fleet")
+    return tuple(found)
+
+
+def _companion(path: Path, *suffixes: str) -> Path | None:
+    stem = _stem(path) or path.stem
+    return next((path.with_name(stem + s) for s in suffixes
+                 if path.with_name(stem + s).is_file()), None)
+
+
+def identify_fleet(folder: str | Path, *, rules: RuleSet, profile: Profile,
+                   package_path: Sequence[str | Path] = (),
+                   xacro_args: Mapping[str, str] | None = None,
+                   progress: Progress | None = None) -> Fleet:
+    """Identify every robot in ``folder``; failures are kept with their reason."""
+    paths = find_descriptions(folder)
+    entries = []
+    for done, path in enumerate(paths):
+        name = _stem(path) or path.name
+        if progress is not None:
+            progress(done, len(paths), name)
+        srdf = _companion(path, ".srdf")
+        topics = _companion(path, ".topics", ".topics.txt")
+        bag = _companion(path, ".bag")
+        try:
+            result = identify(path, srdf=srdf, topic_lists=[topics] if topics else (),
+                              bags=[bag] if bag else (), xacro_args=xacro_args,
+                              package_path=package_path, rules=rules, profile=profile)
+        except SolverError as error:
+            entries.append(FleetEntry(name, str(path), None, str(error).splitlines()[0]))
+            continue
+        entries.append(FleetEntry(name, str(path), result))
+    if progress is not None:
+        progress(len(paths), len(paths), "")
+    return Fleet(str(folder), tuple(entries))
+
+
+def team_text(fleet: Fleet, rules: RuleSet, profile: Profile, *, name: str,
+              rules_reference: str | None = None) -> str:
+    """A team selection YAML for the fleet (see the module docstring), checked to load."""
+    roles = {role: profile.role(role) for role in ("motion_control", "sensor_type",
+                                                   "sensor_count")}
+    by_type: dict[str, list[FleetEntry]] = {}
+    for entry in fleet.entries:
+        ident = entry.identification
+        if ident is not None and ident.kinematic_type is not None:
+            by_type.setdefault(ident.kinematic_type, []).append(entry)
+    lines = [f"# Team selection built by `teleop-ui fleet` from {fleet.folder}: "
+             f"{len(fleet.identified)} robot(s) identified, {len(fleet.failed)} not.",
+             f"name: {json.dumps(name)}"]
+    if rules_reference is not None:
+        lines.append(f"rules: {json.dumps(rules_reference)}")
+    lines.append("team:")
+    for kinematic_type in (str(v) for v in rules.key.values):
+        entries = by_type.get(kinematic_type)
+        if not entries:
+            continue
+        robots = ", ".join(e.name for e in entries)
+        lines.append(f"  {json.dumps(kinematic_type)}:   # {robots}")
+        lines += _selection(entries, rules, roles)
+    for entry in fleet.entries:
+        ident = entry.identification
+        if ident is not None and ident.kinematic_type is None:
+            lines.append(f"# not in the rule set: {entry.name} ({ident.structure})")
+    lines += [f"# not identified: {e.name}: {e.error}" for e in fleet.failed]
+    if not by_type:
+        raise InputError.at(fleet.folder, "no robot in this folder maps to a kinematic type "
+                                          f"of the rule set {rules.name!r}; no team written",
+                            code="fleet")
+    text = "\n".join(lines) + "\n"
+    parse_team(parse_document(text, "<fleet team>"), rules)
+    return text
+
+
+def _selection(entries: list[FleetEntry], rules: RuleSet, roles: dict[str, str]
+               ) -> list[str]:
+    idents = [e.identification for e in entries if e.identification is not None]
+    lines = []
+    control = roles["motion_control"]
+    if control in rules.names:
+        known = [str(v) for v in rules.characteristic(control).values]
+        chosen = {c.motion_control for i in idents for c in i.motion_controls}
+        values = [v for v in known if v in chosen]
+        if values:
+            lines.append(f"    {control}: {json.dumps(values)}")
+        else:
+            lines.append(f"    # {control}: none identified (every value allowed)")
+    sensor = roles["sensor_type"]
+    if sensor in rules.names:
+        known = [str(v) for v in rules.characteristic(sensor).values]
+        chosen = {t for i in idents for t in i.sensor_types}
+        values = [v for v in known if v in chosen]
+        if values:
+            lines.append(f"    {sensor}: {json.dumps(values)}")
+        else:
+            lines.append(f"    # {sensor}: none with a presentation (every value allowed)")
+    count = roles["sensor_count"]
+    if count in rules.names:
+        characteristic = rules.characteristic(count)
+        most = max(i.sensor_count for i in idents)
+        top = max(int(v) for v in characteristic.values)
+        low = min(int(v) for v in characteristic.values)
+        if most > top:
+            lines.append(f"    {count}: {top}   # capped: a robot has {most}")
+        elif most >= low:
+            lines.append(f"    {count}: {most}")
+        else:
+            lines.append(f"    # {count}: no sensors with a presentation (every value allowed)")
+    if not lines:
+        lines.append("    {}")
+    return lines
+
+
+def rules_reference(rules_file: str | Path, team_file: str | Path) -> str:
+    """``rules_file`` relative to the folder of ``team_file``."""
+    folder = Path(team_file).resolve().parent
+    return os.path.relpath(Path(rules_file).resolve(), folder)

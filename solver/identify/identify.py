@@ -1,0 +1,183 @@
+"""Identifying one robot: structure, kinematic type, sensors and motion controls, with evidence.
+
+Two entry points:
+
+* :func:`identify_urdf` works on URDF *text* (and optional SRDF text and topic triples). It
+  reads no files, so it serves a description fetched from ``/robot_description`` on a live
+  ROS master as well as a file. It is a pure function of its inputs: :func:`content_key`
+  names a result by the content it came from, and :class:`IdentificationCache` keeps results
+  by that key, so a watcher that sees the same description again does no work::
+
+      cache = IdentificationCache()
+      result = cache.identify_urdf(urdf_text, topics=[TopicSource("master", triples)])
+
+* :func:`identify` reads files: a URDF or xacro (compiled first, :mod:`solver.identify.xacros`),
+  an SRDF, topic lists and bags, then calls :func:`identify_urdf`.
+
+The rule set decides the kinematic types and sensor types results are mapped to (default: the
+article's); the profile (:mod:`solver.identify.profile`) holds every pattern and threshold.
+
+Not here: UI configurations for the result (:mod:`solver.identify.combinations`), folders of
+robots (:mod:`solver.identify.fleet`), rendering (:mod:`solver.identify.render`).
+"""
+
+from __future__ import annotations
+
+import hashlib
+from collections import OrderedDict
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+from solver.identify.bags import read_bag_topics
+from solver.identify.body import Body, detect_body
+from solver.identify.interfaces import (
+    Control,
+    controls_from_topics,
+    merge_controls,
+    sensors_from_topics,
+)
+from solver.identify.motion import controls_from_description
+from solver.identify.profile import Profile, load_profile
+from solver.identify.safexml import read_bytes
+from solver.identify.sensors import Detection, Sensor, merge, presented_count, sensors_from_urdf
+from solver.identify.srdf import parse_srdf
+from solver.identify.structure import classify
+from solver.identify.topics import Topic, read_topic_list
+from solver.identify.urdf import parse_urdf
+from solver.identify.xacros import compile_xacro, is_xacro
+from solver.rules import RuleSet, default_rules_path, load_rules
+
+__all__ = ["Identification", "IdentificationCache", "TopicSource", "content_key", "identify",
+           "identify_urdf"]
+
+
+@dataclass(frozen=True, slots=True)
+class TopicSource:
+    """Topics from one place (a topic list, a bag, a ROS master), named for the evidence."""
+
+    name: str
+    topics: tuple[Topic, ...]
+
+
+@dataclass(frozen=True)
+class Identification:
+    """What one robot is: the JSON contract of ``teleop-ui identify`` (see the README)."""
+
+    robot: str
+    file: str
+    structure: str
+    kinematic_type: str | None
+    confidence: float
+    evidence: tuple[str, ...]
+    sensors: tuple[Sensor, ...]
+    motion_controls: tuple[Control, ...]
+    body: Body | None = None
+    notes: tuple[str, ...] = ()
+
+    @property
+    def sensor_count(self) -> int:
+        """Sensors with a presentation in the rule set (the article's No. of Sensors)."""
+        return presented_count(self.sensors)
+
+    @property
+    def sensor_types(self) -> tuple[str, ...]:
+        return tuple(dict.fromkeys(s.sensor_type for s in self.sensors
+                                   if s.sensor_type is not None))
+
+
+def content_key(urdf_text: str | bytes, *, srdf_text: str | bytes | None = None,
+                topics: Sequence[TopicSource] = (), profile: Profile | None = None,
+                rules: RuleSet | None = None) -> str:
+    """A digest naming an identification by everything it depends on."""
+    digest = hashlib.sha256()
+    for part in (urdf_text, srdf_text or b""):
+        data = part.encode("utf-8") if isinstance(part, str) else part
+        digest.update(len(data).to_bytes(8, "big") + data)
+    for source in topics:
+        digest.update(repr((source.name, source.topics)).encode("utf-8"))
+    digest.update((profile.digest if profile is not None else "default-profile").encode())
+    digest.update(repr(rules).encode("utf-8") if rules is not None else b"default-rules")
+    return digest.hexdigest()
+
+
+def identify_urdf(urdf_text: str | bytes, *, file: str = "<string>", robot: str | None = None,
+                  srdf_text: str | bytes | None = None, srdf_file: str = "<srdf>",
+                  topics: Sequence[TopicSource] = (), rules: RuleSet | None = None,
+                  profile: Profile | None = None, notes: Sequence[str] = ()
+                  ) -> Identification:
+    """Identify a robot from URDF text; :class:`~solver.errors.InputError` if unusable."""
+    rules = rules if rules is not None else load_rules(default_rules_path())
+    profile = profile if profile is not None else load_profile()
+    urdf = parse_urdf(urdf_text, file)
+    srdf = None if srdf_text is None else parse_srdf(srdf_text, srdf_file, urdf)
+    body = detect_body(urdf, profile, srdf)
+    reading = classify(body, profile, rules, root=urdf.root, srdf=srdf)
+    detections: list[Detection] = list(sensors_from_urdf(urdf, profile))
+    controls = [controls_from_description(body, profile, srdf,
+                                          srdf_source=Path(srdf_file).name)]
+    for source in topics:
+        detections += sensors_from_topics(source.topics, profile, source.name)
+        controls.append(controls_from_topics(source.topics, profile, reading.structure,
+                                             source.name))
+    return Identification(
+        robot=robot or urdf.name, file=file, structure=reading.structure,
+        kinematic_type=reading.kinematic_type, confidence=reading.confidence,
+        evidence=reading.evidence, sensors=merge(detections, profile, rules),
+        motion_controls=merge_controls(*controls), body=body, notes=tuple(notes))
+
+
+def identify(description: str | Path, *, srdf: str | Path | None = None,
+             topic_lists: Sequence[str | Path] = (), bags: Sequence[str | Path] = (),
+             xacro_args: Mapping[str, str] | None = None,
+             package_path: Sequence[str | Path] = (), rules: RuleSet | None = None,
+             profile: Profile | None = None) -> Identification:
+    """Identify the robot described by a URDF or xacro file (plus SRDF, topic lists, bags)."""
+    file = str(description)
+    data = read_bytes(description)
+    notes: tuple[str, ...] = ()
+    if is_xacro(file, data):
+        compiled = compile_xacro(description, args=xacro_args, package_path=package_path)
+        text: str | bytes = compiled.text
+        notes = tuple(f"xacro: {warning}" for warning in compiled.warnings)
+    else:
+        text = data
+    srdf_text = None if srdf is None else read_bytes(srdf)
+    sources = [TopicSource(Path(t).name, read_topic_list(t)) for t in topic_lists]
+    sources += [TopicSource(f"bag {Path(b).name}", read_bag_topics(b)) for b in bags]
+    return identify_urdf(text, file=file, srdf_text=srdf_text,
+                         srdf_file=str(srdf) if srdf is not None else "<srdf>",
+                         topics=sources, rules=rules, profile=profile, notes=notes)
+
+
+class IdentificationCache:
+    """Identifications kept by :func:`content_key`, least recently used dropped first."""
+
+    def __init__(self, maxsize: int = 128) -> None:
+        self.maxsize = maxsize
+        self._entries: OrderedDict[str, Identification] = OrderedDict()
+        self.hits = 0
+        self.misses = 0
+
+    def __len__(self) -> int:
+        return len(self._entries)
+
+    def identify_urdf(self, urdf_text: str | bytes, *, srdf_text: str | bytes | None = None,
+                      topics: Sequence[TopicSource] = (), rules: RuleSet | None = None,
+                      profile: Profile | None = None, file: str = "<string>",
+                      robot: str | None = None) -> Identification:
+        """:func:`identify_urdf`, answered from the cache when the content was seen before."""
+        key = content_key(urdf_text, srdf_text=srdf_text, topics=topics, profile=profile,
+                          rules=rules) + f"|{file}|{robot}"
+        found = self._entries.get(key)
+        if found is not None:
+            self.hits += 1
+            self._entries.move_to_end(key)
+            return found
+        self.misses += 1
+        result = identify_urdf(urdf_text, file=file, robot=robot, srdf_text=srdf_text,
+                               topics=topics, rules=rules, profile=profile)
+        self._entries[key] = result
+        if len(self._entries) > self.maxsize:
+            self._entries.popitem(last=False)
+        return result

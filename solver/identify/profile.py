@@ -1,0 +1,530 @@
+"""The identification profile: every pattern, threshold and mapping identification uses, as data.
+
+``rules/identification.yaml`` (shipped; ``--profile`` for your own) says how body parts are
+recognised (name patterns on joints and links, Gazebo plugin patterns, limb thresholds), which
+structure a body has (ordered rules over part counts, with a confidence), which rule-set
+kinematic type each structure maps to, how ``<sensor>`` elements, sensor plugins and topic
+message types map to sensor kinds, which sensor type each kind is in the rule set, and which
+messages and description features mean which motion control. :func:`load_profile` validates the
+whole file and reports every problem at once, located (``file:line:col: path: message``), as a
+:class:`ProfileError`.
+
+Not here: applying the profile (:mod:`solver.identify.body`, :mod:`~solver.identify.structure`,
+:mod:`~solver.identify.sensors`, :mod:`~solver.identify.interfaces`,
+:mod:`~solver.identify.motion`).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import re
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from solver.errors import Location, SolverError, did_you_mean
+from solver.reader import Reader, type_name
+from solver.rules import shipped_path
+from solver.yamlio import Document, PathPart, load_document
+
+__all__ = [
+    "CONTROL_SOURCES",
+    "DIRECTIONS",
+    "FEATURES",
+    "PARTS",
+    "PLUGIN_PARTS",
+    "ControlRule",
+    "FeatureCondition",
+    "Pattern",
+    "Profile",
+    "ProfileError",
+    "SensorRule",
+    "StructureRule",
+    "default_profile_path",
+    "load_profile",
+    "parse_profile",
+]
+
+# What the code measures on a body (the domain); which of them matter is the profile's business.
+PARTS = ("wheel", "rotor", "track", "gripper", "leg", "head", "arm")
+PLUGIN_PARTS = ("drive", "track", "flight")
+FEATURES = ("wheels", "tracks", "rotors", "arms", "legs", "heads", "fingers", "grippers",
+            "drive_plugins", "flight_plugins", "mobile_base", "flying", "floating_base")
+BOOLEAN_FEATURES = ("mobile_base", "flying", "floating_base")
+DIRECTIONS = ("published", "subscribed")
+CONTROL_SOURCES = ("drive_plugin", "controlled_wheels", "flight", "controlled_joints",
+                   "srdf_group", "srdf_end_effector")
+LIMB_KEYS = ("arm_min_joints", "leg_min_joints", "head_max_joints", "hand_min_fingers")
+VELOCITY = "velocity"
+
+_TOP_KEYS = {"name", "description", "characteristics", "patterns", "plugins", "limbs",
+             "doubt_factor", "structures", "sensors", "sensor_types", "topics", "motion"}
+_CHARACTERISTIC_ROLES = ("motion_control", "sensor_type", "sensor_count")
+_STRUCTURE_KEYS = {"name", "when", "expect", "kinematic_types", "confidence", "description"}
+_ELEMENT_KEYS = {"kind", "types", "match"}
+_PLUGIN_RULE_KEYS = {"kind", "match"}
+_TOPIC_SENSOR_KEYS = {"kind", "types", "match", "direction"}
+_TOPIC_CONTROL_KEYS = {"control", "types", "match", "direction"}
+_LIDAR_KEYS = {"single_plane", "multi_plane"}
+
+YPath = tuple[PathPart, ...]
+
+
+class ProfileError(SolverError, ValueError):
+    """An identification profile file is malformed."""
+
+
+@dataclass(frozen=True, slots=True)
+class Pattern:
+    """A case-insensitive regular expression from the profile, and where it was written."""
+
+    text: str
+    location: Location | None = field(default=None, compare=False)
+
+    @property
+    def regex(self) -> re.Pattern[str]:
+        return _compiled(self.text)
+
+    def search(self, text: str) -> bool:
+        return self.regex.search(text) is not None
+
+
+def _compiled(text: str) -> re.Pattern[str]:
+    return re.compile(text, re.IGNORECASE)
+
+
+@dataclass(frozen=True, slots=True)
+class FeatureCondition:
+    """``low <= features[feature] <= high`` (booleans as 0/1)."""
+
+    feature: str
+    low: int | None
+    high: int | None
+
+    def holds(self, features: Mapping[str, int]) -> bool:
+        value = features.get(self.feature, 0)
+        return (self.low is None or value >= self.low) and (self.high is None or value <= self.high)
+
+    def describe(self) -> str:
+        if self.feature in BOOLEAN_FEATURES:
+            return self.feature if self.low == 1 else f"no {self.feature.replace('_', ' ')}"
+        if self.low == self.high:
+            return f"{self.feature} = {self.low}"
+        if self.high is None:
+            return f"{self.feature} >= {self.low}"
+        if self.low is None:
+            return f"{self.feature} <= {self.high}"
+        return f"{self.low} <= {self.feature} <= {self.high}"
+
+
+@dataclass(frozen=True, slots=True)
+class StructureRule:
+    name: str
+    when: tuple[FeatureCondition, ...]
+    expect: tuple[FeatureCondition, ...]
+    kinematic_types: tuple[str, ...]
+    confidence: float
+    location: Location | None = field(default=None, compare=False)
+
+    def matches(self, features: Mapping[str, int]) -> bool:
+        return all(condition.holds(features) for condition in self.when)
+
+
+@dataclass(frozen=True, slots=True)
+class SensorRule:
+    """Sensor elements, plugins or topics of these types (and matching ``match``) -> ``kind``."""
+
+    kind: str
+    types: frozenset[str] = frozenset()
+    match: Pattern | None = None
+    direction: str | None = None
+    location: Location | None = field(default=None, compare=False)
+
+    def accepts(self, kind_or_type: str | None, text: str, direction: str | None = None
+                ) -> bool:
+        if self.types and kind_or_type not in self.types:
+            return False
+        if self.direction is not None and direction is not None and direction != self.direction:
+            return False
+        if self.direction is not None and direction is None and self.match is None:
+            return False  # a direction-only rule needs the direction to be known
+        return self.match is None or self.match.search(text)
+
+
+@dataclass(frozen=True, slots=True)
+class ControlRule:
+    control: str
+    types: frozenset[str]
+    match: Pattern | None = None
+    direction: str | None = None
+    location: Location | None = field(default=None, compare=False)
+
+    def accepts(self, message_type: str, topic: str) -> bool:
+        return message_type in self.types and (self.match is None or self.match.search(topic))
+
+
+@dataclass(frozen=True, slots=True)
+class SensorTypeMapping:
+    """A sensor kind's sensor type; lidar may split by scan planes."""
+
+    kind: str
+    sensor_type: str | None = None
+    single_plane: str | None = None
+    multi_plane: str | None = None
+
+    def sensor_type_for(self, vertical_samples: int | None) -> str | None:
+        if self.sensor_type is not None:
+            return self.sensor_type
+        if vertical_samples is not None and vertical_samples > 1:
+            return self.multi_plane
+        return self.single_plane
+
+
+@dataclass(frozen=True)
+class Profile:
+    """A loaded identification profile (see the module docstring and the shipped file)."""
+
+    name: str
+    file: str
+    roles: tuple[tuple[str, str], ...]
+    patterns: tuple[tuple[str, Pattern], ...]
+    plugins: tuple[tuple[str, Pattern], ...]
+    limbs: tuple[tuple[str, int], ...]
+    doubt_factor: float
+    structures: tuple[StructureRule, ...]
+    element_rules: tuple[SensorRule, ...]
+    plugin_rules: tuple[SensorRule, ...]
+    ground_truth: Pattern | None
+    sensor_types: tuple[SensorTypeMapping, ...]
+    stream_segments: frozenset[str]
+    topic_sensors: tuple[SensorRule, ...]
+    topic_controls: tuple[ControlRule, ...]
+    velocity_default: str
+    velocity_by_structure: tuple[tuple[str, str], ...]
+    description_controls: tuple[tuple[str, tuple[str, ...]], ...]
+    digest: str = ""
+
+    def role(self, name: str) -> str:
+        """The rule-set characteristic filling role ``name`` (motion_control, ...)."""
+        return dict(self.roles)[name]
+
+    def pattern(self, part: str) -> Pattern | None:
+        return dict(self.patterns).get(part)
+
+    def plugin_pattern(self, part: str) -> Pattern | None:
+        return dict(self.plugins).get(part)
+
+    def limb(self, key: str) -> int:
+        return dict(self.limbs)[key]
+
+    def sensor_type_mapping(self, kind: str) -> SensorTypeMapping | None:
+        return next((m for m in self.sensor_types if m.kind == kind), None)
+
+    def velocity_control(self, structure: str) -> str:
+        return dict(self.velocity_by_structure).get(structure, self.velocity_default)
+
+    def description_control(self, source: str) -> tuple[str, ...]:
+        return dict(self.description_controls).get(source, ())
+
+    @property
+    def structure_names(self) -> tuple[str, ...]:
+        return tuple(rule.name for rule in self.structures)
+
+
+def default_profile_path() -> Path:
+    """The shipped profile, ``rules/identification.yaml``."""
+    return shipped_path("identification.yaml")
+
+
+def load_profile(path: str | Path | None = None, *, display: str | None = None) -> Profile:
+    """Read a profile (default: the shipped one); :class:`ProfileError` lists every problem."""
+    document = load_document(default_profile_path() if path is None else path,
+                             display=display)
+    return parse_profile(document)
+
+
+def parse_profile(document: Document) -> Profile:
+    reader = Reader(document)
+    top = reader.mapping((), "identification profile")
+    if not isinstance(document.data, dict):
+        raise ProfileError(reader.faults or [reader.document.fault(
+            (), "an identification profile must be a mapping")])
+    reader.unknown_keys((), top, _TOP_KEYS, "profile field")
+    name = reader.string(("name",), "profile name", required=False,
+                         default=Path(document.file).stem)
+    roles = _roles(reader)
+    patterns = _patterns(reader, ("patterns",), PARTS, "part")
+    plugins = _patterns(reader, ("plugins",), PLUGIN_PARTS, "plugin part")
+    limbs = _limbs(reader)
+    doubt = _fraction(reader, ("doubt_factor",), "doubt_factor")
+    structures = _structures(reader)
+    names = {rule.name for rule in structures}
+    elements = _sensor_rules(reader, ("sensors", "elements"), _ELEMENT_KEYS, types=True)
+    plugin_rules = _sensor_rules(reader, ("sensors", "plugins"), _PLUGIN_RULE_KEYS,
+                                 types=False)
+    reader.unknown_keys(("sensors",), reader.mapping(("sensors",), "sensors"),
+                        {"elements", "plugins", "ground_truth"}, "sensors field")
+    ground_truth = _pattern(reader, ("sensors", "ground_truth"), required=False)
+    sensor_types = _sensor_types(reader)
+    topics = reader.mapping(("topics",), "topics")
+    reader.unknown_keys(("topics",), topics, {"stream_segments", "sensors", "controls"},
+                        "topics field")
+    segments = frozenset(text.lower() for _, text in
+                         reader.names(("topics", "stream_segments"), "stream segments"))
+    topic_sensors = _sensor_rules(reader, ("topics", "sensors"), _TOPIC_SENSOR_KEYS,
+                                  types=True, messages=True)
+    topic_controls = _control_rules(reader)
+    velocity_default, by_structure, description = _motion(reader, names)
+    if reader.faults:
+        raise ProfileError(reader.faults)
+    text = repr(document.data).encode("utf-8")
+    return Profile(name, document.file, roles, patterns, plugins, limbs, doubt or 0.8,
+                   structures, elements, plugin_rules, ground_truth, sensor_types, segments,
+                   topic_sensors, topic_controls, velocity_default, by_structure, description,
+                   hashlib.sha256(text).hexdigest())
+
+
+def _roles(reader: Reader) -> tuple[tuple[str, str], ...]:
+    spec = reader.mapping(("characteristics",), "characteristics (role -> rule-set name)")
+    reader.unknown_keys(("characteristics",), spec, _CHARACTERISTIC_ROLES, "role")
+    return tuple((role, reader.string(("characteristics", role), f"characteristic for {role}"))
+                 for role in _CHARACTERISTIC_ROLES)
+
+
+def _pattern(reader: Reader, path: YPath, *, required: bool = True) -> Pattern | None:
+    text = reader.string(path, "pattern", required=required)
+    if not text:
+        return None
+    try:
+        _compiled(text)
+    except re.error as error:
+        reader.fault(path, f"invalid regular expression {text!r}: {error}", code="pattern")
+        return None
+    return Pattern(text, reader.document.location(path))
+
+
+def _patterns(reader: Reader, path: YPath, parts: tuple[str, ...], what: str
+              ) -> tuple[tuple[str, Pattern], ...]:
+    spec = reader.mapping(path, f"{path[-1]} (a mapping of {what} -> pattern)")
+    reader.unknown_keys(path, spec, parts, what)
+    found = []
+    for part in parts:
+        if part in spec:
+            pattern = _pattern(reader, (*path, part))
+            if pattern is not None:
+                found.append((part, pattern))
+    return tuple(found)
+
+
+def _positive(reader: Reader, path: YPath, what: str) -> int | None:
+    value = reader.integer(path, what)
+    if value is not None and value < 1:
+        reader.fault(path, f"{what} must be at least 1, got {value}", code="out-of-range")
+        return None
+    return value
+
+
+def _limbs(reader: Reader) -> tuple[tuple[str, int], ...]:
+    spec = reader.mapping(("limbs",), "limbs")
+    reader.unknown_keys(("limbs",), spec, LIMB_KEYS, "limb threshold")
+    found = []
+    for key in LIMB_KEYS:
+        value = _positive(reader, ("limbs", key), key)
+        if value is not None:
+            found.append((key, value))
+    return tuple(found)
+
+
+def _fraction(reader: Reader, path: YPath, what: str, *, required: bool = True
+              ) -> float | None:
+    value = reader.get(path)
+    if value is None:
+        if required:
+            reader.missing(path, what)
+        return None
+    if isinstance(value, bool) or not isinstance(value, int | float) or not 0 < value <= 1:
+        reader.fault(path, f"{what} must be a number in (0, 1], got {type_name(value)}",
+                     code="out-of-range")
+        return None
+    return float(value)
+
+
+def _conditions(reader: Reader, path: YPath) -> tuple[FeatureCondition, ...]:
+    raw = reader.get(path)
+    if raw is None:
+        return ()
+    spec = reader.mapping(path, "conditions (feature -> value)")
+    found = []
+    for feature, value in spec.items():
+        item = (*path, feature)
+        if feature not in FEATURES:
+            reader.fault(item, f"unknown feature {feature!r}{did_you_mean(feature, FEATURES)}; "
+                               f"features: {', '.join(FEATURES)}", key=True,
+                         code="unknown-reference")
+            continue
+        if isinstance(value, bool):
+            found.append(FeatureCondition(feature, int(value), int(value)))
+        elif isinstance(value, int):
+            found.append(FeatureCondition(feature, value, value))
+        elif isinstance(value, dict):
+            bounds = reader.mapping(item, "bounds")
+            reader.unknown_keys(item, bounds, {"min", "max"}, "bound")
+            low = reader.integer((*item, "min"), "min", required=False)
+            high = reader.integer((*item, "max"), "max", required=False)
+            if low is None and high is None:
+                reader.fault(item, "give min and/or max", code="missing-field")
+            found.append(FeatureCondition(feature, low, high))
+        else:
+            reader.fault(item, f"a condition is a number, true/false or {{min, max}}, got "
+                               f"{type_name(value)}", code="wrong-type")
+    return tuple(found)
+
+
+def _structures(reader: Reader) -> tuple[StructureRule, ...]:
+    raw = reader.get(("structures",))
+    if not isinstance(raw, list) or not raw:
+        reader.fault(("structures",), f"structures must be a non-empty list, got "
+                                      f"{type_name(raw)}", code="wrong-type")
+        return ()
+    found: list[StructureRule] = []
+    for index in range(len(raw)):
+        path: YPath = ("structures", index)
+        spec = reader.mapping(path, "structure")
+        if not spec:
+            continue
+        reader.unknown_keys(path, spec, _STRUCTURE_KEYS, "structure field")
+        name = reader.string((*path, "name"), "structure name")
+        if name and any(rule.name == name for rule in found):
+            reader.fault((*path, "name"), f"duplicate structure {name!r}",
+                         code="duplicate-value")
+        if "when" not in spec:
+            reader.missing((*path, "when"), "when (write {} to match every body)")
+        kinds = [text for _, text in reader.names((*path, "kinematic_types"),
+                                                  "kinematic types")] \
+            if spec.get("kinematic_types") not in (None, []) else []
+        if "kinematic_types" not in spec:
+            reader.missing((*path, "kinematic_types"), "kinematic_types (may be [])")
+        confidence = _fraction(reader, (*path, "confidence"), "confidence")
+        found.append(StructureRule(name, _conditions(reader, (*path, "when")),
+                                   _conditions(reader, (*path, "expect")), tuple(kinds),
+                                   confidence or 0.5, reader.document.location(path)))
+    return tuple(found)
+
+
+def _types(reader: Reader, path: YPath) -> frozenset[str]:
+    return frozenset(_message_type(text) for _, text in reader.names(path, "types"))
+
+
+def _message_type(text: str) -> str:
+    """ROS 2 spelling (``pkg/msg/Name``) -> ROS 1 spelling (``pkg/Name``); the profile's too."""
+    parts = text.strip().split("/")
+    if len(parts) == 3 and parts[1] in ("msg", "srv", "action"):
+        return f"{parts[0]}/{parts[2]}"
+    return text.strip()
+
+
+def _list(reader: Reader, path: YPath) -> list[Any]:
+    raw = reader.get(path)
+    if not isinstance(raw, list):
+        reader.fault(path, f"must be a list, got {type_name(raw)}", code="wrong-type")
+        return []
+    return raw
+
+
+def _sensor_rules(reader: Reader, path: YPath, keys: set[str], *, types: bool,
+                  messages: bool = False) -> tuple[SensorRule, ...]:
+    found = []
+    for index in range(len(_list(reader, path))):
+        item: YPath = (*path, index)
+        spec = reader.mapping(item, "sensor rule")
+        if not spec:
+            continue
+        reader.unknown_keys(item, spec, keys, "sensor rule field")
+        kind = reader.string((*item, "kind"), "sensor kind")
+        match = _pattern(reader, (*item, "match"), required=not types)
+        allowed: frozenset[str] = frozenset()
+        if types:
+            written = _types(reader, (*item, "types"))
+            # Gazebo sensor types are case-insensitive words; message types keep their case.
+            allowed = written if messages else frozenset(t.lower() for t in written)
+        direction = _direction(reader, item, spec)
+        found.append(SensorRule(kind, allowed, match, direction,
+                                reader.document.location(item)))
+    return tuple(found)
+
+
+def _direction(reader: Reader, item: YPath, spec: dict[str, Any]) -> str | None:
+    if "direction" not in spec:
+        return None
+    direction = reader.string((*item, "direction"), "direction")
+    if direction not in DIRECTIONS:
+        reader.fault((*item, "direction"), f"direction must be one of "
+                                           f"{', '.join(DIRECTIONS)}, got {direction!r}",
+                     code="out-of-range")
+        return None
+    return direction
+
+
+def _control_rules(reader: Reader) -> tuple[ControlRule, ...]:
+    path: YPath = ("topics", "controls")
+    found = []
+    for index in range(len(_list(reader, path))):
+        item: YPath = (*path, index)
+        spec = reader.mapping(item, "control rule")
+        if not spec:
+            continue
+        reader.unknown_keys(item, spec, _TOPIC_CONTROL_KEYS, "control rule field")
+        control = reader.string((*item, "control"), "motion control")
+        found.append(ControlRule(control, _types(reader, (*item, "types")),
+                                 _pattern(reader, (*item, "match"), required=False),
+                                 _direction(reader, item, spec),
+                                 reader.document.location(item)))
+    return tuple(found)
+
+
+def _sensor_types(reader: Reader) -> tuple[SensorTypeMapping, ...]:
+    spec = reader.mapping(("sensor_types",), "sensor_types (kind -> sensor type)")
+    found = []
+    for kind, value in spec.items():
+        path: YPath = ("sensor_types", kind)
+        if isinstance(value, dict):
+            planes = reader.mapping(path, "plane mapping")
+            reader.unknown_keys(path, planes, _LIDAR_KEYS, "plane mapping field")
+            found.append(SensorTypeMapping(
+                kind, None, reader.string((*path, "single_plane"), "single_plane"),
+                reader.string((*path, "multi_plane"), "multi_plane")))
+        elif value is None:
+            found.append(SensorTypeMapping(kind))
+        else:
+            found.append(SensorTypeMapping(kind, reader.string(path, "sensor type")))
+    return tuple(found)
+
+
+def _motion(reader: Reader, structures: set[str]
+            ) -> tuple[str, tuple[tuple[str, str], ...], tuple[tuple[str, tuple[str, ...]], ...]]:
+    spec = reader.mapping(("motion",), "motion")
+    reader.unknown_keys(("motion",), spec, {"velocity", "description"}, "motion field")
+    velocity = reader.mapping(("motion", "velocity"), "velocity")
+    reader.unknown_keys(("motion", "velocity"), velocity, {"default", "by_structure"},
+                        "velocity field")
+    default = reader.string(("motion", "velocity", "default"), "default velocity control")
+    by_path: YPath = ("motion", "velocity", "by_structure")
+    by_structure = reader.mapping(by_path, "by_structure", required=False)
+    pairs = []
+    for structure in by_structure:
+        if structure not in structures:
+            reader.fault((*by_path, structure), f"unknown structure {structure!r}"
+                                                f"{did_you_mean(structure, structures)}",
+                         key=True, code="unknown-reference")
+            continue
+        pairs.append((structure, reader.string((*by_path, structure), "motion control")))
+    description = reader.mapping(("motion", "description"), "description controls")
+    reader.unknown_keys(("motion", "description"), description, CONTROL_SOURCES,
+                        "description source")
+    sources = []
+    for source in CONTROL_SOURCES:
+        if source in description:
+            names = reader.names(("motion", "description", source), "motion controls")
+            sources.append((source, tuple(text for _, text in names)))
+    return default, tuple(pairs), tuple(sources)

@@ -1,0 +1,93 @@
+"""Identifications as JSON (the documented contract) and as text for a person.
+
+:func:`identification_data` builds the contract of ``teleop-ui identify --format json``::
+
+    {"robot", "file", "structure", "kinematic_type", "confidence", "evidence",
+     "sensors": [{"kind", "sensor_type", "count", "source"}],
+     "motion_controls": [{"motion_control", "source"}],
+     "combinations": [...]}      # assignment JSON of `teleop-ui assign`, with --team
+
+``fleet`` prints a list of these. Output is deterministic: declared orders, no timestamps.
+
+Not here: computing any of it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any
+
+from solver.formats import assignment_data, text_table
+from solver.identify.combinations import Combination
+from solver.identify.identify import Identification
+from solver.solve import Solution
+
+__all__ = ["identification_data", "render_identification"]
+
+
+def identification_data(identification: Identification,
+                        combinations: Sequence[Combination] = (),
+                        solution: Solution | None = None) -> dict[str, Any]:
+    data: dict[str, Any] = {
+        "robot": identification.robot,
+        "file": identification.file,
+        "structure": identification.structure,
+        "kinematic_type": identification.kinematic_type,
+        "confidence": identification.confidence,
+        "evidence": list(identification.evidence),
+        "sensors": [{"kind": s.kind, "sensor_type": s.sensor_type, "count": s.count,
+                     "source": s.source} for s in identification.sensors],
+        "motion_controls": [{"motion_control": c.motion_control, "source": c.source}
+                            for c in identification.motion_controls],
+        "combinations": [] if solution is None else [
+            assignment_data(solution, c.assignment) for c in combinations],
+    }
+    if identification.notes:
+        data["notes"] = list(identification.notes)
+    return data
+
+
+def render_identification(identification: Identification,
+                          combinations: Sequence[Combination] = (),
+                          solution: Solution | None = None) -> str:
+    """A readable report: reading, evidence, sensors, controls, configurations."""
+    kinematic = identification.kinematic_type or "none in the rule set (default configuration)"
+    lines = [f"{identification.robot}  ({identification.file})",
+             f"  structure:      {identification.structure}  "
+             f"(confidence {identification.confidence:.2f})",
+             f"  kinematic type: {kinematic}", "  evidence:"]
+    lines += [f"    - {line}" for line in identification.evidence]
+    lines += [f"  note: {note}" for note in identification.notes]
+    text = "\n".join(lines) + "\n\n"
+    if identification.sensors:
+        rows = [[s.kind, s.sensor_type or "-", s.count, s.source]
+                for s in identification.sensors]
+        text += _indent(text_table(["sensor kind", "sensor type", "count", "source"], rows,
+                                   [False, False, True, False]))
+        text += (f"  {identification.sensor_count} sensor(s) with a presentation in the rule "
+                 "set\n\n")
+    else:
+        text += "  no sensors found\n\n"
+    if identification.motion_controls:
+        rows = [[c.motion_control, c.source] for c in identification.motion_controls]
+        text += _indent(text_table(["motion control", "source"], rows)) + "\n"
+    else:
+        text += "  no motion controls found (give --topics or --bag)\n\n"
+    if solution is not None:
+        text += f"  UI configurations in team {solution.team.name!r}:\n"
+        rows = []
+        for combination in combinations:
+            values = ", ".join(value for _, value in combination.values)
+            assignment = combination.assignment
+            if assignment.is_default:
+                rows.append([f"{assignment.number} (default)", values,
+                             "; ".join(assignment.reasons)])
+            else:
+                rows.append([str(assignment.number), values, ""])
+        text += _indent(text_table(["configuration", "combination", "why default"], rows),
+                        "    ")
+    return text
+
+
+def _indent(text: str, prefix: str = "  ") -> str:
+    return "".join(prefix + line + "\n" for line in text.splitlines())

@@ -1,0 +1,92 @@
+"""The structure of a body (UAV, Humanoid, Quadruped, ...) and the rule set's type for it.
+
+:func:`classify` reads the part counts of a :class:`~solver.identify.body.Body` through the
+profile's ordered structure rules: the first rule whose ``when`` conditions all hold is the
+reading. Its confidence is the rule's own, lowered by the profile's ``doubt_factor`` for each
+``expect`` condition the body does not meet and for an SRDF that disagrees with the tree about
+the number of arms. The *kinematic type* is the first of the rule's ``kinematic_types`` that the
+rule set has (so a rule set with a ``Quadruped`` type classifies quadrupeds), or ``None``.
+
+Not here: finding the parts (:mod:`solver.identify.body`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+from solver.identify.body import Body
+from solver.identify.profile import Profile
+from solver.identify.srdf import Srdf
+from solver.rules import RuleSet
+
+__all__ = ["Reading", "classify", "kinematic_type_for"]
+
+
+@dataclass(frozen=True, slots=True)
+class Reading:
+    """What the classifier makes of a body."""
+
+    structure: str
+    kinematic_type: str | None
+    confidence: float
+    evidence: tuple[str, ...]
+
+
+def kinematic_type_for(structure: str, profile: Profile, rules: RuleSet) -> str | None:
+    """The rule set's kinematic type for ``structure`` (``None`` if it has none)."""
+    rule = next((r for r in profile.structures if r.name == structure), None)
+    if rule is None:
+        return None
+    known = {str(v).casefold(): str(v) for v in rules.key.values}
+    return next((known[t.casefold()] for t in rule.kinematic_types if t.casefold() in known),
+                None)
+
+
+def classify(body: Body, profile: Profile, rules: RuleSet, *, root: str = "",
+             srdf: Srdf | None = None) -> Reading:
+    """The structure, kinematic type, confidence and evidence of ``body``."""
+    features = body.features()
+    rule = next((r for r in profile.structures if r.matches(features)), None)
+    evidence = list(body.evidence(root))
+    if rule is None:
+        evidence.append("no structure rule of the profile matches this body")
+        return Reading("Other", None, 0.0, tuple(evidence))
+    confidence = rule.confidence
+    why = ", ".join(c.describe() for c in rule.when) or "no other structure matched"
+    where = "" if rule.location is None else \
+        f" ({Path(rule.location.file).name}:{rule.location.line})"
+    evidence.append(f"structure {rule.name}: {why}{where}")
+    for condition in rule.expect:
+        if not condition.holds(features):
+            confidence *= profile.doubt_factor
+            evidence.append(f"doubt: a typical {rule.name} has {condition.describe()}")
+    if srdf is not None:
+        confidence *= _srdf_agreement(body, srdf, profile, evidence)
+    kinematic_type = kinematic_type_for(rule.name, profile, rules)
+    if kinematic_type is None:
+        evidence.append(f"the rule set {rules.name!r} has no kinematic type for {rule.name} "
+                        f"(it has {', '.join(str(v) for v in rules.key.values)})")
+    elif kinematic_type != rule.name:
+        evidence.append(f"{rule.name} is the rule set's {kinematic_type}")
+    return Reading(rule.name, kinematic_type, round(confidence, 2), tuple(evidence))
+
+
+def _srdf_agreement(body: Body, srdf: Srdf, profile: Profile, evidence: list[str]) -> float:
+    groups = srdf.arm_groups(profile.limb("arm_min_joints"))
+    # Groups that extend another one (Fetch's arm_with_torso) plan the same arm.
+    distinct = [g for g in groups if not any(
+        other is not g and set(other.joints) < set(g.joints) for other in groups)]
+    arms = body.count("arm")
+    parts = [f"SRDF: {len(distinct)} arm planning group(s)"
+             + (f" ({', '.join(g.name for g in distinct)})" if distinct else "")]
+    if srdf.end_effectors:
+        parts.append(", ".join(f"end effector {e.name} on {e.parent_link}"
+                               for e in srdf.end_effectors))
+    if srdf.virtual_joints:
+        parts.append(", ".join(f"{v.type} virtual joint {v.name}" for v in srdf.virtual_joints))
+    evidence.append("; ".join(parts))
+    if distinct and len(distinct) != arms:
+        evidence.append(f"doubt: the SRDF plans {len(distinct)} arm(s), the tree shows {arms}")
+        return profile.doubt_factor
+    return 1.0

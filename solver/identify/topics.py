@@ -1,0 +1,104 @@
+"""Topic lists: what ``rostopic`` and ``ros2 topic`` print, read into (name, type, direction).
+
+Accepted, in one file or mixed:
+
+* ``rostopic list -v`` / ``ros2 topic list -v``: ``Published topics:`` and ``Subscribed
+  topics:`` sections of `` * /scan [sensor_msgs/LaserScan] 1 publisher`` lines; the section
+  gives each topic its direction, as the robot's nodes see it.
+* ``ros2 topic list -t``: ``/scan [sensor_msgs/msg/LaserScan]``.
+* ``rostopic list`` joined with ``rostopic type``: ``/scan sensor_msgs/LaserScan`` per line
+  (``for t in $(rostopic list); do echo "$t $(rostopic type $t)"; done``).
+
+Blank lines and ``#`` comments are skipped. A topic with no message type, or a type that is not
+``package/Name`` (ROS 2's ``package/msg/Name`` is accepted and normalised), is a located error;
+every bad line of a file is reported at once.
+
+:class:`Topic` is also what :mod:`solver.identify.bags` and a live ROS master give: the shared
+currency of :mod:`solver.identify.interfaces`.
+
+Not here: what a topic means (:mod:`solver.identify.interfaces`).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+from solver.errors import Fault, InputError, Location
+from solver.identify.safexml import read_bytes
+
+__all__ = ["Topic", "normalise_type", "parse_topic_list", "read_topic_list"]
+
+_SECTION = re.compile(r"^\s*(published|subscribed)\s+topics\s*:\s*$", re.IGNORECASE)
+_BRACKETED = re.compile(r"^\s*(?:\*\s*)?(\S+)\s+\[([^\]]*)\](?:\s+\d+\s+\w+)?\s*$")
+_PLAIN = re.compile(r"^\s*(?:\*\s*)?(\S+)(?:\s+(\S+))?\s*$")
+_TYPE = re.compile(r"^[A-Za-z][\w]*/(?:(?:msg|srv|action)/)?[A-Za-z][\w]*$")
+_NAME = re.compile(r"^/?[A-Za-z~{][\w/{}~]*$")
+
+
+@dataclass(frozen=True, slots=True)
+class Topic:
+    """A topic, its message type (``pkg/Name``) and, when known, the robot's direction."""
+
+    name: str
+    type: str
+    direction: str | None = None  # "published", "subscribed" or None (unknown)
+
+
+def normalise_type(text: str) -> str:
+    """``sensor_msgs/msg/Image`` -> ``sensor_msgs/Image``; ROS 1 names unchanged."""
+    parts = text.strip().split("/")
+    if len(parts) == 3 and parts[1] in ("msg", "srv", "action"):
+        return f"{parts[0]}/{parts[2]}"
+    return text.strip()
+
+
+def read_topic_list(path: str | Path, *, display: str | None = None) -> tuple[Topic, ...]:
+    """Read a topic list file (see the module docstring)."""
+    name = display if display is not None else str(path)
+    raw = read_bytes(path, display=name)
+    try:
+        text = raw.decode("utf-8-sig")
+    except UnicodeDecodeError as error:
+        raise InputError.at(name, f"not UTF-8 text (invalid byte at offset {error.start}); "
+                                  "is this a topic list?", code="topics") from None
+    return parse_topic_list(text, name)
+
+
+def parse_topic_list(text: str, name: str = "<topics>") -> tuple[Topic, ...]:
+    """Parse topic list text; :class:`InputError` lists every malformed line."""
+    faults: list[Fault] = []
+    found: list[Topic] = []
+    direction: str | None = None
+    for number, line in enumerate(text.splitlines(), start=1):
+        stripped = line.strip()
+        if not stripped or stripped.startswith("#"):
+            continue
+        section = _SECTION.match(line)
+        if section:
+            direction = section.group(1).lower()
+            continue
+        match = _BRACKETED.match(line) or _PLAIN.match(line)
+        topic, kind = (match.group(1), match.group(2)) if match else (stripped, None)
+        column = line.find(topic) + 1 if topic in line else 1
+        if not match or not _NAME.match(topic):
+            faults.append(Fault(Location(name, number, column), f"not a topic line: "
+                                                                f"{stripped[:80]!r}", "topics"))
+            continue
+        if not kind:
+            faults.append(Fault(Location(name, number, column, topic),
+                                f"topic {topic!r} has no message type (give `rostopic list "
+                                "-v`, `ros2 topic list -t`, or 'TOPIC TYPE' lines)", "topics"))
+            continue
+        if not _TYPE.match(kind.strip()):
+            faults.append(Fault(Location(name, number, line.find(kind) + 1, topic),
+                                f"{kind.strip()!r} is not a message type (package/Name)",
+                                "topics"))
+            continue
+        found.append(Topic(topic, normalise_type(kind), direction))
+    if faults:
+        raise InputError(faults)
+    if not found:
+        raise InputError.at(name, "no topics in this file", code="topics")
+    return tuple(found)

@@ -1,0 +1,317 @@
+"""Reports of a solved team, to take to a design meeting: HTML or Markdown.
+
+A report holds the counts per kinematic type, the bound T and the default configuration, the
+comparison with published figures when the team file carries them (``published:``), the radar
+chart and the bar chart of :mod:`solver.plot`, the team's selections and every UI configuration
+with its components.
+
+* **HTML** is one self-contained file: the charts are SVG embedded as ``data:`` URIs, the style
+  sheet is inline, and a Content-Security-Policy forbids fetching anything, so the page shows
+  the same offline, attached to a mail or archived.
+* **Markdown** links its charts as PNG files written beside it (``case3.md`` ->
+  ``case3-radar.png``, ``case3-bars.png``): Markdown viewers (GitHub among them) do not show
+  images from ``data:`` URIs.
+
+Both are deterministic: the same team gives the same bytes, charts included.
+
+Not here: the charts themselves (:mod:`solver.plot`), text/JSON/CSV output
+(:mod:`solver.formats`), many teams at once (:mod:`solver.batch`).
+"""
+
+from __future__ import annotations
+
+import base64
+import html
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+from typing import Any, Literal
+
+from solver.atomic import write_atomic
+from solver.constraints import Value
+from solver.errors import InputError
+from solver.formats import configuration_data, markdown_table
+from solver.plot import PlotKind, bars_figure, figure_bytes, radar_figure, runs
+from solver.rules import Characteristic
+from solver.solve import Solution, TypeSummary
+
+__all__ = [
+    "REPORT_FORMATS",
+    "image_names",
+    "render_html",
+    "render_markdown",
+    "report_format",
+    "reproduction_note",
+    "write_report",
+]
+
+ReportFormat = Literal["html", "markdown"]
+REPORT_FORMATS: dict[str, ReportFormat] = {".html": "html", ".htm": "html", ".md": "markdown",
+                                           ".markdown": "markdown"}
+_KINDS: tuple[PlotKind, ...] = ("radar", "bars")
+_ALT = {"radar": "Radar chart: the selected values of each kinematic type, one spoke per "
+                 "characteristic",
+        "bars": "Bar chart: valid robots and UI configurations per kinematic type"}
+
+_STYLE = """
+body { font-family: "DejaVu Sans", Verdana, sans-serif; max-width: 62rem; margin: 2rem auto;
+       padding: 0 1rem; color: #222; line-height: 1.4; }
+h1 { font-size: 1.6rem; margin-bottom: 0.2rem; }
+h2 { font-size: 1.2rem; margin-top: 2rem; border-bottom: 1px solid #ccc; }
+p.meta { color: #555; margin-top: 0; }
+table { border-collapse: collapse; margin: 0.8rem 0; font-size: 0.9rem; }
+th, td { border: 1px solid #bbb; padding: 0.2rem 0.5rem; text-align: left;
+         vertical-align: top; }
+th { background: #eee; }
+td.n { text-align: right; font-variant-numeric: tabular-nums; }
+tr.total td { font-weight: bold; }
+.note { border-left: 4px solid #0072B2; background: #f2f7fb; padding: 0.4rem 0.8rem; }
+.note.differs { border-left-color: #D55E00; background: #fdf3ec; }
+figure { margin: 1rem 0; }
+figure img { max-width: 100%; height: auto; }
+figcaption { color: #555; font-size: 0.85rem; }
+@media print { h2 { break-after: avoid; } table, figure { break-inside: avoid; } }
+"""
+
+
+def report_format(path: str | Path) -> ReportFormat:
+    """The report format a file name asks for (``.html``/``.htm``, ``.md``/``.markdown``)."""
+    suffix = Path(path).suffix.lower()
+    if suffix not in REPORT_FORMATS:
+        shown = f"'{suffix}'" if suffix else "no extension"
+        raise InputError.at(str(path), f"cannot tell the report format from {shown}; name the "
+                                       f"file {', '.join(REPORT_FORMATS)}",
+                            code="unknown-format")
+    return REPORT_FORMATS[suffix]
+
+
+def image_names(path: str | Path) -> dict[PlotKind, Path]:
+    """The chart files a Markdown report at ``path`` links: ``<stem>-radar.png`` and so on."""
+    target = Path(path)
+    return {kind: target.with_name(f"{target.stem}-{kind}.png") for kind in _KINDS}
+
+
+def reproduction_note(solution: Solution) -> tuple[str, bool] | None:
+    """The published figures beside the computed ones, worded as ``teleop-ui solve`` does.
+
+    ``None`` when the team carries no published figures; else the sentence and whether the
+    figures agree. Nothing is adjusted to agree.
+    """
+    published = solution.team.published
+    if published is None:
+        return None
+    totals = solution.totals
+    agrees = (published.valid_robots, published.ui_configurations) == \
+        (totals.valid_robots, totals.ui_configurations)
+    verdict = "reproduced" if agrees else (
+        f"NOT reproduced: these rules give {totals.valid_robots} / "
+        f"{totals.ui_configurations}")
+    source = f" ({published.source})" if published.source else ""
+    return (f"published{source}: {published.valid_robots} valid robots / "
+            f"{published.ui_configurations} UI configurations: {verdict}", agrees)
+
+
+# ---- the content, independent of the markup ----------------------------------------------
+
+def _ratio(summary: TypeSummary) -> str:
+    ratio = summary.reduction_ratio
+    return "" if ratio is None else f"{ratio:.2f}"
+
+
+def _summary_rows(solution: Solution) -> list[list[Any]]:
+    return [[s.kinematic_type, s.valid_robots, s.ui_configurations, _ratio(s)]
+            for s in (*solution.by_type, solution.totals)]
+
+
+_SUMMARY_HEADERS = ["kinematic type", "valid robots", "UI configurations",
+                    "robots per configuration"]
+
+
+def _facts(solution: Solution) -> list[str]:
+    rules = solution.rules
+    factors = " x ".join(str(n) for n in rules.bound_factors)
+    facts = [f"bound T = {solution.bound} ({factors}): the most UI configurations these rules "
+             "could ever need",
+             f"default UI configuration: {solution.default_configuration} (every component, "
+             f"{sum(rules.bound_factors)} in all), given to any robot outside the team's "
+             "selections"]
+    totals = solution.totals
+    if totals.unserved_robots:
+        facts.append(f"warning: {totals.unserved_robots} valid robots have a value in no "
+                     "component and get the default configuration (run teleop-ui check)")
+    if not solution.proven_minimal:
+        facts.append("warning: overlapping components; the configuration count is the best "
+                     "found, not proven minimal")
+    return facts
+
+
+def _values_text(characteristic: Characteristic, values: Sequence[Value]) -> str:
+    """A selection as a reader writes it: ``1..13``, ``2D Camera, LIDAR``, ``all (6)``."""
+    if characteristic.kind == "integer":
+        return ", ".join(str(first) if first == last else f"{first}..{last}"
+                         for first, last in runs(characteristic, values))
+    if tuple(values) == characteristic.values:
+        return f"all ({len(values)})"
+    return ", ".join(str(v) for v in values)
+
+
+def _selection_table(solution: Solution) -> tuple[list[str], list[list[str]]]:
+    rules = solution.rules
+    others = [(i, c) for i, c in enumerate(rules.characteristics) if c.name != rules.team_key]
+    headers = [rules.key.label, *(c.label for _, c in others)]
+    rows = [[s.kinematic_type, *(_values_text(c, s.domains[i]) for i, c in others)]
+            for s in solution.team.selections]
+    return headers, rows
+
+
+def _component_cell(entry: Mapping[str, Any]) -> str:
+    name = str(entry["component"])
+    if "range" in entry:
+        low, high = entry["range"]
+        few, many = entry["clusters"]
+        span = f"{low}" if low == high else f"{low}..{high}"
+        shown = f"{few}" if few == many else f"{few}..{many}"
+        return f"{name}: {span} ({shown} clusters)"
+    values = [str(v) for v in entry["values"]]
+    if values == [name]:
+        return name
+    return f"{name}: {', '.join(values)}"
+
+
+def _configuration_table(solution: Solution) -> tuple[list[str], list[list[Any]]]:
+    rules = solution.rules
+    headers = ["#", *(c.label for c in rules.characteristics), "valid robots"]
+    rows: list[list[Any]] = []
+    for configuration in solution.configurations:
+        data = configuration_data(rules, configuration)
+        rows.append([configuration.number, *(_component_cell(e) for e in data["components"]),
+                     configuration.robots])
+    rows.append([solution.default_configuration, "default: every component",
+                 *([""] * (len(rules.characteristics) - 1)), ""])
+    return headers, rows
+
+
+def _subtitle(solution: Solution) -> str:
+    team, rules = solution.team, solution.rules
+    return f"team file {team.file}; rules: {rules.name} ({rules.file})"
+
+
+# ---- HTML ------------------------------------------------------------------------------------
+
+_NUMBER = ' class="n"'
+_TOTAL = ' class="total"'
+
+
+def _html_table(headers: Sequence[str], rows: Sequence[Sequence[Any]],
+                numbers: Sequence[bool], total_last: bool = False) -> str:
+    e = html.escape
+    lines = ["<table>", "<thead><tr>" + "".join(f"<th>{e(str(h))}</th>" for h in headers)
+             + "</tr></thead>", "<tbody>"]
+    for index, row in enumerate(rows):
+        total = total_last and index == len(rows) - 1
+        cells = "".join(f"<td{_NUMBER if n else ''}>{e(str(v))}</td>"
+                        for v, n in zip(row, numbers, strict=True))
+        lines.append(f"<tr{_TOTAL if total else ''}>{cells}</tr>")
+    lines += ["</tbody>", "</table>"]
+    return "\n".join(lines)
+
+
+def _svg_uri(svg: bytes) -> str:
+    return "data:image/svg+xml;base64," + base64.b64encode(svg).decode("ascii")
+
+
+def render_html(solution: Solution, charts: Mapping[PlotKind, bytes] | None = None) -> str:
+    """The report as one self-contained HTML page.
+
+    ``charts`` maps ``radar``/``bars`` to SVG bytes; by default they are drawn here.
+    """
+    if charts is None:
+        charts = _charts(solution, "svg")
+    e = html.escape
+    team = solution.team
+    title = f"{team.name}: UI configurations"
+    parts = ["<!DOCTYPE html>", '<html lang="en">', "<head>", '<meta charset="utf-8">',
+             # Nothing may be fetched: the page must look the same offline and archived.
+             '<meta http-equiv="Content-Security-Policy" content="default-src \'none\'; '
+             'img-src data:; style-src \'unsafe-inline\'">',
+             '<meta name="viewport" content="width=device-width, initial-scale=1">',
+             f"<title>{e(title)}</title>", f"<style>{_STYLE}</style>", "</head>", "<body>",
+             f"<h1>{e(team.name)}</h1>", f'<p class="meta">{e(_subtitle(solution))}</p>']
+    if team.description:
+        parts.append(f"<p>{e(team.description)}</p>")
+    parts += ["<h2>Valid robots and UI configurations</h2>",
+              _html_table(_SUMMARY_HEADERS, _summary_rows(solution),
+                          [False, True, True, True], total_last=True),
+              "<ul>", *(f"<li>{e(fact)}</li>" for fact in _facts(solution)), "</ul>"]
+    note = reproduction_note(solution)
+    if note is not None:
+        text, agrees = note
+        parts.append(f'<p class="note{"" if agrees else " differs"}">{e(text)}</p>')
+    parts.append("<h2>Charts</h2>")
+    for kind in _KINDS:
+        if kind in charts:
+            parts += ["<figure>", f'<img src="{_svg_uri(charts[kind])}" alt="{e(_ALT[kind])}">',
+                      f"<figcaption>{e(_ALT[kind])}.</figcaption>", "</figure>"]
+    headers, rows = _selection_table(solution)
+    parts += ["<h2>Team selections</h2>",
+              _html_table(headers, rows, [False] * len(headers))]
+    headers, rows = _configuration_table(solution)
+    parts += [f"<h2>UI configurations ({len(solution.configurations)} and the default)</h2>",
+              _html_table(headers, rows, [True, *[False] * (len(headers) - 2), True]),
+              "</body>", "</html>"]
+    return "\n".join(parts) + "\n"
+
+
+# ---- Markdown ----------------------------------------------------------------------------
+
+def render_markdown(solution: Solution, images: Mapping[PlotKind, str] | None = None) -> str:
+    """The report as Markdown; ``images`` maps ``radar``/``bars`` to the links to use."""
+    team = solution.team
+    parts = [f"# {team.name}", "", f"_{_subtitle(solution)}_", ""]
+    if team.description:
+        parts += [team.description, ""]
+    parts += ["## Valid robots and UI configurations", "",
+              markdown_table(_SUMMARY_HEADERS, _summary_rows(solution),
+                             [False, True, True, True]).rstrip("\n"), ""]
+    parts += [f"- {fact}" for fact in _facts(solution)]
+    note = reproduction_note(solution)
+    if note is not None:
+        parts += ["", f"> **{note[0]}**"]
+    if images:
+        parts += ["", "## Charts", ""]
+        for kind in _KINDS:
+            if kind in images:
+                parts += [f"![{_ALT[kind]}]({images[kind]})", ""]
+    headers, rows = _selection_table(solution)
+    parts += ["", "## Team selections", "", markdown_table(headers, rows).rstrip("\n")]
+    headers, rows = _configuration_table(solution)
+    parts += ["", f"## UI configurations ({len(solution.configurations)} and the default)", "",
+              markdown_table(headers, rows,
+                             [True, *[False] * (len(headers) - 2), True]).rstrip("\n")]
+    text = "\n".join(parts) + "\n"
+    while "\n\n\n" in text:
+        text = text.replace("\n\n\n", "\n\n")
+    return text
+
+
+# ---- writing ---------------------------------------------------------------------------------
+
+def _charts(solution: Solution, fmt: str) -> dict[PlotKind, bytes]:
+    return {"radar": figure_bytes(radar_figure(solution), fmt),
+            "bars": figure_bytes(bars_figure(solution), fmt)}
+
+
+def write_report(solution: Solution, path: str | Path) -> list[Path]:
+    """Write the report to ``path`` (format by extension); returns every file written.
+
+    HTML is one file. Markdown also writes its two PNG charts beside it (see
+    :func:`image_names`), charts first, so the page never links a missing image.
+    """
+    fmt = report_format(path)
+    if fmt == "html":
+        return [write_atomic(path, render_html(solution))]
+    names = image_names(path)
+    charts = _charts(solution, "png")
+    written = [write_atomic(names[kind], charts[kind]) for kind in _KINDS]
+    links = {kind: names[kind].name for kind in _KINDS}
+    written.append(write_atomic(path, render_markdown(solution, links)))
+    return written

@@ -1,0 +1,174 @@
+"""Small robot descriptions the identification tests write themselves.
+
+:class:`RobotText` builds URDF text joint by joint; the functions below build one robot of each
+kind the classifier knows (wheeled and tracked UGVs, multirotors, arms, torsos, humanoids,
+quadrupeds, bipeds, hands, aerial and legged manipulators).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+
+@dataclass
+class RobotText:
+    name: str
+    root: str = "base_link"
+    joints: list[str] = field(default_factory=list)
+    links: list[str] = field(default_factory=list)
+    extra: list[str] = field(default_factory=list)
+
+    def __post_init__(self) -> None:
+        self.links.append(self.root)
+
+    def joint(self, name: str, kind: str, parent: str, child: str, body: str = "") -> str:
+        self.links.append(child)
+        self.joints.append(f'  <joint name="{name}" type="{kind}"><parent link="{parent}"/>'
+                           f'<child link="{child}"/>{body}</joint>')
+        return child
+
+    def chain(self, parent: str, names: list[str], kind: str = "revolute") -> str:
+        """A serial chain of joints ``names``; each child link is ``<joint>_link``."""
+        link = parent
+        for name in names:
+            link = self.joint(name, kind, link, f"{name}_link",
+                              '<limit lower="-1" upper="1" effort="1" velocity="1"/>'
+                              if kind in ("revolute", "prismatic") else "")
+        return link
+
+    def fixed(self, parent: str, child: str) -> str:
+        return self.joint(f"{child}_fixed", "fixed", parent, child)
+
+    def add(self, xml: str) -> None:
+        self.extra.append(xml)
+
+    def text(self) -> str:
+        links = "\n".join(f'  <link name="{link}"/>' for link in self.links)
+        return (f'<?xml version="1.0"?>\n<robot name="{self.name}">\n{links}\n'
+                + "\n".join(self.joints + self.extra) + "\n</robot>\n")
+
+
+def gazebo_sensor(link: str, kind: str, name: str, inner: str = "", plugin: str = "") -> str:
+    plugin_xml = f'<plugin name="{name}_plugin" filename="{plugin}"/>' if plugin else ""
+    return (f'  <gazebo reference="{link}"><sensor type="{kind}" name="{name}">{inner}'
+            f"{plugin_xml}</sensor></gazebo>")
+
+
+def model_plugin(name: str, filename: str, params: str = "") -> str:
+    return f'  <gazebo><plugin name="{name}" filename="{filename}">{params}</plugin></gazebo>'
+
+
+def wheeled_base(robot: RobotText, wheels: int = 2) -> None:
+    for side in ("left", "right", "rear_left", "rear_right")[:wheels]:
+        robot.joint(f"wheel_{side}_joint", "continuous", robot.root, f"wheel_{side}_link")
+
+
+def arm(robot: RobotText, parent: str, prefix: str = "", joints: int = 6,
+        gripper: bool = True) -> str:
+    names = [f"{prefix}shoulder_pan", f"{prefix}shoulder_lift", f"{prefix}elbow",
+             *(f"{prefix}wrist_{i}" for i in range(1, joints - 2))][:joints]
+    tip = robot.chain(parent, names)
+    if gripper:
+        robot.chain(tip, [f"{prefix}gripper_finger_left"], "prismatic")
+        robot.joint(f"{prefix}gripper_finger_right", "prismatic", tip,
+                    f"{prefix}gripper_finger_right_link",
+                    f'<mimic joint="{prefix}gripper_finger_left"/>'
+                    '<limit lower="0" upper="1" effort="1" velocity="1"/>')
+    return tip
+
+
+def leg(robot: RobotText, parent: str, prefix: str, joints: tuple[str, ...]) -> str:
+    tip = robot.chain(parent, [f"{prefix}_{j}" for j in joints])
+    return robot.fixed(tip, f"{prefix}_foot")
+
+
+def ugv() -> RobotText:
+    robot = RobotText("rover")
+    wheeled_base(robot, 4)
+    return robot
+
+
+def tracked() -> RobotText:
+    robot = RobotText("crawler")
+    robot.add(model_plugin("tracks", "libSimpleTrackedVehiclePlugin.so"))
+    robot.chain(robot.root, ["flipper_front_j", "flipper_front_motor_j"])
+    return robot
+
+
+def quadrotor(rotors: int = 4) -> RobotText:
+    robot = RobotText("copter")
+    for i in range(rotors):
+        robot.joint(f"rotor_{i}_joint", "continuous", robot.root, f"rotor_{i}")
+    return robot
+
+
+def manipulator() -> RobotText:
+    robot = RobotText("arm6")
+    arm(robot, robot.root)
+    return robot
+
+
+def torso() -> RobotText:
+    robot = RobotText("dual")
+    waist = robot.chain(robot.root, ["torso_waist"])
+    arm(robot, waist, "left_", 7)
+    arm(robot, waist, "right_", 7)
+    return robot
+
+
+def mobile_manipulator() -> RobotText:
+    robot = RobotText("fetcher")
+    wheeled_base(robot)
+    lift = robot.chain(robot.root, ["torso_lift"], "prismatic")
+    arm(robot, lift)
+    robot.chain(lift, ["head_pan", "head_tilt"])
+    return robot
+
+
+def humanoid() -> RobotText:
+    robot = RobotText("biped_arms")
+    for side in ("l", "r"):
+        leg(robot, robot.root, f"{side}_leg", ("hip_yaw", "hip_roll", "hip_pitch", "knee",
+                                                "ankle_pitch", "ankle_roll"))
+        arm(robot, robot.root, f"{side}_", 5)
+    robot.chain(robot.root, ["neck_yaw", "head_pitch"])
+    return robot
+
+
+def quadruped() -> RobotText:
+    robot = RobotText("dog")
+    for corner in ("FL", "FR", "RL", "RR"):
+        leg(robot, robot.root, corner, ("hip", "thigh", "calf"))
+    return robot
+
+
+def biped() -> RobotText:
+    robot = RobotText("legs")
+    for side in ("l", "r"):
+        leg(robot, robot.root, side, ("hip_pitch", "knee", "ankle"))
+    return robot
+
+
+def hand() -> RobotText:
+    robot = RobotText("hand5", root="palm")
+    for finger in ("index", "middle", "ring", "little", "thumb"):
+        robot.chain(robot.root, [f"{finger}_finger_{i}" for i in range(3)])
+    return robot
+
+
+def aerial_manipulator() -> RobotText:
+    robot = quadrotor()
+    arm(robot, robot.root, joints=3)
+    return robot
+
+
+def legged_manipulator() -> RobotText:
+    robot = quadruped()
+    arm(robot, robot.root, joints=6)
+    return robot
+
+
+def pan_tilt_only() -> RobotText:
+    robot = RobotText("ptu")
+    robot.chain(robot.root, ["pan_joint", "tilt_joint"])
+    return robot

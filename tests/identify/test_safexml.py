@@ -1,0 +1,79 @@
+"""Hostile XML is refused with a located error, in bounded memory."""
+
+from __future__ import annotations
+
+import tracemalloc
+from pathlib import Path
+
+import pytest
+
+from solver.errors import InputError
+from solver.identify.safexml import MAX_XML_BYTES, parse_xml, read_xml
+from tests.conftest import run_cli
+
+LAUGHS = ('<?xml version="1.0"?>\n<!DOCTYPE lolz [\n <!ENTITY lol "lol">\n'
+          + "".join(f' <!ENTITY lol{i} "{("&lol" + str(i - 1) + ";") * 10}">\n'
+                    for i in range(1, 10)).replace("&lol0;", "&lol;")
+          + ']>\n<robot name="&lol9;"/>\n')
+QUADRATIC = ('<?xml version="1.0"?>\n<!DOCTYPE r [<!ENTITY a "' + "x" * 50_000 + '">]>\n'
+             '<robot name="q">' + "&a;" * 50_000 + "</robot>\n")
+EXTERNAL = ('<?xml version="1.0"?>\n<!DOCTYPE r [\n<!ENTITY xxe SYSTEM "file:///etc/passwd">\n]>'
+            '\n<robot name="&xxe;"/>\n')
+
+
+@pytest.mark.parametrize("text", [LAUGHS, QUADRATIC, EXTERNAL],
+                         ids=["billion-laughs", "quadratic-blowup", "external-entity"])
+def test_entity_declarations_are_refused_with_their_line(text: str) -> None:
+    with pytest.raises(InputError) as caught:
+        parse_xml(text, "bomb.urdf")
+    fault = caught.value.faults[0]
+    assert fault.code == "xml-entity"
+    assert fault.location.file == "bomb.urdf"
+    assert fault.location.line is not None
+    assert fault.location.line >= 2
+
+
+def test_external_entity_error_names_the_reference() -> None:
+    with pytest.raises(InputError, match="file:///etc/passwd"):
+        parse_xml(EXTERNAL, "x.urdf")
+
+
+def test_malformed_xml_error_has_line_and_column() -> None:
+    with pytest.raises(InputError) as caught:
+        parse_xml('<robot name="x">\n  <link name="a">\n</robot>\n', "bad.urdf")
+    location = caught.value.faults[0].location
+    assert (location.file, location.line) == ("bad.urdf", 3)
+    assert location.column is not None
+
+
+def test_a_100_mb_file_is_refused_after_reading_at_most_the_cap(tmp_path: Path) -> None:
+    big = tmp_path / "big.urdf"
+    with big.open("wb") as stream:
+        stream.write(b'<robot name="big">')
+        stream.truncate(100 * 1024 * 1024)
+    tracemalloc.start()
+    with pytest.raises(InputError, match="larger than"):
+        read_xml(big)
+    _, peak = tracemalloc.get_traced_memory()
+    tracemalloc.stop()
+    assert peak < 2 * MAX_XML_BYTES + 1024 * 1024
+
+
+def test_an_empty_file_and_a_folder_are_refused(tmp_path: Path) -> None:
+    (tmp_path / "empty.urdf").write_text("")
+    with pytest.raises(InputError, match="empty file"):
+        read_xml(tmp_path / "empty.urdf")
+    with pytest.raises(InputError, match="directory"):
+        read_xml(tmp_path)
+
+
+@pytest.mark.parametrize("text", [LAUGHS, QUADRATIC, EXTERNAL])
+def test_the_cli_refuses_bombs_with_exit_2_and_no_traceback(tmp_path: Path, text: str) -> None:
+    path = tmp_path / "bomb.urdf"
+    path.write_text(text, encoding="utf-8")
+    result = run_cli("identify", path)
+    assert result.returncode == 2
+    assert "bomb.urdf:" in result.stderr
+    assert "entity" in result.stderr
+    assert "Traceback" not in result.stderr
+    assert result.stdout == ""

@@ -1,0 +1,125 @@
+"""Each kind of body is read as its structure, mapped to the rule set's kinematic type."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from pathlib import Path
+
+import pytest
+
+from solver.identify import identify_urdf, load_profile
+from solver.identify.body import detect_body
+from solver.identify.urdf import parse_urdf
+from solver.rules import load_rules
+from tests.conftest import RULES
+from tests.identify import builders
+from tests.identify.builders import RobotText
+
+CASES: list[tuple[Callable[[], RobotText], str, str | None]] = [
+    (builders.ugv, "UGV", "UGV"),
+    (builders.tracked, "UGV", "UGV"),
+    (builders.quadrotor, "UAV", "UAV"),
+    (builders.manipulator, "Manipulator", "Manipulator"),
+    (builders.torso, "Torso", "Torso"),
+    (builders.mobile_manipulator, "Mobile Manipulator", "Mobile Manipulator"),
+    (builders.humanoid, "Humanoid", "Humanoid"),
+    (builders.quadruped, "Quadruped", None),
+    (builders.biped, "Biped", None),
+    (builders.hand, "Hand", None),
+    (builders.aerial_manipulator, "Aerial Manipulator", None),
+    (builders.legged_manipulator, "Legged Mobile Manipulator", None),
+    (builders.pan_tilt_only, "Other", None),
+]
+
+
+@pytest.mark.parametrize(("build", "structure", "kinematic_type"), CASES,
+                         ids=[case[1] for case in CASES])
+def test_identify_reads_each_body_under_the_paper_rules(
+        build: Callable[[], RobotText], structure: str, kinematic_type: str | None) -> None:
+    result = identify_urdf(build().text())
+    assert (result.structure, result.kinematic_type) == (structure, kinematic_type)
+    assert 0 < result.confidence <= 1
+    assert any(line.startswith(f"structure {structure}") for line in result.evidence)
+
+
+def test_a_paper_rule_set_has_no_type_for_a_quadruped_and_says_so() -> None:
+    result = identify_urdf(builders.quadruped().text())
+    assert result.kinematic_type is None
+    assert any("has no kinematic type for Quadruped" in line for line in result.evidence)
+
+
+def test_a_rule_set_with_a_quadruped_type_classifies_quadrupeds(tmp_path: Path) -> None:
+    text = (RULES / "paper.yaml").read_text(encoding="utf-8")
+    text = text.replace("      - Humanoid                # at least two arms, two legs and a head",
+                        "      - Humanoid\n      - Quadruped")
+    text = text.replace("bound: 900", "bound: 1050")
+    (tmp_path / "legged.yaml").write_text(text, encoding="utf-8")
+    rules = load_rules(tmp_path / "legged.yaml")
+    result = identify_urdf(builders.quadruped().text(), rules=rules)
+    assert result.kinematic_type == "Quadruped"
+
+
+def test_wheels_named_only_by_a_drive_plugin_are_wheels() -> None:
+    robot = RobotText("plain")
+    robot.joint("left_motor", "continuous", "base_link", "l")
+    robot.joint("right_motor", "continuous", "base_link", "r")
+    robot.add(builders.model_plugin("drive", "libgazebo_ros_diff_drive.so",
+                                    "<leftJoint>left_motor</leftJoint>"
+                                    "<rightJoint>right_motor</rightJoint>"))
+    body = detect_body(parse_urdf(robot.text()), load_profile())
+    assert body.wheels == ("left_motor", "right_motor")
+
+
+def test_zero_range_revolute_joints_are_fixed_and_mimic_joints_not_actuated() -> None:
+    robot = builders.quadrotor()
+    robot.joint("imu_joint", "revolute", "base_link", "imu_link",
+                '<limit lower="0" upper="0" effort="0" velocity="0"/>')
+    urdf = parse_urdf(robot.text())
+    joint = urdf.joint("imu_joint")
+    assert joint is not None
+    assert not joint.movable
+    arm = parse_urdf(builders.manipulator().text()).joint("gripper_finger_right")
+    assert arm is not None
+    assert arm.movable
+    assert not arm.actuated
+
+
+def test_a_chain_carrying_wheels_is_a_mount_not_a_leg() -> None:
+    robot = RobotText("wheel_legged")
+    robot.chain("base_link", ["hip_pitch", "knee_pitch"])
+    robot.joint("wheel_joint", "continuous", "knee_pitch_link", "wheel")
+    robot.chain("base_link", ["l_shoulder", "l_elbow", "l_wrist"])
+    robot.chain("base_link", ["r_shoulder", "r_elbow", "r_wrist"])
+    body = detect_body(parse_urdf(robot.text()), load_profile())
+    assert [limb.kind for limb in body.limbs] == ["arm", "arm", "mount"]
+    assert identify_urdf(robot.text()).structure == "Mobile Manipulator"
+
+
+def test_flight_plugins_alone_make_a_uav() -> None:
+    robot = RobotText("hector")
+    robot.add(builders.model_plugin("propulsion", "libhector_gazebo_quadrotor_propulsion.so"))
+    result = identify_urdf(robot.text())
+    assert result.structure == "UAV"
+    assert any("flight plugin" in line for line in result.evidence)
+
+
+def test_a_humanoid_without_a_head_is_read_with_doubt() -> None:
+    robot = builders.humanoid()
+    robot.joints = [j for j in robot.joints if "neck" not in j and "head" not in j]
+    robot.links = [link for link in robot.links if "neck" not in link and "head" not in link]
+    result = identify_urdf(robot.text())
+    assert result.structure == "Humanoid"
+    assert result.confidence == pytest.approx(0.95 * 0.8, abs=0.01)
+    assert any(line.startswith("doubt:") for line in result.evidence)
+
+
+def test_a_planar_base_joint_is_a_mobile_base() -> None:
+    robot = RobotText("planar", root="odom")
+    base = robot.joint("base_planar", "planar", "odom", "base_link")
+    builders.arm(robot, base)
+    assert identify_urdf(robot.text()).structure == "Mobile Manipulator"
+
+
+def test_identification_is_deterministic() -> None:
+    text = builders.mobile_manipulator().text()
+    assert identify_urdf(text) == identify_urdf(text)

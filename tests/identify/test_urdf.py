@@ -1,0 +1,104 @@
+"""URDF text is read into a checked tree; every structural problem is located."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from solver.errors import InputError
+from solver.identify.urdf import parse_urdf
+from tests.conftest import run_cli
+from tests.identify import builders
+
+
+def faults(text: str) -> list[str]:
+    with pytest.raises(InputError) as caught:
+        parse_urdf(text, "r.urdf")
+    return [str(fault) for fault in caught.value.faults]
+
+
+def test_parse_urdf_reads_links_joints_sensors_and_plugins() -> None:
+    robot = builders.ugv()
+    robot.add(builders.gazebo_sensor("base_link", "ray", "laser"))
+    robot.add(builders.model_plugin("imu", "libhector_gazebo_ros_imu.so",
+                                    "<bodyName>base_link</bodyName>"))
+    urdf = parse_urdf(robot.text(), "rover.urdf")
+    assert urdf.root == "base_link"
+    assert urdf.name == "rover"
+    assert len(urdf.joints) == 4
+    assert len(urdf.links) == 5
+    assert urdf.sensors[0].type == "ray"
+    assert urdf.sensors[0].link == "base_link"
+    assert urdf.plugins[0].param("bodyname") == "base_link"
+
+
+def test_a_joint_naming_a_missing_link_is_located_at_that_element() -> None:
+    text = '<robot name="r">\n<link name="a"/>\n<joint name="j" type="fixed">\n' \
+           '<parent link="a"/>\n<child link="ghost"/>\n</joint>\n</robot>'
+    assert faults(text) == ["r.urdf:5: joint[j].child: joint 'j' names child link 'ghost', "
+                            "which does not exist"]
+
+
+def test_every_problem_of_a_file_is_reported_at_once() -> None:
+    text = ('<robot name="r">\n<link name="a"/>\n<link name="a"/>\n'
+            '<joint name="j1" type="hinge"><parent link="a"/><child link="b"/></joint>\n'
+            '<joint name="j2" type="fixed"><parent link="x"/><child link="a"/></joint>\n'
+            "</robot>")
+    found = faults(text)
+    assert len(found) == 4
+    assert any("duplicate link 'a'" in f for f in found)
+    assert any("unknown joint type 'hinge'" in f and f.startswith("r.urdf:4:") for f in found)
+    assert any("child link 'b'" in f for f in found)
+    assert any("parent link 'x'" in f and f.startswith("r.urdf:5:") for f in found)
+
+
+def test_a_cycle_is_reported() -> None:
+    text = ('<robot name="r"><link name="root"/><link name="a"/><link name="b"/>\n'
+            '<joint name="j1" type="fixed"><parent link="a"/><child link="b"/></joint>\n'
+            '<joint name="j2" type="fixed"><parent link="b"/><child link="a"/></joint>\n'
+            "</robot>")
+    assert any("cycle" in f for f in faults(text))
+
+
+def test_a_link_with_two_parents_is_reported() -> None:
+    text = ('<robot name="r"><link name="a"/><link name="b"/><link name="c"/>\n'
+            '<joint name="j1" type="fixed"><parent link="a"/><child link="c"/></joint>\n'
+            '<joint name="j2" type="fixed"><parent link="b"/><child link="c"/></joint>\n'
+            "</robot>")
+    assert any("two parent joints" in f for f in faults(text))
+
+
+def test_several_roots_and_an_empty_robot_are_reported() -> None:
+    assert "2 root links" in faults('<robot name="r"><link name="a"/><link name="b"/></robot>')[0]
+    assert "no links" in faults('<robot name="e"/>')[0]
+
+
+def test_a_document_that_is_not_a_robot_is_refused() -> None:
+    assert "expected <robot>" in faults("<sdf/>")[0]
+
+
+def test_a_self_joint_and_a_bad_limit_are_reported() -> None:
+    text = ('<robot name="r"><link name="a"/>\n'
+            '<joint name="j" type="revolute"><parent link="a"/><child link="a"/>'
+            '<limit lower="x"/></joint></robot>')
+    assert any("to itself" in f for f in faults(text))
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ('<robot name="r"><link name="a"/><link name="b"/>'
+     '<joint name="j" type="ball"><parent link="a"/><child link="b"/></joint></robot>',
+     "unknown joint type 'ball'"),
+    ('<robot name="r"><link name="a"/><link name="b"/></robot>', "2 root links"),
+    ('<robot name="e"/>', "empty robot"),
+    ('<robot name="r"><link name="a"></robot>', "malformed XML"),
+])
+def test_the_cli_reports_bad_urdfs_with_exit_2(tmp_path: Path, text: str, expected: str) -> None:
+    path = tmp_path / "bad.urdf"
+    path.write_text(text, encoding="utf-8")
+    result = run_cli("identify", path, "--format", "json")
+    assert result.returncode == 2
+    assert expected in result.stderr
+    assert str(path) in result.stderr
+    assert "Traceback" not in result.stderr
+    assert result.stdout == ""
