@@ -1,0 +1,146 @@
+"""Benchmark: ``teleop-ui check`` on a large generated rule set.
+
+50 kinematic types, 8 motion controls, 100 sensor types in 11 presentation groups, 1..50
+sensors in 5 arrangements, and 200 constraints. The rule set is built so that what a correct
+checker must report is known from its construction, independently of the checker:
+
+* 187 ``forbid {type, sensor}`` pairs, all distinct, at most four per type and two per sensor
+  type (no value dies, none is redundant), and 7 rules "motion control M_k only outside a
+  block of five types" (``dead-for-type`` for 35 types);
+* planted faults: a sensor type in no group (``coverage-gap``), a sensor type forbidden
+  outright (``dead-value``) that is alone in its group (``dead-component``), a type voided by
+  two rules (``void-type`` and one ``conflict``), a type forced to one motion control
+  (``core-value``), a rule entailed by one of the pairs (``redundant-constraint``), a rule
+  that excludes nothing (``tautology``), and a declared bound that differs from T.
+
+Run: ``python -m pytest benchmarks/bench_check.py`` (timings), or with ``--benchmark-disable``
+to only assert the findings.
+"""
+
+from __future__ import annotations
+
+import re
+from collections import Counter
+from pathlib import Path
+
+from pytest_benchmark.fixture import BenchmarkFixture
+
+from solver.check import Report, check_files
+
+TYPES = 50
+MOTIONS = 8
+SENSORS = 100
+PAIRS = 187  # with the 13 planted and block rules: 200 constraints
+BLOCK = 5    # types per "motion control M_k only outside this block" rule
+
+VOID_TYPE = TYPES - 1      # K49: voided by two rules
+CORE_TYPE = TYPES - 2      # K48: forced to motion control M0
+GAP_SENSOR = SENSORS - 2   # S98: in no presentation group
+DEAD_SENSOR = SENSORS - 1  # S99: forbidden outright, alone in the group 'spare'
+
+
+def _type(i: int) -> str:
+    return f"K{i:02d}"
+
+
+def _sensor(j: int) -> str:
+    return f"S{j:02d}"
+
+
+def pairs() -> list[tuple[int, int]]:
+    """Distinct (type, sensor) pairs: n -> (n mod 48, 37 n mod 98) is injective for n < 2352."""
+    return [(n % (TYPES - 2), (37 * n) % (SENSORS - 2)) for n in range(PAIRS)]
+
+
+def blocks() -> list[tuple[int, list[int]]]:
+    """Motion control k (1..7) is forbidden for the block of types 5(k-1) .. 5(k-1)+4."""
+    return [(k, list(range(BLOCK * (k - 1), BLOCK * k))) for k in range(1, MOTIONS)]
+
+
+def rule_text() -> str:
+    """The generated rule set as a YAML file."""
+    lines = ["name: benchmark rule set", "bound: 20000  # wrong on purpose: T = 22000",
+             "characteristics:", "  kinematic_type:",
+             f"    values: [{', '.join(_type(i) for i in range(TYPES))}]",
+             "  motion_control:", f"    values: [{', '.join(f'M{k}' for k in range(MOTIONS))}]",
+             "  sensor_type:", f"    values: [{', '.join(_sensor(j) for j in range(SENSORS))}]",
+             "    components:"]
+    for group in range(10):
+        members = [j for j in range(10 * group, 10 * group + 10) if j < GAP_SENSOR]
+        lines += [f"      - name: g{group}",
+                  f"        values: [{', '.join(_sensor(j) for j in members)}]"]
+    lines += ["      - name: spare", f"        values: [{_sensor(DEAD_SENSOR)}]",
+              "  sensor_count:", "    range: {min: 1, max: 50}", "    components:"]
+    for low, high, size in ((1, 5, 1), (6, 10, 2), (11, 15, 3), (16, 25, 5), (26, 50, 10)):
+        lines += [f"      - name: clusters of {size}", f"        min: {low}",
+                  f"        max: {high}", f"        cluster_size: {size}"]
+    lines.append("constraints:")
+    for i, j in pairs():
+        lines += [f"  - name: no {_sensor(j)} on {_type(i)}",
+                  f"    forbid: {{kinematic_type: {_type(i)}, sensor_type: {_sensor(j)}}}"]
+    for k, block in blocks():
+        allowed = [_type(i) for i in range(TYPES) if i not in block]
+        lines += [f"  - name: M{k} only outside block {k}", f"    when: {{motion_control: M{k}}}",
+                  f"    require: {{kinematic_type: [{', '.join(allowed)}]}}"]
+    lines += [
+        f"  - name: {_type(VOID_TYPE)} few",
+        f"    forbid: {{kinematic_type: {_type(VOID_TYPE)}, sensor_count: {{max: 25}}}}",
+        f"  - name: {_type(VOID_TYPE)} many",
+        f"    forbid: {{kinematic_type: {_type(VOID_TYPE)}, sensor_count: {{min: 26}}}}",
+        f"  - name: no {_sensor(DEAD_SENSOR)}",
+        f"    forbid: {{sensor_type: {_sensor(DEAD_SENSOR)}}}",
+        f"  - name: {_type(CORE_TYPE)} uses M0",
+        f"    when: {{kinematic_type: {_type(CORE_TYPE)}}}",
+        "    require: {motion_control: M0}",
+        "  - name: S05 means S05 or S06",
+        "    when: {sensor_type: S05}",
+        "    require: {sensor_type: [S05, S06]}",
+        "  - name: no S00 on K00 with few sensors",
+        "    forbid: {kinematic_type: K00, sensor_type: S00, sensor_count: {max: 3}}",
+    ]
+    return "\n".join(lines) + "\n"
+
+
+# Index of each planted constraint in the file (the pairs and blocks come first).
+_PLANTED = PAIRS + MOTIONS - 1
+EXPECTED_PROBLEMS = {
+    ("coverage-gap", f"characteristics.sensor_type.values[{GAP_SENSOR}]"),
+    ("dead-value", f"characteristics.sensor_type.values[{DEAD_SENSOR}]"),
+    ("dead-component", "characteristics.sensor_type.components[10]"),
+    ("void-type", f"characteristics.kinematic_type.values[{VOID_TYPE}]"),
+    ("conflict", f"constraints[{_PLANTED}]"),
+    ("tautology", f"constraints[{_PLANTED + 4}]"),
+    ("redundant-constraint", f"constraints[{_PLANTED + 5}]"),
+    ("bound-mismatch", "bound"),
+}
+
+
+def expected_dead_for_type() -> set[tuple[str, str]]:
+    """(type's path, characteristic) for every type that loses values to its constraints."""
+    expected = {(f"characteristics.kinematic_type.values[{i}]", "sensor_type")
+                for i, _ in pairs()}
+    expected |= {(f"characteristics.kinematic_type.values[{i}]", "motion_control")
+                 for _, block in blocks() for i in block}
+    return expected
+
+
+def _assert_findings(report: Report) -> None:
+    problems = {(f.check, f.location.path) for f in report.findings if f.level != "info"}
+    assert problems == EXPECTED_PROBLEMS
+    counts = Counter(f.check for f in report.findings)
+    assert counts["bound"] == 1
+    assert counts["core-value"] == 1
+    dead_for_type = {(f.location.path, re.search(r" has (\w+) ", f.message).group(1))  # type: ignore[union-attr]
+                     for f in report.findings if f.check == "dead-for-type"}
+    assert dead_for_type == expected_dead_for_type()
+    assert counts["dead-for-type"] == 48 + 35
+    assert len(report.findings) == len(EXPECTED_PROBLEMS) + 2 + 48 + 35
+
+
+def test_check_large_rule_set(benchmark: BenchmarkFixture, tmp_path: Path) -> None:
+    rules = tmp_path / "large.yaml"
+    rules.write_text(rule_text(), encoding="utf-8")
+    # pytest-benchmark ships no type hints.
+    report = benchmark.pedantic(  # type: ignore[no-untyped-call]
+        check_files, args=([rules],), rounds=3, iterations=1)
+    _assert_findings(report)

@@ -1,0 +1,132 @@
+"""Dead values and dead components: what the constraints make impossible.
+
+A value is *dead* when no valid robot can have it: it is declared, teams may select it, and it
+never appears. A component is dead when no valid robot ever needs it. Both are worth a
+warning because they are usually an over-eager constraint. Per kinematic type, constraints
+often remove values on purpose ("Flight only for UAVs"); those are reported at info level
+(``dead-for-type``), once per type and characteristic, with the constraints responsible, so
+that a rule author sees what each type can still have. Every reason is a deletion-minimal set
+of constraints (:meth:`solver.check.analysis.Analysis.minimal_conflict`).
+
+Not here: kinematic types that lose every robot (:mod:`solver.check.void`); what a team
+selects (:mod:`solver.check.teams`). Nothing is reported for a void rule set.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from solver.check.context import RulesContext, integer_runs, values_text
+from solver.check.finding import Check, Finding
+from solver.constraints import Value
+from solver.rules import Characteristic
+
+__all__ = ["CHECKS"]
+
+
+def _analysable(context: RulesContext) -> bool:
+    return bool(context.rules.constraints) and not context.analysis.is_void
+
+
+def _others(context: RulesContext) -> Iterator[tuple[int, Characteristic]]:
+    key = context.rules.key_position
+    for position, characteristic in enumerate(context.rules.characteristics):
+        if position != key:
+            yield position, characteristic
+
+
+def _excluded_by(context: RulesContext, conflict: tuple[int, ...]) -> str:
+    listed = context.constraint_list(conflict)
+    return f"excluded by {listed}" + (" together" if len(conflict) > 1 else "")
+
+
+def _dead_values(context: RulesContext) -> Iterator[Finding]:
+    if not _analysable(context):
+        return
+    analysis = context.analysis
+    for position, characteristic in _others(context):
+        live = analysis.live_anywhere[position]
+        dead = [v for v in characteristic.values if v not in live]
+        groups: list[tuple[Value, ...]] = [(v,) for v in dead] \
+            if characteristic.kind != "integer" else list(integer_runs(dead))
+        for values in groups:
+            conflict = analysis.minimal_conflict(
+                analysis.narrowed(analysis.full, position, values))
+            if characteristic.kind == "integer":
+                location = context.locate(("characteristics", characteristic.name, "range"))
+            else:
+                location = context.value_location(characteristic, values[0])
+            yield DEAD_VALUE.finding(
+                location, f"{characteristic.name} {values_text(characteristic, values)} can "
+                          f"appear in no valid robot: {_excluded_by(context, conflict)}",
+                context.constraint_related(conflict, "excludes it"))
+
+
+def _dead_components(context: RulesContext) -> Iterator[Finding]:
+    if not _analysable(context):
+        return
+    for position, characteristic in _others(context):
+        if not characteristic.declared_components:
+            continue
+        live = context.analysis.live_anywhere[position]
+        for component in characteristic.components:
+            if component.values and live.isdisjoint(component.values):
+                yield DEAD_COMPONENT.finding(
+                    context.component_location(characteristic, component),
+                    f"{characteristic.name} component {component.name!r} is never needed: no "
+                    f"valid robot has any of its values "
+                    f"({values_text(characteristic, component.values)})")
+
+
+def _dead_for_type(context: RulesContext) -> Iterator[Finding]:
+    if not _analysable(context):
+        return
+    analysis = context.analysis
+    key = context.rules.key
+    for kinematic_type, live in analysis.type_live.items():
+        if kinematic_type in analysis.void_types:
+            continue
+        domains = analysis.type_domains(kinematic_type)
+        for position, characteristic in _others(context):
+            anywhere = analysis.live_anywhere[position]
+            dead = [v for v in characteristic.values if v in anywhere and v not in live[position]]
+            # One value left is a core value, reported (with its reason) by core-value.
+            if not dead or len(live[position]) == 1:
+                continue
+            conflict = analysis.minimal_conflict(analysis.narrowed(domains, position, dead))
+            unused = [c.name for c in characteristic.components
+                      if characteristic.declared_components and c.values
+                      and not live[position].intersection(c.values)
+                      and anywhere.intersection(c.values)]
+            needless = "" if not unused else \
+                f"; so it never needs component {', '.join(repr(n) for n in unused)}"
+            yield DEAD_FOR_TYPE.finding(
+                context.value_location(key, kinematic_type),
+                f"no valid {kinematic_type} robot has {characteristic.name} "
+                f"{values_text(characteristic, dead)}: {_excluded_by(context, conflict)}"
+                f"{needless}",
+                context.constraint_related(conflict, "excludes them"))
+
+
+DEAD_VALUE = Check(
+    "dead-value", "warning", "rules",
+    "A value of a characteristic that no valid robot of any kinematic type can have under the "
+    "rule set's constraints: declared, selectable, and never used. The message names a "
+    "minimal set of constraints that excludes it (consecutive counts are reported together). "
+    "Kinematic types with no robot are reported as `void-type` instead.",
+    _dead_values)
+DEAD_COMPONENT = Check(
+    "dead-component", "warning", "rules",
+    "A UI component that no valid robot ever needs, because every value it serves is dead. It "
+    "still counts in the bound T; a UI designer would design it for nothing.",
+    _dead_components)
+DEAD_FOR_TYPE = Check(
+    "dead-for-type", "info", "rules",
+    "Values that the constraints rule out for one kinematic type although other types can "
+    "have them (for example, Flight for a UGV), with the minimal set of constraints "
+    "responsible and the components that type therefore never needs. Usually intended; a "
+    "team that selects such a value is warned by `team-forbidden-value`. When a single value "
+    "is left, `core-value` reports it instead.",
+    _dead_for_type)
+
+CHECKS: tuple[Check[RulesContext], ...] = (DEAD_VALUE, DEAD_COMPONENT, DEAD_FOR_TYPE)

@@ -1,0 +1,220 @@
+"""Checking files: read each one, run the checks that apply, collect sorted findings.
+
+Files are told apart by content: a mapping with a ``team`` or ``rules`` key is a team file,
+anything else is read as a rule set. Team files are checked against
+
+1. the rule set given with ``rules=`` (``--rules``), which is checked too; else
+2. the one rule set among the files, when there is exactly one (``teleop-ui check
+   my_rules.yaml rules/teams/*.yaml`` reads every team against ``my_rules.yaml``); else
+3. the team's own ``rules:`` (default: the shipped paper rules), whose findings are then not
+   reported unless it is among the files too.
+
+Faults a loader finds in a file that is YAML become findings (:mod:`solver.check.load`); a file
+that cannot be read or is not YAML at all makes the whole run unusable: :func:`check_files`
+raises one :class:`~solver.errors.InputError` naming every such file and reports nothing
+else. Files are only ever read.
+
+Not here: the checks (the other modules of this package), printing (:mod:`solver.check.render`).
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Collection, Iterable, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from solver.check.analysis import Analysis
+from solver.check.context import RulesContext, TeamContext
+from solver.check.finding import LEVELS, Finding, Level
+from solver.check.load import LoadContext
+from solver.check.registry import LOAD_CHECKS, RULE_CHECKS, TEAM_CHECKS, check_ids
+from solver.errors import Fault, InputError, Location, RulesError, TeamError
+from solver.rules import RuleSet, default_rules_path, parse_rules
+from solver.team import parse_team
+from solver.yamlio import Document, load_document
+
+__all__ = ["Report", "check_files", "is_team_document"]
+
+# Load faults that still leave a usable document (the first of two duplicate keys is kept).
+TOLERATED = frozenset({"duplicate-key"})
+
+
+@dataclass(frozen=True)
+class Report:
+    """The findings of one run, sorted by location, and the files that were checked."""
+
+    files: tuple[str, ...]
+    findings: tuple[Finding, ...]
+
+    def count(self, level: Level) -> int:
+        return sum(1 for finding in self.findings if finding.level == level)
+
+    @property
+    def counts(self) -> dict[Level, int]:
+        return {level: self.count(level) for level in LEVELS}
+
+    def exit_status(self, *, strict: bool = False) -> int:
+        """0 clean, 1 with findings at error level (or warning level when ``strict``)."""
+        if self.count("error") or (strict and self.count("warning")):
+            return 1
+        return 0
+
+
+def is_team_document(document: Document) -> bool:
+    """Whether a loaded file is a team selection (it has ``team:`` or ``rules:``)."""
+    data = document.data
+    return isinstance(data, dict) and any(str(key) in ("team", "rules") for key in data)
+
+
+@dataclass
+class _Run:
+    """The state of one :func:`check_files` call (nothing outlives it)."""
+
+    disabled: frozenset[str]
+    findings: dict[Finding, None] = field(default_factory=dict)
+    unusable: list[Fault] = field(default_factory=list)
+    rule_sets: dict[Path, RuleSet | None] = field(default_factory=dict)
+    # Keyed by identity; the rule set is kept alive beside its analysis so no id is reused.
+    analyses: dict[int, tuple[RuleSet, Analysis]] = field(default_factory=dict)
+
+    def add(self, findings: Iterable[Finding]) -> None:
+        for finding in findings:
+            self.findings.setdefault(finding, None)
+
+    def load(self, path: Path, display: str) -> Document | None:
+        try:
+            return load_document(path, display=display, tolerate=TOLERATED)
+        except InputError as error:
+            self.unusable.extend(error.faults)
+            return None
+
+    def report_faults(self, faults: Sequence[Fault],
+                      skipped: tuple[tuple[Location, str], ...] = ()) -> None:
+        context = LoadContext(tuple(faults), skipped)
+        for check in LOAD_CHECKS:
+            if check.id not in self.disabled:
+                self.add(check.run(context))
+
+    def analysis(self, rules: RuleSet) -> Analysis:
+        """One analysis per rule set, shared by the rule set's checks and its teams'."""
+        if id(rules) not in self.analyses:
+            self.analyses[id(rules)] = (rules, Analysis(rules))
+        return self.analyses[id(rules)][1]
+
+    def rules_file(self, path: Path, display: str, document: Document | None = None,
+                   *, check: bool = True) -> RuleSet | None:
+        """Load (once) and, when ``check``, run every rule check on one rule set file."""
+        key = path.resolve()
+        if key in self.rule_sets and not check:
+            return self.rule_sets[key]
+        if document is None:
+            document = self.load(path, display)
+            if document is None:
+                return None
+        if check:
+            self.report_faults(document.tolerated)
+        try:
+            rules: RuleSet | None = parse_rules(document)
+        except RulesError as error:
+            self.report_faults(error.faults)
+            rules = None
+        self.rule_sets[key] = rules
+        if rules is not None and check:
+            context = RulesContext(rules, self.analysis(rules))
+            for rule_check in RULE_CHECKS:
+                if rule_check.id not in self.disabled:
+                    self.add(rule_check.run(context))
+        return rules
+
+    def team_file(self, path: Path, document: Document, against: RuleSet | None,
+                  against_name: str | None) -> None:
+        self.report_faults(document.tolerated)
+        if against_name is None:
+            own = _own_rules(path, document)
+            if own is not None:
+                against = self.rules_file(own[0], own[1], check=False)
+                against_name = own[1]
+        if against is None and against_name is not None:
+            self.report_faults((), ((document.location(("rules",), key=True),
+                                     f"not checked: its rule set {against_name} has errors"),))
+            return
+        try:
+            team = parse_team(document, against, folder=path.parent)
+        except (TeamError, RulesError) as error:
+            self.report_faults(error.faults)
+            return
+        except InputError as error:
+            self.unusable.extend(error.faults)
+            return
+        context = TeamContext(team, document, self.analysis(team.rules))
+        for check in TEAM_CHECKS:
+            if check.id not in self.disabled:
+                self.add(check.run(context))
+
+
+def _own_rules(path: Path, document: Document) -> tuple[Path, str] | None:
+    """The rule set a team file names, as (path to read, name to show); ``None`` when the team
+    loader should report the problem itself (not a string, no such file)."""
+    data: dict[Any, Any] = document.data
+    text = next((value for key, value in data.items() if str(key) == "rules"), None)
+    if not any(str(key) == "rules" for key in data):
+        default = default_rules_path()
+        return default, str(default)
+    if not isinstance(text, str) or not text.strip():
+        return None
+    relative = path.parent / text.strip()
+    if not relative.is_file():
+        return None
+    return relative, os.path.normpath(Path(document.file).parent / text.strip())
+
+
+def check_files(paths: Sequence[str | Path], *, rules: str | Path | None = None,
+                disable: Collection[str] = ()) -> Report:
+    """Check rule set and team files; see the module docstring for which rules a team meets.
+
+    ``disable``: check ids to leave out. Raises :class:`InputError` when a file cannot be read
+    or is not YAML (every such file is named), and :class:`ValueError` for an unknown check id.
+    """
+    unknown = sorted(set(disable) - set(check_ids()))
+    if unknown:
+        raise ValueError(f"unknown check id(s): {', '.join(unknown)}")
+    run = _Run(frozenset(disable))
+    files = [str(path) for path in paths]
+    if rules is not None and str(rules) not in files:
+        files.insert(0, str(rules))
+    documents: list[tuple[Path, Document]] = []
+    for name in files:
+        document = run.load(Path(name), name)
+        if document is not None:
+            documents.append((Path(name), document))
+    if rules is not None:
+        given = next((d for p, d in documents if str(p) == str(rules)), None)
+        if given is not None and is_team_document(given):
+            run.unusable.append(Fault(Location(str(rules)), "is a team file; --rules needs a "
+                                                            "rule set", "invalid"))
+    rule_docs = [(p, d) for p, d in documents if not is_team_document(d)]
+    team_docs = [(p, d) for p, d in documents if is_team_document(d)]
+    loaded = {p: run.rules_file(p, d.file, d) for p, d in rule_docs}
+    against: RuleSet | None = None
+    against_name: str | None = None
+    if rules is not None:
+        against_name = str(rules)
+        against = next((r for p, r in loaded.items() if str(p) == str(rules)), None)
+    elif len(rule_docs) == 1:
+        against_name = rule_docs[0][1].file
+        against = loaded[rule_docs[0][0]]
+    for path, document in team_docs:
+        run.team_file(path, document, against, against_name)
+    if run.unusable:
+        raise InputError(_sorted_faults(run.unusable))
+    findings = sorted(run.findings, key=lambda finding: finding.sort_key)
+    return Report(tuple(files), tuple(findings))
+
+
+def _sorted_faults(faults: list[Fault]) -> list[Fault]:
+    unique = list(dict.fromkeys(faults))
+    return sorted(unique, key=lambda f: (f.location.file, f.location.line or 0,
+                                         f.location.column or 0))
+
