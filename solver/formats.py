@@ -18,7 +18,7 @@ from typing import Any
 
 from solver.assign import Assignment
 from solver.partition import Configuration
-from solver.reproduce import Comparison
+from solver.reproduce import Comparison, published_note
 from solver.rules import Characteristic, Component, RuleSet
 from solver.solve import Solution, TypeSummary
 
@@ -288,16 +288,10 @@ def _footer(solution: Solution) -> list[str]:
     if not solution.proven_minimal:
         lines.append("warning: overlapping components; the configuration count is the best "
                      "found, not proven minimal")
-    published = solution.team.published
-    if published is not None:
-        agrees = (published.valid_robots, published.ui_configurations) == \
-            (totals.valid_robots, totals.ui_configurations)
-        verdict = "reproduced" if agrees else (
-            f"NOT reproduced: these rules give {totals.valid_robots} / "
-            f"{totals.ui_configurations}")
-        source = f" ({published.source})" if published.source else ""
-        lines.append(f"published{source}: {published.valid_robots} valid robots / "
-                     f"{published.ui_configurations} UI configurations: {verdict}")
+    note = published_note(solution)
+    if note is not None:
+        stated, verdict, _ = note
+        lines += [stated, f"  {verdict}"]
     return lines
 
 

@@ -31,6 +31,7 @@ from solver.constraints import Value
 from solver.errors import InputError
 from solver.formats import configuration_data, markdown_table
 from solver.plot import PlotKind, bars_figure, figure_bytes, radar_figure, runs
+from solver.reproduce import published_note
 from solver.rules import Characteristic
 from solver.solve import Solution, TypeSummary
 
@@ -96,18 +97,11 @@ def reproduction_note(solution: Solution) -> tuple[str, bool] | None:
     ``None`` when the team carries no published figures; else the sentence and whether the
     figures agree. Nothing is adjusted to agree.
     """
-    published = solution.team.published
-    if published is None:
+    note = published_note(solution)
+    if note is None:
         return None
-    totals = solution.totals
-    agrees = (published.valid_robots, published.ui_configurations) == \
-        (totals.valid_robots, totals.ui_configurations)
-    verdict = "reproduced" if agrees else (
-        f"NOT reproduced: these rules give {totals.valid_robots} / "
-        f"{totals.ui_configurations}")
-    source = f" ({published.source})" if published.source else ""
-    return (f"published{source}: {published.valid_robots} valid robots / "
-            f"{published.ui_configurations} UI configurations: {verdict}", agrees)
+    stated, verdict, agrees = note
+    return f"{stated}: {verdict}", agrees
 
 
 # ---- the content, independent of the markup ----------------------------------------------

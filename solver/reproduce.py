@@ -19,7 +19,7 @@ from solver.rules import shipped_path
 from solver.solve import Solution, solve
 from solver.team import Published, load_team
 
-__all__ = ["Comparison", "compare"]
+__all__ = ["Comparison", "compare", "published_note"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -35,6 +35,27 @@ class Comparison:
         totals = self.solution.totals
         return (totals.valid_robots, totals.ui_configurations) == \
             (self.published.valid_robots, self.published.ui_configurations)
+
+
+def published_note(solution: Solution) -> tuple[str, str, bool] | None:
+    """The published figures and the verdict, as ``teleop-ui solve`` and reports word them.
+
+    ``None`` when the team carries no published figures; else the line stating them, the
+    verdict line, and whether they agree with the computed totals. Nothing is adjusted.
+    """
+    published = solution.team.published
+    if published is None:
+        return None
+    totals = solution.totals
+    agrees = (published.valid_robots, published.ui_configurations) == \
+        (totals.valid_robots, totals.ui_configurations)
+    source = f" ({published.source})" if published.source else ""
+    stated = (f"published: {published.valid_robots} valid robots / "
+              f"{published.ui_configurations} UI configurations{source}")
+    verdict = "reproduced" if agrees else (
+        f"NOT reproduced: these rules give {totals.valid_robots} / "
+        f"{totals.ui_configurations}")
+    return stated, verdict, agrees
 
 
 def compare(paths: Iterable[str | Path] | None = None) -> list[Comparison]:

@@ -149,9 +149,9 @@ def solve(team: Team, *, engine: str = "auto", count_only: bool = False,
                                      len(part.classes), part.unserved_robots, method))
         if count_only:
             continue
+        every = [c.components for c in rules.characteristics]
         for key, robots_served, served in part.classes:
-            components = tuple(c.components[i] for c, i in zip(rules.characteristics, key,
-                                                                 strict=True))
+            components = tuple([every[i][k] for i, k in enumerate(key)])
             configurations.append(Configuration(len(configurations) + 1,
                                                 selection.kinematic_type, key, components,
                                                 robots_served, served))

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import itertools
 import math
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -77,13 +77,19 @@ class _Plan:
         self.components: list[list[int]] = []
         codes = []
         for characteristic, domain in zip(rules.characteristics, self.domains, strict=True):
-            reached = sorted({characteristic.membership[characteristic.positions[v]][0]
-                              for v in domain if characteristic.membership[
-                                  characteristic.positions[v]]})
-            self.components.append(reached)
-            lookup = {component: i for i, component in enumerate(reached)}
-            codes.append(np.array([lookup.get(_first(characteristic.membership[
-                characteristic.positions[v]]), -1) for v in domain], dtype=np.int64))
+            # The component of each selected value (-1: none), then renumbered compactly.
+            first = np.array([_first(m) for m in characteristic.membership], dtype=np.int64)
+            if len(domain) == len(characteristic.values):
+                component = first
+            else:
+                where = characteristic.positions
+                component = first[np.fromiter((where[v] for v in domain), dtype=np.int64,
+                                              count=len(domain))]
+            reached = np.unique(component[component >= 0])
+            self.components.append(reached.tolist())
+            compact = np.full(int(first.max(initial=0)) + 2, -1, dtype=np.int64)
+            compact[reached] = np.arange(len(reached))
+            codes.append(compact[component])  # component -1 reads the last cell: -1
         self.codes = codes
         self.strides = [math.prod(len(c) for c in self.components[i + 1:]) for i in range(width)]
         self.key_space = math.prod(len(c) for c in self.components)
@@ -159,6 +165,15 @@ class _Plan:
         return mask
 
 
+def _values(domain: tuple[Value, ...], positions: Sequence[int]) -> tuple[Value, ...]:
+    """The values at ``positions`` (ascending) of ``domain``; a slice when they are a run."""
+    if isinstance(positions, range):
+        return domain[positions.start:positions.stop]
+    if positions and positions[-1] - positions[0] + 1 == len(positions):
+        return domain[positions[0]:positions[-1] + 1]
+    return tuple([domain[j] for j in positions])
+
+
 def _first(members: tuple[int, ...]) -> int:
     return members[0] if members else -1
 
@@ -194,33 +209,56 @@ def partition_stream(rules: RuleSet, selection: TypeSelection) -> Partition:
               if any(np.count_nonzero(plan.codes[i] == c) > 1
                      for c in range(len(plan.components[i])))]
     served = {i: _Pairs(plan.key_space, len(plan.domains[i])) for i in plural}
-    cache: dict[tuple[int, ...], Any] = {}
+    masks: dict[tuple[int, ...], Any] = {}
+    blocks: dict[int, _MaskedBlock] = {}
     total = unserved = 0
     for prefix in plan.prefixes():
-        mask = plan.mask(prefix, cache)
+        mask = plan.mask(prefix, masks)
         if mask is None:
             continue
+        block = blocks.get(id(mask))
+        if block is None:
+            block = blocks[id(mask)] = _MaskedBlock(plan, mask, plural)
+        total += block.valid
         offset = 0
         prefix_gap = False
         for position, digit in enumerate(prefix):
             code = int(plan.codes[position][digit])
             prefix_gap |= code < 0
             offset += code * plan.strides[position]
-        valid = int(np.count_nonzero(mask))
-        total += valid
         if prefix_gap:
-            unserved += valid
+            unserved += block.valid
             continue
-        keep = mask & ~plan.block_gap
-        unserved += valid - int(np.count_nonzero(keep))
-        keys = plan.block_key[keep] + offset
-        present = counts.add(keys)
+        unserved += block.valid - len(block.keys)
+        # Every valid robot of the block, its configuration code and its values: a few vector
+        # passes over the block per prefix.
+        present = counts.add(block.keys + offset)
         for i in plural:
             if i < plan.start:
                 served[i].add(present, prefix[i])
             else:
-                served[i].add(keys, plan.digits[i][keep])
+                served[i].add_shifted(block.pairs[i], offset)
     return _partition_from_counts(plan, counts.items(), served, total, unserved)
+
+
+class _MaskedBlock:
+    """What a mask makes of the block, the same for every prefix with that mask: the valid
+    robots' configuration codes within the block, and their (code, value) pairs."""
+
+    def __init__(self, plan: _Plan, mask: Any, plural: list[int]) -> None:
+        self.valid = int(np.count_nonzero(mask))
+        keep = mask & ~plan.block_gap
+        self.keys = plan.block_key[keep]
+        # A set of pairs: duplicates within the block say nothing more, so keep each once
+        # (marked in a bit array over the block's codes x values: cheaper than sorting).
+        space = plan.strides[plan.start - 1] if plan.start else plan.key_space
+        self.pairs = {}
+        for i in plural:
+            if i >= plan.start:
+                size = len(plan.domains[i])
+                seen = np.zeros(space * size, dtype=bool)
+                seen[self.keys * size + plan.digits[i][keep]] = True
+                self.pairs[i] = np.flatnonzero(seen)
 
 
 class _Counter:
@@ -237,7 +275,7 @@ class _Counter:
         if self.dense is not None:
             block = np.bincount(keys, minlength=len(self.dense))
             self.dense += block
-            return np.flatnonzero(block)
+            return block.nonzero()[0]
         codes, block_counts = np.unique(keys, return_counts=True)
         for code, number in zip(codes.tolist(), block_counts.tolist(), strict=True):
             self.sparse[code] = self.sparse.get(code, 0) + number
@@ -261,42 +299,65 @@ class _Pairs:
         self.sparse: set[int] = set()
 
     def add(self, codes: Any, positions: Any) -> None:
-        pairs = codes * self.size + positions
+        self._mark(codes * self.size + positions)
+
+    def add_shifted(self, pairs: Any, offset: int) -> None:
+        """Pairs already coded within the block, for configuration codes ``offset`` higher."""
+        self._mark(pairs + offset * self.size)
+
+    def _mark(self, pairs: Any) -> None:
         if self.dense is not None:
             self.dense[pairs] = True
         else:
             self.sparse.update(np.unique(pairs).tolist())
 
-    def grouped(self, codes: list[int]) -> list[Any]:
-        """For each of ``codes``: the value positions paired with it, ascending."""
+    def grouped(self, codes: list[int]) -> list[Sequence[int]]:
+        """For each of ``codes``: the value positions paired with it, ascending (a ``range``
+        where they are a run, which is the common case for counts)."""
         if self.dense is not None:
             table = self.dense.reshape(-1, self.size)[codes]
             rows, columns = np.nonzero(table)
-            return np.split(columns, np.searchsorted(rows, np.arange(1, len(codes))))
+            bounds = np.searchsorted(rows, np.arange(len(codes) + 1))
+            firsts = columns[np.minimum(bounds[:-1], len(columns) - 1)] if len(columns) else \
+                np.zeros(len(codes), dtype=np.int64)
+            lasts = columns[bounds[1:] - 1] if len(columns) else firsts
+            sizes = np.diff(bounds)
+            runs = (lasts - firsts + 1 == sizes) & (sizes > 0)
+            found: list[Sequence[int]] = []
+            for row, (a, b) in enumerate(itertools.pairwise(bounds.tolist())):
+                if runs[row]:
+                    found.append(range(int(firsts[row]), int(lasts[row]) + 1))
+                else:
+                    found.append(columns[a:b].tolist())
+            return found
         by_code: dict[int, list[int]] = {code: [] for code in codes}
         for pair in sorted(self.sparse):
             code, position = divmod(pair, self.size)
             if code in by_code:
                 by_code[code].append(position)
-        return [np.array(by_code[code], dtype=np.int64) for code in codes]
+        return [by_code[code] for code in codes]
 
 
 def _partition_from_counts(plan: _Plan, counts: list[tuple[int, int]],
                            served: dict[int, _Pairs], total: int, unserved: int) -> Partition:
     rules = plan.rules
     width = len(plan.domains)
-    arrays = [np.asarray(domain, dtype=object) for domain in plan.domains]
     # For a characteristic without served pairs, a component code names its selected values.
-    named = [[tuple(arrays[i][plan.codes[i] == c].tolist()) for c in range(len(plan.components[i]))]
-             for i in range(width)]
-    codes = [code for code, _ in counts]
-    positions = {i: pairs.grouped(codes) for i, pairs in served.items()}
+    named = [[_values(domain, np.flatnonzero(plan.codes[i] == c).tolist())
+              for c in range(len(plan.components[i]))]
+             for i, domain in enumerate(plan.domains)]
+    codes = np.array([code for code, _ in counts], dtype=np.int64)
+    positions = {i: pairs.grouped(codes.tolist()) for i, pairs in served.items()}
+    sizes = np.array([len(c) for c in plan.components], dtype=np.int64)
+    digit_rows = ((codes[:, None] // np.array(plan.strides, dtype=np.int64)) % sizes).tolist()
     classes = []
-    for row, (code, number) in enumerate(counts):
-        digits = [(code // plan.strides[i]) % len(plan.components[i]) for i in range(width)]
-        key = tuple(plan.components[i][d] for i, d in enumerate(digits))
-        values = tuple(tuple(arrays[i][positions[i][row]].tolist()) if i in served
-                       else named[i][digits[i]] for i in range(width))
+    components = plan.components
+    domains = plan.domains
+    columns = [(i, positions.get(i), named[i]) for i in range(width)]
+    for row, ((_, number), digits) in enumerate(zip(counts, digit_rows, strict=True)):
+        key = tuple([components[i][d] for i, d in enumerate(digits)])
+        values = tuple([_values(domains[i], grouped[row]) if grouped is not None
+                        else by_code[digits[i]] for i, grouped, by_code in columns])
         classes.append((key, number, values))
     classes.sort(key=lambda item: sort_key(rules, item[0]))
     kinematic_type = str(plan.domains[rules.key_position][0])

@@ -192,18 +192,19 @@ def _partition_product(rules: RuleSet, selection: TypeSelection,
                                               for values, order in zip(held, orders,
                                                                        strict=True)))
                           for key, (weight, held) in sorted(partial.items())])
-    found_classes = []
-    for choice in itertools.product(*per_block):
-        full_key = [0] * width
-        served: list[Members] = [()] * width
-        weight = 1
-        for block, (partial_key, partial_weight, values_of) in zip(blocks, choice, strict=True):
-            weight *= partial_weight
-            for position, component, shown in zip(block.positions, partial_key, values_of,
-                                                  strict=True):
-                full_key[position] = component
-                served[position] = shown
-        found_classes.append((tuple(full_key), weight, tuple(served)))
+    # Each configuration joins one partial configuration per block: concatenate the blocks'
+    # parts, then put the characteristics back in rule order if the blocks interleave them.
+    order = [position for block in blocks for position in block.positions]
+    inverse = None if order == list(range(width)) else [order.index(i) for i in range(width)]
+    found_classes: list[tuple[Key, int, tuple[Members, ...]]] = [((), 1, ())]
+    for parts in per_block:
+        found_classes = [(key + part_key, weight * part_weight, served + part_served)
+                         for key, weight, served in found_classes
+                         for part_key, part_weight, part_served in parts]
+    if inverse is not None:
+        found_classes = [(tuple([key[j] for j in inverse]), weight,
+                          tuple([served[j] for j in inverse]))
+                         for key, weight, served in found_classes]
     position = rules.key_position
     found_classes.sort(key=lambda item: (item[0][position], item[0]))
     return Partition(selection.kinematic_type, tuple(found_classes), robots,

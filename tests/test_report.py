@@ -88,8 +88,8 @@ def test_html_report_tables_give_the_counts_of_each_type(case3_html: str) -> Non
 def test_report_says_when_published_figures_are_not_reproduced(case3: Solution,
                                                                case3_html: str) -> None:
     note = reproduction_note(case3)
-    assert note == ("published (Mortimer et al. 2017, Section 4 and Table 2): 820 valid robots "
-                    "/ 99 UI configurations: NOT reproduced: these rules give 872 / 102", False)
+    assert note == ("published: 820 valid robots / 99 UI configurations (Mortimer et al. 2017, "
+                    "Section 4 and Table 2): NOT reproduced: these rules give 872 / 102", False)
     assert note[0] in case3_html
     assert 'class="note differs"' in case3_html
 
@@ -98,7 +98,8 @@ def test_report_says_when_published_figures_are_reproduced() -> None:
     solution = solve(load_team(TEAMS / "case1.yaml"))
     note = reproduction_note(solution)
     assert note is not None
-    assert note[0].endswith("30 valid robots / 6 UI configurations: reproduced")
+    assert note[0].startswith("published: 30 valid robots / 6 UI configurations (")
+    assert note[0].endswith("): reproduced")
     assert note[1] is True
     assert f"> **{note[0]}**" in render_markdown(solution)
 
