@@ -34,8 +34,8 @@ def test_enumerate_1e6_fast(benchmark: BenchmarkFixture, scaled) -> None:  # typ
 def test_enumerate_1e6_csp(benchmark: BenchmarkFixture, scaled) -> None:  # type: ignore[no-untyped-def]
     team: Team = scaled(MILLION)
     # One round: python-constraint takes seconds here, which is the point of the comparison.
-    solution = benchmark.pedantic(solve, args=(team,), kwargs={"engine": "csp"}, rounds=1,
-                                  iterations=1)
+    solution = benchmark.pedantic(  # type: ignore[no-untyped-call]  # untyped in pytest-benchmark
+        solve, args=(team,), kwargs={"engine": "csp"}, rounds=1, iterations=1)
     assert solution.totals.valid_robots == MILLION.robots
     assert solution.totals.ui_configurations == MILLION.configurations
 
@@ -50,7 +50,8 @@ def test_iterate_1e6_python_constraint(benchmark: BenchmarkFixture, scaled) -> N
         assert problem is not None
         return sum(1 for _ in problem.getSolutionIter())
 
-    assert benchmark.pedantic(iterate, rounds=1, iterations=1) == MILLION.robots
+    assert benchmark.pedantic(  # type: ignore[no-untyped-call]  # untyped in pytest-benchmark
+        iterate, rounds=1, iterations=1) == MILLION.robots
 
 
 def one_component_team(folder: Path, modes: int) -> Team:
@@ -98,6 +99,6 @@ def test_enumeration_memory_does_not_grow_with_robots(benchmark: BenchmarkFixtur
     assert large_peak < small_peak * 1.1 + 64 * 1024
     assert large_peak < 16 * BLOCK * 8  # a few block-sized arrays, whatever the robot count
     (selection,) = large.selections
-    part = benchmark.pedantic(partition_stream, args=(large.rules, selection), rounds=1,
-                              iterations=1)
+    part = benchmark.pedantic(  # type: ignore[no-untyped-call]  # untyped in pytest-benchmark
+        partition_stream, args=(large.rules, selection), rounds=1, iterations=1)
     assert len(part.classes) == 10 * 5

@@ -23,6 +23,7 @@ Not here: exact integer counting (:mod:`solver.structure`).
 from __future__ import annotations
 
 import re
+from collections.abc import Iterable
 from dataclasses import dataclass, replace
 from typing import Any
 
@@ -214,6 +215,11 @@ def _pieces_text(expression: Any) -> str:
     return str(sympy.sstr(expression))
 
 
+def _sum_text(terms: Iterable[Any]) -> str:
+    """A sum in the kinematic types' order (sympy would sort its terms by name)."""
+    return " + ".join(sympy.sstr(term) for term in terms)
+
+
 def render_growth(growth: Growth, solution: Solution, fmt: str = "text") -> str:
     """The formulas as text, JSON or Markdown, checked against the exact counts."""
     maxima = growth.at_team_maxima()
@@ -237,8 +243,8 @@ def render_growth(growth: Growth, solution: Solution, fmt: str = "text") -> str:
                          "valid_robots": sympy.sstr(t.robots),
                          "ui_configurations": sympy.sstr(t.configurations)}
                         for t in growth.types],
-            "totals": {"valid_robots": sympy.sstr(growth.total_robots),
-                       "ui_configurations": sympy.sstr(growth.total_configurations)},
+            "totals": {"valid_robots": _sum_text(t.robots for t in growth.types),
+                       "ui_configurations": _sum_text(t.configurations for t in growth.types)},
             "at_team_maxima": {"maxima": {str(k): v for k, v in maxima.items()},
                                "valid_robots": robots_at,
                                "ui_configurations": configurations_at,
@@ -253,8 +259,8 @@ def render_growth(growth: Growth, solution: Solution, fmt: str = "text") -> str:
     headers = ["kinematic type", "valid robots", "UI configurations"]
     rows = [[t.kinematic_type, _pieces_text(t.robots), _pieces_text(t.configurations)]
             for t in growth.types]
-    rows.append(["total", sympy.sstr(growth.total_robots),
-                 sympy.sstr(growth.total_configurations)])
+    rows.append(["total", _sum_text(t.robots for t in growth.types),
+                 _sum_text(t.configurations for t in growth.types)])
     shown = ", ".join(f"{k} = {v}" for k, v in maxima.items())
     check = (f"at the team's maxima ({shown}): {robots_at} valid robots, {configurations_at} "
              f"UI configurations ({verdict})")

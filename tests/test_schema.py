@@ -1,0 +1,55 @@
+"""The documented JSON Schemas agree with the shipped files and with the loader."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+import jsonschema
+import pytest
+import yaml
+
+from tests.conftest import ROOT, RULES, TEAMS
+
+SCHEMAS = ROOT / "docs" / "schema"
+
+
+def schema(name: str) -> dict[str, Any]:
+    loaded: dict[str, Any] = json.loads((SCHEMAS / f"{name}.schema.json").read_text("utf-8"))
+    jsonschema.Draft202012Validator.check_schema(loaded)
+    return loaded
+
+
+@pytest.mark.parametrize("path", sorted(RULES.glob("paper*.yaml")), ids=lambda p: p.name)
+def test_shipped_rule_sets_follow_the_rules_schema(path: Path) -> None:
+    jsonschema.validate(yaml.safe_load(path.read_text("utf-8")), schema("rules"))
+
+
+@pytest.mark.parametrize("path", sorted(TEAMS.glob("*.yaml")), ids=lambda p: p.name)
+def test_shipped_teams_follow_the_team_schema(path: Path) -> None:
+    jsonschema.validate(yaml.safe_load(path.read_text("utf-8")), schema("team"))
+
+
+@pytest.mark.parametrize("document", [
+    {"team": {"UAV": {"sensor_count": 5}}, "colour": "red"},
+    {"team": {}},
+    {"team": {"UAV": {"sensor_type": []}}},
+    {"name": "no team"},
+])
+def test_the_team_schema_rejects_what_the_loader_rejects(document: dict[str, Any]) -> None:
+    with pytest.raises(jsonschema.ValidationError):
+        jsonschema.validate(document, schema("team"))
+
+
+@pytest.mark.parametrize("document", [
+    {"characteristics": {"kinematic_type": {"values": ["UAV"], "range": [1, 2]}}},
+    {"characteristics": {}},
+    {"characteristics": {"k": {"values": ["UAV"]}}, "constraints": [
+        {"require": {"k": "UAV"}, "forbid": {"k": "UAV"}}]},
+    {"characteristics": {"k": {"values": ["UAV"]}}, "constraints": [
+        {"when": {"k": "UAV"}, "forbid": {"k": "UAV"}}]},
+])
+def test_the_rules_schema_rejects_what_the_loader_rejects(document: dict[str, Any]) -> None:
+    with pytest.raises(jsonschema.ValidationError):
+        jsonschema.validate(document, schema("rules"))

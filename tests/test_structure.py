@@ -1,0 +1,84 @@
+"""Counting from structure: exact at any size, and honest about when it cannot."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from pathlib import Path
+
+import pytest
+
+from solver import load_team, solve, structure
+from solver.solve import TooLargeError
+from solver.structure import Memo, StructureTooComplex, count
+from tests.conftest import TEAMS
+
+WriteFile = Callable[[str, str], Path]
+
+
+def test_counts_the_article_case_3_per_type() -> None:
+    team = load_team(TEAMS / "case3.yaml")
+    memo = Memo()
+    found = [count(team.rules, selection, memo) for selection in team.selections]
+    assert [(c.valid_robots, c.ui_configurations) for c in found] == \
+        [(30, 6), (80, 12), (312, 48), (450, 36)]
+
+
+def test_counts_10_to_the_30_robots_exactly(write_file: WriteFile) -> None:
+    characteristics = "".join(
+        f"  c{i}: {{values: [a, b, c, d, e, f, g, h, i, j], components: "
+        f"[{{name: low, values: [a, b, c, d, e]}}, {{name: high, values: [f, g, h, i, j]}}]}}\n"
+        for i in range(30))
+    write_file("rules.yaml", "characteristics:\n  kinematic_type: {values: [T]}\n"
+               + characteristics)
+    team = load_team(write_file("team.yaml", "rules: rules.yaml\nteam:\n  T: {}\n"))
+    totals = solve(team, count_only=True).totals
+    assert totals.valid_robots == 10**30
+    assert totals.ui_configurations == 2**30
+
+
+def test_types_with_the_same_structure_are_counted_once(write_file: WriteFile) -> None:
+    team = load_team(TEAMS / "case3.yaml")
+    memo = Memo()
+    uav = team.selections[0]
+    count(team.rules, uav, memo)
+    count(team.rules, uav, memo)
+    assert len(memo.counts) == 1
+
+
+def test_linked_characteristics_too_many_to_count_fall_back_to_enumeration(
+        write_file: WriteFile, monkeypatch: pytest.MonkeyPatch) -> None:
+    write_file("rules.yaml", """\
+characteristics:
+  kinematic_type: {values: [T]}
+  a: {values: [a1, a2, a3]}
+  b: {values: [b1, b2, b3]}
+constraints:
+  - forbid: {a: a1, b: b1}
+""")
+    team = load_team(write_file("team.yaml", "rules: rules.yaml\nteam:\n  T: {}\n"))
+    monkeypatch.setattr(structure, "BLOCK_LIMIT", 4)
+    with pytest.raises(StructureTooComplex, match="constraints link a, b into 9 class"):
+        count(team.rules, team.selections[0])
+    solution = solve(team)
+    assert [t.method for t in solution.by_type] == ["fast"]
+    assert solution.totals.valid_robots == 8
+    with pytest.raises(TooLargeError, match="cannot count by structure"):
+        solve(team, engine="structure")
+
+
+def test_enumerating_more_than_the_limit_is_refused_with_the_count(write_file: WriteFile
+                                                                   ) -> None:
+    team = load_team(TEAMS / "case3.yaml")
+    with pytest.raises(TooLargeError) as caught:
+        solve(team, engine="fast", max_robots=100)
+    # UAV (30) and UGV (80) are within the limit; the Mobile Manipulator (312) is not.
+    assert "Mobile Manipulator: enumerating 312 robots is refused (more than 100, see " \
+           "--max-robots); use --count-only for exact counts without enumeration" \
+           in str(caught.value)
+    assert solve(team, count_only=True, max_robots=100).totals.valid_robots == 872
+
+
+def test_listing_more_configurations_than_the_limit_is_refused() -> None:
+    team = load_team(TEAMS / "case3.yaml")
+    with pytest.raises(TooLargeError, match="listing 48 UI configurations is refused"):
+        solve(team, max_configurations=40)
