@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from solver.errors import InputError
-from solver.rules import shipped_path
+from solver.rules import shipped_name, shipped_path
 from solver.solve import Solution, solve
 from solver.team import Published, load_team
 
@@ -66,8 +66,7 @@ def compare(paths: Iterable[str | Path] | None = None) -> list[Comparison]:
     :class:`InputError`.
     """
     if paths is None:
-        root = shipped_path()
-        found = [(path, "rules/" + path.relative_to(root).as_posix())
+        found = [(path, shipped_name(path) or str(path))
                  for path in sorted(shipped_path("teams").glob("*.yaml"), key=lambda p: p.stem)]
     else:
         found = [(Path(path), str(path)) for path in paths]

@@ -39,6 +39,7 @@ __all__ = [
     "load_rules",
     "parse_rules",
     "read_selection",
+    "shipped_name",
     "shipped_path",
 ]
 
@@ -207,6 +208,18 @@ class RuleSet:
 def shipped_path(*parts: str) -> Path:
     """A file shipped with the package (``rules/...``), wherever the package is installed."""
     return Path(__file__).parent.joinpath("rules", *parts)
+
+
+def shipped_name(path: Path) -> str | None:
+    """``rules/teams/case3.yaml`` for a shipped file (wherever installed), else ``None``.
+
+    Shipped files are shown by this stable name, not by their install location.
+    """
+    root = shipped_path().resolve()
+    try:
+        return "rules/" + path.resolve().relative_to(root).as_posix()
+    except ValueError:
+        return None
 
 
 def default_rules_path() -> Path:

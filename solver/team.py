@@ -29,7 +29,14 @@ from pathlib import Path
 from solver.constraints import Value
 from solver.errors import InputError, Location, TeamError, did_you_mean
 from solver.reader import Reader
-from solver.rules import RuleSet, default_rules_path, load_rules, read_selection, shipped_path
+from solver.rules import (
+    RuleSet,
+    default_rules_path,
+    load_rules,
+    read_selection,
+    shipped_name,
+    shipped_path,
+)
 from solver.yamlio import Document, load_document
 
 __all__ = [
@@ -156,7 +163,7 @@ def _resolve_rules(reader: Reader, top: dict[str, object], rules: RuleSet | str 
     if rules is not None:
         return load_rules(rules)
     if "rules" not in top:
-        return load_rules(default_rules_path())
+        return load_rules(default_rules_path(), display=shipped_name(default_rules_path()))
     text = reader.string(("rules",), "rules file")
     if not text:
         return None

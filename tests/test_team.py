@@ -9,7 +9,6 @@ from pathlib import Path
 import pytest
 
 from solver import InputError, RulesError, TeamError, load_rules, load_team
-from solver.rules import default_rules_path
 from tests.conftest import RULES, TEAMS
 
 WriteFile = Callable[[str, str], Path]
@@ -105,7 +104,7 @@ published: {valid_robots: many}
         "(did you mean 'Waypoint'?)",
         "6:19: team.UAV.sensor_count: sensor_count maximum must be at least 1, got 0",
         "7:3: team.Quadruped: unknown robot kinematic type 'Quadruped'; the rules "
-        f"({default_rules_path()}) have: UAV, UGV, Manipulator, Mobile Manipulator, Torso, "
+        "(rules/paper.yaml) have: UAV, UGV, Manipulator, Mobile Manipulator, Torso, "
         "Humanoid",
         "10:19: team.UGV.sensor_count: sensor_count maximum 60 exceeds the rule set's maximum "
         "of 50",

@@ -47,10 +47,12 @@ def add_rules(parser: argparse.ArgumentParser) -> None:
 
 def load_team_argument(text: str, rules: str | None) -> Team:
     """A team given on the command line: a file, or the name of a shipped team (``case3``)."""
+    from solver.rules import shipped_name
     from solver.team import load_team, resolve_team_path
 
     path = resolve_team_path(text)
-    return load_team(path, rules, display=text if str(path) == text else str(path))
+    shown = text if str(path) == text else (shipped_name(path) or str(path))
+    return load_team(path, rules, display=shown)
 
 
 def write(text: str) -> None:

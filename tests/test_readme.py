@@ -1,0 +1,61 @@
+"""The README stays true: its command outputs, its reproduction table, its test command."""
+
+from __future__ import annotations
+
+import re
+import shlex
+
+import pytest
+
+from solver.formats import render_comparisons
+from solver.reproduce import compare
+from tests.conftest import ROOT, run_cli
+
+README = (ROOT / "README.md").read_text(encoding="utf-8")
+
+
+def console_examples() -> list[tuple[str, str]]:
+    """(command, expected output) for every ``$ teleop-ui ...`` line of a ```console block."""
+    examples = []
+    for block in re.findall(r"```console\n(.*?)```", README, re.S):
+        command = None
+        output: list[str] = []
+        for line in block.splitlines():
+            if line.startswith("$ "):
+                if command is not None:
+                    examples.append((command, "\n".join(output)))
+                command, output = line[2:], []
+            else:
+                output.append(line)
+        if command is not None:
+            examples.append((command, "\n".join(output)))
+    return examples
+
+
+def test_the_readme_has_console_examples() -> None:
+    assert len(console_examples()) >= 8
+
+
+@pytest.mark.parametrize(("command", "expected"), console_examples(),
+                         ids=lambda value: value[:60])
+def test_every_console_example_prints_what_the_readme_shows(command: str, expected: str
+                                                            ) -> None:
+    words = shlex.split(command)
+    assert words[0] == "teleop-ui"
+    result = run_cli(*words[1:])
+    assert (result.stdout + result.stderr).rstrip("\n") == expected.rstrip("\n")
+
+
+def test_the_reproduction_table_is_the_output_of_reproduce() -> None:
+    table = README.split("<!-- reproduction-table -->\n", 1)[1].split(
+        "<!-- /reproduction-table -->", 1)[0]
+    assert table == render_comparisons(compare(), "markdown")
+
+
+def test_ci_runs_exactly_the_readme_test_command() -> None:
+    quick_start = README.split("## Quick start", 1)[1].split("\n## ", 1)[0]
+    assert "bash tools/test.sh" in quick_start
+    ci = (ROOT / ".ci" / "run").read_text(encoding="utf-8")
+    commands = [line for line in ci.splitlines() if line and not line.startswith(("#", "set ",
+                                                                                  "cd "))]
+    assert commands == ["bash tools/test.sh"]

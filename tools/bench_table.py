@@ -1,0 +1,115 @@
+"""Turn one pytest-benchmark run into the tables of benchmarks/README.md.
+
+    python -m pytest benchmarks --benchmark-only --benchmark-json=bench.json
+    python tools/bench_table.py bench.json            # prints the Markdown
+    python tools/bench_table.py bench.json --write    # replaces the table in benchmarks/README.md
+
+Medians only, all from the one run given, and ratios between engines measured in that run:
+absolute times depend on the machine, ratios are the claim.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+from typing import Any
+
+README = Path(__file__).resolve().parent.parent / "benchmarks" / "README.md"
+START, END = "<!-- bench-table -->", "<!-- /bench-table -->"
+
+# (benchmark name, what it measures, target from issue 4 if any)
+ROWS = [
+    ("test_solve_article_case[figure8]", "Figure 8 (90 robots), auto engine", ""),
+    ("test_solve_article_case[case1]", "Case 1 (30 robots), auto engine", ""),
+    ("test_solve_article_case[case2]", "Case 2 (110 robots), auto engine", ""),
+    ("test_solve_article_case[case3]", "Case 3 (872 robots), auto engine", "< 1 ms"),
+    ("test_solve_case3_in_process[structure]", "Case 3, structure engine", "< 1 ms"),
+    ("test_solve_case3_in_process[fast]", "Case 3, fast (numpy) enumeration + partition",
+     "< 1 ms"),
+    ("test_solve_case3_in_process[csp]", "Case 3, python-constraint enumeration + partition",
+     ""),
+    ("test_solve_case3_whole_process", "`teleop-ui solve rules/teams/case3.yaml`, whole process",
+     "< 0.3 s"),
+    ("test_count_scaled_team[1e5]", "count 10^5 robots (1 type)", ""),
+    ("test_count_scaled_team[1e7]", "count 10^7 robots (10 types, 1 constraint)", ""),
+    ("test_count_scaled_team[1e9]", "count 10^9 robots (10 types, 1 constraint)", ""),
+    ("test_count_scaled_team[1e12]", "count 10^12 robots (100 types, 1 constraint)",
+     "< 10 ms"),
+    ("test_count_10_to_the_30_exactly", "count 10^30 robots (30 characteristics)", ""),
+    ("test_enumerate_1e6_fast", "enumerate + partition 999,000 robots, fast engine", ""),
+    ("test_enumerate_1e6_csp", "enumerate + partition 999,000 robots, csp engine (1 round)",
+     ""),
+    ("test_iterate_1e6_python_constraint",
+     "python-constraint2 solution iterator alone, 999,000 robots (1 round)", ""),
+    ("test_enumeration_memory_does_not_grow_with_robots",
+     "enumerate + partition 9,990,000 robots, fast engine (1 round)", ""),
+    ("test_check_large_rule_set", "`check`: 50 types, 100 sensor types, 200 constraints",
+     "seconds"),
+    ("test_radar_chart_of_case3_as_png", "radar chart of Case 3 as PNG", ""),
+    ("test_batch_solves_40_teams_in_one_process", "`batch` of 40 teams, one process", ""),
+    ("test_batch_rerun_of_40_unchanged_teams_solves_nothing",
+     "`batch` rerun of 40 unchanged teams", ""),
+    ("test_watch_latency_switching_among_10_robots",
+     "`watch`: master change to event, 10 robots (median)", "<= interval + 50 ms"),
+]
+
+# (label, slower benchmark, faster benchmark, target)
+RATIOS = [
+    ("Case 3: csp engine / structure engine", "test_solve_case3_in_process[csp]",
+     "test_solve_case3_in_process[structure]", ""),
+    ("Case 3: csp engine / fast engine", "test_solve_case3_in_process[csp]",
+     "test_solve_case3_in_process[fast]", ""),
+    ("10^6 robots: python-constraint2 iterator alone / fast enumeration + partition",
+     "test_iterate_1e6_python_constraint", "test_enumerate_1e6_fast", ">= 50"),
+    ("10^6 robots: csp enumeration + partition / fast enumeration + partition",
+     "test_enumerate_1e6_csp", "test_enumerate_1e6_fast", ""),
+]
+
+
+def seconds(value: float) -> str:
+    if value >= 1:
+        return f"{value:.2f} s"
+    if value >= 1e-3:
+        return f"{value * 1e3:.2f} ms"
+    return f"{value * 1e6:.0f} µs"
+
+
+def table(run: dict[str, Any]) -> str:
+    medians = {b["name"]: b["stats"]["median"] for b in run["benchmarks"]}
+    rounds = {b["name"]: b["stats"]["rounds"] for b in run["benchmarks"]}
+    machine = run.get("machine_info", {})
+    lines = [f"One run, {run.get('datetime', '')[:10]}, on {machine.get('cpu', {}).get('brand_raw', 'this machine')} "
+             f"({machine.get('cpu', {}).get('count', '?')} cores), Python "
+             f"{machine.get('python_version', '?')}. Medians; `rounds` is how many timed runs.",
+             "",
+             "| benchmark | median | rounds | target |", "|---|---:|---:|---|"]
+    for name, label, target in ROWS:
+        if name in medians:
+            lines.append(f"| {label} | {seconds(medians[name])} | {rounds[name]} | {target} |")
+    lines += ["", "| ratio (same run) | value | target |", "|---|---:|---|"]
+    for label, slow, fast, target in RATIOS:
+        if slow in medians and fast in medians:
+            lines.append(f"| {label} | {medians[slow] / medians[fast]:.1f}x | {target} |")
+    return "\n".join(lines) + "\n"
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("json", type=Path, help="pytest --benchmark-json output")
+    parser.add_argument("--write", action="store_true", help="update benchmarks/README.md")
+    args = parser.parse_args(argv)
+    text = table(json.loads(args.json.read_text(encoding="utf-8")))
+    if not args.write:
+        sys.stdout.write(text)
+        return 0
+    readme = README.read_text(encoding="utf-8")
+    head, rest = readme.split(START, 1)
+    _, tail = rest.split(END, 1)
+    README.write_text(f"{head}{START}\n{text}{END}{tail}", encoding="utf-8")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
