@@ -172,21 +172,16 @@ def _piecewise(rules: RuleSet, selection: TypeSelection, position: int,
                bounds: tuple[int, int], symbol: Any) -> tuple[Any, Any]:
     """Counts when constraints read the count: one piece per run of indistinguishable counts."""
     low, high = bounds
-    characteristic = rules.characteristics[position]
-    conditions = [condition.allowed for rule in rules.constraints
-                  for condition in (*rule.when, *rule.conditions)
-                  if condition.characteristic == characteristic.name]
-
-    def signature(value: int) -> tuple[object, ...]:
-        return (characteristic.membership[characteristic.positions[value]],
-                *(value in allowed for allowed in conditions))
+    # The value class of each count: counts in one class are indistinguishable to the rules.
+    signature = {value: number for number, members in enumerate(rules.value_classes[position])
+                 for value in members}
 
     robot_pieces = []
     configuration_pieces = []
     start = low
     while start <= high:
         end = start
-        while end + 1 <= high and signature(end + 1) == signature(start):
+        while end + 1 <= high and signature[end + 1] == signature[start]:
             end += 1
         before = count(rules, _restricted(selection, position, range(low, start + 1)))
         each = count(rules, _restricted(selection, position, range(start, start + 1)))
