@@ -26,6 +26,7 @@ Modules, one concept each:
 ``report``             self-contained HTML and Markdown reports of a solved team
 ``batch``              many teams at once: parallel solving, summary, up-to-date skipping
 ``identify``           real robots from ROS metadata (URDF, xacro, SRDF, topics, bags)
+``live``               live UI assignment from a running ROS master (``watch``)
 ``check``              linting rule sets and teams: coverage, void, dead, conflicts
 ``cli``                the ``teleop-ui`` command line
 =====================  ==========================================================
@@ -55,6 +56,7 @@ if TYPE_CHECKING:
     from solver.constraints import Condition, RuleConstraint
     from solver.errors import Fault, InputError, Location, RulesError, SolverError, TeamError
     from solver.identify import Identification, IdentificationCache, identify_fleet, identify_urdf
+    from solver.live import MasterError, Watcher, assign_from_master
     from solver.model import Robot, build_problem, robots
     from solver.partition import Configuration
     from solver.plot import bars_figure, radar_figure, write_plot
@@ -77,6 +79,7 @@ _EXPORTS = {
     "IdentificationCache": "solver.identify",
     "InputError": "solver.errors",
     "Location": "solver.errors",
+    "MasterError": "solver.live",
     "Outcome": "solver.batch",
     "Published": "solver.team",
     "Robot": "solver.model",
@@ -89,7 +92,9 @@ _EXPORTS = {
     "TeamError": "solver.errors",
     "TypeSelection": "solver.team",
     "TypeSummary": "solver.solve",
+    "Watcher": "solver.live",
     "assign": "solver.assign",
+    "assign_from_master": "solver.live",
     "bars_figure": "solver.plot",
     "build_problem": "solver.model",
     "check_files": "solver.check",
@@ -126,6 +131,7 @@ __all__ = [
     "IdentificationCache",
     "InputError",
     "Location",
+    "MasterError",
     "Outcome",
     "Published",
     "Robot",
@@ -138,7 +144,9 @@ __all__ = [
     "TeamError",
     "TypeSelection",
     "TypeSummary",
+    "Watcher",
     "assign",
+    "assign_from_master",
     "bars_figure",
     "build_problem",
     "check_files",

@@ -32,6 +32,7 @@ __all__ = [
     "render_comparisons",
     "render_counts",
     "render_solution",
+    "runs",
     "solution_data",
     "text_table",
 ]
@@ -73,9 +74,10 @@ def _component_data(characteristic: Characteristic, component: Component,
                     served: Sequence[Any]) -> dict[str, Any]:
     data: dict[str, Any] = {"characteristic": characteristic.name, "component": component.name}
     if characteristic.kind == "integer":
-        counts = [int(v) for v in served]
-        data["range"] = [min(counts), max(counts)]
-        data["clusters"] = [component.clusters(min(counts)), component.clusters(max(counts))]
+        counts = sorted(int(v) for v in served)
+        data["range"] = [counts[0], counts[-1]]
+        data["clusters"] = [component.clusters(counts[0]), component.clusters(counts[-1])]
+        data["counts"] = [list(run) for run in runs(counts)]
     else:
         data["values"] = list(served)
     return data
@@ -196,12 +198,25 @@ def _component_text(characteristic: Characteristic, component: Component,
                     served: Sequence[Any]) -> str:
     if characteristic.kind != "integer":
         return component.name
-    counts = [int(v) for v in served]
-    low, high = min(counts), max(counts)
-    clusters = (component.clusters(low), component.clusters(high))
-    span = f"{low}" if low == high else f"{low}..{high}"
-    shown = f"{clusters[0]}" if clusters[0] == clusters[1] else f"{clusters[0]}..{clusters[1]}"
-    return f"{component.name} ({span}: {shown} clusters)"
+    counts = sorted(int(v) for v in served)
+    clusters = sorted({component.clusters(count) for count in counts})
+    return f"{component.name} ({_runs_text(counts)}: {_runs_text(clusters)} clusters)"
+
+
+def runs(numbers: Sequence[int]) -> list[tuple[int, int]]:
+    """Sorted whole numbers as runs of consecutive ones: [1, 2, 3, 7] -> [(1, 3), (7, 7)]."""
+    found: list[tuple[int, int]] = []
+    for number in numbers:
+        if found and number == found[-1][1] + 1:
+            found[-1] = (found[-1][0], number)
+        else:
+            found.append((number, number))
+    return found
+
+
+def _runs_text(numbers: Sequence[int]) -> str:
+    return ", ".join(f"{low}" if low == high else f"{low}..{high}"
+                     for low, high in runs(numbers))
 
 
 def _configuration_rows(solution: Solution) -> tuple[list[str], list[list[Any]]]:

@@ -17,7 +17,7 @@ from pathlib import Path
 from solver.errors import InputError
 from solver.rules import shipped_name, shipped_path
 from solver.solve import Solution, solve
-from solver.team import Published, load_team
+from solver.team import Published, load_team, resolve_team_path
 
 __all__ = ["Comparison", "compare", "published_note"]
 
@@ -69,7 +69,7 @@ def compare(paths: Iterable[str | Path] | None = None) -> list[Comparison]:
         found = [(path, shipped_name(path) or str(path))
                  for path in sorted(shipped_path("teams").glob("*.yaml"), key=lambda p: p.stem)]
     else:
-        found = [(Path(path), str(path)) for path in paths]
+        found = [(resolve_team_path(str(path)), str(path)) for path in paths]
     comparisons = []
     for path, shown in found:
         team = load_team(path, display=shown)

@@ -547,11 +547,15 @@ def read_selection(reader: Reader, path: YPath, characteristic: Characteristic, 
                          code="empty-selection")
             return None
         chosen: list[Value] = []
+        before = len(reader.faults)
         for index, item in enumerate(raw):
             value = _read_value(reader, (*path, index), characteristic, item)
-            if value is not None and value not in chosen:
+            if value is not None and value in chosen:
+                reader.fault((*path, index), f"{value!r} is listed twice",
+                             code="duplicate-value")
+            elif value is not None:
                 chosen.append(value)
-        if len(chosen) < len(raw):
+        if len(reader.faults) > before:
             return None
         return frozenset(chosen), _describe(characteristic, chosen)
     if raw is None:
@@ -615,15 +619,8 @@ def _read_selection_mapping(reader: Reader, path: YPath, characteristic: Charact
     parts = []
     before = len(reader.faults)
     if "min" in keys or "max" in keys:
-        if characteristic.kind != "integer":
-            reader.fault(path, f"min/max apply to whole-number characteristics; "
-                               f"{characteristic.name!r} has named values", code="wrong-type")
-        else:
-            low = reader.integer((*path, "min"), "min", required=False)
-            high = reader.integer((*path, "max"), "max", required=False)
-            allowed = {v for v in allowed if isinstance(v, int)
-                       and (low is None or v >= low) and (high is None or v <= high)}
-            parts.append(f"in {'' if low is None else low}..{'' if high is None else high}")
+        allowed, text = _read_bounds(reader, path, characteristic, allowed)
+        parts.append(text)
     if "component" in keys:
         members: set[Value] = set()
         named = reader.names((*path, "component"), "component names")
@@ -656,6 +653,25 @@ def _read_selection_mapping(reader: Reader, path: YPath, characteristic: Charact
                      code="empty-selection")
         return None
     return frozenset(allowed), " and ".join(parts)
+
+
+def _read_bounds(reader: Reader, path: YPath, characteristic: Characteristic,
+                 allowed: set[Value]) -> tuple[set[Value], str]:
+    """``allowed`` cut to a selection's ``min``/``max``, and how to say it."""
+    if characteristic.kind != "integer":
+        reader.fault(path, f"min/max apply to whole-number characteristics; "
+                           f"{characteristic.name!r} has named values", code="wrong-type")
+        return allowed, ""
+    low = reader.integer((*path, "min"), "min", required=False)
+    high = reader.integer((*path, "max"), "max", required=False)
+    first, last = int(characteristic.values[0]), int(characteristic.values[-1])
+    for key, bound in (("min", low), ("max", high)):
+        if bound is not None and not first <= bound <= last:
+            reader.fault((*path, key), f"{characteristic.name} {key} {bound} is outside the "
+                                       f"rule set's range {first}..{last}", code="out-of-range")
+    kept = {v for v in allowed if isinstance(v, int)
+            and (low is None or v >= low) and (high is None or v <= high)}
+    return kept, f"in {'' if low is None else low}..{'' if high is None else high}"
 
 
 def _set_text(characteristic: Characteristic, values: Iterable[Value]) -> str:

@@ -36,7 +36,14 @@ from solver.solve import Solution
 from solver.structure import count
 from solver.team import Team, TypeSelection
 
-__all__ = ["Growth", "TypeFormula", "formulas", "render_growth", "symbol_name"]
+__all__ = [
+    "Growth",
+    "TypeFormula",
+    "agrees_with",
+    "formulas",
+    "render_growth",
+    "symbol_name",
+]
 
 
 @dataclass(frozen=True)
@@ -102,6 +109,7 @@ def formulas(team: Team) -> Growth:
     position = rules.names.index(characteristic.name)
     functions: dict[str, tuple[str, Any, Any]] = {}
     types = []
+    used: set[str] = set()
     for selection in team.selections:
         domain = [int(v) for v in selection.domains[position]]
         low, at = domain[0], domain[-1]
@@ -109,8 +117,12 @@ def formulas(team: Team) -> Growth:
             raise InputError.at(team.file, f"{selection.kinematic_type}: symbolic counts need "
                                            f"{characteristic.name} to be a range low..max")
         high = int(characteristic.values[-1])
-        symbol = sympy.Symbol(symbol_name(selection.kinematic_type, characteristic.name, False),
-                              integer=True, positive=True)
+        name = symbol_name(selection.kinematic_type, characteristic.name, False)
+        while name in used:  # "Mobile Manipulator" and "Mobile-Manipulator" read alike
+            name += "_"
+        used.add(name)
+        # Only `integer`: counts may be 0 or negative in a rule set's range.
+        symbol = sympy.Symbol(name, integer=True)
         independent = all(c.is_partition for c in rules.characteristics) and not any(
             characteristic.name in rule.characteristics for rule in rules.constraints)
         if not independent:
@@ -141,7 +153,7 @@ def _factored(rules: RuleSet, selection: TypeSelection, position: int, symbol: A
         _first_served_configurations(rules, selection, position, low, characteristic)
     name = f"A_{characteristic.name}" if low == 1 else f"A_{characteristic.name}_from_{low}"
     if name not in functions:
-        argument = sympy.Symbol("n", integer=True, positive=True)
+        argument = sympy.Symbol("n", integer=True)
         functions[name] = (name, sympy.Function(name),
                            _arrangements_reached(characteristic, low, argument))
     function = functions[name][1]
@@ -215,13 +227,22 @@ def _sum_text(terms: Iterable[Any]) -> str:
     return " + ".join(sympy.sstr(term) for term in terms)
 
 
+def agrees_with(growth: Growth, solution: Solution) -> bool:
+    """Whether the formulas at the team's maxima give the exact counts of ``solution``."""
+    maxima = growth.at_team_maxima()
+    totals = solution.totals
+    return (growth.evaluate(growth.total_robots, maxima),
+            growth.evaluate(growth.total_configurations, maxima)) == \
+        (totals.valid_robots, totals.ui_configurations)
+
+
 def render_growth(growth: Growth, solution: Solution, fmt: str = "text") -> str:
     """The formulas as text, JSON or Markdown, checked against the exact counts."""
     maxima = growth.at_team_maxima()
     robots_at = growth.evaluate(growth.total_robots, maxima)
     configurations_at = growth.evaluate(growth.total_configurations, maxima)
     totals = solution.totals
-    agrees = (robots_at, configurations_at) == (totals.valid_robots, totals.ui_configurations)
+    agrees = agrees_with(growth, solution)
     verdict = "equal to the exact count" if agrees else (
         f"DIFFERENT from the exact count {totals.valid_robots} / {totals.ui_configurations}: "
         "a bug, please report it")

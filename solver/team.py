@@ -189,7 +189,11 @@ def _read_published(reader: Reader, top: dict[str, object]) -> Published | None:
     configurations = reader.integer(("published", "ui_configurations"),
                                     "published ui_configurations")
     source = reader.string(("published", "source"), "source", required=False)
-    if robots is None or configurations is None:
+    for key, figure in (("valid_robots", robots), ("ui_configurations", configurations)):
+        if figure is not None and figure < 0:
+            reader.fault(("published", key), f"published {key} must not be negative, got "
+                                             f"{figure}", code="out-of-range")
+    if robots is None or configurations is None or robots < 0 or configurations < 0:
         return None
     return Published(robots, configurations, source)
 

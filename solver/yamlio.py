@@ -20,6 +20,7 @@ from typing import Any
 import yaml
 
 from solver.errors import Fault, InputError, Location
+from solver.inputfile import read_text
 
 __all__ = ["Document", "PathPart", "format_path", "load_document", "parse_document"]
 
@@ -30,6 +31,8 @@ MAX_FILE_BYTES = 16 * 1024 * 1024
 # A document with more values than this, counting every alias expansion, is refused: this is
 # what stops "billion laughs" style alias bombs from exhausting memory.
 MAX_NODES = 200_000
+# Nesting deeper than this is refused (rule and team files nest a handful of levels).
+MAX_DEPTH = 64
 
 _PLAIN_TAGS = {
     "tag:yaml.org,2002:str",
@@ -97,26 +100,7 @@ def load_document(path: str | Path, *, display: str | None = None,
     value is kept) do not raise; they are kept in :attr:`Document.tolerated`.
     """
     name = display if display is not None else str(path)
-    file = Path(path)
-    try:
-        if file.is_dir():
-            raise InputError.at(name, "is a directory, not a YAML file")
-        size = file.stat().st_size
-        if size > MAX_FILE_BYTES:
-            raise InputError.at(name, f"file is {size} bytes; YAML files over "
-                                      f"{MAX_FILE_BYTES} bytes are refused")
-        raw = file.read_bytes()
-    except FileNotFoundError:
-        raise InputError.at(name, "no such file") from None
-    except PermissionError:
-        raise InputError.at(name, "permission denied") from None
-    except OSError as error:
-        raise InputError.at(name, f"cannot read: {error.strerror or error}") from None
-    try:
-        text = raw.decode("utf-8-sig")
-    except UnicodeDecodeError as error:
-        raise InputError.at(name, f"not UTF-8 text (invalid byte at offset {error.start}); "
-                                  "is this a YAML file?") from None
+    text = read_text(path, display=name, limit=MAX_FILE_BYTES, what="YAML file")
     return parse_document(text, name, tolerate=tolerate)
 
 
@@ -139,6 +123,9 @@ def parse_document(text: str, name: str = "<string>", *,
                             line=mark.line + 1, column=mark.column + 1, code="yaml") from None
     except yaml.YAMLError as error:
         raise InputError.at(name, f"YAML error: {error}") from None
+    except RecursionError:
+        raise InputError.at(name, f"nested too deeply (more than {MAX_DEPTH} levels); refused",
+                            code="too-large") from None
     walker = _Walker(name)
     try:
         data = walker.convert(node, ()) if node is not None else None
@@ -150,7 +137,8 @@ def parse_document(text: str, name: str = "<string>", *,
 
 
 class _TooLarge(Exception):
-    """Stops the walk at once: finishing it is exactly the work an alias bomb asks for."""
+    """Stops the walk at once: finishing it is exactly the work an alias bomb (or a needlessly
+    deep nest) asks for."""
 
 
 class _Walker:
@@ -175,6 +163,10 @@ class _Walker:
         if self.nodes > MAX_NODES:
             self.fault(node, path, f"document expands to more than {MAX_NODES} values "
                                    "(an alias bomb?); refused", "too-large")
+            raise _TooLarge
+        if len(path) > MAX_DEPTH:
+            self.fault(node, path[:MAX_DEPTH], f"nested more than {MAX_DEPTH} levels deep; "
+                                               "refused", "too-large")
             raise _TooLarge
         self.value_marks.setdefault(path, (node.start_mark.line + 1, node.start_mark.column + 1))
         if id(node) in self.active:
@@ -213,11 +205,12 @@ class _Walker:
                 self.fault(key_node, path, "mapping keys must be plain scalars")
                 continue
             child = (*path, str(key))
-            if key in first_seen:
+            # Keys are names: 1 and "1", true and "True" name the same thing.
+            if str(key) in first_seen:
                 self.fault(key_node, child, f"duplicate key {key!r} (first at line "
-                                            f"{first_seen[key]})", "duplicate-key")
+                                            f"{first_seen[str(key)]})", "duplicate-key")
                 continue
-            first_seen[key] = key_node.start_mark.line + 1
+            first_seen[str(key)] = key_node.start_mark.line + 1
             self.key_marks[child] = (key_node.start_mark.line + 1, key_node.start_mark.column + 1)
             result[key] = self.convert(value_node, child)
         return result

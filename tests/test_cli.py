@@ -47,7 +47,7 @@ def test_solve_json_follows_the_documented_contract() -> None:
     assert first["number"] == 1
     assert first["components"][3] == {"characteristic": "sensor_count",
                                       "component": "individual", "range": [1, 5],
-                                      "clusters": [1, 5]}
+                                      "clusters": [1, 5], "counts": [[1, 5]]}
 
 
 def test_solve_lists_every_configuration_with_its_components() -> None:
@@ -146,3 +146,13 @@ def test_reproduce_compares_every_shipped_article_case() -> None:
                                                           "ui_configurations": 102}
     assert not rows["rules/teams/case3.yaml"]["reproduced"]
     assert all(row["reproduced"] for name, row in rows.items() if name != "rules/teams/case3.yaml")
+
+
+def test_counts_with_holes_are_shown_as_runs(write_file: WriteFile) -> None:
+    path = write_file("t.yaml", "team:\n  UAV: {motion_control: Flight, sensor_type: LIDAR, "
+                                "sensor_count: [2, 5, 9]}\n")
+    table = run_cli("solve", path, "--list").stdout.splitlines()[-2:]
+    assert table[0].split()[-7:] == ["individual", "(2,", "5:", "2,", "5", "clusters)", "2"]
+    data = json.loads(run_cli("solve", path, "--list", "-f", "json").stdout)
+    count = data["configurations"][0]["components"][3]
+    assert (count["range"], count["counts"]) == ([2, 5], [[2, 2], [5, 5]])

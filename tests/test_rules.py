@@ -189,3 +189,12 @@ def test_a_list_is_not_a_rule_set(write_file: WriteFile) -> None:
 def test_huge_integer_domains_are_refused(write_file: WriteFile) -> None:
     with pytest.raises(RulesError, match="at most 100000 are supported"):
         load_rules(write_file("r.yaml", MINIMAL + "  count:\n    range: [1, 10000000000]\n"))
+
+
+def test_a_value_listed_twice_in_a_constraint_is_an_error(write_file: WriteFile) -> None:
+    path = write_file("r.yaml", MINIMAL + "constraints:\n"
+                      "  - forbid: {kinematic_type: UAV, sensor_type: [Microphone, Microphone]}\n")
+    with pytest.raises(RulesError) as caught:
+        load_rules(path)
+    assert messages(caught.value) == [
+        f"{path}:10:61: constraints[0].forbid.sensor_type[1]: 'Microphone' is listed twice"]

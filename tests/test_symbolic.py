@@ -37,7 +37,7 @@ def check_every_maximum(team: Team) -> None:
 def test_case_3_grows_linearly_in_robots_and_by_arrangements_in_configurations() -> None:
     growth = formulas(load_team(TEAMS / "case3.yaml"))
     (name, _, definition), = growth.functions
-    n = sympy.Symbol("n", integer=True, positive=True)
+    n = sympy.Symbol("n", integer=True)
     assert name == "A_sensor_count"
     assert definition == sympy.Piecewise((1, n <= 5), (2, n <= 10), (3, n <= 15), (4, n <= 25),
                                          (5, n <= 50))
@@ -110,3 +110,31 @@ def test_count_symbolic_json_from_the_command_line() -> None:
     assert data["at_team_maxima"] == {"maxima": {"n_UAV": 5, "n_UGV": 10},
                                       "valid_robots": 110, "ui_configurations": 18,
                                       "equal_to_exact_count": True}
+
+
+def test_types_whose_names_read_alike_get_distinct_symbols(write_file: WriteFile) -> None:
+    write_file("rules.yaml", "characteristics:\n"
+               "  kinematic_type: {values: [Mobile Manipulator, Mobile-Manipulator]}\n"
+               "  sensor_count: {range: [1, 9]}\n")
+    team = load_team(write_file("team.yaml", "rules: rules.yaml\nteam:\n"
+                                "  Mobile Manipulator: {sensor_count: 3}\n"
+                                "  Mobile-Manipulator: {sensor_count: 7}\n"))
+    growth = formulas(team)
+    assert [str(t.symbol) for t in growth.types] == ["n_Mobile_Manipulator",
+                                                     "n_Mobile_Manipulator_"]
+    check_every_maximum(team)
+
+
+def test_counts_from_zero_or_below_keep_every_piece(write_file: WriteFile) -> None:
+    write_file("rules.yaml", """\
+characteristics:
+  kinematic_type: {values: [UAV]}
+  sensor_count:
+    range: [-3, 10]
+    components:
+      - {name: none or less, max: 0}
+      - {name: some, min: 1, max: 10}
+""")
+    team = load_team(write_file("team.yaml", "rules: rules.yaml\nteam:\n"
+                                "  UAV: {sensor_count: {min: -3, max: 4}}\n"))
+    check_every_maximum(team)

@@ -154,3 +154,25 @@ def test_a_rules_file_that_is_not_yaml_reports_its_syntax_error(write_file: Writ
     write_file("bad.yaml", "characteristics: [oops\n")
     with pytest.raises(InputError, match=r"bad\.yaml:2:1: YAML syntax error"):
         load_team(write_file("t.yaml", "rules: bad.yaml\nteam:\n  UAV: {}\n"))
+
+
+def test_a_value_listed_twice_is_an_error_not_a_silent_drop(write_file: WriteFile) -> None:
+    path = write_file("t.yaml", "team:\n  UAV: {motion_control: [Flight, Flight]}\n"
+                                "  UGV: {sensor_count: 3}\n")
+    assert faults(path) == ["2:34: team.UAV.motion_control[1]: 'Flight' is listed twice"]
+
+
+def test_a_range_beyond_the_rules_is_an_error_not_a_silent_clip(write_file: WriteFile) -> None:
+    path = write_file("t.yaml", "team:\n  UAV: {sensor_count: {min: 0, max: 99}}\n")
+    assert faults(path) == [
+        "2:29: team.UAV.sensor_count.min: sensor_count min 0 is outside the rule set's range "
+        "1..50",
+        "2:37: team.UAV.sensor_count.max: sensor_count max 99 is outside the rule set's range "
+        "1..50"]
+
+
+def test_negative_published_figures_are_errors(write_file: WriteFile) -> None:
+    path = write_file("t.yaml", "team:\n  UAV: {}\npublished: {valid_robots: -1, "
+                                "ui_configurations: 3}\n")
+    assert faults(path) == ["3:27: published.valid_robots: published valid_robots must not be "
+                            "negative, got -1"]

@@ -62,8 +62,32 @@ def test_merge_keys_are_refused_with_advice() -> None:
 def test_binary_files_are_not_yaml(tmp_path: Path) -> None:
     path = tmp_path / "image.yaml"
     path.write_bytes(b"\x89PNG\r\n\x1a\n\x00\x00")
+    with pytest.raises(InputError, match="contains NUL bytes: a binary file, not a YAML file"):
+        load_document(path)
+
+
+def test_text_in_another_encoding_is_named_as_not_utf8(tmp_path: Path) -> None:
+    path = tmp_path / "latin1.yaml"
+    path.write_bytes("name: Düsseldorf\n".encode("latin-1"))
     with pytest.raises(InputError, match="not UTF-8 text"):
         load_document(path)
+
+
+def test_endless_special_files_are_read_only_up_to_the_limit() -> None:
+    with pytest.raises(InputError, match="larger than 16777216 bytes; refused"):
+        load_document("/dev/zero")
+
+
+def test_deep_nesting_is_refused_without_a_traceback() -> None:
+    with pytest.raises(InputError, match="nested more than 64 levels deep"):
+        parse_document("team: " + "[" * 100 + "]" * 100 + "\n", "deep.yaml")
+    with pytest.raises(InputError, match="nested too deeply"):
+        parse_document("team: " + "[" * 5000 + "]" * 5000 + "\n", "deeper.yaml")
+
+
+def test_keys_that_read_alike_are_duplicates() -> None:
+    with pytest.raises(InputError, match="duplicate key '1'"):
+        parse_document("team:\n  1: a\n  '1': b\n", "t.yaml")
 
 
 def test_missing_files_and_directories_are_named(tmp_path: Path) -> None:
@@ -77,7 +101,7 @@ def test_oversized_files_are_refused_without_reading_them(tmp_path: Path) -> Non
     path = tmp_path / "huge.yaml"
     with path.open("wb") as stream:
         stream.truncate(17 * 1024 * 1024)
-    with pytest.raises(InputError, match="bytes are refused"):
+    with pytest.raises(InputError, match="larger than 16777216 bytes; refused"):
         load_document(path)
 
 

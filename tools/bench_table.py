@@ -80,9 +80,10 @@ def table(run: dict[str, Any]) -> str:
     medians = {b["name"]: b["stats"]["median"] for b in run["benchmarks"]}
     rounds = {b["name"]: b["stats"]["rounds"] for b in run["benchmarks"]}
     machine = run.get("machine_info", {})
-    lines = [f"One run, {run.get('datetime', '')[:10]}, on {machine.get('cpu', {}).get('brand_raw', 'this machine')} "
-             f"({machine.get('cpu', {}).get('count', '?')} cores), Python "
-             f"{machine.get('python_version', '?')}. Medians; `rounds` is how many timed runs.",
+    cpu = machine.get("cpu", {})
+    lines = [f"One run, {run.get('datetime', '')[:10]}, on {cpu.get('brand_raw', 'this machine')} "
+             f"({cpu.get('count', '?')} cores), Python {machine.get('python_version', '?')}. "
+             "Medians; `rounds` is how many timed runs.",
              "",
              "| benchmark | median | rounds | target |", "|---|---:|---:|---|"]
     for name, label, target in ROWS:

@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:
     from solver.team import Team
 
-__all__ = ["add_engine", "add_format", "add_rules", "load_team_argument", "write"]
+__all__ = ["add_engine", "add_format", "add_rules", "load_team_argument", "positive", "write"]
 
 
 def add_format(parser: argparse.ArgumentParser, choices: tuple[str, ...],
@@ -18,31 +18,40 @@ def add_format(parser: argparse.ArgumentParser, choices: tuple[str, ...],
                         help=f"output format (default: {default})")
 
 
-def add_engine(parser: argparse.ArgumentParser) -> None:
+def add_engine(parser: argparse.ArgumentParser, *, enumerate_only: bool = False) -> None:
     """--engine and --max-robots, for commands that count or enumerate robots."""
-    parser.add_argument("--engine", "-e", choices=("auto", "structure", "fast", "csp"),
-                        default="auto",
-                        help="structure: count without enumerating; fast: numpy enumeration; "
-                             "csp: python-constraint enumeration (the reference); auto "
-                             "(default): structure where it applies, else fast")
-    parser.add_argument("--max-robots", type=_positive, default=10**8, metavar="N",
-                        help="refuse to enumerate more robots than this (default: 10^8)")
+    if enumerate_only:
+        parser.add_argument("--engine", "-e", choices=("fast", "csp"), default="fast",
+                            help="fast (default): numpy enumeration; csp: python-constraint "
+                                 "enumeration (the reference)")
+    else:
+        parser.add_argument("--engine", "-e", choices=("auto", "structure", "fast", "csp"),
+                            default="auto",
+                            help="structure: count without enumerating; fast: numpy "
+                                 "enumeration; csp: python-constraint enumeration (the "
+                                 "reference); auto (default): structure where it applies, "
+                                 "else fast")
+    parser.add_argument("--max-robots", type=positive, default=10**8, metavar="N",
+                        help="refuse to enumerate more robots than this "
+                             "(default: 100000000)")
 
 
-def _positive(text: str) -> int:
+def positive(text: str) -> int:
+    """An argparse type: a whole number of at least 1 (``100000000`` or ``100_000_000``)."""
     try:
-        number = int(float(text)) if "e" in text.lower() else int(text)
+        number = int(text)
     except ValueError:
         raise argparse.ArgumentTypeError(f"expected a whole number, got {text!r}") from None
     if number < 1:
-        raise argparse.ArgumentTypeError(f"expected a positive number, got {text!r}")
+        raise argparse.ArgumentTypeError(f"expected a number of at least 1, got {text!r}")
     return number
 
 
-def add_rules(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--rules", "-r", metavar="RULES.yaml",
-                        help="rule set to use instead of the one the team file names "
-                             "(default: the team's 'rules:', else the shipped paper rules)")
+def add_rules(parser: argparse.ArgumentParser,
+              help: str = "rule set to use instead of the one the team file names "
+                          "(default: the team's 'rules:', else the shipped paper rules)"
+              ) -> None:
+    parser.add_argument("--rules", "-r", metavar="RULES.yaml", help=help)
 
 
 def load_team_argument(text: str, rules: str | None) -> Team:

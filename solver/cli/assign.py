@@ -1,4 +1,8 @@
-"""``teleop-ui assign --team TEAM NAME=VALUE...``: the UI configuration of one combination."""
+"""``teleop-ui assign --team TEAM NAME=VALUE...``: the UI configuration of one combination.
+
+With ``--master URL [--robot NS]`` the values come from a robot on a running ROS master
+(:mod:`solver.live.query`).
+"""
 
 from __future__ import annotations
 
@@ -6,6 +10,7 @@ import argparse
 from typing import Any
 
 from solver.cli._common import add_format, add_rules, load_team_argument, write
+from solver.cli.watch import add_master_options
 
 
 def register(subparsers: Any) -> None:
@@ -15,22 +20,49 @@ def register(subparsers: Any) -> None:
                     "components, or the default configuration with the reason it is invalid "
                     "and the components relevant to the values that are known. Exits 0 in "
                     "both cases.")
-    parser.add_argument("combination", nargs="+", metavar="NAME=VALUE",
+    parser.add_argument("combination", nargs="*", metavar="NAME=VALUE",
                         help="characteristic values, e.g. kinematic_type=UAV "
-                             "'sensor_type=2D Camera' sensor_count=3")
+                             "'sensor_type=2D Camera' sensor_count=3 (with --master: values "
+                             "that replace or complete what the robot's metadata gives)")
     parser.add_argument("--team", "-t", required=True, metavar="TEAM.yaml",
                         help="team selection file (or a shipped team name)")
     add_rules(parser)
     add_format(parser, ("text", "json"))
+    # Live mode (solver.live.query): the robot's values come from a running ROS master.
+    add_master_options(parser, required_help="read the robot's values from this master")
+    parser.add_argument("--robot", metavar="NS",
+                        help="with --master: the robot's namespace, e.g. /uav1 (default: "
+                             "/teleop_ui/active_robot)")
     parser.set_defaults(run=run)
 
 
 def run(args: argparse.Namespace) -> int:
     from solver.assign import assign, parse_combination
+    from solver.errors import InputError
     from solver.formats import render_assignment
     from solver.solve import solve
 
     combination = parse_combination(args.combination)
+    if args.master is not None:
+        return run_live(args, combination)
+    if args.robot is not None or not combination:
+        raise InputError.at("<arguments>", "--robot needs --master URL" if args.robot
+                            else "give at least one NAME=VALUE (or --master URL)")
     solution = solve(load_team_argument(args.team, args.rules))
     write(render_assignment(solution, assign(solution, combination), args.format))
+    return 0
+
+
+def run_live(args: argparse.Namespace, combination: dict[str, str]) -> int:
+    from solver.identify.profile import load_profile
+    from solver.live.master import master_uri
+    from solver.live.query import assign_from_master
+    from solver.live.render import render_live_assignment
+    from solver.solve import solve
+
+    master = master_uri(args.master)
+    solution = solve(load_team_argument(args.team, args.rules))
+    live = assign_from_master(master, solution, load_profile(), robot=args.robot,
+                              given=combination, timeout=args.timeout)
+    write(render_live_assignment(live, solution, args.format))
     return 0

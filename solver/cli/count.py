@@ -29,6 +29,7 @@ def register(subparsers: Any) -> None:
 
 def load(text: str, rules: str | None) -> Team:
     """A team file, or a rule set file standing for its whole design space."""
+    from solver.errors import InputError
     from solver.rules import parse_rules
     from solver.team import full_team, resolve_team_path
     from solver.yamlio import load_document
@@ -36,6 +37,8 @@ def load(text: str, rules: str | None) -> Team:
     path = resolve_team_path(text)
     document = load_document(path, display=text)
     if isinstance(document.data, dict) and "characteristics" in document.data:
+        if rules is not None:
+            raise InputError.at(text, "is a rule set: --rules applies to team files only")
         return full_team(parse_rules(document))
     return load_team_argument(text, rules)
 
@@ -49,7 +52,9 @@ def run(args: argparse.Namespace) -> int:
     if not args.symbolic:
         write(render_counts(solution, args.format))
         return 0
-    from solver.symbolic import formulas, render_growth
+    from solver.symbolic import agrees_with, formulas, render_growth
 
-    write(render_growth(formulas(team), solution, args.format))
-    return 0
+    growth = formulas(team)
+    write(render_growth(growth, solution, args.format))
+    # The output says so too; a formula that disagrees with the exact counter is a bug.
+    return 0 if agrees_with(growth, solution) else 1

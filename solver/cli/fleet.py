@@ -27,7 +27,8 @@ def register(subparsers: Any) -> None:
     parser.add_argument("--output", "-o", metavar="TEAM.yaml",
                         help="write the team selection here")
     parser.add_argument("--name", help="team name (default: 'fleet FOLDER')")
-    add_rules(parser)
+    add_rules(parser, "rule set the robots are mapped to and the written team names (default: the "
+                      "shipped paper rules)")
     add_description_options(parser)
     add_format(parser, ("text", "json"))
     parser.set_defaults(run=run)

@@ -45,7 +45,9 @@ def register(subparsers: Any) -> None:
                              "(repeatable)")
     parser.add_argument("--team", "-t", metavar="TEAM.yaml",
                         help="team selection: also give each combination its UI configuration")
-    add_rules(parser)
+    add_rules(parser, "rule set whose kinematic types, sensor types and motion controls the "
+                      "robot is mapped to (default: the --team file's rules, else the shipped "
+                      "paper rules)")
     add_description_options(parser)
     add_format(parser, ("text", "json"))
     parser.set_defaults(run=run)

@@ -18,7 +18,7 @@ def register(subparsers: Any) -> None:
     parser.add_argument("team", metavar="TEAM.yaml",
                         help="team selection file (or a shipped team name)")
     add_rules(parser)
-    add_engine(parser)
+    add_engine(parser, enumerate_only=True)
     parser.add_argument("--format", "-f", choices=("csv", "jsonl"), default="csv",
                         help="csv (default) or JSON lines")
     parser.set_defaults(run=run)
@@ -31,9 +31,9 @@ def run(args: argparse.Namespace) -> int:
     from solver.solve import solve
 
     team = load_team_argument(args.team, args.rules)
-    # Numbering needs the partition; "auto" gets it from the structure without enumerating.
-    solution = solve(team, engine=args.engine, max_robots=args.max_robots)
-    engine = "csp" if args.engine == "csp" else "fast"
-    write_robots(solution, sys.stdout, fmt=args.format, engine=engine,
+    # Numbering needs the partition, which the structure gives without enumerating; the
+    # listing then enumerates with the engine asked for.
+    solution = solve(team, max_robots=args.max_robots)
+    write_robots(solution, sys.stdout, fmt=args.format, engine=args.engine,
                  max_robots=args.max_robots)
     return 0

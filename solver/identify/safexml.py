@@ -21,6 +21,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from solver.errors import InputError
+from solver.inputfile import read_bounded
 
 if TYPE_CHECKING:
     from lxml import etree
@@ -35,24 +36,7 @@ MAX_XML_BYTES = 16 * 1024 * 1024
 def read_bytes(path: str | Path, *, display: str | None = None,
                limit: int = MAX_XML_BYTES) -> bytes:
     """The bytes of ``path``, refusing more than ``limit`` without reading them all."""
-    name = display if display is not None else str(path)
-    file = Path(path)
-    try:
-        if file.is_dir():
-            raise InputError.at(name, "is a directory, not a file")
-        with file.open("rb") as stream:
-            # Read one byte past the limit: stat() says 0 for pipes and /dev/zero.
-            data = stream.read(limit + 1)
-    except FileNotFoundError:
-        raise InputError.at(name, "no such file") from None
-    except PermissionError:
-        raise InputError.at(name, "permission denied") from None
-    except OSError as error:
-        raise InputError.at(name, f"cannot read: {error.strerror or error}") from None
-    if len(data) > limit:
-        raise InputError.at(name, f"file is larger than {limit} bytes; refused "
-                                  "(robot descriptions are far smaller)", code="too-large")
-    return data
+    return read_bounded(path, display=display, limit=limit)
 
 
 def line_of(element: etree._Element | None) -> int | None:

@@ -26,7 +26,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from solver.errors import Fault, InputError, Location
-from solver.identify.safexml import read_bytes
+from solver.identify.safexml import MAX_XML_BYTES
+from solver.inputfile import read_text
 
 __all__ = ["Topic", "normalise_type", "parse_topic_list", "read_topic_list"]
 
@@ -57,12 +58,7 @@ def normalise_type(text: str) -> str:
 def read_topic_list(path: str | Path, *, display: str | None = None) -> tuple[Topic, ...]:
     """Read a topic list file (see the module docstring)."""
     name = display if display is not None else str(path)
-    raw = read_bytes(path, display=name)
-    try:
-        text = raw.decode("utf-8-sig")
-    except UnicodeDecodeError as error:
-        raise InputError.at(name, f"not UTF-8 text (invalid byte at offset {error.start}); "
-                                  "is this a topic list?", code="topics") from None
+    text = read_text(path, display=name, limit=MAX_XML_BYTES, what="topic list")
     return parse_topic_list(text, name)
 
 

@@ -53,7 +53,7 @@ def test_an_empty_or_binary_file_is_refused(tmp_path: Path) -> None:
     with pytest.raises(InputError, match="no topics"):
         read_topic_list(tmp_path / "e.txt")
     (tmp_path / "b.txt").write_bytes(b"\xff\xfe\x00")
-    with pytest.raises(InputError, match="not UTF-8"):
+    with pytest.raises(InputError, match="binary file, not a topic list"):
         read_topic_list(tmp_path / "b.txt")
 
 

@@ -1,0 +1,110 @@
+"""``teleop-ui watch --master URL --team TEAM``: UI configurations live from a ROS master."""
+
+from __future__ import annotations
+
+import argparse
+import signal
+import sys
+from typing import TYPE_CHECKING, Any
+
+from solver.cli._common import add_format, add_rules, load_team_argument, write
+
+if TYPE_CHECKING:
+    from solver.live.watcher import Watcher
+    from solver.solve import Solution
+
+
+def seconds(text: str) -> float:
+    """A positive number of seconds, for argparse."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected seconds, got {text!r}") from None
+    if not 0 < value <= 3600:
+        raise argparse.ArgumentTypeError(f"expected seconds in (0, 3600], got {text!r}")
+    return value
+
+
+def add_master_options(parser: argparse.ArgumentParser, *, required_help: str) -> None:
+    """--master and --timeout, shared with ``assign``."""
+    parser.add_argument("--master", "-m", metavar="URL",
+                        help=f"ROS master URI, e.g. http://127.0.0.1:11311 ({required_help})")
+    parser.add_argument("--timeout", type=seconds, default=2.0, metavar="S",
+                        help="timeout of every call to the master, in seconds (default: 2)")
+
+
+def register(subparsers: Any) -> None:
+    parser: argparse.ArgumentParser = subparsers.add_parser(
+        "watch", help="follow a running ROS master: robots, their UI configurations, and the "
+                      "operator's active selection, as events",
+        description="Follow a ROS 1 master: every namespace with a robot_description is a robot, "
+                    "identified from its description and topics; print an event (JSON lines, "
+                    "or text) whenever a robot is added, changed or removed, the operator's "
+                    "selection (/teleop_ui/active_robot, /teleop_ui/active_motion_control, "
+                    "/teleop_ui/active_sensor_type) changes, or the master is lost and back. "
+                    "The active selection's UI configuration is written to "
+                    "/teleop_ui/ui_configuration.")
+    add_master_options(parser, required_help="default: $ROS_MASTER_URI")
+    parser.add_argument("--team", "-t", required=True, metavar="TEAM.yaml",
+                        help="team selection file (or a shipped team name)")
+    add_rules(parser)
+    parser.add_argument("--profile", "-p", metavar="PROFILE.yaml",
+                        help="identification profile (default: the shipped "
+                             "rules/identification.yaml)")
+    parser.add_argument("--once", action="store_true",
+                        help="print one snapshot (every robot, the selection) and exit")
+    parser.add_argument("--interval", "-i", type=seconds, default=0.2, metavar="S",
+                        help="polling interval in seconds (default: 0.2)")
+    parser.add_argument("--wait", action="store_true",
+                        help="wait for the master to come up instead of failing (exit 2)")
+    add_format(parser, ("json", "text"), default="json")
+    parser.set_defaults(run=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    from solver.identify.profile import load_profile
+    from solver.live.master import master_uri
+    from solver.live.watcher import Watcher
+    from solver.solve import solve
+
+    master = master_uri(args.master)
+    team = load_team_argument(args.team, args.rules)
+    profile = load_profile(args.profile)
+    solution = solve(team)
+
+    with Watcher(master, solution, profile, interval=args.interval, timeout=args.timeout,
+                 push=not args.once) as watcher:
+        # SIGTERM (systemd, roslaunch after SIGINT, kill) ends the watch as cleanly as Ctrl-C:
+        # parameter subscriptions released, exit 0.
+        previous = signal.signal(signal.SIGTERM,
+                                 lambda *_: watcher.stop("terminated (SIGTERM)"))
+        try:
+            return _watch(watcher, args, master, solution)
+        finally:
+            signal.signal(signal.SIGTERM, previous)
+
+
+def _watch(watcher: Watcher, args: argparse.Namespace, master: str, solution: Solution
+           ) -> int:
+    from solver.live.master import MasterError, MasterUnreachable
+    from solver.live.render import render_event
+
+    def waiting(error: MasterError) -> None:
+        print(f"waiting for the ROS master at {master} ({error.faults[0].message})",
+              file=sys.stderr, flush=True)
+
+    if args.wait:
+        watcher.wait_for_master(waiting)
+    else:
+        try:
+            watcher.client.get_pid()
+        except MasterUnreachable as error:
+            raise MasterUnreachable.at(master, f"{error.faults[0].message}: is roscore "
+                                               "running there? (--wait waits for it)"
+                                       ) from None
+    events = [] if watcher.stopped else watcher.snapshot() if args.once else watcher.events()
+    for event in events:
+        write(render_event(event, solution, args.format))
+    if watcher.stop_reason is not None:
+        print(f"watch stopped: {watcher.stop_reason}", file=sys.stderr)
+    return 0

@@ -1,0 +1,77 @@
+"""Live UI assignment from a running ROS 1 master (``teleop-ui watch``, ``assign --master``).
+
+Robots connected to a teleoperation system get their UI configuration from their ROS
+metadata, and switching robots or control modes switches the configuration at once. The
+master's XML-RPC API is spoken with Python's standard library: no ROS Python packages needed.
+
+Modules, one concept each:
+
+=====================  ==========================================================
+``master``             the master's XML-RPC API: timeouts, checked replies, errors
+``node``               the watcher's own node API (the master's parameter pushes)
+``descriptions``       description parameters, fetched once, kept current by pushes
+``discovery``          robots (``robot_description`` namespaces) and their topics
+``robot``              one robot identified, with its combinations' configurations
+``selection``          ``/teleop_ui/active_*`` -> one configuration, written back
+``events``             the event kinds and their JSON schema
+``watcher``            the state machine: polls, pushes, loss, backoff, resync
+``query``              one question: ``assign --master URL --robot NS``
+``render``             events as JSON lines or text; ``assign --master`` output
+=====================  ==========================================================
+
+Identification is :mod:`solver.identify`'s (cached by content); configurations are
+:func:`solver.assign`'s.
+"""
+
+from solver.live.events import (
+    Event,
+    MasterBack,
+    MasterLost,
+    RobotAdded,
+    RobotChanged,
+    RobotRemoved,
+    SelectionChanged,
+    Synced,
+    event_data,
+)
+from solver.live.master import (
+    MISSING,
+    MasterClient,
+    MasterError,
+    MasterUnreachable,
+    Observation,
+    master_uri,
+)
+from solver.live.query import LiveAssignment, assign_from_master
+from solver.live.render import json_line, render_event, render_live_assignment
+from solver.live.robot import LiveRobot, identify_robot
+from solver.live.selection import ActiveSelection, Request
+from solver.live.watcher import Watcher
+
+__all__ = [
+    "MISSING",
+    "ActiveSelection",
+    "Event",
+    "LiveAssignment",
+    "LiveRobot",
+    "MasterBack",
+    "MasterClient",
+    "MasterError",
+    "MasterLost",
+    "MasterUnreachable",
+    "Observation",
+    "Request",
+    "RobotAdded",
+    "RobotChanged",
+    "RobotRemoved",
+    "SelectionChanged",
+    "Synced",
+    "Watcher",
+    "assign_from_master",
+    "event_data",
+    "identify_robot",
+    "json_line",
+    "master_uri",
+    "render_event",
+    "render_live_assignment",
+]

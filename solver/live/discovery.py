@@ -1,0 +1,130 @@
+"""Which robots a ROS master holds, and which topics are each robot's, with their direction.
+
+*Robots.* Every namespace holding a ``robot_description`` parameter is one robot, named by the
+namespace (``/uav1``); the root namespace's ``/robot_description`` is the robot ``/`` of a
+single-robot system. ``robot_description_semantic`` beside it (MoveIt's SRDF) is read too.
+
+*Topics.* A topic belongs to the robot with the deepest namespace that contains it; the root
+robot, if there is one, takes every topic no other robot claims. Names are given to
+identification *relative to the namespace* (``camera/image_raw``), so that the robot's own name
+never matches a topic pattern and identical robots under different namespaces share one cached
+identification.
+
+*Direction*, as the robot's nodes see it: a topic is ``published`` when a publisher is
+registered for it and ``subscribed`` when a subscriber is. When nodes under the robot's
+namespace are among them, only those nodes count (a teleop node at the root publishing
+``/uav1/cmd_vel`` does not make the drone a publisher of it); when none is (one simulator node
+serving every robot), both sides count and the topic is given once per direction.
+Identification then reads sensors from what is published and commands from what is subscribed.
+
+*Relevance.* Topics whose message type no rule of the identification profile reads (``tf``,
+``rosout``, diagnostics) are left out before identification: their coming and going changes
+nothing, and leaving them out keeps the cached identification valid.
+
+Not here: reading the master (:mod:`solver.live.master`), identifying (:mod:`solver.live.robot`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass
+
+from solver.identify.profile import Profile
+from solver.identify.topics import Topic, normalise_type
+from solver.live.master import Observation
+
+__all__ = ["DESCRIPTION", "SEMANTIC", "RobotSource", "description_key", "discover",
+           "normalise_namespace", "robot_namespaces", "robot_topics"]
+
+DESCRIPTION = "robot_description"
+SEMANTIC = "robot_description_semantic"
+_ANY_TYPE = "*"
+
+
+@dataclass(frozen=True, slots=True)
+class RobotSource:
+    """What the master holds about one robot: its namespace, parameter keys and topics."""
+
+    namespace: str
+    description_key: str
+    semantic_key: str | None
+    topics: tuple[Topic, ...]
+
+
+def normalise_namespace(text: str) -> str:
+    """``uav1``, ``/uav1/`` -> ``/uav1``; ``""`` or ``/`` -> ``/`` (the root namespace)."""
+    parts = [part for part in text.strip().split("/") if part]
+    return "/" + "/".join(parts)
+
+
+def description_key(namespace: str, name: str = DESCRIPTION) -> str:
+    return namespace.rstrip("/") + "/" + name
+
+
+def robot_namespaces(param_names: Iterable[str]) -> tuple[str, ...]:
+    """Namespaces holding a ``robot_description`` parameter, sorted."""
+    found = set()
+    for name in param_names:
+        parts = [part for part in name.split("/") if part]
+        if parts and parts[-1] == DESCRIPTION:
+            found.add("/" + "/".join(parts[:-1]))
+    return tuple(sorted(found))
+
+
+def _inside(name: str, namespace: str) -> bool:
+    return namespace == "/" or name.startswith(namespace + "/")
+
+
+def _owner(name: str, namespaces: tuple[str, ...]) -> str | None:
+    """The deepest namespace containing ``name`` (the root one last)."""
+    best = None
+    for namespace in namespaces:
+        if _inside(name, namespace) and (best is None or len(namespace) > len(best)):
+            best = namespace
+    return best
+
+
+def _relative(name: str, namespace: str) -> str:
+    return name[len(namespace):].lstrip("/") if namespace != "/" else name.lstrip("/")
+
+
+def _relevant(message_type: str, profile: Profile) -> bool:
+    return any(not rule.types or message_type in rule.types for rule in profile.topic_sensors) \
+        or any(message_type in rule.types for rule in profile.topic_controls)
+
+
+def robot_topics(namespace: str, namespaces: tuple[str, ...], observation: Observation,
+                 profile: Profile) -> tuple[Topic, ...]:
+    """The topics of the robot at ``namespace`` (see the module docstring), sorted."""
+    types = dict(observation.topic_types)
+    sides = {"published": dict(observation.publishers),
+             "subscribed": dict(observation.subscribers)}
+    names = sorted(set(sides["published"]) | set(sides["subscribed"]))
+    found: list[Topic] = []
+    for name in names:
+        if _owner(name, namespaces) != namespace:
+            continue
+        message_type = normalise_type(types.get(name, _ANY_TYPE))
+        if message_type == _ANY_TYPE or not _relevant(message_type, profile):
+            continue
+        own = {side: [node for node in nodes.get(name, ())
+                      if _owner(node, namespaces) == namespace]
+               for side, nodes in sides.items()}
+        counted = own if any(own.values()) else \
+            {side: list(nodes.get(name, ())) for side, nodes in sides.items()}
+        relative = _relative(name, namespace)
+        found += [Topic(relative, message_type, side) for side in ("published", "subscribed")
+                  if counted[side]]
+    return tuple(found)
+
+
+def discover(observation: Observation, profile: Profile) -> tuple[RobotSource, ...]:
+    """Every robot on the master, in namespace order."""
+    namespaces = robot_namespaces(observation.param_names)
+    names = set(observation.param_names)
+    return tuple(
+        RobotSource(namespace, description_key(namespace),
+                    description_key(namespace, SEMANTIC)
+                    if description_key(namespace, SEMANTIC) in names else None,
+                    robot_topics(namespace, namespaces, observation, profile))
+        for namespace in namespaces)

@@ -1,0 +1,117 @@
+"""The watcher's events and their JSON schema (one object per line; documented in the README).
+
+Every event has ``seq`` (1, 2, ... within one run: a gap would mean a lost line) and ``event``,
+its kind:
+
+==================== ==============================================================
+``robot_added``      a robot appeared (or is part of a (re)synchronisation); the robot
+                     fields below
+``robot_changed``    a robot's reported fields changed: the robot fields, and
+                     ``changed``, the names of the fields that differ
+``robot_removed``    its ``robot_description`` is gone: ``robot``
+``selection_changed`` the operator's selection or its answer changed: ``robot``,
+                     ``motion_control``, ``sensor_type`` (as asked, ``null`` when not set),
+                     ``assignment`` (``teleop-ui assign``'s JSON, ``null`` with no active
+                     robot), ``notes``
+``master_lost``      the master stopped answering (or restarted): ``master``, ``error``
+``master_back``      it answers again; a full resynchronisation follows
+``synced``           the robots below are every robot on the master: ``master``, ``robots``
+==================== ==============================================================
+
+Robot fields: ``robot`` (the namespace), ``name`` (the URDF's), ``structure``,
+``kinematic_type`` (``null`` when the rule set has none for it), ``confidence``,
+``sensor_count``, ``sensors``, ``motion_controls``, ``combinations`` (each
+``{"combination", "configuration", "default", "reasons"}``), and ``error`` (``null``, or why the
+robot could not be identified; the identification fields are then ``null``).
+
+A run starts with one ``robot_added`` per robot, a ``selection_changed`` if a robot is active,
+and ``synced``. After ``master_back`` the same sequence follows again: the watcher starts over,
+so a consumer drops what it knew at ``master_lost`` and rebuilds from the events that follow.
+
+Not here: producing events (:mod:`solver.live.watcher`), text (:mod:`solver.live.render`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, ClassVar
+
+from solver.live.robot import LiveRobot, robot_data
+from solver.live.selection import ActiveSelection, Request, selection_data
+from solver.solve import Solution
+
+__all__ = ["Event", "MasterBack", "MasterLost", "RobotAdded", "RobotChanged", "RobotRemoved",
+           "SelectionChanged", "Synced", "event_data"]
+
+
+@dataclass(frozen=True, slots=True)
+class Event:
+    seq: int
+    kind: ClassVar[str] = "event"
+
+
+@dataclass(frozen=True, slots=True)
+class RobotAdded(Event):
+    robot: LiveRobot
+    kind: ClassVar[str] = "robot_added"
+
+
+@dataclass(frozen=True, slots=True)
+class RobotChanged(Event):
+    robot: LiveRobot
+    changed: tuple[str, ...]
+    kind: ClassVar[str] = "robot_changed"
+
+
+@dataclass(frozen=True, slots=True)
+class RobotRemoved(Event):
+    namespace: str
+    kind: ClassVar[str] = "robot_removed"
+
+
+@dataclass(frozen=True, slots=True)
+class SelectionChanged(Event):
+    request: Request
+    selection: ActiveSelection | None
+    kind: ClassVar[str] = "selection_changed"
+
+
+@dataclass(frozen=True, slots=True)
+class MasterLost(Event):
+    master: str
+    error: str
+    kind: ClassVar[str] = "master_lost"
+
+
+@dataclass(frozen=True, slots=True)
+class MasterBack(Event):
+    master: str
+    kind: ClassVar[str] = "master_back"
+
+
+@dataclass(frozen=True, slots=True)
+class Synced(Event):
+    master: str
+    robots: tuple[str, ...]
+    kind: ClassVar[str] = "synced"
+
+
+def event_data(event: Event, solution: Solution) -> dict[str, Any]:
+    """The JSON object of one event (see the module docstring)."""
+    data: dict[str, Any] = {"seq": event.seq, "event": event.kind}
+    if isinstance(event, RobotAdded):
+        data.update(robot_data(event.robot))
+    elif isinstance(event, RobotChanged):
+        data.update(robot_data(event.robot))
+        data["changed"] = list(event.changed)
+    elif isinstance(event, RobotRemoved):
+        data["robot"] = event.namespace
+    elif isinstance(event, SelectionChanged):
+        data.update(selection_data(event.selection, event.request, solution))
+    elif isinstance(event, MasterLost):
+        data.update(master=event.master, error=event.error)
+    elif isinstance(event, MasterBack):
+        data["master"] = event.master
+    elif isinstance(event, Synced):
+        data.update(master=event.master, robots=list(event.robots))
+    return data

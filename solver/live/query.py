@@ -1,0 +1,84 @@
+"""One question to a running master: which UI configuration does this robot get?
+
+:func:`assign_from_master` is ``teleop-ui assign --master URL [--robot NS] [NAME=VALUE...]``:
+it reads the master once, identifies the robot at ``NS`` (or the operator's active robot, with
+the active motion control and sensor type, when no ``--robot`` is given), fills in the values
+given on the command line, and chooses one combination as the watcher does
+(:func:`solver.live.selection.choose`). It writes nothing to the master.
+
+Unlike the watcher, which reports a robot it cannot identify and goes on, a question about one
+robot that cannot be answered is an error: no such robot (with the robots there are), or a
+description that does not identify (its located error).
+
+Not here: following changes (:mod:`solver.live.watcher`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+from solver.assign import Assignment
+from solver.errors import InputError, did_you_mean
+from solver.identify.identify import IdentificationCache
+from solver.identify.profile import Profile
+from solver.live.discovery import discover, normalise_namespace
+from solver.live.master import MISSING, MasterClient
+from solver.live.robot import identify_robot
+from solver.live.selection import NAMESPACE, REQUEST_PARAMS, choose, read_request
+from solver.solve import Solution
+
+__all__ = ["LiveAssignment", "assign_from_master"]
+
+
+@dataclass(frozen=True, slots=True)
+class LiveAssignment:
+    """The answer: the robot asked about, its combination's assignment, and notes."""
+
+    robot: str
+    assignment: Assignment
+    notes: tuple[str, ...] = ()
+
+
+def assign_from_master(master: str, solution: Solution, profile: Profile, *,
+                       robot: str | None = None, given: Mapping[str, str] | None = None,
+                       timeout: float = 2.0) -> LiveAssignment:
+    """The configuration of a robot on the master (see the module docstring)."""
+    client = MasterClient(master, caller_id="/teleop_ui_assign", timeout=timeout)
+    try:
+        observation = client.observe(NAMESPACE)
+        values = dict(given or {})
+        notes: list[str] = []
+        if robot is None:
+            request = read_request(dict(observation.params))
+            if request.robot is None:
+                raise InputError.at("<arguments>", f"no --robot given and no "
+                                                   f"{NAMESPACE}/active_robot set on {master}")
+            namespace = request.robot
+            notes += request.notes
+            for _, role in REQUEST_PARAMS:
+                asked = getattr(request, role)
+                name = profile.role(role)
+                if asked is not None and name in solution.rules.names:
+                    values.setdefault(name, asked)
+        else:
+            namespace = normalise_namespace(robot)
+        sources = {s.namespace: s for s in discover(observation, profile)}
+        source = sources.get(namespace)
+        found = {} if source is None else client.get_params(
+            [source.description_key, *([source.semantic_key] if source.semantic_key else [])])
+        if source is None or found[source.description_key] is MISSING:
+            there = ", ".join(sources) or "none"
+            raise InputError.at("<arguments>", f"no robot {namespace} on {master} (no "
+                                               f"{namespace.rstrip('/')}/robot_description)"
+                                               f"{did_you_mean(namespace, sources)}; robots "
+                                               f"there: {there}")
+    finally:
+        client.close()
+    live = identify_robot(source, found[source.description_key],
+                          found.get(source.semantic_key or "", MISSING),
+                          cache=IdentificationCache(), solution=solution, profile=profile)
+    if live.identification is None:
+        raise InputError.at(master, f"robot {namespace} cannot be identified:\n{live.error}")
+    assignment, chosen = choose(live, values, solution)
+    return LiveAssignment(namespace, assignment, (*notes, *chosen))

@@ -1,0 +1,114 @@
+"""Events as JSON lines (``--format json``) or as text for a person (``--format text``).
+
+JSON: one compact object per line, keys in the documented order, UTF-8 kept, so a consumer
+reads the stream line by line (``jq -c``, a ROS node, a UI). Text: a line per event, with the
+robot's combinations and UI configuration numbers indented beneath it.
+
+:func:`render_live_assignment` is the output of ``teleop-ui assign --master``: ``assign``'s
+own text or JSON, with the robot's namespace and the notes on how the combination was chosen.
+
+Not here: the schema itself (:mod:`solver.live.events`).
+"""
+
+from __future__ import annotations
+
+import json
+from typing import Any
+
+from solver.assign import Assignment
+from solver.formats import assignment_data, dumps, render_assignment
+from solver.live.events import (
+    Event,
+    MasterBack,
+    MasterLost,
+    RobotAdded,
+    RobotChanged,
+    RobotRemoved,
+    SelectionChanged,
+    Synced,
+    event_data,
+)
+from solver.live.query import LiveAssignment
+from solver.live.robot import LiveRobot
+from solver.solve import Solution
+
+__all__ = ["json_line", "render_event", "render_live_assignment", "text_lines"]
+
+_WIDTH = 16  # the label column of the text format
+
+
+def json_line(event: Event, solution: Solution) -> str:
+    return json.dumps(event_data(event, solution), ensure_ascii=False) + "\n"
+
+
+def render_event(event: Event, solution: Solution, fmt: str = "json") -> str:
+    """One event in ``fmt`` (``json`` or ``text``), ending in a newline."""
+    if fmt == "json":
+        return json_line(event, solution)
+    return "".join(line + "\n" for line in text_lines(event))
+
+
+def _values(given: Any) -> str:
+    return ", ".join(str(value) for _, value in given) or "(nothing known)"
+
+
+def _configuration(assignment: Assignment) -> str:
+    if assignment.is_default:
+        return f"{assignment.number} (default): {'; '.join(assignment.reasons)}"
+    return str(assignment.number)
+
+
+def _robot_lines(label: str, robot: LiveRobot, changed: tuple[str, ...] = ()) -> list[str]:
+    head = f"{label:<{_WIDTH}}{robot.namespace}"
+    found = robot.identification
+    if found is None:
+        return [f"{head}  cannot be identified:",
+                *(" " * (_WIDTH + 2) + line for line in (robot.error or "").splitlines())]
+    kinematic = found.kinematic_type or "no kinematic type in the rule set"
+    controls = ", ".join(c.motion_control for c in found.motion_controls) or "none found"
+    head += (f"  {found.robot}: {kinematic} (structure {found.structure}, confidence "
+             f"{found.confidence:.2f}); {found.sensor_count} sensor(s); motion controls "
+             f"{controls}")
+    if changed:
+        head += f"  [changed: {', '.join(changed)}]"
+    return [head, *(" " * (_WIDTH + 2) + f"UI configuration {_configuration(c.assignment)}  "
+                    f"<- {_values(c.values)}" for c in robot.combinations)]
+
+
+def text_lines(event: Event) -> list[str]:
+    """The text form of one event (no ``seq``: it is for the JSON stream)."""
+    if isinstance(event, RobotAdded):
+        return _robot_lines("robot added", event.robot)
+    if isinstance(event, RobotChanged):
+        return _robot_lines("robot changed", event.robot, event.changed)
+    if isinstance(event, RobotRemoved):
+        return [f"{'robot removed':<{_WIDTH}}{event.namespace}"]
+    if isinstance(event, SelectionChanged):
+        request = event.request
+        if event.selection is None or event.selection.assignment is None:
+            return [f"{'selection':<{_WIDTH}}no active robot "
+                    "(set /teleop_ui/active_robot)", *(f"  note: {n}" for n in request.notes)]
+        assignment = event.selection.assignment
+        asked = " ".join(str(v) for v in (request.robot, request.motion_control,
+                                          request.sensor_type) if v is not None)
+        return [f"{'selection':<{_WIDTH}}{asked} -> UI configuration "
+                f"{_configuration(assignment)}  <- {_values(assignment.given)}",
+                *(" " * (_WIDTH + 2) + f"note: {note}" for note in event.selection.notes)]
+    if isinstance(event, MasterLost):
+        return [f"{'master lost':<{_WIDTH}}{event.master}: {event.error}; retrying"]
+    if isinstance(event, MasterBack):
+        return [f"{'master back':<{_WIDTH}}{event.master}: resynchronising"]
+    if isinstance(event, Synced):
+        robots = ", ".join(event.robots) or "none"
+        return [f"{'synced':<{_WIDTH}}{len(event.robots)} robot(s): {robots}"]
+    return [event.kind]
+
+
+def render_live_assignment(live: LiveAssignment, solution: Solution, fmt: str = "text") -> str:
+    """``teleop-ui assign``'s output for a robot on a master: its JSON plus ``robot``, ``notes``."""
+    if fmt == "json":
+        data = {"robot": live.robot, **assignment_data(solution, live.assignment),
+                "notes": list(live.notes)}
+        return dumps(data)
+    text = f"robot {live.robot}\n" + render_assignment(solution, live.assignment, "text")
+    return text + "".join(f"  note: {note}\n" for note in live.notes)

@@ -1,0 +1,123 @@
+"""One robot on a ROS master: identified from its description and topics, with its combinations.
+
+:func:`identify_robot` hands a robot's ``robot_description`` text (and SRDF, and topic triples
+from :mod:`solver.live.discovery`) to :meth:`IdentificationCache.identify_urdf`, then gives
+every characteristic combination its UI configuration with
+:func:`solver.identify.combinations.combinations`. Identification is cached by content: a
+description seen before (the same robot after a master restart, or a second robot of the same
+model) is not parsed again. The cache is asked with a file name that does not depend on the
+namespace (``robot_description``) for that reason; errors are then re-located to the robot's
+own parameter (``/uav1/robot_description:3:5: ...``).
+
+A description that cannot be identified (not text, malformed XML, a broken tree) gives a
+:class:`LiveRobot` with the error and no combinations: the robot is still reported, and the
+others are not affected.
+
+Not here: finding the robots (:mod:`solver.live.discovery`), events (:mod:`solver.live.events`).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+from typing import Any
+
+from solver.errors import SolverError
+from solver.identify.combinations import Combination, combinations
+from solver.identify.identify import Identification, IdentificationCache, TopicSource
+from solver.identify.profile import Profile
+from solver.live.discovery import RobotSource
+from solver.live.master import MISSING
+from solver.solve import Solution
+
+__all__ = ["LiveRobot", "identify_robot", "robot_data"]
+
+_FILE = "robot_description"
+_SRDF_FILE = "<srdf>"  # what IdentificationCache names an SRDF
+_SOURCE = "topics"
+
+
+@dataclass(frozen=True, slots=True)
+class LiveRobot:
+    """A robot as the watcher reports it: identified, or the error that prevented it."""
+
+    namespace: str
+    identification: Identification | None
+    combinations: tuple[Combination, ...] = ()
+    error: str | None = None
+
+
+def _text(value: Any, key: str) -> str | bytes:
+    if isinstance(value, str | bytes):
+        return value
+    kind = "a namespace of parameters" if isinstance(value, dict) else type(value).__name__
+    raise _NotText(f"{key}: expected URDF text, got {kind}")
+
+
+class _NotText(ValueError):
+    pass
+
+
+def _relocated(error: SolverError, description: str, semantic: str | None) -> str:
+    lines = []
+    for fault in error.faults:
+        file = fault.location.file
+        if file == _FILE:
+            file = description
+        elif file == _SRDF_FILE and semantic is not None:
+            file = semantic
+        lines.append(str(dataclasses.replace(
+            fault, location=dataclasses.replace(fault.location, file=file))))
+    return "\n".join(lines)
+
+
+def identify_robot(source: RobotSource, description: Any, semantic: Any = MISSING, *,
+                   cache: IdentificationCache, solution: Solution, profile: Profile
+                   ) -> LiveRobot:
+    """The robot ``source`` describes, from its parameter values (``robot_description``,
+    ``robot_description_semantic`` or :data:`MISSING`) and topics; never raises for input."""
+    namespace = source.namespace
+    try:
+        text = _text(description, source.description_key)
+        srdf = None if source.semantic_key is None or semantic is MISSING \
+            else _text(semantic, source.semantic_key)
+        identification = cache.identify_urdf(
+            text, srdf_text=srdf,
+            topics=[TopicSource(_SOURCE, source.topics)] if source.topics else (),
+            rules=solution.rules, profile=profile, file=_FILE)
+    except _NotText as error:
+        return LiveRobot(namespace, None, (), str(error))
+    except SolverError as error:
+        return LiveRobot(namespace, None, (),
+                         _relocated(error, source.description_key, source.semantic_key))
+    except (RecursionError, MemoryError, ValueError) as error:
+        # A description hostile enough to get past the readers' own checks must still not
+        # stop the watcher: the robot is reported with what went wrong, the others go on.
+        return LiveRobot(namespace, None, (), f"{source.description_key}: cannot identify "
+                                              f"({type(error).__name__}: {error})")
+    return LiveRobot(namespace, identification,
+                     combinations(identification, solution, profile))
+
+
+def robot_data(robot: LiveRobot) -> dict[str, Any]:
+    """The robot fields of a ``robot_added`` / ``robot_changed`` event (see the README)."""
+    found = robot.identification
+    return {
+        "robot": robot.namespace,
+        "name": None if found is None else found.robot,
+        "structure": None if found is None else found.structure,
+        "kinematic_type": None if found is None else found.kinematic_type,
+        "confidence": None if found is None else found.confidence,
+        "sensor_count": None if found is None else found.sensor_count,
+        "sensors": [] if found is None else [
+            {"kind": s.kind, "sensor_type": s.sensor_type, "count": s.count, "source": s.source}
+            for s in found.sensors],
+        "motion_controls": [] if found is None else [
+            {"motion_control": c.motion_control, "source": c.source}
+            for c in found.motion_controls],
+        "combinations": [
+            {"combination": dict(c.values), "configuration": c.assignment.number,
+             "default": c.assignment.is_default, "reasons": list(c.assignment.reasons)}
+            for c in robot.combinations],
+        "error": robot.error,
+    }

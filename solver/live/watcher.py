@@ -1,0 +1,344 @@
+"""The watcher: a state machine that follows a ROS master and yields events as things change.
+
+States and transitions::
+
+    start --(master answers)--> synchronised --(poll: something changed)--> events
+      |                             |
+      | (no answer: error,          +--(a call fails, or the master's pid changed)--> lost
+      |  or --wait retries)         |                                                  |
+      v                             +<--(an answer: master_back, full resync)----------+
+
+*Synchronising* (at start and after ``master_back``) forgets everything, reads the master
+afresh and reports every robot as ``robot_added``, the selection, then ``synced``: a consumer
+never has to merge an old view with a new one, and no robot is reported twice or missed.
+
+*Polling*: every ``interval`` seconds one round trip (:meth:`MasterClient.observe`) reads the
+master's pid, the topic graph, the parameter names and ``/teleop_ui``. Descriptions are not
+read by polls: the watcher's node (:mod:`solver.live.node`) subscribes to each one and to
+``/teleop_ui``, and a change pushed by the master wakes the loop at once, so an operator's
+switch or a new description is reported well within one interval. A robot is identified again
+only when its description or its relevant topics changed (identification is cached by content
+besides); an event is emitted only when what it reports changed.
+
+*Write-back*: the answer to the active selection is written to ``/teleop_ui/ui_configuration``
+(deleted with no active robot) whenever what is on the master differs from it.
+
+*Lost*: any failed call, or a new pid (the master restarted between two polls), gives
+``master_lost``; the watcher retries after one interval, doubling up to ``max_backoff``, and
+when the master answers gives ``master_back`` and synchronises again.
+
+Nothing here prints: events are yielded to the caller (the CLI writes them).
+
+Not here: the event schema (:mod:`solver.live.events`), rendering (:mod:`solver.live.render`).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import dataclasses
+import os
+import re
+import socket
+import threading
+import time
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
+from types import TracebackType
+from typing import Any
+
+from solver.identify.identify import IdentificationCache
+from solver.identify.profile import Profile
+from solver.identify.topics import Topic
+from solver.live.descriptions import Descriptions
+from solver.live.discovery import discover
+from solver.live.events import (
+    Event,
+    MasterBack,
+    MasterLost,
+    RobotAdded,
+    RobotChanged,
+    RobotRemoved,
+    SelectionChanged,
+    Synced,
+)
+from solver.live.master import MISSING, MasterClient, MasterError, Observation
+from solver.live.node import NodeServer, callback_host
+from solver.live.robot import LiveRobot, identify_robot, robot_data
+from solver.live.selection import (
+    NAMESPACE,
+    RESULT_PARAM,
+    Request,
+    read_request,
+    select,
+    selection_data,
+    ui_configuration_value,
+)
+from solver.solve import Solution
+
+__all__ = ["Watcher"]
+
+# Pushes can come in bursts (a launch file setting many parameters); polls triggered by them
+# are at least this far apart.
+_MIN_GAP = 0.01
+_RESULT_KEY = RESULT_PARAM.rsplit("/", 1)[1]
+
+
+class _Restarted(MasterError):
+    """The master answers with another process id: it restarted between two polls."""
+
+
+@dataclass(frozen=True, slots=True)
+class _Tracked:
+    inputs: tuple[Any, Any, tuple[Topic, ...]]
+    robot: LiveRobot
+    data: dict[str, Any]
+
+
+def _node_name(port: int) -> str:
+    host = re.sub(r"\W", "_", socket.gethostname()) or "host"
+    return f"/teleop_ui_watch_{host}_{os.getpid()}_{port}"
+
+
+class Watcher:
+    """Follows the ROS master at ``master`` for ``solution``'s team (see the module docstring).
+
+    Use it as a context manager, so its node and parameter subscriptions are released::
+
+        with Watcher(uri, solve(team), load_profile()) as watcher:
+            for event in watcher.events():
+                ...
+
+    ``push=False`` runs without a node (no parameter subscriptions): enough for
+    :meth:`snapshot`, which reads everything once.
+    """
+
+    def __init__(self, master: str, solution: Solution, profile: Profile, *,
+                 interval: float = 0.2, timeout: float = 2.0, push: bool = True,
+                 max_backoff: float = 2.0, cache: IdentificationCache | None = None) -> None:
+        self.master = master
+        self.solution = solution
+        self.profile = profile
+        self.interval = interval
+        self.max_backoff = max(max_backoff, interval)
+        self.cache = cache if cache is not None else IdentificationCache()
+        self.stop_reason: str | None = None
+        self._stop = threading.Event()
+        self._wake = threading.Event()
+        self._closed = False
+        self._node: NodeServer | None = None
+        caller_id = f"/teleop_ui_watch_{os.getpid()}"
+        if push:
+            self._node = NodeServer(callback_host(master), master, self._pushed, self.stop)
+            caller_id = _node_name(int(self._node.uri.rsplit(":", 1)[1].strip("/")))
+            self._node.start()
+        self.client = MasterClient(master, caller_id=caller_id, timeout=timeout)
+        self.descriptions = Descriptions(self.client,
+                                         None if self._node is None else self._node.uri)
+        self._robots: dict[str, _Tracked] = {}
+        self._no_selection = selection_data(None, Request(), solution)
+        self._selection = self._no_selection
+        self._pid: int | None = None
+        self._seq = 0
+        self._last_poll = 0.0
+
+    # -- life cycle ----------------------------------------------------------------------
+
+    @property
+    def caller_id(self) -> str:
+        """The watcher's node name on the master."""
+        return self.client.caller_id
+
+    @property
+    def node_uri(self) -> str | None:
+        return None if self._node is None else self._node.uri
+
+    def __enter__(self) -> Watcher:
+        return self
+
+    def __exit__(self, kind: type[BaseException] | None, error: BaseException | None,
+                 traceback: TracebackType | None) -> None:
+        self.close()
+
+    def stop(self, reason: str = "") -> None:
+        """Make :meth:`events` return (thread-safe; the node's ``shutdown`` calls it too)."""
+        self.stop_reason = reason or "stopped"
+        self._stop.set()
+        self._wake.set()
+
+    def wake(self) -> None:
+        """Poll now instead of at the next tick (thread-safe)."""
+        self._wake.set()
+
+    @property
+    def stopped(self) -> bool:
+        return self._stop.is_set()
+
+    def close(self) -> None:
+        """Unsubscribe from the master (best effort) and stop the node; idempotent."""
+        self._stop.set()
+        if self._closed:
+            return
+        self._closed = True
+        if self._node is not None:
+            with contextlib.suppress(MasterError):  # gone with the master
+                self.client.unsubscribe_params(self._node.uri, [NAMESPACE])
+            self.descriptions.close()
+            self._node.close()
+        self.client.close()
+
+    def wait_for_master(self, on_waiting: Callable[[MasterError], None] | None = None
+                        ) -> bool:
+        """Retry until the master answers (``True``) or :meth:`stop` (``False``)."""
+        delay = self.interval
+        told = False
+        while not self.stopped:
+            try:
+                self.client.get_pid()
+            except MasterError as error:
+                if not told and on_waiting is not None:
+                    on_waiting(error)
+                told = True
+                self._stop.wait(delay)
+                delay = min(delay * 2, self.max_backoff)
+            else:
+                return True
+        return False
+
+    # -- events --------------------------------------------------------------------------
+
+    def snapshot(self) -> list[Event]:
+        """One full synchronisation: ``robot_added`` per robot, the selection, ``synced``.
+
+        :class:`~solver.live.master.MasterError` when the master cannot be read.
+        """
+        return self._numbered(self._resync())
+
+    def events(self) -> Iterator[Event]:
+        """Events until :meth:`stop`; the first synchronisation raises if the master is down."""
+        yield from self.snapshot()
+        lost: str | None = None
+        delay = self.interval
+        while not self.stopped:
+            try:
+                if lost is not None:
+                    batch = [MasterBack(0, self.master), *self._resync()]
+                    lost = None
+                else:
+                    self._pause_until_next_poll()
+                    if self.stopped:
+                        break
+                    batch = self._poll()
+            except MasterError as error:
+                if lost is None:
+                    # The event names the master already; the error says what went wrong.
+                    lost = "; ".join(fault.message for fault in error.faults)
+                    yield from self._numbered([MasterLost(0, self.master, lost)])
+                    # A restart is already over: synchronise at once.
+                    delay = 0.0 if isinstance(error, _Restarted) else self.interval
+                else:
+                    delay = min(max(delay, self.interval) * 2, self.max_backoff)
+                self._stop.wait(delay)
+                continue
+            yield from self._numbered(batch)
+            delay = self.interval
+
+    def _numbered(self, batch: list[Event]) -> list[Event]:
+        # Events are built unnumbered: a batch cut short by a failed call is dropped whole,
+        # and the numbers stay without gaps.
+        numbered = []
+        for event in batch:
+            self._seq += 1
+            numbered.append(dataclasses.replace(event, seq=self._seq))
+        return numbered
+
+    def _pause_until_next_poll(self) -> None:
+        deadline = self._last_poll + self.interval
+        while not self.stopped:
+            remaining = deadline - time.monotonic()
+            if remaining <= 0:
+                return
+            if self._wake.wait(remaining):
+                self._wake.clear()
+                gap = self._last_poll + _MIN_GAP - time.monotonic()
+                if gap > 0:
+                    self._stop.wait(gap)
+                return
+
+    def _pushed(self, key: str, value: Any) -> None:
+        """A parameter update from the master (on the node's server thread)."""
+        name = "/" + key.strip("/")
+        if name == NAMESPACE or name.startswith(NAMESPACE + "/") \
+                or self.descriptions.push(name, value):
+            self._wake.set()
+
+    # -- reading the master ----------------------------------------------------------------
+
+    def _observe(self) -> Observation:
+        self._last_poll = time.monotonic()
+        return self.client.observe(NAMESPACE)
+
+    def _resync(self) -> list[Event]:
+        self._robots = {}
+        self._selection = self._no_selection
+        self.descriptions.reset()
+        if self._node is not None:
+            self.client.subscribe_param(self._node.uri, NAMESPACE)
+        observation = self._observe()
+        self._pid = observation.pid
+        batch = self._update(observation)
+        return [*batch, Synced(0, self.master, tuple(sorted(self._robots)))]
+
+    def _poll(self) -> list[Event]:
+        observation = self._observe()
+        if observation.pid != self._pid:
+            raise _Restarted.at(self.master, f"the master restarted (process {self._pid}, "
+                                             f"now {observation.pid})", path="getPid")
+        return self._update(observation)
+
+    def _update(self, observation: Observation) -> list[Event]:
+        sources = discover(observation, self.profile)
+        self.descriptions.sync(
+            [s.description_key for s in sources]
+            + [s.semantic_key for s in sources if s.semantic_key is not None])
+        robots: dict[str, _Tracked] = {}
+        changes: list[Event] = []
+        for source in sources:
+            description = self.descriptions.get(source.description_key)
+            if description is MISSING:
+                continue  # deleted since the names were read: the next poll removes it
+            semantic = MISSING if source.semantic_key is None \
+                else self.descriptions.get(source.semantic_key)
+            inputs = (description, semantic, source.topics)
+            old = self._robots.get(source.namespace)
+            if old is not None and old.inputs == inputs:
+                robots[source.namespace] = old
+                continue
+            robot = identify_robot(source, description, semantic, cache=self.cache,
+                                   solution=self.solution, profile=self.profile)
+            data = robot_data(robot)
+            robots[source.namespace] = _Tracked(inputs, robot, data)
+            if old is None:
+                changes.append(RobotAdded(0, robot))
+            elif data != old.data:
+                changes.append(RobotChanged(0, robot, tuple(k for k in data
+                                                            if data[k] != old.data.get(k))))
+        removed: list[Event] = [RobotRemoved(0, namespace)
+                                for namespace in sorted(set(self._robots) - set(robots))]
+        self._robots = robots
+        return [*removed, *changes, *self._select(dict(observation.params))]
+
+    def _select(self, params: dict[str, Any]) -> list[Event]:
+        request = read_request(params)
+        selection = select(request, {ns: t.robot for ns, t in self._robots.items()},
+                           self.solution, self.profile)
+        wanted = ui_configuration_value(selection, self.solution)
+        present = params.get(_RESULT_KEY, MISSING)
+        if wanted is None and present is not MISSING:
+            self.client.delete_param(RESULT_PARAM)
+        elif wanted is not None and present != wanted:
+            self.client.set_param(RESULT_PARAM, wanted)
+        data = selection_data(selection, request, self.solution)
+        if data == self._selection:
+            return []
+        self._selection = data
+        return [SelectionChanged(0, request, selection)]

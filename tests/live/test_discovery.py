@@ -1,0 +1,136 @@
+"""Robots and their topics from what a master reports (getParamNames, getSystemState, ...)."""
+
+from __future__ import annotations
+
+from hypothesis import given
+from hypothesis import strategies as st
+
+from solver.identify.profile import Profile
+from solver.identify.topics import Topic
+from solver.live.discovery import (
+    discover,
+    normalise_namespace,
+    robot_namespaces,
+    robot_topics,
+)
+from solver.live.master import Observation
+
+IMAGE = "sensor_msgs/Image"
+TWIST = "geometry_msgs/Twist"
+SCAN = "sensor_msgs/LaserScan"
+
+
+def observation(publishers: dict[str, list[str]], subscribers: dict[str, list[str]],
+                types: dict[str, str], params: list[str]) -> Observation:
+    return Observation(
+        pid=1,
+        publishers=tuple((t, tuple(n)) for t, n in sorted(publishers.items())),
+        subscribers=tuple((t, tuple(n)) for t, n in sorted(subscribers.items())),
+        topic_types=tuple(sorted(types.items())), param_names=tuple(sorted(params)))
+
+
+def test_every_namespace_with_a_robot_description_is_a_robot_the_root_too() -> None:
+    names = ["/robot_description", "/uav1/robot_description", "/team/ugv1/robot_description",
+             "/uav1/robot_description_semantic", "/robot_description_x", "/rosdistro",
+             "/arm/robot_description/extra"]
+    assert robot_namespaces(names) == ("/", "/team/ugv1", "/uav1")
+
+
+def test_namespaces_are_normalised_to_absolute_names_without_a_trailing_slash() -> None:
+    assert [normalise_namespace(t) for t in ("uav1", "/uav1/", "", "/", "//a//b/")] == \
+        ["/uav1", "/uav1", "/", "/", "/a/b"]
+
+
+_segment = st.from_regex(r"[a-z][a-z0-9_]{0,6}", fullmatch=True)
+_namespace = st.lists(_segment, max_size=3).map(lambda parts: "/" + "/".join(parts))
+
+
+@given(st.lists(_namespace, max_size=6))
+def test_robot_namespaces_are_exactly_those_with_a_description(namespaces: list[str]) -> None:
+    names = [ns.rstrip("/") + "/robot_description" for ns in namespaces]
+    names += [ns.rstrip("/") + "/other" for ns in namespaces]
+    assert robot_namespaces(names) == tuple(sorted(set(namespaces)))
+
+
+def test_the_robots_own_nodes_decide_the_direction(profile: Profile) -> None:
+    seen = observation(
+        publishers={"/uav1/cmd_vel": ["/teleop"], "/uav1/camera/image_raw": ["/uav1/camera"]},
+        subscribers={"/uav1/cmd_vel": ["/uav1/base"], "/uav1/camera/image_raw": ["/rviz"]},
+        types={"/uav1/cmd_vel": TWIST, "/uav1/camera/image_raw": IMAGE},
+        params=["/uav1/robot_description"])
+    assert robot_topics("/uav1", ("/uav1",), seen, profile) == (
+        Topic("camera/image_raw", IMAGE, "published"),
+        Topic("cmd_vel", TWIST, "subscribed"))
+
+
+def test_with_no_node_of_the_robot_both_sides_count(profile: Profile) -> None:
+    """One simulator node serving every robot (Gazebo) publishes and subscribes for them."""
+    seen = observation(
+        publishers={"/uav1/camera/image_raw": ["/gazebo"], "/uav1/cmd_vel": ["/teleop"]},
+        subscribers={"/uav1/camera/image_raw": ["/rviz"], "/uav1/cmd_vel": ["/gazebo"]},
+        types={"/uav1/camera/image_raw": IMAGE, "/uav1/cmd_vel": TWIST},
+        params=["/uav1/robot_description"])
+    assert robot_topics("/uav1", ("/uav1",), seen, profile) == (
+        Topic("camera/image_raw", IMAGE, "published"),
+        Topic("camera/image_raw", IMAGE, "subscribed"),
+        Topic("cmd_vel", TWIST, "published"),
+        Topic("cmd_vel", TWIST, "subscribed"))
+
+
+def test_a_topic_belongs_to_the_deepest_robot_and_the_root_takes_the_rest(
+        profile: Profile) -> None:
+    seen = observation(
+        publishers={"/team/ugv1/scan": ["/team/ugv1/laser"], "/team/scan": ["/team/laser"],
+                    "/scan": ["/laser"], "/elsewhere/scan": ["/laser2"]},
+        subscribers={}, types=dict.fromkeys(
+            ("/team/ugv1/scan", "/team/scan", "/scan", "/elsewhere/scan"), SCAN),
+        params=["/robot_description", "/team/robot_description",
+                "/team/ugv1/robot_description"])
+    namespaces = robot_namespaces(seen.param_names)
+    assert robot_topics("/team/ugv1", namespaces, seen, profile) == (
+        Topic("scan", SCAN, "published"),)
+    assert robot_topics("/team", namespaces, seen, profile) == (
+        Topic("scan", SCAN, "published"),)
+    assert robot_topics("/", namespaces, seen, profile) == (
+        Topic("elsewhere/scan", SCAN, "published"), Topic("scan", SCAN, "published"))
+
+
+def test_topics_no_profile_rule_reads_or_without_a_type_are_left_out(profile: Profile) -> None:
+    seen = observation(
+        publishers={"/uav1/tf": ["/uav1/x"], "/uav1/diagnostics": ["/uav1/x"],
+                    "/uav1/untyped": ["/uav1/x"], "/uav1/any": ["/uav1/x"],
+                    "/uav1/camera/image_raw": ["/uav1/x"]},
+        subscribers={},
+        types={"/uav1/tf": "tf2_msgs/TFMessage",
+               "/uav1/diagnostics": "diagnostic_msgs/DiagnosticArray", "/uav1/any": "*",
+               "/uav1/camera/image_raw": IMAGE},
+        params=["/uav1/robot_description"])
+    assert robot_topics("/uav1", ("/uav1",), seen, profile) == (
+        Topic("camera/image_raw", IMAGE, "published"),)
+
+
+def test_discover_finds_the_moveit_semantic_description_beside_the_urdf(
+        profile: Profile) -> None:
+    seen = observation({}, {}, {}, ["/arm/robot_description",
+                                    "/arm/robot_description_semantic",
+                                    "/uav1/robot_description"])
+    arm, uav = discover(seen, profile)
+    assert (arm.namespace, arm.description_key, arm.semantic_key) == \
+        ("/arm", "/arm/robot_description", "/arm/robot_description_semantic")
+    assert (uav.namespace, uav.semantic_key) == ("/uav1", None)
+
+
+@given(st.lists(_namespace, min_size=1, max_size=5, unique=True),
+       st.lists(st.lists(_segment, min_size=1, max_size=4), max_size=12))
+def test_no_topic_is_given_to_two_robots(profile: Profile, namespaces: list[str],
+                                         topics: list[list[str]]) -> None:
+    names = ["/" + "/".join(parts) for parts in topics]
+    seen = observation({name: ["/node"] for name in names}, {}, dict.fromkeys(names, SCAN),
+                       [ns.rstrip("/") + "/robot_description" for ns in namespaces])
+    found = robot_namespaces(seen.param_names)
+    owners: dict[str, str] = {}
+    for namespace in found:
+        for topic in robot_topics(namespace, found, seen, profile):
+            absolute = namespace.rstrip("/") + "/" + topic.name
+            assert absolute not in owners, f"{absolute}: {owners.get(absolute)} and {namespace}"
+            owners[absolute] = namespace

@@ -1,0 +1,149 @@
+"""The watcher's node API, and description parameters kept current by the master's pushes."""
+
+from __future__ import annotations
+
+import os
+import queue
+import xmlrpc.client
+from typing import Any
+
+import pytest
+
+from solver.errors import InputError
+from solver.live.descriptions import Descriptions
+from solver.live.master import MISSING, MasterClient
+from solver.live.node import NodeServer, callback_host
+from tests.live.roscore import Roscore, TestNode, wait_until
+
+TIMEOUT = 60.0
+
+
+class Pushes:
+    def __init__(self) -> None:
+        self.updates: queue.Queue[tuple[str, Any]] = queue.Queue()
+        self.shutdowns: list[str] = []
+
+    def update(self, key: str, value: Any) -> None:
+        self.updates.put((key, value))
+
+    def shutdown(self, message: str) -> None:
+        self.shutdowns.append(message)
+
+
+def test_the_master_pushes_changes_of_a_subscribed_parameter(master: Roscore,
+                                                             node: TestNode) -> None:
+    pushes = Pushes()
+    server = NodeServer("127.0.0.1", master.uri, pushes.update, pushes.shutdown)
+    server.start()
+    client = MasterClient(master.uri, caller_id="/listener")
+    assert client.subscribe_param(server.uri, "/pushed/robot_description") is MISSING
+    node.set_param("/pushed/robot_description", "<robot name='a'/>")
+    assert pushes.updates.get(timeout=TIMEOUT) == ("/pushed/robot_description/",
+                                                   "<robot name='a'/>")
+    node.delete_param("/pushed/robot_description")
+    assert pushes.updates.get(timeout=TIMEOUT) == ("/pushed/robot_description/", {})
+    client.unsubscribe_param(server.uri, "/pushed/robot_description")
+    server.close()
+    client.close()
+
+
+def test_the_node_answers_what_ros_tools_ask_and_shuts_down_on_request(master: Roscore) -> None:
+    pushes = Pushes()
+    server = NodeServer("127.0.0.1", master.uri, pushes.update, pushes.shutdown)
+    server.start()
+    proxy = xmlrpc.client.ServerProxy(server.uri)
+    assert proxy.getPid("/rosnode") == [1, "", os.getpid()]
+    assert proxy.getMasterUri("/rosnode") == [1, "", master.uri]
+    assert proxy.getBusInfo("/rosnode") == [1, "", []]
+    refused: Any = proxy.requestTopic("/rosnode", "/x", [["TCPROS"]])
+    assert refused[0] == -1
+    done: Any = proxy.shutdown("/rosnode", "bye")
+    assert done[0] == 1
+    assert pushes.shutdowns == ["bye"]
+    server.close()
+
+
+def test_a_node_cannot_listen_on_an_address_of_another_machine() -> None:
+    pushes = Pushes()
+    with pytest.raises(InputError, match="set ROS_IP to an address of this machine"):
+        NodeServer("192.0.2.1", "http://192.0.2.2:11311/", pushes.update, pushes.shutdown)
+
+
+def test_the_callback_address_follows_ros_conventions(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.delenv("ROS_IP", raising=False)
+    monkeypatch.delenv("ROS_HOSTNAME", raising=False)
+    assert callback_host("http://127.0.0.1:11311/") == "127.0.0.1"
+    assert callback_host("http://localhost:11311/") == "127.0.0.1"
+    monkeypatch.setenv("ROS_HOSTNAME", "station.local")
+    assert callback_host("http://10.1.2.3:11311/") == "station.local"
+    monkeypatch.setenv("ROS_IP", "10.1.2.4")
+    assert callback_host("http://10.1.2.3:11311/") == "10.1.2.4"
+    assert callback_host("http://127.0.0.1:11311/") == "127.0.0.1"  # loopback wins
+
+
+def test_descriptions_are_read_once_then_kept_current_by_pushes(master: Roscore,
+                                                                 node: TestNode) -> None:
+    node.set_param("/d1/robot_description", "first")
+    client = MasterClient(master.uri, caller_id="/descriptions_test")
+    store: Descriptions
+
+    def pushed(key: str, value: Any) -> None:
+        store.push(key, value)
+
+    server = NodeServer("127.0.0.1", master.uri, pushed, lambda _: None)
+    server.start()
+    store = Descriptions(client, server.uri)
+    store.sync(["/d1/robot_description", "/d2/robot_description"])
+    assert store.get("/d1/robot_description") == "first"
+    assert store.get("/d2/robot_description") is MISSING
+    node.set_param("/d2/robot_description", "second")
+    node.set_param("/d1/robot_description", "changed")
+    wait_until(lambda: store.get("/d2/robot_description") == "second"
+               and store.get("/d1/robot_description") == "changed", TIMEOUT, "pushes")
+    node.delete_param("/d1/robot_description")
+    wait_until(lambda: store.get("/d1/robot_description") is MISSING, TIMEOUT, "deletion")
+    assert store.push("/not/followed", "x") is False
+    assert client.lookup_node(client.caller_id) == server.uri
+    store.sync(["/d2/robot_description"])
+    assert store.keys() == ("/d2/robot_description",)
+    store.close()
+    # Every subscription is gone, so the master forgot the node.
+    assert client.lookup_node(client.caller_id) is None
+    server.close()
+    client.close()
+
+
+class _Overtaken(MasterClient):
+    """The real client; the master's push of a newer value arrives before the reply."""
+
+    store: Descriptions
+
+    def subscribe_param(self, caller_api: str, key: str) -> Any:
+        value = super().subscribe_param(caller_api, key)
+        self.store.push(key, "newer")
+        return value
+
+
+def test_a_push_that_overtakes_the_subscription_reply_wins(master: Roscore,
+                                                           node: TestNode) -> None:
+    node.set_param("/race/robot_description", "older")
+    client = _Overtaken(master.uri, caller_id="/race_test")
+    server = NodeServer("127.0.0.1", master.uri, lambda *_: None, lambda _: None)
+    server.start()
+    client.store = Descriptions(client, server.uri)
+    client.store.sync(["/race/robot_description"])
+    assert client.store.get("/race/robot_description") == "newer"
+    client.store.close()
+    server.close()
+
+
+def test_without_a_node_descriptions_are_read_with_get_param(master: Roscore,
+                                                             node: TestNode) -> None:
+    node.set_param("/once/robot_description", "text")
+    client = MasterClient(master.uri, caller_id="/once_test")
+    store = Descriptions(client)
+    store.sync(["/once/robot_description", "/none/robot_description"])
+    assert store.get("/once/robot_description") == "text"
+    assert store.get("/none/robot_description") is MISSING
+    assert client.lookup_node(client.caller_id) is None  # it never registered anything
+    client.close()
