@@ -13,6 +13,10 @@ checker must report is known from its construction, independently of the checker
   (``core-value``), a rule entailed by one of the pairs (``redundant-constraint``), a rule
   that excludes nothing (``tautology``), and a declared bound that differs from T.
 
+A second benchmark checks 1,000 overlapping arrangements over 1..10,010 counts: the
+``non-transitive`` check must find the 999 neighbouring pairs without comparing every pair of
+arrangements value by value.
+
 Run: ``python -m pytest benchmarks/bench_check.py`` (timings), or with ``--benchmark-disable``
 to only assert the findings.
 """
@@ -144,3 +148,27 @@ def test_check_large_rule_set(benchmark: BenchmarkFixture, tmp_path: Path) -> No
     report = benchmark.pedantic(  # type: ignore[no-untyped-call]
         check_files, args=([rules],), rounds=3, iterations=1)
     _assert_findings(report)
+
+
+SLIDING = 1000  # arrangements of 15 counts, each overlapping the next by 5
+
+
+def sliding_text() -> str:
+    """Arrangement k covers 10k+1 .. 10k+15 of 1..10010: only neighbours overlap."""
+    windows = "\n".join(f"      - {{name: w{k}, min: {10 * k + 1}, max: {10 * k + 15}}}"
+                        for k in range(SLIDING))
+    return ("name: sliding arrangements\ncharacteristics:\n  kind: {values: [A, B]}\n  n:\n"
+            f"    range: [1, {10 * SLIDING + 10}]\n    components:\n{windows}\n")
+
+
+def test_check_non_transitive_of_1000_sliding_arrangements(benchmark: BenchmarkFixture,
+                                                            tmp_path: Path) -> None:
+    rules = tmp_path / "sliding.yaml"
+    rules.write_text(sliding_text(), encoding="utf-8")
+    # pytest-benchmark ships no type hints.
+    report = benchmark.pedantic(  # type: ignore[no-untyped-call]
+        check_files, args=([rules],), rounds=3, iterations=1)
+    counts = Counter(f.check for f in report.findings)
+    # Each neighbouring pair: 10k+1 ~ 10k+11 ~ 10k+16, and 5 counts in both.
+    assert counts["non-transitive"] == SLIDING - 1
+    assert counts["coverage-overlap"] == SLIDING - 1

@@ -1,6 +1,7 @@
 """Benchmark: drawing the radar chart, and batch runs with and without up-to-date skipping.
 
 * the article's Case 3 as a PNG radar chart (figure built and rendered);
+* a radar chart with a count spoke of 100,000 values (its cost must not follow the values);
 * 40 copies of Case 3 solved by ``batch`` in one process (``--force``): JSON and summary;
 * the same 40 teams again, all up to date: what a rerun costs (hashes, no solving).
 
@@ -13,11 +14,12 @@ from __future__ import annotations
 import shutil
 from pathlib import Path
 
+from matplotlib.collections import LineCollection
 from matplotlib.patches import PathPatch
 from pytest_benchmark.fixture import BenchmarkFixture
 
 from solver import find_teams, load_team, plan, run_batch, solve
-from solver.plot import figure_bytes, radar_figure
+from solver.plot import MIN_TICK_GAP, figure_bytes, radar_figure
 from tests.conftest import RULES, TEAMS
 
 COPIES = 40
@@ -68,3 +70,30 @@ def test_batch_rerun_of_40_unchanged_teams_solves_nothing(benchmark: BenchmarkFi
 
     outcomes = benchmark(rerun)
     assert outcomes == [("up to date", 102)] * COPIES
+
+
+WIDE = 100_000  # the most values a whole-number characteristic may have
+
+
+def test_radar_chart_of_a_count_spoke_of_100000_values_as_png(benchmark: BenchmarkFixture,
+                                                              tmp_path: Path) -> None:
+    (tmp_path / "wide.yaml").write_text(
+        f"characteristics:\n  kind: {{values: [Rover, Drone]}}\n  count: {{range: [1, {WIDE}]}}\n",
+        encoding="utf-8")
+    (tmp_path / "t.yaml").write_text(
+        f"rules: wide.yaml\nteam:\n  Rover: {{count: {WIDE}}}\n  Drone: {{count: [1, 2, 3]}}\n",
+        encoding="utf-8")
+    solution = solve(load_team(tmp_path / "t.yaml"))
+
+    def draw() -> tuple[int, int, bytes]:
+        figure = radar_figure(solution)
+        ax = figure.axes[0]
+        ticks = next(c for c in ax.collections if c.get_label() == "_ticks count")
+        labels = sum(str(t.get_label()) == "tick count" for t in ax.texts)
+        assert isinstance(ticks, LineCollection)
+        return len(ticks.get_segments()), labels, figure_bytes(figure, "png")
+
+    marks, labels, png = benchmark(draw)
+    assert marks == labels  # a mark per label, not per value
+    assert 2 <= labels <= 1 + int(1 / MIN_TICK_GAP)
+    assert png.startswith(b"\x89PNG")

@@ -1,7 +1,9 @@
 """Writing output files atomically: a temporary file in the same folder, then a rename.
 
 An interrupted run (Ctrl-C, a crash, a full disk) leaves either the old file or the new one,
-never half of one. Every command that writes files goes through :func:`write_atomic`.
+never half of one. Every command that writes files goes through :func:`write_atomic`, or
+:func:`write_all_atomic` when its files belong together (a Markdown report and its charts):
+then either every file is written or none is changed.
 
 Not here: deciding what to write or where.
 """
@@ -10,26 +12,56 @@ from __future__ import annotations
 
 import contextlib
 import os
+import shutil
 import tempfile
+from collections.abc import Mapping
 from pathlib import Path
 
-from solver.errors import InputError
+from solver.errors import Fault, InputError, Location
 
-__all__ = ["write_atomic"]
+__all__ = ["write_all_atomic", "write_atomic"]
 
 
 def write_atomic(path: str | Path, content: str | bytes) -> Path:
     """Write ``content`` to ``path`` atomically; :class:`InputError` if the folder is unusable."""
-    target = Path(path)
-    data = content.encode("utf-8") if isinstance(content, str) else content
+    return write_all_atomic({path: content})[0]
+
+
+def write_all_atomic(files: Mapping[str | Path, str | bytes]) -> list[Path]:
+    """Write every file of ``files`` or none; the paths written, in the mapping's order.
+
+    Every target is checked first (a folder in the way is reported for all of them at once),
+    then every content goes to a temporary file beside its target, and only then are they
+    renamed into place. A rename that still fails puts back the files renamed before it.
+    """
+    targets = [(Path(path), content.encode("utf-8") if isinstance(content, str) else content)
+               for path, content in files.items()]
+    faults = [Fault(Location(str(target)), "is a folder; cannot write a file there", "invalid")
+              for target, _ in targets if target.is_dir()]
+    if faults:
+        raise InputError(faults)
+    temporaries: list[tuple[Path, Path]] = []
+    try:
+        for target, data in targets:
+            temporaries.append((_temporary(target, data), target))
+        _replace_all(temporaries)
+    finally:
+        for temporary, _ in temporaries:
+            with contextlib.suppress(OSError):
+                temporary.unlink()  # gone already when renamed into place
+    return [target for target, _ in targets]
+
+
+def _temporary(target: Path, data: bytes) -> Path:
+    """``data`` in a new temporary file in ``target``'s folder (created if needed)."""
     folder = target.parent if str(target.parent) else Path(".")
     try:
         folder.mkdir(parents=True, exist_ok=True)
-        handle, temporary = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp",
-                                             dir=folder)
+        handle, name = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=folder)
     except OSError as error:
         raise InputError.at(str(target), f"cannot write here: {error.strerror or error}") \
             from None
+    temporary = Path(name)
     try:
         with os.fdopen(handle, "wb") as stream:
             stream.write(data)
@@ -38,12 +70,60 @@ def write_atomic(path: str | Path, content: str | bytes) -> Path:
         # mkstemp makes the file private (0600); give it the mode a plain write would have.
         mode = target.stat().st_mode & 0o777 if target.exists() else 0o644
         os.chmod(temporary, mode)
-        os.replace(temporary, target)
     except BaseException as error:
         with contextlib.suppress(OSError):
-            os.unlink(temporary)
+            temporary.unlink()
         if isinstance(error, OSError):
             raise InputError.at(str(target), f"cannot write: {error.strerror or error}") \
                 from None
         raise
-    return target
+    return temporary
+
+
+def _replace_all(temporaries: list[tuple[Path, Path]]) -> None:
+    """Rename each temporary onto its target; on a failure, undo the renames before it."""
+    done: list[tuple[Path, Path | None]] = []  # (target, a copy of its old content)
+    try:
+        for index, (temporary, target) in enumerate(temporaries):
+            # Only a later failure needs the old content back; the last rename either
+            # happens or not.
+            backup = _backup(target) if index < len(temporaries) - 1 else None
+            try:
+                os.replace(temporary, target)
+            except BaseException:
+                _discard(backup)
+                raise
+            done.append((target, backup))
+    except BaseException as error:
+        for target, backup in reversed(done):
+            with contextlib.suppress(OSError):
+                if backup is not None:
+                    os.replace(backup, target)
+                else:
+                    target.unlink()
+        if isinstance(error, OSError):
+            raise InputError.at(str(temporaries[len(done)][1]),
+                                f"cannot write: {error.strerror or error}") from None
+        raise
+    finally:
+        for _, backup in done:
+            _discard(backup)  # gone already when put back
+
+
+def _backup(target: Path) -> Path | None:
+    """A hard link to (or else a copy of) ``target``'s content; ``None`` if it is no file."""
+    if not target.is_file():
+        return None
+    backup = target.with_name(f".{target.name}.{os.getpid()}.old")
+    _discard(backup)
+    try:
+        os.link(target, backup)
+    except OSError:  # a file system without hard links
+        shutil.copy2(target, backup)
+    return backup
+
+
+def _discard(path: Path | None) -> None:
+    if path is not None:
+        with contextlib.suppress(OSError):
+            path.unlink()

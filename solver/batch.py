@@ -2,17 +2,22 @@
 
 ``teleop-ui batch`` is built from four steps, each a function here:
 
-1. :func:`find_teams` turns file names, folders (searched recursively for ``*.yaml`` and
-   ``*.yml``) and glob patterns (``**`` included) into a list of team files.
-2. :func:`plan` gives each file its outputs under the output folder, mirroring the files'
-   folders below their deepest common folder (``teams/a/x.yaml`` -> ``OUT/a/x.json``), and
-   decides which are already up to date.
+1. :func:`find_teams` turns file names, shipped team names (``case3``), folders (searched
+   recursively for ``*.yaml`` and ``*.yml``) and glob patterns (``**`` included) into a list
+   of team files.
+2. :func:`plan` gives each file its outputs in the ``teams/`` folder of the output folder,
+   mirroring the files' folders below their deepest common folder (``teams/a/x.yaml`` ->
+   ``OUT/teams/a/x.json``), and decides which are already up to date.
 3. :func:`run_batch` solves the rest, in worker processes when asked, and yields one
    :class:`Outcome` per team as it finishes. A bad team file is an outcome with its located
    error, never an exception that stops the others. A file with ``characteristics:`` and no
    ``team:`` (a rule set: a folder such as ``rules/`` holds both kinds) is *skipped*.
 4. :func:`write_summary` writes ``summary.csv`` and ``summary.md``: one row per team in input
    order, naming each team's rule set.
+
+**Layout.** The top of the output folder holds only the summaries and ``.stamps/``; every
+per-team output is below ``teams/``. So no team's name can collide with them: a team file
+called ``summary.yaml`` gets ``OUT/teams/summary.md``, never the batch's ``OUT/summary.md``.
 
 Every file is written atomically (:func:`solver.atomic.write_atomic`): an interrupted batch
 leaves finished teams complete and no half-written file.
@@ -45,13 +50,14 @@ from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Literal
 
+from solver import markdown
 from solver.atomic import write_atomic
 from solver.errors import Fault, InputError, Location, SolverError
-from solver.formats import dumps, markdown_table, solution_data
+from solver.formats import dumps, solution_data
 from solver.report import image_names, write_report
-from solver.rules import default_rules_path
+from solver.rules import default_rules_path, shipped_name
 from solver.solve import solve
-from solver.team import parse_team
+from solver.team import parse_team, resolve_team_path
 from solver.yamlio import load_document
 
 if TYPE_CHECKING:
@@ -78,6 +84,7 @@ _PATTERN_CHARACTERS = set("*?[")
 _TEAM_SUFFIXES = (".yaml", ".yml")
 _REPORT_SUFFIX: dict[ReportFormat, str] = {"html": ".html", "markdown": ".md"}
 STAMPS = ".stamps"
+TEAM_OUTPUTS = "teams"
 SUMMARY_FILES = ("summary.csv", "summary.md")
 
 
@@ -149,13 +156,23 @@ def find_teams(patterns: Sequence[str]) -> list[tuple[Path, str]]:
     """The team files named by ``patterns``: ``(path, shown)`` pairs in a stable order.
 
     A folder gives every ``*.yaml``/``*.yml`` below it, a glob pattern its matching files,
-    each sorted by name; the patterns keep their order and a file named twice counts once. A
-    pattern that names nothing is an :class:`InputError` (all such patterns are reported).
+    each sorted by name; a name that is no file but a shipped team's (``case3``) gives that
+    team, shown as ``rules/teams/case3.yaml``. The patterns keep their order and a file named
+    twice counts once. A pattern that names nothing, or an empty one, is an
+    :class:`InputError` (all such patterns are reported).
     """
     found: list[tuple[Path, str]] = []
     seen: set[Path] = set()
     faults = []
     for pattern in patterns:
+        shown_as: str | None = None
+        if not pattern.strip():
+            # Path("") is the current folder: an empty pattern (an unset shell variable)
+            # would quietly batch everything below it.
+            faults.append(Fault(Location("<arguments>"), f"empty pattern {pattern!r}: name "
+                                "team files, folders or globs ('.' for the current folder)",
+                                "no-match"))
+            continue
         if _PATTERN_CHARACTERS & set(pattern):
             matches = sorted(m for m in glob.glob(pattern, recursive=True)
                              if Path(m).is_file())
@@ -164,6 +181,9 @@ def find_teams(patterns: Sequence[str]) -> list[tuple[Path, str]]:
                              if p.suffix.lower() in _TEAM_SUFFIXES and p.is_file())
         elif Path(pattern).is_file():
             matches = [pattern]
+        elif resolve_team_path(pattern).is_file():
+            shipped = resolve_team_path(pattern)
+            matches, shown_as = [str(shipped)], shipped_name(shipped) or str(shipped)
         else:
             faults.append(Fault(Location(pattern), "no such file or folder", "no-match"))
             continue
@@ -175,7 +195,7 @@ def find_teams(patterns: Sequence[str]) -> list[tuple[Path, str]]:
             resolved = Path(match).resolve()
             if resolved not in seen:
                 seen.add(resolved)
-                found.append((Path(match), match))
+                found.append((Path(match), shown_as or match))
     if faults:
         raise InputError(faults)
     return found
@@ -202,12 +222,13 @@ def plan(teams: Sequence[tuple[Path, str]], out: str | Path, *, rules: str | Non
          report: ReportFormat | None = None, force: bool = False) -> list[Job]:
     """One :class:`Job` per team file, in order, with ``up_to_date`` decided (see module)."""
     folder = Path(out)
+    outputs = folder / TEAM_OUTPUTS  # apart from the summaries: see "Layout" above
     jobs = []
     for (path, shown), name in zip(teams, _relative_names([p for p, _ in teams]),
                                    strict=True):
-        output = folder / f"{name}.json"
+        output = outputs / f"{name}.json"
         job = Job(path, shown, folder, output, folder / STAMPS / f"{name}.json",
-                  None if report is None else folder / f"{name}{_REPORT_SUFFIX[report]}",
+                  None if report is None else outputs / f"{name}{_REPORT_SUFFIX[report]}",
                   rules)
         jobs.append(replace(job, up_to_date=not force and _is_up_to_date(job)))
     return jobs
@@ -395,7 +416,10 @@ def summary_csv(rows: Sequence[SummaryRow]) -> str:
 
 
 def summary_markdown(rows: Sequence[SummaryRow]) -> str:
-    """The summary as a Markdown page: counts, then one table row per team."""
+    """The summary as a Markdown page: counts, then one table row per team.
+
+    Names and messages are escaped (:mod:`solver.markdown`): they come from the team files.
+    """
     counts = {status: sum(1 for r in rows if r.status == status)
               for status in ("ok", "failed", "skipped")}
     headers = ["file", "status", "team", "rules", "valid robots", "UI configurations",
@@ -405,7 +429,7 @@ def summary_markdown(rows: Sequence[SummaryRow]) -> str:
              for r in rows]
     return (f"# Batch summary\n\n{len(rows)} team files: {counts['ok']} ok, "
             f"{counts['failed']} failed, {counts['skipped']} skipped\n\n"
-            + markdown_table(headers, table, [False, False, False, False, True, True, False,
+            + markdown.table(headers, table, [False, False, False, False, True, True, False,
                                               False, False, False]))
 
 

@@ -16,6 +16,7 @@ import json
 from collections.abc import Sequence
 from typing import Any
 
+from solver import markdown
 from solver.assign import Assignment
 from solver.partition import Configuration
 from solver.reproduce import Comparison, published_note
@@ -167,16 +168,6 @@ def text_table(headers: Sequence[str], rows: Sequence[Sequence[Any]],
     return "\n".join(lines) + "\n"
 
 
-def markdown_table(headers: Sequence[str], rows: Sequence[Sequence[Any]],
-                   right: Sequence[bool] | None = None) -> str:
-    align = right or [False] * len(headers)
-    lines = ["| " + " | ".join(headers) + " |",
-             "|" + "|".join("---:" if a else "---" for a in align) + "|"]
-    lines += ["| " + " | ".join("" if v is None else str(v).replace("|", "\\|") for v in row)
-              + " |" for row in rows]
-    return "\n".join(lines) + "\n"
-
-
 def _csv(headers: Sequence[str], rows: Sequence[Sequence[Any]]) -> str:
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
@@ -250,13 +241,12 @@ def render_solution(solution: Solution, fmt: str = "text", *, configurations: bo
                      "reduction_ratio"], _summary_rows(solution))
     numbers = [False, True, True, True]
     if fmt == "markdown":
-        parts = [f"## {solution.team.name}\n", "", markdown_table(_SUMMARY_HEADERS,
-                                                                  _summary_rows(solution),
-                                                                  numbers), "",
-                 *(f"{line}  " for line in _footer(solution))]
+        summary = markdown.table(_SUMMARY_HEADERS, _summary_rows(solution), numbers)
+        parts = [markdown.heading(2, solution.team.name) + "\n", "", summary, "",
+                 *(f"{markdown.escape(line)}  " for line in _footer(solution))]
         if configurations:
             headers, rows = _configuration_rows(solution)
-            parts += ["", markdown_table(headers, rows,
+            parts += ["", markdown.table(headers, rows,
                                          [True] + [False] * (len(headers) - 2) + [True])]
         return "\n".join(parts).rstrip("\n") + "\n"
     rules = solution.rules
@@ -285,7 +275,8 @@ def render_counts(solution: Solution, fmt: str = "text") -> str:
     rows.append(["total", totals.valid_robots, totals.ui_configurations, ""])
     align = [False, True, True, False]
     if fmt == "markdown":
-        return f"## {solution.team.name}\n\n" + markdown_table(headers, rows, align)
+        return (markdown.heading(2, solution.team.name) + "\n\n"
+                + markdown.table(headers, rows, align))
     return (f"{solution.team.name}  (rules: {solution.rules.name}, {solution.rules.file})\n\n"
             + text_table(headers, rows, align))
 
@@ -361,4 +352,4 @@ def render_comparisons(comparisons: Sequence[Comparison], fmt: str = "markdown")
         return text_table(headers, rows)
     if fmt == "csv":
         return _csv(headers, rows)
-    return markdown_table(headers, rows)
+    return markdown.table(headers, rows)

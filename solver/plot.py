@@ -22,6 +22,7 @@ Not here: the pages that embed the plots (:mod:`solver.report`), solving (:mod:`
 
 from __future__ import annotations
 
+import bisect
 import io
 import math
 import textwrap
@@ -67,6 +68,10 @@ MAX_SPOKE_VALUES = 12
 INNER_RADIUS = 0.22
 # Integer tick labels closer than this (in radius) to one already placed are left out.
 MIN_TICK_GAP = 0.075
+# Tick marks closer than this (in radius, about 4 pixels in a PNG) would merge into a solid bar:
+# a spoke whose values sit closer gets marks at its labelled values only, so a domain of
+# 100,000 counts costs no more to draw than one of 10.
+MIN_TICK_MARK_GAP = 0.01
 # Stroke widths (points) of the first and the last type's runs along a spoke.
 STROKE_WIDEST = 12.0
 STROKE_NARROWEST = 5.0
@@ -177,23 +182,62 @@ def radar_axes(team: Team) -> tuple[RadarAxis, ...]:
 
 
 def _tick_values(axis: RadarAxis, team: Team, position: int) -> list[Value]:
-    """The values labelled on a spoke: all of them, or for integers the telling ones."""
+    """The values labelled on a spoke: all of them, or for integers the telling ones.
+
+    Integers are taken greedily in priority order (the ends, each type's largest count, where
+    arrangements end, then every value in ascending order), each kept when it is at least
+    :data:`MIN_TICK_GAP` from every label kept before it.
+    """
     characteristic = axis.characteristic
     if characteristic.kind != "integer":
         return list(axis.shown)
-    # Priority order: the ends, each type's largest count, where arrangements end, the rest.
-    wanted: list[int] = [axis.low, axis.high]
-    wanted += [max(int(v) for v in s.domains[position]) for s in team.selections]
-    wanted += [c.high for c in characteristic.components if c.high is not None]
-    wanted += [int(v) for v in axis.shown]
-    placed: list[int] = []
-    for value in wanted:
-        if not axis.low <= value <= axis.high or value in placed:
-            continue
-        if all(abs(axis.radius(value) - axis.radius(other)) >= MIN_TICK_GAP
-               for other in placed):
-            placed.append(value)
-    return sorted(placed)
+    labels = _Labels(axis)
+    for value in (axis.low, axis.high,
+                  *(max(int(v) for v in s.domains[position]) for s in team.selections),
+                  *(c.high for c in characteristic.components if c.high is not None)):
+        labels.offer(value)
+    # The rest: a value too close to a label is skipped together with every value up to the
+    # end of that label's gap, so the cost follows the number of labels, not of values.
+    rest = [int(v) for v in axis.shown]
+    index = 0
+    while index < len(rest):
+        blocker = labels.offer(rest[index])
+        index = index + 1 if blocker is None else bisect.bisect_left(
+            rest, blocker + MIN_TICK_GAP, lo=index + 1, key=axis.radius)
+    return sorted(labels.values)
+
+
+class _Labels:
+    """The integer labels of a spoke kept so far, with their radii in order (for bisection)."""
+
+    def __init__(self, axis: RadarAxis) -> None:
+        self.axis = axis
+        self.values: list[int] = []
+        self.radii: list[float] = []
+
+    def offer(self, value: int) -> float | None:
+        """Keep ``value`` if it fits; else the radius of the label it is too close to.
+
+        Only the nearest labels on either side can be too close, so two are looked at.
+        """
+        if not self.axis.low <= value <= self.axis.high or value in self.values:
+            return None
+        radius = self.axis.radius(value)
+        at = bisect.bisect_left(self.radii, radius)
+        close = [r for r in self.radii[max(at - 1, 0):at + 1] if abs(radius - r) < MIN_TICK_GAP]
+        if close:
+            return max(close)
+        self.values.append(value)
+        self.radii.insert(at, radius)
+        return None
+
+
+def _tick_marks(axis: RadarAxis, labelled: Sequence[Value]) -> Sequence[Value]:
+    """The values that get a tick mark: every shown one, unless they are too close together."""
+    shown = len(axis.shown)
+    if shown < 2 or (1 - INNER_RADIUS) / (shown - 1) >= MIN_TICK_MARK_GAP:
+        return axis.shown
+    return labelled
 
 
 def _label(value: Value) -> str:
@@ -201,15 +245,20 @@ def _label(value: Value) -> str:
 
 
 def _draw_spoke(ax: Axes, axis: RadarAxis, team: Team, position: int) -> None:
+    from matplotlib.collections import LineCollection
+
     cos, sin = math.cos(axis.angle), math.sin(axis.angle)
     ax.plot([0, cos], [0, sin], color="#888888", linewidth=0.8, zorder=1,
             label=f"_spoke {axis.characteristic.name}")
-    # Tick marks: short strokes across the spoke at every shown value.
-    for value in axis.shown:
-        (x0, y0), (x1, y1) = axis.point(value, -0.012), axis.point(value, 0.012)
-        ax.plot([x0, x1], [y0, y1], color="#888888", linewidth=0.7, zorder=1)
+    labelled = _tick_values(axis, team, position)
+    # Tick marks: short strokes across the spoke, one collection (one artist) per spoke.
+    ax.add_collection(LineCollection(
+        [(axis.point(value, -0.012), axis.point(value, 0.012))
+         for value in _tick_marks(axis, labelled)],
+        colors="#888888", linewidths=0.7, capstyle="projecting", zorder=1,
+        label=f"_ticks {axis.characteristic.name}"), autolim=False)
     box = {"boxstyle": "square,pad=0.1", "facecolor": "white", "alpha": 0.8, "linewidth": 0}
-    for value in _tick_values(axis, team, position):
+    for value in labelled:
         if abs(sin) >= STEEP:
             outward = 1 if cos >= 0 else -1
             x, y = axis.point(value)
@@ -237,8 +286,12 @@ def _draw_spoke(ax: Axes, axis: RadarAxis, team: Team, position: int) -> None:
 def _spans(axes: Sequence[RadarAxis], domains: Sequence[Sequence[Value]]
            ) -> list[list[tuple[Value, Value]]]:
     """Per spoke, the runs of a type's selected values that the spoke shows."""
-    return [runs(axis.characteristic, [v for v in domain if v in axis.shown])
-            for axis, domain in zip(axes, domains, strict=True)]
+    found = []
+    for axis, domain in zip(axes, domains, strict=True):
+        # A set, not the tuple: a spoke may show 100,000 counts.
+        shown = set(axis.shown)
+        found.append(runs(axis.characteristic, [v for v in domain if v in shown]))
+    return found
 
 
 def _region_vertices(axes: Sequence[RadarAxis], spans: Sequence[Sequence[tuple[Value, Value]]],

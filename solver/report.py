@@ -26,10 +26,11 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any, Literal
 
-from solver.atomic import write_atomic
+from solver import markdown
+from solver.atomic import write_all_atomic, write_atomic
 from solver.constraints import Value
 from solver.errors import InputError
-from solver.formats import configuration_data, markdown_table
+from solver.formats import configuration_data
 from solver.plot import PlotKind, bars_figure, figure_bytes, radar_figure, runs
 from solver.reproduce import published_note
 from solver.rules import Characteristic
@@ -258,28 +259,34 @@ def render_html(solution: Solution, charts: Mapping[PlotKind, bytes] | None = No
 # ---- Markdown ----------------------------------------------------------------------------
 
 def render_markdown(solution: Solution, images: Mapping[PlotKind, str] | None = None) -> str:
-    """The report as Markdown; ``images`` maps ``radar``/``bars`` to the links to use."""
+    """The report as Markdown; ``images`` maps ``radar``/``bars`` to the files to link.
+
+    Every name from the rule and team files is escaped (:mod:`solver.markdown`), as the HTML
+    report escapes it: a team called ``<script>`` shows as that text.
+    """
     team = solution.team
-    parts = [f"# {team.name}", "", f"_{_subtitle(solution)}_", ""]
+    parts = [markdown.heading(1, team.name), "", f"_{markdown.escape(_subtitle(solution))}_",
+             ""]
     if team.description:
-        parts += [team.description, ""]
+        parts += [markdown.paragraph(team.description), ""]
     parts += ["## Valid robots and UI configurations", "",
-              markdown_table(_SUMMARY_HEADERS, _summary_rows(solution),
+              markdown.table(_SUMMARY_HEADERS, _summary_rows(solution),
                              [False, True, True, True]).rstrip("\n"), ""]
-    parts += [f"- {fact}" for fact in _facts(solution)]
+    parts += [f"- {markdown.escape(fact)}" for fact in _facts(solution)]
     note = reproduction_note(solution)
     if note is not None:
-        parts += ["", f"> **{note[0]}**"]
+        parts += ["", f"> **{markdown.escape(note[0])}**"]
     if images:
         parts += ["", "## Charts", ""]
         for kind in _KINDS:
             if kind in images:
-                parts += [f"![{_ALT[kind]}]({images[kind]})", ""]
+                parts += [f"![{markdown.escape(_ALT[kind])}]"
+                          f"({markdown.link_target(images[kind])})", ""]
     headers, rows = _selection_table(solution)
-    parts += ["", "## Team selections", "", markdown_table(headers, rows).rstrip("\n")]
+    parts += ["", "## Team selections", "", markdown.table(headers, rows).rstrip("\n")]
     headers, rows = _configuration_table(solution)
     parts += ["", f"## UI configurations ({len(solution.configurations)} and the default)", "",
-              markdown_table(headers, rows,
+              markdown.table(headers, rows,
                              [True, *[False] * (len(headers) - 2), True]).rstrip("\n")]
     text = "\n".join(parts) + "\n"
     while "\n\n\n" in text:
@@ -298,14 +305,16 @@ def write_report(solution: Solution, path: str | Path) -> list[Path]:
     """Write the report to ``path`` (format by extension); returns every file written.
 
     HTML is one file. Markdown also writes its two PNG charts beside it (see
-    :func:`image_names`), charts first, so the page never links a missing image.
+    :func:`image_names`); the three are written together or not at all
+    (:func:`solver.atomic.write_all_atomic`), so no page links a missing image and a failed
+    report leaves no charts behind.
     """
     fmt = report_format(path)
     if fmt == "html":
         return [write_atomic(path, render_html(solution))]
     names = image_names(path)
     charts = _charts(solution, "png")
-    written = [write_atomic(names[kind], charts[kind]) for kind in _KINDS]
     links = {kind: names[kind].name for kind in _KINDS}
-    written.append(write_atomic(path, render_markdown(solution, links)))
-    return written
+    files: dict[str | Path, str | bytes] = {names[kind]: charts[kind] for kind in _KINDS}
+    files[path] = render_markdown(solution, links)
+    return write_all_atomic(files)

@@ -669,7 +669,7 @@ def _read_bounds(reader: Reader, path: YPath, characteristic: Characteristic,
         if bound is not None and not first <= bound <= last:
             reader.fault((*path, key), f"{characteristic.name} {key} {bound} is outside the "
                                        f"rule set's range {first}..{last}", code="out-of-range")
-    kept = {v for v in allowed if isinstance(v, int)
+    kept: set[Value] = {v for v in allowed if isinstance(v, int)
             and (low is None or v >= low) and (high is None or v <= high)}
     return kept, f"in {'' if low is None else low}..{'' if high is None else high}"
 

@@ -29,8 +29,9 @@ from typing import Any
 
 import sympy
 
+from solver import markdown
 from solver.errors import InputError
-from solver.formats import dumps, markdown_table, text_table
+from solver.formats import dumps, text_table
 from solver.rules import Characteristic, RuleSet
 from solver.solve import Solution
 from solver.structure import count
@@ -281,5 +282,5 @@ def render_growth(growth: Growth, solution: Solution, fmt: str = "text") -> str:
     check = (f"at the team's maxima ({shown}): {robots_at} valid robots, {configurations_at} "
              f"UI configurations ({verdict})")
     if fmt == "markdown":
-        return "\n".join([*lines, "", markdown_table(headers, rows), check]) + "\n"
+        return "\n".join([*lines, "", markdown.table(headers, rows), check]) + "\n"
     return "\n".join([*lines, "", text_table(headers, rows).rstrip("\n"), "", check]) + "\n"

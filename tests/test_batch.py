@@ -94,7 +94,8 @@ def test_batch_writes_each_teams_json_as_solve_format_json_list_does(
         shown = f"teams/{name}.yaml"
         expected = dumps(solution_data(solve(load_team(Path(shown), display=shown)),
                                        configurations=True))
-        assert (tmp_path / "out" / f"{name}.json").read_text(encoding="utf-8") == expected
+        assert (tmp_path / "out" / "teams" / f"{name}.json").read_text(encoding="utf-8") == \
+            expected
 
 
 def test_batch_reports_a_bad_team_file_with_its_error_and_solves_the_others(
@@ -112,7 +113,7 @@ def test_batch_reports_a_bad_team_file_with_its_error_and_solves_the_others(
     assert rows["teams/ours/bad.yaml"]["message"].startswith("teams/ours/bad.yaml:3:22: ")
     assert rows["teams/ours/own.yaml"]["message"] == \
         "not a team file: it has 'characteristics:' and no 'team:' (a rule set?)"
-    assert not (tmp_path / "out" / "ours" / "bad.json").exists()
+    assert not (tmp_path / "out" / "teams" / "ours" / "bad.json").exists()
 
 
 def test_batch_exits_0_when_every_team_is_solved(tmp_path: Path) -> None:
@@ -147,7 +148,7 @@ def test_batch_summary_is_the_same_with_one_worker_or_several(teams: Path,
                                                               tmp_path: Path) -> None:
     _batch("teams", "-o", "one", "--jobs", "1", cwd=tmp_path)
     _batch("teams", "-o", "two", "--jobs", "3", cwd=tmp_path)
-    for name in ("summary.csv", "summary.md", "case3.json", "ours/harbour.json"):
+    for name in ("summary.csv", "summary.md", "teams/case3.json", "teams/ours/harbour.json"):
         assert (tmp_path / "one" / name).read_bytes() == (tmp_path / "two" / name).read_bytes()
 
 
@@ -187,9 +188,11 @@ def test_batch_can_write_a_report_per_team(teams: Path, tmp_path: Path) -> None:
                           cwd=tmp_path)
     assert status == 0
     assert sorted(p.name for p in (tmp_path / "out").iterdir() if p.is_file()) == [
-        "case1-bars.png", "case1-radar.png", "case1.json", "case1.md", "summary.csv",
-        "summary.md"]
-    assert _summary(tmp_path / "out")["teams/case1.yaml"]["output"] == "case1.json case1.md"
+        "summary.csv", "summary.md"]
+    assert sorted(p.name for p in (tmp_path / "out" / "teams").iterdir()) == [
+        "case1-bars.png", "case1-radar.png", "case1.json", "case1.md"]
+    assert _summary(tmp_path / "out")["teams/case1.yaml"]["output"] == \
+        "teams/case1.json teams/case1.md"
 
 
 # ---- up to date, --force, atomic -------------------------------------------------------------
@@ -248,11 +251,11 @@ def test_force_solves_every_team_again(teams: Path, tmp_path: Path) -> None:
 
 def test_a_team_that_breaks_leaves_no_stale_outputs(teams: Path, tmp_path: Path) -> None:
     _batch("teams", "-o", "out", cwd=tmp_path)
-    assert (tmp_path / "out" / "case2.json").is_file()
+    assert (tmp_path / "out" / "teams" / "case2.json").is_file()
     (teams / "case2.yaml").write_text(BAD, encoding="utf-8")
     _, _, stderr = _batch("teams", "-o", "out", cwd=tmp_path)
     assert "FAILED     teams/case2.yaml" in stderr
-    assert not (tmp_path / "out" / "case2.json").exists()
+    assert not (tmp_path / "out" / "teams" / "case2.json").exists()
     assert not (tmp_path / "out" / STAMPS / "case2.json").exists()
 
 
@@ -263,7 +266,7 @@ def test_batch_leaves_no_temporary_files(teams: Path, tmp_path: Path) -> None:
 
 def test_plan_mirrors_the_folders_below_the_common_one(teams: Path, tmp_path: Path) -> None:
     jobs = plan(find_teams([str(teams)]), tmp_path / "out")
-    assert [j.output.relative_to(tmp_path / "out").as_posix() for j in jobs] == [
+    assert [j.output.relative_to(tmp_path / "out" / "teams").as_posix() for j in jobs] == [
         "case1.json", "case2.json", "case3.json", "ours/bad.json", "ours/broken.json",
         "ours/harbour.json", "ours/own.json"]
 
@@ -309,3 +312,46 @@ def test_batch_refuses_a_job_count_that_is_not_a_positive_number(jobs: str,
     status, _, stderr = _batch(str(TEAMS), "-o", "out", "--jobs", jobs, cwd=tmp_path)
     assert status == 2
     assert "--jobs" in stderr
+
+
+def test_batch_keeps_a_team_called_summary_apart_from_the_batch_summary(
+        teams: Path, tmp_path: Path) -> None:
+    shutil.copy(teams / "case1.yaml", teams / "summary.yaml")
+    status, _, stderr = _batch("teams/summary.yaml", "-o", "out", "--report", "markdown",
+                               cwd=tmp_path)
+    assert status == 0, stderr
+    assert (tmp_path / "out" / "summary.md").read_text(encoding="utf-8").startswith(
+        "# Batch summary\n")
+    assert (tmp_path / "out" / "teams" / "summary.md").read_text(encoding="utf-8").startswith(
+        "# Case 1\n")
+    assert (tmp_path / "out" / "teams" / "summary.json").is_file()
+
+
+def test_batch_accepts_shipped_team_names_as_other_commands_do(tmp_path: Path) -> None:
+    status, _, stderr = _batch("case1", "case3", "-o", "out", "--jobs", "1", cwd=tmp_path)
+    assert status == 0, stderr
+    assert "[1/2] solved     rules/teams/case1.yaml: 30 valid robots" in stderr
+    assert sorted(_summary(tmp_path / "out")) == ["rules/teams/case1.yaml",
+                                                  "rules/teams/case3.yaml"]
+    assert (tmp_path / "out" / "teams" / "case3.json").is_file()
+
+
+def test_batch_summary_markdown_escapes_names_from_the_team_files(teams: Path,
+                                                                   tmp_path: Path) -> None:
+    (teams / "html.yaml").write_text("name: '<img src=x onerror=alert(1)> | *x*'\n"
+                                     "rules: ../paper.yaml\nteam:\n  UAV: {}\n",
+                                     encoding="utf-8")
+    status, _, stderr = _batch("teams/html.yaml", "-o", "out", cwd=tmp_path)
+    assert status == 0, stderr
+    markdown = (tmp_path / "out" / "summary.md").read_text(encoding="utf-8")
+    assert "<img" not in markdown
+    assert "| &lt;img src=x onerror=alert(1)&gt; \\| \\*x\\* |" in markdown
+
+
+@pytest.mark.parametrize("pattern", ["", "  "])
+def test_batch_refuses_an_empty_pattern_instead_of_batching_the_current_folder(
+        pattern: str, teams: Path, tmp_path: Path) -> None:
+    status, _, stderr = _batch(pattern, "-o", "out", cwd=tmp_path)
+    assert status == 2
+    assert f"<arguments>: empty pattern {pattern!r}: name team files, folders or globs" in stderr
+    assert not (tmp_path / "out").exists()

@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
+from matplotlib.collections import LineCollection
 from matplotlib.colors import to_rgba
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
@@ -22,6 +23,7 @@ from solver.errors import InputError
 from solver.plot import (
     INNER_RADIUS,
     MAX_SPOKE_VALUES,
+    MIN_TICK_GAP,
     RadarAxis,
     bars_figure,
     figure_bytes,
@@ -164,6 +166,58 @@ def test_radar_shows_only_selected_values_on_a_spoke_with_too_many_to_label(
     assert [t.get_text() for t in _texts(figure, "tick sensor")] == \
         ["Sensor 03", "Sensor 04", "Sensor 11"]
     assert "(selected values)" in _texts(figure, "axis sensor")[0].get_text()
+
+
+def _wide(write_file: Callable[[str, str], Path], high: int) -> Solution:
+    """Two types on a count spoke of 1..``high`` with three arrangements."""
+    write_file("wide.yaml", "characteristics:\n  kind:\n    values: [Rover, Drone]\n"
+                            f"  count:\n    label: Count\n    range: [1, {high}]\n"
+                            "    components:\n      - {name: few, max: 7}\n"
+                            f"      - {{name: some, min: 8, max: {high // 3}}}\n"
+                            f"      - {{name: many, min: {high // 3 + 1}}}\n")
+    team = write_file("t.yaml", f"rules: wide.yaml\nteam:\n  Rover: {{count: {high}}}\n"
+                                f"  Drone: {{count: [1, 2, 3, {high // 2}]}}\n")
+    return solve(load_team(team))
+
+
+def _greedy_labels(axis: RadarAxis, wanted: list[int]) -> list[str]:
+    """The labelling rule as the README states it, value by value."""
+    placed: list[int] = []
+    for value in wanted:
+        if axis.low <= value <= axis.high and value not in placed and all(
+                abs(axis.radius(value) - axis.radius(other)) >= MIN_TICK_GAP
+                for other in placed):
+            placed.append(value)
+    return [str(v) for v in sorted(placed)]
+
+
+@pytest.mark.parametrize("high", [30, 100_000])
+def test_radar_labels_a_count_spoke_by_the_greedy_rule_at_any_size(
+        high: int, write_file: Callable[[str, str], Path]) -> None:
+    solution = _wide(write_file, high)
+    count = _axis(solution, "count")
+    wanted = [1, high, high, high // 2, 7, high // 3, high, *range(1, high + 1)]
+    labels = [t.get_text() for t in _texts(radar_figure(solution), "tick count")]
+    assert labels == _greedy_labels(count, wanted)
+
+
+def test_radar_of_100000_counts_draws_as_many_artists_as_one_of_30(
+        write_file: Callable[[str, str], Path]) -> None:
+    # A tick mark per value would be 100,000 strokes merging into a bar: past a few pixels
+    # apart, only the labelled values get a mark.
+    drawn = []
+    for high in (30, 100_000):
+        figure = radar_figure(_wide(write_file, high))
+        ax = figure.axes[0]
+        ticks = next(c for c in ax.collections if c.get_label() == "_ticks count")
+        assert isinstance(ticks, LineCollection)
+        labels = _texts(figure, "tick count")
+        drawn.append((len(ax.lines), len(ax.collections), len(ax.texts)))
+        if high == 30:
+            assert len(ticks.get_segments()) == 30  # every value, as before
+        else:
+            assert len(ticks.get_segments()) == len(labels)
+    assert drawn[0] == drawn[1]
 
 
 # ---- regions --------------------------------------------------------------------------------

@@ -2,13 +2,19 @@
 
 from __future__ import annotations
 
+import errno
+import os
 from collections.abc import Callable
 from html.parser import HTMLParser
 from pathlib import Path
+from typing import Any
 
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+from markdown_it import MarkdownIt
 
-from solver import Solution, load_team, solve
+from solver import Solution, load_team, markdown, solve
 from solver.errors import InputError
 from solver.report import (
     image_names,
@@ -201,3 +207,125 @@ def test_report_command_with_an_unknown_extension_exits_2_and_writes_nothing(
     assert "cannot tell the report format from '.txt'" in result.stderr
     assert "Traceback" not in result.stderr
     assert list(tmp_path.iterdir()) == []
+
+
+# ---- Markdown shows names as written ----------------------------------------------------------
+
+_PRINTABLE = st.text(alphabet=st.characters(min_codepoint=32, max_codepoint=126))
+
+
+def _viewer(text: str) -> str:
+    """Markdown rendered as a viewer would: CommonMark, tables, raw HTML passed through."""
+    rendered: str = MarkdownIt("commonmark", {"html": True}).enable(["table", "strikethrough"]) \
+        .render(text)
+    return rendered
+
+
+class _Cells(HTMLParser):
+    def __init__(self) -> None:
+        super().__init__()
+        self.tags: list[str] = []
+        self.cells: list[str] = []
+        self._cell: list[str] | None = None
+
+    def handle_starttag(self, tag: str,
+                        attrs: list[tuple[str, str | None]]) -> None:  # noqa: ARG002 (HTMLParser's signature)
+        self.tags.append(tag)
+        if tag in ("th", "td"):
+            self._cell = []
+
+    def handle_endtag(self, tag: str) -> None:
+        if tag in ("th", "td") and self._cell is not None:
+            self.cells.append("".join(self._cell))
+            self._cell = None
+
+    def handle_data(self, data: str) -> None:
+        if self._cell is not None:
+            self._cell.append(data)
+
+
+@given(_PRINTABLE)
+def test_a_markdown_table_cell_shows_any_text_as_written(text: str) -> None:
+    cells = _Cells()
+    cells.feed(_viewer(markdown.table(["name"], [[text]])))
+    cells.close()
+    assert set(cells.tags) <= {"table", "thead", "tbody", "tr", "th", "td"}
+    assert cells.cells == ["name", text.strip()]
+
+
+@given(st.lists(_PRINTABLE.filter(str.strip), min_size=1, max_size=3))
+def test_a_markdown_paragraph_shows_any_lines_as_written(lines: list[str]) -> None:
+    page = _page(_viewer(markdown.paragraph("\n".join(lines))))
+    assert set(page.tags) == {"p"}
+    assert "".join(page.text).strip() == "\n".join(line.strip() for line in lines)
+
+
+@given(_PRINTABLE.filter(str.strip))
+def test_a_markdown_heading_shows_any_name_as_written(name: str) -> None:
+    page = _page(_viewer(markdown.heading(1, name)))
+    assert page.tags == ["h1"]
+    assert "".join(page.text).strip() == " ".join(name.split())
+
+
+def test_markdown_report_escapes_names_from_the_rule_and_team_files(
+        write_file: Callable[[str, str], Path]) -> None:
+    write_file("r.yaml", 'name: "<script>alert(1)</script>"\ncharacteristics:\n'
+                         '  kinematic_type: {values: ["<img src=x onerror=alert(1)>", "a|b", '
+                         '"*bold*"]}\n  s:\n    label: "</title><b>x</b>"\n'
+                         '    values: ["`code`", "[link](javascript:alert(1))", "<b>"]\n')
+    team = write_file("t.yaml", 'name: "Team <i>x</i> | pipe"\ndescription: "# <script>d'
+                                '</script>"\nrules: r.yaml\nteam:\n'
+                                '  "<img src=x onerror=alert(1)>": {}\n  "a|b": {}\n'
+                                '  "*bold*": {}\n')
+    solution = solve(load_team(team))
+    page = _page(_viewer(render_markdown(solution, {"radar": "my report-radar.png"})))
+    assert set(page.tags) <= {"h1", "h2", "p", "em", "table", "thead", "tbody", "tr", "th",
+                              "td", "ul", "li", "img"}
+    assert [value for _, _, value in page.references] == ["my%20report-radar.png"]
+    text = "".join(page.text)
+    for name in ("Team <i>x</i> | pipe", "# <script>d</script>",
+                 "rules: <script>alert(1)</script>", "<img src=x onerror=alert(1)>", "*bold*",
+                 "</title><b>x</b>", "`code`", "[link](javascript:alert(1))"):
+        assert name in text
+    cells = _Cells()
+    cells.feed(_viewer(render_markdown(solution)))
+    rows = [cells.cells[i:i + 4] for i in range(len(cells.cells))]
+    assert ["5", "a|b", "[link](javascript:alert(1))", "1"] in rows  # one cell each
+
+
+# ---- all or nothing ----------------------------------------------------------------------------
+
+def test_report_command_onto_a_folder_exits_2_and_leaves_no_charts(tmp_path: Path) -> None:
+    (tmp_path / "d.md").mkdir()
+    result = run_cli("report", "case1", "-o", "d.md", cwd=tmp_path)
+    assert result.returncode == 2
+    assert "d.md: is a folder; cannot write a file there" in result.stderr
+    assert "Traceback" not in result.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["d.md"]
+
+
+def test_markdown_report_that_fails_midway_puts_back_the_files_it_replaced(
+        case3: Solution, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    target = tmp_path / "case3.md"
+    names = image_names(target)
+    for path in (names["radar"], names["bars"], target):
+        path.write_bytes(b"before")
+    real_replace = os.replace
+    calls: list[str] = []
+
+    def replace_failing_on_the_page(source: Any, destination: Any) -> None:
+        # A rename that fails after the charts were renamed into place (a disk error):
+        # it cannot be provoked on purpose, so it is injected here.
+        calls.append(Path(destination).name)
+        if Path(destination) == target:
+            raise OSError(errno.EIO, "Input/output error")
+        real_replace(source, destination)
+
+    monkeypatch.setattr(os, "replace", replace_failing_on_the_page)
+    with pytest.raises(InputError) as caught:
+        write_report(case3, target)
+    assert str(caught.value) == f"{target}: cannot write: Input/output error"
+    assert calls[:3] == ["case3-radar.png", "case3-bars.png", "case3.md"]
+    assert [p.read_bytes() for p in (names["radar"], names["bars"], target)] == [b"before"] * 3
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["case3-bars.png", "case3-radar.png",
+                                                          "case3.md"]

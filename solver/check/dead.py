@@ -14,10 +14,11 @@ selects (:mod:`solver.check.teams`). Nothing is reported for a void rule set.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 
 from solver.check.context import RulesContext, integer_runs, values_text
 from solver.check.finding import Check, Finding
+from solver.check.regions import Domains
 from solver.constraints import Value
 from solver.rules import Characteristic
 
@@ -93,19 +94,46 @@ def _dead_for_type(context: RulesContext) -> Iterator[Finding]:
             # One value left is a core value, reported (with its reason) by core-value.
             if not dead or len(live[position]) == 1:
                 continue
-            conflict = analysis.minimal_conflict(analysis.narrowed(domains, position, dead))
+            reasons = _reasons(context, domains, position, dead)
             unused = [c.name for c in characteristic.components
                       if characteristic.declared_components and c.values
                       and not live[position].intersection(c.values)
                       and anywhere.intersection(c.values)]
             needless = "" if not unused else \
                 f"; so it never needs component {', '.join(repr(n) for n in unused)}"
+            if len(reasons) == 1:
+                why = _excluded_by(context, reasons[0][1])
+            else:  # each group of values has its own reason: never "A and B together"
+                why = "; ".join(f"{values_text(characteristic, values)} "
+                                f"{_excluded_by(context, conflict)}"
+                                for values, conflict in reasons)
+            blamed = sorted({i for _, conflict in reasons for i in conflict})
             yield DEAD_FOR_TYPE.finding(
                 context.value_location(key, kinematic_type),
                 f"no valid {kinematic_type} robot has {characteristic.name} "
-                f"{values_text(characteristic, dead)}: {_excluded_by(context, conflict)}"
-                f"{needless}",
-                context.constraint_related(conflict, "excludes them"))
+                f"{values_text(characteristic, dead)}: {why}{needless}",
+                context.constraint_related(blamed, "excludes them"))
+
+
+def _reasons(context: RulesContext, domains: Domains, position: int, dead: Sequence[Value]
+             ) -> list[tuple[list[Value], tuple[int, ...]]]:
+    """``dead`` values grouped by the minimal set of constraints that excludes each one.
+
+    Values no constraint tells apart (one class of :meth:`Analysis.classes`) have the same
+    reason, so the cost follows the classes, not the values (a range of 500 counts is a few
+    classes). Groups are in the order of their first value.
+    """
+    analysis = context.analysis
+    chosen = set(dead)
+    groups: dict[tuple[int, ...], list[Value]] = {}
+    every = range(len(context.rules.constraints))
+    for values in analysis.classes(domains, every)[position]:
+        members = [v for v in values if v in chosen]
+        if members:
+            conflict = analysis.minimal_conflict(analysis.narrowed(domains, position, members))
+            groups.setdefault(conflict, []).extend(members)
+    # Classes come in the order of their first values, so the groups do too.
+    return [(values, conflict) for conflict, values in groups.items()]
 
 
 DEAD_VALUE = Check(

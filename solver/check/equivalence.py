@@ -13,7 +13,10 @@ no triple and are only an overlap.
 
 from __future__ import annotations
 
+import heapq
+import itertools
 from collections.abc import Iterator
+from dataclasses import dataclass
 
 from solver.check.context import RulesContext
 from solver.check.finding import Check, Finding
@@ -22,22 +25,126 @@ from solver.rules import Characteristic, Component
 
 __all__ = ["CHECKS", "witness_triple"]
 
+Triple = tuple[Value, Value, Value]
+
 
 def witness_triple(characteristic: Characteristic, first: Component,
-                   second: Component) -> tuple[Value, Value, Value] | None:
-    """A ~ B in ``first``, B ~ C in ``second``, A and C in no common component; or ``None``."""
-    in_first, in_second = set(first.values), set(second.values)
-    shared = [v for v in characteristic.values if v in in_first and v in in_second]
-    if not shared:
+                   second: Component) -> Triple | None:
+    """A ~ B in ``first``, B ~ C in ``second``, A and C in no common component; or ``None``.
+
+    A is the first value in domain order (only in ``first``) that has such a C, C the first
+    such value (only in ``second``), B the first value both share.
+    """
+    return _overlaps(characteristic).witness(first.index, second.index)
+
+
+def _overlaps(characteristic: Characteristic) -> _Intervals | _Atoms:
+    if characteristic.kind == "integer":
+        return _Intervals.of(characteristic)
+    return _Atoms.of(characteristic)
+
+
+@dataclass(frozen=True)
+class _Intervals:
+    """Arrangements (integer components) as runs of domain positions, answered by a sweep.
+
+    An arrangement is a run ``[first, last]`` of positions, so a value ``a`` and a larger
+    value ``c`` share a component exactly when some run starting at or before ``a`` reaches
+    ``c``: ``reach[a] >= c``, where ``reach`` is the running maximum of the runs' ends. That
+    makes a witness a constant-time question, and overlapping pairs come from one sweep over
+    the runs sorted by start, so 1,000 arrangements over 10,000 counts cost what their
+    overlaps cost, not components x components x values.
+    """
+
+    characteristic: Characteristic
+    runs: dict[int, tuple[int, int]]  # component index -> (first, last) position
+    reach: tuple[int, ...]  # per position: the furthest last position of a run starting by it
+
+    @classmethod
+    def of(cls, characteristic: Characteristic) -> _Intervals:
+        positions = characteristic.positions
+        runs = {c.index: (positions[c.values[0]], positions[c.values[-1]])
+                for c in characteristic.components if c.values}
+        ends = [-1] * len(characteristic.values)
+        for first, last in runs.values():
+            ends[first] = max(ends[first], last)
+        return cls(characteristic, runs, tuple(itertools.accumulate(ends, max)))
+
+    def pairs(self) -> list[tuple[int, int]]:
+        """Every pair of overlapping runs ``(i, j)``, ``i < j``, in order."""
+        found = []
+        active: list[tuple[int, int]] = []  # (last position, index), a heap
+        for index, (first, last) in sorted(self.runs.items(), key=lambda item: item[1][0]):
+            while active and active[0][0] < first:
+                heapq.heappop(active)
+            found += [(min(index, other), max(index, other)) for _, other in active]
+            heapq.heappush(active, (last, index))
+        return sorted(found)
+
+    def witness(self, i: int, j: int) -> Triple | None:
+        if i not in self.runs or j not in self.runs:
+            return None
+        (first_x, last_x), (first_y, last_y) = self.runs[i], self.runs[j]
+        if max(first_x, first_y) > min(last_x, last_y):
+            return None  # no value in both
+        values, reach = self.characteristic.values, self.reach
+        shared = values[max(first_x, first_y)]
+        if first_x < first_y and last_x < last_y:
+            # X to the left: A in [first_x, first_y), C in (last_x, last_y]; the first A
+            # reaches least, and C is the first value beyond its reach.
+            if reach[first_x] < last_y:
+                return values[first_x], shared, values[max(last_x, reach[first_x]) + 1]
+        elif first_y < first_x and last_y < last_x and reach[first_y] < last_x:
+            # X to the right: C in [first_y, first_x), A in (last_y, last_x]; the first C
+            # reaches least, and A is the first value beyond its reach.
+            return values[max(last_y, reach[first_y]) + 1], shared, values[first_y]
+        return None  # one run inside the other, or every A meets every C in a third run
+
+
+@dataclass(frozen=True)
+class _Atoms:
+    """Categorical components through their values' membership sets.
+
+    Values with the same membership (an *atom*) behave alike in a witness, so a pair of
+    components is decided on its atoms, and only pairs that some value's membership joins
+    (the overlapping ones) are looked at.
+    """
+
+    characteristic: Characteristic
+    first_shared: dict[tuple[int, int], int]   # overlapping pair -> first position in both
+    atoms: dict[int, tuple[tuple[int, frozenset[int]], ...]]  # component -> (first position,
+                                                              # membership) of its atoms
+
+    @classmethod
+    def of(cls, characteristic: Characteristic) -> _Atoms:
+        first_shared: dict[tuple[int, int], int] = {}
+        first_of: dict[frozenset[int], int] = {}
+        for position, holders in enumerate(characteristic.membership):
+            for pair in itertools.combinations(sorted(holders), 2):
+                first_shared.setdefault(pair, position)
+            first_of.setdefault(frozenset(holders), position)
+        atoms: dict[int, list[tuple[int, frozenset[int]]]] = {}
+        for membership, position in sorted(first_of.items(), key=lambda item: item[1]):
+            for index in membership:
+                atoms.setdefault(index, []).append((position, membership))
+        return cls(characteristic, first_shared,
+                   {index: tuple(found) for index, found in atoms.items()})
+
+    def pairs(self) -> list[tuple[int, int]]:
+        return sorted(self.first_shared)
+
+    def witness(self, i: int, j: int) -> Triple | None:
+        shared = self.first_shared.get((min(i, j), max(i, j)))
+        if shared is None:
+            return None
+        only_x = [atom for atom in self.atoms[i] if j not in atom[1]]
+        only_y = [atom for atom in self.atoms[j] if i not in atom[1]]
+        values = self.characteristic.values
+        for position, membership in only_x:  # in domain order of their first values
+            partners = [p for p, other in only_y if membership.isdisjoint(other)]
+            if partners:
+                return values[position], values[shared], values[min(partners)]
         return None
-    only_first = [v for v in characteristic.values if v in in_first and v not in in_second]
-    only_second = [v for v in characteristic.values if v in in_second and v not in in_first]
-    for a in only_first:
-        components_a = set(characteristic.membership[characteristic.positions[a]])
-        for c in only_second:
-            if components_a.isdisjoint(characteristic.membership[characteristic.positions[c]]):
-                return a, shared[0], c
-    return None
 
 
 def _show(characteristic: Characteristic, value: Value) -> str:
@@ -49,17 +156,18 @@ def _non_transitive(context: RulesContext) -> Iterator[Finding]:
         if characteristic.is_partition:
             continue
         components = characteristic.components
-        for i, first in enumerate(components):
-            for second in components[i + 1:]:
-                triple = witness_triple(characteristic, first, second)
-                if triple is None:
-                    continue
-                a, b, c = (_show(characteristic, v) for v in triple)
-                yield NON_TRANSITIVE.finding(
-                    context.component_location(characteristic, second),
-                    f"'can share a component' is not transitive for {characteristic.name}: "
-                    f"{a} ~ {b} (both in {first.name!r}) and {b} ~ {c} (both in "
-                    f"{second.name!r}), but {a} and {c} share no component")
+        overlaps = _overlaps(characteristic)
+        for i, j in overlaps.pairs():  # pairs sharing no value have no triple
+            triple = overlaps.witness(i, j)
+            if triple is None:
+                continue
+            first, second = components[i], components[j]
+            a, b, c = (_show(characteristic, v) for v in triple)
+            yield NON_TRANSITIVE.finding(
+                context.component_location(characteristic, second),
+                f"'can share a component' is not transitive for {characteristic.name}: "
+                f"{a} ~ {b} (both in {first.name!r}) and {b} ~ {c} (both in "
+                f"{second.name!r}), but {a} and {c} share no component")
 
 
 NON_TRANSITIVE = Check(

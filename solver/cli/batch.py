@@ -15,20 +15,10 @@ import sys
 from collections.abc import Iterator
 from typing import IO, TYPE_CHECKING, Any
 
-from solver.cli._common import write
+from solver.cli._common import positive, write
 
 if TYPE_CHECKING:
     from solver.batch import Outcome
-
-
-def _positive(text: str) -> int:
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a whole number, got {text!r}") from None
-    if value < 1:
-        raise argparse.ArgumentTypeError(f"must be at least 1, got {value}")
-    return value
 
 
 def _default_jobs() -> int:
@@ -41,23 +31,24 @@ def _default_jobs() -> int:
 def register(subparsers: Any) -> None:
     parser: argparse.ArgumentParser = subparsers.add_parser(
         "batch", help="solve many team files at once: progress, summary, per-team JSON",
-        description="Solve every team file named by the patterns (files, folders searched "
-                    "recursively, or globs such as 'teams/**/*.yaml'; quote them) in parallel. "
-                    "Writes DIR/<name>.json per team (the JSON of 'solve --format json "
-                    "--list'), DIR/summary.csv and DIR/summary.md. A rerun skips teams whose "
+        description="Solve every team file named by the patterns (files, shipped team names "
+                    "such as case3, folders searched recursively, or globs such as "
+                    "'teams/**/*.yaml'; quote them) in parallel. Writes DIR/teams/<name>.json "
+                    "per team (the JSON of 'solve --format json --list'), DIR/summary.csv and "
+                    "DIR/summary.md. A rerun skips teams whose "
                     "team file, rule file and options are unchanged (content hashes kept in "
                     "DIR/.stamps/). Exit 0 all solved, 1 some team failed, 2 nothing could run.")
     parser.add_argument("patterns", nargs="+", metavar="PATTERN",
-                        help="team file, folder or glob pattern")
+                        help="team file, shipped team name, folder or glob pattern")
     parser.add_argument("--output", "-o", required=True, metavar="DIR",
                         help="folder for the per-team outputs and the summary")
-    parser.add_argument("--jobs", "-j", type=_positive, default=_default_jobs(), metavar="N",
+    parser.add_argument("--jobs", "-j", type=positive, default=_default_jobs(), metavar="N",
                         help="worker processes (default: the CPUs available, here "
                              f"{_default_jobs()})")
     parser.add_argument("--force", action="store_true",
                         help="solve every team again, even those that are up to date")
     parser.add_argument("--report", choices=("html", "markdown"),
-                        help="also write a report per team (DIR/<name>.html or .md)")
+                        help="also write a report per team (DIR/teams/<name>.html or .md)")
     parser.add_argument("--rules", "-r", metavar="RULES.yaml",
                         help="rule set for every team instead of each team's own 'rules:'")
     parser.set_defaults(run=run)

@@ -3,13 +3,16 @@
 Layout: every ``NAME.urdf``, ``NAME.urdf.xacro`` or ``NAME.xacro`` directly in the folder is one
 robot; ``NAME.srdf``, ``NAME.topics`` / ``NAME.topics.txt`` and ``NAME.bag`` beside it are used
 when present. Robots are identified in name order; one that cannot be identified (malformed,
-a missing xacro package, ...) is kept with its reason and the others still go through.
+unreadable, a missing xacro package, ...) is kept with its reason and the others still go
+through. A folder that cannot be listed is an error.
 
 The team selection (:func:`team_text`) has, per kinematic type of the rule set that at least one
 robot maps to: the union of the robots' motion controls and sensor types (in the rule set's
 order, values the rule set lacks left out) and the largest number of sensors with a
-presentation. Robots with no kinematic type in the rule set are listed in a comment. The text
-is checked by :func:`solver.team.parse_team` before it is returned.
+presentation. A characteristic with nothing identified is left out (a team file reads that as
+every value), and a type with nothing to narrow at all is written ``{}``. Robots with no
+kinematic type in the rule set are listed in a comment. The text is checked by
+:func:`solver.team.parse_team` before it is returned.
 
 Not here: printing progress (the caller passes a callback) or writing files.
 """
@@ -66,14 +69,29 @@ def _stem(path: Path) -> str | None:
 def find_descriptions(folder: str | Path) -> tuple[Path, ...]:
     """The robot descriptions directly in ``folder``, in name order."""
     base = Path(folder)
-    if not base.is_dir():
-        raise InputError.at(str(folder), "not a folder of robot descriptions", code="fleet")
-    found = sorted((p for p in base.iterdir() if p.is_file() and _stem(p)),
-                   key=lambda p: p.name)
+    try:
+        if not base.is_dir():
+            raise InputError.at(str(folder), "not a folder of robot descriptions",
+                                code="fleet")
+        found = sorted((p for p in base.iterdir() if _stem(p) and _is_robot_file(p)),
+                       key=lambda p: p.name)
+    except OSError as error:
+        # A folder without read or search permission cannot be used at all; an unreadable
+        # file in a readable folder is a failed robot instead (identify_fleet).
+        raise InputError.at(str(folder), f"cannot list this folder: "
+                                         f"{error.strerror or error}", code="fleet") from None
     if not found:
         raise InputError.at(str(folder), "no robot descriptions (*.urdf, *.urdf.xacro, "
                                          "*.xacro) in this folder", code="fleet")
     return tuple(found)
+
+
+def _is_robot_file(path: Path) -> bool:
+    """A regular file, or a dangling or looping link (kept so it is reported as failed).
+
+    Not a folder, a FIFO or a device: opening a FIFO would wait for a writer forever.
+    """
+    return path.is_file() or (path.is_symlink() and not path.exists())
 
 
 def _companion(path: Path, *suffixes: str) -> Path | None:
@@ -149,25 +167,13 @@ def team_text(fleet: Fleet, rules: RuleSet, profile: Profile, *, name: str,
 def _selection(entries: list[FleetEntry], rules: RuleSet, roles: dict[str, str]
                ) -> list[str]:
     idents = [e.identification for e in entries if e.identification is not None]
-    lines = []
-    control = roles["motion_control"]
-    if control in rules.names:
-        known = [str(v) for v in rules.characteristic(control).values]
-        chosen = {c.motion_control for i in idents for c in i.motion_controls}
-        values = [v for v in known if v in chosen]
-        if values:
-            lines.append(f"    {control}: {json.dumps(values)}")
-        else:
-            lines.append(f"    # {control}: none identified (every value allowed)")
-    sensor = roles["sensor_type"]
-    if sensor in rules.names:
-        known = [str(v) for v in rules.characteristic(sensor).values]
-        chosen = {t for i in idents for t in i.sensor_types}
-        values = [v for v in known if v in chosen]
-        if values:
-            lines.append(f"    {sensor}: {json.dumps(values)}")
-        else:
-            lines.append(f"    # {sensor}: none with a presentation (every value allowed)")
+    lines = [
+        *_union(rules, roles["motion_control"],
+                {c.motion_control for i in idents for c in i.motion_controls},
+                "none identified"),
+        *_union(rules, roles["sensor_type"], {t for i in idents for t in i.sensor_types},
+                "none with a presentation"),
+    ]
     count = roles["sensor_count"]
     if count in rules.names:
         characteristic = rules.characteristic(count)
@@ -180,9 +186,25 @@ def _selection(entries: list[FleetEntry], rules: RuleSet, roles: dict[str, str]
             lines.append(f"    {count}: {most}")
         else:
             lines.append(f"    # {count}: no sensors with a presentation (every value allowed)")
-    if not lines:
-        lines.append("    {}")
+    if all(line.lstrip().startswith("#") for line in lines):
+        # A key followed only by comments loads as null, which a team file rejects; {} is
+        # the team file's spelling of "every value of every characteristic".
+        lines.append("    {}   # nothing identified to narrow: every value allowed")
     return lines
+
+
+def _union(rules: RuleSet, name: str, chosen: set[str], nothing: str) -> list[str]:
+    """The line selecting ``chosen`` values of characteristic ``name`` in the rule set's order.
+
+    Values the rule set lacks are left out; with none left the line is a comment (a team file
+    then allows every value). Nothing when the rule set has no such characteristic.
+    """
+    if name not in rules.names:
+        return []
+    values = [str(v) for v in rules.characteristic(name).values if str(v) in chosen]
+    if values:
+        return [f"    {name}: {json.dumps(values)}"]
+    return [f"    # {name}: {nothing} (every value allowed)"]
 
 
 def rules_reference(rules_file: str | Path, team_file: str | Path) -> str:

@@ -2,14 +2,18 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 from hypothesis import given, settings
 
+from solver.check import check_files
 from solver.check.analysis import Analysis
 from solver.check.context import RulesContext
 from solver.check.dead import DEAD_VALUE
 from solver.model import robots
 from solver.rules import RuleSet, load_rules
 from tests.check.helpers import findings, fixture, rule_sets, valid_robots
+from tests.conftest import RULES
 
 
 def test_dead_value_names_every_constraint_needed_to_exclude_it() -> None:
@@ -65,3 +69,47 @@ def test_dead_named_values_are_those_in_no_valid_robot_by_brute_force(rules: Rul
     found = [f.location.path for f in DEAD_VALUE.run(RulesContext(rules, Analysis(rules)))
              if ".values[" in f.location.path]
     assert found == expected
+
+
+def test_values_a_type_loses_to_different_constraints_each_get_their_own_reason() -> None:
+    extended = RULES / "extended.yaml"
+    uav = next(f for f in check_files([extended]).findings
+               if f.check == "dead-for-type" and f.message.startswith("no valid UAV robot"))
+    assert uav.message == (
+        "no valid UAV robot has motion_control 'Walking', 'End Effector': 'Walking' excluded by "
+        f"'Walking is for legged robots' ({extended}:60:5); 'End Effector' excluded by 'End "
+        f"Effector control needs an arm' ({extended}:63:5)")
+    assert "together" not in uav.message
+
+
+LOSSES = """\
+characteristics:
+  kind: {values: [Rover, Drone]}
+  control: {values: [Drive, Fly, Point]}
+  sensor: {values: [Camera, Lidar]}
+  count: {range: [1, 10]}
+constraints:
+  - {name: pointing needs a camera, when: {control: Point}, require: {sensor: Camera}}
+  - {name: no camera on drones, forbid: {kind: Drone, sensor: Camera}}
+  - {name: drones carry 3 or more, forbid: {kind: Drone, count: {max: 2}}}
+  - {name: drones carry at most 8, forbid: {kind: Drone, count: {min: 9}}}
+"""
+
+
+def test_a_type_losing_a_value_to_two_constraints_at_once_says_together(tmp_path: Path
+                                                                         ) -> None:
+    rules = tmp_path / "losses.yaml"
+    rules.write_text(LOSSES, encoding="utf-8")
+    messages = [f.message for f in check_files([rules]).findings if f.check == "dead-for-type"]
+    assert f"no valid Drone robot has control 'Point': excluded by 'pointing needs a camera' " \
+           f"({rules}:7:5) and 'no camera on drones' ({rules}:8:5) together" in messages
+
+
+def test_counts_a_type_loses_to_different_constraints_are_given_per_run(tmp_path: Path
+                                                                       ) -> None:
+    rules = tmp_path / "losses.yaml"
+    rules.write_text(LOSSES, encoding="utf-8")
+    messages = [f.message for f in check_files([rules]).findings if f.check == "dead-for-type"]
+    assert f"no valid Drone robot has count 1..2, 9..10: 1..2 excluded by 'drones carry 3 or " \
+           f"more' ({rules}:9:5); 9..10 excluded by 'drones carry at most 8' ({rules}:10:5)" \
+        in messages

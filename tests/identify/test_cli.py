@@ -3,10 +3,16 @@
 from __future__ import annotations
 
 import json
+import os
+import shutil
+import subprocess
+import sys
 from pathlib import Path
 
+import pytest
+
 from solver.team import load_team
-from tests.conftest import run_cli
+from tests.conftest import ROOT, run_cli
 from tests.identify import builders
 
 
@@ -96,3 +102,68 @@ def test_fleet_of_an_empty_folder_exits_2(tmp_path: Path) -> None:
     result = run_cli("fleet", tmp_path / "none")
     assert result.returncode == 2
     assert "no robot descriptions" in result.stderr
+
+
+def test_fleet_writes_every_value_for_a_type_with_nothing_identified(tmp_path: Path) -> None:
+    folder = tmp_path / "arms"
+    folder.mkdir()
+    (folder / "arm.urdf").write_text(builders.manipulator().text())  # no sensors, no controls
+    team = tmp_path / "team.yaml"
+    result = run_cli("fleet", folder, "-o", team)
+    assert result.returncode == 0, result.stderr
+    assert "    {}   # nothing identified to narrow: every value allowed" in team.read_text()
+    loaded = load_team(team)
+    selection = loaded.selection("Manipulator")
+    assert selection is not None
+    for characteristic, domain in zip(loaded.rules.characteristics[1:], selection.domains[1:],
+                                      strict=True):
+        assert domain == characteristic.values
+
+
+def _without_permission_override(*args: str | Path) -> list[str]:
+    """``teleop-ui ARGS`` run so that file modes apply: root drops its override capabilities."""
+    command = [sys.executable, "-m", "solver", *map(str, args)]
+    if os.geteuid() != 0:
+        return command
+    setpriv = shutil.which("setpriv")
+    if setpriv is None:
+        pytest.skip("running as root without setpriv: file modes cannot be enforced")
+    return [setpriv, "--bounding-set", "-dac_override,-dac_read_search", "--", *command]
+
+
+def test_fleet_of_an_unreadable_folder_exits_2_naming_it(tmp_path: Path) -> None:
+    folder = write_fleet(tmp_path / "robots")
+    folder.chmod(0o000)
+    try:
+        result = subprocess.run(_without_permission_override("fleet", folder),
+                                capture_output=True, text=True, cwd=ROOT, check=False)
+    finally:
+        folder.chmod(0o755)
+    assert result.returncode == 2
+    assert "Traceback" not in result.stderr
+    assert f"{folder}: cannot list this folder: Permission denied" in result.stderr
+
+
+def test_fleet_lists_an_unreadable_robot_file_as_not_identified(tmp_path: Path) -> None:
+    folder = write_fleet(tmp_path / "robots")
+    (folder / "drone.urdf").chmod(0o000)
+    result = subprocess.run(_without_permission_override("fleet", folder),
+                            capture_output=True, text=True, cwd=ROOT, check=False)
+    assert result.returncode == 0, result.stderr
+    assert f"not identified: drone: {folder / 'drone.urdf'}: permission denied" \
+        in result.stdout
+    assert "rover " in result.stdout
+
+
+def test_fleet_lists_dangling_and_looping_links_as_not_identified(tmp_path: Path) -> None:
+    folder = write_fleet(tmp_path / "robots")
+    (folder / "gone.urdf").symlink_to("nothere.urdf")
+    (folder / "loop1.urdf").symlink_to("loop2.urdf")
+    (folder / "loop2.urdf").symlink_to("loop1.urdf")
+    (folder / "sub.urdf").mkdir()
+    result = run_cli("fleet", folder)
+    assert result.returncode == 0, result.stderr
+    assert "not identified: gone:" in result.stdout
+    assert "not identified: loop1:" in result.stdout
+    assert "not identified: loop2:" in result.stdout
+    assert "sub" not in result.stdout
