@@ -48,7 +48,7 @@ from solver.identify.identify import IdentificationCache
 from solver.identify.profile import load_profile
 from solver.live.events import event_data
 from solver.live.watcher import Watcher
-from solver.solve import Solution, solve
+from solver.solution import Solution, solve
 from solver.team import load_team
 from tests.conftest import TEAMS
 from tests.live.fleet import (

@@ -18,8 +18,8 @@ Modules, one concept each:
 ``team``               team selections, :func:`load_team`
 ``model``              the python-constraint model; valid robots
 ``partition``          robots -> UI configurations, numbering, minimum cover
-``solve``              :func:`solve` a team -> :class:`Solution`
-``assign``             :func:`assign` one combination -> :class:`Assignment`
+``solution``           :func:`solve` a team -> :class:`Solution`
+``assignment``         :func:`assign` one combination -> :class:`Assignment`
 ``reproduce``          published figures beside computed ones
 ``formats``            text / JSON / CSV / Markdown rendering
 ``plot``               radar chart (the article's Figure 9) and bar chart, PNG/SVG/PDF
@@ -50,7 +50,7 @@ from typing import TYPE_CHECKING, Any
 __version__ = "0.1.0"
 
 if TYPE_CHECKING:
-    from solver.assign import Assignment, assign, parse_combination
+    from solver.assignment import Assignment, assign, parse_combination
     from solver.batch import Outcome, find_teams, plan, run_batch, write_summary
     from solver.check import Finding, check_files
     from solver.constraints import Condition, RuleConstraint
@@ -63,11 +63,11 @@ if TYPE_CHECKING:
     from solver.report import render_html, render_markdown, write_report
     from solver.reproduce import Comparison, compare
     from solver.rules import Characteristic, Component, RuleSet, default_rules_path, load_rules
-    from solver.solve import Solution, TypeSummary, solve
+    from solver.solution import Solution, TypeSummary, solve
     from solver.team import Published, Team, TypeSelection, load_team
 
 _EXPORTS = {
-    "Assignment": "solver.assign",
+    "Assignment": "solver.assignment",
     "Characteristic": "solver.rules",
     "Comparison": "solver.reproduce",
     "Component": "solver.rules",
@@ -86,14 +86,14 @@ _EXPORTS = {
     "RuleConstraint": "solver.constraints",
     "RuleSet": "solver.rules",
     "RulesError": "solver.errors",
-    "Solution": "solver.solve",
+    "Solution": "solver.solution",
     "SolverError": "solver.errors",
     "Team": "solver.team",
     "TeamError": "solver.errors",
     "TypeSelection": "solver.team",
-    "TypeSummary": "solver.solve",
+    "TypeSummary": "solver.solution",
     "Watcher": "solver.live",
-    "assign": "solver.assign",
+    "assign": "solver.assignment",
     "assign_from_master": "solver.live",
     "bars_figure": "solver.plot",
     "build_problem": "solver.model",
@@ -105,14 +105,14 @@ _EXPORTS = {
     "identify_urdf": "solver.identify",
     "load_rules": "solver.rules",
     "load_team": "solver.team",
-    "parse_combination": "solver.assign",
+    "parse_combination": "solver.assignment",
     "plan": "solver.batch",
     "radar_figure": "solver.plot",
     "render_html": "solver.report",
     "render_markdown": "solver.report",
     "robots": "solver.model",
     "run_batch": "solver.batch",
-    "solve": "solver.solve",
+    "solve": "solver.solution",
     "write_plot": "solver.plot",
     "write_report": "solver.report",
     "write_summary": "solver.batch",
@@ -169,13 +169,6 @@ __all__ = [
     "write_report",
     "write_summary",
 ]
-
-
-# `solve` and `assign` share their names with the modules that define them: importing a module
-# binds it on the package, so these two are bound eagerly, after their modules, where nothing
-# can rebind them.
-from solver.assign import assign  # noqa: E402
-from solver.solve import solve  # noqa: E402
 
 
 def __getattr__(name: str) -> Any:

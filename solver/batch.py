@@ -56,7 +56,7 @@ from solver.errors import Fault, InputError, Location, SolverError
 from solver.formats import dumps, solution_data
 from solver.report import image_names, write_report
 from solver.rules import default_rules_path, shipped_name
-from solver.solve import solve
+from solver.solution import solve
 from solver.team import parse_team, resolve_team_path
 from solver.yamlio import load_document
 

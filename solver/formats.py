@@ -17,11 +17,11 @@ from collections.abc import Sequence
 from typing import Any
 
 from solver import markdown
-from solver.assign import Assignment
+from solver.assignment import Assignment
 from solver.partition import Configuration
 from solver.reproduce import Comparison, published_note
 from solver.rules import Characteristic, Component, RuleSet
-from solver.solve import Solution, TypeSummary
+from solver.solution import Solution, TypeSummary
 
 __all__ = [
     "FORMATS",

@@ -4,7 +4,7 @@ The article's toolbox keeps "a list containing all valid robot combinations"; an
 station looks a robot up in it. This writes that list as CSV or JSON lines while enumerating,
 so memory stays constant however many robots there are.
 
-Not here: choosing configurations (:mod:`solver.solve`) or enumerating (:mod:`solver.stream`,
+Not here: choosing configurations (:mod:`solver.solution`) or enumerating (:mod:`solver.stream`,
 :mod:`solver.model`).
 """
 
@@ -16,7 +16,7 @@ from collections.abc import Iterator
 from typing import TextIO
 
 from solver.constraints import Value
-from solver.solve import MAX_ROBOTS, Solution, TooLargeError
+from solver.solution import MAX_ROBOTS, Solution, TooLargeError
 
 __all__ = ["numbered_robots", "write_robots"]
 

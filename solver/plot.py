@@ -17,7 +17,7 @@ worker processes) and written by :func:`write_plot` as PNG, SVG or PDF by file e
 atomically and byte-identical from run to run (fixed SVG hash salt, no dates in metadata).
 matplotlib is imported inside the functions that draw, so importing this module is cheap.
 
-Not here: the pages that embed the plots (:mod:`solver.report`), solving (:mod:`solver.solve`).
+Not here: the pages that embed the plots (:mod:`solver.report`), solving (:mod:`solver.solution`).
 """
 
 from __future__ import annotations
@@ -40,7 +40,7 @@ if TYPE_CHECKING:
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
-    from solver.solve import Solution
+    from solver.solution import Solution
     from solver.team import Team
 
 __all__ = [

@@ -34,7 +34,7 @@ from solver.formats import configuration_data
 from solver.plot import PlotKind, bars_figure, figure_bytes, radar_figure, runs
 from solver.reproduce import published_note
 from solver.rules import Characteristic
-from solver.solve import Solution, TypeSummary
+from solver.solution import Solution, TypeSummary
 
 __all__ = [
     "REPORT_FORMATS",

@@ -16,7 +16,7 @@ from pathlib import Path
 
 from solver.errors import InputError
 from solver.rules import shipped_name, shipped_path
-from solver.solve import Solution, solve
+from solver.solution import Solution, solve
 from solver.team import Published, load_team, resolve_team_path
 
 __all__ = ["Comparison", "compare", "published_note"]

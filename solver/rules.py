@@ -14,7 +14,7 @@ Nothing about the article's four characteristics is known to the code: ``rules/p
 data like any other rule file. The README documents the format; :func:`load_rules` reads it,
 reporting every problem in the file at once.
 
-Not here: team selections (:mod:`solver.team`), solving (:mod:`solver.solve`).
+Not here: team selections (:mod:`solver.team`), solving (:mod:`solver.solution`).
 """
 
 from __future__ import annotations

@@ -33,7 +33,7 @@ from solver import markdown
 from solver.errors import InputError
 from solver.formats import dumps, text_table
 from solver.rules import Characteristic, RuleSet
-from solver.solve import Solution
+from solver.solution import Solution
 from solver.structure import count
 from solver.team import Team, TypeSelection
 

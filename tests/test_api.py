@@ -32,3 +32,14 @@ def test_importing_the_package_loads_no_heavy_dependency() -> None:
     loaded = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                             check=True).stdout.strip()
     assert loaded == "[]"
+
+
+def test_importing_every_module_keeps_the_functions_the_package_exports() -> None:
+    import importlib
+    import pkgutil
+
+    for module in pkgutil.walk_packages(solver.__path__, "solver."):
+        if not module.name.endswith("__main__"):  # running it would start the CLI
+            importlib.import_module(module.name)
+    assert callable(solver.solve)
+    assert callable(solver.assign)

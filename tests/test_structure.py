@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from solver import load_team, solve, structure
-from solver.solve import TooLargeError
+from solver.solution import TooLargeError
 from solver.structure import Memo, StructureTooComplex, count
 from tests.conftest import TEAMS
 

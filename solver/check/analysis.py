@@ -22,7 +22,7 @@ Explanations are deletion-based minimal subsets (:meth:`Analysis.minimal_conflic
 constraint, re-solve, keep it dropped if the question still has no solution.
 
 Not here: deciding what is a finding (the check modules) or enumerating robots for solving
-(:mod:`solver.model`, :mod:`solver.solve`).
+(:mod:`solver.model`, :mod:`solver.solution`).
 """
 
 from __future__ import annotations

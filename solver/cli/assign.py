@@ -37,10 +37,10 @@ def register(subparsers: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from solver.assign import assign, parse_combination
+    from solver.assignment import assign, parse_combination
     from solver.errors import InputError
     from solver.formats import render_assignment
-    from solver.solve import solve
+    from solver.solution import solve
 
     combination = parse_combination(args.combination)
     if args.master is not None:
@@ -58,7 +58,7 @@ def run_live(args: argparse.Namespace, combination: dict[str, str]) -> int:
     from solver.live.master import master_uri
     from solver.live.query import assign_from_master
     from solver.live.render import render_live_assignment
-    from solver.solve import solve
+    from solver.solution import solve
 
     master = master_uri(args.master)
     solution = solve(load_team_argument(args.team, args.rules))

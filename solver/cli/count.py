@@ -45,7 +45,7 @@ def load(text: str, rules: str | None) -> Team:
 
 def run(args: argparse.Namespace) -> int:
     from solver.formats import render_counts
-    from solver.solve import solve
+    from solver.solution import solve
 
     team = load(args.file, args.rules)
     solution = solve(team, engine=args.engine, count_only=True, max_robots=args.max_robots)

@@ -87,7 +87,7 @@ def run(args: argparse.Namespace) -> int:
     from solver.identify.combinations import combinations
     from solver.identify.identify import identify
     from solver.identify.render import identification_data, render_identification
-    from solver.solve import solve
+    from solver.solution import solve
 
     team = load_team_argument(args.team, args.rules) if args.team else None
     rules, profile = load_rules_and_profile(None if team else args.rules, args.profile)

@@ -28,7 +28,7 @@ def register(subparsers: Any) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from solver.report import report_format, write_report
-    from solver.solve import solve
+    from solver.solution import solve
 
     report_format(args.output)  # an unusable file name fails before any solving
     solution = solve(load_team_argument(args.team, args.rules))

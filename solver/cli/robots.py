@@ -28,7 +28,7 @@ def run(args: argparse.Namespace) -> int:
     import sys
 
     from solver.listing import write_robots
-    from solver.solve import solve
+    from solver.solution import solve
 
     team = load_team_argument(args.team, args.rules)
     # Numbering needs the partition, which the structure gives without enumerating; the

@@ -32,7 +32,7 @@ def register(subparsers: Any) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from solver.formats import render_solution
-    from solver.solve import solve
+    from solver.solution import solve
 
     if args.plot:
         from solver.plot import plot_format

@@ -11,7 +11,7 @@ from solver.cli._common import add_format, add_rules, load_team_argument, write
 
 if TYPE_CHECKING:
     from solver.live.watcher import Watcher
-    from solver.solve import Solution
+    from solver.solution import Solution
 
 
 def seconds(text: str) -> float:
@@ -65,7 +65,7 @@ def run(args: argparse.Namespace) -> int:
     from solver.identify.profile import load_profile
     from solver.live.master import master_uri
     from solver.live.watcher import Watcher
-    from solver.solve import solve
+    from solver.solution import solve
 
     master = master_uri(args.master)
     team = load_team_argument(args.team, args.rules)

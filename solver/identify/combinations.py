@@ -16,10 +16,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from solver.assign import Assignment, assign
+from solver.assignment import Assignment, assign
 from solver.identify.identify import Identification
 from solver.identify.profile import Profile
-from solver.solve import Solution
+from solver.solution import Solution
 
 __all__ = ["Combination", "combinations"]
 

@@ -20,7 +20,7 @@ from typing import Any
 from solver.formats import assignment_data, text_table
 from solver.identify.combinations import Combination
 from solver.identify.identify import Identification
-from solver.solve import Solution
+from solver.solution import Solution
 
 __all__ = ["identification_data", "render_identification"]
 

@@ -38,7 +38,7 @@ from typing import Any, ClassVar
 
 from solver.live.robot import LiveRobot, robot_data
 from solver.live.selection import ActiveSelection, Request, selection_data
-from solver.solve import Solution
+from solver.solution import Solution
 
 __all__ = ["Event", "MasterBack", "MasterLost", "RobotAdded", "RobotChanged", "RobotRemoved",
            "SelectionChanged", "Synced", "event_data"]

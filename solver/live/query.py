@@ -18,7 +18,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from solver.assign import Assignment
+from solver.assignment import Assignment
 from solver.errors import InputError, did_you_mean
 from solver.identify.identify import IdentificationCache
 from solver.identify.profile import Profile
@@ -26,7 +26,7 @@ from solver.live.discovery import discover, normalise_namespace
 from solver.live.master import MISSING, MasterClient
 from solver.live.robot import identify_robot
 from solver.live.selection import NAMESPACE, REQUEST_PARAMS, choose, read_request
-from solver.solve import Solution
+from solver.solution import Solution
 
 __all__ = ["LiveAssignment", "assign_from_master"]
 

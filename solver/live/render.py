@@ -15,7 +15,7 @@ from __future__ import annotations
 import json
 from typing import Any
 
-from solver.assign import Assignment
+from solver.assignment import Assignment
 from solver.formats import assignment_data, dumps, render_assignment
 from solver.live.events import (
     Event,
@@ -30,7 +30,7 @@ from solver.live.events import (
 )
 from solver.live.query import LiveAssignment
 from solver.live.robot import LiveRobot
-from solver.solve import Solution
+from solver.solution import Solution
 
 __all__ = ["json_line", "render_event", "render_live_assignment", "text_lines"]
 

@@ -28,7 +28,7 @@ from solver.identify.identify import Identification, IdentificationCache, TopicS
 from solver.identify.profile import Profile
 from solver.live.discovery import RobotSource
 from solver.live.master import MISSING
-from solver.solve import Solution
+from solver.solution import Solution
 
 __all__ = ["LiveRobot", "identify_robot", "robot_data"]
 

@@ -26,14 +26,14 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from solver.assign import Assignment, assign
+from solver.assignment import Assignment, assign
 from solver.errors import InputError, did_you_mean
 from solver.formats import assignment_data
 from solver.identify.profile import Profile
 from solver.live.discovery import normalise_namespace
 from solver.live.master import MISSING
 from solver.live.robot import LiveRobot
-from solver.solve import Solution
+from solver.solution import Solution
 
 __all__ = ["NAMESPACE", "REQUEST_PARAMS", "RESULT_PARAM", "ActiveSelection", "Request",
            "choose", "read_request", "select", "selection_data", "ui_configuration_value"]

@@ -73,7 +73,7 @@ from solver.live.selection import (
     selection_data,
     ui_configuration_value,
 )
-from solver.solve import Solution
+from solver.solution import Solution
 
 __all__ = ["Watcher"]
 

@@ -12,7 +12,7 @@ from solver.identify import (
     identify_urdf,
     load_profile,
 )
-from solver.solve import solve
+from solver.solution import solve
 from solver.team import load_team
 from tests.conftest import TEAMS
 from tests.identify import builders

@@ -21,7 +21,7 @@ from solver.live.events import (
 from solver.live.render import render_event, text_lines
 from solver.live.robot import LiveRobot, identify_robot
 from solver.live.selection import Request, select
-from solver.solve import Solution
+from solver.solution import Solution
 from tests.live.fleet import drone_configuration, drone_text
 
 URI = "http://127.0.0.1:11311/"

@@ -17,7 +17,7 @@ from solver.live.selection import (
     selection_data,
     ui_configuration_value,
 )
-from solver.solve import Solution
+from solver.solution import Solution
 from tests.live.fleet import drone_text, expected, rover_text
 
 CAMERA = Topic("camera/image_raw", "sensor_msgs/Image", "published")

@@ -10,7 +10,7 @@ from solver.identify.profile import Profile
 from solver.live.events import event_data
 from solver.live.master import MISSING, MasterClient
 from solver.live.watcher import Watcher
-from solver.solve import Solution
+from solver.solution import Solution
 from tests.live.conftest import Recorder
 from tests.live.fleet import (
     drone_configuration,

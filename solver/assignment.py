@@ -20,7 +20,7 @@ from solver.errors import InputError, did_you_mean
 from solver.model import violated_constraints
 from solver.partition import Configuration
 from solver.rules import Characteristic
-from solver.solve import Solution
+from solver.solution import Solution
 
 __all__ = ["Assignment", "assign", "parse_combination"]
 

@@ -7,7 +7,7 @@ questions (valid robots, UI configurations, reduction, the bound T, the default 
 and looks up the configuration of any valid robot.
 
 Not here: rendering (:mod:`solver.formats`), single-combination assignment
-(:mod:`solver.assign`).
+(:mod:`solver.assignment`).
 """
 
 from __future__ import annotations
