@@ -35,6 +35,7 @@ __all__ = [
     "render_solution",
     "runs",
     "solution_data",
+    "solution_warnings",
     "text_table",
 ]
 
@@ -281,19 +282,26 @@ def render_counts(solution: Solution, fmt: str = "text") -> str:
             + text_table(headers, rows, align))
 
 
+def solution_warnings(solution: Solution) -> list[str]:
+    """What a reader of the counts must know: robots left unserved, a minimum not proven."""
+    warnings = []
+    if solution.totals.unserved_robots:
+        warnings.append(f"warning: {solution.totals.unserved_robots} valid robots have a value "
+                        "in no component and get the default configuration (run teleop-ui "
+                        "check)")
+    if not solution.proven_minimal:
+        warnings.append("warning: overlapping components; the configuration count is the best "
+                        "found, not proven minimal")
+    return warnings
+
+
 def _footer(solution: Solution) -> list[str]:
     rules = solution.rules
     factors = " x ".join(str(n) for n in rules.bound_factors)
     lines = [f"bound T = {solution.bound} ({factors})", f"how: {method_text(solution)}",
              f"default UI configuration: {solution.default_configuration} "
              f"(every component: {sum(rules.bound_factors)})"]
-    totals = solution.totals
-    if totals.unserved_robots:
-        lines.append(f"warning: {totals.unserved_robots} valid robots have a value in no "
-                     "component and get the default configuration (run teleop-ui check)")
-    if not solution.proven_minimal:
-        lines.append("warning: overlapping components; the configuration count is the best "
-                     "found, not proven minimal")
+    lines += solution_warnings(solution)
     note = published_note(solution)
     if note is not None:
         stated, verdict, _ = note

@@ -30,7 +30,7 @@ from solver import markdown
 from solver.atomic import write_all_atomic, write_atomic
 from solver.constraints import Value
 from solver.errors import InputError
-from solver.formats import configuration_data
+from solver.formats import configuration_data, solution_warnings
 from solver.plot import PlotKind, bars_figure, figure_bytes, radar_figure, runs
 from solver.reproduce import published_note
 from solver.rules import Characteristic
@@ -129,14 +129,7 @@ def _facts(solution: Solution) -> list[str]:
              f"default UI configuration: {solution.default_configuration} (every component, "
              f"{sum(rules.bound_factors)} in all), given to any robot outside the team's "
              "selections"]
-    totals = solution.totals
-    if totals.unserved_robots:
-        facts.append(f"warning: {totals.unserved_robots} valid robots have a value in no "
-                     "component and get the default configuration (run teleop-ui check)")
-    if not solution.proven_minimal:
-        facts.append("warning: overlapping components; the configuration count is the best "
-                     "found, not proven minimal")
-    return facts
+    return facts + solution_warnings(solution)
 
 
 def _values_text(characteristic: Characteristic, values: Sequence[Value]) -> str:
