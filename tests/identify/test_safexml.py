@@ -67,7 +67,8 @@ def test_an_empty_file_and_a_folder_are_refused(tmp_path: Path) -> None:
         read_xml(tmp_path)
 
 
-@pytest.mark.parametrize("text", [LAUGHS, QUADRATIC, EXTERNAL])
+@pytest.mark.parametrize("text", [LAUGHS, QUADRATIC, EXTERNAL],
+                         ids=["billion-laughs", "quadratic-blowup", "external-entity"])
 def test_the_cli_refuses_bombs_with_exit_2_and_no_traceback(tmp_path: Path, text: str) -> None:
     path = tmp_path / "bomb.urdf"
     path.write_text(text, encoding="utf-8")
