@@ -204,6 +204,12 @@ class RuleSet:
             found.append(tuple(tuple(members) for members in groups.values()))
         return tuple(found)
 
+    @cached_property
+    def value_class_index(self) -> tuple[dict[Value, int], ...]:
+        """Per characteristic: value -> the index of its class in :attr:`value_classes`."""
+        return tuple({value: index for index, members in enumerate(classes) for value in members}
+                     for classes in self.value_classes)
+
 
 def shipped_path(*parts: str) -> Path:
     """A file shipped with the package (``rules/...``), wherever the package is installed."""

@@ -34,6 +34,7 @@ import itertools
 import math
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
+from functools import cached_property
 
 from solver.constraints import Value
 from solver.partition import Key, Partition, RobotClass, partition_classes
@@ -58,6 +59,8 @@ class Memo:
         self.whole: dict[int, list[_Class]] = {}
         # The blocks count() built for each kinematic type, for partition_structure to reuse.
         self.blocks: dict[str, list[_Block]] = {}
+        # _shape() of the whole-domain class lists above, by identity.
+        self.shapes: dict[int, tuple[tuple[int, int], ...]] = {}
 
 
 class StructureTooComplex(Exception):
@@ -83,20 +86,31 @@ class _Class:
     membership: tuple[int, ...]   # the components every member belongs to
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class _Block:
     """Characteristics linked by constraints, and their valid class combinations."""
 
     positions: tuple[int, ...]
     combinations: tuple[tuple[tuple[_Class, ...], int], ...]   # (one class per position, weight)
 
-    def partial_key(self, classes: tuple[_Class, ...]) -> Key | None:
+    @staticmethod
+    def partial_key(classes: tuple[_Class, ...]) -> Key | None:
         """The block's components for a combination (``None``: a class in no component)."""
         if not all(c.membership for c in classes):
             return None
         return tuple(c.membership[0] for c in classes)
 
-    @property
+    @cached_property
+    def partial_weights(self) -> dict[Key, int]:
+        """Robots per partial configuration (robots with a value in no component left out)."""
+        weights: dict[Key, int] = {}
+        for combination, weight in self.combinations:
+            key = self.partial_key(combination)
+            if key is not None:
+                weights[key] = weights.get(key, 0) + weight
+        return weights
+
+    @cached_property
     def robots(self) -> int:
         return sum(weight for _, weight in self.combinations)
 
@@ -108,8 +122,7 @@ def count(rules: RuleSet, selection: TypeSelection, memo: Memo | None = None) ->
     that several types share (their robots differ only by the type's name).
     """
     classes = _selected_classes(rules, selection, memo)
-    signature: list[object] = [tuple((c.index, len(c.members)) for c in found)
-                               for found in classes]
+    signature: list[object] = [_shape(found, memo) for found in classes]
     # The type itself only matters through the constraint conditions it meets (each type is
     # its own component, so which one it is never changes a count).
     kinematic_type = selection.kinematic_type
@@ -130,16 +143,9 @@ def count(rules: RuleSet, selection: TypeSelection, memo: Memo | None = None) ->
     else:
         robots = served = configurations = 1
         for block in blocks:
-            keys = set()
-            block_served = 0
-            for combination, weight in block.combinations:
-                key = block.partial_key(combination)
-                if key is not None:
-                    keys.add(key)
-                    block_served += weight
             robots *= block.robots
-            served *= block_served
-            configurations *= len(keys)
+            served *= sum(block.partial_weights.values())
+            configurations *= len(block.partial_weights)
         result = Counts(selection.kinematic_type, robots, configurations, robots - served)
     if memo is not None:
         memo.counts[memo_key] = result
@@ -176,22 +182,20 @@ def _partition_product(rules: RuleSet, selection: TypeSelection,
     per_block = []
     robots = served_robots = 1
     for block in blocks:
-        partial: dict[Key, tuple[int, list[set[Value]]]] = {}
-        for combination, weight in block.combinations:
+        held: dict[Key, list[set[Value]]] = {}
+        for combination, _ in block.combinations:
             key = block.partial_key(combination)
-            if key is None:
-                continue
-            so_far, held = partial.get(key, (0, [set() for _ in block.positions]))
-            for values, found in zip(held, combination, strict=True):
-                values.update(found.members)
-            partial[key] = (so_far + weight, held)
+            if key is not None:
+                for values, found in zip(held.setdefault(key, [set() for _ in combination]),
+                                         combination, strict=True):
+                    values.update(found.members)
         robots *= block.robots
-        served_robots *= sum(weight for weight, _ in partial.values())
+        served_robots *= sum(block.partial_weights.values())
         orders = [rules.characteristics[p].positions.__getitem__ for p in block.positions]
         per_block.append([(key, weight, tuple(tuple(sorted(values, key=order))
-                                              for values, order in zip(held, orders,
+                                              for values, order in zip(held[key], orders,
                                                                        strict=True)))
-                          for key, (weight, held) in sorted(partial.items())])
+                          for key, weight in sorted(block.partial_weights.items())])
     # Each configuration joins one partial configuration per block: concatenate the blocks'
     # parts, then put the characteristics back in rule order if the blocks interleave them.
     order = [position for block in blocks for position in block.positions]
@@ -227,6 +231,16 @@ def _joint_classes(rules: RuleSet, blocks: Sequence[_Block]) -> Iterator[RobotCl
             for position, found in zip(block.positions, combination, strict=True):
                 values[position] = found.members
         yield tuple(values), weight
+
+
+def _shape(classes: list[_Class], memo: Memo | None) -> tuple[tuple[int, int], ...]:
+    """What counting sees of a characteristic's classes: which classes, how many values each."""
+    if memo is not None and id(classes) in memo.shapes:
+        return memo.shapes[id(classes)]
+    shape = tuple((c.index, len(c.members)) for c in classes)
+    if memo is not None and any(classes is whole for whole in memo.whole.values()):
+        memo.shapes[id(classes)] = shape  # whole-domain lists live as long as the memo
+    return shape
 
 
 def _selected_classes(rules: RuleSet, selection: TypeSelection, memo: Memo | None = None
@@ -265,12 +279,12 @@ def _cut(rules: RuleSet, position: int, domain: Sequence[Value]) -> list[_Class]
             if stop > start:
                 found.append(made(index, members[start:stop]))
         return found
-    chosen = set(domain)
-    for index, members in enumerate(classes):
-        kept = tuple(v for v in members if v in chosen)
-        if kept:
-            found.append(made(index, kept))
-    return found
+    # Any other selection: each selected value to its class, classes kept in their order.
+    index_of = rules.value_class_index[position]
+    grouped: dict[int, list[Value]] = {}
+    for value in domain:
+        grouped.setdefault(index_of[value], []).append(value)
+    return [made(index, tuple(grouped[index])) for index in sorted(grouped)]
 
 
 def _blocks(rules: RuleSet, classes: list[list[_Class]]) -> list[_Block]:
