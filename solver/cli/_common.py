@@ -9,7 +9,8 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:
     from solver.team import Team
 
-__all__ = ["add_engine", "add_format", "add_rules", "load_team_argument", "positive", "write"]
+__all__ = ["add_engine", "add_format", "add_master_options", "add_profile", "add_rules",
+           "load_team_argument", "positive", "seconds", "write"]
 
 
 def add_format(parser: argparse.ArgumentParser, choices: tuple[str, ...],
@@ -45,6 +46,33 @@ def positive(text: str) -> int:
     if number < 1:
         raise argparse.ArgumentTypeError(f"expected a number of at least 1, got {text!r}")
     return number
+
+
+def seconds(text: str) -> float:
+    """An argparse type: seconds from 0.01 (below that, polls and timeouts mean nothing) to an
+    hour."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected seconds, got {text!r}") from None
+    if not 0.01 <= value <= 3600:
+        raise argparse.ArgumentTypeError(f"expected seconds from 0.01 to 3600, got {text!r}")
+    return value
+
+
+def add_master_options(parser: argparse.ArgumentParser, *, required_help: str) -> None:
+    """--master and --timeout, for the commands that read a ROS master."""
+    parser.add_argument("--master", "-m", metavar="URL",
+                        help=f"ROS master URI, e.g. http://127.0.0.1:11311 ({required_help})")
+    parser.add_argument("--timeout", type=seconds, default=2.0, metavar="S",
+                        help="seconds to wait for the master to accept a connection, and for "
+                             "each part of its reply (default: 2)")
+
+
+def add_profile(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--profile", "-p", metavar="PROFILE.yaml",
+                        help="identification profile (default: the shipped "
+                             "rules/identification.yaml)")
 
 
 def add_rules(parser: argparse.ArgumentParser,

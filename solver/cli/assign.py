@@ -9,8 +9,14 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from solver.cli._common import add_format, add_rules, load_team_argument, write
-from solver.cli.watch import add_master_options
+from solver.cli._common import (
+    add_format,
+    add_master_options,
+    add_profile,
+    add_rules,
+    load_team_argument,
+    write,
+)
 
 
 def register(subparsers: Any) -> None:
@@ -33,6 +39,7 @@ def register(subparsers: Any) -> None:
     parser.add_argument("--robot", metavar="NS",
                         help="with --master: the robot's namespace, e.g. /uav1 (default: "
                              "/teleop_ui/active_robot)")
+    add_profile(parser)
     parser.set_defaults(run=run)
 
 
@@ -45,9 +52,11 @@ def run(args: argparse.Namespace) -> int:
     combination = parse_combination(args.combination)
     if args.master is not None:
         return run_live(args, combination)
-    if args.robot is not None or not combination:
-        raise InputError.at("<arguments>", "--robot needs --master URL" if args.robot
-                            else "give at least one NAME=VALUE (or --master URL)")
+    for option in ("robot", "profile"):
+        if getattr(args, option) is not None:
+            raise InputError.at("<arguments>", f"--{option} needs --master URL")
+    if not combination:
+        raise InputError.at("<arguments>", "give at least one NAME=VALUE (or --master URL)")
     solution = solve(load_team_argument(args.team, args.rules))
     write(render_assignment(solution, assign(solution, combination), args.format))
     return 0
@@ -62,7 +71,7 @@ def run_live(args: argparse.Namespace, combination: dict[str, str]) -> int:
 
     master = master_uri(args.master)
     solution = solve(load_team_argument(args.team, args.rules))
-    live = assign_from_master(master, solution, load_profile(), robot=args.robot,
+    live = assign_from_master(master, solution, load_profile(args.profile), robot=args.robot,
                               given=combination, timeout=args.timeout)
     write(render_live_assignment(live, solution, args.format))
     return 0

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from typing import TYPE_CHECKING, Any
 
-from solver.cli._common import add_format, add_rules, load_team_argument, write
+from solver.cli._common import add_format, add_profile, add_rules, load_team_argument, write
 
 if TYPE_CHECKING:
     from pathlib import Path
@@ -16,9 +16,7 @@ if TYPE_CHECKING:
 
 def add_description_options(parser: argparse.ArgumentParser) -> None:
     """Options ``identify`` and ``fleet`` share: profile, xacro arguments, package path."""
-    parser.add_argument("--profile", "-p", metavar="PROFILE.yaml",
-                        help="identification profile (default: the shipped "
-                             "rules/identification.yaml)")
+    add_profile(parser)
     parser.add_argument("--arg", dest="xacro_args", action="append", default=[],
                         metavar="NAME:=VALUE", help="xacro argument (repeatable)")
     parser.add_argument("--package-path", action="append", default=[], metavar="DIR",

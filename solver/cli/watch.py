@@ -7,30 +7,19 @@ import signal
 import sys
 from typing import TYPE_CHECKING, Any
 
-from solver.cli._common import add_format, add_rules, load_team_argument, write
+from solver.cli._common import (
+    add_format,
+    add_master_options,
+    add_profile,
+    add_rules,
+    load_team_argument,
+    seconds,
+    write,
+)
 
 if TYPE_CHECKING:
     from solver.live.watcher import Watcher
     from solver.solution import Solution
-
-
-def seconds(text: str) -> float:
-    """A positive number of seconds, for argparse."""
-    try:
-        value = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected seconds, got {text!r}") from None
-    if not 0 < value <= 3600:
-        raise argparse.ArgumentTypeError(f"expected seconds in (0, 3600], got {text!r}")
-    return value
-
-
-def add_master_options(parser: argparse.ArgumentParser, *, required_help: str) -> None:
-    """--master and --timeout, shared with ``assign``."""
-    parser.add_argument("--master", "-m", metavar="URL",
-                        help=f"ROS master URI, e.g. http://127.0.0.1:11311 ({required_help})")
-    parser.add_argument("--timeout", type=seconds, default=2.0, metavar="S",
-                        help="timeout of every call to the master, in seconds (default: 2)")
 
 
 def register(subparsers: Any) -> None:
@@ -48,9 +37,7 @@ def register(subparsers: Any) -> None:
     parser.add_argument("--team", "-t", required=True, metavar="TEAM.yaml",
                         help="team selection file (or a shipped team name)")
     add_rules(parser)
-    parser.add_argument("--profile", "-p", metavar="PROFILE.yaml",
-                        help="identification profile (default: the shipped "
-                             "rules/identification.yaml)")
+    add_profile(parser)
     parser.add_argument("--once", action="store_true",
                         help="print one snapshot (every robot, the selection) and exit")
     parser.add_argument("--interval", "-i", type=seconds, default=0.2, metavar="S",

@@ -71,17 +71,15 @@ def robot_namespaces(param_names: Iterable[str]) -> tuple[str, ...]:
     return tuple(sorted(found))
 
 
-def _inside(name: str, namespace: str) -> bool:
-    return namespace == "/" or name.startswith(namespace + "/")
-
-
-def _owner(name: str, namespaces: tuple[str, ...]) -> str | None:
-    """The deepest namespace containing ``name`` (the root one last)."""
-    best = None
-    for namespace in namespaces:
-        if _inside(name, namespace) and (best is None or len(namespace) > len(best)):
-            best = namespace
-    return best
+def _owner(name: str, namespaces: frozenset[str]) -> str | None:
+    """The deepest namespace strictly containing ``name``, the root one last; one set lookup
+    per level of ``name``, so a poll costs O(topics + nodes), not O(topics x robots)."""
+    parts = [part for part in name.split("/") if part]
+    for depth in range(len(parts) - 1, 0, -1):
+        candidate = "/" + "/".join(parts[:depth])
+        if candidate in namespaces:
+            return candidate
+    return "/" if "/" in namespaces else None
 
 
 def _relative(name: str, namespace: str) -> str:
@@ -93,38 +91,55 @@ def _relevant(message_type: str, profile: Profile) -> bool:
         or any(message_type in rule.types for rule in profile.topic_controls)
 
 
-def robot_topics(namespace: str, namespaces: tuple[str, ...], observation: Observation,
-                 profile: Profile) -> tuple[Topic, ...]:
-    """The topics of the robot at ``namespace`` (see the module docstring), sorted."""
+def robot_topics(namespaces: Iterable[str], observation: Observation,
+                 profile: Profile) -> dict[str, tuple[Topic, ...]]:
+    """The topics of each robot in ``namespaces`` (see the module docstring), each sorted.
+
+    Every topic and node name is placed once, so the cost grows with the size of the graph,
+    not with the number of robots times the number of topics.
+    """
+    known = frozenset(namespaces)
     types = dict(observation.topic_types)
     sides = {"published": dict(observation.publishers),
              "subscribed": dict(observation.subscribers)}
-    names = sorted(set(sides["published"]) | set(sides["subscribed"]))
-    found: list[Topic] = []
-    for name in names:
-        if _owner(name, namespaces) != namespace:
+    owners: dict[str, str | None] = {}
+
+    def owner(name: str) -> str | None:
+        if name not in owners:
+            owners[name] = _owner(name, known)
+        return owners[name]
+
+    relevant: dict[str, bool] = {}
+    found: dict[str, list[Topic]] = {namespace: [] for namespace in sorted(known)}
+    for name in sorted(set(sides["published"]) | set(sides["subscribed"])):
+        namespace = owner(name)
+        if namespace is None:
             continue
         message_type = normalise_type(types.get(name, _ANY_TYPE))
-        if message_type == _ANY_TYPE or not _relevant(message_type, profile):
+        if message_type == _ANY_TYPE:
             continue
-        own = {side: [node for node in nodes.get(name, ())
-                      if _owner(node, namespaces) == namespace]
+        if message_type not in relevant:
+            relevant[message_type] = _relevant(message_type, profile)
+        if not relevant[message_type]:
+            continue
+        own = {side: [node for node in nodes.get(name, ()) if owner(node) == namespace]
                for side, nodes in sides.items()}
         counted = own if any(own.values()) else \
             {side: list(nodes.get(name, ())) for side, nodes in sides.items()}
         relative = _relative(name, namespace)
-        found += [Topic(relative, message_type, side) for side in ("published", "subscribed")
-                  if counted[side]]
-    return tuple(found)
+        found[namespace] += [Topic(relative, message_type, side)
+                             for side in ("published", "subscribed") if counted[side]]
+    return {namespace: tuple(topics) for namespace, topics in found.items()}
 
 
 def discover(observation: Observation, profile: Profile) -> tuple[RobotSource, ...]:
     """Every robot on the master, in namespace order."""
     namespaces = robot_namespaces(observation.param_names)
     names = set(observation.param_names)
+    topics = robot_topics(namespaces, observation, profile)
     return tuple(
         RobotSource(namespace, description_key(namespace),
                     description_key(namespace, SEMANTIC)
                     if description_key(namespace, SEMANTIC) in names else None,
-                    robot_topics(namespace, namespaces, observation, profile))
+                    topics[namespace])
         for namespace in namespaces)

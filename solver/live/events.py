@@ -9,10 +9,10 @@ its kind:
 ``robot_changed``    a robot's reported fields changed: the robot fields, and
                      ``changed``, the names of the fields that differ
 ``robot_removed``    its ``robot_description`` is gone: ``robot``
-``selection_changed`` the operator's selection or its answer changed: ``robot``,
-                     ``motion_control``, ``sensor_type`` (as asked, ``null`` when not set),
-                     ``assignment`` (``teleop-ui assign``'s JSON, ``null`` with no active
-                     robot), ``notes``
+``selection_changed`` the operator's selection or its answer (reasons and notes
+                     included) changed: ``robot``, ``motion_control``, ``sensor_type``
+                     (as asked, ``null`` when not set), ``assignment`` (``teleop-ui
+                     assign``'s JSON, ``null`` with no active robot), ``notes``
 ``master_lost``      the master stopped answering (or restarted): ``master``, ``error``
 ``master_back``      it answers again; a full resynchronisation follows
 ``synced``           the robots below are every robot on the master: ``master``, ``robots``
@@ -22,11 +22,13 @@ Robot fields: ``robot`` (the namespace), ``name`` (the URDF's), ``structure``,
 ``kinematic_type`` (``null`` when the rule set has none for it), ``confidence``,
 ``sensor_count``, ``sensors``, ``motion_controls``, ``combinations`` (each
 ``{"combination", "configuration", "default", "reasons"}``), and ``error`` (``null``, or why the
-robot could not be identified; the identification fields are then ``null``).
+robot could not be identified; the scalar identification fields are then ``null``, and
+``sensors``, ``motion_controls`` and ``combinations`` empty lists).
 
-A run starts with one ``robot_added`` per robot, a ``selection_changed`` if a robot is active,
-and ``synced``. After ``master_back`` the same sequence follows again: the watcher starts over,
-so a consumer drops what it knew at ``master_lost`` and rebuilds from the events that follow.
+A run starts with one ``robot_added`` per robot, a ``selection_changed`` if a robot is active
+(or a ``/teleop_ui`` parameter has a note), and ``synced``. After ``master_back`` the same
+sequence follows again: the watcher starts over, so a consumer drops what it knew at
+``master_lost`` and rebuilds from the events that follow.
 
 Not here: producing events (:mod:`solver.live.watcher`), text (:mod:`solver.live.render`).
 """

@@ -25,7 +25,7 @@ from solver.identify.profile import Profile
 from solver.live.discovery import discover, normalise_namespace
 from solver.live.master import MISSING, MasterClient
 from solver.live.robot import identify_robot
-from solver.live.selection import NAMESPACE, REQUEST_PARAMS, choose, read_request
+from solver.live.selection import NAMESPACE, choose, read_request, requested_values
 from solver.solution import Solution
 
 __all__ = ["LiveAssignment", "assign_from_master"]
@@ -55,12 +55,9 @@ def assign_from_master(master: str, solution: Solution, profile: Profile, *,
                 raise InputError.at("<arguments>", f"no --robot given and no "
                                                    f"{NAMESPACE}/active_robot set on {master}")
             namespace = request.robot
-            notes += request.notes
-            for _, role in REQUEST_PARAMS:
-                asked = getattr(request, role)
-                name = profile.role(role)
-                if asked is not None and name in solution.rules.names:
-                    values.setdefault(name, asked)
+            asked, ignored = requested_values(request, solution, profile)
+            values = {**asked, **values}  # the command line's values win
+            notes += [*request.notes, *ignored]
         else:
             namespace = normalise_namespace(robot)
         sources = {s.namespace: s for s in discover(observation, profile)}

@@ -47,11 +47,11 @@ class LiveRobot:
     error: str | None = None
 
 
-def _text(value: Any, key: str) -> str | bytes:
+def _text(value: Any, key: str, what: str = "URDF") -> str | bytes:
     if isinstance(value, str | bytes):
         return value
     kind = "a namespace of parameters" if isinstance(value, dict) else type(value).__name__
-    raise _NotText(f"{key}: expected URDF text, got {kind}")
+    raise _NotText(f"{key}: expected {what} text, got {kind}")
 
 
 class _NotText(ValueError):
@@ -80,7 +80,7 @@ def identify_robot(source: RobotSource, description: Any, semantic: Any = MISSIN
     try:
         text = _text(description, source.description_key)
         srdf = None if source.semantic_key is None or semantic is MISSING \
-            else _text(semantic, source.semantic_key)
+            else _text(semantic, source.semantic_key, "SRDF")
         identification = cache.identify_urdf(
             text, srdf_text=srdf,
             topics=[TopicSource(_SOURCE, source.topics)] if source.topics else (),

@@ -8,8 +8,9 @@ The convention (documented in the README): an operator station sets
 * ``/teleop_ui/active_sensor_type`` (optional): a sensor type (``2D Camera``),
 
 and the watcher answers in ``/teleop_ui/ui_configuration`` with the JSON contract of
-``teleop-ui assign`` (number, components or the default's reasons) plus the robot's namespace,
-so any ROS node can read the configuration with ``rosparam get``.
+``teleop-ui assign`` (number, components or the default's reasons) plus the robot's namespace
+and the writing watcher's node name, so any ROS node can read the configuration with
+``rosparam get``.
 
 :func:`choose` turns a robot's combinations and the values asked for into one combination:
 a value the robot has narrows its combinations to it; a value it does not have is used anyway
@@ -35,11 +36,14 @@ from solver.live.master import MISSING
 from solver.live.robot import LiveRobot
 from solver.solution import Solution
 
-__all__ = ["NAMESPACE", "REQUEST_PARAMS", "RESULT_PARAM", "ActiveSelection", "Request",
-           "choose", "read_request", "select", "selection_data", "ui_configuration_value"]
+__all__ = ["NAMESPACE", "REQUEST_PARAMS", "RESULT_PARAM", "WRITER_KEY", "ActiveSelection",
+           "Request", "choose", "read_request", "requested_values", "select", "selection_data",
+           "ui_configuration_value"]
 
 NAMESPACE = "/teleop_ui"
 RESULT_PARAM = f"{NAMESPACE}/ui_configuration"
+# The key of RESULT_PARAM naming the watcher that wrote it (its node name).
+WRITER_KEY = "watcher"
 # parameter (under /teleop_ui) -> the profile role whose characteristic it sets
 REQUEST_PARAMS = (("active_motion_control", "motion_control"),
                   ("active_sensor_type", "sensor_type"))
@@ -137,24 +141,32 @@ def choose(robot: LiveRobot, given: Mapping[str, str], solution: Solution
     return assignment, tuple(notes)
 
 
+def requested_values(request: Request, solution: Solution, profile: Profile
+                     ) -> tuple[dict[str, str], tuple[str, ...]]:
+    """The characteristic values the request sets (by the profile's roles), and notes on the
+    parameters the rule set has no characteristic for."""
+    given: dict[str, str] = {}
+    notes: list[str] = []
+    for param, role in REQUEST_PARAMS:
+        value = getattr(request, role)
+        name = profile.role(role)
+        if value is None:
+            continue
+        if name not in solution.rules.names:
+            notes.append(f"{NAMESPACE}/{param} ignored: the rule set has no {name!r}")
+            continue
+        given[name] = value
+    return given, tuple(notes)
+
+
 def select(request: Request, robots: Mapping[str, LiveRobot], solution: Solution,
            profile: Profile) -> ActiveSelection | None:
     """The configuration for ``request``; ``None`` when no robot is active."""
     if request.robot is None:
         return None
     robot = robots.get(request.robot)
-    rules = solution.rules
-    notes = list(request.notes)
-    given: dict[str, str] = {}
-    for param, role in REQUEST_PARAMS:
-        value = getattr(request, role)
-        name = profile.role(role)
-        if value is None:
-            continue
-        if name not in rules.names:
-            notes.append(f"{NAMESPACE}/{param} ignored: the rule set has no {name!r}")
-            continue
-        given[name] = value
+    given, ignored = requested_values(request, solution, profile)
+    notes = [*request.notes, *ignored]
     if robot is None or robot.identification is None:
         if robot is not None:
             reason = f"robot {request.robot} could not be identified: {robot.error}"
@@ -193,13 +205,14 @@ def _without_none(value: Any) -> Any:
     return value
 
 
-def ui_configuration_value(selection: ActiveSelection | None, solution: Solution
-                           ) -> dict[str, Any] | None:
-    """What the watcher writes to ``/teleop_ui/ui_configuration`` (``None``: delete it)."""
+def ui_configuration_value(selection: ActiveSelection | None, solution: Solution,
+                           writer: str) -> dict[str, Any] | None:
+    """What the watcher ``writer`` (its node name) writes to ``/teleop_ui/ui_configuration``
+    (``None``: delete it)."""
     if selection is None or selection.assignment is None:
         return None
     data = {"robot": selection.request.robot,
             **assignment_data(solution, selection.assignment),
-            "notes": list(selection.notes)}
+            "notes": list(selection.notes), WRITER_KEY: writer}
     value: dict[str, Any] = _without_none(data)
     return value

@@ -21,7 +21,13 @@ only when its description or its relevant topics changed (identification is cach
 besides); an event is emitted only when what it reports changed.
 
 *Write-back*: the answer to the active selection is written to ``/teleop_ui/ui_configuration``
-(deleted with no active robot) whenever what is on the master differs from it.
+(deleted with no active robot) whenever what is on the master differs from it, with the
+watcher's node name under ``watcher``. Two watchers on one master with different teams or
+rules would overwrite each other's answer on every push; so a watcher does not overwrite an
+answer written by another watcher that is still running (the master knows its node and the
+node answers ``getPid``): it leaves the first writer's answer there and says so in the
+selection's notes. Once that watcher is gone, the parameter is taken over at the next poll.
+Watchers with the same team agree, and leave each other's equal answers alone.
 
 *Lost*: any failed call, or a new pid (the master restarted between two polls), gives
 ``master_lost``; the watcher retries after one interval, doubling up to ``max_backoff``, and
@@ -61,12 +67,19 @@ from solver.live.events import (
     SelectionChanged,
     Synced,
 )
-from solver.live.master import MISSING, MasterClient, MasterError, Observation
+from solver.live.master import (
+    MISSING,
+    MasterClient,
+    MasterError,
+    MasterUnreachable,
+    Observation,
+)
 from solver.live.node import NodeServer, callback_host
 from solver.live.robot import LiveRobot, identify_robot, robot_data
 from solver.live.selection import (
     NAMESPACE,
     RESULT_PARAM,
+    WRITER_KEY,
     Request,
     read_request,
     select,
@@ -188,13 +201,17 @@ class Watcher:
 
     def wait_for_master(self, on_waiting: Callable[[MasterError], None] | None = None
                         ) -> bool:
-        """Retry until the master answers (``True``) or :meth:`stop` (``False``)."""
+        """Retry until the master answers (``True``) or :meth:`stop` (``False``).
+
+        Only a master that does not answer is waited for: an answer that is not a ROS
+        master's (another server on that port) raises :class:`MasterError` at once.
+        """
         delay = self.interval
         told = False
         while not self.stopped:
             try:
                 self.client.get_pid()
-            except MasterError as error:
+            except MasterUnreachable as error:
                 if not told and on_waiting is not None:
                     on_waiting(error)
                 told = True
@@ -331,14 +348,50 @@ class Watcher:
         request = read_request(params)
         selection = select(request, {ns: t.robot for ns, t in self._robots.items()},
                            self.solution, self.profile)
-        wanted = ui_configuration_value(selection, self.solution)
+        wanted = ui_configuration_value(selection, self.solution, self.caller_id)
         present = params.get(_RESULT_KEY, MISSING)
-        if wanted is None and present is not MISSING:
+        rival = self._rival(present, wanted)
+        if rival is not None and selection is not None:
+            shown = present.get("configuration", "?")
+            selection = dataclasses.replace(selection, notes=(
+                *selection.notes,
+                f"{RESULT_PARAM} not written: the watcher {rival} answers there with "
+                f"configuration {shown}; run one watcher per master, or give every watcher "
+                f"the same team and rules"))
+        elif wanted is None and present is not MISSING:
             self.client.delete_param(RESULT_PARAM)
-        elif wanted is not None and present != wanted:
+        elif wanted is not None and _answer(present) != _answer(wanted):
             self.client.set_param(RESULT_PARAM, wanted)
         data = selection_data(selection, request, self.solution)
         if data == self._selection:
             return []
         self._selection = data
         return [SelectionChanged(0, request, selection)]
+
+    def _rival(self, present: Any, wanted: dict[str, Any] | None) -> str | None:
+        """The node name of another watcher, still running, whose different answer is on the
+        master; ``None`` when the parameter is free to write (see the module docstring)."""
+        if wanted is None or not isinstance(present, dict):
+            return None
+        writer = present.get(WRITER_KEY)
+        if not isinstance(writer, str) or writer == self.caller_id \
+                or _answer(present) == _answer(wanted):
+            return None
+        api = self.client.lookup_node(writer)
+        if api is None:
+            return None  # it closed (its parameter subscriptions are gone) or never had a node
+        probe = MasterClient(api, caller_id=self.caller_id, timeout=self.client.timeout)
+        try:
+            probe.get_pid()  # a node API answers getPid as the master does
+        except MasterError:
+            return None  # killed without closing: the master still lists it, nobody answers
+        finally:
+            probe.close()
+        return writer
+
+
+def _answer(value: Any) -> Any:
+    """A ``ui_configuration`` value without its writer: what two watchers can agree on."""
+    if isinstance(value, dict):
+        return {key: item for key, item in value.items() if key != WRITER_KEY}
+    return value

@@ -14,6 +14,7 @@ Debian's ``ros-core``.
 
 from __future__ import annotations
 
+import http.server
 import threading
 from collections.abc import Callable, Iterator
 from pathlib import Path
@@ -72,6 +73,27 @@ def node(master: Roscore) -> Iterator[TestNode]:
     yield test_node
     test_node.clear()
     test_node.close()
+
+
+class _NotFound(http.server.BaseHTTPRequestHandler):
+    def do_POST(self) -> None:
+        self.send_response(404)
+        self.send_header("Content-Length", "0")
+        self.end_headers()
+
+    def log_message(self, format: str, *args: Any) -> None:
+        """Quiet: the tests read what the client reports."""
+
+
+@pytest.fixture
+def web_server() -> Iterator[str]:
+    """The URI of a web server that is not a ROS master (it answers every call with 404)."""
+    server = http.server.HTTPServer(("127.0.0.1", 0), _NotFound)
+    thread = threading.Thread(target=server.serve_forever, daemon=True)
+    thread.start()
+    yield f"http://127.0.0.1:{server.server_address[1]}/"
+    server.shutdown()
+    server.server_close()
 
 
 @pytest.fixture(scope="session")

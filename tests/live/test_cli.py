@@ -14,7 +14,7 @@ from typing import Any
 
 import pytest
 
-from solver.live.master import MISSING
+from solver.live.master import MISSING, MasterClient
 from solver.solution import Solution
 from tests.conftest import ROOT, run_cli
 from tests.live.fleet import drone_configuration, put_drone, put_rover, rover_configuration
@@ -139,10 +139,19 @@ def test_no_master_anywhere_and_bad_options_exit_2() -> None:
                             check=False, timeout=TIMEOUT)
     assert result.returncode == 2
     assert "pass --master http://HOST:PORT or set ROS_MASTER_URI" in result.stderr
-    for bad in (["--interval", "0"], ["--interval", "soon"], ["--master", "127.0.0.1:11311"]):
+    for bad in (["--interval", "0"], ["--interval", "0.0001"], ["--interval", "soon"],
+                ["--timeout", "7200"], ["--master", "127.0.0.1:11311"]):
         result = run_cli("watch", "--team", "case3", *bad)
         assert result.returncode == 2, bad
         assert "Traceback" not in result.stderr
+
+
+def test_wait_does_not_wait_for_a_server_that_is_not_a_master(web_server: str) -> None:
+    """--wait waits for a master that does not answer yet; a web server answers, wrongly."""
+    result = run_cli("watch", "--wait", "--master", web_server, "--team", "case3")
+    assert result.returncode == 2
+    assert result.stdout == ""
+    assert result.stderr == f"{web_server}: getPid: not a ROS master: HTTP 404 Not Found\n"
 
 
 def test_ros_master_uri_is_used_when_no_master_is_given(master: Roscore,
@@ -178,6 +187,29 @@ def test_sigterm_ends_a_watch_cleanly_too(master: Roscore, node: TestNode,
     watch.process.send_signal(signal.SIGTERM)
     assert watch.wait() == 0
     assert "".join(watch.stderr) == "watch stopped: terminated (SIGTERM)\n"
+
+
+def test_an_answer_left_by_a_killed_watch_is_taken_over(
+        master: Roscore, node: TestNode, watch_process: Callable[..., WatchProcess]) -> None:
+    put_drone(node, "/uav1")
+    node.set_param("/teleop_ui/active_robot", "/uav1")
+    killed = watch_process("--master", master.uri, "--team", "case1")
+
+    def answer(team: str) -> dict[str, Any] | None:
+        value = node.get_param("/teleop_ui/ui_configuration")
+        return value if isinstance(value, dict) and value.get("team") == team else None
+
+    left = wait_until(lambda: answer("Case 1"), TIMEOUT, "the first watch's answer")
+    killed.kill()  # SIGKILL: no unsubscribing, the master still lists its node
+    client = MasterClient(master.uri, caller_id="/rosnode", timeout=5.0)
+    assert client.lookup_node(left["watcher"]) is not None
+    client.close()
+
+    second = watch_process("--master", master.uri, "--team", "case3")
+    taken = wait_until(lambda: answer("Case 3"), TIMEOUT, "the answer taken over")
+    assert taken["watcher"] != left["watcher"]
+    selected = second.wait_for(lambda e: e["event"] == "selection_changed", "selection")
+    assert not any("not written" in note for note in selected["notes"])
 
 
 def test_wait_waits_for_the_master_to_come_up(tmp_path: Path,
@@ -241,6 +273,23 @@ def test_assign_reads_the_robot_from_the_master(master: Roscore, node: TestNode,
     assert text.stdout.startswith("robot /uav1\nUI configuration ")
     assert text.stdout.endswith("  note: /uav1 does not offer motion_control 'Waypoint' (it "
                                 "has Flight); using it as asked\n")
+
+
+def test_assign_reads_with_the_profile_given(master: Roscore, node: TestNode,
+                                             tmp_path: Path) -> None:
+    shipped = (ROOT / "rules" / "identification.yaml").read_text(encoding="utf-8")
+    assert shipped.count("kinematic_types: [UAV]") == 1
+    profile = tmp_path / "flying-is-driving.yaml"
+    profile.write_text(shipped.replace("kinematic_types: [UAV]", "kinematic_types: [UGV]"),
+                       encoding="utf-8")
+    put_drone(node, "/uav1")
+    result = run_cli("assign", "--master", master.uri, "--team", "case3", "--robot", "/uav1",
+                     "--profile", profile, "-f", "json")
+    assert result.returncode == 0, result.stderr
+    assert json.loads(result.stdout)["combination"]["kinematic_type"] == "UGV"
+    offline = run_cli("assign", "--team", "case3", "--profile", profile, "kinematic_type=UAV")
+    assert (offline.returncode, offline.stderr) == (2, "<arguments>: --profile needs --master "
+                                                       "URL\n")
 
 
 def test_assign_without_robot_answers_the_active_selection(master: Roscore, node: TestNode,

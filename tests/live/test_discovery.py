@@ -58,7 +58,7 @@ def test_the_robots_own_nodes_decide_the_direction(profile: Profile) -> None:
         subscribers={"/uav1/cmd_vel": ["/uav1/base"], "/uav1/camera/image_raw": ["/rviz"]},
         types={"/uav1/cmd_vel": TWIST, "/uav1/camera/image_raw": IMAGE},
         params=["/uav1/robot_description"])
-    assert robot_topics("/uav1", ("/uav1",), seen, profile) == (
+    assert robot_topics(("/uav1",), seen, profile)["/uav1"] == (
         Topic("camera/image_raw", IMAGE, "published"),
         Topic("cmd_vel", TWIST, "subscribed"))
 
@@ -70,7 +70,7 @@ def test_with_no_node_of_the_robot_both_sides_count(profile: Profile) -> None:
         subscribers={"/uav1/camera/image_raw": ["/rviz"], "/uav1/cmd_vel": ["/gazebo"]},
         types={"/uav1/camera/image_raw": IMAGE, "/uav1/cmd_vel": TWIST},
         params=["/uav1/robot_description"])
-    assert robot_topics("/uav1", ("/uav1",), seen, profile) == (
+    assert robot_topics(("/uav1",), seen, profile)["/uav1"] == (
         Topic("camera/image_raw", IMAGE, "published"),
         Topic("camera/image_raw", IMAGE, "subscribed"),
         Topic("cmd_vel", TWIST, "published"),
@@ -87,11 +87,11 @@ def test_a_topic_belongs_to_the_deepest_robot_and_the_root_takes_the_rest(
         params=["/robot_description", "/team/robot_description",
                 "/team/ugv1/robot_description"])
     namespaces = robot_namespaces(seen.param_names)
-    assert robot_topics("/team/ugv1", namespaces, seen, profile) == (
+    assert robot_topics(namespaces, seen, profile)["/team/ugv1"] == (
         Topic("scan", SCAN, "published"),)
-    assert robot_topics("/team", namespaces, seen, profile) == (
+    assert robot_topics(namespaces, seen, profile)["/team"] == (
         Topic("scan", SCAN, "published"),)
-    assert robot_topics("/", namespaces, seen, profile) == (
+    assert robot_topics(namespaces, seen, profile)["/"] == (
         Topic("elsewhere/scan", SCAN, "published"), Topic("scan", SCAN, "published"))
 
 
@@ -105,7 +105,7 @@ def test_topics_no_profile_rule_reads_or_without_a_type_are_left_out(profile: Pr
                "/uav1/diagnostics": "diagnostic_msgs/DiagnosticArray", "/uav1/any": "*",
                "/uav1/camera/image_raw": IMAGE},
         params=["/uav1/robot_description"])
-    assert robot_topics("/uav1", ("/uav1",), seen, profile) == (
+    assert robot_topics(("/uav1",), seen, profile)["/uav1"] == (
         Topic("camera/image_raw", IMAGE, "published"),)
 
 
@@ -129,8 +129,28 @@ def test_no_topic_is_given_to_two_robots(profile: Profile, namespaces: list[str]
                        [ns.rstrip("/") + "/robot_description" for ns in namespaces])
     found = robot_namespaces(seen.param_names)
     owners: dict[str, str] = {}
-    for namespace in found:
-        for topic in robot_topics(namespace, found, seen, profile):
+    for namespace, owned in robot_topics(found, seen, profile).items():
+        for topic in owned:
             absolute = namespace.rstrip("/") + "/" + topic.name
             assert absolute not in owners, f"{absolute}: {owners.get(absolute)} and {namespace}"
             owners[absolute] = namespace
+
+
+def _deepest(name: str, namespaces: list[str]) -> str | None:
+    """The owner by the definition: the longest namespace that is a proper prefix by segments."""
+    inside = [ns for ns in namespaces if ns == "/" or name.startswith(ns + "/")]
+    return max(inside, key=len, default=None)
+
+
+@given(st.lists(_namespace, min_size=1, max_size=5, unique=True),
+       st.lists(st.lists(_segment, min_size=1, max_size=4), max_size=12))
+def test_each_topic_goes_to_the_deepest_namespace_containing_it(
+        profile: Profile, namespaces: list[str], topics: list[list[str]]) -> None:
+    names = sorted({"/" + "/".join(parts) for parts in topics})
+    seen = observation({name: ["/node"] for name in names}, {}, dict.fromkeys(names, SCAN),
+                       [ns.rstrip("/") + "/robot_description" for ns in namespaces])
+    found = robot_topics(namespaces, seen, profile)
+    given_to = {(ns.rstrip("/") + "/" + topic.name): ns
+                for ns, owned in found.items() for topic in owned}
+    assert given_to == {name: _deepest(name, namespaces) for name in names
+                        if _deepest(name, namespaces) is not None}

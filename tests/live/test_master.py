@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import http.server
 import socket
 import threading
 import xmlrpc.client
@@ -83,25 +82,11 @@ def _serve(server: Any) -> threading.Thread:
     return thread
 
 
-class _NotFound(http.server.BaseHTTPRequestHandler):
-    def do_POST(self) -> None:
-        self.send_response(404)
-        self.send_header("Content-Length", "0")
-        self.end_headers()
-
-    def log_message(self, format: str, *args: Any) -> None:
-        pass
-
-
-def test_a_web_server_is_not_a_master() -> None:
-    server = http.server.HTTPServer(("127.0.0.1", 0), _NotFound)
-    _serve(server)
-    client = MasterClient(f"http://127.0.0.1:{server.server_address[1]}/")
+def test_a_web_server_is_not_a_master(web_server: str) -> None:
+    client = MasterClient(web_server)
     with pytest.raises(MasterError, match="not a ROS master: HTTP 404") as caught:
         client.observe()
     assert not isinstance(caught.value, MasterUnreachable)
-    server.shutdown()
-    server.server_close()
 
 
 @pytest.mark.parametrize(("reply", "message"), [

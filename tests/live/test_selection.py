@@ -108,7 +108,7 @@ def test_the_written_back_value_holds_no_null_and_matches_the_event(
     drone = robot("/uav1", drone_text(), (CAMERA,), solution, profile)
     request = Request("/uav9")
     selection = select(request, {"/uav1": drone}, solution, profile)
-    value = ui_configuration_value(selection, solution)
+    value = ui_configuration_value(selection, solution, "/teleop_ui_watch_test")
     assert value is not None
 
     def nulls(item: Any) -> int:
@@ -123,4 +123,5 @@ def test_the_written_back_value_holds_no_null_and_matches_the_event(
     assert value["configuration"] == event["assignment"]["configuration"]
     assert value["robot"] == "/uav9"
     assert value["default"] is True
-    assert ui_configuration_value(None, solution) is None
+    assert value["watcher"] == "/teleop_ui_watch_test"
+    assert ui_configuration_value(None, solution, "/teleop_ui_watch_test") is None

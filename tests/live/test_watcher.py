@@ -10,7 +10,9 @@ from solver.identify.profile import Profile
 from solver.live.events import event_data
 from solver.live.master import MISSING, MasterClient
 from solver.live.watcher import Watcher
-from solver.solution import Solution
+from solver.solution import Solution, solve
+from solver.team import load_team
+from tests.conftest import TEAMS
 from tests.live.conftest import Recorder
 from tests.live.fleet import (
     drone_configuration,
@@ -183,6 +185,59 @@ def test_switching_the_active_robot_gives_its_configuration_and_writes_it_back(
 def _result(node: TestNode, robot: str) -> dict[str, Any] | None:
     value = node.get_param("/teleop_ui/ui_configuration")
     return value if isinstance(value, dict) and value.get("robot") == robot else None
+
+
+def _writer(node: TestNode) -> str | None:
+    value = node.get_param("/teleop_ui/ui_configuration")
+    return value.get("watcher") if isinstance(value, dict) else None
+
+
+def test_a_second_watcher_with_another_team_leaves_the_first_answer_until_it_is_gone(
+        master: Roscore, node: TestNode, start_watcher: Start, profile: Profile) -> None:
+    put_drone(node, "/uav1")
+    node.set_param("/teleop_ui/active_motion_control", "Flight")
+    node.set_param("/teleop_ui/active_robot", "/uav1")
+    first = start_watcher(master.uri)
+    mine = first.watcher.caller_id
+    wait_until(lambda: _writer(node) == mine, 60, "the first watcher's answer")
+
+    case1 = solve(load_team(TEAMS / "case1.yaml"))
+    second = Recorder(Watcher(master.uri, case1, profile), case1)
+    try:
+        held = second.wait_for_event("selection_changed")
+        assert held["assignment"]["team"] == "Case 1"
+        assert held["notes"] == [
+            f"/teleop_ui/ui_configuration not written: the watcher {mine} answers there with "
+            f"configuration {drone_configuration(first.solution)}; run one watcher per master, "
+            f"or give every watcher the same team and rules"]
+        second.wait_for_event("synced")
+        value = node.get_param("/teleop_ui/ui_configuration")
+        assert (value["watcher"], value["team"]) == (mine, "Case 3")
+        assert [d["event"] for d in first.data()].count("selection_changed") == 1
+
+        mark = second.mark()
+        first.stop()  # closing releases its node: the answer is free to take over
+        taken = wait_until(lambda: _writer(node) == second.watcher.caller_id, 60,
+                           "the second watcher's answer")
+        assert taken
+        assert node.get_param("/teleop_ui/ui_configuration")["team"] == "Case 1"
+        freed = second.wait_for_event("selection_changed", after=mark)
+        assert freed["notes"] == []
+    finally:
+        second.stop()
+
+
+def test_watchers_with_the_same_team_leave_each_others_equal_answer(
+        master: Roscore, node: TestNode, start_watcher: Start) -> None:
+    put_drone(node, "/uav1")
+    node.set_param("/teleop_ui/active_robot", "/uav1")
+    first = start_watcher(master.uri)
+    wait_until(lambda: _writer(node) == first.watcher.caller_id, 60, "the first answer")
+    second = start_watcher(master.uri)
+    selected = second.wait_for_event("selection_changed")
+    second.wait_for_event("synced")
+    assert not any("not written" in note for note in selected["notes"])
+    assert _writer(node) == first.watcher.caller_id
 
 
 def test_an_unknown_active_robot_gets_the_default_with_the_reason(
