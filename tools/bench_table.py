@@ -55,6 +55,10 @@ ROWS = [
      "`check`: 1000 overlapping arrangements (non-transitive witnesses)", ""),
     ("test_radar_chart_of_a_count_spoke_of_100000_values_as_png",
      "radar chart with a 100,000-value count spoke as PNG", ""),
+    ("test_placing_the_topic_graph[20 robots x 100 topics]",
+     "`watch` poll: topics of 20 robots x 100 placed on their robots", ""),
+    ("test_placing_the_topic_graph[200 robots x 100 topics]",
+     "`watch` poll: topics of 200 robots x 100 placed on their robots", ""),
 ]
 
 # `watch` latency: change on a real roscore -> event (recorded by bench_watch.py in extra_info).
@@ -63,7 +67,9 @@ WATCH = [
      "<= 0.2 s interval + 50 ms"),
     ("test_registering_a_robots_topics", "a robot's topics registered", ""),
     ("test_setting_a_new_robots_description", "a new robot's description set", ""),
-    ("test_setting_a_large_description", "a 1.5 MB description set", ""),
+    ("test_setting_a_large_description[parsed]", "a 1.5 MB description set, parsed", ""),
+    ("test_setting_a_large_description[cached]",
+     "a 1.5 MB description set, identification cached", ""),
 ]
 
 # (label, slower benchmark, faster benchmark, target)
@@ -76,6 +82,9 @@ RATIOS = [
      "test_iterate_1e6_python_constraint", "test_enumerate_1e6_fast", ">= 50"),
     ("10^6 robots: csp enumeration + partition / fast enumeration + partition",
      "test_enumerate_1e6_csp", "test_enumerate_1e6_fast", ""),
+    ("`watch` topic placement: 200 robots / 20 robots (linear: about 10)",
+     "test_placing_the_topic_graph[200 robots x 100 topics]",
+     "test_placing_the_topic_graph[20 robots x 100 topics]", ""),
 ]
 
 
@@ -100,7 +109,7 @@ def table(run: dict[str, Any]) -> str:
     for name, label, target in ROWS:
         if name in medians:
             lines.append(f"| {label} | {seconds(medians[name])} | {rounds[name]} | {target} |")
-    extra = {b["name"].split("[")[0]: b.get("extra_info", {}) for b in run["benchmarks"]}
+    extra = {b["name"]: b.get("extra_info", {}) for b in run["benchmarks"]}
     watched = [(label, extra[name], target) for name, label, target in WATCH
                if "median_ms" in extra.get(name, {})]
     if watched:
