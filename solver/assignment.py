@@ -12,17 +12,17 @@ Not here: finding the combination from ROS metadata (the identification modules 
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 
 from solver.constraints import Value
 from solver.errors import InputError, did_you_mean
 from solver.model import violated_constraints
 from solver.partition import Configuration
-from solver.rules import Characteristic
+from solver.rules import Characteristic, RuleSet
 from solver.solution import Solution
 
-__all__ = ["Assignment", "assign", "parse_combination"]
+__all__ = ["Assignment", "assign", "check_names", "parse_combination"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -54,6 +54,16 @@ def parse_combination(pairs: list[str] | tuple[str, ...]) -> dict[str, str]:
     return combination
 
 
+def check_names(rules: RuleSet, names: Iterable[str]) -> None:
+    """:class:`InputError` for the first name that is not a characteristic of ``rules``: a
+    characteristic name is a usage mistake, unlike a value the rules do not allow."""
+    for name in names:
+        if name not in rules.names:
+            raise InputError.at("<arguments>", f"unknown characteristic {name!r}"
+                                               f"{did_you_mean(name, rules.names)}; the rules "
+                                               f"({rules.file}) have: {', '.join(rules.names)}")
+
+
 def assign(solution: Solution, combination: Mapping[str, str | int]) -> Assignment:
     """The configuration for ``combination`` (characteristic name -> value) in ``solution``.
 
@@ -61,11 +71,7 @@ def assign(solution: Solution, combination: Mapping[str, str | int]) -> Assignme
     unknown or disallowed *values* are a normal outcome, answered with the default.
     """
     rules = solution.rules
-    for name in combination:
-        if name not in rules.names:
-            raise InputError.at("<arguments>", f"unknown characteristic {name!r}"
-                                               f"{did_you_mean(name, rules.names)}; the rules "
-                                               f"({rules.file}) have: {', '.join(rules.names)}")
+    check_names(rules, combination)
     given = tuple((c.name, str(combination[c.name])) for c in rules.characteristics
                   if c.name in combination)
     reasons: list[str] = []

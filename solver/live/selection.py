@@ -27,8 +27,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from solver.assignment import Assignment, assign
-from solver.errors import InputError, did_you_mean
+from solver.assignment import Assignment, assign, check_names
 from solver.formats import assignment_data
 from solver.identify.profile import Profile
 from solver.live.discovery import normalise_namespace
@@ -105,12 +104,7 @@ def choose(robot: LiveRobot, given: Mapping[str, str], solution: Solution
     :class:`~solver.errors.InputError` for a characteristic name the rules do not have.
     """
     rules = solution.rules
-    for name in given:
-        if name not in rules.names:
-            # As solver.assign words it: a characteristic name is a usage mistake.
-            raise InputError.at("<arguments>", f"unknown characteristic {name!r}"
-                                               f"{did_you_mean(name, rules.names)}; the rules "
-                                               f"({rules.file}) have: {', '.join(rules.names)}")
+    check_names(rules, given)
     notes: list[str] = []
     known = {tuple(c.values): c.assignment for c in robot.combinations}
     candidates = [dict(c.values) for c in robot.combinations]
