@@ -1,4 +1,4 @@
-"""The README stays true: its command outputs, its reproduction table, its test command."""
+"""The README and the docs/ pages stay true: command outputs, reproduction table, test command."""
 
 from __future__ import annotations
 
@@ -13,12 +13,19 @@ from solver.reproduce import compare
 from tests.conftest import ROOT, run_cli
 
 README = (ROOT / "README.md").read_text(encoding="utf-8")
+PAGES = [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
+
+
+def _text(page: Path) -> str:
+    return page.read_text(encoding="utf-8")
 
 
 def console_examples() -> list[tuple[str, str]]:
     """(command, expected output) for every ``$ teleop-ui ...`` line of a ```console block."""
     examples = []
-    for block in re.findall(r"```console\n(.*?)```", README, re.S):
+    blocks = [block for page in PAGES for block in re.findall(r"```console\n(.*?)```",
+                                                              _text(page), re.S)]
+    for block in blocks:
         command = None
         output: list[str] = []
         for line in block.splitlines():
@@ -43,7 +50,7 @@ def test_every_console_example_prints_what_the_readme_shows(command: str, expect
                                                             tmp_path: Path) -> None:
     # Run where the repository's files are visible under the same names but anything the
     # command writes (reports, plots) lands in a scratch folder, not in the repository.
-    for name in ("rules", "tests", "docs"):
+    for name in ("rules", "tests", "docs", "examples"):
         (tmp_path / name).symlink_to(ROOT / name)
     words = shlex.split(command)
     assert words[0] == "teleop-ui"
@@ -52,7 +59,7 @@ def test_every_console_example_prints_what_the_readme_shows(command: str, expect
 
 
 def test_the_reproduction_table_is_the_output_of_reproduce() -> None:
-    table = README.split("<!-- reproduction-table -->\n", 1)[1].split(
+    table = _text(ROOT / "docs" / "reproduction.md").split("<!-- reproduction-table -->\n", 1)[1].split(
         "<!-- /reproduction-table -->", 1)[0]
     assert table == render_comparisons(compare(), "markdown")
 
