@@ -59,7 +59,8 @@ def test_every_console_example_prints_what_the_readme_shows(command: str, expect
 
 
 def test_the_reproduction_table_is_the_output_of_reproduce() -> None:
-    table = _text(ROOT / "docs" / "reproduction.md").split("<!-- reproduction-table -->\n", 1)[1].split(
+    page = _text(ROOT / "docs" / "reproduction.md")
+    table = page.split("<!-- reproduction-table -->\n", 1)[1].split(
         "<!-- /reproduction-table -->", 1)[0]
     assert table == render_comparisons(compare(), "markdown")
 

@@ -12,7 +12,7 @@ if ! command -v roscore >/dev/null 2>&1; then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends ros-core
 fi
 
-python3 -m pip install -q -e '.[test]'
+python3 -m pip install -q -e '.[test,xacro]'
 python3 -m ruff check solver tests benchmarks tools
 python3 -m mypy
 python3 -m pytest tests benchmarks --benchmark-disable "$@"

@@ -47,7 +47,8 @@ def run(args: argparse.Namespace) -> int:
     with _progress() as progress:
         fleet = identify_fleet(args.folder, rules=rules, profile=profile,
                                package_path=package_path(args.package_path),
-                               xacro_args=xacro_arguments(args.xacro_args), progress=progress)
+                               xacro_args=xacro_arguments(args.xacro_args), progress=progress,
+                               trust_xacro=args.trust_xacro)
     team = None
     if args.output:
         reference = None

@@ -19,6 +19,10 @@ def add_description_options(parser: argparse.ArgumentParser) -> None:
     add_profile(parser)
     parser.add_argument("--arg", dest="xacro_args", action="append", default=[],
                         metavar="NAME:=VALUE", help="xacro argument (repeatable)")
+    parser.add_argument("--trust-xacro", action="store_true",
+                        help="compile .xacro files: xacro runs Python code written in the file, "
+                             "so only for files you trust (run in a child process with CPU, "
+                             "memory and time limits; see docs/security.md)")
     parser.add_argument("--package-path", action="append", default=[], metavar="DIR",
                         help="folder holding ROS packages for $(find pkg) and package:// "
                              "(repeatable; default: $TELEOP_UI_PACKAGE_PATH)")
@@ -28,7 +32,8 @@ def register(subparsers: Any) -> None:
     parser: argparse.ArgumentParser = subparsers.add_parser(
         "identify", help="identify a robot (kinematic type, sensors, motion controls) from its "
                          "URDF, SRDF, topics or bag",
-        description="Read a robot's URDF (xacro is compiled first), and optionally its SRDF, "
+        description="Read a robot's URDF (a .xacro only with --trust-xacro), and optionally "
+                    "its SRDF, "
                     "topic lists and bags; print its structure, the rule set's kinematic type, "
                     "a confidence, the evidence, its sensors and motion controls. With --team, "
                     "also each characteristic combination and its UI configuration.")
@@ -92,7 +97,8 @@ def run(args: argparse.Namespace) -> int:
     result = identify(args.description, srdf=args.srdf, topic_lists=args.topics,
                       bags=args.bag, xacro_args=xacro_arguments(args.xacro_args),
                       package_path=package_path(args.package_path),
-                      rules=team.rules if team else rules, profile=profile)
+                      rules=team.rules if team else rules, profile=profile,
+                      trust_xacro=args.trust_xacro)
     solution = solve(team) if team else None
     found = combinations(result, solution, profile) if solution else ()
     if args.format == "json":

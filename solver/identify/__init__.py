@@ -10,7 +10,8 @@ Modules, one concept each:
 =====================  ==========================================================
 ``safexml``            safe XML parsing (no entities, no network, size cap)
 ``urdf``               URDF text -> checked tree of links, joints, sensors, plugins
-``xacros``             xacro -> URDF text via xacrodoc, package path resolution
+``xacros``             trusted xacro -> URDF text in a limited child process; packages
+``xacro_child``        that child: resource limits, file fence, no environment lookups
 ``srdf``               MoveIt SRDF: groups, chains, end effectors, virtual joints
 ``profile``            the identification profile (patterns, rules, mappings)
 ``body``               body parts from the tree: wheels, rotors, limbs, grippers
@@ -30,7 +31,7 @@ For a live ROS master (``teleop-ui watch``): :func:`identify_urdf` takes URDF *t
 :class:`IdentificationCache` keeps results by content; :func:`sensors_from_topics` and
 :func:`controls_from_topics` take (topic, type, direction) :class:`Topic` triples.
 
-Heavy libraries (lxml, xacrodoc, rosbags) are imported inside the functions that use them.
+Heavy libraries (lxml, xacro, rosbags) are imported inside the functions that use them.
 """
 
 from solver.identify.combinations import Combination, combinations

@@ -103,8 +103,12 @@ def _companion(path: Path, *suffixes: str) -> Path | None:
 def identify_fleet(folder: str | Path, *, rules: RuleSet, profile: Profile,
                    package_path: Sequence[str | Path] = (),
                    xacro_args: Mapping[str, str] | None = None,
-                   progress: Progress | None = None) -> Fleet:
-    """Identify every robot in ``folder``; failures are kept with their reason."""
+                   progress: Progress | None = None, trust_xacro: bool = False) -> Fleet:
+    """Identify every robot in ``folder``; failures are kept with their reason.
+
+    Finding a ``.xacro`` file in a folder never means trusting it: without ``trust_xacro`` it
+    is a failed robot whose reason says how to opt in.
+    """
     paths = find_descriptions(folder)
     entries = []
     for done, path in enumerate(paths):
@@ -117,7 +121,8 @@ def identify_fleet(folder: str | Path, *, rules: RuleSet, profile: Profile,
         try:
             result = identify(path, srdf=srdf, topic_lists=[topics] if topics else (),
                               bags=[bag] if bag else (), xacro_args=xacro_args,
-                              package_path=package_path, rules=rules, profile=profile)
+                              package_path=package_path, rules=rules, profile=profile,
+                              trust_xacro=trust_xacro)
         except SolverError as error:
             entries.append(FleetEntry(name, str(path), None, str(error).splitlines()[0]))
             continue

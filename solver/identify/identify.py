@@ -11,7 +11,8 @@ Two entry points:
       cache = IdentificationCache()
       result = cache.identify_urdf(urdf_text, topics=[TopicSource("master", triples)])
 
-* :func:`identify` reads files: a URDF or xacro (compiled first, :mod:`solver.identify.xacros`),
+* :func:`identify` reads files: a URDF, or a xacro the caller trusts (compiled first in a limited
+  child process, :mod:`solver.identify.xacros`),
   an SRDF, topic lists and bags, then calls :func:`identify_urdf`.
 
 The rule set decides the kinematic types and sensor types results are mapped to (default: the
@@ -29,6 +30,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from solver.errors import InputError
 from solver.identify.bags import read_bag_topics
 from solver.identify.body import Body, detect_body
 from solver.identify.interfaces import (
@@ -131,17 +133,24 @@ def identify(description: str | Path, *, srdf: str | Path | None = None,
              topic_lists: Sequence[str | Path] = (), bags: Sequence[str | Path] = (),
              xacro_args: Mapping[str, str] | None = None,
              package_path: Sequence[str | Path] = (), rules: RuleSet | None = None,
-             profile: Profile | None = None) -> Identification:
-    """Identify the robot described by a URDF or xacro file (plus SRDF, topic lists, bags)."""
+             profile: Profile | None = None, trust_xacro: bool = False) -> Identification:
+    """Identify the robot described by a URDF or xacro file (plus SRDF, topic lists, bags).
+
+    A ``.xacro`` file is compiled only with ``trust_xacro=True`` (compiling xacro runs code
+    from the file: :mod:`solver.identify.xacros`); any other file is read as URDF.
+    """
     file = str(description)
-    data = read_bytes(description)
     notes: tuple[str, ...] = ()
-    if is_xacro(file, data):
+    if is_xacro(file):
+        if not trust_xacro:
+            raise InputError.at(file, "xacro file: compiling xacro runs Python code written in "
+                                      "the file; pass --trust-xacro for a file you trust, or "
+                                      "give its expanded .urdf", code="xacro-untrusted")
         compiled = compile_xacro(description, args=xacro_args, package_path=package_path)
         text: str | bytes = compiled.text
         notes = tuple(f"xacro: {warning}" for warning in compiled.warnings)
     else:
-        text = data
+        text = read_bytes(description)
     srdf_text = None if srdf is None else read_bytes(srdf)
     sources = [TopicSource(Path(t).name, read_topic_list(t)) for t in topic_lists]
     sources += [TopicSource(f"bag {Path(b).name}", read_bag_topics(b)) for b in bags]

@@ -1,45 +1,60 @@
-"""Compiling xacro to URDF text with ``xacrodoc`` (the ``xacro`` library, no ROS install needed).
+"""Compiling xacro to URDF text, only when the user trusts the file, in a limited child process.
 
-``$(find pkg)`` and ``package://`` resolve through, in order: the folders given as
-``package_path`` (``--package-path``, or ``TELEOP_UI_PACKAGE_PATH`` joined with ``:``), the
-``package.xml`` folders above the xacro file itself, and ``ROS_PACKAGE_PATH`` (read by rospkg).
-A package found nowhere is a located error naming it and where it was looked for. Mesh
-``package://`` references are left as written: identification never opens a mesh.
+xacro evaluates ``${...}`` expressions as Python, and that namespace can be escaped: compiling a
+xacro file runs its author's code. So nothing compiles xacro unless the user asked for it
+(``--trust-xacro``, ``trust_xacro=True``); a ``.urdf`` file or a ``robot_description`` is always
+read as URDF, never compiled. When trusted, :func:`compile_xacro` runs
+:mod:`solver.identify.xacro_child` in a fresh interpreter with an empty environment, CPU-time,
+memory and no-file-write limits and a wall-clock timeout (:class:`XacroLimits`), and reads
+back at most the size cap. A hostile or exponential macro ends with a located error.
 
-Relative ``<xacro:include filename="...">`` paths resolve against the including file, as the
-``xacro`` command does. Every file xacro opens is first read with the size cap and checked by
-:mod:`solver.identify.safexml` (xacro itself parses with the standard library), so an include
-cannot smuggle in an entity bomb or a 100 MB file.
+``$(find pkg)`` resolves through a package map built here, with no ROS install and no rospkg:
+the ``package.xml`` folders above the xacro file (and their sibling packages), then the folders
+given as ``package_path`` (``--package-path``, or ``TELEOP_UI_PACKAGE_PATH`` joined with
+``:``), then ``ROS_PACKAGE_PATH``. A package found nowhere is a located error naming it and
+where it was looked for. The child may read files only inside the description's own folder
+(or its package) and the packages of that map; ``$(env)`` and ``$(optenv)`` are refused.
+Mesh ``package://`` references are left as written: identification never opens a mesh.
 
-xacro keeps its state in module globals and prints warnings to stderr; compilation therefore
-runs under a lock with stderr captured, and the warnings are returned to the caller.
-xacro evaluates ``${...}`` expressions (with builtins removed): compile only xacro you would
-run with the ``xacro`` command; identification of untrusted robots should use plain URDF.
-
-Not here: reading the compiled URDF (:mod:`solver.identify.urdf`).
+Not here: reading the compiled URDF (:mod:`solver.identify.urdf`); the child's fence
+(:mod:`solver.identify.xacro_child`).
 """
 
 from __future__ import annotations
 
-import contextlib
-import io
+import json
 import os
 import re
+import subprocess
+import sys
 import threading
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import IO, Any
 
+import solver
 from solver.errors import InputError
 from solver.identify.safexml import MAX_XML_BYTES, parse_xml, read_bytes
 
-__all__ = ["PACKAGE_PATH_ENV", "CompiledXacro", "compile_xacro", "is_xacro",
-           "package_path_from_env"]
+__all__ = ["PACKAGE_PATH_ENV", "CompiledXacro", "XacroLimits", "compile_xacro", "find_packages",
+           "is_xacro", "package_path_from_env"]
 
 PACKAGE_PATH_ENV = "TELEOP_UI_PACKAGE_PATH"
-_LOCK = threading.Lock()
 _MISSING = re.compile(r"Package not found: ([\w\-]+)")
+_PACKAGE_NAME = re.compile(rb"<name>\s*([A-Za-z0-9_\-]+)\s*</name>")
+# A package search stops after this many folders, so a package path of / ends quickly.
+_MAX_FOLDERS = 20_000
+_MAX_DEPTH = 6
+
+
+@dataclass(frozen=True, slots=True)
+class XacroLimits:
+    """What one trusted xacro compilation may use; past any of them it is a located error."""
+
+    cpu_seconds: int = 10
+    memory_bytes: int = 1024 * 2**20
+    wall_seconds: float = 20.0
 
 
 @dataclass(frozen=True, slots=True)
@@ -54,56 +69,169 @@ def package_path_from_env(environ: Mapping[str, str] | None = None) -> tuple[Pat
     return tuple(Path(p) for p in value.split(os.pathsep) if p)
 
 
-def is_xacro(path: str | Path, data: bytes) -> bool:
-    """A ``.xacro`` file, or XML that declares the xacro namespace."""
-    return str(path).endswith(".xacro") or b"xmlns:xacro" in data[:65536]
+def is_xacro(path: str | Path) -> bool:
+    """A file to compile with xacro: its name ends in ``.xacro``.
+
+    The content is not looked at: most expanded URDFs still declare the xacro namespace
+    (xacro writes it), and a ``.urdf`` is read as URDF whatever it declares.
+    """
+    return str(path).endswith(".xacro")
 
 
 def compile_xacro(path: str | Path, *, args: Mapping[str, str] | None = None,
-                  package_path: Sequence[str | Path] = (), display: str | None = None
-                  ) -> CompiledXacro:
-    """Compile the xacro file ``path`` to URDF text; :class:`InputError` on any problem."""
+                  package_path: Sequence[str | Path] = (), display: str | None = None,
+                  limits: XacroLimits = XacroLimits()) -> CompiledXacro:
+    """Compile the xacro file ``path`` in a limited child process; :class:`InputError` if not."""
     name = display if display is not None else str(path)
     source = Path(path).resolve()
     data = read_bytes(path, display=name)
     parse_xml(data, name)  # refuse entity bombs and malformed XML before xacro sees them
-    import xacro
-    from xacrodoc import XacroDoc, packages
-
     folders = [Path(p) for p in package_path]
     for folder in folders:
         if not folder.is_dir():
             raise InputError.at(str(folder), "package path is not a folder", code="xacro")
-    captured = io.StringIO()
-    with _LOCK, _guarded_parse(xacro), contextlib.redirect_stderr(captured):
-        packages.reset()
-        packages.walk_up_from(source)
-        if folders:
-            packages.look_in([str(f) for f in folders], priority=0)
-        xacro.init_stacks(str(source))
-        try:
-            document = XacroDoc.from_string(data.decode("utf-8"), subargs=dict(args or {}),
-                                            resolve_packages=False, rootdir=source.parent)
-            text = document.dom.toxml()
-        except InputError:
-            raise
-        except Exception as error:
-            # xacro wraps some errors in XacroException and lets others through (expat's
-            # ExpatError, NameError from ${...}, xacrodoc's PackageNotFoundError, ...): each
-            # is a problem with the user's file, reported with its message.
-            raise _xacro_error(name, data, error, folders) from None
-        finally:
-            xacro.init_stacks(None)
-    if len(text.encode("utf-8")) > MAX_XML_BYTES:
-        raise InputError.at(name, f"xacro output is larger than {MAX_XML_BYTES} bytes; refused",
-                            code="too-large")
-    warnings = tuple(line.strip() for line in captured.getvalue().splitlines() if line.strip())
+    packages = find_packages(source, folders)
+    roots = {str(own_package_root(source))} | set(packages.values())
+    request = {"source": str(source), "args": dict(args or {}), "packages": packages,
+               "roots": sorted(roots), "cpu_seconds": limits.cpu_seconds,
+               "memory_bytes": limits.memory_bytes}
+    answer = _run_child(request, name, limits)
+    if not answer.get("ok"):
+        raise _xacro_error(name, data, answer, folders)
+    text = str(answer["text"])
+    warnings = tuple(str(w) for w in answer.get("warnings", ()))
     return CompiledXacro(text, warnings)
 
 
-def _xacro_error(name: str, data: bytes, error: BaseException, folders: list[Path]
+def own_package_root(source: Path) -> Path:
+    """The folder of the package holding ``source`` (nearest ``package.xml`` above), or its own."""
+    for folder in source.parents:
+        if (folder / "package.xml").is_file():
+            return folder
+    return source.parent
+
+
+def find_packages(source: Path, package_path: Sequence[Path] = (),
+                  environ: Mapping[str, str] | None = None) -> dict[str, str]:
+    """Package name -> folder: above ``source`` and beside it, then ``package_path``, then
+    ``ROS_PACKAGE_PATH``; the first found wins, as ROS's own lookup does."""
+    env = os.environ if environ is None else environ
+    found: dict[str, str] = {}
+    budget = [_MAX_FOLDERS]
+    for folder in source.parents:
+        if (folder / "package.xml").is_file():
+            _scan(folder.parent, found, budget, depth=2)  # the package and its siblings
+            break
+    ros = [Path(p) for p in env.get("ROS_PACKAGE_PATH", "").split(os.pathsep) if p]
+    for folder in [*package_path, *ros]:
+        _scan(folder, found, budget, depth=_MAX_DEPTH)
+    return found
+
+
+def _scan(folder: Path, found: dict[str, str], budget: list[int], depth: int) -> None:
+    if budget[0] <= 0 or depth < 0:
+        return
+    budget[0] -= 1
+    manifest = folder / "package.xml"
+    if manifest.is_file():
+        try:
+            head = read_bytes(manifest, limit=1024 * 1024)
+        except InputError:
+            return
+        named = _PACKAGE_NAME.search(head)
+        if named is not None:
+            found.setdefault(named.group(1).decode(), str(folder.resolve()))
+        return  # packages do not nest
+    try:
+        children = sorted(p for p in folder.iterdir() if p.is_dir() and not p.is_symlink()
+                          and not p.name.startswith("."))
+    except OSError:
+        return
+    for child in children:
+        _scan(child, found, budget, depth - 1)
+
+
+def _run_child(request: dict[str, Any], name: str, limits: XacroLimits) -> dict[str, Any]:
+    root = str(Path(solver.__file__).resolve().parent.parent)
+    code = ("import sys; sys.path[:0] = sys.argv[1:]; "
+            "from solver.identify.xacro_child import main; main()")
+    process = subprocess.Popen(
+        [sys.executable, "-I", "-S", "-c", code, root, *_site_paths(name)],
+        stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
+        env={"PATH": os.defpath, "LANG": "C.UTF-8"}, cwd=root, start_new_session=True)
+    output: list[bytes] = []
+    reader = threading.Thread(target=_read_bounded, args=(process.stdout, output), daemon=True)
+    reader.start()
+    try:
+        if process.stdin is not None:  # always: Popen was given stdin=PIPE
+            with process.stdin:
+                process.stdin.write(json.dumps(request).encode("utf-8"))
+        process.wait(timeout=limits.wall_seconds)
+    except subprocess.TimeoutExpired:
+        _kill(process)
+        raise InputError.at(name, f"xacro did not finish within {limits.wall_seconds:g} s; "
+                                  "stopped", code="xacro-limit") from None
+    except BrokenPipeError:
+        process.wait(timeout=limits.wall_seconds)
+    reader.join(timeout=limits.wall_seconds)
+    raw = b"".join(output)
+    if process.returncode != 0 or not raw:
+        signal = -process.returncode if process.returncode < 0 else None
+        reason = {24: f"used more than {limits.cpu_seconds} s of CPU",
+                  9: f"used more than {limits.cpu_seconds} s of CPU or "
+                     f"{limits.memory_bytes // 2**20} MiB of memory"}.get(
+            signal or 0, f"ended without an answer (exit status {process.returncode})")
+        raise InputError.at(name, f"xacro {reason}; stopped", code="xacro-limit")
+    if len(raw) > 2 * MAX_XML_BYTES + 65536:
+        raise InputError.at(name, f"xacro output is larger than {MAX_XML_BYTES} bytes; refused",
+                            code="too-large")
+    try:
+        answer: dict[str, Any] = json.loads(raw)
+    except ValueError:
+        raise InputError.at(name, "xacro gave no readable answer", code="xacro") from None
+    return answer
+
+
+def _site_paths(name: str) -> list[str]:
+    # -S leaves site-packages out (no .pth files run); the child needs xacro, PyYAML and lxml.
+    try:
+        import xacro
+    except ImportError:
+        raise InputError.at(name, "xacro support is not installed: "
+                                  "pip install 'teleop-ui[xacro]'",
+                             code="missing-extra") from None
+    import lxml
+    import yaml
+
+    modules = (xacro, yaml, lxml)
+    return sorted({str(Path(m.__file__ or "").resolve().parent.parent) for m in modules})
+
+
+def _read_bounded(stream: IO[bytes] | None, output: list[bytes]) -> None:
+    if stream is None:
+        return
+    limit = 2 * MAX_XML_BYTES + 65536 + 1
+    size = 0
+    while size < limit:
+        chunk = stream.read(min(1 << 20, limit - size))
+        if not chunk:
+            break
+        output.append(chunk)
+        size += len(chunk)
+
+
+def _kill(process: subprocess.Popen[bytes]) -> None:
+    try:
+        os.killpg(process.pid, 9)
+    except OSError:
+        process.kill()
+    process.wait()
+
+
+def _xacro_error(name: str, data: bytes, answer: Mapping[str, Any], folders: list[Path]
                  ) -> InputError:
-    message = str(error).strip() or type(error).__name__
+    message = str(answer.get("message") or "xacro failed")
+    code = str(answer.get("code") or "xacro")
     missing = _MISSING.search(message)
     if missing:
         package = missing.group(1)
@@ -117,26 +245,8 @@ def _xacro_error(name: str, data: bytes, error: BaseException, folders: list[Pat
                                    f"--package-path / ${PACKAGE_PATH_ENV}: {where}; the "
                                    f"package.xml folders above {name}; and $ROS_PACKAGE_PATH",
                              line=line, path=f"$(find {package})", code="xacro-package")
-    if isinstance(error, RecursionError):
-        message = "macro recursion too deep"
-    return InputError.at(name, f"xacro: {message}", code="xacro")
-
-
-@contextlib.contextmanager
-def _guarded_parse(xacro: Any) -> Iterator[None]:
-    """Every file xacro opens passes the size cap and the safe-XML check first."""
-    original = xacro.parse
-
-    def guarded(inp: Any, filename: str | None = None) -> Any:
-        if inp is None and filename is not None:
-            target = os.path.join(xacro.root_dir, filename)
-            data = read_bytes(target, display=filename)
-            parse_xml(data, filename)
-            return original(data.decode("utf-8"))
-        return original(inp, filename)
-
-    xacro.parse = guarded
-    try:
-        yield
-    finally:
-        xacro.parse = original
+    file = answer.get("file")
+    line = answer.get("line")
+    where = str(file) if isinstance(file, str) and file else name
+    text = message if message.startswith("xacro") else f"xacro: {message}"
+    return InputError.at(where, text, line=line if isinstance(line, int) else None, code=code)

@@ -20,6 +20,7 @@ import shutil
 import signal
 import socket
 import subprocess
+import sys
 import threading
 import time
 from collections.abc import Callable, Iterable
@@ -61,10 +62,11 @@ class Roscore:
                if k not in ("ROS_MASTER_URI", "ROS_HOSTNAME", "ROS_NAMESPACE")}
         env.update(ROS_HOME=str(self.home), ROS_LOG_DIR=str(self.home / "log"),
                    ROS_IP="127.0.0.1")
-        # roscore runs `rosversion`; pip's rospkg (pulled in by xacrodoc) installs one too, which
-        # knows no ROS packages: with a virtualenv first on PATH roscore would fail to start.
-        folder = str(Path(shutil.which("roscore") or "/usr/bin/roscore").parent)
-        env["PATH"] = os.pathsep.join([folder, env.get("PATH", "")])
+        # This environment's scripts come first on PATH, as in a shell where it is activated:
+        # installing the project must not put anything there that breaks roscore (pip's
+        # rospkg, for one, installs a `rosversion` that knows no ROS packages).
+        scripts = str(Path(sys.executable).parent)
+        env["PATH"] = os.pathsep.join([scripts, env.get("PATH", "")])
         return env
 
     def start(self) -> None:
