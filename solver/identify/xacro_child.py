@@ -15,8 +15,10 @@ an empty environment) and sends one JSON request on stdin; this module
 * answers with one JSON object on stdout: the URDF text and xacro's warnings, or an error
   message with the file and line it concerns.
 
-The fence and the limits bound what a hostile file can do; they are not a sandbox against
-native code. What ``--trust-xacro`` means is documented in docs/security.md.
+The Python-level fence alone is not a sandbox (an escaped expression reaches ``_io.open``,
+``os.mknod``, lxml's C writer, ``$(eval)`` with builtins): the kernel fences of
+:mod:`solver.identify.confine` (Landlock, seccomp), set up once xacro is loaded, are what hold.
+What ``--trust-xacro`` means is documented in docs/security.md.
 
 Not here: starting the process, the wall-clock timeout and reading its answer
 (:mod:`solver.identify.xacros`).
@@ -37,6 +39,7 @@ from pathlib import Path
 from typing import Any
 
 from solver.errors import SolverError
+from solver.identify.confine import Confinement, confine
 
 __all__ = ["main"]
 
@@ -113,6 +116,10 @@ def _compile(request: dict[str, Any]) -> dict[str, Any]:
     if len(text.encode("utf-8")) > _MAX_FILE_BYTES:
         raise Refused(f"xacro output is larger than {_MAX_FILE_BYTES} bytes; refused")
     warnings = [line.strip() for line in captured.getvalue().splitlines() if line.strip()]
+    missing = fence.confinement.missing
+    if missing:
+        warnings.insert(0, f"this system gave no {' and no '.join(missing)}: the file was "
+                           "compiled with fewer fences (docs/security.md)")
     return {"text": text, "warnings": warnings[:100]}
 
 
@@ -121,6 +128,14 @@ def _describe(error: BaseException) -> dict[str, Any]:
     exc = getattr(error, "exc", None)
     if isinstance(exc, BaseException) and not str(error).strip():
         message = str(exc).strip() or type(exc).__name__
+    elif isinstance(exc, MemoryError):  # xacro wraps it: "when evaluating expression ..." alone
+        message = f"out of memory (the limit for xacro) {message}"
+    elif isinstance(exc, BaseException) and str(exc).strip() not in message:
+        message = f"{str(exc).strip() or type(exc).__name__}: {message}"
+    elif isinstance(exc, BaseException) and error.args and str(exc) in str(error.args[0]):
+        # xacro's "<class 'E'>: text" message already holds the cause it appends once more
+        suffix = str(getattr(error, "suffix", None) or "")
+        message = re.sub(r"^<class '(\w+)'>: ", r"\1: ", f"{error.args[0]} {suffix}".strip())
     found = _FILE_LINE.search(message)
     return {"message": message[:2000], "file": found.group(1) if found else None}
 
@@ -131,6 +146,7 @@ class _Fence:
     def __init__(self, roots: tuple[Path, ...]) -> None:
         self.roots = tuple(root.resolve() for root in roots)
         self._open: Callable[..., Any] = builtins.open
+        self.confinement = Confinement(0, seccomp=False)
 
     def check(self, file: str | os.PathLike[str]) -> Path:
         path = Path(os.fspath(file))
@@ -186,6 +202,11 @@ class _Fence:
         parse_xml(warm_up.encode(), "<warm-up>")
         xml.dom.minidom.parseString(warm_up).toxml()
 
+        # The kernel fences: reads beneath the roots and the interpreter's own folders only, no
+        # writes, no sockets, no processes (solver.identify.confine). The Python-level fence
+        # below cannot promise that: an escaped expression reaches _io.open, os.mknod, lxml's C
+        # file writer.
+        self.confinement = confine([*self.roots, *sys.path])
         builtins.open = self.fenced_open
         io.open = self.fenced_open
         _disarm()

@@ -5,8 +5,10 @@ xacro file runs its author's code. So nothing compiles xacro unless the user ask
 (``--trust-xacro``, ``trust_xacro=True``); a ``.urdf`` file or a ``robot_description`` is always
 read as URDF, never compiled. When trusted, :func:`compile_xacro` runs
 :mod:`solver.identify.xacro_child` in a fresh interpreter with an empty environment, CPU-time,
-memory and no-file-write limits and a wall-clock timeout (:class:`XacroLimits`), and reads
-back at most the size cap. A hostile or exponential macro ends with a located error.
+memory and no-file-write limits, kernel fences (:mod:`solver.identify.confine`: read-only
+access to its packages, no sockets, no processes) and a wall-clock timeout
+(:class:`XacroLimits`), and reads back at most the size cap. A hostile or exponential macro
+ends with a located error.
 
 ``$(find pkg)`` resolves through a package map built here, with no ROS install and no rospkg:
 the ``package.xml`` folders above the xacro file (and their sibling packages), then the folders
@@ -31,14 +33,17 @@ import threading
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import IO, Any
+from typing import IO, TYPE_CHECKING, Any
 
 import solver
-from solver.errors import InputError
-from solver.identify.safexml import MAX_XML_BYTES, parse_xml, read_bytes
+from solver.errors import Fault, InputError, Location
+from solver.identify.safexml import MAX_XML_BYTES, line_of, parse_xml, read_bytes
 
 __all__ = ["PACKAGE_PATH_ENV", "CompiledXacro", "XacroLimits", "compile_xacro", "find_packages",
-           "is_xacro", "package_path_from_env"]
+           "is_xacro", "package_path_from_env", "uncompiled_xacro"]
+
+if TYPE_CHECKING:
+    from lxml import etree
 
 PACKAGE_PATH_ENV = "TELEOP_UI_PACKAGE_PATH"
 _MISSING = re.compile(r"Package not found: ([\w\-]+)")
@@ -76,6 +81,34 @@ def is_xacro(path: str | Path) -> bool:
     (xacro writes it), and a ``.urdf`` is read as URDF whatever it declares.
     """
     return str(path).endswith(".xacro")
+
+
+def uncompiled_xacro(root: etree._Element, file: str) -> list[Fault]:
+    """A located warning for each outermost ``<xacro:...>`` element of a document read as URDF.
+
+    Such a file is never compiled (a ``.urdf``, a ``robot_description``): its xacro elements,
+    and whatever a macro body holds, are not part of the robot, and the user should know.
+    """
+    found: list[Fault] = []
+    stack = [root]
+    while stack:
+        element = stack.pop()
+        tag = element.tag
+        if not isinstance(tag, str):
+            continue  # comments and processing instructions
+        # Declared, the prefix maps to xacro's namespace; undeclared, safexml keeps the element
+        # under its prefixed name. xacro itself goes by the prefix, so does this.
+        namespace, _, local = tag[1:].partition("}") if tag.startswith("{") else ("", "", tag)
+        if tag.startswith("xacro:"):
+            local = tag.removeprefix("xacro:")
+        elif element.prefix != "xacro" and "xacro" not in namespace:
+            stack.extend(reversed(list(element)))
+            continue
+        found.append(Fault(Location(file, line_of(element), None, f"xacro:{local}"),
+                           f"<xacro:{local}> ignored: this file is read as URDF and never "
+                           "compiled (compiling xacro runs code from the file; a .xacro file "
+                           "is compiled with --trust-xacro)", "xacro-ignored"))
+    return found
 
 
 def compile_xacro(path: str | Path, *, args: Mapping[str, str] | None = None,

@@ -7,7 +7,8 @@ from pathlib import Path
 import pytest
 
 from solver.errors import InputError
-from solver.identify.identify import identify
+from solver.identify.identification import identify, identify_urdf
+from solver.identify.urdf import parse_urdf
 from solver.identify.xacros import XacroLimits, compile_xacro, find_packages, package_path_from_env
 from tests.conftest import run_cli
 
@@ -141,6 +142,17 @@ def test_a_urdf_that_declares_the_xacro_namespace_is_read_not_compiled(tmp_path:
     result = identify(path)
     assert result.robot == "r"
     assert not marker.exists()
+    assert [(w.location.line, w.code) for w in result.warnings] == [(3, "xacro-ignored")]
+    assert "<xacro:property> ignored" in result.warnings[0].message
+
+
+def test_a_robot_description_with_xacro_elements_is_read_with_a_located_warning_each() -> None:
+    text = robot('  <link name="base_link"/>\n  <xacro:include filename="/etc/passwd"/>\n'
+                 '  <xacro:macro name="m" params=""><link name="inside_a_macro"/>'
+                 '</xacro:macro>').replace(' xmlns:xacro="http://www.ros.org/wiki/xacro"', "")
+    result = identify_urdf(text, file="/robot_description")
+    assert [w.location.line for w in result.warnings if w.code == "xacro-ignored"] == [4, 5]
+    assert [link.name for link in parse_urdf(text, strict=False).links] == ["base_link"]
 
 
 def test_a_fleet_folder_never_implies_trust(tmp_path: Path) -> None:
