@@ -6,9 +6,12 @@ Usage::
 
 Each corpus robot is identified from its URDF (and SRDF when it has one) with the shipped
 profile and the article's rule set, exactly as ``teleop-ui identify`` would. Printed, as
-Markdown: the structure confusion table (truth label x reading), the structure score (strict:
-the label itself; lenient: a label ending in ``?`` also accepts a structure its
-``uncertainty_note`` names), sensor kinds and counts, motion controls, and every miss.
+Markdown, for the whole corpus and split by source (the original 31 ROS-repository robots, rows
+1-31 of truth.csv, and the newer package sources, rows 32 on): structure accuracy on the
+certain labels (no trailing ``?``) per label, the structure confusion table (truth label x
+reading), the lenient score (a label ending in ``?`` also accepts a structure its
+``uncertainty_note`` names), descriptions refused (exit 2), warnings, sensor precision and
+recall, motion controls, and every miss.
 
 The corpus is read in place and never copied. When it is absent the script says so and exits 0.
 """
@@ -30,6 +33,11 @@ DEFAULT_CORPUS = ROOT.parent / "shared" / "corpus"
 # Truth labels spelled differently from the profile's structure names.
 ALIASES = {"biped/lower-body": "Biped", "legged mobile manipulator": "Legged Mobile Manipulator",
            "aerial manipulator": "Aerial Manipulator"}
+# Readings a truth label also accepts: the corpus labels standalone grippers Hand (its README:
+# "the README has no gripper label, Hand is the nearest extra label").
+ACCEPTS = {"Hand": {"Gripper"}}
+# truth.csv rows (1-based, header excluded) from the original ROS repositories.
+ORIGINAL_ROWS = 31
 
 
 def label_of(text: str, structures: tuple[str, ...]) -> str:
@@ -54,6 +62,8 @@ class Score:
     def __init__(self, structures: tuple[str, ...]) -> None:
         self.structures = structures
         self.robots = self.strict = self.lenient = self.sensor_exact = 0
+        self.certain = self.certain_right = self.refused = self.warned = 0
+        self.per_label: Counter[tuple[str, bool]] = Counter()
         self.kind_hits = self.kind_predicted = self.kind_truth = 0
         self.control_robots = self.control_exact = 0
         self.control_hits = self.control_predicted = self.control_truth = 0
@@ -66,16 +76,31 @@ class Score:
         self.sensors(row, result)
         self.controls(row, result)
 
+    def refuse(self, row: dict[str, str], error: SolverError) -> None:
+        self.robots += 1
+        self.refused += 1
+        self.misses.append(f"{row['robot']}: not identified (exit 2): {error}")
+        self.confusion[(row["kinematic_type"], "(exit 2)")] += 1
+        if not row["kinematic_type"].endswith("?"):
+            self.certain += 1
+            self.per_label[(row["kinematic_type"], False)] += 1
+
     def structure(self, row: dict[str, str], result: Identification) -> None:
         label = label_of(row["kinematic_type"], self.structures)
         self.confusion[(row["kinematic_type"], result.structure)] += 1
+        self.warned += bool(result.warnings)
+        right = result.structure == label or result.structure in ACCEPTS.get(label, set())
+        if not row["kinematic_type"].endswith("?"):
+            self.certain += 1
+            self.certain_right += right
+            self.per_label[(row["kinematic_type"], right)] += 1
         note = row.get("uncertainty_note", "").casefold()
-        alternatives = {label}
+        alternatives = {label, *ACCEPTS.get(label, set())}
         if row["kinematic_type"].endswith("?"):
             alternatives |= {s for s in self.structures if s.casefold() in note}
-        self.strict += result.structure == label
+        self.strict += right
         self.lenient += result.structure in alternatives
-        if result.structure != label:
+        if not right:
             self.misses.append(f"{row['robot']}: structure {result.structure}, labelled "
                                f"{row['kinematic_type']}")
 
@@ -107,6 +132,23 @@ class Score:
             extra = ", ".join(sorted(got - labelled)) or "-"
             self.misses.append(f"{row['robot']}: motion controls missing {missing}; "
                                f"extra {extra}")
+
+    def summary(self) -> list[str]:
+        """One table row: robots, certain-label accuracy, lenient, exit 2, sensor P/R."""
+        def share(part: int, whole: int) -> str:
+            return f"{part}/{whole} ({100 * part / whole:.0f}%)" if whole else "-"
+        return [share(self.certain_right, self.certain), share(self.lenient, self.robots),
+                str(self.refused), str(self.warned),
+                share(self.kind_hits, self.kind_predicted), share(self.kind_hits,
+                                                                   self.kind_truth)]
+
+    def per_label_table(self) -> list[str]:
+        labels = sorted({label for label, _ in self.per_label})
+        lines = ["| certain label | right | robots |", "|---|---:|---:|"]
+        for label in labels:
+            right = self.per_label[(label, True)]
+            lines.append(f"| {label} | {right} | {right + self.per_label[(label, False)]} |")
+        return lines
 
     def report(self) -> str:
         lines = ["Structure confusion (rows: label in truth.csv, columns: `structure` read):",
@@ -147,17 +189,28 @@ def main(argv: list[str] | None = None) -> int:
     with truth_file.open(encoding="utf-8") as stream:
         rows = list(csv.DictReader(stream))
     score = Score(profile.structure_names)
-    for row in rows:
+    parts = {"original (rows 1-31)": Score(profile.structure_names),
+             f"newer (rows 32-{len(rows)})": Score(profile.structure_names)}
+    for number, row in enumerate(rows, start=1):
+        part = list(parts.values())[number > ORIGINAL_ROWS]
         srdf = args.corpus / row["srdf"] if row["srdf"] else None
         try:
             result = identify(args.corpus / row["file"], srdf=srdf, rules=rules,
                               profile=profile)
         except SolverError as error:
-            score.misses.append(f"{row['robot']}: not identified: {error}")
-            score.confusion[(row["kinematic_type"], "(error)")] += 1
+            score.refuse(row, error)
+            part.refuse(row, error)
             continue
         score.add(row, result)
-    print(f"Corpus: {len(rows)} robots ({truth_file})\n")
+        part.add(row, result)
+    print(f"Corpus: {len(rows)} descriptions ({truth_file})\n")
+    print("| source | structure right (certain labels) | lenient (all labels) | exit 2 | "
+          "with warnings | sensor precision | sensor recall |")
+    print("|---|---:|---:|---:|---:|---:|---:|")
+    for name, part in [*parts.items(), ("all", score)]:
+        print(f"| {name} | " + " | ".join(part.summary()) + " |")
+    print()
+    print("\n".join(score.per_label_table()) + "\n")
     print(score.report(), end="")
     return 0
 

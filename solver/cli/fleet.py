@@ -48,7 +48,7 @@ def run(args: argparse.Namespace) -> int:
         fleet = identify_fleet(args.folder, rules=rules, profile=profile,
                                package_path=package_path(args.package_path),
                                xacro_args=xacro_arguments(args.xacro_args), progress=progress,
-                               trust_xacro=args.trust_xacro)
+                               trust_xacro=args.trust_xacro, strict=args.strict)
     team = None
     if args.output:
         reference = None
@@ -68,6 +68,9 @@ def run(args: argparse.Namespace) -> int:
                          [False, False, False, True, True, False]))
         for entry in fleet.failed:
             write(f"not identified: {entry.name}: {entry.error}\n")
+        for found in fleet.identified:
+            for warning in found.warnings:
+                write(f"warning: {warning}\n")
     if team is not None:
         write_atomic(args.output, team)
         print(f"wrote {args.output}", file=sys.stderr)
@@ -86,7 +89,11 @@ class _progress:
         from rich.console import Console
         from rich.progress import Progress
 
-        self._bar = Progress(transient=True, console=Console(stderr=True))
+        from solver.cli._terminal import raw_stream
+
+        # rich writes its own escape sequences: give it the terminal itself (the names it shows
+        # are escaped in _rich).
+        self._bar = Progress(transient=True, console=Console(file=raw_stream(sys.stderr)))
         self._bar.start()
         self._task: Any = None
         return self._rich
@@ -101,7 +108,12 @@ class _progress:
             print(f"[{done + 1}/{total}] {name}", file=sys.stderr, flush=True)
 
     def _rich(self, done: int, total: int, name: str) -> None:
+        from rich.markup import escape
+
+        from solver.cli._terminal import escape_controls
+
         if self._task is None:
             self._task = self._bar.add_task("identifying", total=total)
         self._bar.update(self._task, completed=done,
-                         description=f"identifying {name}" if name else "done")
+                         description=f"identifying {escape(escape_controls(name))}" if name
+                         else "done")

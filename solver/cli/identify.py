@@ -23,6 +23,10 @@ def add_description_options(parser: argparse.ArgumentParser) -> None:
                         help="compile .xacro files: xacro runs Python code written in the file, "
                              "so only for files you trust (run in a child process with CPU, "
                              "memory and time limits; see docs/security.md)")
+    parser.add_argument("--strict", action="store_true",
+                        help="treat the description's and SRDF's warnings (flaws read past: a "
+                             "missing link, a duplicate, a joint type outside the spec) as "
+                             "errors, exit 2")
     parser.add_argument("--package-path", action="append", default=[], metavar="DIR",
                         help="folder holding ROS packages for $(find pkg) and package:// "
                              "(repeatable; default: $TELEOP_UI_PACKAGE_PATH)")
@@ -88,7 +92,7 @@ def load_rules_and_profile(rules: str | None, profile: str | None) -> tuple[Rule
 def run(args: argparse.Namespace) -> int:
     from solver.formats import dumps
     from solver.identify.combinations import combinations
-    from solver.identify.identify import identify
+    from solver.identify.identification import identify
     from solver.identify.render import identification_data, render_identification
     from solver.solution import solve
 
@@ -99,6 +103,10 @@ def run(args: argparse.Namespace) -> int:
                       package_path=package_path(args.package_path),
                       rules=team.rules if team else rules, profile=profile,
                       trust_xacro=args.trust_xacro)
+    if args.strict and result.warnings:
+        from solver.errors import InputError
+
+        raise InputError(result.warnings)
     solution = solve(team) if team else None
     found = combinations(result, solution, profile) if solution else ()
     if args.format == "json":

@@ -15,13 +15,13 @@ Modules, one concept each:
 ``srdf``               MoveIt SRDF: groups, chains, end effectors, virtual joints
 ``profile``            the identification profile (patterns, rules, mappings)
 ``body``               body parts from the tree: wheels, rotors, limbs, grippers
-``structure``          structure + kinematic type + confidence from the parts
+``classifier``         structure + kinematic type + confidence from the parts
 ``sensors``            sensors from URDF, merged, mapped to sensor types
 ``topics``             topic list files -> :class:`Topic` triples
 ``bags``               topics recorded in ROS 1/2 bags (rosbags)
 ``interfaces``         sensors and motion controls from topic triples
 ``motion``             motion controls the description itself shows
-``identify``           :func:`identify` / :func:`identify_urdf`, the cache
+``identification``     :func:`identify` / :func:`identify_urdf`, the cache
 ``combinations``       characteristic combinations -> UI configurations
 ``fleet``              a folder of robots -> a team selection
 ``render``             JSON contract and text report
@@ -36,7 +36,7 @@ Heavy libraries (lxml, xacro, rosbags) are imported inside the functions that us
 
 from solver.identify.combinations import Combination, combinations
 from solver.identify.fleet import Fleet, FleetEntry, identify_fleet, team_text
-from solver.identify.identify import (
+from solver.identify.identification import (
     Identification,
     IdentificationCache,
     TopicSource,

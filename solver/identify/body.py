@@ -22,23 +22,27 @@ profile's patterns and thresholds:
 The result, :class:`Body`, holds the parts, the counts the structure rules read
 (:meth:`Body.features`) and one plain sentence of evidence per finding.
 
-Not here: deciding the structure (:mod:`solver.identify.structure`).
+Not here: deciding the structure (:mod:`solver.identify.classifier`).
 """
 
 from __future__ import annotations
 
+from collections import deque
 from collections.abc import Iterable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
-from solver.identify.profile import Profile
+from solver.identify.profile import PartMatcher, Profile
 from solver.identify.srdf import Srdf
 from solver.identify.urdf import Joint, Urdf
 
 __all__ = ["Body", "Limb", "detect_body"]
 
 _ROTATING = ("continuous", "revolute")
-_LIMB_JOINTS = ("revolute", "continuous", "prismatic")
+# A spherical (ball) joint is outside the URDF spec but real files have it: a shoulder, a hip.
+_LIMB_JOINTS = ("revolute", "continuous", "prismatic", "spherical")
 LIMB_KINDS = ("leg", "arm", "head")
+# An unnamed pair of chains on the root this long, beside named arms higher up, are legs.
+_LEG_BY_PLACE_JOINTS = 5
 
 
 @dataclass(frozen=True, slots=True)
@@ -50,6 +54,7 @@ class Limb:
     base: str
     tip: str
     gripper: bool = False
+    named: bool = False  # some joint or link of the chain names a leg, arm or head
 
     def describe(self) -> str:
         span = self.joints[0] if len(self.joints) == 1 else \
@@ -75,13 +80,23 @@ class Body:
     planar_base: tuple[str, ...] = ()
     controlled_wheels: tuple[str, ...] = ()
     controlled_joints: tuple[str, ...] = ()
+    # Rotor-named leaf joints too few to fly (one spinning leaf is a motor or a tool).
+    not_rotors: tuple[str, ...] = ()
+    # Wheel joints of type fixed (a trimmed model): a mobile base, read with doubt.
+    fixed_wheels: tuple[str, ...] = ()
 
     def count(self, kind: str) -> int:
         return sum(1 for limb in self.limbs if limb.kind == kind)
 
     @property
     def mobile_base(self) -> bool:
-        return bool(self.wheels or self.tracks or self.drive_plugins or self.planar_base)
+        return bool(self.wheels or self.tracks or self.drive_plugins or self.planar_base
+                    or self.fixed_wheels)
+
+    @property
+    def weak_base(self) -> bool:
+        """A mobile base known only from fixed wheels or planar (virtual) joints."""
+        return self.mobile_base and not (self.wheels or self.tracks or self.drive_plugins)
 
     @property
     def flying(self) -> bool:
@@ -97,6 +112,7 @@ class Body:
             "flight_plugins": len(self.flight_plugins),
             "mobile_base": int(self.mobile_base), "flying": int(self.flying),
             "floating_base": int(bool(self.floating_base)),
+            "weak_base": int(self.weak_base),
         }
 
     def evidence(self, root: str) -> tuple[str, ...]:
@@ -112,6 +128,9 @@ class Body:
             lines.append(f"{len(self.rotors)} rotor joint(s): {_names(self.rotors)}")
         if self.flight_plugins:
             lines.append(f"flight plugin(s): {_names(self.flight_plugins)}")
+        if self.fixed_wheels:
+            lines.append(f"{len(self.fixed_wheels)} fixed wheel joint(s) (a trimmed model): "
+                         f"{_names(self.fixed_wheels)}")
         if self.planar_base:
             lines.append(f"planar base: {_names(self.planar_base)}")
         if self.floating_base:
@@ -122,9 +141,19 @@ class Body:
         if self.fingers:
             lines.append(f"{len(self.fingers)} finger/gripper joint chain(s) on "
                          f"{self.grippers} hand(s)/gripper(s): {_names(self.fingers)}")
+        if self.not_rotors:
+            lines.append(f"not flight: {len(self.not_rotors)} rotor-named joint(s) "
+                         f"({_names(self.not_rotors)}), too few to fly")
         if not lines:
             lines.append(f"no movable joints below {root}")
         return tuple(lines)
+
+
+def _main_axis(axis: tuple[float, float, float]) -> int:
+    """0, 1 or 2 for an axis along x, y or z; -1 for a slanted one."""
+    sizes = [abs(v) for v in axis]
+    top = max(sizes)
+    return sizes.index(top) if top > 0 and sorted(sizes)[1] < 1e-6 else -1
 
 
 def _names(items: Iterable[str], limit: int = 4) -> str:
@@ -142,15 +171,29 @@ class _Detector:
     def __init__(self, urdf: Urdf, profile: Profile) -> None:
         self.urdf = urdf
         self.profile = profile
+        # Document order of each joint, for deterministic listings (one pass, not one per ask).
+        self.index = {joint.name: i for i, joint in enumerate(urdf.joints)}
+        self.parts_of = PartMatcher(profile.patterns)
+        # Links with a movable joint somewhere below them (a rotor is a leaf: none below).
+        self.moving_below: set[str] = set()
+        for joint in urdf.joints:
+            if joint.movable:
+                link: str | None = joint.parent
+                while link is not None and link not in self.moving_below:
+                    self.moving_below.add(link)
+                    parent = urdf.parent_joint(link)
+                    link = None if parent is None else parent.parent
 
     def matches(self, part: str, joint: Joint) -> bool:
-        pattern = self.profile.pattern(part)
-        return pattern is not None and (pattern.search(joint.name)
-                                        or pattern.search(joint.child))
+        return part in self.parts_of(joint.name) or part in self.parts_of(joint.child)
 
     def plugin_matches(self, part: str, text: str) -> bool:
         pattern = self.profile.plugin_pattern(part)
-        return pattern is not None and pattern.search(text)
+        return pattern is not None and bool(pattern.search(text))
+
+    def on_palm(self, joint: Joint) -> bool:
+        """A movable joint on a link named as a hand or palm moves a finger."""
+        return "gripper" in self.parts_of(joint.parent)
 
     def detect(self, srdf: Srdf | None) -> Body:
         urdf = self.urdf
@@ -164,55 +207,152 @@ class _Detector:
         for joint in urdf.joints:
             if not joint.movable or joint.type not in (*_ROTATING, "prismatic"):
                 continue
-            if joint.type in _ROTATING and self.matches("rotor", joint):
-                rotors.append(joint.name)
-            elif joint.type in _ROTATING and (self.matches("wheel", joint)
-                                              or joint.name in named_by_drive):
+            # Wheels first: a wheel's motor link may be named *_rotor.
+            if joint.type in _ROTATING and (self.matches("wheel", joint)
+                                            or joint.name in named_by_drive):
                 wheels.append(joint.name)
-            elif self.matches("gripper", joint):
+            elif joint.type in _ROTATING and self.matches("rotor", joint) \
+                    and joint.child not in self.moving_below:
+                rotors.append(joint.name)
+            elif self.matches("gripper", joint) or self.on_palm(joint):
                 grippers.add(joint.name)
-        # Everything below a gripper joint belongs to the gripper (finger phalanges).
-        for name in list(grippers):
-            holder = urdf.joint(name)
-            if holder is not None:
-                grippers.update(j.name for j in urdf.subtree_joints(holder.child) if j.movable)
+        not_rotors: list[str] = []
+        if len(rotors) < self.profile.limb("min_rotors"):
+            # One spinning leaf is a motor or a tool, not flight.
+            not_rotors, rotors = rotors, []
         tracks = [p.filename or p.name for p in track_plugins]
         tracks += [j.name for j in urdf.joints if self.matches("track", j)]
-        special = set(wheels) | set(rotors) | grippers
-        limbs, trunk, gripper_hosts = self._limbs(special, grippers)
-        finger_roots = [name for name in sorted(grippers, key=self._order)
-                        if (finger := urdf.joint(name)) is not None and finger.actuated
-                        and not self._below_gripper(finger, grippers)]
+        fixed_wheels = [j.name for j in urdf.joints if j.type == "fixed"
+                        and self.matches("wheel", j)] if not wheels else []
         floating = [j.name for j in urdf.joints if j.type == "floating"]
         planar = [j.name for j in urdf.joints if j.type == "planar"]
-        if srdf is not None:
-            for virtual in srdf.virtual_joints:
-                if virtual.type == "planar":
-                    planar.append(f"SRDF virtual joint {virtual.name} (planar)")
-                elif virtual.type == "floating":
-                    floating.append(f"SRDF virtual joint {virtual.name} (floating)")
+        placing = self._root_axes()
+        if len(placing) == 6:
+            floating.append(f"root joints {', '.join(placing)} (x, y, z and three turns)")
+        elif len(placing) == 3:
+            planar.append(f"root joints {', '.join(placing)} (x, y and a turn about z)")
+        base = set(wheels) | set(rotors) | set(placing)
+        grippers = self._gripper_closure(grippers)
+        limbs, trunk, gripper_hosts = self._limbs(base | grippers, grippers)
+        fingers = self._finger_groups(limbs)
+        if fingers:
+            grippers = self._gripper_closure(grippers | fingers)
+            limbs, trunk, gripper_hosts = self._limbs(base | grippers, grippers)
+        limbs = self._legs_at_the_pelvis(limbs)
+        finger_tips = self._finger_tips(grippers)
+        for virtual in srdf.virtual_joints if srdf is not None else ():
+            if virtual.type in ("planar", "floating"):
+                (planar if virtual.type == "planar" else floating).append(
+                    f"SRDF virtual joint {virtual.name} ({virtual.type})")
         controlled = urdf.controlled_joints
         limb_joints = [name for limb in limbs for name in limb.joints] + trunk
         return Body(
             wheels=tuple(wheels), rotors=tuple(rotors), tracks=tuple(dict.fromkeys(tracks)),
             drive_plugins=tuple(dict.fromkeys(p.filename or p.name for p in drive)),
             flight_plugins=tuple(dict.fromkeys(p.filename or p.name for p in flight)),
-            limbs=tuple(limbs), trunk=tuple(trunk), fingers=tuple(finger_roots),
+            limbs=tuple(limbs), trunk=tuple(trunk), fingers=tuple(finger_tips),
             grippers=len(gripper_hosts), floating_base=tuple(floating),
             planar_base=tuple(planar),
             controlled_wheels=tuple(w for w in wheels if w in controlled),
-            controlled_joints=tuple(j for j in limb_joints if j in controlled))
+            controlled_joints=tuple(j for j in limb_joints if j in controlled),
+            not_rotors=tuple(not_rotors), fixed_wheels=tuple(fixed_wheels))
+
+    def _legs_at_the_pelvis(self, limbs: list[Limb]) -> list[Limb]:
+        """Two unnamed long chains on the root, below a body whose arms hang higher: legs.
+
+        A humanoid's legs hang from its pelvis (the root) and its arms from the torso above
+        the waist; when the joint names say nothing (``LHY``, ``LKP``), that is where they are.
+        Only a pair of equal chains of at least five joints counts, and only beside two or more
+        arms that are named or end in a gripper and do not hang from the root.
+        """
+        pelvis = [limb for limb in limbs if limb.kind == "arm" and not limb.named
+                  and not limb.gripper and limb.base == self.urdf.root
+                  and len(limb.joints) >= _LEG_BY_PLACE_JOINTS]
+        arms = [limb for limb in limbs if limb.kind == "arm" and (limb.named or limb.gripper)
+                and limb.base != self.urdf.root]
+        if len(pelvis) != 2 or len(pelvis[0].joints) != len(pelvis[1].joints) or len(arms) < 2:
+            return limbs
+        legs = [replace(limb, kind="leg") for limb in pelvis]
+        kept = [limb for limb in limbs if limb not in pelvis] + legs
+        return sorted(kept, key=lambda limb: (LIMB_KINDS.index(limb.kind) if limb.kind in
+                                              LIMB_KINDS else len(LIMB_KINDS),
+                                              self._order(limb.joints[0])))
+
+    def _root_axes(self) -> list[str]:
+        """Joints at the root that only place the body: x, y and a turn about z (planar), or
+        x, y, z and three turns (a simulated floating base); [] when the root is not so.
+        """
+        chain: list[Joint] = []
+        link = self.urdf.root
+        while len(chain) < 6:
+            below = self.urdf.children(link)
+            if len(below) != 1:
+                break
+            joint = below[0]
+            link = joint.child
+            if joint.type == "fixed":
+                continue
+            if joint.type not in ("prismatic", "revolute", "continuous") or not joint.actuated:
+                break
+            chain.append(joint)
+        slides = {_main_axis(j.axis) for j in chain[:3] if j.type == "prismatic"}
+        turns = [_main_axis(j.axis) for j in chain[:3] if j.type != "prismatic"]
+        if len(chain) >= 3 and slides == {0, 1} and turns == [2]:
+            return [j.name for j in chain[:3]]
+        slides = {_main_axis(j.axis) for j in chain if j.type == "prismatic"}
+        turns = [_main_axis(j.axis) for j in chain if j.type != "prismatic"]
+        if len(chain) == 6 and slides == {0, 1, 2} and sorted(turns) == [0, 1, 2]:
+            return [j.name for j in chain]
+        return []
 
     def _order(self, name: str) -> int:
-        return next((i for i, j in enumerate(self.urdf.joints) if j.name == name), 0)
+        return self.index.get(name, 0)
 
-    def _below_gripper(self, joint: Joint, grippers: set[str]) -> bool:
-        parent = self.urdf.parent_joint(joint.parent)
-        while parent is not None:
-            if parent.name in grippers and parent.actuated:
-                return True
-            parent = self.urdf.parent_joint(parent.parent)
-        return False
+    def _gripper_closure(self, grippers: set[str]) -> set[str]:
+        """``grippers`` and every movable joint below one (finger phalanges); one pass."""
+        found = set(grippers)
+        stack = [(self.urdf.root, False)]
+        while stack:
+            link, inside = stack.pop()
+            for joint in self.urdf.children(link):
+                below = inside or joint.name in grippers
+                if inside and joint.movable:
+                    found.add(joint.name)
+                stack.append((joint.child, below))
+        return found
+
+    def _finger_tips(self, grippers: set[str]) -> list[str]:
+        """Gripper joints with no movable gripper joint below: one per finger."""
+        above: set[str] = set()
+        for name in grippers:
+            joint = self.urdf.joint(name)
+            if joint is None or not joint.movable:
+                continue
+            parent = self.urdf.parent_joint(joint.parent)
+            while parent is not None and parent.name not in above:
+                above.add(parent.name)
+                parent = self.urdf.parent_joint(parent.parent)
+        tips = [name for name in grippers if name not in above
+                and (joint := self.urdf.joint(name)) is not None and joint.movable]
+        return sorted(tips, key=self._order)
+
+    def _finger_groups(self, limbs: list[Limb]) -> set[str]:
+        """Joints of unnamed short chains hanging from one link in threes or more: fingers.
+
+        A claw or a hand whose fingers carry no names still has them side by side on a palm;
+        arms and legs on one link come in ones and twos.
+        """
+        by_base: dict[str, list[Limb]] = {}
+        longest = self.profile.limb("finger_max_joints")
+        for limb in limbs:
+            if limb.kind in ("arm", "other") and not limb.gripper and not limb.named \
+                    and len(limb.joints) <= longest:
+                by_base.setdefault(limb.base, []).append(limb)
+        found: set[str] = set()
+        for group in by_base.values():
+            if len(group) >= self.profile.limb("hand_min_fingers"):
+                found.update(name for limb in group for name in limb.joints)
+        return found
 
     def _limbs(self, special: set[str], grippers: set[str]
                ) -> tuple[list[Limb], list[str], set[str]]:
@@ -241,9 +381,9 @@ class _Detector:
             joints.sort(key=lambda j: self._order(j.name))
         limbs: list[Limb] = []
         trunk: list[str] = []
-        starts = list(children.get("", []))
+        starts = deque(children.get("", []))
         while starts:
-            first = starts.pop(0)
+            first = starts.popleft()
             chain = [first]
             while len(children.get(chain[-1].name, [])) == 1:
                 chain.append(children[chain[-1].name][0])
@@ -264,24 +404,28 @@ class _Detector:
         gripper = "gripper" in marks
         if marks & {"wheel", "rotor"}:
             return Limb("mount", names, base, tip, gripper)
-        scores = {kind: sum(1 for j in chain if self.matches(kind, j)) for kind in LIMB_KINDS}
+        named_parts = [self.parts_of(j.name) | self.parts_of(j.child) for j in chain]
+        scores = {kind: sum(1 for parts in named_parts if kind in parts) for kind in LIMB_KINDS}
         if self._tip_matches("leg", chain[-1]):
             scores["leg"] += 1
-        length = len(chain)
+        named = any(scores.values())
+        # Degrees of freedom, not joints: a ball-joint shoulder moves like three hinges.
+        length = sum(3 if j.type == "spherical" else 1 for j in chain)
         ranked = sorted(LIMB_KINDS, key=lambda k: -scores[k])  # stable: leg, arm, head on ties
         for kind in ranked:
             if scores[kind] == 0:
                 break
-            if kind == "leg" and length >= self.profile.limb("leg_min_joints") and not gripper:
-                return Limb("leg", names, base, tip, gripper)
+            # Leg names win over a gripper at the end: a leg may end in a gripper.
+            if kind == "leg" and length >= self.profile.limb("leg_min_joints"):
+                return Limb("leg", names, base, tip, gripper, named)
             if kind == "head" and length <= self.profile.limb("head_max_joints") \
                     and not gripper:
-                return Limb("head", names, base, tip, gripper)
+                return Limb("head", names, base, tip, gripper, named)
             if kind == "arm" and (length >= self.profile.limb("arm_min_joints") or gripper):
-                return Limb("arm", names, base, tip, gripper)
+                return Limb("arm", names, base, tip, gripper, named)
         if length >= self.profile.limb("arm_min_joints") or (gripper and length >= 2):
-            return Limb("arm", names, base, tip, gripper)
-        return Limb("other", names, base, tip, gripper)
+            return Limb("arm", names, base, tip, gripper, named)
+        return Limb("other", names, base, tip, gripper, named)
 
     def _tip(self, joint: Joint) -> str:
         """The last link of a limb: follow fixed joints down while the path is unbranched."""
@@ -293,11 +437,5 @@ class _Detector:
             link = below[0].child
 
     def _tip_matches(self, part: str, joint: Joint) -> bool:
-        pattern = self.profile.pattern(part)
-        if pattern is None:
-            return False
-        link = joint.child
-        for below in self.urdf.subtree_joints(link):
-            if not below.movable and pattern.search(below.child):
-                return True
-        return False
+        return any(not below.movable and part in self.parts_of(below.child)
+                   for below in self.urdf.subtree_joints(joint.child))

@@ -9,7 +9,7 @@ kinematic type the rule set or team lacks, a control outside the selection, too 
 The characteristics filled are the profile's roles; any other characteristic of the rule set is
 left unknown, which :func:`solver.assign` reports.
 
-Not here: identification (:mod:`solver.identify.identify`).
+Not here: identification (:mod:`solver.identify.identification`).
 """
 
 from __future__ import annotations
@@ -17,7 +17,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from solver.assignment import Assignment, assign
-from solver.identify.identify import Identification
+from solver.identify.identification import Identification
 from solver.identify.profile import Profile
 from solver.solution import Solution
 

@@ -19,14 +19,15 @@ Not here: printing progress (the caller passes a callback) or writing files.
 
 from __future__ import annotations
 
-import json
 import os
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+import yaml
+
 from solver.errors import InputError, SolverError
-from solver.identify.identify import Identification, identify
+from solver.identify.identification import Identification, identify
 from solver.identify.profile import Profile
 from solver.rules import RuleSet
 from solver.team import parse_team
@@ -103,8 +104,11 @@ def _companion(path: Path, *suffixes: str) -> Path | None:
 def identify_fleet(folder: str | Path, *, rules: RuleSet, profile: Profile,
                    package_path: Sequence[str | Path] = (),
                    xacro_args: Mapping[str, str] | None = None,
-                   progress: Progress | None = None, trust_xacro: bool = False) -> Fleet:
+                   progress: Progress | None = None, trust_xacro: bool = False,
+                   strict: bool = False) -> Fleet:
     """Identify every robot in ``folder``; failures are kept with their reason.
+
+    With ``strict``, a robot whose description or SRDF has warnings is a failure too.
 
     Finding a ``.xacro`` file in a folder never means trusting it: without ``trust_xacro`` it
     is a failed robot whose reason says how to opt in.
@@ -126,6 +130,9 @@ def identify_fleet(folder: str | Path, *, rules: RuleSet, profile: Profile,
         except SolverError as error:
             entries.append(FleetEntry(name, str(path), None, str(error).splitlines()[0]))
             continue
+        if strict and result.warnings:
+            entries.append(FleetEntry(name, str(path), None, str(result.warnings[0])))
+            continue
         entries.append(FleetEntry(name, str(path), result))
     if progress is not None:
         progress(len(paths), len(paths), "")
@@ -142,24 +149,24 @@ def team_text(fleet: Fleet, rules: RuleSet, profile: Profile, *, name: str,
         ident = entry.identification
         if ident is not None and ident.kinematic_type is not None:
             by_type.setdefault(ident.kinematic_type, []).append(entry)
-    lines = [f"# Team selection built by `teleop-ui fleet` from {fleet.folder}: "
-             f"{len(fleet.identified)} robot(s) identified, {len(fleet.failed)} not.",
-             f"name: {json.dumps(name)}"]
+    lines = [_comment(f"Team selection built by `teleop-ui fleet` from {fleet.folder}: "
+                      f"{len(fleet.identified)} robot(s) identified, {len(fleet.failed)} not."),
+             f"name: {_yaml(name)}"]
     if rules_reference is not None:
-        lines.append(f"rules: {json.dumps(rules_reference)}")
+        lines.append(f"rules: {_yaml(rules_reference)}")
     lines.append("team:")
     for kinematic_type in (str(v) for v in rules.key.values):
         entries = by_type.get(kinematic_type)
         if not entries:
             continue
         robots = ", ".join(e.name for e in entries)
-        lines.append(f"  {json.dumps(kinematic_type)}:   # {robots}")
+        lines.append(f"  {_yaml(kinematic_type)}:   {_comment(robots)}")
         lines += _selection(entries, rules, roles)
     for entry in fleet.entries:
         ident = entry.identification
         if ident is not None and ident.kinematic_type is None:
-            lines.append(f"# not in the rule set: {entry.name} ({ident.structure})")
-    lines += [f"# not identified: {e.name}: {e.error}" for e in fleet.failed]
+            lines.append(_comment(f"not in the rule set: {entry.name} ({ident.structure})"))
+    lines += [_comment(f"not identified: {e.name}: {e.error}") for e in fleet.failed]
     if not by_type:
         raise InputError.at(fleet.folder, "no robot in this folder maps to a kinematic type "
                                           f"of the rule set {rules.name!r}; no team written",
@@ -186,11 +193,12 @@ def _selection(entries: list[FleetEntry], rules: RuleSet, roles: dict[str, str]
         top = max(int(v) for v in characteristic.values)
         low = min(int(v) for v in characteristic.values)
         if most > top:
-            lines.append(f"    {count}: {top}   # capped: a robot has {most}")
+            lines.append(f"    {_yaml(count)}: {_yaml(top)}   # capped: a robot has {most}")
         elif most >= low:
-            lines.append(f"    {count}: {most}")
+            lines.append(f"    {_yaml(count)}: {_yaml(most)}")
         else:
-            lines.append(f"    # {count}: no sensors with a presentation (every value allowed)")
+            lines.append("    " + _comment(f"{count}: no sensors with a presentation (every "
+                                          "value allowed)"))
     if all(line.lstrip().startswith("#") for line in lines):
         # A key followed only by comments loads as null, which a team file rejects; {} is
         # the team file's spelling of "every value of every characteristic".
@@ -208,8 +216,32 @@ def _union(rules: RuleSet, name: str, chosen: set[str], nothing: str) -> list[st
         return []
     values = [str(v) for v in rules.characteristic(name).values if str(v) in chosen]
     if values:
-        return [f"    {name}: {json.dumps(values)}"]
-    return [f"    # {name}: {nothing} (every value allowed)"]
+        return [f"    {_yaml(name)}: {_yaml(values)}"]
+    return ["    " + _comment(f"{name}: {nothing} (every value allowed)")]
+
+
+def _yaml(value: object) -> str:
+    """``value`` as YAML, written by the YAML library's emitter on one line, quoted as needed.
+
+    Names come from description files (their file names, too) and rule files: written by string
+    formatting, a name holding a newline and ``UGV: ...`` would add a kinematic type to the team.
+    """
+    parts = value if isinstance(value, list) else [value]
+    # Double quotes keep a line break or control character as an escape on this one line
+    # (plain and single-quoted scalars would continue on the next line).
+    style = None if all(str(part).isprintable() for part in parts) else '"'
+    text = yaml.safe_dump(value, default_flow_style=True, default_style=style,
+                          allow_unicode=True, width=2**31 - 1)
+    return text.removesuffix("\n...\n").rstrip("\n")
+
+
+def _comment(text: str) -> str:
+    """``# text`` with every character that could end the comment line (or hide text in it)
+    written as its escape."""
+    if not text.isprintable():
+        text = "".join(c if c.isprintable() else c.encode("unicode_escape").decode("ascii")
+                       for c in text)
+    return "# " + text
 
 
 def rules_reference(rules_file: str | Path, team_file: str | Path) -> str:

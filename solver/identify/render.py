@@ -5,7 +5,8 @@
     {"robot", "file", "structure", "kinematic_type", "confidence", "evidence",
      "sensors": [{"kind", "sensor_type", "count", "source"}],
      "motion_controls": [{"motion_control", "source"}],
-     "combinations": [...]}      # assignment JSON of `teleop-ui assign`, with --team
+     "combinations": [...],      # assignment JSON of `teleop-ui assign`, with --team
+     "warnings": [{"file", "line", "message"}]}   # flaws read past; only when there are some
 
 ``fleet`` prints a list of these. Output is deterministic: declared orders, no timestamps.
 
@@ -17,9 +18,10 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
+from solver.errors import Fault
 from solver.formats import assignment_data, text_table
 from solver.identify.combinations import Combination
-from solver.identify.identify import Identification
+from solver.identify.identification import Identification
 from solver.solution import Solution
 
 __all__ = ["identification_data", "render_identification"]
@@ -44,7 +46,14 @@ def identification_data(identification: Identification,
     }
     if identification.notes:
         data["notes"] = list(identification.notes)
+    if identification.warnings:
+        data["warnings"] = [{"file": w.location.file, "line": w.location.line,
+                             "message": _message(w)} for w in identification.warnings]
     return data
+
+
+def _message(fault: Fault) -> str:
+    return f"{fault.location.path}: {fault.message}" if fault.location.path else fault.message
 
 
 def render_identification(identification: Identification,
@@ -58,6 +67,7 @@ def render_identification(identification: Identification,
              f"  kinematic type: {kinematic}", "  evidence:"]
     lines += [f"    - {line}" for line in identification.evidence]
     lines += [f"  note: {note}" for note in identification.notes]
+    lines += [f"  warning: {warning}" for warning in identification.warnings]
     text = "\n".join(lines) + "\n\n"
     if identification.sensors:
         rows = [[s.kind, s.sensor_type or "-", s.count, s.source]

@@ -20,7 +20,8 @@ import re
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from solver.errors import InputError
+from solver.errors import Fault, InputError, Location
+from solver.extras import require
 from solver.inputfile import read_bounded
 
 if TYPE_CHECKING:
@@ -51,23 +52,38 @@ def read_xml(path: str | Path, *, display: str | None = None) -> etree._Element:
     return parse_xml(read_bytes(path, display=name), name)
 
 
-def parse_xml(data: bytes | str, name: str = "<string>") -> etree._Element:
-    """Safely parse XML text or bytes into its root element (see the module docstring)."""
+def parse_xml(data: bytes | str, name: str = "<string>", *,
+              warnings: list[Fault] | None = None) -> etree._Element:
+    """Safely parse XML text or bytes into its root element (see the module docstring).
+
+    With a ``warnings`` list the parse is lenient the way the ROS tools are with real files:
+    blank lines before the XML declaration, an XML version other than 1.0, trailing NUL bytes
+    and undeclared namespace prefixes (``<xacro:include>`` in an expanded URDF) are read, and
+    each is appended to ``warnings`` as a located :class:`~solver.errors.Fault`. Without it,
+    each is an error. Hostile XML (entity declarations) is refused either way.
+    """
+    require("lxml", feature="reading URDF, SRDF and xacro files (identify, fleet, watch)")
     from lxml import etree
 
     raw = data.encode("utf-8") if isinstance(data, str) else data
     if len(raw) > MAX_XML_BYTES:
         raise InputError.at(name, f"document is larger than {MAX_XML_BYTES} bytes; refused",
                             code="too-large")
-    if not raw.strip():
+    if not raw.strip(b" \t\r\n\x00"):
         raise InputError.at(name, "empty file: expected an XML document", code="xml")
     _refuse_declared_entities(raw, name)
+    if warnings is not None:
+        raw = _mend(raw, name, warnings)
     parser = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False,
                              dtd_validation=False, huge_tree=False, remove_comments=True,
                              remove_pis=True)
     try:
         root = etree.fromstring(raw, parser)
     except etree.XMLSyntaxError as error:
+        mended = None if warnings is None else _namespace_recovery(raw, name, warnings)
+        if mended is not None:
+            _refuse_entities(mended, raw, name)
+            return mended
         line, column = error.position if error.position else (None, None)
         message = str(error.msg or error).split(f", line {line}")[0]
         raise InputError.at(name, f"malformed XML: {message}", line=line or None,
@@ -75,6 +91,69 @@ def parse_xml(data: bytes | str, name: str = "<string>") -> etree._Element:
     except ValueError as error:  # lxml refuses, e.g., str input carrying an encoding declaration
         raise InputError.at(name, f"malformed XML: {error}", code="xml") from None
     _refuse_entities(root, raw, name)
+    return root
+
+
+_DECLARATION = re.compile(rb"<\?xml\s[^>]*?\?>")
+_VERSION = re.compile(rb"""version\s*=\s*(["'])([^"']*)\1""")
+
+
+def _warn(warnings: list[Fault], name: str, line: int | None, message: str, code: str) -> None:
+    warnings.append(Fault(Location(name, line), message, code))
+
+
+def _mend(raw: bytes, name: str, warnings: list[Fault]) -> bytes:
+    """Repair the flaws real descriptions have outside their elements, keeping line numbers."""
+    stripped = raw.rstrip(b" \t\r\n\x00")
+    if b"\x00" in raw[len(stripped):]:
+        _warn(warnings, name, raw.count(b"\n", 0, raw.index(b"\x00", len(stripped))) + 1,
+              "NUL byte(s) after the end of the document ignored", "xml-trailing-nul")
+        raw = stripped + b"\n"
+    body = raw.lstrip(b" \t\r\n")
+    if body is not raw and len(body) != len(raw) and body.startswith(b"<?xml"):
+        declaration = _DECLARATION.match(body)
+        if declaration is not None:
+            # Move the blank lines after the declaration, so every element keeps its line.
+            lead = raw[:len(raw) - len(body)]
+            end = declaration.end()
+            _warn(warnings, name, lead.count(b"\n") + 1, "the XML declaration is not at the "
+                  "start of the document (blank lines before it); read anyway",
+                  "xml-declaration")
+            raw = body[:end] + lead + body[end:]
+    declaration = _DECLARATION.match(raw)
+    if declaration is not None:
+        version = _VERSION.search(declaration.group(0))
+        if version is not None and version.group(2) != b"1.0":
+            shown = version.group(2).decode("ascii", errors="replace")
+            _warn(warnings, name, 1, f"XML version {shown!r} declared; read as XML 1.0",
+                  "xml-version")
+            text = declaration.group(0)
+            fixed = text[:version.start(2)] + b"1.0" + text[version.end(2):]
+            raw = fixed + raw[declaration.end():]
+    return raw
+
+
+def _namespace_recovery(raw: bytes, name: str, warnings: list[Fault]) -> etree._Element | None:
+    """Parse again when namespace errors are libxml2's only complaint; ``None`` otherwise.
+
+    An expanded URDF that still holds a ``<xacro:...>`` element without the xacro namespace
+    declared is well formed apart from the prefix: the element is kept under its prefixed name.
+    """
+    from lxml import etree
+
+    parser = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False,
+                             dtd_validation=False, huge_tree=False, remove_comments=True,
+                             remove_pis=True, recover=True)
+    try:
+        root = etree.fromstring(raw, parser)
+    except etree.XMLSyntaxError:
+        return None
+    errors = list(parser.error_log)
+    if root is None or not errors or any(e.domain_name != "NAMESPACE" for e in errors):
+        return None
+    for error in errors:
+        _warn(warnings, name, error.line or None, f"{error.message.strip()}; element kept "
+              "under its prefixed name", "xml-namespace")
     return root
 
 

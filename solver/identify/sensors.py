@@ -55,19 +55,23 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf"
                       ) -> tuple[Detection, ...]:
     """The sensors a URDF declares, in document order."""
     found: list[Detection] = []
+    declared = {(_element_kind(t, profile), t.link) for t in urdf.sensors if t.origin == "gazebo"}
     for tag in urdf.sensors:
-        found.append(Detection(_element_kind(tag, profile), tag.name or tag.type, source,
-                               tag.link, tag.vertical_samples))
+        kind = _element_kind(tag, profile)
+        if tag.origin == "urdf" and tag.link is not None and (kind, tag.link) in declared:
+            continue  # one physical sensor declared as a Gazebo <sensor> and a URDF <sensor>
+        found.append(Detection(kind, tag.name or tag.type, source, tag.link,
+                               tag.vertical_samples))
     seen = {(d.kind, d.link) for d in found}
     for plugin in urdf.plugins:
-        kind = _plugin_kind(plugin, profile)
-        if kind is None:
+        simulated = _plugin_kind(plugin, profile)
+        if simulated is None:
             continue
         link = plugin.param(*_LINK_PARAMS) or plugin.reference
-        if (kind, link) in seen:
+        if (simulated, link) in seen:
             continue  # the plugin publishes a sensor element already counted
-        seen.add((kind, link))
-        found.append(Detection(kind, plugin.name or plugin.filename, source, link))
+        seen.add((simulated, link))
+        found.append(Detection(simulated, plugin.name or plugin.filename, source, link))
     return tuple(found)
 
 

@@ -15,22 +15,31 @@ Not here: what the body is (:mod:`solver.identify.body`), what the sensors are
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cached_property
 from typing import TYPE_CHECKING
 
 from solver.errors import Fault, InputError, Location
 from solver.identify.safexml import line_of, parse_xml
+from solver.identify.xacros import uncompiled_xacro
 
 if TYPE_CHECKING:
     from lxml import etree
 
-__all__ = ["JOINT_TYPES", "Joint", "Link", "PluginTag", "SensorTag", "Urdf", "parse_urdf"]
+__all__ = ["JOINT_TYPES", "MAX_PARTS", "Joint", "Link", "PluginTag", "SensorTag", "Urdf",
+           "parse_urdf"]
 
 JOINT_TYPES = ("revolute", "continuous", "prismatic", "fixed", "floating", "planar")
+# The most links + joints one description may have: reading is linear, so this bounds the time
+# and memory one description (a robot_description is whatever a robot publishes) may cost.
+# 250,000 is some 30 times the largest real robot known and still reads in seconds.
+MAX_PARTS = 250_000
 # Plugin parameters kept for the classifiers: short text values (joint names, topics, frames).
 _MAX_PARAM_TEXT = 200
+# Warnings of one kind listed per description; the rest are counted.
+_MAX_WARNINGS = 20
 
 
 @dataclass(frozen=True, slots=True)
@@ -51,6 +60,7 @@ class Joint:
     mimic: str | None = None
     lower: float | None = None
     upper: float | None = None
+    axis: tuple[float, float, float] = (1.0, 0.0, 0.0)  # URDF's default axis
 
     @property
     def movable(self) -> bool:
@@ -122,6 +132,8 @@ class Urdf:
     # Joints named by a <transmission> or a <ros2_control> block: driven by a controller.
     controlled_joints: frozenset[str] = frozenset()
     root: str = ""
+    # Local flaws read past (parse_urdf(strict=False)), each located.
+    warnings: tuple[Fault, ...] = ()
 
     @cached_property
     def _children(self) -> dict[str, tuple[Joint, ...]]:
@@ -160,10 +172,23 @@ class Urdf:
             stack.extend(reversed(self.children(joint.child)))
 
 
-def parse_urdf(text: str | bytes, file: str = "<string>") -> Urdf:
-    """Parse and check URDF text; :class:`InputError` lists every problem found."""
-    root = parse_xml(text, file)
-    return _Builder(file).build(root)
+def parse_urdf(text: str | bytes, file: str = "<string>", *, strict: bool = True) -> Urdf:
+    """Parse URDF text into a :class:`Urdf`.
+
+    ``strict`` (the default, a validator's reading): every problem is an error, all reported
+    at once in one :class:`InputError`. ``strict=False`` reads the way the ROS tools do with
+    real files: a local flaw (a joint naming a missing link, a duplicate link, a link with two
+    parents, a joint type outside the spec, several roots, an XML declaration out of place)
+    becomes a located warning in :attr:`Urdf.warnings` and the rest is read. Only a document
+    that cannot be read at all is an error then: not XML, hostile XML, not a ``<robot>``, no
+    links, no root link, or more than :data:`MAX_PARTS` links and joints.
+    """
+    warnings: list[Fault] | None = None if strict else []
+    root = parse_xml(text, file, warnings=warnings)
+    urdf = _Builder(file).build(root)
+    if strict and urdf.warnings:
+        raise InputError(urdf.warnings)
+    return replace(urdf, warnings=(*(warnings or ()), *urdf.warnings))
 
 
 class _Builder:
@@ -171,10 +196,25 @@ class _Builder:
         self.file = file
         self.faults: list[Fault] = []
 
-    def fault(self, element: etree._Element | None, path: str, message: str,
+    def fault(self, element: etree._Element | int | None, path: str, message: str,
               code: str = "urdf") -> None:
-        line = None if element is None else line_of(element)
+        line = element if isinstance(element, int) or element is None else line_of(element)
         self.faults.append(Fault(Location(self.file, line, None, path), message, code))
+
+    def warnings(self) -> tuple[Fault, ...]:
+        """The faults, at most :data:`_MAX_WARNINGS` of a kind (a hostile file has millions)."""
+        kept: list[Fault] = []
+        seen: dict[str, int] = {}
+        for fault in self.faults:
+            seen[fault.code] = seen.get(fault.code, 0) + 1
+            if seen[fault.code] <= _MAX_WARNINGS:
+                kept.append(fault)
+        for code, number in seen.items():
+            if number > _MAX_WARNINGS:
+                kept.append(Fault(Location(self.file), f"{number - _MAX_WARNINGS} more "
+                                                       f"problem(s) of this kind not listed",
+                                  code))
+        return tuple(kept)
 
     def build(self, root: etree._Element) -> Urdf:
         if root.tag != "robot":
@@ -182,176 +222,179 @@ class _Builder:
                                            "(is this a URDF?)", line=line_of(root),
                                 path=str(root.tag), code="urdf")
         name = (root.get("name") or "").strip()
-        links = self._links(root)
-        joints = self._joints(root, {link.name for link in links})
-        sensors = self._sensors(root)
+        link_elements = root.findall("link")
+        joint_elements = root.findall("joint")
+        if len(link_elements) + len(joint_elements) > MAX_PARTS:
+            beyond = (link_elements + joint_elements)[MAX_PARTS]
+            raise InputError.at(self.file, f"{len(link_elements)} links and "
+                                           f"{len(joint_elements)} joints: more than "
+                                           f"{MAX_PARTS} in all is refused (a cap on what one "
+                                           "description may cost)", line=line_of(beyond),
+                                path=str(beyond.tag), code="too-large")
+        if not link_elements:
+            raise InputError.at(self.file, f"robot {name!r} has no links: an empty robot "
+                                           "cannot be identified", line=line_of(root),
+                                path="robot", code="urdf-empty")
+        links = self._links(link_elements)
+        tree, top = self._tree(root, links, self._joints(joint_elements, links))
+        sensors = self._sensors(root, {j.name: j.child for j in tree})
         plugins = tuple(_plugin(p, g.get("reference")) for g in root.findall("gazebo")
                         for p in g.findall("plugin"))
         controlled = frozenset(self._controlled(root))
-        top = ""
-        if links and not self.faults:
-            top = self._check_tree(root, links, joints)
-        if not links and not self.faults:
-            self.fault(root, "robot", f"robot {name!r} has no links: an empty robot "
-                                      "cannot be identified", code="urdf-empty")
-        if self.faults:
-            raise InputError(self.faults)
-        return Urdf(name or "robot", self.file, links, joints, sensors, plugins, controlled,
-                    top)
+        self.faults += uncompiled_xacro(root, self.file)  # read as URDF, never compiled: say so
+        return Urdf(name or "robot", self.file, tuple(links.values()), tree, sensors,
+                    plugins, controlled, top, self.warnings())
 
-    def _links(self, root: etree._Element) -> tuple[Link, ...]:
+    def _links(self, elements: list[etree._Element]) -> dict[str, Link]:
         found: dict[str, Link] = {}
-        for element in root.findall("link"):
+        for element in elements:
             name = (element.get("name") or "").strip()
             if not name:
-                self.fault(element, "link", "a <link> without a name")
+                self.fault(element, "link", "a <link> without a name (ignored)")
             elif name in found:
                 self.fault(element, f"link[{name}]", f"duplicate link {name!r} (first at "
                                                      f"line {found[name].line})")
             else:
                 found[name] = Link(name, line_of(element))
-        return tuple(found.values())
+        return found
 
-    def _joints(self, root: etree._Element, links: set[str]) -> tuple[Joint, ...]:
+    def _joints(self, elements: list[etree._Element], links: dict[str, Link]
+                ) -> list[Joint]:
         found: dict[str, Joint] = {}
-        for element in root.findall("joint"):
+        for element in elements:
             joint = self._joint(element, links)
             if joint is None:
                 continue
             if joint.name in found:
                 self.fault(element, f"joint[{joint.name}]", f"duplicate joint {joint.name!r} "
                                                             f"(first at line "
-                                                            f"{found[joint.name].line})")
+                                                            f"{found[joint.name].line}; "
+                                                            "ignored)")
                 continue
             found[joint.name] = joint
-        return tuple(found.values())
+        return list(found.values())
 
-    def _joint(self, element: etree._Element, links: set[str]) -> Joint | None:
+    def _joint(self, element: etree._Element, links: dict[str, Link]) -> Joint | None:
+        line = line_of(element)
         name = (element.get("name") or "").strip()
         path = f"joint[{name}]" if name else "joint"
-        ok = True
         if not name:
             self.fault(element, path, "a <joint> without a name")
-            ok = False
+            name = f"<joint at line {line}>"
         kind = (element.get("type") or "").strip()
         if kind not in JOINT_TYPES:
-            shown = f"unknown joint type {kind!r}" if kind else "missing joint type"
-            self.fault(element, f"{path}.type", f"{shown}; URDF joint types are "
-                                                f"{', '.join(JOINT_TYPES)}")
-            ok = False
+            if kind:
+                self.fault(element, f"{path}.type", f"unknown joint type {kind!r}; URDF joint "
+                                                    f"types are {', '.join(JOINT_TYPES)}",
+                           code="urdf-joint-type")
+            else:
+                self.fault(element, f"{path}.type", "missing joint type; URDF joint types "
+                                                    f"are {', '.join(JOINT_TYPES)}",
+                           code="urdf-joint-type")
+                kind = "fixed"
+        # One pass over the joint's children instead of a find() per tag (big descriptions).
+        parts: dict[str, etree._Element] = {}
+        for child in element:
+            if isinstance(child.tag, str):
+                parts.setdefault(child.tag, child)
         ends: dict[str, str] = {}
         for end in ("parent", "child"):
-            tag = element.find(end)
+            tag = parts.get(end)
             link = (tag.get("link") or "").strip() if tag is not None else ""
             if tag is None or not link:
                 self.fault(element if tag is None else tag, f"{path}.{end}",
-                           f"joint {name!r} has no <{end} link=...>")
-                ok = False
-            elif link not in links:
+                           f"joint {name!r} has no <{end} link=...> (joint ignored)")
+                return None
+            if link not in links:
                 self.fault(tag, f"{path}.{end}", f"joint {name!r} names {end} link {link!r}, "
                                                  "which does not exist",
                            code="urdf-missing-link")
-                ok = False
+                # Read as an implicit link: an attachment described alone still has a body.
+                links[link] = Link(link, line_of(tag))
             ends[end] = link
-        if ok and ends["parent"] == ends["child"]:
+        if ends["parent"] == ends["child"]:
             self.fault(element, path, f"joint {name!r} connects link {ends['parent']!r} to "
-                                      "itself (a cycle)", code="urdf-cycle")
-            ok = False
-        if not ok:
+                                      "itself (a cycle; joint ignored)", code="urdf-cycle")
             return None
-        limit = element.find("limit")
-        mimic = element.find("mimic")
-        return Joint(name, kind, ends["parent"], ends["child"], line_of(element),
+        limit = parts.get("limit")
+        mimic = parts.get("mimic")
+        return Joint(name, kind, ends["parent"], ends["child"], line,
                      None if mimic is None else (mimic.get("joint") or "").strip() or None,
-                     self._number(limit, "lower", path), self._number(limit, "upper", path))
+                     self._number(limit, "lower", path), self._number(limit, "upper", path),
+                     _axis(parts.get("axis")))
 
     def _number(self, element: etree._Element | None, attribute: str, path: str
                 ) -> float | None:
         if element is None or element.get(attribute) is None:
             return None
         text = element.get(attribute, "")
-        try:
-            return float(text)
-        except ValueError:
+        value = _float(text)
+        if value is None:
             self.fault(element, f"{path}.limit.{attribute}", f"limit {attribute} is not a "
-                                                            f"number: {text!r}")
-            return None
+                                                            f"finite number: {text[:40]!r}")
+        return value
 
-    def _check_tree(self, root: etree._Element, links: tuple[Link, ...],
-                    joints: tuple[Joint, ...]) -> str:
+    def _tree(self, root: etree._Element, links: dict[str, Link], joints: list[Joint]
+              ) -> tuple[tuple[Joint, ...], str]:
+        """Keep the joints that form a tree; the root link. Linear in links + joints."""
         parents: dict[str, Joint] = {}
-        elements = {e.get("name"): e for e in root.findall("joint")}
+        kept: list[Joint] = []
         for joint in joints:
-            if joint.child in parents:
-                first = parents[joint.child]
-                self.fault(elements.get(joint.name), f"joint[{joint.name}].child",
+            first = parents.get(joint.child)
+            if first is not None:
+                self.fault(joint.line, f"joint[{joint.name}].child",
                            f"link {joint.child!r} has two parent joints: {first.name!r} "
-                           f"(line {first.line}) and {joint.name!r}; a URDF is a tree",
-                           code="urdf-cycle")
-            else:
-                parents[joint.child] = joint
-        if self.faults:
-            return ""
-        roots = [link for link in links if link.name not in parents]
-        if not roots:
-            self.fault(root, "robot", "every link has a parent joint: the joints form a "
-                                      "cycle, there is no root link", code="urdf-cycle")
-            return ""
-        reached = self._reachable(roots[0].name, joints)
-        cyclic = [link for link in links if link.name not in reached
-                  and link not in roots and self._on_cycle(link.name, parents)]
-        if cyclic:
-            names = ", ".join(repr(link.name) for link in cyclic)
-            joint = parents[cyclic[0].name]
-            self.fault(elements.get(joint.name), f"joint[{joint.name}]",
-                       f"joints form a cycle through links {names}", code="urdf-cycle")
-        if len(roots) > 1:
-            names = ", ".join(f"{link.name!r} (line {link.line})" for link in roots)
-            self.fault(root, "robot", f"{len(roots)} root links (links with no parent "
-                                      f"joint): {names}; a URDF has exactly one root",
-                       code="urdf-roots")
-        return roots[0].name
-
-    @staticmethod
-    def _reachable(start: str, joints: tuple[Joint, ...]) -> set[str]:
+                           f"(line {first.line}) and {joint.name!r}; a URDF is a tree "
+                           f"({joint.name!r} ignored)", code="urdf-cycle")
+                continue
+            parents[joint.child] = joint
+            kept.append(joint)
         below: dict[str, list[str]] = {}
-        for joint in joints:
+        for joint in kept:
             below.setdefault(joint.parent, []).append(joint.child)
-        seen = {start}
-        stack = [start]
-        while stack:
-            for child in below.get(stack.pop(), []):
-                if child not in seen:
-                    seen.add(child)
-                    stack.append(child)
-        return seen
+        roots = [link for link in links.values() if link.name not in parents]
+        if not roots:
+            raise InputError.at(self.file, "every link has a parent joint: the joints form a "
+                                           "cycle, there is no root link", line=line_of(root),
+                                path="robot", code="urdf-cycle")
+        sizes = {link.name: _reach(link.name, below) for link in roots}
+        top = max(roots, key=lambda link: len(sizes[link.name]))
+        reached = set().union(*sizes.values())
+        cyclic = [link for link in links.values() if link.name not in reached]
+        if cyclic:
+            names = ", ".join(repr(link.name) for link in cyclic[:5])
+            joint = parents[cyclic[0].name]
+            self.fault(joint.line, f"joint[{joint.name}]",
+                       f"joints form a cycle through links {names}; those links are not read",
+                       code="urdf-cycle")
+        if len(roots) > 1:
+            names = ", ".join(f"{link.name!r} (line {link.line})" for link in roots[:5])
+            more = f", ... ({len(roots)} in all)" if len(roots) > 5 else ""
+            self.fault(root, "robot", f"{len(roots)} root links (links with no parent "
+                                      f"joint): {names}{more}; a URDF has exactly one root; "
+                                      f"read from {top.name!r}, the largest tree",
+                       code="urdf-roots")
+        return tuple(kept), top.name
 
-    @staticmethod
-    def _on_cycle(link: str, parents: dict[str, Joint]) -> bool:
-        seen = set()
-        current = link
-        while current in parents:
-            if current in seen:
-                return True
-            seen.add(current)
-            current = parents[current].parent
-        return current == link
-
-    def _sensors(self, root: etree._Element) -> tuple[SensorTag, ...]:
+    def _sensors(self, root: etree._Element, joint_children: dict[str, str]
+                 ) -> tuple[SensorTag, ...]:
         found = []
         for gazebo in root.findall("gazebo"):
             reference = gazebo.get("reference")
             for sensor in gazebo.findall("sensor"):
-                found.append(_sensor(sensor, reference, "gazebo"))
+                found.append(self._sensor(sensor, reference, "gazebo"))
         # URDF's own <sensor> element (urdfdom): <sensor name><parent link/><camera|ray/>.
         for sensor in root.findall("sensor"):
             parent = sensor.find("parent")
             link = None if parent is None else parent.get("link")
+            if parent is not None and link is None and parent.get("joint"):
+                # <parent joint=...>: the sensor sits on that joint's child link.
+                link = joint_children.get(str(parent.get("joint")))
             kind = sensor.get("type") or next((child.tag for child in sensor
                                                if isinstance(child.tag, str)
                                                and child.tag not in ("parent", "origin")),
                                               "")
-            found.append(_sensor(sensor, link, "urdf", str(kind)))
+            found.append(self._sensor(sensor, link, "urdf", str(kind)))
         return tuple(found)
 
     @staticmethod
@@ -364,6 +407,17 @@ class _Builder:
             for joint in control.findall("joint"):
                 if joint.get("name"):
                     yield str(joint.get("name"))
+
+
+    def _sensor(self, element: etree._Element, link: str | None, origin: str,
+                kind: str | None = None) -> SensorTag:
+        numbers = (*element.iterfind(".//scan/*/samples"), *element.iterfind(".//horizontal_fov"))
+        for node in numbers:
+            if node.text is not None and node.text.strip() and _float(node.text) is None:
+                self.fault(node, f"sensor[{element.get('name') or ''}].{node.tag}",
+                           f"<{node.tag}> is not a finite number: {node.text.strip()[:40]!r} "
+                           "(ignored)", code="urdf-number")
+        return _sensor(element, link, origin, kind)
 
 
 def _sensor(element: etree._Element, link: str | None, origin: str,
@@ -394,16 +448,39 @@ def _plugin(element: etree._Element, reference: str | None) -> PluginTag:
                      tuple(params))
 
 
+def _reach(start: str, below: dict[str, list[str]]) -> set[str]:
+    seen = {start}
+    stack = [start]
+    while stack:
+        for child in below.get(stack.pop(), ()):
+            if child not in seen:
+                seen.add(child)
+                stack.append(child)
+    return seen
+
+
+def _axis(element: etree._Element | None) -> tuple[float, float, float]:
+    parts = [_float(t) for t in (element.get("xyz") or "").split()] if element is not None \
+        else []
+    if len(parts) != 3 or any(p is None for p in parts):
+        return (1.0, 0.0, 0.0)
+    x, y, z = (p or 0.0 for p in parts)
+    return (x, y, z)
+
+
 def _integer(text: str | None) -> int | None:
-    try:
-        return None if text is None else int(float(text.strip()))
-    except ValueError:
-        return None
+    value = _float(text)
+    return None if value is None else int(value)
 
 
 def _float(text: str | None) -> float | None:
+    """A finite number, or ``None``: ``inf``, ``nan`` and ``1e999`` are no measurement, and
+    Python's float() would read non-ASCII digits (``٣`` as 3), which no URDF reader does."""
+    if text is not None and not text.isascii():
+        return None
     try:
-        return None if text is None else float(text.strip())
+        value = None if text is None else float(text.strip()[:64])
     except ValueError:
         return None
+    return value if value is not None and math.isfinite(value) else None
 

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 
 from solver.assignment import Assignment
 from solver.errors import InputError, did_you_mean
-from solver.identify.identify import IdentificationCache
+from solver.identify.identification import IdentificationCache
 from solver.identify.profile import Profile
 from solver.live.discovery import discover, normalise_namespace
 from solver.live.master import MISSING, MasterClient

@@ -9,9 +9,11 @@ model) is not parsed again. The cache is asked with a file name that does not de
 namespace (``robot_description``) for that reason; errors are then re-located to the robot's
 own parameter (``/uav1/robot_description:3:5: ...``).
 
-A description that cannot be identified (not text, malformed XML, a broken tree) gives a
-:class:`LiveRobot` with the error and no combinations: the robot is still reported, and the
-others are not affected.
+A description that cannot be identified (not text, malformed XML, a broken tree, larger than
+the reader's cap, or anything the readers did not expect to raise) gives a :class:`LiveRobot`
+with the error and no combinations: the robot is still reported, and the others are not
+affected. This is the per-robot boundary of issue 18: nothing one robot publishes may end a
+watcher serving the others.
 
 Not here: finding the robots (:mod:`solver.live.discovery`), events (:mod:`solver.live.events`).
 """
@@ -24,13 +26,13 @@ from typing import Any
 
 from solver.errors import SolverError
 from solver.identify.combinations import Combination, combinations
-from solver.identify.identify import Identification, IdentificationCache, TopicSource
+from solver.identify.identification import Identification, IdentificationCache, TopicSource
 from solver.identify.profile import Profile
 from solver.live.discovery import RobotSource
 from solver.live.master import MISSING
 from solver.solution import Solution
 
-__all__ = ["LiveRobot", "identify_robot", "robot_data"]
+__all__ = ["LiveRobot", "identify_robot", "robot_data", "unexpected_error"]
 
 _FILE = "robot_description"
 _SRDF_FILE = "<srdf>"  # what IdentificationCache names an SRDF
@@ -50,6 +52,8 @@ class LiveRobot:
 def _text(value: Any, key: str, what: str = "URDF") -> str | bytes:
     if isinstance(value, str | bytes):
         return value
+    if isinstance(value, SolverError):
+        raise value  # a source that could not read the value says why (solver.live.sources)
     kind = "a namespace of parameters" if isinstance(value, dict) else type(value).__name__
     raise _NotText(f"{key}: expected {what} text, got {kind}")
 
@@ -85,18 +89,24 @@ def identify_robot(source: RobotSource, description: Any, semantic: Any = MISSIN
             text, srdf_text=srdf,
             topics=[TopicSource(_SOURCE, source.topics)] if source.topics else (),
             rules=solution.rules, profile=profile, file=_FILE)
+        found = combinations(identification, solution, profile)
     except _NotText as error:
         return LiveRobot(namespace, None, (), str(error))
     except SolverError as error:
         return LiveRobot(namespace, None, (),
                          _relocated(error, source.description_key, source.semantic_key))
-    except (RecursionError, MemoryError, ValueError) as error:
-        # A description hostile enough to get past the readers' own checks must still not
-        # stop the watcher: the robot is reported with what went wrong, the others go on.
-        return LiveRobot(namespace, None, (), f"{source.description_key}: cannot identify "
-                                              f"({type(error).__name__}: {error})")
-    return LiveRobot(namespace, identification,
-                     combinations(identification, solution, profile))
+    except Exception as error:  # the per-robot boundary (issue 18)
+        # A robot_description is whatever a robot on the network publishes: one that gets
+        # past the readers' own checks (an overflow, a recursion, a reader bug) must still
+        # not stop the watcher. The robot is reported with what went wrong, the others go on.
+        return LiveRobot(namespace, None, (), unexpected_error(source.description_key, error))
+    return LiveRobot(namespace, identification, found)
+
+
+def unexpected_error(key: str, error: BaseException) -> str:
+    """The located message of an exception the identification did not expect to raise."""
+    text = str(error).splitlines()[0][:200] if str(error) else ""
+    return f"{key}: cannot identify ({type(error).__name__}{': ' + text if text else ''})"
 
 
 def robot_data(robot: LiveRobot) -> dict[str, Any]:

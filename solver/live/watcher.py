@@ -52,11 +52,11 @@ from dataclasses import dataclass
 from types import TracebackType
 from typing import Any
 
-from solver.identify.identify import IdentificationCache
+from solver.identify.identification import IdentificationCache
 from solver.identify.profile import Profile
 from solver.identify.topics import Topic
 from solver.live.descriptions import Descriptions
-from solver.live.discovery import discover
+from solver.live.discovery import RobotSource, discover
 from solver.live.events import (
     Event,
     MasterBack,
@@ -75,7 +75,7 @@ from solver.live.master import (
     Observation,
 )
 from solver.live.node import NodeServer, callback_host
-from solver.live.robot import LiveRobot, identify_robot, robot_data
+from solver.live.robot import LiveRobot, identify_robot, robot_data, unexpected_error
 from solver.live.selection import (
     NAMESPACE,
     RESULT_PARAM,
@@ -86,6 +86,7 @@ from solver.live.selection import (
     selection_data,
     ui_configuration_value,
 )
+from solver.live.sources import DescriptionStore, GraphSource
 from solver.solution import Solution
 
 __all__ = ["Watcher"]
@@ -127,8 +128,9 @@ class Watcher:
 
     def __init__(self, master: str, solution: Solution, profile: Profile, *,
                  interval: float = 0.2, timeout: float = 2.0, push: bool = True,
-                 max_backoff: float = 2.0, cache: IdentificationCache | None = None) -> None:
-        self.master = master
+                 max_backoff: float = 2.0, cache: IdentificationCache | None = None,
+                 source: GraphSource | None = None) -> None:
+        self.master = source.name if source is not None else master
         self.solution = solution
         self.profile = profile
         self.interval = interval
@@ -139,14 +141,23 @@ class Watcher:
         self._wake = threading.Event()
         self._closed = False
         self._node: NodeServer | None = None
-        caller_id = f"/teleop_ui_watch_{os.getpid()}"
-        if push:
-            self._node = NodeServer(callback_host(master), master, self._pushed, self.stop)
-            caller_id = _node_name(int(self._node.uri.rsplit(":", 1)[1].strip("/")))
-            self._node.start()
-        self.client = MasterClient(master, caller_id=caller_id, timeout=timeout)
-        self.descriptions = Descriptions(self.client,
-                                         None if self._node is None else self._node.uri)
+        self.client: MasterClient | GraphSource
+        self.descriptions: Descriptions | DescriptionStore
+        if source is not None:
+            # Another graph (ROS 2 on DDS): it reads and writes for the master and node, and
+            # wakes the loop when something arrives; everything above it is shared.
+            self.client = source
+            self.descriptions = source.descriptions
+            source.on_change = self.wake
+        else:
+            caller_id = f"/teleop_ui_watch_{os.getpid()}"
+            if push:
+                self._node = NodeServer(callback_host(master), master, self._pushed, self.stop)
+                caller_id = _node_name(int(self._node.uri.rsplit(":", 1)[1].strip("/")))
+                self._node.start()
+            self.client = MasterClient(master, caller_id=caller_id, timeout=timeout)
+            self.descriptions = Descriptions(self.client,
+                                             None if self._node is None else self._node.uri)
         self._robots: dict[str, _Tracked] = {}
         self._no_selection = selection_data(None, Request(), solution)
         self._selection = self._no_selection
@@ -192,7 +203,7 @@ class Watcher:
         if self._closed:
             return
         self._closed = True
-        if self._node is not None:
+        if self._node is not None and isinstance(self.client, MasterClient):
             with contextlib.suppress(MasterError):  # gone with the master
                 self.client.unsubscribe_params(self._node.uri, [NAMESPACE])
             self.descriptions.close()
@@ -285,7 +296,8 @@ class Watcher:
         """A parameter update from the master (on the node's server thread)."""
         name = "/" + key.strip("/")
         if name == NAMESPACE or name.startswith(NAMESPACE + "/") \
-                or self.descriptions.push(name, value):
+                or (isinstance(self.descriptions, Descriptions)
+                    and self.descriptions.push(name, value)):
             self._wake.set()
 
     # -- reading the master ----------------------------------------------------------------
@@ -298,7 +310,7 @@ class Watcher:
         self._robots = {}
         self._selection = self._no_selection
         self.descriptions.reset()
-        if self._node is not None:
+        if self._node is not None and isinstance(self.client, MasterClient):
             self.client.subscribe_param(self._node.uri, NAMESPACE)
         observation = self._observe()
         self._pid = observation.pid
@@ -330,9 +342,7 @@ class Watcher:
             if old is not None and old.inputs == inputs:
                 robots[source.namespace] = old
                 continue
-            robot = identify_robot(source, description, semantic, cache=self.cache,
-                                   solution=self.solution, profile=self.profile)
-            data = robot_data(robot)
+            robot, data = self._identify(source, description, semantic)
             robots[source.namespace] = _Tracked(inputs, robot, data)
             if old is None:
                 changes.append(RobotAdded(0, robot))
@@ -343,6 +353,20 @@ class Watcher:
                                 for namespace in sorted(set(self._robots) - set(robots))]
         self._robots = robots
         return [*removed, *changes, *self._select(dict(observation.params))]
+
+    def _identify(self, source: RobotSource, description: Any, semantic: Any
+                  ) -> tuple[LiveRobot, dict[str, Any]]:
+        """One robot and its event fields; whatever goes wrong stays that robot's error."""
+        try:
+            robot = identify_robot(source, description, semantic, cache=self.cache,
+                                   solution=self.solution, profile=self.profile)
+            return robot, robot_data(robot)
+        except Exception as error:  # the per-robot boundary (issue 18)
+            # identify_robot already turns input errors into the robot's; this is the last
+            # line: a robot on the network must never end the watcher serving the others.
+            robot = LiveRobot(source.namespace, None, (),
+                              unexpected_error(source.description_key, error))
+            return robot, robot_data(robot)
 
     def _select(self, params: dict[str, Any]) -> list[Event]:
         request = read_request(params)

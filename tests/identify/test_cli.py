@@ -167,3 +167,34 @@ def test_fleet_lists_dangling_and_looping_links_as_not_identified(tmp_path: Path
     assert "not identified: loop1:" in result.stdout
     assert "not identified: loop2:" in result.stdout
     assert "sub" not in result.stdout
+
+
+@pytest.mark.parametrize(("example", "srdf", "structure", "sensors", "controls"), [
+    ("quadrotor.urdf", None, "UAV", [("imu", None), ("camera", "2D Camera")], ["Flight"]),
+    ("diff_drive_lidar.urdf", None, "UGV", [("lidar", "LIDAR")], ["Driving"]),
+    ("arm_gripper.urdf", "arm_gripper.srdf", "Manipulator", [], ["Joint", "End Effector"]),
+], ids=["quadrotor", "diff drive with a lidar", "arm with a gripper and its SRDF"])
+def test_the_shipped_examples_identify_as_what_they_are(
+        example: str, srdf: str | None, structure: str, sensors: list[tuple[str, str | None]],
+        controls: list[str]) -> None:
+    extra = ["--srdf", str(ROOT / "examples" / srdf)] if srdf else []
+    result = run_cli("identify", ROOT / "examples" / example, *extra, "--format", "json")
+    assert result.returncode == 0, result.stderr
+    shown = json.loads(result.stdout)
+    assert shown["structure"] == structure
+    assert [(s["kind"], s["sensor_type"]) for s in shown["sensors"]] == sensors
+    assert [c["motion_control"] for c in shown["motion_controls"]] == controls
+    assert "warnings" not in shown
+
+
+def test_fleet_lists_the_warnings_of_a_flawed_robot_and_strict_refuses_it(tmp_path: Path) -> None:
+    folder = tmp_path / "robots"
+    folder.mkdir()
+    (folder / "gripper.urdf").write_text(
+        '<robot name="g">\n<link name="finger"/>\n<joint name="finger_joint" type="prismatic">\n'
+        '<parent link="flange"/><child link="finger"/>\n</joint>\n</robot>\n')
+    (folder / "rover.urdf").write_text(builders.ugv().text())
+    shown = run_cli("fleet", folder).stdout
+    assert f"warning: {folder / 'gripper.urdf'}:4: joint[finger_joint].parent:" in shown
+    strict = run_cli("fleet", folder, "--strict").stdout
+    assert f"not identified: gripper: {folder / 'gripper.urdf'}:4:" in strict

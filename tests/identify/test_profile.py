@@ -21,7 +21,7 @@ def test_the_shipped_profile_loads_with_its_structures_in_order() -> None:
 
 def test_every_problem_of_a_profile_is_reported_with_its_location() -> None:
     text = (SHIPPED.replace("  wheel: 'wheel'", "  wheel: '(unclosed'")
-            .replace("when: {legs: 4, arms: 0}", "when: {paws: 4, arms: 0}")
+            .replace("when: {legs: {min: 4}, arms: 0}", "when: {paws: 4, arms: 0}")
             .replace("doubt_factor: 0.8", "doubt_factor: 3")
             .replace("{kind: imu, types: [sensor_msgs/Imu]}",
                      "{kind: imu, types: [sensor_msgs/Imu], direction: sideways}"))
@@ -51,3 +51,22 @@ def test_unknown_keys_and_unknown_structures_are_named() -> None:
 def test_a_profile_that_is_not_a_mapping_is_refused() -> None:
     with pytest.raises(ProfileError):
         parse_profile(parse_document("- a\n- b\n", "list.yaml"))
+
+
+def test_a_catastrophic_user_pattern_runs_without_backtracking() -> None:
+    # ^(a+)+$ takes Python's re some 13 s on 29 letters and a '!'; RE2 answers at once.
+    text = SHIPPED.replace("  wheel: 'wheel'", "  wheel: '^(a+)+$'")
+    profile = parse_profile(parse_document(text, "mine.yaml"))
+    pattern = profile.pattern("wheel")
+    assert pattern is not None
+    assert not pattern.search("a" * 29 + "!")
+    assert pattern.search("a" * 29)
+
+
+def test_a_pattern_needing_backtracking_is_refused_with_its_location() -> None:
+    text = SHIPPED.replace("  wheel: 'wheel'", "  wheel: '(?<=left_)wheel'")
+    with pytest.raises(ProfileError) as caught:
+        parse_profile(parse_document(text, "mine.yaml"))
+    fault = next(f for f in caught.value.faults if f.location.path == "patterns.wheel")
+    assert fault.location.file == "mine.yaml"
+    assert "no lookaround or backreferences" in fault.message

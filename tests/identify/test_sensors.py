@@ -102,3 +102,11 @@ def test_an_unknown_sensor_type_is_listed_under_its_own_name() -> None:
     robot.add(builders.gazebo_sensor("x", "magic_eye", "m"))
     detections = sensors_from_urdf(parse_urdf(robot.text()), load_profile())
     assert [d.kind for d in detections] == ["magic_eye"]
+
+
+def test_a_sensor_declared_in_gazebo_and_as_a_urdf_sensor_on_its_joint_counts_once() -> None:
+    # builders.ugv() has wheel_left_link: the camera sits on it for this test.
+    assert kinds(builders.gazebo_sensor("wheel_left_link", "camera", "front_camera"),
+                 '  <sensor name="front_camera_urdf" update_rate="30">'
+                 '<parent joint="wheel_left_joint"/><camera><image width="640" height="480"/>'
+                 "</camera></sensor>") == [("camera", "2D Camera", 1)]

@@ -93,10 +93,11 @@ def test_a_self_joint_and_a_bad_limit_are_reported() -> None:
     ('<robot name="e"/>', "empty robot"),
     ('<robot name="r"><link name="a"></robot>', "malformed XML"),
 ])
-def test_the_cli_reports_bad_urdfs_with_exit_2(tmp_path: Path, text: str, expected: str) -> None:
+def test_the_cli_with_strict_reports_flawed_urdfs_with_exit_2(tmp_path: Path, text: str,
+                                                              expected: str) -> None:
     path = tmp_path / "bad.urdf"
     path.write_text(text, encoding="utf-8")
-    result = run_cli("identify", path, "--format", "json")
+    result = run_cli("identify", path, "--format", "json", "--strict")
     assert result.returncode == 2
     assert expected in result.stderr
     assert str(path) in result.stderr

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import json
 
-from solver.identify.identify import IdentificationCache
+from solver.identify.identification import IdentificationCache
 from solver.identify.profile import Profile
 from solver.identify.topics import Topic
 from solver.live.discovery import RobotSource

@@ -30,9 +30,10 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
-from solver.errors import InputError
+from solver.errors import Fault, InputError
 from solver.identify.bags import read_bag_topics
 from solver.identify.body import Body, detect_body
+from solver.identify.classifier import classify
 from solver.identify.interfaces import (
     Control,
     controls_from_topics,
@@ -44,7 +45,6 @@ from solver.identify.profile import Profile, load_profile
 from solver.identify.safexml import read_bytes
 from solver.identify.sensors import Detection, Sensor, merge, presented_count, sensors_from_urdf
 from solver.identify.srdf import parse_srdf
-from solver.identify.structure import classify
 from solver.identify.topics import Topic, read_topic_list
 from solver.identify.urdf import parse_urdf
 from solver.identify.xacros import compile_xacro, is_xacro
@@ -76,6 +76,8 @@ class Identification:
     motion_controls: tuple[Control, ...]
     body: Body | None = None
     notes: tuple[str, ...] = ()
+    # Local flaws of the description or SRDF read past, each located (file, line, message).
+    warnings: tuple[Fault, ...] = ()
 
     @property
     def sensor_count(self) -> int:
@@ -111,8 +113,9 @@ def identify_urdf(urdf_text: str | bytes, *, file: str = "<string>", robot: str 
     """Identify a robot from URDF text; :class:`~solver.errors.InputError` if unusable."""
     rules = rules if rules is not None else load_rules(default_rules_path())
     profile = profile if profile is not None else load_profile()
-    urdf = parse_urdf(urdf_text, file)
-    srdf = None if srdf_text is None else parse_srdf(srdf_text, srdf_file, urdf)
+    urdf = parse_urdf(urdf_text, file, strict=False)
+    srdf = None if srdf_text is None else parse_srdf(srdf_text, srdf_file, urdf, strict=False)
+    warnings = urdf.warnings + (srdf.warnings if srdf is not None else ())
     body = detect_body(urdf, profile, srdf)
     reading = classify(body, profile, rules, root=urdf.root, srdf=srdf)
     detections: list[Detection] = list(sensors_from_urdf(urdf, profile))
@@ -126,7 +129,8 @@ def identify_urdf(urdf_text: str | bytes, *, file: str = "<string>", robot: str 
         robot=robot or urdf.name, file=file, structure=reading.structure,
         kinematic_type=reading.kinematic_type, confidence=reading.confidence,
         evidence=reading.evidence, sensors=merge(detections, profile, rules),
-        motion_controls=merge_controls(*controls), body=body, notes=tuple(notes))
+        motion_controls=merge_controls(*controls), body=body, notes=tuple(notes),
+        warnings=warnings)
 
 
 def identify(description: str | Path, *, srdf: str | Path | None = None,

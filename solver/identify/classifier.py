@@ -53,7 +53,12 @@ def classify(body: Body, profile: Profile, rules: RuleSet, *, root: str = "",
         evidence.append("no structure rule of the profile matches this body")
         return Reading("Other", None, 0.0, tuple(evidence))
     confidence = rule.confidence
-    why = ", ".join(c.describe() for c in rule.when) or "no other structure matched"
+    # A catch-all rule says why nothing else fit: the parts every other rule read.
+    parts = [f"{value} {name.replace('_', ' ')}" for name, value in features.items()
+             if value and name not in ("mobile_base", "flying", "floating_base", "weak_base")]
+    why = ", ".join(c.describe() for c in rule.when) or (
+        "no other structure matched; the body has " + (", ".join(parts) or "no parts")
+        + ("" if features["mobile_base"] else ", no mobile base"))
     where = "" if rule.location is None else \
         f" ({Path(rule.location.file).name}:{rule.location.line})"
     evidence.append(f"structure {rule.name}: {why}{where}")
