@@ -34,7 +34,10 @@ def write_all_atomic(files: Mapping[str | Path, str | bytes]) -> list[Path]:
     then every content goes to a temporary file beside its target, and only then are they
     renamed into place. A rename that still fails puts back the files renamed before it.
     """
-    targets = [(Path(path), content.encode("utf-8") if isinstance(content, str) else content)
+    # backslashreplace: a file name that is not UTF-8 (its bytes arrive as surrogate escapes)
+    # is written as "\udcff", readable text, instead of failing the whole write.
+    targets = [(Path(path), content.encode("utf-8", "backslashreplace")
+                if isinstance(content, str) else content)
                for path, content in files.items()]
     faults = [Fault(Location(str(target)), "is a folder; cannot write a file there", "invalid")
               for target, _ in targets if target.is_dir()]

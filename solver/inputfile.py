@@ -10,17 +10,42 @@ Not here: parsing what was read (:mod:`solver.yamlio`, :mod:`solver.identify.saf
 
 from __future__ import annotations
 
+import hashlib
 from pathlib import Path
 
 from solver.errors import InputError
 
-__all__ = ["read_bounded", "read_text"]
+__all__ = ["MAX_SHOWN_NAME", "read_bounded", "read_text", "sha256_bounded", "shown_name"]
+
+# A file name comes from the user or from a file (``rules: ...``): in messages it is shown
+# escaped (no NUL, newline or terminal escape gets through) and at most this long.
+MAX_SHOWN_NAME = 300
+
+
+def shown_name(name: str) -> str:
+    """``name`` as a message may show it: escaped when it holds anything unprintable, cut."""
+    if name.isprintable() and len(name) <= MAX_SHOWN_NAME:
+        return name
+    escaped = name.encode("unicode_escape", "backslashreplace").decode("ascii")
+    if len(escaped) > MAX_SHOWN_NAME:
+        escaped = escaped[:MAX_SHOWN_NAME - 3] + "..."
+    return escaped
+
+
+def sha256_bounded(path: str | Path, *, limit: int) -> str | None:
+    """The SHA-256 of ``path`` read through :func:`read_bounded`; ``None`` when it cannot be
+    read or is larger than ``limit`` (an up-to-date check then says "not up to date" and the
+    solve that follows reports the located error)."""
+    try:
+        return hashlib.sha256(read_bounded(path, limit=limit)).hexdigest()
+    except InputError:
+        return None
 
 
 def read_bounded(path: str | Path, *, display: str | None = None, limit: int,
                  what: str = "file") -> bytes:
     """The bytes of ``path``, refusing more than ``limit`` without reading them all."""
-    name = display if display is not None else str(path)
+    name = shown_name(display if display is not None else str(path))
     file = Path(path)
     try:
         if file.is_dir():
@@ -33,6 +58,12 @@ def read_bounded(path: str | Path, *, display: str | None = None, limit: int,
         raise InputError.at(name, "permission denied") from None
     except OSError as error:
         raise InputError.at(name, f"cannot read: {error.strerror or error}") from None
+    except InputError:
+        raise
+    except ValueError:
+        # Path.open refuses a NUL byte in the name ("embedded null byte"); no file has one.
+        raise InputError.at(name, "not a usable file name (it contains a NUL byte)",
+                            code="bad-name") from None
     if len(data) > limit:
         raise InputError.at(name, f"file is larger than {limit} bytes; refused",
                             code="too-large")
@@ -42,7 +73,7 @@ def read_bounded(path: str | Path, *, display: str | None = None, limit: int,
 def read_text(path: str | Path, *, display: str | None = None, limit: int,
               what: str = "file") -> str:
     """:func:`read_bounded`, decoded as UTF-8 (a byte-order mark is dropped)."""
-    name = display if display is not None else str(path)
+    name = shown_name(display if display is not None else str(path))
     raw = read_bounded(path, display=name, limit=limit, what=what)
     if b"\x00" in raw:
         raise InputError.at(name, f"contains NUL bytes: a binary file, not a {what}")

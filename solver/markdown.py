@@ -14,6 +14,7 @@ Not here: the pages themselves (:mod:`solver.report`, :mod:`solver.batch`) or HT
 
 from __future__ import annotations
 
+import os
 import re
 from collections.abc import Sequence
 from typing import Any
@@ -57,8 +58,12 @@ def heading(level: int, text: object) -> str:
 
 
 def link_target(name: str) -> str:
-    """A relative file name usable as a link or image target (spaces, parentheses, ...)."""
-    return quote(name)
+    """A relative file name usable as a link or image target (spaces, parentheses, ...).
+
+    Percent-encoded from the name's bytes as the file system has them, so a name that is not
+    UTF-8 (``\xff`` arrives as the surrogate escape ``\udcff``) still links to its file.
+    """
+    return quote(os.fsencode(name))
 
 
 def table(headers: Sequence[object], rows: Sequence[Sequence[Any]],

@@ -16,7 +16,24 @@ from typing import Any
 from solver.errors import Fault, did_you_mean
 from solver.yamlio import Document, PathPart
 
-__all__ = ["Reader", "type_name"]
+__all__ = ["MAX_NAME_CHARS", "Reader", "quote", "type_name"]
+
+# Names and labels (of a team, a characteristic, a value, a component, a constraint) are at
+# most this long: they end up in tables, charts and file names. docs/security.md says so.
+MAX_NAME_CHARS = 200
+# What a message may quote of a value from a file: escaped and at most this long.
+MAX_QUOTED_CHARS = 60
+
+
+def quote(value: object) -> str:
+    """``repr`` of ``value``, with every unprintable character escaped and cut short: what a
+    message may quote of a value read from a file."""
+    text = str(value)
+    if len(text) > MAX_QUOTED_CHARS:
+        text = text[:MAX_QUOTED_CHARS]
+        return repr(text)[:-1].encode("ascii", "backslashreplace").decode("ascii") + "...'"
+    return repr(text).encode("ascii", "backslashreplace").decode("ascii") \
+        if not text.isprintable() else repr(text)
 
 Path = tuple[PathPart, ...]
 
@@ -30,7 +47,7 @@ def type_name(value: Any) -> str:
     if isinstance(value, int | float):
         return f"a number ({value})"
     if isinstance(value, str):
-        return f"a string ({value!r})"
+        return f"a string ({quote(value)})"
     if isinstance(value, list):
         return "a list"
     if isinstance(value, dict):
@@ -66,15 +83,24 @@ class Reader:
             value = value[part] if isinstance(part, int) else _lookup(value, part)
         return value
 
-    def top(self, what: str) -> dict[str, Any] | None:
-        """The document's top-level mapping, or ``None`` after a fault (empty file, a list...)."""
+    def top(self, what: str, *, needs: str | None = None) -> dict[str, Any] | None:
+        """The document's top-level mapping, or ``None`` after a fault (empty file, a list...).
+
+        ``needs``: a field without which the file is not a ``what`` at all. Such a file (and
+        one that is no mapping) may be anything, ``/etc/passwd`` say: its fault names the
+        file and the problem and quotes nothing of it.
+        """
         data = self.document.data
         if data is None:
             self.fault((), f"the file is empty; expected a {what}", code="missing-field")
             return None
         if not isinstance(data, dict):
-            self.fault((), f"expected a {what} (a mapping of fields) at the top level, got "
-                           f"{type_name(data)}", code="wrong-type")
+            kind = "a list" if isinstance(data, list) else "a single value"
+            self.fault((), f"not a {what}: expected a mapping of fields at the top level, got "
+                           f"{kind}", code="wrong-type")
+            return None
+        if needs is not None and not any(str(key) == needs for key in data):
+            self.fault((), f"not a {what}: it has no '{needs}:' field", code="missing-field")
             return None
         return {str(key): item for key, item in data.items()}
 
@@ -95,7 +121,9 @@ class Reader:
         self.fault(path, f"missing {what}", code="missing-field")
 
     def string(self, path: Path, what: str, *, required: bool = True,
-               default: str = "") -> str:
+               default: str = "", limit: int | None = MAX_NAME_CHARS) -> str:
+        """A string (a name unless ``limit`` says otherwise: ``None`` for free text, which the
+        YAML reader already bounds)."""
         value = self.get(path)
         if value is None:
             if required:
@@ -108,6 +136,9 @@ class Reader:
         text = str(value).strip()
         if required and not text:
             self.fault(path, f"{what} must not be empty", code="wrong-type")
+        if limit is not None and len(text) > limit:
+            self.fault(path, f"{what} is longer than {limit} characters", code="too-large")
+            return default
         return text
 
     def integer(self, path: Path, what: str, *, required: bool = True) -> int | None:
@@ -129,6 +160,10 @@ class Reader:
             self.missing(path, what)
             return []
         if isinstance(value, str | int) and not isinstance(value, bool):
+            if len(str(value)) > MAX_NAME_CHARS:
+                self.fault(path, f"{what}: a name longer than {MAX_NAME_CHARS} characters",
+                           code="too-large")
+                return []
             return [(path, str(value))]
         if not isinstance(value, list):
             self.fault(path, f"{what} must be a list of names, got {type_name(value)}",
@@ -141,7 +176,12 @@ class Reader:
                 self.fault(item_path, f"{what} must be names, got {type_name(item)}",
                            code="wrong-type")
                 continue
-            found.append((item_path, str(item).strip()))
+            name = str(item).strip()
+            if len(name) > MAX_NAME_CHARS:
+                self.fault(item_path, f"{what}: a name longer than {MAX_NAME_CHARS} "
+                                      "characters", code="too-large")
+                continue
+            found.append((item_path, name))
         return found
 
     def unknown_keys(self, path: Path, mapping: dict[str, Any], allowed: Collection[str],
@@ -150,7 +190,7 @@ class Reader:
         for key in mapping:
             if key not in allowed:
                 hint = did_you_mean(key, allowed)
-                self.fault((*path, key), f"unknown {what} {key!r}{hint}; allowed: "
+                self.fault((*path, key), f"unknown {what} {quote(key)}{hint}; allowed: "
                                          f"{', '.join(sorted(allowed))}",
                            key=True, code="unknown-field")
 

@@ -22,7 +22,16 @@ import yaml
 from solver.errors import Fault, InputError, Location
 from solver.inputfile import read_text
 
-__all__ = ["Document", "PathPart", "format_path", "load_document", "parse_document"]
+__all__ = [
+    "MAX_FILE_BYTES",
+    "MAX_KEY_CHARS",
+    "MAX_TEXT_CHARS",
+    "Document",
+    "PathPart",
+    "format_path",
+    "load_document",
+    "parse_document",
+]
 
 PathPart = str | int
 YamlPath = tuple[PathPart, ...]
@@ -33,6 +42,17 @@ MAX_FILE_BYTES = 16 * 1024 * 1024
 MAX_NODES = 200_000
 # Nesting deeper than this is refused (rule and team files nest a handful of levels).
 MAX_DEPTH = 64
+# A mapping key is a name (a characteristic, a kinematic type, a field): at most this long.
+MAX_KEY_CHARS = 200
+# Any text value (a description is the longest there is) is at most this long: a 15 MB name
+# would otherwise travel through solving, charts and reports.
+MAX_TEXT_CHARS = 10_000
+# Parsing events read before composing: a document that needs more than this many (a 15 MB
+# flow-style line of a million entries) is refused before any node is built. Every value is
+# one event (two for a collection), so this is never reached below MAX_NODES values.
+MAX_EVENTS = 2 * MAX_NODES + 16
+# libyaml when PyYAML has it (ten to fifty times faster on big inputs; same nodes, same marks).
+_LOADER: Any = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
 
 _PLAIN_TAGS = {
     "tag:yaml.org,2002:str",
@@ -113,16 +133,17 @@ def parse_document(text: str, name: str = "<string>", *,
     if "\x00" in text:
         raise InputError.at(name, "contains NUL bytes; is this a YAML file?")
     try:
-        node = yaml.compose(text, Loader=yaml.SafeLoader)
+        _count_events(text, name)
+        node = yaml.compose(text, Loader=_LOADER)
     except yaml.MarkedYAMLError as error:
         mark = error.problem_mark or error.context_mark
-        problem = error.problem or error.context or "invalid YAML"
+        problem = _short(error.problem or error.context or "invalid YAML", 120)
         if mark is None:
             raise InputError.at(name, f"YAML syntax error: {problem}") from None
         raise InputError.at(name, f"YAML syntax error: {problem}",
                             line=mark.line + 1, column=mark.column + 1, code="yaml") from None
     except yaml.YAMLError as error:
-        raise InputError.at(name, f"YAML error: {error}") from None
+        raise InputError.at(name, f"YAML error: {_short(str(error), 120)}") from None
     except RecursionError:
         raise InputError.at(name, f"nested too deeply (more than {MAX_DEPTH} levels); refused",
                             code="too-large") from None
@@ -134,6 +155,18 @@ def parse_document(text: str, name: str = "<string>", *,
     if any(fault.code not in tolerate for fault in walker.faults):
         raise InputError(walker.faults)
     return Document(name, data, walker.value_marks, walker.key_marks, tuple(walker.faults))
+
+
+def _count_events(text: str, name: str) -> None:
+    """Refuse, before composing anything, a document with more parsing events than any
+    document of at most MAX_NODES values has (composing first is what took a minute)."""
+    for count, event in enumerate(yaml.parse(text, Loader=_LOADER)):
+        if count > MAX_EVENTS:
+            mark = event.start_mark
+            raise InputError.at(name, f"more than {MAX_NODES} values; refused",
+                                line=None if mark is None else mark.line + 1,
+                                column=None if mark is None else mark.column + 1,
+                                code="too-large")
 
 
 class _TooLarge(Exception):
@@ -184,7 +217,7 @@ class _Walker:
 
     def _mapping(self, node: yaml.MappingNode, path: YamlPath) -> dict[Any, Any] | None:
         if node.tag != _MAP_TAG:
-            self.fault(node, path, f"unsupported YAML tag {node.tag!r}")
+            self.fault(node, path, f"unsupported YAML tag '{_short(node.tag, 40)}'")
             return None
         result: dict[Any, Any] = {}
         first_seen: dict[Any, int] = {}
@@ -198,6 +231,10 @@ class _Walker:
                 continue
             key = self._scalar(key_node, path)
             if key is None and key_node.tag != "tag:yaml.org,2002:null":
+                continue
+            if len(str(key_node.value)) > MAX_KEY_CHARS:
+                self.fault(key_node, path, f"a key longer than {MAX_KEY_CHARS} characters; "
+                                           "names are at most that long", "too-large")
                 continue
             try:
                 hash(key)
@@ -217,7 +254,7 @@ class _Walker:
 
     def _sequence(self, node: yaml.SequenceNode, path: YamlPath) -> list[Any] | None:
         if node.tag != _SEQ_TAG:
-            self.fault(node, path, f"unsupported YAML tag {node.tag!r}")
+            self.fault(node, path, f"unsupported YAML tag '{_short(node.tag, 40)}'")
             return None
         return [self.convert(item, (*path, index)) for index, item in enumerate(node.value)]
 
@@ -225,11 +262,41 @@ class _Walker:
         if node.tag == _TIMESTAMP_TAG:
             return str(node.value)
         if node.tag not in _PLAIN_TAGS:
-            self.fault(node, path, f"unsupported YAML tag {node.tag!r}; only plain strings, "
-                                   "numbers, booleans, lists and mappings are allowed")
+            self.fault(node, path, f"unsupported YAML tag '{_short(node.tag, 40)}'; only plain "
+                                   "strings, numbers, booleans, lists and mappings are allowed")
+            return None
+        text = str(node.value)
+        if len(text) > MAX_TEXT_CHARS:
+            self.fault(node, path, f"a value longer than {MAX_TEXT_CHARS} characters; refused",
+                       "too-large")
+            return None
+        if any("\ud800" <= char <= "\udfff" for char in text):
+            # A "\udcff" escape: no file, terminal or UTF-8 output can hold it.
+            self.fault(node, path, "contains an unpaired surrogate escape (\\ud800-\\udfff); "
+                                   "not text")
             return None
         try:
-            return self.constructor.construct_object(node)
+            value = self.constructor.construct_object(node)
         except yaml.YAMLError as error:
-            self.fault(node, path, f"cannot read value: {error}")
+            self.fault(node, path, f"cannot read value: {_short(str(error))}")
             return None
+        except (ValueError, OverflowError):
+            # int() of more than 4,300 digits (Python's int-to-string limit).
+            self.fault(node, path, "a number too large to use; refused", "too-large")
+            return None
+        if isinstance(value, int) and not isinstance(value, bool) and \
+                value.bit_length() > _MAX_INT_BITS:
+            # 0x... with thousands of digits is no error to int(), but printing it would be.
+            self.fault(node, path, "a number too large to use; refused", "too-large")
+            return None
+        return value
+
+
+# Whole numbers beyond 2**63 mean nothing in a rule or team file.
+_MAX_INT_BITS = 63
+
+
+def _short(text: str, limit: int = 80) -> str:
+    """``text`` escaped and cut to ``limit`` characters, for quoting input in a message."""
+    escaped = text.encode("unicode_escape", "backslashreplace").decode("ascii")
+    return escaped if len(escaped) <= limit else escaped[:limit - 3] + "..."

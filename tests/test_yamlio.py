@@ -81,7 +81,7 @@ def test_endless_special_files_are_read_only_up_to_the_limit() -> None:
 def test_deep_nesting_is_refused_without_a_traceback() -> None:
     with pytest.raises(InputError, match="nested more than 64 levels deep"):
         parse_document("team: " + "[" * 100 + "]" * 100 + "\n", "deep.yaml")
-    with pytest.raises(InputError, match="nested too deeply"):
+    with pytest.raises(InputError, match=r"nested (too deeply|more than 64 levels deep)"):
         parse_document("team: " + "[" * 5000 + "]" * 5000 + "\n", "deeper.yaml")
 
 

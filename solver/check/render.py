@@ -18,6 +18,7 @@ Not here: running the checks (:mod:`solver.check.runner`).
 from __future__ import annotations
 
 import json
+import re
 from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path, PurePosixPath
 from typing import Any
@@ -28,7 +29,7 @@ from solver.check.registry import ALL_CHECKS
 from solver.check.runner import Report
 from solver.errors import Location
 
-__all__ = ["FORMATS", "json_data", "render", "sarif_data", "summary_line"]
+__all__ = ["FORMATS", "json_data", "render", "sarif_data", "sarif_text", "summary_line"]
 
 FORMATS = ("text", "parsable", "json", "sarif")
 SARIF_SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
@@ -97,6 +98,17 @@ def _version() -> str:
         return "unknown"
 
 
+# In a SARIF plain-text message "[text](target)" is an embedded link (SARIF 2.1.0 section
+# 3.11.6); a literal bracket must be written "\[" / "\]", and a backslash before a bracket
+# doubled, or a name such as "[x](javascript:...)" from a rule file would become a link.
+_SARIF_BRACKET = re.compile(r"(\\*)([\[\]])")
+
+
+def sarif_text(text: str) -> str:
+    """``text`` as a SARIF plain-text message: brackets escaped, so it holds no link."""
+    return _SARIF_BRACKET.sub(lambda m: m.group(1) * 2 + "\\" + m.group(2), text)
+
+
 def sarif_data(report: Report) -> dict[str, Any]:
     """A SARIF 2.1.0 log with one run: every check as a rule, every finding as a result."""
     index = {check.id: i for i, check in enumerate(ALL_CHECKS)}
@@ -113,12 +125,12 @@ def sarif_data(report: Report) -> dict[str, Any]:
             location["logicalLocations"] = [{"fullyQualifiedName": finding.location.path}]
         result: dict[str, Any] = {"ruleId": finding.check, "ruleIndex": index[finding.check],
                                   "level": _SARIF_LEVELS[finding.level],
-                                  "message": {"text": finding.message},
+                                  "message": {"text": sarif_text(finding.message)},
                                   "locations": [location]}
         if finding.related:
             result["relatedLocations"] = [
                 {"id": number, "physicalLocation": _physical(related.location),
-                 "message": {"text": related.message}}
+                 "message": {"text": sarif_text(related.message)}}
                 for number, related in enumerate(finding.related, start=1)]
         results.append(result)
     return {

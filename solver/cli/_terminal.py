@@ -1,0 +1,66 @@
+"""What the command line writes to a terminal never carries a raw control character.
+
+Names, messages and file names come from files and robots that strangers wrote. Printed as
+they are, ``\\x1b[2J`` clears the operator's screen and other escape sequences retitle the
+window, hide text or fake output; a right-to-left override reorders what a line appears to
+say. :func:`main <solver.cli.main>` therefore wraps ``sys.stdout`` and ``sys.stderr`` in an
+:class:`EscapingStream`: every character that is not printable, other than a newline and a
+tab, is written as its Python escape (``\\x1b``, ``\\u202e``), so it is seen, not obeyed.
+
+JSON output is unchanged by this (``json.dumps`` already escapes control characters); text,
+CSV and Markdown written to standard output get the escapes. Files written with ``-o`` are
+not terminals and keep their content (each format escapes what it must itself).
+
+Not here: escaping for a format (CSV cells: :func:`solver.formats.csv_cell`; SARIF messages:
+:mod:`solver.check.render`; Markdown: :mod:`solver.markdown`).
+"""
+
+from __future__ import annotations
+
+import re
+from typing import IO, Any
+
+__all__ = ["EscapingStream", "escape_controls", "raw_stream"]
+
+# C0 controls but newline and tab, DEL, C1 controls, and the invisible format characters that
+# reorder or hide text (bidirectional overrides and isolates, zero-width joiners, BOM).
+_UNSAFE = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u200b-\u200f\u2028-\u202e\u2060-\u2069"
+                     "\ufeff\ud800-\udfff]")
+
+
+def _escape(match: re.Match[str]) -> str:
+    code = ord(match.group())
+    return f"\\x{code:02x}" if code < 0x100 else f"\\u{code:04x}"
+
+
+def escape_controls(text: str) -> str:
+    """``text`` with every control or invisible format character written as its escape."""
+    return _UNSAFE.sub(_escape, text)
+
+
+class EscapingStream:
+    """A text stream that writes to ``stream`` through :func:`escape_controls`.
+
+    Everything else (``isatty``, ``fileno``, ``buffer``, ``encoding``...) is the wrapped
+    stream's, so callers cannot tell the difference except by what reaches the terminal.
+    """
+
+    def __init__(self, stream: IO[str]) -> None:
+        self.raw = stream
+
+    def write(self, text: str) -> int:
+        self.raw.write(escape_controls(text))
+        return len(text)
+
+    def writelines(self, lines: Any) -> None:
+        for line in lines:
+            self.write(line)
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self.raw, name)
+
+
+def raw_stream(stream: IO[str] | EscapingStream) -> IO[str]:
+    """The stream below an :class:`EscapingStream`: for a progress bar that writes its own
+    escape sequences (and is given only escaped text)."""
+    return stream.raw if isinstance(stream, EscapingStream) else stream

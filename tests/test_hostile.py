@@ -1,0 +1,447 @@
+"""Hostile and malformed input, tried as an attacker would: every case ends with a located
+error (exit 2) or a result, never a traceback, a runaway read, a leak or an injection.
+
+The property tests at the end feed random mutations of valid rule files, team files and URDFs
+to every reader and command (bounded numbers of examples, so the suite stays quick).
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from solver.check.render import sarif_text
+from solver.cli import main
+from solver.cli._terminal import escape_controls
+from solver.errors import SolverError
+from solver.formats import csv_cell
+from solver.identify import identify_urdf
+from tests.conftest import ROOT, RULES, TEAMS, run_cli
+
+TEAM = "name: {name}\nrules: {rules}\nteam:\n  UAV: {{motion_control: [Waypoint]}}\n"
+
+
+def team_file(folder: Path, *, name: str = "t", rules: str = "rules.yaml",
+              file: str = "team.yaml") -> Path:
+    path = folder / file
+    path.write_text(TEAM.format(name=name, rules=rules), encoding="utf-8")
+    return path
+
+
+def with_paper_rules(folder: Path) -> None:
+    (folder / "rules.yaml").write_text((RULES / "paper.yaml").read_text(), encoding="utf-8")
+
+
+def assert_located_refusal(result: subprocess.CompletedProcess[str], file: str) -> None:
+    assert result.returncode == 2, result.stderr
+    assert "Traceback" not in result.stderr
+    assert result.stderr.startswith(file), result.stderr
+
+
+# ---- unbounded reads ------------------------------------------------------------------------
+
+@pytest.mark.parametrize("device", ["/dev/zero", "/dev/urandom"])
+def test_batch_refuses_a_rules_file_that_never_ends(tmp_path: Path, device: str) -> None:
+    team_file(tmp_path, rules=device)
+    result = run_cli("batch", tmp_path / "team.yaml", "-o", tmp_path / "out")
+    assert result.returncode == 1, result.stderr  # the team failed; the batch itself ran
+    assert "Traceback" not in result.stderr
+    assert "internal error" not in result.stderr
+    assert f"cannot use rules file '{device}'" in result.stderr
+    assert "larger than 16777216 bytes" in result.stderr
+
+
+# ---- tracebacks that were ----------------------------------------------------------------
+
+def test_a_nul_byte_in_the_rules_path_is_a_located_error(tmp_path: Path) -> None:
+    team_file(tmp_path, rules='"a\\0b"')
+    result = run_cli("solve", tmp_path / "team.yaml")
+    assert_located_refusal(result, f"{tmp_path / 'team.yaml'}:2:8: rules:")
+    assert "contains a NUL byte" in result.stderr
+
+
+def test_a_number_of_5000_digits_is_a_located_error(tmp_path: Path) -> None:
+    team_file(tmp_path, name="9" * 5000)
+    result = run_cli("solve", tmp_path / "team.yaml")
+    assert_located_refusal(result, f"{tmp_path / 'team.yaml'}:1:7: name:")
+    assert "number too large" in result.stderr
+
+
+def test_a_hexadecimal_number_too_large_to_print_is_a_located_error(tmp_path: Path) -> None:
+    team_file(tmp_path, name="0x" + "f" * 5000)
+    result = run_cli("solve", tmp_path / "team.yaml")
+    assert_located_refusal(result, f"{tmp_path / 'team.yaml'}:1:7: name:")
+
+
+def test_a_surrogate_escape_in_a_name_is_a_located_error(tmp_path: Path) -> None:
+    team_file(tmp_path, name='"robot \\udcff"')
+    result = run_cli("report", tmp_path / "team.yaml", "-o", tmp_path / "r.html")
+    assert_located_refusal(result, f"{tmp_path / 'team.yaml'}:1:")
+    assert not (tmp_path / "r.html").exists()
+
+
+@pytest.mark.parametrize("content", [b"\x89MCAP0\r\n", b"\x89MCAP0\r\n" + b"\x00" * 64,
+                                     b"#ROSBAG V2.0\n", os.urandom(4096)])
+@pytest.mark.parametrize("suffix", [".mcap", ".bag", ".db3"])
+def test_a_corrupt_bag_is_a_located_error(tmp_path: Path, content: bytes, suffix: str) -> None:
+    from solver.identify.bags import read_bag_topics
+
+    bag = tmp_path / f"run{suffix}"
+    bag.write_bytes(content)
+    with pytest.raises(SolverError) as raised:
+        read_bag_topics(bag)
+    assert str(raised.value).startswith(str(bag))
+
+
+def test_a_device_given_as_a_bag_is_refused_without_reading_it() -> None:
+    from solver.identify.bags import read_bag_topics
+
+    with pytest.raises(SolverError, match="not a bag file or folder"):
+        read_bag_topics("/dev/zero")
+
+
+def test_a_non_ascii_digit_is_no_sensor_count() -> None:
+    from solver.rules import load_rules
+
+    sensor_count = load_rules(RULES / "paper.yaml").characteristic("sensor_count")
+    assert sensor_count.parse_value("3") == 3
+    assert sensor_count.parse_value("\u0663") is None  # Arabic-Indic three
+    # assign reports a value the rules do not allow and gives the default configuration.
+    result = run_cli("assign", "--team", "case3", "kinematic_type=UAV",
+                     "motion_control=Waypoint", "sensor_count=\u0663")
+    assert result.returncode == 0, result.stderr
+    assert "invalid: sensor_count '\u0663' is not a whole number in 1..50" in result.stdout
+    assert "default UI configuration" in result.stdout
+
+
+def test_a_characteristic_without_a_name_is_a_located_error(tmp_path: Path) -> None:
+    rules = tmp_path / "r.yaml"
+    rules.write_text("characteristics:\n  kind: {values: [A, B]}\n  '': {values: [x]}\n")
+    (tmp_path / "t.yaml").write_text("rules: r.yaml\nteam:\n  A: {}\n")
+    result = run_cli("solve", tmp_path / "t.yaml")
+    assert_located_refusal(result, f"{rules}:3:3: characteristics.: a characteristic needs a "
+                                   "name of visible characters, got ''")
+    assert run_cli("check", rules).returncode == 1  # check: the same fault, as a finding
+
+
+@pytest.mark.parametrize("command", ["batch", "report-html", "report-md", "solve"])
+def test_a_file_name_that_is_not_utf8_is_no_traceback(tmp_path: Path, command: str) -> None:
+    with_paper_rules(tmp_path)
+    team = Path(os.fsdecode(bytes(tmp_path) + b"/t\xff\x1b.yaml"))
+    team_file(tmp_path, file=team.name)
+    args: dict[str, list[str | Path]] = {
+        "batch": ["batch", team, "-o", tmp_path / "out"],
+        "report-html": ["report", team, "-o", tmp_path / "r\udcff.html"],
+        "report-md": ["report", team, "-o", tmp_path / "r\udcff.md"],
+        "solve": ["solve", team, "--format", "csv"],
+    }
+    result = subprocess.run([sys.executable, "-m", "solver", *map(os.fsencode, args[command])],
+                            capture_output=True, cwd=ROOT, check=False, timeout=600)
+    assert result.returncode == 0, result.stderr
+    assert b"Traceback" not in result.stderr
+    assert b"\x1b" not in result.stdout + result.stderr  # shown as the text "\x1b"
+
+
+# ---- sizes: names, lines, whole files ------------------------------------------------------
+
+def test_a_15_megabyte_team_name_is_refused_at_its_line(tmp_path: Path) -> None:
+    team_file(tmp_path, name="x" * 15_000_000)
+    result = run_cli("report", tmp_path / "team.yaml", "-o", tmp_path / "r.html")
+    assert_located_refusal(result, f"{tmp_path / 'team.yaml'}:1:7: name:")
+    assert "longer than 10000 characters" in result.stderr
+    assert len(result.stderr) < 1000
+
+
+def test_a_name_longer_than_200_characters_is_refused(tmp_path: Path) -> None:
+    team_file(tmp_path, name="x" * 201)
+    result = run_cli("solve", tmp_path / "team.yaml")
+    assert_located_refusal(result, f"{tmp_path / 'team.yaml'}:1:7: name:")
+    assert "team name is longer than 200 characters" in result.stderr
+
+
+def test_a_15_megabyte_flow_style_line_is_refused_before_it_is_built(tmp_path: Path) -> None:
+    path = tmp_path / "team.yaml"
+    entries = ", ".join(f"a{i}: b" for i in range(1_500_000))
+    path.write_text("name: t\nteam: {" + entries[:15_000_000] + "}\n")
+    result = run_cli("solve", path)
+    assert_located_refusal(result, f"{path}:2:")
+    assert "more than 200000 values" in result.stderr
+
+
+# ---- leaks -------------------------------------------------------------------------------
+
+SECRET = "root:x:0:0:the-secret-line:/root:/bin/bash"
+
+
+@pytest.mark.parametrize("foreign", [
+    f"{SECRET}\ndaemon:x:1:1::/:/bin/false\n",             # /etc/passwd: one plain scalar
+    f"{SECRET}: 1\nother: [{SECRET}]\n",                    # a mapping of the wrong shape
+    f"- {SECRET}\n- x\n",                                    # a list
+])
+@pytest.mark.parametrize("command", ["solve", "count", "robots", "check", "identify", "batch",
+                                     "report", "assign", "reproduce"])
+def test_a_rules_file_that_is_no_rule_set_is_named_never_quoted(
+        tmp_path: Path, foreign: str, command: str) -> None:
+    (tmp_path / "passwd").write_text(foreign)
+    team = team_file(tmp_path, rules="passwd")
+    out = tmp_path / "out"
+    args: dict[str, list[str | Path]] = {
+        "check": ["check", team],
+        "identify": ["identify", _urdf(tmp_path), "--team", team],
+        "batch": ["batch", team, "-o", out],
+        "report": ["report", team, "-o", tmp_path / "r.html"],
+        "assign": ["assign", "--team", team, "kinematic_type=UAV"],
+    }
+    result = run_cli(*args.get(command, [command, team]))
+    assert result.returncode in (1, 2), result.stderr
+    assert "Traceback" not in result.stderr
+    assert "passwd" in result.stderr + result.stdout  # the file is named...
+    for text in (result.stdout, result.stderr, *_summaries(out)):
+        assert "the-secret-line" not in text  # ...and nothing of it is quoted
+
+
+def _summaries(out: Path) -> list[str]:
+    return [(out / name).read_text() for name in ("summary.csv", "summary.md")
+            if (out / name).is_file()]
+
+
+def _urdf(folder: Path) -> Path:
+    path = folder / "robot.urdf"
+    path.write_text('<robot name="r"><link name="base"/></robot>\n')
+    return path
+
+
+# ---- injections ----------------------------------------------------------------------------
+
+@pytest.mark.parametrize(("cell", "shown"), [
+    ("=HYPERLINK(\"http://x\")", "'=HYPERLINK(\"http://x\")"), ("+1+2", "'+1+2"),
+    ("-2+3", "'-2+3"), ("@SUM(A1)", "'@SUM(A1)"), ("\tx", "'\tx"), ("\rx", "'\rx"),
+    ("-3", "-3"), ("UAV", "UAV"), (5, 5)])
+def test_csv_cells_that_read_as_formulas_are_neutralised(cell: object, shown: object) -> None:
+    assert csv_cell(cell) == shown
+
+
+def test_batch_summary_and_solve_csv_neutralise_formula_names(tmp_path: Path) -> None:
+    with_paper_rules(tmp_path)
+    team = team_file(tmp_path, name="'=cmd|calc'")
+    result = run_cli("batch", team, "-o", tmp_path / "out")
+    assert result.returncode == 0, result.stderr
+    rows = list(csv.DictReader(io.StringIO((tmp_path / "out" / "summary.csv").read_text())))
+    assert rows[0]["team"] == "'=cmd|calc"
+    solved = run_cli("solve", team, "--format", "csv")
+    assert "\n=" not in solved.stdout
+    assert not solved.stdout.startswith("=")
+
+
+def test_robots_csv_neutralises_formula_values(tmp_path: Path) -> None:
+    rules = tmp_path / "r.yaml"
+    rules.write_text("characteristics:\n  kind: {values: ['=1+1', B]}\n"
+                     "  n: {range: {min: -1, max: 0}}\n")
+    team = tmp_path / "t.yaml"
+    team.write_text("rules: r.yaml\nteam:\n  '=1+1': {}\n")
+    result = run_cli("robots", team)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.splitlines()[1:] == ["1,'=1+1,-1", "2,'=1+1,0"]
+
+
+def test_sarif_messages_hold_no_link() -> None:
+    assert sarif_text("[x](javascript:alert(1))") == "\\[x\\](javascript:alert(1))"
+    assert sarif_text("a\\[b") == "a\\\\\\[b"
+    assert sarif_text("plain (text)") == "plain (text)"
+
+
+def test_sarif_output_of_check_escapes_a_bracketed_name(tmp_path: Path) -> None:
+    rules = tmp_path / "r.yaml"
+    rules.write_text("characteristics:\n  kind: {values: [A, B]}\n  x: {values: [u, v]}\n"
+                     "constraints:\n  - name: '[x](javascript:alert(1))'\n"
+                     "    when: {kind: A}\n    require: {x: [u]}\n"
+                     "  - name: '[x](javascript:alert(1))'\n"
+                     "    when: {kind: A}\n    require: {x: [u]}\n")
+    result = run_cli("check", rules, "--format", "sarif")
+    assert result.returncode in (0, 1), result.stderr
+    texts = [r["message"]["text"] for r in json.loads(result.stdout)["runs"][0]["results"]]
+    assert all("[x]" not in text for text in texts)
+
+
+def test_terminal_output_shows_escape_sequences_escaped(tmp_path: Path) -> None:
+    with_paper_rules(tmp_path)
+    team = team_file(tmp_path, name='"\\e[2Jevil\\u202e"')
+    result = run_cli("solve", team)
+    assert result.returncode == 0, result.stderr
+    assert "\x1b" not in result.stdout
+    assert "\u202e" not in result.stdout
+    assert result.stdout.startswith("\\x1b[2Jevil\\u202e")
+    assert escape_controls("tab\tand\nnewline\x07") == "tab\tand\nnewline\\x07"
+
+
+def test_terminal_errors_show_escape_sequences_escaped(tmp_path: Path) -> None:
+    team = team_file(tmp_path, rules='"\\e]0;pwned\\a"')
+    result = run_cli("solve", team)
+    assert result.returncode == 2
+    assert "\x1b" not in result.stderr
+    assert "\x07" not in result.stderr
+
+
+def test_fleet_writes_a_newline_in_a_robot_name_as_an_escape(tmp_path: Path) -> None:
+    from tests.identify import builders
+
+    folder = tmp_path / "robots"
+    folder.mkdir()
+    (folder / "rover\nUAV: {}\n#.urdf").write_text(builders.ugv().text())
+    team = tmp_path / "team.yaml"
+    result = run_cli("fleet", folder, "-o", team)
+    assert result.returncode == 0, result.stderr
+    from solver import load_team
+
+    assert load_team(team).kinematic_types == ("UGV",)
+
+
+# ---- orphans -------------------------------------------------------------------------------
+
+def _descendants(pid: int) -> set[int]:
+    children: dict[int, list[int]] = {}
+    for entry in Path("/proc").iterdir():
+        if entry.name.isdigit():
+            try:
+                fields = (entry / "stat").read_text().rsplit(")", 1)[1].split()
+            except OSError:
+                continue
+            children.setdefault(int(fields[1]), []).append(int(entry.name))
+    found, todo = set(), [pid]
+    while todo:
+        for child in children.get(todo.pop(), []):
+            if child not in found:
+                found.add(child)
+                todo.append(child)
+    return found
+
+
+def _alive(pid: int) -> bool:
+    try:
+        state = (Path("/proc") / str(pid) / "stat").read_text().rsplit(")", 1)[1].split()[0]
+    except OSError:
+        return False
+    return state != "Z"
+
+
+def test_the_worker_pool_exits_when_batch_is_killed(tmp_path: Path) -> None:
+    teams = tmp_path / "teams"
+    teams.mkdir()
+    for number in range(400):
+        (teams / f"t{number}.yaml").write_text((TEAMS / "case3.yaml").read_text()
+                                               .replace("rules: ../paper.yaml",
+                                                        f"rules: {RULES / 'paper.yaml'}"))
+    process = subprocess.Popen([sys.executable, "-m", "solver", "batch", teams, "-o",
+                                tmp_path / "out", "-j", "2"], cwd=ROOT,
+                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    pool: set[int] = set()
+    for _ in range(600):  # until the forkserver and both workers are up
+        pool = _descendants(process.pid)
+        if len(pool) >= 3 or process.poll() is not None:
+            break
+        time.sleep(0.05)
+    assert process.poll() is None, "the batch ended before it was killed"
+    assert len(pool) >= 3, "no worker pool was started"
+    os.kill(process.pid, signal.SIGKILL)
+    process.wait()
+    for _ in range(200):  # the workers look every half second
+        if not any(_alive(pid) for pid in pool):
+            break
+        time.sleep(0.1)
+    left = [pid for pid in pool if _alive(pid)]
+    for pid in left:  # do not leave them behind for the next test either
+        os.kill(pid, signal.SIGKILL)
+    assert left == []
+
+
+# ---- random mutations of valid files ---------------------------------------------------------
+
+HOSTILE = [b"\x00", b"\xff", b"\xed\xb3\xbf", b"9" * 4400, b".inf", b"1e999", b"&a", b"*a",
+           b"!!python/object:os.system", b"[", b"{", b"]", b"}", b": ", b"\n", b"- ", b"\t",
+           b"\"\\udcff\"", b"\x1b[2J", b"'", b"\"", b"<<: *a", b"---", b"...", b"? ", b"|",
+           b"<!DOCTYPE r [<!ENTITY e SYSTEM 'file:///etc/passwd'>]>", b"&e;", b"<", b">",
+           b"</link>", b"<link name=''/>", b"0x" + b"f" * 40, b"\xd9\xa3", b"~", b"-1", b"1.5"]
+
+
+@st.composite
+def mutations(draw: st.DrawFn, original: bytes) -> bytes:
+    data = bytearray(original)
+    for _ in range(draw(st.integers(1, 4))):
+        start = draw(st.integers(0, len(data)))
+        end = min(len(data), start + draw(st.integers(0, 12)))
+        insert = draw(st.sampled_from(HOSTILE) | st.binary(max_size=8))
+        data[start:end] = insert
+    return bytes(data)
+
+
+FUZZ = settings(max_examples=25, deadline=None, derandomize=True,
+                suppress_health_check=[HealthCheck.function_scoped_fixture,
+                                       HealthCheck.too_slow])
+
+
+def run_main(*args: str | Path) -> int:
+    """The command line in this process: an exception other than SystemExit is a traceback."""
+    try:
+        return main([str(arg) for arg in args])
+    except SystemExit as exit:  # argparse usage errors
+        return int(exit.code or 0)
+
+
+def _fuzz_commands(folder: Path, team: Path) -> list[list[str | Path]]:
+    return [["solve", team], ["count", team], ["robots", team, "--max-robots", "100000"],
+            ["check", team], ["report", team, "-o", folder / "r.md"],
+            ["batch", team, "-o", folder / "out"]]
+
+
+@FUZZ
+@given(data=mutations((RULES / "paper.yaml").read_bytes()))
+def test_mutated_rule_files_never_reach_a_traceback(tmp_path_factory: pytest.TempPathFactory,
+                                                     data: bytes) -> None:
+    folder = tmp_path_factory.mktemp("rules")
+    (folder / "rules.yaml").write_bytes(data)
+    team = team_file(folder)
+    for args in _fuzz_commands(folder, team):
+        assert run_main(*args) in (0, 1, 2), args
+
+
+@FUZZ
+@given(data=mutations((TEAMS / "case3.yaml").read_bytes()
+                      .replace(b"rules: ../paper.yaml", b"rules: rules.yaml")))
+def test_mutated_team_files_never_reach_a_traceback(tmp_path_factory: pytest.TempPathFactory,
+                                                    data: bytes) -> None:
+    folder = tmp_path_factory.mktemp("team")
+    with_paper_rules(folder)
+    team = folder / "team.yaml"
+    team.write_bytes(data)
+    for args in _fuzz_commands(folder, team):
+        assert run_main(*args) in (0, 1, 2), args
+
+
+def _corpus_urdf() -> bytes:
+    from tests.identify import builders
+
+    return builders.ugv().text().encode()
+
+
+@FUZZ
+@given(data=mutations(_corpus_urdf()))
+def test_mutated_urdfs_are_identified_or_refused(data: bytes) -> None:
+    try:
+        identify_urdf(data, file="fuzz.urdf")
+    except SolverError as error:
+        message = str(error)
+    else:
+        return
+    assert message.startswith("fuzz.urdf")
+
