@@ -38,7 +38,12 @@ def register(subparsers: Any) -> None:
     add_master_options(parser, required_help="read the robot's values from this master")
     parser.add_argument("--robot", metavar="NS",
                         help="with --master: the robot's namespace, e.g. /uav1 (default: "
-                             "/teleop_ui/active_robot)")
+                             "/teleop_ui/active_robot); required with --ros2")
+    parser.add_argument("--ros2", action="store_true",
+                        help="read the robot from a ROS 2 graph on DDS instead (the [ros2] "
+                             "extra; see docs/live.md)")
+    parser.add_argument("--domain", type=int, default=None, metavar="N",
+                        help="with --ros2: the DDS domain id (default: $ROS_DOMAIN_ID, else 0)")
     add_profile(parser)
     parser.set_defaults(run=run)
 
@@ -50,6 +55,8 @@ def run(args: argparse.Namespace) -> int:
     from solver.solution import solve
 
     combination = parse_combination(args.combination)
+    if args.ros2:
+        return run_ros2(args, combination)
     if args.master is not None:
         return run_live(args, combination)
     for option in ("robot", "profile"):
@@ -73,5 +80,26 @@ def run_live(args: argparse.Namespace, combination: dict[str, str]) -> int:
     solution = solve(load_team_argument(args.team, args.rules))
     live = assign_from_master(master, solution, load_profile(args.profile), robot=args.robot,
                               given=combination, timeout=args.timeout)
+    write(render_live_assignment(live, solution, args.format))
+    return 0
+
+
+def run_ros2(args: argparse.Namespace, combination: dict[str, str]) -> int:
+    from solver.cli.watch import ros2_domain
+    from solver.errors import InputError
+    from solver.identify.profile import load_profile
+    from solver.live.query import assign_from_graph
+    from solver.live.render import render_live_assignment
+    from solver.live.sources.ros2 import DdsGraph
+    from solver.solution import solve
+
+    domain = ros2_domain(args)
+    if args.robot is None:
+        raise InputError.at("<arguments>", "--ros2 needs --robot NS (the active robot is a "
+                                           "topic on ROS 2: `watch --ros2` answers it)")
+    solution = solve(load_team_argument(args.team, args.rules))
+    source = DdsGraph(domain)
+    live = assign_from_graph(source, solution, load_profile(args.profile), robot=args.robot,
+                             given=combination)
     write(render_live_assignment(live, solution, args.format))
     return 0

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import os
 import signal
 import sys
 from typing import TYPE_CHECKING, Any
@@ -18,6 +19,7 @@ from solver.cli._common import (
 )
 
 if TYPE_CHECKING:
+    from solver.identify.profile import Profile
     from solver.live.watcher import Watcher
     from solver.solution import Solution
 
@@ -34,6 +36,12 @@ def register(subparsers: Any) -> None:
                     "The active selection's UI configuration is written to "
                     "/teleop_ui/ui_configuration.")
     add_master_options(parser, required_help="default: $ROS_MASTER_URI")
+    parser.add_argument("--ros2", action="store_true",
+                        help="follow a ROS 2 graph on DDS instead of a ROS 1 master (no ROS 2 "
+                             "needed; the [ros2] extra; Cyclone DDS is configured by "
+                             "$CYCLONEDDS_URI); see docs/live.md")
+    parser.add_argument("--domain", type=int, default=None, metavar="N",
+                        help="with --ros2: the DDS domain id (default: $ROS_DOMAIN_ID, else 0)")
     parser.add_argument("--team", "-t", required=True, metavar="TEAM.yaml",
                         help="team selection file (or a shipped team name)")
     add_rules(parser)
@@ -54,10 +62,12 @@ def run(args: argparse.Namespace) -> int:
     from solver.live.watcher import Watcher
     from solver.solution import solve
 
-    master = master_uri(args.master)
     team = load_team_argument(args.team, args.rules)
     profile = load_profile(args.profile)
     solution = solve(team)
+    if args.ros2:
+        return _watch_ros2(args, solution, profile)
+    master = master_uri(args.master)
 
     with Watcher(master, solution, profile, interval=args.interval, timeout=args.timeout,
                  push=not args.once) as watcher:
@@ -69,6 +79,41 @@ def run(args: argparse.Namespace) -> int:
             return _watch(watcher, args, master, solution)
         finally:
             signal.signal(signal.SIGTERM, previous)
+
+
+def ros2_domain(args: argparse.Namespace) -> int:
+    """--domain, else $ROS_DOMAIN_ID, else 0; a located error for anything else."""
+    from solver.errors import InputError
+    if args.master is not None:
+        raise InputError.at("<arguments>", "--ros2 reads a DDS domain: give --domain N, "
+                                           "not --master")
+    text = str(args.domain) if args.domain is not None else os.environ.get("ROS_DOMAIN_ID", "0")
+    if not text.strip().isdigit() or not 0 <= int(text) <= 232:
+        raise InputError.at("<arguments>", f"DDS domain id must be 0..232, got {text!r}")
+    return int(text)
+
+
+def _watch_ros2(args: argparse.Namespace, solution: Solution, profile: Profile) -> int:
+    from solver.live.render import render_event
+    from solver.live.sources.ros2 import DdsGraph
+    from solver.live.watcher import Watcher
+
+    source = DdsGraph(ros2_domain(args))
+    with Watcher(source.name, solution, profile, interval=args.interval, source=source
+                 ) as watcher:
+        previous = signal.signal(signal.SIGTERM,
+                                 lambda *_: watcher.stop("terminated (SIGTERM)"))
+        try:
+            if args.once:
+                source.settle()  # discovery on DDS takes a moment: see what is there first
+            events = watcher.snapshot() if args.once else watcher.events()
+            for event in events:
+                write(render_event(event, solution, args.format))
+        finally:
+            signal.signal(signal.SIGTERM, previous)
+    if watcher.stop_reason is not None and not args.once:
+        print(f"watch stopped: {watcher.stop_reason}", file=sys.stderr)
+    return 0
 
 
 def _watch(watcher: Watcher, args: argparse.Namespace, master: str, solution: Solution

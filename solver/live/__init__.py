@@ -1,4 +1,5 @@
-"""Live UI assignment from a running ROS 1 master (``teleop-ui watch``, ``assign --master``).
+"""Live UI assignment from a running ROS graph (``teleop-ui watch``, ``assign --master``):
+a ROS 1 master, or a ROS 2 graph on DDS (``--ros2``, :mod:`solver.live.sources.ros2`).
 
 Robots connected to a teleoperation system get their UI configuration from their ROS
 metadata, and switching robots or control modes switches the configuration at once. The
@@ -15,7 +16,8 @@ Modules, one concept each:
 ``selection``          ``/teleop_ui/active_*`` -> one configuration, written back
 ``events``             the event kinds and their JSON schema
 ``watcher``            the state machine: polls, pushes, loss, backoff, resync
-``query``              one question: ``assign --master URL --robot NS``
+``query``              one question: ``assign --master URL --robot NS`` (or ``--ros2``)
+``sources``            graph sources: ``ros2`` (DDS, Cyclone DDS); the watcher takes one
 ``render``             events as JSON lines or text; ``assign --master`` output
 =====================  ==========================================================
 

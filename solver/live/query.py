@@ -17,6 +17,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from solver.assignment import Assignment
 from solver.errors import InputError, did_you_mean
@@ -28,7 +29,10 @@ from solver.live.robot import identify_robot
 from solver.live.selection import NAMESPACE, choose, read_request, requested_values
 from solver.solution import Solution
 
-__all__ = ["LiveAssignment", "assign_from_master"]
+if TYPE_CHECKING:
+    from solver.live.sources.ros2 import DdsGraph
+
+__all__ = ["LiveAssignment", "assign_from_graph", "assign_from_master"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -79,3 +83,28 @@ def assign_from_master(master: str, solution: Solution, profile: Profile, *,
         raise InputError.at(master, f"robot {namespace} cannot be identified:\n{live.error}")
     assignment, chosen = choose(live, values, solution)
     return LiveAssignment(namespace, assignment, (*notes, *chosen))
+
+
+def assign_from_graph(source: DdsGraph, solution: Solution, profile: Profile, *, robot: str,
+                      given: Mapping[str, str] | None = None) -> LiveAssignment:
+    """:func:`assign_from_master` on a ROS 2 graph: the robot ``robot`` as the watcher sees it
+    once discovery is quiet (``--robot`` is required: the active robot is a topic there)."""
+    from solver.live.watcher import Watcher
+
+    namespace = normalise_namespace(robot)
+    source.settle()
+    with Watcher(source.name, solution, profile, source=source) as watcher:
+        watcher.snapshot()
+        robots = watcher.robots()
+    live = robots.get(namespace)
+    if live is None:
+        there = ", ".join(robots) or "none"
+        raise InputError.at("<arguments>", f"no robot {namespace} on {source.name} (no "
+                                           f"{namespace.rstrip('/')}/robot_description)"
+                                           f"{did_you_mean(namespace, robots)}; robots there: "
+                                           f"{there}")
+    if live.identification is None:
+        raise InputError.at(source.name, f"robot {namespace} cannot be identified:\n"
+                                         f"{live.error}")
+    assignment, chosen = choose(live, dict(given or {}), solution)
+    return LiveAssignment(namespace, assignment, tuple(chosen))

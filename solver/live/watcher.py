@@ -234,6 +234,10 @@ class Watcher:
 
     # -- events --------------------------------------------------------------------------
 
+    def robots(self) -> dict[str, LiveRobot]:
+        """The robots as last read (after :meth:`snapshot` or an event), by namespace."""
+        return {namespace: tracked.robot for namespace, tracked in sorted(self._robots.items())}
+
     def snapshot(self) -> list[Event]:
         """One full synchronisation: ``robot_added`` per robot, the selection, ``synced``.
 

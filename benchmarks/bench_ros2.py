@@ -1,0 +1,171 @@
+"""Latency of ``teleop-ui watch --ros2`` on real Cyclone DDS participants, loopback only.
+
+Ten emulated ROS 2 robots (five quadrotors, five rovers: separate processes, see
+:mod:`tests.live.ros2_robot`) are on a DDS domain of their own; a watcher (DdsGraph source,
+default polling interval 0.2 s) runs in a thread. Timed:
+
+* ``switch``: the operator participant writes ``/teleop_ui/active_robot`` (round-robin over the
+  ten) -> the operator's reader receives ``/teleop_ui/ui_configuration`` naming that robot
+  (end to end: DDS both ways, the watcher woken by the sample; issue 16's target: median
+  <= 50 ms);
+* ``description``: a new robot's transient-local ``robot_description`` is written -> the
+  watcher's ``robot_added`` for it (discovery of the new writer, the sample, identification).
+
+Each round asserts what it timed (robot, configuration number); the median and 95th percentile
+are printed and kept in the benchmark's extra info. Run:
+``python -m pytest benchmarks/bench_ros2.py -s -p no:cacheprovider``.
+"""
+
+import itertools
+import os
+import queue
+import statistics
+import threading
+import time
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+import pytest
+from pytest_benchmark.fixture import BenchmarkFixture
+
+from solver.identify.profile import load_profile
+from solver.live.events import event_data
+from solver.live.sources.ros2 import DdsGraph
+from solver.live.watcher import Watcher
+from solver.solution import Solution, solve
+from solver.team import load_team
+from tests.conftest import TEAMS
+from tests.live.fleet import drone_configuration, drone_text, rover_configuration, rover_text
+from tests.live.ros2_graph import EmulatedRobot, Operator, next_domain, write_config
+
+SWITCHES = 40
+DESCRIPTIONS = 10
+
+
+class Fleet:
+    def __init__(self, directory: Path) -> None:
+        os.environ["CYCLONEDDS_URI"] = write_config(directory)
+        self.domain = next_domain()
+        self.solution: Solution = solve(load_team(TEAMS / "case3.yaml"))
+        self.robots: list[EmulatedRobot] = []
+        self.names: list[str] = []
+        for index in range(10):
+            robot = EmulatedRobot(self.domain, dict(os.environ), 24 if index % 2 else 16)
+            if index < 5:
+                name = f"/uav{index}"
+                robot.node(f"{name}/camera_driver",
+                           publish=[(f"{name}/camera/image_raw", "sensor_msgs/msg/Image")])
+                robot.describe(name, drone_text(), directory)
+            else:
+                name = f"/ugv{index}"
+                robot.node(f"{name}/base_driver",
+                           subscribe=[(f"{name}/cmd_vel", "geometry_msgs/msg/Twist")],
+                           publish=[(f"{name}/scan", "sensor_msgs/msg/LaserScan")])
+                robot.describe(name, rover_text(), directory)
+            self.robots.append(robot)
+            self.names.append(name)
+        source = DdsGraph(self.domain)
+        self.watcher = Watcher(source.name, self.solution, load_profile(), source=source)
+        self.events: queue.Queue[tuple[float, dict[str, Any]]] = queue.Queue()
+        self.thread = threading.Thread(target=self._run, daemon=True)
+        self.thread.start()
+        self.operator = Operator(self.domain)
+        ready: set[str] = set()
+        deadline = time.monotonic() + 60
+        while ready != set(self.names) and time.monotonic() < deadline:
+            _, data = self.events.get(timeout=60)
+            if data.get("combinations"):
+                ready.add(data["robot"])
+        assert ready == set(self.names), f"robots identified: {sorted(ready)}"
+
+    def _run(self) -> None:
+        for event in self.watcher.events():
+            self.events.put((time.perf_counter(), event_data(event, self.solution)))
+
+    def until_event(self, robot: str, kind: str) -> tuple[float, dict[str, Any]]:
+        while True:
+            at, data = self.events.get(timeout=60)
+            if data["event"] == kind and data.get("robot") == robot:
+                return at, data
+
+    def expected(self, robot: str) -> int:
+        return drone_configuration(self.solution) if robot.startswith("/uav") \
+            else rover_configuration(self.solution)
+
+    def close(self) -> None:
+        self.watcher.stop("benchmark over")
+        self.thread.join(timeout=30)
+        self.watcher.close()
+        self.operator.close()
+        for robot in self.robots:
+            robot.kill()
+
+
+@pytest.fixture(scope="module")
+def fleet(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Fleet]:
+    running = Fleet(tmp_path_factory.mktemp("dds"))
+    yield running
+    running.close()
+
+
+def report(benchmark: BenchmarkFixture, name: str, latencies: list[float]) -> None:
+    ordered = sorted(latencies)
+    p95 = ordered[min(len(ordered) - 1, round(0.95 * (len(ordered) - 1)))]
+    benchmark.extra_info.update({"changes": len(ordered),
+                                 "median_ms": round(statistics.median(ordered) * 1000, 1),
+                                 "p95_ms": round(p95 * 1000, 1)})
+    if not benchmark.disabled:
+        print(f"\n{name}: {len(ordered)} changes: median "
+              f"{statistics.median(ordered) * 1000:.1f} ms, 95th percentile "
+              f"{p95 * 1000:.1f} ms, max {ordered[-1] * 1000:.1f} ms")
+
+
+def test_active_robot_message_to_published_configuration(benchmark: BenchmarkFixture,
+                                                         fleet: Fleet) -> None:
+    order = itertools.cycle(fleet.names)
+    latencies: list[float] = []
+
+    def switch() -> None:
+        robot = next(order)
+        start = time.perf_counter()
+        fleet.operator.activate(robot)
+        while True:
+            answer = fleet.operator.answer()
+            if answer is not None and answer.get("robot") == robot:
+                break
+            time.sleep(0.0005)
+        latencies.append(time.perf_counter() - start)
+        assert answer["configuration"] == fleet.expected(robot)
+
+    benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
+        switch, rounds=SWITCHES)
+    report(benchmark, "active robot -> published configuration (10 robots)", latencies)
+
+
+def test_new_robots_description_to_its_first_event(benchmark: BenchmarkFixture,
+                                                   fleet: Fleet) -> None:
+    from cyclonedds.pub import DataWriter
+    from cyclonedds.topic import Topic
+
+    from tests.live.ros2_robot import LATCHED
+    latencies: list[float] = []
+    counter = itertools.count()
+    writers: list[Any] = []
+
+    def describe() -> None:
+        name = f"/new{next(counter)}"
+        participant = fleet.operator.participant
+        writer: Any = DataWriter(participant, Topic(participant, f"rt{name}/robot_description",
+                                               fleet.operator.String), qos=LATCHED)
+        writers.append(writer)
+        start = time.perf_counter()
+        writer.write(fleet.operator.String(drone_text()))
+        at, data = fleet.until_event(name, "robot_added")
+        latencies.append(at - start)
+        # Only its description (no camera topic yet): identified as a UAV, without sensors.
+        assert (data["kinematic_type"], data["error"], data["sensors"]) == ("UAV", None, [])
+
+    benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
+        describe, rounds=DESCRIPTIONS)
+    report(benchmark, "new robot's description -> robot_added", latencies)

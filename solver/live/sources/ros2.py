@@ -1,0 +1,399 @@
+"""A ROS 2 graph read straight from DDS with Eclipse Cyclone DDS: no ROS 2 installation needed.
+
+ROS 2's DDS middlewares (rmw_cyclonedds_cpp, rmw_fastrtps_cpp, rmw_connextdds) map the ROS
+graph onto plain DDS, as the ROS 2 design article "Topic and Service name mapping to DDS" and
+the rmw sources define it; this module reads that mapping back:
+
+* a topic ``/ns/name`` is the DDS topic ``rt/ns/name``; a service ``/ns/srv`` is the pair
+  ``rq/ns/srvRequest`` / ``rr/ns/srvReply``; an action's topics are ``rt/ns/act/_action/...``;
+* a type ``pkg/msg/Type`` is the DDS type ``pkg::msg::dds_::Type_`` (``srv``, ``action`` too);
+* every DDS writer and reader is announced in the built-in ``DCPSPublication`` /
+  ``DCPSSubscription`` topics (topic name, type name, endpoint GUID), and vanishes from them
+  when its participant leaves;
+* node names are not DDS entities: every participant publishes ``ros_discovery_info``
+  (``rmw_dds_common::msg::dds_::ParticipantEntitiesInfo_``: its gid and, per node, namespace,
+  name and the gids of its readers and writers). A gid is the endpoint's 16-byte GUID, carried
+  in a 24-byte array before ROS 2 Iron and a 16-byte one from Iron on: both layouts are read,
+  each with a reader of its own, and matched on the first 16 bytes;
+* ``robot_state_publisher`` publishes ``/<ns>/robot_description`` (``std_msgs/msg/String``)
+  reliable and transient-local, once: the reader here asks for transient-local to get it late.
+
+Robots are then found as on a ROS 1 master: the graph is turned into the same
+:class:`~solver.live.master.Observation` (a written ``rt/<ns>/robot_description`` stands for the
+parameter ``/<ns>/robot_description``), and :mod:`solver.live.discovery` does the rest.
+
+The operator's selection and the answer are topics (ROS 2 has no parameter server), all
+``std_msgs/msg/String``, reliable and transient-local, so that an rclpy or rclcpp station uses
+them with standard messages: ``/teleop_ui/active_robot`` in (the robot's namespace), and
+``/teleop_ui/ui_configuration`` out (the JSON object a ROS 1 watcher writes to the parameter of
+that name; ``null`` with no active robot).
+
+Bounds: a description longer than :data:`~solver.identify.safexml.MAX_XML_BYTES` is not
+identified (the robot is reported with a located error); a sample that cannot be decoded is
+that robot's error too. Nothing one participant sends stops the source.
+
+Not here: identification and events (the watcher's, the same for ROS 1).
+"""
+
+# No "from __future__ import annotations": Cyclone DDS resolves the IDL field annotations of
+# the classes built in _types() at run time, in their own scope.
+import json
+import os
+import threading
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass
+from typing import Any
+
+from solver.errors import InputError
+from solver.live.master import MISSING, Observation
+from solver.live.sources import DescriptionStore
+
+__all__ = ["ACTIVE_TOPIC", "ANSWER_TOPIC", "DdsGraph", "dds_topic", "dds_type", "ros_name",
+           "ros_type"]
+
+ACTIVE_TOPIC = "/teleop_ui/active_robot"
+ANSWER_TOPIC = "/teleop_ui/ui_configuration"
+_STRING = "std_msgs::msg::dds_::String_"
+_DISCOVERY = "ros_discovery_info"
+_PREFIXES = {"rt/": "", "rq/": "Request", "rr/": "Reply"}
+
+
+def dds_topic(name: str, prefix: str = "rt/") -> str:
+    """``/uav1/robot_description`` -> ``rt/uav1/robot_description``."""
+    return prefix + name.strip("/")
+
+
+def ros_name(topic: str) -> tuple[str, str] | None:
+    """A DDS topic's ROS name and prefix (``rt/``, ``rq/``, ``rr/``); ``None`` for others."""
+    for prefix, suffix in _PREFIXES.items():
+        if topic.startswith(prefix):
+            rest = topic[len(prefix):]
+            if suffix and rest.endswith(suffix):
+                rest = rest[:-len(suffix)]
+            return "/" + rest, prefix
+    return None
+
+
+def dds_type(ros: str) -> str:
+    """``std_msgs/msg/String`` -> ``std_msgs::msg::dds_::String_``."""
+    package, kind, name = ros.split("/")
+    return f"{package}::{kind}::dds_::{name}_"
+
+
+def ros_type(dds: str) -> str:
+    """``sensor_msgs::msg::dds_::Image_`` -> ``sensor_msgs/msg/Image``; others unchanged."""
+    parts = dds.split("::")
+    if len(parts) == 4 and parts[2] == "dds_" and parts[3].endswith("_"):
+        return f"{parts[0]}/{parts[1]}/{parts[3][:-1]}"
+    return dds
+
+
+@dataclass(frozen=True, slots=True)
+class _Endpoint:
+    topic: str
+    type_name: str
+    participant: bytes
+    writer: bool
+
+
+def _types() -> Any:
+    """The DDS types, built on first use: ``cyclonedds`` is an optional extra."""
+    from dataclasses import dataclass as idl_dataclass
+
+    from cyclonedds.idl import IdlStruct
+    from cyclonedds.idl.types import array, sequence, uint8
+
+    @idl_dataclass
+    class String(IdlStruct, typename=_STRING):
+        data: str
+
+    def discovery(size: int) -> Any:
+        @idl_dataclass
+        class Gid(IdlStruct, typename="rmw_dds_common::msg::dds_::Gid_"):
+            data: array[uint8, size]  # type: ignore[valid-type,type-arg]
+
+        @idl_dataclass
+        class NodeEntitiesInfo(IdlStruct,
+                               typename="rmw_dds_common::msg::dds_::NodeEntitiesInfo_"):
+            node_namespace: str
+            node_name: str
+            reader_gid_seq: sequence[Gid]  # type: ignore[type-arg]
+            writer_gid_seq: sequence[Gid]  # type: ignore[type-arg]
+
+        @idl_dataclass
+        class ParticipantEntitiesInfo(
+                IdlStruct, typename="rmw_dds_common::msg::dds_::ParticipantEntitiesInfo_"):
+            gid: Gid
+            node_entities_info_seq: sequence[NodeEntitiesInfo]  # type: ignore[type-arg]
+
+        return Gid, NodeEntitiesInfo, ParticipantEntitiesInfo
+
+    return String, {24: discovery(24), 16: discovery(16)}
+
+
+def _require_cyclonedds() -> None:
+    try:
+        import cyclonedds.domain  # noqa: F401
+    except ImportError as error:
+        raise InputError.at("<arguments>", "--ros2 needs the Cyclone DDS Python binding: "
+                                           "pip install 'teleop-ui[ros2]'") from error
+
+
+def _latched() -> Any:
+    from cyclonedds.qos import Policy, Qos
+    return Qos(Policy.Reliability.Reliable(1_000_000_000), Policy.Durability.TransientLocal,
+               Policy.History.KeepLast(1))
+
+
+class _DescriptionReaders:
+    """One transient-local reader per followed ``/<ns>/robot_description``."""
+
+    def __init__(self, graph: "DdsGraph", limit: int) -> None:
+        self.graph = graph
+        self.limit = limit
+        self._lock = threading.Lock()
+        self._readers: dict[str, Any] = {}
+        self._values: dict[str, Any] = {}
+
+    def sync(self, keys: Iterable[str]) -> None:
+        from cyclonedds.sub import DataReader
+        from cyclonedds.topic import Topic
+        wanted = {"/" + key.strip("/") for key in keys}
+        with self._lock:
+            for key in sorted(set(self._readers) - wanted):
+                self._readers.pop(key).__del__()  # deletes the DDS reader (idempotent)
+                self._values.pop(key, None)
+            for key in sorted(wanted - set(self._readers)):
+                topic = Topic(self.graph.participant, dds_topic(key), self.graph.string_type)
+                self._readers[key] = DataReader(self.graph.participant, topic,
+                                                qos=_latched(), listener=self.graph.listener)
+                self._values[key] = MISSING
+        self.read()
+
+    def read(self) -> None:
+        with self._lock:
+            for key, reader in self._readers.items():
+                try:
+                    samples = reader.take(N=4)
+                except Exception as error:  # undecodable: that robot's error, no one else's
+                    self._values[key] = InputError.at(key, f"cannot decode the message "
+                                                           f"({type(error).__name__})")
+                    continue
+                for sample in samples:
+                    text = getattr(sample, "data", None)
+                    if isinstance(text, str):
+                        self._values[key] = text
+
+    def get(self, key: str) -> Any:
+        """The text, :data:`MISSING`, or an :class:`InputError` (the watcher reports it)."""
+        with self._lock:
+            return self._values.get("/" + key.strip("/"), MISSING)
+
+    def keys(self) -> tuple[str, ...]:
+        with self._lock:
+            return tuple(sorted(self._readers))
+
+    def reset(self) -> None:
+        """Nothing to forget: a DDS domain does not restart, and a reader dropped here would
+        have to wait for the transient-local sample again."""
+
+    def close(self) -> None:
+        with self._lock:
+            for reader in self._readers.values():
+                reader.__del__()
+            self._readers.clear()
+            self._values.clear()
+
+
+class DdsGraph:
+    """The ROS 2 graph on DDS domain ``domain``, as the watcher's source (see the docstring).
+
+    Cyclone DDS is configured as usual, by ``CYCLONEDDS_URI`` (interfaces, peers, multicast).
+    """
+
+    timeout = 0.0
+
+    def __init__(self, domain: int = 0, *, caller_id: str | None = None,
+                 limit: int | None = None) -> None:
+        _require_cyclonedds()
+        from cyclonedds.builtin import (
+            BuiltinDataReader,
+            BuiltinTopicDcpsPublication,
+            BuiltinTopicDcpsSubscription,
+        )
+        from cyclonedds.core import Listener
+        from cyclonedds.domain import DomainParticipant
+        from cyclonedds.pub import DataWriter
+        from cyclonedds.sub import DataReader
+        from cyclonedds.topic import Topic
+
+        from solver.identify.safexml import MAX_XML_BYTES
+
+        self.domain = domain
+        self.name = f"ros2://domain/{domain}"
+        self.caller_id = caller_id or f"/teleop_ui_watch_{os.getpid()}"
+        self.on_change: Callable[[], None] | None = None
+        self.listener = Listener(  # type: ignore[no-untyped-call]
+            on_data_available=lambda _reader: self._changed())
+        self.string_type, discovery = _types()
+        self.participant = DomainParticipant(domain)
+        self._publications = BuiltinDataReader(self.participant, BuiltinTopicDcpsPublication,
+                                               listener=self.listener)
+        self._subscriptions = BuiltinDataReader(self.participant, BuiltinTopicDcpsSubscription,
+                                                listener=self.listener)
+        self._discovery = [DataReader(self.participant,
+                                      Topic(self.participant, _DISCOVERY, types[2]),
+                                      qos=_latched(), listener=self.listener)
+                           for types in discovery.values()]
+        self._active = DataReader(self.participant, Topic(
+            self.participant, dds_topic(ACTIVE_TOPIC), self.string_type), qos=_latched(),
+            listener=self.listener)
+        answer = Topic(self.participant, dds_topic(ANSWER_TOPIC), self.string_type)
+        self._answer_writer = DataWriter(self.participant, answer, qos=_latched())
+        self._answer_reader = DataReader(self.participant, answer, qos=_latched())
+        self._descriptions = _DescriptionReaders(self, limit or MAX_XML_BYTES)
+        self.descriptions: DescriptionStore = self._descriptions
+        self._endpoints: dict[bytes, _Endpoint] = {}
+        self._nodes: dict[bytes, dict[bytes, str]] = {}  # participant -> endpoint -> node
+        self._active_value: Any = MISSING
+        self._answer_value: Any = MISSING
+        self._written: str | None = None
+        self._own = self.participant.guid.bytes
+
+    def _changed(self) -> None:
+        callback = self.on_change
+        if callback is not None:
+            callback()
+
+    # -- what the watcher calls ----------------------------------------------------------
+
+    def get_pid(self) -> int:
+        return self.domain  # a DDS domain does not restart: one "pid" for its lifetime
+
+    def lookup_node(self, name: str) -> str | None:  # noqa: ARG002 - the source's interface
+        return None  # no node API to probe: a different answer is overwritten (see docs)
+
+    def set_param(self, key: str, value: Any) -> None:  # noqa: ARG002 - one key here
+        self._write(json.dumps(value, sort_keys=True))
+
+    def delete_param(self, key: str) -> None:  # noqa: ARG002 - one key here
+        self._write("null")
+
+    def _write(self, text: str) -> None:
+        if text != self._written:
+            self._answer_writer.write(self.string_type(text))
+            self._written = text
+
+    def close(self) -> None:
+        """Leave the domain: the participant and everything it made are deleted (idempotent)."""
+        self.on_change = None
+        self.descriptions.close()
+        self.participant.__del__()
+
+    def settle(self, quiet: float = 0.5, limit: float = 5.0) -> None:
+        """Wait until discovery is quiet (nothing new for ``quiet`` seconds, at most ``limit``):
+        a one-shot snapshot on DDS must give the other participants time to be discovered."""
+        import time
+        start = last_change = time.monotonic()
+        seen: tuple[Any, ...] = ()
+        while time.monotonic() - start < limit:
+            observation = self.observe("/teleop_ui")
+            self.descriptions.sync(name for name in observation.param_names
+                                   if name.endswith("/robot_description"))
+            followed = self.descriptions.keys()
+            now = (observation, tuple(self.descriptions.get(key) is MISSING
+                                      for key in followed))
+            if now != seen:
+                seen, last_change = now, time.monotonic()
+            elif time.monotonic() - last_change >= quiet:
+                return
+            time.sleep(0.05)
+
+    def observe(self, namespace: str) -> Observation:  # noqa: PLR0912 - one pass
+        """The graph now, as the watcher reads a ROS 1 master (see the module docstring)."""
+        self._read_endpoints()
+        self._read_discovery()
+        self._descriptions.read()
+        for sample in self._active.take(N=16):
+            text = getattr(sample, "data", None)
+            if isinstance(text, str):
+                self._active_value = text.strip() or MISSING
+        for sample in self._answer_reader.take(N=16):
+            text = getattr(sample, "data", None)
+            if isinstance(text, str):
+                try:
+                    value = json.loads(text)
+                except ValueError:
+                    value = text
+                self._answer_value = MISSING if value is None else value
+        node_of: dict[bytes, str] = {}
+        for nodes in self._nodes.values():
+            node_of.update(nodes)
+        publishers: dict[str, set[str]] = {}
+        subscribers: dict[str, set[str]] = {}
+        types: dict[str, str] = {}
+        descriptions: set[str] = set()
+        for key, endpoint in self._endpoints.items():
+            if endpoint.participant == self._own:
+                continue  # the watcher's own readers are not part of any robot
+            named = ros_name(endpoint.topic)
+            if named is None:
+                continue
+            name, prefix = named
+            node = node_of.get(key) or f"/_participant_{endpoint.participant.hex()[:12]}"
+            # A service server reads requests: it is "subscribed" to the service, as a
+            # command; a client writes them. Replies say nothing more.
+            if prefix == "rr/":
+                continue
+            side = publishers if endpoint.writer else subscribers
+            side.setdefault(name, set()).add(node)
+            types.setdefault(name, ros_type(endpoint.type_name))
+            if endpoint.writer and prefix == "rt/" and name.endswith("/robot_description"):
+                descriptions.add(name)
+        params: list[tuple[str, Any]] = []
+        if self._active_value is not MISSING:
+            params.append(("active_robot", self._active_value))
+        if self._answer_value is not MISSING:
+            params.append(("ui_configuration", self._answer_value))
+        return Observation(
+            pid=self.domain,
+            publishers=tuple((t, tuple(sorted(n))) for t, n in sorted(publishers.items())),
+            subscribers=tuple((t, tuple(sorted(n))) for t, n in sorted(subscribers.items())),
+            topic_types=tuple(sorted(types.items())),
+            param_names=tuple(sorted(descriptions | {f"{namespace}/{k}" for k, _ in params})),
+            params=tuple(params))
+
+    def _read_endpoints(self) -> None:
+        from cyclonedds.core import InstanceState
+        for reader, writer in ((self._publications, True), (self._subscriptions, False)):
+            for sample in reader.take(N=100_000):
+                key = sample.key.bytes
+                info = getattr(sample, "sample_info", None)
+                alive = info is None or info.instance_state == InstanceState.Alive
+                if alive and getattr(sample, "topic_name", None) is not None:
+                    self._endpoints[key] = _Endpoint(sample.topic_name, sample.type_name,
+                                                     sample.participant_key.bytes, writer)
+                else:
+                    self._endpoints.pop(key, None)
+
+    def _read_discovery(self) -> None:
+        for reader in self._discovery:
+            try:
+                samples = reader.take(N=10_000)
+            except Exception:  # a malformed announcement names no node: not fatal
+                continue
+            for sample in samples:
+                gid = getattr(sample, "gid", None)
+                if gid is None:
+                    continue
+                nodes: dict[bytes, str] = {}
+                for info in sample.node_entities_info_seq:
+                    namespace = "/" + str(info.node_namespace).strip("/")
+                    node = (namespace.rstrip("/") + "/" + str(info.node_name)).replace("//", "/")
+                    for endpoint in (*info.reader_gid_seq, *info.writer_gid_seq):
+                        nodes[bytes(endpoint.data)[:16]] = node
+                self._nodes[bytes(gid.data)[:16]] = nodes
+        # Participants that left take their node names with them.
+        alive = {endpoint.participant for endpoint in self._endpoints.values()}
+        for participant in [p for p in self._nodes if p not in alive]:
+            del self._nodes[participant]

@@ -1,0 +1,123 @@
+"""Fixtures' helpers for the ROS 2 live tests: a loopback-only Cyclone DDS configuration and
+emulated robots (:mod:`tests.live.ros2_robot`) as separate processes, as real robots are.
+
+The configuration keeps every test on 127.0.0.1: the loopback interface only, no multicast,
+unicast discovery to 127.0.0.1 (participant indices up to 120, so that tens of participants on
+one host find each other), and a domain id of its own per test.
+"""
+
+from __future__ import annotations
+
+import itertools
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+from typing import Any
+
+from tests.conftest import ROOT
+
+CONFIG = """<?xml version="1.0" encoding="UTF-8"?>
+<CycloneDDS xmlns="https://cdds.io/config">
+  <Domain id="any">
+    <General>
+      <Interfaces><NetworkInterface address="127.0.0.1"/></Interfaces>
+      <AllowMulticast>false</AllowMulticast>
+    </General>
+    <Discovery>
+      <ParticipantIndex>auto</ParticipantIndex>
+      <MaxAutoParticipantIndex>120</MaxAutoParticipantIndex>
+      <Peers><Peer address="127.0.0.1"/></Peers>
+    </Discovery>
+  </Domain>
+</CycloneDDS>
+"""
+
+_DOMAINS = itertools.count(100 + os.getpid() % 50)
+
+
+def next_domain() -> int:
+    """A DDS domain id no earlier test of this run used (ids stay below 232)."""
+    return next(_DOMAINS) % 200 + 20
+
+
+def write_config(directory: Path) -> str:
+    path = directory / "cyclonedds.xml"
+    path.write_text(CONFIG, encoding="utf-8")
+    return path.as_uri()
+
+
+class EmulatedRobot:
+    """One ROS 2 process on the domain (see :mod:`tests.live.ros2_robot`)."""
+
+    def __init__(self, domain: int, env: dict[str, str], gid_size: int = 16) -> None:
+        self.process = subprocess.Popen(
+            [sys.executable, "-m", "tests.live.ros2_robot", str(domain), str(gid_size)],
+            cwd=ROOT, env=env, stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
+        self._answer()
+
+    def _answer(self) -> None:
+        assert self.process.stdout is not None
+        line = self.process.stdout.readline()
+        if line.strip() != "ok":
+            raise AssertionError(f"the emulated robot did not start: {line!r}")
+
+    def send(self, **command: Any) -> None:
+        assert self.process.stdin is not None
+        self.process.stdin.write(json.dumps(command) + "\n")
+        self.process.stdin.flush()
+        self._answer()
+
+    def node(self, name: str, publish: list[tuple[str, str]] = (),  # type: ignore[assignment]
+             subscribe: list[tuple[str, str]] = (),  # type: ignore[assignment]
+             services: list[tuple[str, str]] = ()) -> None:  # type: ignore[assignment]
+        self.send(node=name, publish=list(publish), subscribe=list(subscribe),
+                  services=list(services))
+
+    def describe(self, namespace: str, text: str, directory: Path) -> None:
+        path = directory / f"{namespace.strip('/').replace('/', '_') or 'root'}.urdf"
+        path.write_text(text, encoding="utf-8")
+        self.send(describe=namespace, file=str(path))
+
+    def kill(self) -> None:
+        if self.process.poll() is None:
+            self.process.kill()
+        self.process.wait(timeout=30)
+        for stream in (self.process.stdin, self.process.stdout):
+            if stream is not None:
+                stream.close()
+
+
+class Operator:
+    """An operator station as an rclpy node would be one: it publishes the active robot and
+    reads the answer, both ``std_msgs/msg/String``, reliable and transient-local."""
+
+    def __init__(self, domain: int) -> None:
+        from cyclonedds.domain import DomainParticipant
+        from cyclonedds.pub import DataWriter
+        from cyclonedds.sub import DataReader
+        from cyclonedds.topic import Topic
+
+        from tests.live.ros2_robot import LATCHED, struct
+
+        self.String = struct("std_msgs::msg::dds_::String_")
+        self.participant = DomainParticipant(domain)
+        self.writer: Any = DataWriter(self.participant, Topic(
+            self.participant, "rt/teleop_ui/active_robot", self.String), qos=LATCHED)
+        self.reader: Any = DataReader(self.participant, Topic(
+            self.participant, "rt/teleop_ui/ui_configuration", self.String), qos=LATCHED)
+        self.answers: list[Any] = []
+
+    def activate(self, robot: str) -> None:
+        self.writer.write(self.String(robot))
+
+    def answer(self) -> Any:
+        """The newest answer read so far (``None`` before any)."""
+        for sample in self.reader.take(N=64):
+            self.answers.append(json.loads(sample.data))
+        return self.answers[-1] if self.answers else None
+
+    def close(self) -> None:
+        for entity in (self.reader, self.writer, self.participant):
+            entity.__del__()

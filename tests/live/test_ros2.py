@@ -1,0 +1,241 @@
+"""The watcher on a ROS 2 graph over real Cyclone DDS participants, loopback only.
+
+Robots are emulated ROS 2 processes (:mod:`tests.live.ros2_robot`, written from the ROS 2
+design documents and rmw sources): ``rt/`` topics with ROS 2 type names, a transient-local
+``robot_description``, ``ros_discovery_info`` with node names (Humble's 24-byte and Jazzy's
+16-byte gids). Expected configurations come from :func:`solver.assign` (tests.live.fleet).
+"""
+
+import json
+from collections.abc import Callable, Iterator
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from solver.identify.profile import Profile
+from solver.identify.safexml import MAX_XML_BYTES
+from solver.live.sources.ros2 import DdsGraph, dds_type, ros_name, ros_type
+from solver.live.watcher import Watcher
+from solver.solution import Solution
+from tests.conftest import run_cli
+from tests.live.conftest import Recorder
+from tests.live.fleet import drone_configuration, drone_text, rover_configuration, rover_text
+from tests.live.ros2_graph import EmulatedRobot, Operator, next_domain, write_config
+from tests.live.roscore import wait_until
+
+TIMEOUT = 60.0
+
+
+class Domain:
+    """A DDS domain of this test's own, on loopback, and the robots started on it."""
+
+    def __init__(self, directory: Path, env: dict[str, str]) -> None:
+        self.id = next_domain()
+        self.directory = directory
+        self.env = env
+        self.robots: list[EmulatedRobot] = []
+
+    def robot(self, gid_size: int = 16) -> EmulatedRobot:
+        self.robots.append(EmulatedRobot(self.id, self.env, gid_size))
+        return self.robots[-1]
+
+    def drone(self, namespace: str, gid_size: int = 16) -> EmulatedRobot:
+        robot = self.robot(gid_size)
+        robot.node(f"{namespace}/camera_driver",
+                   publish=[(f"{namespace}/camera/image_raw", "sensor_msgs/msg/Image")])
+        robot.describe(namespace, drone_text(), self.directory)
+        return robot
+
+    def rover(self, namespace: str, gid_size: int = 16) -> EmulatedRobot:
+        robot = self.robot(gid_size)
+        robot.node(f"{namespace}/base_driver",
+                   subscribe=[(f"{namespace}/cmd_vel", "geometry_msgs/msg/Twist")],
+                   publish=[(f"{namespace}/scan", "sensor_msgs/msg/LaserScan")])
+        robot.describe(namespace, rover_text(), self.directory)
+        return robot
+
+
+@pytest.fixture
+def domain(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Domain]:
+    monkeypatch.setenv("CYCLONEDDS_URI", write_config(tmp_path))
+    monkeypatch.setenv("ROS_DOMAIN_ID", "999")  # never used: every test names its domain
+    import os
+    found = Domain(tmp_path, dict(os.environ))
+    yield found
+    for robot in found.robots:
+        robot.kill()
+
+
+@pytest.fixture
+def watch_ros2(domain: Domain, solution: Solution, profile: Profile
+               ) -> Iterator[Callable[..., Recorder]]:
+    started: list[Recorder] = []
+
+    def start(**options: Any) -> Recorder:
+        source = DdsGraph(domain.id)
+        started.append(Recorder(Watcher(source.name, solution, profile, source=source,
+                                        **options), solution))
+        return started[-1]
+
+    yield start
+    for recorder in started:
+        recorder.stop()
+
+
+def configured(namespace: str, number: int) -> Callable[[dict[str, Any]], bool]:
+    """An event reporting ``namespace`` with configuration ``number`` as its only one."""
+    return lambda d: d.get("robot") == namespace and d["event"] in (
+        "robot_added", "robot_changed") and [c["configuration"] for c in d["combinations"]] \
+        == [number]
+
+
+def test_names_and_types_map_as_the_ros2_design_says() -> None:
+    assert ros_name("rt/uav1/camera/image_raw") == ("/uav1/camera/image_raw", "rt/")
+    assert ros_name("rq/uav1/set_modeRequest") == ("/uav1/set_mode", "rq/")
+    assert ros_name("DCPSParticipant") is None
+    assert ros_type("sensor_msgs::msg::dds_::Image_") == "sensor_msgs/msg/Image"
+    assert dds_type("std_msgs/msg/String") == "std_msgs::msg::dds_::String_"
+
+
+def test_robots_joining_and_leaving_are_added_and_removed(
+        domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution) -> None:
+    watch = watch_ros2()
+    watch.wait_for_event("synced")
+    humble = domain.drone("/uav1", gid_size=24)
+    jazzy = domain.rover("/ugv1", gid_size=16)
+    drone = watch.wait_for(configured("/uav1", drone_configuration(solution)), "/uav1")
+    assert drone["kinematic_type"] == "UAV"
+    assert drone["sensors"][0]["source"] == "topics: /camera"
+    rover = watch.wait_for(configured("/ugv1", rover_configuration(solution)), "/ugv1")
+    assert [c["motion_control"] for c in rover["motion_controls"]] == ["Driving"]
+    mark = watch.mark()
+    jazzy.kill()
+    removed = watch.wait_for_event("robot_removed", "/ugv1", after=mark)
+    assert removed["robot"] == "/ugv1"
+    assert humble.process.poll() is None
+    assert not any(d.get("robot") == "/uav1" for d in watch.data(mark))
+
+
+def test_a_description_arriving_after_its_topics_then_adds_the_robot(
+        domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution) -> None:
+    robot = domain.robot()
+    robot.node("/uav7/camera_driver",
+               publish=[("/uav7/camera/image_raw", "sensor_msgs/msg/Image")])
+    watch = watch_ros2()
+    watch.wait_for_event("synced")
+    mark = watch.mark()
+    robot.describe("/uav7", drone_text(), domain.directory)
+    added = watch.wait_for_event("robot_added", "/uav7", after=mark)
+    assert added["combinations"][0]["configuration"] == drone_configuration(solution)
+    assert [s["kind"] for s in added["sensors"]] == ["camera"]
+
+
+def test_two_robots_with_the_same_description_are_both_reported_and_parsed_once(
+        domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution) -> None:
+    domain.drone("/uav1")
+    domain.drone("/uav2", gid_size=24)
+    watch = watch_ros2()
+    for namespace in ("/uav1", "/uav2"):
+        watch.wait_for(configured(namespace, drone_configuration(solution)), namespace)
+    assert watch.watcher.cache.misses == 1
+
+
+def test_switching_the_active_robot_publishes_its_configuration(
+        domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution) -> None:
+    domain.drone("/uav1")
+    domain.rover("/ugv1")
+    watch = watch_ros2()
+    watch.wait_for(configured("/ugv1", rover_configuration(solution)), "/ugv1")
+    watch.wait_for(configured("/uav1", drone_configuration(solution)), "/uav1")
+    operator = Operator(domain.id)
+    try:
+        operator.activate("/ugv1")
+        selected = watch.wait_for(lambda d: d["event"] == "selection_changed"
+                                  and d["robot"] == "/ugv1", "selection of /ugv1")
+        assert selected["assignment"]["configuration"] == rover_configuration(solution)
+        answer = wait_until(lambda: (a := operator.answer()) and a.get("robot") == "/ugv1"
+                            and a, TIMEOUT, "the answer for /ugv1")
+        assert answer["configuration"] == rover_configuration(solution)
+        assert answer["watcher"] == watch.watcher.caller_id
+        operator.activate("/uav1")
+        answer = wait_until(lambda: (a := operator.answer()) and a.get("robot") == "/uav1"
+                            and a, TIMEOUT, "the answer for /uav1")
+        assert answer["configuration"] == drone_configuration(solution)
+    finally:
+        operator.close()
+
+
+def test_a_50_mb_description_is_refused_located_and_the_watcher_goes_on(
+        domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution) -> None:
+    watch = watch_ros2()
+    watch.wait_for_event("synced")
+    hostile = domain.robot()
+    text = drone_text().replace("</robot>", "<!--" + "x" * (50 * 1024 * 1024) + "-->\n</robot>")
+    hostile.describe("/big", text, domain.directory)
+    big = watch.wait_for_event("robot_added", "/big")
+    assert big["combinations"] == []
+    assert big["error"].startswith("/big/robot_description")
+    assert f"larger than {MAX_XML_BYTES} bytes" in big["error"]
+    mark = watch.mark()
+    domain.rover("/ugv1")
+    watch.wait_for(configured("/ugv1", rover_configuration(solution)), "/ugv1 after /big",
+                   after=mark)
+
+
+def test_another_watcher_on_the_same_domain_sees_the_same_robots_and_agrees(
+        domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution) -> None:
+    domain.rover("/ugv1")
+    first, second = watch_ros2(), watch_ros2()
+    for watch in (first, second):
+        watch.wait_for(configured("/ugv1", rover_configuration(solution)), "/ugv1")
+    operator = Operator(domain.id)
+    try:
+        operator.activate("/ugv1")
+        for watch in (first, second):
+            selected = watch.wait_for(lambda d: d["event"] == "selection_changed"
+                                      and d["robot"] == "/ugv1", "selection of /ugv1")
+            assert selected["assignment"]["configuration"] == rover_configuration(solution)
+        # Neither watcher reports the other's DDS readers as part of a robot.
+        assert {d["robot"] for d in second.data() if d["event"] == "robot_added"} == {"/ugv1"}
+    finally:
+        operator.close()
+
+
+def test_watch_ros2_once_prints_the_graph_as_json_lines(domain: Domain,
+                                                        solution: Solution) -> None:
+    domain.drone("/uav1", gid_size=24)
+    domain.rover("/ugv1")
+    result = run_cli("watch", "--ros2", "--domain", str(domain.id), "--team", "case3", "--once")
+    assert result.returncode == 0, result.stderr
+    events = [json.loads(line) for line in result.stdout.splitlines()]
+    assert [e["event"] for e in events] == ["robot_added", "robot_added", "synced"]
+    assert events[-1] == {"seq": 3, "event": "synced", "master": f"ros2://domain/{domain.id}",
+                          "robots": ["/uav1", "/ugv1"]}
+    assert events[0]["combinations"][0]["configuration"] == drone_configuration(solution)
+    assert events[1]["combinations"][0]["configuration"] == rover_configuration(solution)
+
+
+def test_watch_ros2_refuses_a_master_or_a_bad_domain_with_exit_2() -> None:
+    bad = run_cli("watch", "--ros2", "--domain", "300", "--team", "case3", "--once")
+    assert (bad.returncode, bad.stderr) == (2, "<arguments>: DDS domain id must be 0..232, "
+                                               "got '300'\n")
+    both = run_cli("watch", "--ros2", "--master", "http://127.0.0.1:1/", "--team", "case3")
+    assert both.returncode == 2
+    assert both.stderr == "<arguments>: --ros2 reads a DDS domain: give --domain N, not --master\n"
+
+
+def test_assign_ros2_answers_for_one_robot_and_refuses_an_unknown_one(
+        domain: Domain, solution: Solution) -> None:
+    domain.drone("/uav1")
+    domain.rover("/ugv1", gid_size=24)
+    result = run_cli("assign", "--ros2", "--domain", str(domain.id), "--team", "case3",
+                     "--robot", "/ugv1", "-f", "json")
+    assert result.returncode == 0, result.stderr
+    data = json.loads(result.stdout)
+    assert (data["robot"], data["configuration"]) == ("/ugv1", rover_configuration(solution))
+    unknown = run_cli("assign", "--ros2", "--domain", str(domain.id), "--team", "case3",
+                      "--robot", "/uav2")
+    assert unknown.returncode == 2
+    assert unknown.stderr.startswith(f"<arguments>: no robot /uav2 on ros2://domain/{domain.id}")
+    assert "robots there: /uav1, /ugv1" in unknown.stderr
