@@ -78,7 +78,8 @@ WIDE = 100_000  # the most values a whole-number characteristic may have
 def test_radar_chart_of_a_count_spoke_of_100000_values_as_png(benchmark: BenchmarkFixture,
                                                               tmp_path: Path) -> None:
     (tmp_path / "wide.yaml").write_text(
-        f"characteristics:\n  kind: {{values: [Rover, Drone]}}\n  count: {{range: [1, {WIDE}]}}\n",
+        "characteristics:\n  kind: {values: [Rover, Drone]}\n"
+        f"  count: {{range: {{min: 1, max: {WIDE}}}}}\n",
         encoding="utf-8")
     (tmp_path / "t.yaml").write_text(
         f"rules: wide.yaml\nteam:\n  Rover: {{count: {WIDE}}}\n  Drone: {{count: [1, 2, 3]}}\n",

@@ -44,7 +44,7 @@ from typing import Any
 import pytest
 from pytest_benchmark.fixture import BenchmarkFixture
 
-from solver.identify.identify import IdentificationCache
+from solver.identify.identification import IdentificationCache
 from solver.identify.profile import load_profile
 from solver.live.events import event_data
 from solver.live.watcher import Watcher

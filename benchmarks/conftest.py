@@ -54,7 +54,7 @@ class Scale:
                         f"S{i}" for i in range(self.sensors) if i % self.groups == g]}
                         for g in range(self.groups)]},
                 "sensor_count": {
-                    "range": [1, self.counts],
+                    "range": {"min": 1, "max": self.counts},
                     "components": [{"name": f"A{a}", "min": a * step + 1,
                                     "max": self.counts if a == self.arrangements - 1
                                     else (a + 1) * step, "cluster_size": a + 1}

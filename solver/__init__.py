@@ -11,25 +11,53 @@ Modules, one concept each:
 
 =====================  ==========================================================
 ``errors``             the exception root and located faults
+``inputfile``          reading input files with a size limit, located failures
 ``yamlio``             safe YAML loading with line/column for every value
 ``reader``             typed, fault-collecting access to a loaded document
+``filekind``           which kind of file a document is: team, rule set or profile
 ``rules``              rule sets: characteristics, components, :func:`load_rules`
 ``constraints``        constraints between values, as data
 ``team``               team selections, :func:`load_team`
+``forbidden``          selected values a team's constraints leave no robot for
 ``model``              the python-constraint model; valid robots
-``partition``          robots -> UI configurations, numbering, minimum cover
+``partition``          robots -> UI configurations, numbering
+``engines``            counting and enumerating: ``structure``, ``fast``, ``csp``,
+                       the exact minimum ``cover``; the limits
 ``solution``           :func:`solve` a team -> :class:`Solution`
+``listing``            every valid robot with its configuration number (CSV, JSONL)
+``symbolic``           counts as formulas of a type's maximum sensor count
 ``assignment``         :func:`assign` one combination -> :class:`Assignment`
 ``reproduce``          published figures beside computed ones
-``formats``            text / JSON / CSV / Markdown rendering
+``render``             text / JSON / CSV / Markdown rendering of solutions
+``markdown``           escaping names from user files in Markdown
 ``plot``               radar chart (the article's Figure 9) and bar chart, PNG/SVG/PDF
 ``report``             self-contained HTML and Markdown reports of a solved team
+``atomic``             writing output files atomically
 ``batch``              many teams at once: parallel solving, summary, up-to-date skipping
 ``identify``           real robots from ROS metadata (URDF, xacro, SRDF, topics, bags)
 ``live``               live UI assignment from a running ROS master (``watch``)
 ``check``              linting rule sets and teams: coverage, void, dead, conflicts
+``extras``             optional dependencies and the error when one is missing
 ``cli``                the ``teleop-ui`` command line
 =====================  ==========================================================
+
+Every command from Python (docs/python-api.md has worked examples):
+
+==============================  ========================================================
+``teleop-ui solve TEAM``        ``solve(load_team("case3"))`` -> :class:`Solution`;
+                                ``.to_dict()`` is the JSON output, ``.records()`` a table
+``solve --plot``, ``report``    ``write_plot(solution, path)``, ``write_report(...)``
+``assign``                      ``assign(solution, kinematic_type="UAV", ...)``
+``count FILE``                  ``solve(team, count_only=True)``; a rule set's whole
+                                design space: ``solver.team.full_team(load_rules(path))``
+``count --symbolic``            ``solver.symbolic.formulas(team)``
+``robots``                      ``solver.listing.numbered_robots(solution)``
+``reproduce``                   ``compare()``
+``check FILES``                 ``check_files(paths)``
+``identify``, ``fleet``         ``identify_urdf(text, ...)``, ``identify_fleet(...)``
+``watch``, ``assign --master``  ``Watcher``, ``assign_from_master(...)``
+``batch``                       ``find_teams``, ``plan``, ``run_batch``, ``write_summary``
+==============================  ========================================================
 
 Example::
 

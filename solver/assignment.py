@@ -40,6 +40,12 @@ class Assignment:
     def is_default(self) -> bool:
         return self.configuration is None
 
+    def __repr__(self) -> str:  # short, for notebooks: the fields are one attribute away
+        given = " ".join(f"{name}={value}" for name, value in self.given)
+        if self.configuration is None:
+            return f"<Assignment default {self.number} for {given}: {'; '.join(self.reasons)}>"
+        return f"<Assignment {self.number} for {given}>"
+
 
 def parse_combination(pairs: list[str] | tuple[str, ...]) -> dict[str, str]:
     """``["kinematic_type=UAV", "sensor_count=3"]`` -> a mapping; :class:`InputError` if bad."""
@@ -50,6 +56,10 @@ def parse_combination(pairs: list[str] | tuple[str, ...]) -> dict[str, str]:
             raise InputError.at("<arguments>", f"expected NAME=VALUE, got {pair!r}")
         if name.strip() in combination:
             raise InputError.at("<arguments>", f"{name.strip()!r} is given twice")
+        if any(char.isdecimal() and not char.isascii() for char in value):
+            # int() reads '٣' as 3; a command line value is written in ASCII digits or refused.
+            raise InputError.at("<arguments>", f"{value.strip()!r} has non-ASCII digits; "
+                                               "write numbers as 0-9", path=name.strip())
         combination[name.strip()] = value.strip()
     return combination
 
@@ -64,12 +74,16 @@ def check_names(rules: RuleSet, names: Iterable[str]) -> None:
                                                f"({rules.file}) have: {', '.join(rules.names)}")
 
 
-def assign(solution: Solution, combination: Mapping[str, str | int]) -> Assignment:
+def assign(solution: Solution, combination: Mapping[str, str | int] | None = None, /,
+           **by_name: str | int) -> Assignment:
     """The configuration for ``combination`` (characteristic name -> value) in ``solution``.
 
-    Characteristic *names* must exist (:class:`InputError` otherwise: that is a usage mistake);
-    unknown or disallowed *values* are a normal outcome, answered with the default.
+    The values may be given as a mapping, as keywords (``assign(solution, kinematic_type="UAV",
+    sensor_count=3)``) or both (keywords win). Characteristic *names* must exist
+    (:class:`InputError` otherwise: that is a usage mistake); unknown or disallowed *values*
+    are a normal outcome, answered with the default.
     """
+    combination = {**(combination or {}), **by_name}
     rules = solution.rules
     check_names(rules, combination)
     given = tuple((c.name, str(combination[c.name])) for c in rules.characteristics

@@ -10,8 +10,8 @@
    ``OUT/teams/a/x.json``), and decides which are already up to date.
 3. :func:`run_batch` solves the rest, in worker processes when asked, and yields one
    :class:`Outcome` per team as it finishes. A bad team file is an outcome with its located
-   error, never an exception that stops the others. A file with ``characteristics:`` and no
-   ``team:`` (a rule set: a folder such as ``rules/`` holds both kinds) is *skipped*.
+   error, never an exception that stops the others. A rule set or an identification profile
+   (:func:`solver.filekind.file_kind`; a folder such as ``rules/`` holds all kinds) is *skipped*.
 4. :func:`write_summary` writes ``summary.csv`` and ``summary.md``: one row per team in input
    order, naming each team's rule set.
 
@@ -31,7 +31,7 @@ look alike. Reading and hashing two small files costs far less than solving. A t
 leaves no outputs and no stamp (stale ones are removed), so it is tried again next time.
 
 Not here: progress display and exit status (``solver/cli/batch.py``), the per-team JSON shape
-(:func:`solver.formats.solution_data`), reports (:mod:`solver.report`).
+(:func:`solver.render.solution_data`), reports (:mod:`solver.report`).
 """
 
 from __future__ import annotations
@@ -39,7 +39,6 @@ from __future__ import annotations
 import contextlib
 import csv
 import glob
-import hashlib
 import io
 import json
 import os
@@ -53,12 +52,14 @@ from typing import TYPE_CHECKING, Any, Literal
 from solver import markdown
 from solver.atomic import write_atomic
 from solver.errors import Fault, InputError, Location, SolverError
-from solver.formats import dumps, solution_data
+from solver.filekind import file_kind
+from solver.inputfile import read_text, sha256_bounded
+from solver.render import csv_row, dumps, solution_data
 from solver.report import image_names, write_report
 from solver.rules import default_rules_path, shipped_name
 from solver.solution import solve
 from solver.team import parse_team, resolve_team_path
-from solver.yamlio import load_document
+from solver.yamlio import MAX_FILE_BYTES, load_document
 
 if TYPE_CHECKING:
     from concurrent.futures import Future
@@ -235,10 +236,8 @@ def plan(teams: Sequence[tuple[Path, str]], out: str | Path, *, rules: str | Non
 
 
 def _sha256(path: Path) -> str | None:
-    try:
-        return hashlib.sha256(path.read_bytes()).hexdigest()
-    except OSError:
-        return None
+    # Bounded like every read: a team's `rules: /dev/zero` must not be hashed forever.
+    return sha256_bounded(path, limit=MAX_FILE_BYTES)
 
 
 def _version() -> str:
@@ -250,8 +249,8 @@ def _version() -> str:
 
 def _read_json(path: Path) -> Any:
     try:
-        return json.loads(path.read_text(encoding="utf-8"))
-    except (OSError, ValueError):
+        return json.loads(read_text(path, limit=MAX_FILE_BYTES, what="JSON file"))
+    except (SolverError, ValueError, RecursionError):
         return None
 
 
@@ -298,6 +297,7 @@ def _row(job: Job, data: dict[str, Any]) -> SummaryRow:
                       ui_configurations=totals.get("ui_configurations"),
                       default_configuration=data.get("default_configuration"),
                       published=figures, reproduced=reproduced,
+                      message="; ".join(f"warning: {w}" for w in data.get("warnings", [])),
                       output=" ".join(p.relative_to(job.out).as_posix()
                                       for p in (job.output, job.report) if p is not None))
 
@@ -319,11 +319,12 @@ def run_job(job: Job) -> Outcome:
     try:
         team_hash = _sha256(job.team_file)
         document = load_document(job.team_file, display=job.shown)
-        if isinstance(document.data, dict) and "characteristics" in document.data \
-                and "team" not in document.data:
+        kind = file_kind(document)
+        if kind in ("rules", "profile"):
+            what = "a rule set" if kind == "rules" else "an identification profile"
             row = SummaryRow(file=job.shown, status="skipped",
-                             message="not a team file: it has 'characteristics:' and no "
-                                     "'team:' (a rule set?)")
+                             message=f"not a team file: {what} (it has 'characteristics:' "
+                                     "and no 'team:')")
             return Outcome(job, "skipped", row, time.perf_counter() - started)
         rules_file = _rules_file(job, document.data)
         rules_hash = _sha256(rules_file)
@@ -380,7 +381,8 @@ def run_batch(jobs: Sequence[Job], workers: int = 1) -> Iterator[Outcome]:
     # clean single-threaded server.
     methods = multiprocessing.get_all_start_methods()
     context = multiprocessing.get_context("forkserver" if "forkserver" in methods else "spawn")
-    with ProcessPoolExecutor(max_workers=min(workers, len(pending)), mp_context=context) as pool:
+    with ProcessPoolExecutor(max_workers=min(workers, len(pending)), mp_context=context,
+                             initializer=_watch_parent, initargs=(os.getpid(),)) as pool:
         futures: dict[Future[Outcome], Job] = {pool.submit(run_job, job): job
                                                for job in pending}
         for future in as_completed(futures):
@@ -395,6 +397,33 @@ def run_batch(jobs: Sequence[Job], workers: int = 1) -> Iterator[Outcome]:
                     message=f"{job.shown}: the worker process solving it died ({error})"))
 
 
+def _watch_parent(batch_pid: int) -> None:
+    """In a worker: exit as soon as the batch process is gone.
+
+    A ``kill -9`` of the batch gives it no chance to stop its pool; the forkserver then exits,
+    but workers waiting for (or solving) a team would live on, and the resource tracker with
+    them. A daemon thread checks every half second that the batch process still exists and
+    that this worker's parent (the forkserver, or the batch itself under spawn) is the same.
+    """
+    import threading
+
+    parent = os.getppid()
+
+    def watch() -> None:
+        while True:
+            time.sleep(0.5)
+            try:
+                os.kill(batch_pid, 0)
+            except ProcessLookupError:
+                os._exit(1)  # no cleanup to do: the batch that wanted the results is gone
+            except PermissionError:
+                pass  # the pid exists (reused by someone else's process: the ppid check below)
+            if os.getppid() != parent:
+                os._exit(1)
+
+    threading.Thread(target=watch, name="watch-batch", daemon=True).start()
+
+
 # ---- 4. the summary -----------------------------------------------------------------------
 
 _FIELDS = ("file", "status", "team", "rules", "rules_file", "kinematic_types", "valid_robots",
@@ -407,11 +436,12 @@ def _cells(row: SummaryRow) -> list[str]:
 
 
 def summary_csv(rows: Sequence[SummaryRow]) -> str:
-    """The summary as CSV: a header line, then one row per team."""
+    """The summary as CSV: a header line, then one row per team (cells that a spreadsheet
+    would read as a formula are neutralised: :func:`solver.render.csv_cell`)."""
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
     writer.writerow(_FIELDS)
-    writer.writerows(_cells(row) for row in rows)
+    writer.writerows(csv_row(_cells(row)) for row in rows)
     return buffer.getvalue()
 
 

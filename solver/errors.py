@@ -11,7 +11,6 @@ Not here: the findings of ``teleop-ui check`` (they are results, not errors).
 
 from __future__ import annotations
 
-import difflib
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from typing import Self
@@ -20,9 +19,12 @@ __all__ = [
     "Fault",
     "InputError",
     "Location",
+    "MissingExtraError",
     "RulesError",
     "SolverError",
+    "StructureTooComplex",
     "TeamError",
+    "TooLargeError",
     "did_you_mean",
 ]
 
@@ -96,6 +98,22 @@ class TeamError(SolverError, ValueError):
     """A team selection file is malformed or does not fit its rule set."""
 
 
+class TooLargeError(SolverError, ValueError):
+    """Enumerating or listing would take more than the configured limit allows."""
+
+
+class StructureTooComplex(TooLargeError):
+    """The team's constraints do not decompose into blocks small enough to count by structure.
+
+    The ``auto`` engine catches it and enumerates instead; ``count --symbolic`` and the
+    ``structure`` engine report it like any other refusal (status 2, with the reason).
+    """
+
+
+class MissingExtraError(SolverError, ImportError):
+    """A feature needs an optional dependency that is not installed (:mod:`solver.extras`)."""
+
+
 def _position(fault: Fault) -> tuple[str, int, int]:
     location = fault.location
     return (location.file, location.line or 0, location.column or 0)
@@ -103,6 +121,8 @@ def _position(fault: Fault) -> tuple[str, int, int]:
 
 def did_you_mean(word: str, choices: Iterable[str]) -> str:
     """`` (did you mean 'X'?)`` for the closest choice, or an empty string when none is close."""
+    import difflib  # only a misspelling needs it: spare every start its import
+
     options = list(choices)
     matches = difflib.get_close_matches(word, options, n=1, cutoff=0.6)
     if not matches:

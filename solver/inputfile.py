@@ -10,7 +10,6 @@ Not here: parsing what was read (:mod:`solver.yamlio`, :mod:`solver.identify.saf
 
 from __future__ import annotations
 
-import hashlib
 from pathlib import Path
 
 from solver.errors import InputError
@@ -37,6 +36,8 @@ def sha256_bounded(path: str | Path, *, limit: int) -> str | None:
     read or is larger than ``limit`` (an up-to-date check then says "not up to date" and the
     solve that follows reports the located error)."""
     try:
+        import hashlib  # only `batch` digests files; loading OpenSSL costs every start 5 ms
+
         return hashlib.sha256(read_bounded(path, limit=limit)).hexdigest()
     except InputError:
         return None

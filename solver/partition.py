@@ -8,14 +8,14 @@ article), each robot has exactly one configuration and the classes are unique.
 When a value belongs to several components (overlapping presentation groups or arrangements),
 "can share a component" is no longer transitive and choosing the fewest configurations is a
 minimum hitting-set problem: pick configurations so that every robot can use at least one. It
-is solved exactly by branch and bound (:func:`minimum_cover`); each robot then goes to the
-lowest-numbered chosen configuration it can use. A value in no component (a gap) leaves its
-robots *unserved*: they get the default configuration.
+is solved exactly, proven optimal, by :func:`solver.engines.cover.minimum_cover`; each robot
+then goes to the lowest-numbered chosen configuration it can use. A value in no component (a
+gap) leaves its robots *unserved*: they get the default configuration.
 
 Configurations are numbered 1..k by kinematic type in rule-file order, then by the component
 order of the other characteristics in characteristic order; the default configuration is k+1.
 
-Not here: producing the robots (:mod:`solver.model`, :mod:`solver.enumerate`).
+Not here: producing the robots (:mod:`solver.engines`).
 """
 
 from __future__ import annotations
@@ -30,20 +30,14 @@ from solver.rules import Component, RuleSet
 __all__ = [
     "Configuration",
     "Partition",
+    "PartitionClass",
     "RobotClass",
-    "minimum_cover",
     "partition",
     "partition_classes",
     "sort_key",
 ]
 
 Key = tuple[int, ...]
-# A class of interchangeable robots: for each characteristic the values its robots take (all in
-# the same components), and how many robots the class stands for.
-RobotClass = tuple[tuple[tuple[Value, ...], ...], int]
-
-# Search nodes the exact cover may visit before settling for the best cover found so far.
-COVER_NODE_LIMIT = 200_000
 
 
 @dataclass(frozen=True, slots=True)
@@ -58,6 +52,16 @@ class Configuration:
     # served[i]: the values of characteristic i among the robots this configuration serves.
     served: tuple[tuple[Value, ...], ...]
 
+    @property
+    def valid_robots(self) -> int:
+        """The valid robots it serves (the JSON contract's name for ``robots``)."""
+        return self.robots
+
+    def __repr__(self) -> str:  # short, for notebooks: the fields are one attribute away
+        components = " / ".join(component.name for component in self.components)
+        return (f"<Configuration {self.number} ({self.kinematic_type}): {components}; "
+                f"{self.robots} valid robots>")
+
     def clusters(self, position: int) -> tuple[int, int]:
         """The fewest and most clusters the served counts of characteristic ``position`` take."""
         component = self.components[position]
@@ -66,12 +70,31 @@ class Configuration:
 
 
 @dataclass(frozen=True, slots=True)
+class RobotClass:
+    """Robots the rules cannot tell apart: for each characteristic the values they take (all in
+    the same components), and how many robots the class stands for."""
+
+    values: tuple[tuple[Value, ...], ...]
+    robots: int
+
+
+@dataclass(frozen=True, slots=True)
+class PartitionClass:
+    """One configuration of a partition, before numbering: its component per characteristic
+    (``key``), the robots it serves, and per characteristic the values among them."""
+
+    key: Key
+    robots: int
+    served: tuple[tuple[Value, ...], ...]
+
+
+@dataclass(frozen=True, slots=True)
 class Partition:
     """The configurations of one kinematic type, before numbering across the team."""
 
     kinematic_type: str
-    # (key, robots served, served values per characteristic), in sort-key order.
-    classes: tuple[tuple[Key, int, tuple[tuple[Value, ...], ...]], ...]
+    # In numbering order (:func:`sort_key`).
+    classes: tuple[PartitionClass, ...]
     valid_robots: int
     unserved_robots: int
     proven_minimal: bool
@@ -87,13 +110,13 @@ def partition(rules: RuleSet, kinematic_type: str, robots: Iterable[Sequence[Val
     """Partition the valid robots of one kinematic type into the fewest configurations."""
     if all(c.is_partition for c in rules.characteristics):
         return _partition_equivalence(rules, kinematic_type, robots)
-    singletons = ((tuple((value,) for value in robot), 1) for robot in robots)
+    singletons = (RobotClass(tuple((value,) for value in robot), 1) for robot in robots)
     return partition_classes(rules, kinematic_type, singletons)
 
 
 def partition_classes(rules: RuleSet, kinematic_type: str,
                       classes: Iterable[RobotClass]) -> Partition:
-    """Partition weighted classes of robots (see :data:`RobotClass`) into configurations.
+    """Partition weighted classes of robots (see :class:`RobotClass`) into configurations.
 
     All values a class lists for one characteristic must belong to the same components, so
     every robot of the class has the same candidate configurations. Used by the structural
@@ -103,7 +126,8 @@ def partition_classes(rules: RuleSet, kinematic_type: str,
     width = len(characteristics)
     by_candidates: dict[frozenset[Key], list[tuple[tuple[tuple[Value, ...], ...], int]]] = {}
     unserved = total = 0
-    for values, weight in classes:
+    for robot_class in classes:
+        values, weight = robot_class.values, robot_class.robots
         total += weight
         options = [c.membership[c.positions[members[0]]]
                    for c, members in zip(characteristics, values, strict=True)]
@@ -115,7 +139,10 @@ def partition_classes(rules: RuleSet, kinematic_type: str,
     if all(len(candidates) == 1 for candidates in by_candidates):
         chosen, proven = frozenset(next(iter(c)) for c in by_candidates), True
     else:
-        chosen, proven = minimum_cover(list(by_candidates))
+        # Imported here: HiGHS loads only for rule sets with overlapping components.
+        from solver.engines.cover import minimum_cover
+
+        chosen, proven = minimum_cover(list(by_candidates)), True
     order = sorted(chosen, key=lambda key: sort_key(rules, key))
     rank = {key: index for index, key in enumerate(order)}
     counts = dict.fromkeys(order, 0)
@@ -127,7 +154,8 @@ def partition_classes(rules: RuleSet, kinematic_type: str,
             counts[key] += weight
             for i in range(width):
                 served[key][i].update(values[i])
-    classes_out = tuple((key, counts[key], _ordered(rules, served[key])) for key in order)
+    classes_out = tuple(PartitionClass(key, counts[key], _ordered(rules, served[key]))
+                        for key in order)
     return Partition(kinematic_type, classes_out, total, unserved, proven)
 
 
@@ -156,7 +184,8 @@ def _partition_equivalence(rules: RuleSet, kinematic_type: str,
         for i in range(width):
             sets[i].add(robot[i])
     order = sorted(counts, key=lambda key: sort_key(rules, key))
-    classes = tuple((key, counts[key], _ordered(rules, served[key])) for key in order)
+    classes = tuple(PartitionClass(key, counts[key], _ordered(rules, served[key]))
+                    for key in order)
     return Partition(kinematic_type, classes, total, unserved, True)
 
 
@@ -164,68 +193,3 @@ def _ordered(rules: RuleSet, sets: list[set[Value]]) -> tuple[tuple[Value, ...],
     return tuple(tuple(v for v in c.values if v in values)
                  for c, values in zip(rules.characteristics, sets, strict=True))
 
-
-def minimum_cover(elements: Sequence[frozenset[Key]],
-                  node_limit: int = COVER_NODE_LIMIT) -> tuple[frozenset[Key], bool]:
-    """The fewest keys such that every element contains at least one of them.
-
-    Exact branch and bound: branch on the element with the fewest options, bound by a greedy
-    packing of pairwise disjoint elements (each needs its own key). Returns the cover and
-    whether it is proven minimal (``False`` only when ``node_limit`` nodes were not enough;
-    the cover is then the best found, never worse than greedy).
-    """
-    # An element that contains another is hit whenever the smaller one is: drop it.
-    unique = sorted(set(elements), key=lambda e: (len(e), sorted(e)))
-    reduced: list[frozenset[Key]] = []
-    for element in unique:
-        if not any(other <= element for other in reduced):
-            reduced.append(element)
-    best = _greedy_cover(reduced)
-    nodes = 0
-    exhausted = False
-
-    def search(remaining: list[frozenset[Key]], chosen: list[Key]) -> None:
-        nonlocal best, nodes, exhausted
-        nodes += 1
-        if nodes > node_limit:
-            exhausted = True
-            return
-        if not remaining:
-            if len(chosen) < len(best):
-                best = frozenset(chosen)
-            return
-        if len(chosen) + _disjoint_packing(remaining) >= len(best):
-            return
-        pivot = min(remaining, key=lambda e: (len(e), sorted(e)))
-        hits = {key: sum(key in e for e in remaining) for key in pivot}
-        for key in sorted(pivot, key=lambda k: (-hits[k], k)):
-            search([e for e in remaining if key not in e], [*chosen, key])
-            if exhausted:
-                return
-
-    search(reduced, [])
-    return best, not exhausted
-
-
-def _greedy_cover(elements: list[frozenset[Key]]) -> frozenset[Key]:
-    remaining = list(elements)
-    chosen: set[Key] = set()
-    while remaining:
-        hits: dict[Key, int] = {}
-        for element in remaining:
-            for key in element:
-                hits[key] = hits.get(key, 0) + 1
-        key = min(hits, key=lambda k: (-hits[k], k))
-        chosen.add(key)
-        remaining = [e for e in remaining if key not in e]
-    return frozenset(chosen)
-
-
-def _disjoint_packing(elements: list[frozenset[Key]]) -> int:
-    used: set[Key] = set()
-    packed = 0
-    for element in sorted(elements, key=len):
-        if used.isdisjoint(element):
-            used |= element
-            packed += 1
-    return packed

@@ -34,6 +34,7 @@ from typing import TYPE_CHECKING, Any, Literal
 from solver.atomic import write_atomic
 from solver.constraints import Value
 from solver.errors import InputError
+from solver.extras import require
 from solver.rules import Characteristic
 
 if TYPE_CHECKING:
@@ -48,7 +49,9 @@ __all__ = [
     "PLOT_KINDS",
     "RadarAxis",
     "bars_figure",
+    "component_matrix",
     "figure_bytes",
+    "matrix_figure",
     "plot_format",
     "radar_axes",
     "radar_figure",
@@ -56,13 +59,17 @@ __all__ = [
     "write_plot",
 ]
 
-PlotKind = Literal["radar", "bars"]
+PlotKind = Literal["radar", "bars", "matrix"]
 PLOT_FORMATS = ("png", "svg", "pdf")
-PLOT_KINDS: tuple[PlotKind, ...] = ("radar", "bars")
+PLOT_KINDS: tuple[PlotKind, ...] = ("radar", "bars", "matrix")
 
 # A categorical spoke lists every value of the domain up to this many; past it, only the values
 # some kinematic type of the team selects (more would not fit as readable labels).
 MAX_SPOKE_VALUES = 12
+# At most this many labels on a spoke of names (integers are thinned by spacing instead).
+MAX_SPOKE_LABELS = 40
+# Past this many components the component matrix has one column per characteristic.
+MAX_MATRIX_COLUMNS = 60
 # Where the first value of a spoke sits (radius 0 is the centre, 1 the end of a spoke): far
 # enough out that the innermost labels of neighbouring spokes do not meet.
 INNER_RADIUS = 0.22
@@ -190,7 +197,10 @@ def _tick_values(axis: RadarAxis, team: Team, position: int) -> list[Value]:
     """
     characteristic = axis.characteristic
     if characteristic.kind != "integer":
-        return list(axis.shown)
+        # Past MAX_SPOKE_LABELS a spoke labels every k-th value (and the last): thousands of
+        # labels would overlap into a smear and take minutes to draw.
+        step = math.ceil(len(axis.shown) / MAX_SPOKE_LABELS)
+        return list(dict.fromkeys([*axis.shown[::step], *axis.shown[-1:]]))
     labels = _Labels(axis)
     for value in (axis.low, axis.high,
                   *(max(int(v) for v in s.domains[position]) for s in team.selections),
@@ -277,6 +287,8 @@ def _draw_spoke(ax: Axes, axis: RadarAxis, team: Team, position: int) -> None:
     title = axis.characteristic.label
     if not axis.complete and axis.characteristic.kind != "integer":
         title += "\n(selected values)"
+    if axis.characteristic.kind != "integer" and len(labelled) < len(axis.shown):
+        title += f"\n({len(labelled)} of {len(axis.shown)} values labelled)"
     ax.text(1.09 * cos, 1.09 * sin, title, fontsize=10.5, fontweight="bold",
             ha="center" if abs(sin) >= STEEP else ("left" if cos > 0 else "right"),
             va="bottom" if sin > 0 else "top", zorder=5,
@@ -312,7 +324,12 @@ def _counts(robots: int, configurations: int) -> str:
             f"configuration{'' if configurations == 1 else 's'}")
 
 
+# What needs matplotlib, as a missing-extra message names it (solver/extras.py).
+_FEATURE = "drawing plots (solve --plot, report, batch --report)"
+
+
 def _new_figure(width: float, height: float) -> Figure:
+    require("matplotlib", feature=_FEATURE)
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
@@ -331,6 +348,7 @@ def radar_figure(solution: Solution) -> Figure:
     get thinner from the first type to the last, so that where types select the same values
     every colour still shows, nested.
     """
+    require("matplotlib", feature=_FEATURE)
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch, PathPatch
     from matplotlib.path import Path as MplPath
@@ -430,6 +448,77 @@ def bars_figure(solution: Solution) -> Figure:
     return figure
 
 
+def component_matrix(solution: Solution) -> tuple[list[str], list[tuple[str, str]],
+                                                 list[list[tuple[int, int]]]]:
+    """Rows (kinematic types), columns (characteristic label, component) and per cell the
+    (configurations, valid robots) of that type that use that component."""
+    rules = solution.rules
+    columns = [(c.label, component.name) for i, c in enumerate(rules.characteristics)
+               if i != rules.key_position for component in c.components]
+    # A rule set with thousands of components would draw thousands of columns: past
+    # MAX_MATRIX_COLUMNS, each characteristic is one column (its components taken together).
+    grouped = len(columns) > MAX_MATRIX_COLUMNS
+    if grouped:
+        columns = [(c.label, f"{len(c.components)} components")
+                   for i, c in enumerate(rules.characteristics) if i != rules.key_position]
+    rows = [s.kinematic_type for s in solution.by_type]
+    cells = [[(0, 0) for _ in columns] for _ in rows]
+    row_of = {kt: r for r, kt in enumerate(rows)}
+    column_of = {key: k for k, key in enumerate(columns)}
+    for configuration in solution.configurations:
+        r = row_of[configuration.kinematic_type]
+        k = -1
+        for i, (characteristic, component) in enumerate(
+                zip(rules.characteristics, configuration.components, strict=True)):
+            if i == rules.key_position:
+                continue
+            k = k + 1 if grouped else column_of[(characteristic.label, component.name)]
+            used, robots = cells[r][k]
+            cells[r][k] = (used + 1, robots + configuration.robots)
+    return rows, columns, cells
+
+
+def matrix_figure(solution: Solution) -> Figure:
+    """Which UI components each kinematic type needs, at a glance: one row per type, one
+    column per component (grouped by characteristic); a cell's shade is the share of the
+    type's valid robots whose configuration uses the component, its text the number of
+    configurations that do. Blank: the type never needs it."""
+    require("matplotlib", feature=_FEATURE)
+    rows, columns, cells = component_matrix(solution)
+    figure = _new_figure(max(6.0, 2.2 + 0.42 * len(columns)), 1.9 + 0.42 * max(len(rows), 1))
+    ax = figure.add_subplot()
+    totals = {s.kinematic_type: s.valid_robots for s in solution.by_type}
+    shares = [[robots / totals[kt] if totals[kt] else 0.0 for _, robots in row]
+              for kt, row in zip(rows, cells, strict=True)]
+    ax.imshow(shares or [[0.0]], cmap="Blues", vmin=0.0, vmax=1.0, aspect="auto")
+    for r, row in enumerate(cells):
+        for k, (used, _) in enumerate(row):
+            if used:
+                ax.text(k, r, str(used), ha="center", va="center", fontsize=8,
+                        color="white" if shares[r][k] > 0.6 else "#222222")
+    ax.set_yticks(range(len(rows)), rows, fontsize=9)
+    ax.set_xticks(range(len(columns)), [textwrap.shorten(name, 18) for _, name in columns],
+                  rotation=60, ha="right", fontsize=8)
+    # A thin line between characteristics: the columns are grouped by them.
+    edges = [k - 0.5 for k in range(1, len(columns)) if columns[k][0] != columns[k - 1][0]]
+    for edge in edges:
+        ax.axvline(edge, color="#333333", linewidth=1.0)
+    # Each group's characteristic, above its columns.
+    starts = [0, *(int(edge + 0.5) for edge in edges)]
+    for first, last in zip(starts, [*starts[1:], len(columns)], strict=True):
+        if first < last:
+            ax.text((first + last - 1) / 2, -0.7, columns[first][0], ha="center", va="bottom",
+                    fontsize=8, color="#444444")
+    ax.tick_params(length=0)
+    totals_all = solution.totals
+    ax.set_title(f"{solution.team.name}: "
+                 f"{_counts(totals_all.valid_robots, totals_all.ui_configurations)}\n"
+                 "shade: share of the type's robots whose configuration uses the component; "
+                 "number: configurations that do", fontsize=9, pad=22)
+    figure.tight_layout()
+    return figure
+
+
 def figure_bytes(figure: Figure, fmt: str) -> bytes:
     """``figure`` rendered as ``fmt`` (one of :data:`PLOT_FORMATS`), the same bytes every run."""
     import matplotlib
@@ -450,5 +539,6 @@ def figure_bytes(figure: Figure, fmt: str) -> bytes:
 def write_plot(solution: Solution, path: str | Path, kind: PlotKind = "radar") -> Path:
     """Draw ``kind`` for ``solution`` and write it to ``path`` (format by extension)."""
     fmt = plot_format(path)
-    figure = radar_figure(solution) if kind == "radar" else bars_figure(solution)
+    draw = {"radar": radar_figure, "bars": bars_figure, "matrix": matrix_figure}[kind]
+    figure = draw(solution)
     return write_atomic(path, figure_bytes(figure, fmt))

@@ -15,7 +15,7 @@ with its components.
 Both are deterministic: the same team gives the same bytes, charts included.
 
 Not here: the charts themselves (:mod:`solver.plot`), text/JSON/CSV output
-(:mod:`solver.formats`), many teams at once (:mod:`solver.batch`).
+(:mod:`solver.render`), many teams at once (:mod:`solver.batch`).
 """
 
 from __future__ import annotations
@@ -30,8 +30,8 @@ from solver import markdown
 from solver.atomic import write_all_atomic, write_atomic
 from solver.constraints import Value
 from solver.errors import InputError
-from solver.formats import configuration_data, solution_warnings
-from solver.plot import PlotKind, bars_figure, figure_bytes, radar_figure, runs
+from solver.plot import PlotKind, bars_figure, figure_bytes, matrix_figure, radar_figure, runs
+from solver.render import configuration_data, solution_warnings
 from solver.reproduce import published_note
 from solver.rules import Characteristic
 from solver.solution import Solution, TypeSummary
@@ -50,13 +50,22 @@ ReportFormat = Literal["html", "markdown"]
 REPORT_FORMATS: dict[str, ReportFormat] = {".html": "html", ".htm": "html", ".md": "markdown",
                                            ".markdown": "markdown"}
 _KINDS: tuple[PlotKind, ...] = ("radar", "bars")
+# The HTML page embeds its charts, so it also shows the component matrix, first: it answers
+# "which components does each type need?" at a glance, where the radar's fills overlap.
+_HTML_KINDS: tuple[PlotKind, ...] = ("matrix", "radar", "bars")
 _ALT = {"radar": "Radar chart: the selected values of each kinematic type, one spoke per "
                  "characteristic",
-        "bars": "Bar chart: valid robots and UI configurations per kinematic type"}
+        "bars": "Bar chart: valid robots and UI configurations per kinematic type",
+        "matrix": "Component matrix: per kinematic type, the share of its robots whose "
+                  "configuration uses each component, and how many configurations do"}
 
 _STYLE = """
-body { font-family: "DejaVu Sans", Verdana, sans-serif; max-width: 62rem; margin: 2rem auto;
-       padding: 0 1rem; color: #222; line-height: 1.4; }
+body { font-family: "DejaVu Sans", Verdana, sans-serif; margin: 2rem; padding: 0 1rem;
+       color: #222; line-height: 1.4; }
+p, ul { max-width: 62rem; }
+nav.contents { font-size: 0.9rem; }
+nav.contents a { margin-right: 1rem; }
+details > summary { cursor: pointer; color: #0072B2; margin: 0.5rem 0; }
 h1 { font-size: 1.6rem; margin-bottom: 0.2rem; }
 h2 { font-size: 1.2rem; margin-top: 2rem; border-bottom: 1px solid #ccc; }
 p.meta { color: #555; margin-top: 0; }
@@ -178,6 +187,25 @@ def _configuration_table(solution: Solution) -> tuple[list[str], list[list[Any]]
     return headers, rows
 
 
+def _constraint_table(solution: Solution) -> tuple[list[str], list[list[str]]] | None:
+    """Each rule constraint, where it is, and what it removes from this team's selections
+    (:mod:`solver.forbidden`); ``None`` when the rule set has no constraints."""
+    rules = solution.rules
+    if not rules.constraints:
+        return None
+    # Whole values only: a constraint may also remove combinations of values that each
+    # stay valid elsewhere (those robots are simply not counted).
+    headers = ["constraint", "where", "selected values it excludes entirely"]
+    rows = []
+    for constraint in rules.constraints:
+        removed = [r for r in solution.removed if constraint in r.constraints]
+        text = "; ".join(f"{r.kinematic_type}: " + (
+            f"{r.characteristic} {', '.join(str(v) for v in r.values)}" if r.characteristic
+            else "every robot") for r in removed)
+        rows.append([constraint.describe(), str(constraint.location or ""), text or "none"])
+    return headers, rows
+
+
 def _subtitle(solution: Solution) -> str:
     team, rules = solution.team, solution.rules
     return f"team file {team.file}; rules: {rules.name} ({rules.file})"
@@ -203,6 +231,20 @@ def _html_table(headers: Sequence[str], rows: Sequence[Sequence[Any]],
     return "\n".join(lines)
 
 
+# Tables longer than this are folded (<details>): the page stays navigable for large teams.
+_FOLD_ROWS = 30
+
+
+def _folded(table: str, rows: int) -> str:
+    if rows <= _FOLD_ROWS:
+        return table
+    return f"<details>\n<summary>show all {rows} rows</summary>\n{table}\n</details>"
+
+
+def _section(anchor: str, title: str) -> str:
+    return f'<h2 id="{anchor}">{html.escape(title)}</h2>'
+
+
 def _svg_uri(svg: bytes) -> str:
     return "data:image/svg+xml;base64," + base64.b64encode(svg).decode("ascii")
 
@@ -213,7 +255,7 @@ def render_html(solution: Solution, charts: Mapping[PlotKind, bytes] | None = No
     ``charts`` maps ``radar``/``bars`` to SVG bytes; by default they are drawn here.
     """
     if charts is None:
-        charts = _charts(solution, "svg")
+        charts = _charts(solution, "svg", _HTML_KINDS)
     e = html.escape
     team = solution.team
     title = f"{team.name}: UI configurations"
@@ -226,7 +268,17 @@ def render_html(solution: Solution, charts: Mapping[PlotKind, bytes] | None = No
              f"<h1>{e(team.name)}</h1>", f'<p class="meta">{e(_subtitle(solution))}</p>']
     if team.description:
         parts.append(f"<p>{e(team.description)}</p>")
-    parts += ["<h2>Valid robots and UI configurations</h2>",
+    constraints = _constraint_table(solution)
+    titles = {"counts": "Valid robots and UI configurations", "charts": "Charts",
+              "constraints": f"Rule constraints ({len(solution.rules.constraints)})",
+              "selections": "Team selections",
+              "configurations": f"UI configurations ({len(solution.configurations)} and the "
+                                "default)"}
+    if constraints is None:
+        del titles["constraints"]
+    parts.append('<nav class="contents">' + "".join(
+        f'<a href="#{anchor}">{e(title)}</a>' for anchor, title in titles.items()) + "</nav>")
+    parts += [_section("counts", titles["counts"]),
               _html_table(_SUMMARY_HEADERS, _summary_rows(solution),
                           [False, True, True, True], total_last=True),
               "<ul>", *(f"<li>{e(fact)}</li>" for fact in _facts(solution)), "</ul>"]
@@ -234,17 +286,22 @@ def render_html(solution: Solution, charts: Mapping[PlotKind, bytes] | None = No
     if note is not None:
         text, agrees = note
         parts.append(f'<p class="note{"" if agrees else " differs"}">{e(text)}</p>')
-    parts.append("<h2>Charts</h2>")
-    for kind in _KINDS:
+    parts.append(_section("charts", titles["charts"]))
+    for kind in _HTML_KINDS:
         if kind in charts:
             parts += ["<figure>", f'<img src="{_svg_uri(charts[kind])}" alt="{e(_ALT[kind])}">',
                       f"<figcaption>{e(_ALT[kind])}.</figcaption>", "</figure>"]
+    if constraints is not None:
+        headers, rows = constraints
+        parts += [_section("constraints", titles["constraints"]),
+                  _folded(_html_table(headers, rows, [False] * len(headers)), len(rows))]
     headers, rows = _selection_table(solution)
-    parts += ["<h2>Team selections</h2>",
-              _html_table(headers, rows, [False] * len(headers))]
+    parts += [_section("selections", titles["selections"]),
+              _folded(_html_table(headers, rows, [False] * len(headers)), len(rows))]
     headers, rows = _configuration_table(solution)
-    parts += [f"<h2>UI configurations ({len(solution.configurations)} and the default)</h2>",
-              _html_table(headers, rows, [True, *[False] * (len(headers) - 2), True]),
+    parts += [_section("configurations", titles["configurations"]),
+              _folded(_html_table(headers, rows, [True, *[False] * (len(headers) - 2), True]),
+                      len(rows)),
               "</body>", "</html>"]
     return "\n".join(parts) + "\n"
 
@@ -275,6 +332,10 @@ def render_markdown(solution: Solution, images: Mapping[PlotKind, str] | None = 
             if kind in images:
                 parts += [f"![{markdown.escape(_ALT[kind])}]"
                           f"({markdown.link_target(images[kind])})", ""]
+    constraints = _constraint_table(solution)
+    if constraints is not None:
+        parts += ["", f"## Rule constraints ({len(solution.rules.constraints)})", "",
+                  markdown.table(*constraints).rstrip("\n")]
     headers, rows = _selection_table(solution)
     parts += ["", "## Team selections", "", markdown.table(headers, rows).rstrip("\n")]
     headers, rows = _configuration_table(solution)
@@ -289,9 +350,10 @@ def render_markdown(solution: Solution, images: Mapping[PlotKind, str] | None = 
 
 # ---- writing ---------------------------------------------------------------------------------
 
-def _charts(solution: Solution, fmt: str) -> dict[PlotKind, bytes]:
-    return {"radar": figure_bytes(radar_figure(solution), fmt),
-            "bars": figure_bytes(bars_figure(solution), fmt)}
+def _charts(solution: Solution, fmt: str, kinds: Sequence[PlotKind] = _KINDS
+            ) -> dict[PlotKind, bytes]:
+    draw = {"radar": radar_figure, "bars": bars_figure, "matrix": matrix_figure}
+    return {kind: figure_bytes(draw[kind](solution), fmt) for kind in kinds}
 
 
 def write_report(solution: Solution, path: str | Path) -> list[Path]:

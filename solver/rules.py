@@ -20,6 +20,7 @@ Not here: team selections (:mod:`solver.team`), solving (:mod:`solver.solution`)
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Iterable
 from dataclasses import dataclass, field, replace
 from functools import cached_property
@@ -28,7 +29,8 @@ from typing import Any, Literal
 
 from solver.constraints import Condition, RuleConstraint, Value
 from solver.errors import Location, RulesError, did_you_mean
-from solver.reader import Reader, type_name
+from solver.filekind import require_kind
+from solver.reader import Reader, quote, type_name
 from solver.yamlio import Document, PathPart, load_document
 
 __all__ = [
@@ -52,6 +54,7 @@ MAX_INTEGER_VALUES = 100_000
 
 _RULES_KEYS = {"name", "description", "source", "bound", "team_key", "characteristics",
                "constraints"}
+_WHOLE_NUMBER = re.compile(r"[+-]?[0-9]+")
 _CHARACTERISTIC_KEYS = {"label", "description", "values", "range", "components"}
 _CATEGORICAL_COMPONENT_KEYS = {"name", "description", "values"}
 _INTEGER_COMPONENT_KEYS = {"name", "description", "min", "above", "max", "below",
@@ -131,10 +134,11 @@ class Characteristic:
     def parse_value(self, text: str) -> Value | None:
         """The domain value written as ``text`` (``"3"`` for integers), or ``None``."""
         if self.kind == "integer":
-            try:
-                number = int(text.strip())
-            except ValueError:
+            # ASCII digits only: int() also reads "٣" (Arabic-Indic three) and "1_0" as numbers,
+            # which no one typing a robot's characteristics means.
+            if _WHOLE_NUMBER.fullmatch(text.strip()) is None:
                 return None
+            number = int(text.strip())
             return number if self.index(number) is not None else None
         return text if text in self.positions else None
 
@@ -152,6 +156,10 @@ class RuleSet:
     description: str = ""
     source: str = ""
     document: Document | None = field(default=None, compare=False, repr=False)
+
+    def __repr__(self) -> str:  # short, for notebooks: the fields are one attribute away
+        return (f"<RuleSet {self.name!r} ({self.file}): {', '.join(self.names)}; "
+                f"{len(self.constraints)} constraints>")
 
     @cached_property
     def _by_name(self) -> dict[str, Characteristic]:
@@ -189,7 +197,7 @@ class RuleSet:
 
         Two values are in one class when they belong to the same components and meet exactly
         the same conditions of every constraint. Classes keep domain order (by first value).
-        Counting works on classes instead of values (:mod:`solver.structure`).
+        Counting works on classes instead of values (:mod:`solver.engines.structure`).
         """
         found = []
         for characteristic in self.characteristics:
@@ -234,22 +242,30 @@ def default_rules_path() -> Path:
 
 
 def load_rules(path: str | Path, *, display: str | None = None) -> RuleSet:
-    """Read a rule set file; :class:`RulesError` lists every problem with its location."""
+    """Read a rule set file; :class:`RulesError` lists every problem with its location.
+
+    A shipped rule set is shown by its stable name (``rules/paper.yaml``) unless ``display``."""
+    if display is None:
+        display = shipped_name(Path(path))
     document = load_document(path, display=display)
     return parse_rules(document)
 
 
 def parse_rules(document: Document) -> RuleSet:
-    """Build a :class:`RuleSet` from an already loaded document."""
+    """Build a :class:`RuleSet` from an already loaded document.
+
+    Raises :class:`InputError` for a team file or a profile (they are no broken rule sets)."""
+    require_kind(document, "rules")
     reader = Reader(document)
-    top = reader.top("rule set")
+    top = reader.top("rule set", needs="characteristics")
     if top is None:
         raise RulesError(reader.faults)
     reader.unknown_keys((), top, _RULES_KEYS, "rule set field")
     name = reader.string(("name",), "rule set name", required=False,
                          default=Path(document.file).stem)
-    description = reader.string(("description",), "description", required=False)
-    source = reader.string(("source",), "source", required=False)
+    description = reader.string(("description",), "description", required=False,
+                                limit=None)
+    source = reader.string(("source",), "source", required=False, limit=None)
     bound = reader.integer(("bound",), "bound", required=False)
     if bound is not None and bound < 1:
         reader.fault(("bound",), f"bound must be positive, got {bound}", code="out-of-range")
@@ -295,6 +311,11 @@ def _read_characteristics(reader: Reader) -> list[Characteristic]:
                      code="missing-field")
     found = []
     for name in section:
+        if not name.strip() or not name.isprintable():
+            reader.fault(("characteristics", name), f"a characteristic needs a name of visible "
+                                                    f"characters, got {quote(name)}",
+                         key=True, code="invalid")
+            continue
         characteristic = _read_characteristic(reader, ("characteristics", name), name)
         if characteristic is not None:
             found.append(characteristic)
@@ -307,7 +328,8 @@ def _read_characteristic(reader: Reader, path: YPath, name: str) -> Characterist
         return None
     reader.unknown_keys(path, spec, _CHARACTERISTIC_KEYS, "characteristic field")
     label = reader.string((*path, "label"), "label", required=False, default=name)
-    description = reader.string((*path, "description"), "description", required=False)
+    description = reader.string((*path, "description"), "description", required=False,
+                                limit=None)
     location = reader.document.location(path, key=True)
     if ("values" in spec) == ("range" in spec):
         reader.fault(path, f"characteristic {name!r} needs exactly one of 'values' (named "
@@ -364,18 +386,24 @@ def _read_integer_range(reader: Reader, path: YPath, name: str) -> tuple[int, ..
     raw = reader.get(path)
     low: int | None
     high: int | None
-    if isinstance(raw, list) and len(raw) == 2:
-        low = reader.integer((*path, 0), f"{name} range minimum")
-        high = reader.integer((*path, 1), f"{name} range maximum")
-    elif isinstance(raw, dict):
-        spec = reader.mapping(path, "range")
-        reader.unknown_keys(path, spec, {"min", "max"}, "range field")
-        low = reader.integer((*path, "min"), f"{name} range minimum")
-        high = reader.integer((*path, "max"), f"{name} range maximum")
-    else:
-        reader.fault(path, f"range of {name!r} must be {{min: a, max: b}} or [a, b], got "
+    if isinstance(raw, list):
+        # A list is a set of values everywhere else (a team's `sensor_count: [2, 6]` is {2, 6});
+        # so a range has one spelling, a mapping, and `[1, 50]` here is refused, not guessed.
+        shown = ", ".join(str(item) for item in raw) if len(raw) <= 4 else "..."
+        example = (f"{{min: {raw[0]}, max: {raw[1]}}}" if len(raw) == 2
+                   else "{min: 1, max: 50}")
+        reader.fault(path, f"range of {name!r} is a list ([{shown}]), but a list means a set "
+                           f"of values (a team's `{name}: [2, 6]` is 2 and 6); write the range "
+                           f"as {example}", code="wrong-type")
+        return ()
+    if not isinstance(raw, dict):
+        reader.fault(path, f"range of {name!r} must be {{min: a, max: b}}, got "
                            f"{type_name(raw)}", code="wrong-type")
         return ()
+    spec = reader.mapping(path, "range")
+    reader.unknown_keys(path, spec, {"min", "max"}, "range field")
+    low = reader.integer((*path, "min"), f"{name} range minimum")
+    high = reader.integer((*path, "max"), f"{name} range maximum")
     if low is None or high is None:
         return ()
     if low > high:
@@ -412,7 +440,8 @@ def _read_components(reader: Reader, path: YPath, name: str, kind: Kind,
             reader.fault((*item_path, "name"), f"duplicate component {component_name!r} (first "
                                                f"at {first})", code="duplicate-value")
         names.setdefault(component_name, (*item_path, "name"))
-        description = reader.string((*item_path, "description"), "description", required=False)
+        description = reader.string((*item_path, "description"), "description",
+                                    required=False, limit=None)
         component = Component(component_name, len(components), (), description,
                               location=reader.document.location(item_path))
         if kind == "categorical":

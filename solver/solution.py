@@ -1,12 +1,13 @@
 """Solving a team: valid robots per kinematic type, their UI configurations, the totals.
 
-:func:`solve` enumerates the valid robots of each kinematic type in the team (python-constraint
-through :mod:`solver.model`), partitions them into UI configurations (:mod:`solver.partition`)
-and numbers the configurations across the team. The :class:`Solution` answers the article's
+:func:`solve` asks an engine (:mod:`solver.engines`) for the counts or the partition of each
+kinematic type in the team into UI configurations, and numbers the configurations across the
+team. The :class:`Solution` answers the article's
 questions (valid robots, UI configurations, reduction, the bound T, the default configuration)
 and looks up the configuration of any valid robot.
 
-Not here: rendering (:mod:`solver.formats`), single-combination assignment
+Not here: how robots are counted or enumerated (:mod:`solver.engines`), rendering
+(:mod:`solver.render`), single-combination assignment
 (:mod:`solver.assignment`).
 """
 
@@ -15,26 +16,20 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import cached_property
+from typing import Any, Literal
 
+from solver import engines
 from solver.constraints import Value
-from solver.errors import InputError, SolverError
-from solver.partition import Configuration, Key, Partition, partition
+from solver.engines import MAX_CONFIGURATIONS, MAX_ROBOTS
+from solver.engines.structure import Memo
+from solver.errors import TooLargeError
+from solver.forbidden import Removed, removed_by_constraints
+from solver.partition import Configuration, Key
 from solver.rules import RuleSet
-from solver.structure import Counts, Memo, StructureTooComplex, count, partition_structure
-from solver.team import Team, TypeSelection
+from solver.team import Team
 
-__all__ = ["ENGINES", "MAX_CONFIGURATIONS", "MAX_ROBOTS", "Solution", "TooLargeError",
-           "TypeSummary", "solve"]
-
-ENGINES = ("auto", "structure", "fast", "csp")
-# Enumerating more robots than this is refused unless the caller raises the limit.
-MAX_ROBOTS = 10**8
-# Listing more UI configurations than this is refused; counting them is not.
-MAX_CONFIGURATIONS = 10**6
-
-
-class TooLargeError(SolverError, ValueError):
-    """Enumerating or listing would take more than the configured limit allows."""
+__all__ = ["MAX_CONFIGURATIONS", "MAX_ROBOTS", "Solution", "TooLargeError", "TypeSummary",
+           "solve"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -45,8 +40,7 @@ class TypeSummary:
     valid_robots: int
     ui_configurations: int
     unserved_robots: int = 0
-    # How the counts were obtained: "structure" (no robots enumerated), "fast" (numpy
-    # enumeration) or "csp" (python-constraint enumeration); empty for totals.
+    # The engine that obtained the counts (see solver.engines.NAMES); empty for totals.
     method: str = ""
 
     @property
@@ -88,6 +82,39 @@ class Solution:
     def bound(self) -> int:
         return self.rules.bound
 
+    def __repr__(self) -> str:
+        totals = self.totals
+        return (f"<Solution {self.team.name!r}: {totals.valid_robots} valid robots, "
+                f"{totals.ui_configurations} UI configurations>")
+
+    def to_dict(self) -> dict[str, Any]:
+        """The JSON contract of ``teleop-ui solve --format json --list`` (docs/formats.md)."""
+        from solver.render import solution_data
+
+        return solution_data(self, configurations=self.listed)
+
+    def records(self, table: Literal["configurations", "types"] = "configurations"
+                ) -> list[dict[str, Any]]:
+        """One flat dict per configuration (or per kinematic type), for a table:
+        ``pandas.DataFrame(solution.records())``. Keys as in :meth:`to_dict`; a configuration's
+        components are one column per characteristic, named after it (``<name>_component``
+        where that name is taken: the team key ``kinematic_type`` names its component so)."""
+        data = self.to_dict()
+        if table == "types":
+            return [dict(row) for row in data["by_type"]]
+        taken = {"number", "kinematic_type", "valid_robots"}
+        columns = [f"{name}_component" if name in taken else name for name in self.rules.names]
+        return [{"number": c["number"], "kinematic_type": c["kinematic_type"],
+                 **{column: part["component"]
+                    for column, part in zip(columns, c["components"], strict=True)},
+                 "valid_robots": c["valid_robots"]}
+                for c in data.get("configurations", [])]
+
+    @cached_property
+    def removed(self) -> tuple[Removed, ...]:
+        """Selected values the rule set's constraints exclude (:mod:`solver.forbidden`)."""
+        return removed_by_constraints(self.team)
+
     @cached_property
     def _by_key(self) -> dict[Key, Configuration]:
         return {c.key: c for c in self.configurations}
@@ -115,25 +142,22 @@ def solve(team: Team, *, engine: str = "auto", count_only: bool = False,
           ) -> Solution:
     """Count, or enumerate and partition, the valid robots of ``team``.
 
-    ``engine``: ``structure`` counts from the structure without enumerating robots
-    (:mod:`solver.structure`); ``fast`` enumerates with numpy (:mod:`solver.stream`); ``csp``
-    enumerates with python-constraint, the reference (:mod:`solver.model`); ``auto`` (default)
-    uses the structure where it applies and fast enumeration elsewhere. Enumerating more than
-    ``max_robots`` robots, or listing more than ``max_configurations`` configurations, is
-    refused with a :class:`TooLargeError` that says how many there would be.
+    ``engine``: one of :data:`solver.engines.NAMES`; ``auto`` (default) uses the structure
+    where it applies and fast enumeration elsewhere (:func:`solver.engines.choose`). Enumerating
+    more than ``max_robots`` robots, or listing more than ``max_configurations`` configurations,
+    is refused with a :class:`TooLargeError` that says how many there would be.
     ``count_only`` computes the per-type counts without the configuration list.
     """
-    if engine not in ENGINES:
-        raise InputError.at("<arguments>", f"unknown engine {engine!r}; choose from "
-                                           f"{', '.join(ENGINES)}")
     rules = team.rules
     summaries = []
     configurations: list[Configuration] = []
     proven = True
     memo = Memo()
     for selection in team.selections:
-        method, counts = _plan(team, selection, engine, max_robots, memo)
-        if count_only and counts is not None:
+        method, counts = engines.choose(team, selection, engine, max_robots, memo)
+        if count_only:
+            if counts is None:
+                counts = engines.lookup(method).count(rules, selection, memo)
             summaries.append(TypeSummary(selection.kinematic_type, counts.valid_robots,
                                          counts.ui_configurations, counts.unserved_robots,
                                          method))
@@ -143,56 +167,16 @@ def solve(team: Team, *, engine: str = "auto", count_only: bool = False,
                                               f"{counts.ui_configurations} UI configurations "
                                               f"is refused (more than {max_configurations}); "
                                               "use --count-only for the counts")
-        part = _partition(rules, selection, method, memo)
+        part = engines.lookup(method).partition(rules, selection, memo)
         proven = proven and part.proven_minimal
         summaries.append(TypeSummary(selection.kinematic_type, part.valid_robots,
                                      len(part.classes), part.unserved_robots, method))
-        if count_only:
-            continue
         every = [c.components for c in rules.characteristics]
-        for key, robots_served, served in part.classes:
-            components = tuple([every[i][k] for i, k in enumerate(key)])
+        for found in part.classes:
+            components = tuple([every[i][k] for i, k in enumerate(found.key)])
             configurations.append(Configuration(len(configurations) + 1,
-                                                selection.kinematic_type, key, components,
-                                                robots_served, served))
+                                                selection.kinematic_type, found.key, components,
+                                                found.robots, found.served))
     return Solution(team, tuple(summaries), tuple(configurations), engine, proven,
                     listed=not count_only)
 
-
-def _plan(team: Team, selection: TypeSelection, engine: str, max_robots: int, memo: Memo
-          ) -> tuple[str, Counts | None]:
-    """Which method solves this kinematic type, and its counts when they come for free."""
-    counts = None
-    reason = ""
-    if engine in ("auto", "structure") or selection.size > max_robots:
-        try:
-            counts = count(team.rules, selection, memo)
-        except StructureTooComplex as error:
-            if engine == "structure":
-                raise TooLargeError.at(team.file, f"{selection.kinematic_type}: cannot count "
-                                                  f"by structure: {error}") from None
-            reason = f" ({error})"
-        else:
-            if engine in ("auto", "structure"):
-                return "structure", counts
-    robots = selection.size if counts is None else counts.valid_robots
-    if robots > max_robots:
-        exact = "" if counts is not None else "up to "
-        raise TooLargeError.at(team.file, f"{selection.kinematic_type}: enumerating {exact}"
-                                          f"{robots} robots is refused (more than "
-                                          f"{max_robots}, see --max-robots){reason}; use "
-                                          "--count-only for exact counts without enumeration")
-    return ("csp" if engine == "csp" else "fast"), counts
-
-
-def _partition(rules: RuleSet, selection: TypeSelection, method: str, memo: Memo
-               ) -> Partition:
-    if method == "structure":
-        return partition_structure(rules, selection, memo)
-    if method == "fast":
-        from solver.stream import partition_stream
-
-        return partition_stream(rules, selection)
-    from solver.model import robots
-
-    return partition(rules, selection.kinematic_type, robots(rules, selection.domains))

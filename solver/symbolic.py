@@ -12,12 +12,12 @@ characteristic (robots have ``low..n`` sensors):
   both counts are piecewise in ``n`` with one piece per run (linear robots, constant
   configurations), each piece's coefficients taken from the exact counter.
 
-sympy is for the formulas people read; the numbers come from :mod:`solver.structure` (plain
+sympy is for the formulas people read; the numbers come from :mod:`solver.engines.structure` (plain
 integers), and the formulas are checked against it at every ``n`` in the tests. sympy takes a
 while to import, so only this module imports it, and only ``teleop-ui count --symbolic`` imports
 this module.
 
-Not here: exact integer counting (:mod:`solver.structure`).
+Not here: exact integer counting (:mod:`solver.engines.structure`).
 """
 
 from __future__ import annotations
@@ -30,11 +30,11 @@ from typing import Any
 import sympy
 
 from solver import markdown
+from solver.engines.structure import count
 from solver.errors import InputError
-from solver.formats import dumps, text_table
+from solver.render import dumps, text_table
 from solver.rules import Characteristic, RuleSet
 from solver.solution import Solution
-from solver.structure import count
 from solver.team import Team, TypeSelection
 
 __all__ = [

@@ -15,7 +15,7 @@ from solver import load_team, solve
 from solver.batch import STAMPS, find_teams, plan, run_batch, summary_csv, write_summary
 from solver.cli import main
 from solver.errors import InputError
-from solver.formats import dumps, solution_data
+from solver.render import dumps, solution_data
 from tests.conftest import RULES, TEAMS, run_cli
 
 BAD = "team:\n  UAV:\n    motion_control: [Flite]\n"
@@ -112,7 +112,7 @@ def test_batch_reports_a_bad_team_file_with_its_error_and_solves_the_others(
         "teams/ours/harbour.yaml": "ok", "teams/ours/own.yaml": "skipped"}
     assert rows["teams/ours/bad.yaml"]["message"].startswith("teams/ours/bad.yaml:3:22: ")
     assert rows["teams/ours/own.yaml"]["message"] == \
-        "not a team file: it has 'characteristics:' and no 'team:' (a rule set?)"
+        "not a team file: a rule set (it has 'characteristics:' and no 'team:')"
     assert not (tmp_path / "out" / "teams" / "ours" / "bad.json").exists()
 
 

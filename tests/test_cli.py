@@ -112,7 +112,7 @@ def test_python_dash_m_solver_is_the_same_command_line() -> None:
     ("team:\n  Quadruped: {}\n", "t.yaml:2:3: team.Quadruped: unknown robot kinematic type"),
     ("team:\n  UAV: {sensor_count: -1}\n", "maximum must be at least 1, got -1"),
     ("rules: none.yaml\nteam:\n  UAV: {}\n", "t.yaml:1:8: rules: cannot use rules file"),
-    ("just words", "expected a team file (a mapping of fields) at the top level"),
+    ("just words", "not a team file: expected a mapping of fields at the top level"),
     ("team: !!python/object/apply:os.system [ls]\n", "unsupported YAML tag"),
 ])
 def test_bad_team_files_exit_2_with_a_located_message_and_no_traceback(

@@ -25,8 +25,8 @@ from solver.check.render import sarif_text
 from solver.cli import main
 from solver.cli._terminal import escape_controls
 from solver.errors import SolverError
-from solver.formats import csv_cell
 from solver.identify import identify_urdf
+from solver.render import csv_cell
 from tests.conftest import ROOT, RULES, TEAMS, run_cli
 
 TEAM = "name: {name}\nrules: {rules}\nteam:\n  UAV: {{motion_control: [Waypoint]}}\n"
@@ -117,12 +117,11 @@ def test_a_non_ascii_digit_is_no_sensor_count() -> None:
     sensor_count = load_rules(RULES / "paper.yaml").characteristic("sensor_count")
     assert sensor_count.parse_value("3") == 3
     assert sensor_count.parse_value("\u0663") is None  # Arabic-Indic three
-    # assign reports a value the rules do not allow and gives the default configuration.
+    # On the command line it is a usage mistake, located at the argument.
     result = run_cli("assign", "--team", "case3", "kinematic_type=UAV",
                      "motion_control=Waypoint", "sensor_count=\u0663")
-    assert result.returncode == 0, result.stderr
-    assert "invalid: sensor_count '\u0663' is not a whole number in 1..50" in result.stdout
-    assert "default UI configuration" in result.stdout
+    assert_located_refusal(result, "<arguments>: sensor_count: '\u0663' has non-ASCII digits; "
+                                   "write numbers as 0-9")
 
 
 def test_a_characteristic_without_a_name_is_a_located_error(tmp_path: Path) -> None:

@@ -5,7 +5,13 @@ from __future__ import annotations
 import csv
 import io
 import json
+from collections.abc import Callable
+from pathlib import Path
 
+import pytest
+
+from solver import load_team, solve
+from solver.listing import numbered_robots
 from tests.conftest import run_cli
 
 
@@ -53,3 +59,32 @@ def test_count_on_a_rule_set_counts_its_whole_design_space() -> None:
 def test_count_says_how_it_counted() -> None:
     lines = run_cli("count", "case1", "--engine", "csp").stdout.splitlines()
     assert lines[3].split() == ["UAV", "30", "6", "csp"]
+
+
+@pytest.mark.parametrize("components", [
+    # One component per value, with a gap (d in none): the lookup tables.
+    "[{name: X, values: [a, b]}, {name: Y, values: [c]}]",
+    # b in two components: the search over configurations.
+    "[{name: X, values: [a, b]}, {name: Y, values: [b, c]}]",
+])
+def test_each_listed_robot_has_the_configuration_the_solution_gives_it(
+        components: str, write_file: Callable[[str, str], Path]) -> None:
+    write_file("rules.yaml", f"""\
+characteristics:
+  kinematic_type: {{values: [T, U]}}
+  part:
+    values: [a, b, c, d]
+    components: {components}
+constraints:
+  - forbid: {{kinematic_type: U, part: a}}
+""")
+    solution = solve(load_team(write_file("team.yaml", "rules: rules.yaml\nteam:\n  T: {}\n"
+                                                       "  U: {}\n")))
+    listed = list(numbered_robots(solution))
+    assert len(listed) == 7
+    for number, robot in listed:
+        configuration = solution.configuration_for(robot)
+        assert number == (solution.default_configuration if configuration is None
+                          else configuration.number)
+    assert {number for number, robot in listed if robot[1] == "d"} == \
+        {solution.default_configuration}

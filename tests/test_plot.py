@@ -22,11 +22,15 @@ from solver import Solution, load_rules, load_team, solve
 from solver.errors import InputError
 from solver.plot import (
     INNER_RADIUS,
+    MAX_MATRIX_COLUMNS,
+    MAX_SPOKE_LABELS,
     MAX_SPOKE_VALUES,
     MIN_TICK_GAP,
     RadarAxis,
     bars_figure,
+    component_matrix,
     figure_bytes,
+    matrix_figure,
     radar_axes,
     radar_figure,
     runs,
@@ -45,7 +49,7 @@ characteristics:
     values: [Teleop, Waypoint, Gesture]
   count:
     label: Count
-    range: [1, 8]
+    range: {min: 1, max: 8}
 """
 THREE_TEAM = """\
 name: Gappy
@@ -168,10 +172,37 @@ def test_radar_shows_only_selected_values_on_a_spoke_with_too_many_to_label(
     assert "(selected values)" in _texts(figure, "axis sensor")[0].get_text()
 
 
+def _thousand_names(write_file: Callable[[str, str], Path]) -> Solution:
+    """One characteristic of 1,000 names, each its own component, all selected."""
+    names = ", ".join(f"w{i:04d}" for i in range(1000))
+    write_file("names.yaml", "characteristics:\n  kind:\n    values: [Rover]\n"
+                             f"  widget:\n    label: Widget\n    values: [{names}]\n")
+    return solve(load_team(write_file("t.yaml", "rules: names.yaml\nteam:\n  Rover: {}\n")))
+
+
+def test_radar_labels_every_kth_of_a_thousand_names_and_says_so(
+        write_file: Callable[[str, str], Path]) -> None:
+    figure = radar_figure(_thousand_names(write_file))
+    labels = [t.get_text() for t in _texts(figure, "tick widget")]
+    assert len(labels) == MAX_SPOKE_LABELS + 1  # every 25th name, and the last
+    assert labels[:2] == ["w0000", "w0025"]
+    assert labels[-1] == "w0999"
+    assert f"({len(labels)} of 1000 values labelled)" in _texts(figure, "axis widget")[0].get_text()
+
+
+def test_the_component_matrix_of_a_thousand_components_has_a_column_per_characteristic(
+        write_file: Callable[[str, str], Path]) -> None:
+    solution = _thousand_names(write_file)
+    _, columns, cells = component_matrix(solution)
+    assert MAX_MATRIX_COLUMNS < 1000
+    assert columns == [("Widget", "1000 components")]
+    assert cells == [[(1000, 1000)]]
+
+
 def _wide(write_file: Callable[[str, str], Path], high: int) -> Solution:
     """Two types on a count spoke of 1..``high`` with three arrangements."""
     write_file("wide.yaml", "characteristics:\n  kind:\n    values: [Rover, Drone]\n"
-                            f"  count:\n    label: Count\n    range: [1, {high}]\n"
+                            f"  count:\n    label: Count\n    range: {{min: 1, max: {high}}}\n"
                             "    components:\n      - {name: few, max: 7}\n"
                             f"      - {{name: some, min: 8, max: {high // 3}}}\n"
                             f"      - {{name: many, min: {high // 3 + 1}}}\n")
@@ -374,3 +405,31 @@ def test_solve_plot_with_an_unknown_extension_exits_2_without_traceback(tmp_path
     assert result.stdout == ""
     assert list(tmp_path.iterdir()) == []
 
+
+
+def test_the_component_matrix_accounts_for_every_robot_and_configuration_of_each_type(
+        case3: Solution) -> None:
+    rows, columns, cells = component_matrix(case3)
+    assert rows == ["UAV", "UGV", "Mobile Manipulator", "Humanoid"]
+    labels = sorted({label for label, _ in columns})
+    for summary, row in zip(case3.by_type, cells, strict=True):
+        for label in labels:
+            group = [cell for (name, _), cell in zip(columns, row, strict=True) if name == label]
+            # Each configuration uses exactly one component of each characteristic.
+            assert sum(used for used, _ in group) == summary.ui_configurations
+            assert sum(robots for _, robots in group) == summary.valid_robots
+
+
+def test_the_component_matrix_leaves_blank_what_a_type_never_needs(case3: Solution) -> None:
+    rows, columns, cells = component_matrix(case3)
+    uav = cells[rows.index("UAV")]
+    assert uav[columns.index(("Robot Motion Control", "Walking"))] == (0, 0)
+    assert uav[columns.index(("Robot Motion Control", "Flight"))] == (3, 15)
+
+
+def test_solve_can_plot_the_component_matrix(tmp_path: Path) -> None:
+    result = run_cli("solve", "case3", "--plot", tmp_path / "m.svg", "--plot-kind", "matrix")
+    assert result.returncode == 0
+    svg = (tmp_path / "m.svg").read_bytes()
+    assert svg.startswith(b"<?xml")
+    assert svg == figure_bytes(matrix_figure(solve(load_team("case3"))), "svg")

@@ -17,8 +17,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from solver import RuleSet, Team, robots, solve
+from solver.engines.fast import robots as robots_stream
 from solver.rules import parse_rules
-from solver.stream import robots_stream
 from solver.team import parse_team
 from solver.yamlio import parse_document
 
@@ -49,7 +49,7 @@ def rule_data(draw: st.DrawFn, with_constraints: bool = True, irregular: bool = 
             high = draw(st.integers(1, 12))
             cuts = sorted(draw(st.sets(st.integers(2, high), max_size=3))) if high > 1 else []
             bounds = [1, *cuts, high + 1]
-            characteristics[f"num{j}"] = {"range": [1, high], "components": [
+            characteristics[f"num{j}"] = {"range": {"min": 1, "max": high}, "components": [
                 {"name": f"a{j}{i}", "min": low, "max": nxt - 1,
                  "cluster_size": draw(st.integers(1, 3))}
                 for i, (low, nxt) in enumerate(itertools.pairwise(bounds))]}
@@ -74,8 +74,7 @@ def rule_data(draw: st.DrawFn, with_constraints: bool = True, irregular: bool = 
 def _domain(spec: dict[str, Any]) -> list[Any]:
     if "values" in spec:
         return list(spec["values"])
-    low, high = spec["range"]
-    return list(range(low, high + 1))
+    return list(range(spec["range"]["min"], spec["range"]["max"] + 1))
 
 
 @st.composite

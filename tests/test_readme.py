@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from solver.formats import render_comparisons
+from solver.render import render_comparisons
 from solver.reproduce import compare
 from tests.conftest import ROOT, run_cli
 

@@ -70,16 +70,18 @@ def test_html_report_fetches_nothing_from_the_network(case3_html: str) -> None:
     page = _page(case3_html)
     assert not {"script", "link", "iframe", "object", "embed"} & set(page.tags)
     assert page.references
-    assert all(value.startswith("data:") for _, _, value in page.references)
+    # Embedded images, and links to the page's own sections (the contents): nothing fetched.
+    assert all(value.startswith("data:") or (tag == "a" and value.startswith("#"))
+               for tag, _, value in page.references)
     policy = next(m["content"] for m in page.meta if m.get("http-equiv") ==
                   "Content-Security-Policy")
     assert policy is not None
     assert "default-src 'none'" in policy
 
 
-def test_html_report_embeds_both_charts_as_svg(case3_html: str) -> None:
+def test_html_report_embeds_the_matrix_radar_and_bar_charts_as_svg(case3_html: str) -> None:
     images = [value for tag, _, value in _page(case3_html).references if tag == "img"]
-    assert len(images) == 2
+    assert len(images) == 3
     assert all(i.startswith("data:image/svg+xml;base64,") for i in images)
 
 
@@ -329,3 +331,14 @@ def test_markdown_report_that_fails_midway_puts_back_the_files_it_replaced(
     assert [p.read_bytes() for p in (names["radar"], names["bars"], target)] == [b"before"] * 3
     assert sorted(p.name for p in tmp_path.iterdir()) == ["case3-bars.png", "case3-radar.png",
                                                           "case3.md"]
+
+
+def test_html_report_has_contents_and_folds_long_tables(case3_html: str) -> None:
+    contents = case3_html.split('<nav class="contents">', 1)[1].split("</nav>", 1)[0]
+    assert contents.count("<a href=") == 4  # no constraints section: the paper has none
+    for anchor in ("counts", "charts", "selections", "configurations"):
+        assert f'href="#{anchor}"' in contents
+        assert f'<h2 id="{anchor}">' in case3_html
+    # 103 configuration rows are folded; the 4 rows of selections are not.
+    assert case3_html.count("<details>") == 1
+    assert "<summary>show all 103 rows</summary>" in case3_html

@@ -149,7 +149,7 @@ def test_a_team_key_must_name_a_categorical_characteristic(write_file: WriteFile
     with pytest.raises(RulesError, match="team_key names no characteristic: 'kinematic'"):
         load_rules(write_file("r.yaml", "team_key: kinematic\n" + MINIMAL))
     with pytest.raises(RulesError, match="must be a categorical characteristic"):
-        load_rules(write_file("r.yaml", MINIMAL + "  count:\n    range: [1, 3]\n"
+        load_rules(write_file("r.yaml", MINIMAL + "  count:\n    range: {min: 1, max: 3}\n"
                               "team_key: count\n"))
 
 
@@ -165,7 +165,7 @@ def test_integer_arrangements_accept_exclusive_bounds(write_file: WriteFile) -> 
 characteristics:
   kinematic_type: {values: [UAV]}
   sensor_count:
-    range: [1, 10]
+    range: {min: 1, max: 10}
     components:
       - {name: few, above: 1, max: 5}
       - {name: many, min: 6, below: 11, cluster_size: 2}
@@ -188,7 +188,8 @@ def test_a_list_is_not_a_rule_set(write_file: WriteFile) -> None:
 
 def test_huge_integer_domains_are_refused(write_file: WriteFile) -> None:
     with pytest.raises(RulesError, match="at most 100000 are supported"):
-        load_rules(write_file("r.yaml", MINIMAL + "  count:\n    range: [1, 10000000000]\n"))
+        load_rules(write_file("r.yaml", MINIMAL + "  count:\n"
+                                            "    range: {min: 1, max: 10000000000}\n"))
 
 
 def test_a_value_listed_twice_in_a_constraint_is_an_error(write_file: WriteFile) -> None:
@@ -198,3 +199,13 @@ def test_a_value_listed_twice_in_a_constraint_is_an_error(write_file: WriteFile)
         load_rules(path)
     assert messages(caught.value) == [
         f"{path}:10:61: constraints[0].forbid.sensor_type[1]: 'Microphone' is listed twice"]
+
+
+def test_a_range_written_as_a_list_is_refused_because_a_list_is_a_set(
+        write_file: WriteFile) -> None:
+    with pytest.raises(RulesError) as caught:
+        load_rules(write_file("r.yaml", MINIMAL + "  sensor_count:\n    range: [1, 50]\n"))
+    assert [str(fault).split(": ", 1)[1] for fault in caught.value.faults] == [
+        "characteristics.sensor_count.range: range of 'sensor_count' is a list ([1, 50]), but "
+        "a list means a set of values (a team's `sensor_count: [2, 6]` is 2 and 6); write the "
+        "range as {min: 1, max: 50}"]

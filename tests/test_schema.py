@@ -43,7 +43,7 @@ def test_the_team_schema_rejects_what_the_loader_rejects(document: dict[str, Any
 
 
 @pytest.mark.parametrize("document", [
-    {"characteristics": {"kinematic_type": {"values": ["UAV"], "range": [1, 2]}}},
+    {"characteristics": {"kinematic_type": {"values": ["UAV"], "range": {"min": 1, "max": 2}}}},
     {"characteristics": {}},
     {"characteristics": {"k": {"values": ["UAV"]}}, "constraints": [
         {"require": {"k": "UAV"}, "forbid": {"k": "UAV"}}]},

@@ -11,7 +11,7 @@ import sympy
 from hypothesis import given, settings
 
 from solver import InputError, Team, load_team
-from solver.structure import count
+from solver.engines.structure import count
 from solver.symbolic import formulas, render_growth, symbol_name
 from tests.conftest import TEAMS, run_cli
 from tests.test_properties import problems
@@ -61,7 +61,7 @@ characteristics:
   kinematic_type: {values: [UAV]}
   sensor_type: {values: [camera, lidar]}
   sensor_count:
-    range: [1, 20]
+    range: {min: 1, max: 20}
     components:
       - {name: few, min: 1, max: 8}
       - {name: many, min: 9, max: 20, cluster_size: 4}
@@ -115,7 +115,7 @@ def test_count_symbolic_json_from_the_command_line() -> None:
 def test_types_whose_names_read_alike_get_distinct_symbols(write_file: WriteFile) -> None:
     write_file("rules.yaml", "characteristics:\n"
                "  kinematic_type: {values: [Mobile Manipulator, Mobile-Manipulator]}\n"
-               "  sensor_count: {range: [1, 9]}\n")
+               "  sensor_count: {range: {min: 1, max: 9}}\n")
     team = load_team(write_file("team.yaml", "rules: rules.yaml\nteam:\n"
                                 "  Mobile Manipulator: {sensor_count: 3}\n"
                                 "  Mobile-Manipulator: {sensor_count: 7}\n"))
@@ -130,7 +130,7 @@ def test_counts_from_zero_or_below_keep_every_piece(write_file: WriteFile) -> No
 characteristics:
   kinematic_type: {values: [UAV]}
   sensor_count:
-    range: [-3, 10]
+    range: {min: -3, max: 10}
     components:
       - {name: none or less, max: 0}
       - {name: some, min: 1, max: 10}
@@ -138,3 +138,22 @@ characteristics:
     team = load_team(write_file("team.yaml", "rules: rules.yaml\nteam:\n"
                                 "  UAV: {sensor_count: {min: -3, max: 4}}\n"))
     check_every_maximum(team)
+
+
+def test_a_constraint_too_large_for_the_structure_is_refused_with_status_2(write_file: WriteFile
+                                                                          ) -> None:
+    # a, b and c have 101 classes each (a component per value): linked by one 3-way rule they
+    # make over 10^6 class combinations, more than the structure counts; n is what grows.
+    lines = ["characteristics:", "  kinematic_type: {values: [T]}"]
+    for name in "abc":
+        values = ", ".join(f"{name}{i}" for i in range(1, 102))
+        lines += [f"  {name}:", f"    values: [{values}]", "    components:"]
+        lines += [f"      - {{name: {name}{i}, values: [{name}{i}]}}" for i in range(1, 102)]
+    lines += ["  n: {range: {min: 1, max: 5}}"]
+    lines += ["constraints:", "  - forbid: {a: a1, b: b1, c: c1}"]
+    write_file("rules.yaml", "\n".join(lines) + "\n")
+    team = write_file("team.yaml", "rules: rules.yaml\nteam:\n  T: {}\n")
+    result = run_cli("count", team, "--symbolic")
+    assert result.returncode == 2
+    assert "Traceback" not in result.stderr
+    assert "constraints link a, b, c into 1030301 class combinations" in result.stderr

@@ -1,18 +1,38 @@
 #!/usr/bin/env bash
-# Install everything the test suite needs on a fresh Debian machine, then run all of it:
+# Install everything the test suite needs on a fresh Debian/Ubuntu machine, then run all of it:
 # lint, types, tests, and every benchmark once (timing disabled, counts still asserted).
+# Python packages go into a project venv (.venv, or $VENV): Debian 12 and Ubuntu 24.04 refuse
+# `pip install` into the system interpreter (PEP 668, externally-managed-environment), and a
+# venv leaves the system's Python, and ROS's, untouched.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+venv="${VENV:-.venv}"
 
 sudo=""
 [ "$(id -u)" -eq 0 ] || sudo="sudo"
+apt_updated=""
+apt_install() {
+  [ -n "$apt_updated" ] || { $sudo apt-get update -q; apt_updated=1; }
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "$@"
+}
+
 # ros-core: a real ROS 1 master (roscore) for the tests of `teleop-ui watch`.
 if ! command -v roscore >/dev/null 2>&1; then
-  $sudo apt-get update -q
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends ros-core
+  apt_install ros-core
 fi
 
-python3 -m pip install -q -e '.[test,xacro]'
-python3 -m ruff check solver tests benchmarks tools
-python3 -m mypy
-python3 -m pytest tests benchmarks --benchmark-disable "$@"
+# Debian splits venv's pip bootstrap (ensurepip) into the python3-venv package.
+if [ ! -x "$venv/bin/python" ]; then
+  if ! python3 -m venv "$venv" >/dev/null 2>&1; then
+    rm -rf "$venv"
+    apt_install python3-venv
+    python3 -m venv "$venv"
+  fi
+fi
+python="$venv/bin/python"
+
+# `all`: every optional feature, so every test runs (see the extras in pyproject.toml).
+"$python" -m pip install -q -e '.[test,all]'
+"$python" -m ruff check solver tests benchmarks tools
+"$python" -m mypy
+"$python" -m pytest tests benchmarks --benchmark-disable "$@"

@@ -59,6 +59,14 @@ class Analysis:
             None if any(box[key] is None for box in boxes)
             else frozenset().union(*(box[key] or () for box in boxes))
             for boxes in self.boxes)
+        # The same, inverted: the constraints about each type, and those about any type, so
+        # that a question about one type looks at its few constraints, not at all of them.
+        self._untyped = frozenset(i for i, types in enumerate(self._types) if types is None)
+        by_type: dict[Value, set[int]] = {}
+        for i, types in enumerate(self._types):
+            for value in types or ():
+                by_type.setdefault(value, set()).add(i)
+        self._by_type = {value: frozenset(indices) for value, indices in by_type.items()}
         positions = {name: i for i, name in enumerate(rules.names)}
         # For each constraint: per characteristic position, the value sets its conditions test.
         self._tested: tuple[dict[int, tuple[frozenset[Value], ...]], ...] = tuple(
@@ -89,18 +97,33 @@ class Analysis:
         """The constraints (of ``among``, default all) that exclude some robot over ``domains``."""
         sets = [frozenset(domain) for domain in domains]
         types = sets[self.rules.key_position]
-        indices = range(len(self.boxes)) if among is None else among
-        return tuple(i for i in indices
-                     if _may_meet(self._types[i], types) and touches(self.boxes[i], sets))
+        if len(types) == len(self.rules.key.values):  # every type: no pre-filter
+            indices: Iterable[int] = range(len(self.boxes)) if among is None else among
+        else:
+            candidates = self._untyped.union(*(self._by_type.get(t, ()) for t in types))
+            indices = (sorted(candidates) if among is None
+                       else [i for i in among if i in candidates])
+        return tuple(i for i in indices if touches(self.boxes[i], sets))
 
     def classes(self, domains: Domains, constraints: Sequence[int]) -> Classes:
         """Each domain split into values that ``constraints`` cannot tell apart."""
         result = []
         for position, domain in enumerate(domains):
-            tested = [s for i in constraints for s in self._tested[i].get(position, ())]
-            groups: dict[tuple[bool, ...], list[Value]] = {}
+            members = frozenset(domain)
+            # Each value's signature lists the tested sets holding it. Walking only each set's
+            # values in the domain (set intersection walks the smaller side) costs the size of
+            # the rules, not domain x conditions; a set holding all or none splits nothing.
+            signature: dict[Value, list[int]] = {}
+            distinct = dict.fromkeys(s for i in constraints
+                                     for s in self._tested[i].get(position, ()))
+            for k, tested in enumerate(distinct):
+                hits = tested & members
+                if 0 < len(hits) < len(members):
+                    for value in hits:
+                        signature.setdefault(value, []).append(k)
+            groups: dict[tuple[int, ...], list[Value]] = {}
             for value in domain:
-                groups.setdefault(tuple(value in s for s in tested), []).append(value)
+                groups.setdefault(tuple(signature.get(value, ())), []).append(value)
             result.append(tuple(tuple(group) for group in groups.values()))
         return tuple(result)
 
@@ -207,7 +230,8 @@ class Analysis:
             return ()
         if not entails(others):
             return None
-        kept = [i for i in others if any(self.relevant(box, (i,)) for box in boxes)]
+        touched = set().union(*(self.relevant(box, others) for box in boxes))
+        kept = [i for i in others if i in touched]
         for other in list(kept):
             trial = [i for i in kept if i != other]
             if entails(trial):
@@ -255,10 +279,6 @@ class Analysis:
     def type_conflicts(self) -> dict[Value, tuple[int, ...]]:
         """For each void kinematic type, a minimal set of constraints that voids it."""
         return {kt: self.minimal_conflict(self.type_domains(kt)) for kt in self.void_types}
-
-
-def _may_meet(types: frozenset[Value] | None, domain: frozenset[Value]) -> bool:
-    return types is None or not types.isdisjoint(domain)
 
 
 def _tested_sets(rule: RuleConstraint,

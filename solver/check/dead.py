@@ -126,8 +126,8 @@ def _reasons(context: RulesContext, domains: Domains, position: int, dead: Seque
     analysis = context.analysis
     chosen = set(dead)
     groups: dict[tuple[int, ...], list[Value]] = {}
-    every = range(len(context.rules.constraints))
-    for values in analysis.classes(domains, every)[position]:
+    # Constraints that exclude nothing over ``domains`` cannot tell values apart there.
+    for values in analysis.classes(domains, analysis.relevant(domains))[position]:
         members = [v for v in values if v in chosen]
         if members:
             conflict = analysis.minimal_conflict(analysis.narrowed(domains, position, members))

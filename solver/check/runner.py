@@ -1,7 +1,8 @@
 """Checking files: read each one, run the checks that apply, collect sorted findings.
 
-Files are told apart by content: a mapping with a ``team`` or ``rules`` key is a team file,
-anything else is read as a rule set. Team files are checked against
+Files are told apart by content, as every command tells them (:func:`solver.filekind.file_kind`):
+team files, rule sets, and identification profiles (not checked, said with ``not-checked``);
+a file of no recognisable kind is read as a rule set. Team files are checked against
 
 1. the rule set given with ``rules=`` (``--rules``), which is checked too; else
 2. the one rule set among the files, when there is exactly one (``teleop-ui check
@@ -31,6 +32,7 @@ from solver.check.finding import LEVELS, Finding, Level
 from solver.check.load import LoadContext
 from solver.check.registry import LOAD_CHECKS, RULE_CHECKS, TEAM_CHECKS, check_ids
 from solver.errors import Fault, InputError, Location, RulesError, TeamError
+from solver.filekind import file_kind
 from solver.rules import RuleSet, default_rules_path, parse_rules
 from solver.team import parse_team
 from solver.yamlio import Document, load_document
@@ -63,9 +65,8 @@ class Report:
 
 
 def is_team_document(document: Document) -> bool:
-    """Whether a loaded file is a team selection (it has ``team:`` or ``rules:``)."""
-    data = document.data
-    return isinstance(data, dict) and any(str(key) in ("team", "rules") for key in data)
+    """Whether a loaded file is a team selection (:func:`solver.filekind.file_kind`)."""
+    return file_kind(document) == "team"
 
 
 @dataclass
@@ -191,11 +192,18 @@ def check_files(paths: Sequence[str | Path], *, rules: str | Path | None = None,
             documents.append((Path(name), document))
     if rules is not None:
         given = next((d for p, d in documents if str(p) == str(rules)), None)
-        if given is not None and is_team_document(given):
-            run.unusable.append(Fault(Location(str(rules)), "is a team file; --rules needs a "
+        if given is not None and file_kind(given) in ("team", "profile"):
+            what = "a team file" if file_kind(given) == "team" else "an identification profile"
+            run.unusable.append(Fault(Location(str(rules)), f"is {what}; --rules needs a "
                                                             "rule set", "invalid"))
-    rule_docs = [(p, d) for p, d in documents if not is_team_document(d)]
-    team_docs = [(p, d) for p, d in documents if is_team_document(d)]
+    kinds = [file_kind(d) for _, d in documents]
+    for (_, document), kind in zip(documents, kinds, strict=True):
+        if kind == "profile":  # a folder such as rules/ holds one; it is no rule set
+            run.report_faults((), ((document.location(), "not checked: an identification "
+                                    "profile (check reads rule sets and teams)"),))
+    rule_docs = [(p, d) for (p, d), kind in zip(documents, kinds, strict=True)
+                 if kind in ("rules", None)]
+    team_docs = [(p, d) for (p, d), kind in zip(documents, kinds, strict=True) if kind == "team"]
     loaded = {p: run.rules_file(p, d.file, d) for p, d in rule_docs}
     against: RuleSet | None = None
     against_name: str | None = None

@@ -16,6 +16,7 @@ import sys
 from collections.abc import Sequence
 from pathlib import Path
 
+from solver.cli._terminal import EscapingStream
 from solver.errors import SolverError
 
 __all__ = ["main"]
@@ -43,6 +44,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; returns the exit status (0 ok, 1 findings, 2 unusable input)."""
     parser = build_parser()
     args = parser.parse_args(argv)
+    # Names and messages come from files strangers wrote: no raw escape sequence reaches the
+    # terminal (see solver/cli/_terminal.py).
+    stdout, stderr = sys.stdout, sys.stderr
+    # An EscapingStream is a TextIO in all but name (it delegates everything but write).
+    sys.stdout = EscapingStream(stdout)
+    sys.stderr = EscapingStream(stderr)
     try:
         status: int = args.run(args)
     except SolverError as error:
@@ -53,8 +60,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 130
     except BrokenPipeError:
         # The reader went away (| head); nothing more to say.
-        sys.stderr.close()
+        stderr.close()
         return 0
+    finally:
+        sys.stdout, sys.stderr = stdout, stderr
     return status
 
 

@@ -7,10 +7,12 @@ import sys
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
+    from pathlib import Path
+
     from solver.team import Team
 
 __all__ = ["add_engine", "add_format", "add_master_options", "add_profile", "add_rules",
-           "load_team_argument", "positive", "seconds", "write"]
+           "load_team_argument", "positive", "seconds", "team_path", "write"]
 
 
 def add_format(parser: argparse.ArgumentParser, choices: tuple[str, ...],
@@ -21,20 +23,21 @@ def add_format(parser: argparse.ArgumentParser, choices: tuple[str, ...],
 
 def add_engine(parser: argparse.ArgumentParser, *, enumerate_only: bool = False) -> None:
     """--engine and --max-robots, for commands that count or enumerate robots."""
+    from solver.engines import DESCRIPTIONS, ENUMERATING, MAX_ROBOTS, NAMES
+
     if enumerate_only:
-        parser.add_argument("--engine", "-e", choices=("fast", "csp"), default="fast",
-                            help="fast (default): numpy enumeration; csp: python-constraint "
-                                 "enumeration (the reference)")
+        parser.add_argument("--engine", "-e", choices=ENUMERATING, default=ENUMERATING[0],
+                            help="; ".join(f"{name}: {DESCRIPTIONS[name]}"
+                                           for name in ENUMERATING)
+                                 + f" (default: {ENUMERATING[0]})")
     else:
-        parser.add_argument("--engine", "-e", choices=("auto", "structure", "fast", "csp"),
-                            default="auto",
-                            help="structure: count without enumerating; fast: numpy "
-                                 "enumeration; csp: python-constraint enumeration (the "
-                                 "reference); auto (default): structure where it applies, "
-                                 "else fast")
-    parser.add_argument("--max-robots", type=positive, default=10**8, metavar="N",
-                        help="refuse to enumerate more robots than this "
-                             "(default: 100000000)")
+        parser.add_argument("--engine", "-e", choices=NAMES, default=NAMES[0],
+                            help="; ".join(f"{name}: {DESCRIPTIONS[name]}"
+                                           for name in NAMES[1:])
+                                 + f"; {NAMES[0]} (default): the structure where it applies, "
+                                   "else fast enumeration")
+    parser.add_argument("--max-robots", type=positive, default=MAX_ROBOTS, metavar="N",
+                        help=f"refuse to enumerate more robots than this (default: {MAX_ROBOTS})")
 
 
 def positive(text: str) -> int:
@@ -82,12 +85,28 @@ def add_rules(parser: argparse.ArgumentParser,
     parser.add_argument("--rules", "-r", metavar="RULES.yaml", help=help)
 
 
+def team_path(text: str) -> Path:
+    """The file of a team argument: as given, or a shipped team's (``case3``); a bare word that
+    is neither raises an :class:`InputError` listing the shipped teams."""
+    from solver.errors import InputError
+    from solver.rules import shipped_path
+    from solver.team import resolve_team_path
+
+    path = resolve_team_path(text)
+    if not path.exists() and not path.suffix and path.name == text:
+        # A bare word is a shipped team's name or a typo of one: say which names exist.
+        names = sorted(team.stem for team in shipped_path("teams").glob("*.yaml"))
+        raise InputError.at(text, "no such file, and no shipped team of that name; shipped "
+                                  f"teams: {', '.join(names)}")
+    return path
+
+
 def load_team_argument(text: str, rules: str | None) -> Team:
     """A team given on the command line: a file, or the name of a shipped team (``case3``)."""
     from solver.rules import shipped_name
-    from solver.team import load_team, resolve_team_path
+    from solver.team import load_team
 
-    path = resolve_team_path(text)
+    path = team_path(text)
     shown = text if str(path) == text else (shipped_name(path) or str(path))
     return load_team(path, rules, display=shown)
 

@@ -51,7 +51,7 @@ def register(subparsers: Any) -> None:
 def run(args: argparse.Namespace) -> int:
     from solver.assignment import assign, parse_combination
     from solver.errors import InputError
-    from solver.formats import render_assignment
+    from solver.render import render_assignment
     from solver.solution import solve
 
     combination = parse_combination(args.combination)

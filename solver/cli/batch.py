@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import re
 import sys
 from collections.abc import Iterator
 from typing import IO, TYPE_CHECKING, Any
@@ -59,7 +60,7 @@ def run(args: argparse.Namespace) -> int:
 
     from solver.batch import find_teams, plan, run_batch, write_summary
     from solver.errors import InputError
-    from solver.formats import text_table
+    from solver.render import text_table
 
     out = Path(args.output)
     if out.exists() and not out.is_dir():
@@ -89,7 +90,10 @@ def _describe(outcome: Outcome) -> str:
     if outcome.action in ("solved", "up to date"):
         text = f"{row.file}: {row.valid_robots} valid robots, {row.ui_configurations} UI " \
                f"configurations"
-        return text + (f" ({outcome.seconds:.2f} s)" if outcome.action == "solved" else "")
+        text += f" ({outcome.seconds:.2f} s)" if outcome.action == "solved" else ""
+        # A solved team's warnings (the summary's message column): one line each.
+        warnings = re.split(r"; (?=warning: )", row.message) if row.message else []
+        return "\n".join([text, *(f"    {warning}" for warning in warnings)])
     if outcome.action == "skipped":
         return f"{row.file}: {row.message}"
     return row.file + "\n" + "\n".join(f"    {line}" for line in row.message.splitlines())
@@ -113,7 +117,11 @@ def _progress_bar(outcomes: Iterator[Outcome], total: int, stream: IO[str]
     from rich.markup import escape
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
-    console = Console(file=stream)
+    from solver.cli._terminal import escape_controls, raw_stream
+
+    # The bar's own escape sequences go to the terminal as they are; every name and message
+    # in it is escaped first (they come from team files).
+    console = Console(file=raw_stream(stream))
     colours: dict[str, str] = {"solved": "green", "up to date": "cyan", "failed": "bold red",
                                "skipped": "yellow"}
     with Progress(TextColumn("[bold]solving teams"), BarColumn(), MofNCompleteColumn(),
@@ -124,8 +132,10 @@ def _progress_bar(outcomes: Iterator[Outcome], total: int, stream: IO[str]
             if outcome.action in ("failed", "skipped"):
                 label = "FAILED" if outcome.failed else outcome.action
                 progress.console.print(f"[{colours[outcome.action]}]{label}[/] "
-                                       f"{escape(_describe(outcome))}", highlight=False,
+                                       f"{escape(escape_controls(_describe(outcome)))}",
+                                       highlight=False,
                                        soft_wrap=True)
-            progress.update(task, advance=1, description=escape(outcome.job.shown))
+            progress.update(task, advance=1,
+                            description=escape(escape_controls(outcome.job.shown)))
             yield outcome
 

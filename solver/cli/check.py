@@ -56,6 +56,9 @@ def run(args: argparse.Namespace) -> int:
         message = f"unknown check id(s): {', '.join(unknown)} (see --list-checks)" if unknown \
             else "give at least one rule set or team file"
         args.parser.error(message)
-    report = check_files(args.files, rules=args.rules, disable=disabled)
+    from solver.cli._progress import working
+
+    with working(f"checking {len(args.files)} file(s)", fmt=args.format):
+        report = check_files(args.files, rules=args.rules, disable=disabled)
     write(render(report, args.format))
     return report.exit_status(strict=args.strict)

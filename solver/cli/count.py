@@ -5,7 +5,14 @@ from __future__ import annotations
 import argparse
 from typing import TYPE_CHECKING, Any
 
-from solver.cli._common import add_engine, add_format, add_rules, load_team_argument, write
+from solver.cli._common import (
+    add_engine,
+    add_format,
+    add_rules,
+    load_team_argument,
+    team_path,
+    write,
+)
 
 if TYPE_CHECKING:
     from solver.team import Team
@@ -30,13 +37,14 @@ def register(subparsers: Any) -> None:
 def load(text: str, rules: str | None) -> Team:
     """A team file, or a rule set file standing for its whole design space."""
     from solver.errors import InputError
+    from solver.filekind import file_kind
     from solver.rules import parse_rules
-    from solver.team import full_team, resolve_team_path
+    from solver.team import full_team
     from solver.yamlio import load_document
 
-    path = resolve_team_path(text)
+    path = team_path(text)
     document = load_document(path, display=text)
-    if isinstance(document.data, dict) and "characteristics" in document.data:
+    if file_kind(document) == "rules":
         if rules is not None:
             raise InputError.at(text, "is a rule set: --rules applies to team files only")
         return full_team(parse_rules(document))
@@ -44,11 +52,14 @@ def load(text: str, rules: str | None) -> Team:
 
 
 def run(args: argparse.Namespace) -> int:
-    from solver.formats import render_counts
+    from solver.cli._progress import working
+    from solver.render import render_counts
     from solver.solution import solve
 
     team = load(args.file, args.rules)
-    solution = solve(team, engine=args.engine, count_only=True, max_robots=args.max_robots)
+    with working(f"counting {team.name}", fmt=args.format):
+        solution = solve(team, engine=args.engine, count_only=True,
+                         max_robots=args.max_robots)
     if not args.symbolic:
         write(render_counts(solution, args.format))
         return 0

@@ -38,9 +38,9 @@ def run(args: argparse.Namespace) -> int:
     from pathlib import Path
 
     from solver.atomic import write_atomic
-    from solver.formats import dumps, text_table
     from solver.identify.fleet import identify_fleet, rules_reference, team_text
     from solver.identify.render import identification_data
+    from solver.render import dumps, text_table
     from solver.rules import default_rules_path
 
     rules, profile = load_rules_and_profile(args.rules, args.profile)

@@ -90,10 +90,10 @@ def load_rules_and_profile(rules: str | None, profile: str | None) -> tuple[Rule
 
 
 def run(args: argparse.Namespace) -> int:
-    from solver.formats import dumps
     from solver.identify.combinations import combinations
     from solver.identify.identification import identify
     from solver.identify.render import identification_data, render_identification
+    from solver.render import dumps
     from solver.solution import solve
 
     team = load_team_argument(args.team, args.rules) if args.team else None

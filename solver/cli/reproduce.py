@@ -20,7 +20,7 @@ def register(subparsers: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from solver.formats import render_comparisons
+    from solver.render import render_comparisons
     from solver.reproduce import compare
 
     write(render_comparisons(compare(args.teams or None), args.format))

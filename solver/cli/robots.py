@@ -27,13 +27,17 @@ def register(subparsers: Any) -> None:
 def run(args: argparse.Namespace) -> int:
     import sys
 
+    from solver.cli._progress import working
     from solver.listing import write_robots
     from solver.solution import solve
 
     team = load_team_argument(args.team, args.rules)
-    # Numbering needs the partition, which the structure gives without enumerating; the
-    # listing then enumerates with the engine asked for.
-    solution = solve(team, max_robots=args.max_robots)
-    write_robots(solution, sys.stdout, fmt=args.format, engine=args.engine,
-                 max_robots=args.max_robots)
+    # A spinner only while the robots go to a file: on the terminal they are the progress.
+    fmt = "json" if sys.stdout.isatty() else args.format
+    with working(f"listing the robots of {team.name}", fmt=fmt):
+        # Numbering needs the partition, which the structure gives without enumerating; the
+        # listing then enumerates with the engine asked for.
+        solution = solve(team, max_robots=args.max_robots)
+        write_robots(solution, sys.stdout, fmt=args.format, engine=args.engine,
+                     max_robots=args.max_robots)
     return 0

@@ -27,23 +27,32 @@ def register(subparsers: Any) -> None:
     parser.add_argument("--plot", metavar="FILE",
                         help="also draw the team's radar chart (the article's Figure 9) to FILE; "
                              "the format follows the extension: .png, .svg or .pdf")
+    parser.add_argument("--plot-kind", choices=("radar", "bars", "matrix"), default="radar",
+                        help="what --plot draws: the radar chart (default), valid robots "
+                             "beside configurations per type, or the component matrix "
+                             "(which components each type needs, at a glance)")
     parser.set_defaults(run=run)
 
 
 def run(args: argparse.Namespace) -> int:
-    from solver.formats import render_solution
+    from solver.render import render_solution
     from solver.solution import solve
 
     if args.plot:
         from solver.plot import plot_format
 
         plot_format(args.plot)  # an unusable file name fails before any solving
+    from solver.cli._progress import working
+
     team = load_team_argument(args.team, args.rules)
-    solution = solve(team, engine=args.engine, count_only=args.count_only,
-                     max_robots=args.max_robots)
+    with working(f"solving {team.name}", fmt=args.format):
+        solution = solve(team, engine=args.engine, count_only=args.count_only,
+                         max_robots=args.max_robots)
+        # The warnings (constraints' exclusions) are computed once, here, under the spinner.
+        _ = solution.removed
     if args.plot:
         from solver.plot import write_plot
 
-        write_plot(solution, args.plot)
+        write_plot(solution, args.plot, args.plot_kind)
     write(render_solution(solution, args.format, configurations=args.list and solution.listed))
     return 0

@@ -352,7 +352,9 @@ def _roles(reader: Reader) -> tuple[tuple[str, str], ...]:
 
 
 def _pattern(reader: Reader, path: YPath, *, required: bool = True) -> Pattern | None:
-    text = reader.string(path, "pattern", required=required)
+    # A pattern is no name: the 200-character name limit does not apply (the YAML reader's
+    # 10,000-character bound on any value does).
+    text = reader.string(path, "pattern", required=required, limit=None)
     if not text:
         return None
     try:

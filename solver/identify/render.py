@@ -19,9 +19,9 @@ from collections.abc import Sequence
 from typing import Any
 
 from solver.errors import Fault
-from solver.formats import assignment_data, text_table
 from solver.identify.combinations import Combination
 from solver.identify.identification import Identification
+from solver.render import assignment_data, text_table
 from solver.solution import Solution
 
 __all__ = ["identification_data", "render_identification"]

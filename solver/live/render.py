@@ -16,7 +16,6 @@ import json
 from typing import Any
 
 from solver.assignment import Assignment
-from solver.formats import assignment_data, dumps, render_assignment
 from solver.live.events import (
     Event,
     MasterBack,
@@ -30,6 +29,7 @@ from solver.live.events import (
 )
 from solver.live.query import LiveAssignment
 from solver.live.robot import LiveRobot
+from solver.render import assignment_data, dumps, render_assignment
 from solver.solution import Solution
 
 __all__ = ["json_line", "render_event", "render_live_assignment", "text_lines"]

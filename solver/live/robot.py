@@ -12,7 +12,7 @@ own parameter (``/uav1/robot_description:3:5: ...``).
 A description that cannot be identified (not text, malformed XML, a broken tree, larger than
 the reader's cap, or anything the readers did not expect to raise) gives a :class:`LiveRobot`
 with the error and no combinations: the robot is still reported, and the others are not
-affected. This is the per-robot boundary of issue 18: nothing one robot publishes may end a
+affected. This is the per-robot boundary: nothing one robot publishes may end a
 watcher serving the others.
 
 Not here: finding the robots (:mod:`solver.live.discovery`), events (:mod:`solver.live.events`).
@@ -95,7 +95,7 @@ def identify_robot(source: RobotSource, description: Any, semantic: Any = MISSIN
     except SolverError as error:
         return LiveRobot(namespace, None, (),
                          _relocated(error, source.description_key, source.semantic_key))
-    except Exception as error:  # the per-robot boundary (issue 18)
+    except Exception as error:  # the per-robot boundary
         # A robot_description is whatever a robot on the network publishes: one that gets
         # past the readers' own checks (an overflow, a recursion, a reader bug) must still
         # not stop the watcher. The robot is reported with what went wrong, the others go on.

@@ -28,11 +28,11 @@ from dataclasses import dataclass
 from typing import Any
 
 from solver.assignment import Assignment, assign, check_names
-from solver.formats import assignment_data
 from solver.identify.profile import Profile
 from solver.live.discovery import normalise_namespace
 from solver.live.master import MISSING
 from solver.live.robot import LiveRobot
+from solver.render import assignment_data
 from solver.solution import Solution
 
 __all__ = ["NAMESPACE", "REQUEST_PARAMS", "RESULT_PARAM", "WRITER_KEY", "ActiveSelection",

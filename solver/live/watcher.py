@@ -365,7 +365,7 @@ class Watcher:
             robot = identify_robot(source, description, semantic, cache=self.cache,
                                    solution=self.solution, profile=self.profile)
             return robot, robot_data(robot)
-        except Exception as error:  # the per-robot boundary (issue 18)
+        except Exception as error:  # the per-robot boundary
             # identify_robot already turns input errors into the robot's; this is the last
             # line: a robot on the network must never end the watcher serving the others.
             robot = LiveRobot(source.namespace, None, (),

@@ -67,7 +67,7 @@ def rule_sets(draw: st.DrawFn, max_constraints: int = 5) -> RuleSet:
         else:
             high = draw(st.integers(1, 6))
             domains[f"num{j}"] = list(range(1, high + 1))
-            characteristics[f"num{j}"] = {"range": [1, high]}
+            characteristics[f"num{j}"] = {"range": {"min": 1, "max": high}}
     names = sorted(domains)
     constraints = []
     for index in range(draw(st.integers(0, max_constraints))):

@@ -87,7 +87,7 @@ characteristics:
   kind: {values: [Rover, Drone]}
   control: {values: [Drive, Fly, Point]}
   sensor: {values: [Camera, Lidar]}
-  count: {range: [1, 10]}
+  count: {range: {min: 1, max: 10}}
 constraints:
   - {name: pointing needs a camera, when: {control: Point}, require: {sensor: Camera}}
   - {name: no camera on drones, forbid: {kind: Drone, sensor: Camera}}

@@ -71,7 +71,7 @@ def _overlapping_components(draw: st.DrawFn) -> Characteristic:
             if draw(st.integers(0, 4)) == 0:
                 del bounds[draw(st.sampled_from(["min", "max"]))]  # an open end
             components.append({"name": f"a{index}", **bounds})
-        spec: dict[str, Any] = {"range": [1, high], "components": components}
+        spec: dict[str, Any] = {"range": {"min": 1, "max": high}, "components": components}
     else:
         values = [f"v{i}" for i in range(draw(st.integers(2, 8)))]
         spec = {"values": values, "components": [
@@ -95,7 +95,8 @@ def test_check_reports_every_triple_of_a_thousand_sliding_arrangements(tmp_path:
                         for k in range(1000))
     rules = tmp_path / "slide.yaml"
     rules.write_text("name: slide\ncharacteristics:\n  kind: {values: [A, B]}\n  n:\n"
-                     f"    range: [1, 10010]\n    components:\n{windows}\n", encoding="utf-8")
+                     f"    range: {{min: 1, max: 10010}}\n    components:\n{windows}\n",
+                     encoding="utf-8")
     found = [f for f in check_files([rules]).findings if f.check == "non-transitive"]
     assert len(found) == 999
     assert found[0].message == (

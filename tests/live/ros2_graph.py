@@ -103,14 +103,20 @@ class Operator:
 
         self.String = struct("std_msgs::msg::dds_::String_")
         self.participant = DomainParticipant(domain)
-        self.writer: Any = DataWriter(self.participant, Topic(
-            self.participant, "rt/teleop_ui/active_robot", self.String), qos=LATCHED)
+        self.writers: dict[str, Any] = {name: DataWriter(self.participant, Topic(
+            self.participant, f"rt/teleop_ui/{name}", self.String), qos=LATCHED)
+            for name in ("active_robot", "active_motion_control")}
+        self.writer = self.writers["active_robot"]
         self.reader: Any = DataReader(self.participant, Topic(
             self.participant, "rt/teleop_ui/ui_configuration", self.String), qos=LATCHED)
         self.answers: list[Any] = []
 
     def activate(self, robot: str) -> None:
         self.writer.write(self.String(robot))
+
+    def control(self, motion_control: str) -> None:
+        """Select the motion control to answer for (an empty string clears it)."""
+        self.writers["active_motion_control"].write(self.String(motion_control))
 
     def answer(self) -> Any:
         """The newest answer read so far (``None`` before any)."""
@@ -119,5 +125,5 @@ class Operator:
         return self.answers[-1] if self.answers else None
 
     def close(self) -> None:
-        for entity in (self.reader, self.writer, self.participant):
+        for entity in (self.reader, *self.writers.values(), self.participant):
             entity.__del__()

@@ -166,6 +166,30 @@ def test_switching_the_active_robot_publishes_its_configuration(
         operator.close()
 
 
+def test_the_active_motion_control_topic_selects_as_the_ros1_parameter_does(
+        domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution) -> None:
+    domain.rover("/ugv1")
+    watch = watch_ros2()
+    watch.wait_for(configured("/ugv1", rover_configuration(solution)), "/ugv1")
+    operator = Operator(domain.id)
+    try:
+        operator.control("Flight")  # a UGV never flies: the default configuration, and why
+        operator.activate("/ugv1")
+        refused = watch.wait_for(lambda d: d["event"] == "selection_changed"
+                                 and d["motion_control"] == "Flight", "Flight for /ugv1")
+        assert refused["assignment"]["default"] is True
+        operator.control("Driving")
+        driving = watch.wait_for(lambda d: d["event"] == "selection_changed"
+                                 and d["motion_control"] == "Driving", "Driving for /ugv1")
+        assert driving["assignment"]["configuration"] == rover_configuration(solution)
+        answer = wait_until(lambda: (a := operator.answer()) and a.get("default") is False
+                            and a, TIMEOUT, "the answer for Driving")
+        assert answer["robot"] == "/ugv1"
+        assert answer["configuration"] == rover_configuration(solution)
+    finally:
+        operator.close()
+
+
 def test_a_50_mb_description_is_refused_located_and_the_watcher_goes_on(
         domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution) -> None:
     watch = watch_ros2()

@@ -24,7 +24,9 @@ parameter ``/<ns>/robot_description``), and :mod:`solver.live.discovery` does th
 
 The operator's selection and the answer are topics (ROS 2 has no parameter server), all
 ``std_msgs/msg/String``, reliable and transient-local, so that an rclpy or rclcpp station uses
-them with standard messages: ``/teleop_ui/active_robot`` in (the robot's namespace), and
+them with standard messages: ``/teleop_ui/active_robot`` in (the robot's namespace), with
+``/teleop_ui/active_motion_control`` and ``/teleop_ui/active_sensor_type`` (optional, as the
+ROS 1 parameters of those names; an empty string clears one), and
 ``/teleop_ui/ui_configuration`` out (the JSON object a ROS 1 watcher writes to the parameter of
 that name; ``null`` with no active robot).
 
@@ -48,10 +50,12 @@ from solver.errors import InputError
 from solver.live.master import MISSING, Observation
 from solver.live.sources import DescriptionStore
 
-__all__ = ["ACTIVE_TOPIC", "ANSWER_TOPIC", "DdsGraph", "dds_topic", "dds_type", "ros_name",
-           "ros_type"]
+__all__ = ["ACTIVE_TOPIC", "ANSWER_TOPIC", "REQUEST_TOPICS", "DdsGraph", "dds_topic", "dds_type",
+           "ros_name", "ros_type"]
 
 ACTIVE_TOPIC = "/teleop_ui/active_robot"
+# The operator's selection: one topic per parameter a ROS 1 station sets (solver.live.selection).
+REQUEST_TOPICS = ("active_robot", "active_motion_control", "active_sensor_type")
 ANSWER_TOPIC = "/teleop_ui/ui_configuration"
 _STRING = "std_msgs::msg::dds_::String_"
 _DISCOVERY = "ros_discovery_info"
@@ -245,9 +249,9 @@ class DdsGraph:
                                       Topic(self.participant, _DISCOVERY, types[2]),
                                       qos=_latched(), listener=self.listener)
                            for types in discovery.values()]
-        self._active = DataReader(self.participant, Topic(
-            self.participant, dds_topic(ACTIVE_TOPIC), self.string_type), qos=_latched(),
-            listener=self.listener)
+        self._requests = {name: DataReader(self.participant, Topic(
+            self.participant, dds_topic(f"/teleop_ui/{name}"), self.string_type),
+            qos=_latched(), listener=self.listener) for name in REQUEST_TOPICS}
         answer = Topic(self.participant, dds_topic(ANSWER_TOPIC), self.string_type)
         self._answer_writer = DataWriter(self.participant, answer, qos=_latched())
         self._answer_reader = DataReader(self.participant, answer, qos=_latched())
@@ -255,7 +259,7 @@ class DdsGraph:
         self.descriptions: DescriptionStore = self._descriptions
         self._endpoints: dict[bytes, _Endpoint] = {}
         self._nodes: dict[bytes, dict[bytes, str]] = {}  # participant -> endpoint -> node
-        self._active_value: Any = MISSING
+        self._request_values: dict[str, Any] = {}
         self._answer_value: Any = MISSING
         self._written: str | None = None
         self._own = self.participant.guid.bytes
@@ -314,10 +318,14 @@ class DdsGraph:
         self._read_endpoints()
         self._read_discovery()
         self._descriptions.read()
-        for sample in self._active.take(N=16):
-            text = getattr(sample, "data", None)
-            if isinstance(text, str):
-                self._active_value = text.strip() or MISSING
+        for name, reader in self._requests.items():
+            for sample in reader.take(N=16):
+                text = getattr(sample, "data", None)
+                if isinstance(text, str):
+                    if text.strip():
+                        self._request_values[name] = text.strip()
+                    else:  # an empty string clears the selection, as deleting the parameter
+                        self._request_values.pop(name, None)
         for sample in self._answer_reader.take(N=16):
             text = getattr(sample, "data", None)
             if isinstance(text, str):
@@ -351,8 +359,8 @@ class DdsGraph:
             if endpoint.writer and prefix == "rt/" and name.endswith("/robot_description"):
                 descriptions.add(name)
         params: list[tuple[str, Any]] = []
-        if self._active_value is not MISSING:
-            params.append(("active_robot", self._active_value))
+        params += [(name, self._request_values[name]) for name in REQUEST_TOPICS
+                   if name in self._request_values]
         if self._answer_value is not MISSING:
             params.append(("ui_configuration", self._answer_value))
         return Observation(

@@ -14,17 +14,19 @@ Two observations make counting independent of how many robots there are:
 
 For one kinematic type: valid robots = product over blocks of the block's weight; UI
 configurations = product over blocks of the distinct component combinations the block reaches
-(SPEC.md section 4's closed form is the constraint-free special case). Team totals are sums over
-kinematic types. All arithmetic is on Python integers, so 10^30 robots are counted exactly.
-Kinematic types whose selections have the same structure are counted once (:class:`Memo`).
+(the article's closed form, a product of component counts, is the constraint-free special
+case). Team totals are sums over kinematic types. All arithmetic is on Python integers, so
+10^30 robots are counted exactly. Kinematic types whose selections have the same structure are
+counted once (:class:`Memo`).
 
 Where the structure does not allow this (a block whose class combinations exceed
-:data:`BLOCK_LIMIT`), :class:`StructureTooComplex` says so and the caller falls back to
-enumeration. Overlapping components (a value in two components) are handled by partitioning the
-weighted classes with the exact minimum cover of :mod:`solver.partition`.
+:data:`BLOCK_LIMIT`), :class:`~solver.errors.StructureTooComplex` says so and the ``auto``
+policy falls back to enumeration. Overlapping components (a value in two components) are
+handled by partitioning the weighted classes (:func:`solver.partition.partition_classes`, with
+the exact minimum cover of :mod:`solver.engines.cover`).
 
-Not here: enumerating robots (:mod:`solver.model`, :mod:`solver.stream`), symbolic formulas
-(:mod:`solver.symbolic`).
+Not here: enumerating robots (:mod:`solver.engines.fast`, :mod:`solver.engines.csp`), symbolic
+formulas (:mod:`solver.symbolic`).
 """
 
 from __future__ import annotations
@@ -37,12 +39,13 @@ from dataclasses import dataclass
 from functools import cached_property
 
 from solver.constraints import Value
-from solver.partition import Key, Partition, RobotClass, partition_classes
+from solver.engines import Counts
+from solver.errors import StructureTooComplex
+from solver.partition import Key, Partition, PartitionClass, RobotClass, partition_classes
 from solver.rules import RuleSet
 from solver.team import TypeSelection
 
-__all__ = ["BLOCK_LIMIT", "Counts", "Memo", "StructureTooComplex", "count",
-           "partition_structure"]
+__all__ = ["BLOCK_LIMIT", "Memo", "count", "partition", "robots"]
 
 # Class combinations one block may have before counting falls back to enumeration.
 BLOCK_LIMIT = 1_000_000
@@ -57,24 +60,10 @@ class Memo:
     def __init__(self) -> None:
         self.counts: dict[tuple[object, ...], Counts] = {}
         self.whole: dict[int, list[_Class]] = {}
-        # The blocks count() built for each kinematic type, for partition_structure to reuse.
+        # The blocks count() built for each kinematic type, for partition() to reuse.
         self.blocks: dict[str, list[_Block]] = {}
         # _shape() of the whole-domain class lists above, by identity.
         self.shapes: dict[int, tuple[tuple[int, int], ...]] = {}
-
-
-class StructureTooComplex(Exception):
-    """The team's constraints do not decompose into blocks small enough to count."""
-
-
-@dataclass(frozen=True, slots=True)
-class Counts:
-    """Exact counts for one kinematic type."""
-
-    kinematic_type: str
-    valid_robots: int
-    ui_configurations: int
-    unserved_robots: int
 
 
 @dataclass(frozen=True, slots=True)
@@ -137,7 +126,7 @@ def count(rules: RuleSet, selection: TypeSelection, memo: Memo | None = None) ->
     if memo is not None:
         memo.blocks[kinematic_type] = blocks
     if _overlaps(blocks):
-        part = partition_structure(rules, selection, blocks)
+        part = partition(rules, selection, blocks)
         result = Counts(selection.kinematic_type, part.valid_robots, len(part.classes),
                         part.unserved_robots)
     else:
@@ -152,13 +141,20 @@ def count(rules: RuleSet, selection: TypeSelection, memo: Memo | None = None) ->
     return result
 
 
+def robots(rules: RuleSet, selection: TypeSelection) -> Iterator[tuple[Value, ...]]:
+    """Every valid robot: counting by structure never lists robots, so the fast engine does."""
+    from solver.engines.fast import robots as enumerated
+
+    return enumerated(rules, selection)
+
+
 def _renamed(counts: Counts, kinematic_type: str) -> Counts:
     return Counts(kinematic_type, counts.valid_robots, counts.ui_configurations,
                   counts.unserved_robots)
 
 
-def partition_structure(rules: RuleSet, selection: TypeSelection,
-                        blocks: Sequence[_Block] | Memo | None = None) -> Partition:
+def partition(rules: RuleSet, selection: TypeSelection,
+              blocks: Sequence[_Block] | Memo | None = None) -> Partition:
     """The configurations of one kinematic type, with robot counts and served values.
 
     ``blocks``: the type's blocks if already built, or a :class:`Memo` that :func:`count`
@@ -171,7 +167,8 @@ def partition_structure(rules: RuleSet, selection: TypeSelection,
     if not _overlaps(blocks):
         return _partition_product(rules, selection, blocks)
     if math.prod(len(b.combinations) for b in blocks) > BLOCK_LIMIT:
-        raise StructureTooComplex("overlapping components over too many class combinations")
+        raise StructureTooComplex.at(rules.file, "overlapping components over too many class "
+                                                 "combinations", path="constraints")
     return partition_classes(rules, selection.kinematic_type, _joint_classes(rules, blocks))
 
 
@@ -211,7 +208,8 @@ def _partition_product(rules: RuleSet, selection: TypeSelection,
                          for key, weight, served in found_classes]
     position = rules.key_position
     found_classes.sort(key=lambda item: (item[0][position], item[0]))
-    return Partition(selection.kinematic_type, tuple(found_classes), robots,
+    return Partition(selection.kinematic_type,
+                     tuple([PartitionClass(*found) for found in found_classes]), robots,
                      robots - served_robots, True)
 
 
@@ -230,7 +228,7 @@ def _joint_classes(rules: RuleSet, blocks: Sequence[_Block]) -> Iterator[RobotCl
             weight *= block_weight
             for position, found in zip(block.positions, combination, strict=True):
                 values[position] = found.members
-        yield tuple(values), weight
+        yield RobotClass(tuple(values), weight)
 
 
 def _shape(classes: list[_Class], memo: Memo | None) -> tuple[tuple[int, int], ...]:
@@ -324,8 +322,9 @@ def _blocks(rules: RuleSet, classes: list[list[_Class]]) -> list[_Block]:
         size = math.prod(len(classes[i]) for i in group)
         if size > BLOCK_LIMIT:
             names = ", ".join(rules.names[i] for i in group)
-            raise StructureTooComplex(f"constraints link {names} into {size} class "
-                                      f"combinations (more than {BLOCK_LIMIT})")
+            raise StructureTooComplex.at(rules.file, f"constraints link {names} into {size} "
+                                                     f"class combinations (more than "
+                                                     f"{BLOCK_LIMIT})", path="constraints")
         checks = [(rules.constraints[n].predicate(),
                    [index[name] for name in rules.constraints[n].characteristics])
                   for n in numbers]

@@ -4,9 +4,11 @@ from __future__ import annotations
 
 import pytest
 
-from solver import load_team, solve, stream
+from solver import load_team, solve
+from solver.engines import fast as stream
+from solver.engines.fast import partition as partition_stream
+from solver.engines.fast import robots as robots_stream
 from solver.model import robots
-from solver.stream import partition_stream, robots_stream
 from tests.conftest import TEAMS
 
 
@@ -38,4 +40,4 @@ def test_partition_stream_counts_each_robot_once() -> None:
     team = load_team(TEAMS / "case3.yaml")
     for selection in team.selections:
         part = partition_stream(team.rules, selection)
-        assert sum(robots for _, robots, _ in part.classes) == part.valid_robots
+        assert sum(found.robots for found in part.classes) == part.valid_robots

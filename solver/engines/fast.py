@@ -8,10 +8,10 @@ pre-evaluated on the block, combined with the prefix values as scalars), the con
 of every robot, a ``bincount``. Only the current block is in memory: memory grows with the block
 size and the number of UI configurations, never with the number of robots.
 
-The python-constraint engine (:mod:`solver.model`) stays the reference; the property tests
-check that both give identical robots and partitions.
+The python-constraint engine (:mod:`solver.engines.csp`) stays the reference; the property
+tests check that both give identical robots and partitions.
 
-Not here: counting without enumeration (:mod:`solver.structure`).
+Not here: counting without enumeration (:mod:`solver.engines.structure`).
 """
 
 from __future__ import annotations
@@ -20,19 +20,28 @@ import itertools
 import math
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, TypeAlias
 
 import numpy as np
 
+from solver import partition as partitioning
 from solver.constraints import Value
-from solver.partition import Partition, partition, sort_key
+from solver.engines import Counts
+from solver.partition import Partition, PartitionClass, sort_key
 from solver.rules import RuleSet
 from solver.team import TypeSelection
 
 if TYPE_CHECKING:
     from numpy.typing import NDArray
 
-__all__ = ["BLOCK", "partition_stream", "robots_stream"]
+    from solver.constraints import Condition, RuleConstraint
+
+# Over the block: True where a robot passes (a mask), and whole-number codes or positions.
+Mask: TypeAlias = "NDArray[np.bool_]"
+Codes: TypeAlias = "NDArray[np.int64]"
+Scalars = tuple[tuple[int, frozenset[int]], ...]   # (prefix position, allowed digits)
+
+__all__ = ["BLOCK", "count", "partition", "robots"]
 
 # Robots examined per vector step. Big enough to amortise numpy's per-call cost, small enough to
 # stay in cache-friendly memory (a few MB per block).
@@ -44,10 +53,10 @@ class _Rule:
     """A rule split into the part decided by the prefix (scalars) and by the block (vectors)."""
 
     kind: str
-    when_prefix: tuple[tuple[int, frozenset[int]], ...]   # (prefix position, allowed digits)
-    then_prefix: tuple[tuple[int, frozenset[int]], ...]
-    when_block: Any   # bool array over the block, or None (no block conditions: true)
-    then_block: Any
+    when_prefix: Scalars
+    then_prefix: Scalars
+    when_block: Mask | None   # None: no block conditions (true)
+    then_block: Mask | None
 
 
 class _Plan:
@@ -103,12 +112,12 @@ class _Plan:
         self.block_gap = block_gap
         self.rules_split = [self._split(rule) for rule in rules.constraints]
 
-    def _split(self, rule: Any) -> _Rule:
+    def _split(self, rule: RuleConstraint) -> _Rule:
         index = {name: i for i, name in enumerate(self.rules.names)}
 
-        def part(conditions: Any) -> tuple[tuple[tuple[int, frozenset[int]], ...], Any]:
+        def part(conditions: Sequence[Condition]) -> tuple[Scalars, Mask | None]:
             scalars = []
-            vector = None
+            vector: Mask | None = None
             for condition in conditions:
                 position = index[condition.characteristic]
                 allowed = frozenset(i for i, v in enumerate(self.domains[position])
@@ -132,7 +141,8 @@ class _Plan:
     def prefixes(self) -> Iterator[tuple[int, ...]]:
         return itertools.product(*(range(len(d)) for d in self.domains[:self.start]))
 
-    def mask(self, prefix: tuple[int, ...], cache: dict[tuple[int, ...], Any]) -> Any:
+    def mask(self, prefix: tuple[int, ...], cache: dict[tuple[int, ...], Mask | None]
+             ) -> Mask | None:
         """Valid robots of the block under ``prefix`` (``True`` where valid), or None: none."""
         pattern = []
         for rule in self.rules_split:
@@ -144,7 +154,7 @@ class _Plan:
             cache[key] = self._mask(key)
         return cache[key]
 
-    def _mask(self, pattern: tuple[int, ...]) -> Any:
+    def _mask(self, pattern: tuple[int, ...]) -> Mask | None:
         mask = np.ones(self.block_size, dtype=bool)
         for rule, state in zip(self.rules_split, pattern, strict=True):
             when, then = state >> 1, state & 1
@@ -178,10 +188,10 @@ def _first(members: tuple[int, ...]) -> int:
     return members[0] if members else -1
 
 
-def robots_stream(rules: RuleSet, selection: TypeSelection) -> Iterator[tuple[Value, ...]]:
+def robots(rules: RuleSet, selection: TypeSelection) -> Iterator[tuple[Value, ...]]:
     """Every valid robot of one kinematic type, block by block, in product order."""
     plan = _Plan(rules, selection)
-    cache: dict[tuple[int, ...], Any] = {}
+    cache: dict[tuple[int, ...], Mask | None] = {}
     domains = plan.domains
     width = len(domains)
     for prefix in plan.prefixes():
@@ -195,21 +205,47 @@ def robots_stream(rules: RuleSet, selection: TypeSelection) -> Iterator[tuple[Va
             yield head + tuple(tail)
 
 
-def partition_stream(rules: RuleSet, selection: TypeSelection) -> Partition:
-    """The configurations of one kinematic type, by vectorised enumeration of its robots."""
+def count(rules: RuleSet, selection: TypeSelection, _memo: object = None) -> Counts:
+    """Valid robots and UI configurations of one kinematic type, by enumerating them.
+
+    Only the configuration codes are counted: which values each configuration serves, and the
+    configurations as values, are never built (they cost more than the enumeration itself when
+    there are millions of configurations).
+    """
     if not all(c.is_partition for c in rules.characteristics):
-        return partition(rules, selection.kinematic_type, robots_stream(rules, selection))
+        part = partition(rules, selection)
+        return Counts(selection.kinematic_type, part.valid_robots, len(part.classes),
+                      part.unserved_robots)
+    _, counts, _, total, unserved = _scan(rules, selection, served_too=False)
+    return Counts(selection.kinematic_type, total, counts.size(), unserved)
+
+
+def partition(rules: RuleSet, selection: TypeSelection, _memo: object = None) -> Partition:
+    """The configurations of one kinematic type, by vectorised enumeration of its robots.
+
+    The memo is unused: enumeration shares nothing between kinematic types.
+    """
+    if not all(c.is_partition for c in rules.characteristics):
+        return partitioning.partition(rules, selection.kinematic_type, robots(rules, selection))
+    plan, counts, served, total, unserved = _scan(rules, selection, served_too=True)
+    return _partition_from_counts(plan, counts.items(), served, total, unserved)
+
+
+def _scan(rules: RuleSet, selection: TypeSelection, *, served_too: bool
+          ) -> tuple[_Plan, _Counter, dict[int, _Pairs], int, int]:
+    """Robots per configuration code, and (``served_too``) the values each code serves, with
+    the valid and unserved robots."""
     plan = _Plan(rules, selection)
     width = len(plan.domains)
     counts = _Counter(plan.key_space)
     # served[i] holds (configuration code, value position) pairs met among valid robots. Only
     # characteristics whose components hold several selected values need it; for the others
     # the configuration names the value.
-    plural = [i for i in range(width)
-              if any(np.count_nonzero(plan.codes[i] == c) > 1
-                     for c in range(len(plan.components[i])))]
+    plural = [i for i in range(width) if served_too
+              and any(np.count_nonzero(plan.codes[i] == c) > 1
+                      for c in range(len(plan.components[i])))]
     served = {i: _Pairs(plan.key_space, len(plan.domains[i])) for i in plural}
-    masks: dict[tuple[int, ...], Any] = {}
+    masks: dict[tuple[int, ...], Mask | None] = {}
     blocks: dict[int, _MaskedBlock] = {}
     total = unserved = 0
     for prefix in plan.prefixes():
@@ -238,14 +274,14 @@ def partition_stream(rules: RuleSet, selection: TypeSelection) -> Partition:
                 served[i].add(present, prefix[i])
             else:
                 served[i].add_shifted(block.pairs[i], offset)
-    return _partition_from_counts(plan, counts.items(), served, total, unserved)
+    return plan, counts, served, total, unserved
 
 
 class _MaskedBlock:
     """What a mask makes of the block, the same for every prefix with that mask: the valid
     robots' configuration codes within the block, and their (code, value) pairs."""
 
-    def __init__(self, plan: _Plan, mask: Any, plural: list[int]) -> None:
+    def __init__(self, plan: _Plan, mask: Mask, plural: list[int]) -> None:
         self.valid = int(np.count_nonzero(mask))
         keep = mask & ~plan.block_gap
         self.keys = plan.block_key[keep]
@@ -270,7 +306,7 @@ class _Counter:
         self.dense = np.zeros(space, dtype=np.int64) if space <= self.DENSE else None
         self.sparse: dict[int, int] = {}
 
-    def add(self, keys: Any) -> Any:
+    def add(self, keys: Codes) -> Codes:
         """Count ``keys``; returns the distinct codes among them."""
         if self.dense is not None:
             block = np.bincount(keys, minlength=len(self.dense))
@@ -280,6 +316,12 @@ class _Counter:
         for code, number in zip(codes.tolist(), block_counts.tolist(), strict=True):
             self.sparse[code] = self.sparse.get(code, 0) + number
         return codes
+
+    def size(self) -> int:
+        """How many distinct codes were counted."""
+        if self.dense is not None:
+            return int(np.count_nonzero(self.dense))
+        return len(self.sparse)
 
     def items(self) -> list[tuple[int, int]]:
         if self.dense is not None:
@@ -298,14 +340,14 @@ class _Pairs:
         self.dense = np.zeros(space * size, dtype=bool) if space * size <= self.DENSE else None
         self.sparse: set[int] = set()
 
-    def add(self, codes: Any, positions: Any) -> None:
+    def add(self, codes: Codes, positions: Codes | int) -> None:
         self._mark(codes * self.size + positions)
 
-    def add_shifted(self, pairs: Any, offset: int) -> None:
+    def add_shifted(self, pairs: Codes, offset: int) -> None:
         """Pairs already coded within the block, for configuration codes ``offset`` higher."""
         self._mark(pairs + offset * self.size)
 
-    def _mark(self, pairs: Any) -> None:
+    def _mark(self, pairs: Codes) -> None:
         if self.dense is not None:
             self.dense[pairs] = True
         else:
@@ -358,7 +400,7 @@ def _partition_from_counts(plan: _Plan, counts: list[tuple[int, int]],
         key = tuple([components[i][d] for i, d in enumerate(digits)])
         values = tuple([_values(domains[i], grouped[row]) if grouped is not None
                         else by_code[digits[i]] for i, grouped, by_code in columns])
-        classes.append((key, number, values))
-    classes.sort(key=lambda item: sort_key(rules, item[0]))
+        classes.append(PartitionClass(key, number, values))
+    classes.sort(key=lambda found: sort_key(rules, found.key))
     kinematic_type = str(plan.domains[rules.key_position][0])
     return Partition(kinematic_type, tuple(classes), total, unserved, True)

@@ -13,11 +13,13 @@ from __future__ import annotations
 import csv
 import io
 import json
+import re
 from collections.abc import Sequence
 from typing import Any
 
 from solver import markdown
 from solver.assignment import Assignment
+from solver.engines import describe
 from solver.partition import Configuration
 from solver.reproduce import Comparison, published_note
 from solver.rules import Characteristic, Component, RuleSet
@@ -27,13 +29,15 @@ __all__ = [
     "FORMATS",
     "assignment_data",
     "configuration_data",
+    "csv_cell",
+    "csv_row",
     "dumps",
+    "integer_runs",
     "method_text",
     "render_assignment",
     "render_comparisons",
     "render_counts",
     "render_solution",
-    "runs",
     "solution_data",
     "solution_warnings",
     "text_table",
@@ -56,19 +60,12 @@ def _summary_data(summary: TypeSummary) -> dict[str, Any]:
     return data
 
 
-METHODS = {
-    "structure": "counted from the rules' structure, no robots enumerated",
-    "fast": "robots enumerated with numpy (fast engine)",
-    "csp": "robots enumerated with python-constraint (csp engine)",
-}
-
-
 def method_text(solution: Solution) -> str:
     """How the counts were obtained, in words, per kinematic type where they differ."""
     methods = [t.method for t in solution.by_type]
     if len(set(methods)) <= 1:
-        return METHODS.get(methods[0], methods[0]) if methods else "nothing to count"
-    return "; ".join(f"{t.kinematic_type}: {METHODS.get(t.method, t.method)}"
+        return describe(methods[0]) if methods else "nothing to count"
+    return "; ".join(f"{t.kinematic_type}: {describe(t.method)}"
                      for t in solution.by_type)
 
 
@@ -79,7 +76,7 @@ def _component_data(characteristic: Characteristic, component: Component,
         counts = sorted(int(v) for v in served)
         data["range"] = [counts[0], counts[-1]]
         data["clusters"] = [component.clusters(counts[0]), component.clusters(counts[-1])]
-        data["counts"] = [list(run) for run in runs(counts)]
+        data["counts"] = [list(run) for run in integer_runs(counts)]
     else:
         data["values"] = list(served)
     return data
@@ -125,6 +122,8 @@ def solution_data(solution: Solution, *, configurations: bool = False) -> dict[s
             "valid_robots": team.published.valid_robots,
             "ui_configurations": team.published.ui_configurations,
             "source": team.published.source},
+        # What text output prints as "warning: ..." lines (solution_warnings), for programs.
+        "warnings": [w.removeprefix("warning: ") for w in solution_warnings(solution)],
     }
     if configurations:
         data["configurations"] = [configuration_data(rules, c)
@@ -169,11 +168,31 @@ def text_table(headers: Sequence[str], rows: Sequence[Sequence[Any]],
     return "\n".join(lines) + "\n"
 
 
+# A spreadsheet reads a cell starting with one of these as a formula (OWASP "CSV injection"):
+# `=HYPERLINK(...)` in a team's name would run when someone opens the summary.
+_FORMULA_STARTS = ("=", "+", "-", "@", "\t", "\r")
+_NUMBER = re.compile(r"[+-]?[0-9]+(\.[0-9]+)?([eE][+-]?[0-9]+)?")
+
+
+def csv_cell(value: Any) -> Any:
+    """``value`` as a CSV cell no spreadsheet runs: text that starts like a formula gets a
+    leading ``'`` (OWASP's advice); numbers, and text that is just a number, are left alone."""
+    if isinstance(value, str) and value.startswith(_FORMULA_STARTS) \
+            and _NUMBER.fullmatch(value) is None:
+        return "'" + value
+    return value
+
+
+def csv_row(values: Sequence[Any]) -> list[Any]:
+    """:func:`csv_cell` of every value of a row."""
+    return [csv_cell(value) for value in values]
+
+
 def _csv(headers: Sequence[str], rows: Sequence[Sequence[Any]]) -> str:
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerow(headers)
-    writer.writerows(rows)
+    writer.writerow(csv_row(headers))
+    writer.writerows(csv_row(row) for row in rows)
     return buffer.getvalue()
 
 
@@ -195,7 +214,7 @@ def _component_text(characteristic: Characteristic, component: Component,
     return f"{component.name} ({_runs_text(counts)}: {_runs_text(clusters)} clusters)"
 
 
-def runs(numbers: Sequence[int]) -> list[tuple[int, int]]:
+def integer_runs(numbers: Sequence[int]) -> list[tuple[int, int]]:
     """Sorted whole numbers as runs of consecutive ones: [1, 2, 3, 7] -> [(1, 3), (7, 7)]."""
     found: list[tuple[int, int]] = []
     for number in numbers:
@@ -208,7 +227,7 @@ def runs(numbers: Sequence[int]) -> list[tuple[int, int]]:
 
 def _runs_text(numbers: Sequence[int]) -> str:
     return ", ".join(f"{low}" if low == high else f"{low}..{high}"
-                     for low, high in runs(numbers))
+                     for low, high in integer_runs(numbers))
 
 
 def _configuration_rows(solution: Solution) -> tuple[list[str], list[list[Any]]]:
@@ -283,8 +302,11 @@ def render_counts(solution: Solution, fmt: str = "text") -> str:
 
 
 def solution_warnings(solution: Solution) -> list[str]:
-    """What a reader of the counts must know: robots left unserved, a minimum not proven."""
-    warnings = []
+    """What a reader of the counts must know: selected values the constraints exclude, robots
+    left unserved, a minimum not proven. The one place for them: solve, report and batch."""
+    warnings = [f"warning: the rules' constraints exclude what the team selects: "
+                f"{removed.describe()}; such robots get the default configuration"
+                for removed in solution.removed]
     if solution.totals.unserved_robots:
         warnings.append(f"warning: {solution.totals.unserved_robots} valid robots have a value "
                         "in no component and get the default configuration (run teleop-ui "

@@ -7,9 +7,10 @@ from pathlib import Path
 
 import pytest
 
-from solver import load_team, solve, structure
-from solver.solution import TooLargeError
-from solver.structure import Memo, StructureTooComplex, count
+from solver import load_team, solve
+from solver.engines import structure
+from solver.engines.structure import Memo, count
+from solver.errors import StructureTooComplex, TooLargeError
 from tests.conftest import TEAMS
 
 WriteFile = Callable[[str, str], Path]

@@ -1,0 +1,55 @@
+"""Benchmark: reading a team file whose types each select a maximum count.
+
+100 kinematic types each select two sensor types and ``sensor_count: N`` (a maximum) out of a
+rule set's 1..100,000 counts, against the same team over 1..1,000 counts (the same team file,
+maximums scaled). The ratio ``100,000 counts / 1,000 counts`` (``tools/bench_table.py``) says
+how much reading follows the counts rather than the file; a yaml.CSafeLoader parse of the
+100,000-count team file is the peer for what reading the file alone costs.
+
+Run: ``python -m pytest benchmarks/bench_team.py``.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+import yaml
+from pytest_benchmark.fixture import BenchmarkFixture
+
+from solver import load_team
+
+TYPES = 100
+
+
+def _write(directory: Path, counts: int) -> Path:
+    names = [f"K{i}" for i in range(TYPES)]
+    (directory / "rules.yaml").write_text(
+        "name: many counts\ncharacteristics:\n"
+        f"  kinematic_type:\n    values: [{', '.join(names)}]\n"
+        "  sensor_type:\n    values: [A, B, C]\n"
+        f"  sensor_count:\n    range: {{min: 1, max: {counts}}}\n", encoding="utf-8")
+    team = directory / "team.yaml"
+    top = counts - counts // 100  # each type's maximum: all but the top 1% of counts
+    team.write_text("rules: rules.yaml\nteam:\n" + "".join(
+        f"  {name}:\n    sensor_type: [A, B]\n    sensor_count: {top}\n"
+        for name in names), encoding="utf-8")
+    return team
+
+
+@pytest.mark.parametrize("counts", [1_000, 100_000], ids=["1e3 counts", "1e5 counts"])
+def test_read_team_of_100_types(benchmark: BenchmarkFixture, tmp_path: Path,
+                                counts: int) -> None:
+    team_file = _write(tmp_path, counts)
+    # pytest-benchmark ships no type hints.
+    team = benchmark.pedantic(  # type: ignore[no-untyped-call]
+        load_team, args=(team_file,), rounds=5, iterations=1)
+    assert len(team.selections) == TYPES
+    top = counts - counts // 100
+    assert {len(s.domains[2]) for s in team.selections} == {top}
+
+
+def test_parse_team_file_with_libyaml(benchmark: BenchmarkFixture, tmp_path: Path) -> None:
+    text = _write(tmp_path, 100_000).read_text(encoding="utf-8")
+    data = benchmark(yaml.load, text, Loader=yaml.CSafeLoader)
+    assert len(data["team"]) == TYPES

@@ -1,0 +1,82 @@
+"""Which kind of file a loaded YAML document is: a team, a rule set or an identification profile.
+
+One answer for every command: ``check`` sorts its files with it, ``batch`` skips what is no
+team, ``count`` reads a rule set as its whole design space, and ``solve`` (through
+:func:`solver.team.parse_team`) says "this is a rule set; pass a team" instead of listing the
+rule set's fields as unknown team fields. Decided by the top-level keys, in this order:
+
+1. ``team:`` -> a team (whatever else it has: the team reader reports the rest);
+2. ``characteristics:`` -> an identification profile when it also has a profile-only section
+   (``patterns``, ``structures``, ...), else a rule set;
+3. ``rules:`` -> a team whose ``team:`` is missing (the team reader says so);
+4. anything else -> ``None``: the caller says what it expected.
+
+Not here: reading the file (:mod:`solver.yamlio`) or the kinds themselves (:mod:`solver.team`,
+:mod:`solver.rules`, :mod:`solver.identify.profile`).
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Literal
+
+from solver.errors import Fault, InputError
+
+if TYPE_CHECKING:
+    from solver.yamlio import Document
+
+__all__ = ["FileKind", "file_kind", "require_kind"]
+
+FileKind = Literal["team", "rules", "profile"]
+
+# Sections only an identification profile has (rules/identification.yaml); a rule set with
+# one of them is a profile, so `check` and `batch` do not read it as a broken rule set.
+_PROFILE_ONLY = frozenset({"patterns", "plugins", "limbs", "doubt_factor", "structures",
+                           "sensors", "sensor_types", "topics", "motion"})
+
+_WHAT: dict[FileKind, str] = {"team": "a team file", "rules": "a rule set",
+                              "profile": "an identification profile"}
+_WHY: dict[FileKind, str] = {
+    "team": "it has 'team:'",
+    "rules": "it has 'characteristics:' and no 'team:'",
+    "profile": "it has 'characteristics:' and profile sections such as 'patterns:'",
+}
+
+# What to pass instead, per (kind found, kind wanted).
+_INSTEAD: dict[tuple[FileKind, FileKind], str] = {
+    ("rules", "team"): "pass a team (a file with 'rules:' naming this file and 'team:' "
+                       "selecting values per kinematic type, or a shipped team such as "
+                       "case3); `teleop-ui count FILE` counts every robot of a rule set",
+    ("profile", "team"): "pass a team file; a profile is for `identify --profile`",
+    ("team", "rules"): "pass a rule set (a file with 'characteristics:')",
+    ("profile", "rules"): "pass a rule set; a profile is for `identify --profile`",
+}
+
+
+def file_kind(document: Document) -> FileKind | None:
+    """The kind of ``document`` by its top-level keys (see the module docstring)."""
+    data = document.data
+    if not isinstance(data, dict):
+        return None
+    keys = {str(key) for key in data}
+    if "team" in keys:
+        return "team"
+    if "characteristics" in keys:
+        return "profile" if keys & _PROFILE_ONLY else "rules"
+    if "rules" in keys:
+        return "team"
+    return None
+
+
+def require_kind(document: Document, wanted: FileKind) -> None:
+    """Raise a located :class:`InputError` when ``document`` is clearly another kind of file.
+
+    A document of no recognisable kind passes: the reader for ``wanted`` lists what is wrong.
+    """
+    found = file_kind(document)
+    if found is None or found == wanted:
+        return
+    location = document.location()
+    message = f"this is {_WHAT[found]}, not {_WHAT[wanted]} ({_WHY[found]})"
+    instead = _INSTEAD.get((found, wanted))
+    raise InputError(Fault(location, message + (f"; {instead}" if instead else ""),
+                           "wrong-kind"))
