@@ -4,6 +4,9 @@ from __future__ import annotations
 
 import itertools
 import math
+import os
+import subprocess
+import sys
 from collections.abc import Callable
 from pathlib import Path
 
@@ -373,8 +376,13 @@ def test_write_plot_picks_the_format_from_the_extension(case1: Solution, tmp_pat
 
 
 @pytest.mark.parametrize("fmt", ["png", "svg", "pdf"])
-def test_plots_are_byte_identical_from_run_to_run(case3: Solution, fmt: str) -> None:
-    assert figure_bytes(radar_figure(case3), fmt) == figure_bytes(radar_figure(case3), fmt)
+def test_plots_are_byte_identical_from_run_to_run(tmp_path: Path, fmt: str) -> None:
+    # Separate processes under different hash seeds: what a user running the command twice sees.
+    for seed in ("0", "1"):
+        subprocess.run([sys.executable, "-m", "solver", "solve", "case3", "--plot",
+                        str(tmp_path / f"{seed}.{fmt}")], check=True, capture_output=True,
+                       timeout=600, env={**os.environ, "PYTHONHASHSEED": seed})
+    assert (tmp_path / f"0.{fmt}").read_bytes() == (tmp_path / f"1.{fmt}").read_bytes()
 
 
 def test_svg_plots_carry_no_date(case1: Solution) -> None:

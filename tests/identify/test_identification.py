@@ -46,7 +46,6 @@ def test_the_content_key_changes_with_every_input() -> None:
     keys = {content_key(text), content_key(text + " "), content_key(text, srdf_text="<robot/>"),
             content_key(text, topics=topics), content_key(text, profile=load_profile())}
     assert len(keys) == 5
-    assert content_key(text) == content_key(text)
 
 
 def test_topics_add_waypoint_to_what_the_description_shows() -> None:
