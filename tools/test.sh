@@ -21,6 +21,11 @@ if ! command -v roscore >/dev/null 2>&1; then
   apt_install ros-core
 fi
 
+# chromium: tests/layouts/test_preview.py screenshots the layout previews in headless Chromium.
+if ! command -v chromium >/dev/null 2>&1; then
+  apt_install chromium chromium-driver
+fi
+
 # Debian splits venv's pip bootstrap (ensurepip) into the python3-venv package.
 if [ ! -x "$venv/bin/python" ]; then
   if ! python3 -m venv "$venv" >/dev/null 2>&1; then

@@ -20,6 +20,7 @@ from solver.cli._common import (
 
 if TYPE_CHECKING:
     from solver.identify.profile import Profile
+    from solver.live.events import Event
     from solver.live.watcher import Watcher
     from solver.solution import Solution
 
@@ -53,6 +54,10 @@ def register(subparsers: Any) -> None:
     parser.add_argument("--wait", action="store_true",
                         help="wait for the master to come up instead of failing (exit 2)")
     add_format(parser, ("json", "text"), default="json")
+    # --layouts (issue 17, solver.layouts.live): selection events name the layout file.
+    parser.add_argument("--layouts", metavar="DIR",
+                        help="name the active configuration's layout file in DIR (written by "
+                             "`teleop-ui layouts`) in each selection_changed event")
     parser.set_defaults(run=run)
 
 
@@ -94,7 +99,6 @@ def ros2_domain(args: argparse.Namespace) -> int:
 
 
 def _watch_ros2(args: argparse.Namespace, solution: Solution, profile: Profile) -> int:
-    from solver.live.render import render_event
     from solver.live.sources.ros2 import DdsGraph
     from solver.live.watcher import Watcher
 
@@ -108,7 +112,7 @@ def _watch_ros2(args: argparse.Namespace, solution: Solution, profile: Profile) 
                 source.settle()  # discovery on DDS takes a moment: see what is there first
             events = watcher.snapshot() if args.once else watcher.events()
             for event in events:
-                write(render_event(event, solution, args.format))
+                write(_render(event, solution, args))
         finally:
             signal.signal(signal.SIGTERM, previous)
     if watcher.stop_reason is not None and not args.once:
@@ -119,7 +123,6 @@ def _watch_ros2(args: argparse.Namespace, solution: Solution, profile: Profile) 
 def _watch(watcher: Watcher, args: argparse.Namespace, master: str, solution: Solution
            ) -> int:
     from solver.live.master import MasterError, MasterUnreachable
-    from solver.live.render import render_event
 
     def waiting(error: MasterError) -> None:
         print(f"waiting for the ROS master at {master} ({error.faults[0].message})",
@@ -136,7 +139,19 @@ def _watch(watcher: Watcher, args: argparse.Namespace, master: str, solution: So
                                        ) from None
     events = [] if watcher.stopped else watcher.snapshot() if args.once else watcher.events()
     for event in events:
-        write(render_event(event, solution, args.format))
+        write(_render(event, solution, args))
     if watcher.stop_reason is not None:
         print(f"watch stopped: {watcher.stop_reason}", file=sys.stderr)
     return 0
+
+
+# --layouts (issue 17): the event as rendered, plus the layout file of the active configuration.
+def _render(event: Event, solution: Solution, args: argparse.Namespace) -> str:
+    from solver.live.render import render_event
+
+    text = render_event(event, solution, args.format)
+    if args.layouts is None:
+        return text
+    from solver.layouts.live import with_layout
+
+    return with_layout(text, event, args.layouts, args.format)

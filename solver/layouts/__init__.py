@@ -1,0 +1,37 @@
+"""Layouts an operator tool can open, one per UI configuration (issue 17).
+
+==================  ===============================================================
+``profile``         the presentation profile: component -> panel, topic template
+``tiling``          the sensor-count arrangement as a number of tiles; the split tree
+``foxglove``        Foxglove / Lichtblick layout JSON; its validation
+``rviz``            RViz2 ``.rviz`` YAML; its validation
+``writer``          writing every configuration's layout, validated first
+==================  ===============================================================
+
+Not here: solving (:mod:`solver.solution`); UVL export is not written yet.
+"""
+
+from __future__ import annotations
+
+from solver.layouts.foxglove import (
+    LayoutError,
+    foxglove_layout,
+    layout_filename,
+    validate_foxglove,
+)
+from solver.layouts.profile import PanelSpec, Profile, load_profile
+from solver.layouts.rviz import rviz_layout, validate_rviz
+from solver.layouts.writer import write_layouts
+
+__all__ = [
+    "LayoutError",
+    "PanelSpec",
+    "Profile",
+    "foxglove_layout",
+    "layout_filename",
+    "load_profile",
+    "rviz_layout",
+    "validate_foxglove",
+    "validate_rviz",
+    "write_layouts",
+]

@@ -1,0 +1,53 @@
+"""A layout's panel tree as an SVG thumbnail, and a page of them (one per configuration).
+
+What an operator will see, at a glance: each split divides its rectangle by its percentage;
+each panel is a rectangle coloured by panel type and labelled with its title. Not here:
+rendering the panels' content.
+"""
+
+from __future__ import annotations
+
+from html import escape
+from typing import Any
+
+__all__ = ["preview_html", "preview_svg"]
+
+COLOURS = {"3D": "#4c72b0", "Image": "#55a868", "Indicator": "#8172b2", "Plot": "#c44e52",
+           "Publish": "#ccb974", "RawMessages": "#8c8c8c", "Teleop": "#dd8452"}
+
+
+def preview_svg(layout: dict[str, Any], width: int = 320, height: int = 200) -> str:
+    """The panel tree of a Foxglove layout as an SVG of ``width`` x ``height``."""
+    shapes: list[str] = []
+
+    def draw(node: Any, x: float, y: float, w: float, h: float) -> None:
+        if isinstance(node, str):
+            kind = node.partition("!")[0]
+            title = str(layout["configById"].get(node, {}).get("foxglovePanelTitle", kind))
+            shapes.append(
+                f'<rect x="{x:.1f}" y="{y:.1f}" width="{w:.1f}" height="{h:.1f}" '
+                f'fill="{COLOURS.get(kind, "#8c8c8c")}" stroke="#ffffff" stroke-width="2"/>'
+                f'<text x="{x + 4:.1f}" y="{y + 14:.1f}" font-size="10" fill="#ffffff">'
+                f"{escape(kind)}: {escape(title)}</text>")
+            return
+        share = float(node.get("splitPercentage", 50)) / 100
+        if node.get("direction") == "row":
+            draw(node["first"], x, y, w * share, h)
+            draw(node["second"], x + w * share, y, w * (1 - share), h)
+        else:
+            draw(node["first"], x, y, w, h * share)
+            draw(node["second"], x, y + h * share, w, h * (1 - share))
+
+    if layout.get("layout") is not None:
+        draw(layout["layout"], 0, 0, width, height)
+    return (f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
+            f'viewBox="0 0 {width} {height}">' + "".join(shapes) + "</svg>")
+
+
+def preview_html(layouts: list[tuple[str, dict[str, Any]]]) -> str:
+    """A self-contained page: one captioned thumbnail per (name, layout)."""
+    figures = "".join(f"<figure>{preview_svg(layout)}<figcaption>{escape(name)}</figcaption>"
+                      "</figure>" for name, layout in layouts)
+    return ("<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>layouts</title>"
+            "<style>body{margin:8px;font-family:sans-serif}figure{display:inline-block;"
+            "margin:4px}</style></head><body>" + figures + "</body></html>\n")

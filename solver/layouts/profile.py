@@ -1,0 +1,92 @@
+"""The presentation profile: which viewer panel presents each UI component, as data.
+
+The shipped default is ``rules/presentation.yaml``; a user passes their own copy with
+``--profile``. Every problem in a profile is reported at once, located (file:line:col).
+Not here: building layouts (:mod:`solver.layouts.foxglove`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+from solver.errors import SolverError
+from solver.reader import Reader
+from solver.rules import RuleSet
+from solver.yamlio import load_document
+
+__all__ = ["PANEL_TYPES", "PanelSpec", "Profile", "ProfileError", "default_profile_path",
+           "load_profile"]
+
+# The Foxglove / Lichtblick panel types a generated layout may use (their registered ids).
+PANEL_TYPES = ("3D", "Image", "Indicator", "Plot", "Publish", "RawMessages", "Teleop")
+
+
+class ProfileError(SolverError, ValueError):
+    """A presentation profile is malformed or names what the rules or the viewer do not know."""
+
+
+@dataclass(frozen=True, slots=True)
+class PanelSpec:
+    """How one UI component is presented: a panel type, a topic template, its message types."""
+
+    component: str
+    panel: str
+    topic: str
+    types: tuple[str, ...]
+    placeholder: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class Profile:
+    """Component name -> panel, in file order."""
+
+    file: str
+    panels: tuple[PanelSpec, ...]
+
+    def spec(self, component: str) -> PanelSpec:
+        """The component's panel; a titled placeholder for a component the profile omits."""
+        for spec in self.panels:
+            if spec.component == component:
+                return spec
+        # Never a silent drop: an unmapped component still gets a panel, named as such.
+        return PanelSpec(component, "RawMessages", f"<robot>/{_slug(component)}", (), True)
+
+
+def default_profile_path() -> Path:
+    return Path(__file__).resolve().parent.parent / "rules" / "presentation.yaml"
+
+
+def load_profile(path: str | Path | None = None, rules: RuleSet | None = None) -> Profile:
+    """Read a profile; with ``rules``, a component the rule set lacks is a located error."""
+    document = load_document(path if path is not None else default_profile_path())
+    reader = Reader(document)
+    panels: list[PanelSpec] = []
+    known: set[str] | None = None
+    if rules is not None:
+        known = {component.name for characteristic in rules.characteristics
+                 for component in characteristic.components}
+    top = reader.top("presentation profile", needs="components")
+    if top is not None:
+        components = reader.mapping(("components",), "components")
+        for name in components:
+            path_ = ("components", name)
+            entry = reader.mapping(path_, f"component {name!r}")
+            if known is not None and name not in known:
+                reader.fault(path_, f"unknown component {name!r}", key=True,
+                             code="unknown-reference")
+            panel = reader.string((*path_, "panel"), "panel")
+            if panel and panel not in PANEL_TYPES:
+                reader.fault((*path_, "panel"), f"unknown panel {panel!r}; known: "
+                             + ", ".join(PANEL_TYPES), code="unknown-reference")
+            topic = reader.string((*path_, "topic"), "topic", limit=None)
+            raw_types = entry.get("types") or []
+            types = tuple(str(item) for item in raw_types) if isinstance(raw_types, list) else ()
+            panels.append(PanelSpec(name, panel, topic, types, entry.get("placeholder") is True))
+    if reader.faults:
+        raise ProfileError(reader.faults)
+    return Profile(document.file, tuple(panels))
+
+
+def _slug(name: str) -> str:
+    return "".join(char if char.isalnum() else "_" for char in name.lower())

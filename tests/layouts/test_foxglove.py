@@ -1,0 +1,133 @@
+"""Foxglove / Lichtblick layouts: one per configuration, valid, tiled, deterministic."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from solver import load_team, solve
+from solver.cli import main
+from solver.layouts import (
+    LayoutError,
+    foxglove_layout,
+    layout_filename,
+    load_profile,
+    validate_foxglove,
+    write_layouts,
+)
+from solver.layouts.profile import ProfileError
+
+
+def test_layouts_writes_one_file_per_configuration_plus_the_default(tmp_path: Path) -> None:
+    solution = solve(load_team("case1"))
+    paths = write_layouts(solution, load_profile(), tmp_path)
+    assert [path.name for path in paths] == [
+        "config-001.json", "config-002.json", "config-003.json", "config-004.json",
+        "config-005.json", "config-006.json", "config-007-default.json"]
+    for path in paths:
+        validate_foxglove(json.loads(path.read_text()), path.name)
+
+
+def test_layouts_are_the_same_bytes_on_every_run(tmp_path: Path) -> None:
+    solution = solve(load_team("case3"))
+    first = write_layouts(solution, load_profile(), tmp_path / "a")
+    second = write_layouts(solution, load_profile(), tmp_path / "b")
+    assert [p.read_bytes() for p in first] == [p.read_bytes() for p in second]
+
+
+def test_sensor_clusters_become_tiles_of_the_sensor_panel() -> None:
+    solution = solve(load_team("case2"))
+    # A UGV with 6..10 sensors in clusters of 2 shows ceil(10/2) = 5 tiles.
+    configuration = next(c for c in solution.configurations
+                         if c.kinematic_type == "UGV" and c.components[3].name != "individual"
+                         and c.components[2].name == "point cloud")
+    layout = foxglove_layout(solution, configuration, load_profile())
+    assert sum(1 for key in layout["configById"] if key.startswith("3D!")) == 5
+
+
+def test_teleop_panel_publishes_to_a_topic_template_only_while_held() -> None:
+    solution = solve(load_team("case1"))
+    layout = foxglove_layout(solution, solution.configurations[0], load_profile())
+    teleop = layout["configById"]["Teleop!p01"]
+    assert teleop["topic"] == "<robot>/cmd_vel"
+    assert teleop["foxglovePanelTitle"] == "Flight"
+
+
+def test_audio_gets_a_titled_placeholder_panel_not_a_silent_drop() -> None:
+    solution = solve(load_team("case2"))
+    audio = next(c for c in solution.configurations if c.components[2].name == "audio")
+    layout = foxglove_layout(solution, audio, load_profile())
+    titles = [config["foxglovePanelTitle"] for config in layout["configById"].values()]
+    assert any(title.startswith("audio") and "placeholder" in title for title in titles)
+
+
+def test_validation_reports_orphan_configs_and_bad_splits() -> None:
+    layout = {"configById": {"Image!a": {}, "Image!b": {}, "Nope!c": {}},
+              "layout": {"direction": "row", "first": "Image!a", "second": "Nope!c",
+                         "splitPercentage": 140}}
+    with pytest.raises(LayoutError) as caught:
+        validate_foxglove(layout, "x.json")
+    message = str(caught.value)
+    assert "orphan config" in message
+    assert "0..100" in message
+    assert "unknown panel type" in message
+
+
+def test_profile_with_unknown_component_and_panel_is_a_located_error(tmp_path: Path) -> None:
+    path = tmp_path / "p.yaml"
+    path.write_text("profile: presentation\ncomponents:\n  smell:\n    panel: Nose\n"
+                    "    topic: x\n")
+    with pytest.raises(ProfileError) as caught:
+        load_profile(path, solve(load_team("case1")).rules)
+    message = str(caught.value)
+    assert f"{path}:3:3: components.smell: unknown component 'smell'" in message
+    assert "unknown panel 'Nose'" in message
+
+
+def test_layouts_command_exits_2_on_an_unusable_profile(tmp_path: Path,
+                                                        capsys: pytest.CaptureFixture[str]) -> None:
+    path = tmp_path / "p.yaml"
+    path.write_text("components: [1]\n")
+    assert main(["layouts", "case1", "-o", str(tmp_path / "out"), "--profile", str(path)]) == 2
+    assert "components" in capsys.readouterr().err
+
+
+def test_layout_filename_marks_the_default_configuration() -> None:
+    assert layout_filename(7, default=True) == "config-007-default.json"
+
+
+def test_rviz_layouts_load_as_yaml_with_every_display_key(tmp_path: Path) -> None:
+    import yaml
+
+    from solver.layouts.rviz import REQUIRED_KEYS
+
+    paths = write_layouts(solve(load_team("case2")), load_profile(), tmp_path, "rviz")
+    assert paths[-1].name == "config-019-default.rviz"
+    for path in paths:
+        displays = yaml.safe_load(path.read_text())["Visualization Manager"]["Displays"]
+        assert all(key in display for display in displays for key in REQUIRED_KEYS)
+
+
+def test_rviz_robot_description_is_transient_local_and_sensors_best_effort() -> None:
+    from solver.layouts import rviz_layout
+
+    solution = solve(load_team("case1"))
+    displays = rviz_layout(solution, solution.configurations[0],
+                           load_profile())["Visualization Manager"]["Displays"]
+    model = next(d for d in displays if d["Name"] == "RobotModel")
+    assert model["Description Topic"]["Durability Policy"] == "Transient Local"
+    image = next(d for d in displays if d["Class"] == "rviz_default_plugins/Image")
+    assert image["Topic"]["Reliability Policy"] == "Best Effort"
+
+
+def test_rviz_gives_a_disabled_placeholder_display_to_velocity_control() -> None:
+    from solver.layouts import rviz_layout
+
+    solution = solve(load_team("case1"))
+    displays = rviz_layout(solution, solution.configurations[0],
+                           load_profile())["Visualization Manager"]["Displays"]
+    flight = next(d for d in displays if d["Name"].startswith("Flight"))
+    assert flight["Enabled"] is False
+    assert "placeholder" in flight["Name"]

@@ -1,0 +1,67 @@
+"""The layout preview, looked at the way a person does: rendered by headless Chromium."""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from solver import load_team, solve
+from solver.layouts import foxglove_layout, load_profile
+from solver.layouts.preview import preview_html, preview_svg
+
+CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
+
+
+def test_preview_draws_one_labelled_rectangle_per_panel() -> None:
+    solution = solve(load_team("case1"))
+    layout = foxglove_layout(solution, solution.configurations[0], load_profile())
+    svg = preview_svg(layout)
+    assert svg.count("<rect") == len(layout["configById"])
+    assert "Teleop: Flight" in svg
+
+
+@pytest.mark.skipif(CHROMIUM is None, reason="needs Debian's chromium (tools/test.sh installs it)")
+def test_preview_page_screenshot_in_headless_chromium_is_not_blank(tmp_path: Path) -> None:
+    from PIL import Image
+
+    solution = solve(load_team("case1"))
+    profile = load_profile()
+    page = tmp_path / "preview.html"
+    page.write_text(preview_html([(f"configuration {c.number}",
+                                   foxglove_layout(solution, c, profile))
+                                  for c in solution.configurations]))
+    shot = tmp_path / "shot.png"
+    assert CHROMIUM is not None
+    subprocess.run(
+        [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic",
+         "--no-first-run", "--disable-background-networking", "--disable-component-update",
+         "--disable-sync", f"--user-data-dir={tmp_path / 'profile'}",
+         f"--screenshot={shot}", "--window-size=1100,700", page.as_uri()],
+        check=True, capture_output=True, timeout=120)
+    image = Image.open(shot).convert("RGB")
+    colours = image.getcolors(maxcolors=1 << 20)
+    assert colours is not None
+    # A blank page is one colour; the thumbnails paint several panel colours over white.
+    painted = {colour for count, colour in colours if count > 500}
+    assert len(painted) >= 3
+    assert (85, 168, 104) in painted  # the Image panels' green
+
+
+def test_layouts_preview_option_writes_one_thumbnail_per_layout(tmp_path: Path) -> None:
+    from solver.cli import main
+
+    assert main(["layouts", "case1", "-o", str(tmp_path), "--preview"]) == 0
+    page = (tmp_path / "preview.html").read_text()
+    assert page.count("<figure>") == 7
+    assert "<figcaption>config-007-default.json</figcaption>" in page
+
+
+def test_preview_with_rviz_format_exits_2_before_writing(tmp_path: Path) -> None:
+    from solver.cli import main
+
+    assert main(["layouts", "case1", "-o", str(tmp_path / "out"), "--format", "rviz",
+                 "--preview"]) == 2
+    assert not (tmp_path / "out").exists()
