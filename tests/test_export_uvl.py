@@ -6,12 +6,11 @@ import random
 from pathlib import Path
 
 import pytest
+from flamapy.interfaces.python import flamapy_feature_model as flamapy
 
 from solver import load_team, solve
 from solver.cli import main
 from solver.uvl import ExportError, team_to_uvl
-
-flamapy = pytest.importorskip("flamapy.interfaces.python.flamapy_feature_model")
 
 
 def flamapy_count(text: str, path: Path) -> int:
