@@ -63,18 +63,20 @@ def bags(tmp_path_factory: pytest.TempPathFactory) -> dict[tuple[str, int], Path
 
 @pytest.mark.parametrize("topics", SIZES, ids=[f"{n} topics" for n in SIZES])
 @pytest.mark.parametrize("kind", list(FORMATS), ids=list(FORMATS))
-def test_reading_the_topics_of_a_big_bag(benchmark: BenchmarkFixture,
-                                         bags: dict[tuple[str, int], Path], kind: str,
-                                         topics: int) -> None:
+def test_reading_the_topics_of_a_big_bag(
+    benchmark: BenchmarkFixture, bags: dict[tuple[str, int], Path], kind: str, topics: int
+) -> None:
     benchmark.group = f"bag topics: {kind}"
     found = benchmark.pedantic(  # type: ignore[no-untyped-call]  # pedantic is unannotated
-        read_bag_topics, args=(bags[kind, topics],), rounds=1, iterations=1)
+        read_bag_topics, args=(bags[kind, topics],), rounds=1, iterations=1
+    )
     assert len(found) == topics
     assert found[-1].name == f"/robot/t{topics - 1}"
 
 
-def test_growth_ratio(bags: dict[tuple[str, int], Path],
-                      capsys: pytest.CaptureFixture[str]) -> None:
+def test_growth_ratio(
+    bags: dict[tuple[str, int], Path], capsys: pytest.CaptureFixture[str]
+) -> None:
     """Time at 4x the topics over time at 1x, for each format, measured in this run."""
     lines = []
     for kind in FORMATS:
@@ -84,8 +86,10 @@ def test_growth_ratio(bags: dict[tuple[str, int], Path],
             found = read_bag_topics(bags[kind, topics])
             seconds.append(time.perf_counter() - start)
             assert len(found) == topics
-        lines.append(f"{kind}: {SIZES[0]} topics {seconds[0]:.3f} s, {SIZES[1]} topics "
-                     f"{seconds[1]:.3f} s; 4x topics: {seconds[1] / seconds[0]:.1f}x time")
+        lines.append(
+            f"{kind}: {SIZES[0]} topics {seconds[0]:.3f} s, {SIZES[1]} topics "
+            f"{seconds[1]:.3f} s; 4x topics: {seconds[1] / seconds[0]:.1f}x time"
+        )
     with capsys.disabled():
         print("\n" + "\n".join(lines))
     assert len(lines) == len(FORMATS)

@@ -39,11 +39,11 @@ TYPES = 50
 MOTIONS = 8
 SENSORS = 100
 PAIRS = 187  # with the 13 planted and block rules: 200 constraints
-BLOCK = 5    # types per "motion control M_k only outside this block" rule
+BLOCK = 5  # types per "motion control M_k only outside this block" rule
 
-VOID_TYPE = TYPES - 1      # K49: voided by two rules
-CORE_TYPE = TYPES - 2      # K48: forced to motion control M0
-GAP_SENSOR = SENSORS - 2   # S98: in no presentation group
+VOID_TYPE = TYPES - 1  # K49: voided by two rules
+CORE_TYPE = TYPES - 2  # K48: forced to motion control M0
+GAP_SENSOR = SENSORS - 2  # S98: in no presentation group
 DEAD_SENSOR = SENSORS - 1  # S99: forbidden outright, alone in the group 'spare'
 
 
@@ -72,29 +72,51 @@ def rule_text(scale: int = 1) -> str:
     (the planted faults are the last two types and sensor types)."""
     types, sensors = TYPES * scale, SENSORS * scale
     void_type, core_type, gap_sensor, dead_sensor = types - 1, types - 2, sensors - 2, sensors - 1
-    lines = ["name: benchmark rule set", "bound: 20000  # wrong on purpose: T = 22000",
-             "characteristics:", "  kinematic_type:",
-             f"    values: [{', '.join(_type(i) for i in range(types))}]",
-             "  motion_control:", f"    values: [{', '.join(f'M{k}' for k in range(MOTIONS))}]",
-             "  sensor_type:", f"    values: [{', '.join(_sensor(j) for j in range(sensors))}]",
-             "    components:"]
+    lines = [
+        "name: benchmark rule set",
+        "bound: 20000  # wrong on purpose: T = 22000",
+        "characteristics:",
+        "  kinematic_type:",
+        f"    values: [{', '.join(_type(i) for i in range(types))}]",
+        "  motion_control:",
+        f"    values: [{', '.join(f'M{k}' for k in range(MOTIONS))}]",
+        "  sensor_type:",
+        f"    values: [{', '.join(_sensor(j) for j in range(sensors))}]",
+        "    components:",
+    ]
     for group in range(sensors // 10):
         members = [j for j in range(10 * group, 10 * group + 10) if j < gap_sensor]
-        lines += [f"      - name: g{group}",
-                  f"        values: [{', '.join(_sensor(j) for j in members)}]"]
-    lines += ["      - name: spare", f"        values: [{_sensor(dead_sensor)}]",
-              "  sensor_count:", "    range: {min: 1, max: 50}", "    components:"]
+        lines += [
+            f"      - name: g{group}",
+            f"        values: [{', '.join(_sensor(j) for j in members)}]",
+        ]
+    lines += [
+        "      - name: spare",
+        f"        values: [{_sensor(dead_sensor)}]",
+        "  sensor_count:",
+        "    range: {min: 1, max: 50}",
+        "    components:",
+    ]
     for low, high, size in ((1, 5, 1), (6, 10, 2), (11, 15, 3), (16, 25, 5), (26, 50, 10)):
-        lines += [f"      - name: clusters of {size}", f"        min: {low}",
-                  f"        max: {high}", f"        cluster_size: {size}"]
+        lines += [
+            f"      - name: clusters of {size}",
+            f"        min: {low}",
+            f"        max: {high}",
+            f"        cluster_size: {size}",
+        ]
     lines.append("constraints:")
     for i, j in pairs(scale):
-        lines += [f"  - name: no {_sensor(j)} on {_type(i)}",
-                  f"    forbid: {{kinematic_type: {_type(i)}, sensor_type: {_sensor(j)}}}"]
+        lines += [
+            f"  - name: no {_sensor(j)} on {_type(i)}",
+            f"    forbid: {{kinematic_type: {_type(i)}, sensor_type: {_sensor(j)}}}",
+        ]
     for k, block in blocks():
         allowed = [_type(i) for i in range(types) if i not in block]
-        lines += [f"  - name: M{k} only outside block {k}", f"    when: {{motion_control: M{k}}}",
-                  f"    require: {{kinematic_type: [{', '.join(allowed)}]}}"]
+        lines += [
+            f"  - name: M{k} only outside block {k}",
+            f"    when: {{motion_control: M{k}}}",
+            f"    require: {{kinematic_type: [{', '.join(allowed)}]}}",
+        ]
     lines += [
         f"  - name: {_type(void_type)} few",
         f"    forbid: {{kinematic_type: {_type(void_type)}, sensor_count: {{max: 25}}}}",
@@ -135,10 +157,14 @@ EXPECTED_PROBLEMS = expected_problems()
 
 def expected_dead_for_type(scale: int = 1) -> set[tuple[str, str]]:
     """(type's path, characteristic) for every type that loses values to its constraints."""
-    expected = {(f"characteristics.kinematic_type.values[{i}]", "sensor_type")
-                for i, _ in pairs(scale)}
-    expected |= {(f"characteristics.kinematic_type.values[{i}]", "motion_control")
-                 for _, block in blocks() for i in block}
+    expected = {
+        (f"characteristics.kinematic_type.values[{i}]", "sensor_type") for i, _ in pairs(scale)
+    }
+    expected |= {
+        (f"characteristics.kinematic_type.values[{i}]", "motion_control")
+        for _, block in blocks()
+        for i in block
+    }
     return expected
 
 
@@ -148,8 +174,11 @@ def _assert_findings(report: Report, scale: int = 1) -> None:
     counts = Counter(f.check for f in report.findings)
     assert counts["bound"] == 1
     assert counts["core-value"] == 1
-    dead_for_type = {(f.location.path, re.search(r" has (\w+) ", f.message).group(1))  # type: ignore[union-attr]
-                     for f in report.findings if f.check == "dead-for-type"}
+    dead_for_type = {
+        (f.location.path, re.search(r" has (\w+) ", f.message).group(1))  # type: ignore[union-attr]
+        for f in report.findings
+        if f.check == "dead-for-type"
+    }
     assert dead_for_type == expected_dead_for_type(scale)
     typed = TYPES * scale - 2  # every type but the void and core ones loses a sensor type
     assert counts["dead-for-type"] == typed + 35
@@ -161,13 +190,13 @@ def test_check_large_rule_set(benchmark: BenchmarkFixture, tmp_path: Path) -> No
     rules.write_text(rule_text(), encoding="utf-8")
     # pytest-benchmark ships no type hints.
     report = benchmark.pedantic(  # type: ignore[no-untyped-call]
-        check_files, args=([rules],), rounds=3, iterations=1)
+        check_files, args=([rules],), rounds=3, iterations=1
+    )
     _assert_findings(report)
 
 
 @pytest.mark.parametrize("scale", [1, 2, 4], ids=["x1", "x2", "x4"])
-def test_check_doubled_rule_sets(benchmark: BenchmarkFixture, tmp_path: Path,
-                                 scale: int) -> None:
+def test_check_doubled_rule_sets(benchmark: BenchmarkFixture, tmp_path: Path, scale: int) -> None:
     """The large rule set with types, sensor types and constraints doubled, then doubled again.
 
     The growth per doubling (x2/x1 and x4/x2 in the report of ``tools/bench_table.py``) is the
@@ -178,7 +207,8 @@ def test_check_doubled_rule_sets(benchmark: BenchmarkFixture, tmp_path: Path,
     rules.write_text(rule_text(scale), encoding="utf-8")
     # pytest-benchmark ships no type hints.
     report = benchmark.pedantic(  # type: ignore[no-untyped-call]
-        check_files, args=([rules],), rounds=3, iterations=1)
+        check_files, args=([rules],), rounds=3, iterations=1
+    )
     _assert_findings(report, scale)
 
 
@@ -187,19 +217,24 @@ SLIDING = 1000  # arrangements of 15 counts, each overlapping the next by 5
 
 def sliding_text() -> str:
     """Arrangement k covers 10k+1 .. 10k+15 of 1..10010: only neighbours overlap."""
-    windows = "\n".join(f"      - {{name: w{k}, min: {10 * k + 1}, max: {10 * k + 15}}}"
-                        for k in range(SLIDING))
-    return ("name: sliding arrangements\ncharacteristics:\n  kind: {values: [A, B]}\n  n:\n"
-            f"    range: {{min: 1, max: {10 * SLIDING + 10}}}\n    components:\n{windows}\n")
+    windows = "\n".join(
+        f"      - {{name: w{k}, min: {10 * k + 1}, max: {10 * k + 15}}}" for k in range(SLIDING)
+    )
+    return (
+        "name: sliding arrangements\ncharacteristics:\n  kind: {values: [A, B]}\n  n:\n"
+        f"    range: {{min: 1, max: {10 * SLIDING + 10}}}\n    components:\n{windows}\n"
+    )
 
 
-def test_check_non_transitive_of_1000_sliding_arrangements(benchmark: BenchmarkFixture,
-                                                            tmp_path: Path) -> None:
+def test_check_non_transitive_of_1000_sliding_arrangements(
+    benchmark: BenchmarkFixture, tmp_path: Path
+) -> None:
     rules = tmp_path / "sliding.yaml"
     rules.write_text(sliding_text(), encoding="utf-8")
     # pytest-benchmark ships no type hints.
     report = benchmark.pedantic(  # type: ignore[no-untyped-call]
-        check_files, args=([rules],), rounds=3, iterations=1)
+        check_files, args=([rules],), rounds=3, iterations=1
+    )
     counts = Counter(f.check for f in report.findings)
     # Each neighbouring pair: 10k+1 ~ 10k+11 ~ 10k+16, and 5 counts in both.
     assert counts["non-transitive"] == SLIDING - 1

@@ -47,13 +47,17 @@ def graph(robots: int, topics: int) -> Observation:
         pid=1,
         publishers=tuple((k, tuple(v)) for k, v in sorted(publishers.items())),
         subscribers=tuple((k, tuple(v)) for k, v in sorted(subscribers.items())),
-        topic_types=tuple(sorted(types.items())), param_names=tuple(sorted(params)))
+        topic_types=tuple(sorted(types.items())),
+        param_names=tuple(sorted(params)),
+    )
 
 
-@pytest.mark.parametrize(("robots", "topics"), [(20, 100), (200, 100)],
-                         ids=["20 robots x 100 topics", "200 robots x 100 topics"])
-def test_placing_the_topic_graph(benchmark: BenchmarkFixture, robots: int,
-                                 topics: int) -> None:
+@pytest.mark.parametrize(
+    ("robots", "topics"),
+    [(20, 100), (200, 100)],
+    ids=["20 robots x 100 topics", "200 robots x 100 topics"],
+)
+def test_placing_the_topic_graph(benchmark: BenchmarkFixture, robots: int, topics: int) -> None:
     seen = graph(robots, topics)
     profile = load_profile()
     found: tuple[RobotSource, ...] = benchmark(discover, seen, profile)
@@ -61,4 +65,5 @@ def test_placing_the_topic_graph(benchmark: BenchmarkFixture, robots: int,
     for source in found:
         # Each robot's own node decides the direction; tf topics are read by no rule.
         assert sorted((t.type, t.direction) for t in source.topics) == sorted(
-            [(IMAGE, "published")] * (topics // 2) + [(TWIST, "subscribed")] * (topics // 2))
+            [(IMAGE, "published")] * (topics // 2) + [(TWIST, "subscribed")] * (topics // 2)
+        )

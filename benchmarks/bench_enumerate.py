@@ -20,8 +20,9 @@ from solver.engines.fast import partition as partition_stream
 from solver.model import build_problem
 
 # 10 motion controls x (100 sensor types x 1..1000 sensors - 100 forbidden) = 999,000 robots.
-MILLION = Scale(types=1, motions=10, sensors=100, groups=10, counts=1_000, arrangements=5,
-                forbidden=100)
+MILLION = Scale(
+    types=1, motions=10, sensors=100, groups=10, counts=1_000, arrangements=5, forbidden=100
+)
 
 
 def test_enumerate_1e6_fast(benchmark: BenchmarkFixture, scaled) -> None:  # type: ignore[no-untyped-def]
@@ -36,7 +37,8 @@ def test_enumerate_1e6_csp(benchmark: BenchmarkFixture, scaled) -> None:  # type
     team: Team = scaled(MILLION)
     # One round: python-constraint takes seconds here, which is the point of the comparison.
     solution = benchmark.pedantic(  # type: ignore[no-untyped-call]  # untyped in pytest-benchmark
-        solve, args=(team,), kwargs={"engine": "csp"}, rounds=1, iterations=1)
+        solve, args=(team,), kwargs={"engine": "csp"}, rounds=1, iterations=1
+    )
     assert solution.totals.valid_robots == MILLION.robots
     assert solution.totals.ui_configurations == MILLION.configurations
 
@@ -51,8 +53,12 @@ def test_iterate_1e6_python_constraint(benchmark: BenchmarkFixture, scaled) -> N
         assert problem is not None
         return sum(1 for _ in problem.getSolutionIter())
 
-    assert benchmark.pedantic(  # type: ignore[no-untyped-call]  # untyped in pytest-benchmark
-        iterate, rounds=1, iterations=1) == MILLION.robots
+    assert (
+        benchmark.pedantic(  # type: ignore[no-untyped-call]  # untyped in pytest-benchmark
+            iterate, rounds=1, iterations=1
+        )
+        == MILLION.robots
+    )
 
 
 def one_component_team(folder: Path, modes: int) -> Team:
@@ -70,8 +76,7 @@ def one_component_team(folder: Path, modes: int) -> Team:
         "sensor_type": characteristics["sensor_type"],
         "sensor_count": characteristics["sensor_count"],
     }
-    (folder / "rules.yaml").write_text(yaml.safe_dump(rules, sort_keys=False),
-                                       encoding="utf-8")
+    (folder / "rules.yaml").write_text(yaml.safe_dump(rules, sort_keys=False), encoding="utf-8")
     (folder / "team.yaml").write_text("rules: rules.yaml\nteam:\n  T0: {}\n", encoding="utf-8")
     return load_team(folder / "team.yaml")
 
@@ -86,8 +91,9 @@ def peak_bytes(team: Team) -> tuple[int, int]:
         tracemalloc.stop()
 
 
-def test_enumeration_memory_does_not_grow_with_robots(benchmark: BenchmarkFixture,
-                                                      tmp_path: Path) -> None:
+def test_enumeration_memory_does_not_grow_with_robots(
+    benchmark: BenchmarkFixture, tmp_path: Path
+) -> None:
     (tmp_path / "small").mkdir()
     (tmp_path / "large").mkdir()
     small = one_component_team(tmp_path / "small", 10)
@@ -101,5 +107,6 @@ def test_enumeration_memory_does_not_grow_with_robots(benchmark: BenchmarkFixtur
     assert large_peak < 16 * BLOCK * 8  # a few block-sized arrays, whatever the robot count
     (selection,) = large.selections
     part = benchmark.pedantic(  # type: ignore[no-untyped-call]  # untyped in pytest-benchmark
-        partition_stream, args=(large.rules, selection), rounds=1, iterations=1)
+        partition_stream, args=(large.rules, selection), rounds=1, iterations=1
+    )
     assert len(part.classes) == 10 * 5

@@ -37,9 +37,11 @@ GRIPPER_TAIL = 3  # the chain's last joints are named as a gripper's fingers
 def star(links: int) -> str:
     parts = ['<robot name="star">', '<link name="base_link"/>']
     for i in range(1, links):
-        parts.append(f'<link name="l{i}"/><joint name="j{i}" type="revolute">'
-                     f'<parent link="base_link"/><child link="l{i}"/>'
-                     '<limit lower="-1" upper="1"/></joint>')
+        parts.append(
+            f'<link name="l{i}"/><joint name="j{i}" type="revolute">'
+            f'<parent link="base_link"/><child link="l{i}"/>'
+            '<limit lower="-1" upper="1"/></joint>'
+        )
     return "\n".join([*parts, "</robot>"])
 
 
@@ -47,9 +49,11 @@ def chain(links: int) -> str:
     parts = ['<robot name="chain">', '<link name="l0"/>']
     for i in range(1, links):
         name = f"finger_{i}" if i >= links - GRIPPER_TAIL else f"j{i}"
-        parts.append(f'<link name="l{i}"/><joint name="{name}" type="revolute">'
-                     f'<parent link="l{i - 1}"/><child link="l{i}"/>'
-                     '<limit lower="-1" upper="1"/></joint>')
+        parts.append(
+            f'<link name="l{i}"/><joint name="{name}" type="revolute">'
+            f'<parent link="l{i - 1}"/><child link="l{i}"/>'
+            '<limit lower="-1" upper="1"/></joint>'
+        )
     return "\n".join([*parts, "</robot>"])
 
 
@@ -66,13 +70,13 @@ RULES = load_rules(default_rules_path())
 
 @pytest.mark.parametrize("links", SIZES, ids=[f"{n} links" for n in SIZES])
 @pytest.mark.parametrize("shape", list(SHAPES), ids=list(SHAPES))
-def test_identifying_a_big_description(benchmark: BenchmarkFixture, shape: str,
-                                       links: int) -> None:
+def test_identifying_a_big_description(benchmark: BenchmarkFixture, shape: str, links: int) -> None:
     benchmark.group = f"identify {shape}"
     text = SHAPES[shape](links)
     # One round: the 80,000-link cases take seconds each.
     result = benchmark.pedantic(  # type: ignore[no-untyped-call]  # pedantic is unannotated
-        read, args=(text,), rounds=1, iterations=1)
+        read, args=(text,), rounds=1, iterations=1
+    )
     assert result.body is not None
     moved = sum(len(limb.joints) for limb in result.body.limbs) + len(result.body.trunk)
     if shape == "star":
@@ -96,8 +100,10 @@ def test_growth_ratio(capsys: pytest.CaptureFixture[str]) -> None:
             result = read(text)
             seconds.append(time.perf_counter() - start)
             assert result.body is not None
-        ratios = ", ".join(f"{links // SIZES[0]}x links: {t / seconds[0]:.1f}x time"
-                           for links, t in zip(SIZES[1:], seconds[1:], strict=True))
+        ratios = ", ".join(
+            f"{links // SIZES[0]}x links: {t / seconds[0]:.1f}x time"
+            for links, t in zip(SIZES[1:], seconds[1:], strict=True)
+        )
         lines.append(f"{shape}: {SIZES[0]} links {seconds[0]:.3f} s; {ratios}")
     with capsys.disabled():
         print("\n" + "\n".join(lines))

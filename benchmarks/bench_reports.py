@@ -47,8 +47,7 @@ def _teams(tmp_path: Path) -> Path:
     return folder
 
 
-def test_batch_solves_40_teams_in_one_process(benchmark: BenchmarkFixture,
-                                               tmp_path: Path) -> None:
+def test_batch_solves_40_teams_in_one_process(benchmark: BenchmarkFixture, tmp_path: Path) -> None:
     found = find_teams([str(_teams(tmp_path))])
 
     def run() -> list[tuple[str, int | None]]:
@@ -59,8 +58,9 @@ def test_batch_solves_40_teams_in_one_process(benchmark: BenchmarkFixture,
     assert outcomes == [("solved", 872)] * COPIES
 
 
-def test_batch_rerun_of_40_unchanged_teams_solves_nothing(benchmark: BenchmarkFixture,
-                                                          tmp_path: Path) -> None:
+def test_batch_rerun_of_40_unchanged_teams_solves_nothing(
+    benchmark: BenchmarkFixture, tmp_path: Path
+) -> None:
     found = find_teams([str(_teams(tmp_path))])
     list(run_batch(plan(found, tmp_path / "out"), workers=1))
 
@@ -75,15 +75,18 @@ def test_batch_rerun_of_40_unchanged_teams_solves_nothing(benchmark: BenchmarkFi
 WIDE = 100_000  # the most values a whole-number characteristic may have
 
 
-def test_radar_chart_of_a_count_spoke_of_100000_values_as_png(benchmark: BenchmarkFixture,
-                                                              tmp_path: Path) -> None:
+def test_radar_chart_of_a_count_spoke_of_100000_values_as_png(
+    benchmark: BenchmarkFixture, tmp_path: Path
+) -> None:
     (tmp_path / "wide.yaml").write_text(
         "characteristics:\n  kind: {values: [Rover, Drone]}\n"
         f"  count: {{range: {{min: 1, max: {WIDE}}}}}\n",
-        encoding="utf-8")
+        encoding="utf-8",
+    )
     (tmp_path / "t.yaml").write_text(
         f"rules: wide.yaml\nteam:\n  Rover: {{count: {WIDE}}}\n  Drone: {{count: [1, 2, 3]}}\n",
-        encoding="utf-8")
+        encoding="utf-8",
+    )
     solution = solve(load_team(tmp_path / "t.yaml"))
 
     def draw() -> tuple[int, int, bytes]:

@@ -54,14 +54,18 @@ class Fleet:
             robot = EmulatedRobot(self.domain, dict(os.environ), 24 if index % 2 else 16)
             if index < 5:
                 name = f"/uav{index}"
-                robot.node(f"{name}/camera_driver",
-                           publish=[(f"{name}/camera/image_raw", "sensor_msgs/msg/Image")])
+                robot.node(
+                    f"{name}/camera_driver",
+                    publish=[(f"{name}/camera/image_raw", "sensor_msgs/msg/Image")],
+                )
                 robot.describe(name, drone_text(), directory)
             else:
                 name = f"/ugv{index}"
-                robot.node(f"{name}/base_driver",
-                           subscribe=[(f"{name}/cmd_vel", "geometry_msgs/msg/Twist")],
-                           publish=[(f"{name}/scan", "sensor_msgs/msg/LaserScan")])
+                robot.node(
+                    f"{name}/base_driver",
+                    subscribe=[(f"{name}/cmd_vel", "geometry_msgs/msg/Twist")],
+                    publish=[(f"{name}/scan", "sensor_msgs/msg/LaserScan")],
+                )
                 robot.describe(name, rover_text(), directory)
             self.robots.append(robot)
             self.names.append(name)
@@ -90,8 +94,11 @@ class Fleet:
                 return at, data
 
     def expected(self, robot: str) -> int:
-        return drone_configuration(self.solution) if robot.startswith("/uav") \
+        return (
+            drone_configuration(self.solution)
+            if robot.startswith("/uav")
             else rover_configuration(self.solution)
+        )
 
     def close(self) -> None:
         self.watcher.stop("benchmark over")
@@ -112,17 +119,24 @@ def fleet(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Fleet]:
 def report(benchmark: BenchmarkFixture, name: str, latencies: list[float]) -> None:
     ordered = sorted(latencies)
     p95 = ordered[min(len(ordered) - 1, round(0.95 * (len(ordered) - 1)))]
-    benchmark.extra_info.update({"changes": len(ordered),
-                                 "median_ms": round(statistics.median(ordered) * 1000, 1),
-                                 "p95_ms": round(p95 * 1000, 1)})
+    benchmark.extra_info.update(
+        {
+            "changes": len(ordered),
+            "median_ms": round(statistics.median(ordered) * 1000, 1),
+            "p95_ms": round(p95 * 1000, 1),
+        }
+    )
     if not benchmark.disabled:
-        print(f"\n{name}: {len(ordered)} changes: median "
-              f"{statistics.median(ordered) * 1000:.1f} ms, 95th percentile "
-              f"{p95 * 1000:.1f} ms, max {ordered[-1] * 1000:.1f} ms")
+        print(
+            f"\n{name}: {len(ordered)} changes: median "
+            f"{statistics.median(ordered) * 1000:.1f} ms, 95th percentile "
+            f"{p95 * 1000:.1f} ms, max {ordered[-1] * 1000:.1f} ms"
+        )
 
 
-def test_active_robot_message_to_published_configuration(benchmark: BenchmarkFixture,
-                                                         fleet: Fleet) -> None:
+def test_active_robot_message_to_published_configuration(
+    benchmark: BenchmarkFixture, fleet: Fleet
+) -> None:
     order = itertools.cycle(fleet.names)
     latencies: list[float] = []
 
@@ -139,16 +153,19 @@ def test_active_robot_message_to_published_configuration(benchmark: BenchmarkFix
         assert answer["configuration"] == fleet.expected(robot)
 
     benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
-        switch, rounds=SWITCHES)
+        switch, rounds=SWITCHES
+    )
     report(benchmark, "active robot -> published configuration (10 robots)", latencies)
 
 
-def test_new_robots_description_to_its_first_event(benchmark: BenchmarkFixture,
-                                                   fleet: Fleet) -> None:
+def test_new_robots_description_to_its_first_event(
+    benchmark: BenchmarkFixture, fleet: Fleet
+) -> None:
     from cyclonedds.pub import DataWriter
     from cyclonedds.topic import Topic
 
     from tests.live.ros2_robot import LATCHED
+
     latencies: list[float] = []
     counter = itertools.count()
     writers: list[Any] = []
@@ -156,8 +173,11 @@ def test_new_robots_description_to_its_first_event(benchmark: BenchmarkFixture,
     def describe() -> None:
         name = f"/new{next(counter)}"
         participant = fleet.operator.participant
-        writer: Any = DataWriter(participant, Topic(participant, f"rt{name}/robot_description",
-                                               fleet.operator.String), qos=LATCHED)
+        writer: Any = DataWriter(
+            participant,
+            Topic(participant, f"rt{name}/robot_description", fleet.operator.String),
+            qos=LATCHED,
+        )
         writers.append(writer)
         start = time.perf_counter()
         writer.write(fleet.operator.String(drone_text()))
@@ -167,5 +187,6 @@ def test_new_robots_description_to_its_first_event(benchmark: BenchmarkFixture,
         assert (data["kinematic_type"], data["error"], data["sensors"]) == ("UAV", None, [])
 
     benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
-        describe, rounds=DESCRIPTIONS)
+        describe, rounds=DESCRIPTIONS
+    )
     report(benchmark, "new robot's description -> robot_added", latencies)

@@ -47,8 +47,9 @@ def test_solve_case3_whole_process(benchmark: BenchmarkFixture) -> None:
     subprocess.run(command, cwd=ROOT, env=environment, check=True, capture_output=True)
 
     def run() -> str:
-        return subprocess.run(command, cwd=ROOT, env=environment, check=True,
-                              capture_output=True, text=True).stdout
+        return subprocess.run(
+            command, cwd=ROOT, env=environment, check=True, capture_output=True, text=True
+        ).stdout
 
     output = benchmark(run)
     assert "total                        872                102" in output

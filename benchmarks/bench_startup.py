@@ -23,8 +23,9 @@ ENVIRONMENT = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTEC
 
 
 def _run(command: list[str]) -> str:
-    return subprocess.run(command, cwd=ROOT, env=ENVIRONMENT, check=True, capture_output=True,
-                          text=True).stdout
+    return subprocess.run(
+        command, cwd=ROOT, env=ENVIRONMENT, check=True, capture_output=True, text=True
+    ).stdout
 
 
 def test_start_bare_interpreter(benchmark: BenchmarkFixture) -> None:

@@ -28,22 +28,28 @@ def _write(directory: Path, counts: int) -> Path:
         "name: many counts\ncharacteristics:\n"
         f"  kinematic_type:\n    values: [{', '.join(names)}]\n"
         "  sensor_type:\n    values: [A, B, C]\n"
-        f"  sensor_count:\n    range: {{min: 1, max: {counts}}}\n", encoding="utf-8")
+        f"  sensor_count:\n    range: {{min: 1, max: {counts}}}\n",
+        encoding="utf-8",
+    )
     team = directory / "team.yaml"
     top = counts - counts // 100  # each type's maximum: all but the top 1% of counts
-    team.write_text("rules: rules.yaml\nteam:\n" + "".join(
-        f"  {name}:\n    sensor_type: [A, B]\n    sensor_count: {top}\n"
-        for name in names), encoding="utf-8")
+    team.write_text(
+        "rules: rules.yaml\nteam:\n"
+        + "".join(
+            f"  {name}:\n    sensor_type: [A, B]\n    sensor_count: {top}\n" for name in names
+        ),
+        encoding="utf-8",
+    )
     return team
 
 
 @pytest.mark.parametrize("counts", [1_000, 100_000], ids=["1e3 counts", "1e5 counts"])
-def test_read_team_of_100_types(benchmark: BenchmarkFixture, tmp_path: Path,
-                                counts: int) -> None:
+def test_read_team_of_100_types(benchmark: BenchmarkFixture, tmp_path: Path, counts: int) -> None:
     team_file = _write(tmp_path, counts)
     # pytest-benchmark ships no type hints.
     team = benchmark.pedantic(  # type: ignore[no-untyped-call]
-        load_team, args=(team_file,), rounds=5, iterations=1)
+        load_team, args=(team_file,), rounds=5, iterations=1
+    )
     assert len(team.selections) == TYPES
     top = counts - counts // 100
     assert {len(s.domains[2]) for s in team.selections} == {top}

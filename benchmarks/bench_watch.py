@@ -82,8 +82,9 @@ class Fleet:
         self.core = core
         self.solution = solution
         self.node = TestNode(core.uri)
-        self.robots = [f"/uav{i}" for i in range(ROBOTS // 2)] + \
-            [f"/ugv{i}" for i in range(ROBOTS // 2)]
+        self.robots = [f"/uav{i}" for i in range(ROBOTS // 2)] + [
+            f"/ugv{i}" for i in range(ROBOTS // 2)
+        ]
         for robot in self.robots:
             (put_drone if robot.startswith("/uav") else put_rover)(self.node, robot)
         self.watcher = Watcher(core.uri, solution, load_profile(), interval=INTERVAL)
@@ -137,14 +138,20 @@ def fleet(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Fleet]:
 def report(benchmark: BenchmarkFixture, name: str, latencies: list[float]) -> None:
     ordered = sorted(latencies)
     p95 = ordered[min(len(ordered) - 1, round(0.95 * (len(ordered) - 1)))]
-    benchmark.extra_info.update({"changes": len(ordered),
-                                 "median_ms": round(statistics.median(ordered) * 1000, 1),
-                                 "p95_ms": round(p95 * 1000, 1),
-                                 "max_ms": round(ordered[-1] * 1000, 1)})
+    benchmark.extra_info.update(
+        {
+            "changes": len(ordered),
+            "median_ms": round(statistics.median(ordered) * 1000, 1),
+            "p95_ms": round(p95 * 1000, 1),
+            "max_ms": round(ordered[-1] * 1000, 1),
+        }
+    )
     if not benchmark.disabled:
-        print(f"\n{name}: {len(ordered)} changes, change -> event: median "
-              f"{statistics.median(ordered) * 1000:.1f} ms, 95th percentile {p95 * 1000:.1f} "
-              f"ms, max {ordered[-1] * 1000:.1f} ms (polling interval {INTERVAL} s)")
+        print(
+            f"\n{name}: {len(ordered)} changes, change -> event: median "
+            f"{statistics.median(ordered) * 1000:.1f} ms, 95th percentile {p95 * 1000:.1f} "
+            f"ms, max {ordered[-1] * 1000:.1f} ms (polling interval {INTERVAL} s)"
+        )
 
 
 def test_switching_the_active_robot(benchmark: BenchmarkFixture, fleet: Fleet) -> None:
@@ -159,13 +166,16 @@ def test_switching_the_active_robot(benchmark: BenchmarkFixture, fleet: Fleet) -
         latencies.append(event.at - start)
         assert event.data["robot"] == robot
         assignment = event.data["assignment"]
-        assert assignment["configuration"] == (drone_configuration(fleet.solution)
-                                               if robot.startswith("/uav")
-                                               else rover_configuration(fleet.solution))
+        assert assignment["configuration"] == (
+            drone_configuration(fleet.solution)
+            if robot.startswith("/uav")
+            else rover_configuration(fleet.solution)
+        )
         return event.data
 
     benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
-        switch, setup=fleet.pause, rounds=SWITCHES)
+        switch, setup=fleet.pause, rounds=SWITCHES
+    )
     report(benchmark, "active robot switch", latencies)
 
 
@@ -186,15 +196,24 @@ def test_registering_a_robots_topics(benchmark: BenchmarkFixture, fleet: Fleet) 
         event = fleet.until(lambda d: d["event"] == "robot_changed")
         latencies.append(event.at - start)
         assert event.data["robot"] == "/ugv0"
-        assert [c["motion_control"] for c in event.data["motion_controls"]] == \
-            ["Driving", "Waypoint"]
+        assert [c["motion_control"] for c in event.data["motion_controls"]] == [
+            "Driving",
+            "Waypoint",
+        ]
         assert [c["configuration"] for c in event.data["combinations"]] == [
             rover_configuration(fleet.solution),
-            expected(fleet.solution, kinematic_type="UGV", motion_control="Waypoint",
-                     sensor_type="LIDAR", sensor_count="1")]
+            expected(
+                fleet.solution,
+                kinematic_type="UGV",
+                motion_control="Waypoint",
+                sensor_type="LIDAR",
+                sensor_count="1",
+            ),
+        ]
 
     benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
-        register, setup=unregister, rounds=ROUNDS)
+        register, setup=unregister, rounds=ROUNDS
+    )
     report(benchmark, "topics registered", latencies)
 
 
@@ -218,13 +237,15 @@ def test_setting_a_new_robots_description(benchmark: BenchmarkFixture, fleet: Fl
         assert event.data["kinematic_type"] == "UAV"
 
     benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
-        add, setup=remove, rounds=ROUNDS)
+        add, setup=remove, rounds=ROUNDS
+    )
     report(benchmark, "description set", latencies)
 
 
 @pytest.mark.parametrize("cached", [False, True], ids=["parsed", "cached"])
-def test_setting_a_large_description(benchmark: BenchmarkFixture, fleet: Fleet,
-                                     cached: bool) -> None:
+def test_setting_a_large_description(
+    benchmark: BenchmarkFixture, fleet: Fleet, cached: bool
+) -> None:
     """A 1.5 MB URDF: identified from scratch, or answered by the cache (same content seen)."""
     latencies: list[float] = []
     key = "/big/robot_description"
@@ -253,6 +274,10 @@ def test_setting_a_large_description(benchmark: BenchmarkFixture, fleet: Fleet,
         remove()
         add()  # seen once: from now on in the cache
     benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
-        add, setup=remove, rounds=ROUNDS // 4)
-    report(benchmark, f"large description set ({'cached' if cached else 'parsed'})",
-           latencies[1:] if cached else latencies)
+        add, setup=remove, rounds=ROUNDS // 4
+    )
+    report(
+        benchmark,
+        f"large description set ({'cached' if cached else 'parsed'})",
+        latencies[1:] if cached else latencies,
+    )

@@ -50,30 +50,57 @@ class Scale:
                 "motion_control": {"values": [f"M{i}" for i in range(self.motions)]},
                 "sensor_type": {
                     "values": [f"S{i}" for i in range(self.sensors)],
-                    "components": [{"name": f"G{g}", "values": [
-                        f"S{i}" for i in range(self.sensors) if i % self.groups == g]}
-                        for g in range(self.groups)]},
+                    "components": [
+                        {
+                            "name": f"G{g}",
+                            "values": [
+                                f"S{i}" for i in range(self.sensors) if i % self.groups == g
+                            ],
+                        }
+                        for g in range(self.groups)
+                    ],
+                },
                 "sensor_count": {
                     "range": {"min": 1, "max": self.counts},
-                    "components": [{"name": f"A{a}", "min": a * step + 1,
-                                    "max": self.counts if a == self.arrangements - 1
-                                    else (a + 1) * step, "cluster_size": a + 1}
-                                   for a in range(self.arrangements)]},
+                    "components": [
+                        {
+                            "name": f"A{a}",
+                            "min": a * step + 1,
+                            "max": self.counts if a == self.arrangements - 1 else (a + 1) * step,
+                            "cluster_size": a + 1,
+                        }
+                        for a in range(self.arrangements)
+                    ],
+                },
             },
         }
         if self.forbidden:
-            data["constraints"] = [{"name": "S0 carries few sensors", "forbid": {
-                "sensor_type": "S0", "sensor_count": {"min": self.counts - self.forbidden + 1}}}]
+            data["constraints"] = [
+                {
+                    "name": "S0 carries few sensors",
+                    "forbid": {
+                        "sensor_type": "S0",
+                        "sensor_count": {"min": self.counts - self.forbidden + 1},
+                    },
+                }
+            ]
         return data
 
     def team(self, folder: Path) -> Team:
         rules_path = folder / "rules.yaml"
         rules_path.write_text(yaml.safe_dump(self.rules(), sort_keys=False), encoding="utf-8")
         team_path = folder / "team.yaml"
-        team_path.write_text(yaml.safe_dump(
-            {"name": f"scaled {self.robots:.0e}", "rules": "rules.yaml",
-             "team": {f"T{i}": {} for i in range(self.types)}}, sort_keys=False),
-            encoding="utf-8")
+        team_path.write_text(
+            yaml.safe_dump(
+                {
+                    "name": f"scaled {self.robots:.0e}",
+                    "rules": "rules.yaml",
+                    "team": {f"T{i}": {} for i in range(self.types)},
+                },
+                sort_keys=False,
+            ),
+            encoding="utf-8",
+        )
         return load_team(team_path)
 
 

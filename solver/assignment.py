@@ -58,8 +58,11 @@ def parse_combination(pairs: list[str] | tuple[str, ...]) -> dict[str, str]:
             raise InputError.at("<arguments>", f"{name.strip()!r} is given twice")
         if any(char.isdecimal() and not char.isascii() for char in value):
             # int() reads '٣' as 3; a command line value is written in ASCII digits or refused.
-            raise InputError.at("<arguments>", f"{value.strip()!r} has non-ASCII digits; "
-                                               "write numbers as 0-9", path=name.strip())
+            raise InputError.at(
+                "<arguments>",
+                f"{value.strip()!r} has non-ASCII digits; write numbers as 0-9",
+                path=name.strip(),
+            )
         combination[name.strip()] = value.strip()
     return combination
 
@@ -69,13 +72,17 @@ def check_names(rules: RuleSet, names: Iterable[str]) -> None:
     characteristic name is a usage mistake, unlike a value the rules do not allow."""
     for name in names:
         if name not in rules.names:
-            raise InputError.at("<arguments>", f"unknown characteristic {name!r}"
-                                               f"{did_you_mean(name, rules.names)}; the rules "
-                                               f"({rules.file}) have: {', '.join(rules.names)}")
+            raise InputError.at(
+                "<arguments>",
+                f"unknown characteristic {name!r}"
+                f"{did_you_mean(name, rules.names)}; the rules "
+                f"({rules.file}) have: {', '.join(rules.names)}",
+            )
 
 
-def assign(solution: Solution, combination: Mapping[str, str | int] | None = None, /,
-           **by_name: str | int) -> Assignment:
+def assign(
+    solution: Solution, combination: Mapping[str, str | int] | None = None, /, **by_name: str | int
+) -> Assignment:
     """The configuration for ``combination`` (characteristic name -> value) in ``solution``.
 
     The values may be given as a mapping, as keywords (``assign(solution, kinematic_type="UAV",
@@ -86,8 +93,9 @@ def assign(solution: Solution, combination: Mapping[str, str | int] | None = Non
     combination = {**(combination or {}), **by_name}
     rules = solution.rules
     check_names(rules, combination)
-    given = tuple((c.name, str(combination[c.name])) for c in rules.characteristics
-                  if c.name in combination)
+    given = tuple(
+        (c.name, str(combination[c.name])) for c in rules.characteristics if c.name in combination
+    )
     reasons: list[str] = []
     values: dict[str, Value] = {}
     for characteristic in rules.characteristics:
@@ -100,20 +108,25 @@ def assign(solution: Solution, combination: Mapping[str, str | int] | None = Non
             reasons.append(_unknown(characteristic, text))
         else:
             values[characteristic.name] = value
-    relevant = tuple((name, tuple(c.name for c in rules.characteristic(name).components_of(v)))
-                     for name, v in values.items())
+    relevant = tuple(
+        (name, tuple(c.name for c in rules.characteristic(name).components_of(v)))
+        for name, v in values.items()
+    )
     if not reasons:
         robot = tuple(values[name] for name in rules.names)
         reasons = _team_reasons(solution, values) or [
             f"breaks rule {rule.describe()} at {rule.location}"
-            for rule in violated_constraints(rules, robot)]
+            for rule in violated_constraints(rules, robot)
+        ]
         if not reasons:
             configuration = solution.configuration_for(robot)
             if configuration is not None:
                 return Assignment(given, configuration.number, configuration, (), relevant)
-            reasons = [f"{name} {value} is in no component of the rules (a gap)"
-                       for name, value in values.items()
-                       if not rules.characteristic(name).components_of(value)]
+            reasons = [
+                f"{name} {value} is in no component of the rules (a gap)"
+                for name, value in values.items()
+                if not rules.characteristic(name).components_of(value)
+            ]
     return Assignment(given, solution.default_configuration, None, tuple(reasons), relevant)
 
 
@@ -131,18 +144,27 @@ def _team_reasons(solution: Solution, values: dict[str, Value]) -> list[str]:
     kinematic_type = str(values[rules.team_key])
     selection = team.selection(kinematic_type)
     if selection is None:
-        return [f"{rules.key.label.lower()} {kinematic_type!r} is not in team {team.name!r} "
-                f"(it has {', '.join(team.kinematic_types)})"]
+        return [
+            f"{rules.key.label.lower()} {kinematic_type!r} is not in team {team.name!r} "
+            f"(it has {', '.join(team.kinematic_types)})"
+        ]
     reasons = []
     for characteristic, domain in zip(rules.characteristics, selection.domains, strict=True):
         value = values[characteristic.name]
         if value in domain:
             continue
-        if characteristic.kind == "integer" and isinstance(value, int) \
-                and value > max(int(v) for v in domain):
-            reasons.append(f"{value} is more than the {kinematic_type} maximum of "
-                           f"{max(int(v) for v in domain)} for {characteristic.name}")
+        if (
+            characteristic.kind == "integer"
+            and isinstance(value, int)
+            and value > max(int(v) for v in domain)
+        ):
+            reasons.append(
+                f"{value} is more than the {kinematic_type} maximum of "
+                f"{max(int(v) for v in domain)} for {characteristic.name}"
+            )
         else:
-            reasons.append(f"{characteristic.name} {value!r} is not selected for "
-                           f"{kinematic_type} in team {team.name!r}")
+            reasons.append(
+                f"{characteristic.name} {value!r} is not selected for "
+                f"{kinematic_type} in team {team.name!r}"
+            )
     return reasons

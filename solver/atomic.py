@@ -36,11 +36,18 @@ def write_all_atomic(files: Mapping[str | Path, str | bytes]) -> list[Path]:
     """
     # backslashreplace: a file name that is not UTF-8 (its bytes arrive as surrogate escapes)
     # is written as "\udcff", readable text, instead of failing the whole write.
-    targets = [(Path(path), content.encode("utf-8", "backslashreplace")
-                if isinstance(content, str) else content)
-               for path, content in files.items()]
-    faults = [Fault(Location(str(target)), "is a folder; cannot write a file there", "invalid")
-              for target, _ in targets if target.is_dir()]
+    targets = [
+        (
+            Path(path),
+            content.encode("utf-8", "backslashreplace") if isinstance(content, str) else content,
+        )
+        for path, content in files.items()
+    ]
+    faults = [
+        Fault(Location(str(target)), "is a folder; cannot write a file there", "invalid")
+        for target, _ in targets
+        if target.is_dir()
+    ]
     if faults:
         raise InputError(faults)
     temporaries: list[tuple[Path, Path]] = []
@@ -62,8 +69,7 @@ def _temporary(target: Path, data: bytes) -> Path:
         folder.mkdir(parents=True, exist_ok=True)
         handle, name = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=folder)
     except OSError as error:
-        raise InputError.at(str(target), f"cannot write here: {error.strerror or error}") \
-            from None
+        raise InputError.at(str(target), f"cannot write here: {error.strerror or error}") from None
     temporary = Path(name)
     try:
         with os.fdopen(handle, "wb") as stream:
@@ -77,8 +83,7 @@ def _temporary(target: Path, data: bytes) -> Path:
         with contextlib.suppress(OSError):
             temporary.unlink()
         if isinstance(error, OSError):
-            raise InputError.at(str(target), f"cannot write: {error.strerror or error}") \
-                from None
+            raise InputError.at(str(target), f"cannot write: {error.strerror or error}") from None
         raise
     return temporary
 
@@ -105,8 +110,9 @@ def _replace_all(temporaries: list[tuple[Path, Path]]) -> None:
                 else:
                     target.unlink()
         if isinstance(error, OSError):
-            raise InputError.at(str(temporaries[len(done)][1]),
-                                f"cannot write: {error.strerror or error}") from None
+            raise InputError.at(
+                str(temporaries[len(done)][1]), f"cannot write: {error.strerror or error}"
+            ) from None
         raise
     finally:
         for _, backup in done:

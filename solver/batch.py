@@ -94,19 +94,21 @@ class Job:
     """One team file and where its outputs go."""
 
     team_file: Path
-    shown: str                     # the file as the user's pattern found it
-    out: Path                      # the output folder
-    output: Path                   # the per-team JSON
+    shown: str  # the file as the user's pattern found it
+    out: Path  # the output folder
+    output: Path  # the per-team JSON
     stamp: Path
-    report: Path | None = None     # the per-team report, when asked for
-    rules: str | None = None       # a rule file that overrides the team's own
+    report: Path | None = None  # the per-team report, when asked for
+    rules: str | None = None  # a rule file that overrides the team's own
     up_to_date: bool = False
 
     @property
     def options(self) -> dict[str, Any]:
         """What besides the input files shapes the outputs (recorded in the stamp)."""
-        return {"rules": None if self.rules is None else str(Path(self.rules).resolve()),
-                "report": None if self.report is None else self.report.suffix}
+        return {
+            "rules": None if self.rules is None else str(Path(self.rules).resolve()),
+            "report": None if self.report is None else self.report.suffix,
+        }
 
     @property
     def outputs(self) -> tuple[Path, ...]:
@@ -153,6 +155,7 @@ class Outcome:
 
 # ---- 1. finding the team files -------------------------------------------------------------
 
+
 def find_teams(patterns: Sequence[str]) -> list[tuple[Path, str]]:
     """The team files named by ``patterns``: ``(path, shown)`` pairs in a stable order.
 
@@ -170,16 +173,23 @@ def find_teams(patterns: Sequence[str]) -> list[tuple[Path, str]]:
         if not pattern.strip():
             # Path("") is the current folder: an empty pattern (an unset shell variable)
             # would quietly batch everything below it.
-            faults.append(Fault(Location("<arguments>"), f"empty pattern {pattern!r}: name "
-                                "team files, folders or globs ('.' for the current folder)",
-                                "no-match"))
+            faults.append(
+                Fault(
+                    Location("<arguments>"),
+                    f"empty pattern {pattern!r}: name "
+                    "team files, folders or globs ('.' for the current folder)",
+                    "no-match",
+                )
+            )
             continue
         if _PATTERN_CHARACTERS & set(pattern):
-            matches = sorted(m for m in glob.glob(pattern, recursive=True)
-                             if Path(m).is_file())
+            matches = sorted(m for m in glob.glob(pattern, recursive=True) if Path(m).is_file())
         elif Path(pattern).is_dir():
-            matches = sorted(str(p) for p in Path(pattern).rglob("*")
-                             if p.suffix.lower() in _TEAM_SUFFIXES and p.is_file())
+            matches = sorted(
+                str(p)
+                for p in Path(pattern).rglob("*")
+                if p.suffix.lower() in _TEAM_SUFFIXES and p.is_file()
+            )
         elif Path(pattern).is_file():
             matches = [pattern]
         elif resolve_team_path(pattern).is_file():
@@ -189,8 +199,11 @@ def find_teams(patterns: Sequence[str]) -> list[tuple[Path, str]]:
             faults.append(Fault(Location(pattern), "no such file or folder", "no-match"))
             continue
         if not matches:
-            what = "folder holds no .yaml or .yml file" if Path(pattern).is_dir() \
+            what = (
+                "folder holds no .yaml or .yml file"
+                if Path(pattern).is_dir()
                 else "pattern matches no file"
+            )
             faults.append(Fault(Location(pattern), what, "no-match"))
         for match in matches:
             resolved = Path(match).resolve()
@@ -204,6 +217,7 @@ def find_teams(patterns: Sequence[str]) -> list[tuple[Path, str]]:
 
 # ---- 2. planning the outputs ---------------------------------------------------------------
 
+
 def _relative_names(paths: Sequence[Path]) -> list[Path]:
     """Each file's path below the deepest folder common to all, without its suffix."""
     if not paths:
@@ -215,22 +229,34 @@ def _relative_names(paths: Sequence[Path]) -> list[Path]:
     counts: dict[Path, int] = {}
     for name in names:
         counts[name] = counts.get(name, 0) + 1
-    return [p.relative_to(root) if counts[n] > 1 else n
-            for p, n in zip(resolved, names, strict=True)]
+    return [
+        p.relative_to(root) if counts[n] > 1 else n for p, n in zip(resolved, names, strict=True)
+    ]
 
 
-def plan(teams: Sequence[tuple[Path, str]], out: str | Path, *, rules: str | None = None,
-         report: ReportFormat | None = None, force: bool = False) -> list[Job]:
+def plan(
+    teams: Sequence[tuple[Path, str]],
+    out: str | Path,
+    *,
+    rules: str | None = None,
+    report: ReportFormat | None = None,
+    force: bool = False,
+) -> list[Job]:
     """One :class:`Job` per team file, in order, with ``up_to_date`` decided (see module)."""
     folder = Path(out)
     outputs = folder / TEAM_OUTPUTS  # apart from the summaries: see "Layout" above
     jobs = []
-    for (path, shown), name in zip(teams, _relative_names([p for p, _ in teams]),
-                                   strict=True):
+    for (path, shown), name in zip(teams, _relative_names([p for p, _ in teams]), strict=True):
         output = outputs / f"{name}.json"
-        job = Job(path, shown, folder, output, folder / STAMPS / f"{name}.json",
-                  None if report is None else outputs / f"{name}{_REPORT_SUFFIX[report]}",
-                  rules)
+        job = Job(
+            path,
+            shown,
+            folder,
+            output,
+            folder / STAMPS / f"{name}.json",
+            None if report is None else outputs / f"{name}{_REPORT_SUFFIX[report]}",
+            rules,
+        )
         jobs.append(replace(job, up_to_date=not force and _is_up_to_date(job)))
     return jobs
 
@@ -256,11 +282,13 @@ def _read_json(path: Path) -> Any:
 
 def _is_up_to_date(job: Job) -> bool:
     stamp = _read_json(job.stamp)
-    if not isinstance(stamp, dict) or stamp.get("teleop_ui") != _version() \
-            or stamp.get("options") != job.options:
+    if (
+        not isinstance(stamp, dict)
+        or stamp.get("teleop_ui") != _version()
+        or stamp.get("options") != job.options
+    ):
         return False
-    if not all(p.is_file() for p in job.outputs) or \
-            not isinstance(_read_json(job.output), dict):
+    if not all(p.is_file() for p in job.outputs) or not isinstance(_read_json(job.output), dict):
         return False
     if stamp.get("team_sha256") != _sha256(job.team_file):
         return False
@@ -269,6 +297,7 @@ def _is_up_to_date(job: Job) -> bool:
 
 
 # ---- 3. solving ---------------------------------------------------------------------------
+
 
 def _rules_file(job: Job, data: Any) -> Path:
     """The rule file a team uses, found as :func:`solver.team.load_team` finds it."""
@@ -286,20 +315,28 @@ def _row(job: Job, data: dict[str, Any]) -> SummaryRow:
     figures = reproduced = ""
     if isinstance(published, dict):
         figures = f"{published.get('valid_robots')} / {published.get('ui_configurations')}"
-        agrees = (published.get("valid_robots"), published.get("ui_configurations")) == \
-            (totals.get("valid_robots"), totals.get("ui_configurations"))
+        agrees = (published.get("valid_robots"), published.get("ui_configurations")) == (
+            totals.get("valid_robots"),
+            totals.get("ui_configurations"),
+        )
         reproduced = "yes" if agrees else "no"
-    return SummaryRow(file=job.shown, status="ok", team=str(data.get("team", "")),
-                      rules=str(data.get("rules", "")),
-                      rules_file=str(data.get("rules_file", "")),
-                      kinematic_types=len(data.get("by_type", [])),
-                      valid_robots=totals.get("valid_robots"),
-                      ui_configurations=totals.get("ui_configurations"),
-                      default_configuration=data.get("default_configuration"),
-                      published=figures, reproduced=reproduced,
-                      message="; ".join(f"warning: {w}" for w in data.get("warnings", [])),
-                      output=" ".join(p.relative_to(job.out).as_posix()
-                                      for p in (job.output, job.report) if p is not None))
+    return SummaryRow(
+        file=job.shown,
+        status="ok",
+        team=str(data.get("team", "")),
+        rules=str(data.get("rules", "")),
+        rules_file=str(data.get("rules_file", "")),
+        kinematic_types=len(data.get("by_type", [])),
+        valid_robots=totals.get("valid_robots"),
+        ui_configurations=totals.get("ui_configurations"),
+        default_configuration=data.get("default_configuration"),
+        published=figures,
+        reproduced=reproduced,
+        message="; ".join(f"warning: {w}" for w in data.get("warnings", [])),
+        output=" ".join(
+            p.relative_to(job.out).as_posix() for p in (job.output, job.report) if p is not None
+        ),
+    )
 
 
 def _remove_outputs(job: Job) -> None:
@@ -322,9 +359,11 @@ def run_job(job: Job) -> Outcome:
         kind = file_kind(document)
         if kind in ("rules", "profile"):
             what = "a rule set" if kind == "rules" else "an identification profile"
-            row = SummaryRow(file=job.shown, status="skipped",
-                             message=f"not a team file: {what} (it has 'characteristics:' "
-                                     "and no 'team:')")
+            row = SummaryRow(
+                file=job.shown,
+                status="skipped",
+                message=f"not a team file: {what} (it has 'characteristics:' and no 'team:')",
+            )
             return Outcome(job, "skipped", row, time.perf_counter() - started)
         rules_file = _rules_file(job, document.data)
         rules_hash = _sha256(rules_file)
@@ -334,20 +373,28 @@ def run_job(job: Job) -> Outcome:
         write_atomic(job.output, dumps(data))
         if job.report is not None:
             write_report(solution, job.report)
-        stamp = {"teleop_ui": _version(), "team_file": str(job.team_file.resolve()),
-                 "team_sha256": team_hash, "rules_file": str(rules_file.resolve()),
-                 "rules_sha256": rules_hash, "options": job.options}
+        stamp = {
+            "teleop_ui": _version(),
+            "team_file": str(job.team_file.resolve()),
+            "team_sha256": team_hash,
+            "rules_file": str(rules_file.resolve()),
+            "rules_sha256": rules_hash,
+            "options": job.options,
+        }
         write_atomic(job.stamp, dumps(stamp))
     except SolverError as error:
         message = str(error)
     except Exception as error:  # one team's bug must not stop the batch: report it
-        message = f"{job.shown}: internal error (please report it): " \
-                  f"{type(error).__name__}: {error}"
+        message = f"{job.shown}: internal error (please report it): {type(error).__name__}: {error}"
     else:
         return Outcome(job, "solved", _row(job, data), time.perf_counter() - started)
     _remove_outputs(job)
-    return Outcome(job, "failed", SummaryRow(file=job.shown, status="failed", message=message),
-                   time.perf_counter() - started)
+    return Outcome(
+        job,
+        "failed",
+        SummaryRow(file=job.shown, status="failed", message=message),
+        time.perf_counter() - started,
+    )
 
 
 def _up_to_date(job: Job) -> Outcome:
@@ -381,10 +428,13 @@ def run_batch(jobs: Sequence[Job], workers: int = 1) -> Iterator[Outcome]:
     # clean single-threaded server.
     methods = multiprocessing.get_all_start_methods()
     context = multiprocessing.get_context("forkserver" if "forkserver" in methods else "spawn")
-    with ProcessPoolExecutor(max_workers=min(workers, len(pending)), mp_context=context,
-                             initializer=_watch_parent, initargs=(os.getpid(),)) as pool:
-        futures: dict[Future[Outcome], Job] = {pool.submit(run_job, job): job
-                                               for job in pending}
+    with ProcessPoolExecutor(
+        max_workers=min(workers, len(pending)),
+        mp_context=context,
+        initializer=_watch_parent,
+        initargs=(os.getpid(),),
+    ) as pool:
+        futures: dict[Future[Outcome], Job] = {pool.submit(run_job, job): job for job in pending}
         for future in as_completed(futures):
             try:
                 yield future.result()
@@ -392,9 +442,15 @@ def run_batch(jobs: Sequence[Job], workers: int = 1) -> Iterator[Outcome]:
                 # A worker died (killed, out of memory): its team and those queued behind
                 # it fail; the rest of the batch is reported as usual.
                 job = futures[future]
-                yield Outcome(job, "failed", SummaryRow(
-                    file=job.shown, status="failed",
-                    message=f"{job.shown}: the worker process solving it died ({error})"))
+                yield Outcome(
+                    job,
+                    "failed",
+                    SummaryRow(
+                        file=job.shown,
+                        status="failed",
+                        message=f"{job.shown}: the worker process solving it died ({error})",
+                    ),
+                )
 
 
 def _watch_parent(batch_pid: int) -> None:
@@ -426,9 +482,21 @@ def _watch_parent(batch_pid: int) -> None:
 
 # ---- 4. the summary -----------------------------------------------------------------------
 
-_FIELDS = ("file", "status", "team", "rules", "rules_file", "kinematic_types", "valid_robots",
-           "ui_configurations", "default_configuration", "published", "reproduced", "output",
-           "message")
+_FIELDS = (
+    "file",
+    "status",
+    "team",
+    "rules",
+    "rules_file",
+    "kinematic_types",
+    "valid_robots",
+    "ui_configurations",
+    "default_configuration",
+    "published",
+    "reproduced",
+    "output",
+    "message",
+)
 
 
 def _cells(row: SummaryRow) -> list[str]:
@@ -450,25 +518,54 @@ def summary_markdown(rows: Sequence[SummaryRow]) -> str:
 
     Names and messages are escaped (:mod:`solver.markdown`): they come from the team files.
     """
-    counts = {status: sum(1 for r in rows if r.status == status)
-              for status in ("ok", "failed", "skipped")}
-    headers = ["file", "status", "team", "rules", "valid robots", "UI configurations",
-               "published", "reproduced", "output", "message"]
-    table = [[r.file, r.status, r.team, r.rules, r.valid_robots, r.ui_configurations,
-              r.published, r.reproduced, r.output, r.message.replace("\n", "; ")]
-             for r in rows]
-    return (f"# Batch summary\n\n{len(rows)} team files: {counts['ok']} ok, "
-            f"{counts['failed']} failed, {counts['skipped']} skipped\n\n"
-            + markdown.table(headers, table, [False, False, False, False, True, True, False,
-                                              False, False, False]))
+    counts = {
+        status: sum(1 for r in rows if r.status == status) for status in ("ok", "failed", "skipped")
+    }
+    headers = [
+        "file",
+        "status",
+        "team",
+        "rules",
+        "valid robots",
+        "UI configurations",
+        "published",
+        "reproduced",
+        "output",
+        "message",
+    ]
+    table = [
+        [
+            r.file,
+            r.status,
+            r.team,
+            r.rules,
+            r.valid_robots,
+            r.ui_configurations,
+            r.published,
+            r.reproduced,
+            r.output,
+            r.message.replace("\n", "; "),
+        ]
+        for r in rows
+    ]
+    return (
+        f"# Batch summary\n\n{len(rows)} team files: {counts['ok']} ok, "
+        f"{counts['failed']} failed, {counts['skipped']} skipped\n\n"
+        + markdown.table(
+            headers, table, [False, False, False, False, True, True, False, False, False, False]
+        )
+    )
 
 
-def write_summary(outcomes: Sequence[Outcome], jobs: Sequence[Job], out: str | Path
-                  ) -> tuple[list[SummaryRow], list[Path]]:
+def write_summary(
+    outcomes: Sequence[Outcome], jobs: Sequence[Job], out: str | Path
+) -> tuple[list[SummaryRow], list[Path]]:
     """Write ``summary.csv`` and ``summary.md`` in ``out``, rows in the order of ``jobs``."""
     by_job = {o.job: o.row for o in outcomes}
     rows = [by_job[job] for job in jobs if job in by_job]
     folder = Path(out)
-    written = [write_atomic(folder / SUMMARY_FILES[0], summary_csv(rows)),
-               write_atomic(folder / SUMMARY_FILES[1], summary_markdown(rows))]
+    written = [
+        write_atomic(folder / SUMMARY_FILES[0], summary_csv(rows)),
+        write_atomic(folder / SUMMARY_FILES[1], summary_markdown(rows)),
+    ]
     return rows, written

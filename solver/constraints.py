@@ -82,14 +82,17 @@ class RuleConstraint:
         when = tuple((order[c.characteristic], c.allowed) for c in self.when)
         then = tuple((order[c.characteristic], c.allowed) for c in self.conditions)
         if self.kind == "forbid":
+
             def forbids(*values: Value) -> bool:
                 return not all(values[i] in allowed for i, allowed in then)
+
             return forbids
 
         def requires(*values: Value) -> bool:
             if not all(values[i] in allowed for i, allowed in when):
                 return True
             return all(values[i] in allowed for i, allowed in then)
+
         return requires
 
     def describe(self) -> str:
@@ -97,8 +100,12 @@ class RuleConstraint:
         if self.kind == "forbid":
             body = "forbid " + " and ".join(str(c) for c in self.conditions)
         elif self.when:
-            body = ("when " + " and ".join(str(c) for c in self.when) + " require "
-                    + " and ".join(str(c) for c in self.conditions))
+            body = (
+                "when "
+                + " and ".join(str(c) for c in self.when)
+                + " require "
+                + " and ".join(str(c) for c in self.conditions)
+            )
         else:
             body = "require " + " and ".join(str(c) for c in self.conditions)
         return f"{self.name!r} ({body})"

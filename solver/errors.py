@@ -80,8 +80,16 @@ class SolverError(Exception):
         super().__init__("\n".join(str(fault) for fault in self.faults))
 
     @classmethod
-    def at(cls, file: str, message: str, *, line: int | None = None, column: int | None = None,
-           path: str = "", code: str = "invalid") -> Self:
+    def at(
+        cls,
+        file: str,
+        message: str,
+        *,
+        line: int | None = None,
+        column: int | None = None,
+        path: str = "",
+        code: str = "invalid",
+    ) -> Self:
         """An error with a single fault, built in one call."""
         return cls(Fault(Location(file, line, column, path), message, code))
 
@@ -128,6 +136,7 @@ def did_you_mean(word: str, choices: Iterable[str]) -> str:
     if not matches:
         # Abbreviations ("Mic" for "Microphone") and case slips are too short for difflib.
         lowered = word.lower()
-        matches = [o for o in options if o.lower() == lowered] or \
-            ([o for o in options if o.lower().startswith(lowered)] if len(word) >= 2 else [])
+        matches = [o for o in options if o.lower() == lowered] or (
+            [o for o in options if o.lower().startswith(lowered)] if len(word) >= 2 else []
+        )
     return f" (did you mean {matches[0]!r}?)" if matches else ""

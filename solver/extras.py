@@ -20,8 +20,7 @@ from solver.errors import Fault, Location, MissingExtraError
 __all__ = ["EXTRAS", "require"]
 
 # The extra that installs each optional top-level module (kept in step with pyproject.toml).
-EXTRAS: dict[str, str] = {"matplotlib": "plots", "lxml": "ros", "rosbags": "ros",
-                          "xacro": "xacro"}
+EXTRAS: dict[str, str] = {"matplotlib": "plots", "lxml": "ros", "rosbags": "ros", "xacro": "xacro"}
 
 
 def require(module: str, *, feature: str) -> None:
@@ -34,7 +33,11 @@ def require(module: str, *, feature: str) -> None:
     if found:
         return
     extra = EXTRAS[module]
-    raise MissingExtraError(Fault(
-        Location(feature),
-        f"needs {module}, which is not installed; install the {extra!r} extra: "
-        f"pip install 'teleop-ui[{extra}]' (or 'teleop-ui[all]')", "missing-extra"))
+    raise MissingExtraError(
+        Fault(
+            Location(feature),
+            f"needs {module}, which is not installed; install the {extra!r} extra: "
+            f"pip install 'teleop-ui[{extra}]' (or 'teleop-ui[all]')",
+            "missing-extra",
+        )
+    )

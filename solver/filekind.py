@@ -30,11 +30,25 @@ FileKind = Literal["team", "rules", "profile"]
 
 # Sections only an identification profile has (rules/identification.yaml); a rule set with
 # one of them is a profile, so `check` and `batch` do not read it as a broken rule set.
-_PROFILE_ONLY = frozenset({"patterns", "plugins", "limbs", "doubt_factor", "structures",
-                           "sensors", "sensor_types", "topics", "motion"})
+_PROFILE_ONLY = frozenset(
+    {
+        "patterns",
+        "plugins",
+        "limbs",
+        "doubt_factor",
+        "structures",
+        "sensors",
+        "sensor_types",
+        "topics",
+        "motion",
+    }
+)
 
-_WHAT: dict[FileKind, str] = {"team": "a team file", "rules": "a rule set",
-                              "profile": "an identification profile"}
+_WHAT: dict[FileKind, str] = {
+    "team": "a team file",
+    "rules": "a rule set",
+    "profile": "an identification profile",
+}
 _WHY: dict[FileKind, str] = {
     "team": "it has 'team:'",
     "rules": "it has 'characteristics:' and no 'team:'",
@@ -44,8 +58,8 @@ _WHY: dict[FileKind, str] = {
 # What to pass instead, per (kind found, kind wanted).
 _INSTEAD: dict[tuple[FileKind, FileKind], str] = {
     ("rules", "team"): "pass a team (a file with 'rules:' naming this file and 'team:' "
-                       "selecting values per kinematic type, or a shipped team such as "
-                       "case3); `teleop-ui count FILE` counts every robot of a rule set",
+    "selecting values per kinematic type, or a shipped team such as "
+    "case3); `teleop-ui count FILE` counts every robot of a rule set",
     ("profile", "team"): "pass a team file; a profile is for `identify --profile`",
     ("team", "rules"): "pass a rule set (a file with 'characteristics:')",
     ("profile", "rules"): "pass a rule set; a profile is for `identify --profile`",
@@ -78,5 +92,4 @@ def require_kind(document: Document, wanted: FileKind) -> None:
     location = document.location()
     message = f"this is {_WHAT[found]}, not {_WHAT[wanted]} ({_WHY[found]})"
     instead = _INSTEAD.get((found, wanted))
-    raise InputError(Fault(location, message + (f"; {instead}" if instead else ""),
-                           "wrong-kind"))
+    raise InputError(Fault(location, message + (f"; {instead}" if instead else ""), "wrong-kind"))

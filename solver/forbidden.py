@@ -74,8 +74,12 @@ def removed_by_constraints(team: Team) -> tuple[Removed, ...]:
                 continue
             # One minimal set for all of them: the values are shown together, and the
             # checker's finding gives each group its own set when they differ.
-            conflict = analysis.minimal_conflict(analysis.narrowed(selection.domains, position,
-                                                                   dead))
-            found.append(Removed(kt, characteristic.name, dead,
-                                 tuple(rules.constraints[i] for i in conflict)))
+            conflict = analysis.minimal_conflict(
+                analysis.narrowed(selection.domains, position, dead)
+            )
+            found.append(
+                Removed(
+                    kt, characteristic.name, dead, tuple(rules.constraints[i] for i in conflict)
+                )
+            )
     return tuple(found)

@@ -27,7 +27,7 @@ def shown_name(name: str) -> str:
         return name
     escaped = name.encode("unicode_escape", "backslashreplace").decode("ascii")
     if len(escaped) > MAX_SHOWN_NAME:
-        escaped = escaped[:MAX_SHOWN_NAME - 3] + "..."
+        escaped = escaped[: MAX_SHOWN_NAME - 3] + "..."
     return escaped
 
 
@@ -43,8 +43,9 @@ def sha256_bounded(path: str | Path, *, limit: int) -> str | None:
         return None
 
 
-def read_bounded(path: str | Path, *, display: str | None = None, limit: int,
-                 what: str = "file") -> bytes:
+def read_bounded(
+    path: str | Path, *, display: str | None = None, limit: int, what: str = "file"
+) -> bytes:
     """The bytes of ``path``, refusing more than ``limit`` without reading them all."""
     name = shown_name(display if display is not None else str(path))
     file = Path(path)
@@ -63,16 +64,17 @@ def read_bounded(path: str | Path, *, display: str | None = None, limit: int,
         raise
     except ValueError:
         # Path.open refuses a NUL byte in the name ("embedded null byte"); no file has one.
-        raise InputError.at(name, "not a usable file name (it contains a NUL byte)",
-                            code="bad-name") from None
+        raise InputError.at(
+            name, "not a usable file name (it contains a NUL byte)", code="bad-name"
+        ) from None
     if len(data) > limit:
-        raise InputError.at(name, f"file is larger than {limit} bytes; refused",
-                            code="too-large")
+        raise InputError.at(name, f"file is larger than {limit} bytes; refused", code="too-large")
     return data
 
 
-def read_text(path: str | Path, *, display: str | None = None, limit: int,
-              what: str = "file") -> str:
+def read_text(
+    path: str | Path, *, display: str | None = None, limit: int, what: str = "file"
+) -> str:
     """:func:`read_bounded`, decoded as UTF-8 (a byte-order mark is dropped)."""
     name = shown_name(display if display is not None else str(path))
     raw = read_bounded(path, display=name, limit=limit, what=what)
@@ -81,5 +83,6 @@ def read_text(path: str | Path, *, display: str | None = None, limit: int,
     try:
         return raw.decode("utf-8-sig")
     except UnicodeDecodeError as error:
-        raise InputError.at(name, f"not UTF-8 text (invalid byte at offset {error.start}); "
-                                  f"is this a {what}?") from None
+        raise InputError.at(
+            name, f"not UTF-8 text (invalid byte at offset {error.start}); is this a {what}?"
+        ) from None

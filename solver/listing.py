@@ -25,8 +25,9 @@ from solver.solution import Solution
 __all__ = ["numbered_robots", "write_robots"]
 
 
-def numbered_robots(solution: Solution, engine: str = ENUMERATING[0]
-                    ) -> Iterator[tuple[int, tuple[Value, ...]]]:
+def numbered_robots(
+    solution: Solution, engine: str = ENUMERATING[0]
+) -> Iterator[tuple[int, tuple[Value, ...]]]:
     """(configuration number, robot) for every valid robot, kinematic types in rule order.
 
     ``engine`` names the engine that enumerates (:func:`solver.engines.lookup`: an
@@ -38,8 +39,14 @@ def numbered_robots(solution: Solution, engine: str = ENUMERATING[0]
     # Where every value has at most one component (the article's case), a robot's configuration
     # is a table lookup per characteristic: no search over configurations per robot.
     simple = all(len(m) <= 1 for c in rules.characteristics for m in c.membership)
-    tables = [{value: members[0] for value, members in zip(c.values, c.membership, strict=True)
-               if members} for c in rules.characteristics]
+    tables = [
+        {
+            value: members[0]
+            for value, members in zip(c.values, c.membership, strict=True)
+            if members
+        }
+        for c in rules.characteristics
+    ]
     numbers = {c.key: c.number for c in solution.configurations}
     for selection in solution.team.selections:
         for robot in enumerator.robots(rules, selection):
@@ -55,16 +62,24 @@ def numbered_robots(solution: Solution, engine: str = ENUMERATING[0]
             yield (default if configuration is None else configuration.number), robot
 
 
-def write_robots(solution: Solution, stream: TextIO, *, fmt: str = "csv",
-                 engine: str = ENUMERATING[0], max_robots: int = MAX_ROBOTS) -> int:
+def write_robots(
+    solution: Solution,
+    stream: TextIO,
+    *,
+    fmt: str = "csv",
+    engine: str = ENUMERATING[0],
+    max_robots: int = MAX_ROBOTS,
+) -> int:
     """Write every numbered robot to ``stream``; returns how many were written.
 
     :class:`TooLargeError`, before writing anything, when there are more than ``max_robots``.
     """
     total = solution.totals.valid_robots
     if total > max_robots:
-        raise TooLargeError.at(solution.team.file, f"listing {total} robots is refused (more "
-                                                   f"than {max_robots}, see --max-robots)")
+        raise TooLargeError.at(
+            solution.team.file,
+            f"listing {total} robots is refused (more than {max_robots}, see --max-robots)",
+        )
     names = solution.rules.names
     written = 0
     if fmt == "csv":
@@ -72,8 +87,9 @@ def write_robots(solution: Solution, stream: TextIO, *, fmt: str = "csv",
         # Names come from rule files: no cell may read as a spreadsheet formula. Values are
         # few and robots many, so each value's cell is made once.
         writer.writerow(csv_row(["configuration", *names]))
-        cells = [{value: csv_cell(value) for value in c.values}
-                 for c in solution.rules.characteristics]
+        cells = [
+            {value: csv_cell(value) for value in c.values} for c in solution.rules.characteristics
+        ]
 
         def rows() -> Iterator[list[object]]:
             nonlocal written
@@ -84,7 +100,12 @@ def write_robots(solution: Solution, stream: TextIO, *, fmt: str = "csv",
         writer.writerows(rows())
         return written
     for number, robot in numbered_robots(solution, engine):
-        stream.write(json.dumps({"configuration": number, **dict(zip(names, robot, strict=True))},
-                                ensure_ascii=False) + "\n")
+        stream.write(
+            json.dumps(
+                {"configuration": number, **dict(zip(names, robot, strict=True))},
+                ensure_ascii=False,
+            )
+            + "\n"
+        )
         written += 1
     return written

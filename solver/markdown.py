@@ -22,8 +22,9 @@ from urllib.parse import quote
 
 __all__ = ["escape", "heading", "link_target", "paragraph", "table"]
 
-_INLINE = str.maketrans({"&": "&amp;", "<": "&lt;", ">": "&gt;",
-                         **{c: "\\" + c for c in "\\`*_[]|~"}})
+_INLINE = str.maketrans(
+    {"&": "&amp;", "<": "&lt;", ">": "&gt;", **{c: "\\" + c for c in "\\`*_[]|~"}}
+)
 # What starts a block at the beginning of a line: "# h", "- item", "+ item", "=" (an
 # underline), "1. item" / "1) item".
 _LINE_START = re.compile(r"^(?:([#+\-=])|(\d+)([.)])(?=\s|$))", re.MULTILINE)
@@ -66,8 +67,9 @@ def link_target(name: str) -> str:
     return quote(os.fsencode(name))
 
 
-def table(headers: Sequence[object], rows: Sequence[Sequence[Any]],
-          right: Sequence[bool] | None = None) -> str:
+def table(
+    headers: Sequence[object], rows: Sequence[Sequence[Any]], right: Sequence[bool] | None = None
+) -> str:
     """A Markdown table of escaped cells; ``right`` marks right-aligned (number) columns.
 
     A cell's line breaks become spaces: a table row is one line.
@@ -75,8 +77,19 @@ def table(headers: Sequence[object], rows: Sequence[Sequence[Any]],
     align = right or [False] * len(headers)
 
     def line(cells: Sequence[Any]) -> str:
-        return "| " + " | ".join("" if c is None else escape(" ".join(str(c).splitlines()))
-                                 for c in cells) + " |"
+        return (
+            "| "
+            + " | ".join("" if c is None else escape(" ".join(str(c).splitlines())) for c in cells)
+            + " |"
+        )
 
-    return "\n".join([line(headers), "|" + "|".join("---:" if a else "---" for a in align)
-                      + "|", *(line(row) for row in rows)]) + "\n"
+    return (
+        "\n".join(
+            [
+                line(headers),
+                "|" + "|".join("---:" if a else "---" for a in align) + "|",
+                *(line(row) for row in rows),
+            ]
+        )
+        + "\n"
+    )

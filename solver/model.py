@@ -28,8 +28,11 @@ __all__ = ["Robot", "build_problem", "is_satisfiable", "robots", "violated_const
 Robot = tuple[Value, ...]
 
 
-def build_problem(rules: RuleSet, domains: Sequence[Sequence[Value]],
-                  constraints: Iterable[RuleConstraint] | None = None) -> Problem | None:
+def build_problem(
+    rules: RuleSet,
+    domains: Sequence[Sequence[Value]],
+    constraints: Iterable[RuleConstraint] | None = None,
+) -> Problem | None:
     """The problem over ``domains`` (one per characteristic) with ``constraints``.
 
     ``constraints`` defaults to every constraint of the rule set; pass a subset to ask what
@@ -49,8 +52,11 @@ def build_problem(rules: RuleSet, domains: Sequence[Sequence[Value]],
     return problem
 
 
-def robots(rules: RuleSet, domains: Sequence[Sequence[Value]],
-           constraints: Iterable[RuleConstraint] | None = None) -> Iterator[Robot]:
+def robots(
+    rules: RuleSet,
+    domains: Sequence[Sequence[Value]],
+    constraints: Iterable[RuleConstraint] | None = None,
+) -> Iterator[Robot]:
     """Every valid robot over ``domains``, streamed from python-constraint's solution iterator."""
     problem = build_problem(rules, domains, constraints)
     if problem is None:
@@ -60,8 +66,11 @@ def robots(rules: RuleSet, domains: Sequence[Sequence[Value]],
         yield tuple(solution[name] for name in names)
 
 
-def is_satisfiable(rules: RuleSet, domains: Sequence[Sequence[Value]],
-                   constraints: Iterable[RuleConstraint] | None = None) -> bool:
+def is_satisfiable(
+    rules: RuleSet,
+    domains: Sequence[Sequence[Value]],
+    constraints: Iterable[RuleConstraint] | None = None,
+) -> bool:
     """Whether at least one robot over ``domains`` satisfies ``constraints``."""
     problem = build_problem(rules, domains, constraints)
     return problem is not None and problem.getSolution() is not None

@@ -59,8 +59,10 @@ class Configuration:
 
     def __repr__(self) -> str:  # short, for notebooks: the fields are one attribute away
         components = " / ".join(component.name for component in self.components)
-        return (f"<Configuration {self.number} ({self.kinematic_type}): {components}; "
-                f"{self.robots} valid robots>")
+        return (
+            f"<Configuration {self.number} ({self.kinematic_type}): {components}; "
+            f"{self.robots} valid robots>"
+        )
 
     def clusters(self, position: int) -> tuple[int, int]:
         """The fewest and most clusters the served counts of characteristic ``position`` take."""
@@ -103,7 +105,7 @@ class Partition:
 def sort_key(rules: RuleSet, key: Key) -> Key:
     """Numbering order: kinematic type first, then the other characteristics in order."""
     position = rules.key_position
-    return (key[position], *key[:position], *key[position + 1:])
+    return (key[position], *key[:position], *key[position + 1 :])
 
 
 def partition(rules: RuleSet, kinematic_type: str, robots: Iterable[Sequence[Value]]) -> Partition:
@@ -114,8 +116,9 @@ def partition(rules: RuleSet, kinematic_type: str, robots: Iterable[Sequence[Val
     return partition_classes(rules, kinematic_type, singletons)
 
 
-def partition_classes(rules: RuleSet, kinematic_type: str,
-                      classes: Iterable[RobotClass]) -> Partition:
+def partition_classes(
+    rules: RuleSet, kinematic_type: str, classes: Iterable[RobotClass]
+) -> Partition:
     """Partition weighted classes of robots (see :class:`RobotClass`) into configurations.
 
     All values a class lists for one characteristic must belong to the same components, so
@@ -129,8 +132,10 @@ def partition_classes(rules: RuleSet, kinematic_type: str,
     for robot_class in classes:
         values, weight = robot_class.values, robot_class.robots
         total += weight
-        options = [c.membership[c.positions[members[0]]]
-                   for c, members in zip(characteristics, values, strict=True)]
+        options = [
+            c.membership[c.positions[members[0]]]
+            for c, members in zip(characteristics, values, strict=True)
+        ]
         if not all(options):
             unserved += weight
             continue
@@ -154,17 +159,21 @@ def partition_classes(rules: RuleSet, kinematic_type: str,
             counts[key] += weight
             for i in range(width):
                 served[key][i].update(values[i])
-    classes_out = tuple(PartitionClass(key, counts[key], _ordered(rules, served[key]))
-                        for key in order)
+    classes_out = tuple(
+        PartitionClass(key, counts[key], _ordered(rules, served[key])) for key in order
+    )
     return Partition(kinematic_type, classes_out, total, unserved, proven)
 
 
-def _partition_equivalence(rules: RuleSet, kinematic_type: str,
-                           robots: Iterable[Sequence[Value]]) -> Partition:
+def _partition_equivalence(
+    rules: RuleSet, kinematic_type: str, robots: Iterable[Sequence[Value]]
+) -> Partition:
     characteristics = rules.characteristics
     width = len(characteristics)
-    lookup = [{value: c.membership[i][0] for i, value in enumerate(c.values) if c.membership[i]}
-              for c in characteristics]
+    lookup = [
+        {value: c.membership[i][0] for i, value in enumerate(c.values) if c.membership[i]}
+        for c in characteristics
+    ]
     counts: dict[Key, int] = {}
     served: dict[Key, list[set[Value]]] = {}
     unserved = total = 0
@@ -184,12 +193,12 @@ def _partition_equivalence(rules: RuleSet, kinematic_type: str,
         for i in range(width):
             sets[i].add(robot[i])
     order = sorted(counts, key=lambda key: sort_key(rules, key))
-    classes = tuple(PartitionClass(key, counts[key], _ordered(rules, served[key]))
-                    for key in order)
+    classes = tuple(PartitionClass(key, counts[key], _ordered(rules, served[key])) for key in order)
     return Partition(kinematic_type, classes, total, unserved, True)
 
 
 def _ordered(rules: RuleSet, sets: list[set[Value]]) -> tuple[tuple[Value, ...], ...]:
-    return tuple(tuple(v for v in c.values if v in values)
-                 for c, values in zip(rules.characteristics, sets, strict=True))
-
+    return tuple(
+        tuple(v for v in c.values if v in values)
+        for c, values in zip(rules.characteristics, sets, strict=True)
+    )

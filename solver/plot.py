@@ -90,8 +90,7 @@ STEEP = 0.45
 PNG_DPI = 150
 # The Okabe-Ito palette: told apart by people with colour-blind vision and in greyscale print,
 # and strokes of different width as a second cue.
-COLOURS = ("#0072B2", "#E69F00", "#009E73", "#CC79A7", "#D55E00", "#56B4E9", "#F0E442",
-           "#000000")
+COLOURS = ("#0072B2", "#E69F00", "#009E73", "#CC79A7", "#D55E00", "#56B4E9", "#F0E442", "#000000")
 TICK_FONT = 7.5
 # Values wider than this many characters are wrapped onto two lines.
 LABEL_WRAP = 22
@@ -102,9 +101,9 @@ class RadarAxis:
     """One spoke: its characteristic, direction, the values it shows and where they sit."""
 
     characteristic: Characteristic
-    angle: float                      # radians, counter-clockwise from the positive x axis
-    shown: tuple[Value, ...]          # values with a position on the spoke, in domain order
-    low: int = 0                      # integer spokes: the counts at radius INNER_RADIUS and 1
+    angle: float  # radians, counter-clockwise from the positive x axis
+    shown: tuple[Value, ...]  # values with a position on the spoke, in domain order
+    low: int = 0  # integer spokes: the counts at radius INNER_RADIUS and 1
     high: int = 0
 
     @property
@@ -134,9 +133,11 @@ def plot_format(path: str | Path) -> str:
     suffix = Path(path).suffix.lower().lstrip(".")
     if suffix not in PLOT_FORMATS:
         shown = f"'.{suffix}'" if suffix else "no extension"
-        raise InputError.at(str(path), f"cannot tell the plot format from {shown}; name the "
-                                       f"file .{', .'.join(PLOT_FORMATS)}",
-                            code="unknown-format")
+        raise InputError.at(
+            str(path),
+            f"cannot tell the plot format from {shown}; name the file .{', .'.join(PLOT_FORMATS)}",
+            code="unknown-format",
+        )
     return suffix
 
 
@@ -202,9 +203,12 @@ def _tick_values(axis: RadarAxis, team: Team, position: int) -> list[Value]:
         step = math.ceil(len(axis.shown) / MAX_SPOKE_LABELS)
         return list(dict.fromkeys([*axis.shown[::step], *axis.shown[-1:]]))
     labels = _Labels(axis)
-    for value in (axis.low, axis.high,
-                  *(max(int(v) for v in s.domains[position]) for s in team.selections),
-                  *(c.high for c in characteristic.components if c.high is not None)):
+    for value in (
+        axis.low,
+        axis.high,
+        *(max(int(v) for v in s.domains[position]) for s in team.selections),
+        *(c.high for c in characteristic.components if c.high is not None),
+    ):
         labels.offer(value)
     # The rest: a value too close to a label is skipped together with every value up to the
     # end of that label's gap, so the cost follows the number of labels, not of values.
@@ -212,8 +216,11 @@ def _tick_values(axis: RadarAxis, team: Team, position: int) -> list[Value]:
     index = 0
     while index < len(rest):
         blocker = labels.offer(rest[index])
-        index = index + 1 if blocker is None else bisect.bisect_left(
-            rest, blocker + MIN_TICK_GAP, lo=index + 1, key=axis.radius)
+        index = (
+            index + 1
+            if blocker is None
+            else bisect.bisect_left(rest, blocker + MIN_TICK_GAP, lo=index + 1, key=axis.radius)
+        )
     return sorted(labels.values)
 
 
@@ -234,7 +241,7 @@ class _Labels:
             return None
         radius = self.axis.radius(value)
         at = bisect.bisect_left(self.radii, radius)
-        close = [r for r in self.radii[max(at - 1, 0):at + 1] if abs(radius - r) < MIN_TICK_GAP]
+        close = [r for r in self.radii[max(at - 1, 0) : at + 1] if abs(radius - r) < MIN_TICK_GAP]
         if close:
             return max(close)
         self.values.append(value)
@@ -258,45 +265,86 @@ def _draw_spoke(ax: Axes, axis: RadarAxis, team: Team, position: int) -> None:
     from matplotlib.collections import LineCollection
 
     cos, sin = math.cos(axis.angle), math.sin(axis.angle)
-    ax.plot([0, cos], [0, sin], color="#888888", linewidth=0.8, zorder=1,
-            label=f"_spoke {axis.characteristic.name}")
+    ax.plot(
+        [0, cos],
+        [0, sin],
+        color="#888888",
+        linewidth=0.8,
+        zorder=1,
+        label=f"_spoke {axis.characteristic.name}",
+    )
     labelled = _tick_values(axis, team, position)
     # Tick marks: short strokes across the spoke, one collection (one artist) per spoke.
-    ax.add_collection(LineCollection(
-        [(axis.point(value, -0.012), axis.point(value, 0.012))
-         for value in _tick_marks(axis, labelled)],
-        colors="#888888", linewidths=0.7, capstyle="projecting", zorder=1,
-        label=f"_ticks {axis.characteristic.name}"), autolim=False)
+    ax.add_collection(
+        LineCollection(
+            [
+                (axis.point(value, -0.012), axis.point(value, 0.012))
+                for value in _tick_marks(axis, labelled)
+            ],
+            colors="#888888",
+            linewidths=0.7,
+            capstyle="projecting",
+            zorder=1,
+            label=f"_ticks {axis.characteristic.name}",
+        ),
+        autolim=False,
+    )
     box = {"boxstyle": "square,pad=0.1", "facecolor": "white", "alpha": 0.8, "linewidth": 0}
     for value in labelled:
         if abs(sin) >= STEEP:
             outward = 1 if cos >= 0 else -1
             x, y = axis.point(value)
-            ax.text(x + LABEL_GAP * outward / abs(sin), y, _label(value), fontsize=TICK_FONT,
-                    ha="left" if outward > 0 else "right", va="center", zorder=5,
-                    label=f"tick {axis.characteristic.name}", bbox=box)
+            ax.text(
+                x + LABEL_GAP * outward / abs(sin),
+                y,
+                _label(value),
+                fontsize=TICK_FONT,
+                ha="left" if outward > 0 else "right",
+                va="center",
+                zorder=5,
+                label=f"tick {axis.characteristic.name}",
+                bbox=box,
+            )
         else:
             rotation = (math.degrees(axis.angle) + 180) % 180 - 90
             x, y = axis.point(value, LABEL_GAP)
             # Text runs along the clockwise normal (sin, -cos) or against it.
             along = math.radians(rotation)
             ahead = math.cos(along) * sin - math.sin(along) * cos > 0
-            ax.text(x, y, _label(value), fontsize=TICK_FONT, rotation=rotation,
-                    rotation_mode="anchor", ha="left" if ahead else "right", va="center",
-                    zorder=5, label=f"tick {axis.characteristic.name}", bbox=box)
+            ax.text(
+                x,
+                y,
+                _label(value),
+                fontsize=TICK_FONT,
+                rotation=rotation,
+                rotation_mode="anchor",
+                ha="left" if ahead else "right",
+                va="center",
+                zorder=5,
+                label=f"tick {axis.characteristic.name}",
+                bbox=box,
+            )
     title = axis.characteristic.label
     if not axis.complete and axis.characteristic.kind != "integer":
         title += "\n(selected values)"
     if axis.characteristic.kind != "integer" and len(labelled) < len(axis.shown):
         title += f"\n({len(labelled)} of {len(axis.shown)} values labelled)"
-    ax.text(1.09 * cos, 1.09 * sin, title, fontsize=10.5, fontweight="bold",
-            ha="center" if abs(sin) >= STEEP else ("left" if cos > 0 else "right"),
-            va="bottom" if sin > 0 else "top", zorder=5,
-            label=f"axis {axis.characteristic.name}")
+    ax.text(
+        1.09 * cos,
+        1.09 * sin,
+        title,
+        fontsize=10.5,
+        fontweight="bold",
+        ha="center" if abs(sin) >= STEEP else ("left" if cos > 0 else "right"),
+        va="bottom" if sin > 0 else "top",
+        zorder=5,
+        label=f"axis {axis.characteristic.name}",
+    )
 
 
-def _spans(axes: Sequence[RadarAxis], domains: Sequence[Sequence[Value]]
-           ) -> list[list[tuple[Value, Value]]]:
+def _spans(
+    axes: Sequence[RadarAxis], domains: Sequence[Sequence[Value]]
+) -> list[list[tuple[Value, Value]]]:
     """Per spoke, the runs of a type's selected values that the spoke shows."""
     found = []
     for axis, domain in zip(axes, domains, strict=True):
@@ -306,22 +354,32 @@ def _spans(axes: Sequence[RadarAxis], domains: Sequence[Sequence[Value]]
     return found
 
 
-def _region_vertices(axes: Sequence[RadarAxis], spans: Sequence[Sequence[tuple[Value, Value]]],
-                     ) -> list[list[tuple[float, float]]]:
+def _region_vertices(
+    axes: Sequence[RadarAxis],
+    spans: Sequence[Sequence[tuple[Value, Value]]],
+) -> list[list[tuple[float, float]]]:
     """One quadrilateral per pair of runs on neighbouring spokes, all wound the same way."""
     quads = []
     for k, axis in enumerate(axes):
         following = axes[(k + 1) % len(axes)]
         for first, last in spans[k]:
             for other_first, other_last in spans[(k + 1) % len(axes)]:
-                quads.append([axis.point(first), axis.point(last),
-                              following.point(other_last), following.point(other_first)])
+                quads.append(
+                    [
+                        axis.point(first),
+                        axis.point(last),
+                        following.point(other_last),
+                        following.point(other_first),
+                    ]
+                )
     return quads
 
 
 def _counts(robots: int, configurations: int) -> str:
-    return (f"{robots} valid robot{'' if robots == 1 else 's'}, {configurations} UI "
-            f"configuration{'' if configurations == 1 else 's'}")
+    return (
+        f"{robots} valid robot{'' if robots == 1 else 's'}, {configurations} UI "
+        f"configuration{'' if configurations == 1 else 's'}"
+    )
 
 
 # What needs matplotlib, as a missing-extra message names it (solver/extras.py).
@@ -384,40 +442,85 @@ def radar_figure(solution: Solution) -> Figure:
         quads = _region_vertices(axes, spans)
         if quads:
             vertices = [point for quad in quads for point in (*quad, quad[0])]
-            codes = [code for _ in quads for code in (MplPath.MOVETO, MplPath.LINETO,
-                                                       MplPath.LINETO, MplPath.LINETO,
-                                                       MplPath.CLOSEPOLY)]
-            ax.add_patch(PathPatch(MplPath(vertices, codes), facecolor=colour, alpha=0.15,
-                                   edgecolor="none", zorder=2,
-                                   label=selection.kinematic_type))
+            codes = [
+                code
+                for _ in quads
+                for code in (
+                    MplPath.MOVETO,
+                    MplPath.LINETO,
+                    MplPath.LINETO,
+                    MplPath.LINETO,
+                    MplPath.CLOSEPOLY,
+                )
+            ]
+            ax.add_patch(
+                PathPatch(
+                    MplPath(vertices, codes),
+                    facecolor=colour,
+                    alpha=0.15,
+                    edgecolor="none",
+                    zorder=2,
+                    label=selection.kinematic_type,
+                )
+            )
         for axis, axis_runs in zip(axes, spans, strict=True):
             for first, last in axis_runs:
                 (x0, y0), (x1, y1) = axis.point(first), axis.point(last)
                 # A line of no length draws nothing: a single value is a dot as wide.
-                ax.plot([x0, x1], [y0, y1], color=colour, linewidth=stroke,
-                        solid_capstyle="round", marker="o" if first == last else "",
-                        markersize=stroke, markeredgewidth=0, zorder=3 + index,
-                        label=f"run {selection.kinematic_type}")
+                ax.plot(
+                    [x0, x1],
+                    [y0, y1],
+                    color=colour,
+                    linewidth=stroke,
+                    solid_capstyle="round",
+                    marker="o" if first == last else "",
+                    markersize=stroke,
+                    markeredgewidth=0,
+                    zorder=3 + index,
+                    label=f"run {selection.kinematic_type}",
+                )
         summary = summaries.get(selection.kinematic_type)
         text = selection.kinematic_type
         if summary is not None:
             text += f": {_counts(summary.valid_robots, summary.ui_configurations)}"
             if summary.unserved_robots:
                 text += f" ({summary.unserved_robots} unserved)"
-        legend_handles.append((Patch(facecolor=colour, alpha=0.3, edgecolor="none"),
-                               Line2D([], [], color=colour, linewidth=4)))
+        legend_handles.append(
+            (
+                Patch(facecolor=colour, alpha=0.3, edgecolor="none"),
+                Line2D([], [], color=colour, linewidth=4),
+            )
+        )
         legend_texts.append(text)
     if legend_handles:
-        figure.legend(legend_handles, legend_texts, loc="lower center",
-                      bbox_to_anchor=(0.5, 0.1 / height), frameon=False, fontsize=10)
+        figure.legend(
+            legend_handles,
+            legend_texts,
+            loc="lower center",
+            bbox_to_anchor=(0.5, 0.1 / height),
+            frameon=False,
+            fontsize=10,
+        )
     totals = solution.totals
-    figure.text(0.5, 1 - 0.3 / height,
-                f"{team.name}: {_counts(totals.valid_robots, totals.ui_configurations)}",
-                ha="center", va="center", fontsize=13, fontweight="bold")
-    figure.text(0.5, 1 - 0.6 / height,
-                f"rules: {team.rules.name}    bound T = {solution.bound}    "
-                f"default UI configuration: {solution.default_configuration}",
-                ha="center", va="center", fontsize=9, color="#444444")
+    figure.text(
+        0.5,
+        1 - 0.3 / height,
+        f"{team.name}: {_counts(totals.valid_robots, totals.ui_configurations)}",
+        ha="center",
+        va="center",
+        fontsize=13,
+        fontweight="bold",
+    )
+    figure.text(
+        0.5,
+        1 - 0.6 / height,
+        f"rules: {team.rules.name}    bound T = {solution.bound}    "
+        f"default UI configuration: {solution.default_configuration}",
+        ha="center",
+        va="center",
+        fontsize=9,
+        color="#444444",
+    )
     return figure
 
 
@@ -428,13 +531,21 @@ def bars_figure(solution: Solution) -> Figure:
     ax = figure.add_subplot()
     positions = list(range(len(types)))
     width = 0.38
-    series = (("valid robots", [s.valid_robots for s in solution.by_type], "#0072B2", ""),
-              ("UI configurations", [s.ui_configurations for s in solution.by_type],
-               "#E69F00", "//"))
-    for offset, (name, heights, colour, hatch) in zip((-width / 2, width / 2), series,
-                                                      strict=True):
-        bars = ax.bar([p + offset for p in positions], heights, width, label=name,
-                      color=colour, hatch=hatch, edgecolor="#333333", linewidth=0.6)
+    series = (
+        ("valid robots", [s.valid_robots for s in solution.by_type], "#0072B2", ""),
+        ("UI configurations", [s.ui_configurations for s in solution.by_type], "#E69F00", "//"),
+    )
+    for offset, (name, heights, colour, hatch) in zip((-width / 2, width / 2), series, strict=True):
+        bars = ax.bar(
+            [p + offset for p in positions],
+            heights,
+            width,
+            label=name,
+            color=colour,
+            hatch=hatch,
+            edgecolor="#333333",
+            linewidth=0.6,
+        )
         ax.bar_label(bars, padding=2, fontsize=9)
     ax.set_xticks(positions, [textwrap.fill(t, 12) for t in types], fontsize=9)
     ax.set_ylabel("count")
@@ -442,25 +553,35 @@ def bars_figure(solution: Solution) -> Figure:
     ax.spines[["top", "right"]].set_visible(False)
     ax.legend(frameon=False, fontsize=9)
     totals = solution.totals
-    ax.set_title(f"{solution.team.name}: "
-                 f"{_counts(totals.valid_robots, totals.ui_configurations)}", fontsize=11)
+    ax.set_title(
+        f"{solution.team.name}: {_counts(totals.valid_robots, totals.ui_configurations)}",
+        fontsize=11,
+    )
     figure.tight_layout()
     return figure
 
 
-def component_matrix(solution: Solution) -> tuple[list[str], list[tuple[str, str]],
-                                                 list[list[tuple[int, int]]]]:
+def component_matrix(
+    solution: Solution,
+) -> tuple[list[str], list[tuple[str, str]], list[list[tuple[int, int]]]]:
     """Rows (kinematic types), columns (characteristic label, component) and per cell the
     (configurations, valid robots) of that type that use that component."""
     rules = solution.rules
-    columns = [(c.label, component.name) for i, c in enumerate(rules.characteristics)
-               if i != rules.key_position for component in c.components]
+    columns = [
+        (c.label, component.name)
+        for i, c in enumerate(rules.characteristics)
+        if i != rules.key_position
+        for component in c.components
+    ]
     # A rule set with thousands of components would draw thousands of columns: past
     # MAX_MATRIX_COLUMNS, each characteristic is one column (its components taken together).
     grouped = len(columns) > MAX_MATRIX_COLUMNS
     if grouped:
-        columns = [(c.label, f"{len(c.components)} components")
-                   for i, c in enumerate(rules.characteristics) if i != rules.key_position]
+        columns = [
+            (c.label, f"{len(c.components)} components")
+            for i, c in enumerate(rules.characteristics)
+            if i != rules.key_position
+        ]
     rows = [s.kinematic_type for s in solution.by_type]
     cells = [[(0, 0) for _ in columns] for _ in rows]
     row_of = {kt: r for r, kt in enumerate(rows)}
@@ -469,7 +590,8 @@ def component_matrix(solution: Solution) -> tuple[list[str], list[tuple[str, str
         r = row_of[configuration.kinematic_type]
         k = -1
         for i, (characteristic, component) in enumerate(
-                zip(rules.characteristics, configuration.components, strict=True)):
+            zip(rules.characteristics, configuration.components, strict=True)
+        ):
             if i == rules.key_position:
                 continue
             k = k + 1 if grouped else column_of[(characteristic.label, component.name)]
@@ -488,17 +610,31 @@ def matrix_figure(solution: Solution) -> Figure:
     figure = _new_figure(max(6.0, 2.2 + 0.42 * len(columns)), 1.9 + 0.42 * max(len(rows), 1))
     ax = figure.add_subplot()
     totals = {s.kinematic_type: s.valid_robots for s in solution.by_type}
-    shares = [[robots / totals[kt] if totals[kt] else 0.0 for _, robots in row]
-              for kt, row in zip(rows, cells, strict=True)]
+    shares = [
+        [robots / totals[kt] if totals[kt] else 0.0 for _, robots in row]
+        for kt, row in zip(rows, cells, strict=True)
+    ]
     ax.imshow(shares or [[0.0]], cmap="Blues", vmin=0.0, vmax=1.0, aspect="auto")
     for r, row in enumerate(cells):
         for k, (used, _) in enumerate(row):
             if used:
-                ax.text(k, r, str(used), ha="center", va="center", fontsize=8,
-                        color="white" if shares[r][k] > 0.6 else "#222222")
+                ax.text(
+                    k,
+                    r,
+                    str(used),
+                    ha="center",
+                    va="center",
+                    fontsize=8,
+                    color="white" if shares[r][k] > 0.6 else "#222222",
+                )
     ax.set_yticks(range(len(rows)), rows, fontsize=9)
-    ax.set_xticks(range(len(columns)), [textwrap.shorten(name, 18) for _, name in columns],
-                  rotation=60, ha="right", fontsize=8)
+    ax.set_xticks(
+        range(len(columns)),
+        [textwrap.shorten(name, 18) for _, name in columns],
+        rotation=60,
+        ha="right",
+        fontsize=8,
+    )
     # A thin line between characteristics: the columns are grouped by them.
     edges = [k - 0.5 for k in range(1, len(columns)) if columns[k][0] != columns[k - 1][0]]
     for edge in edges:
@@ -507,14 +643,25 @@ def matrix_figure(solution: Solution) -> Figure:
     starts = [0, *(int(edge + 0.5) for edge in edges)]
     for first, last in zip(starts, [*starts[1:], len(columns)], strict=True):
         if first < last:
-            ax.text((first + last - 1) / 2, -0.7, columns[first][0], ha="center", va="bottom",
-                    fontsize=8, color="#444444")
+            ax.text(
+                (first + last - 1) / 2,
+                -0.7,
+                columns[first][0],
+                ha="center",
+                va="bottom",
+                fontsize=8,
+                color="#444444",
+            )
     ax.tick_params(length=0)
     totals_all = solution.totals
-    ax.set_title(f"{solution.team.name}: "
-                 f"{_counts(totals_all.valid_robots, totals_all.ui_configurations)}\n"
-                 "shade: share of the type's robots whose configuration uses the component; "
-                 "number: configurations that do", fontsize=9, pad=22)
+    ax.set_title(
+        f"{solution.team.name}: "
+        f"{_counts(totals_all.valid_robots, totals_all.ui_configurations)}\n"
+        "shade: share of the type's robots whose configuration uses the component; "
+        "number: configurations that do",
+        fontsize=9,
+        pad=22,
+    )
     figure.tight_layout()
     return figure
 
@@ -526,13 +673,14 @@ def figure_bytes(figure: Figure, fmt: str) -> bytes:
     if fmt not in PLOT_FORMATS:
         raise ValueError(f"fmt must be in {PLOT_FORMATS} (got {fmt!r})")
     # Dates and random ids are what would make two renderings differ.
-    metadata: dict[str, Any] = {"svg": {"Date": None}, "pdf": {"CreationDate": None},
-                                "png": {}}[fmt]
+    metadata: dict[str, Any] = {"svg": {"Date": None}, "pdf": {"CreationDate": None}, "png": {}}[
+        fmt
+    ]
     buffer = io.BytesIO()
-    with matplotlib.rc_context({"svg.hashsalt": "teleop-ui", "svg.fonttype": "path",
-                                "pdf.fonttype": 42}):
-        figure.savefig(buffer, format=fmt, dpi=PNG_DPI, metadata=metadata,
-                       facecolor="white")
+    with matplotlib.rc_context(
+        {"svg.hashsalt": "teleop-ui", "svg.fonttype": "path", "pdf.fonttype": 42}
+    ):
+        figure.savefig(buffer, format=fmt, dpi=PNG_DPI, metadata=metadata, facecolor="white")
     return buffer.getvalue()
 
 

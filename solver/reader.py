@@ -32,8 +32,12 @@ def quote(value: object) -> str:
     if len(text) > MAX_QUOTED_CHARS:
         text = text[:MAX_QUOTED_CHARS]
         return repr(text)[:-1].encode("ascii", "backslashreplace").decode("ascii") + "...'"
-    return repr(text).encode("ascii", "backslashreplace").decode("ascii") \
-        if not text.isprintable() else repr(text)
+    return (
+        repr(text).encode("ascii", "backslashreplace").decode("ascii")
+        if not text.isprintable()
+        else repr(text)
+    )
+
 
 Path = tuple[PathPart, ...]
 
@@ -66,8 +70,9 @@ class Reader:
     def file(self) -> str:
         return self.document.file
 
-    def fault(self, path: Sequence[PathPart], message: str, *, key: bool = False,
-              code: str = "invalid") -> None:
+    def fault(
+        self, path: Sequence[PathPart], message: str, *, key: bool = False, code: str = "invalid"
+    ) -> None:
         location = self.document.location(path, key=key)
         self.faults.append(Fault(location, message, code))
 
@@ -96,8 +101,11 @@ class Reader:
             return None
         if not isinstance(data, dict):
             kind = "a list" if isinstance(data, list) else "a single value"
-            self.fault((), f"not a {what}: expected a mapping of fields at the top level, got "
-                           f"{kind}", code="wrong-type")
+            self.fault(
+                (),
+                f"not a {what}: expected a mapping of fields at the top level, got {kind}",
+                code="wrong-type",
+            )
             return None
         if needs is not None and not any(str(key) == needs for key in data):
             self.fault((), f"not a {what}: it has no '{needs}:' field", code="missing-field")
@@ -112,16 +120,22 @@ class Reader:
                 self.missing(path, what)
             return {}
         if not isinstance(value, dict):
-            self.fault(path, f"{what} must be a mapping, got {type_name(value)}",
-                       code="wrong-type")
+            self.fault(path, f"{what} must be a mapping, got {type_name(value)}", code="wrong-type")
             return {}
         return {str(key): item for key, item in value.items()}
 
     def missing(self, path: Path, what: str) -> None:
         self.fault(path, f"missing {what}", code="missing-field")
 
-    def string(self, path: Path, what: str, *, required: bool = True,
-               default: str = "", limit: int | None = MAX_NAME_CHARS) -> str:
+    def string(
+        self,
+        path: Path,
+        what: str,
+        *,
+        required: bool = True,
+        default: str = "",
+        limit: int | None = MAX_NAME_CHARS,
+    ) -> str:
         """A string (a name unless ``limit`` says otherwise: ``None`` for free text, which the
         YAML reader already bounds)."""
         value = self.get(path)
@@ -130,8 +144,7 @@ class Reader:
                 self.missing(path, what)
             return default
         if isinstance(value, bool) or not isinstance(value, str | int | float):
-            self.fault(path, f"{what} must be a string, got {type_name(value)}",
-                       code="wrong-type")
+            self.fault(path, f"{what} must be a string, got {type_name(value)}", code="wrong-type")
             return default
         text = str(value).strip()
         if required and not text:
@@ -148,8 +161,9 @@ class Reader:
                 self.missing(path, what)
             return None
         if isinstance(value, bool) or not isinstance(value, int):
-            self.fault(path, f"{what} must be a whole number, got {type_name(value)}",
-                       code="wrong-type")
+            self.fault(
+                path, f"{what} must be a whole number, got {type_name(value)}", code="wrong-type"
+            )
             return None
         return value
 
@@ -161,38 +175,50 @@ class Reader:
             return []
         if isinstance(value, str | int) and not isinstance(value, bool):
             if len(str(value)) > MAX_NAME_CHARS:
-                self.fault(path, f"{what}: a name longer than {MAX_NAME_CHARS} characters",
-                           code="too-large")
+                self.fault(
+                    path,
+                    f"{what}: a name longer than {MAX_NAME_CHARS} characters",
+                    code="too-large",
+                )
                 return []
             return [(path, str(value))]
         if not isinstance(value, list):
-            self.fault(path, f"{what} must be a list of names, got {type_name(value)}",
-                       code="wrong-type")
+            self.fault(
+                path, f"{what} must be a list of names, got {type_name(value)}", code="wrong-type"
+            )
             return []
         found: list[tuple[Path, str]] = []
         for index, item in enumerate(value):
             item_path = (*path, index)
             if isinstance(item, bool) or not isinstance(item, str | int | float):
-                self.fault(item_path, f"{what} must be names, got {type_name(item)}",
-                           code="wrong-type")
+                self.fault(
+                    item_path, f"{what} must be names, got {type_name(item)}", code="wrong-type"
+                )
                 continue
             name = str(item).strip()
             if len(name) > MAX_NAME_CHARS:
-                self.fault(item_path, f"{what}: a name longer than {MAX_NAME_CHARS} "
-                                      "characters", code="too-large")
+                self.fault(
+                    item_path,
+                    f"{what}: a name longer than {MAX_NAME_CHARS} characters",
+                    code="too-large",
+                )
                 continue
             found.append((item_path, name))
         return found
 
-    def unknown_keys(self, path: Path, mapping: dict[str, Any], allowed: Collection[str],
-                     what: str) -> None:
+    def unknown_keys(
+        self, path: Path, mapping: dict[str, Any], allowed: Collection[str], what: str
+    ) -> None:
         """A fault for every key of ``mapping`` that is not in ``allowed``."""
         for key in mapping:
             if key not in allowed:
                 hint = did_you_mean(key, allowed)
-                self.fault((*path, key), f"unknown {what} {quote(key)}{hint}; allowed: "
-                                         f"{', '.join(sorted(allowed))}",
-                           key=True, code="unknown-field")
+                self.fault(
+                    (*path, key),
+                    f"unknown {what} {quote(key)}{hint}; allowed: {', '.join(sorted(allowed))}",
+                    key=True,
+                    code="unknown-field",
+                )
 
 
 def _lookup(mapping: dict[Any, Any], key: str) -> Any:

@@ -47,17 +47,23 @@ __all__ = [
 ]
 
 ReportFormat = Literal["html", "markdown"]
-REPORT_FORMATS: dict[str, ReportFormat] = {".html": "html", ".htm": "html", ".md": "markdown",
-                                           ".markdown": "markdown"}
+REPORT_FORMATS: dict[str, ReportFormat] = {
+    ".html": "html",
+    ".htm": "html",
+    ".md": "markdown",
+    ".markdown": "markdown",
+}
 _KINDS: tuple[PlotKind, ...] = ("radar", "bars")
 # The HTML page embeds its charts, so it also shows the component matrix, first: it answers
 # "which components does each type need?" at a glance, where the radar's fills overlap.
 _HTML_KINDS: tuple[PlotKind, ...] = ("matrix", "radar", "bars")
-_ALT = {"radar": "Radar chart: the selected values of each kinematic type, one spoke per "
-                 "characteristic",
-        "bars": "Bar chart: valid robots and UI configurations per kinematic type",
-        "matrix": "Component matrix: per kinematic type, the share of its robots whose "
-                  "configuration uses each component, and how many configurations do"}
+_ALT = {
+    "radar": "Radar chart: the selected values of each kinematic type, one spoke per "
+    "characteristic",
+    "bars": "Bar chart: valid robots and UI configurations per kinematic type",
+    "matrix": "Component matrix: per kinematic type, the share of its robots whose "
+    "configuration uses each component, and how many configurations do",
+}
 
 _STYLE = """
 body { font-family: "DejaVu Sans", Verdana, sans-serif; margin: 2rem; padding: 0 1rem;
@@ -89,9 +95,12 @@ def report_format(path: str | Path) -> ReportFormat:
     suffix = Path(path).suffix.lower()
     if suffix not in REPORT_FORMATS:
         shown = f"'{suffix}'" if suffix else "no extension"
-        raise InputError.at(str(path), f"cannot tell the report format from {shown}; name the "
-                                       f"file {', '.join(REPORT_FORMATS)}",
-                            code="unknown-format")
+        raise InputError.at(
+            str(path),
+            f"cannot tell the report format from {shown}; name the "
+            f"file {', '.join(REPORT_FORMATS)}",
+            code="unknown-format",
+        )
     return REPORT_FORMATS[suffix]
 
 
@@ -116,36 +125,47 @@ def reproduction_note(solution: Solution) -> tuple[str, bool] | None:
 
 # ---- the content, independent of the markup ----------------------------------------------
 
+
 def _ratio(summary: TypeSummary) -> str:
     ratio = summary.reduction_ratio
     return "" if ratio is None else f"{ratio:.2f}"
 
 
 def _summary_rows(solution: Solution) -> list[list[Any]]:
-    return [[s.kinematic_type, s.valid_robots, s.ui_configurations, _ratio(s)]
-            for s in (*solution.by_type, solution.totals)]
+    return [
+        [s.kinematic_type, s.valid_robots, s.ui_configurations, _ratio(s)]
+        for s in (*solution.by_type, solution.totals)
+    ]
 
 
-_SUMMARY_HEADERS = ["kinematic type", "valid robots", "UI configurations",
-                    "robots per configuration"]
+_SUMMARY_HEADERS = [
+    "kinematic type",
+    "valid robots",
+    "UI configurations",
+    "robots per configuration",
+]
 
 
 def _facts(solution: Solution) -> list[str]:
     rules = solution.rules
     factors = " x ".join(str(n) for n in rules.bound_factors)
-    facts = [f"bound T = {solution.bound} ({factors}): the most UI configurations these rules "
-             "could ever need",
-             f"default UI configuration: {solution.default_configuration} (every component, "
-             f"{sum(rules.bound_factors)} in all), given to any robot outside the team's "
-             "selections"]
+    facts = [
+        f"bound T = {solution.bound} ({factors}): the most UI configurations these rules "
+        "could ever need",
+        f"default UI configuration: {solution.default_configuration} (every component, "
+        f"{sum(rules.bound_factors)} in all), given to any robot outside the team's "
+        "selections",
+    ]
     return facts + solution_warnings(solution)
 
 
 def _values_text(characteristic: Characteristic, values: Sequence[Value]) -> str:
     """A selection as a reader writes it: ``1..13``, ``2D Camera, LIDAR``, ``all (6)``."""
     if characteristic.kind == "integer":
-        return ", ".join(str(first) if first == last else f"{first}..{last}"
-                         for first, last in runs(characteristic, values))
+        return ", ".join(
+            str(first) if first == last else f"{first}..{last}"
+            for first, last in runs(characteristic, values)
+        )
     if tuple(values) == characteristic.values:
         return f"all ({len(values)})"
     return ", ".join(str(v) for v in values)
@@ -155,8 +175,10 @@ def _selection_table(solution: Solution) -> tuple[list[str], list[list[str]]]:
     rules = solution.rules
     others = [(i, c) for i, c in enumerate(rules.characteristics) if c.name != rules.team_key]
     headers = [rules.key.label, *(c.label for _, c in others)]
-    rows = [[s.kinematic_type, *(_values_text(c, s.domains[i]) for i, c in others)]
-            for s in solution.team.selections]
+    rows = [
+        [s.kinematic_type, *(_values_text(c, s.domains[i]) for i, c in others)]
+        for s in solution.team.selections
+    ]
     return headers, rows
 
 
@@ -180,10 +202,21 @@ def _configuration_table(solution: Solution) -> tuple[list[str], list[list[Any]]
     rows: list[list[Any]] = []
     for configuration in solution.configurations:
         data = configuration_data(rules, configuration)
-        rows.append([configuration.number, *(_component_cell(e) for e in data["components"]),
-                     configuration.robots])
-    rows.append([solution.default_configuration, "default: every component",
-                 *([""] * (len(rules.characteristics) - 1)), ""])
+        rows.append(
+            [
+                configuration.number,
+                *(_component_cell(e) for e in data["components"]),
+                configuration.robots,
+            ]
+        )
+    rows.append(
+        [
+            solution.default_configuration,
+            "default: every component",
+            *([""] * (len(rules.characteristics) - 1)),
+            "",
+        ]
+    )
     return headers, rows
 
 
@@ -199,9 +232,15 @@ def _constraint_table(solution: Solution) -> tuple[list[str], list[list[str]]] |
     rows = []
     for constraint in rules.constraints:
         removed = [r for r in solution.removed if constraint in r.constraints]
-        text = "; ".join(f"{r.kinematic_type}: " + (
-            f"{r.characteristic} {', '.join(str(v) for v in r.values)}" if r.characteristic
-            else "every robot") for r in removed)
+        text = "; ".join(
+            f"{r.kinematic_type}: "
+            + (
+                f"{r.characteristic} {', '.join(str(v) for v in r.values)}"
+                if r.characteristic
+                else "every robot"
+            )
+            for r in removed
+        )
         rows.append([constraint.describe(), str(constraint.location or ""), text or "none"])
     return headers, rows
 
@@ -217,15 +256,23 @@ _NUMBER = ' class="n"'
 _TOTAL = ' class="total"'
 
 
-def _html_table(headers: Sequence[str], rows: Sequence[Sequence[Any]],
-                numbers: Sequence[bool], total_last: bool = False) -> str:
+def _html_table(
+    headers: Sequence[str],
+    rows: Sequence[Sequence[Any]],
+    numbers: Sequence[bool],
+    total_last: bool = False,
+) -> str:
     e = html.escape
-    lines = ["<table>", "<thead><tr>" + "".join(f"<th>{e(str(h))}</th>" for h in headers)
-             + "</tr></thead>", "<tbody>"]
+    lines = [
+        "<table>",
+        "<thead><tr>" + "".join(f"<th>{e(str(h))}</th>" for h in headers) + "</tr></thead>",
+        "<tbody>",
+    ]
     for index, row in enumerate(rows):
         total = total_last and index == len(rows) - 1
-        cells = "".join(f"<td{_NUMBER if n else ''}>{e(str(v))}</td>"
-                        for v, n in zip(row, numbers, strict=True))
+        cells = "".join(
+            f"<td{_NUMBER if n else ''}>{e(str(v))}</td>" for v, n in zip(row, numbers, strict=True)
+        )
         lines.append(f"<tr{_TOTAL if total else ''}>{cells}</tr>")
     lines += ["</tbody>", "</table>"]
     return "\n".join(lines)
@@ -259,29 +306,48 @@ def render_html(solution: Solution, charts: Mapping[PlotKind, bytes] | None = No
     e = html.escape
     team = solution.team
     title = f"{team.name}: UI configurations"
-    parts = ["<!DOCTYPE html>", '<html lang="en">', "<head>", '<meta charset="utf-8">',
-             # Nothing may be fetched: the page must look the same offline and archived.
-             '<meta http-equiv="Content-Security-Policy" content="default-src \'none\'; '
-             'img-src data:; style-src \'unsafe-inline\'">',
-             '<meta name="viewport" content="width=device-width, initial-scale=1">',
-             f"<title>{e(title)}</title>", f"<style>{_STYLE}</style>", "</head>", "<body>",
-             f"<h1>{e(team.name)}</h1>", f'<p class="meta">{e(_subtitle(solution))}</p>']
+    parts = [
+        "<!DOCTYPE html>",
+        '<html lang="en">',
+        "<head>",
+        '<meta charset="utf-8">',
+        # Nothing may be fetched: the page must look the same offline and archived.
+        '<meta http-equiv="Content-Security-Policy" content="default-src \'none\'; '
+        "img-src data:; style-src 'unsafe-inline'\">",
+        '<meta name="viewport" content="width=device-width, initial-scale=1">',
+        f"<title>{e(title)}</title>",
+        f"<style>{_STYLE}</style>",
+        "</head>",
+        "<body>",
+        f"<h1>{e(team.name)}</h1>",
+        f'<p class="meta">{e(_subtitle(solution))}</p>',
+    ]
     if team.description:
         parts.append(f"<p>{e(team.description)}</p>")
     constraints = _constraint_table(solution)
-    titles = {"counts": "Valid robots and UI configurations", "charts": "Charts",
-              "constraints": f"Rule constraints ({len(solution.rules.constraints)})",
-              "selections": "Team selections",
-              "configurations": f"UI configurations ({len(solution.configurations)} and the "
-                                "default)"}
+    titles = {
+        "counts": "Valid robots and UI configurations",
+        "charts": "Charts",
+        "constraints": f"Rule constraints ({len(solution.rules.constraints)})",
+        "selections": "Team selections",
+        "configurations": f"UI configurations ({len(solution.configurations)} and the default)",
+    }
     if constraints is None:
         del titles["constraints"]
-    parts.append('<nav class="contents">' + "".join(
-        f'<a href="#{anchor}">{e(title)}</a>' for anchor, title in titles.items()) + "</nav>")
-    parts += [_section("counts", titles["counts"]),
-              _html_table(_SUMMARY_HEADERS, _summary_rows(solution),
-                          [False, True, True, True], total_last=True),
-              "<ul>", *(f"<li>{e(fact)}</li>" for fact in _facts(solution)), "</ul>"]
+    parts.append(
+        '<nav class="contents">'
+        + "".join(f'<a href="#{anchor}">{e(title)}</a>' for anchor, title in titles.items())
+        + "</nav>"
+    )
+    parts += [
+        _section("counts", titles["counts"]),
+        _html_table(
+            _SUMMARY_HEADERS, _summary_rows(solution), [False, True, True, True], total_last=True
+        ),
+        "<ul>",
+        *(f"<li>{e(fact)}</li>" for fact in _facts(solution)),
+        "</ul>",
+    ]
     note = reproduction_note(solution)
     if note is not None:
         text, agrees = note
@@ -289,24 +355,35 @@ def render_html(solution: Solution, charts: Mapping[PlotKind, bytes] | None = No
     parts.append(_section("charts", titles["charts"]))
     for kind in _HTML_KINDS:
         if kind in charts:
-            parts += ["<figure>", f'<img src="{_svg_uri(charts[kind])}" alt="{e(_ALT[kind])}">',
-                      f"<figcaption>{e(_ALT[kind])}.</figcaption>", "</figure>"]
+            parts += [
+                "<figure>",
+                f'<img src="{_svg_uri(charts[kind])}" alt="{e(_ALT[kind])}">',
+                f"<figcaption>{e(_ALT[kind])}.</figcaption>",
+                "</figure>",
+            ]
     if constraints is not None:
         headers, rows = constraints
-        parts += [_section("constraints", titles["constraints"]),
-                  _folded(_html_table(headers, rows, [False] * len(headers)), len(rows))]
+        parts += [
+            _section("constraints", titles["constraints"]),
+            _folded(_html_table(headers, rows, [False] * len(headers)), len(rows)),
+        ]
     headers, rows = _selection_table(solution)
-    parts += [_section("selections", titles["selections"]),
-              _folded(_html_table(headers, rows, [False] * len(headers)), len(rows))]
+    parts += [
+        _section("selections", titles["selections"]),
+        _folded(_html_table(headers, rows, [False] * len(headers)), len(rows)),
+    ]
     headers, rows = _configuration_table(solution)
-    parts += [_section("configurations", titles["configurations"]),
-              _folded(_html_table(headers, rows, [True, *[False] * (len(headers) - 2), True]),
-                      len(rows)),
-              "</body>", "</html>"]
+    parts += [
+        _section("configurations", titles["configurations"]),
+        _folded(_html_table(headers, rows, [True, *[False] * (len(headers) - 2), True]), len(rows)),
+        "</body>",
+        "</html>",
+    ]
     return "\n".join(parts) + "\n"
 
 
 # ---- Markdown ----------------------------------------------------------------------------
+
 
 def render_markdown(solution: Solution, images: Mapping[PlotKind, str] | None = None) -> str:
     """The report as Markdown; ``images`` maps ``radar``/``bars`` to the files to link.
@@ -315,13 +392,17 @@ def render_markdown(solution: Solution, images: Mapping[PlotKind, str] | None = 
     report escapes it: a team called ``<script>`` shows as that text.
     """
     team = solution.team
-    parts = [markdown.heading(1, team.name), "", f"_{markdown.escape(_subtitle(solution))}_",
-             ""]
+    parts = [markdown.heading(1, team.name), "", f"_{markdown.escape(_subtitle(solution))}_", ""]
     if team.description:
         parts += [markdown.paragraph(team.description), ""]
-    parts += ["## Valid robots and UI configurations", "",
-              markdown.table(_SUMMARY_HEADERS, _summary_rows(solution),
-                             [False, True, True, True]).rstrip("\n"), ""]
+    parts += [
+        "## Valid robots and UI configurations",
+        "",
+        markdown.table(_SUMMARY_HEADERS, _summary_rows(solution), [False, True, True, True]).rstrip(
+            "\n"
+        ),
+        "",
+    ]
     parts += [f"- {markdown.escape(fact)}" for fact in _facts(solution)]
     note = reproduction_note(solution)
     if note is not None:
@@ -330,18 +411,27 @@ def render_markdown(solution: Solution, images: Mapping[PlotKind, str] | None = 
         parts += ["", "## Charts", ""]
         for kind in _KINDS:
             if kind in images:
-                parts += [f"![{markdown.escape(_ALT[kind])}]"
-                          f"({markdown.link_target(images[kind])})", ""]
+                parts += [
+                    f"![{markdown.escape(_ALT[kind])}]({markdown.link_target(images[kind])})",
+                    "",
+                ]
     constraints = _constraint_table(solution)
     if constraints is not None:
-        parts += ["", f"## Rule constraints ({len(solution.rules.constraints)})", "",
-                  markdown.table(*constraints).rstrip("\n")]
+        parts += [
+            "",
+            f"## Rule constraints ({len(solution.rules.constraints)})",
+            "",
+            markdown.table(*constraints).rstrip("\n"),
+        ]
     headers, rows = _selection_table(solution)
     parts += ["", "## Team selections", "", markdown.table(headers, rows).rstrip("\n")]
     headers, rows = _configuration_table(solution)
-    parts += ["", f"## UI configurations ({len(solution.configurations)} and the default)", "",
-              markdown.table(headers, rows,
-                             [True, *[False] * (len(headers) - 2), True]).rstrip("\n")]
+    parts += [
+        "",
+        f"## UI configurations ({len(solution.configurations)} and the default)",
+        "",
+        markdown.table(headers, rows, [True, *[False] * (len(headers) - 2), True]).rstrip("\n"),
+    ]
     text = "\n".join(parts) + "\n"
     while "\n\n\n" in text:
         text = text.replace("\n\n\n", "\n\n")
@@ -350,8 +440,10 @@ def render_markdown(solution: Solution, images: Mapping[PlotKind, str] | None = 
 
 # ---- writing ---------------------------------------------------------------------------------
 
-def _charts(solution: Solution, fmt: str, kinds: Sequence[PlotKind] = _KINDS
-            ) -> dict[PlotKind, bytes]:
+
+def _charts(
+    solution: Solution, fmt: str, kinds: Sequence[PlotKind] = _KINDS
+) -> dict[PlotKind, bytes]:
     draw = {"radar": radar_figure, "bars": bars_figure, "matrix": matrix_figure}
     return {kind: figure_bytes(draw[kind](solution), fmt) for kind in kinds}
 

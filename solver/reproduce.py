@@ -33,8 +33,10 @@ class Comparison:
     @property
     def agrees(self) -> bool:
         totals = self.solution.totals
-        return (totals.valid_robots, totals.ui_configurations) == \
-            (self.published.valid_robots, self.published.ui_configurations)
+        return (totals.valid_robots, totals.ui_configurations) == (
+            self.published.valid_robots,
+            self.published.ui_configurations,
+        )
 
 
 def published_note(solution: Solution) -> tuple[str, str, bool] | None:
@@ -47,14 +49,22 @@ def published_note(solution: Solution) -> tuple[str, str, bool] | None:
     if published is None:
         return None
     totals = solution.totals
-    agrees = (published.valid_robots, published.ui_configurations) == \
-        (totals.valid_robots, totals.ui_configurations)
+    agrees = (published.valid_robots, published.ui_configurations) == (
+        totals.valid_robots,
+        totals.ui_configurations,
+    )
     source = f" ({published.source})" if published.source else ""
-    stated = (f"published: {published.valid_robots} valid robots / "
-              f"{published.ui_configurations} UI configurations{source}")
-    verdict = "reproduced" if agrees else (
-        f"NOT reproduced: these rules give {totals.valid_robots} / "
-        f"{totals.ui_configurations}")
+    stated = (
+        f"published: {published.valid_robots} valid robots / "
+        f"{published.ui_configurations} UI configurations{source}"
+    )
+    verdict = (
+        "reproduced"
+        if agrees
+        else (
+            f"NOT reproduced: these rules give {totals.valid_robots} / {totals.ui_configurations}"
+        )
+    )
     return stated, verdict, agrees
 
 
@@ -66,8 +76,10 @@ def compare(paths: Iterable[str | Path] | None = None) -> list[Comparison]:
     :class:`InputError`.
     """
     if paths is None:
-        found = [(path, shipped_name(path) or str(path))
-                 for path in sorted(shipped_path("teams").glob("*.yaml"), key=lambda p: p.stem)]
+        found = [
+            (path, shipped_name(path) or str(path))
+            for path in sorted(shipped_path("teams").glob("*.yaml"), key=lambda p: p.stem)
+        ]
     else:
         found = [(resolve_team_path(str(path)), str(path)) for path in paths]
     comparisons = []

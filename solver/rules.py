@@ -52,13 +52,19 @@ YPath = tuple[PathPart, ...]
 # otherwise allocate a tuple of ten billion values.
 MAX_INTEGER_VALUES = 100_000
 
-_RULES_KEYS = {"name", "description", "source", "bound", "team_key", "characteristics",
-               "constraints"}
+_RULES_KEYS = {
+    "name",
+    "description",
+    "source",
+    "bound",
+    "team_key",
+    "characteristics",
+    "constraints",
+}
 _WHOLE_NUMBER = re.compile(r"[+-]?[0-9]+")
 _CHARACTERISTIC_KEYS = {"label", "description", "values", "range", "components"}
 _CATEGORICAL_COMPONENT_KEYS = {"name", "description", "values"}
-_INTEGER_COMPONENT_KEYS = {"name", "description", "min", "above", "max", "below",
-                           "cluster_size"}
+_INTEGER_COMPONENT_KEYS = {"name", "description", "min", "above", "max", "below", "cluster_size"}
 _CONSTRAINT_KEYS = {"name", "description", "when", "require", "forbid"}
 _SELECTION_KEYS = {"min", "max", "not", "component"}
 
@@ -158,8 +164,10 @@ class RuleSet:
     document: Document | None = field(default=None, compare=False, repr=False)
 
     def __repr__(self) -> str:  # short, for notebooks: the fields are one attribute away
-        return (f"<RuleSet {self.name!r} ({self.file}): {', '.join(self.names)}; "
-                f"{len(self.constraints)} constraints>")
+        return (
+            f"<RuleSet {self.name!r} ({self.file}): {', '.join(self.names)}; "
+            f"{len(self.constraints)} constraints>"
+        )
 
     @cached_property
     def _by_name(self) -> dict[str, Characteristic]:
@@ -201,12 +209,16 @@ class RuleSet:
         """
         found = []
         for characteristic in self.characteristics:
-            conditions = [condition.allowed for rule in self.constraints
-                          for condition in (*rule.when, *rule.conditions)
-                          if condition.characteristic == characteristic.name]
+            conditions = [
+                condition.allowed
+                for rule in self.constraints
+                for condition in (*rule.when, *rule.conditions)
+                if condition.characteristic == characteristic.name
+            ]
             groups: dict[tuple[object, ...], list[Value]] = {}
-            for value, membership in zip(characteristic.values, characteristic.membership,
-                                         strict=True):
+            for value, membership in zip(
+                characteristic.values, characteristic.membership, strict=True
+            ):
                 signature = (membership, *(value in allowed for allowed in conditions))
                 groups.setdefault(signature, []).append(value)
             found.append(tuple(tuple(members) for members in groups.values()))
@@ -215,8 +227,10 @@ class RuleSet:
     @cached_property
     def value_class_index(self) -> tuple[dict[Value, int], ...]:
         """Per characteristic: value -> the index of its class in :attr:`value_classes`."""
-        return tuple({value: index for index, members in enumerate(classes) for value in members}
-                     for classes in self.value_classes)
+        return tuple(
+            {value: index for index, members in enumerate(classes) for value in members}
+            for classes in self.value_classes
+        )
 
 
 def shipped_path(*parts: str) -> Path:
@@ -261,10 +275,10 @@ def parse_rules(document: Document) -> RuleSet:
     if top is None:
         raise RulesError(reader.faults)
     reader.unknown_keys((), top, _RULES_KEYS, "rule set field")
-    name = reader.string(("name",), "rule set name", required=False,
-                         default=Path(document.file).stem)
-    description = reader.string(("description",), "description", required=False,
-                                limit=None)
+    name = reader.string(
+        ("name",), "rule set name", required=False, default=Path(document.file).stem
+    )
+    description = reader.string(("description",), "description", required=False, limit=None)
     source = reader.string(("source",), "source", required=False, limit=None)
     bound = reader.integer(("bound",), "bound", required=False)
     if bound is not None and bound < 1:
@@ -276,45 +290,71 @@ def parse_rules(document: Document) -> RuleSet:
     constraints = _read_constraints(reader, by_name)
     if reader.faults:
         raise RulesError(reader.faults)
-    return RuleSet(name=name, file=document.file, characteristics=tuple(characteristics),
-                   team_key=team_key, constraints=tuple(constraints), declared_bound=bound,
-                   description=description, source=source, document=document)
+    return RuleSet(
+        name=name,
+        file=document.file,
+        characteristics=tuple(characteristics),
+        team_key=team_key,
+        constraints=tuple(constraints),
+        declared_bound=bound,
+        description=description,
+        source=source,
+        document=document,
+    )
 
 
-def _read_team_key(reader: Reader, top: dict[str, Any],
-                   characteristics: list[Characteristic]) -> str:
+def _read_team_key(
+    reader: Reader, top: dict[str, Any], characteristics: list[Characteristic]
+) -> str:
     if not characteristics:
         return ""
     names = [c.name for c in characteristics]
     key = reader.string(("team_key",), "team_key") if "team_key" in top else names[0]
     if key not in names:
-        reader.fault(("team_key",), f"team_key names no characteristic: {key!r}"
-                                    f"{did_you_mean(key, names)}", code="unknown-reference")
+        reader.fault(
+            ("team_key",),
+            f"team_key names no characteristic: {key!r}{did_you_mean(key, names)}",
+            code="unknown-reference",
+        )
         return characteristics[0].name
     chosen = characteristics[names.index(key)]
     if chosen.kind != "categorical":
-        reader.fault(("team_key",), f"team_key {key!r} must be a categorical characteristic "
-                                    "(a list of values); without a team_key it is the first "
-                                    "characteristic", code="invalid")
+        reader.fault(
+            ("team_key",),
+            f"team_key {key!r} must be a categorical characteristic "
+            "(a list of values); without a team_key it is the first "
+            "characteristic",
+            code="invalid",
+        )
     if chosen.declared_components:
-        reader.fault(("characteristics", key, "components"),
-                     f"{key!r} is the team key: each of its values is its own component, "
-                     "so it cannot declare components", code="invalid")
+        reader.fault(
+            ("characteristics", key, "components"),
+            f"{key!r} is the team key: each of its values is its own component, "
+            "so it cannot declare components",
+            code="invalid",
+        )
     return key
 
 
 def _read_characteristics(reader: Reader) -> list[Characteristic]:
-    section = reader.mapping(("characteristics",), "characteristics (a mapping of name -> "
-                                                   "definition)")
+    section = reader.mapping(
+        ("characteristics",), "characteristics (a mapping of name -> definition)"
+    )
     if not section and isinstance(reader.get(("characteristics",)), dict):
-        reader.fault(("characteristics",), "a rule set needs at least one characteristic",
-                     code="missing-field")
+        reader.fault(
+            ("characteristics",),
+            "a rule set needs at least one characteristic",
+            code="missing-field",
+        )
     found = []
     for name in section:
         if not name.strip() or not name.isprintable():
-            reader.fault(("characteristics", name), f"a characteristic needs a name of visible "
-                                                    f"characters, got {quote(name)}",
-                         key=True, code="invalid")
+            reader.fault(
+                ("characteristics", name),
+                f"a characteristic needs a name of visible characters, got {quote(name)}",
+                key=True,
+                code="invalid",
+            )
             continue
         characteristic = _read_characteristic(reader, ("characteristics", name), name)
         if characteristic is not None:
@@ -328,12 +368,15 @@ def _read_characteristic(reader: Reader, path: YPath, name: str) -> Characterist
         return None
     reader.unknown_keys(path, spec, _CHARACTERISTIC_KEYS, "characteristic field")
     label = reader.string((*path, "label"), "label", required=False, default=name)
-    description = reader.string((*path, "description"), "description", required=False,
-                                limit=None)
+    description = reader.string((*path, "description"), "description", required=False, limit=None)
     location = reader.document.location(path, key=True)
     if ("values" in spec) == ("range" in spec):
-        reader.fault(path, f"characteristic {name!r} needs exactly one of 'values' (named "
-                           "values) or 'range' (whole numbers)", code="missing-field")
+        reader.fault(
+            path,
+            f"characteristic {name!r} needs exactly one of 'values' (named "
+            "values) or 'range' (whole numbers)",
+            code="missing-field",
+        )
         return None
     kind: Kind
     if "values" in spec:
@@ -349,20 +392,32 @@ def _read_characteristic(reader: Reader, path: YPath, name: str) -> Characterist
         declared = True
     else:
         components = tuple(
-            Component(name=str(value), index=i, values=(value,),
-                      low=value if isinstance(value, int) else None,
-                      high=value if isinstance(value, int) else None)
-            for i, value in enumerate(values))
+            Component(
+                name=str(value),
+                index=i,
+                values=(value,),
+                low=value if isinstance(value, int) else None,
+                high=value if isinstance(value, int) else None,
+            )
+            for i, value in enumerate(values)
+        )
         declared = False
     holders: dict[Value, list[int]] = {}
     for component in components:
         for value in component.values:
             holders.setdefault(value, []).append(component.index)
     membership = tuple(tuple(holders.get(value, ())) for value in values)
-    return Characteristic(name=name, label=label, kind=kind, values=values,
-                          components=components, membership=membership,
-                          declared_components=declared, description=description,
-                          location=location)
+    return Characteristic(
+        name=name,
+        label=label,
+        kind=kind,
+        values=values,
+        components=components,
+        membership=membership,
+        declared_components=declared,
+        description=description,
+        location=location,
+    )
 
 
 def _read_categorical_values(reader: Reader, path: YPath, name: str) -> tuple[str, ...]:
@@ -372,9 +427,12 @@ def _read_categorical_values(reader: Reader, path: YPath, name: str) -> tuple[st
         if not value:
             reader.fault(item_path, "empty value name", code="wrong-type")
         elif value in seen:
-            reader.fault(item_path, f"duplicate value {value!r} in {name!r} (first at "
-                                    f"{reader.document.location(seen[value])})",
-                         code="duplicate-value")
+            reader.fault(
+                item_path,
+                f"duplicate value {value!r} in {name!r} (first at "
+                f"{reader.document.location(seen[value])})",
+                code="duplicate-value",
+            )
         else:
             seen[value] = item_path
     if not seen and reader.get(path) is not None:
@@ -390,15 +448,21 @@ def _read_integer_range(reader: Reader, path: YPath, name: str) -> tuple[int, ..
         # A list is a set of values everywhere else (a team's `sensor_count: [2, 6]` is {2, 6});
         # so a range has one spelling, a mapping, and `[1, 50]` here is refused, not guessed.
         shown = ", ".join(str(item) for item in raw) if len(raw) <= 4 else "..."
-        example = (f"{{min: {raw[0]}, max: {raw[1]}}}" if len(raw) == 2
-                   else "{min: 1, max: 50}")
-        reader.fault(path, f"range of {name!r} is a list ([{shown}]), but a list means a set "
-                           f"of values (a team's `{name}: [2, 6]` is 2 and 6); write the range "
-                           f"as {example}", code="wrong-type")
+        example = f"{{min: {raw[0]}, max: {raw[1]}}}" if len(raw) == 2 else "{min: 1, max: 50}"
+        reader.fault(
+            path,
+            f"range of {name!r} is a list ([{shown}]), but a list means a set "
+            f"of values (a team's `{name}: [2, 6]` is 2 and 6); write the range "
+            f"as {example}",
+            code="wrong-type",
+        )
         return ()
     if not isinstance(raw, dict):
-        reader.fault(path, f"range of {name!r} must be {{min: a, max: b}}, got "
-                           f"{type_name(raw)}", code="wrong-type")
+        reader.fault(
+            path,
+            f"range of {name!r} must be {{min: a, max: b}}, got {type_name(raw)}",
+            code="wrong-type",
+        )
         return ()
     spec = reader.mapping(path, "range")
     reader.unknown_keys(path, spec, {"min", "max"}, "range field")
@@ -407,22 +471,31 @@ def _read_integer_range(reader: Reader, path: YPath, name: str) -> tuple[int, ..
     if low is None or high is None:
         return ()
     if low > high:
-        reader.fault(path, f"range of {name!r} is inverted: min {low} > max {high}",
-                     code="out-of-range")
+        reader.fault(
+            path, f"range of {name!r} is inverted: min {low} > max {high}", code="out-of-range"
+        )
         return ()
     if high - low + 1 > MAX_INTEGER_VALUES:
-        reader.fault(path, f"range of {name!r} has {high - low + 1} values; at most "
-                           f"{MAX_INTEGER_VALUES} are supported", code="out-of-range")
+        reader.fault(
+            path,
+            f"range of {name!r} has {high - low + 1} values; at most "
+            f"{MAX_INTEGER_VALUES} are supported",
+            code="out-of-range",
+        )
         return ()
     return tuple(range(low, high + 1))
 
 
-def _read_components(reader: Reader, path: YPath, name: str, kind: Kind,
-                     values: tuple[Value, ...]) -> tuple[Component, ...]:
+def _read_components(
+    reader: Reader, path: YPath, name: str, kind: Kind, values: tuple[Value, ...]
+) -> tuple[Component, ...]:
     raw = reader.get(path)
     if not isinstance(raw, list) or not raw:
-        reader.fault(path, f"components of {name!r} must be a non-empty list, got "
-                           f"{type_name(raw)}", code="wrong-type")
+        reader.fault(
+            path,
+            f"components of {name!r} must be a non-empty list, got {type_name(raw)}",
+            code="wrong-type",
+        )
         return ()
     components: list[Component] = []
     names: dict[str, YPath] = {}
@@ -431,19 +504,27 @@ def _read_components(reader: Reader, path: YPath, name: str, kind: Kind,
         spec = reader.mapping(item_path, "component")
         if not spec:
             continue
-        allowed = _CATEGORICAL_COMPONENT_KEYS if kind == "categorical" else \
-            _INTEGER_COMPONENT_KEYS
+        allowed = _CATEGORICAL_COMPONENT_KEYS if kind == "categorical" else _INTEGER_COMPONENT_KEYS
         reader.unknown_keys(item_path, spec, allowed, f"{kind} component field")
         component_name = reader.string((*item_path, "name"), "component name")
         if component_name in names:
             first = reader.document.location(names[component_name])
-            reader.fault((*item_path, "name"), f"duplicate component {component_name!r} (first "
-                                               f"at {first})", code="duplicate-value")
+            reader.fault(
+                (*item_path, "name"),
+                f"duplicate component {component_name!r} (first at {first})",
+                code="duplicate-value",
+            )
         names.setdefault(component_name, (*item_path, "name"))
-        description = reader.string((*item_path, "description"), "description",
-                                    required=False, limit=None)
-        component = Component(component_name, len(components), (), description,
-                              location=reader.document.location(item_path))
+        description = reader.string(
+            (*item_path, "description"), "description", required=False, limit=None
+        )
+        component = Component(
+            component_name,
+            len(components),
+            (),
+            description,
+            location=reader.document.location(item_path),
+        )
         if kind == "categorical":
             members = _read_members(reader, (*item_path, "values"), name, values)
             components.append(replace(component, values=members))
@@ -452,23 +533,29 @@ def _read_components(reader: Reader, path: YPath, name: str, kind: Kind,
     return tuple(components)
 
 
-def _read_members(reader: Reader, path: YPath, name: str,
-                  values: tuple[Value, ...]) -> tuple[Value, ...]:
+def _read_members(
+    reader: Reader, path: YPath, name: str, values: tuple[Value, ...]
+) -> tuple[Value, ...]:
     known = {str(v) for v in values}
     members: set[str] = set()
     for item_path, value in reader.names(path, "component values"):
         if value not in known:
-            reader.fault(item_path, f"unknown {name} value {value!r}"
-                                    f"{did_you_mean(value, known)}", code="unknown-reference")
+            reader.fault(
+                item_path,
+                f"unknown {name} value {value!r}{did_you_mean(value, known)}",
+                code="unknown-reference",
+            )
         elif value in members:
-            reader.fault(item_path, f"{value!r} is listed twice in this component",
-                         code="duplicate-value")
+            reader.fault(
+                item_path, f"{value!r} is listed twice in this component", code="duplicate-value"
+            )
         members.add(value)
     return tuple(v for v in values if v in members)
 
 
-def _read_arrangement(reader: Reader, path: YPath, component: Component,
-                      values: tuple[Value, ...]) -> Component:
+def _read_arrangement(
+    reader: Reader, path: YPath, component: Component, values: tuple[Value, ...]
+) -> Component:
     """``component`` with the range, cluster size and member counts its spec declares."""
     spec = reader.mapping(path, "component")
     name = component.name
@@ -488,29 +575,40 @@ def _read_arrangement(reader: Reader, path: YPath, component: Component,
         below = reader.integer((*path, "below"), "below")
         high = None if below is None else below - 1
     if "min" not in spec and "above" not in spec and "max" not in spec and "below" not in spec:
-        reader.fault(path, f"arrangement {name!r} needs a range: min/above and/or max/below",
-                     code="missing-field")
+        reader.fault(
+            path,
+            f"arrangement {name!r} needs a range: min/above and/or max/below",
+            code="missing-field",
+        )
     cluster_size = 1
     if "cluster_size" in spec:
         size = reader.integer((*path, "cluster_size"), "cluster_size")
         if size is not None and size < 1:
-            reader.fault((*path, "cluster_size"), f"cluster_size must be at least 1, got {size}",
-                         code="out-of-range")
+            reader.fault(
+                (*path, "cluster_size"),
+                f"cluster_size must be at least 1, got {size}",
+                code="out-of-range",
+            )
         elif size is not None:
             cluster_size = size
-    members = tuple(v for v in values if isinstance(v, int)
-                    and (low is None or v >= low) and (high is None or v <= high))
+    members = tuple(
+        v
+        for v in values
+        if isinstance(v, int) and (low is None or v >= low) and (high is None or v <= high)
+    )
     return replace(component, values=members, low=low, high=high, cluster_size=cluster_size)
 
 
-def _read_constraints(reader: Reader, characteristics: dict[str, Characteristic]
-                      ) -> list[RuleConstraint]:
+def _read_constraints(
+    reader: Reader, characteristics: dict[str, Characteristic]
+) -> list[RuleConstraint]:
     raw = reader.get(("constraints",))
     if raw is None:
         return []
     if not isinstance(raw, list):
-        reader.fault(("constraints",), f"constraints must be a list, got {type_name(raw)}",
-                     code="wrong-type")
+        reader.fault(
+            ("constraints",), f"constraints must be a list, got {type_name(raw)}", code="wrong-type"
+        )
         return []
     found = []
     for index in range(len(raw)):
@@ -520,22 +618,28 @@ def _read_constraints(reader: Reader, characteristics: dict[str, Characteristic]
     return found
 
 
-def _read_constraint(reader: Reader, path: YPath, index: int,
-                     characteristics: dict[str, Characteristic]) -> RuleConstraint | None:
+def _read_constraint(
+    reader: Reader, path: YPath, index: int, characteristics: dict[str, Characteristic]
+) -> RuleConstraint | None:
     spec = reader.mapping(path, "constraint")
     if not spec:
         return None
     reader.unknown_keys(path, spec, _CONSTRAINT_KEYS, "constraint field")
-    name = reader.string((*path, "name"), "constraint name", required=False,
-                         default=f"constraint {index + 1}")
+    name = reader.string(
+        (*path, "name"), "constraint name", required=False, default=f"constraint {index + 1}"
+    )
     location = reader.document.location(path)
     if ("require" in spec) == ("forbid" in spec):
-        reader.fault(path, "a constraint needs exactly one of 'require' or 'forbid'",
-                     code="missing-field")
+        reader.fault(
+            path, "a constraint needs exactly one of 'require' or 'forbid'", code="missing-field"
+        )
         return None
     if "forbid" in spec and "when" in spec:
-        reader.fault((*path, "when"), "'when' goes with 'require'; a 'forbid' rule already "
-                                      "lists the whole forbidden combination")
+        reader.fault(
+            (*path, "when"),
+            "'when' goes with 'require'; a 'forbid' rule already "
+            "lists the whole forbidden combination",
+        )
         return None
     when = _read_conditions(reader, (*path, "when"), characteristics) if "when" in spec else ()
     kind: Literal["require", "forbid"] = "forbid" if "forbid" in spec else "require"
@@ -545,17 +649,21 @@ def _read_constraint(reader: Reader, path: YPath, index: int,
     return RuleConstraint(name, kind, when, conditions, location)
 
 
-def _read_conditions(reader: Reader, path: YPath, characteristics: dict[str, Characteristic]
-                     ) -> tuple[Condition, ...]:
+def _read_conditions(
+    reader: Reader, path: YPath, characteristics: dict[str, Characteristic]
+) -> tuple[Condition, ...]:
     spec = reader.mapping(path, "conditions (a mapping of characteristic -> values)")
     if not spec and isinstance(reader.get(path), dict):
         reader.fault(path, "no conditions given", code="empty-selection")
     conditions = []
     for name in spec:
         if name not in characteristics:
-            reader.fault((*path, name), f"unknown characteristic {name!r}"
-                                        f"{did_you_mean(name, characteristics)}",
-                         key=True, code="unknown-reference")
+            reader.fault(
+                (*path, name),
+                f"unknown characteristic {name!r}{did_you_mean(name, characteristics)}",
+                key=True,
+                code="unknown-reference",
+            )
             continue
         selection = read_selection(reader, (*path, name), characteristics[name], exact=True)
         if selection is not None:
@@ -563,8 +671,9 @@ def _read_conditions(reader: Reader, path: YPath, characteristics: dict[str, Cha
     return tuple(conditions)
 
 
-def read_selection(reader: Reader, path: YPath, characteristic: Characteristic, *,
-                   exact: bool) -> tuple[frozenset[Value], str] | None:
+def read_selection(
+    reader: Reader, path: YPath, characteristic: Characteristic, *, exact: bool
+) -> tuple[frozenset[Value], str] | None:
     """A set of values of ``characteristic`` as a rule or team file writes it.
 
     Forms: one value; a list of values; or a mapping with any of ``min``/``max`` (integers),
@@ -578,27 +687,32 @@ def read_selection(reader: Reader, path: YPath, characteristic: Characteristic, 
         return _read_selection_mapping(reader, path, characteristic, raw)
     if isinstance(raw, list):
         if not raw:
-            reader.fault(path, f"empty selection for {characteristic.name!r}",
-                         code="empty-selection")
+            reader.fault(
+                path, f"empty selection for {characteristic.name!r}", code="empty-selection"
+            )
             return None
         chosen: list[Value] = []
         before = len(reader.faults)
         for index, item in enumerate(raw):
             value = _read_value(reader, (*path, index), characteristic, item)
             if value is not None and value in chosen:
-                reader.fault((*path, index), f"{value!r} is listed twice",
-                             code="duplicate-value")
+                reader.fault((*path, index), f"{value!r} is listed twice", code="duplicate-value")
             elif value is not None:
                 chosen.append(value)
         if len(reader.faults) > before:
             return None
         return frozenset(chosen), _describe(characteristic, chosen)
     if raw is None:
-        reader.fault(path, f"no values selected for {characteristic.name!r}",
-                     code="empty-selection")
+        reader.fault(
+            path, f"no values selected for {characteristic.name!r}", code="empty-selection"
+        )
         return None
-    if characteristic.kind == "integer" and not exact and isinstance(raw, int) \
-            and not isinstance(raw, bool):
+    if (
+        characteristic.kind == "integer"
+        and not exact
+        and isinstance(raw, int)
+        and not isinstance(raw, bool)
+    ):
         return _read_maximum(reader, path, characteristic, raw)
     value = _read_value(reader, path, characteristic, raw)
     if value is None:
@@ -606,48 +720,67 @@ def read_selection(reader: Reader, path: YPath, characteristic: Characteristic, 
     return frozenset({value}), _describe(characteristic, [value])
 
 
-def _read_maximum(reader: Reader, path: YPath, characteristic: Characteristic,
-                  maximum: int) -> tuple[frozenset[Value], str] | None:
+def _read_maximum(
+    reader: Reader, path: YPath, characteristic: Characteristic, maximum: int
+) -> tuple[frozenset[Value], str] | None:
     low, high = int(characteristic.values[0]), int(characteristic.values[-1])
     if maximum < low:
-        reader.fault(path, f"{characteristic.name} maximum must be at least {low}, got "
-                           f"{maximum}", code="out-of-range")
+        reader.fault(
+            path,
+            f"{characteristic.name} maximum must be at least {low}, got {maximum}",
+            code="out-of-range",
+        )
         return None
     if maximum > high:
-        reader.fault(path, f"{characteristic.name} maximum {maximum} exceeds the rule set's "
-                           f"maximum of {high}", code="out-of-range")
+        reader.fault(
+            path,
+            f"{characteristic.name} maximum {maximum} exceeds the rule set's maximum of {high}",
+            code="out-of-range",
+        )
         return None
     return frozenset(range(low, maximum + 1)), f"in {low}..{maximum}"
 
 
-def _read_value(reader: Reader, path: YPath, characteristic: Characteristic,
-                raw: Any) -> Value | None:
+def _read_value(
+    reader: Reader, path: YPath, characteristic: Characteristic, raw: Any
+) -> Value | None:
     if characteristic.kind == "integer":
         if isinstance(raw, bool) or not isinstance(raw, int):
-            reader.fault(path, f"{characteristic.name} values are whole numbers, got "
-                               f"{type_name(raw)}", code="wrong-type")
+            reader.fault(
+                path,
+                f"{characteristic.name} values are whole numbers, got {type_name(raw)}",
+                code="wrong-type",
+            )
             return None
         if characteristic.index(raw) is None:
             low, high = characteristic.values[0], characteristic.values[-1]
-            reader.fault(path, f"{characteristic.name} {raw} is outside the rule set's range "
-                               f"{low}..{high}", code="out-of-range")
+            reader.fault(
+                path,
+                f"{characteristic.name} {raw} is outside the rule set's range {low}..{high}",
+                code="out-of-range",
+            )
             return None
         return int(raw)
     if isinstance(raw, bool) or not isinstance(raw, str | int | float):
-        reader.fault(path, f"{characteristic.name} values are names, got {type_name(raw)}",
-                     code="wrong-type")
+        reader.fault(
+            path, f"{characteristic.name} values are names, got {type_name(raw)}", code="wrong-type"
+        )
         return None
     text = str(raw).strip()
     if characteristic.index(text) is None:
         names = [str(v) for v in characteristic.values]
-        reader.fault(path, f"unknown {characteristic.label.lower()} {text!r}"
-                           f"{did_you_mean(text, names)}", code="unknown-reference")
+        reader.fault(
+            path,
+            f"unknown {characteristic.label.lower()} {text!r}{did_you_mean(text, names)}",
+            code="unknown-reference",
+        )
         return None
     return text
 
 
-def _read_selection_mapping(reader: Reader, path: YPath, characteristic: Characteristic,
-                            spec: dict[Any, Any]) -> tuple[frozenset[Value], str] | None:
+def _read_selection_mapping(
+    reader: Reader, path: YPath, characteristic: Characteristic, spec: dict[Any, Any]
+) -> tuple[frozenset[Value], str] | None:
     keys = {str(k): v for k, v in spec.items()}
     reader.unknown_keys(path, keys, _SELECTION_KEYS, "selection field")
     allowed: set[Value] = set(characteristic.values)
@@ -663,9 +796,11 @@ def _read_selection_mapping(reader: Reader, path: YPath, characteristic: Charact
             component = characteristic.component(name)
             if component is None:
                 names = [c.name for c in characteristic.components]
-                reader.fault(item_path, f"unknown {characteristic.name} component {name!r}"
-                                        f"{did_you_mean(name, names)}",
-                             code="unknown-reference")
+                reader.fault(
+                    item_path,
+                    f"unknown {characteristic.name} component {name!r}{did_you_mean(name, names)}",
+                    code="unknown-reference",
+                )
             else:
                 members.update(component.values)
         allowed &= members
@@ -684,28 +819,41 @@ def _read_selection_mapping(reader: Reader, path: YPath, characteristic: Charact
     if len(reader.faults) > before:
         return None
     if not allowed:
-        reader.fault(path, f"selection for {characteristic.name!r} leaves no values",
-                     code="empty-selection")
+        reader.fault(
+            path, f"selection for {characteristic.name!r} leaves no values", code="empty-selection"
+        )
         return None
     return frozenset(allowed), " and ".join(parts)
 
 
-def _read_bounds(reader: Reader, path: YPath, characteristic: Characteristic,
-                 allowed: set[Value]) -> tuple[set[Value], str]:
+def _read_bounds(
+    reader: Reader, path: YPath, characteristic: Characteristic, allowed: set[Value]
+) -> tuple[set[Value], str]:
     """``allowed`` cut to a selection's ``min``/``max``, and how to say it."""
     if characteristic.kind != "integer":
-        reader.fault(path, f"min/max apply to whole-number characteristics; "
-                           f"{characteristic.name!r} has named values", code="wrong-type")
+        reader.fault(
+            path,
+            f"min/max apply to whole-number characteristics; "
+            f"{characteristic.name!r} has named values",
+            code="wrong-type",
+        )
         return allowed, ""
     low = reader.integer((*path, "min"), "min", required=False)
     high = reader.integer((*path, "max"), "max", required=False)
     first, last = int(characteristic.values[0]), int(characteristic.values[-1])
     for key, bound in (("min", low), ("max", high)):
         if bound is not None and not first <= bound <= last:
-            reader.fault((*path, key), f"{characteristic.name} {key} {bound} is outside the "
-                                       f"rule set's range {first}..{last}", code="out-of-range")
-    kept: set[Value] = {v for v in allowed if isinstance(v, int)
-            and (low is None or v >= low) and (high is None or v <= high)}
+            reader.fault(
+                (*path, key),
+                f"{characteristic.name} {key} {bound} is outside the "
+                f"rule set's range {first}..{last}",
+                code="out-of-range",
+            )
+    kept: set[Value] = {
+        v
+        for v in allowed
+        if isinstance(v, int) and (low is None or v >= low) and (high is None or v <= high)
+    }
     return kept, f"in {'' if low is None else low}..{'' if high is None else high}"
 
 

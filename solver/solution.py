@@ -28,8 +28,7 @@ from solver.partition import Configuration, Key
 from solver.rules import RuleSet
 from solver.team import Team
 
-__all__ = ["MAX_CONFIGURATIONS", "MAX_ROBOTS", "Solution", "TooLargeError", "TypeSummary",
-           "solve"]
+__all__ = ["MAX_CONFIGURATIONS", "MAX_ROBOTS", "Solution", "TooLargeError", "TypeSummary", "solve"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -69,9 +68,12 @@ class Solution:
 
     @property
     def totals(self) -> TypeSummary:
-        return TypeSummary("total", sum(t.valid_robots for t in self.by_type),
-                           sum(t.ui_configurations for t in self.by_type),
-                           sum(t.unserved_robots for t in self.by_type))
+        return TypeSummary(
+            "total",
+            sum(t.valid_robots for t in self.by_type),
+            sum(t.ui_configurations for t in self.by_type),
+            sum(t.unserved_robots for t in self.by_type),
+        )
 
     @property
     def default_configuration(self) -> int:
@@ -84,8 +86,10 @@ class Solution:
 
     def __repr__(self) -> str:
         totals = self.totals
-        return (f"<Solution {self.team.name!r}: {totals.valid_robots} valid robots, "
-                f"{totals.ui_configurations} UI configurations>")
+        return (
+            f"<Solution {self.team.name!r}: {totals.valid_robots} valid robots, "
+            f"{totals.ui_configurations} UI configurations>"
+        )
 
     def to_dict(self) -> dict[str, Any]:
         """The JSON contract of ``teleop-ui solve --format json --list`` (docs/formats.md)."""
@@ -93,8 +97,9 @@ class Solution:
 
         return solution_data(self, configurations=self.listed)
 
-    def records(self, table: Literal["configurations", "types"] = "configurations"
-                ) -> list[dict[str, Any]]:
+    def records(
+        self, table: Literal["configurations", "types"] = "configurations"
+    ) -> list[dict[str, Any]]:
         """One flat dict per configuration (or per kinematic type), for a table:
         ``pandas.DataFrame(solution.records())``. Keys as in :meth:`to_dict`; a configuration's
         components are one column per characteristic, named after it (``<name>_component``
@@ -104,11 +109,18 @@ class Solution:
             return [dict(row) for row in data["by_type"]]
         taken = {"number", "kinematic_type", "valid_robots"}
         columns = [f"{name}_component" if name in taken else name for name in self.rules.names]
-        return [{"number": c["number"], "kinematic_type": c["kinematic_type"],
-                 **{column: part["component"]
-                    for column, part in zip(columns, c["components"], strict=True)},
-                 "valid_robots": c["valid_robots"]}
-                for c in data.get("configurations", [])]
+        return [
+            {
+                "number": c["number"],
+                "kinematic_type": c["kinematic_type"],
+                **{
+                    column: part["component"]
+                    for column, part in zip(columns, c["components"], strict=True)
+                },
+                "valid_robots": c["valid_robots"],
+            }
+            for c in data.get("configurations", [])
+        ]
 
     @cached_property
     def removed(self) -> tuple[Removed, ...]:
@@ -133,13 +145,24 @@ class Solution:
             options.append(characteristic.membership[position])
         if all(len(o) == 1 for o in options):
             return self._by_key.get(tuple(o[0] for o in options))
-        return next((c for c in self.configurations
-                     if all(k in o for k, o in zip(c.key, options, strict=True))), None)
+        return next(
+            (
+                c
+                for c in self.configurations
+                if all(k in o for k, o in zip(c.key, options, strict=True))
+            ),
+            None,
+        )
 
 
-def solve(team: Team, *, engine: str = "auto", count_only: bool = False,
-          max_robots: int = MAX_ROBOTS, max_configurations: int = MAX_CONFIGURATIONS
-          ) -> Solution:
+def solve(
+    team: Team,
+    *,
+    engine: str = "auto",
+    count_only: bool = False,
+    max_robots: int = MAX_ROBOTS,
+    max_configurations: int = MAX_CONFIGURATIONS,
+) -> Solution:
     """Count, or enumerate and partition, the valid robots of ``team``.
 
     ``engine``: one of :data:`solver.engines.NAMES`; ``auto`` (default) uses the structure
@@ -158,25 +181,48 @@ def solve(team: Team, *, engine: str = "auto", count_only: bool = False,
         if count_only:
             if counts is None:
                 counts = engines.lookup(method).count(rules, selection, memo)
-            summaries.append(TypeSummary(selection.kinematic_type, counts.valid_robots,
-                                         counts.ui_configurations, counts.unserved_robots,
-                                         method))
+            summaries.append(
+                TypeSummary(
+                    selection.kinematic_type,
+                    counts.valid_robots,
+                    counts.ui_configurations,
+                    counts.unserved_robots,
+                    method,
+                )
+            )
             continue
         if counts is not None and counts.ui_configurations > max_configurations:
-            raise TooLargeError.at(team.file, f"{selection.kinematic_type}: listing "
-                                              f"{counts.ui_configurations} UI configurations "
-                                              f"is refused (more than {max_configurations}); "
-                                              "use --count-only for the counts")
+            raise TooLargeError.at(
+                team.file,
+                f"{selection.kinematic_type}: listing "
+                f"{counts.ui_configurations} UI configurations "
+                f"is refused (more than {max_configurations}); "
+                "use --count-only for the counts",
+            )
         part = engines.lookup(method).partition(rules, selection, memo)
         proven = proven and part.proven_minimal
-        summaries.append(TypeSummary(selection.kinematic_type, part.valid_robots,
-                                     len(part.classes), part.unserved_robots, method))
+        summaries.append(
+            TypeSummary(
+                selection.kinematic_type,
+                part.valid_robots,
+                len(part.classes),
+                part.unserved_robots,
+                method,
+            )
+        )
         every = [c.components for c in rules.characteristics]
         for found in part.classes:
             components = tuple([every[i][k] for i, k in enumerate(found.key)])
-            configurations.append(Configuration(len(configurations) + 1,
-                                                selection.kinematic_type, found.key, components,
-                                                found.robots, found.served))
-    return Solution(team, tuple(summaries), tuple(configurations), engine, proven,
-                    listed=not count_only)
-
+            configurations.append(
+                Configuration(
+                    len(configurations) + 1,
+                    selection.kinematic_type,
+                    found.key,
+                    components,
+                    found.robots,
+                    found.served,
+                )
+            )
+    return Solution(
+        team, tuple(summaries), tuple(configurations), engine, proven, listed=not count_only
+    )

@@ -53,12 +53,12 @@ class TypeFormula:
 
     kinematic_type: str
     characteristic: str
-    symbol: Any            # sympy.Symbol
+    symbol: Any  # sympy.Symbol
     low: int
-    high: int              # the largest maximum the rules allow
-    at: int                # the team's own maximum
-    robots: Any            # sympy expression in symbol
-    configurations: Any    # sympy expression in symbol (may use the function A)
+    high: int  # the largest maximum the rules allow
+    at: int  # the team's own maximum
+    robots: Any  # sympy expression in symbol
+    configurations: Any  # sympy expression in symbol (may use the function A)
 
 
 @dataclass(frozen=True)
@@ -84,7 +84,8 @@ class Growth:
         for _, function, definition in self.functions:
             argument = definition.free_symbols.pop() if definition.free_symbols else None
             expanded = expanded.replace(
-                function, lambda x, d=definition, a=argument: d.subs(a, x) if a else d)
+                function, lambda x, d=definition, a=argument: d.subs(a, x) if a else d
+            )
         return int(expanded.subs(values))
 
     def at_team_maxima(self) -> dict[Any, int]:
@@ -103,9 +104,12 @@ def formulas(team: Team) -> Growth:
     rules = team.rules
     integers = [c for c in rules.characteristics if c.kind == "integer"]
     if len(integers) != 1:
-        raise InputError.at(rules.file, f"symbolic counts need exactly one whole-number "
-                                        f"characteristic to grow (the rules have "
-                                        f"{len(integers)})")
+        raise InputError.at(
+            rules.file,
+            f"symbolic counts need exactly one whole-number "
+            f"characteristic to grow (the rules have "
+            f"{len(integers)})",
+        )
     characteristic = integers[0]
     position = rules.names.index(characteristic.name)
     functions: dict[str, tuple[str, Any, Any]] = {}
@@ -115,8 +119,11 @@ def formulas(team: Team) -> Growth:
         domain = [int(v) for v in selection.domains[position]]
         low, at = domain[0], domain[-1]
         if domain != list(range(low, at + 1)):
-            raise InputError.at(team.file, f"{selection.kinematic_type}: symbolic counts need "
-                                           f"{characteristic.name} to be a range low..max")
+            raise InputError.at(
+                team.file,
+                f"{selection.kinematic_type}: symbolic counts need "
+                f"{characteristic.name} to be a range low..max",
+            )
         high = int(characteristic.values[-1])
         name = symbol_name(selection.kinematic_type, characteristic.name, False)
         while name in used:  # "Mobile Manipulator" and "Mobile-Manipulator" read alike
@@ -125,13 +132,24 @@ def formulas(team: Team) -> Growth:
         # Only `integer`: counts may be 0 or negative in a rule set's range.
         symbol = sympy.Symbol(name, integer=True)
         independent = all(c.is_partition for c in rules.characteristics) and not any(
-            characteristic.name in rule.characteristics for rule in rules.constraints)
+            characteristic.name in rule.characteristics for rule in rules.constraints
+        )
         if not independent:
             robots, configurations = _piecewise(rules, selection, position, (low, high), symbol)
         else:
             robots, configurations = _factored(rules, selection, position, symbol, functions)
-        types.append(TypeFormula(selection.kinematic_type, characteristic.name, symbol, low,
-                                 high, at, robots, configurations))
+        types.append(
+            TypeFormula(
+                selection.kinematic_type,
+                characteristic.name,
+                symbol,
+                low,
+                high,
+                at,
+                robots,
+                configurations,
+            )
+        )
     return Growth(team, tuple(types), tuple(functions.values()))
 
 
@@ -141,8 +159,13 @@ def _restricted(selection: TypeSelection, position: int, values: range) -> TypeS
     return replace(selection, domains=tuple(domains))
 
 
-def _factored(rules: RuleSet, selection: TypeSelection, position: int, symbol: Any,
-              functions: dict[str, tuple[str, Any, Any]]) -> tuple[Any, Any]:
+def _factored(
+    rules: RuleSet,
+    selection: TypeSelection,
+    position: int,
+    symbol: Any,
+    functions: dict[str, tuple[str, Any, Any]],
+) -> tuple[Any, Any]:
     """Counts when the count characteristic is independent: R * (n - low + 1), C * A(n)."""
     characteristic = rules.characteristics[position]
     low = int(selection.domains[position][0])
@@ -150,23 +173,33 @@ def _factored(rules: RuleSet, selection: TypeSelection, position: int, symbol: A
     served = characteristic.components_of(low)
     per_count_robots = single.valid_robots
     # Configurations per component of the count, the same for every component reached.
-    per_component = single.ui_configurations if served else \
-        _first_served_configurations(rules, selection, position, low, characteristic)
+    per_component = (
+        single.ui_configurations
+        if served
+        else _first_served_configurations(rules, selection, position, low, characteristic)
+    )
     name = f"A_{characteristic.name}" if low == 1 else f"A_{characteristic.name}_from_{low}"
     if name not in functions:
         argument = sympy.Symbol("n", integer=True)
-        functions[name] = (name, sympy.Function(name),
-                           _arrangements_reached(characteristic, low, argument))
+        functions[name] = (
+            name,
+            sympy.Function(name),
+            _arrangements_reached(characteristic, low, argument),
+        )
     function = functions[name][1]
     return (per_count_robots * (symbol - low + 1), per_component * function(symbol))
 
 
-def _first_served_configurations(rules: RuleSet, selection: TypeSelection, position: int,
-                                 low: int, characteristic: Characteristic) -> int:
+def _first_served_configurations(
+    rules: RuleSet,
+    selection: TypeSelection,
+    position: int,
+    low: int,
+    characteristic: Characteristic,
+) -> int:
     for value in characteristic.values:
         if int(value) >= low and characteristic.components_of(value):
-            one = count(rules, _restricted(selection, position, range(int(value),
-                                                                      int(value) + 1)))
+            one = count(rules, _restricted(selection, position, range(int(value), int(value) + 1)))
             return one.ui_configurations
     return 0
 
@@ -181,13 +214,17 @@ def _arrangements_reached(characteristic: Characteristic, low: int, n: Any) -> A
     return _piecewise_of(pieces, n)
 
 
-def _piecewise(rules: RuleSet, selection: TypeSelection, position: int,
-               bounds: tuple[int, int], symbol: Any) -> tuple[Any, Any]:
+def _piecewise(
+    rules: RuleSet, selection: TypeSelection, position: int, bounds: tuple[int, int], symbol: Any
+) -> tuple[Any, Any]:
     """Counts when constraints read the count: one piece per run of indistinguishable counts."""
     low, high = bounds
     # The value class of each count: counts in one class are indistinguishable to the rules.
-    signature = {value: number for number, members in enumerate(rules.value_classes[position])
-                 for value in members}
+    signature = {
+        value: number
+        for number, members in enumerate(rules.value_classes[position])
+        for value in members
+    }
 
     robot_pieces = []
     configuration_pieces = []
@@ -198,8 +235,9 @@ def _piecewise(rules: RuleSet, selection: TypeSelection, position: int,
             end += 1
         before = count(rules, _restricted(selection, position, range(low, start + 1)))
         each = count(rules, _restricted(selection, position, range(start, start + 1)))
-        robot_pieces.append((sympy.expand(before.valid_robots
-                                          + each.valid_robots * (symbol - start)), end))
+        robot_pieces.append(
+            (sympy.expand(before.valid_robots + each.valid_robots * (symbol - start)), end)
+        )
         configuration_pieces.append((sympy.Integer(before.ui_configurations), end))
         start = end + 1
     return _piecewise_of(robot_pieces, symbol), _piecewise_of(configuration_pieces, symbol)
@@ -232,9 +270,10 @@ def agrees_with(growth: Growth, solution: Solution) -> bool:
     """Whether the formulas at the team's maxima give the exact counts of ``solution``."""
     maxima = growth.at_team_maxima()
     totals = solution.totals
-    return (growth.evaluate(growth.total_robots, maxima),
-            growth.evaluate(growth.total_configurations, maxima)) == \
-        (totals.valid_robots, totals.ui_configurations)
+    return (
+        growth.evaluate(growth.total_robots, maxima),
+        growth.evaluate(growth.total_configurations, maxima),
+    ) == (totals.valid_robots, totals.ui_configurations)
 
 
 def render_growth(growth: Growth, solution: Solution, fmt: str = "text") -> str:
@@ -244,43 +283,78 @@ def render_growth(growth: Growth, solution: Solution, fmt: str = "text") -> str:
     configurations_at = growth.evaluate(growth.total_configurations, maxima)
     totals = solution.totals
     agrees = agrees_with(growth, solution)
-    verdict = "equal to the exact count" if agrees else (
-        f"DIFFERENT from the exact count {totals.valid_robots} / {totals.ui_configurations}: "
-        "a bug, please report it")
+    verdict = (
+        "equal to the exact count"
+        if agrees
+        else (
+            f"DIFFERENT from the exact count {totals.valid_robots} / {totals.ui_configurations}: "
+            "a bug, please report it"
+        )
+    )
     characteristic = growth.types[0].characteristic if growth.types else ""
     if fmt == "json":
-        return dumps({
-            "team": growth.team.name, "rules": growth.team.rules.name,
-            "characteristic": characteristic,
-            "functions": {name: {"argument": "n", "definition": sympy.sstr(definition),
-                                 "latex": sympy.latex(definition)}
-                          for name, _, definition in growth.functions},
-            "by_type": [{"kinematic_type": t.kinematic_type, "symbol": str(t.symbol),
-                         "range": [t.low, t.high], "team_maximum": t.at,
-                         "valid_robots": sympy.sstr(t.robots),
-                         "ui_configurations": sympy.sstr(t.configurations)}
-                        for t in growth.types],
-            "totals": {"valid_robots": _sum_text(t.robots for t in growth.types),
-                       "ui_configurations": _sum_text(t.configurations for t in growth.types)},
-            "at_team_maxima": {"maxima": {str(k): v for k, v in maxima.items()},
-                               "valid_robots": robots_at,
-                               "ui_configurations": configurations_at,
-                               "equal_to_exact_count": agrees},
-        })
+        return dumps(
+            {
+                "team": growth.team.name,
+                "rules": growth.team.rules.name,
+                "characteristic": characteristic,
+                "functions": {
+                    name: {
+                        "argument": "n",
+                        "definition": sympy.sstr(definition),
+                        "latex": sympy.latex(definition),
+                    }
+                    for name, _, definition in growth.functions
+                },
+                "by_type": [
+                    {
+                        "kinematic_type": t.kinematic_type,
+                        "symbol": str(t.symbol),
+                        "range": [t.low, t.high],
+                        "team_maximum": t.at,
+                        "valid_robots": sympy.sstr(t.robots),
+                        "ui_configurations": sympy.sstr(t.configurations),
+                    }
+                    for t in growth.types
+                ],
+                "totals": {
+                    "valid_robots": _sum_text(t.robots for t in growth.types),
+                    "ui_configurations": _sum_text(t.configurations for t in growth.types),
+                },
+                "at_team_maxima": {
+                    "maxima": {str(k): v for k, v in maxima.items()},
+                    "valid_robots": robots_at,
+                    "ui_configurations": configurations_at,
+                    "equal_to_exact_count": agrees,
+                },
+            }
+        )
     label = growth.team.rules.characteristic(characteristic).label if characteristic else ""
-    lines = [f"{growth.team.name}: counts as functions of each kinematic type's maximum "
-             f"{label} (n_<type>)", ""]
+    lines = [
+        f"{growth.team.name}: counts as functions of each kinematic type's maximum "
+        f"{label} (n_<type>)",
+        "",
+    ]
     for name, _, definition in growth.functions:
         lines.append(f"{name}(n) = {_pieces_text(definition)}")
         lines.append(f"  (how many {label} components {growth.types[0].low}..n reach)")
     headers = ["kinematic type", "valid robots", "UI configurations"]
-    rows = [[t.kinematic_type, _pieces_text(t.robots), _pieces_text(t.configurations)]
-            for t in growth.types]
-    rows.append(["total", _sum_text(t.robots for t in growth.types),
-                 _sum_text(t.configurations for t in growth.types)])
+    rows = [
+        [t.kinematic_type, _pieces_text(t.robots), _pieces_text(t.configurations)]
+        for t in growth.types
+    ]
+    rows.append(
+        [
+            "total",
+            _sum_text(t.robots for t in growth.types),
+            _sum_text(t.configurations for t in growth.types),
+        ]
+    )
     shown = ", ".join(f"{k} = {v}" for k, v in maxima.items())
-    check = (f"at the team's maxima ({shown}): {robots_at} valid robots, {configurations_at} "
-             f"UI configurations ({verdict})")
+    check = (
+        f"at the team's maxima ({shown}): {robots_at} valid robots, {configurations_at} "
+        f"UI configurations ({verdict})"
+    )
     if fmt == "markdown":
         return "\n".join([*lines, "", markdown.table(headers, rows), check]) + "\n"
     return "\n".join([*lines, "", text_table(headers, rows).rstrip("\n"), "", check]) + "\n"

@@ -98,8 +98,10 @@ class Team:
     description: str = ""
 
     def __repr__(self) -> str:  # short, for notebooks: the fields are one attribute away
-        return (f"<Team {self.name!r} ({self.file}): {', '.join(self.kinematic_types)}; "
-                f"rules {self.rules.name!r}>")
+        return (
+            f"<Team {self.name!r} ({self.file}): {', '.join(self.kinematic_types)}; "
+            f"rules {self.rules.name!r}>"
+        )
 
     def selection(self, kinematic_type: str) -> TypeSelection | None:
         return next((s for s in self.selections if s.kinematic_type == kinematic_type), None)
@@ -129,8 +131,9 @@ def resolve_team_path(text: str) -> Path:
     return shipped if shipped.is_file() else path
 
 
-def load_team(path: str | Path, rules: RuleSet | str | Path | None = None, *,
-              display: str | None = None) -> Team:
+def load_team(
+    path: str | Path, rules: RuleSet | str | Path | None = None, *, display: str | None = None
+) -> Team:
     """Read a team file and the rule set it refers to (or ``rules``, which overrides it).
 
     Raises :class:`TeamError` for the team file, :class:`RulesError` or :class:`InputError`
@@ -139,14 +142,16 @@ def load_team(path: str | Path, rules: RuleSet | str | Path | None = None, *,
     if isinstance(path, str) and display is None:
         # A shipped team's name (``load_team("case3")``) as on the command line.
         resolved = resolve_team_path(path)
-        display, path = (shipped_name(resolved) or path, resolved) if resolved != Path(path) \
-            else (None, path)
+        display, path = (
+            (shipped_name(resolved) or path, resolved) if resolved != Path(path) else (None, path)
+        )
     document = load_document(path, display=display)
     return parse_team(document, rules, folder=Path(path).parent)
 
 
-def parse_team(document: Document, rules: RuleSet | str | Path | None = None, *,
-               folder: Path | None = None) -> Team:
+def parse_team(
+    document: Document, rules: RuleSet | str | Path | None = None, *, folder: Path | None = None
+) -> Team:
     """Build a :class:`Team` from a loaded document (see :func:`load_team`).
 
     A relative ``rules:`` path resolves against ``folder`` (default: the document's folder).
@@ -158,12 +163,11 @@ def parse_team(document: Document, rules: RuleSet | str | Path | None = None, *,
     if top is None:
         raise TeamError(reader.faults)
     reader.unknown_keys((), top, _TEAM_KEYS, "team file field")
-    name = reader.string(("name",), "team name", required=False,
-                         default=Path(document.file).stem)
-    description = reader.string(("description",), "description", required=False,
-                                limit=None)
-    rule_set = _resolve_rules(reader, top, rules,
-                              Path(document.file).parent if folder is None else folder)
+    name = reader.string(("name",), "team name", required=False, default=Path(document.file).stem)
+    description = reader.string(("description",), "description", required=False, limit=None)
+    rule_set = _resolve_rules(
+        reader, top, rules, Path(document.file).parent if folder is None else folder
+    )
     published = _read_published(reader, top)
     selections = _read_selections(reader, rule_set) if rule_set is not None else ()
     if reader.faults or rule_set is None:
@@ -171,8 +175,9 @@ def parse_team(document: Document, rules: RuleSet | str | Path | None = None, *,
     return Team(name, document.file, rule_set, selections, published, description)
 
 
-def _resolve_rules(reader: Reader, top: dict[str, object], rules: RuleSet | str | Path | None,
-                   folder: Path) -> RuleSet | None:
+def _resolve_rules(
+    reader: Reader, top: dict[str, object], rules: RuleSet | str | Path | None, folder: Path
+) -> RuleSet | None:
     if isinstance(rules, RuleSet):
         return rules
     if rules is not None:
@@ -190,9 +195,11 @@ def _resolve_rules(reader: Reader, top: dict[str, object], rules: RuleSet | str 
         if any(fault.location.line is not None for fault in error.faults):
             raise  # the rules file exists but is not valid YAML: its own faults say where
         reasons = "; ".join(fault.message for fault in error.faults)
-        reader.fault(("rules",), f"cannot use rules file {quote(text)} (resolved to "
-                                 f"{shown_name(shown)}): "
-                                 f"{reasons}", code="unknown-reference")
+        reader.fault(
+            ("rules",),
+            f"cannot use rules file {quote(text)} (resolved to {shown_name(shown)}): {reasons}",
+            code="unknown-reference",
+        )
         return None
 
 
@@ -202,13 +209,17 @@ def _read_published(reader: Reader, top: dict[str, object]) -> Published | None:
     spec = reader.mapping(("published",), "published figures")
     reader.unknown_keys(("published",), spec, _PUBLISHED_KEYS, "published field")
     robots = reader.integer(("published", "valid_robots"), "published valid_robots")
-    configurations = reader.integer(("published", "ui_configurations"),
-                                    "published ui_configurations")
+    configurations = reader.integer(
+        ("published", "ui_configurations"), "published ui_configurations"
+    )
     source = reader.string(("published", "source"), "source", required=False, limit=None)
     for key, figure in (("valid_robots", robots), ("ui_configurations", configurations)):
         if figure is not None and figure < 0:
-            reader.fault(("published", key), f"published {key} must not be negative, got "
-                                             f"{figure}", code="out-of-range")
+            reader.fault(
+                ("published", key),
+                f"published {key} must not be negative, got {figure}",
+                code="out-of-range",
+            )
     if robots is None or configurations is None or robots < 0 or configurations < 0:
         return None
     return Published(robots, configurations, source)
@@ -223,11 +234,15 @@ def _read_selections(reader: Reader, rules: RuleSet) -> tuple[TypeSelection, ...
     for type_name in section:
         path = ("team", type_name)
         if key.index(type_name) is None:
-            reader.fault(path, f"unknown {key.label.lower()} {type_name!r}"
-                               f"{did_you_mean(type_name, [str(v) for v in key.values])}; "
-                               f"the rules ({rules.file}) have: "
-                               f"{', '.join(str(v) for v in key.values)}",
-                         key=True, code="unknown-reference")
+            reader.fault(
+                path,
+                f"unknown {key.label.lower()} {type_name!r}"
+                f"{did_you_mean(type_name, [str(v) for v in key.values])}; "
+                f"the rules ({rules.file}) have: "
+                f"{', '.join(str(v) for v in key.values)}",
+                key=True,
+                code="unknown-reference",
+            )
             continue
         selection = _read_type(reader, rules, type_name)
         if selection is not None:
@@ -255,16 +270,24 @@ def _read_type(reader: Reader, rules: RuleSet, type_name: str) -> TypeSelection 
     path = ("team", type_name)
     raw = reader.get(path)
     if raw is None:
-        reader.fault(path, f"no selections for {type_name!r}; list its characteristics' values "
-                           "(or write {} to allow every value)", code="empty-selection")
+        reader.fault(
+            path,
+            f"no selections for {type_name!r}; list its characteristics' values "
+            "(or write {} to allow every value)",
+            code="empty-selection",
+        )
         return None
     spec = reader.mapping(path, f"selections for {type_name!r}")
     others = [c.name for c in rules.characteristics if c.name != rules.team_key]
     if rules.team_key in spec:
-        reader.fault((*path, rules.team_key), f"{rules.team_key!r} is given by the entry "
-                                              f"itself ({type_name!r}); remove it", key=True)
-    reader.unknown_keys(path, {k: v for k, v in spec.items() if k != rules.team_key}, others,
-                        "characteristic")
+        reader.fault(
+            (*path, rules.team_key),
+            f"{rules.team_key!r} is given by the entry itself ({type_name!r}); remove it",
+            key=True,
+        )
+    reader.unknown_keys(
+        path, {k: v for k, v in spec.items() if k != rules.team_key}, others, "characteristic"
+    )
     domains: list[tuple[Value, ...]] = []
     complete = True
     for characteristic in rules.characteristics:
@@ -273,8 +296,9 @@ def _read_type(reader: Reader, rules: RuleSet, type_name: str) -> TypeSelection 
         elif characteristic.name not in spec:
             domains.append(characteristic.values)
         else:
-            selection = read_selection(reader, (*path, characteristic.name), characteristic,
-                                       exact=False)
+            selection = read_selection(
+                reader, (*path, characteristic.name), characteristic, exact=False
+            )
             if selection is None:
                 complete = False
                 continue

@@ -30,10 +30,13 @@ def feature_name(characteristic: str, value: Value) -> str:
 def team_to_uvl(team: Team) -> str:
     rules = team.rules
     if rules.constraints:
-        raise ExportError.at(team.file, "UVL export does not translate the rule set's "
-                             f"constraints yet ({len(rules.constraints)} declared); refused "
-                             "rather than exporting a different design space",
-                             code="unsupported")
+        raise ExportError.at(
+            team.file,
+            "UVL export does not translate the rule set's "
+            f"constraints yet ({len(rules.constraints)} declared); refused "
+            "rather than exporting a different design space",
+            code="unsupported",
+        )
     characteristics = rules.characteristics
     lines = ["namespace Team", "", "features", "    Team {abstract}", "        mandatory"]
     domains: list[list[Value]] = []

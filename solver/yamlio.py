@@ -112,8 +112,9 @@ class Document:
         return Fault(self.location(path, key=key), message)
 
 
-def load_document(path: str | Path, *, display: str | None = None,
-                  tolerate: Collection[str] = ()) -> Document:
+def load_document(
+    path: str | Path, *, display: str | None = None, tolerate: Collection[str] = ()
+) -> Document:
     """Read and compose one YAML file; :class:`InputError` with a location on any problem.
 
     Faults whose ``code`` is in ``tolerate`` (only ``duplicate-key`` makes sense: the first
@@ -124,8 +125,9 @@ def load_document(path: str | Path, *, display: str | None = None,
     return parse_document(text, name, tolerate=tolerate)
 
 
-def parse_document(text: str, name: str = "<string>", *,
-                   tolerate: Collection[str] = ()) -> Document:
+def parse_document(
+    text: str, name: str = "<string>", *, tolerate: Collection[str] = ()
+) -> Document:
     """Compose YAML text into a :class:`Document`; :class:`InputError` on any problem.
 
     ``tolerate``: fault codes kept in :attr:`Document.tolerated` instead of raised.
@@ -140,13 +142,19 @@ def parse_document(text: str, name: str = "<string>", *,
         problem = _short(error.problem or error.context or "invalid YAML", 120)
         if mark is None:
             raise InputError.at(name, f"YAML syntax error: {problem}") from None
-        raise InputError.at(name, f"YAML syntax error: {problem}",
-                            line=mark.line + 1, column=mark.column + 1, code="yaml") from None
+        raise InputError.at(
+            name,
+            f"YAML syntax error: {problem}",
+            line=mark.line + 1,
+            column=mark.column + 1,
+            code="yaml",
+        ) from None
     except yaml.YAMLError as error:
         raise InputError.at(name, f"YAML error: {_short(str(error), 120)}") from None
     except RecursionError:
-        raise InputError.at(name, f"nested too deeply (more than {MAX_DEPTH} levels); refused",
-                            code="too-large") from None
+        raise InputError.at(
+            name, f"nested too deeply (more than {MAX_DEPTH} levels); refused", code="too-large"
+        ) from None
     walker = _Walker(name)
     try:
         data = walker.convert(node, ()) if node is not None else None
@@ -163,10 +171,13 @@ def _count_events(text: str, name: str) -> None:
     for count, event in enumerate(yaml.parse(text, Loader=_LOADER)):
         if count > MAX_EVENTS:
             mark = event.start_mark
-            raise InputError.at(name, f"more than {MAX_NODES} values; refused",
-                                line=None if mark is None else mark.line + 1,
-                                column=None if mark is None else mark.column + 1,
-                                code="too-large")
+            raise InputError.at(
+                name,
+                f"more than {MAX_NODES} values; refused",
+                line=None if mark is None else mark.line + 1,
+                column=None if mark is None else mark.column + 1,
+                code="too-large",
+            )
 
 
 class _TooLarge(Exception):
@@ -188,18 +199,31 @@ class _Walker:
 
     def fault(self, node: yaml.Node, path: YamlPath, message: str, code: str = "yaml") -> None:
         mark = node.start_mark
-        self.faults.append(Fault(Location(self.name, mark.line + 1, mark.column + 1,
-                                          format_path(path)), message, code))
+        self.faults.append(
+            Fault(
+                Location(self.name, mark.line + 1, mark.column + 1, format_path(path)),
+                message,
+                code,
+            )
+        )
 
     def convert(self, node: yaml.Node, path: YamlPath) -> Any:
         self.nodes += 1
         if self.nodes > MAX_NODES:
-            self.fault(node, path, f"document expands to more than {MAX_NODES} values "
-                                   "(an alias bomb?); refused", "too-large")
+            self.fault(
+                node,
+                path,
+                f"document expands to more than {MAX_NODES} values (an alias bomb?); refused",
+                "too-large",
+            )
             raise _TooLarge
         if len(path) > MAX_DEPTH:
-            self.fault(node, path[:MAX_DEPTH], f"nested more than {MAX_DEPTH} levels deep; "
-                                               "refused", "too-large")
+            self.fault(
+                node,
+                path[:MAX_DEPTH],
+                f"nested more than {MAX_DEPTH} levels deep; refused",
+                "too-large",
+            )
             raise _TooLarge
         self.value_marks.setdefault(path, (node.start_mark.line + 1, node.start_mark.column + 1))
         if id(node) in self.active:
@@ -223,8 +247,9 @@ class _Walker:
         first_seen: dict[Any, int] = {}
         for key_node, value_node in node.value:
             if key_node.tag == "tag:yaml.org,2002:merge":
-                self.fault(key_node, path, "YAML merge keys ('<<') are not supported; "
-                                           "write the keys out")
+                self.fault(
+                    key_node, path, "YAML merge keys ('<<') are not supported; write the keys out"
+                )
                 continue
             if not isinstance(key_node, yaml.ScalarNode):
                 self.fault(key_node, path, "mapping keys must be plain scalars")
@@ -233,8 +258,12 @@ class _Walker:
             if key is None and key_node.tag != "tag:yaml.org,2002:null":
                 continue
             if len(str(key_node.value)) > MAX_KEY_CHARS:
-                self.fault(key_node, path, f"a key longer than {MAX_KEY_CHARS} characters; "
-                                           "names are at most that long", "too-large")
+                self.fault(
+                    key_node,
+                    path,
+                    f"a key longer than {MAX_KEY_CHARS} characters; names are at most that long",
+                    "too-large",
+                )
                 continue
             try:
                 hash(key)
@@ -244,8 +273,12 @@ class _Walker:
             child = (*path, str(key))
             # Keys are names: 1 and "1", true and "True" name the same thing.
             if str(key) in first_seen:
-                self.fault(key_node, child, f"duplicate key {key!r} (first at line "
-                                            f"{first_seen[str(key)]})", "duplicate-key")
+                self.fault(
+                    key_node,
+                    child,
+                    f"duplicate key {key!r} (first at line {first_seen[str(key)]})",
+                    "duplicate-key",
+                )
                 continue
             first_seen[str(key)] = key_node.start_mark.line + 1
             self.key_marks[child] = (key_node.start_mark.line + 1, key_node.start_mark.column + 1)
@@ -262,18 +295,24 @@ class _Walker:
         if node.tag == _TIMESTAMP_TAG:
             return str(node.value)
         if node.tag not in _PLAIN_TAGS:
-            self.fault(node, path, f"unsupported YAML tag '{_short(node.tag, 40)}'; only plain "
-                                   "strings, numbers, booleans, lists and mappings are allowed")
+            self.fault(
+                node,
+                path,
+                f"unsupported YAML tag '{_short(node.tag, 40)}'; only plain "
+                "strings, numbers, booleans, lists and mappings are allowed",
+            )
             return None
         text = str(node.value)
         if len(text) > MAX_TEXT_CHARS:
-            self.fault(node, path, f"a value longer than {MAX_TEXT_CHARS} characters; refused",
-                       "too-large")
+            self.fault(
+                node, path, f"a value longer than {MAX_TEXT_CHARS} characters; refused", "too-large"
+            )
             return None
         if any("\ud800" <= char <= "\udfff" for char in text):
             # A "\udcff" escape: no file, terminal or UTF-8 output can hold it.
-            self.fault(node, path, "contains an unpaired surrogate escape (\\ud800-\\udfff); "
-                                   "not text")
+            self.fault(
+                node, path, "contains an unpaired surrogate escape (\\ud800-\\udfff); not text"
+            )
             return None
         try:
             value = self.constructor.construct_object(node)
@@ -284,8 +323,11 @@ class _Walker:
             # int() of more than 4,300 digits (Python's int-to-string limit).
             self.fault(node, path, "a number too large to use; refused", "too-large")
             return None
-        if isinstance(value, int) and not isinstance(value, bool) and \
-                value.bit_length() > _MAX_INT_BITS:
+        if (
+            isinstance(value, int)
+            and not isinstance(value, bool)
+            and value.bit_length() > _MAX_INT_BITS
+        ):
             # 0x... with thousands of digits is no error to int(), but printing it would be.
             self.fault(node, path, "a number too large to use; refused", "too-large")
             return None
@@ -299,4 +341,4 @@ _MAX_INT_BITS = 63
 def _short(text: str, limit: int = 80) -> str:
     """``text`` escaped and cut to ``limit`` characters, for quoting input in a message."""
     escaped = text.encode("unicode_escape", "backslashreplace").decode("ascii")
-    return escaped if len(escaped) <= limit else escaped[:limit - 3] + "..."
+    return escaped if len(escaped) <= limit else escaped[: limit - 3] + "..."

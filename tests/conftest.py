@@ -29,5 +29,11 @@ def write_file(tmp_path: Path) -> Callable[[str, str], Path]:
 
 def run_cli(*args: str | Path, cwd: Path | None = None) -> subprocess.CompletedProcess[str]:
     """Run ``python -m solver`` as a user would, capturing text output."""
-    return subprocess.run([sys.executable, "-m", "solver", *map(str, args)], capture_output=True,
-                          text=True, cwd=cwd or ROOT, check=False, timeout=600)
+    return subprocess.run(
+        [sys.executable, "-m", "solver", *map(str, args)],
+        capture_output=True,
+        text=True,
+        cwd=cwd or ROOT,
+        check=False,
+        timeout=600,
+    )

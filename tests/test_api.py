@@ -19,18 +19,24 @@ def test_every_exported_name_resolves_from_its_module() -> None:
 def test_the_type_checking_imports_match_the_lazy_exports() -> None:
     tree = ast.parse((ROOT / "solver" / "__init__.py").read_text(encoding="utf-8"))
     guarded = next(node for node in tree.body if isinstance(node, ast.If))
-    imported = {alias.name: node.module for node in guarded.body
-                if isinstance(node, ast.ImportFrom) for alias in node.names}
+    imported = {
+        alias.name: node.module
+        for node in guarded.body
+        if isinstance(node, ast.ImportFrom)
+        for alias in node.names
+    }
     assert imported == solver._EXPORTS
     assert solver.__all__ == sorted(imported)
 
 
 def test_importing_the_package_loads_no_heavy_dependency() -> None:
     heavy = ("numpy", "sympy", "matplotlib", "constraint", "lxml", "rich")
-    code = (f"import sys, solver, solver.cli; "
-            f"print(sorted(m for m in {heavy!r} if m in sys.modules))")
-    loaded = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                            check=True).stdout.strip()
+    code = (
+        f"import sys, solver, solver.cli; print(sorted(m for m in {heavy!r} if m in sys.modules))"
+    )
+    loaded = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, check=True
+    ).stdout.strip()
     assert loaded == "[]"
 
 

@@ -62,16 +62,30 @@ def _summary(out: Path) -> dict[str, dict[str, str]]:
 
 # ---- finding files -------------------------------------------------------------------------
 
+
 def test_find_teams_searches_folders_recursively_in_name_order(teams: Path) -> None:
     found = [shown for _, shown in find_teams([str(teams)])]
-    assert found == [str(teams / n) for n in ("case1.yaml", "case2.yaml", "case3.yaml",
-                                              "ours/bad.yaml", "ours/broken.yaml",
-                                              "ours/harbour.yaml", "ours/own.yaml")]
+    assert found == [
+        str(teams / n)
+        for n in (
+            "case1.yaml",
+            "case2.yaml",
+            "case3.yaml",
+            "ours/bad.yaml",
+            "ours/broken.yaml",
+            "ours/harbour.yaml",
+            "ours/own.yaml",
+        )
+    ]
 
 
 def test_find_teams_expands_recursive_globs_and_counts_a_file_once(teams: Path) -> None:
-    found = [shown for _, shown in find_teams([f"{teams}/**/h*.yaml", f"{teams}/case1.yaml",
-                                               f"{teams}/ours/harbour.yaml"])]
+    found = [
+        shown
+        for _, shown in find_teams(
+            [f"{teams}/**/h*.yaml", f"{teams}/case1.yaml", f"{teams}/ours/harbour.yaml"]
+        )
+    ]
     assert found == [f"{teams}/ours/harbour.yaml", f"{teams}/case1.yaml"]
 
 
@@ -80,39 +94,52 @@ def test_find_teams_reports_every_pattern_that_names_nothing(teams: Path) -> Non
         find_teams([f"{teams}/case1.yaml", f"{teams}/*.yml", f"{teams}/nope.yaml"])
     assert [(f.location.file, f.message) for f in caught.value.faults] == [
         (f"{teams}/*.yml", "pattern matches no file"),
-        (f"{teams}/nope.yaml", "no such file or folder")]
+        (f"{teams}/nope.yaml", "no such file or folder"),
+    ]
 
 
 # ---- solving and the summary ----------------------------------------------------------------
 
+
 def test_batch_writes_each_teams_json_as_solve_format_json_list_does(
-        teams: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    teams: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
     status, _, _ = _batch("teams", "-o", "out", "--jobs", "2", cwd=tmp_path)
     assert status == 1  # the two bad files
     monkeypatch.chdir(tmp_path)
     for name in ("case1", "case2", "case3", "ours/harbour"):
         shown = f"teams/{name}.yaml"
-        expected = dumps(solution_data(solve(load_team(Path(shown), display=shown)),
-                                       configurations=True))
-        assert (tmp_path / "out" / "teams" / f"{name}.json").read_text(encoding="utf-8") == \
-            expected
+        expected = dumps(
+            solution_data(solve(load_team(Path(shown), display=shown)), configurations=True)
+        )
+        assert (tmp_path / "out" / "teams" / f"{name}.json").read_text(encoding="utf-8") == expected
 
 
 def test_batch_reports_a_bad_team_file_with_its_error_and_solves_the_others(
-        teams: Path, tmp_path: Path) -> None:
+    teams: Path, tmp_path: Path
+) -> None:
     status, _, stderr = _batch("teams", "-o", "out", "--jobs", "2", cwd=tmp_path)
     assert status == 1
-    assert "teams/ours/bad.yaml:3:22: team.UAV.motion_control[0]: unknown robot motion control " \
-           "'Flite' (did you mean 'Flight'?)" in stderr
+    assert (
+        "teams/ours/bad.yaml:3:22: team.UAV.motion_control[0]: unknown robot motion control "
+        "'Flite' (did you mean 'Flight'?)" in stderr
+    )
     assert "teams/ours/broken.yaml:2:1: YAML syntax error" in stderr
     rows = _summary(tmp_path / "out")
     assert {f: r["status"] for f, r in rows.items()} == {
-        "teams/case1.yaml": "ok", "teams/case2.yaml": "ok", "teams/case3.yaml": "ok",
-        "teams/ours/bad.yaml": "failed", "teams/ours/broken.yaml": "failed",
-        "teams/ours/harbour.yaml": "ok", "teams/ours/own.yaml": "skipped"}
+        "teams/case1.yaml": "ok",
+        "teams/case2.yaml": "ok",
+        "teams/case3.yaml": "ok",
+        "teams/ours/bad.yaml": "failed",
+        "teams/ours/broken.yaml": "failed",
+        "teams/ours/harbour.yaml": "ok",
+        "teams/ours/own.yaml": "skipped",
+    }
     assert rows["teams/ours/bad.yaml"]["message"].startswith("teams/ours/bad.yaml:3:22: ")
-    assert rows["teams/ours/own.yaml"]["message"] == \
-        "not a team file: a rule set (it has 'characteristics:' and no 'team:')"
+    assert (
+        rows["teams/ours/own.yaml"]["message"]
+        == "not a team file: a rule set (it has 'characteristics:' and no 'team:')"
+    )
     assert not (tmp_path / "out" / "teams" / "ours" / "bad.json").exists()
 
 
@@ -128,8 +155,10 @@ def test_batch_summary_names_each_teams_rule_set(teams: Path, tmp_path: Path) ->
     assert rows["teams/case3.yaml"]["rules"] == "Mortimer et al. 2017"
     assert rows["teams/case3.yaml"]["rules_file"].endswith("paper.yaml")
     assert rows["teams/ours/harbour.yaml"]["rules"] == "Two of our own"
-    assert (rows["teams/ours/harbour.yaml"]["valid_robots"],
-            rows["teams/ours/harbour.yaml"]["ui_configurations"]) == ("2", "2")
+    assert (
+        rows["teams/ours/harbour.yaml"]["valid_robots"],
+        rows["teams/ours/harbour.yaml"]["ui_configurations"],
+    ) == ("2", "2")
     markdown = (tmp_path / "out" / "summary.md").read_text(encoding="utf-8")
     assert "7 team files: 4 ok, 2 failed, 1 skipped" in markdown
     assert "| teams/ours/harbour.yaml | ok | Harbour | Two of our own | 2 | 2 |" in markdown
@@ -138,34 +167,41 @@ def test_batch_summary_names_each_teams_rule_set(teams: Path, tmp_path: Path) ->
 def test_batch_summary_compares_published_figures(teams: Path, tmp_path: Path) -> None:
     _batch("teams", "-o", "out", cwd=tmp_path)
     rows = _summary(tmp_path / "out")
-    assert (rows["teams/case3.yaml"]["published"], rows["teams/case3.yaml"]["reproduced"]) == \
-        ("820 / 99", "no")
-    assert (rows["teams/case1.yaml"]["published"], rows["teams/case1.yaml"]["reproduced"]) == \
-        ("30 / 6", "yes")
+    assert (rows["teams/case3.yaml"]["published"], rows["teams/case3.yaml"]["reproduced"]) == (
+        "820 / 99",
+        "no",
+    )
+    assert (rows["teams/case1.yaml"]["published"], rows["teams/case1.yaml"]["reproduced"]) == (
+        "30 / 6",
+        "yes",
+    )
 
 
-def test_batch_summary_is_the_same_with_one_worker_or_several(teams: Path,
-                                                              tmp_path: Path) -> None:
+def test_batch_summary_is_the_same_with_one_worker_or_several(teams: Path, tmp_path: Path) -> None:
     _batch("teams", "-o", "one", "--jobs", "1", cwd=tmp_path)
     _batch("teams", "-o", "two", "--jobs", "3", cwd=tmp_path)
     for name in ("summary.csv", "summary.md", "teams/case3.json", "teams/ours/harbour.json"):
         assert (tmp_path / "one" / name).read_bytes() == (tmp_path / "two" / name).read_bytes()
 
 
-def test_batch_prints_one_plain_line_per_team_when_not_on_a_terminal(teams: Path,
-                                                                     tmp_path: Path) -> None:
+def test_batch_prints_one_plain_line_per_team_when_not_on_a_terminal(
+    teams: Path, tmp_path: Path
+) -> None:
     _, _, stderr = _batch("teams/case1.yaml", "teams/ours/bad.yaml", "-o", "out", cwd=tmp_path)
     lines = [line for line in stderr.splitlines() if line.startswith("[")]
     assert len(lines) == 2
-    assert any(line.startswith("[1/2] solved     teams/case1.yaml: 30 valid robots, 6 UI "
-                               "configurations (") or
-               line.startswith("[2/2] solved     teams/case1.yaml") for line in lines)
+    assert any(
+        line.startswith("[1/2] solved     teams/case1.yaml: 30 valid robots, 6 UI configurations (")
+        or line.startswith("[2/2] solved     teams/case1.yaml")
+        for line in lines
+    )
     assert any("FAILED     teams/ours/bad.yaml" in line for line in lines)
     assert "\x1b[" not in stderr  # no terminal control codes in logs
 
 
-def test_batch_shows_a_progress_bar_on_a_terminal(teams: Path, tmp_path: Path,
-                                                  monkeypatch: pytest.MonkeyPatch) -> None:
+def test_batch_shows_a_progress_bar_on_a_terminal(
+    teams: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
     class Terminal(io.StringIO):
         def isatty(self) -> bool:
             return True
@@ -173,8 +209,7 @@ def test_batch_shows_a_progress_bar_on_a_terminal(teams: Path, tmp_path: Path,
     terminal = Terminal()
     monkeypatch.setattr(sys, "stderr", terminal)
     monkeypatch.chdir(tmp_path)
-    status = main(["batch", "teams/case1.yaml", "teams/ours/bad.yaml", "-o", "out",
-                   "--jobs", "1"])
+    status = main(["batch", "teams/case1.yaml", "teams/ours/bad.yaml", "-o", "out", "--jobs", "1"])
     shown = terminal.getvalue()
     assert status == 1
     assert "solving teams" in shown
@@ -184,18 +219,26 @@ def test_batch_shows_a_progress_bar_on_a_terminal(teams: Path, tmp_path: Path,
 
 
 def test_batch_can_write_a_report_per_team(teams: Path, tmp_path: Path) -> None:
-    status, _, _ = _batch("teams/case1.yaml", "-o", "out", "--report", "markdown",
-                          cwd=tmp_path)
+    status, _, _ = _batch("teams/case1.yaml", "-o", "out", "--report", "markdown", cwd=tmp_path)
     assert status == 0
     assert sorted(p.name for p in (tmp_path / "out").iterdir() if p.is_file()) == [
-        "summary.csv", "summary.md"]
+        "summary.csv",
+        "summary.md",
+    ]
     assert sorted(p.name for p in (tmp_path / "out" / "teams").iterdir()) == [
-        "case1-bars.png", "case1-radar.png", "case1.json", "case1.md"]
-    assert _summary(tmp_path / "out")["teams/case1.yaml"]["output"] == \
-        "teams/case1.json teams/case1.md"
+        "case1-bars.png",
+        "case1-radar.png",
+        "case1.json",
+        "case1.md",
+    ]
+    assert (
+        _summary(tmp_path / "out")["teams/case1.yaml"]["output"]
+        == "teams/case1.json teams/case1.md"
+    )
 
 
 # ---- up to date, --force, atomic -------------------------------------------------------------
+
 
 def _stamps(out: Path) -> dict[str, int]:
     return {p.name: p.stat().st_mtime_ns for p in out.rglob("*.json")}
@@ -213,27 +256,27 @@ def test_rerun_skips_teams_whose_files_are_unchanged(teams: Path, tmp_path: Path
     assert (tmp_path / "out" / "summary.csv").read_bytes() == summary
 
 
-def test_rerun_ignores_a_new_modification_time_without_new_content(teams: Path,
-                                                                   tmp_path: Path) -> None:
+def test_rerun_ignores_a_new_modification_time_without_new_content(
+    teams: Path, tmp_path: Path
+) -> None:
     _batch("teams", "-o", "out", cwd=tmp_path)
     os.utime(teams / "case1.yaml", (1, 1))
     _, _, stderr = _batch("teams", "-o", "out", cwd=tmp_path)
     assert "up to date teams/case1.yaml" in stderr
 
 
-def test_rerun_solves_a_team_again_when_its_team_file_changes(teams: Path,
-                                                              tmp_path: Path) -> None:
+def test_rerun_solves_a_team_again_when_its_team_file_changes(teams: Path, tmp_path: Path) -> None:
     _batch("teams", "-o", "out", cwd=tmp_path)
     text = (teams / "case1.yaml").read_text(encoding="utf-8")
-    (teams / "case1.yaml").write_text(text.replace("sensor_count: 5", "sensor_count: 4"),
-                                      encoding="utf-8")
+    (teams / "case1.yaml").write_text(
+        text.replace("sensor_count: 5", "sensor_count: 4"), encoding="utf-8"
+    )
     _, _, stderr = _batch("teams", "-o", "out", cwd=tmp_path)
     assert "solved     teams/case1.yaml: 24 valid robots" in stderr
     assert stderr.count("up to date ") == 3
 
 
-def test_rerun_solves_again_every_team_whose_rule_file_changes(teams: Path,
-                                                               tmp_path: Path) -> None:
+def test_rerun_solves_again_every_team_whose_rule_file_changes(teams: Path, tmp_path: Path) -> None:
     _batch("teams", "-o", "out", cwd=tmp_path)
     with (teams / "ours" / "own.yaml").open("a", encoding="utf-8") as stream:
         stream.write("# a comment is a change too\n")
@@ -267,22 +310,29 @@ def test_batch_leaves_no_temporary_files(teams: Path, tmp_path: Path) -> None:
 def test_plan_mirrors_the_folders_below_the_common_one(teams: Path, tmp_path: Path) -> None:
     jobs = plan(find_teams([str(teams)]), tmp_path / "out")
     assert [j.output.relative_to(tmp_path / "out" / "teams").as_posix() for j in jobs] == [
-        "case1.json", "case2.json", "case3.json", "ours/bad.json", "ours/broken.json",
-        "ours/harbour.json", "ours/own.json"]
+        "case1.json",
+        "case2.json",
+        "case3.json",
+        "ours/bad.json",
+        "ours/broken.json",
+        "ours/harbour.json",
+        "ours/own.json",
+    ]
 
 
-def test_library_batch_gives_one_outcome_per_team_and_a_summary(teams: Path,
-                                                                 tmp_path: Path) -> None:
+def test_library_batch_gives_one_outcome_per_team_and_a_summary(
+    teams: Path, tmp_path: Path
+) -> None:
     jobs = plan(find_teams([str(teams / "case1.yaml"), str(teams / "ours")]), tmp_path / "o")
     outcomes = list(run_batch(jobs, workers=1))
-    assert sorted(o.action for o in outcomes) == ["failed", "failed", "skipped", "solved",
-                                                  "solved"]
+    assert sorted(o.action for o in outcomes) == ["failed", "failed", "skipped", "solved", "solved"]
     rows, written = write_summary(outcomes, jobs, tmp_path / "o")
     assert [r.file for r in rows] == [j.shown for j in jobs]
     assert written[0].read_text(encoding="utf-8") == summary_csv(rows)
 
 
 # ---- unusable input --------------------------------------------------------------------------
+
 
 def test_batch_with_a_pattern_that_matches_nothing_exits_2(tmp_path: Path) -> None:
     status, _, stderr = _batch("nothing/*.yaml", "-o", "out", cwd=tmp_path)
@@ -307,23 +357,30 @@ def test_batch_with_a_bad_rules_override_exits_2_once(tmp_path: Path) -> None:
 
 
 @pytest.mark.parametrize("jobs", ["0", "many"])
-def test_batch_refuses_a_job_count_that_is_not_a_positive_number(jobs: str,
-                                                                 tmp_path: Path) -> None:
+def test_batch_refuses_a_job_count_that_is_not_a_positive_number(jobs: str, tmp_path: Path) -> None:
     status, _, stderr = _batch(str(TEAMS), "-o", "out", "--jobs", jobs, cwd=tmp_path)
     assert status == 2
     assert "--jobs" in stderr
 
 
 def test_batch_keeps_a_team_called_summary_apart_from_the_batch_summary(
-        teams: Path, tmp_path: Path) -> None:
+    teams: Path, tmp_path: Path
+) -> None:
     shutil.copy(teams / "case1.yaml", teams / "summary.yaml")
-    status, _, stderr = _batch("teams/summary.yaml", "-o", "out", "--report", "markdown",
-                               cwd=tmp_path)
+    status, _, stderr = _batch(
+        "teams/summary.yaml", "-o", "out", "--report", "markdown", cwd=tmp_path
+    )
     assert status == 0, stderr
-    assert (tmp_path / "out" / "summary.md").read_text(encoding="utf-8").startswith(
-        "# Batch summary\n")
-    assert (tmp_path / "out" / "teams" / "summary.md").read_text(encoding="utf-8").startswith(
-        "# Case 1\n")
+    assert (
+        (tmp_path / "out" / "summary.md")
+        .read_text(encoding="utf-8")
+        .startswith("# Batch summary\n")
+    )
+    assert (
+        (tmp_path / "out" / "teams" / "summary.md")
+        .read_text(encoding="utf-8")
+        .startswith("# Case 1\n")
+    )
     assert (tmp_path / "out" / "teams" / "summary.json").is_file()
 
 
@@ -331,16 +388,20 @@ def test_batch_accepts_shipped_team_names_as_other_commands_do(tmp_path: Path) -
     status, _, stderr = _batch("case1", "case3", "-o", "out", "--jobs", "1", cwd=tmp_path)
     assert status == 0, stderr
     assert "[1/2] solved     rules/teams/case1.yaml: 30 valid robots" in stderr
-    assert sorted(_summary(tmp_path / "out")) == ["rules/teams/case1.yaml",
-                                                  "rules/teams/case3.yaml"]
+    assert sorted(_summary(tmp_path / "out")) == [
+        "rules/teams/case1.yaml",
+        "rules/teams/case3.yaml",
+    ]
     assert (tmp_path / "out" / "teams" / "case3.json").is_file()
 
 
-def test_batch_summary_markdown_escapes_names_from_the_team_files(teams: Path,
-                                                                   tmp_path: Path) -> None:
-    (teams / "html.yaml").write_text("name: '<img src=x onerror=alert(1)> | *x*'\n"
-                                     "rules: ../paper.yaml\nteam:\n  UAV: {}\n",
-                                     encoding="utf-8")
+def test_batch_summary_markdown_escapes_names_from_the_team_files(
+    teams: Path, tmp_path: Path
+) -> None:
+    (teams / "html.yaml").write_text(
+        "name: '<img src=x onerror=alert(1)> | *x*'\nrules: ../paper.yaml\nteam:\n  UAV: {}\n",
+        encoding="utf-8",
+    )
     status, _, stderr = _batch("teams/html.yaml", "-o", "out", cwd=tmp_path)
     assert status == 0, stderr
     markdown = (tmp_path / "out" / "summary.md").read_text(encoding="utf-8")
@@ -350,7 +411,8 @@ def test_batch_summary_markdown_escapes_names_from_the_team_files(teams: Path,
 
 @pytest.mark.parametrize("pattern", ["", "  "])
 def test_batch_refuses_an_empty_pattern_instead_of_batching_the_current_folder(
-        pattern: str, teams: Path, tmp_path: Path) -> None:
+    pattern: str, teams: Path, tmp_path: Path
+) -> None:
     status, _, stderr = _batch(pattern, "-o", "out", cwd=tmp_path)
     assert status == 2
     assert f"<arguments>: empty pattern {pattern!r}: name team files, folders or globs" in stderr

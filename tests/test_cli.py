@@ -26,28 +26,46 @@ def test_solve_prints_the_per_type_table_and_the_bound() -> None:
     assert lines[7].split() == ["total", "872", "102", "8.55"]
     assert "bound T = 900 (6 x 6 x 5 x 5)" in lines
     assert "how: counted from the rules' structure, no robots enumerated" in lines
-    assert lines[-2:] == ["published: 820 valid robots / 99 UI configurations (Mortimer et al. "
-                          "2017, Section 4 and Table 2)",
-                          "  NOT reproduced: these rules give 872 / 102"]
+    assert lines[-2:] == [
+        "published: 820 valid robots / 99 UI configurations (Mortimer et al. "
+        "2017, Section 4 and Table 2)",
+        "  NOT reproduced: these rules give 872 / 102",
+    ]
 
 
 def test_solve_json_follows_the_documented_contract() -> None:
     result = run_cli("solve", "rules/teams/case2.yaml", "--format", "json", "--list")
     data = json.loads(result.stdout)
-    assert {"team", "rules", "bound", "by_type", "totals", "default_configuration",
-            "configurations"} <= set(data)
+    assert {
+        "team",
+        "rules",
+        "bound",
+        "by_type",
+        "totals",
+        "default_configuration",
+        "configurations",
+    } <= set(data)
     assert data["team"] == "Case 2"
     assert data["bound"] == 900
-    assert data["by_type"][1] == {"kinematic_type": "UGV", "valid_robots": 80,
-                                  "ui_configurations": 12, "reduction_ratio": 6.6667,
-                                  "unserved_robots": 0, "method": "structure"}
+    assert data["by_type"][1] == {
+        "kinematic_type": "UGV",
+        "valid_robots": 80,
+        "ui_configurations": 12,
+        "reduction_ratio": 6.6667,
+        "unserved_robots": 0,
+        "method": "structure",
+    }
     assert data["totals"]["valid_robots"] == 110
     assert data["default_configuration"] == 19
     first = data["configurations"][0]
     assert first["number"] == 1
-    assert first["components"][3] == {"characteristic": "sensor_count",
-                                      "component": "individual", "range": [1, 5],
-                                      "clusters": [1, 5], "counts": [[1, 5]]}
+    assert first["components"][3] == {
+        "characteristic": "sensor_count",
+        "component": "individual",
+        "range": [1, 5],
+        "clusters": [1, 5],
+        "counts": [[1, 5]],
+    }
 
 
 def test_solve_lists_every_configuration_with_its_components() -> None:
@@ -55,8 +73,18 @@ def test_solve_lists_every_configuration_with_its_components() -> None:
     table = result.stdout.split("\n\n")[-1].splitlines()
     assert table[0].split()[:3] == ["#", "Robot", "Kinematic"]
     assert len(table) == 1 + 6
-    assert table[1].split() == ["1", "UAV", "Flight", "visual", "display", "individual",
-                                "(1..5:", "1..5", "clusters)", "5"]
+    assert table[1].split() == [
+        "1",
+        "UAV",
+        "Flight",
+        "visual",
+        "display",
+        "individual",
+        "(1..5:",
+        "1..5",
+        "clusters)",
+        "5",
+    ]
 
 
 def test_solve_csv_and_markdown_carry_the_same_counts() -> None:
@@ -79,19 +107,38 @@ def test_shipped_teams_and_the_default_rules_work_from_any_directory(tmp_path: P
 
 
 def test_assign_gives_the_configuration_number_and_components() -> None:
-    result = run_cli("assign", "--team", "rules/teams/case3.yaml", "kinematic_type=UAV",
-                     "motion_control=Flight", "sensor_type=2D Camera", "sensor_count=3")
+    result = run_cli(
+        "assign",
+        "--team",
+        "rules/teams/case3.yaml",
+        "kinematic_type=UAV",
+        "motion_control=Flight",
+        "sensor_type=2D Camera",
+        "sensor_count=3",
+    )
     assert result.returncode == 0
     assert result.stdout.splitlines()[:5] == [
         "UI configuration 1 for kinematic_type=UAV motion_control=Flight "
         "sensor_type=2D Camera sensor_count=3",
-        "  Robot Kinematic Type: UAV", "  Robot Motion Control: Flight",
-        "  Sensor Type: visual display", "  No. of Sensors: individual (3: 3 clusters)"]
+        "  Robot Kinematic Type: UAV",
+        "  Robot Motion Control: Flight",
+        "  Sensor Type: visual display",
+        "  No. of Sensors: individual (3: 3 clusters)",
+    ]
 
 
 def test_assign_answers_an_invalid_robot_with_the_default_and_exits_0() -> None:
-    result = run_cli("assign", "--team", "case3", "-f", "json", "kinematic_type=Quadruped",
-                     "motion_control=Walking", "sensor_type=360 Camera", "sensor_count=4")
+    result = run_cli(
+        "assign",
+        "--team",
+        "case3",
+        "-f",
+        "json",
+        "kinematic_type=Quadruped",
+        "motion_control=Walking",
+        "sensor_type=360 Camera",
+        "sensor_count=4",
+    )
     assert result.returncode == 0
     data = json.loads(result.stdout)
     assert (data["configuration"], data["default"]) == (103, True)
@@ -100,23 +147,32 @@ def test_assign_answers_an_invalid_robot_with_the_default_and_exits_0() -> None:
 
 
 def test_python_dash_m_solver_is_the_same_command_line() -> None:
-    script = subprocess.run([Path(sys.executable).parent / "teleop-ui", "reproduce"],
-                            capture_output=True, text=True, cwd=ROOT, check=False)
+    script = subprocess.run(
+        [Path(sys.executable).parent / "teleop-ui", "reproduce"],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+        check=False,
+    )
     assert script.returncode == 0
     assert script.stdout == run_cli("reproduce").stdout
 
 
-@pytest.mark.parametrize(("content", "message"), [
-    ("team: [unclosed\n", "t.yaml:2:1: YAML syntax error"),
-    ("team:\n  UAV: {}\n  UAV: {}\n", "t.yaml:3:3: team.UAV: duplicate key 'UAV'"),
-    ("team:\n  Quadruped: {}\n", "t.yaml:2:3: team.Quadruped: unknown robot kinematic type"),
-    ("team:\n  UAV: {sensor_count: -1}\n", "maximum must be at least 1, got -1"),
-    ("rules: none.yaml\nteam:\n  UAV: {}\n", "t.yaml:1:8: rules: cannot use rules file"),
-    ("just words", "not a team file: expected a mapping of fields at the top level"),
-    ("team: !!python/object/apply:os.system [ls]\n", "unsupported YAML tag"),
-])
+@pytest.mark.parametrize(
+    ("content", "message"),
+    [
+        ("team: [unclosed\n", "t.yaml:2:1: YAML syntax error"),
+        ("team:\n  UAV: {}\n  UAV: {}\n", "t.yaml:3:3: team.UAV: duplicate key 'UAV'"),
+        ("team:\n  Quadruped: {}\n", "t.yaml:2:3: team.Quadruped: unknown robot kinematic type"),
+        ("team:\n  UAV: {sensor_count: -1}\n", "maximum must be at least 1, got -1"),
+        ("rules: none.yaml\nteam:\n  UAV: {}\n", "t.yaml:1:8: rules: cannot use rules file"),
+        ("just words", "not a team file: expected a mapping of fields at the top level"),
+        ("team: !!python/object/apply:os.system [ls]\n", "unsupported YAML tag"),
+    ],
+)
 def test_bad_team_files_exit_2_with_a_located_message_and_no_traceback(
-        write_file: WriteFile, content: str, message: str) -> None:
+    write_file: WriteFile, content: str, message: str
+) -> None:
     path = write_file("t.yaml", content)
     result = run_cli("solve", path)
     assert result.returncode == 2
@@ -139,18 +195,25 @@ def test_assign_with_an_unknown_characteristic_name_exits_2() -> None:
 def test_reproduce_compares_every_shipped_article_case() -> None:
     result = run_cli("reproduce", "-f", "json")
     rows = {row["file"]: row for row in json.loads(result.stdout)}
-    assert set(rows) == {f"rules/teams/{p.name}" for p in TEAMS.glob("*.yaml")
-                         if "\npublished:" in p.read_text(encoding="utf-8")}
+    assert set(rows) == {
+        f"rules/teams/{p.name}"
+        for p in TEAMS.glob("*.yaml")
+        if "\npublished:" in p.read_text(encoding="utf-8")
+    }
     assert len(rows) == 5
-    assert rows["rules/teams/case3.yaml"]["computed"] == {"valid_robots": 872,
-                                                          "ui_configurations": 102}
+    assert rows["rules/teams/case3.yaml"]["computed"] == {
+        "valid_robots": 872,
+        "ui_configurations": 102,
+    }
     assert not rows["rules/teams/case3.yaml"]["reproduced"]
     assert all(row["reproduced"] for name, row in rows.items() if name != "rules/teams/case3.yaml")
 
 
 def test_counts_with_holes_are_shown_as_runs(write_file: WriteFile) -> None:
-    path = write_file("t.yaml", "team:\n  UAV: {motion_control: Flight, sensor_type: LIDAR, "
-                                "sensor_count: [2, 5, 9]}\n")
+    path = write_file(
+        "t.yaml",
+        "team:\n  UAV: {motion_control: Flight, sensor_type: LIDAR, sensor_count: [2, 5, 9]}\n",
+    )
     table = run_cli("solve", path, "--list").stdout.splitlines()[-2:]
     assert table[0].split()[-7:] == ["individual", "(2,", "5:", "2,", "5", "clusters)", "2"]
     data = json.loads(run_cli("solve", path, "--list", "-f", "json").stdout)

@@ -19,7 +19,8 @@ def modules_with_examples() -> list[str]:
     for module_info in pkgutil.walk_packages(solver.__path__, "solver."):
         # __main__ runs the command line on import; the ROS 2 source needs rclpy.
         if module_info.name.endswith("__main__") or module_info.name.startswith(
-                "solver.live.sources.ros2"):
+            "solver.live.sources.ros2"
+        ):
             continue
         names.append(module_info.name)
     found = []

@@ -33,22 +33,30 @@ def defined_exceptions() -> list[type[BaseException]]:
             if module_info.name.startswith(OPTIONAL):
                 continue
             raise
-        found.extend(value for value in vars(module).values()
-                     if inspect.isclass(value) and issubclass(value, BaseException)
-                     and value.__module__ == module.__name__)
+        found.extend(
+            value
+            for value in vars(module).values()
+            if inspect.isclass(value)
+            and issubclass(value, BaseException)
+            and value.__module__ == module.__name__
+        )
     return found
 
 
 def test_every_exception_the_package_defines_is_a_solver_error() -> None:
     found = defined_exceptions()
-    outside = [f"{error.__module__}.{error.__qualname__}" for error in found
-               if not issubclass(error, SolverError)
-               # A leading underscore: a private signal caught in its own module.
-               and not error.__name__.startswith("_")
-               and f"{error.__module__}.{error.__qualname__}" not in PRIVATE_SIGNALS]
+    outside = [
+        f"{error.__module__}.{error.__qualname__}"
+        for error in found
+        if not issubclass(error, SolverError)
+        # A leading underscore: a private signal caught in its own module.
+        and not error.__name__.startswith("_")
+        and f"{error.__module__}.{error.__qualname__}" not in PRIVATE_SIGNALS
+    ]
     assert outside == []
-    assert {"TooLargeError", "StructureTooComplex", "ProfileError", "MasterError"} <= \
-        {error.__name__ for error in found if issubclass(error, SolverError)}
+    assert {"TooLargeError", "StructureTooComplex", "ProfileError", "MasterError"} <= {
+        error.__name__ for error in found if issubclass(error, SolverError)
+    }
 
 
 def test_a_fault_reads_file_line_column_path_message() -> None:
@@ -58,8 +66,9 @@ def test_a_fault_reads_file_line_column_path_message() -> None:
 
 
 def test_faults_are_reported_top_to_bottom() -> None:
-    error = InputError([Fault(Location("a.yaml", 9, 1), "late"),
-                        Fault(Location("a.yaml", 2, 3), "early")])
+    error = InputError(
+        [Fault(Location("a.yaml", 9, 1), "late"), Fault(Location("a.yaml", 2, 3), "early")]
+    )
     assert [fault.message for fault in error.faults] == ["early", "late"]
     assert str(error) == "a.yaml:2:3: early\na.yaml:9:1: late"
 

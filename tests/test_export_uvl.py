@@ -35,14 +35,18 @@ def random_rules_and_team(rng: random.Random, directory: Path) -> Path:
         f"  sensor:\n    values: [{', '.join(sensors)}]\n"
         "  count:\n    range: {min: 1, max: 9}\n    components:\n"
         "      - {name: few, min: 1, max: 3, cluster_size: 1}\n"
-        "      - {name: many, min: 4, max: 9, cluster_size: 3}\n")
+        "      - {name: many, min: 4, max: 9, cluster_size: 3}\n"
+    )
     lines = ["name: random team", "rules: rules.yaml", "team:"]
     for kind in rng.sample(kinds, rng.randint(1, len(kinds))):
         picked_controls = rng.sample(controls, rng.randint(1, len(controls)))
         picked_sensors = rng.sample(sensors, rng.randint(1, len(sensors)))
-        lines += [f"  {kind}:", f"    control: [{', '.join(picked_controls)}]",
-                  f"    sensor: [{', '.join(picked_sensors)}]",
-                  f"    count: {rng.randint(1, 9)}"]
+        lines += [
+            f"  {kind}:",
+            f"    control: [{', '.join(picked_controls)}]",
+            f"    sensor: [{', '.join(picked_sensors)}]",
+            f"    count: {rng.randint(1, 9)}",
+        ]
     (directory / "team.yaml").write_text("\n".join(lines) + "\n")
     return directory / "team.yaml"
 

@@ -16,11 +16,19 @@ from tests.conftest import ROOT
 
 def _run_without(module: str, *args: str, cwd: Path) -> subprocess.CompletedProcess[str]:
     """The CLI in a fresh interpreter where ``import module`` fails, as if not installed."""
-    code = (f"import sys; sys.modules[{module!r}] = None\n"
-            "from solver.cli import main\n"
-            f"sys.exit(main({list(args)!r}))\n")
-    return subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                          cwd=cwd, check=False, timeout=300)
+    code = (
+        f"import sys; sys.modules[{module!r}] = None\n"
+        "from solver.cli import main\n"
+        f"sys.exit(main({list(args)!r}))\n"
+    )
+    return subprocess.run(
+        [sys.executable, "-c", code],
+        capture_output=True,
+        text=True,
+        cwd=cwd,
+        check=False,
+        timeout=300,
+    )
 
 
 def test_solve_with_a_plot_and_no_matplotlib_names_the_plots_extra(tmp_path: Path) -> None:
@@ -29,7 +37,8 @@ def test_solve_with_a_plot_and_no_matplotlib_names_the_plots_extra(tmp_path: Pat
     assert result.stderr.splitlines()[-1] == (
         "drawing plots (solve --plot, report, batch --report): needs matplotlib, which is not "
         "installed; install the 'plots' extra: pip install 'teleop-ui[plots]' "
-        "(or 'teleop-ui[all]')")
+        "(or 'teleop-ui[all]')"
+    )
     assert "Traceback" not in result.stderr
     assert not (tmp_path / "radar.png").exists()
 
@@ -45,13 +54,16 @@ def test_identify_without_lxml_names_the_ros_extra(tmp_path: Path) -> None:
     urdf.write_text('<robot name="r"><link name="base"/></robot>\n', encoding="utf-8")
     result = _run_without("lxml", "identify", "robot.urdf", cwd=tmp_path)
     assert result.returncode == 2
-    assert "needs lxml, which is not installed; install the 'ros' extra: " \
-           "pip install 'teleop-ui[ros]'" in result.stderr
+    assert (
+        "needs lxml, which is not installed; install the 'ros' extra: "
+        "pip install 'teleop-ui[ros]'" in result.stderr
+    )
     assert "Traceback" not in result.stderr
 
 
 def test_a_missing_extra_is_an_error_under_the_root_and_an_import_error(
-        monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
     monkeypatch.setitem(sys.modules, "rosbags", None)
     with pytest.raises(MissingExtraError) as caught:
         require("rosbags", feature="reading bag files")
@@ -65,8 +77,9 @@ def test_every_optional_module_is_in_the_extra_pyproject_gives_it() -> None:
     project = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["project"]
     extras = project["optional-dependencies"]
     for module, extra in EXTRAS.items():
-        names = [requirement.split(">")[0].split("=")[0].strip().lower()
-                 for requirement in extras[extra]]
+        names = [
+            requirement.split(">")[0].split("=")[0].strip().lower() for requirement in extras[extra]
+        ]
         assert module in names, (module, extra)
     core = " ".join(project["dependencies"]).lower()
     assert [module for module in EXTRAS if module in core] == []
@@ -74,9 +87,11 @@ def test_every_optional_module_is_in_the_extra_pyproject_gives_it() -> None:
 
 
 def test_the_readme_shows_the_message_a_missing_extra_gives(
-        monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
     monkeypatch.setitem(sys.modules, "matplotlib", None)
     from solver.plot import _FEATURE
+
     with pytest.raises(MissingExtraError) as caught:
         require("matplotlib", feature=_FEATURE)
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
@@ -85,10 +100,13 @@ def test_the_readme_shows_the_message_a_missing_extra_gives(
 
 def test_the_test_command_installs_into_a_project_venv_with_every_extra() -> None:
     script = (ROOT / "tools" / "test.sh").read_text(encoding="utf-8")
-    commands = [line.strip() for line in script.splitlines()
-                if line.strip() and not line.lstrip().startswith("#")]
+    commands = [
+        line.strip()
+        for line in script.splitlines()
+        if line.strip() and not line.lstrip().startswith("#")
+    ]
     # Never the system interpreter's pip (PEP 668 refuses it on Debian 12 / Ubuntu 24.04).
     assert not any(line.startswith(("python3 -m pip", "pip ")) for line in commands)
-    assert "python3 -m venv \"$venv\"" in commands
+    assert 'python3 -m venv "$venv"' in commands
     assert "\"$python\" -m pip install -q -e '.[test,all]'" in commands
     assert ".venv/" in (ROOT / ".gitignore").read_text(encoding="utf-8").splitlines()

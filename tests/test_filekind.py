@@ -25,29 +25,38 @@ team:
 """
 
 
-@pytest.mark.parametrize(("text", "kind"), [
-    ("team: {}\n", "team"),
-    (TEAM_WITH_CHARACTERISTICS, "team"),
-    ("name: x\nrules: paper.yaml\n", "team"),
-    ("name: x\ncharacteristics: {}\n", "rules"),
-    ("characteristics: {}\npatterns: {}\n", "profile"),
-    ("name: x\n", None),
-    ("- a list\n", None),
-])
+@pytest.mark.parametrize(
+    ("text", "kind"),
+    [
+        ("team: {}\n", "team"),
+        (TEAM_WITH_CHARACTERISTICS, "team"),
+        ("name: x\nrules: paper.yaml\n", "team"),
+        ("name: x\ncharacteristics: {}\n", "rules"),
+        ("characteristics: {}\npatterns: {}\n", "profile"),
+        ("name: x\n", None),
+        ("- a list\n", None),
+    ],
+)
 def test_the_kind_of_a_file_is_decided_by_its_top_level_keys(
-        text: str, kind: str | None, write_file: Callable[[str, str], Path]) -> None:
+    text: str, kind: str | None, write_file: Callable[[str, str], Path]
+) -> None:
     assert file_kind(load_document(write_file("file.yaml", text))) == kind
 
 
 def test_the_shipped_files_are_of_the_kind_their_folder_says() -> None:
     kinds = {path.name: file_kind(load_document(path)) for path in RULES.glob("*.yaml")}
-    assert kinds == {"paper.yaml": "rules", "paper-case3-hypothesis.yaml": "rules",
-                     "extended.yaml": "rules", "identification.yaml": "profile"}
+    assert kinds == {
+        "paper.yaml": "rules",
+        "paper-case3-hypothesis.yaml": "rules",
+        "extended.yaml": "rules",
+        "identification.yaml": "profile",
+    }
     assert {file_kind(load_document(path)) for path in TEAMS.glob("*.yaml")} == {"team"}
 
 
 def test_check_batch_and_count_all_read_a_team_with_characteristics_as_a_team(
-        write_file: Callable[[str, str], Path], tmp_path: Path) -> None:
+    write_file: Callable[[str, str], Path], tmp_path: Path
+) -> None:
     mixed = write_file("teams/mixed.yaml", TEAM_WITH_CHARACTERISTICS)
     unknown_field = "unknown team file field 'characteristics'"
     report = check_files([mixed])
@@ -59,8 +68,7 @@ def test_check_batch_and_count_all_read_a_team_with_characteristics_as_a_team(
     run_cli("batch", tmp_path / "teams", "-o", tmp_path / "out")
     with (tmp_path / "out" / "summary.csv").open(encoding="utf-8") as stream:
         rows = list(csv.DictReader(stream))
-    assert [(row["status"], unknown_field in row["message"]) for row in rows] == \
-        [("failed", True)]
+    assert [(row["status"], unknown_field in row["message"]) for row in rows] == [("failed", True)]
 
 
 def test_solving_a_rule_set_says_it_is_a_rule_set_and_to_pass_a_team() -> None:
@@ -71,7 +79,8 @@ def test_solving_a_rule_set_says_it_is_a_rule_set_and_to_pass_a_team() -> None:
         "rules/paper.yaml:6:1: this is a rule set, not a team file (it has 'characteristics:' "
         "and no 'team:'); pass a team (a file with 'rules:' naming this file and 'team:' "
         "selecting values per kinematic type, or a shipped team such as case3); "
-        "`teleop-ui count FILE` counts every robot of a rule set"]
+        "`teleop-ui count FILE` counts every robot of a rule set"
+    ]
 
 
 def test_loading_the_wrong_kind_of_file_raises_a_located_input_error() -> None:
@@ -91,17 +100,23 @@ def test_an_unknown_shipped_team_name_lists_the_shipped_teams() -> None:
         assert result.returncode == 2
         assert result.stderr == (
             "case9: no such file, and no shipped team of that name; shipped teams: case1, "
-            "case2, case3, case3-hypothesis, figure8, search-and-rescue\n")
+            "case2, case3, case3-hypothesis, figure8, search-and-rescue\n"
+        )
 
 
 def test_check_says_a_profile_is_not_checked_and_batch_skips_it(tmp_path: Path) -> None:
     report = check_files([RULES / "identification.yaml"])
     assert [(f.check, f.level, f.message) for f in report.findings] == [
-        ("not-checked", "info",
-         "not checked: an identification profile (check reads rule sets and teams)")]
+        (
+            "not-checked",
+            "info",
+            "not checked: an identification profile (check reads rule sets and teams)",
+        )
+    ]
     run_cli("batch", RULES / "identification.yaml", "-o", tmp_path / "out")
     with (tmp_path / "out" / "summary.csv").open(encoding="utf-8") as stream:
         (row,) = csv.DictReader(stream)
     assert (row["status"], row["message"]) == (
-        "skipped", "not a team file: an identification profile (it has 'characteristics:' and "
-                   "no 'team:')")
+        "skipped",
+        "not a team file: an identification profile (it has 'characteristics:' and no 'team:')",
+    )

@@ -35,13 +35,19 @@ def team_file(write_file: Callable[[str, str], Path]) -> Path:
 
 def test_the_values_removed_are_those_check_reports_as_forbidden(team_file: Path) -> None:
     removed = removed_by_constraints(load_team(team_file))
-    assert [(r.kinematic_type, r.characteristic, r.values, [c.name for c in r.constraints])
-            for r in removed] == [
+    assert [
+        (r.kinematic_type, r.characteristic, r.values, [c.name for c in r.constraints])
+        for r in removed
+    ] == [
         ("UAV", "motion_control", ("Walking",), ["Walking is for legged robots"]),
-        ("UAV", "sensor_type", ("Force Sensor",),
-         ["Walking is for legged robots", "no force feedback in flight"])]
-    findings = [f for f in check_files([team_file]).findings
-                if f.check == "team-forbidden-value"]
+        (
+            "UAV",
+            "sensor_type",
+            ("Force Sensor",),
+            ["Walking is for legged robots", "no force feedback in flight"],
+        ),
+    ]
+    findings = [f for f in check_files([team_file]).findings if f.check == "team-forbidden-value"]
     assert [f.location.line for f in findings] == [5, 6]
 
 
@@ -54,9 +60,11 @@ def test_solve_warns_in_text_and_json(team_file: Path) -> None:
     assert text.returncode == 0
     warnings = [line for line in text.stdout.splitlines() if line.startswith("warning:")]
     assert len(warnings) == 2
-    assert warnings[0].startswith("warning: the rules' constraints exclude what the team "
-                                  "selects: UAV: motion_control Walking, excluded by 'Walking "
-                                  "is for legged robots' (")
+    assert warnings[0].startswith(
+        "warning: the rules' constraints exclude what the team "
+        "selects: UAV: motion_control Walking, excluded by 'Walking "
+        "is for legged robots' ("
+    )
     data = json.loads(run_cli("solve", team_file, "--format", "json").stdout)
     assert data["warnings"] == [w.removeprefix("warning: ") for w in warnings]
     assert json.loads(run_cli("solve", "case1", "--format", "json").stdout)["warnings"] == []
@@ -74,7 +82,8 @@ def test_the_report_lists_each_constraint_with_what_it_removes(team_file: Path) 
 
 
 def test_batch_puts_the_warnings_in_the_summary_and_on_its_output(
-        team_file: Path, tmp_path: Path) -> None:
+    team_file: Path, tmp_path: Path
+) -> None:
     result = run_cli("batch", team_file, "-o", tmp_path / "out")
     assert result.returncode == 0
     assert result.stderr.count("\n    warning: the rules' constraints exclude") == 2

@@ -32,8 +32,9 @@ from tests.conftest import ROOT, RULES, TEAMS, run_cli
 TEAM = "name: {name}\nrules: {rules}\nteam:\n  UAV: {{motion_control: [Waypoint]}}\n"
 
 
-def team_file(folder: Path, *, name: str = "t", rules: str = "rules.yaml",
-              file: str = "team.yaml") -> Path:
+def team_file(
+    folder: Path, *, name: str = "t", rules: str = "rules.yaml", file: str = "team.yaml"
+) -> Path:
     path = folder / file
     path.write_text(TEAM.format(name=name, rules=rules), encoding="utf-8")
     return path
@@ -51,6 +52,7 @@ def assert_located_refusal(result: subprocess.CompletedProcess[str], file: str) 
 
 # ---- unbounded reads ------------------------------------------------------------------------
 
+
 @pytest.mark.parametrize("device", ["/dev/zero", "/dev/urandom"])
 def test_batch_refuses_a_rules_file_that_never_ends(tmp_path: Path, device: str) -> None:
     team_file(tmp_path, rules=device)
@@ -63,6 +65,7 @@ def test_batch_refuses_a_rules_file_that_never_ends(tmp_path: Path, device: str)
 
 
 # ---- tracebacks that were ----------------------------------------------------------------
+
 
 def test_a_nul_byte_in_the_rules_path_is_a_located_error(tmp_path: Path) -> None:
     team_file(tmp_path, rules='"a\\0b"')
@@ -91,8 +94,10 @@ def test_a_surrogate_escape_in_a_name_is_a_located_error(tmp_path: Path) -> None
     assert not (tmp_path / "r.html").exists()
 
 
-@pytest.mark.parametrize("content", [b"\x89MCAP0\r\n", b"\x89MCAP0\r\n" + b"\x00" * 64,
-                                     b"#ROSBAG V2.0\n", os.urandom(4096)])
+@pytest.mark.parametrize(
+    "content",
+    [b"\x89MCAP0\r\n", b"\x89MCAP0\r\n" + b"\x00" * 64, b"#ROSBAG V2.0\n", os.urandom(4096)],
+)
 @pytest.mark.parametrize("suffix", [".mcap", ".bag", ".db3"])
 def test_a_corrupt_bag_is_a_located_error(tmp_path: Path, content: bytes, suffix: str) -> None:
     from solver.identify.bags import read_bag_topics
@@ -118,10 +123,17 @@ def test_a_non_ascii_digit_is_no_sensor_count() -> None:
     assert sensor_count.parse_value("3") == 3
     assert sensor_count.parse_value("\u0663") is None  # Arabic-Indic three
     # On the command line it is a usage mistake, located at the argument.
-    result = run_cli("assign", "--team", "case3", "kinematic_type=UAV",
-                     "motion_control=Waypoint", "sensor_count=\u0663")
-    assert_located_refusal(result, "<arguments>: sensor_count: '\u0663' has non-ASCII digits; "
-                                   "write numbers as 0-9")
+    result = run_cli(
+        "assign",
+        "--team",
+        "case3",
+        "kinematic_type=UAV",
+        "motion_control=Waypoint",
+        "sensor_count=\u0663",
+    )
+    assert_located_refusal(
+        result, "<arguments>: sensor_count: '\u0663' has non-ASCII digits; write numbers as 0-9"
+    )
 
 
 def test_a_characteristic_without_a_name_is_a_located_error(tmp_path: Path) -> None:
@@ -129,8 +141,11 @@ def test_a_characteristic_without_a_name_is_a_located_error(tmp_path: Path) -> N
     rules.write_text("characteristics:\n  kind: {values: [A, B]}\n  '': {values: [x]}\n")
     (tmp_path / "t.yaml").write_text("rules: r.yaml\nteam:\n  A: {}\n")
     result = run_cli("solve", tmp_path / "t.yaml")
-    assert_located_refusal(result, f"{rules}:3:3: characteristics.: a characteristic needs a "
-                                   "name of visible characters, got ''")
+    assert_located_refusal(
+        result,
+        f"{rules}:3:3: characteristics.: a characteristic needs a "
+        "name of visible characters, got ''",
+    )
     assert run_cli("check", rules).returncode == 1  # check: the same fault, as a finding
 
 
@@ -145,14 +160,20 @@ def test_a_file_name_that_is_not_utf8_is_no_traceback(tmp_path: Path, command: s
         "report-md": ["report", team, "-o", tmp_path / "r\udcff.md"],
         "solve": ["solve", team, "--format", "csv"],
     }
-    result = subprocess.run([sys.executable, "-m", "solver", *map(os.fsencode, args[command])],
-                            capture_output=True, cwd=ROOT, check=False, timeout=600)
+    result = subprocess.run(
+        [sys.executable, "-m", "solver", *map(os.fsencode, args[command])],
+        capture_output=True,
+        cwd=ROOT,
+        check=False,
+        timeout=600,
+    )
     assert result.returncode == 0, result.stderr
     assert b"Traceback" not in result.stderr
     assert b"\x1b" not in result.stdout + result.stderr  # shown as the text "\x1b"
 
 
 # ---- sizes: names, lines, whole files ------------------------------------------------------
+
 
 def test_a_15_megabyte_team_name_is_refused_at_its_line(tmp_path: Path) -> None:
     team_file(tmp_path, name="x" * 15_000_000)
@@ -183,15 +204,21 @@ def test_a_15_megabyte_flow_style_line_is_refused_before_it_is_built(tmp_path: P
 SECRET = "root:x:0:0:the-secret-line:/root:/bin/bash"
 
 
-@pytest.mark.parametrize("foreign", [
-    f"{SECRET}\ndaemon:x:1:1::/:/bin/false\n",             # /etc/passwd: one plain scalar
-    f"{SECRET}: 1\nother: [{SECRET}]\n",                    # a mapping of the wrong shape
-    f"- {SECRET}\n- x\n",                                    # a list
-])
-@pytest.mark.parametrize("command", ["solve", "count", "robots", "check", "identify", "batch",
-                                     "report", "assign", "reproduce"])
+@pytest.mark.parametrize(
+    "foreign",
+    [
+        f"{SECRET}\ndaemon:x:1:1::/:/bin/false\n",  # /etc/passwd: one plain scalar
+        f"{SECRET}: 1\nother: [{SECRET}]\n",  # a mapping of the wrong shape
+        f"- {SECRET}\n- x\n",  # a list
+    ],
+)
+@pytest.mark.parametrize(
+    "command",
+    ["solve", "count", "robots", "check", "identify", "batch", "report", "assign", "reproduce"],
+)
 def test_a_rules_file_that_is_no_rule_set_is_named_never_quoted(
-        tmp_path: Path, foreign: str, command: str) -> None:
+    tmp_path: Path, foreign: str, command: str
+) -> None:
     (tmp_path / "passwd").write_text(foreign)
     team = team_file(tmp_path, rules="passwd")
     out = tmp_path / "out"
@@ -211,8 +238,9 @@ def test_a_rules_file_that_is_no_rule_set_is_named_never_quoted(
 
 
 def _summaries(out: Path) -> list[str]:
-    return [(out / name).read_text() for name in ("summary.csv", "summary.md")
-            if (out / name).is_file()]
+    return [
+        (out / name).read_text() for name in ("summary.csv", "summary.md") if (out / name).is_file()
+    ]
 
 
 def _urdf(folder: Path) -> Path:
@@ -223,10 +251,21 @@ def _urdf(folder: Path) -> Path:
 
 # ---- injections ----------------------------------------------------------------------------
 
-@pytest.mark.parametrize(("cell", "shown"), [
-    ("=HYPERLINK(\"http://x\")", "'=HYPERLINK(\"http://x\")"), ("+1+2", "'+1+2"),
-    ("-2+3", "'-2+3"), ("@SUM(A1)", "'@SUM(A1)"), ("\tx", "'\tx"), ("\rx", "'\rx"),
-    ("-3", "-3"), ("UAV", "UAV"), (5, 5)])
+
+@pytest.mark.parametrize(
+    ("cell", "shown"),
+    [
+        ('=HYPERLINK("http://x")', '\'=HYPERLINK("http://x")'),
+        ("+1+2", "'+1+2"),
+        ("-2+3", "'-2+3"),
+        ("@SUM(A1)", "'@SUM(A1)"),
+        ("\tx", "'\tx"),
+        ("\rx", "'\rx"),
+        ("-3", "-3"),
+        ("UAV", "UAV"),
+        (5, 5),
+    ],
+)
 def test_csv_cells_that_read_as_formulas_are_neutralised(cell: object, shown: object) -> None:
     assert csv_cell(cell) == shown
 
@@ -245,8 +284,9 @@ def test_batch_summary_and_solve_csv_neutralise_formula_names(tmp_path: Path) ->
 
 def test_robots_csv_neutralises_formula_values(tmp_path: Path) -> None:
     rules = tmp_path / "r.yaml"
-    rules.write_text("characteristics:\n  kind: {values: ['=1+1', B]}\n"
-                     "  n: {range: {min: -1, max: 0}}\n")
+    rules.write_text(
+        "characteristics:\n  kind: {values: ['=1+1', B]}\n  n: {range: {min: -1, max: 0}}\n"
+    )
     team = tmp_path / "t.yaml"
     team.write_text("rules: r.yaml\nteam:\n  '=1+1': {}\n")
     result = run_cli("robots", team)
@@ -262,11 +302,13 @@ def test_sarif_messages_hold_no_link() -> None:
 
 def test_sarif_output_of_check_escapes_a_bracketed_name(tmp_path: Path) -> None:
     rules = tmp_path / "r.yaml"
-    rules.write_text("characteristics:\n  kind: {values: [A, B]}\n  x: {values: [u, v]}\n"
-                     "constraints:\n  - name: '[x](javascript:alert(1))'\n"
-                     "    when: {kind: A}\n    require: {x: [u]}\n"
-                     "  - name: '[x](javascript:alert(1))'\n"
-                     "    when: {kind: A}\n    require: {x: [u]}\n")
+    rules.write_text(
+        "characteristics:\n  kind: {values: [A, B]}\n  x: {values: [u, v]}\n"
+        "constraints:\n  - name: '[x](javascript:alert(1))'\n"
+        "    when: {kind: A}\n    require: {x: [u]}\n"
+        "  - name: '[x](javascript:alert(1))'\n"
+        "    when: {kind: A}\n    require: {x: [u]}\n"
+    )
     result = run_cli("check", rules, "--format", "sarif")
     assert result.returncode in (0, 1), result.stderr
     texts = [r["message"]["text"] for r in json.loads(result.stdout)["runs"][0]["results"]]
@@ -308,6 +350,7 @@ def test_fleet_writes_a_newline_in_a_robot_name_as_an_escape(tmp_path: Path) -> 
 
 # ---- orphans -------------------------------------------------------------------------------
 
+
 def _descendants(pid: int) -> set[int]:
     children: dict[int, list[int]] = {}
     for entry in Path("/proc").iterdir():
@@ -338,12 +381,17 @@ def test_the_worker_pool_exits_when_batch_is_killed(tmp_path: Path) -> None:
     teams = tmp_path / "teams"
     teams.mkdir()
     for number in range(400):
-        (teams / f"t{number}.yaml").write_text((TEAMS / "case3.yaml").read_text()
-                                               .replace("rules: ../paper.yaml",
-                                                        f"rules: {RULES / 'paper.yaml'}"))
-    process = subprocess.Popen([sys.executable, "-m", "solver", "batch", teams, "-o",
-                                tmp_path / "out", "-j", "2"], cwd=ROOT,
-                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        (teams / f"t{number}.yaml").write_text(
+            (TEAMS / "case3.yaml")
+            .read_text()
+            .replace("rules: ../paper.yaml", f"rules: {RULES / 'paper.yaml'}")
+        )
+    process = subprocess.Popen(
+        [sys.executable, "-m", "solver", "batch", teams, "-o", tmp_path / "out", "-j", "2"],
+        cwd=ROOT,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.DEVNULL,
+    )
     pool: set[int] = set()
     for _ in range(600):  # until the forkserver and both workers are up
         pool = _descendants(process.pid)
@@ -366,11 +414,45 @@ def test_the_worker_pool_exits_when_batch_is_killed(tmp_path: Path) -> None:
 
 # ---- random mutations of valid files ---------------------------------------------------------
 
-HOSTILE = [b"\x00", b"\xff", b"\xed\xb3\xbf", b"9" * 4400, b".inf", b"1e999", b"&a", b"*a",
-           b"!!python/object:os.system", b"[", b"{", b"]", b"}", b": ", b"\n", b"- ", b"\t",
-           b"\"\\udcff\"", b"\x1b[2J", b"'", b"\"", b"<<: *a", b"---", b"...", b"? ", b"|",
-           b"<!DOCTYPE r [<!ENTITY e SYSTEM 'file:///etc/passwd'>]>", b"&e;", b"<", b">",
-           b"</link>", b"<link name=''/>", b"0x" + b"f" * 40, b"\xd9\xa3", b"~", b"-1", b"1.5"]
+HOSTILE = [
+    b"\x00",
+    b"\xff",
+    b"\xed\xb3\xbf",
+    b"9" * 4400,
+    b".inf",
+    b"1e999",
+    b"&a",
+    b"*a",
+    b"!!python/object:os.system",
+    b"[",
+    b"{",
+    b"]",
+    b"}",
+    b": ",
+    b"\n",
+    b"- ",
+    b"\t",
+    b'"\\udcff"',
+    b"\x1b[2J",
+    b"'",
+    b'"',
+    b"<<: *a",
+    b"---",
+    b"...",
+    b"? ",
+    b"|",
+    b"<!DOCTYPE r [<!ENTITY e SYSTEM 'file:///etc/passwd'>]>",
+    b"&e;",
+    b"<",
+    b">",
+    b"</link>",
+    b"<link name=''/>",
+    b"0x" + b"f" * 40,
+    b"\xd9\xa3",
+    b"~",
+    b"-1",
+    b"1.5",
+]
 
 
 @st.composite
@@ -384,9 +466,12 @@ def mutations(draw: st.DrawFn, original: bytes) -> bytes:
     return bytes(data)
 
 
-FUZZ = settings(max_examples=25, deadline=None, derandomize=True,
-                suppress_health_check=[HealthCheck.function_scoped_fixture,
-                                       HealthCheck.too_slow])
+FUZZ = settings(
+    max_examples=25,
+    deadline=None,
+    derandomize=True,
+    suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow],
+)
 
 
 def run_main(*args: str | Path) -> int:
@@ -398,15 +483,21 @@ def run_main(*args: str | Path) -> int:
 
 
 def _fuzz_commands(folder: Path, team: Path) -> list[list[str | Path]]:
-    return [["solve", team], ["count", team], ["robots", team, "--max-robots", "100000"],
-            ["check", team], ["report", team, "-o", folder / "r.md"],
-            ["batch", team, "-o", folder / "out"]]
+    return [
+        ["solve", team],
+        ["count", team],
+        ["robots", team, "--max-robots", "100000"],
+        ["check", team],
+        ["report", team, "-o", folder / "r.md"],
+        ["batch", team, "-o", folder / "out"],
+    ]
 
 
 @FUZZ
 @given(data=mutations((RULES / "paper.yaml").read_bytes()))
-def test_mutated_rule_files_never_reach_a_traceback(tmp_path_factory: pytest.TempPathFactory,
-                                                     data: bytes) -> None:
+def test_mutated_rule_files_never_reach_a_traceback(
+    tmp_path_factory: pytest.TempPathFactory, data: bytes
+) -> None:
     folder = tmp_path_factory.mktemp("rules")
     (folder / "rules.yaml").write_bytes(data)
     team = team_file(folder)
@@ -415,10 +506,14 @@ def test_mutated_rule_files_never_reach_a_traceback(tmp_path_factory: pytest.Tem
 
 
 @FUZZ
-@given(data=mutations((TEAMS / "case3.yaml").read_bytes()
-                      .replace(b"rules: ../paper.yaml", b"rules: rules.yaml")))
-def test_mutated_team_files_never_reach_a_traceback(tmp_path_factory: pytest.TempPathFactory,
-                                                    data: bytes) -> None:
+@given(
+    data=mutations(
+        (TEAMS / "case3.yaml").read_bytes().replace(b"rules: ../paper.yaml", b"rules: rules.yaml")
+    )
+)
+def test_mutated_team_files_never_reach_a_traceback(
+    tmp_path_factory: pytest.TempPathFactory, data: bytes
+) -> None:
     folder = tmp_path_factory.mktemp("team")
     with_paper_rules(folder)
     team = folder / "team.yaml"
@@ -443,4 +538,3 @@ def test_mutated_urdfs_are_identified_or_refused(data: bytes) -> None:
     else:
         return
     assert message.startswith("fuzz.urdf")
-

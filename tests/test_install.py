@@ -9,8 +9,20 @@ from tests.live.roscore import Roscore
 
 # Commands of ROS 1 (Debian's ros-core) and ROS 2 that a Python package could shadow; roscore
 # itself runs `rosversion`, which pip's rospkg installs in a form that knows no ROS packages.
-ROS_COMMANDS = ("rosversion", "roscore", "rosmaster", "roslaunch", "rosrun", "rosparam",
-                "rostopic", "rosnode", "rosservice", "ros2", "catkin_make", "colcon")
+ROS_COMMANDS = (
+    "rosversion",
+    "roscore",
+    "rosmaster",
+    "roslaunch",
+    "rosrun",
+    "rosparam",
+    "rostopic",
+    "rosnode",
+    "rosservice",
+    "ros2",
+    "catkin_make",
+    "colcon",
+)
 
 
 def test_this_environment_has_no_script_named_like_a_ros_command() -> None:

@@ -18,8 +18,13 @@ from tests.conftest import run_cli
 def test_robots_lists_every_valid_robot_with_its_configuration() -> None:
     result = run_cli("robots", "rules/teams/case3.yaml")
     rows = list(csv.reader(io.StringIO(result.stdout)))
-    assert rows[0] == ["configuration", "kinematic_type", "motion_control", "sensor_type",
-                       "sensor_count"]
+    assert rows[0] == [
+        "configuration",
+        "kinematic_type",
+        "motion_control",
+        "sensor_type",
+        "sensor_count",
+    ]
     assert len(rows) == 1 + 872
     assert rows[1] == ["1", "UAV", "Flight", "2D Camera", "1"]
     assert {int(row[0]) for row in rows[1:]} == set(range(1, 103))
@@ -61,15 +66,21 @@ def test_count_says_how_it_counted() -> None:
     assert lines[3].split() == ["UAV", "30", "6", "csp"]
 
 
-@pytest.mark.parametrize("components", [
-    # One component per value, with a gap (d in none): the lookup tables.
-    "[{name: X, values: [a, b]}, {name: Y, values: [c]}]",
-    # b in two components: the search over configurations.
-    "[{name: X, values: [a, b]}, {name: Y, values: [b, c]}]",
-])
+@pytest.mark.parametrize(
+    "components",
+    [
+        # One component per value, with a gap (d in none): the lookup tables.
+        "[{name: X, values: [a, b]}, {name: Y, values: [c]}]",
+        # b in two components: the search over configurations.
+        "[{name: X, values: [a, b]}, {name: Y, values: [b, c]}]",
+    ],
+)
 def test_each_listed_robot_has_the_configuration_the_solution_gives_it(
-        components: str, write_file: Callable[[str, str], Path]) -> None:
-    write_file("rules.yaml", f"""\
+    components: str, write_file: Callable[[str, str], Path]
+) -> None:
+    write_file(
+        "rules.yaml",
+        f"""\
 characteristics:
   kinematic_type: {{values: [T, U]}}
   part:
@@ -77,14 +88,18 @@ characteristics:
     components: {components}
 constraints:
   - forbid: {{kinematic_type: U, part: a}}
-""")
-    solution = solve(load_team(write_file("team.yaml", "rules: rules.yaml\nteam:\n  T: {}\n"
-                                                       "  U: {}\n")))
+""",
+    )
+    solution = solve(
+        load_team(write_file("team.yaml", "rules: rules.yaml\nteam:\n  T: {}\n  U: {}\n"))
+    )
     listed = list(numbered_robots(solution))
     assert len(listed) == 7
     for number, robot in listed:
         configuration = solution.configuration_for(robot)
-        assert number == (solution.default_configuration if configuration is None
-                          else configuration.number)
-    assert {number for number, robot in listed if robot[1] == "d"} == \
-        {solution.default_configuration}
+        assert number == (
+            solution.default_configuration if configuration is None else configuration.number
+        )
+    assert {number for number, robot in listed if robot[1] == "d"} == {
+        solution.default_configuration
+    }

@@ -33,7 +33,8 @@ def test_a_file_that_is_no_mapping_is_named_without_quoting_it() -> None:
     reader = reader_of("- root:x:0:0\n")
     assert reader.top("rule set", needs="characteristics") is None
     assert [fault.message for fault in reader.faults] == [
-        "not a rule set: expected a mapping of fields at the top level, got a list"]
+        "not a rule set: expected a mapping of fields at the top level, got a list"
+    ]
 
 
 def test_names_longer_than_the_limit_are_refused() -> None:

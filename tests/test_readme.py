@@ -23,8 +23,9 @@ def _text(page: Path) -> str:
 def console_examples() -> list[tuple[str, str]]:
     """(command, expected output) for every ``$ teleop-ui ...`` line of a ```console block."""
     examples = []
-    blocks = [block for page in PAGES for block in re.findall(r"```console\n(.*?)```",
-                                                              _text(page), re.S)]
+    blocks = [
+        block for page in PAGES for block in re.findall(r"```console\n(.*?)```", _text(page), re.S)
+    ]
     for block in blocks:
         command = None
         output: list[str] = []
@@ -44,10 +45,10 @@ def test_the_readme_has_console_examples() -> None:
     assert len(console_examples()) >= 8
 
 
-@pytest.mark.parametrize(("command", "expected"), console_examples(),
-                         ids=lambda value: value[:60])
-def test_every_console_example_prints_what_the_readme_shows(command: str, expected: str,
-                                                            tmp_path: Path) -> None:
+@pytest.mark.parametrize(("command", "expected"), console_examples(), ids=lambda value: value[:60])
+def test_every_console_example_prints_what_the_readme_shows(
+    command: str, expected: str, tmp_path: Path
+) -> None:
     # Run where the repository's files are visible under the same names but anything the
     # command writes (reports, plots) lands in a scratch folder, not in the repository.
     for name in ("rules", "tests", "docs", "examples"):
@@ -61,7 +62,8 @@ def test_every_console_example_prints_what_the_readme_shows(command: str, expect
 def test_the_reproduction_table_is_the_output_of_reproduce() -> None:
     page = _text(ROOT / "docs" / "reproduction.md")
     table = page.split("<!-- reproduction-table -->\n", 1)[1].split(
-        "<!-- /reproduction-table -->", 1)[0]
+        "<!-- /reproduction-table -->", 1
+    )[0]
     assert table == render_comparisons(compare(), "markdown")
 
 
@@ -69,6 +71,7 @@ def test_ci_runs_exactly_the_readme_test_command() -> None:
     quick_start = README.split("## Quick start", 1)[1].split("\n## ", 1)[0]
     assert "bash tools/test.sh" in quick_start
     ci = (ROOT / ".ci" / "run").read_text(encoding="utf-8")
-    commands = [line for line in ci.splitlines() if line and not line.startswith(("#", "set ",
-                                                                                  "cd "))]
+    commands = [
+        line for line in ci.splitlines() if line and not line.startswith(("#", "set ", "cd "))
+    ]
     assert commands == ["bash tools/test.sh"]

@@ -21,5 +21,7 @@ def test_a_cell_that_would_read_as_a_formula_is_neutralised() -> None:
 def test_the_method_says_which_engine_counted_in_words() -> None:
     team = load_team(TEAMS / "case3.yaml")
     assert method_text(solve(team)) == "counted from the rules' structure, no robots enumerated"
-    assert method_text(solve(team, engine="csp")) == \
-        "robots enumerated with python-constraint (csp engine)"
+    assert (
+        method_text(solve(team, engine="csp"))
+        == "robots enumerated with python-constraint (csp engine)"
+    )

@@ -71,10 +71,13 @@ def test_html_report_fetches_nothing_from_the_network(case3_html: str) -> None:
     assert not {"script", "link", "iframe", "object", "embed"} & set(page.tags)
     assert page.references
     # Embedded images, and links to the page's own sections (the contents): nothing fetched.
-    assert all(value.startswith("data:") or (tag == "a" and value.startswith("#"))
-               for tag, _, value in page.references)
-    policy = next(m["content"] for m in page.meta if m.get("http-equiv") ==
-                  "Content-Security-Policy")
+    assert all(
+        value.startswith("data:") or (tag == "a" and value.startswith("#"))
+        for tag, _, value in page.references
+    )
+    policy = next(
+        m["content"] for m in page.meta if m.get("http-equiv") == "Content-Security-Policy"
+    )
     assert policy is not None
     assert "default-src 'none'" in policy
 
@@ -93,11 +96,15 @@ def test_html_report_tables_give_the_counts_of_each_type(case3_html: str) -> Non
     assert "default UI configuration: 103" in text
 
 
-def test_report_says_when_published_figures_are_not_reproduced(case3: Solution,
-                                                               case3_html: str) -> None:
+def test_report_says_when_published_figures_are_not_reproduced(
+    case3: Solution, case3_html: str
+) -> None:
     note = reproduction_note(case3)
-    assert note == ("published: 820 valid robots / 99 UI configurations (Mortimer et al. 2017, "
-                    "Section 4 and Table 2): NOT reproduced: these rules give 872 / 102", False)
+    assert note == (
+        "published: 820 valid robots / 99 UI configurations (Mortimer et al. 2017, "
+        "Section 4 and Table 2): NOT reproduced: these rules give 872 / 102",
+        False,
+    )
     assert note[0] in case3_html
     assert 'class="note differs"' in case3_html
 
@@ -113,43 +120,58 @@ def test_report_says_when_published_figures_are_reproduced() -> None:
 
 
 def test_report_has_no_reproduction_note_for_a_team_without_published_figures(
-        write_file: Callable[[str, str], Path]) -> None:
-    team = write_file("t.yaml", "team:\n  UAV:\n    motion_control: [Flight]\n"
-                                "    sensor_type: [2D Camera]\n    sensor_count: 2\n")
+    write_file: Callable[[str, str], Path],
+) -> None:
+    team = write_file(
+        "t.yaml",
+        "team:\n  UAV:\n    motion_control: [Flight]\n"
+        "    sensor_type: [2D Camera]\n    sensor_count: 2\n",
+    )
     solution = solve(load_team(team))
     assert reproduction_note(solution) is None
     assert "published" not in render_markdown(solution)
     assert 'class="note' not in render_html(solution, charts={})
 
 
-def test_report_lists_every_configuration_with_its_components(case3: Solution,
-                                                              case3_html: str) -> None:
+def test_report_lists_every_configuration_with_its_components(
+    case3: Solution, case3_html: str
+) -> None:
     markdown = render_markdown(case3)
-    rows = [line for line in markdown.splitlines() if line.startswith("| ")
-            and line.split(" | ")[0][2:].isdigit()]
+    rows = [
+        line
+        for line in markdown.splitlines()
+        if line.startswith("| ") and line.split(" | ")[0][2:].isdigit()
+    ]
     assert [int(r.split(" | ")[0][2:]) for r in rows] == list(range(1, 104))
-    assert rows[0] == ("| 1 | UAV | Flight | visual display: 2D Camera | individual: 1..5 "
-                       "(1..5 clusters) | 5 |")
+    assert rows[0] == (
+        "| 1 | UAV | Flight | visual display: 2D Camera | individual: 1..5 (1..5 clusters) | 5 |"
+    )
     assert rows[-1].startswith("| 103 | default: every component |")
     assert "clusters of 5: 16..25 (4..5 clusters)" in case3_html
 
 
 def test_report_shows_each_types_selection_with_count_ranges(case3: Solution) -> None:
     markdown = render_markdown(case3)
-    assert ("| Mobile Manipulator | Joint, Driving, End Effector, Waypoint | 2D Camera, "
-            "Speaker, Microphone, Force Sensor, LIDAR, RGB-D Camera | 1..13 |") in markdown
+    assert (
+        "| Mobile Manipulator | Joint, Driving, End Effector, Waypoint | 2D Camera, "
+        "Speaker, Microphone, Force Sensor, LIDAR, RGB-D Camera | 1..13 |"
+    ) in markdown
 
 
 def test_report_escapes_names_from_the_team_file(write_file: Callable[[str, str], Path]) -> None:
-    team = write_file("t.yaml", "name: '<script>alert(1)</script> & co'\nteam:\n  UAV:\n"
-                                "    motion_control: [Flight]\n    sensor_count: 1\n")
+    team = write_file(
+        "t.yaml",
+        "name: '<script>alert(1)</script> & co'\nteam:\n  UAV:\n"
+        "    motion_control: [Flight]\n    sensor_count: 1\n",
+    )
     page = render_html(solve(load_team(team)), charts={})
     assert "<script>" not in page
     assert "&lt;script&gt;alert(1)&lt;/script&gt; &amp; co" in page
 
 
-def test_markdown_report_writes_its_png_charts_beside_it_and_links_them(case3: Solution,
-                                                                        tmp_path: Path) -> None:
+def test_markdown_report_writes_its_png_charts_beside_it_and_links_them(
+    case3: Solution, tmp_path: Path
+) -> None:
     target = tmp_path / "case3.md"
     written = write_report(case3, target)
     radar, bars = image_names(target)["radar"], image_names(target)["bars"]
@@ -171,8 +193,10 @@ def test_reports_are_byte_identical_from_run_to_run(case3: Solution, tmp_path: P
         assert (first / name).read_bytes() == (second / name).read_bytes(), name
 
 
-@pytest.mark.parametrize(("name", "fmt"), [("x.html", "html"), ("x.HTM", "html"),
-                                           ("x.md", "markdown"), ("x.markdown", "markdown")])
+@pytest.mark.parametrize(
+    ("name", "fmt"),
+    [("x.html", "html"), ("x.HTM", "html"), ("x.md", "markdown"), ("x.markdown", "markdown")],
+)
 def test_report_format_follows_the_extension(name: str, fmt: str) -> None:
     assert report_format(name) == fmt
 
@@ -180,8 +204,10 @@ def test_report_format_follows_the_extension(name: str, fmt: str) -> None:
 def test_report_format_refuses_an_unknown_extension() -> None:
     with pytest.raises(InputError) as caught:
         report_format("out/case3.pdf")
-    assert str(caught.value) == ("out/case3.pdf: cannot tell the report format from '.pdf'; "
-                                 "name the file .html, .htm, .md, .markdown")
+    assert str(caught.value) == (
+        "out/case3.pdf: cannot tell the report format from '.pdf'; "
+        "name the file .html, .htm, .md, .markdown"
+    )
 
 
 def test_report_command_writes_a_self_contained_page(tmp_path: Path) -> None:
@@ -192,18 +218,22 @@ def test_report_command_writes_a_self_contained_page(tmp_path: Path) -> None:
 
 
 def test_report_command_on_a_bad_team_file_gives_the_located_error_and_exit_2(
-        write_file: Callable[[str, str], Path], tmp_path: Path) -> None:
+    write_file: Callable[[str, str], Path], tmp_path: Path
+) -> None:
     bad = write_file("bad.yaml", "team:\n  UAV:\n    motion_control: [Flite]\n")
     result = run_cli("report", bad, "-o", tmp_path / "bad.html")
     assert result.returncode == 2
-    assert f"{bad}:3:22: team.UAV.motion_control[0]: unknown robot motion control 'Flite' " \
-           "(did you mean 'Flight'?)" in result.stderr
+    assert (
+        f"{bad}:3:22: team.UAV.motion_control[0]: unknown robot motion control 'Flite' "
+        "(did you mean 'Flight'?)" in result.stderr
+    )
     assert "Traceback" not in result.stderr
     assert not (tmp_path / "bad.html").exists()
 
 
 def test_report_command_with_an_unknown_extension_exits_2_and_writes_nothing(
-        tmp_path: Path) -> None:
+    tmp_path: Path,
+) -> None:
     result = run_cli("report", "case1", "-o", tmp_path / "case1.txt")
     assert result.returncode == 2
     assert "cannot tell the report format from '.txt'" in result.stderr
@@ -218,8 +248,9 @@ _PRINTABLE = st.text(alphabet=st.characters(min_codepoint=32, max_codepoint=126)
 
 def _viewer(text: str) -> str:
     """Markdown rendered as a viewer would: CommonMark, tables, raw HTML passed through."""
-    rendered: str = MarkdownIt("commonmark", {"html": True}).enable(["table", "strikethrough"]) \
-        .render(text)
+    rendered: str = (
+        MarkdownIt("commonmark", {"html": True}).enable(["table", "strikethrough"]).render(text)
+    )
     return rendered
 
 
@@ -230,8 +261,7 @@ class _Cells(HTMLParser):
         self.cells: list[str] = []
         self._cell: list[str] | None = None
 
-    def handle_starttag(self, tag: str,
-                        attrs: list[tuple[str, str | None]]) -> None:  # noqa: ARG002 (HTMLParser's signature)
+    def handle_starttag(self, tag: str, attrs: list[tuple[str, str | None]]) -> None:  # noqa: ARG002 (HTMLParser's signature)
         self.tags.append(tag)
         if tag in ("th", "td"):
             self._cell = []
@@ -270,32 +300,60 @@ def test_a_markdown_heading_shows_any_name_as_written(name: str) -> None:
 
 
 def test_markdown_report_escapes_names_from_the_rule_and_team_files(
-        write_file: Callable[[str, str], Path]) -> None:
-    write_file("r.yaml", 'name: "<script>alert(1)</script>"\ncharacteristics:\n'
-                         '  kinematic_type: {values: ["<img src=x onerror=alert(1)>", "a|b", '
-                         '"*bold*"]}\n  s:\n    label: "</title><b>x</b>"\n'
-                         '    values: ["`code`", "[link](javascript:alert(1))", "<b>"]\n')
-    team = write_file("t.yaml", 'name: "Team <i>x</i> | pipe"\ndescription: "# <script>d'
-                                '</script>"\nrules: r.yaml\nteam:\n'
-                                '  "<img src=x onerror=alert(1)>": {}\n  "a|b": {}\n'
-                                '  "*bold*": {}\n')
+    write_file: Callable[[str, str], Path],
+) -> None:
+    write_file(
+        "r.yaml",
+        'name: "<script>alert(1)</script>"\ncharacteristics:\n'
+        '  kinematic_type: {values: ["<img src=x onerror=alert(1)>", "a|b", '
+        '"*bold*"]}\n  s:\n    label: "</title><b>x</b>"\n'
+        '    values: ["`code`", "[link](javascript:alert(1))", "<b>"]\n',
+    )
+    team = write_file(
+        "t.yaml",
+        'name: "Team <i>x</i> | pipe"\ndescription: "# <script>d'
+        '</script>"\nrules: r.yaml\nteam:\n'
+        '  "<img src=x onerror=alert(1)>": {}\n  "a|b": {}\n'
+        '  "*bold*": {}\n',
+    )
     solution = solve(load_team(team))
     page = _page(_viewer(render_markdown(solution, {"radar": "my report-radar.png"})))
-    assert set(page.tags) <= {"h1", "h2", "p", "em", "table", "thead", "tbody", "tr", "th",
-                              "td", "ul", "li", "img"}
+    assert set(page.tags) <= {
+        "h1",
+        "h2",
+        "p",
+        "em",
+        "table",
+        "thead",
+        "tbody",
+        "tr",
+        "th",
+        "td",
+        "ul",
+        "li",
+        "img",
+    }
     assert [value for _, _, value in page.references] == ["my%20report-radar.png"]
     text = "".join(page.text)
-    for name in ("Team <i>x</i> | pipe", "# <script>d</script>",
-                 "rules: <script>alert(1)</script>", "<img src=x onerror=alert(1)>", "*bold*",
-                 "</title><b>x</b>", "`code`", "[link](javascript:alert(1))"):
+    for name in (
+        "Team <i>x</i> | pipe",
+        "# <script>d</script>",
+        "rules: <script>alert(1)</script>",
+        "<img src=x onerror=alert(1)>",
+        "*bold*",
+        "</title><b>x</b>",
+        "`code`",
+        "[link](javascript:alert(1))",
+    ):
         assert name in text
     cells = _Cells()
     cells.feed(_viewer(render_markdown(solution)))
-    rows = [cells.cells[i:i + 4] for i in range(len(cells.cells))]
+    rows = [cells.cells[i : i + 4] for i in range(len(cells.cells))]
     assert ["5", "a|b", "[link](javascript:alert(1))", "1"] in rows  # one cell each
 
 
 # ---- all or nothing ----------------------------------------------------------------------------
+
 
 def test_report_command_onto_a_folder_exits_2_and_leaves_no_charts(tmp_path: Path) -> None:
     (tmp_path / "d.md").mkdir()
@@ -307,7 +365,8 @@ def test_report_command_onto_a_folder_exits_2_and_leaves_no_charts(tmp_path: Pat
 
 
 def test_markdown_report_that_fails_midway_puts_back_the_files_it_replaced(
-        case3: Solution, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    case3: Solution, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
     target = tmp_path / "case3.md"
     names = image_names(target)
     for path in (names["radar"], names["bars"], target):
@@ -329,8 +388,11 @@ def test_markdown_report_that_fails_midway_puts_back_the_files_it_replaced(
     assert str(caught.value) == f"{target}: cannot write: Input/output error"
     assert calls[:3] == ["case3-radar.png", "case3-bars.png", "case3.md"]
     assert [p.read_bytes() for p in (names["radar"], names["bars"], target)] == [b"before"] * 3
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["case3-bars.png", "case3-radar.png",
-                                                          "case3.md"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == [
+        "case3-bars.png",
+        "case3-radar.png",
+        "case3.md",
+    ]
 
 
 def test_html_report_has_contents_and_folds_long_tables(case3_html: str) -> None:

@@ -50,12 +50,23 @@ def test_the_paper_rules_group_sensors_as_figure_7() -> None:
     }
 
 
-@pytest.mark.parametrize(("count", "arrangement", "clusters"), [
-    (1, "individual", 1), (5, "individual", 5), (6, "clusters of 2", 3),
-    (10, "clusters of 2", 5), (11, "clusters of 3", 4), (16, "clusters of 5", 4),
-    (25, "clusters of 5", 5), (26, "clusters of 10", 3), (50, "clusters of 10", 5)])
-def test_the_paper_rules_cluster_sensor_counts_as_equation_2(count: int, arrangement: str,
-                                                             clusters: int) -> None:
+@pytest.mark.parametrize(
+    ("count", "arrangement", "clusters"),
+    [
+        (1, "individual", 1),
+        (5, "individual", 5),
+        (6, "clusters of 2", 3),
+        (10, "clusters of 2", 5),
+        (11, "clusters of 3", 4),
+        (16, "clusters of 5", 4),
+        (25, "clusters of 5", 5),
+        (26, "clusters of 10", 3),
+        (50, "clusters of 10", 5),
+    ],
+)
+def test_the_paper_rules_cluster_sensor_counts_as_equation_2(
+    count: int, arrangement: str, clusters: int
+) -> None:
     sensors = load_rules(RULES / "paper.yaml").characteristic("sensor_count")
     (component,) = sensors.components_of(count)
     assert (component.name, component.clusters(count)) == (arrangement, clusters)
@@ -73,9 +84,15 @@ def test_without_components_every_value_is_its_own_component(write_file: WriteFi
 
 
 def test_a_rule_set_may_add_kinematic_types_and_characteristics_of_its_own(
-        write_file: WriteFile) -> None:
-    rules = load_rules(write_file("r.yaml", MINIMAL.replace("[UAV, UGV]", "[UAV, Quadruped]")
-                                  + "  battery:\n    values: [low, high]\n"))
+    write_file: WriteFile,
+) -> None:
+    rules = load_rules(
+        write_file(
+            "r.yaml",
+            MINIMAL.replace("[UAV, UGV]", "[UAV, Quadruped]")
+            + "  battery:\n    values: [low, high]\n",
+        )
+    )
     assert rules.key.values == ("UAV", "Quadruped")
     assert rules.characteristic("battery").kind == "categorical"
     assert rules.bound == 2 * 2 * 2
@@ -86,13 +103,19 @@ def test_the_team_key_defaults_to_the_first_characteristic(write_file: WriteFile
 
 
 def test_constraints_are_read_as_data(write_file: WriteFile) -> None:
-    rules = load_rules(write_file("r.yaml", MINIMAL + """\
+    rules = load_rules(
+        write_file(
+            "r.yaml",
+            MINIMAL
+            + """\
 constraints:
   - name: microphones only on UGVs
     when: {sensor_type: Microphone}
     require: {kinematic_type: UGV}
   - forbid: {kinematic_type: UAV, sensor_type: {component: audio}}
-"""))
+""",
+        )
+    )
     first, second = rules.constraints
     assert first.name == "microphones only on UGVs"
     assert first.location.line == 10
@@ -103,19 +126,21 @@ constraints:
     assert second.holds({"kinematic_type": "UGV", "sensor_type": "Microphone"})
 
 
-def test_an_unknown_value_in_a_component_is_named_with_a_suggestion(
-        write_file: WriteFile) -> None:
+def test_an_unknown_value_in_a_component_is_named_with_a_suggestion(write_file: WriteFile) -> None:
     path = write_file("r.yaml", MINIMAL.replace("values: [Microphone]}", "values: [Mic]}"))
     with pytest.raises(RulesError) as caught:
         load_rules(path)
     assert messages(caught.value) == [
         f"{path}:8:32: characteristics.sensor_type.components[1].values[0]: unknown sensor_type "
-        "value 'Mic' (did you mean 'Microphone'?)"]
+        "value 'Mic' (did you mean 'Microphone'?)"
+    ]
     assert caught.value.faults[0].code == "unknown-reference"
 
 
 def test_every_problem_in_a_rule_file_is_reported_at_once(write_file: WriteFile) -> None:
-    path = write_file("r.yaml", """\
+    path = write_file(
+        "r.yaml",
+        """\
 name: broken
 bound: -3
 characteristics:
@@ -136,12 +161,21 @@ constraints:
   - name: both
     require: {speed: slow}
     forbid: {speed: slow}
-""")
+""",
+    )
     with pytest.raises(RulesError) as caught:
         load_rules(path)
     codes = [fault.code for fault in caught.value.faults]
-    assert codes == ["out-of-range", "duplicate-value", "missing-field", "out-of-range",
-                     "unknown-reference", "unknown-field", "unknown-reference", "missing-field"]
+    assert codes == [
+        "out-of-range",
+        "duplicate-value",
+        "missing-field",
+        "out-of-range",
+        "unknown-reference",
+        "unknown-field",
+        "unknown-reference",
+        "missing-field",
+    ]
     assert [f.location.line for f in caught.value.faults] == [2, 5, 7, 10, 14, 15, 17, 18]
 
 
@@ -149,19 +183,31 @@ def test_a_team_key_must_name_a_categorical_characteristic(write_file: WriteFile
     with pytest.raises(RulesError, match="team_key names no characteristic: 'kinematic'"):
         load_rules(write_file("r.yaml", "team_key: kinematic\n" + MINIMAL))
     with pytest.raises(RulesError, match="must be a categorical characteristic"):
-        load_rules(write_file("r.yaml", MINIMAL + "  count:\n    range: {min: 1, max: 3}\n"
-                              "team_key: count\n"))
+        load_rules(
+            write_file(
+                "r.yaml", MINIMAL + "  count:\n    range: {min: 1, max: 3}\nteam_key: count\n"
+            )
+        )
 
 
 def test_the_default_team_key_may_not_declare_components(write_file: WriteFile) -> None:
     with pytest.raises(RulesError, match="is the team key: each of its values is its own"):
-        load_rules(write_file("r.yaml", MINIMAL.replace(
-            "    values: [UAV, UGV]\n",
-            "    values: [UAV, UGV]\n    components: [{name: air, values: [UAV, UGV]}]\n")))
+        load_rules(
+            write_file(
+                "r.yaml",
+                MINIMAL.replace(
+                    "    values: [UAV, UGV]\n",
+                    "    values: [UAV, UGV]\n    components: [{name: air, values: [UAV, UGV]}]\n",
+                ),
+            )
+        )
 
 
 def test_integer_arrangements_accept_exclusive_bounds(write_file: WriteFile) -> None:
-    rules = load_rules(write_file("r.yaml", """\
+    rules = load_rules(
+        write_file(
+            "r.yaml",
+            """\
 characteristics:
   kinematic_type: {values: [UAV]}
   sensor_count:
@@ -169,7 +215,9 @@ characteristics:
     components:
       - {name: few, above: 1, max: 5}
       - {name: many, min: 6, below: 11, cluster_size: 2}
-"""))
+""",
+        )
+    )
     few, many = rules.characteristic("sensor_count").components
     assert few.values == (2, 3, 4, 5)
     assert (many.low, many.high, many.values) == (6, 10, (6, 7, 8, 9, 10))
@@ -188,24 +236,31 @@ def test_a_list_is_not_a_rule_set(write_file: WriteFile) -> None:
 
 def test_huge_integer_domains_are_refused(write_file: WriteFile) -> None:
     with pytest.raises(RulesError, match="at most 100000 are supported"):
-        load_rules(write_file("r.yaml", MINIMAL + "  count:\n"
-                                            "    range: {min: 1, max: 10000000000}\n"))
+        load_rules(
+            write_file("r.yaml", MINIMAL + "  count:\n    range: {min: 1, max: 10000000000}\n")
+        )
 
 
 def test_a_value_listed_twice_in_a_constraint_is_an_error(write_file: WriteFile) -> None:
-    path = write_file("r.yaml", MINIMAL + "constraints:\n"
-                      "  - forbid: {kinematic_type: UAV, sensor_type: [Microphone, Microphone]}\n")
+    path = write_file(
+        "r.yaml",
+        MINIMAL + "constraints:\n"
+        "  - forbid: {kinematic_type: UAV, sensor_type: [Microphone, Microphone]}\n",
+    )
     with pytest.raises(RulesError) as caught:
         load_rules(path)
     assert messages(caught.value) == [
-        f"{path}:10:61: constraints[0].forbid.sensor_type[1]: 'Microphone' is listed twice"]
+        f"{path}:10:61: constraints[0].forbid.sensor_type[1]: 'Microphone' is listed twice"
+    ]
 
 
 def test_a_range_written_as_a_list_is_refused_because_a_list_is_a_set(
-        write_file: WriteFile) -> None:
+    write_file: WriteFile,
+) -> None:
     with pytest.raises(RulesError) as caught:
         load_rules(write_file("r.yaml", MINIMAL + "  sensor_count:\n    range: [1, 50]\n"))
     assert [str(fault).split(": ", 1)[1] for fault in caught.value.faults] == [
         "characteristics.sensor_count.range: range of 'sensor_count' is a list ([1, 50]), but "
         "a list means a set of values (a team's `sensor_count: [2, 6]` is 2 and 6); write the "
-        "range as {min: 1, max: 50}"]
+        "range as {min: 1, max: 50}"
+    ]

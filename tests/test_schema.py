@@ -31,25 +31,35 @@ def test_shipped_teams_follow_the_team_schema(path: Path) -> None:
     jsonschema.validate(yaml.safe_load(path.read_text("utf-8")), schema("team"))
 
 
-@pytest.mark.parametrize("document", [
-    {"team": {"UAV": {"sensor_count": 5}}, "colour": "red"},
-    {"team": {}},
-    {"team": {"UAV": {"sensor_type": []}}},
-    {"name": "no team"},
-])
+@pytest.mark.parametrize(
+    "document",
+    [
+        {"team": {"UAV": {"sensor_count": 5}}, "colour": "red"},
+        {"team": {}},
+        {"team": {"UAV": {"sensor_type": []}}},
+        {"name": "no team"},
+    ],
+)
 def test_the_team_schema_rejects_what_the_loader_rejects(document: dict[str, Any]) -> None:
     with pytest.raises(jsonschema.ValidationError):
         jsonschema.validate(document, schema("team"))
 
 
-@pytest.mark.parametrize("document", [
-    {"characteristics": {"kinematic_type": {"values": ["UAV"], "range": {"min": 1, "max": 2}}}},
-    {"characteristics": {}},
-    {"characteristics": {"k": {"values": ["UAV"]}}, "constraints": [
-        {"require": {"k": "UAV"}, "forbid": {"k": "UAV"}}]},
-    {"characteristics": {"k": {"values": ["UAV"]}}, "constraints": [
-        {"when": {"k": "UAV"}, "forbid": {"k": "UAV"}}]},
-])
+@pytest.mark.parametrize(
+    "document",
+    [
+        {"characteristics": {"kinematic_type": {"values": ["UAV"], "range": {"min": 1, "max": 2}}}},
+        {"characteristics": {}},
+        {
+            "characteristics": {"k": {"values": ["UAV"]}},
+            "constraints": [{"require": {"k": "UAV"}, "forbid": {"k": "UAV"}}],
+        },
+        {
+            "characteristics": {"k": {"values": ["UAV"]}},
+            "constraints": [{"when": {"k": "UAV"}, "forbid": {"k": "UAV"}}],
+        },
+    ],
+)
 def test_the_rules_schema_rejects_what_the_loader_rejects(document: dict[str, Any]) -> None:
     with pytest.raises(jsonschema.ValidationError):
         jsonschema.validate(document, schema("rules"))

@@ -36,11 +36,12 @@ def check_every_maximum(team: Team) -> None:
 
 def test_case_3_grows_linearly_in_robots_and_by_arrangements_in_configurations() -> None:
     growth = formulas(load_team(TEAMS / "case3.yaml"))
-    (name, _, definition), = growth.functions
+    ((name, _, definition),) = growth.functions
     n = sympy.Symbol("n", integer=True)
     assert name == "A_sensor_count"
-    assert definition == sympy.Piecewise((1, n <= 5), (2, n <= 10), (3, n <= 15), (4, n <= 25),
-                                         (5, n <= 50))
+    assert definition == sympy.Piecewise(
+        (1, n <= 5), (2, n <= 10), (3, n <= 15), (4, n <= 25), (5, n <= 50)
+    )
     uav = growth.types[0]
     assert sympy.sstr(uav.robots) == "6*n_UAV"
     assert sympy.sstr(uav.configurations) == "6*A_sensor_count(n_UAV)"
@@ -54,9 +55,10 @@ def test_formulas_equal_the_exact_count_at_every_maximum(case: str) -> None:
     check_every_maximum(load_team(TEAMS / f"{case}.yaml"))
 
 
-def test_a_constraint_on_the_count_makes_the_formulas_piecewise(write_file: WriteFile
-                                                                ) -> None:
-    write_file("rules.yaml", """\
+def test_a_constraint_on_the_count_makes_the_formulas_piecewise(write_file: WriteFile) -> None:
+    write_file(
+        "rules.yaml",
+        """\
 characteristics:
   kinematic_type: {values: [UAV]}
   sensor_type: {values: [camera, lidar]}
@@ -68,7 +70,8 @@ characteristics:
 constraints:
   - name: lidars come alone or in pairs
     forbid: {sensor_type: lidar, sensor_count: {min: 3}}
-""")
+""",
+    )
     team = load_team(write_file("team.yaml", "rules: rules.yaml\nteam:\n  UAV: {}\n"))
     (uav,) = formulas(team).types
     assert isinstance(uav.robots, sympy.Piecewise)
@@ -96,8 +99,9 @@ def test_the_rendered_formulas_say_they_equal_the_exact_count() -> None:
 
     team = load_team(TEAMS / "case3.yaml")
     text = render_growth(formulas(team), solve(team, count_only=True))
-    assert text.splitlines()[-1].endswith("872 valid robots, 102 UI configurations "
-                                          "(equal to the exact count)")
+    assert text.splitlines()[-1].endswith(
+        "872 valid robots, 102 UI configurations (equal to the exact count)"
+    )
 
 
 def test_count_symbolic_json_from_the_command_line() -> None:
@@ -105,28 +109,44 @@ def test_count_symbolic_json_from_the_command_line() -> None:
 
     data = json.loads(run_cli("count", "case2", "--symbolic", "-f", "json").stdout)
     assert data["by_type"][1]["valid_robots"] == "8*n_UGV"
-    assert data["totals"]["ui_configurations"] == \
-        "6*A_sensor_count(n_UAV) + 6*A_sensor_count(n_UGV)"
-    assert data["at_team_maxima"] == {"maxima": {"n_UAV": 5, "n_UGV": 10},
-                                      "valid_robots": 110, "ui_configurations": 18,
-                                      "equal_to_exact_count": True}
+    assert (
+        data["totals"]["ui_configurations"] == "6*A_sensor_count(n_UAV) + 6*A_sensor_count(n_UGV)"
+    )
+    assert data["at_team_maxima"] == {
+        "maxima": {"n_UAV": 5, "n_UGV": 10},
+        "valid_robots": 110,
+        "ui_configurations": 18,
+        "equal_to_exact_count": True,
+    }
 
 
 def test_types_whose_names_read_alike_get_distinct_symbols(write_file: WriteFile) -> None:
-    write_file("rules.yaml", "characteristics:\n"
-               "  kinematic_type: {values: [Mobile Manipulator, Mobile-Manipulator]}\n"
-               "  sensor_count: {range: {min: 1, max: 9}}\n")
-    team = load_team(write_file("team.yaml", "rules: rules.yaml\nteam:\n"
-                                "  Mobile Manipulator: {sensor_count: 3}\n"
-                                "  Mobile-Manipulator: {sensor_count: 7}\n"))
+    write_file(
+        "rules.yaml",
+        "characteristics:\n"
+        "  kinematic_type: {values: [Mobile Manipulator, Mobile-Manipulator]}\n"
+        "  sensor_count: {range: {min: 1, max: 9}}\n",
+    )
+    team = load_team(
+        write_file(
+            "team.yaml",
+            "rules: rules.yaml\nteam:\n"
+            "  Mobile Manipulator: {sensor_count: 3}\n"
+            "  Mobile-Manipulator: {sensor_count: 7}\n",
+        )
+    )
     growth = formulas(team)
-    assert [str(t.symbol) for t in growth.types] == ["n_Mobile_Manipulator",
-                                                     "n_Mobile_Manipulator_"]
+    assert [str(t.symbol) for t in growth.types] == [
+        "n_Mobile_Manipulator",
+        "n_Mobile_Manipulator_",
+    ]
     check_every_maximum(team)
 
 
 def test_counts_from_zero_or_below_keep_every_piece(write_file: WriteFile) -> None:
-    write_file("rules.yaml", """\
+    write_file(
+        "rules.yaml",
+        """\
 characteristics:
   kinematic_type: {values: [UAV]}
   sensor_count:
@@ -134,14 +154,19 @@ characteristics:
     components:
       - {name: none or less, max: 0}
       - {name: some, min: 1, max: 10}
-""")
-    team = load_team(write_file("team.yaml", "rules: rules.yaml\nteam:\n"
-                                "  UAV: {sensor_count: {min: -3, max: 4}}\n"))
+""",
+    )
+    team = load_team(
+        write_file(
+            "team.yaml", "rules: rules.yaml\nteam:\n  UAV: {sensor_count: {min: -3, max: 4}}\n"
+        )
+    )
     check_every_maximum(team)
 
 
-def test_a_constraint_too_large_for_the_structure_is_refused_with_status_2(write_file: WriteFile
-                                                                          ) -> None:
+def test_a_constraint_too_large_for_the_structure_is_refused_with_status_2(
+    write_file: WriteFile,
+) -> None:
     # a, b and c have 101 classes each (a component per value): linked by one 3-way rule they
     # make over 10^6 class combinations, more than the structure counts; n is what grows.
     lines = ["characteristics:", "  kinematic_type: {values: [T]}"]

@@ -24,8 +24,12 @@ def test_a_team_selects_values_per_kinematic_type() -> None:
     team = load_team(TEAMS / "case1.yaml")
     (uav,) = team.selections
     assert uav.kinematic_type == "UAV"
-    assert uav.domains == (("UAV",), ("Flight", "Waypoint"),
-                           ("2D Camera", "360 Camera", "RGB-D Camera"), (1, 2, 3, 4, 5))
+    assert uav.domains == (
+        ("UAV",),
+        ("Flight", "Waypoint"),
+        ("2D Camera", "360 Camera", "RGB-D Camera"),
+        (1, 2, 3, 4, 5),
+    )
     assert team.published is not None
     assert (team.published.valid_robots, team.published.ui_configurations) == (30, 6)
 
@@ -52,9 +56,12 @@ def test_the_shipped_paper_rules_are_used_when_a_team_names_none(write_file: Wri
 
 
 def test_a_relative_rules_path_resolves_against_the_team_files_folder(
-        write_file: WriteFile, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    write_file("rules/mine.yaml", (RULES / "paper.yaml").read_text().replace(
-        "name: Mortimer et al. 2017", "name: mine"))
+    write_file: WriteFile, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    write_file(
+        "rules/mine.yaml",
+        (RULES / "paper.yaml").read_text().replace("name: Mortimer et al. 2017", "name: mine"),
+    )
     team_path = write_file("rules/teams/t.yaml", "rules: ../mine.yaml\nteam:\n  UAV: {}\n")
     elsewhere = tmp_path / "elsewhere"
     elsewhere.mkdir()
@@ -68,17 +75,23 @@ def test_rules_given_by_the_caller_override_the_team_file(write_file: WriteFile)
 
 
 def test_a_misspelled_sensor_type_is_located_with_a_suggestion(write_file: WriteFile) -> None:
-    path = write_file("t.yaml", """\
+    path = write_file(
+        "t.yaml",
+        """\
 team:
   UAV:
     sensor_type: [2D Camera, Mic]
-""")
-    assert faults(path) == ["3:30: team.UAV.sensor_type[1]: unknown sensor type 'Mic' "
-                            "(did you mean 'Microphone'?)"]
+""",
+    )
+    assert faults(path) == [
+        "3:30: team.UAV.sensor_type[1]: unknown sensor type 'Mic' (did you mean 'Microphone'?)"
+    ]
 
 
 def test_every_problem_in_a_team_file_is_reported_in_file_order(write_file: WriteFile) -> None:
-    path = write_file("t.yaml", """\
+    path = write_file(
+        "t.yaml",
+        """\
 name: Broken
 colour: blue
 team:
@@ -96,7 +109,8 @@ team:
     sensor_count: five
   Manipulator:
 published: {valid_robots: many}
-""")
+""",
+    )
     assert faults(path) == [
         "2:1: colour: unknown team file field 'colour'; allowed: description, name, published, "
         "rules, team",
@@ -123,25 +137,30 @@ published: {valid_robots: many}
 
 def test_a_team_may_not_select_its_own_key(write_file: WriteFile) -> None:
     path = write_file("t.yaml", "team:\n  UAV: {kinematic_type: UGV}\n")
-    assert faults(path) == ["2:9: team.UAV.kinematic_type: 'kinematic_type' is given by the "
-                            "entry itself ('UAV'); remove it"]
+    assert faults(path) == [
+        "2:9: team.UAV.kinematic_type: 'kinematic_type' is given by the "
+        "entry itself ('UAV'); remove it"
+    ]
 
 
 def test_a_team_with_no_kinematic_types_is_refused(write_file: WriteFile) -> None:
     assert faults(write_file("t.yaml", "team: {}\n")) == [
-        "1:7: team: the team selects no kinematic type"]
+        "1:7: team: the team selects no kinematic type"
+    ]
 
 
 def test_a_team_file_without_a_team_is_refused(write_file: WriteFile) -> None:
     assert faults(write_file("t.yaml", "name: lonely\n")) == [
-        "1:1: team: missing team (a mapping of kinematic type -> selections)"]
+        "1:1: team: missing team (a mapping of kinematic type -> selections)"
+    ]
 
 
 def test_a_missing_rules_file_is_named_at_the_rules_field(write_file: WriteFile) -> None:
     path = write_file("teams/t.yaml", "rules: ../nothere.yaml\nteam:\n  UAV: {}\n")
     shown = os.path.normpath(path.parent / "../nothere.yaml")
-    assert faults(path) == [f"1:8: rules: cannot use rules file '../nothere.yaml' (resolved to "
-                            f"{shown}): no such file"]
+    assert faults(path) == [
+        f"1:8: rules: cannot use rules file '../nothere.yaml' (resolved to {shown}): no such file"
+    ]
 
 
 def test_a_broken_rules_file_reports_its_own_faults(write_file: WriteFile) -> None:
@@ -157,22 +176,25 @@ def test_a_rules_file_that_is_not_yaml_reports_its_syntax_error(write_file: Writ
 
 
 def test_a_value_listed_twice_is_an_error_not_a_silent_drop(write_file: WriteFile) -> None:
-    path = write_file("t.yaml", "team:\n  UAV: {motion_control: [Flight, Flight]}\n"
-                                "  UGV: {sensor_count: 3}\n")
+    path = write_file(
+        "t.yaml", "team:\n  UAV: {motion_control: [Flight, Flight]}\n  UGV: {sensor_count: 3}\n"
+    )
     assert faults(path) == ["2:34: team.UAV.motion_control[1]: 'Flight' is listed twice"]
 
 
 def test_a_range_beyond_the_rules_is_an_error_not_a_silent_clip(write_file: WriteFile) -> None:
     path = write_file("t.yaml", "team:\n  UAV: {sensor_count: {min: 0, max: 99}}\n")
     assert faults(path) == [
-        "2:29: team.UAV.sensor_count.min: sensor_count min 0 is outside the rule set's range "
-        "1..50",
+        "2:29: team.UAV.sensor_count.min: sensor_count min 0 is outside the rule set's range 1..50",
         "2:37: team.UAV.sensor_count.max: sensor_count max 99 is outside the rule set's range "
-        "1..50"]
+        "1..50",
+    ]
 
 
 def test_negative_published_figures_are_errors(write_file: WriteFile) -> None:
-    path = write_file("t.yaml", "team:\n  UAV: {}\npublished: {valid_robots: -1, "
-                                "ui_configurations: 3}\n")
-    assert faults(path) == ["3:27: published.valid_robots: published valid_robots must not be "
-                            "negative, got -1"]
+    path = write_file(
+        "t.yaml", "team:\n  UAV: {}\npublished: {valid_robots: -1, ui_configurations: 3}\n"
+    )
+    assert faults(path) == [
+        "3:27: published.valid_robots: published valid_robots must not be negative, got -1"
+    ]

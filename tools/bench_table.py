@@ -26,87 +26,161 @@ ROWS = [
     ("test_solve_article_case[case2]", "Case 2 (110 robots), auto engine", ""),
     ("test_solve_article_case[case3]", "Case 3 (872 robots), auto engine", "< 1 ms"),
     ("test_solve_case3_in_process[structure]", "Case 3, structure engine", "< 1 ms"),
-    ("test_solve_case3_in_process[fast]", "Case 3, fast (numpy) enumeration + partition",
-     "< 1 ms"),
-    ("test_solve_case3_in_process[csp]", "Case 3, python-constraint enumeration + partition",
-     ""),
-    ("test_solve_case3_whole_process", "`teleop-ui solve rules/teams/case3.yaml`, whole process",
-     "< 0.3 s"),
+    ("test_solve_case3_in_process[fast]", "Case 3, fast (numpy) enumeration + partition", "< 1 ms"),
+    ("test_solve_case3_in_process[csp]", "Case 3, python-constraint enumeration + partition", ""),
+    (
+        "test_solve_case3_whole_process",
+        "`teleop-ui solve rules/teams/case3.yaml`, whole process",
+        "< 0.3 s",
+    ),
     ("test_start_bare_interpreter", "a bare interpreter, whole process (peer)", ""),
-    ("test_start_solve_case3", "`python -m solver solve rules/teams/case3.yaml`, whole process",
-     ""),
+    (
+        "test_start_solve_case3",
+        "`python -m solver solve rules/teams/case3.yaml`, whole process",
+        "",
+    ),
     ("test_read_team_of_100_types[1e3 counts]", "read a team: 100 types, 1..1,000 counts", ""),
-    ("test_read_team_of_100_types[1e5 counts]", "read a team: 100 types, 1..100,000 counts",
-     ""),
-    ("test_parse_team_file_with_libyaml", "the same team file parsed by yaml.CSafeLoader (peer)",
-     ""),
+    ("test_read_team_of_100_types[1e5 counts]", "read a team: 100 types, 1..100,000 counts", ""),
+    (
+        "test_parse_team_file_with_libyaml",
+        "the same team file parsed by yaml.CSafeLoader (peer)",
+        "",
+    ),
     ("test_count_scaled_team[1e5]", "count 10^5 robots (1 type)", ""),
     ("test_count_scaled_team[1e7]", "count 10^7 robots (10 types, 1 constraint)", ""),
     ("test_count_scaled_team[1e9]", "count 10^9 robots (10 types, 1 constraint)", ""),
-    ("test_count_scaled_team[1e12]", "count 10^12 robots (100 types, 1 constraint)",
-     "< 10 ms"),
+    ("test_count_scaled_team[1e12]", "count 10^12 robots (100 types, 1 constraint)", "< 10 ms"),
     ("test_count_10_to_the_30_exactly", "count 10^30 robots (30 characteristics)", ""),
     ("test_enumerate_1e6_fast", "enumerate + partition 999,000 robots, fast engine", ""),
-    ("test_enumerate_1e6_csp", "enumerate + partition 999,000 robots, csp engine (1 round)",
-     ""),
-    ("test_iterate_1e6_python_constraint",
-     "python-constraint2 solution iterator alone, 999,000 robots (1 round)", ""),
-    ("test_enumeration_memory_does_not_grow_with_robots",
-     "enumerate + partition 9,990,000 robots, fast engine (1 round)", ""),
-    ("test_check_large_rule_set", "`check`: 50 types, 100 sensor types, 200 constraints",
-     "seconds"),
-    ("test_check_doubled_rule_sets[x1]", "`check`: the same, scale x1 (for the growth ratios)",
-     ""),
-    ("test_check_doubled_rule_sets[x2]", "`check`: 100 types, 200 sensor types, 400 constraints",
-     ""),
-    ("test_check_doubled_rule_sets[x4]", "`check`: 200 types, 400 sensor types, 800 constraints",
-     ""),
+    ("test_enumerate_1e6_csp", "enumerate + partition 999,000 robots, csp engine (1 round)", ""),
+    (
+        "test_iterate_1e6_python_constraint",
+        "python-constraint2 solution iterator alone, 999,000 robots (1 round)",
+        "",
+    ),
+    (
+        "test_enumeration_memory_does_not_grow_with_robots",
+        "enumerate + partition 9,990,000 robots, fast engine (1 round)",
+        "",
+    ),
+    (
+        "test_check_large_rule_set",
+        "`check`: 50 types, 100 sensor types, 200 constraints",
+        "seconds",
+    ),
+    ("test_check_doubled_rule_sets[x1]", "`check`: the same, scale x1 (for the growth ratios)", ""),
+    (
+        "test_check_doubled_rule_sets[x2]",
+        "`check`: 100 types, 200 sensor types, 400 constraints",
+        "",
+    ),
+    (
+        "test_check_doubled_rule_sets[x4]",
+        "`check`: 200 types, 400 sensor types, 800 constraints",
+        "",
+    ),
     ("test_radar_chart_of_case3_as_png", "radar chart of Case 3 as PNG", ""),
     ("test_batch_solves_40_teams_in_one_process", "`batch` of 40 teams, one process", ""),
-    ("test_batch_rerun_of_40_unchanged_teams_solves_nothing",
-     "`batch` rerun of 40 unchanged teams", ""),
-    ("test_check_non_transitive_of_1000_sliding_arrangements",
-     "`check`: 1000 overlapping arrangements (non-transitive witnesses)", ""),
-    ("test_radar_chart_of_a_count_spoke_of_100000_values_as_png",
-     "radar chart with a 100,000-value count spoke as PNG", ""),
-    ("test_placing_the_topic_graph[20 robots x 100 topics]",
-     "`watch` poll: topics of 20 robots x 100 placed on their robots", ""),
-    ("test_placing_the_topic_graph[200 robots x 100 topics]",
-     "`watch` poll: topics of 200 robots x 100 placed on their robots", ""),
+    (
+        "test_batch_rerun_of_40_unchanged_teams_solves_nothing",
+        "`batch` rerun of 40 unchanged teams",
+        "",
+    ),
+    (
+        "test_check_non_transitive_of_1000_sliding_arrangements",
+        "`check`: 1000 overlapping arrangements (non-transitive witnesses)",
+        "",
+    ),
+    (
+        "test_radar_chart_of_a_count_spoke_of_100000_values_as_png",
+        "radar chart with a 100,000-value count spoke as PNG",
+        "",
+    ),
+    (
+        "test_placing_the_topic_graph[20 robots x 100 topics]",
+        "`watch` poll: topics of 20 robots x 100 placed on their robots",
+        "",
+    ),
+    (
+        "test_placing_the_topic_graph[200 robots x 100 topics]",
+        "`watch` poll: topics of 200 robots x 100 placed on their robots",
+        "",
+    ),
 ]
 
 # `watch` latency: change on a real roscore -> event (recorded by bench_watch.py in extra_info).
 WATCH = [
-    ("test_switching_the_active_robot", "active robot switched (10 robots)",
-     "<= 0.2 s interval + 50 ms"),
+    (
+        "test_switching_the_active_robot",
+        "active robot switched (10 robots)",
+        "<= 0.2 s interval + 50 ms",
+    ),
     ("test_registering_a_robots_topics", "a robot's topics registered", ""),
     ("test_setting_a_new_robots_description", "a new robot's description set", ""),
     ("test_setting_a_large_description[parsed]", "a 1.5 MB description set, parsed", ""),
-    ("test_setting_a_large_description[cached]",
-     "a 1.5 MB description set, identification cached", ""),
+    (
+        "test_setting_a_large_description[cached]",
+        "a 1.5 MB description set, identification cached",
+        "",
+    ),
 ]
 
 # (label, slower benchmark, faster benchmark, target)
 RATIOS = [
-    ("Case 3: csp engine / structure engine", "test_solve_case3_in_process[csp]",
-     "test_solve_case3_in_process[structure]", ""),
-    ("Case 3: csp engine / fast engine", "test_solve_case3_in_process[csp]",
-     "test_solve_case3_in_process[fast]", ""),
-    ("10^6 robots: python-constraint2 iterator alone / fast enumeration + partition",
-     "test_iterate_1e6_python_constraint", "test_enumerate_1e6_fast", ">= 50"),
-    ("10^6 robots: csp enumeration + partition / fast enumeration + partition",
-     "test_enumerate_1e6_csp", "test_enumerate_1e6_fast", ""),
-    ("start-up: `solve case3` whole process / bare interpreter", "test_start_solve_case3",
-     "test_start_bare_interpreter", "<= 4"),
-    ("read a team: 100,000 counts / 1,000 counts (proportional to the file: 1)",
-     "test_read_team_of_100_types[1e5 counts]", "test_read_team_of_100_types[1e3 counts]", ""),
-    ("`check` growth, first doubling (x2 / x1; linear: 2)", "test_check_doubled_rule_sets[x2]",
-     "test_check_doubled_rule_sets[x1]", "<= 2.5"),
-    ("`check` growth, second doubling (x4 / x2; linear: 2)", "test_check_doubled_rule_sets[x4]",
-     "test_check_doubled_rule_sets[x2]", "<= 2.5"),
-    ("`watch` topic placement: 200 robots / 20 robots (linear: about 10)",
-     "test_placing_the_topic_graph[200 robots x 100 topics]",
-     "test_placing_the_topic_graph[20 robots x 100 topics]", ""),
+    (
+        "Case 3: csp engine / structure engine",
+        "test_solve_case3_in_process[csp]",
+        "test_solve_case3_in_process[structure]",
+        "",
+    ),
+    (
+        "Case 3: csp engine / fast engine",
+        "test_solve_case3_in_process[csp]",
+        "test_solve_case3_in_process[fast]",
+        "",
+    ),
+    (
+        "10^6 robots: python-constraint2 iterator alone / fast enumeration + partition",
+        "test_iterate_1e6_python_constraint",
+        "test_enumerate_1e6_fast",
+        ">= 50",
+    ),
+    (
+        "10^6 robots: csp enumeration + partition / fast enumeration + partition",
+        "test_enumerate_1e6_csp",
+        "test_enumerate_1e6_fast",
+        "",
+    ),
+    (
+        "start-up: `solve case3` whole process / bare interpreter",
+        "test_start_solve_case3",
+        "test_start_bare_interpreter",
+        "<= 4",
+    ),
+    (
+        "read a team: 100,000 counts / 1,000 counts (proportional to the file: 1)",
+        "test_read_team_of_100_types[1e5 counts]",
+        "test_read_team_of_100_types[1e3 counts]",
+        "",
+    ),
+    (
+        "`check` growth, first doubling (x2 / x1; linear: 2)",
+        "test_check_doubled_rule_sets[x2]",
+        "test_check_doubled_rule_sets[x1]",
+        "<= 2.5",
+    ),
+    (
+        "`check` growth, second doubling (x4 / x2; linear: 2)",
+        "test_check_doubled_rule_sets[x4]",
+        "test_check_doubled_rule_sets[x2]",
+        "<= 2.5",
+    ),
+    (
+        "`watch` topic placement: 200 robots / 20 robots (linear: about 10)",
+        "test_placing_the_topic_graph[200 robots x 100 topics]",
+        "test_placing_the_topic_graph[20 robots x 100 topics]",
+        "",
+    ),
 ]
 
 
@@ -123,22 +197,35 @@ def table(run: dict[str, Any]) -> str:
     rounds = {b["name"]: b["stats"]["rounds"] for b in run["benchmarks"]}
     machine = run.get("machine_info", {})
     cpu = machine.get("cpu", {})
-    lines = [f"One run, {run.get('datetime', '')[:10]}, on {cpu.get('brand_raw', 'this machine')} "
-             f"({cpu.get('count', '?')} cores), Python {machine.get('python_version', '?')}. "
-             "Medians; `rounds` is how many timed runs.",
-             "",
-             "| benchmark | median | rounds | target |", "|---|---:|---:|---|"]
+    lines = [
+        f"One run, {run.get('datetime', '')[:10]}, on {cpu.get('brand_raw', 'this machine')} "
+        f"({cpu.get('count', '?')} cores), Python {machine.get('python_version', '?')}. "
+        "Medians; `rounds` is how many timed runs.",
+        "",
+        "| benchmark | median | rounds | target |",
+        "|---|---:|---:|---|",
+    ]
     for name, label, target in ROWS:
         if name in medians:
             lines.append(f"| {label} | {seconds(medians[name])} | {rounds[name]} | {target} |")
     extra = {b["name"]: b.get("extra_info", {}) for b in run["benchmarks"]}
-    watched = [(label, extra[name], target) for name, label, target in WATCH
-               if "median_ms" in extra.get(name, {})]
+    watched = [
+        (label, extra[name], target)
+        for name, label, target in WATCH
+        if "median_ms" in extra.get(name, {})
+    ]
     if watched:
-        lines += ["", "| `watch`: change on the master -> event | changes | median | 95th "
-                      "percentile | target |", "|---|---:|---:|---:|---|"]
-        lines += [f"| {label} | {info['changes']} | {info['median_ms']} ms | {info['p95_ms']} ms "
-                  f"| {target} |" for label, info, target in watched]
+        lines += [
+            "",
+            "| `watch`: change on the master -> event | changes | median | 95th "
+            "percentile | target |",
+            "|---|---:|---:|---:|---|",
+        ]
+        lines += [
+            f"| {label} | {info['changes']} | {info['median_ms']} ms | {info['p95_ms']} ms "
+            f"| {target} |"
+            for label, info, target in watched
+        ]
     lines += ["", "| ratio (same run) | value | target |", "|---|---:|---|"]
     for label, slow, fast, target in RATIOS:
         if slow in medians and fast in medians:

@@ -31,8 +31,11 @@ from solver.rules import default_rules_path, load_rules
 ROOT = Path(__file__).resolve().parent.parent
 DEFAULT_CORPUS = ROOT.parent / "shared" / "corpus"
 # Truth labels spelled differently from the profile's structure names.
-ALIASES = {"biped/lower-body": "Biped", "legged mobile manipulator": "Legged Mobile Manipulator",
-           "aerial manipulator": "Aerial Manipulator"}
+ALIASES = {
+    "biped/lower-body": "Biped",
+    "legged mobile manipulator": "Legged Mobile Manipulator",
+    "aerial manipulator": "Aerial Manipulator",
+}
 # Readings a truth label also accepts: the corpus labels standalone grippers Hand (its README:
 # "the README has no gripper label, Hand is the nearest extra label").
 ACCEPTS = {"Hand": {"Gripper"}}
@@ -101,8 +104,9 @@ class Score:
         self.strict += right
         self.lenient += result.structure in alternatives
         if not right:
-            self.misses.append(f"{row['robot']}: structure {result.structure}, labelled "
-                               f"{row['kinematic_type']}")
+            self.misses.append(
+                f"{row['robot']}: structure {result.structure}, labelled {row['kinematic_type']}"
+            )
 
     def sensors(self, row: dict[str, str], result: Identification) -> None:
         found: Counter[str] = Counter()
@@ -114,8 +118,10 @@ class Score:
         self.kind_predicted += sum(found.values())
         self.kind_truth += sum(expected.values())
         if +found != +expected:
-            self.misses.append(f"{row['robot']}: sensors {dict(sorted(found.items()))}, "
-                               f"labelled {dict(sorted(expected.items()))}")
+            self.misses.append(
+                f"{row['robot']}: sensors {dict(sorted(found.items()))}, "
+                f"labelled {dict(sorted(expected.items()))}"
+            )
 
     def controls(self, row: dict[str, str], result: Identification) -> None:
         labelled = {c.strip() for c in row["motion_control_kinds"].split(";") if c.strip()}
@@ -130,17 +136,22 @@ class Score:
         if got != labelled:
             missing = ", ".join(sorted(labelled - got)) or "-"
             extra = ", ".join(sorted(got - labelled)) or "-"
-            self.misses.append(f"{row['robot']}: motion controls missing {missing}; "
-                               f"extra {extra}")
+            self.misses.append(f"{row['robot']}: motion controls missing {missing}; extra {extra}")
 
     def summary(self) -> list[str]:
         """One table row: robots, certain-label accuracy, lenient, exit 2, sensor P/R."""
+
         def share(part: int, whole: int) -> str:
             return f"{part}/{whole} ({100 * part / whole:.0f}%)" if whole else "-"
-        return [share(self.certain_right, self.certain), share(self.lenient, self.robots),
-                str(self.refused), str(self.warned),
-                share(self.kind_hits, self.kind_predicted), share(self.kind_hits,
-                                                                   self.kind_truth)]
+
+        return [
+            share(self.certain_right, self.certain),
+            share(self.lenient, self.robots),
+            str(self.refused),
+            str(self.warned),
+            share(self.kind_hits, self.kind_predicted),
+            share(self.kind_hits, self.kind_truth),
+        ]
 
     def per_label_table(self) -> list[str]:
         labels = sorted({label for label, _ in self.per_label})
@@ -151,8 +162,7 @@ class Score:
         return lines
 
     def report(self) -> str:
-        lines = ["Structure confusion (rows: label in truth.csv, columns: `structure` read):",
-                 ""]
+        lines = ["Structure confusion (rows: label in truth.csv, columns: `structure` read):", ""]
         labels = sorted({t for t, _ in self.confusion})
         readings = sorted({r for _, r in self.confusion})
         lines.append("| label | " + " | ".join(readings) + " |")
@@ -171,7 +181,10 @@ class Score:
             f"labelled): exact {self.control_exact}/{self.control_robots}; recall "
             f"{self.control_hits}/{self.control_truth}, precision "
             f"{self.control_hits}/{self.control_predicted}",
-            "", "Misses:", ""]
+            "",
+            "Misses:",
+            "",
+        ]
         lines += [f"- {miss}" for miss in self.misses or ["(none)"]]
         return "\n".join(lines) + "\n"
 
@@ -189,14 +202,15 @@ def main(argv: list[str] | None = None) -> int:
     with truth_file.open(encoding="utf-8") as stream:
         rows = list(csv.DictReader(stream))
     score = Score(profile.structure_names)
-    parts = {"original (rows 1-31)": Score(profile.structure_names),
-             f"newer (rows 32-{len(rows)})": Score(profile.structure_names)}
+    parts = {
+        "original (rows 1-31)": Score(profile.structure_names),
+        f"newer (rows 32-{len(rows)})": Score(profile.structure_names),
+    }
     for number, row in enumerate(rows, start=1):
         part = list(parts.values())[number > ORIGINAL_ROWS]
         srdf = args.corpus / row["srdf"] if row["srdf"] else None
         try:
-            result = identify(args.corpus / row["file"], srdf=srdf, rules=rules,
-                              profile=profile)
+            result = identify(args.corpus / row["file"], srdf=srdf, rules=rules, profile=profile)
         except SolverError as error:
             score.refuse(row, error)
             part.refuse(row, error)
@@ -204,8 +218,10 @@ def main(argv: list[str] | None = None) -> int:
         score.add(row, result)
         part.add(row, result)
     print(f"Corpus: {len(rows)} descriptions ({truth_file})\n")
-    print("| source | structure right (certain labels) | lenient (all labels) | exit 2 | "
-          "with warnings | sensor precision | sensor recall |")
+    print(
+        "| source | structure right (certain labels) | lenient (all labels) | exit 2 | "
+        "with warnings | sensor precision | sensor recall |"
+    )
     print("|---|---:|---:|---:|---:|---:|---:|")
     for name, part in [*parts.items(), ("all", score)]:
         print(f"| {name} | " + " | ".join(part.summary()) + " |")

@@ -39,5 +39,6 @@ python="$venv/bin/python"
 # `all`: every optional feature, so every test runs (see the extras in pyproject.toml).
 "$python" -m pip install -q -e '.[test,all]'
 "$python" -m ruff check solver tests benchmarks tools
+"$python" -m ruff format --check solver tests benchmarks tools
 "$python" -m mypy
 "$python" -m pytest tests benchmarks --benchmark-disable "$@"

@@ -51,14 +51,17 @@ class Analysis:
     def __init__(self, rules: RuleSet) -> None:
         self.rules = rules
         self.boxes: tuple[tuple[Box, ...], ...] = tuple(
-            regions(rules, rule) for rule in rules.constraints)
+            regions(rules, rule) for rule in rules.constraints
+        )
         # The kinematic types each constraint can exclude robots of (None: any); most
         # constraints are about a few types, so this cheap pre-filter spares most box tests.
         key = rules.key_position
         self._types: tuple[frozenset[Value] | None, ...] = tuple(
-            None if any(box[key] is None for box in boxes)
+            None
+            if any(box[key] is None for box in boxes)
             else frozenset().union(*(box[key] or () for box in boxes))
-            for boxes in self.boxes)
+            for boxes in self.boxes
+        )
         # The same, inverted: the constraints about each type, and those about any type, so
         # that a question about one type looks at its few constraints, not at all of them.
         self._untyped = frozenset(i for i, types in enumerate(self._types) if types is None)
@@ -70,7 +73,8 @@ class Analysis:
         positions = {name: i for i, name in enumerate(rules.names)}
         # For each constraint: per characteristic position, the value sets its conditions test.
         self._tested: tuple[dict[int, tuple[frozenset[Value], ...]], ...] = tuple(
-            _tested_sets(rule, positions) for rule in rules.constraints)
+            _tested_sets(rule, positions) for rule in rules.constraints
+        )
 
     # -- domains -------------------------------------------------------------------------------
 
@@ -82,14 +86,17 @@ class Analysis:
     def type_domains(self, kinematic_type: Value) -> Domains:
         """The rule set's domains with the team key fixed to ``kinematic_type``."""
         position = self.rules.key_position
-        return tuple((kinematic_type,) if i == position else domain
-                     for i, domain in enumerate(self.full))
+        return tuple(
+            (kinematic_type,) if i == position else domain for i, domain in enumerate(self.full)
+        )
 
     def narrowed(self, domains: Domains, position: int, values: Iterable[Value]) -> Domains:
         """``domains`` with characteristic ``position`` narrowed to ``values``."""
         allowed = frozenset(values)
-        return tuple(tuple(v for v in domain if v in allowed) if i == position else domain
-                     for i, domain in enumerate(domains))
+        return tuple(
+            tuple(v for v in domain if v in allowed) if i == position else domain
+            for i, domain in enumerate(domains)
+        )
 
     # -- the small questions -------------------------------------------------------------------
 
@@ -101,8 +108,7 @@ class Analysis:
             indices: Iterable[int] = range(len(self.boxes)) if among is None else among
         else:
             candidates = self._untyped.union(*(self._by_type.get(t, ()) for t in types))
-            indices = (sorted(candidates) if among is None
-                       else [i for i in among if i in candidates])
+            indices = sorted(candidates) if among is None else [i for i in among if i in candidates]
         return tuple(i for i in indices if touches(self.boxes[i], sets))
 
     def classes(self, domains: Domains, constraints: Sequence[int]) -> Classes:
@@ -114,8 +120,9 @@ class Analysis:
             # values in the domain (set intersection walks the smaller side) costs the size of
             # the rules, not domain x conditions; a set holding all or none splits nothing.
             signature: dict[Value, list[int]] = {}
-            distinct = dict.fromkeys(s for i in constraints
-                                     for s in self._tested[i].get(position, ()))
+            distinct = dict.fromkeys(
+                s for i in constraints for s in self._tested[i].get(position, ())
+            )
             for k, tested in enumerate(distinct):
                 hits = tested & members
                 if 0 < len(hits) < len(members):
@@ -130,8 +137,7 @@ class Analysis:
     def _solve(self, domains: Domains, constraints: Sequence[int]) -> Robot | None:
         """One valid robot over ``domains`` (tried last value first) or ``None``."""
         sets = [frozenset(domain) for domain in domains]
-        active = [self.rules.constraints[i] for i in constraints
-                  if touches(self.boxes[i], sets)]
+        active = [self.rules.constraints[i] for i in constraints if touches(self.boxes[i], sets)]
         problem = build_problem(self.rules, domains, active)
         if problem is None:
             return None
@@ -143,8 +149,9 @@ class Analysis:
     def witness(self, domains: Domains, among: Iterable[int] | None = None) -> Robot | None:
         """A valid robot over ``domains`` under the constraints ``among`` (default: all)."""
         relevant = self.relevant(domains, among)
-        representatives = tuple(tuple(group[0] for group in groups)
-                                for groups in self.classes(domains, relevant))
+        representatives = tuple(
+            tuple(group[0] for group in groups) for groups in self.classes(domains, relevant)
+        )
         return self._solve(representatives, relevant)
 
     def satisfiable(self, domains: Domains, among: Iterable[int] | None = None) -> bool:
@@ -161,8 +168,7 @@ class Analysis:
         count = len(classes)
         if any(not groups for groups in classes):
             return tuple(frozenset() for _ in classes)
-        class_of = [{v: k for k, group in enumerate(groups) for v in group}
-                    for groups in classes]
+        class_of = [{v: k for k, group in enumerate(groups) for v in group} for groups in classes]
         unknown = [set(range(len(groups))) for groups in classes]
         live: list[set[int]] = [set() for _ in classes]
         dead: list[set[int]] = [set() for _ in classes]
@@ -192,8 +198,9 @@ class Analysis:
                 return tuple(frozenset() for _ in classes)
         return tuple(frozenset(v for k in live[p] for v in classes[p][k]) for p in range(count))
 
-    def minimal_conflict(self, domains: Domains,
-                         among: Iterable[int] | None = None) -> tuple[int, ...]:
+    def minimal_conflict(
+        self, domains: Domains, among: Iterable[int] | None = None
+    ) -> tuple[int, ...]:
         """A minimal subset of the constraints ``among`` that leaves no robot over ``domains``.
 
         Deletion-based: drop each constraint in declared order, re-solve, and keep it dropped
@@ -281,10 +288,10 @@ class Analysis:
         return {kt: self.minimal_conflict(self.type_domains(kt)) for kt in self.void_types}
 
 
-def _tested_sets(rule: RuleConstraint,
-                 positions: dict[str, int]) -> dict[int, tuple[frozenset[Value], ...]]:
+def _tested_sets(
+    rule: RuleConstraint, positions: dict[str, int]
+) -> dict[int, tuple[frozenset[Value], ...]]:
     tested: dict[int, list[frozenset[Value]]] = {}
     for condition in (*rule.when, *rule.conditions):
         tested.setdefault(positions[condition.characteristic], []).append(condition.allowed)
     return {position: tuple(sets) for position, sets in tested.items()}
-

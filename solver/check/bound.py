@@ -37,29 +37,37 @@ def _bound(context: RulesContext) -> Iterator[Finding]:
         declared = ", as declared"
     else:
         declared = f", not the declared {rules.declared_bound}"
-    yield BOUND.finding(context.locate(_location(context), key=True),
-                        f"{bound_text(context)} UI configurations at most (components of "
-                        f"{names}){declared}")
+    yield BOUND.finding(
+        context.locate(_location(context), key=True),
+        f"{bound_text(context)} UI configurations at most (components of {names}){declared}",
+    )
 
 
 def _mismatch(context: RulesContext) -> Iterator[Finding]:
     rules = context.rules
     if rules.declared_bound is not None and rules.declared_bound != rules.bound:
-        yield MISMATCH.finding(context.locate(("bound",)),
-                               f"bound: {rules.declared_bound} is not what the components give: "
-                               f"{bound_text(context)}")
+        yield MISMATCH.finding(
+            context.locate(("bound",)),
+            f"bound: {rules.declared_bound} is not what the components give: {bound_text(context)}",
+        )
 
 
 BOUND = Check(
-    "bound", "info", "rules",
+    "bound",
+    "info",
+    "rules",
     "The bound T of the rule set: the product over characteristics of their numbers of "
     "components, the most UI configurations any team can ever need (the article's equation "
     "3). Reported for every rule set that loads.",
-    _bound)
+    _bound,
+)
 MISMATCH = Check(
-    "bound-mismatch", "error", "rules",
+    "bound-mismatch",
+    "error",
+    "rules",
     "The rule set declares a `bound:` that differs from T as its components give it: the "
     "components were changed and the bound was not (or the other way round).",
-    _mismatch)
+    _mismatch,
+)
 
 CHECKS: tuple[Check[RulesContext], ...] = (BOUND, MISMATCH)

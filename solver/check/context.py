@@ -44,8 +44,9 @@ def values_text(characteristic: Characteristic, values: Iterable[Value]) -> str:
     ordered = [v for v in characteristic.values if v in chosen]
     if characteristic.kind != "integer":
         return ", ".join(repr(str(v)) for v in ordered)
-    return ", ".join(str(run[0]) if len(run) == 1 else f"{run[0]}..{run[-1]}"
-                     for run in integer_runs(ordered))
+    return ", ".join(
+        str(run[0]) if len(run) == 1 else f"{run[0]}..{run[-1]}" for run in integer_runs(ordered)
+    )
 
 
 def integer_runs(values: Iterable[Value]) -> list[tuple[int, ...]]:
@@ -110,8 +111,9 @@ class RulesContext:
     def component_path(self, characteristic: Characteristic, component: Component) -> YPath:
         return ("characteristics", characteristic.name, "components", component.index)
 
-    def component_location(self, characteristic: Characteristic, component: Component,
-                           *fields: str) -> Location:
+    def component_location(
+        self, characteristic: Characteristic, component: Component, *fields: str
+    ) -> Location:
         """A component, or the first of ``fields`` (``min``, ``above``, ...) it declares."""
         path = self.component_path(characteristic, component)
         spec = self.raw(path)
@@ -122,8 +124,10 @@ class RulesContext:
 
     def constraint_related(self, indices: Sequence[int], message: str) -> tuple[Related, ...]:
         rules = self.rules
-        return tuple(Related(rules.constraints[i].location, f"{message}: "
-                             f"{rules.constraints[i].describe()}") for i in indices)
+        return tuple(
+            Related(rules.constraints[i].location, f"{message}: {rules.constraints[i].describe()}")
+            for i in indices
+        )
 
     def constraint_list(self, indices: Sequence[int]) -> str:
         return constraint_list(self.rules, indices)
@@ -131,8 +135,7 @@ class RulesContext:
 
 def constraint_list(rules: RuleSet, indices: Sequence[int]) -> str:
     """``'A' (rules/x.yaml:30:5) and 'B' (rules/x.yaml:34:5)``."""
-    names = [f"{rules.constraints[i].name!r} ({rules.constraints[i].location})"
-             for i in indices]
+    names = [f"{rules.constraints[i].name!r} ({rules.constraints[i].location})" for i in indices]
     if len(names) <= 1:
         return "".join(names)
     return ", ".join(names[:-1]) + " and " + names[-1]
@@ -170,8 +173,9 @@ class TeamContext:
         """Whether the team leaves ``characteristic`` unrestricted for a type (every value)."""
         return _raw(self.document, ("team", str(kinematic_type), characteristic.name)) is None
 
-    def selection_location(self, kinematic_type: Value, characteristic: Characteristic,
-                           value: Value | None = None) -> Location:
+    def selection_location(
+        self, kinematic_type: Value, characteristic: Characteristic, value: Value | None = None
+    ) -> Location:
         """Where the team selects ``value`` (or the characteristic, or the type) for a type."""
         type_path: YPath = ("team", str(kinematic_type))
         path: YPath = (*type_path, characteristic.name)

@@ -42,27 +42,35 @@ def _forced(context: RulesContext, *, components: bool) -> Iterator[Finding]:
                 others = [v for v in characteristic.values if v not in possible]
                 conflict = analysis.minimal_conflict(analysis.narrowed(domains, position, others))
                 yield CORE_VALUE.finding(
-                    location, f"every valid {kinematic_type} robot has {characteristic.name} "
-                              f"{values_text(characteristic, possible)}: forced by "
-                              f"{context.constraint_list(conflict)}",
-                    context.constraint_related(conflict, "forces it"))
+                    location,
+                    f"every valid {kinematic_type} robot has {characteristic.name} "
+                    f"{values_text(characteristic, possible)}: forced by "
+                    f"{context.constraint_list(conflict)}",
+                    context.constraint_related(conflict, "forces it"),
+                )
                 continue
-            if len(possible) < 2 or not characteristic.declared_components \
-                    or len(characteristic.components) < 2:
+            if (
+                len(possible) < 2
+                or not characteristic.declared_components
+                or len(characteristic.components) < 2
+            ):
                 continue
             for component in characteristic.components:
                 # A component serving every value is needed by construction, not forced.
-                if not possible <= set(component.values) \
-                        or len(component.values) == len(characteristic.values):
+                if not possible <= set(component.values) or len(component.values) == len(
+                    characteristic.values
+                ):
                     continue
                 others = [v for v in characteristic.values if v not in component.values]
                 conflict = analysis.minimal_conflict(analysis.narrowed(domains, position, others))
                 yield CORE_COMPONENT.finding(
-                    location, f"every valid {kinematic_type} robot needs {characteristic.name} "
-                              f"component {component.name!r} (its values "
-                              f"{values_text(characteristic, possible)} remain): forced by "
-                              f"{context.constraint_list(conflict)}",
-                    context.constraint_related(conflict, "forces it"))
+                    location,
+                    f"every valid {kinematic_type} robot needs {characteristic.name} "
+                    f"component {component.name!r} (its values "
+                    f"{values_text(characteristic, possible)} remain): forced by "
+                    f"{context.constraint_list(conflict)}",
+                    context.constraint_related(conflict, "forces it"),
+                )
 
 
 def _core_values(context: RulesContext) -> Iterator[Finding]:
@@ -74,16 +82,22 @@ def _core_components(context: RulesContext) -> Iterator[Finding]:
 
 
 CORE_VALUE = Check(
-    "core-value", "info", "rules",
+    "core-value",
+    "info",
+    "rules",
     "A value that every valid robot of a kinematic type has, because the constraints exclude "
     "all the other values of its characteristic (for example, every UAV flies with Flight). "
     "Reported with the constraints that force it; teams need not select it.",
-    _core_values)
+    _core_values,
+)
 CORE_COMPONENT = Check(
-    "core-component", "info", "rules",
+    "core-component",
+    "info",
+    "rules",
     "A UI component that every valid robot of a kinematic type needs, although more than one "
     "of its values remains possible (for example, only cameras of the visual-display group are "
     "left for a type). Every UI configuration of that type contains it.",
-    _core_components)
+    _core_components,
+)
 
 CHECKS: tuple[Check[RulesContext], ...] = (CORE_VALUE, CORE_COMPONENT)

@@ -48,19 +48,21 @@ def _dead_values(context: RulesContext) -> Iterator[Finding]:
     for position, characteristic in _others(context):
         live = analysis.live_anywhere[position]
         dead = [v for v in characteristic.values if v not in live]
-        groups: list[tuple[Value, ...]] = [(v,) for v in dead] \
-            if characteristic.kind != "integer" else list(integer_runs(dead))
+        groups: list[tuple[Value, ...]] = (
+            [(v,) for v in dead] if characteristic.kind != "integer" else list(integer_runs(dead))
+        )
         for values in groups:
-            conflict = analysis.minimal_conflict(
-                analysis.narrowed(analysis.full, position, values))
+            conflict = analysis.minimal_conflict(analysis.narrowed(analysis.full, position, values))
             if characteristic.kind == "integer":
                 location = context.locate(("characteristics", characteristic.name, "range"))
             else:
                 location = context.value_location(characteristic, values[0])
             yield DEAD_VALUE.finding(
-                location, f"{characteristic.name} {values_text(characteristic, values)} can "
-                          f"appear in no valid robot: {_excluded_by(context, conflict)}",
-                context.constraint_related(conflict, "excludes it"))
+                location,
+                f"{characteristic.name} {values_text(characteristic, values)} can "
+                f"appear in no valid robot: {_excluded_by(context, conflict)}",
+                context.constraint_related(conflict, "excludes it"),
+            )
 
 
 def _dead_components(context: RulesContext) -> Iterator[Finding]:
@@ -76,7 +78,8 @@ def _dead_components(context: RulesContext) -> Iterator[Finding]:
                     context.component_location(characteristic, component),
                     f"{characteristic.name} component {component.name!r} is never needed: no "
                     f"valid robot has any of its values "
-                    f"({values_text(characteristic, component.values)})")
+                    f"({values_text(characteristic, component.values)})",
+                )
 
 
 def _dead_for_type(context: RulesContext) -> Iterator[Finding]:
@@ -95,28 +98,38 @@ def _dead_for_type(context: RulesContext) -> Iterator[Finding]:
             if not dead or len(live[position]) == 1:
                 continue
             reasons = _reasons(context, domains, position, dead)
-            unused = [c.name for c in characteristic.components
-                      if characteristic.declared_components and c.values
-                      and not live[position].intersection(c.values)
-                      and anywhere.intersection(c.values)]
-            needless = "" if not unused else \
-                f"; so it never needs component {', '.join(repr(n) for n in unused)}"
+            unused = [
+                c.name
+                for c in characteristic.components
+                if characteristic.declared_components
+                and c.values
+                and not live[position].intersection(c.values)
+                and anywhere.intersection(c.values)
+            ]
+            needless = (
+                ""
+                if not unused
+                else f"; so it never needs component {', '.join(repr(n) for n in unused)}"
+            )
             if len(reasons) == 1:
                 why = _excluded_by(context, reasons[0][1])
             else:  # each group of values has its own reason: never "A and B together"
-                why = "; ".join(f"{values_text(characteristic, values)} "
-                                f"{_excluded_by(context, conflict)}"
-                                for values, conflict in reasons)
+                why = "; ".join(
+                    f"{values_text(characteristic, values)} {_excluded_by(context, conflict)}"
+                    for values, conflict in reasons
+                )
             blamed = sorted({i for _, conflict in reasons for i in conflict})
             yield DEAD_FOR_TYPE.finding(
                 context.value_location(key, kinematic_type),
                 f"no valid {kinematic_type} robot has {characteristic.name} "
                 f"{values_text(characteristic, dead)}: {why}{needless}",
-                context.constraint_related(blamed, "excludes them"))
+                context.constraint_related(blamed, "excludes them"),
+            )
 
 
-def _reasons(context: RulesContext, domains: Domains, position: int, dead: Sequence[Value]
-             ) -> list[tuple[list[Value], tuple[int, ...]]]:
+def _reasons(
+    context: RulesContext, domains: Domains, position: int, dead: Sequence[Value]
+) -> list[tuple[list[Value], tuple[int, ...]]]:
     """``dead`` values grouped by the minimal set of constraints that excludes each one.
 
     Values no constraint tells apart (one class of :meth:`Analysis.classes`) have the same
@@ -137,24 +150,33 @@ def _reasons(context: RulesContext, domains: Domains, position: int, dead: Seque
 
 
 DEAD_VALUE = Check(
-    "dead-value", "warning", "rules",
+    "dead-value",
+    "warning",
+    "rules",
     "A value of a characteristic that no valid robot of any kinematic type can have under the "
     "rule set's constraints: declared, selectable, and never used. The message names a "
     "minimal set of constraints that excludes it (consecutive counts are reported together). "
     "Kinematic types with no robot are reported as `void-type` instead.",
-    _dead_values)
+    _dead_values,
+)
 DEAD_COMPONENT = Check(
-    "dead-component", "warning", "rules",
+    "dead-component",
+    "warning",
+    "rules",
     "A UI component that no valid robot ever needs, because every value it serves is dead. It "
     "still counts in the bound T; a UI designer would design it for nothing.",
-    _dead_components)
+    _dead_components,
+)
 DEAD_FOR_TYPE = Check(
-    "dead-for-type", "info", "rules",
+    "dead-for-type",
+    "info",
+    "rules",
     "Values that the constraints rule out for one kinematic type although other types can "
     "have them (for example, Flight for a UGV), with the minimal set of constraints "
     "responsible and the components that type therefore never needs. Usually intended; a "
     "team that selects such a value is warned by `team-forbidden-value`. When a single value "
     "is left, `core-value` reports it instead.",
-    _dead_for_type)
+    _dead_for_type,
+)
 
 CHECKS: tuple[Check[RulesContext], ...] = (DEAD_VALUE, DEAD_COMPONENT, DEAD_FOR_TYPE)

@@ -28,8 +28,9 @@ __all__ = ["CHECKS", "witness_triple"]
 Triple = tuple[Value, Value, Value]
 
 
-def witness_triple(characteristic: Characteristic, first: Component,
-                   second: Component) -> Triple | None:
+def witness_triple(
+    characteristic: Characteristic, first: Component, second: Component
+) -> Triple | None:
     """A ~ B in ``first``, B ~ C in ``second``, A and C in no common component; or ``None``.
 
     A is the first value in domain order (only in ``first``) that has such a C, C the first
@@ -63,8 +64,11 @@ class _Intervals:
     @classmethod
     def of(cls, characteristic: Characteristic) -> _Intervals:
         positions = characteristic.positions
-        runs = {c.index: (positions[c.values[0]], positions[c.values[-1]])
-                for c in characteristic.components if c.values}
+        runs = {
+            c.index: (positions[c.values[0]], positions[c.values[-1]])
+            for c in characteristic.components
+            if c.values
+        }
         ends = [-1] * len(characteristic.values)
         for first, last in runs.values():
             ends[first] = max(ends[first], last)
@@ -111,9 +115,9 @@ class _Atoms:
     """
 
     characteristic: Characteristic
-    first_shared: dict[tuple[int, int], int]   # overlapping pair -> first position in both
+    first_shared: dict[tuple[int, int], int]  # overlapping pair -> first position in both
     atoms: dict[int, tuple[tuple[int, frozenset[int]], ...]]  # component -> (first position,
-                                                              # membership) of its atoms
+    # membership) of its atoms
 
     @classmethod
     def of(cls, characteristic: Characteristic) -> _Atoms:
@@ -127,8 +131,9 @@ class _Atoms:
         for membership, position in sorted(first_of.items(), key=lambda item: item[1]):
             for index in membership:
                 atoms.setdefault(index, []).append((position, membership))
-        return cls(characteristic, first_shared,
-                   {index: tuple(found) for index, found in atoms.items()})
+        return cls(
+            characteristic, first_shared, {index: tuple(found) for index, found in atoms.items()}
+        )
 
     def pairs(self) -> list[tuple[int, int]]:
         return sorted(self.first_shared)
@@ -167,16 +172,20 @@ def _non_transitive(context: RulesContext) -> Iterator[Finding]:
                 context.component_location(characteristic, second),
                 f"'can share a component' is not transitive for {characteristic.name}: "
                 f"{a} ~ {b} (both in {first.name!r}) and {b} ~ {c} (both in "
-                f"{second.name!r}), but {a} and {c} share no component")
+                f"{second.name!r}), but {a} and {c} share no component",
+            )
 
 
 NON_TRANSITIVE = Check(
-    "non-transitive", "warning", "rules",
-    "The relation \"two values can share a UI component\" is not an equivalence: overlapping "
+    "non-transitive",
+    "warning",
+    "rules",
+    'The relation "two values can share a UI component" is not an equivalence: overlapping '
     "components X and Y give a witness triple A ~ B (both in X), B ~ C (both in Y) with A and "
     "C in no common component. UI configurations are then no longer equivalence classes; the "
     "solver finds a minimum cover instead and the configuration a robot gets can depend on "
     "the rest of the team.",
-    _non_transitive)
+    _non_transitive,
+)
 
 CHECKS: tuple[Check[RulesContext], ...] = (NON_TRANSITIVE,)

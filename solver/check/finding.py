@@ -50,8 +50,13 @@ class Finding:
     @property
     def sort_key(self) -> tuple[str, int, int, str, str]:
         """Linter order: file, line, column, then check id and message for ties."""
-        return (self.location.file, self.location.line or 0, self.location.column or 0,
-                self.check, self.message)
+        return (
+            self.location.file,
+            self.location.line or 0,
+            self.location.column or 0,
+            self.check,
+            self.message,
+        )
 
     @property
     def line(self) -> int:
@@ -63,8 +68,10 @@ class Finding:
         return self.location.column or 1
 
     def __str__(self) -> str:
-        return (f"{self.location.file}:{self.line}:{self.column}: [{self.level}] "
-                f"{self.message} ({self.check})")
+        return (
+            f"{self.location.file}:{self.line}:{self.column}: [{self.level}] "
+            f"{self.message} ({self.check})"
+        )
 
 
 @dataclass(frozen=True)
@@ -81,8 +88,9 @@ class Check(Generic[Context]):
     description: str
     run: Callable[[Context], Iterator[Finding]] = field(repr=False)
 
-    def finding(self, location: Location, message: str,
-                related: tuple[Related, ...] = ()) -> Finding:
+    def finding(
+        self, location: Location, message: str, related: tuple[Related, ...] = ()
+    ) -> Finding:
         """A finding of this check."""
         return Finding(location, self.level, self.id, message, related)
 

@@ -63,44 +63,65 @@ def _not_checked(context: LoadContext) -> Iterator[Finding]:
 def _load(check: Check[LoadContext], context: LoadContext) -> Iterator[Finding]:
     for fault in context.faults:
         if check_id(fault) == check.id:
-            text = f"{fault.location.path}: {fault.message}" if fault.location.path \
-                else fault.message
+            text = (
+                f"{fault.location.path}: {fault.message}" if fault.location.path else fault.message
+            )
             yield check.finding(fault.location, text)
 
 
 UNKNOWN_REFERENCE = Check(
-    "unknown-reference", "error", "load",
+    "unknown-reference",
+    "error",
+    "load",
     "A name that refers to nothing: a value, component or characteristic that the rule set "
     "does not declare (in a component's values, a constraint, a selection or the team_key), a "
     "kinematic type a team selects that its rules do not have, or a `rules:` file that does "
     "not exist. The message suggests the closest existing name. Fix the spelling or declare "
     "the missing thing.",
-    _unknown_reference)
+    _unknown_reference,
+)
 DUPLICATE_VALUE = Check(
-    "duplicate-value", "error", "load",
+    "duplicate-value",
+    "error",
+    "load",
     "A value listed twice: twice in a characteristic's values, twice in one component, or "
     "two components with the same name. Duplicates usually hide a copy-paste slip; the "
     "message names the first occurrence.",
-    _duplicate_value)
+    _duplicate_value,
+)
 DUPLICATE_KEY = Check(
-    "duplicate-key", "error", "load",
+    "duplicate-key",
+    "error",
+    "load",
     "A YAML mapping key written twice (two characteristics, two kinematic types in a team, two "
     "`min:` in one component). Plain YAML loaders silently keep the last one; this project "
     "keeps the first and reports the second, naming the line of the first.",
-    _duplicate_key)
+    _duplicate_key,
+)
 SCHEMA = Check(
-    "schema", "error", "load",
+    "schema",
+    "error",
+    "load",
     "The file does not follow the rule-set or team format: a field of the wrong type, a "
     "missing or unknown field, a number out of range (such as an inverted characteristic "
     "range or a team maximum beyond the rules' range), or a selection that leaves no value. "
     "The semantic checks need a file that loads, so they do not run on a file with load "
     "errors.",
-    _schema)
+    _schema,
+)
 NOT_CHECKED = Check(
-    "not-checked", "info", "load",
+    "not-checked",
+    "info",
+    "load",
     "A team file that could not be checked because the rule set it is read against has load "
     "errors (reported at the rule set's own lines). Fix the rule set and check again.",
-    _not_checked)
+    _not_checked,
+)
 
 CHECKS: tuple[Check[LoadContext], ...] = (
-    UNKNOWN_REFERENCE, DUPLICATE_VALUE, DUPLICATE_KEY, SCHEMA, NOT_CHECKED)
+    UNKNOWN_REFERENCE,
+    DUPLICATE_VALUE,
+    DUPLICATE_KEY,
+    SCHEMA,
+    NOT_CHECKED,
+)

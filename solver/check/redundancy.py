@@ -38,7 +38,8 @@ def _redundant(context: RulesContext) -> Iterator[Finding]:
             rule.location,
             f"constraint {rule.name!r} is redundant: {context.constraint_list(entailing)} "
             f"already {verb} every robot it excludes; removing it changes no valid robot",
-            context.constraint_related(entailing, "entails it"))
+            context.constraint_related(entailing, "entails it"),
+        )
 
 
 def _tautologies(context: RulesContext) -> Iterator[Finding]:
@@ -46,22 +47,29 @@ def _tautologies(context: RulesContext) -> Iterator[Finding]:
         if not context.analysis.exclusions(index):
             rule = context.rules.constraints[index]
             yield TAUTOLOGY.finding(
-                rule.location, f"constraint {rule.describe()} excludes no robot at all")
+                rule.location, f"constraint {rule.describe()} excludes no robot at all"
+            )
 
 
 REDUNDANT = Check(
-    "redundant-constraint", "warning", "rules",
+    "redundant-constraint",
+    "warning",
+    "rules",
     "A constraint the other constraints already entail: every robot it excludes is excluded "
     "by them too, so removing it changes no valid robot (checked with python-constraint over "
     "the robots it excludes, with every other constraint). The message names a minimal set "
     "of constraints that entails it. Of two identical constraints, each is reported.",
-    _redundant)
+    _redundant,
+)
 TAUTOLOGY = Check(
-    "tautology", "warning", "rules",
+    "tautology",
+    "warning",
+    "rules",
     "A constraint that excludes no robot at all, whatever the other constraints say: its "
     "required values always hold whenever its conditions do (for example `when: {sensor_type: "
     "LIDAR}` with `require: {sensor_type: [LIDAR, 3D Scanning]}`). It is probably not what "
     "its author meant.",
-    _tautologies)
+    _tautologies,
+)
 
 CHECKS: tuple[Check[RulesContext], ...] = (REDUNDANT, TAUTOLOGY)

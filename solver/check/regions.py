@@ -29,8 +29,9 @@ Box = tuple[frozenset[Value] | None, ...]
 Domains = tuple[tuple[Value, ...], ...]
 
 
-def _box(rules: RuleSet, conditions: Sequence[Condition],
-         complement: Condition | None = None) -> Box:
+def _box(
+    rules: RuleSet, conditions: Sequence[Condition], complement: Condition | None = None
+) -> Box:
     sets: list[frozenset[Value] | None] = [None] * len(rules.characteristics)
     positions = {name: i for i, name in enumerate(rules.names)}
 
@@ -56,12 +57,18 @@ def regions(rules: RuleSet, rule: RuleConstraint) -> tuple[Box, ...]:
 
 def intersect(domains: Domains, box: Box) -> Domains:
     """``domains`` narrowed to ``box`` (an empty tuple where they do not meet)."""
-    return tuple(domain if allowed is None else tuple(v for v in domain if v in allowed)
-                 for domain, allowed in zip(domains, box, strict=True))
+    return tuple(
+        domain if allowed is None else tuple(v for v in domain if v in allowed)
+        for domain, allowed in zip(domains, box, strict=True)
+    )
 
 
 def touches(boxes: Sequence[Box], domains: Sequence[frozenset[Value]]) -> bool:
     """Whether some robot over ``domains`` lies in one of ``boxes`` (the rule can exclude it)."""
-    return any(all(allowed is None or not allowed.isdisjoint(domain)
-                   for allowed, domain in zip(box, domains, strict=True))
-               for box in boxes)
+    return any(
+        all(
+            allowed is None or not allowed.isdisjoint(domain)
+            for allowed, domain in zip(box, domains, strict=True)
+        )
+        for box in boxes
+    )

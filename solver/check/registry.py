@@ -21,8 +21,14 @@ __all__ = ["ALL_CHECKS", "LOAD_CHECKS", "RULE_CHECKS", "TEAM_CHECKS", "check_ids
 
 LOAD_CHECKS: tuple[Check[LoadContext], ...] = load.CHECKS
 RULE_CHECKS: tuple[Check[RulesContext], ...] = (
-    *coverage.CHECKS, *equivalence.CHECKS, *void.CHECKS, *dead.CHECKS, *core.CHECKS,
-    *redundancy.CHECKS, *bound.CHECKS)
+    *coverage.CHECKS,
+    *equivalence.CHECKS,
+    *void.CHECKS,
+    *dead.CHECKS,
+    *core.CHECKS,
+    *redundancy.CHECKS,
+    *bound.CHECKS,
+)
 TEAM_CHECKS: tuple[Check[TeamContext], ...] = teams.CHECKS
 ALL_CHECKS: tuple[Check[Any], ...] = (*LOAD_CHECKS, *RULE_CHECKS, *TEAM_CHECKS)
 

@@ -39,20 +39,23 @@ _SARIF_LEVELS = {"error": "error", "warning": "warning", "info": "note"}
 def summary_line(report: Report) -> str:
     files = len(report.files)
     counts = report.counts
-    parts = [f"{counts['error']} error{'' if counts['error'] == 1 else 's'}",
-             f"{counts['warning']} warning{'' if counts['warning'] == 1 else 's'}",
-             f"{counts['info']} info"]
+    parts = [
+        f"{counts['error']} error{'' if counts['error'] == 1 else 's'}",
+        f"{counts['warning']} warning{'' if counts['warning'] == 1 else 's'}",
+        f"{counts['info']} info",
+    ]
     return f"{files} file{'' if files == 1 else 's'} checked: {', '.join(parts)}"
 
 
 def render(report: Report, format: str = "text") -> str:
     """The report in ``format`` (one of :data:`FORMATS`), ending with a newline."""
     if format == "text":
-        return "".join(f"{finding}\n" for finding in report.findings) + \
-            summary_line(report) + "\n"
+        return "".join(f"{finding}\n" for finding in report.findings) + summary_line(report) + "\n"
     if format == "parsable":
-        return "".join(f"{f.location.file}:{f.line}:{f.column}: {f.level}: {f.message} "
-                       f"[{f.check}]\n" for f in report.findings)
+        return "".join(
+            f"{f.location.file}:{f.line}:{f.column}: {f.level}: {f.message} [{f.check}]\n"
+            for f in report.findings
+        )
     if format == "json":
         return json.dumps(json_data(report), indent=2, ensure_ascii=False) + "\n"
     if format == "sarif":
@@ -61,22 +64,31 @@ def render(report: Report, format: str = "text") -> str:
 
 
 def _location_data(location: Location) -> dict[str, Any]:
-    return {"file": location.file, "line": location.line or 1, "column": location.column or 1,
-            "path": location.path}
+    return {
+        "file": location.file,
+        "line": location.line or 1,
+        "column": location.column or 1,
+        "path": location.path,
+    }
 
 
 def _finding_data(finding: Finding) -> dict[str, Any]:
-    return {**_location_data(finding.location), "level": finding.level,
-            "check": finding.check, "message": finding.message,
-            "related": [{**_location_data(r.location), "message": r.message}
-                        for r in finding.related]}
+    return {
+        **_location_data(finding.location),
+        "level": finding.level,
+        "check": finding.check,
+        "message": finding.message,
+        "related": [{**_location_data(r.location), "message": r.message} for r in finding.related],
+    }
 
 
 def json_data(report: Report) -> dict[str, Any]:
     """The JSON shape of ``teleop-ui check --format json``."""
-    return {"files": list(report.files),
-            "summary": {level: report.count(level) for level in LEVELS},
-            "findings": [_finding_data(finding) for finding in report.findings]}
+    return {
+        "files": list(report.files),
+        "summary": {level: report.count(level) for level in LEVELS},
+        "findings": [_finding_data(finding) for finding in report.findings],
+    }
 
 
 def _uri(file: str) -> str:
@@ -87,8 +99,10 @@ def _uri(file: str) -> str:
 
 
 def _physical(location: Location) -> dict[str, Any]:
-    return {"artifactLocation": {"uri": _uri(location.file)},
-            "region": {"startLine": location.line or 1, "startColumn": location.column or 1}}
+    return {
+        "artifactLocation": {"uri": _uri(location.file)},
+        "region": {"startLine": location.line or 1, "startColumn": location.column or 1},
+    }
 
 
 def _version() -> str:
@@ -112,35 +126,49 @@ def sarif_text(text: str) -> str:
 def sarif_data(report: Report) -> dict[str, Any]:
     """A SARIF 2.1.0 log with one run: every check as a rule, every finding as a result."""
     index = {check.id: i for i, check in enumerate(ALL_CHECKS)}
-    rules = [{"id": check.id,
-              "shortDescription": {"text": check.summary},
-              "fullDescription": {"text": check.description},
-              "help": {"text": check.description},
-              "defaultConfiguration": {"level": _SARIF_LEVELS[check.level]}}
-             for check in ALL_CHECKS]
+    rules = [
+        {
+            "id": check.id,
+            "shortDescription": {"text": check.summary},
+            "fullDescription": {"text": check.description},
+            "help": {"text": check.description},
+            "defaultConfiguration": {"level": _SARIF_LEVELS[check.level]},
+        }
+        for check in ALL_CHECKS
+    ]
     results = []
     for finding in report.findings:
         location: dict[str, Any] = {"physicalLocation": _physical(finding.location)}
         if finding.location.path:
             location["logicalLocations"] = [{"fullyQualifiedName": finding.location.path}]
-        result: dict[str, Any] = {"ruleId": finding.check, "ruleIndex": index[finding.check],
-                                  "level": _SARIF_LEVELS[finding.level],
-                                  "message": {"text": sarif_text(finding.message)},
-                                  "locations": [location]}
+        result: dict[str, Any] = {
+            "ruleId": finding.check,
+            "ruleIndex": index[finding.check],
+            "level": _SARIF_LEVELS[finding.level],
+            "message": {"text": sarif_text(finding.message)},
+            "locations": [location],
+        }
         if finding.related:
             result["relatedLocations"] = [
-                {"id": number, "physicalLocation": _physical(related.location),
-                 "message": {"text": sarif_text(related.message)}}
-                for number, related in enumerate(finding.related, start=1)]
+                {
+                    "id": number,
+                    "physicalLocation": _physical(related.location),
+                    "message": {"text": sarif_text(related.message)},
+                }
+                for number, related in enumerate(finding.related, start=1)
+            ]
         results.append(result)
     return {
         "$schema": SARIF_SCHEMA,
         "version": "2.1.0",
-        "runs": [{
-            "tool": {"driver": {"name": "teleop-ui check", "version": _version(),
-                                "rules": rules}},
-            "columnKind": "unicodeCodePoints",
-            "artifacts": [{"location": {"uri": _uri(file)}} for file in report.files],
-            "results": results,
-        }],
+        "runs": [
+            {
+                "tool": {
+                    "driver": {"name": "teleop-ui check", "version": _version(), "rules": rules}
+                },
+                "columnKind": "unicodeCodePoints",
+                "artifacts": [{"location": {"uri": _uri(file)}} for file in report.files],
+                "results": results,
+            }
+        ],
     }

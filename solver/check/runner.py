@@ -91,8 +91,9 @@ class _Run:
             self.unusable.extend(error.faults)
             return None
 
-    def report_faults(self, faults: Sequence[Fault],
-                      skipped: tuple[tuple[Location, str], ...] = ()) -> None:
+    def report_faults(
+        self, faults: Sequence[Fault], skipped: tuple[tuple[Location, str], ...] = ()
+    ) -> None:
         context = LoadContext(tuple(faults), skipped)
         for check in LOAD_CHECKS:
             if check.id not in self.disabled:
@@ -104,8 +105,9 @@ class _Run:
             self.analyses[id(rules)] = (rules, Analysis(rules))
         return self.analyses[id(rules)][1]
 
-    def rules_file(self, path: Path, display: str, document: Document | None = None,
-                   *, check: bool = True) -> RuleSet | None:
+    def rules_file(
+        self, path: Path, display: str, document: Document | None = None, *, check: bool = True
+    ) -> RuleSet | None:
         """Load (once) and, when ``check``, run every rule check on one rule set file."""
         key = path.resolve()
         if key in self.rule_sets and not check:
@@ -129,8 +131,9 @@ class _Run:
                     self.add(rule_check.run(context))
         return rules
 
-    def team_file(self, path: Path, document: Document, against: RuleSet | None,
-                  against_name: str | None) -> None:
+    def team_file(
+        self, path: Path, document: Document, against: RuleSet | None, against_name: str | None
+    ) -> None:
         self.report_faults(document.tolerated)
         if against_name is None:
             own = _own_rules(path, document)
@@ -138,8 +141,15 @@ class _Run:
                 against = self.rules_file(own[0], own[1], check=False)
                 against_name = own[1]
         if against is None and against_name is not None:
-            self.report_faults((), ((document.location(("rules",), key=True),
-                                     f"not checked: its rule set {against_name} has errors"),))
+            self.report_faults(
+                (),
+                (
+                    (
+                        document.location(("rules",), key=True),
+                        f"not checked: its rule set {against_name} has errors",
+                    ),
+                ),
+            )
             return
         try:
             team = parse_team(document, against, folder=path.parent)
@@ -171,8 +181,9 @@ def _own_rules(path: Path, document: Document) -> tuple[Path, str] | None:
     return relative, os.path.normpath(Path(document.file).parent / text.strip())
 
 
-def check_files(paths: Sequence[str | Path], *, rules: str | Path | None = None,
-                disable: Collection[str] = ()) -> Report:
+def check_files(
+    paths: Sequence[str | Path], *, rules: str | Path | None = None, disable: Collection[str] = ()
+) -> Report:
     """Check rule set and team files; see the module docstring for which rules a team meets.
 
     ``disable``: check ids to leave out. Raises :class:`InputError` when a file cannot be read
@@ -194,15 +205,24 @@ def check_files(paths: Sequence[str | Path], *, rules: str | Path | None = None,
         given = next((d for p, d in documents if str(p) == str(rules)), None)
         if given is not None and file_kind(given) in ("team", "profile"):
             what = "a team file" if file_kind(given) == "team" else "an identification profile"
-            run.unusable.append(Fault(Location(str(rules)), f"is {what}; --rules needs a "
-                                                            "rule set", "invalid"))
+            run.unusable.append(
+                Fault(Location(str(rules)), f"is {what}; --rules needs a rule set", "invalid")
+            )
     kinds = [file_kind(d) for _, d in documents]
     for (_, document), kind in zip(documents, kinds, strict=True):
         if kind == "profile":  # a folder such as rules/ holds one; it is no rule set
-            run.report_faults((), ((document.location(), "not checked: an identification "
-                                    "profile (check reads rule sets and teams)"),))
-    rule_docs = [(p, d) for (p, d), kind in zip(documents, kinds, strict=True)
-                 if kind in ("rules", None)]
+            run.report_faults(
+                (),
+                (
+                    (
+                        document.location(),
+                        "not checked: an identification profile (check reads rule sets and teams)",
+                    ),
+                ),
+            )
+    rule_docs = [
+        (p, d) for (p, d), kind in zip(documents, kinds, strict=True) if kind in ("rules", None)
+    ]
     team_docs = [(p, d) for (p, d), kind in zip(documents, kinds, strict=True) if kind == "team"]
     loaded = {p: run.rules_file(p, d.file, d) for p, d in rule_docs}
     against: RuleSet | None = None
@@ -223,6 +243,6 @@ def check_files(paths: Sequence[str | Path], *, rules: str | Path | None = None,
 
 def _sorted_faults(faults: list[Fault]) -> list[Fault]:
     unique = list(dict.fromkeys(faults))
-    return sorted(unique, key=lambda f: (f.location.file, f.location.line or 0,
-                                         f.location.column or 0))
-
+    return sorted(
+        unique, key=lambda f: (f.location.file, f.location.line or 0, f.location.column or 0)
+    )

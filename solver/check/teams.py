@@ -32,17 +32,20 @@ from solver.team import TypeSelection
 __all__ = ["CHECKS"]
 
 
-def _related(context: TeamContext, conflict: tuple[int, ...], message: str
-             ) -> tuple[Related, ...]:
+def _related(context: TeamContext, conflict: tuple[int, ...], message: str) -> tuple[Related, ...]:
     rules = context.rules
-    return tuple(Related(rules.constraints[i].location, f"{message}: "
-                         f"{rules.constraints[i].describe()}") for i in conflict)
+    return tuple(
+        Related(rules.constraints[i].location, f"{message}: {rules.constraints[i].describe()}")
+        for i in conflict
+    )
 
 
 def _selects(context: TeamContext, kinematic_type: str, characteristic: Characteristic) -> str:
     if context.is_open(kinematic_type, characteristic):
-        return (f"{kinematic_type} leaves {characteristic.name} open, so it selects "
-                f"{characteristic.name}")
+        return (
+            f"{kinematic_type} leaves {characteristic.name} open, so it selects "
+            f"{characteristic.name}"
+        )
     return f"{kinematic_type} selects {characteristic.name}"
 
 
@@ -54,9 +57,11 @@ def _void_types(context: TeamContext) -> list[TypeSelection]:
 def _void_team(context: TeamContext) -> Iterator[Finding]:
     selections = context.team.selections
     if selections and len(_void_types(context)) == len(selections):
-        yield VOID_TEAM.finding(context.locate(("team",), key=True),
-                                "the team has no valid robot at all: every kinematic type it "
-                                "selects is void (see each type)")
+        yield VOID_TEAM.finding(
+            context.locate(("team",), key=True),
+            "the team has no valid robot at all: every kinematic type it "
+            "selects is void (see each type)",
+        )
 
 
 def _void_team_types(context: TeamContext) -> Iterator[Finding]:
@@ -67,7 +72,8 @@ def _void_team_types(context: TeamContext) -> Iterator[Finding]:
             context.locate(("team", selection.kinematic_type), key=True),
             f"{selection.kinematic_type}: the selection leaves no valid robot: "
             f"{blame(context.rules, conflict)} every robot it selects",
-            _related(context, conflict, "in the conflict"))
+            _related(context, conflict, "in the conflict"),
+        )
 
 
 def _forbidden(context: TeamContext) -> Iterator[Finding]:
@@ -87,7 +93,8 @@ def _forbidden(context: TeamContext) -> Iterator[Finding]:
             found: dict[tuple[Location, tuple[int, ...]], list[Value]] = {}
             for values in _groups(characteristic, dead):
                 conflict = analysis.minimal_conflict(
-                    analysis.narrowed(selection.domains, position, values))
+                    analysis.narrowed(selection.domains, position, values)
+                )
                 location = context.selection_location(kt, characteristic, values[0])
                 found.setdefault((location, conflict), []).extend(values)
             for (location, conflict), chosen in found.items():
@@ -97,7 +104,8 @@ def _forbidden(context: TeamContext) -> Iterator[Finding]:
                     f"but no valid {kt} robot of this selection can have it: excluded by "
                     f"{constraint_list(rules, conflict)}; such robots get the default UI "
                     "configuration",
-                    _related(context, conflict, "excludes it"))
+                    _related(context, conflict, "excludes it"),
+                )
 
 
 def _groups(characteristic: Characteristic, values: list[Value]) -> list[tuple[Value, ...]]:
@@ -113,8 +121,11 @@ def _uncovered(context: TeamContext) -> Iterator[Finding]:
         kt = selection.kinematic_type
         live = context.live[kt]
         for position, characteristic in enumerate(rules.characteristics):
-            gaps = [v for v in selection.domains[position] if v in live[position]
-                    and not characteristic.components_of(v)]
+            gaps = [
+                v
+                for v in selection.domains[position]
+                if v in live[position] and not characteristic.components_of(v)
+            ]
             found: dict[Location, list[Value]] = {}
             for values in _groups(characteristic, gaps):
                 location = context.selection_location(kt, characteristic, values[0])
@@ -125,33 +136,46 @@ def _uncovered(context: TeamContext) -> Iterator[Finding]:
                     f"{_selects(context, kt, characteristic)} "
                     f"{values_text(characteristic, chosen)}, "
                     f"which no component of the rules ({rules.file}) serves: such robots get "
-                    "the default UI configuration")
+                    "the default UI configuration",
+                )
 
 
 VOID_TEAM = Check(
-    "void-team", "error", "team",
+    "void-team",
+    "error",
+    "team",
     "The team has no valid robot at all: for every kinematic type it selects, the rule set's "
     "constraints exclude every combination the selection allows. Each type is also reported "
     "as `void-team-type` with its reason.",
-    _void_team)
+    _void_team,
+)
 VOID_TEAM_TYPE = Check(
-    "void-team-type", "error", "team",
+    "void-team-type",
+    "error",
+    "team",
     "A kinematic type of the team whose selection leaves no valid robot under the rule set's "
     "constraints, with a minimal set of constraints (file and line) that excludes everything "
     "it selects. The team gets no UI configuration for that type.",
-    _void_team_types)
+    _void_team_types,
+)
 FORBIDDEN = Check(
-    "team-forbidden-value", "warning", "team",
+    "team-forbidden-value",
+    "warning",
+    "team",
     "A team selects a value for a kinematic type that the rule set's constraints forbid for "
     "that type (given the rest of its selection): no valid robot of the team has it, so real "
     "robots with it get the default UI configuration. The message names the constraints "
     "responsible, with file and line. A characteristic the team leaves out takes whatever "
     "the rules allow and is not reported.",
-    _forbidden)
+    _forbidden,
+)
 UNCOVERED = Check(
-    "team-uncovered-value", "warning", "team",
+    "team-uncovered-value",
+    "warning",
+    "team",
     "A team selects a value that no component of its rule set serves (a `coverage-gap` in the "
     "rules): valid robots with it have no UI configuration and get the default one.",
-    _uncovered)
+    _uncovered,
+)
 
 CHECKS: tuple[Check[TeamContext], ...] = (VOID_TEAM, VOID_TEAM_TYPE, FORBIDDEN, UNCOVERED)

@@ -31,7 +31,8 @@ def _void(context: RulesContext) -> Iterator[Finding]:
     yield VOID.finding(
         context.locate(("constraints",), key=True),
         f"no valid robot at all: {blame(context.rules, conflict)} every combination",
-        context.constraint_related(conflict, "in the conflict"))
+        context.constraint_related(conflict, "in the conflict"),
+    )
 
 
 def _void_types(context: RulesContext) -> Iterator[Finding]:
@@ -44,7 +45,8 @@ def _void_types(context: RulesContext) -> Iterator[Finding]:
             context.value_location(key, kinematic_type),
             f"{key.name} {str(kinematic_type)!r} has no valid robot: "
             f"{blame(context.rules, conflict)} every {kinematic_type} robot",
-            context.constraint_related(conflict, "in the conflict"))
+            context.constraint_related(conflict, "in the conflict"),
+        )
 
 
 def _conflicts(context: RulesContext) -> Iterator[Finding]:
@@ -59,37 +61,52 @@ def _conflicts(context: RulesContext) -> Iterator[Finding]:
         for kinematic_type, conflict in analysis.type_conflicts.items():
             by_conflict.setdefault(conflict, []).append(kinematic_type)
     for conflict, types in by_conflict.items():
-        victims = "no valid robot at all" if not types else \
-            f"no valid robot of {key.name} {', '.join(repr(str(t)) for t in types)}"
+        victims = (
+            "no valid robot at all"
+            if not types
+            else f"no valid robot of {key.name} {', '.join(repr(str(t)) for t in types)}"
+        )
         first = context.rules.constraints[conflict[0]]
         if len(conflict) == 1:
             text = f"constraint {first.name!r} alone leaves {victims}"
         else:
-            text = (f"constraints {context.constraint_list(conflict)} conflict: together they "
-                    f"leave {victims} (a minimal conflict: each of them is needed)")
-        yield CONFLICT.finding(first.location, text,
-                               context.constraint_related(conflict[1:], "also in the conflict"))
+            text = (
+                f"constraints {context.constraint_list(conflict)} conflict: together they "
+                f"leave {victims} (a minimal conflict: each of them is needed)"
+            )
+        yield CONFLICT.finding(
+            first.location, text, context.constraint_related(conflict[1:], "also in the conflict")
+        )
 
 
 VOID = Check(
-    "void", "error", "rules",
+    "void",
+    "error",
+    "rules",
     "The rule set has no valid robot at all: its constraints exclude every combination of "
     "values. The message names a minimal conflicting subset of constraints with their lines.",
-    _void)
+    _void,
+)
 VOID_TYPE = Check(
-    "void-type", "error", "rules",
+    "void-type",
+    "error",
+    "rules",
     "A kinematic type (a value of the team key) for which the constraints leave no valid "
     "robot: every team selecting it gets no robots and no UI configurations of that type. "
     "Reported at the type's entry with the constraints that cause it; not reported when the "
     "whole rule set is void.",
-    _void_types)
+    _void_types,
+)
 CONFLICT = Check(
-    "conflict", "error", "rules",
+    "conflict",
+    "error",
+    "rules",
     "A minimal conflicting subset of constraints, reported at the first of them: together they "
     "make the rule set or a kinematic type void, and without any one of them the rest of the "
     "subset leaves robots. Found by deletion (drop one constraint, re-solve with "
     "python-constraint, keep it dropped while still void), so every constraint named is "
     "necessary; types voided by the same subset are reported together.",
-    _conflicts)
+    _conflicts,
+)
 
 CHECKS: tuple[Check[RulesContext], ...] = (VOID, VOID_TYPE, CONFLICT)

@@ -32,7 +32,8 @@ def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="teleop-ui",
         description="Design teleoperation UI configurations for heterogeneous robot teams: "
-                    "robot characteristics, relationship rules, team selections.")
+        "robot characteristics, relationship rules, team selections.",
+    )
     parser.add_argument("--version", action="version", version=f"%(prog)s {_version()}")
     subparsers = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
     for name in command_modules():

@@ -11,14 +11,30 @@ if TYPE_CHECKING:
 
     from solver.team import Team
 
-__all__ = ["add_engine", "add_format", "add_master_options", "add_profile", "add_rules",
-           "load_team_argument", "positive", "seconds", "team_path", "write"]
+__all__ = [
+    "add_engine",
+    "add_format",
+    "add_master_options",
+    "add_profile",
+    "add_rules",
+    "load_team_argument",
+    "positive",
+    "seconds",
+    "team_path",
+    "write",
+]
 
 
-def add_format(parser: argparse.ArgumentParser, choices: tuple[str, ...],
-               default: str = "text") -> None:
-    parser.add_argument("--format", "-f", choices=choices, default=default,
-                        help=f"output format (default: {default})")
+def add_format(
+    parser: argparse.ArgumentParser, choices: tuple[str, ...], default: str = "text"
+) -> None:
+    parser.add_argument(
+        "--format",
+        "-f",
+        choices=choices,
+        default=default,
+        help=f"output format (default: {default})",
+    )
 
 
 def add_engine(parser: argparse.ArgumentParser, *, enumerate_only: bool = False) -> None:
@@ -26,18 +42,31 @@ def add_engine(parser: argparse.ArgumentParser, *, enumerate_only: bool = False)
     from solver.engines import DESCRIPTIONS, ENUMERATING, MAX_ROBOTS, NAMES
 
     if enumerate_only:
-        parser.add_argument("--engine", "-e", choices=ENUMERATING, default=ENUMERATING[0],
-                            help="; ".join(f"{name}: {DESCRIPTIONS[name]}"
-                                           for name in ENUMERATING)
-                                 + f" (default: {ENUMERATING[0]})")
+        parser.add_argument(
+            "--engine",
+            "-e",
+            choices=ENUMERATING,
+            default=ENUMERATING[0],
+            help="; ".join(f"{name}: {DESCRIPTIONS[name]}" for name in ENUMERATING)
+            + f" (default: {ENUMERATING[0]})",
+        )
     else:
-        parser.add_argument("--engine", "-e", choices=NAMES, default=NAMES[0],
-                            help="; ".join(f"{name}: {DESCRIPTIONS[name]}"
-                                           for name in NAMES[1:])
-                                 + f"; {NAMES[0]} (default): the structure where it applies, "
-                                   "else fast enumeration")
-    parser.add_argument("--max-robots", type=positive, default=MAX_ROBOTS, metavar="N",
-                        help=f"refuse to enumerate more robots than this (default: {MAX_ROBOTS})")
+        parser.add_argument(
+            "--engine",
+            "-e",
+            choices=NAMES,
+            default=NAMES[0],
+            help="; ".join(f"{name}: {DESCRIPTIONS[name]}" for name in NAMES[1:])
+            + f"; {NAMES[0]} (default): the structure where it applies, "
+            "else fast enumeration",
+        )
+    parser.add_argument(
+        "--max-robots",
+        type=positive,
+        default=MAX_ROBOTS,
+        metavar="N",
+        help=f"refuse to enumerate more robots than this (default: {MAX_ROBOTS})",
+    )
 
 
 def positive(text: str) -> int:
@@ -65,23 +94,36 @@ def seconds(text: str) -> float:
 
 def add_master_options(parser: argparse.ArgumentParser, *, required_help: str) -> None:
     """--master and --timeout, for the commands that read a ROS master."""
-    parser.add_argument("--master", "-m", metavar="URL",
-                        help=f"ROS master URI, e.g. http://127.0.0.1:11311 ({required_help})")
-    parser.add_argument("--timeout", type=seconds, default=2.0, metavar="S",
-                        help="seconds to wait for the master to accept a connection, and for "
-                             "each part of its reply (default: 2)")
+    parser.add_argument(
+        "--master",
+        "-m",
+        metavar="URL",
+        help=f"ROS master URI, e.g. http://127.0.0.1:11311 ({required_help})",
+    )
+    parser.add_argument(
+        "--timeout",
+        type=seconds,
+        default=2.0,
+        metavar="S",
+        help="seconds to wait for the master to accept a connection, and for "
+        "each part of its reply (default: 2)",
+    )
 
 
 def add_profile(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--profile", "-p", metavar="PROFILE.yaml",
-                        help="identification profile (default: the shipped "
-                             "rules/identification.yaml)")
+    parser.add_argument(
+        "--profile",
+        "-p",
+        metavar="PROFILE.yaml",
+        help="identification profile (default: the shipped rules/identification.yaml)",
+    )
 
 
-def add_rules(parser: argparse.ArgumentParser,
-              help: str = "rule set to use instead of the one the team file names "
-                          "(default: the team's 'rules:', else the shipped paper rules)"
-              ) -> None:
+def add_rules(
+    parser: argparse.ArgumentParser,
+    help: str = "rule set to use instead of the one the team file names "
+    "(default: the team's 'rules:', else the shipped paper rules)",
+) -> None:
     parser.add_argument("--rules", "-r", metavar="RULES.yaml", help=help)
 
 
@@ -96,8 +138,10 @@ def team_path(text: str) -> Path:
     if not path.exists() and not path.suffix and path.name == text:
         # A bare word is a shipped team's name or a typo of one: say which names exist.
         names = sorted(team.stem for team in shipped_path("teams").glob("*.yaml"))
-        raise InputError.at(text, "no such file, and no shipped team of that name; shipped "
-                                  f"teams: {', '.join(names)}")
+        raise InputError.at(
+            text,
+            f"no such file, and no shipped team of that name; shipped teams: {', '.join(names)}",
+        )
     return path
 
 

@@ -31,8 +31,9 @@ def wanted(fmt: str = "text", stream: IO[str] | None = None) -> bool:
 
 
 @contextmanager
-def working(what: str, *, fmt: str = "text", delay: float = DELAY,
-            console: Any = None) -> Iterator[None]:
+def working(
+    what: str, *, fmt: str = "text", delay: float = DELAY, console: Any = None
+) -> Iterator[None]:
     """Show ``what`` with a spinner while the block runs, past ``delay`` seconds (see module).
 
     ``console``: a rich Console to draw on (default: stderr's, when :func:`wanted`).

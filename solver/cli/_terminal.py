@@ -24,8 +24,9 @@ __all__ = ["EscapingStream", "escape_controls", "raw_stream"]
 
 # C0 controls but newline and tab, DEL, C1 controls, and the invisible format characters that
 # reorder or hide text (bidirectional overrides and isolates, zero-width joiners, BOM).
-_UNSAFE = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u200b-\u200f\u2028-\u202e\u2060-\u2069"
-                     "\ufeff\ud800-\udfff]")
+_UNSAFE = re.compile(
+    "[\x00-\x08\x0b-\x1f\x7f-\x9f\u200b-\u200f\u2028-\u202e\u2060-\u2069\ufeff\ud800-\udfff]"
+)
 
 
 def _escape(match: re.Match[str]) -> str:

@@ -21,29 +21,51 @@ from solver.cli._common import (
 
 def register(subparsers: Any) -> None:
     parser: argparse.ArgumentParser = subparsers.add_parser(
-        "assign", help="the UI configuration for one characteristic combination",
+        "assign",
+        help="the UI configuration for one characteristic combination",
         description="Give one characteristic combination its UI configuration number and "
-                    "components, or the default configuration with the reason it is invalid "
-                    "and the components relevant to the values that are known. Exits 0 in "
-                    "both cases.")
-    parser.add_argument("combination", nargs="*", metavar="NAME=VALUE",
-                        help="characteristic values, e.g. kinematic_type=UAV "
-                             "'sensor_type=2D Camera' sensor_count=3 (with --master: values "
-                             "that replace or complete what the robot's metadata gives)")
-    parser.add_argument("--team", "-t", required=True, metavar="TEAM.yaml",
-                        help="team selection file (or a shipped team name)")
+        "components, or the default configuration with the reason it is invalid "
+        "and the components relevant to the values that are known. Exits 0 in "
+        "both cases.",
+    )
+    parser.add_argument(
+        "combination",
+        nargs="*",
+        metavar="NAME=VALUE",
+        help="characteristic values, e.g. kinematic_type=UAV "
+        "'sensor_type=2D Camera' sensor_count=3 (with --master: values "
+        "that replace or complete what the robot's metadata gives)",
+    )
+    parser.add_argument(
+        "--team",
+        "-t",
+        required=True,
+        metavar="TEAM.yaml",
+        help="team selection file (or a shipped team name)",
+    )
     add_rules(parser)
     add_format(parser, ("text", "json"))
     # Live mode (solver.live.query): the robot's values come from a running ROS master.
     add_master_options(parser, required_help="read the robot's values from this master")
-    parser.add_argument("--robot", metavar="NS",
-                        help="with --master: the robot's namespace, e.g. /uav1 (default: "
-                             "/teleop_ui/active_robot); required with --ros2")
-    parser.add_argument("--ros2", action="store_true",
-                        help="read the robot from a ROS 2 graph on DDS instead (the [ros2] "
-                             "extra; see docs/live.md)")
-    parser.add_argument("--domain", type=int, default=None, metavar="N",
-                        help="with --ros2: the DDS domain id (default: $ROS_DOMAIN_ID, else 0)")
+    parser.add_argument(
+        "--robot",
+        metavar="NS",
+        help="with --master: the robot's namespace, e.g. /uav1 (default: "
+        "/teleop_ui/active_robot); required with --ros2",
+    )
+    parser.add_argument(
+        "--ros2",
+        action="store_true",
+        help="read the robot from a ROS 2 graph on DDS instead (the [ros2] "
+        "extra; see docs/live.md)",
+    )
+    parser.add_argument(
+        "--domain",
+        type=int,
+        default=None,
+        metavar="N",
+        help="with --ros2: the DDS domain id (default: $ROS_DOMAIN_ID, else 0)",
+    )
     add_profile(parser)
     parser.set_defaults(run=run)
 
@@ -78,8 +100,14 @@ def run_live(args: argparse.Namespace, combination: dict[str, str]) -> int:
 
     master = master_uri(args.master)
     solution = solve(load_team_argument(args.team, args.rules))
-    live = assign_from_master(master, solution, load_profile(args.profile), robot=args.robot,
-                              given=combination, timeout=args.timeout)
+    live = assign_from_master(
+        master,
+        solution,
+        load_profile(args.profile),
+        robot=args.robot,
+        given=combination,
+        timeout=args.timeout,
+    )
     write(render_live_assignment(live, solution, args.format))
     return 0
 
@@ -95,11 +123,15 @@ def run_ros2(args: argparse.Namespace, combination: dict[str, str]) -> int:
 
     domain = ros2_domain(args)
     if args.robot is None:
-        raise InputError.at("<arguments>", "--ros2 needs --robot NS (the active robot is a "
-                                           "topic on ROS 2: `watch --ros2` answers it)")
+        raise InputError.at(
+            "<arguments>",
+            "--ros2 needs --robot NS (the active robot is a "
+            "topic on ROS 2: `watch --ros2` answers it)",
+        )
     solution = solve(load_team_argument(args.team, args.rules))
     source = DdsGraph(domain)
-    live = assign_from_graph(source, solution, load_profile(args.profile), robot=args.robot,
-                             given=combination)
+    live = assign_from_graph(
+        source, solution, load_profile(args.profile), robot=args.robot, given=combination
+    )
     write(render_live_assignment(live, solution, args.format))
     return 0

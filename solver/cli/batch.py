@@ -31,27 +31,53 @@ def _default_jobs() -> int:
 
 def register(subparsers: Any) -> None:
     parser: argparse.ArgumentParser = subparsers.add_parser(
-        "batch", help="solve many team files at once: progress, summary, per-team JSON",
+        "batch",
+        help="solve many team files at once: progress, summary, per-team JSON",
         description="Solve every team file named by the patterns (files, shipped team names "
-                    "such as case3, folders searched recursively, or globs such as "
-                    "'teams/**/*.yaml'; quote them) in parallel. Writes DIR/teams/<name>.json "
-                    "per team (the JSON of 'solve --format json --list'), DIR/summary.csv and "
-                    "DIR/summary.md. A rerun skips teams whose "
-                    "team file, rule file and options are unchanged (content hashes kept in "
-                    "DIR/.stamps/). Exit 0 all solved, 1 some team failed, 2 nothing could run.")
-    parser.add_argument("patterns", nargs="+", metavar="PATTERN",
-                        help="team file, shipped team name, folder or glob pattern")
-    parser.add_argument("--output", "-o", required=True, metavar="DIR",
-                        help="folder for the per-team outputs and the summary")
-    parser.add_argument("--jobs", "-j", type=positive, default=_default_jobs(), metavar="N",
-                        help="worker processes (default: the CPUs available, here "
-                             f"{_default_jobs()})")
-    parser.add_argument("--force", action="store_true",
-                        help="solve every team again, even those that are up to date")
-    parser.add_argument("--report", choices=("html", "markdown"),
-                        help="also write a report per team (DIR/teams/<name>.html or .md)")
-    parser.add_argument("--rules", "-r", metavar="RULES.yaml",
-                        help="rule set for every team instead of each team's own 'rules:'")
+        "such as case3, folders searched recursively, or globs such as "
+        "'teams/**/*.yaml'; quote them) in parallel. Writes DIR/teams/<name>.json "
+        "per team (the JSON of 'solve --format json --list'), DIR/summary.csv and "
+        "DIR/summary.md. A rerun skips teams whose "
+        "team file, rule file and options are unchanged (content hashes kept in "
+        "DIR/.stamps/). Exit 0 all solved, 1 some team failed, 2 nothing could run.",
+    )
+    parser.add_argument(
+        "patterns",
+        nargs="+",
+        metavar="PATTERN",
+        help="team file, shipped team name, folder or glob pattern",
+    )
+    parser.add_argument(
+        "--output",
+        "-o",
+        required=True,
+        metavar="DIR",
+        help="folder for the per-team outputs and the summary",
+    )
+    parser.add_argument(
+        "--jobs",
+        "-j",
+        type=positive,
+        default=_default_jobs(),
+        metavar="N",
+        help=f"worker processes (default: the CPUs available, here {_default_jobs()})",
+    )
+    parser.add_argument(
+        "--force",
+        action="store_true",
+        help="solve every team again, even those that are up to date",
+    )
+    parser.add_argument(
+        "--report",
+        choices=("html", "markdown"),
+        help="also write a report per team (DIR/teams/<name>.html or .md)",
+    )
+    parser.add_argument(
+        "--rules",
+        "-r",
+        metavar="RULES.yaml",
+        help="rule set for every team instead of each team's own 'rules:'",
+    )
     parser.set_defaults(run=run)
 
 
@@ -69,27 +95,42 @@ def run(args: argparse.Namespace) -> int:
         from solver.rules import load_rules
 
         load_rules(args.rules)  # a bad override would fail every team: say so once
-    jobs = plan(find_teams(args.patterns), out, rules=args.rules, report=args.report,
-                force=args.force)
+    jobs = plan(
+        find_teams(args.patterns), out, rules=args.rules, report=args.report, force=args.force
+    )
     show = _progress_bar if sys.stderr.isatty() else _progress_lines
     outcomes = list(show(run_batch(jobs, args.jobs), len(jobs), sys.stderr))
     rows, written = write_summary(outcomes, jobs, out)
-    write(text_table(["file", "status", "team", "rules", "valid robots", "UI configurations"],
-                     [[r.file, r.status, r.team, r.rules, r.valid_robots, r.ui_configurations]
-                      for r in rows], [False, False, False, False, True, True]))
+    write(
+        text_table(
+            ["file", "status", "team", "rules", "valid robots", "UI configurations"],
+            [
+                [r.file, r.status, r.team, r.rules, r.valid_robots, r.ui_configurations]
+                for r in rows
+            ],
+            [False, False, False, False, True, True],
+        )
+    )
     actions = [o.action for o in outcomes]
-    counts = ", ".join(f"{actions.count(a)} {a}" for a in ("solved", "up to date", "failed",
-                                                           "skipped") if a in actions)
-    print(f"{len(jobs)} team files: {counts}; summary: "
-          f"{', '.join(str(p) for p in written)}", file=sys.stderr)
+    counts = ", ".join(
+        f"{actions.count(a)} {a}"
+        for a in ("solved", "up to date", "failed", "skipped")
+        if a in actions
+    )
+    print(
+        f"{len(jobs)} team files: {counts}; summary: {', '.join(str(p) for p in written)}",
+        file=sys.stderr,
+    )
     return 1 if any(o.failed for o in outcomes) else 0
 
 
 def _describe(outcome: Outcome) -> str:
     row = outcome.row
     if outcome.action in ("solved", "up to date"):
-        text = f"{row.file}: {row.valid_robots} valid robots, {row.ui_configurations} UI " \
-               f"configurations"
+        text = (
+            f"{row.file}: {row.valid_robots} valid robots, {row.ui_configurations} UI "
+            f"configurations"
+        )
         text += f" ({outcome.seconds:.2f} s)" if outcome.action == "solved" else ""
         # A solved team's warnings (the summary's message column): one line each.
         warnings = re.split(r"; (?=warning: )", row.message) if row.message else []
@@ -99,19 +140,18 @@ def _describe(outcome: Outcome) -> str:
     return row.file + "\n" + "\n".join(f"    {line}" for line in row.message.splitlines())
 
 
-def _progress_lines(outcomes: Iterator[Outcome], total: int, stream: IO[str]
-                    ) -> Iterator[Outcome]:
+def _progress_lines(outcomes: Iterator[Outcome], total: int, stream: IO[str]) -> Iterator[Outcome]:
     """One line per finished team, for logs and pipes."""
     width = len(str(total))
     for done, outcome in enumerate(outcomes, 1):
         action = "FAILED" if outcome.failed else outcome.action
-        print(f"[{done:>{width}}/{total}] {action:<10} {_describe(outcome)}", file=stream,
-              flush=True)
+        print(
+            f"[{done:>{width}}/{total}] {action:<10} {_describe(outcome)}", file=stream, flush=True
+        )
         yield outcome
 
 
-def _progress_bar(outcomes: Iterator[Outcome], total: int, stream: IO[str]
-                  ) -> Iterator[Outcome]:
+def _progress_bar(outcomes: Iterator[Outcome], total: int, stream: IO[str]) -> Iterator[Outcome]:
     """A rich progress bar; failures are printed above it as they happen."""
     from rich.console import Console
     from rich.markup import escape
@@ -122,20 +162,30 @@ def _progress_bar(outcomes: Iterator[Outcome], total: int, stream: IO[str]
     # The bar's own escape sequences go to the terminal as they are; every name and message
     # in it is escaped first (they come from team files).
     console = Console(file=raw_stream(stream))
-    colours: dict[str, str] = {"solved": "green", "up to date": "cyan", "failed": "bold red",
-                               "skipped": "yellow"}
-    with Progress(TextColumn("[bold]solving teams"), BarColumn(), MofNCompleteColumn(),
-                  TimeElapsedColumn(), TextColumn("{task.description}"), console=console,
-                  transient=False) as progress:
+    colours: dict[str, str] = {
+        "solved": "green",
+        "up to date": "cyan",
+        "failed": "bold red",
+        "skipped": "yellow",
+    }
+    with Progress(
+        TextColumn("[bold]solving teams"),
+        BarColumn(),
+        MofNCompleteColumn(),
+        TimeElapsedColumn(),
+        TextColumn("{task.description}"),
+        console=console,
+        transient=False,
+    ) as progress:
         task = progress.add_task("", total=total)
         for outcome in outcomes:
             if outcome.action in ("failed", "skipped"):
                 label = "FAILED" if outcome.failed else outcome.action
-                progress.console.print(f"[{colours[outcome.action]}]{label}[/] "
-                                       f"{escape(escape_controls(_describe(outcome)))}",
-                                       highlight=False,
-                                       soft_wrap=True)
-            progress.update(task, advance=1,
-                            description=escape(escape_controls(outcome.job.shown)))
+                progress.console.print(
+                    f"[{colours[outcome.action]}]{label}[/] "
+                    f"{escape(escape_controls(_describe(outcome)))}",
+                    highlight=False,
+                    soft_wrap=True,
+                )
+            progress.update(task, advance=1, description=escape(escape_controls(outcome.job.shown)))
             yield outcome
-

@@ -20,15 +20,21 @@ if TYPE_CHECKING:
 
 def register(subparsers: Any) -> None:
     parser: argparse.ArgumentParser = subparsers.add_parser(
-        "count", help="exact counts at any size; --symbolic: formulas of the maxima",
+        "count",
+        help="exact counts at any size; --symbolic: formulas of the maxima",
         description="Count valid robots and UI configurations per kinematic type without "
-                    "listing them. FILE is a team file, or a rule set (then every value of "
-                    "every kinematic type is selected: the whole design space). --symbolic "
-                    "gives the counts as formulas of each type's maximum count (sympy).")
+        "listing them. FILE is a team file, or a rule set (then every value of "
+        "every kinematic type is selected: the whole design space). --symbolic "
+        "gives the counts as formulas of each type's maximum count (sympy).",
+    )
     parser.add_argument("file", metavar="FILE.yaml", help="team file or rule set file")
     add_rules(parser)
-    parser.add_argument("--symbolic", "-s", action="store_true",
-                        help="counts as closed-form expressions of each type's maximum")
+    parser.add_argument(
+        "--symbolic",
+        "-s",
+        action="store_true",
+        help="counts as closed-form expressions of each type's maximum",
+    )
     add_engine(parser)
     add_format(parser, ("text", "json", "markdown"))
     parser.set_defaults(run=run)
@@ -58,8 +64,7 @@ def run(args: argparse.Namespace) -> int:
 
     team = load(args.file, args.rules)
     with working(f"counting {team.name}", fmt=args.format):
-        solution = solve(team, engine=args.engine, count_only=True,
-                         max_robots=args.max_robots)
+        solution = solve(team, engine=args.engine, count_only=True, max_robots=args.max_robots)
     if not args.symbolic:
         write(render_counts(solution, args.format))
         return 0

@@ -10,11 +10,16 @@ from solver.cli._common import add_rules, load_team_argument, write
 
 def register(subparsers: Any) -> None:
     parser: argparse.ArgumentParser = subparsers.add_parser(
-        "export", help="export a team's design space as a UVL feature model",
+        "export",
+        help="export a team's design space as a UVL feature model",
         description="Write the team's valid robots as a UVL feature model (one alternative "
-                    "group per characteristic) for feature-model tools such as flamapy.")
-    parser.add_argument("team", metavar="TEAM.yaml",
-                        help="team selection file (or a shipped team name: case1, case3, ...)")
+        "group per characteristic) for feature-model tools such as flamapy.",
+    )
+    parser.add_argument(
+        "team",
+        metavar="TEAM.yaml",
+        help="team selection file (or a shipped team name: case1, case3, ...)",
+    )
     add_rules(parser)
     parser.add_argument("--format", choices=("uvl",), default="uvl", help="uvl (the default)")
     parser.set_defaults(run=run)

@@ -17,18 +17,22 @@ from solver.cli.identify import (
 
 def register(subparsers: Any) -> None:
     parser: argparse.ArgumentParser = subparsers.add_parser(
-        "fleet", help="identify every robot in a folder and build their team selection",
+        "fleet",
+        help="identify every robot in a folder and build their team selection",
         description="Identify every NAME.urdf / NAME.urdf.xacro / NAME.xacro in a folder "
-                    "(with NAME.srdf, NAME.topics[.txt] and NAME.bag beside it when present), "
-                    "print a table (or the JSON list), and with -o write a team selection "
-                    "that `teleop-ui solve` accepts. Robots that cannot be identified are "
-                    "listed with the reason; the others still go through.")
+        "(with NAME.srdf, NAME.topics[.txt] and NAME.bag beside it when present), "
+        "print a table (or the JSON list), and with -o write a team selection "
+        "that `teleop-ui solve` accepts. Robots that cannot be identified are "
+        "listed with the reason; the others still go through.",
+    )
     parser.add_argument("folder", metavar="ROBOTS/", help="folder of robot descriptions")
-    parser.add_argument("--output", "-o", metavar="TEAM.yaml",
-                        help="write the team selection here")
+    parser.add_argument("--output", "-o", metavar="TEAM.yaml", help="write the team selection here")
     parser.add_argument("--name", help="team name (default: 'fleet FOLDER')")
-    add_rules(parser, "rule set the robots are mapped to and the written team names (default: the "
-                      "shipped paper rules)")
+    add_rules(
+        parser,
+        "rule set the robots are mapped to and the written team names (default: the "
+        "shipped paper rules)",
+    )
     add_description_options(parser)
     add_format(parser, ("text", "json"))
     parser.set_defaults(run=run)
@@ -45,10 +49,16 @@ def run(args: argparse.Namespace) -> int:
 
     rules, profile = load_rules_and_profile(args.rules, args.profile)
     with _progress() as progress:
-        fleet = identify_fleet(args.folder, rules=rules, profile=profile,
-                               package_path=package_path(args.package_path),
-                               xacro_args=xacro_arguments(args.xacro_args), progress=progress,
-                               trust_xacro=args.trust_xacro, strict=args.strict)
+        fleet = identify_fleet(
+            args.folder,
+            rules=rules,
+            profile=profile,
+            package_path=package_path(args.package_path),
+            xacro_args=xacro_arguments(args.xacro_args),
+            progress=progress,
+            trust_xacro=args.trust_xacro,
+            strict=args.strict,
+        )
     team = None
     if args.output:
         reference = None
@@ -59,13 +69,32 @@ def run(args: argparse.Namespace) -> int:
     if args.format == "json":
         write(dumps([identification_data(i) for i in fleet.identified]))
     else:
-        rows = [[e.name, e.identification.structure, e.identification.kinematic_type or "-",
-                 f"{e.identification.confidence:.2f}", e.identification.sensor_count,
-                 ", ".join(c.motion_control for c in e.identification.motion_controls) or "-"]
-                for e in fleet.entries if e.identification is not None]
-        write(text_table(["robot", "structure", "kinematic type", "confidence", "sensors",
-                          "motion controls"], rows,
-                         [False, False, False, True, True, False]))
+        rows = [
+            [
+                e.name,
+                e.identification.structure,
+                e.identification.kinematic_type or "-",
+                f"{e.identification.confidence:.2f}",
+                e.identification.sensor_count,
+                ", ".join(c.motion_control for c in e.identification.motion_controls) or "-",
+            ]
+            for e in fleet.entries
+            if e.identification is not None
+        ]
+        write(
+            text_table(
+                [
+                    "robot",
+                    "structure",
+                    "kinematic type",
+                    "confidence",
+                    "sensors",
+                    "motion controls",
+                ],
+                rows,
+                [False, False, False, True, True, False],
+            )
+        )
         for entry in fleet.failed:
             write(f"not identified: {entry.name}: {entry.error}\n")
         for found in fleet.identified:
@@ -114,6 +143,8 @@ class _progress:
 
         if self._task is None:
             self._task = self._bar.add_task("identifying", total=total)
-        self._bar.update(self._task, completed=done,
-                         description=f"identifying {escape(escape_controls(name))}" if name
-                         else "done")
+        self._bar.update(
+            self._task,
+            completed=done,
+            description=f"identifying {escape(escape_controls(name))}" if name else "done",
+        )

@@ -17,44 +17,78 @@ if TYPE_CHECKING:
 def add_description_options(parser: argparse.ArgumentParser) -> None:
     """Options ``identify`` and ``fleet`` share: profile, xacro arguments, package path."""
     add_profile(parser)
-    parser.add_argument("--arg", dest="xacro_args", action="append", default=[],
-                        metavar="NAME:=VALUE", help="xacro argument (repeatable)")
-    parser.add_argument("--trust-xacro", action="store_true",
-                        help="compile .xacro files: xacro runs Python code written in the file, "
-                             "so only for files you trust (run in a child process with CPU, "
-                             "memory and time limits; see docs/security.md)")
-    parser.add_argument("--strict", action="store_true",
-                        help="treat the description's and SRDF's warnings (flaws read past: a "
-                             "missing link, a duplicate, a joint type outside the spec) as "
-                             "errors, exit 2")
-    parser.add_argument("--package-path", action="append", default=[], metavar="DIR",
-                        help="folder holding ROS packages for $(find pkg) and package:// "
-                             "(repeatable; default: $TELEOP_UI_PACKAGE_PATH)")
+    parser.add_argument(
+        "--arg",
+        dest="xacro_args",
+        action="append",
+        default=[],
+        metavar="NAME:=VALUE",
+        help="xacro argument (repeatable)",
+    )
+    parser.add_argument(
+        "--trust-xacro",
+        action="store_true",
+        help="compile .xacro files: xacro runs Python code written in the file, "
+        "so only for files you trust (run in a child process with CPU, "
+        "memory and time limits; see docs/security.md)",
+    )
+    parser.add_argument(
+        "--strict",
+        action="store_true",
+        help="treat the description's and SRDF's warnings (flaws read past: a "
+        "missing link, a duplicate, a joint type outside the spec) as "
+        "errors, exit 2",
+    )
+    parser.add_argument(
+        "--package-path",
+        action="append",
+        default=[],
+        metavar="DIR",
+        help="folder holding ROS packages for $(find pkg) and package:// "
+        "(repeatable; default: $TELEOP_UI_PACKAGE_PATH)",
+    )
 
 
 def register(subparsers: Any) -> None:
     parser: argparse.ArgumentParser = subparsers.add_parser(
-        "identify", help="identify a robot (kinematic type, sensors, motion controls) from its "
-                         "URDF, SRDF, topics or bag",
+        "identify",
+        help="identify a robot (kinematic type, sensors, motion controls) from its "
+        "URDF, SRDF, topics or bag",
         description="Read a robot's URDF (a .xacro only with --trust-xacro), and optionally "
-                    "its SRDF, "
-                    "topic lists and bags; print its structure, the rule set's kinematic type, "
-                    "a confidence, the evidence, its sensors and motion controls. With --team, "
-                    "also each characteristic combination and its UI configuration.")
-    parser.add_argument("description", metavar="ROBOT.urdf",
-                        help="URDF or xacro file")
+        "its SRDF, "
+        "topic lists and bags; print its structure, the rule set's kinematic type, "
+        "a confidence, the evidence, its sensors and motion controls. With --team, "
+        "also each characteristic combination and its UI configuration.",
+    )
+    parser.add_argument("description", metavar="ROBOT.urdf", help="URDF or xacro file")
     parser.add_argument("--srdf", metavar="ROBOT.srdf", help="MoveIt SRDF of the robot")
-    parser.add_argument("--topics", action="append", default=[], metavar="TOPICS.txt",
-                        help="topic list: `rostopic list -v`, `ros2 topic list -t`, or "
-                             "'TOPIC TYPE' lines (repeatable)")
-    parser.add_argument("--bag", action="append", default=[], metavar="RUN.bag",
-                        help="recorded bag: ROS 1 .bag, ROS 2 folder, .db3 or .mcap "
-                             "(repeatable)")
-    parser.add_argument("--team", "-t", metavar="TEAM.yaml",
-                        help="team selection: also give each combination its UI configuration")
-    add_rules(parser, "rule set whose kinematic types, sensor types and motion controls the "
-                      "robot is mapped to (default: the --team file's rules, else the shipped "
-                      "paper rules)")
+    parser.add_argument(
+        "--topics",
+        action="append",
+        default=[],
+        metavar="TOPICS.txt",
+        help="topic list: `rostopic list -v`, `ros2 topic list -t`, or "
+        "'TOPIC TYPE' lines (repeatable)",
+    )
+    parser.add_argument(
+        "--bag",
+        action="append",
+        default=[],
+        metavar="RUN.bag",
+        help="recorded bag: ROS 1 .bag, ROS 2 folder, .db3 or .mcap (repeatable)",
+    )
+    parser.add_argument(
+        "--team",
+        "-t",
+        metavar="TEAM.yaml",
+        help="team selection: also give each combination its UI configuration",
+    )
+    add_rules(
+        parser,
+        "rule set whose kinematic types, sensor types and motion controls the "
+        "robot is mapped to (default: the --team file's rules, else the shipped "
+        "paper rules)",
+    )
     add_description_options(parser)
     add_format(parser, ("text", "json"))
     parser.set_defaults(run=run)
@@ -98,11 +132,17 @@ def run(args: argparse.Namespace) -> int:
 
     team = load_team_argument(args.team, args.rules) if args.team else None
     rules, profile = load_rules_and_profile(None if team else args.rules, args.profile)
-    result = identify(args.description, srdf=args.srdf, topic_lists=args.topics,
-                      bags=args.bag, xacro_args=xacro_arguments(args.xacro_args),
-                      package_path=package_path(args.package_path),
-                      rules=team.rules if team else rules, profile=profile,
-                      trust_xacro=args.trust_xacro)
+    result = identify(
+        args.description,
+        srdf=args.srdf,
+        topic_lists=args.topics,
+        bags=args.bag,
+        xacro_args=xacro_arguments(args.xacro_args),
+        package_path=package_path(args.package_path),
+        rules=team.rules if team else rules,
+        profile=profile,
+        trust_xacro=args.trust_xacro,
+    )
     if args.strict and result.warnings:
         from solver.errors import InputError
 

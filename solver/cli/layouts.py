@@ -10,28 +10,47 @@ from solver.cli._common import add_rules, load_team_argument, write
 
 def register(subparsers: Any) -> None:
     parser: argparse.ArgumentParser = subparsers.add_parser(
-        "layouts", help="write one viewer layout per UI configuration, plus the default",
+        "layouts",
+        help="write one viewer layout per UI configuration, plus the default",
         description="Write a Foxglove / Lichtblick layout JSON for every UI configuration of a "
-                    "team and for the default configuration; topics are <robot>/... templates.")
-    parser.add_argument("team", metavar="TEAM.yaml", nargs="?",
-                        help="team selection file (or a shipped team name: case1, case3, ...)")
-    parser.add_argument("--robot", metavar="URDF",
-                        help="one robot's layout: identify the URDF, give it its configuration "
-                             "and write that one layout to -o FILE, topics under its name")
-    parser.add_argument("--team", dest="robot_team", metavar="TEAM.yaml",
-                        help="the team the --robot belongs to")
+        "team and for the default configuration; topics are <robot>/... templates.",
+    )
+    parser.add_argument(
+        "team",
+        metavar="TEAM.yaml",
+        nargs="?",
+        help="team selection file (or a shipped team name: case1, case3, ...)",
+    )
+    parser.add_argument(
+        "--robot",
+        metavar="URDF",
+        help="one robot's layout: identify the URDF, give it its configuration "
+        "and write that one layout to -o FILE, topics under its name",
+    )
+    parser.add_argument(
+        "--team", dest="robot_team", metavar="TEAM.yaml", help="the team the --robot belongs to"
+    )
     add_rules(parser)
-    parser.add_argument("-o", "--output", metavar="DIR", required=True,
-                        help="directory for the layout files")
-    parser.add_argument("--format", choices=("foxglove", "rviz"), default="foxglove",
-                        help="foxglove: Foxglove / Lichtblick layout JSON (default); "
-                             "rviz: RViz2 .rviz files")
-    parser.add_argument("--profile", metavar="FILE",
-                        help="presentation profile (default: the shipped "
-                             "rules/presentation.yaml)")
-    parser.add_argument("--preview", action="store_true",
-                        help="also write DIR/preview.html: one thumbnail of each layout's "
-                             "panel tree (foxglove format)")
+    parser.add_argument(
+        "-o", "--output", metavar="DIR", required=True, help="directory for the layout files"
+    )
+    parser.add_argument(
+        "--format",
+        choices=("foxglove", "rviz"),
+        default="foxglove",
+        help="foxglove: Foxglove / Lichtblick layout JSON (default); rviz: RViz2 .rviz files",
+    )
+    parser.add_argument(
+        "--profile",
+        metavar="FILE",
+        help="presentation profile (default: the shipped rules/presentation.yaml)",
+    )
+    parser.add_argument(
+        "--preview",
+        action="store_true",
+        help="also write DIR/preview.html: one thumbnail of each layout's "
+        "panel tree (foxglove format)",
+    )
     parser.set_defaults(run=run)
 
 
@@ -63,8 +82,9 @@ def run(args: argparse.Namespace) -> int:
         from solver.layouts.preview import preview_html
 
         page = Path(args.output) / "preview.html"
-        write_atomic(page, preview_html([(path.name, json.loads(path.read_text()))
-                                         for path in paths]))
+        write_atomic(
+            page, preview_html([(path.name, json.loads(path.read_text())) for path in paths])
+        )
         write(f"wrote {page}\n")
     return 0
 
@@ -85,8 +105,9 @@ def _robot(args: argparse.Namespace) -> int:
     if not args.robot_team:
         raise InputError.at("--robot", "--robot needs --team TEAM.yaml")
     solution = solve(load_team_argument(args.robot_team, args.rules))
-    identification = identify_urdf(read_bytes(args.robot, display=args.robot),
-                                   file=args.robot, rules=solution.rules)
+    identification = identify_urdf(
+        read_bytes(args.robot, display=args.robot), file=args.robot, rules=solution.rules
+    )
     # The robot's first control mode and sensor type: the combination it starts in.
     combination: dict[str, str | int] = {"sensor_count": max(1, identification.sensor_count)}
     if identification.kinematic_type:
@@ -101,18 +122,26 @@ def _robot(args: argparse.Namespace) -> int:
     # The robot's own number of sensor tiles: g(i) of its sensor count.
     tile_count = None
     if assignment.configuration is not None:
-        count_position = next(position for position, c in enumerate(solution.rules.characteristics)
-                              if c.kind == "integer")
+        count_position = next(
+            position
+            for position, c in enumerate(solution.rules.characteristics)
+            if c.kind == "integer"
+        )
         tile_count = assignment.configuration.components[count_position].clusters(
-            int(combination["sensor_count"]))
+            int(combination["sensor_count"])
+        )
     if args.format == "foxglove":
-        layout = foxglove_layout(solution, assignment.configuration, profile, robot=namespace,
-                                 tile_count=tile_count)
+        layout = foxglove_layout(
+            solution, assignment.configuration, profile, robot=namespace, tile_count=tile_count
+        )
         validate_foxglove(layout, args.output)
         text = json.dumps(layout, indent=2, sort_keys=True) + "\n"
     else:
-        text = rviz_text(rviz_layout(solution, assignment.configuration, profile,
-                                     robot=namespace, tile_count=tile_count))
+        text = rviz_text(
+            rviz_layout(
+                solution, assignment.configuration, profile, robot=namespace, tile_count=tile_count
+            )
+        )
         validate_rviz(text, args.output)
     write_atomic(Path(args.output), text)
     write(f"{identification.robot}: configuration {assignment.number}; wrote {args.output}\n")

@@ -11,17 +11,27 @@ from solver.cli._common import add_rules, load_team_argument
 
 def register(subparsers: Any) -> None:
     parser: argparse.ArgumentParser = subparsers.add_parser(
-        "report", help="write a report with tables, charts and every UI configuration",
+        "report",
+        help="write a report with tables, charts and every UI configuration",
         description="Solve a team and write a report: counts per kinematic type, the "
-                    "comparison with published figures, the radar and bar charts, the team's "
-                    "selections and every UI configuration with its components. The format "
-                    "follows the file name: .html (one self-contained page) or .md (Markdown; "
-                    "its PNG charts are written beside it as NAME-radar.png and "
-                    "NAME-bars.png).")
-    parser.add_argument("team", metavar="TEAM.yaml",
-                        help="team selection file (or a shipped team name: case1, case3, ...)")
-    parser.add_argument("--output", "-o", required=True, metavar="FILE",
-                        help="report file: .html/.htm or .md/.markdown")
+        "comparison with published figures, the radar and bar charts, the team's "
+        "selections and every UI configuration with its components. The format "
+        "follows the file name: .html (one self-contained page) or .md (Markdown; "
+        "its PNG charts are written beside it as NAME-radar.png and "
+        "NAME-bars.png).",
+    )
+    parser.add_argument(
+        "team",
+        metavar="TEAM.yaml",
+        help="team selection file (or a shipped team name: case1, case3, ...)",
+    )
+    parser.add_argument(
+        "--output",
+        "-o",
+        required=True,
+        metavar="FILE",
+        help="report file: .html/.htm or .md/.markdown",
+    )
     add_rules(parser)
     parser.set_defaults(run=run)
 

@@ -10,17 +10,25 @@ from solver.cli._common import add_engine, add_rules, load_team_argument
 
 def register(subparsers: Any) -> None:
     parser: argparse.ArgumentParser = subparsers.add_parser(
-        "robots", help="list every valid robot with its UI configuration number",
+        "robots",
+        help="list every valid robot with its UI configuration number",
         description="Stream every valid robot combination of a team, one per line, with the "
-                    "number of the UI configuration it is given (the lookup table an operator "
-                    "station needs). Robots are enumerated, not counted: the --max-robots "
-                    "guard applies.")
-    parser.add_argument("team", metavar="TEAM.yaml",
-                        help="team selection file (or a shipped team name)")
+        "number of the UI configuration it is given (the lookup table an operator "
+        "station needs). Robots are enumerated, not counted: the --max-robots "
+        "guard applies.",
+    )
+    parser.add_argument(
+        "team", metavar="TEAM.yaml", help="team selection file (or a shipped team name)"
+    )
     add_rules(parser)
     add_engine(parser, enumerate_only=True)
-    parser.add_argument("--format", "-f", choices=("csv", "jsonl"), default="csv",
-                        help="csv (default) or JSON lines")
+    parser.add_argument(
+        "--format",
+        "-f",
+        choices=("csv", "jsonl"),
+        default="csv",
+        help="csv (default) or JSON lines",
+    )
     parser.set_defaults(run=run)
 
 
@@ -38,6 +46,7 @@ def run(args: argparse.Namespace) -> int:
         # Numbering needs the partition, which the structure gives without enumerating; the
         # listing then enumerates with the engine asked for.
         solution = solve(team, max_robots=args.max_robots)
-        write_robots(solution, sys.stdout, fmt=args.format, engine=args.engine,
-                     max_robots=args.max_robots)
+        write_robots(
+            solution, sys.stdout, fmt=args.format, engine=args.engine, max_robots=args.max_robots
+        )
     return 0

@@ -12,25 +12,41 @@ FORMATS = ("text", "json", "csv", "markdown")
 
 def register(subparsers: Any) -> None:
     parser: argparse.ArgumentParser = subparsers.add_parser(
-        "solve", help="count valid robots and the UI configurations that serve them",
+        "solve",
+        help="count valid robots and the UI configurations that serve them",
         description="Enumerate the valid robots of a team selection, partition them into UI "
-                    "configurations and number the configurations.")
-    parser.add_argument("team", metavar="TEAM.yaml",
-                        help="team selection file (or a shipped team name: case1, case3, ...)")
+        "configurations and number the configurations.",
+    )
+    parser.add_argument(
+        "team",
+        metavar="TEAM.yaml",
+        help="team selection file (or a shipped team name: case1, case3, ...)",
+    )
     add_rules(parser)
-    parser.add_argument("--list", "-l", action="store_true",
-                        help="list every UI configuration with its components")
+    parser.add_argument(
+        "--list", "-l", action="store_true", help="list every UI configuration with its components"
+    )
     add_engine(parser)
-    parser.add_argument("--count-only", action="store_true",
-                        help="exact counts only, at any size: no configuration list")
+    parser.add_argument(
+        "--count-only",
+        action="store_true",
+        help="exact counts only, at any size: no configuration list",
+    )
     add_format(parser, FORMATS)
-    parser.add_argument("--plot", metavar="FILE",
-                        help="also draw the team's radar chart (the article's Figure 9) to FILE; "
-                             "the format follows the extension: .png, .svg or .pdf")
-    parser.add_argument("--plot-kind", choices=("radar", "bars", "matrix"), default="radar",
-                        help="what --plot draws: the radar chart (default), valid robots "
-                             "beside configurations per type, or the component matrix "
-                             "(which components each type needs, at a glance)")
+    parser.add_argument(
+        "--plot",
+        metavar="FILE",
+        help="also draw the team's radar chart (the article's Figure 9) to FILE; "
+        "the format follows the extension: .png, .svg or .pdf",
+    )
+    parser.add_argument(
+        "--plot-kind",
+        choices=("radar", "bars", "matrix"),
+        default="radar",
+        help="what --plot draws: the radar chart (default), valid robots "
+        "beside configurations per type, or the component matrix "
+        "(which components each type needs, at a glance)",
+    )
     parser.set_defaults(run=run)
 
 
@@ -46,8 +62,9 @@ def run(args: argparse.Namespace) -> int:
 
     team = load_team_argument(args.team, args.rules)
     with working(f"solving {team.name}", fmt=args.format):
-        solution = solve(team, engine=args.engine, count_only=args.count_only,
-                         max_robots=args.max_robots)
+        solution = solve(
+            team, engine=args.engine, count_only=args.count_only, max_robots=args.max_robots
+        )
         # The warnings (constraints' exclusions) are computed once, here, under the spinner.
         _ = solution.removed
     if args.plot:

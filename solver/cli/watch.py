@@ -27,37 +27,67 @@ if TYPE_CHECKING:
 
 def register(subparsers: Any) -> None:
     parser: argparse.ArgumentParser = subparsers.add_parser(
-        "watch", help="follow a running ROS master: robots, their UI configurations, and the "
-                      "operator's active selection, as events",
+        "watch",
+        help="follow a running ROS master: robots, their UI configurations, and the "
+        "operator's active selection, as events",
         description="Follow a ROS 1 master: every namespace with a robot_description is a robot, "
-                    "identified from its description and topics; print an event (JSON lines, "
-                    "or text) whenever a robot is added, changed or removed, the operator's "
-                    "selection (/teleop_ui/active_robot, /teleop_ui/active_motion_control, "
-                    "/teleop_ui/active_sensor_type) changes, or the master is lost and back. "
-                    "The active selection's UI configuration is written to "
-                    "/teleop_ui/ui_configuration.")
+        "identified from its description and topics; print an event (JSON lines, "
+        "or text) whenever a robot is added, changed or removed, the operator's "
+        "selection (/teleop_ui/active_robot, /teleop_ui/active_motion_control, "
+        "/teleop_ui/active_sensor_type) changes, or the master is lost and back. "
+        "The active selection's UI configuration is written to "
+        "/teleop_ui/ui_configuration.",
+    )
     add_master_options(parser, required_help="default: $ROS_MASTER_URI")
-    parser.add_argument("--ros2", action="store_true",
-                        help="follow a ROS 2 graph on DDS instead of a ROS 1 master (no ROS 2 "
-                             "needed; the [ros2] extra; Cyclone DDS is configured by "
-                             "$CYCLONEDDS_URI); see docs/live.md")
-    parser.add_argument("--domain", type=int, default=None, metavar="N",
-                        help="with --ros2: the DDS domain id (default: $ROS_DOMAIN_ID, else 0)")
-    parser.add_argument("--team", "-t", required=True, metavar="TEAM.yaml",
-                        help="team selection file (or a shipped team name)")
+    parser.add_argument(
+        "--ros2",
+        action="store_true",
+        help="follow a ROS 2 graph on DDS instead of a ROS 1 master (no ROS 2 "
+        "needed; the [ros2] extra; Cyclone DDS is configured by "
+        "$CYCLONEDDS_URI); see docs/live.md",
+    )
+    parser.add_argument(
+        "--domain",
+        type=int,
+        default=None,
+        metavar="N",
+        help="with --ros2: the DDS domain id (default: $ROS_DOMAIN_ID, else 0)",
+    )
+    parser.add_argument(
+        "--team",
+        "-t",
+        required=True,
+        metavar="TEAM.yaml",
+        help="team selection file (or a shipped team name)",
+    )
     add_rules(parser)
     add_profile(parser)
-    parser.add_argument("--once", action="store_true",
-                        help="print one snapshot (every robot, the selection) and exit")
-    parser.add_argument("--interval", "-i", type=seconds, default=0.2, metavar="S",
-                        help="polling interval in seconds (default: 0.2)")
-    parser.add_argument("--wait", action="store_true",
-                        help="wait for the master to come up instead of failing (exit 2)")
+    parser.add_argument(
+        "--once",
+        action="store_true",
+        help="print one snapshot (every robot, the selection) and exit",
+    )
+    parser.add_argument(
+        "--interval",
+        "-i",
+        type=seconds,
+        default=0.2,
+        metavar="S",
+        help="polling interval in seconds (default: 0.2)",
+    )
+    parser.add_argument(
+        "--wait",
+        action="store_true",
+        help="wait for the master to come up instead of failing (exit 2)",
+    )
     add_format(parser, ("json", "text"), default="json")
     # --layouts (issue 17, solver.layouts.live): selection events name the layout file.
-    parser.add_argument("--layouts", metavar="DIR",
-                        help="name the active configuration's layout file in DIR (written by "
-                             "`teleop-ui layouts`) in each selection_changed event")
+    parser.add_argument(
+        "--layouts",
+        metavar="DIR",
+        help="name the active configuration's layout file in DIR (written by "
+        "`teleop-ui layouts`) in each selection_changed event",
+    )
     parser.set_defaults(run=run)
 
 
@@ -74,12 +104,12 @@ def run(args: argparse.Namespace) -> int:
         return _watch_ros2(args, solution, profile)
     master = master_uri(args.master)
 
-    with Watcher(master, solution, profile, interval=args.interval, timeout=args.timeout,
-                 push=not args.once) as watcher:
+    with Watcher(
+        master, solution, profile, interval=args.interval, timeout=args.timeout, push=not args.once
+    ) as watcher:
         # SIGTERM (systemd, roslaunch after SIGINT, kill) ends the watch as cleanly as Ctrl-C:
         # parameter subscriptions released, exit 0.
-        previous = signal.signal(signal.SIGTERM,
-                                 lambda *_: watcher.stop("terminated (SIGTERM)"))
+        previous = signal.signal(signal.SIGTERM, lambda *_: watcher.stop("terminated (SIGTERM)"))
         try:
             return _watch(watcher, args, master, solution)
         finally:
@@ -89,9 +119,11 @@ def run(args: argparse.Namespace) -> int:
 def ros2_domain(args: argparse.Namespace) -> int:
     """--domain, else $ROS_DOMAIN_ID, else 0; a located error for anything else."""
     from solver.errors import InputError
+
     if args.master is not None:
-        raise InputError.at("<arguments>", "--ros2 reads a DDS domain: give --domain N, "
-                                           "not --master")
+        raise InputError.at(
+            "<arguments>", "--ros2 reads a DDS domain: give --domain N, not --master"
+        )
     text = str(args.domain) if args.domain is not None else os.environ.get("ROS_DOMAIN_ID", "0")
     if not text.strip().isdigit() or not 0 <= int(text) <= 232:
         raise InputError.at("<arguments>", f"DDS domain id must be 0..232, got {text!r}")
@@ -103,10 +135,8 @@ def _watch_ros2(args: argparse.Namespace, solution: Solution, profile: Profile) 
     from solver.live.watcher import Watcher
 
     source = DdsGraph(ros2_domain(args))
-    with Watcher(source.name, solution, profile, interval=args.interval, source=source
-                 ) as watcher:
-        previous = signal.signal(signal.SIGTERM,
-                                 lambda *_: watcher.stop("terminated (SIGTERM)"))
+    with Watcher(source.name, solution, profile, interval=args.interval, source=source) as watcher:
+        previous = signal.signal(signal.SIGTERM, lambda *_: watcher.stop("terminated (SIGTERM)"))
         try:
             if args.once:
                 source.settle()  # discovery on DDS takes a moment: see what is there first
@@ -120,13 +150,15 @@ def _watch_ros2(args: argparse.Namespace, solution: Solution, profile: Profile) 
     return 0
 
 
-def _watch(watcher: Watcher, args: argparse.Namespace, master: str, solution: Solution
-           ) -> int:
+def _watch(watcher: Watcher, args: argparse.Namespace, master: str, solution: Solution) -> int:
     from solver.live.master import MasterError, MasterUnreachable
 
     def waiting(error: MasterError) -> None:
-        print(f"waiting for the ROS master at {master} ({error.faults[0].message})",
-              file=sys.stderr, flush=True)
+        print(
+            f"waiting for the ROS master at {master} ({error.faults[0].message})",
+            file=sys.stderr,
+            flush=True,
+        )
 
     if args.wait:
         watcher.wait_for_master(waiting)
@@ -134,9 +166,10 @@ def _watch(watcher: Watcher, args: argparse.Namespace, master: str, solution: So
         try:
             watcher.client.get_pid()
         except MasterUnreachable as error:
-            raise MasterUnreachable.at(master, f"{error.faults[0].message}: is roscore "
-                                               "running there? (--wait waits for it)"
-                                       ) from None
+            raise MasterUnreachable.at(
+                master,
+                f"{error.faults[0].message}: is roscore running there? (--wait waits for it)",
+            ) from None
     events = [] if watcher.stopped else watcher.snapshot() if args.once else watcher.events()
     for event in events:
         write(_render(event, solution, args))

@@ -47,8 +47,18 @@ if TYPE_CHECKING:
     from solver.rules import RuleSet
     from solver.team import Team, TypeSelection
 
-__all__ = ["DESCRIPTIONS", "ENUMERATING", "MAX_CONFIGURATIONS", "MAX_ROBOTS", "NAMES", "Counts",
-           "Engine", "choose", "describe", "lookup"]
+__all__ = [
+    "DESCRIPTIONS",
+    "ENUMERATING",
+    "MAX_CONFIGURATIONS",
+    "MAX_ROBOTS",
+    "NAMES",
+    "Counts",
+    "Engine",
+    "choose",
+    "describe",
+    "lookup",
+]
 
 # Enumerating more robots than this is refused unless the caller raises the limit.
 MAX_ROBOTS = 10**8
@@ -89,13 +99,11 @@ class Engine(Protocol):
         """
         ...
 
-    def partition(self, rules: RuleSet, selection: TypeSelection, memo: Memo, /
-                  ) -> Partition:
+    def partition(self, rules: RuleSet, selection: TypeSelection, memo: Memo, /) -> Partition:
         """The fewest UI configurations of one kinematic type, with the robots each serves."""
         ...
 
-    def robots(self, rules: RuleSet, selection: TypeSelection, /
-               ) -> Iterator[tuple[Value, ...]]:
+    def robots(self, rules: RuleSet, selection: TypeSelection, /) -> Iterator[tuple[Value, ...]]:
         """Every valid robot of one kinematic type, one at a time."""
         ...
 
@@ -108,13 +116,15 @@ def describe(name: str) -> str:
 def lookup(name: str) -> Engine:
     """The engine called ``name``; an :class:`~solver.errors.InputError` for any other name."""
     if name not in DESCRIPTIONS:
-        raise InputError.at("<arguments>", f"unknown engine {name!r}; choose from "
-                                           f"{', '.join(DESCRIPTIONS)}")
+        raise InputError.at(
+            "<arguments>", f"unknown engine {name!r}; choose from {', '.join(DESCRIPTIONS)}"
+        )
     return cast("Engine", importlib.import_module(f"solver.engines.{name}"))
 
 
-def choose(team: Team, selection: TypeSelection, name: str, max_robots: int, memo: Memo
-           ) -> tuple[str, Counts | None]:
+def choose(
+    team: Team, selection: TypeSelection, name: str, max_robots: int, memo: Memo
+) -> tuple[str, Counts | None]:
     """Which engine solves ``selection`` when ``name`` is asked for, and its counts when they
     came for free (the structure counted them on the way).
 
@@ -124,8 +134,9 @@ def choose(team: Team, selection: TypeSelection, name: str, max_robots: int, mem
     would exceed ``max_robots``.
     """
     if name not in NAMES:
-        raise InputError.at("<arguments>", f"unknown engine {name!r}; choose from "
-                                           f"{', '.join(NAMES)}")
+        raise InputError.at(
+            "<arguments>", f"unknown engine {name!r}; choose from {', '.join(NAMES)}"
+        )
     counts = None
     reason = ""
     if name in ("auto", "structure") or selection.size > max_robots:
@@ -133,8 +144,10 @@ def choose(team: Team, selection: TypeSelection, name: str, max_robots: int, mem
             counts = lookup("structure").count(team.rules, selection, memo)
         except StructureTooComplex as error:
             if name == "structure":
-                raise TooLargeError.at(team.file, f"{selection.kinematic_type}: cannot count "
-                                                  f"by structure: {_message(error)}") from None
+                raise TooLargeError.at(
+                    team.file,
+                    f"{selection.kinematic_type}: cannot count by structure: {_message(error)}",
+                ) from None
             reason = f" ({_message(error)})"
         else:
             if name in ("auto", "structure"):
@@ -142,10 +155,13 @@ def choose(team: Team, selection: TypeSelection, name: str, max_robots: int, mem
     robots = selection.size if counts is None else counts.valid_robots
     if robots > max_robots:
         exact = "" if counts is not None else "up to "
-        raise TooLargeError.at(team.file, f"{selection.kinematic_type}: enumerating {exact}"
-                                          f"{robots} robots is refused (more than "
-                                          f"{max_robots}, see --max-robots){reason}; use "
-                                          "--count-only for exact counts without enumeration")
+        raise TooLargeError.at(
+            team.file,
+            f"{selection.kinematic_type}: enumerating {exact}"
+            f"{robots} robots is refused (more than "
+            f"{max_robots}, see --max-robots){reason}; use "
+            "--count-only for exact counts without enumeration",
+        )
     return ("fast" if name == "auto" else name), counts
 
 

@@ -72,9 +72,11 @@ def minimum_cover(elements: Sequence[frozenset[Key]]) -> frozenset[Key]:
     solver.run()
     status = solver.getModelStatus()
     if status != highspy.HighsModelStatus.kOptimal:
-        raise StructureTooComplex.at("<cover>", "the minimum cover of overlapping components "
-                                                "was not proven: "
-                                                f"{solver.modelStatusToString(status)}")
+        raise StructureTooComplex.at(
+            "<cover>",
+            "the minimum cover of overlapping components "
+            "was not proven: "
+            f"{solver.modelStatusToString(status)}",
+        )
     values = solver.getSolution().col_value
-    return frozenset(forced | {key for key, value in zip(keys, values, strict=True)
-                               if value > 0.5})
+    return frozenset(forced | {key for key, value in zip(keys, values, strict=True) if value > 0.5})

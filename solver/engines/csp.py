@@ -25,8 +25,9 @@ __all__ = ["count", "partition", "robots"]
 def count(rules: RuleSet, selection: TypeSelection, _memo: object = None) -> Counts:
     """Valid robots and UI configurations of one kinematic type, by enumerating them."""
     part = partition(rules, selection)
-    return Counts(selection.kinematic_type, part.valid_robots, len(part.classes),
-                  part.unserved_robots)
+    return Counts(
+        selection.kinematic_type, part.valid_robots, len(part.classes), part.unserved_robots
+    )
 
 
 def partition(rules: RuleSet, selection: TypeSelection, _memo: object = None) -> Partition:

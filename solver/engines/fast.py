@@ -39,7 +39,7 @@ if TYPE_CHECKING:
 # Over the block: True where a robot passes (a mask), and whole-number codes or positions.
 Mask: TypeAlias = "NDArray[np.bool_]"
 Codes: TypeAlias = "NDArray[np.int64]"
-Scalars = tuple[tuple[int, frozenset[int]], ...]   # (prefix position, allowed digits)
+Scalars = tuple[tuple[int, frozenset[int]], ...]  # (prefix position, allowed digits)
 
 __all__ = ["BLOCK", "count", "partition", "robots"]
 
@@ -55,7 +55,7 @@ class _Rule:
     kind: str
     when_prefix: Scalars
     then_prefix: Scalars
-    when_block: Mask | None   # None: no block conditions (true)
+    when_block: Mask | None  # None: no block conditions (true)
     then_block: Mask | None
 
 
@@ -92,15 +92,16 @@ class _Plan:
                 component = first
             else:
                 where = characteristic.positions
-                component = first[np.fromiter((where[v] for v in domain), dtype=np.int64,
-                                              count=len(domain))]
+                component = first[
+                    np.fromiter((where[v] for v in domain), dtype=np.int64, count=len(domain))
+                ]
             reached = np.unique(component[component >= 0])
             self.components.append(reached.tolist())
             compact = np.full(int(first.max(initial=0)) + 2, -1, dtype=np.int64)
             compact[reached] = np.arange(len(reached))
             codes.append(compact[component])  # component -1 reads the last cell: -1
         self.codes = codes
-        self.strides = [math.prod(len(c) for c in self.components[i + 1:]) for i in range(width)]
+        self.strides = [math.prod(len(c) for c in self.components[i + 1 :]) for i in range(width)]
         self.key_space = math.prod(len(c) for c in self.components)
         block_key = np.zeros(product, dtype=np.int64)
         block_gap = np.zeros(product, dtype=bool)
@@ -120,8 +121,9 @@ class _Plan:
             vector: Mask | None = None
             for condition in conditions:
                 position = index[condition.characteristic]
-                allowed = frozenset(i for i, v in enumerate(self.domains[position])
-                                    if v in condition.allowed)
+                allowed = frozenset(
+                    i for i, v in enumerate(self.domains[position]) if v in condition.allowed
+                )
                 if position < self.start:
                     scalars.append((position, allowed))
                 else:
@@ -139,10 +141,11 @@ class _Plan:
         return _Rule("require", when_prefix, then_prefix, when_block, then_block)
 
     def prefixes(self) -> Iterator[tuple[int, ...]]:
-        return itertools.product(*(range(len(d)) for d in self.domains[:self.start]))
+        return itertools.product(*(range(len(d)) for d in self.domains[: self.start]))
 
-    def mask(self, prefix: tuple[int, ...], cache: dict[tuple[int, ...], Mask | None]
-             ) -> Mask | None:
+    def mask(
+        self, prefix: tuple[int, ...], cache: dict[tuple[int, ...], Mask | None]
+    ) -> Mask | None:
         """Valid robots of the block under ``prefix`` (``True`` where valid), or None: none."""
         pattern = []
         for rule in self.rules_split:
@@ -178,9 +181,9 @@ class _Plan:
 def _values(domain: tuple[Value, ...], positions: Sequence[int]) -> tuple[Value, ...]:
     """The values at ``positions`` (ascending) of ``domain``; a slice when they are a run."""
     if isinstance(positions, range):
-        return domain[positions.start:positions.stop]
+        return domain[positions.start : positions.stop]
     if positions and positions[-1] - positions[0] + 1 == len(positions):
-        return domain[positions[0]:positions[-1] + 1]
+        return domain[positions[0] : positions[-1] + 1]
     return tuple([domain[j] for j in positions])
 
 
@@ -199,8 +202,10 @@ def robots(rules: RuleSet, selection: TypeSelection) -> Iterator[tuple[Value, ..
         if mask is None:
             continue
         head = tuple(domains[i][d] for i, d in enumerate(prefix))
-        columns = [np.asarray(domains[i], dtype=object)[plan.digits[i][mask]]
-                   for i in range(plan.start, width)]
+        columns = [
+            np.asarray(domains[i], dtype=object)[plan.digits[i][mask]]
+            for i in range(plan.start, width)
+        ]
         for tail in zip(*columns, strict=True):
             yield head + tuple(tail)
 
@@ -214,8 +219,9 @@ def count(rules: RuleSet, selection: TypeSelection, _memo: object = None) -> Cou
     """
     if not all(c.is_partition for c in rules.characteristics):
         part = partition(rules, selection)
-        return Counts(selection.kinematic_type, part.valid_robots, len(part.classes),
-                      part.unserved_robots)
+        return Counts(
+            selection.kinematic_type, part.valid_robots, len(part.classes), part.unserved_robots
+        )
     _, counts, _, total, unserved = _scan(rules, selection, served_too=False)
     return Counts(selection.kinematic_type, total, counts.size(), unserved)
 
@@ -231,8 +237,9 @@ def partition(rules: RuleSet, selection: TypeSelection, _memo: object = None) ->
     return _partition_from_counts(plan, counts.items(), served, total, unserved)
 
 
-def _scan(rules: RuleSet, selection: TypeSelection, *, served_too: bool
-          ) -> tuple[_Plan, _Counter, dict[int, _Pairs], int, int]:
+def _scan(
+    rules: RuleSet, selection: TypeSelection, *, served_too: bool
+) -> tuple[_Plan, _Counter, dict[int, _Pairs], int, int]:
     """Robots per configuration code, and (``served_too``) the values each code serves, with
     the valid and unserved robots."""
     plan = _Plan(rules, selection)
@@ -241,9 +248,12 @@ def _scan(rules: RuleSet, selection: TypeSelection, *, served_too: bool
     # served[i] holds (configuration code, value position) pairs met among valid robots. Only
     # characteristics whose components hold several selected values need it; for the others
     # the configuration names the value.
-    plural = [i for i in range(width) if served_too
-              and any(np.count_nonzero(plan.codes[i] == c) > 1
-                      for c in range(len(plan.components[i])))]
+    plural = [
+        i
+        for i in range(width)
+        if served_too
+        and any(np.count_nonzero(plan.codes[i] == c) > 1 for c in range(len(plan.components[i])))
+    ]
     served = {i: _Pairs(plan.key_space, len(plan.domains[i])) for i in plural}
     masks: dict[tuple[int, ...], Mask | None] = {}
     blocks: dict[int, _MaskedBlock] = {}
@@ -360,8 +370,11 @@ class _Pairs:
             table = self.dense.reshape(-1, self.size)[codes]
             rows, columns = np.nonzero(table)
             bounds = np.searchsorted(rows, np.arange(len(codes) + 1))
-            firsts = columns[np.minimum(bounds[:-1], len(columns) - 1)] if len(columns) else \
-                np.zeros(len(codes), dtype=np.int64)
+            firsts = (
+                columns[np.minimum(bounds[:-1], len(columns) - 1)]
+                if len(columns)
+                else np.zeros(len(codes), dtype=np.int64)
+            )
             lasts = columns[bounds[1:] - 1] if len(columns) else firsts
             sizes = np.diff(bounds)
             runs = (lasts - firsts + 1 == sizes) & (sizes > 0)
@@ -380,14 +393,19 @@ class _Pairs:
         return [by_code[code] for code in codes]
 
 
-def _partition_from_counts(plan: _Plan, counts: list[tuple[int, int]],
-                           served: dict[int, _Pairs], total: int, unserved: int) -> Partition:
+def _partition_from_counts(
+    plan: _Plan, counts: list[tuple[int, int]], served: dict[int, _Pairs], total: int, unserved: int
+) -> Partition:
     rules = plan.rules
     width = len(plan.domains)
     # For a characteristic without served pairs, a component code names its selected values.
-    named = [[_values(domain, np.flatnonzero(plan.codes[i] == c).tolist())
-              for c in range(len(plan.components[i]))]
-             for i, domain in enumerate(plan.domains)]
+    named = [
+        [
+            _values(domain, np.flatnonzero(plan.codes[i] == c).tolist())
+            for c in range(len(plan.components[i]))
+        ]
+        for i, domain in enumerate(plan.domains)
+    ]
     codes = np.array([code for code, _ in counts], dtype=np.int64)
     positions = {i: pairs.grouped(codes.tolist()) for i, pairs in served.items()}
     sizes = np.array([len(c) for c in plan.components], dtype=np.int64)
@@ -398,8 +416,12 @@ def _partition_from_counts(plan: _Plan, counts: list[tuple[int, int]],
     columns = [(i, positions.get(i), named[i]) for i in range(width)]
     for row, ((_, number), digits) in enumerate(zip(counts, digit_rows, strict=True)):
         key = tuple([components[i][d] for i, d in enumerate(digits)])
-        values = tuple([_values(domains[i], grouped[row]) if grouped is not None
-                        else by_code[digits[i]] for i, grouped, by_code in columns])
+        values = tuple(
+            [
+                _values(domains[i], grouped[row]) if grouped is not None else by_code[digits[i]]
+                for i, grouped, by_code in columns
+            ]
+        )
         classes.append(PartitionClass(key, number, values))
     classes.sort(key=lambda found: sort_key(rules, found.key))
     kinematic_type = str(plan.domains[rules.key_position][0])

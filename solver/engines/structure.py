@@ -70,9 +70,9 @@ class Memo:
 class _Class:
     """Selected values of one characteristic that the rules cannot tell apart."""
 
-    index: int              # its position in RuleSet.value_classes
+    index: int  # its position in RuleSet.value_classes
     members: Members
-    membership: tuple[int, ...]   # the components every member belongs to
+    membership: tuple[int, ...]  # the components every member belongs to
 
 
 @dataclass(frozen=True)
@@ -80,7 +80,7 @@ class _Block:
     """Characteristics linked by constraints, and their valid class combinations."""
 
     positions: tuple[int, ...]
-    combinations: tuple[tuple[tuple[_Class, ...], int], ...]   # (one class per position, weight)
+    combinations: tuple[tuple[tuple[_Class, ...], int], ...]  # (one class per position, weight)
 
     @staticmethod
     def partial_key(classes: tuple[_Class, ...]) -> Key | None:
@@ -116,9 +116,11 @@ def count(rules: RuleSet, selection: TypeSelection, memo: Memo | None = None) ->
     # its own component, so which one it is never changes a count).
     kinematic_type = selection.kinematic_type
     signature[rules.key_position] = tuple(
-        kinematic_type in condition.allowed for rule in rules.constraints
+        kinematic_type in condition.allowed
+        for rule in rules.constraints
         for condition in (*rule.when, *rule.conditions)
-        if condition.characteristic == rules.team_key)
+        if condition.characteristic == rules.team_key
+    )
     memo_key = tuple(signature)
     if memo is not None and memo_key in memo.counts:
         return _renamed(memo.counts[memo_key], kinematic_type)
@@ -127,8 +129,9 @@ def count(rules: RuleSet, selection: TypeSelection, memo: Memo | None = None) ->
         memo.blocks[kinematic_type] = blocks
     if _overlaps(blocks):
         part = partition(rules, selection, blocks)
-        result = Counts(selection.kinematic_type, part.valid_robots, len(part.classes),
-                        part.unserved_robots)
+        result = Counts(
+            selection.kinematic_type, part.valid_robots, len(part.classes), part.unserved_robots
+        )
     else:
         robots = served = configurations = 1
         for block in blocks:
@@ -149,12 +152,14 @@ def robots(rules: RuleSet, selection: TypeSelection) -> Iterator[tuple[Value, ..
 
 
 def _renamed(counts: Counts, kinematic_type: str) -> Counts:
-    return Counts(kinematic_type, counts.valid_robots, counts.ui_configurations,
-                  counts.unserved_robots)
+    return Counts(
+        kinematic_type, counts.valid_robots, counts.ui_configurations, counts.unserved_robots
+    )
 
 
-def partition(rules: RuleSet, selection: TypeSelection,
-              blocks: Sequence[_Block] | Memo | None = None) -> Partition:
+def partition(
+    rules: RuleSet, selection: TypeSelection, blocks: Sequence[_Block] | Memo | None = None
+) -> Partition:
     """The configurations of one kinematic type, with robot counts and served values.
 
     ``blocks``: the type's blocks if already built, or a :class:`Memo` that :func:`count`
@@ -167,13 +172,17 @@ def partition(rules: RuleSet, selection: TypeSelection,
     if not _overlaps(blocks):
         return _partition_product(rules, selection, blocks)
     if math.prod(len(b.combinations) for b in blocks) > BLOCK_LIMIT:
-        raise StructureTooComplex.at(rules.file, "overlapping components over too many class "
-                                                 "combinations", path="constraints")
+        raise StructureTooComplex.at(
+            rules.file,
+            "overlapping components over too many class combinations",
+            path="constraints",
+        )
     return partition_classes(rules, selection.kinematic_type, _joint_classes(rules, blocks))
 
 
-def _partition_product(rules: RuleSet, selection: TypeSelection,
-                       blocks: Sequence[_Block]) -> Partition:
+def _partition_product(
+    rules: RuleSet, selection: TypeSelection, blocks: Sequence[_Block]
+) -> Partition:
     """Configurations as the product of each block's partial configurations."""
     width = len(rules.characteristics)
     per_block = []
@@ -183,40 +192,61 @@ def _partition_product(rules: RuleSet, selection: TypeSelection,
         for combination, _ in block.combinations:
             key = block.partial_key(combination)
             if key is not None:
-                for values, found in zip(held.setdefault(key, [set() for _ in combination]),
-                                         combination, strict=True):
+                for values, found in zip(
+                    held.setdefault(key, [set() for _ in combination]), combination, strict=True
+                ):
                     values.update(found.members)
         robots *= block.robots
         served_robots *= sum(block.partial_weights.values())
         orders = [rules.characteristics[p].positions.__getitem__ for p in block.positions]
-        per_block.append([(key, weight, tuple(tuple(sorted(values, key=order))
-                                              for values, order in zip(held[key], orders,
-                                                                       strict=True)))
-                          for key, weight in sorted(block.partial_weights.items())])
+        per_block.append(
+            [
+                (
+                    key,
+                    weight,
+                    tuple(
+                        tuple(sorted(values, key=order))
+                        for values, order in zip(held[key], orders, strict=True)
+                    ),
+                )
+                for key, weight in sorted(block.partial_weights.items())
+            ]
+        )
     # Each configuration joins one partial configuration per block: concatenate the blocks'
     # parts, then put the characteristics back in rule order if the blocks interleave them.
     order = [position for block in blocks for position in block.positions]
     inverse = None if order == list(range(width)) else [order.index(i) for i in range(width)]
     found_classes: list[tuple[Key, int, tuple[Members, ...]]] = [((), 1, ())]
     for parts in per_block:
-        found_classes = [(key + part_key, weight * part_weight, served + part_served)
-                         for key, weight, served in found_classes
-                         for part_key, part_weight, part_served in parts]
+        found_classes = [
+            (key + part_key, weight * part_weight, served + part_served)
+            for key, weight, served in found_classes
+            for part_key, part_weight, part_served in parts
+        ]
     if inverse is not None:
-        found_classes = [(tuple([key[j] for j in inverse]), weight,
-                          tuple([served[j] for j in inverse]))
-                         for key, weight, served in found_classes]
+        found_classes = [
+            (tuple([key[j] for j in inverse]), weight, tuple([served[j] for j in inverse]))
+            for key, weight, served in found_classes
+        ]
     position = rules.key_position
     found_classes.sort(key=lambda item: (item[0][position], item[0]))
-    return Partition(selection.kinematic_type,
-                     tuple([PartitionClass(*found) for found in found_classes]), robots,
-                     robots - served_robots, True)
+    return Partition(
+        selection.kinematic_type,
+        tuple([PartitionClass(*found) for found in found_classes]),
+        robots,
+        robots - served_robots,
+        True,
+    )
 
 
 def _overlaps(blocks: Sequence[_Block]) -> bool:
     """Whether any selected value belongs to more than one component."""
-    return any(len(c.membership) > 1 for block in blocks
-               for combination, _ in block.combinations for c in combination)
+    return any(
+        len(c.membership) > 1
+        for block in blocks
+        for combination, _ in block.combinations
+        for c in combination
+    )
 
 
 def _joint_classes(rules: RuleSet, blocks: Sequence[_Block]) -> Iterator[RobotClass]:
@@ -241,8 +271,9 @@ def _shape(classes: list[_Class], memo: Memo | None) -> tuple[tuple[int, int], .
     return shape
 
 
-def _selected_classes(rules: RuleSet, selection: TypeSelection, memo: Memo | None = None
-                      ) -> list[list[_Class]]:
+def _selected_classes(
+    rules: RuleSet, selection: TypeSelection, memo: Memo | None = None
+) -> list[list[_Class]]:
     """Per characteristic: the selected values, grouped into the rule set's value classes."""
     found = []
     for position, domain in enumerate(selection.domains):
@@ -262,8 +293,9 @@ def _cut(rules: RuleSet, position: int, domain: Sequence[Value]) -> list[_Class]
     classes = rules.value_classes[position]
 
     def made(index: int, members: Members) -> _Class:
-        return _Class(index, members,
-                      characteristic.membership[characteristic.positions[members[0]]])
+        return _Class(
+            index, members, characteristic.membership[characteristic.positions[members[0]]]
+        )
 
     if len(domain) == len(characteristic.values):
         return [made(i, members) for i, members in enumerate(classes)]
@@ -298,8 +330,10 @@ def _blocks(rules: RuleSet, classes: list[list[_Class]]) -> list[_Block]:
         return i
 
     # A characteristic with a single class cannot link anything: its value never matters.
-    linked = [[index[name] for name in rule.characteristics if len(classes[index[name]]) > 1]
-              for rule in rules.constraints]
+    linked = [
+        [index[name] for name in rule.characteristics if len(classes[index[name]]) > 1]
+        for rule in rules.constraints
+    ]
     for positions in linked:
         for a, b in itertools.pairwise(positions):
             parent[find(a)] = find(b)
@@ -322,12 +356,20 @@ def _blocks(rules: RuleSet, classes: list[list[_Class]]) -> list[_Block]:
         size = math.prod(len(classes[i]) for i in group)
         if size > BLOCK_LIMIT:
             names = ", ".join(rules.names[i] for i in group)
-            raise StructureTooComplex.at(rules.file, f"constraints link {names} into {size} "
-                                                     f"class combinations (more than "
-                                                     f"{BLOCK_LIMIT})", path="constraints")
-        checks = [(rules.constraints[n].predicate(),
-                   [index[name] for name in rules.constraints[n].characteristics])
-                  for n in numbers]
+            raise StructureTooComplex.at(
+                rules.file,
+                f"constraints link {names} into {size} "
+                f"class combinations (more than "
+                f"{BLOCK_LIMIT})",
+                path="constraints",
+            )
+        checks = [
+            (
+                rules.constraints[n].predicate(),
+                [index[name] for name in rules.constraints[n].characteristics],
+            )
+            for n in numbers
+        ]
         combinations = []
         for choice in itertools.product(*(classes[i] for i in group)):
             for i, found in zip(group, choice, strict=True):

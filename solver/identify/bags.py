@@ -24,7 +24,7 @@ __all__ = ["read_bag_topics"]
 def _short(error: BaseException, limit: int = 120) -> str:
     """A parser's message, escaped and cut: it may quote bytes of the bag."""
     text = str(error).encode("unicode_escape", "backslashreplace").decode("ascii")
-    return text if len(text) <= limit else text[:limit - 3] + "..."
+    return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
 def _connections(bag: Path) -> list[tuple[str, str]]:
@@ -42,8 +42,13 @@ def _connections(bag: Path) -> list[tuple[str, str]]:
     if bag.is_file() and bag.suffix == ".bag":
         with Reader1(bag) as reader:
             return [(c.topic, c.msgtype) for c in reader.connections]
-    storage = [bag] if bag.is_file() and bag.suffix in _ROS2_STORAGE else \
-        sorted(p for p in bag.iterdir() if p.suffix in _ROS2_STORAGE) if bag.is_dir() else []
+    storage = (
+        [bag]
+        if bag.is_file() and bag.suffix in _ROS2_STORAGE
+        else sorted(p for p in bag.iterdir() if p.suffix in _ROS2_STORAGE)
+        if bag.is_dir()
+        else []
+    )
     if storage:
         pairs = []
         for file in storage:
@@ -71,8 +76,7 @@ def read_bag_topics(path: str | Path, *, display: str | None = None) -> tuple[To
             raise InputError.at(name, "no such bag file or folder", code="bag")
         if not (bag.is_file() or bag.is_dir()):
             # A FIFO would wait for a writer forever, /dev/zero would be read forever.
-            raise InputError.at(name, "not a bag file or folder (a device or pipe?)",
-                                code="bag")
+            raise InputError.at(name, "not a bag file or folder (a device or pipe?)", code="bag")
     except InputError:
         raise
     except ValueError:  # a NUL byte in the name
@@ -80,8 +84,9 @@ def read_bag_topics(path: str | Path, *, display: str | None = None) -> tuple[To
     try:
         pairs = _connections(bag)
     except (AnyReaderError, Reader1Error, Reader2Error) as error:
-        raise InputError.at(name, f"cannot read as a ROS 1 or ROS 2 bag: {_short(error)}",
-                            code="bag") from None
+        raise InputError.at(
+            name, f"cannot read as a ROS 1 or ROS 2 bag: {_short(error)}", code="bag"
+        ) from None
     except RecursionError:
         raise InputError.at(name, "cannot read bag: nested too deeply", code="bag") from None
     except Exception as error:
@@ -89,8 +94,10 @@ def read_bag_topics(path: str | Path, *, display: str | None = None) -> tuple[To
         # only its magic bytes) ends in whatever its parser trips over (TypeError, struct.error,
         # UnicodeDecodeError...). Each is this bag's problem, said with its name, never a
         # traceback.
-        raise InputError.at(name, f"cannot read bag (corrupt or truncated?): "
-                                  f"{type(error).__name__}: {_short(error)}",
-                            code="bag") from None
+        raise InputError.at(
+            name,
+            f"cannot read bag (corrupt or truncated?): {type(error).__name__}: {_short(error)}",
+            code="bag",
+        ) from None
     topics = dict.fromkeys(Topic(topic, normalise_type(kind)) for topic, kind in pairs)
     return tuple(topics)

@@ -57,8 +57,7 @@ class Limb:
     named: bool = False  # some joint or link of the chain names a leg, arm or head
 
     def describe(self) -> str:
-        span = self.joints[0] if len(self.joints) == 1 else \
-            f"{self.joints[0]} .. {self.joints[-1]}"
+        span = self.joints[0] if len(self.joints) == 1 else f"{self.joints[0]} .. {self.joints[-1]}"
         text = f"{self.kind}: {len(self.joints)}-joint chain {self.base} -> {self.tip} ({span})"
         return text + (", ends in a gripper" if self.gripper else "")
 
@@ -90,8 +89,13 @@ class Body:
 
     @property
     def mobile_base(self) -> bool:
-        return bool(self.wheels or self.tracks or self.drive_plugins or self.planar_base
-                    or self.fixed_wheels)
+        return bool(
+            self.wheels
+            or self.tracks
+            or self.drive_plugins
+            or self.planar_base
+            or self.fixed_wheels
+        )
 
     @property
     def weak_base(self) -> bool:
@@ -105,12 +109,18 @@ class Body:
     def features(self) -> dict[str, int]:
         """The counts and flags the profile's structure rules read."""
         return {
-            "wheels": len(self.wheels), "tracks": len(self.tracks), "rotors": len(self.rotors),
-            "arms": self.count("arm"), "legs": self.count("leg"), "heads": self.count("head"),
-            "fingers": len(self.fingers), "grippers": self.grippers,
+            "wheels": len(self.wheels),
+            "tracks": len(self.tracks),
+            "rotors": len(self.rotors),
+            "arms": self.count("arm"),
+            "legs": self.count("leg"),
+            "heads": self.count("head"),
+            "fingers": len(self.fingers),
+            "grippers": self.grippers,
             "drive_plugins": len(self.drive_plugins),
             "flight_plugins": len(self.flight_plugins),
-            "mobile_base": int(self.mobile_base), "flying": int(self.flying),
+            "mobile_base": int(self.mobile_base),
+            "flying": int(self.flying),
             "floating_base": int(bool(self.floating_base)),
             "weak_base": int(self.weak_base),
         }
@@ -129,8 +139,10 @@ class Body:
         if self.flight_plugins:
             lines.append(f"flight plugin(s): {_names(self.flight_plugins)}")
         if self.fixed_wheels:
-            lines.append(f"{len(self.fixed_wheels)} fixed wheel joint(s) (a trimmed model): "
-                         f"{_names(self.fixed_wheels)}")
+            lines.append(
+                f"{len(self.fixed_wheels)} fixed wheel joint(s) (a trimmed model): "
+                f"{_names(self.fixed_wheels)}"
+            )
         if self.planar_base:
             lines.append(f"planar base: {_names(self.planar_base)}")
         if self.floating_base:
@@ -139,11 +151,15 @@ class Body:
             lines.append(f"trunk joint(s) below the limbs: {_names(self.trunk)}")
         lines += [limb.describe() for limb in self.limbs]
         if self.fingers:
-            lines.append(f"{len(self.fingers)} finger/gripper joint chain(s) on "
-                         f"{self.grippers} hand(s)/gripper(s): {_names(self.fingers)}")
+            lines.append(
+                f"{len(self.fingers)} finger/gripper joint chain(s) on "
+                f"{self.grippers} hand(s)/gripper(s): {_names(self.fingers)}"
+            )
         if self.not_rotors:
-            lines.append(f"not flight: {len(self.not_rotors)} rotor-named joint(s) "
-                         f"({_names(self.not_rotors)}), too few to fly")
+            lines.append(
+                f"not flight: {len(self.not_rotors)} rotor-named joint(s) "
+                f"({_names(self.not_rotors)}), too few to fly"
+            )
         if not lines:
             lines.append(f"no movable joints below {root}")
         return tuple(lines)
@@ -198,21 +214,27 @@ class _Detector:
     def detect(self, srdf: Srdf | None) -> Body:
         urdf = self.urdf
         drive = [p for p in urdf.plugins if self.plugin_matches("drive", f"{p.name} {p.filename}")]
-        flight = [p for p in urdf.plugins
-                  if self.plugin_matches("flight", f"{p.name} {p.filename}")]
-        track_plugins = [p for p in urdf.plugins
-                         if self.plugin_matches("track", f"{p.name} {p.filename}")]
+        flight = [
+            p for p in urdf.plugins if self.plugin_matches("flight", f"{p.name} {p.filename}")
+        ]
+        track_plugins = [
+            p for p in urdf.plugins if self.plugin_matches("track", f"{p.name} {p.filename}")
+        ]
         named_by_drive = {text for p in drive for _, text in p.params}
         wheels, rotors, grippers = [], [], set()
         for joint in urdf.joints:
             if not joint.movable or joint.type not in (*_ROTATING, "prismatic"):
                 continue
             # Wheels first: a wheel's motor link may be named *_rotor.
-            if joint.type in _ROTATING and (self.matches("wheel", joint)
-                                            or joint.name in named_by_drive):
+            if joint.type in _ROTATING and (
+                self.matches("wheel", joint) or joint.name in named_by_drive
+            ):
                 wheels.append(joint.name)
-            elif joint.type in _ROTATING and self.matches("rotor", joint) \
-                    and joint.child not in self.moving_below:
+            elif (
+                joint.type in _ROTATING
+                and self.matches("rotor", joint)
+                and joint.child not in self.moving_below
+            ):
                 rotors.append(joint.name)
             elif self.matches("gripper", joint) or self.on_palm(joint):
                 grippers.add(joint.name)
@@ -222,8 +244,11 @@ class _Detector:
             not_rotors, rotors = rotors, []
         tracks = [p.filename or p.name for p in track_plugins]
         tracks += [j.name for j in urdf.joints if self.matches("track", j)]
-        fixed_wheels = [j.name for j in urdf.joints if j.type == "fixed"
-                        and self.matches("wheel", j)] if not wheels else []
+        fixed_wheels = (
+            [j.name for j in urdf.joints if j.type == "fixed" and self.matches("wheel", j)]
+            if not wheels
+            else []
+        )
         floating = [j.name for j in urdf.joints if j.type == "floating"]
         planar = [j.name for j in urdf.joints if j.type == "planar"]
         placing = self._root_axes()
@@ -243,19 +268,27 @@ class _Detector:
         for virtual in srdf.virtual_joints if srdf is not None else ():
             if virtual.type in ("planar", "floating"):
                 (planar if virtual.type == "planar" else floating).append(
-                    f"SRDF virtual joint {virtual.name} ({virtual.type})")
+                    f"SRDF virtual joint {virtual.name} ({virtual.type})"
+                )
         controlled = urdf.controlled_joints
         limb_joints = [name for limb in limbs for name in limb.joints] + trunk
         return Body(
-            wheels=tuple(wheels), rotors=tuple(rotors), tracks=tuple(dict.fromkeys(tracks)),
+            wheels=tuple(wheels),
+            rotors=tuple(rotors),
+            tracks=tuple(dict.fromkeys(tracks)),
             drive_plugins=tuple(dict.fromkeys(p.filename or p.name for p in drive)),
             flight_plugins=tuple(dict.fromkeys(p.filename or p.name for p in flight)),
-            limbs=tuple(limbs), trunk=tuple(trunk), fingers=tuple(finger_tips),
-            grippers=len(gripper_hosts), floating_base=tuple(floating),
+            limbs=tuple(limbs),
+            trunk=tuple(trunk),
+            fingers=tuple(finger_tips),
+            grippers=len(gripper_hosts),
+            floating_base=tuple(floating),
             planar_base=tuple(planar),
             controlled_wheels=tuple(w for w in wheels if w in controlled),
             controlled_joints=tuple(j for j in limb_joints if j in controlled),
-            not_rotors=tuple(not_rotors), fixed_wheels=tuple(fixed_wheels))
+            not_rotors=tuple(not_rotors),
+            fixed_wheels=tuple(fixed_wheels),
+        )
 
     def _legs_at_the_pelvis(self, limbs: list[Limb]) -> list[Limb]:
         """Two unnamed long chains on the root, below a body whose arms hang higher: legs.
@@ -265,18 +298,31 @@ class _Detector:
         Only a pair of equal chains of at least five joints counts, and only beside two or more
         arms that are named or end in a gripper and do not hang from the root.
         """
-        pelvis = [limb for limb in limbs if limb.kind == "arm" and not limb.named
-                  and not limb.gripper and limb.base == self.urdf.root
-                  and len(limb.joints) >= _LEG_BY_PLACE_JOINTS]
-        arms = [limb for limb in limbs if limb.kind == "arm" and (limb.named or limb.gripper)
-                and limb.base != self.urdf.root]
+        pelvis = [
+            limb
+            for limb in limbs
+            if limb.kind == "arm"
+            and not limb.named
+            and not limb.gripper
+            and limb.base == self.urdf.root
+            and len(limb.joints) >= _LEG_BY_PLACE_JOINTS
+        ]
+        arms = [
+            limb
+            for limb in limbs
+            if limb.kind == "arm" and (limb.named or limb.gripper) and limb.base != self.urdf.root
+        ]
         if len(pelvis) != 2 or len(pelvis[0].joints) != len(pelvis[1].joints) or len(arms) < 2:
             return limbs
         legs = [replace(limb, kind="leg") for limb in pelvis]
         kept = [limb for limb in limbs if limb not in pelvis] + legs
-        return sorted(kept, key=lambda limb: (LIMB_KINDS.index(limb.kind) if limb.kind in
-                                              LIMB_KINDS else len(LIMB_KINDS),
-                                              self._order(limb.joints[0])))
+        return sorted(
+            kept,
+            key=lambda limb: (
+                LIMB_KINDS.index(limb.kind) if limb.kind in LIMB_KINDS else len(LIMB_KINDS),
+                self._order(limb.joints[0]),
+            ),
+        )
 
     def _root_axes(self) -> list[str]:
         """Joints at the root that only place the body: x, y and a turn about z (planar), or
@@ -332,8 +378,11 @@ class _Detector:
             while parent is not None and parent.name not in above:
                 above.add(parent.name)
                 parent = self.urdf.parent_joint(parent.parent)
-        tips = [name for name in grippers if name not in above
-                and (joint := self.urdf.joint(name)) is not None and joint.movable]
+        tips = [
+            name
+            for name in grippers
+            if name not in above and (joint := self.urdf.joint(name)) is not None and joint.movable
+        ]
         return sorted(tips, key=self._order)
 
     def _finger_groups(self, limbs: list[Limb]) -> set[str]:
@@ -345,8 +394,12 @@ class _Detector:
         by_base: dict[str, list[Limb]] = {}
         longest = self.profile.limb("finger_max_joints")
         for limb in limbs:
-            if limb.kind in ("arm", "other") and not limb.gripper and not limb.named \
-                    and len(limb.joints) <= longest:
+            if (
+                limb.kind in ("arm", "other")
+                and not limb.gripper
+                and not limb.named
+                and len(limb.joints) <= longest
+            ):
                 by_base.setdefault(limb.base, []).append(limb)
         found: set[str] = set()
         for group in by_base.values():
@@ -354,12 +407,13 @@ class _Detector:
                 found.update(name for limb in group for name in limb.joints)
         return found
 
-    def _limbs(self, special: set[str], grippers: set[str]
-               ) -> tuple[list[Limb], list[str], set[str]]:
+    def _limbs(
+        self, special: set[str], grippers: set[str]
+    ) -> tuple[list[Limb], list[str], set[str]]:
         """Limbs and trunk joints of the contracted tree of actuated, non-special joints."""
         urdf = self.urdf
-        children: dict[str, list[Joint]] = {}   # anchor ("" = root) -> limb joints below it
-        carries: dict[str, set[str]] = {}       # anchor -> {"wheel", "rotor", "gripper", ...}
+        children: dict[str, list[Joint]] = {}  # anchor ("" = root) -> limb joints below it
+        carries: dict[str, set[str]] = {}  # anchor -> {"wheel", "rotor", "gripper", ...}
         hosts: set[str] = set()
         stack: list[tuple[str, str]] = [(urdf.root, "")]
         while stack:
@@ -367,8 +421,11 @@ class _Detector:
             for joint in reversed(urdf.children(link)):
                 below = anchor
                 if joint.name in special:
-                    kind = "gripper" if joint.name in grippers else \
-                        ("rotor" if self.matches("rotor", joint) else "wheel")
+                    kind = (
+                        "gripper"
+                        if joint.name in grippers
+                        else ("rotor" if self.matches("rotor", joint) else "wheel")
+                    )
                     carries.setdefault(anchor, set()).add(kind)
                     if kind == "gripper":
                         hosts.add(anchor)
@@ -394,8 +451,12 @@ class _Detector:
                 continue
             marks = set().union(*(carries.get(j.name, set()) for j in chain))
             limbs.append(self._classify(chain, chain[0].parent, marks))
-        limbs.sort(key=lambda limb: (LIMB_KINDS.index(limb.kind) if limb.kind in LIMB_KINDS
-                                     else len(LIMB_KINDS), self._order(limb.joints[0])))
+        limbs.sort(
+            key=lambda limb: (
+                LIMB_KINDS.index(limb.kind) if limb.kind in LIMB_KINDS else len(LIMB_KINDS),
+                self._order(limb.joints[0]),
+            )
+        )
         return limbs, trunk, hosts
 
     def _classify(self, chain: list[Joint], base: str, marks: set[str]) -> Limb:
@@ -418,8 +479,7 @@ class _Detector:
             # Leg names win over a gripper at the end: a leg may end in a gripper.
             if kind == "leg" and length >= self.profile.limb("leg_min_joints"):
                 return Limb("leg", names, base, tip, gripper, named)
-            if kind == "head" and length <= self.profile.limb("head_max_joints") \
-                    and not gripper:
+            if kind == "head" and length <= self.profile.limb("head_max_joints") and not gripper:
                 return Limb("head", names, base, tip, gripper, named)
             if kind == "arm" and (length >= self.profile.limb("arm_min_joints") or gripper):
                 return Limb("arm", names, base, tip, gripper, named)
@@ -437,5 +497,7 @@ class _Detector:
             link = below[0].child
 
     def _tip_matches(self, part: str, joint: Joint) -> bool:
-        return any(not below.movable and part in self.parts_of(below.child)
-                   for below in self.urdf.subtree_joints(joint.child))
+        return any(
+            not below.movable and part in self.parts_of(below.child)
+            for below in self.urdf.subtree_joints(joint.child)
+        )

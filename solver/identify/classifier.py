@@ -39,12 +39,12 @@ def kinematic_type_for(structure: str, profile: Profile, rules: RuleSet) -> str 
     if rule is None:
         return None
     known = {str(v).casefold(): str(v) for v in rules.key.values}
-    return next((known[t.casefold()] for t in rule.kinematic_types if t.casefold() in known),
-                None)
+    return next((known[t.casefold()] for t in rule.kinematic_types if t.casefold() in known), None)
 
 
-def classify(body: Body, profile: Profile, rules: RuleSet, *, root: str = "",
-             srdf: Srdf | None = None) -> Reading:
+def classify(
+    body: Body, profile: Profile, rules: RuleSet, *, root: str = "", srdf: Srdf | None = None
+) -> Reading:
     """The structure, kinematic type, confidence and evidence of ``body``."""
     features = body.features()
     rule = next((r for r in profile.structures if r.matches(features)), None)
@@ -54,13 +54,19 @@ def classify(body: Body, profile: Profile, rules: RuleSet, *, root: str = "",
         return Reading("Other", None, 0.0, tuple(evidence))
     confidence = rule.confidence
     # A catch-all rule says why nothing else fit: the parts every other rule read.
-    parts = [f"{value} {name.replace('_', ' ')}" for name, value in features.items()
-             if value and name not in ("mobile_base", "flying", "floating_base", "weak_base")]
+    parts = [
+        f"{value} {name.replace('_', ' ')}"
+        for name, value in features.items()
+        if value and name not in ("mobile_base", "flying", "floating_base", "weak_base")
+    ]
     why = ", ".join(c.describe() for c in rule.when) or (
-        "no other structure matched; the body has " + (", ".join(parts) or "no parts")
-        + ("" if features["mobile_base"] else ", no mobile base"))
-    where = "" if rule.location is None else \
-        f" ({Path(rule.location.file).name}:{rule.location.line})"
+        "no other structure matched; the body has "
+        + (", ".join(parts) or "no parts")
+        + ("" if features["mobile_base"] else ", no mobile base")
+    )
+    where = (
+        "" if rule.location is None else f" ({Path(rule.location.file).name}:{rule.location.line})"
+    )
     evidence.append(f"structure {rule.name}: {why}{where}")
     for condition in rule.expect:
         if not condition.holds(features):
@@ -70,8 +76,10 @@ def classify(body: Body, profile: Profile, rules: RuleSet, *, root: str = "",
         confidence *= _srdf_agreement(body, srdf, profile, evidence)
     kinematic_type = kinematic_type_for(rule.name, profile, rules)
     if kinematic_type is None:
-        evidence.append(f"the rule set {rules.name!r} has no kinematic type for {rule.name} "
-                        f"(it has {', '.join(str(v) for v in rules.key.values)})")
+        evidence.append(
+            f"the rule set {rules.name!r} has no kinematic type for {rule.name} "
+            f"(it has {', '.join(str(v) for v in rules.key.values)})"
+        )
     elif kinematic_type != rule.name:
         evidence.append(f"{rule.name} is the rule set's {kinematic_type}")
     return Reading(rule.name, kinematic_type, round(confidence, 2), tuple(evidence))
@@ -80,14 +88,20 @@ def classify(body: Body, profile: Profile, rules: RuleSet, *, root: str = "",
 def _srdf_agreement(body: Body, srdf: Srdf, profile: Profile, evidence: list[str]) -> float:
     groups = srdf.arm_groups(profile.limb("arm_min_joints"))
     # Groups that extend another one (Fetch's arm_with_torso) plan the same arm.
-    distinct = [g for g in groups if not any(
-        other is not g and set(other.joints) < set(g.joints) for other in groups)]
+    distinct = [
+        g
+        for g in groups
+        if not any(other is not g and set(other.joints) < set(g.joints) for other in groups)
+    ]
     arms = body.count("arm")
-    parts = [f"SRDF: {len(distinct)} arm planning group(s)"
-             + (f" ({', '.join(g.name for g in distinct)})" if distinct else "")]
+    parts = [
+        f"SRDF: {len(distinct)} arm planning group(s)"
+        + (f" ({', '.join(g.name for g in distinct)})" if distinct else "")
+    ]
     if srdf.end_effectors:
-        parts.append(", ".join(f"end effector {e.name} on {e.parent_link}"
-                               for e in srdf.end_effectors))
+        parts.append(
+            ", ".join(f"end effector {e.name} on {e.parent_link}" for e in srdf.end_effectors)
+        )
     if srdf.virtual_joints:
         parts.append(", ".join(f"{v.type} virtual joint {v.name}" for v in srdf.virtual_joints))
     evidence.append("; ".join(parts))

@@ -30,12 +30,14 @@ class Combination:
     assignment: Assignment
 
 
-def combinations(identification: Identification, solution: Solution, profile: Profile
-                 ) -> tuple[Combination, ...]:
+def combinations(
+    identification: Identification, solution: Solution, profile: Profile
+) -> tuple[Combination, ...]:
     """One combination per motion control x sensor type (at least one, with what is known)."""
     rules = solution.rules
     base: dict[str, str] = {
-        rules.team_key: identification.kinematic_type or identification.structure}
+        rules.team_key: identification.kinematic_type or identification.structure
+    }
     control_name = profile.role("motion_control")
     type_name = profile.role("sensor_type")
     count_name = profile.role("sensor_count")

@@ -51,15 +51,22 @@ _READ_FILE = 1 << 2
 _READ_DIR = 1 << 3
 # Every file-system right the kernel knows at each ABI: all are "handled" (denied unless a rule
 # grants them), so a right that a newer kernel adds is denied too.
-_FS_RIGHTS = {1: (1 << 13) - 1, 2: (1 << 14) - 1, 3: (1 << 15) - 1, 4: (1 << 15) - 1,
-              5: (1 << 16) - 1}
+_FS_RIGHTS = {
+    1: (1 << 13) - 1,
+    2: (1 << 14) - 1,
+    3: (1 << 15) - 1,
+    4: (1 << 15) - 1,
+    5: (1 << 16) - 1,
+}
 _NET_TCP = (1 << 0) | (1 << 1)  # bind and connect
 _SCOPES = (1 << 0) | (1 << 1)  # abstract Unix sockets and signals
 
 # seccomp: audit architecture, then the system calls refused (socket, io_uring_setup, clone,
 # clone3, and fork/vfork where they exist). x86-64 numbers at or above 0x40000000 are x32 calls.
-_DENIED = {"x86_64": (0xC000003E, (41, 425, 56, 435, 57, 58)),
-           "aarch64": (0xC00000B7, (198, 425, 220, 435))}
+_DENIED = {
+    "x86_64": (0xC000003E, (41, 425, 56, 435, 57, 58)),
+    "aarch64": (0xC00000B7, (198, 425, 220, 435)),
+}
 _X32 = 0x40000000
 _RET_ALLOW = 0x7FFF0000
 _RET_ERRNO = 0x00050000
@@ -76,8 +83,10 @@ class Confinement:
     @property
     def missing(self) -> tuple[str, ...]:
         """The fences this kernel did not give, named for a warning."""
-        return (*(() if self.landlock_abi else ("Landlock",)),
-                *(() if self.seccomp else ("seccomp",)))
+        return (
+            *(() if self.landlock_abi else ("Landlock",)),
+            *(() if self.seccomp else ("seccomp",)),
+        )
 
 
 def confine(readable: Sequence[str | Path]) -> Confinement:
@@ -93,8 +102,11 @@ def confine(readable: Sequence[str | Path]) -> Confinement:
 
 
 class _RulesetAttr(ctypes.Structure):
-    _fields_: ClassVar = [("handled_access_fs", ctypes.c_uint64),
-                          ("handled_access_net", ctypes.c_uint64), ("scoped", ctypes.c_uint64)]
+    _fields_: ClassVar = [
+        ("handled_access_fs", ctypes.c_uint64),
+        ("handled_access_net", ctypes.c_uint64),
+        ("scoped", ctypes.c_uint64),
+    ]
 
 
 class _PathBeneathAttr(ctypes.Structure):
@@ -103,8 +115,12 @@ class _PathBeneathAttr(ctypes.Structure):
 
 
 class _SockFilter(ctypes.Structure):
-    _fields_: ClassVar = [("code", ctypes.c_uint16), ("jt", ctypes.c_uint8),
-                          ("jf", ctypes.c_uint8), ("k", ctypes.c_uint32)]
+    _fields_: ClassVar = [
+        ("code", ctypes.c_uint16),
+        ("jt", ctypes.c_uint8),
+        ("jf", ctypes.c_uint8),
+        ("k", ctypes.c_uint32),
+    ]
 
 
 class _SockFprog(ctypes.Structure):
@@ -114,16 +130,29 @@ class _SockFprog(ctypes.Structure):
 def _landlock(libc: Any, readable: Sequence[str | Path]) -> int:
     syscall = libc.syscall
     syscall.restype = ctypes.c_long
-    abi = int(syscall(ctypes.c_long(_CREATE_RULESET), None, ctypes.c_size_t(0),
-                      ctypes.c_uint32(_CREATE_RULESET_VERSION)))
+    abi = int(
+        syscall(
+            ctypes.c_long(_CREATE_RULESET),
+            None,
+            ctypes.c_size_t(0),
+            ctypes.c_uint32(_CREATE_RULESET_VERSION),
+        )
+    )
     if abi <= 0:
         return 0
-    attr = _RulesetAttr(_FS_RIGHTS.get(abi, _FS_RIGHTS[5]), _NET_TCP if abi >= 4 else 0,
-                       _SCOPES if abi >= 6 else 0)
+    attr = _RulesetAttr(
+        _FS_RIGHTS.get(abi, _FS_RIGHTS[5]), _NET_TCP if abi >= 4 else 0, _SCOPES if abi >= 6 else 0
+    )
     # An older kernel takes the shorter struct it knows (the fields it does not know are absent).
     size = 8 if abi < 4 else 16 if abi < 6 else 24
-    ruleset = int(syscall(ctypes.c_long(_CREATE_RULESET), ctypes.byref(attr),
-                          ctypes.c_size_t(size), ctypes.c_uint32(0)))
+    ruleset = int(
+        syscall(
+            ctypes.c_long(_CREATE_RULESET),
+            ctypes.byref(attr),
+            ctypes.c_size_t(size),
+            ctypes.c_uint32(0),
+        )
+    )
     if ruleset < 0:
         return 0
     try:
@@ -132,9 +161,16 @@ def _landlock(libc: Any, readable: Sequence[str | Path]) -> int:
             fd = os.open(folder, os.O_PATH | os.O_CLOEXEC)
             try:
                 rule = _PathBeneathAttr(rights, fd)
-                if syscall(ctypes.c_long(_ADD_RULE), ctypes.c_int(ruleset),
-                           ctypes.c_int(_RULE_PATH_BENEATH), ctypes.byref(rule),
-                           ctypes.c_uint32(0)) != 0:
+                if (
+                    syscall(
+                        ctypes.c_long(_ADD_RULE),
+                        ctypes.c_int(ruleset),
+                        ctypes.c_int(_RULE_PATH_BENEATH),
+                        ctypes.byref(rule),
+                        ctypes.c_uint32(0),
+                    )
+                    != 0
+                ):
                     raise OSError(ctypes.get_errno(), f"landlock_add_rule {folder}")
             finally:
                 os.close(fd)
@@ -153,14 +189,18 @@ def _seccomp(libc: Any) -> bool:
     load, jeq, jge, ret = 0x20, 0x15, 0x35, 0x06  # BPF_LD|W|ABS, JMP|JEQ|K, JMP|JGE|K, RET|K
     # 0: arch; 1: a foreign architecture is killed (its numbers mean other calls);
     # 2: number; 3: x32 refused; 4..: each denied call jumps to the last instruction.
-    program = [(load, 0, 0, 4), (jeq, 1, 0, arch), (ret, 0, 0, _RET_KILL_PROCESS),
-               (load, 0, 0, 0), (jge, len(calls) + 1, 0, _X32)]
+    program = [
+        (load, 0, 0, 4),
+        (jeq, 1, 0, arch),
+        (ret, 0, 0, _RET_KILL_PROCESS),
+        (load, 0, 0, 0),
+        (jge, len(calls) + 1, 0, _X32),
+    ]
     program += [(jeq, len(calls) - i, 0, call) for i, call in enumerate(calls)]
     program += [(ret, 0, 0, _RET_ALLOW), (ret, 0, 0, _RET_ERRNO | errno.EACCES)]
     filters = (_SockFilter * len(program))(*[_SockFilter(*step) for step in program])
     fprog = _SockFprog(len(program), filters)
-    return bool(libc.prctl(_PR_SET_SECCOMP, _SECCOMP_MODE_FILTER, ctypes.byref(fprog), 0, 0)
-                == 0)
+    return bool(libc.prctl(_PR_SET_SECCOMP, _SECCOMP_MODE_FILTER, ctypes.byref(fprog), 0, 0) == 0)
 
 
 def _existing(paths: Sequence[str | Path]) -> list[Path]:

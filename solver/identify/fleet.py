@@ -33,8 +33,14 @@ from solver.rules import RuleSet
 from solver.team import parse_team
 from solver.yamlio import parse_document
 
-__all__ = ["Fleet", "FleetEntry", "find_descriptions", "identify_fleet", "rules_reference",
-           "team_text"]
+__all__ = [
+    "Fleet",
+    "FleetEntry",
+    "find_descriptions",
+    "identify_fleet",
+    "rules_reference",
+    "team_text",
+]
 
 _SUFFIXES = (".urdf.xacro", ".urdf", ".xacro")
 
@@ -72,18 +78,22 @@ def find_descriptions(folder: str | Path) -> tuple[Path, ...]:
     base = Path(folder)
     try:
         if not base.is_dir():
-            raise InputError.at(str(folder), "not a folder of robot descriptions",
-                                code="fleet")
-        found = sorted((p for p in base.iterdir() if _stem(p) and _is_robot_file(p)),
-                       key=lambda p: p.name)
+            raise InputError.at(str(folder), "not a folder of robot descriptions", code="fleet")
+        found = sorted(
+            (p for p in base.iterdir() if _stem(p) and _is_robot_file(p)), key=lambda p: p.name
+        )
     except OSError as error:
         # A folder without read or search permission cannot be used at all; an unreadable
         # file in a readable folder is a failed robot instead (identify_fleet).
-        raise InputError.at(str(folder), f"cannot list this folder: "
-                                         f"{error.strerror or error}", code="fleet") from None
+        raise InputError.at(
+            str(folder), f"cannot list this folder: {error.strerror or error}", code="fleet"
+        ) from None
     if not found:
-        raise InputError.at(str(folder), "no robot descriptions (*.urdf, *.urdf.xacro, "
-                                         "*.xacro) in this folder", code="fleet")
+        raise InputError.at(
+            str(folder),
+            "no robot descriptions (*.urdf, *.urdf.xacro, *.xacro) in this folder",
+            code="fleet",
+        )
     return tuple(found)
 
 
@@ -97,15 +107,22 @@ def _is_robot_file(path: Path) -> bool:
 
 def _companion(path: Path, *suffixes: str) -> Path | None:
     stem = _stem(path) or path.stem
-    return next((path.with_name(stem + s) for s in suffixes
-                 if path.with_name(stem + s).is_file()), None)
+    return next(
+        (path.with_name(stem + s) for s in suffixes if path.with_name(stem + s).is_file()), None
+    )
 
 
-def identify_fleet(folder: str | Path, *, rules: RuleSet, profile: Profile,
-                   package_path: Sequence[str | Path] = (),
-                   xacro_args: Mapping[str, str] | None = None,
-                   progress: Progress | None = None, trust_xacro: bool = False,
-                   strict: bool = False) -> Fleet:
+def identify_fleet(
+    folder: str | Path,
+    *,
+    rules: RuleSet,
+    profile: Profile,
+    package_path: Sequence[str | Path] = (),
+    xacro_args: Mapping[str, str] | None = None,
+    progress: Progress | None = None,
+    trust_xacro: bool = False,
+    strict: bool = False,
+) -> Fleet:
     """Identify every robot in ``folder``; failures are kept with their reason.
 
     With ``strict``, a robot whose description or SRDF has warnings is a failure too.
@@ -123,10 +140,17 @@ def identify_fleet(folder: str | Path, *, rules: RuleSet, profile: Profile,
         topics = _companion(path, ".topics", ".topics.txt")
         bag = _companion(path, ".bag")
         try:
-            result = identify(path, srdf=srdf, topic_lists=[topics] if topics else (),
-                              bags=[bag] if bag else (), xacro_args=xacro_args,
-                              package_path=package_path, rules=rules, profile=profile,
-                              trust_xacro=trust_xacro)
+            result = identify(
+                path,
+                srdf=srdf,
+                topic_lists=[topics] if topics else (),
+                bags=[bag] if bag else (),
+                xacro_args=xacro_args,
+                package_path=package_path,
+                rules=rules,
+                profile=profile,
+                trust_xacro=trust_xacro,
+            )
         except SolverError as error:
             entries.append(FleetEntry(name, str(path), None, str(error).splitlines()[0]))
             continue
@@ -139,19 +163,23 @@ def identify_fleet(folder: str | Path, *, rules: RuleSet, profile: Profile,
     return Fleet(str(folder), tuple(entries))
 
 
-def team_text(fleet: Fleet, rules: RuleSet, profile: Profile, *, name: str,
-              rules_reference: str | None = None) -> str:
+def team_text(
+    fleet: Fleet, rules: RuleSet, profile: Profile, *, name: str, rules_reference: str | None = None
+) -> str:
     """A team selection YAML for the fleet (see the module docstring), checked to load."""
-    roles = {role: profile.role(role) for role in ("motion_control", "sensor_type",
-                                                   "sensor_count")}
+    roles = {role: profile.role(role) for role in ("motion_control", "sensor_type", "sensor_count")}
     by_type: dict[str, list[FleetEntry]] = {}
     for entry in fleet.entries:
         ident = entry.identification
         if ident is not None and ident.kinematic_type is not None:
             by_type.setdefault(ident.kinematic_type, []).append(entry)
-    lines = [_comment(f"Team selection built by `teleop-ui fleet` from {fleet.folder}: "
-                      f"{len(fleet.identified)} robot(s) identified, {len(fleet.failed)} not."),
-             f"name: {_yaml(name)}"]
+    lines = [
+        _comment(
+            f"Team selection built by `teleop-ui fleet` from {fleet.folder}: "
+            f"{len(fleet.identified)} robot(s) identified, {len(fleet.failed)} not."
+        ),
+        f"name: {_yaml(name)}",
+    ]
     if rules_reference is not None:
         lines.append(f"rules: {_yaml(rules_reference)}")
     lines.append("team:")
@@ -168,23 +196,32 @@ def team_text(fleet: Fleet, rules: RuleSet, profile: Profile, *, name: str,
             lines.append(_comment(f"not in the rule set: {entry.name} ({ident.structure})"))
     lines += [_comment(f"not identified: {e.name}: {e.error}") for e in fleet.failed]
     if not by_type:
-        raise InputError.at(fleet.folder, "no robot in this folder maps to a kinematic type "
-                                          f"of the rule set {rules.name!r}; no team written",
-                            code="fleet")
+        raise InputError.at(
+            fleet.folder,
+            "no robot in this folder maps to a kinematic type "
+            f"of the rule set {rules.name!r}; no team written",
+            code="fleet",
+        )
     text = "\n".join(lines) + "\n"
     parse_team(parse_document(text, "<fleet team>"), rules)
     return text
 
 
-def _selection(entries: list[FleetEntry], rules: RuleSet, roles: dict[str, str]
-               ) -> list[str]:
+def _selection(entries: list[FleetEntry], rules: RuleSet, roles: dict[str, str]) -> list[str]:
     idents = [e.identification for e in entries if e.identification is not None]
     lines = [
-        *_union(rules, roles["motion_control"],
-                {c.motion_control for i in idents for c in i.motion_controls},
-                "none identified"),
-        *_union(rules, roles["sensor_type"], {t for i in idents for t in i.sensor_types},
-                "none with a presentation"),
+        *_union(
+            rules,
+            roles["motion_control"],
+            {c.motion_control for i in idents for c in i.motion_controls},
+            "none identified",
+        ),
+        *_union(
+            rules,
+            roles["sensor_type"],
+            {t for i in idents for t in i.sensor_types},
+            "none with a presentation",
+        ),
     ]
     count = roles["sensor_count"]
     if count in rules.names:
@@ -197,8 +234,9 @@ def _selection(entries: list[FleetEntry], rules: RuleSet, roles: dict[str, str]
         elif most >= low:
             lines.append(f"    {_yaml(count)}: {_yaml(most)}")
         else:
-            lines.append("    " + _comment(f"{count}: no sensors with a presentation (every "
-                                          "value allowed)"))
+            lines.append(
+                "    " + _comment(f"{count}: no sensors with a presentation (every value allowed)")
+            )
     if all(line.lstrip().startswith("#") for line in lines):
         # A key followed only by comments loads as null, which a team file rejects; {} is
         # the team file's spelling of "every value of every characteristic".
@@ -230,8 +268,9 @@ def _yaml(value: object) -> str:
     # Double quotes keep a line break or control character as an escape on this one line
     # (plain and single-quoted scalars would continue on the next line).
     style = None if all(str(part).isprintable() for part in parts) else '"'
-    text = yaml.safe_dump(value, default_flow_style=True, default_style=style,
-                          allow_unicode=True, width=2**31 - 1)
+    text = yaml.safe_dump(
+        value, default_flow_style=True, default_style=style, allow_unicode=True, width=2**31 - 1
+    )
     return text.removesuffix("\n...\n").rstrip("\n")
 
 
@@ -239,8 +278,9 @@ def _comment(text: str) -> str:
     """``# text`` with every character that could end the comment line (or hide text in it)
     written as its escape."""
     if not text.isprintable():
-        text = "".join(c if c.isprintable() else c.encode("unicode_escape").decode("ascii")
-                       for c in text)
+        text = "".join(
+            c if c.isprintable() else c.encode("unicode_escape").decode("ascii") for c in text
+        )
     return "# " + text
 
 

@@ -50,8 +50,14 @@ from solver.identify.urdf import parse_urdf
 from solver.identify.xacros import compile_xacro, is_xacro
 from solver.rules import RuleSet, default_rules_path, load_rules
 
-__all__ = ["Identification", "IdentificationCache", "TopicSource", "content_key", "identify",
-           "identify_urdf"]
+__all__ = [
+    "Identification",
+    "IdentificationCache",
+    "TopicSource",
+    "content_key",
+    "identify",
+    "identify_urdf",
+]
 
 
 @dataclass(frozen=True, slots=True)
@@ -86,13 +92,19 @@ class Identification:
 
     @property
     def sensor_types(self) -> tuple[str, ...]:
-        return tuple(dict.fromkeys(s.sensor_type for s in self.sensors
-                                   if s.sensor_type is not None))
+        return tuple(
+            dict.fromkeys(s.sensor_type for s in self.sensors if s.sensor_type is not None)
+        )
 
 
-def content_key(urdf_text: str | bytes, *, srdf_text: str | bytes | None = None,
-                topics: Sequence[TopicSource] = (), profile: Profile | None = None,
-                rules: RuleSet | None = None) -> str:
+def content_key(
+    urdf_text: str | bytes,
+    *,
+    srdf_text: str | bytes | None = None,
+    topics: Sequence[TopicSource] = (),
+    profile: Profile | None = None,
+    rules: RuleSet | None = None,
+) -> str:
     """A digest naming an identification by everything it depends on."""
     digest = hashlib.sha256()
     for part in (urdf_text, srdf_text or b""):
@@ -105,11 +117,18 @@ def content_key(urdf_text: str | bytes, *, srdf_text: str | bytes | None = None,
     return digest.hexdigest()
 
 
-def identify_urdf(urdf_text: str | bytes, *, file: str = "<string>", robot: str | None = None,
-                  srdf_text: str | bytes | None = None, srdf_file: str = "<srdf>",
-                  topics: Sequence[TopicSource] = (), rules: RuleSet | None = None,
-                  profile: Profile | None = None, notes: Sequence[str] = ()
-                  ) -> Identification:
+def identify_urdf(
+    urdf_text: str | bytes,
+    *,
+    file: str = "<string>",
+    robot: str | None = None,
+    srdf_text: str | bytes | None = None,
+    srdf_file: str = "<srdf>",
+    topics: Sequence[TopicSource] = (),
+    rules: RuleSet | None = None,
+    profile: Profile | None = None,
+    notes: Sequence[str] = (),
+) -> Identification:
     """Identify a robot from URDF text; :class:`~solver.errors.InputError` if unusable."""
     rules = rules if rules is not None else load_rules(default_rules_path())
     profile = profile if profile is not None else load_profile()
@@ -119,25 +138,39 @@ def identify_urdf(urdf_text: str | bytes, *, file: str = "<string>", robot: str 
     body = detect_body(urdf, profile, srdf)
     reading = classify(body, profile, rules, root=urdf.root, srdf=srdf)
     detections: list[Detection] = list(sensors_from_urdf(urdf, profile))
-    controls = [controls_from_description(body, profile, srdf,
-                                          srdf_source=Path(srdf_file).name)]
+    controls = [controls_from_description(body, profile, srdf, srdf_source=Path(srdf_file).name)]
     for source in topics:
         detections += sensors_from_topics(source.topics, profile, source.name)
-        controls.append(controls_from_topics(source.topics, profile, reading.structure,
-                                             source.name))
+        controls.append(
+            controls_from_topics(source.topics, profile, reading.structure, source.name)
+        )
     return Identification(
-        robot=robot or urdf.name, file=file, structure=reading.structure,
-        kinematic_type=reading.kinematic_type, confidence=reading.confidence,
-        evidence=reading.evidence, sensors=merge(detections, profile, rules),
-        motion_controls=merge_controls(*controls), body=body, notes=tuple(notes),
-        warnings=warnings)
+        robot=robot or urdf.name,
+        file=file,
+        structure=reading.structure,
+        kinematic_type=reading.kinematic_type,
+        confidence=reading.confidence,
+        evidence=reading.evidence,
+        sensors=merge(detections, profile, rules),
+        motion_controls=merge_controls(*controls),
+        body=body,
+        notes=tuple(notes),
+        warnings=warnings,
+    )
 
 
-def identify(description: str | Path, *, srdf: str | Path | None = None,
-             topic_lists: Sequence[str | Path] = (), bags: Sequence[str | Path] = (),
-             xacro_args: Mapping[str, str] | None = None,
-             package_path: Sequence[str | Path] = (), rules: RuleSet | None = None,
-             profile: Profile | None = None, trust_xacro: bool = False) -> Identification:
+def identify(
+    description: str | Path,
+    *,
+    srdf: str | Path | None = None,
+    topic_lists: Sequence[str | Path] = (),
+    bags: Sequence[str | Path] = (),
+    xacro_args: Mapping[str, str] | None = None,
+    package_path: Sequence[str | Path] = (),
+    rules: RuleSet | None = None,
+    profile: Profile | None = None,
+    trust_xacro: bool = False,
+) -> Identification:
     """Identify the robot described by a URDF or xacro file (plus SRDF, topic lists, bags).
 
     A ``.xacro`` file is compiled only with ``trust_xacro=True`` (compiling xacro runs code
@@ -147,9 +180,13 @@ def identify(description: str | Path, *, srdf: str | Path | None = None,
     notes: tuple[str, ...] = ()
     if is_xacro(file):
         if not trust_xacro:
-            raise InputError.at(file, "xacro file: compiling xacro runs Python code written in "
-                                      "the file; pass --trust-xacro for a file you trust, or "
-                                      "give its expanded .urdf", code="xacro-untrusted")
+            raise InputError.at(
+                file,
+                "xacro file: compiling xacro runs Python code written in "
+                "the file; pass --trust-xacro for a file you trust, or "
+                "give its expanded .urdf",
+                code="xacro-untrusted",
+            )
         compiled = compile_xacro(description, args=xacro_args, package_path=package_path)
         text: str | bytes = compiled.text
         notes = tuple(f"xacro: {warning}" for warning in compiled.warnings)
@@ -158,9 +195,16 @@ def identify(description: str | Path, *, srdf: str | Path | None = None,
     srdf_text = None if srdf is None else read_bytes(srdf)
     sources = [TopicSource(Path(t).name, read_topic_list(t)) for t in topic_lists]
     sources += [TopicSource(f"bag {Path(b).name}", read_bag_topics(b)) for b in bags]
-    return identify_urdf(text, file=file, srdf_text=srdf_text,
-                         srdf_file=str(srdf) if srdf is not None else "<srdf>",
-                         topics=sources, rules=rules, profile=profile, notes=notes)
+    return identify_urdf(
+        text,
+        file=file,
+        srdf_text=srdf_text,
+        srdf_file=str(srdf) if srdf is not None else "<srdf>",
+        topics=sources,
+        rules=rules,
+        profile=profile,
+        notes=notes,
+    )
 
 
 class IdentificationCache:
@@ -175,21 +219,37 @@ class IdentificationCache:
     def __len__(self) -> int:
         return len(self._entries)
 
-    def identify_urdf(self, urdf_text: str | bytes, *, srdf_text: str | bytes | None = None,
-                      topics: Sequence[TopicSource] = (), rules: RuleSet | None = None,
-                      profile: Profile | None = None, file: str = "<string>",
-                      robot: str | None = None) -> Identification:
+    def identify_urdf(
+        self,
+        urdf_text: str | bytes,
+        *,
+        srdf_text: str | bytes | None = None,
+        topics: Sequence[TopicSource] = (),
+        rules: RuleSet | None = None,
+        profile: Profile | None = None,
+        file: str = "<string>",
+        robot: str | None = None,
+    ) -> Identification:
         """:func:`identify_urdf`, answered from the cache when the content was seen before."""
-        key = content_key(urdf_text, srdf_text=srdf_text, topics=topics, profile=profile,
-                          rules=rules) + f"|{file}|{robot}"
+        key = (
+            content_key(urdf_text, srdf_text=srdf_text, topics=topics, profile=profile, rules=rules)
+            + f"|{file}|{robot}"
+        )
         found = self._entries.get(key)
         if found is not None:
             self.hits += 1
             self._entries.move_to_end(key)
             return found
         self.misses += 1
-        result = identify_urdf(urdf_text, file=file, robot=robot, srdf_text=srdf_text,
-                               topics=topics, rules=rules, profile=profile)
+        result = identify_urdf(
+            urdf_text,
+            file=file,
+            robot=robot,
+            srdf_text=srdf_text,
+            topics=topics,
+            rules=rules,
+            profile=profile,
+        )
         self._entries[key] = result
         if len(self._entries) > self.maxsize:
             self._entries.popitem(last=False)

@@ -33,8 +33,7 @@ from solver.identify.profile import VELOCITY, Profile
 from solver.identify.sensors import Detection
 from solver.identify.topics import Topic
 
-__all__ = ["Control", "controls_from_topics", "device_of", "merge_controls",
-           "sensors_from_topics"]
+__all__ = ["Control", "controls_from_topics", "device_of", "merge_controls", "sensors_from_topics"]
 
 _ACTION_SUFFIXES = ("goal", "feedback", "status", "result", "cancel")
 
@@ -55,8 +54,9 @@ def device_of(topic: str, profile: Profile) -> str:
     return "/" + "/".join(parts)
 
 
-def sensors_from_topics(topics: Iterable[Topic], profile: Profile, source: str = "topics"
-                        ) -> tuple[Detection, ...]:
+def sensors_from_topics(
+    topics: Iterable[Topic], profile: Profile, source: str = "topics"
+) -> tuple[Detection, ...]:
     """One detection per device, in order of the device's first topic."""
     best: dict[str, tuple[int, str]] = {}
     for topic in topics:
@@ -73,8 +73,9 @@ def sensors_from_topics(topics: Iterable[Topic], profile: Profile, source: str =
     return tuple(Detection(kind, device, source, device) for device, (_, kind) in best.items())
 
 
-def controls_from_topics(topics: Iterable[Topic], profile: Profile, structure: str,
-                         source: str = "topics") -> tuple[Control, ...]:
+def controls_from_topics(
+    topics: Iterable[Topic], profile: Profile, structure: str, source: str = "topics"
+) -> tuple[Control, ...]:
     """The motion controls the topics show, one :class:`Control` per control."""
     seen: dict[str, list[str]] = {}
     for topic in topics:
@@ -85,20 +86,23 @@ def controls_from_topics(topics: Iterable[Topic], profile: Profile, structure: s
             wanted = rule.direction or "subscribed"
             if topic.direction is not None and topic.direction != wanted and not action:
                 continue
-            control = profile.velocity_control(structure) if rule.control == VELOCITY \
-                else rule.control
+            control = (
+                profile.velocity_control(structure) if rule.control == VELOCITY else rule.control
+            )
             shown = f"{topic.name} ({topic.type})"
             if shown not in seen.setdefault(control, []):
                 seen[control].append(shown)
             break
-    return tuple(Control(control, f"{source}: {_first(names)}") for control, names in
-                 seen.items())
+    return tuple(Control(control, f"{source}: {_first(names)}") for control, names in seen.items())
 
 
 def _is_action(topic: Topic) -> bool:
     last = topic.name.rstrip("/").rsplit("/", 1)[-1]
-    return "/_action/" in topic.name or (last in _ACTION_SUFFIXES and "Action" in topic.type) \
+    return (
+        "/_action/" in topic.name
+        or (last in _ACTION_SUFFIXES and "Action" in topic.type)
         or topic.type.endswith(("_FeedbackMessage", "GoalStatusArray"))
+    )
 
 
 def _first(names: list[str], limit: int = 3) -> str:

@@ -22,9 +22,14 @@ from solver.identify.srdf import Srdf
 __all__ = ["controls_from_description"]
 
 
-def controls_from_description(body: Body, profile: Profile, srdf: Srdf | None = None,
-                              *, urdf_source: str = "urdf", srdf_source: str = "srdf"
-                              ) -> tuple[Control, ...]:
+def controls_from_description(
+    body: Body,
+    profile: Profile,
+    srdf: Srdf | None = None,
+    *,
+    urdf_source: str = "urdf",
+    srdf_source: str = "srdf",
+) -> tuple[Control, ...]:
     """The motion controls the body (and SRDF) show, each with what shows it."""
     found: list[Control] = []
 
@@ -36,23 +41,34 @@ def controls_from_description(body: Body, profile: Profile, srdf: Srdf | None = 
         plugins = ", ".join((*body.drive_plugins, *body.tracks)[:3])
         add("drive_plugin", f"{urdf_source}: drive plugin {plugins}")
     if body.controlled_wheels:
-        add("controlled_wheels", f"{urdf_source}: {len(body.controlled_wheels)} wheel joint(s) "
-                                 "with a transmission")
+        add(
+            "controlled_wheels",
+            f"{urdf_source}: {len(body.controlled_wheels)} wheel joint(s) with a transmission",
+        )
     if body.flying:
-        what = f"{len(body.rotors)} rotor joint(s)" if body.rotors else \
-            f"flight plugin {body.flight_plugins[0]}"
+        what = (
+            f"{len(body.rotors)} rotor joint(s)"
+            if body.rotors
+            else f"flight plugin {body.flight_plugins[0]}"
+        )
         add("flight", f"{urdf_source}: {what}")
     if body.controlled_joints:
-        add("controlled_joints", f"{urdf_source}: {len(body.controlled_joints)} limb joint(s) "
-                                 "with a transmission")
+        add(
+            "controlled_joints",
+            f"{urdf_source}: {len(body.controlled_joints)} limb joint(s) with a transmission",
+        )
     if srdf is not None:
         groups = srdf.arm_groups(profile.limb("arm_min_joints"))
         if groups:
-            add("srdf_group", f"{srdf_source}: planning group(s) "
-                              f"{', '.join(g.name for g in groups)}")
+            add(
+                "srdf_group",
+                f"{srdf_source}: planning group(s) {', '.join(g.name for g in groups)}",
+            )
         if srdf.end_effectors:
-            add("srdf_end_effector", f"{srdf_source}: end effector(s) "
-                                     f"{', '.join(e.name for e in srdf.end_effectors)}")
+            add(
+                "srdf_end_effector",
+                f"{srdf_source}: end effector(s) {', '.join(e.name for e in srdf.end_effectors)}",
+            )
     merged: dict[str, list[str]] = {}
     for control in found:
         merged.setdefault(control.motion_control, []).append(control.source)

@@ -48,23 +48,60 @@ __all__ = [
 # What the code measures on a body (the domain); which of them matter is the profile's business.
 PARTS = ("wheel", "rotor", "track", "gripper", "leg", "head", "arm")
 PLUGIN_PARTS = ("drive", "track", "flight")
-FEATURES = ("wheels", "tracks", "rotors", "arms", "legs", "heads", "fingers", "grippers",
-            "drive_plugins", "flight_plugins", "mobile_base", "flying", "floating_base",
-            "weak_base")
+FEATURES = (
+    "wheels",
+    "tracks",
+    "rotors",
+    "arms",
+    "legs",
+    "heads",
+    "fingers",
+    "grippers",
+    "drive_plugins",
+    "flight_plugins",
+    "mobile_base",
+    "flying",
+    "floating_base",
+    "weak_base",
+)
 # weak_base: the mobile base is known only from fixed wheels, planar root joints or an SRDF
 # planar virtual joint (a trimmed or simulated model), not from driven wheels or a plugin.
 BOOLEAN_FEATURES = ("mobile_base", "flying", "floating_base", "weak_base")
 DIRECTIONS = ("published", "subscribed")
-CONTROL_SOURCES = ("drive_plugin", "controlled_wheels", "flight", "controlled_joints",
-                   "srdf_group", "srdf_end_effector")
-LIMB_KEYS = ("arm_min_joints", "leg_min_joints", "head_max_joints", "hand_min_fingers",
-             "finger_max_joints", "min_rotors")
+CONTROL_SOURCES = (
+    "drive_plugin",
+    "controlled_wheels",
+    "flight",
+    "controlled_joints",
+    "srdf_group",
+    "srdf_end_effector",
+)
+LIMB_KEYS = (
+    "arm_min_joints",
+    "leg_min_joints",
+    "head_max_joints",
+    "hand_min_fingers",
+    "finger_max_joints",
+    "min_rotors",
+)
 # Thresholds a profile written before they existed may leave out.
 LIMB_DEFAULTS = {"finger_max_joints": 4, "min_rotors": 2}
 VELOCITY = "velocity"
 
-_TOP_KEYS = {"name", "description", "characteristics", "patterns", "plugins", "limbs",
-             "doubt_factor", "structures", "sensors", "sensor_types", "topics", "motion"}
+_TOP_KEYS = {
+    "name",
+    "description",
+    "characteristics",
+    "patterns",
+    "plugins",
+    "limbs",
+    "doubt_factor",
+    "structures",
+    "sensors",
+    "sensor_types",
+    "topics",
+    "motion",
+}
 _CHARACTERISTIC_ROLES = ("motion_control", "sensor_type", "sensor_count")
 _STRUCTURE_KEYS = {"name", "when", "expect", "kinematic_types", "confidence", "description"}
 _ELEMENT_KEYS = {"kind", "types", "match"}
@@ -148,8 +185,11 @@ def _compiled(text: str) -> Any:
     try:
         return re2.compile(text, options)
     except re2.error as error:
-        detail = error.args[0].decode("utf-8", "replace") if error.args and isinstance(
-            error.args[0], bytes) else str(error)
+        detail = (
+            error.args[0].decode("utf-8", "replace")
+            if error.args and isinstance(error.args[0], bytes)
+            else str(error)
+        )
         raise PatternError(detail) from None
 
 
@@ -200,8 +240,7 @@ class SensorRule:
     direction: str | None = None
     location: Location | None = field(default=None, compare=False)
 
-    def accepts(self, kind_or_type: str | None, text: str, direction: str | None = None
-                ) -> bool:
+    def accepts(self, kind_or_type: str | None, text: str, direction: str | None = None) -> bool:
         if self.types and kind_or_type not in self.types:
             return False
         if self.direction is not None and direction is not None and direction != self.direction:
@@ -298,8 +337,7 @@ def default_profile_path() -> Path:
 
 def load_profile(path: str | Path | None = None, *, display: str | None = None) -> Profile:
     """Read a profile (default: the shipped one); :class:`ProfileError` lists every problem."""
-    document = load_document(default_profile_path() if path is None else path,
-                             display=display)
+    document = load_document(default_profile_path() if path is None else path, display=display)
     return parse_profile(document)
 
 
@@ -307,11 +345,14 @@ def parse_profile(document: Document) -> Profile:
     reader = Reader(document)
     top = reader.mapping((), "identification profile")
     if not isinstance(document.data, dict):
-        raise ProfileError(reader.faults or [reader.document.fault(
-            (), "an identification profile must be a mapping")])
+        raise ProfileError(
+            reader.faults
+            or [reader.document.fault((), "an identification profile must be a mapping")]
+        )
     reader.unknown_keys((), top, _TOP_KEYS, "profile field")
-    name = reader.string(("name",), "profile name", required=False,
-                         default=Path(document.file).stem)
+    name = reader.string(
+        ("name",), "profile name", required=False, default=Path(document.file).stem
+    )
     roles = _roles(reader)
     patterns = _patterns(reader, ("patterns",), PARTS, "part")
     plugins = _patterns(reader, ("plugins",), PLUGIN_PARTS, "plugin part")
@@ -320,35 +361,60 @@ def parse_profile(document: Document) -> Profile:
     structures = _structures(reader)
     names = {rule.name for rule in structures}
     elements = _sensor_rules(reader, ("sensors", "elements"), _ELEMENT_KEYS, types=True)
-    plugin_rules = _sensor_rules(reader, ("sensors", "plugins"), _PLUGIN_RULE_KEYS,
-                                 types=False)
-    reader.unknown_keys(("sensors",), reader.mapping(("sensors",), "sensors"),
-                        {"elements", "plugins", "ground_truth"}, "sensors field")
+    plugin_rules = _sensor_rules(reader, ("sensors", "plugins"), _PLUGIN_RULE_KEYS, types=False)
+    reader.unknown_keys(
+        ("sensors",),
+        reader.mapping(("sensors",), "sensors"),
+        {"elements", "plugins", "ground_truth"},
+        "sensors field",
+    )
     ground_truth = _pattern(reader, ("sensors", "ground_truth"), required=False)
     sensor_types = _sensor_types(reader)
     topics = reader.mapping(("topics",), "topics")
-    reader.unknown_keys(("topics",), topics, {"stream_segments", "sensors", "controls"},
-                        "topics field")
-    segments = frozenset(text.lower() for _, text in
-                         reader.names(("topics", "stream_segments"), "stream segments"))
-    topic_sensors = _sensor_rules(reader, ("topics", "sensors"), _TOPIC_SENSOR_KEYS,
-                                  types=True, messages=True)
+    reader.unknown_keys(
+        ("topics",), topics, {"stream_segments", "sensors", "controls"}, "topics field"
+    )
+    segments = frozenset(
+        text.lower() for _, text in reader.names(("topics", "stream_segments"), "stream segments")
+    )
+    topic_sensors = _sensor_rules(
+        reader, ("topics", "sensors"), _TOPIC_SENSOR_KEYS, types=True, messages=True
+    )
     topic_controls = _control_rules(reader)
     velocity_default, by_structure, description = _motion(reader, names)
     if reader.faults:
         raise ProfileError(reader.faults)
     text = repr(document.data).encode("utf-8")
-    return Profile(name, document.file, roles, patterns, plugins, limbs, doubt or 0.8,
-                   structures, elements, plugin_rules, ground_truth, sensor_types, segments,
-                   topic_sensors, topic_controls, velocity_default, by_structure, description,
-                   hashlib.sha256(text).hexdigest())
+    return Profile(
+        name,
+        document.file,
+        roles,
+        patterns,
+        plugins,
+        limbs,
+        doubt or 0.8,
+        structures,
+        elements,
+        plugin_rules,
+        ground_truth,
+        sensor_types,
+        segments,
+        topic_sensors,
+        topic_controls,
+        velocity_default,
+        by_structure,
+        description,
+        hashlib.sha256(text).hexdigest(),
+    )
 
 
 def _roles(reader: Reader) -> tuple[tuple[str, str], ...]:
     spec = reader.mapping(("characteristics",), "characteristics (role -> rule-set name)")
     reader.unknown_keys(("characteristics",), spec, _CHARACTERISTIC_ROLES, "role")
-    return tuple((role, reader.string(("characteristics", role), f"characteristic for {role}"))
-                 for role in _CHARACTERISTIC_ROLES)
+    return tuple(
+        (role, reader.string(("characteristics", role), f"characteristic for {role}"))
+        for role in _CHARACTERISTIC_ROLES
+    )
 
 
 def _pattern(reader: Reader, path: YPath, *, required: bool = True) -> Pattern | None:
@@ -360,15 +426,20 @@ def _pattern(reader: Reader, path: YPath, *, required: bool = True) -> Pattern |
     try:
         compiled = _compiled(text)
     except PatternError as error:
-        reader.fault(path, f"invalid regular expression {text[:80]!r}: {error} (patterns run "
-                           "on RE2, which has no backtracking: no lookaround or "
-                           "backreferences)", code="pattern")
+        reader.fault(
+            path,
+            f"invalid regular expression {text[:80]!r}: {error} (patterns run "
+            "on RE2, which has no backtracking: no lookaround or "
+            "backreferences)",
+            code="pattern",
+        )
         return None
     return Pattern(text, reader.document.location(path), compiled)
 
 
-def _patterns(reader: Reader, path: YPath, parts: tuple[str, ...], what: str
-              ) -> tuple[tuple[str, Pattern], ...]:
+def _patterns(
+    reader: Reader, path: YPath, parts: tuple[str, ...], what: str
+) -> tuple[tuple[str, Pattern], ...]:
     spec = reader.mapping(path, f"{path[-1]} (a mapping of {what} -> pattern)")
     reader.unknown_keys(path, spec, parts, what)
     found = []
@@ -402,16 +473,16 @@ def _limbs(reader: Reader) -> tuple[tuple[str, int], ...]:
     return tuple(found)
 
 
-def _fraction(reader: Reader, path: YPath, what: str, *, required: bool = True
-              ) -> float | None:
+def _fraction(reader: Reader, path: YPath, what: str, *, required: bool = True) -> float | None:
     value = reader.get(path)
     if value is None:
         if required:
             reader.missing(path, what)
         return None
     if isinstance(value, bool) or not isinstance(value, int | float) or not 0 < value <= 1:
-        reader.fault(path, f"{what} must be a number in (0, 1], got {type_name(value)}",
-                     code="out-of-range")
+        reader.fault(
+            path, f"{what} must be a number in (0, 1], got {type_name(value)}", code="out-of-range"
+        )
         return None
     return float(value)
 
@@ -425,9 +496,13 @@ def _conditions(reader: Reader, path: YPath) -> tuple[FeatureCondition, ...]:
     for feature, value in spec.items():
         item = (*path, feature)
         if feature not in FEATURES:
-            reader.fault(item, f"unknown feature {feature!r}{did_you_mean(feature, FEATURES)}; "
-                               f"features: {', '.join(FEATURES)}", key=True,
-                         code="unknown-reference")
+            reader.fault(
+                item,
+                f"unknown feature {feature!r}{did_you_mean(feature, FEATURES)}; "
+                f"features: {', '.join(FEATURES)}",
+                key=True,
+                code="unknown-reference",
+            )
             continue
         if isinstance(value, bool):
             found.append(FeatureCondition(feature, int(value), int(value)))
@@ -442,16 +517,22 @@ def _conditions(reader: Reader, path: YPath) -> tuple[FeatureCondition, ...]:
                 reader.fault(item, "give min and/or max", code="missing-field")
             found.append(FeatureCondition(feature, low, high))
         else:
-            reader.fault(item, f"a condition is a number, true/false or {{min, max}}, got "
-                               f"{type_name(value)}", code="wrong-type")
+            reader.fault(
+                item,
+                f"a condition is a number, true/false or {{min, max}}, got {type_name(value)}",
+                code="wrong-type",
+            )
     return tuple(found)
 
 
 def _structures(reader: Reader) -> tuple[StructureRule, ...]:
     raw = reader.get(("structures",))
     if not isinstance(raw, list) or not raw:
-        reader.fault(("structures",), f"structures must be a non-empty list, got "
-                                      f"{type_name(raw)}", code="wrong-type")
+        reader.fault(
+            ("structures",),
+            f"structures must be a non-empty list, got {type_name(raw)}",
+            code="wrong-type",
+        )
         return ()
     found: list[StructureRule] = []
     for index in range(len(raw)):
@@ -462,19 +543,27 @@ def _structures(reader: Reader) -> tuple[StructureRule, ...]:
         reader.unknown_keys(path, spec, _STRUCTURE_KEYS, "structure field")
         name = reader.string((*path, "name"), "structure name")
         if name and any(rule.name == name for rule in found):
-            reader.fault((*path, "name"), f"duplicate structure {name!r}",
-                         code="duplicate-value")
+            reader.fault((*path, "name"), f"duplicate structure {name!r}", code="duplicate-value")
         if "when" not in spec:
             reader.missing((*path, "when"), "when (write {} to match every body)")
-        kinds = [text for _, text in reader.names((*path, "kinematic_types"),
-                                                  "kinematic types")] \
-            if spec.get("kinematic_types") not in (None, []) else []
+        kinds = (
+            [text for _, text in reader.names((*path, "kinematic_types"), "kinematic types")]
+            if spec.get("kinematic_types") not in (None, [])
+            else []
+        )
         if "kinematic_types" not in spec:
             reader.missing((*path, "kinematic_types"), "kinematic_types (may be [])")
         confidence = _fraction(reader, (*path, "confidence"), "confidence")
-        found.append(StructureRule(name, _conditions(reader, (*path, "when")),
-                                   _conditions(reader, (*path, "expect")), tuple(kinds),
-                                   confidence or 0.5, reader.document.location(path)))
+        found.append(
+            StructureRule(
+                name,
+                _conditions(reader, (*path, "when")),
+                _conditions(reader, (*path, "expect")),
+                tuple(kinds),
+                confidence or 0.5,
+                reader.document.location(path),
+            )
+        )
     return tuple(found)
 
 
@@ -498,8 +587,9 @@ def _list(reader: Reader, path: YPath) -> list[Any]:
     return raw
 
 
-def _sensor_rules(reader: Reader, path: YPath, keys: set[str], *, types: bool,
-                  messages: bool = False) -> tuple[SensorRule, ...]:
+def _sensor_rules(
+    reader: Reader, path: YPath, keys: set[str], *, types: bool, messages: bool = False
+) -> tuple[SensorRule, ...]:
     found = []
     for index in range(len(_list(reader, path))):
         item: YPath = (*path, index)
@@ -515,8 +605,7 @@ def _sensor_rules(reader: Reader, path: YPath, keys: set[str], *, types: bool,
             # Gazebo sensor types are case-insensitive words; message types keep their case.
             allowed = written if messages else frozenset(t.lower() for t in written)
         direction = _direction(reader, item, spec)
-        found.append(SensorRule(kind, allowed, match, direction,
-                                reader.document.location(item)))
+        found.append(SensorRule(kind, allowed, match, direction, reader.document.location(item)))
     return tuple(found)
 
 
@@ -525,9 +614,11 @@ def _direction(reader: Reader, item: YPath, spec: dict[str, Any]) -> str | None:
         return None
     direction = reader.string((*item, "direction"), "direction")
     if direction not in DIRECTIONS:
-        reader.fault((*item, "direction"), f"direction must be one of "
-                                           f"{', '.join(DIRECTIONS)}, got {direction!r}",
-                     code="out-of-range")
+        reader.fault(
+            (*item, "direction"),
+            f"direction must be one of {', '.join(DIRECTIONS)}, got {direction!r}",
+            code="out-of-range",
+        )
         return None
     return direction
 
@@ -542,10 +633,15 @@ def _control_rules(reader: Reader) -> tuple[ControlRule, ...]:
             continue
         reader.unknown_keys(item, spec, _TOPIC_CONTROL_KEYS, "control rule field")
         control = reader.string((*item, "control"), "motion control")
-        found.append(ControlRule(control, _types(reader, (*item, "types")),
-                                 _pattern(reader, (*item, "match"), required=False),
-                                 _direction(reader, item, spec),
-                                 reader.document.location(item)))
+        found.append(
+            ControlRule(
+                control,
+                _types(reader, (*item, "types")),
+                _pattern(reader, (*item, "match"), required=False),
+                _direction(reader, item, spec),
+                reader.document.location(item),
+            )
+        )
     return tuple(found)
 
 
@@ -557,9 +653,14 @@ def _sensor_types(reader: Reader) -> tuple[SensorTypeMapping, ...]:
         if isinstance(value, dict):
             planes = reader.mapping(path, "plane mapping")
             reader.unknown_keys(path, planes, _LIDAR_KEYS, "plane mapping field")
-            found.append(SensorTypeMapping(
-                kind, None, reader.string((*path, "single_plane"), "single_plane"),
-                reader.string((*path, "multi_plane"), "multi_plane")))
+            found.append(
+                SensorTypeMapping(
+                    kind,
+                    None,
+                    reader.string((*path, "single_plane"), "single_plane"),
+                    reader.string((*path, "multi_plane"), "multi_plane"),
+                )
+            )
         elif value is None:
             found.append(SensorTypeMapping(kind))
         else:
@@ -567,27 +668,33 @@ def _sensor_types(reader: Reader) -> tuple[SensorTypeMapping, ...]:
     return tuple(found)
 
 
-def _motion(reader: Reader, structures: set[str]
-            ) -> tuple[str, tuple[tuple[str, str], ...], tuple[tuple[str, tuple[str, ...]], ...]]:
+def _motion(
+    reader: Reader, structures: set[str]
+) -> tuple[str, tuple[tuple[str, str], ...], tuple[tuple[str, tuple[str, ...]], ...]]:
     spec = reader.mapping(("motion",), "motion")
     reader.unknown_keys(("motion",), spec, {"velocity", "description"}, "motion field")
     velocity = reader.mapping(("motion", "velocity"), "velocity")
-    reader.unknown_keys(("motion", "velocity"), velocity, {"default", "by_structure"},
-                        "velocity field")
+    reader.unknown_keys(
+        ("motion", "velocity"), velocity, {"default", "by_structure"}, "velocity field"
+    )
     default = reader.string(("motion", "velocity", "default"), "default velocity control")
     by_path: YPath = ("motion", "velocity", "by_structure")
     by_structure = reader.mapping(by_path, "by_structure", required=False)
     pairs = []
     for structure in by_structure:
         if structure not in structures:
-            reader.fault((*by_path, structure), f"unknown structure {structure!r}"
-                                                f"{did_you_mean(structure, structures)}",
-                         key=True, code="unknown-reference")
+            reader.fault(
+                (*by_path, structure),
+                f"unknown structure {structure!r}{did_you_mean(structure, structures)}",
+                key=True,
+                code="unknown-reference",
+            )
             continue
         pairs.append((structure, reader.string((*by_path, structure), "motion control")))
     description = reader.mapping(("motion", "description"), "description controls")
-    reader.unknown_keys(("motion", "description"), description, CONTROL_SOURCES,
-                        "description source")
+    reader.unknown_keys(
+        ("motion", "description"), description, CONTROL_SOURCES, "description source"
+    )
     sources = []
     for source in CONTROL_SOURCES:
         if source in description:

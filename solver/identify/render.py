@@ -27,9 +27,11 @@ from solver.solution import Solution
 __all__ = ["identification_data", "render_identification"]
 
 
-def identification_data(identification: Identification,
-                        combinations: Sequence[Combination] = (),
-                        solution: Solution | None = None) -> dict[str, Any]:
+def identification_data(
+    identification: Identification,
+    combinations: Sequence[Combination] = (),
+    solution: Solution | None = None,
+) -> dict[str, Any]:
     data: dict[str, Any] = {
         "robot": identification.robot,
         "file": identification.file,
@@ -37,18 +39,25 @@ def identification_data(identification: Identification,
         "kinematic_type": identification.kinematic_type,
         "confidence": identification.confidence,
         "evidence": list(identification.evidence),
-        "sensors": [{"kind": s.kind, "sensor_type": s.sensor_type, "count": s.count,
-                     "source": s.source} for s in identification.sensors],
-        "motion_controls": [{"motion_control": c.motion_control, "source": c.source}
-                            for c in identification.motion_controls],
-        "combinations": [] if solution is None else [
-            assignment_data(solution, c.assignment) for c in combinations],
+        "sensors": [
+            {"kind": s.kind, "sensor_type": s.sensor_type, "count": s.count, "source": s.source}
+            for s in identification.sensors
+        ],
+        "motion_controls": [
+            {"motion_control": c.motion_control, "source": c.source}
+            for c in identification.motion_controls
+        ],
+        "combinations": []
+        if solution is None
+        else [assignment_data(solution, c.assignment) for c in combinations],
     }
     if identification.notes:
         data["notes"] = list(identification.notes)
     if identification.warnings:
-        data["warnings"] = [{"file": w.location.file, "line": w.location.line,
-                             "message": _message(w)} for w in identification.warnings]
+        data["warnings"] = [
+            {"file": w.location.file, "line": w.location.line, "message": _message(w)}
+            for w in identification.warnings
+        ]
     return data
 
 
@@ -56,26 +65,32 @@ def _message(fault: Fault) -> str:
     return f"{fault.location.path}: {fault.message}" if fault.location.path else fault.message
 
 
-def render_identification(identification: Identification,
-                          combinations: Sequence[Combination] = (),
-                          solution: Solution | None = None) -> str:
+def render_identification(
+    identification: Identification,
+    combinations: Sequence[Combination] = (),
+    solution: Solution | None = None,
+) -> str:
     """A readable report: reading, evidence, sensors, controls, configurations."""
     kinematic = identification.kinematic_type or "none in the rule set (default configuration)"
-    lines = [f"{identification.robot}  ({identification.file})",
-             f"  structure:      {identification.structure}  "
-             f"(confidence {identification.confidence:.2f})",
-             f"  kinematic type: {kinematic}", "  evidence:"]
+    lines = [
+        f"{identification.robot}  ({identification.file})",
+        f"  structure:      {identification.structure}  "
+        f"(confidence {identification.confidence:.2f})",
+        f"  kinematic type: {kinematic}",
+        "  evidence:",
+    ]
     lines += [f"    - {line}" for line in identification.evidence]
     lines += [f"  note: {note}" for note in identification.notes]
     lines += [f"  warning: {warning}" for warning in identification.warnings]
     text = "\n".join(lines) + "\n\n"
     if identification.sensors:
-        rows = [[s.kind, s.sensor_type or "-", s.count, s.source]
-                for s in identification.sensors]
-        text += _indent(text_table(["sensor kind", "sensor type", "count", "source"], rows,
-                                   [False, False, True, False]))
-        text += (f"  {identification.sensor_count} sensor(s) with a presentation in the rule "
-                 "set\n\n")
+        rows = [[s.kind, s.sensor_type or "-", s.count, s.source] for s in identification.sensors]
+        text += _indent(
+            text_table(
+                ["sensor kind", "sensor type", "count", "source"], rows, [False, False, True, False]
+            )
+        )
+        text += f"  {identification.sensor_count} sensor(s) with a presentation in the rule set\n\n"
     else:
         text += "  no sensors found\n\n"
     if identification.motion_controls:
@@ -90,12 +105,12 @@ def render_identification(identification: Identification,
             values = ", ".join(value for _, value in combination.values)
             assignment = combination.assignment
             if assignment.is_default:
-                rows.append([f"{assignment.number} (default)", values,
-                             "; ".join(assignment.reasons)])
+                rows.append(
+                    [f"{assignment.number} (default)", values, "; ".join(assignment.reasons)]
+                )
             else:
                 rows.append([str(assignment.number), values, ""])
-        text += _indent(text_table(["configuration", "combination", "why default"], rows),
-                        "    ")
+        text += _indent(text_table(["configuration", "combination", "why default"], rows), "    ")
     return text
 
 

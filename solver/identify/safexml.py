@@ -34,8 +34,9 @@ __all__ = ["MAX_XML_BYTES", "line_of", "parse_xml", "read_bytes", "read_xml"]
 MAX_XML_BYTES = 16 * 1024 * 1024
 
 
-def read_bytes(path: str | Path, *, display: str | None = None,
-               limit: int = MAX_XML_BYTES) -> bytes:
+def read_bytes(
+    path: str | Path, *, display: str | None = None, limit: int = MAX_XML_BYTES
+) -> bytes:
     """The bytes of ``path``, refusing more than ``limit`` without reading them all."""
     return read_bounded(path, display=display, limit=limit)
 
@@ -52,8 +53,9 @@ def read_xml(path: str | Path, *, display: str | None = None) -> etree._Element:
     return parse_xml(read_bytes(path, display=name), name)
 
 
-def parse_xml(data: bytes | str, name: str = "<string>", *,
-              warnings: list[Fault] | None = None) -> etree._Element:
+def parse_xml(
+    data: bytes | str, name: str = "<string>", *, warnings: list[Fault] | None = None
+) -> etree._Element:
     """Safely parse XML text or bytes into its root element (see the module docstring).
 
     With a ``warnings`` list the parse is lenient the way the ROS tools are with real files:
@@ -67,16 +69,23 @@ def parse_xml(data: bytes | str, name: str = "<string>", *,
 
     raw = data.encode("utf-8") if isinstance(data, str) else data
     if len(raw) > MAX_XML_BYTES:
-        raise InputError.at(name, f"document is larger than {MAX_XML_BYTES} bytes; refused",
-                            code="too-large")
+        raise InputError.at(
+            name, f"document is larger than {MAX_XML_BYTES} bytes; refused", code="too-large"
+        )
     if not raw.strip(b" \t\r\n\x00"):
         raise InputError.at(name, "empty file: expected an XML document", code="xml")
     _refuse_declared_entities(raw, name)
     if warnings is not None:
         raw = _mend(raw, name, warnings)
-    parser = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False,
-                             dtd_validation=False, huge_tree=False, remove_comments=True,
-                             remove_pis=True)
+    parser = etree.XMLParser(
+        resolve_entities=False,
+        no_network=True,
+        load_dtd=False,
+        dtd_validation=False,
+        huge_tree=False,
+        remove_comments=True,
+        remove_pis=True,
+    )
     try:
         root = etree.fromstring(raw, parser)
     except etree.XMLSyntaxError as error:
@@ -86,8 +95,9 @@ def parse_xml(data: bytes | str, name: str = "<string>", *,
             return mended
         line, column = error.position if error.position else (None, None)
         message = str(error.msg or error).split(f", line {line}")[0]
-        raise InputError.at(name, f"malformed XML: {message}", line=line or None,
-                            column=column or None, code="xml") from None
+        raise InputError.at(
+            name, f"malformed XML: {message}", line=line or None, column=column or None, code="xml"
+        ) from None
     except ValueError as error:  # lxml refuses, e.g., str input carrying an encoding declaration
         raise InputError.at(name, f"malformed XML: {error}", code="xml") from None
     _refuse_entities(root, raw, name)
@@ -105,31 +115,42 @@ def _warn(warnings: list[Fault], name: str, line: int | None, message: str, code
 def _mend(raw: bytes, name: str, warnings: list[Fault]) -> bytes:
     """Repair the flaws real descriptions have outside their elements, keeping line numbers."""
     stripped = raw.rstrip(b" \t\r\n\x00")
-    if b"\x00" in raw[len(stripped):]:
-        _warn(warnings, name, raw.count(b"\n", 0, raw.index(b"\x00", len(stripped))) + 1,
-              "NUL byte(s) after the end of the document ignored", "xml-trailing-nul")
+    if b"\x00" in raw[len(stripped) :]:
+        _warn(
+            warnings,
+            name,
+            raw.count(b"\n", 0, raw.index(b"\x00", len(stripped))) + 1,
+            "NUL byte(s) after the end of the document ignored",
+            "xml-trailing-nul",
+        )
         raw = stripped + b"\n"
     body = raw.lstrip(b" \t\r\n")
     if body is not raw and len(body) != len(raw) and body.startswith(b"<?xml"):
         declaration = _DECLARATION.match(body)
         if declaration is not None:
             # Move the blank lines after the declaration, so every element keeps its line.
-            lead = raw[:len(raw) - len(body)]
+            lead = raw[: len(raw) - len(body)]
             end = declaration.end()
-            _warn(warnings, name, lead.count(b"\n") + 1, "the XML declaration is not at the "
-                  "start of the document (blank lines before it); read anyway",
-                  "xml-declaration")
+            _warn(
+                warnings,
+                name,
+                lead.count(b"\n") + 1,
+                "the XML declaration is not at the "
+                "start of the document (blank lines before it); read anyway",
+                "xml-declaration",
+            )
             raw = body[:end] + lead + body[end:]
     declaration = _DECLARATION.match(raw)
     if declaration is not None:
         version = _VERSION.search(declaration.group(0))
         if version is not None and version.group(2) != b"1.0":
             shown = version.group(2).decode("ascii", errors="replace")
-            _warn(warnings, name, 1, f"XML version {shown!r} declared; read as XML 1.0",
-                  "xml-version")
+            _warn(
+                warnings, name, 1, f"XML version {shown!r} declared; read as XML 1.0", "xml-version"
+            )
             text = declaration.group(0)
-            fixed = text[:version.start(2)] + b"1.0" + text[version.end(2):]
-            raw = fixed + raw[declaration.end():]
+            fixed = text[: version.start(2)] + b"1.0" + text[version.end(2) :]
+            raw = fixed + raw[declaration.end() :]
     return raw
 
 
@@ -141,9 +162,16 @@ def _namespace_recovery(raw: bytes, name: str, warnings: list[Fault]) -> etree._
     """
     from lxml import etree
 
-    parser = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False,
-                             dtd_validation=False, huge_tree=False, remove_comments=True,
-                             remove_pis=True, recover=True)
+    parser = etree.XMLParser(
+        resolve_entities=False,
+        no_network=True,
+        load_dtd=False,
+        dtd_validation=False,
+        huge_tree=False,
+        remove_comments=True,
+        remove_pis=True,
+        recover=True,
+    )
     try:
         root = etree.fromstring(raw, parser)
     except etree.XMLSyntaxError:
@@ -152,8 +180,13 @@ def _namespace_recovery(raw: bytes, name: str, warnings: list[Fault]) -> etree._
     if root is None or not errors or any(e.domain_name != "NAMESPACE" for e in errors):
         return None
     for error in errors:
-        _warn(warnings, name, error.line or None, f"{error.message.strip()}; element kept "
-              "under its prefixed name", "xml-namespace")
+        _warn(
+            warnings,
+            name,
+            error.line or None,
+            f"{error.message.strip()}; element kept under its prefixed name",
+            "xml-namespace",
+        )
     return root
 
 
@@ -167,7 +200,7 @@ def _refuse_declared_entities(raw: bytes, name: str) -> None:
     libxml2 would refuse most bombs itself, but with messages about loops or amplification;
     checking the internal subset first gives one clear message for every variant.
     """
-    subset = _DOCTYPE_SUBSET.search(raw[:1024 * 1024])
+    subset = _DOCTYPE_SUBSET.search(raw[: 1024 * 1024])
     if subset is None:
         return
     entities = list(_ENTITY.finditer(subset.group(1)))
@@ -177,16 +210,22 @@ def _refuse_declared_entities(raw: bytes, name: str) -> None:
     line = raw.count(b"\n", 0, subset.start(1) + first.start()) + 1
     external = next((e for e in entities if e.group(3)), None)
     if external is not None:
-        what = (f"external entity {external.group(2).decode(errors='replace')!r} "
-                f"({external.group(4).decode(errors='replace').strip(chr(34) + chr(39))})")
+        what = (
+            f"external entity {external.group(2).decode(errors='replace')!r} "
+            f"({external.group(4).decode(errors='replace').strip(chr(34) + chr(39))})"
+        )
     else:
         names = ", ".join(repr(e.group(2).decode(errors="replace")) for e in entities[:3])
         what = f"{len(entities)} entity declaration(s) ({names})"
-    raise InputError.at(name, f"the document type declares {what}; entity declarations are "
-                              "refused (entity expansion and external references are never "
-                              "needed in a robot description)", line=line,
-                        path=f"<!ENTITY {first.group(2).decode(errors='replace')}>",
-                        code="xml-entity")
+    raise InputError.at(
+        name,
+        f"the document type declares {what}; entity declarations are "
+        "refused (entity expansion and external references are never "
+        "needed in a robot description)",
+        line=line,
+        path=f"<!ENTITY {first.group(2).decode(errors='replace')}>",
+        code="xml-entity",
+    )
 
 
 def _refuse_entities(root: etree._Element, raw: bytes, name: str) -> None:
@@ -199,17 +238,29 @@ def _refuse_entities(root: etree._Element, raw: bytes, name: str) -> None:
         if entities:
             first = entities[0]
             external = [e.name for e in entities if e.system_url]
-            kind = (f"external entity {external[0]!r} ({_system_url(entities, external[0])})"
-                    if external else f"{len(entities)} entity declaration(s) "
-                                     f"({', '.join(repr(e.name) for e in entities[:3])})")
-            raise InputError.at(name, f"the document type declares {kind}; entity "
-                                      "declarations are refused (entity expansion and "
-                                      "external references are never needed in a robot "
-                                      "description)", line=_line_of(raw, b"<!ENTITY"),
-                                path=f"<!ENTITY {first.name}>", code="xml-entity")
+            kind = (
+                f"external entity {external[0]!r} ({_system_url(entities, external[0])})"
+                if external
+                else f"{len(entities)} entity declaration(s) "
+                f"({', '.join(repr(e.name) for e in entities[:3])})"
+            )
+            raise InputError.at(
+                name,
+                f"the document type declares {kind}; entity "
+                "declarations are refused (entity expansion and "
+                "external references are never needed in a robot "
+                "description)",
+                line=_line_of(raw, b"<!ENTITY"),
+                path=f"<!ENTITY {first.name}>",
+                code="xml-entity",
+            )
     for node in root.iter(etree.Entity):
-        raise InputError.at(name, f"entity reference {node.text!r} refused (entities are not "
-                                  "expanded)", line=line_of(node), code="xml-entity")
+        raise InputError.at(
+            name,
+            f"entity reference {node.text!r} refused (entities are not expanded)",
+            line=line_of(node),
+            code="xml-entity",
+        )
 
 
 def _system_url(entities: list[etree._DTDEntityDecl], wanted: str) -> str:

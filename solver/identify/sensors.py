@@ -51,8 +51,7 @@ class Sensor:
     source: str
 
 
-def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf"
-                      ) -> tuple[Detection, ...]:
+def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tuple[Detection, ...]:
     """The sensors a URDF declares, in document order."""
     found: list[Detection] = []
     declared = {(_element_kind(t, profile), t.link) for t in urdf.sensors if t.origin == "gazebo"}
@@ -60,8 +59,7 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf"
         kind = _element_kind(tag, profile)
         if tag.origin == "urdf" and tag.link is not None and (kind, tag.link) in declared:
             continue  # one physical sensor declared as a Gazebo <sensor> and a URDF <sensor>
-        found.append(Detection(kind, tag.name or tag.type, source, tag.link,
-                               tag.vertical_samples))
+        found.append(Detection(kind, tag.name or tag.type, source, tag.link, tag.vertical_samples))
     seen = {(d.kind, d.link) for d in found}
     for plugin in urdf.plugins:
         simulated = _plugin_kind(plugin, profile)
@@ -87,23 +85,23 @@ def _plugin_kind(plugin: PluginTag, profile: Profile) -> str | None:
     if truth is not None and truth.search(plugin.text):
         return None
     target = plugin.filename or plugin.name
-    return next((rule.kind for rule in profile.plugin_rules if rule.accepts(None, target)),
-                None)
+    return next((rule.kind for rule in profile.plugin_rules if rule.accepts(None, target)), None)
 
 
-def merge(detections: Iterable[Detection], profile: Profile, rules: RuleSet
-          ) -> tuple[Sensor, ...]:
+def merge(detections: Iterable[Detection], profile: Profile, rules: RuleSet) -> tuple[Sensor, ...]:
     """One :class:`Sensor` per (kind, sensor type), in order of first detection."""
     sensor_types = _rule_values(rules, profile.role("sensor_type"))
     groups: dict[tuple[str, str | None], dict[str, list[Detection]]] = {}
     for detection in detections:
         mapping = profile.sensor_type_mapping(detection.kind)
-        sensor_type = None if mapping is None else \
-            mapping.sensor_type_for(detection.vertical_samples)
+        sensor_type = (
+            None if mapping is None else mapping.sensor_type_for(detection.vertical_samples)
+        )
         if sensor_type is not None and sensor_type not in sensor_types:
             sensor_type = None
         groups.setdefault((detection.kind, sensor_type), {}).setdefault(
-            detection.source, []).append(detection)
+            detection.source, []
+        ).append(detection)
     found = []
     for (kind, sensor_type), by_source in groups.items():
         count = max(len(items) for items in by_source.values())

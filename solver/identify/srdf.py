@@ -89,8 +89,9 @@ class Srdf:
         return tuple(found)
 
 
-def parse_srdf(text: str | bytes, file: str = "<string>", urdf: Urdf | None = None, *,
-               strict: bool = True) -> Srdf:
+def parse_srdf(
+    text: str | bytes, file: str = "<string>", urdf: Urdf | None = None, *, strict: bool = True
+) -> Srdf:
     """Parse SRDF text; with ``urdf``, check every name it uses against the robot.
 
     ``strict`` (the default): every problem is an error, all reported at once. With
@@ -101,9 +102,13 @@ def parse_srdf(text: str | bytes, file: str = "<string>", urdf: Urdf | None = No
     warnings: list[Fault] | None = None if strict else []
     root = parse_xml(text, file, warnings=warnings)
     if root.tag != "robot":
-        raise InputError.at(file, f"root element is <{root.tag}>, expected <robot> (is this an "
-                                  "SRDF?)", line=line_of(root), path=str(root.tag),
-                            code="srdf")
+        raise InputError.at(
+            file,
+            f"root element is <{root.tag}>, expected <robot> (is this an SRDF?)",
+            line=line_of(root),
+            path=str(root.tag),
+            code="srdf",
+        )
     reader = _Reader(file, urdf)
     virtual = reader.virtual_joints(root)
     reader.virtual = {v.name for v in virtual}
@@ -111,8 +116,10 @@ def parse_srdf(text: str | bytes, file: str = "<string>", urdf: Urdf | None = No
     effectors = reader.end_effectors(root, {g.name for g in groups})
     if strict and reader.faults:
         raise InputError(reader.faults)
-    return replace(Srdf((root.get("name") or "").strip(), file, groups, effectors, virtual),
-                   warnings=(*(warnings or ()), *reader.faults))
+    return replace(
+        Srdf((root.get("name") or "").strip(), file, groups, effectors, virtual),
+        warnings=(*(warnings or ()), *reader.faults),
+    )
 
 
 def _name(element: etree._Element, attribute: str = "name") -> str:
@@ -137,8 +144,9 @@ class _Reader:
             self.fault(line_of(element), path, "missing link name")
             return False
         if self.urdf is not None and not self.urdf.has_link(link):
-            self.fault(line_of(element), path,
-                       f"link {link!r} is not in the URDF ({self.urdf.file})")
+            self.fault(
+                line_of(element), path, f"link {link!r} is not in the URDF ({self.urdf.file})"
+            )
             return False
         return True
 
@@ -147,10 +155,10 @@ class _Reader:
         if not joint:
             self.fault(line_of(element), path, "missing joint name")
             return False
-        if self.urdf is not None and self.urdf.joint(joint) is None \
-                and joint not in self.virtual:
-            self.fault(line_of(element), path,
-                       f"joint {joint!r} is not in the URDF ({self.urdf.file})")
+        if self.urdf is not None and self.urdf.joint(joint) is None and joint not in self.virtual:
+            self.fault(
+                line_of(element), path, f"joint {joint!r} is not in the URDF ({self.urdf.file})"
+            )
             return False
         return True
 
@@ -161,45 +169,65 @@ class _Reader:
             path = f"group[{name}]"
             if not name:
                 self.fault(line_of(element), "group", "a <group> without a name")
-            joints = tuple(_name(j) for j in element.findall("joint")
-                           if self.joint(j, f"{path}.joint", _name(j)))
-            links = tuple(_name(k) for k in element.findall("link")
-                          if self.link(k, f"{path}.link", _name(k)))
+            joints = tuple(
+                _name(j)
+                for j in element.findall("joint")
+                if self.joint(j, f"{path}.joint", _name(j))
+            )
+            links = tuple(
+                _name(k) for k in element.findall("link") if self.link(k, f"{path}.link", _name(k))
+            )
             chains = []
             for chain in element.findall("chain"):
                 base, tip = _name(chain, "base_link"), _name(chain, "tip_link")
-                if self.link(chain, f"{path}.chain.base_link", base) \
-                        & self.link(chain, f"{path}.chain.tip_link", tip):
+                if self.link(chain, f"{path}.chain.base_link", base) & self.link(
+                    chain, f"{path}.chain.tip_link", tip
+                ):
                     chains.append((base, tip))
-            groups.append(Group(name, joints, links, tuple(chains),
-                                tuple(_name(g) for g in element.findall("group")),
-                                line_of(element)))
+            groups.append(
+                Group(
+                    name,
+                    joints,
+                    links,
+                    tuple(chains),
+                    tuple(_name(g) for g in element.findall("group")),
+                    line_of(element),
+                )
+            )
         names = {g.name for g in groups}
         kept = []
         for group in groups:
             for sub in group.subgroups:
                 if sub not in names:
-                    self.fault(group.line, f"group[{group.name}]",
-                               f"subgroup {sub!r} is not defined")
-            kept.append(replace(group, subgroups=tuple(s for s in group.subgroups
-                                                       if s in names)))
+                    self.fault(
+                        group.line, f"group[{group.name}]", f"subgroup {sub!r} is not defined"
+                    )
+            kept.append(replace(group, subgroups=tuple(s for s in group.subgroups if s in names)))
         return tuple(kept)
 
-    def end_effectors(self, root: etree._Element, groups: set[str]
-                      ) -> tuple[EndEffector, ...]:
+    def end_effectors(self, root: etree._Element, groups: set[str]) -> tuple[EndEffector, ...]:
         found = []
         for element in root.findall("end_effector"):
             name, group = _name(element), _name(element, "group")
             path = f"end_effector[{name}]"
             usable = self.link(element, f"{path}.parent_link", _name(element, "parent_link"))
             if group not in groups:
-                self.fault(line_of(element), f"{path}.group",
-                           f"end effector {name!r} names group {group!r}, which is not "
-                           "defined")
+                self.fault(
+                    line_of(element),
+                    f"{path}.group",
+                    f"end effector {name!r} names group {group!r}, which is not defined",
+                )
                 usable = False
             if usable:
-                    found.append(EndEffector(name, _name(element, "parent_link"), group,
-                                         element.get("parent_group"), line_of(element)))
+                found.append(
+                    EndEffector(
+                        name,
+                        _name(element, "parent_link"),
+                        group,
+                        element.get("parent_group"),
+                        line_of(element),
+                    )
+                )
         return tuple(found)
 
     def virtual_joints(self, root: etree._Element) -> tuple[VirtualJoint, ...]:
@@ -209,11 +237,20 @@ class _Reader:
             path = f"virtual_joint[{name}]"
             usable = kind in VIRTUAL_JOINT_TYPES
             if not usable:
-                self.fault(line_of(element), f"{path}.type",
-                           f"unknown virtual joint type {kind!r}; SRDF virtual joints are "
-                           f"{', '.join(VIRTUAL_JOINT_TYPES)}")
-            if self.link(element, f"{path}.child_link", _name(element, "child_link")) \
-                    and usable:
-                    found.append(VirtualJoint(name, kind, _name(element, "parent_frame"),
-                                          _name(element, "child_link"), line_of(element)))
+                self.fault(
+                    line_of(element),
+                    f"{path}.type",
+                    f"unknown virtual joint type {kind!r}; SRDF virtual joints are "
+                    f"{', '.join(VIRTUAL_JOINT_TYPES)}",
+                )
+            if self.link(element, f"{path}.child_link", _name(element, "child_link")) and usable:
+                found.append(
+                    VirtualJoint(
+                        name,
+                        kind,
+                        _name(element, "parent_frame"),
+                        _name(element, "child_link"),
+                        line_of(element),
+                    )
+                )
         return tuple(found)

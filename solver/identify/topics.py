@@ -79,18 +79,30 @@ def parse_topic_list(text: str, name: str = "<topics>") -> tuple[Topic, ...]:
         topic, kind = (match.group(1), match.group(2)) if match else (stripped, None)
         column = line.find(topic) + 1 if topic in line else 1
         if not match or not _NAME.match(topic):
-            faults.append(Fault(Location(name, number, column), f"not a topic line: "
-                                                                f"{stripped[:80]!r}", "topics"))
+            faults.append(
+                Fault(
+                    Location(name, number, column), f"not a topic line: {stripped[:80]!r}", "topics"
+                )
+            )
             continue
         if not kind:
-            faults.append(Fault(Location(name, number, column, topic),
-                                f"topic {topic!r} has no message type (give `rostopic list "
-                                "-v`, `ros2 topic list -t`, or 'TOPIC TYPE' lines)", "topics"))
+            faults.append(
+                Fault(
+                    Location(name, number, column, topic),
+                    f"topic {topic!r} has no message type (give `rostopic list "
+                    "-v`, `ros2 topic list -t`, or 'TOPIC TYPE' lines)",
+                    "topics",
+                )
+            )
             continue
         if not _TYPE.match(kind.strip()):
-            faults.append(Fault(Location(name, number, line.find(kind) + 1, topic),
-                                f"{kind.strip()!r} is not a message type (package/Name)",
-                                "topics"))
+            faults.append(
+                Fault(
+                    Location(name, number, line.find(kind) + 1, topic),
+                    f"{kind.strip()!r} is not a message type (package/Name)",
+                    "topics",
+                )
+            )
             continue
         found.append(Topic(topic, normalise_type(kind), direction))
     if faults:

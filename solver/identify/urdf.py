@@ -28,8 +28,16 @@ from solver.identify.xacros import uncompiled_xacro
 if TYPE_CHECKING:
     from lxml import etree
 
-__all__ = ["JOINT_TYPES", "MAX_PARTS", "Joint", "Link", "PluginTag", "SensorTag", "Urdf",
-           "parse_urdf"]
+__all__ = [
+    "JOINT_TYPES",
+    "MAX_PARTS",
+    "Joint",
+    "Link",
+    "PluginTag",
+    "SensorTag",
+    "Urdf",
+    "parse_urdf",
+]
 
 JOINT_TYPES = ("revolute", "continuous", "prismatic", "fixed", "floating", "planar")
 # The most links + joints one description may have: reading is linear, so this bounds the time
@@ -67,8 +75,11 @@ class Joint:
         if self.type == "fixed":
             return False
         # RotorS and others mount sensors on revolute joints with lower == upper: fixed in effect.
-        return not (self.type in ("revolute", "prismatic") and self.lower is not None
-                    and self.lower == self.upper)
+        return not (
+            self.type in ("revolute", "prismatic")
+            and self.lower is not None
+            and self.lower == self.upper
+        )
 
     @property
     def actuated(self) -> bool:
@@ -196,8 +207,9 @@ class _Builder:
         self.file = file
         self.faults: list[Fault] = []
 
-    def fault(self, element: etree._Element | int | None, path: str, message: str,
-              code: str = "urdf") -> None:
+    def fault(
+        self, element: etree._Element | int | None, path: str, message: str, code: str = "urdf"
+    ) -> None:
         line = element if isinstance(element, int) or element is None else line_of(element)
         self.faults.append(Fault(Location(self.file, line, None, path), message, code))
 
@@ -211,39 +223,68 @@ class _Builder:
                 kept.append(fault)
         for code, number in seen.items():
             if number > _MAX_WARNINGS:
-                kept.append(Fault(Location(self.file), f"{number - _MAX_WARNINGS} more "
-                                                       f"problem(s) of this kind not listed",
-                                  code))
+                kept.append(
+                    Fault(
+                        Location(self.file),
+                        f"{number - _MAX_WARNINGS} more problem(s) of this kind not listed",
+                        code,
+                    )
+                )
         return tuple(kept)
 
     def build(self, root: etree._Element) -> Urdf:
         if root.tag != "robot":
-            raise InputError.at(self.file, f"root element is <{root.tag}>, expected <robot> "
-                                           "(is this a URDF?)", line=line_of(root),
-                                path=str(root.tag), code="urdf")
+            raise InputError.at(
+                self.file,
+                f"root element is <{root.tag}>, expected <robot> (is this a URDF?)",
+                line=line_of(root),
+                path=str(root.tag),
+                code="urdf",
+            )
         name = (root.get("name") or "").strip()
         link_elements = root.findall("link")
         joint_elements = root.findall("joint")
         if len(link_elements) + len(joint_elements) > MAX_PARTS:
             beyond = (link_elements + joint_elements)[MAX_PARTS]
-            raise InputError.at(self.file, f"{len(link_elements)} links and "
-                                           f"{len(joint_elements)} joints: more than "
-                                           f"{MAX_PARTS} in all is refused (a cap on what one "
-                                           "description may cost)", line=line_of(beyond),
-                                path=str(beyond.tag), code="too-large")
+            raise InputError.at(
+                self.file,
+                f"{len(link_elements)} links and "
+                f"{len(joint_elements)} joints: more than "
+                f"{MAX_PARTS} in all is refused (a cap on what one "
+                "description may cost)",
+                line=line_of(beyond),
+                path=str(beyond.tag),
+                code="too-large",
+            )
         if not link_elements:
-            raise InputError.at(self.file, f"robot {name!r} has no links: an empty robot "
-                                           "cannot be identified", line=line_of(root),
-                                path="robot", code="urdf-empty")
+            raise InputError.at(
+                self.file,
+                f"robot {name!r} has no links: an empty robot cannot be identified",
+                line=line_of(root),
+                path="robot",
+                code="urdf-empty",
+            )
         links = self._links(link_elements)
         tree, top = self._tree(root, links, self._joints(joint_elements, links))
         sensors = self._sensors(root, {j.name: j.child for j in tree})
-        plugins = tuple(_plugin(p, g.get("reference")) for g in root.findall("gazebo")
-                        for p in g.findall("plugin"))
+        plugins = tuple(
+            _plugin(p, g.get("reference"))
+            for g in root.findall("gazebo")
+            for p in g.findall("plugin")
+        )
         controlled = frozenset(self._controlled(root))
         self.faults += uncompiled_xacro(root, self.file)  # read as URDF, never compiled: say so
-        return Urdf(name or "robot", self.file, tuple(links.values()), tree, sensors,
-                    plugins, controlled, top, self.warnings())
+        return Urdf(
+            name or "robot",
+            self.file,
+            tuple(links.values()),
+            tree,
+            sensors,
+            plugins,
+            controlled,
+            top,
+            self.warnings(),
+        )
 
     def _links(self, elements: list[etree._Element]) -> dict[str, Link]:
         found: dict[str, Link] = {}
@@ -252,24 +293,30 @@ class _Builder:
             if not name:
                 self.fault(element, "link", "a <link> without a name (ignored)")
             elif name in found:
-                self.fault(element, f"link[{name}]", f"duplicate link {name!r} (first at "
-                                                     f"line {found[name].line})")
+                self.fault(
+                    element,
+                    f"link[{name}]",
+                    f"duplicate link {name!r} (first at line {found[name].line})",
+                )
             else:
                 found[name] = Link(name, line_of(element))
         return found
 
-    def _joints(self, elements: list[etree._Element], links: dict[str, Link]
-                ) -> list[Joint]:
+    def _joints(self, elements: list[etree._Element], links: dict[str, Link]) -> list[Joint]:
         found: dict[str, Joint] = {}
         for element in elements:
             joint = self._joint(element, links)
             if joint is None:
                 continue
             if joint.name in found:
-                self.fault(element, f"joint[{joint.name}]", f"duplicate joint {joint.name!r} "
-                                                            f"(first at line "
-                                                            f"{found[joint.name].line}; "
-                                                            "ignored)")
+                self.fault(
+                    element,
+                    f"joint[{joint.name}]",
+                    f"duplicate joint {joint.name!r} "
+                    f"(first at line "
+                    f"{found[joint.name].line}; "
+                    "ignored)",
+                )
                 continue
             found[joint.name] = joint
         return list(found.values())
@@ -284,13 +331,19 @@ class _Builder:
         kind = (element.get("type") or "").strip()
         if kind not in JOINT_TYPES:
             if kind:
-                self.fault(element, f"{path}.type", f"unknown joint type {kind!r}; URDF joint "
-                                                    f"types are {', '.join(JOINT_TYPES)}",
-                           code="urdf-joint-type")
+                self.fault(
+                    element,
+                    f"{path}.type",
+                    f"unknown joint type {kind!r}; URDF joint types are {', '.join(JOINT_TYPES)}",
+                    code="urdf-joint-type",
+                )
             else:
-                self.fault(element, f"{path}.type", "missing joint type; URDF joint types "
-                                                    f"are {', '.join(JOINT_TYPES)}",
-                           code="urdf-joint-type")
+                self.fault(
+                    element,
+                    f"{path}.type",
+                    f"missing joint type; URDF joint types are {', '.join(JOINT_TYPES)}",
+                    code="urdf-joint-type",
+                )
                 kind = "fixed"
         # One pass over the joint's children instead of a find() per tag (big descriptions).
         parts: dict[str, etree._Element] = {}
@@ -302,50 +355,75 @@ class _Builder:
             tag = parts.get(end)
             link = (tag.get("link") or "").strip() if tag is not None else ""
             if tag is None or not link:
-                self.fault(element if tag is None else tag, f"{path}.{end}",
-                           f"joint {name!r} has no <{end} link=...> (joint ignored)")
+                self.fault(
+                    element if tag is None else tag,
+                    f"{path}.{end}",
+                    f"joint {name!r} has no <{end} link=...> (joint ignored)",
+                )
                 return None
             if link not in links:
-                self.fault(tag, f"{path}.{end}", f"joint {name!r} names {end} link {link!r}, "
-                                                 "which does not exist",
-                           code="urdf-missing-link")
+                self.fault(
+                    tag,
+                    f"{path}.{end}",
+                    f"joint {name!r} names {end} link {link!r}, which does not exist",
+                    code="urdf-missing-link",
+                )
                 # Read as an implicit link: an attachment described alone still has a body.
                 links[link] = Link(link, line_of(tag))
             ends[end] = link
         if ends["parent"] == ends["child"]:
-            self.fault(element, path, f"joint {name!r} connects link {ends['parent']!r} to "
-                                      "itself (a cycle; joint ignored)", code="urdf-cycle")
+            self.fault(
+                element,
+                path,
+                f"joint {name!r} connects link {ends['parent']!r} to "
+                "itself (a cycle; joint ignored)",
+                code="urdf-cycle",
+            )
             return None
         limit = parts.get("limit")
         mimic = parts.get("mimic")
-        return Joint(name, kind, ends["parent"], ends["child"], line,
-                     None if mimic is None else (mimic.get("joint") or "").strip() or None,
-                     self._number(limit, "lower", path), self._number(limit, "upper", path),
-                     _axis(parts.get("axis")))
+        return Joint(
+            name,
+            kind,
+            ends["parent"],
+            ends["child"],
+            line,
+            None if mimic is None else (mimic.get("joint") or "").strip() or None,
+            self._number(limit, "lower", path),
+            self._number(limit, "upper", path),
+            _axis(parts.get("axis")),
+        )
 
-    def _number(self, element: etree._Element | None, attribute: str, path: str
-                ) -> float | None:
+    def _number(self, element: etree._Element | None, attribute: str, path: str) -> float | None:
         if element is None or element.get(attribute) is None:
             return None
         text = element.get(attribute, "")
         value = _float(text)
         if value is None:
-            self.fault(element, f"{path}.limit.{attribute}", f"limit {attribute} is not a "
-                                                            f"finite number: {text[:40]!r}")
+            self.fault(
+                element,
+                f"{path}.limit.{attribute}",
+                f"limit {attribute} is not a finite number: {text[:40]!r}",
+            )
         return value
 
-    def _tree(self, root: etree._Element, links: dict[str, Link], joints: list[Joint]
-              ) -> tuple[tuple[Joint, ...], str]:
+    def _tree(
+        self, root: etree._Element, links: dict[str, Link], joints: list[Joint]
+    ) -> tuple[tuple[Joint, ...], str]:
         """Keep the joints that form a tree; the root link. Linear in links + joints."""
         parents: dict[str, Joint] = {}
         kept: list[Joint] = []
         for joint in joints:
             first = parents.get(joint.child)
             if first is not None:
-                self.fault(joint.line, f"joint[{joint.name}].child",
-                           f"link {joint.child!r} has two parent joints: {first.name!r} "
-                           f"(line {first.line}) and {joint.name!r}; a URDF is a tree "
-                           f"({joint.name!r} ignored)", code="urdf-cycle")
+                self.fault(
+                    joint.line,
+                    f"joint[{joint.name}].child",
+                    f"link {joint.child!r} has two parent joints: {first.name!r} "
+                    f"(line {first.line}) and {joint.name!r}; a URDF is a tree "
+                    f"({joint.name!r} ignored)",
+                    code="urdf-cycle",
+                )
                 continue
             parents[joint.child] = joint
             kept.append(joint)
@@ -354,9 +432,13 @@ class _Builder:
             below.setdefault(joint.parent, []).append(joint.child)
         roots = [link for link in links.values() if link.name not in parents]
         if not roots:
-            raise InputError.at(self.file, "every link has a parent joint: the joints form a "
-                                           "cycle, there is no root link", line=line_of(root),
-                                path="robot", code="urdf-cycle")
+            raise InputError.at(
+                self.file,
+                "every link has a parent joint: the joints form a cycle, there is no root link",
+                line=line_of(root),
+                path="robot",
+                code="urdf-cycle",
+            )
         sizes = {link.name: _reach(link.name, below) for link in roots}
         top = max(roots, key=lambda link: len(sizes[link.name]))
         reached = set().union(*sizes.values())
@@ -364,20 +446,28 @@ class _Builder:
         if cyclic:
             names = ", ".join(repr(link.name) for link in cyclic[:5])
             joint = parents[cyclic[0].name]
-            self.fault(joint.line, f"joint[{joint.name}]",
-                       f"joints form a cycle through links {names}; those links are not read",
-                       code="urdf-cycle")
+            self.fault(
+                joint.line,
+                f"joint[{joint.name}]",
+                f"joints form a cycle through links {names}; those links are not read",
+                code="urdf-cycle",
+            )
         if len(roots) > 1:
             names = ", ".join(f"{link.name!r} (line {link.line})" for link in roots[:5])
             more = f", ... ({len(roots)} in all)" if len(roots) > 5 else ""
-            self.fault(root, "robot", f"{len(roots)} root links (links with no parent "
-                                      f"joint): {names}{more}; a URDF has exactly one root; "
-                                      f"read from {top.name!r}, the largest tree",
-                       code="urdf-roots")
+            self.fault(
+                root,
+                "robot",
+                f"{len(roots)} root links (links with no parent "
+                f"joint): {names}{more}; a URDF has exactly one root; "
+                f"read from {top.name!r}, the largest tree",
+                code="urdf-roots",
+            )
         return tuple(kept), top.name
 
-    def _sensors(self, root: etree._Element, joint_children: dict[str, str]
-                 ) -> tuple[SensorTag, ...]:
+    def _sensors(
+        self, root: etree._Element, joint_children: dict[str, str]
+    ) -> tuple[SensorTag, ...]:
         found = []
         for gazebo in root.findall("gazebo"):
             reference = gazebo.get("reference")
@@ -390,10 +480,14 @@ class _Builder:
             if parent is not None and link is None and parent.get("joint"):
                 # <parent joint=...>: the sensor sits on that joint's child link.
                 link = joint_children.get(str(parent.get("joint")))
-            kind = sensor.get("type") or next((child.tag for child in sensor
-                                               if isinstance(child.tag, str)
-                                               and child.tag not in ("parent", "origin")),
-                                              "")
+            kind = sensor.get("type") or next(
+                (
+                    child.tag
+                    for child in sensor
+                    if isinstance(child.tag, str) and child.tag not in ("parent", "origin")
+                ),
+                "",
+            )
             found.append(self._sensor(sensor, link, "urdf", str(kind)))
         return tuple(found)
 
@@ -408,20 +502,24 @@ class _Builder:
                 if joint.get("name"):
                     yield str(joint.get("name"))
 
-
-    def _sensor(self, element: etree._Element, link: str | None, origin: str,
-                kind: str | None = None) -> SensorTag:
+    def _sensor(
+        self, element: etree._Element, link: str | None, origin: str, kind: str | None = None
+    ) -> SensorTag:
         numbers = (*element.iterfind(".//scan/*/samples"), *element.iterfind(".//horizontal_fov"))
         for node in numbers:
             if node.text is not None and node.text.strip() and _float(node.text) is None:
-                self.fault(node, f"sensor[{element.get('name') or ''}].{node.tag}",
-                           f"<{node.tag}> is not a finite number: {node.text.strip()[:40]!r} "
-                           "(ignored)", code="urdf-number")
+                self.fault(
+                    node,
+                    f"sensor[{element.get('name') or ''}].{node.tag}",
+                    f"<{node.tag}> is not a finite number: {node.text.strip()[:40]!r} (ignored)",
+                    code="urdf-number",
+                )
         return _sensor(element, link, origin, kind)
 
 
-def _sensor(element: etree._Element, link: str | None, origin: str,
-            kind: str | None = None) -> SensorTag:
+def _sensor(
+    element: etree._Element, link: str | None, origin: str, kind: str | None = None
+) -> SensorTag:
     samples: dict[str, int | None] = {}
     for axis in ("horizontal", "vertical"):
         node = element.find(f".//scan/{axis}/samples")
@@ -431,11 +529,15 @@ def _sensor(element: etree._Element, link: str | None, origin: str,
     return SensorTag(
         name=(element.get("name") or "").strip(),
         type=(kind if kind is not None else element.get("type") or "").strip().lower(),
-        link=link, line=line_of(element), origin=origin,
+        link=link,
+        line=line_of(element),
+        origin=origin,
         plugins=tuple(_plugin(p, link) for p in element.iter("plugin")),
-        horizontal_samples=samples["horizontal"], vertical_samples=samples["vertical"],
+        horizontal_samples=samples["horizontal"],
+        vertical_samples=samples["vertical"],
         horizontal_fov=_float(fov.text if fov is not None else None),
-        camera_count=cameras)
+        camera_count=cameras,
+    )
 
 
 def _plugin(element: etree._Element, reference: str | None) -> PluginTag:
@@ -443,9 +545,13 @@ def _plugin(element: etree._Element, reference: str | None) -> PluginTag:
     for child in element:
         if isinstance(child.tag, str) and len(child) == 0 and child.text and child.text.strip():
             params.append((child.tag, child.text.strip()[:_MAX_PARAM_TEXT]))
-    return PluginTag((element.get("name") or "").strip(),
-                     (element.get("filename") or "").strip(), reference, line_of(element),
-                     tuple(params))
+    return PluginTag(
+        (element.get("name") or "").strip(),
+        (element.get("filename") or "").strip(),
+        reference,
+        line_of(element),
+        tuple(params),
+    )
 
 
 def _reach(start: str, below: dict[str, list[str]]) -> set[str]:
@@ -460,8 +566,7 @@ def _reach(start: str, below: dict[str, list[str]]) -> set[str]:
 
 
 def _axis(element: etree._Element | None) -> tuple[float, float, float]:
-    parts = [_float(t) for t in (element.get("xyz") or "").split()] if element is not None \
-        else []
+    parts = [_float(t) for t in (element.get("xyz") or "").split()] if element is not None else []
     if len(parts) != 3 or any(p is None for p in parts):
         return (1.0, 0.0, 0.0)
     x, y, z = (p or 0.0 for p in parts)
@@ -483,4 +588,3 @@ def _float(text: str | None) -> float | None:
     except ValueError:
         return None
     return value if value is not None and math.isfinite(value) else None
-

@@ -60,15 +60,23 @@ def main() -> None:
     try:
         answer: dict[str, Any] = {"ok": True, **_compile(request)}
     except MemoryError:
-        answer = {"ok": False, "message": "xacro used more memory than the limit allows "
-                                          f"({request['memory_bytes'] // 2**20} MiB)",
-                  "code": "xacro-limit"}
+        answer = {
+            "ok": False,
+            "message": "xacro used more memory than the limit allows "
+            f"({request['memory_bytes'] // 2**20} MiB)",
+            "code": "xacro-limit",
+        }
     except RecursionError:
         answer = {"ok": False, "message": "xacro: macro recursion too deep", "code": "xacro"}
     except SolverError as error:  # the safe-XML check of an included file: keep its location
         fault = error.faults[0]
-        answer = {"ok": False, "code": fault.code, "message": fault.message,
-                  "file": fault.location.file, "line": fault.location.line}
+        answer = {
+            "ok": False,
+            "code": fault.code,
+            "message": fault.message,
+            "file": fault.location.file,
+            "line": fault.location.line,
+        }
     except Exception as error:  # every other failure is the input's; it becomes a message
         answer = {"ok": False, "code": "xacro", **_describe(error)}
     text = json.dumps(answer)
@@ -94,8 +102,10 @@ def _compile(request: dict[str, Any]) -> dict[str, Any]:
         from xacro import substitution_args
 
         def refuse_env(name: str, *_: object, **__: object) -> str:
-            raise Refused(f"$(env {name}) / $(optenv {name}): environment lookups are refused; "
-                          "pass the value with --arg NAME:=VALUE")
+            raise Refused(
+                f"$(env {name}) / $(optenv {name}): environment lookups are refused; "
+                "pass the value with --arg NAME:=VALUE"
+            )
 
         def find(package: str) -> str:
             folder = packages.get(package)
@@ -118,8 +128,11 @@ def _compile(request: dict[str, Any]) -> dict[str, Any]:
     warnings = [line.strip() for line in captured.getvalue().splitlines() if line.strip()]
     missing = fence.confinement.missing
     if missing:
-        warnings.insert(0, f"this system gave no {' and no '.join(missing)}: the file was "
-                           "compiled with fewer fences (docs/security.md)")
+        warnings.insert(
+            0,
+            f"this system gave no {' and no '.join(missing)}: the file was "
+            "compiled with fewer fences (docs/security.md)",
+        )
     return {"text": text, "warnings": warnings[:100]}
 
 
@@ -193,9 +206,11 @@ class _Fence:
 
         from solver.identify.safexml import parse_xml
 
-        warm_up = ('<robot xmlns:xacro="http://www.ros.org/wiki/xacro"><xacro:property '
-                   'name="p" value="${1 + 1}"/><xacro:macro name="m" params="x"><link '
-                   'name="l${x}"/></xacro:macro><xacro:m x="${p}"/></robot>')
+        warm_up = (
+            '<robot xmlns:xacro="http://www.ros.org/wiki/xacro"><xacro:property '
+            'name="p" value="${1 + 1}"/><xacro:macro name="m" params="x"><link '
+            'name="l${x}"/></xacro:macro><xacro:m x="${p}"/></robot>'
+        )
         xacro.init_stacks(None)
         xacro.process_doc(xacro.parse(warm_up))
         yaml.safe_load("a: [1, 2.5, b]")
@@ -227,11 +242,42 @@ def _disarm() -> None:
     import posix
 
     for module in (os, posix):
-        for name in ("system", "popen", "fork", "forkpty", "execv", "execve", "execvp",
-                     "execvpe", "execl", "execle", "execlp", "execlpe", "spawnv", "spawnve",
-                     "spawnvp", "spawnvpe", "spawnl", "spawnle", "posix_spawn", "posix_spawnp",
-                     "open", "remove", "unlink", "rename", "replace", "rmdir", "mkdir",
-                     "symlink", "link", "truncate", "chmod", "chown", "kill", "killpg"):
+        for name in (
+            "system",
+            "popen",
+            "fork",
+            "forkpty",
+            "execv",
+            "execve",
+            "execvp",
+            "execvpe",
+            "execl",
+            "execle",
+            "execlp",
+            "execlpe",
+            "spawnv",
+            "spawnve",
+            "spawnvp",
+            "spawnvpe",
+            "spawnl",
+            "spawnle",
+            "posix_spawn",
+            "posix_spawnp",
+            "open",
+            "remove",
+            "unlink",
+            "rename",
+            "replace",
+            "rmdir",
+            "mkdir",
+            "symlink",
+            "link",
+            "truncate",
+            "chmod",
+            "chown",
+            "kill",
+            "killpg",
+        ):
             if hasattr(module, name):
                 setattr(module, name, _refused)
     _io.FileIO = _refused  # type: ignore[misc, assignment]  # no unfenced file objects
@@ -242,9 +288,13 @@ def _disarm() -> None:
     loaded = set(sys.modules)
     original = builtins.__import__
 
-    def frozen_import(name: str, globals: Mapping[str, Any] | None = None,
-                      locals: Mapping[str, Any] | None = None, fromlist: Sequence[str] = (),
-                      level: int = 0) -> Any:
+    def frozen_import(
+        name: str,
+        globals: Mapping[str, Any] | None = None,
+        locals: Mapping[str, Any] | None = None,
+        fromlist: Sequence[str] = (),
+        level: int = 0,
+    ) -> Any:
         full = name
         if level:  # a relative import names its module from the importing package
             package = str((globals or {}).get("__package__") or "")

@@ -39,8 +39,16 @@ import solver
 from solver.errors import Fault, InputError, Location
 from solver.identify.safexml import MAX_XML_BYTES, line_of, parse_xml, read_bytes
 
-__all__ = ["PACKAGE_PATH_ENV", "CompiledXacro", "XacroLimits", "compile_xacro", "find_packages",
-           "is_xacro", "package_path_from_env", "uncompiled_xacro"]
+__all__ = [
+    "PACKAGE_PATH_ENV",
+    "CompiledXacro",
+    "XacroLimits",
+    "compile_xacro",
+    "find_packages",
+    "is_xacro",
+    "package_path_from_env",
+    "uncompiled_xacro",
+]
 
 if TYPE_CHECKING:
     from lxml import etree
@@ -104,16 +112,26 @@ def uncompiled_xacro(root: etree._Element, file: str) -> list[Fault]:
         elif element.prefix != "xacro" and "xacro" not in namespace:
             stack.extend(reversed(list(element)))
             continue
-        found.append(Fault(Location(file, line_of(element), None, f"xacro:{local}"),
-                           f"<xacro:{local}> ignored: this file is read as URDF and never "
-                           "compiled (compiling xacro runs code from the file; a .xacro file "
-                           "is compiled with --trust-xacro)", "xacro-ignored"))
+        found.append(
+            Fault(
+                Location(file, line_of(element), None, f"xacro:{local}"),
+                f"<xacro:{local}> ignored: this file is read as URDF and never "
+                "compiled (compiling xacro runs code from the file; a .xacro file "
+                "is compiled with --trust-xacro)",
+                "xacro-ignored",
+            )
+        )
     return found
 
 
-def compile_xacro(path: str | Path, *, args: Mapping[str, str] | None = None,
-                  package_path: Sequence[str | Path] = (), display: str | None = None,
-                  limits: XacroLimits = XacroLimits()) -> CompiledXacro:
+def compile_xacro(
+    path: str | Path,
+    *,
+    args: Mapping[str, str] | None = None,
+    package_path: Sequence[str | Path] = (),
+    display: str | None = None,
+    limits: XacroLimits = XacroLimits(),
+) -> CompiledXacro:
     """Compile the xacro file ``path`` in a limited child process; :class:`InputError` if not."""
     name = display if display is not None else str(path)
     source = Path(path).resolve()
@@ -125,9 +143,14 @@ def compile_xacro(path: str | Path, *, args: Mapping[str, str] | None = None,
             raise InputError.at(str(folder), "package path is not a folder", code="xacro")
     packages = find_packages(source, folders)
     roots = {str(own_package_root(source))} | set(packages.values())
-    request = {"source": str(source), "args": dict(args or {}), "packages": packages,
-               "roots": sorted(roots), "cpu_seconds": limits.cpu_seconds,
-               "memory_bytes": limits.memory_bytes}
+    request = {
+        "source": str(source),
+        "args": dict(args or {}),
+        "packages": packages,
+        "roots": sorted(roots),
+        "cpu_seconds": limits.cpu_seconds,
+        "memory_bytes": limits.memory_bytes,
+    }
     answer = _run_child(request, name, limits)
     if not answer.get("ok"):
         raise _xacro_error(name, data, answer, folders)
@@ -144,8 +167,9 @@ def own_package_root(source: Path) -> Path:
     return source.parent
 
 
-def find_packages(source: Path, package_path: Sequence[Path] = (),
-                  environ: Mapping[str, str] | None = None) -> dict[str, str]:
+def find_packages(
+    source: Path, package_path: Sequence[Path] = (), environ: Mapping[str, str] | None = None
+) -> dict[str, str]:
     """Package name -> folder: above ``source`` and beside it, then ``package_path``, then
     ``ROS_PACKAGE_PATH``; the first found wins, as ROS's own lookup does."""
     env = os.environ if environ is None else environ
@@ -176,8 +200,11 @@ def _scan(folder: Path, found: dict[str, str], budget: list[int], depth: int) ->
             found.setdefault(named.group(1).decode(), str(folder.resolve()))
         return  # packages do not nest
     try:
-        children = sorted(p for p in folder.iterdir() if p.is_dir() and not p.is_symlink()
-                          and not p.name.startswith("."))
+        children = sorted(
+            p
+            for p in folder.iterdir()
+            if p.is_dir() and not p.is_symlink() and not p.name.startswith(".")
+        )
     except OSError:
         return
     for child in children:
@@ -186,12 +213,19 @@ def _scan(folder: Path, found: dict[str, str], budget: list[int], depth: int) ->
 
 def _run_child(request: dict[str, Any], name: str, limits: XacroLimits) -> dict[str, Any]:
     root = str(Path(solver.__file__).resolve().parent.parent)
-    code = ("import sys; sys.path[:0] = sys.argv[1:]; "
-            "from solver.identify.xacro_child import main; main()")
+    code = (
+        "import sys; sys.path[:0] = sys.argv[1:]; "
+        "from solver.identify.xacro_child import main; main()"
+    )
     process = subprocess.Popen(
         [sys.executable, "-I", "-S", "-c", code, root, *_site_paths(name)],
-        stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
-        env={"PATH": os.defpath, "LANG": "C.UTF-8"}, cwd=root, start_new_session=True)
+        stdin=subprocess.PIPE,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.DEVNULL,
+        env={"PATH": os.defpath, "LANG": "C.UTF-8"},
+        cwd=root,
+        start_new_session=True,
+    )
     output: list[bytes] = []
     reader = threading.Thread(target=_read_bounded, args=(process.stdout, output), daemon=True)
     reader.start()
@@ -202,22 +236,27 @@ def _run_child(request: dict[str, Any], name: str, limits: XacroLimits) -> dict[
         process.wait(timeout=limits.wall_seconds)
     except subprocess.TimeoutExpired:
         _kill(process)
-        raise InputError.at(name, f"xacro did not finish within {limits.wall_seconds:g} s; "
-                                  "stopped", code="xacro-limit") from None
+        raise InputError.at(
+            name,
+            f"xacro did not finish within {limits.wall_seconds:g} s; stopped",
+            code="xacro-limit",
+        ) from None
     except BrokenPipeError:
         process.wait(timeout=limits.wall_seconds)
     reader.join(timeout=limits.wall_seconds)
     raw = b"".join(output)
     if process.returncode != 0 or not raw:
         signal = -process.returncode if process.returncode < 0 else None
-        reason = {24: f"used more than {limits.cpu_seconds} s of CPU",
-                  9: f"used more than {limits.cpu_seconds} s of CPU or "
-                     f"{limits.memory_bytes // 2**20} MiB of memory"}.get(
-            signal or 0, f"ended without an answer (exit status {process.returncode})")
+        reason = {
+            24: f"used more than {limits.cpu_seconds} s of CPU",
+            9: f"used more than {limits.cpu_seconds} s of CPU or "
+            f"{limits.memory_bytes // 2**20} MiB of memory",
+        }.get(signal or 0, f"ended without an answer (exit status {process.returncode})")
         raise InputError.at(name, f"xacro {reason}; stopped", code="xacro-limit")
     if len(raw) > 2 * MAX_XML_BYTES + 65536:
-        raise InputError.at(name, f"xacro output is larger than {MAX_XML_BYTES} bytes; refused",
-                            code="too-large")
+        raise InputError.at(
+            name, f"xacro output is larger than {MAX_XML_BYTES} bytes; refused", code="too-large"
+        )
     try:
         answer: dict[str, Any] = json.loads(raw)
     except ValueError:
@@ -230,9 +269,11 @@ def _site_paths(name: str) -> list[str]:
     try:
         import xacro
     except ImportError:
-        raise InputError.at(name, "xacro support is not installed: "
-                                  "pip install 'teleop-ui[xacro]'",
-                             code="missing-extra") from None
+        raise InputError.at(
+            name,
+            "xacro support is not installed: pip install 'teleop-ui[xacro]'",
+            code="missing-extra",
+        ) from None
     import lxml
     import yaml
 
@@ -261,8 +302,9 @@ def _kill(process: subprocess.Popen[bytes]) -> None:
     process.wait()
 
 
-def _xacro_error(name: str, data: bytes, answer: Mapping[str, Any], folders: list[Path]
-                 ) -> InputError:
+def _xacro_error(
+    name: str, data: bytes, answer: Mapping[str, Any], folders: list[Path]
+) -> InputError:
     message = str(answer.get("message") or "xacro failed")
     code = str(answer.get("code") or "xacro")
     missing = _MISSING.search(message)
@@ -274,10 +316,15 @@ def _xacro_error(name: str, data: bytes, answer: Mapping[str, Any], folders: lis
             position = data.find(f"package://{package}".encode())
         line = None if position < 0 else data.count(b"\n", 0, position) + 1
         where = ", ".join(str(f) for f in folders) or "(no --package-path given)"
-        return InputError.at(name, f"xacro: ROS package {package!r} not found; looked in "
-                                   f"--package-path / ${PACKAGE_PATH_ENV}: {where}; the "
-                                   f"package.xml folders above {name}; and $ROS_PACKAGE_PATH",
-                             line=line, path=f"$(find {package})", code="xacro-package")
+        return InputError.at(
+            name,
+            f"xacro: ROS package {package!r} not found; looked in "
+            f"--package-path / ${PACKAGE_PATH_ENV}: {where}; the "
+            f"package.xml folders above {name}; and $ROS_PACKAGE_PATH",
+            line=line,
+            path=f"$(find {package})",
+            code="xacro-package",
+        )
     file = answer.get("file")
     line = answer.get("line")
     where = str(file) if isinstance(file, str) and file else name

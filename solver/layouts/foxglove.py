@@ -30,9 +30,14 @@ def layout_filename(number: int, *, default: bool = False, extension: str = "jso
     return f"config-{number:03d}{'-default' if default else ''}.{extension}"
 
 
-def foxglove_layout(solution: Solution, configuration: Configuration | None,
-                    profile: Profile, *, robot: str = "<robot>",
-                    tile_count: int | None = None) -> dict[str, Any]:
+def foxglove_layout(
+    solution: Solution,
+    configuration: Configuration | None,
+    profile: Profile,
+    *,
+    robot: str = "<robot>",
+    tile_count: int | None = None,
+) -> dict[str, Any]:
     """The layout of ``configuration`` (``None``: the default configuration, every component)."""
     rules = solution.rules
     entries: list[tuple[PanelSpec, int]] = []
@@ -40,21 +45,29 @@ def foxglove_layout(solution: Solution, configuration: Configuration | None,
         for characteristic in rules.characteristics[1:]:
             if characteristic.kind == "integer":
                 continue
-            entries.extend((profile.spec(component.name), 1)
-                           for component in characteristic.components)
+            entries.extend(
+                (profile.spec(component.name), 1) for component in characteristic.components
+            )
     else:
         # One robot shows its own g(i) tiles; a template, the most its configuration needs.
         count = tile_count if tile_count is not None else tiles(rules, configuration)
         # Position 0 is the kinematic type (the layout's subject, not a panel); the integer
         # characteristic is the tiling of the sensor panel, not a panel of its own.
-        sensor_position = next((position for position, c in enumerate(rules.characteristics)
-                                if c.name == "sensor_type"), -1)
+        sensor_position = next(
+            (
+                position
+                for position, c in enumerate(rules.characteristics)
+                if c.name == "sensor_type"
+            ),
+            -1,
+        )
         for position, component in enumerate(configuration.components):
             characteristic = rules.characteristics[position]
             if position == 0 or characteristic.kind == "integer":
                 continue
-            entries.append((profile.spec(component.name),
-                            count if position == sensor_position else 1))
+            entries.append(
+                (profile.spec(component.name), count if position == sensor_position else 1)
+            )
     config_by_id: dict[str, Any] = {}
     ids: list[str] = []
     for spec, count in entries:
@@ -86,18 +99,30 @@ def _panel_config(spec: PanelSpec, robot: str, suffix: str) -> dict[str, Any]:
             config["publish"] = {"type": "pose", "poseTopic": topic}
     elif spec.panel == "Teleop":
         # Publishes only while a button is held; releasing it stops publishing.
-        config.update({"topic": topic, "publishRate": 5,
-                       "upButton": {"field": "linear-x", "value": 0.5},
-                       "downButton": {"field": "linear-x", "value": -0.5},
-                       "leftButton": {"field": "angular-z", "value": 0.5},
-                       "rightButton": {"field": "angular-z", "value": -0.5}})
+        config.update(
+            {
+                "topic": topic,
+                "publishRate": 5,
+                "upButton": {"field": "linear-x", "value": 0.5},
+                "downButton": {"field": "linear-x", "value": -0.5},
+                "leftButton": {"field": "angular-z", "value": 0.5},
+                "rightButton": {"field": "angular-z", "value": -0.5},
+            }
+        )
     elif spec.panel == "Plot":
-        config["paths"] = [{"value": f"{topic}.wrench.force.{axis}", "enabled": True}
-                           for axis in "xyz"]
+        config["paths"] = [
+            {"value": f"{topic}.wrench.force.{axis}", "enabled": True} for axis in "xyz"
+        ]
     elif spec.panel == "Publish":
         # A message goes out only when the operator presses the button.
-        config.update({"topicName": topic, "datatype": spec.types[0] if spec.types else "",
-                       "buttonText": "Publish", "advancedView": True})
+        config.update(
+            {
+                "topicName": topic,
+                "datatype": spec.types[0] if spec.types else "",
+                "buttonText": "Publish",
+                "advancedView": True,
+            }
+        )
     elif spec.panel == "Indicator":
         config["path"] = topic
     else:
@@ -119,11 +144,18 @@ def validate_foxglove(layout: dict[str, Any], file: str = "<layout>") -> None:
             return
         split = node.get("splitPercentage", 50)
         if not isinstance(split, (int, float)) or not 0 <= split <= 100:
-            faults.append(Fault(Location(file, path=f"{path}.splitPercentage"),
-                                f"split percentage must be in 0..100 (got {split!r})"))
+            faults.append(
+                Fault(
+                    Location(file, path=f"{path}.splitPercentage"),
+                    f"split percentage must be in 0..100 (got {split!r})",
+                )
+            )
         if node.get("direction") not in ("row", "column"):
-            faults.append(Fault(Location(file, path=f"{path}.direction"),
-                                "direction must be 'row' or 'column'"))
+            faults.append(
+                Fault(
+                    Location(file, path=f"{path}.direction"), "direction must be 'row' or 'column'"
+                )
+            )
         walk(node.get("first"), f"{path}.first")
         walk(node.get("second"), f"{path}.second")
 
@@ -139,7 +171,8 @@ def validate_foxglove(layout: dict[str, Any], file: str = "<layout>") -> None:
         if panel_id not in seen:
             faults.append(Fault(Location(file, path=f"configById.{panel_id}"), "orphan config"))
         if panel_id.partition("!")[0] not in PANEL_TYPES:
-            faults.append(Fault(Location(file, path=f"configById.{panel_id}"),
-                                "unknown panel type"))
+            faults.append(
+                Fault(Location(file, path=f"configById.{panel_id}"), "unknown panel type")
+            )
     if faults:
         raise LayoutError(faults)

@@ -12,8 +12,15 @@ from typing import Any
 
 __all__ = ["preview_html", "preview_svg"]
 
-COLOURS = {"3D": "#4c72b0", "Image": "#55a868", "Indicator": "#8172b2", "Plot": "#c44e52",
-           "Publish": "#ccb974", "RawMessages": "#8c8c8c", "Teleop": "#dd8452"}
+COLOURS = {
+    "3D": "#4c72b0",
+    "Image": "#55a868",
+    "Indicator": "#8172b2",
+    "Plot": "#c44e52",
+    "Publish": "#ccb974",
+    "RawMessages": "#8c8c8c",
+    "Teleop": "#dd8452",
+}
 
 
 def preview_svg(layout: dict[str, Any], width: int = 320, height: int = 200) -> str:
@@ -28,7 +35,8 @@ def preview_svg(layout: dict[str, Any], width: int = 320, height: int = 200) -> 
                 f'<rect x="{x:.1f}" y="{y:.1f}" width="{w:.1f}" height="{h:.1f}" '
                 f'fill="{COLOURS.get(kind, "#8c8c8c")}" stroke="#ffffff" stroke-width="2"/>'
                 f'<text x="{x + 4:.1f}" y="{y + 14:.1f}" font-size="10" fill="#ffffff">'
-                f"{escape(kind)}: {escape(title)}</text>")
+                f"{escape(kind)}: {escape(title)}</text>"
+            )
             return
         share = float(node.get("splitPercentage", 50)) / 100
         if node.get("direction") == "row":
@@ -40,14 +48,20 @@ def preview_svg(layout: dict[str, Any], width: int = 320, height: int = 200) -> 
 
     if layout.get("layout") is not None:
         draw(layout["layout"], 0, 0, width, height)
-    return (f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
-            f'viewBox="0 0 {width} {height}">' + "".join(shapes) + "</svg>")
+    return (
+        f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
+        f'viewBox="0 0 {width} {height}">' + "".join(shapes) + "</svg>"
+    )
 
 
 def preview_html(layouts: list[tuple[str, dict[str, Any]]]) -> str:
     """A self-contained page: one captioned thumbnail per (name, layout)."""
-    figures = "".join(f"<figure>{preview_svg(layout)}<figcaption>{escape(name)}</figcaption>"
-                      "</figure>" for name, layout in layouts)
-    return ("<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>layouts</title>"
-            "<style>body{margin:8px;font-family:sans-serif}figure{display:inline-block;"
-            "margin:4px}</style></head><body>" + figures + "</body></html>\n")
+    figures = "".join(
+        f"<figure>{preview_svg(layout)}<figcaption>{escape(name)}</figcaption></figure>"
+        for name, layout in layouts
+    )
+    return (
+        '<!DOCTYPE html><html><head><meta charset="utf-8"><title>layouts</title>'
+        "<style>body{margin:8px;font-family:sans-serif}figure{display:inline-block;"
+        "margin:4px}</style></head><body>" + figures + "</body></html>\n"
+    )

@@ -15,8 +15,14 @@ from solver.reader import Reader
 from solver.rules import RuleSet
 from solver.yamlio import load_document
 
-__all__ = ["PANEL_TYPES", "PanelSpec", "Profile", "ProfileError", "default_profile_path",
-           "load_profile"]
+__all__ = [
+    "PANEL_TYPES",
+    "PanelSpec",
+    "Profile",
+    "ProfileError",
+    "default_profile_path",
+    "load_profile",
+]
 
 # The Foxglove / Lichtblick panel types a generated layout may use (their registered ids).
 PANEL_TYPES = ("3D", "Image", "Indicator", "Plot", "Publish", "RawMessages", "Teleop")
@@ -64,8 +70,11 @@ def load_profile(path: str | Path | None = None, rules: RuleSet | None = None) -
     panels: list[PanelSpec] = []
     known: set[str] | None = None
     if rules is not None:
-        known = {component.name for characteristic in rules.characteristics
-                 for component in characteristic.components}
+        known = {
+            component.name
+            for characteristic in rules.characteristics
+            for component in characteristic.components
+        }
     top = reader.top("presentation profile", needs="components")
     if top is not None:
         components = reader.mapping(("components",), "components")
@@ -73,12 +82,16 @@ def load_profile(path: str | Path | None = None, rules: RuleSet | None = None) -
             path_ = ("components", name)
             entry = reader.mapping(path_, f"component {name!r}")
             if known is not None and name not in known:
-                reader.fault(path_, f"unknown component {name!r}", key=True,
-                             code="unknown-reference")
+                reader.fault(
+                    path_, f"unknown component {name!r}", key=True, code="unknown-reference"
+                )
             panel = reader.string((*path_, "panel"), "panel")
             if panel and panel not in PANEL_TYPES:
-                reader.fault((*path_, "panel"), f"unknown panel {panel!r}; known: "
-                             + ", ".join(PANEL_TYPES), code="unknown-reference")
+                reader.fault(
+                    (*path_, "panel"),
+                    f"unknown panel {panel!r}; known: " + ", ".join(PANEL_TYPES),
+                    code="unknown-reference",
+                )
             topic = reader.string((*path_, "topic"), "topic", limit=None)
             raw_types = entry.get("types") or []
             types = tuple(str(item) for item in raw_types) if isinstance(raw_types, list) else ()

@@ -38,8 +38,13 @@ REQUIRED_KEYS = ("Class", "Enabled", "Name", "Value")
 
 
 def _qos(topic: str, *, sensor: bool) -> dict[str, Any]:
-    return {"Depth": 5, "Durability Policy": "Volatile", "History Policy": "Keep Last",
-            "Reliability Policy": "Best Effort" if sensor else "Reliable", "Value": topic}
+    return {
+        "Depth": 5,
+        "Durability Policy": "Volatile",
+        "History Policy": "Keep Last",
+        "Reliability Policy": "Best Effort" if sensor else "Reliable",
+        "Value": topic,
+    }
 
 
 def _display(spec: PanelSpec, robot: str, tile: int, count: int) -> dict[str, Any]:
@@ -48,25 +53,49 @@ def _display(spec: PanelSpec, robot: str, tile: int, count: int) -> dict[str, An
     name = spec.component + (f" {tile + 1}" if count > 1 else "")
     kind = next((DISPLAYS[t] for t in spec.types if t in DISPLAYS), None)
     if kind is None:
-        return {"Class": "rviz_default_plugins/Marker", "Enabled": False,
-                "Name": f"{name} (placeholder: no RViz2 display for this component)",
-                "Topic": _qos(topic, sensor=False), "Value": False}
+        return {
+            "Class": "rviz_default_plugins/Marker",
+            "Enabled": False,
+            "Name": f"{name} (placeholder: no RViz2 display for this component)",
+            "Topic": _qos(topic, sensor=False),
+            "Value": False,
+        }
     sensor = kind in ("Image", "PointCloud2", "LaserScan", "Wrench")
-    return {"Class": f"rviz_default_plugins/{kind}", "Enabled": True, "Name": name,
-            "Topic": _qos(topic, sensor=sensor), "Value": True}
+    return {
+        "Class": f"rviz_default_plugins/{kind}",
+        "Enabled": True,
+        "Name": name,
+        "Topic": _qos(topic, sensor=sensor),
+        "Value": True,
+    }
 
 
-def rviz_layout(solution: Solution, configuration: Configuration | None, profile: Profile,
-                *, robot: str = "<robot>", tile_count: int | None = None) -> dict[str, Any]:
+def rviz_layout(
+    solution: Solution,
+    configuration: Configuration | None,
+    profile: Profile,
+    *,
+    robot: str = "<robot>",
+    tile_count: int | None = None,
+) -> dict[str, Any]:
     """The ``.rviz`` document of ``configuration`` (``None``: the default configuration)."""
     rules = solution.rules
     displays: list[dict[str, Any]] = [
         {"Class": "rviz_default_plugins/Grid", "Enabled": True, "Name": "Grid", "Value": True},
-        {"Class": "rviz_default_plugins/RobotModel", "Description Source": "Topic",
-         "Description Topic": {"Depth": 5, "Durability Policy": "Transient Local",
-                               "History Policy": "Keep Last", "Reliability Policy": "Reliable",
-                               "Value": "/robot_description"},
-         "Enabled": True, "Name": "RobotModel", "Value": True},
+        {
+            "Class": "rviz_default_plugins/RobotModel",
+            "Description Source": "Topic",
+            "Description Topic": {
+                "Depth": 5,
+                "Durability Policy": "Transient Local",
+                "History Policy": "Keep Last",
+                "Reliability Policy": "Reliable",
+                "Value": "/robot_description",
+            },
+            "Enabled": True,
+            "Name": "RobotModel",
+            "Value": True,
+        },
     ]
     entries: list[tuple[PanelSpec, int]] = []
     if configuration is None:
@@ -80,23 +109,29 @@ def rviz_layout(solution: Solution, configuration: Configuration | None, profile
             characteristic = rules.characteristics[position]
             if position == 0 or characteristic.kind == "integer":
                 continue
-            entries.append((profile.spec(component.name),
-                            count if characteristic.name == "sensor_type" else 1))
+            entries.append(
+                (profile.spec(component.name), count if characteristic.name == "sensor_type" else 1)
+            )
     for spec, count in entries:
         displays.extend(_display(spec, robot, tile, count) for tile in range(count))
     return {
         "Panels": [{"Class": "rviz_common/Displays", "Name": "Displays"}],
         "Visualization Manager": {
-            "Class": "", "Displays": displays, "Enabled": True,
+            "Class": "",
+            "Displays": displays,
+            "Enabled": True,
             "Global Options": {"Fixed Frame": "base_link", "Frame Rate": 30},
             "Name": "root",
             # The goal tool publishes only on the operator's click.
-            "Tools": [{"Class": "rviz_default_plugins/Interact"},
-                      {"Class": "rviz_default_plugins/SetGoal",
-                       "Topic": _qos(f"{robot}/goal_pose", sensor=False)}],
+            "Tools": [
+                {"Class": "rviz_default_plugins/Interact"},
+                {
+                    "Class": "rviz_default_plugins/SetGoal",
+                    "Topic": _qos(f"{robot}/goal_pose", sensor=False),
+                },
+            ],
             "Value": True,
-            "Views": {"Current": {"Class": "rviz_default_plugins/Orbit",
-                                  "Name": "Current View"}},
+            "Views": {"Current": {"Class": "rviz_default_plugins/Orbit", "Name": "Current View"}},
         },
     }
 
@@ -111,12 +146,18 @@ def validate_rviz(text: str, file: str = "<rviz>") -> None:
     faults: list[Fault] = []
     displays = (document or {}).get("Visualization Manager", {}).get("Displays")
     if not isinstance(displays, list):
-        faults.append(Fault(Location(file, path="Visualization Manager.Displays"),
-                            "missing display list"))
+        faults.append(
+            Fault(Location(file, path="Visualization Manager.Displays"), "missing display list")
+        )
         displays = []
     for index, display in enumerate(displays):
-        faults.extend(Fault(Location(file, path=f"Visualization Manager.Displays[{index}]"),
-                            f"display has no {key!r}")
-                      for key in REQUIRED_KEYS if key not in display)
+        faults.extend(
+            Fault(
+                Location(file, path=f"Visualization Manager.Displays[{index}]"),
+                f"display has no {key!r}",
+            )
+            for key in REQUIRED_KEYS
+            if key not in display
+        )
     if faults:
         raise LayoutError(faults)

@@ -18,17 +18,21 @@ __all__ = ["FORMATS", "write_layouts"]
 FORMATS = ("foxglove", "rviz")
 
 
-def write_layouts(solution: Solution, profile: Profile, directory: str | Path,
-                  fmt: str = "foxglove") -> list[Path]:
+def write_layouts(
+    solution: Solution, profile: Profile, directory: str | Path, fmt: str = "foxglove"
+) -> list[Path]:
     """Validate every layout, then write them all atomically; the written paths in order."""
     if fmt not in FORMATS:
-        raise InputError.at("--format", f"unknown layout format {fmt!r}; known: "
-                            + ", ".join(FORMATS))
+        raise InputError.at(
+            "--format", f"unknown layout format {fmt!r}; known: " + ", ".join(FORMATS)
+        )
     extension = "json" if fmt == "foxglove" else "rviz"
     numbered: list[tuple[str, Configuration | None]] = [
-        (layout_filename(c.number, extension=extension), c) for c in solution.configurations]
-    numbered.append((layout_filename(solution.default_configuration, default=True,
-                                     extension=extension), None))
+        (layout_filename(c.number, extension=extension), c) for c in solution.configurations
+    ]
+    numbered.append(
+        (layout_filename(solution.default_configuration, default=True, extension=extension), None)
+    )
     files: dict[str | Path, str] = {}
     for name, configuration in numbered:
         if fmt == "foxglove":

@@ -33,8 +33,16 @@ from solver.identify.profile import Profile
 from solver.identify.topics import Topic, normalise_type
 from solver.live.master import Observation
 
-__all__ = ["DESCRIPTION", "SEMANTIC", "RobotSource", "description_key", "discover",
-           "normalise_namespace", "robot_namespaces", "robot_topics"]
+__all__ = [
+    "DESCRIPTION",
+    "SEMANTIC",
+    "RobotSource",
+    "description_key",
+    "discover",
+    "normalise_namespace",
+    "robot_namespaces",
+    "robot_topics",
+]
 
 DESCRIPTION = "robot_description"
 SEMANTIC = "robot_description_semantic"
@@ -83,16 +91,18 @@ def _owner(name: str, namespaces: frozenset[str]) -> str | None:
 
 
 def _relative(name: str, namespace: str) -> str:
-    return name[len(namespace):].lstrip("/") if namespace != "/" else name.lstrip("/")
+    return name[len(namespace) :].lstrip("/") if namespace != "/" else name.lstrip("/")
 
 
 def _relevant(message_type: str, profile: Profile) -> bool:
-    return any(not rule.types or message_type in rule.types for rule in profile.topic_sensors) \
-        or any(message_type in rule.types for rule in profile.topic_controls)
+    return any(
+        not rule.types or message_type in rule.types for rule in profile.topic_sensors
+    ) or any(message_type in rule.types for rule in profile.topic_controls)
 
 
-def robot_topics(namespaces: Iterable[str], observation: Observation,
-                 profile: Profile) -> dict[str, tuple[Topic, ...]]:
+def robot_topics(
+    namespaces: Iterable[str], observation: Observation, profile: Profile
+) -> dict[str, tuple[Topic, ...]]:
     """The topics of each robot in ``namespaces`` (see the module docstring), each sorted.
 
     Every topic and node name is placed once, so the cost grows with the size of the graph,
@@ -100,8 +110,7 @@ def robot_topics(namespaces: Iterable[str], observation: Observation,
     """
     known = frozenset(namespaces)
     types = dict(observation.topic_types)
-    sides = {"published": dict(observation.publishers),
-             "subscribed": dict(observation.subscribers)}
+    sides = {"published": dict(observation.publishers), "subscribed": dict(observation.subscribers)}
     owners: dict[str, str | None] = {}
 
     def owner(name: str) -> str | None:
@@ -122,13 +131,21 @@ def robot_topics(namespaces: Iterable[str], observation: Observation,
             relevant[message_type] = _relevant(message_type, profile)
         if not relevant[message_type]:
             continue
-        own = {side: [node for node in nodes.get(name, ()) if owner(node) == namespace]
-               for side, nodes in sides.items()}
-        counted = own if any(own.values()) else \
-            {side: list(nodes.get(name, ())) for side, nodes in sides.items()}
+        own = {
+            side: [node for node in nodes.get(name, ()) if owner(node) == namespace]
+            for side, nodes in sides.items()
+        }
+        counted = (
+            own
+            if any(own.values())
+            else {side: list(nodes.get(name, ())) for side, nodes in sides.items()}
+        )
         relative = _relative(name, namespace)
-        found[namespace] += [Topic(relative, message_type, side)
-                             for side in ("published", "subscribed") if counted[side]]
+        found[namespace] += [
+            Topic(relative, message_type, side)
+            for side in ("published", "subscribed")
+            if counted[side]
+        ]
     return {namespace: tuple(topics) for namespace, topics in found.items()}
 
 
@@ -138,8 +155,13 @@ def discover(observation: Observation, profile: Profile) -> tuple[RobotSource, .
     names = set(observation.param_names)
     topics = robot_topics(namespaces, observation, profile)
     return tuple(
-        RobotSource(namespace, description_key(namespace),
-                    description_key(namespace, SEMANTIC)
-                    if description_key(namespace, SEMANTIC) in names else None,
-                    topics[namespace])
-        for namespace in namespaces)
+        RobotSource(
+            namespace,
+            description_key(namespace),
+            description_key(namespace, SEMANTIC)
+            if description_key(namespace, SEMANTIC) in names
+            else None,
+            topics[namespace],
+        )
+        for namespace in namespaces
+    )

@@ -42,8 +42,17 @@ from solver.live.robot import LiveRobot, robot_data
 from solver.live.selection import ActiveSelection, Request, selection_data
 from solver.solution import Solution
 
-__all__ = ["Event", "MasterBack", "MasterLost", "RobotAdded", "RobotChanged", "RobotRemoved",
-           "SelectionChanged", "Synced", "event_data"]
+__all__ = [
+    "Event",
+    "MasterBack",
+    "MasterLost",
+    "RobotAdded",
+    "RobotChanged",
+    "RobotRemoved",
+    "SelectionChanged",
+    "Synced",
+    "event_data",
+]
 
 
 @dataclass(frozen=True, slots=True)

@@ -39,8 +39,15 @@ from xml.parsers.expat import ExpatError
 
 from solver.errors import InputError, SolverError
 
-__all__ = ["MISSING", "MasterClient", "MasterError", "MasterUnreachable", "Observation",
-           "is_loopback", "master_uri"]
+__all__ = [
+    "MISSING",
+    "MasterClient",
+    "MasterError",
+    "MasterUnreachable",
+    "Observation",
+    "is_loopback",
+    "master_uri",
+]
 
 SUCCESS: Final = 1
 CALLER_ERROR: Final = -1
@@ -89,17 +96,27 @@ def master_uri(text: str | None) -> str:
     given = text if text is not None else os.environ.get("ROS_MASTER_URI")
     where = "--master" if text is not None else "ROS_MASTER_URI"
     if not given:
-        raise InputError.at("<arguments>", "no ROS master given: pass --master "
-                                           "http://HOST:PORT or set ROS_MASTER_URI")
+        raise InputError.at(
+            "<arguments>",
+            "no ROS master given: pass --master http://HOST:PORT or set ROS_MASTER_URI",
+        )
     parts = urlsplit(given.strip())
     try:
         port = parts.port
     except ValueError:
         port = None
-    if parts.scheme != "http" or not parts.hostname or port is None or parts.query \
-            or parts.fragment or parts.path not in ("", "/"):
-        raise InputError.at("<arguments>", f"{where}: expected a ROS master URI like "
-                                           f"http://127.0.0.1:11311, got {given!r}")
+    if (
+        parts.scheme != "http"
+        or not parts.hostname
+        or port is None
+        or parts.query
+        or parts.fragment
+        or parts.path not in ("", "/")
+    ):
+        raise InputError.at(
+            "<arguments>",
+            f"{where}: expected a ROS master URI like http://127.0.0.1:11311, got {given!r}",
+        )
     host = f"[{parts.hostname}]" if ":" in parts.hostname else parts.hostname
     return f"http://{host}:{port}/"
 
@@ -139,8 +156,9 @@ class MasterClient:
         self.caller_id = caller_id
         self.timeout = timeout
         self._transport = _TimeoutTransport(timeout)
-        self._proxy = xmlrpc.client.ServerProxy(uri, transport=self._transport,
-                                                use_builtin_types=True)
+        self._proxy = xmlrpc.client.ServerProxy(
+            uri, transport=self._transport, use_builtin_types=True
+        )
         self._multicall: bool | None = None  # unknown until the first batch
 
     def close(self) -> None:
@@ -159,8 +177,10 @@ class MasterClient:
     def get_params(self, keys: Sequence[str]) -> dict[str, Any]:
         """Several parameters in one round trip: key -> value or :data:`MISSING`."""
         replies = self._batch([("getParam", key) for key in keys])
-        return {key: value if code == SUCCESS else MISSING
-                for key, (code, _, value) in zip(keys, replies, strict=True)}
+        return {
+            key: value if code == SUCCESS else MISSING
+            for key, (code, _, value) in zip(keys, replies, strict=True)
+        }
 
     def set_param(self, key: str, value: Any) -> None:
         self._value("setParam", key, value)
@@ -180,8 +200,9 @@ class MasterClient:
 
     def unsubscribe_params(self, caller_api: str, keys: Iterable[str]) -> None:
         """Several unsubscriptions in one round trip."""
-        for code, message, _ in self._batch([("unsubscribeParam", caller_api, key)
-                                              for key in keys]):
+        for code, message, _ in self._batch(
+            [("unsubscribeParam", caller_api, key) for key in keys]
+        ):
             if code != SUCCESS:
                 raise MasterError.at(self.uri, message, path="unsubscribeParam")
 
@@ -204,8 +225,12 @@ class MasterClient:
 
     def observe(self, params: str | None = None) -> Observation:
         """The graph and parameter names (and the subtree ``params``) in one round trip."""
-        calls: list[tuple[Any, ...]] = [("getPid",), ("getSystemState",), ("getTopicTypes",),
-                                        ("getParamNames",)]
+        calls: list[tuple[Any, ...]] = [
+            ("getPid",),
+            ("getSystemState",),
+            ("getTopicTypes",),
+            ("getParamNames",),
+        ]
         if params is not None:
             calls.append(("getParam", params))
         replies = self._batch(calls)
@@ -223,7 +248,8 @@ class MasterClient:
             subscribers=self._pairs_of_lists(state[1]),
             topic_types=self._pairs(replies[2][2]),
             param_names=self._names(replies[3][2]),
-            params=tuple(sorted(subtree.items())) if isinstance(subtree, dict) else ())
+            params=tuple(sorted(subtree.items())) if isinstance(subtree, dict) else (),
+        )
 
     # -- plumbing ------------------------------------------------------------------------
 
@@ -259,21 +285,30 @@ class MasterClient:
                 self._multicall = False
             else:
                 self._multicall = True
-                return [self._multicall_item(call[0], item) for call, item in
-                        zip(calls, results, strict=True)]
+                return [
+                    self._multicall_item(call[0], item)
+                    for call, item in zip(calls, results, strict=True)
+                ]
         return [self._call(method, *args) for method, *args in calls]
 
     def _multicall_item(self, method: str, item: Any) -> tuple[int, str, Any]:
         if isinstance(item, dict):
-            raise MasterError.at(self.uri, f"XML-RPC fault {item.get('faultCode')}: "
-                                           f"{item.get('faultString')}", path=method)
+            raise MasterError.at(
+                self.uri,
+                f"XML-RPC fault {item.get('faultCode')}: {item.get('faultString')}",
+                path=method,
+            )
         if not isinstance(item, list) or len(item) != 1:
             raise self._malformed(method, "a one-element list from system.multicall")
         return self._triple(method, item[0])
 
     def _triple(self, method: str, reply: Any) -> tuple[int, str, Any]:
-        if not isinstance(reply, list | tuple) or len(reply) != 3 \
-                or not isinstance(reply[0], int) or not isinstance(reply[1], str):
+        if (
+            not isinstance(reply, list | tuple)
+            or len(reply) != 3
+            or not isinstance(reply[0], int)
+            or not isinstance(reply[1], str)
+        ):
             raise self._malformed(method, "[code, message, value]")
         code, message, value = reply
         if code not in (SUCCESS, CALLER_ERROR):
@@ -281,8 +316,9 @@ class MasterClient:
         return code, message, value
 
     def _malformed(self, method: str, expected: str) -> MasterError:
-        return MasterError.at(self.uri, f"not a ROS master's reply (expected {expected})",
-                              path=method)
+        return MasterError.at(
+            self.uri, f"not a ROS master's reply (expected {expected})", path=method
+        )
 
     def _pid(self, value: Any) -> int:
         if isinstance(value, bool) or not isinstance(value, int):
@@ -291,16 +327,23 @@ class MasterClient:
 
     def _pairs_of_lists(self, value: Any) -> tuple[tuple[str, tuple[str, ...]], ...]:
         if not isinstance(value, list) or not all(
-                isinstance(item, list) and len(item) == 2 and isinstance(item[0], str)
-                and isinstance(item[1], list) and all(isinstance(n, str) for n in item[1])
-                for item in value):
+            isinstance(item, list)
+            and len(item) == 2
+            and isinstance(item[0], str)
+            and isinstance(item[1], list)
+            and all(isinstance(n, str) for n in item[1])
+            for item in value
+        ):
             raise self._malformed("getSystemState", "[[topic, [node, ...]], ...]")
         return tuple(sorted((item[0], tuple(sorted(item[1]))) for item in value))
 
     def _pairs(self, value: Any) -> tuple[tuple[str, str], ...]:
         if not isinstance(value, list) or not all(
-                isinstance(item, list) and len(item) == 2
-                and all(isinstance(part, str) for part in item) for item in value):
+            isinstance(item, list)
+            and len(item) == 2
+            and all(isinstance(part, str) for part in item)
+            for item in value
+        ):
             raise self._malformed("getTopicTypes", "[[topic, type], ...]")
         return tuple(sorted((item[0], item[1]) for item in value))
 
@@ -316,18 +359,20 @@ def _translated(uri: str, method: str) -> Iterator[None]:
     try:
         yield
     except xmlrpc.client.Fault as error:
-        raise MasterError.at(uri, f"XML-RPC fault {error.faultCode}: {error.faultString}",
-                             path=method) from None
+        raise MasterError.at(
+            uri, f"XML-RPC fault {error.faultCode}: {error.faultString}", path=method
+        ) from None
     except xmlrpc.client.ProtocolError as error:
-        raise MasterError.at(uri, f"not a ROS master: HTTP {error.errcode} {error.errmsg}",
-                             path=method) from None
+        raise MasterError.at(
+            uri, f"not a ROS master: HTTP {error.errcode} {error.errmsg}", path=method
+        ) from None
     # No answer at all: which call it was says nothing to the user.
     except TimeoutError:
         raise MasterUnreachable.at(uri, "the ROS master did not answer in time") from None
     except (OSError, http.client.HTTPException) as error:
         reason = getattr(error, "strerror", None) or str(error) or type(error).__name__
         raise MasterUnreachable.at(uri, f"cannot reach the ROS master ({reason})") from None
-    except (ExpatError, xmlrpc.client.ResponseError, ValueError, TypeError,
-            OverflowError) as error:
-        raise MasterError.at(uri, f"not a ROS master: unreadable XML-RPC reply ({error})",
-                             path=method) from None
+    except (ExpatError, xmlrpc.client.ResponseError, ValueError, TypeError, OverflowError) as error:
+        raise MasterError.at(
+            uri, f"not a ROS master: unreadable XML-RPC reply ({error})", path=method
+        ) from None

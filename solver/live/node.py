@@ -70,28 +70,53 @@ class _Quiet(SimpleXMLRPCRequestHandler):
 class NodeServer:
     """An XML-RPC node API on a free port of ``host``; calls arrive on a server thread."""
 
-    def __init__(self, host: str, master: str, on_param_update: Callable[[str, Any], None],
-                 on_shutdown: Callable[[str], None]) -> None:
+    def __init__(
+        self,
+        host: str,
+        master: str,
+        on_param_update: Callable[[str, Any], None],
+        on_shutdown: Callable[[str], None],
+    ) -> None:
         self.master = master
         self._on_param_update = on_param_update
         self._on_shutdown = on_shutdown
         try:
-            self._server = _Server((host, 0), requestHandler=_Quiet, logRequests=False,
-                                   allow_none=False, use_builtin_types=True)
+            self._server = _Server(
+                (host, 0),
+                requestHandler=_Quiet,
+                logRequests=False,
+                allow_none=False,
+                use_builtin_types=True,
+            )
         except OSError as error:
-            raise InputError.at("<network>", f"cannot listen for the ROS master's calls on "
-                                             f"{host!r} ({error.strerror or error}); set "
-                                             f"ROS_IP to an address of this machine") from None
+            raise InputError.at(
+                "<network>",
+                f"cannot listen for the ROS master's calls on "
+                f"{host!r} ({error.strerror or error}); set "
+                f"ROS_IP to an address of this machine",
+            ) from None
         address = self._server.server_address
         shown = f"[{host}]" if ":" in host else host
         self.uri = f"http://{shown}:{address[1]}/"
-        for name in ("paramUpdate", "publisherUpdate", "shutdown", "getPid", "getMasterUri",
-                     "getBusInfo", "getBusStats", "getPublications", "getSubscriptions",
-                     "requestTopic"):
+        for name in (
+            "paramUpdate",
+            "publisherUpdate",
+            "shutdown",
+            "getPid",
+            "getMasterUri",
+            "getBusInfo",
+            "getBusStats",
+            "getPublications",
+            "getSubscriptions",
+            "requestTopic",
+        ):
             self._server.register_function(getattr(self, f"_{name}"), name)
-        self._thread = threading.Thread(target=self._server.serve_forever,
-                                        kwargs={"poll_interval": 0.1},
-                                        name=f"teleop-ui node {self.uri}", daemon=True)
+        self._thread = threading.Thread(
+            target=self._server.serve_forever,
+            kwargs={"poll_interval": 0.1},
+            name=f"teleop-ui node {self.uri}",
+            daemon=True,
+        )
 
     def start(self) -> None:
         self._thread.start()
@@ -108,8 +133,7 @@ class NodeServer:
         self._on_param_update(key, value)
         return [_OK, "", 0]
 
-    def _publisherUpdate(self, _caller: str, _topic: str, _publishers: list[str]
-                         ) -> list[Any]:
+    def _publisherUpdate(self, _caller: str, _topic: str, _publishers: list[str]) -> list[Any]:
         return [_OK, "", 0]
 
     def _shutdown(self, _caller: str, message: str = "") -> list[Any]:

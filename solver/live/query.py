@@ -44,9 +44,15 @@ class LiveAssignment:
     notes: tuple[str, ...] = ()
 
 
-def assign_from_master(master: str, solution: Solution, profile: Profile, *,
-                       robot: str | None = None, given: Mapping[str, str] | None = None,
-                       timeout: float = 2.0) -> LiveAssignment:
+def assign_from_master(
+    master: str,
+    solution: Solution,
+    profile: Profile,
+    *,
+    robot: str | None = None,
+    given: Mapping[str, str] | None = None,
+    timeout: float = 2.0,
+) -> LiveAssignment:
     """The configuration of a robot on the master (see the module docstring)."""
     client = MasterClient(master, caller_id="/teleop_ui_assign", timeout=timeout)
     try:
@@ -56,8 +62,10 @@ def assign_from_master(master: str, solution: Solution, profile: Profile, *,
         if robot is None:
             request = read_request(dict(observation.params))
             if request.robot is None:
-                raise InputError.at("<arguments>", f"no --robot given and no "
-                                                   f"{NAMESPACE}/active_robot set on {master}")
+                raise InputError.at(
+                    "<arguments>",
+                    f"no --robot given and no {NAMESPACE}/active_robot set on {master}",
+                )
             namespace = request.robot
             asked, ignored = requested_values(request, solution, profile)
             values = {**asked, **values}  # the command line's values win
@@ -66,27 +74,46 @@ def assign_from_master(master: str, solution: Solution, profile: Profile, *,
             namespace = normalise_namespace(robot)
         sources = {s.namespace: s for s in discover(observation, profile)}
         source = sources.get(namespace)
-        found = {} if source is None else client.get_params(
-            [source.description_key, *([source.semantic_key] if source.semantic_key else [])])
+        found = (
+            {}
+            if source is None
+            else client.get_params(
+                [source.description_key, *([source.semantic_key] if source.semantic_key else [])]
+            )
+        )
         if source is None or found[source.description_key] is MISSING:
             there = ", ".join(sources) or "none"
-            raise InputError.at("<arguments>", f"no robot {namespace} on {master} (no "
-                                               f"{namespace.rstrip('/')}/robot_description)"
-                                               f"{did_you_mean(namespace, sources)}; robots "
-                                               f"there: {there}")
+            raise InputError.at(
+                "<arguments>",
+                f"no robot {namespace} on {master} (no "
+                f"{namespace.rstrip('/')}/robot_description)"
+                f"{did_you_mean(namespace, sources)}; robots "
+                f"there: {there}",
+            )
     finally:
         client.close()
-    live = identify_robot(source, found[source.description_key],
-                          found.get(source.semantic_key or "", MISSING),
-                          cache=IdentificationCache(), solution=solution, profile=profile)
+    live = identify_robot(
+        source,
+        found[source.description_key],
+        found.get(source.semantic_key or "", MISSING),
+        cache=IdentificationCache(),
+        solution=solution,
+        profile=profile,
+    )
     if live.identification is None:
         raise InputError.at(master, f"robot {namespace} cannot be identified:\n{live.error}")
     assignment, chosen = choose(live, values, solution)
     return LiveAssignment(namespace, assignment, (*notes, *chosen))
 
 
-def assign_from_graph(source: DdsGraph, solution: Solution, profile: Profile, *, robot: str,
-                      given: Mapping[str, str] | None = None) -> LiveAssignment:
+def assign_from_graph(
+    source: DdsGraph,
+    solution: Solution,
+    profile: Profile,
+    *,
+    robot: str,
+    given: Mapping[str, str] | None = None,
+) -> LiveAssignment:
     """:func:`assign_from_master` on a ROS 2 graph: the robot ``robot`` as the watcher sees it
     once discovery is quiet (``--robot`` is required: the active robot is a topic there)."""
     from solver.live.watcher import Watcher
@@ -99,12 +126,14 @@ def assign_from_graph(source: DdsGraph, solution: Solution, profile: Profile, *,
     live = robots.get(namespace)
     if live is None:
         there = ", ".join(robots) or "none"
-        raise InputError.at("<arguments>", f"no robot {namespace} on {source.name} (no "
-                                           f"{namespace.rstrip('/')}/robot_description)"
-                                           f"{did_you_mean(namespace, robots)}; robots there: "
-                                           f"{there}")
+        raise InputError.at(
+            "<arguments>",
+            f"no robot {namespace} on {source.name} (no "
+            f"{namespace.rstrip('/')}/robot_description)"
+            f"{did_you_mean(namespace, robots)}; robots there: "
+            f"{there}",
+        )
     if live.identification is None:
-        raise InputError.at(source.name, f"robot {namespace} cannot be identified:\n"
-                                         f"{live.error}")
+        raise InputError.at(source.name, f"robot {namespace} cannot be identified:\n{live.error}")
     assignment, chosen = choose(live, dict(given or {}), solution)
     return LiveAssignment(namespace, assignment, tuple(chosen))

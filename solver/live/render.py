@@ -62,17 +62,27 @@ def _robot_lines(label: str, robot: LiveRobot, changed: tuple[str, ...] = ()) ->
     head = f"{label:<{_WIDTH}}{robot.namespace}"
     found = robot.identification
     if found is None:
-        return [f"{head}  cannot be identified:",
-                *(" " * (_WIDTH + 2) + line for line in (robot.error or "").splitlines())]
+        return [
+            f"{head}  cannot be identified:",
+            *(" " * (_WIDTH + 2) + line for line in (robot.error or "").splitlines()),
+        ]
     kinematic = found.kinematic_type or "no kinematic type in the rule set"
     controls = ", ".join(c.motion_control for c in found.motion_controls) or "none found"
-    head += (f"  {found.robot}: {kinematic} (structure {found.structure}, confidence "
-             f"{found.confidence:.2f}); {found.sensor_count} sensor(s); motion controls "
-             f"{controls}")
+    head += (
+        f"  {found.robot}: {kinematic} (structure {found.structure}, confidence "
+        f"{found.confidence:.2f}); {found.sensor_count} sensor(s); motion controls "
+        f"{controls}"
+    )
     if changed:
         head += f"  [changed: {', '.join(changed)}]"
-    return [head, *(" " * (_WIDTH + 2) + f"UI configuration {_configuration(c.assignment)}  "
-                    f"<- {_values(c.values)}" for c in robot.combinations)]
+    return [
+        head,
+        *(
+            " " * (_WIDTH + 2) + f"UI configuration {_configuration(c.assignment)}  "
+            f"<- {_values(c.values)}"
+            for c in robot.combinations
+        ),
+    ]
 
 
 def text_lines(event: Event) -> list[str]:
@@ -86,14 +96,21 @@ def text_lines(event: Event) -> list[str]:
     if isinstance(event, SelectionChanged):
         request = event.request
         if event.selection is None or event.selection.assignment is None:
-            return [f"{'selection':<{_WIDTH}}no active robot "
-                    "(set /teleop_ui/active_robot)", *(f"  note: {n}" for n in request.notes)]
+            return [
+                f"{'selection':<{_WIDTH}}no active robot (set /teleop_ui/active_robot)",
+                *(f"  note: {n}" for n in request.notes),
+            ]
         assignment = event.selection.assignment
-        asked = " ".join(str(v) for v in (request.robot, request.motion_control,
-                                          request.sensor_type) if v is not None)
-        return [f"{'selection':<{_WIDTH}}{asked} -> UI configuration "
-                f"{_configuration(assignment)}  <- {_values(assignment.given)}",
-                *(" " * (_WIDTH + 2) + f"note: {note}" for note in event.selection.notes)]
+        asked = " ".join(
+            str(v)
+            for v in (request.robot, request.motion_control, request.sensor_type)
+            if v is not None
+        )
+        return [
+            f"{'selection':<{_WIDTH}}{asked} -> UI configuration "
+            f"{_configuration(assignment)}  <- {_values(assignment.given)}",
+            *(" " * (_WIDTH + 2) + f"note: {note}" for note in event.selection.notes),
+        ]
     if isinstance(event, MasterLost):
         return [f"{'master lost':<{_WIDTH}}{event.master}: {event.error}; retrying"]
     if isinstance(event, MasterBack):
@@ -107,8 +124,11 @@ def text_lines(event: Event) -> list[str]:
 def render_live_assignment(live: LiveAssignment, solution: Solution, fmt: str = "text") -> str:
     """``teleop-ui assign``'s output for a robot on a master: its JSON plus ``robot``, ``notes``."""
     if fmt == "json":
-        data = {"robot": live.robot, **assignment_data(solution, live.assignment),
-                "notes": list(live.notes)}
+        data = {
+            "robot": live.robot,
+            **assignment_data(solution, live.assignment),
+            "notes": list(live.notes),
+        }
         return dumps(data)
     text = f"robot {live.robot}\n" + render_assignment(solution, live.assignment, "text")
     return text + "".join(f"  note: {note}\n" for note in live.notes)

@@ -70,31 +70,46 @@ def _relocated(error: SolverError, description: str, semantic: str | None) -> st
             file = description
         elif file == _SRDF_FILE and semantic is not None:
             file = semantic
-        lines.append(str(dataclasses.replace(
-            fault, location=dataclasses.replace(fault.location, file=file))))
+        lines.append(
+            str(dataclasses.replace(fault, location=dataclasses.replace(fault.location, file=file)))
+        )
     return "\n".join(lines)
 
 
-def identify_robot(source: RobotSource, description: Any, semantic: Any = MISSING, *,
-                   cache: IdentificationCache, solution: Solution, profile: Profile
-                   ) -> LiveRobot:
+def identify_robot(
+    source: RobotSource,
+    description: Any,
+    semantic: Any = MISSING,
+    *,
+    cache: IdentificationCache,
+    solution: Solution,
+    profile: Profile,
+) -> LiveRobot:
     """The robot ``source`` describes, from its parameter values (``robot_description``,
     ``robot_description_semantic`` or :data:`MISSING`) and topics; never raises for input."""
     namespace = source.namespace
     try:
         text = _text(description, source.description_key)
-        srdf = None if source.semantic_key is None or semantic is MISSING \
+        srdf = (
+            None
+            if source.semantic_key is None or semantic is MISSING
             else _text(semantic, source.semantic_key, "SRDF")
+        )
         identification = cache.identify_urdf(
-            text, srdf_text=srdf,
+            text,
+            srdf_text=srdf,
             topics=[TopicSource(_SOURCE, source.topics)] if source.topics else (),
-            rules=solution.rules, profile=profile, file=_FILE)
+            rules=solution.rules,
+            profile=profile,
+            file=_FILE,
+        )
         found = combinations(identification, solution, profile)
     except _NotText as error:
         return LiveRobot(namespace, None, (), str(error))
     except SolverError as error:
-        return LiveRobot(namespace, None, (),
-                         _relocated(error, source.description_key, source.semantic_key))
+        return LiveRobot(
+            namespace, None, (), _relocated(error, source.description_key, source.semantic_key)
+        )
     except Exception as error:  # the per-robot boundary
         # A robot_description is whatever a robot on the network publishes: one that gets
         # past the readers' own checks (an overflow, a recursion, a reader bug) must still
@@ -119,15 +134,25 @@ def robot_data(robot: LiveRobot) -> dict[str, Any]:
         "kinematic_type": None if found is None else found.kinematic_type,
         "confidence": None if found is None else found.confidence,
         "sensor_count": None if found is None else found.sensor_count,
-        "sensors": [] if found is None else [
+        "sensors": []
+        if found is None
+        else [
             {"kind": s.kind, "sensor_type": s.sensor_type, "count": s.count, "source": s.source}
-            for s in found.sensors],
-        "motion_controls": [] if found is None else [
-            {"motion_control": c.motion_control, "source": c.source}
-            for c in found.motion_controls],
+            for s in found.sensors
+        ],
+        "motion_controls": []
+        if found is None
+        else [
+            {"motion_control": c.motion_control, "source": c.source} for c in found.motion_controls
+        ],
         "combinations": [
-            {"combination": dict(c.values), "configuration": c.assignment.number,
-             "default": c.assignment.is_default, "reasons": list(c.assignment.reasons)}
-            for c in robot.combinations],
+            {
+                "combination": dict(c.values),
+                "configuration": c.assignment.number,
+                "default": c.assignment.is_default,
+                "reasons": list(c.assignment.reasons),
+            }
+            for c in robot.combinations
+        ],
         "error": robot.error,
     }

@@ -35,17 +35,30 @@ from solver.live.robot import LiveRobot
 from solver.render import assignment_data
 from solver.solution import Solution
 
-__all__ = ["NAMESPACE", "REQUEST_PARAMS", "RESULT_PARAM", "WRITER_KEY", "ActiveSelection",
-           "Request", "choose", "read_request", "requested_values", "select", "selection_data",
-           "ui_configuration_value"]
+__all__ = [
+    "NAMESPACE",
+    "REQUEST_PARAMS",
+    "RESULT_PARAM",
+    "WRITER_KEY",
+    "ActiveSelection",
+    "Request",
+    "choose",
+    "read_request",
+    "requested_values",
+    "select",
+    "selection_data",
+    "ui_configuration_value",
+]
 
 NAMESPACE = "/teleop_ui"
 RESULT_PARAM = f"{NAMESPACE}/ui_configuration"
 # The key of RESULT_PARAM naming the watcher that wrote it (its node name).
 WRITER_KEY = "watcher"
 # parameter (under /teleop_ui) -> the profile role whose characteristic it sets
-REQUEST_PARAMS = (("active_motion_control", "motion_control"),
-                  ("active_sensor_type", "sensor_type"))
+REQUEST_PARAMS = (
+    ("active_motion_control", "motion_control"),
+    ("active_sensor_type", "sensor_type"),
+)
 
 
 @dataclass(frozen=True, slots=True)
@@ -79,11 +92,16 @@ def read_request(params: Mapping[str, Any]) -> Request:
             values[name] = value.strip()
         else:
             values[name] = None
-            notes.append(f"{NAMESPACE}/{name} ignored: expected text, got "
-                         f"{type(value).__name__} {value!r}")
+            notes.append(
+                f"{NAMESPACE}/{name} ignored: expected text, got {type(value).__name__} {value!r}"
+            )
     robot = values["active_robot"]
-    return Request(None if robot is None else normalise_namespace(robot),
-                   values["active_motion_control"], values["active_sensor_type"], tuple(notes))
+    return Request(
+        None if robot is None else normalise_namespace(robot),
+        values["active_motion_control"],
+        values["active_sensor_type"],
+        tuple(notes),
+    )
 
 
 def _order(solution: Solution, values: Mapping[str, str]) -> tuple[int, ...]:
@@ -97,8 +115,9 @@ def _order(solution: Solution, values: Mapping[str, str]) -> tuple[int, ...]:
     return tuple(key)
 
 
-def choose(robot: LiveRobot, given: Mapping[str, str], solution: Solution
-           ) -> tuple[Assignment, tuple[str, ...]]:
+def choose(
+    robot: LiveRobot, given: Mapping[str, str], solution: Solution
+) -> tuple[Assignment, tuple[str, ...]]:
     """One combination of ``robot`` with the ``given`` values (see the module docstring).
 
     :class:`~solver.errors.InputError` for a characteristic name the rules do not have.
@@ -115,8 +134,10 @@ def choose(robot: LiveRobot, given: Mapping[str, str], solution: Solution
             continue
         offered = list(dict.fromkeys(c[name] for c in candidates if name in c))
         if offered:
-            notes.append(f"{robot.namespace} does not offer {name} {value!r} (it has "
-                         f"{', '.join(offered)}); using it as asked")
+            notes.append(
+                f"{robot.namespace} does not offer {name} {value!r} (it has "
+                f"{', '.join(offered)}); using it as asked"
+            )
         candidates = [{**c, name: value} for c in candidates] or [{name: value}]
     unique = {tuple((n, c[n]) for n in rules.names if n in c): c for c in candidates}
     ordered = sorted(unique.items(), key=lambda item: _order(solution, item[1]))
@@ -126,8 +147,10 @@ def choose(robot: LiveRobot, given: Mapping[str, str], solution: Solution
             options = list(dict.fromkeys(c.get(name) for _, c in ordered))
             if len(options) > 1:
                 shown = ", ".join(str(option) for option in options)
-                notes.append(f"{robot.namespace} has several {name} values ({shown}): using "
-                             f"{chosen.get(name)}; give {name} to choose")
+                notes.append(
+                    f"{robot.namespace} has several {name} values ({shown}): using "
+                    f"{chosen.get(name)}; give {name} to choose"
+                )
                 break
     assignment = known.get(chosen_key)
     if assignment is None:
@@ -135,8 +158,9 @@ def choose(robot: LiveRobot, given: Mapping[str, str], solution: Solution
     return assignment, tuple(notes)
 
 
-def requested_values(request: Request, solution: Solution, profile: Profile
-                     ) -> tuple[dict[str, str], tuple[str, ...]]:
+def requested_values(
+    request: Request, solution: Solution, profile: Profile
+) -> tuple[dict[str, str], tuple[str, ...]]:
     """The characteristic values the request sets (by the profile's roles), and notes on the
     parameters the rule set has no characteristic for."""
     given: dict[str, str] = {}
@@ -153,8 +177,9 @@ def requested_values(request: Request, solution: Solution, profile: Profile
     return given, tuple(notes)
 
 
-def select(request: Request, robots: Mapping[str, LiveRobot], solution: Solution,
-           profile: Profile) -> ActiveSelection | None:
+def select(
+    request: Request, robots: Mapping[str, LiveRobot], solution: Solution, profile: Profile
+) -> ActiveSelection | None:
     """The configuration for ``request``; ``None`` when no robot is active."""
     if request.robot is None:
         return None
@@ -165,26 +190,35 @@ def select(request: Request, robots: Mapping[str, LiveRobot], solution: Solution
         if robot is not None:
             reason = f"robot {request.robot} could not be identified: {robot.error}"
         elif robots:
-            reason = f"no robot {request.robot} on the master (robots: " \
-                     f"{', '.join(sorted(robots))})"
+            reason = f"no robot {request.robot} on the master (robots: {', '.join(sorted(robots))})"
         else:
             reason = f"no robot {request.robot} on the master (it has no robots)"
         default = assign(solution, given)
-        return ActiveSelection(request, Assignment(
-            default.given, solution.default_configuration, None, (reason, *default.reasons),
-            default.relevant), tuple(notes))
+        return ActiveSelection(
+            request,
+            Assignment(
+                default.given,
+                solution.default_configuration,
+                None,
+                (reason, *default.reasons),
+                default.relevant,
+            ),
+            tuple(notes),
+        )
     assignment, chosen_notes = choose(robot, given, solution)
     return ActiveSelection(request, assignment, tuple(notes) + chosen_notes)
 
 
-def selection_data(selection: ActiveSelection | None, request: Request,
-                   solution: Solution) -> dict[str, Any]:
+def selection_data(
+    selection: ActiveSelection | None, request: Request, solution: Solution
+) -> dict[str, Any]:
     """The fields of a ``selection_changed`` event (see the README)."""
     return {
         "robot": request.robot,
         "motion_control": request.motion_control,
         "sensor_type": request.sensor_type,
-        "assignment": None if selection is None or selection.assignment is None
+        "assignment": None
+        if selection is None or selection.assignment is None
         else assignment_data(solution, selection.assignment),
         "notes": list(request.notes if selection is None else selection.notes),
     }
@@ -199,14 +233,18 @@ def _without_none(value: Any) -> Any:
     return value
 
 
-def ui_configuration_value(selection: ActiveSelection | None, solution: Solution,
-                           writer: str) -> dict[str, Any] | None:
+def ui_configuration_value(
+    selection: ActiveSelection | None, solution: Solution, writer: str
+) -> dict[str, Any] | None:
     """What the watcher ``writer`` (its node name) writes to ``/teleop_ui/ui_configuration``
     (``None``: delete it)."""
     if selection is None or selection.assignment is None:
         return None
-    data = {"robot": selection.request.robot,
-            **assignment_data(solution, selection.assignment),
-            "notes": list(selection.notes), WRITER_KEY: writer}
+    data = {
+        "robot": selection.request.robot,
+        **assignment_data(solution, selection.assignment),
+        "notes": list(selection.notes),
+        WRITER_KEY: writer,
+    }
     value: dict[str, Any] = _without_none(data)
     return value

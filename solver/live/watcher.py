@@ -126,10 +126,19 @@ class Watcher:
     :meth:`snapshot`, which reads everything once.
     """
 
-    def __init__(self, master: str, solution: Solution, profile: Profile, *,
-                 interval: float = 0.2, timeout: float = 2.0, push: bool = True,
-                 max_backoff: float = 2.0, cache: IdentificationCache | None = None,
-                 source: GraphSource | None = None) -> None:
+    def __init__(
+        self,
+        master: str,
+        solution: Solution,
+        profile: Profile,
+        *,
+        interval: float = 0.2,
+        timeout: float = 2.0,
+        push: bool = True,
+        max_backoff: float = 2.0,
+        cache: IdentificationCache | None = None,
+        source: GraphSource | None = None,
+    ) -> None:
         self.master = source.name if source is not None else master
         self.solution = solution
         self.profile = profile
@@ -156,8 +165,9 @@ class Watcher:
                 caller_id = _node_name(int(self._node.uri.rsplit(":", 1)[1].strip("/")))
                 self._node.start()
             self.client = MasterClient(master, caller_id=caller_id, timeout=timeout)
-            self.descriptions = Descriptions(self.client,
-                                             None if self._node is None else self._node.uri)
+            self.descriptions = Descriptions(
+                self.client, None if self._node is None else self._node.uri
+            )
         self._robots: dict[str, _Tracked] = {}
         self._no_selection = selection_data(None, Request(), solution)
         self._selection = self._no_selection
@@ -179,8 +189,12 @@ class Watcher:
     def __enter__(self) -> Watcher:
         return self
 
-    def __exit__(self, kind: type[BaseException] | None, error: BaseException | None,
-                 traceback: TracebackType | None) -> None:
+    def __exit__(
+        self,
+        kind: type[BaseException] | None,
+        error: BaseException | None,
+        traceback: TracebackType | None,
+    ) -> None:
         self.close()
 
     def stop(self, reason: str = "") -> None:
@@ -210,8 +224,7 @@ class Watcher:
             self._node.close()
         self.client.close()
 
-    def wait_for_master(self, on_waiting: Callable[[MasterError], None] | None = None
-                        ) -> bool:
+    def wait_for_master(self, on_waiting: Callable[[MasterError], None] | None = None) -> bool:
         """Retry until the master answers (``True``) or :meth:`stop` (``False``).
 
         Only a master that does not answer is waited for: an answer that is not a ROS
@@ -299,9 +312,11 @@ class Watcher:
     def _pushed(self, key: str, value: Any) -> None:
         """A parameter update from the master (on the node's server thread)."""
         name = "/" + key.strip("/")
-        if name == NAMESPACE or name.startswith(NAMESPACE + "/") \
-                or (isinstance(self.descriptions, Descriptions)
-                    and self.descriptions.push(name, value)):
+        if (
+            name == NAMESPACE
+            or name.startswith(NAMESPACE + "/")
+            or (isinstance(self.descriptions, Descriptions) and self.descriptions.push(name, value))
+        ):
             self._wake.set()
 
     # -- reading the master ----------------------------------------------------------------
@@ -324,23 +339,30 @@ class Watcher:
     def _poll(self) -> list[Event]:
         observation = self._observe()
         if observation.pid != self._pid:
-            raise _Restarted.at(self.master, f"the master restarted (process {self._pid}, "
-                                             f"now {observation.pid})", path="getPid")
+            raise _Restarted.at(
+                self.master,
+                f"the master restarted (process {self._pid}, now {observation.pid})",
+                path="getPid",
+            )
         return self._update(observation)
 
     def _update(self, observation: Observation) -> list[Event]:
         sources = discover(observation, self.profile)
         self.descriptions.sync(
             [s.description_key for s in sources]
-            + [s.semantic_key for s in sources if s.semantic_key is not None])
+            + [s.semantic_key for s in sources if s.semantic_key is not None]
+        )
         robots: dict[str, _Tracked] = {}
         changes: list[Event] = []
         for source in sources:
             description = self.descriptions.get(source.description_key)
             if description is MISSING:
                 continue  # deleted since the names were read: the next poll removes it
-            semantic = MISSING if source.semantic_key is None \
+            semantic = (
+                MISSING
+                if source.semantic_key is None
                 else self.descriptions.get(source.semantic_key)
+            )
             inputs = (description, semantic, source.topics)
             old = self._robots.get(source.namespace)
             if old is not None and old.inputs == inputs:
@@ -351,41 +373,56 @@ class Watcher:
             if old is None:
                 changes.append(RobotAdded(0, robot))
             elif data != old.data:
-                changes.append(RobotChanged(0, robot, tuple(k for k in data
-                                                            if data[k] != old.data.get(k))))
-        removed: list[Event] = [RobotRemoved(0, namespace)
-                                for namespace in sorted(set(self._robots) - set(robots))]
+                changes.append(
+                    RobotChanged(0, robot, tuple(k for k in data if data[k] != old.data.get(k)))
+                )
+        removed: list[Event] = [
+            RobotRemoved(0, namespace) for namespace in sorted(set(self._robots) - set(robots))
+        ]
         self._robots = robots
         return [*removed, *changes, *self._select(dict(observation.params))]
 
-    def _identify(self, source: RobotSource, description: Any, semantic: Any
-                  ) -> tuple[LiveRobot, dict[str, Any]]:
+    def _identify(
+        self, source: RobotSource, description: Any, semantic: Any
+    ) -> tuple[LiveRobot, dict[str, Any]]:
         """One robot and its event fields; whatever goes wrong stays that robot's error."""
         try:
-            robot = identify_robot(source, description, semantic, cache=self.cache,
-                                   solution=self.solution, profile=self.profile)
+            robot = identify_robot(
+                source,
+                description,
+                semantic,
+                cache=self.cache,
+                solution=self.solution,
+                profile=self.profile,
+            )
             return robot, robot_data(robot)
         except Exception as error:  # the per-robot boundary
             # identify_robot already turns input errors into the robot's; this is the last
             # line: a robot on the network must never end the watcher serving the others.
-            robot = LiveRobot(source.namespace, None, (),
-                              unexpected_error(source.description_key, error))
+            robot = LiveRobot(
+                source.namespace, None, (), unexpected_error(source.description_key, error)
+            )
             return robot, robot_data(robot)
 
     def _select(self, params: dict[str, Any]) -> list[Event]:
         request = read_request(params)
-        selection = select(request, {ns: t.robot for ns, t in self._robots.items()},
-                           self.solution, self.profile)
+        selection = select(
+            request, {ns: t.robot for ns, t in self._robots.items()}, self.solution, self.profile
+        )
         wanted = ui_configuration_value(selection, self.solution, self.caller_id)
         present = params.get(_RESULT_KEY, MISSING)
         rival = self._rival(present, wanted)
         if rival is not None and selection is not None:
             shown = present.get("configuration", "?")
-            selection = dataclasses.replace(selection, notes=(
-                *selection.notes,
-                f"{RESULT_PARAM} not written: the watcher {rival} answers there with "
-                f"configuration {shown}; run one watcher per master, or give every watcher "
-                f"the same team and rules"))
+            selection = dataclasses.replace(
+                selection,
+                notes=(
+                    *selection.notes,
+                    f"{RESULT_PARAM} not written: the watcher {rival} answers there with "
+                    f"configuration {shown}; run one watcher per master, or give every watcher "
+                    f"the same team and rules",
+                ),
+            )
         elif wanted is None and present is not MISSING:
             self.client.delete_param(RESULT_PARAM)
         elif wanted is not None and _answer(present) != _answer(wanted):
@@ -402,8 +439,11 @@ class Watcher:
         if wanted is None or not isinstance(present, dict):
             return None
         writer = present.get(WRITER_KEY)
-        if not isinstance(writer, str) or writer == self.caller_id \
-                or _answer(present) == _answer(wanted):
+        if (
+            not isinstance(writer, str)
+            or writer == self.caller_id
+            or _answer(present) == _answer(wanted)
+        ):
             return None
         api = self.client.lookup_node(writer)
         if api is None:

@@ -39,18 +39,22 @@ def where(found: Sequence[Finding]) -> list[tuple[str, int, int]]:
     return [(Path(f.location.file).name, f.line, f.column) for f in found]
 
 
-def valid_robots(rules: RuleSet, domains: Sequence[Sequence[Value]],
-                 constraints: Sequence[RuleConstraint] | None = None
-                 ) -> list[tuple[Value, ...]]:
+def valid_robots(
+    rules: RuleSet,
+    domains: Sequence[Sequence[Value]],
+    constraints: Sequence[RuleConstraint] | None = None,
+) -> list[tuple[Value, ...]]:
     """Brute force: every combination over ``domains`` that satisfies ``constraints``."""
     chosen = rules.constraints if constraints is None else constraints
-    return [robot for robot in itertools.product(*domains)
-            if all(rule.holds(dict(zip(rules.names, robot, strict=True))) for rule in chosen)]
+    return [
+        robot
+        for robot in itertools.product(*domains)
+        if all(rule.holds(dict(zip(rules.names, robot, strict=True))) for rule in chosen)
+    ]
 
 
 def _selection(draw: st.DrawFn, domain: list[Any]) -> list[Any]:
-    return draw(st.lists(st.sampled_from(domain), min_size=1, max_size=len(domain),
-                         unique=True))
+    return draw(st.lists(st.sampled_from(domain), min_size=1, max_size=len(domain), unique=True))
 
 
 @st.composite

@@ -54,7 +54,8 @@ def test_live_values_per_kinematic_type_match_brute_force(rules: RuleSet) -> Non
 @settings(max_examples=100, deadline=None)
 @given(restricted())
 def test_a_witness_is_a_valid_robot_and_exists_exactly_when_one_does(
-        case: tuple[RuleSet, Domains]) -> None:
+    case: tuple[RuleSet, Domains],
+) -> None:
     rules, domains = case
     robot = Analysis(rules).witness(domains)
     expected = valid_robots(rules, domains)
@@ -67,7 +68,8 @@ def test_a_witness_is_a_valid_robot_and_exists_exactly_when_one_does(
 @settings(max_examples=120, deadline=None)
 @given(restricted())
 def test_minimal_conflict_is_void_and_each_of_its_constraints_is_needed(
-        case: tuple[RuleSet, Domains]) -> None:
+    case: tuple[RuleSet, Domains],
+) -> None:
     rules, domains = case
     if valid_robots(rules, domains):
         return
@@ -76,7 +78,7 @@ def test_minimal_conflict_is_void_and_each_of_its_constraints_is_needed(
     assert conflict
     assert valid_robots(rules, domains, chosen) == []
     for left_out in range(len(chosen)):
-        rest = chosen[:left_out] + chosen[left_out + 1:]
+        rest = chosen[:left_out] + chosen[left_out + 1 :]
         assert valid_robots(rules, domains, rest) != []
 
 
@@ -89,10 +91,9 @@ def test_redundancy_is_entailment(rules: RuleSet) -> None:
     domains = analysis.full
     every = list(rules.constraints)
     for index, rule in enumerate(every):
-        without = every[:index] + every[index + 1:]
+        without = every[:index] + every[index + 1 :]
         unchanged = valid_robots(rules, domains, without) == valid_robots(rules, domains)
-        excludes_nothing = valid_robots(rules, domains, [rule]) == valid_robots(rules, domains,
-                                                                                 [])
+        excludes_nothing = valid_robots(rules, domains, [rule]) == valid_robots(rules, domains, [])
         entailing = analysis.entailing(index)
         assert (entailing is not None) == unchanged
         assert (entailing == ()) == excludes_nothing
@@ -100,19 +101,27 @@ def test_redundancy_is_entailment(rules: RuleSet) -> None:
             continue
         chosen = [every[i] for i in entailing]
         assert index not in entailing
-        assert all(rule.holds(dict(zip(rules.names, robot, strict=True)))
-                   for robot in valid_robots(rules, domains, chosen))
+        assert all(
+            rule.holds(dict(zip(rules.names, robot, strict=True)))
+            for robot in valid_robots(rules, domains, chosen)
+        )
         for left_out in range(len(chosen)):
-            rest = chosen[:left_out] + chosen[left_out + 1:]
-            assert not all(rule.holds(dict(zip(rules.names, robot, strict=True)))
-                           for robot in valid_robots(rules, domains, rest))
+            rest = chosen[:left_out] + chosen[left_out + 1 :]
+            assert not all(
+                rule.holds(dict(zip(rules.names, robot, strict=True)))
+                for robot in valid_robots(rules, domains, rest)
+            )
 
 
 def test_two_identical_constraints_are_each_redundant_given_the_other() -> None:
     rule = {"name": "no lidar drones", "forbid": {"kind": "UAV", "sensor": "Lidar"}}
-    data = {"characteristics": {"kind": {"values": ["UAV", "UGV"]},
-                                "sensor": {"values": ["Camera", "Lidar"]}},
-            "constraints": [rule, dict(rule, name="no lidar drones, again")]}
+    data = {
+        "characteristics": {
+            "kind": {"values": ["UAV", "UGV"]},
+            "sensor": {"values": ["Camera", "Lidar"]},
+        },
+        "constraints": [rule, dict(rule, name="no lidar drones, again")],
+    }
     rules = parse_rules(parse_document(yaml.safe_dump(data), "twice.yaml"))
     analysis = Analysis(rules)
     assert analysis.entailing(0) == (1,)

@@ -16,8 +16,7 @@ def test_bound_of_the_paper_rules_is_900_as_declared() -> None:
 
 def test_a_declared_bound_that_differs_is_an_error() -> None:
     [mismatch] = findings("bound-mismatch.yaml", check="bound-mismatch")
-    assert mismatch.message == ("bound: 50 is not what the components give: "
-                                "T = 3 x 3 x 3 x 2 = 54")
+    assert mismatch.message == ("bound: 50 is not what the components give: T = 3 x 3 x 3 x 2 = 54")
     assert mismatch.level == "error"
 
 

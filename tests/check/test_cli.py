@@ -20,19 +20,20 @@ def test_check_paper_rules_is_clean_and_exits_0() -> None:
         "rules/paper.yaml:11:1: [info] T = 6 x 6 x 5 x 5 = 900 UI configurations at most "
         "(components of kinematic_type x motion_control x sensor_type x sensor_count), as "
         "declared (bound)\n"
-        "1 file checked: 0 errors, 0 warnings, 1 info\n")
+        "1 file checked: 0 errors, 0 warnings, 1 info\n"
+    )
     assert result.stderr == ""
 
 
 def test_check_rules_and_teams_together_exits_0_for_the_shipped_files() -> None:
     # The shipped teams written for the article's rules (search-and-rescue is written for
     # rules/extended.yaml and is checked against it below).
-    teams = sorted(str(p.relative_to(ROOT)) for p in TEAMS.glob("*.yaml")
-                   if p.stem != "search-and-rescue")
+    teams = sorted(
+        str(p.relative_to(ROOT)) for p in TEAMS.glob("*.yaml") if p.stem != "search-and-rescue"
+    )
     result = run_cli("check", "rules/paper.yaml", *teams)
     assert result.returncode == 0
-    assert result.stdout.endswith(f"{len(teams) + 1} files checked: 0 errors, 0 warnings, "
-                                  "1 info\n")
+    assert result.stdout.endswith(f"{len(teams) + 1} files checked: 0 errors, 0 warnings, 1 info\n")
 
 
 def test_the_extended_example_rules_and_their_team_check_without_error() -> None:
@@ -45,8 +46,12 @@ def test_check_literal_equation_2_exits_1_with_its_four_gaps() -> None:
     result = run_cli("check", f"{FIXTURES}/literal-equation-2.yaml")
     assert result.returncode == 1
     gaps = [line for line in result.stdout.splitlines() if line.endswith("(coverage-gap)")]
-    assert [line.split(" is in no component")[0].rsplit(" ", 1)[1] for line in gaps] == \
-        ["1", "6", "11", "16"]
+    assert [line.split(" is in no component")[0].rsplit(" ", 1)[1] for line in gaps] == [
+        "1",
+        "6",
+        "11",
+        "16",
+    ]
 
 
 def test_warnings_exit_0_unless_strict() -> None:
@@ -55,7 +60,8 @@ def test_warnings_exit_0_unless_strict() -> None:
 
 
 def test_unusable_input_exits_2_with_a_located_error_and_no_output(
-        write_file: Callable[[str, str], Path]) -> None:
+    write_file: Callable[[str, str], Path],
+) -> None:
     bad = write_file("bad.yaml", "characteristics:\n  kind: [a, b\n")
     result = run_cli("check", f"{FIXTURES}/base.yaml", bad, "missing.yaml")
     assert result.returncode == 2
@@ -82,8 +88,9 @@ def test_disable_leaves_checks_out() -> None:
 def test_list_checks_names_every_check_with_its_level() -> None:
     result = run_cli("check", "--list-checks")
     assert result.returncode == 0
-    listed = [line.split(" [")[0] for line in result.stdout.splitlines()
-              if not line.startswith(" ")]
+    listed = [
+        line.split(" [")[0] for line in result.stdout.splitlines() if not line.startswith(" ")
+    ]
     assert listed == list(check_ids())
 
 
@@ -92,8 +99,9 @@ def test_json_and_sarif_outputs_are_json_with_relative_paths_as_given() -> None:
     assert data["summary"] == {"error": 0, "warning": 0, "info": 1}
     sarif = json.loads(run_cli("check", "-f", "sarif", "rules/paper.yaml").stdout)
     [result] = sarif["runs"][0]["results"]
-    assert result["locations"][0]["physicalLocation"]["artifactLocation"]["uri"] == \
-        "rules/paper.yaml"
+    assert (
+        result["locations"][0]["physicalLocation"]["artifactLocation"]["uri"] == "rules/paper.yaml"
+    )
 
 
 def test_output_is_byte_identical_on_a_second_run() -> None:

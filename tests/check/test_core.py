@@ -9,8 +9,10 @@ from tests.check.helpers import findings, fixture
 
 def test_core_value_is_reported_with_the_constraint_that_forces_it() -> None:
     [core] = findings("constrained.yaml", check="core-value")
-    assert core.message == ("every valid UAV robot has motion_control 'Flight': forced by "
-                            f"'UAVs fly' ({fixture('constrained.yaml')}:33:5)")
+    assert core.message == (
+        "every valid UAV robot has motion_control 'Flight': forced by "
+        f"'UAVs fly' ({fixture('constrained.yaml')}:33:5)"
+    )
 
 
 def test_a_core_value_is_what_every_valid_robot_of_the_type_has() -> None:
@@ -21,9 +23,11 @@ def test_a_core_value_is_what_every_valid_robot_of_the_type_has() -> None:
 
 def test_core_component_is_reported_when_several_of_its_values_remain() -> None:
     [core] = findings("core-component.yaml", check="core-component")
-    assert core.message.startswith("every valid UGV robot needs sensor_type component 'visual' "
-                                   "(its values 'Camera', 'Lidar' remain): forced by 'no "
-                                   "microphone on ground robots'")
+    assert core.message.startswith(
+        "every valid UGV robot needs sensor_type component 'visual' "
+        "(its values 'Camera', 'Lidar' remain): forced by 'no "
+        "microphone on ground robots'"
+    )
 
 
 def test_rules_without_constraints_force_nothing() -> None:

@@ -20,11 +20,13 @@ def test_dead_value_names_every_constraint_needed_to_exclude_it() -> None:
     microphone, counts = findings("dead-value.yaml", check="dead-value")
     assert microphone.message.startswith(
         "sensor_type 'Mic' can appear in no valid robot: excluded by 'microphones only on "
-        "ground robots' (")
+        "ground robots' ("
+    )
     assert "'no microphone on ground robots'" in microphone.message
     assert microphone.message.endswith(" together")
-    assert counts.message.startswith("sensor_count 9..10 can appear in no valid robot: "
-                                     "excluded by 'at most 8 sensors' (")
+    assert counts.message.startswith(
+        "sensor_count 9..10 can appear in no valid robot: excluded by 'at most 8 sensors' ("
+    )
 
 
 def test_dead_values_are_absent_from_every_valid_robot() -> None:
@@ -36,8 +38,10 @@ def test_dead_values_are_absent_from_every_valid_robot() -> None:
 
 def test_a_component_whose_values_are_all_dead_is_never_needed() -> None:
     [dead] = findings("dead-component.yaml", check="dead-component")
-    assert dead.message == ("sensor_type component 'audio' is never needed: no valid robot "
-                            "has any of its values ('Mic')")
+    assert dead.message == (
+        "sensor_type component 'audio' is never needed: no valid robot "
+        "has any of its values ('Mic')"
+    )
 
 
 def test_values_one_kinematic_type_loses_are_information_with_their_reason() -> None:
@@ -48,7 +52,8 @@ def test_values_one_kinematic_type_loses_are_information_with_their_reason() -> 
         "no valid UGV robot has motion_control 'Flight': excluded by 'Flight only for UAVs' "
         f"({fixture('constrained.yaml')}:30:5)",
         "no valid Arm robot has motion_control 'Flight': excluded by 'Flight only for UAVs' "
-        f"({fixture('constrained.yaml')}:30:5)"]
+        f"({fixture('constrained.yaml')}:30:5)",
+    ]
 
 
 def test_values_dead_everywhere_are_not_repeated_per_type() -> None:
@@ -61,24 +66,33 @@ def test_dead_named_values_are_those_in_no_valid_robot_by_brute_force(rules: Rul
     everyone = valid_robots(rules, [c.values for c in rules.characteristics])
     if not everyone:
         return  # a void rule set reports the conflict, not dead values
-    expected = [f"characteristics.{c.name}.values[{i}]"
-                for position, c in enumerate(rules.characteristics)
-                if position and c.kind == "categorical"
-                for i, value in enumerate(c.values)
-                if all(robot[position] != value for robot in everyone)]
-    found = [f.location.path for f in DEAD_VALUE.run(RulesContext(rules, Analysis(rules)))
-             if ".values[" in f.location.path]
+    expected = [
+        f"characteristics.{c.name}.values[{i}]"
+        for position, c in enumerate(rules.characteristics)
+        if position and c.kind == "categorical"
+        for i, value in enumerate(c.values)
+        if all(robot[position] != value for robot in everyone)
+    ]
+    found = [
+        f.location.path
+        for f in DEAD_VALUE.run(RulesContext(rules, Analysis(rules)))
+        if ".values[" in f.location.path
+    ]
     assert found == expected
 
 
 def test_values_a_type_loses_to_different_constraints_each_get_their_own_reason() -> None:
     extended = RULES / "extended.yaml"
-    uav = next(f for f in check_files([extended]).findings
-               if f.check == "dead-for-type" and f.message.startswith("no valid UAV robot"))
+    uav = next(
+        f
+        for f in check_files([extended]).findings
+        if f.check == "dead-for-type" and f.message.startswith("no valid UAV robot")
+    )
     assert uav.message == (
         "no valid UAV robot has motion_control 'Walking', 'End Effector': 'Walking' excluded by "
         f"'Walking is for legged robots' ({extended}:60:5); 'End Effector' excluded by 'End "
-        f"Effector control needs an arm' ({extended}:63:5)")
+        f"Effector control needs an arm' ({extended}:63:5)"
+    )
     assert "together" not in uav.message
 
 
@@ -96,20 +110,22 @@ constraints:
 """
 
 
-def test_a_type_losing_a_value_to_two_constraints_at_once_says_together(tmp_path: Path
-                                                                         ) -> None:
+def test_a_type_losing_a_value_to_two_constraints_at_once_says_together(tmp_path: Path) -> None:
     rules = tmp_path / "losses.yaml"
     rules.write_text(LOSSES, encoding="utf-8")
     messages = [f.message for f in check_files([rules]).findings if f.check == "dead-for-type"]
-    assert f"no valid Drone robot has control 'Point': excluded by 'pointing needs a camera' " \
-           f"({rules}:7:5) and 'no camera on drones' ({rules}:8:5) together" in messages
+    assert (
+        f"no valid Drone robot has control 'Point': excluded by 'pointing needs a camera' "
+        f"({rules}:7:5) and 'no camera on drones' ({rules}:8:5) together" in messages
+    )
 
 
-def test_counts_a_type_loses_to_different_constraints_are_given_per_run(tmp_path: Path
-                                                                       ) -> None:
+def test_counts_a_type_loses_to_different_constraints_are_given_per_run(tmp_path: Path) -> None:
     rules = tmp_path / "losses.yaml"
     rules.write_text(LOSSES, encoding="utf-8")
     messages = [f.message for f in check_files([rules]).findings if f.check == "dead-for-type"]
-    assert f"no valid Drone robot has count 1..2, 9..10: 1..2 excluded by 'drones carry 3 or " \
-           f"more' ({rules}:9:5); 9..10 excluded by 'drones carry at most 8' ({rules}:10:5)" \
+    assert (
+        f"no valid Drone robot has count 1..2, 9..10: 1..2 excluded by 'drones carry 3 or "
+        f"more' ({rules}:9:5); 9..10 excluded by 'drones carry at most 8' ({rules}:10:5)"
         in messages
+    )

@@ -1,4 +1,4 @@
-""""Can share a component" must be transitive; otherwise a witness triple is reported."""
+""" "Can share a component" must be transitive; otherwise a witness triple is reported."""
 
 from __future__ import annotations
 
@@ -36,17 +36,21 @@ def test_check_reports_the_witness_triple_a_b_c() -> None:
     assert finding.message == (
         "'can share a component' is not transitive for sensor_type: 'Camera' ~ 'Lidar' (both "
         "in 'visual') and 'Lidar' ~ 'Mic' (both in 'ranging'), but 'Camera' and 'Mic' share no "
-        "component")
+        "component"
+    )
 
 
 def test_overlapping_arrangements_give_a_witness_triple_of_counts() -> None:
     [finding] = findings("coverage-overlap.yaml", check="non-transitive")
-    assert "1 ~ 6 (both in 'few') and 6 ~ 7 (both in 'many'), but 1 and 7 share no component" \
+    assert (
+        "1 ~ 6 (both in 'few') and 6 ~ 7 (both in 'many'), but 1 and 7 share no component"
         in finding.message
+    )
 
 
-def _brute_triple(characteristic: Characteristic, first: Component, second: Component
-                  ) -> tuple[Value, Value, Value] | None:
+def _brute_triple(
+    characteristic: Characteristic, first: Component, second: Component
+) -> tuple[Value, Value, Value] | None:
     """The definition, value by value: the first A only in X that has a C only in Y."""
     in_first, in_second = set(first.values), set(second.values)
     shared = [v for v in characteristic.values if v in in_first and v in in_second]
@@ -74,10 +78,20 @@ def _overlapping_components(draw: st.DrawFn) -> Characteristic:
         spec: dict[str, Any] = {"range": {"min": 1, "max": high}, "components": components}
     else:
         values = [f"v{i}" for i in range(draw(st.integers(2, 8)))]
-        spec = {"values": values, "components": [
-            {"name": f"g{index}", "values": draw(st.lists(st.sampled_from(values), min_size=1,
-                                                          max_size=len(values), unique=True))}
-            for index in range(draw(st.integers(2, 7)))]}
+        spec = {
+            "values": values,
+            "components": [
+                {
+                    "name": f"g{index}",
+                    "values": draw(
+                        st.lists(
+                            st.sampled_from(values), min_size=1, max_size=len(values), unique=True
+                        )
+                    ),
+                }
+                for index in range(draw(st.integers(2, 7)))
+            ],
+        }
     text = yaml.safe_dump({"characteristics": {"kind": {"values": ["A"]}, "x": spec}})
     return parse_rules(parse_document(text, "random.yaml")).characteristic("x")
 
@@ -85,23 +99,29 @@ def _overlapping_components(draw: st.DrawFn) -> Characteristic:
 @given(_overlapping_components())
 def test_witness_triples_are_those_of_the_definition(characteristic: Characteristic) -> None:
     for first, second in itertools.combinations(characteristic.components, 2):
-        assert witness_triple(characteristic, first, second) == \
-            _brute_triple(characteristic, first, second)
+        assert witness_triple(characteristic, first, second) == _brute_triple(
+            characteristic, first, second
+        )
 
 
 def test_check_reports_every_triple_of_a_thousand_sliding_arrangements(tmp_path: Path) -> None:
     # 1,000 arrangements of 15 counts, each overlapping the next by 5, over 1..10,010.
-    windows = "\n".join(f"      - {{name: w{k}, min: {10 * k + 1}, max: {10 * k + 15}}}"
-                        for k in range(1000))
+    windows = "\n".join(
+        f"      - {{name: w{k}, min: {10 * k + 1}, max: {10 * k + 15}}}" for k in range(1000)
+    )
     rules = tmp_path / "slide.yaml"
-    rules.write_text("name: slide\ncharacteristics:\n  kind: {values: [A, B]}\n  n:\n"
-                     f"    range: {{min: 1, max: 10010}}\n    components:\n{windows}\n",
-                     encoding="utf-8")
+    rules.write_text(
+        "name: slide\ncharacteristics:\n  kind: {values: [A, B]}\n  n:\n"
+        f"    range: {{min: 1, max: 10010}}\n    components:\n{windows}\n",
+        encoding="utf-8",
+    )
     found = [f for f in check_files([rules]).findings if f.check == "non-transitive"]
     assert len(found) == 999
     assert found[0].message == (
         "'can share a component' is not transitive for n: 1 ~ 11 (both in 'w0') and 11 ~ 16 "
-        "(both in 'w1'), but 1 and 16 share no component")
+        "(both in 'w1'), but 1 and 16 share no component"
+    )
     assert found[-1].message.endswith(
         "9981 ~ 9991 (both in 'w998') and 9991 ~ 9996 (both in 'w999'), but 9981 and 9996 "
-        "share no component")
+        "share no component"
+    )

@@ -17,8 +17,9 @@ from tests.check.helpers import findings
 def test_duplicate_key_names_the_first_occurrence_and_the_rest_is_still_checked() -> None:
     found = findings("duplicate-key.yaml")
     [duplicate] = [f for f in found if f.check == "duplicate-key"]
-    assert duplicate.message == ("characteristics.sensor_count.components[0].min: duplicate "
-                                 "key 'min' (first at line 21)")
+    assert duplicate.message == (
+        "characteristics.sensor_count.components[0].min: duplicate key 'min' (first at line 21)"
+    )
     # The first 'min' was kept, so the rule set loads and its bound is still reported.
     assert [f.check for f in found] == ["bound", "duplicate-key"]
 
@@ -44,12 +45,15 @@ def test_other_format_faults_are_schema_findings() -> None:
 def test_a_team_whose_rules_have_errors_is_not_checked_and_the_errors_are_reported() -> None:
     found = findings("not-checked.team.yaml")
     assert [(Path(f.location.file).name, f.check) for f in found] == [
-        ("not-checked.team.yaml", "not-checked"), ("unknown-reference.yaml", "unknown-reference")]
+        ("not-checked.team.yaml", "not-checked"),
+        ("unknown-reference.yaml", "unknown-reference"),
+    ]
     assert found[0].message.endswith("unknown-reference.yaml has errors")
 
 
 def test_a_team_with_an_unknown_kinematic_type_is_an_unknown_reference(
-        write_file: Callable[[str, str], Path]) -> None:
+    write_file: Callable[[str, str], Path],
+) -> None:
     team = write_file("team.yaml", "team:\n  Quadruped:\n    motion_control: [Walking]\n")
     [unknown] = check_files([team]).findings
     assert (unknown.check, unknown.line, unknown.column) == ("unknown-reference", 2, 3)
@@ -57,27 +61,33 @@ def test_a_team_with_an_unknown_kinematic_type_is_an_unknown_reference(
 
 
 def test_a_team_naming_a_missing_rules_file_is_an_unknown_reference(
-        write_file: Callable[[str, str], Path]) -> None:
+    write_file: Callable[[str, str], Path],
+) -> None:
     team = write_file("team.yaml", "rules: nowhere.yaml\nteam:\n  UAV: {}\n")
     [unknown] = check_files([team]).findings
     assert (unknown.check, unknown.line) == ("unknown-reference", 1)
     assert "cannot use rules file 'nowhere.yaml'" in unknown.message
 
 
-@pytest.mark.parametrize(("text", "where"), [
-    ("characteristics: [\n", ":2:1"),           # not YAML
-    ("a: !!python/object:os.system x\n", ":1:4"),  # a tag that would run code
-])
+@pytest.mark.parametrize(
+    ("text", "where"),
+    [
+        ("characteristics: [\n", ":2:1"),  # not YAML
+        ("a: !!python/object:os.system x\n", ":1:4"),  # a tag that would run code
+    ],
+)
 def test_a_file_that_is_not_usable_yaml_raises_with_its_location(
-        write_file: Callable[[str, str], Path], text: str, where: str) -> None:
+    write_file: Callable[[str, str], Path], text: str, where: str
+) -> None:
     bad = write_file("bad.yaml", text)
     with pytest.raises(InputError) as raised:
         check_files([bad])
     assert where in str(raised.value)
 
 
-def test_every_unusable_file_is_named_at_once(tmp_path: Path,
-                                             write_file: Callable[[str, str], Path]) -> None:
+def test_every_unusable_file_is_named_at_once(
+    tmp_path: Path, write_file: Callable[[str, str], Path]
+) -> None:
     broken = write_file("broken.yaml", "team: [\n")
     with pytest.raises(InputError) as raised:
         check_files([tmp_path / "missing.yaml", broken, tmp_path])
@@ -87,11 +97,20 @@ def test_every_unusable_file_is_named_at_once(tmp_path: Path,
     assert "is a directory" in text
 
 
-@pytest.mark.parametrize(("code", "expected"), [
-    ("unknown-reference", "unknown-reference"), ("duplicate-value", "duplicate-value"),
-    ("duplicate-key", "duplicate-key"), ("wrong-type", "schema"), ("missing-field", "schema"),
-    ("unknown-field", "schema"), ("out-of-range", "schema"), ("empty-selection", "schema"),
-    ("invalid", "schema")])
+@pytest.mark.parametrize(
+    ("code", "expected"),
+    [
+        ("unknown-reference", "unknown-reference"),
+        ("duplicate-value", "duplicate-value"),
+        ("duplicate-key", "duplicate-key"),
+        ("wrong-type", "schema"),
+        ("missing-field", "schema"),
+        ("unknown-field", "schema"),
+        ("out-of-range", "schema"),
+        ("empty-selection", "schema"),
+        ("invalid", "schema"),
+    ],
+)
 def test_loader_codes_map_to_check_ids(code: str, expected: str) -> None:
     assert check_id(Fault(Location("x.yaml", 1, 1), "m", code)) == expected
 

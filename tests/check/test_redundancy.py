@@ -17,7 +17,8 @@ def test_redundant_constraint_is_reported_with_the_constraint_that_entails_it() 
     assert redundant.message == (
         "constraint 'no microphone on drones with many sensors' is redundant: 'no microphone "
         f"on drones' ({fixture('redundant-constraint.yaml')}:30:5) already excludes every "
-        "robot it excludes; removing it changes no valid robot")
+        "robot it excludes; removing it changes no valid robot"
+    )
     assert [r.location.line for r in redundant.related] == [30]
 
 
@@ -40,5 +41,6 @@ def test_tautology_excludes_no_robot_and_is_not_also_called_redundant() -> None:
     [tautology] = findings("tautology.yaml", check="tautology")
     assert tautology.message == (
         "constraint 'lidar robots have a lidar or a camera' (when sensor_type is Lidar require "
-        "sensor_type in {Camera, Lidar}) excludes no robot at all")
+        "sensor_type in {Camera, Lidar}) excludes no robot at all"
+    )
     assert findings("tautology.yaml", check="redundant-constraint") == []

@@ -23,22 +23,32 @@ def test_teams_are_checked_against_the_one_rule_set_among_the_files() -> None:
     # Against base.yaml (no constraints) nothing is forbidden; its own constrained.yaml
     # forbids two of its selections.
     assert _checks([fixture("base.yaml"), fixture("team-forbidden-value.team.yaml")]) == [
-        ("base.yaml", "bound")]
-    assert [check for _, check in _checks([fixture("team-forbidden-value.team.yaml")])] == \
-        ["team-forbidden-value"] * 2
+        ("base.yaml", "bound")
+    ]
+    assert [check for _, check in _checks([fixture("team-forbidden-value.team.yaml")])] == [
+        "team-forbidden-value"
+    ] * 2
 
 
 def test_rules_option_wins_and_its_rule_set_is_checked_too() -> None:
-    found = _checks([fixture("base.yaml"), fixture("team-forbidden-value.team.yaml")],
-                    rules=fixture("constrained.yaml"))
+    found = _checks(
+        [fixture("base.yaml"), fixture("team-forbidden-value.team.yaml")],
+        rules=fixture("constrained.yaml"),
+    )
     assert ("constrained.yaml", "core-value") in found
     assert [c for c in found if c[1] == "team-forbidden-value"] == [
-        ("team-forbidden-value.team.yaml", "team-forbidden-value")] * 2
+        ("team-forbidden-value.team.yaml", "team-forbidden-value")
+    ] * 2
 
 
 def test_with_two_rule_sets_teams_use_their_own_rules() -> None:
-    found = _checks([fixture("base.yaml"), fixture("inclusive-equation-2.yaml"),
-                     fixture("team-forbidden-value.team.yaml")])
+    found = _checks(
+        [
+            fixture("base.yaml"),
+            fixture("inclusive-equation-2.yaml"),
+            fixture("team-forbidden-value.team.yaml"),
+        ]
+    )
     assert found.count(("team-forbidden-value.team.yaml", "team-forbidden-value")) == 2
 
 
@@ -68,25 +78,36 @@ def test_exit_status_is_1_for_errors_and_for_warnings_only_when_strict() -> None
 
 
 def test_the_shipped_rule_sets_and_teams_have_no_problem() -> None:
-    report = check_files([RULES / "paper.yaml", *sorted(
-        p for p in TEAMS.glob("*.yaml") if p.stem != "search-and-rescue")])
+    report = check_files(
+        [
+            RULES / "paper.yaml",
+            *sorted(p for p in TEAMS.glob("*.yaml") if p.stem != "search-and-rescue"),
+        ]
+    )
     assert [f.check for f in report.findings] == ["bound"]
     hypothesis = check_files([RULES / "paper-case3-hypothesis.yaml"])
     assert [f.check for f in hypothesis.findings] == ["bound"]
 
 
-def test_checking_never_modifies_the_files_it_reads(tmp_path: Path,
-                                                    write_file: Callable[[str, str], Path]
-                                                    ) -> None:
-    files = [write_file(name, fixture(name).read_text(encoding="utf-8"))
-             for name in ("duplicate-key.yaml", "constrained.yaml", "void-type.yaml")]
-    team = write_file("team.yaml", fixture("team-forbidden-value.team.yaml")
-                      .read_text(encoding="utf-8"))
-    before = {p: (p.stat().st_mtime_ns, hashlib.sha256(p.read_bytes()).hexdigest())
-              for p in tmp_path.iterdir()}
+def test_checking_never_modifies_the_files_it_reads(
+    tmp_path: Path, write_file: Callable[[str, str], Path]
+) -> None:
+    files = [
+        write_file(name, fixture(name).read_text(encoding="utf-8"))
+        for name in ("duplicate-key.yaml", "constrained.yaml", "void-type.yaml")
+    ]
+    team = write_file(
+        "team.yaml", fixture("team-forbidden-value.team.yaml").read_text(encoding="utf-8")
+    )
+    before = {
+        p: (p.stat().st_mtime_ns, hashlib.sha256(p.read_bytes()).hexdigest())
+        for p in tmp_path.iterdir()
+    }
     check_files([*files, team])
-    after = {p: (p.stat().st_mtime_ns, hashlib.sha256(p.read_bytes()).hexdigest())
-             for p in tmp_path.iterdir()}
+    after = {
+        p: (p.stat().st_mtime_ns, hashlib.sha256(p.read_bytes()).hexdigest())
+        for p in tmp_path.iterdir()
+    }
     assert after == before
 
 

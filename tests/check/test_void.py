@@ -24,8 +24,9 @@ def test_the_conflict_is_reported_at_its_first_constraint_with_the_others_relate
     [conflict] = findings("void.yaml", check="conflict")
     assert (conflict.line, conflict.column) == (30, 5)
     assert [(r.location.line, r.location.column) for r in conflict.related] == [(34, 5)]
-    assert conflict.message.endswith("together they leave no valid robot at all (a minimal "
-                                     "conflict: each of them is needed)")
+    assert conflict.message.endswith(
+        "together they leave no valid robot at all (a minimal conflict: each of them is needed)"
+    )
 
 
 def test_the_minimal_conflict_is_void_and_each_member_is_needed_by_the_model() -> None:
@@ -39,8 +40,9 @@ def test_the_minimal_conflict_is_void_and_each_member_is_needed_by_the_model() -
 
 def test_void_kinematic_type_is_reported_at_its_entry_with_its_conflict() -> None:
     [void] = findings("void-type.yaml", check="void-type")
-    assert void.message.startswith("kinematic_type 'Arm' has no valid robot: constraints "
-                                   "'arms are jointed' (")
+    assert void.message.startswith(
+        "kinematic_type 'Arm' has no valid robot: constraints 'arms are jointed' ("
+    )
     assert void.message.endswith("together exclude every Arm robot")
     assert "Flight" not in void.message
 
@@ -62,8 +64,7 @@ def test_a_void_rule_set_reports_no_void_types_nor_dead_values() -> None:
 def test_void_findings_are_the_types_without_any_robot_by_brute_force(rules: RuleSet) -> None:
     key = rules.key
     domains = [c.values for c in rules.characteristics]
-    void = [kt for kt in key.values
-            if not valid_robots(rules, [(kt,), *domains[1:]])]
+    void = [kt for kt in key.values if not valid_robots(rules, [(kt,), *domains[1:]])]
     context = RulesContext(rules, Analysis(rules))
     whole = list(VOID.run(context))
     types = [f.location.path for f in VOID_TYPE.run(context)]

@@ -11,8 +11,9 @@ from solver.engines.cover import minimum_cover
 
 Key = tuple[int, ...]
 
-elements = st.lists(st.frozensets(st.tuples(st.integers(0, 6)), min_size=1, max_size=3),
-                    min_size=1, max_size=8)
+elements = st.lists(
+    st.frozensets(st.tuples(st.integers(0, 6)), min_size=1, max_size=3), min_size=1, max_size=8
+)
 
 
 def brute_force_minimum(sets: list[frozenset[Key]]) -> int:
@@ -26,8 +27,7 @@ def brute_force_minimum(sets: list[frozenset[Key]]) -> int:
 
 @settings(max_examples=300, deadline=None)
 @given(elements)
-def test_minimum_cover_hits_every_element_with_the_fewest_keys(sets: list[frozenset[Key]]
-                                                               ) -> None:
+def test_minimum_cover_hits_every_element_with_the_fewest_keys(sets: list[frozenset[Key]]) -> None:
     cover = minimum_cover(sets)
     assert all(s & cover for s in sets)
     assert len(cover) == brute_force_minimum(sets)

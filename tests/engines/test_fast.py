@@ -31,8 +31,11 @@ def test_robots_stream_in_product_order() -> None:
     team = load_team(TEAMS / "case1.yaml")
     (uav,) = team.selections
     streamed = list(robots_stream(team.rules, uav))
-    assert streamed[:3] == [("UAV", "Flight", "2D Camera", 1), ("UAV", "Flight", "2D Camera", 2),
-                            ("UAV", "Flight", "2D Camera", 3)]
+    assert streamed[:3] == [
+        ("UAV", "Flight", "2D Camera", 1),
+        ("UAV", "Flight", "2D Camera", 2),
+        ("UAV", "Flight", "2D Camera", 3),
+    ]
     assert sorted(streamed) == sorted(robots(team.rules, uav.domains))
 
 

@@ -23,8 +23,9 @@ def test_every_engine_counts_and_partitions_case_3_alike(name: str) -> None:
         part = engine.partition(team.rules, selection, Memo())
         assert counts == reference.count(team.rules, selection, Memo())
         assert part == reference.partition(team.rules, selection, Memo())
-        assert sorted(engine.robots(team.rules, selection), key=repr) == \
-            sorted(reference.robots(team.rules, selection), key=repr)
+        assert sorted(engine.robots(team.rules, selection), key=repr) == sorted(
+            reference.robots(team.rules, selection), key=repr
+        )
 
 
 def test_an_unknown_engine_name_is_refused_everywhere() -> None:

@@ -20,17 +20,23 @@ def test_counts_the_article_case_3_per_type() -> None:
     team = load_team(TEAMS / "case3.yaml")
     memo = Memo()
     found = [count(team.rules, selection, memo) for selection in team.selections]
-    assert [(c.valid_robots, c.ui_configurations) for c in found] == \
-        [(30, 6), (80, 12), (312, 48), (450, 36)]
+    assert [(c.valid_robots, c.ui_configurations) for c in found] == [
+        (30, 6),
+        (80, 12),
+        (312, 48),
+        (450, 36),
+    ]
 
 
 def test_counts_10_to_the_30_robots_exactly(write_file: WriteFile) -> None:
     characteristics = "".join(
         f"  c{i}: {{values: [a, b, c, d, e, f, g, h, i, j], components: "
         f"[{{name: low, values: [a, b, c, d, e]}}, {{name: high, values: [f, g, h, i, j]}}]}}\n"
-        for i in range(30))
-    write_file("rules.yaml", "characteristics:\n  kinematic_type: {values: [T]}\n"
-               + characteristics)
+        for i in range(30)
+    )
+    write_file(
+        "rules.yaml", "characteristics:\n  kinematic_type: {values: [T]}\n" + characteristics
+    )
     team = load_team(write_file("team.yaml", "rules: rules.yaml\nteam:\n  T: {}\n"))
     totals = solve(team, count_only=True).totals
     assert totals.valid_robots == 10**30
@@ -47,15 +53,19 @@ def test_types_with_the_same_structure_are_counted_once(write_file: WriteFile) -
 
 
 def test_linked_characteristics_too_many_to_count_fall_back_to_enumeration(
-        write_file: WriteFile, monkeypatch: pytest.MonkeyPatch) -> None:
-    write_file("rules.yaml", """\
+    write_file: WriteFile, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    write_file(
+        "rules.yaml",
+        """\
 characteristics:
   kinematic_type: {values: [T]}
   a: {values: [a1, a2, a3]}
   b: {values: [b1, b2, b3]}
 constraints:
   - forbid: {a: a1, b: b1}
-""")
+""",
+    )
     team = load_team(write_file("team.yaml", "rules: rules.yaml\nteam:\n  T: {}\n"))
     monkeypatch.setattr(structure, "BLOCK_LIMIT", 4)
     with pytest.raises(StructureTooComplex, match="constraints link a, b into 9 class"):
@@ -67,15 +77,15 @@ constraints:
         solve(team, engine="structure")
 
 
-def test_enumerating_more_than_the_limit_is_refused_with_the_count(write_file: WriteFile
-                                                                   ) -> None:
+def test_enumerating_more_than_the_limit_is_refused_with_the_count(write_file: WriteFile) -> None:
     team = load_team(TEAMS / "case3.yaml")
     with pytest.raises(TooLargeError) as caught:
         solve(team, engine="fast", max_robots=100)
     # UAV (30) and UGV (80) are within the limit; the Mobile Manipulator (312) is not.
-    assert "Mobile Manipulator: enumerating 312 robots is refused (more than 100, see " \
-           "--max-robots); use --count-only for exact counts without enumeration" \
-           in str(caught.value)
+    assert (
+        "Mobile Manipulator: enumerating 312 robots is refused (more than 100, see "
+        "--max-robots); use --count-only for exact counts without enumeration" in str(caught.value)
+    )
     assert solve(team, count_only=True, max_robots=100).totals.valid_robots == 872
 
 

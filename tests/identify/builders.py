@@ -23,17 +23,25 @@ class RobotText:
 
     def joint(self, name: str, kind: str, parent: str, child: str, body: str = "") -> str:
         self.links.append(child)
-        self.joints.append(f'  <joint name="{name}" type="{kind}"><parent link="{parent}"/>'
-                           f'<child link="{child}"/>{body}</joint>')
+        self.joints.append(
+            f'  <joint name="{name}" type="{kind}"><parent link="{parent}"/>'
+            f'<child link="{child}"/>{body}</joint>'
+        )
         return child
 
     def chain(self, parent: str, names: list[str], kind: str = "revolute") -> str:
         """A serial chain of joints ``names``; each child link is ``<joint>_link``."""
         link = parent
         for name in names:
-            link = self.joint(name, kind, link, f"{name}_link",
-                              '<limit lower="-1" upper="1" effort="1" velocity="1"/>'
-                              if kind in ("revolute", "prismatic") else "")
+            link = self.joint(
+                name,
+                kind,
+                link,
+                f"{name}_link",
+                '<limit lower="-1" upper="1" effort="1" velocity="1"/>'
+                if kind in ("revolute", "prismatic")
+                else "",
+            )
         return link
 
     def fixed(self, parent: str, child: str) -> str:
@@ -44,14 +52,19 @@ class RobotText:
 
     def text(self) -> str:
         links = "\n".join(f'  <link name="{link}"/>' for link in self.links)
-        return (f'<?xml version="1.0"?>\n<robot name="{self.name}">\n{links}\n'
-                + "\n".join(self.joints + self.extra) + "\n</robot>\n")
+        return (
+            f'<?xml version="1.0"?>\n<robot name="{self.name}">\n{links}\n'
+            + "\n".join(self.joints + self.extra)
+            + "\n</robot>\n"
+        )
 
 
 def gazebo_sensor(link: str, kind: str, name: str, inner: str = "", plugin: str = "") -> str:
     plugin_xml = f'<plugin name="{name}_plugin" filename="{plugin}"/>' if plugin else ""
-    return (f'  <gazebo reference="{link}"><sensor type="{kind}" name="{name}">{inner}'
-            f"{plugin_xml}</sensor></gazebo>")
+    return (
+        f'  <gazebo reference="{link}"><sensor type="{kind}" name="{name}">{inner}'
+        f"{plugin_xml}</sensor></gazebo>"
+    )
 
 
 def model_plugin(name: str, filename: str, params: str = "") -> str:
@@ -63,17 +76,26 @@ def wheeled_base(robot: RobotText, wheels: int = 2) -> None:
         robot.joint(f"wheel_{side}_joint", "continuous", robot.root, f"wheel_{side}_link")
 
 
-def arm(robot: RobotText, parent: str, prefix: str = "", joints: int = 6,
-        gripper: bool = True) -> str:
-    names = [f"{prefix}shoulder_pan", f"{prefix}shoulder_lift", f"{prefix}elbow",
-             *(f"{prefix}wrist_{i}" for i in range(1, joints - 2))][:joints]
+def arm(
+    robot: RobotText, parent: str, prefix: str = "", joints: int = 6, gripper: bool = True
+) -> str:
+    names = [
+        f"{prefix}shoulder_pan",
+        f"{prefix}shoulder_lift",
+        f"{prefix}elbow",
+        *(f"{prefix}wrist_{i}" for i in range(1, joints - 2)),
+    ][:joints]
     tip = robot.chain(parent, names)
     if gripper:
         robot.chain(tip, [f"{prefix}gripper_finger_left"], "prismatic")
-        robot.joint(f"{prefix}gripper_finger_right", "prismatic", tip,
-                    f"{prefix}gripper_finger_right_link",
-                    f'<mimic joint="{prefix}gripper_finger_left"/>'
-                    '<limit lower="0" upper="1" effort="1" velocity="1"/>')
+        robot.joint(
+            f"{prefix}gripper_finger_right",
+            "prismatic",
+            tip,
+            f"{prefix}gripper_finger_right_link",
+            f'<mimic joint="{prefix}gripper_finger_left"/>'
+            '<limit lower="0" upper="1" effort="1" velocity="1"/>',
+        )
     return tip
 
 
@@ -128,8 +150,12 @@ def mobile_manipulator() -> RobotText:
 def humanoid() -> RobotText:
     robot = RobotText("biped_arms")
     for side in ("l", "r"):
-        leg(robot, robot.root, f"{side}_leg", ("hip_yaw", "hip_roll", "hip_pitch", "knee",
-                                                "ankle_pitch", "ankle_roll"))
+        leg(
+            robot,
+            robot.root,
+            f"{side}_leg",
+            ("hip_yaw", "hip_roll", "hip_pitch", "knee", "ankle_pitch", "ankle_roll"),
+        )
         arm(robot, robot.root, f"{side}_", 5)
     robot.chain(robot.root, ["neck_yaw", "head_pitch"])
     return robot

@@ -17,9 +17,12 @@ from solver.identify.topics import Topic
 from tests.conftest import run_cli
 from tests.identify import builders
 
-TOPICS = [("/scan", "sensor_msgs/msg/LaserScan"), ("/camera/image_raw", "sensor_msgs/msg/Image"),
-          ("/cmd_vel", "geometry_msgs/msg/Twist"), ("/move_base/goal",
-                                                    "move_base_msgs/msg/MoveBaseActionGoal")]
+TOPICS = [
+    ("/scan", "sensor_msgs/msg/LaserScan"),
+    ("/camera/image_raw", "sensor_msgs/msg/Image"),
+    ("/cmd_vel", "geometry_msgs/msg/Twist"),
+    ("/move_base/goal", "move_base_msgs/msg/MoveBaseActionGoal"),
+]
 
 
 def write_ros1(path: Path) -> Path:
@@ -46,10 +49,12 @@ def test_a_ros1_bag_gives_its_topics_and_types(tmp_path: Path) -> None:
     assert [t.name for t in topics] == [name for name, _ in TOPICS]
 
 
-@pytest.mark.parametrize(("plugin", "suffix"), [(StoragePlugin.SQLITE3, ".db3"),
-                                                 (StoragePlugin.MCAP, ".mcap")])
-def test_a_ros2_bag_folder_and_its_storage_file_both_read(tmp_path: Path, plugin: StoragePlugin,
-                                                          suffix: str) -> None:
+@pytest.mark.parametrize(
+    ("plugin", "suffix"), [(StoragePlugin.SQLITE3, ".db3"), (StoragePlugin.MCAP, ".mcap")]
+)
+def test_a_ros2_bag_folder_and_its_storage_file_both_read(
+    tmp_path: Path, plugin: StoragePlugin, suffix: str
+) -> None:
     folder = write_ros2(tmp_path / "run2", plugin)
     storage = next(folder.glob(f"*{suffix}"))
     assert read_bag_topics(folder) == read_bag_topics(storage)
@@ -73,5 +78,6 @@ def test_identify_with_a_bag_adds_sensors_and_controls(tmp_path: Path) -> None:
     data = json.loads(result.stdout)
     assert [(s["kind"], s["sensor_type"], s["source"]) for s in data["sensors"]] == [
         ("lidar", "LIDAR", "bag run.bag: /scan"),
-        ("camera", "2D Camera", "bag run.bag: /camera")]
+        ("camera", "2D Camera", "bag run.bag: /camera"),
+    ]
     assert [c["motion_control"] for c in data["motion_controls"]] == ["Driving", "Waypoint"]

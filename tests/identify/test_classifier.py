@@ -35,10 +35,12 @@ CASES: list[tuple[Callable[[], RobotText], str, str | None]] = [
 ]
 
 
-@pytest.mark.parametrize(("build", "structure", "kinematic_type"), CASES,
-                         ids=[case[1] for case in CASES])
+@pytest.mark.parametrize(
+    ("build", "structure", "kinematic_type"), CASES, ids=[case[1] for case in CASES]
+)
 def test_identify_reads_each_body_under_the_paper_rules(
-        build: Callable[[], RobotText], structure: str, kinematic_type: str | None) -> None:
+    build: Callable[[], RobotText], structure: str, kinematic_type: str | None
+) -> None:
     result = identify_urdf(build().text())
     assert (result.structure, result.kinematic_type) == (structure, kinematic_type)
     assert 0 < result.confidence <= 1
@@ -53,8 +55,10 @@ def test_a_paper_rule_set_has_no_type_for_a_quadruped_and_says_so() -> None:
 
 def test_a_rule_set_with_a_quadruped_type_classifies_quadrupeds(tmp_path: Path) -> None:
     text = (RULES / "paper.yaml").read_text(encoding="utf-8")
-    text = text.replace("      - Humanoid                # at least two arms, two legs and a head",
-                        "      - Humanoid\n      - Quadruped")
+    text = text.replace(
+        "      - Humanoid                # at least two arms, two legs and a head",
+        "      - Humanoid\n      - Quadruped",
+    )
     text = text.replace("bound: 900", "bound: 1050")
     (tmp_path / "legged.yaml").write_text(text, encoding="utf-8")
     rules = load_rules(tmp_path / "legged.yaml")
@@ -66,17 +70,26 @@ def test_wheels_named_only_by_a_drive_plugin_are_wheels() -> None:
     robot = RobotText("plain")
     robot.joint("left_motor", "continuous", "base_link", "l")
     robot.joint("right_motor", "continuous", "base_link", "r")
-    robot.add(builders.model_plugin("drive", "libgazebo_ros_diff_drive.so",
-                                    "<leftJoint>left_motor</leftJoint>"
-                                    "<rightJoint>right_motor</rightJoint>"))
+    robot.add(
+        builders.model_plugin(
+            "drive",
+            "libgazebo_ros_diff_drive.so",
+            "<leftJoint>left_motor</leftJoint><rightJoint>right_motor</rightJoint>",
+        )
+    )
     body = detect_body(parse_urdf(robot.text()), load_profile())
     assert body.wheels == ("left_motor", "right_motor")
 
 
 def test_zero_range_revolute_joints_are_fixed_and_mimic_joints_not_actuated() -> None:
     robot = builders.quadrotor()
-    robot.joint("imu_joint", "revolute", "base_link", "imu_link",
-                '<limit lower="0" upper="0" effort="0" velocity="0"/>')
+    robot.joint(
+        "imu_joint",
+        "revolute",
+        "base_link",
+        "imu_link",
+        '<limit lower="0" upper="0" effort="0" velocity="0"/>',
+    )
     urdf = parse_urdf(robot.text())
     joint = urdf.joint("imu_joint")
     assert joint is not None
@@ -126,10 +139,16 @@ def test_a_planar_base_joint_is_a_mobile_base() -> None:
 def test_identification_prints_the_same_bytes_under_any_hash_seed(tmp_path: Path) -> None:
     path = tmp_path / "mm.urdf"
     path.write_text(builders.mobile_manipulator().text())
-    outputs = {subprocess.run([sys.executable, "-m", "solver", "identify", str(path), "--format",
-                               "json"], capture_output=True, check=True, timeout=600,
-                              env={**os.environ, "PYTHONHASHSEED": seed}).stdout
-               for seed in ("0", "1", "12345")}
+    outputs = {
+        subprocess.run(
+            [sys.executable, "-m", "solver", "identify", str(path), "--format", "json"],
+            capture_output=True,
+            check=True,
+            timeout=600,
+            env={**os.environ, "PYTHONHASHSEED": seed},
+        ).stdout
+        for seed in ("0", "1", "12345")
+    }
     assert len(outputs) == 1
     assert b'"structure": "Mobile Manipulator"' in outputs.pop()
 
@@ -149,14 +168,21 @@ def test_motor_links_named_rotor_on_wheeled_legs_make_no_uav() -> None:
         robot.joint(f"{side}_wheel", "continuous", knee, f"{side}_wheel_motor_rotor")
     result = identify_urdf(robot.text())
     assert (result.structure, result.body.wheels) == (  # type: ignore[union-attr]
-        "UGV", ("left_wheel", "right_wheel"))
+        "UGV",
+        ("left_wheel", "right_wheel"),
+    )
 
 
 def test_a_parallel_gripper_with_a_mimic_finger_is_a_gripper() -> None:
     robot = RobotText("gripper")
     robot.chain("base_link", ["left_finger_joint"], "prismatic")
-    robot.joint("right_finger_joint", "prismatic", "base_link", "right_finger",
-                '<mimic joint="left_finger_joint"/><limit lower="0" upper="1"/>')
+    robot.joint(
+        "right_finger_joint",
+        "prismatic",
+        "base_link",
+        "right_finger",
+        '<mimic joint="left_finger_joint"/><limit lower="0" upper="1"/>',
+    )
     result = identify_urdf(robot.text())
     assert (result.structure, result.kinematic_type) == ("Gripper", None)
     assert len(result.body.fingers) == 2  # type: ignore[union-attr]
@@ -215,18 +241,31 @@ def test_root_x_y_theta_joints_are_a_planar_mobile_base_with_doubt() -> None:
     result = identify_urdf(robot.text())
     assert result.structure == "Mobile Manipulator"
     assert result.body.planar_base == (  # type: ignore[union-attr]
-        "root joints x, y, theta (x, y and a turn about z)",)
+        "root joints x, y, theta (x, y and a turn about z)",
+    )
     assert result.confidence == pytest.approx(0.9 * 0.8, abs=0.01)
 
 
 def test_a_six_joint_virtual_floating_root_is_not_an_arm() -> None:
     robot = RobotText("floating_hand", root="world")
     link = "world"
-    for i, (kind, axis) in enumerate([("prismatic", "1 0 0"), ("prismatic", "0 1 0"),
-                                      ("prismatic", "0 0 1"), ("revolute", "1 0 0"),
-                                      ("revolute", "0 1 0"), ("revolute", "0 0 1")]):
-        link = robot.joint(f"root_{i}", kind, link, f"root_{i}_link",
-                           f'<axis xyz="{axis}"/><limit lower="-20" upper="20"/>')
+    for i, (kind, axis) in enumerate(
+        [
+            ("prismatic", "1 0 0"),
+            ("prismatic", "0 1 0"),
+            ("prismatic", "0 0 1"),
+            ("revolute", "1 0 0"),
+            ("revolute", "0 1 0"),
+            ("revolute", "0 0 1"),
+        ]
+    ):
+        link = robot.joint(
+            f"root_{i}",
+            kind,
+            link,
+            f"root_{i}_link",
+            f'<axis xyz="{axis}"/><limit lower="-20" upper="20"/>',
+        )
     for finger in ("index", "middle", "ring", "thumb"):
         robot.chain(link, [f"{finger}_1", f"{finger}_2"])
     result = identify_urdf(robot.text())
@@ -247,8 +286,12 @@ def test_eight_leg_chains_of_paired_linkages_are_a_quadruped_with_doubt() -> Non
 def test_a_body_no_structure_fits_is_other_with_the_parts_it_has() -> None:
     result = identify_urdf(builders.pan_tilt_only().text())
     assert result.structure == "Other"
-    assert any(line.startswith("structure Other: no other structure matched; the body has "
-                               "1 heads, no mobile base") for line in result.evidence)
+    assert any(
+        line.startswith(
+            "structure Other: no other structure matched; the body has 1 heads, no mobile base"
+        )
+        for line in result.evidence
+    )
 
 
 def test_unnamed_legs_on_the_pelvis_below_named_arms_make_a_humanoid() -> None:

@@ -21,8 +21,9 @@ def write_fleet(folder: Path) -> Path:
     rover = builders.ugv()
     rover.add(builders.gazebo_sensor("laser", "ray", "laser"))
     (folder / "rover.urdf").write_text(rover.text())
-    (folder / "rover.topics.txt").write_text("/cmd_vel geometry_msgs/Twist\n"
-                                             "/move_base/goal move_base_msgs/MoveBaseActionGoal\n")
+    (folder / "rover.topics.txt").write_text(
+        "/cmd_vel geometry_msgs/Twist\n/move_base/goal move_base_msgs/MoveBaseActionGoal\n"
+    )
     drone = builders.quadrotor()
     drone.add(builders.gazebo_sensor("cam", "camera", "cam"))
     (folder / "drone.urdf").write_text(drone.text())
@@ -115,8 +116,9 @@ def test_fleet_writes_every_value_for_a_type_with_nothing_identified(tmp_path: P
     loaded = load_team(team)
     selection = loaded.selection("Manipulator")
     assert selection is not None
-    for characteristic, domain in zip(loaded.rules.characteristics[1:], selection.domains[1:],
-                                      strict=True):
+    for characteristic, domain in zip(
+        loaded.rules.characteristics[1:], selection.domains[1:], strict=True
+    ):
         assert domain == characteristic.values
 
 
@@ -135,8 +137,13 @@ def test_fleet_of_an_unreadable_folder_exits_2_naming_it(tmp_path: Path) -> None
     folder = write_fleet(tmp_path / "robots")
     folder.chmod(0o000)
     try:
-        result = subprocess.run(_without_permission_override("fleet", folder),
-                                capture_output=True, text=True, cwd=ROOT, check=False)
+        result = subprocess.run(
+            _without_permission_override("fleet", folder),
+            capture_output=True,
+            text=True,
+            cwd=ROOT,
+            check=False,
+        )
     finally:
         folder.chmod(0o755)
     assert result.returncode == 2
@@ -147,11 +154,15 @@ def test_fleet_of_an_unreadable_folder_exits_2_naming_it(tmp_path: Path) -> None
 def test_fleet_lists_an_unreadable_robot_file_as_not_identified(tmp_path: Path) -> None:
     folder = write_fleet(tmp_path / "robots")
     (folder / "drone.urdf").chmod(0o000)
-    result = subprocess.run(_without_permission_override("fleet", folder),
-                            capture_output=True, text=True, cwd=ROOT, check=False)
+    result = subprocess.run(
+        _without_permission_override("fleet", folder),
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+        check=False,
+    )
     assert result.returncode == 0, result.stderr
-    assert f"not identified: drone: {folder / 'drone.urdf'}: permission denied" \
-        in result.stdout
+    assert f"not identified: drone: {folder / 'drone.urdf'}: permission denied" in result.stdout
     assert "rover " in result.stdout
 
 
@@ -169,14 +180,22 @@ def test_fleet_lists_dangling_and_looping_links_as_not_identified(tmp_path: Path
     assert "sub" not in result.stdout
 
 
-@pytest.mark.parametrize(("example", "srdf", "structure", "sensors", "controls"), [
-    ("quadrotor.urdf", None, "UAV", [("imu", None), ("camera", "2D Camera")], ["Flight"]),
-    ("diff_drive_lidar.urdf", None, "UGV", [("lidar", "LIDAR")], ["Driving"]),
-    ("arm_gripper.urdf", "arm_gripper.srdf", "Manipulator", [], ["Joint", "End Effector"]),
-], ids=["quadrotor", "diff drive with a lidar", "arm with a gripper and its SRDF"])
+@pytest.mark.parametrize(
+    ("example", "srdf", "structure", "sensors", "controls"),
+    [
+        ("quadrotor.urdf", None, "UAV", [("imu", None), ("camera", "2D Camera")], ["Flight"]),
+        ("diff_drive_lidar.urdf", None, "UGV", [("lidar", "LIDAR")], ["Driving"]),
+        ("arm_gripper.urdf", "arm_gripper.srdf", "Manipulator", [], ["Joint", "End Effector"]),
+    ],
+    ids=["quadrotor", "diff drive with a lidar", "arm with a gripper and its SRDF"],
+)
 def test_the_shipped_examples_identify_as_what_they_are(
-        example: str, srdf: str | None, structure: str, sensors: list[tuple[str, str | None]],
-        controls: list[str]) -> None:
+    example: str,
+    srdf: str | None,
+    structure: str,
+    sensors: list[tuple[str, str | None]],
+    controls: list[str],
+) -> None:
     extra = ["--srdf", str(ROOT / "examples" / srdf)] if srdf else []
     result = run_cli("identify", ROOT / "examples" / example, *extra, "--format", "json")
     assert result.returncode == 0, result.stderr
@@ -192,7 +211,8 @@ def test_fleet_lists_the_warnings_of_a_flawed_robot_and_strict_refuses_it(tmp_pa
     folder.mkdir()
     (folder / "gripper.urdf").write_text(
         '<robot name="g">\n<link name="finger"/>\n<joint name="finger_joint" type="prismatic">\n'
-        '<parent link="flange"/><child link="finger"/>\n</joint>\n</robot>\n')
+        '<parent link="flange"/><child link="finger"/>\n</joint>\n</robot>\n'
+    )
     (folder / "rover.urdf").write_text(builders.ugv().text())
     shown = run_cli("fleet", folder).stdout
     assert f"warning: {folder / 'gripper.urdf'}:4: joint[finger_joint].parent:" in shown

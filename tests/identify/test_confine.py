@@ -17,9 +17,11 @@ LIMITS = XacroLimits(cpu_seconds=5, memory_bytes=512 * 2**20, wall_seconds=20.0)
 
 # Reaches xacro's module globals (and through them `os`, `sys` and every loaded module) using
 # only names xacro's expression check lets through.
-ESCAPE = ("python.vars(python.type(python.vars(python.type(xacro.load_yaml))['__globals__']))"
-          "['__get__'](python.vars(python.type(xacro.load_yaml))['__globals__'], "
-          "xacro.load_yaml)")
+ESCAPE = (
+    "python.vars(python.type(python.vars(python.type(xacro.load_yaml))['__globals__']))"
+    "['__get__'](python.vars(python.type(xacro.load_yaml))['__globals__'], "
+    "xacro.load_yaml)"
+)
 
 PROBE = """
 import json, os, socket, subprocess, sys
@@ -57,8 +59,14 @@ print(json.dumps({
 def landlock() -> int:
     """The Landlock ABI this kernel offers; the tests that need it skip without it."""
     code = "from solver.identify.confine import confine; print(confine([]).landlock_abi)"
-    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                          cwd=ROOT, check=True, timeout=120)
+    done = subprocess.run(
+        [sys.executable, "-c", code],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+        check=True,
+        timeout=120,
+    )
     abi = int(done.stdout)
     if abi == 0:
         pytest.skip("this kernel has no Landlock")
@@ -71,16 +79,22 @@ def probe(tmp_path: Path) -> dict[str, object]:
     (allowed / "inside.txt").write_text("inside")
     outside = tmp_path / "secret.txt"
     outside.write_text("secret")
-    done = subprocess.run([sys.executable, "-c", PROBE, str(allowed), str(outside),
-                           str(tmp_path / "MARKER")], capture_output=True, text=True,
-                          cwd=ROOT, check=True, timeout=120)
+    done = subprocess.run(
+        [sys.executable, "-c", PROBE, str(allowed), str(outside), str(tmp_path / "MARKER")],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+        check=True,
+        timeout=120,
+    )
     answer: dict[str, object] = json.loads(done.stdout)
     return answer
 
 
 @pytest.mark.usefixtures("landlock")
 def test_a_confined_process_reads_only_beneath_its_folders_and_writes_and_runs_nothing(
-        tmp_path: Path) -> None:
+    tmp_path: Path,
+) -> None:
     answer = probe(tmp_path)
     assert answer["read inside"] == "done"
     assert answer["read outside"] == "PermissionError"
@@ -92,7 +106,8 @@ def test_a_confined_process_reads_only_beneath_its_folders_and_writes_and_runs_n
 
 
 def test_a_confined_process_opens_no_socket_and_starts_no_process_where_seccomp_applies(
-        tmp_path: Path) -> None:
+    tmp_path: Path,
+) -> None:
     answer = probe(tmp_path)
     if not answer["seccomp"]:
         pytest.skip("no seccomp filter on this system (not Linux x86-64 or arm64)")
@@ -103,30 +118,36 @@ def test_a_confined_process_opens_no_socket_and_starts_no_process_where_seccomp_
 
 
 def test_a_confined_process_connects_no_tcp_socket_on_landlock_4_and_later(
-        landlock: int, tmp_path: Path) -> None:
+    landlock: int, tmp_path: Path
+) -> None:
     if landlock < 4:
         pytest.skip("Landlock before ABI 4 does not handle TCP")
     assert probe(tmp_path)["tcp connect"] == "PermissionError"
 
 
 def escaping(body: str) -> str:
-    return ('<?xml version="1.0"?>\n<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
-            f'  <xacro:property name="g" value="${{{ESCAPE}}}"/>\n  {body}\n</robot>\n')
+    return (
+        '<?xml version="1.0"?>\n<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+        f'  <xacro:property name="g" value="${{{ESCAPE}}}"/>\n  {body}\n</robot>\n'
+    )
 
 
 # Each reaches a file function the Python-level fence does not replace.
 ESCAPES = {
     "io-open": "<link name=\"${{g['sys'].modules['_io'].open('{marker}', 'w') and 'x'}}\"/>",
     "mknod": "<link name=\"${{g['os'].mknod('{marker}') or 'x'}}\"/>",
-    "lxml-write": ("<link name=\"${{g['sys'].modules['lxml.etree'].ElementTree(g['sys']"
-                   ".modules['lxml.etree'].Element('a')).write('{marker}') or 'x'}}\"/>"),
+    "lxml-write": (
+        "<link name=\"${{g['sys'].modules['lxml.etree'].ElementTree(g['sys']"
+        ".modules['lxml.etree'].Element('a')).write('{marker}') or 'x'}}\"/>"
+    ),
 }
 
 
 @pytest.mark.usefixtures("landlock")
 @pytest.mark.parametrize("escape", sorted(ESCAPES))
 def test_a_trusted_xacro_that_escapes_the_python_fence_still_writes_no_file(
-        escape: str, tmp_path: Path) -> None:
+    escape: str, tmp_path: Path
+) -> None:
     marker = tmp_path / "MARKER"
     path = tmp_path / "evil.xacro"
     path.write_text(escaping(ESCAPES[escape].format(marker=marker)))
@@ -138,14 +159,18 @@ def test_a_trusted_xacro_that_escapes_the_python_fence_still_writes_no_file(
 
 @pytest.mark.usefixtures("landlock")
 def test_a_trusted_xacro_that_escapes_the_python_fence_still_reads_no_file_outside(
-        tmp_path: Path) -> None:
+    tmp_path: Path,
+) -> None:
     secret = tmp_path / "secret.xml"
     secret.write_text("<secret>hunter2</secret>")
     (tmp_path / "pkg").mkdir()
     path = tmp_path / "pkg" / "evil.xacro"
-    path.write_text(escaping(
-        "<link name=\"${g['sys'].modules['lxml.etree'].parse('" + str(secret) + "')"
-        ".getroot().text}\"/>"))
+    path.write_text(
+        escaping(
+            "<link name=\"${g['sys'].modules['lxml.etree'].parse('" + str(secret) + "')"
+            '.getroot().text}"/>'
+        )
+    )
     with pytest.raises(InputError, match="Permission denied") as caught:
         compile_xacro(path, limits=LIMITS)
     assert "hunter2" not in str(caught.value)
@@ -153,14 +178,19 @@ def test_a_trusted_xacro_that_escapes_the_python_fence_still_reads_no_file_outsi
 
 @pytest.mark.usefixtures("landlock")
 def test_a_trusted_xacro_eval_that_runs_arbitrary_python_still_writes_no_file(
-        tmp_path: Path) -> None:
+    tmp_path: Path,
+) -> None:
     # $(eval) evaluates with Python's builtins; a property holding code gets past its lexer (no
     # ')' inside) and exec of hex-encoded code past its only check (no double underscore).
     marker = tmp_path / "MARKER"
     code = f"__import__('os').mknod({str(marker)!r})".encode().hex()
     path = tmp_path / "evil.xacro"
-    path.write_text(escaping(f"<xacro:property name=\"c\" value=\"exec(bytes.fromhex('{code}')"
-                             ".decode()) or 'x'\"/>\n  <link name=\"$(eval ${c})\"/>"))
+    path.write_text(
+        escaping(
+            f'<xacro:property name="c" value="exec(bytes.fromhex(\'{code}\')'
+            '.decode()) or \'x\'"/>\n  <link name="$(eval ${c})"/>'
+        )
+    )
     with pytest.raises(InputError, match="Permission denied"):
         compile_xacro(path, limits=LIMITS)
     assert not marker.exists()

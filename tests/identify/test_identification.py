@@ -43,18 +43,31 @@ def test_the_cache_answers_the_same_content_without_identifying_again() -> None:
 def test_the_content_key_changes_with_every_input() -> None:
     text = rover_text()
     topics = [TopicSource("master", (Topic("/cmd_vel", "geometry_msgs/Twist"),))]
-    keys = {content_key(text), content_key(text + " "), content_key(text, srdf_text="<robot/>"),
-            content_key(text, topics=topics), content_key(text, profile=load_profile())}
+    keys = {
+        content_key(text),
+        content_key(text + " "),
+        content_key(text, srdf_text="<robot/>"),
+        content_key(text, topics=topics),
+        content_key(text, profile=load_profile()),
+    }
     assert len(keys) == 5
 
 
 def test_topics_add_waypoint_to_what_the_description_shows() -> None:
-    topics = [TopicSource("live", (Topic("/move_base/goal", "move_base_msgs/MoveBaseActionGoal"),
-                                   Topic("/scan", "sensor_msgs/LaserScan", "published")))]
+    topics = [
+        TopicSource(
+            "live",
+            (
+                Topic("/move_base/goal", "move_base_msgs/MoveBaseActionGoal"),
+                Topic("/scan", "sensor_msgs/LaserScan", "published"),
+            ),
+        )
+    ]
     result = identify_urdf(rover_text(), topics=topics)
     assert [(c.motion_control, c.source) for c in result.motion_controls] == [
         ("Driving", "urdf: drive plugin libgazebo_ros_diff_drive.so"),
-        ("Waypoint", "live: /move_base/goal (move_base_msgs/MoveBaseActionGoal)")]
+        ("Waypoint", "live: /move_base/goal (move_base_msgs/MoveBaseActionGoal)"),
+    ]
     lidar = result.sensors[0]
     assert (lidar.kind, lidar.count, lidar.source) == ("lidar", 1, "urdf: laser; live: /scan")
 
@@ -64,10 +77,19 @@ def test_a_ugv_gets_a_ui_configuration_per_control_and_sensor_type() -> None:
     result = identify_urdf(rover_text())
     found = combinations(result, solution, load_profile())
     assert [dict(c.values) for c in found] == [
-        {"kinematic_type": "UGV", "motion_control": "Driving", "sensor_type": "LIDAR",
-         "sensor_count": "2"},
-        {"kinematic_type": "UGV", "motion_control": "Driving", "sensor_type": "2D Camera",
-         "sensor_count": "2"}]
+        {
+            "kinematic_type": "UGV",
+            "motion_control": "Driving",
+            "sensor_type": "LIDAR",
+            "sensor_count": "2",
+        },
+        {
+            "kinematic_type": "UGV",
+            "motion_control": "Driving",
+            "sensor_type": "2D Camera",
+            "sensor_count": "2",
+        },
+    ]
     numbers = [c.assignment.number for c in found]
     assert all(not c.assignment.is_default for c in found)
     assert numbers[0] != numbers[1]  # LIDAR and camera are presented differently
@@ -87,11 +109,21 @@ def test_a_quadruped_gets_the_default_configuration_with_the_reason() -> None:
 def test_the_json_contract_has_exactly_the_documented_keys() -> None:
     solution = solve(load_team(TEAMS / "case2.yaml"))
     result = identify_urdf(rover_text(), file="rover.urdf")
-    data = identification_data(result, combinations(result, solution, load_profile()),
-                               solution)
-    assert list(data) == ["robot", "file", "structure", "kinematic_type", "confidence",
-                          "evidence", "sensors", "motion_controls", "combinations"]
+    data = identification_data(result, combinations(result, solution, load_profile()), solution)
+    assert list(data) == [
+        "robot",
+        "file",
+        "structure",
+        "kinematic_type",
+        "confidence",
+        "evidence",
+        "sensors",
+        "motion_controls",
+        "combinations",
+    ]
     assert list(data["sensors"][0]) == ["kind", "sensor_type", "count", "source"]
     assert list(data["motion_controls"][0]) == ["motion_control", "source"]
-    assert data["combinations"][0]["configuration"] == \
-        combinations(result, solution, load_profile())[0].assignment.number
+    assert (
+        data["combinations"][0]["configuration"]
+        == combinations(result, solution, load_profile())[0].assignment.number
+    )

@@ -14,17 +14,22 @@ SHIPPED = (RULES / "identification.yaml").read_text(encoding="utf-8")
 def test_the_shipped_profile_loads_with_its_structures_in_order() -> None:
     profile = load_profile()
     assert profile.structure_names[-1] == "Other"
-    assert {"Quadruped", "Biped", "Hand", "Aerial Manipulator",
-            "Legged Mobile Manipulator"} <= set(profile.structure_names)
+    assert {"Quadruped", "Biped", "Hand", "Aerial Manipulator", "Legged Mobile Manipulator"} <= set(
+        profile.structure_names
+    )
     assert profile.role("sensor_type") == "sensor_type"
 
 
 def test_every_problem_of_a_profile_is_reported_with_its_location() -> None:
-    text = (SHIPPED.replace("  wheel: 'wheel'", "  wheel: '(unclosed'")
-            .replace("when: {legs: {min: 4}, arms: 0}", "when: {paws: 4, arms: 0}")
-            .replace("doubt_factor: 0.8", "doubt_factor: 3")
-            .replace("{kind: imu, types: [sensor_msgs/Imu]}",
-                     "{kind: imu, types: [sensor_msgs/Imu], direction: sideways}"))
+    text = (
+        SHIPPED.replace("  wheel: 'wheel'", "  wheel: '(unclosed'")
+        .replace("when: {legs: {min: 4}, arms: 0}", "when: {paws: 4, arms: 0}")
+        .replace("doubt_factor: 0.8", "doubt_factor: 3")
+        .replace(
+            "{kind: imu, types: [sensor_msgs/Imu]}",
+            "{kind: imu, types: [sensor_msgs/Imu], direction: sideways}",
+        )
+    )
     with pytest.raises(ProfileError) as caught:
         parse_profile(parse_document(text, "mine.yaml"))
     found = {f.location.path: f for f in caught.value.faults}
@@ -32,20 +37,19 @@ def test_every_problem_of_a_profile_is_reported_with_its_location() -> None:
     assert "unknown feature 'paws'" in found["structures[4].when.paws"].message
     assert "doubt_factor" in found["doubt_factor"].message
     assert any("direction must be one of" in f.message for f in caught.value.faults)
-    assert all(f.location.file == "mine.yaml" and f.location.line for f in
-               caught.value.faults)
+    assert all(f.location.file == "mine.yaml" and f.location.line for f in caught.value.faults)
     assert len(caught.value.faults) == 4
 
 
 def test_unknown_keys_and_unknown_structures_are_named() -> None:
     text = SHIPPED.replace("doubt_factor: 0.8", "doubt_factor: 0.8\nthreshold: 3").replace(
-        "      Quadruped: Walking", "      Quadropod: Walking")
+        "      Quadruped: Walking", "      Quadropod: Walking"
+    )
     with pytest.raises(ProfileError) as caught:
         parse_profile(parse_document(text, "p.yaml"))
     messages = [f.message for f in caught.value.faults]
     assert any("unknown profile field 'threshold'" in m for m in messages)
-    assert any("unknown structure 'Quadropod' (did you mean 'Quadruped'?)" in m
-               for m in messages)
+    assert any("unknown structure 'Quadropod' (did you mean 'Quadruped'?)" in m for m in messages)
 
 
 def test_a_profile_that_is_not_a_mapping_is_refused() -> None:

@@ -11,18 +11,28 @@ from solver.errors import InputError
 from solver.identify.safexml import MAX_XML_BYTES, parse_xml, read_xml
 from tests.conftest import run_cli
 
-LAUGHS = ('<?xml version="1.0"?>\n<!DOCTYPE lolz [\n <!ENTITY lol "lol">\n'
-          + "".join(f' <!ENTITY lol{i} "{("&lol" + str(i - 1) + ";") * 10}">\n'
-                    for i in range(1, 10)).replace("&lol0;", "&lol;")
-          + ']>\n<robot name="&lol9;"/>\n')
-QUADRATIC = ('<?xml version="1.0"?>\n<!DOCTYPE r [<!ENTITY a "' + "x" * 50_000 + '">]>\n'
-             '<robot name="q">' + "&a;" * 50_000 + "</robot>\n")
-EXTERNAL = ('<?xml version="1.0"?>\n<!DOCTYPE r [\n<!ENTITY xxe SYSTEM "file:///etc/passwd">\n]>'
-            '\n<robot name="&xxe;"/>\n')
+LAUGHS = (
+    '<?xml version="1.0"?>\n<!DOCTYPE lolz [\n <!ENTITY lol "lol">\n'
+    + "".join(
+        f' <!ENTITY lol{i} "{("&lol" + str(i - 1) + ";") * 10}">\n' for i in range(1, 10)
+    ).replace("&lol0;", "&lol;")
+    + ']>\n<robot name="&lol9;"/>\n'
+)
+QUADRATIC = (
+    '<?xml version="1.0"?>\n<!DOCTYPE r [<!ENTITY a "' + "x" * 50_000 + '">]>\n'
+    '<robot name="q">' + "&a;" * 50_000 + "</robot>\n"
+)
+EXTERNAL = (
+    '<?xml version="1.0"?>\n<!DOCTYPE r [\n<!ENTITY xxe SYSTEM "file:///etc/passwd">\n]>'
+    '\n<robot name="&xxe;"/>\n'
+)
 
 
-@pytest.mark.parametrize("text", [LAUGHS, QUADRATIC, EXTERNAL],
-                         ids=["billion-laughs", "quadratic-blowup", "external-entity"])
+@pytest.mark.parametrize(
+    "text",
+    [LAUGHS, QUADRATIC, EXTERNAL],
+    ids=["billion-laughs", "quadratic-blowup", "external-entity"],
+)
 def test_entity_declarations_are_refused_with_their_line(text: str) -> None:
     with pytest.raises(InputError) as caught:
         parse_xml(text, "bomb.urdf")
@@ -67,8 +77,11 @@ def test_an_empty_file_and_a_folder_are_refused(tmp_path: Path) -> None:
         read_xml(tmp_path)
 
 
-@pytest.mark.parametrize("text", [LAUGHS, QUADRATIC, EXTERNAL],
-                         ids=["billion-laughs", "quadratic-blowup", "external-entity"])
+@pytest.mark.parametrize(
+    "text",
+    [LAUGHS, QUADRATIC, EXTERNAL],
+    ids=["billion-laughs", "quadratic-blowup", "external-entity"],
+)
 def test_the_cli_refuses_bombs_with_exit_2_and_no_traceback(tmp_path: Path, text: str) -> None:
     path = tmp_path / "bomb.urdf"
     path.write_text(text, encoding="utf-8")

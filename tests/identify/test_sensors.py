@@ -12,8 +12,10 @@ from solver.yamlio import parse_document
 from tests.conftest import RULES
 from tests.identify import builders
 
-RAY = ("<ray><scan><horizontal><samples>{h}</samples></horizontal>"
-       "<vertical><samples>{v}</samples></vertical></scan></ray>")
+RAY = (
+    "<ray><scan><horizontal><samples>{h}</samples></horizontal>"
+    "<vertical><samples>{v}</samples></vertical></scan></ray>"
+)
 
 
 def kinds(*sensors: str) -> list[tuple[str, str | None, int]]:
@@ -23,34 +25,59 @@ def kinds(*sensors: str) -> list[tuple[str, str | None, int]]:
     return [(s.kind, s.sensor_type, s.count) for s in identify_urdf(robot.text()).sensors]
 
 
-@pytest.mark.parametrize(("element", "expected"), [
-    (builders.gazebo_sensor("cam", "camera", "front_camera", plugin="libgazebo_ros_camera.so"),
-     ("camera", "2D Camera", 1)),
-    (builders.gazebo_sensor("cam", "depth", "kinect", plugin="libgazebo_ros_openni_kinect.so"),
-     ("depth_camera", "RGB-D Camera", 1)),
-    (builders.gazebo_sensor("cam", "multicamera", "stereo"), ("stereo_camera", "3D Camera", 1)),
-    (builders.gazebo_sensor("cam", "wideanglecamera", "fisheye"),
-     ("wide_angle_camera", "360 Camera", 1)),
-    (builders.gazebo_sensor("laser", "ray", "hokuyo", RAY.format(h=720, v=1)),
-     ("lidar", "LIDAR", 1)),
-    (builders.gazebo_sensor("laser", "gpu_ray", "velodyne", RAY.format(h=1800, v=16)),
-     ("lidar", "LIDAR", 1)),
-    (builders.gazebo_sensor("front", "ray", "sonar_front", plugin="libgazebo_ros_range.so"),
-     ("sonar", None, 1)),
-    (builders.gazebo_sensor("cliff_left", "ray", "cliff_sensor_left"), ("ir_range", None, 1)),
-    (builders.gazebo_sensor("wrist", "force_torque", "ft"), ("force_torque", "Force Sensor", 1)),
-    (builders.gazebo_sensor("bumper", "contact", "bumper"), ("contact", "Force Sensor", 1)),
-    (builders.gazebo_sensor("imu_link", "imu", "imu"), ("imu", None, 1)),
-    (builders.gazebo_sensor("gps_link", "gps", "gps"), ("gps", None, 1)),
-])
+@pytest.mark.parametrize(
+    ("element", "expected"),
+    [
+        (
+            builders.gazebo_sensor(
+                "cam", "camera", "front_camera", plugin="libgazebo_ros_camera.so"
+            ),
+            ("camera", "2D Camera", 1),
+        ),
+        (
+            builders.gazebo_sensor(
+                "cam", "depth", "kinect", plugin="libgazebo_ros_openni_kinect.so"
+            ),
+            ("depth_camera", "RGB-D Camera", 1),
+        ),
+        (builders.gazebo_sensor("cam", "multicamera", "stereo"), ("stereo_camera", "3D Camera", 1)),
+        (
+            builders.gazebo_sensor("cam", "wideanglecamera", "fisheye"),
+            ("wide_angle_camera", "360 Camera", 1),
+        ),
+        (
+            builders.gazebo_sensor("laser", "ray", "hokuyo", RAY.format(h=720, v=1)),
+            ("lidar", "LIDAR", 1),
+        ),
+        (
+            builders.gazebo_sensor("laser", "gpu_ray", "velodyne", RAY.format(h=1800, v=16)),
+            ("lidar", "LIDAR", 1),
+        ),
+        (
+            builders.gazebo_sensor("front", "ray", "sonar_front", plugin="libgazebo_ros_range.so"),
+            ("sonar", None, 1),
+        ),
+        (builders.gazebo_sensor("cliff_left", "ray", "cliff_sensor_left"), ("ir_range", None, 1)),
+        (
+            builders.gazebo_sensor("wrist", "force_torque", "ft"),
+            ("force_torque", "Force Sensor", 1),
+        ),
+        (builders.gazebo_sensor("bumper", "contact", "bumper"), ("contact", "Force Sensor", 1)),
+        (builders.gazebo_sensor("imu_link", "imu", "imu"), ("imu", None, 1)),
+        (builders.gazebo_sensor("gps_link", "gps", "gps"), ("gps", None, 1)),
+    ],
+)
 def test_each_sensor_element_maps_to_its_kind_and_sensor_type(
-        element: str, expected: tuple[str, str | None, int]) -> None:
+    element: str, expected: tuple[str, str | None, int]
+) -> None:
     assert kinds(element) == [expected]
 
 
 def test_a_urdf_sensor_element_is_read_too() -> None:
-    element = ('  <sensor name="head_cam" update_rate="30"><parent link="base_link"/>'
-               "<camera><image width=\"640\" height=\"480\"/></camera></sensor>")
+    element = (
+        '  <sensor name="head_cam" update_rate="30"><parent link="base_link"/>'
+        '<camera><image width="640" height="480"/></camera></sensor>'
+    )
     assert kinds(element) == [("camera", "2D Camera", 1)]
 
 
@@ -60,17 +87,25 @@ def test_model_plugins_count_as_sensors_but_ground_truth_does_not() -> None:
         builders.model_plugin("gps_sim", "libhector_gazebo_ros_gps.so"),
         builders.model_plugin("baro", "libhector_gazebo_ros_baro.so"),
         builders.model_plugin("groundtruth", "libgazebo_ros_p3d.so"),
-        builders.model_plugin("imugt_plugin", "librotors_gazebo_imu_plugin.so",
-                              "<linkName>imugt_link</linkName>"),
-        builders.model_plugin("odometry_sensor", "librotors_gazebo_odometry_plugin.so",
-                              "<linkName>ground_truth/odometry_link</linkName>"))
+        builders.model_plugin(
+            "imugt_plugin", "librotors_gazebo_imu_plugin.so", "<linkName>imugt_link</linkName>"
+        ),
+        builders.model_plugin(
+            "odometry_sensor",
+            "librotors_gazebo_odometry_plugin.so",
+            "<linkName>ground_truth/odometry_link</linkName>",
+        ),
+    )
     assert found == [("imu", None, 1), ("gps", None, 1), ("barometer", None, 1)]
 
 
 def test_a_plugin_feeding_a_counted_element_is_the_same_sensor() -> None:
-    found = kinds(builders.gazebo_sensor("imu_link", "imu", "imu"),
-                  builders.model_plugin("imu_plugin", "libgazebo_ros_imu.so",
-                                        "<bodyName>imu_link</bodyName>"))
+    found = kinds(
+        builders.gazebo_sensor("imu_link", "imu", "imu"),
+        builders.model_plugin(
+            "imu_plugin", "libgazebo_ros_imu.so", "<bodyName>imu_link</bodyName>"
+        ),
+    )
     assert found == [("imu", None, 1)]
 
 
@@ -86,15 +121,20 @@ def test_counts_add_up_per_kind_and_only_presented_sensors_count() -> None:
 
 
 def test_a_profile_can_map_lidars_by_their_scan_planes() -> None:
-    text = (RULES / "identification.yaml").read_text(encoding="utf-8").replace(
-        "  lidar: LIDAR", "  lidar: {single_plane: 2D Scanning, multi_plane: 3D Scanning}")
+    text = (
+        (RULES / "identification.yaml")
+        .read_text(encoding="utf-8")
+        .replace("  lidar: LIDAR", "  lidar: {single_plane: 2D Scanning, multi_plane: 3D Scanning}")
+    )
     profile = parse_profile(parse_document(text, "planes.yaml"))
     robot = builders.ugv()
     robot.add(builders.gazebo_sensor("a", "ray", "planar", RAY.format(h=720, v=1)))
     robot.add(builders.gazebo_sensor("b", "gpu_ray", "vlp16", RAY.format(h=1800, v=16)))
     result = identify_urdf(robot.text(), profile=profile)
-    assert [(s.sensor_type, s.count) for s in result.sensors] == [("2D Scanning", 1),
-                                                                   ("3D Scanning", 1)]
+    assert [(s.sensor_type, s.count) for s in result.sensors] == [
+        ("2D Scanning", 1),
+        ("3D Scanning", 1),
+    ]
 
 
 def test_an_unknown_sensor_type_is_listed_under_its_own_name() -> None:
@@ -106,7 +146,9 @@ def test_an_unknown_sensor_type_is_listed_under_its_own_name() -> None:
 
 def test_a_sensor_declared_in_gazebo_and_as_a_urdf_sensor_on_its_joint_counts_once() -> None:
     # builders.ugv() has wheel_left_link: the camera sits on it for this test.
-    assert kinds(builders.gazebo_sensor("wheel_left_link", "camera", "front_camera"),
-                 '  <sensor name="front_camera_urdf" update_rate="30">'
-                 '<parent joint="wheel_left_joint"/><camera><image width="640" height="480"/>'
-                 "</camera></sensor>") == [("camera", "2D Camera", 1)]
+    assert kinds(
+        builders.gazebo_sensor("wheel_left_link", "camera", "front_camera"),
+        '  <sensor name="front_camera_urdf" update_rate="30">'
+        '<parent joint="wheel_left_joint"/><camera><image width="640" height="480"/>'
+        "</camera></sensor>",
+    ) == [("camera", "2D Camera", 1)]

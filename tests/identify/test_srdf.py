@@ -25,29 +25,35 @@ def test_srdf_groups_give_joint_and_end_effector_controls() -> None:
     result = identify_urdf(builders.manipulator().text(), srdf_text=SRDF, srdf_file="arm.srdf")
     assert [(c.motion_control, c.source) for c in result.motion_controls] == [
         ("Joint", "arm.srdf: planning group(s) manipulator"),
-        ("End Effector", "arm.srdf: planning group(s) manipulator; "
-                         "arm.srdf: end effector(s) gripper")]
-    assert any(line.startswith("SRDF: 1 arm planning group(s) (manipulator)")
-               for line in result.evidence)
+        (
+            "End Effector",
+            "arm.srdf: planning group(s) manipulator; arm.srdf: end effector(s) gripper",
+        ),
+    ]
+    assert any(
+        line.startswith("SRDF: 1 arm planning group(s) (manipulator)") for line in result.evidence
+    )
 
 
 def test_srdf_names_missing_from_the_urdf_are_all_reported() -> None:
     urdf = parse_urdf(builders.manipulator().text())
-    text = SRDF.replace("wrist_3_link", "tool9").replace('name="gripper_finger_left"',
-                                                          'name="ghost_joint"')
+    text = SRDF.replace("wrist_3_link", "tool9").replace(
+        'name="gripper_finger_left"', 'name="ghost_joint"'
+    )
     with pytest.raises(InputError) as caught:
         parse_srdf(text, "arm.srdf", urdf)
     messages = [str(f) for f in caught.value.faults]
     assert len(messages) == 3
-    assert any("arm.srdf:3: group[manipulator].chain.tip_link: link 'tool9'" in m
-               for m in messages)
+    assert any("arm.srdf:3: group[manipulator].chain.tip_link: link 'tool9'" in m for m in messages)
     assert any("joint 'ghost_joint'" in m for m in messages)
 
 
 def test_an_srdf_that_disagrees_about_the_arms_lowers_confidence() -> None:
-    text = SRDF.replace('<group name="hand">',
-                        '<group name="second"><chain base_link="base_link" '
-                        'tip_link="shoulder_lift_link"/></group><group name="hand">')
+    text = SRDF.replace(
+        '<group name="hand">',
+        '<group name="second"><chain base_link="base_link" '
+        'tip_link="shoulder_lift_link"/></group><group name="hand">',
+    )
     plain = identify_urdf(builders.manipulator().text(), srdf_text=SRDF)
     doubted = identify_urdf(builders.manipulator().text(), srdf_text=text)
     assert doubted.confidence < plain.confidence
@@ -56,8 +62,10 @@ def test_an_srdf_that_disagrees_about_the_arms_lowers_confidence() -> None:
 
 def test_a_planar_virtual_joint_makes_a_mobile_base() -> None:
     text = SRDF.replace('type="fixed"', 'type="planar"')
-    assert identify_urdf(builders.manipulator().text(), srdf_text=text).structure == \
-        "Mobile Manipulator"
+    assert (
+        identify_urdf(builders.manipulator().text(), srdf_text=text).structure
+        == "Mobile Manipulator"
+    )
 
 
 def test_an_unknown_virtual_joint_type_is_refused() -> None:

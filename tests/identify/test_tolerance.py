@@ -37,15 +37,19 @@ def warnings_of(text: str) -> list[str]:
 
 def attachment() -> str:
     """A gripper described alone: its joint names the arm's flange, which is not here."""
-    return ('<robot name="r">\n<link name="finger"/>\n'
-            '<joint name="j" type="prismatic">\n<parent link="flange"/>\n'
-            '<child link="finger"/>\n<limit lower="0" upper="1"/>\n</joint>\n</robot>\n')
+    return (
+        '<robot name="r">\n<link name="finger"/>\n'
+        '<joint name="j" type="prismatic">\n<parent link="flange"/>\n'
+        '<child link="finger"/>\n<limit lower="0" upper="1"/>\n</joint>\n</robot>\n'
+    )
 
 
 def two_links(joint_type: str = "revolute", parent: str = "a", child: str = "b") -> str:
-    return ('<robot name="r">\n<link name="a"/>\n<link name="b"/>\n'
-            f'<joint name="j" type="{joint_type}">\n<parent link="{parent}"/>\n'
-            f'<child link="{child}"/>\n</joint>\n</robot>\n')
+    return (
+        '<robot name="r">\n<link name="a"/>\n<link name="b"/>\n'
+        f'<joint name="j" type="{joint_type}">\n<parent link="{parent}"/>\n'
+        f'<child link="{child}"/>\n</joint>\n</robot>\n'
+    )
 
 
 def test_an_srdf_group_may_list_the_srdfs_own_virtual_joint() -> None:
@@ -57,10 +61,12 @@ def test_an_srdf_group_may_list_the_srdfs_own_virtual_joint() -> None:
 
 def test_srdf_items_the_urdf_lacks_are_dropped_with_a_warning_and_the_rest_kept() -> None:
     urdf = parse_urdf(builders.manipulator().text())
-    text = ARM_SRDF.format(extra='<joint name="other_variant_joint"/>\n'
-                                 '    <link name="other_variant_link"/>\n'
-                                 '    <group name="no_such_group"/>',
-                           groups='<group name="tool"><link name="prefix_tool0"/></group>')
+    text = ARM_SRDF.format(
+        extra='<joint name="other_variant_joint"/>\n'
+        '    <link name="other_variant_link"/>\n'
+        '    <group name="no_such_group"/>',
+        groups='<group name="tool"><link name="prefix_tool0"/></group>',
+    )
     srdf = parse_srdf(text, "arm.srdf", urdf, strict=False)
     arm = srdf.group("arm")
     assert arm is not None
@@ -83,8 +89,9 @@ def test_an_srdf_of_another_variant_still_identifies_the_robot_with_warnings() -
 
 def test_a_joint_whose_parent_link_is_missing_is_read_as_an_attachment() -> None:
     found = warnings_of(attachment())
-    assert found == ["r.urdf:4: joint[j].parent: joint 'j' names parent link 'flange', "
-                     "which does not exist"]
+    assert found == [
+        "r.urdf:4: joint[j].parent: joint 'j' names parent link 'flange', which does not exist"
+    ]
     urdf = parse_urdf(attachment(), "r.urdf", strict=False)
     assert urdf.root == "flange"
     assert [j.name for j in urdf.joints] == ["j"]
@@ -96,11 +103,13 @@ def test_a_duplicate_link_is_a_warning_and_the_first_is_kept() -> None:
 
 
 def test_a_link_with_two_parents_keeps_the_first_joint() -> None:
-    text = ('<robot name="r">\n<link name="a"/>\n<link name="b"/>\n<link name="c"/>\n'
-            '<joint name="j1" type="fixed"><parent link="a"/><child link="c"/></joint>\n'
-            '<joint name="j2" type="fixed"><parent link="b"/><child link="c"/></joint>\n'
-            '<joint name="j3" type="fixed"><parent link="a"/><child link="b"/></joint>\n'
-            "</robot>")
+    text = (
+        '<robot name="r">\n<link name="a"/>\n<link name="b"/>\n<link name="c"/>\n'
+        '<joint name="j1" type="fixed"><parent link="a"/><child link="c"/></joint>\n'
+        '<joint name="j2" type="fixed"><parent link="b"/><child link="c"/></joint>\n'
+        '<joint name="j3" type="fixed"><parent link="a"/><child link="b"/></joint>\n'
+        "</robot>"
+    )
     urdf = parse_urdf(text, "r.urdf", strict=False)
     assert [j.name for j in urdf.joints] == ["j1", "j3"]
     assert [w.location.line for w in urdf.warnings] == [6]
@@ -108,8 +117,10 @@ def test_a_link_with_two_parents_keeps_the_first_joint() -> None:
 
 
 def test_an_undeclared_namespace_prefix_is_read_with_a_warning() -> None:
-    text = ('<?xml version="1.0"?>\n<robot name="r">\n<xacro:property name="x" value="1"/>\n'
-            '<link name="a"/>\n</robot>\n')
+    text = (
+        '<?xml version="1.0"?>\n<robot name="r">\n<xacro:property name="x" value="1"/>\n'
+        '<link name="a"/>\n</robot>\n'
+    )
     urdf = parse_urdf(text, "r.urdf", strict=False)
     assert urdf.root == "a"
     assert (3, "xml-namespace") in [(w.location.line, w.code) for w in urdf.warnings]
@@ -121,16 +132,19 @@ def test_an_xml_version_0_0_is_read_as_xml_1_0() -> None:
 
 
 def test_blank_lines_before_the_xml_declaration_keep_every_line_number() -> None:
-    text = "\n\n\n<?xml version=\"1.0\"?>\n" + two_links(parent="ghost")
+    text = '\n\n\n<?xml version="1.0"?>\n' + two_links(parent="ghost")
     found = warnings_of(text)
-    assert found[0] == ("r.urdf:4: the XML declaration is not at the start of the document "
-                        "(blank lines before it); read anyway")
+    assert found[0] == (
+        "r.urdf:4: the XML declaration is not at the start of the document "
+        "(blank lines before it); read anyway"
+    )
     assert found[1].startswith("r.urdf:9: joint[j].parent:")
 
 
 def test_a_trailing_nul_byte_is_ignored_with_a_warning() -> None:
     assert warnings_of(two_links() + "\x00") == [
-        "r.urdf:9: NUL byte(s) after the end of the document ignored"]
+        "r.urdf:9: NUL byte(s) after the end of the document ignored"
+    ]
 
 
 def test_a_spherical_joint_is_read_as_a_ball_joint_with_a_warning() -> None:
@@ -143,16 +157,20 @@ def test_a_spherical_joint_is_read_as_a_ball_joint_with_a_warning() -> None:
     result = identify_urdf(robot.text(), file="h.urdf")
     # A ball-joint shoulder and an elbow: an arm of four degrees of freedom.
     assert (result.structure, result.body.count("arm")) == ("Humanoid", 2)  # type: ignore[union-attr]
-    assert {w.message.split(";")[0] for w in result.warnings} == {
-        "unknown joint type 'spherical'"}
+    assert {w.message.split(";")[0] for w in result.warnings} == {"unknown joint type 'spherical'"}
 
 
 def test_a_non_finite_scan_sample_count_is_a_warning_not_a_crash() -> None:
     for value in ("inf", "1e999", "nan"):
         robot = builders.ugv()
-        robot.add(builders.gazebo_sensor(
-            "base_link", "ray", "laser",
-            f"<ray><scan><horizontal><samples>{value}</samples></horizontal></scan></ray>"))
+        robot.add(
+            builders.gazebo_sensor(
+                "base_link",
+                "ray",
+                "laser",
+                f"<ray><scan><horizontal><samples>{value}</samples></horizontal></scan></ray>",
+            )
+        )
         result = identify_urdf(robot.text(), file="rover.urdf")
         assert [s.kind for s in result.sensors] == ["lidar"]
         assert [w.code for w in result.warnings] == ["urdf-number"]
@@ -163,9 +181,14 @@ def test_json_and_text_output_carry_the_warnings(tmp_path: Path) -> None:
     path = tmp_path / "r.urdf"
     path.write_text(attachment(), encoding="utf-8")
     shown = json.loads(run_cli("identify", path, "--format", "json").stdout)
-    assert shown["warnings"] == [{"file": str(path), "line": 4, "message":
-                                  "joint[j].parent: joint 'j' names parent link 'flange', "
-                                  "which does not exist"}]
+    assert shown["warnings"] == [
+        {
+            "file": str(path),
+            "line": 4,
+            "message": "joint[j].parent: joint 'j' names parent link 'flange', "
+            "which does not exist",
+        }
+    ]
     text = run_cli("identify", path).stdout
     assert f"  warning: {path}:4: joint[j].parent: joint 'j' names parent link 'flange'" in text
 
@@ -180,18 +203,26 @@ def test_strict_turns_warnings_into_errors_with_exit_2(tmp_path: Path) -> None:
     assert "Traceback" not in result.stderr
 
 
-@pytest.mark.parametrize(("text", "expected"), [
-    ("this is not XML", "malformed XML"),
-    ('<robot name="e"/>', "no links"),
-    ('<!DOCTYPE r [<!ENTITY a "aaaa">]><robot name="r"><link name="&a;"/></robot>',
-     "entity declarations are refused"),
-    ('<robot name="r"><link name="a"/><link name="b"/>'
-     '<joint name="j1" type="fixed"><parent link="a"/><child link="b"/></joint>'
-     '<joint name="j2" type="fixed"><parent link="b"/><child link="a"/></joint></robot>',
-     "no root link"),
-])
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("this is not XML", "malformed XML"),
+        ('<robot name="e"/>', "no links"),
+        (
+            '<!DOCTYPE r [<!ENTITY a "aaaa">]><robot name="r"><link name="&a;"/></robot>',
+            "entity declarations are refused",
+        ),
+        (
+            '<robot name="r"><link name="a"/><link name="b"/>'
+            '<joint name="j1" type="fixed"><parent link="a"/><child link="b"/></joint>'
+            '<joint name="j2" type="fixed"><parent link="b"/><child link="a"/></joint></robot>',
+            "no root link",
+        ),
+    ],
+)
 def test_only_a_description_that_cannot_be_read_at_all_exits_2(
-        tmp_path: Path, text: str, expected: str) -> None:
+    tmp_path: Path, text: str, expected: str
+) -> None:
     path = tmp_path / "bad.urdf"
     path.write_text(text, encoding="utf-8")
     result = run_cli("identify", path)
@@ -201,7 +232,8 @@ def test_only_a_description_that_cannot_be_read_at_all_exits_2(
 
 
 def test_a_description_past_the_size_cap_is_refused_at_the_first_element_beyond(
-        monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
     from solver.identify import urdf as module
 
     monkeypatch.setattr(module, "MAX_PARTS", 3)

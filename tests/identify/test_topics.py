@@ -25,12 +25,14 @@ def test_rostopic_list_v_sections_give_directions() -> None:
     assert parse_topic_list(ROSTOPIC_V) == (
         Topic("/scan", "sensor_msgs/LaserScan", "published"),
         Topic("/camera/rgb/image_raw", "sensor_msgs/Image", "published"),
-        Topic("/cmd_vel", "geometry_msgs/Twist", "subscribed"))
+        Topic("/cmd_vel", "geometry_msgs/Twist", "subscribed"),
+    )
 
 
 def test_ros2_topic_list_t_is_normalised_to_ros1_spelling() -> None:
-    text = ("/scan [sensor_msgs/msg/LaserScan]\n"
-            "/parameter_events [rcl_interfaces/msg/ParameterEvent]\n")
+    text = (
+        "/scan [sensor_msgs/msg/LaserScan]\n/parameter_events [rcl_interfaces/msg/ParameterEvent]\n"
+    )
     assert parse_topic_list(text)[0] == Topic("/scan", "sensor_msgs/LaserScan")
 
 
@@ -61,10 +63,13 @@ names = st.from_regex(r"/[a-z][a-z0-9_]{0,8}(/[a-z][a-z0-9_]{0,8}){0,3}", fullma
 types = st.from_regex(r"[a-z][a-z_]{0,8}_msgs/[A-Z][A-Za-z0-9]{0,10}", fullmatch=True)
 
 
-@given(st.lists(st.tuples(names, types), min_size=1, max_size=20),
-       st.sampled_from(["{n} [{t}]", "{n} {t}", " * {n} [{t}] 1 publisher"]))
-def test_any_list_of_pairs_reads_back_in_every_format(pairs: list[tuple[str, str]],
-                                                       line: str) -> None:
+@given(
+    st.lists(st.tuples(names, types), min_size=1, max_size=20),
+    st.sampled_from(["{n} [{t}]", "{n} {t}", " * {n} [{t}] 1 publisher"]),
+)
+def test_any_list_of_pairs_reads_back_in_every_format(
+    pairs: list[tuple[str, str]], line: str
+) -> None:
     text = "\n".join(line.format(n=n, t=t) for n, t in pairs)
     assert [(t.name, t.type) for t in parse_topic_list(text)] == pairs
 

@@ -21,8 +21,11 @@ def faults(text: str) -> list[str]:
 def test_parse_urdf_reads_links_joints_sensors_and_plugins() -> None:
     robot = builders.ugv()
     robot.add(builders.gazebo_sensor("base_link", "ray", "laser"))
-    robot.add(builders.model_plugin("imu", "libhector_gazebo_ros_imu.so",
-                                    "<bodyName>base_link</bodyName>"))
+    robot.add(
+        builders.model_plugin(
+            "imu", "libhector_gazebo_ros_imu.so", "<bodyName>base_link</bodyName>"
+        )
+    )
     urdf = parse_urdf(robot.text(), "rover.urdf")
     assert urdf.root == "base_link"
     assert urdf.name == "rover"
@@ -34,17 +37,22 @@ def test_parse_urdf_reads_links_joints_sensors_and_plugins() -> None:
 
 
 def test_a_joint_naming_a_missing_link_is_located_at_that_element() -> None:
-    text = '<robot name="r">\n<link name="a"/>\n<joint name="j" type="fixed">\n' \
-           '<parent link="a"/>\n<child link="ghost"/>\n</joint>\n</robot>'
-    assert faults(text) == ["r.urdf:5: joint[j].child: joint 'j' names child link 'ghost', "
-                            "which does not exist"]
+    text = (
+        '<robot name="r">\n<link name="a"/>\n<joint name="j" type="fixed">\n'
+        '<parent link="a"/>\n<child link="ghost"/>\n</joint>\n</robot>'
+    )
+    assert faults(text) == [
+        "r.urdf:5: joint[j].child: joint 'j' names child link 'ghost', which does not exist"
+    ]
 
 
 def test_every_problem_of_a_file_is_reported_at_once() -> None:
-    text = ('<robot name="r">\n<link name="a"/>\n<link name="a"/>\n'
-            '<joint name="j1" type="hinge"><parent link="a"/><child link="b"/></joint>\n'
-            '<joint name="j2" type="fixed"><parent link="x"/><child link="a"/></joint>\n'
-            "</robot>")
+    text = (
+        '<robot name="r">\n<link name="a"/>\n<link name="a"/>\n'
+        '<joint name="j1" type="hinge"><parent link="a"/><child link="b"/></joint>\n'
+        '<joint name="j2" type="fixed"><parent link="x"/><child link="a"/></joint>\n'
+        "</robot>"
+    )
     found = faults(text)
     assert len(found) == 4
     assert any("duplicate link 'a'" in f for f in found)
@@ -54,18 +62,22 @@ def test_every_problem_of_a_file_is_reported_at_once() -> None:
 
 
 def test_a_cycle_is_reported() -> None:
-    text = ('<robot name="r"><link name="root"/><link name="a"/><link name="b"/>\n'
-            '<joint name="j1" type="fixed"><parent link="a"/><child link="b"/></joint>\n'
-            '<joint name="j2" type="fixed"><parent link="b"/><child link="a"/></joint>\n'
-            "</robot>")
+    text = (
+        '<robot name="r"><link name="root"/><link name="a"/><link name="b"/>\n'
+        '<joint name="j1" type="fixed"><parent link="a"/><child link="b"/></joint>\n'
+        '<joint name="j2" type="fixed"><parent link="b"/><child link="a"/></joint>\n'
+        "</robot>"
+    )
     assert any("cycle" in f for f in faults(text))
 
 
 def test_a_link_with_two_parents_is_reported() -> None:
-    text = ('<robot name="r"><link name="a"/><link name="b"/><link name="c"/>\n'
-            '<joint name="j1" type="fixed"><parent link="a"/><child link="c"/></joint>\n'
-            '<joint name="j2" type="fixed"><parent link="b"/><child link="c"/></joint>\n'
-            "</robot>")
+    text = (
+        '<robot name="r"><link name="a"/><link name="b"/><link name="c"/>\n'
+        '<joint name="j1" type="fixed"><parent link="a"/><child link="c"/></joint>\n'
+        '<joint name="j2" type="fixed"><parent link="b"/><child link="c"/></joint>\n'
+        "</robot>"
+    )
     assert any("two parent joints" in f for f in faults(text))
 
 
@@ -79,22 +91,30 @@ def test_a_document_that_is_not_a_robot_is_refused() -> None:
 
 
 def test_a_self_joint_and_a_bad_limit_are_reported() -> None:
-    text = ('<robot name="r"><link name="a"/>\n'
-            '<joint name="j" type="revolute"><parent link="a"/><child link="a"/>'
-            '<limit lower="x"/></joint></robot>')
+    text = (
+        '<robot name="r"><link name="a"/>\n'
+        '<joint name="j" type="revolute"><parent link="a"/><child link="a"/>'
+        '<limit lower="x"/></joint></robot>'
+    )
     assert any("to itself" in f for f in faults(text))
 
 
-@pytest.mark.parametrize(("text", "expected"), [
-    ('<robot name="r"><link name="a"/><link name="b"/>'
-     '<joint name="j" type="ball"><parent link="a"/><child link="b"/></joint></robot>',
-     "unknown joint type 'ball'"),
-    ('<robot name="r"><link name="a"/><link name="b"/></robot>', "2 root links"),
-    ('<robot name="e"/>', "empty robot"),
-    ('<robot name="r"><link name="a"></robot>', "malformed XML"),
-])
-def test_the_cli_with_strict_reports_flawed_urdfs_with_exit_2(tmp_path: Path, text: str,
-                                                              expected: str) -> None:
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        (
+            '<robot name="r"><link name="a"/><link name="b"/>'
+            '<joint name="j" type="ball"><parent link="a"/><child link="b"/></joint></robot>',
+            "unknown joint type 'ball'",
+        ),
+        ('<robot name="r"><link name="a"/><link name="b"/></robot>', "2 root links"),
+        ('<robot name="e"/>', "empty robot"),
+        ('<robot name="r"><link name="a"></robot>', "malformed XML"),
+    ],
+)
+def test_the_cli_with_strict_reports_flawed_urdfs_with_exit_2(
+    tmp_path: Path, text: str, expected: str
+) -> None:
     path = tmp_path / "bad.urdf"
     path.write_text(text, encoding="utf-8")
     result = run_cli("identify", path, "--format", "json", "--strict")

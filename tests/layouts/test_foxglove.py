@@ -24,8 +24,14 @@ def test_layouts_writes_one_file_per_configuration_plus_the_default(tmp_path: Pa
     solution = solve(load_team("case1"))
     paths = write_layouts(solution, load_profile(), tmp_path)
     assert [path.name for path in paths] == [
-        "config-001.json", "config-002.json", "config-003.json", "config-004.json",
-        "config-005.json", "config-006.json", "config-007-default.json"]
+        "config-001.json",
+        "config-002.json",
+        "config-003.json",
+        "config-004.json",
+        "config-005.json",
+        "config-006.json",
+        "config-007-default.json",
+    ]
     for path in paths:
         validate_foxglove(json.loads(path.read_text()), path.name)
 
@@ -40,9 +46,13 @@ def test_layouts_are_the_same_bytes_on_every_run(tmp_path: Path) -> None:
 def test_sensor_clusters_become_tiles_of_the_sensor_panel() -> None:
     solution = solve(load_team("case2"))
     # A UGV with 6..10 sensors in clusters of 2 shows ceil(10/2) = 5 tiles.
-    configuration = next(c for c in solution.configurations
-                         if c.kinematic_type == "UGV" and c.components[3].name != "individual"
-                         and c.components[2].name == "point cloud")
+    configuration = next(
+        c
+        for c in solution.configurations
+        if c.kinematic_type == "UGV"
+        and c.components[3].name != "individual"
+        and c.components[2].name == "point cloud"
+    )
     layout = foxglove_layout(solution, configuration, load_profile())
     assert sum(1 for key in layout["configById"] if key.startswith("3D!")) == 5
 
@@ -64,9 +74,15 @@ def test_audio_gets_a_titled_placeholder_panel_not_a_silent_drop() -> None:
 
 
 def test_validation_reports_orphan_configs_and_bad_splits() -> None:
-    layout = {"configById": {"Image!a": {}, "Image!b": {}, "Nope!c": {}},
-              "layout": {"direction": "row", "first": "Image!a", "second": "Nope!c",
-                         "splitPercentage": 140}}
+    layout = {
+        "configById": {"Image!a": {}, "Image!b": {}, "Nope!c": {}},
+        "layout": {
+            "direction": "row",
+            "first": "Image!a",
+            "second": "Nope!c",
+            "splitPercentage": 140,
+        },
+    }
     with pytest.raises(LayoutError) as caught:
         validate_foxglove(layout, "x.json")
     message = str(caught.value)
@@ -77,8 +93,7 @@ def test_validation_reports_orphan_configs_and_bad_splits() -> None:
 
 def test_profile_with_unknown_component_and_panel_is_a_located_error(tmp_path: Path) -> None:
     path = tmp_path / "p.yaml"
-    path.write_text("profile: presentation\ncomponents:\n  smell:\n    panel: Nose\n"
-                    "    topic: x\n")
+    path.write_text("profile: presentation\ncomponents:\n  smell:\n    panel: Nose\n    topic: x\n")
     with pytest.raises(ProfileError) as caught:
         load_profile(path, solve(load_team("case1")).rules)
     message = str(caught.value)
@@ -86,8 +101,9 @@ def test_profile_with_unknown_component_and_panel_is_a_located_error(tmp_path: P
     assert "unknown panel 'Nose'" in message
 
 
-def test_layouts_command_exits_2_on_an_unusable_profile(tmp_path: Path,
-                                                        capsys: pytest.CaptureFixture[str]) -> None:
+def test_layouts_command_exits_2_on_an_unusable_profile(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
     path = tmp_path / "p.yaml"
     path.write_text("components: [1]\n")
     assert main(["layouts", "case1", "-o", str(tmp_path / "out"), "--profile", str(path)]) == 2
@@ -114,8 +130,9 @@ def test_rviz_robot_description_is_transient_local_and_sensors_best_effort() -> 
     from solver.layouts import rviz_layout
 
     solution = solve(load_team("case1"))
-    displays = rviz_layout(solution, solution.configurations[0],
-                           load_profile())["Visualization Manager"]["Displays"]
+    displays = rviz_layout(solution, solution.configurations[0], load_profile())[
+        "Visualization Manager"
+    ]["Displays"]
     model = next(d for d in displays if d["Name"] == "RobotModel")
     assert model["Description Topic"]["Durability Policy"] == "Transient Local"
     image = next(d for d in displays if d["Class"] == "rviz_default_plugins/Image")
@@ -126,8 +143,9 @@ def test_rviz_gives_a_disabled_placeholder_display_to_velocity_control() -> None
     from solver.layouts import rviz_layout
 
     solution = solve(load_team("case1"))
-    displays = rviz_layout(solution, solution.configurations[0],
-                           load_profile())["Visualization Manager"]["Displays"]
+    displays = rviz_layout(solution, solution.configurations[0], load_profile())[
+        "Visualization Manager"
+    ]["Displays"]
     flight = next(d for d in displays if d["Name"].startswith("Flight"))
     assert flight["Enabled"] is False
     assert "placeholder" in flight["Name"]

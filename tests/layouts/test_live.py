@@ -23,8 +23,9 @@ def test_watch_selection_event_names_the_layout_of_the_active_robot(tmp_path: Pa
         node = TestNode(core.uri)
         put_rover(node, "/ugv1")
         node.set_param("/teleop_ui/active_robot", "/ugv1")
-        result = run_cli("watch", "--master", core.uri, "--team", "case3", "--once",
-                         "--layouts", "layouts")
+        result = run_cli(
+            "watch", "--master", core.uri, "--team", "case3", "--once", "--layouts", "layouts"
+        )
         node.close()
     finally:
         core.kill()

@@ -32,17 +32,36 @@ def test_preview_page_screenshot_in_headless_chromium_is_not_blank(tmp_path: Pat
     solution = solve(load_team("case1"))
     profile = load_profile()
     page = tmp_path / "preview.html"
-    page.write_text(preview_html([(f"configuration {c.number}",
-                                   foxglove_layout(solution, c, profile))
-                                  for c in solution.configurations]))
+    page.write_text(
+        preview_html(
+            [
+                (f"configuration {c.number}", foxglove_layout(solution, c, profile))
+                for c in solution.configurations
+            ]
+        )
+    )
     shot = tmp_path / "shot.png"
     assert CHROMIUM is not None
     subprocess.run(
-        [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic",
-         "--no-first-run", "--disable-background-networking", "--disable-component-update",
-         "--disable-sync", f"--user-data-dir={tmp_path / 'profile'}",
-         f"--screenshot={shot}", "--window-size=1100,700", page.as_uri()],
-        check=True, capture_output=True, timeout=120)
+        [
+            CHROMIUM,
+            "--headless",
+            "--no-sandbox",
+            "--disable-gpu",
+            "--disable-quic",
+            "--no-first-run",
+            "--disable-background-networking",
+            "--disable-component-update",
+            "--disable-sync",
+            f"--user-data-dir={tmp_path / 'profile'}",
+            f"--screenshot={shot}",
+            "--window-size=1100,700",
+            page.as_uri(),
+        ],
+        check=True,
+        capture_output=True,
+        timeout=120,
+    )
     image = Image.open(shot).convert("RGB")
     colours = image.getcolors(maxcolors=1 << 20)
     assert colours is not None
@@ -64,6 +83,8 @@ def test_layouts_preview_option_writes_one_thumbnail_per_layout(tmp_path: Path) 
 def test_preview_with_rviz_format_exits_2_before_writing(tmp_path: Path) -> None:
     from solver.cli import main
 
-    assert main(["layouts", "case1", "-o", str(tmp_path / "out"), "--format", "rviz",
-                 "--preview"]) == 2
+    assert (
+        main(["layouts", "case1", "-o", str(tmp_path / "out"), "--format", "rviz", "--preview"])
+        == 2
+    )
     assert not (tmp_path / "out").exists()

@@ -35,8 +35,10 @@ EVENT_TIMEOUT = 60.0  # seconds to wait for an expected event before failing
 
 def _require_roscore() -> None:
     if not roscore_available():
-        pytest.fail("roscore is not installed: install Debian's ros-core "
-                    "(tools/test.sh does); the live tests need a real ROS master")
+        pytest.fail(
+            "roscore is not installed: install Debian's ros-core "
+            "(tools/test.sh does); the live tests need a real ROS master"
+        )
 
 
 @pytest.fixture(scope="module")
@@ -138,8 +140,14 @@ class Recorder:
         with self._changed:
             return len(self.events)
 
-    def wait_for(self, predicate: Callable[[dict[str, Any]], bool], what: str, *,
-                 after: int = 0, timeout: float = EVENT_TIMEOUT) -> dict[str, Any]:
+    def wait_for(
+        self,
+        predicate: Callable[[dict[str, Any]], bool],
+        what: str,
+        *,
+        after: int = 0,
+        timeout: float = EVENT_TIMEOUT,
+    ) -> dict[str, Any]:
         """The first event from index ``after`` on whose JSON data satisfies ``predicate``."""
         checked = after
         with self._changed:
@@ -157,11 +165,14 @@ class Recorder:
                     seen = [event_data(e, self.solution)["event"] for e in self.events]
                     raise AssertionError(f"no {what} within {timeout:.0f} s; events: {seen}")
 
-    def wait_for_event(self, kind: str, robot: str | None = None, *, after: int = 0
-                       ) -> dict[str, Any]:
-        return self.wait_for(lambda d: d["event"] == kind
-                             and (robot is None or d.get("robot") == robot),
-                             f"{kind} {robot or ''}".strip(), after=after)
+    def wait_for_event(
+        self, kind: str, robot: str | None = None, *, after: int = 0
+    ) -> dict[str, Any]:
+        return self.wait_for(
+            lambda d: d["event"] == kind and (robot is None or d.get("robot") == robot),
+            f"{kind} {robot or ''}".strip(),
+            after=after,
+        )
 
     def stop(self) -> None:
         self.watcher.stop("test over")
@@ -170,8 +181,7 @@ class Recorder:
 
 
 @pytest.fixture
-def start_watcher(solution: Solution, profile: Profile
-                  ) -> Iterator[Callable[..., Recorder]]:
+def start_watcher(solution: Solution, profile: Profile) -> Iterator[Callable[..., Recorder]]:
     """``start_watcher(uri, **options)``: a running watcher, stopped and closed afterwards."""
     started: list[Recorder] = []
 

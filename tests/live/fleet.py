@@ -33,8 +33,9 @@ def large_text(markers: int = 6000) -> str:
 def put_drone(node: TestNode, namespace: str) -> None:
     """A quadrotor (UAV, Flight from its rotors) publishing one camera."""
     node.set_param(f"{namespace}/robot_description", drone_text())
-    node.publish(f"{namespace}/camera_driver",
-                 [(f"{namespace}/camera/image_raw", "sensor_msgs/Image")])
+    node.publish(
+        f"{namespace}/camera_driver", [(f"{namespace}/camera/image_raw", "sensor_msgs/Image")]
+    )
 
 
 def put_rover(node: TestNode, namespace: str) -> None:
@@ -50,10 +51,20 @@ def expected(solution: Solution, **values: str) -> int:
 
 
 def drone_configuration(solution: Solution) -> int:
-    return expected(solution, kinematic_type="UAV", motion_control="Flight",
-                    sensor_type="2D Camera", sensor_count="1")
+    return expected(
+        solution,
+        kinematic_type="UAV",
+        motion_control="Flight",
+        sensor_type="2D Camera",
+        sensor_count="1",
+    )
 
 
 def rover_configuration(solution: Solution) -> int:
-    return expected(solution, kinematic_type="UGV", motion_control="Driving",
-                    sensor_type="LIDAR", sensor_count="1")
+    return expected(
+        solution,
+        kinematic_type="UGV",
+        motion_control="Driving",
+        sensor_type="LIDAR",
+        sensor_count="1",
+    )

@@ -13,6 +13,7 @@ import json
 import os
 import subprocess
 import sys
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
@@ -54,7 +55,12 @@ class EmulatedRobot:
     def __init__(self, domain: int, env: dict[str, str], gid_size: int = 16) -> None:
         self.process = subprocess.Popen(
             [sys.executable, "-m", "tests.live.ros2_robot", str(domain), str(gid_size)],
-            cwd=ROOT, env=env, stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
+            cwd=ROOT,
+            env=env,
+            stdin=subprocess.PIPE,
+            stdout=subprocess.PIPE,
+            text=True,
+        )
         self._answer()
 
     def _answer(self) -> None:
@@ -69,11 +75,16 @@ class EmulatedRobot:
         self.process.stdin.flush()
         self._answer()
 
-    def node(self, name: str, publish: list[tuple[str, str]] = (),  # type: ignore[assignment]
-             subscribe: list[tuple[str, str]] = (),  # type: ignore[assignment]
-             services: list[tuple[str, str]] = ()) -> None:  # type: ignore[assignment]
-        self.send(node=name, publish=list(publish), subscribe=list(subscribe),
-                  services=list(services))
+    def node(
+        self,
+        name: str,
+        publish: Sequence[tuple[str, str]] = (),
+        subscribe: Sequence[tuple[str, str]] = (),
+        services: Sequence[tuple[str, str]] = (),
+    ) -> None:
+        self.send(
+            node=name, publish=list(publish), subscribe=list(subscribe), services=list(services)
+        )
 
     def describe(self, namespace: str, text: str, directory: Path) -> None:
         path = directory / f"{namespace.strip('/').replace('/', '_') or 'root'}.urdf"
@@ -103,12 +114,20 @@ class Operator:
 
         self.String = struct("std_msgs::msg::dds_::String_")
         self.participant = DomainParticipant(domain)
-        self.writers: dict[str, Any] = {name: DataWriter(self.participant, Topic(
-            self.participant, f"rt/teleop_ui/{name}", self.String), qos=LATCHED)
-            for name in ("active_robot", "active_motion_control")}
+        self.writers: dict[str, Any] = {
+            name: DataWriter(
+                self.participant,
+                Topic(self.participant, f"rt/teleop_ui/{name}", self.String),
+                qos=LATCHED,
+            )
+            for name in ("active_robot", "active_motion_control")
+        }
         self.writer = self.writers["active_robot"]
-        self.reader: Any = DataReader(self.participant, Topic(
-            self.participant, "rt/teleop_ui/ui_configuration", self.String), qos=LATCHED)
+        self.reader: Any = DataReader(
+            self.participant,
+            Topic(self.participant, "rt/teleop_ui/ui_configuration", self.String),
+            qos=LATCHED,
+        )
         self.answers: list[Any] = []
 
     def activate(self, robot: str) -> None:

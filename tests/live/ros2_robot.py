@@ -27,7 +27,6 @@ Driven by JSON lines on stdin, one command each, answered by ``ok`` on stdout::
     {"drop": "/uav1/camera_driver"}                       # the node's endpoints vanish
 """
 
-
 import json
 import sys
 import types
@@ -43,8 +42,11 @@ from cyclonedds.qos import Policy, Qos
 from cyclonedds.sub import DataReader
 from cyclonedds.topic import Topic
 
-LATCHED = Qos(Policy.Reliability.Reliable(1_000_000_000), Policy.Durability.TransientLocal,
-              Policy.History.KeepLast(1))
+LATCHED = Qos(
+    Policy.Reliability.Reliable(1_000_000_000),
+    Policy.Durability.TransientLocal,
+    Policy.History.KeepLast(1),
+)
 
 
 def mangled_type(ros_type: str) -> str:
@@ -59,15 +61,20 @@ def struct(type_name: str) -> type:
     """An IDL struct carrying the DDS type name (a placeholder field, see the docstring)."""
     if type_name not in _STRUCTS:
         if type_name == "std_msgs::msg::dds_::String_":
+
             @dataclass
             class String(IdlStruct, typename=type_name):
                 data: str
+
             _STRUCTS[type_name] = String
         else:
+
             def body(namespace: dict[str, Any]) -> None:
                 namespace["__annotations__"] = {"placeholder": uint8}
-            _STRUCTS[type_name] = dataclass(types.new_class(
-                "Msg", (IdlStruct,), {"typename": type_name}, body))
+
+            _STRUCTS[type_name] = dataclass(
+                types.new_class("Msg", (IdlStruct,), {"typename": type_name}, body)
+            )
     return _STRUCTS[type_name]
 
 
@@ -84,8 +91,9 @@ def discovery_types(size: int) -> tuple[Any, Any, Any]:
         writer_gid_seq: sequence[Gid]  # type: ignore[type-arg]
 
     @dataclass
-    class ParticipantEntitiesInfo(IdlStruct,
-                                  typename="rmw_dds_common::msg::dds_::ParticipantEntitiesInfo_"):
+    class ParticipantEntitiesInfo(
+        IdlStruct, typename="rmw_dds_common::msg::dds_::ParticipantEntitiesInfo_"
+    ):
         gid: Gid
         node_entities_info_seq: sequence[NodeEntitiesInfo]  # type: ignore[type-arg]
 
@@ -97,8 +105,9 @@ class Robot:
         self.participant = DomainParticipant(domain)
         self.gid_size = gid_size
         self.Gid, self.Node, self.Info = discovery_types(gid_size)
-        self.info_writer = DataWriter(self.participant, Topic(
-            self.participant, "ros_discovery_info", self.Info), qos=LATCHED)
+        self.info_writer = DataWriter(
+            self.participant, Topic(self.participant, "ros_discovery_info", self.Info), qos=LATCHED
+        )
         self.nodes: dict[str, tuple[list[Any], list[Any]]] = {}  # name -> (readers, writers)
         self.topics: dict[tuple[str, str], Any] = {}
 
@@ -112,26 +121,39 @@ class Robot:
             self.topics[key] = Topic(self.participant, dds_name, struct(mangled_type(ros_type)))
         return self.topics[key]
 
-    def add_node(self, name: str, publish: list[list[str]], subscribe: list[list[str]],
-                 services: list[list[str]]) -> None:
+    def add_node(
+        self,
+        name: str,
+        publish: list[list[str]],
+        subscribe: list[list[str]],
+        services: list[list[str]],
+    ) -> None:
         readers, writers = self.nodes.setdefault(name, ([], []))
         for topic, ros_type in publish:
             writers.append(DataWriter(self.participant, self.topic("rt" + topic, ros_type)))
         for topic, ros_type in subscribe:
             readers.append(DataReader(self.participant, self.topic("rt" + topic, ros_type)))
         for service, ros_type in services:
-            readers.append(DataReader(self.participant, self.topic(
-                f"rq{service}Request", ros_type + "_Request")))
-            writers.append(DataWriter(self.participant, self.topic(
-                f"rr{service}Reply", ros_type + "_Response")))
+            readers.append(
+                DataReader(
+                    self.participant, self.topic(f"rq{service}Request", ros_type + "_Request")
+                )
+            )
+            writers.append(
+                DataWriter(
+                    self.participant, self.topic(f"rr{service}Reply", ros_type + "_Response")
+                )
+            )
         self.announce()
 
     def describe(self, namespace: str, text: str) -> None:
         node = namespace.rstrip("/") + "/robot_state_publisher"
         _readers, writers = self.nodes.setdefault(node, ([], []))
-        writer = DataWriter(self.participant, self.topic(
-            "rt" + namespace.rstrip("/") + "/robot_description", "std_msgs/msg/String"),
-            qos=LATCHED)
+        writer = DataWriter(
+            self.participant,
+            self.topic("rt" + namespace.rstrip("/") + "/robot_description", "std_msgs/msg/String"),
+            qos=LATCHED,
+        )
         writer.write(struct("std_msgs::msg::dds_::String_")(text))
         writers.append(writer)
         self.announce()
@@ -146,8 +168,14 @@ class Robot:
         nodes = []
         for name, (readers, writers) in sorted(self.nodes.items()):
             namespace, _, base = name.rpartition("/")
-            nodes.append(self.Node(namespace or "/", base, [self.gid(r) for r in readers],
-                                   [self.gid(w) for w in writers]))
+            nodes.append(
+                self.Node(
+                    namespace or "/",
+                    base,
+                    [self.gid(r) for r in readers],
+                    [self.gid(w) for w in writers],
+                )
+            )
         self.info_writer.write(self.Info(self.gid(self.participant), nodes))
 
 
@@ -158,11 +186,18 @@ def main() -> None:
     for line in sys.stdin:
         command = json.loads(line)
         if "node" in command:
-            robot.add_node(command["node"], command.get("publish", []),
-                           command.get("subscribe", []), command.get("services", []))
+            robot.add_node(
+                command["node"],
+                command.get("publish", []),
+                command.get("subscribe", []),
+                command.get("services", []),
+            )
         elif "describe" in command:
-            text = command["text"] if "text" in command \
+            text = (
+                command["text"]
+                if "text" in command
                 else Path(command["file"]).read_text(encoding="utf-8")
+            )
             robot.describe(command["describe"], text)
         elif "drop" in command:
             robot.drop(command["drop"])

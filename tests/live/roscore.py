@@ -58,10 +58,12 @@ class Roscore:
         self.starts = 0
 
     def environment(self) -> dict[str, str]:
-        env = {k: v for k, v in os.environ.items()
-               if k not in ("ROS_MASTER_URI", "ROS_HOSTNAME", "ROS_NAMESPACE")}
-        env.update(ROS_HOME=str(self.home), ROS_LOG_DIR=str(self.home / "log"),
-                   ROS_IP="127.0.0.1")
+        env = {
+            k: v
+            for k, v in os.environ.items()
+            if k not in ("ROS_MASTER_URI", "ROS_HOSTNAME", "ROS_NAMESPACE")
+        }
+        env.update(ROS_HOME=str(self.home), ROS_LOG_DIR=str(self.home / "log"), ROS_IP="127.0.0.1")
         # This environment's scripts come first on PATH, as in a shell where it is activated:
         # installing the project must not put anything there that breaks roscore (pip's
         # rospkg, for one, installs a `rosversion` that knows no ROS packages).
@@ -73,13 +75,21 @@ class Roscore:
         self.starts += 1
         log = (self.home / f"roscore-{self.starts}.log").open("wb")
         self.process = subprocess.Popen(
-            ["roscore", "-p", str(self.port)], stdout=log, stderr=subprocess.STDOUT,
-            stdin=subprocess.DEVNULL, env=self.environment(), start_new_session=True)
+            ["roscore", "-p", str(self.port)],
+            stdout=log,
+            stderr=subprocess.STDOUT,
+            stdin=subprocess.DEVNULL,
+            env=self.environment(),
+            start_new_session=True,
+        )
         log.close()
         client = MasterClient(self.uri, caller_id="/test_probe", timeout=2.0)
         try:
-            wait_until(lambda: self._answers(client), STARTUP_TIMEOUT,
-                       f"roscore on port {self.port} (log: {self.home})")
+            wait_until(
+                lambda: self._answers(client),
+                STARTUP_TIMEOUT,
+                f"roscore on port {self.port} (log: {self.home})",
+            )
         finally:
             client.close()
 
@@ -102,8 +112,9 @@ class Roscore:
         """
         if self.process is None:
             return
-        groups = {self.process.pid} | {os.getpgid(pid) for pid in _descendants(self.process.pid)
-                                       if _exists(pid)}
+        groups = {self.process.pid} | {
+            os.getpgid(pid) for pid in _descendants(self.process.pid) if _exists(pid)
+        }
         for group in sorted(groups):
             with contextlib.suppress(ProcessLookupError):
                 os.killpg(group, signal.SIGKILL)
@@ -145,8 +156,9 @@ def _exists(pid: int) -> bool:
     return True
 
 
-def wait_until(condition: Callable[[], T | None], timeout: float, what: str,
-               step: float = 0.02) -> T:
+def wait_until(
+    condition: Callable[[], T | None], timeout: float, what: str, step: float = 0.02
+) -> T:
     """Poll ``condition`` until it returns something true; generous timeouts, no assertions
     on durations."""
     deadline = time.monotonic() + timeout
@@ -175,21 +187,24 @@ class TestNode:
 
     def __init__(self, master: str) -> None:
         self.master = master
-        self.server = _Server(("127.0.0.1", 0), requestHandler=_Quiet, logRequests=False,
-                              allow_none=False)
+        self.server = _Server(
+            ("127.0.0.1", 0), requestHandler=_Quiet, logRequests=False, allow_none=False
+        )
         self.api = f"http://127.0.0.1:{self.server.server_address[1]}/"
         self.calls: list[tuple[str, tuple[Any, ...]]] = []
         self.registered: set[tuple[str, str, str]] = set()
         for name in ("publisherUpdate", "paramUpdate", "shutdown", "getPid"):
             self.server.register_function(self._recorder(name), name)
-        self.thread = threading.Thread(target=self.server.serve_forever,
-                                       kwargs={"poll_interval": 0.05}, daemon=True)
+        self.thread = threading.Thread(
+            target=self.server.serve_forever, kwargs={"poll_interval": 0.05}, daemon=True
+        )
         self.thread.start()
 
     def _recorder(self, name: str) -> Callable[..., list[Any]]:
         def record(*args: Any) -> list[Any]:
             self.calls.append((name, args))
             return [1, "", os.getpid() if name == "getPid" else 0]
+
         return record
 
     def client(self, node: str) -> MasterClient:

@@ -32,10 +32,15 @@ Start = Callable[..., Recorder]
 def infinite_samples_text() -> str:
     """A rover whose laser claims infinitely many samples (``1e999`` in its vertical scan)."""
     robot = builders.ugv()
-    robot.add(builders.gazebo_sensor(
-        robot.root, "ray", "front_laser",
-        "<ray><scan><horizontal><samples>inf</samples></horizontal>"
-        "<vertical><samples>1e999</samples></vertical></scan></ray>"))
+    robot.add(
+        builders.gazebo_sensor(
+            robot.root,
+            "ray",
+            "front_laser",
+            "<ray><scan><horizontal><samples>inf</samples></horizontal>"
+            "<vertical><samples>1e999</samples></vertical></scan></ray>",
+        )
+    )
     return robot.text()
 
 
@@ -65,12 +70,14 @@ def assert_hostile_reported(robots: dict[str, dict[str, Any]]) -> None:
     assert garbage["error"].startswith("/garbage/robot_description:1:")
     # The reader may accept ``inf`` (ignored with a warning) or refuse it: either way the
     # robot is reported, and never as a traceback.
-    assert robots["/inf"]["error"] is None or \
-        robots["/inf"]["error"].startswith("/inf/robot_description")
+    assert robots["/inf"]["error"] is None or robots["/inf"]["error"].startswith(
+        "/inf/robot_description"
+    )
 
 
 def test_hostile_robots_are_reported_and_the_watcher_keeps_serving_the_others(
-        master: Roscore, node: TestNode, start_watcher: Start, solution: Solution) -> None:
+    master: Roscore, node: TestNode, start_watcher: Start, solution: Solution
+) -> None:
     put_hostile(node)
     put_drone(node, "/uav1")
     watch = start_watcher(master.uri)
@@ -83,18 +90,30 @@ def test_hostile_robots_are_reported_and_the_watcher_keeps_serving_the_others(
     mark = watch.mark()
     put_rover(node, "/ugv1")
     # Its description may be read before its topics are registered: wait for the full robot.
-    watch.wait_for(lambda d: d.get("robot") == "/ugv1" and bool(d.get("combinations"))
-                   and d["combinations"][0]["configuration"] == rover_configuration(solution),
-                   "/ugv1 identified as a rover", after=mark)
+    watch.wait_for(
+        lambda d: (
+            d.get("robot") == "/ugv1"
+            and bool(d.get("combinations"))
+            and d["combinations"][0]["configuration"] == rover_configuration(solution)
+        ),
+        "/ugv1 identified as a rover",
+        after=mark,
+    )
     node.set_param("/teleop_ui/active_robot", "/ugv1")
-    selected = watch.wait_for(lambda d: d["event"] == "selection_changed"
-                              and d["robot"] == "/ugv1", "selection of /ugv1", after=mark)
+    selected = watch.wait_for(
+        lambda d: d["event"] == "selection_changed" and d["robot"] == "/ugv1",
+        "selection of /ugv1",
+        after=mark,
+    )
     assert selected["assignment"]["configuration"] == rover_configuration(solution)
     # Selecting the hostile robot gives the default, with a reason, not a crash.
     mark = watch.mark()
     node.set_param("/teleop_ui/active_robot", "/huge")
-    hostile = watch.wait_for(lambda d: d["event"] == "selection_changed"
-                             and d["robot"] == "/huge", "selection of /huge", after=mark)
+    hostile = watch.wait_for(
+        lambda d: d["event"] == "selection_changed" and d["robot"] == "/huge",
+        "selection of /huge",
+        after=mark,
+    )
     assert hostile["assignment"] is not None
 
 
@@ -109,22 +128,27 @@ class _BrokenReader(IdentificationCache):
 
 
 def test_an_exception_no_reader_declares_stays_that_robots_error(
-        master: Roscore, node: TestNode, solution: Solution, profile: Profile) -> None:
+    master: Roscore, node: TestNode, solution: Solution, profile: Profile
+) -> None:
     node.set_param("/inf/robot_description", infinite_samples_text())
     put_drone(node, "/uav1")
     with Watcher(master.uri, solution, profile, push=False, cache=_BrokenReader()) as watcher:
         robots = by_robot([event_data(e, solution) for e in watcher.snapshot()])
-    assert robots["/inf"]["error"] == ("/inf/robot_description: cannot identify (OverflowError: "
-                                       "cannot convert float infinity to integer)")
+    assert robots["/inf"]["error"] == (
+        "/inf/robot_description: cannot identify (OverflowError: "
+        "cannot convert float infinity to integer)"
+    )
     assert robots["/uav1"]["error"] is None
 
 
-def test_watch_once_reports_hostile_robots_and_exits_0(master: Roscore, node: TestNode,
-                                                       solution: Solution) -> None:
+def test_watch_once_reports_hostile_robots_and_exits_0(
+    master: Roscore, node: TestNode, solution: Solution
+) -> None:
     put_hostile(node)
     put_rover(node, "/ugv1")
-    result = run_cli("watch", "--master", master.uri, "--team", "case3", "--once",
-                     "--format", "json")
+    result = run_cli(
+        "watch", "--master", master.uri, "--team", "case3", "--once", "--format", "json"
+    )
     assert result.returncode == 0, result.stderr
     assert "Traceback" not in result.stderr
     events = [json.loads(line) for line in result.stdout.splitlines()]
@@ -135,11 +159,13 @@ def test_watch_once_reports_hostile_robots_and_exits_0(master: Roscore, node: Te
 
 
 def test_assign_master_answers_beside_a_hostile_robot_and_refuses_it_located(
-        master: Roscore, node: TestNode, solution: Solution) -> None:
+    master: Roscore, node: TestNode, solution: Solution
+) -> None:
     put_hostile(node)
     put_drone(node, "/uav1")
-    good = run_cli("assign", "--master", master.uri, "--team", "case3", "--robot", "/uav1",
-                   "-f", "json")
+    good = run_cli(
+        "assign", "--master", master.uri, "--team", "case3", "--robot", "/uav1", "-f", "json"
+    )
     assert good.returncode == 0, good.stderr
     assert json.loads(good.stdout)["configuration"] == drone_configuration(solution)
     for robot in ("/huge", "/garbage"):

@@ -45,7 +45,9 @@ def test_parameters_round_trip_and_a_missing_one_is_missing(master: Roscore) -> 
     assert client.get_param("/teleop_ui/test_value") == value
     assert client.get_param("/no/such/param") is MISSING
     assert client.get_params(["/teleop_ui/test_value", "/nope"]) == {
-        "/teleop_ui/test_value": value, "/nope": MISSING}
+        "/teleop_ui/test_value": value,
+        "/nope": MISSING,
+    }
     client.delete_param("/teleop_ui/test_value")
     client.delete_param("/teleop_ui/test_value")  # deleting twice is fine: the end state holds
     assert client.get_param("/teleop_ui/test_value") is MISSING
@@ -89,11 +91,14 @@ def test_a_web_server_is_not_a_master(web_server: str) -> None:
     assert not isinstance(caught.value, MasterUnreachable)
 
 
-@pytest.mark.parametrize(("reply", "message"), [
-    ("hello", r"getPid: not a ROS master's reply \(expected \[code, message, value\]\)"),
-    ([1, "ok", "not a pid"], r"getPid: not a ROS master's reply \(expected a process id\)"),
-    ([0, "internal failure", 0], "getPid: the master failed: internal failure"),
-])
+@pytest.mark.parametrize(
+    ("reply", "message"),
+    [
+        ("hello", r"getPid: not a ROS master's reply \(expected \[code, message, value\]\)"),
+        ([1, "ok", "not a pid"], r"getPid: not a ROS master's reply \(expected a process id\)"),
+        ([0, "internal failure", 0], "getPid: the master failed: internal failure"),
+    ],
+)
 def test_replies_a_master_never_gives_are_master_errors(reply: Any, message: str) -> None:
     server = SimpleXMLRPCServer(("127.0.0.1", 0), logRequests=False, allow_none=True)
     server.register_function(lambda _caller: reply, "getPid")
@@ -105,8 +110,9 @@ def test_replies_a_master_never_gives_are_master_errors(reply: Any, message: str
     server.server_close()
 
 
-def test_without_multicall_observe_falls_back_to_one_call_per_method(master: Roscore,
-                                                                     node: TestNode) -> None:
+def test_without_multicall_observe_falls_back_to_one_call_per_method(
+    master: Roscore, node: TestNode
+) -> None:
     """A relay to the real master that offers the ROS master API but not system.multicall."""
     node.set_param("/relayed/robot_description", "<robot/>")
     upstream = xmlrpc.client.ServerProxy(master.uri)
@@ -118,23 +124,35 @@ def test_without_multicall_observe_falls_back_to_one_call_per_method(master: Ros
     observation = client.observe("/teleop_ui")
     assert "/relayed/robot_description" in observation.param_names
     assert client.get_params(["/relayed/robot_description"]) == {
-        "/relayed/robot_description": "<robot/>"}
+        "/relayed/robot_description": "<robot/>"
+    }
     relay.shutdown()
     relay.server_close()
 
 
-@pytest.mark.parametrize(("given", "normalised"), [
-    ("http://127.0.0.1:11311", "http://127.0.0.1:11311/"),
-    ("http://localhost:11311/", "http://localhost:11311/"),
-    ("http://[::1]:11311", "http://[::1]:11311/"),
-])
+@pytest.mark.parametrize(
+    ("given", "normalised"),
+    [
+        ("http://127.0.0.1:11311", "http://127.0.0.1:11311/"),
+        ("http://localhost:11311/", "http://localhost:11311/"),
+        ("http://[::1]:11311", "http://[::1]:11311/"),
+    ],
+)
 def test_master_uri_accepts_http_host_and_port(given: str, normalised: str) -> None:
     assert master_uri(given) == normalised
 
 
-@pytest.mark.parametrize("given", ["127.0.0.1:11311", "https://127.0.0.1:11311",
-                                   "http://127.0.0.1", "http://127.0.0.1:port",
-                                   "http://127.0.0.1:11311/RPC2", ""])
+@pytest.mark.parametrize(
+    "given",
+    [
+        "127.0.0.1:11311",
+        "https://127.0.0.1:11311",
+        "http://127.0.0.1",
+        "http://127.0.0.1:port",
+        "http://127.0.0.1:11311/RPC2",
+        "",
+    ],
+)
 def test_master_uri_rejects_anything_else(given: str) -> None:
     with pytest.raises(InputError, match=r"expected a ROS master URI|no ROS master given"):
         master_uri(given)

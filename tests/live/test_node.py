@@ -30,16 +30,19 @@ class Pushes:
         self.shutdowns.append(message)
 
 
-def test_the_master_pushes_changes_of_a_subscribed_parameter(master: Roscore,
-                                                             node: TestNode) -> None:
+def test_the_master_pushes_changes_of_a_subscribed_parameter(
+    master: Roscore, node: TestNode
+) -> None:
     pushes = Pushes()
     server = NodeServer("127.0.0.1", master.uri, pushes.update, pushes.shutdown)
     server.start()
     client = MasterClient(master.uri, caller_id="/listener")
     assert client.subscribe_param(server.uri, "/pushed/robot_description") is MISSING
     node.set_param("/pushed/robot_description", "<robot name='a'/>")
-    assert pushes.updates.get(timeout=TIMEOUT) == ("/pushed/robot_description/",
-                                                   "<robot name='a'/>")
+    assert pushes.updates.get(timeout=TIMEOUT) == (
+        "/pushed/robot_description/",
+        "<robot name='a'/>",
+    )
     node.delete_param("/pushed/robot_description")
     assert pushes.updates.get(timeout=TIMEOUT) == ("/pushed/robot_description/", {})
     client.unsubscribe_param(server.uri, "/pushed/robot_description")
@@ -81,8 +84,9 @@ def test_the_callback_address_follows_ros_conventions(monkeypatch: pytest.Monkey
     assert callback_host("http://127.0.0.1:11311/") == "127.0.0.1"  # loopback wins
 
 
-def test_descriptions_are_read_once_then_kept_current_by_pushes(master: Roscore,
-                                                                 node: TestNode) -> None:
+def test_descriptions_are_read_once_then_kept_current_by_pushes(
+    master: Roscore, node: TestNode
+) -> None:
     node.set_param("/d1/robot_description", "first")
     client = MasterClient(master.uri, caller_id="/descriptions_test")
     store: Descriptions
@@ -98,8 +102,14 @@ def test_descriptions_are_read_once_then_kept_current_by_pushes(master: Roscore,
     assert store.get("/d2/robot_description") is MISSING
     node.set_param("/d2/robot_description", "second")
     node.set_param("/d1/robot_description", "changed")
-    wait_until(lambda: store.get("/d2/robot_description") == "second"
-               and store.get("/d1/robot_description") == "changed", TIMEOUT, "pushes")
+    wait_until(
+        lambda: (
+            store.get("/d2/robot_description") == "second"
+            and store.get("/d1/robot_description") == "changed"
+        ),
+        TIMEOUT,
+        "pushes",
+    )
     node.delete_param("/d1/robot_description")
     wait_until(lambda: store.get("/d1/robot_description") is MISSING, TIMEOUT, "deletion")
     assert store.push("/not/followed", "x") is False
@@ -124,8 +134,7 @@ class _Overtaken(MasterClient):
         return value
 
 
-def test_a_push_that_overtakes_the_subscription_reply_wins(master: Roscore,
-                                                           node: TestNode) -> None:
+def test_a_push_that_overtakes_the_subscription_reply_wins(master: Roscore, node: TestNode) -> None:
     node.set_param("/race/robot_description", "older")
     client = _Overtaken(master.uri, caller_id="/race_test")
     server = NodeServer("127.0.0.1", master.uri, lambda *_: None, lambda _: None)
@@ -137,8 +146,9 @@ def test_a_push_that_overtakes_the_subscription_reply_wins(master: Roscore,
     server.close()
 
 
-def test_without_a_node_descriptions_are_read_with_get_param(master: Roscore,
-                                                             node: TestNode) -> None:
+def test_without_a_node_descriptions_are_read_with_get_param(
+    master: Roscore, node: TestNode
+) -> None:
     node.set_param("/once/robot_description", "text")
     client = MasterClient(master.uri, caller_id="/once_test")
     store = Descriptions(client)

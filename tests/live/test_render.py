@@ -25,25 +25,45 @@ from solver.solution import Solution
 from tests.live.fleet import drone_configuration, drone_text
 
 URI = "http://127.0.0.1:11311/"
-ROBOT_FIELDS = ["robot", "name", "structure", "kinematic_type", "confidence", "sensor_count",
-                "sensors", "motion_controls", "combinations", "error"]
+ROBOT_FIELDS = [
+    "robot",
+    "name",
+    "structure",
+    "kinematic_type",
+    "confidence",
+    "sensor_count",
+    "sensors",
+    "motion_controls",
+    "combinations",
+    "error",
+]
 
 
 def drone(solution: Solution, profile: Profile) -> LiveRobot:
-    source = RobotSource("/uav1", "/uav1/robot_description", None,
-                         (Topic("camera/image_raw", "sensor_msgs/Image", "published"),))
-    return identify_robot(source, drone_text(), cache=IdentificationCache(),
-                          solution=solution, profile=profile)
+    source = RobotSource(
+        "/uav1",
+        "/uav1/robot_description",
+        None,
+        (Topic("camera/image_raw", "sensor_msgs/Image", "published"),),
+    )
+    return identify_robot(
+        source, drone_text(), cache=IdentificationCache(), solution=solution, profile=profile
+    )
 
 
-def test_every_event_kind_has_its_documented_fields(solution: Solution,
-                                                    profile: Profile) -> None:
+def test_every_event_kind_has_its_documented_fields(solution: Solution, profile: Profile) -> None:
     robot = drone(solution, profile)
     request = Request("/uav1", "Flight")
     selection = select(request, {"/uav1": robot}, solution, profile)
-    events = [RobotAdded(1, robot), RobotChanged(2, robot, ("sensors",)),
-              RobotRemoved(3, "/uav1"), SelectionChanged(4, request, selection),
-              MasterLost(5, URI, "gone"), MasterBack(6, URI), Synced(7, URI, ("/uav1",))]
+    events = [
+        RobotAdded(1, robot),
+        RobotChanged(2, robot, ("sensors",)),
+        RobotRemoved(3, "/uav1"),
+        SelectionChanged(4, request, selection),
+        MasterLost(5, URI, "gone"),
+        MasterBack(6, URI),
+        Synced(7, URI, ("/uav1",)),
+    ]
     fields = [list(event_data(e, solution)) for e in events]
     assert fields == [
         ["seq", "event", *ROBOT_FIELDS],
@@ -55,22 +75,37 @@ def test_every_event_kind_has_its_documented_fields(solution: Solution,
         ["seq", "event", "master", "robots"],
     ]
     assert [event_data(e, solution)["event"] for e in events] == [
-        "robot_added", "robot_changed", "robot_removed", "selection_changed", "master_lost",
-        "master_back", "synced"]
+        "robot_added",
+        "robot_changed",
+        "robot_removed",
+        "selection_changed",
+        "master_lost",
+        "master_back",
+        "synced",
+    ]
 
 
-def test_json_lines_are_one_compact_object_per_line(solution: Solution,
-                                                    profile: Profile) -> None:
+def test_json_lines_are_one_compact_object_per_line(solution: Solution, profile: Profile) -> None:
     line = render_event(RobotAdded(1, drone(solution, profile)), solution, "json")
     assert line.endswith("}\n")
     assert line.count("\n") == 1
     data = json.loads(line)
-    assert data["combinations"] == [{
-        "combination": {"kinematic_type": "UAV", "motion_control": "Flight",
-                        "sensor_type": "2D Camera", "sensor_count": "1"},
-        "configuration": drone_configuration(solution), "default": False, "reasons": []}]
-    assert data["sensors"] == [{"kind": "camera", "sensor_type": "2D Camera", "count": 1,
-                                "source": "topics: /camera"}]
+    assert data["combinations"] == [
+        {
+            "combination": {
+                "kinematic_type": "UAV",
+                "motion_control": "Flight",
+                "sensor_type": "2D Camera",
+                "sensor_count": "1",
+            },
+            "configuration": drone_configuration(solution),
+            "default": False,
+            "reasons": [],
+        }
+    ]
+    assert data["sensors"] == [
+        {"kind": "camera", "sensor_type": "2D Camera", "count": 1, "source": "topics: /camera"}
+    ]
 
 
 def test_text_lines_for_every_kind(solution: Solution, profile: Profile) -> None:
@@ -79,10 +114,12 @@ def test_text_lines_for_every_kind(solution: Solution, profile: Profile) -> None
     assert text_lines(RobotChanged(2, robot, ("sensors", "combinations"))) == [
         "robot changed   /uav1  copter: UAV (structure UAV, confidence 0.95); 1 sensor(s); "
         "motion controls Flight  [changed: sensors, combinations]",
-        f"                  UI configuration {number}  <- UAV, Flight, 2D Camera, 1"]
+        f"                  UI configuration {number}  <- UAV, Flight, 2D Camera, 1",
+    ]
     assert text_lines(RobotRemoved(3, "/uav1")) == ["robot removed   /uav1"]
     assert text_lines(MasterLost(4, URI, "cannot reach the ROS master")) == [
-        f"master lost     {URI}: cannot reach the ROS master; retrying"]
+        f"master lost     {URI}: cannot reach the ROS master; retrying"
+    ]
     assert text_lines(MasterBack(5, URI)) == [f"master back     {URI}: resynchronising"]
     assert text_lines(Synced(6, URI, ())) == ["synced          0 robot(s): none"]
     request = Request("/uav9", "Flight")
@@ -90,6 +127,8 @@ def test_text_lines_for_every_kind(solution: Solution, profile: Profile) -> None
     assert text_lines(SelectionChanged(7, request, answer)) == [
         f"selection       /uav9 Flight -> UI configuration {solution.default_configuration} "
         "(default): no robot /uav9 on the master (robots: /uav1); no kinematic_type given; "
-        "no sensor_type given; no sensor_count given  <- Flight"]
+        "no sensor_type given; no sensor_count given  <- Flight"
+    ]
     assert text_lines(SelectionChanged(8, Request(), None)) == [
-        "selection       no active robot (set /teleop_ui/active_robot)"]
+        "selection       no active robot (set /teleop_ui/active_robot)"
+    ]

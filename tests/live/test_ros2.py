@@ -42,16 +42,20 @@ class Domain:
 
     def drone(self, namespace: str, gid_size: int = 16) -> EmulatedRobot:
         robot = self.robot(gid_size)
-        robot.node(f"{namespace}/camera_driver",
-                   publish=[(f"{namespace}/camera/image_raw", "sensor_msgs/msg/Image")])
+        robot.node(
+            f"{namespace}/camera_driver",
+            publish=[(f"{namespace}/camera/image_raw", "sensor_msgs/msg/Image")],
+        )
         robot.describe(namespace, drone_text(), self.directory)
         return robot
 
     def rover(self, namespace: str, gid_size: int = 16) -> EmulatedRobot:
         robot = self.robot(gid_size)
-        robot.node(f"{namespace}/base_driver",
-                   subscribe=[(f"{namespace}/cmd_vel", "geometry_msgs/msg/Twist")],
-                   publish=[(f"{namespace}/scan", "sensor_msgs/msg/LaserScan")])
+        robot.node(
+            f"{namespace}/base_driver",
+            subscribe=[(f"{namespace}/cmd_vel", "geometry_msgs/msg/Twist")],
+            publish=[(f"{namespace}/scan", "sensor_msgs/msg/LaserScan")],
+        )
         robot.describe(namespace, rover_text(), self.directory)
         return robot
 
@@ -61,6 +65,7 @@ def domain(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Domain]:
     monkeypatch.setenv("CYCLONEDDS_URI", write_config(tmp_path))
     monkeypatch.setenv("ROS_DOMAIN_ID", "999")  # never used: every test names its domain
     import os
+
     found = Domain(tmp_path, dict(os.environ))
     yield found
     for robot in found.robots:
@@ -68,14 +73,16 @@ def domain(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Domain]:
 
 
 @pytest.fixture
-def watch_ros2(domain: Domain, solution: Solution, profile: Profile
-               ) -> Iterator[Callable[..., Recorder]]:
+def watch_ros2(
+    domain: Domain, solution: Solution, profile: Profile
+) -> Iterator[Callable[..., Recorder]]:
     started: list[Recorder] = []
 
     def start(**options: Any) -> Recorder:
         source = DdsGraph(domain.id)
-        started.append(Recorder(Watcher(source.name, solution, profile, source=source,
-                                        **options), solution))
+        started.append(
+            Recorder(Watcher(source.name, solution, profile, source=source, **options), solution)
+        )
         return started[-1]
 
     yield start
@@ -85,9 +92,11 @@ def watch_ros2(domain: Domain, solution: Solution, profile: Profile
 
 def configured(namespace: str, number: int) -> Callable[[dict[str, Any]], bool]:
     """An event reporting ``namespace`` with configuration ``number`` as its only one."""
-    return lambda d: d.get("robot") == namespace and d["event"] in (
-        "robot_added", "robot_changed") and [c["configuration"] for c in d["combinations"]] \
-        == [number]
+    return lambda d: (
+        d.get("robot") == namespace
+        and d["event"] in ("robot_added", "robot_changed")
+        and [c["configuration"] for c in d["combinations"]] == [number]
+    )
 
 
 def test_names_and_types_map_as_the_ros2_design_says() -> None:
@@ -99,7 +108,8 @@ def test_names_and_types_map_as_the_ros2_design_says() -> None:
 
 
 def test_robots_joining_and_leaving_are_added_and_removed(
-        domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution) -> None:
+    domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution
+) -> None:
     watch = watch_ros2()
     watch.wait_for_event("synced")
     humble = domain.drone("/uav1", gid_size=24)
@@ -118,10 +128,10 @@ def test_robots_joining_and_leaving_are_added_and_removed(
 
 
 def test_a_description_arriving_after_its_topics_then_adds_the_robot(
-        domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution) -> None:
+    domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution
+) -> None:
     robot = domain.robot()
-    robot.node("/uav7/camera_driver",
-               publish=[("/uav7/camera/image_raw", "sensor_msgs/msg/Image")])
+    robot.node("/uav7/camera_driver", publish=[("/uav7/camera/image_raw", "sensor_msgs/msg/Image")])
     watch = watch_ros2()
     watch.wait_for_event("synced")
     mark = watch.mark()
@@ -132,7 +142,8 @@ def test_a_description_arriving_after_its_topics_then_adds_the_robot(
 
 
 def test_two_robots_with_the_same_description_are_both_reported_and_parsed_once(
-        domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution) -> None:
+    domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution
+) -> None:
     domain.drone("/uav1")
     domain.drone("/uav2", gid_size=24)
     watch = watch_ros2()
@@ -142,7 +153,8 @@ def test_two_robots_with_the_same_description_are_both_reported_and_parsed_once(
 
 
 def test_switching_the_active_robot_publishes_its_configuration(
-        domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution) -> None:
+    domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution
+) -> None:
     domain.drone("/uav1")
     domain.rover("/ugv1")
     watch = watch_ros2()
@@ -151,23 +163,32 @@ def test_switching_the_active_robot_publishes_its_configuration(
     operator = Operator(domain.id)
     try:
         operator.activate("/ugv1")
-        selected = watch.wait_for(lambda d: d["event"] == "selection_changed"
-                                  and d["robot"] == "/ugv1", "selection of /ugv1")
+        selected = watch.wait_for(
+            lambda d: d["event"] == "selection_changed" and d["robot"] == "/ugv1",
+            "selection of /ugv1",
+        )
         assert selected["assignment"]["configuration"] == rover_configuration(solution)
-        answer = wait_until(lambda: (a := operator.answer()) and a.get("robot") == "/ugv1"
-                            and a, TIMEOUT, "the answer for /ugv1")
+        answer = wait_until(
+            lambda: (a := operator.answer()) and a.get("robot") == "/ugv1" and a,
+            TIMEOUT,
+            "the answer for /ugv1",
+        )
         assert answer["configuration"] == rover_configuration(solution)
         assert answer["watcher"] == watch.watcher.caller_id
         operator.activate("/uav1")
-        answer = wait_until(lambda: (a := operator.answer()) and a.get("robot") == "/uav1"
-                            and a, TIMEOUT, "the answer for /uav1")
+        answer = wait_until(
+            lambda: (a := operator.answer()) and a.get("robot") == "/uav1" and a,
+            TIMEOUT,
+            "the answer for /uav1",
+        )
         assert answer["configuration"] == drone_configuration(solution)
     finally:
         operator.close()
 
 
 def test_the_active_motion_control_topic_selects_as_the_ros1_parameter_does(
-        domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution) -> None:
+    domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution
+) -> None:
     domain.rover("/ugv1")
     watch = watch_ros2()
     watch.wait_for(configured("/ugv1", rover_configuration(solution)), "/ugv1")
@@ -175,15 +196,22 @@ def test_the_active_motion_control_topic_selects_as_the_ros1_parameter_does(
     try:
         operator.control("Flight")  # a UGV never flies: the default configuration, and why
         operator.activate("/ugv1")
-        refused = watch.wait_for(lambda d: d["event"] == "selection_changed"
-                                 and d["motion_control"] == "Flight", "Flight for /ugv1")
+        refused = watch.wait_for(
+            lambda d: d["event"] == "selection_changed" and d["motion_control"] == "Flight",
+            "Flight for /ugv1",
+        )
         assert refused["assignment"]["default"] is True
         operator.control("Driving")
-        driving = watch.wait_for(lambda d: d["event"] == "selection_changed"
-                                 and d["motion_control"] == "Driving", "Driving for /ugv1")
+        driving = watch.wait_for(
+            lambda d: d["event"] == "selection_changed" and d["motion_control"] == "Driving",
+            "Driving for /ugv1",
+        )
         assert driving["assignment"]["configuration"] == rover_configuration(solution)
-        answer = wait_until(lambda: (a := operator.answer()) and a.get("default") is False
-                            and a, TIMEOUT, "the answer for Driving")
+        answer = wait_until(
+            lambda: (a := operator.answer()) and a.get("default") is False and a,
+            TIMEOUT,
+            "the answer for Driving",
+        )
         assert answer["robot"] == "/ugv1"
         assert answer["configuration"] == rover_configuration(solution)
     finally:
@@ -191,7 +219,8 @@ def test_the_active_motion_control_topic_selects_as_the_ros1_parameter_does(
 
 
 def test_a_50_mb_description_is_refused_located_and_the_watcher_goes_on(
-        domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution) -> None:
+    domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution
+) -> None:
     watch = watch_ros2()
     watch.wait_for_event("synced")
     hostile = domain.robot()
@@ -203,12 +232,14 @@ def test_a_50_mb_description_is_refused_located_and_the_watcher_goes_on(
     assert f"larger than {MAX_XML_BYTES} bytes" in big["error"]
     mark = watch.mark()
     domain.rover("/ugv1")
-    watch.wait_for(configured("/ugv1", rover_configuration(solution)), "/ugv1 after /big",
-                   after=mark)
+    watch.wait_for(
+        configured("/ugv1", rover_configuration(solution)), "/ugv1 after /big", after=mark
+    )
 
 
 def test_another_watcher_on_the_same_domain_sees_the_same_robots_and_agrees(
-        domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution) -> None:
+    domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution
+) -> None:
     domain.rover("/ugv1")
     first, second = watch_ros2(), watch_ros2()
     for watch in (first, second):
@@ -217,8 +248,10 @@ def test_another_watcher_on_the_same_domain_sees_the_same_robots_and_agrees(
     try:
         operator.activate("/ugv1")
         for watch in (first, second):
-            selected = watch.wait_for(lambda d: d["event"] == "selection_changed"
-                                      and d["robot"] == "/ugv1", "selection of /ugv1")
+            selected = watch.wait_for(
+                lambda d: d["event"] == "selection_changed" and d["robot"] == "/ugv1",
+                "selection of /ugv1",
+            )
             assert selected["assignment"]["configuration"] == rover_configuration(solution)
         # Neither watcher reports the other's DDS readers as part of a robot.
         assert {d["robot"] for d in second.data() if d["event"] == "robot_added"} == {"/ugv1"}
@@ -226,40 +259,57 @@ def test_another_watcher_on_the_same_domain_sees_the_same_robots_and_agrees(
         operator.close()
 
 
-def test_watch_ros2_once_prints_the_graph_as_json_lines(domain: Domain,
-                                                        solution: Solution) -> None:
+def test_watch_ros2_once_prints_the_graph_as_json_lines(domain: Domain, solution: Solution) -> None:
     domain.drone("/uav1", gid_size=24)
     domain.rover("/ugv1")
     result = run_cli("watch", "--ros2", "--domain", str(domain.id), "--team", "case3", "--once")
     assert result.returncode == 0, result.stderr
     events = [json.loads(line) for line in result.stdout.splitlines()]
     assert [e["event"] for e in events] == ["robot_added", "robot_added", "synced"]
-    assert events[-1] == {"seq": 3, "event": "synced", "master": f"ros2://domain/{domain.id}",
-                          "robots": ["/uav1", "/ugv1"]}
+    assert events[-1] == {
+        "seq": 3,
+        "event": "synced",
+        "master": f"ros2://domain/{domain.id}",
+        "robots": ["/uav1", "/ugv1"],
+    }
     assert events[0]["combinations"][0]["configuration"] == drone_configuration(solution)
     assert events[1]["combinations"][0]["configuration"] == rover_configuration(solution)
 
 
 def test_watch_ros2_refuses_a_master_or_a_bad_domain_with_exit_2() -> None:
     bad = run_cli("watch", "--ros2", "--domain", "300", "--team", "case3", "--once")
-    assert (bad.returncode, bad.stderr) == (2, "<arguments>: DDS domain id must be 0..232, "
-                                               "got '300'\n")
+    assert (bad.returncode, bad.stderr) == (
+        2,
+        "<arguments>: DDS domain id must be 0..232, got '300'\n",
+    )
     both = run_cli("watch", "--ros2", "--master", "http://127.0.0.1:1/", "--team", "case3")
     assert both.returncode == 2
     assert both.stderr == "<arguments>: --ros2 reads a DDS domain: give --domain N, not --master\n"
 
 
 def test_assign_ros2_answers_for_one_robot_and_refuses_an_unknown_one(
-        domain: Domain, solution: Solution) -> None:
+    domain: Domain, solution: Solution
+) -> None:
     domain.drone("/uav1")
     domain.rover("/ugv1", gid_size=24)
-    result = run_cli("assign", "--ros2", "--domain", str(domain.id), "--team", "case3",
-                     "--robot", "/ugv1", "-f", "json")
+    result = run_cli(
+        "assign",
+        "--ros2",
+        "--domain",
+        str(domain.id),
+        "--team",
+        "case3",
+        "--robot",
+        "/ugv1",
+        "-f",
+        "json",
+    )
     assert result.returncode == 0, result.stderr
     data = json.loads(result.stdout)
     assert (data["robot"], data["configuration"]) == ("/ugv1", rover_configuration(solution))
-    unknown = run_cli("assign", "--ros2", "--domain", str(domain.id), "--team", "case3",
-                      "--robot", "/uav2")
+    unknown = run_cli(
+        "assign", "--ros2", "--domain", str(domain.id), "--team", "case3", "--robot", "/uav2"
+    )
     assert unknown.returncode == 2
     assert unknown.stderr.startswith(f"<arguments>: no robot /uav2 on ros2://domain/{domain.id}")
     assert "robots there: /uav1, /ugv1" in unknown.stderr

@@ -25,68 +25,94 @@ SPHERE = Topic("omni/image_raw", "sensor_msgs/Image", "published")
 GOAL = Topic("move_base/goal", "move_base_msgs/MoveBaseActionGoal", "subscribed")
 
 
-def robot(namespace: str, text: Any, topics: tuple[Topic, ...], solution: Solution,
-          profile: Profile) -> LiveRobot:
+def robot(
+    namespace: str, text: Any, topics: tuple[Topic, ...], solution: Solution, profile: Profile
+) -> LiveRobot:
     source = RobotSource(namespace, f"{namespace}/robot_description", None, topics)
-    return identify_robot(source, text, cache=IdentificationCache(), solution=solution,
-                          profile=profile)
+    return identify_robot(
+        source, text, cache=IdentificationCache(), solution=solution, profile=profile
+    )
 
 
 def test_the_request_is_read_from_the_teleop_ui_parameters() -> None:
-    assert read_request({"active_robot": "uav1/", "active_motion_control": "Flight",
-                         "ui_configuration": {"configuration": 3}}) == \
-        Request("/uav1", "Flight", None)
+    assert read_request(
+        {
+            "active_robot": "uav1/",
+            "active_motion_control": "Flight",
+            "ui_configuration": {"configuration": 3},
+        }
+    ) == Request("/uav1", "Flight", None)
     assert read_request({}) == Request()
     assert read_request({"active_robot": ""}) == Request()
     odd = read_request({"active_robot": 7, "active_sensor_type": ["x"]})
     assert odd.robot is None
     assert odd.sensor_type is None
-    assert odd.notes == ("/teleop_ui/active_robot ignored: expected text, got int 7",
-                         "/teleop_ui/active_sensor_type ignored: expected text, got list "
-                         "['x']")
+    assert odd.notes == (
+        "/teleop_ui/active_robot ignored: expected text, got int 7",
+        "/teleop_ui/active_sensor_type ignored: expected text, got list ['x']",
+    )
 
 
-def test_a_value_the_robot_has_narrows_its_combinations(solution: Solution,
-                                                        profile: Profile) -> None:
+def test_a_value_the_robot_has_narrows_its_combinations(
+    solution: Solution, profile: Profile
+) -> None:
     drone = robot("/uav1", drone_text(), (CAMERA, GOAL), solution, profile)
     assignment, notes = choose(drone, {"motion_control": "Waypoint"}, solution)
-    assert dict(assignment.given) == {"kinematic_type": "UAV", "motion_control": "Waypoint",
-                                      "sensor_type": "2D Camera", "sensor_count": "1"}
+    assert dict(assignment.given) == {
+        "kinematic_type": "UAV",
+        "motion_control": "Waypoint",
+        "sensor_type": "2D Camera",
+        "sensor_count": "1",
+    }
     assert assignment.number == expected(solution, **dict(assignment.given))
     assert notes == ()
 
 
 def test_several_remaining_combinations_take_the_first_in_rule_order_with_a_note(
-        solution: Solution, profile: Profile) -> None:
+    solution: Solution, profile: Profile
+) -> None:
     # Waypoint is listed after Flight in the rules; 2D Camera before 360 Camera.
     drone = robot("/uav1", drone_text(), (SPHERE, GOAL, CAMERA), solution, profile)
     assignment, notes = choose(drone, {}, solution)
     assert dict(assignment.given)["motion_control"] == "Flight"
     assert dict(assignment.given)["sensor_type"] == "2D Camera"
-    assert notes == ("/uav1 has several motion_control values (Flight, Waypoint): using "
-                     "Flight; give motion_control to choose",)
+    assert notes == (
+        "/uav1 has several motion_control values (Flight, Waypoint): using "
+        "Flight; give motion_control to choose",
+    )
     assignment, notes = choose(drone, {"motion_control": "Flight"}, solution)
-    assert notes == ("/uav1 has several sensor_type values (2D Camera, 360 Camera): using "
-                     "2D Camera; give sensor_type to choose",)
+    assert notes == (
+        "/uav1 has several sensor_type values (2D Camera, 360 Camera): using "
+        "2D Camera; give sensor_type to choose",
+    )
 
 
-def test_a_value_the_robot_lacks_is_used_as_asked_with_a_note(solution: Solution,
-                                                               profile: Profile) -> None:
+def test_a_value_the_robot_lacks_is_used_as_asked_with_a_note(
+    solution: Solution, profile: Profile
+) -> None:
     rover = robot("/ugv1", rover_text(), (CAMERA,), solution, profile)
     assignment, notes = choose(rover, {"motion_control": "Flight"}, solution)
     assert assignment.is_default
-    assert assignment.reasons == ("motion_control 'Flight' is not selected for UGV in team "
-                                  "'Case 3'",)
+    assert assignment.reasons == (
+        "motion_control 'Flight' is not selected for UGV in team 'Case 3'",
+    )
     assert notes == ()  # the rover shows no motion control at all: nothing to contrast
-    driven = robot("/ugv1", rover_text(), (CAMERA, Topic("cmd_vel", "geometry_msgs/Twist",
-                                                         "subscribed")), solution, profile)
+    driven = robot(
+        "/ugv1",
+        rover_text(),
+        (CAMERA, Topic("cmd_vel", "geometry_msgs/Twist", "subscribed")),
+        solution,
+        profile,
+    )
     _, notes = choose(driven, {"motion_control": "Waypoint"}, solution)
-    assert notes == ("/ugv1 does not offer motion_control 'Waypoint' (it has Driving); using "
-                     "it as asked",)
+    assert notes == (
+        "/ugv1 does not offer motion_control 'Waypoint' (it has Driving); using it as asked",
+    )
 
 
 def test_an_unknown_or_broken_active_robot_gets_the_default_with_the_reason(
-        solution: Solution, profile: Profile) -> None:
+    solution: Solution, profile: Profile
+) -> None:
     drone = robot("/uav1", drone_text(), (CAMERA,), solution, profile)
     missing = select(Request("/uav9", "Flight"), {"/uav1": drone}, solution, profile)
     assert missing is not None
@@ -99,12 +125,14 @@ def test_an_unknown_or_broken_active_robot_gets_the_default_with_the_reason(
     assert answer is not None
     assert answer.assignment is not None
     assert answer.assignment.reasons[0].startswith(
-        "robot /bad could not be identified: /bad/robot_description:1:")
+        "robot /bad could not be identified: /bad/robot_description:1:"
+    )
     assert select(Request(), {"/uav1": drone}, solution, profile) is None
 
 
 def test_the_written_back_value_holds_no_null_and_matches_the_event(
-        solution: Solution, profile: Profile) -> None:
+    solution: Solution, profile: Profile
+) -> None:
     drone = robot("/uav1", drone_text(), (CAMERA,), solution, profile)
     request = Request("/uav9")
     selection = select(request, {"/uav1": drone}, solution, profile)

@@ -33,9 +33,9 @@ def kinds(events: list[dict[str, Any]]) -> list[str]:
     return [e["event"] for e in events]
 
 
-def test_snapshot_reports_every_robot_then_synced(master: Roscore, node: TestNode,
-                                                  solution: Solution, profile: Profile
-                                                  ) -> None:
+def test_snapshot_reports_every_robot_then_synced(
+    master: Roscore, node: TestNode, solution: Solution, profile: Profile
+) -> None:
     put_drone(node, "/uav1")
     put_rover(node, "/team/ugv1")
     with Watcher(master.uri, solution, profile, push=False) as watcher:
@@ -46,19 +46,30 @@ def test_snapshot_reports_every_robot_then_synced(master: Roscore, node: TestNod
     synced = data[2]
     by_robot = {d["robot"]: d for d in data[:2]}
     assert by_robot["/uav1"]["kinematic_type"] == "UAV"
-    assert by_robot["/uav1"]["combinations"] == [{
-        "combination": {"kinematic_type": "UAV", "motion_control": "Flight",
-                        "sensor_type": "2D Camera", "sensor_count": "1"},
-        "configuration": drone_configuration(solution), "default": False, "reasons": []}]
+    assert by_robot["/uav1"]["combinations"] == [
+        {
+            "combination": {
+                "kinematic_type": "UAV",
+                "motion_control": "Flight",
+                "sensor_type": "2D Camera",
+                "sensor_count": "1",
+            },
+            "configuration": drone_configuration(solution),
+            "default": False,
+            "reasons": [],
+        }
+    ]
     assert by_robot["/team/ugv1"]["kinematic_type"] == "UGV"
-    assert by_robot["/team/ugv1"]["combinations"][0]["configuration"] == \
-        rover_configuration(solution)
+    assert by_robot["/team/ugv1"]["combinations"][0]["configuration"] == rover_configuration(
+        solution
+    )
     assert synced["robots"] == ["/team/ugv1", "/uav1"]
     assert synced["master"] == master.uri
 
 
-def test_the_root_namespace_is_a_robot_of_its_own(master: Roscore, node: TestNode,
-                                                  solution: Solution, profile: Profile) -> None:
+def test_the_root_namespace_is_a_robot_of_its_own(
+    master: Roscore, node: TestNode, solution: Solution, profile: Profile
+) -> None:
     node.set_param("/robot_description", rover_text())
     node.subscribe("/base_driver", [("/cmd_vel", "geometry_msgs/Twist")])
     node.publish("/laser_driver", [("/scan", "sensor_msgs/LaserScan")])
@@ -75,7 +86,8 @@ def test_the_root_namespace_is_a_robot_of_its_own(master: Roscore, node: TestNod
 
 
 def test_a_robot_is_added_changed_and_removed_as_its_nodes_come_and_go(
-        master: Roscore, node: TestNode, start_watcher: Start, solution: Solution) -> None:
+    master: Roscore, node: TestNode, start_watcher: Start, solution: Solution
+) -> None:
     watch = start_watcher(master.uri)
     watch.wait_for_event("synced")
     mark = watch.mark()
@@ -92,7 +104,8 @@ def test_a_robot_is_added_changed_and_removed_as_its_nodes_come_and_go(
     assert [c["motion_control"] for c in changed["motion_controls"]] == ["Driving"]
     assert "motion_controls" in changed["changed"]
     assert changed["combinations"][0]["configuration"] == expected(
-        solution, kinematic_type="UGV", motion_control="Driving")
+        solution, kinematic_type="UGV", motion_control="Driving"
+    )
 
     mark = watch.mark()
     node.delete_param("/ugv7/robot_description")
@@ -103,7 +116,8 @@ def test_a_robot_is_added_changed_and_removed_as_its_nodes_come_and_go(
 
 
 def test_a_description_set_again_in_place_is_pushed_and_reported(
-        master: Roscore, node: TestNode, start_watcher: Start) -> None:
+    master: Roscore, node: TestNode, start_watcher: Start
+) -> None:
     put_drone(node, "/shape")
     # With an hour between polls only the master's push (paramUpdate to the watcher's node)
     # can bring this change within the test's wait.
@@ -117,9 +131,9 @@ def test_a_description_set_again_in_place_is_pushed_and_reported(
 
 
 def test_a_malformed_description_is_reported_and_the_others_go_on(
-        master: Roscore, node: TestNode, start_watcher: Start, solution: Solution) -> None:
-    node.set_param("/broken/robot_description",
-                   '<robot name="b">\n  <link name="a">\n</robot>\n')
+    master: Roscore, node: TestNode, start_watcher: Start, solution: Solution
+) -> None:
+    node.set_param("/broken/robot_description", '<robot name="b">\n  <link name="a">\n</robot>\n')
     node.set_param("/number/robot_description", 42)
     put_drone(node, "/uav1")
     watch = start_watcher(master.uri)
@@ -142,7 +156,8 @@ def test_a_malformed_description_is_reported_and_the_others_go_on(
 
 
 def test_switching_the_active_robot_gives_its_configuration_and_writes_it_back(
-        master: Roscore, node: TestNode, start_watcher: Start, solution: Solution) -> None:
+    master: Roscore, node: TestNode, start_watcher: Start, solution: Solution
+) -> None:
     put_drone(node, "/uav1")
     put_rover(node, "/ugv1")
     watch = start_watcher(master.uri)
@@ -151,9 +166,15 @@ def test_switching_the_active_robot_gives_its_configuration_and_writes_it_back(
     mark = watch.mark()
     node.set_param("/teleop_ui/active_motion_control", "Flight")
     node.set_param("/teleop_ui/active_robot", "uav1")  # relative names are accepted
-    selected = watch.wait_for(lambda d: d["event"] == "selection_changed"
-                              and d["robot"] == "/uav1" and d["assignment"] is not None,
-                              "selection of /uav1", after=mark)
+    selected = watch.wait_for(
+        lambda d: (
+            d["event"] == "selection_changed"
+            and d["robot"] == "/uav1"
+            and d["assignment"] is not None
+        ),
+        "selection of /uav1",
+        after=mark,
+    )
     assert selected["motion_control"] == "Flight"
     assert selected["assignment"]["configuration"] == drone_configuration(solution)
     assert selected["assignment"]["default"] is False
@@ -166,20 +187,33 @@ def test_switching_the_active_robot_gives_its_configuration_and_writes_it_back(
     mark = watch.mark()
     node.set_param("/teleop_ui/active_motion_control", "Driving")
     node.set_param("/teleop_ui/active_robot", "/ugv1")
-    switched = watch.wait_for(lambda d: d["event"] == "selection_changed"
-                              and d["robot"] == "/ugv1" and d["motion_control"] == "Driving",
-                              "selection of /ugv1 Driving", after=mark)
+    switched = watch.wait_for(
+        lambda d: (
+            d["event"] == "selection_changed"
+            and d["robot"] == "/ugv1"
+            and d["motion_control"] == "Driving"
+        ),
+        "selection of /ugv1 Driving",
+        after=mark,
+    )
     assert switched["assignment"]["configuration"] == rover_configuration(solution)
     assert wait_until(lambda: _result(node, "/ugv1"), 60, "ui_configuration for /ugv1")[
-        "configuration"] == rover_configuration(solution)
+        "configuration"
+    ] == rover_configuration(solution)
 
     mark = watch.mark()
     node.delete_param("/teleop_ui/active_robot")
-    cleared = watch.wait_for(lambda d: d["event"] == "selection_changed"
-                             and d["robot"] is None, "cleared selection", after=mark)
+    cleared = watch.wait_for(
+        lambda d: d["event"] == "selection_changed" and d["robot"] is None,
+        "cleared selection",
+        after=mark,
+    )
     assert cleared["assignment"] is None
-    wait_until(lambda: node.get_param("/teleop_ui/ui_configuration") is MISSING, 60,
-               "ui_configuration deleted")
+    wait_until(
+        lambda: node.get_param("/teleop_ui/ui_configuration") is MISSING,
+        60,
+        "ui_configuration deleted",
+    )
 
 
 def _result(node: TestNode, robot: str) -> dict[str, Any] | None:
@@ -193,7 +227,8 @@ def _writer(node: TestNode) -> str | None:
 
 
 def test_a_second_watcher_with_another_team_leaves_the_first_answer_until_it_is_gone(
-        master: Roscore, node: TestNode, start_watcher: Start, profile: Profile) -> None:
+    master: Roscore, node: TestNode, start_watcher: Start, profile: Profile
+) -> None:
     put_drone(node, "/uav1")
     node.set_param("/teleop_ui/active_motion_control", "Flight")
     node.set_param("/teleop_ui/active_robot", "/uav1")
@@ -209,7 +244,8 @@ def test_a_second_watcher_with_another_team_leaves_the_first_answer_until_it_is_
         assert held["notes"] == [
             f"/teleop_ui/ui_configuration not written: the watcher {mine} answers there with "
             f"configuration {drone_configuration(first.solution)}; run one watcher per master, "
-            f"or give every watcher the same team and rules"]
+            f"or give every watcher the same team and rules"
+        ]
         second.wait_for_event("synced")
         value = node.get_param("/teleop_ui/ui_configuration")
         assert (value["watcher"], value["team"]) == (mine, "Case 3")
@@ -217,8 +253,9 @@ def test_a_second_watcher_with_another_team_leaves_the_first_answer_until_it_is_
 
         mark = second.mark()
         first.stop()  # closing releases its node: the answer is free to take over
-        taken = wait_until(lambda: _writer(node) == second.watcher.caller_id, 60,
-                           "the second watcher's answer")
+        taken = wait_until(
+            lambda: _writer(node) == second.watcher.caller_id, 60, "the second watcher's answer"
+        )
         assert taken
         assert node.get_param("/teleop_ui/ui_configuration")["team"] == "Case 1"
         freed = second.wait_for_event("selection_changed", after=mark)
@@ -228,7 +265,8 @@ def test_a_second_watcher_with_another_team_leaves_the_first_answer_until_it_is_
 
 
 def test_watchers_with_the_same_team_leave_each_others_equal_answer(
-        master: Roscore, node: TestNode, start_watcher: Start) -> None:
+    master: Roscore, node: TestNode, start_watcher: Start
+) -> None:
     put_drone(node, "/uav1")
     node.set_param("/teleop_ui/active_robot", "/uav1")
     first = start_watcher(master.uri)
@@ -241,7 +279,8 @@ def test_watchers_with_the_same_team_leave_each_others_equal_answer(
 
 
 def test_an_unknown_active_robot_gets_the_default_with_the_reason(
-        master: Roscore, node: TestNode, start_watcher: Start, solution: Solution) -> None:
+    master: Roscore, node: TestNode, start_watcher: Start, solution: Solution
+) -> None:
     put_drone(node, "/uav1")
     node.set_param("/teleop_ui/active_robot", "/uav9")
     watch = start_watcher(master.uri)
@@ -255,14 +294,20 @@ def test_an_unknown_active_robot_gets_the_default_with_the_reason(
 
 
 def test_irrelevant_topics_change_nothing_and_identify_nothing(
-        master: Roscore, node: TestNode, start_watcher: Start) -> None:
+    master: Roscore, node: TestNode, start_watcher: Start
+) -> None:
     put_drone(node, "/uav1")
     watch = start_watcher(master.uri)
     watch.wait_for_event("synced")
     cache = watch.watcher.cache
     before = (cache.hits, cache.misses)
-    node.publish("/uav1/diagnostics", [("/uav1/diagnostics", "diagnostic_msgs/DiagnosticArray"),
-                                       ("/uav1/tf", "tf2_msgs/TFMessage")])
+    node.publish(
+        "/uav1/diagnostics",
+        [
+            ("/uav1/diagnostics", "diagnostic_msgs/DiagnosticArray"),
+            ("/uav1/tf", "tf2_msgs/TFMessage"),
+        ],
+    )
     # A relevant change after the irrelevant one: once it is seen, so was the first.
     mark = watch.mark()
     node.subscribe("/uav1/nav", [("/uav1/move_base/goal", "move_base_msgs/MoveBaseActionGoal")])
@@ -273,7 +318,8 @@ def test_irrelevant_topics_change_nothing_and_identify_nothing(
 
 
 def test_a_large_description_is_parsed_once(
-        master: Roscore, node: TestNode, start_watcher: Start) -> None:
+    master: Roscore, node: TestNode, start_watcher: Start
+) -> None:
     text = large_text()
     assert len(text) > 1_000_000
     node.set_param("/big1/robot_description", text)
@@ -299,7 +345,8 @@ def test_a_large_description_is_parsed_once(
 
 
 def test_a_killed_master_is_lost_then_back_with_a_full_resync(
-        own_roscore: Roscore, start_watcher: Start, solution: Solution) -> None:
+    own_roscore: Roscore, start_watcher: Start, solution: Solution
+) -> None:
     node = TestNode(own_roscore.uri)
     put_drone(node, "/uav1")
     put_rover(node, "/ugv1")
@@ -308,8 +355,11 @@ def test_a_killed_master_is_lost_then_back_with_a_full_resync(
     watch = start_watcher(own_roscore.uri, interval=0.1, max_backoff=0.5)
     watch.wait_for_event("synced")
     before = watch.data()
-    assert sorted(d["robot"] for d in before if d["event"] == "robot_added") == \
-        ["/uav1", "/uav2", "/ugv1"]
+    assert sorted(d["robot"] for d in before if d["event"] == "robot_added") == [
+        "/uav1",
+        "/uav2",
+        "/ugv1",
+    ]
 
     mark = watch.mark()
     own_roscore.kill()
@@ -324,8 +374,11 @@ def test_a_killed_master_is_lost_then_back_with_a_full_resync(
     put_rover(node, "/ugv1")
     put_drone(node, "/uav3")
     node.set_param("/teleop_ui/active_robot", "/uav1")
-    wait_until(lambda: replay(watch.data()) == {"/uav1", "/uav3", "/ugv1"}, 60,
-               "the robots back after the restart")
+    wait_until(
+        lambda: replay(watch.data()) == {"/uav1", "/uav3", "/ugv1"},
+        60,
+        "the robots back after the restart",
+    )
     after = watch.data(mark)
     assert after[0]["event"] == "master_lost"
     assert kinds(after).count("master_back") == 1
@@ -359,7 +412,8 @@ def replay(events: list[dict[str, Any]]) -> set[str]:
 
 
 def test_a_master_restarted_between_two_polls_is_noticed_by_its_pid(
-        own_roscore: Roscore, start_watcher: Start) -> None:
+    own_roscore: Roscore, start_watcher: Start
+) -> None:
     node = TestNode(own_roscore.uri)
     put_drone(node, "/uav1")
     watch = start_watcher(own_roscore.uri, interval=3600.0)
@@ -378,7 +432,8 @@ def test_a_master_restarted_between_two_polls_is_noticed_by_its_pid(
 
 
 def test_resync_after_a_restart_answers_from_the_cache(
-        own_roscore: Roscore, start_watcher: Start) -> None:
+    own_roscore: Roscore, start_watcher: Start
+) -> None:
     node = TestNode(own_roscore.uri)
     text = large_text(2000)
     node.set_param("/big/robot_description", text)
@@ -391,15 +446,17 @@ def test_resync_after_a_restart_answers_from_the_cache(
     watch.wait_for_event("master_lost", after=mark)
     own_roscore.start()
     node.set_param("/big/robot_description", text)
-    watch.wait_for(lambda d: d["event"] == "synced" and d["robots"] == ["/big"],
-                   "synced with /big", after=mark)
+    watch.wait_for(
+        lambda d: d["event"] == "synced" and d["robots"] == ["/big"], "synced with /big", after=mark
+    )
     assert cache.misses == 1
     assert cache.hits >= 1
     node.close()
 
 
-def test_a_shutdown_call_to_its_node_stops_the_watcher_cleanly(master: Roscore, node: TestNode,
-                                                start_watcher: Start) -> None:
+def test_a_shutdown_call_to_its_node_stops_the_watcher_cleanly(
+    master: Roscore, node: TestNode, start_watcher: Start
+) -> None:
     put_drone(node, "/uav1")
     watch = start_watcher(master.uri)
     watch.wait_for_event("synced")

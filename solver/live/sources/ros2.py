@@ -50,8 +50,16 @@ from solver.errors import InputError
 from solver.live.master import MISSING, Observation
 from solver.live.sources import DescriptionStore
 
-__all__ = ["ACTIVE_TOPIC", "ANSWER_TOPIC", "REQUEST_TOPICS", "DdsGraph", "dds_topic", "dds_type",
-           "ros_name", "ros_type"]
+__all__ = [
+    "ACTIVE_TOPIC",
+    "ANSWER_TOPIC",
+    "REQUEST_TOPICS",
+    "DdsGraph",
+    "dds_topic",
+    "dds_type",
+    "ros_name",
+    "ros_type",
+]
 
 ACTIVE_TOPIC = "/teleop_ui/active_robot"
 # The operator's selection: one topic per parameter a ROS 1 station sets (solver.live.selection).
@@ -71,9 +79,9 @@ def ros_name(topic: str) -> tuple[str, str] | None:
     """A DDS topic's ROS name and prefix (``rt/``, ``rq/``, ``rr/``); ``None`` for others."""
     for prefix, suffix in _PREFIXES.items():
         if topic.startswith(prefix):
-            rest = topic[len(prefix):]
+            rest = topic[len(prefix) :]
             if suffix and rest.endswith(suffix):
-                rest = rest[:-len(suffix)]
+                rest = rest[: -len(suffix)]
             return "/" + rest, prefix
     return None
 
@@ -117,8 +125,7 @@ def _types() -> Any:
             data: array[uint8, size]  # type: ignore[valid-type,type-arg]
 
         @idl_dataclass
-        class NodeEntitiesInfo(IdlStruct,
-                               typename="rmw_dds_common::msg::dds_::NodeEntitiesInfo_"):
+        class NodeEntitiesInfo(IdlStruct, typename="rmw_dds_common::msg::dds_::NodeEntitiesInfo_"):
             node_namespace: str
             node_name: str
             reader_gid_seq: sequence[Gid]  # type: ignore[type-arg]
@@ -126,7 +133,8 @@ def _types() -> Any:
 
         @idl_dataclass
         class ParticipantEntitiesInfo(
-                IdlStruct, typename="rmw_dds_common::msg::dds_::ParticipantEntitiesInfo_"):
+            IdlStruct, typename="rmw_dds_common::msg::dds_::ParticipantEntitiesInfo_"
+        ):
             gid: Gid
             node_entities_info_seq: sequence[NodeEntitiesInfo]  # type: ignore[type-arg]
 
@@ -139,14 +147,20 @@ def _require_cyclonedds() -> None:
     try:
         import cyclonedds.domain  # noqa: F401
     except ImportError as error:
-        raise InputError.at("<arguments>", "--ros2 needs the Cyclone DDS Python binding: "
-                                           "pip install 'teleop-ui[ros2]'") from error
+        raise InputError.at(
+            "<arguments>",
+            "--ros2 needs the Cyclone DDS Python binding: pip install 'teleop-ui[ros2]'",
+        ) from error
 
 
 def _latched() -> Any:
     from cyclonedds.qos import Policy, Qos
-    return Qos(Policy.Reliability.Reliable(1_000_000_000), Policy.Durability.TransientLocal,
-               Policy.History.KeepLast(1))
+
+    return Qos(
+        Policy.Reliability.Reliable(1_000_000_000),
+        Policy.Durability.TransientLocal,
+        Policy.History.KeepLast(1),
+    )
 
 
 class _DescriptionReaders:
@@ -162,6 +176,7 @@ class _DescriptionReaders:
     def sync(self, keys: Iterable[str]) -> None:
         from cyclonedds.sub import DataReader
         from cyclonedds.topic import Topic
+
         wanted = {"/" + key.strip("/") for key in keys}
         with self._lock:
             for key in sorted(set(self._readers) - wanted):
@@ -169,8 +184,9 @@ class _DescriptionReaders:
                 self._values.pop(key, None)
             for key in sorted(wanted - set(self._readers)):
                 topic = Topic(self.graph.participant, dds_topic(key), self.graph.string_type)
-                self._readers[key] = DataReader(self.graph.participant, topic,
-                                                qos=_latched(), listener=self.graph.listener)
+                self._readers[key] = DataReader(
+                    self.graph.participant, topic, qos=_latched(), listener=self.graph.listener
+                )
                 self._values[key] = MISSING
         self.read()
 
@@ -180,8 +196,9 @@ class _DescriptionReaders:
                 try:
                     samples = reader.take(N=4)
                 except Exception as error:  # undecodable: that robot's error, no one else's
-                    self._values[key] = InputError.at(key, f"cannot decode the message "
-                                                           f"({type(error).__name__})")
+                    self._values[key] = InputError.at(
+                        key, f"cannot decode the message ({type(error).__name__})"
+                    )
                     continue
                 for sample in samples:
                     text = getattr(sample, "data", None)
@@ -217,8 +234,9 @@ class DdsGraph:
 
     timeout = 0.0
 
-    def __init__(self, domain: int = 0, *, caller_id: str | None = None,
-                 limit: int | None = None) -> None:
+    def __init__(
+        self, domain: int = 0, *, caller_id: str | None = None, limit: int | None = None
+    ) -> None:
         _require_cyclonedds()
         from cyclonedds.builtin import (
             BuiltinDataReader,
@@ -238,20 +256,34 @@ class DdsGraph:
         self.caller_id = caller_id or f"/teleop_ui_watch_{os.getpid()}"
         self.on_change: Callable[[], None] | None = None
         self.listener = Listener(  # type: ignore[no-untyped-call]
-            on_data_available=lambda _reader: self._changed())
+            on_data_available=lambda _reader: self._changed()
+        )
         self.string_type, discovery = _types()
         self.participant = DomainParticipant(domain)
-        self._publications = BuiltinDataReader(self.participant, BuiltinTopicDcpsPublication,
-                                               listener=self.listener)
-        self._subscriptions = BuiltinDataReader(self.participant, BuiltinTopicDcpsSubscription,
-                                                listener=self.listener)
-        self._discovery = [DataReader(self.participant,
-                                      Topic(self.participant, _DISCOVERY, types[2]),
-                                      qos=_latched(), listener=self.listener)
-                           for types in discovery.values()]
-        self._requests = {name: DataReader(self.participant, Topic(
-            self.participant, dds_topic(f"/teleop_ui/{name}"), self.string_type),
-            qos=_latched(), listener=self.listener) for name in REQUEST_TOPICS}
+        self._publications = BuiltinDataReader(
+            self.participant, BuiltinTopicDcpsPublication, listener=self.listener
+        )
+        self._subscriptions = BuiltinDataReader(
+            self.participant, BuiltinTopicDcpsSubscription, listener=self.listener
+        )
+        self._discovery = [
+            DataReader(
+                self.participant,
+                Topic(self.participant, _DISCOVERY, types[2]),
+                qos=_latched(),
+                listener=self.listener,
+            )
+            for types in discovery.values()
+        ]
+        self._requests = {
+            name: DataReader(
+                self.participant,
+                Topic(self.participant, dds_topic(f"/teleop_ui/{name}"), self.string_type),
+                qos=_latched(),
+                listener=self.listener,
+            )
+            for name in REQUEST_TOPICS
+        }
         answer = Topic(self.participant, dds_topic(ANSWER_TOPIC), self.string_type)
         self._answer_writer = DataWriter(self.participant, answer, qos=_latched())
         self._answer_reader = DataReader(self.participant, answer, qos=_latched())
@@ -298,15 +330,16 @@ class DdsGraph:
         """Wait until discovery is quiet (nothing new for ``quiet`` seconds, at most ``limit``):
         a one-shot snapshot on DDS must give the other participants time to be discovered."""
         import time
+
         start = last_change = time.monotonic()
         seen: tuple[Any, ...] = ()
         while time.monotonic() - start < limit:
             observation = self.observe("/teleop_ui")
-            self.descriptions.sync(name for name in observation.param_names
-                                   if name.endswith("/robot_description"))
+            self.descriptions.sync(
+                name for name in observation.param_names if name.endswith("/robot_description")
+            )
             followed = self.descriptions.keys()
-            now = (observation, tuple(self.descriptions.get(key) is MISSING
-                                      for key in followed))
+            now = (observation, tuple(self.descriptions.get(key) is MISSING for key in followed))
             if now != seen:
                 seen, last_change = now, time.monotonic()
             elif time.monotonic() - last_change >= quiet:
@@ -359,8 +392,11 @@ class DdsGraph:
             if endpoint.writer and prefix == "rt/" and name.endswith("/robot_description"):
                 descriptions.add(name)
         params: list[tuple[str, Any]] = []
-        params += [(name, self._request_values[name]) for name in REQUEST_TOPICS
-                   if name in self._request_values]
+        params += [
+            (name, self._request_values[name])
+            for name in REQUEST_TOPICS
+            if name in self._request_values
+        ]
         if self._answer_value is not MISSING:
             params.append(("ui_configuration", self._answer_value))
         return Observation(
@@ -369,18 +405,21 @@ class DdsGraph:
             subscribers=tuple((t, tuple(sorted(n))) for t, n in sorted(subscribers.items())),
             topic_types=tuple(sorted(types.items())),
             param_names=tuple(sorted(descriptions | {f"{namespace}/{k}" for k, _ in params})),
-            params=tuple(params))
+            params=tuple(params),
+        )
 
     def _read_endpoints(self) -> None:
         from cyclonedds.core import InstanceState
+
         for reader, writer in ((self._publications, True), (self._subscriptions, False)):
             for sample in reader.take(N=100_000):
                 key = sample.key.bytes
                 info = getattr(sample, "sample_info", None)
                 alive = info is None or info.instance_state == InstanceState.Alive
                 if alive and getattr(sample, "topic_name", None) is not None:
-                    self._endpoints[key] = _Endpoint(sample.topic_name, sample.type_name,
-                                                     sample.participant_key.bytes, writer)
+                    self._endpoints[key] = _Endpoint(
+                        sample.topic_name, sample.type_name, sample.participant_key.bytes, writer
+                    )
                 else:
                     self._endpoints.pop(key, None)
 
