@@ -47,7 +47,12 @@ def test_no_spinner_on_a_pipe_or_for_json() -> None:
 
 
 def test_commands_on_a_pipe_write_nothing_but_their_output() -> None:
-    for command in (("solve", "case3"), ("count", "case3"), ("check", "rules/paper.yaml")):
+    for command in (
+        ("solve", "case3"),
+        ("count", "case3"),
+        ("check", "rules/paper.yaml"),
+        ("identify", "examples/quadrotor.urdf"),
+    ):
         result = run_cli(*command)
         assert result.returncode == 0
         assert result.stderr == ""

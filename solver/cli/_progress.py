@@ -1,9 +1,10 @@
 """A spinner on a terminal for work that turns out to be long, and nothing anywhere else.
 
-``solve``, ``count``, ``robots`` and ``check`` usually answer at once; a large team or rule set
-can take seconds. :func:`working` shows a rich spinner with what is being done on stderr, but
-only when stderr is a terminal, the output is not JSON (programs read it), and the work is
-still running after ``delay`` seconds (a quick answer never flickers). On a pipe, in a log or
+``solve``, ``count``, ``robots``, ``check`` and ``identify`` usually answer at once; a large
+team, rule set or description can take seconds. :func:`working` shows a rich spinner with what
+is being done on stderr, but only when stderr is a terminal, the output is not JSON (programs
+read it), and the work is still running after ``delay`` seconds (a quick answer never
+flickers). On a pipe, in a log or
 in JSON mode nothing is written. Batch runs and fleets have their own bars (``cli/batch.py``,
 ``cli/fleet.py``).
 """

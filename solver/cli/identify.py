@@ -132,17 +132,21 @@ def run(args: argparse.Namespace) -> int:
 
     team = load_team_argument(args.team, args.rules) if args.team else None
     rules, profile = load_rules_and_profile(None if team else args.rules, args.profile)
-    result = identify(
-        args.description,
-        srdf=args.srdf,
-        topic_lists=args.topics,
-        bags=args.bag,
-        xacro_args=xacro_arguments(args.xacro_args),
-        package_path=package_path(args.package_path),
-        rules=team.rules if team else rules,
-        profile=profile,
-        trust_xacro=args.trust_xacro,
-    )
+    from solver.cli._progress import working
+
+    # A large description, a long bag or a trusted xacro can take seconds: a spinner then.
+    with working(f"identifying {args.description}", fmt=args.format):
+        result = identify(
+            args.description,
+            srdf=args.srdf,
+            topic_lists=args.topics,
+            bags=args.bag,
+            xacro_args=xacro_arguments(args.xacro_args),
+            package_path=package_path(args.package_path),
+            rules=team.rules if team else rules,
+            profile=profile,
+            trust_xacro=args.trust_xacro,
+        )
     if args.strict and result.warnings:
         from solver.errors import InputError
 
