@@ -35,7 +35,9 @@ Modules, one concept each:
 ``atomic``             writing output files atomically
 ``batch``              many teams at once: parallel solving, summary, up-to-date skipping
 ``identify``           real robots from ROS metadata (URDF, xacro, SRDF, topics, bags)
-``live``               live UI assignment from a running ROS master (``watch``)
+``live``               live UI assignment on a ROS 2 graph or a ROS 1 master (``watch``)
+``layouts``            UI configurations -> Foxglove/Lichtblick and RViz2 layouts
+``uvl``                a team's design space as a UVL feature model
 ``check``              linting rule sets and teams: coverage, void, dead, conflicts
 ``extras``             optional dependencies and the error when one is missing
 ``cli``                the ``teleop-ui`` command line
@@ -57,6 +59,8 @@ Every command from Python (docs/python-api.md has worked examples):
 ``identify``, ``fleet``         ``identify_urdf(text, ...)``, ``identify_fleet(...)``
 ``watch``, ``assign --master``  ``Watcher``, ``assign_from_master(...)``
 ``batch``                       ``find_teams``, ``plan``, ``run_batch``, ``write_summary``
+``layouts``                     ``solver.layouts.writer.write_layouts(solution, profile, dir)``
+``export --format uvl``         ``solver.uvl.team_to_uvl(team)``
 ==============================  ========================================================
 
 Example::

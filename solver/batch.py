@@ -52,7 +52,7 @@ from typing import TYPE_CHECKING, Any, Literal
 from solver import markdown
 from solver.atomic import write_atomic
 from solver.errors import Fault, InputError, Location, SolverError
-from solver.filekind import file_kind
+from solver.filekind import describe, file_kind, why
 from solver.inputfile import read_text, sha256_bounded
 from solver.render import csv_row, dumps, solution_data
 from solver.report import image_names, write_report
@@ -357,12 +357,11 @@ def run_job(job: Job) -> Outcome:
         team_hash = _sha256(job.team_file)
         document = load_document(job.team_file, display=job.shown)
         kind = file_kind(document)
-        if kind in ("rules", "profile"):
-            what = "a rule set" if kind == "rules" else "an identification profile"
+        if kind in ("rules", "profile", "presentation"):
             row = SummaryRow(
                 file=job.shown,
                 status="skipped",
-                message=f"not a team file: {what} (it has 'characteristics:' and no 'team:')",
+                message=f"not a team file: {describe(kind)} ({why(kind)})",
             )
             return Outcome(job, "skipped", row, time.perf_counter() - started)
         rules_file = _rules_file(job, document.data)

@@ -1,4 +1,4 @@
-"""Which kind of file a loaded YAML document is: a team, a rule set or an identification profile.
+"""Which kind of file a loaded YAML document is: a team, a rule set, or a profile.
 
 One answer for every command: ``check`` sorts its files with it, ``batch`` skips what is no
 team, ``count`` reads a rule set as its whole design space, and ``solve`` (through
@@ -6,6 +6,7 @@ team, ``count`` reads a rule set as its whole design space, and ``solve`` (throu
 rule set's fields as unknown team fields. Decided by the top-level keys, in this order:
 
 1. ``team:`` -> a team (whatever else it has: the team reader reports the rest);
+   ``profile: presentation`` -> a presentation profile (``teleop-ui layouts --profile``);
 2. ``characteristics:`` -> an identification profile when it also has a profile-only section
    (``patterns``, ``structures``, ...), else a rule set;
 3. ``rules:`` -> a team whose ``team:`` is missing (the team reader says so);
@@ -24,9 +25,9 @@ from solver.errors import Fault, InputError
 if TYPE_CHECKING:
     from solver.yamlio import Document
 
-__all__ = ["FileKind", "file_kind", "require_kind"]
+__all__ = ["FileKind", "describe", "file_kind", "require_kind", "why"]
 
-FileKind = Literal["team", "rules", "profile"]
+FileKind = Literal["team", "rules", "profile", "presentation"]
 
 # Sections only an identification profile has (rules/identification.yaml); a rule set with
 # one of them is a profile, so `check` and `batch` do not read it as a broken rule set.
@@ -48,11 +49,13 @@ _WHAT: dict[FileKind, str] = {
     "team": "a team file",
     "rules": "a rule set",
     "profile": "an identification profile",
+    "presentation": "a presentation profile",
 }
 _WHY: dict[FileKind, str] = {
     "team": "it has 'team:'",
     "rules": "it has 'characteristics:' and no 'team:'",
     "profile": "it has 'characteristics:' and profile sections such as 'patterns:'",
+    "presentation": "it has 'profile: presentation'",
 }
 
 # What to pass instead, per (kind found, kind wanted).
@@ -63,6 +66,8 @@ _INSTEAD: dict[tuple[FileKind, FileKind], str] = {
     ("profile", "team"): "pass a team file; a profile is for `identify --profile`",
     ("team", "rules"): "pass a rule set (a file with 'characteristics:')",
     ("profile", "rules"): "pass a rule set; a profile is for `identify --profile`",
+    ("presentation", "team"): "pass a team file; a presentation profile is for `layouts --profile`",
+    ("presentation", "rules"): "pass a rule set; a presentation profile is for `layouts --profile`",
 }
 
 
@@ -74,11 +79,23 @@ def file_kind(document: Document) -> FileKind | None:
     keys = {str(key) for key in data}
     if "team" in keys:
         return "team"
+    if data.get("profile") == "presentation":
+        return "presentation"
     if "characteristics" in keys:
         return "profile" if keys & _PROFILE_ONLY else "rules"
     if "rules" in keys:
         return "team"
     return None
+
+
+def describe(kind: FileKind) -> str:
+    """``a rule set``, ``an identification profile``, ...: the kind in a sentence."""
+    return _WHAT[kind]
+
+
+def why(kind: FileKind) -> str:
+    """What in a file makes it ``kind``: ``it has 'team:'``, ..."""
+    return _WHY[kind]
 
 
 def require_kind(document: Document, wanted: FileKind) -> None:

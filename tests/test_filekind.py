@@ -50,6 +50,7 @@ def test_the_shipped_files_are_of_the_kind_their_folder_says() -> None:
         "paper-case3-hypothesis.yaml": "rules",
         "extended.yaml": "rules",
         "identification.yaml": "profile",
+        "presentation.yaml": "presentation",
     }
     assert {file_kind(load_document(path)) for path in TEAMS.glob("*.yaml")} == {"team"}
 
@@ -104,19 +105,25 @@ def test_an_unknown_shipped_team_name_lists_the_shipped_teams() -> None:
         )
 
 
-def test_check_says_a_profile_is_not_checked_and_batch_skips_it(tmp_path: Path) -> None:
-    report = check_files([RULES / "identification.yaml"])
-    assert [(f.check, f.level, f.message) for f in report.findings] == [
+@pytest.mark.parametrize(
+    ("name", "what", "why"),
+    [
         (
-            "not-checked",
-            "info",
-            "not checked: an identification profile (check reads rule sets and teams)",
-        )
+            "identification.yaml",
+            "an identification profile",
+            "it has 'characteristics:' and profile sections such as 'patterns:'",
+        ),
+        ("presentation.yaml", "a presentation profile", "it has 'profile: presentation'"),
+    ],
+)
+def test_check_says_a_profile_is_not_checked_and_batch_skips_it(
+    name: str, what: str, why: str, tmp_path: Path
+) -> None:
+    report = check_files([RULES / name])
+    assert [(f.check, f.level, f.message) for f in report.findings] == [
+        ("not-checked", "info", f"not checked: {what} (check reads rule sets and teams)")
     ]
-    run_cli("batch", RULES / "identification.yaml", "-o", tmp_path / "out")
+    run_cli("batch", RULES / name, "-o", tmp_path / "out")
     with (tmp_path / "out" / "summary.csv").open(encoding="utf-8") as stream:
         (row,) = csv.DictReader(stream)
-    assert (row["status"], row["message"]) == (
-        "skipped",
-        "not a team file: an identification profile (it has 'characteristics:' and no 'team:')",
-    )
+    assert (row["status"], row["message"]) == ("skipped", f"not a team file: {what} ({why})")

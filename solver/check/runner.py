@@ -32,7 +32,7 @@ from solver.check.finding import LEVELS, Finding, Level
 from solver.check.load import LoadContext
 from solver.check.registry import LOAD_CHECKS, RULE_CHECKS, TEAM_CHECKS, check_ids
 from solver.errors import Fault, InputError, Location, RulesError, TeamError
-from solver.filekind import file_kind
+from solver.filekind import describe, file_kind
 from solver.rules import RuleSet, default_rules_path, parse_rules
 from solver.team import parse_team
 from solver.yamlio import Document, load_document
@@ -203,20 +203,24 @@ def check_files(
             documents.append((Path(name), document))
     if rules is not None:
         given = next((d for p, d in documents if str(p) == str(rules)), None)
-        if given is not None and file_kind(given) in ("team", "profile"):
-            what = "a team file" if file_kind(given) == "team" else "an identification profile"
+        given_kind = None if given is None else file_kind(given)
+        if given_kind is not None and given_kind != "rules":
             run.unusable.append(
-                Fault(Location(str(rules)), f"is {what}; --rules needs a rule set", "invalid")
+                Fault(
+                    Location(str(rules)),
+                    f"is {describe(given_kind)}; --rules needs a rule set",
+                    "invalid",
+                )
             )
     kinds = [file_kind(d) for _, d in documents]
     for (_, document), kind in zip(documents, kinds, strict=True):
-        if kind == "profile":  # a folder such as rules/ holds one; it is no rule set
+        if kind in ("profile", "presentation"):  # rules/ holds them; they are no rule sets
             run.report_faults(
                 (),
                 (
                     (
                         document.location(),
-                        "not checked: an identification profile (check reads rule sets and teams)",
+                        f"not checked: {describe(kind)} (check reads rule sets and teams)",
                     ),
                 ),
             )
