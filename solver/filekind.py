@@ -25,13 +25,13 @@ from solver.errors import Fault, InputError
 if TYPE_CHECKING:
     from solver.yamlio import Document
 
-__all__ = ["FileKind", "describe", "file_kind", "require_kind", "why"]
+__all__ = ["PROFILE_SECTIONS", "FileKind", "describe", "file_kind", "require_kind", "why"]
 
 FileKind = Literal["team", "rules", "profile", "presentation"]
 
 # Sections only an identification profile has (rules/identification.yaml); a rule set with
 # one of them is a profile, so `check` and `batch` do not read it as a broken rule set.
-_PROFILE_ONLY = frozenset(
+PROFILE_SECTIONS = frozenset(
     {
         "patterns",
         "plugins",
@@ -82,7 +82,7 @@ def file_kind(document: Document) -> FileKind | None:
     if data.get("profile") == "presentation":
         return "presentation"
     if "characteristics" in keys:
-        return "profile" if keys & _PROFILE_ONLY else "rules"
+        return "profile" if keys & PROFILE_SECTIONS else "rules"
     if "rules" in keys:
         return "team"
     return None

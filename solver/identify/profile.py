@@ -23,6 +23,7 @@ from pathlib import Path
 from typing import Any
 
 from solver.errors import Location, SolverError, did_you_mean
+from solver.filekind import PROFILE_SECTIONS
 from solver.reader import Reader, type_name
 from solver.rules import shipped_path
 from solver.yamlio import Document, PathPart, load_document
@@ -88,20 +89,8 @@ LIMB_KEYS = (
 LIMB_DEFAULTS = {"finger_max_joints": 4, "min_rotors": 2}
 VELOCITY = "velocity"
 
-_TOP_KEYS = {
-    "name",
-    "description",
-    "characteristics",
-    "patterns",
-    "plugins",
-    "limbs",
-    "doubt_factor",
-    "structures",
-    "sensors",
-    "sensor_types",
-    "topics",
-    "motion",
-}
+# The sections only a profile has are the ones that tell a profile from a rule set.
+_TOP_KEYS = {"name", "description", "characteristics", *PROFILE_SECTIONS}
 _CHARACTERISTIC_ROLES = ("motion_control", "sensor_type", "sensor_count")
 _STRUCTURE_KEYS = {"name", "when", "expect", "kinematic_types", "confidence", "description"}
 _ELEMENT_KEYS = {"kind", "types", "match"}

@@ -77,17 +77,8 @@ def parse_xml(
     _refuse_declared_entities(raw, name)
     if warnings is not None:
         raw = _mend(raw, name, warnings)
-    parser = etree.XMLParser(
-        resolve_entities=False,
-        no_network=True,
-        load_dtd=False,
-        dtd_validation=False,
-        huge_tree=False,
-        remove_comments=True,
-        remove_pis=True,
-    )
     try:
-        root = etree.fromstring(raw, parser)
+        root = etree.fromstring(raw, _parser())
     except etree.XMLSyntaxError as error:
         mended = None if warnings is None else _namespace_recovery(raw, name, warnings)
         if mended is not None:
@@ -162,16 +153,7 @@ def _namespace_recovery(raw: bytes, name: str, warnings: list[Fault]) -> etree._
     """
     from lxml import etree
 
-    parser = etree.XMLParser(
-        resolve_entities=False,
-        no_network=True,
-        load_dtd=False,
-        dtd_validation=False,
-        huge_tree=False,
-        remove_comments=True,
-        remove_pis=True,
-        recover=True,
-    )
+    parser = _parser(recover=True)
     try:
         root = etree.fromstring(raw, parser)
     except etree.XMLSyntaxError:
@@ -270,3 +252,20 @@ def _system_url(entities: list[etree._DTDEntityDecl], wanted: str) -> str:
 def _line_of(raw: bytes, needle: bytes) -> int | None:
     position = raw.find(needle)
     return None if position < 0 else raw.count(b"\n", 0, position) + 1
+
+
+def _parser(*, recover: bool = False) -> etree.XMLParser:
+    """lxml's parser with everything that reaches outside the document off: no entities, no
+    DTD, no network, no huge trees; comments and processing instructions dropped."""
+    from lxml import etree
+
+    return etree.XMLParser(
+        resolve_entities=False,
+        no_network=True,
+        load_dtd=False,
+        dtd_validation=False,
+        huge_tree=False,
+        remove_comments=True,
+        remove_pis=True,
+        recover=recover,
+    )
