@@ -30,6 +30,7 @@ from solver import markdown
 from solver.atomic import write_all_atomic, write_atomic
 from solver.constraints import Value
 from solver.errors import InputError
+from solver.partition import Configuration
 from solver.plot import PlotKind, bars_figure, figure_bytes, matrix_figure, radar_figure, runs
 from solver.render import configuration_data, solution_warnings
 from solver.reproduce import published_note
@@ -86,6 +87,7 @@ tr.total td { font-weight: bold; }
 figure { margin: 1rem 0; }
 figure img { max-width: 100%; height: auto; }
 figcaption { color: #555; font-size: 0.85rem; }
+figure.layout { display: inline-block; margin: 4px; }
 @media print { h2 { break-after: avoid; } table, figure { break-inside: avoid; } }
 """
 
@@ -296,6 +298,70 @@ def _svg_uri(svg: bytes) -> str:
     return "data:image/svg+xml;base64," + base64.b64encode(svg).decode("ascii")
 
 
+# At most this many layout thumbnails (the default configuration's first): each is a few KB of
+# inline SVG, so a rule set with thousands of configurations still gives a small, fast page.
+MAX_THUMBNAILS = 60
+# A layout with more panels than this is named, not drawn (it would not be legible anyway).
+MAX_THUMBNAIL_PANELS = 40
+# More thumbnails than this are folded (<details>), as long tables are.
+_FOLD_THUMBNAILS = 12
+
+
+def _thumbnails(solution: Solution) -> str:
+    """One SVG preview of each configuration's Foxglove layout (issue 17), capped and folded."""
+    from solver.layouts import foxglove_layout, layout_filename, load_profile
+    from solver.layouts.preview import preview_svg
+    from solver.layouts.tiling import tiles
+
+    e = html.escape
+    # The shipped profile serves every rule set: a component it omits is a placeholder panel.
+    profile = load_profile()
+    default_file = layout_filename(solution.default_configuration, default=True)
+    chosen: list[tuple[str, Configuration | None]] = [
+        (f"default configuration ({default_file})", None)
+    ]
+    chosen += [
+        (f"configuration {c.number} ({layout_filename(c.number)})", c)
+        for c in solution.configurations[: MAX_THUMBNAILS - 1]
+    ]
+
+    def thumbnail(configuration: Configuration | None) -> str:
+        # Tiles are capped before the layout is built: a sensor count of 1..100000 in clusters
+        # of 1 would otherwise build 100000 panels per thumbnail. A layout past the cap is
+        # named, not drawn, so no thumbnail shows fewer panels than the layout has.
+        count = None
+        if configuration is not None:
+            count = min(tiles(solution.rules, configuration), MAX_THUMBNAIL_PANELS + 1)
+        layout = foxglove_layout(solution, configuration, profile, tile_count=count)
+        panels = len(layout["configById"])
+        if panels > MAX_THUMBNAIL_PANELS:
+            return f'<p class="meta">more than {MAX_THUMBNAIL_PANELS} panels: not drawn</p>'
+        return preview_svg(layout, 240, 150)
+
+    figures = "\n".join(
+        f'<figure class="layout">{thumbnail(c)}<figcaption>{e(name)}</figcaption></figure>'
+        for name, c in chosen
+    )
+    total = len(solution.configurations) + 1
+    note = (
+        f"<p>Each configuration's layout (<code>teleop-ui layouts</code>): panels as "
+        f"rectangles coloured by panel type. Showing {len(chosen)} of {total}"
+        + (
+            f" (at most {MAX_THUMBNAILS}; <code>teleop-ui layouts TEAM -o DIR --preview</code> "
+            "draws them all)."
+            if len(chosen) < total
+            else "."
+        )
+        + "</p>"
+    )
+    if len(chosen) <= _FOLD_THUMBNAILS:
+        return note + "\n" + figures
+    return (
+        f"{note}\n<details>\n<summary>show {len(chosen)} layout thumbnails</summary>\n"
+        f"{figures}\n</details>"
+    )
+
+
 def render_html(solution: Solution, charts: Mapping[PlotKind, bytes] | None = None) -> str:
     """The report as one self-contained HTML page.
 
@@ -331,6 +397,7 @@ def render_html(solution: Solution, charts: Mapping[PlotKind, bytes] | None = No
         "constraints": f"Rule constraints ({len(solution.rules.constraints)})",
         "selections": "Team selections",
         "configurations": f"UI configurations ({len(solution.configurations)} and the default)",
+        "layouts": "Layouts",
     }
     if constraints is None:
         del titles["constraints"]
@@ -376,6 +443,8 @@ def render_html(solution: Solution, charts: Mapping[PlotKind, bytes] | None = No
     parts += [
         _section("configurations", titles["configurations"]),
         _folded(_html_table(headers, rows, [True, *[False] * (len(headers) - 2), True]), len(rows)),
+        _section("layouts", titles["layouts"]),
+        _thumbnails(solution),
         "</body>",
         "</html>",
     ]

@@ -402,11 +402,14 @@ def _read_characteristic(reader: Reader, path: YPath, name: str) -> Characterist
             for i, value in enumerate(values)
         )
         declared = False
-    holders: dict[Value, list[int]] = {}
-    for component in components:
-        for value in component.values:
-            holders.setdefault(value, []).append(component.index)
-    membership = tuple(tuple(holders.get(value, ())) for value in values)
+    if declared:
+        holders: dict[Value, list[int]] = {}
+        for component in components:
+            for value in component.values:
+                holders.setdefault(value, []).append(component.index)
+        membership = tuple(tuple(holders.get(value, ())) for value in values)
+    else:  # value i is component i: no need to look it up (100,000 counts are common)
+        membership = tuple((i,) for i in range(len(values)))
     return Characteristic(
         name=name,
         label=label,

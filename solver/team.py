@@ -231,6 +231,7 @@ def _read_selections(reader: Reader, rules: RuleSet) -> tuple[TypeSelection, ...
     if not section and isinstance(reader.get(("team",)), dict):
         reader.fault(("team",), "the team selects no kinematic type", code="empty-selection")
     found: dict[str, TypeSelection] = {}
+    maxima = _Maxima()
     for type_name in section:
         path = ("team", type_name)
         if key.index(type_name) is None:
@@ -244,7 +245,7 @@ def _read_selections(reader: Reader, rules: RuleSet) -> tuple[TypeSelection, ...
                 code="unknown-reference",
             )
             continue
-        selection = _read_type(reader, rules, type_name)
+        selection = _read_type(reader, rules, type_name, maxima)
         if selection is not None:
             found[type_name] = selection
     return tuple(found[str(v)] for v in key.values if str(v) in found)
@@ -266,7 +267,41 @@ def _in_order(characteristic: Characteristic, allowed: frozenset[Value]) -> tupl
     return tuple(filter(allowed.__contains__, values))
 
 
-def _read_type(reader: Reader, rules: RuleSet, type_name: str) -> TypeSelection | None:
+class _Maxima:
+    """``sensor_count: N`` selections (a maximum: 1..N) of one team file, each made once.
+
+    Where a count characteristic's values are a whole-number run in ascending order, 1..N is a
+    slice of them: no set of N counts is built and filtered per type, and types with the same
+    maximum share one tuple, so reading follows the file rather than the counts.
+    """
+
+    def __init__(self) -> None:
+        self.runs: dict[str, bool] = {}
+        self.domains: dict[tuple[str, int], tuple[Value, ...]] = {}
+
+    def domain(self, characteristic: Characteristic, raw: object) -> tuple[Value, ...] | None:
+        """The values of ``characteristic`` up to ``raw``, or None: read it the general way
+        (anything but a whole number in range, whose faults that reading reports)."""
+        if characteristic.kind != "integer" or isinstance(raw, bool) or not isinstance(raw, int):
+            return None
+        name, values = characteristic.name, characteristic.values
+        low = values[0] if values else None
+        if not isinstance(low, int):
+            return None
+        run = self.runs.get(name)
+        if run is None:
+            run = self.runs[name] = values == tuple(range(low, low + len(values)))
+        if not run or not low <= raw < low + len(values):
+            return None
+        key = (name, raw)
+        if key not in self.domains:
+            self.domains[key] = values[: raw - low + 1]
+        return self.domains[key]
+
+
+def _read_type(
+    reader: Reader, rules: RuleSet, type_name: str, maxima: _Maxima
+) -> TypeSelection | None:
     path = ("team", type_name)
     raw = reader.get(path)
     if raw is None:
@@ -295,6 +330,8 @@ def _read_type(reader: Reader, rules: RuleSet, type_name: str) -> TypeSelection 
             domains.append((type_name,))
         elif characteristic.name not in spec:
             domains.append(characteristic.values)
+        elif (shared := maxima.domain(characteristic, spec[characteristic.name])) is not None:
+            domains.append(shared)
         else:
             selection = read_selection(
                 reader, (*path, characteristic.name), characteristic, exact=False

@@ -3,15 +3,15 @@
 One alternative group per characteristic, one feature per value (integer characteristics as a
 one-hot group of their counts, since plain UVL has no bounded integers), and per kinematic type
 a constraint allowing only its selected values. The model's configurations are exactly the
-team's valid robots. Not here: rule sets that declare constraints of their own (refused with a
-located error rather than exported wrongly).
+team's valid robots. The rule set's own constraints become UVL constraints over the exported
+values (a condition no exported value meets is false, one every value meets is dropped).
 """
 
 from __future__ import annotations
 
 import re
 
-from solver.constraints import Value
+from solver.constraints import Condition, RuleConstraint, Value
 from solver.errors import SolverError
 from solver.team import Team
 
@@ -29,14 +29,6 @@ def feature_name(characteristic: str, value: Value) -> str:
 
 def team_to_uvl(team: Team) -> str:
     rules = team.rules
-    if rules.constraints:
-        raise ExportError.at(
-            team.file,
-            "UVL export does not translate the rule set's "
-            f"constraints yet ({len(rules.constraints)} declared); refused "
-            "rather than exporting a different design space",
-            code="unsupported",
-        )
     characteristics = rules.characteristics
     lines = ["namespace Team", "", "features", "    Team {abstract}", "        mandatory"]
     domains: list[list[Value]] = []
@@ -64,6 +56,67 @@ def team_to_uvl(team: Team) -> str:
             name = characteristics[position].name
             options = " | ".join(feature_name(name, v) for v in allowed)
             constraints.append(f"    {head} => ({options})")
+    # The rule set's own constraints, over the exported domains.
+    positions = {c.name: position for position, c in enumerate(characteristics)}
+    constraints += (
+        text
+        for constraint in rules.constraints
+        if (text := _constraint(constraint, positions, domains)) is not None
+    )
     if constraints:  # UVL rejects an empty constraints section
         lines += ["", "constraints", *constraints]
     return "\n".join(lines) + "\n"
+
+
+# The root feature is mandatory, so "!Team" is false: a rule no exported robot can satisfy.
+_FALSE = "!Team"
+
+
+def _condition(
+    condition: Condition, positions: dict[str, int], domains: list[list[Value]]
+) -> bool | str:
+    """A condition as a disjunction of features; ``True``/``False`` when it is decided."""
+    domain = domains[positions[condition.characteristic]]
+    allowed = [v for v in domain if v in condition.allowed]
+    if not allowed:
+        return False
+    if len(allowed) == len(domain):
+        return True
+    return "(" + " | ".join(feature_name(condition.characteristic, v) for v in allowed) + ")"
+
+
+def _conjunction(
+    conditions: tuple[Condition, ...], positions: dict[str, int], domains: list[list[Value]]
+) -> bool | str:
+    parts: list[str] = []
+    for condition in conditions:
+        part = _condition(condition, positions, domains)
+        if part is False:
+            return False
+        if part is not True:
+            parts.append(str(part))
+    return " & ".join(parts) if parts else True
+
+
+def _constraint(
+    constraint: RuleConstraint, positions: dict[str, int], domains: list[list[Value]]
+) -> str | None:
+    """One declared constraint as a UVL constraint line; ``None`` when it always holds."""
+    then = _conjunction(constraint.conditions, positions, domains)
+    if constraint.kind == "forbid":
+        if then is False:
+            return None
+        return f"    {_FALSE}" if then is True else f"    !({then})"
+    when = _conjunction(constraint.when, positions, domains)
+    if when is False or then is True:
+        return None
+    if when is True:
+        return f"    {_FALSE}" if then is False else f"    {then}"
+    if then is False:
+        return f"    !({when})"
+    return f"    {_grouped(when)} => {_grouped(then)}"
+
+
+def _grouped(conjunction: str) -> str:
+    # One condition is already parenthesised; a conjunction of several gets its own pair.
+    return f"({conjunction})" if " & " in conjunction else conjunction

@@ -10,7 +10,7 @@ from flamapy.interfaces.python import flamapy_feature_model as flamapy
 
 from solver import load_team, solve
 from solver.cli import main
-from solver.uvl import ExportError, team_to_uvl
+from solver.uvl import team_to_uvl
 
 
 def flamapy_count(text: str, path: Path) -> int:
@@ -58,9 +58,56 @@ def test_flamapy_counts_random_small_teams_valid_robots(seed: int, tmp_path: Pat
     assert flamapy_count(team_to_uvl(team), tmp_path / "m.uvl") == expected
 
 
-def test_export_refuses_a_rule_set_with_constraints_it_cannot_translate() -> None:
-    with pytest.raises(ExportError, match="constraints"):
-        team_to_uvl(load_team("search-and-rescue"))
+def test_declared_constraints_become_uvl_constraints() -> None:
+    team = load_team("search-and-rescue")
+    text = team_to_uvl(team)
+    assert "    !((motion_control_Flight) & (sensor_type_Force_Sensor))\n" in text
+    assert (
+        "    (motion_control_Flight) => (kinematic_type_UAV | kinematic_type_Aerial_Manipulator)\n"
+    ) in text
+
+
+def test_flamapy_counts_the_search_and_rescue_team_with_its_constraints(tmp_path: Path) -> None:
+    team = load_team("search-and-rescue")
+    assert flamapy_count(team_to_uvl(team), tmp_path / "m.uvl") == solve(team).totals.valid_robots
+
+
+def _random_constraints(rng: random.Random, rules: Path) -> None:
+    # Random require and forbid rules over the random rule set's values (and counts).
+    text = rules.read_text()
+    values = {
+        name: text.split(f"  {name}:\n    values: [", 1)[1].split("]", 1)[0].split(", ")
+        for name in ("kind", "control", "sensor")
+    }
+    lines = ["constraints:"]
+    for number in range(rng.randint(1, 3)):
+        a, b = rng.sample(sorted(values), 2)
+        pick_a = rng.sample(values[a], rng.randint(1, len(values[a])))
+        pick_b = rng.sample(values[b], rng.randint(1, len(values[b])))
+        if rng.random() < 0.5:
+            lines += [
+                f"  - name: rule {number}",
+                f"    when: {{{a}: [{', '.join(pick_a)}]}}",
+                f"    require: {{{b}: [{', '.join(pick_b)}]}}",
+            ]
+        else:
+            count = rng.randint(1, 9)
+            lines += [
+                f"  - name: rule {number}",
+                f"    forbid: {{{a}: [{', '.join(pick_a)}], count: {{min: {count}, max: 9}}}}",
+            ]
+    rules.write_text(text + "\n".join(lines) + "\n")
+
+
+@pytest.mark.parametrize("seed", range(8))
+def test_flamapy_counts_random_small_teams_with_constraints(seed: int, tmp_path: Path) -> None:
+    rng = random.Random(1000 + seed)
+    team_file = random_rules_and_team(rng, tmp_path)
+    _random_constraints(rng, tmp_path / "rules.yaml")
+    team = load_team(team_file)
+    assert team.rules.constraints
+    expected = solve(team).totals.valid_robots
+    assert flamapy_count(team_to_uvl(team), tmp_path / "m.uvl") == expected
 
 
 def test_export_command_prints_the_model(capsys: pytest.CaptureFixture[str]) -> None:

@@ -10,8 +10,10 @@ from pathlib import Path
 
 import pytest
 
-from solver import load_team, solve
-from solver.listing import numbered_robots
+from solver import Solution, load_team, solve
+from solver.engines import fast
+from solver.listing import numbered_robots, write_robots
+from solver.render import csv_row
 from tests.conftest import run_cli
 
 
@@ -103,3 +105,70 @@ constraints:
     assert {number for number, robot in listed if robot[1] == "d"} == {
         solution.default_configuration
     }
+
+
+def written(solution: Solution, fmt: str) -> str:
+    buffer = io.StringIO()
+    write_robots(solution, buffer, fmt=fmt)
+    return buffer.getvalue()
+
+
+def written_robot_by_robot(solution: Solution, fmt: str) -> str:
+    """The listing as it was written before the block writer: one row per numbered robot."""
+    buffer = io.StringIO()
+    names = solution.rules.names
+    if fmt == "csv":
+        writer = csv.writer(buffer, lineterminator="\n")
+        writer.writerow(csv_row(["configuration", *names]))
+        for number, robot in numbered_robots(solution):
+            writer.writerow([number, *csv_row(robot)])
+        return buffer.getvalue()
+    for number, robot in numbered_robots(solution):
+        line = {"configuration": number, **dict(zip(names, robot, strict=True))}
+        buffer.write(json.dumps(line, ensure_ascii=False) + "\n")
+    return buffer.getvalue()
+
+
+@pytest.mark.parametrize("fmt", ["csv", "jsonl"])
+def test_the_block_writer_writes_case3_exactly_as_robot_by_robot(fmt: str) -> None:
+    solution = solve(load_team("rules/teams/case3.yaml"))
+    text = written(solution, fmt)
+    assert text == written_robot_by_robot(solution, fmt)
+    assert len(text.splitlines()) == 872 + (fmt == "csv")
+
+
+@pytest.mark.parametrize("fmt", ["csv", "jsonl"])
+def test_the_block_writer_writes_a_constrained_team_with_awkward_values_exactly(
+    fmt: str, write_file: Callable[[str, str], Path], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # A tiny block: many prefixes, masks shared between prefixes, unserved values (gap) in the
+    # prefix and in the block, and values CSV must quote or defuse.
+    monkeypatch.setattr(fast, "BLOCK", 4)
+    write_file(
+        "rules.yaml",
+        """\
+characteristics:
+  kinematic_type: {values: [T, U]}
+  mode:
+    values: ["=1+1", "a,b", "say \\"hi\\"", ü, gap]
+    components:
+      - {name: X, values: ["=1+1", "a,b"]}
+      - {name: Y, values: ["say \\"hi\\"", ü]}
+  count:
+    values: [1, 2, 3, 4, 5]
+    components: [{name: few, values: [1, 2]}, {name: many, values: [3, 4]}]
+  colour: {values: [red, "-5", "+x"]}
+constraints:
+  - forbid: {kinematic_type: U, mode: "a,b"}
+  - require: {count: [1, 2]}
+    when: {colour: red}
+""",
+    )
+    solution = solve(
+        load_team(write_file("team.yaml", "rules: rules.yaml\nteam:\n  T: {}\n  U: {}\n"))
+    )
+    text = written(solution, fmt)
+    assert text == written_robot_by_robot(solution, fmt)
+    # 5 modes x 5 counts x 3 colours, less red with 3..5 (3 x 5 modes), less U with "a,b" (12).
+    assert len(text.splitlines()) == 2 * 60 - 12 + (fmt == "csv")
+    assert solution.default_configuration in {number for number, _ in numbered_robots(solution)}

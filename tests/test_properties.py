@@ -7,7 +7,10 @@ belong to. It shares no code with python-constraint or the partitioner.
 
 from __future__ import annotations
 
+import csv
+import io
 import itertools
+import json
 import math
 from dataclasses import replace
 from typing import Any
@@ -18,6 +21,8 @@ from hypothesis import strategies as st
 
 from solver import RuleSet, Team, robots, solve
 from solver.engines.fast import robots as robots_stream
+from solver.listing import numbered_robots, write_robots
+from solver.render import csv_row
 from solver.rules import parse_rules
 from solver.team import parse_team
 from solver.yamlio import parse_document
@@ -225,3 +230,22 @@ def test_counting_without_enumeration_equals_the_enumerated_counts(team: Team) -
     ]
     assert counted.configurations == ()
     assert counted.default_configuration == enumerated.default_configuration
+
+
+@settings(max_examples=100, deadline=None)
+@given(problems(irregular=True), st.sampled_from(["csv", "jsonl"]))
+def test_the_block_listing_is_the_robot_by_robot_listing(team: Team, fmt: str) -> None:
+    solution = solve(team)
+    listed = io.StringIO()
+    write_robots(solution, listed, fmt=fmt)
+    names = team.rules.names
+    reference = io.StringIO()
+    if fmt == "csv":
+        writer = csv.writer(reference, lineterminator="\n")
+        writer.writerow(csv_row(["configuration", *names]))
+        writer.writerows([number, *csv_row(robot)] for number, robot in numbered_robots(solution))
+    else:
+        for number, robot in numbered_robots(solution):
+            line = {"configuration": number, **dict(zip(names, robot, strict=True))}
+            reference.write(json.dumps(line, ensure_ascii=False) + "\n")
+    assert listed.getvalue() == reference.getvalue()

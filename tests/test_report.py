@@ -397,10 +397,10 @@ def test_markdown_report_that_fails_midway_puts_back_the_files_it_replaced(
 
 def test_html_report_has_contents_and_folds_long_tables(case3_html: str) -> None:
     contents = case3_html.split('<nav class="contents">', 1)[1].split("</nav>", 1)[0]
-    assert contents.count("<a href=") == 4  # no constraints section: the paper has none
-    for anchor in ("counts", "charts", "selections", "configurations"):
+    assert contents.count("<a href=") == 5  # no constraints section: the paper has none
+    for anchor in ("counts", "charts", "selections", "configurations", "layouts"):
         assert f'href="#{anchor}"' in contents
         assert f'<h2 id="{anchor}">' in case3_html
-    # 103 configuration rows are folded; the 4 rows of selections are not.
-    assert case3_html.count("<details>") == 1
+    # 103 configuration rows and 60 layout thumbnails are folded; the 4 selections are not.
+    assert case3_html.count("<details>") == 2
     assert "<summary>show all 103 rows</summary>" in case3_html

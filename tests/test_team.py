@@ -198,3 +198,27 @@ def test_negative_published_figures_are_errors(write_file: WriteFile) -> None:
     assert faults(path) == [
         "3:27: published.valid_robots: published valid_robots must not be negative, got -1"
     ]
+
+
+def test_a_maximum_count_selects_the_counts_up_to_it_one_tuple_shared_by_types(
+    write_file: Callable[[str, str], Path],
+) -> None:
+    write_file(
+        "rules.yaml",
+        """\
+characteristics:
+  kinematic_type: {values: [A, B, C]}
+  sensor_count: {range: {min: 3, max: 9}}
+""",
+    )
+    team = load_team(
+        write_file(
+            "team.yaml",
+            "rules: rules.yaml\nteam:\n  A: {sensor_count: 5}\n  B: {sensor_count: 5}\n"
+            "  C: {sensor_count: 9}\n",
+        )
+    )
+    a, b, c = (s.domains[1] for s in team.selections)
+    assert a == (3, 4, 5)
+    assert a is b  # read once for both types: reading follows the file, not the counts
+    assert c == tuple(range(3, 10))

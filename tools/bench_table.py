@@ -58,6 +58,13 @@ ROWS = [
         "python-constraint2 solution iterator alone, 999,000 robots (1 round)",
         "",
     ),
+    ("test_list_robots_as_csv", "`robots` as CSV: solve + list 199,000 robots", ""),
+    ("test_list_robots_as_jsonl", "`robots` as JSON lines: solve + list 199,000 robots", ""),
+    (
+        "test_list_robots_as_csv_python_constraint_peer",
+        "python-constraint2 iterator + dict + csv.writer, the same 199,000 robots (1 round)",
+        "",
+    ),
     (
         "test_enumeration_memory_does_not_grow_with_robots",
         "enumerate + partition 9,990,000 robots, fast engine (1 round)",
@@ -143,7 +150,13 @@ RATIOS = [
         "10^6 robots: python-constraint2 iterator alone / fast enumeration + partition",
         "test_iterate_1e6_python_constraint",
         "test_enumerate_1e6_fast",
-        ">= 50",
+        ">= 200",
+    ),
+    (
+        "`robots` CSV, 199,000 robots: python-constraint2 + dict + csv / `robots`",
+        "test_list_robots_as_csv_python_constraint_peer",
+        "test_list_robots_as_csv",
+        ">= 10",
     ),
     (
         "10^6 robots: csp enumeration + partition / fast enumeration + partition",

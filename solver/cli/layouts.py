@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import sys
 from typing import Any
 
 from solver.cli._common import add_rules, load_team_argument, write
@@ -29,6 +30,18 @@ def register(subparsers: Any) -> None:
     )
     parser.add_argument(
         "--team", dest="robot_team", metavar="TEAM.yaml", help="the team the --robot belongs to"
+    )
+    parser.add_argument(
+        "--topics",
+        metavar="FILE",
+        help="with --robot: the robot's topic list (rostopic list -v, ros2 topic list -t); "
+        "panels take its real topics instead of the templates",
+    )
+    parser.add_argument(
+        "--bag",
+        metavar="BAG",
+        help="with --robot: a bag (ROS 1 .bag or ROS 2 folder) the robot recorded; "
+        "panels take its topics instead of the templates",
     )
     add_rules(parser)
     parser.add_argument(
@@ -64,6 +77,10 @@ def run(args: argparse.Namespace) -> int:
         raise InputError.at("--preview", "previews are drawn from foxglove layouts only")
     if args.robot:
         return _robot(args)
+    if args.topics or args.bag:
+        from solver.errors import InputError
+
+        raise InputError.at("--topics" if args.topics else "--bag", "needs --robot URDF")
     if args.team is None:
         from solver.errors import InputError
 
@@ -130,16 +147,44 @@ def _robot(args: argparse.Namespace) -> int:
         tile_count = assignment.configuration.components[count_position].clusters(
             int(combination["sensor_count"])
         )
+    # The robot's real topics, read as `identify` reads them, in place of the templates.
+    real: dict[tuple[str, int], str] = {}
+    if args.topics or args.bag:
+        from solver.layouts.foxglove import panel_entries
+        from solver.layouts.topics import match_topics
+
+        if args.topics:
+            from solver.identify.topics import read_topic_list
+
+            source, topics = args.topics, read_topic_list(args.topics)
+        else:
+            from solver.identify.bags import read_bag_topics
+
+            source, topics = args.bag, read_bag_topics(args.bag)
+        entries = panel_entries(solution, assignment.configuration, profile, tile_count)
+        real, warnings = match_topics(entries, topics, source)
+        for warning in warnings:
+            sys.stderr.write(f"warning: {warning}\n")
     if args.format == "foxglove":
         layout = foxglove_layout(
-            solution, assignment.configuration, profile, robot=namespace, tile_count=tile_count
+            solution,
+            assignment.configuration,
+            profile,
+            robot=namespace,
+            tile_count=tile_count,
+            topics=real,
         )
         validate_foxglove(layout, args.output)
         text = json.dumps(layout, indent=2, sort_keys=True) + "\n"
     else:
         text = rviz_text(
             rviz_layout(
-                solution, assignment.configuration, profile, robot=namespace, tile_count=tile_count
+                solution,
+                assignment.configuration,
+                profile,
+                robot=namespace,
+                tile_count=tile_count,
+                topics=real,
             )
         )
         validate_rviz(text, args.output)

@@ -361,7 +361,7 @@ def _scan(
         unserved += block.valid - len(block.keys)
         # Every valid robot of the block, its configuration code and its values: a few vector
         # passes over the block per prefix.
-        present = counts.add(block.keys + offset)
+        present = counts.add_counted(block.distinct + offset, block.counts)
         for i in plural:
             if i < plan.start:
                 served[i].add(present, prefix[i])
@@ -378,9 +378,17 @@ class _MaskedBlock:
         self.valid = int(np.count_nonzero(mask))
         keep = mask & ~plan.block_gap
         self.keys = plan.block_key[keep]
+        # Counted once per mask: a prefix only shifts these codes (its cost follows the
+        # configurations of the block, not its robots).
+        space = plan.strides[plan.start - 1] if plan.start else plan.key_space
+        if space <= _Counter.DENSE:
+            every = np.bincount(self.keys, minlength=space)
+            self.distinct = np.flatnonzero(every)
+            self.counts = every[self.distinct]
+        else:
+            self.distinct, self.counts = np.unique(self.keys, return_counts=True)
         # A set of pairs: duplicates within the block say nothing more, so keep each once
         # (marked in a bit array over the block's codes x values: cheaper than sorting).
-        space = plan.strides[plan.start - 1] if plan.start else plan.key_space
         self.pairs = {}
         for i in plural:
             if i >= plan.start:
@@ -399,14 +407,12 @@ class _Counter:
         self.dense = np.zeros(space, dtype=np.int64) if space <= self.DENSE else None
         self.sparse: dict[int, int] = {}
 
-    def add(self, keys: Codes) -> Codes:
-        """Count ``keys``; returns the distinct codes among them."""
+    def add_counted(self, codes: Codes, counts: Codes) -> Codes:
+        """Count ``counts[k]`` robots of each of the distinct ``codes``; returns ``codes``."""
         if self.dense is not None:
-            block = np.bincount(keys, minlength=len(self.dense))
-            self.dense += block
-            return block.nonzero()[0]
-        codes, block_counts = np.unique(keys, return_counts=True)
-        for code, number in zip(codes.tolist(), block_counts.tolist(), strict=True):
+            self.dense[codes] += counts
+            return codes
+        for code, number in zip(codes.tolist(), counts.tolist(), strict=True):
             self.sparse[code] = self.sparse.get(code, 0) + number
         return codes
 
@@ -451,22 +457,27 @@ class _Pairs:
         where they are a run, which is the common case for counts)."""
         if self.dense is not None:
             table = self.dense.reshape(-1, self.size)[codes]
-            rows, columns = np.nonzero(table)
-            bounds = np.searchsorted(rows, np.arange(len(codes) + 1))
-            firsts = (
-                columns[np.minimum(bounds[:-1], len(columns) - 1)]
-                if len(columns)
-                else np.zeros(len(codes), dtype=np.int64)
-            )
-            lasts = columns[bounds[1:] - 1] if len(columns) else firsts
-            sizes = np.diff(bounds)
+            # First and last position per row and how many: a row is a run when they agree
+            # (three passes over the table, no index per pair); other rows are listed.
+            sizes = np.count_nonzero(table, axis=1)
+            firsts = table.argmax(axis=1)
+            lasts = self.size - 1 - table[:, ::-1].argmax(axis=1)
             runs = (lasts - firsts + 1 == sizes) & (sizes > 0)
+            # The other rows' positions in one pass, split by row as Python lists.
+            others = np.flatnonzero(~runs)
+            rows, columns = np.nonzero(table[others])
+            bounds = np.searchsorted(rows, np.arange(len(others) + 1)).tolist()
+            listed = columns.tolist()
+            where = dict(zip(others.tolist(), itertools.pairwise(bounds), strict=True))
             found: list[Sequence[int]] = []
-            for row, (a, b) in enumerate(itertools.pairwise(bounds.tolist())):
-                if runs[row]:
-                    found.append(range(int(firsts[row]), int(lasts[row]) + 1))
+            for row, (run, first, last) in enumerate(
+                zip(runs.tolist(), firsts.tolist(), lasts.tolist(), strict=True)
+            ):
+                if run:
+                    found.append(range(first, last + 1))
                 else:
-                    found.append(columns[a:b].tolist())
+                    a, b = where[row]
+                    found.append(listed[a:b])
             return found
         by_code: dict[int, list[int]] = {code: [] for code in codes}
         for pair in sorted(self.sparse):
@@ -483,7 +494,9 @@ def _partition_from_counts(
     width = len(plan.domains)
     # For a characteristic without served pairs, a component code names its selected values.
     named = [
-        [
+        []
+        if i in served
+        else [
             _values(domain, np.flatnonzero(plan.codes[i] == c).tolist())
             for c in range(len(plan.components[i]))
         ]
@@ -497,11 +510,22 @@ def _partition_from_counts(
     components = plan.components
     domains = plan.domains
     columns = [(i, positions.get(i), named[i]) for i in range(width)]
+    # Configurations share few distinct value sets (an arrangement's counts, a group's sensor
+    # types): each is made once.
+    made: dict[tuple[int, Sequence[int] | tuple[int, ...]], tuple[Value, ...]] = {}
+
+    def values_at(i: int, where: Sequence[int]) -> tuple[Value, ...]:
+        key = (i, where if isinstance(where, range) else tuple(where))
+        found = made.get(key)
+        if found is None:
+            found = made[key] = _values(domains[i], where)
+        return found
+
     for row, ((_, number), digits) in enumerate(zip(counts, digit_rows, strict=True)):
         key = tuple([components[i][d] for i, d in enumerate(digits)])
         values = tuple(
             [
-                _values(domains[i], grouped[row]) if grouped is not None else by_code[digits[i]]
+                values_at(i, grouped[row]) if grouped is not None else by_code[digits[i]]
                 for i, grouped, by_code in columns
             ]
         )

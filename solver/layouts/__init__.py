@@ -6,9 +6,12 @@
 ``foxglove``        Foxglove / Lichtblick layout JSON; its validation
 ``rviz``            RViz2 ``.rviz`` YAML; its validation
 ``writer``          writing every configuration's layout, validated first
+``topics``          a robot's real topics in place of the templates
+``preview``         a layout's panel tree as an SVG thumbnail
+``live``            naming the active configuration's layout in ``watch`` events
 ==================  ===============================================================
 
-Not here: solving (:mod:`solver.solution`); UVL export is not written yet.
+Not here: solving (:mod:`solver.solution`); UVL export (:mod:`solver.uvl`).
 """
 
 from __future__ import annotations

@@ -10,6 +10,7 @@ Not here: the component -> panel mapping (:mod:`solver.layouts.profile`, data).
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import Any
 
 from solver.errors import Fault, Location, SolverError
@@ -18,7 +19,14 @@ from solver.layouts.tiling import split_tree, tiles
 from solver.partition import Configuration
 from solver.solution import Solution
 
-__all__ = ["LayoutError", "foxglove_layout", "layout_filename", "validate_foxglove"]
+__all__ = [
+    "LayoutError",
+    "foxglove_layout",
+    "layout_filename",
+    "panel_entries",
+    "template_topic",
+    "validate_foxglove",
+]
 
 
 class LayoutError(SolverError, ValueError):
@@ -30,15 +38,16 @@ def layout_filename(number: int, *, default: bool = False, extension: str = "jso
     return f"config-{number:03d}{'-default' if default else ''}.{extension}"
 
 
-def foxglove_layout(
+def panel_entries(
     solution: Solution,
     configuration: Configuration | None,
     profile: Profile,
-    *,
-    robot: str = "<robot>",
     tile_count: int | None = None,
-) -> dict[str, Any]:
-    """The layout of ``configuration`` (``None``: the default configuration, every component)."""
+) -> list[tuple[PanelSpec, int]]:
+    """Each panel spec of ``configuration`` and its number of tiles, in panel order.
+
+    ``None`` is the default configuration: every component, one tile each.
+    """
     rules = solution.rules
     entries: list[tuple[PanelSpec, int]] = []
     if configuration is None:
@@ -48,33 +57,52 @@ def foxglove_layout(
             entries.extend(
                 (profile.spec(component.name), 1) for component in characteristic.components
             )
-    else:
-        # One robot shows its own g(i) tiles; a template, the most its configuration needs.
-        count = tile_count if tile_count is not None else tiles(rules, configuration)
-        # Position 0 is the kinematic type (the layout's subject, not a panel); the integer
-        # characteristic is the tiling of the sensor panel, not a panel of its own.
-        sensor_position = next(
-            (
-                position
-                for position, c in enumerate(rules.characteristics)
-                if c.name == "sensor_type"
-            ),
-            -1,
-        )
-        for position, component in enumerate(configuration.components):
-            characteristic = rules.characteristics[position]
-            if position == 0 or characteristic.kind == "integer":
-                continue
-            entries.append(
-                (profile.spec(component.name), count if position == sensor_position else 1)
-            )
+        return entries
+    # One robot shows its own g(i) tiles; a template, the most its configuration needs.
+    count = tile_count if tile_count is not None else tiles(rules, configuration)
+    # Position 0 is the kinematic type (the layout's subject, not a panel); the integer
+    # characteristic is the tiling of the sensor panel, not a panel of its own.
+    sensor_position = next(
+        (position for position, c in enumerate(rules.characteristics) if c.name == "sensor_type"),
+        -1,
+    )
+    for position, component in enumerate(configuration.components):
+        characteristic = rules.characteristics[position]
+        if position == 0 or characteristic.kind == "integer":
+            continue
+        entries.append((profile.spec(component.name), count if position == sensor_position else 1))
+    return entries
+
+
+def template_topic(spec: PanelSpec, robot: str, tile: int, count: int) -> str:
+    """The profile's topic under ``robot``; tiles after the first get ``_2``, ``_3``, ..."""
+    return spec.topic.replace("<robot>", robot) + (f"_{tile + 1}" if count > 1 else "")
+
+
+def foxglove_layout(
+    solution: Solution,
+    configuration: Configuration | None,
+    profile: Profile,
+    *,
+    robot: str = "<robot>",
+    tile_count: int | None = None,
+    topics: Mapping[tuple[str, int], str] | None = None,
+) -> dict[str, Any]:
+    """The layout of ``configuration`` (``None``: the default configuration, every component).
+
+    ``topics`` maps (component, tile) to a robot's real topic; a panel not in it keeps the
+    profile's template (see :func:`solver.layouts.topics.match_topics`).
+    """
     config_by_id: dict[str, Any] = {}
     ids: list[str] = []
-    for spec, count in entries:
+    for spec, count in panel_entries(solution, configuration, profile, tile_count):
         for tile in range(count):
             panel_id = f"{spec.panel}!p{len(ids) + 1:02d}"
             suffix = f" {tile + 1}" if count > 1 else ""
-            config_by_id[panel_id] = _panel_config(spec, robot, suffix)
+            topic = (topics or {}).get((spec.component, tile)) or template_topic(
+                spec, robot, tile, count
+            )
+            config_by_id[panel_id] = _panel_config(spec, topic, suffix)
             ids.append(panel_id)
     return {
         "configById": config_by_id,
@@ -85,12 +113,13 @@ def foxglove_layout(
     }
 
 
-def _panel_config(spec: PanelSpec, robot: str, suffix: str) -> dict[str, Any]:
-    topic = spec.topic.replace("<robot>", robot) + (suffix.strip() and f"_{suffix.strip()}")
+def _panel_config(spec: PanelSpec, topic: str, suffix: str) -> dict[str, Any]:
     title = spec.component + suffix
     if spec.placeholder:
         title += " (placeholder: no panel for this component)"
-    config: dict[str, Any] = {"foxglovePanelTitle": title}
+    # Foxglove Studio reads the panel title from "foxglovePanelTitle", Lichtblick (its fork)
+    # from "lichtblickPanelTitle" (packages/suite-base/src/util/layout.ts); each ignores the other.
+    config: dict[str, Any] = {"foxglovePanelTitle": title, "lichtblickPanelTitle": title}
     if spec.panel == "Image":
         config["imageMode"] = {"imageTopic": topic}
     elif spec.panel == "3D":
@@ -110,8 +139,14 @@ def _panel_config(spec: PanelSpec, robot: str, suffix: str) -> dict[str, Any]:
             }
         )
     elif spec.panel == "Plot":
+        # Plot paths are {value, enabled, timestampMethod} (Lichtblick/webviz PlotConfig).
         config["paths"] = [
-            {"value": f"{topic}.wrench.force.{axis}", "enabled": True} for axis in "xyz"
+            {
+                "value": f"{topic}.wrench.force.{axis}",
+                "enabled": True,
+                "timestampMethod": "receiveTime",
+            }
+            for axis in "xyz"
         ]
     elif spec.panel == "Publish":
         # A message goes out only when the operator presses the button.
@@ -124,7 +159,16 @@ def _panel_config(spec: PanelSpec, robot: str, suffix: str) -> dict[str, Any]:
             }
         )
     elif spec.panel == "Indicator":
-        config["path"] = topic
+        # Lichtblick's IndicatorConfig: path, style, rules, fallbackColor, fallbackLabel.
+        config.update(
+            {
+                "path": topic,
+                "style": "bulb",
+                "rules": [],
+                "fallbackColor": "#a0a0a0",
+                "fallbackLabel": "no data",
+            }
+        )
     else:
         config["topicPath"] = topic
     return config

@@ -12,14 +12,14 @@ Not here: the component -> panel mapping (:mod:`solver.layouts.profile`).
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import Any
 
 import yaml
 
 from solver.errors import Fault, Location
-from solver.layouts.foxglove import LayoutError
+from solver.layouts.foxglove import LayoutError, panel_entries, template_topic
 from solver.layouts.profile import PanelSpec, Profile
-from solver.layouts.tiling import tiles
 from solver.partition import Configuration
 from solver.solution import Solution
 
@@ -47,9 +47,7 @@ def _qos(topic: str, *, sensor: bool) -> dict[str, Any]:
     }
 
 
-def _display(spec: PanelSpec, robot: str, tile: int, count: int) -> dict[str, Any]:
-    suffix = f"_{tile + 1}" if count > 1 else ""
-    topic = spec.topic.replace("<robot>", robot) + suffix
+def _display(spec: PanelSpec, topic: str, tile: int, count: int) -> dict[str, Any]:
     name = spec.component + (f" {tile + 1}" if count > 1 else "")
     kind = next((DISPLAYS[t] for t in spec.types if t in DISPLAYS), None)
     if kind is None:
@@ -77,9 +75,12 @@ def rviz_layout(
     *,
     robot: str = "<robot>",
     tile_count: int | None = None,
+    topics: Mapping[tuple[str, int], str] | None = None,
 ) -> dict[str, Any]:
-    """The ``.rviz`` document of ``configuration`` (``None``: the default configuration)."""
-    rules = solution.rules
+    """The ``.rviz`` document of ``configuration`` (``None``: the default configuration).
+
+    ``topics`` maps (component, tile) to a robot's real topic, as for Foxglove layouts.
+    """
     displays: list[dict[str, Any]] = [
         {"Class": "rviz_default_plugins/Grid", "Enabled": True, "Name": "Grid", "Value": True},
         {
@@ -97,23 +98,17 @@ def rviz_layout(
             "Value": True,
         },
     ]
-    entries: list[tuple[PanelSpec, int]] = []
-    if configuration is None:
-        for characteristic in rules.characteristics[1:]:
-            if characteristic.kind != "integer":
-                entries.extend((profile.spec(c.name), 1) for c in characteristic.components)
-    else:
-        # One robot shows its own g(i) tiles; a template, the most its configuration needs.
-        count = tile_count if tile_count is not None else tiles(rules, configuration)
-        for position, component in enumerate(configuration.components):
-            characteristic = rules.characteristics[position]
-            if position == 0 or characteristic.kind == "integer":
-                continue
-            entries.append(
-                (profile.spec(component.name), count if characteristic.name == "sensor_type" else 1)
+    for spec, count in panel_entries(solution, configuration, profile, tile_count):
+        displays.extend(
+            _display(
+                spec,
+                (topics or {}).get((spec.component, tile))
+                or template_topic(spec, robot, tile, count),
+                tile,
+                count,
             )
-    for spec, count in entries:
-        displays.extend(_display(spec, robot, tile, count) for tile in range(count))
+            for tile in range(count)
+        )
     return {
         "Panels": [{"Class": "rviz_common/Displays", "Name": "Displays"}],
         "Visualization Manager": {
@@ -131,7 +126,13 @@ def rviz_layout(
                 },
             ],
             "Value": True,
-            "Views": {"Current": {"Class": "rviz_default_plugins/Orbit", "Name": "Current View"}},
+            "Views": {
+                "Current": {
+                    "Class": "rviz_default_plugins/Orbit",
+                    "Name": "Current View",
+                    "Value": "Orbit (rviz_default_plugins)",
+                }
+            },
         },
     }
 

@@ -49,3 +49,75 @@ def test_robot_layout_without_a_team_exits_2(
         == 2
     )
     assert "--robot needs --team" in capsys.readouterr().err
+
+
+def _robot_layout(tmp_path: Path, *extra: str) -> int:
+    return main(
+        [
+            "layouts",
+            "--robot",
+            str(EXAMPLES / "diff_drive_lidar.urdf"),
+            "--team",
+            "case2",
+            *extra,
+        ]
+    )
+
+
+def test_robot_layout_takes_its_real_topics_from_a_topic_list(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    topics = tmp_path / "topics.txt"
+    topics.write_text(
+        "Published topics:\n"
+        " * /dd/front/points [sensor_msgs/PointCloud2] 1 publisher\n"
+        " * /dd/cmd_vel_echo [geometry_msgs/Twist] 1 publisher\n"
+        "Subscribed topics:\n"
+        " * /dd/base/cmd_vel [geometry_msgs/Twist] 1 subscriber\n"
+    )
+    out = tmp_path / "x.json"
+    assert _robot_layout(tmp_path, "--topics", str(topics), "-o", str(out)) == 0
+    assert capsys.readouterr().err == ""
+    config = json.loads(out.read_text())["configById"]
+    assert config["3D!p02"]["topics"] == {"/dd/front/points": {"visible": True}}
+    # The Teleop panel takes the topic the robot subscribes to, not the one it publishes.
+    assert config["Teleop!p01"]["topic"] == "/dd/base/cmd_vel"
+
+
+def test_a_panel_the_robot_has_no_topic_for_keeps_its_template_with_a_located_warning(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    topics = tmp_path / "topics.txt"
+    topics.write_text("/dd/cmd_vel geometry_msgs/Twist\n")
+    out = tmp_path / "x.rviz"
+    assert _robot_layout(tmp_path, "--topics", str(topics), "-o", str(out), "--format", "rviz") == 0
+    err = capsys.readouterr().err
+    assert (
+        f"warning: {topics}: point cloud: the robot has no published topic of type "
+        "sensor_msgs/LaserScan, sensor_msgs/PointCloud2 for this 3D panel; "
+        "it keeps the template <robot>/points"
+    ) in err
+    text = out.read_text()
+    assert "Value: /diff_drive_lidar/points" in text
+    assert "Value: /dd/cmd_vel" in text
+
+
+def test_robot_layout_takes_its_real_topics_from_a_ros1_bag(tmp_path: Path) -> None:
+    from rosbags.rosbag1 import Writer
+    from rosbags.typesys import Stores, get_typestore
+
+    store = get_typestore(Stores.ROS1_NOETIC)
+    bag = tmp_path / "run.bag"
+    with Writer(bag) as writer:
+        writer.add_connection("/lidar/points", "sensor_msgs/msg/PointCloud2", typestore=store)
+        writer.add_connection("/teleop/cmd_vel", "geometry_msgs/msg/Twist", typestore=store)
+    out = tmp_path / "x.json"
+    assert _robot_layout(tmp_path, "--bag", str(bag), "-o", str(out)) == 0
+    config = json.loads(out.read_text())["configById"]
+    assert config["3D!p02"]["topics"] == {"/lidar/points": {"visible": True}}
+    assert config["Teleop!p01"]["topic"] == "/teleop/cmd_vel"
+
+
+def test_topics_without_a_robot_exit_2(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["layouts", "case1", "--topics", "t.txt", "-o", str(tmp_path)]) == 2
+    assert "--topics: needs --robot URDF" in capsys.readouterr().err
