@@ -1,7 +1,10 @@
 """The sensor-count arrangement as tiles, and panels arranged as a balanced split tree.
 
 The article's g(i) clusters of a configuration are the number of tiles of its sensor panel:
-1..5 sensors are shown individually, above that one tile per cluster. Not here: panel configs.
+1..5 sensors are shown individually, above that one tile per cluster. A rule set of its own may
+cluster far more finely than the article; past :data:`MAX_TILES` tiles a screen shows nothing
+useful and a layout of 100,000 panels is a denial of service, so the tiles stop there. Not
+here: panel configs.
 """
 
 from __future__ import annotations
@@ -11,14 +14,18 @@ from typing import Any
 from solver.partition import Configuration
 from solver.rules import RuleSet
 
-__all__ = ["split_tree", "tiles"]
+__all__ = ["MAX_TILES", "split_tree", "tiles"]
+
+# The most tiles one sensor panel gets (the article's arrangements never need more than 5).
+MAX_TILES = 25
 
 
 def tiles(rules: RuleSet, configuration: Configuration) -> int:
-    """Tiles of the sensor panel: the most clusters the configuration's sensor counts take."""
+    """Tiles of the sensor panel: the most clusters the configuration's sensor counts take,
+    at most :data:`MAX_TILES`."""
     for position, characteristic in enumerate(rules.characteristics):
         if characteristic.kind == "integer":
-            return max(1, configuration.clusters(position)[1])
+            return min(max(1, configuration.clusters(position)[1]), MAX_TILES)
     return 1
 
 

@@ -10,7 +10,10 @@ import pytest
 
 from solver import load_team, solve
 from solver.cli import main
+from solver.layouts.foxglove import foxglove_layout
 from solver.layouts.preview import COLOURS
+from solver.layouts.profile import load_profile
+from solver.layouts.tiling import MAX_TILES, tiles
 from solver.report import MAX_THUMBNAILS, render_html
 
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
@@ -83,7 +86,7 @@ def test_report_thumbnails_screenshot_in_headless_chromium_is_not_blank(tmp_path
     assert _rgb(COLOURS["Image"]) in painted
 
 
-def test_a_layout_of_100000_sensor_tiles_is_named_not_drawn(tmp_path: Path) -> None:
+def test_a_layout_of_100000_sensor_clusters_is_capped_at_max_tiles(tmp_path: Path) -> None:
     (tmp_path / "rules.yaml").write_text(
         "name: big\nteam_key: kind\ncharacteristics:\n"
         "  kind:\n    values: [K]\n  control:\n    values: [C]\n"
@@ -95,8 +98,12 @@ def test_a_layout_of_100000_sensor_tiles_is_named_not_drawn(tmp_path: Path) -> N
         "name: big team\nrules: rules.yaml\nteam:\n"
         "  K:\n    control: [C]\n    sensor_type: [S]\n    count: 100000\n"
     )
-    section = render_html(solve(load_team(tmp_path / "team.yaml"))).split('id="layouts"', 1)[1]
-    # Configuration 1 would tile 100000 sensor panels: capped before it is built, then named.
-    assert section.count("more than 40 panels: not drawn") == 1
-    assert section.count("<svg") == 1  # the default configuration: one panel per component
-    assert len(section) < 5000
+    solution = solve(load_team(tmp_path / "team.yaml"))
+    (configuration,) = solution.configurations
+    assert configuration.clusters(3)[1] == 100000  # what the rule set asks for
+    assert tiles(solution.rules, configuration) == MAX_TILES
+    layout = foxglove_layout(solution, configuration, load_profile())
+    assert len(layout["configById"]) == MAX_TILES + 1  # the control panel and the tiles
+    section = render_html(solution).split('id="layouts"', 1)[1]
+    assert "not drawn" not in section
+    assert section.count("<svg") == 2  # the configuration and the default one
