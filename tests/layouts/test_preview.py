@@ -2,17 +2,12 @@
 
 from __future__ import annotations
 
-import shutil
-import subprocess
 from pathlib import Path
-
-import pytest
 
 from solver import load_team, solve
 from solver.layouts import foxglove_layout, load_profile
 from solver.layouts.preview import preview_html, preview_svg
-
-CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
+from tests.layouts.chromium import painted_colours
 
 
 def test_preview_draws_one_labelled_rectangle_per_panel() -> None:
@@ -24,11 +19,6 @@ def test_preview_draws_one_labelled_rectangle_per_panel() -> None:
 
 
 def test_preview_page_screenshot_in_headless_chromium_is_not_blank(tmp_path: Path) -> None:
-    from PIL import Image
-
-    if CHROMIUM is None:
-        pytest.fail("needs Debian's chromium: tools/test.sh installs it")
-
     solution = solve(load_team("case1"))
     profile = load_profile()
     page = tmp_path / "preview.html"
@@ -40,33 +30,8 @@ def test_preview_page_screenshot_in_headless_chromium_is_not_blank(tmp_path: Pat
             ]
         )
     )
-    shot = tmp_path / "shot.png"
-    assert CHROMIUM is not None
-    subprocess.run(
-        [
-            CHROMIUM,
-            "--headless",
-            "--no-sandbox",
-            "--disable-gpu",
-            "--disable-quic",
-            "--no-first-run",
-            "--disable-background-networking",
-            "--disable-component-update",
-            "--disable-sync",
-            f"--user-data-dir={tmp_path / 'profile'}",
-            f"--screenshot={shot}",
-            "--window-size=1100,700",
-            page.as_uri(),
-        ],
-        check=True,
-        capture_output=True,
-        timeout=120,
-    )
-    image = Image.open(shot).convert("RGB")
-    colours = image.getcolors(maxcolors=1 << 20)
-    assert colours is not None
+    painted = painted_colours(page, tmp_path, (1100, 700))
     # A blank page is one colour; the thumbnails paint several panel colours over white.
-    painted = {colour for count, colour in colours if count > 500}
     assert len(painted) >= 3
     assert (85, 168, 104) in painted  # the Image panels' green
 

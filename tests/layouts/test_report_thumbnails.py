@@ -2,11 +2,7 @@
 
 from __future__ import annotations
 
-import shutil
-import subprocess
 from pathlib import Path
-
-import pytest
 
 from solver import load_team, solve
 from solver.cli import main
@@ -15,8 +11,7 @@ from solver.layouts.preview import COLOURS
 from solver.layouts.profile import load_profile
 from solver.layouts.tiling import MAX_TILES, tiles
 from solver.report import MAX_THUMBNAILS, render_html
-
-CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
+from tests.layouts.chromium import painted_colours
 
 
 def _rgb(colour: str) -> tuple[int, int, int]:
@@ -43,10 +38,6 @@ def test_report_thumbnails_are_capped_and_folded_for_many_configurations() -> No
 
 
 def test_report_thumbnails_screenshot_in_headless_chromium_is_not_blank(tmp_path: Path) -> None:
-    from PIL import Image
-
-    if CHROMIUM is None:
-        pytest.fail("needs Debian's chromium: tools/test.sh installs it")
     report = tmp_path / "case1.html"
     assert main(["report", "case1", "-o", str(report)]) == 0
     # Only the thumbnails section: the charts above it have colours of their own.
@@ -55,32 +46,7 @@ def test_report_thumbnails_screenshot_in_headless_chromium_is_not_blank(tmp_path
     body_start = head.index("<body>") + len("<body>")
     page = tmp_path / "thumbnails.html"
     page.write_text(head[:body_start] + '<h2 id="layouts">' + rest)
-    shot = tmp_path / "shot.png"
-    assert CHROMIUM is not None
-    subprocess.run(
-        [
-            CHROMIUM,
-            "--headless",
-            "--no-sandbox",
-            "--disable-gpu",
-            "--disable-quic",
-            "--no-first-run",
-            "--disable-background-networking",
-            "--disable-component-update",
-            "--disable-sync",
-            f"--user-data-dir={tmp_path / 'profile'}",
-            f"--screenshot={shot}",
-            "--window-size=1100,900",
-            page.as_uri(),
-        ],
-        check=True,
-        capture_output=True,
-        timeout=120,
-    )
-    image = Image.open(shot).convert("RGB")
-    colours = image.getcolors(maxcolors=1 << 20)
-    assert colours is not None
-    painted = {colour for count, colour in colours if count > 500}
+    painted = painted_colours(page, tmp_path, (1100, 900))
     # case1 is flight control over visual displays: Teleop and Image panels, painted.
     assert _rgb(COLOURS["Teleop"]) in painted
     assert _rgb(COLOURS["Image"]) in painted
