@@ -19,7 +19,6 @@ are printed and kept in the benchmark's extra info. Run:
 import itertools
 import os
 import queue
-import statistics
 import threading
 import time
 from collections.abc import Iterator
@@ -29,6 +28,7 @@ from typing import Any
 import pytest
 from pytest_benchmark.fixture import BenchmarkFixture
 
+from benchmarks.latency import report
 from solver.identify.profile import load_profile
 from solver.live.events import event_data
 from solver.live.sources.ros2 import DdsGraph
@@ -114,24 +114,6 @@ def fleet(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Fleet]:
     running = Fleet(tmp_path_factory.mktemp("dds"))
     yield running
     running.close()
-
-
-def report(benchmark: BenchmarkFixture, name: str, latencies: list[float]) -> None:
-    ordered = sorted(latencies)
-    p95 = ordered[min(len(ordered) - 1, round(0.95 * (len(ordered) - 1)))]
-    benchmark.extra_info.update(
-        {
-            "changes": len(ordered),
-            "median_ms": round(statistics.median(ordered) * 1000, 1),
-            "p95_ms": round(p95 * 1000, 1),
-        }
-    )
-    if not benchmark.disabled:
-        print(
-            f"\n{name}: {len(ordered)} changes: median "
-            f"{statistics.median(ordered) * 1000:.1f} ms, 95th percentile "
-            f"{p95 * 1000:.1f} ms, max {ordered[-1] * 1000:.1f} ms"
-        )
 
 
 def test_active_robot_message_to_published_configuration(

@@ -34,7 +34,6 @@ from __future__ import annotations
 import itertools
 import queue
 import random
-import statistics
 import threading
 import time
 from collections.abc import Iterator
@@ -44,6 +43,7 @@ from typing import Any
 import pytest
 from pytest_benchmark.fixture import BenchmarkFixture
 
+from benchmarks import latency
 from solver.identify.identification import IdentificationCache
 from solver.identify.profile import load_profile
 from solver.live.events import event_data
@@ -133,25 +133,6 @@ def fleet(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Fleet]:
     yield running
     running.close()
     core.kill()
-
-
-def report(benchmark: BenchmarkFixture, name: str, latencies: list[float]) -> None:
-    ordered = sorted(latencies)
-    p95 = ordered[min(len(ordered) - 1, round(0.95 * (len(ordered) - 1)))]
-    benchmark.extra_info.update(
-        {
-            "changes": len(ordered),
-            "median_ms": round(statistics.median(ordered) * 1000, 1),
-            "p95_ms": round(p95 * 1000, 1),
-            "max_ms": round(ordered[-1] * 1000, 1),
-        }
-    )
-    if not benchmark.disabled:
-        print(
-            f"\n{name}: {len(ordered)} changes, change -> event: median "
-            f"{statistics.median(ordered) * 1000:.1f} ms, 95th percentile {p95 * 1000:.1f} "
-            f"ms, max {ordered[-1] * 1000:.1f} ms (polling interval {INTERVAL} s)"
-        )
 
 
 def test_switching_the_active_robot(benchmark: BenchmarkFixture, fleet: Fleet) -> None:
@@ -281,3 +262,7 @@ def test_setting_a_large_description(
         f"large description set ({'cached' if cached else 'parsed'})",
         latencies[1:] if cached else latencies,
     )
+
+
+def report(benchmark: BenchmarkFixture, name: str, latencies: list[float]) -> None:
+    latency.report(benchmark, name, latencies, f" (polling interval {INTERVAL} s)")
