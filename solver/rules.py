@@ -21,11 +21,11 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass, field, replace
 from functools import cached_property
 from pathlib import Path
-from typing import Any, Literal
+from typing import Any, Literal, TypeVar, overload
 
 from solver.constraints import Condition, RuleConstraint, Value
 from solver.errors import Location, RulesError, did_you_mean
@@ -36,7 +36,9 @@ from solver.yamlio import Document, PathPart, load_document
 __all__ = [
     "Characteristic",
     "Component",
+    "OnePerValue",
     "RuleSet",
+    "Run",
     "default_rules_path",
     "load_rules",
     "parse_rules",
@@ -47,6 +49,7 @@ __all__ = [
 
 Kind = Literal["categorical", "integer"]
 YPath = tuple[PathPart, ...]
+T = TypeVar("T")
 
 # The largest integer domain a rule set may declare; a typo such as max: 10000000000 would
 # otherwise allocate a tuple of ten billion values.
@@ -98,6 +101,99 @@ class Component:
         return f"{'' if self.low is None else self.low}..{'' if self.high is None else self.high}"
 
 
+class Run(tuple[int, ...]):
+    """Whole numbers ``low..high`` in order: an integer characteristic's values as the reader
+    makes them. A count's position and the counts ``low..N`` need no look at the others."""
+
+    __slots__ = ()
+
+    def position(self, value: object) -> int | None:
+        """Where ``value`` is, or None; only whole numbers (not ``True``) are looked up here."""
+        if type(value) is not int or not self or not self[0] <= value <= self[-1]:
+            return None
+        return value - self[0]
+
+
+class _Made(Sequence[T]):
+    """A read-only sequence whose items are made when asked for, equal (and hashing) as the
+    tuple of the same items would."""
+
+    __slots__ = ()
+
+    def _item(self, index: int) -> T:
+        raise NotImplementedError
+
+    def _key(self) -> object:
+        """What two sequences of this class are equal by, without making their items."""
+        raise NotImplementedError
+
+    @overload
+    def __getitem__(self, index: int) -> T: ...
+    @overload
+    def __getitem__(self, index: slice) -> tuple[T, ...]: ...
+    def __getitem__(self, index: int | slice) -> T | tuple[T, ...]:
+        positions = range(len(self))
+        if isinstance(index, slice):
+            return tuple(self._item(i) for i in positions[index])
+        return self._item(positions[index])
+
+    def __iter__(self) -> Iterator[T]:
+        return (self._item(i) for i in range(len(self)))
+
+    def __eq__(self, other: object) -> bool:
+        if type(other) is type(self):
+            return self._key() == other._key()
+        if isinstance(other, Sequence) and not isinstance(other, str):
+            return len(other) == len(self) and all(a == b for a, b in zip(self, other, strict=True))
+        return NotImplemented
+
+    def __hash__(self) -> int:
+        return hash(tuple(self))
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}(<{len(self)} items>)"
+
+
+class OnePerValue(_Made[Component]):
+    """The components of a characteristic declared without ``components``: value *i* is
+    component *i*, named after it. Each is made when asked for, so a range of 100,000 counts
+    costs nothing to read until something looks at its components."""
+
+    __slots__ = ("_values",)
+
+    def __init__(self, values: Sequence[Value]) -> None:
+        self._values = values
+
+    def __len__(self) -> int:
+        return len(self._values)
+
+    def _item(self, index: int) -> Component:
+        value = self._values[index]
+        number = value if isinstance(value, int) else None
+        return Component(str(value), index, (value,), low=number, high=number)
+
+    def _key(self) -> object:
+        return self._values
+
+
+class _Itself(_Made[tuple[int, ...]]):
+    """The membership of :class:`OnePerValue` components: value *i* is in component *i*."""
+
+    __slots__ = ("_size",)
+
+    def __init__(self, size: int) -> None:
+        self._size = size
+
+    def __len__(self) -> int:
+        return self._size
+
+    def _item(self, index: int) -> tuple[int, ...]:
+        return (index,)
+
+    def _key(self) -> object:
+        return self._size
+
+
 @dataclass(frozen=True)
 class Characteristic:
     """A named variable with a finite domain and the components its values map to."""
@@ -106,9 +202,9 @@ class Characteristic:
     label: str
     kind: Kind
     values: tuple[Value, ...]
-    components: tuple[Component, ...]
+    components: Sequence[Component]
     # membership[i]: indices of the components that value i belongs to (normally exactly one).
-    membership: tuple[tuple[int, ...], ...]
+    membership: Sequence[tuple[int, ...]]
     declared_components: bool = False
     description: str = ""
     location: Location | None = field(default=None, compare=False)
@@ -120,6 +216,8 @@ class Characteristic:
 
     def index(self, value: Value) -> int | None:
         """Position of ``value`` in the domain, or ``None`` if it is not a value of this."""
+        if isinstance(self.values, Run) and type(value) is int:
+            return self.values.position(value)
         return self.positions.get(value)
 
     def components_of(self, value: Value) -> tuple[Component, ...]:
@@ -387,29 +485,18 @@ def _read_characteristic(reader: Reader, path: YPath, name: str) -> Characterist
         values = _read_integer_range(reader, (*path, "range"), name)
     if not values:
         return None
+    components: Sequence[Component]
+    membership: Sequence[tuple[int, ...]]
     if "components" in spec:
         components = _read_components(reader, (*path, "components"), name, kind, values)
         declared = True
-    else:
-        components = tuple(
-            Component(
-                name=str(value),
-                index=i,
-                values=(value,),
-                low=value if isinstance(value, int) else None,
-                high=value if isinstance(value, int) else None,
-            )
-            for i, value in enumerate(values)
-        )
-        declared = False
-    if declared:
         holders: dict[Value, list[int]] = {}
         for component in components:
             for value in component.values:
                 holders.setdefault(value, []).append(component.index)
         membership = tuple(tuple(holders.get(value, ())) for value in values)
-    else:  # value i is component i: no need to look it up (100,000 counts are common)
-        membership = tuple((i,) for i in range(len(values)))
+    else:  # value i is component i, made when asked for (100,000 counts are common)
+        components, membership, declared = OnePerValue(values), _Itself(len(values)), False
     return Characteristic(
         name=name,
         label=label,
@@ -443,7 +530,7 @@ def _read_categorical_values(reader: Reader, path: YPath, name: str) -> tuple[st
     return tuple(seen)
 
 
-def _read_integer_range(reader: Reader, path: YPath, name: str) -> tuple[int, ...]:
+def _read_integer_range(reader: Reader, path: YPath, name: str) -> Run | tuple[()]:
     raw = reader.get(path)
     low: int | None
     high: int | None
@@ -486,7 +573,7 @@ def _read_integer_range(reader: Reader, path: YPath, name: str) -> tuple[int, ..
             code="out-of-range",
         )
         return ()
-    return tuple(range(low, high + 1))
+    return Run(range(low, high + 1))
 
 
 def _read_components(

@@ -34,6 +34,7 @@ from solver.reader import Reader, quote
 from solver.rules import (
     Characteristic,
     RuleSet,
+    Run,
     default_rules_path,
     load_rules,
     read_selection,
@@ -270,32 +271,23 @@ def _in_order(characteristic: Characteristic, allowed: frozenset[Value]) -> tupl
 class _Maxima:
     """``sensor_count: N`` selections (a maximum: 1..N) of one team file, each made once.
 
-    Where a count characteristic's values are a whole-number run in ascending order, 1..N is a
-    slice of them: no set of N counts is built and filtered per type, and types with the same
-    maximum share one tuple, so reading follows the file rather than the counts.
+    A rule file's counts are a :class:`~solver.rules.Run`, so 1..N is a slice of them: no set
+    of N counts is built and filtered per type, and types with the same maximum share one
+    tuple, so reading follows the file rather than the counts.
     """
 
     def __init__(self) -> None:
-        self.runs: dict[str, bool] = {}
         self.domains: dict[tuple[str, int], tuple[Value, ...]] = {}
 
     def domain(self, characteristic: Characteristic, raw: object) -> tuple[Value, ...] | None:
         """The values of ``characteristic`` up to ``raw``, or None: read it the general way
-        (anything but a whole number in range, whose faults that reading reports)."""
-        if characteristic.kind != "integer" or isinstance(raw, bool) or not isinstance(raw, int):
+        (anything but a whole number in a run of counts, whose faults that reading reports)."""
+        values = characteristic.values
+        if not isinstance(values, Run) or (end := values.position(raw)) is None:
             return None
-        name, values = characteristic.name, characteristic.values
-        low = values[0] if values else None
-        if not isinstance(low, int):
-            return None
-        run = self.runs.get(name)
-        if run is None:
-            run = self.runs[name] = values == tuple(range(low, low + len(values)))
-        if not run or not low <= raw < low + len(values):
-            return None
-        key = (name, raw)
+        key = (characteristic.name, end)
         if key not in self.domains:
-            self.domains[key] = values[: raw - low + 1]
+            self.domains[key] = values[: end + 1]
         return self.domains[key]
 
 

@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from solver import RulesError, load_rules
-from solver.rules import default_rules_path
+from solver.rules import Component, default_rules_path
 from tests.conftest import RULES
 
 WriteFile = Callable[[str, str], Path]
@@ -81,6 +81,56 @@ def test_without_components_every_value_is_its_own_component(write_file: WriteFi
     kinematic = rules.characteristic("kinematic_type")
     assert [c.name for c in kinematic.components] == ["UAV", "UGV"]
     assert rules.bound == 4
+
+
+def test_a_range_without_components_has_one_component_per_count(write_file: WriteFile) -> None:
+    rules = load_rules(
+        write_file(
+            "r.yaml",
+            MINIMAL + "  sensor_count:\n    range: {min: 3, max: 100000}\n",
+        )
+    )
+    counts = rules.characteristic("sensor_count")
+    assert len(counts.values) == len(counts.components) == len(counts.membership) == 99_998
+    assert counts.components[-1] == Component(
+        "100000", 99_997, (100_000,), low=100_000, high=100_000
+    )
+    assert counts.components[1:3] == (
+        Component("4", 1, (4,), low=4, high=4),
+        Component("5", 2, (5,), low=5, high=5),
+    )
+    assert counts.membership[7] == (7,)
+    assert [counts.index(3), counts.index(100_000), counts.index(2), counts.index(True)] == [
+        0,
+        99_997,
+        None,
+        None,
+    ]
+    assert rules.bound == 4 * 99_998
+
+
+def test_a_short_ranges_components_equal_the_same_components_listed(
+    write_file: WriteFile,
+) -> None:
+    implicit = load_rules(
+        write_file(
+            "a.yaml", "characteristics:\n  k:\n    values: [A]\n  n:\n    range: {min: 1, max: 2}\n"
+        )
+    )
+    listed = load_rules(
+        write_file(
+            "b.yaml",
+            "characteristics:\n  k:\n    values: [A]\n  n:\n    range: {min: 1, max: 2}\n"
+            "    components:\n"
+            "      - {name: '1', min: 1, max: 1}\n      - {name: '2', min: 2, max: 2}\n",
+        )
+    )
+    a, b = implicit.characteristic("n"), listed.characteristic("n")
+    assert a.components == tuple(b.components)
+    assert tuple(b.components) == a.components
+    assert a.membership == b.membership
+    assert hash(a.components) == hash(tuple(b.components))
+    assert a.components != a.components[:1]
 
 
 def test_a_rule_set_may_add_kinematic_types_and_characteristics_of_its_own(
