@@ -3,7 +3,9 @@
 Targets (issue 4): fast enumeration with partitioning at least 50x the throughput of
 python-constraint2's solution iterator on a team of about 10^6 robots; memory during
 enumeration bounded by the number of UI configurations plus a fixed block, not the robots.
-Issue 14 raises the first target to 200x (the ratio is in tools/bench_table.py's report).
+Issue 14 raises the first target to 200x (the ratio is in tools/bench_table.py's report): the
+fast engine now enumerates the product of value classes (values the rules cannot tell apart),
+each weighing the robots it stands for, so its cost follows classes and configurations.
 """
 
 from __future__ import annotations

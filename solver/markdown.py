@@ -46,8 +46,9 @@ def escape(text: object) -> str:
 def paragraph(text: object) -> str:
     """``text`` as Markdown paragraphs that show exactly it, whatever its lines start with."""
     lines = escape(text).splitlines()
-    # Indentation would make a code block: it is dropped, as a viewer would drop it anyway.
-    return _LINE_START.sub(_line_start, "\n".join(line.lstrip() for line in lines))
+    # Indentation would make a code block, two trailing spaces a line break: both are dropped,
+    # as a viewer would drop them anyway.
+    return _LINE_START.sub(_line_start, "\n".join(line.strip() for line in lines))
 
 
 def heading(level: int, text: object) -> str:

@@ -156,21 +156,26 @@ class _Made(Sequence[T]):
 
 class OnePerValue(_Made[Component]):
     """The components of a characteristic declared without ``components``: value *i* is
-    component *i*, named after it. Each is made when asked for, so a range of 100,000 counts
-    costs nothing to read until something looks at its components."""
+    component *i*, named after it. Each is made when first asked for (and kept), so a range
+    of 100,000 counts costs nothing to read until something looks at its components."""
 
-    __slots__ = ("_values",)
+    __slots__ = ("_made", "_values")
 
     def __init__(self, values: Sequence[Value]) -> None:
         self._values = values
+        self._made: dict[int, Component] = {}
 
     def __len__(self) -> int:
         return len(self._values)
 
     def _item(self, index: int) -> Component:
-        value = self._values[index]
-        number = value if isinstance(value, int) else None
-        return Component(str(value), index, (value,), low=number, high=number)
+        made = self._made.get(index)
+        if made is None:
+            value = self._values[index]
+            number = value if isinstance(value, int) else None
+            made = Component(str(value), index, (value,), low=number, high=number)
+            self._made[index] = made
+        return made
 
     def _key(self) -> object:
         return self._values

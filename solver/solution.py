@@ -13,6 +13,7 @@ Not here: how robots are counted or enumerated (:mod:`solver.engines`), renderin
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import cached_property
@@ -24,7 +25,7 @@ from solver.engines import MAX_CONFIGURATIONS, MAX_ROBOTS
 from solver.engines.structure import Memo
 from solver.errors import TooLargeError
 from solver.forbidden import Removed, removed_by_constraints
-from solver.partition import Configuration, Key
+from solver.partition import Configuration, Key, Partition
 from solver.rules import RuleSet
 from solver.team import Team
 
@@ -210,19 +211,32 @@ def solve(
                 method,
             )
         )
-        every = [c.components for c in rules.characteristics]
-        for found in part.classes:
-            components = tuple([every[i][k] for i, k in enumerate(found.key)])
-            configurations.append(
-                Configuration(
-                    len(configurations) + 1,
-                    selection.kinematic_type,
-                    found.key,
-                    components,
-                    found.robots,
-                    found.served,
-                )
-            )
+        configurations.extend(
+            _numbered(rules, selection.kinematic_type, part, len(configurations) + 1)
+        )
     return Solution(
         team, tuple(summaries), tuple(configurations), engine, proven, listed=not count_only
     )
+
+
+def _numbered(
+    rules: RuleSet, kinematic_type: str, part: Partition, first: int
+) -> list[Configuration]:
+    """The configurations of one partition, numbered from ``first``, with their components."""
+    if not part.classes:
+        return []
+    # The components the configurations use, looked up once each (a characteristic's
+    # components may be made on demand: a range of counts without declared components),
+    # then a characteristic at a time: few Python steps per configuration.
+    columns = []
+    for characteristic, column in zip(
+        rules.characteristics, zip(*(found.key for found in part.classes), strict=True), strict=True
+    ):
+        used = {k: characteristic.components[k] for k in set(column)}
+        columns.append(map(used.__getitem__, column))
+    return [
+        Configuration(number, kinematic_type, found.key, components, found.robots, found.served)
+        for number, found, components in zip(
+            itertools.count(first), part.classes, zip(*columns, strict=True), strict=False
+        )
+    ]

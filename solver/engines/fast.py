@@ -27,7 +27,7 @@ import numpy as np
 from solver import partition as partitioning
 from solver.constraints import Value
 from solver.engines import Counts
-from solver.partition import Partition, PartitionClass, sort_key
+from solver.partition import Partition, PartitionClass
 from solver.rules import RuleSet
 from solver.team import TypeSelection
 
@@ -40,6 +40,9 @@ if TYPE_CHECKING:
 Mask: TypeAlias = "NDArray[np.bool_]"
 Codes: TypeAlias = "NDArray[np.int64]"
 Scalars = tuple[tuple[int, frozenset[int]], ...]  # (prefix position, allowed digits)
+_Weights = tuple[
+    tuple[int, ...], ...
+]  # per characteristic, per selected value: values it stands for
 
 __all__ = ["BLOCK", "BlockLayout", "RobotBlock", "count", "partition", "robot_blocks", "robots"]
 
@@ -62,9 +65,13 @@ class _Rule:
 class _Plan:
     """Everything about one kinematic type that does not change from block to block."""
 
-    def __init__(self, rules: RuleSet, selection: TypeSelection) -> None:
+    def __init__(
+        self, rules: RuleSet, selection: TypeSelection, weights: _Weights | None = None
+    ) -> None:
         self.rules = rules
         self.domains = selection.domains
+        # Robots each selected value stands for (a class of values, :func:`_classes`); None: 1.
+        self.weights = weights
         sizes = [len(d) for d in self.domains]
         width = len(sizes)
         start = width
@@ -87,17 +94,15 @@ class _Plan:
         codes = []
         for characteristic, domain in zip(rules.characteristics, self.domains, strict=True):
             # The component of each selected value (-1: none), then renumbered compactly.
-            first = np.array([_first(m) for m in characteristic.membership], dtype=np.int64)
-            if len(domain) == len(characteristic.values):
-                component = first
-            else:
-                where = characteristic.positions
-                component = first[
-                    np.fromiter((where[v] for v in domain), dtype=np.int64, count=len(domain))
-                ]
+            membership, index = characteristic.membership, characteristic.index
+            component = np.fromiter(
+                (_first(membership[index(v)]) for v in domain),  # type: ignore[index]
+                dtype=np.int64,
+                count=len(domain),
+            )
             reached = np.unique(component[component >= 0])
             self.components.append(reached.tolist())
-            compact = np.full(int(first.max(initial=0)) + 2, -1, dtype=np.int64)
+            compact = np.full(len(characteristic.components) + 1, -1, dtype=np.int64)
             compact[reached] = np.arange(len(reached))
             codes.append(compact[component])  # component -1 reads the last cell: -1
         self.codes = codes
@@ -111,6 +116,13 @@ class _Plan:
             block_key += code * self.strides[position]
         self.block_key = block_key
         self.block_gap = block_gap
+        # The robots each block row stands for (None: one each).
+        self.block_weight: Codes | None = None
+        if weights is not None and any(max(w) > 1 for w in weights[start:]):
+            block_weight = np.ones(product, dtype=np.int64)
+            for position in range(start, width):
+                block_weight *= np.array(weights[position], dtype=np.int64)[self.digits[position]]
+            self.block_weight = block_weight
         self.rules_split = [self._split(rule) for rule in rules.constraints]
 
     def _split(self, rule: RuleConstraint) -> _Rule:
@@ -305,8 +317,8 @@ def count(rules: RuleSet, selection: TypeSelection, _memo: object = None) -> Cou
         return Counts(
             selection.kinematic_type, part.valid_robots, len(part.classes), part.unserved_robots
         )
-    _, counts, _, total, unserved = _scan(rules, selection, served_too=False)
-    return Counts(selection.kinematic_type, total, counts.size(), unserved)
+    scanned = _scan(rules, _classes(rules, selection), served_too=False)
+    return Counts(selection.kinematic_type, scanned.total, scanned.counts.size(), scanned.unserved)
 
 
 def partition(rules: RuleSet, selection: TypeSelection, _memo: object = None) -> Partition:
@@ -316,16 +328,71 @@ def partition(rules: RuleSet, selection: TypeSelection, _memo: object = None) ->
     """
     if not all(c.is_partition for c in rules.characteristics):
         return partitioning.partition(rules, selection.kinematic_type, robots(rules, selection))
-    plan, counts, served, total, unserved = _scan(rules, selection, served_too=True)
-    return _partition_from_counts(plan, counts.items(), served, total, unserved)
+    classes = _classes(rules, selection)
+    return _partition_from_counts(_scan(rules, classes, served_too=True), classes)
 
 
-def _scan(
-    rules: RuleSet, selection: TypeSelection, *, served_too: bool
-) -> tuple[_Plan, _Counter, dict[int, _Pairs], int, int]:
-    """Robots per configuration code, and (``served_too``) the values each code serves, with
-    the valid and unserved robots."""
-    plan = _Plan(rules, selection)
+@dataclass(frozen=True)
+class _Classes:
+    """A selection whose values are grouped into classes the rules cannot tell apart (the same
+    components, the same answer to every condition: :attr:`RuleSet.value_classes`), each class
+    standing in the enumeration as its first value. Counting and partitioning enumerate these
+    representatives, each weighing as many robots as its class has values: 1,000 counts in
+    five arrangements and one constraint are six representatives, not 1,000 values."""
+
+    original: TypeSelection
+    selection: TypeSelection  # the representatives, in domain order of their first value
+    # members[i][k]: positions in the original domain i of the values representative k stands for
+    members: tuple[tuple[tuple[int, ...], ...], ...]
+
+    @property
+    def weights(self) -> _Weights | None:
+        """Values per representative; None where every class is one value (nothing grouped)."""
+        if all(len(m) == len(d) for m, d in zip(self.members, self.original.domains, strict=True)):
+            return None
+        return tuple(tuple(len(group) for group in groups) for groups in self.members)
+
+
+# Weighted sums stay exact in the float64 that numpy's weighted bincount adds in.
+_EXACT = 1 << 53
+
+
+def _classes(rules: RuleSet, selection: TypeSelection) -> _Classes:
+    """``selection`` grouped into value classes; ungrouped when its robots could exceed what
+    weighted counting adds exactly (enumerating that many robots would not end anyway)."""
+    if selection.size >= _EXACT:
+        single = tuple(tuple((j,) for j in range(len(d))) for d in selection.domains)
+        return _Classes(selection, selection, single)
+    domains: list[tuple[Value, ...]] = []
+    members: list[tuple[tuple[int, ...], ...]] = []
+    for index, domain in zip(rules.value_class_index, selection.domains, strict=True):
+        if len(domain) == 1:
+            domains.append(domain)
+            members.append(((0,),))
+            continue
+        ids = np.fromiter(map(index.__getitem__, domain), dtype=np.int64, count=len(domain))
+        _, firsts, inverse = np.unique(ids, return_index=True, return_inverse=True)
+        if len(firsts) == len(domain):
+            domains.append(domain)
+            members.append(tuple((j,) for j in range(len(domain))))
+            continue
+        order = np.argsort(firsts, kind="stable")  # classes in domain order of their first value
+        rank = np.empty(len(order), dtype=np.int64)
+        rank[order] = np.arange(len(order))
+        by_class = rank[inverse.reshape(-1)]
+        positions = np.argsort(by_class, kind="stable")
+        bounds = np.searchsorted(by_class[positions], np.arange(len(order) + 1)).tolist()
+        listed = positions.tolist()
+        members.append(tuple(tuple(listed[x:y]) for x, y in itertools.pairwise(bounds)))
+        domains.append(tuple(domain[j] for j in firsts[order].tolist()))
+    grouped = TypeSelection(selection.kinematic_type, tuple(domains), selection.location)
+    return _Classes(selection, grouped, tuple(members))
+
+
+def _scan(rules: RuleSet, classes: _Classes, *, served_too: bool) -> _Scanned:
+    """Robots per configuration code, and (``served_too``) the representatives each code
+    serves, with the valid and unserved robots."""
+    plan = _Plan(rules, classes.selection, classes.weights)
     width = len(plan.domains)
     counts = _Counter(plan.key_space)
     # served[i] holds (configuration code, value position) pairs met among valid robots. Only
@@ -348,26 +415,43 @@ def _scan(
         block = blocks.get(id(mask))
         if block is None:
             block = blocks[id(mask)] = _MaskedBlock(plan, mask, plural)
-        total += block.valid
         offset = 0
+        weight = 1
         prefix_gap = False
         for position, digit in enumerate(prefix):
             code = int(plan.codes[position][digit])
             prefix_gap |= code < 0
             offset += code * plan.strides[position]
+            if plan.weights is not None:
+                weight *= plan.weights[position][digit]
+        total += block.valid * weight
         if prefix_gap:
-            unserved += block.valid
+            unserved += block.valid * weight
             continue
-        unserved += block.valid - len(block.keys)
+        unserved += (block.valid - block.kept) * weight
         # Every valid robot of the block, its configuration code and its values: a few vector
         # passes over the block per prefix.
-        present = counts.add_counted(block.distinct + offset, block.counts)
+        present = counts.add_counted(
+            block.distinct + offset, block.counts * weight if weight > 1 else block.counts
+        )
         for i in plural:
             if i < plan.start:
                 served[i].add(present, prefix[i])
             else:
                 served[i].add_shifted(block.pairs[i], offset)
-    return plan, counts, served, total, unserved
+    return _Scanned(plan, counts, served, total, unserved)
+
+
+@dataclass(frozen=True)
+class _Scanned:
+    """What :func:`_scan` found: robots per configuration code, the (code, representative)
+    pairs served per characteristic that needs them, and the valid and unserved robots."""
+
+    plan: _Plan
+    counts: _Counter
+    served: dict[int, _Pairs]
+    total: int
+    unserved: int
 
 
 class _MaskedBlock:
@@ -375,18 +459,24 @@ class _MaskedBlock:
     robots' configuration codes within the block, and their (code, value) pairs."""
 
     def __init__(self, plan: _Plan, mask: Mask, plural: list[int]) -> None:
-        self.valid = int(np.count_nonzero(mask))
         keep = mask & ~plan.block_gap
         self.keys = plan.block_key[keep]
         # Counted once per mask: a prefix only shifts these codes (its cost follows the
         # configurations of the block, not its robots).
         space = plan.strides[plan.start - 1] if plan.start else plan.key_space
+        # Rows may stand for several robots (value classes); weighted sums are whole numbers
+        # below 2**53 (see _classes), so numpy's float64 adds them exactly.
+        weight = plan.block_weight
+        kept = None if weight is None else weight[keep]
+        self.valid = int(np.count_nonzero(mask) if weight is None else weight[mask].sum())
+        self.kept = len(self.keys) if kept is None else int(kept.sum())
         if space <= _Counter.DENSE:
-            every = np.bincount(self.keys, minlength=space)
+            every = np.bincount(self.keys, weights=kept, minlength=space).astype(np.int64)
             self.distinct = np.flatnonzero(every)
             self.counts = every[self.distinct]
         else:
-            self.distinct, self.counts = np.unique(self.keys, return_counts=True)
+            self.distinct, where = np.unique(self.keys, return_inverse=True)
+            self.counts = np.bincount(where.reshape(-1), weights=kept).astype(np.int64)
         # A set of pairs: duplicates within the block say nothing more, so keep each once
         # (marked in a bit array over the block's codes x values: cheaper than sorting).
         self.pairs = {}
@@ -422,11 +512,13 @@ class _Counter:
             return int(np.count_nonzero(self.dense))
         return len(self.sparse)
 
-    def items(self) -> list[tuple[int, int]]:
+    def found(self) -> tuple[Codes, list[int]]:
+        """The codes counted, ascending, and the robots of each."""
         if self.dense is not None:
             codes = np.flatnonzero(self.dense)
-            return list(zip(codes.tolist(), self.dense[codes].tolist(), strict=True))
-        return sorted(self.sparse.items())
+            return codes, self.dense[codes].tolist()
+        ordered = sorted(self.sparse.items())
+        return np.array([c for c, _ in ordered], dtype=np.int64), [n for _, n in ordered]
 
 
 class _Pairs:
@@ -452,84 +544,78 @@ class _Pairs:
         else:
             self.sparse.update(np.unique(pairs).tolist())
 
-    def grouped(self, codes: list[int]) -> list[Sequence[int]]:
-        """For each of ``codes``: the value positions paired with it, ascending (a ``range``
-        where they are a run, which is the common case for counts)."""
+    def distinct(self, codes: Codes) -> tuple[list[list[int]], list[int]]:
+        """The distinct sets of value positions paired with ``codes`` (each ascending), and
+        for each code which of them it has: configurations share few sets (an arrangement's
+        counts, a group's sensor types), so each is turned into values once."""
         if self.dense is not None:
             table = self.dense.reshape(-1, self.size)[codes]
-            # First and last position per row and how many: a row is a run when they agree
-            # (three passes over the table, no index per pair); other rows are listed.
-            sizes = np.count_nonzero(table, axis=1)
-            firsts = table.argmax(axis=1)
-            lasts = self.size - 1 - table[:, ::-1].argmax(axis=1)
-            runs = (lasts - firsts + 1 == sizes) & (sizes > 0)
-            # The other rows' positions in one pass, split by row as Python lists.
-            others = np.flatnonzero(~runs)
-            rows, columns = np.nonzero(table[others])
-            bounds = np.searchsorted(rows, np.arange(len(others) + 1)).tolist()
-            listed = columns.tolist()
-            where = dict(zip(others.tolist(), itertools.pairwise(bounds), strict=True))
-            found: list[Sequence[int]] = []
-            for row, (run, first, last) in enumerate(
-                zip(runs.tolist(), firsts.tolist(), lasts.tolist(), strict=True)
-            ):
-                if run:
-                    found.append(range(first, last + 1))
-                else:
-                    a, b = where[row]
-                    found.append(listed[a:b])
-            return found
-        by_code: dict[int, list[int]] = {code: [] for code in codes}
+            # Each row as one opaque item of bytes (a bit per value), so numpy finds the
+            # distinct rows as it would distinct numbers.
+            packed = np.ascontiguousarray(np.packbits(table, axis=1))
+            items = packed.view(np.dtype((np.void, packed.shape[1]))).reshape(-1)
+            _, firsts, which = np.unique(items, return_index=True, return_inverse=True)
+            sets = [np.flatnonzero(table[row]).tolist() for row in firsts.tolist()]
+            return sets, which.reshape(-1).tolist()
+        by_code: dict[int, list[int]] = {code: [] for code in codes.tolist()}
         for pair in sorted(self.sparse):
             code, position = divmod(pair, self.size)
             if code in by_code:
                 by_code[code].append(position)
-        return [by_code[code] for code in codes]
+        listed: dict[tuple[int, ...], int] = {}
+        which_set = [listed.setdefault(tuple(found), len(listed)) for found in by_code.values()]
+        return [list(found) for found in listed], which_set
 
 
-def _partition_from_counts(
-    plan: _Plan, counts: list[tuple[int, int]], served: dict[int, _Pairs], total: int, unserved: int
-) -> Partition:
+def _partition_from_counts(scanned: _Scanned, value_classes: _Classes) -> Partition:
+    plan, served = scanned.plan, scanned.served
+    codes, numbers = scanned.counts.found()
     rules = plan.rules
     width = len(plan.domains)
+    original = value_classes.original.domains
+    members = value_classes.members
+
+    def expand(i: int, where: Sequence[int]) -> tuple[Value, ...]:
+        """The selected values the representatives at ``where`` stand for, in domain order."""
+        if len(members[i]) == len(original[i]):  # nothing grouped: a representative is a value
+            return _values(original[i], where)
+        return _values(
+            original[i], sorted(itertools.chain.from_iterable(members[i][k] for k in where))
+        )
+
     # For a characteristic without served pairs, a component code names its selected values.
     named = [
         []
         if i in served
         else [
-            _values(domain, np.flatnonzero(plan.codes[i] == c).tolist())
+            expand(i, np.flatnonzero(plan.codes[i] == c).tolist())
             for c in range(len(plan.components[i]))
         ]
-        for i, domain in enumerate(plan.domains)
+        for i in range(width)
     ]
-    codes = np.array([code for code, _ in counts], dtype=np.int64)
-    positions = {i: pairs.grouped(codes.tolist()) for i, pairs in served.items()}
     sizes = np.array([len(c) for c in plan.components], dtype=np.int64)
-    digit_rows = ((codes[:, None] // np.array(plan.strides, dtype=np.int64)) % sizes).tolist()
-    classes = []
-    components = plan.components
-    domains = plan.domains
-    columns = [(i, positions.get(i), named[i]) for i in range(width)]
-    # Configurations share few distinct value sets (an arrangement's counts, a group's sensor
-    # types): each is made once.
-    made: dict[tuple[int, Sequence[int] | tuple[int, ...]], tuple[Value, ...]] = {}
-
-    def values_at(i: int, where: Sequence[int]) -> tuple[Value, ...]:
-        key = (i, where if isinstance(where, range) else tuple(where))
-        found = made.get(key)
-        if found is None:
-            found = made[key] = _values(domains[i], where)
-        return found
-
-    for row, ((_, number), digits) in enumerate(zip(counts, digit_rows, strict=True)):
-        key = tuple([components[i][d] for i, d in enumerate(digits)])
-        values = tuple(
-            [
-                values_at(i, grouped[row]) if grouped is not None else by_code[digits[i]]
-                for i, grouped, by_code in columns
-            ]
+    digits = (codes[:, None] // np.array(plan.strides, dtype=np.int64)) % sizes
+    # Column by column (a characteristic at a time), then zipped into one row per
+    # configuration: few Python steps per configuration.
+    key_columns = []
+    value_columns = []
+    for i in range(width):
+        column = digits[:, i]
+        key_columns.append(np.array(plan.components[i], dtype=np.int64)[column].tolist())
+        if i in served:
+            sets, which = served[i].distinct(codes)
+            made = [expand(i, found) for found in sets]
+            value_columns.append(list(map(made.__getitem__, which)))
+        else:
+            value_columns.append(list(map(named[i].__getitem__, column.tolist())))
+    # Codes ascend, and a code orders configurations as their keys do (components numbered in
+    # order, the first characteristic the most significant); the kinematic type is the same
+    # throughout, so this is already numbering order (:func:`sort_key`).
+    classes = [
+        PartitionClass(key, number, values)
+        for key, number, values in zip(
+            zip(*key_columns, strict=True), numbers, zip(*value_columns, strict=True), strict=True
         )
-        classes.append(PartitionClass(key, number, values))
-    classes.sort(key=lambda found: sort_key(rules, found.key))
+    ]
     kinematic_type = str(plan.domains[rules.key_position][0])
-    return Partition(kinematic_type, tuple(classes), total, unserved, True)
+    return Partition(kinematic_type, tuple(classes), scanned.total, scanned.unserved, True)
