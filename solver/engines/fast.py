@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import itertools
 import math
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, TypeAlias
 
@@ -28,7 +28,7 @@ from solver import partition as partitioning
 from solver.constraints import Value
 from solver.engines import Counts
 from solver.partition import Partition, PartitionClass
-from solver.rules import RuleSet
+from solver.rules import Characteristic, RuleSet
 from solver.team import TypeSelection
 
 if TYPE_CHECKING:
@@ -40,9 +40,8 @@ if TYPE_CHECKING:
 Mask: TypeAlias = "NDArray[np.bool_]"
 Codes: TypeAlias = "NDArray[np.int64]"
 Scalars = tuple[tuple[int, frozenset[int]], ...]  # (prefix position, allowed digits)
-_Weights = tuple[
-    tuple[int, ...], ...
-]  # per characteristic, per selected value: values it stands for
+# Per characteristic, per selected value: how many values it stands for (a class, _classes).
+_Weights = tuple[tuple[int, ...], ...]
 
 __all__ = ["BLOCK", "BlockLayout", "RobotBlock", "count", "partition", "robot_blocks", "robots"]
 
@@ -94,11 +93,8 @@ class _Plan:
         codes = []
         for characteristic, domain in zip(rules.characteristics, self.domains, strict=True):
             # The component of each selected value (-1: none), then renumbered compactly.
-            membership, index = characteristic.membership, characteristic.index
             component = np.fromiter(
-                (_first(membership[index(v)]) for v in domain),  # type: ignore[index]
-                dtype=np.int64,
-                count=len(domain),
+                map(_first_component(characteristic), domain), dtype=np.int64, count=len(domain)
             )
             reached = np.unique(component[component >= 0])
             self.components.append(reached.tolist())
@@ -201,6 +197,17 @@ def _values(domain: tuple[Value, ...], positions: Sequence[int]) -> tuple[Value,
 
 def _first(members: tuple[int, ...]) -> int:
     return members[0] if members else -1
+
+
+def _first_component(characteristic: Characteristic) -> Callable[[Value], int]:
+    """Value -> the index of its first component (-1: none, or not a value of this)."""
+    membership, index = characteristic.membership, characteristic.index
+
+    def first(value: Value) -> int:
+        position = index(value)
+        return -1 if position is None else _first(membership[position])
+
+    return first
 
 
 def robots(rules: RuleSet, selection: TypeSelection) -> Iterator[tuple[Value, ...]]:
