@@ -4,12 +4,19 @@ Ten emulated ROS 2 robots (five quadrotors, five rovers: separate processes, see
 :mod:`tests.live.ros2_robot`) are on a DDS domain of their own; a watcher (DdsGraph source,
 default polling interval 0.2 s) runs in a thread. Timed:
 
-* ``switch``: the operator participant writes ``/teleop_ui/active_robot`` (round-robin over the
-  ten) -> the operator's reader receives ``/teleop_ui/ui_configuration`` naming that robot
-  (end to end: DDS both ways, the watcher woken by the sample; issue 16's target: median
-  <= 50 ms);
+* ``switch``: at a human pace (an untimed pause before each), the operator participant writes
+  ``/teleop_ui/active_robot`` (round-robin over the ten) -> the operator's reader receives
+  ``/teleop_ui/ui_configuration`` naming that robot (end to end: DDS both ways, the watcher
+  woken by the sample; issue 16's target: median <= 50 ms);
 * ``description``: a new robot's transient-local ``robot_description`` is written -> the
   watcher's ``robot_added`` for it (discovery of the new writer, the sample, identification).
+
+* ``echo`` (the peer): the same operator writes a String on a topic of its own and a bare DDS
+  participant in another process answers it from a data-available listener, with the same
+  QoS: DDS both ways and nothing else. ``tools/bench_table.py`` reports ``switch / echo``. The
+  watcher runs in the operator's process here, where Cyclone DDS delivers without a network
+  hop, so the ratio is a rough measure: how many bare round trips between processes one
+  answer of the watcher costs.
 
 Each round asserts what it timed (robot, configuration number); the median and 95th percentile
 are printed and kept in the benchmark's extra info. Run:
@@ -41,6 +48,14 @@ from tests.live.ros2_graph import EmulatedRobot, Operator, next_domain, write_co
 
 SWITCHES = 40
 DESCRIPTIONS = 10
+# Untimed, before each switch: an operator switches robots at a human pace. Back-to-back
+# switches are answered at most every 10 ms (the watcher's gap between polls, which keeps
+# bursts of changes from becoming bursts of polls), so without a pause that gap is measured.
+PAUSE = 0.05
+
+
+def pause() -> None:
+    time.sleep(PAUSE)
 
 
 class Fleet:
@@ -135,7 +150,7 @@ def test_active_robot_message_to_published_configuration(
         assert answer["configuration"] == fleet.expected(robot)
 
     benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
-        switch, rounds=SWITCHES
+        switch, setup=pause, rounds=SWITCHES
     )
     report(benchmark, "active robot -> published configuration (10 robots)", latencies)
 
@@ -172,3 +187,64 @@ def test_new_robots_description_to_its_first_event(
         describe, rounds=DESCRIPTIONS
     )
     report(benchmark, "new robot's description -> robot_added", latencies)
+
+
+class Echo:
+    """The peer: a process of its own on the domain (as the robots are) that answers each
+    String on ``/bench/ping`` with the same String on ``/bench/pong``, from a data-available
+    listener, with the watcher's QoS."""
+
+    def __init__(self, fleet: Fleet) -> None:
+        from cyclonedds.pub import DataWriter
+        from cyclonedds.sub import DataReader
+        from cyclonedds.topic import Topic
+
+        from tests.live.ros2_robot import LATCHED
+
+        self.process = EmulatedRobot(fleet.domain, dict(os.environ))
+        self.process.send(echo="/bench/ping", to="/bench/pong")
+        operator = fleet.operator.participant
+        self.string = fleet.operator.String
+        self.ping: Any = DataWriter(
+            operator, Topic(operator, "rt/bench/ping", self.string), qos=LATCHED
+        )
+        self.pong: Any = DataReader(
+            operator, Topic(operator, "rt/bench/pong", self.string), qos=LATCHED
+        )
+
+    def round_trip(self, text: str) -> list[str]:
+        """Ping with ``text``; the answers read until one is ``text``."""
+        self.ping.write(self.string(text))
+        answers: list[str] = []
+        while text not in answers:
+            answers += [s.data for s in self.pong.take(N=64) if hasattr(s, "data")]
+            if text not in answers:
+                time.sleep(0.0005)  # the operator polls its answer the same way in ``switch``
+        return answers
+
+    def close(self) -> None:
+        self.ping.__del__()
+        self.pong.__del__()
+        self.process.kill()
+
+
+def test_bare_dds_echo_round_trip_peer(benchmark: BenchmarkFixture, fleet: Fleet) -> None:
+    echo = Echo(fleet)
+    counter = itertools.count()
+    latencies: list[float] = []
+    try:
+        echo.round_trip("warm-up")  # discovery between the two participants, untimed
+
+        def round_trip() -> None:
+            text = f"ping {next(counter)}"
+            start = time.perf_counter()
+            answers = echo.round_trip(text)
+            latencies.append(time.perf_counter() - start)
+            assert answers == [text]  # the echo, once, and nothing stale before it
+
+        benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
+            round_trip, setup=pause, rounds=SWITCHES
+        )
+    finally:
+        echo.close()
+    report(benchmark, "bare DDS echo round trip, another process (peer)", latencies)

@@ -124,6 +124,21 @@ WATCH = [
     ),
     ("test_registering_a_robots_topics", "a robot's topics registered", ""),
     ("test_setting_a_new_robots_description", "a new robot's description set", ""),
+    (
+        "test_active_robot_message_to_published_configuration",
+        "ROS 2: active robot message -> configuration received (10 robots)",
+        "<= 50 ms",
+    ),
+    (
+        "test_bare_dds_echo_round_trip_peer",
+        "ROS 2 peer: bare DDS echo round trip, same QoS",
+        "",
+    ),
+    (
+        "test_new_robots_description_to_its_first_event",
+        "ROS 2: a new robot's description -> robot_added",
+        "",
+    ),
     ("test_setting_a_large_description[parsed]", "a 1.5 MB description set, parsed", ""),
     (
         "test_setting_a_large_description[cached]",
@@ -189,6 +204,12 @@ RATIOS = [
         "<= 2.5",
     ),
     (
+        "ROS 2 `watch`: active robot -> configuration / bare DDS echo round trip",
+        "test_active_robot_message_to_published_configuration",
+        "test_bare_dds_echo_round_trip_peer",
+        "",
+    ),
+    (
         "`watch` topic placement: 200 robots / 20 robots (linear: about 10)",
         "test_placing_the_topic_graph[200 robots x 100 topics]",
         "test_placing_the_topic_graph[20 robots x 100 topics]",
@@ -230,7 +251,7 @@ def table(run: dict[str, Any]) -> str:
     if watched:
         lines += [
             "",
-            "| `watch`: change on the master -> event | changes | median | 95th "
+            "| `watch`: change on the master or DDS graph -> event | changes | median | 95th "
             "percentile | target |",
             "|---|---:|---:|---:|---|",
         ]

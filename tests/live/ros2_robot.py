@@ -25,6 +25,8 @@ Driven by JSON lines on stdin, one command each, answered by ``ok`` on stdout::
      "sensor_msgs/msg/Image"]], "subscribe": [], "services": []}
     {"describe": "/uav1", "file": "/tmp/uav1.urdf"}      # or "text": "..."
     {"drop": "/uav1/camera_driver"}                       # the node's endpoints vanish
+    {"echo": "/bench/ping", "to": "/bench/pong"}           # answers each String on the
+                                                          # first topic with it on the second
 """
 
 import json
@@ -164,6 +166,27 @@ class Robot:
             entity.__del__()
         self.announce()
 
+    def echo(self, topic: str, answer: str) -> None:
+        """Answer each ``std_msgs/msg/String`` on ``topic`` with the same on ``answer``, from a
+        data-available listener (a benchmark's peer for the watcher's answers)."""
+        from cyclonedds.core import Listener
+
+        string = "std_msgs/msg/String"
+        writer = DataWriter(self.participant, self.topic("rt" + answer, string), qos=LATCHED)
+
+        def repeat(reader: Any) -> None:
+            for sample in reader.take(N=64):
+                info = getattr(sample, "sample_info", None)
+                if info is None or info.valid_data:  # not a disposal notice
+                    writer.write(sample)
+
+        listener = Listener(on_data_available=repeat)  # type: ignore[no-untyped-call]
+        reader = DataReader(
+            self.participant, self.topic("rt" + topic, string), qos=LATCHED, listener=listener
+        )
+        self.nodes.setdefault("/bench/echo", ([], []))[0].append(reader)
+        self.nodes["/bench/echo"][1].append(writer)
+
     def announce(self) -> None:
         nodes = []
         for name, (readers, writers) in sorted(self.nodes.items()):
@@ -201,6 +224,8 @@ def main() -> None:
             robot.describe(command["describe"], text)
         elif "drop" in command:
             robot.drop(command["drop"])
+        elif "echo" in command:
+            robot.echo(command["echo"], command["to"])
         print("ok", flush=True)
 
 
