@@ -238,6 +238,7 @@ class _Detector:
                 rotors.append(joint.name)
             elif self.matches("gripper", joint) or self.on_palm(joint):
                 grippers.add(joint.name)
+        wheels += self._unnamed_wheels({*wheels, *rotors, *grippers})
         not_rotors: list[str] = []
         if len(rotors) < self.profile.limb("min_rotors"):
             # One spinning leaf is a motor or a tool, not flight.
@@ -289,6 +290,32 @@ class _Detector:
             not_rotors=tuple(not_rotors),
             fixed_wheels=tuple(fixed_wheels),
         )
+
+    def _unnamed_wheels(self, taken: set[str]) -> list[str]:
+        """Unnamed spinning leaves below a link, on both its sides: wheels.
+
+        A base whose wheel joints carry no name (``fl_joint`` on ``fl_Link``) still has them
+        where wheels are: continuous joints (no limits, they turn for ever) that carry nothing
+        that moves, hanging below the link they are on, at least one on each side of it.
+        Fingers have limits; rotors sit level with or above their body.
+        """
+        below: dict[str, list[Joint]] = {}
+        for joint in self.urdf.joints:
+            if (
+                joint.type == "continuous"
+                and joint.actuated
+                and joint.name not in taken
+                and joint.child not in self.moving_below
+                and not (self.parts_of(joint.name) | self.parts_of(joint.child))
+                and joint.origin[2] < 0
+            ):
+                below.setdefault(joint.parent, []).append(joint)
+        found: list[str] = []
+        for joints in below.values():
+            sides = {j.origin[1] > 0 for j in joints if j.origin[1] != 0}
+            if len(joints) >= 2 and sides == {True, False}:
+                found.extend(j.name for j in joints)
+        return found
 
     def _legs_at_the_pelvis(self, limbs: list[Limb]) -> list[Limb]:
         """Two unnamed long chains on the root, below a body whose arms hang higher: legs.

@@ -69,6 +69,7 @@ class Joint:
     lower: float | None = None
     upper: float | None = None
     axis: tuple[float, float, float] = (1.0, 0.0, 0.0)  # URDF's default axis
+    origin: tuple[float, float, float] = (0.0, 0.0, 0.0)  # where it sits on its parent link
 
     @property
     def movable(self) -> bool:
@@ -391,7 +392,8 @@ class _Builder:
             None if mimic is None else (mimic.get("joint") or "").strip() or None,
             self._number(limit, "lower", path),
             self._number(limit, "upper", path),
-            _axis(parts.get("axis")),
+            _vector(parts.get("axis"), (1.0, 0.0, 0.0)),
+            _vector(parts.get("origin"), (0.0, 0.0, 0.0)),
         )
 
     def _number(self, element: etree._Element | None, attribute: str, path: str) -> float | None:
@@ -565,10 +567,13 @@ def _reach(start: str, below: dict[str, list[str]]) -> set[str]:
     return seen
 
 
-def _axis(element: etree._Element | None) -> tuple[float, float, float]:
+def _vector(
+    element: etree._Element | None, default: tuple[float, float, float]
+) -> tuple[float, float, float]:
+    """The ``xyz`` of an ``<axis>`` or ``<origin>``; ``default`` where absent or unreadable."""
     parts = [_float(t) for t in (element.get("xyz") or "").split()] if element is not None else []
     if len(parts) != 3 or any(p is None for p in parts):
-        return (1.0, 0.0, 0.0)
+        return default
     x, y, z = (p or 0.0 for p in parts)
     return (x, y, z)
 

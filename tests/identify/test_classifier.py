@@ -197,6 +197,32 @@ def test_a_hand_whose_finger_chains_carry_no_names_is_a_hand() -> None:
     assert len(result.body.fingers) == 3  # type: ignore[union-attr]
 
 
+def _four_spinning_leaves(robot: RobotText, height: float, limits: str = "") -> None:
+    for corner, (x, y) in {"fl": (1, 1), "fr": (1, -1), "rl": (-1, 1), "rr": (-1, -1)}.items():
+        kind = "revolute" if limits else "continuous"
+        origin = f'<origin xyz="{0.2 * x} {0.15 * y} {height}"/><axis xyz="0 1 0"/>{limits}'
+        robot.joint(f"{corner}_joint", kind, "base_link", f"{corner}_Link", origin)
+
+
+def test_unnamed_endless_joints_below_a_body_on_both_sides_are_wheels() -> None:
+    robot = RobotText("rover")
+    _four_spinning_leaves(robot, -0.1)
+    result = identify_urdf(robot.text())
+    assert (result.structure, result.kinematic_type) == ("UGV", "UGV")
+    assert result.body.wheels == ("fl_joint", "fr_joint", "rl_joint", "rr_joint")  # type: ignore[union-attr]
+
+
+def test_unnamed_spinning_leaves_level_with_the_body_or_limited_are_no_wheels() -> None:
+    level = RobotText("level")
+    _four_spinning_leaves(level, 0.0)
+    limited = RobotText("limited")
+    _four_spinning_leaves(limited, -0.1, '<limit lower="-1" upper="1" effort="1" velocity="1"/>')
+    for robot in (level, limited):
+        result = identify_urdf(robot.text())
+        assert result.body.wheels == ()  # type: ignore[union-attr]
+        assert result.structure != "UGV"
+
+
 def test_fingers_on_a_link_named_as_a_hand_make_the_arm_end_in_a_gripper() -> None:
     robot = RobotText("arm_hand")
     wrist = robot.chain("base_link", ["a1", "a2", "a3", "a4"])
