@@ -83,6 +83,8 @@ class Body:
     not_rotors: tuple[str, ...] = ()
     # Wheel joints of type fixed (a trimmed model): a mobile base, read with doubt.
     fixed_wheels: tuple[str, ...] = ()
+    # Fixed rotor-named leaf joints of a body with no movable joint (a trimmed multirotor).
+    fixed_rotors: tuple[str, ...] = ()
 
     def count(self, kind: str) -> int:
         return sum(1 for limb in self.limbs if limb.kind == kind)
@@ -104,7 +106,12 @@ class Body:
 
     @property
     def flying(self) -> bool:
-        return bool(self.rotors or self.flight_plugins)
+        return bool(self.rotors or self.flight_plugins or self.fixed_rotors)
+
+    @property
+    def weak_flight(self) -> bool:
+        """Flying known only from fixed rotor-named links (a trimmed model)."""
+        return self.flying and not (self.rotors or self.flight_plugins)
 
     def features(self) -> dict[str, int]:
         """The counts and flags the profile's structure rules read."""
@@ -123,7 +130,23 @@ class Body:
             "flying": int(self.flying),
             "floating_base": int(bool(self.floating_base)),
             "weak_base": int(self.weak_base),
+            "weak_flight": int(self.weak_flight),
         }
+
+    def _trimmed(self) -> list[str]:
+        """The evidence of a model trimmed of its moving parts: fixed wheels, fixed rotors."""
+        lines = []
+        if self.fixed_wheels:
+            lines.append(
+                f"{len(self.fixed_wheels)} fixed wheel joint(s) (a trimmed model): "
+                f"{_names(self.fixed_wheels)}"
+            )
+        if self.fixed_rotors:
+            lines.append(
+                f"{len(self.fixed_rotors)} fixed rotor joint(s) on a body with no movable "
+                f"joint (a trimmed model): {_names(self.fixed_rotors)}"
+            )
+        return lines
 
     def evidence(self, root: str) -> tuple[str, ...]:
         """Plain sentences a person can check against the URDF."""
@@ -138,11 +161,7 @@ class Body:
             lines.append(f"{len(self.rotors)} rotor joint(s): {_names(self.rotors)}")
         if self.flight_plugins:
             lines.append(f"flight plugin(s): {_names(self.flight_plugins)}")
-        if self.fixed_wheels:
-            lines.append(
-                f"{len(self.fixed_wheels)} fixed wheel joint(s) (a trimmed model): "
-                f"{_names(self.fixed_wheels)}"
-            )
+        lines += self._trimmed()
         if self.planar_base:
             lines.append(f"planar base: {_names(self.planar_base)}")
         if self.floating_base:
@@ -250,6 +269,16 @@ class _Detector:
             if not wheels
             else []
         )
+        # A model trimmed of every movable joint may still name its propellers.
+        fixed_rotors = [
+            j.name
+            for j in urdf.joints
+            if j.type == "fixed" and not urdf.children(j.child) and self.matches("rotor", j)
+        ]
+        if any(j.movable for j in urdf.joints) or len(fixed_rotors) < self.profile.limb(
+            "min_rotors"
+        ):
+            fixed_rotors = []
         floating = [j.name for j in urdf.joints if j.type == "floating"]
         planar = [j.name for j in urdf.joints if j.type == "planar"]
         placing = self._root_axes()
@@ -289,6 +318,7 @@ class _Detector:
             controlled_joints=tuple(j for j in limb_joints if j in controlled),
             not_rotors=tuple(not_rotors),
             fixed_wheels=tuple(fixed_wheels),
+            fixed_rotors=tuple(fixed_rotors),
         )
 
     def _unnamed_wheels(self, taken: set[str]) -> list[str]:

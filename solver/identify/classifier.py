@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from solver.identify.body import Body
-from solver.identify.profile import Profile
+from solver.identify.profile import BOOLEAN_FEATURES, Profile
 from solver.identify.srdf import Srdf
 from solver.rules import RuleSet
 
@@ -57,7 +57,7 @@ def classify(
     parts = [
         f"{value} {name.replace('_', ' ')}"
         for name, value in features.items()
-        if value and name not in ("mobile_base", "flying", "floating_base", "weak_base")
+        if value and name not in BOOLEAN_FEATURES
     ]
     why = ", ".join(c.describe() for c in rule.when) or (
         "no other structure matched; the body has "

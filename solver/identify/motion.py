@@ -46,11 +46,12 @@ def controls_from_description(
             f"{urdf_source}: {len(body.controlled_wheels)} wheel joint(s) with a transmission",
         )
     if body.flying:
-        what = (
-            f"{len(body.rotors)} rotor joint(s)"
-            if body.rotors
-            else f"flight plugin {body.flight_plugins[0]}"
-        )
+        if body.rotors:
+            what = f"{len(body.rotors)} rotor joint(s)"
+        elif body.flight_plugins:
+            what = f"flight plugin {body.flight_plugins[0]}"
+        else:
+            what = f"{len(body.fixed_rotors)} fixed rotor joint(s) of a trimmed model"
         add("flight", f"{urdf_source}: {what}")
     if body.controlled_joints:
         add(

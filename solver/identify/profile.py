@@ -64,10 +64,13 @@ FEATURES = (
     "flying",
     "floating_base",
     "weak_base",
+    "weak_flight",
 )
 # weak_base: the mobile base is known only from fixed wheels, planar root joints or an SRDF
 # planar virtual joint (a trimmed or simulated model), not from driven wheels or a plugin.
-BOOLEAN_FEATURES = ("mobile_base", "flying", "floating_base", "weak_base")
+# weak_flight: flying is known only from fixed rotor-named links on a body with no movable
+# joint at all (a trimmed multirotor model), not from rotor joints or a flight plugin.
+BOOLEAN_FEATURES = ("mobile_base", "flying", "floating_base", "weak_base", "weak_flight")
 DIRECTIONS = ("published", "subscribed")
 CONTROL_SOURCES = (
     "drive_plugin",

@@ -258,6 +258,25 @@ def test_fixed_wheels_still_make_a_mobile_base_with_doubt() -> None:
     assert result.confidence == pytest.approx(0.95 * 0.8, abs=0.01)
 
 
+def test_fixed_propellers_on_a_body_that_cannot_move_are_a_uav_with_doubt() -> None:
+    trimmed = RobotText("trimmed quadrotor")
+    for i in range(4):
+        trimmed.fixed("base_link", f"prop{i}_link")
+    result = identify_urdf(trimmed.text())
+    assert (result.structure, result.kinematic_type) == ("UAV", "UAV")
+    assert result.confidence == pytest.approx(0.95 * 0.8, abs=0.01)
+
+
+def test_fixed_rotor_links_beside_moving_joints_are_motors_not_flight() -> None:
+    legged = RobotText("legged")
+    for corner in ("front_left", "front_right", "rear_left", "rear_right"):
+        legged.chain("base_link", [f"{corner}_hip", f"{corner}_knee"])
+        legged.fixed("base_link", f"{corner}_hip_rotor")
+    result = identify_urdf(legged.text())
+    assert result.structure == "Quadruped"
+    assert result.body.fixed_rotors == ()  # type: ignore[union-attr]
+
+
 def test_root_x_y_theta_joints_are_a_planar_mobile_base_with_doubt() -> None:
     robot = RobotText("sim_base", root="odom")
     robot.joint("x", "prismatic", "odom", "x_link", '<axis xyz="1 0 0"/>')
