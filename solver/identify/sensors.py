@@ -74,10 +74,11 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
 
 
 def _element_kind(tag: SensorTag, profile: Profile) -> str:
+    kind = tag.type or "unknown"  # a URDF <sensor> with no kind element: told by its name
     for rule in profile.element_rules:
-        if rule.accepts(tag.type, tag.text):
+        if rule.accepts(kind, tag.text):
             return rule.kind
-    return tag.type or "unknown"
+    return kind
 
 
 def _plugin_kind(plugin: PluginTag, profile: Profile) -> str | None:

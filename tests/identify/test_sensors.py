@@ -81,12 +81,31 @@ def test_a_urdf_sensor_element_is_read_too() -> None:
     assert kinds(element) == [("camera", "2D Camera", 1)]
 
 
+def test_a_urdf_sensor_without_a_kind_element_is_told_by_its_name() -> None:
+    def bare(name: str, link: str = "base_link") -> str:
+        return f'  <sensor name="{name}" update_rate="20"><parent link="{link}"/></sensor>'
+
+    found = kinds(
+        bare("gyrometer_SENSOR"),
+        bare("rfsensor_SENSOR"),
+        bare("lhsensor_SENSOR"),
+        bare("wrist_ft_sensor", "r_wrist"),
+        bare("mystery"),
+    )
+    assert found == [
+        ("imu", None, 1),
+        ("force_torque", "Force Sensor", 3),
+        ("unknown", None, 1),
+    ]
+
+
 def test_model_plugins_count_as_sensors_but_ground_truth_does_not() -> None:
     found = kinds(
         builders.model_plugin("imu_sim", "libhector_gazebo_ros_imu.so"),
         builders.model_plugin("gps_sim", "libhector_gazebo_ros_gps.so"),
         builders.model_plugin("baro", "libhector_gazebo_ros_baro.so"),
         builders.model_plugin("groundtruth", "libgazebo_ros_p3d.so"),
+        builders.model_plugin("floating_base_pose", "libgazebo_world_odometry.so"),
         builders.model_plugin(
             "imugt_plugin", "librotors_gazebo_imu_plugin.so", "<linkName>imugt_link</linkName>"
         ),
