@@ -16,8 +16,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from solver.identify.body import Body
+from solver.identify.plans import arm_plans
 from solver.identify.profile import BOOLEAN_FEATURES, Profile
 from solver.identify.srdf import Srdf
+from solver.identify.urdf import Urdf
 from solver.rules import RuleSet
 
 __all__ = ["Reading", "classify", "kinematic_type_for"]
@@ -43,7 +45,13 @@ def kinematic_type_for(structure: str, profile: Profile, rules: RuleSet) -> str 
 
 
 def classify(
-    body: Body, profile: Profile, rules: RuleSet, *, root: str = "", srdf: Srdf | None = None
+    body: Body,
+    profile: Profile,
+    rules: RuleSet,
+    *,
+    root: str = "",
+    srdf: Srdf | None = None,
+    urdf: Urdf | None = None,
 ) -> Reading:
     """The structure, kinematic type, confidence and evidence of ``body``."""
     features = body.features()
@@ -73,7 +81,7 @@ def classify(
             confidence *= profile.doubt_factor
             evidence.append(f"doubt: a typical {rule.name} has {condition.describe()}")
     if srdf is not None:
-        confidence *= _srdf_agreement(body, srdf, profile, evidence)
+        confidence *= _srdf_agreement(body, srdf, profile, evidence, urdf)
     kinematic_type = kinematic_type_for(rule.name, profile, rules)
     if kinematic_type is None:
         evidence.append(
@@ -85,14 +93,10 @@ def classify(
     return Reading(rule.name, kinematic_type, round(confidence, 2), tuple(evidence))
 
 
-def _srdf_agreement(body: Body, srdf: Srdf, profile: Profile, evidence: list[str]) -> float:
-    groups = srdf.arm_groups(profile.limb("arm_min_joints"))
-    # Groups that extend another one (Fetch's arm_with_torso) plan the same arm.
-    distinct = [
-        g
-        for g in groups
-        if not any(other is not g and set(other.joints) < set(g.joints) for other in groups)
-    ]
+def _srdf_agreement(
+    body: Body, srdf: Srdf, profile: Profile, evidence: list[str], urdf: Urdf | None
+) -> float:
+    distinct = arm_plans(body, srdf, profile.limb("arm_min_joints"), urdf)
     arms = body.count("arm")
     parts = [
         f"SRDF: {len(distinct)} arm planning group(s)"

@@ -136,9 +136,11 @@ def identify_urdf(
     srdf = None if srdf_text is None else parse_srdf(srdf_text, srdf_file, urdf, strict=False)
     warnings = urdf.warnings + (srdf.warnings if srdf is not None else ())
     body = detect_body(urdf, profile, srdf)
-    reading = classify(body, profile, rules, root=urdf.root, srdf=srdf)
+    reading = classify(body, profile, rules, root=urdf.root, srdf=srdf, urdf=urdf)
     detections: list[Detection] = list(sensors_from_urdf(urdf, profile))
-    controls = [controls_from_description(body, profile, srdf, srdf_source=Path(srdf_file).name)]
+    controls = [
+        controls_from_description(body, profile, srdf, urdf=urdf, srdf_source=Path(srdf_file).name)
+    ]
     for source in topics:
         detections += sensors_from_topics(source.topics, profile, source.name)
         controls.append(

@@ -5,8 +5,9 @@ through a transmission / ``ros2_control`` mean the robot is driven; rotors or fl
 mean it is flown; limb joints (arms, heads, flippers) with a transmission
 mean its joints are commanded one by one.
 From the SRDF: a MoveIt planning group over an arm means joint-space and end-effector goals; an
-``<end_effector>`` means end-effector goals. Which control each of these means is the
-profile's ``motion.description`` (data); this module only says which of them a robot has.
+``<end_effector>`` not on a leg means end-effector goals (:mod:`solver.identify.plans`). Which
+control each of these means is the profile's ``motion.description`` (data); this module only
+says which of them a robot has.
 
 Navigation (Waypoint) and walking commands live in launch and config files, not in the robot
 description: they come from topics (:mod:`solver.identify.interfaces`).
@@ -16,8 +17,10 @@ from __future__ import annotations
 
 from solver.identify.body import Body
 from solver.identify.interfaces import Control
+from solver.identify.plans import arm_plans, hand_effectors
 from solver.identify.profile import Profile
 from solver.identify.srdf import Srdf
+from solver.identify.urdf import Urdf
 
 __all__ = ["controls_from_description"]
 
@@ -27,6 +30,7 @@ def controls_from_description(
     profile: Profile,
     srdf: Srdf | None = None,
     *,
+    urdf: Urdf | None = None,
     urdf_source: str = "urdf",
     srdf_source: str = "srdf",
 ) -> tuple[Control, ...]:
@@ -59,16 +63,16 @@ def controls_from_description(
             f"{urdf_source}: {len(body.controlled_joints)} limb joint(s) with a transmission",
         )
     if srdf is not None:
-        groups = srdf.arm_groups(profile.limb("arm_min_joints"))
+        groups = arm_plans(body, srdf, profile.limb("arm_min_joints"), urdf)
         if groups:
             add(
                 "srdf_group",
                 f"{srdf_source}: planning group(s) {', '.join(g.name for g in groups)}",
             )
-        if srdf.end_effectors:
+        if effectors := hand_effectors(body, srdf, urdf):
             add(
                 "srdf_end_effector",
-                f"{srdf_source}: end effector(s) {', '.join(e.name for e in srdf.end_effectors)}",
+                f"{srdf_source}: end effector(s) {', '.join(e.name for e in effectors)}",
             )
     merged: dict[str, list[str]] = {}
     for control in found:

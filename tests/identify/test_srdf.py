@@ -49,15 +49,49 @@ def test_srdf_names_missing_from_the_urdf_are_all_reported() -> None:
 
 
 def test_an_srdf_that_disagrees_about_the_arms_lowers_confidence() -> None:
+    one_arm = """<robot name="dual">
+      <group name="left"><chain base_link="torso_waist_link" tip_link="left_wrist_3_link"/></group>
+    </robot>"""
+    both = one_arm.replace(
+        "</robot>",
+        '<group name="right"><chain base_link="torso_waist_link" '
+        'tip_link="right_wrist_3_link"/></group></robot>',
+    )
+    agreed = identify_urdf(builders.torso().text(), srdf_text=both)
+    doubted = identify_urdf(builders.torso().text(), srdf_text=one_arm)
+    assert doubted.confidence < agreed.confidence
+    assert any("the SRDF plans 1 arm(s), the tree shows 2" in e for e in doubted.evidence)
+
+
+def test_a_chain_group_that_extends_an_arm_group_plans_the_same_arm() -> None:
     text = SRDF.replace(
         '<group name="hand">',
-        '<group name="second"><chain base_link="base_link" '
-        'tip_link="shoulder_lift_link"/></group><group name="hand">',
+        '<group name="arm_with_base"><chain base_link="base_link" '
+        'tip_link="wrist_3_link"/><joint name="shoulder_pan"/></group>'
+        '<group name="upper"><chain base_link="base_link" tip_link="elbow_link"/></group>'
+        '<group name="hand">',
     )
     plain = identify_urdf(builders.manipulator().text(), srdf_text=SRDF)
-    doubted = identify_urdf(builders.manipulator().text(), srdf_text=text)
-    assert doubted.confidence < plain.confidence
-    assert any("the SRDF plans 2 arm(s), the tree shows 1" in e for e in doubted.evidence)
+    extended = identify_urdf(builders.manipulator().text(), srdf_text=text)
+    assert extended.confidence == plain.confidence
+    assert any(e.startswith("SRDF: 1 arm planning group(s) (upper)") for e in extended.evidence)
+
+
+def test_leg_groups_and_feet_plan_no_arm_and_no_end_effector_goals() -> None:
+    legs = "".join(
+        f'<group name="{c}_leg"><chain base_link="base_link" tip_link="{c}_foot"/></group>'
+        f'<end_effector name="{c}_foot" parent_link="{c}_foot" group="{c}_leg"/>'
+        for c in ("FL", "FR", "RL", "RR")
+    )
+    text = (
+        f'<robot name="dog">{legs}<group name="all">'
+        + "".join(f'<group name="{c}_leg"/>' for c in ("FL", "FR", "RL", "RR"))
+        + "</group></robot>"
+    )
+    plain = identify_urdf(builders.quadruped().text())
+    planned = identify_urdf(builders.quadruped().text(), srdf_text=text)
+    assert (planned.structure, planned.confidence) == (plain.structure, plain.confidence)
+    assert planned.motion_controls == ()
 
 
 def test_a_planar_virtual_joint_makes_a_mobile_base() -> None:
