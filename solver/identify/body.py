@@ -226,6 +226,14 @@ class _Detector:
         pattern = self.profile.plugin_pattern(part)
         return pattern is not None and bool(pattern.search(text))
 
+    def gripper_joint(self, joint: Joint) -> bool:
+        """Named as a gripper, or on or into a link named as one; a joint whose own name says
+        it is an arm joint (``left_wrist_roll_joint`` into ``left_hand_roll_link``) stays one."""
+        own = self.parts_of(joint.name)
+        if "gripper" in own:
+            return True
+        return "arm" not in own and ("gripper" in self.parts_of(joint.child) or self.on_palm(joint))
+
     def on_palm(self, joint: Joint) -> bool:
         """A movable joint on a link named as a hand or palm moves a finger."""
         return "gripper" in self.parts_of(joint.parent)
@@ -255,7 +263,7 @@ class _Detector:
                 and joint.child not in self.moving_below
             ):
                 rotors.append(joint.name)
-            elif self.matches("gripper", joint) or self.on_palm(joint):
+            elif self.gripper_joint(joint):
                 grippers.add(joint.name)
         wheels += self._unnamed_wheels({*wheels, *rotors, *grippers})
         not_rotors: list[str] = []

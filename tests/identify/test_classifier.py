@@ -234,6 +234,22 @@ def test_fingers_on_a_link_named_as_a_hand_make_the_arm_end_in_a_gripper() -> No
     assert result.body.limbs[0].gripper  # type: ignore[union-attr]
 
 
+def test_wrist_joints_into_links_named_as_the_hand_stay_arm_joints() -> None:
+    robot = RobotText("arm into hand links")
+    link = robot.chain("base_link", ["shoulder_pitch", "shoulder_roll", "elbow_pitch"])
+    for axis in ("yaw", "roll", "pitch"):
+        link = robot.joint(
+            f"wrist_{axis}_joint",
+            "revolute",
+            link,
+            f"hand_{axis}_link",
+            '<limit lower="-1" upper="1" effort="1" velocity="1"/>',
+        )
+    result = identify_urdf(robot.text())
+    assert result.body.grippers == 0  # type: ignore[union-attr]
+    assert [len(limb.joints) for limb in result.body.limbs] == [6]  # type: ignore[union-attr]
+
+
 def test_legs_that_end_in_a_gripper_are_legs() -> None:
     robot = builders.quadruped()
     robot.chain("FL_foot", ["FL_gripper_finger"], "prismatic")
