@@ -451,7 +451,8 @@ class _Detector:
         return sorted(tips, key=self._order)
 
     def _finger_groups(self, limbs: list[Limb]) -> set[str]:
-        """Joints of unnamed short chains hanging from one link in threes or more: fingers.
+        """Joints of unnamed short chains hanging from one link in threes or more: fingers
+        (also where each ends in a named fingertip).
 
         A claw or a hand whose fingers carry no names still has them side by side on a palm;
         arms and legs on one link come in ones and twos.
@@ -459,12 +460,7 @@ class _Detector:
         by_base: dict[str, list[Limb]] = {}
         longest = self.profile.limb("finger_max_joints")
         for limb in limbs:
-            if (
-                limb.kind in ("arm", "other")
-                and not limb.gripper
-                and not limb.named
-                and len(limb.joints) <= longest
-            ):
+            if limb.kind in ("arm", "other") and not limb.named and len(limb.joints) <= longest:
                 by_base.setdefault(limb.base, []).append(limb)
         found: set[str] = set()
         for group in by_base.values():

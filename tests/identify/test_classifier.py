@@ -223,6 +223,19 @@ def test_unnamed_spinning_leaves_level_with_the_body_or_limited_are_no_wheels() 
         assert result.structure != "UGV"
 
 
+def test_unnamed_finger_chains_with_named_tips_on_an_arm_are_one_hand() -> None:
+    robot = builders.manipulator()
+    robot.joints.clear()
+    robot.links[:] = [robot.root]
+    tip = builders.arm(robot, robot.root, gripper=False)
+    for f in range(4):
+        knuckle = robot.chain(tip, [f"d{f}_base"])
+        robot.chain(knuckle, [f"d{f}_finger_tip"])
+    result = identify_urdf(robot.text())
+    assert result.structure == "Manipulator"
+    assert (result.body.count("arm"), result.body.grippers) == (1, 1)  # type: ignore[union-attr]
+
+
 def test_fingers_on_a_link_named_as_a_hand_make_the_arm_end_in_a_gripper() -> None:
     robot = RobotText("arm_hand")
     wrist = robot.chain("base_link", ["a1", "a2", "a3", "a4"])
