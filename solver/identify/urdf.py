@@ -271,7 +271,8 @@ class _Builder:
         plugins = tuple(
             _plugin(p, g.get("reference"))
             for g in root.findall("gazebo")
-            for p in g.findall("plugin")
+            for p in g
+            if p.tag == "plugin" or _legacy(p, "controller")
         )
         controlled = frozenset(self._controlled(root))
         self.faults += uncompiled_xacro(root, self.file)  # read as URDF, never compiled: say so
@@ -473,8 +474,12 @@ class _Builder:
         found = []
         for gazebo in root.findall("gazebo"):
             reference = gazebo.get("reference")
-            for sensor in gazebo.findall("sensor"):
-                found.append(self._sensor(sensor, reference, "gazebo"))
+            for sensor in gazebo:
+                if sensor.tag == "sensor":
+                    found.append(self._sensor(sensor, reference, "gazebo"))
+                elif _legacy(sensor, "sensor"):
+                    kind = str(sensor.tag).rsplit("}", 1)[1]
+                    found.append(self._sensor(sensor, reference, "gazebo", kind))
         # URDF's own <sensor> element (urdfdom): <sensor name><parent link/><camera|ray/>.
         for sensor in root.findall("sensor"):
             parent = sensor.find("parent")
@@ -534,11 +539,24 @@ def _sensor(
         link=link,
         line=line_of(element),
         origin=origin,
-        plugins=tuple(_plugin(p, link) for p in element.iter("plugin")),
+        plugins=tuple(
+            _plugin(p, link)
+            for p in element.iter()
+            if p.tag == "plugin" or _legacy(p, "controller")
+        ),
         horizontal_samples=samples["horizontal"],
         vertical_samples=samples["vertical"],
         horizontal_fov=_float(fov.text if fov is not None else None),
         camera_count=cameras,
+    )
+
+
+def _legacy(element: etree._Element, kind: str) -> bool:
+    """A Gazebo 0.x namespaced element of ``kind`` (``<sensor:ray>``, ``<controller:gazebo_ros_imu
+    plugin="...">``), as URDFs written for ROS in 2010-2012 still have them."""
+    tag = element.tag
+    return (
+        isinstance(tag, str) and tag.startswith("{") and tag[1:].split("}")[0].endswith(f"#{kind}")
     )
 
 
@@ -549,7 +567,7 @@ def _plugin(element: etree._Element, reference: str | None) -> PluginTag:
             params.append((child.tag, child.text.strip()[:_MAX_PARAM_TEXT]))
     return PluginTag(
         (element.get("name") or "").strip(),
-        (element.get("filename") or "").strip(),
+        (element.get("filename") or element.get("plugin") or "").strip(),  # plugin=: Gazebo 0.x
         reference,
         line_of(element),
         tuple(params),

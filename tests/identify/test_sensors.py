@@ -99,6 +99,31 @@ def test_a_urdf_sensor_without_a_kind_element_is_told_by_its_name() -> None:
     ]
 
 
+def test_gazebo_0x_namespaced_sensors_and_controllers_are_read() -> None:
+    old = "http://playerstage.sourceforge.net/gazebo/xmlschema/#"
+    text = (
+        builders.ugv()
+        .text()
+        .replace(
+            "<robot ", f'<robot xmlns:sensor="{old}sensor" xmlns:controller="{old}controller" '
+        )
+    )
+    text = text.replace(
+        "</robot>",
+        '<gazebo reference="base_link"><sensor:ray name="base_laser">'
+        '<controller:gazebo_ros_laser name="c" plugin="libgazebo_ros_laser.so"/></sensor:ray>'
+        '<sensor:camera name="head_cam"/></gazebo>'
+        '<gazebo><controller:gazebo_ros_imu name="imu_controller" plugin="libgazebo_ros_imu.so"/>'
+        "</gazebo></robot>",
+    )
+    found = identify_urdf(text).sensors
+    assert [(s.kind, s.sensor_type, s.count) for s in found] == [
+        ("lidar", "LIDAR", 1),
+        ("camera", "2D Camera", 1),
+        ("imu", None, 1),
+    ]
+
+
 def test_model_plugins_count_as_sensors_but_ground_truth_does_not() -> None:
     found = kinds(
         builders.model_plugin("imu_sim", "libhector_gazebo_ros_imu.so"),
