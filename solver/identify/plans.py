@@ -16,28 +16,37 @@ from solver.identify.body import Body
 from solver.identify.srdf import EndEffector, Group, Srdf
 from solver.identify.urdf import Urdf
 
-__all__ = ["arm_plans", "hand_effectors"]
+__all__ = ["MOST_GROUPS", "arm_plans", "hand_effectors"]
+
+# A real SRDF has tens of groups; a stranger's file may have hundreds of thousands. Only this
+# many candidate arm groups are compared (each with each), and chains are walked for at most
+# _MOST_STEPS joints in all: a hostile SRDF ends in milliseconds, not minutes.
+MOST_GROUPS = 256
+_MOST_STEPS = 200_000
 
 
 def arm_plans(
     body: Body, srdf: Srdf, min_joints: int, urdf: Urdf | None = None
 ) -> tuple[Group, ...]:
-    """The SRDF's planning groups that each plan one arm of ``body``."""
+    """The SRDF's planning groups that each plan one arm of ``body`` (among its first
+    :data:`MOST_GROUPS` candidates); groups with the same joints count once."""
     legs = {j for limb in body.limbs if limb.kind == "leg" for j in limb.joints}
     trunk = set(body.trunk)
     limb_of = {j: index for index, limb in enumerate(body.limbs) for j in limb.joints}
-    joints = {g.name: _group_joints(g, urdf) for g in srdf.groups}
-    groups = [
-        g
-        for g in srdf.arm_groups(min_joints)
-        if 2 * len(joints[g.name] & legs) <= len(joints[g.name])
-        and 2 * len(joints[g.name] & trunk) <= len(joints[g.name])
-        and len({limb_of[j] for j in joints[g.name] if j in limb_of}) < 3
-    ]
+    walker = _Chains(urdf)
+    by_joints: dict[frozenset[str], Group] = {}
+    for group in srdf.arm_groups(min_joints)[:MOST_GROUPS]:
+        joints = walker.joints(group)
+        if (
+            2 * len(joints & legs) <= len(joints)
+            and 2 * len(joints & trunk) <= len(joints)
+            and len({limb_of[j] for j in joints if j in limb_of}) < 3
+        ):
+            by_joints.setdefault(joints, group)
     return tuple(
-        g
-        for g in groups
-        if not any(other is not g and joints[other.name] < joints[g.name] for other in groups)
+        group
+        for joints, group in by_joints.items()
+        if not any(other < joints for other in by_joints)
     )
 
 
@@ -57,15 +66,31 @@ def _moved_by(urdf: Urdf, link: str) -> str | None:
     return None if joint is None else joint.name
 
 
-def _group_joints(group: Group, urdf: Urdf | None) -> frozenset[str]:
-    """The joints a group names, with those along its chains (tip up to base), the movable
-    ones only, where the URDF is known."""
-    found = set(group.joints)
-    if urdf is None:
-        return frozenset(found)
-    for base, tip in group.chains:
+class _Chains:
+    """The movable joints of groups, their chains walked through the URDF (tip up to base),
+    each chain once, within a budget of steps."""
+
+    def __init__(self, urdf: Urdf | None) -> None:
+        self.urdf = urdf
+        self.steps = _MOST_STEPS
+        self.walked: dict[tuple[str, str], frozenset[str]] = {}
+
+    def joints(self, group: Group) -> frozenset[str]:
+        found = set(group.joints)
+        urdf = self.urdf
+        if urdf is None:
+            return frozenset(found)
+        for chain in group.chains:
+            if chain not in self.walked:
+                self.walked[chain] = self._walk(urdf, *chain)
+            found |= self.walked[chain]
+        return frozenset(name for name in found if (j := urdf.joint(name)) is None or j.movable)
+
+    def _walk(self, urdf: Urdf, base: str, tip: str) -> frozenset[str]:
+        path = []
         link = tip
-        while link != base and (joint := urdf.parent_joint(link)) is not None:
-            found.add(joint.name)
+        while link != base and self.steps > 0 and (joint := urdf.parent_joint(link)) is not None:
+            self.steps -= 1
+            path.append(joint.name)
             link = joint.parent
-    return frozenset(name for name in found if (j := urdf.joint(name)) is None or j.movable)
+        return frozenset(path)

@@ -6,6 +6,7 @@ import pytest
 
 from solver.errors import InputError
 from solver.identify import identify_urdf
+from solver.identify.plans import MOST_GROUPS
 from solver.identify.srdf import parse_srdf
 from solver.identify.urdf import parse_urdf
 from tests.identify import builders
@@ -92,6 +93,16 @@ def test_leg_groups_and_feet_plan_no_arm_and_no_end_effector_goals() -> None:
     planned = identify_urdf(builders.quadruped().text(), srdf_text=text)
     assert (planned.structure, planned.confidence) == (plain.structure, plain.confidence)
     assert planned.motion_controls == ()
+
+
+def test_many_copies_of_one_arm_group_plan_one_arm_and_the_rest_are_not_read() -> None:
+    copies = "".join(
+        f'<group name="copy{k}"><chain base_link="base_link" tip_link="wrist_3_link"/></group>'
+        for k in range(MOST_GROUPS + 50)
+    )
+    result = identify_urdf(builders.manipulator().text(), srdf_text=f"<robot>{copies}</robot>")
+    assert any(e.startswith("SRDF: 1 arm planning group(s) (copy0)") for e in result.evidence)
+    assert result.confidence == identify_urdf(builders.manipulator().text()).confidence
 
 
 def test_a_planar_virtual_joint_makes_a_mobile_base() -> None:
