@@ -12,7 +12,6 @@ in JSON mode nothing is written. Batch runs and fleets have their own bars (``cl
 from __future__ import annotations
 
 import sys
-import threading
 from collections.abc import Iterator
 from contextlib import contextmanager
 from typing import IO, Any
@@ -46,6 +45,8 @@ def working(
         from rich.console import Console
 
         console = Console(file=raw_stream(sys.stderr), stderr=True)
+    import threading  # here, not at start-up: only a spinner on a terminal needs it
+
     from rich.markup import escape
 
     status = console.status(escape(what), spinner="dots")

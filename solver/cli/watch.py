@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import argparse
 import os
-import signal
 import sys
+from collections.abc import Iterator
+from contextlib import contextmanager
 from typing import TYPE_CHECKING, Any
 
 from solver.cli._common import (
@@ -104,16 +105,31 @@ def run(args: argparse.Namespace) -> int:
         return _watch_ros2(args, solution, profile)
     master = master_uri(args.master)
 
-    with Watcher(
-        master, solution, profile, interval=args.interval, timeout=args.timeout, push=not args.once
-    ) as watcher:
-        # SIGTERM (systemd, roslaunch after SIGINT, kill) ends the watch as cleanly as Ctrl-C:
-        # parameter subscriptions released, exit 0.
-        previous = signal.signal(signal.SIGTERM, lambda *_: watcher.stop("terminated (SIGTERM)"))
-        try:
-            return _watch(watcher, args, master, solution)
-        finally:
-            signal.signal(signal.SIGTERM, previous)
+    with (
+        Watcher(
+            master,
+            solution,
+            profile,
+            interval=args.interval,
+            timeout=args.timeout,
+            push=not args.once,
+        ) as watcher,
+        _stopped_by_sigterm(watcher),
+    ):
+        return _watch(watcher, args, master, solution)
+
+
+@contextmanager
+def _stopped_by_sigterm(watcher: Watcher) -> Iterator[None]:
+    """SIGTERM (systemd, roslaunch after SIGINT, kill) ends the watch as cleanly as Ctrl-C:
+    subscriptions released, exit 0; the previous handler is back afterwards."""
+    import signal  # here, not at start-up: only watching needs it
+
+    previous = signal.signal(signal.SIGTERM, lambda *_: watcher.stop("terminated (SIGTERM)"))
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
 
 
 def ros2_domain(args: argparse.Namespace) -> int:
@@ -135,16 +151,15 @@ def _watch_ros2(args: argparse.Namespace, solution: Solution, profile: Profile) 
     from solver.live.watcher import Watcher
 
     source = DdsGraph(ros2_domain(args))
-    with Watcher(source.name, solution, profile, interval=args.interval, source=source) as watcher:
-        previous = signal.signal(signal.SIGTERM, lambda *_: watcher.stop("terminated (SIGTERM)"))
-        try:
-            if args.once:
-                source.settle()  # discovery on DDS takes a moment: see what is there first
-            events = watcher.snapshot() if args.once else watcher.events()
-            for event in events:
-                write(_render(event, solution, args))
-        finally:
-            signal.signal(signal.SIGTERM, previous)
+    with (
+        Watcher(source.name, solution, profile, interval=args.interval, source=source) as watcher,
+        _stopped_by_sigterm(watcher),
+    ):
+        if args.once:
+            source.settle()  # discovery on DDS takes a moment: see what is there first
+        events = watcher.snapshot() if args.once else watcher.events()
+        for event in events:
+            write(_render(event, solution, args))
     if watcher.stop_reason is not None and not args.once:
         print(f"watch stopped: {watcher.stop_reason}", file=sys.stderr)
     return 0
