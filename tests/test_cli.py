@@ -158,6 +158,24 @@ def test_python_dash_m_solver_is_the_same_command_line() -> None:
     assert script.stdout == run_cli("reproduce").stdout
 
 
+def test_a_command_imports_its_own_module_and_no_other_command() -> None:
+    script = (
+        "import contextlib, io, sys\n"
+        "from solver.cli import main\n"
+        "with contextlib.redirect_stdout(io.StringIO()):\n"
+        "    status = main(['solve', 'case3'])\n"
+        "print(status, sorted(m for m in sys.modules if m.startswith('solver.cli.')))\n"
+    )
+    done = subprocess.run(
+        [sys.executable, "-c", script], cwd=ROOT, capture_output=True, text=True, check=True
+    )
+    assert done.stdout.split(" ", 1)[0] == "0"
+    loaded = done.stdout.split(" ", 1)[1]
+    assert "solver.cli.solve" in loaded
+    assert "solver.cli.watch" not in loaded
+    assert "solver.cli.identify" not in loaded
+
+
 @pytest.mark.parametrize(
     ("content", "message"),
     [

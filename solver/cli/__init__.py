@@ -28,7 +28,9 @@ def command_modules() -> list[str]:
     return sorted(path.stem for path in package.glob("*.py") if not path.stem.startswith("_"))
 
 
-def build_parser() -> argparse.ArgumentParser:
+def build_parser(command: str | None = None) -> argparse.ArgumentParser:
+    """The parser of every command, or of ``command`` alone when it names one (what a run
+    needs: the other commands' modules are not imported, which keeps start-up short)."""
     parser = argparse.ArgumentParser(
         prog="teleop-ui",
         description="Design teleoperation UI configurations for heterogeneous robot teams: "
@@ -36,15 +38,17 @@ def build_parser() -> argparse.ArgumentParser:
     )
     parser.add_argument("--version", action="version", version=f"%(prog)s {_version()}")
     subparsers = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
-    for name in command_modules():
+    names = command_modules()
+    for name in [command] if command in names else names:
         importlib.import_module(f"solver.cli.{name}").register(subparsers)
     return parser
 
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; returns the exit status (0 ok, 1 findings, 2 unusable input)."""
-    parser = build_parser()
-    args = parser.parse_args(argv)
+    arguments = sys.argv[1:] if argv is None else list(argv)
+    parser = build_parser(arguments[0] if arguments else None)
+    args = parser.parse_args(arguments)
     # Names and messages come from files strangers wrote: no raw escape sequence reaches the
     # terminal (see solver/cli/_terminal.py).
     stdout, stderr = sys.stdout, sys.stderr
