@@ -127,6 +127,18 @@ def add_rules(
     parser.add_argument("--rules", "-r", metavar="RULES.yaml", help=help)
 
 
+def add_team(parser: argparse.ArgumentParser) -> None:
+    """The required team file (``--team``/``-t``) and the ``--rules`` that may replace its own."""
+    parser.add_argument(
+        "--team",
+        "-t",
+        required=True,
+        metavar="TEAM.yaml",
+        help="team selection file (or a shipped team name)",
+    )
+    add_rules(parser)
+
+
 def team_path(text: str) -> Path:
     """The file of a team argument: as given, or a shipped team's (``case3``); a bare word that
     is neither raises an :class:`InputError` listing the shipped teams."""

@@ -13,7 +13,7 @@ from solver.cli._common import (
     add_format,
     add_master_options,
     add_profile,
-    add_rules,
+    add_team,
     load_team_argument,
     write,
 )
@@ -36,14 +36,7 @@ def register(subparsers: Any) -> None:
         "'sensor_type=2D Camera' sensor_count=3 (with --master: values "
         "that replace or complete what the robot's metadata gives)",
     )
-    parser.add_argument(
-        "--team",
-        "-t",
-        required=True,
-        metavar="TEAM.yaml",
-        help="team selection file (or a shipped team name)",
-    )
-    add_rules(parser)
+    add_team(parser)
     add_format(parser, ("text", "json"))
     # Live mode (solver.live.query): the robot's values come from a running ROS master.
     add_master_options(parser, required_help="read the robot's values from this master")

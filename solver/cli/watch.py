@@ -13,7 +13,7 @@ from solver.cli._common import (
     add_format,
     add_master_options,
     add_profile,
-    add_rules,
+    add_team,
     load_team_argument,
     seconds,
     write,
@@ -54,14 +54,7 @@ def register(subparsers: Any) -> None:
         metavar="N",
         help="with --ros2: the DDS domain id (default: $ROS_DOMAIN_ID, else 0)",
     )
-    parser.add_argument(
-        "--team",
-        "-t",
-        required=True,
-        metavar="TEAM.yaml",
-        help="team selection file (or a shipped team name)",
-    )
-    add_rules(parser)
+    add_team(parser)
     add_profile(parser)
     parser.add_argument(
         "--once",

@@ -148,6 +148,19 @@ class _Plan:
         then_prefix, then_block = part(rule.conditions)
         return _Rule("require", when_prefix, then_prefix, when_block, then_block)
 
+    def head(self, prefix: tuple[int, ...]) -> tuple[int, bool, int]:
+        """What ``prefix`` adds to every robot of the block: its part of the configuration
+        code, whether one of its values is in no component (a gap), and the robots it stands
+        for (value classes weigh more than one)."""
+        offset, gap, weight = 0, False, 1
+        for position, digit in enumerate(prefix):
+            code = int(self.codes[position][digit])
+            gap |= code < 0
+            offset += code * self.strides[position]
+            if self.weights is not None:
+                weight *= self.weights[position][digit]
+        return offset, gap, weight
+
     def prefixes(self) -> Iterator[tuple[int, ...]]:
         return itertools.product(*(range(len(d)) for d in self.domains[: self.start]))
 
@@ -297,12 +310,7 @@ def _robot_blocks(plan: _Plan) -> Iterator[RobotBlock]:
             )
             found = blocks[id(mask)] = (rows, keys, which.reshape(-1))
         rows, keys, which = found
-        offset = 0
-        gap = False
-        for position, digit in enumerate(prefix):
-            code = int(plan.codes[position][digit])
-            gap |= code < 0
-            offset += code * plan.strides[position]
+        offset, gap, _ = plan.head(prefix)
         if gap:
             codes = np.full(len(keys), -1, dtype=np.int64)
         elif offset:
@@ -422,15 +430,7 @@ def _scan(rules: RuleSet, classes: _Classes, *, served_too: bool) -> _Scanned:
         block = blocks.get(id(mask))
         if block is None:
             block = blocks[id(mask)] = _MaskedBlock(plan, mask, plural)
-        offset = 0
-        weight = 1
-        prefix_gap = False
-        for position, digit in enumerate(prefix):
-            code = int(plan.codes[position][digit])
-            prefix_gap |= code < 0
-            offset += code * plan.strides[position]
-            if plan.weights is not None:
-                weight *= plan.weights[position][digit]
+        offset, prefix_gap, weight = plan.head(prefix)
         total += block.valid * weight
         if prefix_gap:
             unserved += block.valid * weight
