@@ -1,19 +1,33 @@
-"""Measure `teleop-ui identify` against the labelled corpus (../shared/corpus/truth.csv).
+"""Measure `teleop-ui identify` against labelled sets of robot descriptions.
 
 Usage::
 
-    python tools/measure_identification.py [--corpus DIR]
+    python tools/measure_identification.py                      # the shared corpus
+    python tools/measure_identification.py --set tools/identification_set
+    python tools/measure_identification.py --all                # both, side by side
+    python tools/measure_identification.py --set DIR --files DIR2   # files kept elsewhere
 
-Each corpus robot is identified from its URDF (and SRDF when it has one) with the shipped
-profile and the article's rule set, exactly as ``teleop-ui identify`` would. Printed, as
-Markdown, for the whole corpus and split by source (the original 31 ROS-repository robots, rows
-1-31 of truth.csv, and the newer package sources, rows 32 on): structure accuracy on the
-certain labels (no trailing ``?``) per label, the structure confusion table (truth label x
-reading), the lenient score (a label ending in ``?`` also accepts a structure its
-``uncertainty_note`` names), descriptions refused (exit 2), warnings, sensor precision and
-recall, motion controls, and every miss.
+A labelled set is a folder with a ``truth.csv`` (the columns of ``../shared/corpus/truth.csv``:
+``robot``, ``file``, ``srdf``, ``source``, ``kinematic_type``, ``sensors``,
+``motion_control_kinds``, ``uncertainty_note``, ...; optionally ``family`` and ``licence``).
+``file`` and ``srdf`` are paths relative to the set; a file absent there is looked up under each
+``--files`` folder and then under ``../shared/<set folder name>/``, and a row whose file is
+nowhere is counted as *absent* (its ``source`` says how to fetch it) and not measured.
 
-The corpus is read in place and never copied. When it is absent the script says so and exits 0.
+Each robot is identified from its URDF (and SRDF when it has one) with the shipped profile and
+the article's rule set, exactly as ``teleop-ui identify`` would. Printed, as Markdown, per
+family and per source (the repository or package in ``source``), each set's rows side by side:
+structure accuracy on the certain labels (no trailing ``?``), the lenient score (a label ending
+in ``?`` also accepts a structure its ``uncertainty_note`` names), descriptions refused (exit
+2), sensor precision and recall (kinds with counts), and motion-control precision and recall
+(robots whose ``motion_control_kinds`` is empty are not labelled for controls); then per set the
+per-label table, the structure confusion table and every miss.
+
+Labels that name no structure of the profile are scored against the article's fallback: a
+``Surface vessel`` or ``Underwater vehicle`` is right as ``Other`` until the profile has a
+structure of that name. A standalone gripper read as ``Gripper`` counts for the label ``Hand``.
+
+The sets are read in place and never copied. A set with no truth.csv is reported and skipped.
 """
 
 from __future__ import annotations
@@ -22,6 +36,8 @@ import argparse
 import csv
 import sys
 from collections import Counter
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from solver.errors import SolverError
@@ -29,18 +45,39 @@ from solver.identify import Identification, identify, load_profile
 from solver.rules import default_rules_path, load_rules
 
 ROOT = Path(__file__).resolve().parent.parent
-DEFAULT_CORPUS = ROOT.parent / "shared" / "corpus"
+OWN_SET = ROOT / "tools" / "identification_set"
 # Truth labels spelled differently from the profile's structure names.
 ALIASES = {
     "biped/lower-body": "Biped",
     "legged mobile manipulator": "Legged Mobile Manipulator",
     "aerial manipulator": "Aerial Manipulator",
 }
+# Labels with no structure of their own in the article: the reading they are scored against
+# while the profile has no structure of that name.
+FALLBACKS = {"surface vessel": "Other", "underwater vehicle": "Other"}
 # Readings a truth label also accepts: the corpus labels standalone grippers Hand (its README:
 # "the README has no gripper label, Hand is the nearest extra label").
 ACCEPTS = {"Hand": {"Gripper"}}
-# truth.csv rows (1-based, header excluded) from the original ROS repositories.
-ORIGINAL_ROWS = 31
+# The family of a row with no `family` column, by its label.
+FAMILY_OF_LABEL = {
+    "ugv": "mobile base",
+    "uav": "aerial vehicle",
+    "manipulator": "arm",
+    "mobile manipulator": "mobile manipulator",
+    "torso": "torso",
+    "humanoid": "humanoid",
+    "quadruped": "quadruped",
+    "biped/lower-body": "biped",
+    "hand": "hand",
+}
+
+
+def shared_folder() -> Path:
+    """`shared/` beside the project's main checkout (also from a git worktree of it)."""
+    for base in (ROOT.parent, ROOT.parent.parent):
+        if (base / "shared").is_dir():
+            return base / "shared"
+    return ROOT.parent / "shared"
 
 
 def label_of(text: str, structures: tuple[str, ...]) -> str:
@@ -48,7 +85,8 @@ def label_of(text: str, structures: tuple[str, ...]) -> str:
     lowered = clean.casefold()
     if lowered in ALIASES:
         return ALIASES[lowered]
-    return next((s for s in structures if s.casefold() == lowered), clean)
+    named = next((s for s in structures if s.casefold() == lowered), None)
+    return named or FALLBACKS.get(lowered, clean)
 
 
 def parse_counts(text: str) -> Counter[str]:
@@ -59,19 +97,49 @@ def parse_counts(text: str) -> Counter[str]:
     return counts
 
 
-class Score:
-    """Running totals over the corpus, and the misses with their reasons."""
+def family_of(row: dict[str, str]) -> str:
+    family = (row.get("family") or "").strip()
+    if family:
+        return family
+    label = row["kinematic_type"].strip().rstrip("?").strip().casefold()
+    return FAMILY_OF_LABEL.get(label, label or "(unlabelled)")
 
-    def __init__(self, structures: tuple[str, ...]) -> None:
-        self.structures = structures
-        self.robots = self.strict = self.lenient = self.sensor_exact = 0
-        self.certain = self.certain_right = self.refused = self.warned = 0
-        self.per_label: Counter[tuple[str, bool]] = Counter()
-        self.kind_hits = self.kind_predicted = self.kind_truth = 0
-        self.control_robots = self.control_exact = 0
-        self.control_hits = self.control_predicted = self.control_truth = 0
-        self.confusion: Counter[tuple[str, str]] = Counter()
-        self.misses: list[str] = []
+
+def source_of(row: dict[str, str]) -> str:
+    """The repository or package a row comes from: `github owner/name`, `PyPI name`."""
+    words = row.get("source", "").split()
+    return " ".join(words[:2]).split("@")[0] or "(no source)"
+
+
+def share(part: int, whole: int) -> str:
+    return f"{part}/{whole} ({100 * part / whole:.0f}%)" if whole else "-"
+
+
+@dataclass
+class Score:
+    """Running totals over some rows of a set, and the misses with their reasons."""
+
+    structures: tuple[str, ...]
+    robots: int = 0
+    absent: int = 0
+    strict: int = 0
+    lenient: int = 0
+    certain: int = 0
+    certain_right: int = 0
+    refused: int = 0
+    warned: int = 0
+    sensor_exact: int = 0
+    kind_hits: int = 0
+    kind_predicted: int = 0
+    kind_truth: int = 0
+    control_robots: int = 0
+    control_exact: int = 0
+    control_hits: int = 0
+    control_predicted: int = 0
+    control_truth: int = 0
+    per_label: Counter[tuple[str, bool]] = field(default_factory=Counter)
+    confusion: Counter[tuple[str, str]] = field(default_factory=Counter)
+    misses: list[str] = field(default_factory=list)
 
     def add(self, row: dict[str, str], result: Identification) -> None:
         self.robots += 1
@@ -79,10 +147,15 @@ class Score:
         self.sensors(row, result)
         self.controls(row, result)
 
+    def miss_file(self, row: dict[str, str], path: Path) -> None:
+        self.absent += 1
+        self.misses.append(f"{row['robot']}: absent ({path.name}; fetch recipe in `source`)")
+
     def refuse(self, row: dict[str, str], error: SolverError) -> None:
         self.robots += 1
         self.refused += 1
-        self.misses.append(f"{row['robot']}: not identified (exit 2): {error}")
+        message = " ".join(str(error).split())
+        self.misses.append(f"{row['robot']}: not identified (exit 2): {message}")
         self.confusion[(row["kinematic_type"], "(exit 2)")] += 1
         if not row["kinematic_type"].endswith("?"):
             self.certain += 1
@@ -139,18 +212,17 @@ class Score:
             self.misses.append(f"{row['robot']}: motion controls missing {missing}; extra {extra}")
 
     def summary(self) -> list[str]:
-        """One table row: robots, certain-label accuracy, lenient, exit 2, sensor P/R."""
-
-        def share(part: int, whole: int) -> str:
-            return f"{part}/{whole} ({100 * part / whole:.0f}%)" if whole else "-"
-
+        """One table row: robots, certain-label accuracy, lenient, exit 2, absent, P/R."""
         return [
+            str(self.robots),
             share(self.certain_right, self.certain),
             share(self.lenient, self.robots),
             str(self.refused),
-            str(self.warned),
+            str(self.absent),
             share(self.kind_hits, self.kind_predicted),
             share(self.kind_hits, self.kind_truth),
+            share(self.control_hits, self.control_predicted),
+            share(self.control_hits, self.control_truth),
         ]
 
     def per_label_table(self) -> list[str]:
@@ -189,45 +261,144 @@ class Score:
         return "\n".join(lines) + "\n"
 
 
+@dataclass
+class Measured:
+    """One labelled set, measured: the whole set and its rows grouped by family and source."""
+
+    name: str
+    truth: Path
+    rows: int
+    whole: Score
+    families: dict[str, Score]
+    sources: dict[str, Score]
+
+
+Runner = Callable[[Path, "Path | None"], Identification]
+
+
+def locate(relative: str, folders: Iterable[Path]) -> Path:
+    """The first folder holding `relative`; the first candidate when none does."""
+    candidates = [folder / relative for folder in folders]
+    return next((path for path in candidates if path.is_file()), candidates[0])
+
+
+def measure(
+    name: str, folder: Path, extra_files: list[Path], structures: tuple[str, ...], run: Runner
+) -> Measured | None:
+    truth = folder / "truth.csv"
+    if not truth.is_file():
+        return None
+    with truth.open(encoding="utf-8", newline="") as stream:
+        rows = list(csv.DictReader(stream))
+    folders = [folder, *extra_files, shared_folder() / folder.name]
+    whole = Score(structures)
+    families: dict[str, Score] = {}
+    sources: dict[str, Score] = {}
+    for row in rows:
+        scores = [
+            whole,
+            families.setdefault(family_of(row), Score(structures)),
+            sources.setdefault(source_of(row), Score(structures)),
+        ]
+        urdf = locate(row["file"], folders)
+        srdf = locate(row["srdf"], folders) if row.get("srdf") else None
+        if not urdf.is_file() or (srdf is not None and not srdf.is_file()):
+            for score in scores:
+                score.miss_file(row, urdf if not urdf.is_file() else srdf or urdf)
+            continue
+        try:
+            result = run(urdf, srdf)
+        except SolverError as error:
+            for score in scores:
+                score.refuse(row, error)
+            continue
+        for score in scores:
+            score.add(row, result)
+    return Measured(name, truth, len(rows), whole, families, sources)
+
+
+HEADER = (
+    "| {group} | set | robots | structure right (certain labels) | lenient (all labels) | "
+    "exit 2 | absent | sensor precision | sensor recall | control precision | control recall |"
+)
+RULE = "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+
+
+def side_by_side(
+    group: str, sets: list[Measured], pick: Callable[[Measured], dict[str, Score]]
+) -> list[str]:
+    """Rows of every set for each group value, the sets of one value next to each other."""
+    keys = sorted({key for measured in sets for key in pick(measured)}, key=str.casefold)
+    lines = [HEADER.format(group=group), RULE]
+    for key in keys:
+        for measured in sets:
+            score = pick(measured).get(key)
+            if score is not None:
+                lines.append(f"| {key} | {measured.name} | " + " | ".join(score.summary()) + " |")
+    for measured in sets:
+        lines.append(
+            f"| **all** | {measured.name} | " + " | ".join(measured.whole.summary()) + " |"
+        )
+    return lines
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=(__doc__ or "").splitlines()[0])
-    parser.add_argument("--corpus", type=Path, default=DEFAULT_CORPUS)
+    parser.add_argument(
+        "--set",
+        dest="sets",
+        type=Path,
+        action="append",
+        metavar="DIR",
+        help="a labelled set (a folder with truth.csv); repeat for several "
+        "(default: ../shared/corpus)",
+    )
+    parser.add_argument(
+        "--all", action="store_true", help="the shared corpus and tools/identification_set"
+    )
+    parser.add_argument(
+        "--files",
+        type=Path,
+        action="append",
+        default=[],
+        metavar="DIR",
+        help="another folder holding the sets' urdf/ and srdf/ files",
+    )
+    parser.add_argument(
+        "--corpus", type=Path, help="the shared corpus folder (default: ../shared/corpus)"
+    )
     args = parser.parse_args(argv)
-    truth_file = args.corpus / "truth.csv"
-    if not truth_file.is_file():
-        print(f"no corpus at {args.corpus} (truth.csv missing); nothing measured")
-        return 0
+    corpus = args.corpus or shared_folder() / "corpus"
+    folders: list[Path] = list(args.sets or [])
+    if args.all:
+        folders = [corpus, OWN_SET, *folders]
+    elif not folders:
+        folders = [corpus]
     profile = load_profile()
     rules = load_rules(default_rules_path())
-    with truth_file.open(encoding="utf-8") as stream:
-        rows = list(csv.DictReader(stream))
-    score = Score(profile.structure_names)
-    parts = {
-        "original (rows 1-31)": Score(profile.structure_names),
-        f"newer (rows 32-{len(rows)})": Score(profile.structure_names),
-    }
-    for number, row in enumerate(rows, start=1):
-        part = list(parts.values())[number > ORIGINAL_ROWS]
-        srdf = args.corpus / row["srdf"] if row["srdf"] else None
-        try:
-            result = identify(args.corpus / row["file"], srdf=srdf, rules=rules, profile=profile)
-        except SolverError as error:
-            score.refuse(row, error)
-            part.refuse(row, error)
-            continue
-        score.add(row, result)
-        part.add(row, result)
-    print(f"Corpus: {len(rows)} descriptions ({truth_file})\n")
-    print(
-        "| source | structure right (certain labels) | lenient (all labels) | exit 2 | "
-        "with warnings | sensor precision | sensor recall |"
-    )
-    print("|---|---:|---:|---:|---:|---:|---:|")
-    for name, part in [*parts.items(), ("all", score)]:
-        print(f"| {name} | " + " | ".join(part.summary()) + " |")
-    print()
-    print("\n".join(score.per_label_table()) + "\n")
-    print(score.report(), end="")
+
+    def run(urdf: Path, srdf: Path | None) -> Identification:
+        return identify(urdf, srdf=srdf, rules=rules, profile=profile)
+
+    sets: list[Measured] = []
+    for folder in folders:
+        measured = measure(folder.name, folder, args.files, profile.structure_names, run)
+        if measured is None:
+            print(f"no labelled set at {folder} (truth.csv missing); nothing measured there\n")
+        else:
+            sets.append(measured)
+    if not sets:
+        return 0
+    for measured in sets:
+        print(f"Set `{measured.name}`: {measured.rows} descriptions ({measured.truth})")
+    print("\nPer family:\n")
+    print("\n".join(side_by_side("family", sets, lambda m: m.families)))
+    print("\nPer source:\n")
+    print("\n".join(side_by_side("source", sets, lambda m: m.sources)))
+    for measured in sets:
+        print(f"\n## Set `{measured.name}`\n")
+        print("\n".join(measured.whole.per_label_table()) + "\n")
+        print(measured.whole.report(), end="")
     return 0
 
 

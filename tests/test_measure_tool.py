@@ -1,0 +1,140 @@
+"""tools/measure_identification.py measures any labelled set, per family and per source."""
+
+from __future__ import annotations
+
+import csv
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+from tests.identify.builders import gazebo_sensor, manipulator, model_plugin, ugv
+
+ROOT = Path(__file__).resolve().parent.parent
+SCRIPT = ROOT / "tools" / "measure_identification.py"
+COLUMNS = [
+    "robot",
+    "file",
+    "source",
+    "kinematic_type",
+    "evidence",
+    "sensors",
+    "motion_controls",
+    "motion_control_kinds",
+    "srdf",
+    "sensor_tags",
+    "sensor_detail",
+    "uncertainty_note",
+    "family",
+    "licence",
+]
+
+
+def write_truth(folder: Path, rows: list[dict[str, str]]) -> None:
+    with (folder / "truth.csv").open("w", encoding="utf-8", newline="") as stream:
+        writer = csv.DictWriter(stream, COLUMNS)
+        writer.writeheader()
+        for row in rows:
+            writer.writerow({column: row.get(column, "") for column in COLUMNS})
+
+
+def measure(*args: str) -> str:
+    environment = {**os.environ, "PYTHONPATH": str(ROOT)}
+    done = subprocess.run(
+        [sys.executable, str(SCRIPT), *args],
+        cwd=ROOT,
+        env=environment,
+        capture_output=True,
+        text=True,
+        check=True,
+    )
+    return done.stdout
+
+
+def row_of(output: str, first: str, second: str) -> list[str]:
+    for line in output.splitlines():
+        cells = [cell.strip() for cell in line.strip("|").split("|")]
+        if cells[:2] == [first, second]:
+            return cells[2:]
+    raise AssertionError(f"no row {first} | {second} in:\n{output}")
+
+
+def tiny_set(folder: Path) -> None:
+    rover = ugv()
+    rover.add(gazebo_sensor("base_link", "ray", "front_laser"))
+    rover.add(model_plugin("drive", "libgazebo_ros_skid_steer_drive.so"))
+    (folder / "urdf").mkdir(parents=True)
+    (folder / "urdf" / "rover.urdf").write_text(rover.text(), encoding="utf-8")
+    (folder / "urdf" / "arm.urdf").write_text(manipulator().text(), encoding="utf-8")
+    rows = [
+        {
+            "robot": "rover",
+            "file": "urdf/rover.urdf",
+            "source": "github someone/rovers@abc urdf/rover.urdf.xacro",
+            "kinematic_type": "UGV",
+            "sensors": "lidar:1;camera:1",
+            "motion_control_kinds": "Driving",
+            "family": "mobile base",
+        },
+        {
+            "robot": "arm_called_humanoid",
+            "file": "urdf/arm.urdf",
+            "source": "PyPI some-arms 1.0 arm.urdf",
+            "kinematic_type": "Humanoid",
+            "family": "arm",
+        },
+        {
+            "robot": "boat",
+            "file": "urdf/boat.urdf",
+            "source": "github someone/boats@def boat.urdf.xacro",
+            "kinematic_type": "Surface vessel",
+            "family": "surface vessel",
+        },
+    ]
+    write_truth(folder, rows)
+
+
+def test_a_set_is_reported_per_family_with_what_was_right(tmp_path: Path) -> None:
+    tiny_set(tmp_path / "tiny")
+    output = measure("--set", str(tmp_path / "tiny"))
+    rover = row_of(output, "mobile base", "tiny")
+    # robots, structure, lenient, exit 2, absent, sensor P, sensor R, control P, control R
+    assert rover[:5] == ["1", "1/1 (100%)", "1/1 (100%)", "0", "0"]
+    assert rover[6] == "1/2 (50%)"  # the labelled camera is not in the file
+    assert rover[8] == "1/1 (100%)"
+    assert row_of(output, "arm", "tiny")[:2] == ["1", "0/1 (0%)"]
+    assert "arm_called_humanoid: structure Manipulator, labelled Humanoid" in output
+
+
+def test_a_row_whose_file_is_missing_is_counted_absent_not_measured(tmp_path: Path) -> None:
+    tiny_set(tmp_path / "tiny")
+    output = measure("--set", str(tmp_path / "tiny"))
+    assert row_of(output, "surface vessel", "tiny")[:5] == ["0", "-", "-", "0", "1"]
+    assert row_of(output, "**all**", "tiny")[:5] == ["2", "1/2 (50%)", "1/2 (50%)", "0", "1"]
+
+
+def test_files_kept_elsewhere_are_found_with_files(tmp_path: Path) -> None:
+    tiny_set(tmp_path / "tiny")
+    elsewhere = tmp_path / "files" / "urdf"
+    elsewhere.mkdir(parents=True)
+    (elsewhere / "boat.urdf").write_text(
+        '<robot name="boat"><link name="hull"/></robot>', encoding="utf-8"
+    )
+    output = measure("--set", str(tmp_path / "tiny"), "--files", str(tmp_path / "files"))
+    assert row_of(output, "surface vessel", "tiny")[0] == "1"
+    assert row_of(output, "github someone/boats", "tiny")[4] == "0"
+
+
+def test_sets_are_reported_side_by_side(tmp_path: Path) -> None:
+    tiny_set(tmp_path / "one")
+    tiny_set(tmp_path / "two")
+    output = measure("--set", str(tmp_path / "one"), "--set", str(tmp_path / "two"))
+    lines = output.splitlines()
+    first = next(i for i, line in enumerate(lines) if line.startswith("| mobile base | one |"))
+    assert lines[first + 1].startswith("| mobile base | two |")
+    assert "| github someone/rovers | one |" in output
+
+
+def test_a_folder_without_labels_is_said_and_skipped(tmp_path: Path) -> None:
+    output = measure("--set", str(tmp_path))
+    assert "truth.csv missing" in output
