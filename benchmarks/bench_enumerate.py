@@ -18,9 +18,9 @@ from pytest_benchmark.fixture import BenchmarkFixture
 
 from benchmarks.conftest import Scale
 from solver import Team, load_team, solve
+from solver.core.model import build_problem
 from solver.engines.fast import BLOCK
 from solver.engines.fast import partition as partition_stream
-from solver.model import build_problem
 
 # 10 motion controls x (100 sensor types x 1..1000 sensors - 100 forbidden) = 999,000 robots.
 MILLION = Scale(

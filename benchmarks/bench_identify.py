@@ -27,8 +27,8 @@ import time
 import pytest
 from pytest_benchmark.fixture import BenchmarkFixture
 
+from solver.core.rules import default_rules_path, load_rules
 from solver.identify import Identification, identify_urdf, load_profile
-from solver.rules import default_rules_path, load_rules
 
 SIZES = (5_000, 20_000, 80_000)
 GRIPPER_TAIL = 3  # the chain's last joints are named as a gripper's fingers

@@ -14,8 +14,8 @@ from pytest_benchmark.fixture import BenchmarkFixture
 
 from benchmarks.conftest import Scale
 from solver import Team, solve
-from solver.listing import write_robots
-from solver.model import build_problem
+from solver.core.model import build_problem
+from solver.reporting.listing import write_robots
 
 # 2 types x 5 motion controls x (20 sensor types x 1..1000 sensors - 100 forbidden): 199,000
 # robots in 2 x 5 x 5 x 5 = 250 configurations, with a constraint.

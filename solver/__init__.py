@@ -7,41 +7,33 @@ or any of the user's own); relationship rules map every value to the UI componen
 it; a team selection says which values each kinematic type may take. The solver enumerates the
 valid robots and partitions them into the fewest UI configurations.
 
-Modules, one concept each:
+The package has wings; each is a package with its own map in its docstring:
 
 =====================  ==========================================================
-``errors``             the exception root and located faults
-``inputfile``          reading input files with a size limit, located failures
-``yamlio``             safe YAML loading with line/column for every value
-``reader``             typed, fault-collecting access to a loaded document
-``filekind``           which kind of file a document is: team, rule set or profile
-``rules``              rule sets: characteristics, components, :func:`load_rules`
-``constraints``        constraints between values, as data
-``team``               team selections, :func:`load_team`
-``forbidden``          selected values a team's constraints leave no robot for
-``model``              the python-constraint model; valid robots
-``partition``          robots -> UI configurations, numbering
-``engines``            counting and enumerating: ``structure``, ``fast``, ``csp``,
-                       the exact minimum ``cover``; the limits
-``solution``           :func:`solve` a team -> :class:`Solution`
-``listing``            every valid robot with its configuration number (CSV, JSONL)
-``symbolic``           counts as formulas of a type's maximum sensor count
-``assignment``         :func:`assign` one combination -> :class:`Assignment`
-``reproduce``          published figures beside computed ones
-``render``             text / JSON / CSV / Markdown rendering of solutions
-``markdown``           escaping names from user files in Markdown
-``plot``               radar chart (the article's Figure 9) and bar chart, PNG/SVG/PDF
-``report``             self-contained HTML and Markdown reports of a solved team
-``atomic``             writing output files atomically
-``batch``              many teams at once: parallel solving, summary, up-to-date skipping
+``errors``             the exception root and located faults (every wing uses it)
+``extras``             optional dependencies and the error when one is missing
+``files``              reading input safely (size limits, YAML with positions,
+                       typed access, file kinds) and writing output atomically
+``ros``                ROS vocabulary with no I/O: topics, message-type names
+``core``               rule sets, constraints, team selections, the constraint
+                       model, the partition into UI configurations, ``solve``,
+                       ``assign``, their JSON contracts, symbolic counts, the
+                       article's published figures
+``engines``            counting and enumerating: ``structure``, ``fast``, ``csp``;
+                       the limits
+``layouts``            UI configurations -> Foxglove/Lichtblick and RViz2 layouts
+``reporting``          text/JSON/CSV/Markdown views, the robot list, plots,
+                       HTML/Markdown reports, UVL export, batch runs
+``check``              linting rule sets and teams: coverage, void, dead, conflicts
 ``identify``           real robots from ROS metadata (URDF, xacro, SRDF, topics, bags)
 ``live``               live UI assignment on a ROS 2 graph or a ROS 1 master (``watch``)
-``layouts``            UI configurations -> Foxglove/Lichtblick and RViz2 layouts
-``uvl``                a team's design space as a UVL feature model
-``check``              linting rule sets and teams: coverage, void, dead, conflicts
-``extras``             optional dependencies and the error when one is missing
-``cli``                the ``teleop-ui`` command line
+``cli``                the ``teleop-ui`` command line, a thin layer over the above
 =====================  ==========================================================
+
+Layers, lowest first; a module imports only from its own layer or lower ones, and no module
+imports itself back through others (tests/test_architecture.py checks both):
+``errors``, ``extras`` -> ``files``, ``ros`` -> ``core``, ``engines`` -> ``layouts`` ->
+``reporting`` -> ``check``, ``identify`` -> ``live`` -> ``cli``.
 
 Every command from Python (docs/python-api.md has worked examples):
 
@@ -51,16 +43,16 @@ Every command from Python (docs/python-api.md has worked examples):
 ``solve --plot``, ``report``    ``write_plot(solution, path)``, ``write_report(...)``
 ``assign``                      ``assign(solution, kinematic_type="UAV", ...)``
 ``count FILE``                  ``solve(team, count_only=True)``; a rule set's whole
-                                design space: ``solver.team.full_team(load_rules(path))``
-``count --symbolic``            ``solver.symbolic.formulas(team)``
-``robots``                      ``solver.listing.numbered_robots(solution)``
+                                design space: ``solver.core.team.full_team(load_rules(path))``
+``count --symbolic``            ``solver.core.symbolic.formulas(team)``
+``robots``                      ``solver.reporting.listing.numbered_robots(solution)``
 ``reproduce``                   ``compare()``
 ``check FILES``                 ``check_files(paths)``
 ``identify``, ``fleet``         ``identify_urdf(text, ...)``, ``identify_fleet(...)``
 ``watch``, ``assign --master``  ``Watcher``, ``assign_from_master(...)``
 ``batch``                       ``find_teams``, ``plan``, ``run_batch``, ``write_summary``
 ``layouts``                     ``solver.layouts.writer.write_layouts(solution, profile, dir)``
-``export --format uvl``         ``solver.uvl.team_to_uvl(team)``
+``export --format uvl``         ``solver.reporting.uvl.team_to_uvl(team)``
 ==============================  ========================================================
 
 Example::
@@ -82,29 +74,29 @@ from typing import TYPE_CHECKING, Any
 __version__ = "0.1.0"
 
 if TYPE_CHECKING:
-    from solver.assignment import Assignment, assign, parse_combination
-    from solver.batch import Outcome, find_teams, plan, run_batch, write_summary
     from solver.check import Finding, check_files
-    from solver.constraints import Condition, RuleConstraint
+    from solver.core.assignment import Assignment, assign, parse_combination
+    from solver.core.constraints import Condition, RuleConstraint
+    from solver.core.model import Robot, build_problem, robots
+    from solver.core.partition import Configuration
+    from solver.core.reproduce import Comparison, compare
+    from solver.core.rules import Characteristic, Component, RuleSet, default_rules_path, load_rules
+    from solver.core.solution import Solution, TypeSummary, solve
+    from solver.core.team import Published, Team, TypeSelection, load_team
     from solver.errors import Fault, InputError, Location, RulesError, SolverError, TeamError
     from solver.identify import Identification, IdentificationCache, identify_fleet, identify_urdf
     from solver.live import MasterError, Watcher, assign_from_master
-    from solver.model import Robot, build_problem, robots
-    from solver.partition import Configuration
-    from solver.plot import bars_figure, radar_figure, write_plot
-    from solver.report import render_html, render_markdown, write_report
-    from solver.reproduce import Comparison, compare
-    from solver.rules import Characteristic, Component, RuleSet, default_rules_path, load_rules
-    from solver.solution import Solution, TypeSummary, solve
-    from solver.team import Published, Team, TypeSelection, load_team
+    from solver.reporting.batch import Outcome, find_teams, plan, run_batch, write_summary
+    from solver.reporting.plot import bars_figure, radar_figure, write_plot
+    from solver.reporting.report import render_html, render_markdown, write_report
 
 _EXPORTS = {
-    "Assignment": "solver.assignment",
-    "Characteristic": "solver.rules",
-    "Comparison": "solver.reproduce",
-    "Component": "solver.rules",
-    "Condition": "solver.constraints",
-    "Configuration": "solver.partition",
+    "Assignment": "solver.core.assignment",
+    "Characteristic": "solver.core.rules",
+    "Comparison": "solver.core.reproduce",
+    "Component": "solver.core.rules",
+    "Condition": "solver.core.constraints",
+    "Configuration": "solver.core.partition",
     "Fault": "solver.errors",
     "Finding": "solver.check",
     "Identification": "solver.identify",
@@ -112,42 +104,42 @@ _EXPORTS = {
     "InputError": "solver.errors",
     "Location": "solver.errors",
     "MasterError": "solver.live",
-    "Outcome": "solver.batch",
-    "Published": "solver.team",
-    "Robot": "solver.model",
-    "RuleConstraint": "solver.constraints",
-    "RuleSet": "solver.rules",
+    "Outcome": "solver.reporting.batch",
+    "Published": "solver.core.team",
+    "Robot": "solver.core.model",
+    "RuleConstraint": "solver.core.constraints",
+    "RuleSet": "solver.core.rules",
     "RulesError": "solver.errors",
-    "Solution": "solver.solution",
+    "Solution": "solver.core.solution",
     "SolverError": "solver.errors",
-    "Team": "solver.team",
+    "Team": "solver.core.team",
     "TeamError": "solver.errors",
-    "TypeSelection": "solver.team",
-    "TypeSummary": "solver.solution",
+    "TypeSelection": "solver.core.team",
+    "TypeSummary": "solver.core.solution",
     "Watcher": "solver.live",
-    "assign": "solver.assignment",
+    "assign": "solver.core.assignment",
     "assign_from_master": "solver.live",
-    "bars_figure": "solver.plot",
-    "build_problem": "solver.model",
+    "bars_figure": "solver.reporting.plot",
+    "build_problem": "solver.core.model",
     "check_files": "solver.check",
-    "compare": "solver.reproduce",
-    "default_rules_path": "solver.rules",
-    "find_teams": "solver.batch",
+    "compare": "solver.core.reproduce",
+    "default_rules_path": "solver.core.rules",
+    "find_teams": "solver.reporting.batch",
     "identify_fleet": "solver.identify",
     "identify_urdf": "solver.identify",
-    "load_rules": "solver.rules",
-    "load_team": "solver.team",
-    "parse_combination": "solver.assignment",
-    "plan": "solver.batch",
-    "radar_figure": "solver.plot",
-    "render_html": "solver.report",
-    "render_markdown": "solver.report",
-    "robots": "solver.model",
-    "run_batch": "solver.batch",
-    "solve": "solver.solution",
-    "write_plot": "solver.plot",
-    "write_report": "solver.report",
-    "write_summary": "solver.batch",
+    "load_rules": "solver.core.rules",
+    "load_team": "solver.core.team",
+    "parse_combination": "solver.core.assignment",
+    "plan": "solver.reporting.batch",
+    "radar_figure": "solver.reporting.plot",
+    "render_html": "solver.reporting.report",
+    "render_markdown": "solver.reporting.report",
+    "robots": "solver.core.model",
+    "run_batch": "solver.reporting.batch",
+    "solve": "solver.core.solution",
+    "write_plot": "solver.reporting.plot",
+    "write_report": "solver.reporting.report",
+    "write_summary": "solver.reporting.batch",
 }
 
 __all__ = [

@@ -90,7 +90,7 @@ def test_the_readme_shows_the_message_a_missing_extra_gives(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
     monkeypatch.setitem(sys.modules, "matplotlib", None)
-    from solver.plot import _FEATURE
+    from solver.reporting.plot import _FEATURE
 
     with pytest.raises(MissingExtraError) as caught:
         require("matplotlib", feature=_FEATURE)

@@ -26,7 +26,7 @@ from solver.cli import main
 from solver.cli._terminal import escape_controls
 from solver.errors import SolverError
 from solver.identify import identify_urdf
-from solver.render import csv_cell
+from solver.reporting.render import csv_cell
 from tests.conftest import ROOT, RULES, TEAMS, run_cli
 
 TEAM = "name: {name}\nrules: {rules}\nteam:\n  UAV: {{motion_control: [Waypoint]}}\n"
@@ -117,7 +117,7 @@ def test_a_device_given_as_a_bag_is_refused_without_reading_it() -> None:
 
 
 def test_a_non_ascii_digit_is_no_sensor_count() -> None:
-    from solver.rules import load_rules
+    from solver.core.rules import load_rules
 
     sensor_count = load_rules(RULES / "paper.yaml").characteristic("sensor_count")
     assert sensor_count.parse_value("3") == 3

@@ -20,12 +20,12 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from solver import RuleSet, Team, robots, solve
+from solver.core.rules import parse_rules
+from solver.core.team import parse_team
 from solver.engines.fast import robots as robots_stream
-from solver.listing import numbered_robots, write_robots
-from solver.render import csv_row
-from solver.rules import parse_rules
-from solver.team import parse_team
-from solver.yamlio import parse_document
+from solver.files.yamlio import parse_document
+from solver.reporting.listing import numbered_robots, write_robots
+from solver.reporting.render import csv_row
 
 
 @st.composite

@@ -8,8 +8,8 @@ from pathlib import Path
 
 import pytest
 
-from solver.render import render_comparisons
-from solver.reproduce import compare
+from solver.core.reproduce import compare
+from solver.reporting.render import render_comparisons
 from tests.conftest import ROOT, run_cli
 
 README = (ROOT / "README.md").read_text(encoding="utf-8")

@@ -40,9 +40,9 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from solver.core.rules import default_rules_path, load_rules
 from solver.errors import SolverError
 from solver.identify import Identification, identify, load_profile
-from solver.rules import default_rules_path, load_rules
 
 ROOT = Path(__file__).resolve().parent.parent
 OWN_SET = ROOT / "tools" / "identification_set"

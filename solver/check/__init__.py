@@ -10,8 +10,6 @@ located findings. They cover what a rule author gets wrong and what feature-mode
 ``load``                   loader faults as findings: unknown references, duplicates, schema
 ``coverage``               gaps, overlaps, inverted/empty/unbounded component ranges
 ``equivalence``            "can share a component" that is not transitive (witness triples)
-``regions``                the robots a constraint excludes, as boxes of value sets
-``analysis``               small questions to python-constraint: live values, minimal subsets
 ``void``                   void rule sets and kinematic types, minimal conflicts
 ``dead``                   dead values and components (and per kinematic type)
 ``core``                   values and components forced for every robot of a type
@@ -23,6 +21,9 @@ located findings. They cover what a rule author gets wrong and what feature-mode
 ``runner``                 files -> :class:`Report`
 ``render``                 text, parsable, JSON, SARIF 2.1.0
 =========================  =================================================================
+
+The constraint analysis the checks ask (live values, minimal conflicts, excluded regions) is
+:mod:`solver.core.analysis` and :mod:`solver.core.regions`: solving uses it too.
 
 Not here: the command line (:mod:`solver.cli.check`).
 """

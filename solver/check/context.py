@@ -1,7 +1,7 @@
 """What the checks read: a rule set or a team with its analysis, and how they name things.
 
 A check receives a :class:`RulesContext` (one rule set and its shared
-:class:`~solver.check.analysis.Analysis`) or a :class:`TeamContext` (a team, the YAML document
+:class:`~solver.core.analysis.Analysis`) or a :class:`TeamContext` (a team, the YAML document
 it came from, and the analysis of the rule set it is read against). The helpers here locate
 things in the files (a value in a ``values`` list, a constraint, a component's bound) and
 write values and constraints the way a rule author recognises them, so that every check's
@@ -17,13 +17,13 @@ from dataclasses import dataclass
 from functools import cached_property
 from typing import Any
 
-from solver.check.analysis import Analysis
 from solver.check.finding import Related
-from solver.constraints import Value
+from solver.core.analysis import Analysis
+from solver.core.constraints import Value
+from solver.core.rules import Characteristic, Component, RuleSet
+from solver.core.team import Team
 from solver.errors import Location
-from solver.rules import Characteristic, Component, RuleSet
-from solver.team import Team
-from solver.yamlio import Document, PathPart
+from solver.files.yamlio import Document, PathPart
 
 __all__ = [
     "RulesContext",

@@ -23,8 +23,8 @@ from collections.abc import Iterator
 
 from solver.check.context import RulesContext, integer_runs, item_path
 from solver.check.finding import Check, Finding
-from solver.constraints import Value
-from solver.rules import Characteristic, Component
+from solver.core.constraints import Value
+from solver.core.rules import Characteristic, Component
 
 __all__ = ["CHECKS", "declared_range"]
 

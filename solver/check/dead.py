@@ -6,7 +6,7 @@ warning because they are usually an over-eager constraint. Per kinematic type, c
 often remove values on purpose ("Flight only for UAVs"); those are reported at info level
 (``dead-for-type``), once per type and characteristic, with the constraints responsible, so
 that a rule author sees what each type can still have. Every reason is a deletion-minimal set
-of constraints (:meth:`solver.check.analysis.Analysis.minimal_conflict`).
+of constraints (:meth:`solver.core.analysis.Analysis.minimal_conflict`).
 
 Not here: kinematic types that lose every robot (:mod:`solver.check.void`); what a team
 selects (:mod:`solver.check.teams`). Nothing is reported for a void rule set.
@@ -18,9 +18,9 @@ from collections.abc import Iterator, Sequence
 
 from solver.check.context import RulesContext, integer_runs, values_text
 from solver.check.finding import Check, Finding
-from solver.check.regions import Domains
-from solver.constraints import Value
-from solver.rules import Characteristic
+from solver.core.constraints import Value
+from solver.core.regions import Domains
+from solver.core.rules import Characteristic
 
 __all__ = ["CHECKS"]
 

@@ -20,8 +20,8 @@ from dataclasses import dataclass
 
 from solver.check.context import RulesContext
 from solver.check.finding import Check, Finding
-from solver.constraints import Value
-from solver.rules import Characteristic, Component
+from solver.core.constraints import Value
+from solver.core.rules import Characteristic, Component
 
 __all__ = ["CHECKS", "witness_triple"]
 

@@ -3,7 +3,7 @@
 Redundancy is entailment, strictly: a constraint is *redundant* when the other constraints
 already exclude every robot it excludes, so removing it changes no valid robot. It is decided
 with python-constraint, not by comparing rule texts: for each box of robots the constraint
-excludes (:mod:`solver.check.regions`), the model over that box with all the *other*
+excludes (:mod:`solver.core.regions`), the model over that box with all the *other*
 constraints must have no solution. The message names a deletion-minimal set of constraints
 that entails it. A constraint is *tautological* when it excludes no robot at all, whatever the
 other constraints say (``when: {sensor_type: LIDAR}`` ``require: {sensor_type: [LIDAR,

@@ -1,6 +1,7 @@
 """Checking files: read each one, run the checks that apply, collect sorted findings.
 
-Files are told apart by content, as every command tells them (:func:`solver.filekind.file_kind`):
+Files are told apart by content, as every command tells them
+(:func:`solver.files.filekind.file_kind`):
 team files, rule sets, and identification profiles (not checked, said with ``not-checked``);
 a file of no recognisable kind is read as a rule set. Team files are checked against
 
@@ -26,16 +27,16 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from solver.check.analysis import Analysis
 from solver.check.context import RulesContext, TeamContext
 from solver.check.finding import LEVELS, Finding, Level
 from solver.check.load import LoadContext
 from solver.check.registry import LOAD_CHECKS, RULE_CHECKS, TEAM_CHECKS, check_ids
+from solver.core.analysis import Analysis
+from solver.core.rules import RuleSet, default_rules_path, parse_rules
+from solver.core.team import parse_team
 from solver.errors import Fault, InputError, Location, RulesError, TeamError
-from solver.filekind import describe, file_kind
-from solver.rules import RuleSet, default_rules_path, parse_rules
-from solver.team import parse_team
-from solver.yamlio import Document, load_document
+from solver.files.filekind import describe, file_kind
+from solver.files.yamlio import Document, load_document
 
 __all__ = ["Report", "check_files", "is_team_document"]
 
@@ -65,7 +66,7 @@ class Report:
 
 
 def is_team_document(document: Document) -> bool:
-    """Whether a loaded file is a team selection (:func:`solver.filekind.file_kind`)."""
+    """Whether a loaded file is a team selection (:func:`solver.files.filekind.file_kind`)."""
     return file_kind(document) == "team"
 
 

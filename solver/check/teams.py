@@ -24,10 +24,10 @@ from solver.check.context import (
     values_text,
 )
 from solver.check.finding import Check, Finding, Related
-from solver.constraints import Value
+from solver.core.constraints import Value
+from solver.core.rules import Characteristic
+from solver.core.team import TypeSelection
 from solver.errors import Location
-from solver.rules import Characteristic
-from solver.team import TypeSelection
 
 __all__ = ["CHECKS"]
 

@@ -6,7 +6,7 @@ the author needs to know which constraints are to blame: a *minimal conflicting 
 found by deletion (drop one constraint, re-solve, keep it dropped while still void), so that
 every constraint named is necessary and each is cited by file and line.
 
-The questions go to python-constraint per kinematic type (:mod:`solver.check.analysis`).
+The questions go to python-constraint per kinematic type (:mod:`solver.core.analysis`).
 
 Not here: values that only some robots lose (:mod:`solver.check.dead`); teams
 (:mod:`solver.check.teams`).
@@ -18,7 +18,7 @@ from collections.abc import Iterator
 
 from solver.check.context import RulesContext, blame
 from solver.check.finding import Check, Finding
-from solver.constraints import Value
+from solver.core.constraints import Value
 
 __all__ = ["CHECKS"]
 

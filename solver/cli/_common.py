@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:
     from pathlib import Path
 
-    from solver.team import Team
+    from solver.core.team import Team
 
 __all__ = [
     "add_engine",
@@ -142,9 +142,9 @@ def add_team(parser: argparse.ArgumentParser) -> None:
 def team_path(text: str) -> Path:
     """The file of a team argument: as given, or a shipped team's (``case3``); a bare word that
     is neither raises an :class:`InputError` listing the shipped teams."""
+    from solver.core.rules import shipped_path
+    from solver.core.team import resolve_team_path
     from solver.errors import InputError
-    from solver.rules import shipped_path
-    from solver.team import resolve_team_path
 
     path = resolve_team_path(text)
     if not path.exists() and not path.suffix and path.name == text:
@@ -159,8 +159,8 @@ def team_path(text: str) -> Path:
 
 def load_team_argument(text: str, rules: str | None) -> Team:
     """A team given on the command line: a file, or the name of a shipped team (``case3``)."""
-    from solver.rules import shipped_name
-    from solver.team import load_team
+    from solver.core.rules import shipped_name
+    from solver.core.team import load_team
 
     path = team_path(text)
     shown = text if str(path) == text else (shipped_name(path) or str(path))

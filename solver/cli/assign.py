@@ -64,10 +64,10 @@ def register(subparsers: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from solver.assignment import assign, parse_combination
+    from solver.core.assignment import assign, parse_combination
+    from solver.core.solution import solve
     from solver.errors import InputError
-    from solver.render import render_assignment
-    from solver.solution import solve
+    from solver.reporting.render import render_assignment
 
     combination = parse_combination(args.combination)
     if args.ros2:
@@ -85,11 +85,11 @@ def run(args: argparse.Namespace) -> int:
 
 
 def run_live(args: argparse.Namespace, combination: dict[str, str]) -> int:
+    from solver.core.solution import solve
     from solver.identify.profile import load_profile
     from solver.live.master import master_uri
     from solver.live.query import assign_from_master
     from solver.live.render import render_live_assignment
-    from solver.solution import solve
 
     master = master_uri(args.master)
     solution = solve(load_team_argument(args.team, args.rules))
@@ -107,12 +107,12 @@ def run_live(args: argparse.Namespace, combination: dict[str, str]) -> int:
 
 def run_ros2(args: argparse.Namespace, combination: dict[str, str]) -> int:
     from solver.cli.watch import ros2_domain
+    from solver.core.solution import solve
     from solver.errors import InputError
     from solver.identify.profile import load_profile
     from solver.live.query import assign_from_graph
     from solver.live.render import render_live_assignment
     from solver.live.sources.ros2 import DdsGraph
-    from solver.solution import solve
 
     domain = ros2_domain(args)
     if args.robot is None:

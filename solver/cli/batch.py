@@ -19,7 +19,7 @@ from typing import IO, TYPE_CHECKING, Any
 from solver.cli._common import positive, write
 
 if TYPE_CHECKING:
-    from solver.batch import Outcome
+    from solver.reporting.batch import Outcome
 
 
 def _default_jobs() -> int:
@@ -84,15 +84,15 @@ def register(subparsers: Any) -> None:
 def run(args: argparse.Namespace) -> int:
     from pathlib import Path
 
-    from solver.batch import find_teams, plan, run_batch, write_summary
     from solver.errors import InputError
-    from solver.render import text_table
+    from solver.reporting.batch import find_teams, plan, run_batch, write_summary
+    from solver.reporting.render import text_table
 
     out = Path(args.output)
     if out.exists() and not out.is_dir():
         raise InputError.at(args.output, "is not a folder")
     if args.rules is not None:
-        from solver.rules import load_rules
+        from solver.core.rules import load_rules
 
         load_rules(args.rules)  # a bad override would fail every team: say so once
     jobs = plan(

@@ -15,7 +15,7 @@ from solver.cli._common import (
 )
 
 if TYPE_CHECKING:
-    from solver.team import Team
+    from solver.core.team import Team
 
 
 def register(subparsers: Any) -> None:
@@ -42,11 +42,11 @@ def register(subparsers: Any) -> None:
 
 def load(text: str, rules: str | None) -> Team:
     """A team file, or a rule set file standing for its whole design space."""
+    from solver.core.rules import parse_rules
+    from solver.core.team import full_team
     from solver.errors import InputError
-    from solver.filekind import file_kind
-    from solver.rules import parse_rules
-    from solver.team import full_team
-    from solver.yamlio import load_document
+    from solver.files.filekind import file_kind
+    from solver.files.yamlio import load_document
 
     path = team_path(text)
     document = load_document(path, display=text)
@@ -59,8 +59,8 @@ def load(text: str, rules: str | None) -> Team:
 
 def run(args: argparse.Namespace) -> int:
     from solver.cli._progress import working
-    from solver.render import render_counts
-    from solver.solution import solve
+    from solver.core.solution import solve
+    from solver.reporting.render import render_counts
 
     team = load(args.file, args.rules)
     with working(f"counting {team.name}", fmt=args.format):
@@ -68,7 +68,8 @@ def run(args: argparse.Namespace) -> int:
     if not args.symbolic:
         write(render_counts(solution, args.format))
         return 0
-    from solver.symbolic import agrees_with, formulas, render_growth
+    from solver.core.symbolic import agrees_with, formulas
+    from solver.reporting.growth import render_growth
 
     growth = formulas(team)
     write(render_growth(growth, solution, args.format))

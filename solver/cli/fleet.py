@@ -41,11 +41,11 @@ def register(subparsers: Any) -> None:
 def run(args: argparse.Namespace) -> int:
     from pathlib import Path
 
-    from solver.atomic import write_atomic
+    from solver.core.rules import default_rules_path
+    from solver.files.atomic import write_atomic
     from solver.identify.fleet import identify_fleet, rules_reference, team_text
     from solver.identify.render import identification_data
-    from solver.render import dumps, text_table
-    from solver.rules import default_rules_path
+    from solver.reporting.render import dumps, text_table
 
     rules, profile = load_rules_and_profile(args.rules, args.profile)
     with _progress() as progress:

@@ -10,8 +10,8 @@ from solver.cli._common import add_format, add_profile, add_rules, load_team_arg
 if TYPE_CHECKING:
     from pathlib import Path
 
+    from solver.core.rules import RuleSet
     from solver.identify.profile import Profile
-    from solver.rules import RuleSet
 
 
 def add_description_options(parser: argparse.ArgumentParser) -> None:
@@ -117,18 +117,18 @@ def package_path(folders: list[str]) -> tuple[Path, ...]:
 
 
 def load_rules_and_profile(rules: str | None, profile: str | None) -> tuple[RuleSet, Profile]:
+    from solver.core.rules import default_rules_path, load_rules
     from solver.identify.profile import load_profile
-    from solver.rules import default_rules_path, load_rules
 
     return load_rules(rules or default_rules_path()), load_profile(profile)
 
 
 def run(args: argparse.Namespace) -> int:
+    from solver.core.solution import solve
     from solver.identify.combinations import combinations
     from solver.identify.identification import identify
     from solver.identify.render import identification_data, render_identification
-    from solver.render import dumps
-    from solver.solution import solve
+    from solver.reporting.render import dumps
 
     team = load_team_argument(args.team, args.rules) if args.team else None
     rules, profile = load_rules_and_profile(None if team else args.rules, args.profile)

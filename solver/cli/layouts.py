@@ -68,8 +68,8 @@ def register(subparsers: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from solver.core.solution import solve
     from solver.layouts import load_profile, write_layouts
-    from solver.solution import solve
 
     if args.preview and args.format != "foxglove":
         from solver.errors import InputError
@@ -95,7 +95,7 @@ def run(args: argparse.Namespace) -> int:
         import json
         from pathlib import Path
 
-        from solver.atomic import write_atomic
+        from solver.files.atomic import write_atomic
         from solver.layouts.preview import preview_html
 
         page = Path(args.output) / "preview.html"
@@ -110,14 +110,14 @@ def _robot(args: argparse.Namespace) -> int:
     import json
     from pathlib import Path
 
-    from solver.assignment import assign
-    from solver.atomic import write_atomic
+    from solver.core.assignment import assign
+    from solver.core.solution import solve
     from solver.errors import InputError
+    from solver.files.atomic import write_atomic
     from solver.identify import identify_urdf
     from solver.identify.safexml import read_bytes
     from solver.layouts import foxglove_layout, load_profile, validate_foxglove
     from solver.layouts.rviz import rviz_layout, rviz_text, validate_rviz
-    from solver.solution import solve
 
     if not args.robot_team:
         raise InputError.at("--robot", "--robot needs --team TEAM.yaml")

@@ -37,8 +37,8 @@ def register(subparsers: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from solver.report import report_format, write_report
-    from solver.solution import solve
+    from solver.core.solution import solve
+    from solver.reporting.report import report_format, write_report
 
     report_format(args.output)  # an unusable file name fails before any solving
     solution = solve(load_team_argument(args.team, args.rules))

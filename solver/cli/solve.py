@@ -51,11 +51,11 @@ def register(subparsers: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from solver.render import render_solution
-    from solver.solution import solve
+    from solver.core.solution import solve
+    from solver.reporting.render import render_solution
 
     if args.plot:
-        from solver.plot import plot_format
+        from solver.reporting.plot import plot_format
 
         plot_format(args.plot)  # an unusable file name fails before any solving
     from solver.cli._progress import working
@@ -68,7 +68,7 @@ def run(args: argparse.Namespace) -> int:
         # The warnings (constraints' exclusions) are computed once, here, under the spinner.
         _ = solution.removed
     if args.plot:
-        from solver.plot import write_plot
+        from solver.reporting.plot import write_plot
 
         write_plot(solution, args.plot, args.plot_kind)
     write(render_solution(solution, args.format, configurations=args.list and solution.listed))

@@ -20,10 +20,10 @@ from solver.cli._common import (
 )
 
 if TYPE_CHECKING:
+    from solver.core.solution import Solution
     from solver.identify.profile import Profile
     from solver.live.events import Event
     from solver.live.watcher import Watcher
-    from solver.solution import Solution
 
 
 def register(subparsers: Any) -> None:
@@ -75,7 +75,7 @@ def register(subparsers: Any) -> None:
         help="wait for the master to come up instead of failing (exit 2)",
     )
     add_format(parser, ("json", "text"), default="json")
-    # --layouts (issue 17, solver.layouts.live): selection events name the layout file.
+    # --layouts (issue 17, solver.live.layouts): selection events name the layout file.
     parser.add_argument(
         "--layouts",
         metavar="DIR",
@@ -86,10 +86,10 @@ def register(subparsers: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from solver.core.solution import solve
     from solver.identify.profile import load_profile
     from solver.live.master import master_uri
     from solver.live.watcher import Watcher
-    from solver.solution import solve
 
     team = load_team_argument(args.team, args.rules)
     profile = load_profile(args.profile)
@@ -193,6 +193,6 @@ def _render(event: Event, solution: Solution, args: argparse.Namespace) -> str:
     text = render_event(event, solution, args.format)
     if args.layouts is None:
         return text
-    from solver.layouts.live import with_layout
+    from solver.live.layouts import with_layout
 
     return with_layout(text, event, args.layouts, args.format)

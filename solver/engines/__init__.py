@@ -11,8 +11,6 @@ configurations with which robots (:func:`Engine.partition`), and every valid rob
 ``fast``       enumerates with numpy, a block of robots per vector step
                (:mod:`solver.engines.fast`)
 ``csp``        enumerates with python-constraint, the reference (:mod:`solver.engines.csp`)
-``cover``      not an engine: the exact minimum cover the others use when components overlap
-               (:mod:`solver.engines.cover`)
 =============  ==============================================================================
 
 ``auto`` is not an engine but a policy (:func:`choose`): the structure where it applies, fast
@@ -28,7 +26,8 @@ Engine modules are imported on first use only: numpy and python-constraint stay 
 >>> lookup("fast").__name__
 'solver.engines.fast'
 
-Not here: numbering configurations across a team (:mod:`solver.solution`).
+Not here: numbering configurations across a team (:mod:`solver.core.solution`); the exact
+minimum cover every engine uses when components overlap (:mod:`solver.core.cover`).
 """
 
 from __future__ import annotations
@@ -41,11 +40,11 @@ from typing import TYPE_CHECKING, Protocol, cast
 from solver.errors import InputError, StructureTooComplex, TooLargeError
 
 if TYPE_CHECKING:
-    from solver.constraints import Value
+    from solver.core.constraints import Value
+    from solver.core.partition import Partition
+    from solver.core.rules import RuleSet
+    from solver.core.team import Team, TypeSelection
     from solver.engines.structure import Memo
-    from solver.partition import Partition
-    from solver.rules import RuleSet
-    from solver.team import Team, TypeSelection
 
 __all__ = [
     "DESCRIPTIONS",

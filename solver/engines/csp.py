@@ -1,23 +1,24 @@
 """The reference engine: every valid robot from python-constraint's solution iterator.
 
-Slow but obviously right: each robot comes from :func:`solver.model.robots`, the same constraint
+Slow but obviously right: each robot comes from :func:`solver.core.model.robots`, the same
+constraint
 model ``check`` and ``assign`` use, and is partitioned one by one
-(:func:`solver.partition.partition`). The property tests hold the other engines to its answers.
+(:func:`solver.core.partition.partition`). The property tests hold the other engines to its answers.
 
-Not here: the constraint model itself (:mod:`solver.model`).
+Not here: the constraint model itself (:mod:`solver.core.model`).
 """
 
 from __future__ import annotations
 
 from collections.abc import Iterator
 
-from solver import model
-from solver import partition as partitioning
-from solver.constraints import Value
+from solver.core import model
+from solver.core import partition as partitioning
+from solver.core.constraints import Value
+from solver.core.partition import Partition
+from solver.core.rules import RuleSet
+from solver.core.team import TypeSelection
 from solver.engines import Counts
-from solver.partition import Partition
-from solver.rules import RuleSet
-from solver.team import TypeSelection
 
 __all__ = ["count", "partition", "robots"]
 

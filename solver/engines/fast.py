@@ -24,17 +24,17 @@ from typing import TYPE_CHECKING, TypeAlias
 
 import numpy as np
 
-from solver import partition as partitioning
-from solver.constraints import Value
+from solver.core import partition as partitioning
+from solver.core.constraints import Value
+from solver.core.partition import Partition, PartitionClass
+from solver.core.rules import Characteristic, RuleSet
+from solver.core.team import TypeSelection
 from solver.engines import Counts
-from solver.partition import Partition, PartitionClass
-from solver.rules import Characteristic, RuleSet
-from solver.team import TypeSelection
 
 if TYPE_CHECKING:
     from numpy.typing import NDArray
 
-    from solver.constraints import Condition, RuleConstraint
+    from solver.core.constraints import Condition, RuleConstraint
 
 # Over the block: True where a robot passes (a mask), and whole-number codes or positions.
 Mask: TypeAlias = "NDArray[np.bool_]"

@@ -22,11 +22,11 @@ counted once (:class:`Memo`).
 Where the structure does not allow this (a block whose class combinations exceed
 :data:`BLOCK_LIMIT`), :class:`~solver.errors.StructureTooComplex` says so and the ``auto``
 policy falls back to enumeration. Overlapping components (a value in two components) are
-handled by partitioning the weighted classes (:func:`solver.partition.partition_classes`, with
-the exact minimum cover of :mod:`solver.engines.cover`).
+handled by partitioning the weighted classes (:func:`solver.core.partition.partition_classes`, with
+the exact minimum cover of :mod:`solver.core.cover`).
 
 Not here: enumerating robots (:mod:`solver.engines.fast`, :mod:`solver.engines.csp`), symbolic
-formulas (:mod:`solver.symbolic`).
+formulas (:mod:`solver.core.symbolic`).
 """
 
 from __future__ import annotations
@@ -38,12 +38,12 @@ from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from functools import cached_property
 
-from solver.constraints import Value
+from solver.core.constraints import Value
+from solver.core.partition import Key, Partition, PartitionClass, RobotClass, partition_classes
+from solver.core.rules import RuleSet
+from solver.core.team import TypeSelection
 from solver.engines import Counts
 from solver.errors import StructureTooComplex
-from solver.partition import Key, Partition, PartitionClass, RobotClass, partition_classes
-from solver.rules import RuleSet
-from solver.team import TypeSelection
 
 __all__ = ["BLOCK_LIMIT", "Memo", "count", "partition", "robots"]
 

@@ -48,7 +48,8 @@ from solver.identify.interfaces import Control, controls_from_topics, sensors_fr
 from solver.identify.profile import Profile, ProfileError, default_profile_path, load_profile
 from solver.identify.render import identification_data, render_identification
 from solver.identify.sensors import Detection, Sensor
-from solver.identify.topics import Topic, parse_topic_list, read_topic_list
+from solver.identify.topics import parse_topic_list, read_topic_list
+from solver.ros.names import Topic
 
 __all__ = [
     "Combination",

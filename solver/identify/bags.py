@@ -15,8 +15,8 @@ from pathlib import Path
 
 from solver.errors import InputError
 from solver.extras import require
-from solver.identify.topics import Topic, normalise_type
-from solver.inputfile import shown_name
+from solver.files.inputfile import shown_name
+from solver.ros.names import Topic, normalise_type
 
 __all__ = ["read_bag_topics"]
 

@@ -15,12 +15,12 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
+from solver.core.rules import RuleSet
 from solver.identify.body import Body
 from solver.identify.plans import arm_plans
 from solver.identify.profile import BOOLEAN_FEATURES, Profile
 from solver.identify.srdf import Srdf
 from solver.identify.urdf import Urdf
-from solver.rules import RuleSet
 
 __all__ = ["Reading", "classify", "kinematic_type_for"]
 

@@ -16,10 +16,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from solver.assignment import Assignment, assign
+from solver.core.assignment import Assignment, assign
+from solver.core.solution import Solution
 from solver.identify.identification import Identification
 from solver.identify.profile import Profile
-from solver.solution import Solution
 
 __all__ = ["Combination", "combinations"]
 

@@ -12,7 +12,7 @@ order, values the rule set lacks left out) and the largest number of sensors wit
 presentation. A characteristic with nothing identified is left out (a team file reads that as
 every value), and a type with nothing to narrow at all is written ``{}``. Robots with no
 kinematic type in the rule set are listed in a comment. The text is checked by
-:func:`solver.team.parse_team` before it is returned.
+:func:`solver.core.team.parse_team` before it is returned.
 
 Not here: printing progress (the caller passes a callback) or writing files.
 """
@@ -26,12 +26,12 @@ from pathlib import Path
 
 import yaml
 
+from solver.core.rules import RuleSet
+from solver.core.team import parse_team
 from solver.errors import InputError, SolverError
+from solver.files.yamlio import parse_document
 from solver.identify.identification import Identification, identify
 from solver.identify.profile import Profile
-from solver.rules import RuleSet
-from solver.team import parse_team
-from solver.yamlio import parse_document
 
 __all__ = [
     "Fleet",

@@ -30,6 +30,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from solver.core.rules import RuleSet, default_rules_path, load_rules
 from solver.errors import Fault, InputError
 from solver.identify.bags import read_bag_topics
 from solver.identify.body import Body, detect_body
@@ -45,10 +46,10 @@ from solver.identify.profile import Profile, load_profile
 from solver.identify.safexml import read_bytes
 from solver.identify.sensors import Detection, Sensor, merge, presented_count, sensors_from_urdf
 from solver.identify.srdf import parse_srdf
-from solver.identify.topics import Topic, read_topic_list
+from solver.identify.topics import read_topic_list
 from solver.identify.urdf import parse_urdf
 from solver.identify.xacros import compile_xacro, is_xacro
-from solver.rules import RuleSet, default_rules_path, load_rules
+from solver.ros.names import Topic
 
 __all__ = [
     "Identification",

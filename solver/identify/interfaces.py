@@ -31,7 +31,7 @@ from dataclasses import dataclass
 
 from solver.identify.profile import VELOCITY, Profile
 from solver.identify.sensors import Detection
-from solver.identify.topics import Topic
+from solver.ros.names import Topic
 
 __all__ = ["Control", "controls_from_topics", "device_of", "merge_controls", "sensors_from_topics"]
 

@@ -22,11 +22,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from solver.core.rules import shipped_path
 from solver.errors import Location, SolverError, did_you_mean
-from solver.filekind import PROFILE_SECTIONS
-from solver.reader import Reader, type_name
-from solver.rules import shipped_path
-from solver.yamlio import Document, PathPart, load_document
+from solver.files.filekind import PROFILE_SECTIONS
+from solver.files.reader import Reader, type_name
+from solver.files.yamlio import Document, PathPart, load_document
 
 __all__ = [
     "CONTROL_SOURCES",

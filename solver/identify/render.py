@@ -18,11 +18,12 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
+from solver.core.contracts import assignment_data
+from solver.core.solution import Solution
 from solver.errors import Fault
 from solver.identify.combinations import Combination
 from solver.identify.identification import Identification
-from solver.render import assignment_data, text_table
-from solver.solution import Solution
+from solver.reporting.render import text_table
 
 __all__ = ["identification_data", "render_identification"]
 

@@ -22,7 +22,7 @@ from typing import TYPE_CHECKING
 
 from solver.errors import Fault, InputError, Location
 from solver.extras import require
-from solver.inputfile import read_bounded
+from solver.files.inputfile import read_bounded
 
 if TYPE_CHECKING:
     from lxml import etree

@@ -21,9 +21,9 @@ from __future__ import annotations
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
+from solver.core.rules import RuleSet
 from solver.identify.profile import Profile
 from solver.identify.urdf import PluginTag, SensorTag, Urdf
-from solver.rules import RuleSet
 
 __all__ = ["Detection", "Sensor", "merge", "presented_count", "sensors_from_urdf"]
 

@@ -13,8 +13,8 @@ Blank lines and ``#`` comments are skipped. A topic with no message type, or a t
 ``package/Name`` (ROS 2's ``package/msg/Name`` is accepted and normalised), is a located error;
 every bad line of a file is reported at once.
 
-:class:`Topic` is also what :mod:`solver.identify.bags` and a live ROS master give: the shared
-currency of :mod:`solver.identify.interfaces`.
+Each line becomes a :class:`solver.ros.names.Topic`, as a bag (:mod:`solver.identify.bags`) and
+a live graph give: the shared currency of :mod:`solver.identify.interfaces`.
 
 Not here: what a topic means (:mod:`solver.identify.interfaces`).
 """
@@ -22,37 +22,20 @@ Not here: what a topic means (:mod:`solver.identify.interfaces`).
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 from pathlib import Path
 
 from solver.errors import Fault, InputError, Location
+from solver.files.inputfile import read_text
 from solver.identify.safexml import MAX_XML_BYTES
-from solver.inputfile import read_text
+from solver.ros.names import Topic, normalise_type
 
-__all__ = ["Topic", "normalise_type", "parse_topic_list", "read_topic_list"]
+__all__ = ["parse_topic_list", "read_topic_list"]
 
 _SECTION = re.compile(r"^\s*(published|subscribed)\s+topics\s*:\s*$", re.IGNORECASE)
 _BRACKETED = re.compile(r"^\s*(?:\*\s*)?(\S+)\s+\[([^\]]*)\](?:\s+\d+\s+\w+)?\s*$")
 _PLAIN = re.compile(r"^\s*(?:\*\s*)?(\S+)(?:\s+(\S+))?\s*$")
 _TYPE = re.compile(r"^[A-Za-z][\w]*/(?:(?:msg|srv|action)/)?[A-Za-z][\w]*$")
 _NAME = re.compile(r"^/?[A-Za-z~{][\w/{}~]*$")
-
-
-@dataclass(frozen=True, slots=True)
-class Topic:
-    """A topic, its message type (``pkg/Name``) and, when known, the robot's direction."""
-
-    name: str
-    type: str
-    direction: str | None = None  # "published", "subscribed" or None (unknown)
-
-
-def normalise_type(text: str) -> str:
-    """``sensor_msgs/msg/Image`` -> ``sensor_msgs/Image``; ROS 1 names unchanged."""
-    parts = text.strip().split("/")
-    if len(parts) == 3 and parts[1] in ("msg", "srv", "action"):
-        return f"{parts[0]}/{parts[2]}"
-    return text.strip()
 
 
 def read_topic_list(path: str | Path, *, display: str | None = None) -> tuple[Topic, ...]:

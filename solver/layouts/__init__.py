@@ -11,7 +11,7 @@
 ``live``            naming the active configuration's layout in ``watch`` events
 ==================  ===============================================================
 
-Not here: solving (:mod:`solver.solution`); UVL export (:mod:`solver.uvl`).
+Not here: solving (:mod:`solver.core.solution`); UVL export (:mod:`solver.reporting.uvl`).
 """
 
 from __future__ import annotations

@@ -13,11 +13,11 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
+from solver.core.partition import Configuration
+from solver.core.solution import Solution
 from solver.errors import Fault, Location, SolverError
 from solver.layouts.profile import PANEL_TYPES, PanelSpec, Profile
 from solver.layouts.tiling import split_tree, tiles
-from solver.partition import Configuration
-from solver.solution import Solution
 
 __all__ = [
     "LayoutError",

@@ -10,10 +10,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
+from solver.core.rules import RuleSet
 from solver.errors import SolverError
-from solver.reader import Reader
-from solver.rules import RuleSet
-from solver.yamlio import load_document
+from solver.files.reader import Reader
+from solver.files.yamlio import load_document
 
 __all__ = [
     "PANEL_TYPES",

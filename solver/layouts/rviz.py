@@ -17,11 +17,11 @@ from typing import Any
 
 import yaml
 
+from solver.core.partition import Configuration
+from solver.core.solution import Solution
 from solver.errors import Fault, Location
 from solver.layouts.foxglove import LayoutError, panel_entries, template_topic
 from solver.layouts.profile import PanelSpec, Profile
-from solver.partition import Configuration
-from solver.solution import Solution
 
 __all__ = ["REQUIRED_KEYS", "rviz_layout", "rviz_text", "validate_rviz"]
 

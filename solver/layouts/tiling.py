@@ -11,8 +11,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from solver.partition import Configuration
-from solver.rules import RuleSet
+from solver.core.partition import Configuration
+from solver.core.rules import RuleSet
 
 __all__ = ["MAX_TILES", "split_tree", "tiles"]
 

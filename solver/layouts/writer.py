@@ -5,13 +5,13 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from solver.atomic import write_all_atomic
+from solver.core.partition import Configuration
+from solver.core.solution import Solution
 from solver.errors import InputError
+from solver.files.atomic import write_all_atomic
 from solver.layouts.foxglove import foxglove_layout, layout_filename, validate_foxglove
 from solver.layouts.profile import Profile
 from solver.layouts.rviz import rviz_layout, rviz_text, validate_rviz
-from solver.partition import Configuration
-from solver.solution import Solution
 
 __all__ = ["FORMATS", "write_layouts"]
 

@@ -30,8 +30,8 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 
 from solver.identify.profile import Profile
-from solver.identify.topics import Topic, normalise_type
 from solver.live.master import Observation
+from solver.ros.names import Topic, normalise_type
 
 __all__ = [
     "DESCRIPTION",

@@ -19,7 +19,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from solver.assignment import Assignment
+from solver.core.assignment import Assignment
+from solver.core.solution import Solution
 from solver.errors import InputError, did_you_mean
 from solver.identify.identification import IdentificationCache
 from solver.identify.profile import Profile
@@ -27,7 +28,6 @@ from solver.live.discovery import discover, normalise_namespace
 from solver.live.master import MISSING, MasterClient
 from solver.live.robot import identify_robot
 from solver.live.selection import NAMESPACE, choose, read_request, requested_values
-from solver.solution import Solution
 
 if TYPE_CHECKING:
     from solver.live.sources.ros2 import DdsGraph

@@ -15,7 +15,9 @@ from __future__ import annotations
 import json
 from typing import Any
 
-from solver.assignment import Assignment
+from solver.core.assignment import Assignment
+from solver.core.contracts import assignment_data
+from solver.core.solution import Solution
 from solver.live.events import (
     Event,
     MasterBack,
@@ -29,8 +31,7 @@ from solver.live.events import (
 )
 from solver.live.query import LiveAssignment
 from solver.live.robot import LiveRobot
-from solver.render import assignment_data, dumps, render_assignment
-from solver.solution import Solution
+from solver.reporting.render import dumps, render_assignment
 
 __all__ = ["json_line", "render_event", "render_live_assignment", "text_lines"]
 

@@ -24,13 +24,13 @@ import dataclasses
 from dataclasses import dataclass
 from typing import Any
 
+from solver.core.solution import Solution
 from solver.errors import SolverError
 from solver.identify.combinations import Combination, combinations
 from solver.identify.identification import Identification, IdentificationCache, TopicSource
 from solver.identify.profile import Profile
 from solver.live.discovery import RobotSource
 from solver.live.master import MISSING
-from solver.solution import Solution
 
 __all__ = ["LiveRobot", "identify_robot", "robot_data", "unexpected_error"]
 

@@ -27,13 +27,13 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from solver.assignment import Assignment, assign, check_names
+from solver.core.assignment import Assignment, assign, check_names
+from solver.core.contracts import assignment_data
+from solver.core.solution import Solution
 from solver.identify.profile import Profile
 from solver.live.discovery import normalise_namespace
 from solver.live.master import MISSING
 from solver.live.robot import LiveRobot
-from solver.render import assignment_data
-from solver.solution import Solution
 
 __all__ = [
     "NAMESPACE",

@@ -52,9 +52,9 @@ from dataclasses import dataclass
 from types import TracebackType
 from typing import Any
 
+from solver.core.solution import Solution
 from solver.identify.identification import IdentificationCache
 from solver.identify.profile import Profile
-from solver.identify.topics import Topic
 from solver.live.descriptions import Descriptions
 from solver.live.discovery import RobotSource, discover
 from solver.live.events import (
@@ -87,7 +87,7 @@ from solver.live.selection import (
     ui_configuration_value,
 )
 from solver.live.sources import DescriptionStore, GraphSource
-from solver.solution import Solution
+from solver.ros.names import Topic
 
 __all__ = ["Watcher"]
 

@@ -2,7 +2,7 @@
 
 The brute-force oracle (:func:`valid_robots`) enumerates every combination with
 ``itertools.product`` and keeps those for which every constraint ``holds``: it shares no code
-with python-constraint or with :mod:`solver.check.analysis`.
+with python-constraint or with :mod:`solver.core.analysis`.
 """
 
 from __future__ import annotations
@@ -16,9 +16,9 @@ import yaml
 from hypothesis import strategies as st
 
 from solver.check import Finding, check_files
-from solver.constraints import RuleConstraint, Value
-from solver.rules import RuleSet, parse_rules
-from solver.yamlio import parse_document
+from solver.core.constraints import RuleConstraint, Value
+from solver.core.rules import RuleSet, parse_rules
+from solver.files.yamlio import parse_document
 from tests.conftest import ROOT
 
 FIXTURES = ROOT / "tests" / "fixtures" / "check"

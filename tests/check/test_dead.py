@@ -7,11 +7,11 @@ from pathlib import Path
 from hypothesis import given, settings
 
 from solver.check import check_files
-from solver.check.analysis import Analysis
 from solver.check.context import RulesContext
 from solver.check.dead import DEAD_VALUE
-from solver.model import robots
-from solver.rules import RuleSet, load_rules
+from solver.core.analysis import Analysis
+from solver.core.model import robots
+from solver.core.rules import RuleSet, load_rules
 from tests.check.helpers import findings, fixture, rule_sets, valid_robots
 from tests.conftest import RULES
 

@@ -10,7 +10,7 @@ import pytest
 from solver.check import check_files
 from solver.check.load import check_id
 from solver.errors import Fault, InputError, Location
-from solver.yamlio import parse_document
+from solver.files.yamlio import parse_document
 from tests.check.helpers import findings
 
 

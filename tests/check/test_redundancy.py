@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-from solver.model import robots
-from solver.rules import RuleSet, load_rules
+from solver.core.model import robots
+from solver.core.rules import RuleSet, load_rules
 from tests.check.helpers import findings, fixture
 
 

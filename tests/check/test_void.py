@@ -4,11 +4,11 @@ from __future__ import annotations
 
 from hypothesis import given, settings
 
-from solver.check.analysis import Analysis
 from solver.check.context import RulesContext
 from solver.check.void import VOID, VOID_TYPE
-from solver.model import is_satisfiable
-from solver.rules import RuleSet, load_rules
+from solver.core.analysis import Analysis
+from solver.core.model import is_satisfiable
+from solver.core.rules import RuleSet, load_rules
 from tests.check.helpers import findings, fixture, rule_sets, valid_robots
 
 

@@ -5,13 +5,13 @@ from __future__ import annotations
 import pytest
 
 from solver import load_team, solve
+from solver.core.model import robots
+from solver.core.rules import parse_rules
+from solver.core.team import parse_team
 from solver.engines import fast as stream
 from solver.engines.fast import partition as partition_stream
 from solver.engines.fast import robots as robots_stream
-from solver.model import robots
-from solver.rules import parse_rules
-from solver.team import parse_team
-from solver.yamlio import parse_document
+from solver.files.yamlio import parse_document
 from tests.conftest import TEAMS
 
 

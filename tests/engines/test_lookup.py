@@ -9,7 +9,7 @@ import pytest
 from solver import InputError, load_team, solve
 from solver.engines import DESCRIPTIONS, ENUMERATING, NAMES, choose, lookup
 from solver.engines.structure import Memo
-from solver.listing import write_robots
+from solver.reporting.listing import write_robots
 from tests.conftest import TEAMS
 
 

@@ -13,7 +13,7 @@ from rosbags.typesys import Stores, get_types_from_msg, get_typestore
 
 from solver.errors import InputError
 from solver.identify.bags import read_bag_topics
-from solver.identify.topics import Topic
+from solver.ros.names import Topic
 from tests.conftest import run_cli
 from tests.identify import builders
 

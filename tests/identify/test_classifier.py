@@ -10,10 +10,10 @@ from pathlib import Path
 
 import pytest
 
+from solver.core.rules import load_rules
 from solver.identify import identify_urdf, load_profile
 from solver.identify.body import detect_body
 from solver.identify.urdf import parse_urdf
-from solver.rules import load_rules
 from tests.conftest import RULES
 from tests.identify import builders
 from tests.identify.builders import RobotText

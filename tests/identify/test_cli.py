@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from solver.team import load_team
+from solver.core.team import load_team
 from tests.conftest import ROOT, run_cli
 from tests.identify import builders
 

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from solver.core.solution import solve
+from solver.core.team import load_team
 from solver.identify import (
     IdentificationCache,
     Topic,
@@ -12,8 +14,6 @@ from solver.identify import (
     identify_urdf,
     load_profile,
 )
-from solver.solution import solve
-from solver.team import load_team
 from tests.conftest import TEAMS
 from tests.identify import builders
 

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import pytest
 
+from solver.files.yamlio import parse_document
 from solver.identify.profile import ProfileError, load_profile, parse_profile
-from solver.yamlio import parse_document
 from tests.conftest import RULES
 
 SHIPPED = (RULES / "identification.yaml").read_text(encoding="utf-8")

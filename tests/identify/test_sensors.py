@@ -4,11 +4,11 @@ from __future__ import annotations
 
 import pytest
 
+from solver.files.yamlio import parse_document
 from solver.identify import identify_urdf, load_profile
 from solver.identify.profile import parse_profile
 from solver.identify.sensors import sensors_from_urdf
 from solver.identify.urdf import parse_urdf
-from solver.yamlio import parse_document
 from tests.conftest import RULES
 from tests.identify import builders
 

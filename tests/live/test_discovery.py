@@ -6,7 +6,6 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from solver.identify.profile import Profile
-from solver.identify.topics import Topic
 from solver.live.discovery import (
     discover,
     normalise_namespace,
@@ -14,6 +13,7 @@ from solver.live.discovery import (
     robot_topics,
 )
 from solver.live.master import Observation
+from solver.ros.names import Topic
 
 IMAGE = "sensor_msgs/Image"
 TWIST = "geometry_msgs/Twist"

@@ -14,12 +14,12 @@ import json
 from collections.abc import Callable
 from typing import Any
 
+from solver.core.solution import Solution
 from solver.identify.identification import Identification, IdentificationCache
 from solver.identify.profile import Profile
 from solver.identify.safexml import MAX_XML_BYTES
 from solver.live.events import event_data
 from solver.live.watcher import Watcher
-from solver.solution import Solution
 from tests.conftest import run_cli
 from tests.identify import builders
 from tests.live.conftest import Recorder

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import json
 
+from solver.core.solution import Solution
 from solver.identify.identification import IdentificationCache
 from solver.identify.profile import Profile
-from solver.identify.topics import Topic
 from solver.live.discovery import RobotSource
 from solver.live.events import (
     MasterBack,
@@ -21,7 +21,7 @@ from solver.live.events import (
 from solver.live.render import render_event, text_lines
 from solver.live.robot import LiveRobot, identify_robot
 from solver.live.selection import Request, select
-from solver.solution import Solution
+from solver.ros.names import Topic
 from tests.live.fleet import drone_configuration, drone_text
 
 URI = "http://127.0.0.1:11311/"

@@ -13,11 +13,11 @@ from typing import Any
 
 import pytest
 
+from solver.core.solution import Solution
 from solver.identify.profile import Profile
 from solver.identify.safexml import MAX_XML_BYTES
 from solver.live.sources.ros2 import DdsGraph, dds_type, ros_name, ros_type
 from solver.live.watcher import Watcher
-from solver.solution import Solution
 from tests.conftest import run_cli
 from tests.live.conftest import Recorder
 from tests.live.fleet import drone_configuration, drone_text, rover_configuration, rover_text

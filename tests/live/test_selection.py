@@ -4,9 +4,9 @@ from __future__ import annotations
 
 from typing import Any
 
+from solver.core.solution import Solution
 from solver.identify.identification import IdentificationCache
 from solver.identify.profile import Profile
-from solver.identify.topics import Topic
 from solver.live.discovery import RobotSource
 from solver.live.robot import LiveRobot, identify_robot
 from solver.live.selection import (
@@ -17,7 +17,7 @@ from solver.live.selection import (
     selection_data,
     ui_configuration_value,
 )
-from solver.solution import Solution
+from solver.ros.names import Topic
 from tests.live.fleet import drone_text, expected, rover_text
 
 CAMERA = Topic("camera/image_raw", "sensor_msgs/Image", "published")

@@ -1,0 +1,170 @@
+"""Assigning a UI configuration to one characteristic combination, or the default one.
+
+This is the run-time question of the article: the operator is working with a robot in one
+control mode, looking at one sensor; which UI configuration does it get? A valid combination
+gets its configuration's number and components. Anything else (a value the rules do not know, a
+kinematic type not in the team, a value outside the team's selection, more sensors than the
+maximum, a broken rule constraint, a value in no component) gets the default configuration
+(number k+1), the reasons, and the components that are relevant to the values that are known.
+
+Not here: finding the combination from ROS metadata (the identification modules do that).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass
+
+from solver.core.constraints import Value
+from solver.core.model import violated_constraints
+from solver.core.partition import Configuration
+from solver.core.rules import Characteristic, RuleSet
+from solver.core.solution import Solution
+from solver.errors import InputError, did_you_mean
+
+__all__ = ["Assignment", "assign", "check_names", "parse_combination"]
+
+
+@dataclass(frozen=True, slots=True)
+class Assignment:
+    """The UI configuration given to one combination, and why when it is the default."""
+
+    given: tuple[tuple[str, str], ...]
+    number: int
+    configuration: Configuration | None
+    reasons: tuple[str, ...] = ()
+    # characteristic name -> names of the components its known value needs.
+    relevant: tuple[tuple[str, tuple[str, ...]], ...] = ()
+
+    @property
+    def is_default(self) -> bool:
+        return self.configuration is None
+
+    def __repr__(self) -> str:  # short, for notebooks: the fields are one attribute away
+        given = " ".join(f"{name}={value}" for name, value in self.given)
+        if self.configuration is None:
+            return f"<Assignment default {self.number} for {given}: {'; '.join(self.reasons)}>"
+        return f"<Assignment {self.number} for {given}>"
+
+
+def parse_combination(pairs: list[str] | tuple[str, ...]) -> dict[str, str]:
+    """``["kinematic_type=UAV", "sensor_count=3"]`` -> a mapping; :class:`InputError` if bad."""
+    combination: dict[str, str] = {}
+    for pair in pairs:
+        name, sep, value = pair.partition("=")
+        if not sep or not name.strip():
+            raise InputError.at("<arguments>", f"expected NAME=VALUE, got {pair!r}")
+        if name.strip() in combination:
+            raise InputError.at("<arguments>", f"{name.strip()!r} is given twice")
+        if any(char.isdecimal() and not char.isascii() for char in value):
+            # int() reads '٣' as 3; a command line value is written in ASCII digits or refused.
+            raise InputError.at(
+                "<arguments>",
+                f"{value.strip()!r} has non-ASCII digits; write numbers as 0-9",
+                path=name.strip(),
+            )
+        combination[name.strip()] = value.strip()
+    return combination
+
+
+def check_names(rules: RuleSet, names: Iterable[str]) -> None:
+    """:class:`InputError` for the first name that is not a characteristic of ``rules``: a
+    characteristic name is a usage mistake, unlike a value the rules do not allow."""
+    for name in names:
+        if name not in rules.names:
+            raise InputError.at(
+                "<arguments>",
+                f"unknown characteristic {name!r}"
+                f"{did_you_mean(name, rules.names)}; the rules "
+                f"({rules.file}) have: {', '.join(rules.names)}",
+            )
+
+
+def assign(
+    solution: Solution, combination: Mapping[str, str | int] | None = None, /, **by_name: str | int
+) -> Assignment:
+    """The configuration for ``combination`` (characteristic name -> value) in ``solution``.
+
+    The values may be given as a mapping, as keywords (``assign(solution, kinematic_type="UAV",
+    sensor_count=3)``) or both (keywords win). Characteristic *names* must exist
+    (:class:`InputError` otherwise: that is a usage mistake); unknown or disallowed *values*
+    are a normal outcome, answered with the default.
+    """
+    combination = {**(combination or {}), **by_name}
+    rules = solution.rules
+    check_names(rules, combination)
+    given = tuple(
+        (c.name, str(combination[c.name])) for c in rules.characteristics if c.name in combination
+    )
+    reasons: list[str] = []
+    values: dict[str, Value] = {}
+    for characteristic in rules.characteristics:
+        if characteristic.name not in combination:
+            reasons.append(f"no {characteristic.name} given")
+            continue
+        text = str(combination[characteristic.name])
+        value = characteristic.parse_value(text)
+        if value is None:
+            reasons.append(_unknown(characteristic, text))
+        else:
+            values[characteristic.name] = value
+    relevant = tuple(
+        (name, tuple(c.name for c in rules.characteristic(name).components_of(v)))
+        for name, v in values.items()
+    )
+    if not reasons:
+        robot = tuple(values[name] for name in rules.names)
+        reasons = _team_reasons(solution, values) or [
+            f"breaks rule {rule.describe()} at {rule.location}"
+            for rule in violated_constraints(rules, robot)
+        ]
+        if not reasons:
+            configuration = solution.configuration_for(robot)
+            if configuration is not None:
+                return Assignment(given, configuration.number, configuration, (), relevant)
+            reasons = [
+                f"{name} {value} is in no component of the rules (a gap)"
+                for name, value in values.items()
+                if not rules.characteristic(name).components_of(value)
+            ]
+    return Assignment(given, solution.default_configuration, None, tuple(reasons), relevant)
+
+
+def _unknown(characteristic: Characteristic, text: str) -> str:
+    if characteristic.kind == "integer":
+        low, high = characteristic.values[0], characteristic.values[-1]
+        return f"{characteristic.name} {text!r} is not a whole number in {low}..{high}"
+    hint = did_you_mean(text, [str(v) for v in characteristic.values])
+    return f"unknown {characteristic.label.lower()} {text!r}{hint}"
+
+
+def _team_reasons(solution: Solution, values: dict[str, Value]) -> list[str]:
+    rules = solution.rules
+    team = solution.team
+    kinematic_type = str(values[rules.team_key])
+    selection = team.selection(kinematic_type)
+    if selection is None:
+        return [
+            f"{rules.key.label.lower()} {kinematic_type!r} is not in team {team.name!r} "
+            f"(it has {', '.join(team.kinematic_types)})"
+        ]
+    reasons = []
+    for characteristic, domain in zip(rules.characteristics, selection.domains, strict=True):
+        value = values[characteristic.name]
+        if value in domain:
+            continue
+        if (
+            characteristic.kind == "integer"
+            and isinstance(value, int)
+            and value > max(int(v) for v in domain)
+        ):
+            reasons.append(
+                f"{value} is more than the {kinematic_type} maximum of "
+                f"{max(int(v) for v in domain)} for {characteristic.name}"
+            )
+        else:
+            reasons.append(
+                f"{characteristic.name} {value!r} is not selected for "
+                f"{kinematic_type} in team {team.name!r}"
+            )
+    return reasons

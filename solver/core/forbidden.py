@@ -1,0 +1,86 @@
+"""What a rule set's constraints remove from a team: selected values no valid robot can have.
+
+A team selects values per kinematic type; a constraint of its rule set may forbid some of them
+for that type (``no force feedback in flight``). The robots with such a value are not valid and
+get the default UI configuration. ``solve``, ``report`` and ``batch`` say so (through
+:func:`solver.core.contracts.solution_warnings`) and the report lists the constraints with what
+they
+removed; ``teleop-ui check`` gives the same finding, located in the team file
+(``team-forbidden-value``). The analysis is :class:`solver.core.analysis.Analysis`, shared
+with the checker, so both always agree.
+
+A characteristic a team leaves open (every value selected) is not reported: it takes whatever
+the rules allow. A type left with no valid robot at all is reported as a whole.
+
+Not here: the located finding for a team file (:mod:`solver.check.teams`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from solver.core.constraints import RuleConstraint, Value
+
+if TYPE_CHECKING:
+    from solver.core.team import Team
+
+__all__ = ["Removed", "removed_by_constraints"]
+
+
+@dataclass(frozen=True, slots=True)
+class Removed:
+    """Values one kinematic type selects that its rule set's constraints exclude.
+
+    ``characteristic`` is empty when the whole type has no valid robot (``values`` is then
+    empty too). ``constraints``: a minimal set that excludes them, in declared order.
+    """
+
+    kinematic_type: str
+    characteristic: str
+    values: tuple[Value, ...]
+    constraints: tuple[RuleConstraint, ...]
+
+    def describe(self) -> str:
+        """``UAV: sensor_type Force Sensor, excluded by 'no force ...' (rules/x.yaml:70:5)``."""
+        cited = " and ".join(f"{c.name!r} ({c.location})" for c in self.constraints)
+        if not self.characteristic:
+            return f"{self.kinematic_type}: no valid robot at all, excluded by {cited}"
+        shown = ", ".join(str(value) for value in self.values)
+        return f"{self.kinematic_type}: {self.characteristic} {shown}, excluded by {cited}"
+
+
+def removed_by_constraints(team: Team) -> tuple[Removed, ...]:
+    """Per kinematic type and characteristic, the selected values the constraints exclude."""
+    rules = team.rules
+    if not rules.constraints:
+        return ()
+    from solver.core.analysis import Analysis
+
+    analysis = Analysis(rules)
+    found: list[Removed] = []
+    for selection in team.selections:
+        kt = selection.kinematic_type
+        live = analysis.live(selection.domains)
+        if not live[rules.key_position]:
+            conflict = analysis.minimal_conflict(selection.domains)
+            found.append(Removed(kt, "", (), tuple(rules.constraints[i] for i in conflict)))
+            continue
+        for position, characteristic in enumerate(rules.characteristics):
+            domain = selection.domains[position]
+            if position == rules.key_position or tuple(domain) == tuple(characteristic.values):
+                continue
+            dead = tuple(value for value in domain if value not in live[position])
+            if not dead:
+                continue
+            # One minimal set for all of them: the values are shown together, and the
+            # checker's finding gives each group its own set when they differ.
+            conflict = analysis.minimal_conflict(
+                analysis.narrowed(selection.domains, position, dead)
+            )
+            found.append(
+                Removed(
+                    kt, characteristic.name, dead, tuple(rules.constraints[i] for i in conflict)
+                )
+            )
+    return tuple(found)

@@ -1,0 +1,963 @@
+"""Rule sets: characteristics, their values, the UI components they map to, and constraints.
+
+A rule set is written once and reused for many teams. It declares
+
+* the **characteristics** (kinematic type, motion control, ... or any of the user's own), each
+  either *categorical* (a list of named values) or *integer* (a range such as 1..50);
+* for each characteristic, its **components**: the UI component every value needs. Values in the
+  same component can share a UI configuration (the article's presentation groups and cluster
+  arrangements). Without a ``components`` list every value is its own component;
+* which characteristic team files are keyed by (``team_key``, the kinematic type);
+* optional **constraints** between values (:mod:`solver.core.constraints`) and a declared ``bound``.
+
+Nothing about the article's four characteristics is known to the code: ``rules/paper.yaml`` is
+data like any other rule file. The README documents the format; :func:`load_rules` reads it,
+reporting every problem in the file at once.
+
+Not here: team selections (:mod:`solver.core.team`), solving (:mod:`solver.core.solution`).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Iterable, Iterator, Sequence
+from dataclasses import dataclass, field, replace
+from functools import cached_property
+from pathlib import Path
+from typing import Any, Literal, TypeVar, overload
+
+from solver.core.constraints import Condition, RuleConstraint, Value
+from solver.errors import Location, RulesError, did_you_mean
+from solver.files.filekind import require_kind
+from solver.files.reader import Reader, quote, type_name
+from solver.files.yamlio import Document, PathPart, load_document
+
+__all__ = [
+    "Characteristic",
+    "Component",
+    "OnePerValue",
+    "RuleSet",
+    "Run",
+    "default_rules_path",
+    "load_rules",
+    "parse_rules",
+    "read_selection",
+    "shipped_name",
+    "shipped_path",
+]
+
+Kind = Literal["categorical", "integer"]
+YPath = tuple[PathPart, ...]
+T = TypeVar("T")
+
+# The largest integer domain a rule set may declare; a typo such as max: 10000000000 would
+# otherwise allocate a tuple of ten billion values.
+MAX_INTEGER_VALUES = 100_000
+
+_RULES_KEYS = {
+    "name",
+    "description",
+    "source",
+    "bound",
+    "team_key",
+    "characteristics",
+    "constraints",
+}
+_WHOLE_NUMBER = re.compile(r"[+-]?[0-9]+")
+_CHARACTERISTIC_KEYS = {"label", "description", "values", "range", "components"}
+_CATEGORICAL_COMPONENT_KEYS = {"name", "description", "values"}
+_INTEGER_COMPONENT_KEYS = {"name", "description", "min", "above", "max", "below", "cluster_size"}
+_CONSTRAINT_KEYS = {"name", "description", "when", "require", "forbid"}
+_SELECTION_KEYS = {"min", "max", "not", "component"}
+
+
+@dataclass(frozen=True, slots=True)
+class Component:
+    """One UI component: the values of a characteristic that it serves.
+
+    For integer characteristics a component is an *arrangement*: a range of counts shown as
+    ``ceil(count / cluster_size)`` clusters. ``low``/``high`` are the inclusive bounds as
+    declared (``None`` where the file left the range open).
+    """
+
+    name: str
+    index: int
+    values: tuple[Value, ...]
+    description: str = ""
+    low: int | None = None
+    high: int | None = None
+    cluster_size: int = 1
+    location: Location | None = field(default=None, compare=False)
+
+    def clusters(self, count: int) -> int:
+        """How many UI elements ``count`` sensors take in this arrangement."""
+        return math.ceil(count / self.cluster_size)
+
+    def describe_range(self) -> str:
+        """``6..10`` or ``26..`` (open) for an arrangement; empty for categorical components."""
+        if self.low is None and self.high is None:
+            return ""
+        return f"{'' if self.low is None else self.low}..{'' if self.high is None else self.high}"
+
+
+class Run(tuple[int, ...]):
+    """Whole numbers ``low..high`` in order: an integer characteristic's values as the reader
+    makes them. A count's position and the counts ``low..N`` need no look at the others."""
+
+    __slots__ = ()
+
+    def position(self, value: object) -> int | None:
+        """Where ``value`` is, or None; only whole numbers (not ``True``) are looked up here."""
+        if type(value) is not int or not self or not self[0] <= value <= self[-1]:
+            return None
+        return value - self[0]
+
+
+class _Made(Sequence[T]):
+    """A read-only sequence whose items are made when asked for, equal (and hashing) as the
+    tuple of the same items would."""
+
+    __slots__ = ()
+
+    def _item(self, index: int) -> T:
+        raise NotImplementedError
+
+    def _key(self) -> object:
+        """What two sequences of this class are equal by, without making their items."""
+        raise NotImplementedError
+
+    @overload
+    def __getitem__(self, index: int) -> T: ...
+    @overload
+    def __getitem__(self, index: slice) -> tuple[T, ...]: ...
+    def __getitem__(self, index: int | slice) -> T | tuple[T, ...]:
+        positions = range(len(self))
+        if isinstance(index, slice):
+            return tuple(self._item(i) for i in positions[index])
+        return self._item(positions[index])
+
+    def __iter__(self) -> Iterator[T]:
+        return (self._item(i) for i in range(len(self)))
+
+    def __eq__(self, other: object) -> bool:
+        if type(other) is type(self):
+            return self._key() == other._key()
+        if isinstance(other, Sequence) and not isinstance(other, str):
+            return len(other) == len(self) and all(a == b for a, b in zip(self, other, strict=True))
+        return NotImplemented
+
+    def __hash__(self) -> int:
+        return hash(tuple(self))
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}(<{len(self)} items>)"
+
+
+class OnePerValue(_Made[Component]):
+    """The components of a characteristic declared without ``components``: value *i* is
+    component *i*, named after it. Each is made when first asked for (and kept), so a range
+    of 100,000 counts costs nothing to read until something looks at its components."""
+
+    __slots__ = ("_made", "_values")
+
+    def __init__(self, values: Sequence[Value]) -> None:
+        self._values = values
+        self._made: dict[int, Component] = {}
+
+    def __len__(self) -> int:
+        return len(self._values)
+
+    def _item(self, index: int) -> Component:
+        made = self._made.get(index)
+        if made is None:
+            value = self._values[index]
+            number = value if isinstance(value, int) else None
+            made = Component(str(value), index, (value,), low=number, high=number)
+            self._made[index] = made
+        return made
+
+    def _key(self) -> object:
+        return self._values
+
+
+class _Itself(_Made[tuple[int, ...]]):
+    """The membership of :class:`OnePerValue` components: value *i* is in component *i*."""
+
+    __slots__ = ("_size",)
+
+    def __init__(self, size: int) -> None:
+        self._size = size
+
+    def __len__(self) -> int:
+        return self._size
+
+    def _item(self, index: int) -> tuple[int, ...]:
+        return (index,)
+
+    def _key(self) -> object:
+        return self._size
+
+
+@dataclass(frozen=True)
+class Characteristic:
+    """A named variable with a finite domain and the components its values map to."""
+
+    name: str
+    label: str
+    kind: Kind
+    values: tuple[Value, ...]
+    components: Sequence[Component]
+    # membership[i]: indices of the components that value i belongs to (normally exactly one).
+    membership: Sequence[tuple[int, ...]]
+    declared_components: bool = False
+    description: str = ""
+    location: Location | None = field(default=None, compare=False)
+
+    @cached_property
+    def positions(self) -> dict[Value, int]:
+        """Value -> its position in the domain."""
+        return {value: index for index, value in enumerate(self.values)}
+
+    def index(self, value: Value) -> int | None:
+        """Position of ``value`` in the domain, or ``None`` if it is not a value of this."""
+        if isinstance(self.values, Run) and type(value) is int:
+            return self.values.position(value)
+        return self.positions.get(value)
+
+    def components_of(self, value: Value) -> tuple[Component, ...]:
+        """The components ``value`` needs (empty for a value in no component: a gap)."""
+        position = self.index(value)
+        if position is None:
+            return ()
+        return tuple(self.components[i] for i in self.membership[position])
+
+    def component(self, name: str) -> Component | None:
+        return next((c for c in self.components if c.name == name), None)
+
+    @cached_property
+    def is_partition(self) -> bool:
+        """Every value in exactly one component: "shares a component" is an equivalence."""
+        return all(len(members) == 1 for members in self.membership)
+
+    def parse_value(self, text: str) -> Value | None:
+        """The domain value written as ``text`` (``"3"`` for integers), or ``None``."""
+        if self.kind == "integer":
+            # ASCII digits only: int() also reads "٣" (Arabic-Indic three) and "1_0" as numbers,
+            # which no one typing a robot's characteristics means.
+            if _WHOLE_NUMBER.fullmatch(text.strip()) is None:
+                return None
+            number = int(text.strip())
+            return number if self.index(number) is not None else None
+        return text if text in self.positions else None
+
+
+@dataclass(frozen=True)
+class RuleSet:
+    """A whole rule set: characteristics in declared order, the team key, the constraints."""
+
+    name: str
+    file: str
+    characteristics: tuple[Characteristic, ...]
+    team_key: str
+    constraints: tuple[RuleConstraint, ...] = ()
+    declared_bound: int | None = None
+    description: str = ""
+    source: str = ""
+    document: Document | None = field(default=None, compare=False, repr=False)
+
+    def __repr__(self) -> str:  # short, for notebooks: the fields are one attribute away
+        return (
+            f"<RuleSet {self.name!r} ({self.file}): {', '.join(self.names)}; "
+            f"{len(self.constraints)} constraints>"
+        )
+
+    @cached_property
+    def _by_name(self) -> dict[str, Characteristic]:
+        return {c.name: c for c in self.characteristics}
+
+    def characteristic(self, name: str) -> Characteristic:
+        """The characteristic called ``name``; :class:`KeyError` if there is none."""
+        return self._by_name[name]
+
+    @cached_property
+    def names(self) -> tuple[str, ...]:
+        return tuple(c.name for c in self.characteristics)
+
+    @property
+    def key(self) -> Characteristic:
+        """The characteristic team files are keyed by (the kinematic type)."""
+        return self._by_name[self.team_key]
+
+    @cached_property
+    def key_position(self) -> int:
+        return self.names.index(self.team_key)
+
+    @property
+    def bound(self) -> int:
+        """T: how many distinct UI configurations the rules could ever produce."""
+        return math.prod(len(c.components) for c in self.characteristics)
+
+    @property
+    def bound_factors(self) -> tuple[int, ...]:
+        return tuple(len(c.components) for c in self.characteristics)
+
+    @cached_property
+    def value_classes(self) -> tuple[tuple[tuple[Value, ...], ...], ...]:
+        """Per characteristic: its values grouped into classes the rules cannot tell apart.
+
+        Two values are in one class when they belong to the same components and meet exactly
+        the same conditions of every constraint. Classes keep domain order (by first value).
+        Counting works on classes instead of values (:mod:`solver.engines.structure`).
+        """
+        found = []
+        for characteristic in self.characteristics:
+            conditions = [
+                condition.allowed
+                for rule in self.constraints
+                for condition in (*rule.when, *rule.conditions)
+                if condition.characteristic == characteristic.name
+            ]
+            groups: dict[tuple[object, ...], list[Value]] = {}
+            for value, membership in zip(
+                characteristic.values, characteristic.membership, strict=True
+            ):
+                signature = (membership, *(value in allowed for allowed in conditions))
+                groups.setdefault(signature, []).append(value)
+            found.append(tuple(tuple(members) for members in groups.values()))
+        return tuple(found)
+
+    @cached_property
+    def value_class_index(self) -> tuple[dict[Value, int], ...]:
+        """Per characteristic: value -> the index of its class in :attr:`value_classes`."""
+        return tuple(
+            {value: index for index, members in enumerate(classes) for value in members}
+            for classes in self.value_classes
+        )
+
+
+def shipped_path(*parts: str) -> Path:
+    """A file shipped with the package (``rules/...``), wherever the package is installed."""
+    return Path(__file__).parent.parent.joinpath("rules", *parts)
+
+
+def shipped_name(path: Path) -> str | None:
+    """``rules/teams/case3.yaml`` for a shipped file (wherever installed), else ``None``.
+
+    Shipped files are shown by this stable name, not by their install location.
+    """
+    root = shipped_path().resolve()
+    try:
+        return "rules/" + path.resolve().relative_to(root).as_posix()
+    except ValueError:
+        return None
+
+
+def default_rules_path() -> Path:
+    """The article's rule set, used when a team file names no rules."""
+    return shipped_path("paper.yaml")
+
+
+def load_rules(path: str | Path, *, display: str | None = None) -> RuleSet:
+    """Read a rule set file; :class:`RulesError` lists every problem with its location.
+
+    A shipped rule set is shown by its stable name (``rules/paper.yaml``) unless ``display``."""
+    if display is None:
+        display = shipped_name(Path(path))
+    document = load_document(path, display=display)
+    return parse_rules(document)
+
+
+def parse_rules(document: Document) -> RuleSet:
+    """Build a :class:`RuleSet` from an already loaded document.
+
+    Raises :class:`InputError` for a team file or a profile (they are no broken rule sets)."""
+    require_kind(document, "rules")
+    reader = Reader(document)
+    top = reader.top("rule set", needs="characteristics")
+    if top is None:
+        raise RulesError(reader.faults)
+    reader.unknown_keys((), top, _RULES_KEYS, "rule set field")
+    name = reader.string(
+        ("name",), "rule set name", required=False, default=Path(document.file).stem
+    )
+    description = reader.string(("description",), "description", required=False, limit=None)
+    source = reader.string(("source",), "source", required=False, limit=None)
+    bound = reader.integer(("bound",), "bound", required=False)
+    if bound is not None and bound < 1:
+        reader.fault(("bound",), f"bound must be positive, got {bound}", code="out-of-range")
+
+    characteristics = _read_characteristics(reader)
+    by_name = {c.name: c for c in characteristics}
+    team_key = _read_team_key(reader, top, characteristics)
+    constraints = _read_constraints(reader, by_name)
+    if reader.faults:
+        raise RulesError(reader.faults)
+    return RuleSet(
+        name=name,
+        file=document.file,
+        characteristics=tuple(characteristics),
+        team_key=team_key,
+        constraints=tuple(constraints),
+        declared_bound=bound,
+        description=description,
+        source=source,
+        document=document,
+    )
+
+
+def _read_team_key(
+    reader: Reader, top: dict[str, Any], characteristics: list[Characteristic]
+) -> str:
+    if not characteristics:
+        return ""
+    names = [c.name for c in characteristics]
+    key = reader.string(("team_key",), "team_key") if "team_key" in top else names[0]
+    if key not in names:
+        reader.fault(
+            ("team_key",),
+            f"team_key names no characteristic: {key!r}{did_you_mean(key, names)}",
+            code="unknown-reference",
+        )
+        return characteristics[0].name
+    chosen = characteristics[names.index(key)]
+    if chosen.kind != "categorical":
+        reader.fault(
+            ("team_key",),
+            f"team_key {key!r} must be a categorical characteristic "
+            "(a list of values); without a team_key it is the first "
+            "characteristic",
+            code="invalid",
+        )
+    if chosen.declared_components:
+        reader.fault(
+            ("characteristics", key, "components"),
+            f"{key!r} is the team key: each of its values is its own component, "
+            "so it cannot declare components",
+            code="invalid",
+        )
+    return key
+
+
+def _read_characteristics(reader: Reader) -> list[Characteristic]:
+    section = reader.mapping(
+        ("characteristics",), "characteristics (a mapping of name -> definition)"
+    )
+    if not section and isinstance(reader.get(("characteristics",)), dict):
+        reader.fault(
+            ("characteristics",),
+            "a rule set needs at least one characteristic",
+            code="missing-field",
+        )
+    found = []
+    for name in section:
+        if not name.strip() or not name.isprintable():
+            reader.fault(
+                ("characteristics", name),
+                f"a characteristic needs a name of visible characters, got {quote(name)}",
+                key=True,
+                code="invalid",
+            )
+            continue
+        characteristic = _read_characteristic(reader, ("characteristics", name), name)
+        if characteristic is not None:
+            found.append(characteristic)
+    return found
+
+
+def _read_characteristic(reader: Reader, path: YPath, name: str) -> Characteristic | None:
+    spec = reader.mapping(path, f"characteristic {name!r}")
+    if not spec:
+        return None
+    reader.unknown_keys(path, spec, _CHARACTERISTIC_KEYS, "characteristic field")
+    label = reader.string((*path, "label"), "label", required=False, default=name)
+    description = reader.string((*path, "description"), "description", required=False, limit=None)
+    location = reader.document.location(path, key=True)
+    if ("values" in spec) == ("range" in spec):
+        reader.fault(
+            path,
+            f"characteristic {name!r} needs exactly one of 'values' (named "
+            "values) or 'range' (whole numbers)",
+            code="missing-field",
+        )
+        return None
+    kind: Kind
+    if "values" in spec:
+        kind = "categorical"
+        values: tuple[Value, ...] = _read_categorical_values(reader, (*path, "values"), name)
+    else:
+        kind = "integer"
+        values = _read_integer_range(reader, (*path, "range"), name)
+    if not values:
+        return None
+    components: Sequence[Component]
+    membership: Sequence[tuple[int, ...]]
+    if "components" in spec:
+        components = _read_components(reader, (*path, "components"), name, kind, values)
+        declared = True
+        holders: dict[Value, list[int]] = {}
+        for component in components:
+            for value in component.values:
+                holders.setdefault(value, []).append(component.index)
+        membership = tuple(tuple(holders.get(value, ())) for value in values)
+    else:  # value i is component i, made when asked for (100,000 counts are common)
+        components, membership, declared = OnePerValue(values), _Itself(len(values)), False
+    return Characteristic(
+        name=name,
+        label=label,
+        kind=kind,
+        values=values,
+        components=components,
+        membership=membership,
+        declared_components=declared,
+        description=description,
+        location=location,
+    )
+
+
+def _read_categorical_values(reader: Reader, path: YPath, name: str) -> tuple[str, ...]:
+    items = reader.names(path, f"values of {name!r}")
+    seen: dict[str, YPath] = {}
+    for item_path, value in items:
+        if not value:
+            reader.fault(item_path, "empty value name", code="wrong-type")
+        elif value in seen:
+            reader.fault(
+                item_path,
+                f"duplicate value {value!r} in {name!r} (first at "
+                f"{reader.document.location(seen[value])})",
+                code="duplicate-value",
+            )
+        else:
+            seen[value] = item_path
+    if not seen and reader.get(path) is not None:
+        reader.fault(path, f"characteristic {name!r} has no values", code="empty-selection")
+    return tuple(seen)
+
+
+def _read_integer_range(reader: Reader, path: YPath, name: str) -> Run | tuple[()]:
+    raw = reader.get(path)
+    low: int | None
+    high: int | None
+    if isinstance(raw, list):
+        # A list is a set of values everywhere else (a team's `sensor_count: [2, 6]` is {2, 6});
+        # so a range has one spelling, a mapping, and `[1, 50]` here is refused, not guessed.
+        shown = ", ".join(str(item) for item in raw) if len(raw) <= 4 else "..."
+        example = f"{{min: {raw[0]}, max: {raw[1]}}}" if len(raw) == 2 else "{min: 1, max: 50}"
+        reader.fault(
+            path,
+            f"range of {name!r} is a list ([{shown}]), but a list means a set "
+            f"of values (a team's `{name}: [2, 6]` is 2 and 6); write the range "
+            f"as {example}",
+            code="wrong-type",
+        )
+        return ()
+    if not isinstance(raw, dict):
+        reader.fault(
+            path,
+            f"range of {name!r} must be {{min: a, max: b}}, got {type_name(raw)}",
+            code="wrong-type",
+        )
+        return ()
+    spec = reader.mapping(path, "range")
+    reader.unknown_keys(path, spec, {"min", "max"}, "range field")
+    low = reader.integer((*path, "min"), f"{name} range minimum")
+    high = reader.integer((*path, "max"), f"{name} range maximum")
+    if low is None or high is None:
+        return ()
+    if low > high:
+        reader.fault(
+            path, f"range of {name!r} is inverted: min {low} > max {high}", code="out-of-range"
+        )
+        return ()
+    if high - low + 1 > MAX_INTEGER_VALUES:
+        reader.fault(
+            path,
+            f"range of {name!r} has {high - low + 1} values; at most "
+            f"{MAX_INTEGER_VALUES} are supported",
+            code="out-of-range",
+        )
+        return ()
+    return Run(range(low, high + 1))
+
+
+def _read_components(
+    reader: Reader, path: YPath, name: str, kind: Kind, values: tuple[Value, ...]
+) -> tuple[Component, ...]:
+    raw = reader.get(path)
+    if not isinstance(raw, list) or not raw:
+        reader.fault(
+            path,
+            f"components of {name!r} must be a non-empty list, got {type_name(raw)}",
+            code="wrong-type",
+        )
+        return ()
+    components: list[Component] = []
+    names: dict[str, YPath] = {}
+    for index in range(len(raw)):
+        item_path = (*path, index)
+        spec = reader.mapping(item_path, "component")
+        if not spec:
+            continue
+        allowed = _CATEGORICAL_COMPONENT_KEYS if kind == "categorical" else _INTEGER_COMPONENT_KEYS
+        reader.unknown_keys(item_path, spec, allowed, f"{kind} component field")
+        component_name = reader.string((*item_path, "name"), "component name")
+        if component_name in names:
+            first = reader.document.location(names[component_name])
+            reader.fault(
+                (*item_path, "name"),
+                f"duplicate component {component_name!r} (first at {first})",
+                code="duplicate-value",
+            )
+        names.setdefault(component_name, (*item_path, "name"))
+        description = reader.string(
+            (*item_path, "description"), "description", required=False, limit=None
+        )
+        component = Component(
+            component_name,
+            len(components),
+            (),
+            description,
+            location=reader.document.location(item_path),
+        )
+        if kind == "categorical":
+            members = _read_members(reader, (*item_path, "values"), name, values)
+            components.append(replace(component, values=members))
+        else:
+            components.append(_read_arrangement(reader, item_path, component, values))
+    return tuple(components)
+
+
+def _read_members(
+    reader: Reader, path: YPath, name: str, values: tuple[Value, ...]
+) -> tuple[Value, ...]:
+    known = {str(v) for v in values}
+    members: set[str] = set()
+    for item_path, value in reader.names(path, "component values"):
+        if value not in known:
+            reader.fault(
+                item_path,
+                f"unknown {name} value {value!r}{did_you_mean(value, known)}",
+                code="unknown-reference",
+            )
+        elif value in members:
+            reader.fault(
+                item_path, f"{value!r} is listed twice in this component", code="duplicate-value"
+            )
+        members.add(value)
+    return tuple(v for v in values if v in members)
+
+
+def _read_arrangement(
+    reader: Reader, path: YPath, component: Component, values: tuple[Value, ...]
+) -> Component:
+    """``component`` with the range, cluster size and member counts its spec declares."""
+    spec = reader.mapping(path, "component")
+    name = component.name
+    low = high = None
+    if "min" in spec and "above" in spec:
+        reader.fault(path, "give either 'min' (inclusive) or 'above' (exclusive), not both")
+    if "max" in spec and "below" in spec:
+        reader.fault(path, "give either 'max' (inclusive) or 'below' (exclusive), not both")
+    if "min" in spec:
+        low = reader.integer((*path, "min"), "min")
+    elif "above" in spec:
+        above = reader.integer((*path, "above"), "above")
+        low = None if above is None else above + 1
+    if "max" in spec:
+        high = reader.integer((*path, "max"), "max")
+    elif "below" in spec:
+        below = reader.integer((*path, "below"), "below")
+        high = None if below is None else below - 1
+    if "min" not in spec and "above" not in spec and "max" not in spec and "below" not in spec:
+        reader.fault(
+            path,
+            f"arrangement {name!r} needs a range: min/above and/or max/below",
+            code="missing-field",
+        )
+    cluster_size = 1
+    if "cluster_size" in spec:
+        size = reader.integer((*path, "cluster_size"), "cluster_size")
+        if size is not None and size < 1:
+            reader.fault(
+                (*path, "cluster_size"),
+                f"cluster_size must be at least 1, got {size}",
+                code="out-of-range",
+            )
+        elif size is not None:
+            cluster_size = size
+    members = tuple(
+        v
+        for v in values
+        if isinstance(v, int) and (low is None or v >= low) and (high is None or v <= high)
+    )
+    return replace(component, values=members, low=low, high=high, cluster_size=cluster_size)
+
+
+def _read_constraints(
+    reader: Reader, characteristics: dict[str, Characteristic]
+) -> list[RuleConstraint]:
+    raw = reader.get(("constraints",))
+    if raw is None:
+        return []
+    if not isinstance(raw, list):
+        reader.fault(
+            ("constraints",), f"constraints must be a list, got {type_name(raw)}", code="wrong-type"
+        )
+        return []
+    found = []
+    for index in range(len(raw)):
+        constraint = _read_constraint(reader, ("constraints", index), index, characteristics)
+        if constraint is not None:
+            found.append(constraint)
+    return found
+
+
+def _read_constraint(
+    reader: Reader, path: YPath, index: int, characteristics: dict[str, Characteristic]
+) -> RuleConstraint | None:
+    spec = reader.mapping(path, "constraint")
+    if not spec:
+        return None
+    reader.unknown_keys(path, spec, _CONSTRAINT_KEYS, "constraint field")
+    name = reader.string(
+        (*path, "name"), "constraint name", required=False, default=f"constraint {index + 1}"
+    )
+    location = reader.document.location(path)
+    if ("require" in spec) == ("forbid" in spec):
+        reader.fault(
+            path, "a constraint needs exactly one of 'require' or 'forbid'", code="missing-field"
+        )
+        return None
+    if "forbid" in spec and "when" in spec:
+        reader.fault(
+            (*path, "when"),
+            "'when' goes with 'require'; a 'forbid' rule already "
+            "lists the whole forbidden combination",
+        )
+        return None
+    when = _read_conditions(reader, (*path, "when"), characteristics) if "when" in spec else ()
+    kind: Literal["require", "forbid"] = "forbid" if "forbid" in spec else "require"
+    conditions = _read_conditions(reader, (*path, kind), characteristics)
+    if not conditions:
+        return None
+    return RuleConstraint(name, kind, when, conditions, location)
+
+
+def _read_conditions(
+    reader: Reader, path: YPath, characteristics: dict[str, Characteristic]
+) -> tuple[Condition, ...]:
+    spec = reader.mapping(path, "conditions (a mapping of characteristic -> values)")
+    if not spec and isinstance(reader.get(path), dict):
+        reader.fault(path, "no conditions given", code="empty-selection")
+    conditions = []
+    for name in spec:
+        if name not in characteristics:
+            reader.fault(
+                (*path, name),
+                f"unknown characteristic {name!r}{did_you_mean(name, characteristics)}",
+                key=True,
+                code="unknown-reference",
+            )
+            continue
+        selection = read_selection(reader, (*path, name), characteristics[name], exact=True)
+        if selection is not None:
+            conditions.append(Condition(name, selection[0], selection[1]))
+    return tuple(conditions)
+
+
+def read_selection(
+    reader: Reader, path: YPath, characteristic: Characteristic, *, exact: bool
+) -> tuple[frozenset[Value], str] | None:
+    """A set of values of ``characteristic`` as a rule or team file writes it.
+
+    Forms: one value; a list of values; or a mapping with any of ``min``/``max`` (integers),
+    ``not`` (values to leave out) and ``component`` (the values of named components), which
+    are intersected. A lone whole number means exactly that count when ``exact`` (constraints)
+    and "1..N", a maximum, when not (team files: ``sensor_count: 5``).
+    Returns the allowed set and a short text for messages, or ``None`` after recording faults.
+    """
+    raw = reader.get(path)
+    if isinstance(raw, dict):
+        return _read_selection_mapping(reader, path, characteristic, raw)
+    if isinstance(raw, list):
+        if not raw:
+            reader.fault(
+                path, f"empty selection for {characteristic.name!r}", code="empty-selection"
+            )
+            return None
+        chosen: list[Value] = []
+        before = len(reader.faults)
+        for index, item in enumerate(raw):
+            value = _read_value(reader, (*path, index), characteristic, item)
+            if value is not None and value in chosen:
+                reader.fault((*path, index), f"{value!r} is listed twice", code="duplicate-value")
+            elif value is not None:
+                chosen.append(value)
+        if len(reader.faults) > before:
+            return None
+        return frozenset(chosen), _describe(characteristic, chosen)
+    if raw is None:
+        reader.fault(
+            path, f"no values selected for {characteristic.name!r}", code="empty-selection"
+        )
+        return None
+    if (
+        characteristic.kind == "integer"
+        and not exact
+        and isinstance(raw, int)
+        and not isinstance(raw, bool)
+    ):
+        return _read_maximum(reader, path, characteristic, raw)
+    value = _read_value(reader, path, characteristic, raw)
+    if value is None:
+        return None
+    return frozenset({value}), _describe(characteristic, [value])
+
+
+def _read_maximum(
+    reader: Reader, path: YPath, characteristic: Characteristic, maximum: int
+) -> tuple[frozenset[Value], str] | None:
+    low, high = int(characteristic.values[0]), int(characteristic.values[-1])
+    if maximum < low:
+        reader.fault(
+            path,
+            f"{characteristic.name} maximum must be at least {low}, got {maximum}",
+            code="out-of-range",
+        )
+        return None
+    if maximum > high:
+        reader.fault(
+            path,
+            f"{characteristic.name} maximum {maximum} exceeds the rule set's maximum of {high}",
+            code="out-of-range",
+        )
+        return None
+    return frozenset(range(low, maximum + 1)), f"in {low}..{maximum}"
+
+
+def _read_value(
+    reader: Reader, path: YPath, characteristic: Characteristic, raw: Any
+) -> Value | None:
+    if characteristic.kind == "integer":
+        if isinstance(raw, bool) or not isinstance(raw, int):
+            reader.fault(
+                path,
+                f"{characteristic.name} values are whole numbers, got {type_name(raw)}",
+                code="wrong-type",
+            )
+            return None
+        if characteristic.index(raw) is None:
+            low, high = characteristic.values[0], characteristic.values[-1]
+            reader.fault(
+                path,
+                f"{characteristic.name} {raw} is outside the rule set's range {low}..{high}",
+                code="out-of-range",
+            )
+            return None
+        return int(raw)
+    if isinstance(raw, bool) or not isinstance(raw, str | int | float):
+        reader.fault(
+            path, f"{characteristic.name} values are names, got {type_name(raw)}", code="wrong-type"
+        )
+        return None
+    text = str(raw).strip()
+    if characteristic.index(text) is None:
+        names = [str(v) for v in characteristic.values]
+        reader.fault(
+            path,
+            f"unknown {characteristic.label.lower()} {text!r}{did_you_mean(text, names)}",
+            code="unknown-reference",
+        )
+        return None
+    return text
+
+
+def _read_selection_mapping(
+    reader: Reader, path: YPath, characteristic: Characteristic, spec: dict[Any, Any]
+) -> tuple[frozenset[Value], str] | None:
+    keys = {str(k): v for k, v in spec.items()}
+    reader.unknown_keys(path, keys, _SELECTION_KEYS, "selection field")
+    allowed: set[Value] = set(characteristic.values)
+    parts = []
+    before = len(reader.faults)
+    if "min" in keys or "max" in keys:
+        allowed, text = _read_bounds(reader, path, characteristic, allowed)
+        parts.append(text)
+    if "component" in keys:
+        members: set[Value] = set()
+        named = reader.names((*path, "component"), "component names")
+        for item_path, name in named:
+            component = characteristic.component(name)
+            if component is None:
+                names = [c.name for c in characteristic.components]
+                reader.fault(
+                    item_path,
+                    f"unknown {characteristic.name} component {name!r}{did_you_mean(name, names)}",
+                    code="unknown-reference",
+                )
+            else:
+                members.update(component.values)
+        allowed &= members
+        parts.append("in component " + ", ".join(repr(name) for _, name in named))
+    if "not" in keys:
+        raw = keys["not"]
+        items = list(enumerate(raw)) if isinstance(raw, list) else [(None, raw)]
+        excluded: list[Value] = []
+        for index, item in items:
+            item_path = (*path, "not") if index is None else (*path, "not", index)
+            value = _read_value(reader, item_path, characteristic, item)
+            if value is not None:
+                excluded.append(value)
+        allowed -= set(excluded)
+        parts.append("not in " + _set_text(characteristic, excluded))
+    if len(reader.faults) > before:
+        return None
+    if not allowed:
+        reader.fault(
+            path, f"selection for {characteristic.name!r} leaves no values", code="empty-selection"
+        )
+        return None
+    return frozenset(allowed), " and ".join(parts)
+
+
+def _read_bounds(
+    reader: Reader, path: YPath, characteristic: Characteristic, allowed: set[Value]
+) -> tuple[set[Value], str]:
+    """``allowed`` cut to a selection's ``min``/``max``, and how to say it."""
+    if characteristic.kind != "integer":
+        reader.fault(
+            path,
+            f"min/max apply to whole-number characteristics; "
+            f"{characteristic.name!r} has named values",
+            code="wrong-type",
+        )
+        return allowed, ""
+    low = reader.integer((*path, "min"), "min", required=False)
+    high = reader.integer((*path, "max"), "max", required=False)
+    first, last = int(characteristic.values[0]), int(characteristic.values[-1])
+    for key, bound in (("min", low), ("max", high)):
+        if bound is not None and not first <= bound <= last:
+            reader.fault(
+                (*path, key),
+                f"{characteristic.name} {key} {bound} is outside the "
+                f"rule set's range {first}..{last}",
+                code="out-of-range",
+            )
+    kept: set[Value] = {
+        v
+        for v in allowed
+        if isinstance(v, int) and (low is None or v >= low) and (high is None or v <= high)
+    }
+    return kept, f"in {'' if low is None else low}..{'' if high is None else high}"
+
+
+def _set_text(characteristic: Characteristic, values: Iterable[Value]) -> str:
+    chosen = set(values)
+    return "{" + ", ".join(str(v) for v in characteristic.values if v in chosen) + "}"
+
+
+def _describe(characteristic: Characteristic, values: list[Value]) -> str:
+    if len(set(values)) == 1:
+        return f"is {values[0]}"
+    return "in " + _set_text(characteristic, values)

@@ -1,0 +1,88 @@
+"""Reading input files with a size limit, and every failure as a located error.
+
+Every file a command reads (rule sets, teams, profiles, URDF, topic lists) goes through here:
+at most ``limit`` bytes are read, whatever ``stat()`` says (it says 0 for pipes and
+``/dev/zero``), and a missing, unreadable, oversized, binary or non-UTF-8 file is an
+:class:`~solver.errors.InputError` naming it.
+
+Not here: parsing what was read (:mod:`solver.files.yamlio`, :mod:`solver.identify.safexml`).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from solver.errors import InputError
+
+__all__ = ["MAX_SHOWN_NAME", "read_bounded", "read_text", "sha256_bounded", "shown_name"]
+
+# A file name comes from the user or from a file (``rules: ...``): in messages it is shown
+# escaped (no NUL, newline or terminal escape gets through) and at most this long.
+MAX_SHOWN_NAME = 300
+
+
+def shown_name(name: str) -> str:
+    """``name`` as a message may show it: escaped when it holds anything unprintable, cut."""
+    if name.isprintable() and len(name) <= MAX_SHOWN_NAME:
+        return name
+    escaped = name.encode("unicode_escape", "backslashreplace").decode("ascii")
+    if len(escaped) > MAX_SHOWN_NAME:
+        escaped = escaped[: MAX_SHOWN_NAME - 3] + "..."
+    return escaped
+
+
+def sha256_bounded(path: str | Path, *, limit: int) -> str | None:
+    """The SHA-256 of ``path`` read through :func:`read_bounded`; ``None`` when it cannot be
+    read or is larger than ``limit`` (an up-to-date check then says "not up to date" and the
+    solve that follows reports the located error)."""
+    try:
+        import hashlib  # only `batch` digests files; loading OpenSSL costs every start 5 ms
+
+        return hashlib.sha256(read_bounded(path, limit=limit)).hexdigest()
+    except InputError:
+        return None
+
+
+def read_bounded(
+    path: str | Path, *, display: str | None = None, limit: int, what: str = "file"
+) -> bytes:
+    """The bytes of ``path``, refusing more than ``limit`` without reading them all."""
+    name = shown_name(display if display is not None else str(path))
+    file = Path(path)
+    try:
+        if file.is_dir():
+            raise InputError.at(name, f"is a directory, not a {what}")
+        with file.open("rb") as stream:
+            data = stream.read(limit + 1)  # one byte past the limit says "too large"
+    except FileNotFoundError:
+        raise InputError.at(name, "no such file") from None
+    except PermissionError:
+        raise InputError.at(name, "permission denied") from None
+    except OSError as error:
+        raise InputError.at(name, f"cannot read: {error.strerror or error}") from None
+    except InputError:
+        raise
+    except ValueError:
+        # Path.open refuses a NUL byte in the name ("embedded null byte"); no file has one.
+        raise InputError.at(
+            name, "not a usable file name (it contains a NUL byte)", code="bad-name"
+        ) from None
+    if len(data) > limit:
+        raise InputError.at(name, f"file is larger than {limit} bytes; refused", code="too-large")
+    return data
+
+
+def read_text(
+    path: str | Path, *, display: str | None = None, limit: int, what: str = "file"
+) -> str:
+    """:func:`read_bounded`, decoded as UTF-8 (a byte-order mark is dropped)."""
+    name = shown_name(display if display is not None else str(path))
+    raw = read_bounded(path, display=name, limit=limit, what=what)
+    if b"\x00" in raw:
+        raise InputError.at(name, f"contains NUL bytes: a binary file, not a {what}")
+    try:
+        return raw.decode("utf-8-sig")
+    except UnicodeDecodeError as error:
+        raise InputError.at(
+            name, f"not UTF-8 text (invalid byte at offset {error.start}); is this a {what}?"
+        ) from None

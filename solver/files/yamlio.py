@@ -1,0 +1,345 @@
+"""Safe YAML loading that remembers where every value came from.
+
+PyYAML's loaders lose positions and silently keep the last of two duplicate keys. Here a file is
+*composed* into nodes (no Python objects are constructed from tags, so ``!!python/object`` and
+friends are refused), then walked into plain ``dict``/``list``/scalar data while recording the
+line and column of every key and value under its path. Duplicate keys, recursive or exploding
+aliases, unsupported tags, oversized files and non-UTF-8 bytes are all reported as located faults.
+
+Not here: what the data means. :mod:`solver.core.rules` and :mod:`solver.core.team` read the data
+and use
+:meth:`Document.location` to say where a problem is.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Collection, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+from solver.errors import Fault, InputError, Location
+from solver.files.inputfile import read_text
+
+__all__ = [
+    "MAX_FILE_BYTES",
+    "MAX_KEY_CHARS",
+    "MAX_TEXT_CHARS",
+    "Document",
+    "PathPart",
+    "format_path",
+    "load_document",
+    "parse_document",
+]
+
+PathPart = str | int
+YamlPath = tuple[PathPart, ...]
+
+MAX_FILE_BYTES = 16 * 1024 * 1024
+# A document with more values than this, counting every alias expansion, is refused: this is
+# what stops "billion laughs" style alias bombs from exhausting memory.
+MAX_NODES = 200_000
+# Nesting deeper than this is refused (rule and team files nest a handful of levels).
+MAX_DEPTH = 64
+# A mapping key is a name (a characteristic, a kinematic type, a field): at most this long.
+MAX_KEY_CHARS = 200
+# Any text value (a description is the longest there is) is at most this long: a 15 MB name
+# would otherwise travel through solving, charts and reports.
+MAX_TEXT_CHARS = 10_000
+# Parsing events read before composing: a document that needs more than this many (a 15 MB
+# flow-style line of a million entries) is refused before any node is built. Every value is
+# one event (two for a collection), so this is never reached below MAX_NODES values.
+MAX_EVENTS = 2 * MAX_NODES + 16
+# libyaml when PyYAML has it (ten to fifty times faster on big inputs; same nodes, same marks).
+_LOADER: Any = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+
+_PLAIN_TAGS = {
+    "tag:yaml.org,2002:str",
+    "tag:yaml.org,2002:int",
+    "tag:yaml.org,2002:float",
+    "tag:yaml.org,2002:bool",
+    "tag:yaml.org,2002:null",
+}
+_TIMESTAMP_TAG = "tag:yaml.org,2002:timestamp"
+_MAP_TAG = "tag:yaml.org,2002:map"
+_SEQ_TAG = "tag:yaml.org,2002:seq"
+
+
+def format_path(path: Sequence[PathPart]) -> str:
+    """``("team", "UAV", "sensor_type", 1)`` -> ``team.UAV.sensor_type[1]``."""
+    text = ""
+    for part in path:
+        if isinstance(part, int):
+            text += f"[{part}]"
+        else:
+            text += f".{part}" if text else str(part)
+    return text
+
+
+@dataclass(frozen=True)
+class Document:
+    """Plain data loaded from one YAML file, with the position of every key and value."""
+
+    file: str
+    data: Any
+    value_marks: dict[YamlPath, tuple[int, int]] = field(default_factory=dict, repr=False)
+    key_marks: dict[YamlPath, tuple[int, int]] = field(default_factory=dict, repr=False)
+    # Faults the caller chose to tolerate (``tolerate=`` of :func:`load_document`), e.g. the
+    # duplicate keys that ``teleop-ui check`` reports as findings; the first value was kept.
+    tolerated: tuple[Fault, ...] = field(default=(), repr=False)
+
+    def location(self, path: Sequence[PathPart] = (), *, key: bool = False) -> Location:
+        """Where the value at ``path`` is (or its key, with ``key=True``).
+
+        A path that was never recorded (a missing key, say) is located at its nearest recorded
+        ancestor, which is where a user would add it.
+        """
+        path = tuple(path)
+        line: int | None
+        column: int | None
+        if key and path in self.key_marks:
+            line, column = self.key_marks[path]
+        else:
+            probe = path
+            while probe and probe not in self.value_marks:
+                probe = probe[:-1]
+            line, column = self.value_marks.get(probe, (None, None))
+        return Location(self.file, line, column, format_path(path))
+
+    def fault(self, path: Sequence[PathPart], message: str, *, key: bool = False) -> Fault:
+        """A fault located at ``path`` in this document."""
+        return Fault(self.location(path, key=key), message)
+
+
+def load_document(
+    path: str | Path, *, display: str | None = None, tolerate: Collection[str] = ()
+) -> Document:
+    """Read and compose one YAML file; :class:`InputError` with a location on any problem.
+
+    Faults whose ``code`` is in ``tolerate`` (only ``duplicate-key`` makes sense: the first
+    value is kept) do not raise; they are kept in :attr:`Document.tolerated`.
+    """
+    name = display if display is not None else str(path)
+    text = read_text(path, display=name, limit=MAX_FILE_BYTES, what="YAML file")
+    return parse_document(text, name, tolerate=tolerate)
+
+
+def parse_document(
+    text: str, name: str = "<string>", *, tolerate: Collection[str] = ()
+) -> Document:
+    """Compose YAML text into a :class:`Document`; :class:`InputError` on any problem.
+
+    ``tolerate``: fault codes kept in :attr:`Document.tolerated` instead of raised.
+    """
+    if "\x00" in text:
+        raise InputError.at(name, "contains NUL bytes; is this a YAML file?")
+    try:
+        _count_events(text, name)
+        node = yaml.compose(text, Loader=_LOADER)
+    except yaml.MarkedYAMLError as error:
+        mark = error.problem_mark or error.context_mark
+        problem = _short(error.problem or error.context or "invalid YAML", 120)
+        if mark is None:
+            raise InputError.at(name, f"YAML syntax error: {problem}") from None
+        raise InputError.at(
+            name,
+            f"YAML syntax error: {problem}",
+            line=mark.line + 1,
+            column=mark.column + 1,
+            code="yaml",
+        ) from None
+    except yaml.YAMLError as error:
+        raise InputError.at(name, f"YAML error: {_short(str(error), 120)}") from None
+    except RecursionError:
+        raise InputError.at(
+            name, f"nested too deeply (more than {MAX_DEPTH} levels); refused", code="too-large"
+        ) from None
+    walker = _Walker(name)
+    try:
+        data = walker.convert(node, ()) if node is not None else None
+    except _TooLarge:
+        data = None
+    if any(fault.code not in tolerate for fault in walker.faults):
+        raise InputError(walker.faults)
+    return Document(name, data, walker.value_marks, walker.key_marks, tuple(walker.faults))
+
+
+def _count_events(text: str, name: str) -> None:
+    """Refuse, before composing anything, a document with more parsing events than any
+    document of at most MAX_NODES values has (composing first is what took a minute)."""
+    for count, event in enumerate(yaml.parse(text, Loader=_LOADER)):
+        if count > MAX_EVENTS:
+            mark = event.start_mark
+            raise InputError.at(
+                name,
+                f"more than {MAX_NODES} values; refused",
+                line=None if mark is None else mark.line + 1,
+                column=None if mark is None else mark.column + 1,
+                code="too-large",
+            )
+
+
+class _TooLarge(Exception):
+    """Stops the walk at once: finishing it is exactly the work an alias bomb (or a needlessly
+    deep nest) asks for."""
+
+
+class _Walker:
+    """Turns composed nodes into plain data, collecting faults instead of stopping at the first."""
+
+    def __init__(self, name: str) -> None:
+        self.name = name
+        self.faults: list[Fault] = []
+        self.value_marks: dict[YamlPath, tuple[int, int]] = {}
+        self.key_marks: dict[YamlPath, tuple[int, int]] = {}
+        self.nodes = 0
+        self.active: set[int] = set()
+        self.constructor = yaml.SafeLoader("")
+
+    def fault(self, node: yaml.Node, path: YamlPath, message: str, code: str = "yaml") -> None:
+        mark = node.start_mark
+        self.faults.append(
+            Fault(
+                Location(self.name, mark.line + 1, mark.column + 1, format_path(path)),
+                message,
+                code,
+            )
+        )
+
+    def convert(self, node: yaml.Node, path: YamlPath) -> Any:
+        self.nodes += 1
+        if self.nodes > MAX_NODES:
+            self.fault(
+                node,
+                path,
+                f"document expands to more than {MAX_NODES} values (an alias bomb?); refused",
+                "too-large",
+            )
+            raise _TooLarge
+        if len(path) > MAX_DEPTH:
+            self.fault(
+                node,
+                path[:MAX_DEPTH],
+                f"nested more than {MAX_DEPTH} levels deep; refused",
+                "too-large",
+            )
+            raise _TooLarge
+        self.value_marks.setdefault(path, (node.start_mark.line + 1, node.start_mark.column + 1))
+        if id(node) in self.active:
+            self.fault(node, path, "recursive alias: a value refers to itself")
+            return None
+        self.active.add(id(node))
+        try:
+            if isinstance(node, yaml.MappingNode):
+                return self._mapping(node, path)
+            if isinstance(node, yaml.SequenceNode):
+                return self._sequence(node, path)
+            return self._scalar(node, path)
+        finally:
+            self.active.discard(id(node))
+
+    def _mapping(self, node: yaml.MappingNode, path: YamlPath) -> dict[Any, Any] | None:
+        if node.tag != _MAP_TAG:
+            self.fault(node, path, f"unsupported YAML tag '{_short(node.tag, 40)}'")
+            return None
+        result: dict[Any, Any] = {}
+        first_seen: dict[Any, int] = {}
+        for key_node, value_node in node.value:
+            if key_node.tag == "tag:yaml.org,2002:merge":
+                self.fault(
+                    key_node, path, "YAML merge keys ('<<') are not supported; write the keys out"
+                )
+                continue
+            if not isinstance(key_node, yaml.ScalarNode):
+                self.fault(key_node, path, "mapping keys must be plain scalars")
+                continue
+            key = self._scalar(key_node, path)
+            if key is None and key_node.tag != "tag:yaml.org,2002:null":
+                continue
+            if len(str(key_node.value)) > MAX_KEY_CHARS:
+                self.fault(
+                    key_node,
+                    path,
+                    f"a key longer than {MAX_KEY_CHARS} characters; names are at most that long",
+                    "too-large",
+                )
+                continue
+            try:
+                hash(key)
+            except TypeError:
+                self.fault(key_node, path, "mapping keys must be plain scalars")
+                continue
+            child = (*path, str(key))
+            # Keys are names: 1 and "1", true and "True" name the same thing.
+            if str(key) in first_seen:
+                self.fault(
+                    key_node,
+                    child,
+                    f"duplicate key {key!r} (first at line {first_seen[str(key)]})",
+                    "duplicate-key",
+                )
+                continue
+            first_seen[str(key)] = key_node.start_mark.line + 1
+            self.key_marks[child] = (key_node.start_mark.line + 1, key_node.start_mark.column + 1)
+            result[key] = self.convert(value_node, child)
+        return result
+
+    def _sequence(self, node: yaml.SequenceNode, path: YamlPath) -> list[Any] | None:
+        if node.tag != _SEQ_TAG:
+            self.fault(node, path, f"unsupported YAML tag '{_short(node.tag, 40)}'")
+            return None
+        return [self.convert(item, (*path, index)) for index, item in enumerate(node.value)]
+
+    def _scalar(self, node: yaml.Node, path: YamlPath) -> Any:
+        if node.tag == _TIMESTAMP_TAG:
+            return str(node.value)
+        if node.tag not in _PLAIN_TAGS:
+            self.fault(
+                node,
+                path,
+                f"unsupported YAML tag '{_short(node.tag, 40)}'; only plain "
+                "strings, numbers, booleans, lists and mappings are allowed",
+            )
+            return None
+        text = str(node.value)
+        if len(text) > MAX_TEXT_CHARS:
+            self.fault(
+                node, path, f"a value longer than {MAX_TEXT_CHARS} characters; refused", "too-large"
+            )
+            return None
+        if any("\ud800" <= char <= "\udfff" for char in text):
+            # A "\udcff" escape: no file, terminal or UTF-8 output can hold it.
+            self.fault(
+                node, path, "contains an unpaired surrogate escape (\\ud800-\\udfff); not text"
+            )
+            return None
+        try:
+            value = self.constructor.construct_object(node)
+        except yaml.YAMLError as error:
+            self.fault(node, path, f"cannot read value: {_short(str(error))}")
+            return None
+        except (ValueError, OverflowError):
+            # int() of more than 4,300 digits (Python's int-to-string limit).
+            self.fault(node, path, "a number too large to use; refused", "too-large")
+            return None
+        if (
+            isinstance(value, int)
+            and not isinstance(value, bool)
+            and value.bit_length() > _MAX_INT_BITS
+        ):
+            # 0x... with thousands of digits is no error to int(), but printing it would be.
+            self.fault(node, path, "a number too large to use; refused", "too-large")
+            return None
+        return value
+
+
+# Whole numbers beyond 2**63 mean nothing in a rule or team file.
+_MAX_INT_BITS = 63
+
+
+def _short(text: str, limit: int = 80) -> str:
+    """``text`` escaped and cut to ``limit`` characters, for quoting input in a message."""
+    escaped = text.encode("unicode_escape", "backslashreplace").decode("ascii")
+    return escaped if len(escaped) <= limit else escaped[: limit - 3] + "..."

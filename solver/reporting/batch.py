@@ -1,0 +1,573 @@
+"""Solving many teams at once: find the files, solve them in parallel, summarise, skip reruns.
+
+``teleop-ui batch`` is built from four steps, each a function here:
+
+1. :func:`find_teams` turns file names, shipped team names (``case3``), folders (searched
+   recursively for ``*.yaml`` and ``*.yml``) and glob patterns (``**`` included) into a list
+   of team files.
+2. :func:`plan` gives each file its outputs in the ``teams/`` folder of the output folder,
+   mirroring the files' folders below their deepest common folder (``teams/a/x.yaml`` ->
+   ``OUT/teams/a/x.json``), and decides which are already up to date.
+3. :func:`run_batch` solves the rest, in worker processes when asked, and yields one
+   :class:`Outcome` per team as it finishes. A bad team file is an outcome with its located
+   error, never an exception that stops the others. A rule set or an identification profile
+   (:func:`solver.files.filekind.file_kind`; a folder such as ``rules/`` holds all kinds) is
+   *skipped*.
+4. :func:`write_summary` writes ``summary.csv`` and ``summary.md``: one row per team in input
+   order, naming each team's rule set.
+
+**Layout.** The top of the output folder holds only the summaries and ``.stamps/``; every
+per-team output is below ``teams/``. So no team's name can collide with them: a team file
+called ``summary.yaml`` gets ``OUT/teams/summary.md``, never the batch's ``OUT/summary.md``.
+
+Every file is written atomically (:func:`solver.files.atomic.write_atomic`): an interrupted batch
+leaves finished teams complete and no half-written file.
+
+**Up to date.** Beside each team's outputs a *stamp* (``OUT/.stamps/<name>.json``, written
+last) records the SHA-256 of the team file and of the rule file it used, the teleop-ui version
+and the options that shape the outputs. A rerun skips a team when its stamp matches and its
+outputs exist. Content hashes, not modification times: a ``git checkout`` or a copy changes
+times without changing content, and two edits within the file system's time resolution would
+look alike. Reading and hashing two small files costs far less than solving. A team that fails
+leaves no outputs and no stamp (stale ones are removed), so it is tried again next time.
+
+Not here: progress display and exit status (``solver/cli/batch.py``), the per-team JSON shape
+(:func:`solver.core.contracts.solution_data`), reports (:mod:`solver.reporting.report`).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import csv
+import glob
+import io
+import json
+import os
+import time
+from collections.abc import Iterator, Sequence
+from dataclasses import dataclass, replace
+from importlib.metadata import PackageNotFoundError, version
+from pathlib import Path
+from typing import TYPE_CHECKING, Any, Literal
+
+from solver.core.contracts import solution_data
+from solver.core.rules import default_rules_path, shipped_name
+from solver.core.solution import solve
+from solver.core.team import parse_team, resolve_team_path
+from solver.errors import Fault, InputError, Location, SolverError
+from solver.files.atomic import write_atomic
+from solver.files.filekind import describe, file_kind, why
+from solver.files.inputfile import read_text, sha256_bounded
+from solver.files.yamlio import MAX_FILE_BYTES, load_document
+from solver.reporting import markdown
+from solver.reporting.render import csv_row, dumps
+from solver.reporting.report import image_names, write_report
+
+if TYPE_CHECKING:
+    from concurrent.futures import Future
+
+__all__ = [
+    "Job",
+    "Outcome",
+    "SummaryRow",
+    "find_teams",
+    "plan",
+    "run_batch",
+    "run_job",
+    "summary_csv",
+    "summary_markdown",
+    "write_summary",
+]
+
+Status = Literal["ok", "failed", "skipped"]
+Action = Literal["solved", "up to date", "failed", "skipped"]
+ReportFormat = Literal["html", "markdown"]
+
+_PATTERN_CHARACTERS = set("*?[")
+_TEAM_SUFFIXES = (".yaml", ".yml")
+_REPORT_SUFFIX: dict[ReportFormat, str] = {"html": ".html", "markdown": ".md"}
+STAMPS = ".stamps"
+TEAM_OUTPUTS = "teams"
+SUMMARY_FILES = ("summary.csv", "summary.md")
+
+
+@dataclass(frozen=True, slots=True)
+class Job:
+    """One team file and where its outputs go."""
+
+    team_file: Path
+    shown: str  # the file as the user's pattern found it
+    out: Path  # the output folder
+    output: Path  # the per-team JSON
+    stamp: Path
+    report: Path | None = None  # the per-team report, when asked for
+    rules: str | None = None  # a rule file that overrides the team's own
+    up_to_date: bool = False
+
+    @property
+    def options(self) -> dict[str, Any]:
+        """What besides the input files shapes the outputs (recorded in the stamp)."""
+        return {
+            "rules": None if self.rules is None else str(Path(self.rules).resolve()),
+            "report": None if self.report is None else self.report.suffix,
+        }
+
+    @property
+    def outputs(self) -> tuple[Path, ...]:
+        """Every file the job writes besides its stamp (a Markdown report's charts too)."""
+        if self.report is None:
+            return (self.output,)
+        if self.report.suffix != _REPORT_SUFFIX["markdown"]:
+            return (self.output, self.report)
+        return (self.output, *image_names(self.report).values(), self.report)
+
+
+@dataclass(frozen=True, slots=True)
+class SummaryRow:
+    """One line of the summary: what a team gave, or why it gave nothing."""
+
+    file: str
+    status: Status
+    team: str = ""
+    rules: str = ""
+    rules_file: str = ""
+    kinematic_types: int | None = None
+    valid_robots: int | None = None
+    ui_configurations: int | None = None
+    default_configuration: int | None = None
+    published: str = ""
+    reproduced: str = ""
+    output: str = ""
+    message: str = ""
+
+
+@dataclass(frozen=True, slots=True)
+class Outcome:
+    """What became of one job: the summary row, what was done, how long it took."""
+
+    job: Job
+    action: Action
+    row: SummaryRow
+    seconds: float = 0.0
+
+    @property
+    def failed(self) -> bool:
+        return self.row.status == "failed"
+
+
+# ---- 1. finding the team files -------------------------------------------------------------
+
+
+def find_teams(patterns: Sequence[str]) -> list[tuple[Path, str]]:
+    """The team files named by ``patterns``: ``(path, shown)`` pairs in a stable order.
+
+    A folder gives every ``*.yaml``/``*.yml`` below it, a glob pattern its matching files,
+    each sorted by name; a name that is no file but a shipped team's (``case3``) gives that
+    team, shown as ``rules/teams/case3.yaml``. The patterns keep their order and a file named
+    twice counts once. A pattern that names nothing, or an empty one, is an
+    :class:`InputError` (all such patterns are reported).
+    """
+    found: list[tuple[Path, str]] = []
+    seen: set[Path] = set()
+    faults = []
+    for pattern in patterns:
+        shown_as: str | None = None
+        if not pattern.strip():
+            # Path("") is the current folder: an empty pattern (an unset shell variable)
+            # would quietly batch everything below it.
+            faults.append(
+                Fault(
+                    Location("<arguments>"),
+                    f"empty pattern {pattern!r}: name "
+                    "team files, folders or globs ('.' for the current folder)",
+                    "no-match",
+                )
+            )
+            continue
+        if _PATTERN_CHARACTERS & set(pattern):
+            matches = sorted(m for m in glob.glob(pattern, recursive=True) if Path(m).is_file())
+        elif Path(pattern).is_dir():
+            matches = sorted(
+                str(p)
+                for p in Path(pattern).rglob("*")
+                if p.suffix.lower() in _TEAM_SUFFIXES and p.is_file()
+            )
+        elif Path(pattern).is_file():
+            matches = [pattern]
+        elif resolve_team_path(pattern).is_file():
+            shipped = resolve_team_path(pattern)
+            matches, shown_as = [str(shipped)], shipped_name(shipped) or str(shipped)
+        else:
+            faults.append(Fault(Location(pattern), "no such file or folder", "no-match"))
+            continue
+        if not matches:
+            what = (
+                "folder holds no .yaml or .yml file"
+                if Path(pattern).is_dir()
+                else "pattern matches no file"
+            )
+            faults.append(Fault(Location(pattern), what, "no-match"))
+        for match in matches:
+            resolved = Path(match).resolve()
+            if resolved not in seen:
+                seen.add(resolved)
+                found.append((Path(match), shown_as or match))
+    if faults:
+        raise InputError(faults)
+    return found
+
+
+# ---- 2. planning the outputs ---------------------------------------------------------------
+
+
+def _relative_names(paths: Sequence[Path]) -> list[Path]:
+    """Each file's path below the deepest folder common to all, without its suffix."""
+    if not paths:
+        return []
+    resolved = [p.resolve() for p in paths]
+    root = Path(os.path.commonpath([str(p.parent) for p in resolved]))
+    names = [p.relative_to(root).with_suffix("") for p in resolved]
+    # Two files differing only in suffix (x.yaml, x.yml) keep their suffixes apart.
+    counts: dict[Path, int] = {}
+    for name in names:
+        counts[name] = counts.get(name, 0) + 1
+    return [
+        p.relative_to(root) if counts[n] > 1 else n for p, n in zip(resolved, names, strict=True)
+    ]
+
+
+def plan(
+    teams: Sequence[tuple[Path, str]],
+    out: str | Path,
+    *,
+    rules: str | None = None,
+    report: ReportFormat | None = None,
+    force: bool = False,
+) -> list[Job]:
+    """One :class:`Job` per team file, in order, with ``up_to_date`` decided (see module)."""
+    folder = Path(out)
+    outputs = folder / TEAM_OUTPUTS  # apart from the summaries: see "Layout" above
+    jobs = []
+    for (path, shown), name in zip(teams, _relative_names([p for p, _ in teams]), strict=True):
+        output = outputs / f"{name}.json"
+        job = Job(
+            path,
+            shown,
+            folder,
+            output,
+            folder / STAMPS / f"{name}.json",
+            None if report is None else outputs / f"{name}{_REPORT_SUFFIX[report]}",
+            rules,
+        )
+        jobs.append(replace(job, up_to_date=not force and _is_up_to_date(job)))
+    return jobs
+
+
+def _sha256(path: Path) -> str | None:
+    # Bounded like every read: a team's `rules: /dev/zero` must not be hashed forever.
+    return sha256_bounded(path, limit=MAX_FILE_BYTES)
+
+
+def _version() -> str:
+    try:
+        return version("teleop-ui")
+    except PackageNotFoundError:
+        return "unknown"
+
+
+def _read_json(path: Path) -> Any:
+    try:
+        return json.loads(read_text(path, limit=MAX_FILE_BYTES, what="JSON file"))
+    except (SolverError, ValueError, RecursionError):
+        return None
+
+
+def _is_up_to_date(job: Job) -> bool:
+    stamp = _read_json(job.stamp)
+    if (
+        not isinstance(stamp, dict)
+        or stamp.get("teleop_ui") != _version()
+        or stamp.get("options") != job.options
+    ):
+        return False
+    if not all(p.is_file() for p in job.outputs) or not isinstance(_read_json(job.output), dict):
+        return False
+    if stamp.get("team_sha256") != _sha256(job.team_file):
+        return False
+    rules_file = stamp.get("rules_file")
+    return isinstance(rules_file, str) and stamp.get("rules_sha256") == _sha256(Path(rules_file))
+
+
+# ---- 3. solving ---------------------------------------------------------------------------
+
+
+def _rules_file(job: Job, data: Any) -> Path:
+    """The rule file a team uses, found as :func:`solver.core.team.load_team` finds it."""
+    if job.rules is not None:
+        return Path(job.rules)
+    if isinstance(data, dict) and isinstance(data.get("rules"), str) and data["rules"]:
+        return job.team_file.parent / str(data["rules"])
+    return default_rules_path()
+
+
+def _row(job: Job, data: dict[str, Any]) -> SummaryRow:
+    """A summary row from a team's JSON (the same for a fresh solve and an up-to-date one)."""
+    totals = data.get("totals", {})
+    published = data.get("published")
+    figures = reproduced = ""
+    if isinstance(published, dict):
+        figures = f"{published.get('valid_robots')} / {published.get('ui_configurations')}"
+        agrees = (published.get("valid_robots"), published.get("ui_configurations")) == (
+            totals.get("valid_robots"),
+            totals.get("ui_configurations"),
+        )
+        reproduced = "yes" if agrees else "no"
+    return SummaryRow(
+        file=job.shown,
+        status="ok",
+        team=str(data.get("team", "")),
+        rules=str(data.get("rules", "")),
+        rules_file=str(data.get("rules_file", "")),
+        kinematic_types=len(data.get("by_type", [])),
+        valid_robots=totals.get("valid_robots"),
+        ui_configurations=totals.get("ui_configurations"),
+        default_configuration=data.get("default_configuration"),
+        published=figures,
+        reproduced=reproduced,
+        message="; ".join(f"warning: {w}" for w in data.get("warnings", [])),
+        output=" ".join(
+            p.relative_to(job.out).as_posix() for p in (job.output, job.report) if p is not None
+        ),
+    )
+
+
+def _remove_outputs(job: Job) -> None:
+    """A failed team leaves nothing that could pass for a current result."""
+    for path in (job.stamp, *job.outputs):
+        with contextlib.suppress(OSError):
+            path.unlink()
+
+
+def run_job(job: Job) -> Outcome:
+    """Solve one team and write its outputs; any failure becomes a failed :class:`Outcome`.
+
+    Runs in a worker process: it takes and returns only picklable values, and catches every
+    ``Exception`` so that one team's problem (even a bug) is reported, not raised.
+    """
+    started = time.perf_counter()
+    try:
+        team_hash = _sha256(job.team_file)
+        document = load_document(job.team_file, display=job.shown)
+        kind = file_kind(document)
+        if kind in ("rules", "profile", "presentation"):
+            row = SummaryRow(
+                file=job.shown,
+                status="skipped",
+                message=f"not a team file: {describe(kind)} ({why(kind)})",
+            )
+            return Outcome(job, "skipped", row, time.perf_counter() - started)
+        rules_file = _rules_file(job, document.data)
+        rules_hash = _sha256(rules_file)
+        team = parse_team(document, job.rules, folder=job.team_file.parent)
+        solution = solve(team)
+        data = solution_data(solution, configurations=True)
+        write_atomic(job.output, dumps(data))
+        if job.report is not None:
+            write_report(solution, job.report)
+        stamp = {
+            "teleop_ui": _version(),
+            "team_file": str(job.team_file.resolve()),
+            "team_sha256": team_hash,
+            "rules_file": str(rules_file.resolve()),
+            "rules_sha256": rules_hash,
+            "options": job.options,
+        }
+        write_atomic(job.stamp, dumps(stamp))
+    except SolverError as error:
+        message = str(error)
+    except Exception as error:  # one team's bug must not stop the batch: report it
+        message = f"{job.shown}: internal error (please report it): {type(error).__name__}: {error}"
+    else:
+        return Outcome(job, "solved", _row(job, data), time.perf_counter() - started)
+    _remove_outputs(job)
+    return Outcome(
+        job,
+        "failed",
+        SummaryRow(file=job.shown, status="failed", message=message),
+        time.perf_counter() - started,
+    )
+
+
+def _up_to_date(job: Job) -> Outcome:
+    data = _read_json(job.output)
+    return Outcome(job, "up to date", _row(job, data))
+
+
+def run_batch(jobs: Sequence[Job], workers: int = 1) -> Iterator[Outcome]:
+    """Outcomes of ``jobs``: the up-to-date ones first, the others as they finish.
+
+    With ``workers`` > 1 teams are solved in that many processes; the order of their outcomes
+    is then the order they finish in (the summary restores input order).
+    """
+    pending = []
+    for job in jobs:
+        if job.up_to_date:
+            yield _up_to_date(job)
+        else:
+            pending.append(job)
+    if workers <= 1 or len(pending) <= 1:
+        for job in pending:
+            yield run_job(job)
+        return
+    # Imported here: only a parallel run needs them, and `import solver` stays quick.
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor, as_completed
+    from concurrent.futures.process import BrokenProcessPool
+
+    # Not fork: the caller may be running threads (a progress bar's refresh thread), and a
+    # forked child can inherit a lock some thread held. forkserver starts workers from a
+    # clean single-threaded server.
+    methods = multiprocessing.get_all_start_methods()
+    context = multiprocessing.get_context("forkserver" if "forkserver" in methods else "spawn")
+    with ProcessPoolExecutor(
+        max_workers=min(workers, len(pending)),
+        mp_context=context,
+        initializer=_watch_parent,
+        initargs=(os.getpid(),),
+    ) as pool:
+        futures: dict[Future[Outcome], Job] = {pool.submit(run_job, job): job for job in pending}
+        for future in as_completed(futures):
+            try:
+                yield future.result()
+            except BrokenProcessPool as error:
+                # A worker died (killed, out of memory): its team and those queued behind
+                # it fail; the rest of the batch is reported as usual.
+                job = futures[future]
+                yield Outcome(
+                    job,
+                    "failed",
+                    SummaryRow(
+                        file=job.shown,
+                        status="failed",
+                        message=f"{job.shown}: the worker process solving it died ({error})",
+                    ),
+                )
+
+
+def _watch_parent(batch_pid: int) -> None:
+    """In a worker: exit as soon as the batch process is gone.
+
+    A ``kill -9`` of the batch gives it no chance to stop its pool; the forkserver then exits,
+    but workers waiting for (or solving) a team would live on, and the resource tracker with
+    them. A daemon thread checks every half second that the batch process still exists and
+    that this worker's parent (the forkserver, or the batch itself under spawn) is the same.
+    """
+    import threading
+
+    parent = os.getppid()
+
+    def watch() -> None:
+        while True:
+            time.sleep(0.5)
+            try:
+                os.kill(batch_pid, 0)
+            except ProcessLookupError:
+                os._exit(1)  # no cleanup to do: the batch that wanted the results is gone
+            except PermissionError:
+                pass  # the pid exists (reused by someone else's process: the ppid check below)
+            if os.getppid() != parent:
+                os._exit(1)
+
+    threading.Thread(target=watch, name="watch-batch", daemon=True).start()
+
+
+# ---- 4. the summary -----------------------------------------------------------------------
+
+_FIELDS = (
+    "file",
+    "status",
+    "team",
+    "rules",
+    "rules_file",
+    "kinematic_types",
+    "valid_robots",
+    "ui_configurations",
+    "default_configuration",
+    "published",
+    "reproduced",
+    "output",
+    "message",
+)
+
+
+def _cells(row: SummaryRow) -> list[str]:
+    return ["" if getattr(row, f) is None else str(getattr(row, f)) for f in _FIELDS]
+
+
+def summary_csv(rows: Sequence[SummaryRow]) -> str:
+    """The summary as CSV: a header line, then one row per team (cells that a spreadsheet
+    would read as a formula are neutralised: :func:`solver.reporting.render.csv_cell`)."""
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow(_FIELDS)
+    writer.writerows(csv_row(_cells(row)) for row in rows)
+    return buffer.getvalue()
+
+
+def summary_markdown(rows: Sequence[SummaryRow]) -> str:
+    """The summary as a Markdown page: counts, then one table row per team.
+
+    Names and messages are escaped (:mod:`solver.reporting.markdown`): they come from the team
+    files.
+    """
+    counts = {
+        status: sum(1 for r in rows if r.status == status) for status in ("ok", "failed", "skipped")
+    }
+    headers = [
+        "file",
+        "status",
+        "team",
+        "rules",
+        "valid robots",
+        "UI configurations",
+        "published",
+        "reproduced",
+        "output",
+        "message",
+    ]
+    table = [
+        [
+            r.file,
+            r.status,
+            r.team,
+            r.rules,
+            r.valid_robots,
+            r.ui_configurations,
+            r.published,
+            r.reproduced,
+            r.output,
+            r.message.replace("\n", "; "),
+        ]
+        for r in rows
+    ]
+    return (
+        f"# Batch summary\n\n{len(rows)} team files: {counts['ok']} ok, "
+        f"{counts['failed']} failed, {counts['skipped']} skipped\n\n"
+        + markdown.table(
+            headers, table, [False, False, False, False, True, True, False, False, False, False]
+        )
+    )
+
+
+def write_summary(
+    outcomes: Sequence[Outcome], jobs: Sequence[Job], out: str | Path
+) -> tuple[list[SummaryRow], list[Path]]:
+    """Write ``summary.csv`` and ``summary.md`` in ``out``, rows in the order of ``jobs``."""
+    by_job = {o.job: o.row for o in outcomes}
+    rows = [by_job[job] for job in jobs if job in by_job]
+    folder = Path(out)
+    written = [
+        write_atomic(folder / SUMMARY_FILES[0], summary_csv(rows)),
+        write_atomic(folder / SUMMARY_FILES[1], summary_markdown(rows)),
+    ]
+    return rows, written

@@ -1,0 +1,343 @@
+"""Rendering solutions, assignments and reproduction tables as text, JSON, CSV and Markdown.
+
+The JSON shapes are the project's documented, stable contract and live with their types
+(:mod:`solver.core.contracts`); the formats here are views of the same data. Output is
+deterministic: values in declared order, no timestamps, identical runs give identical bytes.
+
+Not here: the HTML/plot reports of ``teleop-ui report``.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import re
+from collections.abc import Sequence
+from typing import Any
+
+from solver.core.assignment import Assignment
+from solver.core.contracts import (
+    assignment_data,
+    integer_runs,
+    solution_data,
+    solution_warnings,
+    summary_data,
+)
+from solver.core.reproduce import Comparison, published_note
+from solver.core.rules import Characteristic, Component
+from solver.core.solution import Solution
+from solver.engines import describe
+from solver.reporting import markdown
+
+__all__ = [
+    "FORMATS",
+    "csv_cell",
+    "csv_row",
+    "dumps",
+    "method_text",
+    "render_assignment",
+    "render_comparisons",
+    "render_counts",
+    "render_solution",
+    "text_table",
+]
+
+FORMATS = ("text", "json", "csv", "markdown")
+
+
+def method_text(solution: Solution) -> str:
+    """How the counts were obtained, in words, per kinematic type where they differ."""
+    methods = [t.method for t in solution.by_type]
+    if len(set(methods)) <= 1:
+        return describe(methods[0]) if methods else "nothing to count"
+    return "; ".join(f"{t.kinematic_type}: {describe(t.method)}" for t in solution.by_type)
+
+
+def dumps(data: Any) -> str:
+    """JSON as the project writes it everywhere: indented, UTF-8 kept, trailing newline."""
+    return json.dumps(data, indent=2, ensure_ascii=False) + "\n"
+
+
+def text_table(
+    headers: Sequence[str], rows: Sequence[Sequence[Any]], right: Sequence[bool] | None = None
+) -> str:
+    """A plain aligned table; ``right[i]`` right-aligns column i (numbers)."""
+    cells = [
+        [str(h) for h in headers],
+        *[["" if v is None else str(v) for v in row] for row in rows],
+    ]
+    widths = [max(len(row[i]) for row in cells) for i in range(len(headers))]
+    align = right or [False] * len(headers)
+    lines = []
+    for row in cells:
+        parts = [
+            cell.rjust(w) if a else cell.ljust(w)
+            for cell, w, a in zip(row, widths, align, strict=True)
+        ]
+        lines.append("  ".join(parts).rstrip())
+    return "\n".join(lines) + "\n"
+
+
+# A spreadsheet reads a cell starting with one of these as a formula (OWASP "CSV injection"):
+# `=HYPERLINK(...)` in a team's name would run when someone opens the summary.
+_FORMULA_STARTS = ("=", "+", "-", "@", "\t", "\r")
+_NUMBER = re.compile(r"[+-]?[0-9]+(\.[0-9]+)?([eE][+-]?[0-9]+)?")
+
+
+def csv_cell(value: Any) -> Any:
+    """``value`` as a CSV cell no spreadsheet runs: text that starts like a formula gets a
+    leading ``'`` (OWASP's advice); numbers, and text that is just a number, are left alone."""
+    if (
+        isinstance(value, str)
+        and value.startswith(_FORMULA_STARTS)
+        and _NUMBER.fullmatch(value) is None
+    ):
+        return "'" + value
+    return value
+
+
+def csv_row(values: Sequence[Any]) -> list[Any]:
+    """:func:`csv_cell` of every value of a row."""
+    return [csv_cell(value) for value in values]
+
+
+def _csv(headers: Sequence[str], rows: Sequence[Sequence[Any]]) -> str:
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow(csv_row(headers))
+    writer.writerows(csv_row(row) for row in rows)
+    return buffer.getvalue()
+
+
+def _summary_rows(solution: Solution) -> list[list[Any]]:
+    rows = []
+    for summary in (*solution.by_type, solution.totals):
+        ratio = summary.reduction_ratio
+        rows.append(
+            [
+                summary.kinematic_type,
+                summary.valid_robots,
+                summary.ui_configurations,
+                "" if ratio is None else f"{ratio:.2f}",
+            ]
+        )
+    return rows
+
+
+def _component_text(
+    characteristic: Characteristic, component: Component, served: Sequence[Any]
+) -> str:
+    if characteristic.kind != "integer":
+        return component.name
+    counts = sorted(int(v) for v in served)
+    clusters = sorted({component.clusters(count) for count in counts})
+    return f"{component.name} ({_runs_text(counts)}: {_runs_text(clusters)} clusters)"
+
+
+def _runs_text(numbers: Sequence[int]) -> str:
+    return ", ".join(
+        f"{low}" if low == high else f"{low}..{high}" for low, high in integer_runs(numbers)
+    )
+
+
+def _configuration_rows(solution: Solution) -> tuple[list[str], list[list[Any]]]:
+    rules = solution.rules
+    headers = ["#", *(c.label for c in rules.characteristics), "robots"]
+    rows = []
+    for configuration in solution.configurations:
+        rows.append(
+            [
+                configuration.number,
+                *(
+                    _component_text(c, component, served)
+                    for c, component, served in zip(
+                        rules.characteristics,
+                        configuration.components,
+                        configuration.served,
+                        strict=True,
+                    )
+                ),
+                configuration.robots,
+            ]
+        )
+    return headers, rows
+
+
+_SUMMARY_HEADERS = [
+    "kinematic type",
+    "valid robots",
+    "UI configurations",
+    "robots per configuration",
+]
+
+
+def render_solution(solution: Solution, fmt: str = "text", *, configurations: bool = False) -> str:
+    """A solution in ``fmt`` (one of :data:`FORMATS`); ``configurations`` adds the list."""
+    if fmt == "json":
+        return dumps(solution_data(solution, configurations=configurations))
+    if fmt == "csv":
+        if configurations:
+            headers, rows = _configuration_rows(solution)
+            return _csv(
+                ["number", *solution.rules.names, "valid_robots"],
+                [[row[0], *row[1:-1], row[-1]] for row in rows],
+            )
+        return _csv(
+            ["kinematic_type", "valid_robots", "ui_configurations", "reduction_ratio"],
+            _summary_rows(solution),
+        )
+    numbers = [False, True, True, True]
+    if fmt == "markdown":
+        summary = markdown.table(_SUMMARY_HEADERS, _summary_rows(solution), numbers)
+        parts = [
+            markdown.heading(2, solution.team.name) + "\n",
+            "",
+            summary,
+            "",
+            *(f"{markdown.escape(line)}  " for line in _footer(solution)),
+        ]
+        if configurations:
+            headers, rows = _configuration_rows(solution)
+            parts += [
+                "",
+                markdown.table(headers, rows, [True] + [False] * (len(headers) - 2) + [True]),
+            ]
+        return "\n".join(parts).rstrip("\n") + "\n"
+    rules = solution.rules
+    text = f"{solution.team.name}  (rules: {rules.name}, {rules.file})\n\n"
+    text += text_table(_SUMMARY_HEADERS, _summary_rows(solution), numbers)
+    text += "\n" + "\n".join(_footer(solution)) + "\n"
+    if configurations:
+        headers, rows = _configuration_rows(solution)
+        text += "\n" + text_table(headers, rows, [True] + [False] * (len(headers) - 2) + [True])
+    return text
+
+
+def render_counts(solution: Solution, fmt: str = "text") -> str:
+    """Per-type counts only (``teleop-ui count``): text, JSON or Markdown."""
+    if fmt == "json":
+        return dumps(
+            {
+                "team": solution.team.name,
+                "rules": solution.rules.name,
+                "rules_file": solution.rules.file,
+                "bound": solution.bound,
+                "by_type": [summary_data(t) for t in solution.by_type],
+                "totals": {
+                    k: v for k, v in summary_data(solution.totals).items() if k != "kinematic_type"
+                },
+                "default_configuration": solution.default_configuration,
+            }
+        )
+    headers = ["kinematic type", "valid robots", "UI configurations", "how"]
+    rows = [
+        [t.kinematic_type, t.valid_robots, t.ui_configurations, t.method] for t in solution.by_type
+    ]
+    totals = solution.totals
+    rows.append(["total", totals.valid_robots, totals.ui_configurations, ""])
+    align = [False, True, True, False]
+    if fmt == "markdown":
+        return (
+            markdown.heading(2, solution.team.name) + "\n\n" + markdown.table(headers, rows, align)
+        )
+    return (
+        f"{solution.team.name}  (rules: {solution.rules.name}, {solution.rules.file})\n\n"
+        + text_table(headers, rows, align)
+    )
+
+
+def _footer(solution: Solution) -> list[str]:
+    rules = solution.rules
+    factors = " x ".join(str(n) for n in rules.bound_factors)
+    lines = [
+        f"bound T = {solution.bound} ({factors})",
+        f"how: {method_text(solution)}",
+        f"default UI configuration: {solution.default_configuration} "
+        f"(every component: {sum(rules.bound_factors)})",
+    ]
+    lines += solution_warnings(solution)
+    note = published_note(solution)
+    if note is not None:
+        stated, verdict, _ = note
+        lines += [stated, f"  {verdict}"]
+    return lines
+
+
+def render_assignment(solution: Solution, assignment: Assignment, fmt: str = "text") -> str:
+    """An assignment as text or JSON."""
+    if fmt == "json":
+        return dumps(assignment_data(solution, assignment))
+    given = " ".join(f"{name}={value}" for name, value in assignment.given) or "(nothing)"
+    rules = solution.rules
+    configuration = assignment.configuration
+    if configuration is not None:
+        lines = [f"UI configuration {assignment.number} for {given}"]
+        values = dict(assignment.given)
+        for characteristic, component in zip(
+            rules.characteristics, configuration.components, strict=True
+        ):
+            own = [characteristic.parse_value(values[characteristic.name])]
+            lines.append(
+                f"  {characteristic.label}: {_component_text(characteristic, component, own)}"
+            )
+        lines.append(
+            f"  (serves {configuration.robots} valid robots of team {solution.team.name!r})"
+        )
+        return "\n".join(lines) + "\n"
+    lines = [f"default UI configuration {assignment.number} for {given}"]
+    lines += [f"  invalid: {reason}" for reason in assignment.reasons]
+    relevant = [
+        (rules.characteristic(name).label, names) for name, names in assignment.relevant if names
+    ]
+    if relevant:
+        lines.append("  components relevant to the known values:")
+        lines += [f"    {label}: {', '.join(names)}" for label, names in relevant]
+    return "\n".join(lines) + "\n"
+
+
+def render_comparisons(comparisons: Sequence[Comparison], fmt: str = "markdown") -> str:
+    """Published beside computed figures, one row per team."""
+    headers = [
+        "team",
+        "file",
+        "published robots / configurations",
+        "computed robots / configurations",
+        "reproduced",
+    ]
+    rows = []
+    for comparison in comparisons:
+        totals = comparison.solution.totals
+        rows.append(
+            [
+                comparison.solution.team.name,
+                comparison.file,
+                f"{comparison.published.valid_robots} / {comparison.published.ui_configurations}",
+                f"{totals.valid_robots} / {totals.ui_configurations}",
+                "yes" if comparison.agrees else "no",
+            ]
+        )
+    if fmt == "json":
+        return dumps(
+            [
+                {
+                    "team": r[0],
+                    "file": r[1],
+                    "published": {
+                        "valid_robots": c.published.valid_robots,
+                        "ui_configurations": c.published.ui_configurations,
+                    },
+                    "computed": {
+                        "valid_robots": c.solution.totals.valid_robots,
+                        "ui_configurations": c.solution.totals.ui_configurations,
+                    },
+                    "reproduced": c.agrees,
+                }
+                for r, c in zip(rows, comparisons, strict=True)
+            ]
+        )
+    if fmt == "text":
+        return text_table(headers, rows)
+    if fmt == "csv":
+        return _csv(headers, rows)
+    return markdown.table(headers, rows)

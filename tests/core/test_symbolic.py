@@ -1,0 +1,185 @@
+"""Symbolic counts: formulas of each type's maximum, checked against the exact counter."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import replace
+from pathlib import Path
+
+import pytest
+import sympy
+from hypothesis import given, settings
+
+from solver import InputError, Team, load_team
+from solver.core.symbolic import formulas, symbol_name
+from solver.engines.structure import count
+from solver.reporting.growth import render_growth
+from tests.conftest import TEAMS, run_cli
+from tests.test_properties import problems
+
+WriteFile = Callable[[str, str], Path]
+
+
+def check_every_maximum(team: Team) -> None:
+    """At every maximum n of every type, the formulas equal the exact counter."""
+    growth = formulas(team)
+    rules = team.rules
+    for selection, formula in zip(team.selections, growth.types, strict=True):
+        position = rules.names.index(formula.characteristic)
+        for n in range(formula.low, formula.high + 1):
+            domains = list(selection.domains)
+            domains[position] = tuple(range(formula.low, n + 1))
+            exact = count(rules, replace(selection, domains=tuple(domains)))
+            values = {formula.symbol: n}
+            assert growth.evaluate(formula.robots, values) == exact.valid_robots
+            assert growth.evaluate(formula.configurations, values) == exact.ui_configurations
+
+
+def test_case_3_grows_linearly_in_robots_and_by_arrangements_in_configurations() -> None:
+    growth = formulas(load_team(TEAMS / "case3.yaml"))
+    ((name, _, definition),) = growth.functions
+    n = sympy.Symbol("n", integer=True)
+    assert name == "A_sensor_count"
+    assert definition == sympy.Piecewise(
+        (1, n <= 5), (2, n <= 10), (3, n <= 15), (4, n <= 25), (5, n <= 50)
+    )
+    uav = growth.types[0]
+    assert sympy.sstr(uav.robots) == "6*n_UAV"
+    assert sympy.sstr(uav.configurations) == "6*A_sensor_count(n_UAV)"
+    maxima = growth.at_team_maxima()
+    assert growth.evaluate(growth.total_robots, maxima) == 872
+    assert growth.evaluate(growth.total_configurations, maxima) == 102
+
+
+@pytest.mark.parametrize("case", ["figure8", "case1", "case2", "case3", "case3-hypothesis"])
+def test_formulas_equal_the_exact_count_at_every_maximum(case: str) -> None:
+    check_every_maximum(load_team(TEAMS / f"{case}.yaml"))
+
+
+def test_a_constraint_on_the_count_makes_the_formulas_piecewise(write_file: WriteFile) -> None:
+    write_file(
+        "rules.yaml",
+        """\
+characteristics:
+  kinematic_type: {values: [UAV]}
+  sensor_type: {values: [camera, lidar]}
+  sensor_count:
+    range: {min: 1, max: 20}
+    components:
+      - {name: few, min: 1, max: 8}
+      - {name: many, min: 9, max: 20, cluster_size: 4}
+constraints:
+  - name: lidars come alone or in pairs
+    forbid: {sensor_type: lidar, sensor_count: {min: 3}}
+""",
+    )
+    team = load_team(write_file("team.yaml", "rules: rules.yaml\nteam:\n  UAV: {}\n"))
+    (uav,) = formulas(team).types
+    assert isinstance(uav.robots, sympy.Piecewise)
+    check_every_maximum(team)
+
+
+@settings(max_examples=60, deadline=None)
+@given(problems(irregular=True))
+def test_formulas_equal_the_exact_count_on_random_teams(team: Team) -> None:
+    integers = [c for c in team.rules.characteristics if c.kind == "integer"]
+    if len(integers) != 1:
+        with pytest.raises(InputError, match="exactly one whole-number characteristic"):
+            formulas(team)
+        return
+    check_every_maximum(team)
+
+
+def test_symbol_names_are_identifiers() -> None:
+    assert symbol_name("Mobile Manipulator", "sensor_count", False) == "n_Mobile_Manipulator"
+    assert symbol_name("UAV", "sensor_count", True) == "n_UAV_sensor_count"
+
+
+def test_the_rendered_formulas_say_they_equal_the_exact_count() -> None:
+    from solver import solve
+
+    team = load_team(TEAMS / "case3.yaml")
+    text = render_growth(formulas(team), solve(team, count_only=True))
+    assert text.splitlines()[-1].endswith(
+        "872 valid robots, 102 UI configurations (equal to the exact count)"
+    )
+
+
+def test_count_symbolic_json_from_the_command_line() -> None:
+    import json
+
+    data = json.loads(run_cli("count", "case2", "--symbolic", "-f", "json").stdout)
+    assert data["by_type"][1]["valid_robots"] == "8*n_UGV"
+    assert (
+        data["totals"]["ui_configurations"] == "6*A_sensor_count(n_UAV) + 6*A_sensor_count(n_UGV)"
+    )
+    assert data["at_team_maxima"] == {
+        "maxima": {"n_UAV": 5, "n_UGV": 10},
+        "valid_robots": 110,
+        "ui_configurations": 18,
+        "equal_to_exact_count": True,
+    }
+
+
+def test_types_whose_names_read_alike_get_distinct_symbols(write_file: WriteFile) -> None:
+    write_file(
+        "rules.yaml",
+        "characteristics:\n"
+        "  kinematic_type: {values: [Mobile Manipulator, Mobile-Manipulator]}\n"
+        "  sensor_count: {range: {min: 1, max: 9}}\n",
+    )
+    team = load_team(
+        write_file(
+            "team.yaml",
+            "rules: rules.yaml\nteam:\n"
+            "  Mobile Manipulator: {sensor_count: 3}\n"
+            "  Mobile-Manipulator: {sensor_count: 7}\n",
+        )
+    )
+    growth = formulas(team)
+    assert [str(t.symbol) for t in growth.types] == [
+        "n_Mobile_Manipulator",
+        "n_Mobile_Manipulator_",
+    ]
+    check_every_maximum(team)
+
+
+def test_counts_from_zero_or_below_keep_every_piece(write_file: WriteFile) -> None:
+    write_file(
+        "rules.yaml",
+        """\
+characteristics:
+  kinematic_type: {values: [UAV]}
+  sensor_count:
+    range: {min: -3, max: 10}
+    components:
+      - {name: none or less, max: 0}
+      - {name: some, min: 1, max: 10}
+""",
+    )
+    team = load_team(
+        write_file(
+            "team.yaml", "rules: rules.yaml\nteam:\n  UAV: {sensor_count: {min: -3, max: 4}}\n"
+        )
+    )
+    check_every_maximum(team)
+
+
+def test_a_constraint_too_large_for_the_structure_is_refused_with_status_2(
+    write_file: WriteFile,
+) -> None:
+    # a, b and c have 101 classes each (a component per value): linked by one 3-way rule they
+    # make over 10^6 class combinations, more than the structure counts; n is what grows.
+    lines = ["characteristics:", "  kinematic_type: {values: [T]}"]
+    for name in "abc":
+        values = ", ".join(f"{name}{i}" for i in range(1, 102))
+        lines += [f"  {name}:", f"    values: [{values}]", "    components:"]
+        lines += [f"      - {{name: {name}{i}, values: [{name}{i}]}}" for i in range(1, 102)]
+    lines += ["  n: {range: {min: 1, max: 5}}"]
+    lines += ["constraints:", "  - forbid: {a: a1, b: b1, c: c1}"]
+    write_file("rules.yaml", "\n".join(lines) + "\n")
+    team = write_file("team.yaml", "rules: rules.yaml\nteam:\n  T: {}\n")
+    result = run_cli("count", team, "--symbolic")
+    assert result.returncode == 2
+    assert "Traceback" not in result.stderr
+    assert "constraints link a, b, c into 1030301 class combinations" in result.stderr

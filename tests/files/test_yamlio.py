@@ -1,0 +1,109 @@
+"""Safe YAML loading: positions for every value, and hostile or broken files refused cleanly."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from solver.errors import InputError
+from solver.files.yamlio import load_document, parse_document
+
+
+def test_values_and_keys_are_located_by_line_and_column() -> None:
+    document = parse_document("team:\n  UAV:\n    sensor_type: [2D Camera, Mic]\n", "t.yaml")
+    location = document.location(("team", "UAV", "sensor_type", 1))
+    assert (location.line, location.column, location.path) == (3, 30, "team.UAV.sensor_type[1]")
+    assert document.location(("team", "UAV"), key=True).line == 2
+
+
+def test_a_missing_path_is_located_at_its_nearest_ancestor() -> None:
+    document = parse_document("team:\n  UAV: {}\n", "t.yaml")
+    assert document.location(("team", "UAV", "sensor_count")).line == 2
+
+
+def test_duplicate_keys_are_refused_with_both_lines() -> None:
+    with pytest.raises(InputError) as caught:
+        parse_document("team:\n  UAV: 1\n  UAV: 2\n", "t.yaml")
+    assert str(caught.value) == "t.yaml:3:3: team.UAV: duplicate key 'UAV' (first at line 2)"
+
+
+def test_syntax_errors_name_line_and_column() -> None:
+    with pytest.raises(InputError) as caught:
+        parse_document("team: [unclosed\n  UAV: 1\n", "t.yaml")
+    fault = caught.value.faults[0]
+    assert (fault.location.line, fault.location.column) == (2, 6)
+    assert "YAML syntax error" in fault.message
+
+
+def test_python_object_tags_are_refused_without_being_constructed() -> None:
+    with pytest.raises(InputError, match="unsupported YAML tag"):
+        parse_document('team: !!python/object/apply:os.system ["echo pwned"]\n', "t.yaml")
+
+
+def test_an_alias_bomb_is_refused_before_it_expands() -> None:
+    lines = ['a: &a ["lol","lol","lol","lol","lol","lol","lol","lol","lol"]']
+    for previous, name in zip("abcdefgh", "bcdefghi", strict=True):
+        lines.append(f"{name}: &{name} [" + ",".join([f"*{previous}"] * 9) + "]")
+    with pytest.raises(InputError, match="alias bomb"):
+        parse_document("\n".join(lines) + "\n", "bomb.yaml")
+
+
+def test_a_recursive_alias_is_refused() -> None:
+    with pytest.raises(InputError, match="recursive alias"):
+        parse_document("a: &a [1, *a]\n", "loop.yaml")
+
+
+def test_merge_keys_are_refused_with_advice() -> None:
+    with pytest.raises(InputError, match="merge keys"):
+        parse_document("base: &b {x: 1}\nother:\n  <<: *b\n", "merge.yaml")
+
+
+def test_binary_files_are_not_yaml(tmp_path: Path) -> None:
+    path = tmp_path / "image.yaml"
+    path.write_bytes(b"\x89PNG\r\n\x1a\n\x00\x00")
+    with pytest.raises(InputError, match="contains NUL bytes: a binary file, not a YAML file"):
+        load_document(path)
+
+
+def test_text_in_another_encoding_is_named_as_not_utf8(tmp_path: Path) -> None:
+    path = tmp_path / "latin1.yaml"
+    path.write_bytes("name: Düsseldorf\n".encode("latin-1"))
+    with pytest.raises(InputError, match="not UTF-8 text"):
+        load_document(path)
+
+
+def test_endless_special_files_are_read_only_up_to_the_limit() -> None:
+    with pytest.raises(InputError, match="larger than 16777216 bytes; refused"):
+        load_document("/dev/zero")
+
+
+def test_deep_nesting_is_refused_without_a_traceback() -> None:
+    with pytest.raises(InputError, match="nested more than 64 levels deep"):
+        parse_document("team: " + "[" * 100 + "]" * 100 + "\n", "deep.yaml")
+    with pytest.raises(InputError, match=r"nested (too deeply|more than 64 levels deep)"):
+        parse_document("team: " + "[" * 5000 + "]" * 5000 + "\n", "deeper.yaml")
+
+
+def test_keys_that_read_alike_are_duplicates() -> None:
+    with pytest.raises(InputError, match="duplicate key '1'"):
+        parse_document("team:\n  1: a\n  '1': b\n", "t.yaml")
+
+
+def test_missing_files_and_directories_are_named(tmp_path: Path) -> None:
+    with pytest.raises(InputError, match="no such file"):
+        load_document(tmp_path / "absent.yaml")
+    with pytest.raises(InputError, match="is a directory"):
+        load_document(tmp_path)
+
+
+def test_oversized_files_are_refused_without_reading_them(tmp_path: Path) -> None:
+    path = tmp_path / "huge.yaml"
+    with path.open("wb") as stream:
+        stream.truncate(17 * 1024 * 1024)
+    with pytest.raises(InputError, match="larger than 16777216 bytes; refused"):
+        load_document(path)
+
+
+def test_timestamps_stay_text_instead_of_becoming_dates() -> None:
+    assert parse_document("published: 2017-03-15\n").data == {"published": "2017-03-15"}

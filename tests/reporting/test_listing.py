@@ -1,0 +1,174 @@
+"""Listing every valid robot with its configuration, and the count command."""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+from collections.abc import Callable
+from pathlib import Path
+
+import pytest
+
+from solver import Solution, load_team, solve
+from solver.engines import fast
+from solver.reporting.listing import numbered_robots, write_robots
+from solver.reporting.render import csv_row
+from tests.conftest import run_cli
+
+
+def test_robots_lists_every_valid_robot_with_its_configuration() -> None:
+    result = run_cli("robots", "rules/teams/case3.yaml")
+    rows = list(csv.reader(io.StringIO(result.stdout)))
+    assert rows[0] == [
+        "configuration",
+        "kinematic_type",
+        "motion_control",
+        "sensor_type",
+        "sensor_count",
+    ]
+    assert len(rows) == 1 + 872
+    assert rows[1] == ["1", "UAV", "Flight", "2D Camera", "1"]
+    assert {int(row[0]) for row in rows[1:]} == set(range(1, 103))
+
+
+def test_robots_from_both_engines_are_the_same_set() -> None:
+    fast = run_cli("robots", "case2", "-f", "jsonl").stdout.splitlines()
+    reference = run_cli("robots", "case2", "-f", "jsonl", "--engine", "csp").stdout.splitlines()
+    assert sorted(fast) == sorted(reference)
+    assert json.loads(fast[-1])["configuration"] == 18
+
+
+def test_robots_refuses_to_list_more_than_the_limit() -> None:
+    result = run_cli("robots", "case3", "--max-robots", "100")
+    assert result.returncode == 2
+    assert result.stdout == ""
+    assert "listing 872 robots is refused (more than 100, see --max-robots)" in result.stderr
+
+
+def test_solve_refuses_to_enumerate_more_than_the_limit_and_suggests_count_only() -> None:
+    result = run_cli("solve", "case3", "--engine", "fast", "--max-robots", "100")
+    assert result.returncode == 2
+    assert "enumerating 312 robots is refused" in result.stderr
+    assert "use --count-only" in result.stderr
+    counted = run_cli("solve", "case3", "--count-only", "--max-robots", "100")
+    assert counted.returncode == 0
+    assert "872" in counted.stdout
+
+
+def test_count_on_a_rule_set_counts_its_whole_design_space() -> None:
+    data = json.loads(run_cli("count", "rules/paper.yaml", "-f", "json").stdout)
+    assert data["totals"]["valid_robots"] == 6 * 6 * 10 * 50
+    assert data["totals"]["ui_configurations"] == 900
+    assert data["team"] == "every value of Mortimer et al. 2017"
+
+
+def test_count_says_how_it_counted() -> None:
+    lines = run_cli("count", "case1", "--engine", "csp").stdout.splitlines()
+    assert lines[3].split() == ["UAV", "30", "6", "csp"]
+
+
+@pytest.mark.parametrize(
+    "components",
+    [
+        # One component per value, with a gap (d in none): the lookup tables.
+        "[{name: X, values: [a, b]}, {name: Y, values: [c]}]",
+        # b in two components: the search over configurations.
+        "[{name: X, values: [a, b]}, {name: Y, values: [b, c]}]",
+    ],
+)
+def test_each_listed_robot_has_the_configuration_the_solution_gives_it(
+    components: str, write_file: Callable[[str, str], Path]
+) -> None:
+    write_file(
+        "rules.yaml",
+        f"""\
+characteristics:
+  kinematic_type: {{values: [T, U]}}
+  part:
+    values: [a, b, c, d]
+    components: {components}
+constraints:
+  - forbid: {{kinematic_type: U, part: a}}
+""",
+    )
+    solution = solve(
+        load_team(write_file("team.yaml", "rules: rules.yaml\nteam:\n  T: {}\n  U: {}\n"))
+    )
+    listed = list(numbered_robots(solution))
+    assert len(listed) == 7
+    for number, robot in listed:
+        configuration = solution.configuration_for(robot)
+        assert number == (
+            solution.default_configuration if configuration is None else configuration.number
+        )
+    assert {number for number, robot in listed if robot[1] == "d"} == {
+        solution.default_configuration
+    }
+
+
+def written(solution: Solution, fmt: str) -> str:
+    buffer = io.StringIO()
+    write_robots(solution, buffer, fmt=fmt)
+    return buffer.getvalue()
+
+
+def written_robot_by_robot(solution: Solution, fmt: str) -> str:
+    """The listing as it was written before the block writer: one row per numbered robot."""
+    buffer = io.StringIO()
+    names = solution.rules.names
+    if fmt == "csv":
+        writer = csv.writer(buffer, lineterminator="\n")
+        writer.writerow(csv_row(["configuration", *names]))
+        for number, robot in numbered_robots(solution):
+            writer.writerow([number, *csv_row(robot)])
+        return buffer.getvalue()
+    for number, robot in numbered_robots(solution):
+        line = {"configuration": number, **dict(zip(names, robot, strict=True))}
+        buffer.write(json.dumps(line, ensure_ascii=False) + "\n")
+    return buffer.getvalue()
+
+
+@pytest.mark.parametrize("fmt", ["csv", "jsonl"])
+def test_the_block_writer_writes_case3_exactly_as_robot_by_robot(fmt: str) -> None:
+    solution = solve(load_team("rules/teams/case3.yaml"))
+    text = written(solution, fmt)
+    assert text == written_robot_by_robot(solution, fmt)
+    assert len(text.splitlines()) == 872 + (fmt == "csv")
+
+
+@pytest.mark.parametrize("fmt", ["csv", "jsonl"])
+def test_the_block_writer_writes_a_constrained_team_with_awkward_values_exactly(
+    fmt: str, write_file: Callable[[str, str], Path], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # A tiny block: many prefixes, masks shared between prefixes, unserved values (gap) in the
+    # prefix and in the block, and values CSV must quote or defuse.
+    monkeypatch.setattr(fast, "BLOCK", 4)
+    write_file(
+        "rules.yaml",
+        """\
+characteristics:
+  kinematic_type: {values: [T, U]}
+  mode:
+    values: ["=1+1", "a,b", "say \\"hi\\"", ü, gap]
+    components:
+      - {name: X, values: ["=1+1", "a,b"]}
+      - {name: Y, values: ["say \\"hi\\"", ü]}
+  count:
+    values: [1, 2, 3, 4, 5]
+    components: [{name: few, values: [1, 2]}, {name: many, values: [3, 4]}]
+  colour: {values: [red, "-5", "+x"]}
+constraints:
+  - forbid: {kinematic_type: U, mode: "a,b"}
+  - require: {count: [1, 2]}
+    when: {colour: red}
+""",
+    )
+    solution = solve(
+        load_team(write_file("team.yaml", "rules: rules.yaml\nteam:\n  T: {}\n  U: {}\n"))
+    )
+    text = written(solution, fmt)
+    assert text == written_robot_by_robot(solution, fmt)
+    # 5 modes x 5 counts x 3 colours, less red with 3..5 (3 x 5 modes), less U with "a,b" (12).
+    assert len(text.splitlines()) == 2 * 60 - 12 + (fmt == "csv")
+    assert solution.default_configuration in {number for number, _ in numbered_robots(solution)}
