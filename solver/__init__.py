@@ -12,6 +12,9 @@ The package has wings; each is a package with its own map in its docstring:
 =====================  ==========================================================
 ``errors``             the exception root and located faults (every wing uses it)
 ``extras``             optional dependencies and the error when one is missing
+``untrusted``          ``shown``: a stranger's string as human-readable output may
+                       show it (escaped, cut to 60 characters, marked as cut); every
+                       message, text output, finding and event uses it
 ``files``              reading input safely (size limits, YAML with positions,
                        typed access, file kinds) and writing output atomically
 ``ros``                ROS vocabulary with no I/O: topics, message-type names
@@ -32,8 +35,8 @@ The package has wings; each is a package with its own map in its docstring:
 
 Layers, lowest first; a module imports only from its own layer or lower ones, and no module
 imports itself back through others (tests/test_architecture.py checks both):
-``errors``, ``extras`` -> ``files``, ``ros`` -> ``core``, ``engines`` -> ``layouts`` ->
-``reporting`` -> ``check``, ``identify`` -> ``live`` -> ``cli``.
+``errors``, ``extras``, ``untrusted`` -> ``files``, ``ros`` -> ``core``, ``engines`` ->
+``layouts`` -> ``reporting`` -> ``check``, ``identify`` -> ``live`` -> ``cli``.
 
 Every command from Python (docs/python-api.md has worked examples):
 

@@ -5,15 +5,19 @@ they are, ``\\x1b[2J`` clears the operator's screen and other escape sequences r
 window, hide text or fake output; a right-to-left override reorders what a line appears to
 say. :func:`main <solver.cli.main>` therefore wraps ``sys.stdout`` and ``sys.stderr`` in an
 :class:`EscapingStream`: every character that is not printable, other than a newline and a
-tab, is written as its Python escape (``\\x1b``, ``\\u202e``), so it is seen, not obeyed.
+tab, is written as its Python escape (``\\x1b``, ``\\u202e``) by
+:func:`solver.untrusted.shown`, so it is seen, not obeyed.
+
+This is the last net, not the escaping itself: the stream cannot tell a newline inside a name
+from the output's own line break, so every name is shown through :func:`~solver.untrusted.shown`
+where the output is formatted, and a newline in a name never starts a line.
 
 JSON output is unchanged by this (``json.dumps`` already escapes control characters); text,
 CSV and Markdown written to standard output get the escapes. Files written with ``-o`` are
 not terminals and keep their content (each format escapes what it must itself).
 
 Not here: escaping for a format (CSV cells: :func:`solver.reporting.render.csv_cell`; SARIF
-messages:
-:mod:`solver.check.render`; Markdown: :mod:`solver.reporting.markdown`).
+messages: :mod:`solver.check.render`; Markdown: :mod:`solver.reporting.markdown`).
 """
 
 from __future__ import annotations
@@ -21,23 +25,21 @@ from __future__ import annotations
 import re
 from typing import IO, Any
 
+from solver.untrusted import shown
+
 __all__ = ["EscapingStream", "escape_controls", "raw_stream"]
 
-# C0 controls but newline and tab, DEL, C1 controls, and the invisible format characters that
-# reorder or hide text (bidirectional overrides and isolates, zero-width joiners, BOM).
-_UNSAFE = re.compile(
-    "[\x00-\x08\x0b-\x1f\x7f-\x9f\u200b-\u200f\u2028-\u202e\u2060-\u2069\ufeff\ud800-\udfff]"
-)
-
-
-def _escape(match: re.Match[str]) -> str:
-    code = ord(match.group())
-    return f"\\x{code:02x}" if code < 0x100 else f"\\u{code:04x}"
+# The output's own line breaks and tabs; everything between them is shown escaped.
+_LAYOUT = re.compile("([\n\t])")
 
 
 def escape_controls(text: str) -> str:
-    """``text`` with every control or invisible format character written as its escape."""
-    return _UNSAFE.sub(_escape, text)
+    """``text`` with every unprintable character but newline and tab written as its escape."""
+    if text.isprintable():
+        return text
+    return "".join(
+        part if part in ("\n", "\t") else shown(part, limit=None) for part in _LAYOUT.split(text)
+    )
 
 
 class EscapingStream:

@@ -30,8 +30,9 @@ from typing import Any, Literal, TypeVar, overload
 from solver.core.constraints import Condition, RuleConstraint, Value
 from solver.errors import Location, RulesError, did_you_mean
 from solver.files.filekind import require_kind
-from solver.files.reader import Reader, quote, type_name
+from solver.files.reader import Reader, type_name
 from solver.files.yamlio import Document, PathPart, load_document
+from solver.untrusted import shown
 
 __all__ = [
     "Characteristic",
@@ -454,7 +455,8 @@ def _read_characteristics(reader: Reader) -> list[Characteristic]:
         if not name.strip() or not name.isprintable():
             reader.fault(
                 ("characteristics", name),
-                f"a characteristic needs a name of visible characters, got {quote(name)}",
+                "a characteristic needs a name of visible characters, "
+                f"got {shown(name, quoted=True)}",
                 key=True,
                 code="invalid",
             )

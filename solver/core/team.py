@@ -39,9 +39,9 @@ from solver.core.rules import (
 )
 from solver.errors import InputError, Location, TeamError, did_you_mean
 from solver.files.filekind import require_kind
-from solver.files.inputfile import shown_name
-from solver.files.reader import Reader, quote
+from solver.files.reader import Reader
 from solver.files.yamlio import Document, load_document
+from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
 __all__ = [
     "Published",
@@ -189,16 +189,17 @@ def _resolve_rules(
     if not text:
         return None
     relative = folder / text  # the OS resolves ".." (symlinks included); normpath is for show
-    shown = os.path.normpath(Path(reader.file).parent / text)
+    resolved = os.path.normpath(Path(reader.file).parent / text)
     try:
-        return load_rules(relative, display=shown)
+        return load_rules(relative, display=resolved)
     except InputError as error:
         if any(fault.location.line is not None for fault in error.faults):
             raise  # the rules file exists but is not valid YAML: its own faults say where
         reasons = "; ".join(fault.message for fault in error.faults)
         reader.fault(
             ("rules",),
-            f"cannot use rules file {quote(text)} (resolved to {shown_name(shown)}): {reasons}",
+            f"cannot use rules file {shown(text, quoted=True)} "
+            f"(resolved to {shown(resolved, limit=SHOWN_FILE_NAME_CHARS)}): {reasons}",
             code="unknown-reference",
         )
         return None

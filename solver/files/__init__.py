@@ -9,5 +9,6 @@
 =============  ================================================================
 
 Not here: what the documents mean (:mod:`solver.core`), or what is written into them
-(:mod:`solver.reporting`). This wing imports nothing of the project but :mod:`solver.errors`.
+(:mod:`solver.reporting`). This wing imports nothing of the project but :mod:`solver.errors`
+and :mod:`solver.untrusted`.
 """

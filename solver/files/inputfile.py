@@ -13,22 +13,14 @@ from __future__ import annotations
 from pathlib import Path
 
 from solver.errors import InputError
+from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
-__all__ = ["MAX_SHOWN_NAME", "read_bounded", "read_text", "sha256_bounded", "shown_name"]
-
-# A file name comes from the user or from a file (``rules: ...``): in messages it is shown
-# escaped (no NUL, newline or terminal escape gets through) and at most this long.
-MAX_SHOWN_NAME = 300
+__all__ = ["read_bounded", "read_text", "sha256_bounded"]
 
 
-def shown_name(name: str) -> str:
-    """``name`` as a message may show it: escaped when it holds anything unprintable, cut."""
-    if name.isprintable() and len(name) <= MAX_SHOWN_NAME:
-        return name
-    escaped = name.encode("unicode_escape", "backslashreplace").decode("ascii")
-    if len(escaped) > MAX_SHOWN_NAME:
-        escaped = escaped[: MAX_SHOWN_NAME - 3] + "..."
-    return escaped
+def _shown_name(path: str | Path, display: str | None) -> str:
+    # A file name comes from the user or from a file (``rules: ...``): shown escaped and cut.
+    return shown(display if display is not None else str(path), limit=SHOWN_FILE_NAME_CHARS)
 
 
 def sha256_bounded(path: str | Path, *, limit: int) -> str | None:
@@ -47,7 +39,7 @@ def read_bounded(
     path: str | Path, *, display: str | None = None, limit: int, what: str = "file"
 ) -> bytes:
     """The bytes of ``path``, refusing more than ``limit`` without reading them all."""
-    name = shown_name(display if display is not None else str(path))
+    name = _shown_name(path, display)
     file = Path(path)
     try:
         if file.is_dir():
@@ -76,8 +68,8 @@ def read_text(
     path: str | Path, *, display: str | None = None, limit: int, what: str = "file"
 ) -> str:
     """:func:`read_bounded`, decoded as UTF-8 (a byte-order mark is dropped)."""
-    name = shown_name(display if display is not None else str(path))
-    raw = read_bounded(path, display=name, limit=limit, what=what)
+    name = _shown_name(path, display)
+    raw = read_bounded(path, display=display, limit=limit, what=what)
     if b"\x00" in raw:
         raise InputError.at(name, f"contains NUL bytes: a binary file, not a {what}")
     try:

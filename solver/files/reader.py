@@ -15,30 +15,13 @@ from typing import Any
 
 from solver.errors import Fault, did_you_mean
 from solver.files.yamlio import Document, PathPart
+from solver.untrusted import shown
 
-__all__ = ["MAX_NAME_CHARS", "Reader", "quote", "type_name"]
+__all__ = ["MAX_NAME_CHARS", "Reader", "type_name"]
 
 # Names and labels (of a team, a characteristic, a value, a component, a constraint) are at
 # most this long: they end up in tables, charts and file names. docs/security.md says so.
 MAX_NAME_CHARS = 200
-# What a message may quote of a value from a file: escaped and at most this long.
-MAX_QUOTED_CHARS = 60
-
-
-def quote(value: object) -> str:
-    """``repr`` of ``value``, with every unprintable character escaped and cut short: what a
-    message may quote of a value read from a file."""
-    text = str(value)
-    if len(text) > MAX_QUOTED_CHARS:
-        text = text[:MAX_QUOTED_CHARS]
-        return repr(text)[:-1].encode("ascii", "backslashreplace").decode("ascii") + "...'"
-    return (
-        repr(text).encode("ascii", "backslashreplace").decode("ascii")
-        if not text.isprintable()
-        else repr(text)
-    )
-
-
 Path = tuple[PathPart, ...]
 
 
@@ -51,7 +34,7 @@ def type_name(value: Any) -> str:
     if isinstance(value, int | float):
         return f"a number ({value})"
     if isinstance(value, str):
-        return f"a string ({quote(value)})"
+        return f"a string ({shown(value, quoted=True)})"
     if isinstance(value, list):
         return "a list"
     if isinstance(value, dict):
@@ -215,7 +198,8 @@ class Reader:
                 hint = did_you_mean(key, allowed)
                 self.fault(
                     (*path, key),
-                    f"unknown {what} {quote(key)}{hint}; allowed: {', '.join(sorted(allowed))}",
+                    f"unknown {what} {shown(key, quoted=True)}{hint}; "
+                    f"allowed: {', '.join(sorted(allowed))}",
                     key=True,
                     code="unknown-field",
                 )

@@ -15,8 +15,8 @@ from pathlib import Path
 
 from solver.errors import InputError
 from solver.extras import require
-from solver.files.inputfile import shown_name
 from solver.ros.names import Topic, normalise_type
+from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
 __all__ = ["read_bag_topics"]
 
@@ -69,7 +69,7 @@ def read_bag_topics(path: str | Path, *, display: str | None = None) -> tuple[To
     from rosbags.rosbag1 import ReaderError as Reader1Error
     from rosbags.rosbag2 import ReaderError as Reader2Error
 
-    name = shown_name(display if display is not None else str(path))
+    name = shown(display if display is not None else str(path), limit=SHOWN_FILE_NAME_CHARS)
     bag = Path(path)
     try:
         if not bag.exists():

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from solver.files.reader import Reader, quote, type_name
+from solver.files.reader import Reader, type_name
 from solver.files.yamlio import parse_document
 
 
@@ -43,8 +43,8 @@ def test_names_longer_than_the_limit_are_refused() -> None:
     assert [fault.code for fault in reader.faults] == ["too-large"]
 
 
-def test_quoted_values_are_escaped_and_cut_short() -> None:
-    assert quote("a\x1bb") == "'a\\x1bb'"
-    assert quote("y" * 100) == "'" + "y" * 60 + "...'"
+def test_a_string_of_the_wrong_type_is_quoted_escaped_and_cut_short() -> None:
+    assert type_name("a\x1bb") == "a string ('a\\x1bb')"
+    assert type_name("y" * 100) == "a string ('" + "y" * 60 + "...' (cut from 100 characters))"
     assert type_name(True) == "a boolean (true)"
     assert type_name(None) == "nothing (null)"
