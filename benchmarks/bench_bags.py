@@ -23,7 +23,7 @@ from rosbags.rosbag2 import StoragePlugin
 from rosbags.rosbag2 import Writer as Writer2
 from rosbags.typesys import Stores, get_typestore
 
-from solver.identify.bags import read_bag_topics
+from solver.identify.readers.bags import read_bag_topics
 
 SIZES = (5_000, 20_000)
 STORE = get_typestore(Stores.ROS2_HUMBLE)

@@ -14,7 +14,7 @@ from solver.errors import Fault, InputError, Location, SolverError, did_you_mean
 # Exceptions that never leave the module that defines them, each with why.
 PRIVATE_SIGNALS = {
     # Raised inside the sandboxed xacro child process and reported by the parent as text.
-    "solver.identify.xacro_child.Refused",
+    "solver.identify.xacro.child.Refused",
     # Raised by the RE2 compile helper and turned into a located fault by the profile reader.
     "solver.identify.profile.PatternError",
 }

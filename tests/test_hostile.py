@@ -100,7 +100,7 @@ def test_a_surrogate_escape_in_a_name_is_a_located_error(tmp_path: Path) -> None
 )
 @pytest.mark.parametrize("suffix", [".mcap", ".bag", ".db3"])
 def test_a_corrupt_bag_is_a_located_error(tmp_path: Path, content: bytes, suffix: str) -> None:
-    from solver.identify.bags import read_bag_topics
+    from solver.identify.readers.bags import read_bag_topics
 
     bag = tmp_path / f"run{suffix}"
     bag.write_bytes(content)
@@ -110,7 +110,7 @@ def test_a_corrupt_bag_is_a_located_error(tmp_path: Path, content: bytes, suffix
 
 
 def test_a_device_given_as_a_bag_is_refused_without_reading_it() -> None:
-    from solver.identify.bags import read_bag_topics
+    from solver.identify.readers.bags import read_bag_topics
 
     with pytest.raises(SolverError, match="not a bag file or folder"):
         read_bag_topics("/dev/zero")

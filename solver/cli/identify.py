@@ -110,7 +110,7 @@ def package_path(folders: list[str]) -> tuple[Path, ...]:
     import os
     from pathlib import Path
 
-    from solver.identify.xacros import package_path_from_env
+    from solver.identify.xacro.packages import package_path_from_env
 
     given = tuple(Path(p) for text in folders for p in text.split(os.pathsep) if p)
     return given or package_path_from_env()

@@ -115,7 +115,7 @@ def _robot(args: argparse.Namespace) -> int:
     from solver.errors import InputError
     from solver.files.atomic import write_atomic
     from solver.identify import identify_urdf
-    from solver.identify.safexml import read_bytes
+    from solver.identify.readers.safexml import read_bytes
     from solver.layouts import foxglove_layout, load_profile, validate_foxglove
     from solver.layouts.rviz import rviz_layout, rviz_text, validate_rviz
 
@@ -158,7 +158,7 @@ def _robot(args: argparse.Namespace) -> int:
 
             source, topics = args.topics, read_topic_list(args.topics)
         else:
-            from solver.identify.bags import read_bag_topics
+            from solver.identify.readers.bags import read_bag_topics
 
             source, topics = args.bag, read_bag_topics(args.bag)
         entries = panel_entries(solution, assignment.configuration, profile, tile_count)

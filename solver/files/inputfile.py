@@ -5,7 +5,8 @@ at most ``limit`` bytes are read, whatever ``stat()`` says (it says 0 for pipes 
 ``/dev/zero``), and a missing, unreadable, oversized, binary or non-UTF-8 file is an
 :class:`~solver.errors.InputError` naming it.
 
-Not here: parsing what was read (:mod:`solver.files.yamlio`, :mod:`solver.identify.safexml`).
+Not here: parsing what was read (:mod:`solver.files.yamlio`,
+:mod:`solver.identify.readers.safexml`).
 """
 
 from __future__ import annotations

@@ -7,25 +7,26 @@ none), a confidence, the evidence, its *sensors* mapped to the rule set's sensor
 
 Modules, one concept each:
 
-=====================  ==========================================================
-``safexml``            safe XML parsing (no entities, no network, size cap)
-``urdf``               URDF text -> checked tree of links, joints, sensors, plugins
-``xacros``             trusted xacro -> URDF text in a limited child process; packages
-``xacro_child``        that child: resource limits, file fence, no environment lookups
-``srdf``               MoveIt SRDF: groups, chains, end effectors, virtual joints
-``profile``            the identification profile (patterns, rules, mappings)
-``body``               body parts from the tree: wheels, rotors, limbs, grippers
-``classifier``         structure + kinematic type + confidence from the parts
-``sensors``            sensors from URDF, merged, mapped to sensor types
-``topics``             topic list files -> :class:`Topic` triples
-``bags``               topics recorded in ROS 1/2 bags (rosbags)
-``interfaces``         sensors and motion controls from topic triples
-``motion``             motion controls the description itself shows
-``identification``     :func:`identify` / :func:`identify_urdf`, the cache
-``combinations``       characteristic combinations -> UI configurations
-``fleet``              a folder of robots -> a team selection
-``render``             JSON contract and text report
-=====================  ==========================================================
+=======================  ========================================================
+``readers.safexml``      safe XML parsing (no entities, no network, size cap)
+``readers.bags``         topics recorded in ROS 1/2 bags (rosbags)
+``urdf``                 URDF text -> checked tree of links, joints, sensors, plugins
+``srdf``                 MoveIt SRDF: groups, chains, end effectors, virtual joints
+``topics``               topic list files -> :class:`Topic` triples
+``xacro``                the xacro sandbox, a security boundary: trusted xacro -> URDF
+                         text in a confined child process (``compiler``, ``packages``,
+                         ``child``, ``confine``)
+``profile``              the identification profile (patterns, rules, mappings)
+``body``                 body parts from the tree: wheels, rotors, limbs, grippers
+``classifier``           structure + kinematic type + confidence from the parts
+``sensors``              sensors from URDF, merged, mapped to sensor types
+``interfaces``           sensors and motion controls from topic triples
+``motion``               motion controls the description itself shows
+``identification``       :func:`identify` / :func:`identify_urdf`, the cache
+``combinations``         characteristic combinations -> UI configurations
+``fleet``                a folder of robots -> a team selection
+``render``               JSON contract and text report
+=======================  ========================================================
 
 For a live ROS master (``teleop-ui watch``): :func:`identify_urdf` takes URDF *text* and
 :class:`IdentificationCache` keeps results by content; :func:`sensors_from_topics` and

@@ -12,7 +12,7 @@ Two entry points:
       result = cache.identify_urdf(urdf_text, topics=[TopicSource("master", triples)])
 
 * :func:`identify` reads files: a URDF, or a xacro the caller trusts (compiled first in a limited
-  child process, :mod:`solver.identify.xacros`),
+  child process, :mod:`solver.identify.xacro.compiler`),
   an SRDF, topic lists and bags, then calls :func:`identify_urdf`.
 
 The rule set decides the kinematic types and sensor types results are mapped to (default: the
@@ -32,7 +32,6 @@ from pathlib import Path
 
 from solver.core.rules import RuleSet, default_rules_path, load_rules
 from solver.errors import Fault, InputError
-from solver.identify.bags import read_bag_topics
 from solver.identify.body import Body, detect_body
 from solver.identify.classifier import classify
 from solver.identify.interfaces import (
@@ -43,12 +42,13 @@ from solver.identify.interfaces import (
 )
 from solver.identify.motion import controls_from_description
 from solver.identify.profile import Profile, load_profile
-from solver.identify.safexml import read_bytes
+from solver.identify.readers.bags import read_bag_topics
+from solver.identify.readers.safexml import read_bytes
 from solver.identify.sensors import Detection, Sensor, merge, presented_count, sensors_from_urdf
 from solver.identify.srdf import parse_srdf
 from solver.identify.topics import read_topic_list
 from solver.identify.urdf import parse_urdf
-from solver.identify.xacros import compile_xacro, is_xacro
+from solver.identify.xacro.compiler import compile_xacro, is_xacro
 from solver.ros.names import Topic
 
 __all__ = [
@@ -177,7 +177,7 @@ def identify(
     """Identify the robot described by a URDF or xacro file (plus SRDF, topic lists, bags).
 
     A ``.xacro`` file is compiled only with ``trust_xacro=True`` (compiling xacro runs code
-    from the file: :mod:`solver.identify.xacros`); any other file is read as URDF.
+    from the file: :mod:`solver.identify.xacro.compiler`); any other file is read as URDF.
     """
     file = str(description)
     notes: tuple[str, ...] = ()

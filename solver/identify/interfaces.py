@@ -1,7 +1,7 @@
 """Sensors and motion controls from (topic name, message type[, direction]) triples.
 
 The one place topic metadata is interpreted, whatever it came from: a topic list file
-(:mod:`solver.identify.topics`), a bag (:mod:`solver.identify.bags`), or a live ROS master
+(:mod:`solver.identify.topics`), a bag (:mod:`solver.identify.readers.bags`), or a live ROS master
 (getTopicTypes / getSystemState give exactly these triples)::
 
     >>> from solver.identify import Topic, load_profile, sensors_from_topics

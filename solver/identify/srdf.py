@@ -1,6 +1,6 @@
 """Reading a MoveIt SRDF: planning groups, chains, end effectors and virtual joints.
 
-:func:`parse_srdf` reads SRDF text safely (:mod:`solver.identify.safexml`) into a frozen
+:func:`parse_srdf` reads SRDF text safely (:mod:`solver.identify.readers.safexml`) into a frozen
 :class:`Srdf`. Given the robot's :class:`~solver.identify.urdf.Urdf`, every link and joint a
 group, chain, end effector or virtual joint names is checked to exist, and every problem is
 reported at once with the file, line and element. ``group_state`` and ``disable_collisions``
@@ -16,7 +16,7 @@ from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
 from solver.errors import Fault, InputError, Location
-from solver.identify.safexml import line_of, parse_xml
+from solver.identify.readers.safexml import line_of, parse_xml
 
 if TYPE_CHECKING:
     from lxml import etree

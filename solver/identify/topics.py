@@ -13,8 +13,9 @@ Blank lines and ``#`` comments are skipped. A topic with no message type, or a t
 ``package/Name`` (ROS 2's ``package/msg/Name`` is accepted and normalised), is a located error;
 every bad line of a file is reported at once.
 
-Each line becomes a :class:`solver.ros.names.Topic`, as a bag (:mod:`solver.identify.bags`) and
-a live graph give: the shared currency of :mod:`solver.identify.interfaces`.
+Each line becomes a :class:`solver.ros.names.Topic`, as a bag
+(:mod:`solver.identify.readers.bags`) and a live graph give: the shared currency of
+:mod:`solver.identify.interfaces`.
 
 Not here: what a topic means (:mod:`solver.identify.interfaces`).
 """
@@ -26,7 +27,7 @@ from pathlib import Path
 
 from solver.errors import Fault, InputError, Location
 from solver.files.inputfile import read_text
-from solver.identify.safexml import MAX_XML_BYTES
+from solver.identify.readers.safexml import MAX_XML_BYTES
 from solver.ros.names import Topic, normalise_type
 
 __all__ = ["parse_topic_list", "read_topic_list"]

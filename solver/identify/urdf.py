@@ -10,7 +10,7 @@ two parents, cycles, several root links, an empty robot.
 A :class:`Urdf` also answers the tree questions the classifier asks (root, children, subtree).
 
 Not here: what the body is (:mod:`solver.identify.body`), what the sensors are
-(:mod:`solver.identify.sensors`), xacro (:mod:`solver.identify.xacros`).
+(:mod:`solver.identify.sensors`), xacro (:mod:`solver.identify.xacro.compiler`).
 """
 
 from __future__ import annotations
@@ -22,8 +22,8 @@ from functools import cached_property
 from typing import TYPE_CHECKING
 
 from solver.errors import Fault, InputError, Location
-from solver.identify.safexml import line_of, parse_xml
-from solver.identify.xacros import uncompiled_xacro
+from solver.identify.readers.safexml import line_of, parse_xml
+from solver.identify.xacro.compiler import uncompiled_xacro
 
 if TYPE_CHECKING:
     from lxml import etree

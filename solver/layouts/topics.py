@@ -7,7 +7,7 @@ fits both). Among fitting topics, one named like the template's last part comes 
 (``/x/front/points`` for ``<robot>/points``), then name order; each topic serves one tile. A
 panel left without a topic keeps its template and gets a warning located at the topic source.
 
-Not here: reading topics (:mod:`solver.identify.topics`, :mod:`solver.identify.bags`).
+Not here: reading topics (:mod:`solver.identify.topics`, :mod:`solver.identify.readers.bags`).
 """
 
 from __future__ import annotations

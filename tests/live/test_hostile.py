@@ -17,7 +17,7 @@ from typing import Any
 from solver.core.solution import Solution
 from solver.identify.identification import Identification, IdentificationCache
 from solver.identify.profile import Profile
-from solver.identify.safexml import MAX_XML_BYTES
+from solver.identify.readers.safexml import MAX_XML_BYTES
 from solver.live.events import event_data
 from solver.live.watcher import Watcher
 from tests.conftest import run_cli

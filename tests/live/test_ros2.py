@@ -15,7 +15,7 @@ import pytest
 
 from solver.core.solution import Solution
 from solver.identify.profile import Profile
-from solver.identify.safexml import MAX_XML_BYTES
+from solver.identify.readers.safexml import MAX_XML_BYTES
 from solver.live.sources.ros2 import DdsGraph, dds_type, ros_name, ros_type
 from solver.live.watcher import Watcher
 from tests.conftest import run_cli

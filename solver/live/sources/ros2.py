@@ -30,7 +30,7 @@ ROS 1 parameters of those names; an empty string clears one), and
 ``/teleop_ui/ui_configuration`` out (the JSON object a ROS 1 watcher writes to the parameter of
 that name; ``null`` with no active robot).
 
-Bounds: a description longer than :data:`~solver.identify.safexml.MAX_XML_BYTES` is not
+Bounds: a description longer than :data:`~solver.identify.readers.safexml.MAX_XML_BYTES` is not
 identified (the robot is reported with a located error); a sample that cannot be decoded is
 that robot's error too. Nothing one participant sends stops the source.
 
@@ -249,7 +249,7 @@ class DdsGraph:
         from cyclonedds.sub import DataReader
         from cyclonedds.topic import Topic
 
-        from solver.identify.safexml import MAX_XML_BYTES
+        from solver.identify.readers.safexml import MAX_XML_BYTES
 
         self.domain = domain
         self.name = f"ros2://domain/{domain}"

@@ -4,22 +4,20 @@ xacro evaluates ``${...}`` expressions as Python, and that namespace can be esca
 xacro file runs its author's code. So nothing compiles xacro unless the user asked for it
 (``--trust-xacro``, ``trust_xacro=True``); a ``.urdf`` file or a ``robot_description`` is always
 read as URDF, never compiled. When trusted, :func:`compile_xacro` runs
-:mod:`solver.identify.xacro_child` in a fresh interpreter with an empty environment, CPU-time,
-memory and no-file-write limits, kernel fences (:mod:`solver.identify.confine`: read-only
+:mod:`solver.identify.xacro.child` in a fresh interpreter with an empty environment, CPU-time,
+memory and no-file-write limits, kernel fences (:mod:`solver.identify.xacro.confine`: read-only
 access to its packages, no sockets, no processes) and a wall-clock timeout
 (:class:`XacroLimits`), and reads back at most the size cap. A hostile or exponential macro
 ends with a located error.
 
-``$(find pkg)`` resolves through a package map built here, with no ROS install and no rospkg:
-the ``package.xml`` folders above the xacro file (and their sibling packages), then the folders
-given as ``package_path`` (``--package-path``, or ``TELEOP_UI_PACKAGE_PATH`` joined with
-``:``), then ``ROS_PACKAGE_PATH``. A package found nowhere is a located error naming it and
-where it was looked for. The child may read files only inside the description's own folder
-(or its package) and the packages of that map; ``$(env)`` and ``$(optenv)`` are refused.
-Mesh ``package://`` references are left as written: identification never opens a mesh.
+``$(find pkg)`` resolves through the package map of :mod:`solver.identify.xacro.packages`; a
+package found nowhere is a located error naming it and where it was looked for. The child may
+read files only inside the description's own folder (or its package) and the packages of that
+map; ``$(env)`` and ``$(optenv)`` are refused. Mesh ``package://`` references are left as
+written: identification never opens a mesh.
 
 Not here: reading the compiled URDF (:mod:`solver.identify.urdf`); the child's fence
-(:mod:`solver.identify.xacro_child`).
+(:mod:`solver.identify.xacro.child`).
 """
 
 from __future__ import annotations
@@ -37,28 +35,15 @@ from typing import IO, TYPE_CHECKING, Any
 
 import solver
 from solver.errors import Fault, InputError, Location
-from solver.identify.safexml import MAX_XML_BYTES, line_of, parse_xml, read_bytes
+from solver.identify.readers.safexml import MAX_XML_BYTES, line_of, parse_xml, read_bytes
+from solver.identify.xacro.packages import PACKAGE_PATH_ENV, find_packages, own_package_root
 
-__all__ = [
-    "PACKAGE_PATH_ENV",
-    "CompiledXacro",
-    "XacroLimits",
-    "compile_xacro",
-    "find_packages",
-    "is_xacro",
-    "package_path_from_env",
-    "uncompiled_xacro",
-]
+__all__ = ["CompiledXacro", "XacroLimits", "compile_xacro", "is_xacro", "uncompiled_xacro"]
 
 if TYPE_CHECKING:
     from lxml import etree
 
-PACKAGE_PATH_ENV = "TELEOP_UI_PACKAGE_PATH"
 _MISSING = re.compile(r"Package not found: ([\w\-]+)")
-_PACKAGE_NAME = re.compile(rb"<name>\s*([A-Za-z0-9_\-]+)\s*</name>")
-# A package search stops after this many folders, so a package path of / ends quickly.
-_MAX_FOLDERS = 20_000
-_MAX_DEPTH = 6
 
 
 @dataclass(frozen=True, slots=True)
@@ -74,12 +59,6 @@ class XacroLimits:
 class CompiledXacro:
     text: str
     warnings: tuple[str, ...] = ()
-
-
-def package_path_from_env(environ: Mapping[str, str] | None = None) -> tuple[Path, ...]:
-    """The folders in ``TELEOP_UI_PACKAGE_PATH`` (``:``-separated)."""
-    value = (os.environ if environ is None else environ).get(PACKAGE_PATH_ENV, "")
-    return tuple(Path(p) for p in value.split(os.pathsep) if p)
 
 
 def is_xacro(path: str | Path) -> bool:
@@ -159,63 +138,11 @@ def compile_xacro(
     return CompiledXacro(text, warnings)
 
 
-def own_package_root(source: Path) -> Path:
-    """The folder of the package holding ``source`` (nearest ``package.xml`` above), or its own."""
-    for folder in source.parents:
-        if (folder / "package.xml").is_file():
-            return folder
-    return source.parent
-
-
-def find_packages(
-    source: Path, package_path: Sequence[Path] = (), environ: Mapping[str, str] | None = None
-) -> dict[str, str]:
-    """Package name -> folder: above ``source`` and beside it, then ``package_path``, then
-    ``ROS_PACKAGE_PATH``; the first found wins, as ROS's own lookup does."""
-    env = os.environ if environ is None else environ
-    found: dict[str, str] = {}
-    budget = [_MAX_FOLDERS]
-    for folder in source.parents:
-        if (folder / "package.xml").is_file():
-            _scan(folder.parent, found, budget, depth=2)  # the package and its siblings
-            break
-    ros = [Path(p) for p in env.get("ROS_PACKAGE_PATH", "").split(os.pathsep) if p]
-    for folder in [*package_path, *ros]:
-        _scan(folder, found, budget, depth=_MAX_DEPTH)
-    return found
-
-
-def _scan(folder: Path, found: dict[str, str], budget: list[int], depth: int) -> None:
-    if budget[0] <= 0 or depth < 0:
-        return
-    budget[0] -= 1
-    manifest = folder / "package.xml"
-    if manifest.is_file():
-        try:
-            head = read_bytes(manifest, limit=1024 * 1024)
-        except InputError:
-            return
-        named = _PACKAGE_NAME.search(head)
-        if named is not None:
-            found.setdefault(named.group(1).decode(), str(folder.resolve()))
-        return  # packages do not nest
-    try:
-        children = sorted(
-            p
-            for p in folder.iterdir()
-            if p.is_dir() and not p.is_symlink() and not p.name.startswith(".")
-        )
-    except OSError:
-        return
-    for child in children:
-        _scan(child, found, budget, depth - 1)
-
-
 def _run_child(request: dict[str, Any], name: str, limits: XacroLimits) -> dict[str, Any]:
     root = str(Path(solver.__file__).resolve().parent.parent)
     code = (
         "import sys; sys.path[:0] = sys.argv[1:]; "
-        "from solver.identify.xacro_child import main; main()"
+        "from solver.identify.xacro.child import main; main()"
     )
     process = subprocess.Popen(
         [sys.executable, "-I", "-S", "-c", code, root, *_site_paths(name)],

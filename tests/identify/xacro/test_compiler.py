@@ -9,7 +9,7 @@ import pytest
 from solver.errors import InputError
 from solver.identify.identification import identify, identify_urdf
 from solver.identify.urdf import parse_urdf
-from solver.identify.xacros import XacroLimits, compile_xacro, find_packages, package_path_from_env
+from solver.identify.xacro import XacroLimits, compile_xacro, find_packages, package_path_from_env
 from tests.conftest import run_cli
 
 PACKAGE_XML = (

@@ -1,7 +1,7 @@
 """The child process that compiles one xacro file, behind resource limits and a file fence.
 
 xacro evaluates ``${...}`` as Python, and its namespace can be escaped: compiling a xacro file
-runs the file's author's code. :func:`solver.identify.xacros.compile_xacro` therefore never
+runs the file's author's code. :func:`solver.identify.xacro.compiler.compile_xacro` therefore never
 compiles in the caller's process. It starts this module in a fresh interpreter (``python -I``,
 an empty environment) and sends one JSON request on stdin; this module
 
@@ -17,11 +17,12 @@ an empty environment) and sends one JSON request on stdin; this module
 
 The Python-level fence alone is not a sandbox (an escaped expression reaches ``_io.open``,
 ``os.mknod``, lxml's C writer, ``$(eval)`` with builtins): the kernel fences of
-:mod:`solver.identify.confine` (Landlock, seccomp), set up once xacro is loaded, are what hold.
+:mod:`solver.identify.xacro.confine` (Landlock, seccomp), set up once xacro is loaded, are what
+hold.
 What ``--trust-xacro`` means is documented in docs/security.md.
 
 Not here: starting the process, the wall-clock timeout and reading its answer
-(:mod:`solver.identify.xacros`).
+(:mod:`solver.identify.xacro.compiler`).
 """
 
 from __future__ import annotations
@@ -39,7 +40,7 @@ from pathlib import Path
 from typing import Any
 
 from solver.errors import SolverError
-from solver.identify.confine import Confinement, confine
+from solver.identify.xacro.confine import Confinement, confine
 
 __all__ = ["main"]
 
@@ -179,7 +180,7 @@ class _Fence:
         return data
 
     def read_text(self, file: str | os.PathLike[str]) -> str:
-        from solver.identify.safexml import parse_xml
+        from solver.identify.readers.safexml import parse_xml
 
         data = self.read_bytes(file)
         if not os.fspath(file).endswith((".yaml", ".yml")):
@@ -204,7 +205,7 @@ class _Fence:
         import xacro.substitution_args
         import yaml
 
-        from solver.identify.safexml import parse_xml
+        from solver.identify.readers.safexml import parse_xml
 
         warm_up = (
             '<robot xmlns:xacro="http://www.ros.org/wiki/xacro"><xacro:property '
@@ -218,7 +219,7 @@ class _Fence:
         xml.dom.minidom.parseString(warm_up).toxml()
 
         # The kernel fences: reads beneath the roots and the interpreter's own folders only, no
-        # writes, no sockets, no processes (solver.identify.confine). The Python-level fence
+        # writes, no sockets, no processes (solver.identify.xacro.confine). The Python-level fence
         # below cannot promise that: an escaped expression reaches _io.open, os.mknod, lxml's C
         # file writer.
         self.confinement = confine([*self.roots, *sys.path])

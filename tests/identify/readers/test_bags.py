@@ -12,7 +12,7 @@ from rosbags.rosbag2 import Writer as Writer2
 from rosbags.typesys import Stores, get_types_from_msg, get_typestore
 
 from solver.errors import InputError
-from solver.identify.bags import read_bag_topics
+from solver.identify.readers.bags import read_bag_topics
 from solver.ros.names import Topic
 from tests.conftest import run_cli
 from tests.identify import builders

@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 from solver.errors import InputError
-from solver.identify.xacros import XacroLimits, compile_xacro
+from solver.identify.xacro.compiler import XacroLimits, compile_xacro
 from tests.conftest import ROOT
 
 LIMITS = XacroLimits(cpu_seconds=5, memory_bytes=512 * 2**20, wall_seconds=20.0)
@@ -25,7 +25,7 @@ ESCAPE = (
 
 PROBE = """
 import json, os, socket, subprocess, sys
-from solver.identify.confine import confine
+from solver.identify.xacro.confine import confine
 allowed, outside, target = sys.argv[1:4]
 tcp = socket.socket()  # made before the fence: Landlock alone must stop its connect
 confined = confine([allowed, *sys.path])
@@ -58,7 +58,7 @@ print(json.dumps({
 @pytest.fixture(scope="module")
 def landlock() -> int:
     """The Landlock ABI this kernel offers; the tests that need it skip without it."""
-    code = "from solver.identify.confine import confine; print(confine([]).landlock_abi)"
+    code = "from solver.identify.xacro.confine import confine; print(confine([]).landlock_abi)"
     done = subprocess.run(
         [sys.executable, "-c", code],
         capture_output=True,

@@ -1,6 +1,6 @@
 """Kernel fences for the trusted-xacro child: read a few folders, write, run and dial nothing.
 
-The child that compiles a trusted xacro file (:mod:`solver.identify.xacro_child`) replaces
+The child that compiles a trusted xacro file (:mod:`solver.identify.xacro.child`) replaces
 ``open`` and the process functions of ``os`` before xacro runs, but that fence is Python-level:
 an expression that escapes xacro's namespace reaches ``_io.open``, ``os.mknod`` or lxml's C
 file writer, none of which go through it. :func:`confine` moves the fence into the kernel,
@@ -17,12 +17,12 @@ irrevocably, for this process and anything it starts:
   ``clone`` and ``clone3`` fail, so no process or thread starts, root included.
 * ``RLIMIT_NPROC`` 0, for kernels where neither applies (binding non-root users only).
 
-What none of this covers (CPU and memory: ``setrlimit`` in :mod:`solver.identify.xacro_child`)
+What none of this covers (CPU and memory: ``setrlimit`` in :mod:`solver.identify.xacro.child`)
 is listed in docs/security.md. The raw system calls go through :mod:`ctypes`: the standard
 library has no binding for them, and a third-party one would be a dependency for five calls.
 Only the child imports this module.
 
-Not here: what the child reads or compiles (:mod:`solver.identify.xacro_child`).
+Not here: what the child reads or compiles (:mod:`solver.identify.xacro.child`).
 """
 
 from __future__ import annotations

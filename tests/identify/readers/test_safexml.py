@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from solver.errors import InputError
-from solver.identify.safexml import MAX_XML_BYTES, parse_xml, read_xml
+from solver.identify.readers.safexml import MAX_XML_BYTES, parse_xml, read_xml
 from tests.conftest import run_cli
 
 LAUGHS = (

@@ -1,0 +1,10 @@
+"""Readers of the files and records identification starts from, apart from what they mean.
+
+=============  ==============================================================================
+``safexml``    safe XML parsing (no entities, no network, size cap)
+``bags``       topics and message types recorded in ROS 1/2 bags (rosbags)
+=============  ==============================================================================
+
+Not here: what is read means (:mod:`solver.identify.urdf`, :mod:`solver.identify.classifier`,
+:mod:`solver.identify.interfaces`).
+"""
