@@ -2,6 +2,7 @@
 
 =============  ==============================================================================
 ``safexml``    safe XML parsing (no entities, no network, size cap)
+``prologue``   what comes before the root element, scanned once in linear time, bounded
 ``bags``       topics and message types recorded in ROS 1/2 bags (rosbags)
 =============  ==============================================================================
 

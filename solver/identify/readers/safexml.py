@@ -23,6 +23,13 @@ from typing import TYPE_CHECKING
 from solver.errors import Fault, InputError, Location
 from solver.extras import require
 from solver.files.inputfile import read_bounded
+from solver.identify.readers.prologue import (
+    MAX_PROLOGUE_BYTES,
+    MAX_PROLOGUE_ITEMS,
+    Stop,
+    scan_prologue,
+)
+from solver.untrusted import shown
 
 if TYPE_CHECKING:
     from lxml import etree
@@ -135,9 +142,13 @@ def _mend(raw: bytes, name: str, warnings: list[Fault]) -> bytes:
     if declaration is not None:
         version = _VERSION.search(declaration.group(0))
         if version is not None and version.group(2) != b"1.0":
-            shown = version.group(2).decode("ascii", errors="replace")
+            given = version.group(2).decode("ascii", errors="replace")
             _warn(
-                warnings, name, 1, f"XML version {shown!r} declared; read as XML 1.0", "xml-version"
+                warnings,
+                name,
+                1,
+                f"XML version {shown(given, quoted=True)} declared; read as XML 1.0",
+                "xml-version",
             )
             text = declaration.group(0)
             fixed = text[: version.start(2)] + b"1.0" + text[version.end(2) :]
@@ -172,40 +183,43 @@ def _namespace_recovery(raw: bytes, name: str, warnings: list[Fault]) -> etree._
     return root
 
 
-_DOCTYPE_SUBSET = re.compile(rb"<!DOCTYPE[^\[>]*\[(.*?)\]\s*>", re.DOTALL)
-_ENTITY = re.compile(rb"<!ENTITY\s+(%\s+)?([^\s>]+)(?:\s+(SYSTEM|PUBLIC)\s+([\"'][^\"']*[\"']))?")
-
-
 def _refuse_declared_entities(raw: bytes, name: str) -> None:
     """Refuse entity declarations before libxml2 sees them, naming the first one.
 
     libxml2 would refuse most bombs itself, but with messages about loops or amplification;
-    checking the internal subset first gives one clear message for every variant.
+    scanning the prologue first (:mod:`solver.identify.readers.prologue`, linear and bounded)
+    gives one clear message for every variant, and refuses a prologue past its length bound.
     """
-    subset = _DOCTYPE_SUBSET.search(raw[: 1024 * 1024])
-    if subset is None:
-        return
-    entities = list(_ENTITY.finditer(subset.group(1)))
+    prologue = scan_prologue(raw)
+    entities = prologue.entities
     if not entities:
+        if prologue.stop is Stop.TOO_LONG:
+            raise InputError.at(
+                name,
+                "no root element within the first "
+                f"{MAX_PROLOGUE_BYTES} bytes or {MAX_PROLOGUE_ITEMS:,} items (XML declaration, "
+                "comments, processing instructions, document type declarations); refused",
+                line=raw.count(b"\n", 0, prologue.offset) + 1,
+                code="xml-prologue",
+            )
         return
     first = entities[0]
-    line = raw.count(b"\n", 0, subset.start(1) + first.start()) + 1
-    external = next((e for e in entities if e.group(3)), None)
+    line = raw.count(b"\n", 0, first.offset) + 1
+    external = next((e for e in entities if e.external is not None), None)
     if external is not None:
-        what = (
-            f"external entity {external.group(2).decode(errors='replace')!r} "
-            f"({external.group(4).decode(errors='replace').strip(chr(34) + chr(39))})"
-        )
+        reference = shown(external.external or "")
+        what = f"external entity {shown(external.name, quoted=True)} ({reference})"
     else:
-        names = ", ".join(repr(e.group(2).decode(errors="replace")) for e in entities[:3])
-        what = f"{len(entities)} entity declaration(s) ({names})"
+        names = ", ".join(shown(e.name, quoted=True) for e in entities[:3])
+        more = " or more" if prologue.stop is Stop.ENTITIES else ""
+        what = f"{len(entities)}{more} entity declaration(s) ({names})"
     raise InputError.at(
         name,
         f"the document type declares {what}; entity declarations are "
         "refused (entity expansion and external references are never "
         "needed in a robot description)",
         line=line,
-        path=f"<!ENTITY {first.group(2).decode(errors='replace')}>",
+        path=f"<!ENTITY {shown(first.name)}>",
         code="xml-entity",
     )
 

@@ -8,6 +8,7 @@ from pathlib import Path
 import pytest
 
 from solver.errors import InputError
+from solver.identify.readers.prologue import MAX_PROLOGUE_BYTES, MAX_PROLOGUE_ITEMS
 from solver.identify.readers.safexml import MAX_XML_BYTES, parse_xml, read_xml
 from tests.conftest import run_cli
 
@@ -91,3 +92,55 @@ def test_the_cli_refuses_bombs_with_exit_2_and_no_traceback(tmp_path: Path, text
     assert "entity" in result.stderr
     assert "Traceback" not in result.stderr
     assert result.stdout == ""
+
+
+# Issue 23.2: a regular expression searching the prologue from every "<!DOCTYPE[" was quadratic
+# (more than 60 s in `identify` for this file, and the same on a live robot_description).
+OPEN_DOCTYPES = b"<!DOCTYPE[" * 40_000 + b'<robot name="r"/>'
+
+
+def test_forty_thousand_open_document_types_are_malformed_xml_at_their_line() -> None:
+    with pytest.raises(InputError) as caught:
+        parse_xml(OPEN_DOCTYPES, "open.urdf")
+    fault = caught.value.faults[0]
+    assert (fault.code, fault.location.file, fault.location.line) == ("xml", "open.urdf", 1)
+
+
+@pytest.mark.parametrize(
+    ("raw", "line"),
+    [
+        (b"<!--" + b"x" * MAX_PROLOGUE_BYTES + b'-->\n<robot name="r"/>', 1),
+        # The document type is the first item, so the declaration past the bound is on the
+        # line of the last one allowed.
+        (
+            b"<!DOCTYPE r [<!ELEMENT a ANY>\n"
+            + b"<!ELEMENT a ANY>\n" * MAX_PROLOGUE_ITEMS
+            + b']><robot name="r"/>',
+            MAX_PROLOGUE_ITEMS,
+        ),
+    ],
+    ids=["a-1-mib-comment", "ten-thousand-declarations"],
+)
+def test_a_prologue_past_its_bounds_is_refused_with_its_line(raw: bytes, line: int) -> None:
+    with pytest.raises(InputError, match="no root element within") as caught:
+        parse_xml(raw, "long.urdf", warnings=[])
+    fault = caught.value.faults[0]
+    assert (fault.code, fault.location.line) == ("xml-prologue", line)
+
+
+def test_entity_names_from_the_prologue_are_shown_escaped() -> None:
+    raw = b'<!DOCTYPE r [<!ENTITY a\x1b[2J "x">]><robot name="r"/>'
+    with pytest.raises(InputError) as caught:
+        parse_xml(raw, "x.urdf")
+    assert "\x1b" not in str(caught.value)
+    assert "\\x1b[2J" in str(caught.value)
+
+
+def test_the_cli_refuses_forty_thousand_open_document_types_with_exit_2(tmp_path: Path) -> None:
+    path = tmp_path / "open.urdf"
+    path.write_bytes(OPEN_DOCTYPES)
+    result = run_cli("identify", path)
+    assert result.returncode == 2
+    assert result.stderr.startswith(f"{path}:1:")
+    assert "malformed XML" in result.stderr
+    assert "Traceback" not in result.stderr
