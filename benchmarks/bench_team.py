@@ -6,6 +6,11 @@ maximums scaled). The ratio ``100,000 counts / 1,000 counts`` (``tools/bench_tab
 how much reading follows the counts rather than the file; a yaml.CSafeLoader parse of the
 100,000-count team file is the peer for what reading the file alone costs.
 
+Refusing a nest 16 MB long (``[`` or ``- `` repeated) against one 1 KB long: the pre-scan stops
+at the 65th level, so what is left in proportion to the length is one pass over the bytes (the
+NUL check, libyaml's copy of the text); a ratio near 16,000 would mean reading on, and one far
+above it, work growing faster than the input (``[`` x 40,000 took 8 s before the pre-scan).
+
 Run: ``python -m pytest benchmarks/bench_team.py``.
 """
 
@@ -18,6 +23,8 @@ import yaml
 from pytest_benchmark.fixture import BenchmarkFixture
 
 from solver import load_team
+from solver.errors import InputError
+from solver.files.yamlio import parse_document
 
 TYPES = 100
 
@@ -59,3 +66,23 @@ def test_parse_team_file_with_libyaml(benchmark: BenchmarkFixture, tmp_path: Pat
     text = _write(tmp_path, 100_000).read_text(encoding="utf-8")
     data = benchmark(yaml.load, text, Loader=yaml.CSafeLoader)
     assert len(data["team"]) == TYPES
+
+
+# Refusing a nest: '[' and '- ' repeated, located where the 65th level opens.
+NESTS = {"[": "1:66", "- ": "1:131"}
+
+
+@pytest.mark.parametrize("length", [1_000, 16_000_000], ids=["1 KB", "16 MB"])
+@pytest.mark.parametrize("opener", list(NESTS), ids=["flow", "block"])
+def test_refuse_a_deep_nest(benchmark: BenchmarkFixture, opener: str, length: int) -> None:
+    text = opener * (length // len(opener))
+
+    def refuse() -> str:
+        try:
+            parse_document(text, "deep.yaml")
+        except InputError as error:
+            return str(error)
+        return ""
+
+    message = benchmark(refuse)
+    assert message == f"deep.yaml:{NESTS[opener]}: nested more than 64 levels deep; refused"

@@ -199,6 +199,66 @@ def test_a_15_megabyte_flow_style_line_is_refused_before_it_is_built(tmp_path: P
     assert "more than 200000 values" in result.stderr
 
 
+# ---- nesting: every YAML reader -------------------------------------------------------------
+
+# A block nest composed by libyaml ended the process with SIGSEGV; a flow nest was quadratic.
+DEEP_YAML = {"block": "- " * 50_000 + "x\n", "flow": "[" * 1_000_000 + "\n"}
+
+
+# Every way a YAML file reaches a reader: {deep} is the hostile file, beside a valid team
+# ({team}, rules.yaml) and a folder of one robot ({robots}, {urdf}).
+YAML_READERS = {
+    "solve": ["solve", "{deep}"],
+    "solve --rules": ["solve", "{team}", "--rules", "{deep}"],
+    "count": ["count", "{deep}"],
+    "robots": ["robots", "{deep}"],
+    "check": ["check", "{folder}/rules.yaml", "{deep}"],
+    "check --rules": ["check", "{team}", "--rules", "{deep}"],
+    "assign --team": ["assign", "--team", "{deep}", "kinematic_type=UAV"],
+    "identify --team": ["identify", "{urdf}", "--team", "{deep}"],
+    "identify --profile": ["identify", "{urdf}", "--profile", "{deep}"],
+    "fleet --profile": ["fleet", "{robots}", "--profile", "{deep}"],
+    "layouts --profile": ["layouts", "{team}", "-o", "{folder}/out", "--profile", "{deep}"],
+    "report": ["report", "{deep}", "-o", "{folder}/r.html"],
+    "batch": ["batch", "{deep}", "-o", "{folder}/batch"],
+    "export": ["export", "{deep}"],
+    "reproduce": ["reproduce", "{deep}"],
+}
+READERS = list(YAML_READERS)
+
+
+def _yaml_reader(reader: str, folder: Path, deep: str) -> list[str]:
+    with_paper_rules(folder)
+    (folder / "robots").mkdir()
+    places = {
+        "deep": str(folder / "deep.yaml"),
+        "team": str(team_file(folder)),
+        "folder": str(folder),
+        "robots": str(folder / "robots"),
+        "urdf": str(_urdf(folder / "robots")),
+    }
+    (folder / "deep.yaml").write_text(deep)
+    return [argument.format(**places) for argument in YAML_READERS[reader]]
+
+
+@pytest.mark.parametrize("reader", READERS)
+def test_a_block_nest_50000_deep_is_refused_by_every_reader(tmp_path: Path, reader: str) -> None:
+    deep = tmp_path / "deep.yaml"
+    result = run_cli(*_yaml_reader(reader, tmp_path, DEEP_YAML["block"]))  # a signal is the point
+    assert result.returncode in (1, 2), result.stderr  # 1: batch's failed row
+    assert "Traceback" not in result.stderr
+    assert f"{deep}:1:131: nested more than 64 levels deep; refused" in result.stderr
+
+
+@pytest.mark.parametrize("reader", READERS)
+def test_a_flow_nest_a_million_deep_is_refused_by_every_reader(
+    tmp_path: Path, reader: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    deep = tmp_path / "deep.yaml"
+    assert run_main(*_yaml_reader(reader, tmp_path, DEEP_YAML["flow"])) in (1, 2)
+    assert f"{deep}:1:66: nested more than 64 levels deep; refused" in capsys.readouterr().err
+
+
 # ---- leaks -------------------------------------------------------------------------------
 
 SECRET = "root:x:0:0:the-secret-line:/root:/bin/bash"

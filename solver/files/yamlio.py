@@ -6,6 +6,15 @@ friends are refused), then walked into plain ``dict``/``list``/scalar data while
 line and column of every key and value under its path. Duplicate keys, recursive or exploding
 aliases, unsupported tags, oversized files and non-UTF-8 bytes are all reported as located faults.
 
+Before anything is composed, :func:`prescan` reads the document's parsing events once and refuses
+one nested deeper than :data:`MAX_DEPTH` (block indentation and flow brackets alike) or with more
+events than :data:`MAX_EVENTS`: libyaml's composer recurses once per level (50,000 levels of
+``- - - ...`` ended the process with SIGSEGV) and its scanner costs time in proportion to the
+flow depth on every token (``[`` repeated 40,000 times took 8 s). The pre-scan stops at the
+first event past a bound, so its work is linear in the input whatever the input is. Every YAML
+text the project reads (rule sets, teams, identification and presentation profiles, and text
+from a live graph through :func:`prescan` itself) goes through it.
+
 Not here: what the data means. :mod:`solver.core.rules` and :mod:`solver.core.team` read the data
 and use
 :meth:`Document.location` to say where a problem is.
@@ -32,6 +41,7 @@ __all__ = [
     "format_path",
     "load_document",
     "parse_document",
+    "prescan",
 ]
 
 PathPart = str | int
@@ -41,7 +51,8 @@ MAX_FILE_BYTES = 16 * 1024 * 1024
 # A document with more values than this, counting every alias expansion, is refused: this is
 # what stops "billion laughs" style alias bombs from exhausting memory.
 MAX_NODES = 200_000
-# Nesting deeper than this is refused (rule and team files nest a handful of levels).
+# Nesting deeper than this is refused (rule and team files nest a handful of levels), by the
+# pre-scan before composing and again, counting alias expansions, while building values.
 MAX_DEPTH = 64
 # A mapping key is a name (a characteristic, a kinematic type, a field): at most this long.
 MAX_KEY_CHARS = 200
@@ -133,29 +144,11 @@ def parse_document(
 
     ``tolerate``: fault codes kept in :attr:`Document.tolerated` instead of raised.
     """
-    if "\x00" in text:
-        raise InputError.at(name, "contains NUL bytes; is this a YAML file?")
+    prescan(text, name)
     try:
-        _count_events(text, name)
         node = yaml.compose(text, Loader=_LOADER)
-    except yaml.MarkedYAMLError as error:
-        mark = error.problem_mark or error.context_mark
-        problem = _short(error.problem or error.context or "invalid YAML", 120)
-        if mark is None:
-            raise InputError.at(name, f"YAML syntax error: {problem}") from None
-        raise InputError.at(
-            name,
-            f"YAML syntax error: {problem}",
-            line=mark.line + 1,
-            column=mark.column + 1,
-            code="yaml",
-        ) from None
     except yaml.YAMLError as error:
-        raise InputError.at(name, f"YAML error: {_short(str(error), 120)}") from None
-    except RecursionError:
-        raise InputError.at(
-            name, f"nested too deeply (more than {MAX_DEPTH} levels); refused", code="too-large"
-        ) from None
+        raise _syntax_error(name, error) from None
     walker = _Walker(name)
     try:
         data = walker.convert(node, ()) if node is not None else None
@@ -166,19 +159,60 @@ def parse_document(
     return Document(name, data, walker.value_marks, walker.key_marks, tuple(walker.faults))
 
 
-def _count_events(text: str, name: str) -> None:
-    """Refuse, before composing anything, a document with more parsing events than any
-    document of at most MAX_NODES values has (composing first is what took a minute)."""
-    for count, event in enumerate(yaml.parse(text, Loader=_LOADER)):
-        if count > MAX_EVENTS:
-            mark = event.start_mark
-            raise InputError.at(
-                name,
-                f"more than {MAX_NODES} values; refused",
-                line=None if mark is None else mark.line + 1,
-                column=None if mark is None else mark.column + 1,
-                code="too-large",
-            )
+def prescan(text: str, name: str = "<string>") -> None:
+    """Refuse, before anything is composed, YAML text nested deeper than :data:`MAX_DEPTH` or
+    with more parsing events than :data:`MAX_EVENTS`; :class:`InputError` at the first event
+    past the bound (its line and column).
+
+    One pass over libyaml's events, which come from a state machine with explicit stacks (no
+    recursion), and stops at that first event: the work before it is at most ``MAX_EVENTS``
+    events, each costing the scanner time in proportion to at most ``MAX_DEPTH`` open flow
+    collections (plus the 1,024 characters libyaml looks ahead for a key). A syntax error
+    met first is an :class:`InputError` at its line and column.
+    """
+    if "\x00" in text:
+        raise InputError.at(name, "contains NUL bytes; is this a YAML file?")
+    open_collections = 0
+    try:
+        for count, event in enumerate(yaml.parse(text, Loader=_LOADER)):
+            if isinstance(event, yaml.CollectionEndEvent):
+                open_collections -= 1
+                continue
+            if isinstance(event, yaml.NodeEvent) and open_collections > MAX_DEPTH:
+                raise _refusal(name, event, f"nested more than {MAX_DEPTH} levels deep; refused")
+            if count > MAX_EVENTS:
+                raise _refusal(name, event, f"more than {MAX_NODES} values; refused")
+            if isinstance(event, yaml.CollectionStartEvent):
+                open_collections += 1
+    except yaml.YAMLError as error:
+        raise _syntax_error(name, error) from None
+
+
+def _syntax_error(name: str, error: yaml.YAMLError) -> InputError:
+    if not isinstance(error, yaml.MarkedYAMLError):
+        return InputError.at(name, f"YAML error: {_short(str(error), 120)}")
+    mark = error.problem_mark or error.context_mark
+    problem = _short(error.problem or error.context or "invalid YAML", 120)
+    if mark is None:
+        return InputError.at(name, f"YAML syntax error: {problem}")
+    return InputError.at(
+        name,
+        f"YAML syntax error: {problem}",
+        line=mark.line + 1,
+        column=mark.column + 1,
+        code="yaml",
+    )
+
+
+def _refusal(name: str, event: yaml.Event, message: str) -> InputError:
+    mark = event.start_mark
+    return InputError.at(
+        name,
+        message,
+        line=None if mark is None else mark.line + 1,
+        column=None if mark is None else mark.column + 1,
+        code="too-large",
+    )
 
 
 class _TooLarge(Exception):

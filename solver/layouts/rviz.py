@@ -20,6 +20,7 @@ import yaml
 from solver.core.partition import Configuration
 from solver.core.solution import Solution
 from solver.errors import Fault, Location
+from solver.files.yamlio import parse_document
 from solver.layouts.foxglove import LayoutError, panel_entries, template_topic
 from solver.layouts.profile import PanelSpec, Profile
 
@@ -142,8 +143,9 @@ def rviz_text(document: dict[str, Any]) -> str:
 
 
 def validate_rviz(text: str, file: str = "<rviz>") -> None:
-    """Loads as YAML; every display has Class, Enabled, Name and Value."""
-    document = yaml.safe_load(text)
+    """Loads as YAML (through the project's one YAML reader); every display has Class, Enabled,
+    Name and Value."""
+    document = parse_document(text, file).data
     faults: list[Fault] = []
     displays = (document or {}).get("Visualization Manager", {}).get("Displays")
     if not isinstance(displays, list):
