@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import contextlib
+import io
+import os
 import subprocess
 import sys
 from collections.abc import Callable
@@ -27,13 +30,67 @@ def write_file(tmp_path: Path) -> Callable[[str, str], Path]:
     return write
 
 
+class _Kept(io.BytesIO):
+    """A byte buffer that keeps its bytes when the command closes the stream over it."""
+
+    def close(self) -> None:
+        pass
+
+
 def run_cli(*args: str | Path, cwd: Path | None = None) -> subprocess.CompletedProcess[str]:
-    """Run ``python -m solver`` as a user would, capturing text output."""
+    """Run the command line in this process, as yamllint's tests do, capturing its output.
+
+    The same ``main`` a user's ``teleop-ui`` calls, with standard output and error captured as
+    UTF-8 text, an empty standard input and ``cwd`` (default: the repository) as the working
+    folder; ``SystemExit`` (argparse's usage errors) becomes the exit status. It answers like
+    :func:`run_process`, in a fraction of the time. Tests whose point is the process itself
+    (start-up, signals, closed streams, the environment, resource limits) use
+    :func:`run_process`.
+    """
+    from solver.cli import main
+
+    argv = [os.fspath(arg) for arg in args]
+    out, err = _Kept(), _Kept()
+    streams = sys.stdin, sys.stdout, sys.stderr
+    folder = Path.cwd()
+    sys.stdin = io.TextIOWrapper(io.BytesIO(b""), encoding="utf-8")
+    sys.stdout = io.TextIOWrapper(out, encoding="utf-8", write_through=True)
+    sys.stderr = io.TextIOWrapper(err, encoding="utf-8", write_through=True)
+    os.chdir(cwd or ROOT)
+    try:
+        status = main(argv)
+    except SystemExit as exit:
+        status = _exit_status(exit.code)
+    finally:
+        for stream in (sys.stdout, sys.stderr):
+            with contextlib.suppress(ValueError):  # closed by the command
+                stream.flush()
+        sys.stdin, sys.stdout, sys.stderr = streams
+        os.chdir(folder)
+    return subprocess.CompletedProcess(
+        ["teleop-ui", *argv],
+        status,
+        out.getvalue().decode("utf-8", "replace"),
+        err.getvalue().decode("utf-8", "replace"),
+    )
+
+
+def _exit_status(code: object) -> int:
+    if code is None:
+        return 0
+    return code if isinstance(code, int) else 1
+
+
+def run_process(
+    *args: str | Path, cwd: Path | None = None, env: dict[str, str] | None = None
+) -> subprocess.CompletedProcess[str]:
+    """Run ``python -m solver`` in a new process, as a user would, capturing text output."""
     return subprocess.run(
         [sys.executable, "-m", "solver", *map(str, args)],
         capture_output=True,
         text=True,
         cwd=cwd or ROOT,
+        env=env,
         check=False,
         timeout=600,
     )

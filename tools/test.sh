@@ -12,31 +12,38 @@ sudo=""
 [ "$(id -u)" -eq 0 ] || sudo="sudo"
 apt_updated=""
 apt_install() {
+  # Says what it installs and why before it does: $1 is the reason, the rest the packages.
+  local why="$1"; shift
+  echo "tools/test.sh: installing Debian packages $* ($why)" >&2
   [ -n "$apt_updated" ] || { $sudo apt-get update -q; apt_updated=1; }
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "$@"
 }
 
 # ros-core: a real ROS 1 master (roscore) for the tests of `teleop-ui watch`.
 if ! command -v roscore >/dev/null 2>&1; then
-  apt_install ros-core
+  apt_install "a real ROS 1 master, roscore, for the live tests of watch and assign --master" \
+    ros-core
 fi
 
 # chromium: tests/layouts/test_preview.py screenshots the layout previews in headless Chromium.
 if ! command -v chromium >/dev/null 2>&1; then
-  apt_install chromium chromium-driver
+  apt_install "headless Chromium, for the tests of what a person looks at (layout previews, \
+report thumbnails, the studio)" chromium chromium-driver
 fi
 
 # Debian splits venv's pip bootstrap (ensurepip) into the python3-venv package.
 if [ ! -x "$venv/bin/python" ]; then
   if ! python3 -m venv "$venv" >/dev/null 2>&1; then
     rm -rf "$venv"
-    apt_install python3-venv
+    apt_install "python3 -m venv needs it on Debian (the system Python refuses pip, PEP 668)" \
+      python3-venv
     python3 -m venv "$venv"
   fi
 fi
 python="$venv/bin/python"
 
 # `all`: every optional feature, so every test runs (see the extras in pyproject.toml).
+echo "tools/test.sh: installing teleop-ui with every extra and the test tools into $venv (pip)" >&2
 "$python" -m pip install -q -e '.[test,all]'
 "$python" -m ruff check solver tests benchmarks tools
 "$python" -m ruff format --check solver tests benchmarks tools

@@ -14,10 +14,8 @@ nodes do when they start.
 
 from __future__ import annotations
 
-import contextlib
 import os
 import shutil
-import signal
 import socket
 import subprocess
 import sys
@@ -29,11 +27,13 @@ from typing import Any, TypeVar
 from xmlrpc.server import SimpleXMLRPCRequestHandler, SimpleXMLRPCServer
 
 from solver.live.master import MasterClient, MasterError
+from tests.processes import end, marked
 
 T = TypeVar("T")
 
 # What roscore itself puts on the parameter server.
 ROSCORE_PARAMS = frozenset({"/run_id", "/roslaunch", "/rosversion", "/rosdistro"})
+ROSCORE_MARK = "TELEOP_UI_TEST_ROSCORE"
 STARTUP_TIMEOUT = 120.0  # seconds; a loaded 2-core machine starts roscore slowly
 
 
@@ -56,6 +56,7 @@ class Roscore:
         self.uri = f"http://127.0.0.1:{self.port}/"
         self.process: subprocess.Popen[bytes] | None = None
         self.starts = 0
+        self.mark = f"{os.getpid()}-{self.port}-{id(self)}"
 
     def environment(self) -> dict[str, str]:
         env = {
@@ -64,6 +65,9 @@ class Roscore:
             if k not in ("ROS_MASTER_URI", "ROS_HOSTNAME", "ROS_NAMESPACE")
         }
         env.update(ROS_HOME=str(self.home), ROS_LOG_DIR=str(self.home / "log"), ROS_IP="127.0.0.1")
+        # Every process of this roscore (rosmaster and rosout too, in sessions of their own)
+        # carries this mark, so kill() finds them all, even one started a moment before.
+        env[ROSCORE_MARK] = self.mark
         # This environment's scripts come first on PATH, as in a shell where it is activated:
         # installing the project must not put anything there that breaks roscore (pip's
         # rospkg, for one, installs a `rosversion` that knows no ROS packages).
@@ -107,53 +111,26 @@ class Roscore:
         """SIGKILL roscore and everything it started, at once, and reap it.
 
         roslaunch starts rosmaster and rosout each in a session of their own (``setsid``), so
-        killing roscore's process group alone would leave the master running: the whole tree
-        of processes is collected first, and each group in it is killed.
+        killing roscore's process group alone would leave the master running, and a rosout
+        being started at that moment is in no list yet: every process carrying this roscore's
+        mark is killed until none is left (:mod:`tests.processes`).
         """
         if self.process is None:
             return
-        groups = {self.process.pid} | {
-            os.getpgid(pid) for pid in _descendants(self.process.pid) if _exists(pid)
-        }
-        for group in sorted(groups):
-            with contextlib.suppress(ProcessLookupError):
-                os.killpg(group, signal.SIGKILL)
-        self.process.wait(timeout=60)
-        self.process = None
+        process, self.process = self.process, None
+        process.kill()
+        wait_until(self._ended, 60, f"roscore on port {self.port} to end")
+        process.wait(timeout=60)
         client = MasterClient(self.uri, caller_id="/test_probe", timeout=1.0)
         try:
             wait_until(lambda: not self._answers(client), 60, "roscore to go away")
         finally:
             client.close()
 
-
-def _descendants(root: int) -> list[int]:
-    """Every process below ``root``, read from /proc (Linux)."""
-    children: dict[int, list[int]] = {}
-    for entry in Path("/proc").iterdir():
-        if not entry.name.isdigit():
-            continue
-        try:
-            stat = (entry / "stat").read_text()
-        except OSError:
-            continue  # gone meanwhile
-        # The command name (2nd field) is parenthesised and may hold spaces.
-        parent = int(stat.rsplit(")", 1)[1].split()[1])
-        children.setdefault(parent, []).append(int(entry.name))
-    found, todo = [], [root]
-    while todo:
-        for child in children.get(todo.pop(), []):
-            found.append(child)
-            todo.append(child)
-    return found
-
-
-def _exists(pid: int) -> bool:
-    try:
-        os.getpgid(pid)
-    except ProcessLookupError:
-        return False
-    return True
+    def _ended(self) -> bool:
+        left = marked(self.mark, variable=ROSCORE_MARK)
+        end(left)
+        return not left
 
 
 def wait_until(
