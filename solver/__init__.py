@@ -31,12 +31,14 @@ The package has wings; each is a package with its own map in its docstring:
 ``identify``           real robots from ROS metadata (URDF, xacro, SRDF, topics, bags)
 ``live``               live UI assignment on a ROS 2 graph or a ROS 1 master (``watch``)
 ``cli``                the ``teleop-ui`` command line, a thin layer over the above
+``studio``             the design studio: pages and a JSON API in the browser, a
+                       layer over the above beside the command line
 =====================  ==========================================================
 
 Layers, lowest first; a module imports only from its own layer or lower ones, and no module
 imports itself back through others (tests/test_architecture.py checks both):
 ``errors``, ``extras``, ``untrusted`` -> ``files``, ``ros`` -> ``core``, ``engines`` ->
-``layouts`` -> ``reporting`` -> ``check``, ``identify`` -> ``live`` -> ``cli``.
+``layouts`` -> ``reporting`` -> ``check``, ``identify`` -> ``live`` -> ``cli``, ``studio``.
 
 Every command from Python (docs/python-api.md has worked examples):
 

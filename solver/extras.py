@@ -20,7 +20,15 @@ from solver.errors import Fault, Location, MissingExtraError
 __all__ = ["EXTRAS", "require"]
 
 # The extra that installs each optional top-level module (kept in step with pyproject.toml).
-EXTRAS: dict[str, str] = {"matplotlib": "plots", "lxml": "ros", "rosbags": "ros", "xacro": "xacro"}
+EXTRAS: dict[str, str] = {
+    "matplotlib": "plots",
+    "lxml": "ros",
+    "rosbags": "ros",
+    "xacro": "xacro",
+    "starlette": "studio",
+    "uvicorn": "studio",
+    "jinja2": "studio",
+}
 
 
 def require(module: str, *, feature: str) -> None:

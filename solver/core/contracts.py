@@ -21,6 +21,7 @@ if TYPE_CHECKING:
 __all__ = [
     "assignment_data",
     "configuration_data",
+    "counts_data",
     "integer_runs",
     "solution_data",
     "solution_warnings",
@@ -110,6 +111,19 @@ def solution_data(solution: Solution, *, configurations: bool = False) -> dict[s
     if configurations:
         data["configurations"] = [configuration_data(rules, c) for c in solution.configurations]
     return data
+
+
+def counts_data(solution: Solution) -> dict[str, Any]:
+    """The JSON contract of ``teleop-ui count --format json``: per-type counts only."""
+    return {
+        "team": solution.team.name,
+        "rules": solution.rules.name,
+        "rules_file": solution.rules.file,
+        "bound": solution.bound,
+        "by_type": [summary_data(t) for t in solution.by_type],
+        "totals": {k: v for k, v in summary_data(solution.totals).items() if k != "kinematic_type"},
+        "default_configuration": solution.default_configuration,
+    }
 
 
 def assignment_data(solution: Solution, assignment: Assignment) -> dict[str, Any]:

@@ -23,9 +23,10 @@ from typing import TYPE_CHECKING
 from solver.core.constraints import RuleConstraint, Value
 
 if TYPE_CHECKING:
+    from solver.core.rules import RuleSet
     from solver.core.team import Team
 
-__all__ = ["Removed", "removed_by_constraints"]
+__all__ = ["Removed", "excluded_by_rules", "removed_by_constraints"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -83,4 +84,43 @@ def removed_by_constraints(team: Team) -> tuple[Removed, ...]:
                     kt, characteristic.name, dead, tuple(rules.constraints[i] for i in conflict)
                 )
             )
+    return tuple(found)
+
+
+def excluded_by_rules(rules: RuleSet) -> tuple[Removed, ...]:
+    """Per kinematic type, each value the constraints exclude whatever a team selects, with a
+    minimal set of constraints that excludes it: no valid robot of that type can have it (a
+    selection tool shows it disabled, with the reason). A type with no valid robot at all is
+    one entry with an empty ``characteristic``."""
+    if not rules.constraints:
+        return ()
+    from solver.core.analysis import Analysis
+
+    analysis = Analysis(rules)
+    found: list[Removed] = []
+    for kinematic_type in rules.key.values:
+        domains = analysis.type_domains(kinematic_type)
+        live = analysis.live(domains)
+        if not live[rules.key_position]:
+            conflict = analysis.minimal_conflict(domains)
+            found.append(
+                Removed(str(kinematic_type), "", (), tuple(rules.constraints[i] for i in conflict))
+            )
+            continue
+        for position, characteristic in enumerate(rules.characteristics):
+            if position == rules.key_position:
+                continue
+            for value in domains[position]:
+                if value in live[position]:
+                    continue
+                # One entry per value: each shows its own reason beside its control.
+                conflict = analysis.minimal_conflict(analysis.narrowed(domains, position, [value]))
+                found.append(
+                    Removed(
+                        str(kinematic_type),
+                        characteristic.name,
+                        (value,),
+                        tuple(rules.constraints[i] for i in conflict),
+                    )
+                )
     return tuple(found)

@@ -12,14 +12,15 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass
+from functools import cache
 from pathlib import Path
 
 from solver.core.rules import shipped_name, shipped_path
 from solver.core.solution import Solution, solve
-from solver.core.team import Published, load_team, resolve_team_path
+from solver.core.team import Published, Team, load_team, resolve_team_path
 from solver.errors import InputError
 
-__all__ = ["Comparison", "compare", "published_note"]
+__all__ = ["Comparison", "compare", "published_for", "published_note"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -91,3 +92,28 @@ def compare(paths: Iterable[str | Path] | None = None) -> list[Comparison]:
             raise InputError.at(shown, "has no 'published:' figures to compare with")
         comparisons.append(Comparison(shown, solve(team), team.published))
     return comparisons
+
+
+@cache
+def _published_teams() -> tuple[Team, ...]:
+    """The shipped teams that carry published figures (shipped files do not change)."""
+    teams = (
+        load_team(path, display=shipped_name(path) or str(path))
+        for path in sorted(shipped_path("teams").glob("*.yaml"))
+    )
+    return tuple(team for team in teams if team.published is not None)
+
+
+def published_for(team: Team) -> Published | None:
+    """The figures a publication reports for ``team``'s selection, if a shipped team with the
+    same selections under the same rule set carries them (``None`` otherwise).
+
+    A selection made by hand (in the studio, say) that equals the article's Case 3 gets the
+    article's 820 / 99 beside the computed 872 / 102, as ``solve case3`` shows them.
+    """
+    if team.published is not None:
+        return team.published
+    for shipped in _published_teams():
+        if shipped.rules.file == team.rules.file and shipped.selections == team.selections:
+            return shipped.published
+    return None

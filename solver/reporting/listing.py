@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import csv
 import io
+import itertools
 import json
 from collections.abc import Callable, Iterator, Sequence
 from typing import TYPE_CHECKING, TextIO, TypeAlias
@@ -29,7 +30,11 @@ from solver.reporting.render import csv_cell, csv_row
 if TYPE_CHECKING:
     from numpy.typing import NDArray
 
-__all__ = ["numbered_robots", "write_robots"]
+__all__ = ["MAX_SKIPPED", "numbered_robots", "robots_page", "write_robots"]
+
+# Robots a page may enumerate and drop to reach its first robot, where no closed form finds it
+# (rule constraints, overlapping components): past this a page is refused, not computed slowly.
+MAX_SKIPPED = 10**6
 
 Cells: TypeAlias = "NDArray[np.object_]"  # text, one string per block row
 
@@ -69,6 +74,91 @@ def numbered_robots(
                 continue
             configuration = solution.configuration_for(robot)
             yield (default if configuration is None else configuration.number), robot
+
+
+def robots_page(
+    solution: Solution, offset: int, limit: int, *, configuration: int | None = None
+) -> list[tuple[int, tuple[Value, ...]]]:
+    """Robots ``offset`` .. ``offset + limit - 1`` of :func:`numbered_robots` (of those
+    ``configuration`` serves, when given), each with its configuration number: one page of a
+    list that may hold millions.
+
+    Where the rules have no constraints and every value is in at most one component, a page is
+    found in closed form (the valid robots of a type, or of a configuration, are a product of
+    value lists, and robot ``k`` of a product is read off ``k``'s digits), so page 1,000,000
+    costs what page 1 costs. Otherwise robots are enumerated up to the page: a
+    :class:`TooLargeError` past :data:`MAX_SKIPPED` of them. ``solution`` must be listed
+    (solved without ``count_only``); ``ValueError`` otherwise, or for a negative offset or
+    limit.
+    """
+    if not solution.listed:
+        raise ValueError("robots_page needs a listed solution (solved without count_only)")
+    if offset < 0 or limit < 0:
+        raise ValueError(f"offset and limit must not be negative (got {offset}, {limit})")
+    rules = solution.rules
+    chosen = None
+    if configuration is not None:
+        chosen = next((c for c in solution.configurations if c.number == configuration), None)
+        if chosen is None:
+            return []
+    if not rules.constraints and _one_component_each(solution):
+        if chosen is not None:
+            return [(chosen.number, robot) for robot in _product_page(chosen.served, offset, limit)]
+        return _closed_form_page(solution, offset, limit)
+    if offset > MAX_SKIPPED:
+        raise TooLargeError.at(
+            solution.team.file,
+            f"a page starting at robot {offset + 1} is refused: the rule set's constraints (or "
+            f"overlapping components) mean enumerating the {offset} robots before it (more "
+            f"than {MAX_SKIPPED}); teleop-ui robots lists them all",
+        )
+    found = numbered_robots(solution)
+    if chosen is not None:
+        found = (entry for entry in found if entry[0] == chosen.number)
+    return list(itertools.islice(found, offset, offset + limit))
+
+
+def _product_page(
+    domains: Sequence[Sequence[Value]], offset: int, limit: int
+) -> list[tuple[Value, ...]]:
+    """Members ``offset`` .. of the product of ``domains`` (the last varying fastest)."""
+    total = 1
+    for domain in domains:
+        total *= len(domain)
+    page = []
+    for position in range(offset, min(offset + limit, total)):
+        digits = []
+        rest = position
+        for domain in reversed(domains):
+            rest, digit = divmod(rest, len(domain))
+            digits.append(domain[digit])
+        page.append(tuple(reversed(digits)))
+    return page
+
+
+def _closed_form_page(
+    solution: Solution, offset: int, limit: int
+) -> list[tuple[int, tuple[Value, ...]]]:
+    """:func:`robots_page` of a team whose robots are the products of its selections."""
+    rules = solution.rules
+    numbers = {c.key: c.number for c in solution.configurations}
+    default = solution.default_configuration
+    page: list[tuple[int, tuple[Value, ...]]] = []
+    for selection in solution.team.selections:
+        size = selection.size
+        if offset >= size:
+            offset -= size
+            continue
+        for robot in _product_page(selection.domains, offset, limit - len(page)):
+            key = []
+            for characteristic, value in zip(rules.characteristics, robot, strict=True):
+                members = characteristic.membership[characteristic.positions[value]]
+                key.append(members[0] if members else -1)
+            page.append((numbers.get(tuple(key), default), robot))
+        offset = 0
+        if len(page) >= limit:
+            break
+    return page
 
 
 def write_robots(

@@ -19,10 +19,10 @@ from typing import Any
 from solver.core.assignment import Assignment
 from solver.core.contracts import (
     assignment_data,
+    counts_data,
     integer_runs,
     solution_data,
     solution_warnings,
-    summary_data,
 )
 from solver.core.reproduce import Comparison, published_note
 from solver.core.rules import Characteristic, Component
@@ -217,19 +217,7 @@ def render_solution(solution: Solution, fmt: str = "text", *, configurations: bo
 def render_counts(solution: Solution, fmt: str = "text") -> str:
     """Per-type counts only (``teleop-ui count``): text, JSON or Markdown."""
     if fmt == "json":
-        return dumps(
-            {
-                "team": solution.team.name,
-                "rules": solution.rules.name,
-                "rules_file": solution.rules.file,
-                "bound": solution.bound,
-                "by_type": [summary_data(t) for t in solution.by_type],
-                "totals": {
-                    k: v for k, v in summary_data(solution.totals).items() if k != "kinematic_type"
-                },
-                "default_configuration": solution.default_configuration,
-            }
-        )
+        return dumps(counts_data(solution))
     headers = ["kinematic type", "valid robots", "UI configurations", "how"]
     rows = [
         [t.kinematic_type, t.valid_robots, t.ui_configurations, t.method] for t in solution.by_type

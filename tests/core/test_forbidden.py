@@ -91,3 +91,28 @@ def test_batch_puts_the_warnings_in_the_summary_and_on_its_output(
         (row,) = csv.DictReader(stream)
     assert row["status"] == "ok"
     assert row["message"].count("warning: ") == 2
+
+
+def test_values_the_rules_exclude_for_a_type_are_listed_each_with_its_constraint() -> None:
+    from solver import load_rules
+    from solver.core.forbidden import excluded_by_rules
+
+    excluded = excluded_by_rules(load_rules(RULES / "extended.yaml"))
+    uav = [
+        (r.characteristic, r.values, [c.name for c in r.constraints])
+        for r in excluded
+        if r.kinematic_type == "UAV"
+    ]
+    assert uav == [
+        ("motion_control", ("Walking",), ["Walking is for legged robots"]),
+        ("motion_control", ("End Effector",), ["End Effector control needs an arm"]),
+    ]
+    ugv = {r.values[0] for r in excluded if r.kinematic_type == "UGV"}
+    assert ugv == {"Flight", "Walking", "End Effector"}
+
+
+def test_a_rule_set_without_constraints_excludes_nothing() -> None:
+    from solver import load_rules
+    from solver.core.forbidden import excluded_by_rules
+
+    assert excluded_by_rules(load_rules(RULES / "paper.yaml")) == ()

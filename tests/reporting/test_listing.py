@@ -172,3 +172,48 @@ constraints:
     # 5 modes x 5 counts x 3 colours, less red with 3..5 (3 x 5 modes), less U with "a,b" (12).
     assert len(text.splitlines()) == 2 * 60 - 12 + (fmt == "csv")
     assert solution.default_configuration in {number for number, _ in numbered_robots(solution)}
+
+
+@pytest.mark.parametrize("name", ["case1", "case3", "search-and-rescue"])
+def test_a_page_of_robots_is_that_slice_of_the_whole_list(name: str) -> None:
+    from solver.reporting.listing import robots_page
+
+    solution = solve(load_team(name))
+    every = list(numbered_robots(solution))
+    for offset in (0, 7, len(every) - 3, len(every) + 5):
+        assert robots_page(solution, offset, 11) == every[offset : offset + 11]
+    for configuration in solution.configurations[:: max(1, len(solution.configurations) // 7)]:
+        served = [entry for entry in every if entry[0] == configuration.number]
+        page = robots_page(solution, 2, 9, configuration=configuration.number)
+        assert page == served[2:11]
+
+
+def test_a_page_deep_in_ten_million_robots_is_found_without_listing_them(
+    tmp_path: Path,
+) -> None:
+    from benchmarks.conftest import Scale
+    from solver.reporting.listing import robots_page
+
+    # 10 types x 10 motion controls x 100 sensor types (10 groups) x 1..1000 sensors
+    # (5 arrangements of 200): type T9's robots start at 9,000,000, in product order, and
+    # its first configuration is 9 x 500 + 1.
+    scale = Scale(types=10, motions=10, sensors=100, groups=10, counts=1_000, arrangements=5)
+    solution = solve(scale.team(tmp_path))
+    assert robots_page(solution, 9_000_000, 2) == [
+        (4501, ("T9", "M0", "S0", 1)),
+        (4501, ("T9", "M0", "S0", 2)),
+    ]
+    # Robot 201 of T0/M0/S0 has 201 sensors: the second arrangement, configuration 2.
+    assert robots_page(solution, 200, 1) == [(2, ("T0", "M0", "S0", 201))]
+
+
+def test_a_page_past_the_enumeration_limit_is_refused_where_constraints_apply(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    from solver.errors import TooLargeError
+    from solver.reporting import listing
+
+    monkeypatch.setattr(listing, "MAX_SKIPPED", 100)
+    solution = solve(load_team("search-and-rescue"))
+    with pytest.raises(TooLargeError, match="a page starting at robot 102 is refused"):
+        listing.robots_page(solution, 101, 5)

@@ -1,0 +1,452 @@
+"""The studio's JSON HTTP API: the command line's ``--format json``, over HTTP.
+
+Every page of the studio is drawn from these answers, and an operator station or a notebook can
+ask them too (``GET /openapi.json`` describes them). A selection travels in the query string as
+the pages' addresses hold it (:mod:`solver.studio.selection`). A request the library refuses
+gets its located faults (status 422), the same faults the command line prints; the server goes
+on serving.
+
+Not here: the answers themselves (:mod:`solver.studio.service`).
+"""
+
+from __future__ import annotations
+
+import functools
+import sys
+import traceback
+from collections.abc import Awaitable, Callable
+from typing import Any
+
+from starlette.concurrency import run_in_threadpool
+from starlette.datastructures import UploadFile
+from starlette.requests import Request
+from starlette.responses import JSONResponse, Response, StreamingResponse
+from starlette.routing import BaseRoute, Route
+
+from solver.errors import InputError, SolverError
+from solver.files.yamlio import MAX_FILE_BYTES
+from solver.studio.service import Studio, faults_data
+from solver.studio.workspace import MAX_UPLOAD_FILES, Upload
+
+__all__ = ["read_uploads", "routes", "safely"]
+
+Handler = Callable[[Request], Awaitable[Response]]
+# Seconds an event stream waits for an event before a keep-alive comment.
+KEEP_ALIVE = 15.0
+
+
+def problem(error: SolverError, status: int = 422) -> JSONResponse:
+    return JSONResponse(faults_data(error), status_code=status)
+
+
+def safely(handler: Handler) -> Handler:
+    """``handler`` whose located errors are answered as JSON (422), and whose unexpected
+    failures are answered (500, the traceback on the server's stderr) without ending the
+    server."""
+
+    @functools.wraps(handler)
+    async def wrapped(request: Request) -> Response:
+        try:
+            return await handler(request)
+        except SolverError as error:
+            return problem(error)
+        except Exception:
+            traceback.print_exc(file=sys.stderr)
+            return JSONResponse(
+                {"error": "internal error (the studio's console has the details)", "faults": []},
+                status_code=500,
+            )
+
+    return wrapped
+
+
+def _studio(request: Request) -> Studio:
+    studio: Studio = request.app.state.studio
+    return studio
+
+
+def _pairs(request: Request) -> list[tuple[str, str]]:
+    return list(request.query_params.multi_items())
+
+
+async def read_uploads(
+    request: Request, field: str = "file"
+) -> tuple[list[Upload], dict[str, str]]:
+    """The files of a multipart upload (each at most the bounded readers' limit) and its other
+    fields; a located error for anything past the limits."""
+    form = await request.form(max_files=MAX_UPLOAD_FILES, max_fields=64)
+    uploads = []
+    fields: dict[str, str] = {}
+    try:
+        for key, value in form.multi_items():
+            if isinstance(value, UploadFile):
+                if key != field:
+                    continue
+                data = await value.read(MAX_FILE_BYTES + 1)
+                name = value.filename or "upload"
+                if len(data) > MAX_FILE_BYTES:
+                    raise InputError.at(
+                        name,
+                        f"file is larger than {MAX_FILE_BYTES} bytes; refused",
+                        code="too-large",
+                    )
+                if data or name:
+                    uploads.append(Upload(name, data))
+            else:
+                fields[key] = value
+    finally:
+        await form.close()
+    return uploads, fields
+
+
+def _json(call: Callable[[Studio, list[tuple[str, str]]], Any]) -> Handler:
+    async def handler(request: Request) -> Response:
+        studio = _studio(request)
+        pairs = _pairs(request)
+        return JSONResponse(await run_in_threadpool(call, studio, pairs))
+
+    return safely(handler)
+
+
+async def solve(request: Request) -> Response:
+    """The team's counts: `teleop-ui solve --format json` (`--count-only`; `list=1` lists).
+    ---
+    summary: Solve the selected team
+    parameters:
+      - {name: rules, in: query, schema: {type: string}, description: rule set id}
+      - name: type
+        in: query
+        schema: {type: array, items: {type: string}}
+        description: kinematic types
+      - name: list
+        in: query
+        schema: {type: string, enum: ["1"]}
+        description: list every configuration
+    responses:
+      200: {description: the JSON of `teleop-ui solve --format json`}
+      422: {description: located faults}
+    """
+    listed = request.query_params.get("list") == "1"
+    return await _json(lambda s, p: s.solve_data(p, listed=listed))(request)
+
+
+async def count(request: Request) -> Response:
+    """Counts per type: `teleop-ui count --format json`.
+    ---
+    summary: Count the selected team
+    responses:
+      200: {description: by_type and totals}
+      422: {description: located faults}
+    """
+    return await _json(lambda s, p: s.count_data(p))(request)
+
+
+async def configurations(request: Request) -> Response:
+    """One page of UI configurations, numbered as `teleop-ui solve --list` numbers them.
+    ---
+    summary: Configurations by page
+    parameters:
+      - {name: offset, in: query, schema: {type: integer, minimum: 0}}
+      - {name: limit, in: query, schema: {type: integer, minimum: 1, maximum: 500}}
+    responses:
+      200: {description: total, offset, limit and the configurations}
+      422: {description: located faults}
+    """
+    return await _json(lambda s, p: s.configurations_data(p))(request)
+
+
+async def configuration(request: Request) -> Response:
+    """One UI configuration with its components.
+    ---
+    summary: One configuration
+    parameters:
+      - {name: number, in: path, required: true, schema: {type: integer}}
+    responses:
+      200: {description: the configuration as `solve --format json --list` gives it}
+      422: {description: located faults}
+    """
+    text = request.path_params["number"]
+    number = int(text) if text.isdigit() and len(text) < 18 else -1
+    return await _json(lambda s, p: s.configuration_data(p, number))(request)
+
+
+async def robots(request: Request) -> Response:
+    """One page of valid robots with their configuration (`teleop-ui robots --format jsonl`).
+    ---
+    summary: Robots by page
+    parameters:
+      - {name: offset, in: query, schema: {type: integer, minimum: 0}}
+      - {name: limit, in: query, schema: {type: integer, minimum: 1, maximum: 500}}
+      - name: configuration
+        in: query
+        schema: {type: integer}
+        description: only this configuration's robots
+    responses:
+      200: {description: total, offset and the robots}
+      422: {description: located faults}
+    """
+    return await _json(lambda s, p: s.robots_data(p))(request)
+
+
+async def assign(request: Request) -> Response:
+    """The configuration of one robot: `teleop-ui assign --format json`.
+    ---
+    summary: Assign one combination
+    parameters:
+      - name: robot.kinematic_type
+        in: query
+        schema: {type: string}
+        description: "one per characteristic: robot.NAME=VALUE"
+    responses:
+      200: {description: the JSON of `teleop-ui assign --format json`}
+      422: {description: located faults (an unknown characteristic name)}
+    """
+    return await _json(lambda s, p: s.assign_data(p))(request)
+
+
+async def check(request: Request) -> Response:
+    """The linter on the rule set and the selected team: `teleop-ui check --format json`.
+    ---
+    summary: Check the rule set and team
+    responses:
+      200: {description: files, summary and findings with their check ids}
+      422: {description: located faults}
+    """
+    return await _json(lambda s, p: s.check_data(p))(request)
+
+
+def _download(
+    call: Callable[[Studio, list[tuple[str, str]]], str | bytes], media: str, name: str
+) -> Handler:
+    async def handler(request: Request) -> Response:
+        body = await run_in_threadpool(call, _studio(request), _pairs(request))
+        return Response(
+            body,
+            media_type=media,
+            headers={"content-disposition": f'attachment; filename="{name}"'},
+        )
+
+    return safely(handler)
+
+
+async def team_yaml(request: Request) -> Response:
+    """The team as a team file (`teleop-ui solve FILE` solves it).
+    ---
+    summary: Export the team YAML
+    responses:
+      200: {description: a team file, with each type's counts as comments}
+      422: {description: located faults}
+    """
+    return await _download(lambda s, p: s.team_text(p), "application/yaml", "team.yaml")(request)
+
+
+async def report_html(request: Request) -> Response:
+    """The HTML report of `teleop-ui report`.
+    ---
+    summary: Export the HTML report
+    responses:
+      200: {description: one self-contained HTML page}
+    """
+    return await _download(lambda s, p: s.report_html(p), "text/html", "report.html")(request)
+
+
+async def layouts_zip(request: Request) -> Response:
+    """Foxglove/Lichtblick and RViz2 layouts of every configuration (`teleop-ui layouts`).
+    ---
+    summary: Export the layouts, zipped
+    responses:
+      200: {description: "a zip: foxglove/*.json and rviz/*.rviz"}
+    """
+    return await _download(lambda s, p: s.layouts_zip(p), "application/zip", "layouts.zip")(request)
+
+
+async def model_uvl(request: Request) -> Response:
+    """The design space as a UVL feature model (`teleop-ui export --format uvl`).
+    ---
+    summary: Export the UVL model
+    responses:
+      200: {description: a UVL file}
+    """
+    return await _download(lambda s, p: s.uvl_text(p), "text/plain", "team.uvl")(request)
+
+
+@safely
+async def chart(request: Request) -> Response:
+    """A chart of `teleop-ui report` as SVG: radar (Figure 9), bars or the component matrix.
+    ---
+    summary: A chart
+    parameters:
+      - {name: kind, in: path, required: true, schema: {type: string, enum: [radar, bars, matrix]}}
+    responses:
+      200: {description: an SVG image}
+      422: {description: located faults}
+    """
+    kind = request.path_params["kind"]
+    body = await run_in_threadpool(_studio(request).chart_svg, _pairs(request), kind)
+    return Response(body, media_type="image/svg+xml")
+
+
+@safely
+async def upload_rules(request: Request) -> Response:
+    """Upload a rule set (multipart field `file`); it is read as `teleop-ui check` reads one.
+    ---
+    summary: Upload a rule set
+    requestBody:
+      content:
+        multipart/form-data:
+          schema: {type: object, properties: {file: {type: string, format: binary}}}
+    responses:
+      200: {description: the id that names it in a selection (`rules=ID`)}
+      422: {description: located faults of the file}
+    """
+    uploads, _ = await read_uploads(request)
+    if len(uploads) != 1:
+        raise InputError.at("<upload>", "upload exactly one rule set file")
+    source = await run_in_threadpool(_studio(request).add_rules, uploads[0])
+    return JSONResponse({"id": source.id, "name": source.rules.name, "file": source.rules.file})
+
+
+@safely
+async def upload_team(request: Request) -> Response:
+    """Upload a team file (multipart field `file`), read against the selected rule set.
+    ---
+    summary: Upload a team
+    responses:
+      200: {description: the query that selects it}
+      422: {description: located faults of the file}
+    """
+    uploads, _ = await read_uploads(request)
+    if len(uploads) != 1:
+        raise InputError.at("<upload>", "upload exactly one team file")
+    pairs = _pairs(request)
+    query = await run_in_threadpool(_studio(request).read_team, uploads[0], pairs)
+    return JSONResponse({"query": query})
+
+
+@safely
+async def identify(request: Request) -> Response:
+    """Identify uploaded robot descriptions (field `file`, repeated): `teleop-ui fleet`.
+    Xacro files are never compiled here.
+    ---
+    summary: Identify uploaded robots
+    responses:
+      200: {description: "fleet id, and per robot the JSON of `teleop-ui identify` (or its error)"}
+      422: {description: located faults}
+    """
+    uploads, _ = await read_uploads(request)
+    studio = _studio(request)
+    data = await run_in_threadpool(studio.identify_uploads, uploads, _pairs(request))
+    return JSONResponse(data)
+
+
+@safely
+async def identify_folder(request: Request) -> Response:
+    """Identify the robots of a folder given at start (`--fleet DIR`), by its index.
+    ---
+    summary: Identify a folder given at start
+    parameters:
+      - {name: index, in: path, required: true, schema: {type: integer}}
+    responses:
+      200: {description: as for an upload}
+      422: {description: located faults}
+    """
+    text = request.path_params["index"]
+    index = int(text) if text.isdigit() and len(text) < 6 else -1
+    studio = _studio(request)
+    data = await run_in_threadpool(studio.identify_folder, index, _pairs(request))
+    return JSONResponse(data)
+
+
+@safely
+async def fleet_team(request: Request) -> Response:
+    """The team selection of an identified fleet (`teleop-ui fleet -o TEAM`).
+    ---
+    summary: Make a team from a fleet
+    responses:
+      200: {description: the team file and the query that selects it}
+      422: {description: located faults}
+    """
+    fleet_id = request.path_params["fleet"]
+    studio = _studio(request)
+    data = await run_in_threadpool(studio.fleet_team, fleet_id, _pairs(request))
+    return JSONResponse(data)
+
+
+@safely
+async def live_state(request: Request) -> Response:
+    """The live graph now: robots with their configurations, the operator's selection.
+    ---
+    summary: The live graph
+    responses:
+      200: {description: "source, status, robots (as watch events give them), selection"}
+    """
+    feed = _studio(request).live
+    if feed is None:
+        return JSONResponse({"source": None, "status": "off", "robots": [], "selection": None})
+    state = feed.state()
+    return JSONResponse(
+        {
+            "source": state.source,
+            "status": state.status,
+            "robots": list(state.robots),
+            "selection": state.selection,
+            "last": state.last,
+        }
+    )
+
+
+@safely
+async def live_events(request: Request) -> Response:
+    """The watcher's events as they come (Server-Sent Events; each `data:` is one event of
+    `teleop-ui watch`, with the studio's own `seq`). `Last-Event-ID` resumes.
+    ---
+    summary: The live events
+    responses:
+      200: {description: text/event-stream}
+    """
+    feed = _studio(request).live
+    if feed is None:
+        raise InputError.at("<live>", "the studio was started without --ros2 or --master")
+    text = request.headers.get("last-event-id") or request.query_params.get("after", "")
+    after = int(text) if text.isdigit() and len(text) < 18 else 0
+
+    async def stream() -> Any:
+        import json
+
+        seq = after
+        while not feed.stopped:
+            events = await run_in_threadpool(feed.events_after, seq, KEEP_ALIVE)
+            if await request.is_disconnected():
+                return
+            if not events:
+                yield ": keep-alive\n\n"
+                continue
+            for event in events:
+                seq = event["seq"]
+                yield f"id: {seq}\ndata: {json.dumps(event, ensure_ascii=False)}\n\n"
+
+    return StreamingResponse(stream(), media_type="text/event-stream")
+
+
+def routes() -> list[BaseRoute]:
+    return [
+        Route("/api/solve", solve),
+        Route("/api/count", count),
+        Route("/api/configurations", configurations),
+        Route("/api/configurations/{number}", configuration),
+        Route("/api/robots", robots),
+        Route("/api/assign", assign),
+        Route("/api/check", check),
+        Route("/api/team.yaml", team_yaml),
+        Route("/api/report.html", report_html),
+        Route("/api/layouts.zip", layouts_zip),
+        Route("/api/model.uvl", model_uvl),
+        Route("/api/charts/{kind}.svg", chart),
+        Route("/api/rules", upload_rules, methods=["POST"]),
+        Route("/api/team", upload_team, methods=["POST"]),
+        Route("/api/identify", identify, methods=["POST"]),
+        Route("/api/fleet/folders/{index}", identify_folder, methods=["POST"]),
+        Route("/api/fleet/{fleet}/team", fleet_team, methods=["POST"]),
+        Route("/api/live", live_state),
+        Route("/api/live/events", live_events),
+    ]

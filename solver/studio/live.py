@@ -1,0 +1,147 @@
+"""The live view's feed: a :class:`~solver.live.watcher.Watcher` on its own thread, its events
+kept as the JSON of ``teleop-ui watch`` and handed to every page that listens.
+
+The feed keeps what a page needs to draw the graph at any moment (every robot by namespace as
+its last ``robot_added`` / ``robot_changed`` event, the operator's selection, whether the graph
+answers) and the newest events, numbered, so a page that reconnects asks for what it missed.
+A graph that cannot be reached is reported and retried until the studio stops; nothing a graph
+sends can stop the feed.
+
+Not here: watching (:mod:`solver.live`), HTTP (:mod:`solver.studio.api`).
+"""
+
+from __future__ import annotations
+
+import threading
+from collections import deque
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+from solver.errors import SolverError
+from solver.live.events import event_data
+
+if TYPE_CHECKING:
+    from solver.core.solution import Solution
+    from solver.live.watcher import Watcher
+
+__all__ = ["MAX_KEPT_EVENTS", "LiveFeed", "LiveState"]
+
+# Events kept for pages that (re)connect; older ones are summed up by the state.
+MAX_KEPT_EVENTS = 500
+# Seconds between attempts when the graph cannot be reached.
+RETRY_SECONDS = 1.0
+
+
+@dataclass(frozen=True)
+class LiveState:
+    """What the live view shows now."""
+
+    source: str
+    status: str
+    robots: tuple[dict[str, Any], ...]
+    selection: dict[str, Any] | None
+    last: int
+
+
+class LiveFeed:
+    """Runs watchers made by ``make_watcher`` one after another (a new one when one fails)
+    until :meth:`stop`."""
+
+    def __init__(self, source: str, solution: Solution, make_watcher: Callable[[], Watcher]):
+        self.source = source
+        self.solution = solution
+        self._make = make_watcher
+        self._changed = threading.Condition()
+        self._events: deque[dict[str, Any]] = deque(maxlen=MAX_KEPT_EVENTS)
+        self._robots: dict[str, dict[str, Any]] = {}
+        self._selection: dict[str, Any] | None = None
+        self._status = "connecting"
+        self._seq = 0
+        self._stop = threading.Event()
+        self._watcher: Watcher | None = None
+        self._thread = threading.Thread(target=self._run, name="studio-live", daemon=True)
+
+    def start(self) -> None:
+        self._thread.start()
+
+    def stop(self) -> None:
+        self._stop.set()
+        with self._changed:
+            watcher = self._watcher
+            self._changed.notify_all()
+        if watcher is not None:
+            watcher.stop("the studio stops")
+        self._thread.join(timeout=10)
+
+    @property
+    def stopped(self) -> bool:
+        return self._stop.is_set()
+
+    def state(self) -> LiveState:
+        with self._changed:
+            return LiveState(
+                self.source,
+                self._status,
+                tuple(self._robots[name] for name in sorted(self._robots)),
+                self._selection,
+                self._seq,
+            )
+
+    def events_after(self, seq: int, timeout: float) -> list[dict[str, Any]]:
+        """Events numbered above ``seq``, waiting up to ``timeout`` seconds for one."""
+        with self._changed:
+            self._changed.wait_for(lambda: self._seq > seq or self._stop.is_set(), timeout)
+            return [event for event in self._events if event["seq"] > seq]
+
+    def _run(self) -> None:
+        while not self._stop.is_set():
+            try:
+                watcher = self._make()
+            except SolverError as error:
+                self._record({"event": "graph_error", "error": _message(error)}, "unreachable")
+                self._stop.wait(RETRY_SECONDS)
+                continue
+            with self._changed:
+                self._watcher = watcher
+            try:
+                with watcher:
+                    if self._stop.is_set():
+                        return
+                    for event in watcher.events():
+                        self._record(event_data(event, self.solution))
+            except SolverError as error:
+                self._record({"event": "graph_error", "error": _message(error)}, "unreachable")
+            except Exception as error:
+                self._record(
+                    {"event": "graph_error", "error": f"{type(error).__name__}: {error}"},
+                    "unreachable",
+                )
+            self._stop.wait(RETRY_SECONDS)
+
+    def _record(self, data: dict[str, Any], status: str | None = None) -> None:
+        with self._changed:
+            self._seq += 1
+            # The studio's own numbering: a watcher's seq restarts when it is made again.
+            event = {**data, "seq": self._seq, "watcher_seq": data.get("seq")}
+            kind = data.get("event")
+            if kind in ("robot_added", "robot_changed"):
+                self._robots[str(data["robot"])] = data
+            elif kind == "robot_removed":
+                self._robots.pop(str(data["robot"]), None)
+            elif kind == "selection_changed":
+                self._selection = data
+            elif kind in ("synced", "master_back"):
+                self._status = "synced" if kind == "synced" else "back"
+            elif kind == "master_lost":
+                self._status = "lost"
+                self._robots.clear()
+            if status is not None:
+                self._status = status
+                self._robots.clear()
+            self._events.append(event)
+            self._changed.notify_all()
+
+
+def _message(error: SolverError) -> str:
+    return "; ".join(str(fault) for fault in error.faults)

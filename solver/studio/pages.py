@@ -1,0 +1,609 @@
+"""The studio's pages: server-rendered HTML that works without scripts, made livelier by the
+small scripts in ``static/`` (updates as you click, undo and redo, live events).
+
+Each page shows what an API answer holds (:mod:`solver.studio.service`), drawn by a template in
+``templates/`` (Jinja2, every value escaped). The selection a page shows is its address
+(:mod:`solver.studio.selection`), so every link carries it along, and forms that change
+something post back to the studio itself and land on an address that shows the result.
+
+Not here: the JSON (:mod:`solver.studio.api`), the answers (:mod:`solver.studio.service`).
+"""
+
+from __future__ import annotations
+
+import functools
+import sys
+import traceback
+from collections.abc import Awaitable, Callable, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+from urllib.parse import urlencode
+
+import jinja2
+from starlette.concurrency import run_in_threadpool
+from starlette.requests import Request
+from starlette.responses import HTMLResponse, RedirectResponse, Response
+from starlette.routing import BaseRoute, Route
+
+from solver.core.reproduce import published_note
+from solver.core.rules import Characteristic
+from solver.errors import Fault, InputError, SolverError
+from solver.studio.api import read_uploads
+from solver.studio.selection import SELECTION_FILE
+from solver.studio.service import CHART_KINDS, MAX_PAGE, Chosen, Studio, robot_pairs
+
+__all__ = ["routes", "selection_pairs"]
+
+Pairs = Sequence[tuple[str, str]]
+Handler = Callable[[Request], Awaitable[Response]]
+PER_PAGE = 50
+# The views, in the order the navigation shows them: (path, title).
+VIEWS = (
+    ("/", "Selection"),
+    ("/configurations", "Configurations"),
+    ("/robots", "Robots"),
+    ("/charts", "Charts"),
+    ("/check", "Check"),
+    ("/fleet", "Fleet"),
+    ("/export", "Export"),
+    ("/live", "Live"),
+    ("/api", "API"),
+)
+
+
+@functools.cache
+def _environment() -> jinja2.Environment:
+    return jinja2.Environment(
+        loader=jinja2.PackageLoader("solver.studio", "templates"),
+        autoescape=True,
+        undefined=jinja2.StrictUndefined,
+        trim_blocks=True,
+        lstrip_blocks=True,
+    )
+
+
+def selection_pairs(pairs: Pairs) -> list[tuple[str, str]]:
+    """The pairs of a query that make its selection (not the view, paging or a robot)."""
+    return [
+        (k, v)
+        for k, v in pairs
+        if k in ("rules", "name", "type") or ("." in k and not k.startswith("robot."))
+    ]
+
+
+def _query(pairs: Pairs, **extra: object) -> str:
+    items = list(pairs) + [(k, str(v)) for k, v in extra.items() if v is not None]
+    return urlencode(items)
+
+
+@dataclass
+class Page:
+    """What every page template receives."""
+
+    request: Request
+    studio: Studio
+    pairs: list[tuple[str, str]]
+    title: str
+    chosen: Chosen | None = None
+    faults: list[Fault] = field(default_factory=list)
+
+    @property
+    def selection_query(self) -> str:
+        return _query(selection_pairs(self.pairs))
+
+    def link(self, path: str, **extra: object) -> str:
+        query = _query(selection_pairs(self.pairs), **extra)
+        return f"{path}?{query}" if query else path
+
+    def render(self, template: str, status: int = 200, **context: Any) -> HTMLResponse:
+        body = (
+            _environment()
+            .get_template(template)
+            .render(
+                page=self,
+                views=VIEWS,
+                path=self.request.url.path,
+                live=self.studio.live is not None,
+                **context,
+            )
+        )
+        return HTMLResponse(body, status_code=status)
+
+
+def _page(request: Request, title: str) -> Page:
+    studio: Studio = request.app.state.studio
+    return Page(request, studio, list(request.query_params.multi_items()), title)
+
+
+def _choose(page: Page) -> Chosen | None:
+    """The page's selection, or ``None`` with its faults recorded for the page to show."""
+    try:
+        page.chosen = page.studio.chosen(page.pairs)
+    except SolverError as error:
+        page.faults.extend(error.faults)
+        # The rule set alone, so the controls still show.
+        try:
+            source = page.studio.workspace.source(_first(page.pairs, "rules"))
+        except SolverError:
+            source = page.studio.workspace.source(None)
+        from solver.studio.selection import parse_query
+
+        page.chosen = Chosen(source, parse_query(page.pairs, source.rules, source.id), None)
+        return None
+    return page.chosen
+
+
+def _first(pairs: Pairs, name: str) -> str | None:
+    return next((v for k, v in pairs if k == name), None)
+
+
+def guarded(title: str) -> Callable[[Callable[[Page], Awaitable[Response]]], Handler]:
+    """A page handler whose located errors are shown in the page (status 422) and whose
+    unexpected failures are shown as such (500) while the studio goes on serving."""
+
+    def decorate(handler: Callable[[Page], Awaitable[Response]]) -> Handler:
+        @functools.wraps(handler)
+        async def wrapped(request: Request) -> Response:
+            page = _page(request, title)
+            try:
+                return await handler(page)
+            except SolverError as error:
+                page.faults.extend(error.faults)
+                if page.chosen is None:
+                    _choose(page)
+                return page.render("error.html", status=422)
+            except Exception:
+                traceback.print_exc(file=sys.stderr)
+                page.faults.append(
+                    Fault(
+                        page_location(),
+                        "internal error (the studio's console has the details)",
+                        "internal",
+                    )
+                )
+                return page.render("error.html", status=500)
+
+        return wrapped
+
+    return decorate
+
+
+def page_location() -> Any:
+    from solver.errors import Location
+
+    return Location("<studio>")
+
+
+# -- the selection (the article's Figure 8) ----------------------------------------------------
+
+
+@dataclass(frozen=True)
+class ValueControl:
+    value: str
+    components: str
+    checked: bool
+    excluded: str  # why the rules' constraints exclude it ("" when they do not)
+
+
+@dataclass(frozen=True)
+class CharacteristicControl:
+    key: str  # the query name: "<type>.<characteristic>"
+    name: str
+    label: str
+    kind: str
+    values: tuple[ValueControl, ...] = ()
+    low: int = 0
+    high: int = 0
+    minimum: int = 0
+    maximum: int = 0
+    components: str = ""
+
+
+@dataclass(frozen=True)
+class TypeControl:
+    name: str
+    included: bool
+    shown: bool
+    characteristics: tuple[CharacteristicControl, ...]
+
+
+def _components_text(characteristic: Characteristic, value: object) -> str:
+    return ", ".join(c.name for c in characteristic.components_of(value))  # type: ignore[arg-type]
+
+
+def _type_controls(page: Page, view: str) -> list[TypeControl]:
+    chosen = page.chosen
+    if chosen is None:
+        return []
+    rules = chosen.rules
+    selection = chosen.selection
+    values = dict(selection.values)
+    ranges = dict(selection.ranges)
+    excluded = page.studio.workspace.excluded(chosen.source)
+    controls = []
+    for kinematic_type in (str(v) for v in rules.key.values):
+        characteristics = []
+        for characteristic in rules.characteristics:
+            if characteristic.name == rules.team_key:
+                continue
+            key = f"{kinematic_type}.{characteristic.name}"
+            where = (kinematic_type, characteristic.name)
+            if characteristic.kind == "integer":
+                low, high = int(characteristic.values[0]), int(characteristic.values[-1])
+                given = [v for v in values.get(where, ()) if v.strip().isdigit()]
+                start, end = ranges.get(where, (None, None))
+                minimum = _bounded(start, low, high, low)
+                maximum = _bounded(end, low, high, high)
+                if given:
+                    minimum, maximum = min(map(int, given)), max(map(int, given))
+                components = "; ".join(
+                    f"{c.name}: {c.describe_range()}" for c in characteristic.components
+                )
+                characteristics.append(
+                    CharacteristicControl(
+                        key,
+                        characteristic.name,
+                        characteristic.label,
+                        "integer",
+                        low=low,
+                        high=high,
+                        minimum=minimum,
+                        maximum=maximum,
+                        components=components if len(components) < 400 else "",
+                    )
+                )
+                continue
+            chosen_values = values.get(where)
+            reasons = excluded.get(where, {})
+            characteristics.append(
+                CharacteristicControl(
+                    key,
+                    characteristic.name,
+                    characteristic.label,
+                    "categorical",
+                    tuple(
+                        ValueControl(
+                            str(value),
+                            _components_text(characteristic, value),
+                            chosen_values is None or str(value) in chosen_values,
+                            ""
+                            if str(value) not in reasons
+                            else reasons[str(value)].describe().partition(", ")[2],
+                        )
+                        for value in characteristic.values
+                    ),
+                )
+            )
+        controls.append(
+            TypeControl(
+                kinematic_type,
+                kinematic_type in selection.types,
+                view in ("", "all") or view == kinematic_type,
+                tuple(characteristics),
+            )
+        )
+    return controls
+
+
+def _bounded(text: str | None, low: int, high: int, default: int) -> int:
+    if text is None or not text.strip().isdigit() or len(text) > 18:
+        return default
+    return min(max(int(text), low), high)
+
+
+@guarded("Selection")
+async def selection(page: Page) -> Response:
+    start = page.studio.workspace.start_team
+    if not page.pairs and start is not None:
+        # The bare address shows the team the studio was started with.
+        source = page.studio.workspace.source(None)
+        from solver.studio.selection import query_of
+
+        return RedirectResponse(f"/?{_query(query_of(start, source.id))}", status_code=303)
+
+    def work() -> dict[str, Any]:
+        _choose(page)
+        chosen = page.chosen
+        assert chosen is not None
+        view = _first(page.pairs, "view") or "all"
+        data = None
+        note = None
+        if chosen.team is not None:
+            try:
+                solution = page.studio.solution(chosen)
+                data = page.studio.solve_data(page.pairs)
+                note = published_note(solution)
+            except SolverError as error:
+                page.faults.extend(error.faults)
+        return {
+            "view": view,
+            "types": _type_controls(page, view),
+            "data": data,
+            "note": note,
+            "sources": page.studio.workspace.rule_sources,
+            "teams": [
+                (name, _query(pairs)) for name, pairs in page.studio.shipped_teams(chosen.source)
+            ],
+            "chart_query": page.selection_query,
+        }
+
+    context = await run_in_threadpool(work)
+    return page.render("selection.html", status=422 if page.faults else 200, **context)
+
+
+# -- configurations, robots, one robot ---------------------------------------------------------
+
+
+@guarded("Configurations")
+async def configurations(page: Page) -> Response:
+    def work() -> dict[str, Any]:
+        offset = _number(page.pairs, "offset", 0)
+        pairs = [*page.pairs, ("offset", str(offset)), ("limit", str(PER_PAGE))]
+        data = page.studio.configurations_data(_only_last(pairs))
+        chosen = page.chosen = page.studio.chosen(page.pairs)
+        a, b = _first(page.pairs, "a"), _first(page.pairs, "b")
+        compared = None
+        if a and b:
+            left = page.studio.configuration_data(page.pairs, _number(page.pairs, "a", 0))
+            right = page.studio.configuration_data(page.pairs, _number(page.pairs, "b", 0))
+            compared = _compare(left, right)
+        return {
+            "data": data,
+            "compared": compared,
+            "a": a or "",
+            "b": b or "",
+            "characteristics": [(c.name, c.label) for c in chosen.rules.characteristics],
+            "offset": offset,
+            "per_page": PER_PAGE,
+        }
+
+    return page.render("configurations.html", **await run_in_threadpool(work))
+
+
+def _compare(left: dict[str, Any], right: dict[str, Any]) -> list[dict[str, Any]]:
+    rows = []
+    for one, other in zip(left["components"], right["components"], strict=True):
+        rows.append(
+            {
+                "characteristic": one["characteristic"],
+                "left": _component_text(one),
+                "right": _component_text(other),
+                "differs": one["component"] != other["component"],
+            }
+        )
+    rows.insert(
+        0,
+        {
+            "characteristic": "valid robots",
+            "left": str(left["valid_robots"]),
+            "right": str(right["valid_robots"]),
+            "differs": False,
+        },
+    )
+    return rows
+
+
+def _component_text(entry: dict[str, Any]) -> str:
+    if "values" in entry:
+        return f"{entry['component']}: {', '.join(map(str, entry['values']))}"
+    runs = ", ".join(f"{a}" if a == b else f"{a}..{b}" for a, b in entry["counts"])
+    return f"{entry['component']}: {runs} ({entry['clusters'][0]}..{entry['clusters'][1]} clusters)"
+
+
+def _number(pairs: Pairs, name: str, default: int) -> int:
+    text = _first(pairs, name)
+    if text is None or not text.isdigit() or len(text) > 18:
+        return default
+    return int(text)
+
+
+def _only_last(pairs: Sequence[tuple[str, str]]) -> list[tuple[str, str]]:
+    """``pairs`` with only the last of each paging parameter (``offset``, ``limit``)."""
+    last = {k: v for k, v in pairs if k in ("offset", "limit")}
+    return [(k, v) for k, v in pairs if k not in last] + list(last.items())
+
+
+@guarded("Configuration")
+async def configuration(page: Page) -> Response:
+    text = page.request.path_params["number"]
+    number = int(text) if text.isdigit() and len(text) < 18 else -1
+
+    def work() -> dict[str, Any]:
+        data = page.studio.configuration_data(page.pairs, number)
+        offset = _number(page.pairs, "offset", 0)
+        pairs = _only_last(
+            [
+                *page.pairs,
+                ("configuration", str(number)),
+                ("offset", str(offset)),
+                ("limit", str(PER_PAGE)),
+            ]
+        )
+        robots = page.studio.robots_data(pairs)
+        page.chosen = page.studio.chosen(page.pairs)
+        return {
+            "data": data,
+            "robots": robots,
+            "rows": [(e["characteristic"], _component_text(e)) for e in data["components"]],
+            "offset": offset,
+            "per_page": PER_PAGE,
+            "names": page.chosen.rules.names,
+        }
+
+    return page.render("configuration.html", **await run_in_threadpool(work))
+
+
+@guarded("Robots")
+async def robots(page: Page) -> Response:
+    def work() -> dict[str, Any]:
+        offset = _number(page.pairs, "offset", 0)
+        pairs = _only_last([*page.pairs, ("offset", str(offset)), ("limit", str(PER_PAGE))])
+        data = page.studio.robots_data(pairs)
+        chosen = page.chosen = page.studio.chosen(page.pairs)
+        given = robot_pairs(page.pairs)
+        answer = page.studio.assign_data(page.pairs) if any(given.values()) else None
+        rows = []
+        if answer is not None:
+            rules = chosen.rules
+            relevant = answer["relevant_components"]
+            for characteristic in rules.characteristics:
+                rows.append(
+                    (
+                        characteristic.label,
+                        given.get(characteristic.name, ""),
+                        ", ".join(relevant.get(characteristic.name, [])) or "-",
+                    )
+                )
+        lookups = []
+        for characteristic in chosen.rules.characteristics:
+            values = [str(v) for v in characteristic.values]
+            lookups.append(
+                {
+                    "name": characteristic.name,
+                    "label": characteristic.label,
+                    "values": values if len(values) <= 200 else [],
+                    "value": given.get(characteristic.name, ""),
+                }
+            )
+        return {
+            "data": data,
+            "answer": answer,
+            "rows": rows,
+            "lookups": lookups,
+            "names": chosen.rules.names,
+            "offset": offset,
+            "per_page": PER_PAGE,
+        }
+
+    return page.render("robots.html", **await run_in_threadpool(work))
+
+
+# -- charts, check, export ---------------------------------------------------------------------
+
+
+@guarded("Charts")
+async def charts(page: Page) -> Response:
+    def work() -> None:
+        page.chosen = page.studio.chosen(page.pairs)
+        page.chosen.require()
+
+    await run_in_threadpool(work)
+    return page.render("charts.html", kinds=CHART_KINDS)
+
+
+@guarded("Check")
+async def check(page: Page) -> Response:
+    def work() -> dict[str, Any]:
+        data = page.studio.check_data(page.pairs)
+        page.chosen = page.studio.chosen(page.pairs)
+        return {"data": data, "selection_file": SELECTION_FILE}
+
+    return page.render("check.html", **await run_in_threadpool(work))
+
+
+@guarded("Export")
+async def export(page: Page) -> Response:
+    def work() -> dict[str, Any]:
+        page.chosen = page.studio.chosen(page.pairs)
+        page.chosen.require()
+        return {"yaml": page.studio.team_text(page.pairs)}
+
+    return page.render("export.html", **await run_in_threadpool(work))
+
+
+@guarded("Import")
+async def upload_team(page: Page) -> Response:
+    uploads, _ = await read_uploads(page.request)
+    if len(uploads) != 1:
+        raise InputError.at("<upload>", "choose one team file to import")
+    query = await run_in_threadpool(page.studio.read_team, uploads[0], page.pairs)
+    return RedirectResponse(f"/?{_query(query)}", status_code=303)
+
+
+@guarded("Rule set")
+async def upload_rules(page: Page) -> Response:
+    uploads, _ = await read_uploads(page.request)
+    if len(uploads) != 1:
+        raise InputError.at("<upload>", "choose one rule set file to upload")
+    source = await run_in_threadpool(page.studio.add_rules, uploads[0])
+    return RedirectResponse(f"/?{_query([('rules', source.id)])}", status_code=303)
+
+
+# -- fleet ---------------------------------------------------------------------------------------
+
+
+@guarded("Fleet")
+async def fleet(page: Page) -> Response:
+    def work() -> None:
+        _choose(page)
+
+    await run_in_threadpool(work)
+    return page.render("fleet.html", data=None, folders=page.studio.workspace.folders)
+
+
+@guarded("Fleet")
+async def fleet_upload(page: Page) -> Response:
+    uploads, _ = await read_uploads(page.request)
+    data = await run_in_threadpool(page.studio.identify_uploads, uploads, page.pairs)
+    _choose(page)
+    return page.render("fleet.html", data=data, folders=page.studio.workspace.folders)
+
+
+@guarded("Fleet")
+async def fleet_folder(page: Page) -> Response:
+    index = _number([("i", page.request.path_params["index"])], "i", -1)
+    data = await run_in_threadpool(page.studio.identify_folder, index, page.pairs)
+    _choose(page)
+    return page.render("fleet.html", data=data, folders=page.studio.workspace.folders)
+
+
+@guarded("Fleet")
+async def fleet_team(page: Page) -> Response:
+    fleet_id = page.request.path_params["fleet"]
+    data = await run_in_threadpool(page.studio.fleet_team, fleet_id, page.pairs)
+    return RedirectResponse(f"/?{_query(data['query'])}", status_code=303)
+
+
+# -- live, API -----------------------------------------------------------------------------------
+
+
+@guarded("Live")
+async def live(page: Page) -> Response:
+    _choose(page)
+    feed = page.studio.live
+    state = None if feed is None else feed.state()
+    template = "live_body.html" if _first(page.pairs, "fragment") else "live.html"
+    return page.render(template, state=state)
+
+
+@guarded("API")
+async def api_index(page: Page) -> Response:
+    from solver.studio.api import routes as api_routes
+
+    _choose(page)
+    entries = [
+        (route.path, sorted(route.methods or ()), (route.endpoint.__doc__ or "").split("\n---")[0])
+        for route in api_routes()
+        if isinstance(route, Route)
+    ]
+    return page.render("api.html", entries=entries, max_page=MAX_PAGE)
+
+
+def routes() -> list[BaseRoute]:
+    return [
+        Route("/", selection),
+        Route("/configurations", configurations),
+        Route("/configurations/{number}", configuration),
+        Route("/robots", robots),
+        Route("/charts", charts),
+        Route("/check", check),
+        Route("/export", export),
+        Route("/team", upload_team, methods=["POST"]),
+        Route("/rules", upload_rules, methods=["POST"]),
+        Route("/fleet", fleet),
+        Route("/fleet", fleet_upload, methods=["POST"]),
+        Route("/fleet/folders/{index}", fleet_folder, methods=["POST"]),
+        Route("/fleet/{fleet}/team", fleet_team, methods=["POST"]),
+        Route("/live", live),
+        Route("/api", api_index),
+    ]

@@ -1,0 +1,83 @@
+"""Listening: the studio's socket, its address printed once it is bound, uvicorn serving.
+
+The socket is bound before anything is printed, so the address printed is one that answers
+(port 0 picks a free port, and the address says which). Binding anything but loopback makes a
+token (printed in the address, as notebook servers do) that every request must carry.
+
+Not here: the application (:mod:`solver.studio.app`).
+"""
+
+from __future__ import annotations
+
+import secrets
+import socket
+from collections.abc import Callable
+
+from solver.errors import InputError
+from solver.studio.security import loopback
+from solver.studio.service import Studio
+
+__all__ = ["address", "bind", "serve"]
+
+# Bytes of a request's head (its address and headers) at most: a selection of a thousand
+# values travels in the address when pages are used without scripts.
+MAX_HEAD_BYTES = 256 * 1024
+
+
+def bind(host: str, port: int) -> socket.socket:
+    """A listening socket on ``host:port`` (a located error when that is not possible)."""
+    try:
+        family, kind, proto, _, where = socket.getaddrinfo(
+            host, port, type=socket.SOCK_STREAM, flags=socket.AI_PASSIVE
+        )[0]
+        sock = socket.socket(family, kind, proto)
+        sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+        sock.bind(where)
+        sock.listen(128)
+    except OSError as error:
+        raise InputError.at(
+            "--host" if port == 0 else "--port",
+            f"cannot listen on {host}:{port}: {error.strerror or error}",
+        ) from None
+    sock.set_inheritable(True)
+    return sock
+
+
+def address(host: str, port: int, token: str | None) -> str:
+    shown = f"[{host}]" if ":" in host else host
+    return f"http://{shown}:{port}/" + (f"?token={token}" if token else "")
+
+
+def serve(
+    studio: Studio,
+    sock: socket.socket,
+    host: str,
+    *,
+    announce: Callable[[str], None],
+    open_browser: bool = False,
+) -> None:
+    """Serve ``studio`` on ``sock`` until interrupted (SIGINT, SIGTERM)."""
+    import uvicorn
+
+    from solver.studio.app import make_app
+
+    port = int(sock.getsockname()[1])
+    token = None if loopback(host) else secrets.token_urlsafe(24)
+    url = address(host, port, token)
+    app = make_app(studio, host=host, port=port, token=token)
+    config = uvicorn.Config(
+        app,
+        log_level="warning",
+        access_log=False,
+        lifespan="on",
+        h11_max_incomplete_event_size=MAX_HEAD_BYTES,
+        timeout_graceful_shutdown=3,
+        server_header=False,
+    )
+    server = uvicorn.Server(config)
+    announce(url)
+    if open_browser:
+        import webbrowser
+
+        webbrowser.open(url)
+    server.run(sockets=[sock])
