@@ -34,9 +34,9 @@ from solver.core.solution import Solution, solve
 from solver.core.team import Team, load_team
 from solver.errors import InputError
 from solver.files.filekind import file_kind
-from solver.files.inputfile import shown_name
 from solver.files.yamlio import MAX_FILE_BYTES, load_document
 from solver.studio.selection import SELECTION_FILE, Selection, team_document, team_of
+from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
 if TYPE_CHECKING:
     from solver.identify.fleet import Fleet
@@ -114,6 +114,11 @@ def safe_file_name(name: str) -> str:
     return cleaned or "upload"
 
 
+def shown_name(name: str) -> str:
+    """A file name as a message shows it (escaped, cut)."""
+    return shown(name, limit=SHOWN_FILE_NAME_CHARS)
+
+
 class Workspace:
     """The studio's state; every method may be called from several threads at once."""
 
@@ -186,7 +191,7 @@ class Workspace:
             known = ", ".join(s.id for s in self.rule_sources)
             raise InputError.at(
                 SELECTION_FILE,
-                f"no rule set {shown_name(wanted)!r} in this studio (uploads last while it "
+                f"no rule set {shown(wanted, quoted=True)} in this studio (uploads last while it "
                 f"runs); it has: {known}",
                 path="rules",
                 code="unknown-reference",
