@@ -15,6 +15,8 @@ from solver.errors import Fault, InputError, Location, SolverError, did_you_mean
 PRIVATE_SIGNALS = {
     # Raised inside the sandboxed xacro child process and reported by the parent as text.
     "solver.identify.xacro.child.Refused",
+    # Raised by the expression guard inside that child, reported the same way.
+    "solver.identify.xacro.expressions.GuardError",
     # Raised by the RE2 compile helper and turned into a located fault by the profile reader.
     "solver.identify.profile.PatternError",
 }

@@ -1,25 +1,29 @@
-"""The child process that compiles one xacro file, behind resource limits and a file fence.
+"""The child process that compiles one xacro file, behind resource limits and three fences.
 
-xacro evaluates ``${...}`` as Python, and its namespace can be escaped: compiling a xacro file
-runs the file's author's code. :func:`solver.identify.xacro.compiler.compile_xacro` therefore never
-compiles in the caller's process. It starts this module in a fresh interpreter (``python -I``,
-an empty environment) and sends one JSON request on stdin; this module
+xacro evaluates ``${...}`` and ``$(eval ...)`` as Python: compiling a xacro file runs the
+file's author's code. :func:`solver.identify.xacro.compiler.compile_xacro` therefore never
+compiles in the caller's process. It starts this module in a fresh interpreter (``python -I -S
+-B``, an empty environment) and sends one JSON request on stdin; this module, in this order,
 
-* lowers its own limits before reading the file: CPU seconds, address space, no file writes
-  (``RLIMIT_FSIZE`` 0), a handful of open files;
-* fences every ``open`` (xacro's includes, ``load_yaml``, anything an expression reaches) to
-  reading regular files inside the allowed folders (the description's package and the packages
-  it may ``$(find)``), each through the size cap and the safe-XML check;
-* refuses ``$(env ...)`` / ``$(optenv ...)`` (the robot's author does not get to read the
-  operator's environment) and resolves ``$(find pkg)`` only from the package map it was given;
-* answers with one JSON object on stdout: the URDF text and xacro's warnings, or an error
-  message with the file and line it concerns.
+1. lowers its own limits: CPU seconds, address space, no file writes (``RLIMIT_FSIZE`` 0), a
+   handful of open files, no core file;
+2. refuses system calls in the kernel (:func:`~solver.identify.xacro.confine.forbid_system_calls`:
+   no process, socket, file write or metadata change, nothing in another process), before
+   xacro is even imported;
+3. loads xacro and everything it imports lazily (a small warm-up document), then replaces
+   xacro's evaluators with guarded ones (:mod:`solver.identify.xacro.expressions`: no module,
+   frame or code object reachable from an expression);
+4. lets the kernel allow reads only beneath the description's package folders
+   (:func:`~solver.identify.xacro.confine.restrict_reads`, Landlock), drops ctypes, and
+   replaces ``open`` with a fence that reads regular files inside those folders only, each
+   through the size cap and the safe-XML check; no module may be imported from then on;
+5. refuses ``$(env ...)`` / ``$(optenv ...)`` (the robot's author does not get to read the
+   operator's environment) and resolves ``$(find pkg)`` only from the package map it was given;
+6. only then reads the user's file and compiles it, answering with one JSON object on stdout:
+   the URDF text and xacro's warnings, or an error message with the file and line it concerns.
 
-The Python-level fence alone is not a sandbox (an escaped expression reaches ``_io.open``,
-``os.mknod``, lxml's C writer, ``$(eval)`` with builtins): the kernel fences of
-:mod:`solver.identify.xacro.confine` (Landlock, seccomp), set up once xacro is loaded, are what
-hold.
-What ``--trust-xacro`` means is documented in docs/security.md.
+What ``--trust-xacro`` guarantees, and where each fence is missing, is documented in
+docs/security.md.
 
 Not here: starting the process, the wall-clock timeout and reading its answer
 (:mod:`solver.identify.xacro.compiler`).
@@ -40,7 +44,13 @@ from pathlib import Path
 from typing import Any
 
 from solver.errors import SolverError
-from solver.identify.xacro.confine import Confinement, confine
+from solver.identify.xacro import expressions
+from solver.identify.xacro.confine import (
+    Confinement,
+    forbid_system_calls,
+    forget_ctypes,
+    restrict_reads,
+)
 
 __all__ = ["main"]
 
@@ -57,9 +67,10 @@ class Refused(Exception):
 def main() -> None:
     request = json.loads(sys.stdin.read(4 * _MAX_FILE_BYTES))
     _limit(request["cpu_seconds"], request["memory_bytes"])
+    seccomp = forbid_system_calls()
     sys.setrecursionlimit(4000)
     try:
-        answer: dict[str, Any] = {"ok": True, **_compile(request)}
+        answer: dict[str, Any] = {"ok": True, **_compile(request, seccomp=seccomp)}
     except MemoryError:
         answer = {
             "ok": False,
@@ -93,11 +104,11 @@ def _limit(cpu_seconds: int, memory_bytes: int) -> None:
     resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
 
 
-def _compile(request: dict[str, Any]) -> dict[str, Any]:
+def _compile(request: dict[str, Any], *, seccomp: bool) -> dict[str, Any]:
     source = request["source"]
     roots = tuple(Path(r) for r in request["roots"])
     packages: dict[str, str] = request["packages"]
-    fence = _Fence(roots)
+    fence = _Fence(roots, seccomp=seccomp)
     with fence.installed():
         import xacro
         from xacro import substitution_args
@@ -157,10 +168,10 @@ def _describe(error: BaseException) -> dict[str, Any]:
 class _Fence:
     """``open`` for reading regular files inside ``roots``, through the caps; nothing else."""
 
-    def __init__(self, roots: tuple[Path, ...]) -> None:
+    def __init__(self, roots: tuple[Path, ...], *, seccomp: bool) -> None:
         self.roots = tuple(root.resolve() for root in roots)
         self._open: Callable[..., Any] = builtins.open
-        self.confinement = Confinement(0, seccomp=False)
+        self.confinement = Confinement(0, seccomp=seccomp)
 
     def check(self, file: str | os.PathLike[str]) -> Path:
         path = Path(os.fspath(file))
@@ -195,8 +206,8 @@ class _Fence:
 
     @contextlib.contextmanager
     def installed(self) -> Iterator[None]:
-        # Everything xacro imports lazily is loaded now, by a small warm-up document: once the
-        # fence is up, no module may be imported.
+        # Everything xacro imports lazily is loaded now, by a small warm-up document run
+        # through the guarded evaluators: once the fence is up, no module may be imported.
         import xml.dom.expatbuilder
         import xml.dom.minidom
 
@@ -207,10 +218,11 @@ class _Fence:
 
         from solver.identify.readers.safexml import parse_xml
 
+        expressions.install(xacro, xacro.substitution_args)
         warm_up = (
             '<robot xmlns:xacro="http://www.ros.org/wiki/xacro"><xacro:property '
             'name="p" value="${1 + 1}"/><xacro:macro name="m" params="x"><link '
-            'name="l${x}"/></xacro:macro><xacro:m x="${p}"/></robot>'
+            'name="l${x}" type="$(eval 2 * 2)"/></xacro:macro><xacro:m x="${p}"/></robot>'
         )
         xacro.init_stacks(None)
         xacro.process_doc(xacro.parse(warm_up))
@@ -218,11 +230,12 @@ class _Fence:
         parse_xml(warm_up.encode(), "<warm-up>")
         xml.dom.minidom.parseString(warm_up).toxml()
 
-        # The kernel fences: reads beneath the roots and the interpreter's own folders only, no
-        # writes, no sockets, no processes (solver.identify.xacro.confine). The Python-level fence
-        # below cannot promise that: an escaped expression reaches _io.open, os.mknod, lxml's C
-        # file writer.
-        self.confinement = confine([*self.roots, *sys.path])
+        # Reads beneath the roots only from now on (Landlock); the system calls were refused
+        # before xacro was imported (seccomp, in main). The kernel holds what the Python-level
+        # fence below cannot promise alone.
+        abi = restrict_reads(self.roots)
+        forget_ctypes()
+        self.confinement = Confinement(abi, self.confinement.seccomp)
         builtins.open = self.fenced_open
         io.open = self.fenced_open
         _disarm()

@@ -145,7 +145,7 @@ def _run_child(request: dict[str, Any], name: str, limits: XacroLimits) -> dict[
         "from solver.identify.xacro.child import main; main()"
     )
     process = subprocess.Popen(
-        [sys.executable, "-I", "-S", "-c", code, root, *_site_paths(name)],
+        [sys.executable, "-I", "-S", "-B", "-c", code, root, *_site_paths(name)],
         stdin=subprocess.PIPE,
         stdout=subprocess.PIPE,
         stderr=subprocess.DEVNULL,

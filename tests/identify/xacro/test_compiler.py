@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import pytest
@@ -9,8 +10,14 @@ import pytest
 from solver.errors import InputError
 from solver.identify.identification import identify, identify_urdf
 from solver.identify.urdf import parse_urdf
-from solver.identify.xacro import XacroLimits, compile_xacro, find_packages, package_path_from_env
-from tests.conftest import run_cli
+from solver.identify.xacro import (
+    XacroLimits,
+    compile_xacro,
+    confine,
+    find_packages,
+    package_path_from_env,
+)
+from tests.conftest import ROOT, run_cli
 
 PACKAGE_XML = (
     '<?xml version="1.0"?><package format="2"><name>{name}</name>'
@@ -195,9 +202,82 @@ def test_a_trusted_escape_cannot_start_a_process(tmp_path: Path) -> None:
     path.write_text(escape_that_touches(marker))
     result = run_cli("identify", "--trust-xacro", path)
     assert result.returncode == 2
-    assert "may not start processes" in result.stderr
+    assert "refused in a xacro expression" in result.stderr
     assert "Traceback" not in result.stderr
     assert not marker.exists()
+
+
+def eval_of(code: str) -> str:
+    """``$(eval code)`` through a property: xacro's lexer ends ``$(...)`` at the first ``)``."""
+    return f'<xacro:property name="c" value="{code}"/>\n  <link name="$(eval ${{c}})"/>'
+
+
+CONFINE = confine.__name__
+GLOBALS = f'<xacro:property name="g" value="${{{ESCAPE}}}"/>\n  '
+# Issue 23.8: each escape seen in the wild, aimed at files outside the description's package:
+# MARKER must not appear, OUTSIDE must keep its mode and times, SECRET must not be read.
+TRUSTED_ESCAPES = {
+    "os-through-function-globals": GLOBALS
+    + "<link name=\"${g['os'].chmod('OUTSIDE', 511) or g['os'].mknod('MARKER')}\"/>",
+    "io-open-through-function-globals": GLOBALS
+    + "<link name=\"${g['sys'].modules['_io'].open('SECRET').read()}\"/>",
+    "import-in-eval": eval_of("__import__('os').mknod('MARKER')"),
+    "ctypes-through-the-confinement-code": eval_of(
+        "__import__('solver.identify.xacro.confine').identify.xacro.confine.ctypes"
+        ".CDLL(None).chmod(b'OUTSIDE', 511)"
+    ),
+    "exec-in-eval": eval_of("exec(bytes.fromhex('HEX_CODE').decode())"),
+    "io-open-in-the-interpreters-folders": GLOBALS
+    + "<link name=\"${g['sys'].modules['_io'].open('LIBRARY_FILE').read()}\"/>",
+    "getattr-in-eval": eval_of("getattr(find, 'func_globals')"),
+    "generator-frame": '<link name="${[g for g in [(x for x in [1]).gi_frame.f_globals]][0]'
+    "['os'].utime('OUTSIDE', (0, 0))}\"/>",
+    "format-string": "<link name=\"${'{0.__globals__[os].mknod}'.format(xacro.load_yaml)}\"/>",
+    "class-building-type": "<link name=\"${python.type('X', (python.str,), python.dict())}\"/>",
+}
+
+
+@pytest.mark.parametrize("escape", TRUSTED_ESCAPES.values(), ids=TRUSTED_ESCAPES.keys())
+def test_a_trusted_xacro_reaches_no_module_and_no_file_outside_its_package(
+    escape: str, tmp_path: Path
+) -> None:
+    package = tmp_path / "pkg"
+    package.mkdir()
+    marker = tmp_path / "MARKER"
+    outside = tmp_path / "outside.txt"
+    outside.write_text("untouched")
+    outside.chmod(0o640)
+    os.utime(outside, (1_000_000_000, 1_000_000_000))
+    secret = tmp_path / "secret.xml"
+    secret.write_text("<secret>hunter2</secret>")
+    # exec'd code that reaches ctypes through the confinement code: chmod, utime, mknod (no
+    # assignment: $(eval) runs with a mapping that takes none).
+    code = (
+        f"(lambda c: (c.chmod({str(outside).encode()!r}, 511), "
+        f"c.utime({str(outside).encode()!r}, None)))"
+        f"(__import__({CONFINE!r}, fromlist=['x']).ctypes.CDLL(None)); "
+        f"__import__('os').mknod({str(marker)!r})"
+    )
+    hex_code = code.encode().hex()
+    path = package / "evil.xacro"
+    body = escape
+    for placeholder, value in [
+        ("MARKER", str(marker)),
+        ("OUTSIDE", str(outside)),
+        ("SECRET", str(secret)),
+        ("HEX_CODE", hex_code),
+        ("LIBRARY_FILE", str(ROOT / "pyproject.toml")),
+    ]:
+        body = body.replace(placeholder, value)
+    path.write_text(robot(body))
+    with pytest.raises(InputError) as caught:
+        compile_xacro(path, limits=FAST)
+    assert caught.value.faults[0].location.file == str(path)
+    assert not marker.exists()
+    status = outside.stat()
+    assert (status.st_mode & 0o777, status.st_mtime) == (0o640, 1_000_000_000)
+    assert "hunter2" not in str(caught.value)
+    assert "[project]" not in str(caught.value)
 
 
 def test_the_trusted_cli_compiles_a_workspace(workspace: tuple[Path, Path]) -> None:

@@ -1,86 +1,119 @@
-"""The kernel fence of the trusted-xacro child: escapes past the Python-level fence still fail."""
+"""The kernel fences of the trusted-xacro child hold by themselves, as if the guards were escaped.
+
+Each probe is a real process that raises the fences of :mod:`solver.identify.xacro.confine` and
+then does, with the full Python at hand, what an escaped expression would: every attempt must
+fail, no marker file may appear, and the file outside the allowed folder must be unchanged.
+"""
 
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
 
-from solver.errors import InputError
-from solver.identify.xacro.compiler import XacroLimits, compile_xacro
+from solver.identify.xacro.confine import seccomp_program
 from tests.conftest import ROOT
 
-LIMITS = XacroLimits(cpu_seconds=5, memory_bytes=512 * 2**20, wall_seconds=20.0)
-
-# Reaches xacro's module globals (and through them `os`, `sys` and every loaded module) using
-# only names xacro's expression check lets through.
-ESCAPE = (
-    "python.vars(python.type(python.vars(python.type(xacro.load_yaml))['__globals__']))"
-    "['__get__'](python.vars(python.type(xacro.load_yaml))['__globals__'], "
-    "xacro.load_yaml)"
+PROBE = r"""
+import ctypes, errno, json, os, resource, socket, subprocess, sys, threading
+from solver.identify.xacro.confine import (
+    _CALLS, _COLUMN, confine, forbid_system_calls, restrict_reads,
 )
+mode, allowed, outside, marker = sys.argv[1:5]
+library = os.path.join(os.path.dirname(os.__file__), "os.py")
+tcp = socket.socket()  # made before the fences: Landlock alone must stop its connect
+libc = ctypes.CDLL(None, use_errno=True)
+if mode == "both":
+    confined = confine([allowed])
+    answer = {"abi": confined.landlock_abi, "seccomp": confined.seccomp}
+elif mode == "seccomp":
+    answer = {"abi": 0, "seccomp": forbid_system_calls()}
+else:
+    answer = {"abi": restrict_reads([allowed]), "seccomp": False}
 
-PROBE = """
-import json, os, socket, subprocess, sys
-from solver.identify.xacro.confine import confine
-allowed, outside, target = sys.argv[1:4]
-tcp = socket.socket()  # made before the fence: Landlock alone must stop its connect
-confined = confine([allowed, *sys.path])
+
 def attempt(action):
     try:
         action()
-    except OSError as error:
+    except Exception as error:
         return type(error).__name__
     return "done"
+
+
 def fork():
     if os.fork() == 0:
         os._exit(0)
-print(json.dumps({
-    "abi": confined.landlock_abi,
-    "seccomp": confined.seccomp,
+    os.wait()
+
+
+def raw(number):
+    ctypes.set_errno(0)
+    result = libc.syscall(ctypes.c_long(number), 0, 0, 0, 0, 0, 0)
+    return errno.errorcode.get(ctypes.get_errno(), str(result)) if result == -1 else "done"
+
+
+column = _COLUMN.get(os.uname().machine)
+answer.update({
     "read inside": attempt(lambda: open(os.path.join(allowed, "inside.txt")).read()),
     "read outside": attempt(lambda: open(outside).read()),
+    "read the standard library": attempt(lambda: open(library).read()),
+    "list outside": attempt(lambda: os.listdir(os.path.dirname(outside))),
     "create inside": attempt(lambda: open(os.path.join(allowed, "new.txt"), "w").close()),
-    "mknod": attempt(lambda: os.mknod(target)),
+    "append outside": attempt(lambda: open(outside, "a").write("x")),
+    "truncate outside": attempt(lambda: os.truncate(outside, 0)),
+    "mknod": attempt(lambda: os.mknod(marker)),
+    "mkdir": attempt(lambda: os.mkdir(marker)),
+    "symlink": attempt(lambda: os.symlink(outside, marker)),
+    "link": attempt(lambda: os.link(outside, marker)),
+    "rename": attempt(lambda: os.rename(outside, marker)),
+    "unlink": attempt(lambda: os.unlink(outside)),
+    "chmod": attempt(lambda: os.chmod(outside, 0o777)),
+    "utime": attempt(lambda: os.utime(outside, (0, 0))),
+    "lchown": attempt(lambda: os.lchown(outside, os.getuid(), os.getgid())),
+    "setxattr": attempt(lambda: os.setxattr(outside, "user.teleop", b"x")),
     "execute": attempt(lambda: os.execv("/bin/true", ["true"])),
+    "fork": attempt(fork),
+    "process": attempt(lambda: subprocess.run(["/bin/true"], check=True)),
+    "thread": attempt(lambda: threading.Thread(target=print).start()),
     "tcp connect": attempt(lambda: tcp.connect(("127.0.0.1", 9))),
     "udp socket": attempt(lambda: socket.socket(socket.AF_INET, socket.SOCK_DGRAM)),
     "unix socket": attempt(lambda: socket.socket(socket.AF_UNIX)),
-    "fork": attempt(fork),
-    "process": attempt(lambda: subprocess.run(["/bin/true"], check=True)),
-}))
+    "signal the parent": attempt(lambda: os.kill(os.getppid(), 0)),
+    "limits of the parent": attempt(
+        lambda: resource.prlimit(os.getppid(), resource.RLIMIT_NOFILE)
+    ),
+    "own limits": attempt(lambda: resource.getrlimit(resource.RLIMIT_NOFILE)),
+    "newer call": raw(500),
+})
+# Every call refused outright, made raw with zero arguments: the filter answers before the
+# kernel looks at them (process-starting calls are left to the attempts above).
+starting = {"fork", "vfork", "clone", "clone3"}
+by_arguments = {"open", "openat", "ioctl", "kill", "tkill", "tgkill", "rt_sigqueueinfo",
+                "rt_tgsigqueueinfo", "prlimit64"}
+if answer["seccomp"] and column is not None:
+    answer["raw"] = {
+        name: raw(row[column])
+        for name, row in _CALLS.items()
+        if row[column] is not None and name not in starting | by_arguments
+    }
+print(json.dumps(answer))
 """
 
 
-@pytest.fixture(scope="module")
-def landlock() -> int:
-    """The Landlock ABI this kernel offers; the tests that need it skip without it."""
-    code = "from solver.identify.xacro.confine import confine; print(confine([]).landlock_abi)"
-    done = subprocess.run(
-        [sys.executable, "-c", code],
-        capture_output=True,
-        text=True,
-        cwd=ROOT,
-        check=True,
-        timeout=120,
-    )
-    abi = int(done.stdout)
-    if abi == 0:
-        pytest.skip("this kernel has no Landlock")
-    return abi
-
-
-def probe(tmp_path: Path) -> dict[str, object]:
+def probe(tmp_path: Path, mode: str) -> dict[str, object]:
     allowed = tmp_path / "package"
     allowed.mkdir()
     (allowed / "inside.txt").write_text("inside")
     outside = tmp_path / "secret.txt"
     outside.write_text("secret")
+    os.chmod(outside, 0o640)
+    os.utime(outside, (1_000_000_000, 1_000_000_000))
     done = subprocess.run(
-        [sys.executable, "-c", PROBE, str(allowed), str(outside), str(tmp_path / "MARKER")],
+        [sys.executable, "-c", PROBE, mode, str(allowed), str(outside), str(tmp_path / "MARKER")],
         capture_output=True,
         text=True,
         cwd=ROOT,
@@ -88,109 +121,92 @@ def probe(tmp_path: Path) -> dict[str, object]:
         timeout=120,
     )
     answer: dict[str, object] = json.loads(done.stdout)
+    assert not (tmp_path / "MARKER").exists()
+    assert not (allowed / "new.txt").exists()
+    assert outside.read_text() == "secret"
+    if answer["seccomp"]:  # Landlock alone does not fence a file's mode, owner or times
+        status = outside.stat()
+        assert (status.st_mode & 0o777, status.st_mtime) == (0o640, 1_000_000_000)
     return answer
 
 
-@pytest.mark.usefixtures("landlock")
-def test_a_confined_process_reads_only_beneath_its_folders_and_writes_and_runs_nothing(
-    tmp_path: Path,
-) -> None:
-    answer = probe(tmp_path)
-    assert answer["read inside"] == "done"
-    assert answer["read outside"] == "PermissionError"
-    assert answer["create inside"] == "PermissionError"
-    assert answer["mknod"] == "PermissionError"
-    assert answer["execute"] == "PermissionError"
-    assert not (tmp_path / "MARKER").exists()
-    assert not (tmp_path / "package" / "new.txt").exists()
-
-
-def test_a_confined_process_opens_no_socket_and_starts_no_process_where_seccomp_applies(
-    tmp_path: Path,
-) -> None:
-    answer = probe(tmp_path)
-    if not answer["seccomp"]:
+def skip_without(answer: dict[str, object], fence: str) -> None:
+    if fence == "landlock" and not answer["abi"]:
+        pytest.skip("this kernel has no Landlock")
+    if fence == "seccomp" and not answer["seccomp"]:
         pytest.skip("no seccomp filter on this system (not Linux x86-64 or arm64)")
-    assert answer["udp socket"] == "PermissionError"
-    assert answer["unix socket"] == "PermissionError"
-    assert answer["fork"] == "PermissionError"
-    assert answer["process"] == "PermissionError"
 
 
-def test_a_confined_process_connects_no_tcp_socket_on_landlock_4_and_later(
-    landlock: int, tmp_path: Path
-) -> None:
-    if landlock < 4:
-        pytest.skip("Landlock before ABI 4 does not handle TCP")
-    assert probe(tmp_path)["tcp connect"] == "PermissionError"
+WRITES = (
+    *("create inside", "append outside", "truncate outside", "mknod", "mkdir", "symlink"),
+    *("link", "rename", "unlink"),
+)
+METADATA = ("chmod", "utime", "lchown", "setxattr")
+PROCESSES = ("execute", "fork", "process", "thread")
+OTHERS = ("signal the parent", "limits of the parent")
 
 
-def escaping(body: str) -> str:
-    return (
-        '<?xml version="1.0"?>\n<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
-        f'  <xacro:property name="g" value="${{{ESCAPE}}}"/>\n  {body}\n</robot>\n'
-    )
-
-
-# Each reaches a file function the Python-level fence does not replace.
-ESCAPES = {
-    "io-open": "<link name=\"${{g['sys'].modules['_io'].open('{marker}', 'w') and 'x'}}\"/>",
-    "mknod": "<link name=\"${{g['os'].mknod('{marker}') or 'x'}}\"/>",
-    "lxml-write": (
-        "<link name=\"${{g['sys'].modules['lxml.etree'].ElementTree(g['sys']"
-        ".modules['lxml.etree'].Element('a')).write('{marker}') or 'x'}}\"/>"
-    ),
-}
-
-
-@pytest.mark.usefixtures("landlock")
-@pytest.mark.parametrize("escape", sorted(ESCAPES))
-def test_a_trusted_xacro_that_escapes_the_python_fence_still_writes_no_file(
-    escape: str, tmp_path: Path
-) -> None:
-    marker = tmp_path / "MARKER"
-    path = tmp_path / "evil.xacro"
-    path.write_text(escaping(ESCAPES[escape].format(marker=marker)))
-    with pytest.raises(InputError, match="Permission denied") as caught:
-        compile_xacro(path, limits=LIMITS)
-    assert caught.value.faults[0].location.file == str(path)
-    assert not marker.exists()
-
-
-@pytest.mark.usefixtures("landlock")
-def test_a_trusted_xacro_that_escapes_the_python_fence_still_reads_no_file_outside(
+def test_both_fences_read_only_beneath_the_package_and_write_touch_run_nothing(
     tmp_path: Path,
 ) -> None:
-    secret = tmp_path / "secret.xml"
-    secret.write_text("<secret>hunter2</secret>")
-    (tmp_path / "pkg").mkdir()
-    path = tmp_path / "pkg" / "evil.xacro"
-    path.write_text(
-        escaping(
-            "<link name=\"${g['sys'].modules['lxml.etree'].parse('" + str(secret) + "')"
-            '.getroot().text}"/>'
-        )
-    )
-    with pytest.raises(InputError, match="Permission denied") as caught:
-        compile_xacro(path, limits=LIMITS)
-    assert "hunter2" not in str(caught.value)
+    answer = probe(tmp_path, "both")
+    skip_without(answer, "landlock")
+    skip_without(answer, "seccomp")
+    assert answer["read inside"] == "done"
+    assert answer["own limits"] == "done"
+    # The interpreter's own library is outside too: only the package folders are readable.
+    for attempt in ("read outside", "read the standard library", "list outside"):
+        assert answer[attempt] == "PermissionError", attempt
+    for attempt in (*WRITES, *METADATA, *OTHERS, "execute", "fork", "process"):
+        assert answer[attempt] == "PermissionError", attempt
+    assert answer["thread"] == "RuntimeError"  # "can't start new thread": clone refused
+    assert answer["udp socket"] == answer["unix socket"] == "PermissionError"
 
 
-@pytest.mark.usefixtures("landlock")
-def test_a_trusted_xacro_eval_that_runs_arbitrary_python_still_writes_no_file(
+def test_seccomp_alone_refuses_writes_metadata_processes_and_other_processes(
     tmp_path: Path,
 ) -> None:
-    # $(eval) evaluates with Python's builtins; a property holding code gets past its lexer (no
-    # ')' inside) and exec of hex-encoded code past its only check (no double underscore).
-    marker = tmp_path / "MARKER"
-    code = f"__import__('os').mknod({str(marker)!r})".encode().hex()
-    path = tmp_path / "evil.xacro"
-    path.write_text(
-        escaping(
-            f'<xacro:property name="c" value="exec(bytes.fromhex(\'{code}\')'
-            '.decode()) or \'x\'"/>\n  <link name="$(eval ${c})"/>'
-        )
-    )
-    with pytest.raises(InputError, match="Permission denied"):
-        compile_xacro(path, limits=LIMITS)
-    assert not marker.exists()
+    # A kernel without Landlock still refuses every write and every change to a file's
+    # metadata (Landlock never fenced chmod, utime, chown or extended attributes).
+    answer = probe(tmp_path, "seccomp")
+    skip_without(answer, "seccomp")
+    assert answer["read inside"] == answer["own limits"] == "done"
+    for attempt in (*WRITES, *METADATA, *OTHERS, "execute", "fork", "process"):
+        assert answer[attempt] == "PermissionError", attempt
+    assert answer["thread"] == "RuntimeError"
+    assert answer["udp socket"] == answer["unix socket"] == "PermissionError"
+
+
+def test_seccomp_refuses_every_listed_call_and_calls_newer_than_itself(tmp_path: Path) -> None:
+    answer = probe(tmp_path, "seccomp")
+    skip_without(answer, "seccomp")
+    raw = answer["raw"]
+    assert isinstance(raw, dict)
+    assert raw
+    assert {name: code for name, code in raw.items() if code != "EACCES"} == {}
+    assert answer["newer call"] == "ENOSYS"
+
+
+def test_landlock_alone_reads_only_beneath_the_package_and_connects_no_tcp(
+    tmp_path: Path,
+) -> None:
+    answer = probe(tmp_path, "landlock")
+    skip_without(answer, "landlock")
+    assert answer["read inside"] == "done"
+    for attempt in ("read outside", "read the standard library", "create inside", "mknod"):
+        assert answer[attempt] == "PermissionError", attempt
+    if isinstance(answer["abi"], int) and answer["abi"] >= 4:
+        assert answer["tcp connect"] == "PermissionError"
+
+
+@pytest.mark.parametrize("machine", ["x86_64", "aarch64"])
+def test_every_jump_of_the_filter_lands_inside_it(machine: str) -> None:
+    # Classic BPF jumps forward only, by at most 255; a jump past the end is refused by the
+    # kernel. The program for the machine this test does not run on is checked here.
+    program = seccomp_program(machine, 4242)
+    jumps = [(at, step) for at, step in enumerate(program) if step[0] in (0x15, 0x35, 0x45)]
+    assert jumps
+    for at, (_, true, false, _) in jumps:
+        assert at + 1 + max(true, false) < len(program)
+    assert program[-1] == (0x06, 0, 0, 0x7FFF0000)  # what is not refused is allowed
+    assert len(program) < 4096
