@@ -1,0 +1,475 @@
+"""A Lichtblick layout against Lichtblick's own rules (``lichtblick.yaml``): every problem at once.
+
+Each problem is a :class:`~solver.errors.Fault` located at its path in the layout, with a
+stable ``code``:
+
+============================  ===========================================================
+``lichtblick-import``          what the app's import (``validateLayoutData``) refuses
+``lichtblick-tree``            the panel tree: split nodes, ids without a config, orphans
+``lichtblick-panel-type``      a panel type the app does not register
+``lichtblick-config``          a config key the panel does not read, or a value of the wrong type
+``lichtblick-message-path``    a path the message-path grammar refuses, or only half-written
+``ros-topic-name``             a topic (alone or in a path) that is not a full ROS 2 name
+``lichtblick-title-hidden``    a title on a panel whose toolbar never shows one
+``lichtblick-modified``        a key the app fills in on opening: the layout shows as modified
+``lichtblick-grid``            a 3D panel without the reference grid the app's own layout has
+``lichtblick-publish``         a Publish panel without a complete, meaningful message
+``lichtblick-teleop-topic``    two Teleop panels driving one command topic
+``namespace``                  a topic the layout publishes on, outside the robot's namespace
+============================  ===========================================================
+
+Not here: writing layouts (:mod:`solver.layouts.foxglove`); RViz2 (:mod:`.rviz`).
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from collections.abc import Collection, Iterator, Mapping
+from typing import Any, TypeGuard
+
+from solver.errors import Fault, Location
+from solver.layouts.checks.data import field_values, lichtblick_rules, type_problems
+from solver.layouts.checks.messagepath import MessagePathError, parse_message_path
+from solver.ros.names import (
+    common_namespace,
+    full_topic_name_problem,
+    in_namespace,
+    normalise_type,
+)
+from solver.untrusted import shown
+
+__all__ = ["check_lichtblick", "robot_namespace"]
+
+# Plot/utils/config.ts isReferenceLinePlotPathType: !isNaN(parseFloat(value)), a leading number.
+_REFERENCE_LINE = re.compile(r"\s*[+-]?(\d|\.\d|Infinity)")
+_MAX_TREE_NODES = 100_000
+
+
+def check_lichtblick(
+    layout: Any,
+    file: str = "<layout>",
+    *,
+    namespace: str | None = None,
+    topic_types: Mapping[str, Collection[str]] | None = None,
+) -> tuple[Fault, ...]:
+    """Every way ``layout`` (parsed JSON) breaks a rule of ``lichtblick.yaml``.
+
+    ``namespace``: the robot's (``/robot1``); by default :func:`robot_namespace`. Topics the
+    layout publishes on must lie in it. ``topic_types``: topic -> its possible message types,
+    where known (a point-cloud topic must carry the colour settings the app would add).
+    """
+    faults = list(_import(layout, file))
+    if not isinstance(layout, dict) or not isinstance(layout.get("configById"), dict):
+        return tuple(faults)
+    configs: dict[str, Any] = layout["configById"]
+    faults.extend(_tree(layout.get("layout"), configs, file))
+    types = {
+        topic: {normalise_type(t) for t in kinds} for topic, kinds in (topic_types or {}).items()
+    }
+    for panel_id, config in configs.items():
+        faults.extend(_panel(str(panel_id), config, file, types))
+    faults.extend(_teleop_topics(configs, file))
+    if namespace is None:
+        namespace = robot_namespace(layout)
+    if namespace is not None:
+        faults.extend(_namespace(configs, namespace, file))
+    return tuple(faults)
+
+
+def robot_namespace(layout: Any) -> str | None:
+    """The namespace the robot's own topics in ``layout`` share (``/robot1``), or None.
+
+    The robot's topics are those the panels show or command: every topic field and every
+    path's topic, except the click-to-publish topics whose defaults are the app's own.
+    """
+    rules = lichtblick_rules()
+    names: list[str] = []
+    configs = layout.get("configById") if isinstance(layout, dict) else None
+    for panel_id, config in (configs or {}).items():
+        spec = rules["panels"].get(str(panel_id).partition("!")[0])
+        if spec is None or not isinstance(config, dict):
+            continue
+        skipped = set(spec.get("app_defaults", ()))
+        for reference in spec.get("topics", ()):
+            if reference not in skipped:
+                names.extend(v for _, v in field_values(config, reference) if isinstance(v, str))
+        for reference in spec.get("paths", ()):
+            for _, value in field_values(config, reference):
+                topic = _path_topic(value)
+                if topic is not None:
+                    names.append(topic)
+    return common_namespace(names)
+
+
+def _fault(file: str, path: str, message: str, code: str) -> Fault:
+    return Fault(Location(file, path=path), message, code=code)
+
+
+def _import(layout: Any, file: str) -> Iterator[Fault]:
+    """util/layout.ts validateLayoutData, and the types of LayoutData's fields."""
+    rules = lichtblick_rules()["layout"]
+    if not isinstance(layout, dict):
+        yield _fault(file, "", "a layout is a JSON object", "lichtblick-import")
+        return
+    for key in rules["required"]:
+        if key not in layout:
+            yield _fault(file, key, "missing (the import refuses the file)", "lichtblick-import")
+    # The tree is checked on its own; its nodes are not of one type.
+    for path, problem in type_problems(layout, rules["type"], ""):
+        yield _fault(file, path.lstrip("."), problem, "lichtblick-import")
+
+
+def _tree(root: Any, configs: dict[str, Any], file: str) -> Iterator[Fault]:
+    seen: list[str] = []
+    stack: list[tuple[Any, str]] = [] if root is None else [(root, "layout")]
+    visited = 0
+    while stack:
+        node, path = stack.pop()
+        visited += 1
+        if visited > _MAX_TREE_NODES:
+            yield _fault(file, path, "the panel tree is too large to check", "lichtblick-tree")
+            return
+        if isinstance(node, str):
+            seen.append(node)
+            if node not in configs:
+                yield _fault(file, path, "a panel id with no config", "lichtblick-tree")
+        elif isinstance(node, dict):
+            yield from _split(node, path, file)
+            stack.extend((node[key], f"{path}.{key}") for key in ("second", "first") if key in node)
+        else:
+            yield _fault(file, path, "neither a panel id nor a split", "lichtblick-tree")
+    for panel_id in sorted(set(seen)):
+        if seen.count(panel_id) > 1:
+            yield _fault(file, "layout", f"{shown(panel_id)} appears twice", "lichtblick-tree")
+    for panel_id in configs:
+        if panel_id not in seen:
+            where = f"configById.{shown(panel_id)}"
+            yield _fault(file, where, "not in the panel tree: never shown", "lichtblick-tree")
+
+
+def _split(node: dict[str, Any], path: str, file: str) -> Iterator[Fault]:
+    for where, problem in type_problems(node, lichtblick_rules()["layout"]["split"], path):
+        yield _fault(file, where, problem, "lichtblick-tree")
+    for key in ("direction", "first", "second"):
+        if key not in node:
+            yield _fault(file, f"{path}.{key}", "missing in a split", "lichtblick-tree")
+    percent = node.get("splitPercentage")
+    if _is_number(percent) and not 0 <= percent <= 100:
+        yield _fault(file, f"{path}.splitPercentage", "must be 0..100", "lichtblick-tree")
+
+
+def _is_number(value: Any) -> TypeGuard[int | float]:
+    return isinstance(value, (int, float)) and not isinstance(value, bool)
+
+
+def _panel(panel_id: str, config: Any, file: str, types: dict[str, set[str]]) -> Iterator[Fault]:
+    rules = lichtblick_rules()
+    kind = panel_id.partition("!")[0]
+    base = f"configById.{shown(panel_id)}"
+    if kind not in rules["panel_types"]:
+        unknown = f"unknown panel type {shown(kind, quoted=True)}"
+        yield _fault(file, base, unknown, "lichtblick-panel-type")
+        return
+    if not isinstance(config, dict):
+        yield _fault(file, base, "a panel config is an object", "lichtblick-config")
+        return
+    yield from _titles(kind, config, base, file)
+    spec = rules["panels"].get(kind)
+    if spec is None:
+        return  # a panel type whose config keys the rules do not list
+    own = {key: value for key, value in config.items() if key not in rules["title_keys"]}
+    for path, problem in type_problems(own, spec["type"], base):
+        yield _fault(file, path, problem, "lichtblick-config")
+    yield from _names(kind, config, spec, base, file)
+    yield from _filled(config, spec, base, file, types)
+    if "grid_layer" in spec and kind == "3D":
+        yield from _grid(config, spec["grid_layer"]["layerId"], base, file)
+    rate = config.get("publishRate")
+    if kind == "Teleop" and _is_number(rate) and rate <= 0:
+        never = "must be above 0: the pad never publishes"
+        yield _fault(file, f"{base}.publishRate", never, "lichtblick-config")
+    if kind == "Publish":
+        yield from _publish(config, base, file)
+
+
+def _titles(kind: str, config: dict[str, Any], base: str, file: str) -> Iterator[Fault]:
+    rules = lichtblick_rules()
+    for key, spec in rules["title_keys"].items():
+        if key not in config:
+            continue
+        for path, problem in type_problems(config[key], spec, f"{base}.{key}"):
+            yield _fault(file, path, problem, "lichtblick-config")
+        if kind in rules["titles_not_shown"]:
+            yield _fault(
+                file,
+                f"{base}.{key}",
+                f"a {kind} panel draws its own toolbar: this title is never shown",
+                "lichtblick-title-hidden",
+            )
+
+
+def _names(
+    kind: str, config: dict[str, Any], spec: Mapping[str, Any], base: str, file: str
+) -> Iterator[Fault]:
+    """Topics must be full ROS 2 names; paths must parse and name such topics."""
+    for reference in spec.get("topics", ()):
+        for path, value in field_values(config, reference):
+            if isinstance(value, str) and (problem := full_topic_name_problem(value)):
+                yield _fault(file, f"{base}.{path}", f"topic {problem}", "ros-topic-name")
+    optional = set(spec.get("may_be_empty", ()))
+    for reference in spec.get("paths", ()):
+        for path, value in field_values(config, reference):
+            if value == "" and reference in optional:
+                continue
+            yield from _message_path(value, f"{base}.{path}", file, plot=kind == "Plot")
+
+
+def _grid(config: dict[str, Any], grid: str, base: str, file: str) -> Iterator[Fault]:
+    layers = config.get("layers")
+    if not isinstance(layers, dict) or not any(
+        isinstance(layer, dict) and layer.get("layerId") == grid for layer in layers.values()
+    ):
+        yield _fault(
+            file,
+            f"{base}.layers",
+            f"no {grid} layer: the scene has no reference grid (the app's own default 3D panel "
+            "has one)",
+            "lichtblick-grid",
+        )
+
+
+def _message_path(value: Any, path: str, file: str, *, plot: bool) -> Iterator[Fault]:
+    if not isinstance(value, str) or (plot and _REFERENCE_LINE.match(value)):
+        return  # a type problem (reported), or a Plot reference line such as "0.5"
+    try:
+        parsed = parse_message_path(value)
+    except MessagePathError as error:
+        yield _fault(file, path, f"not a message path: {error}", "lichtblick-message-path")
+        return
+    if parsed.incomplete:
+        yield _fault(
+            file,
+            path,
+            "a half-written message path (a trailing '.', an empty {} filter or a bare $): "
+            "the app marks it invalid",
+            "lichtblick-message-path",
+        )
+    if problem := full_topic_name_problem(parsed.topic):
+        yield _fault(file, path, f"the path's topic {problem}", "ros-topic-name")
+
+
+def _path_topic(value: Any) -> str | None:
+    if not isinstance(value, str):
+        return None
+    try:
+        return parse_message_path(value).topic
+    except MessagePathError:
+        return None
+
+
+def _filled(
+    config: dict[str, Any],
+    spec: Mapping[str, Any],
+    base: str,
+    file: str,
+    types: dict[str, set[str]],
+) -> Iterator[Fault]:
+    deep = set(spec.get("deep", ()))
+    for key, default in spec.get("filled", {}).items():
+        if key not in config:
+            yield _fault(
+                file,
+                f"{base}.{key}",
+                f"missing: the app adds {_json(default)} when the layout opens, and the layout "
+                "shows as modified",
+                "lichtblick-modified",
+            )
+        elif key in deep and isinstance(default, dict) and isinstance(config[key], dict):
+            for sub, value in default.items():
+                if sub not in config[key]:
+                    yield _fault(
+                        file,
+                        f"{base}.{key}.{sub}",
+                        f"missing: the app adds {_json(value)} when the layout opens, and the "
+                        "layout shows as modified",
+                        "lichtblick-modified",
+                    )
+    colour = {normalise_type(t) for t in spec.get("colour_on_first_message", ())}
+    topics = config.get("topics")
+    if not colour or not isinstance(topics, dict):
+        return
+    for topic, settings in topics.items():
+        if types.get(topic, set()) & colour and not (
+            isinstance(settings, dict) and "colorField" in settings
+        ):
+            yield _fault(
+                file,
+                f"{base}.topics.{shown(topic)}.colorField",
+                "missing: on the first message the app picks a colour field and saves it "
+                "(colorField, colorMode, colorMap), and the layout shows as modified",
+                "lichtblick-modified",
+            )
+
+
+def _publish(config: dict[str, Any], base: str, file: str) -> Iterator[Fault]:
+    """panels/Publish/index.tsx parseInput, and a message worth sending for the datatype."""
+    text = config.get("value", lichtblick_rules()["panels"]["Publish"]["filled"]["value"])
+    if not isinstance(text, str):
+        return  # a type problem, reported
+    where = f"{base}.value"
+    try:
+        message = json.loads(text)
+    except ValueError:
+        yield _fault(
+            file, where, "not JSON: the Publish button stays disabled", "lichtblick-publish"
+        )
+        return
+    if not isinstance(message, dict):
+        yield _fault(file, where, "the message must be a JSON object", "lichtblick-publish")
+        return
+    if not message:
+        yield _fault(
+            file,
+            where,
+            "an empty message: pressing Publish sends every field zero or empty (the app's "
+            "ROS 2 writer even sent bytes a strict reader rejects for {})",
+            "lichtblick-publish",
+        )
+        return
+    datatype = config.get("datatype")
+    if not isinstance(datatype, str) or not datatype:
+        yield _fault(
+            file,
+            f"{base}.datatype",
+            "no message schema: the panel cannot publish",
+            "lichtblick-publish",
+        )
+        return
+    sample = lichtblick_rules()["samples"].get(normalise_type(datatype))
+    if sample is None:
+        return  # a datatype the rules hold no sample of: its fields are not checked
+    for path, problem in _shape(message, sample, where):
+        yield _fault(file, path, problem, "lichtblick-publish")
+    if normalise_type(datatype) == "trajectory_msgs/JointTrajectory":
+        yield from _trajectory(message, where, file)
+
+
+def _shape(value: Any, sample: Any, path: str) -> Iterator[tuple[str, str]]:
+    """Where ``value`` has another shape than Lichtblick's sample message of its type."""
+    if isinstance(sample, dict):
+        yield from _shape_object(value, sample, path)
+    elif isinstance(sample, list):
+        if not isinstance(value, list):
+            yield path, "must be a list"
+            return
+        for index, item in enumerate(value):
+            yield from _shape(item, sample[0], f"{path}[{index}]")
+    elif isinstance(sample, bool):
+        if not isinstance(value, bool):
+            yield path, "must be true or false"
+    elif isinstance(sample, (int, float)):
+        if not _is_number(value):
+            yield path, "must be a number"
+    elif not isinstance(value, str):
+        yield path, "must be a string"
+
+
+def _shape_object(value: Any, sample: dict[str, Any], path: str) -> Iterator[tuple[str, str]]:
+    if not isinstance(value, dict):
+        yield path, "must be an object"
+        return
+    for key in sample:
+        if key not in value:
+            yield f"{path}:{key}", "missing field (the app's sample message has it)"
+    for key, item in value.items():
+        if key in sample:
+            yield from _shape(item, sample[key], f"{path}:{key}")
+        else:
+            yield f"{path}:{shown(key)}", "not a field of this message type"
+
+
+def _trajectory(message: dict[str, Any], where: str, file: str) -> Iterator[Fault]:
+    names = message.get("joint_names")
+    points = message.get("points")
+    if not isinstance(names, list) or not names or not all(isinstance(n, str) and n for n in names):
+        yield _fault(
+            file,
+            f"{where}:joint_names",
+            "a trajectory names its joints (none here, or an empty name)",
+            "lichtblick-publish",
+        )
+        return
+    if not isinstance(points, list) or not points:
+        yield _fault(
+            file, f"{where}:points", "a trajectory has at least one point", "lichtblick-publish"
+        )
+        return
+    for index, point in enumerate(points):
+        positions = point.get("positions") if isinstance(point, dict) else None
+        if not isinstance(positions, list) or len(positions) != len(names):
+            yield _fault(
+                file,
+                f"{where}:points[{index}].positions",
+                f"needs one position per joint ({len(names)})",
+                "lichtblick-publish",
+            )
+
+
+def _teleop_topics(configs: dict[str, Any], file: str) -> Iterator[Fault]:
+    first: dict[str, str] = {}
+    for panel_id, config in configs.items():
+        if str(panel_id).partition("!")[0] != "Teleop" or not isinstance(config, dict):
+            continue
+        topic = config.get("topic")
+        if not isinstance(topic, str):
+            continue
+        if topic in first:
+            yield _fault(
+                file,
+                f"configById.{shown(panel_id)}.topic",
+                f"{shown(first[topic])} already drives this topic: two pads command one robot "
+                "(one velocity panel per command topic)",
+                "lichtblick-teleop-topic",
+            )
+        else:
+            first[topic] = str(panel_id)
+
+
+def _namespace(configs: dict[str, Any], namespace: str, file: str) -> Iterator[Fault]:
+    rules = lichtblick_rules()
+    for panel_id, config in configs.items():
+        spec = rules["panels"].get(str(panel_id).partition("!")[0])
+        if spec is None or not isinstance(config, dict):
+            continue
+        merged = _completed(spec, config)
+        for reference in spec.get("publishes", ()):
+            for path, value in field_values(merged, reference):
+                if isinstance(value, str) and not in_namespace(value, namespace):
+                    given = "the app's default " if _unset(config, reference) else ""
+                    yield _fault(
+                        file,
+                        f"configById.{shown(panel_id)}.{path}",
+                        f"the panel publishes on {given}{shown(value, quoted=True)}, outside the "
+                        f"robot's namespace {shown(namespace, quoted=True)}",
+                        "namespace",
+                    )
+
+
+def _completed(spec: Mapping[str, Any], config: dict[str, Any]) -> dict[str, Any]:
+    """``config`` as the app completes it: missing keys filled, deep keys merged key by key."""
+    merged = {**spec.get("filled", {}), **config}
+    for key in spec.get("deep", ()):
+        default, own = spec.get("filled", {}).get(key), config.get(key)
+        if isinstance(default, dict) and isinstance(own, dict):
+            merged[key] = {**default, **own}
+    return merged
+
+
+def _unset(config: dict[str, Any], reference: str) -> bool:
+    return not any(True for _ in field_values(config, reference))
+
+
+def _json(value: Any) -> str:
+    text = json.dumps(value, separators=(", ", ": "))
+    return text if len(text) <= 60 else text[:57] + "..."

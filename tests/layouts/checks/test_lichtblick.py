@@ -1,0 +1,302 @@
+"""Lichtblick layouts against ``lichtblick.yaml``, and the rules against the real app's own output.
+
+The app's exports (``data/app``, see its README) are the oracle: what the app adds to a layout
+on opening is exactly what the checks call missing, and what the app writes itself breaks no
+type rule.
+"""
+
+from __future__ import annotations
+
+import copy
+import json
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from solver.layouts.checks import check_lichtblick
+from solver.layouts.checks.data import lichtblick_rules
+from solver.layouts.checks.lichtblick import robot_namespace
+
+APP = Path(__file__).parent / "data" / "app"
+POINTS = {"/robot1/points": ["sensor_msgs/msg/PointCloud2"]}
+SCAN = {"/diff_drive_lidar/scan": ["sensor_msgs/msg/LaserScan"]}
+JOINTS = {
+    "header": {"stamp": {"sec": 0, "nsec": 0}, "frame_id": ""},
+    "joint_names": ["shoulder", "elbow"],
+    "points": [
+        {
+            "positions": [0.0, 0.5],
+            "velocities": [],
+            "accelerations": [],
+            "effort": [],
+            "time_from_start": {"sec": 2, "nsec": 0},
+        }
+    ],
+}
+
+
+def _app(name: str, kind: str) -> dict[str, Any]:
+    return json.loads((APP / f"{name}.{kind}.json").read_text(encoding="utf-8"))  # type: ignore[no-any-return]
+
+
+def _codes(layout: Any, **kwargs: Any) -> dict[str, list[str]]:
+    found: dict[str, list[str]] = {}
+    for fault in check_lichtblick(layout, **kwargs):
+        found.setdefault(fault.code, []).append(fault.location.path)
+    return found
+
+
+def _added(before: Any, after: Any, path: str = "") -> set[str]:
+    """Paths of the keys ``after`` has and ``before`` lacks."""
+    if not isinstance(before, dict) or not isinstance(after, dict):
+        return set()
+    added: set[str] = set()
+    for key, value in after.items():
+        where = f"{path}.{key}" if path else key
+        added |= {where} if key not in before else _added(before[key], value, where)
+    return added
+
+
+@pytest.mark.parametrize(
+    ("name", "types"),
+    [("case3-default-robot1", POINTS), ("diff_drive_lidar-scan", SCAN), ("empty-panels", {})],
+)
+def test_what_the_app_adds_on_opening_is_what_the_checks_call_missing(
+    name: str, types: dict[str, list[str]]
+) -> None:
+    imported, exported = _app(name, "imported"), _app(name, "exported")
+    added = _added(imported, exported)
+    # The app saves a point cloud's colour field, mode and map together: one fault says so.
+    added = {p for p in added if ".topics." not in p or not p.endswith((".colorMode", ".colorMap"))}
+    # An Image panel with no topic picks the first image topic it sees: data, not a default.
+    added -= {"configById.Image!b.imageMode.imageTopic"}
+    missing = set(_codes(imported, topic_types=types).get("lichtblick-modified", []))
+    assert missing == added
+    assert added
+
+
+@pytest.mark.parametrize("name", ["case3-default-robot1", "diff_drive_lidar-scan", "empty-panels"])
+def test_what_the_app_writes_itself_is_complete_and_of_the_right_types(name: str) -> None:
+    codes = _codes(_app(name, "exported"), topic_types={**POINTS, **SCAN})
+    for code in (
+        "lichtblick-import",
+        "lichtblick-tree",
+        "lichtblick-config",
+        "lichtblick-modified",
+    ):
+        assert code not in codes, codes[code]
+
+
+def _clean() -> dict[str, Any]:
+    """The app's own export of a layout, with what the issue asks fixed: no problem left."""
+    layout = _app("case3-default-robot1", "exported")
+    configs = layout["configById"]
+    grid = {**lichtblick_rules()["panels"]["3D"]["grid_layer"], "instanceId": "grid"}
+    for panel_id, config in configs.items():
+        if panel_id.startswith(("3D!", "Image!")):
+            config["publish"].update(
+                pointTopic="/robot1/clicked_point", poseEstimateTopic="/robot1/initialpose"
+            )
+            if config["publish"]["type"] != "pose":
+                config["publish"]["poseTopic"] = "/robot1/goal_pose"
+        if panel_id.startswith("3D!"):
+            config["layers"] = {"grid": grid}
+    configs["Publish!p01"]["value"] = json.dumps(JOINTS)
+    for key in ("lichtblickPanelTitle", "foxglovePanelTitle"):
+        del configs["RawMessages!p09"][key]
+    configs["Teleop!p03"]["topic"] = "/robot1/drive/cmd_vel"
+    configs["Teleop!p04"]["topic"] = "/robot1/walk/cmd_vel"
+    return layout
+
+
+def test_a_layout_that_keeps_every_rule_has_no_fault() -> None:
+    assert check_lichtblick(_clean(), topic_types=POINTS) == ()
+
+
+def test_the_robot_namespace_is_what_its_own_topics_share() -> None:
+    assert robot_namespace(_clean()) == "/robot1"
+    assert robot_namespace(_app("diff_drive_lidar-scan", "imported")) == "/diff_drive_lidar"
+
+
+def test_a_layout_that_is_no_object_is_refused_as_the_import_refuses_it() -> None:
+    assert _codes([]) == {"lichtblick-import": [""]}
+    broken = {"configById": {}, "globalVariables": {}, "playbackConfig": {"speed": "fast"}}
+    assert _codes(broken) == {"lichtblick-import": ["playbackConfig.speed"]}
+
+
+def test_the_tree_names_ids_without_config_and_configs_never_shown() -> None:
+    layout = _clean()
+    layout["layout"] = {"direction": "row", "first": "3D!p05", "second": "Plot!nope"}
+    codes = _codes(layout, topic_types=POINTS)
+    assert "layout.second" in codes["lichtblick-tree"]
+    assert "configById.Teleop!p02" in codes["lichtblick-tree"]
+
+
+def test_a_deep_tree_is_checked_without_recursion() -> None:
+    layout = _clean()
+    node: Any = "3D!p05"
+    for _ in range(5000):
+        node = {"direction": "row", "first": node, "second": "3D!p05"}
+    layout["layout"] = node
+    assert "lichtblick-tree" in _codes(layout, topic_types=POINTS)
+
+
+def test_an_unknown_panel_type_is_named() -> None:
+    layout = _clean()
+    layout["configById"]["Audio!x"] = {}
+    layout["layout"] = {"direction": "row", "first": layout["layout"], "second": "Audio!x"}
+    assert _codes(layout, topic_types=POINTS) == {"lichtblick-panel-type": ["configById.Audio!x"]}
+
+
+@pytest.mark.parametrize(
+    ("panel", "key", "value", "where"),
+    [
+        ("Teleop!p02", "upButton", {"field": "forward", "value": 1}, "upButton.field"),
+        ("Teleop!p02", "speed", 3, "speed"),
+        ("3D!p05", "followMode", "follow-me", "followMode"),
+        (
+            "Plot!p10",
+            "paths",
+            [{"value": "/robot1/wrench.wrench.force.x", "enabled": "yes"}],
+            "paths[0].enabled",
+        ),
+        ("Publish!p01", "advancedView", 1, "advancedView"),
+    ],
+)
+def test_a_key_the_panel_does_not_read_or_a_value_of_another_type_is_named(
+    panel: str, key: str, value: Any, where: str
+) -> None:
+    layout = _clean()
+    layout["configById"][panel][key] = value
+    codes = _codes(layout, topic_types=POINTS)
+    assert codes["lichtblick-config"] == [f"configById.{panel}.{where}"]
+
+
+def test_a_teleop_that_never_publishes_is_named() -> None:
+    layout = _clean()
+    layout["configById"]["Teleop!p02"]["publishRate"] = 0
+    assert _codes(layout, topic_types=POINTS) == {
+        "lichtblick-config": ["configById.Teleop!p02.publishRate"]
+    }
+
+
+@pytest.mark.parametrize(
+    ("topic", "code"),
+    [
+        ("<robot>/cmd_vel", "ros-topic-name"),
+        ("robot1/cmd_vel", "ros-topic-name"),
+        ("/robot1//cmd_vel", "ros-topic-name"),
+    ],
+)
+def test_a_topic_that_is_no_full_ros2_name_is_named(topic: str, code: str) -> None:
+    layout = _clean()
+    layout["configById"]["Teleop!p02"]["topic"] = topic
+    assert "configById.Teleop!p02.topic" in _codes(layout, topic_types=POINTS)[code]
+
+
+@pytest.mark.parametrize(
+    ("path", "code"),
+    [
+        ("<robot>/wrench.wrench.force.x", "lichtblick-message-path"),
+        ("/robot1/wrench.wrench.", "lichtblick-message-path"),
+        ("robot1/wrench.wrench.force.x", "ros-topic-name"),
+    ],
+)
+def test_a_path_the_grammar_refuses_or_one_without_a_full_topic_is_named(
+    path: str, code: str
+) -> None:
+    layout = _clean()
+    layout["configById"]["Plot!p10"]["paths"][0]["value"] = path
+    found = _codes(layout, topic_types=POINTS)
+    assert found[code] == ["configById.Plot!p10.paths[0].value"]
+
+
+def test_a_plot_reference_line_is_a_number_not_a_path() -> None:
+    layout = _clean()
+    layout["configById"]["Plot!p10"]["paths"][0]["value"] = "0.5"
+    assert check_lichtblick(layout, topic_types=POINTS) == ()
+
+
+def test_a_title_on_a_panel_that_draws_its_own_toolbar_is_named() -> None:
+    layout = _clean()
+    layout["configById"]["RawMessages!p09"]["lichtblickPanelTitle"] = "audio (placeholder)"
+    assert _codes(layout, topic_types=POINTS) == {
+        "lichtblick-title-hidden": ["configById.RawMessages!p09.lichtblickPanelTitle"]
+    }
+
+
+def test_a_partial_publish_block_leaves_the_layout_modified() -> None:
+    layout = _clean()
+    del layout["configById"]["3D!p05"]["publish"]["poseEstimateXDeviation"]
+    assert _codes(layout, topic_types=POINTS) == {
+        "lichtblick-modified": ["configById.3D!p05.publish.poseEstimateXDeviation"]
+    }
+
+
+def test_a_point_cloud_without_its_colour_field_leaves_the_layout_modified() -> None:
+    layout = _clean()
+    del layout["configById"]["3D!p11"]["topics"]["/robot1/points"]["colorField"]
+    assert _codes(layout, topic_types=POINTS) == {
+        "lichtblick-modified": ["configById.3D!p11.topics./robot1/points.colorField"]
+    }
+
+
+def test_a_3d_panel_without_a_grid_is_named() -> None:
+    layout = _clean()
+    layout["configById"]["3D!p11"]["layers"] = {}
+    assert _codes(layout, topic_types=POINTS) == {"lichtblick-grid": ["configById.3D!p11.layers"]}
+
+
+@pytest.mark.parametrize(
+    ("value", "where"),
+    [
+        ("{}", "value"),
+        ("[1]", "value"),
+        ("not json", "value"),
+        (json.dumps({**JOINTS, "joint_names": [""]}), "value:joint_names"),
+        (json.dumps({**JOINTS, "points": []}), "value:points"),
+        (json.dumps({**JOINTS, "joint_names": ["a"]}), "value:points[0].positions"),
+        (json.dumps({k: v for k, v in JOINTS.items() if k != "header"}), "value:header"),
+        (json.dumps({**JOINTS, "speed": 1}), "value:speed"),
+    ],
+)
+def test_a_publish_panel_without_a_whole_meaningful_message_is_named(
+    value: str, where: str
+) -> None:
+    layout = _clean()
+    layout["configById"]["Publish!p01"]["value"] = value
+    assert _codes(layout, topic_types=POINTS) == {
+        "lichtblick-publish": [f"configById.Publish!p01.{where}"]
+    }
+
+
+def test_two_teleop_pads_on_one_topic_are_named() -> None:
+    layout = _clean()
+    layout["configById"]["Teleop!p04"]["topic"] = "/robot1/cmd_vel"
+    assert _codes(layout, topic_types=POINTS) == {
+        "lichtblick-teleop-topic": ["configById.Teleop!p04.topic"]
+    }
+
+
+def test_the_apps_default_click_topics_are_publishers_outside_the_namespace() -> None:
+    layout = _clean()
+    del layout["configById"]["3D!p11"]["publish"]
+    codes = _codes(layout, namespace="/robot1", topic_types=POINTS)
+    assert codes["namespace"] == [
+        "configById.3D!p11.publish.poseTopic",
+        "configById.3D!p11.publish.pointTopic",
+        "configById.3D!p11.publish.poseEstimateTopic",
+    ]
+    message = next(f.message for f in check_lichtblick(layout) if f.code == "namespace")
+    assert message == (
+        "the panel publishes on the app's default '/move_base_simple/goal', outside the "
+        "robot's namespace '/robot1'"
+    )
+
+
+def test_faults_show_a_strangers_key_escaped() -> None:
+    layout = copy.deepcopy(_clean())
+    layout["configById"]["Teleop!p02"]["\x1b[2J"] = 1
+    (fault,) = check_lichtblick(layout, topic_types=POINTS)
+    assert fault.location.path == "configById.Teleop!p02.\\x1b[2J"

@@ -1,0 +1,366 @@
+"""Every layout the project writes, for the shipped teams and the example robots, through the
+viewers' own rules (issue 26).
+
+Each test runs one family of rules over every file; a family today's writers still break is
+marked ``xfail(strict=True)`` with the issue's item as its reason, so that the writer's fix
+turns it into a pass (and the mark must then go). The files come from the command line, as a
+user gets them: ``teleop-ui layouts TEAM -o DIR [--format rviz]`` for every team in
+``rules/teams/`` and ``layouts --robot URDF --team TEAM`` for every robot in ``examples/``
+(and one with a real topic list whose scanner is a ``LaserScan``).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import functools
+import io
+import json
+import re
+from collections.abc import Iterator
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import pytest
+import yaml
+
+from solver import load_team, solve
+from solver.cli import main
+from solver.core.solution import Solution
+from solver.errors import Fault
+from solver.layouts import Profile, load_profile
+from solver.layouts.checks import check_lichtblick, check_rviz
+from solver.layouts.checks.rviz import robot_namespace
+from tests.conftest import ROOT, TEAMS
+
+EXAMPLES = ROOT / "examples"
+ROBOTS = sorted(path.stem for path in EXAMPLES.glob("*.urdf"))
+ROBOT_TEAMS = ("case1", "case2", "case3")
+# A real topic list (``name type`` lines) for the LIDAR robot: its scanner is a LaserScan.
+SCAN_TOPICS = (
+    "/diff_drive_lidar/scan sensor_msgs/msg/LaserScan\n"
+    "/diff_drive_lidar/cmd_vel geometry_msgs/msg/Twist\n"
+)
+
+
+@dataclass(frozen=True)
+class Written:
+    """One file the project wrote, with what the checks need to know about its robot."""
+
+    path: Path
+    solution: Solution
+    configuration: int
+    topics: dict[str, list[str]]  # real topics given with --topics: name -> [type]
+
+
+@functools.cache
+def _solution(team: str) -> Solution:
+    return solve(load_team(team))
+
+
+def _cli(*args: str | Path) -> str:
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        assert main([str(arg) for arg in args]) == 0
+    return out.getvalue()
+
+
+@pytest.fixture(scope="module")
+def written(tmp_path_factory: pytest.TempPathFactory) -> dict[tuple[str, str], list[Written]]:
+    """(group, format) -> every file the command line writes; group is teams or robots."""
+    root = tmp_path_factory.mktemp("layouts")
+    files: dict[tuple[str, str], list[Written]] = {}
+    for fmt in ("foxglove", "rviz"):
+        teams: list[Written] = []
+        for team_file in sorted(TEAMS.glob("*.yaml")):
+            solution = _solution(str(team_file))
+            out = root / fmt / team_file.stem
+            _cli("layouts", team_file, "-o", out, "--format", fmt)
+            for path in sorted(out.iterdir()):
+                number = int(re.findall(r"\d+", path.name)[0])
+                teams.append(Written(path, solution, number, {}))
+        files["teams", fmt] = teams
+        robots: list[Written] = []
+        suffix = "json" if fmt == "foxglove" else "rviz"
+        runs: list[tuple[str, str, Path | None]] = [
+            (robot, team, None) for robot in ROBOTS for team in ROBOT_TEAMS
+        ]
+        topics_file = root / "scan-topics.txt"
+        topics_file.write_text(SCAN_TOPICS, encoding="utf-8")
+        runs.append(("diff_drive_lidar", "case2", topics_file))
+        for robot, team, topics in runs:
+            solution = _solution(team)
+            out = root / fmt / f"{robot}-{team}{'-topics' if topics else ''}.{suffix}"
+            extra: list[str | Path] = ["--topics", topics] if topics else []
+            said = _cli("layouts", "--robot", EXAMPLES / f"{robot}.urdf", "--team", team,
+                        "-o", out, "--format", fmt, *extra)  # fmt: skip
+            number = int(re.search(r"configuration (\d+)", said).group(1))  # type: ignore[union-attr]
+            real: dict[str, list[str]] = {}
+            if topics:
+                real = {n: [t] for n, t in (line.split() for line in SCAN_TOPICS.splitlines())}
+            robots.append(Written(out, solution, number, real))
+        files["robots", fmt] = robots
+    return files
+
+
+def _components(written: Written) -> set[str]:
+    solution = written.solution
+    if written.configuration == solution.default_configuration:
+        return {c.name for ch in solution.rules.characteristics for c in ch.components}
+    configuration = next(c for c in solution.configurations if c.number == written.configuration)
+    return {component.name for component in configuration.components}
+
+
+def _topic_types(profile: Profile, written: Written, topics: list[str]) -> dict[str, list[str]]:
+    """Each topic's possible types: the real ones given, else the profile's for the component
+    whose topic template ends the same way (``.../camera/image_raw_2`` is a visual display)."""
+    types = dict(written.topics)
+    for topic in topics:
+        if topic in types:
+            continue
+        stem = re.sub(r"_\d+$", "", topic)
+        for spec in profile.panels:
+            tail = spec.topic.split("<robot>", 1)[-1]
+            if spec.types and stem.endswith(tail):
+                types[topic] = list(spec.types)
+                break
+    return types
+
+
+def _lichtblick_topics(layout: Any) -> list[str]:
+    topics: list[str] = []
+    for config in layout["configById"].values():
+        topics.extend(config.get("topics", {}))
+        for key in ("topic", "topicName", "topicPath"):
+            if isinstance(config.get(key), str):
+                topics.append(config[key])
+        if isinstance(config.get("imageMode"), dict) and "imageTopic" in config["imageMode"]:
+            topics.append(config["imageMode"]["imageTopic"])
+    return topics
+
+
+def _rviz_topics(document: Any) -> list[str]:
+    displays = document["Visualization Manager"]["Displays"]
+    return [d["Topic"]["Value"] for d in displays if isinstance(d.get("Topic"), dict)]
+
+
+def _pose_topics(profile: Profile, written: Written, document: Any) -> set[str]:
+    """Where the configuration's pose-goal components take goals, in the file's namespace."""
+    namespace = robot_namespace(document)
+    components = _components(written)
+    topics: set[str] = set()
+    for spec in profile.panels:
+        if spec.component in components and "geometry_msgs/PoseStamped" in spec.types:
+            tail = spec.topic.split("<robot>/", 1)[-1]
+            topics |= {f"{namespace}/{tail}"} if namespace else {tail, f"/{tail}"}
+    return topics
+
+
+@pytest.fixture(scope="module")
+def faults(written: dict[tuple[str, str], list[Written]]) -> dict[tuple[str, str], list[Fault]]:
+    """(group, format) -> every fault of every file, found once for all the tests."""
+    return {key: list(_check(files, key[1])) for key, files in written.items()}
+
+
+def _check(files: list[Written], fmt: str) -> Iterator[Fault]:
+    profile = load_profile()
+    for written in files:
+        text = written.path.read_text(encoding="utf-8")
+        if fmt == "foxglove":
+            layout = json.loads(text)
+            types = _topic_types(profile, written, _lichtblick_topics(layout))
+            found = check_lichtblick(layout, str(written.path), topic_types=types)
+        else:
+            # libyaml's loader where present: a thousand files read at PyYAML's pace are slow.
+            document = yaml.load(text, Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
+            types = _topic_types(profile, written, _rviz_topics(document))
+            pose = _pose_topics(profile, written, document)
+            found = check_rviz(document, str(written.path), topic_types=types, pose_topics=pose)
+        yield from found
+
+
+def _group(group: str, reason: str | None = None) -> Any:
+    marks = [pytest.mark.xfail(strict=True, reason=f"issue 26 {reason}")] if reason else []
+    return pytest.param(group, marks=marks, id=group)
+
+
+def _first(
+    faults: dict[tuple[str, str], list[Fault]], group: str, fmt: str, codes: tuple[str, ...]
+) -> list[str]:
+    """The first few faults of these codes, as a reader would see them."""
+    return [str(fault) for fault in faults[group, fmt] if fault.code in codes][:5]
+
+
+def test_every_group_has_files(written: dict[tuple[str, str], list[Written]]) -> None:
+    counts = {key: len(files) for key, files in written.items()}
+    assert counts["teams", "foxglove"] == counts["teams", "rviz"] > 1000
+    assert counts["robots", "foxglove"] == len(ROBOTS) * len(ROBOT_TEAMS) + 1
+
+
+# -- Lichtblick ------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("group", [_group("teams"), _group("robots")])
+def test_lichtblick_imports_every_layout_and_reads_every_key_of_the_right_type(
+    faults: dict[tuple[str, str], list[Fault]], group: str
+) -> None:
+    codes = ("lichtblick-import", "lichtblick-tree", "lichtblick-panel-type", "lichtblick-config")
+    assert _first(faults, group, "foxglove", codes) == []
+
+
+@pytest.mark.parametrize(
+    "group",
+    [_group("teams", "item 1: template topics <robot>/... are no ROS 2 names nor message paths"),
+     _group("robots")],
+)  # fmt: skip
+def test_every_lichtblick_topic_is_a_full_ros2_name_and_every_path_parses(
+    faults: dict[tuple[str, str], list[Fault]], group: str
+) -> None:
+    codes = ("ros-topic-name", "lichtblick-message-path")
+    assert _first(faults, group, "foxglove", codes) == []
+
+
+@pytest.mark.parametrize(
+    "group",
+    [_group("teams", "item 2: RawMessages placeholders show their path, not their title"),
+     _group("robots", "item 2: RawMessages placeholders show their path, not their title")],
+)  # fmt: skip
+def test_every_panel_title_is_shown(faults: dict[tuple[str, str], list[Fault]], group: str) -> None:
+    assert _first(faults, group, "foxglove", ("lichtblick-title-hidden",)) == []
+
+
+@pytest.mark.parametrize(
+    "group",
+    [_group("teams", "item 3: partial 3D publish blocks and panel configs the app completes"),
+     _group("robots", "item 3: partial 3D publish blocks and panel configs the app completes")],
+)  # fmt: skip
+def test_every_layout_opens_unmodified(
+    faults: dict[tuple[str, str], list[Fault]], group: str
+) -> None:
+    assert _first(faults, group, "foxglove", ("lichtblick-modified",)) == []
+
+
+@pytest.mark.parametrize(
+    "group",
+    [_group("teams", "item 4: Publish panels hold {}"),
+     _group("robots", "item 4: Publish panels hold {}")],
+)  # fmt: skip
+def test_every_publish_panel_holds_a_whole_sample_message(
+    faults: dict[tuple[str, str], list[Fault]], group: str
+) -> None:
+    assert _first(faults, group, "foxglove", ("lichtblick-publish",)) == []
+
+
+@pytest.mark.parametrize(
+    "group",
+    [_group("teams", "item 5: three Teleop panels drive one cmd_vel"),
+     _group("robots", "item 5: three Teleop panels drive one cmd_vel")],
+)  # fmt: skip
+def test_one_velocity_panel_drives_each_command_topic(
+    faults: dict[tuple[str, str], list[Fault]], group: str
+) -> None:
+    assert _first(faults, group, "foxglove", ("lichtblick-teleop-topic",)) == []
+
+
+@pytest.mark.parametrize(
+    "group",
+    [_group("teams", "item 6: 3D and Image panels publish on /clicked_point, /initialpose, ..."),
+     _group("robots", "item 6: 3D and Image panels publish on /clicked_point, /initialpose, ...")],
+)  # fmt: skip
+def test_no_lichtblick_panel_publishes_outside_the_robots_namespace(
+    faults: dict[tuple[str, str], list[Fault]], group: str
+) -> None:
+    assert _first(faults, group, "foxglove", ("namespace",)) == []
+
+
+@pytest.mark.parametrize(
+    "group",
+    [_group("teams", "item 7: 3D views have no grid"),
+     _group("robots", "item 7: 3D views have no grid")],
+)  # fmt: skip
+def test_every_3d_panel_has_a_reference_grid(
+    faults: dict[tuple[str, str], list[Fault]], group: str
+) -> None:
+    assert _first(faults, group, "foxglove", ("lichtblick-grid",)) == []
+
+
+# -- RViz2 -----------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "group",
+    [_group("teams", "item 7: no Window Geometry"), _group("robots", "item 7: no Window Geometry")],
+)
+def test_every_rviz_file_has_the_sections_rviz2_saves(
+    faults: dict[tuple[str, str], list[Fault]], group: str
+) -> None:
+    assert _first(faults, group, "rviz", ("rviz-file",)) == []
+
+
+@pytest.mark.parametrize("group", [_group("teams"), _group("robots")])
+def test_every_rviz_display_tool_and_view_is_one_rviz2_has(
+    faults: dict[tuple[str, str], list[Fault]], group: str
+) -> None:
+    assert _first(faults, group, "rviz", ("rviz-display", "rviz-view")) == []
+
+
+@pytest.mark.parametrize(
+    "group",
+    [_group("teams", "item 1: template topics <robot>/... are no ROS names"), _group("robots")],
+)
+def test_every_rviz_topic_is_a_ros2_name(
+    faults: dict[tuple[str, str], list[Fault]], group: str
+) -> None:
+    assert _first(faults, group, "rviz", ("ros-topic-name",)) == []
+
+
+@pytest.mark.parametrize(
+    "group",
+    [_group("teams", "item 7: disabled Marker placeholders on non-Marker topics"),
+     _group("robots", "item 7: a LaserScan shown as PointCloud2; Marker placeholders")],
+)  # fmt: skip
+def test_every_rviz_display_shows_its_topics_message_type(
+    faults: dict[tuple[str, str], list[Fault]], group: str
+) -> None:
+    assert _first(faults, group, "rviz", ("rviz-display-type",)) == []
+
+
+@pytest.mark.parametrize(
+    "group",
+    [_group("teams", "item 7: SetGoal publishes goal_pose in every configuration"),
+     _group("robots", "item 7: SetGoal publishes goal_pose in every configuration")],
+)  # fmt: skip
+def test_the_goal_tool_publishes_where_the_configurations_pose_component_listens(
+    faults: dict[tuple[str, str], list[Fault]], group: str
+) -> None:
+    assert _first(faults, group, "rviz", ("rviz-tool",)) == []
+
+
+@pytest.mark.parametrize(
+    "group",
+    [_group("teams"),
+     _group("robots", "item 7: robot_description is absolute in namespaced files")],
+)  # fmt: skip
+def test_rviz_robot_description_and_tools_lie_in_the_robots_namespace(
+    faults: dict[tuple[str, str], list[Fault]], group: str
+) -> None:
+    assert _first(faults, group, "rviz", ("namespace",)) == []
+
+
+def test_every_fault_found_belongs_to_one_of_the_tests_above(
+    faults: dict[tuple[str, str], list[Fault]],
+) -> None:
+    tested = {
+        "foxglove": {
+            "lichtblick-import", "lichtblick-tree", "lichtblick-panel-type", "lichtblick-config",
+            "ros-topic-name", "lichtblick-message-path", "lichtblick-title-hidden",
+            "lichtblick-modified", "lichtblick-publish", "lichtblick-teleop-topic", "namespace",
+            "lichtblick-grid",
+        },
+        "rviz": {
+            "rviz-file", "rviz-display", "rviz-view", "ros-topic-name", "rviz-display-type",
+            "rviz-tool", "namespace",
+        },
+    }  # fmt: skip
+    for (_group, fmt), found in faults.items():
+        assert {fault.code for fault in found} <= tested[fmt]
