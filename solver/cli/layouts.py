@@ -6,7 +6,7 @@ import argparse
 import sys
 from typing import Any
 
-from solver.cli._common import add_rules, load_team_argument, write
+from solver.cli._common import add_profile, add_rules, load_team_argument, write
 
 
 def register(subparsers: Any) -> None:
@@ -47,17 +47,22 @@ def register(subparsers: Any) -> None:
     parser.add_argument(
         "-o", "--output", metavar="DIR", required=True, help="directory for the layout files"
     )
+    # The targets' table (solver.layouts.targets) checks the name when the command runs: its
+    # import would slow every start of the command line.
     parser.add_argument(
         "--format",
-        choices=("foxglove", "rviz"),
+        metavar="TARGET",
         default="foxglove",
-        help="foxglove: Foxglove / Lichtblick layout JSON (default); rviz: RViz2 .rviz files",
+        help="the operator tool: foxglove (Foxglove / Lichtblick layout JSON, the default) or "
+        "rviz (RViz2 .rviz files)",
     )
     parser.add_argument(
-        "--profile",
+        "--presentation",
         metavar="FILE",
-        help="presentation profile (default: the shipped rules/presentation.yaml)",
+        help="which panel presents each UI component (default: the shipped "
+        "rules/presentation.yaml)",
     )
+    add_profile(parser)
     parser.add_argument(
         "--preview",
         action="store_true",
@@ -69,7 +74,7 @@ def register(subparsers: Any) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from solver.core.solution import solve
-    from solver.layouts import load_profile, write_layouts
+    from solver.layouts import load_presentation, write_layouts
 
     if args.preview and args.format != "foxglove":
         from solver.errors import InputError
@@ -77,19 +82,22 @@ def run(args: argparse.Namespace) -> int:
         raise InputError.at("--preview", "previews are drawn from foxglove layouts only")
     if args.robot:
         return _robot(args)
-    if args.topics or args.bag:
+    if args.topics or args.bag or args.profile:
         from solver.errors import InputError
 
-        raise InputError.at("--topics" if args.topics else "--bag", "needs --robot URDF")
+        given = "--topics" if args.topics else "--bag" if args.bag else "--profile"
+        raise InputError.at(given, "needs --robot URDF")
     if args.team is None:
         from solver.errors import InputError
 
         raise InputError.at("TEAM.yaml", "a team is needed (or --robot URDF --team TEAM)")
     team = load_team_argument(args.team, args.rules)
     solution = solve(team)
-    # A user's profile is checked against the rule set; the shipped one serves every rule set.
-    profile = load_profile(args.profile, solution.rules if args.profile else None)
-    paths = write_layouts(solution, profile, args.output, args.format)
+    # A user's presentation is checked against the rule set; the shipped one serves every one.
+    presentation = load_presentation(
+        args.presentation, solution.rules if args.presentation else None
+    )
+    paths = write_layouts(solution, presentation, args.output, args.format)
     write(f"wrote {len(paths)} layouts to {args.output}\n")
     if args.preview:
         import json
@@ -107,87 +115,57 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _robot(args: argparse.Namespace) -> int:
-    import json
-    from pathlib import Path
-
-    from solver.core.assignment import assign
     from solver.core.solution import solve
     from solver.errors import InputError
     from solver.files.atomic import write_atomic
     from solver.identify import identify_urdf
+    from solver.identify.combinations import combinations
+    from solver.identify.profile import load_profile
     from solver.identify.readers.safexml import read_bytes
-    from solver.layouts import foxglove_layout, load_profile, validate_foxglove
-    from solver.layouts.rviz import rviz_layout, rviz_text, validate_rviz
+    from solver.layouts import load_presentation
+    from solver.layouts.robot import robot_layout
 
     if not args.robot_team:
         raise InputError.at("--robot", "--robot needs --team TEAM.yaml")
     solution = solve(load_team_argument(args.robot_team, args.rules))
+    profile = load_profile(args.profile)
     identification = identify_urdf(
-        read_bytes(args.robot, display=args.robot), file=args.robot, rules=solution.rules
+        read_bytes(args.robot, display=args.robot),
+        file=args.robot,
+        rules=solution.rules,
+        profile=profile,
     )
     # The robot's first control mode and sensor type: the combination it starts in.
-    combination: dict[str, str | int] = {"sensor_count": max(1, identification.sensor_count)}
-    if identification.kinematic_type:
-        combination["kinematic_type"] = identification.kinematic_type
-    if identification.motion_controls:
-        combination["motion_control"] = identification.motion_controls[0].motion_control
-    if identification.sensor_types:
-        combination["sensor_type"] = identification.sensor_types[0]
-    assignment = assign(solution, combination)
-    profile = load_profile(args.profile, solution.rules if args.profile else None)
-    namespace = "/" + identification.robot
-    # The robot's own number of sensor tiles: g(i) of its sensor count.
-    tile_count = None
-    if assignment.configuration is not None:
-        count_position = next(
-            position
-            for position, c in enumerate(solution.rules.characteristics)
-            if c.kind == "integer"
-        )
-        tile_count = assignment.configuration.components[count_position].clusters(
-            int(combination["sensor_count"])
-        )
-    # The robot's real topics, read as `identify` reads them, in place of the templates.
-    real: dict[tuple[str, int], str] = {}
-    if args.topics or args.bag:
-        from solver.layouts.foxglove import panel_entries
-        from solver.layouts.topics import match_topics
-
-        if args.topics:
-            from solver.identify.topics import read_topic_list
-
-            source, topics = args.topics, read_topic_list(args.topics)
-        else:
-            from solver.identify.readers.bags import read_bag_topics
-
-            source, topics = args.bag, read_bag_topics(args.bag)
-        entries = panel_entries(solution, assignment.configuration, profile, tile_count)
-        real, warnings = match_topics(entries, topics, source)
-        for warning in warnings:
-            sys.stderr.write(f"warning: {warning}\n")
-    if args.format == "foxglove":
-        layout = foxglove_layout(
-            solution,
-            assignment.configuration,
-            profile,
-            robot=namespace,
-            tile_count=tile_count,
-            topics=real,
-        )
-        validate_foxglove(layout, args.output)
-        text = json.dumps(layout, indent=2, sort_keys=True) + "\n"
-    else:
-        text = rviz_text(
-            rviz_layout(
-                solution,
-                assignment.configuration,
-                profile,
-                robot=namespace,
-                tile_count=tile_count,
-                topics=real,
-            )
-        )
-        validate_rviz(text, args.output)
-    write_atomic(Path(args.output), text)
+    assignment = combinations(identification, solution, profile)[0].assignment
+    presentation = load_presentation(
+        args.presentation, solution.rules if args.presentation else None
+    )
+    source, topics = _robot_topics(args)
+    layout = robot_layout(
+        solution,
+        assignment,
+        presentation,
+        args.format,
+        robot="/" + identification.robot,
+        topics=topics,
+        topics_source=source,
+        file=args.output,
+    )
+    for warning in layout.warnings:
+        sys.stderr.write(f"warning: {warning}\n")
+    write_atomic(args.output, layout.text)
     write(f"{identification.robot}: configuration {assignment.number}; wrote {args.output}\n")
     return 0
+
+
+def _robot_topics(args: argparse.Namespace) -> tuple[str, Any]:
+    """The robot's real topics, read as `identify` reads them (``None``: the templates)."""
+    if args.topics:
+        from solver.identify.topics import read_topic_list
+
+        return args.topics, read_topic_list(args.topics)
+    if args.bag:
+        from solver.identify.readers.bags import read_bag_topics
+
+        return args.bag, read_bag_topics(args.bag)
+    return "", None

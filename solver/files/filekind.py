@@ -6,7 +6,7 @@ team, ``count`` reads a rule set as its whole design space, and ``solve`` (throu
 rule set's fields as unknown team fields. Decided by the top-level keys, in this order:
 
 1. ``team:`` -> a team (whatever else it has: the team reader reports the rest);
-   ``profile: presentation`` -> a presentation profile (``teleop-ui layouts --profile``);
+   ``profile: presentation`` -> a presentation profile (``teleop-ui layouts --presentation``);
 2. ``characteristics:`` -> an identification profile when it also has a profile-only section
    (``patterns``, ``structures``, ...), else a rule set;
 3. ``rules:`` -> a team whose ``team:`` is missing (the team reader says so);
@@ -67,8 +67,14 @@ _INSTEAD: dict[tuple[FileKind, FileKind], str] = {
     ("profile", "team"): "pass a team file; a profile is for `identify --profile`",
     ("team", "rules"): "pass a rule set (a file with 'characteristics:')",
     ("profile", "rules"): "pass a rule set; a profile is for `identify --profile`",
-    ("presentation", "team"): "pass a team file; a presentation profile is for `layouts --profile`",
-    ("presentation", "rules"): "pass a rule set; a presentation profile is for `layouts --profile`",
+    (
+        "presentation",
+        "team",
+    ): "pass a team file; a presentation profile is for `layouts --presentation`",
+    (
+        "presentation",
+        "rules",
+    ): "pass a rule set; a presentation profile is for `layouts --presentation`",
 }
 
 

@@ -1,14 +1,15 @@
 """Layouts an operator tool can open, one per UI configuration (issue 17).
 
 ==================  ===============================================================
-``profile``         the presentation profile: component -> panel, topic template
+``presentation``    the presentation: component -> panel, topic template
 ``tiling``          the sensor-count arrangement as a number of tiles; the split tree
 ``foxglove``        Foxglove / Lichtblick layout JSON; its validation
 ``rviz``            RViz2 ``.rviz`` YAML; its validation
+``targets``         the table of targets (foxglove, rviz): extension, how made and checked
 ``writer``          writing every configuration's layout, validated first
+``robot``           one robot's layout under its namespace, fed by its real topics
 ``topics``          a robot's real topics in place of the templates
 ``preview``         a layout's panel tree as an SVG thumbnail
-``live``            naming the active configuration's layout in ``watch`` events
 ==================  ===============================================================
 
 Not here: solving (:mod:`solver.core.solution`); UVL export (:mod:`solver.reporting.uvl`).
@@ -22,17 +23,17 @@ from solver.layouts.foxglove import (
     layout_filename,
     validate_foxglove,
 )
-from solver.layouts.profile import PanelSpec, Profile, load_profile
+from solver.layouts.presentation import PanelSpec, Presentation, load_presentation
 from solver.layouts.rviz import rviz_layout, validate_rviz
 from solver.layouts.writer import write_layouts
 
 __all__ = [
     "LayoutError",
     "PanelSpec",
-    "Profile",
+    "Presentation",
     "foxglove_layout",
     "layout_filename",
-    "load_profile",
+    "load_presentation",
     "rviz_layout",
     "validate_foxglove",
     "validate_rviz",

@@ -5,7 +5,7 @@ panel id or ``{direction, first, second, splitPercentage}``. Panel ids are numbe
 order, so the same configuration always gives the same bytes. Teleop panels publish only while
 a button is held (the viewer stops on release); no panel publishes on its own.
 
-Not here: the component -> panel mapping (:mod:`solver.layouts.profile`, data).
+Not here: the component -> panel mapping (:mod:`solver.layouts.presentation`, data).
 """
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ from typing import Any
 from solver.core.partition import Configuration
 from solver.core.solution import Solution
 from solver.errors import Fault, Location, SolverError
-from solver.layouts.profile import PANEL_TYPES, PanelSpec, Profile
+from solver.layouts.presentation import PANEL_TYPES, PanelSpec, Presentation
 from solver.layouts.tiling import split_tree, tiles
 
 __all__ = [
@@ -41,7 +41,7 @@ def layout_filename(number: int, *, default: bool = False, extension: str = "jso
 def panel_entries(
     solution: Solution,
     configuration: Configuration | None,
-    profile: Profile,
+    profile: Presentation,
     tile_count: int | None = None,
 ) -> list[tuple[PanelSpec, int]]:
     """Each panel spec of ``configuration`` and its number of tiles, in panel order.
@@ -82,7 +82,7 @@ def template_topic(spec: PanelSpec, robot: str, tile: int, count: int) -> str:
 def foxglove_layout(
     solution: Solution,
     configuration: Configuration | None,
-    profile: Profile,
+    profile: Presentation,
     *,
     robot: str = "<robot>",
     tile_count: int | None = None,

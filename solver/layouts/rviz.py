@@ -7,7 +7,7 @@ late RViz still gets the model. RViz2 has no display for velocity commands, join
 audio: such a component gets a disabled ``Marker`` display named as a placeholder, never a
 silent drop.
 
-Not here: the component -> panel mapping (:mod:`solver.layouts.profile`).
+Not here: the component -> panel mapping (:mod:`solver.layouts.presentation`).
 """
 
 from __future__ import annotations
@@ -22,7 +22,7 @@ from solver.core.solution import Solution
 from solver.errors import Fault, Location
 from solver.files.yamlio import parse_document
 from solver.layouts.foxglove import LayoutError, panel_entries, template_topic
-from solver.layouts.profile import PanelSpec, Profile
+from solver.layouts.presentation import PanelSpec, Presentation
 
 __all__ = ["REQUIRED_KEYS", "rviz_layout", "rviz_text", "validate_rviz"]
 
@@ -72,7 +72,7 @@ def _display(spec: PanelSpec, topic: str, tile: int, count: int) -> dict[str, An
 def rviz_layout(
     solution: Solution,
     configuration: Configuration | None,
-    profile: Profile,
+    profile: Presentation,
     *,
     robot: str = "<robot>",
     tile_count: int | None = None,

@@ -15,7 +15,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from solver.errors import Fault, Location
-from solver.layouts.profile import PanelSpec
+from solver.layouts.presentation import PanelSpec
 from solver.ros.names import Topic, normalise_type
 
 __all__ = ["is_command", "match_topics"]

@@ -317,13 +317,13 @@ _FOLD_THUMBNAILS = 12
 
 def _thumbnails(solution: Solution) -> str:
     """One SVG preview of each configuration's Foxglove layout (issue 17), capped and folded."""
-    from solver.layouts import foxglove_layout, layout_filename, load_profile
+    from solver.layouts import foxglove_layout, layout_filename, load_presentation
     from solver.layouts.preview import preview_svg
     from solver.layouts.tiling import tiles
 
     e = html.escape
     # The shipped profile serves every rule set: a component it omits is a placeholder panel.
-    profile = load_profile()
+    profile = load_presentation()
     default_file = layout_filename(solution.default_configuration, default=True)
     chosen: list[tuple[str, Configuration | None]] = [
         (f"default configuration ({default_file})", None)

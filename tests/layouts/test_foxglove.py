@@ -13,16 +13,16 @@ from solver.layouts import (
     LayoutError,
     foxglove_layout,
     layout_filename,
-    load_profile,
+    load_presentation,
     validate_foxglove,
     write_layouts,
 )
-from solver.layouts.profile import ProfileError
+from solver.layouts.presentation import PresentationError
 
 
 def test_layouts_writes_one_file_per_configuration_plus_the_default(tmp_path: Path) -> None:
     solution = solve(load_team("case1"))
-    paths = write_layouts(solution, load_profile(), tmp_path)
+    paths = write_layouts(solution, load_presentation(), tmp_path)
     assert [path.name for path in paths] == [
         "config-001.json",
         "config-002.json",
@@ -38,8 +38,8 @@ def test_layouts_writes_one_file_per_configuration_plus_the_default(tmp_path: Pa
 
 def test_layouts_are_the_same_bytes_on_every_run(tmp_path: Path) -> None:
     solution = solve(load_team("case3"))
-    first = write_layouts(solution, load_profile(), tmp_path / "a")
-    second = write_layouts(solution, load_profile(), tmp_path / "b")
+    first = write_layouts(solution, load_presentation(), tmp_path / "a")
+    second = write_layouts(solution, load_presentation(), tmp_path / "b")
     assert [p.read_bytes() for p in first] == [p.read_bytes() for p in second]
 
 
@@ -53,13 +53,13 @@ def test_sensor_clusters_become_tiles_of_the_sensor_panel() -> None:
         and c.components[3].name != "individual"
         and c.components[2].name == "point cloud"
     )
-    layout = foxglove_layout(solution, configuration, load_profile())
+    layout = foxglove_layout(solution, configuration, load_presentation())
     assert sum(1 for key in layout["configById"] if key.startswith("3D!")) == 5
 
 
 def test_teleop_panel_publishes_to_a_topic_template_only_while_held() -> None:
     solution = solve(load_team("case1"))
-    layout = foxglove_layout(solution, solution.configurations[0], load_profile())
+    layout = foxglove_layout(solution, solution.configurations[0], load_presentation())
     teleop = layout["configById"]["Teleop!p01"]
     assert teleop["topic"] == "<robot>/cmd_vel"
     assert teleop["foxglovePanelTitle"] == "Flight"
@@ -68,7 +68,7 @@ def test_teleop_panel_publishes_to_a_topic_template_only_while_held() -> None:
 def test_audio_gets_a_titled_placeholder_panel_not_a_silent_drop() -> None:
     solution = solve(load_team("case2"))
     audio = next(c for c in solution.configurations if c.components[2].name == "audio")
-    layout = foxglove_layout(solution, audio, load_profile())
+    layout = foxglove_layout(solution, audio, load_presentation())
     titles = [config["foxglovePanelTitle"] for config in layout["configById"].values()]
     assert any(title.startswith("audio") and "placeholder" in title for title in titles)
 
@@ -94,20 +94,29 @@ def test_validation_reports_orphan_configs_and_bad_splits() -> None:
 def test_profile_with_unknown_component_and_panel_is_a_located_error(tmp_path: Path) -> None:
     path = tmp_path / "p.yaml"
     path.write_text("profile: presentation\ncomponents:\n  smell:\n    panel: Nose\n    topic: x\n")
-    with pytest.raises(ProfileError) as caught:
-        load_profile(path, solve(load_team("case1")).rules)
+    with pytest.raises(PresentationError) as caught:
+        load_presentation(path, solve(load_team("case1")).rules)
     message = str(caught.value)
     assert f"{path}:3:3: components.smell: unknown component 'smell'" in message
     assert "unknown panel 'Nose'" in message
 
 
-def test_layouts_command_exits_2_on_an_unusable_profile(
+def test_layouts_command_exits_2_on_an_unusable_presentation(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     path = tmp_path / "p.yaml"
     path.write_text("components: [1]\n")
-    assert main(["layouts", "case1", "-o", str(tmp_path / "out"), "--profile", str(path)]) == 2
+    out = str(tmp_path / "out")
+    assert main(["layouts", "case1", "-o", out, "--presentation", str(path)]) == 2
     assert "components" in capsys.readouterr().err
+
+
+def test_an_identification_profile_for_layouts_needs_a_robot(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    out = str(tmp_path / "out")
+    assert main(["layouts", "case1", "-o", out, "--profile", "rules/identification.yaml"]) == 2
+    assert "--profile: needs --robot URDF" in capsys.readouterr().err
 
 
 def test_layout_filename_marks_the_default_configuration() -> None:
@@ -119,7 +128,7 @@ def test_rviz_layouts_load_as_yaml_with_every_display_key(tmp_path: Path) -> Non
 
     from solver.layouts.rviz import REQUIRED_KEYS
 
-    paths = write_layouts(solve(load_team("case2")), load_profile(), tmp_path, "rviz")
+    paths = write_layouts(solve(load_team("case2")), load_presentation(), tmp_path, "rviz")
     assert paths[-1].name == "config-019-default.rviz"
     for path in paths:
         displays = yaml.safe_load(path.read_text())["Visualization Manager"]["Displays"]
@@ -130,7 +139,7 @@ def test_rviz_robot_description_is_transient_local_and_sensors_best_effort() -> 
     from solver.layouts import rviz_layout
 
     solution = solve(load_team("case1"))
-    displays = rviz_layout(solution, solution.configurations[0], load_profile())[
+    displays = rviz_layout(solution, solution.configurations[0], load_presentation())[
         "Visualization Manager"
     ]["Displays"]
     model = next(d for d in displays if d["Name"] == "RobotModel")
@@ -143,7 +152,7 @@ def test_rviz_gives_a_disabled_placeholder_display_to_velocity_control() -> None
     from solver.layouts import rviz_layout
 
     solution = solve(load_team("case1"))
-    displays = rviz_layout(solution, solution.configurations[0], load_profile())[
+    displays = rviz_layout(solution, solution.configurations[0], load_presentation())[
         "Visualization Manager"
     ]["Displays"]
     flight = next(d for d in displays if d["Name"].startswith("Flight"))

@@ -5,14 +5,14 @@ from __future__ import annotations
 from pathlib import Path
 
 from solver import load_team, solve
-from solver.layouts import foxglove_layout, load_profile
+from solver.layouts import foxglove_layout, load_presentation
 from solver.layouts.preview import preview_html, preview_svg
 from tests.layouts.chromium import painted_colours
 
 
 def test_preview_draws_one_labelled_rectangle_per_panel() -> None:
     solution = solve(load_team("case1"))
-    layout = foxglove_layout(solution, solution.configurations[0], load_profile())
+    layout = foxglove_layout(solution, solution.configurations[0], load_presentation())
     svg = preview_svg(layout)
     assert svg.count("<rect") == len(layout["configById"])
     assert "Teleop: Flight" in svg
@@ -20,7 +20,7 @@ def test_preview_draws_one_labelled_rectangle_per_panel() -> None:
 
 def test_preview_page_screenshot_in_headless_chromium_is_not_blank(tmp_path: Path) -> None:
     solution = solve(load_team("case1"))
-    profile = load_profile()
+    profile = load_presentation()
     page = tmp_path / "preview.html"
     page.write_text(
         preview_html(

@@ -12,8 +12,8 @@ from typing import Any
 import yaml
 
 from solver import load_team, solve
-from solver.layouts import Profile, foxglove_layout, load_profile
-from solver.layouts.profile import PanelSpec
+from solver.layouts import Presentation, foxglove_layout, load_presentation
+from solver.layouts.presentation import PanelSpec
 from solver.layouts.rviz import rviz_layout, rviz_text
 
 # Lichtblick-Suite/lichtblick packages/suite-base/src/providers/CurrentLayoutProvider/
@@ -105,15 +105,15 @@ PUBLISH_KEYS = {
 PLOT_PATH_KEYS = {"value", "enabled", "timestampMethod", "color", "label", "showLine", "lineSize"}
 
 
-def _every_panel_profile() -> Profile:
+def _every_panel_profile() -> Presentation:
     # One component per panel type, so each type's config is generated and checked.
-    base = load_profile()
+    base = load_presentation()
     swap = {
         "audio": PanelSpec("audio", "Indicator", "<robot>/a", ()),
         "spherical display": PanelSpec("spherical display", "RawMessages", "<robot>/s", ()),
     }
     panels = [swap.get(spec.component, spec) for spec in base.panels]
-    return Profile("<test>", tuple(panels))
+    return Presentation("<test>", tuple(panels))
 
 
 def _leaves_and_splits(node: Any, splits: list[dict[str, Any]]) -> None:
@@ -194,7 +194,7 @@ RVIZ_GLOBAL_KEYS = {"Background Color", "Fixed Frame", "Frame Rate"}
 
 def test_rviz_files_use_only_keys_a_real_rviz2_file_uses() -> None:
     solution = solve(load_team("case3"))
-    document = yaml.safe_load(rviz_text(rviz_layout(solution, None, load_profile())))
+    document = yaml.safe_load(rviz_text(rviz_layout(solution, None, load_presentation())))
     manager = document["Visualization Manager"]
     assert set(manager) <= RVIZ_TOP_KEYS
     assert set(manager["Global Options"]) <= RVIZ_GLOBAL_KEYS

@@ -7,8 +7,8 @@ from pathlib import Path
 from solver import load_team, solve
 from solver.cli import main
 from solver.layouts.foxglove import foxglove_layout
+from solver.layouts.presentation import load_presentation
 from solver.layouts.preview import COLOURS
-from solver.layouts.profile import load_profile
 from solver.layouts.tiling import MAX_TILES, tiles
 from solver.reporting.report import MAX_THUMBNAILS, render_html
 from tests.layouts.chromium import painted_colours
@@ -68,7 +68,7 @@ def test_a_layout_of_100000_sensor_clusters_is_capped_at_max_tiles(tmp_path: Pat
     (configuration,) = solution.configurations
     assert configuration.clusters(3)[1] == 100000  # what the rule set asks for
     assert tiles(solution.rules, configuration) == MAX_TILES
-    layout = foxglove_layout(solution, configuration, load_profile())
+    layout = foxglove_layout(solution, configuration, load_presentation())
     assert len(layout["configById"]) == MAX_TILES + 1  # the control panel and the tiles
     section = render_html(solution).split('id="layouts"', 1)[1]
     assert "not drawn" not in section

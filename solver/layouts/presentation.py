@@ -1,7 +1,10 @@
-"""The presentation profile: which viewer panel presents each UI component, as data.
+"""The presentation: which viewer panel presents each UI component, as data.
 
-The shipped default is ``rules/presentation.yaml``; a user passes their own copy with
-``--profile``. Every problem in a profile is reported at once, located (file:line:col).
+The shipped default is ``rules/presentation.yaml`` (a YAML file marked ``profile:
+presentation``); a user passes their own copy with ``layouts --presentation``. (An
+*identification profile*, :mod:`solver.identify.profile`, is another thing: how robots are
+read; ``--profile`` names that one on every command.) Every problem in a presentation is
+reported at once, located (file:line:col).
 Not here: building layouts (:mod:`solver.layouts.foxglove`).
 """
 
@@ -18,18 +21,18 @@ from solver.files.yamlio import load_document
 __all__ = [
     "PANEL_TYPES",
     "PanelSpec",
-    "Profile",
-    "ProfileError",
-    "default_profile_path",
-    "load_profile",
+    "Presentation",
+    "PresentationError",
+    "default_presentation_path",
+    "load_presentation",
 ]
 
 # The Foxglove / Lichtblick panel types a generated layout may use (their registered ids).
 PANEL_TYPES = ("3D", "Image", "Indicator", "Plot", "Publish", "RawMessages", "Teleop")
 
 
-class ProfileError(SolverError, ValueError):
-    """A presentation profile is malformed or names what the rules or the viewer do not know."""
+class PresentationError(SolverError, ValueError):
+    """A presentation is malformed or names what the rules or the viewer do not know."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -44,14 +47,14 @@ class PanelSpec:
 
 
 @dataclass(frozen=True, slots=True)
-class Profile:
+class Presentation:
     """Component name -> panel, in file order."""
 
     file: str
     panels: tuple[PanelSpec, ...]
 
     def spec(self, component: str) -> PanelSpec:
-        """The component's panel; a titled placeholder for a component the profile omits."""
+        """The component's panel; a titled placeholder for a component the presentation omits."""
         for spec in self.panels:
             if spec.component == component:
                 return spec
@@ -59,13 +62,13 @@ class Profile:
         return PanelSpec(component, "RawMessages", f"<robot>/{_slug(component)}", (), True)
 
 
-def default_profile_path() -> Path:
+def default_presentation_path() -> Path:
     return Path(__file__).resolve().parent.parent / "rules" / "presentation.yaml"
 
 
-def load_profile(path: str | Path | None = None, rules: RuleSet | None = None) -> Profile:
-    """Read a profile; with ``rules``, a component the rule set lacks is a located error."""
-    document = load_document(path if path is not None else default_profile_path())
+def load_presentation(path: str | Path | None = None, rules: RuleSet | None = None) -> Presentation:
+    """Read a presentation; with ``rules``, a component the rule set lacks is a located error."""
+    document = load_document(path if path is not None else default_presentation_path())
     reader = Reader(document)
     panels: list[PanelSpec] = []
     known: set[str] | None = None
@@ -97,8 +100,8 @@ def load_profile(path: str | Path | None = None, rules: RuleSet | None = None) -
             types = tuple(str(item) for item in raw_types) if isinstance(raw_types, list) else ()
             panels.append(PanelSpec(name, panel, topic, types, entry.get("placeholder") is True))
     if reader.faults:
-        raise ProfileError(reader.faults)
-    return Profile(document.file, tuple(panels))
+        raise PresentationError(reader.faults)
+    return Presentation(document.file, tuple(panels))
 
 
 def _slug(name: str) -> str:
