@@ -287,15 +287,16 @@ class Studio:
 
     def layouts_zip(self, pairs: Pairs) -> bytes:
         """``teleop-ui layouts`` for Foxglove/Lichtblick and for RViz2, one zip of both."""
-        from solver.layouts import load_profile, write_layouts
+        from solver.layouts import load_presentation, write_layouts
+        from solver.layouts.targets import TARGETS
 
         solution = self.solution(self.chosen(pairs), listed=True)
-        profile = load_profile()
+        presentation = load_presentation()
         buffer = io.BytesIO()
         with zipfile.ZipFile(buffer, "w", zipfile.ZIP_DEFLATED) as archive:
-            for fmt in ("foxglove", "rviz"):
+            for fmt in TARGETS:
                 folder = self.workspace.private_folder("layouts")
-                for path in write_layouts(solution, profile, folder, fmt):
+                for path in write_layouts(solution, presentation, folder, fmt):
                     # A fixed date: the same team gives the same bytes.
                     info = zipfile.ZipInfo(f"{fmt}/{path.name}", date_time=(2017, 3, 14, 0, 0, 0))
                     info.compress_type = zipfile.ZIP_DEFLATED
