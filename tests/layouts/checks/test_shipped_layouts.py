@@ -28,7 +28,7 @@ from solver import load_team, solve
 from solver.cli import main
 from solver.core.solution import Solution
 from solver.errors import Fault
-from solver.layouts import Profile, load_profile
+from solver.layouts import Presentation, load_presentation
 from solver.layouts.checks import check_lichtblick, check_rviz
 from solver.layouts.checks.rviz import robot_namespace
 from tests.conftest import ROOT, TEAMS
@@ -111,15 +111,17 @@ def _components(written: Written) -> set[str]:
     return {component.name for component in configuration.components}
 
 
-def _topic_types(profile: Profile, written: Written, topics: list[str]) -> dict[str, list[str]]:
-    """Each topic's possible types: the real ones given, else the profile's for the component
+def _topic_types(
+    presentation: Presentation, written: Written, topics: list[str]
+) -> dict[str, list[str]]:
+    """Each topic's possible types: the real ones given, else the presentation's for the component
     whose topic template ends the same way (``.../camera/image_raw_2`` is a visual display)."""
     types = dict(written.topics)
     for topic in topics:
         if topic in types:
             continue
         stem = re.sub(r"_\d+$", "", topic)
-        for spec in profile.panels:
+        for spec in presentation.panels:
             tail = spec.topic.split("<robot>", 1)[-1]
             if spec.types and stem.endswith(tail):
                 types[topic] = list(spec.types)
@@ -144,12 +146,12 @@ def _rviz_topics(document: Any) -> list[str]:
     return [d["Topic"]["Value"] for d in displays if isinstance(d.get("Topic"), dict)]
 
 
-def _pose_topics(profile: Profile, written: Written, document: Any) -> set[str]:
+def _pose_topics(presentation: Presentation, written: Written, document: Any) -> set[str]:
     """Where the configuration's pose-goal components take goals, in the file's namespace."""
     namespace = robot_namespace(document)
     components = _components(written)
     topics: set[str] = set()
-    for spec in profile.panels:
+    for spec in presentation.panels:
         if spec.component in components and "geometry_msgs/PoseStamped" in spec.types:
             tail = spec.topic.split("<robot>/", 1)[-1]
             topics |= {f"{namespace}/{tail}"} if namespace else {tail, f"/{tail}"}
@@ -163,18 +165,18 @@ def faults(written: dict[tuple[str, str], list[Written]]) -> dict[tuple[str, str
 
 
 def _check(files: list[Written], fmt: str) -> Iterator[Fault]:
-    profile = load_profile()
+    presentation = load_presentation()
     for written in files:
         text = written.path.read_text(encoding="utf-8")
         if fmt == "foxglove":
             layout = json.loads(text)
-            types = _topic_types(profile, written, _lichtblick_topics(layout))
+            types = _topic_types(presentation, written, _lichtblick_topics(layout))
             found = check_lichtblick(layout, str(written.path), topic_types=types)
         else:
             # libyaml's loader where present: a thousand files read at PyYAML's pace are slow.
             document = yaml.load(text, Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
-            types = _topic_types(profile, written, _rviz_topics(document))
-            pose = _pose_topics(profile, written, document)
+            types = _topic_types(presentation, written, _rviz_topics(document))
+            pose = _pose_topics(presentation, written, document)
             found = check_rviz(document, str(written.path), topic_types=types, pose_topics=pose)
         yield from found
 
