@@ -12,6 +12,7 @@ import io
 import json
 import os
 import signal
+import socket
 import subprocess
 import sys
 import time
@@ -54,14 +55,16 @@ def assert_located_refusal(result: subprocess.CompletedProcess[str], file: str) 
 
 
 @pytest.mark.parametrize("device", ["/dev/zero", "/dev/urandom"])
-def test_batch_refuses_a_rules_file_that_never_ends(tmp_path: Path, device: str) -> None:
+def test_batch_refuses_a_rules_file_that_never_ends_without_reading_it(
+    tmp_path: Path, device: str
+) -> None:
     team_file(tmp_path, rules=device)
     result = run_cli("batch", tmp_path / "team.yaml", "-o", tmp_path / "out")
     assert result.returncode == 1, result.stderr  # the team failed; the batch itself ran
     assert "Traceback" not in result.stderr
     assert "internal error" not in result.stderr
     assert f"cannot use rules file '{device}'" in result.stderr
-    assert "larger than 16777216 bytes" in result.stderr
+    assert "is a character device, not a YAML file" in result.stderr
 
 
 # ---- tracebacks that were ----------------------------------------------------------------
@@ -205,58 +208,150 @@ def test_a_15_megabyte_flow_style_line_is_refused_before_it_is_built(tmp_path: P
 DEEP_YAML = {"block": "- " * 50_000 + "x\n", "flow": "[" * 1_000_000 + "\n"}
 
 
-# Every way a YAML file reaches a reader: {deep} is the hostile file, beside a valid team
+# Every way a YAML file reaches a reader: {file} is the hostile file, beside a valid team
 # ({team}, rules.yaml) and a folder of one robot ({robots}, {urdf}).
 YAML_READERS = {
-    "solve": ["solve", "{deep}"],
-    "solve --rules": ["solve", "{team}", "--rules", "{deep}"],
-    "count": ["count", "{deep}"],
-    "robots": ["robots", "{deep}"],
-    "check": ["check", "{folder}/rules.yaml", "{deep}"],
-    "check --rules": ["check", "{team}", "--rules", "{deep}"],
-    "assign --team": ["assign", "--team", "{deep}", "kinematic_type=UAV"],
-    "identify --team": ["identify", "{urdf}", "--team", "{deep}"],
-    "identify --profile": ["identify", "{urdf}", "--profile", "{deep}"],
-    "fleet --profile": ["fleet", "{robots}", "--profile", "{deep}"],
-    "layouts --profile": ["layouts", "{team}", "-o", "{folder}/out", "--profile", "{deep}"],
-    "report": ["report", "{deep}", "-o", "{folder}/r.html"],
-    "batch": ["batch", "{deep}", "-o", "{folder}/batch"],
-    "export": ["export", "{deep}"],
-    "reproduce": ["reproduce", "{deep}"],
+    "solve": ["solve", "{file}"],
+    "solve --rules": ["solve", "{team}", "--rules", "{file}"],
+    "count": ["count", "{file}"],
+    "robots": ["robots", "{file}"],
+    "check": ["check", "{folder}/rules.yaml", "{file}"],
+    "check --rules": ["check", "{team}", "--rules", "{file}"],
+    "assign --team": ["assign", "--team", "{file}", "kinematic_type=UAV"],
+    "identify --team": ["identify", "{urdf}", "--team", "{file}"],
+    "identify --profile": ["identify", "{urdf}", "--profile", "{file}"],
+    "fleet --profile": ["fleet", "{robots}", "--profile", "{file}"],
+    "layouts --profile": ["layouts", "{team}", "-o", "{folder}/out", "--profile", "{file}"],
+    "report": ["report", "{file}", "-o", "{folder}/r.html"],
+    "batch": ["batch", "{file}", "-o", "{folder}/batch"],
+    "export": ["export", "{file}"],
+    "reproduce": ["reproduce", "{file}"],
 }
-READERS = list(YAML_READERS)
+# ... and every other file a command reads.
+FILE_READERS = {
+    **YAML_READERS,
+    "identify": ["identify", "{file}"],
+    "identify --srdf": ["identify", "{urdf}", "--srdf", "{file}"],
+    "identify --topics": ["identify", "{urdf}", "--topics", "{file}"],
+    "layouts --robot": ["layouts", "--robot", "{file}", "--team", "{team}", "-o", "{folder}/l"],
+    "layouts --topics": [
+        *["layouts", "--robot", "{urdf}", "--team", "{team}"],
+        *["--topics", "{file}", "-o", "{folder}/l.json"],
+    ],
+}
 
 
-def _yaml_reader(reader: str, folder: Path, deep: str) -> list[str]:
+def _command(reader: str, folder: Path, file: Path) -> list[str]:
+    """The command line of ``reader`` with ``file`` in the hostile place, in ``folder``."""
     with_paper_rules(folder)
     (folder / "robots").mkdir()
     places = {
-        "deep": str(folder / "deep.yaml"),
+        "file": str(file),
         "team": str(team_file(folder)),
         "folder": str(folder),
         "robots": str(folder / "robots"),
         "urdf": str(_urdf(folder / "robots")),
     }
-    (folder / "deep.yaml").write_text(deep)
-    return [argument.format(**places) for argument in YAML_READERS[reader]]
+    return [argument.format(**places) for argument in FILE_READERS[reader]]
 
 
-@pytest.mark.parametrize("reader", READERS)
+# ---- nesting: every YAML reader -------------------------------------------------------------
+
+# A block nest composed by libyaml ended the process with SIGSEGV; a flow nest was quadratic.
+DEEP_YAML = {"block": "- " * 50_000 + "x\n", "flow": "[" * 1_000_000 + "\n"}
+
+
+@pytest.mark.parametrize("reader", list(YAML_READERS))
 def test_a_block_nest_50000_deep_is_refused_by_every_reader(tmp_path: Path, reader: str) -> None:
     deep = tmp_path / "deep.yaml"
-    result = run_cli(*_yaml_reader(reader, tmp_path, DEEP_YAML["block"]))  # a signal is the point
+    deep.write_text(DEEP_YAML["block"])
+    result = run_cli(*_command(reader, tmp_path, deep))  # a process: a signal is the point
     assert result.returncode in (1, 2), result.stderr  # 1: batch's failed row
     assert "Traceback" not in result.stderr
     assert f"{deep}:1:131: nested more than 64 levels deep; refused" in result.stderr
 
 
-@pytest.mark.parametrize("reader", READERS)
+@pytest.mark.parametrize("reader", list(YAML_READERS))
 def test_a_flow_nest_a_million_deep_is_refused_by_every_reader(
     tmp_path: Path, reader: str, capsys: pytest.CaptureFixture[str]
 ) -> None:
     deep = tmp_path / "deep.yaml"
-    assert run_main(*_yaml_reader(reader, tmp_path, DEEP_YAML["flow"])) in (1, 2)
+    deep.write_text(DEEP_YAML["flow"])
+    assert run_main(*_command(reader, tmp_path, deep)) in (1, 2)
     assert f"{deep}:1:66: nested more than 64 levels deep; refused" in capsys.readouterr().err
+
+
+# ---- files that are not regular files: every reader -----------------------------------------
+
+
+def _ends(command: list[str], stdin: int | None = None) -> subprocess.CompletedProcess[str]:
+    """``command`` as a process that must end by itself (60 s: a last-resort ceiling; a
+    refusal takes a fraction of a second, a hang never ends)."""
+    return subprocess.run(
+        [sys.executable, "-m", "solver", *command],
+        stdin=subprocess.DEVNULL if stdin is None else stdin,
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+        check=False,
+        timeout=60,
+    )
+
+
+def refused_as_no_regular_file(reader: str, file: Path, kind: str) -> str:
+    """The start of the message that refuses ``file``, of ``kind``, given to ``reader``."""
+    if reader != "batch" or file == Path("/dev/stdin"):
+        return f"{file}: is {kind}, not a "
+    if kind == "a directory":  # batch reads the teams in a folder
+        return f"{file}: folder holds no .yaml or .yml file"
+    return f"{file}: not a regular file or folder"
+
+
+@pytest.mark.parametrize("reader", list(FILE_READERS))
+def test_a_fifo_is_refused_by_every_reader_without_waiting_for_a_writer(
+    tmp_path: Path, reader: str
+) -> None:
+    fifo = tmp_path / "hostile"
+    os.mkfifo(fifo)
+    result = _ends(_command(reader, tmp_path, fifo))  # opening it for reading waited forever
+    assert result.returncode == 2, result.stderr
+    assert result.stderr.startswith(refused_as_no_regular_file(reader, fifo, "a pipe (FIFO)"))
+
+
+@pytest.mark.parametrize("reader", ["solve", "check", "identify", "identify --topics"])
+def test_standard_input_from_a_pipe_that_never_ends_is_refused(tmp_path: Path, reader: str) -> None:
+    # `sleep 30 | teleop-ui solve /dev/stdin`: the writer holds the pipe open and sends nothing.
+    stdin = Path("/dev/stdin")
+    read_end, write_end = os.pipe()
+    try:
+        result = _ends(_command(reader, tmp_path, stdin), stdin=read_end)
+    finally:
+        os.close(read_end)
+        os.close(write_end)
+    assert result.returncode == 2, result.stderr
+    assert result.stderr.startswith(refused_as_no_regular_file(reader, stdin, "a pipe (FIFO)"))
+
+
+@pytest.mark.parametrize("kind", ["a directory", "a character device", "a socket"])
+@pytest.mark.parametrize("reader", list(FILE_READERS))
+def test_a_folder_a_device_or_a_socket_is_refused_by_every_reader(
+    tmp_path: Path,
+    reader: str,
+    kind: str,
+    monkeypatch: pytest.MonkeyPatch,
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    special = {"a directory": tmp_path / "folder", "a character device": Path("/dev/zero")}
+    if kind == "a directory":
+        special[kind].mkdir()
+    with socket.socket(socket.AF_UNIX) as server:
+        if kind == "a socket":
+            monkeypatch.chdir(tmp_path)  # a socket's path is short (108 bytes): a relative one
+            server.bind("hostile")
+            special[kind] = tmp_path / "hostile"
+        assert run_main(*_command(reader, tmp_path, special[kind])) == 2
+    error = capsys.readouterr().err
+    assert error.startswith(refused_as_no_regular_file(reader, special[kind], kind)), error
 
 
 # ---- leaks -------------------------------------------------------------------------------

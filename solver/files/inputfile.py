@@ -1,9 +1,16 @@
 """Reading input files with a size limit, and every failure as a located error.
 
-Every file a command reads (rule sets, teams, profiles, URDF, topic lists) goes through here:
-at most ``limit`` bytes are read, whatever ``stat()`` says (it says 0 for pipes and
-``/dev/zero``), and a missing, unreadable, oversized, binary or non-UTF-8 file is an
+Every file a command reads (rule sets, teams, profiles, URDF, SRDF, topic lists) goes through
+here: only a regular file is read, and at most ``limit`` bytes of it; a missing, unreadable,
+oversized, binary or non-UTF-8 file, and anything that is not a regular file, is an
 :class:`~solver.errors.InputError` naming it.
+
+Not a regular file: a directory, a named pipe (and so ``/dev/stdin`` or ``<(...)`` when they are
+pipes), a terminal or other character device (``/dev/zero``, ``/dev/tty``), a block device, a
+socket. Opening a pipe waits for a writer and reading it waits for data, with no end a size
+limit can bring; opening a device can do things of its own. The kind is looked at before
+opening, and again on what was opened (the name may lead elsewhere by then), which is opened
+without waiting (``O_NONBLOCK``).
 
 Not here: parsing what was read (:mod:`solver.files.yamlio`,
 :mod:`solver.identify.readers.safexml`).
@@ -11,6 +18,8 @@ Not here: parsing what was read (:mod:`solver.files.yamlio`,
 
 from __future__ import annotations
 
+import os
+import stat
 from pathlib import Path
 
 from solver.errors import InputError
@@ -41,11 +50,12 @@ def read_bounded(
 ) -> bytes:
     """The bytes of ``path``, refusing more than ``limit`` without reading them all."""
     name = _shown_name(path, display)
-    file = Path(path)
     try:
-        if file.is_dir():
-            raise InputError.at(name, f"is a directory, not a {what}")
-        with file.open("rb") as stream:
+        _refuse_unless_regular(os.stat(path).st_mode, name, what)
+        # Not waiting on open: a pipe put in the file's place meanwhile is refused below.
+        flags = os.O_RDONLY | os.O_NONBLOCK | os.O_NOCTTY | os.O_CLOEXEC
+        with open(os.open(path, flags), "rb") as stream:
+            _refuse_unless_regular(os.fstat(stream.fileno()).st_mode, name, what)
             data = stream.read(limit + 1)  # one byte past the limit says "too large"
     except FileNotFoundError:
         raise InputError.at(name, "no such file") from None
@@ -56,13 +66,33 @@ def read_bounded(
     except InputError:
         raise
     except ValueError:
-        # Path.open refuses a NUL byte in the name ("embedded null byte"); no file has one.
+        # os.stat refuses a NUL byte in the name ("embedded null byte"); no file has one.
         raise InputError.at(
             name, "not a usable file name (it contains a NUL byte)", code="bad-name"
         ) from None
     if len(data) > limit:
         raise InputError.at(name, f"file is larger than {limit} bytes; refused", code="too-large")
     return data
+
+
+# What is not a regular file, as a message names it.
+_SPECIAL = (
+    (stat.S_ISFIFO, "a pipe (FIFO)"),
+    (stat.S_ISCHR, "a character device"),
+    (stat.S_ISBLK, "a block device"),
+    (stat.S_ISSOCK, "a socket"),
+)
+
+
+def _refuse_unless_regular(mode: int, name: str, what: str) -> None:
+    if stat.S_ISREG(mode):
+        return
+    if stat.S_ISDIR(mode):
+        raise InputError.at(name, f"is a directory, not a {what}")
+    kind = next((kind for test, kind in _SPECIAL if test(mode)), "a special file")
+    raise InputError.at(
+        name, f"is {kind}, not a {what}: only regular files are read", code="not-a-file"
+    )
 
 
 def read_text(

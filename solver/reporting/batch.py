@@ -62,6 +62,8 @@ from solver.files.yamlio import MAX_FILE_BYTES, load_document
 from solver.reporting import markdown
 from solver.reporting.render import csv_row, dumps
 from solver.reporting.report import image_names, write_report
+from solver.untrusted import SHOWN_FILE_NAME_CHARS
+from solver.untrusted import shown as shown_text
 
 if TYPE_CHECKING:
     from concurrent.futures import Future
@@ -184,29 +186,30 @@ def find_teams(patterns: Sequence[str]) -> list[tuple[Path, str]]:
                 )
             )
             continue
+        # os.path's probes say False for a name the system refuses (too long, say) where
+        # Path's raise; such a name is then "no such file", as the system would say.
         if _PATTERN_CHARACTERS & set(pattern):
-            matches = sorted(m for m in glob.glob(pattern, recursive=True) if Path(m).is_file())
-        elif Path(pattern).is_dir():
+            matches = sorted(m for m in glob.glob(pattern, recursive=True) if os.path.isfile(m))
+        elif os.path.isdir(pattern):
             matches = sorted(
                 str(p)
                 for p in Path(pattern).rglob("*")
                 if p.suffix.lower() in _TEAM_SUFFIXES and p.is_file()
             )
-        elif Path(pattern).is_file():
+        elif os.path.isfile(pattern):
             matches = [pattern]
-        elif resolve_team_path(pattern).is_file():
-            shipped = resolve_team_path(pattern)
+        elif os.path.isfile(shipped := resolve_team_path(pattern)):
             matches, shown_as = [str(shipped)], shipped_name(shipped) or str(shipped)
         else:
-            faults.append(Fault(Location(pattern), "no such file or folder", "no-match"))
+            faults.append(Fault(Location(_shown_name(pattern)), _missing(pattern), "no-match"))
             continue
         if not matches:
             what = (
                 "folder holds no .yaml or .yml file"
-                if Path(pattern).is_dir()
+                if os.path.isdir(pattern)
                 else "pattern matches no file"
             )
-            faults.append(Fault(Location(pattern), what, "no-match"))
+            faults.append(Fault(Location(_shown_name(pattern)), what, "no-match"))
         for match in matches:
             resolved = Path(match).resolve()
             if resolved not in seen:
@@ -215,6 +218,23 @@ def find_teams(patterns: Sequence[str]) -> list[tuple[Path, str]]:
     if faults:
         raise InputError(faults)
     return found
+
+
+def _missing(pattern: str) -> str:
+    """Why ``pattern``, neither a glob, a file, a folder nor a shipped team, names nothing."""
+    try:
+        os.stat(pattern)
+    except FileNotFoundError:
+        return "no such file or folder"
+    except OSError as error:
+        return f"cannot use: {error.strerror or error}"  # "File name too long", say
+    except ValueError:
+        return "not a usable file name (it contains a NUL byte)"
+    return "not a regular file or folder (a pipe, a device or a socket): refused"
+
+
+def _shown_name(name: str) -> str:
+    return shown_text(name, limit=SHOWN_FILE_NAME_CHARS)
 
 
 # ---- 2. planning the outputs ---------------------------------------------------------------
