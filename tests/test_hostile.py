@@ -221,7 +221,13 @@ YAML_READERS = {
     "identify --team": ["identify", "{urdf}", "--team", "{file}"],
     "identify --profile": ["identify", "{urdf}", "--profile", "{file}"],
     "fleet --profile": ["fleet", "{robots}", "--profile", "{file}"],
-    "layouts --profile": ["layouts", "{team}", "-o", "{folder}/out", "--profile", "{file}"],
+    "layouts --presentation": [
+        *["layouts", "{team}", "-o", "{folder}/out", "--presentation", "{file}"]
+    ],
+    "layouts --robot --profile": [
+        *["layouts", "--robot", "{urdf}", "--team", "{team}", "-o", "{folder}/l.json"],
+        *["--profile", "{file}"],
+    ],
     "report": ["report", "{file}", "-o", "{folder}/r.html"],
     "batch": ["batch", "{file}", "-o", "{folder}/batch"],
     "export": ["export", "{file}"],
