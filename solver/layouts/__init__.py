@@ -10,6 +10,7 @@
 ``robot``           one robot's layout under its namespace, fed by its real topics
 ``topics``          a robot's real topics in place of the templates
 ``preview``         a layout's panel tree as an SVG thumbnail
+``checks``          layouts against the viewers' own rules, kept as data (issue 26)
 ==================  ===============================================================
 
 Not here: solving (:mod:`solver.core.solution`); UVL export (:mod:`solver.reporting.uvl`).

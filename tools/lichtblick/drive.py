@@ -1,0 +1,202 @@
+"""Drive the real Lichtblick as an operator would: import a layout, watch live data, press what
+publishes, export the layout, and report what was seen.
+
+usage: python drive.py LAYOUT.json NAME [--app URL] [--ws URL] [--record FILE] [--act]
+       [--shots DIR]
+
+Debian's headless Chromium (never a browser of playwright's own) opens the app connected to a
+Foxglove WebSocket server (``wsserver.py``), imports LAYOUT.json through the app's own menu
+(View > Import layout from file...; the file picker is answered with the layout), waits for
+data, and writes to --shots: NAME.png (the screen), NAME-layouts.png (the layout list: a dot
+marks unsaved changes), NAME.exported.json (the app's own Export layout) and
+NAME.report.json: the import's error messages, each panel's text, the keys the app added
+(``export_diff``), the topics the app advertised, and with --act what each Teleop pad (held
+1.5 s), Publish button and 3D click tool sent, decoded by the server.
+"""
+
+from __future__ import annotations
+
+import argparse
+import asyncio
+import json
+import time
+from pathlib import Path
+from typing import Any
+
+from playwright.async_api import Page, async_playwright
+
+CHROMIUM = "/usr/bin/chromium"
+FLAGS = [
+    "--headless",
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+    "--no-first-run",
+]
+# The app imports through window.showOpenFilePicker: answer it with the layout under test.
+PICKER = """
+window.showOpenFilePicker = async () => [{
+  getFile: async () =>
+    new File([window.__layoutText], window.__layoutName, { type: "application/json" }),
+}];
+"""
+
+
+def records(path: Path, since: float) -> list[dict[str, Any]]:
+    if not path.exists():
+        return []
+    lines = (json.loads(line) for line in path.read_text(encoding="utf-8").splitlines())
+    return [item for item in lines if item["t"] >= since]
+
+
+def added(before: Any, after: Any, path: str = "") -> list[tuple[str, str, Any]]:
+    """What ``after`` adds to, drops from or changes in ``before``, by JSON path."""
+    if not (isinstance(before, dict) and isinstance(after, dict)):
+        return [] if before == after else [("changed", path, [before, after])]
+    out: list[tuple[str, str, Any]] = []
+    for key in sorted(set(before) | set(after)):
+        where = f"{path}.{key}" if path else key
+        if key not in before:
+            out.append(("added", where, after[key]))
+        elif key not in after:
+            out.append(("removed", where, before[key]))
+        else:
+            out.extend(added(before[key], after[key], where))
+    return out
+
+
+async def menu(page: Page, item: str) -> None:
+    await page.get_by_test_id("AppMenuButton").click()
+    await page.get_by_text("View", exact=True).click()
+    await page.get_by_text(item).click()
+
+
+async def run(args: argparse.Namespace) -> dict[str, Any]:
+    shots, record = Path(args.shots), Path(args.record)
+    shots.mkdir(parents=True, exist_ok=True)
+    text = Path(args.layout).read_text(encoding="utf-8")
+    layout = json.loads(text)
+    report: dict[str, Any] = {"layout": args.layout}
+    async with async_playwright() as playwright:
+        browser = await playwright.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
+        context = await browser.new_context(
+            viewport={"width": 1600, "height": 1000}, accept_downloads=True
+        )
+        await context.add_init_script(PICKER)
+        page = await context.new_page()
+        console: list[str] = []
+        page.on("console", lambda m: console.append(f"{m.type}: {m.text[:300]}"))
+        started = time.time()
+        await page.goto(f"{args.app}?ds=foxglove-websocket&ds.url={args.ws}", wait_until="load")
+        await page.wait_for_timeout(4000)
+        await page.evaluate(
+            "([t, n]) => { window.__layoutText = t; window.__layoutName = n; }",
+            [text, f"{args.name}.json"],
+        )
+        await menu(page, "Import layout from file…")
+        await page.wait_for_timeout(args.wait)
+        report["snackbars"] = await page.locator("#notistack-snackbar").all_inner_texts()
+        await page.screenshot(path=str(shots / f"{args.name}.png"))
+        report["panels"] = {}
+        for panel_id in layout.get("configById", {}):
+            box = page.get_by_test_id(f"panel-mouseenter-container {panel_id}")
+            present = await box.count() > 0
+            panel_text = (await box.first.inner_text())[:400] if present else None
+            report["panels"][panel_id] = {"present": present, "text": panel_text}
+        if args.act:
+            report["actions"] = await act(page, layout, record)
+        async with page.expect_download() as download:
+            await menu(page, "Export layout to file…")
+        exported = json.loads(Path(await (await download.value).path()).read_text())
+        (shots / f"{args.name}.exported.json").write_text(json.dumps(exported, indent=2))
+        report["export_diff"] = added(layout, exported)
+        await page.get_by_test_id("layouts-left").click()
+        await page.wait_for_timeout(800)
+        await page.screenshot(path=str(shots / f"{args.name}-layouts.png"))
+        advertised = records(record, started)
+        report["advertised"] = sorted({r["topic"] for r in advertised if r["op"] == "advertise"})
+        report["console"] = [line for line in console if line.startswith(("error", "warning"))]
+        await browser.close()
+    (shots / f"{args.name}.report.json").write_text(json.dumps(report, indent=1, default=str))
+    return report
+
+
+async def act(page: Page, layout: dict[str, Any], record: Path) -> list[dict[str, Any]]:
+    """Hold each Teleop pad's up button, press each Publish button, click each 3D goal tool."""
+    done: list[dict[str, Any]] = []
+    for panel_id, config in layout["configById"].items():
+        kind = panel_id.split("!")[0]
+        box = page.get_by_test_id(f"panel-mouseenter-container {panel_id}")
+        if await box.count() == 0:
+            continue
+        start = time.time()
+        if kind == "Teleop":
+            pad = box.locator("svg g[role=button]").first
+            if await pad.count() == 0:
+                done.append({"panel": panel_id, "pad": False})
+                continue
+            bounds = await pad.bounding_box()
+            assert bounds is not None
+            await page.mouse.move(
+                bounds["x"] + bounds["width"] / 2, bounds["y"] + bounds["height"] / 3
+            )
+            await page.mouse.down()
+            await page.wait_for_timeout(1500)
+            released = time.time()
+            await page.mouse.up()
+            await page.wait_for_timeout(2000)
+            sent = [r for r in records(record, start) if r["op"] == "message"]
+            done.append(
+                {
+                    "panel": panel_id,
+                    "while_held": sum(1 for r in sent if r["t"] < released),
+                    "after_release": [r["msg"] for r in sent if r["t"] >= released][:3],
+                    "topics": sorted({r["topic"] for r in sent}),
+                    "first": sent[0]["msg"] if sent else None,
+                }
+            )
+        elif kind == "Publish":
+            button = box.get_by_role("button", name=config.get("buttonText") or "Publish")
+            enabled = await button.count() > 0 and await button.is_enabled()
+            if enabled:
+                await button.click()
+                await page.wait_for_timeout(1500)
+            sent = [(r["topic"], r["msg"]) for r in records(record, start) if r["op"] == "message"]
+            done.append({"panel": panel_id, "button_enabled": enabled, "sent": sent[:2]})
+        elif kind == "3D" and "publish" in config:
+            tool = box.locator("button[title*='ublish'], button[aria-label*='ublish']").first
+            if await tool.count() > 0:
+                bounds = await box.bounding_box()
+                assert bounds is not None
+                x, y = bounds["x"] + bounds["width"] / 2, bounds["y"] + bounds["height"] / 2
+                await tool.click()
+                await page.mouse.click(x, y)
+                await page.wait_for_timeout(300)
+                await page.mouse.click(x + 40, y)
+                await page.wait_for_timeout(1500)
+            sent = [(r["topic"], r["msg"]) for r in records(record, start) if r["op"] == "message"]
+            done.append({"panel": panel_id, "sent": sent[:2]})
+    return done
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("layout")
+    parser.add_argument("name")
+    parser.add_argument("--app", default="http://127.0.0.1:8765/")
+    parser.add_argument("--ws", default="ws://127.0.0.1:8766")
+    parser.add_argument("--record", default="record.jsonl")
+    parser.add_argument("--shots", default="shots")
+    parser.add_argument("--wait", type=int, default=6000, help="ms of live data before looking")
+    parser.add_argument("--act", action="store_true", help="press what publishes")
+    report = asyncio.run(run(parser.parse_args()))
+    summary = {
+        k: report[k] for k in ("snackbars", "advertised", "export_diff", "actions") if k in report
+    }
+    print(json.dumps(summary, indent=1, default=str))
+
+
+if __name__ == "__main__":
+    main()
