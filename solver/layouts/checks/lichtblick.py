@@ -320,7 +320,7 @@ def _publish(config: dict[str, Any], base: str, file: str) -> Iterator[Fault]:
     where = f"{base}.value"
     try:
         message = json.loads(text)
-    except ValueError:
+    except (ValueError, RecursionError):  # RecursionError: a hostile "[[[[...", 100,000 deep
         yield _fault(
             file, where, "not JSON: the Publish button stays disabled", "lichtblick-publish"
         )

@@ -254,6 +254,7 @@ def test_a_3d_panel_without_a_grid_is_named() -> None:
         ("{}", "value"),
         ("[1]", "value"),
         ("not json", "value"),
+        ("[" * 100_000, "value"),
         (json.dumps({**JOINTS, "joint_names": [""]}), "value:joint_names"),
         (json.dumps({**JOINTS, "points": []}), "value:points"),
         (json.dumps({**JOINTS, "joint_names": ["a"]}), "value:points[0].positions"),
