@@ -3,7 +3,7 @@
 The rules were read from Lichtblick's TypeScript and RViz2's C++ (each data file names the
 repository and commit) and confirmed in the running Lichtblick (``tools/lichtblick_check.md``).
 They live in the package, not only in the tests, so that a layout written with a presentation
-profile of one's own (``layouts --profile``) can be checked the same way, and so that a writer
+of one's own (``layouts --presentation``) can be checked the same way, and so that a writer
 can refuse a layout before it reaches an operator.
 
 =================  ======================================================================
