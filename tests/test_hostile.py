@@ -398,6 +398,23 @@ def test_a_rules_file_that_is_no_rule_set_is_named_never_quoted(
         assert "the-secret-line" not in text  # ...and nothing of it is quoted
 
 
+@pytest.mark.parametrize("how", ["directly", "through a link"])
+@pytest.mark.parametrize("reader", ["identify --topics", "layouts --topics"])
+def test_a_secret_given_as_a_topic_list_is_named_never_quoted(
+    tmp_path: Path, reader: str, how: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    secret = tmp_path / "shadow"
+    secret.write_text(f"{SECRET}\nTOKEN=the-secret-token\nthe-secret-word\n")
+    given = secret
+    if how == "through a link":
+        given = tmp_path / "robot.topics"
+        given.symlink_to(secret)
+    assert run_main(*_command(reader, tmp_path, given)) == 2
+    shown = capsys.readouterr()
+    assert shown.err.startswith(f"{given}:1: not a topic list: ")
+    assert "the-secret" not in shown.out + shown.err
+
+
 def _summaries(out: Path) -> list[str]:
     return [
         (out / name).read_text() for name in ("summary.csv", "summary.md") if (out / name).is_file()

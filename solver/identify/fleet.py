@@ -6,6 +6,13 @@ when present. Robots are identified in name order; one that cannot be identified
 unreadable, a missing xacro package, ...) is kept with its reason and the others still go
 through. A folder that cannot be listed is an error.
 
+A robot folder is often a stranger's (downloaded, unpacked, shared): the scan follows no link
+out of the folder. A description or a file beside it that is a link to something outside the
+folder (``robot.topics -> /etc/shadow``) is not read, and its robot fails with that reason. A
+file beside a description is used only when it reads as its kind (a topic list, an SRDF, a
+bag); the reason a robot fails quotes nothing of a file that did not, so nothing of such a
+file reaches the output or the team file written.
+
 The team selection (:func:`team_text`) has, per kinematic type of the rule set that at least one
 robot maps to: the union of the robots' motion controls and sensor types (in the rule set's
 order, values the rule set lacks left out) and the largest number of sensors with a
@@ -32,6 +39,7 @@ from solver.errors import InputError, SolverError
 from solver.files.yamlio import parse_document
 from solver.identify.identification import Identification, identify
 from solver.identify.profile import Profile
+from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
 __all__ = [
     "Fleet",
@@ -112,6 +120,19 @@ def _companion(path: Path, *suffixes: str) -> Path | None:
     )
 
 
+def _links_out(path: Path, folder: str) -> bool:
+    """Whether ``path``, in ``folder`` (a resolved path), is a link to something outside it."""
+    # realpath, not Path.resolve: a link loop is no error to it (the read reports it).
+    return path.is_symlink() and os.path.commonpath([os.path.realpath(path), folder]) != folder
+
+
+def _link_out(path: Path) -> str:
+    return (
+        f"{shown(str(path), limit=SHOWN_FILE_NAME_CHARS)}: a link to a file outside the "
+        "folder; a folder scan follows no link out of its folder (copy the file in)"
+    )
+
+
 def identify_fleet(
     folder: str | Path,
     *,
@@ -131,6 +152,7 @@ def identify_fleet(
     is a failed robot whose reason says how to opt in.
     """
     paths = find_descriptions(folder)
+    inside = os.path.realpath(folder)
     entries = []
     for done, path in enumerate(paths):
         name = _stem(path) or path.name
@@ -139,6 +161,10 @@ def identify_fleet(
         srdf = _companion(path, ".srdf")
         topics = _companion(path, ".topics", ".topics.txt")
         bag = _companion(path, ".bag")
+        outside = [p for p in (path, srdf, topics, bag) if p and _links_out(p, inside)]
+        if outside:
+            entries.append(FleetEntry(name, str(path), None, _link_out(outside[0])))
+            continue
         try:
             result = identify(
                 path,

@@ -13,6 +13,12 @@ Blank lines and ``#`` comments are skipped. A topic with no message type, or a t
 ``package/Name`` (ROS 2's ``package/msg/Name`` is accepted and normalised), is a located error;
 every bad line of a file is reported at once.
 
+A file is read as a topic list only when its first line (after blanks and comments) is a
+section heading or starts with a topic name (``/scan``, or `` * /scan``). Anything else (a
+password file, a key, a ``.env`` given by mistake or linked from a robot folder) is "not a
+topic list", located at that line and quoting nothing of it: what an error quotes of a bad line
+(at most 60 characters, escaped) comes only from a file that reads as a topic list.
+
 Each line becomes a :class:`solver.ros.names.Topic`, as a bag
 (:mod:`solver.identify.readers.bags`) and a live graph give: the shared currency of
 :mod:`solver.identify.interfaces`.
@@ -29,6 +35,7 @@ from solver.errors import Fault, InputError, Location
 from solver.files.inputfile import read_text
 from solver.identify.readers.safexml import MAX_XML_BYTES
 from solver.ros.names import Topic, normalise_type
+from solver.untrusted import shown
 
 __all__ = ["parse_topic_list", "read_topic_list"]
 
@@ -37,6 +44,8 @@ _BRACKETED = re.compile(r"^\s*(?:\*\s*)?(\S+)\s+\[([^\]]*)\](?:\s+\d+\s+\w+)?\s*
 _PLAIN = re.compile(r"^\s*(?:\*\s*)?(\S+)(?:\s+(\S+))?\s*$")
 _TYPE = re.compile(r"^[A-Za-z][\w]*/(?:(?:msg|srv|action)/)?[A-Za-z][\w]*$")
 _NAME = re.compile(r"^/?[A-Za-z~{][\w/{}~]*$")
+# The head of a topic list's first line: a section heading, or a topic name from the root.
+_HEAD = re.compile(r"^\s*(?:\*\s*)?/[A-Za-z~{][\w/{}~]*(?:\s|$)")
 
 
 def read_topic_list(path: str | Path, *, display: str | None = None) -> tuple[Topic, ...]:
@@ -47,15 +56,27 @@ def read_topic_list(path: str | Path, *, display: str | None = None) -> tuple[To
 
 
 def parse_topic_list(text: str, name: str = "<topics>") -> tuple[Topic, ...]:
-    """Parse topic list text; :class:`InputError` lists every malformed line."""
+    """Parse topic list text; :class:`InputError` lists every malformed line (see the module
+    docstring for when a file is not read as a topic list at all)."""
     faults: list[Fault] = []
     found: list[Topic] = []
     direction: str | None = None
+    first = True
     for number, line in enumerate(text.splitlines(), start=1):
         stripped = line.strip()
         if not stripped or stripped.startswith("#"):
             continue
         section = _SECTION.match(line)
+        if first and not section and not _HEAD.match(line):
+            raise InputError.at(
+                name,
+                "not a topic list: this line is neither a section heading nor a topic "
+                "(expected `rostopic list -v`, `ros2 topic list -t` or 'TOPIC TYPE' lines; "
+                "nothing of a file that is not a topic list is shown)",
+                line=number,
+                code="topics",
+            )
+        first = False
         if section:
             direction = section.group(1).lower()
             continue
@@ -65,16 +86,18 @@ def parse_topic_list(text: str, name: str = "<topics>") -> tuple[Topic, ...]:
         if not match or not _NAME.match(topic):
             faults.append(
                 Fault(
-                    Location(name, number, column), f"not a topic line: {stripped[:80]!r}", "topics"
+                    Location(name, number, column),
+                    f"not a topic line: {shown(stripped, quoted=True)}",
+                    "topics",
                 )
             )
             continue
         if not kind:
             faults.append(
                 Fault(
-                    Location(name, number, column, topic),
-                    f"topic {topic!r} has no message type (give `rostopic list "
-                    "-v`, `ros2 topic list -t`, or 'TOPIC TYPE' lines)",
+                    Location(name, number, column, shown(topic)),
+                    f"topic {shown(topic, quoted=True)} has no message type (give `rostopic "
+                    "list -v`, `ros2 topic list -t`, or 'TOPIC TYPE' lines)",
                     "topics",
                 )
             )
@@ -82,8 +105,8 @@ def parse_topic_list(text: str, name: str = "<topics>") -> tuple[Topic, ...]:
         if not _TYPE.match(kind.strip()):
             faults.append(
                 Fault(
-                    Location(name, number, line.find(kind) + 1, topic),
-                    f"{kind.strip()!r} is not a message type (package/Name)",
+                    Location(name, number, line.find(kind) + 1, shown(topic)),
+                    f"{shown(kind.strip(), quoted=True)} is not a message type (package/Name)",
                     "topics",
                 )
             )

@@ -79,3 +79,42 @@ def test_any_list_of_pairs_reads_back_in_every_format(
 def test_normalising_a_type_is_idempotent_and_accepts_ros2_spelling(kind: str) -> None:
     package, name = kind.split("/")
     assert normalise_type(f"{package}/msg/{name}") == kind == normalise_type(kind)
+
+
+# What a secret looks like when it is given, by mistake or by a link, as a topic list.
+SECRETS = {
+    "shadow": "root:$6$hunter2hash:19000:0:99999:7:::\nalice:$6$hunter2too:19000:0::::\n",
+    "dotenv": "# settings\nAPI_TOKEN=hunter2\n",
+    "one word": "hunter2\n",
+    "private key": "-----BEGIN OPENSSH PRIVATE KEY-----\nhunter2AAAAB3NzaC1yc2E\n",
+    "two words": "hunter2 sesame/Open\n",
+}
+
+
+@pytest.mark.parametrize("secret", list(SECRETS))
+def test_a_file_that_is_no_topic_list_is_named_and_never_quoted(secret: str) -> None:
+    with pytest.raises(InputError) as caught:
+        parse_topic_list(SECRETS[secret], "secret.txt")
+    assert len(caught.value.faults) == 1
+    line = 2 if secret == "dotenv" else 1  # the first line that is not a comment
+    assert str(caught.value).startswith(f"secret.txt:{line}: not a topic list: ")
+    assert "hunter2" not in str(caught.value)
+
+
+def test_a_bad_line_of_a_topic_list_is_quoted_short_and_escaped() -> None:
+    text = "/scan sensor_msgs/LaserScan\n" + "!\x1b[2J" + "x" * 200 + "\n"
+    with pytest.raises(InputError) as caught:
+        parse_topic_list(text, "t.txt")
+    message = caught.value.faults[0].message
+    assert message.startswith("not a topic line: '!\\x1b[2Jxxx")
+    assert message.endswith("...' (cut from 205 characters)")
+    assert "\x1b" not in message
+    # 60 characters shown: "!", ESC, "[2J" and 55 x, plus the x of the escape "\\x1b".
+    assert message.count("x") == 55 + 1
+
+
+def test_a_topic_list_may_start_with_a_section_a_bullet_or_a_name_without_type() -> None:
+    assert parse_topic_list("Published topics:\n * /scan [sensor_msgs/LaserScan] 1 publisher\n")
+    assert parse_topic_list(" * /scan [sensor_msgs/LaserScan] 1 publisher\n")
+    with pytest.raises(InputError, match="topic '/scan' has no message type"):
+        parse_topic_list("/scan\n")
