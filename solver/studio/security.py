@@ -11,7 +11,7 @@
   :data:`~solver.studio.workspace.MAX_UPLOAD_BYTES`; more is refused before it is read.
 * **What a page may do.** Every response carries a Content Security Policy that lets a page
   load only the studio's own scripts, styles and images (no inline script, no other site), and
-  no ``Referer`` (the address may hold the token).
+  no ``Referer`` to other sites.
 
 Not here: what is read once a request is let in (:mod:`solver.studio.workspace`).
 """
@@ -41,7 +41,7 @@ HEADERS: tuple[tuple[bytes, bytes], ...] = (
         b"connect-src 'self'; form-action 'self'; base-uri 'none'; frame-ancestors 'none'",
     ),
     (b"x-content-type-options", b"nosniff"),
-    (b"referrer-policy", b"no-referrer"),
+    (b"referrer-policy", b"same-origin"),
     (b"cross-origin-opener-policy", b"same-origin"),
     (b"cross-origin-resource-policy", b"same-origin"),
     (b"x-frame-options", b"DENY"),
@@ -137,13 +137,19 @@ def _token(scope: Scope, headers: dict[str, str], token: str) -> str:
 
 
 def _cross_site(headers: dict[str, str], host: str) -> str:
-    """Why a state-changing request is refused as coming from another site ("" if it is not)."""
+    """Why a state-changing request is refused as coming from another site ("" if it is not).
+
+    A browser's own word (``Sec-Fetch-Site``) decides where it is given; else ``Origin`` must
+    be the studio's (a browser may send ``Origin: null`` for its own pages' forms, and then it
+    sends ``Sec-Fetch-Site`` too)."""
+    site = headers.get("sec-fetch-site")
+    if site is not None:
+        if site in ("same-origin", "none"):
+            return ""
+        return "a change may only come from the studio's own pages (cross-site request)"
     origin = headers.get("origin")
     if origin is not None and origin not in (f"http://{host}", f"https://{host}"):
         return "a change may only come from the studio's own pages (Origin differs)"
-    site = headers.get("sec-fetch-site")
-    if site is not None and site not in ("same-origin", "none"):
-        return "a change may only come from the studio's own pages (cross-site request)"
     return ""
 
 

@@ -14,7 +14,7 @@ from urllib.parse import parse_qsl, urlsplit
 
 from playwright.sync_api import Page, expect
 
-from tests.conftest import run_cli
+from tests.conftest import ROOT, run_cli
 from tests.studio.conftest import Server, StartStudio
 
 # The article's selections (its Table 2), per kinematic type.
@@ -224,3 +224,194 @@ def test_configurations_open_compare_and_a_robot_is_looked_up(
     )
     expect(answer).to_contain_text(expected["reasons"][0])
     expect(page.locator("#why")).to_contain_text("point cloud")
+
+
+def test_the_example_robots_uploaded_are_identified_and_made_a_team(
+    studio: Server, page: Page, tmp_path: Path
+) -> None:
+    examples = sorted((ROOT / "examples").iterdir())
+    page.goto(studio.url)
+    page.get_by_role("link", name="Fleet").click()
+    page.get_by_label("Robot descriptions").set_input_files(examples)
+    page.get_by_role("button", name="Identify").click()
+    fleet = page.locator("#fleet")
+    expect(page.locator("#robots-title")).to_have_text("3 identified, 0 not")
+    expect(fleet.locator("tr", has_text="quadrotor").first).to_contain_text("UAV")
+    expect(fleet.locator("tr", has_text="diff_drive_lidar").first).to_contain_text("UGV")
+    expect(fleet.locator("tr", has_text="arm_gripper").first).to_contain_text("Manipulator")
+
+    page.get_by_role("button", name="Make a team from these robots").click()
+    # The team `teleop-ui fleet -o` writes for the same files, solved by the command line.
+    written = tmp_path / "fleet.yaml"
+    assert run_cli("fleet", ROOT / "examples", "-o", written).returncode == 0
+    expected = json.loads(run_cli("solve", written, "--format", "json").stdout)["totals"]
+    expect(page.locator("#total-robots")).to_have_text(str(expected["valid_robots"]))
+    expect(page.locator("#total-configurations")).to_have_text(str(expected["ui_configurations"]))
+    # ... and it is a selection like any other, to edit.
+    group = page.locator('fieldset[data-key="UAV.motion_control"]')
+    expect(group.get_by_label("Flight", exact=True)).to_be_checked()
+    group.get_by_label("Waypoint", exact=True).check()
+    expect(page.locator("#change")).to_contain_text("+1 configuration")
+
+
+BOMB = """<?xml version="1.0"?>
+<!DOCTYPE robot [
+  <!ENTITY a "aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa">
+  <!ENTITY b "&a;&a;&a;&a;&a;&a;&a;&a;&a;&a;&a;&a;&a;&a;&a;&a;&a;&a;&a;&a;">
+  <!ENTITY c "&b;&b;&b;&b;&b;&b;&b;&b;&b;&b;&b;&b;&b;&b;&b;&b;&b;&b;&b;&b;">
+  <!ENTITY d "&c;&c;&c;&c;&c;&c;&c;&c;&c;&c;&c;&c;&c;&c;&c;&c;&c;&c;&c;&c;">
+]>
+<robot name="&d;"><link name="base"/></robot>
+"""
+
+
+def test_a_hostile_urdf_is_a_located_failure_and_the_next_request_is_served(
+    studio: Server, page: Page, tmp_path: Path
+) -> None:
+    bomb = tmp_path / "bomb.urdf"
+    bomb.write_text(BOMB, encoding="utf-8")
+    good = ROOT / "examples" / "quadrotor.urdf"
+    page.goto(f"{studio.base}fleet")
+    page.get_by_label("Robot descriptions").set_input_files([bomb, good])
+    page.get_by_role("button", name="Identify").click()
+    expect(page.locator("#robots-title")).to_have_text("1 identified, 1 not")
+    failed = page.locator("#fleet tr.failed")
+    expect(failed).to_contain_text("bomb.urdf:")
+    expect(failed).to_contain_text("entit")
+    expect(failed).not_to_contain_text(str(tmp_path))
+    # A file larger than the readers' limit is refused before it is read.
+    status, body = studio.request(
+        "POST",
+        "/api/identify",
+        *_multipart("file", "huge.urdf", b"<robot>" + b" " * (16 * 1024 * 1024 + 1)),
+    )
+    assert status == 422
+    assert json.loads(body)["faults"][0]["file"] == "huge.urdf"
+    page.goto(studio.url)
+    expect(page.locator("#change")).to_contain_text("No kinematic type selected yet")
+
+
+def test_a_malformed_rule_file_uploaded_is_shown_with_its_line_and_the_studio_goes_on(
+    studio: Server, page: Page, tmp_path: Path
+) -> None:
+    bad = tmp_path / "my-rules.yaml"
+    bad.write_text(
+        "name: mine\ncharacteristics:\n  kinematic_type:\n    values: [UAV, UAV]\n"
+        "  sensor_count:\n    range: [1, 50]\n",
+        encoding="utf-8",
+    )
+    page.goto(studio.url)
+    page.get_by_label("Upload a rule set").set_input_files(bad)
+    page.get_by_role("button", name="Upload rule set").click()
+    faults = page.locator("#faults")
+    expect(faults).to_contain_text("my-rules.yaml:4:")
+    expect(faults).to_contain_text("duplicate value 'UAV'")
+    expect(faults).to_contain_text("my-rules.yaml:6:")
+    expect(faults).not_to_contain_text(str(tmp_path))
+    # The next request is served, and a good rule set can still be uploaded and used.
+    good = tmp_path / "good.yaml"
+    good.write_text(
+        "name: two robots\ncharacteristics:\n  kinematic_type:\n    values: [UAV, UGV]\n"
+        "  sensor_count:\n    range: {min: 1, max: 4}\n",
+        encoding="utf-8",
+    )
+    page.goto(studio.url)
+    page.get_by_label("Upload a rule set").set_input_files(good)
+    page.get_by_role("button", name="Upload rule set").click()
+    expect(page.get_by_label("Rule set", exact=True)).to_contain_text("two robots")
+    page.locator("legend").get_by_label("UGV", exact=True).check()
+    expect(page.locator("#total-robots")).to_have_text("4")
+    expect(page.locator("#total-configurations")).to_have_text("4")
+
+
+def _multipart(field: str, name: str, data: bytes) -> tuple[bytes, dict[str, str]]:
+    boundary = "studio-test-boundary"
+    body = (
+        (
+            f'--{boundary}\r\nContent-Disposition: form-data; name="{field}"; '
+            f'filename="{name}"\r\nContent-Type: application/octet-stream\r\n\r\n'
+        ).encode()
+        + data
+        + f"\r\n--{boundary}--\r\n".encode()
+    )
+    return body, {"content-type": f"multipart/form-data; boundary={boundary}"}
+
+
+# Every control a person can operate, and whether it has a name a screen reader says.
+CONTROLS = """() => {
+  const controls = [...document.querySelectorAll(
+    "a[href], button, input:not([type=hidden]), select, textarea, [tabindex='0']")]
+    .filter((e) => !e.matches(":disabled") && !e.closest("[hidden]") && e.getClientRects().length);
+  controls.forEach((e, i) => { e.dataset.control = String(i); });
+  const named = (e) => {
+    if (e.matches("a, button")) { return e.textContent.trim() !== ""; }
+    if (e.matches("pre")) { return true; }
+    return e.labels.length > 0 || e.hasAttribute("aria-label");
+  };
+  return controls.map((e) => ({ index: e.dataset.control, named: named(e),
+                                 what: e.outerHTML.slice(0, 120) }));
+}"""
+
+
+def tab_order(page: Page, limit: int) -> list[str]:
+    """The controls Tab reaches, in order, once round (``data-control`` indices)."""
+    page.locator("body").focus()
+    reached: list[str] = []
+    for _ in range(limit):
+        page.keyboard.press("Tab")
+        index = page.evaluate("() => document.activeElement.dataset.control || ''")
+        if index in reached:
+            break
+        if index:
+            reached.append(index)
+    return reached
+
+
+def test_every_control_of_every_view_is_reached_by_keyboard_and_labelled(
+    start_studio: StartStudio, page: Page
+) -> None:
+    server = start_studio("case3")
+    page.goto(server.url)
+    query = urlsplit(page.url).query
+    for path in (
+        "/",
+        "/configurations",
+        "/configurations/7",
+        "/robots",
+        "/charts",
+        "/check",
+        "/fleet",
+        "/export",
+        "/api",
+    ):
+        page.goto(f"{server.base.rstrip('/')}{path}?{query}")
+        controls = page.evaluate(CONTROLS)
+        assert [c["what"] for c in controls if not c["named"]] == [], path
+        reached = tab_order(page, len(controls) + 10)
+        assert sorted(reached, key=int) == [c["index"] for c in controls], path
+
+
+def test_a_change_and_its_undo_are_made_with_the_keyboard_alone(
+    start_studio: StartStudio, page: Page
+) -> None:
+    server = start_studio("case1")
+    page.goto(server.url)
+    expect(page.locator("#total-robots")).to_have_text("30")
+    waypoint = page.locator('fieldset[data-key="UAV.motion_control"]').get_by_label(
+        "Waypoint", exact=True
+    )
+    page.locator("body").focus()
+    for _ in range(200):
+        page.keyboard.press("Tab")
+        if waypoint.evaluate("(e) => e === document.activeElement"):
+            break
+    page.keyboard.press("Space")
+    expect(page.locator("#total-robots")).to_have_text("15")
+    undo = page.get_by_role("button", name="Undo")
+    for _ in range(200):
+        page.keyboard.press("Tab")
+        if undo.evaluate("(e) => e === document.activeElement"):
+            break
+    page.keyboard.press("Enter")
+    expect(page.locator("#total-robots")).to_have_text("30")
+    expect(waypoint).to_be_checked()
