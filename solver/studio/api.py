@@ -19,6 +19,7 @@ from typing import Any
 
 from starlette.concurrency import run_in_threadpool
 from starlette.datastructures import UploadFile
+from starlette.exceptions import HTTPException
 from starlette.requests import Request
 from starlette.responses import JSONResponse, Response, StreamingResponse
 from starlette.routing import BaseRoute, Route
@@ -74,7 +75,11 @@ async def read_uploads(
 ) -> tuple[list[Upload], dict[str, str]]:
     """The files of a multipart upload (each at most the bounded readers' limit) and its other
     fields; a located error for anything past the limits."""
-    form = await request.form(max_files=MAX_UPLOAD_FILES, max_fields=64)
+    try:
+        form = await request.form(max_files=MAX_UPLOAD_FILES, max_fields=64)
+    except HTTPException as error:
+        # Starlette's word for a malformed upload or one past the limits (files, fields).
+        raise InputError.at("<upload>", f"upload refused: {error.detail}") from None
     uploads = []
     fields: dict[str, str] = {}
     try:
