@@ -10,6 +10,7 @@ import asyncio
 import json
 import socket
 from collections.abc import MutableMapping
+from concurrent.futures import ThreadPoolExecutor
 from typing import Any
 from urllib.parse import urlsplit
 
@@ -142,7 +143,9 @@ def call(path: str, query: str = "", headers: dict[str, str] | None = None) -> A
         "query_string": query.encode(),
         "headers": [(k.encode(), v.encode()) for k, v in (headers or {}).items()],
     }
-    asyncio.run(guard(scope, receive, send))
+    # On a thread of its own: the browser tests' Playwright keeps an event loop on this one.
+    with ThreadPoolExecutor(1) as pool:
+        pool.submit(asyncio.run, guard(scope, receive, send)).result()
     return sent[0]["status"], dict(sent[0]["headers"])
 
 
