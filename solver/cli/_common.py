@@ -105,8 +105,8 @@ def add_master_options(parser: argparse.ArgumentParser, *, required_help: str) -
         type=seconds,
         default=2.0,
         metavar="S",
-        help="seconds to wait for the master to accept a connection, and for "
-        "each part of its reply (default: 2)",
+        help="seconds each call to the master may take in all: connecting, sending "
+        "and reading the whole reply (default: 2)",
     )
 
 

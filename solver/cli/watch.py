@@ -149,7 +149,8 @@ def _watch_ros2(args: argparse.Namespace, solution: Solution, profile: Profile) 
         _stopped_by_sigterm(watcher),
     ):
         if args.once:
-            source.settle()  # discovery on DDS takes a moment: see what is there first
+            # Discovery on DDS takes a moment: see what is there first (SIGTERM ends it).
+            source.settle(stopped=lambda: watcher.stopped)
         events = watcher.snapshot() if args.once else watcher.events()
         for event in events:
             write(_render(event, solution, args))
@@ -159,6 +160,20 @@ def _watch_ros2(args: argparse.Namespace, solution: Solution, profile: Profile) 
 
 
 def _watch(watcher: Watcher, args: argparse.Namespace, master: str, solution: Solution) -> int:
+    from solver.live.master import MasterError
+
+    try:
+        _follow(watcher, args, master, solution)
+    except MasterError:
+        if not watcher.stopped:
+            raise
+        # stop() (SIGTERM, a shutdown call) cut the call under way off: a stop, not an error.
+    if watcher.stop_reason is not None:
+        print(f"watch stopped: {watcher.stop_reason}", file=sys.stderr)
+    return 0
+
+
+def _follow(watcher: Watcher, args: argparse.Namespace, master: str, solution: Solution) -> None:
     from solver.live.master import MasterError, MasterUnreachable
 
     def waiting(error: MasterError) -> None:
@@ -174,6 +189,8 @@ def _watch(watcher: Watcher, args: argparse.Namespace, master: str, solution: So
         try:
             watcher.client.get_pid()
         except MasterUnreachable as error:
+            if watcher.stopped:
+                raise
             raise MasterUnreachable.at(
                 master,
                 f"{error.faults[0].message}: is roscore running there? (--wait waits for it)",
@@ -181,9 +198,6 @@ def _watch(watcher: Watcher, args: argparse.Namespace, master: str, solution: So
     events = [] if watcher.stopped else watcher.snapshot() if args.once else watcher.events()
     for event in events:
         write(_render(event, solution, args))
-    if watcher.stop_reason is not None:
-        print(f"watch stopped: {watcher.stop_reason}", file=sys.stderr)
-    return 0
 
 
 # --layouts (issue 17): the event as rendered, plus the layout file of the active configuration.

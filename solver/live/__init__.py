@@ -8,7 +8,9 @@ master's XML-RPC API is spoken with Python's standard library: no ROS Python pac
 Modules, one concept each:
 
 =====================  ==========================================================
-``master``             the master's XML-RPC API: timeouts, checked replies, errors
+``rpc``                bounded XML-RPC: a deadline per whole call, byte and depth caps
+``master``             the master's XML-RPC API: checked replies, errors
+``values``             bounds on values from a graph (JSON, selection) and their echoes
 ``node``               the watcher's own node API (the master's parameter pushes)
 ``descriptions``       description parameters, fetched once, kept current by pushes
 ``discovery``          robots (``robot_description`` namespaces) and their topics

@@ -1,15 +1,20 @@
-"""Robot description parameters, fetched once and then kept current by the master's pushes.
+"""Robot description parameters, fetched once and then re-read when the master says they changed.
 
 A robot description is the largest thing on a parameter server (tens of kilobytes to
 megabytes of URDF), and the master has no version stamp to poll. So :class:`Descriptions`
-fetches a description once, with ``subscribeParam``, and from then on the master sends every
-change to the watcher's node (:mod:`solver.live.node`), which hands it to :meth:`push`; polls
-only read parameter *names*. Without a node (a one-shot snapshot) values are read with
+fetches a description once, with ``subscribeParam``, and from then on the master calls the
+watcher's node (:mod:`solver.live.node`) when it changes, which hands the key to :meth:`push`;
+polls only read parameter *names*. Without a node (a one-shot snapshot) values are read with
 ``getParam``, all in one round trip.
 
-The loop thread calls :meth:`sync`; the node's server thread calls :meth:`push`. A push can
-arrive while ``subscribeParam`` for the same key is still on its way back with the older
-value; a generation count per key keeps the newer one.
+A push is a hint, never a value: the watcher's node API is an open port, and anyone who can
+reach it can call ``paramUpdate`` with any value. :meth:`push` only marks the key stale; the
+next :meth:`sync` (on the loop thread) reads it from the master again. A push that arrives
+while a key is being read marks it stale again, so the newest value always wins.
+
+A description whose reply is larger than the transport's cap
+(:data:`solver.live.rpc.MAX_REPLY_BYTES`) is that robot's error (an
+:class:`~solver.errors.InputError` as its value), not the master's.
 
 Not here: which keys are descriptions (:mod:`solver.live.discovery`).
 """
@@ -21,7 +26,14 @@ import threading
 from collections.abc import Iterable
 from typing import Any
 
-from solver.live.master import MISSING, MasterClient, MasterError
+from solver.errors import InputError
+from solver.live.master import (
+    MISSING,
+    MasterClient,
+    MasterError,
+    MasterUnreachable,
+    ReplyTooLarge,
+)
 
 __all__ = ["Descriptions"]
 
@@ -39,49 +51,74 @@ class Descriptions:
         self.node_uri = node_uri
         self._lock = threading.Lock()
         self._values: dict[str, Any] = {}
-        self._generation: dict[str, int] = {}
+        self._stale: set[str] = set()
         self._subscribed: set[str] = set()
 
     def sync(self, keys: Iterable[str]) -> None:
-        """Follow exactly ``keys``: read the new ones, forget (and unsubscribe) the others."""
+        """Follow exactly ``keys``: read the new ones and those pushed since, forget (and
+        unsubscribe) the others."""
         wanted = {_key(k) for k in keys}
         with self._lock:
             gone = sorted(set(self._values) - wanted)
             new = sorted(wanted - set(self._values))
             for key in gone:
                 del self._values[key]
-                self._generation.pop(key, None)
             for key in new:
                 self._values[key] = MISSING
-                self._generation[key] = 0
+            self._stale -= set(gone)
+            # A new key is read below in any case: a push for it meanwhile changes nothing.
+            self._stale -= set(new)
         if self.node_uri is None:
-            if new:
-                for key, value in self.client.get_params(new).items():
-                    self._store(key, 0, value)
-            return
-        stale = [key for key in gone if key in self._subscribed]
-        if stale:
-            self.client.unsubscribe_params(self.node_uri, stale)
-            self._subscribed.difference_update(stale)
-        for key in new:
-            self._subscribed.add(key)
-            self._store(key, 0, self.client.subscribe_param(self.node_uri, key))
-
-    def _store(self, key: str, generation: int, value: Any) -> None:
+            self._read(new)
+        else:
+            stale = [key for key in gone if key in self._subscribed]
+            if stale:
+                self.client.unsubscribe_params(self.node_uri, stale)
+                self._subscribed.difference_update(stale)
+            for key in new:
+                self._subscribed.add(key)
+                self._store(key, self._subscribed_value(self.node_uri, key))
         with self._lock:
-            # Unchanged generation: no push came in meanwhile, so this value is the newest.
-            if self._generation.get(key) == generation:
+            pushed = sorted(self._stale)
+            self._stale.clear()
+        for key in pushed:
+            self._store(key, self.client.get_param_bounded(key))
+
+    def _read(self, keys: list[str]) -> None:
+        """Values of ``keys`` in one round trip; one by one when that reply is too large, so
+        that only the description past the cap is an error."""
+        if not keys:
+            return
+        try:
+            values = self.client.get_params(keys)
+        except ReplyTooLarge:
+            values = {key: self.client.get_param_bounded(key) for key in keys}
+        for key, value in values.items():
+            self._store(key, value)
+
+    def _subscribed_value(self, node_uri: str, key: str) -> Any:
+        """``subscribeParam``'s value; one the master cannot send (a fault) or past the reply
+        cap is that description's error, not the master's."""
+        try:
+            return self.client.subscribe_param(node_uri, key)
+        except MasterUnreachable:
+            raise
+        except MasterError as error:
+            return InputError.at(key, f"cannot be read from the master: {error.faults[0].message}")
+
+    def _store(self, key: str, value: Any) -> None:
+        with self._lock:
+            if key in self._values:  # not forgotten meanwhile
                 self._values[key] = value
 
-    def push(self, key: str, value: Any) -> bool:
-        """A value the master sent; ``True`` when it is one of the followed keys."""
+    def push(self, key: str) -> bool:
+        """The master (or anyone) said ``key`` changed; ``True`` when it is a followed key,
+        which the next :meth:`sync` reads again."""
         name = _key(key)
         with self._lock:
             if name not in self._values:
                 return False
-            # rosmaster sends an empty dict for a deleted parameter.
-            self._values[name] = MISSING if value == {} else value
-            self._generation[name] += 1
+            self._stale.add(name)
             return True
 
     def get(self, key: str) -> Any:
@@ -96,7 +133,7 @@ class Descriptions:
         """Forget everything: after a master restart its subscriptions are gone too."""
         with self._lock:
             self._values.clear()
-            self._generation.clear()
+            self._stale.clear()
         self._subscribed.clear()
 
     def close(self) -> None:

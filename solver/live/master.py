@@ -11,11 +11,15 @@ can go wrong into one of two errors:
 * :class:`MasterUnreachable`: no answer at all (refused, timed out, dropped): the master is
   down, restarting or on the wrong port;
 * :class:`MasterError`: an answer, but not one a ROS master gives (an HTTP error, an XML-RPC
-  fault, a malformed reply, code 0): the address is not a ROS master, or the master failed.
+  fault, a malformed reply, code 0): the address is not a ROS master, or the master failed;
+  :class:`ReplyTooLarge` when the reply is past the byte cap (a caller may treat that as the
+  value's fault rather than the master's).
 
-Every call has a timeout (the socket's, for connecting and for each read), so a master that
-hangs is reported instead of hanging the caller. Connections are kept alive between calls
-(rosmaster speaks HTTP/1.1). :meth:`MasterClient.observe` reads everything one poll needs in a
+Every call is bounded (:mod:`solver.live.rpc`): one deadline for the whole call, however
+slowly the reply trickles in; a cap on the bytes of a reply (compressed or not); values nested
+too deep are not built. A master that hangs, floods or nests is reported instead of hanging or
+exhausting the caller. Connections are kept alive between calls (rosmaster speaks HTTP/1.1).
+:meth:`MasterClient.observe` reads everything one poll needs in a
 single round trip through ``system.multicall``, which rosmaster's server offers; against a
 master without it, it falls back to one call per method.
 
@@ -30,6 +34,7 @@ import enum
 import http.client
 import ipaddress
 import os
+import re
 import xmlrpc.client
 from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass
@@ -38,6 +43,7 @@ from urllib.parse import urlsplit
 from xml.parsers.expat import ExpatError
 
 from solver.errors import InputError, SolverError
+from solver.live.rpc import BoundedTransport, OversizedReply
 
 __all__ = [
     "MISSING",
@@ -45,8 +51,10 @@ __all__ = [
     "MasterError",
     "MasterUnreachable",
     "Observation",
+    "ReplyTooLarge",
     "is_loopback",
     "master_uri",
+    "node_api",
 ]
 
 SUCCESS: Final = 1
@@ -70,6 +78,10 @@ class MasterUnreachable(MasterError):
     """The master did not answer at all: refused, timed out, or the connection dropped."""
 
 
+class ReplyTooLarge(MasterError):
+    """The reply was longer than :data:`solver.live.rpc.MAX_REPLY_BYTES` (it was not read)."""
+
+
 @dataclass(frozen=True, slots=True)
 class Observation:
     """Everything one poll reads from the master, in one round trip.
@@ -88,6 +100,10 @@ class Observation:
     params: tuple[tuple[str, Any], ...] = ()
 
 
+# A host name as DNS and /etc/hosts have them (an IP address literal is checked apart).
+_HOST = re.compile(r"[A-Za-z0-9_](?:[A-Za-z0-9._-]{0,252})")
+
+
 def master_uri(text: str | None) -> str:
     """``http://host:port`` checked and normalised (trailing slash); :class:`InputError` if bad.
 
@@ -100,25 +116,56 @@ def master_uri(text: str | None) -> str:
             "<arguments>",
             "no ROS master given: pass --master http://HOST:PORT or set ROS_MASTER_URI",
         )
-    parts = urlsplit(given.strip())
+    uri = _http_uri(given.strip())
+    if uri is None:
+        raise InputError.at(
+            "<arguments>",
+            f"{where}: expected a ROS master URI like http://127.0.0.1:11311, got {_quoted(given)}",
+        )
+    return uri
+
+
+def node_api(text: object) -> str | None:
+    """A node's XML-RPC API URI (``http://host:port/``) normalised, or ``None`` when ``text``
+    is anything else (``rosrpc://...``, a malformed address, not text): what a master lists
+    for a node was written by that node, a stranger."""
+    return _http_uri(text.strip()) if isinstance(text, str) and len(text) <= 1000 else None
+
+
+def _http_uri(text: str) -> str | None:
     try:
+        parts = urlsplit(text)
         port = parts.port
-    except ValueError:
-        port = None
+    except ValueError:  # "http://[::1", a port that is no number or out of range
+        return None
+    host = parts.hostname
     if (
         parts.scheme != "http"
-        or not parts.hostname
+        or not host
         or port is None
         or parts.query
         or parts.fragment
         or parts.path not in ("", "/")
+        or not (_is_address(host) or _HOST.fullmatch(host))
     ):
-        raise InputError.at(
-            "<arguments>",
-            f"{where}: expected a ROS master URI like http://127.0.0.1:11311, got {given!r}",
-        )
-    host = f"[{parts.hostname}]" if ":" in parts.hostname else parts.hostname
-    return f"http://{host}:{port}/"
+        return None
+    shown = f"[{host}]" if ":" in host else host
+    return f"http://{shown}:{port}/"
+
+
+def _is_address(host: str) -> bool:
+    try:
+        ipaddress.ip_address(host)
+    except ValueError:
+        return False
+    return True
+
+
+def _quoted(text: str, limit: int = 60) -> str:
+    """A stranger's text in a message: escaped by ``repr``, at most ``limit`` characters."""
+    if len(text) <= limit:
+        return repr(text)
+    return repr(text[:limit])[:-1] + f"...' (cut from {len(text):,} characters)"
 
 
 def is_loopback(uri: str) -> bool:
@@ -132,37 +179,32 @@ def is_loopback(uri: str) -> bool:
         return False
 
 
-class _TimeoutTransport(xmlrpc.client.Transport):
-    """The standard transport with a socket timeout on connecting and on every read."""
-
-    def __init__(self, timeout: float) -> None:
-        super().__init__(use_builtin_types=True)
-        self.timeout = timeout
-
-    def make_connection(self, host: Any) -> http.client.HTTPConnection:
-        connection = super().make_connection(host)
-        connection.timeout = self.timeout
-        return connection
-
-
 class MasterClient:
     """Calls to one ROS master as one caller (a ROS node name such as ``/teleop_ui_watch``).
 
-    Not thread-safe: one client per thread (the standard library's proxy is not).
+    ``timeout`` bounds each whole call (see :mod:`solver.live.rpc`). Not thread-safe: one
+    client per thread (the standard library's proxy is not), except :meth:`cut_off`.
     """
 
     def __init__(self, uri: str, *, caller_id: str = "/teleop_ui", timeout: float = 2.0) -> None:
         self.uri = uri
         self.caller_id = caller_id
         self.timeout = timeout
-        self._transport = _TimeoutTransport(timeout)
+        self._transport = BoundedTransport(timeout)
         self._proxy = xmlrpc.client.ServerProxy(
-            uri, transport=self._transport, use_builtin_types=True
+            uri,
+            transport=self._transport,  # type: ignore[arg-type]  # duck-typed: request, close
+            use_builtin_types=True,
         )
         self._multicall: bool | None = None  # unknown until the first batch
 
     def close(self) -> None:
         self._transport.close()
+
+    def cut_off(self, when: float | None) -> None:
+        """Every call ends by ``when`` (:func:`time.monotonic`), the one under way included;
+        ``None`` lifts it. Thread-safe: a stopping watcher calls it from a signal handler."""
+        self._transport.cut_off(when)
 
     # -- the calls -----------------------------------------------------------------------
 
@@ -175,12 +217,21 @@ class MasterClient:
         return value if code == SUCCESS else MISSING
 
     def get_params(self, keys: Sequence[str]) -> dict[str, Any]:
-        """Several parameters in one round trip: key -> value or :data:`MISSING`."""
+        """Several parameters in one round trip: key -> value or :data:`MISSING`, or an
+        :class:`~solver.errors.InputError` for a value the master could not send (a fault: a
+        value too deep for rosmaster to marshal). :class:`ReplyTooLarge` for the whole."""
         replies = self._batch([("getParam", key) for key in keys])
-        return {
-            key: value if code == SUCCESS else MISSING
-            for key, (code, _, value) in zip(keys, replies, strict=True)
-        }
+        return {key: _param_value(key, reply) for key, reply in zip(keys, replies, strict=True)}
+
+    def get_param_bounded(self, key: str) -> Any:
+        """:meth:`get_param`, with a value the master could not send or that is past the reply
+        cap as an :class:`~solver.errors.InputError` (that value's fault, not the master's)."""
+        try:
+            return _param_value(key, self._call("getParam", key))
+        except MasterUnreachable:
+            raise
+        except MasterError as error:
+            return _param_value(key, error)
 
     def set_param(self, key: str, value: Any) -> None:
         self._value("setParam", key, value)
@@ -200,11 +251,10 @@ class MasterClient:
 
     def unsubscribe_params(self, caller_api: str, keys: Iterable[str]) -> None:
         """Several unsubscriptions in one round trip."""
-        for code, message, _ in self._batch(
-            [("unsubscribeParam", caller_api, key) for key in keys]
-        ):
+        for reply in self._batch([("unsubscribeParam", caller_api, key) for key in keys]):
+            code, message, _ = _ok(reply)
             if code != SUCCESS:
-                raise MasterError.at(self.uri, message, path="unsubscribeParam")
+                raise MasterError.at(self.uri, _shown(message), path="unsubscribeParam")
 
     def register_publisher(self, topic: str, message_type: str, caller_api: str) -> None:
         self._value("registerPublisher", topic, message_type, caller_api)
@@ -221,42 +271,67 @@ class MasterClient:
     def lookup_node(self, name: str) -> str | None:
         """The XML-RPC URI of node ``name``, or ``None`` when the master does not know it."""
         code, _, value = self._call("lookupNode", name)
-        return str(value) if code == SUCCESS else None
+        return value if code == SUCCESS and isinstance(value, str) else None
 
     def observe(self, params: str | None = None) -> Observation:
-        """The graph and parameter names (and the subtree ``params``) in one round trip."""
-        calls: list[tuple[Any, ...]] = [
+        """The graph and parameter names (and the subtree ``params``) in one round trip.
+
+        A value under ``params`` that the master cannot send (a fault) or that makes the reply
+        too large does not fail the poll: each child of ``params`` is then read on its own, and
+        the unreadable one is an :class:`~solver.errors.InputError` in ``params``."""
+        graph: list[tuple[Any, ...]] = [
             ("getPid",),
             ("getSystemState",),
             ("getTopicTypes",),
             ("getParamNames",),
         ]
-        if params is not None:
-            calls.append(("getParam", params))
-        replies = self._batch(calls)
-        for (method, *_), (code, message, _) in zip(calls, replies, strict=True):
-            if code != SUCCESS and method != "getParam":
-                raise MasterError.at(self.uri, message or f"code {code}", path=method)
-        pid = self._pid(replies[0][2])
-        state = replies[1][2]
+        subtree: Any = {}
+        try:
+            replies = self._batch([*graph, *([("getParam", params)] if params else [])])
+        except ReplyTooLarge:
+            if not params:
+                raise
+            replies, subtree = self._batch(graph), None
+        for (method, *_), reply in zip(graph, replies, strict=False):
+            if isinstance(reply, MasterError):
+                raise reply
+            code, message, _ = reply
+            if code != SUCCESS:
+                raise MasterError.at(self.uri, _shown(message) or f"code {code}", path=method)
+        pid = self._pid(_ok(replies[0])[2])
+        state = _ok(replies[1])[2]
         if not isinstance(state, list) or len(state) != 3:
             raise self._malformed("getSystemState", "[publishers, subscribers, services]")
-        subtree = replies[4][2] if params is not None and replies[4][0] == SUCCESS else {}
+        names = self._names(_ok(replies[3])[2])
+        if params and subtree is not None:
+            reply = replies[4]
+            subtree = (
+                None if isinstance(reply, MasterError) else reply[2] if reply[0] == SUCCESS else {}
+            )
+        if params and subtree is None:
+            subtree = self._children(params, names)
         return Observation(
             pid=pid,
             publishers=self._pairs_of_lists(state[0]),
             subscribers=self._pairs_of_lists(state[1]),
-            topic_types=self._pairs(replies[2][2]),
-            param_names=self._names(replies[3][2]),
+            topic_types=self._pairs(_ok(replies[2])[2]),
+            param_names=names,
             params=tuple(sorted(subtree.items())) if isinstance(subtree, dict) else (),
         )
+
+    def _children(self, namespace: str, names: Sequence[str]) -> dict[str, Any]:
+        """The children of ``namespace``, read one by one, each bounded on its own."""
+        prefix = namespace.rstrip("/") + "/"
+        children = sorted({n[len(prefix) :].split("/")[0] for n in names if n.startswith(prefix)})
+        found = {child: self.get_param_bounded(prefix + child) for child in children}
+        return {child: value for child, value in found.items() if value is not MISSING}
 
     # -- plumbing ------------------------------------------------------------------------
 
     def _value(self, method: str, *args: Any) -> Any:
         code, message, value = self._call(method, *args)
         if code != SUCCESS:
-            raise MasterError.at(self.uri, message or f"code {code}", path=method)
+            raise MasterError.at(self.uri, _shown(message) or f"code {code}", path=method)
         return value
 
     def _call(self, method: str, *args: Any) -> tuple[int, str, Any]:
@@ -264,8 +339,11 @@ class MasterClient:
             reply = getattr(self._proxy, method)(self.caller_id, *args)
         return self._triple(method, reply)
 
-    def _batch(self, calls: Sequence[tuple[Any, ...]]) -> list[tuple[int, str, Any]]:
-        """Calls (method, *args) in one ``system.multicall``, or one by one without it."""
+    def _batch(self, calls: Sequence[tuple[Any, ...]]) -> list[tuple[int, str, Any] | MasterError]:
+        """Calls (method, *args) in one ``system.multicall``, or one by one without it. Each
+        reply is ``[code, message, value]`` or the :class:`MasterError` of that call alone (a
+        fault, a malformed item); a failure of the whole (no answer, a reply past the cap)
+        raises."""
         if not calls:
             return []
         if self._multicall is not False:
@@ -275,7 +353,7 @@ class MasterClient:
             try:
                 with _translated(self.uri, "system.multicall"):
                     results = list(multicall().results)
-            except MasterUnreachable:
+            except (MasterUnreachable, ReplyTooLarge):
                 raise
             except MasterError:
                 if self._multicall:
@@ -285,22 +363,35 @@ class MasterClient:
                 self._multicall = False
             else:
                 self._multicall = True
+                if len(results) != len(calls):
+                    raise self._malformed("system.multicall", "one reply per call")
                 return [
                     self._multicall_item(call[0], item)
                     for call, item in zip(calls, results, strict=True)
                 ]
-        return [self._call(method, *args) for method, *args in calls]
+        return [self._single(method, *args) for method, *args in calls]
 
-    def _multicall_item(self, method: str, item: Any) -> tuple[int, str, Any]:
+    def _single(self, method: str, *args: Any) -> tuple[int, str, Any] | MasterError:
+        try:
+            return self._call(method, *args)
+        except (MasterUnreachable, ReplyTooLarge):
+            raise
+        except MasterError as error:
+            return error
+
+    def _multicall_item(self, method: str, item: Any) -> tuple[int, str, Any] | MasterError:
         if isinstance(item, dict):
-            raise MasterError.at(
+            return MasterError.at(
                 self.uri,
-                f"XML-RPC fault {item.get('faultCode')}: {item.get('faultString')}",
+                f"XML-RPC fault {_shown(item.get('faultCode'))}: {_shown(item.get('faultString'))}",
                 path=method,
             )
         if not isinstance(item, list) or len(item) != 1:
-            raise self._malformed(method, "a one-element list from system.multicall")
-        return self._triple(method, item[0])
+            return self._malformed(method, "a one-element list from system.multicall")
+        try:
+            return self._triple(method, item[0])
+        except MasterError as error:
+            return error
 
     def _triple(self, method: str, reply: Any) -> tuple[int, str, Any]:
         if (
@@ -312,7 +403,7 @@ class MasterClient:
             raise self._malformed(method, "[code, message, value]")
         code, message, value = reply
         if code not in (SUCCESS, CALLER_ERROR):
-            raise MasterError.at(self.uri, f"the master failed: {message}", path=method)
+            raise MasterError.at(self.uri, f"the master failed: {_shown(message)}", path=method)
         return code, message, value
 
     def _malformed(self, method: str, expected: str) -> MasterError:
@@ -353,6 +444,21 @@ class MasterClient:
         return tuple(sorted(value))
 
 
+def _ok(reply: tuple[int, str, Any] | MasterError) -> tuple[int, str, Any]:
+    if isinstance(reply, MasterError):
+        raise reply
+    return reply
+
+
+def _param_value(key: str, reply: tuple[int, str, Any] | MasterError) -> Any:
+    """A getParam reply as a value: the value, :data:`MISSING`, or an :class:`InputError`
+    naming the key when the master could not send it."""
+    if isinstance(reply, MasterError):
+        return InputError.at(key, f"cannot be read from the master: {reply.faults[0].message}")
+    code, _, value = reply
+    return value if code == SUCCESS else MISSING
+
+
 @contextlib.contextmanager
 def _translated(uri: str, method: str) -> Iterator[None]:
     """Turns whatever the standard library raises for one call into a master error."""
@@ -360,12 +466,16 @@ def _translated(uri: str, method: str) -> Iterator[None]:
         yield
     except xmlrpc.client.Fault as error:
         raise MasterError.at(
-            uri, f"XML-RPC fault {error.faultCode}: {error.faultString}", path=method
+            uri,
+            f"XML-RPC fault {_shown(error.faultCode)}: {_shown(error.faultString)}",
+            path=method,
         ) from None
     except xmlrpc.client.ProtocolError as error:
         raise MasterError.at(
-            uri, f"not a ROS master: HTTP {error.errcode} {error.errmsg}", path=method
+            uri, f"not a ROS master: HTTP {error.errcode} {_shown(error.errmsg)}", path=method
         ) from None
+    except OversizedReply as error:
+        raise ReplyTooLarge.at(uri, f"not read: {error}", path=method) from None
     # No answer at all: which call it was says nothing to the user.
     except TimeoutError:
         raise MasterUnreachable.at(uri, "the ROS master did not answer in time") from None
@@ -373,6 +483,17 @@ def _translated(uri: str, method: str) -> Iterator[None]:
         reason = getattr(error, "strerror", None) or str(error) or type(error).__name__
         raise MasterUnreachable.at(uri, f"cannot reach the ROS master ({reason})") from None
     except (ExpatError, xmlrpc.client.ResponseError, ValueError, TypeError, OverflowError) as error:
+        # ResponseError's str() is its repr: its own words are its first argument.
+        reason = error.args[0] if error.args and isinstance(error.args[0], str) else str(error)
         raise MasterError.at(
-            uri, f"not a ROS master: unreadable XML-RPC reply ({error})", path=method
+            uri, f"not a ROS master: unreadable XML-RPC reply ({_shown(reason)})", path=method
         ) from None
+
+
+def _shown(value: object, limit: int = 60) -> str:
+    """Text a stranger chose (a fault string, a master's message), escaped and cut short."""
+    if isinstance(value, bool) or not isinstance(value, str | int):
+        return f"<{type(value).__name__}>"
+    text = str(value)
+    shown = repr(text[:limit])[1:-1]
+    return shown + (f"... (cut from {len(text):,} characters)" if len(text) > limit else "")

@@ -15,6 +15,16 @@ The server listens where the master can reach it, chosen as ROS does (:func:`cal
 the loopback address for a master on this machine, else ``ROS_IP`` or ``ROS_HOSTNAME``, else
 the local address of the route to the master.
 
+*What it trusts.* ROS 1 has no authentication: anyone who can reach this port can call it, with
+any caller id. So nothing a call carries is believed: ``paramUpdate`` passes on only the *key*
+(the watcher reads the value from the master again, :mod:`solver.live.descriptions`), and its
+value is never used; ``shutdown`` stops the watcher, as it stops every ROS 1 node
+(``rosnode kill`` sends it), which changes no answer the watcher gives. Requests are bounded as
+replies are (:mod:`solver.live.rpc`): at most :data:`~solver.live.rpc.MAX_REPLY_BYTES` of body,
+no DTD, values nested deeper than :data:`~solver.live.rpc.MAX_DEPTH` not built; a connection
+that stalls is dropped after :data:`REQUEST_TIMEOUT` seconds per read, and at most
+:data:`MAX_CONNECTIONS` requests are served at once (more are closed unanswered).
+
 Not here: what an update means (:mod:`solver.live.descriptions`, :mod:`solver.live.watcher`).
 """
 
@@ -24,17 +34,21 @@ import os
 import socket
 import socketserver
 import threading
+import xmlrpc.client
 from collections.abc import Callable
-from typing import Any
+from typing import Any, Final
 from urllib.parse import urlsplit
 from xmlrpc.server import SimpleXMLRPCRequestHandler, SimpleXMLRPCServer
 
 from solver.errors import InputError
 from solver.live.master import is_loopback
+from solver.live.rpc import MAX_REPLY_BYTES, loads
 
-__all__ = ["NodeServer", "callback_host"]
+__all__ = ["MAX_CONNECTIONS", "REQUEST_TIMEOUT", "NodeServer", "callback_host"]
 
 _OK = 1
+REQUEST_TIMEOUT: Final = 5.0
+MAX_CONNECTIONS: Final = 16
 
 
 def callback_host(master: str) -> str:
@@ -58,11 +72,70 @@ def callback_host(master: str) -> str:
 
 
 class _Server(socketserver.ThreadingMixIn, SimpleXMLRPCServer):
+    """A thread per request, at most :data:`MAX_CONNECTIONS` at once; requests parsed by the
+    bounded parser (:func:`solver.live.rpc.loads`)."""
+
     daemon_threads = True
     allow_reuse_address = True
 
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        self._slots = threading.BoundedSemaphore(MAX_CONNECTIONS)
+
+    def process_request(self, request: Any, client_address: Any) -> None:
+        if not self._slots.acquire(blocking=False):
+            self.shutdown_request(request)  # busy: the caller may try again
+            return
+        try:
+            super().process_request(request, client_address)
+        except BaseException:
+            self._slots.release()
+            raise
+
+    def process_request_thread(self, request: Any, client_address: Any) -> None:
+        try:
+            super().process_request_thread(request, client_address)
+        finally:
+            self._slots.release()
+
+    def _marshaled_dispatch(
+        self,
+        data: Any,
+        dispatch_method: Any = None,  # noqa: ARG002 - the standard signature
+        path: Any = None,  # noqa: ARG002
+    ) -> Any:  # bytes (typeshed says str)
+        """The standard dispatch, with the bounded parser instead of ``xmlrpc.client.loads``."""
+        try:
+            params, method = loads(data)
+            if method is None:
+                raise xmlrpc.client.ResponseError("not a method call")
+            response = self._dispatch(method, params)
+            encoded = xmlrpc.client.dumps((response,), methodresponse=True, allow_none=False)
+        except xmlrpc.client.Fault as fault:
+            encoded = xmlrpc.client.dumps(fault, allow_none=False)
+        except Exception as error:  # a caller's mistake is its answer, never the server's end
+            message = f"{type(error).__name__}: {error}"[:200]
+            encoded = xmlrpc.client.dumps(xmlrpc.client.Fault(1, message))
+        return encoded.encode("utf-8", "xmlcharrefreplace")
+
 
 class _Quiet(SimpleXMLRPCRequestHandler):
+    """The standard handler, bounded: a read that stalls ends the request, and a body longer
+    than the cap is refused unread."""
+
+    timeout = REQUEST_TIMEOUT
+
+    def do_POST(self) -> None:
+        length = self.headers.get("content-length", "")
+        if not length.strip().isdigit() or int(length) > MAX_REPLY_BYTES:
+            self.send_response(413 if length.strip().isdigit() else 411)
+            self.send_header("Content-Length", "0")
+            self.send_header("Connection", "close")
+            self.end_headers()
+            self.close_connection = True
+            return
+        super().do_POST()
+
     def log_message(self, format: str, *args: Any) -> None:
         """Requests are not logged: the watcher's output is its events."""
 
@@ -74,7 +147,7 @@ class NodeServer:
         self,
         host: str,
         master: str,
-        on_param_update: Callable[[str, Any], None],
+        on_param_update: Callable[[str], None],
         on_shutdown: Callable[[str], None],
     ) -> None:
         self.master = master
@@ -129,15 +202,17 @@ class NodeServer:
 
     # -- the node API (every answer is [code, message, value]) ---------------------------
 
-    def _paramUpdate(self, _caller: str, key: str, value: Any) -> list[Any]:
-        self._on_param_update(key, value)
+    def _paramUpdate(self, _caller: Any, key: Any, _value: Any) -> list[Any]:
+        # A hint only (see the module docstring): the value is read from the master again.
+        if isinstance(key, str):
+            self._on_param_update(key)
         return [_OK, "", 0]
 
     def _publisherUpdate(self, _caller: str, _topic: str, _publishers: list[str]) -> list[Any]:
         return [_OK, "", 0]
 
-    def _shutdown(self, _caller: str, message: str = "") -> list[Any]:
-        self._on_shutdown(message)
+    def _shutdown(self, _caller: Any, message: Any = "") -> list[Any]:
+        self._on_shutdown(message if isinstance(message, str) else "")
         return [_OK, "shutting down", 0]
 
     def _getPid(self, _caller: str) -> list[Any]:

@@ -34,6 +34,7 @@ from solver.identify.profile import Profile
 from solver.live.discovery import normalise_namespace
 from solver.live.master import MISSING
 from solver.live.robot import LiveRobot
+from solver.live.values import selection_text
 
 __all__ = [
     "NAMESPACE",
@@ -81,20 +82,18 @@ class ActiveSelection:
 
 
 def read_request(params: Mapping[str, Any]) -> Request:
-    """The request in the ``/teleop_ui`` parameters (keys relative to it)."""
+    """The request in the ``/teleop_ui`` parameters (keys relative to it); a value that is not
+    short text is ignored with a note (:func:`solver.live.values.selection_text`)."""
     notes: list[str] = []
     values: dict[str, str | None] = {}
     for name in ("active_robot", *(param for param, _ in REQUEST_PARAMS)):
         value = params.get(name, MISSING)
-        if value is MISSING or value == "":
+        if value is MISSING:
             values[name] = None
-        elif isinstance(value, str):
-            values[name] = value.strip()
-        else:
-            values[name] = None
-            notes.append(
-                f"{NAMESPACE}/{name} ignored: expected text, got {type(value).__name__} {value!r}"
-            )
+            continue
+        values[name], note = selection_text(f"{NAMESPACE}/{name}", value)
+        if note is not None:
+            notes.append(note)
     robot = values["active_robot"]
     return Request(
         None if robot is None else normalise_namespace(robot),

@@ -29,9 +29,19 @@ node answers ``getPid``): it leaves the first writer's answer there and says so 
 selection's notes. Once that watcher is gone, the parameter is taken over at the next poll.
 Watchers with the same team agree, and leave each other's equal answers alone.
 
+A rival is asked whether it runs (``getPid`` on the node API the master lists for it) for at
+most :data:`_PROBE_TIMEOUT` seconds, and a rival that answered is asked again only after
+:data:`_PROBE_AGAIN` seconds, so a rival node that answers slowly or never costs a poll at most
+that, now and then. A node API that is not ``http://host:port/`` (a node that registered
+``rosrpc://evil:1/``) cannot be a watcher's: its answer is overwritten, with a note.
+
 *Lost*: any failed call, or a new pid (the master restarted between two polls), gives
 ``master_lost``; the watcher retries after one interval, doubling up to ``max_backoff``, and
 when the master answers gives ``master_back`` and synchronises again.
+
+*Stopping* (:meth:`Watcher.stop`: SIGTERM, a ``shutdown`` call, Ctrl-C's handler) cuts off the
+call under way within :data:`_STOP_GRACE` seconds, however the master behaves; closing then
+releases the parameter subscriptions within :data:`_RELEASE_BUDGET` seconds in all.
 
 Nothing here prints: events are yielded to the caller (the CLI writes them).
 
@@ -73,6 +83,7 @@ from solver.live.master import (
     MasterError,
     MasterUnreachable,
     Observation,
+    node_api,
 )
 from solver.live.node import NodeServer, callback_host
 from solver.live.robot import LiveRobot, identify_robot, robot_data, unexpected_error
@@ -87,6 +98,7 @@ from solver.live.selection import (
     ui_configuration_value,
 )
 from solver.live.sources import DescriptionStore, GraphSource
+from solver.live.values import shown_value
 from solver.ros.names import Topic
 
 __all__ = ["Watcher"]
@@ -94,6 +106,12 @@ __all__ = ["Watcher"]
 # Pushes can come in bursts (a launch file setting many parameters); polls triggered by them
 # are at least this far apart.
 _MIN_GAP = 0.01
+# A rival watcher's node is given this long to answer, and asked again after this long.
+_PROBE_TIMEOUT = 1.0
+_PROBE_AGAIN = 5.0
+# After stop(), the call under way ends within this; close() releases subscriptions within that.
+_STOP_GRACE = 0.2
+_RELEASE_BUDGET = 0.5
 _RESULT_KEY = RESULT_PARAM.rsplit("/", 1)[1]
 
 
@@ -161,7 +179,12 @@ class Watcher:
         else:
             caller_id = f"/teleop_ui_watch_{os.getpid()}"
             if push:
-                self._node = NodeServer(callback_host(master), master, self._pushed, self.stop)
+                self._node = NodeServer(
+                    callback_host(master),
+                    master,
+                    self._pushed,
+                    lambda message: self.stop(shown_value(message)),  # a stranger's words
+                )
                 caller_id = _node_name(int(self._node.uri.rsplit(":", 1)[1].strip("/")))
                 self._node.start()
             self.client = MasterClient(master, caller_id=caller_id, timeout=timeout)
@@ -174,6 +197,8 @@ class Watcher:
         self._pid: int | None = None
         self._seq = 0
         self._last_poll = 0.0
+        self._rivals: dict[tuple[str, str], float] = {}  # (node, API) -> when it answered
+        self._probe: MasterClient | None = None
 
     # -- life cycle ----------------------------------------------------------------------
 
@@ -198,10 +223,15 @@ class Watcher:
         self.close()
 
     def stop(self, reason: str = "") -> None:
-        """Make :meth:`events` return (thread-safe; the node's ``shutdown`` calls it too)."""
+        """Make :meth:`events` return, cutting off the call under way (thread-safe; SIGTERM and
+        the node's ``shutdown`` call it)."""
         self.stop_reason = reason or "stopped"
         self._stop.set()
         self._wake.set()
+        when = time.monotonic() + _STOP_GRACE
+        for client in (self.client, self._probe):
+            if isinstance(client, MasterClient):
+                client.cut_off(when)
 
     def wake(self) -> None:
         """Poll now instead of at the next tick (thread-safe)."""
@@ -218,6 +248,8 @@ class Watcher:
             return
         self._closed = True
         if self._node is not None and isinstance(self.client, MasterClient):
+            # Best effort, bounded whatever the master does: it forgets a node that is gone.
+            self.client.cut_off(time.monotonic() + _RELEASE_BUDGET)
             with contextlib.suppress(MasterError):  # gone with the master
                 self.client.unsubscribe_params(self._node.uri, [NAMESPACE])
             self.descriptions.close()
@@ -274,6 +306,8 @@ class Watcher:
                         break
                     batch = self._poll()
             except MasterError as error:
+                if self.stopped:
+                    break  # the call was cut off by stop(): nothing was lost
                 if lost is None:
                     # The event names the master already; the error says what went wrong.
                     lost = "; ".join(fault.message for fault in error.faults)
@@ -309,13 +343,14 @@ class Watcher:
                     self._stop.wait(gap)
                 return
 
-    def _pushed(self, key: str, value: Any) -> None:
-        """A parameter update from the master (on the node's server thread)."""
+    def _pushed(self, key: str) -> None:
+        """A parameter update, from the master or anyone (on the node's server thread): a hint
+        to poll now; the poll reads the values from the master."""
         name = "/" + key.strip("/")
         if (
             name == NAMESPACE
             or name.startswith(NAMESPACE + "/")
-            or (isinstance(self.descriptions, Descriptions) and self.descriptions.push(name, value))
+            or (isinstance(self.descriptions, Descriptions) and self.descriptions.push(name))
         ):
             self._wake.set()
 
@@ -330,7 +365,14 @@ class Watcher:
         self._selection = self._no_selection
         self.descriptions.reset()
         if self._node is not None and isinstance(self.client, MasterClient):
-            self.client.subscribe_param(self._node.uri, NAMESPACE)
+            try:
+                self.client.subscribe_param(self._node.uri, NAMESPACE)
+            except MasterUnreachable:
+                raise
+            except MasterError:
+                # The subscription's reply (the /teleop_ui subtree, unused: polls read it key
+                # by key when they must) could not be sent; at worst changes wait for a poll.
+                pass
         observation = self._observe()
         self._pid = observation.pid
         batch = self._update(observation)
@@ -411,51 +453,73 @@ class Watcher:
         )
         wanted = ui_configuration_value(selection, self.solution, self.caller_id)
         present = params.get(_RESULT_KEY, MISSING)
-        rival = self._rival(present, wanted)
+        rival, note = self._rival(present, wanted)
         if rival is not None and selection is not None:
-            shown = present.get("configuration", "?")
-            selection = dataclasses.replace(
-                selection,
-                notes=(
-                    *selection.notes,
-                    f"{RESULT_PARAM} not written: the watcher {rival} answers there with "
-                    f"configuration {shown}; run one watcher per master, or give every watcher "
-                    f"the same team and rules",
-                ),
+            shown = shown_value(present.get("configuration", "?"))
+            note = (
+                f"{RESULT_PARAM} not written: the watcher {shown_value(rival)} answers there "
+                f"with configuration {shown}; run one watcher per master, or give every "
+                f"watcher the same team and rules"
             )
         elif wanted is None and present is not MISSING:
             self.client.delete_param(RESULT_PARAM)
         elif wanted is not None and _answer(present) != _answer(wanted):
             self.client.set_param(RESULT_PARAM, wanted)
+        if note is not None and selection is not None:
+            selection = dataclasses.replace(selection, notes=(*selection.notes, note))
         data = selection_data(selection, request, self.solution)
         if data == self._selection:
             return []
         self._selection = data
         return [SelectionChanged(0, request, selection)]
 
-    def _rival(self, present: Any, wanted: dict[str, Any] | None) -> str | None:
+    def _rival(self, present: Any, wanted: dict[str, Any] | None) -> tuple[str | None, str | None]:
         """The node name of another watcher, still running, whose different answer is on the
-        master; ``None`` when the parameter is free to write (see the module docstring)."""
+        master (``None`` when the parameter is free to write: see the module docstring), and
+        a note on a writer that cannot be a watcher."""
         if wanted is None or not isinstance(present, dict):
-            return None
+            return None, None
         writer = present.get(WRITER_KEY)
         if (
             not isinstance(writer, str)
             or writer == self.caller_id
             or _answer(present) == _answer(wanted)
         ):
-            return None
-        api = self.client.lookup_node(writer)
+            return None, None
+        listed = self.client.lookup_node(writer)
+        if listed is None:
+            return None, None  # it closed (its subscriptions are gone) or never had a node
+        api = node_api(listed)
         if api is None:
-            return None  # it closed (its parameter subscriptions are gone) or never had a node
-        probe = MasterClient(api, caller_id=self.caller_id, timeout=self.client.timeout)
+            return None, (
+                f"{RESULT_PARAM} was written by {shown_value(writer)}, whose node API "
+                f"{shown_value(listed)} is no XML-RPC address: not a watcher's; overwritten"
+            )
+        now = time.monotonic()
+        answered = self._rivals.get((writer, api))
+        if answered is not None and now - answered < _PROBE_AGAIN:
+            return writer, None
+        if self._answers(api):
+            self._rivals = {(writer, api): now}
+            return writer, None
+        self._rivals.pop((writer, api), None)
+        return None, None  # killed without closing: the master still lists it, nobody answers
+
+    def _answers(self, api: str) -> bool:
+        """Whether the node API ``api`` answers ``getPid`` as a node does, within
+        :data:`_PROBE_TIMEOUT` (and cut off by :meth:`stop`)."""
+        timeout = min(_PROBE_TIMEOUT, self.client.timeout or _PROBE_TIMEOUT)
+        self._probe = MasterClient(api, caller_id=self.caller_id, timeout=timeout)
         try:
-            probe.get_pid()  # a node API answers getPid as the master does
+            if self.stopped:
+                return False
+            self._probe.get_pid()
         except MasterError:
-            return None  # killed without closing: the master still lists it, nobody answers
+            return False
         finally:
-            probe.close()
-        return writer
+            self._probe.close()
+            self._probe = None
+        return True
 
 
 def _answer(value: Any) -> Any:

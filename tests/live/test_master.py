@@ -151,6 +151,11 @@ def test_master_uri_accepts_http_host_and_port(given: str, normalised: str) -> N
         "http://127.0.0.1:port",
         "http://127.0.0.1:11311/RPC2",
         "",
+        "http://[::1",
+        "http://[zz]:11311",
+        "http://exa mple:11311",
+        "http://h:99999",
+        "http://h\x00st:11311",
     ],
 )
 def test_master_uri_rejects_anything_else(given: str) -> None:

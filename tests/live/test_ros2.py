@@ -313,3 +313,61 @@ def test_assign_ros2_answers_for_one_robot_and_refuses_an_unknown_one(
     assert unknown.returncode == 2
     assert unknown.stderr.startswith(f"<arguments>: no robot /uav2 on ros2://domain/{domain.id}")
     assert "robots there: /uav1, /ugv1" in unknown.stderr
+
+
+def test_hostile_answers_and_a_10_mb_selection_end_in_notes_not_a_crash(
+    domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution
+) -> None:
+    """Issue 23 item 6, issue 30 item 7: `'[' * 200000` and a deeply nested object on the answer
+    topic, a 10 MB active robot: bounded before decoding or echoing."""
+    from cyclonedds.pub import DataWriter
+    from cyclonedds.topic import Topic
+
+    from tests.live.ros2_robot import LATCHED
+
+    domain.rover("/ugv1")
+    watch = watch_ros2()
+    watch.wait_for(configured("/ugv1", rover_configuration(solution)), "/ugv1")
+    operator = Operator(domain.id)
+    hostile: Any = DataWriter(
+        operator.participant,
+        Topic(operator.participant, "rt/teleop_ui/ui_configuration", operator.String),
+        qos=LATCHED,
+    )
+    try:
+        for text in ("[" * 200_000, '{"a":' * 100_000 + "1" + "}" * 100_000):
+            mark = watch.mark()
+            hostile.write(operator.String(text))
+            operator.control(f"Driving{len(text)}")  # an event after the hostile answer is read
+            asked = f"Driving{len(text)}"
+            watch.wait_for(
+                lambda d, asked=asked: (  # type: ignore[misc]
+                    d["event"] == "selection_changed" and d["motion_control"] == asked
+                ),
+                "the selection after a hostile answer",
+                after=mark,
+            )
+        operator.activate("/" + "u" * 10_000_000)
+        ignored = watch.wait_for(
+            lambda d: (
+                d["event"] == "selection_changed"
+                and any("active_robot ignored" in note for note in d["notes"])
+            ),
+            "the 10 MB active robot ignored",
+        )
+        assert ignored["robot"] is None
+        assert ignored["notes"] == [
+            "/teleop_ui/active_robot ignored: 10,000,001 characters, longer than 200 "
+            f"(/{'u' * 59}... (cut from 10,000,001 characters))"
+        ]
+        operator.control("Driving")
+        operator.activate("/ugv1")
+        selected = watch.wait_for(
+            lambda d: d["event"] == "selection_changed" and d["robot"] == "/ugv1",
+            "the selection of /ugv1 after it all",
+        )
+        assert selected["assignment"]["configuration"] == rover_configuration(solution)
+        assert watch.error is None
+    finally:
+        hostile.__del__()
+        operator.close()

@@ -48,8 +48,8 @@ def test_the_request_is_read_from_the_teleop_ui_parameters() -> None:
     assert odd.robot is None
     assert odd.sensor_type is None
     assert odd.notes == (
-        "/teleop_ui/active_robot ignored: expected text, got int 7",
-        "/teleop_ui/active_sensor_type ignored: expected text, got list ['x']",
+        "/teleop_ui/active_robot ignored: expected text, got a number (7)",
+        "/teleop_ui/active_sensor_type ignored: expected text, got a list",
     )
 
 

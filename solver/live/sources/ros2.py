@@ -49,6 +49,7 @@ from typing import Any
 from solver.errors import InputError
 from solver.live.master import MISSING, Observation
 from solver.live.sources import DescriptionStore
+from solver.live.values import bounded_json
 
 __all__ = [
     "ACTIVE_TOPIC",
@@ -326,14 +327,20 @@ class DdsGraph:
         self.descriptions.close()
         self.participant.__del__()
 
-    def settle(self, quiet: float = 0.5, limit: float = 5.0) -> None:
-        """Wait until discovery is quiet (nothing new for ``quiet`` seconds, at most ``limit``):
-        a one-shot snapshot on DDS must give the other participants time to be discovered."""
+    def settle(
+        self,
+        quiet: float = 0.5,
+        limit: float = 5.0,
+        stopped: Callable[[], bool] = lambda: False,
+    ) -> None:
+        """Wait until discovery is quiet (nothing new for ``quiet`` seconds, at most ``limit``,
+        or until ``stopped()``): a one-shot snapshot on DDS must give the other participants
+        time to be discovered."""
         import time
 
         start = last_change = time.monotonic()
         seen: tuple[Any, ...] = ()
-        while time.monotonic() - start < limit:
+        while time.monotonic() - start < limit and not stopped():
             observation = self.observe("/teleop_ui")
             self.descriptions.sync(
                 name for name in observation.param_names if name.endswith("/robot_description")
@@ -363,8 +370,8 @@ class DdsGraph:
             text = getattr(sample, "data", None)
             if isinstance(text, str):
                 try:
-                    value = json.loads(text)
-                except ValueError:
+                    value = bounded_json(text)
+                except ValueError:  # not JSON, too long or too deep: not an answer to keep
                     value = text
                 self._answer_value = MISSING if value is None else value
         node_of: dict[bytes, str] = {}
