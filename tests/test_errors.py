@@ -19,6 +19,9 @@ PRIVATE_SIGNALS = {
     "solver.identify.xacro.expressions.GuardError",
     # Raised by the RE2 compile helper and turned into a located fault by the profile reader.
     "solver.identify.profile.PatternError",
+    # Raised by the bounded XML-RPC transport, turned into MasterError (ReplyTooLarge) by the
+    # master client that called it.
+    "solver.live.rpc.OversizedReply",
 }
 # Modules whose import needs an optional extra that may be absent.
 OPTIONAL = ("solver.live.sources.ros2",)

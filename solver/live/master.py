@@ -44,6 +44,7 @@ from xml.parsers.expat import ExpatError
 
 from solver.errors import InputError, SolverError
 from solver.live.rpc import BoundedTransport, OversizedReply
+from solver.untrusted import shown
 
 __all__ = [
     "MISSING",
@@ -120,7 +121,8 @@ def master_uri(text: str | None) -> str:
     if uri is None:
         raise InputError.at(
             "<arguments>",
-            f"{where}: expected a ROS master URI like http://127.0.0.1:11311, got {_quoted(given)}",
+            f"{where}: expected a ROS master URI like http://127.0.0.1:11311, "
+            f"got {shown(given, quoted=True)}",
         )
     return uri
 
@@ -149,8 +151,8 @@ def _http_uri(text: str) -> str | None:
         or not (_is_address(host) or _HOST.fullmatch(host))
     ):
         return None
-    shown = f"[{host}]" if ":" in host else host
-    return f"http://{shown}:{port}/"
+    bracketed = f"[{host}]" if ":" in host else host
+    return f"http://{bracketed}:{port}/"
 
 
 def _is_address(host: str) -> bool:
@@ -159,13 +161,6 @@ def _is_address(host: str) -> bool:
     except ValueError:
         return False
     return True
-
-
-def _quoted(text: str, limit: int = 60) -> str:
-    """A stranger's text in a message: escaped by ``repr``, at most ``limit`` characters."""
-    if len(text) <= limit:
-        return repr(text)
-    return repr(text[:limit])[:-1] + f"...' (cut from {len(text):,} characters)"
 
 
 def is_loopback(uri: str) -> bool:
@@ -254,7 +249,7 @@ class MasterClient:
         for reply in self._batch([("unsubscribeParam", caller_api, key) for key in keys]):
             code, message, _ = _ok(reply)
             if code != SUCCESS:
-                raise MasterError.at(self.uri, _shown(message), path="unsubscribeParam")
+                raise MasterError.at(self.uri, shown(message), path="unsubscribeParam")
 
     def register_publisher(self, topic: str, message_type: str, caller_api: str) -> None:
         self._value("registerPublisher", topic, message_type, caller_api)
@@ -297,7 +292,7 @@ class MasterClient:
                 raise reply
             code, message, _ = reply
             if code != SUCCESS:
-                raise MasterError.at(self.uri, _shown(message) or f"code {code}", path=method)
+                raise MasterError.at(self.uri, shown(message) or f"code {code}", path=method)
         pid = self._pid(_ok(replies[0])[2])
         state = _ok(replies[1])[2]
         if not isinstance(state, list) or len(state) != 3:
@@ -331,7 +326,7 @@ class MasterClient:
     def _value(self, method: str, *args: Any) -> Any:
         code, message, value = self._call(method, *args)
         if code != SUCCESS:
-            raise MasterError.at(self.uri, _shown(message) or f"code {code}", path=method)
+            raise MasterError.at(self.uri, shown(message) or f"code {code}", path=method)
         return value
 
     def _call(self, method: str, *args: Any) -> tuple[int, str, Any]:
@@ -383,7 +378,7 @@ class MasterClient:
         if isinstance(item, dict):
             return MasterError.at(
                 self.uri,
-                f"XML-RPC fault {_shown(item.get('faultCode'))}: {_shown(item.get('faultString'))}",
+                f"XML-RPC fault {shown(item.get('faultCode'))}: {shown(item.get('faultString'))}",
                 path=method,
             )
         if not isinstance(item, list) or len(item) != 1:
@@ -403,7 +398,7 @@ class MasterClient:
             raise self._malformed(method, "[code, message, value]")
         code, message, value = reply
         if code not in (SUCCESS, CALLER_ERROR):
-            raise MasterError.at(self.uri, f"the master failed: {_shown(message)}", path=method)
+            raise MasterError.at(self.uri, f"the master failed: {shown(message)}", path=method)
         return code, message, value
 
     def _malformed(self, method: str, expected: str) -> MasterError:
@@ -467,12 +462,12 @@ def _translated(uri: str, method: str) -> Iterator[None]:
     except xmlrpc.client.Fault as error:
         raise MasterError.at(
             uri,
-            f"XML-RPC fault {_shown(error.faultCode)}: {_shown(error.faultString)}",
+            f"XML-RPC fault {shown(error.faultCode)}: {shown(error.faultString)}",
             path=method,
         ) from None
     except xmlrpc.client.ProtocolError as error:
         raise MasterError.at(
-            uri, f"not a ROS master: HTTP {error.errcode} {_shown(error.errmsg)}", path=method
+            uri, f"not a ROS master: HTTP {error.errcode} {shown(error.errmsg)}", path=method
         ) from None
     except OversizedReply as error:
         raise ReplyTooLarge.at(uri, f"not read: {error}", path=method) from None
@@ -486,14 +481,5 @@ def _translated(uri: str, method: str) -> Iterator[None]:
         # ResponseError's str() is its repr: its own words are its first argument.
         reason = error.args[0] if error.args and isinstance(error.args[0], str) else str(error)
         raise MasterError.at(
-            uri, f"not a ROS master: unreadable XML-RPC reply ({_shown(reason)})", path=method
+            uri, f"not a ROS master: unreadable XML-RPC reply ({shown(reason)})", path=method
         ) from None
-
-
-def _shown(value: object, limit: int = 60) -> str:
-    """Text a stranger chose (a fault string, a master's message), escaped and cut short."""
-    if isinstance(value, bool) or not isinstance(value, str | int):
-        return f"<{type(value).__name__}>"
-    text = str(value)
-    shown = repr(text[:limit])[1:-1]
-    return shown + (f"... (cut from {len(text):,} characters)" if len(text) > limit else "")

@@ -27,6 +27,7 @@ from typing import Any, Final
 
 from solver.errors import SolverError
 from solver.live.rpc import MAX_DEPTH, TOO_DEEP
+from solver.untrusted import shown
 
 __all__ = [
     "MAX_DEPTH",
@@ -40,7 +41,6 @@ __all__ = [
 
 MAX_SELECTION_CHARS: Final = 200
 MAX_JSON_CHARS: Final = 1024 * 1024
-_SHOWN_CHARS = 60
 # A JSON string (skipped whole, possessively: no backtracking) or one bracket.
 _JSON_TOKENS = re.compile(r'"(?:[^"\\]++|\\.)*+"|[\[{]|[\]}]')
 
@@ -72,9 +72,9 @@ def kind_of(value: Any) -> str:
     if isinstance(value, bool):
         return f"a boolean ({value})"
     if isinstance(value, int | float):
-        return f"a number ({shown_value(str(value))})"
+        return f"a number ({shown(value)})"
     if isinstance(value, str):
-        return f"text ({shown_value(value)})"
+        return f"text ({shown(value)})"
     if isinstance(value, bytes):
         return "binary data"
     if isinstance(value, list):
@@ -85,16 +85,12 @@ def kind_of(value: Any) -> str:
 
 
 def shown_value(value: Any) -> str:
-    """``value`` as a message shows it: text escaped and cut to 60 characters (saying so), a
-    number as written, anything else as its kind (:func:`kind_of`)."""
-    if isinstance(value, int | float) and not isinstance(value, bool):
-        value = str(value)
-    if not isinstance(value, str):
-        return f"({kind_of(value)})"
-    shown = repr(value[:_SHOWN_CHARS])[1:-1]
-    if len(value) > _SHOWN_CHARS:
-        shown += f"... (cut from {len(value):,} characters)"
-    return shown
+    """``value`` as a message shows it: text escaped and cut to 60 characters, saying so
+    (:func:`solver.untrusted.shown`), a number as written, anything else as its kind
+    (:func:`kind_of`)."""
+    if isinstance(value, str | int | float) and not isinstance(value, bool):
+        return shown(value)
+    return f"({kind_of(value)})"
 
 
 def selection_text(name: str, value: Any) -> tuple[str | None, str | None]:
