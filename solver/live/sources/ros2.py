@@ -50,6 +50,7 @@ from solver.errors import InputError
 from solver.live.master import MISSING, Observation
 from solver.live.sources import DescriptionStore
 from solver.live.values import bounded_json
+from solver.untrusted import shown
 
 __all__ = [
     "ACTIVE_TOPIC",
@@ -152,6 +153,24 @@ def _require_cyclonedds() -> None:
             "<arguments>",
             "--ros2 needs the Cyclone DDS Python binding: pip install 'teleop-ui[ros2]'",
         ) from error
+
+
+def _join(participant: Any, domain: int) -> Any:
+    """A participant on ``domain``; a located error when Cyclone DDS refuses (a malformed
+    ``CYCLONEDDS_URI``, an interface that does not exist)."""
+    from cyclonedds.core import DDSException
+
+    try:
+        return participant(domain)
+    except DDSException as error:
+        configuration = os.environ.get("CYCLONEDDS_URI")
+        where = "CYCLONEDDS_URI" if configuration else "<network>"
+        shown_configuration = f" ({shown(configuration, quoted=True)})" if configuration else ""
+        raise InputError.at(
+            where,
+            f"Cyclone DDS cannot join domain {domain} with this configuration"
+            f"{shown_configuration}: {shown(str(error))}",
+        ) from None
 
 
 def _latched() -> Any:
@@ -260,7 +279,7 @@ class DdsGraph:
             on_data_available=lambda _reader: self._changed()
         )
         self.string_type, discovery = _types()
-        self.participant = DomainParticipant(domain)
+        self.participant = _join(DomainParticipant, domain)
         self._publications = BuiltinDataReader(
             self.participant, BuiltinTopicDcpsPublication, listener=self.listener
         )
