@@ -143,6 +143,21 @@ WATCH = [
         "ROS 2: a new robot's description -> robot_added",
         "",
     ),
+    (
+        "test_studio_answers_a_change_of_case_3",
+        "studio: a change of selection answered over HTTP, Case 3",
+        "<= 100 ms",
+    ),
+    (
+        "test_studio_answers_a_change_of_ten_million_robots",
+        "studio: a change of selection answered over HTTP, 9,990,000 robots",
+        "<= 100 ms",
+    ),
+    (
+        "test_studio_draws_the_radar_chart_of_a_new_selection",
+        "studio: the radar chart of a new selection (matplotlib)",
+        "",
+    ),
     ("test_setting_a_large_description[parsed]", "a 1.5 MB description set, parsed", ""),
     (
         "test_setting_a_large_description[cached]",

@@ -130,8 +130,6 @@ class Workspace:
         folders: Sequence[Path] = (),
     ) -> None:
         self._lock = threading.RLock()
-        self.folder = Path(tempfile.mkdtemp(prefix="teleop-ui-studio-"))
-        self.folder.chmod(0o700)
         self.folders = tuple(folders)
         self._sources: dict[str, RuleSource] = {}
         for path in sorted(shipped_path().glob("*.yaml")):
@@ -148,6 +146,9 @@ class Workspace:
         self._excluded: dict[str, dict[tuple[str, str], dict[str, Removed]]] = {}
         self.fleets: _Kept[str, Fleet] = _Kept(MAX_KEPT_FLEETS)
         self._counter = 0
+        # Made last: a start file that cannot be read leaves no folder behind.
+        self.folder = Path(tempfile.mkdtemp(prefix="teleop-ui-studio-"))
+        self.folder.chmod(0o700)
 
     def _start(self, path: Path, display: str) -> None:
         document = load_document(path, display=display)

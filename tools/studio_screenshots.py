@@ -1,0 +1,141 @@
+"""Screenshots of every view of the design studio, for docs/studio.md.
+
+    python tools/studio_screenshots.py                       # starts a studio of its own
+    python tools/studio_screenshots.py --url http://127.0.0.1:8765/   # a running studio
+
+Without ``--url`` it starts ``teleop-ui studio case3 --fleet examples --port 0`` (loopback), takes
+the pictures and stops it. Each view is driven as a person would (the fleet folder identified,
+two configurations compared, a robot looked up) in Debian's headless Chromium
+(``/usr/bin/chromium``, driven by Playwright's Python package; nothing is downloaded), and
+written to ``docs/studio-<view>.png``. The live view is taken when the studio follows a graph.
+"""
+
+from __future__ import annotations
+
+import argparse
+import re
+import signal
+import subprocess
+import sys
+from pathlib import Path
+
+from playwright.sync_api import Page, expect, sync_playwright
+
+ROOT = Path(__file__).resolve().parent.parent
+CHROMIUM_ARGS = [
+    "--headless",
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+    "--no-first-run",
+]
+
+
+def start() -> tuple[subprocess.Popen[str], str]:
+    process = subprocess.Popen(
+        [
+            sys.executable, "-m", "solver", "studio", "case3",
+            "--fleet", str(ROOT / "examples"), "--port", "0",
+        ],
+        cwd=ROOT,
+        stdout=subprocess.PIPE,
+        text=True,
+        start_new_session=True,
+    )  # fmt: skip
+    assert process.stdout is not None
+    found = re.search(r"http://\S+", process.stdout.readline())
+    if found is None:
+        process.kill()
+        raise SystemExit("the studio did not start")
+    return process, found.group(0)
+
+
+def shoot(page: Page, out: Path, name: str, *, full: bool = False) -> None:
+    path = out / f"studio-{name}.png"
+    page.screenshot(path=path, full_page=full)
+    print(f"wrote {path.relative_to(ROOT) if path.is_relative_to(ROOT) else path}")
+
+
+def views(page: Page, url: str, out: Path) -> None:
+    page.goto(url)
+    expect(page.locator("#total-robots")).not_to_have_text("0")
+    # One change, so the page shows what it cost.
+    page.locator('fieldset[data-key="Humanoid.motion_control"]').get_by_label(
+        "Walking", exact=True
+    ).uncheck()
+    expect(page.locator("#change")).to_contain_text("Last change")
+    page.locator("#radar").evaluate("(image) => image.decode()")
+    shoot(page, out, "selection")
+    page.get_by_role("button", name="Undo").click()
+    expect(page.locator("#change")).to_contain_text("Last change")
+
+    page.get_by_role("link", name="Configurations").click()
+    page.get_by_label("First").fill("1")
+    page.get_by_label("Second").fill("4")
+    page.get_by_role("button", name="Compare").click()
+    expect(page.locator("#comparison")).to_be_visible()
+    shoot(page, out, "configurations")
+
+    page.locator("#configurations").get_by_role("link", name="2", exact=True).click()
+    shoot(page, out, "configuration")
+
+    page.get_by_role("link", name="Robots").click()
+    page.get_by_label("Robot Kinematic Type").select_option("UGV")
+    page.get_by_label("Robot Motion Control").select_option("Driving")
+    page.get_by_label("Sensor Type").select_option("LIDAR")
+    page.get_by_label("No. of Sensors").select_option("12")
+    page.get_by_role("button", name="Look up").click()
+    shoot(page, out, "robots")
+
+    page.get_by_role("link", name="Charts").click()
+    for image in page.locator("img[data-chart]").all():
+        image.evaluate("(image) => image.decode()")
+    shoot(page, out, "charts", full=True)
+
+    page.get_by_role("link", name="Check").click()
+    shoot(page, out, "check")
+
+    page.get_by_role("link", name="Fleet").click()
+    folder = page.get_by_role("button", name=re.compile("^Identify .*examples"))
+    if folder.count():
+        folder.click()
+        expect(page.locator("#robots-title")).to_be_visible()
+    shoot(page, out, "fleet")
+
+    page.get_by_role("link", name="Export").click()
+    shoot(page, out, "export")
+
+    if page.get_by_role("link", name="Live").count():
+        page.get_by_role("link", name="Live").click()
+        shoot(page, out, "live")
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--url", help="a running studio (default: start one)")
+    parser.add_argument("--out", type=Path, default=ROOT / "docs", help="folder (default: docs)")
+    args = parser.parse_args()
+    process = None
+    url = args.url
+    if url is None:
+        process, url = start()
+    try:
+        with sync_playwright() as playwright:
+            browser = playwright.chromium.launch(
+                executable_path="/usr/bin/chromium", args=CHROMIUM_ARGS
+            )
+            page = browser.new_page(viewport={"width": 1280, "height": 860})
+            page.set_default_timeout(60_000)
+            views(page, url, args.out)
+            browser.close()
+    finally:
+        if process is not None:
+            process.send_signal(signal.SIGTERM)
+            process.wait(timeout=30)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
