@@ -89,6 +89,12 @@ def register(subparsers: Any) -> None:
         "robot is mapped to (default: the --team file's rules, else the shipped "
         "paper rules)",
     )
+    parser.add_argument(
+        "--explain",
+        action="store_true",
+        help="also print the decision path for the body: each structure rule in order, "
+        "and why it held or not",
+    )
     add_description_options(parser)
     add_format(parser, ("text", "json"))
     parser.set_defaults(run=run)
@@ -154,7 +160,7 @@ def run(args: argparse.Namespace) -> int:
     solution = solve(team) if team else None
     found = combinations(result, solution, profile) if solution else ()
     if args.format == "json":
-        write(dumps(identification_data(result, found, solution)))
+        write(dumps(identification_data(result, found, solution, explain=args.explain)))
     else:
-        write(render_identification(result, found, solution))
+        write(render_identification(result, found, solution, explain=args.explain))
     return 0

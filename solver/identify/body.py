@@ -1,26 +1,29 @@
-"""Body parts of a robot, read from its URDF tree: wheels, tracks, rotors, limbs, grippers.
+"""Body parts of a robot, read from what its joints do: wheels, rotors, thrusters, limbs, hands.
 
-:func:`detect_body` walks the joint/link tree of a :class:`~solver.identify.urdf.Urdf` with the
-profile's patterns and thresholds:
+:func:`detect_body` reads a :class:`~solver.identify.urdf.Urdf` with the profile's patterns and
+thresholds, actuation first and names last:
 
-1. Special joints first. *Wheels*: movable joints whose name or child link matches the wheel
-   pattern, or that a drive plugin names (``<leftJoint>``). *Rotors*: the rotor pattern.
-   *Gripper* joints: the gripper pattern, and everything below one (finger phalanges). Joints
-   that cannot move (fixed, or revolute/prismatic with lower == upper, as RotorS mounts its
-   sensors) and mimic joints (they follow another joint) are not actuated.
+1. *Joint roles* (:mod:`solver.identify.roles`): every moving joint a plugin names (a drive
+   plugin's wheels, a motor model's rotors, a thruster plugin's thrusters, a fin plugin's fins),
+   then shapes (a vertical swivel carrying one wheel is a caster) and names. Wheels without
+   names are told by where they are. Joints that cannot move (fixed, or revolute/prismatic with
+   lower == upper) and mimic joints (they follow another joint) are not actuated.
 2. The remaining actuated joints form a contracted tree (fixed joints squeezed out). Maximal
    unbranched paths in it are *chains*: a chain that ends in a leaf is a *limb*, one that ends
    where the tree branches is *trunk* (a waist, a torso lift).
 3. Each limb is a *leg*, *head* or *arm* by which pattern most of its joints and links match,
    within the profile's thresholds; an unnamed chain of at least ``arm_min_joints`` joints, or
-   one ending in a gripper, is an arm. A limb carrying wheels, tracks or rotors (Pepper's
-   hip/knee over its wheeled base, a tilt-rotor unit) is a *mount*, not a limb. Anything else
+   one ending in a gripper, is an arm; on a flying body any chain of two joints or more is. A
+   limb carrying wheels, rotors or thrusters (Pepper's hip/knee over its wheeled base, a
+   tilt-rotor unit, a boat's steered engine) is a *mount*, not a limb, except legs that each
+   end in a wheel, three or more of them (a wheel-legged robot walks on them). Anything else
    (a flipper, a 2-joint pan unit without a name) is *other*.
-4. Gazebo model plugins add drive, track and flight evidence (a quadrotor modelled with no
-   rotor joints is still flying).
+4. Gazebo model plugins add drive, track, flight and water evidence (a quadrotor modelled with
+   no rotor joints is still flying; a hull's buoyancy says it floats).
 
-The result, :class:`Body`, holds the parts, the counts the structure rules read
-(:meth:`Body.features`) and one plain sentence of evidence per finding.
+The result, :class:`Body`, holds the parts, each joint's :class:`~solver.identify.roles.Role`
+with the evidence that decided it, the counts the structure rules read (:meth:`Body.features`)
+and one plain sentence of evidence per finding.
 
 Not here: deciding the structure (:mod:`solver.identify.classifier`).
 """
@@ -29,9 +32,10 @@ from __future__ import annotations
 
 from collections import deque
 from collections.abc import Iterable
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 from solver.identify.profile import PartMatcher, Profile
+from solver.identify.roles import Role, RoleReader, main_axis
 from solver.identify.srdf import Srdf
 from solver.identify.urdf import Joint, Urdf
 
@@ -43,6 +47,13 @@ _LIMB_JOINTS = ("revolute", "continuous", "prismatic", "spherical")
 LIMB_KINDS = ("leg", "arm", "head")
 # An unnamed pair of chains on the root this long, beside named arms higher up, are legs.
 _LEG_BY_PLACE_JOINTS = 5
+# Legs that each end in a wheel are legs (a wheel-legged robot) when there are this many.
+_WHEEL_LEGS = 3
+# On a flying body, a chain this long hanging from it is an arm (an aerial manipulator's arm).
+_FLYING_ARM_JOINTS = 2
+# Roles a single joint plays that make it part of the base, not of a limb.
+_MOUNTED = ("wheel", "steering", "caster", "rotor", "thruster")
+_Z_AXIS = 2
 
 
 @dataclass(frozen=True, slots=True)
@@ -55,6 +66,7 @@ class Limb:
     tip: str
     gripper: bool = False
     named: bool = False  # some joint or link of the chain names a leg, arm or head
+    why: str = ""  # the evidence that decided its kind
 
     def describe(self) -> str:
         span = self.joints[0] if len(self.joints) == 1 else f"{self.joints[0]} .. {self.joints[-1]}"
@@ -83,8 +95,22 @@ class Body:
     not_rotors: tuple[str, ...] = ()
     # Wheel joints of type fixed (a trimmed model): a mobile base, read with doubt.
     fixed_wheels: tuple[str, ...] = ()
-    # Fixed rotor-named leaf joints of a body with no movable joint (a trimmed multirotor).
+    # Fixed rotor-named leaf links on the body (a trimmed multirotor): flying, with doubt.
     fixed_rotors: tuple[str, ...] = ()
+    thrusters: tuple[str, ...] = ()
+    fins: tuple[str, ...] = ()
+    casters: tuple[str, ...] = ()
+    # Wings and ailerons: fixed links (a fixed-wing model without joints) or moving surfaces.
+    wings: tuple[str, ...] = ()
+    # Plugins of a body in water (thrusters, hydrodynamics, buoyancy) and hints of a hull at
+    # the surface (a surface plugin, <metacentric_width>, wind on its buoyancy).
+    marine_plugins: tuple[str, ...] = ()
+    surface_hints: tuple[str, ...] = ()
+    # Flying known only from a model plugin's parameters (a vehicle plugin of its own).
+    flight_hints: tuple[str, ...] = ()
+    finger_motions: int = 0
+    # Every moving joint's role and the evidence that decided it.
+    roles: tuple[Role, ...] = field(default=(), compare=False)
 
     def count(self, kind: str) -> int:
         return sum(1 for limb in self.limbs if limb.kind == kind)
@@ -97,21 +123,41 @@ class Body:
             or self.drive_plugins
             or self.planar_base
             or self.fixed_wheels
+            or self.casters
         )
 
     @property
     def weak_base(self) -> bool:
         """A mobile base known only from fixed wheels or planar (virtual) joints."""
-        return self.mobile_base and not (self.wheels or self.tracks or self.drive_plugins)
+        return self.mobile_base and not (
+            self.wheels or self.tracks or self.drive_plugins or self.casters
+        )
+
+    @property
+    def marine(self) -> bool:
+        return bool(self.thrusters or self.marine_plugins)
 
     @property
     def flying(self) -> bool:
-        return bool(self.rotors or self.flight_plugins or self.fixed_rotors)
+        if self.marine:
+            return False
+        return bool(
+            self.rotors
+            or self.flight_plugins
+            or self.fixed_rotors
+            or self.aero
+            or self.flight_hints
+        )
+
+    @property
+    def aero(self) -> bool:
+        """Wings and control surfaces, two or more, one of them a wing: a fixed-wing craft."""
+        return bool(self.wings) and len({*self.wings, *self.fins}) >= 2
 
     @property
     def weak_flight(self) -> bool:
-        """Flying known only from fixed rotor-named links (a trimmed model)."""
-        return self.flying and not (self.rotors or self.flight_plugins)
+        """Flying known only from fixed rotor links, wing names or a plugin's parameters."""
+        return self.flying and not (self.rotors or self.flight_plugins or self.fins)
 
     def features(self) -> dict[str, int]:
         """The counts and flags the profile's structure rules read."""
@@ -131,6 +177,12 @@ class Body:
             "floating_base": int(bool(self.floating_base)),
             "weak_base": int(self.weak_base),
             "weak_flight": int(self.weak_flight),
+            "thrusters": len(self.thrusters),
+            "fins": len(self.fins),
+            "casters": len(self.casters),
+            "finger_motions": self.finger_motions,
+            "marine": int(self.marine),
+            "surface": int(bool(self.surface_hints)),
         }
 
     def _trimmed(self) -> list[str]:
@@ -143,24 +195,47 @@ class Body:
             )
         if self.fixed_rotors:
             lines.append(
-                f"{len(self.fixed_rotors)} fixed rotor joint(s) on a body with no movable "
-                f"joint (a trimmed model): {_names(self.fixed_rotors)}"
+                f"{len(self.fixed_rotors)} fixed rotor link(s) on the body (a trimmed model): "
+                f"{_names(self.fixed_rotors)}"
             )
+        if self.wings:
+            lines.append(f"wing and control-surface link(s): {_names(self.wings)}")
+        if self.flight_hints:
+            lines.append(f"flight named in plugin parameters: {_names(self.flight_hints)}")
         return lines
 
-    def evidence(self, root: str) -> tuple[str, ...]:
-        """Plain sentences a person can check against the URDF."""
+    def _water(self) -> list[str]:
+        lines = []
+        if self.thrusters:
+            lines.append(f"{len(self.thrusters)} thruster(s): {_names(self.thrusters)}")
+        if self.marine_plugins:
+            lines.append(f"water plugin(s): {_names(self.marine_plugins)}")
+        if self.surface_hints:
+            lines.append(f"floats at the surface: {_names(self.surface_hints)}")
+        return lines
+
+    def _ground(self) -> list[str]:
         lines = []
         if self.wheels:
             lines.append(f"{len(self.wheels)} wheel joint(s): {_names(self.wheels)}")
+        if self.casters:
+            lines.append(f"{len(self.casters)} caster joint(s): {_names(self.casters)}")
         if self.tracks:
             lines.append(f"tracks: {_names(self.tracks)}")
         if self.drive_plugins:
             lines.append(f"drive plugin(s): {_names(self.drive_plugins)}")
+        return lines
+
+    def evidence(self, root: str) -> tuple[str, ...]:
+        """Plain sentences a person can check against the URDF."""
+        lines = self._ground()
         if self.rotors:
             lines.append(f"{len(self.rotors)} rotor joint(s): {_names(self.rotors)}")
         if self.flight_plugins:
             lines.append(f"flight plugin(s): {_names(self.flight_plugins)}")
+        if self.fins:
+            lines.append(f"{len(self.fins)} fin / control-surface joint(s): {_names(self.fins)}")
+        lines += self._water()
         lines += self._trimmed()
         if self.planar_base:
             lines.append(f"planar base: {_names(self.planar_base)}")
@@ -183,12 +258,17 @@ class Body:
             lines.append(f"no movable joints below {root}")
         return tuple(lines)
 
-
-def _main_axis(axis: tuple[float, float, float]) -> int:
-    """0, 1 or 2 for an axis along x, y or z; -1 for a slanted one."""
-    sizes = [abs(v) for v in axis]
-    top = max(sizes)
-    return sizes.index(top) if top > 0 and sorted(sizes)[1] < 1e-6 else -1
+    def role_lines(self) -> tuple[str, ...]:
+        """One line per role: its joints and the evidence that decided the first of them."""
+        grouped: dict[str, list[Role]] = {}
+        for role in self.roles:
+            grouped.setdefault(role.role, []).append(role)
+        lines = []
+        for name, roles in grouped.items():
+            reasons = list(dict.fromkeys(r.evidence for r in roles))
+            because = reasons[0] + (f"; and {len(reasons) - 1} more" if len(reasons) > 1 else "")
+            lines.append(f"{name}: {_names(r.joint for r in roles)} ({because})")
+        return tuple(lines)
 
 
 def _names(items: Iterable[str], limit: int = 4) -> str:
@@ -202,6 +282,23 @@ def detect_body(urdf: Urdf, profile: Profile, srdf: Srdf | None = None) -> Body:
     return _Detector(urdf, profile).detect(srdf)
 
 
+@dataclass
+class _Parts:
+    """What :meth:`_Detector.detect` gathers, step by step, before it becomes a :class:`Body`."""
+
+    roles: dict[str, Role] = field(default_factory=dict)
+    limbs: list[Limb] = field(default_factory=list)
+    trunk: list[str] = field(default_factory=list)
+    grippers: set[str] = field(default_factory=set)
+    hosts: set[str] = field(default_factory=set)
+    floating: list[str] = field(default_factory=list)
+    planar: list[str] = field(default_factory=list)
+    placing: list[str] = field(default_factory=list)
+
+    def of(self, role: str) -> list[str]:
+        return [name for name, r in self.roles.items() if r.role == role]
+
+
 class _Detector:
     def __init__(self, urdf: Urdf, profile: Profile) -> None:
         self.urdf = urdf
@@ -209,6 +306,7 @@ class _Detector:
         # Document order of each joint, for deterministic listings (one pass, not one per ask).
         self.index = {joint.name: i for i, joint in enumerate(urdf.joints)}
         self.parts_of = PartMatcher(profile.patterns)
+        self.reader = RoleReader(urdf, profile, self.parts_of)
         # Links with a movable joint somewhere below them (a rotor is a leaf: none below).
         self.moving_below: set[str] = set()
         for joint in urdf.joints:
@@ -222,112 +320,268 @@ class _Detector:
     def matches(self, part: str, joint: Joint) -> bool:
         return part in self.parts_of(joint.name) or part in self.parts_of(joint.child)
 
-    def plugin_matches(self, part: str, text: str) -> bool:
-        pattern = self.profile.plugin_pattern(part)
-        return pattern is not None and bool(pattern.search(text))
-
-    def gripper_joint(self, joint: Joint) -> bool:
-        """Named as a gripper, or on or into a link named as one; a joint whose own name says
-        it is an arm joint (``left_wrist_roll_joint`` into ``left_hand_roll_link``) stays one."""
-        own = self.parts_of(joint.name)
-        if "gripper" in own:
-            return True
-        return "arm" not in own and ("gripper" in self.parts_of(joint.child) or self.on_palm(joint))
-
-    def on_palm(self, joint: Joint) -> bool:
-        """A movable joint on a link named as a hand or palm moves a finger."""
-        return "gripper" in self.parts_of(joint.parent)
+    def labels(self, part: str) -> tuple[str, ...]:
+        return tuple(
+            dict.fromkeys(self.reader.plugin_label(p) for p in self.reader.plugins_of(part))
+        )
 
     def detect(self, srdf: Srdf | None) -> Body:
-        urdf = self.urdf
-        drive = [p for p in urdf.plugins if self.plugin_matches("drive", f"{p.name} {p.filename}")]
-        flight = [
-            p for p in urdf.plugins if self.plugin_matches("flight", f"{p.name} {p.filename}")
-        ]
-        track_plugins = [
-            p for p in urdf.plugins if self.plugin_matches("track", f"{p.name} {p.filename}")
-        ]
-        named_by_drive = {text for p in drive for _, text in p.params}
-        wheels, rotors, grippers = [], [], set()
-        for joint in urdf.joints:
-            if not joint.movable or joint.type not in (*_ROTATING, "prismatic"):
-                continue
-            # Wheels first: a wheel's motor link may be named *_rotor.
-            if joint.type in _ROTATING and (
-                self.matches("wheel", joint) or joint.name in named_by_drive
-            ):
-                wheels.append(joint.name)
-            elif (
-                joint.type in _ROTATING
-                and self.matches("rotor", joint)
-                and joint.child not in self.moving_below
-            ):
-                rotors.append(joint.name)
-            elif self.gripper_joint(joint):
-                grippers.add(joint.name)
-        wheels += self._unnamed_wheels({*wheels, *rotors, *grippers})
-        not_rotors: list[str] = []
-        if len(rotors) < self.profile.limb("min_rotors"):
-            # One spinning leaf is a motor or a tool, not flight.
-            not_rotors, rotors = rotors, []
-        tracks = [p.filename or p.name for p in track_plugins]
-        tracks += [j.name for j in urdf.joints if self.matches("track", j)]
-        fixed_wheels = (
-            [j.name for j in urdf.joints if j.type == "fixed" and self.matches("wheel", j)]
-            if not wheels
-            else []
-        )
-        # A model trimmed of every movable joint may still name its propellers.
-        fixed_rotors = [
-            j.name
-            for j in urdf.joints
-            if j.type == "fixed" and not urdf.children(j.child) and self.matches("rotor", j)
-        ]
-        if any(j.movable for j in urdf.joints) or len(fixed_rotors) < self.profile.limb(
-            "min_rotors"
-        ):
-            fixed_rotors = []
-        floating = [j.name for j in urdf.joints if j.type == "floating"]
-        planar = [j.name for j in urdf.joints if j.type == "planar"]
-        placing = self._root_axes()
-        if len(placing) == 6:
-            floating.append(f"root joints {', '.join(placing)} (x, y, z and three turns)")
-        elif len(placing) == 3:
-            planar.append(f"root joints {', '.join(placing)} (x, y and a turn about z)")
-        base = set(wheels) | set(rotors) | set(placing)
-        grippers = self._gripper_closure(grippers)
-        limbs, trunk, gripper_hosts = self._limbs(base | grippers, grippers)
-        fingers = self._finger_groups(limbs)
-        if fingers:
-            grippers = self._gripper_closure(grippers | fingers)
-            limbs, trunk, gripper_hosts = self._limbs(base | grippers, grippers)
-        limbs = self._legs_at_the_pelvis(limbs)
-        finger_tips = self._finger_tips(grippers)
-        for virtual in srdf.virtual_joints if srdf is not None else ():
-            if virtual.type in ("planar", "floating"):
-                (planar if virtual.type == "planar" else floating).append(
-                    f"SRDF virtual joint {virtual.name} ({virtual.type})"
-                )
-        controlled = urdf.controlled_joints
-        limb_joints = [name for limb in limbs for name in limb.joints] + trunk
+        parts = _Parts(roles=self._joint_roles())
+        self._placing(parts, srdf)
+        self._body_parts(parts)
+        finger_tips = self._finger_tips(parts.grippers)
+        controlled = self.urdf.controlled_joints
+        limb_joints = [j for limb in parts.limbs if limb.kind != "mount" for j in limb.joints]
+        wheels = parts.of("wheel")
         return Body(
             wheels=tuple(wheels),
-            rotors=tuple(rotors),
-            tracks=tuple(dict.fromkeys(tracks)),
-            drive_plugins=tuple(dict.fromkeys(p.filename or p.name for p in drive)),
-            flight_plugins=tuple(dict.fromkeys(p.filename or p.name for p in flight)),
-            limbs=tuple(limbs),
-            trunk=tuple(trunk),
+            rotors=tuple(parts.of("rotor")),
+            tracks=self._tracks(),
+            drive_plugins=self.labels("drive"),
+            flight_plugins=self.labels("flight"),
+            limbs=tuple(parts.limbs),
+            trunk=tuple(parts.trunk),
             fingers=tuple(finger_tips),
-            grippers=len(gripper_hosts),
-            floating_base=tuple(floating),
-            planar_base=tuple(planar),
+            grippers=len(parts.hosts),
+            floating_base=tuple(parts.floating),
+            planar_base=tuple(parts.planar),
             controlled_wheels=tuple(w for w in wheels if w in controlled),
-            controlled_joints=tuple(j for j in limb_joints if j in controlled),
-            not_rotors=tuple(not_rotors),
-            fixed_wheels=tuple(fixed_wheels),
-            fixed_rotors=tuple(fixed_rotors),
+            controlled_joints=tuple(j for j in limb_joints + parts.trunk if j in controlled),
+            not_rotors=tuple(self._not_rotors(parts)),
+            fixed_wheels=tuple(self._fixed_wheels(parts)),
+            fixed_rotors=tuple(self._fixed_rotors()),
+            thrusters=tuple(parts.of("thruster") + self._listed_thrusters(parts)),
+            fins=tuple(parts.of("fin")),
+            casters=tuple(parts.of("caster")),
+            wings=tuple(self._wings(parts)),
+            marine_plugins=(*self.labels("thruster"), *self.labels("marine")),
+            surface_hints=self._surface_hints(),
+            flight_hints=self._flight_hints(),
+            finger_motions=sum(
+                1 for name in parts.grippers if (j := self.urdf.joint(name)) and j.actuated
+            ),
+            roles=self._all_roles(parts),
         )
+
+    # -- single-joint roles ------------------------------------------------------------------
+
+    def _joint_roles(self) -> dict[str, Role]:
+        """Wheels, casters, rotors, thrusters, fins and gripper joints, each with its evidence."""
+        roles: dict[str, Role] = {}
+        for joint in self.urdf.joints:
+            role = self.reader.read(joint, self.moving_below)
+            if role is not None:
+                roles[joint.name] = role
+        for name in self._unnamed_wheels(set(roles)):
+            roles[name] = Role(
+                name, "wheel", "an unnamed endless leaf below its link, wheels on both sides"
+            )
+        roles.update(self.reader.casters({n: r for n, r in roles.items() if r.role == "wheel"}))
+        for name, role in list(roles.items()):
+            driven = self.urdf.joint(name)
+            if role.role == "caster" and driven is not None and name in self.urdf.controlled_joints:
+                # A driven caster is no caster: its swivel steers, its wheels drive.
+                if main_axis(driven.axis) == _Z_AXIS:
+                    roles[name] = Role(name, "steering", "a vertical swivel with a transmission")
+                else:
+                    roles[name] = Role(name, "wheel", "a caster's wheel with a transmission")
+        rotors = [n for n, r in roles.items() if r.role == "rotor"]
+        if rotors and len(rotors) < self.profile.limb("min_rotors"):
+            for name in rotors:  # one spinning leaf is a motor or a tool, not flight
+                del roles[name]
+        grippers = self._gripper_closure({n for n, r in roles.items() if r.role == "gripper"})
+        for name in grippers - set(roles):
+            roles[name] = Role(name, "gripper", "moves a finger: below a gripper joint")
+        return roles
+
+    def _not_rotors(self, parts: _Parts) -> list[str]:
+        return [
+            j.name
+            for j in self.urdf.joints
+            if j.movable
+            and j.type in _ROTATING
+            and j.name not in parts.roles
+            and self.matches("rotor", j)
+            and not self.matches("wheel", j)
+            and j.child not in self.moving_below
+        ]
+
+    def _listed_thrusters(self, parts: _Parts) -> list[str]:
+        """Thrusters a thruster plugin lists by a link of no moving joint (a hull's list)."""
+        links = {link.name for link in self.urdf.links}
+        found = []
+        for plugin in self.reader.plugins_of("thruster"):
+            named = [text for tag, text in plugin.params if text in links]
+            joints = [self.urdf.parent_joint(link) for link in named]
+            if not any(j is not None and j.name in parts.roles for j in joints):
+                found += [f"{link} ({self.reader.plugin_label(plugin)})" for link in named][:1]
+        return found
+
+    def _tracks(self) -> tuple[str, ...]:
+        tracks = list(self.labels("track"))
+        tracks += [j.name for j in self.urdf.joints if self.matches("track", j)]
+        return tuple(dict.fromkeys(tracks))
+
+    def _fixed_wheels(self, parts: _Parts) -> list[str]:
+        if parts.of("wheel"):
+            return []
+        return [j.name for j in self.urdf.joints if j.type == "fixed" and self.matches("wheel", j)]
+
+    def _fixed_rotors(self) -> list[str]:
+        """Rotor-named leaf links fixed to a part no joint moves (a trimmed multirotor).
+
+        Not on a body with legs or wheels: there a fixed ``*_rotor`` link is a motor's.
+        """
+        legs_or_wheels = any(
+            j.movable and (self.matches("leg", j) or self.matches("wheel", j))
+            for j in self.urdf.joints
+        )
+        if self.reader.marine or legs_or_wheels:
+            return []
+        moved = self._moved_links()
+        found = [
+            j.name
+            for j in self.urdf.joints
+            if j.type == "fixed"
+            and not self.urdf.children(j.child)
+            and j.parent not in moved
+            and self.matches("rotor", j)
+        ]
+        return found if len(found) >= self.profile.limb("min_rotors") else []
+
+    def _moved_links(self) -> set[str]:
+        """Links some movable joint moves (below a movable joint)."""
+        moved: set[str] = set()
+        stack = [(self.urdf.root, False)]
+        while stack:
+            link, inside = stack.pop()
+            if inside:
+                moved.add(link)
+            for joint in self.urdf.children(link):
+                stack.append((joint.child, inside or joint.movable))
+        return moved
+
+    def _wings(self, parts: _Parts) -> list[str]:
+        """Wings and ailerons (fixed links, or fin joints named so) and, beside a wing, fixed
+        control surfaces (a tail, a rudder)."""
+        if self.reader.marine:
+            return []
+        fixed = [j for j in self.urdf.joints if not j.movable]
+        wings = [j.child for j in fixed if "wing" in self.parts_of(j.child)]
+        wings += [
+            n for n in parts.of("fin") if (j := self.urdf.joint(n)) and self.matches("wing", j)
+        ]
+        surfaces = [j.child for j in fixed if "fin" in self.parts_of(j.child)]
+        return wings + surfaces if wings else []
+
+    def _surface_hints(self) -> tuple[str, ...]:
+        pattern = self.profile.plugin_pattern("surface")
+        if pattern is None or not (self.reader.marine):
+            return ()
+        hints = list(self.labels("surface"))
+        hints += sorted(tag for tag in self.urdf.tags if pattern.search(tag))
+        return tuple(dict.fromkeys(hints))
+
+    def _flight_hints(self) -> tuple[str, ...]:
+        pattern = self.profile.plugin_pattern("flight")
+        if pattern is None or self.labels("flight"):
+            return ()
+        return tuple(
+            self.reader.plugin_label(p)
+            for p in self.urdf.plugins
+            if any(pattern.search(text) for _, text in p.params)
+        )
+
+    # -- where the body is -------------------------------------------------------------------
+
+    def _placing(self, parts: _Parts, srdf: Srdf | None) -> None:
+        parts.floating = [j.name for j in self.urdf.joints if j.type == "floating"]
+        parts.planar = [j.name for j in self.urdf.joints if j.type == "planar"]
+        parts.placing = self._root_axes()
+        if len(parts.placing) == 6:
+            parts.floating.append(
+                f"root joints {', '.join(parts.placing)} (x, y, z and three turns)"
+            )
+        elif len(parts.placing) == 3:
+            parts.planar.append(f"root joints {', '.join(parts.placing)} (x, y and a turn about z)")
+        for virtual in srdf.virtual_joints if srdf is not None else ():
+            if virtual.type in ("planar", "floating"):
+                (parts.planar if virtual.type == "planar" else parts.floating).append(
+                    f"SRDF virtual joint {virtual.name} ({virtual.type})"
+                )
+
+    def _root_axes(self) -> list[str]:
+        """Joints at the root that only place the body: x, y and a turn about z (planar), or
+        x, y, z and three turns (a simulated floating base); [] when the root is not so.
+        """
+        chain = self._root_chain()
+        if len(chain) >= 3 and _moves(chain[:3]) == ({0, 1}, [2]):
+            return [j.name for j in chain[:3]]
+        if len(chain) == 6 and _moves(chain) == ({0, 1, 2}, [0, 1, 2]):
+            return [j.name for j in chain]
+        return []
+
+    def _root_chain(self) -> list[Joint]:
+        """The unbranched actuated joints right below the root (at most six)."""
+        chain: list[Joint] = []
+        link = self.urdf.root
+        while len(chain) < 6:
+            below = self.urdf.children(link)
+            if len(below) != 1:
+                break
+            joint = below[0]
+            link = joint.child
+            if joint.type == "fixed":
+                continue
+            if joint.type not in ("prismatic", "revolute", "continuous") or not joint.actuated:
+                break
+            chain.append(joint)
+        return chain
+
+    # -- limbs -------------------------------------------------------------------------------
+
+    def _body_parts(self, parts: _Parts) -> None:
+        """Limbs, trunk and gripper joints, fingers found by place included."""
+        special = {n for n, r in parts.roles.items() if r.role != "gripper"} | set(parts.placing)
+        parts.grippers = {n for n, r in parts.roles.items() if r.role == "gripper"}
+        flying = (
+            bool(parts.of("rotor")) or bool(self.labels("flight")) or bool(self._fixed_rotors())
+        )
+        parts.limbs, parts.trunk, parts.hosts = self._limbs(
+            special | parts.grippers, parts.grippers, parts.roles, flying
+        )
+        fingers = self._finger_groups(parts.limbs)
+        if fingers:
+            for name in fingers:
+                parts.roles[name] = Role(
+                    name, "gripper", "a short unnamed chain beside two more on one link (a finger)"
+                )
+            parts.grippers = self._gripper_closure(parts.grippers | fingers)
+            parts.limbs, parts.trunk, parts.hosts = self._limbs(
+                special | parts.grippers, parts.grippers, parts.roles, flying
+            )
+        parts.limbs = self._legs_at_the_pelvis(parts.limbs)
+
+    def _all_roles(self, parts: _Parts) -> tuple[Role, ...]:
+        """Every movable joint's role: single-joint roles, limb roles, trunk, passive."""
+        found = {n: r for n, r in parts.roles.items() if r.role != "gripper"}
+        for name in parts.grippers:
+            joint = self.urdf.joint(name)
+            if joint is not None and joint.movable:
+                role = parts.roles.get(name)
+                found[name] = Role(name, "finger", role.evidence if role else "below a gripper")
+        for limb in parts.limbs:
+            for name in limb.joints:
+                found[name] = Role(name, limb.kind, limb.why)
+        for name in parts.trunk:
+            found[name] = Role(name, "trunk", "below where limbs branch off")
+        for name in parts.placing:
+            found[name] = Role(name, "base", "a root joint that only places the body")
+        for joint in self.urdf.joints:
+            if joint.movable and joint.name not in found:
+                why = f"follows {joint.mimic} (mimic)" if joint.mimic else "not part of a limb"
+                found[joint.name] = Role(joint.name, "passive", why)
+        return tuple(sorted(found.values(), key=lambda r: self._order(r.joint)))
 
     def _unnamed_wheels(self, taken: set[str]) -> list[str]:
         """Unnamed spinning leaves below a link, on both its sides: wheels.
@@ -379,42 +633,9 @@ class _Detector:
         ]
         if len(pelvis) != 2 or len(pelvis[0].joints) != len(pelvis[1].joints) or len(arms) < 2:
             return limbs
-        legs = [replace(limb, kind="leg") for limb in pelvis]
-        kept = [limb for limb in limbs if limb not in pelvis] + legs
-        return sorted(
-            kept,
-            key=lambda limb: (
-                LIMB_KINDS.index(limb.kind) if limb.kind in LIMB_KINDS else len(LIMB_KINDS),
-                self._order(limb.joints[0]),
-            ),
-        )
-
-    def _root_axes(self) -> list[str]:
-        """Joints at the root that only place the body: x, y and a turn about z (planar), or
-        x, y, z and three turns (a simulated floating base); [] when the root is not so.
-        """
-        chain: list[Joint] = []
-        link = self.urdf.root
-        while len(chain) < 6:
-            below = self.urdf.children(link)
-            if len(below) != 1:
-                break
-            joint = below[0]
-            link = joint.child
-            if joint.type == "fixed":
-                continue
-            if joint.type not in ("prismatic", "revolute", "continuous") or not joint.actuated:
-                break
-            chain.append(joint)
-        slides = {_main_axis(j.axis) for j in chain[:3] if j.type == "prismatic"}
-        turns = [_main_axis(j.axis) for j in chain[:3] if j.type != "prismatic"]
-        if len(chain) >= 3 and slides == {0, 1} and turns == [2]:
-            return [j.name for j in chain[:3]]
-        slides = {_main_axis(j.axis) for j in chain if j.type == "prismatic"}
-        turns = [_main_axis(j.axis) for j in chain if j.type != "prismatic"]
-        if len(chain) == 6 and slides == {0, 1, 2} and sorted(turns) == [0, 1, 2]:
-            return [j.name for j in chain]
-        return []
+        why = "one of two equal unnamed chains on the root, below named arms (legs by place)"
+        legs = [replace(limb, kind="leg", why=why) for limb in pelvis]
+        return self._sorted([limb for limb in limbs if limb not in pelvis] + legs)
 
     def _order(self, name: str) -> int:
         return self.index.get(name, 0)
@@ -469,34 +690,10 @@ class _Detector:
         return found
 
     def _limbs(
-        self, special: set[str], grippers: set[str]
+        self, special: set[str], grippers: set[str], roles: dict[str, Role], flying: bool
     ) -> tuple[list[Limb], list[str], set[str]]:
         """Limbs and trunk joints of the contracted tree of actuated, non-special joints."""
-        urdf = self.urdf
-        children: dict[str, list[Joint]] = {}  # anchor ("" = root) -> limb joints below it
-        carries: dict[str, set[str]] = {}  # anchor -> {"wheel", "rotor", "gripper", ...}
-        hosts: set[str] = set()
-        stack: list[tuple[str, str]] = [(urdf.root, "")]
-        while stack:
-            link, anchor = stack.pop()
-            for joint in reversed(urdf.children(link)):
-                below = anchor
-                if joint.name in special:
-                    kind = (
-                        "gripper"
-                        if joint.name in grippers
-                        else ("rotor" if self.matches("rotor", joint) else "wheel")
-                    )
-                    carries.setdefault(anchor, set()).add(kind)
-                    if kind == "gripper":
-                        hosts.add(anchor)
-                        continue  # the gripper's own subtree is not a limb
-                elif joint.actuated and joint.type in _LIMB_JOINTS:
-                    children.setdefault(anchor, []).append(joint)
-                    below = joint.name
-                stack.append((joint.child, below))
-        for joints in children.values():
-            joints.sort(key=lambda j: self._order(j.name))
+        children, carries, hosts = self._contracted(special, grippers, roles)
         limbs: list[Limb] = []
         trunk: list[str] = []
         starts = deque(children.get("", []))
@@ -511,21 +708,58 @@ class _Detector:
                 starts.extend(branches)
                 continue
             marks = set().union(*(carries.get(j.name, set()) for j in chain))
-            limbs.append(self._classify(chain, chain[0].parent, marks))
-        limbs.sort(
+            limbs.append(self._classify(chain, chain[0].parent, marks, flying))
+        wheel_legs = sum(1 for limb in limbs if limb.kind == "wheel_leg")
+        limbs = [
+            replace(limb, kind="leg" if wheel_legs >= _WHEEL_LEGS else "mount")
+            if limb.kind == "wheel_leg"
+            else limb
+            for limb in limbs
+        ]
+        return self._sorted(limbs), trunk, hosts
+
+    def _contracted(
+        self, special: set[str], grippers: set[str], roles: dict[str, Role]
+    ) -> tuple[dict[str, list[Joint]], dict[str, set[str]], set[str]]:
+        """The limb joints below each anchor ("" = root), what each anchor carries (wheel,
+        rotor, thruster, gripper, ...) and the anchors that hold a gripper."""
+        children: dict[str, list[Joint]] = {}
+        carries: dict[str, set[str]] = {}
+        hosts: set[str] = set()
+        stack: list[tuple[str, str]] = [(self.urdf.root, "")]
+        while stack:
+            link, anchor = stack.pop()
+            for joint in reversed(self.urdf.children(link)):
+                below = anchor
+                if joint.name in special:
+                    role = roles.get(joint.name)
+                    kind = "gripper" if joint.name in grippers else role.role if role else "base"
+                    carries.setdefault(anchor, set()).add(kind)
+                    if kind == "gripper":
+                        hosts.add(anchor)
+                        continue  # the gripper's own subtree is not a limb
+                elif joint.actuated and joint.type in _LIMB_JOINTS:
+                    children.setdefault(anchor, []).append(joint)
+                    below = joint.name
+                stack.append((joint.child, below))
+        for joints in children.values():
+            joints.sort(key=lambda j: self._order(j.name))
+        return children, carries, hosts
+
+    def _sorted(self, limbs: list[Limb]) -> list[Limb]:
+        return sorted(
+            limbs,
             key=lambda limb: (
                 LIMB_KINDS.index(limb.kind) if limb.kind in LIMB_KINDS else len(LIMB_KINDS),
                 self._order(limb.joints[0]),
-            )
+            ),
         )
-        return limbs, trunk, hosts
 
-    def _classify(self, chain: list[Joint], base: str, marks: set[str]) -> Limb:
+    def _classify(self, chain: list[Joint], base: str, marks: set[str], flying: bool) -> Limb:
         names = tuple(j.name for j in chain)
         tip = self._tip(chain[-1])
         gripper = "gripper" in marks
-        if marks & {"wheel", "rotor"}:
-            return Limb("mount", names, base, tip, gripper)
+        mounted = sorted(marks & set(_MOUNTED))
         named_parts = [self.parts_of(j.name) | self.parts_of(j.child) for j in chain]
         scores = {kind: sum(1 for parts in named_parts if kind in parts) for kind in LIMB_KINDS}
         if self._tip_matches("leg", chain[-1]):
@@ -533,20 +767,38 @@ class _Detector:
         named = any(scores.values())
         # Degrees of freedom, not joints: a ball-joint shoulder moves like three hinges.
         length = sum(3 if j.type == "spherical" else 1 for j in chain)
+        kind, why = self._named_kind(scores, length, gripper)
+        if mounted:
+            if mounted == ["wheel"] and kind == "leg":
+                return Limb("wheel_leg", names, base, tip, gripper, named, f"{why}, on a wheel")
+            return Limb("mount", names, base, tip, gripper, named, f"carries {', '.join(mounted)}")
+        if kind is not None:
+            return Limb(kind, names, base, tip, gripper, named, why)
+        if length >= self.profile.limb("arm_min_joints") or (gripper and length >= 2):
+            why = "ends in a gripper" if gripper else f"an unnamed chain of {length} joints"
+            return Limb("arm", names, base, tip, gripper, named, why)
+        if flying and length >= _FLYING_ARM_JOINTS and not named:
+            why = f"a chain of {length} joints hanging from a flying body"
+            return Limb("arm", names, base, tip, gripper, named, why)
+        return Limb("other", names, base, tip, gripper, named, "no name or shape of a limb")
+
+    def _named_kind(
+        self, scores: dict[str, int], length: int, gripper: bool
+    ) -> tuple[str | None, str]:
+        """The limb kind the names say, within the profile's thresholds, and why."""
         ranked = sorted(LIMB_KINDS, key=lambda k: -scores[k])  # stable: leg, arm, head on ties
         for kind in ranked:
             if scores[kind] == 0:
                 break
+            why = f"{scores[kind]} {kind} name(s) on its joints and links"
             # Leg names win over a gripper at the end: a leg may end in a gripper.
             if kind == "leg" and length >= self.profile.limb("leg_min_joints"):
-                return Limb("leg", names, base, tip, gripper, named)
+                return "leg", why
             if kind == "head" and length <= self.profile.limb("head_max_joints") and not gripper:
-                return Limb("head", names, base, tip, gripper, named)
+                return "head", why
             if kind == "arm" and (length >= self.profile.limb("arm_min_joints") or gripper):
-                return Limb("arm", names, base, tip, gripper, named)
-        if length >= self.profile.limb("arm_min_joints") or (gripper and length >= 2):
-            return Limb("arm", names, base, tip, gripper, named)
-        return Limb("other", names, base, tip, gripper, named)
+                return "arm", why
+        return None, ""
 
     def _tip(self, joint: Joint) -> str:
         """The last link of a limb: follow fixed joints down while the path is unbranched."""
@@ -562,3 +814,10 @@ class _Detector:
             not below.movable and part in self.parts_of(below.child)
             for below in self.urdf.subtree_joints(joint.child)
         )
+
+
+def _moves(chain: list[Joint]) -> tuple[set[int], list[int]]:
+    """The axes a chain slides along and (sorted) the axes it turns about."""
+    slides = {main_axis(j.axis) for j in chain if j.type == "prismatic"}
+    turns = sorted(main_axis(j.axis) for j in chain if j.type != "prismatic")
+    return slides, turns

@@ -33,6 +33,8 @@ class Reading:
     kinematic_type: str | None
     confidence: float
     evidence: tuple[str, ...]
+    # The structure rules tried, in order, each with why it held or did not (--explain).
+    path: tuple[str, ...] = ()
 
 
 def kinematic_type_for(structure: str, profile: Profile, rules: RuleSet) -> str | None:
@@ -57,9 +59,10 @@ def classify(
     features = body.features()
     rule = next((r for r in profile.structures if r.matches(features)), None)
     evidence = list(body.evidence(root))
+    path = decision_path(features, profile)
     if rule is None:
         evidence.append("no structure rule of the profile matches this body")
-        return Reading("Other", None, 0.0, tuple(evidence))
+        return Reading("Other", None, 0.0, tuple(evidence), path)
     confidence = rule.confidence
     # A catch-all rule says why nothing else fit: the parts every other rule read.
     parts = [
@@ -86,11 +89,26 @@ def classify(
     if kinematic_type is None:
         evidence.append(
             f"the rule set {rules.name!r} has no kinematic type for {rule.name} "
-            f"(it has {', '.join(str(v) for v in rules.key.values)})"
+            f"(it has {', '.join(str(v) for v in rules.key.values)}): Other under it, "
+            f"reason: {rule.name.lower()}"
         )
     elif kinematic_type != rule.name:
         evidence.append(f"{rule.name} is the rule set's {kinematic_type}")
-    return Reading(rule.name, kinematic_type, round(confidence, 2), tuple(evidence))
+    return Reading(rule.name, kinematic_type, round(confidence, 2), tuple(evidence), path)
+
+
+def decision_path(features: dict[str, int], profile: Profile) -> tuple[str, ...]:
+    """The structure rules in order up to the first that holds, each with why (or why not)."""
+    lines = []
+    for rule in profile.structures:
+        failed = [c for c in rule.when if not c.holds(features)]
+        if not failed:
+            held = ", ".join(c.describe() for c in rule.when) or "the catch-all"
+            lines.append(f"{rule.name}: yes ({held})")
+            break
+        why = ", ".join(f"needs {c.describe()}, has {features.get(c.feature, 0)}" for c in failed)
+        lines.append(f"{rule.name}: no ({why})")
+    return tuple(lines)
 
 
 def _srdf_agreement(

@@ -44,6 +44,7 @@ from solver.identify.motion import controls_from_description
 from solver.identify.profile import Profile, load_profile
 from solver.identify.readers.bags import read_bag_topics
 from solver.identify.readers.safexml import read_bytes
+from solver.identify.roles import Role
 from solver.identify.sensors import Detection, Sensor, merge, presented_count, sensors_from_urdf
 from solver.identify.srdf import parse_srdf
 from solver.identify.topics import read_topic_list
@@ -85,6 +86,13 @@ class Identification:
     notes: tuple[str, ...] = ()
     # Local flaws of the description or SRDF read past, each located (file, line, message).
     warnings: tuple[Fault, ...] = ()
+    # The structure rules tried in order, each with why it held or not (``--explain``).
+    decision: tuple[str, ...] = ()
+
+    @property
+    def roles(self) -> tuple[Role, ...]:
+        """Every moving joint's role, with the evidence that decided it."""
+        return () if self.body is None else self.body.roles
 
     @property
     def sensor_count(self) -> int:
@@ -159,6 +167,7 @@ def identify_urdf(
         body=body,
         notes=tuple(notes),
         warnings=warnings,
+        decision=reading.path,
     )
 
 

@@ -47,8 +47,23 @@ __all__ = [
 ]
 
 # What the code measures on a body (the domain); which of them matter is the profile's business.
-PARTS = ("wheel", "rotor", "track", "gripper", "leg", "head", "arm")
-PLUGIN_PARTS = ("drive", "track", "flight")
+PARTS = (
+    "wheel",
+    "rotor",
+    "track",
+    "gripper",
+    "leg",
+    "head",
+    "arm",
+    "thruster",
+    "fin",
+    "wing",
+    "caster",
+)
+# drive/track/flight/thruster/lift: plugins that move the robot (a joint they name takes their
+# role); marine: plugins of a body in water; surface: hints of a hull floating at the surface
+# (plugins and element names such as <metacentric_width>); arm_control: joint controllers.
+PLUGIN_PARTS = ("drive", "track", "flight", "thruster", "lift", "marine", "surface")
 FEATURES = (
     "wheels",
     "tracks",
@@ -65,12 +80,29 @@ FEATURES = (
     "floating_base",
     "weak_base",
     "weak_flight",
+    "thrusters",
+    "fins",
+    "casters",
+    "finger_motions",
+    "marine",
+    "surface",
 )
+# thrusters / fins / casters: joints (or plugin-named links) in those roles; finger_motions: the
+# finger joints that move on their own (not mimic); marine: a body in water (thrusters, marine
+# plugins); surface: floating at the surface (a hull's buoyancy hints, a surface plugin).
 # weak_base: the mobile base is known only from fixed wheels, planar root joints or an SRDF
 # planar virtual joint (a trimmed or simulated model), not from driven wheels or a plugin.
 # weak_flight: flying is known only from fixed rotor-named links on a body with no movable
 # joint at all (a trimmed multirotor model), not from rotor joints or a flight plugin.
-BOOLEAN_FEATURES = ("mobile_base", "flying", "floating_base", "weak_base", "weak_flight")
+BOOLEAN_FEATURES = (
+    "mobile_base",
+    "flying",
+    "floating_base",
+    "weak_base",
+    "weak_flight",
+    "marine",
+    "surface",
+)
 DIRECTIONS = ("published", "subscribed")
 CONTROL_SOURCES = (
     "drive_plugin",

@@ -3,10 +3,12 @@
 :func:`identification_data` builds the contract of ``teleop-ui identify --format json``::
 
     {"robot", "file", "structure", "kinematic_type", "confidence", "evidence",
+     "roles": [{"joint", "role", "evidence"}],     # every moving joint: what it does, and why
      "sensors": [{"kind", "sensor_type", "count", "source"}],
      "motion_controls": [{"motion_control", "source"}],
      "combinations": [...],      # assignment JSON of `teleop-ui assign`, with --team
-     "warnings": [{"file", "line", "message"}]}   # flaws read past; only when there are some
+     "warnings": [{"file", "line", "message"}],   # flaws read past; only when there are some
+     "decision": [...]}          # with explain: the structure rules tried, in order
 
 ``fleet`` prints a list of these. Output is deterministic: declared orders, no timestamps.
 
@@ -32,6 +34,8 @@ def identification_data(
     identification: Identification,
     combinations: Sequence[Combination] = (),
     solution: Solution | None = None,
+    *,
+    explain: bool = False,
 ) -> dict[str, Any]:
     data: dict[str, Any] = {
         "robot": identification.robot,
@@ -40,6 +44,9 @@ def identification_data(
         "kinematic_type": identification.kinematic_type,
         "confidence": identification.confidence,
         "evidence": list(identification.evidence),
+        "roles": [
+            {"joint": r.joint, "role": r.role, "evidence": r.evidence} for r in identification.roles
+        ],
         "sensors": [
             {"kind": s.kind, "sensor_type": s.sensor_type, "count": s.count, "source": s.source}
             for s in identification.sensors
@@ -52,6 +59,8 @@ def identification_data(
         if solution is None
         else [assignment_data(solution, c.assignment) for c in combinations],
     }
+    if explain:
+        data["decision"] = list(identification.decision)
     if identification.notes:
         data["notes"] = list(identification.notes)
     if identification.warnings:
@@ -70,6 +79,8 @@ def render_identification(
     identification: Identification,
     combinations: Sequence[Combination] = (),
     solution: Solution | None = None,
+    *,
+    explain: bool = False,
 ) -> str:
     """A readable report: reading, evidence, sensors, controls, configurations."""
     kinematic = identification.kinematic_type or "none in the rule set (default configuration)"
@@ -81,6 +92,12 @@ def render_identification(
         "  evidence:",
     ]
     lines += [f"    - {line}" for line in identification.evidence]
+    if identification.body is not None and identification.body.roles:
+        lines.append("  joint roles (what decided each):")
+        lines += [f"    - {line}" for line in identification.body.role_lines()]
+    if explain:
+        lines.append("  decision path (structure rules in order):")
+        lines += [f"    {i}. {line}" for i, line in enumerate(identification.decision, 1)]
     lines += [f"  note: {note}" for note in identification.notes]
     lines += [f"  warning: {warning}" for warning in identification.warnings]
     text = "\n".join(lines) + "\n\n"

@@ -44,8 +44,12 @@ JOINT_TYPES = ("revolute", "continuous", "prismatic", "fixed", "floating", "plan
 # and memory one description (a robot_description is whatever a robot publishes) may cost.
 # 250,000 is some 30 times the largest real robot known and still reads in seconds.
 MAX_PARTS = 250_000
-# Plugin parameters kept for the classifiers: short text values (joint names, topics, frames).
+# Plugin parameters kept for the classifiers: short text values (joint names, topics, frames),
+# from the plugin's leaf elements at any depth (a thruster list, a fin's joint), at most this many.
 _MAX_PARAM_TEXT = 200
+_MAX_PARAMS = 400
+# Distinct element names kept from the whole document (hull and buoyancy hints live there).
+_MAX_TAGS = 2000
 # Warnings of one kind listed per description; the rest are counted.
 _MAX_WARNINGS = 20
 
@@ -146,6 +150,12 @@ class Urdf:
     root: str = ""
     # Local flaws read past (parse_urdf(strict=False)), each located.
     warnings: tuple[Fault, ...] = ()
+    # (joint, command interfaces) from <ros2_control> (<command_interface name="velocity"/>) and
+    # <transmission> (<hardwareInterface>...VelocityJointInterface): position, velocity, effort.
+    command_interfaces: tuple[tuple[str, tuple[str, ...]], ...] = ()
+    # The names of every element in the document (lower case): a hull's <metacentric_width>, a
+    # link's <buoyancy> with <windVelocity> say what the robot floats in.
+    tags: frozenset[str] = frozenset()
 
     @cached_property
     def _children(self) -> dict[str, tuple[Joint, ...]]:
@@ -171,6 +181,10 @@ class Urdf:
 
     def joint(self, name: str) -> Joint | None:
         return self._joint_by_name.get(name)
+
+    def interfaces(self, joint: str) -> tuple[str, ...]:
+        """The command interfaces a controller declares for ``joint`` (may be empty)."""
+        return dict(self.command_interfaces).get(joint, ())
 
     def has_link(self, name: str) -> bool:
         return name in self._children
@@ -286,6 +300,8 @@ class _Builder:
             controlled,
             top,
             self.warnings(),
+            _command_interfaces(root),
+            _tags(root),
         )
 
     def _links(self, elements: list[etree._Element]) -> dict[str, Link]:
@@ -551,6 +567,40 @@ def _sensor(
     )
 
 
+def _command_interfaces(root: etree._Element) -> tuple[tuple[str, tuple[str, ...]], ...]:
+    """(joint, interfaces) from ``<ros2_control>`` joints and ``<transmission>`` joints."""
+    found: dict[str, list[str]] = {}
+    for control in root.findall("ros2_control"):
+        for joint in control.findall("joint"):
+            name = (joint.get("name") or "").strip()
+            for command in joint.findall("command_interface"):
+                kind = (command.get("name") or "").strip().lower()
+                if name and kind:
+                    found.setdefault(name, []).append(kind)
+    for transmission in root.findall("transmission"):
+        for joint in transmission.findall("joint"):
+            name = (joint.get("name") or "").strip()
+            for interface in joint.iterfind("hardwareInterface"):
+                kind = _interface_kind(interface.text or "")
+                if name and kind:
+                    found.setdefault(name, []).append(kind)
+    return tuple((name, tuple(dict.fromkeys(kinds))) for name, kinds in found.items())
+
+
+def _interface_kind(text: str) -> str:
+    """``hardware_interface/VelocityJointInterface`` -> ``velocity``; '' when none is named."""
+    word = text.strip().rsplit("/", 1)[-1].lower()
+    return next((kind for kind in ("position", "velocity", "effort") if kind in word), "")
+
+
+def _tags(root: etree._Element) -> frozenset[str]:
+    found: set[str] = set()
+    for element in root.iter():
+        if isinstance(element.tag, str) and len(found) < _MAX_TAGS:
+            found.add(element.tag.rsplit("}", 1)[-1].lower())
+    return frozenset(found)
+
+
 def _legacy(element: etree._Element, kind: str) -> bool:
     """A Gazebo 0.x namespaced element of ``kind`` (``<sensor:ray>``, ``<controller:gazebo_ros_imu
     plugin="...">``), as URDFs written for ROS in 2010-2012 still have them."""
@@ -561,8 +611,10 @@ def _legacy(element: etree._Element, kind: str) -> bool:
 
 
 def _plugin(element: etree._Element, reference: str | None) -> PluginTag:
-    params = []
-    for child in element:
+    params: list[tuple[str, str]] = []
+    for child in element.iterdescendants():
+        if len(params) >= _MAX_PARAMS:
+            break
         if isinstance(child.tag, str) and len(child) == 0 and child.text and child.text.strip():
             params.append((child.tag, child.text.strip()[:_MAX_PARAM_TEXT]))
     return PluginTag(

@@ -198,3 +198,101 @@ def pan_tilt_only() -> RobotText:
     robot = RobotText("ptu")
     robot.chain(robot.root, ["pan_joint", "tilt_joint"])
     return robot
+
+
+def surface_vessel() -> RobotText:
+    """A catamaran: two thrusters on the hull, a buoyancy plugin with a waterline."""
+    robot = RobotText("catamaran")
+    for side in ("left", "right"):
+        robot.joint(f"{side}_thruster_joint", "continuous", robot.root, f"{side}_thruster")
+    robot.add(
+        model_plugin(
+            "hull",
+            "libhull_buoyancy.so",
+            "<link_name>base_link</link_name><metacentric_width>0.1</metacentric_width>",
+        )
+    )
+    return robot
+
+
+def underwater_vehicle() -> RobotText:
+    """A torpedo: one propeller a thruster plugin names, four fins a fin plugin names."""
+    robot = RobotText("torpedo")
+    robot.joint("prop_joint", "continuous", robot.root, "prop")
+    robot.add(model_plugin("drive", "libthruster_model.so", "<jointName>prop_joint</jointName>"))
+    for i in range(4):
+        robot.chain(robot.root, [f"surface{i}"])
+        robot.add(model_plugin(f"f{i}", "libfin_plugin.so", f"<joint_name>surface{i}</joint_name>"))
+    robot.add(model_plugin("water", "libunderwater_object.so"))
+    return robot
+
+
+def propellers_fixed() -> RobotText:
+    """A multirotor whose propellers are fixed links, carrying a two-joint arm."""
+    robot = RobotText("flying_arm")
+    for i in range(4):
+        robot.fixed(robot.root, f"prop{i}")
+    robot.chain(robot.root, ["j1", "j2"])
+    return robot
+
+
+def fixed_wing() -> RobotText:
+    """A plane of fixed links only: a main wing, ailerons, a tail."""
+    robot = RobotText("plane")
+    for link in ("main_wing", "aileron_left", "aileron_right", "horizontal_tail", "motor"):
+        robot.fixed(robot.root, link)
+    return robot
+
+
+def tilt_rotor() -> RobotText:
+    """A tilt-rotor: two tilting rotor units, two ailerons."""
+    robot = RobotText("tilter")
+    for side in ("left", "right"):
+        tilt = robot.chain(robot.root, [f"tilt_{side}"])
+        robot.joint(f"rotor_{side}_joint", "continuous", tilt, f"rotor_{side}")
+        robot.chain(robot.root, [f"aileron_{side}"])
+    return robot
+
+
+def caster_base() -> RobotText:
+    """A differential base with two passive casters (a swivel and a wheel each)."""
+    robot = RobotText("caster_bot")
+    wheeled_base(robot, 2)
+    for corner in ("front", "rear"):
+        robot.joint(
+            f"{corner}_swivel",
+            "continuous",
+            robot.root,
+            f"{corner}_swivel_link",
+            '<axis xyz="0 0 1"/>',
+        )
+        robot.joint(
+            f"{corner}_roller", "continuous", f"{corner}_swivel_link", f"{corner}_roller_wheel"
+        )
+    return robot
+
+
+def parallel_gripper() -> RobotText:
+    """A gripper of one motion: one actuated knuckle, the rest of the linkage mimics it."""
+    robot = RobotText("two_jaw")
+    robot.chain(robot.root, ["finger_joint"])
+    for name in ("left_inner_knuckle", "right_outer_knuckle", "right_inner_knuckle"):
+        robot.joint(
+            f"{name}_joint",
+            "revolute",
+            robot.root,
+            name,
+            '<mimic joint="finger_joint"/><limit lower="0" upper="1" effort="1" velocity="1"/>',
+        )
+    return robot
+
+
+def wheel_legged_manipulator() -> RobotText:
+    """Four legs each ending in a wheel, two arms."""
+    robot = RobotText("centaur")
+    for corner in ("front_left", "front_right", "rear_left", "rear_right"):
+        tip = robot.chain(robot.root, [f"{corner}_hip", f"{corner}_knee", f"{corner}_ankle"])
+        robot.joint(f"{corner}_wheel_joint", "continuous", tip, f"{corner}_wheel")
+    arm(robot, robot.root, "left_", 6)
+    arm(robot, robot.root, "right_", 6)
+    return robot

@@ -117,10 +117,12 @@ def test_the_json_contract_has_exactly_the_documented_keys() -> None:
         "kinematic_type",
         "confidence",
         "evidence",
+        "roles",
         "sensors",
         "motion_controls",
         "combinations",
     ]
+    assert list(data["roles"][0]) == ["joint", "role", "evidence"]
     assert list(data["sensors"][0]) == ["kind", "sensor_type", "count", "source"]
     assert list(data["motion_controls"][0]) == ["motion_control", "source"]
     assert (

@@ -1,0 +1,188 @@
+"""What each moving joint of a robot does: its role, and the evidence that decided it.
+
+A description says what a joint does in several places. :class:`RoleReader` reads them in order
+of strength, and the first that speaks decides:
+
+1. A Gazebo model plugin that names the joint in a parameter: a thruster plugin's
+   ``<jointName>`` (also a thruster link it lists), a motor model's ``<jointName>`` (a rotor), a
+   drive plugin's ``<leftJoint>`` (a wheel; a joint it names for steering steers), a fin or
+   lift-drag plugin's ``<joint_name>`` (a fin or control surface). Which plugin is which is the
+   profile's ``plugins`` patterns.
+2. The joint's place and shape: a vertical swivel that carries a wheel and nothing else is a
+   caster (the wheel below it is the caster's); a propeller on a body in water is a thruster.
+3. Names last: the profile's part patterns on the joint and its child link (``thruster``,
+   ``fin``, ``wing`` for control surfaces, ``caster``, ``wheel``, ``rotor``, ``gripper``).
+
+The roles here are the ones a single joint plays: wheel, steering, caster, rotor, thruster, fin,
+gripper. The limb roles (leg, arm, head, finger, mount, trunk) come from the chains the other
+joints form (:mod:`solver.identify.body`), which also finds wheels by place when names say
+nothing.
+
+Not here: chains and limbs (:mod:`solver.identify.body`), the structure
+(:mod:`solver.identify.classifier`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from solver.identify.profile import PartMatcher, Profile
+from solver.identify.urdf import Joint, PluginTag, Urdf
+
+__all__ = ["JOINT_ROLES", "Role", "RoleReader"]
+
+JOINT_ROLES = ("wheel", "steering", "caster", "rotor", "thruster", "fin", "gripper")
+_ROTATING = ("continuous", "revolute")
+# Plugin part -> the role of a joint it names, strongest first (a propeller a thruster plugin
+# and a lift-drag plugin both name is a thruster).
+_PLUGIN_ROLES = (("thruster", "thruster"), ("flight", "rotor"), ("drive", "wheel"), ("lift", "fin"))
+_Z = 2
+
+
+@dataclass(frozen=True, slots=True)
+class Role:
+    """One joint's role and the evidence that decided it, in words a person can check."""
+
+    joint: str
+    role: str
+    evidence: str
+
+
+def main_axis(axis: tuple[float, float, float]) -> int:
+    """0, 1 or 2 for an axis along x, y or z; -1 for a slanted one."""
+    sizes = [abs(v) for v in axis]
+    top = max(sizes)
+    return sizes.index(top) if top > 0 and sorted(sizes)[1] < 1e-6 else -1
+
+
+class RoleReader:
+    """The single-joint roles of one description (see the module docstring)."""
+
+    def __init__(self, urdf: Urdf, profile: Profile, parts_of: PartMatcher) -> None:
+        self.urdf = urdf
+        self.profile = profile
+        self.parts_of = parts_of
+        self.plugin_parts = {id(p): self._plugin_parts(p) for p in urdf.plugins}
+        self.named = self._named_by_plugins()
+        self.marine = bool(self.plugins_of("marine") or self.plugins_of("thruster")) or any(
+            self.matches("thruster", joint) for joint in urdf.joints if joint.movable
+        )
+
+    def _plugin_parts(self, plugin: PluginTag) -> frozenset[str]:
+        found = set()
+        for part, pattern in self.profile.plugins:
+            if pattern.search(f"{plugin.name} {plugin.filename}"):
+                found.add(part)
+        return frozenset(found)
+
+    def plugins_of(self, part: str) -> list[PluginTag]:
+        """The model plugins whose name or file name the profile reads as ``part``."""
+        return [p for p in self.urdf.plugins if part in self.plugin_parts[id(p)]]
+
+    def plugin_label(self, plugin: PluginTag) -> str:
+        return plugin.filename or plugin.name
+
+    def _named_by_plugins(self) -> dict[str, Role]:
+        """Joints a plugin names in a parameter, with the role that plugin gives them."""
+        joints = {j.name for j in self.urdf.joints if j.movable}
+        by_link = {j.child: j.name for j in self.urdf.joints if j.movable}
+        found: dict[str, Role] = {}
+        for part, role in _PLUGIN_ROLES:
+            for plugin in self.plugins_of(part):
+                label = self.plugin_label(plugin)
+                for tag, text in plugin.params:
+                    # A thruster plugin may list its thrusters by link (a hull's thruster list).
+                    joint = (
+                        text
+                        if text in joints
+                        else by_link.get(text)
+                        if part == "thruster"
+                        else None
+                    )
+                    if joint is None or joint in found:
+                        continue
+                    kind = "steering" if role == "wheel" and "steer" in tag.lower() else role
+                    found[joint] = Role(joint, kind, f"<{tag}> of {part} plugin {label}")
+        return found
+
+    def matches(self, part: str, joint: Joint) -> bool:
+        return part in self.parts_of(joint.name) or part in self.parts_of(joint.child)
+
+    def read(self, joint: Joint, moving_below: set[str]) -> Role | None:
+        """The single-joint role of ``joint``, or ``None`` (a limb joint, or fixed)."""
+        if not joint.movable or joint.type not in (*_ROTATING, "prismatic"):
+            return None
+        named = self.named.get(joint.name)
+        if named is not None:
+            return named
+        if joint.type in _ROTATING:
+            role = self._by_name(joint, joint.child in moving_below)
+            if role is not None:
+                return role
+        own = self.parts_of(joint.name)
+        # A joint whose own name says it is an arm joint (left_wrist_roll_joint into
+        # left_hand_roll_link) stays one.
+        arm_joint = "arm" in own and "gripper" not in own
+        if (self.matches("gripper", joint) or self.on_palm(joint)) and not arm_joint:
+            return Role(joint.name, "gripper", self._named("gripper", joint))
+        return None
+
+    def _by_name(self, joint: Joint, carries: bool) -> Role | None:
+        if self.matches("thruster", joint):
+            return Role(joint.name, "thruster", self._named("thruster", joint))
+        if self.marine and self.matches("rotor", joint) and not carries:
+            return Role(joint.name, "thruster", self._named("rotor", joint) + " on a body in water")
+        if not carries and (self.matches("fin", joint) or self.matches("wing", joint)):
+            part = "fin" if self.matches("fin", joint) else "wing"
+            return Role(joint.name, "fin", self._named(part, joint) + " (a control surface)")
+        if self.matches("caster", joint):
+            return Role(joint.name, "caster", self._named("caster", joint))
+        # Wheels first: a wheel's motor link may be named *_rotor.
+        if self.matches("wheel", joint):
+            return Role(joint.name, "wheel", self._named("wheel", joint))
+        if self.matches("rotor", joint) and not carries:
+            return Role(joint.name, "rotor", self._named("rotor", joint) + ", a spinning leaf")
+        return None
+
+    def on_palm(self, joint: Joint) -> bool:
+        """A movable joint on a link named as a hand or palm moves a finger."""
+        return "gripper" in self.parts_of(joint.parent)
+
+    def _moved(self, link: str) -> bool:
+        """Some movable joint above ``link`` moves it (it is not on the base)."""
+        joint = self.urdf.parent_joint(link)
+        while joint is not None:
+            if joint.movable:
+                return True
+            joint = self.urdf.parent_joint(joint.parent)
+        return False
+
+    def _named(self, part: str, joint: Joint) -> str:
+        where = joint.name if part in self.parts_of(joint.name) else f"its link {joint.child}"
+        return f"{part} name ({where})"
+
+    def casters(self, wheels: dict[str, Role]) -> dict[str, Role]:
+        """Swivels on the base that carry one wheel and nothing else, and their wheels: passive
+        casters. A swivel a drive plugin names steers; one at the end of a leg is the leg's.
+        """
+        found: dict[str, Role] = {}
+        for name, role in wheels.items():
+            wheel = self.urdf.joint(name)
+            if wheel is None or role.role != "wheel" or name in self.named:
+                continue
+            swivel = self.urdf.parent_joint(wheel.parent)
+            if (
+                swivel is None
+                or swivel.type not in _ROTATING
+                or not swivel.movable
+                or main_axis(swivel.axis) != _Z
+                or len([j for j in self.urdf.children(wheel.parent) if j.movable]) != 1
+            ):
+                continue
+            if swivel.name in self.named or self._moved(swivel.parent):
+                continue  # a swivel at the end of a leg steers the leg's wheel
+            found[swivel.name] = Role(
+                swivel.name, "caster", f"a vertical swivel carrying only the wheel {name}"
+            )
+            found[name] = Role(name, "caster", f"the wheel of the caster swivel {swivel.name}")
+        return found

@@ -1,0 +1,79 @@
+"""Each joint's role comes from what it does (plugins, shape, place) before its name, and the
+body from the roles: one small description of the project's own per family."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import pytest
+
+from solver.identify import identify_urdf
+from tests.identify import builders
+from tests.identify.builders import RobotText
+
+FAMILIES: list[tuple[Callable[[], RobotText], str]] = [
+    (builders.surface_vessel, "Surface Vessel"),
+    (builders.underwater_vehicle, "Underwater Vehicle"),
+    (builders.propellers_fixed, "Aerial Manipulator"),
+    (builders.fixed_wing, "UAV"),
+    (builders.tilt_rotor, "UAV"),
+    (builders.caster_base, "UGV"),
+    (builders.parallel_gripper, "Gripper"),
+    (builders.wheel_legged_manipulator, "Legged Mobile Manipulator"),
+]
+
+
+@pytest.mark.parametrize(("build", "structure"), FAMILIES, ids=[f[0].__name__ for f in FAMILIES])
+def test_each_family_is_read_from_what_its_joints_do(
+    build: Callable[[], RobotText], structure: str
+) -> None:
+    assert identify_urdf(build().text()).structure == structure
+
+
+def roles(robot: RobotText) -> dict[str, tuple[str, str]]:
+    return {r.joint: (r.role, r.evidence) for r in identify_urdf(robot.text()).roles}
+
+
+def test_a_joint_a_thruster_plugin_names_is_a_thruster_and_says_which_plugin() -> None:
+    found = roles(builders.underwater_vehicle())
+    assert found["prop_joint"] == (
+        "thruster",
+        "<jointName> of thruster plugin libthruster_model.so",
+    )
+    assert found["surface0"][0] == "fin"
+
+
+def test_thrusters_named_only_by_name_on_a_hull_are_not_wheels() -> None:
+    result = identify_urdf(builders.surface_vessel().text())
+    assert result.body is not None
+    assert not result.body.wheels
+    assert {role.role for role in result.roles} == {"thruster"}
+
+
+def test_a_swivel_carrying_one_wheel_is_a_passive_caster_not_a_leg() -> None:
+    found = roles(builders.caster_base())
+    assert found["front_swivel"] == (
+        "caster",
+        "a vertical swivel carrying only the wheel front_roller",
+    )
+    assert found["front_roller"][0] == "caster"
+    assert found["wheel_left_joint"][0] == "wheel"
+
+
+def test_a_one_motion_linkage_is_a_gripper_not_a_hand() -> None:
+    result = identify_urdf(builders.parallel_gripper().text())
+    assert result.body is not None
+    assert result.body.finger_motions == 1
+    assert roles(builders.parallel_gripper())["right_outer_knuckle_joint"][0] == "finger"
+
+
+def test_a_boat_is_other_under_the_articles_six_types_with_its_reason() -> None:
+    result = identify_urdf(builders.surface_vessel().text())
+    assert result.kinematic_type is None
+    assert any(line.endswith("Other under it, reason: surface vessel") for line in result.evidence)
+
+
+def test_the_decision_path_names_each_structure_rule_tried_in_order() -> None:
+    result = identify_urdf(builders.caster_base().text())
+    assert result.decision[0] == "Surface Vessel: no (needs marine, has 0, needs surface, has 0)"
+    assert result.decision[-1] == "UGV: yes (mobile_base, arms = 0, legs = 0)"
