@@ -17,6 +17,8 @@ PRIVATE_SIGNALS = {
     "solver.identify.xacro.child.Refused",
     # Raised by the expression guard inside that child, reported the same way.
     "solver.identify.xacro.expressions.GuardError",
+    # Raised inside the bag-reading child process and reported by the parent as text.
+    "solver.identify.readers.bag_child.Refused",
     # Raised by the RE2 compile helper and turned into a located fault by the profile reader.
     "solver.identify.profile.PatternError",
     # Raised by the bounded XML-RPC transport, turned into MasterError (ReplyTooLarge) by the

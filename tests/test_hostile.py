@@ -716,3 +716,88 @@ def test_mutated_urdfs_are_identified_or_refused(data: bytes) -> None:
     else:
         return
     assert message.startswith("fuzz.urdf")
+
+
+# Bags (issue 23.3): length fields made huge or zero, bytes flipped, a region repeated (as the
+# repeated chunk index was), the end cut off. Each mutated bag goes through `identify --bag`:
+# its topics or a located refusal, never a traceback; the reader's own bounds end it.
+BAG_HOSTILE = [
+    b"\xff\xff\xff\xff",
+    b"\xff" * 8,
+    b"\x00\x00\x00\x00",
+    b"\x7f\xff\xff\xff",
+    b"\x00" * 9,
+    b"op=\x07",
+    b"op=\x06",
+    b"zstd",
+    b"lz4",
+    b"\x89MCAP0\r\n",
+    b"#ROSBAG V2.0\n",
+]
+
+
+@st.composite
+def bag_mutations(draw: st.DrawFn, original: bytes) -> bytes:
+    data = bytearray(original)
+    for _ in range(draw(st.integers(1, 3))):
+        start = draw(st.integers(0, len(data)))
+        how = draw(st.sampled_from(["overwrite", "repeat", "cut"]))
+        if how == "overwrite":
+            insert = draw(st.sampled_from(BAG_HOSTILE) | st.binary(min_size=1, max_size=8))
+            data[start : start + len(insert)] = insert
+        elif how == "repeat":
+            piece = data[start : start + draw(st.integers(1, 256))]
+            data[start:start] = piece * draw(st.integers(1, 40))
+        else:
+            del data[start:]
+    return bytes(data)
+
+
+def _small_bag(kind: str) -> bytes:
+    """A real small bag of ``kind`` (``.bag``, ``.db3``, ``.mcap``) written with rosbags."""
+    import tempfile
+
+    from rosbags.rosbag2 import StoragePlugin
+
+    from tests.identify.readers import bagfiles
+
+    with tempfile.TemporaryDirectory() as folder:
+        if kind == ".bag":
+            return bagfiles.ros1(Path(folder) / "run.bag").read_bytes()
+        plugin = StoragePlugin.SQLITE3 if kind == ".db3" else StoragePlugin.MCAP
+        return bagfiles.ros2(Path(folder) / "run", plugin).read_bytes()
+
+
+BAG_FUZZ = settings(FUZZ, max_examples=15)
+
+
+def _identify_with_bag(folder: Path, data: bytes, suffix: str) -> None:
+    urdf = folder / "rover.urdf"
+    urdf.write_bytes(_corpus_urdf())
+    bag = folder / f"run{suffix}"
+    bag.write_bytes(data)
+    assert run_main("identify", urdf, "--bag", bag) in (0, 2)
+
+
+@BAG_FUZZ
+@given(data=bag_mutations(_small_bag(".bag")))
+def test_mutated_ros1_bags_are_read_or_refused(
+    tmp_path_factory: pytest.TempPathFactory, data: bytes
+) -> None:
+    _identify_with_bag(tmp_path_factory.mktemp("bag"), data, ".bag")
+
+
+@BAG_FUZZ
+@given(data=bag_mutations(_small_bag(".db3")))
+def test_mutated_ros2_databases_are_read_or_refused(
+    tmp_path_factory: pytest.TempPathFactory, data: bytes
+) -> None:
+    _identify_with_bag(tmp_path_factory.mktemp("bag"), data, ".db3")
+
+
+@BAG_FUZZ
+@given(data=bag_mutations(_small_bag(".mcap")))
+def test_mutated_mcaps_are_read_or_refused(
+    tmp_path_factory: pytest.TempPathFactory, data: bytes
+) -> None:
+    _identify_with_bag(tmp_path_factory.mktemp("bag"), data, ".mcap")

@@ -9,7 +9,8 @@ Modules, one concept each:
 
 =======================  ========================================================
 ``readers.safexml``      safe XML parsing (no entities, no network, size cap)
-``readers.bags``         topics recorded in ROS 1/2 bags (rosbags)
+``readers.bags``         topics recorded in ROS 1/2 bags (rosbags), bounded per bag
+``limited``              a fresh, limited interpreter for a reader (bags, trusted xacro)
 ``urdf``                 URDF text -> checked tree of links, joints, sensors, plugins
 ``srdf``                 MoveIt SRDF: groups, chains, end effectors, virtual joints
 ``topics``               topic list files -> :class:`Topic` triples

@@ -1,74 +1,65 @@
-"""Topics and message types recorded in a bag, read with the ``rosbags`` library (no ROS needed).
+"""Topics and message types recorded in a bag, read with ``rosbags`` (no ROS needed), bounded.
 
-ROS 1 ``.bag`` files, ROS 2 bag folders and their ``.db3`` / ``.mcap`` files are read with
-``rosbags``, each with its format's own reader (see :func:`_connections`). Only the connection
-metadata is used (topic, message type), never the messages, so a large bag costs no more than
-its index, in time linear in its topics. Every topic is returned with an unknown direction: a
-bag records what was published, not who subscribed.
+ROS 1 ``.bag`` files, ROS 2 bag folders and their ``.db3`` / ``.mcap`` files are read from
+their index only (topic, message type), never their messages, in time linear in their topics.
+Every topic is returned with an unknown direction: a bag records what was published, not who
+subscribed.
+
+A bag comes from a stranger, and the bag library cannot bound what it does with one: a ROS 2
+database can define its tables as views that run forever and spill into the temporary folder,
+a ROS 1 bag can repeat its index records until reading it takes gigabytes, an MCAP chunk can
+declare a gigabyte inside a few kilobytes. So every bag is read in a child process
+(:mod:`solver.identify.readers.bag_child`, started by :mod:`solver.identify.limited`) within
+:class:`BagLimits`: CPU time and memory (the child's own resource limits), wall-clock time and
+temporary space (watched from here: the child's temporary folder is private, and removed
+afterwards), decompressed bytes per chunk and per bag (counted by the child). Past any of them
+the bag is refused with an error naming it and the bound; so is a bag the library cannot read.
 
 Not here: what the topics mean (:mod:`solver.identify.interfaces`).
 """
 
 from __future__ import annotations
 
+import os
+import shutil
+import sys
+import tempfile
+from dataclasses import dataclass
 from pathlib import Path
 
 from solver.errors import InputError
 from solver.extras import require
+from solver.identify.limited import Finished, run_limited
 from solver.ros.names import Topic, normalise_type
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
-__all__ = ["read_bag_topics"]
+__all__ = ["BagLimits", "read_bag_topics"]
+
+_MIB = 2**20
 
 
-def _short(error: BaseException, limit: int = 120) -> str:
-    """A parser's message, escaped and cut: it may quote bytes of the bag."""
-    text = str(error).encode("unicode_escape", "backslashreplace").decode("ascii")
-    return text if len(text) <= limit else text[: limit - 3] + "..."
+@dataclass(frozen=True, slots=True)
+class BagLimits:
+    """What reading one bag may use; past any of them the bag is refused, naming the bound.
 
-
-def _connections(bag: Path) -> list[tuple[str, str]]:
-    """(topic, type) pairs from the reader for this kind of bag, in connection order.
-
-    Not :class:`rosbags.highlevel.AnyReader` where a format's own reader serves: AnyReader
-    parses every connection's message definition (8,000 topics: a second), and a ROS 2 bag
-    folder's ``metadata.yaml`` is read with a pure-Python YAML parser (20,000 topics: half a
-    minute). A storage file's own index holds the same pairs and reads in linear time.
+    A real bag's index reads in well under a second and a few tens of MB whatever its size,
+    since no message is read: these bounds stop only hostile or broken bags.
     """
-    from rosbags.highlevel import AnyReader
-    from rosbags.rosbag1 import Reader as Reader1
-    from rosbags.rosbag2 import Reader as Reader2
 
-    if bag.is_file() and bag.suffix == ".bag":
-        with Reader1(bag) as reader:
-            return [(c.topic, c.msgtype) for c in reader.connections]
-    storage = (
-        [bag]
-        if bag.is_file() and bag.suffix in _ROS2_STORAGE
-        else sorted(p for p in bag.iterdir() if p.suffix in _ROS2_STORAGE)
-        if bag.is_dir()
-        else []
-    )
-    if storage:
-        pairs = []
-        for file in storage:
-            with Reader2(file) as reader:
-                pairs += [(c.topic, c.msgtype) for c in reader.connections]
-        return pairs
-    with AnyReader([bag]) as any_reader:
-        return [(c.topic, c.msgtype) for c in any_reader.connections]
+    cpu_seconds: int = 10
+    wall_seconds: float = 20.0
+    memory_bytes: int = 512 * _MIB  # address space of the reading process
+    temp_bytes: int = 256 * _MIB  # its private temporary folder, and any one file it writes
+    chunk_bytes: int = 64 * _MIB  # one compressed chunk, decompressed
+    bag_bytes: int = 512 * _MIB  # every chunk of the bag, decompressed
+    answer_bytes: int = 64 * _MIB  # the topic list it hands back
 
 
-_ROS2_STORAGE = (".db3", ".mcap")
-
-
-def read_bag_topics(path: str | Path, *, display: str | None = None) -> tuple[Topic, ...]:
+def read_bag_topics(
+    path: str | Path, *, display: str | None = None, limits: BagLimits = BagLimits()
+) -> tuple[Topic, ...]:
     """The (topic, type) pairs a bag recorded, in the bag's connection order, without repeats."""
     require("rosbags", feature="reading bag files (identify --bag)")
-    from rosbags.highlevel import AnyReaderError
-    from rosbags.rosbag1 import ReaderError as Reader1Error
-    from rosbags.rosbag2 import ReaderError as Reader2Error
-
     name = shown(display if display is not None else str(path), limit=SHOWN_FILE_NAME_CHARS)
     bag = Path(path)
     try:
@@ -81,23 +72,90 @@ def read_bag_topics(path: str | Path, *, display: str | None = None) -> tuple[To
         raise
     except ValueError:  # a NUL byte in the name
         raise InputError.at(name, "not a usable file name", code="bag") from None
-    try:
-        pairs = _connections(bag)
-    except (AnyReaderError, Reader1Error, Reader2Error) as error:
-        raise InputError.at(
-            name, f"cannot read as a ROS 1 or ROS 2 bag: {_short(error)}", code="bag"
-        ) from None
-    except RecursionError:
-        raise InputError.at(name, "cannot read bag: nested too deeply", code="bag") from None
-    except Exception as error:
-        # rosbags parses files strangers recorded; a corrupt or truncated one (an MCAP holding
-        # only its magic bytes) ends in whatever its parser trips over (TypeError, struct.error,
-        # UnicodeDecodeError...). Each is this bag's problem, said with its name, never a
-        # traceback.
-        raise InputError.at(
-            name,
-            f"cannot read bag (corrupt or truncated?): {type(error).__name__}: {_short(error)}",
-            code="bag",
-        ) from None
+    except OSError as error:  # a name past the file system's limits
+        reason = f"not a usable file name ({error.strerror})"
+        raise InputError.at(name, reason, code="bag") from None
+    pairs = _read_in_child(bag.resolve(), name, limits)
     topics = dict.fromkeys(Topic(topic, normalise_type(kind)) for topic, kind in pairs)
     return tuple(topics)
+
+
+def _read_in_child(bag: Path, name: str, limits: BagLimits) -> list[tuple[str, str]]:
+    temporary = Path(tempfile.mkdtemp(prefix="teleop-ui-bag-"))
+    try:
+        finished = run_limited(
+            [str(Path(__file__).with_name("bag_child.py")), *_library_paths()],
+            {
+                "path": str(bag),
+                "cpu_seconds": limits.cpu_seconds,
+                "memory_bytes": limits.memory_bytes,
+                "temp_bytes": limits.temp_bytes,
+                "chunk_bytes": limits.chunk_bytes,
+                "bag_bytes": limits.bag_bytes,
+            },
+            wall_seconds=limits.wall_seconds,
+            answer_bytes=limits.answer_bytes,
+            env={"TMPDIR": str(temporary), "SQLITE_TMPDIR": str(temporary)},
+            cwd=str(temporary),
+            watch=lambda: "temp" if _size(temporary) > limits.temp_bytes else None,
+        )
+    finally:
+        shutil.rmtree(temporary, ignore_errors=True)
+    answer = finished.answer
+    if answer is None or finished.returncode != 0:
+        raise InputError.at(name, _why_stopped(finished, limits), code="bag-limit")
+    if answer.get("ok"):
+        pairs = answer.get("pairs")
+        if isinstance(pairs, list):
+            return [(str(topic), str(kind)) for topic, kind in pairs]
+    message = shown(str(answer.get("message") or "no reason given"), limit=200)
+    kind = answer.get("kind")
+    if kind == "limit":
+        raise InputError.at(name, f"bag refused: {message}", code="bag-limit")
+    if kind == "reader":
+        raise InputError.at(name, f"cannot read as a ROS 1 or ROS 2 bag: {message}", code="bag")
+    # rosbags parses files strangers recorded; a corrupt or truncated one ends in whatever its
+    # parser trips over (TypeError, struct.error, UnicodeDecodeError...): this bag's problem.
+    raise InputError.at(
+        name,
+        f"cannot read bag (corrupt or truncated?): {shown(answer.get('type'))}: {message}",
+        code="bag",
+    )
+
+
+def _why_stopped(finished: Finished, limits: BagLimits) -> str:
+    if finished.stopped == "temp":
+        return (
+            f"bag refused: reading it needed more than {limits.temp_bytes} bytes of temporary space"
+        )
+    if finished.stopped == "time":
+        return f"bag refused: reading it took more than {limits.wall_seconds:g} s"
+    if finished.oversized:
+        return f"bag refused: its topic list is larger than {limits.answer_bytes} bytes"
+    reason = {
+        24: f"reading it used more than {limits.cpu_seconds} s of CPU",
+        9: f"reading it used more than {limits.cpu_seconds} s of CPU or "
+        f"{limits.memory_bytes // _MIB} MiB of memory",
+        25: f"reading it wrote a file larger than {limits.temp_bytes} bytes",
+    }.get(finished.signal or 0)
+    if reason is not None:
+        return f"bag refused: {reason}"
+    return f"the bag reader ended without an answer (exit status {finished.returncode})"
+
+
+def _library_paths() -> list[str]:
+    """Where the child finds rosbags and its dependencies: this interpreter's import folders
+    (``-S`` leaves ``.pth`` files unread, so they are passed as they are here)."""
+    return [p for p in sys.path if p and os.path.isdir(p)]
+
+
+def _size(folder: Path) -> int:
+    """Bytes in the files under ``folder`` (the child's temporary folder)."""
+    total = 0
+    for root, _, files in os.walk(folder):
+        for file in files:
+            try:
+                total += os.lstat(os.path.join(root, file)).st_size
+            except OSError:
+                continue  # removed meanwhile
+    return total

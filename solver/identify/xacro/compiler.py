@@ -22,19 +22,15 @@ Not here: reading the compiled URDF (:mod:`solver.identify.urdf`); the child's f
 
 from __future__ import annotations
 
-import json
-import os
 import re
-import subprocess
-import sys
-import threading
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import IO, TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any
 
 import solver
 from solver.errors import Fault, InputError, Location
+from solver.identify.limited import run_limited
 from solver.identify.readers.safexml import MAX_XML_BYTES, line_of, parse_xml, read_bytes
 from solver.identify.xacro.packages import PACKAGE_PATH_ENV, find_packages, own_package_root
 
@@ -44,6 +40,8 @@ if TYPE_CHECKING:
     from lxml import etree
 
 _MISSING = re.compile(r"Package not found: ([\w\-]+)")
+# The child's answer: the URDF text (at most MAX_XML_BYTES, JSON-escaped) and its warnings.
+_ANSWER_BYTES = 2 * MAX_XML_BYTES + 65536
 
 
 @dataclass(frozen=True, slots=True)
@@ -144,51 +142,34 @@ def _run_child(request: dict[str, Any], name: str, limits: XacroLimits) -> dict[
         "import sys; sys.path[:0] = sys.argv[1:]; "
         "from solver.identify.xacro.child import main; main()"
     )
-    process = subprocess.Popen(
-        [sys.executable, "-I", "-S", "-B", "-c", code, root, *_site_paths(name)],
-        stdin=subprocess.PIPE,
-        stdout=subprocess.PIPE,
-        stderr=subprocess.DEVNULL,
-        env={"PATH": os.defpath, "LANG": "C.UTF-8"},
+    finished = run_limited(
+        ["-c", code, root, *_site_paths(name)],
+        request,
+        wall_seconds=limits.wall_seconds,
+        answer_bytes=_ANSWER_BYTES,
         cwd=root,
-        start_new_session=True,
     )
-    output: list[bytes] = []
-    reader = threading.Thread(target=_read_bounded, args=(process.stdout, output), daemon=True)
-    reader.start()
-    try:
-        if process.stdin is not None:  # always: Popen was given stdin=PIPE
-            with process.stdin:
-                process.stdin.write(json.dumps(request).encode("utf-8"))
-        process.wait(timeout=limits.wall_seconds)
-    except subprocess.TimeoutExpired:
-        _kill(process)
+    if finished.stopped is not None:
         raise InputError.at(
             name,
             f"xacro did not finish within {limits.wall_seconds:g} s; stopped",
             code="xacro-limit",
-        ) from None
-    except BrokenPipeError:
-        process.wait(timeout=limits.wall_seconds)
-    reader.join(timeout=limits.wall_seconds)
-    raw = b"".join(output)
-    if process.returncode != 0 or not raw:
-        signal = -process.returncode if process.returncode < 0 else None
+        )
+    if finished.oversized:
+        raise InputError.at(
+            name, f"xacro output is larger than {MAX_XML_BYTES} bytes; refused", code="too-large"
+        )
+    if finished.returncode != 0 or finished.answer is None:
         reason = {
             24: f"used more than {limits.cpu_seconds} s of CPU",
             9: f"used more than {limits.cpu_seconds} s of CPU or "
             f"{limits.memory_bytes // 2**20} MiB of memory",
-        }.get(signal or 0, f"ended without an answer (exit status {process.returncode})")
-        raise InputError.at(name, f"xacro {reason}; stopped", code="xacro-limit")
-    if len(raw) > 2 * MAX_XML_BYTES + 65536:
-        raise InputError.at(
-            name, f"xacro output is larger than {MAX_XML_BYTES} bytes; refused", code="too-large"
+        }.get(
+            finished.signal or 0,
+            f"ended without an answer (exit status {finished.returncode})",
         )
-    try:
-        answer: dict[str, Any] = json.loads(raw)
-    except ValueError:
-        raise InputError.at(name, "xacro gave no readable answer", code="xacro") from None
-    return answer
+        raise InputError.at(name, f"xacro {reason}; stopped", code="xacro-limit")
+    return finished.answer
 
 
 def _site_paths(name: str) -> list[str]:
@@ -206,27 +187,6 @@ def _site_paths(name: str) -> list[str]:
 
     modules = (xacro, yaml, lxml)
     return sorted({str(Path(m.__file__ or "").resolve().parent.parent) for m in modules})
-
-
-def _read_bounded(stream: IO[bytes] | None, output: list[bytes]) -> None:
-    if stream is None:
-        return
-    limit = 2 * MAX_XML_BYTES + 65536 + 1
-    size = 0
-    while size < limit:
-        chunk = stream.read(min(1 << 20, limit - size))
-        if not chunk:
-            break
-        output.append(chunk)
-        size += len(chunk)
-
-
-def _kill(process: subprocess.Popen[bytes]) -> None:
-    try:
-        os.killpg(process.pid, 9)
-    except OSError:
-        process.kill()
-    process.wait()
 
 
 def _xacro_error(

@@ -3,6 +3,10 @@
 from __future__ import annotations
 
 import json
+import os
+import sqlite3
+import struct
+import tempfile
 from pathlib import Path
 
 import pytest
@@ -12,10 +16,11 @@ from rosbags.rosbag2 import Writer as Writer2
 from rosbags.typesys import Stores, get_types_from_msg, get_typestore
 
 from solver.errors import InputError
-from solver.identify.readers.bags import read_bag_topics
+from solver.identify.readers.bags import BagLimits, read_bag_topics
 from solver.ros.names import Topic
 from tests.conftest import run_cli
 from tests.identify import builders
+from tests.identify.readers import bagfiles
 
 TOPICS = [
     ("/scan", "sensor_msgs/msg/LaserScan"),
@@ -81,3 +86,180 @@ def test_identify_with_a_bag_adds_sensors_and_controls(tmp_path: Path) -> None:
         ("camera", "2D Camera", "bag run.bag: /camera"),
     ]
     assert [c["motion_control"] for c in data["motion_controls"]] == ["Driving", "Waypoint"]
+
+
+# ---- issue 23.3 and 31.4: hostile bags, each within its bound ---------------------------------
+
+
+DEFAULT = BagLimits()
+# Empty records (an opcode and a zero length: nine zero bytes each) fill these chunks exactly.
+RECORDS_OF_A_MIB = 9 * (2**20 // 9)
+
+
+def refusal(bag: Path, limits: BagLimits = DEFAULT) -> str:
+    """The located refusal reading ``bag`` ends with; its message."""
+    with pytest.raises(InputError) as caught:
+        read_bag_topics(bag, limits=limits)
+    fault = caught.value.faults[0]
+    assert fault.location.file == str(bag)
+    assert fault.code in {"bag", "bag-limit"}
+    return fault.message
+
+
+@pytest.fixture
+def private_temp(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+    """Where the bag reader makes its private temporary folder, for the test to look at."""
+    folder = tmp_path / "tmp"
+    folder.mkdir()
+    monkeypatch.setattr(tempfile, "tempdir", str(folder))
+    return folder
+
+
+RECURSIVE = (
+    "WITH RECURSIVE r(n) AS (SELECT 1 UNION ALL SELECT n + 1 FROM r) SELECT n AS id, {columns} "
+    "FROM r"
+)
+
+
+def test_message_definitions_that_are_a_recursive_view_are_never_read(
+    tmp_path: Path, private_temp: Path
+) -> None:
+    # The issue's 16 KB bag: it ran forever and filled the temporary folder.
+    storage = bagfiles.ros2(tmp_path / "run", StoragePlugin.SQLITE3)
+    with sqlite3.connect(storage) as connection:
+        connection.executescript(
+            "DROP TABLE message_definitions; CREATE VIEW message_definitions AS "
+            + RECURSIVE.format(
+                columns="'x/msg/Y' AS topic_type, 'ros2msg' AS encoding, "
+                "'int32 x' AS encoded_message_definition, '' AS type_description_hash"
+            )
+        )
+    assert [t.name for t in read_bag_topics(storage)] == ["/scan", "/cmd_vel"]
+    assert list(private_temp.iterdir()) == []
+
+
+@pytest.mark.parametrize(
+    ("table", "replacement", "kind"),
+    [
+        (
+            "topics",
+            "CREATE VIEW topics AS "
+            + RECURSIVE.format(columns="'/t' AS name, 'std_msgs/msg/String' AS type"),
+            "view",
+        ),
+        ("messages", "CREATE VIRTUAL TABLE messages USING fts5(data)", "a virtual table"),
+    ],
+    ids=["topics-a-recursive-view", "messages-a-virtual-table"],
+)
+def test_a_database_whose_tables_run_its_own_sql_is_refused(
+    tmp_path: Path, table: str, replacement: str, kind: str
+) -> None:
+    storage = bagfiles.ros2(tmp_path / "run", StoragePlugin.SQLITE3)
+    with sqlite3.connect(storage) as connection:
+        connection.executescript(f"DROP TABLE {table}; {replacement}")
+    message = refusal(storage)
+    assert f"its {table!r} is {kind}, not a table" in message
+
+
+def test_fifty_thousand_topics_with_as_many_definitions_are_read_within_the_bounds(
+    tmp_path: Path,
+) -> None:
+    # The reader library matches every topic against every definition (51 s here); the topics
+    # table alone is read in one pass, well inside the CPU bound that would refuse it.
+    topics = [(f"/robot/t{i}", f"pkg/msg/T{i}") for i in range(50_000)]
+    storage = bagfiles.db3(tmp_path / "many.db3", topics, definitions=50_000)
+    found = read_bag_topics(storage)
+    assert len(found) == 50_000
+    assert found[-1] == Topic("/robot/t49999", "pkg/T49999")
+
+
+def test_a_ros1_bag_whose_chunk_index_repeats_40_times_gives_its_topics(tmp_path: Path) -> None:
+    # A full reader indexes every message once per copy (677 MB for the issue's bag); the
+    # topics are in the connection records, read alone.
+    bag = bagfiles.ros1_with_repeated_chunk_infos(tmp_path / "repeated.bag", copies=40)
+    assert [t.name for t in read_bag_topics(bag)] == ["/scan", "/cmd_vel"]
+
+
+def test_a_ros1_bag_header_declaring_4_gib_is_refused_within_the_memory_bound(
+    tmp_path: Path,
+) -> None:
+    bag = tmp_path / "huge-header.bag"
+    bag.write_bytes(b"#ROSBAG V2.0\n" + struct.pack("<I", 0xFFFFFFF0) + b"\0" * 64)
+    assert "needs more than 512 MiB" in refusal(bag)
+
+
+def test_an_mcap_chunk_declaring_a_gibibyte_is_refused_before_it_is_decompressed(
+    tmp_path: Path,
+) -> None:
+    # The issue's 32 KB MCAP took 1-2 GB of memory.
+    bag = bagfiles.mcap(tmp_path / "bomb.mcap", [(2**30, bagfiles.zstd_of_zeros(2**30))])
+    assert "a chunk declares 1073741824 bytes decompressed; at most 67108864" in refusal(bag)
+
+
+def test_an_mcap_chunk_expanding_past_what_it_declares_is_cut_at_its_declaration(
+    tmp_path: Path,
+) -> None:
+    bag = bagfiles.mcap(tmp_path / "liar.mcap", [(1024, bagfiles.zstd_of_zeros(256 * 2**20))])
+    assert "Chunk size mismatch: expected 1024 bytes, got 1025" in refusal(bag)
+
+
+def test_the_chunks_of_one_bag_are_decompressed_to_at_most_its_bound_in_all(
+    tmp_path: Path,
+) -> None:
+    chunk = (RECORDS_OF_A_MIB, bagfiles.zstd_of_zeros(RECORDS_OF_A_MIB))
+    bag = bagfiles.mcap(tmp_path / "many-chunks.mcap", [chunk] * 4)
+    limits = BagLimits(chunk_bytes=2**20, bag_bytes=3 * 2**20)
+    assert "its chunks decompress to more than 3145728 bytes in all" in refusal(bag, limits)
+
+
+def test_a_file_compressed_bag_expanding_past_the_temporary_space_is_refused(
+    tmp_path: Path, private_temp: Path
+) -> None:
+    folder = tmp_path / "compressed"
+    bagfiles.file_compressed_ros2(folder).write_bytes(bagfiles.zstd_of_zeros(8 * 2**20))
+    message = refusal(folder, BagLimits(temp_bytes=2**20))
+    assert "needs more than 1048576 bytes of temporary space" in message
+    assert list(private_temp.iterdir()) == []
+
+
+def test_a_bag_that_keeps_its_reader_busy_is_stopped_at_the_cpu_bound(tmp_path: Path) -> None:
+    # 48 MiB of empty records, read nine bytes at a time.
+    size = 48 * RECORDS_OF_A_MIB
+    bag = bagfiles.mcap(tmp_path / "busy.mcap", [(size, bagfiles.zstd_of_zeros(size))])
+    assert "reading it used more than 1 s of CPU" in refusal(bag, BagLimits(cpu_seconds=1))
+
+
+def test_a_bag_whose_metadata_never_ends_is_stopped_at_the_wall_clock_bound(
+    tmp_path: Path,
+) -> None:
+    folder = tmp_path / "waiting"
+    folder.mkdir()
+    os.mkfifo(folder / "metadata.yaml")  # read by the reader, written by no one
+    assert "reading it took more than 1 s" in refusal(folder, BagLimits(wall_seconds=1))
+
+
+def test_a_storage_file_that_is_a_fifo_is_refused_at_once(tmp_path: Path) -> None:
+    folder = tmp_path / "fifo"
+    folder.mkdir()
+    os.mkfifo(folder / "run.db3")
+    assert "run.db3: not a regular file" in refusal(folder)
+
+
+@pytest.mark.parametrize("kind", ["recursive-view", "mcap-bomb"])
+def test_identify_refuses_a_hostile_bag_with_exit_2_and_its_name(tmp_path: Path, kind: str) -> None:
+    urdf = tmp_path / "rover.urdf"
+    urdf.write_text(builders.ugv().text(), encoding="utf-8")
+    if kind == "mcap-bomb":
+        bag = bagfiles.mcap(tmp_path / "bomb.mcap", [(2**30, bagfiles.zstd_of_zeros(2**30))])
+    else:
+        bag = bagfiles.db3(tmp_path / "view.db3", [("/scan", "sensor_msgs/msg/LaserScan")])
+        with sqlite3.connect(bag) as connection:
+            connection.executescript(
+                "DROP TABLE topics; CREATE VIEW topics AS "
+                + RECURSIVE.format(columns="'/t' AS name, 'std_msgs/msg/String' AS type")
+            )
+    result = run_cli("identify", urdf, "--bag", bag)
+    assert result.returncode == 2
+    assert result.stderr.startswith(f"{bag}: ")
+    assert "Traceback" not in result.stderr
+    assert result.stdout == ""
