@@ -28,6 +28,12 @@ from solver.identify.urdf import PluginTag, SensorTag, Urdf
 __all__ = ["Detection", "Sensor", "merge", "presented_count", "sensors_from_urdf"]
 
 _LINK_PARAMS = ("linkName", "bodyName", "frameName", "frameId", "frame_name", "link_name")
+_JOINT_PARAMS = ("jointName", "joint_name", "joint")
+# How many joints that do not move may separate one device's frames (a sensor link, its
+# optical frame, a beam).
+_DEVICE_DEPTH = 2
+# Kinds whose one device is declared as parts (an IMU's accelerometer and gyrometer).
+_COMPOSED = ("imu",)
 
 
 @dataclass(frozen=True, slots=True)
@@ -52,31 +58,94 @@ class Sensor:
 
 
 def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tuple[Detection, ...]:
-    """The sensors a URDF declares, in document order."""
-    found: list[Detection] = []
-    declared = {(_element_kind(t, profile), t.link) for t in urdf.sensors if t.origin == "gazebo"}
+    """The sensors a URDF declares, one per physical device, in document order.
+
+    One device declared twice (a Gazebo ``<sensor>`` and a URDF ``<sensor>``, a plugin feeding
+    an element, two parts of one IMU on one link) counts once; so does a device whose beams
+    hang from its own link on joints that do not move (a DVL plugin and its four range rays),
+    and a colour and a depth stream on one link are one RGB-D camera. Distinct devices count
+    apart even when they share a name (one force sensor per joint), and sensors declared alike
+    with names of their own on one link (three cameras on a head frame) are as many.
+    """
+    found: list[tuple[Detection, str]] = []
+    urdf_links = {t.name: t.link for t in urdf.sensors if t.origin == "urdf" and t.link}
     for tag in urdf.sensors:
         kind = _element_kind(tag, profile)
-        if tag.origin == "urdf" and tag.link is not None and (kind, tag.link) in declared:
-            continue  # one physical sensor declared as a Gazebo <sensor> and a URDF <sensor>
-        found.append(Detection(kind, tag.name or tag.type, source, tag.link, tag.vertical_samples))
-    seen = {(d.kind, d.link) for d in found}
+        link = tag.link
+        if link is not None and not urdf.has_link(link) and link in urdf_links:
+            link = urdf_links[link]  # a Gazebo <sensor> referring to a URDF <sensor> by name
+        found.append(
+            (Detection(kind, tag.name or tag.type, source, link, tag.vertical_samples), tag.origin)
+        )
     for plugin in urdf.plugins:
         simulated = _plugin_kind(plugin, profile)
         if simulated is None:
             continue
         link = plugin.param(*_LINK_PARAMS) or plugin.reference
-        if (simulated, link) in seen:
-            continue  # the plugin publishes a sensor element already counted
-        seen.add((simulated, link))
-        found.append(Detection(simulated, plugin.name or plugin.filename, source, link))
-    return tuple(found)
+        joint = urdf.joint(plugin.param(*_JOINT_PARAMS) or "")
+        if link is None and joint is not None:
+            link = joint.child  # a sensor on a joint measures at the joint's child link
+        name = plugin.name or plugin.filename
+        if simulated == "unknown":
+            name = f"{name} ({plugin.filename or plugin.name})"
+        found.append((Detection(simulated, name, source, link), "plugin"))
+    return tuple(_devices(found, urdf))
+
+
+def _devices(found: list[tuple[Detection, str]], urdf: Urdf) -> list[Detection]:
+    """One detection per physical device (see :func:`sensors_from_urdf`); linear in their
+    number (an index by kind and link, a few links up each)."""
+    origins: dict[tuple[str, str], set[str]] = {}
+    for detection, origin in found:
+        if detection.link is not None:
+            origins.setdefault((detection.kind, detection.link), set()).add(origin)
+    kept: list[Detection] = []
+    seen: dict[tuple[str, str], list[tuple[str, str]]] = {}
+    for detection, origin in found:
+        link = detection.link
+        if link is None:
+            kept.append(detection)
+            continue
+        # A part of a device declared above it elsewhere (a DVL plugin's range beams, a
+        # sensor's optical frame); two elements of one kind (a shin and a foot contact) stay.
+        if any(origins.get((detection.kind, up), {origin}) - {origin} for up in _above(link, urdf)):
+            continue
+        here = seen.setdefault((detection.kind, link), [])
+        if any(_same(detection, origin, name, theirs) for name, theirs in here):
+            continue
+        here.append((detection.name, origin))
+        kept.append(detection)
+    depth = {d.link for d in kept if d.kind == "depth_camera"}
+    # A colour camera on the link of a depth camera is the RGB-D camera's colour stream.
+    return [d for d in kept if not (d.kind == "camera" and d.link in depth)]
+
+
+def _same(detection: Detection, origin: str, name: str, theirs: str) -> bool:
+    """Declarations of one kind on one link are one device when they come from two places
+    (a Gazebo and a URDF element) or share a name, or are parts of one IMU (a gyrometer and
+    an accelerometer); sensors declared alike with names of their own are distinct."""
+    return origin != theirs or detection.name == name or detection.kind in _COMPOSED
+
+
+def _above(link: str, urdf: Urdf) -> list[str]:
+    """The links above ``link`` through joints that do not move, a few steps, not the root."""
+    found = []
+    joint = urdf.parent_joint(link)
+    for _ in range(_DEVICE_DEPTH):
+        if joint is None or joint.movable or joint.parent == urdf.root:
+            break
+        found.append(joint.parent)
+        joint = urdf.parent_joint(joint.parent)
+    return found
 
 
 def _element_kind(tag: SensorTag, profile: Profile) -> str:
     kind = tag.type or "unknown"  # a URDF <sensor> with no kind element: told by its name
     for rule in profile.element_rules:
-        if rule.accepts(kind, tag.text):
+        if rule.accepts(kind, tag.device_text):
+            return rule.kind
+    for rule in profile.element_rules:  # topic names last
+        if rule.match is not None and rule.accepts(kind, tag.text):
             return rule.kind
     return kind
 

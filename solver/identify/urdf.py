@@ -134,6 +134,13 @@ class SensorTag:
         """Everything that names this sensor, for pattern matching."""
         return " ".join([self.name, self.link or "", *(p.text for p in self.plugins)])
 
+    @property
+    def device_text(self) -> str:
+        """What names the device itself: its name, link and plugins, not the topics it feeds
+        (a plain camera whose plugin publishes ``depth/...`` topics is still a camera)."""
+        plugins = (f"{p.name} {p.filename}" for p in self.plugins)
+        return " ".join([self.name, self.link or "", *plugins])
+
 
 @dataclass(frozen=True)
 class Urdf:

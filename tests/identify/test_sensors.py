@@ -196,3 +196,48 @@ def test_a_sensor_declared_in_gazebo_and_as_a_urdf_sensor_on_its_joint_counts_on
         '<parent joint="wheel_left_joint"/><camera><image width="640" height="480"/>'
         "</camera></sensor>",
     ) == [("camera", "2D Camera", 1)]
+
+
+def _kinds(text: str) -> dict[str, int]:
+    from solver.identify import identify_urdf
+
+    return {s.kind: s.count for s in identify_urdf(text).sensors}
+
+
+def test_sensors_count_by_physical_device() -> None:
+    from tests.identify.builders import RobotText, gazebo_sensor, model_plugin
+
+    robot = RobotText("devices")
+    robot.fixed(robot.root, "dvl_link")
+    robot.fixed("dvl_link", "beam0")
+    robot.fixed("dvl_link", "beam1")
+    robot.add(model_plugin("dvl", "libdvl_plugin.so", "<link_name>dvl_link</link_name>"))
+    robot.add(gazebo_sensor("beam0", "ray", "dvl_beam0"))
+    robot.add(gazebo_sensor("beam1", "ray", "dvl_beam1"))
+    robot.fixed(robot.root, "rgbd_link")
+    robot.add(gazebo_sensor("rgbd_link", "depth", "rgbd_depth"))
+    robot.add(gazebo_sensor("rgbd_link", "camera", "rgbd_colour"))
+    robot.fixed(robot.root, "plain_cam")
+    robot.add(
+        gazebo_sensor(
+            "plain_cam",
+            "camera",
+            "front",
+            plugin="libgazebo_ros_camera.so",
+        )
+        .replace("</plugin>", "")
+        .replace('.so"/>', '.so"><topic>depth/image</topic></plugin>')
+    )
+    for joint in ("j1", "j2"):
+        robot.chain(robot.root, [joint])
+        robot.add(model_plugin("ft", "libft_sensor.so", f"<jointName>{joint}</jointName>"))
+    robot.add(model_plugin("pinger", "libpinger_sensor.so"))
+    robot.add(model_plugin("sniffer", "libgas_sniffer_sensor.so"))
+    assert _kinds(robot.text()) == {
+        "dvl": 1,
+        "depth_camera": 1,
+        "camera": 1,
+        "force_torque": 2,
+        "acoustic_positioning": 1,
+        "unknown": 1,
+    }
