@@ -245,7 +245,9 @@ def _message_path(value: Any, path: str, file: str, *, plot: bool) -> Iterator[F
     try:
         parsed = parse_message_path(value)
     except MessagePathError as error:
-        yield _fault(file, path, f"not a message path: {error}", "lichtblick-message-path")
+        yield _fault(
+            file, path, f"not a message path: {error.faults[0].message}", "lichtblick-message-path"
+        )
         return
     if parsed.incomplete:
         yield _fault(

@@ -36,6 +36,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from solver.errors import Fault, InputError, Location
 from solver.untrusted import shown
 
 __all__ = ["Filter", "MessagePath", "MessagePathError", "Name", "Slice", "parse_message_path"]
@@ -48,11 +49,17 @@ SliceValue = int | float | Variable  # float: only ``inf``, the open end of ``[1
 FilterValue = int | str | bool | Variable
 
 
-class MessagePathError(ValueError):
+class MessagePathError(InputError):
     """The text is not a message path; ``position`` is the 0-based index where parsing failed."""
 
     def __init__(self, message: str, position: int) -> None:
-        super().__init__(f"{message} (at character {position + 1})")
+        super().__init__(
+            Fault(
+                Location("<message path>", 1, position + 1),
+                f"{message} (at character {position + 1})",
+                "message-path",
+            )
+        )
         self.position = position
 
 
