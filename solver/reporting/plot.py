@@ -12,6 +12,12 @@ continuous". The legend gives each type's valid robots and UI configurations.
 
 :func:`bars_figure` sets valid robots beside UI configurations for each kinematic type.
 
+Every text on a chart that comes from the user's files (names of the team, rule set, kinematic
+types, characteristics, values, components) is drawn as written: matplotlib's mathtext never
+parses it (``$\\sqrt{x}$``, ``\\input{...}`` stay text, and cannot make drawing fail) and TeX
+never runs, whatever a ``matplotlibrc`` says (:func:`literal_text`); a control or invisible
+character in it is shown as its escape (:func:`~solver.untrusted.shown`).
+
 Figures are built on matplotlib's Agg canvas without pyplot (no global figure registry, safe in
 worker processes) and written by :func:`write_plot` as PNG, SVG or PDF by file extension,
 atomically and byte-identical from run to run (fixed SVG hash salt, no dates in metadata).
@@ -27,7 +33,8 @@ import bisect
 import io
 import math
 import textwrap
-from collections.abc import Sequence
+from collections.abc import Callable, Iterator, Sequence
+from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Literal
@@ -37,6 +44,7 @@ from solver.core.rules import Characteristic
 from solver.errors import InputError
 from solver.extras import require
 from solver.files.atomic import write_atomic
+from solver.untrusted import shown
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -52,6 +60,7 @@ __all__ = [
     "bars_figure",
     "component_matrix",
     "figure_bytes",
+    "literal_text",
     "matrix_figure",
     "plot_format",
     "radar_axes",
@@ -258,8 +267,44 @@ def _tick_marks(axis: RadarAxis, labelled: Sequence[Value]) -> Sequence[Value]:
     return labelled
 
 
+# While a chart is built and rendered: no text is parsed as mathtext or set by TeX.
+_LITERAL_TEXT: dict[Any, Any] = {"text.parse_math": False, "text.usetex": False}
+
+
+@contextmanager
+def literal_text() -> Iterator[None]:
+    """Within this block, matplotlib draws every text as written (see the module docstring).
+
+    Both building a figure and rendering it need it: a text takes its ``parse_math`` and
+    ``usetex`` when it is made, and tick labels are made when the figure is drawn.
+    """
+    import matplotlib
+
+    with matplotlib.rc_context(_LITERAL_TEXT):
+        yield
+
+
+def _drawn_literally(draw: Callable[[Solution], Figure]) -> Callable[[Solution], Figure]:
+    def drawn(solution: Solution) -> Figure:
+        require("matplotlib", feature=_FEATURE)
+        with literal_text():
+            return draw(solution)
+
+    drawn.__name__, drawn.__qualname__, drawn.__doc__ = (
+        draw.__name__,
+        draw.__qualname__,
+        draw.__doc__,
+    )
+    return drawn
+
+
+def _text(name: object) -> str:
+    """A name from the user's files as a chart shows it: escaped, never cut."""
+    return shown(str(name), limit=None)
+
+
 def _label(value: Value) -> str:
-    return textwrap.fill(str(value), LABEL_WRAP)
+    return textwrap.fill(_text(value), LABEL_WRAP)
 
 
 def _draw_spoke(ax: Axes, axis: RadarAxis, team: Team, position: int) -> None:
@@ -325,7 +370,7 @@ def _draw_spoke(ax: Axes, axis: RadarAxis, team: Team, position: int) -> None:
                 label=f"tick {axis.characteristic.name}",
                 bbox=box,
             )
-    title = axis.characteristic.label
+    title = _text(axis.characteristic.label)
     if not axis.complete and axis.characteristic.kind != "integer":
         title += "\n(selected values)"
     if axis.characteristic.kind != "integer" and len(labelled) < len(axis.shown):
@@ -397,6 +442,7 @@ def _new_figure(width: float, height: float) -> Figure:
     return figure
 
 
+@_drawn_literally
 def radar_figure(solution: Solution) -> Figure:
     """The team's radar chart (the article's Figure 9) as a matplotlib figure.
 
@@ -481,7 +527,7 @@ def radar_figure(solution: Solution) -> Figure:
                     label=f"run {selection.kinematic_type}",
                 )
         summary = summaries.get(selection.kinematic_type)
-        text = selection.kinematic_type
+        text = _text(selection.kinematic_type)
         if summary is not None:
             text += f": {_counts(summary.valid_robots, summary.ui_configurations)}"
             if summary.unserved_robots:
@@ -506,7 +552,7 @@ def radar_figure(solution: Solution) -> Figure:
     figure.text(
         0.5,
         1 - 0.3 / height,
-        f"{team.name}: {_counts(totals.valid_robots, totals.ui_configurations)}",
+        f"{_text(team.name)}: {_counts(totals.valid_robots, totals.ui_configurations)}",
         ha="center",
         va="center",
         fontsize=13,
@@ -515,7 +561,7 @@ def radar_figure(solution: Solution) -> Figure:
     figure.text(
         0.5,
         1 - 0.6 / height,
-        f"rules: {team.rules.name}    bound T = {solution.bound}    "
+        f"rules: {_text(team.rules.name)}    bound T = {solution.bound}    "
         f"default UI configuration: {solution.default_configuration}",
         ha="center",
         va="center",
@@ -525,6 +571,7 @@ def radar_figure(solution: Solution) -> Figure:
     return figure
 
 
+@_drawn_literally
 def bars_figure(solution: Solution) -> Figure:
     """Valid robots beside UI configurations, one pair of bars per kinematic type."""
     types = [s.kinematic_type for s in solution.by_type]
@@ -548,14 +595,14 @@ def bars_figure(solution: Solution) -> Figure:
             linewidth=0.6,
         )
         ax.bar_label(bars, padding=2, fontsize=9)
-    ax.set_xticks(positions, [textwrap.fill(t, 12) for t in types], fontsize=9)
+    ax.set_xticks(positions, [textwrap.fill(_text(t), 12) for t in types], fontsize=9)
     ax.set_ylabel("count")
     ax.margins(y=0.12)
     ax.spines[["top", "right"]].set_visible(False)
     ax.legend(frameon=False, fontsize=9)
     totals = solution.totals
     ax.set_title(
-        f"{solution.team.name}: {_counts(totals.valid_robots, totals.ui_configurations)}",
+        f"{_text(solution.team.name)}: {_counts(totals.valid_robots, totals.ui_configurations)}",
         fontsize=11,
     )
     figure.tight_layout()
@@ -601,6 +648,7 @@ def component_matrix(
     return rows, columns, cells
 
 
+@_drawn_literally
 def matrix_figure(solution: Solution) -> Figure:
     """Which UI components each kinematic type needs, at a glance: one row per type, one
     column per component (grouped by characteristic); a cell's shade is the share of the
@@ -628,10 +676,10 @@ def matrix_figure(solution: Solution) -> Figure:
                     fontsize=8,
                     color="white" if shares[r][k] > 0.6 else "#222222",
                 )
-    ax.set_yticks(range(len(rows)), rows, fontsize=9)
+    ax.set_yticks(range(len(rows)), [_text(row) for row in rows], fontsize=9)
     ax.set_xticks(
         range(len(columns)),
-        [textwrap.shorten(name, 18) for _, name in columns],
+        [textwrap.shorten(_text(name), 18) for _, name in columns],
         rotation=60,
         ha="right",
         fontsize=8,
@@ -647,7 +695,7 @@ def matrix_figure(solution: Solution) -> Figure:
             ax.text(
                 (first + last - 1) / 2,
                 -0.7,
-                columns[first][0],
+                _text(columns[first][0]),
                 ha="center",
                 va="bottom",
                 fontsize=8,
@@ -656,7 +704,7 @@ def matrix_figure(solution: Solution) -> Figure:
     ax.tick_params(length=0)
     totals_all = solution.totals
     ax.set_title(
-        f"{solution.team.name}: "
+        f"{_text(solution.team.name)}: "
         f"{_counts(totals_all.valid_robots, totals_all.ui_configurations)}\n"
         "shade: share of the type's robots whose configuration uses the component; "
         "number: configurations that do",
@@ -679,7 +727,7 @@ def figure_bytes(figure: Figure, fmt: str) -> bytes:
     ]
     buffer = io.BytesIO()
     with matplotlib.rc_context(
-        {"svg.hashsalt": "teleop-ui", "svg.fonttype": "path", "pdf.fonttype": 42}
+        {"svg.hashsalt": "teleop-ui", "svg.fonttype": "path", "pdf.fonttype": 42, **_LITERAL_TEXT}
     ):
         figure.savefig(buffer, format=fmt, dpi=PNG_DPI, metadata=metadata, facecolor="white")
     return buffer.getvalue()
