@@ -6,17 +6,26 @@ not start with an underscore) and exposes ``register(subparsers)``; the module's
 status. :func:`main` is the one place that turns a :class:`~solver.errors.SolverError` into a
 message on stderr and exit status 2. Heavy imports happen inside ``run`` so that start-up
 stays fast.
+
+:func:`main` is also the one place that handles output streams that fail, for every command:
+standard output closed (``>&-``) or full (``> /dev/full``) ends the command with exit status 2
+and one line on standard error (when that can still be written); a pipe its reader closed
+early (``| head -1``) ends it quietly with status 0, as well-behaved tools do. No traceback,
+and nothing more is attempted on the failed stream (it is pointed at ``/dev/null``, so the
+interpreter's own last flush at exit does not fail again).
 """
 
 from __future__ import annotations
 
 import argparse
 import importlib
+import os
 import sys
 from collections.abc import Sequence
 from pathlib import Path
+from typing import Any
 
-from solver.cli._terminal import EscapingStream
+from solver.cli._terminal import EscapingStream, OutputFailed
 from solver.errors import SolverError
 
 __all__ = ["main"]
@@ -52,24 +61,68 @@ def main(argv: Sequence[str] | None = None) -> int:
     # Names and messages come from files strangers wrote: no raw escape sequence reaches the
     # terminal (see solver/cli/_terminal.py).
     stdout, stderr = sys.stdout, sys.stderr
+    _hold_closed_descriptors()
     # An EscapingStream is a TextIO in all but name (it delegates everything but write).
-    sys.stdout = EscapingStream(stdout)
-    sys.stderr = EscapingStream(stderr)
+    sys.stdout = EscapingStream(stdout, "standard output")
+    sys.stderr = EscapingStream(stderr, "standard error")
     try:
         status: int = args.run(args)
+        sys.stdout.flush()  # a full disk shows here, not in the interpreter's flush at exit
     except SolverError as error:
-        print(error, file=sys.stderr)
+        _say(error)
         return 2
     except KeyboardInterrupt:
-        print("interrupted", file=sys.stderr)
+        _say("interrupted")
         return 130
+    except OutputFailed as failed:
+        failing = stdout if failed.name == "standard output" else stderr
+        _to_null(failing)
+        if failed.reader_gone:
+            return 0  # the reader went away (| head): nothing more to say
+        if failing is not stderr:
+            _say(f"teleop-ui: {failed}")
+        return 2
     except BrokenPipeError:
-        # The reader went away (| head); nothing more to say.
-        stderr.close()
+        # A progress bar on the terminal itself (a rich console) lost its reader.
+        _to_null(stdout)
+        _to_null(stderr)
         return 0
     finally:
         sys.stdout, sys.stderr = stdout, stderr
     return status
+
+
+def _hold_closed_descriptors() -> None:
+    """Give a closed descriptor 0, 1 or 2 (``>&-``) to /dev/null: the next file opened would
+    take its number, and a child process would then write its output into that file."""
+    for descriptor in (0, 1, 2):
+        try:
+            os.fstat(descriptor)
+        except OSError:
+            # The lowest free number is the closed one (lower ones are open, or held here).
+            os.open(os.devnull, os.O_RDWR)
+
+
+def _say(message: object) -> None:
+    """``message`` on one line of standard error, if standard error can still be written."""
+    try:
+        print(message, file=sys.stderr, flush=True)
+    except (OutputFailed, OSError):
+        _to_null(sys.stderr)
+
+
+def _to_null(stream: Any) -> None:
+    """Point a failed stream's descriptor at /dev/null, so that the interpreter's last flush
+    at exit (of what is still buffered) fails no more; a stream without one is left alone."""
+    try:
+        descriptor = stream.fileno()
+    except (AttributeError, OSError, ValueError):
+        return
+    null = os.open(os.devnull, os.O_WRONLY)
+    try:
+        os.dup2(null, descriptor)
+    finally:
+        os.close(null)
 
 
 def _version() -> str:

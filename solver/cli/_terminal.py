@@ -22,12 +22,14 @@ messages: :mod:`solver.check.render`; Markdown: :mod:`solver.reporting.markdown`
 
 from __future__ import annotations
 
+import errno
+import os
 import re
 from typing import IO, Any
 
 from solver.untrusted import shown
 
-__all__ = ["EscapingStream", "escape_controls", "raw_stream"]
+__all__ = ["ClosedStream", "EscapingStream", "OutputFailed", "escape_controls", "raw_stream"]
 
 # The output's own line breaks and tabs; everything between them is shown escaped.
 _LAYOUT = re.compile("([\n\t])")
@@ -42,19 +44,70 @@ def escape_controls(text: str) -> str:
     )
 
 
+class OutputFailed(Exception):
+    """Standard output or standard error cannot be written: closed (``>&-``), full
+    (``> /dev/full``) or a pipe whose reader has gone (``| head -1``).
+
+    Deliberately neither an ``OSError`` nor a :class:`~solver.errors.SolverError`: a command
+    that handles those around its own files does not take it for one of them, and it reaches
+    :func:`solver.cli.main`, which ends the command (see there).
+    """
+
+    def __init__(self, name: str, error: OSError) -> None:
+        super().__init__(f"cannot write to {name}: {error.strerror or error}")
+        self.name = name
+        self.error = error
+
+    @property
+    def reader_gone(self) -> bool:
+        """The reader of a pipe closed it early (``| head -1``): nothing is wrong."""
+        return isinstance(self.error, BrokenPipeError)
+
+
+class ClosedStream:
+    """What ``sys.stdout`` is when the process started with it closed (``>&-``): Python gives
+    ``None``. Writing to it fails as writing to a closed descriptor does; nothing else does."""
+
+    encoding = "utf-8"
+    closed = True
+
+    def write(self, text: str) -> int:  # noqa: ARG002 (nothing is written)
+        raise OSError(errno.EBADF, os.strerror(errno.EBADF))
+
+    def flush(self) -> None:
+        return None
+
+    def isatty(self) -> bool:
+        return False
+
+    def fileno(self) -> int:
+        raise OSError(errno.EBADF, os.strerror(errno.EBADF))
+
+
 class EscapingStream:
     """A text stream that writes to ``stream`` through :func:`escape_controls`.
 
     Everything else (``isatty``, ``fileno``, ``buffer``, ``encoding``...) is the wrapped
-    stream's, so callers cannot tell the difference except by what reaches the terminal.
+    stream's, so callers cannot tell the difference except by what reaches the terminal. A
+    write or flush that fails raises :class:`OutputFailed` naming the stream (``name``).
     """
 
-    def __init__(self, stream: IO[str]) -> None:
-        self.raw = stream
+    def __init__(self, stream: IO[str] | None, name: str = "the output") -> None:
+        self.raw: Any = ClosedStream() if stream is None else stream
+        self.name = name
 
     def write(self, text: str) -> int:
-        self.raw.write(escape_controls(text))
+        try:
+            self.raw.write(escape_controls(text))
+        except OSError as error:
+            raise OutputFailed(self.name, error) from None
         return len(text)
+
+    def flush(self) -> None:
+        try:
+            self.raw.flush()
+        except OSError as error:
+            raise OutputFailed(self.name, error) from None
 
     def writelines(self, lines: Any) -> None:
         for line in lines:
