@@ -15,6 +15,8 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from typing import Self
 
+from solver.untrusted import shown
+
 __all__ = [
     "Fault",
     "InputError",
@@ -39,7 +41,7 @@ class Location:
     path: str = ""
 
     def __str__(self) -> str:
-        text = self.file
+        text = shown(self.file, limit=None)  # a file name may hold a newline
         if self.line is not None:
             text += f":{self.line}"
             if self.column is not None:
@@ -60,10 +62,11 @@ class Fault:
     code: str = "invalid"
 
     def __str__(self) -> str:
+        """One line, whatever the names inside hold (:func:`~solver.untrusted.shown`)."""
         prefix = f"{self.location}: "
         if self.location.path:
-            prefix += f"{self.location.path}: "
-        return prefix + self.message
+            prefix += f"{shown(self.location.path, limit=None)}: "
+        return prefix + shown(self.message, limit=None)
 
 
 class SolverError(Exception):
@@ -127,10 +130,16 @@ def _position(fault: Fault) -> tuple[str, int, int]:
     return (location.file, location.line or 0, location.column or 0)
 
 
+# A word longer than this is no misspelling of a name (names are at most 200 characters).
+_MAX_SUGGESTED = 200
+
+
 def did_you_mean(word: str, choices: Iterable[str]) -> str:
     """`` (did you mean 'X'?)`` for the closest choice, or an empty string when none is close."""
     import difflib  # only a misspelling needs it: spare every start its import
 
+    if len(word) > _MAX_SUGGESTED:
+        return ""  # no name is that long; difflib's time grows with the product of lengths
     options = list(choices)
     matches = difflib.get_close_matches(word, options, n=1, cutoff=0.6)
     if not matches:
@@ -139,4 +148,4 @@ def did_you_mean(word: str, choices: Iterable[str]) -> str:
         matches = [o for o in options if o.lower() == lowered] or (
             [o for o in options if o.lower().startswith(lowered)] if len(word) >= 2 else []
         )
-    return f" (did you mean {matches[0]!r}?)" if matches else ""
+    return f" (did you mean {shown(matches[0], quoted=True)}?)" if matches else ""

@@ -24,6 +24,7 @@ from solver.core.rules import Characteristic, Component, RuleSet
 from solver.core.team import Team
 from solver.errors import Location
 from solver.files.yamlio import Document, PathPart
+from solver.untrusted import shown
 
 __all__ = [
     "RulesContext",
@@ -135,7 +136,10 @@ class RulesContext:
 
 def constraint_list(rules: RuleSet, indices: Sequence[int]) -> str:
     """``'A' (rules/x.yaml:30:5) and 'B' (rules/x.yaml:34:5)``."""
-    names = [f"{rules.constraints[i].name!r} ({rules.constraints[i].location})" for i in indices]
+    names = [
+        f"{shown(rules.constraints[i].name, quoted=True)} ({rules.constraints[i].location})"
+        for i in indices
+    ]
     if len(names) <= 1:
         return "".join(names)
     return ", ".join(names[:-1]) + " and " + names[-1]

@@ -17,6 +17,7 @@ from collections.abc import Iterator
 
 from solver.check.context import RulesContext, values_text
 from solver.check.finding import Check, Finding
+from solver.untrusted import shown
 
 __all__ = ["CHECKS"]
 
@@ -66,7 +67,7 @@ def _forced(context: RulesContext, *, components: bool) -> Iterator[Finding]:
                 yield CORE_COMPONENT.finding(
                     location,
                     f"every valid {kinematic_type} robot needs {characteristic.name} "
-                    f"component {component.name!r} (its values "
+                    f"component {shown(component.name, quoted=True)} (its values "
                     f"{values_text(characteristic, possible)} remain): forced by "
                     f"{context.constraint_list(conflict)}",
                     context.constraint_related(conflict, "forces it"),

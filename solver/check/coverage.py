@@ -25,6 +25,7 @@ from solver.check.context import RulesContext, integer_runs, item_path
 from solver.check.finding import Check, Finding
 from solver.core.constraints import Value
 from solver.core.rules import Characteristic, Component
+from solver.untrusted import shown
 
 __all__ = ["CHECKS", "declared_range"]
 
@@ -43,8 +44,9 @@ def declared_range(
 
 def _named(context: RulesContext, characteristic: Characteristic, component: Component) -> str:
     if characteristic.kind != "integer":
-        return repr(component.name)
-    return f"{component.name!r} ({declared_range(context, characteristic, component)})"
+        return shown(component.name, quoted=True)
+    declared = declared_range(context, characteristic, component)
+    return f"{shown(component.name, quoted=True)} ({declared})"
 
 
 def _declared(characteristic: Characteristic) -> bool:
@@ -64,7 +66,8 @@ def _gaps(context: RulesContext) -> Iterator[Finding]:
             for value in missing:
                 yield GAP.finding(
                     context.value_location(characteristic, value),
-                    f"{characteristic.name} {str(value)!r} is in no component: robots with it "
+                    f"{characteristic.name} {shown(str(value), quoted=True)} is in no "
+                    f"component: robots with it "
                     "get the default UI configuration",
                 )
             continue
@@ -123,15 +126,15 @@ def _overlaps(context: RulesContext) -> Iterator[Finding]:
             names = [_named(context, characteristic, c) for c in components]
             last = components[-1]
             if characteristic.kind == "integer":
-                shown = str(values[0]) if len(values) == 1 else f"{values[0]}..{values[-1]}"
+                listed = str(values[0]) if len(values) == 1 else f"{values[0]}..{values[-1]}"
                 location = context.component_location(characteristic, last, "min", "above")
             else:
-                shown = repr(str(values[0]))
+                listed = shown(str(values[0]), quoted=True)
                 path = (*context.component_path(characteristic, last), "values")
                 location = context.locate(item_path(context.rules.document, path, values[0]))
             yield OVERLAP.finding(
                 location,
-                f"{characteristic.name} {shown} is in {len(components)} components: "
+                f"{characteristic.name} {listed} is in {len(components)} components: "
                 f"{', '.join(names[:-1])} and {names[-1]}",
             )
 

@@ -21,6 +21,7 @@ from solver.check.finding import Check, Finding
 from solver.core.constraints import Value
 from solver.core.regions import Domains
 from solver.core.rules import Characteristic
+from solver.untrusted import shown
 
 __all__ = ["CHECKS"]
 
@@ -76,7 +77,8 @@ def _dead_components(context: RulesContext) -> Iterator[Finding]:
             if component.values and live.isdisjoint(component.values):
                 yield DEAD_COMPONENT.finding(
                     context.component_location(characteristic, component),
-                    f"{characteristic.name} component {component.name!r} is never needed: no "
+                    f"{characteristic.name} component {shown(component.name, quoted=True)} is "
+                    f"never needed: no "
                     f"valid robot has any of its values "
                     f"({values_text(characteristic, component.values)})",
                 )

@@ -22,6 +22,7 @@ from solver.check.context import RulesContext
 from solver.check.finding import Check, Finding
 from solver.core.constraints import Value
 from solver.core.rules import Characteristic, Component
+from solver.untrusted import shown
 
 __all__ = ["CHECKS", "witness_triple"]
 
@@ -171,8 +172,8 @@ def _non_transitive(context: RulesContext) -> Iterator[Finding]:
             yield NON_TRANSITIVE.finding(
                 context.component_location(characteristic, second),
                 f"'can share a component' is not transitive for {characteristic.name}: "
-                f"{a} ~ {b} (both in {first.name!r}) and {b} ~ {c} (both in "
-                f"{second.name!r}), but {a} and {c} share no component",
+                f"{a} ~ {b} (both in {shown(first.name, quoted=True)}) and {b} ~ {c} (both in "
+                f"{shown(second.name, quoted=True)}), but {a} and {c} share no component",
             )
 
 

@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 from typing import Generic, Literal, TypeVar
 
 from solver.errors import Location
+from solver.untrusted import shown
 
 __all__ = ["LEVELS", "Check", "Finding", "Level", "Related", "Scope"]
 
@@ -68,9 +69,11 @@ class Finding:
         return self.location.column or 1
 
     def __str__(self) -> str:
+        """One line (``file:line:col: [level] message (check-id)``), whatever the names in the
+        message and the file name hold (:func:`~solver.untrusted.shown`)."""
         return (
-            f"{self.location.file}:{self.line}:{self.column}: [{self.level}] "
-            f"{self.message} ({self.check})"
+            f"{shown(self.location.file, limit=None)}:{self.line}:{self.column}: [{self.level}] "
+            f"{shown(self.message, limit=None)} ({self.check})"
         )
 
 

@@ -21,6 +21,7 @@ from collections.abc import Iterator
 
 from solver.check.context import RulesContext
 from solver.check.finding import Check, Finding
+from solver.untrusted import shown
 
 __all__ = ["CHECKS"]
 
@@ -36,7 +37,8 @@ def _redundant(context: RulesContext) -> Iterator[Finding]:
         verb = "excludes" if len(entailing) == 1 else "exclude"
         yield REDUNDANT.finding(
             rule.location,
-            f"constraint {rule.name!r} is redundant: {context.constraint_list(entailing)} "
+            f"constraint {shown(rule.name, quoted=True)} is redundant: "
+            f"{context.constraint_list(entailing)} "
             f"already {verb} every robot it excludes; removing it changes no valid robot",
             context.constraint_related(entailing, "entails it"),
         )

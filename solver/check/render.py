@@ -17,7 +17,6 @@ Not here: running the checks (:mod:`solver.check.runner`).
 
 from __future__ import annotations
 
-import json
 import re
 from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path, PurePosixPath
@@ -28,6 +27,8 @@ from solver.check.finding import LEVELS, Finding
 from solver.check.registry import ALL_CHECKS
 from solver.check.runner import Report
 from solver.errors import Location
+from solver.reporting.render import dumps
+from solver.untrusted import shown
 
 __all__ = ["FORMATS", "json_data", "render", "sarif_data", "sarif_text", "summary_line"]
 
@@ -52,14 +53,16 @@ def render(report: Report, format: str = "text") -> str:
     if format == "text":
         return "".join(f"{finding}\n" for finding in report.findings) + summary_line(report) + "\n"
     if format == "parsable":
+        # One line per finding, read by editors and CI: no name may start another.
         return "".join(
-            f"{f.location.file}:{f.line}:{f.column}: {f.level}: {f.message} [{f.check}]\n"
+            f"{shown(f.location.file, limit=None)}:{f.line}:{f.column}: {f.level}: "
+            f"{shown(f.message, limit=None)} [{f.check}]\n"
             for f in report.findings
         )
     if format == "json":
-        return json.dumps(json_data(report), indent=2, ensure_ascii=False) + "\n"
+        return dumps(json_data(report))
     if format == "sarif":
-        return json.dumps(sarif_data(report), indent=2, ensure_ascii=False) + "\n"
+        return dumps(sarif_data(report))
     raise ValueError(f"unknown format {format!r}; choose from {', '.join(FORMATS)}")
 
 

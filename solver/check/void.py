@@ -19,6 +19,7 @@ from collections.abc import Iterator
 from solver.check.context import RulesContext, blame
 from solver.check.finding import Check, Finding
 from solver.core.constraints import Value
+from solver.untrusted import shown
 
 __all__ = ["CHECKS"]
 
@@ -43,7 +44,7 @@ def _void_types(context: RulesContext) -> Iterator[Finding]:
     for kinematic_type, conflict in analysis.type_conflicts.items():
         yield VOID_TYPE.finding(
             context.value_location(key, kinematic_type),
-            f"{key.name} {str(kinematic_type)!r} has no valid robot: "
+            f"{key.name} {shown(str(kinematic_type), quoted=True)} has no valid robot: "
             f"{blame(context.rules, conflict)} every {kinematic_type} robot",
             context.constraint_related(conflict, "in the conflict"),
         )
@@ -68,7 +69,7 @@ def _conflicts(context: RulesContext) -> Iterator[Finding]:
         )
         first = context.rules.constraints[conflict[0]]
         if len(conflict) == 1:
-            text = f"constraint {first.name!r} alone leaves {victims}"
+            text = f"constraint {shown(first.name, quoted=True)} alone leaves {victims}"
         else:
             text = (
                 f"constraints {context.constraint_list(conflict)} conflict: together they "

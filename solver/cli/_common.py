@@ -6,6 +6,8 @@ import argparse
 import sys
 from typing import TYPE_CHECKING
 
+from solver.untrusted import shown
+
 if TYPE_CHECKING:
     from pathlib import Path
 
@@ -74,9 +76,13 @@ def positive(text: str) -> int:
     try:
         number = int(text)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a whole number, got {text!r}") from None
+        raise argparse.ArgumentTypeError(
+            f"expected a whole number, got {shown(text, quoted=True)}"
+        ) from None
     if number < 1:
-        raise argparse.ArgumentTypeError(f"expected a number of at least 1, got {text!r}")
+        raise argparse.ArgumentTypeError(
+            f"expected a number of at least 1, got {shown(text, quoted=True)}"
+        )
     return number
 
 
@@ -86,9 +92,13 @@ def seconds(text: str) -> float:
     try:
         value = float(text)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"expected seconds, got {text!r}") from None
+        raise argparse.ArgumentTypeError(
+            f"expected seconds, got {shown(text, quoted=True)}"
+        ) from None
     if not 0.01 <= value <= 3600:
-        raise argparse.ArgumentTypeError(f"expected seconds from 0.01 to 3600, got {text!r}")
+        raise argparse.ArgumentTypeError(
+            f"expected seconds from 0.01 to 3600, got {shown(text, quoted=True)}"
+        )
     return value
 
 

@@ -17,6 +17,7 @@ from contextlib import contextmanager
 from typing import IO, Any
 
 from solver.cli._terminal import raw_stream
+from solver.untrusted import shown
 
 __all__ = ["DELAY", "working"]
 
@@ -49,7 +50,8 @@ def working(
 
     from rich.markup import escape
 
-    status = console.status(escape(what), spinner="dots")
+    # rich writes to the terminal itself: what it shows is escaped here (team and file names).
+    status = console.status(escape(shown(what, limit=None)), spinner="dots")
     lock = threading.Lock()
     state = {"started": False, "done": False}
 

@@ -17,6 +17,7 @@ from collections.abc import Iterator
 from typing import IO, TYPE_CHECKING, Any
 
 from solver.cli._common import positive, write
+from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
 if TYPE_CHECKING:
     from solver.reporting.batch import Outcome
@@ -118,26 +119,28 @@ def run(args: argparse.Namespace) -> int:
         if a in actions
     )
     print(
-        f"{len(jobs)} team files: {counts}; summary: {', '.join(str(p) for p in written)}",
+        f"{len(jobs)} team files: {counts}; "
+        f"summary: {', '.join(shown(str(p), limit=None) for p in written)}",
         file=sys.stderr,
     )
     return 1 if any(o.failed for o in outcomes) else 0
 
 
 def _describe(outcome: Outcome) -> str:
+    """The lines that report a team: its file, then its warnings or its error's faults, each
+    escaped (a name holding a newline starts no line of its own)."""
     row = outcome.row
+    file = shown(row.file, limit=SHOWN_FILE_NAME_CHARS)
     if outcome.action in ("solved", "up to date"):
-        text = (
-            f"{row.file}: {row.valid_robots} valid robots, {row.ui_configurations} UI "
-            f"configurations"
-        )
+        text = f"{file}: {row.valid_robots} valid robots, {row.ui_configurations} UI configurations"
         text += f" ({outcome.seconds:.2f} s)" if outcome.action == "solved" else ""
         # A solved team's warnings (the summary's message column): one line each.
         warnings = re.split(r"; (?=warning: )", row.message) if row.message else []
-        return "\n".join([text, *(f"    {warning}" for warning in warnings)])
+        return "\n".join([text, *(f"    {shown(warning, limit=None)}" for warning in warnings)])
     if outcome.action == "skipped":
-        return f"{row.file}: {row.message}"
-    return row.file + "\n" + "\n".join(f"    {line}" for line in row.message.splitlines())
+        return f"{file}: {shown(row.message, limit=None)}"
+    lines = row.message.splitlines()
+    return file + "\n" + "\n".join(f"    {shown(line, limit=None)}" for line in lines)
 
 
 def _progress_lines(outcomes: Iterator[Outcome], total: int, stream: IO[str]) -> Iterator[Outcome]:
@@ -187,5 +190,6 @@ def _progress_bar(outcomes: Iterator[Outcome], total: int, stream: IO[str]) -> I
                     highlight=False,
                     soft_wrap=True,
                 )
-            progress.update(task, advance=1, description=escape(escape_controls(outcome.job.shown)))
+            description = shown(outcome.job.shown, limit=SHOWN_FILE_NAME_CHARS)
+            progress.update(task, advance=1, description=escape(description))
             yield outcome

@@ -13,6 +13,7 @@ from solver.cli.identify import (
     package_path,
     xacro_arguments,
 )
+from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
 
 def register(subparsers: Any) -> None:
@@ -96,17 +97,24 @@ def run(args: argparse.Namespace) -> int:
             )
         )
         for entry in fleet.failed:
-            write(f"not identified: {entry.name}: {entry.error}\n")
+            write(f"not identified: {_failure(entry.name, entry.error)}\n")
         for found in fleet.identified:
             for warning in found.warnings:
                 write(f"warning: {warning}\n")
     if team is not None:
         write_atomic(args.output, team)
-        print(f"wrote {args.output}", file=sys.stderr)
+        print(f"wrote {shown(args.output, limit=SHOWN_FILE_NAME_CHARS)}", file=sys.stderr)
     elif fleet.failed and args.format == "json":
         for entry in fleet.failed:
-            print(f"not identified: {entry.name}: {entry.error}", file=sys.stderr)
+            print(f"not identified: {_failure(entry.name, entry.error)}", file=sys.stderr)
     return 0
+
+
+def _failure(name: str, error: object) -> str:
+    """A file that could not be identified and why, on one line: a file name or a fault may
+    hold a newline."""
+    faults = "; ".join(str(error).splitlines())
+    return f"{shown(name, limit=SHOWN_FILE_NAME_CHARS)}: {shown(faults, limit=None)}"
 
 
 class _progress:
@@ -134,17 +142,18 @@ class _progress:
     @staticmethod
     def _plain(done: int, total: int, name: str) -> None:
         if name:
+            name = shown(name, limit=SHOWN_FILE_NAME_CHARS)
             print(f"[{done + 1}/{total}] {name}", file=sys.stderr, flush=True)
 
     def _rich(self, done: int, total: int, name: str) -> None:
         from rich.markup import escape
-
-        from solver.cli._terminal import escape_controls
 
         if self._task is None:
             self._task = self._bar.add_task("identifying", total=total)
         self._bar.update(
             self._task,
             completed=done,
-            description=f"identifying {escape(escape_controls(name))}" if name else "done",
+            description=f"identifying {escape(shown(name, limit=SHOWN_FILE_NAME_CHARS))}"
+            if name
+            else "done",
         )

@@ -6,6 +6,7 @@ import argparse
 from typing import TYPE_CHECKING, Any
 
 from solver.cli._common import add_format, add_profile, add_rules, load_team_argument, write
+from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
 if TYPE_CHECKING:
     from pathlib import Path
@@ -107,7 +108,9 @@ def xacro_arguments(pairs: list[str]) -> dict[str, str]:
     for pair in pairs:
         name, sep, value = pair.partition(":=")
         if not sep or not name.strip():
-            raise InputError.at("<arguments>", f"--arg expects NAME:=VALUE, got {pair!r}")
+            raise InputError.at(
+                "<arguments>", f"--arg expects NAME:=VALUE, got {shown(pair, quoted=True)}"
+            )
         found[name.strip()] = value
     return found
 
@@ -141,7 +144,9 @@ def run(args: argparse.Namespace) -> int:
     from solver.cli._progress import working
 
     # A large description, a long bag or a trusted xacro can take seconds: a spinner then.
-    with working(f"identifying {args.description}", fmt=args.format):
+    with working(
+        f"identifying {shown(args.description, limit=SHOWN_FILE_NAME_CHARS)}", fmt=args.format
+    ):
         result = identify(
             args.description,
             srdf=args.srdf,

@@ -7,6 +7,7 @@ import sys
 from typing import Any
 
 from solver.cli._common import add_profile, add_rules, load_team_argument, write
+from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
 
 def register(subparsers: Any) -> None:
@@ -98,7 +99,7 @@ def run(args: argparse.Namespace) -> int:
         args.presentation, solution.rules if args.presentation else None
     )
     paths = write_layouts(solution, presentation, args.output, args.format)
-    write(f"wrote {len(paths)} layouts to {args.output}\n")
+    write(f"wrote {len(paths)} layouts to {shown(args.output, limit=SHOWN_FILE_NAME_CHARS)}\n")
     if args.preview:
         import json
         from pathlib import Path
@@ -110,7 +111,7 @@ def run(args: argparse.Namespace) -> int:
         write_atomic(
             page, preview_html([(path.name, json.loads(path.read_text())) for path in paths])
         )
-        write(f"wrote {page}\n")
+        write(f"wrote {shown(str(page), limit=SHOWN_FILE_NAME_CHARS)}\n")
     return 0
 
 
@@ -152,9 +153,12 @@ def _robot(args: argparse.Namespace) -> int:
         file=args.output,
     )
     for warning in layout.warnings:
-        sys.stderr.write(f"warning: {warning}\n")
+        sys.stderr.write(f"warning: {shown(str(warning), limit=None)}\n")
     write_atomic(args.output, layout.text)
-    write(f"{identification.robot}: configuration {assignment.number}; wrote {args.output}\n")
+    write(
+        f"{shown(identification.robot)}: configuration {assignment.number}; "
+        f"wrote {shown(str(args.output), limit=SHOWN_FILE_NAME_CHARS)}\n"
+    )
     return 0
 
 

@@ -18,6 +18,7 @@ from solver.cli._common import (
     seconds,
     write,
 )
+from solver.untrusted import shown
 
 if TYPE_CHECKING:
     from solver.core.solution import Solution
@@ -135,7 +136,9 @@ def ros2_domain(args: argparse.Namespace) -> int:
         )
     text = str(args.domain) if args.domain is not None else os.environ.get("ROS_DOMAIN_ID", "0")
     if not text.strip().isdigit() or not 0 <= int(text) <= 232:
-        raise InputError.at("<arguments>", f"DDS domain id must be 0..232, got {text!r}")
+        raise InputError.at(
+            "<arguments>", f"DDS domain id must be 0..232, got {shown(text, quoted=True)}"
+        )
     return int(text)
 
 
@@ -155,7 +158,7 @@ def _watch_ros2(args: argparse.Namespace, solution: Solution, profile: Profile) 
         for event in events:
             write(_render(event, solution, args))
     if watcher.stop_reason is not None and not args.once:
-        print(f"watch stopped: {watcher.stop_reason}", file=sys.stderr)
+        print(f"watch stopped: {shown(watcher.stop_reason, limit=None)}", file=sys.stderr)
     return 0
 
 
@@ -169,7 +172,7 @@ def _watch(watcher: Watcher, args: argparse.Namespace, master: str, solution: So
             raise
         # stop() (SIGTERM, a shutdown call) cut the call under way off: a stop, not an error.
     if watcher.stop_reason is not None:
-        print(f"watch stopped: {watcher.stop_reason}", file=sys.stderr)
+        print(f"watch stopped: {shown(watcher.stop_reason, limit=None)}", file=sys.stderr)
     return 0
 
 
@@ -178,7 +181,8 @@ def _follow(watcher: Watcher, args: argparse.Namespace, master: str, solution: S
 
     def waiting(error: MasterError) -> None:
         print(
-            f"waiting for the ROS master at {master} ({error.faults[0].message})",
+            f"waiting for the ROS master at {shown(master)} "
+            f"({shown(error.faults[0].message, limit=None)})",
             file=sys.stderr,
             flush=True,
         )
@@ -193,7 +197,8 @@ def _follow(watcher: Watcher, args: argparse.Namespace, master: str, solution: S
                 raise
             raise MasterUnreachable.at(
                 master,
-                f"{error.faults[0].message}: is roscore running there? (--wait waits for it)",
+                f"{shown(error.faults[0].message, limit=None)}: is roscore running there? "
+                "(--wait waits for it)",
             ) from None
     events = [] if watcher.stopped else watcher.snapshot() if args.once else watcher.events()
     for event in events:

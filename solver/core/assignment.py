@@ -21,6 +21,7 @@ from solver.core.partition import Configuration
 from solver.core.rules import Characteristic, RuleSet
 from solver.core.solution import Solution
 from solver.errors import InputError, did_you_mean
+from solver.untrusted import shown
 
 __all__ = ["Assignment", "assign", "check_names", "parse_combination"]
 
@@ -53,14 +54,16 @@ def parse_combination(pairs: list[str] | tuple[str, ...]) -> dict[str, str]:
     for pair in pairs:
         name, sep, value = pair.partition("=")
         if not sep or not name.strip():
-            raise InputError.at("<arguments>", f"expected NAME=VALUE, got {pair!r}")
+            raise InputError.at(
+                "<arguments>", f"expected NAME=VALUE, got {shown(pair, quoted=True)}"
+            )
         if name.strip() in combination:
-            raise InputError.at("<arguments>", f"{name.strip()!r} is given twice")
+            raise InputError.at("<arguments>", f"{shown(name.strip(), quoted=True)} is given twice")
         if any(char.isdecimal() and not char.isascii() for char in value):
             # int() reads '٣' as 3; a command line value is written in ASCII digits or refused.
             raise InputError.at(
                 "<arguments>",
-                f"{value.strip()!r} has non-ASCII digits; write numbers as 0-9",
+                f"{shown(value.strip(), quoted=True)} has non-ASCII digits; write numbers as 0-9",
                 path=name.strip(),
             )
         combination[name.strip()] = value.strip()
@@ -74,7 +77,7 @@ def check_names(rules: RuleSet, names: Iterable[str]) -> None:
         if name not in rules.names:
             raise InputError.at(
                 "<arguments>",
-                f"unknown characteristic {name!r}"
+                f"unknown characteristic {shown(name, quoted=True)}"
                 f"{did_you_mean(name, rules.names)}; the rules "
                 f"({rules.file}) have: {', '.join(rules.names)}",
             )
@@ -133,9 +136,10 @@ def assign(
 def _unknown(characteristic: Characteristic, text: str) -> str:
     if characteristic.kind == "integer":
         low, high = characteristic.values[0], characteristic.values[-1]
-        return f"{characteristic.name} {text!r} is not a whole number in {low}..{high}"
+        given = shown(text, quoted=True)
+        return f"{characteristic.name} {given} is not a whole number in {low}..{high}"
     hint = did_you_mean(text, [str(v) for v in characteristic.values])
-    return f"unknown {characteristic.label.lower()} {text!r}{hint}"
+    return f"unknown {characteristic.label.lower()} {shown(text, quoted=True)}{hint}"
 
 
 def _team_reasons(solution: Solution, values: dict[str, Value]) -> list[str]:
@@ -145,7 +149,8 @@ def _team_reasons(solution: Solution, values: dict[str, Value]) -> list[str]:
     selection = team.selection(kinematic_type)
     if selection is None:
         return [
-            f"{rules.key.label.lower()} {kinematic_type!r} is not in team {team.name!r} "
+            f"{rules.key.label.lower()} {shown(kinematic_type, quoted=True)} is not in team "
+            f"{shown(team.name, quoted=True)} "
             f"(it has {', '.join(team.kinematic_types)})"
         ]
     reasons = []
@@ -164,7 +169,7 @@ def _team_reasons(solution: Solution, values: dict[str, Value]) -> list[str]:
             )
         else:
             reasons.append(
-                f"{characteristic.name} {value!r} is not selected for "
-                f"{kinematic_type} in team {team.name!r}"
+                f"{characteristic.name} {shown(value, quoted=True)} is not selected for "
+                f"{kinematic_type} in team {shown(team.name, quoted=True)}"
             )
     return reasons

@@ -27,6 +27,7 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from solver.errors import Location
+from solver.untrusted import shown
 
 __all__ = ["Condition", "RuleConstraint", "Value"]
 
@@ -109,4 +110,4 @@ class RuleConstraint:
             )
         else:
             body = "require " + " and ".join(str(c) for c in self.conditions)
-        return f"{self.name!r} ({body})"
+        return f"{shown(self.name, quoted=True)} ({body})"

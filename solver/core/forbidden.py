@@ -21,6 +21,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from solver.core.constraints import RuleConstraint, Value
+from solver.untrusted import shown
 
 if TYPE_CHECKING:
     from solver.core.rules import RuleSet
@@ -44,11 +45,13 @@ class Removed:
 
     def describe(self) -> str:
         """``UAV: sensor_type Force Sensor, excluded by 'no force ...' (rules/x.yaml:70:5)``."""
-        cited = " and ".join(f"{c.name!r} ({c.location})" for c in self.constraints)
+        cited = " and ".join(
+            f"{shown(c.name, quoted=True)} ({c.location})" for c in self.constraints
+        )
         if not self.characteristic:
             return f"{self.kinematic_type}: no valid robot at all, excluded by {cited}"
-        shown = ", ".join(str(value) for value in self.values)
-        return f"{self.kinematic_type}: {self.characteristic} {shown}, excluded by {cited}"
+        listed = ", ".join(str(value) for value in self.values)
+        return f"{self.kinematic_type}: {self.characteristic} {listed}, excluded by {cited}"
 
 
 def removed_by_constraints(team: Team) -> tuple[Removed, ...]:

@@ -269,7 +269,7 @@ class RuleSet:
 
     def __repr__(self) -> str:  # short, for notebooks: the fields are one attribute away
         return (
-            f"<RuleSet {self.name!r} ({self.file}): {', '.join(self.names)}; "
+            f"<RuleSet {shown(self.name, quoted=True)} ({self.file}): {', '.join(self.names)}; "
             f"{len(self.constraints)} constraints>"
         )
 
@@ -417,7 +417,8 @@ def _read_team_key(
     if key not in names:
         reader.fault(
             ("team_key",),
-            f"team_key names no characteristic: {key!r}{did_you_mean(key, names)}",
+            f"team_key names no characteristic: "
+            f"{shown(key, quoted=True)}{did_you_mean(key, names)}",
             code="unknown-reference",
         )
         return characteristics[0].name
@@ -425,7 +426,7 @@ def _read_team_key(
     if chosen.kind != "categorical":
         reader.fault(
             ("team_key",),
-            f"team_key {key!r} must be a categorical characteristic "
+            f"team_key {shown(key, quoted=True)} must be a categorical characteristic "
             "(a list of values); without a team_key it is the first "
             "characteristic",
             code="invalid",
@@ -433,7 +434,7 @@ def _read_team_key(
     if chosen.declared_components:
         reader.fault(
             ("characteristics", key, "components"),
-            f"{key!r} is the team key: each of its values is its own component, "
+            f"{shown(key, quoted=True)} is the team key: each of its values is its own component, "
             "so it cannot declare components",
             code="invalid",
         )
@@ -468,7 +469,7 @@ def _read_characteristics(reader: Reader) -> list[Characteristic]:
 
 
 def _read_characteristic(reader: Reader, path: YPath, name: str) -> Characteristic | None:
-    spec = reader.mapping(path, f"characteristic {name!r}")
+    spec = reader.mapping(path, f"characteristic {shown(name, quoted=True)}")
     if not spec:
         return None
     reader.unknown_keys(path, spec, _CHARACTERISTIC_KEYS, "characteristic field")
@@ -478,7 +479,7 @@ def _read_characteristic(reader: Reader, path: YPath, name: str) -> Characterist
     if ("values" in spec) == ("range" in spec):
         reader.fault(
             path,
-            f"characteristic {name!r} needs exactly one of 'values' (named "
+            f"characteristic {shown(name, quoted=True)} needs exactly one of 'values' (named "
             "values) or 'range' (whole numbers)",
             code="missing-field",
         )
@@ -518,7 +519,7 @@ def _read_characteristic(reader: Reader, path: YPath, name: str) -> Characterist
 
 
 def _read_categorical_values(reader: Reader, path: YPath, name: str) -> tuple[str, ...]:
-    items = reader.names(path, f"values of {name!r}")
+    items = reader.names(path, f"values of {shown(name, quoted=True)}")
     seen: dict[str, YPath] = {}
     for item_path, value in items:
         if not value:
@@ -526,14 +527,17 @@ def _read_categorical_values(reader: Reader, path: YPath, name: str) -> tuple[st
         elif value in seen:
             reader.fault(
                 item_path,
-                f"duplicate value {value!r} in {name!r} (first at "
+                f"duplicate value {shown(value, quoted=True)} in {shown(name, quoted=True)} "
+                f"(first at "
                 f"{reader.document.location(seen[value])})",
                 code="duplicate-value",
             )
         else:
             seen[value] = item_path
     if not seen and reader.get(path) is not None:
-        reader.fault(path, f"characteristic {name!r} has no values", code="empty-selection")
+        reader.fault(
+            path, f"characteristic {shown(name, quoted=True)} has no values", code="empty-selection"
+        )
     return tuple(seen)
 
 
@@ -544,11 +548,11 @@ def _read_integer_range(reader: Reader, path: YPath, name: str) -> Run | tuple[(
     if isinstance(raw, list):
         # A list is a set of values everywhere else (a team's `sensor_count: [2, 6]` is {2, 6});
         # so a range has one spelling, a mapping, and `[1, 50]` here is refused, not guessed.
-        shown = ", ".join(str(item) for item in raw) if len(raw) <= 4 else "..."
+        listed = ", ".join(str(item) for item in raw) if len(raw) <= 4 else "..."
         example = f"{{min: {raw[0]}, max: {raw[1]}}}" if len(raw) == 2 else "{min: 1, max: 50}"
         reader.fault(
             path,
-            f"range of {name!r} is a list ([{shown}]), but a list means a set "
+            f"range of {shown(name, quoted=True)} is a list ([{listed}]), but a list means a set "
             f"of values (a team's `{name}: [2, 6]` is 2 and 6); write the range "
             f"as {example}",
             code="wrong-type",
@@ -557,7 +561,7 @@ def _read_integer_range(reader: Reader, path: YPath, name: str) -> Run | tuple[(
     if not isinstance(raw, dict):
         reader.fault(
             path,
-            f"range of {name!r} must be {{min: a, max: b}}, got {type_name(raw)}",
+            f"range of {shown(name, quoted=True)} must be {{min: a, max: b}}, got {type_name(raw)}",
             code="wrong-type",
         )
         return ()
@@ -569,13 +573,15 @@ def _read_integer_range(reader: Reader, path: YPath, name: str) -> Run | tuple[(
         return ()
     if low > high:
         reader.fault(
-            path, f"range of {name!r} is inverted: min {low} > max {high}", code="out-of-range"
+            path,
+            f"range of {shown(name, quoted=True)} is inverted: min {low} > max {high}",
+            code="out-of-range",
         )
         return ()
     if high - low + 1 > MAX_INTEGER_VALUES:
         reader.fault(
             path,
-            f"range of {name!r} has {high - low + 1} values; at most "
+            f"range of {shown(name, quoted=True)} has {high - low + 1} values; at most "
             f"{MAX_INTEGER_VALUES} are supported",
             code="out-of-range",
         )
@@ -590,7 +596,8 @@ def _read_components(
     if not isinstance(raw, list) or not raw:
         reader.fault(
             path,
-            f"components of {name!r} must be a non-empty list, got {type_name(raw)}",
+            f"components of {shown(name, quoted=True)} must be a non-empty list, got "
+            f"{type_name(raw)}",
             code="wrong-type",
         )
         return ()
@@ -608,7 +615,7 @@ def _read_components(
             first = reader.document.location(names[component_name])
             reader.fault(
                 (*item_path, "name"),
-                f"duplicate component {component_name!r} (first at {first})",
+                f"duplicate component {shown(component_name, quoted=True)} (first at {first})",
                 code="duplicate-value",
             )
         names.setdefault(component_name, (*item_path, "name"))
@@ -639,12 +646,14 @@ def _read_members(
         if value not in known:
             reader.fault(
                 item_path,
-                f"unknown {name} value {value!r}{did_you_mean(value, known)}",
+                f"unknown {name} value {shown(value, quoted=True)}{did_you_mean(value, known)}",
                 code="unknown-reference",
             )
         elif value in members:
             reader.fault(
-                item_path, f"{value!r} is listed twice in this component", code="duplicate-value"
+                item_path,
+                f"{shown(value, quoted=True)} is listed twice in this component",
+                code="duplicate-value",
             )
         members.add(value)
     return tuple(v for v in values if v in members)
@@ -674,7 +683,7 @@ def _read_arrangement(
     if "min" not in spec and "above" not in spec and "max" not in spec and "below" not in spec:
         reader.fault(
             path,
-            f"arrangement {name!r} needs a range: min/above and/or max/below",
+            f"arrangement {shown(name, quoted=True)} needs a range: min/above and/or max/below",
             code="missing-field",
         )
     cluster_size = 1
@@ -757,7 +766,8 @@ def _read_conditions(
         if name not in characteristics:
             reader.fault(
                 (*path, name),
-                f"unknown characteristic {name!r}{did_you_mean(name, characteristics)}",
+                f"unknown characteristic "
+                f"{shown(name, quoted=True)}{did_you_mean(name, characteristics)}",
                 key=True,
                 code="unknown-reference",
             )
@@ -785,7 +795,9 @@ def read_selection(
     if isinstance(raw, list):
         if not raw:
             reader.fault(
-                path, f"empty selection for {characteristic.name!r}", code="empty-selection"
+                path,
+                f"empty selection for {shown(characteristic.name, quoted=True)}",
+                code="empty-selection",
             )
             return None
         chosen: list[Value] = []
@@ -793,7 +805,11 @@ def read_selection(
         for index, item in enumerate(raw):
             value = _read_value(reader, (*path, index), characteristic, item)
             if value is not None and value in chosen:
-                reader.fault((*path, index), f"{value!r} is listed twice", code="duplicate-value")
+                reader.fault(
+                    (*path, index),
+                    f"{shown(value, quoted=True)} is listed twice",
+                    code="duplicate-value",
+                )
             elif value is not None:
                 chosen.append(value)
         if len(reader.faults) > before:
@@ -801,7 +817,9 @@ def read_selection(
         return frozenset(chosen), _describe(characteristic, chosen)
     if raw is None:
         reader.fault(
-            path, f"no values selected for {characteristic.name!r}", code="empty-selection"
+            path,
+            f"no values selected for {shown(characteristic.name, quoted=True)}",
+            code="empty-selection",
         )
         return None
     if (
@@ -868,7 +886,8 @@ def _read_value(
         names = [str(v) for v in characteristic.values]
         reader.fault(
             path,
-            f"unknown {characteristic.label.lower()} {text!r}{did_you_mean(text, names)}",
+            f"unknown {characteristic.label.lower()} "
+            f"{shown(text, quoted=True)}{did_you_mean(text, names)}",
             code="unknown-reference",
         )
         return None
@@ -895,7 +914,8 @@ def _read_selection_mapping(
                 names = [c.name for c in characteristic.components]
                 reader.fault(
                     item_path,
-                    f"unknown {characteristic.name} component {name!r}{did_you_mean(name, names)}",
+                    f"unknown {characteristic.name} component "
+                    f"{shown(name, quoted=True)}{did_you_mean(name, names)}",
                     code="unknown-reference",
                 )
             else:
@@ -917,7 +937,9 @@ def _read_selection_mapping(
         return None
     if not allowed:
         reader.fault(
-            path, f"selection for {characteristic.name!r} leaves no values", code="empty-selection"
+            path,
+            f"selection for {shown(characteristic.name, quoted=True)} leaves no values",
+            code="empty-selection",
         )
         return None
     return frozenset(allowed), " and ".join(parts)
@@ -931,7 +953,7 @@ def _read_bounds(
         reader.fault(
             path,
             f"min/max apply to whole-number characteristics; "
-            f"{characteristic.name!r} has named values",
+            f"{shown(characteristic.name, quoted=True)} has named values",
             code="wrong-type",
         )
         return allowed, ""

@@ -100,8 +100,9 @@ class Team:
 
     def __repr__(self) -> str:  # short, for notebooks: the fields are one attribute away
         return (
-            f"<Team {self.name!r} ({self.file}): {', '.join(self.kinematic_types)}; "
-            f"rules {self.rules.name!r}>"
+            f"<Team {shown(self.name, quoted=True)} ({self.file}): "
+            f"{', '.join(self.kinematic_types)}; "
+            f"rules {shown(self.rules.name, quoted=True)}>"
         )
 
     def selection(self, kinematic_type: str) -> TypeSelection | None:
@@ -239,7 +240,7 @@ def _read_selections(reader: Reader, rules: RuleSet) -> tuple[TypeSelection, ...
         if key.index(type_name) is None:
             reader.fault(
                 path,
-                f"unknown {key.label.lower()} {type_name!r}"
+                f"unknown {key.label.lower()} {shown(type_name, quoted=True)}"
                 f"{did_you_mean(type_name, [str(v) for v in key.values])}; "
                 f"the rules ({rules.file}) have: "
                 f"{', '.join(str(v) for v in key.values)}",
@@ -300,17 +301,18 @@ def _read_type(
     if raw is None:
         reader.fault(
             path,
-            f"no selections for {type_name!r}; list its characteristics' values "
+            f"no selections for {shown(type_name, quoted=True)}; list its characteristics' values "
             "(or write {} to allow every value)",
             code="empty-selection",
         )
         return None
-    spec = reader.mapping(path, f"selections for {type_name!r}")
+    spec = reader.mapping(path, f"selections for {shown(type_name, quoted=True)}")
     others = [c.name for c in rules.characteristics if c.name != rules.team_key]
     if rules.team_key in spec:
         reader.fault(
             (*path, rules.team_key),
-            f"{rules.team_key!r} is given by the entry itself ({type_name!r}); remove it",
+            f"{shown(rules.team_key, quoted=True)} is given by the entry itself "
+            f"({shown(type_name, quoted=True)}); remove it",
             key=True,
         )
     reader.unknown_keys(

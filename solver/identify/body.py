@@ -38,6 +38,7 @@ from solver.identify.profile import PartMatcher, Profile
 from solver.identify.roles import Role, RoleReader, main_axis
 from solver.identify.srdf import Srdf
 from solver.identify.urdf import Joint, Urdf
+from solver.untrusted import shown
 
 __all__ = ["Body", "Limb", "detect_body"]
 
@@ -69,8 +70,10 @@ class Limb:
     why: str = ""  # the evidence that decided its kind
 
     def describe(self) -> str:
-        span = self.joints[0] if len(self.joints) == 1 else f"{self.joints[0]} .. {self.joints[-1]}"
-        text = f"{self.kind}: {len(self.joints)}-joint chain {self.base} -> {self.tip} ({span})"
+        first, last = shown(self.joints[0]), shown(self.joints[-1])
+        span = first if len(self.joints) == 1 else f"{first} .. {last}"
+        chain = f"{shown(self.base)} -> {shown(self.tip)}"
+        text = f"{self.kind}: {len(self.joints)}-joint chain {chain} ({span})"
         return text + (", ends in a gripper" if self.gripper else "")
 
 
@@ -273,8 +276,8 @@ class Body:
 
 def _names(items: Iterable[str], limit: int = 4) -> str:
     names = list(items)
-    shown = ", ".join(names[:limit])
-    return shown + (f", ... ({len(names)} in all)" if len(names) > limit else "")
+    listed = ", ".join(shown(name) for name in names[:limit])
+    return listed + (f", ... ({len(names)} in all)" if len(names) > limit else "")
 
 
 def detect_body(urdf: Urdf, profile: Profile, srdf: Srdf | None = None) -> Body:

@@ -21,6 +21,7 @@ from solver.identify.plans import arm_plans
 from solver.identify.profile import BOOLEAN_FEATURES, Profile
 from solver.identify.srdf import Srdf
 from solver.identify.urdf import Urdf
+from solver.untrusted import shown
 
 __all__ = ["Reading", "classify", "kinematic_type_for"]
 
@@ -88,7 +89,7 @@ def classify(
     kinematic_type = kinematic_type_for(rule.name, profile, rules)
     if kinematic_type is None:
         evidence.append(
-            f"the rule set {rules.name!r} has no kinematic type for {rule.name} "
+            f"the rule set {shown(rules.name, quoted=True)} has no kinematic type for {rule.name} "
             f"(it has {', '.join(str(v) for v in rules.key.values)}): Other under it, "
             f"reason: {rule.name.lower()}"
         )

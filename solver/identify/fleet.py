@@ -225,7 +225,7 @@ def team_text(
         raise InputError.at(
             fleet.folder,
             "no robot in this folder maps to a kinematic type "
-            f"of the rule set {rules.name!r}; no team written",
+            f"of the rule set {shown(rules.name, quoted=True)}; no team written",
             code="fleet",
         )
     text = "\n".join(lines) + "\n"
@@ -302,12 +302,8 @@ def _yaml(value: object) -> str:
 
 def _comment(text: str) -> str:
     """``# text`` with every character that could end the comment line (or hide text in it)
-    written as its escape."""
-    if not text.isprintable():
-        text = "".join(
-            c if c.isprintable() else c.encode("unicode_escape").decode("ascii") for c in text
-        )
-    return "# " + text
+    written as its escape (:func:`~solver.untrusted.shown`)."""
+    return "# " + shown(text, limit=None)
 
 
 def rules_reference(rules_file: str | Path, team_file: str | Path) -> str:

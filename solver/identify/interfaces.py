@@ -32,6 +32,7 @@ from dataclasses import dataclass
 from solver.identify.profile import VELOCITY, Profile
 from solver.identify.sensors import Detection
 from solver.ros.names import Topic
+from solver.untrusted import shown
 
 __all__ = ["Control", "controls_from_topics", "device_of", "merge_controls", "sensors_from_topics"]
 
@@ -89,9 +90,9 @@ def controls_from_topics(
             control = (
                 profile.velocity_control(structure) if rule.control == VELOCITY else rule.control
             )
-            shown = f"{topic.name} ({topic.type})"
-            if shown not in seen.setdefault(control, []):
-                seen[control].append(shown)
+            entry = f"{topic.name} ({topic.type})"
+            if entry not in seen.setdefault(control, []):
+                seen[control].append(entry)
             break
     return tuple(Control(control, f"{source}: {_first(names)}") for control, names in seen.items())
 
@@ -106,8 +107,8 @@ def _is_action(topic: Topic) -> bool:
 
 
 def _first(names: list[str], limit: int = 3) -> str:
-    shown = ", ".join(names[:limit])
-    return shown + (f", ... ({len(names)} in all)" if len(names) > limit else "")
+    listed = ", ".join(shown(name) for name in names[:limit])
+    return listed + (f", ... ({len(names)} in all)" if len(names) > limit else "")
 
 
 def merge_controls(*groups: Iterable[Control]) -> tuple[Control, ...]:

@@ -27,6 +27,7 @@ from solver.errors import Location, SolverError, did_you_mean
 from solver.files.filekind import PROFILE_SECTIONS
 from solver.files.reader import Reader, type_name
 from solver.files.yamlio import Document, PathPart, load_document
+from solver.untrusted import shown
 
 __all__ = [
     "CONTROL_SOURCES",
@@ -452,7 +453,7 @@ def _pattern(reader: Reader, path: YPath, *, required: bool = True) -> Pattern |
     except PatternError as error:
         reader.fault(
             path,
-            f"invalid regular expression {text[:80]!r}: {error} (patterns run "
+            f"invalid regular expression {shown(text[:80], quoted=True)}: {error} (patterns run "
             "on RE2, which has no backtracking: no lookaround or "
             "backreferences)",
             code="pattern",
@@ -522,7 +523,7 @@ def _conditions(reader: Reader, path: YPath) -> tuple[FeatureCondition, ...]:
         if feature not in FEATURES:
             reader.fault(
                 item,
-                f"unknown feature {feature!r}{did_you_mean(feature, FEATURES)}; "
+                f"unknown feature {shown(feature, quoted=True)}{did_you_mean(feature, FEATURES)}; "
                 f"features: {', '.join(FEATURES)}",
                 key=True,
                 code="unknown-reference",
@@ -567,7 +568,11 @@ def _structures(reader: Reader) -> tuple[StructureRule, ...]:
         reader.unknown_keys(path, spec, _STRUCTURE_KEYS, "structure field")
         name = reader.string((*path, "name"), "structure name")
         if name and any(rule.name == name for rule in found):
-            reader.fault((*path, "name"), f"duplicate structure {name!r}", code="duplicate-value")
+            reader.fault(
+                (*path, "name"),
+                f"duplicate structure {shown(name, quoted=True)}",
+                code="duplicate-value",
+            )
         if "when" not in spec:
             reader.missing((*path, "when"), "when (write {} to match every body)")
         kinds = (
@@ -640,7 +645,8 @@ def _direction(reader: Reader, item: YPath, spec: dict[str, Any]) -> str | None:
     if direction not in DIRECTIONS:
         reader.fault(
             (*item, "direction"),
-            f"direction must be one of {', '.join(DIRECTIONS)}, got {direction!r}",
+            f"direction must be one of {', '.join(DIRECTIONS)}, got "
+            f"{shown(direction, quoted=True)}",
             code="out-of-range",
         )
         return None
@@ -709,7 +715,8 @@ def _motion(
         if structure not in structures:
             reader.fault(
                 (*by_path, structure),
-                f"unknown structure {structure!r}{did_you_mean(structure, structures)}",
+                f"unknown structure "
+                f"{shown(structure, quoted=True)}{did_you_mean(structure, structures)}",
                 key=True,
                 code="unknown-reference",
             )

@@ -26,6 +26,7 @@ from solver.errors import Fault
 from solver.identify.combinations import Combination
 from solver.identify.identification import Identification
 from solver.reporting.render import text_table
+from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
 __all__ = ["identification_data", "render_identification"]
 
@@ -82,23 +83,31 @@ def render_identification(
     *,
     explain: bool = False,
 ) -> str:
-    """A readable report: reading, evidence, sensors, controls, configurations."""
+    """A readable report: reading, evidence, sensors, controls, configurations.
+
+    The robot's name and every name from its files are escaped and its name cut short
+    (:func:`~solver.untrusted.shown`): no name starts a forged line.
+    """
     kinematic = identification.kinematic_type or "none in the rule set (default configuration)"
     lines = [
-        f"{identification.robot}  ({identification.file})",
-        f"  structure:      {identification.structure}  "
+        f"{shown(identification.robot)}  "
+        f"({shown(identification.file, limit=SHOWN_FILE_NAME_CHARS)})",
+        f"  structure:      {shown(identification.structure)}  "
         f"(confidence {identification.confidence:.2f})",
-        f"  kinematic type: {kinematic}",
+        f"  kinematic type: {shown(kinematic, limit=None)}",
         "  evidence:",
     ]
-    lines += [f"    - {line}" for line in identification.evidence]
+    lines += [f"    - {shown(line, limit=None)}" for line in identification.evidence]
     if identification.body is not None and identification.body.roles:
         lines.append("  joint roles (what decided each):")
-        lines += [f"    - {line}" for line in identification.body.role_lines()]
+        lines += [f"    - {shown(line, limit=None)}" for line in identification.body.role_lines()]
     if explain:
         lines.append("  decision path (structure rules in order):")
-        lines += [f"    {i}. {line}" for i, line in enumerate(identification.decision, 1)]
-    lines += [f"  note: {note}" for note in identification.notes]
+        lines += [
+            f"    {i}. {shown(line, limit=None)}"
+            for i, line in enumerate(identification.decision, 1)
+        ]
+    lines += [f"  note: {shown(note, limit=None)}" for note in identification.notes]
     lines += [f"  warning: {warning}" for warning in identification.warnings]
     text = "\n".join(lines) + "\n\n"
     if identification.sensors:
@@ -117,7 +126,8 @@ def render_identification(
     else:
         text += "  no motion controls found (give --topics or --bag)\n\n"
     if solution is not None:
-        text += f"  UI configurations in team {solution.team.name!r}:\n"
+        team = shown(solution.team.name, limit=None, quoted=True)
+        text += f"  UI configurations in team {team}:\n"
         rows = []
         for combination in combinations:
             values = ", ".join(value for _, value in combination.values)

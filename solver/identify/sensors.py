@@ -24,6 +24,7 @@ from dataclasses import dataclass
 from solver.core.rules import RuleSet
 from solver.identify.profile import Profile
 from solver.identify.urdf import PluginTag, SensorTag, Urdf
+from solver.untrusted import shown
 
 __all__ = ["Detection", "Sensor", "merge", "presented_count", "sensors_from_urdf"]
 
@@ -193,5 +194,5 @@ def _rule_values(rules: RuleSet, name: str) -> frozenset[str]:
 
 def _names(items: Sequence[Detection], limit: int = 4) -> str:
     names = list(dict.fromkeys(d.name for d in items))
-    shown = ", ".join(names[:limit])
-    return shown + (f", ... ({len(names)} in all)" if len(names) > limit else "")
+    listed = ", ".join(shown(name) for name in names[:limit])
+    return listed + (f", ... ({len(names)} in all)" if len(names) > limit else "")

@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING
 
 from solver.errors import Fault, InputError, Location
 from solver.identify.readers.safexml import line_of, parse_xml
+from solver.untrusted import shown
 
 if TYPE_CHECKING:
     from lxml import etree
@@ -145,7 +146,9 @@ class _Reader:
             return False
         if self.urdf is not None and not self.urdf.has_link(link):
             self.fault(
-                line_of(element), path, f"link {link!r} is not in the URDF ({self.urdf.file})"
+                line_of(element),
+                path,
+                f"link {shown(link, quoted=True)} is not in the URDF ({self.urdf.file})",
             )
             return False
         return True
@@ -157,7 +160,9 @@ class _Reader:
             return False
         if self.urdf is not None and self.urdf.joint(joint) is None and joint not in self.virtual:
             self.fault(
-                line_of(element), path, f"joint {joint!r} is not in the URDF ({self.urdf.file})"
+                line_of(element),
+                path,
+                f"joint {shown(joint, quoted=True)} is not in the URDF ({self.urdf.file})",
             )
             return False
         return True
@@ -200,7 +205,9 @@ class _Reader:
             for sub in group.subgroups:
                 if sub not in names:
                     self.fault(
-                        group.line, f"group[{group.name}]", f"subgroup {sub!r} is not defined"
+                        group.line,
+                        f"group[{group.name}]",
+                        f"subgroup {shown(sub, quoted=True)} is not defined",
                     )
             kept.append(replace(group, subgroups=tuple(s for s in group.subgroups if s in names)))
         return tuple(kept)
@@ -215,7 +222,8 @@ class _Reader:
                 self.fault(
                     line_of(element),
                     f"{path}.group",
-                    f"end effector {name!r} names group {group!r}, which is not defined",
+                    f"end effector {shown(name, quoted=True)} names group "
+                    f"{shown(group, quoted=True)}, which is not defined",
                 )
                 usable = False
             if usable:
@@ -240,7 +248,8 @@ class _Reader:
                 self.fault(
                     line_of(element),
                     f"{path}.type",
-                    f"unknown virtual joint type {kind!r}; SRDF virtual joints are "
+                    f"unknown virtual joint type {shown(kind, quoted=True)}; SRDF virtual "
+                    f"joints are "
                     f"{', '.join(VIRTUAL_JOINT_TYPES)}",
                 )
             if self.link(element, f"{path}.child_link", _name(element, "child_link")) and usable:

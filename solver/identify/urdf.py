@@ -24,6 +24,7 @@ from typing import TYPE_CHECKING
 from solver.errors import Fault, InputError, Location
 from solver.identify.readers.safexml import line_of, parse_xml
 from solver.identify.xacro.compiler import uncompiled_xacro
+from solver.untrusted import shown
 
 if TYPE_CHECKING:
     from lxml import etree
@@ -281,7 +282,8 @@ class _Builder:
         if not link_elements:
             raise InputError.at(
                 self.file,
-                f"robot {name!r} has no links: an empty robot cannot be identified",
+                f"robot {shown(name, quoted=True)} has no links: an empty robot cannot be "
+                f"identified",
                 line=line_of(root),
                 path="robot",
                 code="urdf-empty",
@@ -321,7 +323,7 @@ class _Builder:
                 self.fault(
                     element,
                     f"link[{name}]",
-                    f"duplicate link {name!r} (first at line {found[name].line})",
+                    f"duplicate link {shown(name, quoted=True)} (first at line {found[name].line})",
                 )
             else:
                 found[name] = Link(name, line_of(element))
@@ -337,7 +339,7 @@ class _Builder:
                 self.fault(
                     element,
                     f"joint[{joint.name}]",
-                    f"duplicate joint {joint.name!r} "
+                    f"duplicate joint {shown(joint.name, quoted=True)} "
                     f"(first at line "
                     f"{found[joint.name].line}; "
                     "ignored)",
@@ -359,7 +361,8 @@ class _Builder:
                 self.fault(
                     element,
                     f"{path}.type",
-                    f"unknown joint type {kind!r}; URDF joint types are {', '.join(JOINT_TYPES)}",
+                    f"unknown joint type {shown(kind, quoted=True)}; URDF joint types are "
+                    f"{', '.join(JOINT_TYPES)}",
                     code="urdf-joint-type",
                 )
             else:
@@ -383,14 +386,15 @@ class _Builder:
                 self.fault(
                     element if tag is None else tag,
                     f"{path}.{end}",
-                    f"joint {name!r} has no <{end} link=...> (joint ignored)",
+                    f"joint {shown(name, quoted=True)} has no <{end} link=...> (joint ignored)",
                 )
                 return None
             if link not in links:
                 self.fault(
                     tag,
                     f"{path}.{end}",
-                    f"joint {name!r} names {end} link {link!r}, which does not exist",
+                    f"joint {shown(name, quoted=True)} names {end} link "
+                    f"{shown(link, quoted=True)}, which does not exist",
                     code="urdf-missing-link",
                 )
                 # Read as an implicit link: an attachment described alone still has a body.
@@ -400,7 +404,8 @@ class _Builder:
             self.fault(
                 element,
                 path,
-                f"joint {name!r} connects link {ends['parent']!r} to "
+                f"joint {shown(name, quoted=True)} connects link "
+                f"{shown(ends['parent'], quoted=True)} to "
                 "itself (a cycle; joint ignored)",
                 code="urdf-cycle",
             )
@@ -429,7 +434,7 @@ class _Builder:
             self.fault(
                 element,
                 f"{path}.limit.{attribute}",
-                f"limit {attribute} is not a finite number: {text[:40]!r}",
+                f"limit {attribute} is not a finite number: {shown(text[:40], quoted=True)}",
             )
         return value
 
@@ -445,9 +450,10 @@ class _Builder:
                 self.fault(
                     joint.line,
                     f"joint[{joint.name}].child",
-                    f"link {joint.child!r} has two parent joints: {first.name!r} "
-                    f"(line {first.line}) and {joint.name!r}; a URDF is a tree "
-                    f"({joint.name!r} ignored)",
+                    f"link {shown(joint.child, quoted=True)} has two parent joints: "
+                    f"{shown(first.name, quoted=True)} "
+                    f"(line {first.line}) and {shown(joint.name, quoted=True)}; a URDF is a tree "
+                    f"({shown(joint.name, quoted=True)} ignored)",
                     code="urdf-cycle",
                 )
                 continue
@@ -479,14 +485,16 @@ class _Builder:
                 code="urdf-cycle",
             )
         if len(roots) > 1:
-            names = ", ".join(f"{link.name!r} (line {link.line})" for link in roots[:5])
+            names = ", ".join(
+                f"{shown(link.name, quoted=True)} (line {link.line})" for link in roots[:5]
+            )
             more = f", ... ({len(roots)} in all)" if len(roots) > 5 else ""
             self.fault(
                 root,
                 "robot",
                 f"{len(roots)} root links (links with no parent "
                 f"joint): {names}{more}; a URDF has exactly one root; "
-                f"read from {top.name!r}, the largest tree",
+                f"read from {shown(top.name, quoted=True)}, the largest tree",
                 code="urdf-roots",
             )
         return tuple(kept), top.name
@@ -541,7 +549,8 @@ class _Builder:
                 self.fault(
                     node,
                     f"sensor[{element.get('name') or ''}].{node.tag}",
-                    f"<{node.tag}> is not a finite number: {node.text.strip()[:40]!r} (ignored)",
+                    f"<{node.tag}> is not a finite number: "
+                    f"{shown(node.text.strip()[:40], quoted=True)} (ignored)",
                     code="urdf-number",
                 )
         return _sensor(element, link, origin, kind)

@@ -18,6 +18,7 @@ from solver.core.solution import Solution
 from solver.errors import Fault, Location, SolverError
 from solver.layouts.presentation import PANEL_TYPES, PanelSpec, Presentation
 from solver.layouts.tiling import split_tree, tiles
+from solver.untrusted import shown
 
 __all__ = [
     "LayoutError",
@@ -191,7 +192,7 @@ def validate_foxglove(layout: dict[str, Any], file: str = "<layout>") -> None:
             faults.append(
                 Fault(
                     Location(file, path=f"{path}.splitPercentage"),
-                    f"split percentage must be in 0..100 (got {split!r})",
+                    f"split percentage must be in 0..100 (got {shown(split, quoted=True)})",
                 )
             )
         if node.get("direction") not in ("row", "column"):
@@ -208,9 +209,15 @@ def validate_foxglove(layout: dict[str, Any], file: str = "<layout>") -> None:
         walk(layout["layout"], "layout")
     for panel_id in sorted(set(seen)):
         if seen.count(panel_id) > 1:
-            faults.append(Fault(Location(file, path="layout"), f"duplicate id {panel_id!r}"))
+            faults.append(
+                Fault(Location(file, path="layout"), f"duplicate id {shown(panel_id, quoted=True)}")
+            )
         if panel_id not in configs:
-            faults.append(Fault(Location(file, path="layout"), f"{panel_id!r} has no config"))
+            faults.append(
+                Fault(
+                    Location(file, path="layout"), f"{shown(panel_id, quoted=True)} has no config"
+                )
+            )
     for panel_id in configs:
         if panel_id not in seen:
             faults.append(Fault(Location(file, path=f"configById.{panel_id}"), "orphan config"))

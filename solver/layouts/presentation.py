@@ -17,6 +17,7 @@ from solver.core.rules import RuleSet
 from solver.errors import SolverError
 from solver.files.reader import Reader
 from solver.files.yamlio import load_document
+from solver.untrusted import shown
 
 __all__ = [
     "PANEL_TYPES",
@@ -83,16 +84,19 @@ def load_presentation(path: str | Path | None = None, rules: RuleSet | None = No
         components = reader.mapping(("components",), "components")
         for name in components:
             path_ = ("components", name)
-            entry = reader.mapping(path_, f"component {name!r}")
+            entry = reader.mapping(path_, f"component {shown(name, quoted=True)}")
             if known is not None and name not in known:
                 reader.fault(
-                    path_, f"unknown component {name!r}", key=True, code="unknown-reference"
+                    path_,
+                    f"unknown component {shown(name, quoted=True)}",
+                    key=True,
+                    code="unknown-reference",
                 )
             panel = reader.string((*path_, "panel"), "panel")
             if panel and panel not in PANEL_TYPES:
                 reader.fault(
                     (*path_, "panel"),
-                    f"unknown panel {panel!r}; known: " + ", ".join(PANEL_TYPES),
+                    f"unknown panel {shown(panel, quoted=True)}; known: " + ", ".join(PANEL_TYPES),
                     code="unknown-reference",
                 )
             topic = reader.string((*path_, "topic"), "topic", limit=None)

@@ -7,10 +7,19 @@ rendering the panels' content.
 
 from __future__ import annotations
 
-from html import escape
+import html
 from typing import Any
 
+from solver.untrusted import shown
+
 __all__ = ["preview_html", "preview_svg"]
+
+
+def escape(text: str) -> str:
+    """``text`` as XML text: markup escaped, and every control or invisible format character
+    shown as its escape (an XML 1.0 document may hold no C0 control at all)."""
+    return html.escape(shown(text, limit=None))
+
 
 COLOURS = {
     "3D": "#4c72b0",

@@ -23,6 +23,7 @@ from solver.errors import Fault, Location
 from solver.files.yamlio import parse_document
 from solver.layouts.foxglove import LayoutError, panel_entries, template_topic
 from solver.layouts.presentation import PanelSpec, Presentation
+from solver.untrusted import shown
 
 __all__ = ["REQUIRED_KEYS", "rviz_layout", "rviz_text", "validate_rviz"]
 
@@ -157,7 +158,7 @@ def validate_rviz(text: str, file: str = "<rviz>") -> None:
         faults.extend(
             Fault(
                 Location(file, path=f"Visualization Manager.Displays[{index}]"),
-                f"display has no {key!r}",
+                f"display has no {shown(key, quoted=True)}",
             )
             for key in REQUIRED_KEYS
             if key not in display

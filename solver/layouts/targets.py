@@ -23,6 +23,7 @@ from solver.errors import InputError
 from solver.layouts.foxglove import foxglove_layout, validate_foxglove
 from solver.layouts.presentation import Presentation
 from solver.layouts.rviz import rviz_layout, rviz_text, validate_rviz
+from solver.untrusted import shown
 
 __all__ = ["TARGETS", "Target", "target"]
 
@@ -130,6 +131,6 @@ def target(name: str) -> Target:
     found = TARGETS.get(name)
     if found is None:
         raise InputError.at(
-            "--format", f"unknown layout format {name!r}; known: " + ", ".join(TARGETS)
+            "--format", f"unknown layout format {shown(name, quoted=True)}; known: " + ", ".join(TARGETS)
         )
     return found

@@ -13,6 +13,7 @@ from pathlib import Path
 from solver.core.assignment import Assignment
 from solver.layouts.foxglove import layout_filename
 from solver.live.events import Event, SelectionChanged
+from solver.reporting.render import dumps
 
 __all__ = ["layout_path", "with_layout"]
 
@@ -32,5 +33,5 @@ def with_layout(text: str, event: Event, directory: str | Path, fmt: str) -> str
     if fmt == "json":
         data = json.loads(text)
         data["layout"] = path
-        return json.dumps(data, ensure_ascii=False) + "\n"
+        return dumps(data, indent=None)
     return text + f"{'layout':<16}{path or '(no active robot)'}\n"

@@ -101,7 +101,9 @@ def assign_from_master(
         profile=profile,
     )
     if live.identification is None:
-        raise InputError.at(master, f"robot {namespace} cannot be identified:\n{live.error}")
+        raise InputError.at(
+            master, f"robot {namespace} cannot be identified: {_one_line(live.error)}"
+        )
     assignment, chosen = choose(live, values, solution)
     return LiveAssignment(namespace, assignment, (*notes, *chosen))
 
@@ -134,6 +136,13 @@ def assign_from_graph(
             f"{there}",
         )
     if live.identification is None:
-        raise InputError.at(source.name, f"robot {namespace} cannot be identified:\n{live.error}")
+        raise InputError.at(
+            source.name, f"robot {namespace} cannot be identified: {_one_line(live.error)}"
+        )
     assignment, chosen = choose(live, dict(given or {}), solution)
     return LiveAssignment(namespace, assignment, tuple(chosen))
+
+
+def _one_line(error: str | None) -> str:
+    # The robot's faults, one per line in the watcher, on the one line of this error.
+    return "; ".join((error or "").splitlines())

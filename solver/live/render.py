@@ -2,7 +2,9 @@
 
 JSON: one compact object per line, keys in the documented order, UTF-8 kept, so a consumer
 reads the stream line by line (``jq -c``, a ROS node, a UI). Text: a line per event, with the
-robot's combinations and UI configuration numbers indented beneath it.
+robot's combinations and UI configuration numbers indented beneath it. Everything the graph
+gave (namespaces, robot names, values, messages) is shown through
+:func:`~solver.untrusted.shown`: escaped, so no name starts a forged line, and cut short.
 
 :func:`render_live_assignment` is the output of ``teleop-ui assign --master``: ``assign``'s
 own text or JSON, with the robot's namespace and the notes on how the combination was chosen.
@@ -12,7 +14,6 @@ Not here: the schema itself (:mod:`solver.live.events`).
 
 from __future__ import annotations
 
-import json
 from typing import Any
 
 from solver.core.assignment import Assignment
@@ -32,6 +33,7 @@ from solver.live.events import (
 from solver.live.query import LiveAssignment
 from solver.live.robot import LiveRobot
 from solver.reporting.render import dumps, render_assignment
+from solver.untrusted import shown
 
 __all__ = ["json_line", "render_event", "render_live_assignment", "text_lines"]
 
@@ -39,7 +41,7 @@ _WIDTH = 16  # the label column of the text format
 
 
 def json_line(event: Event, solution: Solution) -> str:
-    return json.dumps(event_data(event, solution), ensure_ascii=False) + "\n"
+    return dumps(event_data(event, solution), indent=None)
 
 
 def render_event(event: Event, solution: Solution, fmt: str = "json") -> str:
@@ -50,32 +52,36 @@ def render_event(event: Event, solution: Solution, fmt: str = "json") -> str:
 
 
 def _values(given: Any) -> str:
-    return ", ".join(str(value) for _, value in given) or "(nothing known)"
+    return ", ".join(shown(value) for _, value in given) or "(nothing known)"
 
 
 def _configuration(assignment: Assignment) -> str:
     if assignment.is_default:
-        return f"{assignment.number} (default): {'; '.join(assignment.reasons)}"
+        reasons = shown("; ".join(assignment.reasons), limit=None)
+        return f"{assignment.number} (default): {reasons}"
     return str(assignment.number)
 
 
 def _robot_lines(label: str, robot: LiveRobot, changed: tuple[str, ...] = ()) -> list[str]:
-    head = f"{label:<{_WIDTH}}{robot.namespace}"
+    head = f"{label:<{_WIDTH}}{shown(robot.namespace)}"
     found = robot.identification
     if found is None:
         return [
             f"{head}  cannot be identified:",
-            *(" " * (_WIDTH + 2) + line for line in (robot.error or "").splitlines()),
+            *(
+                " " * (_WIDTH + 2) + shown(line, limit=None)
+                for line in (robot.error or "").splitlines()
+            ),
         ]
-    kinematic = found.kinematic_type or "no kinematic type in the rule set"
-    controls = ", ".join(c.motion_control for c in found.motion_controls) or "none found"
+    kinematic = shown(found.kinematic_type or "no kinematic type in the rule set")
+    controls = ", ".join(shown(c.motion_control) for c in found.motion_controls) or "none found"
     head += (
-        f"  {found.robot}: {kinematic} (structure {found.structure}, confidence "
+        f"  {shown(found.robot)}: {kinematic} (structure {shown(found.structure)}, confidence "
         f"{found.confidence:.2f}); {found.sensor_count} sensor(s); motion controls "
         f"{controls}"
     )
     if changed:
-        head += f"  [changed: {', '.join(changed)}]"
+        head += f"  [changed: {shown(', '.join(changed), limit=None)}]"
     return [
         head,
         *(
@@ -93,31 +99,35 @@ def text_lines(event: Event) -> list[str]:
     if isinstance(event, RobotChanged):
         return _robot_lines("robot changed", event.robot, event.changed)
     if isinstance(event, RobotRemoved):
-        return [f"{'robot removed':<{_WIDTH}}{event.namespace}"]
+        return [f"{'robot removed':<{_WIDTH}}{shown(event.namespace)}"]
     if isinstance(event, SelectionChanged):
         request = event.request
         if event.selection is None or event.selection.assignment is None:
             return [
                 f"{'selection':<{_WIDTH}}no active robot (set /teleop_ui/active_robot)",
-                *(f"  note: {n}" for n in request.notes),
+                *(f"  note: {shown(n, limit=None)}" for n in request.notes),
             ]
         assignment = event.selection.assignment
         asked = " ".join(
-            str(v)
+            shown(v)
             for v in (request.robot, request.motion_control, request.sensor_type)
             if v is not None
         )
         return [
             f"{'selection':<{_WIDTH}}{asked} -> UI configuration "
             f"{_configuration(assignment)}  <- {_values(assignment.given)}",
-            *(" " * (_WIDTH + 2) + f"note: {note}" for note in event.selection.notes),
+            *(
+                " " * (_WIDTH + 2) + f"note: {shown(note, limit=None)}"
+                for note in event.selection.notes
+            ),
         ]
     if isinstance(event, MasterLost):
-        return [f"{'master lost':<{_WIDTH}}{event.master}: {event.error}; retrying"]
+        error = shown(event.error, limit=None)
+        return [f"{'master lost':<{_WIDTH}}{shown(event.master)}: {error}; retrying"]
     if isinstance(event, MasterBack):
-        return [f"{'master back':<{_WIDTH}}{event.master}: resynchronising"]
+        return [f"{'master back':<{_WIDTH}}{shown(event.master)}: resynchronising"]
     if isinstance(event, Synced):
-        robots = ", ".join(event.robots) or "none"
+        robots = ", ".join(shown(namespace) for namespace in event.robots) or "none"
         return [f"{'synced':<{_WIDTH}}{len(event.robots)} robot(s): {robots}"]
     return [event.kind]
 
@@ -131,5 +141,5 @@ def render_live_assignment(live: LiveAssignment, solution: Solution, fmt: str = 
             "notes": list(live.notes),
         }
         return dumps(data)
-    text = f"robot {live.robot}\n" + render_assignment(solution, live.assignment, "text")
-    return text + "".join(f"  note: {note}\n" for note in live.notes)
+    text = f"robot {shown(live.robot)}\n" + render_assignment(solution, live.assignment, "text")
+    return text + "".join(f"  note: {shown(note, limit=None)}\n" for note in live.notes)

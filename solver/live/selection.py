@@ -35,6 +35,7 @@ from solver.live.discovery import normalise_namespace
 from solver.live.master import MISSING
 from solver.live.robot import LiveRobot
 from solver.live.values import selection_text
+from solver.untrusted import shown
 
 __all__ = [
     "NAMESPACE",
@@ -134,8 +135,8 @@ def choose(
         offered = list(dict.fromkeys(c[name] for c in candidates if name in c))
         if offered:
             notes.append(
-                f"{robot.namespace} does not offer {name} {value!r} (it has "
-                f"{', '.join(offered)}); using it as asked"
+                f"{shown(robot.namespace)} does not offer {name} {shown(value, quoted=True)} "
+                f"(it has {', '.join(shown(o) for o in offered)}); using it as asked"
             )
         candidates = [{**c, name: value} for c in candidates] or [{name: value}]
     unique = {tuple((n, c[n]) for n in rules.names if n in c): c for c in candidates}
@@ -145,10 +146,10 @@ def choose(
         for name in rules.names:
             options = list(dict.fromkeys(c.get(name) for _, c in ordered))
             if len(options) > 1:
-                shown = ", ".join(str(option) for option in options)
+                listed = ", ".join(shown(str(option)) for option in options)
                 notes.append(
-                    f"{robot.namespace} has several {name} values ({shown}): using "
-                    f"{chosen.get(name)}; give {name} to choose"
+                    f"{shown(robot.namespace)} has several {name} values ({listed}): using "
+                    f"{shown(chosen.get(name))}; give {name} to choose"
                 )
                 break
     assignment = known.get(chosen_key)
@@ -170,7 +171,9 @@ def requested_values(
         if value is None:
             continue
         if name not in solution.rules.names:
-            notes.append(f"{NAMESPACE}/{param} ignored: the rule set has no {name!r}")
+            notes.append(
+                f"{NAMESPACE}/{param} ignored: the rule set has no {shown(name, quoted=True)}"
+            )
             continue
         given[name] = value
     return given, tuple(notes)
@@ -187,11 +190,12 @@ def select(
     notes = [*request.notes, *ignored]
     if robot is None or robot.identification is None:
         if robot is not None:
-            reason = f"robot {request.robot} could not be identified: {robot.error}"
+            reason = f"robot {shown(request.robot)} could not be identified: {robot.error}"
         elif robots:
-            reason = f"no robot {request.robot} on the master (robots: {', '.join(sorted(robots))})"
+            there = ", ".join(shown(namespace) for namespace in sorted(robots))
+            reason = f"no robot {shown(request.robot)} on the master (robots: {there})"
         else:
-            reason = f"no robot {request.robot} on the master (it has no robots)"
+            reason = f"no robot {shown(request.robot)} on the master (it has no robots)"
         default = assign(solution, given)
         return ActiveSelection(
             request,

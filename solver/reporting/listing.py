@@ -25,7 +25,7 @@ from solver.core.solution import Solution
 from solver.engines import ENUMERATING, MAX_ROBOTS
 from solver.engines.fast import BlockLayout, robot_blocks
 from solver.errors import TooLargeError
-from solver.reporting.render import csv_cell, csv_row
+from solver.reporting.render import csv_cell, csv_row, json_printable
 
 if TYPE_CHECKING:
     from numpy.typing import NDArray
@@ -202,9 +202,11 @@ def write_robots(
         return written
     for number, robot in numbered_robots(solution, engine):
         stream.write(
-            json.dumps(
-                {"configuration": number, **dict(zip(names, robot, strict=True))},
-                ensure_ascii=False,
+            json_printable(
+                json.dumps(
+                    {"configuration": number, **dict(zip(names, robot, strict=True))},
+                    ensure_ascii=False,
+                )
             )
             + "\n"
         )
@@ -231,7 +233,7 @@ def _csv_field(value: Value) -> str:
 
 
 def _json_field(value: Value) -> str:
-    return json.dumps(value, ensure_ascii=False)
+    return json_printable(json.dumps(value, ensure_ascii=False))
 
 
 def _write_blocks(solution: Solution, stream: TextIO, fmt: str) -> int:
@@ -250,7 +252,7 @@ def _write_blocks(solution: Solution, stream: TextIO, fmt: str) -> int:
         opening, separator, closing = "", ",", "\n"
     else:
         field = _json_field
-        labels = [json.dumps(name, ensure_ascii=False) + ": " for name in names]
+        labels = [json_printable(json.dumps(name, ensure_ascii=False)) + ": " for name in names]
         opening, separator, closing = '{"configuration": ', ", ", "}\n"
     cells = [
         [label + field(value) for value in c.values]

@@ -21,6 +21,8 @@ from collections.abc import Sequence
 from typing import Any
 from urllib.parse import quote
 
+from solver.untrusted import shown
+
 __all__ = ["escape", "heading", "link_target", "paragraph", "table"]
 
 _INLINE = str.maketrans(
@@ -39,14 +41,16 @@ def _line_start(match: re.Match[str]) -> str:
 def escape(text: object) -> str:
     """``text`` as inline Markdown that shows exactly it: within a line, or a table cell.
 
-    ``None`` shows as nothing.
+    A line break, control or invisible format character in it is shown as its escape
+    (``\\n``, ``\\u202e``: :func:`~solver.untrusted.shown`), so the text stays on its line
+    and starts no heading or list. ``None`` shows as nothing.
     """
-    return "" if text is None else str(text).translate(_INLINE)
+    return "" if text is None else shown(str(text), limit=None).translate(_INLINE)
 
 
 def paragraph(text: object) -> str:
     """``text`` as Markdown paragraphs that show exactly it, whatever its lines start with."""
-    lines = escape(text).splitlines()
+    lines = [] if text is None else [escape(line) for line in str(text).splitlines()]
     # Indentation would make a code block, two trailing spaces a line break: both are dropped,
     # as a viewer would drop them anyway.
     return _LINE_START.sub(_line_start, "\n".join(line.strip() for line in lines))

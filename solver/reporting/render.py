@@ -29,12 +29,14 @@ from solver.core.rules import Characteristic, Component
 from solver.core.solution import Solution
 from solver.engines import describe
 from solver.reporting import markdown
+from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
 __all__ = [
     "FORMATS",
     "csv_cell",
     "csv_row",
     "dumps",
+    "json_printable",
     "method_text",
     "render_assignment",
     "render_comparisons",
@@ -54,18 +56,46 @@ def method_text(solution: Solution) -> str:
     return "; ".join(f"{t.kinematic_type}: {describe(t.method)}" for t in solution.by_type)
 
 
-def dumps(data: Any) -> str:
-    """JSON as the project writes it everywhere: indented, UTF-8 kept, trailing newline."""
-    return json.dumps(data, indent=2, ensure_ascii=False) + "\n"
+def dumps(data: Any, *, indent: int | None = 2) -> str:
+    """JSON as the project writes it everywhere: indented (``None``: one line), UTF-8 kept,
+    trailing newline.
+
+    Printable characters are kept as they are; every other one (a control, a line separator
+    U+2028, a right-to-left override, a lone surrogate) is written as a JSON escape
+    (``\\u202e``), so the text holds no invisible character, a terminal shows it as it is, and
+    any JSON reader reads the same strings back.
+    """
+    return json_printable(json.dumps(data, indent=indent, ensure_ascii=False)) + "\n"
+
+
+def json_printable(text: str) -> str:
+    """JSON ``text`` (from ``json.dumps(..., ensure_ascii=False)``) with every unprintable
+    character but its own line breaks written as a ``\\uXXXX`` escape."""
+    if text.isprintable():
+        return text
+    return "\n".join(
+        line if line.isprintable() else "".join(map(_json_char, line)) for line in text.split("\n")
+    )
+
+
+def _json_char(char: str) -> str:
+    if char.isprintable():
+        return char
+    code = ord(char)
+    if code < 0x10000:
+        return f"\\u{code:04x}"
+    code -= 0x10000  # a UTF-16 surrogate pair, as JSON writes characters beyond the BMP
+    return f"\\u{0xD800 + (code >> 10):04x}\\u{0xDC00 + (code & 0x3FF):04x}"
 
 
 def text_table(
     headers: Sequence[str], rows: Sequence[Sequence[Any]], right: Sequence[bool] | None = None
 ) -> str:
-    """A plain aligned table; ``right[i]`` right-aligns column i (numbers)."""
+    """A plain aligned table; ``right[i]`` right-aligns column i (numbers). Every cell is one
+    line, whatever the names in it hold (:func:`~solver.untrusted.shown`)."""
     cells = [
-        [str(h) for h in headers],
-        *[["" if v is None else str(v) for v in row] for row in rows],
+        [shown(h, limit=None) for h in headers],
+        *[["" if v is None else shown(str(v), limit=None) for v in row] for row in rows],
     ]
     widths = [max(len(row[i]) for row in cells) for i in range(len(headers))]
     align = right or [False] * len(headers)
@@ -204,10 +234,9 @@ def render_solution(solution: Solution, fmt: str = "text", *, configurations: bo
                 markdown.table(headers, rows, [True] + [False] * (len(headers) - 2) + [True]),
             ]
         return "\n".join(parts).rstrip("\n") + "\n"
-    rules = solution.rules
-    text = f"{solution.team.name}  (rules: {rules.name}, {rules.file})\n\n"
+    text = _title(solution) + "\n\n"
     text += text_table(_SUMMARY_HEADERS, _summary_rows(solution), numbers)
-    text += "\n" + "\n".join(_footer(solution)) + "\n"
+    text += "\n" + "\n".join(shown(line, limit=None) for line in _footer(solution)) + "\n"
     if configurations:
         headers, rows = _configuration_rows(solution)
         text += "\n" + text_table(headers, rows, [True] + [False] * (len(headers) - 2) + [True])
@@ -229,9 +258,15 @@ def render_counts(solution: Solution, fmt: str = "text") -> str:
         return (
             markdown.heading(2, solution.team.name) + "\n\n" + markdown.table(headers, rows, align)
         )
+    return _title(solution) + "\n\n" + text_table(headers, rows, align)
+
+
+def _title(solution: Solution) -> str:
+    """The first line of a text view: the team, its rule set and its file, each escaped."""
+    rules = solution.rules
     return (
-        f"{solution.team.name}  (rules: {solution.rules.name}, {solution.rules.file})\n\n"
-        + text_table(headers, rows, align)
+        f"{shown(solution.team.name, limit=None)}  (rules: {shown(rules.name, limit=None)}, "
+        f"{shown(rules.file, limit=SHOWN_FILE_NAME_CHARS)})"
     )
 
 
@@ -256,7 +291,10 @@ def render_assignment(solution: Solution, assignment: Assignment, fmt: str = "te
     """An assignment as text or JSON."""
     if fmt == "json":
         return dumps(assignment_data(solution, assignment))
-    given = " ".join(f"{name}={value}" for name, value in assignment.given) or "(nothing)"
+    # The values were given on a command line or read from a robot: each is shown cut short.
+    given = (
+        " ".join(f"{shown(name)}={shown(value)}" for name, value in assignment.given) or "(nothing)"
+    )
     rules = solution.rules
     configuration = assignment.configuration
     if configuration is not None:
@@ -267,20 +305,25 @@ def render_assignment(solution: Solution, assignment: Assignment, fmt: str = "te
         ):
             own = [characteristic.parse_value(values[characteristic.name])]
             lines.append(
-                f"  {characteristic.label}: {_component_text(characteristic, component, own)}"
+                f"  {shown(characteristic.label, limit=None)}: "
+                f"{shown(_component_text(characteristic, component, own), limit=None)}"
             )
         lines.append(
-            f"  (serves {configuration.robots} valid robots of team {solution.team.name!r})"
+            f"  (serves {configuration.robots} valid robots of team "
+            f"{shown(solution.team.name, limit=None, quoted=True)})"
         )
         return "\n".join(lines) + "\n"
     lines = [f"default UI configuration {assignment.number} for {given}"]
-    lines += [f"  invalid: {reason}" for reason in assignment.reasons]
+    lines += [f"  invalid: {shown(reason, limit=None)}" for reason in assignment.reasons]
     relevant = [
         (rules.characteristic(name).label, names) for name, names in assignment.relevant if names
     ]
     if relevant:
         lines.append("  components relevant to the known values:")
-        lines += [f"    {label}: {', '.join(names)}" for label, names in relevant]
+        lines += [
+            f"    {shown(label, limit=None)}: {shown(', '.join(names), limit=None)}"
+            for label, names in relevant
+        ]
     return "\n".join(lines) + "\n"
 
 

@@ -44,6 +44,7 @@ from solver.reporting.plot import (
     radar_figure,
     runs,
 )
+from solver.untrusted import shown
 
 __all__ = [
     "REPORT_FORMATS",
@@ -104,10 +105,10 @@ def report_format(path: str | Path) -> ReportFormat:
     """The report format a file name asks for (``.html``/``.htm``, ``.md``/``.markdown``)."""
     suffix = Path(path).suffix.lower()
     if suffix not in REPORT_FORMATS:
-        shown = f"'{suffix}'" if suffix else "no extension"
+        named = f"'{suffix}'" if suffix else "no extension"
         raise InputError.at(
             str(path),
-            f"cannot tell the report format from {shown}; name the "
+            f"cannot tell the report format from {named}; name the "
             f"file {', '.join(REPORT_FORMATS)}",
             code="unknown-format",
         )
@@ -198,8 +199,8 @@ def _component_cell(entry: Mapping[str, Any]) -> str:
         low, high = entry["range"]
         few, many = entry["clusters"]
         span = f"{low}" if low == high else f"{low}..{high}"
-        shown = f"{few}" if few == many else f"{few}..{many}"
-        return f"{name}: {span} ({shown} clusters)"
+        clusters = f"{few}" if few == many else f"{few}..{many}"
+        return f"{name}: {span} ({clusters} clusters)"
     values = [str(v) for v in entry["values"]]
     if values == [name]:
         return name
@@ -262,6 +263,14 @@ def _subtitle(solution: Solution) -> str:
 
 # ---- HTML ------------------------------------------------------------------------------------
 
+
+def _html_text(text: object) -> str:
+    """``text`` as HTML text that shows exactly it: markup escaped, and a control, line break
+    or invisible format character (a right-to-left override) shown as its escape
+    (:func:`~solver.untrusted.shown`), as in the text output."""
+    return html.escape(shown(str(text), limit=None))
+
+
 _NUMBER = ' class="n"'
 _TOTAL = ' class="total"'
 
@@ -272,7 +281,7 @@ def _html_table(
     numbers: Sequence[bool],
     total_last: bool = False,
 ) -> str:
-    e = html.escape
+    e = _html_text
     lines = [
         "<table>",
         "<thead><tr>" + "".join(f"<th>{e(str(h))}</th>" for h in headers) + "</tr></thead>",
@@ -299,7 +308,7 @@ def _folded(table: str, rows: int) -> str:
 
 
 def _section(anchor: str, title: str) -> str:
-    return f'<h2 id="{anchor}">{html.escape(title)}</h2>'
+    return f'<h2 id="{anchor}">{_html_text(title)}</h2>'
 
 
 def _svg_uri(svg: bytes) -> str:
@@ -321,7 +330,7 @@ def _thumbnails(solution: Solution) -> str:
     from solver.layouts.preview import preview_svg
     from solver.layouts.tiling import tiles
 
-    e = html.escape
+    e = _html_text
     # The shipped profile serves every rule set: a component it omits is a placeholder panel.
     profile = load_presentation()
     default_file = layout_filename(solution.default_configuration, default=True)
@@ -377,7 +386,7 @@ def render_html(solution: Solution, charts: Mapping[PlotKind, bytes] | None = No
     """
     if charts is None:
         charts = _charts(solution, "svg", _HTML_KINDS)
-    e = html.escape
+    e = _html_text
     team = solution.team
     title = f"{team.name}: UI configurations"
     parts = [
@@ -397,7 +406,7 @@ def render_html(solution: Solution, charts: Mapping[PlotKind, bytes] | None = No
         f'<p class="meta">{e(_subtitle(solution))}</p>',
     ]
     if team.description:
-        parts.append(f"<p>{e(team.description)}</p>")
+        parts.append(f"<p>{'<br>'.join(e(line) for line in team.description.splitlines())}</p>")
     constraints = _constraint_table(solution)
     titles = {
         "counts": "Valid robots and UI configurations",

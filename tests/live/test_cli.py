@@ -411,7 +411,7 @@ def test_assign_errors_on_the_master_exit_2(master: Roscore, node: TestNode) -> 
     broken = run_cli("assign", "--master", master.uri, "--team", "case3", "--robot", "/broken")
     assert broken.returncode == 2
     assert broken.stderr.startswith(
-        f"{master.uri}: robot /broken cannot be identified:\n/broken/robot_description:1:"
+        f"{master.uri}: robot /broken cannot be identified: /broken/robot_description:1:"
     )
     nobody = run_cli("assign", "--master", master.uri, "--team", "case3")
     assert nobody.returncode == 2

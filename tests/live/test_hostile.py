@@ -214,7 +214,7 @@ def test_assign_master_answers_beside_a_hostile_robot_and_refuses_it_located(
         bad = run_cli("assign", "--master", master.uri, "--team", "case3", "--robot", robot)
         assert bad.returncode == 2
         assert "Traceback" not in bad.stderr
-        assert f"robot {robot} cannot be identified:\n{robot}/robot_description" in bad.stderr
+        assert f"robot {robot} cannot be identified: {robot}/robot_description" in bad.stderr
     inf = run_cli("assign", "--master", master.uri, "--team", "case3", "--robot", "/inf")
     assert inf.returncode in (0, 2)
     assert "Traceback" not in inf.stderr
