@@ -8,6 +8,7 @@ to every reader and command (bounded numbers of examples, so the suite stays qui
 from __future__ import annotations
 
 import csv
+import errno
 import io
 import json
 import os
@@ -801,3 +802,102 @@ def test_mutated_mcaps_are_read_or_refused(
     tmp_path_factory: pytest.TempPathFactory, data: bytes
 ) -> None:
     _identify_with_bag(tmp_path_factory.mktemp("bag"), data, ".mcap")
+
+
+# ---- names drawn on charts, output streams that fail, command-line values ------------------
+
+# Text a stranger may put in a name: TeX and mathtext syntax, markup, line breaks, controls,
+# bidi and format characters, astral characters.
+_NAME_CHARS = st.sampled_from(
+    [*"$\\{}^_#%&~|[]()<>*`'\" \t\n\r", "\x1b", "\x85", "\u2028", "\u202e", "\u200d"]
+) | st.characters(codec="utf-8")  # no lone surrogate: UTF-8 cannot hold one
+_NAMES = st.text(_NAME_CHARS, min_size=1, max_size=40).filter(lambda n: n.strip() == n and n)
+
+
+@FUZZ
+@given(names=st.lists(_NAMES, min_size=4, max_size=4, unique=True))
+def test_any_names_are_drawn_on_every_chart(
+    tmp_path_factory: pytest.TempPathFactory, names: list[str]
+) -> None:
+    from solver import load_team, solve
+    from solver.reporting.plot import bars_figure, figure_bytes, matrix_figure, radar_figure
+
+    folder = tmp_path_factory.mktemp("chart")
+    quoted = [json.dumps(name) for name in names]  # a JSON string is a YAML string
+    (folder / "rules.yaml").write_text(
+        f"name: {quoted[0]}\nteam_key: kind\ncharacteristics:\n"
+        f"  kind:\n    label: {quoted[1]}\n    values: [{quoted[2]}, {quoted[3]}]\n"
+        f"  count:\n    label: {quoted[0]}\n    range: {{min: 1, max: 3}}\n"
+        f"    components:\n      - {{name: {quoted[3]}, min: 1, max: 3, cluster_size: 1}}\n",
+        encoding="utf-8",
+    )
+    (folder / "team.yaml").write_text(
+        f"name: {quoted[1]}\nrules: rules.yaml\nteam:\n  {quoted[2]}: {{}}\n  {quoted[3]}: {{}}\n",
+        encoding="utf-8",
+    )
+    try:
+        solution = solve(load_team(folder / "team.yaml"))
+    except SolverError:
+        return  # a name the rules refuse (a duplicate once stripped, say) is a located error
+    for draw in (radar_figure, bars_figure, matrix_figure):
+        assert figure_bytes(draw(solution), "svg")
+
+
+class _FailingStream(io.StringIO):
+    """Standard output that fails as a closed descriptor or a full disk does."""
+
+    def __init__(self, error: int) -> None:
+        super().__init__()
+        self.error = error
+
+    def write(self, text: str) -> int:  # noqa: ARG002 (nothing is written)
+        raise OSError(self.error, os.strerror(self.error))
+
+    def flush(self) -> None:
+        raise OSError(self.error, os.strerror(self.error))
+
+
+@FUZZ
+@given(
+    data=mutations(
+        (TEAMS / "case3.yaml").read_bytes().replace(b"rules: ../paper.yaml", b"rules: rules.yaml")
+    ),
+    error=st.sampled_from([errno.EBADF, errno.ENOSPC, errno.EPIPE]),
+)
+def test_mutated_team_files_onto_a_failing_output_never_reach_a_traceback(
+    tmp_path_factory: pytest.TempPathFactory,
+    monkeypatch: pytest.MonkeyPatch,
+    data: bytes,
+    error: int,
+) -> None:
+    folder = tmp_path_factory.mktemp("team")
+    with_paper_rules(folder)
+    team = folder / "team.yaml"
+    team.write_bytes(data)
+    for args in _fuzz_commands(folder, team):
+        with monkeypatch.context() as patched:
+            patched.setattr(sys, "stdout", _FailingStream(error))
+            status = run_main(*args)
+        # A broken pipe ends quietly (0); a closed or full output ends with status 2; a
+        # command that wrote nothing to standard output ends as it would have.
+        assert status in (0, 1, 2), args
+
+
+@FUZZ
+@given(
+    name=st.sampled_from(["kinematic_type", "sensor_count", "sensor_type", "x"]),
+    value=st.builds(
+        lambda head, tail: f"{head}\nFORGED{tail}",
+        st.text(_NAME_CHARS, max_size=100) | st.just("9" * 5000),
+        st.text(_NAME_CHARS, max_size=100),
+    ),
+)
+def test_any_command_line_value_is_answered_on_lines_of_its_own(
+    capsys: pytest.CaptureFixture[str], name: str, value: str
+) -> None:
+    status = run_main("assign", "-t", "case3", f"{name}={value}")
+    out, err = capsys.readouterr()
+    assert status in (0, 2)
+    assert len(out + err) < 5_000  # the value is echoed cut short
+    assert not any(line.lstrip().startswith("FORGED") for line in (out + err).splitlines())
+    assert not any(char in out + err for char in ("\x1b", "\x85", "\u2028", "\u202e"))

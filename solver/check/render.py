@@ -122,8 +122,9 @@ _SARIF_BRACKET = re.compile(r"(\\*)([\[\]])")
 
 
 def sarif_text(text: str) -> str:
-    """``text`` as a SARIF plain-text message: brackets escaped, so it holds no link."""
-    return _SARIF_BRACKET.sub(lambda m: m.group(1) * 2 + "\\" + m.group(2), text)
+    """``text`` as a SARIF plain-text message: one line of printable characters (a viewer may
+    be a terminal: :func:`~solver.untrusted.shown`), brackets escaped, so it holds no link."""
+    return _SARIF_BRACKET.sub(lambda m: m.group(1) * 2 + "\\" + m.group(2), shown(text, limit=None))
 
 
 def sarif_data(report: Report) -> dict[str, Any]:

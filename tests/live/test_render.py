@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 
 from solver.core.solution import Solution
+from solver.errors import Fault, Location, SolverError
 from solver.identify.identification import IdentificationCache
 from solver.identify.profile import Profile
 from solver.live.discovery import RobotSource
@@ -132,3 +133,35 @@ def test_text_lines_for_every_kind(solution: Solution, profile: Profile) -> None
     assert text_lines(SelectionChanged(8, Request(), None)) == [
         "selection       no active robot (set /teleop_ui/active_robot)"
     ]
+
+
+def test_text_events_show_names_from_the_graph_on_their_own_line(
+    solution: Solution, profile: Profile
+) -> None:
+    # A namespace, a robot name and a requested value from the graph, each holding a line
+    # break, a bidi control or a megabyte: one line per event line, escaped, cut short.
+    namespace = "/uav1\nselection       FORGED\u202e"
+    source = RobotSource(namespace, f"{namespace}/robot_description", None, ())
+    text = drone_text().replace('name="', 'name="x\nFORGED' + "N" * 1_000_000, 1)
+    robot = identify_robot(
+        source, text, cache=IdentificationCache(), solution=solution, profile=profile
+    )
+    request = Request(namespace, "Flight\nFORGED\x1b[2J")
+    selection = select(request, {namespace: robot}, solution, profile)
+    # A robot's error is its faults, one per line: each escaped when it was made.
+    faults = [Fault(Location("a\nFORGED.urdf", 1), "bad\nFORGED"), Fault(Location("b", 2), "x")]
+    broken = LiveRobot(namespace, None, (), error=str(SolverError(faults)))
+    events = [
+        RobotAdded(1, robot),
+        RobotAdded(2, broken),
+        RobotRemoved(3, namespace),
+        SelectionChanged(4, request, selection),
+        MasterLost(5, URI + "\nFORGED", "gone\nFORGED"),
+        Synced(6, URI, (namespace,)),
+    ]
+    rendered = "".join(render_event(event, solution, "text") for event in events)
+    lines = rendered.splitlines()
+    assert not any(line.lstrip().startswith("FORGED") for line in lines)
+    assert not any(char in rendered for char in ("\u202e", "\x1b"))
+    assert len(rendered) < 10_000
+    assert "... (cut from 1,000,0" in rendered

@@ -115,3 +115,51 @@ def test_export_command_prints_the_model(capsys: pytest.CaptureFixture[str]) -> 
     out = capsys.readouterr().out
     assert "motion_control_Waypoint" in out
     assert out.startswith("namespace Team\n")
+
+
+# ---- names that are UVL syntax, keywords or collide are written safely ---------------------
+
+HOSTILE_RULES = r"""name: hostile
+team_key: mandatory
+characteristics:
+  mandatory:
+    values: ["UAV\nconstraints\n    Team", "a {abstract}", "x\" | y", "kind.UGV", "50%"]
+  "a b {abstract}":
+    values: [u, "u_", "é ロボ", Team, "constraints", "é.\"%\nx"]
+  Team:
+    values: ["1", "2"]
+constraints:
+  - name: "a name\nconstraints\n    !Team"
+    when: {mandatory: ["a {abstract}"]}
+    require: {"a b {abstract}": [u, "é ロボ"]}
+"""
+HOSTILE_TEAM = r"""name: hostile team
+rules: rules.yaml
+team:
+  "UAV\nconstraints\n    Team": {}
+  "a {abstract}": {}
+  "x\" | y": {"a b {abstract}": ["u_", Team, "é.\"%\nx"]}
+  "kind.UGV": {}
+  "50%": {Team: ["2"]}
+"""
+
+
+def test_names_that_are_uvl_syntax_add_no_feature_or_constraint(tmp_path: Path) -> None:
+    from flamapy.metamodels.fm_metamodel.transformations import UVLReader
+
+    (tmp_path / "rules.yaml").write_text(HOSTILE_RULES, encoding="utf-8")
+    (tmp_path / "team.yaml").write_text(HOSTILE_TEAM, encoding="utf-8")
+    team = load_team(tmp_path / "team.yaml")
+    text = team_to_uvl(team)
+    assert "\nconstraints\n" in text
+    assert text.count("\nconstraints\n") == 1  # no name opened a second section
+    model_file = tmp_path / "m.uvl"
+    # flamapy's own reader: the features are the root, one per characteristic and one per
+    # value, all distinct; its count of configurations is ours.
+    assert flamapy_count(text, model_file) == solve(team).totals.valid_robots
+    features = [feature.name for feature in UVLReader(str(model_file)).transform().get_features()]
+    values = sum(len(c.values) for c in team.rules.characteristics)
+    assert len(features) == len(set(features)) == 1 + len(team.rules.characteristics) + values
+    assert '"mandatory"' in text  # a keyword is quoted
+    # Exact where no plain identifier fits; what a quoted UVL name cannot hold is encoded.
+    assert '"a b {abstract}_é%2E%22%25%0Ax"' in text

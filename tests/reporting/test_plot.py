@@ -516,3 +516,103 @@ def test_solve_can_plot_the_component_matrix(tmp_path: Path) -> None:
     svg = (tmp_path / "m.svg").read_bytes()
     assert svg.startswith(b"<?xml")
     assert svg == figure_bytes(matrix_figure(solve(load_team("case3"))), "svg")
+
+
+# ---- names are drawn as written, never parsed as mathtext or TeX ----------------------------
+
+# What made matplotlib's mathtext raise (issue 30.1): TeX commands that read files, unknown
+# commands, 95 nested braces, stacked superscripts; and a newline, shown as its escape.
+TEX_NAMES = (
+    r"$\input{/etc/passwd}$",
+    r"$\foo{x}$",
+    "$" + "{" * 95 + "x" + "}" * 95 + "$",
+    "$x^{^{^2}}$",
+    r"$\sqrt{\frac{1}{0}}$",
+    "a$b",
+    "c\\$",
+    "two\nlines",
+)
+TEX_RULES = f"""\
+name: '{TEX_NAMES[1]}'
+team_key: kind
+characteristics:
+  kind:
+    label: '{TEX_NAMES[0]}'
+    values: ['{TEX_NAMES[2]}', '{TEX_NAMES[3]}', "two\\nlines"]
+  control:
+    label: '{TEX_NAMES[4]}'
+    values: ['{TEX_NAMES[0]}', '{TEX_NAMES[5]}', '{TEX_NAMES[6]}']
+    components:
+      - {{name: '{TEX_NAMES[3]}', values: ['{TEX_NAMES[0]}', '{TEX_NAMES[5]}']}}
+      - {{name: '{TEX_NAMES[6]}', values: ['{TEX_NAMES[6]}']}}
+"""
+TEX_TEAM = f"""\
+name: '{TEX_NAMES[4]}'
+rules: tex.yaml
+team:
+  '{TEX_NAMES[2]}': {{}}
+  '{TEX_NAMES[3]}': {{control: ['{TEX_NAMES[0]}']}}
+  "two\\nlines": {{}}
+"""
+
+
+@pytest.fixture
+def tex_team(write_file: Callable[[str, str], Path]) -> Path:
+    write_file("tex.yaml", TEX_RULES)
+    return write_file("tex-team.yaml", TEX_TEAM)
+
+
+def _svg_texts(figure: Figure) -> str:
+    """Every text of the figure as the SVG holds it when text is kept as text."""
+    import io
+    import re
+    from html import unescape
+
+    import matplotlib
+
+    buffer = io.BytesIO()
+    with matplotlib.rc_context({"svg.fonttype": "none"}):
+        figure.savefig(buffer, format="svg")
+    found = re.findall(r"<text[^>]*>(.*?)</text>", buffer.getvalue().decode(), flags=re.S)
+    return "\n".join(unescape(re.sub(r"<[^>]+>", "", text)) for text in found)
+
+
+@pytest.mark.parametrize("draw", [radar_figure, bars_figure, matrix_figure])
+def test_every_chart_draws_tex_like_names_as_written(
+    draw: Callable[[Solution], Figure], tex_team: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    import matplotlib
+
+    # Whatever a matplotlibrc says: no TeX run, no mathtext parsed.
+    monkeypatch.setitem(matplotlib.rcParams, "text.usetex", True)
+    monkeypatch.setitem(matplotlib.rcParams, "text.parse_math", True)
+    figure = draw(solve(load_team(tex_team)))
+    for fmt in ("png", "svg", "pdf"):
+        assert figure_bytes(figure, fmt)
+    # (findobj makes the axes' lazy ticks, empty texts never drawn: those are left out.)
+    texts = [t for t in figure.findobj(Text) if t.get_text()]
+    assert texts
+    assert all(not t.get_usetex() and not t.get_parse_math() for t in texts)
+    drawn = _svg_texts(figure)
+    assert r"$\sqrt{\frac{1}{0}}$" in drawn  # the team's name, in every chart's title
+    assert "two\\nlines" in drawn or draw is matrix_figure
+    assert "two\nlines" not in drawn
+
+
+def test_radar_draws_every_tex_like_value_as_written(tex_team: Path) -> None:
+    figure = radar_figure(solve(load_team(tex_team)))
+    figure_bytes(figure, "png")
+    drawn = _svg_texts(figure)
+    for name in (r"$\input{/etc/passwd}$", "$x^{^{^2}}$", "a$b", "c\\$", r"$\foo{x}$"):
+        assert name in drawn
+
+
+def test_reports_and_batch_reports_draw_tex_like_names(tex_team: Path, tmp_path: Path) -> None:
+    from solver.cli import main
+
+    assert main(["report", str(tex_team), "-o", str(tmp_path / "r.html")]) == 0
+    assert main(["report", str(tex_team), "-o", str(tmp_path / "r.md")]) == 0
+    out = tmp_path / "batch"
+    assert main(["batch", str(tex_team), "-o", str(out), "--report", "html"]) == 0
+    for page in (tmp_path / "r.html", *out.rglob("*.html")):
+        assert r"$\sqrt{\frac{1}{0}}$" in page.read_text(encoding="utf-8")

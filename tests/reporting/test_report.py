@@ -405,3 +405,64 @@ def test_html_report_has_contents_and_folds_long_tables(case3_html: str) -> None
     # 103 configuration rows and 60 layout thumbnails are folded; the 4 selections are not.
     assert case3_html.count("<details>") == 2
     assert "<summary>show all 103 rows</summary>" in case3_html
+
+
+# ---- a line break in a name injects nothing ---------------------------------------------------
+
+FORGING_RULES = r"""name: "rules\n# FORGED rules heading"
+characteristics:
+  kinematic_type:
+    label: "Type\n## FORGED label"
+    values: ["UAV\n# FORGED heading\u202e", "UGV\r\n- FORGED item"]
+  s:
+    label: "S\u2028# FORGED"
+    values: ["a\n\n# FORGED", "b\u2029===\nFORGED"]
+"""
+FORGING_TEAM = r"""name: "Team\n# FORGED team heading"
+description: "line one\n# FORGED description heading\n- FORGED item"
+rules: r.yaml
+team:
+  "UAV\n# FORGED heading\u202e": {}
+  "UGV\r\n- FORGED item": {}
+"""
+
+
+def _forging_solution(write_file: Callable[[str, str], Path]) -> Solution:
+    write_file("r.yaml", FORGING_RULES)
+    return solve(load_team(write_file("t.yaml", FORGING_TEAM)))
+
+
+def test_a_line_break_in_a_name_adds_no_heading_or_list_to_a_markdown_report(
+    write_file: Callable[[str, str], Path],
+) -> None:
+    text = render_markdown(_forging_solution(write_file))
+    tokens = MarkdownIt("commonmark").enable("table").parse(text)
+    headings = [
+        tokens[i + 1].content for i, token in enumerate(tokens) if token.type == "heading_open"
+    ]
+    # The page's title (the team's name, on its one line) and its own sections: nothing else.
+    assert headings[0] == "Team # FORGED team heading"
+    assert not any("FORGED" in heading for heading in headings[1:])
+    assert not any(
+        "FORGED" in tokens[i + 2].content
+        for i, token in enumerate(tokens)
+        if token.type == "list_item_open"
+    )
+    # The description keeps its lines as text: none became a heading or an item.
+    paragraphs = [
+        tokens[i + 1].content for i, token in enumerate(tokens) if token.type == "paragraph_open"
+    ]
+    assert any("FORGED description heading" in paragraph for paragraph in paragraphs)
+    for char in ("\u202e", "\u2028", "\u2029", "\r"):
+        assert char not in text
+
+
+def test_an_html_report_shows_line_breaks_and_bidi_controls_as_escapes(
+    write_file: Callable[[str, str], Path],
+) -> None:
+    html = render_html(_forging_solution(write_file))
+    for char in ("\u202e", "\u2028", "\u2029", "\r"):
+        assert char not in html
+    page = _page(html)
+    assert "Team\\n# FORGED team heading" in page.text
+    assert "UAV\\n# FORGED heading\\u202e" in page.text
