@@ -24,6 +24,9 @@ PRIVATE_SIGNALS = {
     # Raised by the bounded XML-RPC transport, turned into MasterError (ReplyTooLarge) by the
     # master client that called it.
     "solver.live.rpc.OversizedReply",
+    # Raised by the command line's output streams when they fail (closed, full, a pipe whose
+    # reader left) and ended by solver.cli.main: no SolverError, which commands may catch.
+    "solver.cli._terminal.OutputFailed",
 }
 # Modules whose import needs an optional extra that may be absent.
 OPTIONAL = ("solver.live.sources.ros2",)

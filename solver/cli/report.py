@@ -7,6 +7,7 @@ import sys
 from typing import Any
 
 from solver.cli._common import add_rules, load_team_argument
+from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
 
 def register(subparsers: Any) -> None:
@@ -43,5 +44,5 @@ def run(args: argparse.Namespace) -> int:
     report_format(args.output)  # an unusable file name fails before any solving
     solution = solve(load_team_argument(args.team, args.rules))
     for path in write_report(solution, args.output):
-        print(f"wrote {path}", file=sys.stderr)
+        print(f"wrote {shown(str(path), limit=SHOWN_FILE_NAME_CHARS)}", file=sys.stderr)
     return 0

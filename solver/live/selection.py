@@ -23,7 +23,7 @@ Not here: reading or writing the master (:mod:`solver.live.watcher`).
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
@@ -136,7 +136,7 @@ def choose(
         if offered:
             notes.append(
                 f"{shown(robot.namespace)} does not offer {name} {shown(value, quoted=True)} "
-                f"(it has {', '.join(shown(o) for o in offered)}); using it as asked"
+                f"(it has {_listed(offered)}); using it as asked"
             )
         candidates = [{**c, name: value} for c in candidates] or [{name: value}]
     unique = {tuple((n, c[n]) for n in rules.names if n in c): c for c in candidates}
@@ -146,9 +146,9 @@ def choose(
         for name in rules.names:
             options = list(dict.fromkeys(c.get(name) for _, c in ordered))
             if len(options) > 1:
-                listed = ", ".join(shown(str(option)) for option in options)
                 notes.append(
-                    f"{shown(robot.namespace)} has several {name} values ({listed}): using "
+                    f"{shown(robot.namespace)} has several {name} values ({_listed(options)}): "
+                    "using "
                     f"{shown(chosen.get(name))}; give {name} to choose"
                 )
                 break
@@ -156,6 +156,11 @@ def choose(
     if assignment is None:
         assignment = assign(solution, dict(chosen_key))
     return assignment, tuple(notes)
+
+
+def _listed(values: Iterable[object]) -> str:
+    """Values from a robot, each shown cut short (:func:`~solver.untrusted.shown`)."""
+    return ", ".join(shown(str(value)) for value in values)
 
 
 def requested_values(

@@ -276,11 +276,17 @@ def literal_text() -> Iterator[None]:
     """Within this block, matplotlib draws every text as written (see the module docstring).
 
     Both building a figure and rendering it need it: a text takes its ``parse_math`` and
-    ``usetex`` when it is made, and tick labels are made when the figure is drawn.
+    ``usetex`` when it is made, and tick labels are made when the figure is drawn. What a
+    stranger's name can make matplotlib say about itself (a glyph no font has, labels too
+    long for the margins) is not printed as a Python warning: the chart is drawn regardless.
     """
+    import warnings
+
     import matplotlib
 
-    with matplotlib.rc_context(_LITERAL_TEXT):
+    with matplotlib.rc_context(_LITERAL_TEXT), warnings.catch_warnings():
+        warnings.filterwarnings("ignore", "Glyph .* missing from", UserWarning)
+        warnings.filterwarnings("ignore", "Tight layout not applied", UserWarning)
         yield
 
 
@@ -726,8 +732,11 @@ def figure_bytes(figure: Figure, fmt: str) -> bytes:
         fmt
     ]
     buffer = io.BytesIO()
-    with matplotlib.rc_context(
-        {"svg.hashsalt": "teleop-ui", "svg.fonttype": "path", "pdf.fonttype": 42, **_LITERAL_TEXT}
+    with (
+        literal_text(),
+        matplotlib.rc_context(
+            {"svg.hashsalt": "teleop-ui", "svg.fonttype": "path", "pdf.fonttype": 42}
+        ),
     ):
         figure.savefig(buffer, format=fmt, dpi=PNG_DPI, metadata=metadata, facecolor="white")
     return buffer.getvalue()
