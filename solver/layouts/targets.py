@@ -131,6 +131,7 @@ def target(name: str) -> Target:
     found = TARGETS.get(name)
     if found is None:
         raise InputError.at(
-            "--format", f"unknown layout format {shown(name, quoted=True)}; known: " + ", ".join(TARGETS)
+            "--format",
+            f"unknown layout format {shown(name, quoted=True)}; known: " + ", ".join(TARGETS),
         )
     return found
