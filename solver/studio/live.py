@@ -65,14 +65,17 @@ class LiveFeed:
     def start(self) -> None:
         self._thread.start()
 
-    def stop(self) -> None:
+    def stop(self, *, wait: bool = True) -> None:
+        """Stop watching; the event streams of pages end at once. ``wait``: until the watcher's
+        thread has ended (a signal handler does not wait)."""
         self._stop.set()
         with self._changed:
             watcher = self._watcher
             self._changed.notify_all()
         if watcher is not None:
             watcher.stop("the studio stops")
-        self._thread.join(timeout=10)
+        if wait and self._thread.is_alive():
+            self._thread.join(timeout=10)
 
     @property
     def stopped(self) -> bool:

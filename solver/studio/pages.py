@@ -31,6 +31,7 @@ from solver.errors import Fault, InputError, SolverError
 from solver.studio.api import read_uploads
 from solver.studio.selection import SELECTION_FILE
 from solver.studio.service import CHART_KINDS, MAX_PAGE, Chosen, Studio, robot_pairs
+from solver.untrusted import shown
 
 __all__ = ["routes", "selection_pairs"]
 
@@ -268,7 +269,10 @@ def _type_controls(page: Page, view: str) -> list[TypeControl]:
                             chosen_values is None or str(value) in chosen_values,
                             ""
                             if str(value) not in reasons
-                            else reasons[str(value)].describe().partition(", ")[2],
+                            else " and ".join(
+                                f"{shown(c.name, quoted=True)} ({c.location})"
+                                for c in reasons[str(value)].constraints
+                            ),
                         )
                         for value in characteristic.values
                     ),

@@ -10,8 +10,12 @@ Not here: the application (:mod:`solver.studio.app`).
 from __future__ import annotations
 
 import secrets
+import signal
 import socket
 from collections.abc import Callable
+from typing import Any
+
+import uvicorn
 
 from solver.errors import InputError
 from solver.studio.security import loopback
@@ -56,9 +60,7 @@ def serve(
     announce: Callable[[str], None],
     open_browser: bool = False,
 ) -> None:
-    """Serve ``studio`` on ``sock`` until interrupted (SIGINT, SIGTERM)."""
-    import uvicorn
-
+    """Serve ``studio`` on ``sock`` until interrupted (SIGINT, SIGTERM), then return."""
     from solver.studio.app import make_app
 
     port = int(sock.getsockname()[1])
@@ -74,10 +76,40 @@ def serve(
         timeout_graceful_shutdown=3,
         server_header=False,
     )
-    server = uvicorn.Server(config)
+    server = _Server(config, studio)
     announce(url)
     if open_browser:
         import webbrowser
 
         webbrowser.open(url)
-    server.run(sockets=[sock])
+    # uvicorn stops on SIGINT and SIGTERM, then raises the signal again for the handler that was
+    # there before: ours ends the serving as Ctrl-C does, so the caller's clean-up runs.
+    previous = signal.signal(signal.SIGTERM, _stopped)
+    try:
+        server.run(sockets=[sock])
+    except (_Stopped, KeyboardInterrupt):
+        pass
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+
+
+class _Server(uvicorn.Server):
+    """uvicorn's server, which also ends the pages' event streams when asked to stop: they
+    would otherwise hold its graceful shutdown open until the timeout."""
+
+    def __init__(self, config: uvicorn.Config, studio: Studio) -> None:
+        super().__init__(config)
+        self.studio = studio
+
+    def handle_exit(self, sig: int, frame: Any) -> None:
+        if self.studio.live is not None:
+            self.studio.live.stop(wait=False)
+        super().handle_exit(sig, frame)
+
+
+class _Stopped(Exception):
+    """SIGTERM arrived: the studio stops as after Ctrl-C."""
+
+
+def _stopped(*_: object) -> None:
+    raise _Stopped

@@ -8,6 +8,7 @@ answers for the same team files, never the studio's own.
 from __future__ import annotations
 
 import json
+import re
 from collections.abc import Iterable
 from pathlib import Path
 from urllib.parse import parse_qsl, urlsplit
@@ -415,3 +416,55 @@ def test_a_change_and_its_undo_are_made_with_the_keyboard_alone(
     page.keyboard.press("Enter")
     expect(page.locator("#total-robots")).to_have_text("30")
     expect(waypoint).to_be_checked()
+
+
+def test_values_the_rules_exclude_are_shown_disabled_with_the_reason(
+    start_studio: StartStudio, page: Page
+) -> None:
+    server = start_studio("rules/extended.yaml")
+    page.goto(server.url)
+    page.locator("legend").get_by_label("UAV", exact=True).check()
+    walking = page.locator('fieldset[data-key="UAV.motion_control"]').get_by_label(
+        "Walking", exact=True
+    )
+    expect(walking).to_be_disabled()
+    why = page.locator(f"#{walking.get_attribute('aria-describedby')}")
+    expect(why).to_have_text(
+        "excluded by 'Walking is for legged robots' (rules/extended.yaml:60:5)"
+    )
+    flight = page.locator('fieldset[data-key="UAV.motion_control"]').get_by_label(
+        "Flight", exact=True
+    )
+    expect(flight).to_be_enabled()
+
+
+def test_the_radar_chart_is_redrawn_for_the_new_selection_and_an_export_reads_back(
+    start_studio: StartStudio, page: Page, tmp_path: Path
+) -> None:
+    server = start_studio("case2")
+    page.goto(server.url)
+    radar = page.locator("#radar")
+    expect(radar).to_have_attribute("src", re.compile("UGV.sensor_count.max=10"))
+    page.locator('fieldset[data-key="UGV.sensor_type"]').get_by_label(
+        "Speaker", exact=True
+    ).uncheck()
+    # UGV: 2 motion controls x 3 sensor types x 10 counts (Microphone keeps audio).
+    expect(page.locator("#total-robots")).to_have_text("90")
+    expect(radar).not_to_have_attribute("src", re.compile("UGV.sensor_type=Speaker"))
+    assert radar.evaluate("(image) => image.decode().then(() => image.naturalWidth)") > 0
+    chosen = parse_qsl(urlsplit(page.url).query)
+
+    # The exported file, imported again, is the same selection.
+    page.get_by_role("link", name="Export").click()
+    with page.expect_download() as download:
+        page.get_by_role("link", name="Team YAML").click()
+    exported = tmp_path / "team.yaml"
+    download.value.save_as(exported)
+    assert "  UGV:   # 60 valid robots, 12 UI configurations\n" in exported.read_text(
+        encoding="utf-8"
+    )
+    page.get_by_role("link", name="Selection").click()
+    page.get_by_label("Import a team file").set_input_files(exported)
+    page.get_by_role("button", name="Import team").click()
+    expect(page.locator("#total-robots")).to_have_text("90")
+    assert sorted(parse_qsl(urlsplit(page.url).query)) == sorted(chosen)
