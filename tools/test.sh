@@ -25,7 +25,9 @@ if ! command -v roscore >/dev/null 2>&1; then
     ros-core
 fi
 
-# chromium: tests/layouts/test_preview.py screenshots the layout previews in headless Chromium.
+# chromium: tests/layouts/test_preview.py screenshots the layout previews in headless Chromium;
+# tests/studio drive it through Playwright (the test extra) at /usr/bin/chromium, never a
+# browser Playwright would download.
 if ! command -v chromium >/dev/null 2>&1; then
   apt_install "headless Chromium, for the tests of what a person looks at (layout previews, \
 report thumbnails, the studio)" chromium chromium-driver
