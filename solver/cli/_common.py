@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 from typing import TYPE_CHECKING
 
@@ -72,7 +73,15 @@ def add_engine(parser: argparse.ArgumentParser, *, enumerate_only: bool = False)
 
 
 def positive(text: str) -> int:
-    """An argparse type: a whole number of at least 1 (``100000000`` or ``100_000_000``)."""
+    """An argparse type: a whole number of at least 1 (``100000000`` or ``100_000_000``), in
+    ASCII digits (``int`` reads ``٣`` as 3) and at most 18 of them (``int`` of 4,300 raises)."""
+    from solver.untrusted import shown
+
+    digits = text.strip().lstrip("+").replace("_", "")
+    if digits.isdecimal() and (not digits.isascii() or len(digits) > 18):
+        raise argparse.ArgumentTypeError(
+            f"expected a whole number of at most 18 digits 0-9, got {shown(text, quoted=True)}"
+        )
     try:
         number = int(text)
     except ValueError:
@@ -157,7 +166,7 @@ def team_path(text: str) -> Path:
     from solver.errors import InputError
 
     path = resolve_team_path(text)
-    if not path.exists() and not path.suffix and path.name == text:
+    if not os.path.exists(path) and not path.suffix and path.name == text:
         # A bare word is a shipped team's name or a typo of one: say which names exist.
         names = sorted(team.stem for team in shipped_path("teams").glob("*.yaml"))
         raise InputError.at(

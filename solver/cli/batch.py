@@ -83,22 +83,17 @@ def register(subparsers: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from pathlib import Path
-
-    from solver.errors import InputError
+    from solver.files.atomic import make_folder
     from solver.reporting.batch import find_teams, plan, run_batch, write_summary
     from solver.reporting.render import text_table
 
-    out = Path(args.output)
-    if out.exists() and not out.is_dir():
-        raise InputError.at(args.output, "is not a folder")
     if args.rules is not None:
         from solver.core.rules import load_rules
 
         load_rules(args.rules)  # a bad override would fail every team: say so once
-    jobs = plan(
-        find_teams(args.patterns), out, rules=args.rules, report=args.report, force=args.force
-    )
+    teams = find_teams(args.patterns)
+    out = make_folder(args.output)
+    jobs = plan(teams, out, rules=args.rules, report=args.report, force=args.force)
     show = _progress_bar if sys.stderr.isatty() else _progress_lines
     outcomes = list(show(run_batch(jobs, args.jobs), len(jobs), sys.stderr))
     rows, written = write_summary(outcomes, jobs, out)

@@ -21,6 +21,7 @@ from solver.core.partition import Configuration
 from solver.core.rules import Characteristic, RuleSet
 from solver.core.solution import Solution
 from solver.errors import InputError, did_you_mean
+from solver.files.reader import MAX_NAME_CHARS
 from solver.untrusted import shown
 
 __all__ = ["Assignment", "assign", "check_names", "parse_combination"]
@@ -48,6 +49,10 @@ class Assignment:
         return f"<Assignment {self.number} for {given}>"
 
 
+# Whole numbers of a rule set are at most this many bits (solver.files.yamlio refuses more).
+_MAX_INT_BITS = 63
+
+
 def parse_combination(pairs: list[str] | tuple[str, ...]) -> dict[str, str]:
     """``["kinematic_type=UAV", "sensor_count=3"]`` -> a mapping; :class:`InputError` if bad."""
     combination: dict[str, str] = {}
@@ -59,6 +64,15 @@ def parse_combination(pairs: list[str] | tuple[str, ...]) -> dict[str, str]:
             )
         if name.strip() in combination:
             raise InputError.at("<arguments>", f"{shown(name.strip(), quoted=True)} is given twice")
+        if len(value.strip()) > MAX_NAME_CHARS:
+            # No value of a rule set is longer (names are at most this long, whole numbers 63
+            # bits); int() of a 5,000-digit one would raise.
+            raise InputError.at(
+                "<arguments>",
+                f"a value of {len(value.strip()):,} characters; no characteristic value is "
+                f"longer than {MAX_NAME_CHARS}",
+                path=name.strip(),
+            )
         if any(char.isdecimal() and not char.isascii() for char in value):
             # int() reads '٣' as 3; a command line value is written in ASCII digits or refused.
             raise InputError.at(
@@ -96,6 +110,12 @@ def assign(
     combination = {**(combination or {}), **by_name}
     rules = solution.rules
     check_names(rules, combination)
+    for name, given_value in combination.items():
+        if isinstance(given_value, int) and given_value.bit_length() > _MAX_INT_BITS:
+            # str() of a number of more than 4,300 digits raises; none is a value anyway.
+            raise InputError.at(
+                "<arguments>", "a whole number too large to be a value (63 bits)", path=name
+            )
     given = tuple(
         (c.name, str(combination[c.name])) for c in rules.characteristics if c.name in combination
     )

@@ -246,8 +246,8 @@ class Characteristic:
         if self.kind == "integer":
             # ASCII digits only: int() also reads "٣" (Arabic-Indic three) and "1_0" as numbers,
             # which no one typing a robot's characteristics means.
-            if _WHOLE_NUMBER.fullmatch(text.strip()) is None:
-                return None
+            if _WHOLE_NUMBER.fullmatch(text.strip()) is None or len(text.strip()) > 20:
+                return None  # more digits than 63 bits hold: no value (int() of 4,300 raises)
             number = int(text.strip())
             return number if self.index(number) is not None else None
         return text if text in self.positions else None

@@ -127,10 +127,12 @@ def full_team(rules: RuleSet) -> Team:
 def resolve_team_path(text: str) -> Path:
     """A team file path as given, or the name of a shipped team (``case3``) when no such file."""
     path = Path(text)
-    if path.exists() or path.suffix:
+    # os.path's probes, not Path's: a name the system refuses (too long) is "not there" to
+    # them, where Path's raise; reading the file then says what is wrong with it.
+    if os.path.exists(path) or path.suffix:
         return path
     shipped = shipped_path("teams", f"{text}.yaml")
-    return shipped if shipped.is_file() else path
+    return shipped if os.path.isfile(shipped) else path
 
 
 def load_team(

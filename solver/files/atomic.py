@@ -13,13 +13,32 @@ from __future__ import annotations
 import contextlib
 import os
 import shutil
+import stat
 import tempfile
 from collections.abc import Mapping
 from pathlib import Path
 
 from solver.errors import Fault, InputError, Location
+from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
-__all__ = ["write_all_atomic", "write_atomic"]
+__all__ = ["make_folder", "write_all_atomic", "write_atomic"]
+
+
+def make_folder(path: str | Path) -> Path:
+    """``path`` as a folder to write into, made with its parents when missing;
+    :class:`InputError` when it cannot be one (a file is there, a name is too long, ...)."""
+    folder = Path(path)
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except FileExistsError:
+        raise InputError.at(
+            _shown(path), "is not a folder: give a folder to write into", code="bad-output"
+        ) from None
+    except OSError as error:
+        raise InputError.at(
+            _shown(path), f"cannot make this folder: {error.strerror or error}", code="bad-output"
+        ) from None
+    return folder
 
 
 def write_atomic(path: str | Path, content: str | bytes) -> Path:
@@ -30,7 +49,8 @@ def write_atomic(path: str | Path, content: str | bytes) -> Path:
 def write_all_atomic(files: Mapping[str | Path, str | bytes]) -> list[Path]:
     """Write every file of ``files`` or none; the paths written, in the mapping's order.
 
-    Every target is checked first (a folder in the way is reported for all of them at once),
+    Every target is checked first (a folder, device, pipe or socket in the way is reported
+    for all of them at once: renaming onto ``/dev/full`` as root would replace the device),
     then every content goes to a temporary file beside its target, and only then are they
     renamed into place. A rename that still fails puts back the files renamed before it.
     """
@@ -44,9 +64,9 @@ def write_all_atomic(files: Mapping[str | Path, str | bytes]) -> list[Path]:
         for path, content in files.items()
     ]
     faults = [
-        Fault(Location(str(target)), "is a folder; cannot write a file there", "invalid")
+        Fault(Location(_shown(target)), problem, "invalid")
         for target, _ in targets
-        if target.is_dir()
+        if (problem := _in_the_way(target))
     ]
     if faults:
         raise InputError(faults)
@@ -62,14 +82,45 @@ def write_all_atomic(files: Mapping[str | Path, str | bytes]) -> list[Path]:
     return [target for target, _ in targets]
 
 
+def _shown(path: str | Path) -> str:
+    return shown(str(path), limit=SHOWN_FILE_NAME_CHARS)
+
+
+def _in_the_way(target: Path) -> str | None:
+    """What is at ``target`` that a file must not replace, if anything.
+
+    A rename replaces whatever has the name: a device (``/dev/full``, as root), or a link such
+    as ``/dev/stdout`` or one planted where an output is expected. Only a regular file is
+    replaced."""
+    try:
+        mode = os.lstat(target).st_mode
+    except (OSError, ValueError):  # nothing there, or a name the write will report
+        return None
+    if stat.S_ISREG(mode):
+        return None
+    if stat.S_ISDIR(mode):
+        return "is a folder; cannot write a file there"
+    if stat.S_ISLNK(mode):
+        return (
+            "is a link; refused: writing would replace the link, not the file it names "
+            "(give that file)"
+        )
+    return "is a device, a pipe or a socket, not a file; refused: writing would replace it"
+
+
 def _temporary(target: Path, data: bytes) -> Path:
     """``data`` in a new temporary file in ``target``'s folder (created if needed)."""
     folder = target.parent if str(target.parent) else Path(".")
     try:
         folder.mkdir(parents=True, exist_ok=True)
-        handle, name = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=folder)
+        # The temporary's name is the target's and 13 more characters: cut, so that a target
+        # name near the system's limit (255 bytes) still has room for one.
+        prefix = f".{target.name[:100]}."
+        handle, name = tempfile.mkstemp(prefix=prefix, suffix=".tmp", dir=folder)
     except OSError as error:
-        raise InputError.at(str(target), f"cannot write here: {error.strerror or error}") from None
+        raise InputError.at(
+            _shown(target), f"cannot write here: {error.strerror or error}"
+        ) from None
     temporary = Path(name)
     try:
         with os.fdopen(handle, "wb") as stream:
@@ -83,7 +134,9 @@ def _temporary(target: Path, data: bytes) -> Path:
         with contextlib.suppress(OSError):
             temporary.unlink()
         if isinstance(error, OSError):
-            raise InputError.at(str(target), f"cannot write: {error.strerror or error}") from None
+            raise InputError.at(
+                _shown(target), f"cannot write: {error.strerror or error}"
+            ) from None
         raise
     return temporary
 
@@ -111,7 +164,7 @@ def _replace_all(temporaries: list[tuple[Path, Path]]) -> None:
                     target.unlink()
         if isinstance(error, OSError):
             raise InputError.at(
-                str(temporaries[len(done)][1]), f"cannot write: {error.strerror or error}"
+                _shown(temporaries[len(done)][1]), f"cannot write: {error.strerror or error}"
             ) from None
         raise
     finally:
@@ -121,9 +174,9 @@ def _replace_all(temporaries: list[tuple[Path, Path]]) -> None:
 
 def _backup(target: Path) -> Path | None:
     """A hard link to (or else a copy of) ``target``'s content; ``None`` if it is no file."""
-    if not target.is_file():
+    if not os.path.isfile(target):
         return None
-    backup = target.with_name(f".{target.name}.{os.getpid()}.old")
+    backup = target.with_name(f".{target.name[:100]}.{os.getpid()}.old")
     _discard(backup)
     try:
         os.link(target, backup)

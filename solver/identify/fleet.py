@@ -84,9 +84,10 @@ def _stem(path: Path) -> str | None:
 def find_descriptions(folder: str | Path) -> tuple[Path, ...]:
     """The robot descriptions directly in ``folder``, in name order."""
     base = Path(folder)
+    name = shown(str(folder), limit=SHOWN_FILE_NAME_CHARS)
     try:
         if not base.is_dir():
-            raise InputError.at(str(folder), "not a folder of robot descriptions", code="fleet")
+            raise InputError.at(name, "not a folder of robot descriptions", code="fleet")
         found = sorted(
             (p for p in base.iterdir() if _stem(p) and _is_robot_file(p)), key=lambda p: p.name
         )
@@ -94,11 +95,11 @@ def find_descriptions(folder: str | Path) -> tuple[Path, ...]:
         # A folder without read or search permission cannot be used at all; an unreadable
         # file in a readable folder is a failed robot instead (identify_fleet).
         raise InputError.at(
-            str(folder), f"cannot list this folder: {error.strerror or error}", code="fleet"
+            name, f"cannot list this folder: {error.strerror or error}", code="fleet"
         ) from None
     if not found:
         raise InputError.at(
-            str(folder),
+            name,
             "no robot descriptions (*.urdf, *.urdf.xacro, *.xacro) in this folder",
             code="fleet",
         )

@@ -6,7 +6,7 @@ from pathlib import Path
 
 from solver.core.partition import Configuration
 from solver.core.solution import Solution
-from solver.files.atomic import write_all_atomic
+from solver.files.atomic import make_folder, write_all_atomic
 from solver.layouts.foxglove import layout_filename
 from solver.layouts.presentation import Presentation
 from solver.layouts.targets import TARGETS, target
@@ -36,5 +36,5 @@ def write_layouts(
         Path(directory) / name: chosen.render(solution, configuration, presentation, file=name)
         for name, configuration in numbered
     }
-    Path(directory).mkdir(parents=True, exist_ok=True)
+    make_folder(directory)
     return write_all_atomic(files)

@@ -44,7 +44,7 @@ from solver.core.rules import Characteristic
 from solver.errors import InputError
 from solver.extras import require
 from solver.files.atomic import write_atomic
-from solver.untrusted import shown
+from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -142,10 +142,10 @@ def plot_format(path: str | Path) -> str:
     """The image format a file name asks for (``png``, ``svg``, ``pdf``); else InputError."""
     suffix = Path(path).suffix.lower().lstrip(".")
     if suffix not in PLOT_FORMATS:
-        shown = f"'.{suffix}'" if suffix else "no extension"
+        given = shown(f".{suffix}", quoted=True) if suffix else "no extension"
         raise InputError.at(
-            str(path),
-            f"cannot tell the plot format from {shown}; name the file .{', .'.join(PLOT_FORMATS)}",
+            shown(str(path), limit=SHOWN_FILE_NAME_CHARS),
+            f"cannot tell the plot format from {given}; name the file .{', .'.join(PLOT_FORMATS)}",
             code="unknown-format",
         )
     return suffix

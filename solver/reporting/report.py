@@ -44,7 +44,7 @@ from solver.reporting.plot import (
     radar_figure,
     runs,
 )
-from solver.untrusted import shown
+from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
 __all__ = [
     "REPORT_FORMATS",
@@ -105,10 +105,10 @@ def report_format(path: str | Path) -> ReportFormat:
     """The report format a file name asks for (``.html``/``.htm``, ``.md``/``.markdown``)."""
     suffix = Path(path).suffix.lower()
     if suffix not in REPORT_FORMATS:
-        named = f"'{suffix}'" if suffix else "no extension"
+        given = shown(suffix, quoted=True) if suffix else "no extension"
         raise InputError.at(
-            str(path),
-            f"cannot tell the report format from {named}; name the "
+            shown(str(path), limit=SHOWN_FILE_NAME_CHARS),
+            f"cannot tell the report format from {given}; name the "
             f"file {', '.join(REPORT_FORMATS)}",
             code="unknown-format",
         )
