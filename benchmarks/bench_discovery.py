@@ -20,7 +20,7 @@ from pytest_benchmark.fixture import BenchmarkFixture
 
 from solver.identify.profile import load_profile
 from solver.live.discovery import RobotSource, discover
-from solver.live.master import Observation
+from solver.live.graph import Observation
 
 IMAGE = "sensor_msgs/Image"
 TWIST = "geometry_msgs/Twist"

@@ -70,9 +70,7 @@ def run(args: argparse.Namespace) -> int:
     from solver.reporting.render import render_assignment
 
     combination = parse_combination(args.combination)
-    if args.ros2:
-        return run_ros2(args, combination)
-    if args.master is not None:
+    if args.ros2 or args.master is not None:
         return run_live(args, combination)
     for option in ("robot", "profile"):
         if getattr(args, option) is not None:
@@ -85,46 +83,28 @@ def run(args: argparse.Namespace) -> int:
 
 
 def run_live(args: argparse.Namespace, combination: dict[str, str]) -> int:
-    from solver.core.solution import solve
-    from solver.identify.profile import load_profile
-    from solver.live.master import master_uri
-    from solver.live.query import assign_from_master
-    from solver.live.render import render_live_assignment
-
-    master = master_uri(args.master)
-    solution = solve(load_team_argument(args.team, args.rules))
-    live = assign_from_master(
-        master,
-        solution,
-        load_profile(args.profile),
-        robot=args.robot,
-        given=combination,
-        timeout=args.timeout,
-    )
-    write(render_live_assignment(live, solution, args.format))
-    return 0
-
-
-def run_ros2(args: argparse.Namespace, combination: dict[str, str]) -> int:
-    from solver.cli.watch import ros2_domain
+    """``assign --master`` and ``assign --ros2``: one question, one path for every graph."""
+    from solver.cli.watch import graph_address, open_graph
     from solver.core.solution import solve
     from solver.errors import InputError
     from solver.identify.profile import load_profile
     from solver.live.query import assign_from_graph
     from solver.live.render import render_live_assignment
-    from solver.live.sources.ros2 import DdsGraph
 
-    domain = ros2_domain(args)
-    if args.robot is None:
+    address = graph_address(args)
+    if args.ros2 and args.robot is None:
         raise InputError.at(
             "<arguments>",
             "--ros2 needs --robot NS (the active robot is a "
             "topic on ROS 2: `watch --ros2` answers it)",
         )
     solution = solve(load_team_argument(args.team, args.rules))
-    source = DdsGraph(domain)
-    live = assign_from_graph(
-        source, solution, load_profile(args.profile), robot=args.robot, given=combination
-    )
+    source = open_graph(address, timeout=args.timeout, push=False)
+    try:
+        live = assign_from_graph(
+            source, solution, load_profile(args.profile), robot=args.robot, given=combination
+        )
+    finally:
+        source.close()
     write(render_live_assignment(live, solution, args.format))
     return 0

@@ -22,8 +22,8 @@ from solver.untrusted import shown
 
 if TYPE_CHECKING:
     from solver.core.solution import Solution
-    from solver.identify.profile import Profile
     from solver.live.events import Event
+    from solver.live.graph import GraphSource
     from solver.live.watcher import Watcher
 
 
@@ -89,28 +89,37 @@ def register(subparsers: Any) -> None:
 def run(args: argparse.Namespace) -> int:
     from solver.core.solution import solve
     from solver.identify.profile import load_profile
-    from solver.live.master import master_uri
     from solver.live.watcher import Watcher
 
     team = load_team_argument(args.team, args.rules)
     profile = load_profile(args.profile)
     solution = solve(team)
-    if args.ros2:
-        return _watch_ros2(args, solution, profile)
-    master = master_uri(args.master)
-
+    source = open_graph(graph_address(args), timeout=args.timeout, push=not args.once)
     with (
-        Watcher(
-            master,
-            solution,
-            profile,
-            interval=args.interval,
-            timeout=args.timeout,
-            push=not args.once,
-        ) as watcher,
+        Watcher(source.name, solution, profile, interval=args.interval, source=source) as watcher,
         _stopped_by_sigterm(watcher),
     ):
-        return _watch(watcher, args, master, solution)
+        return _watch(watcher, args, solution)
+
+
+def graph_address(args: argparse.Namespace) -> str | int:
+    """The graph the arguments name, checked: a DDS domain id (``--ros2``, ``--domain``) or a
+    ROS 1 master URI (``--master``, ``$ROS_MASTER_URI``); a located error for anything else."""
+    from solver.live.master import master_uri
+
+    return ros2_domain(args) if args.ros2 else master_uri(args.master)
+
+
+def open_graph(address: str | int, *, timeout: float, push: bool) -> GraphSource:
+    """The graph source at ``address`` (:func:`graph_address`): a DDS domain, or a master
+    (``timeout`` and ``push`` are the master's)."""
+    if isinstance(address, int):
+        from solver.live.sources.ros2 import DdsGraph
+
+        return DdsGraph(address)
+    from solver.live.sources.ros1 import MasterGraph
+
+    return MasterGraph(address, timeout=timeout, push=push)
 
 
 @contextmanager
@@ -142,31 +151,11 @@ def ros2_domain(args: argparse.Namespace) -> int:
     return int(text)
 
 
-def _watch_ros2(args: argparse.Namespace, solution: Solution, profile: Profile) -> int:
-    from solver.live.sources.ros2 import DdsGraph
-    from solver.live.watcher import Watcher
-
-    source = DdsGraph(ros2_domain(args))
-    with (
-        Watcher(source.name, solution, profile, interval=args.interval, source=source) as watcher,
-        _stopped_by_sigterm(watcher),
-    ):
-        if args.once:
-            # Discovery on DDS takes a moment: see what is there first (SIGTERM ends it).
-            source.settle(stopped=lambda: watcher.stopped)
-        events = watcher.snapshot() if args.once else watcher.events()
-        for event in events:
-            write(_render(event, solution, args))
-    if watcher.stop_reason is not None and not args.once:
-        print(f"watch stopped: {shown(watcher.stop_reason, limit=None)}", file=sys.stderr)
-    return 0
-
-
-def _watch(watcher: Watcher, args: argparse.Namespace, master: str, solution: Solution) -> int:
-    from solver.live.master import MasterError
+def _watch(watcher: Watcher, args: argparse.Namespace, solution: Solution) -> int:
+    from solver.live.graph import MasterError
 
     try:
-        _follow(watcher, args, master, solution)
+        _follow(watcher, args, solution)
     except MasterError:
         if not watcher.stopped:
             raise
@@ -176,8 +165,12 @@ def _watch(watcher: Watcher, args: argparse.Namespace, master: str, solution: So
     return 0
 
 
-def _follow(watcher: Watcher, args: argparse.Namespace, master: str, solution: Solution) -> None:
-    from solver.live.master import MasterError, MasterUnreachable
+def _follow(watcher: Watcher, args: argparse.Namespace, solution: Solution) -> None:
+    """One loop for every graph: wait for it (``--wait``) or check it answers, then a
+    snapshot (``--once``, once discovery settled) or events until stopped."""
+    from solver.live.graph import MasterError, MasterUnreachable
+
+    master = watcher.master
 
     def waiting(error: MasterError) -> None:
         print(
@@ -191,7 +184,7 @@ def _follow(watcher: Watcher, args: argparse.Namespace, master: str, solution: S
         watcher.wait_for_master(waiting)
     else:
         try:
-            watcher.client.get_pid()
+            watcher.source.get_pid()
         except MasterUnreachable as error:
             if watcher.stopped:
                 raise
@@ -200,6 +193,9 @@ def _follow(watcher: Watcher, args: argparse.Namespace, master: str, solution: S
                 f"{shown(error.faults[0].message, limit=None)}: is roscore running there? "
                 "(--wait waits for it)",
             ) from None
+    if args.once and not watcher.stopped:
+        # Discovery on DDS takes a moment: see what is there first (SIGTERM ends it).
+        watcher.source.settle(lambda: watcher.stopped)
     events = [] if watcher.stopped else watcher.snapshot() if args.once else watcher.events()
     for event in events:
         write(_render(event, solution, args))

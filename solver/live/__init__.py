@@ -8,18 +8,21 @@ master's XML-RPC API is spoken with Python's standard library: no ROS Python pac
 Modules, one concept each:
 
 =====================  ==========================================================
-``rpc``                bounded XML-RPC: a deadline per whole call, byte and depth caps
-``master``             the master's XML-RPC API: checked replies, errors
-``values``             bounds on values from a graph (JSON, selection) and their echoes
-``node``               the watcher's own node API (the master's parameter pushes)
-``descriptions``       description parameters, fetched once, kept current by pushes
+``graph``              the neutral types every source hands over: Observation,
+                       MISSING, the GraphSource protocol, the graph's errors
+``sources``            graph sources, none importing another: ``ros1`` (a master
+                       over XML-RPC), ``ros2`` (DDS, Cyclone DDS)
+``rpc``                ROS 1: bounded XML-RPC (a deadline per whole call, caps)
+``master``             ROS 1: the master's XML-RPC API, checked replies
+``node``               ROS 1: the watcher's own node API (the master's pushes)
+``descriptions``       ROS 1: description parameters, re-read when pushed
+``values``             bounds on values from a graph (JSON, selection), echoes
 ``discovery``          robots (``robot_description`` namespaces) and their topics
 ``robot``              one robot identified, with its combinations' configurations
 ``selection``          ``/teleop_ui/active_*`` -> one configuration, written back
 ``events``             the event kinds and their JSON schema
-``watcher``            the state machine: polls, pushes, loss, backoff, resync
-``query``              one question: ``assign --master URL --robot NS`` (or ``--ros2``)
-``sources``            graph sources: ``ros2`` (DDS, Cyclone DDS); the watcher takes one
+``watcher``            the state machine on any source: polls, loss, backoff, resync
+``query``              one question on any source: ``assign --master`` / ``--ros2``
 ``render``             events as JSON lines or text; ``assign --master`` output
 =====================  ==========================================================
 
@@ -38,14 +41,8 @@ from solver.live.events import (
     Synced,
     event_data,
 )
-from solver.live.master import (
-    MISSING,
-    MasterClient,
-    MasterError,
-    MasterUnreachable,
-    Observation,
-    master_uri,
-)
+from solver.live.graph import MISSING, MasterError, MasterUnreachable, Observation
+from solver.live.master import MasterClient, master_uri
 from solver.live.query import LiveAssignment, assign_from_master
 from solver.live.render import json_line, render_event, render_live_assignment
 from solver.live.robot import LiveRobot, identify_robot

@@ -27,13 +27,8 @@ from collections.abc import Iterable
 from typing import Any
 
 from solver.errors import InputError
-from solver.live.master import (
-    MISSING,
-    MasterClient,
-    MasterError,
-    MasterUnreachable,
-    ReplyTooLarge,
-)
+from solver.live.graph import MISSING, MasterError, MasterUnreachable
+from solver.live.master import MasterClient, ReplyTooLarge
 
 __all__ = ["Descriptions"]
 

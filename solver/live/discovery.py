@@ -30,7 +30,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 
 from solver.identify.profile import Profile
-from solver.live.master import Observation
+from solver.live.graph import Observation
 from solver.ros.names import Topic, normalise_type
 
 __all__ = [

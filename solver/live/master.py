@@ -6,7 +6,7 @@ the master. :class:`MasterClient` makes the calls the watcher needs (getPid, get
 getTopicTypes, getParamNames, getParam, setParam, deleteParam, subscribeParam,
 unsubscribeParam) and the ones a test or a tool needs to play a node (registerPublisher,
 registerSubscriber, lookupNode), checks the shape of every reply, and turns every way a call
-can go wrong into one of two errors:
+can go wrong into one of the graph's two errors (:mod:`solver.live.graph`):
 
 * :class:`MasterUnreachable`: no answer at all (refused, timed out, dropped): the master is
   down, restarting or on the wrong port;
@@ -30,28 +30,23 @@ a node (:mod:`solver.live.node`).
 from __future__ import annotations
 
 import contextlib
-import enum
 import http.client
 import ipaddress
 import os
 import re
 import xmlrpc.client
 from collections.abc import Iterable, Iterator, Sequence
-from dataclasses import dataclass
 from typing import Any, Final
 from urllib.parse import urlsplit
 from xml.parsers.expat import ExpatError
 
-from solver.errors import InputError, SolverError
+from solver.errors import InputError
+from solver.live.graph import MISSING, MasterError, MasterUnreachable, Observation
 from solver.live.rpc import BoundedTransport, OversizedReply
 from solver.untrusted import shown
 
 __all__ = [
-    "MISSING",
     "MasterClient",
-    "MasterError",
-    "MasterUnreachable",
-    "Observation",
     "ReplyTooLarge",
     "is_loopback",
     "master_uri",
@@ -62,43 +57,8 @@ SUCCESS: Final = 1
 CALLER_ERROR: Final = -1
 
 
-class _Missing(enum.Enum):
-    """The value of a parameter that is not set (``None`` cannot travel in ROS's XML-RPC)."""
-
-    MISSING = "MISSING"
-
-
-MISSING: Final = _Missing.MISSING
-
-
-class MasterError(SolverError, ConnectionError):
-    """The master cannot be used: it answered, but not as a ROS master does."""
-
-
-class MasterUnreachable(MasterError):
-    """The master did not answer at all: refused, timed out, or the connection dropped."""
-
-
 class ReplyTooLarge(MasterError):
     """The reply was longer than :data:`solver.live.rpc.MAX_REPLY_BYTES` (it was not read)."""
-
-
-@dataclass(frozen=True, slots=True)
-class Observation:
-    """Everything one poll reads from the master, in one round trip.
-
-    ``publishers`` / ``subscribers``: (topic, node names) pairs from getSystemState;
-    ``topic_types``: (topic, message type) pairs from getTopicTypes (the master never forgets a
-    type, so it lists topics nobody uses any more); ``params``: the parameter subtree the
-    caller asked for, as (key, value) pairs, empty when it is not set.
-    """
-
-    pid: int
-    publishers: tuple[tuple[str, tuple[str, ...]], ...]
-    subscribers: tuple[tuple[str, tuple[str, ...]], ...]
-    topic_types: tuple[tuple[str, str], ...]
-    param_names: tuple[str, ...]
-    params: tuple[tuple[str, Any], ...] = ()
 
 
 # A host name as DNS and /etc/hosts have them (an IP address literal is checked apart).

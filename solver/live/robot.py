@@ -30,7 +30,7 @@ from solver.identify.combinations import Combination, combinations
 from solver.identify.identification import Identification, IdentificationCache, TopicSource
 from solver.identify.profile import Profile
 from solver.live.discovery import RobotSource
-from solver.live.master import MISSING
+from solver.live.graph import MISSING
 
 __all__ = ["LiveRobot", "identify_robot", "robot_data", "unexpected_error"]
 

@@ -23,7 +23,6 @@ Not here: what a reply means (:mod:`solver.live.master`).
 
 from __future__ import annotations
 
-import enum
 import errno
 import functools
 import http.client
@@ -39,30 +38,20 @@ from collections.abc import Callable
 from typing import Any, Final
 from xml.parsers import expat
 
+from solver.live.graph import MAX_DEPTH, TOO_DEEP
+
 __all__ = [
-    "MAX_DEPTH",
     "MAX_REPLY_BYTES",
     "SLICE",
-    "TOO_DEEP",
     "BoundedTransport",
     "OversizedReply",
     "loads",
 ]
 
 MAX_REPLY_BYTES: Final = 32 * 1024 * 1024
-MAX_DEPTH: Final = 64
 SLICE: Final = 0.1
 _CHUNK = 64 * 1024
 _USER_AGENT = "teleop-ui (bounded xmlrpc)"
-
-
-class _TooDeep(enum.Enum):
-    """A value nested deeper than :data:`MAX_DEPTH`: it was not built."""
-
-    TOO_DEEP = "TOO_DEEP"
-
-
-TOO_DEEP: Final = _TooDeep.TOO_DEEP
 
 
 class OversizedReply(ValueError):

@@ -32,7 +32,7 @@ from solver.core.contracts import assignment_data
 from solver.core.solution import Solution
 from solver.identify.profile import Profile
 from solver.live.discovery import normalise_namespace
-from solver.live.master import MISSING
+from solver.live.graph import MISSING
 from solver.live.robot import LiveRobot
 from solver.live.values import selection_text
 from solver.untrusted import shown

@@ -26,7 +26,7 @@ import re
 from typing import Any, Final
 
 from solver.errors import SolverError
-from solver.live.rpc import MAX_DEPTH, TOO_DEEP
+from solver.live.graph import MAX_DEPTH, TOO_DEEP
 from solver.untrusted import shown
 
 __all__ = [

@@ -1,4 +1,8 @@
-"""The watcher: a state machine that follows a ROS master and yields events as things change.
+"""The watcher: a state machine that follows a robot graph and yields events as things change.
+
+It works on any :class:`~solver.live.graph.GraphSource` (:mod:`solver.live.sources`): a ROS 1
+master (the default, :class:`~solver.live.sources.ros1.MasterGraph`) or a ROS 2 graph on DDS;
+what follows is the same for both, in the ROS 1 words the events use.
 
 States and transitions::
 
@@ -12,49 +16,42 @@ States and transitions::
 afresh and reports every robot as ``robot_added``, the selection, then ``synced``: a consumer
 never has to merge an old view with a new one, and no robot is reported twice or missed.
 
-*Polling*: every ``interval`` seconds one round trip (:meth:`MasterClient.observe`) reads the
+*Polling*: every ``interval`` seconds one round trip (:meth:`GraphSource.observe`) reads the
 master's pid, the topic graph, the parameter names and ``/teleop_ui``. Descriptions are not
-read by polls: the watcher's node (:mod:`solver.live.node`) subscribes to each one and to
-``/teleop_ui``, and a change pushed by the master wakes the loop at once, so an operator's
-switch or a new description is reported well within one interval. A robot is identified again
-only when its description or its relevant topics changed (identification is cached by content
-besides); an event is emitted only when what it reports changed.
+read by polls: the source follows them (on ROS 1 the watcher's node subscribes to each one and
+to ``/teleop_ui``) and wakes the loop when one changed, so an operator's switch or a new
+description is reported well within one interval. A robot is identified again only when its
+description or its relevant topics changed (identification is cached by content besides); an
+event is emitted only when what it reports changed.
 
 *Write-back*: the answer to the active selection is written to ``/teleop_ui/ui_configuration``
 (deleted with no active robot) whenever what is on the master differs from it, with the
 watcher's node name under ``watcher``. Two watchers on one master with different teams or
 rules would overwrite each other's answer on every push; so a watcher does not overwrite an
-answer written by another watcher that is still running (the master knows its node and the
-node answers ``getPid``): it leaves the first writer's answer there and says so in the
-selection's notes. Once that watcher is gone, the parameter is taken over at the next poll.
-Watchers with the same team agree, and leave each other's equal answers alone.
-
-A rival is asked whether it runs (``getPid`` on the node API the master lists for it) for at
-most :data:`_PROBE_TIMEOUT` seconds, and a rival that answered is asked again only after
-:data:`_PROBE_AGAIN` seconds, so a rival node that answers slowly or never costs a poll at most
-that, now and then. A node API that is not ``http://host:port/`` (a node that registered
-``rosrpc://evil:1/``) cannot be a watcher's: its answer is overwritten, with a note.
+answer written by another watcher that is still running (the source says so:
+:meth:`GraphSource.running_watcher`): it leaves the first writer's answer there and says so in
+the selection's notes. Once that watcher is gone, the parameter is taken over at the next poll.
+A writer the source can tell is no watcher (on ROS 1, a node API that is not
+``http://host:port/``) is overwritten, with a note. Watchers with the same team agree, and
+leave each other's equal answers alone.
 
 *Lost*: any failed call, or a new pid (the master restarted between two polls), gives
 ``master_lost``; the watcher retries after one interval, doubling up to ``max_backoff``, and
 when the master answers gives ``master_back`` and synchronises again.
 
 *Stopping* (:meth:`Watcher.stop`: SIGTERM, a ``shutdown`` call, Ctrl-C's handler) cuts off the
-call under way within :data:`_STOP_GRACE` seconds, however the master behaves; closing then
-releases the parameter subscriptions within :data:`_RELEASE_BUDGET` seconds in all.
+call under way within :data:`_STOP_GRACE` seconds, however the master behaves; closing the
+source then releases what it holds (on ROS 1, within half a second).
 
 Nothing here prints: events are yielded to the caller (the CLI writes them).
 
-Not here: the event schema (:mod:`solver.live.events`), rendering (:mod:`solver.live.render`).
+Not here: the event schema (:mod:`solver.live.events`), rendering (:mod:`solver.live.render`),
+any transport (:mod:`solver.live.sources`).
 """
 
 from __future__ import annotations
 
-import contextlib
 import dataclasses
-import os
-import re
-import socket
 import threading
 import time
 from collections.abc import Callable, Iterator
@@ -65,7 +62,6 @@ from typing import Any
 from solver.core.solution import Solution
 from solver.identify.identification import IdentificationCache
 from solver.identify.profile import Profile
-from solver.live.descriptions import Descriptions
 from solver.live.discovery import RobotSource, discover
 from solver.live.events import (
     Event,
@@ -77,15 +73,14 @@ from solver.live.events import (
     SelectionChanged,
     Synced,
 )
-from solver.live.master import (
+from solver.live.graph import (
     MISSING,
-    MasterClient,
+    DescriptionStore,
+    GraphSource,
     MasterError,
     MasterUnreachable,
     Observation,
-    node_api,
 )
-from solver.live.node import NodeServer, callback_host
 from solver.live.robot import LiveRobot, identify_robot, robot_data, unexpected_error
 from solver.live.selection import (
     NAMESPACE,
@@ -97,7 +92,6 @@ from solver.live.selection import (
     selection_data,
     ui_configuration_value,
 )
-from solver.live.sources import DescriptionStore, GraphSource
 from solver.live.values import shown_value
 from solver.ros.names import Topic
 
@@ -106,12 +100,8 @@ __all__ = ["Watcher"]
 # Pushes can come in bursts (a launch file setting many parameters); polls triggered by them
 # are at least this far apart.
 _MIN_GAP = 0.01
-# A rival watcher's node is given this long to answer, and asked again after this long.
-_PROBE_TIMEOUT = 1.0
-_PROBE_AGAIN = 5.0
-# After stop(), the call under way ends within this; close() releases subscriptions within that.
+# After stop(), the call under way ends within this.
 _STOP_GRACE = 0.2
-_RELEASE_BUDGET = 0.5
 _RESULT_KEY = RESULT_PARAM.rsplit("/", 1)[1]
 
 
@@ -126,22 +116,20 @@ class _Tracked:
     data: dict[str, Any]
 
 
-def _node_name(port: int) -> str:
-    host = re.sub(r"\W", "_", socket.gethostname()) or "host"
-    return f"/teleop_ui_watch_{host}_{os.getpid()}_{port}"
-
-
 class Watcher:
-    """Follows the ROS master at ``master`` for ``solution``'s team (see the module docstring).
+    """Follows the graph ``source`` (by default the ROS 1 master at ``master``) for
+    ``solution``'s team (see the module docstring).
 
-    Use it as a context manager, so its node and parameter subscriptions are released::
+    Use it as a context manager, so that what the source holds (on ROS 1 its node and
+    parameter subscriptions) is released::
 
         with Watcher(uri, solve(team), load_profile()) as watcher:
             for event in watcher.events():
                 ...
 
-    ``push=False`` runs without a node (no parameter subscriptions): enough for
-    :meth:`snapshot`, which reads everything once.
+    ``timeout`` and ``push`` are the ROS 1 master's (``push=False`` runs without a node, no
+    parameter subscriptions: enough for :meth:`snapshot`, which reads everything once); a
+    ``source`` given brings its own.
     """
 
     def __init__(
@@ -157,7 +145,13 @@ class Watcher:
         cache: IdentificationCache | None = None,
         source: GraphSource | None = None,
     ) -> None:
-        self.master = source.name if source is not None else master
+        if source is None:
+            # The default source: a ROS 1 master (imported here: watching ROS 2 needs none).
+            from solver.live.sources.ros1 import MasterGraph
+
+            source = MasterGraph(master, timeout=timeout, push=push)
+        self.source: GraphSource = source
+        self.master = source.name
         self.solution = solution
         self.profile = profile
         self.interval = interval
@@ -167,49 +161,30 @@ class Watcher:
         self._stop = threading.Event()
         self._wake = threading.Event()
         self._closed = False
-        self._node: NodeServer | None = None
-        self.client: MasterClient | GraphSource
-        self.descriptions: Descriptions | DescriptionStore
-        if source is not None:
-            # Another graph (ROS 2 on DDS): it reads and writes for the master and node, and
-            # wakes the loop when something arrives; everything above it is shared.
-            self.client = source
-            self.descriptions = source.descriptions
-            source.on_change = self.wake
-        else:
-            caller_id = f"/teleop_ui_watch_{os.getpid()}"
-            if push:
-                self._node = NodeServer(
-                    callback_host(master),
-                    master,
-                    self._pushed,
-                    lambda message: self.stop(shown_value(message)),  # a stranger's words
-                )
-                caller_id = _node_name(int(self._node.uri.rsplit(":", 1)[1].strip("/")))
-                self._node.start()
-            self.client = MasterClient(master, caller_id=caller_id, timeout=timeout)
-            self.descriptions = Descriptions(
-                self.client, None if self._node is None else self._node.uri
-            )
+        source.on_change = self.wake
+        source.on_stop = self.stop
         self._robots: dict[str, _Tracked] = {}
         self._no_selection = selection_data(None, Request(), solution)
         self._selection = self._no_selection
         self._pid: int | None = None
         self._seq = 0
         self._last_poll = 0.0
-        self._rivals: dict[tuple[str, str], float] = {}  # (node, API) -> when it answered
-        self._probe: MasterClient | None = None
 
     # -- life cycle ----------------------------------------------------------------------
 
     @property
     def caller_id(self) -> str:
-        """The watcher's node name on the master."""
-        return self.client.caller_id
+        """The watcher's node name on the graph."""
+        return self.source.caller_id
 
     @property
     def node_uri(self) -> str | None:
-        return None if self._node is None else self._node.uri
+        """The watcher's own node API, where the source has one (ROS 1)."""
+        return self.source.node_uri
+
+    @property
+    def descriptions(self) -> DescriptionStore:
+        return self.source.descriptions
 
     def __enter__(self) -> Watcher:
         return self
@@ -224,14 +199,11 @@ class Watcher:
 
     def stop(self, reason: str = "") -> None:
         """Make :meth:`events` return, cutting off the call under way (thread-safe; SIGTERM and
-        the node's ``shutdown`` call it)."""
+        the graph's ``shutdown`` call it)."""
         self.stop_reason = reason or "stopped"
         self._stop.set()
         self._wake.set()
-        when = time.monotonic() + _STOP_GRACE
-        for client in (self.client, self._probe):
-            if isinstance(client, MasterClient):
-                client.cut_off(when)
+        self.source.cut_off(time.monotonic() + _STOP_GRACE)
 
     def wake(self) -> None:
         """Poll now instead of at the next tick (thread-safe)."""
@@ -242,19 +214,12 @@ class Watcher:
         return self._stop.is_set()
 
     def close(self) -> None:
-        """Unsubscribe from the master (best effort) and stop the node; idempotent."""
+        """Release what the source holds (best effort, bounded) and close it; idempotent."""
         self._stop.set()
         if self._closed:
             return
         self._closed = True
-        if self._node is not None and isinstance(self.client, MasterClient):
-            # Best effort, bounded whatever the master does: it forgets a node that is gone.
-            self.client.cut_off(time.monotonic() + _RELEASE_BUDGET)
-            with contextlib.suppress(MasterError):  # gone with the master
-                self.client.unsubscribe_params(self._node.uri, [NAMESPACE])
-            self.descriptions.close()
-            self._node.close()
-        self.client.close()
+        self.source.close()
 
     def wait_for_master(self, on_waiting: Callable[[MasterError], None] | None = None) -> bool:
         """Retry until the master answers (``True``) or :meth:`stop` (``False``).
@@ -266,7 +231,7 @@ class Watcher:
         told = False
         while not self.stopped:
             try:
-                self.client.get_pid()
+                self.source.get_pid()
             except MasterUnreachable as error:
                 if not told and on_waiting is not None:
                     on_waiting(error)
@@ -286,7 +251,7 @@ class Watcher:
     def snapshot(self) -> list[Event]:
         """One full synchronisation: ``robot_added`` per robot, the selection, ``synced``.
 
-        :class:`~solver.live.master.MasterError` when the master cannot be read.
+        :class:`~solver.live.graph.MasterError` when the graph cannot be read.
         """
         return self._numbered(self._resync())
 
@@ -343,36 +308,16 @@ class Watcher:
                     self._stop.wait(gap)
                 return
 
-    def _pushed(self, key: str) -> None:
-        """A parameter update, from the master or anyone (on the node's server thread): a hint
-        to poll now; the poll reads the values from the master."""
-        name = "/" + key.strip("/")
-        if (
-            name == NAMESPACE
-            or name.startswith(NAMESPACE + "/")
-            or (isinstance(self.descriptions, Descriptions) and self.descriptions.push(name))
-        ):
-            self._wake.set()
-
     # -- reading the master ----------------------------------------------------------------
 
     def _observe(self) -> Observation:
         self._last_poll = time.monotonic()
-        return self.client.observe(NAMESPACE)
+        return self.source.observe(NAMESPACE)
 
     def _resync(self) -> list[Event]:
         self._robots = {}
         self._selection = self._no_selection
-        self.descriptions.reset()
-        if self._node is not None and isinstance(self.client, MasterClient):
-            try:
-                self.client.subscribe_param(self._node.uri, NAMESPACE)
-            except MasterUnreachable:
-                raise
-            except MasterError:
-                # The subscription's reply (the /teleop_ui subtree, unused: polls read it key
-                # by key when they must) could not be sent; at worst changes wait for a poll.
-                pass
+        self.source.resync(NAMESPACE)
         observation = self._observe()
         self._pid = observation.pid
         batch = self._update(observation)
@@ -462,9 +407,9 @@ class Watcher:
                 f"watcher the same team and rules"
             )
         elif wanted is None and present is not MISSING:
-            self.client.delete_param(RESULT_PARAM)
+            self.source.delete_param(RESULT_PARAM)
         elif wanted is not None and _answer(present) != _answer(wanted):
-            self.client.set_param(RESULT_PARAM, wanted)
+            self.source.set_param(RESULT_PARAM, wanted)
         if note is not None and selection is not None:
             selection = dataclasses.replace(selection, notes=(*selection.notes, note))
         data = selection_data(selection, request, self.solution)
@@ -475,8 +420,8 @@ class Watcher:
 
     def _rival(self, present: Any, wanted: dict[str, Any] | None) -> tuple[str | None, str | None]:
         """The node name of another watcher, still running, whose different answer is on the
-        master (``None`` when the parameter is free to write: see the module docstring), and
-        a note on a writer that cannot be a watcher."""
+        graph (``None`` when the parameter is free to write: see the module docstring), and a
+        note on a writer that cannot be a watcher."""
         if wanted is None or not isinstance(present, dict):
             return None, None
         writer = present.get(WRITER_KEY)
@@ -486,40 +431,11 @@ class Watcher:
             or _answer(present) == _answer(wanted)
         ):
             return None, None
-        listed = self.client.lookup_node(writer)
-        if listed is None:
-            return None, None  # it closed (its subscriptions are gone) or never had a node
-        api = node_api(listed)
-        if api is None:
-            return None, (
-                f"{RESULT_PARAM} was written by {shown_value(writer)}, whose node API "
-                f"{shown_value(listed)} is no XML-RPC address: not a watcher's; overwritten"
-            )
-        now = time.monotonic()
-        answered = self._rivals.get((writer, api))
-        if answered is not None and now - answered < _PROBE_AGAIN:
-            return writer, None
-        if self._answers(api):
-            self._rivals = {(writer, api): now}
-            return writer, None
-        self._rivals.pop((writer, api), None)
-        return None, None  # killed without closing: the master still lists it, nobody answers
-
-    def _answers(self, api: str) -> bool:
-        """Whether the node API ``api`` answers ``getPid`` as a node does, within
-        :data:`_PROBE_TIMEOUT` (and cut off by :meth:`stop`)."""
-        timeout = min(_PROBE_TIMEOUT, self.client.timeout or _PROBE_TIMEOUT)
-        self._probe = MasterClient(api, caller_id=self.caller_id, timeout=timeout)
-        try:
-            if self.stopped:
-                return False
-            self._probe.get_pid()
-        except MasterError:
-            return False
-        finally:
-            self._probe.close()
-            self._probe = None
-        return True
+        running, doubt = self.source.running_watcher(writer)
+        if doubt is not None:
+            note = f"{RESULT_PARAM} was written by {shown_value(writer)}, {doubt}; overwritten"
+            return None, note
+        return (writer if running else None), None
 
 
 def _answer(value: Any) -> Any:

@@ -26,7 +26,8 @@ from pathlib import Path
 from typing import Any, TypeVar
 from xmlrpc.server import SimpleXMLRPCRequestHandler, SimpleXMLRPCServer
 
-from solver.live.master import MasterClient, MasterError
+from solver.live.graph import MasterError
+from solver.live.master import MasterClient
 from tests.processes import end, marked
 
 T = TypeVar("T")

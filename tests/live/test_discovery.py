@@ -12,7 +12,7 @@ from solver.live.discovery import (
     robot_namespaces,
     robot_topics,
 )
-from solver.live.master import Observation
+from solver.live.graph import Observation
 from solver.ros.names import Topic
 
 IMAGE = "sensor_msgs/Image"

@@ -12,14 +12,8 @@ from xmlrpc.server import SimpleXMLRPCServer
 import pytest
 
 from solver.errors import InputError
-from solver.live.master import (
-    MISSING,
-    MasterClient,
-    MasterError,
-    MasterUnreachable,
-    is_loopback,
-    master_uri,
-)
+from solver.live.graph import MISSING, MasterError, MasterUnreachable
+from solver.live.master import MasterClient, is_loopback, master_uri
 from tests.live.roscore import Roscore, TestNode, free_port
 
 

@@ -11,7 +11,8 @@ import pytest
 
 from solver.errors import InputError
 from solver.live.descriptions import Descriptions
-from solver.live.master import MISSING, MasterClient
+from solver.live.graph import MISSING
+from solver.live.master import MasterClient
 from solver.live.node import NodeServer, callback_host
 from tests.live.roscore import Roscore, TestNode
 

@@ -14,8 +14,9 @@ from collections.abc import Callable, Iterator
 
 import pytest
 
-from solver.live.master import MasterClient, MasterError, MasterUnreachable, ReplyTooLarge
-from solver.live.rpc import MAX_DEPTH, MAX_REPLY_BYTES, TOO_DEEP, loads
+from solver.live.graph import MAX_DEPTH, TOO_DEEP, MasterError, MasterUnreachable
+from solver.live.master import MasterClient, ReplyTooLarge
+from solver.live.rpc import MAX_REPLY_BYTES, loads
 from tests.live.hostile import (
     Behaviour,
     RawServer,

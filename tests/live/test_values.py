@@ -13,7 +13,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from solver.errors import InputError
-from solver.live.rpc import MAX_DEPTH, TOO_DEEP
+from solver.live.graph import MAX_DEPTH, TOO_DEEP
 from solver.live.selection import Request, read_request
 from solver.live.values import (
     MAX_JSON_CHARS,

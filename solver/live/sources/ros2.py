@@ -47,8 +47,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from solver.errors import InputError
-from solver.live.master import MISSING, Observation
-from solver.live.sources import DescriptionStore
+from solver.live.graph import MISSING, DescriptionStore, Observation
 from solver.live.values import bounded_json
 from solver.untrusted import shown
 
@@ -275,6 +274,7 @@ class DdsGraph:
         self.name = f"ros2://domain/{domain}"
         self.caller_id = caller_id or f"/teleop_ui_watch_{os.getpid()}"
         self.on_change: Callable[[], None] | None = None
+        self.on_stop: Callable[[str], None] | None = None  # a DDS graph never asks to stop
         self.listener = Listener(  # type: ignore[no-untyped-call]
             on_data_available=lambda _reader: self._changed()
         )
@@ -323,11 +323,21 @@ class DdsGraph:
 
     # -- what the watcher calls ----------------------------------------------------------
 
+    @property
+    def node_uri(self) -> str | None:
+        return None  # no node API: DDS tells the participants what changed
+
     def get_pid(self) -> int:
         return self.domain  # a DDS domain does not restart: one "pid" for its lifetime
 
-    def lookup_node(self, name: str) -> str | None:  # noqa: ARG002 - the source's interface
-        return None  # no node API to probe: a different answer is overwritten (see docs)
+    def resync(self, namespace: str) -> None:  # noqa: ARG002 - the protocol's
+        self.descriptions.reset()
+
+    def running_watcher(self, node: str) -> tuple[bool, str | None]:  # noqa: ARG002
+        return False, None  # no node API to ask: a different answer is overwritten (see docs)
+
+    def cut_off(self, when: float | None) -> None:
+        """Nothing to cut: no call on DDS waits."""
 
     def set_param(self, key: str, value: Any) -> None:  # noqa: ARG002 - one key here
         self._write(json.dumps(value, sort_keys=True))
@@ -348,9 +358,10 @@ class DdsGraph:
 
     def settle(
         self,
+        stopped: Callable[[], bool] = lambda: False,
+        *,
         quiet: float = 0.5,
         limit: float = 5.0,
-        stopped: Callable[[], bool] = lambda: False,
     ) -> None:
         """Wait until discovery is quiet (nothing new for ``quiet`` seconds, at most ``limit``,
         or until ``stopped()``): a one-shot snapshot on DDS must give the other participants

@@ -1,0 +1,188 @@
+"""A ROS 1 master as the watcher's graph source: :class:`MasterGraph`.
+
+It puts together the master's API (:class:`~solver.live.master.MasterClient`: bounded calls,
+checked replies), the watcher's own node (:class:`~solver.live.node.NodeServer`, where the
+master says which parameters changed) and the description parameters it follows
+(:class:`~solver.live.descriptions.Descriptions`), behind the
+:class:`~solver.live.graph.GraphSource` the watcher and ``assign`` use for every graph.
+
+*Rival watchers.* The answer on the master names the watcher that wrote it (its node name).
+Whether that watcher still runs is asked of its node API, as the master lists it: ``getPid``,
+given :data:`PROBE_TIMEOUT` seconds; a node that answered is asked again only after
+:data:`PROBE_AGAIN` seconds, so a node that answers slowly or never costs a poll at most that,
+now and then. A node API that is not ``http://host:port/`` (a node that registered
+``rosrpc://evil:1/``) cannot be a watcher's.
+
+*Stopping and closing.* :meth:`MasterGraph.cut_off` ends the call under way (the watcher's
+stop); :meth:`MasterGraph.close` releases the parameter subscriptions within
+:data:`RELEASE_BUDGET` seconds in all, whatever the master does, and stops the node.
+
+Not here: the watcher's state machine (:mod:`solver.live.watcher`).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import re
+import socket
+import time
+from collections.abc import Callable
+from typing import Any, Final
+
+from solver.live.descriptions import Descriptions
+from solver.live.graph import DescriptionStore, MasterError, MasterUnreachable, Observation
+from solver.live.master import MasterClient, node_api
+from solver.live.node import NodeServer, callback_host
+from solver.untrusted import shown
+
+__all__ = ["PROBE_AGAIN", "PROBE_TIMEOUT", "RELEASE_BUDGET", "MasterGraph"]
+
+PROBE_TIMEOUT: Final = 1.0
+PROBE_AGAIN: Final = 5.0
+RELEASE_BUDGET: Final = 0.5
+
+
+def _node_name(port: int) -> str:
+    host = re.sub(r"\W", "_", socket.gethostname()) or "host"
+    return f"/teleop_ui_watch_{host}_{os.getpid()}_{port}"
+
+
+class MasterGraph:
+    """The ROS 1 master at ``master`` (``http://host:port/``), as a graph source.
+
+    ``push=False`` runs without a node (no parameter subscriptions, descriptions read with
+    ``getParam``): enough for one look, as ``watch --once`` and ``assign`` take.
+    """
+
+    def __init__(self, master: str, *, timeout: float = 2.0, push: bool = True) -> None:
+        self.name = master
+        self.timeout = timeout
+        self.on_change: Callable[[], None] | None = None
+        self.on_stop: Callable[[str], None] | None = None
+        self._namespace: str | None = None
+        self._node: NodeServer | None = None
+        caller_id = f"/teleop_ui_watch_{os.getpid()}"
+        if push:
+            self._node = NodeServer(callback_host(master), master, self._pushed, self._shutdown)
+            caller_id = _node_name(int(self._node.uri.rsplit(":", 1)[1].strip("/")))
+            self._node.start()
+        self.client = MasterClient(master, caller_id=caller_id, timeout=timeout)
+        self._descriptions = Descriptions(self.client, self.node_uri)
+        self.descriptions: DescriptionStore = self._descriptions
+        self._rivals: dict[tuple[str, str], float] = {}  # (node, API) -> when it answered
+        self._probe: MasterClient | None = None
+        self._closed = False
+
+    @property
+    def caller_id(self) -> str:
+        return self.client.caller_id
+
+    @property
+    def node_uri(self) -> str | None:
+        return None if self._node is None else self._node.uri
+
+    # -- what the watcher and assign call ------------------------------------------------
+
+    def get_pid(self) -> int:
+        return self.client.get_pid()
+
+    def observe(self, namespace: str) -> Observation:
+        return self.client.observe(namespace)
+
+    def resync(self, namespace: str) -> None:
+        """After a start or a master restart: the master's subscriptions are gone, and so is
+        what was followed."""
+        self.descriptions.reset()
+        self._namespace = namespace
+        if self._node is None:
+            return
+        try:
+            self.client.subscribe_param(self._node.uri, namespace)
+        except MasterUnreachable:
+            raise
+        except MasterError:
+            # The subscription's reply (the whole subtree, unused: polls read it, key by key
+            # when they must) could not be sent; at worst changes wait for the next poll.
+            pass
+
+    def settle(self, stopped: Callable[[], bool]) -> None:
+        """Nothing to wait for: a master answers with the whole graph at once."""
+
+    def set_param(self, key: str, value: Any) -> None:
+        self.client.set_param(key, value)
+
+    def delete_param(self, key: str) -> None:
+        self.client.delete_param(key)
+
+    def running_watcher(self, node: str) -> tuple[bool, str | None]:
+        """See the module docstring: the master's word on ``node``, then its own."""
+        listed = self.client.lookup_node(node)
+        if listed is None:
+            return False, None  # it closed (its subscriptions are gone) or never had a node
+        api = node_api(listed)
+        if api is None:
+            return False, f"whose node API {shown(listed)} is no XML-RPC address: not a watcher's"
+        now = time.monotonic()
+        answered = self._rivals.get((node, api))
+        if answered is not None and now - answered < PROBE_AGAIN:
+            return True, None
+        if self._answers(api):
+            self._rivals = {(node, api): now}
+            return True, None
+        self._rivals.pop((node, api), None)
+        return False, None  # killed without closing: the master still lists it, nobody answers
+
+    def _answers(self, api: str) -> bool:
+        """Whether the node API ``api`` answers ``getPid`` as a node does, within
+        :data:`PROBE_TIMEOUT` (and the watcher's own timeout), unless cut off."""
+        self._probe = MasterClient(
+            api, caller_id=self.caller_id, timeout=min(PROBE_TIMEOUT, self.timeout)
+        )
+        try:
+            self._probe.get_pid()
+        except MasterError:
+            return False
+        finally:
+            self._probe.close()
+            self._probe = None
+        return True
+
+    def cut_off(self, when: float | None) -> None:
+        for client in (self.client, self._probe):
+            if client is not None:
+                client.cut_off(when)
+
+    def close(self) -> None:
+        """Unsubscribe (best effort, within :data:`RELEASE_BUDGET`) and stop the node."""
+        if self._closed:
+            return
+        self._closed = True
+        if self._node is not None:
+            # Bounded whatever the master does: it forgets a node that is gone in any case.
+            self.client.cut_off(time.monotonic() + RELEASE_BUDGET)
+            if self._namespace is not None:
+                with contextlib.suppress(MasterError):  # gone with the master
+                    self.client.unsubscribe_params(self._node.uri, [self._namespace])
+            self.descriptions.close()
+            self._node.close()
+        self.client.close()
+
+    # -- the node's calls (on its server thread) -----------------------------------------
+
+    def _pushed(self, key: str) -> None:
+        """A parameter update, from the master or anyone: a hint to poll now; the poll reads
+        the values from the master."""
+        name = "/" + key.strip("/")
+        namespace = self._namespace
+        if (
+            namespace is not None and (name == namespace or name.startswith(namespace + "/"))
+        ) or self._descriptions.push(name):
+            callback = self.on_change
+            if callback is not None:
+                callback()
+
+    def _shutdown(self, message: str) -> None:
+        callback = self.on_stop
+        if callback is not None:
+            callback(shown(message))  # a stranger's words
