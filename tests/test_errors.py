@@ -23,7 +23,7 @@ PRIVATE_SIGNALS = {
     "solver.identify.profile.PatternError",
     # Raised by the bounded XML-RPC transport, turned into MasterError (ReplyTooLarge) by the
     # master client that called it.
-    "solver.live.rpc.OversizedReply",
+    "solver.live.sources.ros1.rpc.OversizedReply",
     # Raised by the command line's output streams when they fail (closed, full, a pipe whose
     # reader left) and ended by solver.cli.main: no SolverError, which commands may catch.
     "solver.cli._terminal.OutputFailed",

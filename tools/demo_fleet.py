@@ -25,7 +25,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 
 from solver.errors import SolverError
-from solver.live.master import master_uri
+from solver.live.sources.ros1.master import master_uri
 from tests.live.fleet import put_drone, put_rover
 from tests.live.roscore import TestNode
 

@@ -148,7 +148,7 @@ def _live(args: argparse.Namespace, workspace: Any) -> Any:
             return Watcher(source.name, solution, profile, interval=args.interval, source=source)
 
         return LiveFeed(f"ROS 2 domain {domain}", solution, make)
-    from solver.live.master import master_uri
+    from solver.live.sources.ros1.master import master_uri
 
     master = master_uri(args.master)
 

@@ -105,7 +105,7 @@ def run(args: argparse.Namespace) -> int:
 def graph_address(args: argparse.Namespace) -> str | int:
     """The graph the arguments name, checked: a DDS domain id (``--ros2``, ``--domain``) or a
     ROS 1 master URI (``--master``, ``$ROS_MASTER_URI``); a located error for anything else."""
-    from solver.live.master import master_uri
+    from solver.live.sources.ros1.master import master_uri
 
     return ros2_domain(args) if args.ros2 else master_uri(args.master)
 

@@ -1,5 +1,6 @@
 """Live UI assignment from a running ROS graph (``teleop-ui watch``, ``assign --master``):
-a ROS 1 master, or a ROS 2 graph on DDS (``--ros2``, :mod:`solver.live.sources.ros2`).
+a ROS 1 master (:mod:`solver.live.sources.ros1`), or a ROS 2 graph on DDS (``--ros2``,
+:mod:`solver.live.sources.ros2`).
 
 Robots connected to a teleoperation system get their UI configuration from their ROS
 metadata, and switching robots or control modes switches the configuration at once. The
@@ -11,11 +12,8 @@ Modules, one concept each:
 ``graph``              the neutral types every source hands over: Observation,
                        MISSING, the GraphSource protocol, the graph's errors
 ``sources``            graph sources, none importing another: ``ros1`` (a master
-                       over XML-RPC), ``ros2`` (DDS, Cyclone DDS)
-``rpc``                ROS 1: bounded XML-RPC (a deadline per whole call, caps)
-``master``             ROS 1: the master's XML-RPC API, checked replies
-``node``               ROS 1: the watcher's own node API (the master's pushes)
-``descriptions``       ROS 1: description parameters, re-read when pushed
+                       over XML-RPC: ``rpc``, ``master``, ``node``, ``descriptions``,
+                       ``source``), ``ros2`` (DDS, Cyclone DDS)
 ``values``             bounds on values from a graph (JSON, selection), echoes
 ``discovery``          robots (``robot_description`` namespaces) and their topics
 ``robot``              one robot identified, with its combinations' configurations
@@ -42,11 +40,11 @@ from solver.live.events import (
     event_data,
 )
 from solver.live.graph import MISSING, MasterError, MasterUnreachable, Observation
-from solver.live.master import MasterClient, master_uri
 from solver.live.query import LiveAssignment, assign_from_master
 from solver.live.render import json_line, render_event, render_live_assignment
 from solver.live.robot import LiveRobot, identify_robot
 from solver.live.selection import ActiveSelection, Request
+from solver.live.sources.ros1.master import MasterClient, master_uri
 from solver.live.watcher import Watcher
 
 __all__ = [

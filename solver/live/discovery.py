@@ -21,7 +21,7 @@ Identification then reads sensors from what is published and commands from what 
 ``rosout``, diagnostics) are left out before identification: their coming and going changes
 nothing, and leaving them out keeps the cached identification valid.
 
-Not here: reading the master (:mod:`solver.live.master`), identifying (:mod:`solver.live.robot`).
+Not here: reading a graph (:mod:`solver.live.sources`), identifying (:mod:`solver.live.robot`).
 """
 
 from __future__ import annotations

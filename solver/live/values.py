@@ -4,8 +4,8 @@ Every value on a graph (a ROS 1 parameter, a ROS 2 message) was written by a str
 operator's selection, the answer another watcher left, a description. Each is bounded before
 it is parsed, compared or formatted:
 
-* XML-RPC values (ROS 1): the transport's bounds (:mod:`solver.live.rpc`: bytes per reply,
-  nesting depth, a deadline);
+* XML-RPC values (ROS 1): the transport's bounds (:mod:`~solver.live.sources.ros1.rpc`: bytes
+  per reply, nesting depth, a deadline);
 * JSON text (the ROS 2 answer topic ``/teleop_ui/ui_configuration``): at most
   :data:`MAX_JSON_CHARS` characters and :data:`MAX_DEPTH` levels of nesting, both checked by
   one linear scan before the decoder runs (:func:`bounded_json`);
@@ -16,7 +16,7 @@ it is parsed, compared or formatted:
 :func:`shown_value` is what a note or an error shows of such a value: escaped, cut, and for
 anything but text and numbers only its kind.
 
-Not here: reading the values (:mod:`solver.live.master`, :mod:`solver.live.sources.ros2`).
+Not here: reading the values (:mod:`solver.live.sources`).
 """
 
 from __future__ import annotations

@@ -27,7 +27,7 @@ from typing import Any, TypeVar
 from xmlrpc.server import SimpleXMLRPCRequestHandler, SimpleXMLRPCServer
 
 from solver.live.graph import MasterError
-from solver.live.master import MasterClient
+from solver.live.sources.ros1.master import MasterClient
 from tests.processes import end, marked
 
 T = TypeVar("T")

@@ -16,7 +16,7 @@ import pytest
 
 from solver.core.solution import Solution
 from solver.live.graph import MISSING
-from solver.live.master import MasterClient
+from solver.live.sources.ros1.master import MasterClient
 from tests.conftest import ROOT, run_cli
 from tests.live.fleet import drone_configuration, put_drone, put_rover, rover_configuration
 from tests.live.roscore import Roscore, TestNode, free_port, roscore_available, wait_until

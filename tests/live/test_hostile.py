@@ -39,8 +39,8 @@ from solver.identify.identification import Identification, IdentificationCache
 from solver.identify.profile import Profile
 from solver.identify.readers.safexml import MAX_XML_BYTES
 from solver.live.events import event_data
-from solver.live.master import MasterClient
-from solver.live.rpc import MAX_REPLY_BYTES
+from solver.live.sources.ros1.master import MasterClient
+from solver.live.sources.ros1.rpc import MAX_REPLY_BYTES
 from solver.live.values import MAX_SELECTION_CHARS
 from solver.live.watcher import Watcher
 from tests.conftest import ROOT, run_cli

@@ -11,7 +11,7 @@ from solver.core.team import load_team
 from solver.identify.profile import Profile
 from solver.live.events import event_data
 from solver.live.graph import MISSING
-from solver.live.master import MasterClient
+from solver.live.sources.ros1.master import MasterClient
 from solver.live.watcher import Watcher
 from tests.conftest import TEAMS
 from tests.live.conftest import Recorder

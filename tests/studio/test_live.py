@@ -15,7 +15,7 @@ from playwright.sync_api import Page, expect
 
 from solver import load_team, solve
 from tests.live.fleet import drone_configuration, rover_configuration
-from tests.live.test_ros2 import Domain
+from tests.live.sources.test_ros2 import Domain
 from tests.studio.conftest import StartStudio
 
 

@@ -18,8 +18,8 @@ the rmw sources define it; this module reads that mapping back:
 * ``robot_state_publisher`` publishes ``/<ns>/robot_description`` (``std_msgs/msg/String``)
   reliable and transient-local, once: the reader here asks for transient-local to get it late.
 
-Robots are then found as on a ROS 1 master: the graph is turned into the same
-:class:`~solver.live.master.Observation` (a written ``rt/<ns>/robot_description`` stands for the
+Robots are then found as on a ROS 1 master: the graph is turned into the neutral
+:class:`~solver.live.graph.Observation` (a written ``rt/<ns>/robot_description`` stands for the
 parameter ``/<ns>/robot_description``), and :mod:`solver.live.discovery` does the rest.
 
 The operator's selection and the answer are topics (ROS 2 has no parameter server), all

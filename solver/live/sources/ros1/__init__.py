@@ -2,8 +2,12 @@
 Python packages needed.
 
 =================  =====================================================================
-``source``         :class:`MasterGraph`: the master, the watcher's node and descriptions,
-                   as the watcher's :class:`~solver.live.graph.GraphSource`
+``rpc``            bounded XML-RPC: one deadline per whole call, byte and depth caps
+``master``         the master's API (:class:`MasterClient`): checked replies, errors
+``node``           the watcher's own node API, where the master says what changed
+``descriptions``   description parameters, fetched once, re-read when said to change
+``source``         :class:`MasterGraph`: all of the above as the watcher's
+                   :class:`~solver.live.graph.GraphSource`
 =================  =====================================================================
 
 Not here: what the graph means (:mod:`solver.live.discovery`), the ROS 2 source

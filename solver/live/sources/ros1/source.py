@@ -1,9 +1,10 @@
 """A ROS 1 master as the watcher's graph source: :class:`MasterGraph`.
 
-It puts together the master's API (:class:`~solver.live.master.MasterClient`: bounded calls,
-checked replies), the watcher's own node (:class:`~solver.live.node.NodeServer`, where the
-master says which parameters changed) and the description parameters it follows
-(:class:`~solver.live.descriptions.Descriptions`), behind the
+It puts together the master's API (:class:`~solver.live.sources.ros1.master.MasterClient`:
+bounded calls, checked replies), the watcher's own node
+(:class:`~solver.live.sources.ros1.node.NodeServer`, where the master says which parameters
+changed) and the description parameters it follows
+(:class:`~solver.live.sources.ros1.descriptions.Descriptions`), behind the
 :class:`~solver.live.graph.GraphSource` the watcher and ``assign`` use for every graph.
 
 *Rival watchers.* The answer on the master names the watcher that wrote it (its node name).
@@ -30,10 +31,10 @@ import time
 from collections.abc import Callable
 from typing import Any, Final
 
-from solver.live.descriptions import Descriptions
 from solver.live.graph import DescriptionStore, MasterError, MasterUnreachable, Observation
-from solver.live.master import MasterClient, node_api
-from solver.live.node import NodeServer, callback_host
+from solver.live.sources.ros1.descriptions import Descriptions
+from solver.live.sources.ros1.master import MasterClient, node_api
+from solver.live.sources.ros1.node import NodeServer, callback_host
 from solver.untrusted import shown
 
 __all__ = ["PROBE_AGAIN", "PROBE_TIMEOUT", "RELEASE_BUDGET", "MasterGraph"]

@@ -16,9 +16,10 @@ standard transport, and every call through it:
   does not build values nested deeper than :data:`MAX_DEPTH` arrays and structs: each such
   value is :data:`TOO_DEEP` instead, so the caller reports a value of the wrong kind.
 
-:func:`loads` is the same parser for requests (the watcher's own node API, :mod:`solver.live.node`).
+:func:`loads` is the same parser for requests (the watcher's own node API,
+:mod:`~solver.live.sources.ros1.node`).
 
-Not here: what a reply means (:mod:`solver.live.master`).
+Not here: what a reply means (:mod:`solver.live.sources.ros1.master`).
 """
 
 from __future__ import annotations

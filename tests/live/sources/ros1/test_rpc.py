@@ -15,8 +15,8 @@ from collections.abc import Callable, Iterator
 import pytest
 
 from solver.live.graph import MAX_DEPTH, TOO_DEEP, MasterError, MasterUnreachable
-from solver.live.master import MasterClient, ReplyTooLarge
-from solver.live.rpc import MAX_REPLY_BYTES, loads
+from solver.live.sources.ros1.master import MasterClient, ReplyTooLarge
+from solver.live.sources.ros1.rpc import MAX_REPLY_BYTES, loads
 from tests.live.hostile import (
     Behaviour,
     RawServer,

@@ -3,9 +3,9 @@
 A robot description is the largest thing on a parameter server (tens of kilobytes to
 megabytes of URDF), and the master has no version stamp to poll. So :class:`Descriptions`
 fetches a description once, with ``subscribeParam``, and from then on the master calls the
-watcher's node (:mod:`solver.live.node`) when it changes, which hands the key to :meth:`push`;
-polls only read parameter *names*. Without a node (a one-shot snapshot) values are read with
-``getParam``, all in one round trip.
+watcher's node (:mod:`~solver.live.sources.ros1.node`) when it changes, which hands the key
+to :meth:`push`; polls only read parameter *names*. Without a node (a one-shot snapshot)
+values are read with ``getParam``, all in one round trip.
 
 A push is a hint, never a value: the watcher's node API is an open port, and anyone who can
 reach it can call ``paramUpdate`` with any value. :meth:`push` only marks the key stale; the
@@ -13,7 +13,7 @@ next :meth:`sync` (on the loop thread) reads it from the master again. A push th
 while a key is being read marks it stale again, so the newest value always wins.
 
 A description whose reply is larger than the transport's cap
-(:data:`solver.live.rpc.MAX_REPLY_BYTES`) is that robot's error (an
+(:data:`solver.live.sources.ros1.rpc.MAX_REPLY_BYTES`) is that robot's error (an
 :class:`~solver.errors.InputError` as its value), not the master's.
 
 Not here: which keys are descriptions (:mod:`solver.live.discovery`).
@@ -28,7 +28,7 @@ from typing import Any
 
 from solver.errors import InputError
 from solver.live.graph import MISSING, MasterError, MasterUnreachable
-from solver.live.master import MasterClient, ReplyTooLarge
+from solver.live.sources.ros1.master import MasterClient, ReplyTooLarge
 
 __all__ = ["Descriptions"]
 

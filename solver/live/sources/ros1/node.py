@@ -17,15 +17,17 @@ the local address of the route to the master.
 
 *What it trusts.* ROS 1 has no authentication: anyone who can reach this port can call it, with
 any caller id. So nothing a call carries is believed: ``paramUpdate`` passes on only the *key*
-(the watcher reads the value from the master again, :mod:`solver.live.descriptions`), and its
-value is never used; ``shutdown`` stops the watcher, as it stops every ROS 1 node
+(the watcher reads the value from the master again, :mod:`~solver.live.sources.ros1.descriptions`),
+and its value is never used; ``shutdown`` stops the watcher, as it stops every ROS 1 node
 (``rosnode kill`` sends it), which changes no answer the watcher gives. Requests are bounded as
-replies are (:mod:`solver.live.rpc`): at most :data:`~solver.live.rpc.MAX_REPLY_BYTES` of body,
-no DTD, values nested deeper than :data:`~solver.live.rpc.MAX_DEPTH` not built; a connection
-that stalls is dropped after :data:`REQUEST_TIMEOUT` seconds per read, and at most
-:data:`MAX_CONNECTIONS` requests are served at once (more are closed unanswered).
+replies are (:mod:`~solver.live.sources.ros1.rpc`): at most
+:data:`~solver.live.sources.ros1.rpc.MAX_REPLY_BYTES` of body, no DTD, values nested deeper
+than :data:`~solver.live.graph.MAX_DEPTH` not built; a connection that stalls is dropped after
+:data:`REQUEST_TIMEOUT` seconds per read, and at most :data:`MAX_CONNECTIONS` requests are
+served at once (more are closed unanswered).
 
-Not here: what an update means (:mod:`solver.live.descriptions`, :mod:`solver.live.watcher`).
+Not here: what an update means (:mod:`~solver.live.sources.ros1.descriptions`,
+:mod:`solver.live.watcher`).
 """
 
 from __future__ import annotations
@@ -41,8 +43,8 @@ from urllib.parse import urlsplit
 from xmlrpc.server import SimpleXMLRPCRequestHandler, SimpleXMLRPCServer
 
 from solver.errors import InputError
-from solver.live.master import is_loopback
-from solver.live.rpc import MAX_REPLY_BYTES, loads
+from solver.live.sources.ros1.master import is_loopback
+from solver.live.sources.ros1.rpc import MAX_REPLY_BYTES, loads
 
 __all__ = ["MAX_CONNECTIONS", "REQUEST_TIMEOUT", "NodeServer", "callback_host"]
 
@@ -73,7 +75,7 @@ def callback_host(master: str) -> str:
 
 class _Server(socketserver.ThreadingMixIn, SimpleXMLRPCServer):
     """A thread per request, at most :data:`MAX_CONNECTIONS` at once; requests parsed by the
-    bounded parser (:func:`solver.live.rpc.loads`)."""
+    bounded parser (:func:`solver.live.sources.ros1.rpc.loads`)."""
 
     daemon_threads = True
     allow_reuse_address = True

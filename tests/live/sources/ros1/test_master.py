@@ -13,7 +13,7 @@ import pytest
 
 from solver.errors import InputError
 from solver.live.graph import MISSING, MasterError, MasterUnreachable
-from solver.live.master import MasterClient, is_loopback, master_uri
+from solver.live.sources.ros1.master import MasterClient, is_loopback, master_uri
 from tests.live.roscore import Roscore, TestNode, free_port
 
 

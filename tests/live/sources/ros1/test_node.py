@@ -10,10 +10,10 @@ from typing import Any
 import pytest
 
 from solver.errors import InputError
-from solver.live.descriptions import Descriptions
 from solver.live.graph import MISSING
-from solver.live.master import MasterClient
-from solver.live.node import NodeServer, callback_host
+from solver.live.sources.ros1.descriptions import Descriptions
+from solver.live.sources.ros1.master import MasterClient
+from solver.live.sources.ros1.node import NodeServer, callback_host
 from tests.live.roscore import Roscore, TestNode
 
 TIMEOUT = 60.0

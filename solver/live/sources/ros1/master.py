@@ -15,16 +15,16 @@ can go wrong into one of the graph's two errors (:mod:`solver.live.graph`):
   :class:`ReplyTooLarge` when the reply is past the byte cap (a caller may treat that as the
   value's fault rather than the master's).
 
-Every call is bounded (:mod:`solver.live.rpc`): one deadline for the whole call, however
-slowly the reply trickles in; a cap on the bytes of a reply (compressed or not); values nested
-too deep are not built. A master that hangs, floods or nests is reported instead of hanging or
-exhausting the caller. Connections are kept alive between calls (rosmaster speaks HTTP/1.1).
-:meth:`MasterClient.observe` reads everything one poll needs in a
-single round trip through ``system.multicall``, which rosmaster's server offers; against a
-master without it, it falls back to one call per method.
+Every call is bounded (:mod:`~solver.live.sources.ros1.rpc`): one deadline for the whole call,
+however slowly the reply trickles in; a cap on the bytes of a reply (compressed or not);
+values nested too deep are not built. A master that hangs, floods or nests is reported instead
+of hanging or exhausting the caller. Connections are kept alive between calls (rosmaster speaks
+HTTP/1.1). :meth:`MasterClient.observe` reads everything one poll needs in a single round trip
+through ``system.multicall``, which rosmaster's server offers; against a master without it, it
+falls back to one call per method.
 
 Not here: what the graph means (:mod:`solver.live.discovery`), answering the master's calls to
-a node (:mod:`solver.live.node`).
+a node (:mod:`solver.live.sources.ros1.node`).
 """
 
 from __future__ import annotations
@@ -42,7 +42,7 @@ from xml.parsers.expat import ExpatError
 
 from solver.errors import InputError
 from solver.live.graph import MISSING, MasterError, MasterUnreachable, Observation
-from solver.live.rpc import BoundedTransport, OversizedReply
+from solver.live.sources.ros1.rpc import BoundedTransport, OversizedReply
 from solver.untrusted import shown
 
 __all__ = [
@@ -58,7 +58,8 @@ CALLER_ERROR: Final = -1
 
 
 class ReplyTooLarge(MasterError):
-    """The reply was longer than :data:`solver.live.rpc.MAX_REPLY_BYTES` (it was not read)."""
+    """The reply was longer than :data:`~solver.live.sources.ros1.rpc.MAX_REPLY_BYTES` (it was
+    not read)."""
 
 
 # A host name as DNS and /etc/hosts have them (an IP address literal is checked apart).
@@ -137,8 +138,9 @@ def is_loopback(uri: str) -> bool:
 class MasterClient:
     """Calls to one ROS master as one caller (a ROS node name such as ``/teleop_ui_watch``).
 
-    ``timeout`` bounds each whole call (see :mod:`solver.live.rpc`). Not thread-safe: one
-    client per thread (the standard library's proxy is not), except :meth:`cut_off`.
+    ``timeout`` bounds each whole call (see :mod:`~solver.live.sources.ros1.rpc`). Not
+    thread-safe: one client per thread (the standard library's proxy is not), except
+    :meth:`cut_off`.
     """
 
     def __init__(self, uri: str, *, caller_id: str = "/teleop_ui", timeout: float = 2.0) -> None:
