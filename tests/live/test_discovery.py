@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from solver.identify.profile import Profile
@@ -14,6 +14,10 @@ from solver.live.discovery import (
 )
 from solver.live.graph import Observation
 from solver.ros.names import Topic
+
+# Pure functions, but a loaded machine can take longer than hypothesis's default 200 ms for an
+# example: no deadline (durations are measured by the benchmarks, not asserted by tests).
+NO_DEADLINE = settings(deadline=None)
 
 IMAGE = "sensor_msgs/Image"
 TWIST = "geometry_msgs/Twist"
@@ -62,6 +66,7 @@ _segment = st.from_regex(r"[a-z][a-z0-9_]{0,6}", fullmatch=True)
 _namespace = st.lists(_segment, max_size=3).map(lambda parts: "/" + "/".join(parts))
 
 
+@NO_DEADLINE
 @given(st.lists(_namespace, max_size=6))
 def test_robot_namespaces_are_exactly_those_with_a_description(namespaces: list[str]) -> None:
     names = [ns.rstrip("/") + "/robot_description" for ns in namespaces]
@@ -160,6 +165,7 @@ def test_discover_finds_the_moveit_semantic_description_beside_the_urdf(profile:
     assert (uav.namespace, uav.semantic_key) == ("/uav1", None)
 
 
+@NO_DEADLINE
 @given(
     st.lists(_namespace, min_size=1, max_size=5, unique=True),
     st.lists(st.lists(_segment, min_size=1, max_size=4), max_size=12),
@@ -189,6 +195,7 @@ def _deepest(name: str, namespaces: list[str]) -> str | None:
     return max(inside, key=len, default=None)
 
 
+@NO_DEADLINE
 @given(
     st.lists(_namespace, min_size=1, max_size=5, unique=True),
     st.lists(st.lists(_segment, min_size=1, max_size=4), max_size=12),
