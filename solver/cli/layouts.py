@@ -14,8 +14,11 @@ def register(subparsers: Any) -> None:
     parser: argparse.ArgumentParser = subparsers.add_parser(
         "layouts",
         help="write one viewer layout per UI configuration, plus the default",
-        description="Write a Foxglove / Lichtblick layout JSON for every UI configuration of a "
-        "team and for the default configuration; topics are <robot>/... templates.",
+        description="Write a Foxglove / Lichtblick layout JSON (or an RViz2 file) for every UI "
+        "configuration of a team and for the default configuration, into a folder written as "
+        "one unit (an earlier run's layouts there are replaced, those no longer written "
+        "removed). Topics are in the root namespace (/cmd_vel; RViz2: relative, cmd_vel) or "
+        "under --namespace.",
     )
     parser.add_argument(
         "team",
@@ -44,9 +47,19 @@ def register(subparsers: Any) -> None:
         help="with --robot: a bag (ROS 1 .bag or ROS 2 folder) the robot recorded; "
         "panels take its topics instead of the templates",
     )
+    parser.add_argument(
+        "--namespace",
+        metavar="/NAME",
+        help="the robot's ROS namespace: every topic under it (/NAME/cmd_vel); with --robot "
+        "the default is /ROBOT_NAME",
+    )
     add_rules(parser)
     parser.add_argument(
-        "-o", "--output", metavar="DIR", required=True, help="directory for the layout files"
+        "-o",
+        "--output",
+        metavar="DIR",
+        required=True,
+        help="directory for the layout files (with --robot: the file)",
     )
     # The targets' table (solver.layouts.targets) checks the name when the command runs: its
     # import would slow every start of the command line.
@@ -75,7 +88,7 @@ def register(subparsers: Any) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from solver.core.solution import solve
-    from solver.layouts import load_presentation, write_layouts
+    from solver.layouts import load_presentation
 
     if args.preview and args.format != "foxglove":
         from solver.errors import InputError
@@ -92,27 +105,38 @@ def run(args: argparse.Namespace) -> int:
         from solver.errors import InputError
 
         raise InputError.at("TEAM.yaml", "a team is needed (or --robot URDF --team TEAM)")
+    from solver.layouts.plan import check_namespace
+    from solver.layouts.writer import write_layout_folder
+
+    namespace = check_namespace(args.namespace, "--namespace") if args.namespace else None
     team = load_team_argument(args.team, args.rules)
     solution = solve(team)
     # A user's presentation is checked against the rule set; the shipped one serves every one.
     presentation = load_presentation(
         args.presentation, solution.rules if args.presentation else None
     )
-    paths = write_layouts(solution, presentation, args.output, args.format)
-    write(f"wrote {len(paths)} layouts to {shown(args.output, limit=SHOWN_FILE_NAME_CHARS)}\n")
+    done = write_layout_folder(
+        solution,
+        presentation,
+        args.output,
+        args.format,
+        namespace=namespace,
+        preview=args.preview,
+    )
+    layouts = len(done.paths) - (1 if args.preview else 0)
+    write(f"wrote {layouts} layouts to {shown(args.output, limit=SHOWN_FILE_NAME_CHARS)}\n")
     if args.preview:
-        import json
-        from pathlib import Path
-
-        from solver.files.atomic import write_atomic
-        from solver.layouts.preview import preview_html
-
-        page = Path(args.output) / "preview.html"
-        write_atomic(
-            page, preview_html([(path.name, json.loads(path.read_text())) for path in paths])
-        )
-        write(f"wrote {shown(str(page), limit=SHOWN_FILE_NAME_CHARS)}\n")
+        write(f"wrote {shown(str(done.paths[-1]), limit=SHOWN_FILE_NAME_CHARS)}\n")
+    if done.replaced:
+        write(f"replaced {len(done.replaced)} files of an earlier run: {_names(done.replaced)}\n")
+    if done.removed:
+        write(f"removed {len(done.removed)} files of an earlier run: {_names(done.removed)}\n")
     return 0
+
+
+def _names(names: tuple[str, ...], shown: int = 6) -> str:
+    more = len(names) - shown
+    return ", ".join(names[:shown]) + (f" and {more} more" if more > 0 else "")
 
 
 def _robot(args: argparse.Namespace) -> int:
@@ -121,21 +145,30 @@ def _robot(args: argparse.Namespace) -> int:
     from solver.files.atomic import write_atomic
     from solver.identify import identify_urdf
     from solver.identify.combinations import combinations
+    from solver.identify.joints import command_joints
     from solver.identify.profile import load_profile
     from solver.identify.readers.safexml import read_bytes
+    from solver.identify.urdf import parse_urdf
     from solver.layouts import load_presentation
+    from solver.layouts.plan import check_namespace
     from solver.layouts.robot import robot_layout
 
     if not args.robot_team:
         raise InputError.at("--robot", "--robot needs --team TEAM.yaml")
     solution = solve(load_team_argument(args.robot_team, args.rules))
     profile = load_profile(args.profile)
+    description = read_bytes(args.robot, display=args.robot)
     identification = identify_urdf(
-        read_bytes(args.robot, display=args.robot),
-        file=args.robot,
-        rules=solution.rules,
-        profile=profile,
+        description, file=args.robot, rules=solution.rules, profile=profile
     )
+    if args.namespace:
+        namespace = check_namespace(args.namespace, "--namespace")
+    else:
+        namespace = check_namespace(
+            "/" + identification.robot,
+            args.robot,
+            what="; the robot's name makes its namespace: give one with --namespace /NAME",
+        )
     # The robot's first control mode and sensor type: the combination it starts in.
     assignment = combinations(identification, solution, profile)[0].assignment
     presentation = load_presentation(
@@ -147,9 +180,12 @@ def _robot(args: argparse.Namespace) -> int:
         assignment,
         presentation,
         args.format,
-        robot="/" + identification.robot,
+        namespace=namespace,
         topics=topics,
         topics_source=source,
+        joints=command_joints(
+            parse_urdf(description, args.robot, strict=False), identification.body
+        ),
         file=args.output,
     )
     for warning in layout.warnings:

@@ -23,6 +23,7 @@ Modules, one concept each:
 ``sensors``              sensors from URDF, merged, mapped to sensor types
 ``interfaces``           sensors and motion controls from topic triples
 ``motion``               motion controls the description itself shows
+``joints``               the joints a joint command names, with safe start positions
 ``identification``       :func:`identify` / :func:`identify_urdf`, the cache
 ``combinations``         characteristic combinations -> UI configurations
 ``fleet``                a folder of robots -> a team selection

@@ -3,10 +3,12 @@
 ==================  ===============================================================
 ``presentation``    the presentation: component -> panel, topic template
 ``tiling``          the sensor-count arrangement as a number of tiles; the split tree
+``plan``            what a layout shows for a robot (or a template): panels, names, topics
+``samples``         the whole message a Publish panel holds
 ``foxglove``        Foxglove / Lichtblick layout JSON; its validation
 ``rviz``            RViz2 ``.rviz`` YAML; its validation
 ``targets``         the table of targets (foxglove, rviz): extension, how made and checked
-``writer``          writing every configuration's layout, validated first
+``writer``          writing every configuration's layout into a folder, as one unit
 ``robot``           one robot's layout under its namespace, fed by its real topics
 ``topics``          a robot's real topics in place of the templates
 ``preview``         a layout's panel tree as an SVG thumbnail
@@ -24,14 +26,17 @@ from solver.layouts.foxglove import (
     layout_filename,
     validate_foxglove,
 )
+from solver.layouts.plan import JointStart, Robot
 from solver.layouts.presentation import PanelSpec, Presentation, load_presentation
 from solver.layouts.rviz import rviz_layout, validate_rviz
 from solver.layouts.writer import write_layouts
 
 __all__ = [
+    "JointStart",
     "LayoutError",
     "PanelSpec",
     "Presentation",
+    "Robot",
     "foxglove_layout",
     "layout_filename",
     "load_presentation",

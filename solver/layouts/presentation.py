@@ -17,10 +17,12 @@ from solver.core.rules import RuleSet
 from solver.errors import SolverError
 from solver.files.reader import Reader
 from solver.files.yamlio import load_document
+from solver.ros.names import full_topic_name_problem
 from solver.untrusted import shown
 
 __all__ = [
     "PANEL_TYPES",
+    "ROBOT",
     "PanelSpec",
     "Presentation",
     "PresentationError",
@@ -28,6 +30,8 @@ __all__ = [
     "load_presentation",
 ]
 
+# The presentation's placeholder for the robot's namespace in a topic template.
+ROBOT = "<robot>"
 # The Foxglove / Lichtblick panel types a generated layout may use (their registered ids).
 PANEL_TYPES = ("3D", "Image", "Indicator", "Plot", "Publish", "RawMessages", "Teleop")
 
@@ -60,7 +64,7 @@ class Presentation:
             if spec.component == component:
                 return spec
         # Never a silent drop: an unmapped component still gets a panel, named as such.
-        return PanelSpec(component, "RawMessages", f"<robot>/{_slug(component)}", (), True)
+        return PanelSpec(component, "RawMessages", f"{ROBOT}/{_slug(component)}", (), True)
 
 
 def default_presentation_path() -> Path:
@@ -100,6 +104,13 @@ def load_presentation(path: str | Path | None = None, rules: RuleSet | None = No
                     code="unknown-reference",
                 )
             topic = reader.string((*path_, "topic"), "topic", limit=None)
+            problem = _topic_problem(topic) if topic else None
+            if problem:
+                reader.fault(
+                    (*path_, "topic"),
+                    f"the topic under a robot (/robot1) {problem}",
+                    code="invalid-name",
+                )
             raw_types = entry.get("types") or []
             types = tuple(str(item) for item in raw_types) if isinstance(raw_types, list) else ()
             panels.append(PanelSpec(name, panel, topic, types, entry.get("placeholder") is True))
@@ -108,5 +119,18 @@ def load_presentation(path: str | Path | None = None, rules: RuleSet | None = No
     return Presentation(document.file, tuple(panels))
 
 
+def _topic_problem(template: str) -> str | None:
+    """Why ``template`` is no ROS 2 topic once under a robot's namespace, or None."""
+    if template.startswith(ROBOT):
+        name = "/robot1" + template[len(ROBOT) :]
+    elif template.startswith("/"):
+        name = template
+    else:
+        name = "/robot1/" + template
+    return full_topic_name_problem(name)
+
+
 def _slug(name: str) -> str:
-    return "".join(char if char.isalnum() else "_" for char in name.lower())
+    """``name`` as a ROS name part: letters, digits and '_', not starting with a digit."""
+    slug = "".join(char if char.isascii() and char.isalnum() else "_" for char in name.lower())
+    return f"component_{slug}" if not slug or slug[0].isdigit() else slug

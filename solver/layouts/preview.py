@@ -39,7 +39,9 @@ def preview_svg(layout: dict[str, Any], width: int = 320, height: int = 200) -> 
     def draw(node: Any, x: float, y: float, w: float, h: float) -> None:
         if isinstance(node, str):
             kind = node.partition("!")[0]
-            title = str(layout["configById"].get(node, {}).get("foxglovePanelTitle", kind))
+            config = layout["configById"].get(node, {})
+            # What the app shows: the title, or a Raw Messages panel's topic path.
+            title = str(config.get("foxglovePanelTitle", config.get("topicPath", kind)))
             shapes.append(
                 f'<rect x="{x:.1f}" y="{y:.1f}" width="{w:.1f}" height="{h:.1f}" '
                 f'fill="{COLOURS.get(kind, "#8c8c8c")}" stroke="#ffffff" stroke-width="2"/>'

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from solver.core.assignment import Assignment
 from solver.core.solution import Solution
 from solver.errors import Fault
-from solver.layouts.foxglove import panel_entries
+from solver.layouts.plan import JointStart, Robot, panel_entries
 from solver.layouts.presentation import Presentation
 from solver.layouts.targets import target
 from solver.layouts.topics import match_topics
@@ -51,19 +51,22 @@ def robot_layout(
     presentation: Presentation,
     fmt: str = "foxglove",
     *,
-    robot: str,
+    namespace: str,
     topics: Sequence[Topic] | None = None,
     topics_source: str = "<topics>",
+    joints: Sequence[JointStart] | None = None,
     file: str = "<layout>",
 ) -> RobotLayout:
-    """The layout of ``assignment``'s configuration for the robot named ``robot`` (its
-    namespace, ``/name``); with ``topics``, panels take the robot's real topics."""
+    """The layout of ``assignment``'s configuration for the robot under ``namespace``
+    (``/name``); with ``topics``, panels take the robot's real topics; ``joints`` (from its
+    description) fill a joint command."""
     tile_count = _tile_count(solution, assignment)
-    real: dict[tuple[str, int], str] = {}
+    real: dict[tuple[str, int], Topic] = {}
     warnings: tuple[Fault, ...] = ()
     if topics is not None:
         entries = panel_entries(solution, assignment.configuration, presentation, tile_count)
-        real, warnings = match_topics(entries, topics, topics_source)
+        real, warnings = match_topics(entries, topics, topics_source, namespace)
+    robot = Robot(namespace, real, tuple(joints) if joints else None)
     text = target(fmt).render(
         solution,
         assignment.configuration,
@@ -71,6 +74,5 @@ def robot_layout(
         file=file,
         robot=robot,
         tile_count=tile_count,
-        topics=real,
     )
     return RobotLayout(text, warnings)

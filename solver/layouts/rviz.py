@@ -1,18 +1,24 @@
 """RViz2 ``.rviz`` files, one per UI configuration, and their validation.
 
-Displays come from the message types the presentation profile lists for each component,
-mapped to the ``rviz_default_plugins`` display that accepts them (as its plugin description
-declares). Sensor streams subscribe best-effort; ``/robot_description`` is transient-local so a
-late RViz still gets the model. RViz2 has no display for velocity commands, joint commands or
-audio: such a component gets a disabled ``Marker`` display named as a placeholder, never a
-silent drop.
+Each panel of the plan (:mod:`solver.layouts.plan`) becomes the ``rviz_default_plugins``
+display that shows its topic's message type (as the plugin description declares it): the
+real topic's type when the robot's topics are known (a ``LaserScan`` gets a LaserScan
+display), else the first type the presentation lists that RViz2 shows. Sensor streams
+subscribe best-effort; the robot description is read transient-local in the robot's namespace
+(``robot_state_publisher`` publishes it in its own), so a late RViz still gets the model. RViz2
+has no display for velocity commands, joint commands or audio: such a component gets an empty,
+disabled display group named as a placeholder, which subscribes to nothing (never a silent
+drop). The goal tool publishes on the configuration's goal-pose topic (a waypoint's, else an
+end effector's) and is left out when the configuration has none.
+
+A template names topics relative to RViz2's own namespace (``camera/image_raw``), re-targeted
+to a robot with ``rviz2 -d FILE --ros-args -r __ns:=/robot1``; the file's first lines say so.
 
 Not here: the component -> panel mapping (:mod:`solver.layouts.presentation`).
 """
 
 from __future__ import annotations
 
-from collections.abc import Mapping
 from typing import Any
 
 import yaml
@@ -21,11 +27,20 @@ from solver.core.partition import Configuration
 from solver.core.solution import Solution
 from solver.errors import Fault, Location
 from solver.files.yamlio import parse_document
-from solver.layouts.foxglove import LayoutError, panel_entries, template_topic
-from solver.layouts.presentation import PanelSpec, Presentation
+from solver.layouts.foxglove import LayoutError
+from solver.layouts.plan import Panel, Plan, Robot, plan_layout
+from solver.layouts.presentation import Presentation
+from solver.ros.names import normalise_type
 from solver.untrusted import shown
 
-__all__ = ["REQUIRED_KEYS", "rviz_layout", "rviz_text", "validate_rviz"]
+__all__ = [
+    "REQUIRED_KEYS",
+    "plan_rviz",
+    "rviz_layout",
+    "rviz_note",
+    "rviz_text",
+    "validate_rviz",
+]
 
 # Message type -> the rviz_default_plugins display that accepts it.
 DISPLAYS = {
@@ -36,7 +51,11 @@ DISPLAYS = {
     "geometry_msgs/WrenchStamped": "Wrench",
     "geometry_msgs/PoseStamped": "Pose",
 }
-REQUIRED_KEYS = ("Class", "Enabled", "Name", "Value")
+# image_transport: RViz2's Image display shows a CompressedImage topic named .../compressed.
+_TRANSPORTS = ("compressed", "compressedDepth")
+_SENSORS = ("Image", "PointCloud2", "LaserScan", "Wrench")
+# Every display has these (a display group saves no Value: navigation2's default view).
+REQUIRED_KEYS = ("Class", "Enabled", "Name")
 
 
 def _qos(topic: str, *, sensor: bool) -> dict[str, Any]:
@@ -49,23 +68,37 @@ def _qos(topic: str, *, sensor: bool) -> dict[str, Any]:
     }
 
 
-def _display(spec: PanelSpec, topic: str, tile: int, count: int) -> dict[str, Any]:
-    name = spec.component + (f" {tile + 1}" if count > 1 else "")
-    kind = next((DISPLAYS[t] for t in spec.types if t in DISPLAYS), None)
+def _kind(panel: Panel) -> str | None:
+    """The display that shows the panel's topic, or None."""
+    for datatype in panel.types:
+        kind = DISPLAYS.get(normalise_type(datatype))
+        if kind is None:
+            continue
+        last = panel.topic.rpartition("/")[2]
+        compressed = normalise_type(datatype) == "sensor_msgs/CompressedImage"
+        if compressed and panel.real and last not in _TRANSPORTS:
+            continue  # RViz2 finds a compressed stream only under its transport's name
+        return kind
+    return None
+
+
+def _display(panel: Panel) -> dict[str, Any]:
+    kind = _kind(panel)
     if kind is None:
+        # A display group subscribes to nothing: enabling it shows nothing, never a wrong type.
+        # Its name says which topic the component would use.
         return {
-            "Class": "rviz_default_plugins/Marker",
+            "Class": "rviz_common/Group",
+            "Displays": [],
             "Enabled": False,
-            "Name": f"{name} (placeholder: no RViz2 display for this component)",
-            "Topic": _qos(topic, sensor=False),
-            "Value": False,
+            "Name": f"{panel.name}: {panel.topic} (placeholder: no RViz2 display for this "
+            "component)",
         }
-    sensor = kind in ("Image", "PointCloud2", "LaserScan", "Wrench")
     return {
         "Class": f"rviz_default_plugins/{kind}",
         "Enabled": True,
-        "Name": name,
-        "Topic": _qos(topic, sensor=sensor),
+        "Name": panel.name,
+        "Topic": _qos(panel.topic, sensor=kind in _SENSORS),
         "Value": True,
     }
 
@@ -73,16 +106,21 @@ def _display(spec: PanelSpec, topic: str, tile: int, count: int) -> dict[str, An
 def rviz_layout(
     solution: Solution,
     configuration: Configuration | None,
-    profile: Presentation,
+    presentation: Presentation,
     *,
-    robot: str = "<robot>",
+    robot: Robot | None = None,
     tile_count: int | None = None,
-    topics: Mapping[tuple[str, int], str] | None = None,
 ) -> dict[str, Any]:
-    """The ``.rviz`` document of ``configuration`` (``None``: the default configuration).
+    """The ``.rviz`` document of ``configuration`` (``None``: the default configuration) for
+    ``robot`` (default: a template with relative topics)."""
+    plan = plan_layout(
+        solution, configuration, presentation, robot, tile_count=tile_count, relative=True
+    )
+    return plan_rviz(plan)
 
-    ``topics`` maps (component, tile) to a robot's real topic, as for Foxglove layouts.
-    """
+
+def plan_rviz(plan: Plan) -> dict[str, Any]:
+    """A plan as an ``.rviz`` document."""
     displays: list[dict[str, Any]] = [
         {"Class": "rviz_default_plugins/Grid", "Enabled": True, "Name": "Grid", "Value": True},
         {
@@ -93,23 +131,20 @@ def rviz_layout(
                 "Durability Policy": "Transient Local",
                 "History Policy": "Keep Last",
                 "Reliability Policy": "Reliable",
-                "Value": "/robot_description",
+                "Value": plan.topic("robot_description"),
             },
             "Enabled": True,
             "Name": "RobotModel",
             "Value": True,
         },
     ]
-    for spec, count in panel_entries(solution, configuration, profile, tile_count):
-        displays.extend(
-            _display(
-                spec,
-                (topics or {}).get((spec.component, tile))
-                or template_topic(spec, robot, tile, count),
-                tile,
-                count,
-            )
-            for tile in range(count)
+    displays.extend(_display(panel) for panel in plan.panels)
+    # The goal tool publishes only on the operator's click, on the configuration's goal topic.
+    tools: list[dict[str, Any]] = [{"Class": "rviz_default_plugins/Interact"}]
+    goals = sorted(plan.goals, key=lambda panel: panel.spec.component != "Waypoint")
+    if goals:
+        tools.append(
+            {"Class": "rviz_default_plugins/SetGoal", "Topic": _qos(goals[0].topic, sensor=False)}
         )
     return {
         "Panels": [{"Class": "rviz_common/Displays", "Name": "Displays"}],
@@ -119,14 +154,7 @@ def rviz_layout(
             "Enabled": True,
             "Global Options": {"Fixed Frame": "base_link", "Frame Rate": 30},
             "Name": "root",
-            # The goal tool publishes only on the operator's click.
-            "Tools": [
-                {"Class": "rviz_default_plugins/Interact"},
-                {
-                    "Class": "rviz_default_plugins/SetGoal",
-                    "Topic": _qos(f"{robot}/goal_pose", sensor=False),
-                },
-            ],
+            "Tools": tools,
             "Value": True,
             "Views": {
                 "Current": {
@@ -136,16 +164,42 @@ def rviz_layout(
                 }
             },
         },
+        # RViz2 reads both dock flags; without them it reads a flag it never set.
+        "Window Geometry": {
+            "Displays": {"collapsed": False},
+            "Height": 800,
+            "Hide Left Dock": False,
+            "Hide Right Dock": True,
+            "Width": 1200,
+            "X": 0,
+            "Y": 0,
+        },
     }
 
 
-def rviz_text(document: dict[str, Any]) -> str:
-    return yaml.safe_dump(document, sort_keys=False, default_flow_style=False, width=100)
+def rviz_note(plan: Plan) -> str:
+    """Whom the file is for and how to open it for a robot (its first lines, as comments)."""
+    which = f"teleop-ui: UI configuration {plan.number}" + (
+        " (the default)" if plan.default else ""
+    )
+    if any(not panel.topic.startswith("/") for panel in plan.panels):
+        return (
+            f"{which}. Topics are relative to RViz2's own namespace; for a robot under "
+            "/robot1:\n  rviz2 -d FILE --ros-args -r __ns:=/robot1"
+        )
+    return f"{which}, {plan.whom}."
+
+
+def rviz_text(document: dict[str, Any], note: str = "") -> str:
+    """The ``.rviz`` text: ``note`` as comments, then the document (RViz2 drops comments when it
+    saves the file again)."""
+    head = "".join(f"# {line}\n" for line in note.splitlines())
+    return head + yaml.safe_dump(document, sort_keys=False, default_flow_style=False, width=100)
 
 
 def validate_rviz(text: str, file: str = "<rviz>") -> None:
-    """Loads as YAML (through the project's one YAML reader); every display has Class, Enabled,
-    Name and Value."""
+    """Loads as YAML (through the project's one YAML reader); every display has Class, Enabled
+    and Name."""
     document = parse_document(text, file).data
     faults: list[Fault] = []
     displays = (document or {}).get("Visualization Manager", {}).get("Displays")

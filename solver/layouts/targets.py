@@ -13,7 +13,7 @@ one entry in :data:`TARGETS` (the command line's ``--format`` choices come from 
 from __future__ import annotations
 
 import json
-from collections.abc import Callable, Mapping
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Protocol
 
@@ -21,13 +21,12 @@ from solver.core.partition import Configuration
 from solver.core.solution import Solution
 from solver.errors import InputError
 from solver.layouts.foxglove import foxglove_layout, validate_foxglove
+from solver.layouts.plan import Robot, plan_layout
 from solver.layouts.presentation import Presentation
-from solver.layouts.rviz import rviz_layout, rviz_text, validate_rviz
+from solver.layouts.rviz import plan_rviz, rviz_note, rviz_text, validate_rviz
 from solver.untrusted import shown
 
 __all__ = ["TARGETS", "Target", "target"]
-
-Topics = Mapping[tuple[str, int], str]
 
 
 class Maker(Protocol):
@@ -39,9 +38,8 @@ class Maker(Protocol):
         configuration: Configuration | None,
         presentation: Presentation,
         *,
-        robot: str,
+        robot: Robot,
         tile_count: int | None,
-        topics: Topics,
     ) -> str: ...
 
 
@@ -61,18 +59,19 @@ class Target:
         presentation: Presentation,
         *,
         file: str,
-        robot: str = "<robot>",
+        robot: Robot | None = None,
         tile_count: int | None = None,
-        topics: Topics | None = None,
     ) -> str:
-        """The file's text, validated (a located :class:`~solver.errors.SolverError` if not)."""
+        """The file's text, validated (a located :class:`~solver.errors.SolverError` if not).
+
+        ``robot``: whom the layout is for (default: a template, see :mod:`solver.layouts.plan`).
+        """
         text = self.make(
             solution,
             configuration,
             presentation,
-            robot=robot,
+            robot=robot if robot is not None else Robot(),
             tile_count=tile_count,
-            topics=topics or {},
         )
         _VALIDATE[self.name](text, file)
         return text
@@ -83,12 +82,11 @@ def _foxglove(
     configuration: Configuration | None,
     presentation: Presentation,
     *,
-    robot: str,
+    robot: Robot,
     tile_count: int | None,
-    topics: Topics,
 ) -> str:
     layout = foxglove_layout(
-        solution, configuration, presentation, robot=robot, tile_count=tile_count, topics=topics
+        solution, configuration, presentation, robot=robot, tile_count=tile_count
     )
     return json.dumps(layout, indent=2, sort_keys=True) + "\n"
 
@@ -98,15 +96,13 @@ def _rviz(
     configuration: Configuration | None,
     presentation: Presentation,
     *,
-    robot: str,
+    robot: Robot,
     tile_count: int | None,
-    topics: Topics,
 ) -> str:
-    return rviz_text(
-        rviz_layout(
-            solution, configuration, presentation, robot=robot, tile_count=tile_count, topics=topics
-        )
+    plan = plan_layout(
+        solution, configuration, presentation, robot, tile_count=tile_count, relative=True
     )
+    return rviz_text(plan_rviz(plan), rviz_note(plan))
 
 
 def _validate_foxglove(text: str, file: str) -> None:

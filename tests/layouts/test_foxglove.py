@@ -10,7 +10,9 @@ import pytest
 from solver import load_team, solve
 from solver.cli import main
 from solver.layouts import (
+    JointStart,
     LayoutError,
+    Robot,
     foxglove_layout,
     layout_filename,
     load_presentation,
@@ -57,20 +59,94 @@ def test_sensor_clusters_become_tiles_of_the_sensor_panel() -> None:
     assert sum(1 for key in layout["configById"] if key.startswith("3D!")) == 5
 
 
-def test_teleop_panel_publishes_to_a_topic_template_only_while_held() -> None:
+def test_a_template_names_full_topics_in_the_root_namespace() -> None:
     solution = solve(load_team("case1"))
     layout = foxglove_layout(solution, solution.configurations[0], load_presentation())
     teleop = layout["configById"]["Teleop!p01"]
-    assert teleop["topic"] == "<robot>/cmd_vel"
+    assert teleop["topic"] == "/cmd_vel"
     assert teleop["foxglovePanelTitle"] == "Flight"
+    assert layout["globalVariables"]["teleop_ui_layout"] == (
+        "teleop-ui: UI configuration 1, topics in the root namespace (/cmd_vel); for a robot "
+        "under /NAME: teleop-ui layouts TEAM -o DIR --namespace /NAME"
+    )
 
 
-def test_audio_gets_a_titled_placeholder_panel_not_a_silent_drop() -> None:
+def test_a_layout_for_a_namespace_puts_every_topic_and_click_tool_under_it() -> None:
+    solution = solve(load_team("case1"))
+    layout = foxglove_layout(
+        solution, solution.configurations[0], load_presentation(), robot=Robot("/uav1")
+    )
+    configs = layout["configById"]
+    assert configs["Teleop!p01"]["topic"] == "/uav1/cmd_vel"
+    assert configs["Image!p02"]["imageMode"]["imageTopic"] == "/uav1/camera/image_raw"
+    assert configs["Image!p02"]["publish"] == {
+        "type": "point",
+        "poseTopic": "/uav1/clicked_pose",
+        "pointTopic": "/uav1/clicked_point",
+        "poseEstimateTopic": "/uav1/initialpose",
+        "poseEstimateXDeviation": 0.5,
+        "poseEstimateYDeviation": 0.5,
+        "poseEstimateThetaDeviation": 0.26179939,
+    }
+
+
+def test_three_velocity_components_on_one_topic_share_one_teleop_pad() -> None:
+    solution = solve(load_team("case3"))
+    layout = foxglove_layout(solution, None, load_presentation())
+    pads = [c for key, c in layout["configById"].items() if key.startswith("Teleop!")]
+    assert [(pad["topic"], pad["foxglovePanelTitle"]) for pad in pads] == [
+        ("/cmd_vel", "Flight, Driving, Walking")
+    ]
+
+
+def test_audio_gets_a_placeholder_panel_showing_its_topic_not_a_silent_drop() -> None:
     solution = solve(load_team("case2"))
     audio = next(c for c in solution.configurations if c.components[2].name == "audio")
     layout = foxglove_layout(solution, audio, load_presentation())
-    titles = [config["foxglovePanelTitle"] for config in layout["configById"].values()]
-    assert any(title.startswith("audio") and "placeholder" in title for title in titles)
+    raw = [c for key, c in layout["configById"].items() if key.startswith("RawMessages!")]
+    # A Raw Messages panel shows its topic path where a title would be: it gets no title.
+    # Five microphones, one tile each; tiles after the first are named _2, _3, ...
+    assert [(c["topicPath"], "foxglovePanelTitle" in c) for c in raw] == [
+        ("/audio", False),
+        ("/audio_2", False),
+        ("/audio_3", False),
+        ("/audio_4", False),
+        ("/audio_5", False),
+    ]
+
+
+def test_a_joint_command_without_the_robots_joints_is_no_publish_button() -> None:
+    solution = solve(load_team("case3"))
+    layout = foxglove_layout(solution, None, load_presentation())
+    assert not any(key.startswith("Publish!") for key in layout["configById"])
+    joint = layout["configById"]["Indicator!p01"]
+    assert joint["path"] == "/joint_trajectory"
+    assert joint["foxglovePanelTitle"] == (
+        "Joint (no Publish button: the robot's joint names are not known)"
+    )
+
+
+def test_a_joint_command_holds_a_whole_trajectory_of_the_robots_joints() -> None:
+    solution = solve(load_team("case3"))
+    joints = (JointStart("shoulder", 0.0), JointStart("gripper", 0.01))
+    layout = foxglove_layout(
+        solution, None, load_presentation(), robot=Robot("/arm", joints=joints)
+    )
+    publish = layout["configById"]["Publish!p01"]
+    assert publish["topicName"] == "/arm/joint_trajectory"
+    assert json.loads(publish["value"]) == {
+        "header": {"stamp": {"sec": 0, "nsec": 0}, "frame_id": ""},
+        "joint_names": ["shoulder", "gripper"],
+        "points": [
+            {
+                "positions": [0.0, 0.01],
+                "velocities": [],
+                "accelerations": [],
+                "effort": [],
+                "time_from_start": {"sec": 5, "nsec": 0},
+            }
+        ],
+    }
 
 
 def test_validation_reports_orphan_configs_and_bad_splits() -> None:
@@ -148,7 +224,7 @@ def test_rviz_robot_description_is_transient_local_and_sensors_best_effort() -> 
     assert image["Topic"]["Reliability Policy"] == "Best Effort"
 
 
-def test_rviz_gives_a_disabled_placeholder_display_to_velocity_control() -> None:
+def test_rviz_gives_velocity_control_a_placeholder_that_subscribes_to_nothing() -> None:
     from solver.layouts import rviz_layout
 
     solution = solve(load_team("case1"))
@@ -156,5 +232,27 @@ def test_rviz_gives_a_disabled_placeholder_display_to_velocity_control() -> None
         "Visualization Manager"
     ]["Displays"]
     flight = next(d for d in displays if d["Name"].startswith("Flight"))
-    assert flight["Enabled"] is False
-    assert "placeholder" in flight["Name"]
+    assert flight == {
+        "Class": "rviz_common/Group",
+        "Displays": [],
+        "Enabled": False,
+        "Name": "Flight: cmd_vel (placeholder: no RViz2 display for this component)",
+    }
+
+
+def test_a_presentation_topic_that_is_no_ros2_name_is_a_located_error(tmp_path: Path) -> None:
+    path = tmp_path / "p.yaml"
+    path.write_text(
+        "profile: presentation\ncomponents:\n  visual display:\n    panel: Image\n"
+        "    topic: <robot>/front-camera\n"
+    )
+    with pytest.raises(PresentationError) as caught:
+        load_presentation(path)
+    assert str(caught.value) == (
+        f"{path}:5:12: components.visual display.topic: the topic under a robot (/robot1) has a "
+        "character other than a letter, a digit, '_' or '/' at 14"
+    )
+
+
+def test_a_component_the_presentation_omits_gets_a_topic_that_is_a_ros2_name() -> None:
+    assert load_presentation().spec("360 microphone").topic == "<robot>/component_360_microphone"

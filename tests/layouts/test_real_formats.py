@@ -12,7 +12,7 @@ from typing import Any
 import yaml
 
 from solver import load_team, solve
-from solver.layouts import Presentation, foxglove_layout, load_presentation
+from solver.layouts import JointStart, Presentation, Robot, foxglove_layout, load_presentation
 from solver.layouts.presentation import PanelSpec
 from solver.layouts.rviz import rviz_layout, rviz_text
 
@@ -73,8 +73,24 @@ PANEL_KEYS: dict[str, set[str]] = {
         "topicPath",
         "fontSize",
     },
-    # foxglove/studio packages/studio-base/src/panels/Plot/types.ts, type PlotConfig.
-    "Plot": {"paths", "minYValue", "maxYValue", "showLegend", "xAxisVal", "xAxisPath"},
+    # packages/suite-base/src/panels/Plot/utils/config.ts, type PlotConfig.
+    "Plot": {
+        "paths",
+        "minXValue",
+        "maxXValue",
+        "minYValue",
+        "maxYValue",
+        "showLegend",
+        "legendDisplay",
+        "showPlotValuesInLegend",
+        "showXAxisLabels",
+        "showYAxisLabels",
+        "isSynced",
+        "xAxisVal",
+        "xAxisPath",
+        "followingViewWidth",
+        "sidebarDimension",
+    },
 }
 # Teleop buttons {field, value}, field one of TeleopPanel.tsx's geometryMsgOptions.
 BUTTON_KEYS = {"field", "value"}
@@ -125,7 +141,9 @@ def _leaves_and_splits(node: Any, splits: list[dict[str, Any]]) -> None:
 
 def test_foxglove_layouts_use_only_keys_the_lichtblick_sources_declare() -> None:
     solution = solve(load_team("case3"))
-    layout = foxglove_layout(solution, None, _every_panel_profile())
+    # A robot whose joints are known: its joint command is a Publish panel.
+    robot = Robot("/robot1", joints=(JointStart("shoulder", 0.0),))
+    layout = foxglove_layout(solution, None, _every_panel_profile(), robot=robot)
     assert set(layout) == LAYOUT_KEYS
     splits: list[dict[str, Any]] = []
     _leaves_and_splits(layout["layout"], splits)
@@ -177,6 +195,7 @@ RVIZ_DISPLAY_KEYS = {
     "rviz_default_plugins/PointCloud2": {"Class", "Enabled", "Name", "Topic", "Value", "Style"},
     "rviz_default_plugins/LaserScan": {"Class", "Enabled", "Name", "Topic", "Value", "Style"},
     "rviz_default_plugins/MarkerArray": {"Class", "Enabled", "Name", "Topic", "Value"},
+    "rviz_common/Group": {"Class", "Displays", "Enabled", "Name"},
 }
 RVIZ_TOPIC_KEYS = {
     "Depth",
@@ -190,11 +209,25 @@ RVIZ_POLICY_VALUES = {"Volatile", "Transient Local", "Keep Last", "Reliable", "B
 RVIZ_TOOL_KEYS = {"Class", "Topic", "Single click", "Covariance x", "Covariance y"}
 RVIZ_VIEW_KEYS = {"Class", "Name", "Value", "Target Frame", "Near Clip Distance"}
 RVIZ_GLOBAL_KEYS = {"Background Color", "Fixed Frame", "Frame Rate"}
+RVIZ_FILE_KEYS = {"Panels", "Visualization Manager", "Window Geometry"}
+# Its Window Geometry: the window, the two dock flags, and each dock panel under its title.
+RVIZ_WINDOW_KEYS = {
+    "Displays",
+    "Height",
+    "Hide Left Dock",
+    "Hide Right Dock",
+    "QMainWindow State",
+    "Width",
+    "X",
+    "Y",
+}
 
 
 def test_rviz_files_use_only_keys_a_real_rviz2_file_uses() -> None:
     solution = solve(load_team("case3"))
     document = yaml.safe_load(rviz_text(rviz_layout(solution, None, load_presentation())))
+    assert set(document) == RVIZ_FILE_KEYS
+    assert set(document["Window Geometry"]) <= RVIZ_WINDOW_KEYS
     manager = document["Visualization Manager"]
     assert set(manager) <= RVIZ_TOP_KEYS
     assert set(manager["Global Options"]) <= RVIZ_GLOBAL_KEYS

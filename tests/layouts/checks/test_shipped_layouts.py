@@ -1,12 +1,11 @@
 """Every layout the project writes, for the shipped teams and the example robots, through the
 viewers' own rules (issue 26).
 
-Each test runs one family of rules over every file; a family today's writers still break is
-marked ``xfail(strict=True)`` with the issue's item as its reason, so that the writer's fix
-turns it into a pass (and the mark must then go). The files come from the command line, as a
-user gets them: ``teleop-ui layouts TEAM -o DIR [--format rviz]`` for every team in
-``rules/teams/`` and ``layouts --robot URDF --team TEAM`` for every robot in ``examples/``
-(and one with a real topic list whose scanner is a ``LaserScan``).
+Each test runs one family of rules over every file (each family was an item of issue 26 that
+the writers broke, marked ``xfail(strict=True)`` until the writer's fix). The files come from
+the command line, as a user gets them: ``teleop-ui layouts TEAM -o DIR [--format rviz]`` for
+every team in ``rules/teams/`` and ``layouts --robot URDF --team TEAM`` for every robot in
+``examples/`` (and one with a real topic list whose scanner is a ``LaserScan``).
 """
 
 from __future__ import annotations
@@ -36,6 +35,7 @@ from tests.conftest import ROOT, TEAMS
 EXAMPLES = ROOT / "examples"
 ROBOTS = sorted(path.stem for path in EXAMPLES.glob("*.urdf"))
 ROBOT_TEAMS = ("case1", "case2", "case3")
+GROUPS = ("teams", "robots")
 # A real topic list (``name type`` lines) for the LIDAR robot: its scanner is a LaserScan.
 SCAN_TOPICS = (
     "/diff_drive_lidar/scan sensor_msgs/msg/LaserScan\n"
@@ -51,6 +51,10 @@ class Written:
     solution: Solution
     configuration: int
     topics: dict[str, list[str]]  # real topics given with --topics: name -> [type]
+    # The robot's namespace where the run names it (layouts --robot: /ROBOT_NAME); None: the
+    # checks infer it from the file's topics (a file of one topic, /quadrotor/camera/image_raw,
+    # would give /quadrotor/camera).
+    namespace: str | None = None
 
 
 @functools.cache
@@ -98,7 +102,7 @@ def written(tmp_path_factory: pytest.TempPathFactory) -> dict[tuple[str, str], l
             real: dict[str, list[str]] = {}
             if topics:
                 real = {n: [t] for n, t in (line.split() for line in SCAN_TOPICS.splitlines())}
-            robots.append(Written(out, solution, number, real))
+            robots.append(Written(out, solution, number, real, f"/{robot}"))
         files["robots", fmt] = robots
     return files
 
@@ -148,7 +152,7 @@ def _rviz_topics(document: Any) -> list[str]:
 
 def _pose_topics(presentation: Presentation, written: Written, document: Any) -> set[str]:
     """Where the configuration's pose-goal components take goals, in the file's namespace."""
-    namespace = robot_namespace(document)
+    namespace = written.namespace or robot_namespace(document)
     components = _components(written)
     topics: set[str] = set()
     for spec in presentation.panels:
@@ -171,19 +175,22 @@ def _check(files: list[Written], fmt: str) -> Iterator[Fault]:
         if fmt == "foxglove":
             layout = json.loads(text)
             types = _topic_types(presentation, written, _lichtblick_topics(layout))
-            found = check_lichtblick(layout, str(written.path), topic_types=types)
+            found = check_lichtblick(
+                layout, str(written.path), namespace=written.namespace, topic_types=types
+            )
         else:
             # libyaml's loader where present: a thousand files read at PyYAML's pace are slow.
             document = yaml.load(text, Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
             types = _topic_types(presentation, written, _rviz_topics(document))
             pose = _pose_topics(presentation, written, document)
-            found = check_rviz(document, str(written.path), topic_types=types, pose_topics=pose)
+            found = check_rviz(
+                document,
+                str(written.path),
+                namespace=written.namespace,
+                topic_types=types,
+                pose_topics=pose,
+            )
         yield from found
-
-
-def _group(group: str, reason: str | None = None) -> Any:
-    marks = [pytest.mark.xfail(strict=True, reason=f"issue 26 {reason}")] if reason else []
-    return pytest.param(group, marks=marks, id=group)
 
 
 def _first(
@@ -202,7 +209,7 @@ def test_every_group_has_files(written: dict[tuple[str, str], list[Written]]) ->
 # -- Lichtblick ------------------------------------------------------------------------------
 
 
-@pytest.mark.parametrize("group", [_group("teams"), _group("robots")])
+@pytest.mark.parametrize("group", GROUPS)
 def test_lichtblick_imports_every_layout_and_reads_every_key_of_the_right_type(
     faults: dict[tuple[str, str], list[Fault]], group: str
 ) -> None:
@@ -210,11 +217,7 @@ def test_lichtblick_imports_every_layout_and_reads_every_key_of_the_right_type(
     assert _first(faults, group, "foxglove", codes) == []
 
 
-@pytest.mark.parametrize(
-    "group",
-    [_group("teams", "item 1: template topics <robot>/... are no ROS 2 names nor message paths"),
-     _group("robots")],
-)  # fmt: skip
+@pytest.mark.parametrize("group", GROUPS)
 def test_every_lichtblick_topic_is_a_full_ros2_name_and_every_path_parses(
     faults: dict[tuple[str, str], list[Fault]], group: str
 ) -> None:
@@ -222,64 +225,40 @@ def test_every_lichtblick_topic_is_a_full_ros2_name_and_every_path_parses(
     assert _first(faults, group, "foxglove", codes) == []
 
 
-@pytest.mark.parametrize(
-    "group",
-    [_group("teams", "item 2: RawMessages placeholders show their path, not their title"),
-     _group("robots", "item 2: RawMessages placeholders show their path, not their title")],
-)  # fmt: skip
+@pytest.mark.parametrize("group", GROUPS)
 def test_every_panel_title_is_shown(faults: dict[tuple[str, str], list[Fault]], group: str) -> None:
     assert _first(faults, group, "foxglove", ("lichtblick-title-hidden",)) == []
 
 
-@pytest.mark.parametrize(
-    "group",
-    [_group("teams", "item 3: partial 3D publish blocks and panel configs the app completes"),
-     _group("robots", "item 3: partial 3D publish blocks and panel configs the app completes")],
-)  # fmt: skip
+@pytest.mark.parametrize("group", GROUPS)
 def test_every_layout_opens_unmodified(
     faults: dict[tuple[str, str], list[Fault]], group: str
 ) -> None:
     assert _first(faults, group, "foxglove", ("lichtblick-modified",)) == []
 
 
-@pytest.mark.parametrize(
-    "group",
-    [_group("teams", "item 4: Publish panels hold {}"),
-     _group("robots", "item 4: Publish panels hold {}")],
-)  # fmt: skip
+@pytest.mark.parametrize("group", GROUPS)
 def test_every_publish_panel_holds_a_whole_sample_message(
     faults: dict[tuple[str, str], list[Fault]], group: str
 ) -> None:
     assert _first(faults, group, "foxglove", ("lichtblick-publish",)) == []
 
 
-@pytest.mark.parametrize(
-    "group",
-    [_group("teams", "item 5: three Teleop panels drive one cmd_vel"),
-     _group("robots", "item 5: three Teleop panels drive one cmd_vel")],
-)  # fmt: skip
+@pytest.mark.parametrize("group", GROUPS)
 def test_one_velocity_panel_drives_each_command_topic(
     faults: dict[tuple[str, str], list[Fault]], group: str
 ) -> None:
     assert _first(faults, group, "foxglove", ("lichtblick-teleop-topic",)) == []
 
 
-@pytest.mark.parametrize(
-    "group",
-    [_group("teams", "item 6: 3D and Image panels publish on /clicked_point, /initialpose, ..."),
-     _group("robots", "item 6: 3D and Image panels publish on /clicked_point, /initialpose, ...")],
-)  # fmt: skip
+@pytest.mark.parametrize("group", GROUPS)
 def test_no_lichtblick_panel_publishes_outside_the_robots_namespace(
     faults: dict[tuple[str, str], list[Fault]], group: str
 ) -> None:
     assert _first(faults, group, "foxglove", ("namespace",)) == []
 
 
-@pytest.mark.parametrize(
-    "group",
-    [_group("teams", "item 7: 3D views have no grid"),
-     _group("robots", "item 7: 3D views have no grid")],
-)  # fmt: skip
+@pytest.mark.parametrize("group", GROUPS)
 def test_every_3d_panel_has_a_reference_grid(
     faults: dict[tuple[str, str], list[Fault]], group: str
 ) -> None:
@@ -289,60 +268,42 @@ def test_every_3d_panel_has_a_reference_grid(
 # -- RViz2 -----------------------------------------------------------------------------------
 
 
-@pytest.mark.parametrize(
-    "group",
-    [_group("teams", "item 7: no Window Geometry"), _group("robots", "item 7: no Window Geometry")],
-)
+@pytest.mark.parametrize("group", GROUPS)
 def test_every_rviz_file_has_the_sections_rviz2_saves(
     faults: dict[tuple[str, str], list[Fault]], group: str
 ) -> None:
     assert _first(faults, group, "rviz", ("rviz-file",)) == []
 
 
-@pytest.mark.parametrize("group", [_group("teams"), _group("robots")])
+@pytest.mark.parametrize("group", GROUPS)
 def test_every_rviz_display_tool_and_view_is_one_rviz2_has(
     faults: dict[tuple[str, str], list[Fault]], group: str
 ) -> None:
     assert _first(faults, group, "rviz", ("rviz-display", "rviz-view")) == []
 
 
-@pytest.mark.parametrize(
-    "group",
-    [_group("teams", "item 1: template topics <robot>/... are no ROS names"), _group("robots")],
-)
+@pytest.mark.parametrize("group", GROUPS)
 def test_every_rviz_topic_is_a_ros2_name(
     faults: dict[tuple[str, str], list[Fault]], group: str
 ) -> None:
     assert _first(faults, group, "rviz", ("ros-topic-name",)) == []
 
 
-@pytest.mark.parametrize(
-    "group",
-    [_group("teams", "item 7: disabled Marker placeholders on non-Marker topics"),
-     _group("robots", "item 7: a LaserScan shown as PointCloud2; Marker placeholders")],
-)  # fmt: skip
+@pytest.mark.parametrize("group", GROUPS)
 def test_every_rviz_display_shows_its_topics_message_type(
     faults: dict[tuple[str, str], list[Fault]], group: str
 ) -> None:
     assert _first(faults, group, "rviz", ("rviz-display-type",)) == []
 
 
-@pytest.mark.parametrize(
-    "group",
-    [_group("teams", "item 7: SetGoal publishes goal_pose in every configuration"),
-     _group("robots", "item 7: SetGoal publishes goal_pose in every configuration")],
-)  # fmt: skip
+@pytest.mark.parametrize("group", GROUPS)
 def test_the_goal_tool_publishes_where_the_configurations_pose_component_listens(
     faults: dict[tuple[str, str], list[Fault]], group: str
 ) -> None:
     assert _first(faults, group, "rviz", ("rviz-tool",)) == []
 
 
-@pytest.mark.parametrize(
-    "group",
-    [_group("teams"),
-     _group("robots", "item 7: robot_description is absolute in namespaced files")],
-)  # fmt: skip
+@pytest.mark.parametrize("group", GROUPS)
 def test_rviz_robot_description_and_tools_lie_in_the_robots_namespace(
     faults: dict[tuple[str, str], list[Fault]], group: str
 ) -> None:
