@@ -1140,3 +1140,14 @@ def test_hostile_command_line_values_never_reach_a_traceback(
     assert (folder / "file").read_text() == "mine\n" or places["file"] in line  # an output
     assert (folder / "fifo").is_fifo()
     assert (folder / "device-link").is_symlink()
+
+
+@pytest.mark.parametrize("option", ["--host", "--fleet"])
+def test_the_studio_refuses_a_name_longer_than_the_system_allows(
+    option: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # Refused before anything listens: a traceback (UnicodeError, OSError) before.
+    assert run_main("studio", "--port", "0", option, "a" * 400) == 2
+    error = capsys.readouterr().err
+    assert error.startswith("--host: cannot listen on 'aaa" if option == "--host" else "aaa")
+    assert "(cut from 400 characters)" in error

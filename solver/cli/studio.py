@@ -76,10 +76,11 @@ def positive_seconds(text: str) -> float:
 
 
 def run(args: argparse.Namespace) -> int:
-    from pathlib import Path
+    import os
 
     from solver.errors import InputError
     from solver.extras import require
+    from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
     for module in ("starlette", "uvicorn", "jinja2"):
         require(module, feature="the studio (teleop-ui studio)")
@@ -88,8 +89,11 @@ def run(args: argparse.Namespace) -> int:
     if args.ros2 and args.master:
         raise InputError.at("--master", "give --ros2 or --master URL, not both")
     for folder in args.fleet:
-        if not Path(folder).is_dir():
-            raise InputError.at(folder, "--fleet needs a folder of robot descriptions")
+        if not os.path.isdir(folder):  # never raises, where Path.is_dir does on a long name
+            raise InputError.at(
+                shown(folder, limit=SHOWN_FILE_NAME_CHARS),
+                "--fleet needs a folder of robot descriptions",
+            )
     from solver.studio.server import bind, serve
 
     studio = _studio(args)

@@ -20,6 +20,7 @@ import uvicorn
 from solver.errors import InputError
 from solver.studio.security import loopback
 from solver.studio.service import Studio
+from solver.untrusted import shown
 
 __all__ = ["address", "bind", "serve"]
 
@@ -38,10 +39,11 @@ def bind(host: str, port: int) -> socket.socket:
         sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
         sock.bind(where)
         sock.listen(128)
-    except OSError as error:
+    except (OSError, UnicodeError) as error:  # UnicodeError: a name no resolver can encode
+        reason = error.strerror if isinstance(error, OSError) else None
         raise InputError.at(
-            "--host" if port == 0 else "--port",
-            f"cannot listen on {host}:{port}: {error.strerror or error}",
+            "--host" if port == 0 or reason is None else "--port",
+            f"cannot listen on {shown(host, quoted=True)}:{port}: {reason or error}",
         ) from None
     sock.set_inheritable(True)
     return sock
