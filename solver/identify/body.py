@@ -54,6 +54,8 @@ _WHEEL_LEGS = 3
 _FLYING_ARM_JOINTS = 2
 # Roles a single joint plays that make it part of the base, not of a limb.
 _MOUNTED = ("wheel", "steering", "caster", "rotor", "thruster")
+# Limbs whose joints a person commands one by one (Joint control); not heads, not mounts.
+_COMMANDED = ("arm", "leg", "other")
 _Z_AXIS = 2
 
 
@@ -334,7 +336,6 @@ class _Detector:
         self._body_parts(parts)
         finger_tips = self._finger_tips(parts.grippers)
         controlled = self.urdf.controlled_joints
-        limb_joints = [j for limb in parts.limbs if limb.kind != "mount" for j in limb.joints]
         wheels = parts.of("wheel")
         return Body(
             wheels=tuple(wheels),
@@ -349,7 +350,7 @@ class _Detector:
             floating_base=tuple(parts.floating),
             planar_base=tuple(parts.planar),
             controlled_wheels=tuple(w for w in wheels if w in controlled),
-            controlled_joints=tuple(j for j in limb_joints + parts.trunk if j in controlled),
+            controlled_joints=tuple(j for j in self._commanded(parts) if j in controlled),
             not_rotors=tuple(self._not_rotors(parts)),
             fixed_wheels=tuple(self._fixed_wheels(parts)),
             fixed_rotors=tuple(self._fixed_rotors()),
@@ -365,6 +366,23 @@ class _Detector:
             ),
             roles=self._all_roles(parts),
         )
+
+    def _commanded(self, parts: _Parts) -> list[str]:
+        """Joints a person commands one by one: those of arms, legs and other limbs, and the
+        trunk joints that carry one. A head points a sensor (a pan/tilt camera); a mount and a
+        trunk carrying only mounts move wheels, rotors or thrusters (a transformable
+        multirotor's frame, a tilting rotor): the vehicle's own motion, not joint control.
+        """
+        limbs = [limb for limb in parts.limbs if limb.kind in _COMMANDED]
+        joints = [name for limb in limbs for name in limb.joints]
+        firsts = {limb.joints[0] for limb in limbs}
+        for name in parts.trunk:
+            trunk = self.urdf.joint(name)
+            if trunk is not None and any(
+                j.name in firsts for j in self.urdf.subtree_joints(trunk.child)
+            ):
+                joints.append(name)
+        return joints
 
     # -- single-joint roles ------------------------------------------------------------------
 
@@ -553,7 +571,7 @@ class _Detector:
         parts.limbs, parts.trunk, parts.hosts = self._limbs(
             special | parts.grippers, parts.grippers, parts.roles, flying
         )
-        fingers = self._finger_groups(parts.limbs)
+        fingers = self._finger_groups(parts.limbs, grounded=self._grounded(parts))
         if fingers:
             for name in fingers:
                 parts.roles[name] = Role(
@@ -674,16 +692,25 @@ class _Detector:
         ]
         return sorted(tips, key=self._order)
 
-    def _finger_groups(self, limbs: list[Limb]) -> set[str]:
+    def _grounded(self, parts: _Parts) -> bool:
+        """The body moves on the ground: wheels, casters, tracks or a drive plugin."""
+        return bool(
+            parts.of("wheel") or parts.of("caster") or self._tracks() or self.labels("drive")
+        )
+
+    def _finger_groups(self, limbs: list[Limb], *, grounded: bool = False) -> set[str]:
         """Joints of unnamed short chains hanging from one link in threes or more: fingers
         (also where each ends in a named fingertip).
 
         A claw or a hand whose fingers carry no names still has them side by side on a palm;
-        arms and legs on one link come in ones and twos.
+        arms and legs on one link come in ones and twos. On a body that moves on the ground,
+        chains on its root link are the base's own (a tracked vehicle's flippers), not fingers.
         """
         by_base: dict[str, list[Limb]] = {}
         longest = self.profile.limb("finger_max_joints")
         for limb in limbs:
+            if grounded and limb.base == self.urdf.root:
+                continue
             if limb.kind in ("arm", "other") and not limb.named and len(limb.joints) <= longest:
                 by_base.setdefault(limb.base, []).append(limb)
         found: set[str] = set()

@@ -1,13 +1,23 @@
 """Motion controls a robot description shows by itself, without a topic list.
 
-From the URDF: a drive plugin (diff_drive, skid_steer, a tracked vehicle) or wheels driven
-through a transmission / ``ros2_control`` mean the robot is driven; rotors or flight plugins
-mean it is flown; limb joints (arms, heads, flippers) with a transmission
-mean its joints are commanded one by one.
-From the SRDF: a MoveIt planning group over an arm means joint-space and end-effector goals; an
-``<end_effector>`` not on a leg means end-effector goals (:mod:`solver.identify.plans`). Which
-control each of these means is the profile's ``motion.description`` (data); this module only
-says which of them a robot has.
+Two kinds of evidence, the declared first:
+
+* *Declared controllers.* From the URDF: a drive plugin (diff_drive, skid_steer, a tracked
+  vehicle) or wheels driven through a transmission / ``ros2_control`` mean the robot is driven;
+  rotors or flight plugins mean it is flown; joints of arms, legs and other limbs with a
+  transmission mean its joints are commanded one by one (a head's pan/tilt points a sensor, a
+  rotor or wheel mount moves the vehicle: neither is joint control). From the SRDF: a MoveIt
+  planning group over an arm means joint-space and end-effector goals; an ``<end_effector>`` not
+  on a leg means end-effector goals (:mod:`solver.identify.plans`).
+* *Roles.* What the joints do shows a control even where no controller is declared: wheels that
+  turn (not a caster's) mean the base is driven, thrusters that the vessel is, an arm of
+  actuated joints that its joints are commanded, and an arm of six joints or more ending in a
+  gripper that Cartesian (end-effector) goals can be solved for it; that last one is a guess
+  and says so ("likely, not declared"). Roles are named only for a control no declared
+  controller shows.
+
+Which control each of these means is the profile's ``motion.description`` (data); this module
+only says which of them a robot has.
 
 Navigation (Waypoint) and walking commands live in launch and config files, not in the robot
 description: they come from topics (:mod:`solver.identify.interfaces`).
@@ -24,6 +34,84 @@ from solver.identify.urdf import Urdf
 
 __all__ = ["controls_from_description"]
 
+# (profile source, evidence): what one place of the description shows.
+_Shown = list[tuple[str, str]]
+# The sources read from what joints do rather than from a declared controller.
+_ROLE_SOURCES = ("wheels", "thrusters", "arm", "arm_gripper")
+# Joints from the base to a gripper that reach any pose (three for position, three to turn).
+_CARTESIAN_JOINTS = 6
+
+
+def _ground(body: Body, urdf_source: str) -> _Shown:
+    """Drive plugins and driven wheels (declared); wheels that turn and thrusters (roles)."""
+    found = []
+    if body.drive_plugins or body.tracks:
+        plugins = ", ".join((*body.drive_plugins, *body.tracks)[:3])
+        found.append(("drive_plugin", f"{urdf_source}: drive plugin {plugins}"))
+    if body.controlled_wheels:
+        count = len(body.controlled_wheels)
+        found.append(
+            ("controlled_wheels", f"{urdf_source}: {count} wheel joint(s) with a transmission")
+        )
+    if body.wheels:
+        found.append(("wheels", f"{urdf_source}: {len(body.wheels)} wheel joint(s) that turn"))
+    if body.thrusters:
+        found.append(("thrusters", f"{urdf_source}: {len(body.thrusters)} thruster(s)"))
+    return found
+
+
+def _flight(body: Body, urdf_source: str) -> _Shown:
+    if not body.flying:
+        return []
+    if body.rotors:
+        what = f"{len(body.rotors)} rotor joint(s)"
+    elif body.flight_plugins:
+        what = f"flight plugin {body.flight_plugins[0]}"
+    else:
+        what = f"{len(body.fixed_rotors)} fixed rotor joint(s) of a trimmed model"
+    return [("flight", f"{urdf_source}: {what}")]
+
+
+def _limbs(body: Body, urdf_source: str) -> _Shown:
+    """Limb joints with a transmission (declared); arms of actuated joints (roles)."""
+    found = []
+    if body.controlled_joints:
+        count = len(body.controlled_joints)
+        found.append(
+            ("controlled_joints", f"{urdf_source}: {count} limb joint(s) with a transmission")
+        )
+    arms = [limb for limb in body.limbs if limb.kind == "arm"]
+    if arms:
+        found.append(("arm", f"{urdf_source}: {len(arms)} arm(s) of actuated joints"))
+    # Six degrees of freedom reach any pose of the gripper: Cartesian goals can be solved. A
+    # guess: whether the software offers them is not in the description.
+    if any(limb.gripper and len(limb.joints) >= _CARTESIAN_JOINTS for limb in arms):
+        found.append(
+            (
+                "arm_gripper",
+                f"{urdf_source}: likely, not declared: an arm of {_CARTESIAN_JOINTS} joints or "
+                "more ending in a gripper",
+            )
+        )
+    return found
+
+
+def _planned(
+    body: Body, srdf: Srdf | None, profile: Profile, urdf: Urdf | None, srdf_source: str
+) -> _Shown:
+    """What an SRDF plans: arm groups, end effectors."""
+    if srdf is None:
+        return []
+    found = []
+    groups = arm_plans(body, srdf, profile.limb("arm_min_joints"), urdf)
+    if groups:
+        names = ", ".join(g.name for g in groups)
+        found.append(("srdf_group", f"{srdf_source}: planning group(s) {names}"))
+    if effectors := hand_effectors(body, srdf, urdf):
+        names = ", ".join(e.name for e in effectors)
+        found.append(("srdf_end_effector", f"{srdf_source}: end effector(s) {names}"))
+    return found
+
 
 def controls_from_description(
     body: Body,
@@ -35,46 +123,21 @@ def controls_from_description(
     srdf_source: str = "srdf",
 ) -> tuple[Control, ...]:
     """The motion controls the body (and SRDF) show, each with what shows it."""
-    found: list[Control] = []
-
-    def add(source: str, text: str) -> None:
+    shown = [
+        *_ground(body, urdf_source),
+        *_flight(body, urdf_source),
+        *_limbs(body, urdf_source),
+        *_planned(body, srdf, profile, urdf, srdf_source),
+    ]
+    found: dict[str, list[str]] = {}
+    by_roles: dict[str, list[str]] = {}
+    for source, text in shown:
         for control in profile.description_control(source):
-            found.append(Control(control, text))
-
-    if body.drive_plugins or body.tracks:
-        plugins = ", ".join((*body.drive_plugins, *body.tracks)[:3])
-        add("drive_plugin", f"{urdf_source}: drive plugin {plugins}")
-    if body.controlled_wheels:
-        add(
-            "controlled_wheels",
-            f"{urdf_source}: {len(body.controlled_wheels)} wheel joint(s) with a transmission",
-        )
-    if body.flying:
-        if body.rotors:
-            what = f"{len(body.rotors)} rotor joint(s)"
-        elif body.flight_plugins:
-            what = f"flight plugin {body.flight_plugins[0]}"
-        else:
-            what = f"{len(body.fixed_rotors)} fixed rotor joint(s) of a trimmed model"
-        add("flight", f"{urdf_source}: {what}")
-    if body.controlled_joints:
-        add(
-            "controlled_joints",
-            f"{urdf_source}: {len(body.controlled_joints)} limb joint(s) with a transmission",
-        )
-    if srdf is not None:
-        groups = arm_plans(body, srdf, profile.limb("arm_min_joints"), urdf)
-        if groups:
-            add(
-                "srdf_group",
-                f"{srdf_source}: planning group(s) {', '.join(g.name for g in groups)}",
-            )
-        if effectors := hand_effectors(body, srdf, urdf):
-            add(
-                "srdf_end_effector",
-                f"{srdf_source}: end effector(s) {', '.join(e.name for e in effectors)}",
-            )
-    merged: dict[str, list[str]] = {}
-    for control in found:
-        merged.setdefault(control.motion_control, []).append(control.source)
-    return tuple(Control(name, "; ".join(sources)) for name, sources in merged.items())
+            # Roles speak for a control only where no declared controller does.
+            (by_roles if source in _ROLE_SOURCES else found).setdefault(control, []).append(text)
+    for control, texts in by_roles.items():
+        found.setdefault(control, texts)
+    order = [control for source, _ in shown for control in profile.description_control(source)]
+    return tuple(
+        Control(name, "; ".join(found[name])) for name in dict.fromkeys(order) if name in found
+    )

@@ -112,6 +112,10 @@ CONTROL_SOURCES = (
     "controlled_joints",
     "srdf_group",
     "srdf_end_effector",
+    "wheels",
+    "thrusters",
+    "arm",
+    "arm_gripper",
 )
 LIMB_KEYS = (
     "arm_min_joints",

@@ -71,6 +71,16 @@ def model_plugin(name: str, filename: str, params: str = "") -> str:
     return f'  <gazebo><plugin name="{name}" filename="{filename}">{params}</plugin></gazebo>'
 
 
+def transmission(joint: str, interface: str = "PositionJointInterface") -> str:
+    """A ROS 1 ``<transmission>`` driving ``joint`` (a controller commands it)."""
+    return (
+        f'  <transmission name="{joint}_trans"><type>transmission_interface/'
+        f'SimpleTransmission</type><joint name="{joint}"><hardwareInterface>'
+        f"hardware_interface/{interface}</hardwareInterface></joint>"
+        f'<actuator name="{joint}_motor"/></transmission>'
+    )
+
+
 def wheeled_base(robot: RobotText, wheels: int = 2) -> None:
     for side in ("left", "right", "rear_left", "rear_right")[:wheels]:
         robot.joint(f"wheel_{side}_joint", "continuous", robot.root, f"wheel_{side}_link")

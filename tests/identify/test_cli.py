@@ -43,7 +43,8 @@ def test_identify_prints_a_readable_report_with_ui_configurations(tmp_path: Path
     assert "structure:      UGV  (confidence 0.95)" in result.stdout
     assert "4 wheel joint(s): wheel_left_joint" in result.stdout
     assert "UI configurations in team 'Case 2':" in result.stdout
-    assert "(default)" in result.stdout  # no motion control without topics: the default
+    # Wheels that turn mean the base is driven: Driving, without a topic list.
+    assert "UGV, Driving, LIDAR, 1" in result.stdout
 
 
 def test_identify_output_is_byte_identical_across_runs(tmp_path: Path) -> None:
@@ -106,15 +107,20 @@ def test_fleet_of_an_empty_folder_exits_2(tmp_path: Path) -> None:
 
 
 def test_fleet_writes_every_value_for_a_type_with_nothing_identified(tmp_path: Path) -> None:
-    folder = tmp_path / "arms"
+    folder = tmp_path / "bases"
     folder.mkdir()
-    (folder / "arm.urdf").write_text(builders.manipulator().text())  # no sensors, no controls
+    # A base trimmed of its moving parts: fixed wheel joints, no sensor. A UGV (with doubt)
+    # that shows no motion control: its wheels do not turn and nothing drives them.
+    trimmed = builders.RobotText("trimmed")
+    trimmed.fixed("base_link", "left_wheel")
+    trimmed.fixed("base_link", "right_wheel")
+    (folder / "trimmed.urdf").write_text(trimmed.text())
     team = tmp_path / "team.yaml"
     result = run_cli("fleet", folder, "-o", team)
     assert result.returncode == 0, result.stderr
     assert "    {}   # nothing identified to narrow: every value allowed" in team.read_text()
     loaded = load_team(team)
-    selection = loaded.selection("Manipulator")
+    selection = loaded.selection("UGV")
     assert selection is not None
     for characteristic, domain in zip(
         loaded.rules.characteristics[1:], selection.domains[1:], strict=True

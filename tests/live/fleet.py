@@ -22,6 +22,15 @@ def rover_text() -> str:
     return builders.ugv().text()
 
 
+def still_rover_text() -> str:
+    """A base trimmed of its moving parts (fixed wheels): a UGV that shows no motion control
+    until something on the graph drives it."""
+    robot = builders.RobotText("still_rover")
+    robot.fixed(robot.root, "left_wheel")
+    robot.fixed(robot.root, "right_wheel")
+    return robot.text()
+
+
 def large_text(markers: int = 6000) -> str:
     """A humanoid with thousands of fixed marker links: about 1.5 MB of URDF."""
     robot = builders.humanoid()

@@ -18,6 +18,7 @@ from solver.live.selection import (
     ui_configuration_value,
 )
 from solver.ros.names import Topic
+from tests.identify.builders import RobotText
 from tests.live.fleet import drone_text, expected, rover_text
 
 CAMERA = Topic("camera/image_raw", "sensor_msgs/Image", "published")
@@ -96,7 +97,16 @@ def test_a_value_the_robot_lacks_is_used_as_asked_with_a_note(
     assert assignment.reasons == (
         "motion_control 'Flight' is not selected for UGV in team 'Case 3'",
     )
-    assert notes == ()  # the rover shows no motion control at all: nothing to contrast
+    # Its wheels turn: the rover is driven, even before a cmd_vel shows up.
+    assert notes == (
+        "/ugv1 does not offer motion_control 'Flight' (it has Driving); using it as asked",
+    )
+    trimmed = RobotText("trimmed")  # fixed wheels: a base that shows no motion control
+    trimmed.fixed(trimmed.root, "left_wheel")
+    trimmed.fixed(trimmed.root, "right_wheel")
+    still = robot("/ugv1", trimmed.text(), (CAMERA,), solution, profile)
+    _, notes = choose(still, {"motion_control": "Flight"}, solution)
+    assert notes == ()  # nothing to contrast
     driven = robot(
         "/ugv1",
         rover_text(),

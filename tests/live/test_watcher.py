@@ -24,6 +24,7 @@ from tests.live.fleet import (
     put_rover,
     rover_configuration,
     rover_text,
+    still_rover_text,
 )
 from tests.live.roscore import Roscore, TestNode, wait_until
 
@@ -92,7 +93,7 @@ def test_a_robot_is_added_changed_and_removed_as_its_nodes_come_and_go(
     watch = start_watcher(master.uri)
     watch.wait_for_event("synced")
     mark = watch.mark()
-    node.set_param("/ugv7/robot_description", rover_text())
+    node.set_param("/ugv7/robot_description", still_rover_text())
     added = watch.wait_for_event("robot_added", "/ugv7", after=mark)
     assert added["kinematic_type"] == "UGV"
     assert added["motion_controls"] == []  # nothing drives it yet

@@ -1,0 +1,127 @@
+"""Motion controls from a description alone: declared controllers first, then what the joints'
+roles show; a guess says it is one."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import pytest
+
+from solver.identify import identify_urdf
+from tests.identify import builders
+from tests.identify.builders import RobotText
+
+
+def controls(robot: RobotText) -> dict[str, str]:
+    return {c.motion_control: c.source for c in identify_urdf(robot.text()).motion_controls}
+
+
+@pytest.mark.parametrize(
+    ("build", "expected"),
+    [
+        (builders.caster_base, {"Driving"}),
+        (builders.surface_vessel, {"Driving"}),
+        (builders.underwater_vehicle, {"Driving"}),
+        (builders.manipulator, {"Joint", "End Effector"}),
+        (builders.quadrotor, {"Flight"}),
+        (builders.tilt_rotor, {"Flight"}),
+        (builders.hand, set()),
+    ],
+    ids=[
+        "wheels",
+        "thrusters on a hull",
+        "thrusters",
+        "arm with gripper",
+        "rotors",
+        "tilt rotors",
+        "hand",
+    ],
+)
+def test_motion_controls_come_from_the_roles_a_description_declares(
+    build: Callable[[], RobotText], expected: set[str]
+) -> None:
+    assert set(controls(build())) == expected
+
+
+def test_a_declared_drive_plugin_is_the_evidence_not_the_wheels_it_drives() -> None:
+    robot = builders.ugv()
+    robot.add(builders.model_plugin("drive", "libgazebo_ros_diff_drive.so"))
+    assert controls(robot) == {"Driving": "urdf: drive plugin libgazebo_ros_diff_drive.so"}
+
+
+def test_wheels_no_controller_drives_are_named_as_the_evidence() -> None:
+    assert controls(builders.ugv()) == {"Driving": "urdf: 4 wheel joint(s) that turn"}
+
+
+def test_end_effector_goals_read_from_an_arm_say_they_are_a_guess() -> None:
+    found = controls(builders.manipulator())
+    assert found["Joint"] == "urdf: 1 arm(s) of actuated joints"
+    assert found["End Effector"] == (
+        "urdf: likely, not declared: an arm of 6 joints or more ending in a gripper"
+    )
+
+
+def test_an_arm_of_five_joints_with_a_gripper_shows_joint_goals_only() -> None:
+    robot = RobotText("arm5")
+    builders.arm(robot, robot.root, joints=5)
+    assert set(controls(robot)) == {"Joint"}
+
+
+def test_a_pan_tilt_head_with_transmissions_is_not_joint_control() -> None:
+    # A camera's pan/tilt points a sensor; it is not a motion control of the robot.
+    robot = builders.ugv()
+    robot.chain(robot.root, ["camera_pan_joint", "camera_tilt_joint"])
+    robot.add(builders.transmission("camera_pan_joint"))
+    robot.add(builders.transmission("camera_tilt_joint"))
+    assert set(controls(robot)) == {"Driving"}
+
+
+def test_arm_joints_with_transmissions_are_the_evidence_for_joint_control() -> None:
+    robot = builders.mobile_manipulator()
+    for name in ("shoulder_pan", "shoulder_lift", "elbow", "head_pan", "head_tilt"):
+        robot.add(builders.transmission(name))
+    # The head's two transmissions are not counted; the arm's three are.
+    assert controls(robot)["Joint"] == "urdf: 3 limb joint(s) with a transmission"
+
+
+def transformable_multirotor() -> RobotText:
+    """Three modules joined by driven hinges, each carrying a tilting rotor (a gimbal)."""
+    robot = RobotText("modules")
+    link = robot.root
+    for i in range(3):
+        gimbal = robot.chain(link, [f"gimbal{i}"])
+        robot.joint(f"rotor{i}", "continuous", gimbal, f"rotor{i}_link")
+        if i < 2:
+            link = robot.chain(link, [f"hinge{i}"])
+            robot.add(builders.transmission(f"hinge{i}"))
+        robot.add(builders.transmission(f"gimbal{i}"))
+    return robot
+
+
+def test_driven_joints_that_only_carry_rotors_are_flight_not_joint_control() -> None:
+    result = identify_urdf(transformable_multirotor().text())
+    assert result.structure == "UAV"
+    assert {role.joint: role.role for role in result.roles}["hinge0"] == "trunk"
+    assert {c.motion_control for c in result.motion_controls} == {"Flight"}
+
+
+def tracked_with_flippers() -> RobotText:
+    """A tracked base with a driven flipper at each corner of its hull."""
+    robot = RobotText("crawler")
+    robot.add(builders.model_plugin("tracks", "libSimpleTrackedVehiclePlugin.so"))
+    for corner in ("fl", "fr", "rl", "rr"):
+        robot.chain(robot.root, [f"flipper_{corner}_j", f"flipper_{corner}_motor_j"])
+        robot.add(builders.transmission(f"flipper_{corner}_j"))
+    return robot
+
+
+def test_a_tracked_bases_flippers_are_driven_limbs_not_the_fingers_of_a_hand() -> None:
+    result = identify_urdf(tracked_with_flippers().text())
+    assert result.structure == "UGV"
+    assert result.body is not None
+    assert result.body.fingers == ()
+    assert {role.role for role in result.roles} == {"other"}
+    assert controls(tracked_with_flippers()) == {
+        "Driving": "urdf: drive plugin libSimpleTrackedVehiclePlugin.so",
+        "Joint": "urdf: 4 limb joint(s) with a transmission",
+    }
