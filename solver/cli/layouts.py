@@ -145,10 +145,8 @@ def _robot(args: argparse.Namespace) -> int:
     from solver.files.atomic import write_atomic
     from solver.identify import identify_urdf
     from solver.identify.combinations import combinations
-    from solver.identify.joints import command_joints
     from solver.identify.profile import load_profile
     from solver.identify.readers.safexml import read_bytes
-    from solver.identify.urdf import parse_urdf
     from solver.layouts import load_presentation
     from solver.layouts.plan import check_namespace
     from solver.layouts.robot import robot_layout
@@ -183,9 +181,7 @@ def _robot(args: argparse.Namespace) -> int:
         namespace=namespace,
         topics=topics,
         topics_source=source,
-        joints=command_joints(
-            parse_urdf(description, args.robot, strict=False), identification.body
-        ),
+        joints=identification.joints,
         file=args.output,
     )
     for warning in layout.warnings:

@@ -24,6 +24,7 @@ if TYPE_CHECKING:
     from solver.core.solution import Solution
     from solver.live.events import Event
     from solver.live.graph import GraphSource
+    from solver.live.layouts import LiveLayouts
     from solver.live.watcher import Watcher
 
 
@@ -76,12 +77,13 @@ def register(subparsers: Any) -> None:
         help="wait for the master to come up instead of failing (exit 2)",
     )
     add_format(parser, ("json", "text"), default="json")
-    # --layouts (issue 17, solver.live.layouts): selection events name the layout file.
+    # --layouts (issues 17, 26; solver.live.layouts): each robot's layouts, named in events.
     parser.add_argument(
         "--layouts",
         metavar="DIR",
-        help="name the active configuration's layout file in DIR (written by "
-        "`teleop-ui layouts`) in each selection_changed event",
+        help="write each robot's Lichtblick layouts, filled with its real topics, into "
+        "DIR/NAMESPACE/ when it appears or changes, and name the active robot's in each "
+        "selection_changed event",
     )
     parser.set_defaults(run=run)
 
@@ -197,17 +199,28 @@ def _follow(watcher: Watcher, args: argparse.Namespace, solution: Solution) -> N
         # Discovery on DDS takes a moment: see what is there first (SIGTERM ends it).
         watcher.source.settle(lambda: watcher.stopped)
     events = [] if watcher.stopped else watcher.snapshot() if args.once else watcher.events()
+    layouts = _layouts(args, solution)
     for event in events:
-        write(_render(event, solution, args))
+        write(_render(event, solution, args, layouts))
 
 
-# --layouts (issue 17): the event as rendered, plus the layout file of the active configuration.
-def _render(event: Event, solution: Solution, args: argparse.Namespace) -> str:
+def _layouts(args: argparse.Namespace, solution: Solution) -> LiveLayouts | None:
+    if args.layouts is None:
+        return None
+    from solver.live.layouts import LiveLayouts
+
+    return LiveLayouts(args.layouts, solution)
+
+
+# --layouts: the robots' layouts written, the event as rendered with the active robot's.
+def _render(
+    event: Event, solution: Solution, args: argparse.Namespace, layouts: LiveLayouts | None
+) -> str:
     from solver.live.render import render_event
 
     text = render_event(event, solution, args.format)
-    if args.layouts is None:
+    if layouts is None:
         return text
-    from solver.live.layouts import with_layout
-
-    return with_layout(text, event, args.layouts, args.format)
+    for warning in layouts.update(event):
+        print(f"warning: {warning}", file=sys.stderr, flush=True)
+    return layouts.with_layout(text, event, args.format)

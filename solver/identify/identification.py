@@ -40,6 +40,7 @@ from solver.identify.interfaces import (
     merge_controls,
     sensors_from_topics,
 )
+from solver.identify.joints import command_joints
 from solver.identify.motion import controls_from_description
 from solver.identify.profile import Profile, load_profile
 from solver.identify.readers.bags import read_bag_topics
@@ -50,6 +51,7 @@ from solver.identify.srdf import parse_srdf
 from solver.identify.topics import read_topic_list
 from solver.identify.urdf import parse_urdf
 from solver.identify.xacro.compiler import compile_xacro, is_xacro
+from solver.layouts.plan import JointStart
 from solver.ros.names import Topic
 
 __all__ = [
@@ -88,6 +90,8 @@ class Identification:
     warnings: tuple[Fault, ...] = ()
     # The structure rules tried in order, each with why it held or not (``--explain``).
     decision: tuple[str, ...] = ()
+    # The joints a joint command names, each with a safe start (solver.identify.joints).
+    joints: tuple[JointStart, ...] = ()
 
     @property
     def roles(self) -> tuple[Role, ...]:
@@ -168,6 +172,7 @@ def identify_urdf(
         notes=tuple(notes),
         warnings=warnings,
         decision=reading.path,
+        joints=command_joints(urdf, body),
     )
 
 

@@ -21,9 +21,11 @@ its kind:
 Robot fields: ``robot`` (the namespace), ``name`` (the URDF's), ``structure``,
 ``kinematic_type`` (``null`` when the rule set has none for it), ``confidence``,
 ``sensor_count``, ``sensors``, ``motion_controls``, ``combinations`` (each
-``{"combination", "configuration", "default", "reasons"}``), and ``error`` (``null``, or why the
+``{"combination", "configuration", "default", "reasons"}``), ``error`` (``null``, or why the
 robot could not be identified; the scalar identification fields are then ``null``, and
-``sensors``, ``motion_controls`` and ``combinations`` empty lists).
+``sensors``, ``motion_controls`` and ``combinations`` empty lists), and ``topics`` (the
+robot's topics that identification reads, each ``{"topic", "type", "direction"}`` with its
+full name: a renamed camera topic is a ``robot_changed``).
 
 A run starts with one ``robot_added`` per robot, a ``selection_changed`` if a robot is active
 (or a ``/teleop_ui`` parameter has a note), and ``synced``. After ``master_back`` the same

@@ -31,6 +31,7 @@ from solver.identify.identification import Identification, IdentificationCache, 
 from solver.identify.profile import Profile
 from solver.live.discovery import RobotSource
 from solver.live.graph import MISSING
+from solver.ros.names import Topic
 
 __all__ = ["LiveRobot", "identify_robot", "robot_data", "unexpected_error"]
 
@@ -41,12 +42,21 @@ _SOURCE = "topics"
 
 @dataclass(frozen=True, slots=True)
 class LiveRobot:
-    """A robot as the watcher reports it: identified, or the error that prevented it."""
+    """A robot as the watcher reports it: identified, or the error that prevented it; and its
+    topics as discovery found them (names relative to the namespace, with their direction)."""
 
     namespace: str
     identification: Identification | None
     combinations: tuple[Combination, ...] = ()
     error: str | None = None
+    topics: tuple[Topic, ...] = ()
+
+    def graph_topics(self) -> tuple[Topic, ...]:
+        """The robot's topics with their full names on the graph (``/uav1/camera/image_raw``)."""
+        prefix = self.namespace.rstrip("/")
+        return tuple(
+            Topic(f"{prefix}/{topic.name}", topic.type, topic.direction) for topic in self.topics
+        )
 
 
 def _text(value: Any, key: str, what: str = "URDF") -> str | bytes:
@@ -105,17 +115,17 @@ def identify_robot(
         )
         found = combinations(identification, solution, profile)
     except _NotText as error:
-        return LiveRobot(namespace, None, (), str(error))
+        return LiveRobot(namespace, None, (), str(error), source.topics)
     except SolverError as error:
-        return LiveRobot(
-            namespace, None, (), _relocated(error, source.description_key, source.semantic_key)
-        )
+        located = _relocated(error, source.description_key, source.semantic_key)
+        return LiveRobot(namespace, None, (), located, source.topics)
     except Exception as error:  # the per-robot boundary
         # A robot_description is whatever a robot on the network publishes: one that gets
         # past the readers' own checks (an overflow, a recursion, a reader bug) must still
         # not stop the watcher. The robot is reported with what went wrong, the others go on.
-        return LiveRobot(namespace, None, (), unexpected_error(source.description_key, error))
-    return LiveRobot(namespace, identification, found)
+        unexpected = unexpected_error(source.description_key, error)
+        return LiveRobot(namespace, None, (), unexpected, source.topics)
+    return LiveRobot(namespace, identification, found, topics=source.topics)
 
 
 def unexpected_error(key: str, error: BaseException) -> str:
@@ -155,4 +165,8 @@ def robot_data(robot: LiveRobot) -> dict[str, Any]:
             for c in robot.combinations
         ],
         "error": robot.error,
+        "topics": [
+            {"topic": topic.name, "type": topic.type, "direction": topic.direction}
+            for topic in robot.graph_topics()
+        ],
     }

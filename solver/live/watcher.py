@@ -386,9 +386,8 @@ class Watcher:
         except Exception as error:  # the per-robot boundary
             # identify_robot already turns input errors into the robot's; this is the last
             # line: a robot on the network must never end the watcher serving the others.
-            robot = LiveRobot(
-                source.namespace, None, (), unexpected_error(source.description_key, error)
-            )
+            error_text = unexpected_error(source.description_key, error)
+            robot = LiveRobot(source.namespace, None, (), error_text, source.topics)
             return robot, robot_data(robot)
 
     def _select(self, params: dict[str, Any]) -> list[Event]:

@@ -127,6 +127,7 @@ def test_once_prints_one_snapshot_as_json_lines_identical_from_run_to_run(
         "motion_controls",
         "combinations",
         "error",
+        "topics",
     ]
     assert events[2]["assignment"]["configuration"] == rover_configuration(solution)
     assert events[3]["robots"] == ["/uav1", "/ugv1"]

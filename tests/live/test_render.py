@@ -37,6 +37,7 @@ ROBOT_FIELDS = [
     "motion_controls",
     "combinations",
     "error",
+    "topics",
 ]
 
 
