@@ -6,6 +6,7 @@ Usage::
     python tools/measure_identification.py --set tools/identification_set
     python tools/measure_identification.py --all                # both, side by side
     python tools/measure_identification.py --set DIR --files DIR2   # files kept elsewhere
+    python tools/measure_identification.py --all --profile mine.yaml  # another profile
 
 A labelled set is a folder with a ``truth.csv`` (the columns of ``../shared/corpus/truth.csv``:
 ``robot``, ``file``, ``srdf``, ``source``, ``kinematic_type``, ``sensors``,
@@ -367,6 +368,12 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument(
         "--corpus", type=Path, help="the shared corpus folder (default: ../shared/corpus)"
     )
+    parser.add_argument(
+        "--profile",
+        type=Path,
+        help="an identification profile to measure instead of the shipped one "
+        "(a copy with a rule left out measures that rule)",
+    )
     args = parser.parse_args(argv)
     corpus = args.corpus or shared_folder() / "corpus"
     folders: list[Path] = list(args.sets or [])
@@ -374,7 +381,7 @@ def main(argv: list[str] | None = None) -> int:
         folders = [corpus, OWN_SET, *folders]
     elif not folders:
         folders = [corpus]
-    profile = load_profile()
+    profile = load_profile(args.profile)
     rules = load_rules(default_rules_path())
 
     def run(urdf: Path, srdf: Path | None) -> Identification:

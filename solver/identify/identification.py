@@ -152,7 +152,14 @@ def identify_urdf(
     reading = classify(body, profile, rules, root=urdf.root, srdf=srdf, urdf=urdf)
     detections: list[Detection] = list(sensors_from_urdf(urdf, profile))
     controls = [
-        controls_from_description(body, profile, srdf, urdf=urdf, srdf_source=Path(srdf_file).name)
+        controls_from_description(
+            body,
+            profile,
+            srdf,
+            urdf=urdf,
+            sensor_kinds={d.kind for d in detections},
+            srdf_source=Path(srdf_file).name,
+        )
     ]
     for source in topics:
         detections += sensors_from_topics(source.topics, profile, source.name)

@@ -90,7 +90,9 @@ def controls_from_topics(
             control = (
                 profile.velocity_control(structure) if rule.control == VELOCITY else rule.control
             )
-            entry = f"{topic.name} ({topic.type})"
+            # Name and type cut each on its own: a Nav2 action topic and its type run past
+            # the cut together.
+            entry = f"{shown(topic.name)} ({shown(topic.type)})"
             if entry not in seen.setdefault(control, []):
                 seen[control].append(entry)
             break
@@ -107,7 +109,7 @@ def _is_action(topic: Topic) -> bool:
 
 
 def _first(names: list[str], limit: int = 3) -> str:
-    listed = ", ".join(shown(name) for name in names[:limit])
+    listed = ", ".join(names[:limit])
     return listed + (f", ... ({len(names)} in all)" if len(names) > limit else "")
 
 

@@ -19,11 +19,16 @@ Two kinds of evidence, the declared first:
 Which control each of these means is the profile's ``motion.description`` (data); this module
 only says which of them a robot has.
 
-Navigation (Waypoint) and walking commands live in launch and config files, not in the robot
-description: they come from topics (:mod:`solver.identify.interfaces`).
+Navigation (Waypoint) and walking live in launch and config files, not in the robot
+description: topics show them (:mod:`solver.identify.interfaces`). A description shows only
+that a vehicle *could* take waypoints: the profile's ``motion.navigation`` names, per control
+that moves the body, the sensors navigation needs (a driven base and a lidar; a flown body and
+odometry; thrusters and a Doppler velocity log). Such a Waypoint is a guess and says so.
 """
 
 from __future__ import annotations
+
+from collections.abc import Collection
 
 from solver.identify.body import Body
 from solver.identify.interfaces import Control
@@ -113,16 +118,35 @@ def _planned(
     return found
 
 
+def _navigation(
+    controls: tuple[Control, ...], sensor_kinds: Collection[str], profile: Profile, source: str
+) -> tuple[Control, ...]:
+    """The profile's navigation control (Waypoint) as a guess: the body is moved by a control
+    the rule lists and carries a sensor that control's navigation needs."""
+    rule = profile.navigation
+    if rule is None or any(c.motion_control == rule.control for c in controls):
+        return ()
+    needs = dict(rule.needs)
+    for control in controls:
+        carried = [kind for kind in needs.get(control.motion_control, ()) if kind in sensor_kinds]
+        if carried:
+            why = f"{control.motion_control} and a {carried[0]} sensor, what navigation needs"
+            return (Control(rule.control, f"{source}: likely, not declared: {why}"),)
+    return ()
+
+
 def controls_from_description(
     body: Body,
     profile: Profile,
     srdf: Srdf | None = None,
     *,
     urdf: Urdf | None = None,
+    sensor_kinds: Collection[str] = (),
     urdf_source: str = "urdf",
     srdf_source: str = "srdf",
 ) -> tuple[Control, ...]:
-    """The motion controls the body (and SRDF) show, each with what shows it."""
+    """The motion controls the body (and SRDF) show, each with what shows it; with the kinds
+    of the sensors the description declares, the profile's navigation guess too."""
     shown = [
         *_ground(body, urdf_source),
         *_flight(body, urdf_source),
@@ -138,6 +162,7 @@ def controls_from_description(
     for control, texts in by_roles.items():
         found.setdefault(control, texts)
     order = [control for source, _ in shown for control in profile.description_control(source)]
-    return tuple(
+    controls = tuple(
         Control(name, "; ".join(found[name])) for name in dict.fromkeys(order) if name in found
     )
+    return controls + _navigation(controls, sensor_kinds, profile, urdf_source)

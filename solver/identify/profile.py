@@ -37,6 +37,7 @@ __all__ = [
     "PLUGIN_PARTS",
     "ControlRule",
     "FeatureCondition",
+    "NavigationRule",
     "Pattern",
     "Profile",
     "ProfileError",
@@ -308,6 +309,15 @@ class SensorTypeMapping:
         return self.single_plane
 
 
+@dataclass(frozen=True, slots=True)
+class NavigationRule:
+    """A control a description can show only as a guess (Waypoint): a body moved by one of
+    ``needs``' controls (Driving, Flight) that carries one of the sensor kinds it lists."""
+
+    control: str
+    needs: tuple[tuple[str, tuple[str, ...]], ...]
+
+
 @dataclass(frozen=True)
 class Profile:
     """A loaded identification profile (see the module docstring and the shipped file)."""
@@ -331,6 +341,7 @@ class Profile:
     velocity_by_structure: tuple[tuple[str, str], ...]
     description_controls: tuple[tuple[str, tuple[str, ...]], ...]
     digest: str = ""
+    navigation: NavigationRule | None = None
 
     def role(self, name: str) -> str:
         """The rule-set characteristic filling role ``name`` (motion_control, ...)."""
@@ -411,6 +422,7 @@ def parse_profile(document: Document) -> Profile:
     )
     topic_controls = _control_rules(reader)
     velocity_default, by_structure, description = _motion(reader, names)
+    navigation = _navigation(reader)
     if reader.faults:
         raise ProfileError(reader.faults)
     text = repr(document.data).encode("utf-8")
@@ -434,6 +446,7 @@ def parse_profile(document: Document) -> Profile:
         by_structure,
         description,
         hashlib.sha256(text).hexdigest(),
+        navigation,
     )
 
 
@@ -706,7 +719,9 @@ def _motion(
     reader: Reader, structures: set[str]
 ) -> tuple[str, tuple[tuple[str, str], ...], tuple[tuple[str, tuple[str, ...]], ...]]:
     spec = reader.mapping(("motion",), "motion")
-    reader.unknown_keys(("motion",), spec, {"velocity", "description"}, "motion field")
+    reader.unknown_keys(
+        ("motion",), spec, {"velocity", "description", "navigation"}, "motion field"
+    )
     velocity = reader.mapping(("motion", "velocity"), "velocity")
     reader.unknown_keys(
         ("motion", "velocity"), velocity, {"default", "by_structure"}, "velocity field"
@@ -736,3 +751,19 @@ def _motion(
             names = reader.names(("motion", "description", source), "motion controls")
             sources.append((source, tuple(text for _, text in names)))
     return default, tuple(pairs), tuple(sources)
+
+
+def _navigation(reader: Reader) -> NavigationRule | None:
+    """``motion.navigation`` (optional): the control, and per moving control its sensor kinds."""
+    path: YPath = ("motion", "navigation")
+    spec = reader.mapping(path, "navigation", required=False)
+    if not spec:
+        return None
+    reader.unknown_keys(path, spec, {"control", "needs"}, "navigation field")
+    control = reader.string((*path, "control"), "motion control")
+    needs = reader.mapping((*path, "needs"), "needs")
+    found = []
+    for moving in needs:
+        kinds = reader.names((*path, "needs", moving), "sensor kinds")
+        found.append((moving, tuple(text for _, text in kinds)))
+    return NavigationRule(control, tuple(found))

@@ -190,7 +190,8 @@ def test_fleet_lists_dangling_and_looping_links_as_not_identified(tmp_path: Path
     ("example", "srdf", "structure", "sensors", "controls"),
     [
         ("quadrotor.urdf", None, "UAV", [("imu", None), ("camera", "2D Camera")], ["Flight"]),
-        ("diff_drive_lidar.urdf", None, "UGV", [("lidar", "LIDAR")], ["Driving"]),
+        # A driven base with a lidar: Waypoint, as a guess (navigation is in launch files).
+        ("diff_drive_lidar.urdf", None, "UGV", [("lidar", "LIDAR")], ["Driving", "Waypoint"]),
         ("arm_gripper.urdf", "arm_gripper.srdf", "Manipulator", [], ["Joint", "End Effector"]),
     ],
     ids=["quadrotor", "diff drive with a lidar", "arm with a gripper and its SRDF"],

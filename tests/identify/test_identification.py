@@ -53,7 +53,7 @@ def test_the_content_key_changes_with_every_input() -> None:
     assert len(keys) == 5
 
 
-def test_topics_add_waypoint_to_what_the_description_shows() -> None:
+def test_topics_confirm_the_waypoint_a_description_can_only_guess() -> None:
     topics = [
         TopicSource(
             "live",
@@ -66,7 +66,11 @@ def test_topics_add_waypoint_to_what_the_description_shows() -> None:
     result = identify_urdf(rover_text(), topics=topics)
     assert [(c.motion_control, c.source) for c in result.motion_controls] == [
         ("Driving", "urdf: drive plugin libgazebo_ros_diff_drive.so"),
-        ("Waypoint", "live: /move_base/goal (move_base_msgs/MoveBaseActionGoal)"),
+        (
+            "Waypoint",
+            "urdf: likely, not declared: Driving and a lidar sensor, what navigation needs; "
+            "live: /move_base/goal (move_base_msgs/MoveBaseActionGoal)",
+        ),
     ]
     lidar = result.sensors[0]
     assert (lidar.kind, lidar.count, lidar.source) == ("lidar", 1, "urdf: laser; live: /scan")
@@ -76,23 +80,20 @@ def test_a_ugv_gets_a_ui_configuration_per_control_and_sensor_type() -> None:
     solution = solve(load_team(TEAMS / "case2.yaml"))
     result = identify_urdf(rover_text())
     found = combinations(result, solution, load_profile())
+    # Driven by its plugin; Waypoint guessed from the drive and the lidar.
     assert [dict(c.values) for c in found] == [
         {
             "kinematic_type": "UGV",
-            "motion_control": "Driving",
-            "sensor_type": "LIDAR",
+            "motion_control": control,
+            "sensor_type": sensor,
             "sensor_count": "2",
-        },
-        {
-            "kinematic_type": "UGV",
-            "motion_control": "Driving",
-            "sensor_type": "2D Camera",
-            "sensor_count": "2",
-        },
+        }
+        for control in ("Driving", "Waypoint")
+        for sensor in ("LIDAR", "2D Camera")
     ]
     numbers = [c.assignment.number for c in found]
     assert all(not c.assignment.is_default for c in found)
-    assert numbers[0] != numbers[1]  # LIDAR and camera are presented differently
+    assert len(set(numbers)) == 4  # each control and each sensor type presented differently
 
 
 def test_a_quadruped_gets_the_default_configuration_with_the_reason() -> None:

@@ -63,6 +63,11 @@ def test_what_the_robot_only_subscribes_to_is_not_its_sensor() -> None:
         ("UAV", "Flight"),
         ("Humanoid", "Walking"),
         ("Quadruped", "Walking"),
+        ("Biped", "Walking"),
+        ("Legged Mobile Manipulator", "Walking"),
+        ("Aerial Manipulator", "Flight"),
+        ("Surface Vessel", "Driving"),
+        ("Underwater Vehicle", "Driving"),
     ],
 )
 def test_a_velocity_command_is_the_structures_control(structure: str, control: str) -> None:
@@ -94,6 +99,25 @@ def test_a_velocity_command_is_the_structures_control(structure: str, control: s
         (Topic("/arm_controller/cartesian_twist/command", "geometry_msgs/Twist"), "End Effector"),
         (Topic("/footstep", "humanoid_nav_msgs/StepTarget"), "Walking"),
         (Topic("/command/roll_pitch_yawrate_thrust", "mav_msgs/RollPitchYawrateThrust"), "Flight"),
+        # Flight setpoints: an attitude is flown, a position is a waypoint.
+        (Topic("/mavros/setpoint_raw/attitude", "mavros_msgs/AttitudeTarget"), "Flight"),
+        (Topic("/mavros/setpoint_raw/local", "mavros_msgs/PositionTarget"), "Waypoint"),
+        (Topic("/action/pose/goal", "hector_uav_msgs/PoseActionGoal"), "Waypoint"),
+        (
+            Topic(
+                "/navigate_to_pose/_action/feedback",
+                "nav2_msgs/NavigateToPose_FeedbackMessage",
+                "published",
+            ),
+            "Waypoint",
+        ),
+        (Topic("/follow_waypoints/_action/status", "action_msgs/GoalStatusArray"), "Waypoint"),
+        (
+            Topic("/move_group/feedback", "moveit_msgs/MoveGroup_FeedbackMessage", "published"),
+            "End Effector",
+        ),
+        (Topic("/servo_node/delta_joint_cmds", "control_msgs/JointJog"), "Joint"),
+        (Topic("/cmd_pose", "geometry_msgs/Pose2D"), "Walking"),
     ],
 )
 def test_commands_map_to_motion_controls(topic: Topic, control: str) -> None:
@@ -116,4 +140,22 @@ def test_a_control_lists_the_topics_that_show_it() -> None:
     )
     assert found[0].source == (
         "topics.txt: /cmd_vel (geometry_msgs/Twist), /joy_teleop/cmd_vel (geometry_msgs/Twist)"
+    )
+
+
+def test_a_topic_name_and_its_type_are_each_cut_on_their_own() -> None:
+    long_name = "/" + "n" * 91 + "/cmd_vel"
+    [nav, long] = controls_from_topics(
+        [
+            Topic("/navigate_to_pose/_action/status", "action_msgs/GoalStatusArray"),
+            Topic(long_name, "geometry_msgs/Twist"),
+        ],
+        PROFILE,
+        "UGV",
+        "t",
+    )
+    # 62 characters together: neither part is past the cut.
+    assert nav.source == "t: /navigate_to_pose/_action/status (action_msgs/GoalStatusArray)"
+    assert long.source == (
+        f"t: {long_name[:60]}... (cut from 100 characters) (geometry_msgs/Twist)"
     )

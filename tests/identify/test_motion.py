@@ -125,3 +125,41 @@ def test_a_tracked_bases_flippers_are_driven_limbs_not_the_fingers_of_a_hand() -
         "Driving": "urdf: drive plugin libSimpleTrackedVehiclePlugin.so",
         "Joint": "urdf: 4 limb joint(s) with a transmission",
     }
+
+
+LIDAR = builders.gazebo_sensor("laser", "ray", "front_laser")
+GUESS = "urdf: likely, not declared: {} and a {} sensor, what navigation needs"
+
+
+def test_a_driven_base_with_a_lidar_could_take_waypoints_and_says_it_is_a_guess() -> None:
+    robot = builders.ugv()
+    robot.add(builders.model_plugin("drive", "libgazebo_ros_diff_drive.so"))
+    robot.add(LIDAR)
+    assert controls(robot)["Waypoint"] == GUESS.format("Driving", "lidar")
+
+
+def test_a_driven_base_with_a_camera_only_shows_no_waypoints() -> None:
+    robot = builders.ugv()
+    robot.add(builders.gazebo_sensor("cam", "camera", "front_camera"))
+    assert set(controls(robot)) == {"Driving"}
+
+
+def test_a_lidar_on_an_arm_is_no_navigation() -> None:
+    robot = builders.manipulator()
+    robot.add(LIDAR)
+    assert "Waypoint" not in controls(robot)
+
+
+def test_a_multirotor_with_odometry_could_fly_to_waypoints() -> None:
+    robot = builders.quadrotor()
+    robot.add(builders.model_plugin("odometry_sensor", "librotors_gazebo_odometry_plugin.so"))
+    assert controls(robot)["Waypoint"] == GUESS.format("Flight", "odometry")
+
+
+def test_a_vehicle_in_water_with_a_doppler_velocity_log_could_follow_waypoints() -> None:
+    robot = builders.underwater_vehicle()
+    robot.add(builders.model_plugin("dvl", "libuuv_gazebo_ros_dvl_plugin.so"))
+    found = controls(robot)
+    assert found["Driving"] == "urdf: 1 thruster(s)"
+    assert found["Waypoint"] == GUESS.format("Driving", "dvl")
+    assert "Waypoint" not in controls(builders.underwater_vehicle())

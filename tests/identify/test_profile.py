@@ -74,3 +74,19 @@ def test_a_pattern_needing_backtracking_is_refused_with_its_location() -> None:
     fault = next(f for f in caught.value.faults if f.location.path == "patterns.wheel")
     assert fault.location.file == "mine.yaml"
     assert "no lookaround or backreferences" in fault.message
+
+
+def test_the_navigation_guess_is_optional_and_its_fields_are_checked() -> None:
+    start = SHIPPED.index("  navigation:")
+    without = parse_profile(parse_document(SHIPPED[:start], "plain.yaml"))
+    assert without.navigation is None
+    shipped = load_profile().navigation
+    assert shipped is not None
+    assert shipped.control == "Waypoint"
+    assert dict(shipped.needs)["Flight"] == ("odometry",)
+    text = SHIPPED.replace("    control: Waypoint\n", "    control: Waypoint\n    guess: yes\n")
+    with pytest.raises(ProfileError) as caught:
+        parse_profile(parse_document(text, "p.yaml"))
+    [fault] = caught.value.faults
+    assert fault.location.path == "motion.navigation.guess"
+    assert "unknown navigation field 'guess'" in fault.message

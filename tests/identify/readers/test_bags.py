@@ -16,6 +16,7 @@ from rosbags.rosbag2 import Writer as Writer2
 from rosbags.typesys import Stores, get_types_from_msg, get_typestore
 
 from solver.errors import InputError
+from solver.identify import identify
 from solver.identify.readers.bags import BagLimits, read_bag_topics
 from solver.ros.names import Topic
 from tests.conftest import run_cli
@@ -86,6 +87,82 @@ def test_identify_with_a_bag_adds_sensors_and_controls(tmp_path: Path) -> None:
         ("camera", "2D Camera", "bag run.bag: /camera"),
     ]
     assert [c["motion_control"] for c in data["motion_controls"]] == ["Driving", "Waypoint"]
+
+
+def write_ros2_topics(folder: Path, topics: list[tuple[str, str]]) -> Path:
+    store = get_typestore(Stores.ROS2_HUMBLE)
+    with Writer2(folder, version=8, storage_plugin=StoragePlugin.SQLITE3) as writer:
+        for topic, kind in topics:
+            writer.add_connection(topic, kind, typestore=store)
+    return folder
+
+
+def write_ros1_topics(path: Path, topics: list[tuple[str, str]]) -> Path:
+    store = get_typestore(Stores.ROS1_NOETIC)
+    known = set(store.types)
+    for _, kind in topics:  # types the noetic store lacks (mavros): stand-ins of that name
+        if kind not in known:
+            store.register(get_types_from_msg("int32 x", kind))
+    with Writer1(path) as writer:
+        for topic, kind in topics:
+            writer.add_connection(topic, kind, typestore=store)
+    return path
+
+
+def test_a_bag_shows_what_a_humanoid_offers_walking_navigation_and_joint_goals(
+    tmp_path: Path,
+) -> None:
+    bag = write_ros2_topics(
+        tmp_path / "walk",
+        [
+            ("/cmd_vel", "geometry_msgs/msg/Twist"),
+            ("/navigate_to_pose/_action/status", "action_msgs/msg/GoalStatusArray"),
+            ("/arm_controller/joint_trajectory", "trajectory_msgs/msg/JointTrajectory"),
+        ],
+    )
+    urdf = tmp_path / "humanoid.urdf"
+    urdf.write_text(builders.humanoid().text(), encoding="utf-8")
+    result = identify(urdf, bags=[bag])
+    assert result.structure == "Humanoid"
+    found = {c.motion_control: c.source for c in result.motion_controls}
+    assert found["Walking"] == "bag walk: /cmd_vel (geometry_msgs/Twist)"
+    assert found["Waypoint"] == (
+        "bag walk: /navigate_to_pose/_action/status (action_msgs/GoalStatusArray)"
+    )
+    assert found["Joint"].endswith(
+        "bag walk: /arm_controller/joint_trajectory (trajectory_msgs/JointTrajectory)"
+    )
+
+
+def test_a_bag_shows_a_drones_flight_and_position_setpoints(tmp_path: Path) -> None:
+    bag = write_ros1_topics(
+        tmp_path / "flight.bag",
+        [
+            ("/mavros/setpoint_raw/attitude", "mavros_msgs/msg/AttitudeTarget"),
+            ("/mavros/setpoint_raw/local", "mavros_msgs/msg/PositionTarget"),
+        ],
+    )
+    urdf = tmp_path / "copter.urdf"
+    urdf.write_text(builders.quadrotor().text(), encoding="utf-8")
+    found = {c.motion_control: c.source for c in identify(urdf, bags=[bag]).motion_controls}
+    assert found["Flight"] == (
+        "urdf: 4 rotor joint(s); bag flight.bag: /mavros/setpoint_raw/attitude "
+        "(mavros_msgs/AttitudeTarget)"
+    )
+    assert found["Waypoint"] == (
+        "bag flight.bag: /mavros/setpoint_raw/local (mavros_msgs/PositionTarget)"
+    )
+
+
+def test_a_bag_shows_a_vessel_driven_by_velocity_commands(tmp_path: Path) -> None:
+    bag = write_ros2_topics(tmp_path / "sea", [("/cmd_vel", "geometry_msgs/msg/Twist")])
+    urdf = tmp_path / "boat.urdf"
+    urdf.write_text(builders.surface_vessel().text(), encoding="utf-8")
+    result = identify(urdf, bags=[bag])
+    assert result.structure == "Surface Vessel"
+    assert [(c.motion_control, c.source) for c in result.motion_controls] == [
+        ("Driving", "urdf: 2 thruster(s); bag sea: /cmd_vel (geometry_msgs/Twist)")
+    ]
 
 
 # ---- issue 23.3 and 31.4: hostile bags, each within its bound ---------------------------------
