@@ -111,6 +111,9 @@ class Body:
     # the surface (a surface plugin, <metacentric_width>, wind on its buoyancy).
     marine_plugins: tuple[str, ...] = ()
     surface_hints: tuple[str, ...] = ()
+    # What a body below the surface has: a buoyancy or hydrodynamics plugin, a thruster plugin,
+    # a DVL or pressure sensor. A body in water by thruster names alone has none.
+    underwater_hints: tuple[str, ...] = ()
     # Flying known only from a model plugin's parameters (a vehicle plugin of its own).
     flight_hints: tuple[str, ...] = ()
     finger_motions: int = 0
@@ -188,6 +191,7 @@ class Body:
             "finger_motions": self.finger_motions,
             "marine": int(self.marine),
             "surface": int(bool(self.surface_hints)),
+            "underwater": int(bool(self.underwater_hints)),
         }
 
     def _trimmed(self) -> list[str]:
@@ -217,6 +221,13 @@ class Body:
             lines.append(f"water plugin(s): {_names(self.marine_plugins)}")
         if self.surface_hints:
             lines.append(f"floats at the surface: {_names(self.surface_hints)}")
+        elif self.underwater_hints:
+            lines.append(f"below the surface: {_names(self.underwater_hints)}")
+        elif self.marine:
+            lines.append(
+                "in water by thruster names alone: no buoyancy or hydrodynamics plugin, "
+                "no thruster plugin, no DVL or pressure sensor"
+            )
         return lines
 
     def _ground(self) -> list[str]:
@@ -360,7 +371,8 @@ class _Detector:
             wings=tuple(self._wings(parts)),
             marine_plugins=(*self.labels("thruster"), *self.labels("marine")),
             surface_hints=self._surface_hints(),
-            flight_hints=self._flight_hints(),
+            underwater_hints=self._underwater_hints(),
+            flight_hints=self._flight_hints(parts),
             finger_motions=sum(
                 1 for name in parts.grippers if (j := self.urdf.joint(name)) and j.actuated
             ),
@@ -503,9 +515,29 @@ class _Detector:
         hints += sorted(tag for tag in self.urdf.tags if pattern.search(tag))
         return tuple(dict.fromkeys(hints))
 
-    def _flight_hints(self) -> tuple[str, ...]:
+    def _underwater_hints(self) -> tuple[str, ...]:
+        """Thruster and underwater plugins, and sensors (by type, name or plugin) the profile's
+        ``underwater`` pattern reads: a DVL, a pressure sensor."""
+        pattern = self.profile.plugin_pattern("underwater")
+        if not self.reader.marine:
+            return ()
+        hints = [*self.labels("thruster"), *self.labels("underwater")]
+        if pattern is not None:
+            hints += [
+                sensor.name
+                for sensor in self.urdf.sensors
+                if pattern.search(f"{sensor.type} {sensor.device_text}")
+            ]
+        return tuple(dict.fromkeys(hints))
+
+    def _flight_hints(self, parts: _Parts) -> tuple[str, ...]:
+        """Plugins whose parameters use the flight vocabulary (a vehicle plugin of its own that
+        sets a drone's topics). Not on a body that moves on the ground or walks: there a word
+        such as ``drone`` in a parameter is a name (another robot's namespace), not flight.
+        """
         pattern = self.profile.plugin_pattern("flight")
-        if pattern is None or self.labels("flight"):
+        walks = any(limb.kind == "leg" for limb in parts.limbs)
+        if pattern is None or self.labels("flight") or walks or self._grounded(parts):
             return ()
         return tuple(
             self.reader.plugin_label(p)

@@ -64,8 +64,18 @@ PARTS = (
 )
 # drive/track/flight/thruster/lift: plugins that move the robot (a joint they name takes their
 # role); marine: plugins of a body in water; surface: hints of a hull floating at the surface
-# (plugins and element names such as <metacentric_width>); arm_control: joint controllers.
-PLUGIN_PARTS = ("drive", "track", "flight", "thruster", "lift", "marine", "surface")
+# (plugins and element names such as <metacentric_width>); underwater: what a body below the
+# surface has (plugins and sensors: hydrodynamics, buoyancy, a DVL, a pressure sensor).
+PLUGIN_PARTS = (
+    "drive",
+    "track",
+    "flight",
+    "thruster",
+    "lift",
+    "marine",
+    "surface",
+    "underwater",
+)
 FEATURES = (
     "wheels",
     "tracks",
@@ -88,10 +98,13 @@ FEATURES = (
     "finger_motions",
     "marine",
     "surface",
+    "underwater",
 )
 # thrusters / fins / casters: joints (or plugin-named links) in those roles; finger_motions: the
 # finger joints that move on their own (not mimic); marine: a body in water (thrusters, marine
-# plugins); surface: floating at the surface (a hull's buoyancy hints, a surface plugin).
+# plugins); surface: floating at the surface (a hull's buoyancy hints, a surface plugin);
+# underwater: what a body below the surface has (a buoyancy or hydrodynamics plugin, a thruster
+# plugin, a DVL or pressure sensor), where thruster names alone put it in water.
 # weak_base: the mobile base is known only from fixed wheels, planar root joints or an SRDF
 # planar virtual joint (a trimmed or simulated model), not from driven wheels or a plugin.
 # weak_flight: flying is known only from fixed rotor-named links on a body with no movable
@@ -104,6 +117,7 @@ BOOLEAN_FEATURES = (
     "weak_flight",
     "marine",
     "surface",
+    "underwater",
 )
 DIRECTIONS = ("published", "subscribed")
 CONTROL_SOURCES = (

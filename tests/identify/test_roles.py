@@ -77,3 +77,57 @@ def test_the_decision_path_names_each_structure_rule_tried_in_order() -> None:
     result = identify_urdf(builders.caster_base().text())
     assert result.decision[0] == "Surface Vessel: no (needs marine, has 0, needs surface, has 0)"
     assert result.decision[-1] == "UGV: yes (mobile_base, arms = 0, legs = 0)"
+
+
+def thrusters_by_name() -> RobotText:
+    """Four joints named as thrusters on a hull; no plugin, no sensor says where it swims."""
+    robot = RobotText("hull")
+    for i in range(4):
+        robot.joint(f"thruster_{i}_joint", "continuous", robot.root, f"thruster_{i}")
+    return robot
+
+
+def test_a_body_in_water_by_thruster_names_alone_is_underwater_with_doubt() -> None:
+    result = identify_urdf(thrusters_by_name().text())
+    assert result.structure == "Underwater Vehicle"
+    assert result.confidence == pytest.approx(0.85 * 0.8, abs=0.01)
+    assert (
+        "in water by thruster names alone: no buoyancy or hydrodynamics plugin, "
+        "no thruster plugin, no DVL or pressure sensor"
+    ) in result.evidence
+    assert "doubt: a typical Underwater Vehicle has underwater" in result.evidence
+
+
+@pytest.mark.parametrize(
+    "evidence",
+    [
+        builders.gazebo_sensor("dvl_link", "dvl", "dvl"),
+        builders.gazebo_sensor("base_link", "altimeter", "depth", plugin="libsubsea_pressure.so"),
+        builders.model_plugin("water", "libunderwater_object.so"),
+        builders.model_plugin("hydro", "gz-sim-hydrodynamics-system"),
+    ],
+    ids=["a DVL", "a pressure sensor", "an underwater plugin", "hydrodynamics"],
+)
+def test_underwater_evidence_keeps_an_underwater_reading_certain(evidence: str) -> None:
+    robot = thrusters_by_name()
+    robot.add(evidence)
+    result = identify_urdf(robot.text())
+    assert (result.structure, result.confidence) == ("Underwater Vehicle", 0.85)
+    assert any(line.startswith("below the surface: ") for line in result.evidence)
+
+
+def test_flight_words_in_a_plugins_parameters_fly_only_a_body_that_cannot_roll_or_walk() -> None:
+    # A vehicle plugin of its own that sets a drone's topics: the one sign the body flies.
+    plugin = builders.model_plugin(
+        "vehicle", "libmy_vehicle.so", "<cmdTopic>drone/cmd_vel</cmdTopic>"
+    )
+    body = RobotText("shell")
+    body.add(plugin)
+    assert identify_urdf(body.text()).structure == "UAV"
+    # A rover in a world it shares with a drone: the word names the other robot.
+    rover = builders.ugv()
+    rover.add(plugin)
+    assert identify_urdf(rover.text()).structure == "UGV"
+    dog = builders.quadruped()
+    dog.add(plugin)
+    assert identify_urdf(dog.text()).structure == "Quadruped"
