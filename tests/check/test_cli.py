@@ -27,9 +27,12 @@ def test_check_paper_rules_is_clean_and_exits_0() -> None:
 
 def test_check_rules_and_teams_together_exits_0_for_the_shipped_files() -> None:
     # The shipped teams written for the article's rules (search-and-rescue is written for
-    # rules/extended.yaml and is checked against it below).
+    # rules/extended.yaml, marine-survey for rules/marine.yaml: each is checked against its own
+    # below).
     teams = sorted(
-        str(p.relative_to(ROOT)) for p in TEAMS.glob("*.yaml") if p.stem != "search-and-rescue"
+        str(p.relative_to(ROOT))
+        for p in TEAMS.glob("*.yaml")
+        if p.stem not in ("search-and-rescue", "marine-survey")
     )
     result = run_cli("check", "rules/paper.yaml", *teams)
     assert result.returncode == 0
@@ -40,6 +43,16 @@ def test_the_extended_example_rules_and_their_team_check_without_error() -> None
     result = run_cli("check", "rules/extended.yaml", "rules/teams/search-and-rescue.yaml")
     assert result.returncode == 0
     assert result.stdout.endswith("2 files checked: 0 errors, 0 warnings, 9 info\n")
+
+
+def test_the_marine_rules_and_their_team_check_clean() -> None:
+    result = run_cli("check", "--strict", "rules/marine.yaml", "rules/teams/marine-survey.yaml")
+    assert result.returncode == 0
+    assert result.stdout.endswith("2 files checked: 0 errors, 0 warnings, 15 info\n")
+    # The infos say what the constraints exclude for each type, as the extended example's do.
+    infos = result.stdout.splitlines()[:-1]
+    assert all("[info]" in line for line in infos)
+    assert sum("(dead-for-type)" in line for line in infos) == 14
 
 
 def test_check_literal_equation_2_exits_1_with_its_four_gaps() -> None:

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from solver import RulesError, load_rules
+from solver import RulesError, load_rules, load_team, solve
 from solver.core.rules import Component, default_rules_path
 from tests.conftest import RULES
 
@@ -70,6 +70,31 @@ def test_the_paper_rules_cluster_sensor_counts_as_equation_2(
     sensors = load_rules(RULES / "paper.yaml").characteristic("sensor_count")
     (component,) = sensors.components_of(count)
     assert (component.name, component.clusters(count)) == (arrangement, clusters)
+
+
+def test_the_marine_rules_make_vessels_kinematic_types_beside_the_articles_six() -> None:
+    rules = load_rules(RULES / "marine.yaml")
+    assert rules.key.values[-2:] == ("Surface Vessel", "Underwater Vehicle")
+    assert [len(c.values) for c in rules.characteristics] == [8, 6, 13, 50]
+    groups = {c.name: c.values for c in rules.characteristic("sensor_type").components}
+    assert groups["sonar display"] == ("Sonar",)
+    assert groups["navigation gauges"] == ("DVL", "Depth Gauge")
+    assert rules.bound == 8 * 6 * 7 * 5 == rules.declared_bound
+
+
+def test_the_marine_survey_team_solves_to_the_counts_its_selection_implies() -> None:
+    solution = solve(load_team("marine-survey"))
+    counts = {t.kinematic_type: (t.valid_robots, t.ui_configurations) for t in solution.by_type}
+    assert counts == {
+        # 2 controls x 1 sensor type x counts 1..2; configurations: 2 x 1 x 1 (individual).
+        "UAV": (2 * 1 * 2, 2 * 1 * 1),
+        # 2 controls x 3 sensor types (visual, point cloud, sonar display) x counts 1..5;
+        # configurations 2 x 3 x 1.
+        "Surface Vessel": (2 * 3 * 5, 2 * 3 * 1),
+        # 3 controls x 4 sensor types in 3 components (DVL and Depth Gauge share the
+        # navigation gauges) x counts 1..8 in 2 arrangements (individual, clusters of 2).
+        "Underwater Vehicle": (3 * 4 * 8, 3 * 3 * 2),
+    }
 
 
 def test_the_default_rules_are_the_shipped_paper_rules() -> None:

@@ -49,6 +49,7 @@ def test_the_shipped_files_are_of_the_kind_their_folder_says() -> None:
         "paper.yaml": "rules",
         "paper-case3-hypothesis.yaml": "rules",
         "extended.yaml": "rules",
+        "marine.yaml": "rules",
         "identification.yaml": "profile",
         "presentation.yaml": "presentation",
     }
@@ -101,7 +102,7 @@ def test_an_unknown_shipped_team_name_lists_the_shipped_teams() -> None:
         assert result.returncode == 2
         assert result.stderr == (
             "case9: no such file, and no shipped team of that name; shipped teams: case1, "
-            "case2, case3, case3-hypothesis, figure8, search-and-rescue\n"
+            "case2, case3, case3-hypothesis, figure8, marine-survey, search-and-rescue\n"
         )
 
 

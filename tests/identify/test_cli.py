@@ -225,3 +225,58 @@ def test_fleet_lists_the_warnings_of_a_flawed_robot_and_strict_refuses_it(tmp_pa
     assert f"warning: {folder / 'gripper.urdf'}:4: joint[finger_joint].parent:" in shown
     strict = run_cli("fleet", folder, "--strict").stdout
     assert f"not identified: gripper: {folder / 'gripper.urdf'}:4:" in strict
+
+
+def test_the_marine_rules_give_a_vessel_its_own_kinematic_type(tmp_path: Path) -> None:
+    boat = builders.surface_vessel()
+    boat.add(builders.gazebo_sensor("base_link", "sonar", "front_sonar"))
+    boat.add(builders.gazebo_sensor("base_link", "camera", "bow_camera"))
+    path = tmp_path / "boat.urdf"
+    path.write_text(boat.text())
+    paper = json.loads(run_cli("identify", path, "--format", "json").stdout)
+    assert (paper["structure"], paper["kinematic_type"]) == ("Surface Vessel", None)
+    result = run_cli("identify", path, "--rules", "rules/marine.yaml", "--format", "json", cwd=ROOT)
+    assert result.returncode == 0, result.stderr
+    marine = json.loads(result.stdout)
+    assert (marine["structure"], marine["kinematic_type"]) == ("Surface Vessel", "Surface Vessel")
+    assert not any("Other under it" in line for line in marine["evidence"])
+    assert [(s["kind"], s["sensor_type"]) for s in marine["sensors"]] == [
+        ("sonar", "Sonar"),
+        ("camera", "2D Camera"),
+    ]
+    assert [c["motion_control"] for c in marine["motion_controls"]] == ["Driving"]
+
+
+def test_the_marine_team_configures_an_underwater_vehicle_by_its_sonar_and_dvl(
+    tmp_path: Path,
+) -> None:
+    rov = builders.underwater_vehicle()
+    rov.add(builders.gazebo_sensor("base_link", "sonar", "imaging_sonar"))
+    rov.add(builders.model_plugin("dvl", "libuuv_gazebo_ros_dvl_plugin.so"))
+    path = tmp_path / "rov.urdf"
+    path.write_text(rov.text())
+    result = run_cli("identify", path, "--team", "marine-survey", "--format", "json")
+    assert result.returncode == 0, result.stderr
+    data = json.loads(result.stdout)
+    assert data["kinematic_type"] == "Underwater Vehicle"
+    assert [(s["kind"], s["sensor_type"]) for s in data["sensors"]] == [
+        ("sonar", "Sonar"),
+        ("dvl", "DVL"),
+    ]
+    # Driving (its thruster), Waypoint (a guess: thrusters and a DVL) x Sonar, DVL; two sensors.
+    given = [
+        (
+            c["combination"]["motion_control"],
+            c["combination"]["sensor_type"],
+            c["combination"]["sensor_count"],
+        )
+        for c in data["combinations"]
+    ]
+    assert given == [
+        ("Driving", "Sonar", "2"),
+        ("Driving", "DVL", "2"),
+        ("Waypoint", "Sonar", "2"),
+        ("Waypoint", "DVL", "2"),
+    ]
+    assert not any(c["default"] for c in data["combinations"])
+    assert len({c["configuration"] for c in data["combinations"]}) == 4
