@@ -15,6 +15,8 @@ import math
 from dataclasses import replace
 from typing import Any
 
+import highspy
+import numpy as np
 import yaml
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -249,3 +251,98 @@ def test_the_block_listing_is_the_robot_by_robot_listing(team: Team, fmt: str) -
             line = {"configuration": number, **dict(zip(names, robot, strict=True))}
             reference.write(json.dumps(line, ensure_ascii=False) + "\n")
     assert listed.getvalue() == reference.getvalue()
+
+
+@st.composite
+def overlapping(draw: st.DrawFn) -> Team:
+    """Characteristics whose every value is in two components: sliding windows (covers that
+    multiply across characteristics) or a cycle of pairs (odd cycles do not: their product is
+    covered jointly), with random selections and, sometimes, a rule linking two of them."""
+    characteristics: dict[str, Any] = {"kind": {"values": ["T0", "T1"]}}
+    for j in range(draw(st.integers(2, 3))):
+        values = [f"v{j}{k}" for k in range(draw(st.integers(3, 7)))]
+        if draw(st.booleans()):
+            width = draw(st.integers(2, 3))
+            starts = range(0, max(len(values) - width, 0) + 1, draw(st.integers(1, width - 1)))
+            groups = [values[s : s + width] for s in starts]
+            if groups[-1][-1] != values[-1]:
+                groups.append(values[-width:])
+        else:
+            groups = [[v, values[(k + 1) % len(values)]] for k, v in enumerate(values)]
+        characteristics[f"c{j}"] = {
+            "values": values,
+            "components": [{"name": f"g{j}{k}", "values": g} for k, g in enumerate(groups)],
+        }
+    data: dict[str, Any] = {"characteristics": characteristics}
+    if draw(st.booleans()):
+        data["constraints"] = [
+            {
+                "forbid": {
+                    "c0": draw(st.sampled_from(characteristics["c0"]["values"])),
+                    "c1": draw(st.sampled_from(characteristics["c1"]["values"])),
+                }
+            }
+        ]
+    rules = parse_rules(parse_document(yaml.safe_dump(data, sort_keys=False), "rules.yaml"))
+    team = {
+        kind: {
+            c.name: draw(st.lists(st.sampled_from(c.values), min_size=1, unique=True))
+            for c in rules.characteristics[1:]
+        }
+        for kind in draw(st.lists(st.sampled_from(["T0", "T1"]), min_size=1, unique=True))
+    }
+    document = parse_document(yaml.safe_dump({"team": team}, sort_keys=False), "team.yaml")
+    return parse_team(document, rules)
+
+
+def fewest_configurations(rules: RuleSet, valid: list[tuple[Any, ...]]) -> int:
+    """The minimum hitting set of the robots' usable configurations, as one 0/1 program over
+    every robot given straight to HiGHS (none of the solver's splitting)."""
+    usable = [
+        set(
+            itertools.product(
+                *(
+                    c.membership[c.values.index(v)]
+                    for c, v in zip(rules.characteristics, robot, strict=True)
+                )
+            )
+        )
+        for robot in valid
+    ]
+    keys = sorted(set().union(*usable))
+    column = {key: i for i, key in enumerate(keys)}
+    model = highspy.Highs()  # type: ignore[no-untyped-call]  # no hints in highspy
+    model.setOptionValue("output_flag", False)
+    every = np.arange(len(keys), dtype=np.int32)
+    model.addVars(len(keys), np.zeros(len(keys)), np.ones(len(keys)))
+    model.changeColsIntegrality(len(keys), every, np.ones(len(keys), dtype=np.uint8))
+    model.changeColsCost(len(keys), every, np.ones(len(keys)))
+    for found in usable:
+        model.addRow(
+            1, highspy.kHighsInf, len(found), [column[k] for k in found], [1.0] * len(found)
+        )
+    model.run()
+    return round(model.getInfo().objective_function_value)
+
+
+@settings(max_examples=150, deadline=None)
+@given(overlapping())
+def test_engines_agree_where_values_overlap_in_several_characteristics(team: Team) -> None:
+    reference = solve(team, engine="csp")
+    for engine in ("fast", "structure"):
+        assert solve(team, engine=engine).configurations == reference.configurations
+    counted = solve(team, count_only=True).by_type
+    assert [t.ui_configurations for t in counted] == [
+        t.ui_configurations for t in reference.by_type
+    ]
+    for index, summary in enumerate(reference.by_type):
+        valid = brute_force(team, index)
+        assert summary.valid_robots == len(valid)
+        assert summary.ui_configurations == fewest_configurations(team.rules, valid)
+        for robot in valid:
+            configuration = reference.configuration_for(robot)
+            assert configuration is not None
+            assert all(
+                value in component.values
+                for value, component in zip(robot, configuration.components, strict=True)
+            )

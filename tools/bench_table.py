@@ -90,6 +90,25 @@ ROWS = [
         "`check`: 200 types, 400 sensor types, 800 constraints",
         "",
     ),
+    ("test_count_overlapping_windows[20]", "count: 3 x 20 values, each in two windows", ""),
+    ("test_count_overlapping_windows[40]", "count: 3 x 40 values, each in two windows", ""),
+    ("test_count_overlapping_windows[80]", "count: 3 x 80 values, each in two windows", ""),
+    ("test_count_overlapping_windows[160]", "count: 3 x 160 values, each in two windows", ""),
+    (
+        "test_solve_overlapping_windows[20]",
+        "solve: 3 x 20 values in windows (125 configurations)",
+        "",
+    ),
+    (
+        "test_solve_overlapping_windows[40]",
+        "solve: 3 x 40 values in windows (1,000 configurations)",
+        "",
+    ),
+    (
+        "test_solve_overlapping_windows[80]",
+        "solve: 3 x 80 values in windows (8,000 configurations)",
+        "< 2 s",
+    ),
     ("test_radar_chart_of_case3_as_png", "radar chart of Case 3 as PNG", ""),
     ("test_batch_solves_40_teams_in_one_process", "`batch` of 40 teams, one process", ""),
     (
@@ -233,6 +252,30 @@ RATIOS = [
         "test_check_doubled_rule_sets[x4]",
         "test_check_doubled_rule_sets[x2]",
         "<= 2.5",
+    ),
+    (
+        "overlapping windows, count: 40 / 20 values per characteristic",
+        "test_count_overlapping_windows[40]",
+        "test_count_overlapping_windows[20]",
+        "<= 2.5",
+    ),
+    (
+        "overlapping windows, count: 80 / 40 values per characteristic",
+        "test_count_overlapping_windows[80]",
+        "test_count_overlapping_windows[40]",
+        "<= 2.5",
+    ),
+    (
+        "overlapping windows, count: 160 / 80 values per characteristic",
+        "test_count_overlapping_windows[160]",
+        "test_count_overlapping_windows[80]",
+        "<= 2.5",
+    ),
+    (
+        "overlapping windows, solve: 80 / 40 values (8x the configurations listed)",
+        "test_solve_overlapping_windows[80]",
+        "test_solve_overlapping_windows[40]",
+        "<= 20 (8 x 2.5)",
     ),
     (
         "ROS 2 `watch`: active robot -> configuration / bare DDS echo round trip",

@@ -7,7 +7,7 @@
 ``forbidden``    selected values a team's constraints leave no robot for
 ``model``        the python-constraint model; valid robots
 ``partition``    robots -> UI configurations, numbering
-``cover``        the exact minimum cover when components overlap (HiGHS)
+``cover``        the exact minimum cover when components overlap (factors, HiGHS)
 ``analysis``     which values survive the constraints; minimal conflicting subsets
 ``regions``      the robots a constraint excludes, as boxes of value sets
 ``solution``     :func:`solve` a team -> :class:`Solution`

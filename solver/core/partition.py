@@ -20,11 +20,12 @@ Not here: producing the robots (:mod:`solver.engines`).
 
 from __future__ import annotations
 
-import itertools
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
+from typing import TypeVar
 
 from solver.core.constraints import Value
+from solver.core.cover import Options
 from solver.core.rules import Component, RuleSet
 
 __all__ = [
@@ -35,9 +36,11 @@ __all__ = [
     "partition",
     "partition_classes",
     "sort_key",
+    "unsorted",
 ]
 
 Key = tuple[int, ...]
+T = TypeVar("T")
 
 
 @dataclass(frozen=True, slots=True)
@@ -102,10 +105,16 @@ class Partition:
     proven_minimal: bool
 
 
-def sort_key(rules: RuleSet, key: Key) -> Key:
+def sort_key(rules: RuleSet, key: tuple[T, ...]) -> tuple[T, ...]:
     """Numbering order: kinematic type first, then the other characteristics in order."""
     position = rules.key_position
     return (key[position], *key[:position], *key[position + 1 :])
+
+
+def unsorted(rules: RuleSet, key: tuple[T, ...]) -> tuple[T, ...]:
+    """The key in characteristic order again, from numbering order (:func:`sort_key`)."""
+    position = rules.key_position
+    return (*key[1 : position + 1], key[0], *key[position + 1 :])
 
 
 def partition(rules: RuleSet, kinematic_type: str, robots: Iterable[Sequence[Value]]) -> Partition:
@@ -127,34 +136,42 @@ def partition_classes(
     """
     characteristics = rules.characteristics
     width = len(characteristics)
-    by_candidates: dict[frozenset[Key], list[tuple[tuple[tuple[Value, ...], ...], int]]] = {}
+    # Robot classes by their options: per characteristic, the components their values are in.
+    by_options: dict[Options, list[tuple[tuple[tuple[Value, ...], ...], int]]] = {}
     unserved = total = 0
     for robot_class in classes:
         values, weight = robot_class.values, robot_class.robots
         total += weight
-        options = [
-            c.membership[c.positions[members[0]]]
-            for c, members in zip(characteristics, values, strict=True)
-        ]
+        options = tuple(
+            [
+                c.membership[c.positions[members[0]]]
+                for c, members in zip(characteristics, values, strict=True)
+            ]
+        )
         if not all(options):
             unserved += weight
             continue
-        candidates = frozenset(itertools.product(*options))
-        by_candidates.setdefault(candidates, []).append((values, weight))
-    if all(len(candidates) == 1 for candidates in by_candidates):
-        chosen, proven = frozenset(next(iter(c)) for c in by_candidates), True
+        by_options.setdefault(options, []).append((values, weight))
+    if all(len(o) == 1 for options in by_options for o in options):
+        order = sorted({tuple(o[0] for o in options) for options in by_options})
+        assigned = {options: tuple(o[0] for o in options) for options in by_options}
     else:
         # Imported here: HiGHS loads only for rule sets with overlapping components.
         from solver.core.cover import minimum_cover
 
-        chosen, proven = minimum_cover(list(by_candidates)), True
-    order = sorted(chosen, key=lambda key: sort_key(rules, key))
-    rank = {key: index for index, key in enumerate(order)}
+        # Positions in numbering order, so that "lowest" below is the lowest number.
+        cover = minimum_cover(sort_key(rules, options) for options in by_options)
+        order = [unsorted(rules, key) for key in cover.chosen()]
+        # Each robot goes to the lowest-numbered chosen configuration it can use.
+        assigned = {
+            options: unsorted(rules, cover.first(sort_key(rules, options)))
+            for options in by_options
+        }
+    order.sort(key=lambda key: sort_key(rules, key))
     counts = dict.fromkeys(order, 0)
     served: dict[Key, list[set[Value]]] = {key: [set() for _ in range(width)] for key in order}
-    for candidates, members in by_candidates.items():
-        # Each robot goes to the lowest-numbered chosen configuration it can use.
-        key = min((k for k in candidates if k in rank), key=rank.__getitem__)
+    for options, members in by_options.items():
+        key = assigned[options]
         for values, weight in members:
             counts[key] += weight
             for i in range(width):
@@ -162,7 +179,7 @@ def partition_classes(
     classes_out = tuple(
         PartitionClass(key, counts[key], _ordered(rules, served[key])) for key in order
     )
-    return Partition(kinematic_type, classes_out, total, unserved, proven)
+    return Partition(kinematic_type, classes_out, total, unserved, True)
 
 
 def _partition_equivalence(

@@ -21,9 +21,13 @@ counted once (:class:`Memo`).
 
 Where the structure does not allow this (a block whose class combinations exceed
 :data:`BLOCK_LIMIT`), :class:`~solver.errors.StructureTooComplex` says so and the ``auto``
-policy falls back to enumeration. Overlapping components (a value in two components) are
-handled by partitioning the weighted classes (:func:`solver.core.partition.partition_classes`, with
-the exact minimum cover of :mod:`solver.core.cover`).
+policy falls back to enumeration. Overlapping components (a value in two components) take the
+exact minimum cover of :mod:`solver.core.cover`, found from each block's class combinations
+apart (the blocks vary independently, so the family to cover is their product); each block's
+combinations then get their part of the lowest chosen configuration, and configurations are the
+product of the blocks' parts as without overlaps. Only a cover that must span blocks (no product
+of separate covers is minimal) partitions the joint classes
+(:func:`solver.core.partition.partition_classes`).
 
 Not here: enumerating robots (:mod:`solver.engines.fast`, :mod:`solver.engines.csp`), symbolic
 formulas (:mod:`solver.core.symbolic`).
@@ -34,9 +38,10 @@ from __future__ import annotations
 import bisect
 import itertools
 import math
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from functools import cached_property
+from typing import TYPE_CHECKING
 
 from solver.core.constraints import Value
 from solver.core.partition import Key, Partition, PartitionClass, RobotClass, partition_classes
@@ -44,6 +49,9 @@ from solver.core.rules import RuleSet
 from solver.core.team import TypeSelection
 from solver.engines import Counts
 from solver.errors import StructureTooComplex
+
+if TYPE_CHECKING:
+    from solver.core.cover import Cover, Group
 
 __all__ = ["BLOCK_LIMIT", "Memo", "count", "partition", "robots"]
 
@@ -64,6 +72,8 @@ class Memo:
         self.blocks: dict[str, list[_Block]] = {}
         # _shape() of the whole-domain class lists above, by identity.
         self.shapes: dict[int, tuple[tuple[int, int], ...]] = {}
+        # The minimum cover count() found for each kinematic type whose values overlap.
+        self.covers: dict[str, Cover] = {}
 
 
 @dataclass(frozen=True, slots=True)
@@ -103,6 +113,15 @@ class _Block:
     def robots(self) -> int:
         return sum(weight for _, weight in self.combinations)
 
+    @cached_property
+    def served(self) -> int:
+        """Robots whose every class is in some component."""
+        return sum(
+            weight
+            for combination, weight in self.combinations
+            if all(c.membership for c in combination)
+        )
+
 
 def count(rules: RuleSet, selection: TypeSelection, memo: Memo | None = None) -> Counts:
     """Valid robots and UI configurations of one kinematic type, without enumerating robots.
@@ -128,10 +147,14 @@ def count(rules: RuleSet, selection: TypeSelection, memo: Memo | None = None) ->
     if memo is not None:
         memo.blocks[kinematic_type] = blocks
     if _overlaps(blocks):
-        part = partition(rules, selection, blocks)
-        result = Counts(
-            selection.kinematic_type, part.valid_robots, len(part.classes), part.unserved_robots
-        )
+        robots = served = 1
+        for block in blocks:
+            robots *= block.robots
+            served *= block.served
+        cover = _cover(rules, blocks)
+        if memo is not None:
+            memo.covers[kinematic_type] = cover
+        result = Counts(selection.kinematic_type, robots, cover.size, robots - served)
     else:
         robots = served = configurations = 1
         for block in blocks:
@@ -165,12 +188,21 @@ def partition(
     ``blocks``: the type's blocks if already built, or a :class:`Memo` that :func:`count`
     filled for this type.
     """
+    memo = None
     if isinstance(blocks, Memo):
-        blocks = blocks.blocks.get(selection.kinematic_type)
+        memo, blocks = blocks, blocks.blocks.get(selection.kinematic_type)
     if blocks is None:
         blocks = _blocks(rules, _selected_classes(rules, selection))
     if not _overlaps(blocks):
-        return _partition_product(rules, selection, blocks)
+        return _partition_product(
+            rules, selection, blocks, lambda _, combination: _Block.partial_key(combination)
+        )
+    cover = memo.covers.get(selection.kinematic_type) if memo is not None else None
+    if cover is None:
+        cover = _cover(rules, blocks)
+    inside = _cover_by_block(rules, blocks, cover)
+    if inside is not None:
+        return _partition_product(rules, selection, blocks, inside)
     if math.prod(len(b.combinations) for b in blocks) > BLOCK_LIMIT:
         raise StructureTooComplex.at(
             rules.file,
@@ -181,23 +213,29 @@ def partition(
 
 
 def _partition_product(
-    rules: RuleSet, selection: TypeSelection, blocks: Sequence[_Block]
+    rules: RuleSet,
+    selection: TypeSelection,
+    blocks: Sequence[_Block],
+    key_of: Callable[[_Block, tuple[_Class, ...]], Key | None],
 ) -> Partition:
-    """Configurations as the product of each block's partial configurations."""
+    """Configurations as the product of each block's partial configurations, ``key_of`` giving
+    the partial configuration of a block's class combination (``None``: unserved)."""
     width = len(rules.characteristics)
     per_block = []
     robots = served_robots = 1
     for block in blocks:
         held: dict[Key, list[set[Value]]] = {}
-        for combination, _ in block.combinations:
-            key = block.partial_key(combination)
+        weights: dict[Key, int] = {}
+        for combination, weight in block.combinations:
+            key = key_of(block, combination)
             if key is not None:
+                weights[key] = weights.get(key, 0) + weight
                 for values, found in zip(
                     held.setdefault(key, [set() for _ in combination]), combination, strict=True
                 ):
                     values.update(found.members)
         robots *= block.robots
-        served_robots *= sum(block.partial_weights.values())
+        served_robots *= sum(weights.values())
         orders = [rules.characteristics[p].positions.__getitem__ for p in block.positions]
         per_block.append(
             [
@@ -209,7 +247,7 @@ def _partition_product(
                         for values, order in zip(held[key], orders, strict=True)
                     ),
                 )
-                for key, weight in sorted(block.partial_weights.items())
+                for key, weight in sorted(weights.items())
             ]
         )
     # Each configuration joins one partial configuration per block: concatenate the blocks'
@@ -237,6 +275,67 @@ def _partition_product(
         robots - served_robots,
         True,
     )
+
+
+def _numbering(rules: RuleSet) -> list[int]:
+    """Each characteristic's place in numbering order (the team key first)."""
+    key = rules.key_position
+    return [0 if p == key else p + (p < key) for p in range(len(rules.characteristics))]
+
+
+def _cover(rules: RuleSet, blocks: Sequence[_Block]) -> Cover:
+    """The minimum cover of a kinematic type whose values overlap, from each block's class
+    combinations: the same cover its robots listed one by one give
+    (:func:`solver.core.partition.partition_classes`), positions in numbering order."""
+    from solver.core.cover import product_cover
+
+    place = _numbering(rules)
+    parts = []
+    for block in blocks:
+        order = sorted(range(len(block.positions)), key=lambda i: place[block.positions[i]])
+        family = {
+            tuple([combination[i].membership for i in order])
+            for combination, _ in block.combinations
+            if all(c.membership for c in combination)
+        }
+        parts.append((tuple(place[block.positions[i]] for i in order), family))
+    return product_cover(len(place), parts)
+
+
+def _cover_by_block(
+    rules: RuleSet, blocks: Sequence[_Block], cover: Cover
+) -> Callable[[_Block, tuple[_Class, ...]], Key | None] | None:
+    """The partial configuration each class combination of a block is given (the lowest-
+    numbered chosen one it can use), when every group of the cover lies inside one block;
+    ``None`` when a group spans blocks (the cover is then not a product of the blocks')."""
+    place = _numbering(rules)
+    home = {place[p]: n for n, block in enumerate(blocks) for p in block.positions}
+    groups: list[list[Group]] = [[] for _ in blocks]
+    for group in cover.groups:
+        found = {home[p] for p in group.positions}
+        if len(found) > 1:
+            return None
+        groups[found.pop()].append(group)
+    # Per block and group: where the group's positions sit in the block's combinations.
+    at = {
+        id(group): [block.positions.index(place.index(p)) for p in group.positions]
+        for block, inside in zip(blocks, groups, strict=True)
+        for group in inside
+    }
+    number = {id(block): n for n, block in enumerate(blocks)}
+
+    def key_of(block: _Block, combination: tuple[_Class, ...]) -> Key | None:
+        if not all(c.membership for c in combination):
+            return None
+        key = [0] * len(combination)
+        for group in groups[number[id(block)]]:
+            where = at[id(group)]
+            part = group.first(tuple([combination[i].membership for i in where]))
+            for i, component in zip(where, part, strict=True):
+                key[i] = component
+        return tuple(key)
+
+    return key_of
 
 
 def _overlaps(blocks: Sequence[_Block]) -> bool:
