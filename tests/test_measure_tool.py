@@ -138,3 +138,16 @@ def test_sets_are_reported_side_by_side(tmp_path: Path) -> None:
 def test_a_folder_without_labels_is_said_and_skipped(tmp_path: Path) -> None:
     output = measure("--set", str(tmp_path))
     assert "truth.csv missing" in output
+
+
+def test_another_profile_measures_what_a_rule_adds(tmp_path: Path) -> None:
+    tiny_set(tmp_path / "tiny")
+    shipped = (ROOT / "rules" / "identification.yaml").read_text(encoding="utf-8")
+    without = tmp_path / "no-navigation.yaml"
+    without.write_text(shipped[: shipped.index("  navigation:")], encoding="utf-8")
+    # The rover is labelled Driving only: the Waypoint its drive and lidar suggest is an extra.
+    guessed = row_of(measure("--set", str(tmp_path / "tiny")), "mobile base", "tiny")
+    plain = row_of(
+        measure("--set", str(tmp_path / "tiny"), "--profile", str(without)), "mobile base", "tiny"
+    )
+    assert (guessed[7], plain[7]) == ("1/2 (50%)", "1/1 (100%)")

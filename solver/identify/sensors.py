@@ -18,6 +18,7 @@ Not here: reading topic lists (:mod:`solver.identify.topics`).
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
@@ -35,6 +36,8 @@ _JOINT_PARAMS = ("jointName", "joint_name", "joint")
 _DEVICE_DEPTH = 2
 # Kinds whose one device is declared as parts (an IMU's accelerometer and gyrometer).
 _COMPOSED = ("imu",)
+# A side of a stereo pair in a sensor name: l, r, left or right between separators.
+_SIDE = re.compile(r"(^|[_/-])(l|r|left|right)([_/-]|$)", re.IGNORECASE)
 
 
 @dataclass(frozen=True, slots=True)
@@ -118,7 +121,36 @@ def _devices(found: list[tuple[Detection, str]], urdf: Urdf) -> list[Detection]:
         kept.append(detection)
     depth = {d.link for d in kept if d.kind == "depth_camera"}
     # A colour camera on the link of a depth camera is the RGB-D camera's colour stream.
-    return [d for d in kept if not (d.kind == "camera" and d.link in depth)]
+    return _stereo_pairs([d for d in kept if not (d.kind == "camera" and d.link in depth)])
+
+
+def _stereo_pairs(found: list[Detection]) -> list[Detection]:
+    """Two cameras named stereo whose names differ only by a side (``wide_stereo_l_...`` and
+    ``wide_stereo_r_...``) are one stereo camera, where the first of them was."""
+    pairs: dict[str, list[Detection]] = {}
+    for detection in found:
+        if detection.kind == "camera" and "stereo" in detection.name.lower():
+            pairs.setdefault(_SIDE.sub(r"\1*\3", detection.name), []).append(detection)
+    merged = {id(d): ps for ps in pairs.values() if len(ps) == 2 for d in ps}
+    kept = []
+    for detection in found:
+        pair = merged.get(id(detection))
+        if pair is None:
+            kept.append(detection)
+        elif detection is pair[0]:
+            kept.append(
+                Detection("stereo_camera", _pair_name(*pair), detection.source, detection.link)
+            )
+    return kept
+
+
+def _pair_name(first: Detection, second: Detection) -> str:
+    """``wide_stereo_l+r_stereo_camera_sensor``: the first name with both sides."""
+    for one, other in zip(_SIDE.finditer(first.name), _SIDE.finditer(second.name), strict=False):
+        if one.group(2) != other.group(2):
+            sides = f"{one.group(2)}+{other.group(2)}"
+            return first.name[: one.start(2)] + sides + first.name[one.end(2) :]
+    return first.name
 
 
 def _same(detection: Detection, origin: str, name: str, theirs: str) -> bool:

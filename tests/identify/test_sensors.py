@@ -241,3 +241,18 @@ def test_sensors_count_by_physical_device() -> None:
         "acoustic_positioning": 1,
         "unknown": 1,
     }
+
+
+def test_a_stereo_pair_declared_as_two_cameras_is_one_stereo_camera() -> None:
+    robot = builders.ugv()
+    for side in ("l", "r"):
+        robot.add(builders.gazebo_sensor("head", "camera", f"wide_stereo_{side}_camera"))
+    robot.add(builders.gazebo_sensor("head", "camera", "left_eye_camera"))
+    robot.add(builders.gazebo_sensor("head", "camera", "right_eye_camera"))
+    found = [(d.kind, d.name) for d in sensors_from_urdf(parse_urdf(robot.text()), load_profile())]
+    # Two cameras not named stereo stay two cameras.
+    assert found == [
+        ("stereo_camera", "wide_stereo_l+r_camera"),
+        ("camera", "left_eye_camera"),
+        ("camera", "right_eye_camera"),
+    ]
