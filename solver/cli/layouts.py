@@ -197,7 +197,7 @@ def _robot(args: argparse.Namespace) -> int:
 def _robot_topics(args: argparse.Namespace) -> tuple[str, Any]:
     """The robot's real topics, read as `identify` reads them (``None``: the templates)."""
     if args.topics:
-        from solver.identify.topics import read_topic_list
+        from solver.identify.readers.topics import read_topic_list
 
         return args.topics, read_topic_list(args.topics)
     if args.bag:

@@ -8,12 +8,9 @@ none), a confidence, the evidence, its *sensors* mapped to the rule set's sensor
 Modules, one concept each:
 
 =======================  ========================================================
-``readers.safexml``      safe XML parsing (no entities, no network, size cap)
-``readers.bags``         topics recorded in ROS 1/2 bags (rosbags), bounded per bag
+``readers``              what identification reads, apart from what it means: safe XML
+                         and its prologue, URDF and SRDF trees, topic lists, bags
 ``limited``              a fresh, limited interpreter for a reader (bags, trusted xacro)
-``urdf``                 URDF text -> checked tree of links, joints, sensors, plugins
-``srdf``                 MoveIt SRDF: groups, chains, end effectors, virtual joints
-``topics``               topic list files -> :class:`Topic` triples
 ``xacro``                the xacro sandbox, a security boundary: trusted xacro -> URDF
                          text in a confined child process (``compiler``, ``packages``,
                          ``child``, ``confine``)
@@ -49,9 +46,9 @@ from solver.identify.identification import (
 )
 from solver.identify.interfaces import Control, controls_from_topics, sensors_from_topics
 from solver.identify.profile import Profile, ProfileError, default_profile_path, load_profile
+from solver.identify.readers.topics import parse_topic_list, read_topic_list
 from solver.identify.render import identification_data, render_identification
 from solver.identify.sensors import Detection, Sensor
-from solver.identify.topics import parse_topic_list, read_topic_list
 from solver.ros.names import Topic
 
 __all__ = [

@@ -1,6 +1,7 @@
 """Body parts of a robot, read from what its joints do: wheels, rotors, thrusters, limbs, hands.
 
-:func:`detect_body` reads a :class:`~solver.identify.urdf.Urdf` with the profile's patterns and
+:func:`detect_body` reads a :class:`~solver.identify.readers.urdf.Urdf` with the profile's patterns
+and
 thresholds, actuation first and names last:
 
 1. *Joint roles* (:mod:`solver.identify.roles`): every moving joint a plugin names (a drive
@@ -35,9 +36,9 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field, replace
 
 from solver.identify.profile import PartMatcher, Profile
+from solver.identify.readers.srdf import Srdf
+from solver.identify.readers.urdf import Joint, Urdf
 from solver.identify.roles import Role, RoleReader, main_axis
-from solver.identify.srdf import Srdf
-from solver.identify.urdf import Joint, Urdf
 from solver.untrusted import shown
 
 __all__ = ["Body", "Limb", "detect_body"]

@@ -19,8 +19,8 @@ from solver.core.rules import RuleSet
 from solver.identify.body import Body
 from solver.identify.plans import arm_plans
 from solver.identify.profile import BOOLEAN_FEATURES, Profile
-from solver.identify.srdf import Srdf
-from solver.identify.urdf import Urdf
+from solver.identify.readers.srdf import Srdf
+from solver.identify.readers.urdf import Urdf
 from solver.untrusted import shown
 
 __all__ = ["Reading", "classify", "kinematic_type_for"]

@@ -45,11 +45,11 @@ from solver.identify.motion import controls_from_description
 from solver.identify.profile import Profile, load_profile
 from solver.identify.readers.bags import read_bag_topics
 from solver.identify.readers.safexml import read_bytes
+from solver.identify.readers.srdf import parse_srdf
+from solver.identify.readers.topics import read_topic_list
+from solver.identify.readers.urdf import parse_urdf
 from solver.identify.roles import Role
 from solver.identify.sensors import Detection, Sensor, merge, presented_count, sensors_from_urdf
-from solver.identify.srdf import parse_srdf
-from solver.identify.topics import read_topic_list
-from solver.identify.urdf import parse_urdf
 from solver.identify.xacro.compiler import compile_xacro, is_xacro
 from solver.layouts.plan import JointStart
 from solver.ros.names import Topic

@@ -1,7 +1,8 @@
 """Sensors and motion controls from (topic name, message type[, direction]) triples.
 
 The one place topic metadata is interpreted, whatever it came from: a topic list file
-(:mod:`solver.identify.topics`), a bag (:mod:`solver.identify.readers.bags`), or a live ROS master
+(:mod:`solver.identify.readers.topics`), a bag (:mod:`solver.identify.readers.bags`), or a live ROS
+master
 (getTopicTypes / getSystemState give exactly these triples)::
 
     >>> from solver.identify import Topic, load_profile, sensors_from_topics
@@ -21,7 +22,7 @@ becomes the structure's velocity control (Driving, Flight for UAVs, Walking for 
 A command counts when the robot subscribes to it or the direction is unknown; action topics
 (goal/feedback/status) count in either direction, since the server publishes half of them.
 
-Not here: parsing files (:mod:`solver.identify.topics`).
+Not here: parsing files (:mod:`solver.identify.readers.topics`).
 """
 
 from __future__ import annotations

@@ -12,7 +12,7 @@ Not here: the message around them (:mod:`solver.layouts.samples`).
 from __future__ import annotations
 
 from solver.identify.body import Body
-from solver.identify.urdf import Urdf
+from solver.identify.readers.urdf import Urdf
 from solver.layouts.plan import JointStart
 
 __all__ = ["command_joints"]

@@ -34,8 +34,8 @@ from solver.identify.body import Body
 from solver.identify.interfaces import Control
 from solver.identify.plans import arm_plans, hand_effectors
 from solver.identify.profile import Profile
-from solver.identify.srdf import Srdf
-from solver.identify.urdf import Urdf
+from solver.identify.readers.srdf import Srdf
+from solver.identify.readers.urdf import Urdf
 
 __all__ = ["controls_from_description"]
 

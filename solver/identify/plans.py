@@ -7,14 +7,14 @@ such group (Fetch's ``arm_with_torso``; chains are expanded to their joints thro
 so a chain group from the torso to a hand extends the hand's arm). :func:`hand_effectors`
 keeps the end effectors that are not feet (a leg's end effector is where it stands).
 
-Not here: reading the SRDF (:mod:`solver.identify.srdf`).
+Not here: reading the SRDF (:mod:`solver.identify.readers.srdf`).
 """
 
 from __future__ import annotations
 
 from solver.identify.body import Body
-from solver.identify.srdf import EndEffector, Group, Srdf
-from solver.identify.urdf import Urdf
+from solver.identify.readers.srdf import EndEffector, Group, Srdf
+from solver.identify.readers.urdf import Urdf
 
 __all__ = ["MOST_GROUPS", "arm_plans", "hand_effectors"]
 

@@ -27,7 +27,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from solver.identify.profile import PartMatcher, Profile
-from solver.identify.urdf import Joint, PluginTag, Urdf
+from solver.identify.readers.urdf import Joint, PluginTag, Urdf
 
 __all__ = ["JOINT_ROLES", "Role", "RoleReader"]
 

@@ -13,7 +13,7 @@ and a ``/scan`` topic are one lidar). Each kind's sensor type comes from the pro
 ``sensor_types`` and must exist in the rule set; a kind with no presentation (IMU, GPS, sonar)
 is listed with ``sensor_type`` ``None`` and does not count toward the number of sensors.
 
-Not here: reading topic lists (:mod:`solver.identify.topics`).
+Not here: reading topic lists (:mod:`solver.identify.readers.topics`).
 """
 
 from __future__ import annotations
@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 from solver.core.rules import RuleSet
 from solver.identify.profile import Profile
-from solver.identify.urdf import PluginTag, SensorTag, Urdf
+from solver.identify.readers.urdf import PluginTag, SensorTag, Urdf
 from solver.untrusted import shown
 
 __all__ = ["Detection", "Sensor", "merge", "presented_count", "sensors_from_urdf"]

@@ -8,7 +8,8 @@ fits both). Among fitting topics, one named like the template's last part comes 
 panel left without a topic keeps the presentation's topic under the robot's namespace and gets
 a warning located at the topic source.
 
-Not here: reading topics (:mod:`solver.identify.topics`, :mod:`solver.identify.readers.bags`).
+Not here: reading topics (:mod:`solver.identify.readers.topics`,
+:mod:`solver.identify.readers.bags`).
 """
 
 from __future__ import annotations

@@ -13,7 +13,7 @@ import pytest
 from solver.core.rules import load_rules
 from solver.identify import identify_urdf, load_profile
 from solver.identify.body import detect_body
-from solver.identify.urdf import parse_urdf
+from solver.identify.readers.urdf import parse_urdf
 from tests.conftest import RULES
 from tests.identify import builders
 from tests.identify.builders import RobotText

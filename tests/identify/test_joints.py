@@ -5,7 +5,7 @@ from __future__ import annotations
 from solver.identify.body import detect_body
 from solver.identify.joints import command_joints
 from solver.identify.profile import load_profile
-from solver.identify.urdf import parse_urdf
+from solver.identify.readers.urdf import parse_urdf
 from solver.layouts import JointStart
 from tests.conftest import ROOT
 from tests.identify.builders import RobotText

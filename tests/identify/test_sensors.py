@@ -7,8 +7,8 @@ import pytest
 from solver.files.yamlio import parse_document
 from solver.identify import identify_urdf, load_profile
 from solver.identify.profile import parse_profile
+from solver.identify.readers.urdf import parse_urdf
 from solver.identify.sensors import sensors_from_urdf
-from solver.identify.urdf import parse_urdf
 from tests.conftest import RULES
 from tests.identify import builders
 

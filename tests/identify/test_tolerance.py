@@ -13,8 +13,8 @@ import pytest
 
 from solver.errors import InputError
 from solver.identify import identify_urdf
-from solver.identify.srdf import parse_srdf
-from solver.identify.urdf import parse_urdf
+from solver.identify.readers.srdf import parse_srdf
+from solver.identify.readers.urdf import parse_urdf
 from tests.conftest import run_cli
 from tests.identify import builders
 
@@ -234,7 +234,7 @@ def test_only_a_description_that_cannot_be_read_at_all_exits_2(
 def test_a_description_past_the_size_cap_is_refused_at_the_first_element_beyond(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
-    from solver.identify import urdf as module
+    from solver.identify.readers import urdf as module
 
     monkeypatch.setattr(module, "MAX_PARTS", 3)
     links = "".join(f'<link name="l{i}"/>\n' for i in range(5))

@@ -11,7 +11,8 @@ blowup and external-entity attacks) is refused outright: URDF and SRDF never nee
 Every problem is an :class:`~solver.errors.InputError` naming the file and, where libxml2 knows
 it, the line and column.
 
-Not here: what the elements mean (:mod:`solver.identify.urdf`, :mod:`solver.identify.srdf`).
+Not here: what the elements mean (:mod:`solver.identify.readers.urdf`,
+:mod:`solver.identify.readers.srdf`).
 """
 
 from __future__ import annotations

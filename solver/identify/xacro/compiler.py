@@ -16,7 +16,7 @@ read files only inside the description's own folder (or its package) and the pac
 map; ``$(env)`` and ``$(optenv)`` are refused. Mesh ``package://`` references are left as
 written: identification never opens a mesh.
 
-Not here: reading the compiled URDF (:mod:`solver.identify.urdf`); the child's fence
+Not here: reading the compiled URDF (:mod:`solver.identify.readers.urdf`); the child's fence
 (:mod:`solver.identify.xacro.child`).
 """
 

@@ -9,7 +9,7 @@ import pytest
 
 from solver.errors import InputError
 from solver.identify.identification import identify, identify_urdf
-from solver.identify.urdf import parse_urdf
+from solver.identify.readers.urdf import parse_urdf
 from solver.identify.xacro import (
     XacroLimits,
     compile_xacro,

@@ -7,8 +7,8 @@ import pytest
 from solver.errors import InputError
 from solver.identify import identify_urdf
 from solver.identify.plans import MOST_GROUPS
-from solver.identify.srdf import parse_srdf
-from solver.identify.urdf import parse_urdf
+from solver.identify.readers.srdf import parse_srdf
+from solver.identify.readers.urdf import parse_urdf
 from tests.identify import builders
 
 SRDF = """<?xml version="1.0"?>

@@ -7,7 +7,7 @@ from pathlib import Path
 import pytest
 
 from solver.errors import InputError
-from solver.identify.urdf import parse_urdf
+from solver.identify.readers.urdf import parse_urdf
 from tests.conftest import run_cli
 from tests.identify import builders
 

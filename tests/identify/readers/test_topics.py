@@ -9,7 +9,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from solver.errors import InputError
-from solver.identify.topics import parse_topic_list, read_topic_list
+from solver.identify.readers.topics import parse_topic_list, read_topic_list
 from solver.ros.names import Topic, normalise_type
 
 ROSTOPIC_V = """\

@@ -1,7 +1,7 @@
 """Reading a MoveIt SRDF: planning groups, chains, end effectors and virtual joints.
 
 :func:`parse_srdf` reads SRDF text safely (:mod:`solver.identify.readers.safexml`) into a frozen
-:class:`Srdf`. Given the robot's :class:`~solver.identify.urdf.Urdf`, every link and joint a
+:class:`Srdf`. Given the robot's :class:`~solver.identify.readers.urdf.Urdf`, every link and joint a
 group, chain, end effector or virtual joint names is checked to exist, and every problem is
 reported at once with the file, line and element. ``group_state`` and ``disable_collisions``
 are not read: they say nothing about what the robot is.
@@ -22,7 +22,7 @@ from solver.untrusted import shown
 if TYPE_CHECKING:
     from lxml import etree
 
-    from solver.identify.urdf import Urdf
+    from solver.identify.readers.urdf import Urdf
 
 __all__ = ["EndEffector", "Group", "Srdf", "VirtualJoint", "parse_srdf"]
 
