@@ -19,7 +19,8 @@ from matplotlib.patches import PathPatch
 from pytest_benchmark.fixture import BenchmarkFixture
 
 from solver import find_teams, load_team, plan, run_batch, solve
-from solver.reporting.plot import MIN_TICK_GAP, figure_bytes, radar_figure
+from solver.reporting.chart import MIN_TICK_GAP
+from solver.reporting.plot import figure_bytes, radar_figure
 from tests.conftest import RULES, TEAMS
 
 COPIES = 40

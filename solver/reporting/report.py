@@ -36,13 +36,13 @@ from solver.core.solution import Solution, TypeSummary
 from solver.errors import InputError
 from solver.files.atomic import write_all_atomic, write_atomic
 from solver.reporting import markdown
+from solver.reporting.chart import runs
 from solver.reporting.plot import (
     PlotKind,
     bars_figure,
     figure_bytes,
     matrix_figure,
     radar_figure,
-    runs,
 )
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 

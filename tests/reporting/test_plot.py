@@ -23,20 +23,22 @@ from matplotlib.text import Text
 
 from solver import Solution, load_rules, load_team, solve
 from solver.errors import InputError
-from solver.reporting.plot import (
+from solver.reporting.chart import (
     INNER_RADIUS,
     MAX_MATRIX_COLUMNS,
     MAX_SPOKE_LABELS,
     MAX_SPOKE_VALUES,
     MIN_TICK_GAP,
     RadarAxis,
-    bars_figure,
     component_matrix,
+    radar_axes,
+    runs,
+)
+from solver.reporting.plot import (
+    bars_figure,
     figure_bytes,
     matrix_figure,
-    radar_axes,
     radar_figure,
-    runs,
     write_plot,
 )
 from tests.conftest import RULES, TEAMS, run_cli
@@ -165,6 +167,19 @@ def test_radar_labels_of_the_paper_values_do_not_overlap_and_stay_on_the_page(
     assert all(
         page.x0 <= b.x0 and b.x1 <= page.x1 and page.y0 <= b.y0 and b.y1 <= page.y1 for b in boxes
     )
+
+
+def test_radar_titles_of_flat_spokes_stay_on_the_page() -> None:
+    # Five characteristics: two spokes lie almost flat, their titles written out sideways.
+    figure = radar_figure(_solved("search-and-rescue"))
+    renderer = figure.canvas.get_renderer()  # type: ignore[attr-defined]
+    page = figure.bbox
+    titles = _texts(figure, "axis ")
+    assert len(titles) == 5
+    for title in titles:
+        box = title.get_window_extent(renderer)
+        assert page.x0 <= box.x0, title.get_text()
+        assert box.x1 <= page.x1, title.get_text()
 
 
 def test_radar_shows_only_selected_values_on_a_spoke_with_too_many_to_label(
