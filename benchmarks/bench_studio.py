@@ -16,9 +16,16 @@ many times. The ratio (API p50 / solve p50) is what one answer over HTTP costs b
 library: parsing the address, reading the selection as a team file, solving, JSON, HTTP.
 
 Every answer is checked against counts computed here from how the team was built (SPEC.md
-section 4's closed form), never from the code under test. A third measure, reported only:
-the radar chart of a new selection (matplotlib, the code of ``report``), which is drawn after
-the counts and is not part of the 100 ms.
+section 4's closed form), never from the code under test.
+
+Charts, the same way: a change answered as the page answers it, ``GET /api/solve`` then
+``GET /api/charts/radar.svg`` for the same selection (the radar chart's title must give the
+closed-form counts too), timed apart and together, on both teams. The peers, in the same run and
+in-process on the same teams: ``solve`` plus the chart written as SVG
+(:func:`solver.reporting.svg.chart_svg`), and the same chart drawn by matplotlib (what the
+studio did before, and what ``report`` still does; a few changes only, it is slow). The Charts
+page's other two charts (bars, component matrix; the matrix needs every configuration listed)
+are reported for new selections of both teams.
 
 Run: ``python -m pytest benchmarks/bench_studio.py -s -p no:cacheprovider``.
 """
@@ -28,6 +35,7 @@ from __future__ import annotations
 import http.client
 import json
 import math
+import re
 import statistics
 import time
 from collections.abc import Callable, Iterator
@@ -40,6 +48,8 @@ from pytest_benchmark.fixture import BenchmarkFixture
 from benchmarks.bench_count import SCALES
 from benchmarks.latency import report
 from solver import Team, load_team, solve
+from solver.reporting.plot import figure_bytes, radar_figure
+from solver.reporting.svg import chart_svg
 from solver.studio.selection import parse_query, query_of, team_of
 from tests.studio.conftest import Server, stop, studio_process
 
@@ -85,7 +95,7 @@ class Change:
     configurations: int
 
 
-def case3_changes() -> list[Change]:
+def case3_changes(label: str = "change") -> list[Change]:
     team = load_team("case3")
     base = query_of(team, "paper")
     removals = [(t, m) for t, (motions, _, _) in CASE_3.items() for m in motions]
@@ -96,12 +106,12 @@ def case3_changes() -> list[Change]:
             p for p in base if removed is None or p != (f"{removed[0]}.motion_control", removed[1])
         ]
         # A name of its own: no change is answered from the studio's cache.
-        pairs = [p for p in pairs if p[0] != "name"] + [("name", f"change {index}")]
+        pairs = [p for p in pairs if p[0] != "name"] + [("name", f"{label} {index}")]
         changes.append(Change(urlencode(pairs), *case3_counts(removed)))
     return changes
 
 
-def scaled_changes(team: Team) -> list[Change]:
+def scaled_changes(team: Team, label: str = "change") -> list[Change]:
     scale = SCALES["1e7"]
     per_motion = scale.sensors * scale.counts - scale.forbidden
     per_motion_configurations = scale.groups * scale.arrangements
@@ -109,7 +119,7 @@ def scaled_changes(team: Team) -> list[Change]:
     for index in range(CHANGES):
         pairs = [
             ("rules", "start"),
-            ("name", f"change {index}"),  # a name of its own: nothing from the cache
+            ("name", f"{label} {index}"),  # a name of its own: nothing from the cache
             *(("type", f"T{t}") for t in range(scale.types)),
         ]
         robots, configurations = scale.robots, scale.configurations
@@ -247,25 +257,160 @@ def test_studio_answers_a_change_of_ten_million_robots(
     )
 
 
-def test_studio_draws_the_radar_chart_of_a_new_selection(
-    benchmark: BenchmarkFixture, server: Server
-) -> None:
-    client = Client(server)
-    base = [p for p in query_of(load_team("case3"), "paper") if p[0] != "UAV.sensor_count.max"]
-    latencies: list[float] = []
+TITLE = re.compile(rb"<title>.*: (\d+) valid robots?, (\d+) UI configurations?")
 
-    def draw_all() -> None:
-        for most in range(1, 11):  # ten selections never drawn before
-            start = time.perf_counter()
-            body = client.get(
-                f"/api/charts/radar.svg?{urlencode([*base, ('UAV.sensor_count.max', str(most))])}"
-            )
-            latencies.append(time.perf_counter() - start)
-            assert body.startswith(b"<?xml")
-            assert b"<svg" in body[:2000]
+
+def chart_counts(svg: bytes) -> tuple[int, int]:
+    """The counts a chart's title gives (``<title>Case 3: 872 valid robots, ...</title>``)."""
+    found = TITLE.search(svg[:4000])
+    assert found is not None, svg[:400]
+    return int(found.group(1)), int(found.group(2))
+
+
+def ms(latencies: list[float], share: float = 0.5) -> str:
+    return f"{percentile(latencies, share) * 1000:.1f} ms"
+
+
+def with_charts(
+    benchmark: BenchmarkFixture,
+    name: str,
+    server: Server,
+    changes: list[Change],
+    team_for: Callable[[Change], Team],
+    *,
+    drawn_by_matplotlib: int,
+) -> None:
+    """Each change as the selection page answers it: the totals, then the radar chart."""
+    client = Client(server)
+    totals: list[float] = []
+    charts: list[float] = []
+    both: list[float] = []
+
+    def answer(change: Change) -> None:
+        start = time.perf_counter()
+        data = json.loads(client.get(f"/api/solve?{change.query}"))["totals"]
+        counted = time.perf_counter()
+        svg = client.get(f"/api/charts/radar.svg?{change.query}")
+        drawn = time.perf_counter()
+        expected = (change.robots, change.configurations)
+        assert (data["valid_robots"], data["ui_configurations"]) == expected, change.query
+        assert chart_counts(svg) == expected, change.query
+        totals.append(counted - start)
+        charts.append(drawn - counted)
+        both.append(drawn - start)
 
     try:
-        benchmark.pedantic(draw_all, rounds=1, iterations=1)  # type: ignore[no-untyped-call]
+        answer(changes[0])  # the studio's first answer loads its modules
+        for kept in (totals, charts, both):
+            kept.clear()
+
+        def answer_all() -> None:
+            for change in changes[1:]:
+                answer(change)
+
+        # pytest-benchmark has no type hints
+        benchmark.pedantic(answer_all, rounds=1, iterations=1)  # type: ignore[no-untyped-call]
     finally:
         client.close()
-    report(benchmark, "studio: radar chart of a new selection, Case 3 (matplotlib)", latencies)
+
+    # The peers: the same teams in-process, the chart written as SVG; and drawn by matplotlib.
+    def in_process(change: Change) -> tuple[int, int]:
+        return chart_counts(chart_svg(solve(team_for(change), count_only=True), "radar"))
+
+    peer = timed(changes[1:], in_process)
+
+    def by_matplotlib(change: Change) -> tuple[int, int]:
+        figure = radar_figure(solve(team_for(change), count_only=True))
+        assert figure_bytes(figure, "svg").startswith(b"<?xml")  # drawn, glyphs and all
+        title = figure.texts[0].get_text().encode()
+        return chart_counts(b"<title>" + title)
+
+    old = timed(changes[1 : 1 + drawn_by_matplotlib], by_matplotlib)
+    benchmark.extra_info.update(
+        {
+            "totals_median_ms": round(percentile(totals, 0.5) * 1000, 1),
+            "totals_p95_ms": round(percentile(totals, 0.95) * 1000, 1),
+            "chart_median_ms": round(percentile(charts, 0.5) * 1000, 1),
+            "chart_p95_ms": round(percentile(charts, 0.95) * 1000, 1),
+            "peer_median_ms": round(percentile(peer, 0.5) * 1000, 2),
+            "matplotlib_median_ms": round(percentile(old, 0.5) * 1000, 1),
+            "matplotlib_changes": len(old),
+        }
+    )
+    report(
+        benchmark,
+        name,
+        both,
+        f" (totals then radar chart); totals median {ms(totals)}, p95 {ms(totals, 0.95)}"
+        f"; chart median {ms(charts)}, p95 {ms(charts, 0.95)}"
+        f"; in-process solve + chart_svg median {ms(peer)}, p95 {ms(peer, 0.95)}"
+        f"; the radar by matplotlib, in-process, median {ms(old)} ({len(old)} changes)"
+        f"; HTTP chart / matplotlib = {percentile(charts, 0.5) / percentile(old, 0.5):.3f}",
+    )
+
+
+def test_studio_answers_a_change_of_case_3_with_its_radar_chart(
+    benchmark: BenchmarkFixture, server: Server
+) -> None:
+    rules = load_team("case3").rules
+    changes = case3_changes("charted")
+    teams = {
+        c.query: team_of(parse_query(parse_qsl(c.query), rules, "paper"), rules) for c in changes
+    }
+    with_charts(
+        benchmark,
+        "studio: change of selection with its radar chart, Case 3",
+        server,
+        changes,
+        lambda change: teams[change.query],
+        drawn_by_matplotlib=10,
+    )
+
+
+def test_studio_answers_a_change_of_ten_million_robots_with_its_radar_chart(
+    benchmark: BenchmarkFixture, server: Server, scaled_team: Team
+) -> None:
+    rules = scaled_team.rules
+    changes = scaled_changes(scaled_team, "charted")
+    teams = {
+        c.query: team_of(parse_query(parse_qsl(c.query), rules, "start"), rules) for c in changes
+    }
+    with_charts(
+        benchmark,
+        "studio: change of selection with its radar chart, 9,990,000 robots",
+        server,
+        changes,
+        lambda change: teams[change.query],
+        drawn_by_matplotlib=3,
+    )
+
+
+@pytest.mark.parametrize("team_name", ["case3", "1e7"])
+@pytest.mark.parametrize("kind", ["bars", "matrix"])
+def test_studio_draws_the_charts_pages_other_charts_of_a_new_selection(
+    benchmark: BenchmarkFixture, server: Server, scaled_team: Team, kind: str, team_name: str
+) -> None:
+    changes = (
+        case3_changes(f"{kind} page")
+        if team_name == "case3"
+        else scaled_changes(scaled_team, f"{kind} page")
+    )[:20]
+    client = Client(server)
+    latencies: list[float] = []
+
+    def draw(change: Change) -> tuple[int, int]:
+        start = time.perf_counter()
+        svg = client.get(f"/api/charts/{kind}.svg?{change.query}")
+        latencies.append(time.perf_counter() - start)
+        return chart_counts(svg)
+
+    try:
+        draw(changes[0])
+        latencies.clear()
+        benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
+            lambda: timed(changes[1:], draw), rounds=1, iterations=1
+        )
+    finally:
+        client.close()
+    listed = " (every configuration listed first)" if kind == "matrix" else ""
+    report(benchmark, f"studio: {kind} chart of a new selection{listed}, {team_name}", latencies)

@@ -7,7 +7,14 @@ Without ``--url`` it starts ``teleop-ui studio case3 --fleet examples --port 0``
 the pictures and stops it. Each view is driven as a person would (the fleet folder identified,
 two configurations compared, a robot looked up) in Debian's headless Chromium
 (``/usr/bin/chromium``, driven by Playwright's Python package; nothing is downloaded), and
-written to ``docs/studio-<view>.png``. The live view is taken when the studio follows a graph.
+written to ``docs/studio-<view>.png``.
+
+A picture of the selection is taken once the page has settled: its totals, its radar chart and
+the check's findings all answer the selection it holds (the page sets ``data-settled`` on its
+form to that selection; nothing here waits a fixed time). The live view is taken on a real ROS
+master: with Debian's ``roscore`` installed, a second studio follows one started here
+(``--master``) with the demo fleet of ``tools/demo_fleet.py`` on it and the drone active; or
+the studio given by ``--url``, if it follows a graph.
 """
 
 from __future__ import annotations
@@ -17,11 +24,13 @@ import re
 import signal
 import subprocess
 import sys
+import tempfile
 from pathlib import Path
 
 from playwright.sync_api import Page, expect, sync_playwright
 
 ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))
 CHROMIUM_ARGS = [
     "--headless",
     "--no-sandbox",
@@ -33,17 +42,27 @@ CHROMIUM_ARGS = [
 ]
 
 
-def start() -> tuple[subprocess.Popen[str], str]:
+# True once the selection page shows one selection throughout: totals, chart and findings.
+SETTLED = """() => {
+  const form = document.querySelector("form[data-selection]");
+  return form !== null && form.dataset.settled !== undefined
+    && form.dataset.settled === form.dataset.current;
+}"""
+
+
+def settled(page: Page) -> None:
+    page.wait_for_function(SETTLED)
+    page.locator("#radar").evaluate("(image) => image.decode()")
+
+
+def start(*args: str) -> tuple[subprocess.Popen[str], str]:
     process = subprocess.Popen(
-        [
-            sys.executable, "-m", "solver", "studio", "case3",
-            "--fleet", str(ROOT / "examples"), "--port", "0",
-        ],
+        [sys.executable, "-m", "solver", "studio", *args, "--port", "0"],
         cwd=ROOT,
         stdout=subprocess.PIPE,
         text=True,
         start_new_session=True,
-    )  # fmt: skip
+    )
     assert process.stdout is not None
     found = re.search(r"http://\S+", process.stdout.readline())
     if found is None:
@@ -58,18 +77,44 @@ def shoot(page: Page, out: Path, name: str, *, full: bool = False) -> None:
     print(f"wrote {path.relative_to(ROOT) if path.is_relative_to(ROOT) else path}")
 
 
+def stop(process: subprocess.Popen[str]) -> None:
+    process.send_signal(signal.SIGTERM)
+    process.wait(timeout=30)
+
+
+def findings(page: Page, url: str, out: Path) -> None:
+    """The check's findings at their controls: the extended rules, a UAV allowed to walk."""
+    base = url.split("?", maxsplit=1)[0]
+    page.goto(
+        f"{base}?rules=extended&name=Walking+drones&type=UAV&UAV.motion_control=Flight"
+        "&UAV.motion_control=Walking&UAV.sensor_type=2D+Camera&UAV.sensor_count.max=5&view=UAV"
+    )
+    settled(page)
+    expect(page.locator(".control-findings .finding.warning")).not_to_have_count(0)
+    shoot(page, out, "findings", full=True)
+    page.go_back()
+    settled(page)
+
+
 def views(page: Page, url: str, out: Path) -> None:
     page.goto(url)
     expect(page.locator("#total-robots")).not_to_have_text("0")
-    # One change, so the page shows what it cost.
+    settled(page)
+    # One type at a time, and one change, so the page shows what it cost.
+    page.get_by_role("navigation", name="Kinematic types shown").get_by_role(
+        "link", name="Humanoid"
+    ).click()
     page.locator('fieldset[data-key="Humanoid.motion_control"]').get_by_label(
         "Walking", exact=True
     ).uncheck()
     expect(page.locator("#change")).to_contain_text("Last change")
-    page.locator("#radar").evaluate("(image) => image.decode()")
-    shoot(page, out, "selection")
+    settled(page)
+    page.evaluate("window.scrollTo(0, 0)")
+    shoot(page, out, "selection", full=True)
     page.get_by_role("button", name="Undo").click()
     expect(page.locator("#change")).to_contain_text("Last change")
+    settled(page)
+    findings(page, url, out)
 
     page.get_by_role("link", name="Configurations").click()
     page.get_by_label("First").fill("1")
@@ -109,7 +154,39 @@ def views(page: Page, url: str, out: Path) -> None:
 
     if page.get_by_role("link", name="Live").count():
         page.get_by_role("link", name="Live").click()
+        expect(page.locator("#live-status")).to_contain_text("synced")
         shoot(page, out, "live")
+
+
+def live(page: Page, out: Path, work: Path) -> None:
+    """The live view of a studio following a real roscore, with the demo fleet on it."""
+    from tests.live.fleet import put_drone, put_rover
+    from tests.live.roscore import Roscore, TestNode, roscore_available
+
+    if not roscore_available():
+        print("no roscore (Debian's ros-core): the live view is not taken", file=sys.stderr)
+        return
+    core = Roscore(work)
+    core.start()
+    node = TestNode(core.uri)
+    process = None
+    try:
+        process, url = start("case3", "--master", core.uri)
+        put_drone(node, "/uav1")
+        put_rover(node, "/ugv1")
+        node.set_param("/teleop_ui/active_robot", "/uav1")
+        page.goto(url)
+        page.get_by_role("link", name="Live").click()
+        expect(page.locator('tr[data-robot="/uav1"]')).to_have_attribute("aria-current", "true")
+        expect(page.locator('tr[data-robot="/ugv1"] td.configurations')).not_to_be_empty()
+        expect(page.locator("#event-log li")).not_to_have_count(0)
+        shoot(page, out, "live")
+    finally:
+        if process is not None:
+            stop(process)
+        node.clear()
+        node.close()
+        core.kill()
 
 
 def main() -> int:
@@ -120,7 +197,7 @@ def main() -> int:
     process = None
     url = args.url
     if url is None:
-        process, url = start()
+        process, url = start("case3", "--fleet", str(ROOT / "examples"))
     try:
         with sync_playwright() as playwright:
             browser = playwright.chromium.launch(
@@ -129,11 +206,13 @@ def main() -> int:
             page = browser.new_page(viewport={"width": 1280, "height": 860})
             page.set_default_timeout(60_000)
             views(page, url, args.out)
+            if args.url is None:
+                with tempfile.TemporaryDirectory(prefix="studio-live-") as work:
+                    live(page, args.out, Path(work))
             browser.close()
     finally:
         if process is not None:
-            process.send_signal(signal.SIGTERM)
-            process.wait(timeout=30)
+            stop(process)
     return 0
 
 

@@ -220,6 +220,21 @@ async def check(request: Request) -> Response:
     return await _json(lambda s, p: s.check_data(p))(request)
 
 
+async def findings(request: Request) -> Response:
+    """The linter's findings, each with the controls of the selection view it concerns.
+    ---
+    summary: Check findings placed at the selection's controls
+    responses:
+      200:
+        description: >-
+          `teleop-ui check --format json`, each finding with `places` (a list of
+          {type, characteristic, value}; empty strings mean every type, the type's own control
+          or the selection as a whole) and the rule set's id as `rules`
+      422: {description: located faults}
+    """
+    return await _json(lambda s, p: s.findings_data(p))(request)
+
+
 def _download(
     call: Callable[[Studio, list[tuple[str, str]]], str | bytes], media: str, name: str
 ) -> Handler:
@@ -442,6 +457,7 @@ def routes() -> list[BaseRoute]:
         Route("/api/robots", robots),
         Route("/api/assign", assign),
         Route("/api/check", check),
+        Route("/api/findings", findings),
         Route("/api/team.yaml", team_yaml),
         Route("/api/report.html", report_html),
         Route("/api/layouts.zip", layouts_zip),

@@ -289,6 +289,55 @@ def _type_controls(page: Page, view: str) -> list[TypeControl]:
     return controls
 
 
+@dataclass(frozen=True)
+class ShownFinding:
+    """A finding of ``check`` as the selection view shows it at a control: its level, check id
+    and message, and where it is (``where``) with a link there (``link``): the rule set's text
+    at its line, or the finding on the Check page for a place in the selection."""
+
+    level: str
+    check: str
+    message: str
+    where: str
+    link: str
+
+
+Slot = tuple[str, str, str]  # (type, characteristic, value) of a control; ("", "", ""): general
+
+
+def _placed_findings(
+    page: Page, data: dict[str, Any], kinematic_types: Sequence[str]
+) -> dict[Slot, list[ShownFinding]]:
+    """The findings of :meth:`Studio.findings_data` by the control that shows them (a finding
+    about a value of the rules is shown at that value in every type); findings about no control
+    under ``("", "", "")``."""
+    found: dict[Slot, list[ShownFinding]] = {}
+    for index, finding in enumerate(data["findings"]):
+        if finding["file"] == SELECTION_FILE:
+            where = f"{SELECTION_FILE}: {finding['path'] or 'the selection'}"
+            link = f"{page.link('/check')}#finding-{index}"
+        else:
+            where = f"{finding['file']}:{finding['line']}:{finding['column']}"
+            link = f"/rules/source?{urlencode([('rules', data['rules'])])}#L{finding['line']}"
+        shown_finding = ShownFinding(
+            finding["level"], finding["check"], finding["message"], where, link
+        )
+        slots: list[Slot] = []
+        for place in finding["places"] or [{"type": "", "characteristic": "", "value": ""}]:
+            kinematic_type, characteristic, value = (
+                place["type"],
+                place["characteristic"],
+                place["value"],
+            )
+            if not kinematic_type and characteristic:
+                slots += [(t, characteristic, value) for t in kinematic_types]
+            else:
+                slots.append((kinematic_type, characteristic, value))
+        for slot in dict.fromkeys(slots):
+            found.setdefault(slot, []).append(shown_finding)
+    return found
+
+
 def _bounded(text: str | None, low: int, high: int, default: int) -> int:
     if text is None or not text.strip().isdigit() or len(text) > 18:
         return default
@@ -319,7 +368,15 @@ async def selection(page: Page) -> Response:
                 note = published_note(solution)
             except SolverError as error:
                 page.faults.extend(error.faults)
+        checked = None
+        findings: dict[Slot, list[ShownFinding]] = {}
+        if not page.faults:
+            checked = page.studio.findings_data(page.pairs)
+            types = [str(v) for v in chosen.rules.key.values]
+            findings = _placed_findings(page, checked, types)
         return {
+            "checked": checked,
+            "findings": findings,
             "view": view,
             "types": _type_controls(page, view),
             "data": data,
@@ -505,6 +562,18 @@ async def check(page: Page) -> Response:
     return page.render("check.html", **await run_in_threadpool(work))
 
 
+@guarded("Rule set")
+async def rules_source(page: Page) -> Response:
+    """The rule set's text with its lines numbered: where findings and constraints link to."""
+
+    def work() -> dict[str, Any]:
+        _choose(page)
+        source, text = page.studio.rules_text(page.pairs)
+        return {"source": source, "lines": text.splitlines()}
+
+    return page.render("rules_source.html", **await run_in_threadpool(work))
+
+
 @guarded("Export")
 async def export(page: Page) -> Response:
     def work() -> dict[str, Any]:
@@ -601,6 +670,7 @@ def routes() -> list[BaseRoute]:
         Route("/robots", robots),
         Route("/charts", charts),
         Route("/check", check),
+        Route("/rules/source", rules_source),
         Route("/export", export),
         Route("/team", upload_team, methods=["POST"]),
         Route("/rules", upload_rules, methods=["POST"]),

@@ -30,6 +30,7 @@ from solver.core.solution import Solution
 from solver.core.team import Team
 from solver.core.teamfile import team_yaml
 from solver.errors import InputError, SolverError
+from solver.reporting.svg import CHART_KINDS, chart_svg
 from solver.studio.selection import SELECTION_FILE, Selection, parse_query, query_of
 from solver.studio.workspace import (
     MAX_UPLOAD_FILES,
@@ -51,7 +52,6 @@ __all__ = [
 ]
 
 Pairs = Sequence[tuple[str, str]]
-CHART_KINDS = ("radar", "bars", "matrix")
 # Rows of one page of configurations or robots, at most.
 MAX_PAGE = 500
 # Files an upload of robot descriptions may hold, by how their names end.
@@ -129,7 +129,7 @@ class Studio:
     def __init__(self, workspace: Workspace, live: LiveFeed | None = None) -> None:
         self.workspace = workspace
         self.live = live
-        # matplotlib's rc settings are global: one chart is drawn at a time.
+        # matplotlib's rc settings are global: one report's charts are drawn at a time.
         self._drawing = threading.Lock()
 
     # -- the selection -----------------------------------------------------------------------
@@ -226,29 +226,74 @@ class Studio:
     def check_data(self, pairs: Pairs) -> dict[str, Any]:
         """``teleop-ui check --format json`` on the rule set and the team the page selects;
         findings in the team are located in ``<selection>`` by their path."""
+        return self._checked(self.chosen(pairs))[0]
+
+    def _checked(self, chosen: Chosen) -> tuple[dict[str, Any], str | None]:
+        """The check's JSON, and the selection's team file it read (``None``: no team)."""
         from solver.check import check_files
         from solver.check.render import json_data
 
-        chosen = self.chosen(pairs)
         source = chosen.source
         files = [source.path]
         shown = {str(source.path): source.rules.file}
+        text = None
         if chosen.team is not None:
             folder = self.workspace.private_folder("check")
             team_path = folder / "team.yaml"
-            team_path.write_text(
-                team_yaml(chosen.team, rules_reference=str(source.path.resolve())),
-                encoding="utf-8",
-            )
+            text = team_yaml(chosen.team, rules_reference=str(source.path.resolve()))
+            team_path.write_text(text, encoding="utf-8")
             files.append(team_path)
             shown[str(team_path)] = SELECTION_FILE
         data = json_data(check_files(files))
         data["files"] = [shown.get(f, f) for f in data["files"]]
+
+        def relabel(message: str) -> str:
+            # Messages cite files as the page names them, not where the studio keeps them.
+            for path, name in shown.items():
+                message = message.replace(path, name)
+            return message
+
         for finding in data["findings"]:
             finding["file"] = shown.get(finding["file"], finding["file"])
+            finding["message"] = relabel(finding["message"])
             for related in finding["related"]:
                 related["file"] = shown.get(related["file"], related["file"])
+                related["message"] = relabel(related["message"])
+        return data, text
+
+    def findings_data(self, pairs: Pairs) -> dict[str, Any]:
+        """:meth:`check_data`, each finding with the controls of the selection view it concerns
+        (``places``: ``{"type", "characteristic", "value"}``, :mod:`solver.studio.findings`;
+        none: the rule set or selection as a whole) and the rule set's id (``rules``), whose
+        text ``/rules/source?rules=ID`` shows with its lines numbered."""
+        from solver.files.yamlio import parse_document
+        from solver.studio.findings import place_data, places, rule_places, selection_places
+
+        chosen = self.chosen(pairs)
+        data, text = self._checked(chosen)
+        source = chosen.source
+        tables = {
+            source.rules.file: rule_places(source.rules, self.workspace.excluded(source)),
+            SELECTION_FILE: {}
+            if text is None
+            else selection_places(parse_document(text, SELECTION_FILE)),
+        }
+        for finding in data["findings"]:
+            table = tables.get(finding["file"], {})
+            finding["places"] = [place_data(p) for p in places(finding["path"], table)]
+        data["rules"] = source.id
         return data
+
+    def rules_text(self, pairs: Pairs) -> tuple[RuleSource, str]:
+        """The rule set a page names and its text (as read now, through the bounded reader)."""
+        from solver.files.inputfile import read_text
+        from solver.files.yamlio import MAX_FILE_BYTES
+
+        source = self.workspace.source(_first(pairs, "rules"))
+        text = read_text(
+            source.path, display=source.rules.file, limit=MAX_FILE_BYTES, what="rule set"
+        )
+        return source, text
 
     # -- exports -----------------------------------------------------------------------------
 
@@ -304,18 +349,15 @@ class Studio:
         return buffer.getvalue()
 
     def chart_svg(self, pairs: Pairs, kind: str) -> bytes:
-        """A chart of ``report`` (radar, bars or the component matrix) as SVG."""
-        from solver.reporting.plot import bars_figure, figure_bytes, matrix_figure, radar_figure
-
+        """A chart of ``report`` (radar, bars or the component matrix) as SVG: the chart
+        ``report`` draws (:mod:`solver.reporting.chart`), written straight as SVG."""
         if kind not in CHART_KINDS:
             raise InputError.at(
                 SELECTION_FILE, f"no chart {kind[:40]!r}; charts: {', '.join(CHART_KINDS)}"
             )
         chosen = self.chosen(pairs)
         solution = self.solution(chosen, listed=kind == "matrix")
-        draw = {"radar": radar_figure, "bars": bars_figure, "matrix": matrix_figure}[kind]
-        with self._drawing:
-            return figure_bytes(draw(solution), "svg")
+        return chart_svg(solution, kind)
 
     # -- uploads -----------------------------------------------------------------------------
 

@@ -381,6 +381,7 @@ def test_every_control_of_every_view_is_reached_by_keyboard_and_labelled(
         "/robots",
         "/charts",
         "/check",
+        "/rules/source",
         "/fleet",
         "/export",
         "/api",
@@ -428,10 +429,13 @@ def test_values_the_rules_exclude_are_shown_disabled_with_the_reason(
         "Walking", exact=True
     )
     expect(walking).to_be_disabled()
-    why = page.locator(f"#{walking.get_attribute('aria-describedby')}")
+    # Described by why it is excluded (and by the check's findings about it, none here).
+    described = (walking.get_attribute("aria-describedby") or "").split()
+    why = page.locator(f"#{described[0]}")
     expect(why).to_have_text(
         "excluded by 'Walking is for legged robots' (rules/extended.yaml:60:5)"
     )
+    expect(page.locator(f"#{described[1]}")).to_be_empty()
     flight = page.locator('fieldset[data-key="UAV.motion_control"]').get_by_label(
         "Flight", exact=True
     )
@@ -468,3 +472,131 @@ def test_the_radar_chart_is_redrawn_for_the_new_selection_and_an_export_reads_ba
     page.get_by_role("button", name="Import team").click()
     expect(page.locator("#total-robots")).to_have_text("90")
     assert sorted(parse_qsl(urlsplit(page.url).query)) == sorted(chosen)
+
+
+GAPPY_RULES = """\
+name: Gappy rules
+characteristics:
+  kinematic_type:
+    label: Kind
+    values: [Rover, Drone]
+  sensor_type:
+    label: Sensor Type
+    values: [Camera, Lidar, Sonar]
+    components:
+      - {name: video, values: [Camera]}
+      - {name: ranges, values: [Lidar]}
+  sensor_count:
+    label: Sensors
+    range: {min: 1, max: 4}
+"""
+
+
+def test_check_findings_are_shown_at_the_values_they_concern_as_the_selection_changes(
+    start_studio: StartStudio, page: Page, tmp_path: Path
+) -> None:
+    rules = tmp_path / "gappy.yaml"
+    rules.write_text(GAPPY_RULES, encoding="utf-8")
+    # What the command line's linter says about the rule set alone.
+    checked = json.loads(run_cli("check", rules, "--format", "json").stdout)
+    (gap,) = [f for f in checked["findings"] if f["check"] == "coverage-gap"]
+    assert "Sonar" in gap["message"]
+
+    server = start_studio(str(rules))
+    page.goto(server.url)
+    sonar = page.locator('fieldset[data-key="Rover.sensor_type"] li').filter(
+        has=page.get_by_label("Sonar", exact=True)
+    )
+    # Before any type is included: the rule set's finding, at Sonar, in every type.
+    for kind in ("Rover", "Drone"):
+        here = page.locator(f'fieldset[data-key="{kind}.sensor_type"] li').filter(
+            has=page.get_by_label("Sonar", exact=True)
+        )
+        expect(here.locator(".finding.error")).to_contain_text(f"coverage-gap {gap['message']}")
+    described = sonar.get_by_label("Sonar", exact=True).get_attribute("aria-describedby") or ""
+    expect(page.locator(f"#{described.split()[-1]}")).to_contain_text("coverage-gap")
+
+    # Including Rover leaves its sensor types open (every value): Sonar is selected and served
+    # by nothing, which the check locates at the type.
+    page.locator("legend").get_by_label("Rover", exact=True).check()
+    expect(page.locator("#total-robots")).to_have_text("12")  # 3 sensor types x 4 counts
+    rover = page.locator("#type-1-findings")
+    expect(rover.locator(".finding.warning")).to_contain_text(
+        "team-uncovered-value Rover leaves sensor_type open, so it selects sensor_type 'Sonar'"
+    )
+    # Camera unticked, the selection lists Sonar: the finding moves to Sonar's control.
+    page.locator('fieldset[data-key="Rover.sensor_type"]').get_by_label(
+        "Camera", exact=True
+    ).uncheck()
+    expect(page.locator("#total-robots")).to_have_text("8")
+    uncovered = sonar.locator(".finding.warning")
+    expect(uncovered).to_contain_text("team-uncovered-value Rover selects sensor_type 'Sonar'")
+    expect(uncovered.locator("a.where")).to_have_text("<selection>: team.Rover.sensor_type[1]")
+    expect(rover.locator(".finding")).to_have_count(0)
+    # Unticked, the selection's finding goes; the rule set's stays.
+    sonar.get_by_label("Sonar", exact=True).uncheck()
+    expect(page.locator("#total-robots")).to_have_text("4")
+    expect(uncovered).to_have_count(0)
+    expect(sonar.locator(".finding.error")).to_contain_text("coverage-gap")
+    # The selection's finding links to the Check page; the rule set's to its line.
+    sonar.get_by_label("Sonar", exact=True).check()
+    expect(uncovered).to_have_count(1)
+    uncovered.locator("a.where").click()
+    expect(page.locator(":target")).to_contain_text("team-uncovered-value")
+    page.go_back()
+    page.locator('fieldset[data-key="Rover.sensor_type"] li').filter(
+        has=page.get_by_label("Sonar", exact=True)
+    ).locator(".finding.error a.where").click()
+    assert page.url.endswith(f"#L{gap['line']}")
+    expect(page.locator(":target")).to_contain_text("values: [Camera, Lidar, Sonar]")
+
+
+def test_the_chart_says_it_is_being_redrawn_until_it_shows_the_new_selection(
+    start_studio: StartStudio, page: Page
+) -> None:
+    from xml.etree import ElementTree
+
+    from playwright.sync_api import Route
+
+    server = start_studio("case3")
+    page.goto(server.url)
+    form = page.locator("form[data-selection]")
+    figure = page.locator("#radar-figure")
+    expect(form).to_have_attribute("data-settled", re.compile("."))
+    expect(figure).to_have_attribute("data-state", "drawn")
+
+    held: list[Route] = []
+    released = False
+
+    def hold(route: Route) -> None:
+        if released:
+            route.continue_()
+        else:
+            held.append(route)
+
+    page.route("**/api/charts/radar.svg?*", hold)
+    page.locator('fieldset[data-key="Humanoid.motion_control"]').get_by_label(
+        "Walking", exact=True
+    ).uncheck()
+    expect(page.locator("#total-robots")).to_have_text("722")
+    # The totals answered; the chart has not: it says so, and the page is not settled.
+    expect(figure).to_have_attribute("data-state", "stale")
+    expect(figure).to_have_attribute("aria-busy", "true")
+    expect(page.locator("#radar-state")).to_have_text("Redrawing the chart for this selection…")
+    assert form.get_attribute("data-settled") is None
+    # Let it through (one not held yet goes straight on).
+    released = True
+    for route in held:
+        route.continue_()
+    expect(figure).to_have_attribute("data-state", "drawn")
+    expect(figure).to_have_attribute("aria-busy", "false")
+    expect(page.locator("#radar-state")).to_have_text("")
+    current = form.get_attribute("data-current")
+    expect(form).to_have_attribute("data-settled", current or "")
+    assert figure.get_attribute("data-query") == current
+    # The chart drawn is the selection's: its title gives the totals the page shows.
+    status, svg = server.get(page.locator("#radar").get_attribute("src") or "")
+    assert status == 200
+    title = ElementTree.fromstring(svg).findtext("{http://www.w3.org/2000/svg}title")
+    assert title == "Case 3: 722 valid robots, 90 UI configurations"
+    expect(page.locator("#total-configurations")).to_have_text("90")

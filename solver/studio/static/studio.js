@@ -33,6 +33,33 @@
     }
     window.history.replaceState({ query: current }, "", "/?" + withView(current));
 
+    // What each part of the page shows, by the selection it answers: the totals, the radar
+    // chart and the check's findings. When all three answer the selection the page holds, the
+    // form says so (data-settled) and the document hears "studio:settled"; until then a part
+    // still answering an older selection says so itself (the chart is marked as being redrawn).
+    const answered = { totals: current, chart: null, findings: null };
+    const figure = document.getElementById("radar-figure");
+    const image = document.getElementById("radar");
+    const summary = document.getElementById("check-summary");
+    if (summary && summary.dataset.query) {
+      answered.findings = current;
+    }
+    if (figure && image) {
+      image.addEventListener("load", () => drawn(true));
+      image.addEventListener("error", () => drawn(false));
+      if (figure.hidden) {
+        answered.chart = current;
+      } else if (image.complete && image.naturalWidth > 0) {
+        answered.chart = current;
+      } else {
+        image.dataset.want = current;
+        chartState("drawing", "Drawing the chart…");
+      }
+    } else {
+      answered.chart = current;
+    }
+    settle();
+
     form.addEventListener("change", (event) => {
       const target = event.target;
       if (target.matches("[data-reload]")) {
@@ -239,29 +266,213 @@
       buttons();
       keepLinks(query);
       const mine = ++asked;
+      stale(query);
+      findings(query);
       const types = new URLSearchParams(query).getAll("type");
       if (!types.length) {
         clearTotals();
+        answer("totals", query);
+        if (figure) {
+          figure.hidden = true;
+          chartState("none", "");
+        }
+        answer("chart", query);
         return;
       }
       let response;
+      let data;
       try {
         response = await fetch("/api/solve?" + query, { headers: { accept: "application/json" } });
+        data = await response.json();
       } catch (error) {
-        showFaults([{ file: "<studio>", path: "", message: "the studio does not answer: " + error }]);
+        if (mine === asked) {
+          showFaults([{ file: "<studio>", path: "", message: "the studio does not answer: " + error }]);
+          unanswered(query);
+        }
         return;
       }
-      const data = await response.json();
       if (mine !== asked) {
         return;
       }
       if (!response.ok) {
         showFaults(data.faults && data.faults.length ? data.faults : [{ file: "<studio>", path: "", message: data.error }]);
+        unanswered(query);
         return;
       }
       showFaults([]);
       showTotals(data);
+      document.getElementById("totals").dataset.query = query;
+      answer("totals", query);
       redraw(query);
+    }
+
+    // A change was made: every part still shows the selection before it until it answers.
+    function stale(query) {
+      delete form.dataset.settled;
+      form.dataset.current = query;
+      if (figure && !figure.hidden) {
+        chartState("stale", "Redrawing the chart for this selection…");
+      }
+      if (summary) {
+        summary.closest("section").setAttribute("aria-busy", "true");
+        form.dataset.findingsStale = "";
+      }
+    }
+
+    // The selection cannot be solved: the totals and the chart keep the last one that could,
+    // and say so.
+    function unanswered(query) {
+      answer("totals", query);
+      if (figure && !figure.hidden) {
+        chartState("stale", "Not redrawn: the selection has problems; the chart shows the last one without.");
+      }
+      answer("chart", query);
+    }
+
+    function redraw(query) {
+      if (!figure || !image) {
+        answer("chart", query);
+        return;
+      }
+      figure.hidden = false;
+      if (figure.dataset.query === query && image.complete && new URL(image.src).search.slice(1) === query) {
+        chartState("drawn", ""); // back to the chart on show (undo): nothing to load
+        answer("chart", query);
+        return;
+      }
+      image.dataset.want = query;
+      chartState(figure.dataset.query ? "stale" : "drawing", "Redrawing the chart for this selection…");
+      image.src = "/api/charts/radar.svg?" + query;
+    }
+
+    function drawn(ok) {
+      const want = image.dataset.want;
+      if (want === undefined || new URL(image.src).search.slice(1) !== want) {
+        return; // an older chart, replaced since
+      }
+      delete image.dataset.want;
+      figure.dataset.query = want;
+      if (ok) {
+        chartState("drawn", "");
+      } else {
+        chartState("failed", "The chart could not be drawn (the studio's console says why).");
+      }
+      answer("chart", want);
+    }
+
+    function chartState(state, text) {
+      if (!figure) {
+        return;
+      }
+      figure.dataset.state = state;
+      figure.setAttribute("aria-busy", state === "stale" || state === "drawing" ? "true" : "false");
+      setText("radar-state", text);
+    }
+
+    function answer(part, query) {
+      answered[part] = query;
+      settle();
+    }
+
+    function settle() {
+      form.dataset.current = current;
+      if (answered.totals === current && answered.chart === current && answered.findings === current) {
+        if (form.dataset.settled !== current) {
+          form.dataset.settled = current;
+          document.dispatchEvent(new CustomEvent("studio:settled", { detail: { query: current } }));
+        }
+      } else {
+        delete form.dataset.settled;
+      }
+    }
+
+    let checking = 0;
+    async function findings(query) {
+      const mine = ++checking;
+      let data = null;
+      try {
+        const response = await fetch("/api/findings?" + query, { headers: { accept: "application/json" } });
+        if (response.ok) {
+          data = await response.json();
+        }
+      } catch (error) {
+        data = null;
+      }
+      if (mine !== checking) {
+        return;
+      }
+      placeFindings(data, query);
+      delete form.dataset.findingsStale;
+      if (summary) {
+        summary.closest("section").setAttribute("aria-busy", "false");
+        summary.dataset.query = data ? query : "";
+      }
+      answer("findings", query);
+    }
+
+    // Each finding at the controls it concerns (a value of the rules: that value in every type;
+    // nothing in particular: the general list), as the server draws them (templates/findings.html).
+    function placeFindings(data, query) {
+      const slots = [...document.querySelectorAll("ul[data-findings]")];
+      for (const slot of slots) {
+        slot.replaceChildren();
+      }
+      if (!summary) {
+        return;
+      }
+      if (!data) {
+        summary.textContent = "The check could not run on this selection (see its problems above).";
+        return;
+      }
+      data.findings.forEach((finding, index) => {
+        const places = finding.places.length ? finding.places : [{ type: "", characteristic: "", value: "" }];
+        const here = slots.filter((slot) => places.some((place) => fits(slot.dataset, place)));
+        for (const slot of here) {
+          slot.append(findingItem(finding, index, data.rules, query));
+        }
+      });
+      const counts = data.summary;
+      const code = document.createElement("code");
+      code.textContent = "teleop-ui check";
+      const all = document.createElement("a");
+      all.href = "/check?" + query;
+      all.textContent = "all on the Check page";
+      summary.replaceChildren(
+        code,
+        `: ${many(counts.error, "error")}, ${many(counts.warning, "warning")}, ${many(counts.info, "note")}; each is shown at the value, characteristic or type it concerns (`,
+        all,
+        ").",
+      );
+    }
+
+    function fits(slot, place) {
+      return (
+        slot.placeCharacteristic === place.characteristic &&
+        slot.placeValue === place.value &&
+        (slot.placeType === place.type || (place.type === "" && place.characteristic !== ""))
+      );
+    }
+
+    function findingItem(finding, index, rules, query) {
+      const item = document.createElement("li");
+      item.className = "finding " + finding.level;
+      const level = document.createElement("span");
+      level.className = "level";
+      level.textContent = finding.level;
+      const id = document.createElement("code");
+      id.className = "check-id";
+      id.textContent = finding.check;
+      const where = document.createElement("a");
+      where.className = "where";
+      if (finding.file === "<selection>") {
+        where.href = "/check?" + query + "#finding-" + index;
+        where.textContent = "<selection>: " + (finding.path || "the selection");
+      } else {
+        where.href = "/rules/source?" + new URLSearchParams({ rules }).toString() + "#L" + finding.line;
+        where.textContent = `${finding.file}:${finding.line}:${finding.column}`;
+      }
+      item.append(level, " ", id, " " + finding.message + " ", where);
+      return item;
     }
 
     function keepLinks(query) {
@@ -360,19 +571,6 @@
       }
       return "Last change: " + (parts.length ? parts.join(", ") : "no change in the counts");
     }
-
-    let drawing = null;
-    function redraw(query) {
-      const image = document.getElementById("radar");
-      if (!image) {
-        return;
-      }
-      // Charts take longer than counts: draw the one the clicking stopped at.
-      clearTimeout(drawing);
-      drawing = setTimeout(() => {
-        image.src = "/api/charts/radar.svg?" + query;
-      }, 300);
-    }
   }
 
   function showFaults(faults) {
@@ -421,6 +619,10 @@
       tr.append(td);
     });
     return tr;
+  }
+
+  function many(count, noun) {
+    return `${count} ${noun}${count === 1 ? "" : "s"}`;
   }
 
   function ratio(value) {
