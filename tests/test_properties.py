@@ -24,6 +24,7 @@ from hypothesis import strategies as st
 from solver import RuleSet, Team, robots, solve
 from solver.core.rules import parse_rules
 from solver.core.team import parse_team
+from solver.engines import structure
 from solver.engines.fast import robots as robots_stream
 from solver.files.yamlio import parse_document
 from solver.reporting.listing import numbered_robots, write_robots
@@ -237,20 +238,47 @@ def test_counting_without_enumeration_equals_the_enumerated_counts(team: Team) -
 @settings(max_examples=100, deadline=None)
 @given(problems(irregular=True), st.sampled_from(["csv", "jsonl"]))
 def test_the_block_listing_is_the_robot_by_robot_listing(team: Team, fmt: str) -> None:
-    solution = solve(team)
     listed = io.StringIO()
-    write_robots(solution, listed, fmt=fmt)
+    write_robots(solve(team), listed, fmt=fmt)
+    assert listed.getvalue() == listing_from_configurations(team, fmt)
+
+
+def listing_from_configurations(team: Team, fmt: str) -> str:
+    """Every robot in the fast engine's order, numbered by searching the listed configurations
+    of the solution for the one it is given (:meth:`Solution.configuration_for`)."""
+    solution = solve(team)
     names = team.rules.names
+    numbered = [
+        (
+            solution.default_configuration if found is None else found.number,
+            robot,
+        )
+        for selection in team.selections
+        for robot in robots_stream(team.rules, selection)
+        for found in [solution.configuration_for(robot)]
+    ]
     reference = io.StringIO()
     if fmt == "csv":
         writer = csv.writer(reference, lineterminator="\n")
         writer.writerow(csv_row(["configuration", *names]))
-        writer.writerows([number, *csv_row(robot)] for number, robot in numbered_robots(solution))
+        writer.writerows([number, *csv_row(robot)] for number, robot in numbered)
     else:
-        for number, robot in numbered_robots(solution):
+        for number, robot in numbered:
             line = {"configuration": number, **dict(zip(names, robot, strict=True))}
             reference.write(json.dumps(line, ensure_ascii=False) + "\n")
-    assert listed.getvalue() == reference.getvalue()
+    return reference.getvalue()
+
+
+@settings(max_examples=100, deadline=None)
+@given(problems(irregular=True), st.sampled_from(["csv", "jsonl"]))
+def test_robots_numbered_from_the_counts_alone_are_numbered_as_the_configurations_say(
+    team: Team, fmt: str
+) -> None:
+    listed = io.StringIO()
+    write_robots(solve(team, count_only=True), listed, fmt=fmt)
+    assert listed.getvalue() == listing_from_configurations(team, fmt)
+    by_rows = list(numbered_robots(solve(team, count_only=True)))
+    assert by_rows == list(numbered_robots(solve(team)))
 
 
 @st.composite
@@ -335,6 +363,9 @@ def test_engines_agree_where_values_overlap_in_several_characteristics(team: Tea
     assert [t.ui_configurations for t in counted] == [
         t.ui_configurations for t in reference.by_type
     ]
+    listed = io.StringIO()
+    write_robots(solve(team, count_only=True), listed)
+    assert listed.getvalue() == listing_from_configurations(team, "csv")
     for index, summary in enumerate(reference.by_type):
         valid = brute_force(team, index)
         assert summary.valid_robots == len(valid)
@@ -346,3 +377,24 @@ def test_engines_agree_where_values_overlap_in_several_characteristics(team: Tea
                 value in component.values
                 for value, component in zip(robot, configuration.components, strict=True)
             )
+
+
+@settings(max_examples=120, deadline=None)
+@given(problems(irregular=True))
+def test_blocks_held_as_numpy_masks_give_what_lists_of_combinations_give(team: Team) -> None:
+    reference = solve(team, engine="csp")
+    expected = listing_from_configurations(team, "csv")
+    every_block_a_mask = 0
+    kept, structure.VECTOR = structure.VECTOR, every_block_a_mask
+    try:
+        counted = solve(team, count_only=True)
+        partitioned = solve(team, engine="structure")
+        listed = io.StringIO()
+        write_robots(solve(team, count_only=True), listed)
+    finally:
+        structure.VECTOR = kept
+    assert [(t.valid_robots, t.ui_configurations, t.unserved_robots) for t in counted.by_type] == [
+        (t.valid_robots, t.ui_configurations, t.unserved_robots) for t in reference.by_type
+    ]
+    assert partitioned.configurations == reference.configurations
+    assert listed.getvalue() == expected

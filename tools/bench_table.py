@@ -70,6 +70,31 @@ ROWS = [
         "",
     ),
     (
+        "test_first_1000_robots[2 x 40 values]",
+        "`robots`, first 1,000 lines: 1,600 robots, each its own configuration",
+        "",
+    ),
+    (
+        "test_first_1000_robots[2 x 640 values]",
+        "`robots`, first 1,000 lines: 409,600 robots, each its own configuration",
+        "< 1 s",
+    ),
+    (
+        "test_first_1000_robots[3 x 400 values]",
+        "`robots`, first 1,000 lines: 64,000,000 robots, each its own configuration",
+        "< 1 s",
+    ),
+    (
+        "test_first_1000_robots[3 x 80 values in windows]",
+        "`robots`, first 1,000 lines: 512,000 robots whose values overlap (8,000 configurations)",
+        "< 1 s",
+    ),
+    (
+        "test_first_1000_robots[2 x 640 values, linked]",
+        "`robots`, first 1,000 lines: 409,599 robots, two characteristics linked by a rule",
+        "< 1 s",
+    ),
+    (
         "test_enumeration_memory_does_not_grow_with_robots",
         "enumerate + partition 9,990,000 robots, fast engine (1 round)",
         "",
@@ -215,6 +240,24 @@ RATIOS = [
         "10^6 robots: csp enumeration + partition / fast enumeration + partition",
         "test_enumerate_1e6_csp",
         "test_enumerate_1e6_fast",
+        "",
+    ),
+    (
+        "`robots`, first 1,000 lines: 409,600 robots / 1,600 robots",
+        "test_first_1000_robots[2 x 640 values]",
+        "test_first_1000_robots[2 x 40 values]",
+        "",
+    ),
+    (
+        "`robots`, first 1,000 lines: 64,000,000 robots / 1,600 robots",
+        "test_first_1000_robots[3 x 400 values]",
+        "test_first_1000_robots[2 x 40 values]",
+        "",
+    ),
+    (
+        "`robots`, first 1,000 lines: 409,599 linked robots / 1,600 robots",
+        "test_first_1000_robots[2 x 640 values, linked]",
+        "test_first_1000_robots[2 x 40 values]",
         "",
     ),
     (

@@ -43,9 +43,10 @@ def run(args: argparse.Namespace) -> int:
     # A spinner only while the robots go to a file: on the terminal they are the progress.
     fmt = "json" if sys.stdout.isatty() else args.format
     with working(f"listing the robots of {team.name}", fmt=fmt):
-        # Numbering needs the partition, which the structure gives without enumerating; the
-        # listing then enumerates with the engine asked for.
-        solution = solve(team, max_robots=args.max_robots)
+        # The counts give each kinematic type its first configuration number and the default
+        # one; numbers within a type come from the structure as its robots are written, so the
+        # first robot does not wait for the last configuration.
+        solution = solve(team, count_only=True, max_robots=args.max_robots)
         write_robots(
             solution, sys.stdout, fmt=args.format, engine=args.engine, max_robots=args.max_robots
         )

@@ -62,19 +62,16 @@ class Group:
 
     positions: tuple[int, ...]
     keys: tuple[Key, ...]
-    _first: dict[Options, Key] = field(default_factory=dict, compare=False, repr=False)
+    _first: dict[Options, Key | None] = field(default_factory=dict, compare=False, repr=False)
 
-    def first(self, options: Options) -> Key:
-        """The lowest chosen partial key the ``options`` (over :attr:`positions`) allow."""
-        found = self._first.get(options)
-        if found is None:
-            found = next(
+    def first(self, options: Options) -> Key | None:
+        """The lowest chosen partial key the ``options`` (over :attr:`positions`) allow
+        (``None``: none, the options of no element)."""
+        if options not in self._first:
+            self._first[options] = next(
                 (key for key in self.keys if all(map(tuple.__contains__, options, key))), None
             )
-            if found is None:
-                raise ValueError(f"{options} is not covered")
-            self._first[options] = found
-        return found
+        return self._first[options]
 
 
 @dataclass(frozen=True, slots=True)
@@ -113,6 +110,8 @@ class Cover:
         key = [0] * self.width
         for group in self.groups:
             part = group.first(tuple(options[p] for p in group.positions))
+            if part is None:
+                raise ValueError(f"{options} is not covered")
             for position, component in zip(group.positions, part, strict=True):
                 key[position] = component
         return tuple(key)

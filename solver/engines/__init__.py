@@ -26,6 +26,9 @@ Engine modules are imported on first use only: numpy and python-constraint stay 
 >>> lookup("fast").__name__
 'solver.engines.fast'
 
+Beside them, :mod:`solver.engines.numbering` gives a robot its configuration number from the
+structure, without listing the configurations (for streaming ``robots``).
+
 Not here: numbering configurations across a team (:mod:`solver.core.solution`); the exact
 minimum cover every engine uses when components overlap (:mod:`solver.core.cover`).
 """

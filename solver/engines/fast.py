@@ -65,7 +65,11 @@ class _Plan:
     """Everything about one kinematic type that does not change from block to block."""
 
     def __init__(
-        self, rules: RuleSet, selection: TypeSelection, weights: _Weights | None = None
+        self,
+        rules: RuleSet,
+        selection: TypeSelection,
+        weights: _Weights | None = None,
+        serving: Sequence[Callable[[Value], int]] | None = None,
     ) -> None:
         self.rules = rules
         self.domains = selection.domains
@@ -91,11 +95,13 @@ class _Plan:
         # Compact configuration codes: only the components this selection reaches.
         self.components: list[list[int]] = []
         codes = []
-        for characteristic, domain in zip(rules.characteristics, self.domains, strict=True):
+        if serving is None:
+            serving = [_first_component(c) for c in rules.characteristics]
+        for characteristic, which, domain in zip(
+            rules.characteristics, serving, self.domains, strict=True
+        ):
             # The component of each selected value (-1: none), then renumbered compactly.
-            component = np.fromiter(
-                map(_first_component(characteristic), domain), dtype=np.int64, count=len(domain)
-            )
+            component = np.fromiter(map(which, domain), dtype=np.int64, count=len(domain))
             reached = np.unique(component[component >= 0])
             self.components.append(reached.tolist())
             compact = np.full(len(characteristic.components) + 1, -1, dtype=np.int64)
@@ -274,16 +280,19 @@ class BlockLayout:
 
 
 def robot_blocks(
-    rules: RuleSet, selection: TypeSelection
+    rules: RuleSet,
+    selection: TypeSelection,
+    serving: Sequence[Callable[[Value], int]] | None = None,
 ) -> tuple[BlockLayout, Iterator[RobotBlock]]:
     """Every valid robot of one kinematic type as blocks of positions and configuration codes,
     in the order of :func:`robots`: for writers that turn millions of robots into rows with
     vector operations rather than one Python tuple per robot.
 
-    The codes are those of each value's first component: the configuration of a robot when
-    every value is in at most one component.
+    The codes are made of the component that serves each value: ``serving[i]`` maps a value
+    of characteristic ``i`` to its component's index (-1: none); by default its first
+    component, the configuration of a robot when every value is in at most one component.
     """
-    plan = _Plan(rules, selection)
+    plan = _Plan(rules, selection, serving=serving)
     layout = BlockLayout(
         tuple(plan.domains),
         plan.start,

@@ -41,7 +41,7 @@ import math
 from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from functools import cached_property
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from solver.core.constraints import Value
 from solver.core.partition import Key, Partition, PartitionClass, RobotClass, partition_classes
@@ -51,12 +51,18 @@ from solver.engines import Counts
 from solver.errors import StructureTooComplex
 
 if TYPE_CHECKING:
+    import numpy as np
+    from numpy.typing import NDArray
+
+    from solver.core.constraints import Condition
     from solver.core.cover import Cover, Group
 
-__all__ = ["BLOCK_LIMIT", "Memo", "count", "partition", "robots"]
+__all__ = ["BLOCK_LIMIT", "Memo", "Product", "count", "partition", "product", "robots"]
 
 # Class combinations one block may have before counting falls back to enumeration.
 BLOCK_LIMIT = 1_000_000
+# Class combinations past which a block is evaluated as a numpy mask, not a list.
+VECTOR = 4096
 
 Members = tuple[Value, ...]
 
@@ -85,12 +91,31 @@ class _Class:
     membership: tuple[int, ...]  # the components every member belongs to
 
 
-@dataclass(frozen=True)
 class _Block:
-    """Characteristics linked by constraints, and their valid class combinations."""
+    """Characteristics linked by constraints, and their valid class combinations.
 
-    positions: tuple[int, ...]
-    combinations: tuple[tuple[tuple[_Class, ...], int], ...]  # (one class per position, weight)
+    Small blocks list their combinations; large ones (more than :data:`VECTOR` class
+    combinations) hold them as a numpy mask over the product of their classes, so counting
+    never makes a Python tuple per combination, and the list is made only if asked for.
+    """
+
+    def __init__(
+        self,
+        positions: tuple[int, ...],
+        combinations: tuple[tuple[tuple[_Class, ...], int], ...] | None = None,
+        grid: _Grid | None = None,
+    ) -> None:
+        self.positions = positions
+        self._combinations = combinations
+        self.grid = grid
+
+    @cached_property
+    def combinations(self) -> tuple[tuple[tuple[_Class, ...], int], ...]:
+        """(one class per position, the robots it stands for), in product order."""
+        if self._combinations is not None:
+            return self._combinations
+        assert self.grid is not None  # one of the two is always given
+        return self.grid.combinations()
 
     @staticmethod
     def partial_key(classes: tuple[_Class, ...]) -> Key | None:
@@ -102,6 +127,8 @@ class _Block:
     @cached_property
     def partial_weights(self) -> dict[Key, int]:
         """Robots per partial configuration (robots with a value in no component left out)."""
+        if self.grid is not None:
+            return self.grid.partial_weights()
         weights: dict[Key, int] = {}
         for combination, weight in self.combinations:
             key = self.partial_key(combination)
@@ -110,16 +137,133 @@ class _Block:
         return weights
 
     @cached_property
+    def configurations(self) -> int:
+        """How many partial configurations the block reaches (values in one component each)."""
+        if self.grid is not None:
+            return len(self.grid.keys())
+        return len(self.partial_weights)
+
+    @cached_property
     def robots(self) -> int:
+        if self.grid is not None:
+            return self.grid.robots(served=False)
         return sum(weight for _, weight in self.combinations)
 
     @cached_property
     def served(self) -> int:
         """Robots whose every class is in some component."""
+        if self.grid is not None:
+            return self.grid.robots(served=True)
         return sum(
             weight
             for combination, weight in self.combinations
             if all(c.membership for c in combination)
+        )
+
+    @cached_property
+    def overlaps(self) -> bool:
+        """Whether a class of a valid combination is in several components."""
+        if self.grid is not None:
+            return self.grid.overlaps()
+        return any(
+            len(c.membership) > 1 for combination, _ in self.combinations for c in combination
+        )
+
+
+class _Grid:
+    """The valid class combinations of a large block as a mask over the product of its classes
+    (C order: the last position varies fastest, as :func:`itertools.product`)."""
+
+    def __init__(self, classes: Sequence[Sequence[_Class]], valid: NDArray[np.bool_]) -> None:
+        import numpy as np
+
+        self.classes = classes
+        self.valid = valid  # shaped as the product
+        self.shape = tuple(len(c) for c in classes)
+        self._np = np
+
+    def _axis(self, axis: int, column: Sequence[int] | Sequence[bool]) -> NDArray[Any]:
+        shape = [1] * len(self.shape)
+        shape[axis] = -1
+        return self._np.asarray(column).reshape(shape)
+
+    def _served(self) -> NDArray[np.bool_]:
+        served = self.valid.copy()
+        for axis, found in enumerate(self.classes):
+            served &= self._axis(axis, [bool(c.membership) for c in found])
+        return served
+
+    def robots(self, *, served: bool) -> int:
+        """The robots of the valid (and, with ``served``, served) combinations, exactly."""
+        np = self._np
+        mask = self._served() if served else self.valid
+        # Python integers where the block's robots could overflow int64.
+        bound = math.prod(sum(len(c.members) for c in found) for found in self.classes)
+        kind = np.int64 if bound < 1 << 62 else object
+        weights: NDArray[Any] = mask.astype(kind)
+        for axis, found in enumerate(self.classes):
+            weights = weights * self._axis(
+                axis, np.array([len(c.members) for c in found], dtype=kind)
+            )
+        return int(weights.sum())
+
+    def _codes(self) -> tuple[NDArray[np.int64], list[list[int]]]:
+        """Each served combination's partial configuration as one number (mixed radix over the
+        components each position reaches, compactly), and those components per position."""
+        np = self._np
+        served = self._served()
+        reached = [
+            sorted({c.membership[0] for c in found if c.membership}) for found in self.classes
+        ]
+        code = np.zeros(self.shape, dtype=np.int64)
+        for axis, found in enumerate(self.classes):
+            digit = {component: d for d, component in enumerate(reached[axis])}
+            column = [digit[c.membership[0]] if c.membership else 0 for c in found]
+            radix = math.prod(len(r) for r in reached[axis + 1 :])
+            code = code + self._axis(axis, np.array(column, dtype=np.int64) * radix)
+        return code[served], reached
+
+    def keys(self) -> NDArray[np.int64]:
+        """The partial configurations reached, ascending, one row each (component indices)."""
+        np = self._np
+        codes, reached = self._codes()
+        # Sorted, then one of each run: numpy's unique hashes first, ten times slower here.
+        codes = np.sort(codes)
+        unique = codes[np.concatenate(([True], codes[1:] != codes[:-1]))] if len(codes) else codes
+        columns = []
+        for axis in range(len(self.shape)):
+            radix = math.prod(len(r) for r in reached[axis + 1 :])
+            digits = unique // radix % max(len(reached[axis]), 1)
+            columns.append(np.asarray(reached[axis], dtype=np.int64)[digits])
+        keys: NDArray[Any] = np.stack(columns, axis=1)
+        return keys
+
+    def partial_weights(self) -> dict[Key, int]:
+        weights: dict[Key, int] = {}
+        for combination, weight in self.combinations():
+            key = _Block.partial_key(combination)
+            if key is not None:
+                weights[key] = weights.get(key, 0) + weight
+        return weights
+
+    def overlaps(self) -> bool:
+        np = self._np
+        for axis, found in enumerate(self.classes):
+            present = self.valid.any(axis=tuple(a for a in range(len(self.shape)) if a != axis))
+            plural = np.array([len(c.membership) > 1 for c in found])
+            if (present & plural).any():
+                return True
+        return False
+
+    def combinations(self) -> tuple[tuple[tuple[_Class, ...], int], ...]:
+        np = self._np
+        where = np.nonzero(self.valid)
+        return tuple(
+            (
+                choice := tuple(found[i] for found, i in zip(self.classes, index, strict=True)),
+                math.prod(len(c.members) for c in choice),
+            )
+            for index in zip(*(w.tolist() for w in where), strict=True)
         )
 
 
@@ -159,12 +303,62 @@ def count(rules: RuleSet, selection: TypeSelection, memo: Memo | None = None) ->
         robots = served = configurations = 1
         for block in blocks:
             robots *= block.robots
-            served *= sum(block.partial_weights.values())
-            configurations *= len(block.partial_weights)
+            served *= block.served
+            configurations *= block.configurations
         result = Counts(selection.kinematic_type, robots, configurations, robots - served)
     if memo is not None:
         memo.counts[memo_key] = result
     return result
+
+
+@dataclass(frozen=True)
+class Product:
+    """The UI configurations of one kinematic type as a product, without listing them.
+
+    ``parts``: per block of characteristics, its places in numbering order (the team key first,
+    then the others in rule order: :func:`solver.core.partition.sort_key`) and its partial
+    configurations over them, ascending; every configuration joins one of each block.
+    ``cover``: where values overlap, the minimum cover that gives each robot its configuration
+    (its keys in numbering order too).
+    """
+
+    parts: tuple[tuple[tuple[int, ...], NDArray[np.int64]], ...]  # keys: one row each
+    cover: Cover | None
+
+    @property
+    def size(self) -> int:
+        """How many configurations."""
+        return math.prod(len(keys) for _, keys in self.parts)
+
+
+def product(rules: RuleSet, selection: TypeSelection) -> Product | None:
+    """The configurations of one kinematic type as a :class:`Product` of its blocks' parts;
+    ``None`` where overlapping values need a cover spanning blocks (not a product of theirs).
+    :class:`~solver.errors.StructureTooComplex` where the structure does not apply."""
+    import numpy as np
+
+    blocks = _blocks(rules, _selected_classes(rules, selection))
+    cover = None
+    key_of: Callable[[_Block, tuple[_Class, ...]], Key | None] = _own_key
+    if _overlaps(blocks):
+        cover = _cover(rules, blocks)
+        by_block = _cover_by_block(rules, blocks, cover)
+        if by_block is None:
+            return None
+        key_of = by_block
+    place = _numbering(rules)
+    parts = []
+    for block in blocks:
+        order = sorted(range(len(block.positions)), key=lambda i: place[block.positions[i]])
+        if block.grid is not None and cover is None:
+            keys = block.grid.keys()[:, order]
+            keys = keys[np.lexsort(keys.T[::-1])] if len(order) > 1 else keys
+        else:
+            found = {key_of(block, combination) for combination, _ in block.combinations}
+            listed = sorted(tuple([key[i] for i in order]) for key in found if key is not None)
+            keys = np.array(listed, dtype=np.int64).reshape(len(listed), len(order))
+        parts.append((tuple(place[block.positions[i]] for i in order), keys))
+    return Product(tuple(parts), cover)
 
 
 def robots(rules: RuleSet, selection: TypeSelection) -> Iterator[tuple[Value, ...]]:
@@ -194,9 +388,7 @@ def partition(
     if blocks is None:
         blocks = _blocks(rules, _selected_classes(rules, selection))
     if not _overlaps(blocks):
-        return _partition_product(
-            rules, selection, blocks, lambda _, combination: _Block.partial_key(combination)
-        )
+        return _partition_product(rules, selection, blocks, _own_key)
     cover = memo.covers.get(selection.kinematic_type) if memo is not None else None
     if cover is None:
         cover = _cover(rules, blocks)
@@ -277,6 +469,11 @@ def _partition_product(
     )
 
 
+def _own_key(_: _Block, combination: tuple[_Class, ...]) -> Key | None:
+    """A combination's partial configuration where every value has one component."""
+    return _Block.partial_key(combination)
+
+
 def _numbering(rules: RuleSet) -> list[int]:
     """Each characteristic's place in numbering order (the team key first)."""
     key = rules.key_position
@@ -331,6 +528,8 @@ def _cover_by_block(
         for group in groups[number[id(block)]]:
             where = at[id(group)]
             part = group.first(tuple([combination[i].membership for i in where]))
+            if part is None:  # never for a valid combination: the cover hits them all
+                return None
             for i, component in zip(where, part, strict=True):
                 key[i] = component
         return tuple(key)
@@ -339,13 +538,8 @@ def _cover_by_block(
 
 
 def _overlaps(blocks: Sequence[_Block]) -> bool:
-    """Whether any selected value belongs to more than one component."""
-    return any(
-        len(c.membership) > 1
-        for block in blocks
-        for combination, _ in block.combinations
-        for c in combination
-    )
+    """Whether any value of a valid robot belongs to more than one component."""
+    return any(block.overlaps for block in blocks)
 
 
 def _joint_classes(rules: RuleSet, blocks: Sequence[_Block]) -> Iterator[RobotClass]:
@@ -462,18 +656,74 @@ def _blocks(rules: RuleSet, classes: list[list[_Class]]) -> list[_Block]:
                 f"{BLOCK_LIMIT})",
                 path="constraints",
             )
-        checks = [
-            (
-                rules.constraints[n].predicate(),
-                [index[name] for name in rules.constraints[n].characteristics],
-            )
-            for n in numbers
-        ]
-        combinations = []
-        for choice in itertools.product(*(classes[i] for i in group)):
-            for i, found in zip(group, choice, strict=True):
-                values[i] = found.members[0]
-            if all(check(*(values[i] for i in positions)) for check, positions in checks):
-                combinations.append((choice, math.prod(len(c.members) for c in choice)))
-        blocks.append(_Block(tuple(group), tuple(combinations)))
+        if size > VECTOR:
+            grid = _grid(rules, [classes[i] for i in group], group, numbers, values)
+            blocks.append(_Block(tuple(group), grid=grid))
+            continue
+        blocks.append(_Block(tuple(group), _listed(rules, classes, group, numbers, values)))
     return blocks
+
+
+def _listed(
+    rules: RuleSet,
+    classes: list[list[_Class]],
+    group: list[int],
+    numbers: list[int],
+    values: list[Value],
+) -> tuple[tuple[tuple[_Class, ...], int], ...]:
+    """The valid combinations of a small block, one by one (``values``: a value of every
+    characteristic, the block's overwritten as its combinations are tried)."""
+    index = {name: i for i, name in enumerate(rules.names)}
+    checks = [
+        (
+            rules.constraints[n].predicate(),
+            [index[name] for name in rules.constraints[n].characteristics],
+        )
+        for n in numbers
+    ]
+    combinations = []
+    for choice in itertools.product(*(classes[i] for i in group)):
+        for i, found in zip(group, choice, strict=True):
+            values[i] = found.members[0]
+        if all(check(*(values[i] for i in positions)) for check, positions in checks):
+            combinations.append((choice, math.prod(len(c.members) for c in choice)))
+    return tuple(combinations)
+
+
+def _grid(
+    rules: RuleSet,
+    classes: list[list[_Class]],
+    group: list[int],
+    numbers: list[int],
+    values: list[Value],
+) -> _Grid:
+    """The valid combinations of a large block, each rule evaluated over the whole product of
+    its classes at once (a class's first value answers every condition for its class)."""
+    import numpy as np
+
+    axis_of = {position: axis for axis, position in enumerate(group)}
+    shape = tuple(len(found) for found in classes)
+    index = {name: i for i, name in enumerate(rules.names)}
+
+    def holds(condition: Condition) -> NDArray[np.bool_] | bool:
+        position = index[condition.characteristic]
+        if position not in axis_of:  # one class outside the block: a constant
+            return values[position] in condition.allowed
+        axis = axis_of[position]
+        column = np.array([c.members[0] in condition.allowed for c in classes[axis]])
+        return column.reshape([-1 if a == axis else 1 for a in range(len(shape))])
+
+    def together(conditions: Sequence[Condition]) -> NDArray[np.bool_] | bool:
+        result: NDArray[np.bool_] | bool = True
+        for condition in conditions:
+            result = result & holds(condition)
+        return result
+
+    valid = np.ones(shape, dtype=bool)
+    for number in numbers:
+        rule = rules.constraints[number]
+        if rule.kind == "forbid":
+            valid &= ~np.asarray(together(rule.conditions))
+        else:
+            valid &= ~np.asarray(together(rule.when)) | together(rule.conditions)
+    return _Grid(classes, valid)

@@ -14,16 +14,19 @@ import csv
 import io
 import itertools
 import json
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from typing import TYPE_CHECKING, TextIO, TypeAlias
 
 import numpy as np
 
 from solver import engines
 from solver.core.constraints import Value
+from solver.core.rules import RuleSet
 from solver.core.solution import Solution
+from solver.core.team import TypeSelection
 from solver.engines import ENUMERATING, MAX_ROBOTS
 from solver.engines.fast import BlockLayout, robot_blocks
+from solver.engines.numbering import Numbers
 from solver.errors import TooLargeError
 from solver.reporting.render import csv_cell, csv_row, json_printable
 
@@ -37,6 +40,9 @@ __all__ = ["MAX_SKIPPED", "numbered_robots", "robots_page", "write_robots"]
 MAX_SKIPPED = 10**6
 
 Cells: TypeAlias = "NDArray[np.object_]"  # text, one string per block row
+Codes: TypeAlias = "NDArray[np.int64]"
+# Rows written at once from a block whose robots have more configurations than this.
+_SLICE = 1 << 13
 
 
 def numbered_robots(
@@ -44,36 +50,25 @@ def numbered_robots(
 ) -> Iterator[tuple[int, tuple[Value, ...]]]:
     """(configuration number, robot) for every valid robot, kinematic types in rule order.
 
-    ``engine`` names the engine that enumerates (:func:`solver.engines.lookup`: an
-    :class:`~solver.errors.InputError` for an unknown name).
+    ``solution`` may be counted only (``count_only``): the numbers come from the structure, a
+    type at a time, so the first robot comes at once. ``engine`` names the engine that
+    enumerates (:func:`solver.engines.lookup`: an :class:`~solver.errors.InputError` for an
+    unknown name).
     """
-    rules = solution.rules
     enumerator = engines.lookup(engine)
     default = solution.default_configuration
-    # Where every value has at most one component (the article's case), a robot's configuration
-    # is a table lookup per characteristic: no search over configurations per robot.
-    simple = all(len(m) <= 1 for c in rules.characteristics for m in c.membership)
-    tables = [
-        {
-            value: members[0]
-            for value, members in zip(c.values, c.membership, strict=True)
-            if members
-        }
-        for c in rules.characteristics
-    ]
-    numbers = {c.key: c.number for c in solution.configurations}
-    for selection in solution.team.selections:
-        for robot in enumerator.robots(rules, selection):
-            if simple:
-                try:
-                    key = tuple([table[value] for table, value in zip(tables, robot, strict=True)])
-                except KeyError:  # a value in no component: unserved
-                    yield default, robot
-                    continue
-                yield numbers.get(key, default), robot
-                continue
-            configuration = solution.configuration_for(robot)
-            yield (default if configuration is None else configuration.number), robot
+    for selection, numbers in _numbers(solution):
+        for robot in enumerator.robots(solution.rules, selection):
+            number = numbers.number(robot)
+            yield (default if number is None else number), robot
+
+
+def _numbers(solution: Solution) -> Iterator[tuple[TypeSelection, Numbers]]:
+    """Each kinematic type's selection with its configuration numbers, made when it is reached."""
+    first = 1
+    for selection, summary in zip(solution.team.selections, solution.by_type, strict=True):
+        yield selection, Numbers(solution.rules, selection, first)
+        first += summary.ui_configurations
 
 
 def robots_page(
@@ -171,6 +166,9 @@ def write_robots(
 ) -> int:
     """Write every numbered robot to ``stream``; returns how many were written.
 
+    ``solution`` may be counted only (``solve(team, count_only=True)``): configuration numbers
+    come from the structure a kinematic type at a time, so the first robot is written before
+    the last configuration is known, and memory does not grow with the configurations.
     :class:`TooLargeError`, before writing anything, when there are more than ``max_robots``.
     """
     total = solution.totals.valid_robots
@@ -179,38 +177,61 @@ def write_robots(
             solution.team.file,
             f"listing {total} robots is refused (more than {max_robots}, see --max-robots)",
         )
+    enumerator = engines.lookup(engine)
     names = solution.rules.names
-    if engine == "fast" and _one_component_each(solution) and (fmt == "csv" or _plain(names)):
-        return _write_blocks(solution, stream, fmt)
-    written = 0
     if fmt == "csv":
-        writer = csv.writer(stream, lineterminator="\n")
-        # Names come from rule files: no cell may read as a spreadsheet formula. Values are
-        # few and robots many, so each value's cell is made once.
-        writer.writerow(csv_row(["configuration", *names]))
+        # Names come from rule files: no cell may read as a spreadsheet formula.
+        csv.writer(stream, lineterminator="\n").writerow(csv_row(["configuration", *names]))
+    by_blocks = engine == "fast" and (fmt == "csv" or _plain(names))
+    text = _Text(solution.rules, fmt) if by_blocks else None
+    written = 0
+    for selection, numbers in _numbers(solution):
+        serving = numbers.serving() if text is not None else None
+        if text is not None and serving is not None:
+            written += _write_blocks(solution, selection, numbers, text, stream, serving=serving)
+        else:
+            robots = enumerator.robots(solution.rules, selection)
+            written += _write_rows(solution, numbers, robots, fmt, stream)
+    return written
+
+
+def _write_rows(
+    solution: Solution,
+    numbers: Numbers,
+    robots: Iterable[tuple[Value, ...]],
+    fmt: str,
+    stream: TextIO,
+) -> int:
+    """Robots one row at a time (any engine, any names)."""
+    default = solution.default_configuration
+    names = solution.rules.names
+    written = 0
+
+    def numbered() -> Iterator[tuple[int, tuple[Value, ...]]]:
+        nonlocal written
+        for robot in robots:
+            written += 1
+            number = numbers.number(robot)
+            yield (default if number is None else number), robot
+
+    if fmt == "csv":
+        # Values are few and robots many, so each value's cell is made once.
         cells = [
             {value: csv_cell(value) for value in c.values} for c in solution.rules.characteristics
         ]
-
-        def rows() -> Iterator[list[object]]:
-            nonlocal written
-            for number, robot in numbered_robots(solution, engine):
-                written += 1
-                yield [number, *[cell[value] for cell, value in zip(cells, robot, strict=True)]]
-
-        writer.writerows(rows())
+        csv.writer(stream, lineterminator="\n").writerows(
+            [number, *[cell[value] for cell, value in zip(cells, robot, strict=True)]]
+            for number, robot in numbered()
+        )
         return written
-    for number, robot in numbered_robots(solution, engine):
+    for number, robot in numbered():
         stream.write(
-            json_printable(
-                json.dumps(
-                    {"configuration": number, **dict(zip(names, robot, strict=True))},
-                    ensure_ascii=False,
-                )
+            json.dumps(
+                {"configuration": number, **dict(zip(names, robot, strict=True))},
+                ensure_ascii=False,
             )
             + "\n"
         )
-        written += 1
     return written
 
 
@@ -236,62 +257,96 @@ def _json_field(value: Value) -> str:
     return json_printable(json.dumps(value, ensure_ascii=False))
 
 
-def _write_blocks(solution: Solution, stream: TextIO, fmt: str) -> int:
-    """:func:`write_robots` from the fast engine's blocks, byte for byte the same text.
+class _Text:
+    """The pieces of text the block writer joins: each value's cell made once."""
+
+    def __init__(self, rules: RuleSet, fmt: str) -> None:
+        names = rules.names
+        if fmt == "csv":
+            field: Callable[[Value], str] = _csv_field
+            labels = ["" for _ in names]
+            self.opening, self.separator, self.closing = "", ",", "\n"
+        else:
+            field = _json_field
+            labels = [json.dumps(name, ensure_ascii=False) + ": " for name in names]
+            self.opening, self.separator, self.closing = '{"configuration": ', ", ", "}\n"
+        self.rules = rules
+        self.cells = [
+            [label + field(value) for value in c.values]
+            for label, c in zip(labels, rules.characteristics, strict=True)
+        ]
+        self.made: dict[tuple[tuple[str, ...], ...], Cells] = {}  # types often share a block
+
+
+def _write_blocks(
+    solution: Solution,
+    selection: TypeSelection,
+    numbers: Numbers,
+    text: _Text,
+    stream: TextIO,
+    *,
+    serving: Sequence[Callable[[Value], int]],
+) -> int:
+    """The robots of one kinematic type from the fast engine's blocks, byte for byte the text
+    :func:`_write_rows` makes.
 
     Each value's cell text is made once and each block row's trailing cells once per kinematic
     type; a block of robots is then two numpy takes, one elementwise ``+`` and one write, and a
     configuration number is looked up once per distinct code of the block, not per robot.
     """
     rules = solution.rules
-    names = rules.names
-    if fmt == "csv":
-        csv.writer(stream, lineterminator="\n").writerow(csv_row(["configuration", *names]))
-        field: Callable[[Value], str] = _csv_field
-        labels = ["" for _ in names]
-        opening, separator, closing = "", ",", "\n"
-    else:
-        field = _json_field
-        labels = [json_printable(json.dumps(name, ensure_ascii=False)) + ": " for name in names]
-        opening, separator, closing = '{"configuration": ', ", ", "}\n"
-    cells = [
-        [label + field(value) for value in c.values]
-        for label, c in zip(labels, rules.characteristics, strict=True)
-    ]
-    numbers = {c.key: c.number for c in solution.configurations}
+    separator = text.separator
     default = solution.default_configuration
+    layout, blocks = robot_blocks(rules, selection, serving)
+    selected = [
+        [text.cells[i][rules.characteristics[i].positions[v]] for v in domain]
+        for i, domain in enumerate(layout.domains)
+    ]
+    number_of = _numbers_by_code(layout, numbers)
+    vector = numbers.by_codes(layout.components, layout.strides)
+    width = len(layout.domains)
+    # Leading block characteristics with one selected value (the kinematic type, often)
+    # are the same text on every row: they join the text made once per code.
+    first = layout.start
+    while first < width - 1 and len(selected[first]) == 1:
+        first += 1
+    fixed = "".join(selected[i][0] + separator for i in range(layout.start, first))
+    tails = _block_text(selected[first:], separator, text.closing, text.made)
+
+    def numbered(codes: Codes) -> list[int]:
+        if vector is None:
+            return [number_of(code, default) for code in codes.tolist()]
+        found = np.full(len(codes), default, dtype=np.int64)
+        served = codes >= 0
+        found[served] = vector(codes[served])
+        return list(found.tolist())
+
     written = 0
-    made: dict[tuple[tuple[str, ...], ...], Cells] = {}  # kinematic types often share a block
-    for selection in solution.team.selections:
-        layout, blocks = robot_blocks(rules, selection)
-        selected = [
-            [cells[i][rules.characteristics[i].positions[v]] for v in domain]
-            for i, domain in enumerate(layout.domains)
-        ]
-        codes = _numbers_by_code(layout, numbers)
-        width = len(layout.domains)
-        # Leading block characteristics with one selected value (the kinematic type, often)
-        # are the same text on every row: they join the text made once per code.
-        first = layout.start
-        while first < width - 1 and len(selected[first]) == 1:
-            first += 1
-        fixed = "".join(selected[i][0] + separator for i in range(layout.start, first))
-        tails = _block_text(selected[first:], separator, closing, made)
-        for block in blocks:
-            head = "".join(selected[i][digit] + separator for i, digit in enumerate(block.head))
+    for block in blocks:
+        head = "".join(selected[i][digit] + separator for i, digit in enumerate(block.head))
+        # A block whose robots have many configurations goes in slices, each numbering only
+        # the codes it uses: the first lines leave before the whole block is numbered.
+        slices = [(0, len(block.rows))]
+        if len(block.codes) > _SLICE:
+            slices = [
+                (a, min(a + _SLICE, len(block.rows))) for a in range(0, len(block.rows), _SLICE)
+            ]
+        for low, high in slices:
+            which = block.which[low:high]
+            codes = block.codes
+            if (low, high) != (0, len(block.rows)):
+                used, which = np.unique(which, return_inverse=True)
+                codes = codes[used]
             starts = np.array(
-                [
-                    f"{opening}{codes.get(code, default)}{separator}{head}{fixed}"
-                    for code in block.codes.tolist()
-                ],
+                [f"{text.opening}{n}{separator}{head}{fixed}" for n in numbered(codes)],
                 dtype=object,
             )
             # Interleaved and joined once: no string per robot is made, only pointers copied.
-            pieces = np.empty((len(block.rows), 2), dtype=object)
-            np.take(starts, block.which, out=pieces[:, 0])
-            np.take(tails, block.rows, out=pieces[:, 1])
+            pieces = np.empty((high - low, 2), dtype=object)
+            np.take(starts, which.reshape(-1), out=pieces[:, 0])
+            np.take(tails, block.rows[low:high], out=pieces[:, 1])
             stream.write("".join(pieces.reshape(-1).tolist()))
-            written += len(block.rows)
+            written += high - low
     return written
 
 
@@ -314,18 +369,19 @@ def _block_text(
     return made[key]
 
 
-def _numbers_by_code(layout: BlockLayout, numbers: dict[tuple[int, ...], int]) -> dict[int, int]:
-    """Configuration numbers by the codes of :func:`robot_blocks` for one kinematic type: the
-    configurations whose components this type's selection reaches."""
-    where = [{component: k for k, component in enumerate(c)} for c in layout.components]
-    found = {}
-    for key, number in numbers.items():
-        code = 0
-        for position, component, stride in zip(where, key, layout.strides, strict=True):
-            k = position.get(component)
-            if k is None:
-                break
-            code += k * stride
-        else:
-            found[code] = number
-    return found
+def _numbers_by_code(layout: BlockLayout, numbers: Numbers) -> Callable[[int, int], int]:
+    """Configuration numbers by the codes of :func:`robot_blocks` for one kinematic type
+    (``code, default -> number``): the code read back as components, then numbered."""
+    width = len(layout.components)
+    sizes = [len(c) for c in layout.components]
+
+    def number_of(code: int, default: int) -> int:
+        if code < 0:
+            return default
+        key = []
+        for i in range(width):
+            key.append(layout.components[i][code // layout.strides[i] % sizes[i]])
+        found = numbers.key_number(tuple(key))
+        return default if found is None else found
+
+    return number_of

@@ -12,6 +12,7 @@ import pytest
 
 from solver import Solution, load_team, solve
 from solver.engines import fast
+from solver.errors import TooLargeError
 from solver.reporting.listing import numbered_robots, write_robots
 from solver.reporting.render import csv_row
 from tests.conftest import run_cli
@@ -217,3 +218,49 @@ def test_a_page_past_the_enumeration_limit_is_refused_where_constraints_apply(
     solution = solve(load_team("search-and-rescue"))
     with pytest.raises(TooLargeError, match="a page starting at robot 102 is refused"):
         listing.robots_page(solution, 101, 5)
+
+
+class _FirstLines(io.StringIO):
+    """A reader that closes after a few lines, as ``head`` does."""
+
+    def __init__(self, lines: int) -> None:
+        super().__init__()
+        self.left = lines
+
+    def write(self, text: str) -> int:
+        if self.left <= 0:
+            raise BrokenPipeError
+        self.left -= text.count("\n")
+        return super().write(text)
+
+
+def test_robots_stream_from_a_team_whose_configurations_are_too_many_to_list(
+    write_file: Callable[[str, str], Path],
+) -> None:
+    values = ", ".join(f"v{i}" for i in range(110))
+    write_file(
+        "rules.yaml",
+        f"characteristics:\n  kinematic_type: {{values: [T]}}\n"
+        f"  a: {{values: [{values}]}}\n  b: {{values: [{values}]}}\n  c: {{values: [{values}]}}\n",
+    )
+    team = load_team(write_file("team.yaml", "rules: rules.yaml\nteam:\n  T: {}\n"))
+    with pytest.raises(TooLargeError, match="listing 1331000 UI configurations is refused"):
+        solve(team)
+    stream = _FirstLines(3)
+    with pytest.raises(BrokenPipeError):
+        write_robots(solve(team, count_only=True), stream)
+    assert stream.getvalue().splitlines()[:4] == [
+        "configuration,kinematic_type,a,b,c",
+        "1,T,v0,v0,v0",
+        "2,T,v0,v0,v1",
+        "3,T,v0,v0,v2",
+    ]
+
+
+def test_robots_numbered_from_the_counts_are_numbered_as_the_solution_numbers_them() -> None:
+    team = load_team("rules/teams/search-and-rescue.yaml")
+    listed = solve(team)
+    counted = solve(team, count_only=True)
+    for number, robot in numbered_robots(counted):
+        found = listed.configuration_for(robot)
+        assert number == (listed.default_configuration if found is None else found.number)
