@@ -20,6 +20,7 @@ __all__ = [
     "add_master_options",
     "add_profile",
     "add_rules",
+    "add_set",
     "load_team_argument",
     "positive",
     "seconds",
@@ -135,6 +136,20 @@ def add_profile(parser: argparse.ArgumentParser) -> None:
         "-p",
         metavar="PROFILE.yaml",
         help="identification profile (default: the shipped rules/identification.yaml)",
+    )
+
+
+def add_set(parser: argparse.ArgumentParser, *, per_robot: bool = True) -> None:
+    """``--set NAME=VALUE`` (repeatable): a characteristic's value given at start."""
+    parser.add_argument(
+        "--set",
+        action="append",
+        default=[],
+        metavar="[/ROBOT:]NAME=VALUE" if per_robot else "NAME=VALUE",
+        help="a value of a characteristic of the rule set identification does not give, or "
+        "replaces (e.g. --set comm_link=Wi-Fi"
+        + (", or --set /uav1:comm_link=LTE for one robot" if per_robot else "")
+        + "; repeatable)",
     )
 
 

@@ -5,13 +5,21 @@ from __future__ import annotations
 import argparse
 from typing import TYPE_CHECKING, Any
 
-from solver.cli._common import add_format, add_profile, add_rules, load_team_argument, write
+from solver.cli._common import (
+    add_format,
+    add_profile,
+    add_rules,
+    add_set,
+    load_team_argument,
+    write,
+)
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
 if TYPE_CHECKING:
     from pathlib import Path
 
     from solver.core.rules import RuleSet
+    from solver.core.solution import Solution
     from solver.identify.profile import Profile
 
 
@@ -84,6 +92,7 @@ def register(subparsers: Any) -> None:
         metavar="TEAM.yaml",
         help="team selection: also give each combination its UI configuration",
     )
+    add_set(parser, per_robot=False)
     add_rules(
         parser,
         "rule set whose kinematic types, sensor types and motion controls the "
@@ -134,7 +143,7 @@ def load_rules_and_profile(rules: str | None, profile: str | None) -> tuple[Rule
 
 def run(args: argparse.Namespace) -> int:
     from solver.core.solution import solve
-    from solver.identify.combinations import combinations
+    from solver.identify.combinations import combinations, missing
     from solver.identify.identification import identify
     from solver.identify.render import identification_data, render_identification
     from solver.reporting.render import dumps
@@ -163,9 +172,27 @@ def run(args: argparse.Namespace) -> int:
 
         raise InputError(result.warnings)
     solution = solve(team) if team else None
-    found = combinations(result, solution, profile) if solution else ()
+    given = given_values(args.set, solution)
+    found = combinations(result, solution, profile, given) if solution else ()
+    lacking = missing(found, solution) if solution else ()
     if args.format == "json":
-        write(dumps(identification_data(result, found, solution, explain=args.explain)))
+        data = identification_data(result, found, solution, explain=args.explain, missing=lacking)
+        write(dumps(data))
     else:
-        write(render_identification(result, found, solution, explain=args.explain))
+        write(render_identification(result, found, solution, explain=args.explain, missing=lacking))
     return 0
+
+
+def given_values(pairs: list[str], solution: Solution | None) -> dict[str, str]:
+    """``--set NAME=VALUE`` pairs, checked against the team's rules (they need ``--team``)."""
+    from solver.errors import InputError
+    from solver.live.given import parse_fixed
+
+    if not pairs:
+        return {}
+    if solution is None:
+        raise InputError.at("--set", "values are given to a combination: --set needs --team")
+    fixed = parse_fixed(pairs, solution.rules)
+    if fixed.per_robot:
+        raise InputError.at("--set", "one robot here: give NAME=VALUE, without a /ROBOT: part")
+    return dict(fixed.everywhere)

@@ -6,7 +6,8 @@ import argparse
 import sys
 from typing import Any
 
-from solver.cli._common import add_profile, add_rules, load_team_argument, write
+from solver.cli._common import add_profile, add_rules, add_set, load_team_argument, write
+from solver.cli.identify import given_values
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
 
@@ -77,6 +78,7 @@ def register(subparsers: Any) -> None:
         "rules/presentation.yaml)",
     )
     add_profile(parser)
+    add_set(parser, per_robot=False)
     parser.add_argument(
         "--preview",
         action="store_true",
@@ -96,10 +98,18 @@ def run(args: argparse.Namespace) -> int:
         raise InputError.at("--preview", "previews are drawn from foxglove layouts only")
     if args.robot:
         return _robot(args)
-    if args.topics or args.bag or args.profile:
+    if args.topics or args.bag or args.profile or args.set:
         from solver.errors import InputError
 
-        given = "--topics" if args.topics else "--bag" if args.bag else "--profile"
+        given = (
+            "--topics"
+            if args.topics
+            else "--bag"
+            if args.bag
+            else "--profile"
+            if args.profile
+            else "--set"
+        )
         raise InputError.at(given, "needs --robot URDF")
     if args.team is None:
         from solver.errors import InputError
@@ -168,7 +178,8 @@ def _robot(args: argparse.Namespace) -> int:
             what="; the robot's name makes its namespace: give one with --namespace /NAME",
         )
     # The robot's first control mode and sensor type: the combination it starts in.
-    assignment = combinations(identification, solution, profile)[0].assignment
+    given = given_values(args.set, solution)
+    assignment = combinations(identification, solution, profile, given)[0].assignment
     presentation = load_presentation(
         args.presentation, solution.rules if args.presentation else None
     )

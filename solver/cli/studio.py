@@ -124,12 +124,15 @@ def _studio(args: argparse.Namespace) -> Any:
 
         start = team_path(args.start)
         shown = args.start if str(start) == args.start else (shipped_name(start) or str(start))
+    from solver.identify.profile import load_profile
+
+    profile = load_profile(args.profile) if args.profile else None
     workspace = Workspace(start=start, start_display=shown, folders=[Path(f) for f in args.fleet])
-    live = _live(args, workspace) if args.ros2 or args.master else None
-    return Studio(workspace, live)
+    live = _live(args, workspace, profile) if args.ros2 or args.master else None
+    return Studio(workspace, live, profile)
 
 
-def _live(args: argparse.Namespace, workspace: Any) -> Any:
+def _live(args: argparse.Namespace, workspace: Any, chosen: Any) -> Any:
     """The live feed: a watcher on the graph for the team given at start (every type of its
     rule set when a rule set, or nothing, was given)."""
     from solver.core.solution import solve
@@ -140,7 +143,7 @@ def _live(args: argparse.Namespace, workspace: Any) -> Any:
 
     team = workspace.start_team or full_team(workspace.source(None).rules)
     solution = solve(team)
-    profile = load_profile(args.profile)
+    profile = chosen if chosen is not None else load_profile()
     if args.ros2:
         from solver.cli.watch import ros2_domain
         from solver.live.sources.ros2 import DdsGraph

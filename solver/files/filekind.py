@@ -7,7 +7,8 @@ rule set's fields as unknown team fields. Decided by the top-level keys, in this
 
 1. ``team:`` -> a team (whatever else it has: the team reader reports the rest);
    ``profile: presentation`` -> a presentation profile (``teleop-ui layouts --presentation``);
-2. ``characteristics:`` -> an identification profile when it also has a profile-only section
+2. ``extends:`` -> an identification profile on top of another (``extends: shipped``);
+   ``characteristics:`` -> an identification profile when it also has a profile-only section
    (``patterns``, ``structures``, ...), else a rule set;
 3. ``rules:`` -> a team whose ``team:`` is missing (the team reader says so);
 4. anything else -> ``None``: the caller says what it expected.
@@ -55,7 +56,7 @@ _WHAT: dict[FileKind, str] = {
 _WHY: dict[FileKind, str] = {
     "team": "it has 'team:'",
     "rules": "it has 'characteristics:' and no 'team:'",
-    "profile": "it has 'characteristics:' and profile sections such as 'patterns:'",
+    "profile": "it has 'extends:', or 'characteristics:' and profile sections such as 'patterns:'",
     "presentation": "it has 'profile: presentation'",
 }
 
@@ -88,6 +89,8 @@ def file_kind(document: Document) -> FileKind | None:
         return "team"
     if data.get("profile") == "presentation":
         return "presentation"
+    if "extends" in keys:
+        return "profile"
     if "characteristics" in keys:
         return "profile" if keys & PROFILE_SECTIONS else "rules"
     if "rules" in keys:

@@ -15,6 +15,7 @@ Modules, one concept each:
                          text in a confined child process (``compiler``, ``packages``,
                          ``child``, ``confine``)
 ``profile``              the identification profile (patterns, rules, mappings)
+``compose``              a profile that ``extends`` another (``extends: shipped``)
 ``body``                 body parts from the tree: wheels, rotors, limbs, grippers
 ``classifier``           structure + kinematic type + confidence from the parts
 ``sensors``              sensors from URDF, merged, mapped to sensor types

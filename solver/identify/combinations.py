@@ -6,22 +6,26 @@ combination is (kinematic type, motion control, sensor type, sensor count) with 
 the robot's number of sensors that have a presentation, and is given its UI configuration by
 :func:`solver.assign` against a solved team, or the default configuration with the reasons (a
 kinematic type the rule set or team lacks, a control outside the selection, too many sensors).
-The characteristics filled are the profile's roles; any other characteristic of the rule set is
-left unknown, which :func:`solver.assign` reports.
+The characteristics filled are the rule set's ``team_key`` (the kinematic type) and the
+profile's roles (:data:`~solver.identify.profile.ROLES`: which of the rule set's characteristics
+receives the motion control, the sensor type and the sensor count); ``given`` values (``--set``,
+or a robot's own on a live graph) replace or complete them. Any other characteristic is left
+unknown, which :func:`solver.assign` reports and :func:`missing` lists.
 
 Not here: identification (:mod:`solver.identify.identification`).
 """
 
 from __future__ import annotations
 
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 from solver.core.assignment import Assignment, assign
 from solver.core.solution import Solution
 from solver.identify.identification import Identification
-from solver.identify.profile import Profile
+from solver.identify.profile import MOTION_CONTROL, SENSOR_COUNT, SENSOR_TYPE, Profile
 
-__all__ = ["Combination", "combinations"]
+__all__ = ["Combination", "combinations", "missing"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -31,20 +35,31 @@ class Combination:
 
 
 def combinations(
-    identification: Identification, solution: Solution, profile: Profile
+    identification: Identification,
+    solution: Solution,
+    profile: Profile,
+    given: Mapping[str, str] | None = None,
 ) -> tuple[Combination, ...]:
-    """One combination per motion control x sensor type (at least one, with what is known)."""
+    """One combination per motion control x sensor type (at least one, with what is known);
+    ``given`` (characteristic name -> value) replaces what identification found for those
+    characteristics and completes the others (a name the rules lack is an
+    :class:`~solver.errors.InputError`, as in :func:`solver.assign`)."""
     rules = solution.rules
+    given = dict(given or {})
     base: dict[str, str] = {
         rules.team_key: identification.kinematic_type or identification.structure
     }
-    control_name = profile.role("motion_control")
-    type_name = profile.role("sensor_type")
-    count_name = profile.role("sensor_count")
+    control_name = profile.role(MOTION_CONTROL)
+    type_name = profile.role(SENSOR_TYPE)
+    count_name = profile.role(SENSOR_COUNT)
     if count_name in rules.names and identification.sensor_count:
         base[count_name] = str(identification.sensor_count)
     controls: list[str | None] = [c.motion_control for c in identification.motion_controls]
     types: list[str | None] = list(identification.sensor_types)
+    if control_name in given:
+        controls = [None]
+    if type_name in given:
+        types = [None]
     found = []
     for control in controls or [None]:
         for sensor_type in types or [None]:
@@ -53,6 +68,13 @@ def combinations(
                 values[control_name] = control
             if sensor_type is not None and type_name in rules.names:
                 values[type_name] = sensor_type
+            values.update(given)
             ordered = tuple((name, values[name]) for name in rules.names if name in values)
-            found.append(Combination(ordered, assign(solution, dict(ordered))))
+            found.append(Combination(ordered, assign(solution, {**dict(ordered), **given})))
     return tuple(found)
+
+
+def missing(found: Sequence[Combination], solution: Solution) -> tuple[str, ...]:
+    """The rule set's characteristics no combination has a value for, in the rule set's order."""
+    known = {name for combination in found for name, _ in combination.values}
+    return tuple(name for name in solution.rules.names if name not in known)

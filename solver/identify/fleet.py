@@ -38,7 +38,7 @@ from solver.core.team import parse_team
 from solver.errors import InputError, SolverError
 from solver.files.yamlio import parse_document
 from solver.identify.identification import Identification, identify
-from solver.identify.profile import Profile
+from solver.identify.profile import MOTION_CONTROL, ROLES, SENSOR_COUNT, SENSOR_TYPE, Profile
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
 __all__ = [
@@ -194,7 +194,7 @@ def team_text(
     fleet: Fleet, rules: RuleSet, profile: Profile, *, name: str, rules_reference: str | None = None
 ) -> str:
     """A team selection YAML for the fleet (see the module docstring), checked to load."""
-    roles = {role: profile.role(role) for role in ("motion_control", "sensor_type", "sensor_count")}
+    roles = {role: profile.role(role) for role in ROLES}
     by_type: dict[str, list[FleetEntry]] = {}
     for entry in fleet.entries:
         ident = entry.identification
@@ -239,18 +239,18 @@ def _selection(entries: list[FleetEntry], rules: RuleSet, roles: dict[str, str])
     lines = [
         *_union(
             rules,
-            roles["motion_control"],
+            roles[MOTION_CONTROL],
             {c.motion_control for i in idents for c in i.motion_controls},
             "none identified",
         ),
         *_union(
             rules,
-            roles["sensor_type"],
+            roles[SENSOR_TYPE],
             {t for i in idents for t in i.sensor_types},
             "none with a presentation",
         ),
     ]
-    count = roles["sensor_count"]
+    count = roles[SENSOR_COUNT]
     if count in rules.names:
         characteristic = rules.characteristic(count)
         most = max(i.sensor_count for i in idents)

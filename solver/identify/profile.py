@@ -27,14 +27,19 @@ from solver.errors import Location, SolverError, did_you_mean
 from solver.files.filekind import PROFILE_SECTIONS
 from solver.files.reader import Reader, type_name
 from solver.files.yamlio import Document, PathPart, load_document
+from solver.identify.compose import compose
 from solver.untrusted import shown
 
 __all__ = [
     "CONTROL_SOURCES",
     "DIRECTIONS",
     "FEATURES",
+    "MOTION_CONTROL",
     "PARTS",
     "PLUGIN_PARTS",
+    "ROLES",
+    "SENSOR_COUNT",
+    "SENSOR_TYPE",
     "ControlRule",
     "FeatureCondition",
     "NavigationRule",
@@ -146,7 +151,12 @@ VELOCITY = "velocity"
 
 # The sections only a profile has are the ones that tell a profile from a rule set.
 _TOP_KEYS = {"name", "description", "characteristics", *PROFILE_SECTIONS}
-_CHARACTERISTIC_ROLES = ("motion_control", "sensor_type", "sensor_count")
+# The roles identification fills, each naming one of the rule set's characteristics (the
+# profile's ``characteristics:``); the kinematic type is always the rule set's team_key.
+MOTION_CONTROL = "motion_control"
+SENSOR_TYPE = "sensor_type"
+SENSOR_COUNT = "sensor_count"
+ROLES = (MOTION_CONTROL, SENSOR_TYPE, SENSOR_COUNT)
 _STRUCTURE_KEYS = {"name", "when", "expect", "kinematic_types", "confidence", "description"}
 _ELEMENT_KEYS = {"kind", "types", "match"}
 _PLUGIN_RULE_KEYS = {"kind", "match"}
@@ -390,12 +400,17 @@ def default_profile_path() -> Path:
 
 
 def load_profile(path: str | Path | None = None, *, display: str | None = None) -> Profile:
-    """Read a profile (default: the shipped one); :class:`ProfileError` lists every problem."""
+    """Read a profile (default: the shipped one); :class:`ProfileError` lists every problem.
+
+    A profile that ``extends`` another (``extends: shipped``) is read on top of it
+    (:mod:`solver.identify.compose`)."""
     document = load_document(default_profile_path() if path is None else path, display=display)
     return parse_profile(document)
 
 
 def parse_profile(document: Document) -> Profile:
+    """The profile in ``document`` (on top of the one it ``extends``, if it does)."""
+    document = compose(document, shipped=default_profile_path())
     reader = Reader(document)
     top = reader.mapping((), "identification profile")
     if not isinstance(document.data, dict):
@@ -466,10 +481,10 @@ def parse_profile(document: Document) -> Profile:
 
 def _roles(reader: Reader) -> tuple[tuple[str, str], ...]:
     spec = reader.mapping(("characteristics",), "characteristics (role -> rule-set name)")
-    reader.unknown_keys(("characteristics",), spec, _CHARACTERISTIC_ROLES, "role")
+    reader.unknown_keys(("characteristics",), spec, ROLES, "role")
     return tuple(
         (role, reader.string(("characteristics", role), f"characteristic for {role}"))
-        for role in _CHARACTERISTIC_ROLES
+        for role in ROLES
     )
 
 

@@ -7,10 +7,13 @@
      "sensors": [{"kind", "sensor_type", "count", "source"}],
      "motion_controls": [{"motion_control", "source"}],
      "combinations": [...],      # assignment JSON of `teleop-ui assign`, with --team
+     "missing": [...],           # with --team: characteristics nothing gave (only if some)
      "warnings": [{"file", "line", "message"}],   # flaws read past; only when there are some
      "decision": [...]}          # with explain: the structure rules tried, in order
 
-``fleet`` prints a list of these. Output is deterministic: declared orders, no timestamps.
+``fleet`` prints a list of these; a live graph's robot events carry :func:`summary_data`, the
+same fields in brief (``name`` for ``robot``; ``null`` and empty lists for a robot that could
+not be identified). Output is deterministic: declared orders, no timestamps.
 
 Not here: computing any of it.
 """
@@ -28,7 +31,37 @@ from solver.identify.identification import Identification
 from solver.reporting.render import text_table
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
-__all__ = ["identification_data", "render_identification"]
+__all__ = ["identification_data", "render_identification", "summary_data"]
+
+
+def summary_data(identification: Identification | None) -> dict[str, Any]:
+    """What a live robot event says of an identification (see the module docstring)."""
+    found = identification
+    if found is None:
+        scalars: dict[str, Any] = dict.fromkeys(
+            ("name", "structure", "kinematic_type", "confidence", "sensor_count")
+        )
+        return {**scalars, "sensors": [], "motion_controls": []}
+    return {
+        "name": found.robot,
+        "structure": found.structure,
+        "kinematic_type": found.kinematic_type,
+        "confidence": found.confidence,
+        "sensor_count": found.sensor_count,
+        "sensors": _sensors(found),
+        "motion_controls": _controls(found),
+    }
+
+
+def _sensors(found: Identification) -> list[dict[str, Any]]:
+    return [
+        {"kind": s.kind, "sensor_type": s.sensor_type, "count": s.count, "source": s.source}
+        for s in found.sensors
+    ]
+
+
+def _controls(found: Identification) -> list[dict[str, Any]]:
+    return [{"motion_control": c.motion_control, "source": c.source} for c in found.motion_controls]
 
 
 def identification_data(
@@ -37,6 +70,7 @@ def identification_data(
     solution: Solution | None = None,
     *,
     explain: bool = False,
+    missing: Sequence[str] = (),
 ) -> dict[str, Any]:
     data: dict[str, Any] = {
         "robot": identification.robot,
@@ -48,14 +82,8 @@ def identification_data(
         "roles": [
             {"joint": r.joint, "role": r.role, "evidence": r.evidence} for r in identification.roles
         ],
-        "sensors": [
-            {"kind": s.kind, "sensor_type": s.sensor_type, "count": s.count, "source": s.source}
-            for s in identification.sensors
-        ],
-        "motion_controls": [
-            {"motion_control": c.motion_control, "source": c.source}
-            for c in identification.motion_controls
-        ],
+        "sensors": _sensors(identification),
+        "motion_controls": _controls(identification),
         "combinations": []
         if solution is None
         else [assignment_data(solution, c.assignment) for c in combinations],
@@ -64,6 +92,8 @@ def identification_data(
         data["decision"] = list(identification.decision)
     if identification.notes:
         data["notes"] = list(identification.notes)
+    if missing:
+        data["missing"] = list(missing)
     if identification.warnings:
         data["warnings"] = [
             {"file": w.location.file, "line": w.location.line, "message": _message(w)}
@@ -82,8 +112,10 @@ def render_identification(
     solution: Solution | None = None,
     *,
     explain: bool = False,
+    missing: Sequence[str] = (),
 ) -> str:
-    """A readable report: reading, evidence, sensors, controls, configurations.
+    """A readable report: reading, evidence, sensors, controls, configurations; ``missing``:
+    the rule set's characteristics nothing gave a value, each said with how to give it.
 
     The robot's name and every name from its files are escaped and its name cut short
     (:func:`~solver.untrusted.shown`): no name starts a forged line.
@@ -139,7 +171,20 @@ def render_identification(
             else:
                 rows.append([str(assignment.number), values, ""])
         text += _indent(text_table(["configuration", "combination", "why default"], rows), "    ")
+    if solution is not None:
+        text += "".join(_missing_line(name, solution) for name in missing)
     return text
+
+
+def _missing_line(name: str, solution: Solution) -> str:
+    values = solution.rules.characteristic(name).values
+    listed = ", ".join(shown(str(value)) for value in values[:6]) + (
+        ", ..." if len(values) > 6 else ""
+    )
+    return (
+        f"  no {shown(name)}: identification does not give it; give it with --set "
+        f"{shown(name)}=VALUE ({listed})\n"
+    )
 
 
 def _indent(text: str, prefix: str = "  ") -> str:

@@ -23,7 +23,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
 from solver.core.rules import RuleSet
-from solver.identify.profile import Profile
+from solver.identify.profile import SENSOR_TYPE, Profile
 from solver.identify.readers.urdf import PluginTag, SensorTag, Urdf
 from solver.untrusted import shown
 
@@ -193,7 +193,7 @@ def _plugin_kind(plugin: PluginTag, profile: Profile) -> str | None:
 
 def merge(detections: Iterable[Detection], profile: Profile, rules: RuleSet) -> tuple[Sensor, ...]:
     """One :class:`Sensor` per (kind, sensor type), in order of first detection."""
-    sensor_types = _rule_values(rules, profile.role("sensor_type"))
+    sensor_types = _rule_values(rules, profile.role(SENSOR_TYPE))
     groups: dict[tuple[str, str | None], dict[str, list[Detection]]] = {}
     for detection in detections:
         mapping = profile.sensor_type_mapping(detection.kind)

@@ -41,6 +41,7 @@ from solver.studio.workspace import (
 )
 
 if TYPE_CHECKING:
+    from solver.identify.profile import Profile
     from solver.studio.live import LiveFeed
 
 __all__ = [
@@ -126,11 +127,23 @@ def _whole(
 class Studio:
     """The studio's answers over one :class:`Workspace` (and a live feed when started so)."""
 
-    def __init__(self, workspace: Workspace, live: LiveFeed | None = None) -> None:
+    def __init__(
+        self, workspace: Workspace, live: LiveFeed | None = None, profile: Profile | None = None
+    ) -> None:
         self.workspace = workspace
         self.live = live
+        # The identification profile of Fleet (``studio --profile``; the shipped one if none).
+        self._profile = profile
         # matplotlib's rc settings are global: one report's charts are drawn at a time.
         self._drawing = threading.Lock()
+
+    def profile(self) -> Profile:
+        """The identification profile given at start, else the shipped one."""
+        if self._profile is None:
+            from solver.identify import load_profile
+
+            self._profile = load_profile()
+        return self._profile
 
     # -- the selection -----------------------------------------------------------------------
 
@@ -407,11 +420,11 @@ class Studio:
         return self._identify(folders[index], pairs, shown=None)
 
     def _identify(self, folder: Any, pairs: Pairs, *, shown: str | None) -> dict[str, Any]:
-        from solver.identify import identification_data, identify_fleet, load_profile
+        from solver.identify import identification_data, identify_fleet
         from solver.identify.combinations import combinations
 
         chosen = self.chosen(pairs)
-        profile = load_profile()
+        profile = self.profile()
         fleet = identify_fleet(folder, rules=chosen.rules, profile=profile, trust_xacro=False)
         solution = None if chosen.team is None else self.solution(chosen, listed=True)
         prefix = f"{folder}/"
@@ -456,7 +469,7 @@ class Studio:
         selects it in the page."""
         from solver.core.team import parse_team
         from solver.files.yamlio import parse_document
-        from solver.identify import load_profile, team_text
+        from solver.identify import team_text
 
         fleet = self.workspace.fleets.get(fleet_id)
         if fleet is None:
@@ -465,7 +478,7 @@ class Studio:
             )
         source = self.workspace.source(_first(pairs, "rules"))
         name = _first(pairs, "name") or "fleet"
-        text = team_text(fleet, source.rules, load_profile(), name=name)
+        text = team_text(fleet, source.rules, self.profile(), name=name)
         team = parse_team(parse_document(text, "<fleet team>"), source.rules)
         return {"yaml": text, "query": query_of(team, source.id)}
 

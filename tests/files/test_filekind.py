@@ -112,7 +112,7 @@ def test_an_unknown_shipped_team_name_lists_the_shipped_teams() -> None:
         (
             "identification.yaml",
             "an identification profile",
-            "it has 'characteristics:' and profile sections such as 'patterns:'",
+            "it has 'extends:', or 'characteristics:' and profile sections such as 'patterns:'",
         ),
         ("presentation.yaml", "a presentation profile", "it has 'profile: presentation'"),
     ],
