@@ -55,6 +55,7 @@ Every command from Python (docs/python-api.md has worked examples):
 ``check FILES``                 ``check_files(paths)``
 ``identify``, ``fleet``         ``identify_urdf(text, ...)``, ``identify_fleet(...)``
 ``watch``, ``assign --master``  ``Watcher``, ``assign_from_master(...)``
+``demo ros2``                   ``solver.live.demo.emulated_fleet(domain)``
 ``batch``                       ``find_teams``, ``plan``, ``run_batch``, ``write_summary``
 ``layouts``                     ``solver.layouts.writer.write_layouts(solution, profile, dir)``
 ``export --format uvl``         ``solver.reporting.uvl.team_to_uvl(team)``

@@ -25,6 +25,7 @@ EXTRAS: dict[str, str] = {
     "lxml": "ros",
     "rosbags": "ros",
     "xacro": "xacro",
+    "cyclonedds": "ros2",
     "starlette": "studio",
     "uvicorn": "studio",
     "jinja2": "studio",

@@ -25,7 +25,6 @@ KNOWN: dict[tuple[str, str], int] = {
     ("solver/core/rules.py", "_read_arrangement"): 25,
     ("solver/engines/structure.py", "_partition_product"): 21,
     ("solver/engines/structure.py", "_blocks"): 29,
-    ("solver/live/sources/ros2.py", "DdsGraph.observe"): 25,
 }
 
 

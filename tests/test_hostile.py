@@ -919,13 +919,14 @@ COMMAND_LINES = {
     "check": ["check", "{rules}", "{team}", "--rules", "{rules}", "--disable", "unknown-reference"],
     "identify": [
         *["identify", "{urdf}", "--topics", "{topics}", "--team", "{team}"],
-        *["--profile", "{profile}", "--arg", "a:=b", "--package-path", "."],
+        *["--profile", "{profile}", "--arg", "a:=b", "--package-path", ".", "--set"],
+        "sensor_count=1",
     ],
     "fleet": ["fleet", "{robots}", "-o", "fleet.yaml", "--name", "n", "--rules", "{rules}"],
     "layouts": ["layouts", "{team}", "-o", "layouts", "--presentation", "{presentation}"],
     "layouts --robot": [
         *["layouts", "--robot", "{urdf}", "--team", "{team}", "--topics", "{topics}"],
-        *["-o", "robot.json", "--profile", "{profile}"],
+        *["-o", "robot.json", "--profile", "{profile}", "--set", "sensor_count=1"],
     ],
     "export": ["export", "{team}", "--rules", "{rules}"],
     "report": ["report", "{team}", "-o", "r.html", "--rules", "{rules}"],
@@ -1049,10 +1050,11 @@ def test_a_name_longer_than_the_system_allows_is_a_located_error(
         assert code == 0  # a folder to look for packages in: one that cannot be holds none
         return
     assert code == 2, error
-    # Located: at the name (escaped, cut), at the arguments or the generated team (--name).
+    # Located: at the name (escaped, cut), at the arguments or the generated team (--name), at
+    # the option (--set NAME=VALUE).
     named = shown(line[position], limit=SHOWN_FILE_NAME_CHARS)
     usage = f"teleop-ui {COMMAND_LINES[command][0]}: error: "
-    places = (named, usage, "<arguments>: ", "<fleet team>:2:7: name:")
+    places = (named, usage, "<arguments>: ", "<fleet team>:2:7: name:", f"{line[position - 1]}: ")
     assert error.splitlines()[-1].startswith(places), error
 
 

@@ -13,6 +13,7 @@ from solver.cli._common import (
     add_format,
     add_master_options,
     add_profile,
+    add_set,
     add_team,
     load_team_argument,
     seconds,
@@ -23,7 +24,7 @@ from solver.untrusted import shown
 if TYPE_CHECKING:
     from solver.core.solution import Solution
     from solver.live.events import Event
-    from solver.live.graph import GraphSource
+    from solver.live.graph import GraphSource, MasterError
     from solver.live.layouts import LiveLayouts
     from solver.live.watcher import Watcher
 
@@ -33,12 +34,13 @@ def register(subparsers: Any) -> None:
         "watch",
         help="follow a running ROS master: robots, their UI configurations, and the "
         "operator's active selection, as events",
-        description="Follow a ROS 1 master: every namespace with a robot_description is a robot, "
-        "identified from its description and topics; print an event (JSON lines, "
-        "or text) whenever a robot is added, changed or removed, the operator's "
-        "selection (/teleop_ui/active_robot, /teleop_ui/active_motion_control, "
-        "/teleop_ui/active_sensor_type) changes, or the master is lost and back. "
-        "The active selection's UI configuration is written to "
+        description="Follow a ROS 1 master (or a ROS 2 graph, --ros2): every namespace with a "
+        "robot_description is a robot, identified from its description and topics; print an "
+        "event (JSON lines, or text) whenever a robot is added, changed or removed, the "
+        "operator's selection (/teleop_ui/active_robot, /teleop_ui/active_<characteristic> "
+        "for any characteristic of the rule set) changes, something on the graph is ignored "
+        "(a warning), another watcher answers differently (a rival), or the master is lost and "
+        "back. The active selection's UI configuration is written to "
         "/teleop_ui/ui_configuration.",
     )
     add_master_options(parser, required_help="default: $ROS_MASTER_URI")
@@ -74,7 +76,27 @@ def register(subparsers: Any) -> None:
     parser.add_argument(
         "--wait",
         action="store_true",
-        help="wait for the master to come up instead of failing (exit 2)",
+        help="wait for the master to come up instead of failing (exit 2); with --ros2, wait "
+        "for the first robot (a DDS domain is never down)",
+    )
+    add_set(parser)
+    rivals = parser.add_mutually_exclusive_group()
+    rivals.add_argument(
+        "--yield",
+        dest="policy",
+        action="store_const",
+        const="yield",
+        default="yield",
+        help="leave the answer of a running rival watcher (another team, rules or values) in "
+        "place, saying so in the selection's notes (the default)",
+    )
+    rivals.add_argument(
+        "--insist",
+        dest="policy",
+        action="store_const",
+        const="insist",
+        help="write this watcher's answer over a yielding rival's (never over another "
+        "insisting one's)",
     )
     add_format(parser, ("json", "text"), default="json")
     # --layouts (issues 17, 26; solver.live.layouts): each robot's layouts, named in events.
@@ -91,14 +113,24 @@ def register(subparsers: Any) -> None:
 def run(args: argparse.Namespace) -> int:
     from solver.core.solution import solve
     from solver.identify.profile import load_profile
+    from solver.live.given import parse_fixed
     from solver.live.watcher import Watcher
 
     team = load_team_argument(args.team, args.rules)
     profile = load_profile(args.profile)
     solution = solve(team)
+    fixed = parse_fixed(args.set, solution.rules)
     source = open_graph(graph_address(args), timeout=args.timeout, push=not args.once)
     with (
-        Watcher(source.name, solution, profile, interval=args.interval, source=source) as watcher,
+        Watcher(
+            source.name,
+            solution,
+            profile,
+            interval=args.interval,
+            source=source,
+            fixed=fixed,
+            policy=args.policy,
+        ) as watcher,
         _stopped_by_sigterm(watcher),
     ):
         return _watch(watcher, args, solution)
@@ -168,40 +200,41 @@ def _watch(watcher: Watcher, args: argparse.Namespace, solution: Solution) -> in
 
 
 def _follow(watcher: Watcher, args: argparse.Namespace, solution: Solution) -> None:
-    """One loop for every graph: wait for it (``--wait``) or check it answers, then a
-    snapshot (``--once``, once discovery settled) or events until stopped."""
-    from solver.live.graph import MasterError, MasterUnreachable
-
-    master = watcher.master
-
-    def waiting(error: MasterError) -> None:
-        print(
-            f"waiting for the ROS master at {shown(master)} "
-            f"({shown(error.faults[0].message, limit=None)})",
-            file=sys.stderr,
-            flush=True,
+    """One loop for every graph: wait for it (``--wait``: a master to answer, or on DDS a first
+    robot) or check it answers, then a snapshot (``--once``) or events until stopped."""
+    if args.wait and args.ros2:
+        watcher.wait_for_robot(lambda: _waiting(f"a robot on {shown(watcher.master)}", None))
+    elif args.wait:
+        watcher.wait_for_master(
+            lambda error: _waiting(f"the ROS master at {shown(watcher.master)}", error)
         )
-
-    if args.wait:
-        watcher.wait_for_master(waiting)
     else:
-        try:
-            watcher.source.get_pid()
-        except MasterUnreachable as error:
-            if watcher.stopped:
-                raise
-            raise MasterUnreachable.at(
-                master,
-                f"{shown(error.faults[0].message, limit=None)}: is roscore running there? "
-                "(--wait waits for it)",
-            ) from None
-    if args.once and not watcher.stopped:
-        # Discovery on DDS takes a moment: see what is there first (SIGTERM ends it).
-        watcher.source.settle(lambda: watcher.stopped)
+        _check_answers(watcher)
     events = [] if watcher.stopped else watcher.snapshot() if args.once else watcher.events()
     layouts = _layouts(args, solution)
     for event in events:
         write(_render(event, solution, args, layouts))
+
+
+def _waiting(what: str, error: MasterError | None) -> None:
+    why = "" if error is None else f" ({shown(error.faults[0].message, limit=None)})"
+    print(f"waiting for {what}{why}", file=sys.stderr, flush=True)
+
+
+def _check_answers(watcher: Watcher) -> None:
+    """A master that does not answer is exit 2 at once (``--wait`` waits for it)."""
+    from solver.live.graph import MasterUnreachable
+
+    try:
+        watcher.source.get_pid()
+    except MasterUnreachable as error:
+        if watcher.stopped:
+            raise
+        raise MasterUnreachable.at(
+            watcher.master,
+            f"{shown(error.faults[0].message, limit=None)}: is roscore running there? "
+            "(--wait waits for it)",
+        ) from None
 
 
 def _layouts(args: argparse.Namespace, solution: Solution) -> LiveLayouts | None:

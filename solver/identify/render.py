@@ -158,22 +158,26 @@ def render_identification(
     else:
         text += "  no motion controls found (give --topics or --bag)\n\n"
     if solution is not None:
-        team = shown(solution.team.name, limit=None, quoted=True)
-        text += f"  UI configurations in team {team}:\n"
-        rows = []
-        for combination in combinations:
-            values = ", ".join(value for _, value in combination.values)
-            assignment = combination.assignment
-            if assignment.is_default:
-                rows.append(
-                    [f"{assignment.number} (default)", values, "; ".join(assignment.reasons)]
-                )
-            else:
-                rows.append([str(assignment.number), values, ""])
-        text += _indent(text_table(["configuration", "combination", "why default"], rows), "    ")
-    if solution is not None:
-        text += "".join(_missing_line(name, solution) for name in missing)
+        text += _configurations(combinations, solution, missing)
     return text
+
+
+def _configurations(
+    combinations: Sequence[Combination], solution: Solution, missing: Sequence[str]
+) -> str:
+    """The configuration of each combination in the team, and what nothing gave."""
+    team = shown(solution.team.name, limit=None, quoted=True)
+    text = f"  UI configurations in team {team}:\n"
+    rows = []
+    for combination in combinations:
+        values = ", ".join(value for _, value in combination.values)
+        assignment = combination.assignment
+        if assignment.is_default:
+            rows.append([f"{assignment.number} (default)", values, "; ".join(assignment.reasons)])
+        else:
+            rows.append([str(assignment.number), values, ""])
+    text += _indent(text_table(["configuration", "combination", "why default"], rows), "    ")
+    return text + "".join(_missing_line(name, solution) for name in missing)
 
 
 def _missing_line(name: str, solution: Solution) -> str:

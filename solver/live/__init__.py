@@ -15,13 +15,19 @@ Modules, one concept each:
                        over XML-RPC: ``rpc``, ``master``, ``node``, ``descriptions``,
                        ``source``), ``ros2`` (DDS, Cyclone DDS)
 ``values``             bounds on values from a graph (JSON, selection), echoes
-``discovery``          robots (``robot_description`` namespaces) and their topics
+``discovery``          robots (``robot_description`` namespaces), their topics and
+                       their own values' keys (``<ns>/teleop_ui/<characteristic>``)
+``given``              where a characteristic's value comes from beside
+                       identification (the robot's own, ``--set``), what is missing
 ``robot``              one robot identified, with its combinations' configurations
 ``selection``          ``/teleop_ui/active_*`` -> one configuration, written back
 ``events``             the event kinds and their JSON schema
+``rivals``             other watchers on the graph: announcements, ``rival`` events,
+                       who writes the answer (``--yield`` / ``--insist``)
 ``watcher``            the state machine on any source: polls, loss, backoff, resync
 ``query``              one question on any source: ``assign --master`` / ``--ros2``
 ``render``             events as JSON lines or text; ``assign --master`` output
+``demo``               an emulated ROS 2 fleet and operator (``teleop-ui demo ros2``)
 =====================  ==========================================================
 
 Identification is :mod:`solver.identify`'s (cached by content); configurations are

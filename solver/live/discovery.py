@@ -17,6 +17,13 @@ namespace are among them, only those nodes count (a teleop node at the root publ
 serving every robot), both sides count and the topic is given once per direction.
 Identification then reads sensors from what is published and commands from what is subscribed.
 
+*The robot's own values.* A parameter (ROS 1) or a ``std_msgs/String`` topic (ROS 2)
+``<ns>/teleop_ui/<characteristic>`` gives the robot ``<ns>`` a value of that characteristic
+(``/uav1/teleop_ui/comm_link: LTE``); :attr:`RobotSource.value_keys` lists every such name found,
+known to the rules or not (the watcher says which it does not know). Under the root robot's
+``/teleop_ui`` the operator's names (``active_*``) and the watchers' (``ui_configuration``,
+``watchers``) are not the robot's.
+
 *Relevance.* Topics whose message type no rule of the identification profile reads (``tf``,
 ``rosout``, diagnostics) are left out before identification: their coming and going changes
 nothing, and leaving them out keeps the cached identification valid.
@@ -35,6 +42,7 @@ from solver.ros.names import Topic, normalise_type
 
 __all__ = [
     "DESCRIPTION",
+    "ROBOT_VALUES",
     "SEMANTIC",
     "RobotSource",
     "description_key",
@@ -46,17 +54,23 @@ __all__ = [
 
 DESCRIPTION = "robot_description"
 SEMANTIC = "robot_description_semantic"
+# A robot's own values are under <ns>/teleop_ui/<characteristic>.
+ROBOT_VALUES = "teleop_ui"
+# Names under /teleop_ui that are the operator's or the watchers', not the root robot's.
+_NOT_VALUES = ("active_", "ui_configuration", "watchers")
 _ANY_TYPE = "*"
 
 
 @dataclass(frozen=True, slots=True)
 class RobotSource:
-    """What the master holds about one robot: its namespace, parameter keys and topics."""
+    """What the master holds about one robot: its namespace, parameter keys and topics, and
+    its own values' keys (characteristic name, key), sorted by name."""
 
     namespace: str
     description_key: str
     semantic_key: str | None
     topics: tuple[Topic, ...]
+    value_keys: tuple[tuple[str, str], ...] = ()
 
 
 def normalise_namespace(text: str) -> str:
@@ -149,11 +163,34 @@ def robot_topics(
     return {namespace: tuple(topics) for namespace, topics in found.items()}
 
 
+def robot_value_keys(
+    namespaces: Iterable[str], param_names: Iterable[str]
+) -> dict[str, tuple[tuple[str, str], ...]]:
+    """Each robot's own values: (characteristic name, key) for every ``<ns>/teleop_ui/<name>``
+    (a name with children is one value: the watcher says it is not text)."""
+    known = frozenset(namespaces)
+    found: dict[str, dict[str, str]] = {namespace: {} for namespace in known}
+    for name in param_names:
+        parts = [part for part in name.split("/") if part]
+        for depth in range(len(parts) - 1):
+            if parts[depth] != ROBOT_VALUES:
+                continue
+            namespace = "/" + "/".join(parts[:depth])
+            value = parts[depth + 1]
+            if namespace not in known or (namespace == "/" and value.startswith(_NOT_VALUES)):
+                continue
+            found[namespace].setdefault(
+                value, description_key(namespace, f"{ROBOT_VALUES}/{value}")
+            )
+    return {namespace: tuple(sorted(keys.items())) for namespace, keys in found.items()}
+
+
 def discover(observation: Observation, profile: Profile) -> tuple[RobotSource, ...]:
     """Every robot on the master, in namespace order."""
     namespaces = robot_namespaces(observation.param_names)
     names = set(observation.param_names)
     topics = robot_topics(namespaces, observation, profile)
+    values = robot_value_keys(namespaces, observation.param_names)
     return tuple(
         RobotSource(
             namespace,
@@ -162,6 +199,7 @@ def discover(observation: Observation, profile: Profile) -> tuple[RobotSource, .
             if description_key(namespace, SEMANTIC) in names
             else None,
             topics[namespace],
+            values[namespace],
         )
         for namespace in namespaces
     )

@@ -10,9 +10,18 @@ its kind:
                      ``changed``, the names of the fields that differ
 ``robot_removed``    its ``robot_description`` is gone: ``robot``
 ``selection_changed`` the operator's selection or its answer (reasons and notes
-                     included) changed: ``robot``, ``motion_control``, ``sensor_type``
-                     (as asked, ``null`` when not set), ``assignment`` (``teleop-ui
-                     assign``'s JSON, ``null`` with no active robot), ``notes``
+                     included) changed: ``robot``, ``active`` (every characteristic
+                     of the rule set -> the value asked for, ``null`` when not set),
+                     ``assignment`` (``teleop-ui assign``'s JSON, ``null`` with no
+                     active robot), ``notes``
+``warning``          something on the graph is ignored, located: ``where`` (the
+                     parameter or topic), ``message`` (an ``active_*`` name or a
+                     robot's value the rules know no characteristic of, a robot's
+                     value that is not text)
+``rival``            another watcher with a different team, rules or values answers
+                     on the same graph: ``watcher``, ``team`` (theirs), ``own_team``,
+                     ``policy`` (``yield`` or ``insist``: what this watcher does)
+``rival_gone``       that watcher stopped: ``watcher``
 ``master_lost``      the master stopped answering (or restarted): ``master``, ``error``
 ``master_back``      it answers again; a full resynchronisation follows
 ``synced``           the robots below are every robot on the master: ``master``, ``robots``
@@ -20,15 +29,19 @@ its kind:
 
 Robot fields: ``robot`` (the namespace), ``name`` (the URDF's), ``structure``,
 ``kinematic_type`` (``null`` when the rule set has none for it), ``confidence``,
-``sensor_count``, ``sensors``, ``motion_controls``, ``combinations`` (each
-``{"combination", "configuration", "default", "reasons"}``), ``error`` (``null``, or why the
-robot could not be identified; the scalar identification fields are then ``null``, and
-``sensors``, ``motion_controls`` and ``combinations`` empty lists), and ``topics`` (the
-robot's topics that identification reads, each ``{"topic", "type", "direction"}`` with its
-full name: a renamed camera topic is a ``robot_changed``).
+``sensor_count``, ``sensors``, ``motion_controls`` (identification's fields:
+:func:`solver.identify.render.summary_data`), ``given`` (characteristic -> ``{"value",
+"source"}``: the robot's own values and ``--set``), ``combinations`` (each ``{"combination",
+"configuration", "default", "reasons"}``), ``missing`` (each ``{"characteristic", "how"}``: what
+no source gives, and how to give it), ``error`` (``null``, or why the robot could not be
+identified; the scalar identification fields are then ``null``, and ``sensors``,
+``motion_controls`` and ``combinations`` empty lists), and ``topics`` (the robot's topics that
+identification reads, each ``{"topic", "type", "direction"}`` with its full name: a renamed
+camera topic is a ``robot_changed``).
 
-A run starts with one ``robot_added`` per robot, a ``selection_changed`` if a robot is active
-(or a ``/teleop_ui`` parameter has a note), and ``synced``. After ``master_back`` the same
+A run starts with one ``robot_added`` per robot, the ``warning`` and ``rival`` events that hold,
+a ``selection_changed`` if a robot is active (or a ``/teleop_ui`` parameter has a note), and
+``synced``. After ``master_back`` the same
 sequence follows again: the watcher starts over, so a consumer drops what it knew at
 ``master_lost`` and rebuilds from the events that follow.
 
@@ -46,8 +59,11 @@ from solver.live.selection import ActiveSelection, Request, selection_data
 
 __all__ = [
     "Event",
+    "GraphWarning",
     "MasterBack",
     "MasterLost",
+    "Rival",
+    "RivalGone",
     "RobotAdded",
     "RobotChanged",
     "RobotRemoved",
@@ -90,6 +106,28 @@ class SelectionChanged(Event):
 
 
 @dataclass(frozen=True, slots=True)
+class GraphWarning(Event):
+    where: str
+    message: str
+    kind: ClassVar[str] = "warning"
+
+
+@dataclass(frozen=True, slots=True)
+class Rival(Event):
+    watcher: str
+    team: str | None
+    own_team: str
+    policy: str
+    kind: ClassVar[str] = "rival"
+
+
+@dataclass(frozen=True, slots=True)
+class RivalGone(Event):
+    watcher: str
+    kind: ClassVar[str] = "rival_gone"
+
+
+@dataclass(frozen=True, slots=True)
 class MasterLost(Event):
     master: str
     error: str
@@ -121,6 +159,14 @@ def event_data(event: Event, solution: Solution) -> dict[str, Any]:
         data["robot"] = event.namespace
     elif isinstance(event, SelectionChanged):
         data.update(selection_data(event.selection, event.request, solution))
+    elif isinstance(event, GraphWarning):
+        data.update(where=event.where, message=event.message)
+    elif isinstance(event, Rival):
+        data.update(
+            watcher=event.watcher, team=event.team, own_team=event.own_team, policy=event.policy
+        )
+    elif isinstance(event, RivalGone):
+        data["watcher"] = event.watcher
     elif isinstance(event, MasterLost):
         data.update(master=event.master, error=event.error)
     elif isinstance(event, MasterBack):

@@ -27,6 +27,7 @@ from typing import Any, Final, Protocol
 from solver.errors import SolverError
 
 __all__ = [
+    "ANNOUNCEMENTS",
     "MAX_DEPTH",
     "MISSING",
     "TOO_DEEP",
@@ -39,6 +40,8 @@ __all__ = [
 
 # Values from a graph are built at most this many arrays, structs or JSON levels deep.
 MAX_DEPTH: Final = 64
+# Watchers announce themselves under /teleop_ui/<this> (solver.live.rivals).
+ANNOUNCEMENTS: Final = "watchers"
 
 
 class _Missing(enum.Enum):
@@ -140,6 +143,12 @@ class GraphSource(Protocol):
     def set_param(self, key: str, value: Any) -> None: ...
 
     def delete_param(self, key: str) -> None: ...
+
+    def announce(self, value: dict[str, Any]) -> None:
+        """Say who the watcher is, under ``/teleop_ui/watchers`` (:mod:`solver.live.rivals`):
+        the observation's ``watchers`` param then holds it by its key; withdrawn at
+        :meth:`close`."""
+        ...
 
     def running_watcher(self, node: str) -> tuple[bool, str | None]:
         """Whether the watcher ``node``, which wrote the answer there, still runs; and, when

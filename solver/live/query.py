@@ -3,8 +3,9 @@
 :func:`assign_from_graph` is ``teleop-ui assign --master URL [--robot NS] [NAME=VALUE...]`` (and
 ``--ros2``), on any :class:`~solver.live.graph.GraphSource`: it looks at the graph once (after
 the source's discovery has settled), identifies the robot at ``NS`` (or the operator's active
-robot, with the active motion control and sensor type, when no ``--robot`` is given), fills in
-the values given on the command line, and chooses one combination as the watcher does
+robot, with the operator's active values, when no ``--robot`` is given), with the robot's own
+values (``<ns>/teleop_ui/<characteristic>``), fills in the values given on the command line
+(which win), and chooses one combination as the watcher does
 (:func:`solver.live.selection.choose`). It writes nothing to the graph, and reads only the asked
 robot's description. :func:`assign_from_master` is the same question to a ROS 1 master.
 
@@ -25,10 +26,11 @@ from solver.core.solution import Solution
 from solver.errors import InputError, did_you_mean
 from solver.identify.identification import IdentificationCache
 from solver.identify.profile import Profile
-from solver.live.discovery import discover, normalise_namespace
+from solver.live.discovery import RobotSource, discover, normalise_namespace
+from solver.live.given import ACTIVE_PREFIX, robot_values, unknown_name
 from solver.live.graph import MISSING, GraphSource
 from solver.live.robot import identify_robot
-from solver.live.selection import NAMESPACE, choose, read_request, requested_values
+from solver.live.selection import NAMESPACE, choose, read_request
 
 __all__ = ["LiveAssignment", "assign_from_graph", "assign_from_master"]
 
@@ -75,35 +77,31 @@ def assign_from_graph(
     values = dict(given or {})
     notes: list[str] = []
     if robot is None:
-        request = read_request(dict(observation.params))
+        request = read_request(dict(observation.params), solution.rules.names)
         if request.robot is None:
             raise InputError.at(
                 "<arguments>",
                 f"no --robot given and no {NAMESPACE}/active_robot set on {source.name}",
             )
         namespace = request.robot
-        asked, ignored = requested_values(request, solution, profile)
-        values = {**asked, **values}  # the command line's values win
-        notes += [*request.notes, *ignored]
+        values = {**dict(request.values), **values}  # the command line's values win
+        notes += request.notes
+        notes += [
+            f"{NAMESPACE}/{key}: {unknown_name(key[len(ACTIVE_PREFIX) :], solution.rules)}"
+            for key in request.unknown
+        ]
     else:
         namespace = normalise_namespace(robot)
     found = {s.namespace: s for s in discover(observation, profile)}
     robot_source = found.get(namespace)
-    if robot_source is not None:
-        source.descriptions.sync(
-            [robot_source.description_key]
-            + ([robot_source.semantic_key] if robot_source.semantic_key else [])
-        )
-    description = (
-        MISSING if robot_source is None else source.descriptions.get(robot_source.description_key)
-    )
-    if robot_source is None or description is MISSING:
-        raise InputError.at(
-            "<arguments>",
-            f"no robot {namespace} on {source.name} (no "
-            f"{namespace.rstrip('/')}/robot_description)"
-            f"{did_you_mean(namespace, found)}; robots there: {', '.join(found) or 'none'}",
-        )
+    if robot_source is None:
+        raise _no_robot(namespace, source, found)
+    source.descriptions.sync(_keys(robot_source, solution))
+    description = source.descriptions.get(robot_source.description_key)
+    if description is MISSING:
+        raise _no_robot(namespace, source, found)
+    own, warnings = robot_values(robot_source.value_keys, source.descriptions.get, solution.rules)
+    notes += [f"{key}: {message}" for key, message in warnings]
     live = identify_robot(
         robot_source,
         description,
@@ -113,6 +111,7 @@ def assign_from_graph(
         cache=IdentificationCache(),
         solution=solution,
         profile=profile,
+        given=own,
     )
     if live.identification is None:
         raise InputError.at(
@@ -120,6 +119,24 @@ def assign_from_graph(
         )
     assignment, chosen = choose(live, values, solution)
     return LiveAssignment(namespace, assignment, (*notes, *chosen))
+
+
+def _keys(robot: RobotSource, solution: Solution) -> list[str]:
+    """The keys to read of one robot: its description, SRDF and own values the rules know."""
+    return [
+        robot.description_key,
+        *([robot.semantic_key] if robot.semantic_key else []),
+        *(key for name, key in robot.value_keys if name in solution.rules.names),
+    ]
+
+
+def _no_robot(namespace: str, source: GraphSource, found: Mapping[str, object]) -> InputError:
+    return InputError.at(
+        "<arguments>",
+        f"no robot {namespace} on {source.name} (no "
+        f"{namespace.rstrip('/')}/robot_description)"
+        f"{did_you_mean(namespace, found)}; robots there: {', '.join(found) or 'none'}",
+    )
 
 
 def _one_line(error: str | None) -> str:

@@ -14,6 +14,7 @@ Not here: the schema itself (:mod:`solver.live.events`).
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 from solver.core.assignment import Assignment
@@ -21,8 +22,11 @@ from solver.core.contracts import assignment_data
 from solver.core.solution import Solution
 from solver.live.events import (
     Event,
+    GraphWarning,
     MasterBack,
     MasterLost,
+    Rival,
+    RivalGone,
     RobotAdded,
     RobotChanged,
     RobotRemoved,
@@ -82,54 +86,82 @@ def _robot_lines(label: str, robot: LiveRobot, changed: tuple[str, ...] = ()) ->
     )
     if changed:
         head += f"  [changed: {shown(', '.join(changed), limit=None)}]"
+    indent = " " * (_WIDTH + 2)
     return [
         head,
         *(
-            " " * (_WIDTH + 2) + f"UI configuration {_configuration(c.assignment)}  "
-            f"<- {_values(c.values)}"
+            f"{indent}given: {value.characteristic} {shown(value.value)} ({shown(value.source)})"
+            for value in robot.given
+        ),
+        *(
+            f"{indent}UI configuration {_configuration(c.assignment)}  <- {_values(c.values)}"
             for c in robot.combinations
+        ),
+        *(f"{indent}missing {name}: give it with {how}" for name, how in robot.missing),
+    ]
+
+
+def _label(label: str, text: str) -> list[str]:
+    return [f"{label:<{_WIDTH}}{text}"]
+
+
+def _selection_lines(event: SelectionChanged) -> list[str]:
+    request = event.request
+    if event.selection is None or event.selection.assignment is None:
+        return [
+            *_label("selection", "no active robot (set /teleop_ui/active_robot)"),
+            *(f"  note: {shown(n, limit=None)}" for n in request.notes),
+        ]
+    assignment = event.selection.assignment
+    asked = " ".join(
+        shown(v) for v in (request.robot, *(value for _, value in request.values)) if v is not None
+    )
+    return [
+        *_label(
+            "selection",
+            f"{asked} -> UI configuration {_configuration(assignment)}  "
+            f"<- {_values(assignment.given)}",
+        ),
+        *(
+            " " * (_WIDTH + 2) + f"note: {shown(note, limit=None)}"
+            for note in event.selection.notes
         ),
     ]
 
 
+def _rival_lines(event: Rival) -> list[str]:
+    team = shown(event.team) if event.team is not None else "(no team said)"
+    return _label(
+        "rival",
+        f"{shown(event.watcher)} answers for team {team}, this watcher for "
+        f"{shown(event.own_team)}; this one will {event.policy}",
+    )
+
+
+# The text of each event kind, one function each.
+_TEXT: dict[type[Event], Callable[[Any], list[str]]] = {
+    RobotAdded: lambda e: _robot_lines("robot added", e.robot),
+    RobotChanged: lambda e: _robot_lines("robot changed", e.robot, e.changed),
+    RobotRemoved: lambda e: _label("robot removed", shown(e.namespace)),
+    SelectionChanged: _selection_lines,
+    GraphWarning: lambda e: _label("warning", f"{shown(e.where)}: {shown(e.message, limit=None)}"),
+    Rival: _rival_lines,
+    RivalGone: lambda e: _label("rival gone", shown(e.watcher)),
+    MasterLost: lambda e: _label(
+        "master lost", f"{shown(e.master)}: {shown(e.error, limit=None)}; retrying"
+    ),
+    MasterBack: lambda e: _label("master back", f"{shown(e.master)}: resynchronising"),
+    Synced: lambda e: _label(
+        "synced",
+        f"{len(e.robots)} robot(s): {', '.join(shown(n) for n in e.robots) or 'none'}",
+    ),
+}
+
+
 def text_lines(event: Event) -> list[str]:
     """The text form of one event (no ``seq``: it is for the JSON stream)."""
-    if isinstance(event, RobotAdded):
-        return _robot_lines("robot added", event.robot)
-    if isinstance(event, RobotChanged):
-        return _robot_lines("robot changed", event.robot, event.changed)
-    if isinstance(event, RobotRemoved):
-        return [f"{'robot removed':<{_WIDTH}}{shown(event.namespace)}"]
-    if isinstance(event, SelectionChanged):
-        request = event.request
-        if event.selection is None or event.selection.assignment is None:
-            return [
-                f"{'selection':<{_WIDTH}}no active robot (set /teleop_ui/active_robot)",
-                *(f"  note: {shown(n, limit=None)}" for n in request.notes),
-            ]
-        assignment = event.selection.assignment
-        asked = " ".join(
-            shown(v)
-            for v in (request.robot, request.motion_control, request.sensor_type)
-            if v is not None
-        )
-        return [
-            f"{'selection':<{_WIDTH}}{asked} -> UI configuration "
-            f"{_configuration(assignment)}  <- {_values(assignment.given)}",
-            *(
-                " " * (_WIDTH + 2) + f"note: {shown(note, limit=None)}"
-                for note in event.selection.notes
-            ),
-        ]
-    if isinstance(event, MasterLost):
-        error = shown(event.error, limit=None)
-        return [f"{'master lost':<{_WIDTH}}{shown(event.master)}: {error}; retrying"]
-    if isinstance(event, MasterBack):
-        return [f"{'master back':<{_WIDTH}}{shown(event.master)}: resynchronising"]
-    if isinstance(event, Synced):
-        robots = ", ".join(shown(namespace) for namespace in event.robots) or "none"
-        return [f"{'synced':<{_WIDTH}}{len(event.robots)} robot(s): {robots}"]
-    return [event.kind]
+    render = _TEXT.get(type(event))
+    return render(event) if render is not None else [event.kind]
 
 
 def render_live_assignment(live: LiveAssignment, solution: Solution, fmt: str = "text") -> str:

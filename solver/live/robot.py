@@ -3,7 +3,10 @@
 :func:`identify_robot` hands a robot's ``robot_description`` text (and SRDF, and topic triples
 from :mod:`solver.live.discovery`) to :meth:`IdentificationCache.identify_urdf`, then gives
 every characteristic combination its UI configuration with
-:func:`solver.identify.combinations.combinations`. Identification is cached by content: a
+:func:`solver.identify.combinations.combinations`, with the values the robot is given beside
+identification (its own ``<ns>/teleop_ui/<characteristic>``, ``--set``:
+:mod:`solver.live.given`); a characteristic nothing gives is listed as missing, with how to give
+it. Identification is cached by content: a
 description seen before (the same robot after a master restart, or a second robot of the same
 model) is not parsed again. The cache is asked with a file name that does not depend on the
 namespace (``robot_description``) for that reason; errors are then re-located to the robot's
@@ -26,10 +29,12 @@ from typing import Any
 
 from solver.core.solution import Solution
 from solver.errors import SolverError
-from solver.identify.combinations import Combination, combinations
+from solver.identify.combinations import Combination, combinations, missing
 from solver.identify.identification import Identification, IdentificationCache, TopicSource
 from solver.identify.profile import Profile
+from solver.identify.render import summary_data
 from solver.live.discovery import RobotSource
+from solver.live.given import GivenValue, how_to_give
 from solver.live.graph import MISSING
 from solver.ros.names import Topic
 
@@ -42,14 +47,18 @@ _SOURCE = "topics"
 
 @dataclass(frozen=True, slots=True)
 class LiveRobot:
-    """A robot as the watcher reports it: identified, or the error that prevented it; and its
-    topics as discovery found them (names relative to the namespace, with their direction)."""
+    """A robot as the watcher reports it: identified, or the error that prevented it; its
+    topics as discovery found them (names relative to the namespace, with their direction); the
+    values it was given beside identification, and the characteristics it lacks with how to
+    give each."""
 
     namespace: str
     identification: Identification | None
     combinations: tuple[Combination, ...] = ()
     error: str | None = None
     topics: tuple[Topic, ...] = ()
+    given: tuple[GivenValue, ...] = ()
+    missing: tuple[tuple[str, str], ...] = ()
 
     def graph_topics(self) -> tuple[Topic, ...]:
         """The robot's topics with their full names on the graph (``/uav1/camera/image_raw``)."""
@@ -94,9 +103,11 @@ def identify_robot(
     cache: IdentificationCache,
     solution: Solution,
     profile: Profile,
+    given: tuple[GivenValue, ...] = (),
 ) -> LiveRobot:
     """The robot ``source`` describes, from its parameter values (``robot_description``,
-    ``robot_description_semantic`` or :data:`MISSING`) and topics; never raises for input."""
+    ``robot_description_semantic`` or :data:`MISSING`), topics and ``given`` values (names the
+    rules have; the later of two for one name wins); never raises for input."""
     namespace = source.namespace
     try:
         text = _text(description, source.description_key)
@@ -113,7 +124,8 @@ def identify_robot(
             profile=profile,
             file=_FILE,
         )
-        found = combinations(identification, solution, profile)
+        values = {value.characteristic: value.value for value in given}
+        found = combinations(identification, solution, profile, values)
     except _NotText as error:
         return LiveRobot(namespace, None, (), str(error), source.topics)
     except SolverError as error:
@@ -125,7 +137,13 @@ def identify_robot(
         # not stop the watcher. The robot is reported with what went wrong, the others go on.
         unexpected = unexpected_error(source.description_key, error)
         return LiveRobot(namespace, None, (), unexpected, source.topics)
-    return LiveRobot(namespace, identification, found, topics=source.topics)
+    lacking = tuple(
+        (name, how_to_give(name, namespace, solution.rules)) for name in missing(found, solution)
+    )
+    kept = tuple({value.characteristic: value for value in given}.values())
+    return LiveRobot(
+        namespace, identification, found, topics=source.topics, given=kept, missing=lacking
+    )
 
 
 def unexpected_error(key: str, error: BaseException) -> str:
@@ -135,26 +153,14 @@ def unexpected_error(key: str, error: BaseException) -> str:
 
 
 def robot_data(robot: LiveRobot) -> dict[str, Any]:
-    """The robot fields of a ``robot_added`` / ``robot_changed`` event (see the README)."""
-    found = robot.identification
+    """The robot fields of a ``robot_added`` / ``robot_changed`` event (see docs/live.md)."""
     return {
         "robot": robot.namespace,
-        "name": None if found is None else found.robot,
-        "structure": None if found is None else found.structure,
-        "kinematic_type": None if found is None else found.kinematic_type,
-        "confidence": None if found is None else found.confidence,
-        "sensor_count": None if found is None else found.sensor_count,
-        "sensors": []
-        if found is None
-        else [
-            {"kind": s.kind, "sensor_type": s.sensor_type, "count": s.count, "source": s.source}
-            for s in found.sensors
-        ],
-        "motion_controls": []
-        if found is None
-        else [
-            {"motion_control": c.motion_control, "source": c.source} for c in found.motion_controls
-        ],
+        **summary_data(robot.identification),
+        "given": {
+            value.characteristic: {"value": value.value, "source": value.source}
+            for value in robot.given
+        },
         "combinations": [
             {
                 "combination": dict(c.values),
@@ -164,6 +170,7 @@ def robot_data(robot: LiveRobot) -> dict[str, Any]:
             }
             for c in robot.combinations
         ],
+        "missing": [{"characteristic": name, "how": how} for name, how in robot.missing],
         "error": robot.error,
         "topics": [
             {"topic": topic.name, "type": topic.type, "direction": topic.direction}

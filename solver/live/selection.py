@@ -1,16 +1,18 @@
-"""The operator's active selection: which robot, control mode and sensor, and its configuration.
+"""The operator's active selection: which robot, and any characteristic's value; its configuration.
 
-The convention (documented in the README): an operator station sets
+The convention (docs/live.md): an operator station sets
 
 * ``/teleop_ui/active_robot``: the robot's namespace (``/uav1``; ``/`` for a robot described
   at the root),
-* ``/teleop_ui/active_motion_control``: a motion control of the rule set (``Flight``),
-* ``/teleop_ui/active_sensor_type`` (optional): a sensor type (``2D Camera``),
+* ``/teleop_ui/active_<characteristic>`` for any characteristic of the rule set it wants to
+  choose (``/teleop_ui/active_motion_control: Flight`` under the article's rules,
+  ``/teleop_ui/active_comm_link: LTE`` under a rule set with a ``comm_link``),
 
 and the watcher answers in ``/teleop_ui/ui_configuration`` with the JSON contract of
 ``teleop-ui assign`` (number, components or the default's reasons) plus the robot's namespace
 and the writing watcher's node name, so any ROS node can read the configuration with
-``rosparam get``.
+``rosparam get``. An ``active_*`` name the rules do not know is kept in
+:attr:`Request.unknown` (the watcher warns of it).
 
 :func:`choose` turns a robot's combinations and the values asked for into one combination:
 a value the robot has narrows its combinations to it; a value it does not have is used anyway
@@ -18,35 +20,35 @@ a value the robot has narrows its combinations to it; a value it does not have i
 rule set's value order is taken, with a note saying which and how to choose. The same choice
 serves ``teleop-ui assign --master --robot``.
 
-Not here: reading or writing the master (:mod:`solver.live.watcher`).
+Not here: reading or writing the master (:mod:`solver.live.watcher`), the robot's own and fixed
+values (:mod:`solver.live.given`).
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping
+from collections.abc import Collection, Iterable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
 from solver.core.assignment import Assignment, assign, check_names
 from solver.core.contracts import assignment_data
 from solver.core.solution import Solution
-from solver.identify.profile import Profile
 from solver.live.discovery import normalise_namespace
+from solver.live.given import ACTIVE_PREFIX
 from solver.live.graph import MISSING
 from solver.live.robot import LiveRobot
 from solver.live.values import selection_text
 from solver.untrusted import shown
 
 __all__ = [
+    "ACTIVE_ROBOT",
     "NAMESPACE",
-    "REQUEST_PARAMS",
     "RESULT_PARAM",
     "WRITER_KEY",
     "ActiveSelection",
     "Request",
     "choose",
     "read_request",
-    "requested_values",
     "select",
     "selection_data",
     "ui_configuration_value",
@@ -54,23 +56,21 @@ __all__ = [
 
 NAMESPACE = "/teleop_ui"
 RESULT_PARAM = f"{NAMESPACE}/ui_configuration"
+ACTIVE_ROBOT = f"{ACTIVE_PREFIX}robot"
 # The key of RESULT_PARAM naming the watcher that wrote it (its node name).
 WRITER_KEY = "watcher"
-# parameter (under /teleop_ui) -> the profile role whose characteristic it sets
-REQUEST_PARAMS = (
-    ("active_motion_control", "motion_control"),
-    ("active_sensor_type", "sensor_type"),
-)
 
 
 @dataclass(frozen=True, slots=True)
 class Request:
-    """What the operator station asked for (``None``: not set)."""
+    """What the operator station asked for: the robot (``None``: not set), the values of
+    characteristics (name, value) in the rule set's order, notes on values ignored, and the
+    ``active_*`` parameter names the rules know no characteristic of."""
 
     robot: str | None = None
-    motion_control: str | None = None
-    sensor_type: str | None = None
+    values: tuple[tuple[str, str], ...] = ()
     notes: tuple[str, ...] = ()
+    unknown: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True, slots=True)
@@ -82,26 +82,33 @@ class ActiveSelection:
     notes: tuple[str, ...] = ()
 
 
-def read_request(params: Mapping[str, Any]) -> Request:
-    """The request in the ``/teleop_ui`` parameters (keys relative to it); a value that is not
-    short text is ignored with a note (:func:`solver.live.values.selection_text`)."""
+def read_request(params: Mapping[str, Any], names: Collection[str]) -> Request:
+    """The request in the ``/teleop_ui`` parameters (keys relative to it), for a rule set whose
+    characteristics are ``names`` (in order); a value that is not short text is ignored with a
+    note (:func:`solver.live.values.selection_text`)."""
     notes: list[str] = []
-    values: dict[str, str | None] = {}
-    for name in ("active_robot", *(param for param, _ in REQUEST_PARAMS)):
-        value = params.get(name, MISSING)
+    asked: dict[str, str] = {}
+    robot: str | None = None
+    keys = [ACTIVE_ROBOT, *(f"{ACTIVE_PREFIX}{name}" for name in names)]
+    for key in keys:
+        value = params.get(key, MISSING)
         if value is MISSING:
-            values[name] = None
             continue
-        values[name], note = selection_text(f"{NAMESPACE}/{name}", value)
+        text, note = selection_text(f"{NAMESPACE}/{key}", value)
         if note is not None:
             notes.append(note)
-    robot = values["active_robot"]
-    return Request(
-        None if robot is None else normalise_namespace(robot),
-        values["active_motion_control"],
-        values["active_sensor_type"],
-        tuple(notes),
+        if text is None:
+            continue
+        if key == ACTIVE_ROBOT:
+            robot = normalise_namespace(text)
+        else:
+            asked[key[len(ACTIVE_PREFIX) :]] = text
+    known = set(keys)
+    unknown = sorted(
+        str(key) for key in params if str(key).startswith(ACTIVE_PREFIX) and key not in known
     )
+    values = tuple((name, asked[name]) for name in names if name in asked)
+    return Request(robot, values, tuple(notes), tuple(unknown))
 
 
 def _order(solution: Solution, values: Mapping[str, str]) -> tuple[int, ...]:
@@ -124,8 +131,22 @@ def choose(
     """
     rules = solution.rules
     check_names(rules, given)
-    notes: list[str] = []
+    candidates, notes = _narrowed(robot, given)
+    unique = {tuple((n, c[n]) for n in rules.names if n in c): c for c in candidates}
+    ordered = sorted(unique.items(), key=lambda item: _order(solution, item[1]))
+    chosen_key = ordered[0][0]
+    several = _several(robot.namespace, [c for _, c in ordered], rules.names)
     known = {tuple(c.values): c.assignment for c in robot.combinations}
+    assignment = known.get(chosen_key)
+    if assignment is None:
+        assignment = assign(solution, dict(chosen_key))
+    return assignment, (*notes, *several)
+
+
+def _narrowed(robot: LiveRobot, given: Mapping[str, str]) -> tuple[list[dict[str, str]], list[str]]:
+    """The robot's combinations with the ``given`` values: those that have a value, else all
+    of them with it put in (noted when the robot has others)."""
+    notes: list[str] = []
     candidates = [dict(c.values) for c in robot.combinations]
     for name, value in given.items():
         matching = [c for c in candidates if c.get(name) == value]
@@ -139,23 +160,21 @@ def choose(
                 f"(it has {_listed(offered)}); using it as asked"
             )
         candidates = [{**c, name: value} for c in candidates] or [{name: value}]
-    unique = {tuple((n, c[n]) for n in rules.names if n in c): c for c in candidates}
-    ordered = sorted(unique.items(), key=lambda item: _order(solution, item[1]))
-    chosen_key, chosen = ordered[0]
-    if len(ordered) > 1:
-        for name in rules.names:
-            options = list(dict.fromkeys(c.get(name) for _, c in ordered))
-            if len(options) > 1:
-                notes.append(
-                    f"{shown(robot.namespace)} has several {name} values ({_listed(options)}): "
-                    "using "
-                    f"{shown(chosen.get(name))}; give {name} to choose"
-                )
-                break
-    assignment = known.get(chosen_key)
-    if assignment is None:
-        assignment = assign(solution, dict(chosen_key))
-    return assignment, tuple(notes)
+    return candidates, notes
+
+
+def _several(
+    namespace: str, ordered: list[dict[str, str]], names: Iterable[str]
+) -> tuple[str, ...]:
+    """A note on the first characteristic with several values left, the first one taken."""
+    for name in names:
+        options = list(dict.fromkeys(c.get(name) for c in ordered))
+        if len(options) > 1:
+            return (
+                f"{shown(namespace)} has several {name} values ({_listed(options)}): using "
+                f"{shown(ordered[0].get(name))}; give {name} to choose",
+            )
+    return ()
 
 
 def _listed(values: Iterable[object]) -> str:
@@ -163,36 +182,15 @@ def _listed(values: Iterable[object]) -> str:
     return ", ".join(shown(str(value)) for value in values)
 
 
-def requested_values(
-    request: Request, solution: Solution, profile: Profile
-) -> tuple[dict[str, str], tuple[str, ...]]:
-    """The characteristic values the request sets (by the profile's roles), and notes on the
-    parameters the rule set has no characteristic for."""
-    given: dict[str, str] = {}
-    notes: list[str] = []
-    for param, role in REQUEST_PARAMS:
-        value = getattr(request, role)
-        name = profile.role(role)
-        if value is None:
-            continue
-        if name not in solution.rules.names:
-            notes.append(
-                f"{NAMESPACE}/{param} ignored: the rule set has no {shown(name, quoted=True)}"
-            )
-            continue
-        given[name] = value
-    return given, tuple(notes)
-
-
 def select(
-    request: Request, robots: Mapping[str, LiveRobot], solution: Solution, profile: Profile
+    request: Request, robots: Mapping[str, LiveRobot], solution: Solution
 ) -> ActiveSelection | None:
     """The configuration for ``request``; ``None`` when no robot is active."""
     if request.robot is None:
         return None
     robot = robots.get(request.robot)
-    given, ignored = requested_values(request, solution, profile)
-    notes = [*request.notes, *ignored]
+    given = dict(request.values)
+    notes = list(request.notes)
     if robot is None or robot.identification is None:
         if robot is not None:
             reason = f"robot {shown(request.robot)} could not be identified: {robot.error}"
@@ -214,17 +212,24 @@ def select(
             tuple(notes),
         )
     assignment, chosen_notes = choose(robot, given, solution)
-    return ActiveSelection(request, assignment, tuple(notes) + chosen_notes)
+    chosen = dict(assignment.given)
+    lacking = [
+        f"{shown(robot.namespace)} has no {name}: give it with {how}"
+        for name, how in robot.missing
+        if name not in chosen
+    ]
+    return ActiveSelection(request, assignment, (*notes, *chosen_notes, *lacking))
 
 
 def selection_data(
     selection: ActiveSelection | None, request: Request, solution: Solution
 ) -> dict[str, Any]:
-    """The fields of a ``selection_changed`` event (see the README)."""
+    """The fields of a ``selection_changed`` event (see docs/live.md): ``active`` has every
+    characteristic of the rule set, with the value asked for or ``None``."""
+    asked = dict(request.values)
     return {
         "robot": request.robot,
-        "motion_control": request.motion_control,
-        "sensor_type": request.sensor_type,
+        "active": {name: asked.get(name) for name in solution.rules.names},
         "assignment": None
         if selection is None or selection.assignment is None
         else assignment_data(solution, selection.assignment),

@@ -12,9 +12,11 @@ States and transitions::
       |  or --wait retries)         |                                                  |
       v                             +<--(an answer: master_back, full resync)----------+
 
-*Synchronising* (at start and after ``master_back``) forgets everything, reads the master
-afresh and reports every robot as ``robot_added``, the selection, then ``synced``: a consumer
-never has to merge an old view with a new one, and no robot is reported twice or missed.
+*Synchronising* (at start and after ``master_back``) forgets everything, waits until the
+source has seen the graph whole (:meth:`GraphSource.settle`: nothing on a ROS 1 master, the
+discovery window on DDS), reads it afresh and reports every robot as ``robot_added``, the
+warnings and rivals, the selection, then ``synced``: a consumer never has to merge an old view
+with a new one, and no robot is reported twice or missed.
 
 *Polling*: every ``interval`` seconds one round trip (:meth:`GraphSource.observe`) reads the
 master's pid, the topic graph, the parameter names and ``/teleop_ui``. Descriptions are not
@@ -24,14 +26,22 @@ description is reported well within one interval. A robot is identified again on
 description or its relevant topics changed (identification is cached by content besides); an
 event is emitted only when what it reports changed.
 
+*Values*: each robot's combinations take the values it is given beside identification (its own
+``<ns>/teleop_ui/<characteristic>``, ``--set``), and the operator's ``/teleop_ui/active_*``
+choose among them (:mod:`solver.live.given`, :mod:`solver.live.selection`). A name the rules
+know no characteristic of, or a robot's value that is not text, is a located ``warning`` event
+(once while it lasts; at most :data:`MAX_WARNINGS` a poll).
+
 *Write-back*: the answer to the active selection is written to ``/teleop_ui/ui_configuration``
 (deleted with no active robot) whenever what is on the master differs from it, with the
 watcher's node name under ``watcher``. Two watchers on one master with different teams or
-rules would overwrite each other's answer on every push; so a watcher does not overwrite an
-answer written by another watcher that is still running (the source says so:
-:meth:`GraphSource.running_watcher`): it leaves the first writer's answer there and says so in
-the selection's notes. Once that watcher is gone, the parameter is taken over at the next poll.
-A writer the source can tell is no watcher (on ROS 1, a node API that is not
+rules would overwrite each other's answer on every push; so every watcher announces itself and
+reports the others as ``rival`` events (:mod:`solver.live.rivals`), and a yielding watcher (the
+default) does not overwrite an answer written by another watcher that is still running (the
+source says so: :meth:`GraphSource.running_watcher`): it leaves that answer there and says so
+in the selection's notes. An insisting one (``policy="insist"``) writes over a yielding rival's
+answer, never over an insisting one's. Once that watcher is gone, the parameter is taken over
+at the next poll. A writer the source can tell is no watcher (on ROS 1, a node API that is not
 ``http://host:port/``) is overwritten, with a note. Watchers with the same team agree, and
 leave each other's equal answers alone.
 
@@ -65,6 +75,7 @@ from solver.identify.profile import Profile
 from solver.live.discovery import RobotSource, discover
 from solver.live.events import (
     Event,
+    GraphWarning,
     MasterBack,
     MasterLost,
     RobotAdded,
@@ -73,6 +84,7 @@ from solver.live.events import (
     SelectionChanged,
     Synced,
 )
+from solver.live.given import ACTIVE_PREFIX, FixedValues, GivenValue, robot_values, unknown_name
 from solver.live.graph import (
     MISSING,
     DescriptionStore,
@@ -81,21 +93,27 @@ from solver.live.graph import (
     MasterUnreachable,
     Observation,
 )
+from solver.live.rivals import INSIST, YIELD, Rivals, fingerprint
 from solver.live.robot import LiveRobot, identify_robot, robot_data, unexpected_error
 from solver.live.selection import (
     NAMESPACE,
     RESULT_PARAM,
     WRITER_KEY,
+    ActiveSelection,
     Request,
     read_request,
     select,
     selection_data,
     ui_configuration_value,
 )
-from solver.live.values import shown_value
+from solver.live.values import MAX_SELECTION_CHARS, shown_value
 from solver.ros.names import Topic
+from solver.untrusted import shown
 
-__all__ = ["Watcher"]
+__all__ = ["MAX_WARNINGS", "Watcher"]
+
+# Warning events a poll reports at most (a graph may hold any number of unknown names).
+MAX_WARNINGS = 20
 
 # Pushes can come in bursts (a launch file setting many parameters); polls triggered by them
 # are at least this far apart.
@@ -111,7 +129,7 @@ class _Restarted(MasterError):
 
 @dataclass(frozen=True, slots=True)
 class _Tracked:
-    inputs: tuple[Any, Any, tuple[Topic, ...]]
+    inputs: tuple[Any, Any, tuple[Topic, ...], tuple[GivenValue, ...]]
     robot: LiveRobot
     data: dict[str, Any]
 
@@ -129,7 +147,8 @@ class Watcher:
 
     ``timeout`` and ``push`` are the ROS 1 master's (``push=False`` runs without a node, no
     parameter subscriptions: enough for :meth:`snapshot`, which reads everything once); a
-    ``source`` given brings its own.
+    ``source`` given brings its own. ``fixed``: values given at start (``--set``);
+    ``policy``: ``yield`` or ``insist`` towards rival watchers (:mod:`solver.live.rivals`).
     """
 
     def __init__(
@@ -144,6 +163,8 @@ class Watcher:
         max_backoff: float = 2.0,
         cache: IdentificationCache | None = None,
         source: GraphSource | None = None,
+        fixed: FixedValues | None = None,
+        policy: str = YIELD,
     ) -> None:
         if source is None:
             # The default source: a ROS 1 master (imported here: watching ROS 2 needs none).
@@ -163,6 +184,17 @@ class Watcher:
         self._closed = False
         source.on_change = self.wake
         source.on_stop = self.stop
+        self.fixed = fixed if fixed is not None else FixedValues()
+        self.rivals = Rivals(
+            source.caller_id,
+            solution,
+            fingerprint(solution, profile, self.fixed),
+            policy,
+            source.running_watcher,
+        )
+        self._warned: tuple[tuple[str, str], ...] = ()
+        # Only a watcher that follows the graph announces itself: a snapshot is no rival.
+        self._announcing = False
         self._robots: dict[str, _Tracked] = {}
         self._no_selection = selection_data(None, Request(), solution)
         self._selection = self._no_selection
@@ -242,6 +274,22 @@ class Watcher:
                 return True
         return False
 
+    def wait_for_robot(self, on_waiting: Callable[[], None] | None = None) -> bool:
+        """Watch until a robot's description is there (``True``) or :meth:`stop` (``False``):
+        on a DDS domain, which is never "down", ``--wait`` waits for the first robot."""
+        told = False
+        while not self.stopped:
+            sources = discover(self._observe(), self.profile)
+            self.descriptions.sync([s.description_key for s in sources])
+            if any(self.descriptions.get(s.description_key) is not MISSING for s in sources):
+                return True
+            if not told and on_waiting is not None:
+                on_waiting()
+            told = True
+            if self._wake.wait(self.interval):
+                self._wake.clear()
+        return False
+
     # -- events --------------------------------------------------------------------------
 
     def robots(self) -> dict[str, LiveRobot]:
@@ -257,6 +305,7 @@ class Watcher:
 
     def events(self) -> Iterator[Event]:
         """Events until :meth:`stop`; the first synchronisation raises if the master is down."""
+        self._announcing = True
         yield from self.snapshot()
         lost: str | None = None
         delay = self.interval
@@ -317,7 +366,10 @@ class Watcher:
     def _resync(self) -> list[Event]:
         self._robots = {}
         self._selection = self._no_selection
+        self._warned = ()
+        self.rivals.reset()
         self.source.resync(NAMESPACE)
+        self.source.settle(lambda: self.stopped)
         observation = self._observe()
         self._pid = observation.pid
         batch = self._update(observation)
@@ -334,13 +386,16 @@ class Watcher:
         return self._update(observation)
 
     def _update(self, observation: Observation) -> list[Event]:
+        rules = self.solution.rules
         sources = discover(observation, self.profile)
         self.descriptions.sync(
             [s.description_key for s in sources]
             + [s.semantic_key for s in sources if s.semantic_key is not None]
+            + [key for s in sources for name, key in s.value_keys if name in rules.names]
         )
         robots: dict[str, _Tracked] = {}
         changes: list[Event] = []
+        warnings: list[tuple[str, str]] = []
         for source in sources:
             description = self.descriptions.get(source.description_key)
             if description is MISSING:
@@ -350,12 +405,15 @@ class Watcher:
                 if source.semantic_key is None
                 else self.descriptions.get(source.semantic_key)
             )
-            inputs = (description, semantic, source.topics)
+            own, noted = robot_values(source.value_keys, self.descriptions.get, rules)
+            warnings += noted
+            given = (*self.fixed.for_robot(source.namespace), *own)
+            inputs = (description, semantic, source.topics, given)
             old = self._robots.get(source.namespace)
             if old is not None and old.inputs == inputs:
                 robots[source.namespace] = old
                 continue
-            robot, data = self._identify(source, description, semantic)
+            robot, data = self._identify(source, description, semantic, given)
             robots[source.namespace] = _Tracked(inputs, robot, data)
             if old is None:
                 changes.append(RobotAdded(0, robot))
@@ -367,10 +425,38 @@ class Watcher:
             RobotRemoved(0, namespace) for namespace in sorted(set(self._robots) - set(robots))
         ]
         self._robots = robots
-        return [*removed, *changes, *self._select(dict(observation.params))]
+        params = dict(observation.params)
+        request = read_request(params, rules.names)
+        warnings += [
+            (f"{NAMESPACE}/{key}", unknown_name(key[len(ACTIVE_PREFIX) :], rules))
+            for key in request.unknown
+        ]
+        if self._announcing and self.rivals.needs_announcing(params):
+            self.source.announce(self.rivals.announcement)
+        return [
+            *removed,
+            *changes,
+            *self._warnings(warnings),
+            *self.rivals.update(params),
+            *self._select(params, request),
+        ]
+
+    def _warnings(self, found: list[tuple[str, str]]) -> list[Event]:
+        """A ``warning`` event for each of ``found`` not reported at the last poll (at most
+        :data:`MAX_WARNINGS`)."""
+        # A name from the graph is shown cut short past what any name of a rule set may be.
+        bounded = [(w if len(w) <= MAX_SELECTION_CHARS else shown(w), m) for w, m in found]
+        current = tuple(dict.fromkeys(bounded))[:MAX_WARNINGS]
+        new = [
+            GraphWarning(0, where, message)
+            for where, message in current
+            if (where, message) not in self._warned
+        ]
+        self._warned = current
+        return list(new)
 
     def _identify(
-        self, source: RobotSource, description: Any, semantic: Any
+        self, source: RobotSource, description: Any, semantic: Any, given: tuple[GivenValue, ...]
     ) -> tuple[LiveRobot, dict[str, Any]]:
         """One robot and its event fields; whatever goes wrong stays that robot's error."""
         try:
@@ -381,6 +467,7 @@ class Watcher:
                 cache=self.cache,
                 solution=self.solution,
                 profile=self.profile,
+                given=given,
             )
             return robot, robot_data(robot)
         except Exception as error:  # the per-robot boundary
@@ -390,25 +477,10 @@ class Watcher:
             robot = LiveRobot(source.namespace, None, (), error_text, source.topics)
             return robot, robot_data(robot)
 
-    def _select(self, params: dict[str, Any]) -> list[Event]:
-        request = read_request(params)
-        selection = select(
-            request, {ns: t.robot for ns, t in self._robots.items()}, self.solution, self.profile
-        )
+    def _select(self, params: dict[str, Any], request: Request) -> list[Event]:
+        selection = select(request, {ns: t.robot for ns, t in self._robots.items()}, self.solution)
         wanted = ui_configuration_value(selection, self.solution, self.caller_id)
-        present = params.get(_RESULT_KEY, MISSING)
-        rival, note = self._rival(present, wanted)
-        if rival is not None and selection is not None:
-            shown = shown_value(present.get("configuration", "?"))
-            note = (
-                f"{RESULT_PARAM} not written: the watcher {shown_value(rival)} answers there "
-                f"with configuration {shown}; run one watcher per master, or give every "
-                f"watcher the same team and rules"
-            )
-        elif wanted is None and present is not MISSING:
-            self.source.delete_param(RESULT_PARAM)
-        elif wanted is not None and _answer(present) != _answer(wanted):
-            self.source.set_param(RESULT_PARAM, wanted)
+        note = self._write_back(params.get(_RESULT_KEY, MISSING), wanted, selection)
         if note is not None and selection is not None:
             selection = dataclasses.replace(selection, notes=(*selection.notes, note))
         data = selection_data(selection, request, self.solution)
@@ -416,6 +488,32 @@ class Watcher:
             return []
         self._selection = data
         return [SelectionChanged(0, request, selection)]
+
+    def _write_back(
+        self, present: Any, wanted: dict[str, Any] | None, selection: ActiveSelection | None
+    ) -> str | None:
+        """Write (or delete) the answer unless a running rival's stays (see the module
+        docstring); a note saying what was not written, or overwritten."""
+        rival, note = self._rival(present, wanted)
+        if rival is not None and selection is not None:
+            number = shown_value(present.get("configuration", "?"))
+            if self.rivals.policy != INSIST or self.rivals.insists(rival):
+                both = (
+                    " (both insist: the first to answer keeps it)"
+                    if self.rivals.policy == INSIST
+                    else ""
+                )
+                return (
+                    f"{RESULT_PARAM} not written: the watcher {shown_value(rival)} answers there "
+                    f"with configuration {number}{both}; run one watcher per graph, give every "
+                    f"watcher the same team and rules, or start this one with --insist"
+                )
+            # Insisting on a yielding rival: written over (the rival event said so).
+        if wanted is None and present is not MISSING:
+            self.source.delete_param(RESULT_PARAM)
+        elif wanted is not None and _answer(present) != _answer(wanted):
+            self.source.set_param(RESULT_PARAM, wanted)
+        return note
 
     def _rival(self, present: Any, wanted: dict[str, Any] | None) -> tuple[str | None, str | None]:
         """The node name of another watcher, still running, whose different answer is on the

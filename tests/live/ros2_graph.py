@@ -86,6 +86,10 @@ class EmulatedRobot:
             node=name, publish=list(publish), subscribe=list(subscribe), services=list(services)
         )
 
+    def latch(self, topic: str, text: str) -> None:
+        """A latched String from the robot: its own value (``/ns/teleop_ui/<name>``)."""
+        self.send(latch=topic, text=text)
+
     def describe(self, namespace: str, text: str, directory: Path) -> None:
         path = directory / f"{namespace.strip('/').replace('/', '_') or 'root'}.urdf"
         path.write_text(text, encoding="utf-8")
@@ -135,7 +139,24 @@ class Operator:
 
     def control(self, motion_control: str) -> None:
         """Select the motion control to answer for (an empty string clears it)."""
-        self.writers["active_motion_control"].write(self.String(motion_control))
+        self.select("motion_control", motion_control)
+
+    def select(self, name: str, value: str) -> None:
+        """Select a value of the characteristic ``name`` on ``/teleop_ui/active_<name>`` (an
+        empty string clears it)."""
+        from cyclonedds.pub import DataWriter
+        from cyclonedds.topic import Topic
+
+        from tests.live.ros2_robot import LATCHED
+
+        key = f"active_{name}"
+        if key not in self.writers:
+            self.writers[key] = DataWriter(
+                self.participant,
+                Topic(self.participant, f"rt/teleop_ui/{key}", self.String),
+                qos=LATCHED,
+            )
+        self.writers[key].write(self.String(value))
 
     def answer(self) -> Any:
         """The newest answer read so far (``None`` before any)."""

@@ -25,6 +25,8 @@ Driven by JSON lines on stdin, one command each, answered by ``ok`` on stdout::
      "sensor_msgs/msg/Image"]], "subscribe": [], "services": []}
     {"describe": "/uav1", "file": "/tmp/uav1.urdf"}      # or "text": "..."
     {"drop": "/uav1/camera_driver"}                       # the node's endpoints vanish
+    {"latch": "/uav1/teleop_ui/link", "text": "LTE"}      # a String, reliable and
+                                                          # transient-local (a robot's value)
     {"echo": "/bench/ping", "to": "/bench/pong"}           # answers each String on the
                                                           # first topic with it on the second
 """
@@ -112,6 +114,7 @@ class Robot:
         )
         self.nodes: dict[str, tuple[list[Any], list[Any]]] = {}  # name -> (readers, writers)
         self.topics: dict[tuple[str, str], Any] = {}
+        self.latched: dict[str, Any] = {}
 
     def gid(self, entity: Any) -> Any:
         raw = entity.guid.bytes
@@ -158,6 +161,20 @@ class Robot:
         )
         writer.write(struct("std_msgs::msg::dds_::String_")(text))
         writers.append(writer)
+        self.announce()
+
+    def latch(self, topic: str, text: str) -> None:
+        """Write ``text`` on ``topic`` (``std_msgs/msg/String``, reliable, transient-local) from
+        a node of the robot, as a launch file's latched publisher does."""
+        namespace = topic.split("/teleop_ui/", maxsplit=1)[0]
+        _readers, writers = self.nodes.setdefault(f"{namespace}/teleop_ui_values", ([], []))
+        if topic not in self.latched:
+            writer = DataWriter(
+                self.participant, self.topic("rt" + topic, "std_msgs/msg/String"), qos=LATCHED
+            )
+            self.latched[topic] = writer
+            writers.append(writer)
+        self.latched[topic].write(struct("std_msgs::msg::dds_::String_")(text))
         self.announce()
 
     def drop(self, name: str) -> None:
@@ -222,6 +239,8 @@ def main() -> None:
                 else Path(command["file"]).read_text(encoding="utf-8")
             )
             robot.describe(command["describe"], text)
+        elif "latch" in command:
+            robot.latch(command["latch"], command["text"])
         elif "drop" in command:
             robot.drop(command["drop"])
         elif "echo" in command:

@@ -125,7 +125,9 @@ def test_once_prints_one_snapshot_as_json_lines_identical_from_run_to_run(
         "sensor_count",
         "sensors",
         "motion_controls",
+        "given",
         "combinations",
+        "missing",
         "error",
         "topics",
     ]

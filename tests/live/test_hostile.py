@@ -346,7 +346,7 @@ def test_deep_and_huge_selection_values_on_a_real_master_are_notes_with_short_ec
     assert robots["/uav1"]["combinations"][0]["configuration"] == drone_configuration(solution)
     (selection,) = [e for e in events if e["event"] == "selection_changed"]
     assert selection["robot"] is None
-    assert selection["motion_control"] is None
+    assert selection["active"]["motion_control"] is None
     notes = selection["notes"]
     assert notes[0] == "/teleop_ui/active_robot ignored: expected text, got a list"
     assert notes[1] == (
@@ -386,7 +386,7 @@ def test_a_spoofed_param_update_changes_nothing_the_master_holds(
     # A genuine change after the spoof: the poll that reports it has read everything after it.
     node.set_param("/teleop_ui/active_motion_control", "Flight")
     marker = watch.wait_for(
-        lambda d: d["event"] == "selection_changed" and d["motion_control"] == "Flight",
+        lambda d: d["event"] == "selection_changed" and d["active"]["motion_control"] == "Flight",
         "the genuine change",
         after=mark,
     )

@@ -137,7 +137,7 @@ def test_a_robot_whose_namespace_is_no_ros2_name_gets_no_layout_and_a_warning(
         "other than a letter, a digit, '_' or '/' at 5"
     ]
     request = Request("/ugv-1")
-    event = SelectionChanged(2, request, select(request, {"/ugv-1": robot}, solution, profile))
+    event = SelectionChanged(2, request, select(request, {"/ugv-1": robot}, solution))
     assert layouts.path(event) is None
     assert list(tmp_path.iterdir()) == []
 
@@ -156,8 +156,8 @@ def test_the_root_robot_and_a_mode_it_lacks_get_layouts_too(
     own = tmp_path / f"config-{drone_configuration(solution):03d}.json"
     assert _topics(_layout(own))["Image"] == "/camera/image_raw"
     # Asked for Driving, which a drone lacks: the default configuration, written on demand.
-    request = Request("/", "Driving")
-    event = SelectionChanged(2, request, select(request, {"/": robot}, solution, profile))
+    request = Request("/", (("motion_control", "Driving"),))
+    event = SelectionChanged(2, request, select(request, {"/": robot}, solution))
     default = tmp_path / f"config-{solution.default_configuration:03d}-default.json"
     assert layouts.path(event) == str(default)
     assert _faults(default, {}) == []

@@ -10,8 +10,11 @@ from solver.identify.identification import IdentificationCache
 from solver.identify.profile import Profile
 from solver.live.discovery import RobotSource
 from solver.live.events import (
+    GraphWarning,
     MasterBack,
     MasterLost,
+    Rival,
+    RivalGone,
     RobotAdded,
     RobotChanged,
     RobotRemoved,
@@ -35,10 +38,13 @@ ROBOT_FIELDS = [
     "sensor_count",
     "sensors",
     "motion_controls",
+    "given",
     "combinations",
+    "missing",
     "error",
     "topics",
 ]
+FLIGHT = (("motion_control", "Flight"),)
 
 
 def drone(solution: Solution, profile: Profile) -> LiveRobot:
@@ -55,8 +61,8 @@ def drone(solution: Solution, profile: Profile) -> LiveRobot:
 
 def test_every_event_kind_has_its_documented_fields(solution: Solution, profile: Profile) -> None:
     robot = drone(solution, profile)
-    request = Request("/uav1", "Flight")
-    selection = select(request, {"/uav1": robot}, solution, profile)
+    request = Request("/uav1", FLIGHT)
+    selection = select(request, {"/uav1": robot}, solution)
     events = [
         RobotAdded(1, robot),
         RobotChanged(2, robot, ("sensors",)),
@@ -65,16 +71,22 @@ def test_every_event_kind_has_its_documented_fields(solution: Solution, profile:
         MasterLost(5, URI, "gone"),
         MasterBack(6, URI),
         Synced(7, URI, ("/uav1",)),
+        GraphWarning(8, "/teleop_ui/active_x", "no x"),
+        Rival(9, "/w2", "Other team", "Case 3", "yield"),
+        RivalGone(10, "/w2"),
     ]
     fields = [list(event_data(e, solution)) for e in events]
     assert fields == [
         ["seq", "event", *ROBOT_FIELDS],
         ["seq", "event", *ROBOT_FIELDS, "changed"],
         ["seq", "event", "robot"],
-        ["seq", "event", "robot", "motion_control", "sensor_type", "assignment", "notes"],
+        ["seq", "event", "robot", "active", "assignment", "notes"],
         ["seq", "event", "master", "error"],
         ["seq", "event", "master"],
         ["seq", "event", "master", "robots"],
+        ["seq", "event", "where", "message"],
+        ["seq", "event", "watcher", "team", "own_team", "policy"],
+        ["seq", "event", "watcher"],
     ]
     assert [event_data(e, solution)["event"] for e in events] == [
         "robot_added",
@@ -84,7 +96,17 @@ def test_every_event_kind_has_its_documented_fields(solution: Solution, profile:
         "master_lost",
         "master_back",
         "synced",
+        "warning",
+        "rival",
+        "rival_gone",
     ]
+    # Every characteristic of the rule set, by its own name, with what was asked or null.
+    assert event_data(events[3], solution)["active"] == {
+        "kinematic_type": None,
+        "motion_control": "Flight",
+        "sensor_type": None,
+        "sensor_count": None,
+    }
 
 
 def test_json_lines_are_one_compact_object_per_line(solution: Solution, profile: Profile) -> None:
@@ -124,8 +146,8 @@ def test_text_lines_for_every_kind(solution: Solution, profile: Profile) -> None
     ]
     assert text_lines(MasterBack(5, URI)) == [f"master back     {URI}: resynchronising"]
     assert text_lines(Synced(6, URI, ())) == ["synced          0 robot(s): none"]
-    request = Request("/uav9", "Flight")
-    answer = select(request, {"/uav1": robot}, solution, profile)
+    request = Request("/uav9", FLIGHT)
+    answer = select(request, {"/uav1": robot}, solution)
     assert text_lines(SelectionChanged(7, request, answer)) == [
         f"selection       /uav9 Flight -> UI configuration {solution.default_configuration} "
         "(default): no robot /uav9 on the master (robots: /uav1); no kinematic_type given; "
@@ -134,6 +156,13 @@ def test_text_lines_for_every_kind(solution: Solution, profile: Profile) -> None
     assert text_lines(SelectionChanged(8, Request(), None)) == [
         "selection       no active robot (set /teleop_ui/active_robot)"
     ]
+    assert text_lines(GraphWarning(9, "/teleop_ui/active_x", "no x")) == [
+        "warning         /teleop_ui/active_x: no x"
+    ]
+    assert text_lines(Rival(10, "/w2", "Other", "Case 3", "yield")) == [
+        "rival           /w2 answers for team Other, this watcher for Case 3; this one will yield"
+    ]
+    assert text_lines(RivalGone(11, "/w2")) == ["rival gone      /w2"]
 
 
 def test_text_events_show_names_from_the_graph_on_their_own_line(
@@ -147,8 +176,8 @@ def test_text_events_show_names_from_the_graph_on_their_own_line(
     robot = identify_robot(
         source, text, cache=IdentificationCache(), solution=solution, profile=profile
     )
-    request = Request(namespace, "Flight\nFORGED\x1b[2J")
-    selection = select(request, {namespace: robot}, solution, profile)
+    request = Request(namespace, (("motion_control", "Flight\nFORGED\x1b[2J"),))
+    selection = select(request, {namespace: robot}, solution)
     # A robot's error is its faults, one per line: each escaped when it was made.
     faults = [Fault(Location("a\nFORGED.urdf", 1), "bad\nFORGED"), Fault(Location("b", 2), "x")]
     broken = LiveRobot(namespace, None, (), error=str(SolverError(faults)))

@@ -35,23 +35,44 @@ def robot(
     )
 
 
+NAMES = ("kinematic_type", "motion_control", "sensor_type", "sensor_count")
+
+
 def test_the_request_is_read_from_the_teleop_ui_parameters() -> None:
     assert read_request(
         {
             "active_robot": "uav1/",
             "active_motion_control": "Flight",
             "ui_configuration": {"configuration": 3},
-        }
-    ) == Request("/uav1", "Flight", None)
-    assert read_request({}) == Request()
-    assert read_request({"active_robot": ""}) == Request()
-    odd = read_request({"active_robot": 7, "active_sensor_type": ["x"]})
+        },
+        NAMES,
+    ) == Request("/uav1", (("motion_control", "Flight"),))
+    assert read_request({}, NAMES) == Request()
+    assert read_request({"active_robot": ""}, NAMES) == Request()
+    odd = read_request({"active_robot": 7, "active_sensor_type": ["x"]}, NAMES)
     assert odd.robot is None
-    assert odd.sensor_type is None
+    assert odd.values == ()
     assert odd.notes == (
         "/teleop_ui/active_robot ignored: expected text, got a number (7)",
         "/teleop_ui/active_sensor_type ignored: expected text, got a list",
     )
+
+
+def test_any_characteristic_of_the_rules_is_read_and_unknown_active_names_are_kept() -> None:
+    request = read_request(
+        {
+            "active_robot": "/r1",
+            "active_link": "LTE",
+            "active_platform": "Rover",
+            "active_lnk": "Wi-Fi",
+            "active_motion_control": "Flight",
+            "link": "not the operator's",
+        },
+        ("platform", "link"),
+    )
+    # In the rule set's order, whatever the parameters' order.
+    assert request.values == (("platform", "Rover"), ("link", "LTE"))
+    assert request.unknown == ("active_lnk", "active_motion_control")
 
 
 def test_a_value_the_robot_has_narrows_its_combinations(
@@ -124,20 +145,20 @@ def test_an_unknown_or_broken_active_robot_gets_the_default_with_the_reason(
     solution: Solution, profile: Profile
 ) -> None:
     drone = robot("/uav1", drone_text(), (CAMERA,), solution, profile)
-    missing = select(Request("/uav9", "Flight"), {"/uav1": drone}, solution, profile)
+    missing = select(Request("/uav9", (("motion_control", "Flight"),)), {"/uav1": drone}, solution)
     assert missing is not None
     assert missing.assignment is not None
     assert missing.assignment.number == solution.default_configuration
     assert missing.assignment.reasons[0] == "no robot /uav9 on the master (robots: /uav1)"
     assert dict(missing.assignment.relevant)["motion_control"] == ("Flight",)
     broken = robot("/bad", "<robot", (), solution, profile)
-    answer = select(Request("/bad"), {"/bad": broken}, solution, profile)
+    answer = select(Request("/bad"), {"/bad": broken}, solution)
     assert answer is not None
     assert answer.assignment is not None
     assert answer.assignment.reasons[0].startswith(
         "robot /bad could not be identified: /bad/robot_description:1:"
     )
-    assert select(Request(), {"/uav1": drone}, solution, profile) is None
+    assert select(Request(), {"/uav1": drone}, solution) is None
 
 
 def test_the_written_back_value_holds_no_null_and_matches_the_event(
@@ -145,7 +166,7 @@ def test_the_written_back_value_holds_no_null_and_matches_the_event(
 ) -> None:
     drone = robot("/uav1", drone_text(), (CAMERA,), solution, profile)
     request = Request("/uav9")
-    selection = select(request, {"/uav1": drone}, solution, profile)
+    selection = select(request, {"/uav1": drone}, solution)
     value = ui_configuration_value(selection, solution, "/teleop_ui_watch_test")
     assert value is not None
 

@@ -177,7 +177,7 @@ def test_switching_the_active_robot_gives_its_configuration_and_writes_it_back(
         "selection of /uav1",
         after=mark,
     )
-    assert selected["motion_control"] == "Flight"
+    assert selected["active"]["motion_control"] == "Flight"
     assert selected["assignment"]["configuration"] == drone_configuration(solution)
     assert selected["assignment"]["default"] is False
     written = wait_until(lambda: _result(node, "/uav1"), 60, "ui_configuration for /uav1")
@@ -193,7 +193,7 @@ def test_switching_the_active_robot_gives_its_configuration_and_writes_it_back(
         lambda d: (
             d["event"] == "selection_changed"
             and d["robot"] == "/ugv1"
-            and d["motion_control"] == "Driving"
+            and d["active"]["motion_control"] == "Driving"
         ),
         "selection of /ugv1 Driving",
         after=mark,
@@ -245,10 +245,24 @@ def test_a_second_watcher_with_another_team_leaves_the_first_answer_until_it_is_
         assert held["assignment"]["team"] == "Case 1"
         assert held["notes"] == [
             f"/teleop_ui/ui_configuration not written: the watcher {mine} answers there with "
-            f"configuration {drone_configuration(first.solution)}; run one watcher per master, "
-            f"or give every watcher the same team and rules"
+            f"configuration {drone_configuration(first.solution)}; run one watcher per graph, "
+            "give every watcher the same team and rules, or start this one with --insist"
         ]
         second.wait_for_event("synced")
+        # Each reports the other, with both teams.
+        theirs = second.wait_for_event("rival")
+        assert (theirs["watcher"], theirs["team"], theirs["own_team"], theirs["policy"]) == (
+            mine,
+            "Case 3",
+            "Case 1",
+            "yield",
+        )
+        ours = first.wait_for_event("rival")
+        assert (ours["watcher"], ours["team"], ours["own_team"]) == (
+            second.watcher.caller_id,
+            "Case 1",
+            "Case 3",
+        )
         value = node.get_param("/teleop_ui/ui_configuration")
         assert (value["watcher"], value["team"]) == (mine, "Case 3")
         assert [d["event"] for d in first.data()].count("selection_changed") == 1
@@ -262,6 +276,7 @@ def test_a_second_watcher_with_another_team_leaves_the_first_answer_until_it_is_
         assert node.get_param("/teleop_ui/ui_configuration")["team"] == "Case 1"
         freed = second.wait_for_event("selection_changed", after=mark)
         assert freed["notes"] == []
+        assert second.wait_for_event("rival_gone", after=mark)["watcher"] == mine
     finally:
         second.stop()
 

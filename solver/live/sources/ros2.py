@@ -25,10 +25,18 @@ parameter ``/<ns>/robot_description``), and :mod:`solver.live.discovery` does th
 The operator's selection and the answer are topics (ROS 2 has no parameter server), all
 ``std_msgs/msg/String``, reliable and transient-local, so that an rclpy or rclcpp station uses
 them with standard messages: ``/teleop_ui/active_robot`` in (the robot's namespace), with
-``/teleop_ui/active_motion_control`` and ``/teleop_ui/active_sensor_type`` (optional, as the
-ROS 1 parameters of those names; an empty string clears one), and
-``/teleop_ui/ui_configuration`` out (the JSON object a ROS 1 watcher writes to the parameter of
-that name; ``null`` with no active robot).
+``/teleop_ui/active_<characteristic>`` for any characteristic of the rule set (as the ROS 1
+parameters of those names; an empty string clears one: a reader is made for each such topic
+someone writes, at most :data:`MAX_REQUEST_TOPICS`), and ``/teleop_ui/ui_configuration`` out
+(the JSON object a ROS 1 watcher writes to the parameter of that name; ``null`` with no active
+robot). A robot's own values are String topics ``/<ns>/teleop_ui/<characteristic>``, read as
+descriptions are. Watchers announce themselves on ``/teleop_ui/watchers``
+(:mod:`solver.live.rivals`); a watcher's name ends in its participant's GUID, so whether it
+still runs is whether that participant is on the domain.
+
+*Discovery window.* :meth:`DdsGraph.settle` waits until nothing new was discovered for
+:data:`DISCOVERY_QUIET` seconds (at most :data:`DISCOVERY_LIMIT`): the watcher's first
+``synced`` then lists the robots that were already there.
 
 Bounds: a description longer than :data:`~solver.identify.readers.safexml.MAX_XML_BYTES` is not
 identified (the robot is reported with a located error); a sample that cannot be decoded is
@@ -54,18 +62,32 @@ from solver.untrusted import shown
 __all__ = [
     "ACTIVE_TOPIC",
     "ANSWER_TOPIC",
-    "REQUEST_TOPICS",
+    "DISCOVERY_LIMIT",
+    "DISCOVERY_QUIET",
+    "MAX_ANNOUNCEMENTS",
+    "MAX_REQUEST_TOPICS",
+    "WATCHERS_TOPIC",
     "DdsGraph",
     "dds_topic",
     "dds_type",
+    "message_types",
     "ros_name",
     "ros_type",
 ]
 
 ACTIVE_TOPIC = "/teleop_ui/active_robot"
-# The operator's selection: one topic per parameter a ROS 1 station sets (solver.live.selection).
-REQUEST_TOPICS = ("active_robot", "active_motion_control", "active_sensor_type")
 ANSWER_TOPIC = "/teleop_ui/ui_configuration"
+# Watchers say who they are here (solver.live.rivals).
+WATCHERS_TOPIC = "/teleop_ui/watchers"
+# Under /teleop_ui, what is not the operator's selection.
+_NOT_REQUESTS = ("ui_configuration", "watchers")
+# Readers of /teleop_ui/<name> topics (the operator's active_*) at most; announcements kept.
+MAX_REQUEST_TOPICS = 64
+MAX_ANNOUNCEMENTS = 16
+# The discovery window: a snapshot waits until nothing new was discovered for DISCOVERY_QUIET
+# seconds, and at most DISCOVERY_LIMIT seconds.
+DISCOVERY_QUIET = 0.5
+DISCOVERY_LIMIT = 5.0
 _STRING = "std_msgs::msg::dds_::String_"
 _DISCOVERY = "ros_discovery_info"
 _PREFIXES = {"rt/": "", "rq/": "Request", "rr/": "Reply"}
@@ -107,6 +129,13 @@ class _Endpoint:
     type_name: str
     participant: bytes
     writer: bool
+
+
+def message_types() -> Any:
+    """``std_msgs/msg/String`` and, by gid size (24 before Iron, 16 from Iron on), the
+    ``rmw_dds_common`` discovery types (Gid, NodeEntitiesInfo, ParticipantEntitiesInfo) as
+    Cyclone DDS IDL classes; built on first use: ``cyclonedds`` is an optional extra."""
+    return _types()
 
 
 def _types() -> Any:
@@ -172,13 +201,13 @@ def _join(participant: Any, domain: int) -> Any:
         ) from None
 
 
-def _latched() -> Any:
+def _latched(depth: int = 1) -> Any:
     from cyclonedds.qos import Policy, Qos
 
     return Qos(
         Policy.Reliability.Reliable(1_000_000_000),
         Policy.Durability.TransientLocal,
-        Policy.History.KeepLast(1),
+        Policy.History.KeepLast(depth),
     )
 
 
@@ -272,7 +301,6 @@ class DdsGraph:
 
         self.domain = domain
         self.name = f"ros2://domain/{domain}"
-        self.caller_id = caller_id or f"/teleop_ui_watch_{os.getpid()}"
         self.on_change: Callable[[], None] | None = None
         self.on_stop: Callable[[str], None] | None = None  # a DDS graph never asks to stop
         self.listener = Listener(  # type: ignore[no-untyped-call]
@@ -280,6 +308,9 @@ class DdsGraph:
         )
         self.string_type, discovery = _types()
         self.participant = _join(DomainParticipant, domain)
+        self._own = self.participant.guid.bytes
+        # The participant's GUID in the name: whether a watcher runs is whether it is there.
+        self.caller_id = caller_id or f"/teleop_ui_watch_{os.getpid()}_{self._own.hex()}"
         self._publications = BuiltinDataReader(
             self.participant, BuiltinTopicDcpsPublication, listener=self.listener
         )
@@ -295,26 +326,24 @@ class DdsGraph:
             )
             for types in discovery.values()
         ]
-        self._requests = {
-            name: DataReader(
-                self.participant,
-                Topic(self.participant, dds_topic(f"/teleop_ui/{name}"), self.string_type),
-                qos=_latched(),
-                listener=self.listener,
-            )
-            for name in REQUEST_TOPICS
-        }
+        self._requests: dict[str, Any] = {}  # /teleop_ui/<name> -> its reader
         answer = Topic(self.participant, dds_topic(ANSWER_TOPIC), self.string_type)
         self._answer_writer = DataWriter(self.participant, answer, qos=_latched())
         self._answer_reader = DataReader(self.participant, answer, qos=_latched())
+        watchers = Topic(self.participant, dds_topic(WATCHERS_TOPIC), self.string_type)
+        self._announce_writer = DataWriter(self.participant, watchers, qos=_latched())
+        self._announce_reader = DataReader(
+            self.participant, watchers, qos=_latched(MAX_ANNOUNCEMENTS), listener=self.listener
+        )
         self._descriptions = _DescriptionReaders(self, limit or MAX_XML_BYTES)
         self.descriptions: DescriptionStore = self._descriptions
         self._endpoints: dict[bytes, _Endpoint] = {}
         self._nodes: dict[bytes, dict[bytes, str]] = {}  # participant -> endpoint -> node
         self._request_values: dict[str, Any] = {}
+        self._announced: dict[str, tuple[bytes | None, Any]] = {}  # key -> (participant, value)
         self._answer_value: Any = MISSING
         self._written: str | None = None
-        self._own = self.participant.guid.bytes
+        self._announcement: str | None = None
 
     def _changed(self) -> None:
         callback = self.on_change
@@ -333,8 +362,18 @@ class DdsGraph:
     def resync(self, namespace: str) -> None:  # noqa: ARG002 - the protocol's
         self.descriptions.reset()
 
-    def running_watcher(self, node: str) -> tuple[bool, str | None]:  # noqa: ARG002
-        return False, None  # no node API to ask: a different answer is overwritten (see docs)
+    def running_watcher(self, node: str) -> tuple[bool, str | None]:
+        """Whether the watcher ``node`` runs: its name ends in its participant's GUID, and that
+        participant is on the domain with a writer of the answer topic."""
+        participant = _participant_of(node)
+        if participant is None:
+            return False, f"whose name carries no DDS participant ({shown(node)}): not a watcher's"
+        answer = dds_topic(ANSWER_TOPIC)
+        running = any(
+            e.participant == participant and e.writer and e.topic == answer
+            for e in self._endpoints.values()
+        )
+        return running, None
 
     def cut_off(self, when: float | None) -> None:
         """Nothing to cut: no call on DDS waits."""
@@ -350,6 +389,13 @@ class DdsGraph:
             self._answer_writer.write(self.string_type(text))
             self._written = text
 
+    def announce(self, value: dict[str, Any]) -> None:
+        """Publish who this watcher is on ``/teleop_ui/watchers`` (gone with the participant)."""
+        text = json.dumps(value, sort_keys=True)
+        if text != self._announcement:
+            self._announce_writer.write(self.string_type(text))
+            self._announcement = text
+
     def close(self) -> None:
         """Leave the domain: the participant and everything it made are deleted (idempotent)."""
         self.on_change = None
@@ -360,21 +406,19 @@ class DdsGraph:
         self,
         stopped: Callable[[], bool] = lambda: False,
         *,
-        quiet: float = 0.5,
-        limit: float = 5.0,
+        quiet: float = DISCOVERY_QUIET,
+        limit: float = DISCOVERY_LIMIT,
     ) -> None:
-        """Wait until discovery is quiet (nothing new for ``quiet`` seconds, at most ``limit``,
-        or until ``stopped()``): a one-shot snapshot on DDS must give the other participants
-        time to be discovered."""
+        """Wait until discovery is quiet (nothing new for ``quiet`` seconds: no endpoint,
+        node, description or robot value; at most ``limit``, or until ``stopped()``): what a
+        snapshot reports as every robot must give the other participants time to be found."""
         import time
 
         start = last_change = time.monotonic()
         seen: tuple[Any, ...] = ()
         while time.monotonic() - start < limit and not stopped():
             observation = self.observe("/teleop_ui")
-            self.descriptions.sync(
-                name for name in observation.param_names if name.endswith("/robot_description")
-            )
+            self.descriptions.sync(name for name in observation.param_names if _followed(name))
             followed = self.descriptions.keys()
             now = (observation, tuple(self.descriptions.get(key) is MISSING for key in followed))
             if now != seen:
@@ -383,19 +427,96 @@ class DdsGraph:
                 return
             time.sleep(0.05)
 
-    def observe(self, namespace: str) -> Observation:  # noqa: PLR0912 - one pass
+    def observe(self, namespace: str) -> Observation:
         """The graph now, as the watcher reads a ROS 1 master (see the module docstring)."""
         self._read_endpoints()
         self._read_discovery()
         self._descriptions.read()
+        self._follow_requests()
+        self._read_requests()
+        self._read_answer()
+        self._read_announcements()
+        publishers, subscribers, types, written = self._graph()
+        params: list[tuple[str, Any]] = sorted(self._request_values.items())
+        if self._answer_value is not MISSING:
+            params.append(("ui_configuration", self._answer_value))
+        announced = {key: value for key, (_, value) in self._announced.items()}
+        if announced:
+            params.append(("watchers", announced))
+        return Observation(
+            pid=self.domain,
+            publishers=tuple((t, tuple(sorted(n))) for t, n in sorted(publishers.items())),
+            subscribers=tuple((t, tuple(sorted(n))) for t, n in sorted(subscribers.items())),
+            topic_types=tuple(sorted(types.items())),
+            param_names=tuple(sorted(written | {f"{namespace}/{k}" for k, _ in params})),
+            params=tuple(sorted(params)),
+        )
+
+    # -- reading the domain --------------------------------------------------------------
+
+    def _graph(
+        self,
+    ) -> tuple[dict[str, set[str]], dict[str, set[str]], dict[str, str], set[str]]:
+        """Publishers, subscribers and types by ROS name, and the names of the String topics
+        that stand for parameters (descriptions, robots' own values)."""
+        node_of: dict[bytes, str] = {}
+        for nodes in self._nodes.values():
+            node_of.update(nodes)
+        publishers: dict[str, set[str]] = {}
+        subscribers: dict[str, set[str]] = {}
+        types: dict[str, str] = {}
+        written: set[str] = set()
+        for key, endpoint in self._endpoints.items():
+            named = ros_name(endpoint.topic)
+            # The watcher's own readers are not part of any robot; a service's replies say
+            # nothing a request does not.
+            if endpoint.participant == self._own or named is None or named[1] == "rr/":
+                continue
+            name, prefix = named
+            node = node_of.get(key) or f"/_participant_{endpoint.participant.hex()[:12]}"
+            # A service server reads requests: it is "subscribed" to the service, as a
+            # command; a client writes them.
+            side = publishers if endpoint.writer else subscribers
+            side.setdefault(name, set()).add(node)
+            types.setdefault(name, ros_type(endpoint.type_name))
+            if endpoint.writer and prefix == "rt/" and _parameter_like(name, endpoint.type_name):
+                written.add(name)
+        return publishers, subscribers, types, written
+
+    def _follow_requests(self) -> None:
+        """A reader for each ``/teleop_ui/<name>`` String topic someone writes (the operator's
+        ``active_*``), at most :data:`MAX_REQUEST_TOPICS`."""
+        from cyclonedds.sub import DataReader
+        from cyclonedds.topic import Topic
+
+        for endpoint in list(self._endpoints.values()):
+            named = ros_name(endpoint.topic)
+            if not endpoint.writer or named is None or endpoint.type_name != _STRING:
+                continue
+            parts = named[0].strip("/").split("/")
+            if len(parts) != 2 or parts[0] != "teleop_ui" or parts[1] in _NOT_REQUESTS:
+                continue
+            if parts[1] in self._requests or len(self._requests) >= MAX_REQUEST_TOPICS:
+                continue
+            self._requests[parts[1]] = DataReader(
+                self.participant,
+                Topic(self.participant, endpoint.topic, self.string_type),
+                qos=_latched(),
+                listener=self.listener,
+            )
+
+    def _read_requests(self) -> None:
         for name, reader in self._requests.items():
             for sample in reader.take(N=16):
                 text = getattr(sample, "data", None)
-                if isinstance(text, str):
-                    if text.strip():
-                        self._request_values[name] = text.strip()
-                    else:  # an empty string clears the selection, as deleting the parameter
-                        self._request_values.pop(name, None)
+                if not isinstance(text, str):
+                    continue
+                if text.strip():
+                    self._request_values[name] = text.strip()
+                else:  # an empty string clears the selection, as deleting the parameter
+                    self._request_values.pop(name, None)
+
+    def _read_answer(self) -> None:
         for sample in self._answer_reader.take(N=16):
             text = getattr(sample, "data", None)
             if isinstance(text, str):
@@ -404,46 +525,24 @@ class DdsGraph:
                 except ValueError:  # not JSON, too long or too deep: not an answer to keep
                     value = text
                 self._answer_value = MISSING if value is None else value
-        node_of: dict[bytes, str] = {}
-        for nodes in self._nodes.values():
-            node_of.update(nodes)
-        publishers: dict[str, set[str]] = {}
-        subscribers: dict[str, set[str]] = {}
-        types: dict[str, str] = {}
-        descriptions: set[str] = set()
-        for key, endpoint in self._endpoints.items():
-            if endpoint.participant == self._own:
-                continue  # the watcher's own readers are not part of any robot
-            named = ros_name(endpoint.topic)
-            if named is None:
+
+    def _read_announcements(self) -> None:
+        """Other watchers' announcements, by watcher; those whose participant left are gone."""
+        for sample in self._announce_reader.take(N=MAX_ANNOUNCEMENTS):
+            text = getattr(sample, "data", None)
+            try:
+                value = bounded_json(text) if isinstance(text, str) else None
+            except ValueError:
                 continue
-            name, prefix = named
-            node = node_of.get(key) or f"/_participant_{endpoint.participant.hex()[:12]}"
-            # A service server reads requests: it is "subscribed" to the service, as a
-            # command; a client writes them. Replies say nothing more.
-            if prefix == "rr/":
-                continue
-            side = publishers if endpoint.writer else subscribers
-            side.setdefault(name, set()).add(node)
-            types.setdefault(name, ros_type(endpoint.type_name))
-            if endpoint.writer and prefix == "rt/" and name.endswith("/robot_description"):
-                descriptions.add(name)
-        params: list[tuple[str, Any]] = []
-        params += [
-            (name, self._request_values[name])
-            for name in REQUEST_TOPICS
-            if name in self._request_values
-        ]
-        if self._answer_value is not MISSING:
-            params.append(("ui_configuration", self._answer_value))
-        return Observation(
-            pid=self.domain,
-            publishers=tuple((t, tuple(sorted(n))) for t, n in sorted(publishers.items())),
-            subscribers=tuple((t, tuple(sorted(n))) for t, n in sorted(subscribers.items())),
-            topic_types=tuple(sorted(types.items())),
-            param_names=tuple(sorted(descriptions | {f"{namespace}/{k}" for k, _ in params})),
-            params=tuple(params),
-        )
+            watcher = value.get("watcher") if isinstance(value, dict) else None
+            if isinstance(watcher, str) and len(watcher) <= 200:
+                self._announced[watcher.strip("/")] = (_participant_of(watcher), value)
+        alive = {endpoint.participant for endpoint in self._endpoints.values()}
+        self._announced = {
+            key: (participant, value)
+            for key, (participant, value) in list(self._announced.items())[-MAX_ANNOUNCEMENTS:]
+            if participant in alive
+        }
 
     def _read_endpoints(self) -> None:
         from cyclonedds.core import InstanceState
@@ -481,3 +580,29 @@ class DdsGraph:
         alive = {endpoint.participant for endpoint in self._endpoints.values()}
         for participant in [p for p in self._nodes if p not in alive]:
             del self._nodes[participant]
+
+
+def _participant_of(watcher: str) -> bytes | None:
+    """The participant GUID a watcher's name ends in (``..._<32 hex digits>``), or ``None``."""
+    tail = watcher.rsplit("_", 1)[-1]
+    if len(tail) != 32:
+        return None
+    try:
+        return bytes.fromhex(tail)
+    except ValueError:
+        return None
+
+
+def _parameter_like(name: str, type_name: str) -> bool:
+    """A String topic standing for a parameter: a description, or a robot's own value."""
+    if type_name != _STRING:
+        return False
+    parts = name.strip("/").split("/")
+    return parts[-1] == "robot_description" or (len(parts) >= 2 and parts[-2] == "teleop_ui")
+
+
+def _followed(name: str) -> bool:
+    """What a one-shot look reads before it reports: descriptions and robots' own values."""
+    return name.endswith("/robot_description") or (
+        "/teleop_ui/" in name and not name.startswith("/teleop_ui/")
+    )

@@ -197,13 +197,17 @@ def test_the_active_motion_control_topic_selects_as_the_ros1_parameter_does(
         operator.control("Flight")  # a UGV never flies: the default configuration, and why
         operator.activate("/ugv1")
         refused = watch.wait_for(
-            lambda d: d["event"] == "selection_changed" and d["motion_control"] == "Flight",
+            lambda d: (
+                d["event"] == "selection_changed" and d["active"]["motion_control"] == "Flight"
+            ),
             "Flight for /ugv1",
         )
         assert refused["assignment"]["default"] is True
         operator.control("Driving")
         driving = watch.wait_for(
-            lambda d: d["event"] == "selection_changed" and d["motion_control"] == "Driving",
+            lambda d: (
+                d["event"] == "selection_changed" and d["active"]["motion_control"] == "Driving"
+            ),
             "Driving for /ugv1",
         )
         assert driving["assignment"]["configuration"] == rover_configuration(solution)
@@ -342,7 +346,7 @@ def test_hostile_answers_and_a_10_mb_selection_end_in_notes_not_a_crash(
             asked = f"Driving{len(text)}"
             watch.wait_for(
                 lambda d, asked=asked: (  # type: ignore[misc]
-                    d["event"] == "selection_changed" and d["motion_control"] == asked
+                    d["event"] == "selection_changed" and d["active"]["motion_control"] == asked
                 ),
                 "the selection after a hostile answer",
                 after=mark,
@@ -399,3 +403,204 @@ def test_a_malformed_cyclonedds_uri_is_a_located_usage_error() -> None:
         "CYCLONEDDS_URI: Cyclone DDS cannot join domain 7 with this configuration "
         "('<CycloneDDS><Domain'): "
     )
+
+
+@pytest.fixture
+def watch_own_ros2(domain: Domain, tmp_path: Path) -> Iterator[Callable[..., Recorder]]:
+    """``watch_own_ros2(team_file, *set_pairs, policy=...)``: a watcher of the test's own rules
+    (:mod:`tests.live.own_rules`) on the domain, stopped afterwards."""
+    from solver.core.solution import solve
+    from solver.core.team import load_team
+    from solver.live.given import parse_fixed
+    from tests.live.own_rules import write_own
+
+    _, profile = write_own(tmp_path)
+    started: list[Recorder] = []
+
+    def start(team: str = "own-team.yaml", *pairs: str, policy: str = "yield") -> Recorder:
+        solution = solve(load_team(tmp_path / team))
+        source = DdsGraph(domain.id)
+        watcher = Watcher(
+            source.name,
+            solution,
+            profile,
+            source=source,
+            fixed=parse_fixed(pairs, solution.rules),
+            policy=policy,
+        )
+        started.append(Recorder(watcher, solution))
+        return started[-1]
+
+    yield start
+    for recorder in started:
+        recorder.stop()
+
+
+def test_synced_comes_once_the_robots_already_on_the_domain_are_discovered(
+    domain: Domain, watch_ros2: Callable[..., Recorder]
+) -> None:
+    """Issue 27: `synced` lists the robots that were there, not `[]` before discovery."""
+    domain.drone("/uav1")
+    domain.rover("/ugv1", gid_size=24)
+    watch = watch_ros2()
+    synced = watch.wait_for_event("synced")
+    assert synced["robots"] == ["/uav1", "/ugv1"]
+    before = [d["event"] for d in watch.data()][: synced["seq"]]
+    assert before == ["robot_added", "robot_added", "synced"]
+
+
+def test_the_operators_choice_of_a_characteristic_of_the_users_own_changes_the_answer_on_ros2(
+    domain: Domain, watch_own_ros2: Callable[..., Recorder]
+) -> None:
+    from tests.live.own_rules import drone, rover
+
+    domain.drone("/uav1")
+    tethered = domain.rover("/ugv1")
+    tethered.latch("/ugv1/teleop_ui/link", "Tether")  # the robot's own value
+    watch = watch_own_ros2("own-team.yaml", "/uav1:link=LTE")  # fixed for one robot
+    solution = watch.solution
+    watch.wait_for_event("synced")
+    robots = {d["robot"]: d for d in watch.data() if d["event"] == "robot_added"}
+    assert robots["/ugv1"]["given"] == {
+        "link": {"value": "Tether", "source": "/ugv1/teleop_ui/link"}
+    }
+    assert robots["/uav1"]["given"] == {"link": {"value": "LTE", "source": "--set /uav1:"}}
+    assert [m["characteristic"] for m in robots["/uav1"]["missing"]] == ["autonomy"]
+    operator = Operator(domain.id)
+    try:
+        operator.select("autonomy", "teleoperated")
+        operator.activate("/uav1")
+        first = wait_until(
+            lambda: (a := operator.answer()) and a.get("robot") == "/uav1" and a,
+            TIMEOUT,
+            "the answer for /uav1, teleoperated",
+        )
+        assert first["configuration"] == drone(solution, autonomy="teleoperated", link="LTE")
+        operator.select("autonomy", "supervised")
+        second = wait_until(
+            lambda: (
+                (a := operator.answer()) and a["combination"].get("autonomy") == "supervised" and a
+            ),
+            TIMEOUT,
+            "the answer for /uav1, supervised",
+        )
+        assert second["configuration"] == drone(solution, autonomy="supervised", link="LTE")
+        assert second["configuration"] != first["configuration"]
+        operator.activate("/ugv1")
+        third = wait_until(
+            lambda: (a := operator.answer()) and a.get("robot") == "/ugv1" and a,
+            TIMEOUT,
+            "the answer for /ugv1",
+        )
+        assert third["configuration"] == rover(solution, autonomy="supervised", link="Tether")
+        # A name the rules do not know: a located warning, nothing else changes.
+        mark = watch.mark()
+        operator.select("autonmy", "teleoperated")
+        warning = watch.wait_for_event("warning", after=mark)
+        assert warning["where"] == "/teleop_ui/active_autonmy"
+        assert warning["message"].startswith(
+            "the rule set has no characteristic 'autonmy' (did you mean 'autonomy'?)"
+        )
+    finally:
+        operator.close()
+
+
+def test_two_watchers_with_different_teams_report_each_other_and_one_answer_stands(
+    domain: Domain, watch_own_ros2: Callable[..., Recorder]
+) -> None:
+    """Issue 27: they overwrote each other's answer on every change; now each reports the
+    other (both teams), the second yields, and takes over when the first is gone."""
+    domain.drone("/uav1")
+    operator = Operator(domain.id)
+    try:
+        operator.activate("/uav1")
+        first = watch_own_ros2("own-team.yaml")
+        wait_until(
+            lambda: (a := operator.answer()) and a.get("watcher") == first.watcher.caller_id,
+            TIMEOUT,
+            "the first watcher's answer",
+        )
+        second = watch_own_ros2("other-team.yaml")
+        theirs = second.wait_for_event("rival")
+        assert (theirs["watcher"], theirs["team"], theirs["own_team"]) == (
+            first.watcher.caller_id,
+            "Own live team",
+            "Other live team",
+        )
+        ours = first.wait_for_event("rival")
+        assert (ours["watcher"], ours["team"], ours["own_team"], ours["policy"]) == (
+            second.watcher.caller_id,
+            "Other live team",
+            "Own live team",
+            "yield",
+        )
+        held = second.wait_for(
+            lambda d: (
+                d["event"] == "selection_changed"
+                and any("not written" in note for note in d["notes"])
+            ),
+            "the second watcher yielding",
+        )
+        assert held["assignment"]["team"] == "Other live team"
+        assert operator.answer()["watcher"] == first.watcher.caller_id
+        mark = second.mark()
+        first.stop()
+        assert second.wait_for_event("rival_gone", after=mark)["watcher"] == (
+            first.watcher.caller_id
+        )
+        taken = wait_until(
+            lambda: (a := operator.answer()) and a.get("watcher") == second.watcher.caller_id and a,
+            TIMEOUT,
+            "the second watcher's answer",
+        )
+        assert taken["team"] == "Other live team"
+    finally:
+        operator.close()
+
+
+def test_watch_ros2_wait_waits_for_the_first_robot(domain: Domain) -> None:
+    """Issue 27: `--wait` on DDS waits for a robot (a domain is never down)."""
+    import os
+    import signal
+    import subprocess
+    import sys
+
+    from tests.conftest import ROOT
+
+    process = subprocess.Popen(
+        [
+            sys.executable,
+            "-m",
+            "solver",
+            "watch",
+            "--ros2",
+            "--domain",
+            str(domain.id),
+            "--team",
+            "case3",
+            "--wait",
+            "--once",
+        ],
+        cwd=ROOT,
+        env=domain.env,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        start_new_session=True,
+    )
+    try:
+        assert process.stderr is not None
+        waiting = process.stderr.readline()
+        assert waiting == f"waiting for a robot on ros2://domain/{domain.id}\n"
+        domain.drone("/uav1")
+        out, err = process.communicate(timeout=TIMEOUT)
+    finally:
+        if process.poll() is None:
+            os.killpg(process.pid, signal.SIGKILL)
+        process.wait(timeout=TIMEOUT)
+    assert (process.returncode, err) == (0, "")
+    events = [json.loads(line) for line in out.splitlines()]
+    assert [(e["event"], e.get("robot")) for e in events] == [
+        ("robot_added", "/uav1"),
+        ("synced", None),
+    ]

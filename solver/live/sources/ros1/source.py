@@ -14,9 +14,13 @@ given :data:`PROBE_TIMEOUT` seconds; a node that answered is asked again only af
 now and then. A node API that is not ``http://host:port/`` (a node that registered
 ``rosrpc://evil:1/``) cannot be a watcher's.
 
+*Announcing.* :meth:`MasterGraph.announce` writes who the watcher is to the parameter
+``/teleop_ui/watchers/<its node name>`` (:mod:`solver.live.rivals`), deleted again at close.
+
 *Stopping and closing.* :meth:`MasterGraph.cut_off` ends the call under way (the watcher's
-stop); :meth:`MasterGraph.close` releases the parameter subscriptions within
-:data:`RELEASE_BUDGET` seconds in all, whatever the master does, and stops the node.
+stop); :meth:`MasterGraph.close` deletes the announcement and releases the parameter
+subscriptions within :data:`RELEASE_BUDGET` seconds in all, whatever the master does, and stops
+the node.
 
 Not here: the watcher's state machine (:mod:`solver.live.watcher`).
 """
@@ -31,7 +35,13 @@ import time
 from collections.abc import Callable
 from typing import Any, Final
 
-from solver.live.graph import DescriptionStore, MasterError, MasterUnreachable, Observation
+from solver.live.graph import (
+    ANNOUNCEMENTS,
+    DescriptionStore,
+    MasterError,
+    MasterUnreachable,
+    Observation,
+)
 from solver.live.sources.ros1.descriptions import Descriptions
 from solver.live.sources.ros1.master import MasterClient, node_api
 from solver.live.sources.ros1.node import NodeServer, callback_host
@@ -73,6 +83,7 @@ class MasterGraph:
         self.descriptions: DescriptionStore = self._descriptions
         self._rivals: dict[tuple[str, str], float] = {}  # (node, API) -> when it answered
         self._probe: MasterClient | None = None
+        self._announced: str | None = None
         self._closed = False
 
     @property
@@ -116,6 +127,13 @@ class MasterGraph:
     def delete_param(self, key: str) -> None:
         self.client.delete_param(key)
 
+    def announce(self, value: dict[str, Any]) -> None:
+        """``value`` at ``/teleop_ui/watchers/<node name>`` (deleted at :meth:`close`)."""
+        namespace = self._namespace or "/teleop_ui"
+        key = f"{namespace.rstrip('/')}/{ANNOUNCEMENTS}/{self.caller_id.strip('/')}"
+        self.client.set_param(key, value)
+        self._announced = key
+
     def running_watcher(self, node: str) -> tuple[bool, str | None]:
         """See the module docstring: the master's word on ``node``, then its own."""
         listed = self.client.lookup_node(node)
@@ -129,7 +147,10 @@ class MasterGraph:
         if answered is not None and now - answered < PROBE_AGAIN:
             return True, None
         if self._answers(api):
-            self._rivals = {(node, api): now}
+            # Several watchers may be asked in turn (an answer's writer, the announced ones):
+            # each is remembered; those not asked again lately are forgotten (bounded).
+            self._rivals = {k: t for k, t in self._rivals.items() if now - t < PROBE_AGAIN}
+            self._rivals[(node, api)] = now
             return True, None
         self._rivals.pop((node, api), None)
         return False, None  # killed without closing: the master still lists it, nobody answers
@@ -159,9 +180,13 @@ class MasterGraph:
         if self._closed:
             return
         self._closed = True
-        if self._node is not None:
+        if self._announced is not None or self._node is not None:
             # Bounded whatever the master does: it forgets a node that is gone in any case.
             self.client.cut_off(time.monotonic() + RELEASE_BUDGET)
+        if self._announced is not None:
+            with contextlib.suppress(MasterError):  # gone with the master
+                self.client.delete_param(self._announced)
+        if self._node is not None:
             if self._namespace is not None:
                 with contextlib.suppress(MasterError):  # gone with the master
                     self.client.unsubscribe_params(self._node.uri, [self._namespace])

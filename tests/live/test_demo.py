@@ -1,0 +1,120 @@
+"""``teleop-ui demo ros2``: emulated robots and an operator on loopback that a watcher follows."""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from solver.core.solution import solve
+from solver.core.team import load_team
+from solver.identify.profile import load_profile
+from solver.live.demo import LOOPBACK_CONFIG, ROBOTS, demo_team
+from solver.live.sources.ros2 import DdsGraph
+from solver.live.watcher import Watcher
+from tests.conftest import ROOT
+from tests.live.conftest import EVENT_TIMEOUT, Recorder
+from tests.live.ros2_graph import CONFIG, next_domain, write_config
+
+
+@pytest.fixture
+def loopback(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> dict[str, str]:
+    monkeypatch.setenv("CYCLONEDDS_URI", write_config(tmp_path))
+    return dict(os.environ)
+
+
+def test_the_demo_configuration_is_the_loopback_one_the_tests_use() -> None:
+    assert LOOPBACK_CONFIG == CONFIG
+
+
+def test_a_watcher_follows_the_demo_fleet_and_the_operator_gets_its_answers(
+    loopback: dict[str, str], tmp_path: Path
+) -> None:
+    domain = next_domain()
+    demo = subprocess.Popen(
+        [sys.executable, "-m", "solver", "demo", "ros2", "--domain", str(domain), "--every", "0.3"],
+        cwd=ROOT,
+        env=loopback,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        start_new_session=True,
+    )
+    solution = solve(load_team(demo_team(tmp_path)))
+    source = DdsGraph(domain)
+    watch = Recorder(Watcher(source.name, solution, load_profile(), source=source), solution)
+    try:
+        assert demo.stdout is not None
+        assert demo.stdout.readline().startswith(
+            "teleop-ui demo: Cyclone DDS configured by CYCLONEDDS_URI (as given)"
+        )
+        for robot in ROBOTS:
+            added = watch.wait_for_event("robot_added", robot.namespace)
+            configurations = [c for c in added["combinations"] if not c["default"]]
+            assert configurations, added
+        # The operator switches through every robot; the watcher answers each.
+        for robot in ROBOTS:
+            answered = watch.wait_for(
+                lambda d, name=robot.namespace: (  # type: ignore[misc]
+                    d["event"] == "selection_changed"
+                    and d["robot"] == name
+                    and d["assignment"] is not None
+                    and d["assignment"]["default"] is False
+                ),
+                f"the operator selecting {robot.namespace}",
+            )
+            assert answered["active"]["motion_control"] in robot.controls
+        while not (line := demo.stdout.readline()).startswith("  answer: UI configuration"):
+            assert line, "the demo ended before it reported an answer"
+        assert f"from {watch.watcher.caller_id}" in line
+        demo.send_signal(signal.SIGTERM)
+        assert demo.wait(timeout=EVENT_TIMEOUT) == 0
+        for robot in ROBOTS:
+            watch.wait_for_event("robot_removed", robot.namespace)
+    finally:
+        watch.stop()
+        if demo.poll() is None:
+            os.killpg(demo.pid, signal.SIGKILL)
+        demo.wait(timeout=EVENT_TIMEOUT)
+        for stream in (demo.stdout, demo.stderr):
+            if stream is not None:
+                stream.close()
+
+
+SHORT = ("--every", "0.01", "--rounds", "2")
+
+
+def test_the_demo_without_a_configuration_writes_a_loopback_one_and_says_how_to_watch(
+    tmp_path: Path,
+) -> None:
+    environment = {k: v for k, v in os.environ.items() if k != "CYCLONEDDS_URI"}
+    domain = next_domain()
+    result = subprocess.run(
+        [sys.executable, "-m", "solver", "demo", "ros2", "--domain", str(domain), *SHORT],
+        cwd=ROOT,
+        env=environment,
+        capture_output=True,
+        text=True,
+        timeout=600,
+        check=False,
+        start_new_session=True,
+    )
+    assert (result.returncode, result.stderr) == (0, "")
+    lines = result.stdout.splitlines()
+    assert lines[0] == (
+        "teleop-ui demo: Cyclone DDS configured by CYCLONEDDS_URI (loopback only); in another "
+        "terminal:"
+    )
+    assert lines[1].startswith("  CYCLONEDDS_URI=file:///")
+    assert f"teleop-ui watch --ros2 --domain {domain} --team " in lines[1]
+    assert lines[3] == f"3 emulated robots on DDS domain {domain}: /uav1, /ugv1, /arm1"
+    assert lines[4:] == [
+        "operator selects /uav1 Flight",
+        "  no answer yet (is a watcher running? teleop-ui watch --ros2 ...)",
+        "operator selects /ugv1 Driving",
+        "  no answer yet (is a watcher running? teleop-ui watch --ros2 ...)",
+    ]
