@@ -71,7 +71,7 @@ class FixedValues:
         for robot, pairs in self.per_robot:
             if robot == namespace:
                 for name, value in pairs:
-                    values[name] = GivenValue(name, value, f"--set {robot}:")
+                    values[name] = GivenValue(name, value, f"--set {robot}:{name}={value}")
         return tuple(values.values())
 
     def __bool__(self) -> bool:

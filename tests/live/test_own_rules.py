@@ -76,7 +76,7 @@ def test_the_operators_choice_of_a_characteristic_of_the_users_own_changes_the_c
     watch = watch_own("/uav1:link=LTE")
     added = watch.wait_for_event("robot_added", "/uav1")
     assert added["kinematic_type"] == "Quadcopter"
-    assert added["given"] == {"link": {"value": "LTE", "source": "--set /uav1:"}}
+    assert added["given"] == {"link": {"value": "LTE", "source": "--set /uav1:link=LTE"}}
     # Nothing gives the autonomy yet: the default, and how to give it.
     (combination,) = added["combinations"]
     assert combination["combination"] == {

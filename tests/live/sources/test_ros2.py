@@ -464,7 +464,7 @@ def test_the_operators_choice_of_a_characteristic_of_the_users_own_changes_the_a
     assert robots["/ugv1"]["given"] == {
         "link": {"value": "Tether", "source": "/ugv1/teleop_ui/link"}
     }
-    assert robots["/uav1"]["given"] == {"link": {"value": "LTE", "source": "--set /uav1:"}}
+    assert robots["/uav1"]["given"] == {"link": {"value": "LTE", "source": "--set /uav1:link=LTE"}}
     assert [m["characteristic"] for m in robots["/uav1"]["missing"]] == ["autonomy"]
     operator = Operator(domain.id)
     try:
