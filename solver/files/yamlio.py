@@ -172,20 +172,49 @@ def prescan(text: str, name: str = "<string>") -> None:
     """
     if "\x00" in text:
         raise InputError.at(name, "contains NUL bytes; is this a YAML file?")
-    open_collections = 0
     try:
-        for count, event in enumerate(yaml.parse(text, Loader=_LOADER)):
-            if isinstance(event, yaml.CollectionEndEvent):
-                open_collections -= 1
-                continue
-            if isinstance(event, yaml.NodeEvent) and open_collections > MAX_DEPTH:
-                raise _refusal(name, event, f"nested more than {MAX_DEPTH} levels deep; refused")
-            if count > MAX_EVENTS:
-                raise _refusal(name, event, f"more than {MAX_NODES} values; refused")
-            if isinstance(event, yaml.CollectionStartEvent):
-                open_collections += 1
+        _count_events(text, name)
     except yaml.YAMLError as error:
-        raise _syntax_error(name, error) from None
+        if getattr(error, "problem", None) != _LIBYAML_NEST_CAP:
+            raise _syntax_error(name, error) from None
+        # libyaml >= 0.2.5 (PyYAML 6.0.4 wheels) caps open collections at 1,000 in its
+        # scanner, which looks ahead past the 65th before handing out its event: the text
+        # before the cap holds the level too deep, and is read again to say where it opens.
+        mark = error.problem_mark
+        try:
+            _count_events(_before(text, mark), name)
+        except yaml.YAMLError:
+            pass
+        raise _refusal(name, mark, _TOO_DEEP) from None
+
+
+_TOO_DEEP = f"nested more than {MAX_DEPTH} levels deep; refused"
+_LIBYAML_NEST_CAP = "exceeded maximum nesting depth"
+
+
+def _count_events(text: str, name: str) -> None:
+    """Walk libyaml's events, refusing at the first one past :data:`MAX_DEPTH` open
+    collections or :data:`MAX_EVENTS` events; libyaml's own errors pass through."""
+    open_collections = 0
+    for count, event in enumerate(yaml.parse(text, Loader=_LOADER)):
+        if isinstance(event, yaml.CollectionEndEvent):
+            open_collections -= 1
+            continue
+        if isinstance(event, yaml.NodeEvent) and open_collections > MAX_DEPTH:
+            raise _refusal(name, event.start_mark, _TOO_DEEP)
+        if count > MAX_EVENTS:
+            raise _refusal(name, event.start_mark, f"more than {MAX_NODES} values; refused")
+        if isinstance(event, yaml.CollectionStartEvent):
+            open_collections += 1
+
+
+def _before(text: str, mark: Any) -> str:
+    """The text before a mark (its line and column, which count characters)."""
+    if mark is None:
+        return ""
+    lines = text.split("\n", mark.line)[: mark.line + 1]
+    lines[-1] = lines[-1][: mark.column]
+    return "\n".join(lines)
 
 
 def _syntax_error(name: str, error: yaml.YAMLError) -> InputError:
@@ -204,8 +233,7 @@ def _syntax_error(name: str, error: yaml.YAMLError) -> InputError:
     )
 
 
-def _refusal(name: str, event: yaml.Event, message: str) -> InputError:
-    mark = event.start_mark
+def _refusal(name: str, mark: Any, message: str) -> InputError:
     return InputError.at(
         name,
         message,
