@@ -22,6 +22,7 @@ and use
 
 from __future__ import annotations
 
+import contextlib
 from collections.abc import Collection, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -180,11 +181,9 @@ def prescan(text: str, name: str = "<string>") -> None:
         # libyaml >= 0.2.5 (PyYAML 6.0.4 wheels) caps open collections at 1,000 in its
         # scanner, which looks ahead past the 65th before handing out its event: the text
         # before the cap holds the level too deep, and is read again to say where it opens.
-        mark = error.problem_mark
-        try:
+        mark = getattr(error, "problem_mark", None)
+        with contextlib.suppress(yaml.YAMLError):
             _count_events(_before(text, mark), name)
-        except yaml.YAMLError:
-            pass
         raise _refusal(name, mark, _TOO_DEEP) from None
 
 
