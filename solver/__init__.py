@@ -15,6 +15,7 @@ The package has wings; each is a package with its own map in its docstring:
 ``untrusted``          ``shown``: a stranger's string as human-readable output may
                        show it (escaped, cut to 60 characters, marked as cut); every
                        message, text output, finding and event uses it
+``limits``             every size a command accepts, in one table (docs/security.md)
 ``files``              reading input safely (size limits, YAML with positions,
                        typed access, file kinds) and writing output atomically
 ``ros``                ROS vocabulary with no I/O: topics, message-type names
@@ -37,8 +38,9 @@ The package has wings; each is a package with its own map in its docstring:
 
 Layers, lowest first; a module imports only from its own layer or lower ones, and no module
 imports itself back through others (tests/test_architecture.py checks both):
-``errors``, ``extras``, ``untrusted`` -> ``files``, ``ros`` -> ``core``, ``engines`` ->
-``layouts`` -> ``reporting`` -> ``check``, ``identify`` -> ``live`` -> ``cli``, ``studio``.
+``errors``, ``extras``, ``untrusted``, ``limits`` -> ``files``, ``ros`` -> ``core``,
+``engines`` -> ``layouts`` -> ``reporting`` -> ``check``, ``identify`` -> ``live`` -> ``cli``,
+``studio``.
 
 Every command from Python (docs/python-api.md has worked examples):
 

@@ -26,6 +26,7 @@ __all__ = [
     "SolverError",
     "StructureTooComplex",
     "TeamError",
+    "Terminated",
     "TooLargeError",
     "did_you_mean",
 ]
@@ -121,6 +122,12 @@ class StructureTooComplex(TooLargeError):
     """
 
 
+class Terminated(BaseException):
+    """SIGTERM arrived while files were being written: like ``KeyboardInterrupt`` for SIGINT,
+    it unwinds the stack so that temporaries are removed, then the command ends (status 143).
+    Not a :class:`SolverError`: nothing was wrong with the input."""
+
+
 class MissingExtraError(SolverError, ImportError):
     """A feature needs an optional dependency that is not installed (:mod:`solver.extras`)."""
 
@@ -130,7 +137,8 @@ def _position(fault: Fault) -> tuple[str, int, int]:
     return (location.file, location.line or 0, location.column or 0)
 
 
-# A word longer than this is no misspelling of a name (names are at most 200 characters).
+# A word longer than this is no misspelling of a name (names are at most 200 characters);
+# suggestions are looked for among at most this many names.
 _MAX_SUGGESTED = 200
 
 
@@ -141,6 +149,8 @@ def did_you_mean(word: str, choices: Iterable[str]) -> str:
     if len(word) > _MAX_SUGGESTED:
         return ""  # no name is that long; difflib's time grows with the product of lengths
     options = list(choices)
+    if len(options) > _MAX_SUGGESTED:
+        return ""  # a hint is not worth a pass over 100,000 names for each misspelling
     matches = difflib.get_close_matches(word, options, n=1, cutoff=0.6)
     if not matches:
         # Abbreviations ("Mic" for "Microphone") and case slips are too short for difflib.

@@ -27,6 +27,9 @@ PRIVATE_SIGNALS = {
     # Raised by the command line's output streams when they fail (closed, full, a pipe whose
     # reader left) and ended by solver.cli.main: no SolverError, which commands may catch.
     "solver.cli._terminal.OutputFailed",
+    # SIGTERM while files are written, as KeyboardInterrupt is for SIGINT: not an input error,
+    # a BaseException so that no `except Exception` keeps a temporary (solver/files/atomic.py).
+    "solver.errors.Terminated",
 }
 # Modules whose import needs an optional extra that may be absent.
 OPTIONAL = ("solver.live.sources.ros2",)

@@ -37,6 +37,7 @@ from solver.core.team import parse_team
 from solver.errors import Fault, InputError, Location, RulesError, TeamError
 from solver.files.filekind import describe, file_kind
 from solver.files.yamlio import Document, load_document
+from solver.limits import limit
 
 __all__ = ["Report", "check_files", "is_team_document"]
 
@@ -195,6 +196,7 @@ def check_files(
         raise ValueError(f"unknown check id(s): {', '.join(unknown)}")
     run = _Run(frozenset(disable))
     files = [str(path) for path in paths]
+    limit("check-files").check(len(files), "<arguments>")
     if rules is not None and str(rules) not in files:
         files.insert(0, str(rules))
     documents: list[tuple[Path, Document]] = []

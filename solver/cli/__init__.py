@@ -26,7 +26,7 @@ from pathlib import Path
 from typing import Any
 
 from solver.cli._terminal import EscapingStream, OutputFailed
-from solver.errors import SolverError
+from solver.errors import SolverError, Terminated
 
 __all__ = ["main"]
 
@@ -82,6 +82,9 @@ def main(argv: Sequence[str] | None = None) -> int:
         if failing is not stderr:
             _say(f"teleop-ui: {failed}")
         return 2
+    except Terminated:
+        print("terminated", file=sys.stderr)
+        return 143
     except BrokenPipeError:
         # A progress bar on the terminal itself (a rich console) lost its reader.
         _to_null(stdout)

@@ -116,10 +116,14 @@ def run(args: argparse.Namespace) -> int:
 
         raise InputError.at("TEAM.yaml", "a team is needed (or --robot URDF --team TEAM)")
     from solver.layouts.plan import check_namespace
-    from solver.layouts.writer import write_layout_folder
+    from solver.layouts.writer import check_layout_count, write_layout_folder
 
     namespace = check_namespace(args.namespace, "--namespace") if args.namespace else None
     team = load_team_argument(args.team, args.rules)
+    # Counted first (by structure, in milliseconds): a team of 50,000 configurations is
+    # refused before anything is solved, built or written.
+    counted = solve(team, count_only=True).totals.ui_configurations
+    check_layout_count(counted, args.output, extra=1 if args.preview else 0)
     solution = solve(team)
     # A user's presentation is checked against the rule set; the shipped one serves every one.
     presentation = load_presentation(

@@ -39,10 +39,13 @@ def register(subparsers: Any) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from solver.core.solution import solve
+    from solver.reporting.plot import check_chart_size
     from solver.reporting.report import report_format, write_report
 
     report_format(args.output)  # an unusable file name fails before any solving
-    solution = solve(load_team_argument(args.team, args.rules))
+    team = load_team_argument(args.team, args.rules)
+    check_chart_size(team)  # so does a team too large to draw
+    solution = solve(team)
     for path in write_report(solution, args.output):
         print(f"wrote {shown(str(path), limit=SHOWN_FILE_NAME_CHARS)}", file=sys.stderr)
     return 0

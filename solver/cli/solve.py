@@ -52,7 +52,7 @@ def register(subparsers: Any) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from solver.core.solution import solve
-    from solver.reporting.render import render_solution
+    from solver.reporting.render import render_solution, solution_chunks
 
     if args.plot:
         from solver.reporting.plot import plot_format
@@ -61,6 +61,10 @@ def run(args: argparse.Namespace) -> int:
     from solver.cli._progress import working
 
     team = load_team_argument(args.team, args.rules)
+    if args.plot:
+        from solver.reporting.plot import check_chart_size
+
+        check_chart_size(team)  # a team too large to draw is refused before it is solved
     with working(f"solving {team.name}", fmt=args.format):
         solution = solve(
             team, engine=args.engine, count_only=args.count_only, max_robots=args.max_robots
@@ -71,5 +75,11 @@ def run(args: argparse.Namespace) -> int:
         from solver.reporting.plot import write_plot
 
         write_plot(solution, args.plot, args.plot_kind)
-    write(render_solution(solution, args.format, configurations=args.list and solution.listed))
+    listed = args.list and solution.listed
+    if args.format in ("json", "csv"):
+        # Streamed: 450,000 configurations are 330 MB of JSON, never held whole.
+        for chunk in solution_chunks(solution, args.format, configurations=listed):
+            write(chunk)
+    else:
+        write(render_solution(solution, args.format, configurations=listed))
     return 0

@@ -215,7 +215,9 @@ def _partition_equivalence(
 
 
 def _ordered(rules: RuleSet, sets: list[set[Value]]) -> tuple[tuple[Value, ...], ...]:
+    """Each set in domain order, in the time of its own values (a pass over the whole domain
+    per configuration made listing 20,000 configurations of 5,000 counts take seconds)."""
     return tuple(
-        tuple(v for v in c.values if v in values)
+        tuple(sorted(values, key=c.positions.__getitem__))
         for c, values in zip(rules.characteristics, sets, strict=True)
     )

@@ -32,6 +32,7 @@ from solver.errors import Location, RulesError, did_you_mean
 from solver.files.filekind import require_kind
 from solver.files.reader import Reader, type_name
 from solver.files.yamlio import Document, PathPart, load_document
+from solver.limits import limit
 from solver.untrusted import shown
 
 __all__ = [
@@ -52,9 +53,9 @@ Kind = Literal["categorical", "integer"]
 YPath = tuple[PathPart, ...]
 T = TypeVar("T")
 
-# The largest integer domain a rule set may declare; a typo such as max: 10000000000 would
-# otherwise allocate a tuple of ten billion values.
-MAX_INTEGER_VALUES = 100_000
+# The largest domain a characteristic may declare by default (the ``values`` limit of
+# solver/limits.py); a typo such as max: 10000000000 would otherwise allocate ten billion.
+MAX_INTEGER_VALUES = limit("values").value
 
 _RULES_KEYS = {
     "name",
@@ -285,6 +286,11 @@ class RuleSet:
     def names(self) -> tuple[str, ...]:
         return tuple(c.name for c in self.characteristics)
 
+    @cached_property
+    def positions(self) -> dict[str, int]:
+        """Characteristic name -> its position in :attr:`characteristics`."""
+        return {name: index for index, name in enumerate(self.names)}
+
     @property
     def key(self) -> Characteristic:
         """The characteristic team files are keyed by (the kinematic type)."""
@@ -451,7 +457,11 @@ def _read_characteristics(reader: Reader) -> list[Characteristic]:
             "a rule set needs at least one characteristic",
             code="missing-field",
         )
+    reader.within(limit("characteristics"), len(section), ("characteristics",), key=True)
     found = []
+    # Ranges are no YAML values, so the reader's bound does not hold them: count them here.
+    values = 0
+    components = 0
     for name in section:
         if not name.strip() or not name.isprintable():
             reader.fault(
@@ -465,6 +475,11 @@ def _read_characteristics(reader: Reader) -> list[Characteristic]:
         characteristic = _read_characteristic(reader, ("characteristics", name), name)
         if characteristic is not None:
             found.append(characteristic)
+            values += len(characteristic.values)
+            reader.within(limit("all-values"), values, ("characteristics", name), key=True)
+            if characteristic.declared_components:
+                components += len(characteristic.components)
+                reader.within(limit("components"), components, ("characteristics", name), key=True)
     return found
 
 
@@ -519,6 +534,9 @@ def _read_characteristic(reader: Reader, path: YPath, name: str) -> Characterist
 
 
 def _read_categorical_values(reader: Reader, path: YPath, name: str) -> tuple[str, ...]:
+    raw = reader.get(path)
+    if isinstance(raw, list):
+        reader.within(limit("values"), len(raw), path, noun=f"values of {shown(name, quoted=True)}")
     items = reader.names(path, f"values of {shown(name, quoted=True)}")
     seen: dict[str, YPath] = {}
     for item_path, value in items:
@@ -578,14 +596,12 @@ def _read_integer_range(reader: Reader, path: YPath, name: str) -> Run | tuple[(
             code="out-of-range",
         )
         return ()
-    if high - low + 1 > MAX_INTEGER_VALUES:
-        reader.fault(
-            path,
-            f"range of {shown(name, quoted=True)} has {high - low + 1} values; at most "
-            f"{MAX_INTEGER_VALUES} are supported",
-            code="out-of-range",
-        )
-        return ()
+    reader.within(
+        limit("values"),
+        high - low + 1,
+        path,
+        noun=f"values in the range of {shown(name, quoted=True)}",
+    )
     return Run(range(low, high + 1))
 
 
@@ -601,6 +617,11 @@ def _read_components(
             code="wrong-type",
         )
         return ()
+    reader.within(limit("components"), len(raw), path, noun=f"components of {name!r}")
+    # Each value's position, made once: a component's members are looked up and put in domain
+    # order in the time of its own values (20,000 components took minutes when each walked the
+    # whole domain).
+    positions = {str(value): index for index, value in enumerate(values)}
     components: list[Component] = []
     names: dict[str, YPath] = {}
     for index in range(len(raw)):
@@ -630,7 +651,7 @@ def _read_components(
             location=reader.document.location(item_path),
         )
         if kind == "categorical":
-            members = _read_members(reader, (*item_path, "values"), name, values)
+            members = _read_members(reader, (*item_path, "values"), name, values, positions)
             components.append(replace(component, values=members))
         else:
             components.append(_read_arrangement(reader, item_path, component, values))
@@ -638,15 +659,18 @@ def _read_components(
 
 
 def _read_members(
-    reader: Reader, path: YPath, name: str, values: tuple[Value, ...]
+    reader: Reader,
+    path: YPath,
+    name: str,
+    values: tuple[Value, ...],
+    positions: dict[str, int],
 ) -> tuple[Value, ...]:
-    known = {str(v) for v in values}
     members: set[str] = set()
     for item_path, value in reader.names(path, "component values"):
-        if value not in known:
+        if value not in positions:
             reader.fault(
                 item_path,
-                f"unknown {name} value {shown(value, quoted=True)}{did_you_mean(value, known)}",
+                f"unknown {name} value {shown(value, quoted=True)}{did_you_mean(value, positions)}",
                 code="unknown-reference",
             )
         elif value in members:
@@ -656,7 +680,7 @@ def _read_members(
                 code="duplicate-value",
             )
         members.add(value)
-    return tuple(v for v in values if v in members)
+    return tuple(values[i] for i in sorted(positions[v] for v in members if v in positions))
 
 
 def _read_arrangement(
@@ -697,11 +721,11 @@ def _read_arrangement(
             )
         elif size is not None:
             cluster_size = size
-    members = tuple(
-        v
-        for v in values
-        if isinstance(v, int) and (low is None or v >= low) and (high is None or v <= high)
-    )
+    # The counts are a run low..high: the members are a slice of it, found by arithmetic.
+    first, last = int(values[0]), int(values[-1])
+    start = first if low is None else max(low, first)
+    stop = last if high is None else min(high, last)
+    members = tuple(values[start - first : stop - first + 1]) if start <= stop else ()
     return replace(component, values=members, low=low, high=high, cluster_size=cluster_size)
 
 
@@ -716,11 +740,15 @@ def _read_constraints(
             ("constraints",), f"constraints must be a list, got {type_name(raw)}", code="wrong-type"
         )
         return []
+    reader.within(limit("constraints"), len(raw), ("constraints",), key=True)
     found = []
+    named = 0  # values the conditions name: a {min, max} over 100,000 counts names them all
     for index in range(len(raw)):
         constraint = _read_constraint(reader, ("constraints", index), index, characteristics)
         if constraint is not None:
             found.append(constraint)
+            named += sum(len(c.allowed) for c in (*constraint.when, *constraint.conditions))
+            reader.within(limit("condition-values"), named, ("constraints", index))
     return found
 
 

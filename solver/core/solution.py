@@ -176,11 +176,14 @@ def solve(
     configurations: list[Configuration] = []
     proven = True
     memo = Memo()
-    for selection in team.selections:
-        method, counts = engines.choose(team, selection, engine, max_robots, memo)
+    chosen = [
+        engines.choose(team, selection, engine, max_robots, memo) for selection in team.selections
+    ]
+    if not count_only:
+        engines.check_listing(team, chosen, memo, max_configurations)
+    for selection, (method, free) in zip(team.selections, chosen, strict=True):
         if count_only:
-            if counts is None:
-                counts = engines.lookup(method).count(rules, selection, memo)
+            counts = free or engines.lookup(method).count(rules, selection, memo)
             summaries.append(
                 TypeSummary(
                     selection.kinematic_type,
@@ -191,14 +194,6 @@ def solve(
                 )
             )
             continue
-        if counts is not None and counts.ui_configurations > max_configurations:
-            raise TooLargeError.at(
-                team.file,
-                f"{selection.kinematic_type}: listing "
-                f"{counts.ui_configurations} UI configurations "
-                f"is refused (more than {max_configurations}); "
-                "use --count-only for the counts",
-            )
         part = engines.lookup(method).partition(rules, selection, memo)
         proven = proven and part.proven_minimal
         summaries.append(

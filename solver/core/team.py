@@ -41,6 +41,7 @@ from solver.errors import InputError, Location, TeamError, did_you_mean
 from solver.files.filekind import require_kind
 from solver.files.reader import Reader
 from solver.files.yamlio import Document, load_document
+from solver.limits import limit
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
 __all__ = [
@@ -232,6 +233,7 @@ def _read_published(reader: Reader, top: dict[str, object]) -> Published | None:
 
 def _read_selections(reader: Reader, rules: RuleSet) -> tuple[TypeSelection, ...]:
     section = reader.mapping(("team",), "team (a mapping of kinematic type -> selections)")
+    reader.within(limit("kinematic-types"), len(section), ("team",), key=True)
     key = rules.key
     if not section and isinstance(reader.get(("team",)), dict):
         reader.fault(("team",), "the team selects no kinematic type", code="empty-selection")

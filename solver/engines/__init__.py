@@ -37,10 +37,12 @@ from __future__ import annotations
 
 import importlib
 from collections.abc import Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from functools import cached_property
 from typing import TYPE_CHECKING, Protocol, cast
 
-from solver.errors import InputError, StructureTooComplex, TooLargeError
+from solver.errors import Fault, InputError, Location, StructureTooComplex, TooLargeError
+from solver.limits import Limit, limit
 
 if TYPE_CHECKING:
     from solver.core.constraints import Value
@@ -57,15 +59,16 @@ __all__ = [
     "NAMES",
     "Counts",
     "Engine",
+    "check_listing",
     "choose",
     "describe",
     "lookup",
 ]
 
 # Enumerating more robots than this is refused unless the caller raises the limit.
-MAX_ROBOTS = 10**8
+MAX_ROBOTS = limit("robots").value
 # Listing more UI configurations than this is refused; counting them is not.
-MAX_CONFIGURATIONS = 10**6
+MAX_CONFIGURATIONS = limit("configurations").value
 
 # What each engine does, in the words reports and `solve` print beside the counts.
 DESCRIPTIONS = {
@@ -125,15 +128,20 @@ def lookup(name: str) -> Engine:
 
 
 def choose(
-    team: Team, selection: TypeSelection, name: str, max_robots: int, memo: Memo
+    team: Team,
+    selection: TypeSelection,
+    name: str,
+    max_robots: int,
+    memo: Memo,
 ) -> tuple[str, Counts | None]:
     """Which engine solves ``selection`` when ``name`` is asked for, and its counts when they
     came for free (the structure counted them on the way).
 
-    ``auto`` takes the structure where it applies and ``fast`` elsewhere. A selection larger
-    than ``max_robots`` is counted by structure whatever the engine, so the refusal says how
-    many robots there would really be. :class:`~solver.errors.TooLargeError` when enumerating
-    would exceed ``max_robots``.
+    ``auto`` takes the structure where it applies and ``fast`` elsewhere. Before any engine
+    enumerates, its limits are checked (``max_robots``; the csp engine's ``csp-robots``, the
+    fast engine's ``fast-rows``): a selection whose cheap upper bounds exceed one is counted
+    by structure first, so the refusal says how many there would really be.
+    :class:`~solver.errors.TooLargeError` when a limit would be exceeded.
     """
     if name not in NAMES:
         raise InputError.at(
@@ -141,7 +149,13 @@ def choose(
         )
     counts = None
     reason = ""
-    if name in ("auto", "structure") or selection.size > max_robots:
+    bounds = _Bounds(team.rules, selection)
+    over = (
+        selection.size > max_robots
+        or (name == "csp" and limit("csp-robots").exceeded(selection.size))
+        or (name in ("auto", "fast") and limit("fast-rows").exceeded(bounds.rows))
+    )
+    if name in ("auto", "structure") or over:
         try:
             counts = lookup("structure").count(team.rules, selection, memo)
         except StructureTooComplex as error:
@@ -155,8 +169,8 @@ def choose(
             if name in ("auto", "structure"):
                 return "structure", counts
     robots = selection.size if counts is None else counts.valid_robots
+    exact = "" if counts is not None else "up to "
     if robots > max_robots:
-        exact = "" if counts is not None else "up to "
         raise TooLargeError.at(
             team.file,
             f"{selection.kinematic_type}: enumerating {exact}"
@@ -164,7 +178,107 @@ def choose(
             f"{max_robots}, see --max-robots){reason}; use "
             "--count-only for exact counts without enumeration",
         )
-    return ("fast" if name == "auto" else name), counts
+    chosen = "fast" if name == "auto" else name
+    if chosen == "csp":
+        _refuse(team, selection, limit("csp-robots"), robots, bound=counts is None, reason=reason)
+    if chosen == "fast":
+        # The fast engine enumerates value classes (robots where components overlap).
+        _refuse(team, selection, limit("fast-rows"), bounds.rows, bound=False, reason=reason)
+    return chosen, counts
+
+
+def check_listing(
+    team: Team, chosen: list[tuple[str, Counts | None]], memo: Memo, max_configurations: int
+) -> None:
+    """Refuse, before any is built, to list more than ``max_configurations`` UI configurations
+    for the whole team (``chosen``: what :func:`choose` gave each of its kinematic types).
+
+    Types without exact counts are bounded by the components their values reach; only when
+    the bounds add up to too many are they counted (by structure where that applies).
+    """
+    found: list[tuple[int, bool]] = []  # (configurations, exact) per type
+    for selection, (_, counts) in zip(team.selections, chosen, strict=True):
+        if counts is not None:
+            found.append((counts.ui_configurations, True))
+        else:
+            found.append((_Bounds(team.rules, selection).configurations, False))
+    if sum(n for n, _ in found) > max_configurations:
+        for index, (selection, (method, _)) in enumerate(zip(team.selections, chosen, strict=True)):
+            if not found[index][1]:
+                try:
+                    counted = lookup("structure").count(team.rules, selection, memo)
+                except StructureTooComplex:
+                    # Counting by enumeration builds no configuration; its limits held.
+                    counted = lookup(method).count(team.rules, selection, memo)
+                found[index] = (counted.ui_configurations, True)
+    total = sum(n for n, _ in found)
+    which = replace(limit("configurations"), value=max_configurations)
+    if which.exceeded(total):
+        raise TooLargeError.at(
+            team.file,
+            f"{team.name}: {which.message(total)}; use --count-only for exact counts "
+            "without listing",
+        )
+
+
+def _refuse(
+    team: Team, selection: TypeSelection, which: Limit, size: int, *, bound: bool, reason: str
+) -> None:
+    """A located :class:`~solver.errors.TooLargeError` when ``size`` is over ``which``."""
+    if which.exceeded(size):
+        location = selection.location or Location(team.file)
+        message = which.message(size, bound=bound)
+        raise TooLargeError(
+            Fault(
+                location,
+                f"{selection.kinematic_type}: {message}{reason}; to count without "
+                "enumerating, use --engine auto with --count-only",
+                "too-large",
+            )
+        )
+
+
+class _Bounds:
+    """Upper bounds of what enumerating a selection costs, from its domains alone."""
+
+    def __init__(self, rules: RuleSet, selection: TypeSelection) -> None:
+        self.rules = rules
+        self.selection = selection
+
+    @cached_property
+    def rows(self) -> int:
+        """Rows the fast engine would enumerate: value classes where every value is in one
+        component, else robots."""
+        rules = self.rules
+        if not all(c.is_partition for c in rules.characteristics):
+            return self.selection.size
+        total = 1
+        for position, domain in enumerate(self.selection.domains):
+            if len(domain) == len(rules.characteristics[position].values):
+                total *= len(rules.value_classes[position])
+            elif len(domain) > 1:
+                index = rules.value_class_index[position]
+                total *= len({index[value] for value in domain})
+        return total
+
+    @cached_property
+    def configurations(self) -> int:
+        """At most the product of the numbers of components the selected values reach."""
+        total = 1
+        for characteristic, domain in zip(
+            self.rules.characteristics, self.selection.domains, strict=True
+        ):
+            if len(domain) == len(characteristic.values):
+                total *= len(characteristic.components)
+                continue
+            membership, positions = characteristic.membership, characteristic.index
+            reached: set[int] = set()
+            for value in domain:
+                position = positions(value)
+                if position is not None:
+                    reached.update(membership[position])
+            total *= len(reached)
+        return total
 
 
 def _message(error: StructureTooComplex) -> str:

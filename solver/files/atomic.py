@@ -1,11 +1,18 @@
 """Writing output files atomically: a temporary file in the same folder, then a rename.
 
-An interrupted run (Ctrl-C, a crash, a full disk) leaves either the old file or the new one,
-never half of one. Every command that writes files goes through :func:`write_atomic`, or
-:func:`write_all_atomic` when its files belong together (a Markdown report and its charts):
-then either every file is written or none is changed.
+An interrupted run (Ctrl-C, SIGTERM, a crash, a full disk) leaves either the old file or the
+new one, never half of one, and no temporary: while temporaries exist, SIGTERM is turned into
+:class:`~solver.errors.Terminated` (as SIGINT is a ``KeyboardInterrupt``) so that they are
+removed before the process ends. Every command that writes files goes through
+:func:`write_atomic`, or :func:`write_all_atomic` when its files belong together (a Markdown
+report and its charts): then either every file is written or none is changed.
 
-Not here: deciding what to write or where.
+What one call writes is bounded (the ``written-bytes`` limit, :mod:`solver.limits`): content
+given whole is measured before any file is created; content given as chunks (a listing
+streamed as it is made) stops at the limit, its temporaries removed and no file changed.
+
+Not here: deciding what to write or where (nor how many files: ``written-files`` is checked
+by the commands that write many, :mod:`solver.layouts.writer`).
 """
 
 from __future__ import annotations
@@ -15,13 +22,18 @@ import os
 import shutil
 import stat
 import tempfile
-from collections.abc import Mapping
+from collections.abc import Iterable, Iterator, Mapping
+from dataclasses import replace
 from pathlib import Path
 
-from solver.errors import Fault, InputError, Location
+from solver.errors import Fault, InputError, Location, Terminated, TooLargeError
+from solver.limits import limit
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
-__all__ = ["make_folder", "write_all_atomic", "write_atomic"]
+__all__ = ["Content", "make_folder", "write_all_atomic", "write_atomic"]
+
+# A file's content: whole, or chunks written as they come (never all in memory at once).
+Content = str | bytes | Iterable[str | bytes]
 
 
 def make_folder(path: str | Path) -> Path:
@@ -41,28 +53,23 @@ def make_folder(path: str | Path) -> Path:
     return folder
 
 
-def write_atomic(path: str | Path, content: str | bytes) -> Path:
-    """Write ``content`` to ``path`` atomically; :class:`InputError` if the folder is unusable."""
+def write_atomic(path: str | Path, content: Content) -> Path:
+    """Write ``content`` to ``path`` atomically; :class:`InputError` if the folder is unusable,
+    :class:`~solver.errors.TooLargeError` past the ``written-bytes`` limit."""
     return write_all_atomic({path: content})[0]
 
 
-def write_all_atomic(files: Mapping[str | Path, str | bytes]) -> list[Path]:
+def write_all_atomic(files: Mapping[str | Path, Content]) -> list[Path]:
     """Write every file of ``files`` or none; the paths written, in the mapping's order.
 
     Every target is checked first (a folder, device, pipe or socket in the way is reported
-    for all of them at once: renaming onto ``/dev/full`` as root would replace the device),
-    then every content goes to a temporary file beside its target, and only then are they
-    renamed into place. A rename that still fails puts back the files renamed before it.
+    for all of them at once: renaming onto ``/dev/full`` as root would replace the device;
+    whole contents past the ``written-bytes`` limit together are refused), then every content
+    goes to a temporary file beside its target, and only then are they renamed into place. A
+    rename that still fails puts back the files renamed before it.
     """
-    # backslashreplace: a file name that is not UTF-8 (its bytes arrive as surrogate escapes)
-    # is written as "\udcff", readable text, instead of failing the whole write.
-    targets = [
-        (
-            Path(path),
-            content.encode("utf-8", "backslashreplace") if isinstance(content, str) else content,
-        )
-        for path, content in files.items()
-    ]
+    budget = limit("written-bytes").value
+    targets = [(Path(path), _encoded(content)) for path, content in files.items()]
     faults = [
         Fault(Location(_shown(target)), problem, "invalid")
         for target, _ in targets
@@ -70,16 +77,67 @@ def write_all_atomic(files: Mapping[str | Path, str | bytes]) -> list[Path]:
     ]
     if faults:
         raise InputError(faults)
+    whole = sum(len(data) for _, data in targets if isinstance(data, bytes))
+    if whole > budget:
+        _refuse(targets[0][0], whole, budget, "bytes to write")
     temporaries: list[tuple[Path, Path]] = []
-    try:
-        for target, data in targets:
-            temporaries.append((_temporary(target, data), target))
-        _replace_all(temporaries)
-    finally:
-        for temporary, _ in temporaries:
-            with contextlib.suppress(OSError):
-                temporary.unlink()  # gone already when renamed into place
+    with _terminable():
+        try:
+            written = 0  # by the files before, against the same budget
+            for target, data in targets:
+                temporary, written = _temporary(target, data, written, budget)
+                temporaries.append((temporary, target))
+            _replace_all(temporaries)
+        finally:
+            for temporary, _ in temporaries:
+                with contextlib.suppress(OSError):
+                    temporary.unlink()  # gone already when renamed into place
     return [target for target, _ in targets]
+
+
+def _encoded(content: Content) -> bytes | Iterator[bytes]:
+    """``content`` as bytes, or as an iterator of byte chunks when it came in chunks."""
+    # backslashreplace: a file name that is not UTF-8 (its bytes arrive as surrogate escapes)
+    # is written as "\udcff", readable text, instead of failing the whole write.
+    if isinstance(content, str):
+        return content.encode("utf-8", "backslashreplace")
+    if isinstance(content, bytes):
+        return content
+    return (
+        chunk.encode("utf-8", "backslashreplace") if isinstance(chunk, str) else chunk
+        for chunk in content
+    )
+
+
+def _refuse(target: Path, size: int, budget: int, noun: str) -> None:
+    which = replace(limit("written-bytes"), value=budget)
+    raise TooLargeError(which.fault(Location(_shown(target)), size, noun=noun))
+
+
+@contextlib.contextmanager
+def _terminable() -> Iterator[None]:
+    """While temporaries may exist: SIGTERM raises :class:`Terminated` (in the main thread,
+    where Python runs signal handlers) instead of ending the process on the spot, so the
+    ``finally`` above removes them. A handler someone else installed is left alone."""
+    import signal
+    import threading
+
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    previous = signal.getsignal(signal.SIGTERM)
+    if previous is not signal.SIG_DFL:
+        yield
+        return
+
+    def stop(number: int, _frame: object) -> None:
+        raise Terminated(number)
+
+    signal.signal(signal.SIGTERM, stop)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
 
 
 def _shown(path: str | Path) -> str:
@@ -108,8 +166,11 @@ def _in_the_way(target: Path) -> str | None:
     return "is a device, a pipe or a socket, not a file; refused: writing would replace it"
 
 
-def _temporary(target: Path, data: bytes) -> Path:
-    """``data`` in a new temporary file in ``target``'s folder (created if needed)."""
+def _temporary(
+    target: Path, data: bytes | Iterator[bytes], written: int, budget: int
+) -> tuple[Path, int]:
+    """``data`` in a new temporary file in ``target``'s folder (created if needed), and the
+    bytes ``written`` with it; :class:`TooLargeError` (and no temporary) past ``budget``."""
     folder = target.parent if str(target.parent) else Path(".")
     try:
         folder.mkdir(parents=True, exist_ok=True)
@@ -124,7 +185,11 @@ def _temporary(target: Path, data: bytes) -> Path:
     temporary = Path(name)
     try:
         with os.fdopen(handle, "wb") as stream:
-            stream.write(data)
+            for chunk in (data,) if isinstance(data, bytes) else data:
+                written += len(chunk)
+                if written > budget:
+                    _refuse(target, written, budget, "bytes or more to write")
+                stream.write(chunk)
             stream.flush()
             os.fsync(stream.fileno())
         # mkstemp makes the file private (0600); give it the mode a plain write would have.
@@ -138,7 +203,7 @@ def _temporary(target: Path, data: bytes) -> Path:
                 _shown(target), f"cannot write: {error.strerror or error}"
             ) from None
         raise
-    return temporary
+    return temporary, written
 
 
 def _replace_all(temporaries: list[tuple[Path, Path]]) -> None:

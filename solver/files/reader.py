@@ -13,8 +13,9 @@ from __future__ import annotations
 from collections.abc import Collection, Sequence
 from typing import Any
 
-from solver.errors import Fault, did_you_mean
+from solver.errors import Fault, TooLargeError, did_you_mean
 from solver.files.yamlio import Document, PathPart
+from solver.limits import Limit
 from solver.untrusted import shown
 
 __all__ = ["MAX_NAME_CHARS", "Reader", "type_name"]
@@ -58,6 +59,21 @@ class Reader:
     ) -> None:
         location = self.document.location(path, key=key)
         self.faults.append(Fault(location, message, code))
+
+    def within(
+        self,
+        limit: Limit,
+        size: int,
+        path: Sequence[PathPart],
+        *,
+        key: bool = False,
+        noun: str | None = None,
+    ) -> None:
+        """Refuse the whole file at once (:class:`~solver.errors.TooLargeError`, located at
+        ``path``) when ``size`` is over ``limit``: nothing past it is read or built."""
+        if limit.exceeded(size):
+            location = self.document.location(path, key=key)
+            raise TooLargeError(limit.fault(location, size, noun=noun))
 
     def get(self, path: Sequence[PathPart]) -> Any:
         """The raw value at ``path`` (``None`` when absent)."""

@@ -52,6 +52,7 @@ from solver.identify.roles import Role
 from solver.identify.sensors import Detection, Sensor, merge, presented_count, sensors_from_urdf
 from solver.identify.xacro.compiler import compile_xacro, is_xacro
 from solver.layouts.plan import JointStart
+from solver.limits import limit
 from solver.ros.names import Topic
 
 __all__ = [
@@ -201,6 +202,9 @@ def identify(
     from the file: :mod:`solver.identify.xacro.compiler`); any other file is read as URDF.
     """
     file = str(description)
+    # How many files were given is known before any is read: refuse first, read nothing.
+    limit("topic-lists").check(len(topic_lists), "--topics")
+    limit("bags").check(len(bags), "--bag")
     notes: tuple[str, ...] = ()
     if is_xacro(file):
         if not trust_xacro:
@@ -217,7 +221,12 @@ def identify(
     else:
         text = read_bytes(description)
     srdf_text = None if srdf is None else read_bytes(srdf)
-    sources = [TopicSource(Path(t).name, read_topic_list(t)) for t in topic_lists]
+    sources = []
+    read = 0  # topic lines of all the lists together count against one limit
+    for topics_file in topic_lists:
+        topics = read_topic_list(topics_file, before=read)
+        read += len(topics)
+        sources.append(TopicSource(Path(topics_file).name, topics))
     sources += [TopicSource(f"bag {Path(b).name}", read_bag_topics(b)) for b in bags]
     return identify_urdf(
         text,

@@ -12,20 +12,29 @@ from __future__ import annotations
 
 import json
 import re
+from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
 from solver.core.partition import Configuration
 from solver.core.solution import Solution
 from solver.errors import InputError
-from solver.files.atomic import make_folder, write_all_atomic
+from solver.files.atomic import Content, make_folder, write_all_atomic
 from solver.layouts.foxglove import layout_filename
 from solver.layouts.plan import Robot
 from solver.layouts.presentation import Presentation
 from solver.layouts.targets import TARGETS, target
+from solver.limits import limit
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
-__all__ = ["FORMATS", "PREVIEW", "FolderWrite", "write_layout_folder", "write_layouts"]
+__all__ = [
+    "FORMATS",
+    "PREVIEW",
+    "FolderWrite",
+    "check_layout_count",
+    "write_layout_folder",
+    "write_layouts",
+]
 
 FORMATS = tuple(TARGETS)
 PREVIEW = "preview.html"
@@ -74,8 +83,15 @@ def write_layout_folder(
 ) -> FolderWrite:
     """Every configuration's layout for the robot under ``namespace`` (None: templates, see
     :mod:`solver.layouts.plan`), and with ``preview`` a page of their thumbnails
-    (:data:`PREVIEW`, foxglove only), written into ``directory`` as one unit."""
+    (:data:`PREVIEW`, foxglove only), written into ``directory`` as one unit.
+
+    More files than the ``written-files`` limit are refused before any layout is built.
+    Without a preview each layout is built as its file is written, so the layouts are never
+    all in memory and the ``written-bytes`` limit stops a team whose layouts would fill the
+    disk; on any refusal no file is changed.
+    """
     chosen = target(fmt)
+    check_layout_count(len(solution.configurations), directory, extra=1 if preview else 0)
     folder = Path(directory)
     robot = Robot(namespace)
     numbered: list[tuple[str, Configuration | None]] = [
@@ -89,14 +105,18 @@ def write_layout_folder(
             None,
         )
     )
-    texts = {
-        name: chosen.render(solution, configuration, presentation, file=name, robot=robot)
-        for name, configuration in numbered
-    }
+
+    def built(name: str, configuration: Configuration | None) -> Iterator[str]:
+        yield chosen.render(solution, configuration, presentation, file=name, robot=robot)
+
+    texts: dict[str, Content] = {name: built(name, c) for name, c in numbered}
     if preview:
         from solver.layouts.preview import preview_html
 
-        texts[PREVIEW] = preview_html([(name, json.loads(text)) for name, text in texts.items()])
+        # The preview draws every layout: these are built first, all of them.
+        made = {name: "".join(text) for name, text in texts.items()}  # type: ignore[arg-type]
+        made[PREVIEW] = preview_html([(name, json.loads(text)) for name, text in made.items()])
+        texts = dict(made)
     make_folder(folder)
     before = _ours(folder)
     paths = write_all_atomic({folder / name: text for name, text in texts.items()})
@@ -104,6 +124,16 @@ def write_layout_folder(
     for name in removed:
         (folder / name).unlink(missing_ok=True)
     return FolderWrite(tuple(paths), tuple(sorted(before & set(texts))), tuple(removed))
+
+
+def check_layout_count(configurations: int, directory: str | Path, *, extra: int = 0) -> None:
+    """Refuse to write the layouts of ``configurations`` (and the default's, and ``extra``
+    more files) when they are more files than the ``written-files`` limit."""
+    limit("written-files").check(
+        configurations + 1 + extra,
+        str(directory),
+        noun="files to write (a layout per UI configuration and the default's)",
+    )
 
 
 def _ours(folder: Path) -> set[str]:

@@ -8,11 +8,12 @@
 2. :func:`plan` gives each file its outputs in the ``teams/`` folder of the output folder,
    mirroring the files' folders below their deepest common folder (``teams/a/x.yaml`` ->
    ``OUT/teams/a/x.json``), and decides which are already up to date.
-3. :func:`run_batch` solves the rest, in worker processes when asked, and yields one
-   :class:`Outcome` per team as it finishes. A bad team file is an outcome with its located
-   error, never an exception that stops the others. A rule set or an identification profile
-   (:func:`solver.files.filekind.file_kind`; a folder such as ``rules/`` holds all kinds) is
-   *skipped*.
+3. :func:`run_batch` solves the rest in worker processes (one, or as many as asked) and
+   yields one :class:`Outcome` per team as it finishes. A bad team file is an outcome with its
+   located error, never an exception that stops the others; a team that crashes its worker
+   (a signal) fails alone, and a fresh worker takes the teams after it. A rule set or an
+   identification profile (:func:`solver.files.filekind.file_kind`; a folder such as
+   ``rules/`` holds all kinds) is *skipped*.
 4. :func:`write_summary` writes ``summary.csv`` and ``summary.md``: one row per team in input
    order, naming each team's rule set.
 
@@ -48,7 +49,7 @@ from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, replace
 from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, Literal
+from typing import TYPE_CHECKING, Any, Literal, cast
 
 from solver.core.contracts import solution_data
 from solver.core.rules import default_rules_path, shipped_name
@@ -59,14 +60,18 @@ from solver.files.atomic import write_atomic
 from solver.files.filekind import describe, file_kind, why
 from solver.files.inputfile import read_text, sha256_bounded
 from solver.files.yamlio import MAX_FILE_BYTES, load_document
+from solver.limits import limit
 from solver.reporting import markdown
-from solver.reporting.render import csv_row, dumps
+from solver.reporting.plot import check_chart_size
+from solver.reporting.render import csv_row, dumps, solution_chunks
 from solver.reporting.report import image_names, write_report
 from solver.untrusted import SHOWN_FILE_NAME_CHARS
 from solver.untrusted import shown as shown_text
 
 if TYPE_CHECKING:
-    from concurrent.futures import Future
+    from multiprocessing.connection import Connection
+    from multiprocessing.context import ForkServerContext, SpawnContext
+    from multiprocessing.process import BaseProcess
 
 __all__ = [
     "Job",
@@ -215,6 +220,7 @@ def find_teams(patterns: Sequence[str]) -> list[tuple[Path, str]]:
             if resolved not in seen:
                 seen.add(resolved)
                 found.append((Path(match), shown_as or match))
+                limit("batch-teams").check(len(found), pattern, noun="team files or more")
     if faults:
         raise InputError(faults)
     return found
@@ -389,9 +395,12 @@ def run_job(job: Job) -> Outcome:
         rules_file = _rules_file(job, document.data)
         rules_hash = _sha256(rules_file)
         team = parse_team(document, job.rules, folder=job.team_file.parent)
+        if job.report is not None:
+            check_chart_size(team)  # before solving: a report of it could not be drawn
         solution = solve(team)
-        data = solution_data(solution, configurations=True)
-        write_atomic(job.output, dumps(data))
+        data = solution_data(solution)  # the summary row's figures
+        # The JSON of `solve --format json --list`, streamed into the file.
+        write_atomic(job.output, solution_chunks(solution, "json", configurations=True))
         if job.report is not None:
             write_report(solution, job.report)
         stamp = {
@@ -426,8 +435,11 @@ def _up_to_date(job: Job) -> Outcome:
 def run_batch(jobs: Sequence[Job], workers: int = 1) -> Iterator[Outcome]:
     """Outcomes of ``jobs``: the up-to-date ones first, the others as they finish.
 
-    With ``workers`` > 1 teams are solved in that many processes; the order of their outcomes
-    is then the order they finish in (the summary restores input order).
+    Teams are solved in ``workers`` worker processes (at least one, whatever the count), each
+    solving team after team: a team that crashes its worker (a signal, the kernel's memory
+    limit) fails alone, with the signal named, a fresh worker takes the teams after it, and
+    the batch always ends with every team's outcome. With several workers the order of the
+    outcomes is the order they finish in (the summary restores input order).
     """
     pending = []
     for job in jobs:
@@ -435,53 +447,109 @@ def run_batch(jobs: Sequence[Job], workers: int = 1) -> Iterator[Outcome]:
             yield _up_to_date(job)
         else:
             pending.append(job)
-    if workers <= 1 or len(pending) <= 1:
-        for job in pending:
-            yield run_job(job)
-        return
-    # Imported here: only a parallel run needs them, and `import solver` stays quick.
+    if pending:
+        yield from _in_workers(pending, workers)
+
+
+def _in_workers(jobs: Sequence[Job], workers: int) -> Iterator[Outcome]:
+    """Each job in a worker process; a worker that dies fails its own job only."""
+    # Imported here: only solving needs them, and `import solver` stays quick.
+    import collections
     import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor, as_completed
-    from concurrent.futures.process import BrokenProcessPool
+    from multiprocessing.connection import wait
 
     # Not fork: the caller may be running threads (a progress bar's refresh thread), and a
     # forked child can inherit a lock some thread held. forkserver starts workers from a
     # clean single-threaded server.
-    methods = multiprocessing.get_all_start_methods()
-    context = multiprocessing.get_context("forkserver" if "forkserver" in methods else "spawn")
-    with ProcessPoolExecutor(
-        max_workers=min(workers, len(pending)),
-        mp_context=context,
-        initializer=_watch_parent,
-        initargs=(os.getpid(),),
-    ) as pool:
-        futures: dict[Future[Outcome], Job] = {pool.submit(run_job, job): job for job in pending}
-        for future in as_completed(futures):
-            try:
-                yield future.result()
-            except BrokenProcessPool as error:
-                # A worker died (killed, out of memory): its team and those queued behind
-                # it fail; the rest of the batch is reported as usual.
-                job = futures[future]
-                yield Outcome(
-                    job,
-                    "failed",
-                    SummaryRow(
-                        file=job.shown,
-                        status="failed",
-                        message=f"{job.shown}: the worker process solving it died ({error})",
-                    ),
-                )
+    context: ForkServerContext | SpawnContext = (
+        multiprocessing.get_context("forkserver")
+        if "forkserver" in multiprocessing.get_all_start_methods()
+        else multiprocessing.get_context("spawn")
+    )
+    queue = collections.deque(jobs)
+    busy: dict[Connection, tuple[BaseProcess, Job]] = {}
+
+    def start() -> tuple[BaseProcess, Connection]:
+        mine, theirs = context.Pipe()
+        process = context.Process(
+            target=_worker, args=(theirs, os.getpid()), name="teleop-ui batch worker", daemon=True
+        )
+        process.start()
+        theirs.close()
+        return process, mine
+
+    def hand(process: BaseProcess, connection: Connection) -> None:
+        job = queue.popleft()
+        connection.send(job)
+        busy[connection] = (process, job)
+
+    try:
+        for _ in range(min(max(workers, 1), len(queue))):
+            hand(*start())
+        while busy:
+            for ready in wait(list(busy)):
+                connection = cast("Connection", ready)
+                process, job = busy.pop(connection)
+                try:
+                    outcome: Outcome = connection.recv()
+                except (EOFError, OSError):  # the worker died solving this team
+                    connection.close()
+                    process.join()
+                    outcome = _died(job, process.exitcode)
+                    if queue:
+                        process, connection = start()
+                yield outcome
+                if queue:
+                    hand(process, connection)
+                elif not connection.closed:
+                    connection.send(None)  # no more work: the worker returns
+                    connection.close()
+                    process.join(timeout=5)
+    finally:  # interrupted (Ctrl-C, an error in the caller): stop the workers still solving
+        for connection, (process, _) in busy.items():
+            process.terminate()
+            connection.close()
+            process.join(timeout=5)
+
+
+def _died(job: Job, exitcode: int | None) -> Outcome:
+    """The outcome of a team whose worker ended without answering."""
+    import signal
+
+    how = f"exit status {exitcode}"
+    if exitcode is not None and exitcode < 0:
+        try:
+            how = f"killed by {signal.Signals(-exitcode).name}"
+        except ValueError:
+            how = f"killed by signal {-exitcode}"
+    message = f"{job.shown}: the worker process solving it died ({how}); the other teams go on"
+    _remove_outputs(job)
+    return Outcome(job, "failed", SummaryRow(file=job.shown, status="failed", message=message))
+
+
+def _worker(connection: Connection, batch_pid: int) -> None:
+    """A worker process: solve the teams it is handed, one at a time, until told to stop."""
+    _watch_parent(batch_pid)
+    while True:
+        try:
+            job = connection.recv()
+        except EOFError:  # the batch is gone
+            return
+        if job is None:
+            return
+        connection.send(run_job(job))
 
 
 def _watch_parent(batch_pid: int) -> None:
-    """In a worker: exit as soon as the batch process is gone.
+    """In a worker: end as soon as the batch process is gone.
 
-    A ``kill -9`` of the batch gives it no chance to stop its pool; the forkserver then exits,
-    but workers waiting for (or solving) a team would live on, and the resource tracker with
-    them. A daemon thread checks every half second that the batch process still exists and
-    that this worker's parent (the forkserver, or the batch itself under spawn) is the same.
+    A ``kill -9`` of the batch gives it no chance to stop its workers; they would live on. A
+    daemon thread checks every half second that the batch process still exists and that this
+    worker's parent (the forkserver, or the batch itself under spawn) is the same; when not,
+    it sends the worker SIGTERM, so a file being written removes its temporary
+    (:mod:`solver.files.atomic`), and ends it outright a second later.
     """
+    import signal
     import threading
 
     parent = os.getppid()
@@ -491,12 +559,15 @@ def _watch_parent(batch_pid: int) -> None:
             time.sleep(0.5)
             try:
                 os.kill(batch_pid, 0)
+                gone = False
             except ProcessLookupError:
-                os._exit(1)  # no cleanup to do: the batch that wanted the results is gone
+                gone = True
             except PermissionError:
-                pass  # the pid exists (reused by someone else's process: the ppid check below)
-            if os.getppid() != parent:
-                os._exit(1)
+                gone = False  # the pid exists (reused by someone else's: the ppid check below)
+            if gone or os.getppid() != parent:
+                os.kill(os.getpid(), signal.SIGTERM)
+                time.sleep(1.0)
+                os._exit(1)  # no cleanup left to do: the batch that wanted the results is gone
 
     threading.Thread(target=watch, name="watch-batch", daemon=True).start()
 

@@ -39,11 +39,12 @@ from typing import TYPE_CHECKING, Literal
 
 from solver.core.constraints import Value
 from solver.core.rules import Characteristic, Run
+from solver.limits import Limit, limit
 from solver.untrusted import shown
 
 if TYPE_CHECKING:
     from solver.core.solution import Solution
-    from solver.core.team import Team
+    from solver.core.team import Team, TypeSelection
 
 __all__ = [
     "BarsChart",
@@ -55,6 +56,7 @@ __all__ = [
     "Spoke",
     "Stroke",
     "bars_chart",
+    "check_chart_size",
     "component_matrix",
     "matrix_chart",
     "radar_axes",
@@ -528,8 +530,36 @@ def _reach(title: Label) -> float:
     return abs(title.x) + text_width(title.text, title.size, bold=title.bold) / _UNIT + 0.03
 
 
+def check_chart_size(team: Team) -> None:
+    """Refuse, before anything is solved or drawn, a team too large for a chart: more kinematic
+    types than the ``chart-types`` limit (5,000 types made a figure wider than matplotlib
+    draws, after 30 s of work), located at the first type past it; more characteristics than
+    ``chart-characteristics`` (each is a spoke of the radar); or a type of more robots than
+    ``chart-robots`` (a bar's height is a float)."""
+    rules = team.rules
+    limit("chart-characteristics").check(
+        len(rules.characteristics), rules.file, path="characteristics"
+    )
+    types = limit("chart-types")
+    if types.exceeded(len(team.selections)):
+        _refuse(team, team.selections[types.value], types, len(team.selections))
+    robots = limit("chart-robots")
+    for selection in team.selections:
+        if robots.exceeded(selection.size):
+            _refuse(team, selection, robots, selection.size)
+
+
+def _refuse(team: Team, selection: TypeSelection, which: Limit, size: int) -> None:
+    at = selection.location
+    if at is None:
+        which.check(size, team.file, path="team")
+    else:
+        which.check(size, at.file, line=at.line, column=at.column, path=at.path)
+
+
 def radar_chart(solution: Solution) -> RadarChart:
     """The team's radar chart (the article's Figure 9)."""
+    check_chart_size(solution.team)
     team = solution.team
     axes = radar_axes(team)
     # The drawing is 3 radius units wide (spokes plus labels); its height follows the spokes,
@@ -612,6 +642,7 @@ def nice_ticks(highest: int, most: int = 6) -> tuple[int, ...]:
 
 def bars_chart(solution: Solution) -> BarsChart:
     """Valid robots beside UI configurations, one pair of bars per kinematic type."""
+    check_chart_size(solution.team)
     summaries = solution.by_type
     categories = tuple(textwrap.fill(chart_text(s.kinematic_type), 12) for s in summaries)
     width, height = max(5.0, 1.5 + 1.3 * len(categories)), 4.6
@@ -737,6 +768,7 @@ def matrix_chart(solution: Solution) -> MatrixChart:
     column per component (grouped by characteristic); a cell's shade is the share of the
     type's valid robots whose configuration uses the component, its text the number of
     configurations that do. Blank: the type never needs it."""
+    check_chart_size(solution.team)
     rows, columns, cells = component_matrix(solution)
     totals = {s.kinematic_type: s.valid_robots for s in solution.by_type}
     shares = [

@@ -43,6 +43,7 @@ from solver.reporting.chart import (
     MatrixChart,
     RadarChart,
     bars_chart,
+    check_chart_size,
     matrix_chart,
     radar_chart,
 )
@@ -58,6 +59,7 @@ __all__ = [
     "PLOT_FORMATS",
     "PLOT_KINDS",
     "bars_figure",
+    "check_chart_size",
     "figure_bytes",
     "literal_text",
     "matrix_figure",

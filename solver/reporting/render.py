@@ -13,17 +13,19 @@ import csv
 import io
 import json
 import re
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from typing import Any
 
 from solver.core.assignment import Assignment
 from solver.core.contracts import (
     assignment_data,
+    configuration_data,
     counts_data,
     integer_runs,
     solution_data,
     solution_warnings,
 )
+from solver.core.partition import Configuration
 from solver.core.reproduce import Comparison, published_note
 from solver.core.rules import Characteristic, Component
 from solver.core.solution import Solution
@@ -42,6 +44,7 @@ __all__ = [
     "render_comparisons",
     "render_counts",
     "render_solution",
+    "solution_chunks",
     "text_table",
 ]
 
@@ -133,9 +136,12 @@ def csv_row(values: Sequence[Any]) -> list[Any]:
 
 
 def _csv(headers: Sequence[str], rows: Sequence[Sequence[Any]]) -> str:
+    return _csv_rows([headers, *rows])
+
+
+def _csv_rows(rows: Sequence[Sequence[Any]]) -> str:
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerow(csv_row(headers))
     writer.writerows(csv_row(row) for row in rows)
     return buffer.getvalue()
 
@@ -171,11 +177,13 @@ def _runs_text(numbers: Sequence[int]) -> str:
     )
 
 
-def _configuration_rows(solution: Solution) -> tuple[list[str], list[list[Any]]]:
+def _configuration_rows(
+    solution: Solution, configurations: Sequence[Configuration] | None = None
+) -> tuple[list[str], list[list[Any]]]:
     rules = solution.rules
     headers = ["#", *(c.label for c in rules.characteristics), "robots"]
     rows = []
-    for configuration in solution.configurations:
+    for configuration in solution.configurations if configurations is None else configurations:
         rows.append(
             [
                 configuration.number,
@@ -204,15 +212,8 @@ _SUMMARY_HEADERS = [
 
 def render_solution(solution: Solution, fmt: str = "text", *, configurations: bool = False) -> str:
     """A solution in ``fmt`` (one of :data:`FORMATS`); ``configurations`` adds the list."""
-    if fmt == "json":
-        return dumps(solution_data(solution, configurations=configurations))
-    if fmt == "csv":
-        if configurations:
-            headers, rows = _configuration_rows(solution)
-            return _csv(
-                ["number", *solution.rules.names, "valid_robots"],
-                [[row[0], *row[1:-1], row[-1]] for row in rows],
-            )
+    if fmt in ("json", "csv"):
+        return "".join(solution_chunks(solution, fmt, configurations=configurations))
         return _csv(
             ["kinematic_type", "valid_robots", "ui_configurations", "reduction_ratio"],
             _summary_rows(solution),
@@ -241,6 +242,50 @@ def render_solution(solution: Solution, fmt: str = "text", *, configurations: bo
         headers, rows = _configuration_rows(solution)
         text += "\n" + text_table(headers, rows, [True] + [False] * (len(headers) - 2) + [True])
     return text
+
+
+# Configurations per chunk of a streamed listing: few writes, little memory.
+_CHUNK = 500
+
+
+def solution_chunks(
+    solution: Solution, fmt: str = "json", *, configurations: bool = False
+) -> Iterator[str]:
+    """:func:`render_solution` as JSON or CSV, in chunks of a few hundred configurations: the
+    same text, never all in memory (450,000 configurations are 330 MB of JSON)."""
+    if fmt == "csv":
+        if not configurations:
+            yield _csv(
+                ["kinematic_type", "valid_robots", "ui_configurations", "reduction_ratio"],
+                _summary_rows(solution),
+            )
+            return
+        yield _csv(["number", *solution.rules.names, "valid_robots"], [])
+        for start in range(0, len(solution.configurations), _CHUNK):
+            _, rows = _configuration_rows(solution, solution.configurations[start : start + _CHUNK])
+            yield _csv_rows(rows)
+        return
+    if fmt != "json":
+        raise ValueError(f"fmt must be json or csv (got {fmt!r})")
+    head = dumps(solution_data(solution))
+    if not configurations:
+        yield head
+        return
+    # The configurations are the last field: the head without its closing brace, then each
+    # configuration as json.dumps(indent=2) writes it two levels down.
+    listed = solution.configurations
+    yield head[: -len("\n}\n")] + ',\n  "configurations": ' + ("[" if listed else "[]")
+    rules = solution.rules
+    for start in range(0, len(listed), _CHUNK):
+        yield "".join(
+            ("," if start or index else "")
+            + "\n    "
+            + json.dumps(configuration_data(rules, c), indent=2, ensure_ascii=False).replace(
+                "\n", "\n    "
+            )
+            for index, c in enumerate(listed[start : start + _CHUNK])
+        )
+    yield ("\n  ]" if listed else "") + "\n}\n"
 
 
 def render_counts(solution: Solution, fmt: str = "text") -> str:

@@ -91,5 +91,10 @@ def test_enumerating_more_than_the_limit_is_refused_with_the_count(write_file: W
 
 def test_listing_more_configurations_than_the_limit_is_refused() -> None:
     team = load_team(TEAMS / "case3.yaml")
-    with pytest.raises(TooLargeError, match="listing 48 UI configurations is refused"):
+    # The limit holds for the whole team (102 configurations), refused before any is built.
+    with pytest.raises(
+        TooLargeError,
+        match=r"Case 3: 102 UI configurations to list; at most 40 are accepted "
+        r"\(limit 'configurations'",
+    ):
         solve(team, max_configurations=40)

@@ -1,14 +1,23 @@
-"""Atomic writes replace a regular file or make a new one, and nothing else."""
+"""Atomic writes replace a regular file or make a new one, and nothing else; all files or none,
+no temporary left (Ctrl-C and SIGTERM included), and no more bytes than ``written-bytes``."""
 
 from __future__ import annotations
 
 import os
+import signal
+import subprocess
+import sys
+import time
+from collections.abc import Iterator
+from dataclasses import replace
 from pathlib import Path
 
 import pytest
 
-from solver.errors import InputError
+from solver import limits
+from solver.errors import InputError, TooLargeError
 from solver.files.atomic import make_folder, write_all_atomic, write_atomic
+from tests.conftest import ROOT
 
 
 def test_a_file_is_written_and_a_regular_file_replaced(tmp_path: Path) -> None:
@@ -56,3 +65,96 @@ def test_an_output_folder_is_made_or_refused_when_a_file_is_there(tmp_path: Path
         make_folder(tmp_path / "notes.txt" / "inside")
     with pytest.raises(InputError, match="cannot make this folder: File name too long"):
         make_folder(tmp_path / ("x" * 300))
+
+
+def _lower(monkeypatch: pytest.MonkeyPatch, name: str, value: int) -> None:
+    # pylint: disable=protected-access
+    monkeypatch.setitem(limits._BY_NAME, name, replace(limits.limit(name), value=value))
+
+
+def test_chunks_are_written_as_the_same_file_as_the_whole_text(tmp_path: Path) -> None:
+    whole, chunked = tmp_path / "whole.txt", tmp_path / "chunked.txt"
+    write_atomic(whole, "ab\ncd é\n")
+    chunks: list[str | bytes] = ["ab\n", "cd ", b"\xc3\xa9", "\n"]
+    write_atomic(chunked, iter(chunks))
+    assert chunked.read_bytes() == whole.read_bytes() == "ab\ncd é\n".encode()
+
+
+def test_whole_contents_past_written_bytes_are_refused_before_any_file_is_made(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    _lower(monkeypatch, "written-bytes", 10)
+    write_all_atomic({tmp_path / "a": "12345", tmp_path / "b": "67890"})  # 10 bytes: accepted
+    with pytest.raises(TooLargeError) as caught:
+        write_all_atomic({tmp_path / "c": "12345", tmp_path / "d": "678901"})
+    assert "11 bytes to write; at most 10 are accepted (limit 'written-bytes'" in str(caught.value)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a", "b"]
+
+
+def test_chunks_past_written_bytes_stop_the_write_and_change_no_file(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    _lower(monkeypatch, "written-bytes", 10)
+    kept = tmp_path / "kept.txt"
+    kept.write_text("old")
+    made: list[int] = []
+
+    def endless() -> Iterator[str]:
+        while True:
+            made.append(1)
+            yield "1234"
+
+    with pytest.raises(TooLargeError, match=r"14 bytes or more to write; at most 10 are"):
+        write_all_atomic({tmp_path / "new.txt": "ab", kept: endless()})
+    assert len(made) == 3  # the chunk past the limit is the last one asked for
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["kept.txt"]
+    assert kept.read_text() == "old"
+
+
+_SLOW_WRITER = """
+import sys, time
+from solver.files.atomic import write_all_atomic
+
+def chunks(marker):
+    yield "first part\\n"
+    open(marker, "w").close()  # the test waits for this: a temporary exists now
+    while True:
+        time.sleep(0.05)
+        yield "more\\n"
+
+folder = sys.argv[1]
+write_all_atomic({folder + "/a.txt": "done", folder + "/b.txt": chunks(folder + "/../marker")})
+"""
+
+
+@pytest.mark.parametrize(
+    ("sent", "status"),
+    [(signal.SIGTERM, 1), (signal.SIGINT, -signal.SIGINT)],
+    ids=["SIGTERM", "SIGINT"],
+)
+def test_a_write_stopped_by_a_signal_leaves_no_temporary_and_no_file(
+    tmp_path: Path, sent: signal.Signals, status: int
+) -> None:
+    folder = tmp_path / "out"
+    folder.mkdir()
+    marker = tmp_path / "marker"
+    process = subprocess.Popen(
+        [sys.executable, "-c", _SLOW_WRITER, str(folder)],
+        cwd=ROOT,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+    try:
+        while not marker.exists():  # the event: both temporaries exist
+            assert process.poll() is None, process.stderr.read() if process.stderr else ""
+            time.sleep(0.01)
+        assert any(path.name.endswith(".tmp") for path in folder.iterdir())
+        process.send_signal(sent)
+        _, stderr = process.communicate(timeout=60)
+    finally:
+        process.kill()
+    # The exception (Terminated, KeyboardInterrupt) unwound the write and ended the script.
+    assert process.returncode == status, stderr
+    assert ("Terminated" if sent == signal.SIGTERM else "KeyboardInterrupt") in stderr
+    assert list(folder.iterdir()) == []

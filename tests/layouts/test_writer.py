@@ -1,13 +1,23 @@
-"""``layouts TEAM -o DIR`` writes the folder as one unit and says what it replaced."""
+"""``layouts TEAM -o DIR`` writes the folder as one unit, says what it replaced, obeys the
+``written-files`` limit, and a run stopped by SIGTERM leaves nothing behind."""
 
 from __future__ import annotations
 
 import json
+import signal
+import subprocess
+import sys
+import time
+from dataclasses import replace
 from pathlib import Path
 
-from solver import load_team, solve
-from solver.layouts import load_presentation
+import pytest
+
+from solver import limits, load_team, solve
+from solver.errors import TooLargeError
+from solver.layouts import load_presentation, write_layouts
 from solver.layouts.writer import write_layout_folder
+from solver.limits import limit
 from tests.conftest import ROOT, run_cli
 
 
@@ -101,3 +111,62 @@ def test_a_robot_whose_name_is_no_ros2_name_needs_a_namespace(tmp_path: Path) ->
     )
     assert named.returncode == 0, named.stderr
     assert '"/rover/' in out.read_text()
+
+
+def _team(folder: Path, configurations: int) -> Path:
+    """A team whose configurations are one per value of a characteristic: small layouts."""
+    values = ", ".join(f"v{i}" for i in range(configurations))
+    (folder / "rules.yaml").write_text(
+        f"name: many\ncharacteristics:\n  kinematic_type:\n    values: [UGV]\n"
+        f"  motion_control:\n    values: [{values}]\n",
+        encoding="utf-8",
+    )
+    team = folder / "team.yaml"
+    team.write_text("name: many\nrules: rules.yaml\nteam:\n  UGV: {}\n", encoding="utf-8")
+    return team
+
+
+def test_layouts_of_more_files_than_the_limit_are_refused_before_solving(tmp_path: Path) -> None:
+    most = limit("written-files").value
+    out = tmp_path / "out"
+    result = run_cli("layouts", _team(tmp_path, most), "-o", out)
+    assert result.returncode == 2, result.stderr
+    assert f"{out}: {most + 1} files to write" in result.stderr
+    assert f"at most {most} are accepted (limit 'written-files'" in result.stderr
+    assert not out.exists()
+
+
+def test_layouts_up_to_the_limit_are_written(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setitem(limits._BY_NAME, "written-files", replace(limit("written-files"), value=10))
+    solution = solve(load_team(_team(tmp_path, 9)))
+    written = write_layouts(solution, load_presentation(), tmp_path / "out")
+    assert len(written) == 10 == len(list((tmp_path / "out").iterdir()))
+    more = solve(load_team(_team(tmp_path, 10)))
+    with pytest.raises(TooLargeError, match=r"11 files to write"):
+        write_layouts(more, load_presentation(), tmp_path / "more")
+    assert not (tmp_path / "more").exists()
+
+
+def test_layouts_stopped_by_sigterm_leave_no_temporary_and_no_layout(tmp_path: Path) -> None:
+    out = tmp_path / "out"
+    process = subprocess.Popen(
+        [sys.executable, "-m", "solver", "layouts", _team(tmp_path, 1500), "-o", out],
+        cwd=ROOT,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+    try:
+        # The event: the first temporaries are written (each is written and synced in turn).
+        while not (out.is_dir() and any(p.suffix == ".tmp" for p in out.iterdir())):
+            assert process.poll() is None, process.communicate()
+            time.sleep(0.005)
+        process.send_signal(signal.SIGTERM)
+        _, stderr = process.communicate(timeout=60)
+    finally:
+        process.kill()
+    assert process.returncode == 143, stderr
+    assert stderr.strip() == "terminated"
+    assert list(out.iterdir()) == []  # no temporary, and all layouts or none

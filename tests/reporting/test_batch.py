@@ -418,3 +418,64 @@ def test_batch_refuses_an_empty_pattern_instead_of_batching_the_current_folder(
     assert status == 2
     assert f"<arguments>: empty pattern {pattern!r}: name team files, folders or globs" in stderr
     assert not (tmp_path / "out").exists()
+
+
+# ---- a team that crashes its worker ---------------------------------------------------------
+
+
+def _workers(batch: int) -> list[int]:
+    """The batch's worker processes: its grandchildren (the forkserver, a child of the batch,
+    forks the workers; the resource tracker is a child too, with no children)."""
+    parents = {}
+    for entry in Path("/proc").iterdir():
+        try:
+            parents[int(entry.name)] = int(
+                (entry / "stat").read_text().rsplit(")", 1)[1].split()[1]
+            )
+        except (ValueError, OSError, IndexError):
+            continue
+    return [pid for pid, parent in parents.items() if parents.get(parent) == batch]
+
+
+@pytest.mark.parametrize("others", [0, 1], ids=["alone", "with a team after it"])
+def test_a_team_whose_worker_is_killed_fails_alone_and_the_summary_is_written(
+    tmp_path: Path, others: int
+) -> None:
+    import signal
+    import subprocess
+    import time
+
+    from tests.conftest import ROOT
+
+    folder = tmp_path / "teams"
+    folder.mkdir()
+    shutil.copy(RULES / "paper.yaml", tmp_path / "paper.yaml")
+    shutil.copy(TEAMS / "case3.yaml", folder / "a-crashes.yaml")  # its worker gets SIGSEGV
+    for number in range(others):
+        shutil.copy(TEAMS / "case1.yaml", folder / f"b-after-{number}.yaml")
+    out = tmp_path / "out"
+    process = subprocess.Popen(
+        [sys.executable, "-m", "solver", "batch", folder, "-o", out, "--jobs", "1"],
+        cwd=ROOT,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+    try:
+        # The first worker is handed the first team as soon as it starts: it dies holding it.
+        while not (workers := _workers(process.pid)):
+            assert process.poll() is None, process.communicate()
+            time.sleep(0.005)
+        os.kill(workers[0], signal.SIGSEGV)
+        _, stderr = process.communicate(timeout=300)
+    finally:
+        process.kill()
+    assert process.returncode == 1, stderr
+    assert "Traceback" not in stderr
+    rows = _summary(out)
+    crashed = rows[str(folder / "a-crashes.yaml")]
+    assert crashed["status"] == "failed"
+    assert "the worker process solving it died (killed by SIGSEGV)" in crashed["message"]
+    assert [row["status"] for name, row in rows.items() if "b-after" in name] == ["ok"] * others
+    assert (out / "summary.md").is_file()
+    assert not (out / "teams" / "a-crashes.json").exists()

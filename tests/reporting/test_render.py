@@ -3,9 +3,11 @@ made."""
 
 from __future__ import annotations
 
+from pathlib import Path
+
 from solver import load_team, solve
-from solver.core.contracts import integer_runs
-from solver.reporting.render import csv_cell, method_text
+from solver.core.contracts import integer_runs, solution_data
+from solver.reporting.render import csv_cell, dumps, method_text, solution_chunks
 from tests.conftest import TEAMS
 
 
@@ -27,3 +29,44 @@ def test_the_method_says_which_engine_counted_in_words() -> None:
         method_text(solve(team, engine="csp"))
         == "robots enumerated with python-constraint (csp engine)"
     )
+
+
+def test_a_streamed_json_listing_is_the_json_of_the_solution_in_chunks(tmp_path: Path) -> None:
+    # 1,200 configurations: three chunks of configurations between the head and the tail.
+    (tmp_path / "rules.yaml").write_text(
+        "name: wide\ncharacteristics:\n  kinematic_type:\n    values: [UGV, UAV]\n"
+        "  sensor_count:\n    range: {min: 1, max: 600}\n",
+        encoding="utf-8",
+    )
+    (tmp_path / "team.yaml").write_text(
+        "name: wide\nrules: rules.yaml\nteam:\n  UGV: {}\n  UAV: {}\n", encoding="utf-8"
+    )
+    for team in (load_team(tmp_path / "team.yaml"), load_team(TEAMS / "case3.yaml")):
+        solution = solve(team)
+        for listed in (True, False):
+            chunks = list(solution_chunks(solution, "json", configurations=listed))
+            assert "".join(chunks) == dumps(solution_data(solution, configurations=listed))
+    assert len(chunks) == 1
+    assert (
+        len(
+            list(
+                solution_chunks(
+                    solve(load_team(tmp_path / "team.yaml")), "json", configurations=True
+                )
+            )
+        )
+        == 5
+    )
+
+
+def test_a_streamed_csv_listing_is_the_whole_csv_in_chunks() -> None:
+    import csv
+    import io
+
+    solution = solve(load_team(TEAMS / "case3.yaml"))
+    rows = list(
+        csv.reader(io.StringIO("".join(solution_chunks(solution, "csv", configurations=True))))
+    )
+    assert rows[0] == ["number", *solution.rules.names, "valid_robots"]
+    assert len(rows) == 1 + solution.totals.ui_configurations
+    assert [int(row[0]) for row in rows[1:]] == [c.number for c in solution.configurations]

@@ -31,9 +31,10 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-from solver.errors import Fault, InputError, Location
+from solver.errors import Fault, InputError, Location, TooLargeError
 from solver.files.inputfile import read_text
 from solver.identify.readers.safexml import MAX_XML_BYTES
+from solver.limits import limit
 from solver.ros.names import Topic, normalise_type
 from solver.untrusted import shown
 
@@ -48,24 +49,36 @@ _NAME = re.compile(r"^/?[A-Za-z~{][\w/{}~]*$")
 _HEAD = re.compile(r"^\s*(?:\*\s*)?/[A-Za-z~{][\w/{}~]*(?:\s|$)")
 
 
-def read_topic_list(path: str | Path, *, display: str | None = None) -> tuple[Topic, ...]:
-    """Read a topic list file (see the module docstring)."""
+def read_topic_list(
+    path: str | Path, *, display: str | None = None, before: int = 0
+) -> tuple[Topic, ...]:
+    """Read a topic list file (see the module docstring); ``before``: topic lines read from
+    the other lists of the same command, which count against the same limit."""
     name = display if display is not None else str(path)
     text = read_text(path, display=name, limit=MAX_XML_BYTES, what="topic list")
-    return parse_topic_list(text, name)
+    return parse_topic_list(text, name, before=before)
 
 
-def parse_topic_list(text: str, name: str = "<topics>") -> tuple[Topic, ...]:
+def parse_topic_list(text: str, name: str = "<topics>", *, before: int = 0) -> tuple[Topic, ...]:
     """Parse topic list text; :class:`InputError` lists every malformed line (see the module
-    docstring for when a file is not read as a topic list at all)."""
+    docstring for when a file is not read as a topic list at all).
+
+    More topic lines than the ``topics`` limit (with the ``before`` lines of other lists) is
+    refused at the line past it, before that line is read."""
     faults: list[Fault] = []
     found: list[Topic] = []
     direction: str | None = None
     first = True
+    lines = 0
     for number, line in enumerate(text.splitlines(), start=1):
         stripped = line.strip()
         if not stripped or stripped.startswith("#"):
             continue
+        lines += 1
+        if limit("topics").exceeded(before + lines):
+            noun = "topic lines or more" + (" with the lists before this one" if before else "")
+            fault = limit("topics").fault(Location(name, number), before + lines, noun=noun)
+            raise TooLargeError(fault)
         section = _SECTION.match(line)
         if first and not section and not _HEAD.match(line):
             raise InputError.at(

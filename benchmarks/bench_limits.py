@@ -1,0 +1,114 @@
+"""Benchmark: every command at the edge of its limits (docs/security.md, solver/limits.py).
+
+Each input is as large as the limits accept, or close, and is built so that the counts it must
+give are known from its construction; the claim is that each ends within seconds on this
+project's 2-core machine. One round each: they are the slow cases by design.
+
+Run: ``python -m pytest benchmarks/bench_limits.py`` (timings), or with ``--benchmark-disable``
+to only assert the counts.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from pytest_benchmark.fixture import BenchmarkFixture
+
+from solver import load_team, solve
+from solver.check import check_files
+from solver.identify.topics import read_topic_list
+from solver.limits import limit
+
+
+def _team(folder: Path, types: int, motions: int, counts: int) -> Path:
+    """Types x motion controls x 1..counts, every value its own component."""
+    kinds = [f"T{i}" for i in range(types)]
+    (folder / "rules.yaml").write_text(
+        f"name: edge\ncharacteristics:\n  kinematic_type:\n    values: [{', '.join(kinds)}]\n"
+        f"  m:\n    values: [{', '.join(f'm{i}' for i in range(motions))}]\n"
+        f"  n:\n    range: {{min: 1, max: {counts}}}\n",
+        encoding="utf-8",
+    )
+    team = folder / "team.yaml"
+    team.write_text(
+        "rules: rules.yaml\nteam:\n" + "".join(f"  {k}: {{}}\n" for k in kinds), encoding="utf-8"
+    )
+    return team
+
+
+def _once(benchmark: BenchmarkFixture, function: object, *args: object, **kwargs: object) -> object:
+    # pytest-benchmark ships no type hints.
+    return benchmark.pedantic(  # type: ignore[no-untyped-call]
+        function, args=args, kwargs=kwargs, rounds=1, iterations=1
+    )
+
+
+def test_solve_lists_450000_configurations(benchmark: BenchmarkFixture, tmp_path: Path) -> None:
+    team = load_team(_team(tmp_path, 5, 3, 30_000))
+    solution = _once(benchmark, solve, team)
+    assert solution.totals.ui_configurations == 450_000  # type: ignore[attr-defined]
+    assert len(solution.configurations) == 450_000  # type: ignore[attr-defined]
+
+
+def test_csp_engine_at_its_limit(benchmark: BenchmarkFixture, tmp_path: Path) -> None:
+    robots = limit("csp-robots").value
+    team = load_team(_team(tmp_path, 1, 4, robots // 4))
+    solution = _once(benchmark, solve, team, engine="csp", count_only=True)
+    assert solution.totals.valid_robots == robots  # type: ignore[attr-defined]
+
+
+def test_fast_engine_at_its_limit(benchmark: BenchmarkFixture, tmp_path: Path) -> None:
+    rows = limit("fast-rows").value
+    counts = limit("values").value
+    team = load_team(_team(tmp_path, 1, rows // counts, counts))
+    solution = _once(benchmark, solve, team, engine="fast", count_only=True)
+    assert solution.totals.valid_robots == rows  # type: ignore[attr-defined]
+
+
+def test_count_with_20000_components(benchmark: BenchmarkFixture, tmp_path: Path) -> None:
+    most = limit("components").value
+    listed = "".join(f"      - {{name: g{i}, values: v{i}}}\n" for i in range(most))
+    rules = tmp_path / "components.yaml"
+    rules.write_text(
+        "name: components\ncharacteristics:\n  kinematic_type:\n    values: [A, B]\n"
+        f"  x:\n    values: [{', '.join(f'v{i}' for i in range(most))}]\n"
+        f"    components:\n{listed}",
+        encoding="utf-8",
+    )
+
+    def count() -> int:
+        from solver.core.rules import load_rules
+        from solver.core.team import full_team
+
+        return solve(full_team(load_rules(rules)), count_only=True).totals.ui_configurations
+
+    assert _once(benchmark, count) == 2 * most
+
+
+def test_check_2000_constraints(benchmark: BenchmarkFixture, tmp_path: Path) -> None:
+    most = limit("constraints").value
+    kinds = [f"K{i}" for i in range(100)]
+    rules = tmp_path / "constraints.yaml"
+    # Type t loses the 20 sensor types t..t+19 (of 40, around): each sensor type stays live
+    # for other types, so no value is dead anywhere and each type has one dead-for-type.
+    forbid = "".join(
+        f"  - forbid: {{kinematic_type: K{i % 100}, s: S{(i % 100 + i // 100) % 40}}}\n"
+        for i in range(most)
+    )
+    rules.write_text(
+        "name: constraints\ncharacteristics:\n"
+        f"  kinematic_type:\n    values: [{', '.join(kinds)}]\n"
+        f"  s:\n    values: [{', '.join(f'S{j}' for j in range(40))}]\n"
+        f"constraints:\n{forbid}",
+        encoding="utf-8",
+    )
+    report = _once(benchmark, check_files, [rules])
+    found = [f for f in report.findings if f.check == "dead-for-type"]  # type: ignore[attr-defined]
+    assert len(found) == 100
+
+
+def test_read_100000_topic_lines(benchmark: BenchmarkFixture, tmp_path: Path) -> None:
+    most = limit("topics").value
+    topics = tmp_path / "topics.txt"
+    topics.write_text("".join(f"/t{i} sensor_msgs/LaserScan\n" for i in range(most)))
+    assert len(_once(benchmark, read_topic_list, topics)) == most  # type: ignore[arg-type]

@@ -1,0 +1,215 @@
+"""Every size a command accepts, in one table: the limit, who obeys it, and the refusal.
+
+An input sized to stall (a team of 5,000 kinematic types on a chart, 200 topic lists, a rule
+set whose layouts are 50,000 files) is refused before the work starts, with a message that
+names where the size comes from, the size, the limit and this table's name for it::
+
+    rules.yaml:3:3: characteristics: 1200 characteristics; at most 1000 are accepted (limit
+    'characteristics', docs/security.md)
+
+Below each limit, every command ends within seconds (``benchmarks/`` measures the edges).
+docs/security.md shows this table; a test keeps the two in step.
+
+Not here: the bounds of the file reader (bytes per file, YAML values and nesting, name
+lengths: :mod:`solver.files`), of robot descriptions and bags (:mod:`solver.identify`) and of
+the live graph (:mod:`solver.live`); docs/security.md lists those beside these.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from solver.errors import Fault, Location, TooLargeError
+
+__all__ = ["LIMITS", "Limit", "limit", "table"]
+
+
+@dataclass(frozen=True, slots=True)
+class Limit:
+    """One documented size limit.
+
+    ``noun`` counts the thing (``"characteristics"``), ``where`` says what holds it (``"a rule
+    set"``), ``commands`` who obey the limit.
+    """
+
+    name: str
+    value: int
+    noun: str
+    where: str
+    commands: str
+
+    def message(self, size: int, *, noun: str | None = None, bound: bool = False) -> str:
+        """``1200 characteristics; at most 1000 are accepted (limit 'characteristics', ...)``;
+        ``bound``: ``size`` is an upper bound (``up to 1200 ...``)."""
+        return (
+            f"{'up to ' if bound else ''}{size} {noun or self.noun}; at most {_plain(self.value)} "
+            f"are accepted (limit '{self.name}', docs/security.md)"
+        )
+
+    def exceeded(self, size: int) -> bool:
+        return size > self.value
+
+    def fault(
+        self, location: Location, size: int, *, noun: str | None = None, bound: bool = False
+    ) -> Fault:
+        return Fault(location, self.message(size, noun=noun, bound=bound), "too-large")
+
+    def check(
+        self,
+        size: int,
+        file: str,
+        *,
+        line: int | None = None,
+        column: int | None = None,
+        path: str = "",
+        noun: str | None = None,
+    ) -> None:
+        """Raise :class:`~solver.errors.TooLargeError` at that location when ``size`` is over."""
+        if size > self.value:
+            raise TooLargeError(self.fault(Location(file, line, column, path), size, noun=noun))
+
+
+_RULES = "every command that reads a rule set"
+_TEAMS = "every command that reads a team"
+_SOLVING = (
+    "every command that solves a team (solve, assign, robots, report, layouts, batch, watch, "
+    "identify --team)"
+)
+
+LIMITS: tuple[Limit, ...] = (
+    # Rule sets and teams, checked as they are read: what follows from a file is bounded here.
+    Limit("characteristics", 1_000, "characteristics", "a rule set", _RULES),
+    Limit("values", 100_000, "values", "one characteristic (a list or a range)", _RULES),
+    Limit("all-values", 1_000_000, "values", "all characteristics of a rule set", _RULES),
+    Limit("components", 20_000, "components", "all characteristics of a rule set", _RULES),
+    Limit("constraints", 2_000, "constraints", "a rule set", _RULES),
+    Limit(
+        "condition-values",
+        1_000_000,
+        "values named by conditions",
+        "all constraints of a rule set (a range counts its values)",
+        _RULES,
+    ),
+    Limit("kinematic-types", 20_000, "kinematic types", "a team", _TEAMS),
+    Limit(
+        "conflicts",
+        1_000_000,
+        "conflicts of the SAT search",
+        "all questions about one rule set (live values, conflicts, redundancy)",
+        "check, and solve's warnings about excluded selections",
+    ),
+    # Solving: the engines refuse before enumerating.
+    Limit(
+        "robots",
+        100_000_000,
+        "robots to enumerate",
+        "one kinematic type (--max-robots lowers or raises it)",
+        _SOLVING,
+    ),
+    Limit(
+        "csp-robots",
+        200_000,
+        "robots to enumerate with python-constraint",
+        "one kinematic type (solve --engine csp)",
+        "solve, count, robots with --engine csp",
+    ),
+    Limit(
+        "fast-rows",
+        20_000_000,
+        "value-class combinations to enumerate",
+        "one kinematic type (the fast engine's rows)",
+        "solve, count, robots with --engine fast or auto",
+    ),
+    Limit(
+        "configurations",
+        500_000,
+        "UI configurations to list",
+        "a team (counting them has no limit: --count-only)",
+        _SOLVING,
+    ),
+    # Charts and reports.
+    Limit(
+        "chart-types",
+        100,
+        "kinematic types to draw",
+        "one chart or report",
+        "solve --plot, report, batch --report",
+    ),
+    Limit(
+        "chart-characteristics",
+        100,
+        "characteristics to draw",
+        "one chart or report (a spoke or a column group each)",
+        "solve --plot, report, batch --report",
+    ),
+    Limit(
+        "chart-robots",
+        10**300,
+        "robots",
+        "one kinematic type drawn (a bar's height is a float)",
+        "solve --plot, report, batch --report",
+    ),
+    # Robot identification.
+    Limit("topic-lists", 64, "topic lists", "one command (--topics)", "identify, layouts"),
+    Limit(
+        "topics",
+        100_000,
+        "topic lines",
+        "all topic lists of one command",
+        "identify, layouts",
+    ),
+    Limit("bags", 64, "bags", "one command (--bag)", "identify, layouts"),
+    # Many files at once.
+    Limit("check-files", 1_000, "files", "one check run", "check"),
+    Limit("batch-teams", 10_000, "team files", "one batch", "batch"),
+    # What a command writes.
+    Limit(
+        "written-files",
+        2_000,
+        "files to write",
+        "one command (a layout per UI configuration and the default's)",
+        "layouts",
+    ),
+    Limit(
+        "written-bytes",
+        256 * 1024 * 1024,
+        "bytes to write",
+        "the files one command writes together (batch: per team)",
+        "every command that writes files (layouts, report, batch, fleet -o, solve --plot)",
+    ),
+)
+
+_BY_NAME = {entry.name: entry for entry in LIMITS}
+
+
+def limit(name: str) -> Limit:
+    """The limit called ``name``; :class:`KeyError` for any other name."""
+    return _BY_NAME[name]
+
+
+def table() -> str:
+    """The limits as the Markdown table docs/security.md shows (a test compares the two)."""
+    rows = [
+        "| limit | value | counts | in | obeyed by |",
+        "| --- | ---: | --- | --- | --- |",
+    ]
+    rows += [
+        f"| `{entry.name}` | {_shown(entry.value)} | {entry.noun} | {entry.where} | "
+        f"{entry.commands} |"
+        for entry in LIMITS
+    ]
+    return "\n".join(rows) + "\n"
+
+
+def _shown(value: int) -> str:
+    """``1,000,000``, or ``10^300`` for a power of ten too long to read."""
+    plain = _plain(value)
+    return plain if "^" in plain else f"{value:,}"
+
+
+def _plain(value: int) -> str:
+    """``1000000``, or ``10^300`` for a power of ten too long to read."""
+    text = str(value)
+    if len(text) > 16 and text == "1" + "0" * (len(text) - 1):
+        return f"10^{len(text) - 1}"
+    return text
