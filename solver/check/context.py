@@ -27,6 +27,7 @@ from solver.files.yamlio import Document, PathPart
 from solver.untrusted import shown
 
 __all__ = [
+    "ListIndex",
     "RulesContext",
     "TeamContext",
     "blame",
@@ -77,12 +78,29 @@ def _raw(document: Document | None, path: YPath) -> Any:
 
 def item_path(document: Document | None, path: YPath, value: Value) -> YPath:
     """``path`` extended by the index where the list at ``path`` names ``value`` (if it does)."""
-    raw = _raw(document, path)
-    if isinstance(raw, list):
-        for index, item in enumerate(raw):
-            if not isinstance(item, bool) and str(item).strip() == str(value):
-                return (*path, index)
-    return path
+    return ListIndex(document).path(path, value)
+
+
+class ListIndex:
+    """Where each name stands in the lists of one document, each list indexed once: locating
+    every one of 6,000 kinematic types scanned the list 6,000 times."""
+
+    def __init__(self, document: Document | None) -> None:
+        self.document = document
+        self._made: dict[YPath, dict[str, int]] = {}
+
+    def path(self, path: YPath, value: Value) -> YPath:
+        """``path`` extended by the index where the list at ``path`` names ``value``."""
+        found = self._made.get(path)
+        if found is None:
+            found = self._made[path] = {}
+            raw = _raw(self.document, path)
+            if isinstance(raw, list):
+                for index, item in enumerate(raw):
+                    if not isinstance(item, bool):
+                        found.setdefault(str(item).strip(), index)
+        at = found.get(str(value))
+        return path if at is None else (*path, at)
 
 
 def locate(document: Document | None, file: str, path: YPath, *, key: bool = False) -> Location:
@@ -104,10 +122,14 @@ class RulesContext:
     def raw(self, path: YPath) -> Any:
         return _raw(self.rules.document, path)
 
+    @cached_property
+    def lists(self) -> ListIndex:
+        return ListIndex(self.rules.document)
+
     def value_location(self, characteristic: Characteristic, value: Value) -> Location:
         """Where ``value`` is declared in its characteristic's ``values`` list."""
         path: YPath = ("characteristics", characteristic.name, "values")
-        return self.locate(item_path(self.rules.document, path, value))
+        return self.locate(self.lists.path(path, value))
 
     def component_path(self, characteristic: Characteristic, component: Component) -> YPath:
         return ("characteristics", characteristic.name, "components", component.index)
@@ -186,5 +208,9 @@ class TeamContext:
         if _raw(self.document, path) is None:
             return self.locate(type_path, key=True)
         if value is not None:
-            path = item_path(self.document, path, value)
+            path = self.lists.path(path, value)
         return self.locate(path)
+
+    @cached_property
+    def lists(self) -> ListIndex:
+        return ListIndex(self.document)

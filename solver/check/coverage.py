@@ -21,7 +21,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from solver.check.context import RulesContext, integer_runs, item_path
+from solver.check.context import RulesContext, integer_runs
 from solver.check.finding import Check, Finding
 from solver.core.constraints import Value
 from solver.core.rules import Characteristic, Component
@@ -131,7 +131,7 @@ def _overlaps(context: RulesContext) -> Iterator[Finding]:
             else:
                 listed = shown(str(values[0]), quoted=True)
                 path = (*context.component_path(characteristic, last), "values")
-                location = context.locate(item_path(context.rules.document, path, values[0]))
+                location = context.locate(context.lists.path(path, values[0]))
             yield OVERLAP.finding(
                 location,
                 f"{characteristic.name} {listed} is in {len(components)} components: "

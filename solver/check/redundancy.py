@@ -2,7 +2,7 @@
 
 Redundancy is entailment, strictly: a constraint is *redundant* when the other constraints
 already exclude every robot it excludes, so removing it changes no valid robot. It is decided
-with python-constraint, not by comparing rule texts: for each box of robots the constraint
+with the SAT solver, not by comparing rule texts: for each box of robots the constraint
 excludes (:mod:`solver.core.regions`), the model over that box with all the *other*
 constraints must have no solution. The message names a deletion-minimal set of constraints
 that entails it. A constraint is *tautological* when it excludes no robot at all, whatever the
@@ -58,7 +58,7 @@ REDUNDANT = Check(
     "warning",
     "rules",
     "A constraint the other constraints already entail: every robot it excludes is excluded "
-    "by them too, so removing it changes no valid robot (checked with python-constraint over "
+    "by them too, so removing it changes no valid robot (checked with the SAT solver over "
     "the robots it excludes, with every other constraint). The message names a minimal set "
     "of constraints that entails it. Of two identical constraints, each is reported.",
     _redundant,

@@ -4,7 +4,7 @@ A team says which values robots of each kinematic type may have; the rule set's 
 may forbid some of them for that type (or in combination with the rest of the selection).
 Real robots with such values are invalid and get the default UI configuration, which the
 team's author should hear about with the reason: the constraints (file and line) that exclude
-them, a deletion-minimal set found with python-constraint over the team's own domains. A
+them, a deletion-minimal set found with the SAT solver over the team's own domains. A
 selection that leaves a type, or the whole team, without any valid robot is an error; a
 selected value that no component serves (a coverage gap in the rules) is a warning too.
 

@@ -6,7 +6,7 @@ the author needs to know which constraints are to blame: a *minimal conflicting 
 found by deletion (drop one constraint, re-solve, keep it dropped while still void), so that
 every constraint named is necessary and each is cited by file and line.
 
-The questions go to python-constraint per kinematic type (:mod:`solver.core.analysis`).
+The questions go to a SAT solver per kinematic type (:mod:`solver.core.analysis`).
 
 Not here: values that only some robots lose (:mod:`solver.check.dead`); teams
 (:mod:`solver.check.teams`).
@@ -105,7 +105,7 @@ CONFLICT = Check(
     "A minimal conflicting subset of constraints, reported at the first of them: together they "
     "make the rule set or a kinematic type void, and without any one of them the rest of the "
     "subset leaves robots. Found by deletion (drop one constraint, re-solve with "
-    "python-constraint, keep it dropped while still void), so every constraint named is "
+    "the SAT solver, keep it dropped while still void), so every constraint named is "
     "necessary; types voided by the same subset are reported together.",
     _conflicts,
 )

@@ -9,6 +9,7 @@
 ``partition``    robots -> UI configurations, numbering
 ``cover``        the exact minimum cover when components overlap (factors, HiGHS)
 ``analysis``     which values survive the constraints; minimal conflicting subsets
+``oracle``       "is there a valid robot over these domains?", asked of a SAT solver
 ``regions``      the robots a constraint excludes, as boxes of value sets
 ``solution``     :func:`solve` a team -> :class:`Solution`
 ``assignment``   :func:`assign` one combination -> :class:`Assignment`

@@ -1,25 +1,24 @@
-"""The questions the semantic checks ask the constraint model, kept small so they stay fast.
+"""The questions the semantic checks ask about a rule set, kept small so they stay fast.
 
-Every answer here comes from python-constraint through :func:`solver.core.model.build_problem`
-(the one notion of "valid robot"); what this module adds is *which* questions to ask:
+Every answer comes from one notion of "valid robot" (the constraints of
+:mod:`solver.core.constraints`, as boxes of :mod:`solver.core.regions`), asked of a SAT solver
+(:mod:`solver.core.oracle`); what this module adds is *which* questions to ask:
 
-* **Restricted domains.** "Can sensor type X appear for a UGV?" is the model over the UGV's
-  domains with the sensor type narrowed to ``{X}``; existence is ``getSolution()``, never an
-  enumeration of every robot.
-* **Relevant constraints only.** A rule none of whose exclusion boxes
-  (:mod:`solver.core.regions`) meets the domains holds for every robot there, so it is left
-  out of that problem. Fixing the kinematic type usually leaves a handful of a rule set's
-  constraints.
-* **Interchangeable values.** Two values of a characteristic that every remaining condition
-  treats alike (each condition allows both or neither) can be swapped in any valid robot, so
-  one representative per class answers for all of them (Freuder's interchangeability). With
-  the kinematic type fixed, a hundred sensor types usually fall into a few classes.
-* **Witnesses.** One solution proves every value in it possible, so :meth:`Analysis.live`
-  asks for robots using values not yet seen and needs about as many questions as the largest
-  number of classes of one characteristic, plus one "no" per characteristic.
+* **Restricted domains.** "Can sensor type X appear for a UGV?" is the question over the UGV's
+  domains with the sensor type narrowed to ``{X}``; existence, never an enumeration of robots.
+* **One kinematic type at a time.** A question about one type goes to that type's oracle,
+  which holds only the constraints that can exclude robots of it; types the constraints
+  cannot tell apart share one.
+* **Relevant constraints only.** A rule none of whose exclusion boxes meets the domains holds
+  for every robot there, so explanations never name it and never try it.
+* **Witnesses.** One model proves every class it marks possible, so :meth:`Analysis.live`
+  needs about one question per class no model has shown yet, plus one "no" per
+  characteristic.
 
-Explanations are deletion-based minimal subsets (:meth:`Analysis.minimal_conflict`): drop one
-constraint, re-solve, keep it dropped if the question still has no solution.
+Explanations are minimal subsets (:meth:`Analysis.minimal_conflict`): the subset that deleting
+constraints in declared order keeps (drop one, re-solve, keep it dropped while the rest still
+has no solution), asking only about the constraints of the solver's last core
+(:func:`deletion`): a few questions for a conflict of a few constraints among thousands.
 
 Not here: deciding what is a finding (the check modules) or enumerating robots for solving
 (:mod:`solver.core.model`, :mod:`solver.core.solution`).
@@ -27,15 +26,16 @@ Not here: deciding what is a finding (the check modules) or enumerating robots f
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Collection, Iterable, Sequence
 from functools import cached_property
 
 from solver.core.constraints import RuleConstraint, Value
-from solver.core.model import Robot, build_problem
-from solver.core.regions import Box, Domains, intersect, regions, touches
+from solver.core.model import Robot
+from solver.core.oracle import Budget, Oracle, Sparse
+from solver.core.regions import Box, Domains, regions
 from solver.core.rules import RuleSet
 
-__all__ = ["Analysis", "Classes"]
+__all__ = ["Analysis", "Classes", "deletion"]
 
 # Per characteristic, its domain split into classes of interchangeable values (domain order).
 Classes = tuple[tuple[tuple[Value, ...], ...], ...]
@@ -75,6 +75,27 @@ class Analysis:
         self._tested: tuple[dict[int, tuple[frozenset[Value], ...]], ...] = tuple(
             _tested_sets(rule, positions) for rule in rules.constraints
         )
+        # The boxes as (position, set) pairs of the characteristics they restrict: a box about
+        # two of 1,000 characteristics is tested at two.
+        self._sparse = tuple(
+            tuple(tuple((p, s) for p, s in enumerate(box) if s is not None) for box in boxes)
+            for boxes in self.boxes
+        )
+        # The constraints about each characteristic, and those that exclude any robot at all.
+        about: list[set[int]] = [set() for _ in rules.characteristics]
+        for i, sparse in enumerate(self._sparse):
+            for box in sparse:
+                for p, _ in box:
+                    about[p].add(i)
+        self._about = tuple(frozenset(found) for found in about)
+        self._excluding = frozenset(
+            i
+            for i, boxes in enumerate(self._sparse)
+            if any(all(s for _, s in box) for box in boxes)
+        )
+        self._budget = Budget(rules)
+        # One oracle for questions over several types, one per class of types otherwise.
+        self._oracles: dict[tuple[object, ...], Oracle] = {}
 
     # -- domains -------------------------------------------------------------------------------
 
@@ -102,14 +123,32 @@ class Analysis:
 
     def relevant(self, domains: Domains, among: Iterable[int] | None = None) -> tuple[int, ...]:
         """The constraints (of ``among``, default all) that exclude some robot over ``domains``."""
-        sets = [frozenset(domain) for domain in domains]
-        types = sets[self.rules.key_position]
-        if len(types) == len(self.rules.key.values):  # every type: no pre-filter
+        sets = self._sets(domains)
+        types = domains[self.rules.key_position]
+        if sets[self.rules.key_position] is None:  # every type: no pre-filter
             indices: Iterable[int] = range(len(self.boxes)) if among is None else among
         else:
             candidates = self._untyped.union(*(self._by_type.get(t, ()) for t in types))
             indices = sorted(candidates) if among is None else [i for i in among if i in candidates]
-        return tuple(i for i in indices if touches(self.boxes[i], sets))
+        # Only the constraints about a narrowed characteristic need a look at their boxes; any
+        # other one excludes some robot here exactly when it excludes any at all.
+        narrowed: set[int] = set()
+        for p, found in enumerate(sets):
+            if found is not None:
+                narrowed.update(self._about[p])
+        return tuple(
+            i
+            for i in indices
+            if (_touches(self._sparse[i], sets) if i in narrowed else i in self._excluding)
+        )
+
+    def _sets(self, domains: Domains) -> list[frozenset[Value] | None]:
+        """Each domain as a set, or ``None`` for a whole domain (no set of 100,000 counts is
+        built for a question that leaves them all)."""
+        return [
+            None if len(domain) == len(c.values) else frozenset(domain)
+            for domain, c in zip(domains, self.rules.characteristics, strict=True)
+        ]
 
     def classes(self, domains: Domains, constraints: Sequence[int]) -> Classes:
         """Each domain split into values that ``constraints`` cannot tell apart."""
@@ -134,92 +173,103 @@ class Analysis:
             result.append(tuple(tuple(group) for group in groups.values()))
         return tuple(result)
 
-    def _solve(self, domains: Domains, constraints: Sequence[int]) -> Robot | None:
-        """One valid robot over ``domains`` (tried last value first) or ``None``."""
-        sets = [frozenset(domain) for domain in domains]
-        active = [self.rules.constraints[i] for i in constraints if touches(self.boxes[i], sets)]
-        problem = build_problem(self.rules, domains, active)
-        if problem is None:
-            return None
-        solution = problem.getSolution()
-        if solution is None:
-            return None
-        return tuple(solution[name] for name in self.rules.names)
+    def _oracle(self, domains: Domains) -> Oracle:
+        """The oracle for a question: its type's when the key is one value, else the whole
+        rule set's."""
+        key = self.rules.key_position
+        if len(domains[key]) != 1:
+            if () not in self._oracles:
+                self._oracles[()] = Oracle(
+                    self.rules, self._sparse, range(len(self.boxes)), None, self._budget
+                )
+            return self._oracles[()]
+        kinematic_type = domains[key][0]
+        included = sorted(self._untyped.union(self._by_type.get(kinematic_type, ())))
+        # Types that meet the same boxes' key sets are the same question.
+        signature = (
+            tuple(included),
+            tuple(_holds(box[key], kinematic_type) for i in included for box in self.boxes[i]),
+        )
+        if signature not in self._oracles:
+            self._oracles[signature] = Oracle(
+                self.rules, self._sparse, included, kinematic_type, self._budget
+            )
+        return self._oracles[signature]
 
     def witness(self, domains: Domains, among: Iterable[int] | None = None) -> Robot | None:
         """A valid robot over ``domains`` under the constraints ``among`` (default: all)."""
-        relevant = self.relevant(domains, among)
-        representatives = tuple(
-            tuple(group[0] for group in groups) for groups in self.classes(domains, relevant)
-        )
-        return self._solve(representatives, relevant)
+        oracle = self._oracle(domains)
+        found = oracle.model(domains, among)
+        if found is None:
+            return None
+        robot = []
+        for p, domain in enumerate(domains):
+            if p not in oracle.positions:
+                robot.append(domain[0])
+                continue
+            at = oracle.positions[p]
+            marked = set(found[p])
+            robot.append(next(v for v in domain if at.of(v) in marked))
+        return tuple(robot)
 
     def satisfiable(self, domains: Domains, among: Iterable[int] | None = None) -> bool:
         """Whether some robot over ``domains`` satisfies the constraints ``among``."""
-        return self.witness(domains, among) is not None
+        return self._oracle(domains).satisfiable(domains, among)
 
     def live(self, domains: Domains) -> tuple[frozenset[Value], ...]:
         """Per characteristic, the values that appear in at least one valid robot over domains.
 
         All sets are empty when there is no valid robot at all.
         """
-        relevant = self.relevant(domains)
-        classes = self.classes(domains, relevant)
-        count = len(classes)
-        if any(not groups for groups in classes):
-            return tuple(frozenset() for _ in classes)
-        class_of = [{v: k for k, group in enumerate(groups) for v in group} for groups in classes]
-        unknown = [set(range(len(groups))) for groups in classes]
-        live: list[set[int]] = [set() for _ in classes]
-        dead: list[set[int]] = [set() for _ in classes]
+        oracle = self._oracle(domains)
+        found = oracle.live(domains)
+        if found is None:
+            return tuple(frozenset() for _ in domains)
+        return tuple(
+            oracle.values(p, found[p], domain) if p in found else self._whole(p, domain)
+            for p, domain in enumerate(domains)
+        )
 
-        def representatives(position: int, only_unknown: bool) -> tuple[Value, ...]:
-            groups = classes[position]
-            seen = [k for k in range(len(groups)) if k in live[position]]
-            fresh = sorted(unknown[position])
-            # python-constraint tries a domain's last value first: put unseen classes last so
-            # one solution witnesses as many new classes as possible.
-            chosen = fresh if only_unknown else seen + fresh
-            return tuple(groups[k][0] for k in chosen)
+    def _whole(self, position: int, domain: Sequence[Value]) -> frozenset[Value]:
+        """``domain`` as a set; the whole domain's set made once, however often it is asked."""
+        if len(domain) != len(self.rules.characteristics[position].values):
+            return frozenset(domain)
+        return self._wholes[position]
 
-        for position in range(count):
-            while unknown[position]:
-                query = tuple(representatives(p, p == position) for p in range(count))
-                robot = self._solve(query, relevant)
-                if robot is None:
-                    dead[position] |= unknown[position]
-                    unknown[position].clear()
-                    break
-                for p, value in enumerate(robot):
-                    k = class_of[p][value]
-                    live[p].add(k)
-                    unknown[p].discard(k)
-            if not live[position]:  # no valid robot at all
-                return tuple(frozenset() for _ in classes)
-        return tuple(frozenset(v for k in live[p] for v in classes[p][k]) for p in range(count))
+    @cached_property
+    def _wholes(self) -> tuple[frozenset[Value], ...]:
+        return tuple(frozenset(c.values) for c in self.rules.characteristics)
 
     def minimal_conflict(
         self, domains: Domains, among: Iterable[int] | None = None
     ) -> tuple[int, ...]:
         """A minimal subset of the constraints ``among`` that leaves no robot over ``domains``.
 
-        Deletion-based: drop each constraint in declared order, re-solve, and keep it dropped
-        while the rest still has no solution. ``ValueError`` if the constraints have a solution.
+        The subset deleting in declared order keeps (drop each constraint, re-solve, keep it
+        dropped while the rest still has no solution): :func:`deletion`. ``ValueError`` if the
+        constraints have a solution.
         """
-        kept = list(self.relevant(domains, among))
-        if self.satisfiable(domains, kept):
-            raise ValueError("the constraints have a solution: nothing conflicts")
-        for index in list(kept):
-            trial = [i for i in kept if i != index]
-            if not self.satisfiable(domains, trial):
-                kept = trial
-        return tuple(kept)
+        oracle = self._oracle(domains)
+        return deletion(self.relevant(domains, among), lambda subset: oracle.core(domains, subset))
 
     def exclusions(self, index: int, domains: Domains | None = None) -> tuple[Domains, ...]:
         """The non-empty boxes of robots over ``domains`` (default all) that constraint excludes."""
         base = self.full if domains is None else domains
-        boxes = (intersect(base, box) for box in self.boxes[index])
+        boxes = (self._intersect(base, box) for box in self._sparse[index])
         return tuple(box for box in boxes if all(box))
+
+    def _intersect(self, domains: Domains, box: Sparse) -> Domains:
+        """``domains`` narrowed to ``box``: only the characteristics the box restricts, and a
+        whole domain in the time of the box's own set (a box about one of 2,000 types does not
+        walk the 2,000, nor one about two of 1,000 characteristics the 1,000)."""
+        found = list(domains)
+        for p, allowed in box:
+            characteristic, domain = self.rules.characteristics[p], domains[p]
+            if len(domain) == len(characteristic.values):
+                found[p] = tuple(sorted(allowed, key=characteristic.positions.__getitem__))
+            else:
+                found[p] = tuple(v for v in domain if v in allowed)
+        return tuple(found)
 
     def entailing(self, index: int) -> tuple[int, ...] | None:
         """A minimal set of the other constraints that already excludes all ``index`` excludes.
@@ -228,22 +278,25 @@ class Analysis:
         not redundant); ``()`` when it excludes nothing at all (a tautology).
         """
         boxes = self.exclusions(index)
-        others = [i for i in range(len(self.boxes)) if i != index]
 
-        def entails(subset: Sequence[int]) -> bool:
-            return not any(self.satisfiable(box, subset) for box in boxes)
+        def entails(subset: Sequence[int]) -> frozenset[int] | None:
+            """None when the constraints ``subset`` leave a robot ``index`` excludes, else a
+            part of them that already leaves none in any of its boxes."""
+            found: set[int] = set()
+            for box in boxes:
+                part = self._oracle(box).core(box, subset)
+                if part is None:
+                    return None
+                found |= part
+            return frozenset(found)
 
         if not boxes:
             return ()
-        if not entails(others):
-            return None
-        touched = set().union(*(self.relevant(box, others) for box in boxes))
-        kept = [i for i in others if i in touched]
-        for other in list(kept):
-            trial = [i for i in kept if i != other]
-            if entails(trial):
-                kept = trial
-        return tuple(kept)
+        alone = {index}
+        if any(self._oracle(box).satisfiable(box, without=alone) for box in boxes):
+            return None  # the others leave some robot it excludes
+        touched = set().union(*(self.relevant(box) for box in boxes)) - alone
+        return deletion(sorted(touched), entails)
 
     # -- shared answers ------------------------------------------------------------------------
 
@@ -286,6 +339,51 @@ class Analysis:
     def type_conflicts(self) -> dict[Value, tuple[int, ...]]:
         """For each void kinematic type, a minimal set of constraints that voids it."""
         return {kt: self.minimal_conflict(self.type_domains(kt)) for kt in self.void_types}
+
+
+def deletion(
+    constraints: Sequence[int], core: Callable[[Sequence[int]], Collection[int] | None]
+) -> tuple[int, ...]:
+    """The minimal subset of ``constraints`` that deletion in declared order keeps: drop each
+    constraint in turn, keep it dropped while the rest still conflicts.
+
+    ``core(subset)`` is ``None`` when ``subset`` does not conflict, else some part of it that
+    conflicts already (conflicting is monotone: a superset of a conflict conflicts). Then a
+    constraint outside the last core found needs no question: the rest still holds that core.
+    So the questions follow the size of the conflicts, not of ``constraints`` (a dead value
+    among 1,000 chained constraints is a handful of questions), and the result is deletion's
+    whichever cores the solver finds. ``ValueError`` when ``constraints`` do not conflict.
+    """
+    known = core(constraints)
+    if known is None:
+        raise ValueError("the constraints have a solution: nothing conflicts")
+    kept: list[int] = []  # decided: kept; the ones after the current one are all still in
+    for position, index in enumerate(constraints):
+        if index not in known:
+            continue  # dropped: the rest still holds the known core
+        found = core([*kept, *constraints[position + 1 :]])
+        if found is None:
+            kept.append(index)
+        else:
+            known = found
+    return tuple(kept)
+
+
+def _touches(
+    boxes: Sequence[Sequence[tuple[int, frozenset[Value]]]],
+    sets: Sequence[frozenset[Value] | None],
+) -> bool:
+    """Whether some robot over the domains ``sets`` (``None``: a whole domain) lies in one of
+    ``boxes``, each given as the (position, set) pairs it restricts."""
+    return any(all(_meets(allowed, sets[p]) for p, allowed in box) for box in boxes)
+
+
+def _holds(allowed: frozenset[Value] | None, value: Value) -> bool:
+    return allowed is None or value in allowed
+
+
+def _meets(allowed: frozenset[Value], domain: frozenset[Value] | None) -> bool:
+    return bool(allowed) if domain is None else not allowed.isdisjoint(domain)
 
 
 def _tested_sets(

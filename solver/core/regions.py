@@ -33,7 +33,7 @@ def _box(
     rules: RuleSet, conditions: Sequence[Condition], complement: Condition | None = None
 ) -> Box:
     sets: list[frozenset[Value] | None] = [None] * len(rules.characteristics)
-    positions = {name: i for i, name in enumerate(rules.names)}
+    positions = rules.positions
 
     def narrow(position: int, allowed: frozenset[Value]) -> None:
         current = sets[position]
