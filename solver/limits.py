@@ -108,14 +108,14 @@ LIMITS: tuple[Limit, ...] = (
     ),
     Limit(
         "csp-robots",
-        200_000,
+        100_000,
         "robots to enumerate with python-constraint",
         "one kinematic type (solve --engine csp)",
         "solve, count, robots with --engine csp",
     ),
     Limit(
         "fast-rows",
-        20_000_000,
+        5_000_000,
         "value-class combinations to enumerate",
         "one kinematic type (the fast engine's rows)",
         "solve, count, robots with --engine fast or auto",

@@ -28,6 +28,7 @@ from solver.engines import ENUMERATING, MAX_ROBOTS
 from solver.engines.fast import BlockLayout, robot_blocks
 from solver.engines.numbering import Numbers
 from solver.errors import TooLargeError
+from solver.limits import limit
 from solver.reporting.render import csv_cell, csv_row, json_printable
 
 if TYPE_CHECKING:
@@ -177,6 +178,8 @@ def write_robots(
             solution.team.file,
             f"listing {total} robots is refused (more than {max_robots}, see --max-robots)",
         )
+    if engine == "csp":
+        limit("csp-robots").check(total, solution.team.file)
     enumerator = engines.lookup(engine)
     names = solution.rules.names
     if fmt == "csv":
