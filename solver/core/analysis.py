@@ -56,20 +56,11 @@ class Analysis:
         # The kinematic types each constraint can exclude robots of (None: any); most
         # constraints are about a few types, so this cheap pre-filter spares most box tests.
         key = rules.key_position
-        self._types: tuple[frozenset[Value] | None, ...] = tuple(
-            None
-            if any(box[key] is None for box in boxes)
-            else frozenset().union(*(box[key] or () for box in boxes))
-            for boxes in self.boxes
-        )
+        self._types = tuple(_types(boxes, key) for boxes in self.boxes)
         # The same, inverted: the constraints about each type, and those about any type, so
         # that a question about one type looks at its few constraints, not at all of them.
         self._untyped = frozenset(i for i, types in enumerate(self._types) if types is None)
-        by_type: dict[Value, set[int]] = {}
-        for i, types in enumerate(self._types):
-            for value in types or ():
-                by_type.setdefault(value, set()).add(i)
-        self._by_type = {value: frozenset(indices) for value, indices in by_type.items()}
+        self._by_type = _inverted(self._types)
         positions = {name: i for i, name in enumerate(rules.names)}
         # For each constraint: per characteristic position, the value sets its conditions test.
         self._tested: tuple[dict[int, tuple[frozenset[Value], ...]], ...] = tuple(
@@ -82,12 +73,7 @@ class Analysis:
             for boxes in self.boxes
         )
         # The constraints about each characteristic, and those that exclude any robot at all.
-        about: list[set[int]] = [set() for _ in rules.characteristics]
-        for i, sparse in enumerate(self._sparse):
-            for box in sparse:
-                for p, _ in box:
-                    about[p].add(i)
-        self._about = tuple(frozenset(found) for found in about)
+        self._about = _about(self._sparse, len(rules.characteristics))
         self._excluding = frozenset(
             i
             for i, boxes in enumerate(self._sparse)
@@ -376,6 +362,32 @@ def _touches(
     """Whether some robot over the domains ``sets`` (``None``: a whole domain) lies in one of
     ``boxes``, each given as the (position, set) pairs it restricts."""
     return any(all(_meets(allowed, sets[p]) for p, allowed in box) for box in boxes)
+
+
+def _types(boxes: Sequence[Box], key: int) -> frozenset[Value] | None:
+    """The kinematic types a constraint's boxes can hold (None: any)."""
+    if any(box[key] is None for box in boxes):
+        return None
+    return frozenset().union(*(box[key] or () for box in boxes))
+
+
+def _inverted(types: Sequence[frozenset[Value] | None]) -> dict[Value, frozenset[int]]:
+    """Kinematic type -> the constraints about it (not those about any type)."""
+    by_type: dict[Value, set[int]] = {}
+    for i, found in enumerate(types):
+        for value in found or ():
+            by_type.setdefault(value, set()).add(i)
+    return {value: frozenset(indices) for value, indices in by_type.items()}
+
+
+def _about(sparse: Sequence[Sequence[Sparse]], width: int) -> tuple[frozenset[int], ...]:
+    """Per characteristic, the constraints whose boxes restrict it."""
+    about: list[set[int]] = [set() for _ in range(width)]
+    for i, boxes in enumerate(sparse):
+        for box in boxes:
+            for p, _ in box:
+                about[p].add(i)
+    return tuple(frozenset(found) for found in about)
 
 
 def _holds(allowed: frozenset[Value] | None, value: Value) -> bool:

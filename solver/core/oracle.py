@@ -109,6 +109,25 @@ class _Position:
         return self.rest
 
 
+def _kept(
+    boxes: Sequence[Sequence[Sparse]],
+    included: Sequence[int],
+    key: int | None,
+    key_value: Value | None,
+) -> list[tuple[int, list[tuple[int, frozenset[Value]]]]]:
+    """The boxes of ``included`` that can hold a robot with ``key_value`` at ``key`` (when
+    fixed), without the key; an empty box excludes nothing and is left out."""
+    kept = []
+    for index in included:
+        for box in boxes[index]:
+            if any(p == key and key_value not in found for p, found in box):
+                continue
+            parts = [(p, found) for p, found in box if p != key]
+            if all(found for _, found in parts):
+                kept.append((index, parts))
+    return kept
+
+
 class Oracle:
     """The constraints ``included`` of a rule set as clauses, with the team key fixed to
     ``key_value`` (``None``: the key is free like any characteristic).
@@ -132,19 +151,11 @@ class Oracle:
         self.rules = rules
         self.budget = budget
         self.key = None if key_value is None else rules.key_position
-        # The boxes that can hold a robot here, without the fixed key.
-        kept: list[tuple[int, list[tuple[int, frozenset[Value]]]]] = []
+        kept = _kept(boxes, included, self.key, key_value)
         sets: dict[int, dict[frozenset[Value], None]] = {}
-        for index in included:
-            for box in boxes[index]:
-                if any(p == self.key and key_value not in found for p, found in box):
-                    continue
-                parts = [(p, found) for p, found in box if p != self.key]
-                if any(not found for _, found in parts):
-                    continue  # an empty box excludes nothing
-                kept.append((index, parts))
-                for p, found in parts:
-                    sets.setdefault(p, {})[found] = None
+        for _, parts in kept:
+            for p, found in parts:
+                sets.setdefault(p, {})[found] = None
         self.positions = {
             p: _Position(rules.characteristics[p].values, list(found))
             for p, found in sorted(sets.items())
@@ -156,13 +167,9 @@ class Oracle:
             self.solver.add_clause(variables)
         # Prefer marking classes: a model then witnesses as many classes as it can.
         self.solver.set_phases([v for variables in self.x.values() for v in variables])
-        inside: dict[tuple[int, frozenset[Value]], int] = {}
-        for p, found in ((p, s) for p, by_set in sets.items() for s in by_set):
-            y = inside[(p, found)] = self._new()
-            at = self.positions[p]
-            for k, representative in enumerate(at.representatives):
-                if representative in found:
-                    self.solver.add_clause([-self.x[p][k], y])
+        inside = {
+            (p, found): self._inside(p, found) for p, by_set in sets.items() for found in by_set
+        }
         self.selector: dict[int, int] = {}
         self.every = self._new()  # assumed: every included constraint holds
         for index in included:
@@ -174,6 +181,14 @@ class Oracle:
             )
         self._switches: dict[tuple[int, frozenset[int]], int] = {}
         self._wholes = [(p, rules.characteristics[p].values) for p in self.positions]
+
+    def _inside(self, p: int, found: frozenset[Value]) -> int:
+        """A variable forced true by every class of ``p`` inside ``found``."""
+        y = self._new()
+        for k, representative in enumerate(self.positions[p].representatives):
+            if representative in found:
+                self.solver.add_clause([-self.x[p][k], y])
+        return y
 
     def _new(self) -> int:
         self._count += 1

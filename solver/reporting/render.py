@@ -280,9 +280,7 @@ def solution_chunks(
         yield "".join(
             ("," if start or index else "")
             + "\n    "
-            + json.dumps(configuration_data(rules, c), indent=2, ensure_ascii=False).replace(
-                "\n", "\n    "
-            )
+            + dumps(configuration_data(rules, c))[:-1].replace("\n", "\n    ")
             for index, c in enumerate(listed[start : start + _CHUNK])
         )
     yield ("\n  ]" if listed else "") + "\n}\n"
