@@ -16,7 +16,7 @@ from pytest_benchmark.fixture import BenchmarkFixture
 
 from solver import load_team, solve
 from solver.check import check_files
-from solver.identify.topics import read_topic_list
+from solver.identify.readers.topics import read_topic_list
 from solver.limits import limit
 
 

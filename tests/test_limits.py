@@ -285,7 +285,7 @@ def test_a_chart_of_more_characteristics_than_its_limit_is_refused(write_file: W
 
 
 def test_topic_lines_past_the_limit_are_refused_at_the_line_past_it(write_file: WriteFile) -> None:
-    from solver.identify.topics import parse_topic_list, read_topic_list
+    from solver.identify.readers.topics import parse_topic_list, read_topic_list
 
     most = limit("topics").value
     text = "".join(f"/t{i} std_msgs/String\n" for i in range(most))
