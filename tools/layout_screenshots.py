@@ -208,7 +208,7 @@ def plot(config: dict[str, Any], topics: dict[str, list[Any]]) -> str:
         values = [v for v in (_field(m, path["value"]) for m in messages) if v is not None]
         if values:
             series.append((TURBO[(2 * index + 1) % len(TURBO)], values))
-            names.append(path["value"])
+            names.append(path.get("label") or path["value"])  # as the app's legend names it
     if not series:
         return '<div class="note">no messages on the plotted paths</div>'
     low = min(min(v) for _, v in series)
@@ -288,7 +288,11 @@ def panel_body(kind: str, config: dict[str, Any], topics: dict[str, list[Any]]) 
         colour = e(config.get("fallbackColor", "#a0a0a0"))
         label = e(config.get("fallbackLabel", ""))
         bulb = f'<div class="bulb" style="background:{colour}"></div>'
-        return f'<div style="display:flex;align-items:center;padding:8px">{bulb}{label}</div>'
+        # The app's label breaks only at its own newlines (Indicator.style.ts whiteSpace pre).
+        return (
+            f'<div style="display:flex;align-items:center;padding:8px">{bulb}'
+            f'<span style="white-space:pre">{label}</span></div>'
+        )
     return f'<div class="note">{e(kind)} panel</div>'
 
 

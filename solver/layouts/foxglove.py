@@ -84,8 +84,14 @@ _GRID = {
 # A pose clicked with the 3D "publish pose" tool in a panel that is no goal panel: a topic
 # nothing listens to for goals (the app's default is a navigation goal, /move_base_simple/goal).
 CLICKED_POSE = "clicked_pose"
-# How to write a layout for another robot (the note in every layout says so).
+# How to write a layout for another robot (the note in every layout says so): a team's
+# layouts under its namespace, or one robot's again from its description (its joints, and its
+# real topics with --topics), which a team's layouts would lose.
 _AGAIN = "teleop-ui layouts TEAM -o DIR --namespace /NAME"
+_AGAIN_DESCRIBED = (
+    "teleop-ui layouts --robot URDF --team TEAM -o FILE --namespace /NAME "
+    "(--topics FILE: its own topics)"
+)
 # Message types whose first message makes the 3D panel pick and save a colour field.
 _CLOUDS = {"sensor_msgs/PointCloud2", "sensor_msgs/LaserScan"}
 
@@ -136,7 +142,8 @@ def _note(plan: Plan) -> str:
     which = f"teleop-ui: UI configuration {plan.number}" + (
         " (the default)" if plan.default else ""
     )
-    return f"{which}, {plan.whom}; for a robot under /NAME: {_AGAIN}"
+    again = _AGAIN_DESCRIBED if plan.described else _AGAIN
+    return f"{which}, {plan.whom}; for a robot under /NAME: {again}"
 
 
 def _titled(panel: Panel, config: dict[str, Any], *, note: str = "") -> dict[str, Any]:
@@ -172,9 +179,12 @@ def _panel_config(panel: Panel, plan: Plan) -> tuple[str, dict[str, Any]]:
     if kind == "Plot":
         # Plot paths are {value, enabled, timestampMethod} (Plot/utils/config.ts PlotConfig);
         # the other keys are Plot/constants.ts DEFAULT_PLOT_CONFIG's, which the panel saves.
+        # Each series labelled: the legend names a series by its label, else its whole path,
+        # and cuts it in a narrow tile (the three paths differ only in their last letter).
         paths = [
             {
                 "value": f"{topic}.wrench.force.{axis}",
+                "label": f"force {axis}",
                 "enabled": True,
                 "timestampMethod": "receiveTime",
             }
@@ -184,7 +194,8 @@ def _panel_config(panel: Panel, plan: Plan) -> tuple[str, dict[str, Any]]:
     if kind == "Publish":
         return _publish(panel, plan)
     if kind == "Indicator":
-        return kind, _titled(panel, _indicator(topic, "no data"))
+        label = "no panel" if panel.spec.placeholder else "no data"
+        return kind, _titled(panel, _indicator(topic, label))
     # RawMessages draws its own toolbar: it shows the topic path, never a title.
     return kind, {"topicPath": topic, **_RAW}
 
@@ -209,7 +220,8 @@ _RAW = {
 
 
 def _indicator(path: str, label: str) -> dict[str, Any]:
-    # Lichtblick's IndicatorConfig: path, style, rules, fallbackColor, fallbackLabel.
+    # Lichtblick's IndicatorConfig: path, style, rules, fallbackColor, fallbackLabel. The label
+    # never wraps: lines of at most 20 characters (checks/lichtblick.yaml label_lines).
     return {
         "path": path,
         "style": "bulb",
@@ -263,10 +275,10 @@ def _publish(panel: Panel, plan: Plan) -> tuple[str, dict[str, Any]]:
     if message is None:
         if normalise_type(datatype) == "trajectory_msgs/JointTrajectory":
             why = "the robot's joint names are not known"
-            label = "joint commands name the robot's joints: teleop-ui layouts --robot URDF"
+            label = "no joint names:\nteleop-ui layouts\n--robot URDF"
         else:
             why = "no whole message of this type is known"
-            label = f"no message to send on {panel.topic}"
+            label = "no message\nto send"
         return "Indicator", _titled(
             panel, _indicator(panel.topic, label), note=f" (no Publish button: {why})"
         )

@@ -72,12 +72,14 @@ class Robot:
 
     ``namespace``: ``/robot1`` (None: the root namespace, or relative names where the viewer
     expands them). ``topics``: (component, tile) -> the robot's real topic for that panel.
-    ``joints``: the joints a joint command names (None: not known).
+    ``joints``: the joints a joint command names (None: not known). ``described``: one
+    robot's layout, made from its description (``layouts --robot``, ``watch --layouts``).
     """
 
     namespace: str | None = None
     topics: Mapping[tuple[str, int], Topic] = field(default_factory=lambda: MappingProxyType({}))
     joints: tuple[JointStart, ...] | None = None
+    described: bool = False
 
 
 @dataclass(frozen=True, slots=True)
@@ -110,6 +112,7 @@ class Plan:
     namespace: str  # "/robot1"; "" for the root namespace or relative names
     relative: bool  # topics relative to the viewer's namespace (RViz2 templates)
     joints: tuple[JointStart, ...] | None = None  # the joints a joint command names
+    described: bool = False  # one robot's layout, from its description
 
     def topic(self, name: str) -> str:
         """``name`` (``clicked_point``) in the robot's namespace, as this plan spells topics."""
@@ -242,7 +245,7 @@ def plan_layout(
         number, default = solution.default_configuration, True
     else:
         number, default = configuration.number, False
-    return Plan(number, default, merged, namespace, relative, robot.joints)
+    return Plan(number, default, merged, namespace, relative, robot.joints, robot.described)
 
 
 def _namespace(robot: Robot, panels: tuple[Panel, ...]) -> str:

@@ -63,8 +63,10 @@ class Presentation:
         for spec in self.panels:
             if spec.component == component:
                 return spec
-        # Never a silent drop: an unmapped component still gets a panel, named as such.
-        return PanelSpec(component, "RawMessages", f"{ROBOT}/{_slug(component)}", (), True)
+        # Never a silent drop: an unmapped component still gets a panel, titled as a
+        # placeholder. An Indicator, whose title shows (a Raw Messages panel shows only its
+        # topic path, in red where the robot has no such topic: seen in the app).
+        return PanelSpec(component, "Indicator", f"{ROBOT}/{_slug(component)}", (), True)
 
 
 def default_presentation_path() -> Path:

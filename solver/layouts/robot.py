@@ -66,7 +66,7 @@ def robot_layout(
     if topics is not None:
         entries = panel_entries(solution, assignment.configuration, presentation, tile_count)
         real, warnings = match_topics(entries, topics, topics_source, namespace)
-    robot = Robot(namespace, real, tuple(joints) if joints else None)
+    robot = Robot(namespace, real, tuple(joints) if joints else None, described=True)
     text = target(fmt).render(
         solution,
         assignment.configuration,

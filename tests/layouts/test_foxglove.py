@@ -256,3 +256,36 @@ def test_a_presentation_topic_that_is_no_ros2_name_is_a_located_error(tmp_path: 
 
 def test_a_component_the_presentation_omits_gets_a_topic_that_is_a_ros2_name() -> None:
     assert load_presentation().spec("360 microphone").topic == "<robot>/component_360_microphone"
+
+
+def test_a_component_the_presentation_omits_is_a_panel_whose_title_says_it_is_a_placeholder() -> (
+    None
+):
+    # search-and-rescue's autonomy levels and environment gauges: as Raw Messages panels the
+    # app showed only "/robot1/teleoperated", in red (no robot has such a topic).
+    solution = solve(load_team("search-and-rescue"))
+    configs = foxglove_layout(solution, None, load_presentation())["configById"]
+    shown = {
+        config["lichtblickPanelTitle"]: (config["path"], config["fallbackLabel"])
+        for key, config in configs.items()
+        if key.startswith("Indicator!") and "placeholder" in config["lichtblickPanelTitle"]
+    }
+    assert shown == {
+        f"{name} (placeholder: no panel for this component)": (f"/{topic}", "no panel")
+        for name, topic in [
+            ("environment gauges", "environment_gauges"),
+            ("teleoperated", "teleoperated"),
+            ("shared", "shared"),
+            ("supervisory", "supervisory"),
+        ]
+    }
+
+
+def test_plot_series_are_labelled_so_a_narrow_legend_tells_them_apart() -> None:
+    solution = solve(load_team("case3"))
+    plot = foxglove_layout(solution, None, load_presentation())["configById"]["Plot!p08"]
+    assert [(s["label"], s["value"]) for s in plot["paths"]] == [
+        ("force x", "/wrench.wrench.force.x"),
+        ("force y", "/wrench.wrench.force.y"),
+        ("force z", "/wrench.wrench.force.z"),
+    ]

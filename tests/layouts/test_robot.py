@@ -47,6 +47,13 @@ def test_robot_layout_uses_its_namespace_and_its_own_sensor_tiles(
         }
     }
     assert layout["configById"]["Teleop!p01"]["topic"] == "/diff_drive_lidar/cmd_vel"
+    # Written again for another robot from its description, not as a team's layouts (which
+    # know neither its joints nor its real topics).
+    assert layout["globalVariables"]["teleop_ui_layout"] == (
+        "teleop-ui: UI configuration 11, for the robot under /diff_drive_lidar; for a robot "
+        "under /NAME: teleop-ui layouts --robot URDF --team TEAM -o FILE --namespace /NAME "
+        "(--topics FILE: its own topics)"
+    )
 
 
 def test_robot_layout_without_a_team_exits_2(

@@ -15,6 +15,8 @@ stable ``code``:
 ``lichtblick-grid``            a 3D panel without the reference grid the app's own layout has
 ``lichtblick-publish``         a Publish panel without a complete, meaningful message
 ``lichtblick-teleop-topic``    two Teleop panels driving one command topic
+``lichtblick-label-cut``       an Indicator label line longer than a tile shows (it is cut)
+``lichtblick-plot-legend``     series of one Plot whose legend names read alike once cut
 ``namespace``                  a topic the layout publishes on, outside the robot's namespace
 ============================  ===========================================================
 
@@ -191,6 +193,10 @@ def _panel(panel_id: str, config: Any, file: str, types: dict[str, set[str]]) ->
         yield _fault(file, f"{base}.publishRate", never, "lichtblick-config")
     if kind == "Publish":
         yield from _publish(config, base, file)
+    if "label_lines" in spec:
+        yield from _label_lines(config, spec["label_lines"], base, file)
+    if "legend_prefix" in spec:
+        yield from _legend(config, spec["legend_prefix"], base, file)
 
 
 def _titles(kind: str, config: dict[str, Any], base: str, file: str) -> Iterator[Fault]:
@@ -237,6 +243,53 @@ def _grid(config: dict[str, Any], grid: str, base: str, file: str) -> Iterator[F
             "has one)",
             "lichtblick-grid",
         )
+
+
+def _label_lines(
+    config: dict[str, Any], rule: Mapping[str, Any], base: str, file: str
+) -> Iterator[Fault]:
+    """Indicator labels: never wrapped, so a line past ``width`` characters is cut."""
+    width = rule["width"]
+    for reference in rule["labels"]:
+        for path, value in field_values(config, reference):
+            if not isinstance(value, str):
+                continue  # a type problem, reported
+            longest = max((len(line) for line in value.split("\n")), default=0)
+            if longest > width:
+                yield _fault(
+                    file,
+                    f"{base}.{path}",
+                    f"a line of {longest} characters: the label never wraps, and a tile shows "
+                    f"about {width} (break it with newlines)",
+                    "lichtblick-label-cut",
+                )
+
+
+def _legend(config: dict[str, Any], prefix: int, base: str, file: str) -> Iterator[Fault]:
+    """Plot series named alike in their first ``prefix`` characters read alike in the legend."""
+    paths = config.get("paths")
+    if not isinstance(paths, list):
+        return
+    seen: dict[str, int] = {}
+    for index, item in enumerate(paths):
+        if not isinstance(item, dict):
+            continue
+        label, value = item.get("label"), item.get("value")
+        name = label if isinstance(label, str) and label else value
+        if not isinstance(name, (str, int, float)) or isinstance(name, bool):
+            continue
+        start = str(name)[:prefix]
+        if start in seen:
+            yield _fault(
+                file,
+                f"{base}.paths[{index}]",
+                f"named like series {seen[start]} in its first {prefix} characters "
+                f"({shown(start, quoted=True)}): a narrow legend cuts the rest and the two read "
+                "alike (give each a short label)",
+                "lichtblick-plot-legend",
+            )
+        else:
+            seen[start] = index
 
 
 def _message_path(value: Any, path: str, file: str, *, plot: bool) -> Iterator[Fault]:

@@ -107,6 +107,20 @@ def _clean() -> dict[str, Any]:
         del configs["RawMessages!p09"][key]
     configs["Teleop!p03"]["topic"] = "/robot1/drive/cmd_vel"
     configs["Teleop!p04"]["topic"] = "/robot1/walk/cmd_vel"
+    for series in configs["Plot!p10"]["paths"]:
+        series["label"] = "force " + series["value"][-1]
+    return layout
+
+
+def _with_indicator(layout: dict[str, Any], label: str) -> dict[str, Any]:
+    layout["configById"]["Indicator!i"] = {
+        "path": "/robot1/joint_trajectory",
+        "style": "bulb",
+        "rules": [],
+        "fallbackColor": "#a0a0a0",
+        "fallbackLabel": label,
+    }
+    layout["layout"] = {"direction": "row", "first": layout["layout"], "second": "Indicator!i"}
     return layout
 
 
@@ -270,6 +284,27 @@ def test_a_publish_panel_without_a_whole_meaningful_message_is_named(
     assert _codes(layout, topic_types=POINTS) == {
         "lichtblick-publish": [f"configById.Publish!p01.{where}"]
     }
+
+
+def test_series_a_narrow_legend_cuts_to_the_same_name_are_named() -> None:
+    # Seen in the app: /robot1/wrench.wrench.force.x, .y and .z all read
+    # "/robot1/wrench.wrench.fo" in a 285 px tile.
+    layout = _clean()
+    for series in layout["configById"]["Plot!p10"]["paths"]:
+        del series["label"]
+    assert _codes(layout, topic_types=POINTS) == {
+        "lichtblick-plot-legend": ["configById.Plot!p10.paths[1]", "configById.Plot!p10.paths[2]"]
+    }
+
+
+def test_an_indicator_label_line_a_tile_cannot_show_is_named() -> None:
+    # Seen in the app: a 72-character label, never wrapped, with both ends cut.
+    long = "joint commands name the robot's joints: teleop-ui layouts --robot URDF"
+    assert _codes(_with_indicator(_clean(), long), topic_types=POINTS) == {
+        "lichtblick-label-cut": ["configById.Indicator!i.fallbackLabel"]
+    }
+    short = "no joint names:\nteleop-ui layouts\n--robot URDF"
+    assert check_lichtblick(_with_indicator(_clean(), short), topic_types=POINTS) == ()
 
 
 def test_two_teleop_pads_on_one_topic_are_named() -> None:
