@@ -8,10 +8,15 @@ Debian's headless Chromium (never a browser of playwright's own) opens the app c
 Foxglove WebSocket server (``wsserver.py``), imports LAYOUT.json through the app's own menu
 (View > Import layout from file...; the file picker is answered with the layout), waits for
 data, and writes to --shots: NAME.png (the screen), NAME-layouts.png (the layout list: a dot
-marks unsaved changes), NAME.exported.json (the app's own Export layout) and
-NAME.report.json: the import's error messages, each panel's text, the keys the app added
-(``export_diff``), the topics the app advertised, and with --act what each Teleop pad (held
-1.5 s), Publish button and 3D click tool sent, decoded by the server.
+marks unsaved changes), NAME-variables.png (the Variables sidebar: the layout's global
+variables), NAME.exported.json (the app's own Export layout) and NAME.report.json: the
+import's error messages, each panel's text, the keys the app added (``export_diff``), the
+layouts the list marks as having unsaved changes (``unsaved_changes``: the app's own
+"Default" is one; the imported layout must not be), the global variables as the sidebar
+shows them, the topics the app advertised once the layout was imported (``advertised``; the
+app's own default layout advertises its click-to-publish topics before that:
+``advertised_before_import``), and with --act what each Teleop pad (held 1.5 s), Publish
+button and 3D click tool sent, decoded by the server.
 """
 
 from __future__ import annotations
@@ -43,6 +48,14 @@ window.showOpenFilePicker = async () => [{
 }];
 """
 
+# The layouts whose row shows the unsaved-changes dot (LayoutBrowser/LayoutRow.tsx draws it as
+# a circle in the row's action button when the layout has a working copy).
+UNSAVED = """
+() => [...document.querySelectorAll("li")]
+  .filter((row) => row.querySelector("[data-testid=layout-actions] circle"))
+  .map((row) => row.querySelector("[data-testid=layout-list-item]")?.textContent ?? "")
+"""
+
 
 def records(path: Path, since: float) -> list[dict[str, Any]]:
     if not path.exists():
@@ -69,7 +82,8 @@ def added(before: Any, after: Any, path: str = "") -> list[tuple[str, str, Any]]
 
 async def menu(page: Page, item: str) -> None:
     await page.get_by_test_id("AppMenuButton").click()
-    await page.get_by_text("View", exact=True).click()
+    # By its test id: a 3D panel's settings, once shown, have a "View" section too.
+    await page.get_by_test_id("app-menu-view").click()
     await page.get_by_text(item).click()
 
 
@@ -95,6 +109,7 @@ async def run(args: argparse.Namespace) -> dict[str, Any]:
             "([t, n]) => { window.__layoutText = t; window.__layoutName = n; }",
             [text, f"{args.name}.json"],
         )
+        imported = time.time()
         await menu(page, "Import layout from file…")
         await page.wait_for_timeout(args.wait)
         report["snackbars"] = await page.locator("#notistack-snackbar").all_inner_texts()
@@ -115,8 +130,17 @@ async def run(args: argparse.Namespace) -> dict[str, Any]:
         await page.get_by_test_id("layouts-left").click()
         await page.wait_for_timeout(800)
         await page.screenshot(path=str(shots / f"{args.name}-layouts.png"))
-        advertised = records(record, started)
-        report["advertised"] = sorted({r["topic"] for r in advertised if r["op"] == "advertise"})
+        report["unsaved_changes"] = await page.evaluate(UNSAVED)
+        await page.get_by_test_id("right-sidebar-button").click()
+        await page.get_by_test_id("variables-right").click()
+        await page.wait_for_timeout(800)
+        report["variables"] = await page.get_by_test_id("sidebar-right").inner_text()
+        await page.screenshot(path=str(shots / f"{args.name}-variables.png"))
+        adverts = [r for r in records(record, started) if r["op"] == "advertise"]
+        report["advertised_before_import"] = sorted(
+            {r["topic"] for r in adverts if r["t"] < imported}
+        )
+        report["advertised"] = sorted({r["topic"] for r in adverts if r["t"] >= imported})
         report["console"] = [line for line in console if line.startswith(("error", "warning"))]
         await browser.close()
     (shots / f"{args.name}.report.json").write_text(json.dumps(report, indent=1, default=str))
@@ -193,7 +217,16 @@ def main() -> None:
     parser.add_argument("--act", action="store_true", help="press what publishes")
     report = asyncio.run(run(parser.parse_args()))
     summary = {
-        k: report[k] for k in ("snackbars", "advertised", "export_diff", "actions") if k in report
+        k: report[k]
+        for k in (
+            "snackbars",
+            "unsaved_changes",
+            "advertised",
+            "export_diff",
+            "variables",
+            "actions",
+        )
+        if k in report
     }
     print(json.dumps(summary, indent=1, default=str))
 

@@ -3,9 +3,10 @@
 usage: python makebag.py OUT_DIR NAMESPACE [--scan]
 
 Five seconds at 10 Hz of what the presentation profile's panels show, under NAMESPACE
-(``/robot1``): camera and 360 camera images, point clouds (tiles ``_2`` .. ``_5`` too), a
-wrench, audio bytes, and ``/tf`` (map -> base_link -> camera) so that 3D panels have frames;
-``--scan`` adds ``NAMESPACE/scan`` (``sensor_msgs/msg/LaserScan``). Written with rosbags.
+(``/robot1``): camera and 360 camera images, point clouds, wrenches and audio bytes (tiles
+``_2`` .. ``_5`` of each too), and ``/tf`` (map -> base_link -> camera) so that 3D panels
+have frames; ``--scan`` adds ``NAMESPACE/scan`` (``sensor_msgs/msg/LaserScan``). Written with
+rosbags.
 """
 
 from __future__ import annotations
@@ -138,10 +139,15 @@ def main() -> None:
                     cloud(stamp, k + 7 * tile),
                     stamp,
                 )
+                put(
+                    f"{namespace}/wrench{end}",
+                    "geometry_msgs/msg/WrenchStamped",
+                    wrench(stamp, k + 7 * tile),
+                    stamp,
+                )
+                put(f"{namespace}/audio{end}", "audio_common_msgs/msg/AudioData", audio, stamp)
             if "--scan" in sys.argv:
                 put(f"{namespace}/scan", "sensor_msgs/msg/LaserScan", scan(stamp, k), stamp)
-            put(f"{namespace}/wrench", "geometry_msgs/msg/WrenchStamped", wrench(stamp, k), stamp)
-            put(f"{namespace}/audio", "audio_common_msgs/msg/AudioData", audio, stamp)
     print(out)
 
 
