@@ -88,7 +88,8 @@ if TYPE_CHECKING:
     from solver.core.model import Robot, build_problem, robots
     from solver.core.partition import Configuration
     from solver.core.reproduce import Comparison, compare
-    from solver.core.rules import Characteristic, Component, RuleSet, default_rules_path, load_rules
+    from solver.core.rules import default_rules_path, load_rules
+    from solver.core.ruleset import Characteristic, Component, RuleSet
     from solver.core.solution import Solution, TypeSummary, solve
     from solver.core.team import Published, Team, TypeSelection, load_team
     from solver.errors import Fault, InputError, Location, RulesError, SolverError, TeamError
@@ -100,9 +101,9 @@ if TYPE_CHECKING:
 
 _EXPORTS = {
     "Assignment": "solver.core.assignment",
-    "Characteristic": "solver.core.rules",
+    "Characteristic": "solver.core.ruleset",
     "Comparison": "solver.core.reproduce",
-    "Component": "solver.core.rules",
+    "Component": "solver.core.ruleset",
     "Condition": "solver.core.constraints",
     "Configuration": "solver.core.partition",
     "Fault": "solver.errors",
@@ -116,7 +117,7 @@ _EXPORTS = {
     "Published": "solver.core.team",
     "Robot": "solver.core.model",
     "RuleConstraint": "solver.core.constraints",
-    "RuleSet": "solver.core.rules",
+    "RuleSet": "solver.core.ruleset",
     "RulesError": "solver.errors",
     "Solution": "solver.core.solution",
     "SolverError": "solver.errors",

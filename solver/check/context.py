@@ -20,7 +20,7 @@ from typing import Any
 from solver.check.finding import Related
 from solver.core.analysis import Analysis
 from solver.core.constraints import Value
-from solver.core.rules import Characteristic, Component, RuleSet
+from solver.core.ruleset import Characteristic, Component, RuleSet
 from solver.core.team import Team
 from solver.errors import Location
 from solver.files.yamlio import Document, PathPart

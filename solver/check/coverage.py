@@ -24,7 +24,7 @@ from collections.abc import Iterator
 from solver.check.context import RulesContext, integer_runs
 from solver.check.finding import Check, Finding
 from solver.core.constraints import Value
-from solver.core.rules import Characteristic, Component
+from solver.core.ruleset import Characteristic, Component
 from solver.untrusted import shown
 
 __all__ = ["CHECKS", "declared_range"]

@@ -20,7 +20,7 @@ from solver.check.context import RulesContext, integer_runs, values_text
 from solver.check.finding import Check, Finding
 from solver.core.constraints import Value
 from solver.core.regions import Domains
-from solver.core.rules import Characteristic
+from solver.core.ruleset import Characteristic
 from solver.untrusted import shown
 
 __all__ = ["CHECKS"]

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 from solver.check.context import RulesContext
 from solver.check.finding import Check, Finding
 from solver.core.constraints import Value
-from solver.core.rules import Characteristic, Component
+from solver.core.ruleset import Characteristic, Component
 from solver.untrusted import shown
 
 __all__ = ["CHECKS", "witness_triple"]

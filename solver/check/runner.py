@@ -32,7 +32,8 @@ from solver.check.finding import LEVELS, Finding, Level
 from solver.check.load import LoadContext
 from solver.check.registry import LOAD_CHECKS, RULE_CHECKS, TEAM_CHECKS, check_ids
 from solver.core.analysis import Analysis
-from solver.core.rules import RuleSet, default_rules_path, parse_rules
+from solver.core.rules import default_rules_path, parse_rules
+from solver.core.ruleset import RuleSet
 from solver.core.team import parse_team
 from solver.errors import Fault, InputError, Location, RulesError, TeamError
 from solver.files.filekind import describe, file_kind

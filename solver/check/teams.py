@@ -25,7 +25,7 @@ from solver.check.context import (
 )
 from solver.check.finding import Check, Finding, Related
 from solver.core.constraints import Value
-from solver.core.rules import Characteristic
+from solver.core.ruleset import Characteristic
 from solver.core.team import TypeSelection
 from solver.errors import Location
 

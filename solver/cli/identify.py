@@ -18,7 +18,7 @@ from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 if TYPE_CHECKING:
     from pathlib import Path
 
-    from solver.core.rules import RuleSet
+    from solver.core.ruleset import RuleSet
     from solver.core.solution import Solution
     from solver.identify.profile import Profile
 

@@ -2,7 +2,8 @@
 
 ===============  ==============================================================
 ``constraints``  constraints between characteristic values, as data
-``rules``        rule sets: characteristics, components, :func:`load_rules`
+``ruleset``      rule sets as frozen values: characteristics, components, :class:`RuleSet`
+``rules``        reading rule set files, :func:`load_rules`
 ``team``         team selections, :func:`load_team`
 ``forbidden``    selected values a team's constraints leave no robot for
 ``model``        the python-constraint model; valid robots

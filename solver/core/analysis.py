@@ -33,7 +33,7 @@ from solver.core.constraints import RuleConstraint, Value
 from solver.core.model import Robot
 from solver.core.oracle import Budget, Oracle, Sparse
 from solver.core.regions import Box, Domains, regions
-from solver.core.rules import RuleSet
+from solver.core.ruleset import RuleSet
 
 __all__ = ["Analysis", "Classes", "deletion"]
 

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 from solver.core.constraints import Value
 from solver.core.model import violated_constraints
 from solver.core.partition import Configuration
-from solver.core.rules import Characteristic, RuleSet
+from solver.core.ruleset import Characteristic, RuleSet
 from solver.core.solution import Solution
 from solver.errors import InputError, did_you_mean
 from solver.files.reader import MAX_NAME_CHARS

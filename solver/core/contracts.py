@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING, Any
 if TYPE_CHECKING:
     from solver.core.assignment import Assignment
     from solver.core.partition import Configuration
-    from solver.core.rules import Characteristic, Component, RuleSet
+    from solver.core.ruleset import Characteristic, Component, RuleSet
     from solver.core.solution import Solution, TypeSummary
 
 __all__ = [

@@ -24,7 +24,7 @@ from solver.core.constraints import RuleConstraint, Value
 from solver.untrusted import shown
 
 if TYPE_CHECKING:
-    from solver.core.rules import RuleSet
+    from solver.core.ruleset import RuleSet
     from solver.core.team import Team
 
 __all__ = ["Removed", "excluded_by_rules", "removed_by_constraints"]

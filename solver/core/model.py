@@ -17,7 +17,7 @@ from collections.abc import Iterable, Iterator, Sequence
 from typing import TYPE_CHECKING
 
 from solver.core.constraints import RuleConstraint, Value
-from solver.core.rules import RuleSet
+from solver.core.ruleset import RuleSet
 
 if TYPE_CHECKING:
     from constraint import Problem

@@ -39,7 +39,7 @@ from typing import TYPE_CHECKING
 
 from solver.core.constraints import Value
 from solver.core.regions import Domains
-from solver.core.rules import RuleSet
+from solver.core.ruleset import RuleSet
 from solver.errors import TooLargeError
 from solver.limits import limit
 

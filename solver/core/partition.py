@@ -26,7 +26,7 @@ from typing import TypeVar
 
 from solver.core.constraints import Value
 from solver.core.cover import Options
-from solver.core.rules import Component, RuleSet
+from solver.core.ruleset import Component, RuleSet
 
 __all__ = [
     "Configuration",

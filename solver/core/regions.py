@@ -20,7 +20,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from solver.core.constraints import Condition, RuleConstraint, Value
-from solver.core.rules import RuleSet
+from solver.core.ruleset import RuleSet
 
 __all__ = ["Box", "Domains", "intersect", "regions", "touches"]
 

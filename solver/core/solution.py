@@ -24,7 +24,7 @@ from solver.core.constraints import Value
 from solver.core.contracts import solution_data
 from solver.core.forbidden import Removed, removed_by_constraints
 from solver.core.partition import Configuration, Key, Partition
-from solver.core.rules import RuleSet
+from solver.core.ruleset import RuleSet
 from solver.core.team import Team
 from solver.engines import MAX_CONFIGURATIONS, MAX_ROBOTS
 from solver.engines.structure import Memo

@@ -28,7 +28,7 @@ from typing import Any
 
 import sympy
 
-from solver.core.rules import Characteristic, RuleSet
+from solver.core.ruleset import Characteristic, RuleSet
 from solver.core.solution import Solution
 from solver.core.team import Team, TypeSelection
 from solver.engines.structure import count

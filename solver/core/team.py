@@ -28,15 +28,13 @@ from pathlib import Path
 
 from solver.core.constraints import Value
 from solver.core.rules import (
-    Characteristic,
-    RuleSet,
-    Run,
     default_rules_path,
     load_rules,
     read_selection,
     shipped_name,
     shipped_path,
 )
+from solver.core.ruleset import Characteristic, RuleSet, Run
 from solver.errors import InputError, Location, TeamError, did_you_mean
 from solver.files.filekind import require_kind
 from solver.files.reader import Reader
@@ -277,7 +275,7 @@ def _in_order(characteristic: Characteristic, allowed: frozenset[Value]) -> tupl
 class _Maxima:
     """``sensor_count: N`` selections (a maximum: 1..N) of one team file, each made once.
 
-    A rule file's counts are a :class:`~solver.core.rules.Run`, so 1..N is a slice of them: no set
+    A rule file's counts are a :class:`~solver.core.ruleset.Run`, so 1..N is a slice of them: no set
     of N counts is built and filtered per type, and types with the same maximum share one
     tuple, so reading follows the file rather than the counts.
     """

@@ -22,7 +22,7 @@ import yaml
 from solver.core.constraints import Value
 
 if TYPE_CHECKING:
-    from solver.core.rules import Characteristic
+    from solver.core.ruleset import Characteristic
     from solver.core.solution import Solution
     from solver.core.team import Team
 

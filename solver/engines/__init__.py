@@ -47,7 +47,7 @@ from solver.limits import Limit, limit
 if TYPE_CHECKING:
     from solver.core.constraints import Value
     from solver.core.partition import Partition
-    from solver.core.rules import RuleSet
+    from solver.core.ruleset import RuleSet
     from solver.core.team import Team, TypeSelection
     from solver.engines.structure import Memo
 

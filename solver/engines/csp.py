@@ -16,7 +16,7 @@ from solver.core import model
 from solver.core import partition as partitioning
 from solver.core.constraints import Value
 from solver.core.partition import Partition
-from solver.core.rules import RuleSet
+from solver.core.ruleset import RuleSet
 from solver.core.team import TypeSelection
 from solver.engines import Counts
 

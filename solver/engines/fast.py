@@ -27,7 +27,7 @@ import numpy as np
 from solver.core import partition as partitioning
 from solver.core.constraints import Value
 from solver.core.partition import Partition, PartitionClass
-from solver.core.rules import Characteristic, RuleSet
+from solver.core.ruleset import Characteristic, RuleSet
 from solver.core.team import TypeSelection
 from solver.engines import Counts
 

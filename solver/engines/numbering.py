@@ -24,7 +24,7 @@ from typing import TYPE_CHECKING, Any
 
 from solver.core.constraints import Value
 from solver.core.partition import Key, sort_key, unsorted
-from solver.core.rules import RuleSet
+from solver.core.ruleset import RuleSet
 from solver.core.team import TypeSelection
 from solver.errors import StructureTooComplex
 

@@ -45,7 +45,7 @@ from typing import TYPE_CHECKING, Any
 
 from solver.core.constraints import Value
 from solver.core.partition import Key, Partition, PartitionClass, RobotClass, partition_classes
-from solver.core.rules import RuleSet
+from solver.core.ruleset import RuleSet
 from solver.core.team import TypeSelection
 from solver.engines import Counts
 from solver.errors import StructureTooComplex

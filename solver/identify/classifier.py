@@ -15,7 +15,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from solver.core.rules import RuleSet
+from solver.core.ruleset import RuleSet
 from solver.identify.body import Body
 from solver.identify.plans import arm_plans
 from solver.identify.profile import BOOLEAN_FEATURES, Profile

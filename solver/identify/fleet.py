@@ -33,7 +33,7 @@ from pathlib import Path
 
 import yaml
 
-from solver.core.rules import RuleSet
+from solver.core.ruleset import RuleSet
 from solver.core.team import parse_team
 from solver.errors import InputError, SolverError
 from solver.files.yamlio import parse_document

@@ -30,7 +30,8 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
-from solver.core.rules import RuleSet, default_rules_path, load_rules
+from solver.core.rules import default_rules_path, load_rules
+from solver.core.ruleset import RuleSet
 from solver.errors import Fault, InputError
 from solver.identify.body import Body, detect_body
 from solver.identify.classifier import classify

@@ -22,7 +22,7 @@ import re
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
-from solver.core.rules import RuleSet
+from solver.core.ruleset import RuleSet
 from solver.identify.profile import SENSOR_TYPE, Profile
 from solver.identify.readers.urdf import PluginTag, SensorTag, Urdf
 from solver.untrusted import shown

@@ -13,7 +13,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from solver.core.rules import RuleSet
+from solver.core.ruleset import RuleSet
 from solver.errors import SolverError
 from solver.files.reader import Reader
 from solver.files.yamlio import load_document

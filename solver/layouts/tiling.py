@@ -12,7 +12,7 @@ from __future__ import annotations
 from typing import Any
 
 from solver.core.partition import Configuration
-from solver.core.rules import RuleSet
+from solver.core.ruleset import RuleSet
 
 __all__ = ["MAX_TILES", "split_tree", "tiles"]
 

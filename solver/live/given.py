@@ -26,7 +26,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from solver.core.assignment import check_names, parse_combination
-from solver.core.rules import RuleSet
+from solver.core.ruleset import RuleSet
 from solver.errors import InputError
 from solver.live.discovery import ROBOT_VALUES, normalise_namespace
 from solver.live.graph import MISSING

@@ -38,7 +38,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Literal
 
 from solver.core.constraints import Value
-from solver.core.rules import Characteristic, Run
+from solver.core.ruleset import Characteristic, Run
 from solver.limits import Limit, limit
 from solver.untrusted import shown
 

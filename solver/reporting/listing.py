@@ -21,7 +21,7 @@ import numpy as np
 
 from solver import engines
 from solver.core.constraints import Value
-from solver.core.rules import RuleSet
+from solver.core.ruleset import RuleSet
 from solver.core.solution import Solution
 from solver.core.team import TypeSelection
 from solver.engines import ENUMERATING, MAX_ROBOTS

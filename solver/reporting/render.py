@@ -27,7 +27,7 @@ from solver.core.contracts import (
 )
 from solver.core.partition import Configuration
 from solver.core.reproduce import Comparison, published_note
-from solver.core.rules import Characteristic, Component
+from solver.core.ruleset import Characteristic, Component
 from solver.core.solution import Solution
 from solver.engines import describe
 from solver.reporting import markdown

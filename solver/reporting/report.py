@@ -31,7 +31,7 @@ from solver.core.constraints import Value
 from solver.core.contracts import configuration_data, solution_warnings
 from solver.core.partition import Configuration
 from solver.core.reproduce import published_note
-from solver.core.rules import Characteristic
+from solver.core.ruleset import Characteristic
 from solver.core.solution import Solution, TypeSummary
 from solver.errors import InputError
 from solver.files.atomic import write_all_atomic, write_atomic

@@ -31,7 +31,7 @@ from dataclasses import dataclass
 
 from solver.check.context import item_path
 from solver.core.forbidden import Removed
-from solver.core.rules import Characteristic, RuleSet
+from solver.core.ruleset import Characteristic, RuleSet
 from solver.files.yamlio import Document, PathPart, format_path
 
 __all__ = ["Place", "Places", "place_data", "places", "rule_places", "selection_places"]

@@ -26,7 +26,7 @@ from starlette.responses import HTMLResponse, RedirectResponse, Response
 from starlette.routing import BaseRoute, Route
 
 from solver.core.reproduce import published_note
-from solver.core.rules import Characteristic
+from solver.core.ruleset import Characteristic
 from solver.errors import Fault, InputError, SolverError
 from solver.studio.api import read_uploads
 from solver.studio.selection import SELECTION_FILE

@@ -28,7 +28,7 @@ from dataclasses import dataclass
 
 import yaml
 
-from solver.core.rules import RuleSet
+from solver.core.ruleset import RuleSet
 from solver.core.team import Team, parse_team
 from solver.core.teamfile import selection_form
 from solver.files.yamlio import parse_document

@@ -25,7 +25,7 @@ from solver.core.contracts import (
     counts_data,
     solution_data,
 )
-from solver.core.rules import RuleSet
+from solver.core.ruleset import RuleSet
 from solver.core.solution import Solution
 from solver.core.team import Team
 from solver.core.teamfile import team_yaml

@@ -29,7 +29,8 @@ from typing import TYPE_CHECKING, Literal, TypeVar
 
 from solver.core.forbidden import Removed, excluded_by_rules
 from solver.core.reproduce import published_for
-from solver.core.rules import RuleSet, load_rules, shipped_name, shipped_path
+from solver.core.rules import load_rules, shipped_name, shipped_path
+from solver.core.ruleset import RuleSet
 from solver.core.solution import Solution, solve
 from solver.core.team import Team, load_team
 from solver.errors import InputError

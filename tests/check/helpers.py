@@ -17,7 +17,8 @@ from hypothesis import strategies as st
 
 from solver.check import Finding, check_files
 from solver.core.constraints import RuleConstraint, Value
-from solver.core.rules import RuleSet, parse_rules
+from solver.core.rules import parse_rules
+from solver.core.ruleset import RuleSet
 from solver.files.yamlio import parse_document
 from tests.conftest import ROOT
 

@@ -11,7 +11,8 @@ from solver.check.context import RulesContext
 from solver.check.dead import DEAD_VALUE
 from solver.core.analysis import Analysis
 from solver.core.model import robots
-from solver.core.rules import RuleSet, load_rules
+from solver.core.rules import load_rules
+from solver.core.ruleset import RuleSet
 from tests.check.helpers import findings, fixture, rule_sets, valid_robots
 from tests.conftest import RULES
 

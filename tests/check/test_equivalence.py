@@ -13,7 +13,8 @@ from hypothesis import strategies as st
 from solver.check import check_files
 from solver.check.equivalence import witness_triple
 from solver.core.constraints import Value
-from solver.core.rules import Characteristic, Component, load_rules, parse_rules
+from solver.core.rules import load_rules, parse_rules
+from solver.core.ruleset import Characteristic, Component
 from solver.files.yamlio import parse_document
 from tests.check.helpers import findings, fixture
 

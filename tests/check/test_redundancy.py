@@ -3,7 +3,8 @@
 from __future__ import annotations
 
 from solver.core.model import robots
-from solver.core.rules import RuleSet, load_rules
+from solver.core.rules import load_rules
+from solver.core.ruleset import RuleSet
 from tests.check.helpers import findings, fixture
 
 

@@ -8,7 +8,8 @@ from solver.check.context import RulesContext
 from solver.check.void import VOID, VOID_TYPE
 from solver.core.analysis import Analysis
 from solver.core.model import is_satisfiable
-from solver.core.rules import RuleSet, load_rules
+from solver.core.rules import load_rules
+from solver.core.ruleset import RuleSet
 from tests.check.helpers import findings, fixture, rule_sets, valid_robots
 
 

@@ -13,7 +13,8 @@ from hypothesis import strategies as st
 
 from solver.core.analysis import Analysis
 from solver.core.constraints import Value
-from solver.core.rules import RuleSet, parse_rules
+from solver.core.rules import parse_rules
+from solver.core.ruleset import RuleSet
 from solver.files.yamlio import parse_document
 from tests.check.helpers import rule_sets, valid_robots
 

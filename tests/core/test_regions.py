@@ -7,7 +7,7 @@ import itertools
 from hypothesis import given, settings
 
 from solver.core.regions import regions, touches
-from solver.core.rules import RuleSet
+from solver.core.ruleset import RuleSet
 from tests.check.helpers import rule_sets
 
 

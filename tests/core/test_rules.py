@@ -8,7 +8,8 @@ from pathlib import Path
 import pytest
 
 from solver import RulesError, load_rules, load_team, solve
-from solver.core.rules import Component, default_rules_path
+from solver.core.rules import default_rules_path
+from solver.core.ruleset import Component
 from solver.errors import TooLargeError
 from tests.conftest import RULES
 
