@@ -22,7 +22,6 @@ LIMIT = 20  # the top of rank C
 KNOWN: dict[tuple[str, str], int] = {
     ("solver/check/dead.py", "_dead_for_type"): 21,
     ("solver/check/runner.py", "check_files"): 27,
-    ("solver/core/rules.py", "_read_arrangement"): 25,
     ("solver/engines/structure.py", "_partition_product"): 21,
     ("solver/engines/structure.py", "_blocks"): 29,
 }

@@ -401,45 +401,71 @@ def _read_arrangement(
 ) -> Component:
     """``component`` with the range, cluster size and member counts its spec declares."""
     spec = reader.mapping(path, "component")
-    name = component.name
-    low = high = None
-    if "min" in spec and "above" in spec:
-        reader.fault(path, "give either 'min' (inclusive) or 'above' (exclusive), not both")
-    if "max" in spec and "below" in spec:
-        reader.fault(path, "give either 'max' (inclusive) or 'below' (exclusive), not both")
-    if "min" in spec:
-        low = reader.integer((*path, "min"), "min")
-    elif "above" in spec:
-        above = reader.integer((*path, "above"), "above")
-        low = None if above is None else above + 1
-    if "max" in spec:
-        high = reader.integer((*path, "max"), "max")
-    elif "below" in spec:
-        below = reader.integer((*path, "below"), "below")
-        high = None if below is None else below - 1
-    if "min" not in spec and "above" not in spec and "max" not in spec and "below" not in spec:
+    low = _read_end(reader, path, spec, inclusive="min", exclusive="above", step=1)
+    high = _read_end(reader, path, spec, inclusive="max", exclusive="below", step=-1)
+    if not spec.keys() & {"min", "above", "max", "below"}:
         reader.fault(
             path,
-            f"arrangement {shown(name, quoted=True)} needs a range: min/above and/or max/below",
+            f"arrangement {shown(component.name, quoted=True)} needs a range: "
+            "min/above and/or max/below",
             code="missing-field",
         )
-    cluster_size = 1
-    if "cluster_size" in spec:
-        size = reader.integer((*path, "cluster_size"), "cluster_size")
-        if size is not None and size < 1:
-            reader.fault(
-                (*path, "cluster_size"),
-                f"cluster_size must be at least 1, got {size}",
-                code="out-of-range",
-            )
-        elif size is not None:
-            cluster_size = size
-    # The counts are a run low..high: the members are a slice of it, found by arithmetic.
+    cluster_size = _read_cluster_size(reader, path, spec)
+    members = _counts_within(values, low, high)
+    return replace(component, values=members, low=low, high=high, cluster_size=cluster_size)
+
+
+def _read_end(
+    reader: Reader,
+    path: YPath,
+    spec: dict[str, Any],
+    *,
+    inclusive: Literal["min", "max"],
+    exclusive: Literal["above", "below"],
+    step: Literal[1, -1],
+) -> int | None:
+    """One end of an arrangement's range, inclusive as declared (``above: 5`` is ``min: 6``),
+    or None where the spec leaves it open; giving both spellings is a fault."""
+    if inclusive in spec and exclusive in spec:
+        reader.fault(
+            path,
+            f"give either '{inclusive}' (inclusive) or '{exclusive}' (exclusive), not both",
+        )
+    if inclusive in spec:
+        return reader.integer((*path, inclusive), inclusive)
+    if exclusive in spec:
+        bound = reader.integer((*path, exclusive), exclusive)
+        return None if bound is None else bound + step
+    return None
+
+
+def _read_cluster_size(reader: Reader, path: YPath, spec: dict[str, Any]) -> int:
+    """How many counts one UI element shows: the spec's ``cluster_size``, 1 by default."""
+    if "cluster_size" not in spec:
+        return 1
+    size = reader.integer((*path, "cluster_size"), "cluster_size")
+    if size is None:
+        return 1
+    if size < 1:
+        reader.fault(
+            (*path, "cluster_size"),
+            f"cluster_size must be at least 1, got {size}",
+            code="out-of-range",
+        )
+        return 1
+    return size
+
+
+def _counts_within(
+    values: tuple[Value, ...], low: int | None, high: int | None
+) -> tuple[Value, ...]:
+    """The counts of ``values`` in ``low..high`` (an open end reaches the run's own end).
+
+    The counts are a run low..high: the members are a slice of it, found by arithmetic."""
     first, last = int(values[0]), int(values[-1])
     start = first if low is None else max(low, first)
     stop = last if high is None else min(high, last)
-    members = tuple(values[start - first : stop - first + 1]) if start <= stop else ()
-    return replace(component, values=members, low=low, high=high, cluster_size=cluster_size)
+    return tuple(values[start - first : stop - first + 1]) if start <= stop else ()
 
 
 def _read_constraints(
