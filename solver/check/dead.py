@@ -88,45 +88,80 @@ def _dead_for_type(context: RulesContext) -> Iterator[Finding]:
     if not _analysable(context):
         return
     analysis = context.analysis
-    key = context.rules.key
     for kinematic_type, live in analysis.type_live.items():
         if kinematic_type in analysis.void_types:
             continue
         domains = analysis.type_domains(kinematic_type)
         for position, characteristic in _others(context):
-            anywhere = analysis.live_anywhere[position]
-            dead = [v for v in characteristic.values if v in anywhere and v not in live[position]]
-            # One value left is a core value, reported (with its reason) by core-value.
-            if not dead or len(live[position]) == 1:
-                continue
-            reasons = _reasons(context, domains, position, dead)
-            unused = [
-                c.name
-                for c in characteristic.components
-                if characteristic.declared_components
-                and c.values
-                and not live[position].intersection(c.values)
-                and anywhere.intersection(c.values)
-            ]
-            needless = (
-                ""
-                if not unused
-                else f"; so it never needs component {', '.join(repr(n) for n in unused)}"
+            finding = _dead_for_one_type(
+                context,
+                kinematic_type,
+                characteristic,
+                position=position,
+                domains=domains,
+                live=live[position],
             )
-            if len(reasons) == 1:
-                why = _excluded_by(context, reasons[0][1])
-            else:  # each group of values has its own reason: never "A and B together"
-                why = "; ".join(
-                    f"{values_text(characteristic, values)} {_excluded_by(context, conflict)}"
-                    for values, conflict in reasons
-                )
-            blamed = sorted({i for _, conflict in reasons for i in conflict})
-            yield DEAD_FOR_TYPE.finding(
-                context.value_location(key, kinematic_type),
-                f"no valid {kinematic_type} robot has {characteristic.name} "
-                f"{values_text(characteristic, dead)}: {why}{needless}",
-                context.constraint_related(blamed, "excludes them"),
-            )
+            if finding is not None:
+                yield finding
+
+
+def _dead_for_one_type(
+    context: RulesContext,
+    kinematic_type: Value,
+    characteristic: Characteristic,
+    *,
+    position: int,
+    domains: Domains,
+    live: frozenset[Value],
+) -> Finding | None:
+    """The values of ``characteristic`` other types can have and ``kinematic_type`` cannot,
+    with why and the components the type so never needs; None when there are none."""
+    anywhere = context.analysis.live_anywhere[position]
+    dead = [v for v in characteristic.values if v in anywhere and v not in live]
+    # One value left is a core value, reported (with its reason) by core-value.
+    if not dead or len(live) == 1:
+        return None
+    reasons = _reasons(context, domains, position, dead)
+    blamed = sorted({i for _, conflict in reasons for i in conflict})
+    return DEAD_FOR_TYPE.finding(
+        context.value_location(context.rules.key, kinematic_type),
+        f"no valid {kinematic_type} robot has {characteristic.name} "
+        f"{values_text(characteristic, dead)}: {_why(context, characteristic, reasons)}"
+        f"{_never_needed(characteristic, live, anywhere)}",
+        context.constraint_related(blamed, "excludes them"),
+    )
+
+
+def _why(
+    context: RulesContext,
+    characteristic: Characteristic,
+    reasons: list[tuple[list[Value], tuple[int, ...]]],
+) -> str:
+    """The constraints that exclude the values; each group of values with its own reason
+    (never "A and B together" for two groups excluded apart)."""
+    if len(reasons) == 1:
+        return _excluded_by(context, reasons[0][1])
+    return "; ".join(
+        f"{values_text(characteristic, values)} {_excluded_by(context, conflict)}"
+        for values, conflict in reasons
+    )
+
+
+def _never_needed(
+    characteristic: Characteristic, live: frozenset[Value], anywhere: frozenset[Value]
+) -> str:
+    """``; so it never needs component 'x'`` for the declared components other types need
+    and this one, left with ``live``, does not; empty when there are none."""
+    if not characteristic.declared_components:
+        return ""
+    unused = [
+        c.name
+        for c in characteristic.components
+        if c.values and not live.intersection(c.values) and anywhere.intersection(c.values)
+    ]
+    if not unused:
+        return ""
+    return f"; so it never needs component {', '.join(repr(n) for n in unused)}"
 
 
 def _reasons(

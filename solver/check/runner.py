@@ -36,7 +36,7 @@ from solver.core.rules import default_rules_path, parse_rules
 from solver.core.ruleset import RuleSet
 from solver.core.team import parse_team
 from solver.errors import Fault, InputError, Location, RulesError, TeamError
-from solver.files.filekind import describe, file_kind
+from solver.files.filekind import FileKind, describe, file_kind
 from solver.files.yamlio import Document, load_document
 from solver.limits import limit
 
@@ -196,57 +196,73 @@ def check_files(
     if unknown:
         raise ValueError(f"unknown check id(s): {', '.join(unknown)}")
     run = _Run(frozenset(disable))
-    files = [str(path) for path in paths]
-    limit("check-files").check(len(files), "<arguments>")
-    if rules is not None and str(rules) not in files:
-        files.insert(0, str(rules))
-    documents: list[tuple[Path, Document]] = []
-    for name in files:
-        document = run.load(Path(name), name)
-        if document is not None:
-            documents.append((Path(name), document))
+    files = _files_to_read(paths, rules)
+    documents = [(Path(name), d) for name in files if (d := run.load(Path(name), name)) is not None]
     if rules is not None:
-        given = next((d for p, d in documents if str(p) == str(rules)), None)
-        given_kind = None if given is None else file_kind(given)
-        if given_kind is not None and given_kind != "rules":
-            run.unusable.append(
-                Fault(
-                    Location(str(rules)),
-                    f"is {describe(given_kind)}; --rules needs a rule set",
-                    "invalid",
-                )
-            )
+        _require_a_rule_set(run, documents, rules)
     kinds = [file_kind(d) for _, d in documents]
-    for (_, document), kind in zip(documents, kinds, strict=True):
-        if kind in ("profile", "presentation"):  # rules/ holds them; they are no rule sets
-            run.report_faults(
-                (),
-                (
-                    (
-                        document.location(),
-                        f"not checked: {describe(kind)} (check reads rule sets and teams)",
-                    ),
-                ),
-            )
+    _note_files_not_checked(run, documents, kinds)
     rule_docs = [
         (p, d) for (p, d), kind in zip(documents, kinds, strict=True) if kind in ("rules", None)
     ]
     team_docs = [(p, d) for (p, d), kind in zip(documents, kinds, strict=True) if kind == "team"]
     loaded = {p: run.rules_file(p, d.file, d) for p, d in rule_docs}
-    against: RuleSet | None = None
-    against_name: str | None = None
-    if rules is not None:
-        against_name = str(rules)
-        against = next((r for p, r in loaded.items() if str(p) == str(rules)), None)
-    elif len(rule_docs) == 1:
-        against_name = rule_docs[0][1].file
-        against = loaded[rule_docs[0][0]]
+    against, against_name = _rule_set_for_teams(rules, rule_docs, loaded)
     for path, document in team_docs:
         run.team_file(path, document, against, against_name)
     if run.unusable:
         raise InputError(_sorted_faults(run.unusable))
     findings = sorted(run.findings, key=lambda finding: finding.sort_key)
     return Report(tuple(files), tuple(findings))
+
+
+def _files_to_read(paths: Sequence[str | Path], rules: str | Path | None) -> list[str]:
+    """The files named, within the limit, with ``--rules`` first when it is not among them."""
+    files = [str(path) for path in paths]
+    limit("check-files").check(len(files), "<arguments>")
+    if rules is not None and str(rules) not in files:
+        files.insert(0, str(rules))
+    return files
+
+
+def _require_a_rule_set(
+    run: _Run, documents: list[tuple[Path, Document]], rules: str | Path
+) -> None:
+    """``--rules`` naming a team, profile or presentation makes the run unusable."""
+    given = next((d for p, d in documents if str(p) == str(rules)), None)
+    given_kind = None if given is None else file_kind(given)
+    if given_kind is not None and given_kind != "rules":
+        run.unusable.append(
+            Fault(
+                Location(str(rules)),
+                f"is {describe(given_kind)}; --rules needs a rule set",
+                "invalid",
+            )
+        )
+
+
+def _note_files_not_checked(
+    run: _Run, documents: list[tuple[Path, Document]], kinds: list[FileKind | None]
+) -> None:
+    """Profiles and presentations (rules/ holds them; they are no rule sets): said, not read."""
+    for (_, document), kind in zip(documents, kinds, strict=True):
+        if kind in ("profile", "presentation"):
+            note = f"not checked: {describe(kind)} (check reads rule sets and teams)"
+            run.report_faults((), ((document.location(), note),))
+
+
+def _rule_set_for_teams(
+    rules: str | Path | None,
+    rule_docs: list[tuple[Path, Document]],
+    loaded: dict[Path, RuleSet | None],
+) -> tuple[RuleSet | None, str | None]:
+    """The rule set every team is read against, and its name: ``--rules``, else the one rule
+    set among the files; (None, None) when each team goes by its own ``rules:``."""
+    if rules is not None:
+        return next((r for p, r in loaded.items() if str(p) == str(rules)), None), str(rules)
+    if len(rule_docs) == 1:
+        return loaded[rule_docs[0][0]], rule_docs[0][1].file
+    return None, None
 
 
 def _sorted_faults(faults: list[Fault]) -> list[Fault]:
