@@ -412,41 +412,65 @@ def _partition_product(
 ) -> Partition:
     """Configurations as the product of each block's partial configurations, ``key_of`` giving
     the partial configuration of a block's class combination (``None``: unserved)."""
-    width = len(rules.characteristics)
     per_block = []
     robots = served_robots = 1
     for block in blocks:
-        held: dict[Key, list[set[Value]]] = {}
-        weights: dict[Key, int] = {}
-        for combination, weight in block.combinations:
-            key = key_of(block, combination)
-            if key is not None:
-                weights[key] = weights.get(key, 0) + weight
-                for values, found in zip(
-                    held.setdefault(key, [set() for _ in combination]), combination, strict=True
-                ):
-                    values.update(found.members)
+        parts = _partial_configurations(rules, block, key_of)
         robots *= block.robots
-        served_robots *= sum(weights.values())
-        orders = [rules.characteristics[p].positions.__getitem__ for p in block.positions]
-        per_block.append(
-            [
-                (
-                    key,
-                    weight,
-                    tuple(
-                        tuple(sorted(values, key=order))
-                        for values, order in zip(held[key], orders, strict=True)
-                    ),
-                )
-                for key, weight in sorted(weights.items())
-            ]
+        served_robots *= sum(weight for _, weight, _ in parts)
+        per_block.append(parts)
+    return Partition(
+        selection.kinematic_type,
+        tuple([PartitionClass(*found) for found in _joined(rules, blocks, per_block)]),
+        robots,
+        robots - served_robots,
+        True,
+    )
+
+
+# A configuration or a block's part of one: its key, the robots it stands for, the values served
+# (per characteristic, in domain order).
+_Part = tuple[Key, int, tuple[Members, ...]]
+
+
+def _partial_configurations(
+    rules: RuleSet, block: _Block, key_of: Callable[[_Block, tuple[_Class, ...]], Key | None]
+) -> list[_Part]:
+    """A block's partial configurations in key order: its combinations gathered by key, with
+    their robots and the values they serve (unserved combinations left out)."""
+    held: dict[Key, list[set[Value]]] = {}
+    weights: dict[Key, int] = {}
+    for combination, weight in block.combinations:
+        key = key_of(block, combination)
+        if key is not None:
+            weights[key] = weights.get(key, 0) + weight
+            for values, found in zip(
+                held.setdefault(key, [set() for _ in combination]), combination, strict=True
+            ):
+                values.update(found.members)
+    orders = [rules.characteristics[p].positions.__getitem__ for p in block.positions]
+    return [
+        (
+            key,
+            weight,
+            tuple(
+                tuple(sorted(values, key=order))
+                for values, order in zip(held[key], orders, strict=True)
+            ),
         )
-    # Each configuration joins one partial configuration per block: concatenate the blocks'
-    # parts, then put the characteristics back in rule order if the blocks interleave them.
+        for key, weight in sorted(weights.items())
+    ]
+
+
+def _joined(rules: RuleSet, blocks: Sequence[_Block], per_block: list[list[_Part]]) -> list[_Part]:
+    """Every configuration, one partial configuration per block, in numbering order (by the
+    team key's component, then the key)."""
+    # Concatenate the blocks' parts, then put the characteristics back in rule order if the
+    # blocks interleave them.
+    width = len(rules.characteristics)
     order = [position for block in blocks for position in block.positions]
     inverse = None if order == list(range(width)) else [order.index(i) for i in range(width)]
-    found_classes: list[tuple[Key, int, tuple[Members, ...]]] = [((), 1, ())]
+    found_classes: list[_Part] = [((), 1, ())]
     for parts in per_block:
         found_classes = [
             (key + part_key, weight * part_weight, served + part_served)
@@ -460,13 +484,7 @@ def _partition_product(
         ]
     position = rules.key_position
     found_classes.sort(key=lambda item: (item[0][position], item[0]))
-    return Partition(
-        selection.kinematic_type,
-        tuple([PartitionClass(*found) for found in found_classes]),
-        robots,
-        robots - served_robots,
-        True,
-    )
+    return found_classes
 
 
 def _own_key(_: _Block, combination: tuple[_Class, ...]) -> Key | None:
@@ -612,6 +630,20 @@ def _cut(rules: RuleSet, position: int, domain: Sequence[Value]) -> list[_Class]
 
 def _blocks(rules: RuleSet, classes: list[list[_Class]]) -> list[_Block]:
     """Group characteristics linked by constraints; list each group's valid class combinations."""
+    groups, rules_of = _linked_groups(rules, classes)
+    # A value of every characteristic; a block's are overwritten as its combinations are tried.
+    values: list[Value] = [found[0].members[0] if found else "" for found in classes]
+    return [
+        _block(rules, classes, group, numbers, values)
+        for group, numbers in zip(groups, rules_of, strict=True)
+    ]
+
+
+def _linked_groups(
+    rules: RuleSet, classes: list[list[_Class]]
+) -> tuple[list[list[int]], list[list[int]]]:
+    """The characteristics' positions in groups that constraints link (each group and the
+    groups in position order), and per group the numbers of the constraints over it."""
     width = len(rules.characteristics)
     index = {name: i for i, name in enumerate(rules.names)}
     parent = list(range(width))
@@ -640,28 +672,33 @@ def _blocks(rules: RuleSet, classes: list[list[_Class]]) -> list[_Block]:
         # A rule over single-class characteristics only is a constant: attach it to the first
         # block, where it keeps every combination or none.
         rules_of[home[find(positions[0])] if positions else 0].append(number)
-    values: list[Value] = [found[0].members[0] if found else "" for found in classes]
-    blocks = []
-    for group, numbers in zip(groups, rules_of, strict=True):
-        if any(not classes[i] for i in group):
-            blocks.append(_Block(tuple(group), ()))
-            continue
-        size = math.prod(len(classes[i]) for i in group)
-        if size > BLOCK_LIMIT:
-            names = ", ".join(rules.names[i] for i in group)
-            raise StructureTooComplex.at(
-                rules.file,
-                f"constraints link {names} into {size} "
-                f"class combinations (more than "
-                f"{BLOCK_LIMIT})",
-                path="constraints",
-            )
-        if size > VECTOR:
-            grid = _grid(rules, [classes[i] for i in group], group, numbers, values)
-            blocks.append(_Block(tuple(group), grid=grid))
-            continue
-        blocks.append(_Block(tuple(group), _listed(rules, classes, group, numbers, values)))
-    return blocks
+    return groups, rules_of
+
+
+def _block(
+    rules: RuleSet,
+    classes: list[list[_Class]],
+    group: list[int],
+    numbers: list[int],
+    values: list[Value],
+) -> _Block:
+    """One group's block: no combination when a characteristic has no class selected, its
+    combinations listed when few, a grid of them past :data:`VECTOR`; refused past
+    :data:`BLOCK_LIMIT`."""
+    if any(not classes[i] for i in group):
+        return _Block(tuple(group), ())
+    size = math.prod(len(classes[i]) for i in group)
+    if size > BLOCK_LIMIT:
+        names = ", ".join(rules.names[i] for i in group)
+        raise StructureTooComplex.at(
+            rules.file,
+            f"constraints link {names} into {size} class combinations (more than {BLOCK_LIMIT})",
+            path="constraints",
+        )
+    if size > VECTOR:
+        grid = _grid(rules, [classes[i] for i in group], group, numbers, values)
+        return _Block(tuple(group), grid=grid)
+    return _Block(tuple(group), _listed(rules, classes, group, numbers, values))
 
 
 def _listed(
