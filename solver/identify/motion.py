@@ -12,18 +12,20 @@ Two kinds of evidence, the declared first:
 * *Roles.* What the joints do shows a control even where no controller is declared: wheels that
   turn (not a caster's) mean the base is driven, thrusters that the vessel is, an arm of
   actuated joints that its joints are commanded, and an arm of six joints or more ending in a
-  gripper that Cartesian (end-effector) goals can be solved for it; that last one is a guess
-  and says so ("likely, not declared"). Roles are named only for a control no declared
-  controller shows.
+  gripper that Cartesian (end-effector) goals can be solved for it, and two legs or more that
+  the body walks; those last two are guesses and say so ("likely, not declared": a gait
+  controller, like a Cartesian solver, is software). Roles are named only for a control no
+  declared controller shows.
 
 Which control each of these means is the profile's ``motion.description`` (data); this module
 only says which of them a robot has.
 
 Navigation (Waypoint) and walking live in launch and config files, not in the robot
 description: topics show them (:mod:`solver.identify.interfaces`). A description shows only
-that a vehicle *could* take waypoints: the profile's ``motion.navigation`` names, per control
-that moves the body, the sensors navigation needs (a driven base and a lidar; a flown body and
-odometry; thrusters and a Doppler velocity log). Such a Waypoint is a guess and says so.
+that a vehicle *could* take waypoints: the profile's ``motion.navigation`` names, per source
+that moves the body (wheels, a drive plugin, thrusters, flight; or a control, for every source
+of it), the sensors navigation needs (a driven ground base and a lidar or a GPS; a flown body
+and odometry; thrusters and a Doppler velocity log). Such a Waypoint is a guess and says so.
 """
 
 from __future__ import annotations
@@ -42,7 +44,9 @@ __all__ = ["controls_from_description"]
 # (profile source, evidence): what one place of the description shows.
 _Shown = list[tuple[str, str]]
 # The sources read from what joints do rather than from a declared controller.
-_ROLE_SOURCES = ("wheels", "thrusters", "arm", "arm_gripper")
+_ROLE_SOURCES = ("wheels", "thrusters", "arm", "arm_gripper", "legs")
+# Legs a body stands and walks on (one leg is a tool, a leg rig or a tail).
+_WALKING_LEGS = 2
 # Joints from the base to a gripper that reach any pose (three for position, three to turn).
 _CARTESIAN_JOINTS = 6
 
@@ -98,6 +102,10 @@ def _limbs(body: Body, urdf_source: str) -> _Shown:
                 "more ending in a gripper",
             )
         )
+    legs = body.count("leg")
+    # Legs are there to walk on; the gait that walks them is software, not in the description.
+    if legs >= _WALKING_LEGS:
+        found.append(("legs", f"{urdf_source}: likely, not declared: {legs} legs to walk on"))
     return found
 
 
@@ -119,19 +127,25 @@ def _planned(
 
 
 def _navigation(
-    controls: tuple[Control, ...], sensor_kinds: Collection[str], profile: Profile, source: str
+    shown: _Shown,
+    controls: tuple[Control, ...],
+    sensor_kinds: Collection[str],
+    profile: Profile,
+    source: str,
 ) -> tuple[Control, ...]:
-    """The profile's navigation control (Waypoint) as a guess: the body is moved by a control
-    the rule lists and carries a sensor that control's navigation needs."""
+    """The profile's navigation control (Waypoint) as a guess: the body is moved by a source
+    (or a control) the rule lists and carries a sensor that source's navigation needs."""
     rule = profile.navigation
     if rule is None or any(c.motion_control == rule.control for c in controls):
         return ()
-    needs = dict(rule.needs)
-    for control in controls:
-        carried = [kind for kind in needs.get(control.motion_control, ()) if kind in sensor_kinds]
-        if carried:
-            why = f"{control.motion_control} and a {carried[0]} sensor, what navigation needs"
-            return (Control(rule.control, f"{source}: likely, not declared: {why}"),)
+    for shown_source, _ in shown:
+        moved_by = profile.description_control(shown_source)
+        for moving, kinds in rule.needs:
+            carried = [kind for kind in kinds if kind in sensor_kinds]
+            if carried and moving in (shown_source, *moved_by):
+                control = moving if moving in moved_by else ", ".join(moved_by)
+                why = f"{control} and a {carried[0]} sensor, what navigation needs"
+                return (Control(rule.control, f"{source}: likely, not declared: {why}"),)
     return ()
 
 
@@ -165,4 +179,4 @@ def controls_from_description(
     controls = tuple(
         Control(name, "; ".join(found[name])) for name in dict.fromkeys(order) if name in found
     )
-    return controls + _navigation(controls, sensor_kinds, profile, urdf_source)
+    return controls + _navigation(shown, controls, sensor_kinds, profile, urdf_source)

@@ -136,6 +136,7 @@ CONTROL_SOURCES = (
     "thrusters",
     "arm",
     "arm_gripper",
+    "legs",
 )
 LIMB_KEYS = (
     "arm_min_joints",
@@ -336,7 +337,8 @@ class SensorTypeMapping:
 @dataclass(frozen=True, slots=True)
 class NavigationRule:
     """A control a description can show only as a guess (Waypoint): a body moved by one of
-    ``needs``' controls (Driving, Flight) that carries one of the sensor kinds it lists."""
+    ``needs``' description sources (wheels, thrusters, flight) or controls (every source of
+    it) that carries one of the sensor kinds it lists."""
 
     control: str
     needs: tuple[tuple[str, tuple[str, ...]], ...]
@@ -451,7 +453,7 @@ def parse_profile(document: Document) -> Profile:
     )
     topic_controls = _control_rules(reader)
     velocity_default, by_structure, description = _motion(reader, names)
-    navigation = _navigation(reader)
+    navigation = _navigation(reader, description)
     if reader.faults:
         raise ProfileError(reader.faults)
     text = repr(document.data).encode("utf-8")
@@ -782,8 +784,11 @@ def _motion(
     return default, tuple(pairs), tuple(sources)
 
 
-def _navigation(reader: Reader) -> NavigationRule | None:
-    """``motion.navigation`` (optional): the control, and per moving control its sensor kinds."""
+def _navigation(
+    reader: Reader, description: tuple[tuple[str, tuple[str, ...]], ...]
+) -> NavigationRule | None:
+    """``motion.navigation`` (optional): the control, and per description source (or control)
+    that moves the body the sensor kinds its navigation needs."""
     path: YPath = ("motion", "navigation")
     spec = reader.mapping(path, "navigation", required=False)
     if not spec:
@@ -791,6 +796,8 @@ def _navigation(reader: Reader) -> NavigationRule | None:
     reader.unknown_keys(path, spec, {"control", "needs"}, "navigation field")
     control = reader.string((*path, "control"), "motion control")
     needs = reader.mapping((*path, "needs"), "needs")
+    movers = {*CONTROL_SOURCES, *(name for _, names in description for name in names)}
+    reader.unknown_keys((*path, "needs"), needs, movers, "navigation source")
     found = []
     for moving in needs:
         kinds = reader.names((*path, "needs", moving), "sensor kinds")

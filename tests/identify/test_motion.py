@@ -7,9 +7,14 @@ from collections.abc import Callable
 
 import pytest
 
+from solver.files.yamlio import parse_document
 from solver.identify import identify_urdf
+from solver.identify.profile import parse_profile
+from tests.conftest import RULES
 from tests.identify import builders
 from tests.identify.builders import RobotText
+
+SHIPPED = (RULES / "identification.yaml").read_text(encoding="utf-8")
 
 
 def controls(robot: RobotText) -> dict[str, str]:
@@ -163,3 +168,56 @@ def test_a_vehicle_in_water_with_a_doppler_velocity_log_could_follow_waypoints()
     assert found["Driving"] == "urdf: 1 thruster(s)"
     assert found["Waypoint"] == GUESS.format("Driving", "dvl")
     assert "Waypoint" not in controls(builders.underwater_vehicle())
+
+
+GPS = builders.gazebo_sensor("gps_link", "gps", "gps")
+
+
+def test_a_driven_base_with_a_gps_could_follow_waypoints_outdoors() -> None:
+    robot = builders.ugv()
+    robot.add(GPS)
+    assert controls(robot)["Waypoint"] == GUESS.format("Driving", "gps")
+
+
+@pytest.mark.parametrize(
+    "build",
+    [builders.surface_vessel, builders.underwater_vehicle, builders.quadrotor],
+    ids=["vessel", "underwater", "multirotor"],
+)
+def test_a_gps_on_a_vessel_or_an_aircraft_shows_no_waypoints(
+    build: Callable[[], RobotText],
+) -> None:
+    # Every autopilot carries a GPS: by itself it is no sign of navigation software.
+    robot = build()
+    robot.add(GPS)
+    assert "Waypoint" not in controls(robot)
+
+
+def test_a_navigation_need_named_by_a_control_holds_for_every_source_of_it() -> None:
+    text = SHIPPED.replace("      thrusters: [lidar, dvl]\n", "      Driving: [gps]\n")
+    profile = parse_profile(parse_document(text, "mine.yaml"))
+    robot = builders.surface_vessel()
+    robot.add(GPS)
+    found = identify_urdf(robot.text(), profile=profile).motion_controls
+    assert {c.motion_control: c.source for c in found}["Waypoint"] == GUESS.format("Driving", "gps")
+
+
+@pytest.mark.parametrize(
+    ("build", "legs"),
+    [(builders.quadruped, 4), (builders.biped, 2), (builders.humanoid, 2)],
+    ids=["quadruped", "biped", "humanoid"],
+)
+def test_legs_show_the_body_walks_and_say_it_is_a_guess(
+    build: Callable[[], RobotText], legs: int
+) -> None:
+    assert controls(build())["Walking"] == f"urdf: likely, not declared: {legs} legs to walk on"
+
+
+def test_one_leg_walks_nowhere() -> None:
+    robot = RobotText("leg_rig")
+    builders.leg(robot, robot.root, "rig", ("hip", "thigh", "calf"))
+    assert "Walking" not in controls(robot)
+
+
+def test_casters_and_wheels_are_no_legs_to_walk_on() -> None:
+    assert "Walking" not in controls(builders.caster_base())

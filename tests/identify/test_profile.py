@@ -83,10 +83,21 @@ def test_the_navigation_guess_is_optional_and_its_fields_are_checked() -> None:
     shipped = load_profile().navigation
     assert shipped is not None
     assert shipped.control == "Waypoint"
-    assert dict(shipped.needs)["Flight"] == ("odometry",)
+    assert dict(shipped.needs)["flight"] == ("odometry",)
+    assert dict(shipped.needs)["wheels"] == ("lidar", "gps")
     text = SHIPPED.replace("    control: Waypoint\n", "    control: Waypoint\n    guess: yes\n")
     with pytest.raises(ProfileError) as caught:
         parse_profile(parse_document(text, "p.yaml"))
     [fault] = caught.value.faults
     assert fault.location.path == "motion.navigation.guess"
     assert "unknown navigation field 'guess'" in fault.message
+
+
+def test_a_navigation_need_for_nothing_that_moves_a_body_is_a_located_fault() -> None:
+    text = SHIPPED.replace("      wheels: [lidar, gps]\n", "      wheel: [lidar, gps]\n")
+    with pytest.raises(ProfileError) as caught:
+        parse_profile(parse_document(text, "p.yaml"))
+    [fault] = caught.value.faults
+    assert fault.location.path == "motion.navigation.needs.wheel"
+    assert "unknown navigation source 'wheel'" in fault.message
+    assert "wheels" in fault.message

@@ -125,7 +125,9 @@ def test_a_bag_shows_what_a_humanoid_offers_walking_navigation_and_joint_goals(
     result = identify(urdf, bags=[bag])
     assert result.structure == "Humanoid"
     found = {c.motion_control: c.source for c in result.motion_controls}
-    assert found["Walking"] == "bag walk: /cmd_vel (geometry_msgs/Twist)"
+    assert found["Walking"] == (
+        "urdf: likely, not declared: 2 legs to walk on; bag walk: /cmd_vel (geometry_msgs/Twist)"
+    )
     assert found["Waypoint"] == (
         "bag walk: /navigate_to_pose/_action/status (action_msgs/GoalStatusArray)"
     )

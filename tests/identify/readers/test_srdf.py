@@ -92,7 +92,9 @@ def test_leg_groups_and_feet_plan_no_arm_and_no_end_effector_goals() -> None:
     plain = identify_urdf(builders.quadruped().text())
     planned = identify_urdf(builders.quadruped().text(), srdf_text=text)
     assert (planned.structure, planned.confidence) == (plain.structure, plain.confidence)
-    assert planned.motion_controls == ()
+    # The legs walk (a guess from the legs themselves); the SRDF adds no goal for them.
+    assert planned.motion_controls == plain.motion_controls
+    assert [c.motion_control for c in planned.motion_controls] == ["Walking"]
 
 
 def test_many_copies_of_one_arm_group_plan_one_arm_and_the_rest_are_not_read() -> None:
