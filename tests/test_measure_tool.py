@@ -151,3 +151,11 @@ def test_another_profile_measures_what_a_rule_adds(tmp_path: Path) -> None:
         measure("--set", str(tmp_path / "tiny"), "--profile", str(without)), "mobile base", "tiny"
     )
     assert (guessed[7], plain[7]) == ("1/2 (50%)", "1/1 (100%)")
+
+
+def test_each_motion_control_gets_its_own_precision_and_recall(tmp_path: Path) -> None:
+    tiny_set(tmp_path / "tiny")
+    output = measure("--set", str(tmp_path / "tiny"))
+    # The rover, labelled Driving, is read as Driving and (its lidar) a Waypoint guess.
+    assert "| Driving | 1/1 (100%) | 1/1 (100%) |" in output.splitlines()
+    assert "| Waypoint | 0/1 (0%) | - |" in output.splitlines()

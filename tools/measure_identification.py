@@ -22,7 +22,8 @@ structure accuracy on the certain labels (no trailing ``?``), the lenient score 
 in ``?`` also accepts a structure its ``uncertainty_note`` names), descriptions refused (exit
 2), sensor precision and recall (kinds with counts), and motion-control precision and recall
 (robots whose ``motion_control_kinds`` is empty are not labelled for controls); then per set the
-per-label table, the structure confusion table and every miss.
+per-label table, the structure confusion table, each motion control's precision and recall
+and every miss.
 
 Labels that name no structure of the profile are scored against the article's fallback: a
 ``Surface vessel`` or ``Underwater vehicle`` is right as ``Other`` until the profile has a
@@ -138,6 +139,8 @@ class Score:
     control_hits: int = 0
     control_predicted: int = 0
     control_truth: int = 0
+    # Per motion control: (control, "hit" | "predicted" | "truth") -> robots.
+    per_control: Counter[tuple[str, str]] = field(default_factory=Counter)
     per_label: Counter[tuple[str, bool]] = field(default_factory=Counter)
     confusion: Counter[tuple[str, str]] = field(default_factory=Counter)
     misses: list[str] = field(default_factory=list)
@@ -207,6 +210,12 @@ class Score:
         self.control_hits += len(got & labelled)
         self.control_predicted += len(got)
         self.control_truth += len(labelled)
+        for control in got & labelled:
+            self.per_control[(control, "hit")] += 1
+        for control in got:
+            self.per_control[(control, "predicted")] += 1
+        for control in labelled:
+            self.per_control[(control, "truth")] += 1
         if got != labelled:
             missing = ", ".join(sorted(labelled - got)) or "-"
             extra = ", ".join(sorted(got - labelled)) or "-"
@@ -234,6 +243,18 @@ class Score:
             lines.append(f"| {label} | {right} | {right + self.per_label[(label, False)]} |")
         return lines
 
+    def per_control_table(self) -> list[str]:
+        """Precision and recall of each motion control, on the robots labelled for controls."""
+        controls = sorted({control for control, _ in self.per_control})
+        lines = ["| motion control | precision | recall |", "|---|---:|---:|"]
+        for control in controls:
+            hits = self.per_control[(control, "hit")]
+            predicted = share(hits, self.per_control[(control, "predicted")])
+            lines.append(
+                f"| {control} | {predicted} | {share(hits, self.per_control[(control, 'truth')])} |"
+            )
+        return lines
+
     def report(self) -> str:
         lines = ["Structure confusion (rows: label in truth.csv, columns: `structure` read):", ""]
         labels = sorted({t for t, _ in self.confusion})
@@ -255,9 +276,10 @@ class Score:
             f"{self.control_hits}/{self.control_truth}, precision "
             f"{self.control_hits}/{self.control_predicted}",
             "",
-            "Misses:",
-            "",
         ]
+        if self.per_control:
+            lines += [*self.per_control_table(), ""]
+        lines += ["Misses:", ""]
         lines += [f"- {miss}" for miss in self.misses or ["(none)"]]
         return "\n".join(lines) + "\n"
 
