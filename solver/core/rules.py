@@ -35,10 +35,6 @@ __all__ = [
 
 YPath = tuple[PathPart, ...]
 
-# The largest domain a characteristic may declare by default (the ``values`` limit of
-# solver/limits.py); a typo such as max: 10000000000 would otherwise allocate ten billion.
-MAX_INTEGER_VALUES = limit("values").value
-
 _RULES_KEYS = {
     "name",
     "description",
