@@ -417,6 +417,25 @@ def test_a_secret_given_as_a_topic_list_is_named_never_quoted(
     assert "the-secret" not in shown.out + shown.err
 
 
+# /etc/shadow's lines end in ':' and so parse as a mapping: each line a key.
+SHADOW = "root:$6$the-secret-hash:19000:0:99999:7:::\ndaemon:*:the-secret-day:0:99999:7:::\n"
+
+
+@pytest.mark.parametrize("reader", list(YAML_READERS))
+def test_a_secret_that_parses_as_a_mapping_is_named_never_quoted_by_every_yaml_reader(
+    tmp_path: Path, reader: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    secret = tmp_path / "shadow"
+    secret.write_text(SHADOW)
+    assert run_main(*_command(reader, tmp_path, secret)) in (1, 2)  # 1: batch's failed row
+    shown = capsys.readouterr()
+    lines = (shown.out + shown.err).splitlines()
+    refusal = next(line.strip() for line in lines if line.strip().startswith(f"{secret}:1:1: "))
+    assert "not a" in refusal  # the file is named...
+    for text in (shown.out, shown.err, *_summaries(tmp_path / "batch")):
+        assert "the-secret" not in text  # ...and none of its keys is quoted
+
+
 def _summaries(out: Path) -> list[str]:
     return [
         (out / name).read_text() for name in ("summary.csv", "summary.md") if (out / name).is_file()

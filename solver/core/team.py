@@ -162,7 +162,9 @@ def parse_team(
     """
     require_kind(document, "team")
     reader = Reader(document)
-    top = reader.top("team file")
+    # Without `team:` the file may be anything (/etc/shadow parses as a mapping): none of
+    # its keys is quoted as an unknown field.
+    top = reader.top("team file", needs="team")
     if top is None:
         raise TeamError(reader.faults)
     reader.unknown_keys((), top, _TEAM_KEYS, "team file field")

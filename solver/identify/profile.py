@@ -420,6 +420,15 @@ def parse_profile(document: Document) -> Profile:
             reader.faults
             or [reader.document.fault((), "an identification profile must be a mapping")]
         )
+    if "characteristics" not in top:
+        # The file may be anything (/etc/shadow parses as a mapping): quote none of its keys.
+        reader.fault(
+            (),
+            "not an identification profile: it has no 'characteristics:' field "
+            "(nor 'extends:' naming a profile that has one)",
+            code="missing-field",
+        )
+        raise ProfileError(reader.faults)
     reader.unknown_keys((), top, _TOP_KEYS, "profile field")
     name = reader.string(
         ("name",), "profile name", required=False, default=Path(document.file).stem

@@ -151,7 +151,7 @@ def test_a_team_with_no_kinematic_types_is_refused(write_file: WriteFile) -> Non
 
 def test_a_team_file_without_a_team_is_refused(write_file: WriteFile) -> None:
     assert faults(write_file("t.yaml", "name: lonely\n")) == [
-        "1:1: team: missing team (a mapping of kinematic type -> selections)"
+        "1:1: not a team file: it has no 'team:' field"
     ]
 
 
