@@ -142,6 +142,36 @@ ROWS = [
         "",
     ),
     (
+        "test_count_growth_in_values[5120]",
+        "read + count: 5,120 values in 1,280 components, listed whole",
+        "",
+    ),
+    (
+        "test_count_growth_in_values[10240]",
+        "read + count: 10,240 values in 2,560 components, listed whole",
+        "",
+    ),
+    (
+        "test_count_growth_in_values[20480]",
+        "read + count: 20,480 values in 5,120 components, listed whole",
+        "",
+    ),
+    (
+        "test_check_growth_in_values[5120]",
+        "read + `check`: 5,120 values in 1,280 components, listed whole",
+        "",
+    ),
+    (
+        "test_check_growth_in_values[10240]",
+        "read + `check`: 10,240 values in 2,560 components, listed whole",
+        "",
+    ),
+    (
+        "test_check_growth_in_values[20480]",
+        "read + `check`: 20,480 values in 5,120 components, listed whole",
+        "",
+    ),
+    (
         "test_check_non_transitive_of_1000_sliding_arrangements",
         "`check`: 1000 overlapping arrangements (non-transitive witnesses)",
         "",
@@ -319,6 +349,30 @@ RATIOS = [
         "test_solve_overlapping_windows[80]",
         "test_solve_overlapping_windows[40]",
         "<= 20 (8 x 2.5)",
+    ),
+    (
+        "read + count growth: 10,240 / 5,120 values (linear: 2)",
+        "test_count_growth_in_values[10240]",
+        "test_count_growth_in_values[5120]",
+        "<= 2.5",
+    ),
+    (
+        "read + count growth: 20,480 / 10,240 values (linear: 2)",
+        "test_count_growth_in_values[20480]",
+        "test_count_growth_in_values[10240]",
+        "<= 2.5",
+    ),
+    (
+        "read + `check` growth: 10,240 / 5,120 values (linear: 2)",
+        "test_check_growth_in_values[10240]",
+        "test_check_growth_in_values[5120]",
+        "<= 2.5",
+    ),
+    (
+        "read + `check` growth: 20,480 / 10,240 values (linear: 2)",
+        "test_check_growth_in_values[20480]",
+        "test_check_growth_in_values[10240]",
+        "<= 2.5",
     ),
     (
         "ROS 2 `watch`: active robot -> configuration / bare DDS echo round trip",

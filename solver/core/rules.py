@@ -20,7 +20,7 @@ from solver.core.ruleset import Characteristic, Component, Kind, RuleSet, Run, o
 from solver.errors import RulesError, did_you_mean
 from solver.files.filekind import require_kind
 from solver.files.reader import Reader, type_name
-from solver.files.yamlio import Document, PathPart, load_document
+from solver.files.yamlio import Document, PathPart, collector_paused, load_document
 from solver.limits import limit
 from solver.untrusted import shown
 
@@ -83,6 +83,7 @@ def load_rules(path: str | Path, *, display: str | None = None) -> RuleSet:
     return parse_rules(document)
 
 
+@collector_paused()  # building many values: see there
 def parse_rules(document: Document) -> RuleSet:
     """Build a :class:`RuleSet` from an already loaded document.
 
@@ -563,7 +564,7 @@ def read_selection(
                 code="empty-selection",
             )
             return None
-        chosen: list[Value] = []
+        chosen: dict[Value, None] = {}  # in the order written; a set to find twice-listed
         before = len(reader.faults)
         for index, item in enumerate(raw):
             value = _read_value(reader, (*path, index), characteristic, item)
@@ -574,10 +575,10 @@ def read_selection(
                     code="duplicate-value",
                 )
             elif value is not None:
-                chosen.append(value)
+                chosen[value] = None
         if len(reader.faults) > before:
             return None
-        return frozenset(chosen), _describe(characteristic, chosen)
+        return frozenset(chosen), _describe(characteristic, list(chosen))
     if raw is None:
         reader.fault(
             path,

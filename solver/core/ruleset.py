@@ -216,7 +216,15 @@ class Characteristic:
         return tuple(self.components[i] for i in self.membership[position])
 
     def component(self, name: str) -> Component | None:
-        return next((c for c in self.components if c.name == name), None)
+        return self._components_by_name.get(name)
+
+    @cached_property
+    def _components_by_name(self) -> dict[str, Component]:
+        # The first of a name, as a walk of the list finds it (a duplicate is a fault).
+        found: dict[str, Component] = {}
+        for component in self.components:
+            found.setdefault(component.name, component)
+        return found
 
     @cached_property
     def is_partition(self) -> bool:

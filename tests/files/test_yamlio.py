@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+import gc
 from pathlib import Path
 
 import pytest
+import yaml
 
 from solver.errors import InputError
 from solver.files.yamlio import load_document, parse_document, prescan
@@ -159,3 +161,31 @@ def test_oversized_files_are_refused_without_reading_them(tmp_path: Path) -> Non
 
 def test_timestamps_stay_text_instead_of_becoming_dates() -> None:
     assert parse_document("published: 2017-03-15\n").data == {"published": "2017-03-15"}
+
+
+SCALARS = ["7", "007", "0x1F", "0o17", "1_000", "+5", "-3", "0", "1:30", "3.5", "1e3", "true"]
+SCALARS += ["null", "~", "text", "'12'", '"12"', "999999999999999999", "2001-12-14"]
+
+
+@pytest.mark.parametrize("scalar", SCALARS)
+def test_scalars_read_as_pyyaml_reads_them(scalar: str) -> None:
+    data = parse_document(f"value: {scalar}\n").data
+    expected = yaml.safe_load(f"value: {scalar}\n")["value"]
+    if scalar == "2001-12-14":
+        expected = scalar  # dates stay text (see the test above)
+    assert data == {"value": expected}
+    assert type(data["value"]) is type(expected)
+
+
+def test_reading_leaves_the_cycle_collector_as_it_was() -> None:
+    parse_document("a: [1, 2]\n")
+    assert gc.isenabled()
+    with pytest.raises(InputError):
+        parse_document("a: [1, 2\n")
+    assert gc.isenabled()
+    gc.disable()
+    try:
+        parse_document("a: [1, 2]\n")
+        assert not gc.isenabled()
+    finally:
+        gc.enable()
