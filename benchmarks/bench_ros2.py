@@ -1,8 +1,8 @@
 """Latency of ``teleop-ui watch --ros2`` on real Cyclone DDS participants, loopback only.
 
-Ten emulated ROS 2 robots (five quadrotors, five rovers: separate processes, see
-:mod:`tests.live.ros2_robot`) are on a DDS domain of their own; a watcher (DdsGraph source,
-default polling interval 0.2 s) runs in a thread. Timed:
+Ten and a hundred emulated ROS 2 robots (half quadrotors, half rovers, in ten processes of their
+own, see :mod:`tests.live.ros2_robot`: one robot each, or ten) are on a DDS domain of their own;
+a watcher (DdsGraph source, default polling interval 0.2 s) runs in a thread. Timed, on each:
 
 * ``switch``: at a human pace (an untimed pause before each), the operator participant writes
   ``/teleop_ui/active_robot`` (round-robin over the ten) -> the operator's reader receives
@@ -13,10 +13,11 @@ default polling interval 0.2 s) runs in a thread. Timed:
 
 * ``echo`` (the peer): the same operator writes a String on a topic of its own and a bare DDS
   participant in another process answers it from a data-available listener, with the same
-  QoS: DDS both ways and nothing else. ``tools/bench_table.py`` reports ``switch / echo``. The
-  watcher runs in the operator's process here, where Cyclone DDS delivers without a network
-  hop, so the ratio is a rough measure: how many bare round trips between processes one
-  answer of the watcher costs.
+  QoS: DDS both ways and nothing else, on the same domain as the robots, in the same run.
+  ``tools/bench_table.py`` reports ``switch / echo`` for each size (issue 29's target: at most
+  3x with 100 robots). The watcher runs in the operator's process here, where Cyclone DDS
+  delivers without a network hop, so the ratio is a rough measure: how many bare round trips
+  between processes one answer of the watcher costs.
 
 Each round asserts what it timed (robot, configuration number); the median and 95th percentile
 are printed and kept in the benchmark's extra info. Run:
@@ -48,6 +49,8 @@ from tests.live.ros2_graph import EmulatedRobot, Operator, next_domain, write_co
 
 SWITCHES = 40
 DESCRIPTIONS = 10
+PROCESSES = 10  # each holds ROBOTS / PROCESSES robots
+ROBOTS = (10, 100)
 # Untimed, before each switch: an operator switches robots at a human pace. Back-to-back
 # switches are answered at most every 10 ms (the watcher's gap between polls, which keeps
 # bursts of changes from becoming bursts of polls), so without a pause that gap is measured.
@@ -59,31 +62,17 @@ def pause() -> None:
 
 
 class Fleet:
-    def __init__(self, directory: Path) -> None:
+    def __init__(self, directory: Path, robots: int) -> None:
         os.environ["CYCLONEDDS_URI"] = write_config(directory)
         self.domain = next_domain()
         self.solution: Solution = solve(load_team(TEAMS / "case3.yaml"))
         self.robots: list[EmulatedRobot] = []
         self.names: list[str] = []
-        for index in range(10):
-            robot = EmulatedRobot(self.domain, dict(os.environ), 24 if index % 2 else 16)
-            if index < 5:
-                name = f"/uav{index}"
-                robot.node(
-                    f"{name}/camera_driver",
-                    publish=[(f"{name}/camera/image_raw", "sensor_msgs/msg/Image")],
-                )
-                robot.describe(name, drone_text(), directory)
-            else:
-                name = f"/ugv{index}"
-                robot.node(
-                    f"{name}/base_driver",
-                    subscribe=[(f"{name}/cmd_vel", "geometry_msgs/msg/Twist")],
-                    publish=[(f"{name}/scan", "sensor_msgs/msg/LaserScan")],
-                )
-                robot.describe(name, rover_text(), directory)
-            self.robots.append(robot)
-            self.names.append(name)
+        for index in range(PROCESSES):
+            process = EmulatedRobot(self.domain, dict(os.environ), 24 if index % 2 else 16)
+            for number in range(index, robots, PROCESSES):
+                self.names.append(self._put(process, number, robots, directory))
+            self.robots.append(process)
         source = DdsGraph(self.domain)
         self.watcher = Watcher(source.name, self.solution, load_profile(), source=source)
         self.events: queue.Queue[tuple[float, dict[str, Any]]] = queue.Queue()
@@ -97,6 +86,26 @@ class Fleet:
             if data.get("combinations"):
                 ready.add(data["robot"])
         assert ready == set(self.names), f"robots identified: {sorted(ready)}"
+
+    @staticmethod
+    def _put(process: EmulatedRobot, number: int, robots: int, directory: Path) -> str:
+        """Robot ``number``: a quadrotor in the first half, a rover in the second."""
+        if number < robots // 2:
+            name = f"/uav{number}"
+            process.node(
+                f"{name}/camera_driver",
+                publish=[(f"{name}/camera/image_raw", "sensor_msgs/msg/Image")],
+            )
+            process.describe(name, drone_text(), directory)
+        else:
+            name = f"/ugv{number}"
+            process.node(
+                f"{name}/base_driver",
+                subscribe=[(f"{name}/cmd_vel", "geometry_msgs/msg/Twist")],
+                publish=[(f"{name}/scan", "sensor_msgs/msg/LaserScan")],
+            )
+            process.describe(name, rover_text(), directory)
+        return name
 
     def _run(self) -> None:
         for event in self.watcher.events():
@@ -124,9 +133,11 @@ class Fleet:
             robot.kill()
 
 
-@pytest.fixture(scope="module")
-def fleet(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Fleet]:
-    running = Fleet(tmp_path_factory.mktemp("dds"))
+@pytest.fixture(scope="module", params=ROBOTS, ids=[f"{n} robots" for n in ROBOTS])
+def fleet(
+    request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory
+) -> Iterator[Fleet]:
+    running = Fleet(tmp_path_factory.mktemp("dds"), request.param)
     yield running
     running.close()
 
@@ -152,7 +163,9 @@ def test_active_robot_message_to_published_configuration(
     benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
         switch, setup=pause, rounds=SWITCHES
     )
-    report(benchmark, "active robot -> published configuration (10 robots)", latencies)
+    report(
+        benchmark, f"active robot -> published configuration ({len(fleet.names)} robots)", latencies
+    )
 
 
 def test_new_robots_description_to_its_first_event(
@@ -186,7 +199,9 @@ def test_new_robots_description_to_its_first_event(
     benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
         describe, rounds=DESCRIPTIONS
     )
-    report(benchmark, "new robot's description -> robot_added", latencies)
+    report(
+        benchmark, f"new robot's description -> robot_added ({len(fleet.names)} robots)", latencies
+    )
 
 
 class Echo:
@@ -247,4 +262,8 @@ def test_bare_dds_echo_round_trip_peer(benchmark: BenchmarkFixture, fleet: Fleet
         )
     finally:
         echo.close()
-    report(benchmark, "bare DDS echo round trip, another process (peer)", latencies)
+    report(
+        benchmark,
+        f"bare DDS echo round trip, another process (peer; {len(fleet.names)} robots)",
+        latencies,
+    )

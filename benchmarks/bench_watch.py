@@ -5,9 +5,14 @@ watcher with the default polling interval (0.2 s) runs in a thread and stamps ev
 comes out. Three kinds of change are timed, each from just before the call that makes it on the
 master to the event that reports it:
 
-* ``switch``: the operator station sets ``/teleop_ui/active_robot`` to another of the ten
-  robots, round-robin -> ``selection_changed`` for that robot with its configuration (the
-  issue's target: median and 95th percentile over the switches);
+* ``switch``: the operator station sets ``/teleop_ui/active_robot`` to another robot,
+  round-robin -> ``selection_changed`` for that robot with its configuration (the issue's
+  target: median and 95th percentile over the switches), with 10 and with 500 robots on the
+  master (issue 29's target: 95th percentile at most 100 ms with 500);
+* ``push`` (the peer, beside each switch, on the same master with the same watcher running): the
+  operator sets a parameter a bare node subscribed to (``subscribeParam``) and the master's
+  ``paramUpdate`` reaches that node: rosmaster's own notification, nothing else.
+  ``tools/bench_table.py`` reports ``switch / push`` (95th percentiles) for each size;
 * ``topics``: a robot's navigation node registers (``move_base/goal`` subscribed) ->
   ``robot_changed`` with ``Waypoint`` among its motion controls (seen by polling);
 * ``description``: a new robot's ``robot_description`` is set -> ``robot_added`` (polling,
@@ -38,6 +43,7 @@ import threading
 import time
 from collections.abc import Iterator
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any
 
 import pytest
@@ -63,6 +69,7 @@ from tests.live.fleet import (
 from tests.live.roscore import Roscore, TestNode, roscore_available
 
 ROBOTS = 10
+CROWDS = (10, 500)  # robots on the master for the switch and its peer
 SWITCHES = 100
 ROUNDS = 40
 TIMEOUT = 60.0
@@ -78,12 +85,12 @@ class Stamped:
 class Fleet:
     """The master, its ten robots, and a running watcher whose events are stamped on arrival."""
 
-    def __init__(self, core: Roscore, solution: Solution) -> None:
+    def __init__(self, core: Roscore, solution: Solution, robots: int = ROBOTS) -> None:
         self.core = core
         self.solution = solution
         self.node = TestNode(core.uri)
-        self.robots = [f"/uav{i}" for i in range(ROBOTS // 2)] + [
-            f"/ugv{i}" for i in range(ROBOTS // 2)
+        self.robots = [f"/uav{i}" for i in range(robots // 2)] + [
+            f"/ugv{i}" for i in range(robots // 2)
         ]
         for robot in self.robots:
             (put_drone if robot.startswith("/uav") else put_rover)(self.node, robot)
@@ -123,19 +130,33 @@ class Fleet:
         self.node.close()
 
 
-@pytest.fixture(scope="module")
-def fleet(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Fleet]:
+def running_fleet(directory: Path, robots: int) -> Iterator[Fleet]:
     if not roscore_available():
         pytest.fail("roscore is not installed (tools/test.sh installs Debian's ros-core)")
-    core = Roscore(tmp_path_factory.mktemp("ros"))
+    core = Roscore(directory)
     core.start()
-    running = Fleet(core, solve(load_team(TEAMS / "case3.yaml")))
-    yield running
-    running.close()
-    core.kill()
+    try:
+        running = Fleet(core, solve(load_team(TEAMS / "case3.yaml")), robots)
+        yield running
+        running.close()
+    finally:
+        core.kill()
 
 
-def test_switching_the_active_robot(benchmark: BenchmarkFixture, fleet: Fleet) -> None:
+@pytest.fixture(scope="module")
+def fleet(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Fleet]:
+    yield from running_fleet(tmp_path_factory.mktemp("ros"), ROBOTS)
+
+
+@pytest.fixture(scope="module", params=CROWDS, ids=[f"{n} robots" for n in CROWDS])
+def crowd(
+    request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory
+) -> Iterator[Fleet]:
+    yield from running_fleet(tmp_path_factory.mktemp("ros"), request.param)
+
+
+def test_switching_the_active_robot(benchmark: BenchmarkFixture, crowd: Fleet) -> None:
+    fleet = crowd
     order = itertools.cycle(fleet.robots)
     latencies: list[float] = []
 
@@ -157,7 +178,43 @@ def test_switching_the_active_robot(benchmark: BenchmarkFixture, fleet: Fleet) -
     benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
         switch, setup=fleet.pause, rounds=SWITCHES
     )
-    report(benchmark, "active robot switch", latencies)
+    report(benchmark, f"active robot switch ({len(fleet.robots)} robots)", latencies)
+
+
+def test_bare_param_update_push_peer(benchmark: BenchmarkFixture, crowd: Fleet) -> None:
+    """The peer of the switch: setParam -> the master's paramUpdate at a bare subscribed node."""
+    fleet = crowd
+    pushed: queue.Queue[tuple[float, Any]] = queue.Queue()
+
+    def param_update(*args: Any) -> list[Any]:  # caller id, key, value
+        if str(args[1]).rstrip("/") == "/bench/peer":
+            pushed.put((time.perf_counter(), args[2]))
+        return [1, "", 0]
+
+    receiver = TestNode(fleet.core.uri)
+    receiver.server.register_function(param_update, "paramUpdate")
+    subscriber = receiver.client("/bench_peer")
+    subscriber.subscribe_param(receiver.api, "/bench/peer")
+    counter = itertools.count()
+    latencies: list[float] = []
+
+    def push() -> None:
+        value = f"switch {next(counter)}"
+        start = time.perf_counter()
+        fleet.node.set_param("/bench/peer", value)
+        at, received = pushed.get(timeout=TIMEOUT)
+        latencies.append(at - start)
+        assert received == value  # this very update, once, nothing stale before it
+
+    try:
+        benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
+            push, setup=fleet.pause, rounds=SWITCHES
+        )
+    finally:
+        subscriber.unsubscribe_param(receiver.api, "/bench/peer")
+        subscriber.close()
+        receiver.close()
+    report(benchmark, f"bare paramUpdate push (peer; {len(fleet.robots)} robots)", latencies)
 
 
 def test_registering_a_robots_topics(benchmark: BenchmarkFixture, fleet: Fleet) -> None:

@@ -196,25 +196,55 @@ ROWS = [
 # `watch` latency: change on a real roscore -> event (recorded by bench_watch.py in extra_info).
 WATCH = [
     (
-        "test_switching_the_active_robot",
+        "test_switching_the_active_robot[10 robots]",
         "active robot switched (10 robots)",
         "<= 0.2 s interval + 50 ms",
+    ),
+    (
+        "test_bare_param_update_push_peer[10 robots]",
+        "peer: the master's bare paramUpdate push (10 robots)",
+        "",
+    ),
+    (
+        "test_switching_the_active_robot[500 robots]",
+        "active robot switched (500 robots)",
+        "95th percentile <= 100 ms",
+    ),
+    (
+        "test_bare_param_update_push_peer[500 robots]",
+        "peer: the master's bare paramUpdate push (500 robots)",
+        "",
     ),
     ("test_registering_a_robots_topics", "a robot's topics registered", ""),
     ("test_setting_a_new_robots_description", "a new robot's description set", ""),
     (
-        "test_active_robot_message_to_published_configuration",
+        "test_active_robot_message_to_published_configuration[10 robots]",
         "ROS 2: active robot message -> configuration received (10 robots)",
         "<= 50 ms",
     ),
     (
-        "test_bare_dds_echo_round_trip_peer",
-        "ROS 2 peer: bare DDS echo round trip, same QoS",
+        "test_bare_dds_echo_round_trip_peer[10 robots]",
+        "ROS 2 peer: bare DDS echo round trip, same QoS (10 robots)",
         "",
     ),
     (
-        "test_new_robots_description_to_its_first_event",
-        "ROS 2: a new robot's description -> robot_added",
+        "test_new_robots_description_to_its_first_event[10 robots]",
+        "ROS 2: a new robot's description -> robot_added (10 robots)",
+        "",
+    ),
+    (
+        "test_active_robot_message_to_published_configuration[100 robots]",
+        "ROS 2: active robot message -> configuration received (100 robots)",
+        "",
+    ),
+    (
+        "test_bare_dds_echo_round_trip_peer[100 robots]",
+        "ROS 2 peer: bare DDS echo round trip, same QoS (100 robots)",
+        "",
+    ),
+    (
+        "test_new_robots_description_to_its_first_event[100 robots]",
+        "ROS 2: a new robot's description -> robot_added (100 robots)",
         "",
     ),
     (
@@ -375,15 +405,37 @@ RATIOS = [
         "<= 2.5",
     ),
     (
-        "ROS 2 `watch`: active robot -> configuration / bare DDS echo round trip",
-        "test_active_robot_message_to_published_configuration",
-        "test_bare_dds_echo_round_trip_peer",
+        "ROS 2 `watch`, 10 robots: active robot -> configuration / bare DDS echo round trip",
+        "test_active_robot_message_to_published_configuration[10 robots]",
+        "test_bare_dds_echo_round_trip_peer[10 robots]",
         "",
+    ),
+    (
+        "ROS 2 `watch`, 100 robots: active robot -> configuration / bare DDS echo round trip",
+        "test_active_robot_message_to_published_configuration[100 robots]",
+        "test_bare_dds_echo_round_trip_peer[100 robots]",
+        "<= 3",
     ),
     (
         "`watch` topic placement: 200 robots / 20 robots (linear: about 10)",
         "test_placing_the_topic_graph[200 robots x 100 topics]",
         "test_placing_the_topic_graph[20 robots x 100 topics]",
+        "",
+    ),
+]
+
+# (label, slower, faster, target): ratios of the 95th percentiles the live benchmarks record.
+P95_RATIOS = [
+    (
+        "ROS 1 `watch`, 10 robots: switch / bare paramUpdate push (95th percentiles)",
+        "test_switching_the_active_robot[10 robots]",
+        "test_bare_param_update_push_peer[10 robots]",
+        "",
+    ),
+    (
+        "ROS 1 `watch`, 500 robots: switch / bare paramUpdate push (95th percentiles)",
+        "test_switching_the_active_robot[500 robots]",
+        "test_bare_param_update_push_peer[500 robots]",
         "",
     ),
 ]
@@ -435,6 +487,10 @@ def table(run: dict[str, Any]) -> str:
     for label, slow, fast, target in RATIOS:
         if slow in medians and fast in medians:
             lines.append(f"| {label} | {medians[slow] / medians[fast]:.1f}x | {target} |")
+    for label, slow, fast, target in P95_RATIOS:
+        if "p95_ms" in extra.get(slow, {}) and "p95_ms" in extra.get(fast, {}):
+            ratio = extra[slow]["p95_ms"] / extra[fast]["p95_ms"]
+            lines.append(f"| {label} | {ratio:.1f}x | {target} |")
     return "\n".join(lines) + "\n"
 
 

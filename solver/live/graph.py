@@ -108,14 +108,18 @@ class GraphSource(Protocol):
 
     ``name`` is what events report as ``master``; ``caller_id`` the watcher's node name there;
     ``node_uri`` the watcher's own node API, where the source has one. The watcher sets
-    ``on_change`` (called from any thread when something arrived, so that it polls at once) and
-    ``on_stop`` (called when the graph asks the watcher to stop, with its words).
+    ``on_change`` (called from any thread when something of the graph arrived, so that it polls
+    at once), ``on_params`` (called when only parameters under the watched namespace changed:
+    the operator's selection, an answer, an announcement; the watcher then reads those alone,
+    with :meth:`observe_params`, not the whole graph) and ``on_stop`` (called when the graph
+    asks the watcher to stop, with its words).
     """
 
     name: str
     timeout: float
     descriptions: DescriptionStore
     on_change: Callable[[], None] | None
+    on_params: Callable[[], None] | None
     on_stop: Callable[[str], None] | None
 
     @property
@@ -130,6 +134,12 @@ class GraphSource(Protocol):
 
     def observe(self, namespace: str) -> Observation:
         """The graph now, with the parameters under ``namespace``."""
+        ...
+
+    def observe_params(self, namespace: str) -> tuple[int, tuple[tuple[str, Any], ...]]:
+        """The graph's process id and the parameters under ``namespace`` (as
+        :attr:`Observation.params`), without the rest of the graph: what a change of the
+        operator's selection needs, cheap whatever the number of robots."""
         ...
 
     def resync(self, namespace: str) -> None:

@@ -21,10 +21,13 @@ with a new one, and no robot is reported twice or missed.
 *Polling*: every ``interval`` seconds one round trip (:meth:`GraphSource.observe`) reads the
 master's pid, the topic graph, the parameter names and ``/teleop_ui``. Descriptions are not
 read by polls: the source follows them (on ROS 1 the watcher's node subscribes to each one and
-to ``/teleop_ui``) and wakes the loop when one changed, so an operator's switch or a new
-description is reported well within one interval. A robot is identified again only when its
-description or its relevant topics changed (identification is cached by content besides); an
-event is emitted only when what it reports changed.
+to ``/teleop_ui``) and wakes the loop when one changed, so a new description is reported well
+within one interval. A change under ``/teleop_ui`` alone (the operator's switch, an answer, an
+announcement) is answered from ``/teleop_ui`` alone (:meth:`GraphSource.observe_params`: the
+pid and that subtree), with the robots as the last poll left them: its cost does not grow with
+the graph, and the next poll of the whole graph comes at its usual time. A robot is identified
+again only when its description or its relevant topics changed (identification is cached by
+content besides); an event is emitted only when what it reports changed.
 
 *Values*: each robot's combinations take the values it is given beside identification (its own
 ``<ns>/teleop_ui/<characteristic>``, ``--set``), and the operator's ``/teleop_ui/active_*``
@@ -115,7 +118,7 @@ __all__ = ["MAX_WARNINGS", "Watcher"]
 # Warning events a poll reports at most (a graph may hold any number of unknown names).
 MAX_WARNINGS = 20
 
-# Pushes can come in bursts (a launch file setting many parameters); polls triggered by them
+# Pushes can come in bursts (a launch file setting many parameters); reads triggered by them
 # are at least this far apart.
 _MIN_GAP = 0.01
 # After stop(), the call under way ends within this.
@@ -181,8 +184,11 @@ class Watcher:
         self.stop_reason: str | None = None
         self._stop = threading.Event()
         self._wake = threading.Event()
+        self._due = threading.Lock()  # guards _graph_due, set from the source's threads
+        self._graph_due = False
         self._closed = False
         source.on_change = self.wake
+        source.on_params = self.wake_params
         source.on_stop = self.stop
         self.fixed = fixed if fixed is not None else FixedValues()
         self.rivals = Rivals(
@@ -193,6 +199,9 @@ class Watcher:
             source.running_watcher,
         )
         self._warned: tuple[tuple[str, str], ...] = ()
+        self._robot_warnings: list[tuple[str, str]] = []  # the robots' own, at the last poll
+        # The last observation and the robots found in it (a graph that did not change).
+        self._discovered: tuple[Observation, tuple[RobotSource, ...]] | None = None
         # Only a watcher that follows the graph announces itself: a snapshot is no rival.
         self._announcing = False
         self._robots: dict[str, _Tracked] = {}
@@ -200,7 +209,8 @@ class Watcher:
         self._selection = self._no_selection
         self._pid: int | None = None
         self._seq = 0
-        self._last_poll = 0.0
+        self._last_poll = 0.0  # the last read of the whole graph
+        self._last_read = 0.0  # the last read of anything
 
     # -- life cycle ----------------------------------------------------------------------
 
@@ -238,7 +248,13 @@ class Watcher:
         self.source.cut_off(time.monotonic() + _STOP_GRACE)
 
     def wake(self) -> None:
-        """Poll now instead of at the next tick (thread-safe)."""
+        """Poll the whole graph now instead of at the next tick (thread-safe)."""
+        with self._due:
+            self._graph_due = True
+        self._wake.set()
+
+    def wake_params(self) -> None:
+        """Read the watched parameters now (only they changed; thread-safe)."""
         self._wake.set()
 
     @property
@@ -315,10 +331,10 @@ class Watcher:
                     batch = [MasterBack(0, self.master), *self._resync()]
                     lost = None
                 else:
-                    self._pause_until_next_poll()
+                    whole = self._pause_until_next_poll()
                     if self.stopped:
                         break
-                    batch = self._poll()
+                    batch = self._poll() if whole else self._poll_params()
             except MasterError as error:
                 if self.stopped:
                     break  # the call was cut off by stop(): nothing was lost
@@ -344,29 +360,38 @@ class Watcher:
             numbered.append(dataclasses.replace(event, seq=self._seq))
         return numbered
 
-    def _pause_until_next_poll(self) -> None:
+    def _pause_until_next_poll(self) -> bool:
+        """Wait for the next read: ``True`` for the whole graph (the interval passed, or the
+        source said the graph changed), ``False`` for the watched parameters alone."""
         deadline = self._last_poll + self.interval
         while not self.stopped:
             remaining = deadline - time.monotonic()
             if remaining <= 0:
-                return
+                return True
             if self._wake.wait(remaining):
                 self._wake.clear()
-                gap = self._last_poll + _MIN_GAP - time.monotonic()
+                gap = self._last_read + _MIN_GAP - time.monotonic()
                 if gap > 0:
                     self._stop.wait(gap)
-                return
+                with self._due:
+                    return self._graph_due
+        return True
 
     # -- reading the master ----------------------------------------------------------------
 
     def _observe(self) -> Observation:
-        self._last_poll = time.monotonic()
+        with self._due:
+            # What was pushed until now, this read sees.
+            self._graph_due = False
+            self._wake.clear()
+        self._last_poll = self._last_read = time.monotonic()
         return self.source.observe(NAMESPACE)
 
     def _resync(self) -> list[Event]:
         self._robots = {}
         self._selection = self._no_selection
         self._warned = ()
+        self._robot_warnings = []
         self.rivals.reset()
         self.source.resync(NAMESPACE)
         self.source.settle(lambda: self.stopped)
@@ -377,17 +402,31 @@ class Watcher:
 
     def _poll(self) -> list[Event]:
         observation = self._observe()
-        if observation.pid != self._pid:
+        self._same_master(observation.pid)
+        return self._update(observation)
+
+    def _poll_params(self) -> list[Event]:
+        """The watched parameters alone changed: the answer from them, with the robots as the
+        last poll of the whole graph left them."""
+        self._last_read = time.monotonic()
+        pid, params = self.source.observe_params(NAMESPACE)
+        self._same_master(pid)
+        return self._answer(dict(params))
+
+    def _same_master(self, pid: int) -> None:
+        if pid != self._pid:
             raise _Restarted.at(
                 self.master,
-                f"the master restarted (process {self._pid}, now {observation.pid})",
+                f"the master restarted (process {self._pid}, now {pid})",
                 path="getPid",
             )
-        return self._update(observation)
 
     def _update(self, observation: Observation) -> list[Event]:
         rules = self.solution.rules
-        sources = discover(observation, self.profile)
+        graph = dataclasses.replace(observation, params=())  # what discovery reads
+        if self._discovered is None or self._discovered[0] != graph:
+            self._discovered = (graph, discover(graph, self.profile))
+        sources = self._discovered[1]
         self.descriptions.sync(
             [s.description_key for s in sources]
             + [s.semantic_key for s in sources if s.semantic_key is not None]
@@ -425,17 +464,20 @@ class Watcher:
             RobotRemoved(0, namespace) for namespace in sorted(set(self._robots) - set(robots))
         ]
         self._robots = robots
-        params = dict(observation.params)
+        self._robot_warnings = warnings
+        return [*removed, *changes, *self._answer(dict(observation.params))]
+
+    def _answer(self, params: dict[str, Any]) -> list[Event]:
+        """Warnings, rivals and the selection from the watched parameters ``params``."""
+        rules = self.solution.rules
         request = read_request(params, rules.names)
-        warnings += [
+        warnings = self._robot_warnings + [
             (f"{NAMESPACE}/{key}", unknown_name(key[len(ACTIVE_PREFIX) :], rules))
             for key in request.unknown
         ]
         if self._announcing and self.rivals.needs_announcing(params):
             self.source.announce(self.rivals.announcement)
         return [
-            *removed,
-            *changes,
             *self._warnings(warnings),
             *self.rivals.update(params),
             *self._select(params, request),

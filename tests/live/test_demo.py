@@ -56,18 +56,20 @@ def test_a_watcher_follows_the_demo_fleet_and_the_operator_gets_its_answers(
             added = watch.wait_for_event("robot_added", robot.namespace)
             configurations = [c for c in added["combinations"] if not c["default"]]
             assert configurations, added
-        # The operator switches through every robot; the watcher answers each.
+        # The operator switches through every robot; the watcher answers each. The robot and
+        # its motion control are two topics, read as each arrives: a selection may show one
+        # before the other, and the answer to both follows.
         for robot in ROBOTS:
             answered = watch.wait_for(
-                lambda d, name=robot.namespace: (  # type: ignore[misc]
+                lambda d, robot=robot: (  # type: ignore[misc]
                     d["event"] == "selection_changed"
-                    and d["robot"] == name
-                    and d["assignment"] is not None
-                    and d["assignment"]["default"] is False
+                    and d["robot"] == robot.namespace
+                    and d["active"]["motion_control"] in robot.controls
                 ),
                 f"the operator selecting {robot.namespace}",
             )
-            assert answered["active"]["motion_control"] in robot.controls
+            assert answered["assignment"] is not None
+            assert answered["assignment"]["default"] is False
         while not (line := demo.stdout.readline()).startswith("  answer: UI configuration"):
             assert line, "the demo ended before it reported an answer"
         assert f"from {watch.watcher.caller_id}" in line

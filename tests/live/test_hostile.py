@@ -368,6 +368,25 @@ def test_deep_and_huge_selection_values_on_a_real_master_are_notes_with_short_ec
     assert json.loads(answer.stdout)["configuration"] == drone_configuration(solution)
 
 
+def test_a_description_the_master_cannot_send_is_that_robots_error_beside_a_readable_selection(
+    master: Roscore, node: TestNode, solution: Solution
+) -> None:
+    put_drone(node, "/uav1")
+    node.set_param("/teleop_ui/active_robot", "/uav1")
+    # rosmaster fails the whole multicall on it: the descriptions are then read one by one.
+    raw_set_param(master.uri, "/deep/robot_description", deep_xml(3000))
+    result = run_cli("watch", "--master", master.uri, "--team", "case3", "--once")
+    assert result.returncode == 0, result.stderr
+    events = [json.loads(line) for line in result.stdout.splitlines()]
+    robots = by_robot(events)
+    assert robots["/deep"]["error"].startswith(
+        "/deep/robot_description: cannot be read from the master: XML-RPC fault"
+    )
+    (selection,) = [e for e in events if e["event"] == "selection_changed"]
+    assert selection["robot"] == "/uav1"
+    assert selection["assignment"]["configuration"] == drone_configuration(solution)
+
+
 # -- the watcher's own port (issue 31 item 2) ----------------------------------------------------
 
 

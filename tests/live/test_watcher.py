@@ -496,3 +496,29 @@ def test_a_shutdown_call_to_its_node_stops_the_watcher_cleanly(
     # Closed: its parameter subscriptions are gone, and so is the node.
     assert client.lookup_node(watch.watcher.caller_id) is None
     client.close()
+
+
+def test_a_switch_is_answered_from_teleop_ui_alone_and_the_graph_waits_for_its_poll(
+    master: Roscore, node: TestNode, start_watcher: Start, solution: Solution
+) -> None:
+    put_drone(node, "/uav1")
+    put_rover(node, "/ugv1")
+    # No poll of the whole graph after the first: what is pushed is all the watcher reads.
+    watch = start_watcher(master.uri, interval=3600.0)
+    watch.wait_for_event("synced")
+    mark = watch.mark()
+    # Neither pushed nor polled: the rover's navigation stack stays unseen...
+    node.subscribe("/ugv1/navigation", [("/ugv1/move_base/goal", "move_base_msgs/MoveBaseGoal")])
+    node.set_param("/teleop_ui/active_robot", "/ugv1")
+    selected = watch.wait_for_event("selection_changed", after=mark)
+    assert selected["robot"] == "/ugv1"
+    assert selected["assignment"]["configuration"] == rover_configuration(solution)
+    # ... as the switch was answered from /teleop_ui alone, with the robots the watcher had.
+    assert kinds(watch.data(mark)) == ["selection_changed"]
+    mark = watch.mark()
+    # A description is pushed too, and read with the whole graph: the waypoint goal shows.
+    node.set_param("/uav1/robot_description", rover_text())
+    changed = watch.wait_for_event("robot_changed", "/uav1", after=mark)
+    assert changed["kinematic_type"] == "UGV"
+    rover = watch.wait_for_event("robot_changed", "/ugv1", after=mark)
+    assert [c["motion_control"] for c in rover["motion_controls"]] == ["Driving", "Waypoint"]

@@ -32,7 +32,9 @@ someone writes, at most :data:`MAX_REQUEST_TOPICS`), and ``/teleop_ui/ui_configu
 robot). A robot's own values are String topics ``/<ns>/teleop_ui/<characteristic>``, read as
 descriptions are. Watchers announce themselves on ``/teleop_ui/watchers``
 (:mod:`solver.live.rivals`); a watcher's name ends in its participant's GUID, so whether it
-still runs is whether that participant is on the domain.
+still runs is whether that participant is on the domain. A sample on those ``/teleop_ui``
+topics wakes the watcher for them alone (:meth:`DdsGraph.observe_params`); anything else
+discovered or written wakes it for the whole graph.
 
 *Discovery window.* :meth:`DdsGraph.settle` waits until nothing new was discovered for
 :data:`DISCOVERY_QUIET` seconds (at most :data:`DISCOVERY_LIMIT`): the watcher's first
@@ -302,9 +304,14 @@ class DdsGraph:
         self.domain = domain
         self.name = f"ros2://domain/{domain}"
         self.on_change: Callable[[], None] | None = None
+        self.on_params: Callable[[], None] | None = None
         self.on_stop: Callable[[str], None] | None = None  # a DDS graph never asks to stop
         self.listener = Listener(  # type: ignore[no-untyped-call]
             on_data_available=lambda _reader: self._changed()
+        )
+        # The operator's selection and the announcements: the watched parameters alone.
+        self.params_listener = Listener(  # type: ignore[no-untyped-call]
+            on_data_available=lambda _reader: self._params_changed()
         )
         self.string_type, discovery = _types()
         self.participant = _join(DomainParticipant, domain)
@@ -333,7 +340,10 @@ class DdsGraph:
         watchers = Topic(self.participant, dds_topic(WATCHERS_TOPIC), self.string_type)
         self._announce_writer = DataWriter(self.participant, watchers, qos=_latched())
         self._announce_reader = DataReader(
-            self.participant, watchers, qos=_latched(MAX_ANNOUNCEMENTS), listener=self.listener
+            self.participant,
+            watchers,
+            qos=_latched(MAX_ANNOUNCEMENTS),
+            listener=self.params_listener,
         )
         self._descriptions = _DescriptionReaders(self, limit or MAX_XML_BYTES)
         self.descriptions: DescriptionStore = self._descriptions
@@ -347,6 +357,11 @@ class DdsGraph:
 
     def _changed(self) -> None:
         callback = self.on_change
+        if callback is not None:
+            callback()
+
+    def _params_changed(self) -> None:
+        callback = self.on_params
         if callback is not None:
             callback()
 
@@ -398,7 +413,7 @@ class DdsGraph:
 
     def close(self) -> None:
         """Leave the domain: the participant and everything it made are deleted (idempotent)."""
-        self.on_change = None
+        self.on_change = self.on_params = None
         self.descriptions.close()
         self.participant.__del__()
 
@@ -437,20 +452,32 @@ class DdsGraph:
         self._read_answer()
         self._read_announcements()
         publishers, subscribers, types, written = self._graph()
-        params: list[tuple[str, Any]] = sorted(self._request_values.items())
-        if self._answer_value is not MISSING:
-            params.append(("ui_configuration", self._answer_value))
-        announced = {key: value for key, (_, value) in self._announced.items()}
-        if announced:
-            params.append(("watchers", announced))
+        params = self._params()
         return Observation(
             pid=self.domain,
             publishers=tuple((t, tuple(sorted(n))) for t, n in sorted(publishers.items())),
             subscribers=tuple((t, tuple(sorted(n))) for t, n in sorted(subscribers.items())),
             topic_types=tuple(sorted(types.items())),
             param_names=tuple(sorted(written | {f"{namespace}/{k}" for k, _ in params})),
-            params=tuple(sorted(params)),
+            params=params,
         )
+
+    def observe_params(self, namespace: str) -> tuple[int, tuple[tuple[str, Any], ...]]:  # noqa: ARG002 - the protocol's
+        """The selection, the answer and the announcements read now; the graph as last read."""
+        self._read_requests()
+        self._read_answer()
+        self._read_announcements()
+        return self.domain, self._params()
+
+    def _params(self) -> tuple[tuple[str, Any], ...]:
+        """The ``/teleop_ui`` topics as the parameters a ROS 1 master would hold there."""
+        params: list[tuple[str, Any]] = sorted(self._request_values.items())
+        if self._answer_value is not MISSING:
+            params.append(("ui_configuration", self._answer_value))
+        announced = {key: value for key, (_, value) in self._announced.items()}
+        if announced:
+            params.append(("watchers", announced))
+        return tuple(sorted(params))
 
     # -- reading the domain --------------------------------------------------------------
 
@@ -502,7 +529,7 @@ class DdsGraph:
                 self.participant,
                 Topic(self.participant, endpoint.topic, self.string_type),
                 qos=_latched(),
-                listener=self.listener,
+                listener=self.params_listener,
             )
 
     def _read_requests(self) -> None:

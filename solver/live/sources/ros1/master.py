@@ -19,9 +19,11 @@ Every call is bounded (:mod:`~solver.live.sources.ros1.rpc`): one deadline for t
 however slowly the reply trickles in; a cap on the bytes of a reply (compressed or not);
 values nested too deep are not built. A master that hangs, floods or nests is reported instead
 of hanging or exhausting the caller. Connections are kept alive between calls (rosmaster speaks
-HTTP/1.1). :meth:`MasterClient.observe` reads everything one poll needs in a single round trip
-through ``system.multicall``, which rosmaster's server offers; against a master without it, it
-falls back to one call per method.
+HTTP/1.1). :meth:`MasterClient.observe` reads everything one poll needs in two round trips
+through ``system.multicall``, which rosmaster's server offers (the graph, then the watched
+subtree, so that a graph that did not change is the same bytes and is not parsed again); against
+a master without it, it falls back to one call per method. :meth:`MasterClient.observe_params`
+reads the pid and the watched subtree alone, the same way.
 
 Not here: what the graph means (:mod:`solver.live.discovery`), answering the master's calls to
 a node (:mod:`solver.live.sources.ros1.node`).
@@ -30,6 +32,7 @@ a node (:mod:`solver.live.sources.ros1.node`).
 from __future__ import annotations
 
 import contextlib
+import dataclasses
 import http.client
 import ipaddress
 import os
@@ -154,6 +157,9 @@ class MasterClient:
             use_builtin_types=True,
         )
         self._multicall: bool | None = None  # unknown until the first batch
+        self._whole = False  # whether the last batch was one multicall
+        # The graph as read from the last multicall reply (see _graph).
+        self._observed: Observation | None = None
 
     def close(self) -> None:
         self._transport.close()
@@ -231,50 +237,86 @@ class MasterClient:
         return value if code == SUCCESS and isinstance(value, str) else None
 
     def observe(self, params: str | None = None) -> Observation:
-        """The graph and parameter names (and the subtree ``params``) in one round trip.
+        """The graph and parameter names in one round trip, and the subtree ``params`` in one more.
+
+        The graph's reply is the largest by far; apart from the subtree (the operator's switch
+        changes that), it is the same bytes as long as the graph does not change, and then not
+        parsed again (:mod:`~solver.live.sources.ros1.rpc`): the same tuples come back.
 
         A value under ``params`` that the master cannot send (a fault) or that makes the reply
         too large does not fail the poll: each child of ``params`` is then read on its own, and
         the unreadable one is an :class:`~solver.errors.InputError` in ``params``."""
-        graph: list[tuple[Any, ...]] = [
+        graph = self._graph()
+        if not params:
+            return graph
+        try:
+            reply: tuple[int, str, Any] | MasterError | None = self._single("getParam", params)
+        except ReplyTooLarge:
+            reply = None
+        return dataclasses.replace(graph, params=self._subtree(params, reply, graph.param_names))
+
+    def observe_params(self, params: str) -> tuple[int, tuple[tuple[str, Any], ...]]:
+        """The master's pid and the subtree ``params`` (as :meth:`observe` gives them), in one
+        round trip of two calls; a subtree the master cannot send whole (past the cap, or a
+        value its marshaller fails on, which fails a multicall whole) is read child by child."""
+        try:
+            pid, reply = self._batch([("getPid",), ("getParam", params)])
+        except MasterUnreachable:
+            raise
+        except MasterError:
+            pid, reply = self._single("getPid"), None
+        return self._pid(self._succeeded("getPid", pid)), self._subtree(params, reply)
+
+    def _graph(self) -> Observation:
+        """The pid, topics and parameter names: the same object as the last time when the
+        reply is the same bytes."""
+        calls: list[tuple[Any, ...]] = [
             ("getPid",),
             ("getSystemState",),
             ("getTopicTypes",),
             ("getParamNames",),
         ]
-        subtree: Any = {}
-        try:
-            replies = self._batch([*graph, *([("getParam", params)] if params else [])])
-        except ReplyTooLarge:
-            if not params:
-                raise
-            replies, subtree = self._batch(graph), None
-        for (method, *_), reply in zip(graph, replies, strict=False):
-            if isinstance(reply, MasterError):
-                raise reply
-            code, message, _ = reply
-            if code != SUCCESS:
-                raise MasterError.at(self.uri, shown(message) or f"code {code}", path=method)
-        pid = self._pid(_ok(replies[0])[2])
-        state = _ok(replies[1])[2]
+        replies = self._batch(calls)
+        kept = self._observed
+        if self._whole and self._transport.reused and kept is not None:
+            return kept
+        pid, state, types, names = (
+            self._succeeded(method, reply) for (method,), reply in zip(calls, replies, strict=True)
+        )
         if not isinstance(state, list) or len(state) != 3:
             raise self._malformed("getSystemState", "[publishers, subscribers, services]")
-        names = self._names(_ok(replies[3])[2])
-        if params and subtree is not None:
-            reply = replies[4]
-            subtree = (
-                None if isinstance(reply, MasterError) else reply[2] if reply[0] == SUCCESS else {}
-            )
-        if params and subtree is None:
-            subtree = self._children(params, names)
-        return Observation(
-            pid=pid,
+        observation = Observation(
+            pid=self._pid(pid),
             publishers=self._pairs_of_lists(state[0]),
             subscribers=self._pairs_of_lists(state[1]),
-            topic_types=self._pairs(_ok(replies[2])[2]),
-            param_names=names,
-            params=tuple(sorted(subtree.items())) if isinstance(subtree, dict) else (),
+            topic_types=self._pairs(types),
+            param_names=self._names(names),
         )
+        # Made from one reply alone: the next reply of the same bytes is this observation.
+        self._observed = observation if self._whole else None
+        return observation
+
+    def _subtree(
+        self,
+        params: str,
+        reply: tuple[int, str, Any] | MasterError | None,
+        names: Sequence[str] | None = None,
+    ) -> tuple[tuple[str, Any], ...]:
+        """The subtree from ``getParam``'s ``reply``; child by child when the master could not
+        send it whole (a fault, or ``None``: a reply past the cap)."""
+        if reply is None or isinstance(reply, MasterError):
+            if names is None:
+                names = self._names(self._value("getParamNames"))
+            return tuple(sorted(self._children(params, names).items()))
+        code, _, value = reply
+        return tuple(sorted(value.items())) if code == SUCCESS and isinstance(value, dict) else ()
+
+    def _succeeded(self, method: str, reply: tuple[int, str, Any] | MasterError) -> Any:
+        """The value of a call that must succeed: its error, or a master error, otherwise."""
+        code, message, value = _ok(reply)
+        if code != SUCCESS:
+            raise MasterError.at(self.uri, shown(message) or f"code {code}", path=method)
+        return value
 
     def _children(self, namespace: str, names: Sequence[str]) -> dict[str, Any]:
         """The children of ``namespace``, read one by one, each bounded on its own."""
@@ -301,6 +343,7 @@ class MasterClient:
         reply is ``[code, message, value]`` or the :class:`MasterError` of that call alone (a
         fault, a malformed item); a failure of the whole (no answer, a reply past the cap)
         raises."""
+        self._whole = False
         if not calls:
             return []
         if self._multicall is not False:
@@ -313,13 +356,15 @@ class MasterClient:
             except (MasterUnreachable, ReplyTooLarge):
                 raise
             except MasterError:
-                if self._multicall:
-                    raise
-                # The server has no system.multicall (it is not part of the ROS master API,
-                # only of rosmaster's server): use plain calls from now on.
-                self._multicall = False
+                if self._multicall is None:
+                    # The server has no system.multicall (it is not part of the ROS master API,
+                    # only of rosmaster's server): use plain calls from now on.
+                    self._multicall = False
+                # Else one reply could not be sent (rosmaster's marshaller fails on a value
+                # nested too deep, and fails the whole multicall): these calls one by one, so
+                # that the fault is that call's alone.
             else:
-                self._multicall = True
+                self._multicall = self._whole = True
                 if len(results) != len(calls):
                     raise self._malformed("system.multicall", "one reply per call")
                 return [

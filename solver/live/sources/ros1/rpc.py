@@ -14,7 +14,11 @@ standard transport, and every call through it:
   same number of bytes; any other content encoding is refused;
 * parses the reply with expat, refusing a DTD (so no entity is ever declared or expanded), and
   does not build values nested deeper than :data:`MAX_DEPTH` arrays and structs: each such
-  value is :data:`TOO_DEEP` instead, so the caller reports a value of the wrong kind.
+  value is :data:`TOO_DEEP` instead, so the caller reports a value of the wrong kind;
+* parses a reply of at least :data:`REUSE_BYTES` only when it differs from the reply to the
+  same request before: a poll of a large graph that did not change (the same bytes) is not
+  parsed again, and :attr:`BoundedTransport.reused` says so (the values are the same objects
+  as then: callers do not change them).
 
 :func:`loads` is the same parser for requests (the watcher's own node API,
 :mod:`~solver.live.sources.ros1.node`).
@@ -43,6 +47,7 @@ from solver.live.graph import MAX_DEPTH, TOO_DEEP
 
 __all__ = [
     "MAX_REPLY_BYTES",
+    "REUSE_BYTES",
     "SLICE",
     "BoundedTransport",
     "OversizedReply",
@@ -51,6 +56,8 @@ __all__ = [
 
 MAX_REPLY_BYTES: Final = 32 * 1024 * 1024
 SLICE: Final = 0.1
+# Replies this long are kept (the last one, with its request) to be compared with the next.
+REUSE_BYTES: Final = 64 * 1024
 _CHUNK = 64 * 1024
 _USER_AGENT = "teleop-ui (bounded xmlrpc)"
 
@@ -268,6 +275,9 @@ class BoundedTransport:
         self._cutoff = float("inf")
         self._connection: tuple[str, _Connection] | None = None
         self._deadline = 0.0
+        # The last large reply: (host and handler, request body, reply body, its values).
+        self._kept: tuple[str, bytes, bytes, tuple[Any, ...]] | None = None
+        self.reused = False  # whether the last call's reply was the kept one, byte for byte
 
     def cut_off(self, when: float | None) -> None:
         """Every call ends by ``when`` (a :func:`time.monotonic` time), the call under way
@@ -285,6 +295,7 @@ class BoundedTransport:
         verbose: bool = False,  # noqa: ARG002 - ServerProxy passes it; nothing is logged
     ) -> tuple[Any, ...]:
         self._deadline = time.monotonic() + self.timeout
+        self.reused = False
         for attempt in (0, 1):
             reused = self._connection is not None and self._connection[0] == host
             try:
@@ -324,7 +335,13 @@ class BoundedTransport:
         data = self._body(response)
         if response.will_close:
             self.close()
+        kept, where = self._kept, host + handler
+        if kept is not None and kept[0] == where and kept[1] == body and kept[2] == data:
+            self.reused = True
+            return kept[3]
         values, _ = loads(data, self.max_depth)
+        if len(data) >= REUSE_BYTES:
+            self._kept = (where, body, data, values)
         return values  # ServerProxy unwraps a single value, as from the standard transport
 
     def _body(self, response: http.client.HTTPResponse) -> bytes:

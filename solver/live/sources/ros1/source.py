@@ -70,6 +70,7 @@ class MasterGraph:
         self.name = master
         self.timeout = timeout
         self.on_change: Callable[[], None] | None = None
+        self.on_params: Callable[[], None] | None = None
         self.on_stop: Callable[[str], None] | None = None
         self._namespace: str | None = None
         self._node: NodeServer | None = None
@@ -101,6 +102,9 @@ class MasterGraph:
 
     def observe(self, namespace: str) -> Observation:
         return self.client.observe(namespace)
+
+    def observe_params(self, namespace: str) -> tuple[int, tuple[tuple[str, Any], ...]]:
+        return self.client.observe_params(namespace)
 
     def resync(self, namespace: str) -> None:
         """After a start or a master restart: the master's subscriptions are gone, and so is
@@ -197,16 +201,18 @@ class MasterGraph:
     # -- the node's calls (on its server thread) -----------------------------------------
 
     def _pushed(self, key: str) -> None:
-        """A parameter update, from the master or anyone: a hint to poll now; the poll reads
-        the values from the master."""
+        """A parameter update, from the master or anyone: a hint to read now, from the master
+        (the watched namespace alone when the key is under it, else the whole graph)."""
         name = "/" + key.strip("/")
         namespace = self._namespace
-        if (
-            namespace is not None and (name == namespace or name.startswith(namespace + "/"))
-        ) or self._descriptions.push(name):
+        if self._descriptions.push(name):  # a root robot's own values are under /teleop_ui
             callback = self.on_change
-            if callback is not None:
-                callback()
+        elif namespace is not None and (name == namespace or name.startswith(namespace + "/")):
+            callback = self.on_params
+        else:
+            return
+        if callback is not None:
+            callback()
 
     def _shutdown(self, message: str) -> None:
         callback = self.on_stop

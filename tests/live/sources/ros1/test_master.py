@@ -32,6 +32,45 @@ def test_observe_reads_pid_graph_and_parameter_names(master: Roscore, node: Test
     client.close()
 
 
+def test_observe_params_reads_the_pid_and_the_watched_parameters_alone(
+    master: Roscore, node: TestNode
+) -> None:
+    node.set_param("/teleop_ui/active_robot", "/uav1")
+    node.set_param("/teleop_ui/active_motion_control", "Flight")
+    node.set_param("/elsewhere", "not read")
+    client = MasterClient(master.uri, caller_id="/reader")
+    assert client.observe_params("/teleop_ui") == (
+        client.get_pid(),
+        (("active_motion_control", "Flight"), ("active_robot", "/uav1")),
+    )
+    assert client.observe_params("/nothing_here") == (client.get_pid(), ())
+    client.close()
+
+
+def test_a_large_graph_that_did_not_change_is_read_as_the_same_observation(
+    master: Roscore, node: TestNode
+) -> None:
+    # About 100 KB of parameter names: a reply worth comparing before it is parsed again.
+    node.set_param("/fleet", {f"robot_{i:04d}_with_a_long_name": i for i in range(2000)})
+    node.set_param("/teleop_ui/active_robot", "/uav1")
+    client = MasterClient(master.uri, caller_id="/reader")
+    first = client.observe("/teleop_ui")
+    assert "/fleet/robot_1999_with_a_long_name" in first.param_names
+    again = client.observe("/teleop_ui")
+    assert again == first
+    assert again.param_names is first.param_names  # the same bytes: not parsed again
+    # The operator's switch changes /teleop_ui, not the graph's reply.
+    node.set_param("/teleop_ui/active_robot", "/ugv1")
+    switched = client.observe("/teleop_ui")
+    assert switched.params == (("active_robot", "/ugv1"),)
+    assert switched.param_names is first.param_names
+    node.set_param("/fleet/robot_2000_with_a_long_name", 2000)
+    assert "/fleet/robot_2000_with_a_long_name" in client.observe("/teleop_ui").param_names
+    node.publish("/uav1/camera_driver", [("/uav1/camera/image_raw", "sensor_msgs/Image")])
+    assert ("/uav1/camera/image_raw", ("/uav1/camera_driver",)) in client.observe().publishers
+    client.close()
+
+
 def test_parameters_round_trip_and_a_missing_one_is_missing(master: Roscore) -> None:
     client = MasterClient(master.uri, caller_id="/writer")
     value = {"number": 3, "default": False, "components": [{"name": "UAV"}], "note": "é"}
