@@ -23,8 +23,9 @@ and its value is never used; ``shutdown`` stops the watcher, as it stops every R
 replies are (:mod:`~solver.live.sources.ros1.rpc`): at most
 :data:`~solver.live.sources.ros1.rpc.MAX_REPLY_BYTES` of body, no DTD, values nested deeper
 than :data:`~solver.live.graph.MAX_DEPTH` not built; a connection that stalls is dropped after
-:data:`REQUEST_TIMEOUT` seconds per read, and at most :data:`MAX_CONNECTIONS` requests are
-served at once (more are closed unanswered).
+:data:`REQUEST_TIMEOUT` seconds per read, one that trickles in (a byte now and then, each read
+within that) is cut off :data:`REQUEST_DEADLINE` seconds after it was accepted, and at most
+:data:`MAX_CONNECTIONS` requests are served at once (more are closed unanswered).
 
 Not here: what an update means (:mod:`~solver.live.sources.ros1.descriptions`,
 :mod:`solver.live.watcher`).
@@ -32,6 +33,7 @@ Not here: what an update means (:mod:`~solver.live.sources.ros1.descriptions`,
 
 from __future__ import annotations
 
+import contextlib
 import os
 import socket
 import socketserver
@@ -46,10 +48,17 @@ from solver.errors import InputError
 from solver.live.sources.ros1.master import is_loopback
 from solver.live.sources.ros1.rpc import MAX_REPLY_BYTES, loads
 
-__all__ = ["MAX_CONNECTIONS", "REQUEST_TIMEOUT", "NodeServer", "callback_host"]
+__all__ = [
+    "MAX_CONNECTIONS",
+    "REQUEST_DEADLINE",
+    "REQUEST_TIMEOUT",
+    "NodeServer",
+    "callback_host",
+]
 
 _OK = 1
 REQUEST_TIMEOUT: Final = 5.0
+REQUEST_DEADLINE: Final = 10.0
 MAX_CONNECTIONS: Final = 16
 
 
@@ -79,6 +88,7 @@ class _Server(socketserver.ThreadingMixIn, SimpleXMLRPCServer):
 
     daemon_threads = True
     allow_reuse_address = True
+    deadline = REQUEST_DEADLINE
 
     def __init__(self, *args: Any, **kwargs: Any) -> None:
         super().__init__(*args, **kwargs)
@@ -95,9 +105,15 @@ class _Server(socketserver.ThreadingMixIn, SimpleXMLRPCServer):
             raise
 
     def process_request_thread(self, request: Any, client_address: Any) -> None:
+        # The whole request ends by the deadline, however slowly it comes: its socket is shut
+        # down then, which ends the read under way.
+        timer = threading.Timer(self.deadline, _cut, (request,))
+        timer.daemon = True
+        timer.start()
         try:
             super().process_request_thread(request, client_address)
         finally:
+            timer.cancel()
             self._slots.release()
 
     def _marshaled_dispatch(
@@ -119,6 +135,11 @@ class _Server(socketserver.ThreadingMixIn, SimpleXMLRPCServer):
             message = f"{type(error).__name__}: {error}"[:200]
             encoded = xmlrpc.client.dumps(xmlrpc.client.Fault(1, message))
         return encoded.encode("utf-8", "xmlcharrefreplace")
+
+
+def _cut(request: socket.socket) -> None:
+    with contextlib.suppress(OSError):  # already closed: the request ended in time
+        request.shutdown(socket.SHUT_RDWR)
 
 
 class _Quiet(SimpleXMLRPCRequestHandler):
@@ -151,6 +172,8 @@ class NodeServer:
         master: str,
         on_param_update: Callable[[str], None],
         on_shutdown: Callable[[str], None],
+        *,
+        deadline: float = REQUEST_DEADLINE,
     ) -> None:
         self.master = master
         self._on_param_update = on_param_update
@@ -170,6 +193,7 @@ class NodeServer:
                 f"{host!r} ({error.strerror or error}); set "
                 f"ROS_IP to an address of this machine",
             ) from None
+        self._server.deadline = deadline
         address = self._server.server_address
         shown = f"[{host}]" if ":" in host else host
         self.uri = f"http://{shown}:{address[1]}/"

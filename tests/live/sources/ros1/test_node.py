@@ -4,6 +4,9 @@ from __future__ import annotations
 
 import os
 import queue
+import select
+import socket
+import time
 import xmlrpc.client
 from typing import Any
 
@@ -163,3 +166,31 @@ def test_without_a_node_descriptions_are_read_with_get_param(
     assert store.get("/none/robot_description") is MISSING
     assert client.lookup_node(client.caller_id) is None  # it never registered anything
     client.close()
+
+
+def test_a_request_trickling_in_is_cut_off_at_the_deadline_and_the_node_goes_on() -> None:
+    pushes = Pushes()
+    master = "http://127.0.0.1:11311/"  # never called: the node only answers
+    server = NodeServer("127.0.0.1", master, pushes.update, pushes.shutdown, deadline=1.0)
+    server.start()
+    host, port = server.uri.removeprefix("http://").rstrip("/").rsplit(":", 1)
+    with socket.create_connection((host, int(port)), timeout=TIMEOUT) as connection:
+        connection.sendall(b"POST / HTTP/1.1\r\nContent-Length: 100000\r\n\r\n")
+        # A byte whenever the server has said nothing for a fifth of a second: each read is
+        # well within the per-read timeout, so only the deadline of the whole request ends it.
+        ended = False
+        give_up = time.monotonic() + TIMEOUT  # a generous ceiling, never a measure
+        while not ended:
+            assert time.monotonic() < give_up, "the trickling request was never cut off"
+            readable, _, _ = select.select([connection], [], [], 0.2)
+            if readable:
+                ended = connection.recv(1024) == b""
+                continue
+            try:
+                connection.sendall(b"<")
+            except (BrokenPipeError, ConnectionResetError):
+                ended = True
+    assert pushes.updates.empty()
+    # The slot is free again: a well-formed call is answered.
+    assert xmlrpc.client.ServerProxy(server.uri).getMasterUri("/rosnode") == [1, "", master]
+    server.close()
