@@ -112,3 +112,38 @@ def test_read_100000_topic_lines(benchmark: BenchmarkFixture, tmp_path: Path) ->
     topics = tmp_path / "topics.txt"
     topics.write_text("".join(f"/t{i} sensor_msgs/LaserScan\n" for i in range(most)))
     assert len(_once(benchmark, read_topic_list, topics)) == most  # type: ignore[arg-type]
+
+
+def _wide_rules(folder: Path, forbids: int) -> Path:
+    """One kinematic type and as many characteristics of 1..1000 as the ``all-values`` limit
+    takes; forbid ``k`` kills value ``k // 249 + 1`` of characteristic ``c{k % 249}`` alone."""
+    wide = (limit("all-values").value - 1) // 1000
+    rules = folder / "wide.yaml"
+    forbid = "".join(f"  - forbid: {{c{k % wide}: {k // wide + 1}}}\n" for k in range(forbids))
+    rules.write_text(
+        "name: wide\ncharacteristics:\n  kinematic_type:\n    values: [T]\n"
+        + "".join(f"  c{i}:\n    range: {{min: 1, max: 1000}}\n" for i in range(wide))
+        + (f"constraints:\n{forbid}" if forbids else ""),
+        encoding="utf-8",
+    )
+    return rules
+
+
+def test_count_all_values_a_rule_set_takes(benchmark: BenchmarkFixture, tmp_path: Path) -> None:
+    rules = _wide_rules(tmp_path, 0)
+    (tmp_path / "team.yaml").write_text("rules: wide.yaml\nteam:\n  T: {}\n", encoding="utf-8")
+
+    def count() -> int:
+        return solve(load_team(tmp_path / "team.yaml"), count_only=True).totals.valid_robots
+
+    assert rules.read_text().count("range:") == 249
+    assert _once(benchmark, count) == 1000**249
+
+
+def test_check_all_values_and_2000_constraints(benchmark: BenchmarkFixture, tmp_path: Path) -> None:
+    rules = _wide_rules(tmp_path, limit("constraints").value)
+    report = _once(benchmark, check_files, [rules])
+    dead = [f for f in report.findings if f.check == "dead-value"]  # type: ignore[attr-defined]
+    # One finding per characteristic, naming its dead values: 2,000 forbids reach all 249.
+    assert len(dead) == 249
+    assert len({f.location.line for f in dead}) == 249

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 from solver.errors import Fault, Location, TooLargeError
 
-__all__ = ["LIMITS", "Limit", "limit", "table"]
+__all__ = ["LIMITS", "Limit", "limit", "readable", "table"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -42,7 +42,8 @@ class Limit:
         """``1200 characteristics; at most 1000 are accepted (limit 'characteristics', ...)``;
         ``bound``: ``size`` is an upper bound (``up to 1200 ...``)."""
         return (
-            f"{'up to ' if bound else ''}{size} {noun or self.noun}; at most {_plain(self.value)} "
+            f"{'up to ' if bound else ''}{readable(size)} {noun or self.noun}; "
+            f"at most {readable(self.value)} "
             f"are accepted (limit '{self.name}', docs/security.md)"
         )
 
@@ -80,7 +81,7 @@ LIMITS: tuple[Limit, ...] = (
     # Rule sets and teams, checked as they are read: what follows from a file is bounded here.
     Limit("characteristics", 1_000, "characteristics", "a rule set", _RULES),
     Limit("values", 100_000, "values", "one characteristic (a list or a range)", _RULES),
-    Limit("all-values", 1_000_000, "values", "all characteristics of a rule set", _RULES),
+    Limit("all-values", 250_000, "values", "all characteristics of a rule set", _RULES),
     Limit("components", 20_000, "components", "all characteristics of a rule set", _RULES),
     Limit("constraints", 2_000, "constraints", "a rule set", _RULES),
     Limit(
@@ -162,6 +163,7 @@ LIMITS: tuple[Limit, ...] = (
     # Many files at once.
     Limit("check-files", 1_000, "files", "one check run", "check"),
     Limit("batch-teams", 10_000, "team files", "one batch", "batch"),
+    Limit("batch-jobs", 64, "worker processes", "one batch (--jobs)", "batch"),
     # What a command writes.
     Limit(
         "written-files",
@@ -202,14 +204,18 @@ def table() -> str:
 
 
 def _shown(value: int) -> str:
-    """``1,000,000``, or ``10^300`` for a power of ten too long to read."""
-    plain = _plain(value)
+    """``1,000,000``, or ``10^300`` for a number too long to read."""
+    plain = readable(value)
     return plain if "^" in plain else f"{value:,}"
 
 
-def _plain(value: int) -> str:
-    """``1000000``, or ``10^300`` for a power of ten too long to read."""
+def readable(value: int) -> str:
+    """A size in a message: ``1000000`` as it is; past 16 digits ``10^300`` for a power of
+    ten, else its first digits (``about 1.37 x 10^2999``): a refusal stays one short line
+    however large the input made the number."""
     text = str(value)
-    if len(text) > 16 and text == "1" + "0" * (len(text) - 1):
+    if len(text) <= 16:
+        return text
+    if text == "1" + "0" * (len(text) - 1):
         return f"10^{len(text) - 1}"
-    return text
+    return f"about {text[0]}.{text[1:3]} x 10^{len(text) - 1}"

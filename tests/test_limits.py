@@ -12,7 +12,7 @@ import pytest
 
 from solver import Team, limits, load_rules, load_team, solve
 from solver.errors import Location, TooLargeError
-from solver.limits import LIMITS, limit, table
+from solver.limits import LIMITS, limit, readable, table
 from tests.conftest import ROOT, run_cli
 
 WriteFile = Callable[[str, str], Path]
@@ -109,15 +109,17 @@ def test_a_characteristic_of_100000_values_is_read_and_more_are_refused(
         assert caught.value.faults[0].location.line == 6
 
 
-def test_ranges_of_a_million_values_in_all_are_read_and_one_more_is_refused(
+def test_ranges_of_all_the_values_a_rule_set_takes_are_read_and_one_more_is_refused(
     write_file: WriteFile,
 ) -> None:
     most, each = limit("all-values").value, limit("values").value
-    full = most // each - 1  # ranges of 100,000; the last one 2 values short (the key's two)
-    ranges = [_range(f"c{i}", each) for i in range(full)] + [_range("last", each - 2)]
+    # Full ranges, then the rest; the key's two values count too.
+    full, rest = divmod(most - 2, each)
+    assert rest > 0
+    ranges = [_range(f"c{i}", each) for i in range(full)] + [_range("last", rest)]
     rules = load_rules(write_file("r.yaml", _rules(*ranges)))
     assert sum(len(c.values) for c in rules.characteristics) == most
-    ranges[-1] = _range("last", each - 1)
+    ranges[-1] = _range("last", rest + 1)
     with pytest.raises(TooLargeError) as caught:
         load_rules(write_file("s.yaml", _rules(*ranges)))
     assert "characteristics.last" in _refused(caught, "all-values", most + 1)
@@ -336,3 +338,23 @@ def test_a_batch_of_more_team_files_than_its_limit_is_refused(
     assert len(find_teams([str(tmp_path / "t[0-2].yaml")])) == 3
     with pytest.raises(TooLargeError, match=r"4 team files or more; at most 3 are accepted"):
         find_teams([str(tmp_path)])
+
+
+@pytest.mark.parametrize(
+    ("size", "shown"),
+    [
+        (1_000_000, "1000000"),
+        (10**300, "10^300"),
+        (137 * 10**2997 + 5, "about 1.37 x 10^2999"),
+    ],
+)
+def test_a_size_past_16_digits_is_shown_short(size: int, shown: str) -> None:
+    assert readable(size) == shown
+    assert f"{shown} robots to enumerate; at most 100000000" in limit("robots").message(size)
+
+
+def test_batch_starts_at_most_64_workers(tmp_path: Path) -> None:
+    result = run_cli("batch", tmp_path, "-o", tmp_path / "out", "--jobs", "65")
+    assert result.returncode == 2
+    assert "65 worker processes; at most 64 are accepted (limit 'batch-jobs'" in result.stderr
+    assert not (tmp_path / "out").exists()

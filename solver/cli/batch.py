@@ -30,6 +30,16 @@ def _default_jobs() -> int:
         return os.cpu_count() or 1
 
 
+def _jobs(text: str) -> int:
+    """An argparse type: ``--jobs``, at most the ``batch-jobs`` limit (a worker each)."""
+    from solver.limits import limit
+
+    number = positive(text)
+    if limit("batch-jobs").exceeded(number):
+        raise argparse.ArgumentTypeError(limit("batch-jobs").message(number))
+    return number
+
+
 def register(subparsers: Any) -> None:
     parser: argparse.ArgumentParser = subparsers.add_parser(
         "batch",
@@ -58,10 +68,11 @@ def register(subparsers: Any) -> None:
     parser.add_argument(
         "--jobs",
         "-j",
-        type=positive,
-        default=_default_jobs(),
+        type=_jobs,
+        default=min(_default_jobs(), 64),
         metavar="N",
-        help=f"worker processes (default: the CPUs available, here {_default_jobs()})",
+        help="worker processes, at most 64 (default: the CPUs available, here "
+        f"{min(_default_jobs(), 64)})",
     )
     parser.add_argument(
         "--force",

@@ -82,6 +82,7 @@ class Analysis:
         self._budget = Budget(rules)
         # One oracle for questions over several types, one per class of types otherwise.
         self._oracles: dict[tuple[object, ...], Oracle] = {}
+        self._type_oracles: dict[Value, Oracle] = {}  # per kinematic type, of _oracles
 
     # -- domains -------------------------------------------------------------------------------
 
@@ -170,6 +171,12 @@ class Analysis:
                 )
             return self._oracles[()]
         kinematic_type = domains[key][0]
+        if kinematic_type not in self._type_oracles:
+            self._type_oracles[kinematic_type] = self._type_oracle(kinematic_type)
+        return self._type_oracles[kinematic_type]
+
+    def _type_oracle(self, kinematic_type: Value) -> Oracle:
+        key = self.rules.key_position
         included = sorted(self._untyped.union(self._by_type.get(kinematic_type, ())))
         # Types that meet the same boxes' key sets are the same question.
         signature = (

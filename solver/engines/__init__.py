@@ -42,7 +42,7 @@ from functools import cached_property
 from typing import TYPE_CHECKING, Protocol, cast
 
 from solver.errors import Fault, InputError, Location, StructureTooComplex, TooLargeError
-from solver.limits import Limit, limit
+from solver.limits import Limit, limit, readable
 
 if TYPE_CHECKING:
     from solver.core.constraints import Value
@@ -174,7 +174,7 @@ def choose(
         raise TooLargeError.at(
             team.file,
             f"{selection.kinematic_type}: enumerating {exact}"
-            f"{robots} robots is refused (more than "
+            f"{readable(robots)} robots is refused (more than "
             f"{max_robots}, see --max-robots){reason}; use "
             "--count-only for exact counts without enumeration",
         )

@@ -49,6 +49,8 @@ from solver.core.ruleset import RuleSet
 from solver.core.team import TypeSelection
 from solver.engines import Counts
 from solver.errors import StructureTooComplex
+from solver.limits import readable
+from solver.untrusted import shown
 
 if TYPE_CHECKING:
     import numpy as np
@@ -689,10 +691,13 @@ def _block(
         return _Block(tuple(group), ())
     size = math.prod(len(classes[i]) for i in group)
     if size > BLOCK_LIMIT:
-        names = ", ".join(rules.names[i] for i in group)
+        names = ", ".join(shown(rules.names[i]) for i in group[:6])
+        if len(group) > 6:
+            names += f" and {len(group) - 6} more"
         raise StructureTooComplex.at(
             rules.file,
-            f"constraints link {names} into {size} class combinations (more than {BLOCK_LIMIT})",
+            f"constraints link {names} into {readable(size)} class combinations "
+            f"(more than {BLOCK_LIMIT})",
             path="constraints",
         )
     if size > VECTOR:
