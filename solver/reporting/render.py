@@ -214,10 +214,6 @@ def render_solution(solution: Solution, fmt: str = "text", *, configurations: bo
     """A solution in ``fmt`` (one of :data:`FORMATS`); ``configurations`` adds the list."""
     if fmt in ("json", "csv"):
         return "".join(solution_chunks(solution, fmt, configurations=configurations))
-        return _csv(
-            ["kinematic_type", "valid_robots", "ui_configurations", "reduction_ratio"],
-            _summary_rows(solution),
-        )
     numbers = [False, True, True, True]
     if fmt == "markdown":
         summary = markdown.table(_SUMMARY_HEADERS, _summary_rows(solution), numbers)
