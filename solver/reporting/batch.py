@@ -55,7 +55,7 @@ from solver.core.contracts import solution_data
 from solver.core.rules import default_rules_path, shipped_name
 from solver.core.solution import solve
 from solver.core.team import parse_team, resolve_team_path
-from solver.errors import Fault, InputError, Location, SolverError
+from solver.errors import Fault, InputError, Location, SolverError, Terminated
 from solver.files.atomic import write_atomic
 from solver.files.filekind import describe, file_kind, why
 from solver.files.inputfile import read_text, sha256_bounded
@@ -416,6 +416,9 @@ def run_job(job: Job) -> Outcome:
         message = str(error)
     except Exception as error:  # one team's bug must not stop the batch: report it
         message = f"{job.shown}: internal error (please report it): {type(error).__name__}: {error}"
+    except BaseException:  # stopped (the batch interrupted): none of this team's files stay
+        _remove_outputs(job)
+        raise
     else:
         return Outcome(job, "solved", _row(job, data), time.perf_counter() - started)
     _remove_outputs(job)
@@ -528,16 +531,34 @@ def _died(job: Job, exitcode: int | None) -> Outcome:
 
 
 def _worker(connection: Connection, batch_pid: int) -> None:
-    """A worker process: solve the teams it is handed, one at a time, until told to stop."""
+    """A worker process: solve the teams it is handed, one at a time, until told to stop.
+
+    Ctrl-C reaches the whole process group; only the batch answers it, by ending its busy
+    workers with SIGTERM. Here SIGTERM unwinds the stack (:class:`~solver.errors.Terminated`),
+    so the team being solved leaves no file and no temporary, and the worker then ends by the
+    signal, with no traceback.
+    """
+    import signal
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, _terminate)
     _watch_parent(batch_pid)
-    while True:
-        try:
-            job = connection.recv()
-        except EOFError:  # the batch is gone
-            return
-        if job is None:
-            return
-        connection.send(run_job(job))
+    try:
+        while True:
+            try:
+                job = connection.recv()
+            except EOFError:  # the batch is gone
+                return
+            if job is None:
+                return
+            connection.send(run_job(job))
+    except Terminated:
+        signal.signal(signal.SIGTERM, signal.SIG_DFL)
+        os.kill(os.getpid(), signal.SIGTERM)
+
+
+def _terminate(number: int, _frame: object) -> None:
+    raise Terminated(number)
 
 
 def _watch_parent(batch_pid: int) -> None:

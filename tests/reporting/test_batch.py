@@ -479,3 +479,57 @@ def test_a_team_whose_worker_is_killed_fails_alone_and_the_summary_is_written(
     assert [row["status"] for name, row in rows.items() if "b-after" in name] == ["ok"] * others
     assert (out / "summary.md").is_file()
     assert not (out / "teams" / "a-crashes.json").exists()
+
+
+def test_ctrl_c_ends_a_batch_with_no_traceback_and_every_team_written_whole_or_not_at_all(
+    tmp_path: Path,
+) -> None:
+    import signal
+    import subprocess
+    import time
+
+    from tests.conftest import ROOT
+
+    folder = tmp_path / "teams"
+    folder.mkdir()
+    shutil.copy(RULES / "paper.yaml", tmp_path / "paper.yaml")
+    names = [f"t{number}" for number in range(4)]
+    for name in names:
+        shutil.copy(TEAMS / "case3.yaml", folder / f"{name}.yaml")
+    out = tmp_path / "out"
+    process = subprocess.Popen(
+        [
+            sys.executable,
+            "-m",
+            "solver",
+            "batch",
+            folder,
+            "-o",
+            out,
+            "--jobs",
+            "1",
+            "--report",
+            "html",
+        ],
+        cwd=ROOT,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        start_new_session=True,  # a process group of its own, as a shell gives a command
+    )
+    try:
+        # Interrupted between a team's listing and its report: the worker is writing them.
+        while not (out / "teams" / "t1.json").exists():
+            assert process.poll() is None, process.communicate()
+            time.sleep(0.005)
+        os.killpg(process.pid, signal.SIGINT)  # Ctrl-C: the whole group gets SIGINT
+        _, stderr = process.communicate(timeout=300)
+    finally:
+        process.kill()
+    assert process.returncode == 130, stderr
+    assert "Traceback" not in stderr
+    for name in names:
+        files = [out / STAMPS / f"{name}.json", out / "teams" / f"{name}.json"]
+        files.append(out / "teams" / f"{name}.html")
+        assert len({path.exists() for path in files}) == 1, (name, [p.exists() for p in files])
+    assert not [path for path in out.rglob("*") if path.name.endswith(".tmp")]
