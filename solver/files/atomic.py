@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import re
 import shutil
 import stat
 import tempfile
@@ -30,7 +31,12 @@ from solver.errors import Fault, InputError, Location, Terminated, TooLargeError
 from solver.limits import limit
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
-__all__ = ["Content", "make_folder", "write_all_atomic", "write_atomic"]
+__all__ = ["Content", "make_folder", "remove_temporaries", "write_all_atomic", "write_atomic"]
+
+# How much of a target's name its temporaries and backups keep (names end at 255 bytes).
+_KEPT_NAME = 100
+# After that name and a dot: mkstemp's 8 random characters and ".tmp", or a pid and ".old".
+_LEFT_BEHIND = re.compile(r"[a-z0-9_]{8}\.tmp|[0-9]+\.old")
 
 # A file's content: whole, or chunks written as they come (never all in memory at once).
 Content = str | bytes | Iterable[str | bytes]
@@ -93,6 +99,27 @@ def write_all_atomic(files: Mapping[str | Path, Content]) -> list[Path]:
                 with contextlib.suppress(OSError):
                     temporary.unlink()  # gone already when renamed into place
     return [target for target, _ in targets]
+
+
+def remove_temporaries(target: str | Path) -> list[Path]:
+    """Remove what a write of ``target`` killed outright (SIGKILL, the kernel's memory limit)
+    left beside it: its temporaries and the copy of its old content kept while renaming. Only
+    regular files named as this module names them for ``target``; the paths removed."""
+    path = Path(target)
+    folder = path.parent if str(path.parent) else Path(".")
+    prefix = f".{path.name[:_KEPT_NAME]}."
+    removed = []
+    try:
+        names = [entry for entry in os.scandir(folder) if entry.name.startswith(prefix)]
+    except OSError:
+        return []
+    for entry in names:
+        ours = _LEFT_BEHIND.fullmatch(entry.name[len(prefix) :])
+        if ours and entry.is_file(follow_symlinks=False):
+            with contextlib.suppress(OSError):
+                os.unlink(entry.path)
+                removed.append(Path(entry.path))
+    return removed
 
 
 def _encoded(content: Content) -> bytes | Iterator[bytes]:
@@ -176,7 +203,7 @@ def _temporary(
         folder.mkdir(parents=True, exist_ok=True)
         # The temporary's name is the target's and 13 more characters: cut, so that a target
         # name near the system's limit (255 bytes) still has room for one.
-        prefix = f".{target.name[:100]}."
+        prefix = f".{target.name[:_KEPT_NAME]}."
         handle, name = tempfile.mkstemp(prefix=prefix, suffix=".tmp", dir=folder)
     except OSError as error:
         raise InputError.at(
@@ -241,7 +268,7 @@ def _backup(target: Path) -> Path | None:
     """A hard link to (or else a copy of) ``target``'s content; ``None`` if it is no file."""
     if not os.path.isfile(target):
         return None
-    backup = target.with_name(f".{target.name[:100]}.{os.getpid()}.old")
+    backup = target.with_name(f".{target.name[:_KEPT_NAME]}.{os.getpid()}.old")
     _discard(backup)
     try:
         os.link(target, backup)

@@ -56,7 +56,7 @@ from solver.core.rules import default_rules_path, shipped_name
 from solver.core.solution import solve
 from solver.core.team import parse_team, resolve_team_path
 from solver.errors import Fault, InputError, Location, SolverError, Terminated
-from solver.files.atomic import write_atomic
+from solver.files.atomic import remove_temporaries, write_atomic
 from solver.files.filekind import describe, file_kind, why
 from solver.files.inputfile import read_text, sha256_bounded
 from solver.files.yamlio import MAX_FILE_BYTES, load_document
@@ -527,6 +527,8 @@ def _died(job: Job, exitcode: int | None) -> Outcome:
             how = f"killed by signal {-exitcode}"
     message = f"{job.shown}: the worker process solving it died ({how}); the other teams go on"
     _remove_outputs(job)
+    for path in (job.stamp, *job.outputs):
+        remove_temporaries(path)  # a worker killed outright removed none of its own
     return Outcome(job, "failed", SummaryRow(file=job.shown, status="failed", message=message))
 
 

@@ -16,7 +16,12 @@ import pytest
 
 from solver import limits
 from solver.errors import InputError, TooLargeError
-from solver.files.atomic import make_folder, write_all_atomic, write_atomic
+from solver.files.atomic import (
+    make_folder,
+    remove_temporaries,
+    write_all_atomic,
+    write_atomic,
+)
 from tests.conftest import ROOT
 
 
@@ -158,3 +163,34 @@ def test_a_write_stopped_by_a_signal_leaves_no_temporary_and_no_file(
     assert process.returncode == status, stderr
     assert ("Terminated" if sent == signal.SIGTERM else "KeyboardInterrupt") in stderr
     assert list(folder.iterdir()) == []
+
+
+def test_what_a_write_killed_outright_left_is_removed_and_nothing_else(tmp_path: Path) -> None:
+    folder = tmp_path / "out"
+    folder.mkdir()
+    (folder / "b.txt").write_text("old")
+    others = [".b.txt.notes", ".b.txt.tmp", "b.txt.abcdefgh.tmp", ".c.txt.abcdefgh.tmp"]
+    for name in others:
+        (folder / name).write_text("someone else's")
+    marker = tmp_path / "marker"
+    process = subprocess.Popen(
+        [sys.executable, "-c", _SLOW_WRITER, str(folder)],
+        cwd=ROOT,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+    try:
+        while not marker.exists():  # the event: both temporaries exist
+            assert process.poll() is None, process.stderr.read() if process.stderr else ""
+            time.sleep(0.01)
+        process.kill()  # SIGKILL: no unwinding, the temporaries stay
+        process.communicate(timeout=60)
+    finally:
+        process.kill()
+    left = sorted(path.name for path in folder.iterdir() if path.name not in others)
+    assert [name[:7] for name in left] == [".a.txt.", ".b.txt.", "b.txt"]  # a temporary each
+    removed = remove_temporaries(folder / "a.txt") + remove_temporaries(folder / "b.txt")
+    assert len(removed) == 2
+    assert sorted(path.name for path in folder.iterdir()) == sorted([*others, "b.txt"])
+    assert (folder / "b.txt").read_text() == "old"
