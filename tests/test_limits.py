@@ -251,7 +251,9 @@ def test_listing_more_configurations_than_the_limit_is_refused_before_any_is_bui
     )
     with pytest.raises(TooLargeError) as caught:
         solve(team)
-    assert "use --count-only" in _refused(caught, "configurations", 600_000)
+    message = _refused(caught, "configurations", 600_000)
+    assert message.startswith(f"{team.file}:2:1: team: ")  # at the team's `team:` key
+    assert "use --count-only" in message
     assert solve(team, count_only=True).totals.ui_configurations == 600_000
 
 

@@ -96,6 +96,8 @@ class Team:
     selections: tuple[TypeSelection, ...]
     published: Published | None = None
     description: str = ""
+    # The `team:` key in the file: where a refusal about the whole team points.
+    location: Location | None = field(default=None, compare=False)
 
     def __repr__(self) -> str:  # short, for notebooks: the fields are one attribute away
         return (
@@ -120,7 +122,13 @@ def full_team(rules: RuleSet) -> Team:
         domains = [c.values for c in rules.characteristics]
         domains[key] = (value,)
         selections.append(TypeSelection(str(value), tuple(domains), rules.key.location))
-    return Team(f"every value of {rules.name}", rules.file, rules, tuple(selections))
+    return Team(
+        f"every value of {rules.name}",
+        rules.file,
+        rules,
+        tuple(selections),
+        location=rules.key.location,
+    )
 
 
 def resolve_team_path(text: str) -> Path:
@@ -178,7 +186,8 @@ def parse_team(
     selections = _read_selections(reader, rule_set) if rule_set is not None else ()
     if reader.faults or rule_set is None:
         raise TeamError(reader.faults)
-    return Team(name, document.file, rule_set, selections, published, description)
+    where = reader.document.location(("team",), key=True)
+    return Team(name, document.file, rule_set, selections, published, description, where)
 
 
 def _resolve_rules(

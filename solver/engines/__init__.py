@@ -214,10 +214,13 @@ def check_listing(
     total = sum(n for n, _ in found)
     which = replace(limit("configurations"), value=max_configurations)
     if which.exceeded(total):
-        raise TooLargeError.at(
-            team.file,
-            f"{team.name}: {which.message(total)}; use --count-only for exact counts "
-            "without listing",
+        raise TooLargeError(
+            Fault(
+                team.location or Location(team.file),
+                f"{team.name}: {which.message(total)}; use --count-only for exact counts "
+                "without listing",
+                "too-large",
+            )
         )
 
 
