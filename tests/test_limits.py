@@ -189,6 +189,26 @@ def test_a_team_of_20000_kinematic_types_is_read_and_20001_are_refused(
     )
 
 
+def test_a_check_past_the_conflicts_of_its_sat_search_is_refused_at_the_constraints(
+    write_file: WriteFile, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # Every (a, b) forbidden: the solver needs two conflicts to see that no robot is left.
+    every = [f"  - forbid: {{a: {a}, b: {b}}}\n" for a in ("a1", "a2") for b in ("b1", "b2")]
+    text = _rules("  a:\n    values: [a1, a2]\n", "  b:\n    values: [b1, b2]\n", constraints=every)
+    path = write_file("r.yaml", text)
+    found = run_cli("check", path)
+    assert found.returncode == 1, found.stderr
+    assert "no valid robot at all" in found.stdout
+    _lower(monkeypatch, "conflicts", 1)
+    refused = run_cli("check", path)
+    assert refused.returncode == 2
+    assert refused.stdout == ""
+    assert refused.stderr.startswith(f"{path}:10:5: constraints: the constraints are too intricate")
+    assert "2 conflicts or more of the SAT search; at most 1 are accepted (limit 'conflicts'" in (
+        refused.stderr
+    )
+
+
 # ---- solving ---------------------------------------------------------------------------------
 
 

@@ -35,12 +35,13 @@ Not here: which questions are asked and how answers are explained (:mod:`solver.
 from __future__ import annotations
 
 from collections.abc import Collection, Iterable, Sequence
+from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from solver.core.constraints import Value
 from solver.core.regions import Domains
 from solver.core.ruleset import RuleSet
-from solver.errors import TooLargeError
+from solver.errors import Fault, Location, TooLargeError
 from solver.limits import limit
 
 if TYPE_CHECKING:
@@ -63,12 +64,17 @@ class Budget:
         self.remaining -= conflicts
 
     def exhausted(self) -> TooLargeError:
+        """The refusal, at the first constraint (no one constraint is to blame)."""
         which = limit("conflicts")
-        return TooLargeError.at(
-            self.rules.file,
-            "the constraints are too intricate to analyse: "
-            + which.message(which.value + 1, noun="conflicts or more of the SAT search"),
-            path="constraints",
+        constraints = self.rules.constraints
+        first = constraints[0].location if constraints else Location(self.rules.file)
+        return TooLargeError(
+            Fault(
+                replace(first, path="constraints"),
+                "the constraints are too intricate to analyse: "
+                + which.message(which.value + 1, noun="conflicts or more of the SAT search"),
+                "too-large",
+            )
         )
 
 
