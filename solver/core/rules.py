@@ -19,8 +19,15 @@ from solver.core.constraints import Condition, RuleConstraint, Value
 from solver.core.ruleset import Characteristic, Component, Kind, RuleSet, Run, one_component_each
 from solver.errors import RulesError, did_you_mean
 from solver.files.filekind import require_kind
+from solver.files.inputfile import read_text
 from solver.files.reader import Reader, type_name
-from solver.files.yamlio import Document, PathPart, collector_paused, load_document
+from solver.files.yamlio import (
+    MAX_FILE_BYTES,
+    Document,
+    PathPart,
+    collector_paused,
+    parse_document,
+)
 from solver.limits import limit
 from solver.untrusted import shown
 
@@ -79,8 +86,27 @@ def load_rules(path: str | Path, *, display: str | None = None) -> RuleSet:
     A shipped rule set is shown by its stable name (``rules/paper.yaml``) unless ``display``."""
     if display is None:
         display = shipped_name(Path(path))
-    document = load_document(path, display=display)
-    return parse_rules(document)
+    name = display if display is not None else str(path)
+    text = read_text(path, display=name, limit=MAX_FILE_BYTES, what="YAML file")
+    # Teams that share a rule set (a batch, the studio, a loop over the Python API) read it
+    # once per process while its text stays the same: the text is the key, so an edited file
+    # is read again. A RuleSet is a frozen value, safe to share.
+    key = (name, text)
+    found = _READ.get(key)
+    if found is None:
+        found = parse_rules(parse_document(text, name))
+        if len(text) <= _KEPT_CHARS:
+            if len(_READ) >= _KEPT_FILES:
+                _READ.pop(next(iter(_READ)))  # the oldest
+            _READ[key] = found
+    return found
+
+
+# Rule sets read in this process by (shown name, text): at most _KEPT_FILES, of at most
+# _KEPT_CHARS characters each (the shipped ones are under 10,000).
+_READ: dict[tuple[str, str], RuleSet] = {}
+_KEPT_FILES = 16
+_KEPT_CHARS = 1 << 18
 
 
 @collector_paused()  # building many values: see there

@@ -341,3 +341,23 @@ def test_a_range_written_as_a_list_is_refused_because_a_list_is_a_set(
         "a list means a set of values (a team's `sensor_count: [2, 6]` is 2 and 6); write the "
         "range as {min: 1, max: 50}"
     ]
+
+
+def test_a_rule_set_read_twice_unchanged_is_the_same_value(tmp_path: Path) -> None:
+    path = tmp_path / "rules.yaml"
+    path.write_text("characteristics:\n  kinematic_type:\n    values: [UGV]\n", encoding="utf-8")
+    first = load_rules(path)
+    assert load_rules(path) is first
+
+
+def test_an_edited_rule_set_is_read_again(tmp_path: Path) -> None:
+    path = tmp_path / "rules.yaml"
+    path.write_text("characteristics:\n  kinematic_type:\n    values: [UGV]\n", encoding="utf-8")
+    assert load_rules(path).characteristics[0].values == ("UGV",)
+    path.write_text("characteristics:\n  kinematic_type:\n    values: [UAV]\n", encoding="utf-8")
+    assert load_rules(path).characteristics[0].values == ("UAV",)
+    path.write_text(
+        "characteristics:\n  kinematic_type:\n    values: [UAV, UAV]\n", encoding="utf-8"
+    )
+    with pytest.raises(RulesError, match="duplicate value"):
+        load_rules(path)
