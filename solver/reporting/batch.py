@@ -40,6 +40,7 @@ from __future__ import annotations
 
 import contextlib
 import csv
+import functools
 import glob
 import io
 import json
@@ -294,6 +295,7 @@ def _sha256(path: Path) -> str | None:
     return sha256_bounded(path, limit=MAX_FILE_BYTES)
 
 
+@functools.cache  # the installed metadata does not change while a batch runs
 def _version() -> str:
     try:
         return version("teleop-ui")
