@@ -172,6 +172,39 @@ ROWS = [
         "",
     ),
     (
+        "test_case3_read_and_solved_in_process",
+        "Case 3 read + solved in-process, `solve(load_team(...))` (CPU)",
+        "",
+    ),
+    (
+        "test_case3_read_and_solved_in_process_rules_read_anew",
+        "Case 3 read + solved in-process, the rule set read anew each time (CPU)",
+        "",
+    ),
+    (
+        "test_case3_python_constraint_peer_in_process",
+        "Case 3, PyYAML + python-constraint2 written directly (peer, CPU)",
+        "",
+    ),
+    ("test_whole_process_cpu[bare interpreter]", "a bare interpreter, whole process (CPU)", ""),
+    ("test_whole_process_cpu[solve case3]", "`teleop-ui solve case3`, whole process (CPU)", ""),
+    ("test_whole_process_cpu[peer script]", "tools/peer_case3.py, whole process (CPU)", ""),
+    (
+        "test_whole_process_cpu[identify]",
+        "`teleop-ui identify` of a URDF, whole process (CPU)",
+        "",
+    ),
+    (
+        "test_batch_worker_solves_50_teams",
+        "`batch` worker's work for 50 copies of Case 3 (CPU)",
+        "",
+    ),
+    (
+        "test_plain_loop_over_the_api_solves_50_teams",
+        "plain loop over the Python API, the same 50 teams (peer, CPU)",
+        "",
+    ),
+    (
         "test_check_non_transitive_of_1000_sliding_arrangements",
         "`check`: 1000 overlapping arrangements (non-transitive witnesses)",
         "",
@@ -403,6 +436,42 @@ RATIOS = [
         "test_check_growth_in_values[20480]",
         "test_check_growth_in_values[10240]",
         "<= 2.5",
+    ),
+    (
+        "Case 3 in-process: python-constraint2 peer / `solve(load_team(...))`",
+        "test_case3_python_constraint_peer_in_process",
+        "test_case3_read_and_solved_in_process",
+        ">= 3",
+    ),
+    (
+        "Case 3 in-process: python-constraint2 peer / the same, rule set read anew",
+        "test_case3_python_constraint_peer_in_process",
+        "test_case3_read_and_solved_in_process_rules_read_anew",
+        "",
+    ),
+    (
+        "CPU: `solve case3` whole process / bare interpreter",
+        "test_whole_process_cpu[solve case3]",
+        "test_whole_process_cpu[bare interpreter]",
+        "<= 3",
+    ),
+    (
+        "CPU: `identify` whole process / bare interpreter",
+        "test_whole_process_cpu[identify]",
+        "test_whole_process_cpu[bare interpreter]",
+        "<= 3",
+    ),
+    (
+        "CPU: peer script whole process / bare interpreter",
+        "test_whole_process_cpu[peer script]",
+        "test_whole_process_cpu[bare interpreter]",
+        "",
+    ),
+    (
+        "CPU per worker: plain loop over the API / `batch` worker, 50 teams",
+        "test_plain_loop_over_the_api_solves_50_teams",
+        "test_batch_worker_solves_50_teams",
+        ">= 3",
     ),
     (
         "ROS 2 `watch`, 10 robots: active robot -> configuration / bare DDS echo round trip",

@@ -1,0 +1,162 @@
+"""Benchmark: small teams and whole processes against their peers (issue 29, items 5 and 6).
+
+All in CPU time, so a busy machine does not move the figures:
+
+* Case 3 in-process, ``solve(load_team(...))``, against ``tools/peer_case3.py`` (PyYAML's C
+  loader and python-constraint2, written directly); also with the rule set read anew each time
+  (``parse_rules`` + ``parse_team``: the first team of a process), as the rule set is otherwise
+  read once per process while its text is unchanged. Target: the tool at least 3x faster.
+* Whole processes (CPU time of the child, from the kernel's accounting): a bare interpreter,
+  ``teleop-ui solve rules/teams/case3.yaml``, the peer script, and ``teleop-ui identify`` of a
+  URDF. Target: ``solve`` and ``identify`` at most 3x the bare interpreter.
+* What a ``batch`` worker does per team (:func:`solver.reporting.batch.run_job`: hashes, read,
+  solve, the listing JSON and the stamp written atomically) for 50 copies of Case 3, against a
+  plain loop over the Python API (``load_team``, ``solve``, ``json.dumps`` of
+  ``Solution.to_dict()`` into a file). Target: batch at least 3x the loop per worker.
+
+The ratios are printed by ``tools/bench_table.py``. Run:
+``python -m pytest benchmarks/bench_small.py --benchmark-only``.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import json
+import os
+import resource
+import shutil
+import subprocess
+import sys
+import time
+from collections.abc import Callable
+from pathlib import Path
+from types import ModuleType
+
+import pytest
+from pytest_benchmark.fixture import BenchmarkFixture
+
+from solver import find_teams, load_team, plan, solve
+from solver.core.rules import parse_rules
+from solver.core.team import parse_team
+from solver.files.yamlio import load_document
+from solver.reporting.batch import run_job
+from tests.conftest import ROOT, RULES, TEAMS
+
+CASE3 = TEAMS / "case3.yaml"
+COPIES = 50
+# As a user runs it after `pip install .`: bytecode is cached, so let Python write and use it.
+ENVIRONMENT = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
+
+
+def _peer() -> ModuleType:
+    spec = importlib.util.spec_from_file_location("peer_case3", ROOT / "tools" / "peer_case3.py")
+    assert spec is not None
+    assert spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def _children_cpu() -> float:
+    """CPU seconds of the children this process has waited for."""
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
+def _case3() -> tuple[int, int]:
+    totals = solve(load_team(CASE3)).totals
+    return totals.valid_robots, totals.ui_configurations
+
+
+def _case3_rules_read_anew() -> tuple[int, int]:
+    rules = parse_rules(load_document(RULES / "paper.yaml", display="rules/paper.yaml"))
+    totals = solve(parse_team(load_document(CASE3), rules)).totals
+    return totals.valid_robots, totals.ui_configurations
+
+
+@pytest.mark.benchmark(timer=time.process_time)
+def test_case3_read_and_solved_in_process(benchmark: BenchmarkFixture) -> None:
+    assert benchmark(_case3) == (872, 102)
+
+
+@pytest.mark.benchmark(timer=time.process_time)
+def test_case3_read_and_solved_in_process_rules_read_anew(benchmark: BenchmarkFixture) -> None:
+    assert benchmark(_case3_rules_read_anew) == (872, 102)
+
+
+@pytest.mark.benchmark(timer=time.process_time)
+def test_case3_python_constraint_peer_in_process(benchmark: BenchmarkFixture) -> None:
+    assert benchmark(_peer().solve_case3, CASE3) == (872, 102)
+
+
+def _run(command: list[str]) -> str:
+    return subprocess.run(
+        command, cwd=ROOT, env=ENVIRONMENT, check=True, capture_output=True, text=True
+    ).stdout
+
+
+PROCESSES: dict[str, tuple[list[str], Callable[[str], bool]]] = {
+    "bare interpreter": ([sys.executable, "-c", "print(872)"], lambda out: out == "872\n"),
+    "solve case3": (
+        [sys.executable, "-m", "solver", "solve", "rules/teams/case3.yaml"],
+        lambda out: "total                        872                102" in out,
+    ),
+    "peer script": ([sys.executable, "tools/peer_case3.py"], lambda out: out == "872 102\n"),
+    "identify": (
+        [sys.executable, "-m", "solver", "identify", "examples/diff_drive_lidar.urdf"],
+        lambda out: "UGV" in out,
+    ),
+}
+
+
+@pytest.mark.benchmark(timer=_children_cpu)
+@pytest.mark.parametrize("name", list(PROCESSES))
+def test_whole_process_cpu(benchmark: BenchmarkFixture, name: str) -> None:
+    command, expected = PROCESSES[name]
+    _run(command)  # compile bytecode first
+    output = benchmark.pedantic(  # type: ignore[no-untyped-call]
+        _run, args=(command,), rounds=15, iterations=1, warmup_rounds=1
+    )
+    assert expected(output)
+
+
+def _copies(folder: Path) -> list[Path]:
+    teams = folder / "teams"
+    teams.mkdir()
+    shutil.copy(RULES / "paper.yaml", folder / "paper.yaml")
+    text = CASE3.read_text(encoding="utf-8")
+    for index in range(COPIES):
+        (teams / f"case3-{index:02d}.yaml").write_text(text, encoding="utf-8")
+    return sorted(teams.iterdir())
+
+
+@pytest.mark.benchmark(timer=time.process_time)
+def test_batch_worker_solves_50_teams(benchmark: BenchmarkFixture, tmp_path: Path) -> None:
+    _copies(tmp_path)
+    jobs = plan(find_teams([str(tmp_path / "teams")]), tmp_path / "out", force=True)
+
+    def work() -> list[tuple[str, int | None]]:
+        return [(o.action, o.row.valid_robots) for o in map(run_job, jobs)]
+
+    outcomes = benchmark.pedantic(work, rounds=5, iterations=1)  # type: ignore[no-untyped-call]
+    assert outcomes == [("solved", 872)] * COPIES
+
+
+@pytest.mark.benchmark(timer=time.process_time)
+def test_plain_loop_over_the_api_solves_50_teams(
+    benchmark: BenchmarkFixture, tmp_path: Path
+) -> None:
+    files = _copies(tmp_path)
+    out = tmp_path / "out"
+    out.mkdir()
+
+    def loop() -> list[int]:
+        found = []
+        for file in files:
+            solution = solve(load_team(file))
+            data = solution.to_dict()
+            (out / f"{file.stem}.json").write_text(json.dumps(data, indent=2), encoding="utf-8")
+            found.append(data["totals"]["valid_robots"])
+        return found
+
+    assert benchmark.pedantic(loop, rounds=5, iterations=1) == [872] * COPIES  # type: ignore[no-untyped-call]
