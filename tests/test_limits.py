@@ -305,7 +305,28 @@ def test_a_chart_of_more_characteristics_than_its_limit_is_refused(write_file: W
     team = load_team(write_file("team.yaml", "rules: rules.yaml\nteam:\n  A: {}\n"))
     with pytest.raises(TooLargeError) as caught:
         check_chart_size(team)
-    _refused(caught, "chart-characteristics", most + 1)
+    # At the first characteristic past the limit: c99, two lines each after kinematic_type's.
+    assert _refused(caught, "chart-characteristics", most + 1).startswith(
+        f"{team.rules.file}:{5 + 2 * (most - 1)}:3: characteristics.c{most - 1}: "
+    )
+
+
+def test_a_chart_of_a_type_with_more_robots_than_a_float_holds_is_refused(
+    write_file: WriteFile,
+) -> None:
+    from solver.reporting.plot import check_chart_size
+
+    def team(counts: int) -> Team:
+        # Counts of 2,500 values each: 2500^88 is about 1.05 x 10^299 robots, 2500^89 10^302.
+        write_file("rules.yaml", _rules(*(_range(f"c{i}", 2_500) for i in range(counts))))
+        return load_team(write_file("team.yaml", "rules: rules.yaml\nteam:\n  B: {}\n  A: {}\n"))
+
+    check_chart_size(team(88))
+    with pytest.raises(TooLargeError) as caught:
+        check_chart_size(team(89))
+    message = str(caught.value)
+    assert message.startswith(f"{caught.value.faults[0].location.file}:4:3: team.A: ")
+    assert "robots; at most 10^300 are accepted (limit 'chart-robots'" in message
 
 
 def test_topic_lines_past_the_limit_are_refused_at_the_line_past_it(write_file: WriteFile) -> None:

@@ -39,6 +39,7 @@ from typing import TYPE_CHECKING, Literal
 
 from solver.core.constraints import Value
 from solver.core.ruleset import Characteristic, Run
+from solver.errors import Location
 from solver.limits import Limit, limit
 from solver.untrusted import shown
 
@@ -537,9 +538,12 @@ def check_chart_size(team: Team) -> None:
     ``chart-characteristics`` (each is a spoke of the radar); or a type of more robots than
     ``chart-robots`` (a bar's height is a float)."""
     rules = team.rules
-    limit("chart-characteristics").check(
-        len(rules.characteristics), rules.file, path="characteristics"
-    )
+    spokes = limit("chart-characteristics")
+    if spokes.exceeded(len(rules.characteristics)):  # at the first characteristic past it
+        at = rules.characteristics[spokes.value].location or Location(rules.file)
+        spokes.check(
+            len(rules.characteristics), at.file, line=at.line, column=at.column, path=at.path
+        )
     types = limit("chart-types")
     if types.exceeded(len(team.selections)):
         _refuse(team, team.selections[types.value], types, len(team.selections))
