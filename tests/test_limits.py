@@ -246,6 +246,23 @@ def test_the_csp_engine_enumerates_up_to_its_limit(
         solve(_huge_range_team(write_file, 1, 11), engine="csp")
 
 
+def test_robots_with_the_csp_engine_obey_its_limit_per_kinematic_type(
+    write_file: WriteFile, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    _lower(monkeypatch, "csp-robots", 20)
+    two = _huge_range_team(write_file, 2, 6)  # 12 robots of each type, 24 in all
+    listed = run_cli("robots", two.file, "--engine", "csp")
+    assert listed.returncode == 0, listed.stderr
+    assert len(listed.stdout.splitlines()) == 1 + 24  # a header, then a robot a line
+    one = _huge_range_team(write_file, 1, 11)  # 22 robots of one type
+    refused = run_cli("robots", one.file, "--engine", "csp")
+    assert refused.returncode == 2
+    assert refused.stderr.startswith(
+        f"{one.file}:3:3: team.T0: T0: 22 robots to enumerate with python-constraint; at most "
+        "20 are accepted (limit 'csp-robots', docs/security.md); list them with --engine fast"
+    )
+
+
 def test_the_fast_engine_refuses_more_value_classes_than_its_limit_before_enumerating(
     write_file: WriteFile, monkeypatch: pytest.MonkeyPatch
 ) -> None:

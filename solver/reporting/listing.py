@@ -27,7 +27,7 @@ from solver.core.team import TypeSelection
 from solver.engines import ENUMERATING, MAX_ROBOTS
 from solver.engines.fast import BlockLayout, robot_blocks
 from solver.engines.numbering import Numbers
-from solver.errors import TooLargeError
+from solver.errors import Fault, Location, TooLargeError
 from solver.limits import limit
 from solver.reporting.render import csv_cell, csv_row, json_printable
 
@@ -179,7 +179,7 @@ def write_robots(
             f"listing {total} robots is refused (more than {max_robots}, see --max-robots)",
         )
     if engine == "csp":
-        limit("csp-robots").check(total, solution.team.file)
+        _check_csp(solution)
     enumerator = engines.lookup(engine)
     names = solution.rules.names
     if fmt == "csv":
@@ -241,6 +241,24 @@ def _write_rows(
 def _one_component_each(solution: Solution) -> bool:
     """Every value in at most one component: a robot's configuration is its components."""
     return all(len(m) <= 1 for c in solution.rules.characteristics for m in c.membership)
+
+
+def _check_csp(solution: Solution) -> None:
+    """Refuse, at its line in the team, a kinematic type of more robots than python-constraint
+    enumerates in seconds (``csp-robots``, per type as ``solve --engine csp`` counts it)."""
+    which = limit("csp-robots")
+    for summary in solution.by_type:
+        if which.exceeded(summary.valid_robots):
+            selection = solution.team.selection(summary.kinematic_type)
+            at = (selection.location if selection else None) or Location(solution.team.file)
+            message = which.message(summary.valid_robots)
+            raise TooLargeError(
+                Fault(
+                    at,
+                    f"{summary.kinematic_type}: {message}; list them with --engine fast",
+                    "too-large",
+                )
+            )
 
 
 def _plain(names: Sequence[str]) -> bool:
