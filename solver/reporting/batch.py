@@ -485,8 +485,11 @@ def _in_workers(jobs: Sequence[Job], workers: int) -> Iterator[Outcome]:
 
     def hand(process: BaseProcess, connection: Connection) -> None:
         job = queue.popleft()
-        connection.send(job)
         busy[connection] = (process, job)
+        # A worker dead already (killed as it started) cannot take it: wait() below then
+        # finds its end of the pipe closed, and the job fails as the worker's.
+        with contextlib.suppress(OSError):
+            connection.send(job)
 
     try:
         for _ in range(min(max(workers, 1), len(queue))):
