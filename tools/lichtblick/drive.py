@@ -23,12 +23,15 @@ from __future__ import annotations
 
 import argparse
 import asyncio
+import io
 import json
 import time
 from pathlib import Path
 from typing import Any
 
-from playwright.async_api import Page, async_playwright
+import numpy as np
+from PIL import Image
+from playwright.async_api import Locator, Page, async_playwright
 
 CHROMIUM = "/usr/bin/chromium"
 FLAGS = [
@@ -55,6 +58,29 @@ UNSAVED = """
   .filter((row) => row.querySelector("[data-testid=layout-actions] circle"))
   .map((row) => row.querySelector("[data-testid=layout-list-item]")?.textContent ?? "")
 """
+
+
+async def hues(box: Locator) -> int:
+    """How many of twelve hues a panel's body shows (toolbar cut off): 0 for a grey panel, 1
+    for a 3D grid alone, more for an image, a coloured point cloud or a plot's lines."""
+    shot = np.asarray(Image.open(io.BytesIO(await box.screenshot())).convert("HSV"))[30:]
+    hue, saturation, value = shot[..., 0], shot[..., 1], shot[..., 2]
+    counts = np.bincount(
+        hue[(saturation > 80) & (value > 60)].astype(int) * 12 // 256, minlength=12
+    )
+    return int((counts > 20).sum())
+
+
+async def panels(page: Page, layout: dict[str, Any]) -> dict[str, Any]:
+    """Each panel of the layout as the app shows it: there or not, its text, its hues."""
+    seen: dict[str, Any] = {}
+    for panel_id in layout.get("configById", {}):
+        box = page.get_by_test_id(f"panel-mouseenter-container {panel_id}")
+        present = await box.count() > 0
+        text = (await box.first.inner_text())[:400] if present else None
+        shown = await hues(box.first) if present else 0
+        seen[panel_id] = {"present": present, "text": text, "hues": shown}
+    return seen
 
 
 def records(path: Path, since: float) -> list[dict[str, Any]]:
@@ -100,8 +126,8 @@ async def run(args: argparse.Namespace) -> dict[str, Any]:
         )
         await context.add_init_script(PICKER)
         page = await context.new_page()
-        console: list[str] = []
-        page.on("console", lambda m: console.append(f"{m.type}: {m.text[:300]}"))
+        console: list[tuple[float, str]] = []
+        page.on("console", lambda m: console.append((time.time(), f"{m.type}: {m.text[:300]}")))
         started = time.time()
         await page.goto(f"{args.app}?ds=foxglove-websocket&ds.url={args.ws}", wait_until="load")
         await page.wait_for_timeout(4000)
@@ -112,14 +138,10 @@ async def run(args: argparse.Namespace) -> dict[str, Any]:
         imported = time.time()
         await menu(page, "Import layout from file…")
         await page.wait_for_timeout(args.wait)
+        looked = time.time()
         report["snackbars"] = await page.locator("#notistack-snackbar").all_inner_texts()
         await page.screenshot(path=str(shots / f"{args.name}.png"))
-        report["panels"] = {}
-        for panel_id in layout.get("configById", {}):
-            box = page.get_by_test_id(f"panel-mouseenter-container {panel_id}")
-            present = await box.count() > 0
-            panel_text = (await box.first.inner_text())[:400] if present else None
-            report["panels"][panel_id] = {"present": present, "text": panel_text}
+        report["panels"] = await panels(page, layout)
         if args.act:
             report["actions"] = await act(page, layout, record)
         async with page.expect_download() as download:
@@ -141,7 +163,13 @@ async def run(args: argparse.Namespace) -> dict[str, Any]:
             {r["topic"] for r in adverts if r["t"] < imported}
         )
         report["advertised"] = sorted({r["topic"] for r in adverts if r["t"] >= imported})
-        report["console"] = [line for line in console if line.startswith(("error", "warning"))]
+        report["console"] = [line for _, line in console if line.startswith(("error", "warning"))]
+        # What the app still complained of once the data had had 3 s to arrive.
+        report["late_console"] = [
+            line
+            for t, line in console
+            if imported + 3 <= t <= looked and line.startswith(("error", "warning"))
+        ]
         await browser.close()
     (shots / f"{args.name}.report.json").write_text(json.dumps(report, indent=1, default=str))
     return report

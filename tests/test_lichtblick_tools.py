@@ -1,0 +1,115 @@
+"""tools/lichtblick/cover.py picks the layouts to drive in the app; verdict.py judges what the
+app showed of them against the bag it played (drive.py itself needs a build of the app)."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from tests.conftest import ROOT, run_cli
+
+TOOLS = ROOT / "tools" / "lichtblick"
+
+
+def _tool(*args: str | Path) -> subprocess.CompletedProcess[str]:
+    environment = {**os.environ, "PYTHONPATH": str(ROOT)}
+    return subprocess.run(
+        [sys.executable, *map(str, args)],
+        cwd=ROOT,
+        env=environment,
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+
+
+@pytest.fixture(scope="module")
+def case3(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, Path, Path]:
+    """case3's layouts under /robot1 and in the root namespace, and a bag of /robot1's topics."""
+    folder = tmp_path_factory.mktemp("lichtblick")
+    assert _tool(TOOLS / "makebag.py", folder / "bag", "/robot1").returncode == 0
+    for where, namespace in (("robot1", ["--namespace", "/robot1"]), ("root", [])):
+        assert run_cli("layouts", "case3", "-o", folder / where, *namespace).returncode == 0
+    return folder / "robot1", folder / "root", folder / "bag"
+
+
+def _titles(layout: Path) -> set[tuple[str, str]]:
+    configs = json.loads(layout.read_text())["configById"]
+    return {
+        (key.split("!")[0], config.get("lichtblickPanelTitle", ""))
+        for key, config in configs.items()
+    }
+
+
+def test_the_layouts_to_drive_hold_every_panel_of_the_team_default_first(
+    case3: tuple[Path, Path, Path],
+) -> None:
+    folder = case3[0]
+    done = _tool(TOOLS / "cover.py", folder)
+    chosen = [Path(line) for line in done.stdout.splitlines()]
+    assert chosen[0].name == "config-103-default.json"
+    assert len(chosen) < 103 / 10
+    every = set().union(*(_titles(file) for file in folder.glob("*.json")))
+    assert set().union(*(_titles(file) for file in chosen)) == every
+    assert done.stderr.startswith(f"{folder}: {len(chosen)} of 103 layouts hold its ")
+
+
+def _seen(layout: Path, advertised: list[str]) -> dict[str, Any]:
+    """A report as drive.py writes it of an app that showed every panel's data."""
+    configs = json.loads(layout.read_text())["configById"]
+    panels = {
+        key: {
+            "present": True,
+            "text": "audio_common_msgs/msg/AudioData @ 1700000000.0 sec"
+            if key.startswith("RawMessages")
+            else config.get("lichtblickPanelTitle", ""),
+            "hues": 12,
+        }
+        for key, config in configs.items()
+    }
+    return {
+        "layout": str(layout),
+        "snackbars": [],
+        "panels": panels,
+        "export_diff": [],
+        "unsaved_changes": ["Default"],
+        "advertised": advertised,
+        "console": [],
+    }
+
+
+def test_a_layout_whose_panels_show_the_bags_topics_passes_and_one_of_other_topics_fails(
+    case3: tuple[Path, Path, Path], tmp_path: Path
+) -> None:
+    robot1, root, bag = case3
+    good = tmp_path / "robot1.report.json"
+    good.write_text(json.dumps(_seen(robot1 / "config-103-default.json", ["/robot1/cmd_vel"])))
+    done = _tool(TOOLS / "verdict.py", bag, "/robot1", good)
+    assert done.returncode == 0, done.stdout
+    assert done.stdout.splitlines()[0] == (
+        "robot1: ok: 9 panels: 1 control, 5 data, 3 no data expected"
+    )
+    # The root namespace's layout against /robot1's bag: its topics are not there, and the
+    # click tools it advertises lie outside the robot.
+    report = _seen(root / "config-103-default.json", ["/cmd_vel", "/clicked_point"])
+    report["panels"]["Image!p05"]["text"] = "visual display\nImage topic does not exist."
+    report["unsaved_changes"].append("root")
+    bad = tmp_path / "root.report.json"
+    bad.write_text(json.dumps(report))
+    done = _tool(TOOLS / "verdict.py", bag, "/robot1", good, bad)
+    assert done.returncode == 1
+    faults = done.stdout.splitlines()
+    assert faults[0].startswith("robot1: ok")
+    assert faults[1].startswith("root: FAIL")
+    assert "    the layout list marks it as having unsaved changes" in faults
+    assert "    advertises /cmd_vel, outside /robot1" in faults
+    assert "    Image!p05: shows 'does not exist'" in faults
+    assert "    Image!p05: /camera/image_raw is not in the bag" in faults
+    assert "    Plot!p08: /wrench is not in the bag" in faults
+    assert faults[-1] == "1 of 2 layouts pass"
