@@ -16,6 +16,7 @@ from pytest_benchmark.fixture import BenchmarkFixture
 
 from solver import load_team, solve
 from solver.check import check_files
+from solver.errors import TooLargeError
 from solver.identify.readers.topics import read_topic_list
 from solver.limits import limit
 
@@ -105,6 +106,37 @@ def test_check_2000_constraints(benchmark: BenchmarkFixture, tmp_path: Path) -> 
     report = _once(benchmark, check_files, [rules])
     found = [f for f in report.findings if f.check == "dead-for-type"]  # type: ignore[attr-defined]
     assert len(found) == 100
+
+
+def test_check_refuses_a_pigeonhole_at_the_conflicts_limit(
+    benchmark: BenchmarkFixture, tmp_path: Path
+) -> None:
+    # 16 characteristics of 15 values, no two alike (1,800 forbids): no robot exists, and
+    # resolution (so the SAT solver) takes exponentially many conflicts to prove it.
+    pigeons, holes = 16, 15
+    rules = tmp_path / "pigeonhole.yaml"
+    values = ", ".join(f"h{h}" for h in range(holes))
+    rules.write_text(
+        "name: pigeonhole\ncharacteristics:\n  kinematic_type:\n    values: [A]\n"
+        + "".join(f"  p{i}:\n    values: [{values}]\n" for i in range(pigeons))
+        + "constraints:\n"
+        + "".join(
+            f"  - forbid: {{p{i}: h{h}, p{j}: h{h}}}\n"
+            for h in range(holes)
+            for i in range(pigeons)
+            for j in range(i + 1, pigeons)
+        ),
+        encoding="utf-8",
+    )
+
+    def refused() -> str:
+        try:
+            check_files([rules])
+        except TooLargeError as error:
+            return str(error)
+        return ""
+
+    assert "(limit 'conflicts'" in str(_once(benchmark, refused))
 
 
 def test_read_100000_topic_lines(benchmark: BenchmarkFixture, tmp_path: Path) -> None:
