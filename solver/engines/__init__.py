@@ -171,12 +171,15 @@ def choose(
     robots = selection.size if counts is None else counts.valid_robots
     exact = "" if counts is not None else "up to "
     if robots > max_robots:
-        raise TooLargeError.at(
-            team.file,
-            f"{selection.kinematic_type}: enumerating {exact}"
-            f"{readable(robots)} robots is refused (more than "
-            f"{max_robots}, see --max-robots){reason}; use "
-            "--count-only for exact counts without enumeration",
+        raise TooLargeError(
+            Fault(
+                selection.location or Location(team.file),
+                f"{selection.kinematic_type}: enumerating {exact}"
+                f"{readable(robots)} robots is refused (more than "
+                f"{max_robots}, see --max-robots){reason}; use "
+                "--count-only for exact counts without enumeration",
+                "too-large",
+            )
         )
     chosen = "fast" if name == "auto" else name
     if chosen == "csp":

@@ -174,9 +174,12 @@ def write_robots(
     """
     total = solution.totals.valid_robots
     if total > max_robots:
-        raise TooLargeError.at(
-            solution.team.file,
-            f"listing {total} robots is refused (more than {max_robots}, see --max-robots)",
+        raise TooLargeError(
+            Fault(
+                solution.team.location or Location(solution.team.file),
+                f"listing {total} robots is refused (more than {max_robots}, see --max-robots)",
+                "too-large",
+            )
         )
     if engine == "csp":
         _check_csp(solution)
