@@ -178,7 +178,7 @@ LIMITS: tuple[Limit, ...] = (
         "written-bytes",
         256 * 1024 * 1024,
         "bytes to write",
-        "the files one command writes together (batch: per team)",
+        "the files one command writes together (batch: a team's JSON; its report with its charts)",
         "every command that writes files (layouts, report, batch, fleet -o, solve --plot)",
     ),
 )
