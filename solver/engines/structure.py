@@ -59,7 +59,16 @@ if TYPE_CHECKING:
     from solver.core.constraints import Condition
     from solver.core.cover import Cover, Group
 
-__all__ = ["BLOCK_LIMIT", "Memo", "Product", "count", "partition", "product", "robots"]
+__all__ = [
+    "BLOCK_LIMIT",
+    "Memo",
+    "Product",
+    "component_use",
+    "count",
+    "partition",
+    "product",
+    "robots",
+]
 
 # Class combinations one block may have before counting falls back to enumeration.
 BLOCK_LIMIT = 1_000_000
@@ -404,6 +413,51 @@ def partition(
             path="constraints",
         )
     return partition_classes(rules, selection.kinematic_type, _joint_classes(rules, blocks))
+
+
+def component_use(
+    rules: RuleSet, selection: TypeSelection
+) -> dict[tuple[int, int], tuple[int, int]] | None:
+    """Per (characteristic position, component): how many configurations of one kinematic type
+    use the component and how many valid robots those serve, from each block's partial
+    configurations without joining them (what :func:`partition` lists, tallied); ``None`` where
+    overlapping values need a cover spanning blocks. A block's part of a configuration is in
+    as many configurations as the other blocks' parts multiply to, and serves its robots times
+    the other blocks' served robots. :class:`~solver.errors.StructureTooComplex` where the
+    structure does not apply."""
+    blocks = _blocks(rules, _selected_classes(rules, selection))
+    key_of: Callable[[_Block, tuple[_Class, ...]], Key | None] = _own_key
+    if _overlaps(blocks):
+        by_block = _cover_by_block(rules, blocks, _cover(rules, blocks))
+        if by_block is None:
+            return None
+        key_of = by_block
+    per_block = [
+        block.partial_weights if key_of is _own_key else _weights(block, key_of) for block in blocks
+    ]
+    use: dict[tuple[int, int], tuple[int, int]] = {}
+    for index, (block, weights) in enumerate(zip(blocks, per_block, strict=True)):
+        others = [found for n, found in enumerate(per_block) if n != index]
+        configurations = math.prod(len(found) for found in others)
+        served = math.prod(sum(found.values()) for found in others)
+        for key, weight in weights.items():
+            for position, component in zip(block.positions, key, strict=True):
+                used, robots = use.get((position, component), (0, 0))
+                use[position, component] = (used + configurations, robots + weight * served)
+    return use
+
+
+def _weights(
+    block: _Block, key_of: Callable[[_Block, tuple[_Class, ...]], Key | None]
+) -> dict[Key, int]:
+    """Robots per partial configuration of ``block`` as ``key_of`` gives them (unserved left
+    out)."""
+    weights: dict[Key, int] = {}
+    for combination, weight in block.combinations:
+        key = key_of(block, combination)
+        if key is not None:
+            weights[key] = weights.get(key, 0) + weight
+    return weights
 
 
 def _partition_product(

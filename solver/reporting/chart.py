@@ -44,6 +44,7 @@ from solver.limits import Limit, limit
 from solver.untrusted import shown
 
 if TYPE_CHECKING:
+    from solver.core.partition import Key
     from solver.core.solution import Solution
     from solver.core.team import Team, TypeSelection
 
@@ -717,20 +718,62 @@ def component_matrix(
         ]
     rows = [s.kinematic_type for s in solution.by_type]
     cells = [[(0, 0) for _ in columns] for _ in rows]
-    row_of = {kt: r for r, kt in enumerate(rows)}
     column_of = {key: k for k, key in enumerate(columns)}
-    for configuration in solution.configurations:
-        r = row_of[configuration.kinematic_type]
-        k = -1
-        for i, (characteristic, component) in enumerate(
-            zip(rules.characteristics, configuration.components, strict=True)
-        ):
-            if i == rules.key_position:
+    # A characteristic's column when grouped: its place among the characteristics shown.
+    group_of = {
+        i: k
+        for k, i in enumerate(
+            i for i in range(len(rules.characteristics)) if i != rules.key_position
+        )
+    }
+    for r, use in enumerate(_component_use(solution)):
+        for (position, index), (used, robots) in sorted(use.items()):
+            if position == rules.key_position:
                 continue
-            k = k + 1 if grouped else column_of[(characteristic.label, component.name)]
-            used, robots = cells[r][k]
-            cells[r][k] = (used + 1, robots + configuration.robots)
+            characteristic = rules.characteristics[position]
+            k = (
+                group_of[position]
+                if grouped
+                else column_of[(characteristic.label, characteristic.components[index].name)]
+            )
+            before = cells[r][k]
+            cells[r][k] = (before[0] + used, before[1] + robots)
     return rows, columns, cells
+
+
+Use = dict[tuple[int, int], tuple[int, int]]
+
+
+def _component_use(solution: Solution) -> list[Use]:
+    """Per kinematic type: per (characteristic position, component index), the configurations
+    that use the component and the robots they serve. A listed solution's configurations are
+    tallied; otherwise each type is tallied by structure where it applies
+    (:func:`solver.engines.structure.component_use`: no configuration is listed), else from its
+    partition."""
+    from solver import engines
+    from solver.engines import structure
+
+    rules = solution.rules
+    keys: dict[str, list[tuple[Key, int]]] = {s.kinematic_type: [] for s in solution.by_type}
+    for configuration in solution.configurations:
+        keys[configuration.kinematic_type].append((configuration.key, configuration.robots))
+    found = []
+    for summary, selection in zip(solution.by_type, solution.team.selections, strict=True):
+        use: Use | None = None
+        if not solution.listed:
+            if summary.method == "structure":
+                use = structure.component_use(rules, selection)
+            if use is None:
+                part = engines.lookup(summary.method).partition(rules, selection, structure.Memo())
+                keys[summary.kinematic_type] = [(c.key, c.robots) for c in part.classes]
+        if use is None:
+            use = {}
+            for key, robots in keys[summary.kinematic_type]:
+                for position, component in enumerate(key):
+                    used, served = use.get((position, component), (0, 0))
+                    use[position, component] = (used + 1, served + robots)
+        found.append(use)
+    return found
 
 
 @dataclass(frozen=True, slots=True)

@@ -369,8 +369,9 @@ class Studio:
                 SELECTION_FILE, f"no chart {kind[:40]!r}; charts: {', '.join(CHART_KINDS)}"
             )
         chosen = self.chosen(pairs)
-        solution = self.solution(chosen, listed=kind == "matrix")
-        return chart_svg(solution, kind)
+        # Every chart, the component matrix too, from the counts: the matrix is tallied by
+        # structure where it applies (no configuration listed).
+        return chart_svg(self.solution(chosen), kind)
 
     # -- uploads -----------------------------------------------------------------------------
 

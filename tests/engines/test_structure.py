@@ -9,7 +9,7 @@ import pytest
 
 from solver import load_team, solve
 from solver.engines import structure
-from solver.engines.structure import Memo, count
+from solver.engines.structure import Memo, component_use, count
 from solver.errors import StructureTooComplex, TooLargeError
 from tests.conftest import TEAMS
 
@@ -98,3 +98,46 @@ def test_listing_more_configurations_than_the_limit_is_refused() -> None:
         r"\(limit 'configurations'",
     ):
         solve(team, max_configurations=40)
+
+
+def test_component_use_counts_configurations_and_robots_per_component_without_listing(
+    write_file: WriteFile,
+) -> None:
+    write_file(
+        "rules.yaml",
+        """\
+characteristics:
+  kinematic_type: {values: [UAV, UGV]}
+  motion_control: {values: [Flight, Driving, Waypoint]}
+  sensor_type:
+    values: [a, b, c]
+    components:
+      - {name: X, values: [a, b]}
+      - {name: Y, values: [c]}
+  sensor_count: {values: [1, 2, 3]}
+constraints:
+  - name: Flight only for UAVs
+    when: {motion_control: Flight}
+    require: {kinematic_type: UAV}
+""",
+    )
+    team = load_team(write_file("t.yaml", "rules: rules.yaml\nteam:\n  UGV: {}\n"))
+    rules = team.rules
+    use = component_use(rules, team.selections[0])
+    assert use is not None
+
+    def of(characteristic: str, value: str) -> tuple[int, int]:
+        position = rules.names.index(characteristic)
+        found = rules.characteristics[position]
+        at = found.index(value)
+        assert at is not None
+        (component,) = found.membership[at]
+        return use[position, component]
+
+    # UGV: Driving or Waypoint, a/b (X) or c (Y), 1..3 sensors: 18 robots, 2 x 2 x 3 = 12
+    # configurations.
+    assert of("sensor_type", "a") == (2 * 3, 2 * 2 * 3)  # X: a and b
+    assert of("sensor_type", "c") == (2 * 3, 2 * 1 * 3)  # Y: c
+    assert of("motion_control", "Driving") == (2 * 3, 3 * 3)
+    assert of("sensor_count", "1") == (2 * 2, 2 * 3)
+    assert (rules.names.index("motion_control"), 0) not in use  # Flight: never a UGV's

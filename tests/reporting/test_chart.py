@@ -4,6 +4,8 @@ numbers (its colour map, its font metrics), the bars and the matrix against the 
 from __future__ import annotations
 
 import itertools
+from collections.abc import Callable
+from pathlib import Path
 
 import pytest
 from hypothesis import given
@@ -14,6 +16,7 @@ from solver.reporting.chart import (
     BLUES,
     bars_chart,
     blues,
+    component_matrix,
     matrix_chart,
     nice_ticks,
     radar_chart,
@@ -91,3 +94,43 @@ def test_the_radar_layers_are_the_teams_types_in_order(case3: Solution) -> None:
     ]
     assert chart.layers[0].width > chart.layers[-1].width
     assert chart.title == "Case 3: 872 valid robots, 102 UI configurations"
+
+
+OVERLAPPING = """\
+characteristics:
+  kinematic_type: {values: [UAV, UGV]}
+  motion_control: {values: [Flight, Driving, Waypoint]}
+  sensor_type:
+    values: [a, b, c, d]
+    components:
+      - {name: X, values: [a, b]}
+      - {name: Y, values: [b, c]}
+  sensor_count: {values: [1, 2, 3]}
+constraints:
+  - name: Flight needs b or c
+    when: {motion_control: Flight}
+    require: {sensor_type: [b, c]}
+  - name: three sensors are a or b
+    when: {sensor_count: 3}
+    require: {sensor_type: [a, b]}
+"""
+
+
+@pytest.mark.parametrize("engine", ["auto", "fast", "csp"])
+@pytest.mark.parametrize("team_name", ["case1", "case3", "search-and-rescue", "overlapping"])
+def test_the_matrix_of_the_counts_is_the_matrix_of_the_listed_configurations(
+    write_file: Callable[[str, str], Path], team_name: str, engine: str
+) -> None:
+    # Counted (by structure, where it applies: no configuration listed) and tallied from every
+    # configuration listed, the matrix is the same, overlapping components and unserved
+    # values (d) too.
+    if team_name == "overlapping":
+        write_file("rules.yaml", OVERLAPPING)
+        team = load_team(write_file("t.yaml", "rules: rules.yaml\nteam:\n  UAV: {}\n  UGV: {}\n"))
+    else:
+        team = load_team(team_name)
+    counted = solve(team, engine=engine, count_only=True)
+    listed = solve(team, engine=engine)
+    assert not counted.configurations
+    assert component_matrix(counted) == component_matrix(listed)
+    assert matrix_chart(counted) == matrix_chart(listed)
