@@ -36,7 +36,7 @@ from solver.core.team import Team, load_team
 from solver.errors import InputError
 from solver.files.filekind import file_kind
 from solver.files.yamlio import MAX_FILE_BYTES, load_document
-from solver.studio.selection import SELECTION_FILE, Selection, team_document, team_of
+from solver.studio.selection import SELECTION_FILE, Selection, team_of
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
 if TYPE_CHECKING:
@@ -142,7 +142,7 @@ class Workspace:
         if start is not None:
             self._start(start, start_display or str(start))
         self._uploads: _Kept[str, RuleSource] = _Kept(MAX_KEPT_RULE_SETS)
-        self._teams: _Kept[tuple[str, str], Team] = _Kept(MAX_KEPT_SOLUTIONS)
+        self._teams: _Kept[tuple[str, Selection], Team] = _Kept(MAX_KEPT_SOLUTIONS)
         self._solutions: _Kept[tuple[str, str, bool], Solution] = _Kept(MAX_KEPT_SOLUTIONS)
         self._excluded: dict[str, dict[tuple[str, str], dict[str, Removed]]] = {}
         self.fleets: _Kept[str, Fleet] = _Kept(MAX_KEPT_FLEETS)
@@ -244,7 +244,9 @@ class Workspace:
     def team(self, selection: Selection, source: RuleSource) -> Team:
         """The team ``selection`` stands for, with the published figures of a shipped team
         that selects the same (:func:`solver.core.reproduce.published_for`)."""
-        key = (source.id, team_document(selection, source.rules))
+        # Kept by the selection itself: writing its team file on every request cost more
+        # than counting (a YAML dump in pure Python).
+        key = (source.id, selection)
         with self._lock:
             found = self._teams.get(key)
         if found is None:
