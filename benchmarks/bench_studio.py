@@ -24,8 +24,11 @@ closed-form counts too), timed apart and together, on both teams. The peers, in 
 in-process on the same teams: ``solve`` plus the chart written as SVG
 (:func:`solver.reporting.svg.chart_svg`), and the same chart drawn by matplotlib (what the
 studio did before, and what ``report`` still does; a few changes only, it is slow). The Charts
-page's other two charts (bars, component matrix; the matrix needs every configuration listed)
-are reported for new selections of both teams.
+page's other two charts (bars, component matrix; the matrix tallied by structure, no
+configuration listed) are reported for new selections of both teams, beside the same chart of
+the same team in-process (``solve(count_only=True)`` then :func:`~solver.reporting.svg.chart_svg`)
+and the matrix of the listed configurations (``solve`` then ``chart_svg``: what the studio drew
+before).
 
 Run: ``python -m pytest benchmarks/bench_studio.py -s -p no:cacheprovider``.
 """
@@ -395,6 +398,11 @@ def test_studio_draws_the_charts_pages_other_charts_of_a_new_selection(
         if team_name == "case3"
         else scaled_changes(scaled_team, f"{kind} page")
     )[:20]
+    rules = load_team("case3").rules if team_name == "case3" else scaled_team.rules
+    rules_id = "paper" if team_name == "case3" else "start"
+    teams = {
+        c.query: team_of(parse_query(parse_qsl(c.query), rules, rules_id), rules) for c in changes
+    }
     client = Client(server)
     latencies: list[float] = []
 
@@ -412,5 +420,32 @@ def test_studio_draws_the_charts_pages_other_charts_of_a_new_selection(
         )
     finally:
         client.close()
-    listed = " (every configuration listed first)" if kind == "matrix" else ""
-    report(benchmark, f"studio: {kind} chart of a new selection{listed}, {team_name}", latencies)
+
+    def in_process(change: Change, *, listed: bool = False) -> tuple[int, int]:
+        solution = solve(teams[change.query], count_only=not listed)
+        return chart_counts(chart_svg(solution, kind))
+
+    peer = timed(changes[1:], in_process)
+    note = (
+        f"; in-process solve(count_only=True) + chart_svg median {ms(peer)}, p95 {ms(peer, 0.95)}"
+    )
+    if kind == "matrix":
+        old = timed(changes[1:], lambda change: in_process(change, listed=True))
+        note += (
+            f"; every configuration listed (solve + chart_svg) median {ms(old)}"
+            f", p95 {ms(old, 0.95)}"
+        )
+    ratio = percentile(latencies, 0.5) / percentile(peer, 0.5)
+    benchmark.extra_info.update(
+        {
+            "peer_median_ms": round(percentile(peer, 0.5) * 1000, 2),
+            "peer_p95_ms": round(percentile(peer, 0.95) * 1000, 2),
+            "ratio_to_solve": round(ratio, 1),
+        }
+    )
+    report(
+        benchmark,
+        f"studio: {kind} chart of a new selection, {team_name}",
+        latencies,
+        f"{note}; HTTP / in-process = {ratio:.1f}x",
+    )
