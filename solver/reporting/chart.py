@@ -309,6 +309,13 @@ def radar_axes(team: Team) -> tuple[RadarAxis, ...]:
     return tuple(found)
 
 
+def _highest(characteristic: Characteristic, domain: Sequence[Value]) -> int:
+    """The largest count of a selected domain (in domain order: a run's is its last)."""
+    if isinstance(characteristic.values, Run) and domain and type(domain[-1]) is int:
+        return domain[-1]
+    return max(int(v) for v in domain)
+
+
 def _tick_values(axis: RadarAxis, team: Team, position: int) -> list[Value]:
     """The values labelled on a spoke: all of them, or for integers the telling ones.
 
@@ -326,7 +333,7 @@ def _tick_values(axis: RadarAxis, team: Team, position: int) -> list[Value]:
     for value in (
         axis.low,
         axis.high,
-        *(max(int(v) for v in s.domains[position]) for s in team.selections),
+        *(_highest(characteristic, s.domains[position]) for s in team.selections),
         *(c.high for c in characteristic.components if c.high is not None),
     ):
         labels.offer(value)
@@ -458,14 +465,20 @@ def _spoke(axis: RadarAxis, team: Team, position: int) -> Spoke:
 
 
 def _spans(
-    axes: Sequence[RadarAxis], domains: Sequence[Sequence[Value]]
+    axes: Sequence[RadarAxis],
+    domains: Sequence[Sequence[Value]],
+    known: dict[tuple[int, tuple[Value, ...]], list[tuple[Value, Value]]],
 ) -> list[list[tuple[Value, Value]]]:
-    """Per spoke, the runs of a type's selected values that the spoke shows."""
+    """Per spoke, the runs of a type's selected values that the spoke shows (``known``: the
+    runs of domains met before, by spoke: types often select the same values)."""
     found = []
-    for axis, domain in zip(axes, domains, strict=True):
-        # A set, not the tuple: a spoke may show 100,000 counts.
-        shown_values = set(axis.shown)
-        found.append(runs(axis.characteristic, [v for v in domain if v in shown_values]))
+    for k, (axis, domain) in enumerate(zip(axes, domains, strict=True)):
+        key = (k, tuple(domain))
+        if key not in known:
+            # A set, not the tuple: a spoke may show 100,000 counts.
+            shown_values = set(axis.shown)
+            known[key] = runs(axis.characteristic, [v for v in domain if v in shown_values])
+        found.append(known[key])
     return found
 
 
@@ -495,8 +508,9 @@ def _layers(solution: Solution, axes: Sequence[RadarAxis]) -> tuple[Layer, ...]:
     summaries = {s.kinematic_type: s for s in solution.by_type}
     count = len(team.selections)
     layers = []
+    known: dict[tuple[int, tuple[Value, ...]], list[tuple[Value, Value]]] = {}
     for index, selection in enumerate(team.selections):
-        spans = _spans(axes, selection.domains)
+        spans = _spans(axes, selection.domains, known)
         legend = chart_text(selection.kinematic_type)
         summary = summaries.get(selection.kinematic_type)
         if summary is not None:
