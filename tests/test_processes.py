@@ -10,7 +10,7 @@ from pathlib import Path
 
 from tests.conftest import ROOT
 from tests.live.roscore import wait_until
-from tests.processes import MARK, end, marked, run_mark
+from tests.processes import GRACE_VARIABLE, MARK, end, marked, run_mark
 
 
 def test_a_process_started_by_a_test_carries_the_runs_mark_and_is_found_and_ended() -> None:
@@ -41,6 +41,7 @@ def test_a_run_that_leaves_a_process_alive_fails_and_ends_it(tmp_path: Path) -> 
     # A run of its own (not nested in this one): without this run's mark in its environment.
     environment = {k: v for k, v in os.environ.items() if k != MARK}
     environment["PYTHONPATH"] = str(ROOT)
+    environment[GRACE_VARIABLE] = "1"  # the leak sleeps for ten minutes: no need to wait ten s
     result = subprocess.run(
         [sys.executable, "-m", "pytest", "-p", "tests.processes", "-q", str(tmp_path)],
         cwd=tmp_path,
