@@ -69,9 +69,11 @@ MAX_EVENTS = 2 * MAX_NODES + 16
 # libyaml when PyYAML has it (ten to fifty times faster on big inputs; same nodes, same marks).
 _LOADER: Any = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
 
+_STR_TAG = "tag:yaml.org,2002:str"
+_INT_TAG = "tag:yaml.org,2002:int"
 _PLAIN_TAGS = {
-    "tag:yaml.org,2002:str",
-    "tag:yaml.org,2002:int",
+    _STR_TAG,
+    _INT_TAG,
     "tag:yaml.org,2002:float",
     "tag:yaml.org,2002:bool",
     "tag:yaml.org,2002:null",
@@ -441,8 +443,6 @@ class _Walker:
 _MAX_INT_BITS = 63
 # Decimal digits that always fit in _MAX_INT_BITS (2**63 has 19 digits).
 _PLAIN_DIGITS = 18
-_STR_TAG = "tag:yaml.org,2002:str"
-_INT_TAG = "tag:yaml.org,2002:int"
 # An unpaired surrogate ("\udcff" written as an escape): no file or terminal can hold it.
 _SURROGATE = re.compile("[\ud800-\udfff]")
 
