@@ -50,4 +50,6 @@ echo "tools/test.sh: installing teleop-ui with every extra and the test tools in
 "$python" -m ruff check solver tests benchmarks tools
 "$python" -m ruff format --check solver tests benchmarks tools
 "$python" -m mypy
-"$python" -m pytest tests benchmarks --benchmark-disable "$@"
+# -n auto: one pytest-xdist worker per core; --dist loadfile keeps a file's tests (and its
+# module fixtures: a roscore, a browser, a cached bag) in one worker.
+"$python" -m pytest tests benchmarks --benchmark-disable -n auto --dist loadfile "$@"

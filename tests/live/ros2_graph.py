@@ -35,12 +35,16 @@ CONFIG = """<?xml version="1.0" encoding="UTF-8"?>
 </CycloneDDS>
 """
 
-_DOMAINS = itertools.count(100 + os.getpid() % 50)
+_DOMAINS = itertools.count(os.getpid() % 50)
+# tools/test.sh runs the suite in pytest-xdist workers (gw0, gw1, ...), each a process of its
+# own: worker w of n takes the ids w, w + n, w + 2n ..., so no two workers share a domain.
+_WORKER = int(os.environ.get("PYTEST_XDIST_WORKER", "gw0").removeprefix("gw") or 0)
+_WORKERS = int(os.environ.get("PYTEST_XDIST_WORKER_COUNT", "1"))
 
 
 def next_domain() -> int:
-    """A DDS domain id no earlier test of this run used (ids stay below 232)."""
-    return next(_DOMAINS) % 200 + 20
+    """A DDS domain id no earlier test of this run, in any worker, used (ids 20 to 219)."""
+    return (next(_DOMAINS) * _WORKERS + _WORKER) % 200 + 20
 
 
 def write_config(directory: Path) -> str:
