@@ -20,6 +20,7 @@ if TYPE_CHECKING:
 
 __all__ = [
     "assignment_data",
+    "component_data",
     "configuration_data",
     "counts_data",
     "integer_runs",
@@ -47,9 +48,10 @@ def summary_data(summary: TypeSummary) -> dict[str, Any]:
     return data
 
 
-def _component_data(
+def component_data(
     characteristic: Characteristic, component: Component, served: Sequence[Any]
 ) -> dict[str, Any]:
+    """One component of a configuration: its characteristic, its name, the values served."""
     data: dict[str, Any] = {"characteristic": characteristic.name, "component": component.name}
     if characteristic.kind == "integer":
         counts = sorted(int(v) for v in served)
@@ -68,7 +70,7 @@ def configuration_data(rules: RuleSet, configuration: Configuration) -> dict[str
         "kinematic_type": configuration.kinematic_type,
         "valid_robots": configuration.robots,
         "components": [
-            _component_data(c, component, served)
+            component_data(c, component, served)
             for c, component, served in zip(
                 rules.characteristics, configuration.components, configuration.served, strict=True
             )

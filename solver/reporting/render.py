@@ -12,14 +12,16 @@ from __future__ import annotations
 import csv
 import io
 import json
+import math
 import re
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from json.encoder import encode_basestring as _quoted
 from typing import Any
 
 from solver.core.assignment import Assignment
 from solver.core.contracts import (
     assignment_data,
+    component_data,
     configuration_data,
     counts_data,
     integer_runs,
@@ -28,7 +30,7 @@ from solver.core.contracts import (
 )
 from solver.core.partition import Configuration
 from solver.core.reproduce import Comparison, published_note
-from solver.core.ruleset import Characteristic, Component
+from solver.core.ruleset import Characteristic, Component, RuleSet
 from solver.core.solution import Solution
 from solver.engines import describe
 from solver.reporting import markdown
@@ -68,35 +70,48 @@ def dumps(data: Any, *, indent: int | None = 2) -> str:
     U+2028, a right-to-left override, a lone surrogate) is written as a JSON escape
     (``\\u202e``), so the text holds no invisible character, a terminal shows it as it is, and
     any JSON reader reads the same strings back.
+
+    Indented by two, data of dicts with text keys, lists, text, whole and finite numbers,
+    booleans and None (what the project writes) takes a small writer: the same text in a
+    third of the time, as Python's encoder writes indented JSON a generator per value (its C
+    encoder only writes one-line JSON). Anything else goes to ``json.dumps``.
     """
+    if indent == 2:
+        parts: list[str] = []
+        try:
+            _write_indented(data, "\n", parts)
+        except (_Unusual, RecursionError):  # json.dumps says what is wrong, if anything
+            pass
+        else:
+            return json_printable("".join(parts)) + "\n"
     return json_printable(json.dumps(data, indent=indent, ensure_ascii=False)) + "\n"
-
-
-def _indented(data: Any) -> str:
-    """``dumps(data)`` without its final newline, for data of dicts with text keys, lists,
-    text, whole numbers, booleans and None (a configuration's JSON): the same text in a
-    third of the time, as Python's own encoder writes indented JSON a generator per value
-    (it uses its C encoder only for one-line JSON). Anything else goes to :func:`dumps`."""
-    parts: list[str] = []
-    try:
-        _write_indented(data, "\n", parts)
-    except _Unusual:
-        return dumps(data)[:-1]
-    return json_printable("".join(parts))
 
 
 class _Unusual(Exception):
     """A value :func:`_write_indented` leaves to Python's encoder."""
 
 
+def _float(value: float) -> str:
+    if not math.isfinite(value):  # NaN and the infinities: as json.dumps writes them
+        raise _Unusual
+    return float.__repr__(value)
+
+
+# The text of a value that holds no other, by its exact type (a subclass is unusual).
+_SCALAR: dict[type, Callable[[Any], str]] = {
+    str: _quoted,
+    int: int.__repr__,
+    float: _float,
+    bool: lambda value: "true" if value else "false",
+    type(None): lambda _: "null",
+}
+
+
 def _write_indented(value: Any, newline: str, parts: list[str]) -> None:
     kind = type(value)
-    if kind is str:
-        parts.append(_quoted(value))
-    elif kind is int:
-        parts.append(int.__repr__(value))
-    elif value is None or kind is bool:
-        parts.append("null" if value is None else "true" if value else "false")
+    scalar = _SCALAR.get(kind)
+    if scalar is not None:
+        parts.append(scalar(value))
     elif kind is list:
         if not value:
             parts.append("[]")
@@ -124,7 +139,7 @@ def _write_indented(value: Any, newline: str, parts: list[str]) -> None:
             parts.append((inner if index == 0 else "," + inner) + _quoted(key) + ": ")
             _write_indented(item, inner, parts)
         parts.append(newline + "}")
-    else:  # floats (NaN, exponents) and anything else: as json.dumps writes them
+    else:  # anything else: as json.dumps writes it
         raise _Unusual
 
 
@@ -329,13 +344,76 @@ def solution_chunks(
     listed = solution.configurations
     yield head[: -len("\n}\n")] + ',\n  "configurations": ' + ("[" if listed else "[]")
     rules = solution.rules
+    parts = _Parts()  # for the whole listing
     for start in range(0, len(listed), _CHUNK):
-        # A chunk as one JSON list ("[\n  {...},\n  {...}\n]"), its brackets dropped and its
-        # lines moved one level down: the text of each configuration dumped on its own, in
-        # one call of the encoder instead of one per configuration.
-        chunk = [configuration_data(rules, c) for c in listed[start : start + _CHUNK]]
-        yield ("," if start else "") + _indented(chunk)[1:-2].replace("\n", "\n  ")
+        yield ("," if start else "") + _configurations_text(
+            rules, listed[start : start + _CHUNK], parts
+        )
     yield ("\n  ]" if listed else "") + "\n}\n"
+
+
+_AT_CONFIGURATION = "\n    "  # a listed configuration's place: two levels down
+_AT_COMPONENT = "\n        "  # its components' places: two levels further down
+
+
+class _Parts:
+    """What the configurations of one listing share, each written once: the JSON text of a
+    component's part (by characteristic, component and values served) and of a kinematic
+    type's name, both already passed through :func:`json_printable`."""
+
+    def __init__(self) -> None:
+        # By characteristic, component and the identity of the values served: the tuples of
+        # values are shared by the configurations that share a block's part, and live as long
+        # as the solution that the listing is written from.
+        self.components: dict[tuple[int, int, int], str] = {}
+        self.names: dict[str, str] = {}
+
+
+def _configurations_text(
+    rules: RuleSet, configurations: Sequence[Configuration], parts: _Parts
+) -> str:
+    """The text ``dumps`` gives each configuration's :func:`configuration_data` inside the
+    listing (each on a new line, four spaces in, joined by commas). Most configurations share
+    most of their components (a kinematic type's own, a motion control's), so a configuration
+    is a few lookups in ``parts`` and one format."""
+    texts = []
+    characteristics = rules.characteristics
+    for configuration in configurations:
+        number, kinematic_type, robots = (
+            configuration.number,
+            configuration.kinematic_type,
+            configuration.robots,
+        )
+        if not (type(number) is type(robots) is int and type(kinematic_type) is str):
+            texts.append(_AT_CONFIGURATION + _nested(configuration_data(rules, configuration)))
+            continue
+        pieces = []
+        for position, (characteristic, component, served) in enumerate(
+            zip(characteristics, configuration.components, configuration.served, strict=True)
+        ):
+            key = (position, configuration.key[position], id(served))
+            text = parts.components.get(key)
+            if text is None:
+                data = component_data(characteristic, component, served)
+                text = parts.components[key] = _AT_COMPONENT + _nested(data, 2)
+            pieces.append(text)
+        name = parts.names.get(kinematic_type)
+        if name is None:
+            name = parts.names[kinematic_type] = json_printable(_quoted(kinematic_type))
+        components = "[" + ",".join(pieces) + "\n      ]" if pieces else "[]"
+        texts.append(
+            f'{_AT_CONFIGURATION}{{\n      "number": {int.__repr__(number)},\n'
+            f'      "kinematic_type": {name},\n'
+            f'      "valid_robots": {int.__repr__(robots)},\n'
+            f'      "components": {components}\n    }}'
+        )
+    return ",".join(texts)
+
+
+def _nested(data: Any, levels: int = 0) -> str:
+    """``dumps(data)`` without its newline, its lines moved to where a listed configuration
+    starts and ``levels`` levels further in."""
+    return dumps(data)[:-1].replace("\n", _AT_CONFIGURATION + "  " * levels)
 
 
 def render_counts(solution: Solution, fmt: str = "text") -> str:

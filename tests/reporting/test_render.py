@@ -3,11 +3,14 @@ made."""
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
+
+import pytest
 
 from solver import load_team, solve
 from solver.core.contracts import integer_runs, solution_data
-from solver.reporting.render import csv_cell, dumps, method_text, solution_chunks
+from solver.reporting.render import csv_cell, dumps, json_printable, method_text, solution_chunks
 from tests.conftest import TEAMS
 
 
@@ -41,11 +44,32 @@ def test_a_streamed_json_listing_is_the_json_of_the_solution_in_chunks(tmp_path:
     (tmp_path / "team.yaml").write_text(
         "name: wide\nrules: rules.yaml\nteam:\n  UGV: {}\n  UAV: {}\n", encoding="utf-8"
     )
-    for team in (load_team(tmp_path / "team.yaml"), load_team(TEAMS / "case3.yaml")):
+    # Overlapping components (the values a configuration serves are a cover's share) and a
+    # kinematic type whose name holds an unprintable character.
+    (tmp_path / "overlapping.yaml").write_text(
+        "name: overlapping\ncharacteristics:\n  kinematic_type:\n"
+        '    values: [UGV, "Odd\\u202eType"]\n'
+        "  sensor_type:\n    values: [a, b, c, d, e, f]\n    components:\n"
+        "      - {name: one, values: [a, b, c]}\n      - {name: two, values: [c, d, e]}\n"
+        "      - {name: three, values: [e, f, a]}\n"
+        "  sensor_count:\n    range: {min: 1, max: 9}\n    components:\n"
+        "      - {name: few, min: 1, max: 4}\n"
+        "      - {name: many, min: 3, max: 9, cluster_size: 2}\n",
+        encoding="utf-8",
+    )
+    (tmp_path / "odd.yaml").write_text(
+        "name: odd\nrules: overlapping.yaml\nteam:\n  UGV: {}\n"
+        '  "Odd\\u202eType": {sensor_count: 7}\n',
+        encoding="utf-8",
+    )
+    teams = [load_team(tmp_path / name) for name in ("odd.yaml", "team.yaml")]
+    for team in (*teams, load_team(TEAMS / "case3.yaml")):
         solution = solve(team)
         for listed in (True, False):
             chunks = list(solution_chunks(solution, "json", configurations=listed))
-            assert "".join(chunks) == dumps(solution_data(solution, configurations=listed))
+            data = solution_data(solution, configurations=listed)
+            expected = json_printable(json.dumps(data, indent=2, ensure_ascii=False)) + "\n"
+            assert "".join(chunks) == expected
     assert len(chunks) == 1
     assert (
         len(
@@ -70,3 +94,22 @@ def test_a_streamed_csv_listing_is_the_whole_csv_in_chunks() -> None:
     assert rows[0] == ["number", *solution.rules.names, "valid_robots"]
     assert len(rows) == 1 + solution.totals.ui_configurations
     assert [int(row[0]) for row in rows[1:]] == [c.number for c in solution.configurations]
+
+
+def test_indented_json_is_what_pythons_encoder_writes_whatever_the_values() -> None:
+    nested: list[object] = []
+    nested.append(nested)
+    values = [
+        {"a": [1, 2.5, -0.0, 1e300, 1e-7, None, True, False, "x\u2028y", {}], "b": [], "c": {}},
+        {"runs": [[1, 5], [7, 7]], "names": ["a", "b"], "mixed": [1, "a", [2.0]]},
+        {1: "a whole-number key"},
+        ("a", "tuple"),
+        [float("nan"), float("inf"), -float("inf")],
+        "\x00\u202e\ud800 unprintable",
+        10**40,
+    ]
+    for value in values:
+        expected = json_printable(json.dumps(value, indent=2, ensure_ascii=False)) + "\n"
+        assert dumps(value) == expected
+    with pytest.raises(ValueError, match="Circular reference"):
+        dumps(nested)
