@@ -55,8 +55,14 @@ def read_bounded(
         # Not waiting on open: a pipe put in the file's place meanwhile is refused below.
         flags = os.O_RDONLY | os.O_NONBLOCK | os.O_NOCTTY | os.O_CLOEXEC
         with open(os.open(path, flags), "rb") as stream:
-            _refuse_unless_regular(os.fstat(stream.fileno()).st_mode, name, what)
-            data = stream.read(limit + 1)  # one byte past the limit says "too large"
+            status = os.fstat(stream.fileno())
+            _refuse_unless_regular(status.st_mode, name, what)
+            # One byte past the limit says "too large". Asked for its size and a byte more
+            # (not the limit: a buffer of 16 MB for each small file), then for the rest if
+            # the file grew meanwhile.
+            data = stream.read(min(status.st_size, limit) + 1)
+            if status.st_size < len(data) <= limit:
+                data += stream.read(limit + 1 - len(data))
     except FileNotFoundError:
         raise InputError.at(name, "no such file") from None
     except PermissionError:

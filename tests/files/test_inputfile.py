@@ -35,6 +35,14 @@ def test_a_file_one_byte_past_the_limit_is_refused(tmp_path: Path) -> None:
         read_bounded(path, limit=8)
 
 
+def test_a_file_longer_than_its_size_says_is_read_whole_and_still_bounded() -> None:
+    # /proc files are regular files of size 0 (as a file growing while read would be).
+    status = Path("/proc/self/status")
+    assert read_bounded(status, limit=1 << 20).startswith(b"Name:")
+    with pytest.raises(InputError, match="file is larger than 16 bytes; refused"):
+        read_bounded(status, limit=16)
+
+
 @pytest.mark.parametrize("device", ["/dev/zero", "/dev/urandom", "/dev/null"])
 def test_a_device_is_refused_without_being_read(device: str) -> None:
     with pytest.raises(InputError) as caught:
