@@ -149,20 +149,39 @@ def parse_document(
 
     ``tolerate``: fault codes kept in :attr:`Document.tolerated` instead of raised.
     """
-    prescan(text, name)
+    # A short text is composed first and pre-scanned only when composing or building its
+    # values meets a problem, so that the pre-scan's refusal still comes first: the same
+    # document or the same error, without parsing a plain file twice (see _SHORT_TEXT).
+    scanned = len(text) > _SHORT_TEXT
+    if scanned:
+        prescan(text, name)
+    syntax: InputError | None = None
+    walker = _Walker(name)
     with collector_paused():
         try:
             node = yaml.compose(text, Loader=_LOADER)
         except yaml.YAMLError as error:
-            raise _syntax_error(name, error) from None
-        walker = _Walker(name)
-        try:
-            data = walker.convert(node, ()) if node is not None else None
-        except _TooLarge:
-            data = None
+            syntax = _syntax_error(name, error)
+        else:
+            try:
+                data = walker.convert(node, ()) if node is not None else None
+            except _TooLarge:
+                data = None
+    if not scanned and (syntax is not None or walker.faults):
+        prescan(text, name)
+    if syntax is not None:
+        raise syntax
     if any(fault.code not in tolerate for fault in walker.faults):
         raise InputError(walker.faults)
     return Document(name, data, walker.value_marks, walker.key_marks, tuple(walker.faults))
+
+
+# Texts up to this many characters are composed before their pre-scan (parse_document). Such a
+# text nests at most this many levels, so nothing the pre-scan guards against can happen to it:
+# libyaml's composer recursed once per level and crashed at 50,000; its scanner's cost grows
+# with the square of the flow depth (a few milliseconds here, and libyaml >= 0.2.5 stops at
+# 1,000 levels anyway); building values stops at MAX_DEPTH and MAX_NODES by itself.
+_SHORT_TEXT = 4096
 
 
 @contextlib.contextmanager

@@ -129,6 +129,27 @@ def test_the_prescan_stops_at_the_first_level_too_deep_before_reading_on() -> No
     assert str(caught.value) == "deep.yaml:1:66: nested more than 64 levels deep; refused"
 
 
+@pytest.mark.parametrize(
+    "text",
+    [
+        "[" * 1500 + "]" * 1500,
+        "[" * 100 + "}" * 100,
+        "- " * 70 + "x",
+        "[" * 66 + "&a x, *a" + "]" * 66,
+    ],
+    ids=["past libyaml's own cap", "a syntax error after", "block", "an alias inside"],
+)
+def test_a_short_text_composed_before_its_prescan_is_refused_as_the_prescan_refuses(
+    text: str,
+) -> None:
+    with pytest.raises(InputError) as caught:
+        prescan(text, "deep.yaml")
+    with pytest.raises(InputError) as read:
+        parse_document(text, "deep.yaml")
+    assert str(read.value) == str(caught.value)
+    assert "nested more than 64 levels deep; refused" in str(read.value)
+
+
 def test_the_prescan_reports_a_syntax_error_it_meets_first() -> None:
     with pytest.raises(InputError) as caught:
         prescan("a: [1, 2}\n", "broken.yaml")
