@@ -119,6 +119,10 @@ class _Block:
         self.positions = positions
         self._combinations = combinations
         self.grid = grid
+        if combinations is not None:
+            # A listed block is always counted: its figures in one pass, as the properties
+            # below would give them one at a time (the instance's values take their place).
+            self.__dict__.update(_tally(combinations))
 
     @cached_property
     def combinations(self) -> tuple[tuple[tuple[_Class, ...], int], ...]:
@@ -179,6 +183,39 @@ class _Block:
         return any(
             len(c.membership) > 1 for combination, _ in self.combinations for c in combination
         )
+
+
+def _tally(combinations: tuple[tuple[tuple[_Class, ...], int], ...]) -> dict[str, Any]:
+    """A listed block's ``robots``, ``served``, ``partial_weights``, ``configurations`` and
+    ``overlaps`` (see :class:`_Block`), in one pass over its combinations."""
+    robots = served = 0
+    weights: dict[Key, int] = {}
+    overlaps = False
+    for combination, weight in combinations:
+        robots += weight
+        # Plain loops: a block's combinations are few and short, and a generator per step
+        # cost more than the step.
+        components: list[int] | None = []
+        for found in combination:
+            membership = found.membership
+            if len(membership) > 1:
+                overlaps = True
+            if not membership:
+                components = None
+            elif components is not None:
+                components.append(membership[0])
+        if components is not None:
+            key = tuple(components)
+            served += weight
+            weights[key] = weights.get(key, 0) + weight
+    return {
+        "combinations": combinations,
+        "robots": robots,
+        "served": served,
+        "partial_weights": weights,
+        "configurations": len(weights),
+        "overlaps": overlaps,
+    }
 
 
 class _Grid:
@@ -494,28 +531,33 @@ def _partial_configurations(
 ) -> list[_Part]:
     """A block's partial configurations in key order: its combinations gathered by key, with
     their robots and the values they serve (unserved combinations left out)."""
-    held: dict[Key, list[set[Value]]] = {}
-    weights: dict[Key, int] = {}
-    for combination, weight in block.combinations:
-        key = key_of(block, combination)
+    # The classes of each position that a key's combinations take (each once, first seen
+    # first); their members, sorted into domain order, are the values the key serves.
+    held: dict[Key, list[dict[int, Members]]] = {}
+    own = key_of is _own_key
+    weights = block.partial_weights if own else _weights(block, key_of)
+    key: Key | None
+    for combination, _ in block.combinations:
+        if own and len(combination) == 1:  # most blocks: one characteristic, one component
+            membership = combination[0].membership
+            key = (membership[0],) if membership else None
+        else:
+            key = key_of(block, combination)
         if key is not None:
-            weights[key] = weights.get(key, 0) + weight
-            for values, found in zip(
-                held.setdefault(key, [set() for _ in combination]), combination, strict=True
-            ):
-                values.update(found.members)
+            taken = held.get(key)
+            if taken is None:
+                taken = held[key] = [{} for _ in combination]
+            for classes, found in zip(taken, combination, strict=True):
+                classes[found.index] = found.members
     orders = [rules.characteristics[p].positions.__getitem__ for p in block.positions]
-    return [
-        (
-            key,
-            weight,
-            tuple(
-                tuple(sorted(values, key=order))
-                for values, order in zip(held[key], orders, strict=True)
-            ),
-        )
-        for key, weight in sorted(weights.items())
-    ]
+    parts: list[_Part] = []
+    for key, weight in sorted(weights.items()):
+        served = []
+        for classes, order in zip(held[key], orders, strict=True):
+            # In domain order (a class's members are in the team's order when it lists them).
+            served.append(tuple(sorted(itertools.chain(*classes.values()), key=order)))
+        parts.append((key, weight, tuple(served)))
+    return parts
 
 
 def _joined(rules: RuleSet, blocks: Sequence[_Block], per_block: list[list[_Part]]) -> list[_Part]:
@@ -769,6 +811,11 @@ def _listed(
 ) -> tuple[tuple[tuple[_Class, ...], int], ...]:
     """The valid combinations of a small block, one by one (``values``: a value of every
     characteristic, the block's overwritten as its combinations are tried)."""
+    choices = itertools.product(*(classes[i] for i in group))
+    if not numbers:  # no rule over the block: every combination is valid
+        if len(group) == 1:
+            return tuple(((found,), len(found.members)) for found in classes[group[0]])
+        return tuple((choice, math.prod(len(c.members) for c in choice)) for choice in choices)
     index = {name: i for i, name in enumerate(rules.names)}
     checks = [
         (
@@ -778,7 +825,7 @@ def _listed(
         for n in numbers
     ]
     combinations = []
-    for choice in itertools.product(*(classes[i] for i in group)):
+    for choice in choices:
         for i, found in zip(group, choice, strict=True):
             values[i] = found.members[0]
         if all(check(*(values[i] for i in positions)) for check, positions in checks):
