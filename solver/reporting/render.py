@@ -413,7 +413,12 @@ def _configurations_text(
 def _nested(data: Any, levels: int = 0) -> str:
     """``dumps(data)`` without its newline, its lines moved to where a listed configuration
     starts and ``levels`` levels further in."""
-    return dumps(data)[:-1].replace("\n", _AT_CONFIGURATION + "  " * levels)
+    parts: list[str] = []
+    try:
+        _write_indented(data, _AT_CONFIGURATION + "  " * levels, parts)
+    except (_Unusual, RecursionError):
+        return dumps(data)[:-1].replace("\n", _AT_CONFIGURATION + "  " * levels)
+    return json_printable("".join(parts))
 
 
 def render_counts(solution: Solution, fmt: str = "text") -> str:
