@@ -25,7 +25,7 @@ from pathlib import Path
 from solver.errors import InputError
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
-__all__ = ["read_bounded", "read_text", "sha256_bounded"]
+__all__ = ["decode_text", "read_bounded", "read_text", "sha256_bounded", "sha256_hex"]
 
 
 def _shown_name(path: str | Path, display: str | None) -> str:
@@ -38,11 +38,16 @@ def sha256_bounded(path: str | Path, *, limit: int) -> str | None:
     read or is larger than ``limit`` (an up-to-date check then says "not up to date" and the
     solve that follows reports the located error)."""
     try:
-        import hashlib  # only `batch` digests files; loading OpenSSL costs every start 5 ms
-
-        return hashlib.sha256(read_bounded(path, limit=limit)).hexdigest()
+        return sha256_hex(read_bounded(path, limit=limit))
     except InputError:
         return None
+
+
+def sha256_hex(data: bytes) -> str:
+    """The SHA-256 of ``data``, in hexadecimal."""
+    import hashlib  # only `batch` digests files; loading OpenSSL costs every start 5 ms
+
+    return hashlib.sha256(data).hexdigest()
 
 
 def read_bounded(
@@ -105,8 +110,16 @@ def read_text(
     path: str | Path, *, display: str | None = None, limit: int, what: str = "file"
 ) -> str:
     """:func:`read_bounded`, decoded as UTF-8 (a byte-order mark is dropped)."""
-    name = _shown_name(path, display)
     raw = read_bounded(path, display=display, limit=limit, what=what)
+    return decode_text(raw, path, display=display, what=what)
+
+
+def decode_text(
+    raw: bytes, path: str | Path, *, display: str | None = None, what: str = "file"
+) -> str:
+    """The bytes :func:`read_bounded` read from ``path`` as :func:`read_text` gives them, or
+    its :class:`InputError` (for a caller that also needs the bytes: to hash what it reads)."""
+    name = _shown_name(path, display)
     if b"\x00" in raw:
         raise InputError.at(name, f"contains NUL bytes: a binary file, not a {what}")
     try:

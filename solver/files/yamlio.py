@@ -33,7 +33,7 @@ from typing import Any
 import yaml
 
 from solver.errors import Fault, InputError, Location
-from solver.files.inputfile import read_text
+from solver.files.inputfile import decode_text, read_bounded, read_text, sha256_hex
 
 __all__ = [
     "MAX_FILE_BYTES",
@@ -43,6 +43,7 @@ __all__ = [
     "PathPart",
     "format_path",
     "load_document",
+    "load_hashed",
     "parse_document",
     "prescan",
 ]
@@ -138,8 +139,20 @@ def load_document(
     value is kept) do not raise; they are kept in :attr:`Document.tolerated`.
     """
     name = display if display is not None else str(path)
-    text = read_text(path, display=name, limit=MAX_FILE_BYTES, what="YAML file")
+    text = read_text(path, display=name, limit=MAX_FILE_BYTES, what=_WHAT)
     return parse_document(text, name, tolerate=tolerate)
+
+
+def load_hashed(path: str | Path, *, display: str | None = None) -> tuple[Document, str]:
+    """:func:`load_document` and the SHA-256 of the bytes it read (what ``batch`` records of
+    a team file: exactly the text it solved, read once)."""
+    name = display if display is not None else str(path)
+    raw = read_bounded(path, display=name, limit=MAX_FILE_BYTES, what=_WHAT)
+    text = decode_text(raw, path, display=name, what=_WHAT)
+    return parse_document(text, name), sha256_hex(raw)
+
+
+_WHAT = "YAML file"  # what a file that cannot be read was meant to be, as messages say
 
 
 def parse_document(

@@ -60,7 +60,7 @@ from solver.errors import Fault, InputError, Location, SolverError, Terminated
 from solver.files.atomic import remove_temporaries, write_atomic
 from solver.files.filekind import describe, file_kind, why
 from solver.files.inputfile import read_text, sha256_bounded
-from solver.files.yamlio import MAX_FILE_BYTES, load_document
+from solver.files.yamlio import MAX_FILE_BYTES, load_hashed
 from solver.limits import limit
 from solver.reporting import markdown
 from solver.reporting.plot import check_chart_size
@@ -384,8 +384,8 @@ def run_job(job: Job) -> Outcome:
     """
     started = time.perf_counter()
     try:
-        team_hash = _sha256(job.team_file)
-        document = load_document(job.team_file, display=job.shown)
+        # Hashed and read from the same bytes: the stamp names exactly the text solved.
+        document, team_hash = load_hashed(job.team_file, display=job.shown)
         kind = file_kind(document)
         if kind in ("rules", "profile", "presentation"):
             row = SummaryRow(

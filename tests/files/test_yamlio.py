@@ -9,7 +9,7 @@ import pytest
 import yaml
 
 from solver.errors import InputError
-from solver.files.yamlio import load_document, parse_document, prescan
+from solver.files.yamlio import load_document, load_hashed, parse_document, prescan
 from tests.conftest import run_cli
 
 
@@ -210,3 +210,20 @@ def test_reading_leaves_the_cycle_collector_as_it_was() -> None:
         assert not gc.isenabled()
     finally:
         gc.enable()
+
+
+def test_a_file_loaded_with_its_hash_is_hashed_from_the_bytes_read(tmp_path: Path) -> None:
+    import hashlib
+
+    path = tmp_path / "team.yaml"
+    path.write_bytes("\ufeffname: Équipe\nteam: {UGV: {}}\n".encode())
+    document, digest = load_hashed(path, display="team.yaml")
+    assert document == load_document(path, display="team.yaml")
+    assert digest == hashlib.sha256(path.read_bytes()).hexdigest()
+    for broken in (b"name: \x00", b"name: \xff"):
+        path.write_bytes(broken)
+        with pytest.raises(InputError) as loaded:
+            load_document(path, display="team.yaml")
+        with pytest.raises(InputError) as hashed:
+            load_hashed(path, display="team.yaml")
+        assert str(hashed.value) == str(loaded.value)
