@@ -569,7 +569,12 @@ def _read_conditions(
 
 
 def read_selection(
-    reader: Reader, path: YPath, characteristic: Characteristic, *, exact: bool
+    reader: Reader,
+    path: YPath,
+    characteristic: Characteristic,
+    *,
+    exact: bool,
+    described: bool = True,
 ) -> tuple[frozenset[Value], str] | None:
     """A set of values of ``characteristic`` as a rule or team file writes it.
 
@@ -577,7 +582,8 @@ def read_selection(
     ``not`` (values to leave out) and ``component`` (the values of named components), which
     are intersected. A lone whole number means exactly that count when ``exact`` (constraints)
     and "1..N", a maximum, when not (team files: ``sensor_count: 5``).
-    Returns the allowed set and a short text for messages, or ``None`` after recording faults.
+    Returns the allowed set and a short text for messages (empty for a list or a value when not
+    ``described``: a team's selections are never quoted), or ``None`` after recording faults.
     """
     raw = reader.get(path)
     if isinstance(raw, dict):
@@ -604,7 +610,7 @@ def read_selection(
                 chosen[value] = None
         if len(reader.faults) > before:
             return None
-        return frozenset(chosen), _describe(characteristic, list(chosen))
+        return frozenset(chosen), _describe(characteristic, list(chosen)) if described else ""
     if raw is None:
         reader.fault(
             path,
@@ -622,7 +628,7 @@ def read_selection(
     value = _read_value(reader, path, characteristic, raw)
     if value is None:
         return None
-    return frozenset({value}), _describe(characteristic, [value])
+    return frozenset({value}), _describe(characteristic, [value]) if described else ""
 
 
 def _read_maximum(

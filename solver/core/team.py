@@ -343,7 +343,7 @@ def _read_type(
             domains.append(shared)
         else:
             selection = read_selection(
-                reader, (*path, characteristic.name), characteristic, exact=False
+                reader, (*path, characteristic.name), characteristic, exact=False, described=False
             )
             if selection is None:
                 complete = False
