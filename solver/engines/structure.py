@@ -531,10 +531,12 @@ def _partial_configurations(
 ) -> list[_Part]:
     """A block's partial configurations in key order: its combinations gathered by key, with
     their robots and the values they serve (unserved combinations left out)."""
+    own = key_of is _own_key
+    if own and len(block.positions) == 1:  # most blocks: one characteristic, no rule
+        return _single_parts(rules, block)
     # The classes of each position that a key's combinations take (each once, first seen
     # first); their members, sorted into domain order, are the values the key serves.
     held: dict[Key, list[dict[int, Members]]] = {}
-    own = key_of is _own_key
     weights = block.partial_weights if own else _weights(block, key_of)
     key: Key | None
     for combination, _ in block.combinations:
@@ -558,6 +560,25 @@ def _partial_configurations(
             served.append(tuple(sorted(itertools.chain(*classes.values()), key=order)))
         parts.append((key, weight, tuple(served)))
     return parts
+
+
+def _single_parts(rules: RuleSet, block: _Block) -> list[_Part]:
+    """:func:`_partial_configurations` of a block of one characteristic whose every value is
+    in one component at most: each class goes to its component."""
+    order = rules.characteristics[block.positions[0]].positions.__getitem__
+    members: dict[int, list[Members]] = {}
+    for (found,), _ in block.combinations:  # one class per combination, each class once
+        if found.membership:
+            members.setdefault(found.membership[0], []).append(found.members)
+    weights = block.partial_weights
+    return [
+        (
+            (component,),
+            weights[(component,)],
+            (tuple(sorted(itertools.chain(*members[component]), key=order)),),
+        )
+        for component in sorted(members)
+    ]
 
 
 def _joined(rules: RuleSet, blocks: Sequence[_Block], per_block: list[list[_Part]]) -> list[_Part]:
