@@ -3,8 +3,12 @@
 from __future__ import annotations
 
 import ast
+import importlib
 import subprocess
 import sys
+from pathlib import Path
+
+import pytest
 
 import solver
 from tests.conftest import ROOT
@@ -49,3 +53,23 @@ def test_importing_every_module_keeps_the_functions_the_package_exports() -> Non
             importlib.import_module(module.name)
     assert callable(solver.solve)
     assert callable(solver.assign)
+
+
+@pytest.mark.parametrize("package", ["solver.identify", "solver.identify.xacro"])
+def test_a_wing_loaded_lazily_exports_each_name_from_the_module_its_checker_imports(
+    package: str,
+) -> None:
+    module = importlib.import_module(package)
+    path = ROOT / Path(*package.split(".")) / "__init__.py"
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    guarded = next(node for node in tree.body if isinstance(node, ast.If))
+    imported = {
+        alias.name: node.module
+        for node in guarded.body
+        if isinstance(node, ast.ImportFrom)
+        for alias in node.names
+    }
+    assert imported == module._EXPORTS
+    assert set(imported) <= set(module.__all__)
+    for name, source in module._EXPORTS.items():
+        assert getattr(module, name) is getattr(sys.modules[source], name)

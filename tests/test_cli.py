@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import csv
+import functools
 import io
 import json
 import subprocess
@@ -158,22 +159,56 @@ def test_python_dash_m_solver_is_the_same_command_line() -> None:
     assert script.stdout == run_cli("reproduce").stdout
 
 
-def test_a_command_imports_its_own_module_and_no_other_command() -> None:
+# What a plain URDF's `identify` has no use for: UI configurations, layouts, the live graph,
+# the xacro sandbox and the children that read bags (start-up time, issue 29).
+NOT_FOR_A_URDF = (
+    "solver.core.assignment",
+    "solver.core.solution",
+    "solver.identify.fleet",
+    "solver.identify.limited",
+    "solver.identify.xacro.compiler",
+    "solver.layouts",
+    "solver.live",
+)
+
+
+@functools.cache
+def _commands_in_a_fresh_interpreter() -> tuple[str, list[str], str, list[str]]:
+    """`identify` of a URDF then `solve case3`, in one fresh interpreter: each one's status and
+    the project modules it loaded."""
     script = (
-        "import contextlib, io, sys\n"
+        "import contextlib, io, json, sys\n"
         "from solver.cli import main\n"
-        "with contextlib.redirect_stdout(io.StringIO()):\n"
-        "    status = main(['solve', 'case3'])\n"
-        "print(status, sorted(m for m in sys.modules if m.startswith('solver.cli.')))\n"
+        "loaded = []\n"
+        "for argv in (['identify', 'examples/diff_drive_lidar.urdf'], ['solve', 'case3']):\n"
+        "    before = set(sys.modules)\n"
+        "    with contextlib.redirect_stdout(io.StringIO()):\n"
+        "        status = main(argv)\n"
+        "    new = sorted(m for m in set(sys.modules) - before if m.startswith('solver'))\n"
+        "    loaded.append((str(status), new))\n"
+        "print(json.dumps(loaded))\n"
     )
     done = subprocess.run(
         [sys.executable, "-c", script], cwd=ROOT, capture_output=True, text=True, check=True
     )
-    assert done.stdout.split(" ", 1)[0] == "0"
-    loaded = done.stdout.split(" ", 1)[1]
+    (identify_status, identify_loaded), (solve_status, solve_loaded) = json.loads(done.stdout)
+    return identify_status, identify_loaded, solve_status, solve_loaded
+
+
+def test_a_command_imports_its_own_module_and_no_other_command() -> None:
+    _, _, status, loaded = _commands_in_a_fresh_interpreter()
+    assert status == "0"
     assert "solver.cli.solve" in loaded
     assert "solver.cli.watch" not in loaded
     assert "solver.cli.identify" not in loaded
+
+
+def test_identifying_a_urdf_loads_no_configurations_layouts_live_graph_nor_xacro_sandbox() -> None:
+    status, loaded, _, _ = _commands_in_a_fresh_interpreter()
+    assert status == "0"
+    assert "solver.identify.identification" in loaded
+    unneeded = [m for m in loaded if m.startswith(NOT_FOR_A_URDF)]
+    assert unneeded == []
 
 
 @pytest.mark.parametrize(

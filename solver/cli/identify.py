@@ -20,6 +20,7 @@ if TYPE_CHECKING:
 
     from solver.core.ruleset import RuleSet
     from solver.core.solution import Solution
+    from solver.core.team import Team
     from solver.identify.profile import Profile
 
 
@@ -142,7 +143,6 @@ def load_rules_and_profile(rules: str | None, profile: str | None) -> tuple[Rule
 
 
 def run(args: argparse.Namespace) -> int:
-    from solver.core.solution import solve
     from solver.identify.combinations import combinations, missing
     from solver.identify.identification import identify
     from solver.identify.render import identification_data, render_identification
@@ -171,7 +171,7 @@ def run(args: argparse.Namespace) -> int:
         from solver.errors import InputError
 
         raise InputError(result.warnings)
-    solution = solve(team) if team else None
+    solution = _solved(team)
     given = given_values(args.set, solution)
     found = combinations(result, solution, profile, given) if solution else ()
     lacking = missing(found, solution) if solution else ()
@@ -183,13 +183,22 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
+def _solved(team: Team | None) -> Solution | None:
+    """The team solved, with ``--team`` (solving is loaded for that case only)."""
+    if team is None:
+        return None
+    from solver.core.solution import solve
+
+    return solve(team)
+
+
 def given_values(pairs: list[str], solution: Solution | None) -> dict[str, str]:
     """``--set NAME=VALUE`` pairs, checked against the team's rules (they need ``--team``)."""
+    if not pairs:
+        return {}
     from solver.errors import InputError
     from solver.live.given import parse_fixed
 
-    if not pairs:
-        return {}
     if solution is None:
         raise InputError.at("--set", "values are given to a combination: --set needs --team")
     fixed = parse_fixed(pairs, solution.rules)

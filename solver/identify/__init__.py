@@ -35,22 +35,60 @@ For a live ROS master (``teleop-ui watch``): :func:`identify_urdf` takes URDF *t
 Heavy libraries (lxml, xacro, rosbags) are imported inside the functions that use them.
 """
 
+# Loaded lazily (PEP 562): a command imports the modules it uses, not the whole wing (reading
+# one URDF needs neither UI configurations nor a fleet's team).
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
+# Bound here, not lazily: the function shares its module's name, and importing the module
+# (``from solver.identify.combinations import ...``) would otherwise bind the name to the module.
 from solver.identify.combinations import Combination, combinations
-from solver.identify.fleet import Fleet, FleetEntry, identify_fleet, team_text
-from solver.identify.identification import (
-    Identification,
-    IdentificationCache,
-    TopicSource,
-    content_key,
-    identify,
-    identify_urdf,
-)
-from solver.identify.interfaces import Control, controls_from_topics, sensors_from_topics
-from solver.identify.profile import Profile, ProfileError, default_profile_path, load_profile
-from solver.identify.readers.topics import parse_topic_list, read_topic_list
-from solver.identify.render import identification_data, render_identification
-from solver.identify.sensors import Detection, Sensor
-from solver.ros.names import Topic
+
+if TYPE_CHECKING:
+    from solver.identify.fleet import Fleet, FleetEntry, identify_fleet, team_text
+    from solver.identify.identification import (
+        Identification,
+        IdentificationCache,
+        TopicSource,
+        content_key,
+        identify,
+        identify_urdf,
+    )
+    from solver.identify.interfaces import Control, controls_from_topics, sensors_from_topics
+    from solver.identify.profile import Profile, ProfileError, default_profile_path, load_profile
+    from solver.identify.readers.topics import parse_topic_list, read_topic_list
+    from solver.identify.render import identification_data, render_identification
+    from solver.identify.sensors import Detection, Sensor
+    from solver.ros.names import Topic
+
+_EXPORTS = {
+    "Control": "solver.identify.interfaces",
+    "Detection": "solver.identify.sensors",
+    "Fleet": "solver.identify.fleet",
+    "FleetEntry": "solver.identify.fleet",
+    "Identification": "solver.identify.identification",
+    "IdentificationCache": "solver.identify.identification",
+    "Profile": "solver.identify.profile",
+    "ProfileError": "solver.identify.profile",
+    "Sensor": "solver.identify.sensors",
+    "Topic": "solver.ros.names",
+    "TopicSource": "solver.identify.identification",
+    "content_key": "solver.identify.identification",
+    "controls_from_topics": "solver.identify.interfaces",
+    "default_profile_path": "solver.identify.profile",
+    "identification_data": "solver.identify.render",
+    "identify": "solver.identify.identification",
+    "identify_fleet": "solver.identify.fleet",
+    "identify_urdf": "solver.identify.identification",
+    "load_profile": "solver.identify.profile",
+    "parse_topic_list": "solver.identify.readers.topics",
+    "read_topic_list": "solver.identify.readers.topics",
+    "render_identification": "solver.identify.render",
+    "sensors_from_topics": "solver.identify.interfaces",
+    "team_text": "solver.identify.fleet",
+}
 
 __all__ = [
     "Combination",
@@ -80,3 +118,16 @@ __all__ = [
     "sensors_from_topics",
     "team_text",
 ]
+
+
+def __getattr__(name: str) -> Any:
+    module = _EXPORTS.get(name)
+    if module is None:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(importlib.import_module(module), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted({*globals(), *_EXPORTS})

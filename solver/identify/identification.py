@@ -44,16 +44,13 @@ from solver.identify.interfaces import (
 from solver.identify.joints import command_joints
 from solver.identify.motion import controls_from_description
 from solver.identify.profile import Profile, load_profile
-from solver.identify.readers.bags import read_bag_topics
 from solver.identify.readers.safexml import read_bytes
 from solver.identify.readers.srdf import parse_srdf
-from solver.identify.readers.topics import read_topic_list
 from solver.identify.readers.urdf import parse_urdf
 from solver.identify.roles import Role
 from solver.identify.sensors import Detection, Sensor, merge, presented_count, sensors_from_urdf
-from solver.identify.xacro.compiler import compile_xacro, is_xacro
-from solver.layouts.plan import JointStart
 from solver.limits import limit
+from solver.ros.joints import JointStart
 from solver.ros.names import Topic
 
 __all__ = [
@@ -63,6 +60,7 @@ __all__ = [
     "content_key",
     "identify",
     "identify_urdf",
+    "is_xacro",
 ]
 
 
@@ -185,6 +183,15 @@ def identify_urdf(
     )
 
 
+def is_xacro(path: str | Path) -> bool:
+    """A file to compile with xacro: its name ends in ``.xacro``.
+
+    The content is not looked at: most expanded URDFs still declare the xacro namespace
+    (xacro writes it), and a ``.urdf`` is read as URDF whatever it declares.
+    """
+    return str(path).endswith(".xacro")
+
+
 def identify(
     description: str | Path,
     *,
@@ -216,19 +223,21 @@ def identify(
                 "give its expanded .urdf",
                 code="xacro-untrusted",
             )
+        # The sandbox's parent (and the child process it starts) is loaded for this case only.
+        from solver.identify.xacro.compiler import compile_xacro
+
         compiled = compile_xacro(description, args=xacro_args, package_path=package_path)
         text: str | bytes = compiled.text
         notes = tuple(f"xacro: {warning}" for warning in compiled.warnings)
     else:
         text = read_bytes(description)
     srdf_text = None if srdf is None else read_bytes(srdf)
-    sources = []
-    read = 0  # topic lines of all the lists together count against one limit
-    for topics_file in topic_lists:
-        topics = read_topic_list(topics_file, before=read)
-        read += len(topics)
-        sources.append(TopicSource(Path(topics_file).name, topics))
-    sources += [TopicSource(f"bag {Path(b).name}", read_bag_topics(b)) for b in bags]
+    # The readers of topic lists and bags are loaded when there are some to read.
+    sources = _listed_topics(topic_lists) if topic_lists else []
+    if bags:
+        from solver.identify.readers.bags import read_bag_topics
+
+        sources += [TopicSource(f"bag {Path(b).name}", read_bag_topics(b)) for b in bags]
     return identify_urdf(
         text,
         file=file,
@@ -239,6 +248,18 @@ def identify(
         profile=profile,
         notes=notes,
     )
+
+
+def _listed_topics(topic_lists: Sequence[str | Path]) -> list[TopicSource]:
+    from solver.identify.readers.topics import read_topic_list
+
+    sources = []
+    read = 0  # topic lines of all the lists together count against one limit
+    for topics_file in topic_lists:
+        topics = read_topic_list(topics_file, before=read)
+        read += len(topics)
+        sources.append(TopicSource(Path(topics_file).name, topics))
+    return sources
 
 
 class IdentificationCache:

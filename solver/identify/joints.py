@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from solver.identify.body import Body
 from solver.identify.readers.urdf import Urdf
-from solver.layouts.plan import JointStart
+from solver.ros.joints import JointStart
 
 __all__ = ["command_joints"]
 

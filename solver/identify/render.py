@@ -21,15 +21,17 @@ Not here: computing any of it.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from solver.core.contracts import assignment_data
-from solver.core.solution import Solution
 from solver.errors import Fault
-from solver.identify.combinations import Combination
-from solver.identify.identification import Identification
 from solver.reporting.render import text_table
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
+
+if TYPE_CHECKING:
+    from solver.core.solution import Solution
+    from solver.identify.combinations import Combination
+    from solver.identify.identification import Identification
 
 __all__ = ["identification_data", "render_identification", "summary_data"]
 

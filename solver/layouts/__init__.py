@@ -26,10 +26,11 @@ from solver.layouts.foxglove import (
     layout_filename,
     validate_foxglove,
 )
-from solver.layouts.plan import JointStart, Robot
+from solver.layouts.plan import Robot
 from solver.layouts.presentation import PanelSpec, Presentation, load_presentation
 from solver.layouts.rviz import rviz_layout, validate_rviz
 from solver.layouts.writer import write_layouts
+from solver.ros.joints import JointStart
 
 __all__ = [
     "JointStart",

@@ -31,6 +31,7 @@ from solver.core.solution import Solution
 from solver.errors import InputError
 from solver.layouts.presentation import ROBOT, PanelSpec, Presentation
 from solver.layouts.tiling import tiles
+from solver.ros.joints import JointStart
 from solver.ros.names import (
     Topic,
     common_namespace,
@@ -42,7 +43,6 @@ from solver.untrusted import shown
 
 __all__ = [
     "COMMAND_PANELS",
-    "JointStart",
     "Panel",
     "Plan",
     "Robot",
@@ -56,14 +56,6 @@ __all__ = [
 # Panels that send to the robot: one per command topic.
 COMMAND_PANELS = ("Teleop", "Publish")
 POSE = "geometry_msgs/PoseStamped"
-
-
-@dataclass(frozen=True, slots=True)
-class JointStart:
-    """A joint a joint command names, and the position a sample command sends it to."""
-
-    name: str
-    position: float
 
 
 @dataclass(frozen=True)

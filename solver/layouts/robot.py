@@ -16,10 +16,11 @@ from dataclasses import dataclass
 from solver.core.assignment import Assignment
 from solver.core.solution import Solution
 from solver.errors import Fault
-from solver.layouts.plan import JointStart, Robot, panel_entries
+from solver.layouts.plan import Robot, panel_entries
 from solver.layouts.presentation import Presentation
 from solver.layouts.targets import target
 from solver.layouts.topics import match_topics
+from solver.ros.joints import JointStart
 from solver.ros.names import Topic
 
 __all__ = ["RobotLayout", "robot_layout"]

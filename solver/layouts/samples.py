@@ -20,7 +20,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from solver.layouts.plan import JointStart
+from solver.ros.joints import JointStart
 from solver.ros.names import normalise_type
 
 __all__ = ["TRAJECTORY_SECONDS", "sample_message"]

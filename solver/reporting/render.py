@@ -16,9 +16,8 @@ import math
 import re
 from collections.abc import Callable, Iterator, Sequence
 from json.encoder import encode_basestring as _quoted
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from solver.core.assignment import Assignment
 from solver.core.contracts import (
     assignment_data,
     component_data,
@@ -28,13 +27,16 @@ from solver.core.contracts import (
     solution_data,
     solution_warnings,
 )
-from solver.core.partition import Configuration
-from solver.core.reproduce import Comparison, published_note
-from solver.core.ruleset import Characteristic, Component, RuleSet
-from solver.core.solution import Solution
 from solver.engines import describe
 from solver.reporting import markdown
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
+
+if TYPE_CHECKING:
+    from solver.core.assignment import Assignment
+    from solver.core.partition import Configuration
+    from solver.core.reproduce import Comparison
+    from solver.core.ruleset import Characteristic, Component, RuleSet
+    from solver.core.solution import Solution
 
 __all__ = [
     "FORMATS",
@@ -458,6 +460,8 @@ def _footer(solution: Solution) -> list[str]:
         f"(every component: {sum(rules.bound_factors)})",
     ]
     lines += solution_warnings(solution)
+    from solver.core.reproduce import published_note  # a shipped team's figures from the paper
+
     note = published_note(solution)
     if note is not None:
         stated, verdict, _ = note

@@ -6,7 +6,7 @@ from solver.identify.body import detect_body
 from solver.identify.joints import command_joints
 from solver.identify.profile import load_profile
 from solver.identify.readers.urdf import parse_urdf
-from solver.layouts import JointStart
+from solver.ros.joints import JointStart
 from tests.conftest import ROOT
 from tests.identify.builders import RobotText
 

@@ -23,7 +23,6 @@ from typing import TYPE_CHECKING
 
 from solver.errors import Fault, InputError, Location
 from solver.identify.readers.safexml import line_of, parse_xml
-from solver.identify.xacro.compiler import uncompiled_xacro
 from solver.untrusted import shown
 
 if TYPE_CHECKING:
@@ -298,7 +297,7 @@ class _Builder:
             if p.tag == "plugin" or _legacy(p, "controller")
         )
         controlled = frozenset(self._controlled(root))
-        self.faults += uncompiled_xacro(root, self.file)  # read as URDF, never compiled: say so
+        self.faults += _uncompiled_xacro(root, self.file)  # read as URDF, never compiled: say so
         return Urdf(
             name or "robot",
             self.file,
@@ -624,6 +623,39 @@ def _legacy(element: etree._Element, kind: str) -> bool:
     return (
         isinstance(tag, str) and tag.startswith("{") and tag[1:].split("}")[0].endswith(f"#{kind}")
     )
+
+
+def _uncompiled_xacro(root: etree._Element, file: str) -> list[Fault]:
+    """A located warning for each outermost ``<xacro:...>`` element of a document read as URDF.
+
+    Such a file is never compiled (a ``.urdf``, a ``robot_description``): its xacro elements,
+    and whatever a macro body holds, are not part of the robot, and the user should know.
+    """
+    found: list[Fault] = []
+    stack = [root]
+    while stack:
+        element = stack.pop()
+        tag = element.tag
+        if not isinstance(tag, str):
+            continue  # comments and processing instructions
+        # Declared, the prefix maps to xacro's namespace; undeclared, safexml keeps the element
+        # under its prefixed name. xacro itself goes by the prefix, so does this.
+        namespace, _, local = tag[1:].partition("}") if tag.startswith("{") else ("", "", tag)
+        if tag.startswith("xacro:"):
+            local = tag.removeprefix("xacro:")
+        elif element.prefix != "xacro" and "xacro" not in namespace:
+            stack.extend(reversed(list(element)))
+            continue
+        found.append(
+            Fault(
+                Location(file, line_of(element), None, f"xacro:{local}"),
+                f"<xacro:{local}> ignored: this file is read as URDF and never "
+                "compiled (compiling xacro runs code from the file; a .xacro file "
+                "is compiled with --trust-xacro)",
+                "xacro-ignored",
+            )
+        )
+    return found
 
 
 def _plugin(element: etree._Element, reference: str | None) -> PluginTag:

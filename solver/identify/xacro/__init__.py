@@ -5,7 +5,7 @@ file (``--trust-xacro``), and then in a confined child process. Everything on ei
 that boundary lives here, and nothing else does:
 
 ===============  ============================================================================
-``compiler``     the parent: when a file is xacro, starting the child, limits, reading its answer
+``compiler``     the parent: starting the child, its limits, reading its answer
 ``packages``     ``$(find pkg)``: ROS packages found with no ROS install (also the child's roots)
 ``child``        the child: resource limits, the file fence, ``$(env)`` refused, the compilation
 ``expressions``  the child's guard on ``${...}`` and ``$(eval ...)``: no module reachable
@@ -15,14 +15,29 @@ that boundary lives here, and nothing else does:
 What ``--trust-xacro`` guarantees and what it does not is documented in docs/security.md.
 """
 
-from solver.identify.xacro.compiler import (
-    CompiledXacro,
-    XacroLimits,
-    compile_xacro,
-    is_xacro,
-    uncompiled_xacro,
-)
-from solver.identify.xacro.packages import PACKAGE_PATH_ENV, find_packages, package_path_from_env
+# Loaded lazily (PEP 562): reading a package path (``$(find pkg)``, ``--package-path``) needs
+# ``packages`` only, and a plain URDF never starts the compiler (nor its child process code).
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from solver.identify.xacro.compiler import CompiledXacro, XacroLimits, compile_xacro
+    from solver.identify.xacro.packages import (
+        PACKAGE_PATH_ENV,
+        find_packages,
+        package_path_from_env,
+    )
+
+_EXPORTS = {
+    "CompiledXacro": "solver.identify.xacro.compiler",
+    "PACKAGE_PATH_ENV": "solver.identify.xacro.packages",
+    "XacroLimits": "solver.identify.xacro.compiler",
+    "compile_xacro": "solver.identify.xacro.compiler",
+    "find_packages": "solver.identify.xacro.packages",
+    "package_path_from_env": "solver.identify.xacro.packages",
+}
 
 __all__ = [
     "PACKAGE_PATH_ENV",
@@ -30,7 +45,18 @@ __all__ = [
     "XacroLimits",
     "compile_xacro",
     "find_packages",
-    "is_xacro",
     "package_path_from_env",
-    "uncompiled_xacro",
 ]
+
+
+def __getattr__(name: str) -> Any:
+    module = _EXPORTS.get(name)
+    if module is None:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(importlib.import_module(module), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted({*globals(), *_EXPORTS})

@@ -26,18 +26,15 @@ import re
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import solver
-from solver.errors import Fault, InputError, Location
+from solver.errors import InputError
 from solver.identify.limited import run_limited
-from solver.identify.readers.safexml import MAX_XML_BYTES, line_of, parse_xml, read_bytes
+from solver.identify.readers.safexml import MAX_XML_BYTES, parse_xml, read_bytes
 from solver.identify.xacro.packages import PACKAGE_PATH_ENV, find_packages, own_package_root
 
-__all__ = ["CompiledXacro", "XacroLimits", "compile_xacro", "is_xacro", "uncompiled_xacro"]
-
-if TYPE_CHECKING:
-    from lxml import etree
+__all__ = ["CompiledXacro", "XacroLimits", "compile_xacro"]
 
 _MISSING = re.compile(r"Package not found: ([\w\-]+)")
 # The child's answer: the URDF text (at most MAX_XML_BYTES, JSON-escaped) and its warnings.
@@ -57,48 +54,6 @@ class XacroLimits:
 class CompiledXacro:
     text: str
     warnings: tuple[str, ...] = ()
-
-
-def is_xacro(path: str | Path) -> bool:
-    """A file to compile with xacro: its name ends in ``.xacro``.
-
-    The content is not looked at: most expanded URDFs still declare the xacro namespace
-    (xacro writes it), and a ``.urdf`` is read as URDF whatever it declares.
-    """
-    return str(path).endswith(".xacro")
-
-
-def uncompiled_xacro(root: etree._Element, file: str) -> list[Fault]:
-    """A located warning for each outermost ``<xacro:...>`` element of a document read as URDF.
-
-    Such a file is never compiled (a ``.urdf``, a ``robot_description``): its xacro elements,
-    and whatever a macro body holds, are not part of the robot, and the user should know.
-    """
-    found: list[Fault] = []
-    stack = [root]
-    while stack:
-        element = stack.pop()
-        tag = element.tag
-        if not isinstance(tag, str):
-            continue  # comments and processing instructions
-        # Declared, the prefix maps to xacro's namespace; undeclared, safexml keeps the element
-        # under its prefixed name. xacro itself goes by the prefix, so does this.
-        namespace, _, local = tag[1:].partition("}") if tag.startswith("{") else ("", "", tag)
-        if tag.startswith("xacro:"):
-            local = tag.removeprefix("xacro:")
-        elif element.prefix != "xacro" and "xacro" not in namespace:
-            stack.extend(reversed(list(element)))
-            continue
-        found.append(
-            Fault(
-                Location(file, line_of(element), None, f"xacro:{local}"),
-                f"<xacro:{local}> ignored: this file is read as URDF and never "
-                "compiled (compiling xacro runs code from the file; a .xacro file "
-                "is compiled with --trust-xacro)",
-                "xacro-ignored",
-            )
-        )
-    return found
 
 
 def compile_xacro(
