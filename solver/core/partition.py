@@ -22,11 +22,13 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
-from typing import TypeVar
+from typing import TYPE_CHECKING, TypeVar
 
 from solver.core.constraints import Value
-from solver.core.cover import Options
 from solver.core.ruleset import Component, RuleSet
+
+if TYPE_CHECKING:
+    from solver.core.cover import Options
 
 __all__ = [
     "Configuration",

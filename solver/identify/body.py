@@ -34,12 +34,15 @@ from __future__ import annotations
 from collections import deque
 from collections.abc import Iterable
 from dataclasses import dataclass, field, replace
+from typing import TYPE_CHECKING
 
 from solver.identify.profile import PartMatcher, Profile
-from solver.identify.readers.srdf import Srdf
 from solver.identify.readers.urdf import Joint, Urdf
 from solver.identify.roles import Role, RoleReader, main_axis
 from solver.untrusted import shown
+
+if TYPE_CHECKING:
+    from solver.identify.readers.srdf import Srdf
 
 __all__ = ["Body", "Limb", "detect_body"]
 

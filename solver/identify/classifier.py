@@ -14,14 +14,17 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from solver.core.ruleset import RuleSet
 from solver.identify.body import Body
 from solver.identify.plans import arm_plans
 from solver.identify.profile import BOOLEAN_FEATURES, Profile
-from solver.identify.readers.srdf import Srdf
 from solver.identify.readers.urdf import Urdf
 from solver.untrusted import shown
+
+if TYPE_CHECKING:
+    from solver.identify.readers.srdf import Srdf
 
 __all__ = ["Reading", "classify", "kinematic_type_for"]
 

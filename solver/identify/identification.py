@@ -29,6 +29,7 @@ from collections import OrderedDict
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from solver.core.rules import default_rules_path, load_rules
 from solver.core.ruleset import RuleSet
@@ -45,13 +46,15 @@ from solver.identify.joints import command_joints
 from solver.identify.motion import controls_from_description
 from solver.identify.profile import Profile, load_profile
 from solver.identify.readers.safexml import read_bytes
-from solver.identify.readers.srdf import parse_srdf
-from solver.identify.readers.urdf import parse_urdf
+from solver.identify.readers.urdf import Urdf, parse_urdf
 from solver.identify.roles import Role
 from solver.identify.sensors import Detection, Sensor, merge, presented_count, sensors_from_urdf
 from solver.limits import limit
 from solver.ros.joints import JointStart
 from solver.ros.names import Topic
+
+if TYPE_CHECKING:
+    from solver.identify.readers.srdf import Srdf
 
 __all__ = [
     "Identification",
@@ -146,7 +149,7 @@ def identify_urdf(
     rules = rules if rules is not None else load_rules(default_rules_path())
     profile = profile if profile is not None else load_profile()
     urdf = parse_urdf(urdf_text, file, strict=False)
-    srdf = None if srdf_text is None else parse_srdf(srdf_text, srdf_file, urdf, strict=False)
+    srdf = None if srdf_text is None else _srdf(srdf_text, srdf_file, urdf)
     warnings = urdf.warnings + (srdf.warnings if srdf is not None else ())
     body = detect_body(urdf, profile, srdf)
     reading = classify(body, profile, rules, root=urdf.root, srdf=srdf, urdf=urdf)
@@ -181,6 +184,12 @@ def identify_urdf(
         decision=reading.path,
         joints=command_joints(urdf, body),
     )
+
+
+def _srdf(text: str | bytes, file: str, urdf: Urdf) -> Srdf:
+    from solver.identify.readers.srdf import parse_srdf  # loaded when there is an SRDF
+
+    return parse_srdf(text, file, urdf, strict=False)
 
 
 def is_xacro(path: str | Path) -> bool:

@@ -31,13 +31,16 @@ and odometry; thrusters and a Doppler velocity log). Such a Waypoint is a guess 
 from __future__ import annotations
 
 from collections.abc import Collection
+from typing import TYPE_CHECKING
 
 from solver.identify.body import Body
 from solver.identify.interfaces import Control
 from solver.identify.plans import arm_plans, hand_effectors
 from solver.identify.profile import Profile
-from solver.identify.readers.srdf import Srdf
 from solver.identify.readers.urdf import Urdf
+
+if TYPE_CHECKING:
+    from solver.identify.readers.srdf import Srdf
 
 __all__ = ["controls_from_description"]
 

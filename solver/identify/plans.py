@@ -12,9 +12,13 @@ Not here: reading the SRDF (:mod:`solver.identify.readers.srdf`).
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from solver.identify.body import Body
-from solver.identify.readers.srdf import EndEffector, Group, Srdf
 from solver.identify.readers.urdf import Urdf
+
+if TYPE_CHECKING:
+    from solver.identify.readers.srdf import EndEffector, Group, Srdf
 
 __all__ = ["MOST_GROUPS", "arm_plans", "hand_effectors"]
 
