@@ -2,11 +2,11 @@
 
 Four families of generated rule sets, each at three sizes that double; what ``check`` must
 report is known from how each was built, and asserted. The claim is the growth per doubling
-(the ratio of neighbouring sizes in one run; docs/benchmarks.md has them): at most 2.5 on
-types, values and characteristics, about 4 on chained constraints (each question solves the
-whole chain). It was exponential in chained constraints (x2.4 per added characteristic, 29.7 s
-at 18), quadratic in characteristics (17.8 s at 10,000) and in kinematic types (44.6 s at
-6,144), while python-constraint answered the questions.
+(the ratio of neighbouring sizes in one run; docs/benchmarks.md has them): at most 2.5 on all
+four. It was exponential in chained constraints (x2.4 per added characteristic, 29.7 s at 18),
+quadratic in characteristics (17.8 s at 10,000) and in kinematic types (44.6 s at 6,144),
+while python-constraint answered the questions; then about 4 on chained constraints while each
+question was a solve over the whole chain.
 
 * **types**: T kinematic types, one ``forbid {type, sensor}`` each: ``dead-for-type`` per type.
 * **values**: V sensor types for 10 kinematic types, 5 forbidden per type, one forbidden

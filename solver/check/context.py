@@ -72,7 +72,13 @@ def _raw(document: Document | None, path: YPath) -> Any:
         else:
             if not isinstance(value, dict):
                 return None
-            value = next((v for k, v in value.items() if str(k) == part), None)
+            # The loader keeps one key per name (1 and "1" are duplicates), so a key that is
+            # the name itself is the one; only a key of another type (1 for "1") needs the walk
+            # (which, for each of 1,000 characteristics, walked them all).
+            if part in value:
+                value = value[part]
+            else:
+                value = next((v for k, v in value.items() if str(k) == part), None)
     return value
 
 

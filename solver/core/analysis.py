@@ -26,13 +26,14 @@ Not here: deciding what is a finding (the check modules) or enumerating robots f
 
 from __future__ import annotations
 
-from collections.abc import Callable, Collection, Iterable, Sequence
+from bisect import bisect_left
+from collections.abc import Callable, Collection, Iterable, Iterator, Sequence
 from functools import cached_property
 
 from solver.core.constraints import RuleConstraint, Value
 from solver.core.model import Robot
-from solver.core.oracle import Budget, Oracle, Sparse
-from solver.core.regions import Box, Domains, regions
+from solver.core.oracle import Budget, Oracle
+from solver.core.regions import Domains, Sparse, narrowed_positions, sparse_regions
 from solver.core.ruleset import RuleSet
 
 __all__ = ["Analysis", "Classes", "deletion"]
@@ -50,13 +51,14 @@ class Analysis:
 
     def __init__(self, rules: RuleSet) -> None:
         self.rules = rules
-        self.boxes: tuple[tuple[Box, ...], ...] = tuple(
-            regions(rules, rule) for rule in rules.constraints
-        )
+        # Each constraint's boxes (:mod:`solver.core.regions`) as the (position, set) pairs of
+        # the characteristics they restrict: a box about two of 1,000 characteristics is two.
+        self._sparse = tuple(sparse_regions(rules, rule) for rule in rules.constraints)
         # The kinematic types each constraint can exclude robots of (None: any); most
         # constraints are about a few types, so this cheap pre-filter spares most box tests.
         key = rules.key_position
-        self._types = tuple(_types(boxes, key) for boxes in self.boxes)
+        self._key_sets = tuple(tuple(dict(box).get(key) for box in boxes) for boxes in self._sparse)
+        self._types = tuple(_types(sets) for sets in self._key_sets)
         # The same, inverted: the constraints about each type, and those about any type, so
         # that a question about one type looks at its few constraints, not at all of them.
         self._untyped = frozenset(i for i, types in enumerate(self._types) if types is None)
@@ -65,12 +67,6 @@ class Analysis:
         # For each constraint: per characteristic position, the value sets its conditions test.
         self._tested: tuple[dict[int, tuple[frozenset[Value], ...]], ...] = tuple(
             _tested_sets(rule, positions) for rule in rules.constraints
-        )
-        # The boxes as (position, set) pairs of the characteristics they restrict: a box about
-        # two of 1,000 characteristics is tested at two.
-        self._sparse = tuple(
-            tuple(tuple((p, s) for p, s in enumerate(box) if s is not None) for box in boxes)
-            for boxes in self.boxes
         )
         # The constraints about each characteristic, and those that exclude any robot at all.
         self._about = _about(self._sparse, len(rules.characteristics))
@@ -101,41 +97,36 @@ class Analysis:
     def narrowed(self, domains: Domains, position: int, values: Iterable[Value]) -> Domains:
         """``domains`` with characteristic ``position`` narrowed to ``values``."""
         allowed = frozenset(values)
-        return tuple(
-            tuple(v for v in domain if v in allowed) if i == position else domain
-            for i, domain in enumerate(domains)
-        )
+        found = list(domains)
+        found[position] = tuple(v for v in domains[position] if v in allowed)
+        return tuple(found)
 
     # -- the small questions -------------------------------------------------------------------
 
     def relevant(self, domains: Domains, among: Iterable[int] | None = None) -> tuple[int, ...]:
         """The constraints (of ``among``, default all) that exclude some robot over ``domains``."""
-        sets = self._sets(domains)
-        types = domains[self.rules.key_position]
-        if sets[self.rules.key_position] is None:  # every type: no pre-filter
-            indices: Iterable[int] = range(len(self.boxes)) if among is None else among
+        sets = self._narrowed(domains)
+        key = self.rules.key_position
+        if key in sets:
+            # A few types: only the constraints about them, or about any type, can.
+            pool = self._untyped.union(*(self._by_type.get(t, ()) for t in sets[key]))
+            chosen = frozenset(i for i in pool if _touches(self._sparse[i], sets))
         else:
-            candidates = self._untyped.union(*(self._by_type.get(t, ()) for t in types))
-            indices = sorted(candidates) if among is None else [i for i in among if i in candidates]
-        # Only the constraints about a narrowed characteristic need a look at their boxes; any
-        # other one excludes some robot here exactly when it excludes any at all.
-        narrowed: set[int] = set()
-        for p, found in enumerate(sets):
-            if found is not None:
-                narrowed.update(self._about[p])
-        return tuple(
-            i
-            for i in indices
-            if (_touches(self._sparse[i], sets) if i in narrowed else i in self._excluding)
-        )
+            # Only the constraints about a narrowed characteristic need a look at their boxes;
+            # any other one excludes some robot here exactly when it excludes any at all.
+            about = frozenset().union(*(self._about[p] for p in sets))
+            chosen = (self._excluding - about).union(
+                i for i in about if _touches(self._sparse[i], sets)
+            )
+        if among is None:
+            return tuple(sorted(chosen))
+        return tuple(i for i in among if i in chosen)
 
-    def _sets(self, domains: Domains) -> list[frozenset[Value] | None]:
-        """Each domain as a set, or ``None`` for a whole domain (no set of 100,000 counts is
-        built for a question that leaves them all)."""
-        return [
-            None if len(domain) == len(c.values) else frozenset(domain)
-            for domain, c in zip(domains, self.rules.characteristics, strict=True)
-        ]
+    def _narrowed(self, domains: Domains) -> dict[int, frozenset[Value]]:
+        """The domains that are not whole, as sets by position (no set of 100,000 counts is
+        built for a question that leaves them all). Whole domains are mostly the
+        characteristic's own tuple, passed over quickly."""
+        return {p: frozenset(domains[p]) for p in narrowed_positions(domains, self.full)}
 
     def classes(self, domains: Domains, constraints: Sequence[int]) -> Classes:
         """Each domain split into values that ``constraints`` cannot tell apart."""
@@ -167,7 +158,7 @@ class Analysis:
         if len(domains[key]) != 1:
             if () not in self._oracles:
                 self._oracles[()] = Oracle(
-                    self.rules, self._sparse, range(len(self.boxes)), None, self._budget
+                    self.rules, self._sparse, range(len(self._sparse)), None, self._budget
                 )
             return self._oracles[()]
         kinematic_type = domains[key][0]
@@ -176,12 +167,11 @@ class Analysis:
         return self._type_oracles[kinematic_type]
 
     def _type_oracle(self, kinematic_type: Value) -> Oracle:
-        key = self.rules.key_position
         included = sorted(self._untyped.union(self._by_type.get(kinematic_type, ())))
         # Types that meet the same boxes' key sets are the same question.
         signature = (
             tuple(included),
-            tuple(_holds(box[key], kinematic_type) for i in included for box in self.boxes[i]),
+            tuple(_holds(found, kinematic_type) for i in included for found in self._key_sets[i]),
         )
         if signature not in self._oracles:
             self._oracles[signature] = Oracle(
@@ -243,7 +233,10 @@ class Analysis:
         constraints have a solution.
         """
         oracle = self._oracle(domains)
-        return deletion(self.relevant(domains, among), lambda subset: oracle.core(domains, subset))
+        relevant = self.relevant(domains, among)
+        if among is not None:
+            relevant = tuple(sorted(relevant))
+        return deletion(relevant, lambda subset: oracle.core(domains, subset))
 
     def exclusions(self, index: int, domains: Domains | None = None) -> tuple[Domains, ...]:
         """The non-empty boxes of robots over ``domains`` (default all) that constraint excludes."""
@@ -272,7 +265,7 @@ class Analysis:
         """
         boxes = self.exclusions(index)
 
-        def entails(subset: Sequence[int]) -> frozenset[int] | None:
+        def entails(subset: Collection[int]) -> frozenset[int] | None:
             """None when the constraints ``subset`` leave a robot ``index`` excludes, else a
             part of them that already leaves none in any of its boxes."""
             found: set[int] = set()
@@ -321,7 +314,7 @@ class Analysis:
     @cached_property
     def entailments(self) -> tuple[tuple[int, ...] | None, ...]:
         """:meth:`entailing` for every constraint, in declared order."""
-        return tuple(self.entailing(index) for index in range(len(self.boxes)))
+        return tuple(self.entailing(index) for index in range(len(self._sparse)))
 
     @cached_property
     def void_conflict(self) -> tuple[int, ...]:
@@ -335,10 +328,11 @@ class Analysis:
 
 
 def deletion(
-    constraints: Sequence[int], core: Callable[[Sequence[int]], Collection[int] | None]
+    constraints: Sequence[int], core: Callable[[Collection[int]], Collection[int] | None]
 ) -> tuple[int, ...]:
-    """The minimal subset of ``constraints`` that deletion in declared order keeps: drop each
-    constraint in turn, keep it dropped while the rest still conflicts.
+    """The minimal subset of ``constraints`` (indices in increasing, declared, order) that
+    deletion in declared order keeps: drop each constraint in turn, keep it dropped while the
+    rest still conflicts.
 
     ``core(subset)`` is ``None`` when ``subset`` does not conflict, else some part of it that
     conflicts already (conflicting is monotone: a superset of a conflict conflicts). Then a
@@ -346,36 +340,70 @@ def deletion(
     So the questions follow the size of the conflicts, not of ``constraints`` (a dead value
     among 1,000 chained constraints is a handful of questions), and the result is deletion's
     whichever cores the solver finds. ``ValueError`` when ``constraints`` do not conflict.
+    Each subset is a view (:class:`_Rest`), so a question asked locally does not cost the
+    length of ``constraints``.
     """
-    known = core(constraints)
+    known = core(_Rest(constraints, [], -1))
     if known is None:
         raise ValueError("the constraints have a solution: nothing conflicts")
     kept: list[int] = []  # decided: kept; the ones after the current one are all still in
-    for position, index in enumerate(constraints):
-        if index not in known:
-            continue  # dropped: the rest still holds the known core
-        found = core([*kept, *constraints[position + 1 :]])
+    position = -1
+    while True:
+        # The next constraint of the known core: the ones before it are dropped, since the
+        # rest still holds that core.
+        later = [at for i in known if (at := _after(constraints, position, i)) >= 0]
+        if not later:
+            return tuple(kept)
+        position = min(later)
+        found = core(_Rest(constraints, kept, position))
         if found is None:
-            kept.append(index)
+            kept.append(constraints[position])
         else:
             known = found
-    return tuple(kept)
+
+
+class _Rest(Collection[int]):
+    """The constraints ``kept`` and those after ``position`` in ``constraints`` (increasing
+    indices, so a constraint is found by bisection: no view costs their number)."""
+
+    def __init__(self, constraints: Sequence[int], kept: list[int], position: int) -> None:
+        self.constraints = constraints
+        self.kept = kept
+        self.position = position
+
+    def __contains__(self, index: object) -> bool:
+        if index in self.kept:
+            return True
+        return isinstance(index, int) and _after(self.constraints, self.position, index) >= 0
+
+    def __iter__(self) -> Iterator[int]:
+        yield from self.kept
+        yield from self.constraints[self.position + 1 :]
+
+    def __len__(self) -> int:
+        return len(self.kept) + len(self.constraints) - self.position - 1
+
+
+def _after(constraints: Sequence[int], position: int, index: int) -> int:
+    """Where ``index`` stands in ``constraints`` (increasing) if after ``position``, else -1."""
+    at = bisect_left(constraints, index, position + 1)
+    return at if at < len(constraints) and constraints[at] == index else -1
 
 
 def _touches(
-    boxes: Sequence[Sequence[tuple[int, frozenset[Value]]]],
-    sets: Sequence[frozenset[Value] | None],
+    boxes: Sequence[Sequence[tuple[int, frozenset[Value]]]], sets: dict[int, frozenset[Value]]
 ) -> bool:
-    """Whether some robot over the domains ``sets`` (``None``: a whole domain) lies in one of
-    ``boxes``, each given as the (position, set) pairs it restricts."""
-    return any(all(_meets(allowed, sets[p]) for p, allowed in box) for box in boxes)
+    """Whether some robot over the domains ``sets`` (by position; any other domain is whole)
+    lies in one of ``boxes``, each given as the (position, set) pairs it restricts."""
+    return any(all(_meets(allowed, sets.get(p)) for p, allowed in box) for box in boxes)
 
 
-def _types(boxes: Sequence[Box], key: int) -> frozenset[Value] | None:
-    """The kinematic types a constraint's boxes can hold (None: any)."""
-    if any(box[key] is None for box in boxes):
+def _types(key_sets: Sequence[frozenset[Value] | None]) -> frozenset[Value] | None:
+    """The kinematic types a constraint's boxes can hold, from each box's key set (None:
+    any)."""
+    if any(found is None for found in key_sets):
         return None
-    return frozenset().union(*(box[key] or () for box in boxes))
+    return frozenset().union(*(found or () for found in key_sets))
 
 
 def _inverted(types: Sequence[frozenset[Value] | None]) -> dict[Value, frozenset[int]]:

@@ -24,6 +24,13 @@ solver (MiniSat 2.2 through PySAT) under assumptions:
   exclude robots of that value are clauses, and the key is no variable at all: asking about one
   type of 20,000 costs what that type's constraints cost.
 
+* **Near the question first.** A question that narrows a few characteristics of many (is this
+  value dead? do these constraints conflict there?) is first asked of a small instance of its
+  own: the characteristics around the narrowed ones, with one valid robot over the whole
+  domains (the witness) standing in for everything beyond (:meth:`Oracle._local`). Along a
+  chain of 1,000 characteristics a question costs what a few links cost, not the chain; a
+  question that needs more than half of the characteristics goes to the whole instance.
+
 Every answer depends only on whether a question has a solution, never on which model the
 solver finds, so output stays the same from run to run. A search is bounded: the conflicts of
 all questions about one rule set count against the ``conflicts`` limit
@@ -34,12 +41,12 @@ Not here: which questions are asked and how answers are explained (:mod:`solver.
 
 from __future__ import annotations
 
-from collections.abc import Collection, Iterable, Sequence
+from collections.abc import Callable, Collection, Iterable, Sequence
 from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from solver.core.constraints import Value
-from solver.core.regions import Domains
+from solver.core.regions import Domains, Sparse, narrowed_positions
 from solver.core.ruleset import RuleSet
 from solver.errors import Fault, Location, TooLargeError
 from solver.limits import limit
@@ -47,10 +54,7 @@ from solver.limits import limit
 if TYPE_CHECKING:
     from pysat.solvers import Solver
 
-__all__ = ["Budget", "Oracle", "Sparse"]
-
-# A box as the (position, value set) pairs of the characteristics it restricts.
-Sparse = tuple[tuple[int, frozenset[Value]], ...]
+__all__ = ["Budget", "Oracle"]
 
 
 class Budget:
@@ -173,9 +177,17 @@ class Oracle:
             self.solver.add_clause(variables)
         # Prefer marking classes: a model then witnesses as many classes as it can.
         self.solver.set_phases([v for variables in self.x.values() for v in variables])
-        inside = {
-            (p, found): self._inside(p, found) for p, by_set in sets.items() for found in by_set
+        # The classes of each position inside each set a box tests there.
+        self._classes_in: dict[tuple[int, frozenset[Value]], tuple[int, ...]] = {
+            (p, found): tuple(
+                k
+                for k, representative in enumerate(self.positions[p].representatives)
+                if representative in found
+            )
+            for p, by_set in sets.items()
+            for found in by_set
         }
+        inside = {key: self._inside(*key) for key in self._classes_in}
         self.selector: dict[int, int] = {}
         self.every = self._new()  # assumed: every included constraint holds
         for index in included:
@@ -187,13 +199,29 @@ class Oracle:
             )
         self._switches: dict[tuple[int, frozenset[int]], int] = {}
         self._wholes = [(p, rules.characteristics[p].values) for p in self.positions]
+        # For local answers: each constraint's boxes, and the constraints at each position.
+        self._boxes_of: dict[int, list[list[tuple[int, frozenset[Value]]]]] = {}
+        self._at: dict[int, list[int]] = {}
+        for index, parts in kept:
+            self._boxes_of.setdefault(index, []).append(parts)
+            for p, _ in parts:
+                at = self._at.setdefault(p, [])
+                if not at or at[-1] != index:
+                    at.append(index)
+        self._witness: dict[int, int] | None = None
+        self._witness_asked = False
+        self._all_wholes = tuple(c.values for c in rules.characteristics)
+        self._no_empty_whole = all(self._all_wholes)
+        # The most characteristics a question's neighbourhood may hold (else: every one).
+        self._limit = len(self.positions) // 2
+        self._last_changed: tuple[Domains | None, dict[int, set[int]] | None] = (None, {})
+        self._whole_live: tuple[dict[int, set[int]] | None] | None = None
 
     def _inside(self, p: int, found: frozenset[Value]) -> int:
         """A variable forced true by every class of ``p`` inside ``found``."""
         y = self._new()
-        for k, representative in enumerate(self.positions[p].representatives):
-            if representative in found:
-                self.solver.add_clause([-self.x[p][k], y])
+        for k in self._classes_in[(p, found)]:
+            self.solver.add_clause([-self.x[p][k], y])
         return y
 
     def _new(self) -> int:
@@ -207,13 +235,23 @@ class Oracle:
     ) -> bool:
         """Whether some robot over ``domains`` satisfies the constraints ``among`` (default:
         every included one but those ``without``; the others exclude nothing here)."""
+        if among is None:
+            local = self._local(domains, lambda index: index not in without)
+        else:
+            among = chosen = set(among)
+            local = self._local(domains, chosen.__contains__)
+        if local is not None:
+            return local[0]
         return self._solve(domains, among, without)
 
-    def core(self, domains: Domains, among: Iterable[int]) -> frozenset[int] | None:
+    def core(self, domains: Domains, among: Collection[int]) -> frozenset[int] | None:
         """``None`` when some robot over ``domains`` satisfies the constraints ``among``; else
         a subset of them that already leaves none (the solver's core: which subset depends on
         how the solver found it, so use it only where any such subset gives the same result,
         as :func:`solver.core.analysis.deletion` does)."""
+        local = self._local(domains, among.__contains__)
+        if local is not None:
+            return None if local[0] else local[1]
         chosen = [i for i in among if i in self.selector]
         if self._solve(domains, chosen):
             return None
@@ -250,23 +288,111 @@ class Oracle:
         elif self.selector:  # a variable no clause mentions is unknown to the solver
             assumptions.append(self.every)
         assumptions += extra
-        solver = self.solver
-        before = solver.accum_stats().get("conflicts", 0)
-        solver.conf_budget(max(self.budget.remaining, 1))
-        found: bool | None = solver.solve_limited(assumptions=assumptions)
-        self.budget.spend(solver.accum_stats().get("conflicts", 0) - before)
-        if found is None:
-            raise self.budget.exhausted()
-        return found
+        return _run(self.solver, assumptions, self.budget)
+
+    # -- answers from a question's neighbourhood --------------------------------------------------
+
+    def _local(
+        self, domains: Domains, member: Callable[[int], bool]
+    ) -> tuple[bool, frozenset[int]] | None:
+        """Whether some robot over ``domains`` satisfies the constraints ``member`` accepts,
+        told from the characteristics near those ``domains`` narrow, with a core when none
+        does; ``None`` when the neighbourhood grows past half the oracle's characteristics.
+
+        One valid robot over the whole domains (the witness) satisfies every constraint. The
+        neighbourhood starts at the narrowed characteristics and grows by the constraints at
+        its edge, layer by layer; the characteristics those constraints reach beyond it are
+        its boundary. A robot for the neighbourhood that takes the witness's values on the
+        boundary is, with the witness's values everywhere else, a valid robot: the answer is
+        yes. No robot for the neighbourhood's constraints alone, the boundary left free: no
+        robot at all, and the core is among them. Neither: grow and ask again (each time the
+        neighbourhood has doubled, so a chain of 1,000 characteristics costs what a few
+        links cost, and a question that needs everything costs a few times one question).
+        """
+        allowed = self._changed(domains)
+        if allowed is None or len(allowed) > self._limit:
+            return None
+        witness = self._whole_witness()
+        if witness is None:
+            return None
+        if not allowed:
+            return True, frozenset()  # the witness itself
+        return self._near(allowed, member, witness)
+
+    def _near(
+        self,
+        allowed: dict[int, set[int]],
+        member: Callable[[int], bool],
+        witness: dict[int, int],
+        seen: list[tuple[int, int]] | None = None,
+    ) -> tuple[bool, frozenset[int]] | None:
+        """:meth:`_local` for the classes ``allowed`` at the positions they name (the others
+        whole); after a yes, the (position, class) pairs its robots show are added to
+        ``seen``."""
+        local = _Local(self, allowed)
+        frontier = list(allowed)
+        asked = 0
+        while True:
+            for p in frontier:
+                for index in self._at.get(p, ()):
+                    if index not in local.selectors and member(index):
+                        local.add(index)
+            boundary = local.fresh()
+            if len(local.x) > self._limit:
+                return None
+            if not boundary or len(local.x) >= 2 * asked:
+                answer = local.ask(boundary, witness)
+                if answer is not None:
+                    if answer[0] and seen is not None:
+                        seen += local.marked(boundary)
+                    return answer
+                asked = len(local.x)
+            frontier = boundary
+
+    def _whole_witness(self) -> dict[int, int] | None:
+        """One class per position of a valid robot over the whole domains; ``None`` when
+        there is none."""
+        if not self._witness_asked:
+            self._witness_asked = True
+            if _run(self.solver, [self.every] if self.selector else [], self.budget):
+                true = {literal for literal in self.solver.get_model() or () if literal > 0}
+                self._witness = {
+                    p: next(k for k, v in enumerate(xs) if v in true) for p, xs in self.x.items()
+                }
+        return self._witness
+
+    def _changed(self, domains: Domains) -> dict[int, set[int]] | None:
+        """The allowed classes of each position whose domain is not whole; ``None`` when a
+        domain is empty. The last answer is kept: deleting towards a minimal conflict asks
+        several questions over one domains."""
+        if self._last_changed[0] is not domains:
+            narrowed = narrowed_positions(domains, self._all_wholes)
+            changed = None
+            if self._no_empty_whole and all(domains[p] for p in narrowed):
+                changed = {p: self._allowed(p, domains[p]) for p in narrowed if p in self.positions}
+            self._last_changed = domains, changed
+        return self._last_changed[1]
 
     def live(self, domains: Domains) -> dict[int, set[int]] | None:
         """Per position, the allowed classes some valid robot over ``domains`` has; ``None``
         when there is no valid robot. Positions with no variable (no box reads them) are
         missing: every value of their domain is live when any robot is.
 
-        Each question asks for a robot with any class not yet seen, at any position: a model
-        shows every class it marks, and the first "no" says that all the rest are dead.
+        The first model shows every class it marks. Then each class not yet seen is asked
+        about alone, from its neighbourhood (:meth:`_local`), while that stays small; past
+        that, each question asks for a robot with any class not yet seen, at any position,
+        and the first "no" says that all the rest are dead.
+
+        Over the whole domains the answer is the same for every kinematic type the oracle
+        answers for: it is found once.
         """
+        if self._changed(domains) == {}:
+            if self._whole_live is None:
+                self._whole_live = (self._live(domains),)
+            return self._whole_live[0]
+        return self._live(domains)
+
+    def _live(self, domains: Domains) -> dict[int, set[int]] | None:
         unseen = {
             self.x[p][k]: (p, k) for p in self.positions for k in self._allowed(p, domains[p])
         }
@@ -287,12 +413,42 @@ class Oracle:
                 if first:
                     return None
                 break
-            first = False
             model = self.solver.get_model() or []
             for variable in [v for v in unseen if model[v - 1] > 0]:
                 p, k = unseen.pop(variable)
                 live[p].add(k)
+            if first:
+                first = False
+                self._live_near(domains, unseen, live)
         return live
+
+    def _live_near(
+        self, domains: Domains, unseen: dict[int, tuple[int, int]], live: dict[int, set[int]]
+    ) -> None:
+        """Settles the classes ``unseen`` one by one from their neighbourhoods, adding the
+        live ones to ``live``, until one's neighbourhood is too large."""
+        allowed = self._changed(domains) or {}
+        if len(allowed) >= self._limit:
+            return
+        witness = self._whole_witness()
+        if witness is None:
+            return
+        seen: list[tuple[int, int]] = []
+        if all(witness[p] in classes for p, classes in allowed.items()):
+            seen += witness.items()  # a robot over ``domains``
+        for variable, (p, k) in list(unseen.items()):
+            for q, c in seen:
+                if unseen.pop(self.x[q][c], None):
+                    live[q].add(c)
+            seen.clear()
+            if variable not in unseen:
+                continue
+            answer = self._near({**allowed, p: {k}}, self.selector.__contains__, witness, seen)
+            if answer is None:
+                return
+            del unseen[variable]
+            if answer[0]:
+                live[p].add(k)
 
     # -- domains as assumptions -----------------------------------------------------------------
 
@@ -335,3 +491,109 @@ class Oracle:
             return frozenset(v for v in domain if at.of(v) in classes)
         found = frozenset(v for k in classes for v in at.members[k])
         return found if whole else found.intersection(domain)
+
+
+def _run(solver: Solver, assumptions: list[int], budget: Budget) -> bool:
+    """One solve under ``assumptions``, its conflicts spent from ``budget``."""
+    before = solver.accum_stats().get("conflicts", 0)
+    solver.conf_budget(max(budget.remaining, 1))
+    found: bool | None = solver.solve_limited(assumptions=assumptions)
+    budget.spend(solver.accum_stats().get("conflicts", 0) - before)
+    if found is None:
+        raise budget.exhausted()
+    return found
+
+
+class _Local:
+    """A question's neighbourhood as a SAT instance of its own: the allowed classes of the
+    positions its constraints reach (narrowed ones as the question says, the others whole),
+    and each constraint's boxes as clauses behind a selector, as in :class:`Oracle`. Classes a
+    question leaves out get no variable."""
+
+    def __init__(self, oracle: Oracle, allowed: dict[int, set[int]]) -> None:
+        from pysat.solvers import Solver
+
+        self.oracle = oracle
+        self.allowed = allowed
+        self.solver: Solver = Solver(name="minisat22")
+        self._count = 0
+        self.x: dict[int, dict[int, int]] = {}
+        self.selectors: dict[int, int] = {}
+        self._inside: dict[tuple[int, frozenset[Value]], int | None] = {}
+        self._fresh: list[int] = []
+        for p in allowed:
+            self._position(p)
+        self._fresh = []  # the narrowed positions are the neighbourhood, not its boundary
+
+    def _new(self) -> int:
+        self._count += 1
+        return self._count
+
+    def _position(self, p: int) -> dict[int, int]:
+        if p not in self.x:
+            classes = self.allowed.get(p)
+            if classes is None:
+                classes = set(range(self.oracle.positions[p].size))
+            self.x[p] = {k: self._new() for k in sorted(classes)}
+            self.solver.add_clause(list(self.x[p].values()))
+            # Prefer marking classes, as the oracle does: a model then shows more live ones.
+            self.solver.set_phases(list(self.x[p].values()))
+            self._fresh.append(p)
+        return self.x[p]
+
+    def fresh(self) -> list[int]:
+        """The positions added since the last call."""
+        found, self._fresh = self._fresh, []
+        return found
+
+    def _literal(self, p: int, found: frozenset[Value]) -> int | None:
+        """A literal forced true by every allowed class of ``p`` inside ``found``; ``None``
+        when there is none (a box with that part holds no robot here)."""
+        key = (p, found)
+        if key not in self._inside:
+            x = self._position(p)
+            inside = [x[k] for k in self.oracle._classes_in[key] if k in x]
+            literal = inside[0] if len(inside) == 1 else None
+            if len(inside) > 1:
+                literal = self._new()
+                for variable in inside:
+                    self.solver.add_clause([-variable, literal])
+            self._inside[key] = literal
+        return self._inside[key]
+
+    def add(self, index: int) -> None:
+        """Constraint ``index``: its boxes as clauses, switched on by its selector."""
+        self.selectors[index] = selector = self._new()
+        for parts in self.oracle._boxes_of[index]:
+            literals = [self._literal(p, found) for p, found in parts]
+            if None not in literals:
+                self.solver.add_clause([-selector, *(-(v or 0) for v in literals)])
+
+    def ask(
+        self, boundary: Sequence[int], witness: dict[int, int]
+    ) -> tuple[bool, frozenset[int]] | None:
+        """Yes when a robot here takes the witness's classes on ``boundary``; no, with a
+        core, when there is no robot here at all; ``None`` when neither tells."""
+        selectors = list(self.selectors.values())
+        budget = self.oracle.budget
+        if boundary:
+            fixed = [self.x[q][witness[q]] for q in boundary]
+            if _run(self.solver, selectors + fixed, budget):
+                return True, frozenset()
+        if _run(self.solver, selectors, budget):
+            return None if boundary else (True, frozenset())
+        which = {selector: index for index, selector in self.selectors.items()}
+        return False, frozenset(which[v] for v in self.solver.get_core() or () if v in which)
+
+    def marked(self, boundary: Sequence[int]) -> list[tuple[int, int]]:
+        """After a yes: the classes the model marks off ``boundary``, each one a valid robot's
+        (with any marked class elsewhere here, and the witness beyond)."""
+        model = self.solver.get_model() or []
+        edge = set(boundary)
+        return [
+            (p, k)
+            for p, x in self.x.items()
+            if p not in edge
+            for k, variable in x.items()
+            if model[variable - 1] > 0
+        ]

@@ -22,21 +22,32 @@ from collections.abc import Sequence
 from solver.core.constraints import Condition, RuleConstraint, Value
 from solver.core.ruleset import RuleSet
 
-__all__ = ["Box", "Domains", "intersect", "regions", "touches"]
+__all__ = [
+    "Box",
+    "Domains",
+    "Sparse",
+    "intersect",
+    "narrowed_positions",
+    "regions",
+    "sparse_regions",
+    "touches",
+]
 
 # One entry per characteristic, in rule order: the values a box allows, or None for "any".
 Box = tuple[frozenset[Value] | None, ...]
+# A box as the (position, value set) pairs of the characteristics it restricts.
+Sparse = tuple[tuple[int, frozenset[Value]], ...]
 Domains = tuple[tuple[Value, ...], ...]
 
 
 def _box(
     rules: RuleSet, conditions: Sequence[Condition], complement: Condition | None = None
-) -> Box:
-    sets: list[frozenset[Value] | None] = [None] * len(rules.characteristics)
+) -> Sparse:
+    sets: dict[int, frozenset[Value]] = {}
     positions = rules.positions
 
     def narrow(position: int, allowed: frozenset[Value]) -> None:
-        current = sets[position]
+        current = sets.get(position)
         sets[position] = allowed if current is None else current & allowed
 
     for condition in conditions:
@@ -45,14 +56,28 @@ def _box(
         position = positions[complement.characteristic]
         values = frozenset(rules.characteristics[position].values)
         narrow(position, values - complement.allowed)
-    return tuple(sets)
+    return tuple(sorted(sets.items()))
+
+
+def sparse_regions(rules: RuleSet, rule: RuleConstraint) -> tuple[Sparse, ...]:
+    """The boxes whose union is exactly the set of robots ``rule`` excludes, each as the
+    (position, set) pairs of the characteristics it restricts, in position order: a box about
+    two of 1,000 characteristics is two pairs."""
+    if rule.kind == "forbid":
+        return (_box(rules, rule.conditions),)
+    return tuple(_box(rules, rule.when, condition) for condition in rule.conditions)
 
 
 def regions(rules: RuleSet, rule: RuleConstraint) -> tuple[Box, ...]:
     """The boxes whose union is exactly the set of robots ``rule`` excludes."""
-    if rule.kind == "forbid":
-        return (_box(rules, rule.conditions),)
-    return tuple(_box(rules, rule.when, condition) for condition in rule.conditions)
+    width = len(rules.characteristics)
+    boxes = []
+    for parts in sparse_regions(rules, rule):
+        box: list[frozenset[Value] | None] = [None] * width
+        for position, allowed in parts:
+            box[position] = allowed
+        boxes.append(tuple(box))
+    return tuple(boxes)
 
 
 def intersect(domains: Domains, box: Box) -> Domains:
@@ -72,3 +97,24 @@ def touches(boxes: Sequence[Box], domains: Sequence[frozenset[Value]]) -> bool:
         )
         for box in boxes
     )
+
+
+def narrowed_positions(domains: Domains, wholes: Domains) -> list[int]:
+    """The positions, in order, where ``domains`` leave out values of ``wholes`` (each
+    characteristic's own values; a domain is part of them, so one as long is whole).
+
+    Questions narrow one or two of up to 1,000 characteristics and pass the others as the
+    characteristic's own tuple, so the domains are compared a block at a time, in C (a tuple
+    is equal to itself at once), and only a block that differs is looked into.
+    """
+    found = []
+    for start in range(0, len(wholes), _BLOCK):
+        end = start + _BLOCK
+        if domains[start:end] != wholes[start:end]:
+            found += [
+                p for p in range(start, min(end, len(wholes))) if len(domains[p]) != len(wholes[p])
+            ]
+    return found
+
+
+_BLOCK = 64
