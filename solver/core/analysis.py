@@ -348,18 +348,23 @@ def deletion(
         raise ValueError("the constraints have a solution: nothing conflicts")
     kept: list[int] = []  # decided: kept; the ones after the current one are all still in
     position = -1
-    while True:
+    pending = _later(constraints, position, known)
+    while pending:
         # The next constraint of the known core: the ones before it are dropped, since the
         # rest still holds that core.
-        later = [at for i in known if (at := _after(constraints, position, i)) >= 0]
-        if not later:
-            return tuple(kept)
-        position = min(later)
+        position = pending.pop()
         found = core(_Rest(constraints, kept, position))
         if found is None:
             kept.append(constraints[position])
         else:
-            known = found
+            pending = _later(constraints, position, found)
+    return tuple(kept)
+
+
+def _later(constraints: Sequence[int], position: int, core: Collection[int]) -> list[int]:
+    """Where the members of ``core`` after ``position`` stand in ``constraints``, last first."""
+    found = (_after(constraints, position, index) for index in core)
+    return sorted((at for at in found if at >= 0), reverse=True)
 
 
 class _Rest(Collection[int]):

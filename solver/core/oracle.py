@@ -29,7 +29,8 @@ solver (MiniSat 2.2 through PySAT) under assumptions:
   own: the characteristics around the narrowed ones, with one valid robot over the whole
   domains (the witness) standing in for everything beyond (:meth:`Oracle._local`). Along a
   chain of 1,000 characteristics a question costs what a few links cost, not the chain; a
-  question that needs more than half of the characteristics goes to the whole instance.
+  question that needs more than a sixteenth of the characteristics goes to the whole instance
+  (and so does every question of a rule set of fewer than :data:`NEAR_FROM`).
 
 Every answer depends only on whether a question has a solution, never on which model the
 solver finds, so output stays the same from run to run. A search is bounded: the conflicts of
@@ -54,7 +55,11 @@ from solver.limits import limit
 if TYPE_CHECKING:
     from pysat.solvers import Solver
 
-__all__ = ["Budget", "Oracle"]
+__all__ = ["NEAR_FROM", "Budget", "Oracle"]
+
+# The fewest characteristics an oracle has for questions to be asked near what they narrow
+# first: below, MiniSat answers from the whole instance faster than Python builds a small one.
+NEAR_FROM = 128
 
 
 class Budget:
@@ -212,8 +217,14 @@ class Oracle:
         self._witness_asked = False
         self._all_wholes = tuple(c.values for c in rules.characteristics)
         self._no_empty_whole = all(self._all_wholes)
-        # The most characteristics a question's neighbourhood may hold (else: every one).
-        self._limit = len(self.positions) // 2
+        # The most characteristics a question's neighbourhood may hold (else: every one). An
+        # instance built in Python costs some ten times what MiniSat spends on as many of the
+        # whole instance's characteristics: a sixteenth of them (at least 8, at most half), and
+        # none below NEAR_FROM, so that a question the neighbourhood cannot answer (x0 = a
+        # forcing a along the whole chain) costs little more than before.
+        count = len(self.positions)
+        self._limit = min(max(count // 16, 8), count // 2) if count >= NEAR_FROM else 0
+        self._answered = self._missed = 0  # local questions; see _local
         self._last_changed: tuple[Domains | None, dict[int, set[int]] | None] = (None, {})
         self._whole_live: tuple[dict[int, set[int]] | None] | None = None
 
@@ -297,7 +308,9 @@ class Oracle:
     ) -> tuple[bool, frozenset[int]] | None:
         """Whether some robot over ``domains`` satisfies the constraints ``member`` accepts,
         told from the characteristics near those ``domains`` narrow, with a core when none
-        does; ``None`` when the neighbourhood grows past half the oracle's characteristics.
+        does; ``None`` when the neighbourhood grows past its limit (a sixteenth of the oracle's
+        characteristics; none below :data:`NEAR_FROM`), or when that happened more often than
+        not (16 more times than answers came).
 
         One valid robot over the whole domains (the witness) satisfies every constraint. The
         neighbourhood starts at the narrowed characteristics and grows by the constraints at
@@ -307,8 +320,11 @@ class Oracle:
         yes. No robot for the neighbourhood's constraints alone, the boundary left free: no
         robot at all, and the core is among them. Neither: grow and ask again (each time the
         neighbourhood has doubled, so a chain of 1,000 characteristics costs what a few
-        links cost, and a question that needs everything costs a few times one question).
+        links cost, and a question that needs everything costs little more than before).
         """
+        # Where neighbourhoods keep growing past their limit, the rule set is no chain: stop.
+        if self._missed > self._answered + 16:
+            return None
         allowed = self._changed(domains)
         if allowed is None or len(allowed) > self._limit:
             return None
@@ -339,10 +355,12 @@ class Oracle:
                         local.add(index)
             boundary = local.fresh()
             if len(local.x) > self._limit:
+                self._missed += 1
                 return None
             if not boundary or len(local.x) >= 2 * asked:
                 answer = local.ask(boundary, witness)
                 if answer is not None:
+                    self._answered += 1
                     if answer[0] and seen is not None:
                         seen += local.marked(boundary)
                     return answer

@@ -1,10 +1,11 @@
 """Answers from a question's neighbourhood (:mod:`solver.core.oracle`), against brute force.
 
 Chains of characteristics, each linked to its neighbours, are where the oracle answers from
-the characteristics near the ones a question narrows (a rule set of two or three
-characteristics is answered whole). Whatever it answers locally must be what enumerating
-every robot says: the live values, and the very constraints deletion in declared order keeps
-for a dead value and for a redundant constraint.
+the characteristics near the ones a question narrows. It does so from 128 characteristics on
+(:data:`~solver.core.oracle.NEAR_FROM`); here from any number, so that brute force can tell.
+Whatever it answers locally must be what enumerating every robot says: the live values, and
+the very constraints deletion in declared order keeps for a dead value and for a redundant
+constraint.
 """
 
 from __future__ import annotations
@@ -13,16 +14,28 @@ import itertools
 from collections.abc import Sequence
 from typing import Any
 
+import pytest
 import yaml
-from hypothesis import given, settings
+from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from solver.core import oracle
 from solver.core.analysis import Analysis
 from solver.core.constraints import RuleConstraint, Value
 from solver.core.rules import parse_rules
 from solver.core.ruleset import RuleSet
 from solver.files.yamlio import parse_document
 from tests.check.helpers import valid_robots
+
+
+@pytest.fixture(autouse=True)
+def _near_everywhere(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Every oracle here asks near the question first, however few its characteristics."""
+    monkeypatch.setattr(oracle, "NEAR_FROM", 0)
+
+
+# The fixture only sets a constant: it holds for every example.
+FIXTURE_OK = [HealthCheck.function_scoped_fixture]
 
 
 def _rules(data: dict[str, Any]) -> RuleSet:
@@ -78,7 +91,7 @@ def _live(rules: RuleSet, domains: Sequence[Sequence[Value]]) -> tuple[frozenset
     return tuple(frozenset(robot[i] for robot in found) for i in range(len(domains)))
 
 
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=60, deadline=None, suppress_health_check=FIXTURE_OK)
 @given(chains())
 def test_live_values_and_the_reasons_for_dead_ones_match_brute_force(rules: RuleSet) -> None:
     analysis = Analysis(rules)
@@ -100,7 +113,7 @@ def test_live_values_and_the_reasons_for_dead_ones_match_brute_force(rules: Rule
                 assert analysis.minimal_conflict(narrowed) == _deletion(every, conflicts)
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=40, deadline=None, suppress_health_check=FIXTURE_OK)
 @given(chains())
 def test_the_constraints_that_entail_a_redundant_one_match_brute_force(rules: RuleSet) -> None:
     analysis = Analysis(rules)
