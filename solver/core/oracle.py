@@ -323,7 +323,7 @@ class Oracle:
         links cost, and a question that needs everything costs little more than before).
         """
         # Where neighbourhoods keep growing past their limit, the rule set is no chain: stop.
-        if self._missed > self._answered + 16:
+        if not self._limit or self._missed > self._answered + 16:
             return None
         allowed = self._changed(domains)
         if allowed is None or len(allowed) > self._limit:
