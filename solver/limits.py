@@ -4,7 +4,7 @@ An input sized to stall (a team of 5,000 kinematic types on a chart, 200 topic l
 set whose layouts are 50,000 files) is refused before the work starts, with a message that
 names where the size comes from, the size, the limit and this table's name for it::
 
-    rules.yaml:3:3: characteristics: 1200 characteristics; at most 1000 are accepted (limit
+    rules.yaml:3:1: characteristics: 1001 characteristics; at most 1000 are accepted (limit
     'characteristics', docs/security.md)
 
 Below each limit, every command ends within seconds (``benchmarks/`` measures the edges).

@@ -176,7 +176,7 @@ def choose(
                 selection.location or Location(team.file),
                 f"{selection.kinematic_type}: enumerating {exact}"
                 f"{readable(robots)} robots is refused (more than "
-                f"{max_robots}, see --max-robots){reason}; use "
+                f"{max_robots}, see --max-robots; limit 'robots', docs/security.md){reason}; use "
                 "--count-only for exact counts without enumeration",
                 "too-large",
             )

@@ -177,7 +177,8 @@ def write_robots(
         raise TooLargeError(
             Fault(
                 solution.team.location or Location(solution.team.file),
-                f"listing {total} robots is refused (more than {max_robots}, see --max-robots)",
+                f"listing {total} robots is refused (more than {max_robots}, see --max-robots; "
+                "limit 'robots', docs/security.md)",
                 "too-large",
             )
         )

@@ -84,7 +84,8 @@ def test_enumerating_more_than_the_limit_is_refused_with_the_count(write_file: W
     # UAV (30) and UGV (80) are within the limit; the Mobile Manipulator (312) is not.
     assert (
         "Mobile Manipulator: enumerating 312 robots is refused (more than 100, see "
-        "--max-robots); use --count-only for exact counts without enumeration" in str(caught.value)
+        "--max-robots; limit 'robots', docs/security.md); use --count-only for exact counts "
+        "without enumeration" in str(caught.value)
     )
     assert solve(team, count_only=True, max_robots=100).totals.valid_robots == 872
 

@@ -44,7 +44,10 @@ def test_robots_refuses_to_list_more_than_the_limit() -> None:
     result = run_cli("robots", "case3", "--max-robots", "100")
     assert result.returncode == 2
     assert result.stdout == ""
-    assert "listing 872 robots is refused (more than 100, see --max-robots)" in result.stderr
+    assert (
+        "listing 872 robots is refused (more than 100, see --max-robots; "
+        "limit 'robots', docs/security.md)" in result.stderr
+    )
 
 
 def test_solve_refuses_to_enumerate_more_than_the_limit_and_suggests_count_only() -> None:
