@@ -112,6 +112,12 @@ def _leaks(mark: str) -> list[Process]:
 
 def pytest_configure(config: pytest.Config) -> None:
     run_mark()
+    # A run started in the background of a shell without job control (`cmd &` in a script, some
+    # CI runners) inherits SIGINT ignored, and so would every process the tests start: the tests
+    # of what Ctrl-C does would then wait for an exit that never comes. A user's terminal
+    # delivers SIGINT; the run restores Python's handler, so its children start with the default.
+    if signal.getsignal(signal.SIGINT) is signal.SIG_IGN:
+        signal.signal(signal.SIGINT, signal.default_int_handler)
 
 
 @pytest.hookimpl(trylast=True)
