@@ -124,12 +124,15 @@ class _Position:
         return self.rest
 
 
+_Parts = list[tuple[int, frozenset[Value]]]  # a box as the (position, set) pairs it tests
+
+
 def _kept(
     boxes: Sequence[Sequence[Sparse]],
     included: Sequence[int],
     key: int | None,
     key_value: Value | None,
-) -> list[tuple[int, list[tuple[int, frozenset[Value]]]]]:
+) -> list[tuple[int, _Parts]]:
     """The boxes of ``included`` that can hold a robot with ``key_value`` at ``key`` (when
     fixed), without the key; an empty box excludes nothing and is left out."""
     kept = []
@@ -182,37 +185,16 @@ class Oracle:
             self.solver.add_clause(variables)
         # Prefer marking classes: a model then witnesses as many classes as it can.
         self.solver.set_phases([v for variables in self.x.values() for v in variables])
-        # The classes of each position inside each set a box tests there.
-        self._classes_in: dict[tuple[int, frozenset[Value]], tuple[int, ...]] = {
-            (p, found): tuple(
-                k
-                for k, representative in enumerate(self.positions[p].representatives)
-                if representative in found
-            )
-            for p, by_set in sets.items()
-            for found in by_set
-        }
-        inside = {key: self._inside(*key) for key in self._classes_in}
+        self._classes_in = self._classes_inside(sets)
         self.selector: dict[int, int] = {}
         self.every = self._new()  # assumed: every included constraint holds
-        for index in included:
-            self.selector[index] = selector = self._new()
-            self.solver.add_clause([-self.every, selector])
-        for index, parts in kept:
-            self.solver.add_clause(
-                [-self.selector[index], *(-inside[(p, found)] for p, found in parts)]
-            )
+        self._add_constraints(kept, included)
         self._switches: dict[tuple[int, frozenset[int]], int] = {}
         self._wholes = [(p, rules.characteristics[p].values) for p in self.positions]
         # For local answers: each constraint's boxes, and the constraints at each position.
-        self._boxes_of: dict[int, list[list[tuple[int, frozenset[Value]]]]] = {}
+        self._boxes_of: dict[int, list[_Parts]] = {}
         self._at: dict[int, list[int]] = {}
-        for index, parts in kept:
-            self._boxes_of.setdefault(index, []).append(parts)
-            for p, _ in parts:
-                at = self._at.setdefault(p, [])
-                if not at or at[-1] != index:
-                    at.append(index)
+        self._index_boxes(kept)
         self._witness: dict[int, int] | None = None
         self._witness_asked = False
         self._all_wholes = tuple(c.values for c in rules.characteristics)
@@ -227,6 +209,40 @@ class Oracle:
         self._answered = self._missed = 0  # local questions; see _local
         self._last_changed: tuple[Domains | None, dict[int, set[int]] | None] = (None, {})
         self._whole_live: tuple[dict[int, set[int]] | None] | None = None
+
+    def _classes_inside(
+        self, sets: dict[int, dict[frozenset[Value], None]]
+    ) -> dict[tuple[int, frozenset[Value]], tuple[int, ...]]:
+        """The classes of each position inside each set a box tests there."""
+        return {
+            (p, found): tuple(
+                k
+                for k, representative in enumerate(self.positions[p].representatives)
+                if representative in found
+            )
+            for p, by_set in sets.items()
+            for found in by_set
+        }
+
+    def _add_constraints(self, kept: Sequence[tuple[int, _Parts]], included: Sequence[int]) -> None:
+        """A selector per included constraint (implied by ``every``), and a clause per box:
+        the constraint's selector excludes the robots inside the box."""
+        inside = {key: self._inside(*key) for key in self._classes_in}
+        for index in included:
+            self.selector[index] = selector = self._new()
+            self.solver.add_clause([-self.every, selector])
+        for index, parts in kept:
+            self.solver.add_clause(
+                [-self.selector[index], *(-inside[(p, found)] for p, found in parts)]
+            )
+
+    def _index_boxes(self, kept: Sequence[tuple[int, _Parts]]) -> None:
+        for index, parts in kept:
+            self._boxes_of.setdefault(index, []).append(parts)
+            for p, _ in parts:
+                at = self._at.setdefault(p, [])
+                if not at or at[-1] != index:
+                    at.append(index)
 
     def _inside(self, p: int, found: frozenset[Value]) -> int:
         """A variable forced true by every class of ``p`` inside ``found``."""
