@@ -16,6 +16,7 @@ The package has wings; each is a package with its own map in its docstring:
                        show it (escaped, cut to 60 characters, marked as cut); every
                        message, text output, finding and event uses it
 ``limits``             every size a command accepts, in one table (docs/security.md)
+``lazy``               packages that load what they export on first use (PEP 562)
 ``files``              reading input safely (size limits, YAML with positions,
                        typed access, file kinds) and writing output atomically
 ``ros``                ROS vocabulary with no I/O: topics, message-type names
@@ -76,8 +77,10 @@ Example::
 # imports and __all__ in step (tests/test_api.py checks they match).
 from __future__ import annotations
 
-import importlib
 from typing import TYPE_CHECKING, Any
+
+from solver.lazy import load as _load
+from solver.lazy import names as _names
 
 __version__ = "0.1.0"
 
@@ -205,13 +208,8 @@ __all__ = [
 
 
 def __getattr__(name: str) -> Any:
-    module = _EXPORTS.get(name)
-    if module is None:
-        raise AttributeError(f"module 'solver' has no attribute {name!r}")
-    value = getattr(importlib.import_module(module), name)
-    globals()[name] = value
-    return value
+    return _load(globals(), _EXPORTS, name)
 
 
 def __dir__() -> list[str]:
-    return sorted({*globals(), *_EXPORTS})
+    return _names(globals(), _EXPORTS)

@@ -20,15 +20,21 @@ def test_every_exported_name_resolves_from_its_module() -> None:
         assert value is getattr(sys.modules[solver._EXPORTS[name]], name)
 
 
-def test_the_type_checking_imports_match_the_lazy_exports() -> None:
-    tree = ast.parse((ROOT / "solver" / "__init__.py").read_text(encoding="utf-8"))
+def _checker_imports(package: str) -> dict[str, str | None]:
+    """What ``package``'s ``if TYPE_CHECKING:`` block imports: {name: module}."""
+    path = ROOT / Path(*package.split(".")) / "__init__.py"
+    tree = ast.parse(path.read_text(encoding="utf-8"))
     guarded = next(node for node in tree.body if isinstance(node, ast.If))
-    imported = {
+    return {
         alias.name: node.module
         for node in guarded.body
         if isinstance(node, ast.ImportFrom)
         for alias in node.names
     }
+
+
+def test_the_type_checking_imports_match_the_lazy_exports() -> None:
+    imported = _checker_imports("solver")
     assert imported == solver._EXPORTS
     assert solver.__all__ == sorted(imported)
 
@@ -60,15 +66,7 @@ def test_a_wing_loaded_lazily_exports_each_name_from_the_module_its_checker_impo
     package: str,
 ) -> None:
     module = importlib.import_module(package)
-    path = ROOT / Path(*package.split(".")) / "__init__.py"
-    tree = ast.parse(path.read_text(encoding="utf-8"))
-    guarded = next(node for node in tree.body if isinstance(node, ast.If))
-    imported = {
-        alias.name: node.module
-        for node in guarded.body
-        if isinstance(node, ast.ImportFrom)
-        for alias in node.names
-    }
+    imported = _checker_imports(package)
     assert imported == module._EXPORTS
     assert set(imported) <= set(module.__all__)
     for name, source in module._EXPORTS.items():

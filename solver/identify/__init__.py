@@ -39,12 +39,13 @@ Heavy libraries (lxml, xacro, rosbags) are imported inside the functions that us
 # one URDF needs neither UI configurations nor a fleet's team).
 from __future__ import annotations
 
-import importlib
 from typing import TYPE_CHECKING, Any
 
 # Bound here, not lazily: the function shares its module's name, and importing the module
 # (``from solver.identify.combinations import ...``) would otherwise bind the name to the module.
 from solver.identify.combinations import Combination, combinations
+from solver.lazy import load as _load
+from solver.lazy import names as _names
 
 if TYPE_CHECKING:
     from solver.identify.fleet import Fleet, FleetEntry, identify_fleet, team_text
@@ -121,13 +122,8 @@ __all__ = [
 
 
 def __getattr__(name: str) -> Any:
-    module = _EXPORTS.get(name)
-    if module is None:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    value = getattr(importlib.import_module(module), name)
-    globals()[name] = value
-    return value
+    return _load(globals(), _EXPORTS, name)
 
 
 def __dir__() -> list[str]:
-    return sorted({*globals(), *_EXPORTS})
+    return _names(globals(), _EXPORTS)

@@ -19,8 +19,10 @@ What ``--trust-xacro`` guarantees and what it does not is documented in docs/sec
 # ``packages`` only, and a plain URDF never starts the compiler (nor its child process code).
 from __future__ import annotations
 
-import importlib
 from typing import TYPE_CHECKING, Any
+
+from solver.lazy import load as _load
+from solver.lazy import names as _names
 
 if TYPE_CHECKING:
     from solver.identify.xacro.compiler import CompiledXacro, XacroLimits, compile_xacro
@@ -50,13 +52,8 @@ __all__ = [
 
 
 def __getattr__(name: str) -> Any:
-    module = _EXPORTS.get(name)
-    if module is None:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    value = getattr(importlib.import_module(module), name)
-    globals()[name] = value
-    return value
+    return _load(globals(), _EXPORTS, name)
 
 
 def __dir__() -> list[str]:
-    return sorted({*globals(), *_EXPORTS})
+    return _names(globals(), _EXPORTS)
