@@ -41,7 +41,7 @@ import math
 from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from functools import cached_property
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 from solver.core.constraints import Value
 from solver.core.partition import Key, Partition, PartitionClass, RobotClass, partition_classes
@@ -119,10 +119,6 @@ class _Block:
         self.positions = positions
         self._combinations = combinations
         self.grid = grid
-        if combinations is not None:
-            # A listed block is always counted: its figures in one pass, as the properties
-            # below would give them one at a time (the instance's values take their place).
-            self.__dict__.update(_tally(combinations))
 
     @cached_property
     def combinations(self) -> tuple[tuple[tuple[_Class, ...], int], ...]:
@@ -140,16 +136,16 @@ class _Block:
         return tuple(c.membership[0] for c in classes)
 
     @cached_property
+    def _figures(self) -> _Tally:
+        """A listed block's figures, in one pass over its combinations."""
+        return _tally(self.combinations)
+
+    @cached_property
     def partial_weights(self) -> dict[Key, int]:
         """Robots per partial configuration (robots with a value in no component left out)."""
         if self.grid is not None:
             return self.grid.partial_weights()
-        weights: dict[Key, int] = {}
-        for combination, weight in self.combinations:
-            key = self.partial_key(combination)
-            if key is not None:
-                weights[key] = weights.get(key, 0) + weight
-        return weights
+        return self._figures.partial_weights
 
     @cached_property
     def configurations(self) -> int:
@@ -162,32 +158,32 @@ class _Block:
     def robots(self) -> int:
         if self.grid is not None:
             return self.grid.robots(served=False)
-        return sum(weight for _, weight in self.combinations)
+        return self._figures.robots
 
     @cached_property
     def served(self) -> int:
         """Robots whose every class is in some component."""
         if self.grid is not None:
             return self.grid.robots(served=True)
-        return sum(
-            weight
-            for combination, weight in self.combinations
-            if all(c.membership for c in combination)
-        )
+        return self._figures.served
 
     @cached_property
     def overlaps(self) -> bool:
         """Whether a class of a valid combination is in several components."""
         if self.grid is not None:
             return self.grid.overlaps()
-        return any(
-            len(c.membership) > 1 for combination, _ in self.combinations for c in combination
-        )
+        return self._figures.overlaps
 
 
-def _tally(combinations: tuple[tuple[tuple[_Class, ...], int], ...]) -> dict[str, Any]:
-    """A listed block's ``robots``, ``served``, ``partial_weights``, ``configurations`` and
-    ``overlaps`` (see :class:`_Block`), in one pass over its combinations."""
+class _Tally(NamedTuple):
+    robots: int
+    served: int  # robots whose every class is in some component
+    partial_weights: dict[Key, int]  # robots per partial configuration
+    overlaps: bool  # a class of a valid combination is in several components
+
+
+def _tally(combinations: tuple[tuple[tuple[_Class, ...], int], ...]) -> _Tally:
+    """A listed block's figures (see :class:`_Block`), in one pass over its combinations."""
     robots = served = 0
     weights: dict[Key, int] = {}
     overlaps = False
@@ -208,14 +204,7 @@ def _tally(combinations: tuple[tuple[tuple[_Class, ...], int], ...]) -> dict[str
             key = tuple(components)
             served += weight
             weights[key] = weights.get(key, 0) + weight
-    return {
-        "combinations": combinations,
-        "robots": robots,
-        "served": served,
-        "partial_weights": weights,
-        "configurations": len(weights),
-        "overlaps": overlaps,
-    }
+    return _Tally(robots, served, weights, overlaps)
 
 
 class _Grid:
