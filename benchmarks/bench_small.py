@@ -8,7 +8,10 @@ All in CPU time, so a busy machine does not move the figures:
   read once per process while its text is unchanged. Target: the tool at least 3x faster.
 * Whole processes (CPU time of the child, from the kernel's accounting): a bare interpreter,
   ``teleop-ui solve rules/teams/case3.yaml``, the peer script, and ``teleop-ui identify`` of a
-  URDF. Target: ``solve`` and ``identify`` at most 3x the bare interpreter.
+  URDF. Target: ``solve`` and ``identify`` at most 3x the bare interpreter. Beside them, the
+  floor any program with the tool's dependencies pays before doing anything: an interpreter
+  that only imports PyYAML and ``dataclasses`` (what ``solve`` cannot do without), and the same
+  with lxml's ``etree`` (``identify``'s floor).
 * What a ``batch`` worker does per team (:func:`solver.reporting.batch.run_job`: hashes, read,
   solve, the listing JSON and the stamp written atomically) for 50 copies of Case 3, against a
   plain loop over the Python API (``load_team``, ``solve``, ``json.dumps`` of
@@ -100,6 +103,14 @@ PROCESSES: dict[str, tuple[list[str], Callable[[str], bool]]] = {
     "solve case3": (
         [sys.executable, "-m", "solver", "solve", "rules/teams/case3.yaml"],
         lambda out: "total                        872                102" in out,
+    ),
+    "imports only: PyYAML, dataclasses": (
+        [sys.executable, "-c", "import yaml, dataclasses; print(872)"],
+        lambda out: out == "872\n",
+    ),
+    "imports only: PyYAML, dataclasses, lxml": (
+        [sys.executable, "-c", "import yaml, dataclasses, lxml.etree; print(872)"],
+        lambda out: out == "872\n",
     ),
     "peer script": ([sys.executable, "tools/peer_case3.py"], lambda out: out == "872 102\n"),
     "identify": (

@@ -187,6 +187,16 @@ ROWS = [
         "",
     ),
     ("test_whole_process_cpu[bare interpreter]", "a bare interpreter, whole process (CPU)", ""),
+    (
+        "test_whole_process_cpu[imports only: PyYAML, dataclasses]",
+        "an interpreter importing only PyYAML and dataclasses (floor, CPU)",
+        "",
+    ),
+    (
+        "test_whole_process_cpu[imports only: PyYAML, dataclasses, lxml]",
+        "an interpreter importing only PyYAML, dataclasses and lxml (floor, CPU)",
+        "",
+    ),
     ("test_whole_process_cpu[solve case3]", "`teleop-ui solve case3`, whole process (CPU)", ""),
     ("test_whole_process_cpu[peer script]", "tools/peer_case3.py, whole process (CPU)", ""),
     (
@@ -471,6 +481,30 @@ RATIOS = [
         "test_whole_process_cpu[identify]",
         "test_whole_process_cpu[bare interpreter]",
         "<= 3",
+    ),
+    (
+        "CPU: importing PyYAML and dataclasses only / bare interpreter (the floor of `solve`)",
+        "test_whole_process_cpu[imports only: PyYAML, dataclasses]",
+        "test_whole_process_cpu[bare interpreter]",
+        "",
+    ),
+    (
+        "CPU: importing PyYAML, dataclasses and lxml only / bare interpreter (`identify`'s)",
+        "test_whole_process_cpu[imports only: PyYAML, dataclasses, lxml]",
+        "test_whole_process_cpu[bare interpreter]",
+        "",
+    ),
+    (
+        "CPU: `solve case3` whole process / its floor (PyYAML and dataclasses imported)",
+        "test_whole_process_cpu[solve case3]",
+        "test_whole_process_cpu[imports only: PyYAML, dataclasses]",
+        "",
+    ),
+    (
+        "CPU: `identify` whole process / its floor (PyYAML, dataclasses, lxml imported)",
+        "test_whole_process_cpu[identify]",
+        "test_whole_process_cpu[imports only: PyYAML, dataclasses, lxml]",
+        "",
     ),
     (
         "CPU: peer script whole process / bare interpreter",
