@@ -110,3 +110,32 @@ def test_the_test_command_installs_into_a_project_venv_with_every_extra() -> Non
     assert 'python3 -m venv "$venv"' in commands
     assert "\"$python\" -m pip install -q -e '.[test,all]'" in commands
     assert ".venv/" in (ROOT / ".gitignore").read_text(encoding="utf-8").splitlines()
+
+
+def test_fleet_without_lxml_names_the_ros_extra_once(tmp_path: Path) -> None:
+    for name in ("one", "two"):
+        (tmp_path / f"{name}.urdf").write_text(
+            f'<robot name="{name}"><link name="base"/></robot>\n', encoding="utf-8"
+        )
+    result = _run_without("lxml", "fleet", ".", "-o", "team.yaml", cwd=tmp_path)
+    assert result.returncode == 2
+    assert result.stderr.count("needs lxml") == 1
+    assert result.stderr.splitlines()[-1].endswith(
+        "needs lxml, which is not installed; install the 'ros' extra: "
+        "pip install 'teleop-ui[ros]' (or 'teleop-ui[all]')"
+    )
+    assert "Traceback" not in result.stderr
+    assert not (tmp_path / "team.yaml").exists()
+
+
+def test_batch_with_a_report_and_no_matplotlib_is_refused_before_solving(tmp_path: Path) -> None:
+    result = _run_without(
+        "matplotlib", "batch", "case1", "case2", "--report", "html", "-o", "out", cwd=tmp_path
+    )
+    assert result.returncode == 2
+    assert result.stderr.splitlines()[-1] == (
+        "drawing plots (solve --plot, report, batch --report): needs matplotlib, which is not "
+        "installed; install the 'plots' extra: pip install 'teleop-ui[plots]' "
+        "(or 'teleop-ui[all]')"
+    )
+    assert not (tmp_path / "out").exists()

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import re
 import shlex
+import shutil
 from pathlib import Path
 
 import pytest
@@ -57,6 +58,32 @@ def test_every_console_example_prints_what_the_readme_shows(
     assert words[0] == "teleop-ui"
     result = run_cli(*words[1:], cwd=tmp_path)
     assert (result.stdout + result.stderr).rstrip("\n") == expected.rstrip("\n")
+
+
+def test_the_batch_example_is_what_a_second_run_prints_after_a_typo(tmp_path: Path) -> None:
+    example = re.search(
+        r"```\n\$ (teleop-ui batch [^\n]*)\n(.*?)\$ echo \$\?\n(\d+)\n```",
+        _text(ROOT / "docs" / "reports.md"),
+        re.S,
+    )
+    assert example is not None
+    command, expected, status = example.groups()
+    shutil.copytree(ROOT / "rules", tmp_path / "rules")
+    words = shlex.split(command)[1:]
+    assert run_cli(*words, cwd=tmp_path).returncode == 0
+    (tmp_path / "rules" / "teams" / "typo.yaml").write_text(
+        "rules: ../paper.yaml\nteam:\n"
+        "  UAV: {motion_control: [Flite], sensor_type: [2D Camera], sensor_count: 2}\n",
+        encoding="utf-8",
+    )
+    second = run_cli(*words, cwd=tmp_path)
+    assert second.returncode == int(status)
+    # The summary table goes to stdout; progress and the closing line to stderr, around it.
+    table = [line for line in expected.splitlines() if line.startswith(("file ", "rules/"))]
+    assert second.stdout.splitlines() == table
+    assert second.stderr.splitlines() == [
+        line for line in expected.splitlines() if line not in table
+    ]
 
 
 def test_the_reproduction_table_is_the_output_of_reproduce() -> None:

@@ -103,8 +103,9 @@ def run(args: argparse.Namespace) -> int:
 
         load_rules(args.rules)  # a bad override would fail every team: say so once
     teams = find_teams(args.patterns)
+    # Planned first: a refusal (a report without matplotlib) leaves no folder behind.
+    jobs = plan(teams, args.output, rules=args.rules, report=args.report, force=args.force)
     out = make_folder(args.output)
-    jobs = plan(teams, out, rules=args.rules, report=args.report, force=args.force)
     show = _progress_bar if sys.stderr.isatty() else _progress_lines
     outcomes = list(show(run_batch(jobs, args.jobs), len(jobs), sys.stderr))
     rows, written = write_summary(outcomes, jobs, out)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import sys
 from typing import Any
 
 from solver.cli._common import add_master_options
@@ -99,7 +100,7 @@ def run(args: argparse.Namespace) -> int:
     studio = _studio(args)
     sock = bind(args.host, args.port)
     try:
-        serve(studio, sock, args.host, announce=_announce, open_browser=args.open)
+        serve(studio, sock, args.host, announce=_announce, open_browser=args.open, warn=_warn)
     finally:
         sock.close()
         studio.workspace.close()
@@ -108,6 +109,10 @@ def run(args: argparse.Namespace) -> int:
 
 def _announce(url: str) -> None:
     print(f"teleop-ui studio: {url}  (Ctrl-C stops it)", flush=True)
+
+
+def _warn(message: str) -> None:
+    print(f"teleop-ui studio: warning: {message}", file=sys.stderr, flush=True)
 
 
 def _studio(args: argparse.Namespace) -> Any:

@@ -35,7 +35,7 @@ import yaml
 
 from solver.core.ruleset import RuleSet
 from solver.core.team import parse_team
-from solver.errors import InputError, SolverError
+from solver.errors import InputError, MissingExtraError, SolverError
 from solver.files.yamlio import parse_document
 from solver.identify.identification import Identification, identify
 from solver.identify.profile import MOTION_CONTROL, ROLES, SENSOR_COUNT, SENSOR_TYPE, Profile
@@ -150,7 +150,8 @@ def identify_fleet(
     With ``strict``, a robot whose description or SRDF has warnings is a failure too.
 
     Finding a ``.xacro`` file in a folder never means trusting it: without ``trust_xacro`` it
-    is a failed robot whose reason says how to opt in.
+    is a failed robot whose reason says how to opt in. A missing extra (lxml, rosbags) is no
+    robot's failure: its :class:`~solver.errors.MissingExtraError` is raised.
     """
     paths = find_descriptions(folder)
     inside = os.path.realpath(folder)
@@ -178,6 +179,8 @@ def identify_fleet(
                 profile=profile,
                 trust_xacro=trust_xacro,
             )
+        except MissingExtraError:
+            raise  # not this robot's failure: every robot would fail for it
         except SolverError as error:
             entries.append(FleetEntry(name, str(path), None, str(error).splitlines()[0]))
             continue

@@ -63,7 +63,7 @@ from solver.files.inputfile import read_text, sha256_bounded
 from solver.files.yamlio import MAX_FILE_BYTES, load_hashed
 from solver.limits import limit
 from solver.reporting import markdown
-from solver.reporting.plot import check_chart_size
+from solver.reporting.plot import check_chart_size, require_matplotlib
 from solver.reporting.render import csv_row, dumps, solution_chunks
 from solver.reporting.report import image_names, write_report
 from solver.untrusted import SHOWN_FILE_NAME_CHARS
@@ -271,7 +271,13 @@ def plan(
     report: ReportFormat | None = None,
     force: bool = False,
 ) -> list[Job]:
-    """One :class:`Job` per team file, in order, with ``up_to_date`` decided (see module)."""
+    """One :class:`Job` per team file, in order, with ``up_to_date`` decided (see module).
+
+    With a ``report`` and no matplotlib (the ``plots`` extra), a
+    :class:`~solver.errors.MissingExtraError` before anything is solved: every report draws
+    charts, so every team would fail for the same reason."""
+    if report is not None:
+        require_matplotlib()
     folder = Path(out)
     outputs = folder / TEAM_OUTPUTS  # apart from the summaries: see "Layout" above
     jobs = []

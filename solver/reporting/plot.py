@@ -111,7 +111,7 @@ def literal_text() -> Iterator[None]:
 
 def _drawn_literally(draw: Callable[[Solution], Figure]) -> Callable[[Solution], Figure]:
     def drawn(solution: Solution) -> Figure:
-        require("matplotlib", feature=_FEATURE)
+        require_matplotlib()
         with literal_text():
             return draw(solution)
 
@@ -127,8 +127,14 @@ def _drawn_literally(draw: Callable[[Solution], Figure]) -> Callable[[Solution],
 _FEATURE = "drawing plots (solve --plot, report, batch --report)"
 
 
-def _new_figure(width: float, height: float) -> Figure:
+def require_matplotlib() -> None:
+    """:class:`~solver.errors.MissingExtraError` (the ``plots`` extra) when matplotlib, which
+    every chart and report needs, is not installed."""
     require("matplotlib", feature=_FEATURE)
+
+
+def _new_figure(width: float, height: float) -> Figure:
+    require_matplotlib()
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
@@ -372,7 +378,7 @@ def matrix_figure(solution: Solution) -> Figure:
     characteristic); a cell's shade is the share of the type's valid robots whose configuration
     uses the component, its text the number of configurations that do. Blank: the type never
     needs it."""
-    require("matplotlib", feature=_FEATURE)
+    require_matplotlib()
     return draw_matrix(matrix_chart(solution))
 
 

@@ -61,8 +61,12 @@ def serve(
     *,
     announce: Callable[[str], None],
     open_browser: bool = False,
+    warn: Callable[[str], None] = lambda _message: None,
 ) -> None:
-    """Serve ``studio`` on ``sock`` until interrupted (SIGINT, SIGTERM), then return."""
+    """Serve ``studio`` on ``sock`` until interrupted (SIGINT, SIGTERM), then return.
+
+    ``announce`` is given the page's address; ``warn`` a message when ``open_browser`` finds
+    no browser to open it in (a machine without a display)."""
     from solver.studio.app import make_app
 
     port = int(sock.getsockname()[1])
@@ -83,7 +87,8 @@ def serve(
     if open_browser:
         import webbrowser
 
-        webbrowser.open(url)
+        if not webbrowser.open(url):
+            warn("no browser could be opened here: open the address above in one")
     # uvicorn stops on SIGINT and SIGTERM, then raises the signal again for the handler that was
     # there before: ours ends the serving as Ctrl-C does, so the caller's clean-up runs.
     previous = signal.signal(signal.SIGTERM, _stopped)
