@@ -17,6 +17,8 @@ The package has wings; each is a package with its own map in its docstring:
                        message, text output, finding and event uses it
 ``limits``             every size a command accepts, in one table (docs/security.md)
 ``lazy``               packages that load what they export on first use (PEP 562)
+``collector``          Python's cycle collector held off while many acyclic values
+                       are built (reading, solving)
 ``files``              reading input safely (size limits, YAML with positions,
                        typed access, file kinds) and writing output atomically
 ``ros``                ROS vocabulary with no I/O: topics, message-type names
@@ -39,9 +41,9 @@ The package has wings; each is a package with its own map in its docstring:
 
 Layers, lowest first; a module imports only from its own layer or lower ones, and no module
 imports itself back through others (tests/test_architecture.py checks both):
-``errors``, ``extras``, ``untrusted``, ``limits`` -> ``files``, ``ros`` -> ``core``,
-``engines`` -> ``layouts`` -> ``reporting`` -> ``check``, ``identify`` -> ``live`` -> ``cli``,
-``studio``.
+``errors``, ``extras``, ``untrusted``, ``limits``, ``lazy``, ``collector`` -> ``files``,
+``ros`` -> ``core``, ``engines`` -> ``layouts`` -> ``reporting`` -> ``check``, ``identify``
+-> ``live`` -> ``cli``, ``studio``.
 
 Every command from Python (docs/python-api.md has worked examples):
 

@@ -15,6 +15,7 @@ from dataclasses import replace
 from pathlib import Path
 from typing import Any, Literal
 
+from solver.collector import collector_paused
 from solver.core.constraints import Condition, RuleConstraint, Value
 from solver.core.ruleset import Characteristic, Component, Kind, RuleSet, Run, one_component_each
 from solver.errors import RulesError, did_you_mean
@@ -25,7 +26,6 @@ from solver.files.yamlio import (
     MAX_FILE_BYTES,
     Document,
     PathPart,
-    collector_paused,
     parse_document,
 )
 from solver.limits import limit
@@ -109,7 +109,7 @@ _KEPT_FILES = 16
 _KEPT_CHARS = 1 << 18
 
 
-@collector_paused()  # building many values: see there
+@collector_paused()  # building many values: see solver/collector.py
 def parse_rules(document: Document) -> RuleSet:
     """Build a :class:`RuleSet` from an already loaded document.
 

@@ -20,6 +20,7 @@ from functools import cached_property
 from typing import Any, Literal
 
 from solver import engines
+from solver.collector import collector_paused
 from solver.core.constraints import Value
 from solver.core.contracts import solution_data
 from solver.core.forbidden import Removed, removed_by_constraints
@@ -155,6 +156,7 @@ class Solution:
         )
 
 
+@collector_paused()  # listing many configurations: see solver/collector.py
 def solve(
     team: Team,
     *,

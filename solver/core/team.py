@@ -26,6 +26,7 @@ import os
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from solver.collector import collector_paused
 from solver.core.constraints import Value
 from solver.core.rules import (
     default_rules_path,
@@ -38,7 +39,7 @@ from solver.core.ruleset import Characteristic, RuleSet, Run
 from solver.errors import InputError, Location, TeamError, did_you_mean
 from solver.files.filekind import require_kind
 from solver.files.reader import Reader
-from solver.files.yamlio import Document, collector_paused, load_document
+from solver.files.yamlio import Document, load_document
 from solver.limits import limit
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
@@ -160,7 +161,7 @@ def load_team(
     return parse_team(document, rules, folder=Path(path).parent)
 
 
-@collector_paused()  # building many values: see there
+@collector_paused()  # building many values: see solver/collector.py
 def parse_team(
     document: Document, rules: RuleSet | str | Path | None = None, *, folder: Path | None = None
 ) -> Team:

@@ -23,15 +23,15 @@ and use
 from __future__ import annotations
 
 import contextlib
-import gc
 import re
-from collections.abc import Collection, Iterator, Sequence
+from collections.abc import Collection, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 import yaml
 
+from solver.collector import collector_paused
 from solver.errors import Fault, InputError, Location
 from solver.files.inputfile import decode_text, read_bounded, read_text, sha256_hex
 
@@ -195,25 +195,6 @@ def parse_document(
 # with the square of the flow depth (a few milliseconds here, and libyaml >= 0.2.5 stops at
 # 1,000 levels anyway); building values stops at MAX_DEPTH and MAX_NODES by itself.
 _SHORT_TEXT = 4096
-
-
-@contextlib.contextmanager
-def collector_paused() -> Iterator[None]:
-    """Python's cycle collector held off while a document's values are built.
-
-    Reading makes an object or more for every node, none of them in a cycle, and the collector
-    walks every live object each time the old generation has grown by a quarter: with tens of
-    thousands of values those walks made reading grow faster than the file (3.4x per doubling
-    at 10,240 values; 2x without them). The input is bounded (:data:`MAX_NODES`), so what is
-    held meanwhile is too; the collector is on again, as it was, when the block ends.
-    """
-    enabled = gc.isenabled()
-    gc.disable()
-    try:
-        yield
-    finally:
-        if enabled:
-            gc.enable()
 
 
 def prescan(text: str, name: str = "<string>") -> None:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import gc
 from collections.abc import Callable
 from pathlib import Path
 
@@ -152,3 +153,24 @@ def test_a_value_in_no_component_leaves_its_robots_unserved(write_file: WriteFil
     )
     totals = solve(team).totals
     assert (totals.valid_robots, totals.ui_configurations, totals.unserved_robots) == (3, 1, 1)
+
+
+def test_solving_holds_the_cycle_collector_off_and_leaves_it_on() -> None:
+    # Hundreds of configurations: thousands of objects, none in a cycle (solver/collector.py).
+    team = load_team("search-and-rescue")
+    assert gc.isenabled()
+    started: list[int] = []
+
+    def seen(phase: str, info: dict[str, int]) -> None:
+        if phase == "start":
+            started.append(info["generation"])
+
+    gc.callbacks.append(seen)
+    try:
+        solution = solve(team)
+    finally:
+        gc.callbacks.remove(seen)
+    assert len(solution.configurations) > 700  # a collection every 700 new objects otherwise
+    # At most the one deferred collection, as the collector comes back on at the end.
+    assert len(started) <= 1
+    assert gc.isenabled()
