@@ -27,6 +27,7 @@ to only assert the findings.
 from __future__ import annotations
 
 import re
+import time
 from collections import Counter
 from pathlib import Path
 
@@ -195,6 +196,9 @@ def test_check_large_rule_set(benchmark: BenchmarkFixture, tmp_path: Path) -> No
     _assert_findings(report)
 
 
+# CPU time, five rounds: the growth ratio is the claim, and three rounds of wall time on a
+# shared machine moved it by half from run to run (1.9x then 2.8x for the same code).
+@pytest.mark.benchmark(timer=time.process_time)
 @pytest.mark.parametrize("scale", [1, 2, 4], ids=["x1", "x2", "x4"])
 def test_check_doubled_rule_sets(benchmark: BenchmarkFixture, tmp_path: Path, scale: int) -> None:
     """The large rule set with types, sensor types and constraints doubled, then doubled again.
@@ -207,7 +211,7 @@ def test_check_doubled_rule_sets(benchmark: BenchmarkFixture, tmp_path: Path, sc
     rules.write_text(rule_text(scale), encoding="utf-8")
     # pytest-benchmark ships no type hints.
     report = benchmark.pedantic(  # type: ignore[no-untyped-call]
-        check_files, args=([rules],), rounds=3, iterations=1
+        check_files, args=([rules],), rounds=5, iterations=1
     )
     _assert_findings(report, scale)
 
