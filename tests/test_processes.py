@@ -1,5 +1,5 @@
 """The suite ends what it starts: the run's mark finds every process a test started, and a run
-that leaves one alive fails (:mod:`tests.processes`)."""
+that leaves one alive fails (:mod:`tests.leaks`)."""
 
 from __future__ import annotations
 
@@ -9,8 +9,9 @@ import sys
 from pathlib import Path
 
 from tests.conftest import ROOT
+from tests.leaks import GRACE_VARIABLE
 from tests.live.roscore import wait_until
-from tests.processes import GRACE_VARIABLE, MARK, end, marked, run_mark
+from tests.processes import MARK, end, marked, run_mark
 
 
 def test_a_process_started_by_a_test_carries_the_runs_mark_and_is_found_and_ended() -> None:
@@ -43,7 +44,7 @@ def test_a_run_that_leaves_a_process_alive_fails_and_ends_it(tmp_path: Path) -> 
     environment["PYTHONPATH"] = str(ROOT)
     environment[GRACE_VARIABLE] = "1"  # the leak sleeps for ten minutes: no need to wait ten s
     result = subprocess.run(
-        [sys.executable, "-m", "pytest", "-p", "tests.processes", "-q", str(tmp_path)],
+        [sys.executable, "-m", "pytest", "-p", "tests.leaks", "-q", str(tmp_path)],
         cwd=tmp_path,
         env=environment,
         capture_output=True,

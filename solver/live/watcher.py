@@ -35,14 +35,16 @@ choose among them (:mod:`solver.live.given`, :mod:`solver.live.selection`). A na
 know no characteristic of, or a robot's value that is not text, is a located ``warning`` event
 (once while it lasts; at most :data:`MAX_WARNINGS` a poll).
 
-*Write-back*: the answer to the active selection is written to ``/teleop_ui/ui_configuration``
-(deleted with no active robot) whenever what is on the master differs from it, with the
-watcher's node name under ``watcher``. Two watchers on one master with different teams or
-rules would overwrite each other's answer on every push; so every watcher announces itself and
-reports the others as ``rival`` events (:mod:`solver.live.rivals`), and a yielding watcher (the
-default) does not overwrite an answer written by another watcher that is still running (the
-source says so: :meth:`GraphSource.running_watcher`): it leaves that answer there and says so
-in the selection's notes. An insisting one (``policy="insist"``) writes over a yielding rival's
+*Write-back*: a watcher that follows the graph (:meth:`Watcher.events`; a :meth:`snapshot`
+alone writes nothing) writes the answer to the active selection to
+``/teleop_ui/ui_configuration`` (deleted with no active robot) whenever what is on the master
+differs from it, with the watcher's node name under ``watcher``. Two watchers on one master
+with different teams or rules would overwrite each other's answer on every push; so every
+watcher announces itself and reports the others as ``rival`` events
+(:mod:`solver.live.rivals`), and a yielding watcher (the default) does not overwrite an answer
+written by another watcher that is still running (the source says so:
+:meth:`GraphSource.running_watcher`): it leaves that answer there and says so in the
+selection's notes. An insisting one (``policy="insist"``) writes over a yielding rival's
 answer, never over an insisting one's. Once that watcher is gone, the parameter is taken over
 at the next poll. A writer the source can tell is no watcher (on ROS 1, a node API that is not
 ``http://host:port/``) is overwritten, with a note. Watchers with the same team agree, and
@@ -202,7 +204,9 @@ class Watcher:
         self._robot_warnings: list[tuple[str, str]] = []  # the robots' own, at the last poll
         # The last observation and the robots found in it (a graph that did not change).
         self._discovered: tuple[Observation, tuple[RobotSource, ...]] | None = None
-        # Only a watcher that follows the graph announces itself: a snapshot is no rival.
+        # Only a watcher that follows the graph announces itself and writes its answer: a
+        # snapshot (:meth:`snapshot` alone, ``watch --once``) is a look, no rival, and leaves
+        # the graph as it found it.
         self._announcing = False
         self._robots: dict[str, _Tracked] = {}
         self._no_selection = selection_data(None, Request(), solution)
@@ -314,6 +318,9 @@ class Watcher:
 
     def snapshot(self) -> list[Event]:
         """One full synchronisation: ``robot_added`` per robot, the selection, ``synced``.
+
+        Alone (before :meth:`events`, which starts with one), it only reads the graph: no
+        announcement and no answer written.
 
         :class:`~solver.live.graph.MasterError` when the graph cannot be read.
         """
@@ -522,7 +529,11 @@ class Watcher:
     def _select(self, params: dict[str, Any], request: Request) -> list[Event]:
         selection = select(request, {ns: t.robot for ns, t in self._robots.items()}, self.solution)
         wanted = ui_configuration_value(selection, self.solution, self.caller_id)
-        note = self._write_back(params.get(_RESULT_KEY, MISSING), wanted, selection)
+        note = (
+            self._write_back(params.get(_RESULT_KEY, MISSING), wanted, selection)
+            if self._announcing
+            else None
+        )
         if note is not None and selection is not None:
             selection = dataclasses.replace(selection, notes=(*selection.notes, note))
         data = selection_data(selection, request, self.solution)

@@ -434,3 +434,16 @@ def test_assign_without_master_keeps_its_old_rules() -> None:
     robot = run_cli("assign", "--team", "case3", "--robot", "/uav1", "kinematic_type=UAV")
     assert robot.returncode == 2
     assert "--robot needs --master URL" in robot.stderr
+
+
+def test_once_only_looks_the_master_keeps_no_answer_of_it(
+    master: Roscore, node: TestNode, solution: Solution
+) -> None:
+    put_drone(node, "/uav1")
+    node.set_param("/teleop_ui/active_robot", "/uav1")
+    result = run_cli("watch", "--master", master.uri, "--team", "case3", "--once")
+    assert result.returncode == 0, result.stderr
+    selection = [json.loads(line) for line in result.stdout.splitlines()][1]
+    assert selection["assignment"]["configuration"] == drone_configuration(solution)
+    assert node.get_param("/teleop_ui/ui_configuration") is MISSING
+    assert node.get_param("/teleop_ui/watchers") is MISSING

@@ -120,3 +120,16 @@ def test_the_demo_without_a_configuration_writes_a_loopback_one_and_says_how_to_
         "operator selects /ugv1 Driving",
         "  no answer yet (is a watcher running? teleop-ui watch --ros2 ...)",
     ]
+
+
+def test_the_ros1_demo_fleet_runs_where_only_the_tool_is_installed() -> None:
+    # The README installs `.[all]`, without the test tools: the demo fleet of docs/live.md
+    # (tools/demo_fleet.py) must start without pytest.
+    code = (
+        "import sys; sys.modules['pytest'] = None\n"
+        "import runpy; runpy.run_path('tools/demo_fleet.py', run_name='demo')\n"
+    )
+    done = subprocess.run(
+        [sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, check=False
+    )
+    assert done.returncode == 0, done.stderr
