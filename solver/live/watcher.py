@@ -55,8 +55,10 @@ leave each other's equal answers alone.
 when the master answers gives ``master_back`` and synchronises again.
 
 *Stopping* (:meth:`Watcher.stop`: SIGTERM, a ``shutdown`` call, Ctrl-C's handler) cuts off the
-call under way within :data:`_STOP_GRACE` seconds, however the master behaves; closing the
-source then releases what it holds (on ROS 1, within half a second).
+call under way within :data:`_STOP_GRACE` seconds, however the master behaves; closing takes the
+watcher's answer back when it is still its own (within :data:`_WITHDRAW_BUDGET`: left there, it
+would name a node that no longer runs), then the source releases what it holds (on ROS 1,
+within half a second).
 
 Nothing here prints: events are yielded to the caller (the CLI writes them).
 
@@ -125,6 +127,8 @@ MAX_WARNINGS = 20
 _MIN_GAP = 0.01
 # After stop(), the call under way ends within this.
 _STOP_GRACE = 0.2
+# A stopping watcher's answer taken back (read, then deleted) within this, whatever the graph.
+_WITHDRAW_BUDGET = 0.5
 _RESULT_KEY = RESULT_PARAM.rsplit("/", 1)[1]
 
 
@@ -266,12 +270,28 @@ class Watcher:
         return self._stop.is_set()
 
     def close(self) -> None:
-        """Release what the source holds (best effort, bounded) and close it; idempotent."""
+        """Take this watcher's answer back, release what the source holds (best effort,
+        bounded) and close it; idempotent."""
         self._stop.set()
         if self._closed:
             return
         self._closed = True
+        if self._announcing:
+            self._withdraw_answer()
         self.source.close()
+
+    def _withdraw_answer(self) -> None:
+        """Delete the answer if it is still this watcher's: left there, it would name a node
+        that no longer runs, and an operator station reading it would show a stale
+        configuration. Another watcher still running writes its own at its next poll."""
+        self.source.cut_off(time.monotonic() + _WITHDRAW_BUDGET)
+        try:
+            _, params = self.source.observe_params(NAMESPACE)
+            present = dict(params).get(_RESULT_KEY)
+            if isinstance(present, dict) and present.get(WRITER_KEY) == self.caller_id:
+                self.source.delete_param(RESULT_PARAM)
+        except MasterError:
+            pass  # the graph is gone or too slow: nothing more to do on the way out
 
     def wait_for_master(self, on_waiting: Callable[[MasterError], None] | None = None) -> bool:
         """Retry until the master answers (``True``) or :meth:`stop` (``False``).

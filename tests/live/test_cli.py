@@ -447,3 +447,20 @@ def test_once_only_looks_the_master_keeps_no_answer_of_it(
     assert selection["assignment"]["configuration"] == drone_configuration(solution)
     assert node.get_param("/teleop_ui/ui_configuration") is MISSING
     assert node.get_param("/teleop_ui/watchers") is MISSING
+
+
+def test_a_watch_that_stops_takes_its_answer_back(
+    master: Roscore, node: TestNode, watch_process: Callable[..., WatchProcess]
+) -> None:
+    put_drone(node, "/uav1")
+    node.set_param("/teleop_ui/active_robot", "/uav1")
+    watch = watch_process("--master", master.uri, "--team", "case3")
+    wait_until(
+        lambda: isinstance(node.get_param("/teleop_ui/ui_configuration"), dict),
+        TIMEOUT,
+        "the answer",
+    )
+    watch.process.send_signal(signal.SIGTERM)
+    assert watch.wait() == 0
+    # Left there, it would name a node that no longer runs: an operator station would show it.
+    assert node.get_param("/teleop_ui/ui_configuration") is MISSING

@@ -186,6 +186,31 @@ def test_switching_the_active_robot_publishes_its_configuration(
         operator.close()
 
 
+def test_a_watcher_that_stops_takes_its_answer_back(
+    domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution
+) -> None:
+    domain.rover("/ugv1")
+    watch = watch_ros2()
+    watch.wait_for(configured("/ugv1", rover_configuration(solution)), "/ugv1")
+    operator = Operator(domain.id)
+    try:
+        operator.activate("/ugv1")
+        wait_until(
+            lambda: (a := operator.answer()) and a.get("robot") == "/ugv1" and a,
+            TIMEOUT,
+            "the answer for /ugv1",
+        )
+        watch.stop()
+        # The operator's reader keeps the last answer it got: "null" says there is none now.
+        wait_until(
+            lambda: operator.answer() is None and operator.answers[-1] is None,
+            TIMEOUT,
+            "the answer taken back",
+        )
+    finally:
+        operator.close()
+
+
 def test_the_active_motion_control_topic_selects_as_the_ros1_parameter_does(
     domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution
 ) -> None:
