@@ -152,6 +152,16 @@ def test_two_robots_with_the_same_description_are_both_reported_and_parsed_once(
     assert watch.watcher.cache.misses == 1
 
 
+def answer_for(operator: Operator, robot: str) -> dict[str, Any]:
+    """The first answer the operator reads for ``robot``."""
+    found: dict[str, Any] = wait_until(
+        lambda: (a := operator.answer()) and a.get("robot") == robot and a,
+        TIMEOUT,
+        f"the answer for {robot}",
+    )
+    return found
+
+
 def test_switching_the_active_robot_publishes_its_configuration(
     domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution
 ) -> None:
@@ -168,19 +178,11 @@ def test_switching_the_active_robot_publishes_its_configuration(
             "selection of /ugv1",
         )
         assert selected["assignment"]["configuration"] == rover_configuration(solution)
-        answer = wait_until(
-            lambda: (a := operator.answer()) and a.get("robot") == "/ugv1" and a,
-            TIMEOUT,
-            "the answer for /ugv1",
-        )
+        answer = answer_for(operator, "/ugv1")
         assert answer["configuration"] == rover_configuration(solution)
         assert answer["watcher"] == watch.watcher.caller_id
         operator.activate("/uav1")
-        answer = wait_until(
-            lambda: (a := operator.answer()) and a.get("robot") == "/uav1" and a,
-            TIMEOUT,
-            "the answer for /uav1",
-        )
+        answer = answer_for(operator, "/uav1")
         assert answer["configuration"] == drone_configuration(solution)
     finally:
         operator.close()
@@ -195,11 +197,7 @@ def test_a_watcher_that_stops_takes_its_answer_back(
     operator = Operator(domain.id)
     try:
         operator.activate("/ugv1")
-        wait_until(
-            lambda: (a := operator.answer()) and a.get("robot") == "/ugv1" and a,
-            TIMEOUT,
-            "the answer for /ugv1",
-        )
+        answer_for(operator, "/ugv1")
         watch.stop()
         # The operator's reader keeps the last answer it got: "null" says there is none now.
         wait_until(
@@ -512,11 +510,7 @@ def test_the_operators_choice_of_a_characteristic_of_the_users_own_changes_the_a
         assert second["configuration"] == drone(solution, autonomy="supervised", link="LTE")
         assert second["configuration"] != first["configuration"]
         operator.activate("/ugv1")
-        third = wait_until(
-            lambda: (a := operator.answer()) and a.get("robot") == "/ugv1" and a,
-            TIMEOUT,
-            "the answer for /ugv1",
-        )
+        third = answer_for(operator, "/ugv1")
         assert third["configuration"] == rover(solution, autonomy="supervised", link="Tether")
         # A name the rules do not know: a located warning, nothing else changes.
         mark = watch.mark()
