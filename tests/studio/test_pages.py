@@ -91,7 +91,8 @@ def test_ticking_the_articles_three_cases_shows_their_figures(
     expect(page.locator("#total-robots")).to_have_text("872")
     expect(page.locator("#total-configurations")).to_have_text("102")
     published = page.locator("#published")
-    expect(published).to_contain_text("published: 820 valid robots / 99 UI configurations")
+    expect(published).to_contain_text("820 valid robots / 99 UI configurations")
+    expect(published).not_to_contain_text("published")  # the term beside it says it once
     expect(published).to_contain_text("NOT reproduced: these rules give 872 / 102")
     # The last change cost something, and says how much.
     expect(page.locator("#change")).to_contain_text("Last change:")
@@ -169,9 +170,27 @@ def test_an_empty_choice_is_a_located_error_in_the_page_and_the_next_change_is_s
     expect(page.locator("#faults")).to_contain_text("team.UAV.motion_control")
     expect(page.locator("#faults")).to_contain_text("empty selection for 'motion_control'")
     expect(group.locator("[data-faults-for]")).to_contain_text("empty selection")
+    # The counts shown are the last selection's that could be solved, and say so.
+    expect(page.locator("#totals")).to_have_attribute("data-stale", "")
+    expect(page.locator("#change")).to_have_text(
+        "Not updated: the selection has problems; the counts are the last ones without."
+    )
     group.get_by_label("Flight", exact=True).check()
     expect(page.locator("#total-robots")).to_have_text("15")
     expect(page.locator("#faults")).to_be_empty()
+    expect(page.locator("#totals")).not_to_have_attribute("data-stale", "")
+
+
+def test_on_a_phone_nothing_is_wider_than_the_screen(start_studio: StartStudio, page: Page) -> None:
+    server = start_studio("case3")
+    page.set_viewport_size({"width": 375, "height": 667})
+    page.goto(server.url)
+    expect(page.locator("#total-robots")).to_have_text("872")
+    selection = urlsplit(page.url).query
+    for address in (page.url, f"{server.base}configurations?{selection}"):
+        page.goto(address)
+        expect(page.locator("main")).to_be_visible()
+        assert page.evaluate("document.documentElement.scrollWidth") <= 375, address
 
 
 def test_configurations_open_compare_and_a_robot_is_looked_up(

@@ -322,6 +322,11 @@
     // The selection cannot be solved: the totals and the chart keep the last one that could,
     // and say so.
     function unanswered(query) {
+      const totals = document.getElementById("totals");
+      if (totals.dataset.query) {
+        totals.dataset.stale = "";
+        setText("change", "Not updated: the selection has problems; the counts are the last ones without.");
+      }
       answer("totals", query);
       if (figure && !figure.hidden) {
         chartState("stale", "Not redrawn: the selection has problems; the chart shows the last one without.");
@@ -515,6 +520,7 @@
     }
 
     function showTotals(data) {
+      delete document.getElementById("totals").dataset.stale;
       const body = document.getElementById("by-type");
       body.replaceChildren(
         ...data.by_type.map((t) =>
@@ -541,7 +547,7 @@
           ? "reproduced"
           : `NOT reproduced: these rules give ${data.totals.valid_robots} / ${data.totals.ui_configurations}`;
         published.replaceChildren(
-          `published: ${p.valid_robots} valid robots / ${p.ui_configurations} UI configurations${source}: `,
+          `${p.valid_robots} valid robots / ${p.ui_configurations} UI configurations${source}: `,
           verdict,
         );
       } else {
