@@ -159,6 +159,30 @@ def test_undo_and_redo_walk_back_and_forth_through_changes(
     assert ("UAV.motion_control", "Flight") in parse_qsl(urlsplit(page.url).query)
 
 
+def test_undo_and_the_browsers_back_walk_one_history(start_studio: StartStudio, page: Page) -> None:
+    server = start_studio("case1")
+    page.goto(server.url)
+    expect(page.locator("#total-robots")).to_have_text("30")
+    group = page.locator('fieldset[data-key="UAV.motion_control"]')
+    group.get_by_label("Waypoint", exact=True).uncheck()
+    expect(page.locator("#total-robots")).to_have_text("15")
+    group.get_by_label("Joint", exact=True).check()
+    expect(page.locator("#total-robots")).to_have_text("30")
+    page.go_back()  # Joint unticked again
+    expect(page.locator("#total-robots")).to_have_text("15")
+    expect(group.get_by_label("Joint", exact=True)).not_to_be_checked()
+    page.get_by_role("button", name="Undo").click()  # further back: Waypoint ticked again
+    expect(group.get_by_label("Waypoint", exact=True)).to_be_checked()
+    expect(page.locator("#total-robots")).to_have_text("30")
+    expect(page.get_by_role("button", name="Undo")).to_be_disabled()  # the page's first state
+    page.go_forward()
+    expect(group.get_by_label("Waypoint", exact=True)).not_to_be_checked()
+    page.keyboard.press("Control+Shift+Z")  # redo after Forward: Joint ticked again
+    expect(group.get_by_label("Joint", exact=True)).to_be_checked()
+    expect(page.locator("#total-robots")).to_have_text("30")
+    expect(page.get_by_role("button", name="Redo")).to_be_disabled()
+
+
 def test_an_empty_choice_is_a_located_error_in_the_page_and_the_next_change_is_served(
     start_studio: StartStudio, page: Page
 ) -> None:

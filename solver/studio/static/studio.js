@@ -19,8 +19,13 @@
     let current = selectionQuery();
     let shown = null; // the totals last shown, to say what a change cost
     let asked = 0; // answers to older questions are dropped
-    const past = [];
-    const future = [];
+    // Undo and Redo walk the browser's history of this page's changes, as Back and Forward do:
+    // one history, whichever way a step is taken. Each change is an entry numbered "index";
+    // Undo stops at the entry the page was loaded at, Redo at the newest change.
+    const state = window.history.state;
+    let index = state && Number.isInteger(state.index) ? state.index : 0;
+    const floor = index;
+    let top = index;
     const undo = document.getElementById("undo");
     const redo = document.getElementById("redo");
     const historyButtons = document.querySelector("[data-history]");
@@ -31,7 +36,7 @@
     if (initial) {
       shown = initial;
     }
-    window.history.replaceState({ query: current }, "", "/?" + withView(current));
+    window.history.replaceState({ query: current, index }, "", "/?" + withView(current));
 
     // What each part of the page shows, by the selection it answers: the totals, the radar
     // chart and the check's findings. When all three answer the selection the page holds, the
@@ -86,8 +91,8 @@
       changed();
     });
     if (undo && redo) {
-      undo.addEventListener("click", () => step(past, future));
-      redo.addEventListener("click", () => step(future, past));
+      undo.addEventListener("click", () => step(-1));
+      redo.addEventListener("click", () => step(1));
     }
     document.addEventListener("keydown", (event) => {
       const typing = event.target.matches("input[type=text], input:not([type]), textarea");
@@ -97,14 +102,22 @@
       const key = event.key.toLowerCase();
       if (key === "z" && !event.shiftKey) {
         event.preventDefault();
-        step(past, future);
+        step(-1);
       } else if ((key === "z" && event.shiftKey) || key === "y") {
         event.preventDefault();
-        step(future, past);
+        step(1);
       }
     });
     window.addEventListener("popstate", (event) => {
-      const query = (event.state && event.state.query) || window.location.search.slice(1);
+      const entry = event.state || {};
+      const query = entry.query || window.location.search.slice(1);
+      if (Number.isInteger(entry.index)) {
+        index = entry.index;
+      }
+      if (new URLSearchParams(query).get("rules") !== form.elements.rules.value) {
+        window.location.assign("/?" + query);
+        return;
+      }
       apply(query);
       current = selectionQuery();
       ask(current);
@@ -115,33 +128,26 @@
       if (query === current) {
         return;
       }
-      past.push(current);
-      future.length = 0;
       current = query;
-      window.history.pushState({ query }, "", "/?" + withView(query));
+      index += 1;
+      top = index;
+      window.history.pushState({ query, index }, "", "/?" + withView(query));
       ask(query);
     }
 
-    function step(from, to) {
-      if (!from.length) {
+    // One step back (-1) or forward (1) through the changes: the browser's own, so Back,
+    // Forward, Undo and Redo agree; popstate applies the selection it comes to.
+    function step(delta) {
+      if (delta < 0 ? index <= floor : index >= top) {
         return;
       }
-      to.push(current);
-      const query = from.pop();
-      if (new URLSearchParams(query).get("rules") !== form.elements.rules.value) {
-        window.location.assign("/?" + query);
-        return;
-      }
-      apply(query);
-      current = selectionQuery();
-      window.history.pushState({ query: current }, "", "/?" + withView(current));
-      ask(current);
+      window.history.go(delta);
     }
 
     function buttons() {
       if (undo && redo) {
-        undo.disabled = past.length === 0;
-        redo.disabled = future.length === 0;
+        undo.disabled = index <= floor;
+        redo.disabled = index >= top;
       }
     }
 
