@@ -205,6 +205,19 @@ def test_an_empty_choice_is_a_located_error_in_the_page_and_the_next_change_is_s
     expect(page.locator("#totals")).not_to_have_attribute("data-stale", "")
 
 
+def test_a_typo_in_the_address_is_shown_at_its_control(
+    start_studio: StartStudio, page: Page
+) -> None:
+    server = start_studio("case1")
+    page.goto(f"{server.base}?rules=paper&type=UAV&UAV.motion_control=Waypont")
+    expect(page.locator("#faults")).to_contain_text("team.UAV.motion_control")
+    slot = page.locator('fieldset[data-key="UAV.motion_control"] [data-faults-for]')
+    expect(slot).to_contain_text("'Waypont'")
+    expect(page.locator("#change")).to_have_text(
+        "Not solved: the selection has problems (above, and at their controls)."
+    )
+
+
 def test_on_a_phone_nothing_is_wider_than_the_screen(start_studio: StartStudio, page: Page) -> None:
     server = start_studio("case3")
     page.set_viewport_size({"width": 375, "height": 667})
