@@ -181,6 +181,12 @@ def test_undo_and_the_browsers_back_walk_one_history(start_studio: StartStudio, 
     expect(group.get_by_label("Joint", exact=True)).to_be_checked()
     expect(page.locator("#total-robots")).to_have_text("30")
     expect(page.get_by_role("button", name="Redo")).to_be_disabled()
+    # A rename is a change too, and the header names the team as the page has it.
+    page.get_by_label("Team name").fill("My team")
+    page.get_by_label("Team name").press("Enter")
+    expect(page.locator("#context-team")).to_have_text("My team")
+    page.get_by_role("button", name="Undo").click()
+    expect(page.locator("#context-team")).to_have_text("Case 1")
 
 
 def test_an_empty_choice_is_a_located_error_in_the_page_and_the_next_change_is_served(

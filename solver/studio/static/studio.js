@@ -271,6 +271,8 @@
     async function ask(query) {
       buttons();
       keepLinks(query);
+      // The header names the team as the page now has it (renamed, or undone).
+      setText("context-team", form.elements.name.value.trim() || "studio team");
       const mine = ++asked;
       stale(query);
       findings(query);
