@@ -91,8 +91,7 @@ def write_all_atomic(files: Mapping[str | Path, Content]) -> list[Path]:
         try:
             written = 0  # by the files before, against the same budget
             for target, data in targets:
-                temporary, written = _temporary(target, data, written, budget)
-                temporaries.append((temporary, target))
+                written = _temporary(target, data, written, budget, temporaries)
             _replace_all(temporaries)
         finally:
             for temporary, _ in temporaries:
@@ -167,6 +166,20 @@ def _terminable() -> Iterator[None]:
         signal.signal(signal.SIGTERM, previous)
 
 
+@contextlib.contextmanager
+def _signals_held() -> Iterator[None]:
+    """SIGTERM and SIGINT held back for this thread while a step on the file system and its
+    record are made together; one that came meanwhile is handled as the block ends (Python
+    runs its handler at the next instruction), when the clean-up knows of the step."""
+    import signal
+
+    previous = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGTERM, signal.SIGINT})
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, previous)
+
+
 def _shown(path: str | Path) -> str:
     return shown(str(path), limit=SHOWN_FILE_NAME_CHARS)
 
@@ -194,22 +207,29 @@ def _in_the_way(target: Path) -> str | None:
 
 
 def _temporary(
-    target: Path, data: bytes | Iterator[bytes], written: int, budget: int
-) -> tuple[Path, int]:
-    """``data`` in a new temporary file in ``target``'s folder (created if needed), and the
-    bytes ``written`` with it; :class:`TooLargeError` (and no temporary) past ``budget``."""
+    target: Path,
+    data: bytes | Iterator[bytes],
+    written: int,
+    budget: int,
+    made: list[tuple[Path, Path]],
+) -> int:
+    """``data`` in a new temporary file in ``target``'s folder (created if needed), listed in
+    ``made`` with its target as it is created; the bytes ``written`` with it.
+    :class:`TooLargeError` (and no temporary) past ``budget``."""
     folder = target.parent if str(target.parent) else Path(".")
     try:
         folder.mkdir(parents=True, exist_ok=True)
         # The temporary's name is the target's and 13 more characters: cut, so that a target
         # name near the system's limit (255 bytes) still has room for one.
         prefix = f".{target.name[:_KEPT_NAME]}."
-        handle, name = tempfile.mkstemp(prefix=prefix, suffix=".tmp", dir=folder)
+        with _signals_held():  # listed as soon as it exists: the caller's clean-up finds it
+            handle, name = tempfile.mkstemp(prefix=prefix, suffix=".tmp", dir=folder)
+            temporary = Path(name)
+            made.append((temporary, target))
     except OSError as error:
         raise InputError.at(
             _shown(target), f"cannot write here: {error.strerror or error}"
         ) from None
-    temporary = Path(name)
     try:
         with os.fdopen(handle, "wb") as stream:
             for chunk in (data,) if isinstance(data, bytes) else data:
@@ -230,7 +250,7 @@ def _temporary(
                 _shown(target), f"cannot write: {error.strerror or error}"
             ) from None
         raise
-    return temporary, written
+    return written
 
 
 def _replace_all(temporaries: list[tuple[Path, Path]]) -> None:
@@ -238,15 +258,18 @@ def _replace_all(temporaries: list[tuple[Path, Path]]) -> None:
     done: list[tuple[Path, Path | None]] = []  # (target, a copy of its old content)
     try:
         for index, (temporary, target) in enumerate(temporaries):
-            # Only a later failure needs the old content back; the last rename either
-            # happens or not.
-            backup = _backup(target) if index < len(temporaries) - 1 else None
-            try:
-                os.replace(temporary, target)
-            except BaseException:
-                _discard(backup)
-                raise
-            done.append((target, backup))
+            # A rename and its record are one step: a signal between them would leave a file
+            # renamed that no undo knows of.
+            with _signals_held():
+                # Only a later failure needs the old content back; the last rename either
+                # happens or not.
+                backup = _backup(target) if index < len(temporaries) - 1 else None
+                try:
+                    os.replace(temporary, target)
+                except BaseException:
+                    _discard(backup)
+                    raise
+                done.append((target, backup))
     except BaseException as error:
         for target, backup in reversed(done):
             with contextlib.suppress(OSError):
