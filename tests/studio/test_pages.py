@@ -365,6 +365,11 @@ def test_a_malformed_rule_file_uploaded_is_shown_with_its_line_and_the_studio_go
         encoding="utf-8",
     )
     page.goto(studio.url)
+    page.locator("legend").get_by_label("UAV", exact=True).check()  # a selection under way
+    page.get_by_label("Team name").fill("Mine")
+    page.get_by_label("Team name").press("Enter")
+    expect(page.locator("#context-team")).to_have_text("Mine")
+    edited = totals(page)
     page.get_by_label("Upload a rule set").set_input_files(bad)
     page.get_by_role("button", name="Upload rule set").click()
     faults = page.locator("#faults")
@@ -372,6 +377,11 @@ def test_a_malformed_rule_file_uploaded_is_shown_with_its_line_and_the_studio_go
     expect(faults).to_contain_text("duplicate value 'UAV'")
     expect(faults).to_contain_text("my-rules.yaml:6:")
     expect(faults).not_to_contain_text(str(tmp_path))
+    # The way back leads to the selection under way, which the page still names.
+    expect(page.locator("#context-team")).to_have_text("Mine")
+    page.get_by_role("link", name="back to the selection").click()
+    expect(page.get_by_label("Team name")).to_have_value("Mine")
+    expect(page.locator("#total-robots")).to_have_text(edited[0])
     # The next request is served, and a good rule set can still be uploaded and used.
     good = tmp_path / "good.yaml"
     good.write_text(

@@ -496,8 +496,9 @@
       for (const link of document.querySelectorAll("a[data-view-link]")) {
         link.href = "/?" + query + "&view=" + encodeURIComponent(link.dataset.viewLink);
       }
-      for (const upload of document.querySelectorAll("form.upload[action^='/team']")) {
-        upload.action = "/team?" + query;
+      // An upload that fails leads back to the selection under way.
+      for (const upload of document.querySelectorAll("form.upload[action^='/team'], form.upload[action^='/rules']")) {
+        upload.action = new URL(upload.action, window.location.href).pathname + "?" + query;
       }
     }
 
