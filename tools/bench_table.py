@@ -200,7 +200,7 @@ ROWS = [
     ("test_whole_process_cpu[solve case3]", "`teleop-ui solve case3`, whole process (CPU)", ""),
     ("test_whole_process_cpu[peer script]", "tools/peer_case3.py, whole process (CPU)", ""),
     (
-        "test_whole_process_cpu[identify]",
+        "test_whole_process_cpu[identify a URDF]",
         "`teleop-ui identify` of a URDF, whole process (CPU)",
         "",
     ),
@@ -478,7 +478,7 @@ RATIOS = [
     ),
     (
         "CPU: `identify` whole process / bare interpreter",
-        "test_whole_process_cpu[identify]",
+        "test_whole_process_cpu[identify a URDF]",
         "test_whole_process_cpu[bare interpreter]",
         "<= 3",
     ),
@@ -502,7 +502,7 @@ RATIOS = [
     ),
     (
         "CPU: `identify` whole process / its floor (PyYAML, dataclasses, lxml imported)",
-        "test_whole_process_cpu[identify]",
+        "test_whole_process_cpu[identify a URDF]",
         "test_whole_process_cpu[imports only: PyYAML, dataclasses, lxml]",
         "",
     ),
