@@ -12,6 +12,13 @@ every message, text output, finding and event uses for such a string:
   separators U+2028/U+2029, every format character of Unicode category Cf (bidirectional
   controls, zero-width joiners, U+061C, U+00AD, tag characters, the BOM), the spaces other
   than U+0020, surrogates, private-use and unassigned code points;
+- so is every character :meth:`str.isprintable` accepts that a terminal draws as nothing
+  (:data:`INVISIBLE`): the letters and marks of Unicode's ``Default_Ignorable_Code_Point``
+  property (the Hangul fillers U+115F, U+1160, U+3164, U+FFA0, which are letters; the
+  combining grapheme joiner; variation selectors, which can hide bytes after a letter; the
+  Khmer inherent vowels and Mongolian free variation selectors) and the symbols drawn empty
+  (U+2800 braille pattern blank, U+1D159 musical symbol null notehead). :func:`visible` says
+  whether a text needs none of this;
 - at most :data:`SHOWN_CHARS` (60) characters of it are shown; a longer value ends with a
   visible mark that says how long it was: ``xxx... (cut from 9,000,000 characters)``;
 - ``quoted=True`` puts it in quotes as Python's ``repr`` does (a quote or backslash inside is
@@ -27,7 +34,9 @@ escapes what its format requires), and the terminal stream (:mod:`solver.cli._te
 
 from __future__ import annotations
 
-__all__ = ["SHOWN_CHARS", "SHOWN_FILE_NAME_CHARS", "shown"]
+import re
+
+__all__ = ["INVISIBLE", "SHOWN_CHARS", "SHOWN_FILE_NAME_CHARS", "shown", "visible"]
 
 # What a message, a text output or an event shows of a stranger's value: at most this many
 # characters. docs/security.md says so.
@@ -41,6 +50,33 @@ _ITEMS = 6
 _LEVELS = 3
 
 _NAMED = {"\n": "\\n", "\r": "\\r", "\t": "\\t"}
+
+# Printable to str.isprintable, drawn as nothing. Unicode 15.1's Default_Ignorable_Code_Point
+# code points that are letters (Lo) or marks (Mn): the property's others are format characters
+# and unassigned ones, which isprintable refuses already. Then two symbols drawn blank. The
+# spaces (U+3000, U+00A0...) and U+180E are separators or format characters: escaped already.
+INVISIBLE = re.compile(
+    "[\u034f"  # combining grapheme joiner
+    "\u115f\u1160"  # Hangul choseong and jungseong fillers
+    "\u17b4\u17b5"  # Khmer inherent vowels
+    "\u180b-\u180d\u180f"  # Mongolian free variation selectors
+    "\u2800"  # braille pattern blank
+    "\u3164"  # Hangul filler
+    "\ufe00-\ufe0f"  # variation selectors 1-16
+    "\uffa0"  # halfwidth Hangul filler
+    "\U0001d159"  # musical symbol null notehead
+    "\U000e0100-\U000e01ef]"  # variation selectors 17-256
+)
+
+
+def visible(text: str) -> bool:
+    """Whether every character of ``text`` is shown as itself: printable, and none drawn as
+    nothing (:data:`INVISIBLE`). One pass in C for the common text.
+
+    >>> visible("UAV"), visible("a\\u3164b"), visible("a\\nb")
+    (True, False, False)
+    """
+    return text.isprintable() and (text.isascii() or INVISIBLE.search(text) is None)
 
 
 def shown(value: object, *, limit: int | None = SHOWN_CHARS, quoted: bool = False) -> str:
@@ -64,11 +100,13 @@ def shown(value: object, *, limit: int | None = SHOWN_CHARS, quoted: bool = Fals
         text = text[:limit]
     if quoted:
         text = repr(text)  # repr escapes exactly what isprintable() refuses, and quotes
+        if not text.isascii():
+            text = INVISIBLE.sub(lambda found: _escape(found.group()), text)
         if cut:
             text = f"{text[:-1]}...{text[-1]}"
     else:
-        if not text.isprintable():
-            text = "".join(char if char.isprintable() else _escape(char) for char in text)
+        if not visible(text):
+            text = "".join(char if visible(char) else _escape(char) for char in text)
         if cut:
             text += "..."
     if cut or items_left_out:

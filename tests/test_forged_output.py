@@ -332,3 +332,69 @@ def test_an_error_with_standard_error_full_still_exits_2() -> None:
         result = _solver("solve", "nothing", stdout=subprocess.PIPE, stderr=full)
     assert result.returncode == 2
     assert result.stdout == b""
+
+
+# ---- letters drawn as nothing (issue 36.14a) ---------------------------------------------------
+
+# The Hangul fillers are letters to str.isprintable; a terminal draws them as nothing.
+FILLERS = ("\u115f", "\u1160", "\u3164", "\uffa0")
+# A kinematic type at the 200-character bound for names: tables show such names whole.
+LONG_TYPE = "U" * 196 + "".join(FILLERS)
+FILLER_RULES = rf"""name: "R\u3164rules"
+characteristics:
+  kind:
+    label: "Kind\u115f"
+    values: ["{LONG_TYPE}", "UGV\uffa0"]
+  n: {{range: {{min: 1, max: 2}}}}
+"""
+FILLER_TEAM = rf"""name: "T\u3164team"
+rules: rules.yaml
+team:
+  "{LONG_TYPE}": {{}}
+  "UGV\uffa0": {{}}
+"""
+
+
+@pytest.mark.parametrize(
+    "args",
+    [["solve", "{team}"], ["solve", "{team}", "--list"], ["count", "{team}"], ["batch", "{team}"]],
+    ids=["solve", "solve-list", "count", "batch"],
+)
+def test_letters_drawn_as_nothing_reach_no_terminal_and_long_names_are_escaped_whole(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], args: list[str]
+) -> None:
+    (tmp_path / "rules.yaml").write_text(FILLER_RULES, encoding="utf-8")
+    team = tmp_path / "team.yaml"
+    team.write_text(FILLER_TEAM, encoding="utf-8")
+    more = ["-o", str(tmp_path / "out")] if args[0] == "batch" else []
+    status, out, err = run(capsys, *(a.format(team=team) for a in args), *more)
+    assert status == 0, err
+    assert not any(filler in out + err for filler in FILLERS)
+    escaped = "U" * 196 + "\\u115f\\u1160\\u3164\\uffa0"
+    if args[0] == "batch":
+        assert "T\\u3164team" in out
+        assert "R\\u3164rules" in out
+    else:
+        assert escaped in out  # the whole name, as the table shows it, escaped
+
+
+def test_json_on_a_terminal_escapes_letters_drawn_as_nothing_and_reads_back_the_same(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # A variation selector past U+FFFF: the terminal's escape (\U000e0100) is no JSON escape.
+    selector = ("UGV\\uffa0", "UGV\\U000e0100")
+    (tmp_path / "rules.yaml").write_text(FILLER_RULES.replace(*selector), encoding="utf-8")
+    team = tmp_path / "team.yaml"
+    team.write_text(FILLER_TEAM.replace(*selector), encoding="utf-8")
+    status, out, _ = run(capsys, "solve", team, "--format", "json")
+    assert status == 0
+    assert not any(char in out for char in (*FILLERS, "\U000e0100"))
+    data = json.loads(out)  # a JSON escape, not the terminal's \U000e0100
+    assert data["team"] == "T\u3164team"
+    assert {t["kinematic_type"] for t in data["by_type"]} == {LONG_TYPE, "UGV\U000e0100"}
+
+
+def test_the_terminal_net_escapes_letters_drawn_as_nothing() -> None:
+    from solver.cli._terminal import escape_controls
+
+    assert escape_controls("a\u3164b\tc\n\u2800") == "a\\u3164b\tc\n\\u2800"

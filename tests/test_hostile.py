@@ -76,7 +76,8 @@ def test_a_nul_byte_in_the_rules_path_is_a_located_error(tmp_path: Path) -> None
     team_file(tmp_path, rules='"a\\0b"')
     result = run_cli("solve", tmp_path / "team.yaml")
     assert_located_refusal(result, f"{tmp_path / 'team.yaml'}:2:8: rules:")
-    assert "contains a NUL byte" in result.stderr
+    # Text holds no NUL (issue 36.14b): the YAML reader refuses it before any path is made.
+    assert "contains a NUL character (\\0); not text" in result.stderr
 
 
 def test_a_number_of_5000_digits_is_a_located_error(tmp_path: Path) -> None:
@@ -249,7 +250,9 @@ FILE_READERS = {
 }
 
 
-def _command(reader: str, folder: Path, file: Path) -> list[str]:
+def _command(
+    reader: str, folder: Path, file: Path, readers: dict[str, list[str]] = FILE_READERS
+) -> list[str]:
     """The command line of ``reader`` with ``file`` in the hostile place, in ``folder``."""
     with_paper_rules(folder)
     (folder / "robots").mkdir()
@@ -260,7 +263,7 @@ def _command(reader: str, folder: Path, file: Path) -> list[str]:
         "robots": str(folder / "robots"),
         "urdf": str(_urdf(folder / "robots")),
     }
-    return [argument.format(**places) for argument in FILE_READERS[reader]]
+    return [argument.format(**places) for argument in readers[reader]]
 
 
 # ---- nesting: every YAML reader -------------------------------------------------------------
@@ -436,6 +439,42 @@ def test_a_secret_that_parses_as_a_mapping_is_named_never_quoted_by_every_yaml_r
         assert "the-secret" not in text  # ...and none of its keys is quoted
 
 
+# Files of other shapes where a profile or any YAML file is read (issue 36.13): /etc/passwd
+# given as an identification profile was quoted ("must be a mapping, got a string ('root:x:...')").
+FOREIGN_SHAPES = {
+    "/etc/passwd": f"{SECRET}\ndaemon:x:1:1::/:/bin/false\n",
+    "a scalar": "the-secret-password\n",
+    "a list": "- the-secret-one\n- the-secret-two\n",
+    "a syntax error on line 1": "the-secret: [the-secret, {\n",
+    "a tag": "!the-secret-tag the-secret-value\n",
+    "a key twice": "the-secret-key:\nthe-secret-key:\n",
+    "an Ansible vault": "the-secret-name: !vault |\n  $ANSIBLE_VAULT;1.1;AES256\n  3132\n",
+}
+# Profiles read before anything goes on the network: each command ends at its profile.
+PROFILE_READERS = {
+    **YAML_READERS,
+    "watch --profile": [
+        *["watch", "--master", "http://127.0.0.1:9", "--team", "{team}", "--once"],
+        *["--profile", "{file}"],
+    ],
+    "studio --profile": ["studio", "--profile", "{file}", "--host", "192.0.2.1", "--port", "0"],
+}
+
+
+@pytest.mark.parametrize("shape", list(FOREIGN_SHAPES))
+@pytest.mark.parametrize("reader", list(PROFILE_READERS))
+def test_a_file_of_no_kind_is_named_never_quoted_by_every_yaml_reader(
+    tmp_path: Path, reader: str, shape: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    secret = tmp_path / "foreign"
+    secret.write_text(FOREIGN_SHAPES[shape])
+    assert run_main(*_command(reader, tmp_path, secret, PROFILE_READERS)) in (1, 2)
+    shown = capsys.readouterr()
+    assert f"{secret}:" in shown.out + shown.err  # the file is named...
+    for text in (shown.out, shown.err, *_summaries(tmp_path / "batch")):
+        assert "the-secret" not in text  # ...and nothing of it is quoted
+
+
 def _summaries(out: Path) -> list[str]:
     return [
         (out / name).read_text() for name in ("summary.csv", "summary.md") if (out / name).is_file()
@@ -491,6 +530,33 @@ def test_robots_csv_neutralises_formula_values(tmp_path: Path) -> None:
     result = run_cli("robots", team)
     assert result.returncode == 0, result.stderr
     assert result.stdout.splitlines()[1:] == ["1,'=1+1,-1", "2,'=1+1,0"]
+
+
+@pytest.mark.parametrize("sign", ["\uff1d", "\uff0b", "\uff0d", "\uff20", "\ufe66"])
+def test_every_csv_the_tool_writes_neutralises_fullwidth_formula_starts(
+    tmp_path: Path, sign: str
+) -> None:
+    # Issue 36.14d: U+FF1D HYPERLINK(...) got no leading quote; a spreadsheet reads it as "=".
+    formula = f"{sign}HYPERLINK(x)"
+    rules = tmp_path / "r.yaml"
+    rules.write_text(
+        f"name: '{formula}'\ncharacteristics:\n  kind: {{values: ['{formula}', B]}}\n"
+        "  n: {range: {min: 1, max: 2}}\n",
+        encoding="utf-8",
+    )
+    team = tmp_path / "t.yaml"
+    team.write_text(f"name: '{formula}'\nrules: r.yaml\nteam:\n  '{formula}': {{}}\n", "utf-8")
+    assert run_cli("batch", team, "-o", tmp_path / "out").returncode == 0
+    outputs = [
+        (tmp_path / "out" / "summary.csv").read_text(encoding="utf-8"),
+        run_cli("solve", team, "--format", "csv").stdout,
+        run_cli("solve", team, "--format", "csv", "--list").stdout,
+        run_cli("robots", team).stdout,
+    ]
+    for output in outputs:
+        cells = [cell for row in csv.reader(io.StringIO(output)) for cell in row]
+        assert f"'{formula}" in cells, output
+        assert formula not in cells, output
 
 
 def test_sarif_messages_hold_no_link() -> None:

@@ -108,3 +108,48 @@ def test_strings_inside_a_list_are_escaped() -> None:
 def test_a_number_too_long_to_print_is_described() -> None:
     assert shown(10**5000) == "a whole number of about 5,001 digits"
     assert shown(-(10**70)) == "-1" + "0" * 58 + "... (cut from 72 characters)"
+
+
+# ---- printable but invisible (issue 36.14a) ----------------------------------------------------
+# str.isprintable accepts these: letters, marks and a symbol that a terminal draws as nothing
+# (or as a blank), so a name holding them looks like another name, or like none. Unicode's
+# Default_Ignorable_Code_Point property lists the letters and marks (the rest of it is format
+# characters and unassigned code points, escaped already); the braille blank and the musical
+# null notehead are symbols drawn empty.
+INVISIBLE_PRINTABLE = {
+    "\u115f": "\\u115f",  # Hangul choseong filler
+    "\u1160": "\\u1160",  # Hangul jungseong filler
+    "\u3164": "\\u3164",  # Hangul filler
+    "\uffa0": "\\uffa0",  # halfwidth Hangul filler
+    "\u034f": "\\u034f",  # combining grapheme joiner
+    "\u17b4": "\\u17b4",  # Khmer vowel inherent aq
+    "\u17b5": "\\u17b5",  # Khmer vowel inherent aa
+    "\u180b": "\\u180b",  # Mongolian free variation selector one
+    "\u180f": "\\u180f",  # Mongolian free variation selector four
+    "\ufe00": "\\ufe00",  # variation selector 1
+    "\ufe0f": "\\ufe0f",  # variation selector 16
+    "\U000e0100": "\\U000e0100",  # variation selector 17 (hides bytes after a letter)
+    "\U000e01ef": "\\U000e01ef",  # variation selector 256
+    "\u2800": "\\u2800",  # braille pattern blank
+    "\U0001d159": "\\U0001d159",  # musical symbol null notehead
+}
+
+
+@pytest.mark.parametrize(("char", "escape"), INVISIBLE_PRINTABLE.items())
+def test_a_printable_character_drawn_as_nothing_is_shown_as_its_escape(
+    char: str, escape: str
+) -> None:
+    assert char.isprintable()  # what str.isprintable lets through...
+    assert shown(f"a{char}b") == f"a{escape}b"  # ...is escaped all the same
+    assert shown(char * 3, quoted=True) == f"'{escape * 3}'"
+
+
+def test_the_spaces_unicode_calls_separators_were_escaped_already() -> None:
+    # U+3000 (ideographic space) and U+180E (Mongolian vowel separator, a format character
+    # since Unicode 6.3) are not printable to Python: escaped before this issue, and still.
+    assert shown("a\u3000b\u180ec\u00a0d") == "a\\u3000b\\u180ec\\xa0d"
+
+
+def test_visible_letters_and_marks_of_every_script_are_left_as_they_are() -> None:
+    for name in ("로봇", "ㄱ", "e\u0301", "ក៏", "ᠮᠣᠩᠭᠣᠯ", "⠁⠃", "\U0001d15d"):
+        assert shown(name) == name

@@ -5,8 +5,8 @@ they are, ``\\x1b[2J`` clears the operator's screen and other escape sequences r
 window, hide text or fake output; a right-to-left override reorders what a line appears to
 say. :func:`main <solver.cli.main>` therefore wraps ``sys.stdout`` and ``sys.stderr`` in an
 :class:`EscapingStream`: every character that is not printable, other than a newline and a
-tab, is written as its Python escape (``\\x1b``, ``\\u202e``) by
-:func:`solver.untrusted.shown`, so it is seen, not obeyed.
+tab, and every one drawn as nothing (a Hangul filler, ``\\u3164``), is written as its Python
+escape (``\\x1b``, ``\\u202e``) by :func:`solver.untrusted.shown`, so it is seen, not obeyed.
 
 This is the last net, not the escaping itself: the stream cannot tell a newline inside a name
 from the output's own line break, so every name is shown through :func:`~solver.untrusted.shown`
@@ -27,7 +27,7 @@ import os
 import re
 from typing import IO, Any
 
-from solver.untrusted import shown
+from solver.untrusted import shown, visible
 
 __all__ = ["ClosedStream", "EscapingStream", "OutputFailed", "escape_controls", "raw_stream"]
 
@@ -36,8 +36,9 @@ _LAYOUT = re.compile("([\n\t])")
 
 
 def escape_controls(text: str) -> str:
-    """``text`` with every unprintable character but newline and tab written as its escape."""
-    if text.isprintable() or text.replace("\n", "").replace("\t", "").isprintable():
+    """``text`` with every unprintable or invisible character but newline and tab written as
+    its escape (:func:`solver.untrusted.visible`)."""
+    if visible(text) or visible(text.replace("\n", "").replace("\t", "")):
         return text  # the common case, at C speed: a listing of a million lines
     return "".join(
         part if part in ("\n", "\t") else shown(part, limit=None) for part in _LAYOUT.split(text)

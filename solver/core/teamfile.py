@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING
 import yaml
 
 from solver.core.constraints import Value
+from solver.untrusted import visible
 
 if TYPE_CHECKING:
     from solver.core.ruleset import Characteristic
@@ -42,9 +43,9 @@ def yaml_inline(value: object) -> str:
 
 def yaml_comment(text: str) -> str:
     """``# text``, every character that could end the line (or hide text in it) escaped."""
-    if not text.isprintable():
+    if not visible(text):
         text = "".join(
-            c if c.isprintable() else c.encode("unicode_escape").decode("ascii") for c in text
+            c if visible(c) else c.encode("unicode_escape").decode("ascii") for c in text
         )
     return "# " + text
 

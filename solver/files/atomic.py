@@ -7,35 +7,52 @@ removed before the process ends. Every command that writes files goes through
 :func:`write_atomic`, or :func:`write_all_atomic` when its files belong together (a Markdown
 report and its charts): then either every file is written or none is changed.
 
+**Links inside an output folder.** A folder someone else can write into may hold a link
+planted where a subfolder is expected (``OUT/teams -> /home/you``). Given ``within``, the
+output folder the user named, every folder between it and a target is made or entered with
+``O_NOFOLLOW``, and the temporary is made, renamed and removed relative to that open folder:
+no write, rename or removal goes through a link there (:func:`link_inside` answers the same
+question for a caller that reads what it wrote before). The output folder itself is taken as
+the user gave it, links and all.
+
 What one call writes is bounded (the ``written-bytes`` limit, :mod:`solver.limits`): content
 given whole is measured before any file is created; content given as chunks (a listing
 streamed as it is made) stops at the limit, its temporaries removed and no file changed.
 
 Not here: deciding what to write or where (nor how many files: ``written-files`` is checked
-by the commands that write many, :mod:`solver.layouts.writer`).
+by the commands that write many, :mod:`solver.layouts.writer` and :mod:`solver.live.layouts`).
 """
 
 from __future__ import annotations
 
 import contextlib
+import errno
 import os
 import re
+import secrets
 import shutil
 import stat
-import tempfile
 from collections.abc import Iterable, Iterator, Mapping
-from dataclasses import replace
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 from solver.errors import Fault, InputError, Location, Terminated, TooLargeError
 from solver.limits import limit
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
-__all__ = ["Content", "make_folder", "remove_temporaries", "write_all_atomic", "write_atomic"]
+__all__ = [
+    "Content",
+    "link_inside",
+    "make_folder",
+    "remove_output",
+    "remove_temporaries",
+    "write_all_atomic",
+    "write_atomic",
+]
 
 # How much of a target's name its temporaries and backups keep (names end at 255 bytes).
 _KEPT_NAME = 100
-# After that name and a dot: mkstemp's 8 random characters and ".tmp", or a pid and ".old".
+# After that name and a dot: 8 random characters (as mkstemp's) and ".tmp", or a pid and ".old".
 _LEFT_BEHIND = re.compile(r"[a-z0-9_]{8}\.tmp|[0-9]+\.old")
 
 # A file's content: whole, or chunks written as they come (never all in memory at once).
@@ -59,13 +76,16 @@ def make_folder(path: str | Path) -> Path:
     return folder
 
 
-def write_atomic(path: str | Path, content: Content) -> Path:
+def write_atomic(path: str | Path, content: Content, *, within: str | Path | None = None) -> Path:
     """Write ``content`` to ``path`` atomically; :class:`InputError` if the folder is unusable,
-    :class:`~solver.errors.TooLargeError` past the ``written-bytes`` limit."""
-    return write_all_atomic({path: content})[0]
+    :class:`~solver.errors.TooLargeError` past the ``written-bytes`` limit. ``within``: see
+    :func:`write_all_atomic`."""
+    return write_all_atomic({path: content}, within=within)[0]
 
 
-def write_all_atomic(files: Mapping[str | Path, Content]) -> list[Path]:
+def write_all_atomic(
+    files: Mapping[str | Path, Content], *, within: str | Path | None = None
+) -> list[Path]:
     """Write every file of ``files`` or none; the paths written, in the mapping's order.
 
     Every target is checked first (a folder, device, pipe or socket in the way is reported
@@ -73,52 +93,202 @@ def write_all_atomic(files: Mapping[str | Path, Content]) -> list[Path]:
     whole contents past the ``written-bytes`` limit together are refused), then every content
     goes to a temporary file beside its target, and only then are they renamed into place. A
     rename that still fails puts back the files renamed before it.
+
+    ``within``: the output folder the user named (``batch -o DIR``), which holds every
+    target. It is taken as given, through any link in its own path; every folder between it
+    and a target is made or entered without following a link, and a link there (someone else
+    may have put it there) is refused, naming it. Each folder is opened once and the files are
+    made and renamed in the open folder, so a link put in its place meanwhile changes nothing.
     """
     budget = limit("written-bytes").value
+    root = None if within is None else Path(within)
     targets = [(Path(path), _encoded(content)) for path, content in files.items()]
-    faults = [
-        Fault(Location(_shown(target)), problem, "invalid")
-        for target, _ in targets
-        if (problem := _in_the_way(target))
-    ]
+    faults: dict[Fault, None] = {}  # in order, each once (two files below one planted link)
+    for target, _ in targets:
+        fault = _in_the_way(target, root)
+        if fault is not None:
+            faults[fault] = None
     if faults:
-        raise InputError(faults)
+        raise InputError(list(faults))
     whole = sum(len(data) for _, data in targets if isinstance(data, bytes))
     if whole > budget:
         _refuse(targets[0][0], whole, budget, "bytes to write")
-    temporaries: list[tuple[Path, Path]] = []
+    folders: dict[Path, int] = {}
+    temporaries: list[_Temporary] = []
     with _terminable():
         try:
             written = 0  # by the files before, against the same budget
             for target, data in targets:
-                written = _temporary(target, data, written, budget, temporaries)
+                folder = _folder(target, root, folders)
+                written = _temporary(
+                    folder, target, data, written=written, budget=budget, made=temporaries
+                )
             _replace_all(temporaries)
         finally:
-            for temporary, _ in temporaries:
-                with contextlib.suppress(OSError):
-                    temporary.unlink()  # gone already when renamed into place
+            for temporary in temporaries:
+                with contextlib.suppress(OSError):  # gone already when renamed into place
+                    os.unlink(temporary.name, dir_fd=temporary.folder)
+            for descriptor in folders.values():
+                os.close(descriptor)
     return [target for target, _ in targets]
 
 
-def remove_temporaries(target: str | Path) -> list[Path]:
+def remove_temporaries(target: str | Path, *, within: str | Path | None = None) -> list[Path]:
     """Remove what a write of ``target`` killed outright (SIGKILL, the kernel's memory limit)
     left beside it: its temporaries and the copy of its old content kept while renaming. Only
-    regular files named as this module names them for ``target``; the paths removed."""
+    regular files named as this module names them for ``target``, never through a link
+    inside ``within`` (see :func:`write_all_atomic`); the paths removed."""
     path = Path(target)
-    folder = path.parent if str(path.parent) else Path(".")
+    folder = _parent(path)
     prefix = f".{path.name[:_KEPT_NAME]}."
     removed = []
-    try:
-        names = [entry for entry in os.scandir(folder) if entry.name.startswith(prefix)]
-    except OSError:
+    descriptor = _open_quietly(folder, within)
+    if descriptor is None:
         return []
-    for entry in names:
-        ours = _LEFT_BEHIND.fullmatch(entry.name[len(prefix) :])
-        if ours and entry.is_file(follow_symlinks=False):
-            with contextlib.suppress(OSError):
-                os.unlink(entry.path)
-                removed.append(Path(entry.path))
+    try:
+        with os.scandir(descriptor) as entries:
+            names = [entry for entry in entries if entry.name.startswith(prefix)]
+        for entry in names:
+            ours = _LEFT_BEHIND.fullmatch(entry.name[len(prefix) :])
+            if ours and entry.is_file(follow_symlinks=False):
+                with contextlib.suppress(OSError):
+                    os.unlink(entry.name, dir_fd=descriptor)
+                    removed.append(folder / entry.name)
+    except OSError:
+        return removed
+    finally:
+        os.close(descriptor)
     return removed
+
+
+def remove_output(path: str | Path, *, within: str | Path) -> bool:
+    """Remove the regular file ``path`` below the output folder ``within``, never through a
+    link inside it (see :func:`write_all_atomic`); whether a file was removed."""
+    target = Path(path)
+    descriptor = _open_quietly(_parent(target), within)
+    if descriptor is None:
+        return False
+    try:
+        mode = os.stat(target.name, dir_fd=descriptor, follow_symlinks=False).st_mode
+        if not stat.S_ISREG(mode):
+            return False
+        os.unlink(target.name, dir_fd=descriptor)
+    except OSError:
+        return False
+    finally:
+        os.close(descriptor)
+    return True
+
+
+def link_inside(path: str | Path, *, within: str | Path) -> Path | None:
+    """The first symbolic link between the output folder ``within`` and ``path`` (``path``
+    itself included), or ``None``: for a caller that reads what it wrote there before."""
+    here = Path(within)
+    for part in _parts_below(Path(path), here):
+        here = here / part
+        try:
+            if stat.S_ISLNK(os.lstat(here).st_mode):
+                return here
+        except OSError:
+            return None
+    return None
+
+
+# ---- folders opened without following a link ------------------------------------------------
+
+# A folder opened for the calls relative to it; O_NOFOLLOW for the folders below ``within``.
+_FOLDER_FLAGS = os.O_RDONLY | getattr(os, "O_DIRECTORY", 0) | getattr(os, "O_CLOEXEC", 0)
+_NOFOLLOW = getattr(os, "O_NOFOLLOW", 0)
+_LINK_INSIDE = (
+    "is a link inside the output folder; refused: a write never follows a link there "
+    "(someone else may have put it there)"
+)
+
+
+class _LinkInside(Exception):
+    """A folder below ``within`` is a symbolic link (:attr:`path`)."""
+
+    def __init__(self, path: Path) -> None:
+        super().__init__(str(path))
+        self.path = path
+
+
+def _parent(path: Path) -> Path:
+    return path.parent if str(path.parent) else Path(".")
+
+
+def _parts_below(path: Path, within: Path) -> tuple[str, ...]:
+    """The parts of ``path`` below ``within`` (a folder the caller says holds it)."""
+    parts = path.relative_to(within).parts
+    if ".." in parts:
+        raise ValueError(f"{path} is not inside {within}")
+    return parts
+
+
+def _open_folder(folder: Path, within: Path | None, *, make: bool) -> int | None:
+    """A descriptor of ``folder`` (the caller closes it), made with its parents when ``make``;
+    ``None`` when it does not exist (and is not made). Below ``within`` each folder is made
+    or opened without following a link: :class:`_LinkInside` names one found there. Other
+    problems are :class:`OSError`."""
+    top, below = (folder, ()) if within is None else (within, _parts_below(folder, within))
+    if make:
+        top.mkdir(parents=True, exist_ok=True)
+    try:
+        descriptor = os.open(top, _FOLDER_FLAGS)
+    except FileNotFoundError:
+        if make:
+            raise
+        return None
+    for index, part in enumerate(below):
+        try:
+            if make:
+                with contextlib.suppress(FileExistsError):
+                    os.mkdir(part, dir_fd=descriptor)
+            inner = os.open(part, _FOLDER_FLAGS | _NOFOLLOW, dir_fd=descriptor)
+        except OSError as error:
+            linked = _is_link(part, descriptor)
+            os.close(descriptor)
+            if linked:
+                raise _LinkInside(top.joinpath(*below[: index + 1])) from None
+            if isinstance(error, FileNotFoundError) and not make:
+                return None
+            raise
+        os.close(descriptor)
+        descriptor = inner
+    return descriptor
+
+
+def _is_link(name: str, folder: int) -> bool:
+    try:
+        return stat.S_ISLNK(os.stat(name, dir_fd=folder, follow_symlinks=False).st_mode)
+    except OSError:
+        return False
+
+
+def _open_quietly(folder: Path, within: str | Path | None) -> int | None:
+    """``folder`` opened as :func:`_open_folder` opens it, never made; ``None`` when it is
+    missing, unusable or behind a link."""
+    try:
+        return _open_folder(folder, None if within is None else Path(within), make=False)
+    except (_LinkInside, OSError):
+        return None
+
+
+def _folder(target: Path, within: Path | None, opened: dict[Path, int]) -> int:
+    """The open folder ``target`` is written in, made if needed (once per folder)."""
+    folder = _parent(target)
+    if folder not in opened:
+        try:
+            descriptor = _open_folder(folder, within, make=True)
+        except _LinkInside as link:
+            raise InputError.at(_shown(link.path), _LINK_INSIDE, code="bad-output") from None
+        except OSError as error:
+            raise InputError.at(
+                _shown(target), f"cannot write here: {error.strerror or error}"
+            ) from None
+        assert descriptor is not None  # made
+        opened[folder] = descriptor
+    return opened[folder]
 
 
 def _encoded(content: Content) -> bytes | Iterator[bytes]:
@@ -184,16 +354,32 @@ def _shown(path: str | Path) -> str:
     return shown(str(path), limit=SHOWN_FILE_NAME_CHARS)
 
 
-def _in_the_way(target: Path) -> str | None:
-    """What is at ``target`` that a file must not replace, if anything.
+def _in_the_way(target: Path, within: Path | None) -> Fault | None:
+    """What is at ``target`` that a file must not replace, if anything, or a link on the way
+    to it below ``within``.
 
     A rename replaces whatever has the name: a device (``/dev/full``, as root), or a link such
     as ``/dev/stdout`` or one planted where an output is expected. Only a regular file is
     replaced."""
     try:
-        mode = os.lstat(target).st_mode
+        folder = _open_folder(_parent(target), within, make=False)
+    except _LinkInside as link:
+        return Fault(Location(_shown(link.path)), _LINK_INSIDE, "bad-output")
+    except (OSError, ValueError):  # a folder the write will report
+        return None
+    if folder is None:
+        return None
+    try:
+        mode = os.stat(target.name, dir_fd=folder, follow_symlinks=False).st_mode
     except (OSError, ValueError):  # nothing there, or a name the write will report
         return None
+    finally:
+        os.close(folder)
+    problem = _obstacle(mode)
+    return None if problem is None else Fault(Location(_shown(target)), problem, "invalid")
+
+
+def _obstacle(mode: int) -> str | None:
     if stat.S_ISREG(mode):
         return None
     if stat.S_ISDIR(mode):
@@ -206,30 +392,58 @@ def _in_the_way(target: Path) -> str | None:
     return "is a device, a pipe or a socket, not a file; refused: writing would replace it"
 
 
+@dataclass(frozen=True, slots=True)
+class _Temporary:
+    """A temporary file: its open folder, its name there, and the target it will replace."""
+
+    folder: int
+    name: str
+    target: Path
+
+
+# The characters of a temporary's random part (as tempfile.mkstemp names them).
+_RANDOM = "abcdefghijklmnopqrstuvwxyz0123456789_"
+_ATTEMPTS = 100
+_NEW_FILE = os.O_WRONLY | os.O_CREAT | os.O_EXCL | _NOFOLLOW | getattr(os, "O_CLOEXEC", 0)
+
+
+def _create(folder: int, target: Path, made: list[_Temporary]) -> int:
+    """A new temporary for ``target`` in ``folder``, private (0600) and listed in ``made`` as
+    soon as it exists; its descriptor."""
+    # The temporary's name is the target's and 13 more characters: cut, so that a target
+    # name near the system's limit (255 bytes) still has room for one.
+    prefix = f".{target.name[:_KEPT_NAME]}."
+    for _ in range(_ATTEMPTS):
+        name = prefix + "".join(secrets.choice(_RANDOM) for _ in range(8)) + ".tmp"
+        with _signals_held():  # listed as soon as it exists: the caller's clean-up finds it
+            try:
+                handle = os.open(name, _NEW_FILE, 0o600, dir_fd=folder)
+            except FileExistsError:
+                continue
+            made.append(_Temporary(folder, name, target))
+        return handle
+    raise FileExistsError(errno.EEXIST, "no free name for a temporary file")
+
+
 def _temporary(
+    folder: int,
     target: Path,
     data: bytes | Iterator[bytes],
+    *,
     written: int,
     budget: int,
-    made: list[tuple[Path, Path]],
+    made: list[_Temporary],
 ) -> int:
-    """``data`` in a new temporary file in ``target``'s folder (created if needed), listed in
-    ``made`` with its target as it is created; the bytes ``written`` with it.
+    """``data`` in a new temporary file in ``target``'s open ``folder``, listed in ``made``
+    with its target as it is created; the bytes ``written`` with it.
     :class:`TooLargeError` (and no temporary) past ``budget``."""
-    folder = target.parent if str(target.parent) else Path(".")
     try:
-        folder.mkdir(parents=True, exist_ok=True)
-        # The temporary's name is the target's and 13 more characters: cut, so that a target
-        # name near the system's limit (255 bytes) still has room for one.
-        prefix = f".{target.name[:_KEPT_NAME]}."
-        with _signals_held():  # listed as soon as it exists: the caller's clean-up finds it
-            handle, name = tempfile.mkstemp(prefix=prefix, suffix=".tmp", dir=folder)
-            temporary = Path(name)
-            made.append((temporary, target))
+        handle = _create(folder, target, made)
     except OSError as error:
         raise InputError.at(
             _shown(target), f"cannot write here: {error.strerror or error}"
         ) from None
+    temporary = made[-1]
     try:
         with os.fdopen(handle, "wb") as stream:
             for chunk in (data,) if isinstance(data, bytes) else data:
@@ -238,13 +452,12 @@ def _temporary(
                     _refuse(target, written, budget, "bytes or more to write")
                 stream.write(chunk)
             stream.flush()
+            # The temporary is private (0600); give it the mode a plain write would have.
+            os.fchmod(stream.fileno(), _mode_of(folder, target.name))
             os.fsync(stream.fileno())
-        # mkstemp makes the file private (0600); give it the mode a plain write would have.
-        mode = target.stat().st_mode & 0o777 if target.exists() else 0o644
-        os.chmod(temporary, mode)
     except BaseException as error:
         with contextlib.suppress(OSError):
-            temporary.unlink()
+            os.unlink(temporary.name, dir_fd=folder)
         if isinstance(error, OSError):
             raise InputError.at(
                 _shown(target), f"cannot write: {error.strerror or error}"
@@ -253,54 +466,79 @@ def _temporary(
     return written
 
 
-def _replace_all(temporaries: list[tuple[Path, Path]]) -> None:
-    """Rename each temporary onto its target; on a failure, undo the renames before it."""
-    done: list[tuple[Path, Path | None]] = []  # (target, a copy of its old content)
+def _mode_of(folder: int, name: str) -> int:
+    """The permissions of the regular file ``name`` in ``folder``; 0644 when there is none."""
     try:
-        for index, (temporary, target) in enumerate(temporaries):
+        mode = os.stat(name, dir_fd=folder, follow_symlinks=False).st_mode
+    except OSError:
+        return 0o644
+    return stat.S_IMODE(mode) if stat.S_ISREG(mode) else 0o644
+
+
+def _replace_all(temporaries: list[_Temporary]) -> None:
+    """Rename each temporary onto its target; on a failure, undo the renames before it."""
+    done: list[tuple[_Temporary, str | None]] = []  # (renamed, a copy of its old content)
+    try:
+        for index, temporary in enumerate(temporaries):
+            folder, name = temporary.folder, temporary.target.name
             # A rename and its record are one step: a signal between them would leave a file
             # renamed that no undo knows of.
             with _signals_held():
                 # Only a later failure needs the old content back; the last rename either
                 # happens or not.
-                backup = _backup(target) if index < len(temporaries) - 1 else None
+                backup = _backup(folder, name) if index < len(temporaries) - 1 else None
                 try:
-                    os.replace(temporary, target)
+                    os.replace(temporary.name, name, src_dir_fd=folder, dst_dir_fd=folder)
                 except BaseException:
-                    _discard(backup)
+                    _discard(folder, backup)
                     raise
-                done.append((target, backup))
+                done.append((temporary, backup))
     except BaseException as error:
-        for target, backup in reversed(done):
+        for temporary, backup in reversed(done):
+            folder, name = temporary.folder, temporary.target.name
             with contextlib.suppress(OSError):
                 if backup is not None:
-                    os.replace(backup, target)
+                    os.replace(backup, name, src_dir_fd=folder, dst_dir_fd=folder)
                 else:
-                    target.unlink()
+                    os.unlink(name, dir_fd=folder)
         if isinstance(error, OSError):
             raise InputError.at(
-                _shown(temporaries[len(done)][1]), f"cannot write: {error.strerror or error}"
+                _shown(temporaries[len(done)].target), f"cannot write: {error.strerror or error}"
             ) from None
         raise
     finally:
-        for _, backup in done:
-            _discard(backup)  # gone already when put back
+        for temporary, backup in done:
+            _discard(temporary.folder, backup)  # gone already when put back
 
 
-def _backup(target: Path) -> Path | None:
-    """A hard link to (or else a copy of) ``target``'s content; ``None`` if it is no file."""
-    if not os.path.isfile(target):
-        return None
-    backup = target.with_name(f".{target.name[:_KEPT_NAME]}.{os.getpid()}.old")
-    _discard(backup)
+def _backup(folder: int, name: str) -> str | None:
+    """A hard link to (or else a copy of) the file ``name`` in ``folder``, by a name of its
+    own there; ``None`` if it is no regular file."""
     try:
-        os.link(target, backup)
+        mode = os.stat(name, dir_fd=folder, follow_symlinks=False).st_mode
+    except OSError:
+        return None
+    if not stat.S_ISREG(mode):
+        return None
+    backup = f".{name[:_KEPT_NAME]}.{os.getpid()}.old"
+    _discard(folder, backup)
+    try:
+        os.link(name, backup, src_dir_fd=folder, dst_dir_fd=folder)
     except OSError:  # a file system without hard links
-        shutil.copy2(target, backup)
+        _copy(folder, name, backup, stat.S_IMODE(mode))
     return backup
 
 
-def _discard(path: Path | None) -> None:
-    if path is not None:
+def _copy(folder: int, name: str, copy: str, mode: int) -> None:
+    source = os.open(name, os.O_RDONLY | _NOFOLLOW | getattr(os, "O_CLOEXEC", 0), dir_fd=folder)
+    with (
+        os.fdopen(source, "rb") as reading,
+        os.fdopen(os.open(copy, _NEW_FILE, mode, dir_fd=folder), "wb") as writing,
+    ):
+        shutil.copyfileobj(reading, writing)
+
+
+def _discard(folder: int, name: str | None) -> None:
+    if name is not None:
         with contextlib.suppress(OSError):
-            path.unlink()
+            os.unlink(name, dir_fd=folder)

@@ -27,7 +27,15 @@ from solver.errors import Fault, InputError
 if TYPE_CHECKING:
     from solver.files.yamlio import Document
 
-__all__ = ["PROFILE_SECTIONS", "FileKind", "describe", "file_kind", "require_kind", "why"]
+__all__ = [
+    "PROFILE_SECTIONS",
+    "FileKind",
+    "declares_kind",
+    "describe",
+    "file_kind",
+    "require_kind",
+    "why",
+]
 
 FileKind = Literal["team", "rules", "profile", "presentation"]
 
@@ -96,6 +104,21 @@ def file_kind(document: Document) -> FileKind | None:
     if "rules" in keys:
         return "team"
     return None
+
+
+# The fields that make a file one kind or another: a file with none of them at its top level
+# is none of the kinds, and nothing of it is quoted (docs/security.md, "No echoes").
+_KIND_FIELDS = frozenset({"team", "rules", "characteristics", "extends", "components"})
+
+
+def declares_kind(data: object) -> bool:
+    """Whether ``data`` (a document's, even one with faults) is a mapping with a field that
+    makes it a kind of file: ``team:``, ``rules:``, ``characteristics:``, ``extends:``, a
+    presentation's ``components:`` or ``profile: presentation``. A reader may quote only such
+    a file (:mod:`solver.files.yamlio`)."""
+    if not isinstance(data, dict):
+        return False
+    return data.get("profile") == "presentation" or any(str(key) in _KIND_FIELDS for key in data)
 
 
 def describe(kind: FileKind) -> str:

@@ -95,19 +95,20 @@ class Reader:
         file and the problem and quotes nothing of it.
         """
         data = self.document.data
+        a_what = f"{'an' if what[:1] in 'aeiou' else 'a'} {what}"
         if data is None:
-            self.fault((), f"the file is empty; expected a {what}", code="missing-field")
+            self.fault((), f"the file is empty; expected {a_what}", code="missing-field")
             return None
         if not isinstance(data, dict):
             kind = "a list" if isinstance(data, list) else "a single value"
             self.fault(
                 (),
-                f"not a {what}: expected a mapping of fields at the top level, got {kind}",
+                f"not {a_what}: expected a mapping of fields at the top level, got {kind}",
                 code="wrong-type",
             )
             return None
         if needs is not None and not any(str(key) == needs for key in data):
-            self.fault((), f"not a {what}: it has no '{needs}:' field", code="missing-field")
+            self.fault((), f"not {a_what}: it has no '{needs}:' field", code="missing-field")
             return None
         return {str(key): item for key, item in data.items()}
 

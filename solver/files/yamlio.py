@@ -184,9 +184,20 @@ def parse_document(
         prescan(text, name)
     if syntax is not None:
         raise syntax
-    if any(fault.code not in tolerate for fault in walker.faults):
-        raise InputError(walker.faults)
-    return Document(name, data, walker.value_marks, walker.key_marks, tuple(walker.faults))
+    # A file that reads as no kind of file may be anyone's (a secret given by mistake): its
+    # faults name only their lines, quoting none of its text, keys or tags.
+    faults = walker.faults if not walker.faults or _of_a_kind(data) else walker.bare
+    if any(fault.code not in tolerate for fault in faults):
+        raise InputError(faults)
+    return Document(name, data, walker.value_marks, walker.key_marks, tuple(faults))
+
+
+def _of_a_kind(data: Any) -> bool:
+    """Whether ``data`` has a field that makes a file a team, a rule set or a profile
+    (:mod:`solver.files.filekind`): only then may a message quote it."""
+    from solver.files.filekind import declares_kind
+
+    return declares_kind(data)
 
 
 # Texts up to this many characters are composed before their pre-scan (parse_document). Such a
@@ -290,6 +301,8 @@ class _Walker:
     def __init__(self, name: str) -> None:
         self.name = name
         self.faults: list[Fault] = []
+        # The same faults located by line and column only, quoting nothing of the text.
+        self.bare: list[Fault] = []
         self.value_marks: dict[YamlPath, tuple[int, int]] = {}
         self.key_marks: dict[YamlPath, tuple[int, int]] = {}
         self.nodes = 0
@@ -303,15 +316,22 @@ class _Walker:
             self._constructor = yaml.SafeLoader("")
         return self._constructor
 
-    def fault(self, node: yaml.Node, path: YamlPath, message: str, code: str = "yaml") -> None:
+    def fault(
+        self,
+        node: yaml.Node,
+        path: YamlPath,
+        message: str,
+        code: str = "yaml",
+        *,
+        bare: str | None = None,
+    ) -> None:
+        """A fault at ``node``; ``bare``: the message without what it quotes of the file."""
         mark = node.start_mark
+        line, column = mark.line + 1, mark.column + 1
         self.faults.append(
-            Fault(
-                Location(self.name, mark.line + 1, mark.column + 1, format_path(path)),
-                message,
-                code,
-            )
+            Fault(Location(self.name, line, column, format_path(path)), message, code)
         )
+        self.bare.append(Fault(Location(self.name, line, column), bare or message, code))
 
     def convert(self, node: yaml.Node, path: YamlPath) -> Any:
         self.nodes += 1
@@ -347,7 +367,7 @@ class _Walker:
 
     def _mapping(self, node: yaml.MappingNode, path: YamlPath) -> dict[Any, Any] | None:
         if node.tag != _MAP_TAG:
-            self.fault(node, path, f"unsupported YAML tag '{_short(node.tag, 40)}'")
+            self._unsupported(node, path, "")
             return None
         result: dict[Any, Any] = {}
         first_seen: dict[Any, int] = {}
@@ -379,11 +399,13 @@ class _Walker:
             child = (*path, str(key))
             # Keys are names: 1 and "1", true and "True" name the same thing.
             if str(key) in first_seen:
+                first = first_seen[str(key)]
                 self.fault(
                     key_node,
                     child,
-                    f"duplicate key {key!r} (first at line {first_seen[str(key)]})",
+                    f"duplicate key {key!r} (first at line {first})",
                     "duplicate-key",
+                    bare=f"a key written twice (first at line {first})",
                 )
                 continue
             first_seen[str(key)] = key_node.start_mark.line + 1
@@ -393,7 +415,7 @@ class _Walker:
 
     def _sequence(self, node: yaml.SequenceNode, path: YamlPath) -> list[Any] | None:
         if node.tag != _SEQ_TAG:
-            self.fault(node, path, f"unsupported YAML tag '{_short(node.tag, 40)}'")
+            self._unsupported(node, path, "")
             return None
         return [self.convert(item, (*path, index)) for index, item in enumerate(node.value)]
 
@@ -401,18 +423,17 @@ class _Walker:
         if node.tag == _TIMESTAMP_TAG:
             return str(node.value)
         if node.tag not in _PLAIN_TAGS:
-            self.fault(
-                node,
-                path,
-                f"unsupported YAML tag '{_short(node.tag, 40)}'; only plain "
-                "strings, numbers, booleans, lists and mappings are allowed",
-            )
+            self._unsupported(node, path, _PLAIN_ONLY)
             return None
         text = str(node.value)
         if len(text) > MAX_TEXT_CHARS:
             self.fault(
                 node, path, f"a value longer than {MAX_TEXT_CHARS} characters; refused", "too-large"
             )
+            return None
+        if "\x00" in text:
+            # Written as an escape ("\0", "\x00"): a NUL byte itself is refused before.
+            self.fault(node, path, "contains a NUL character (\\0); not text")
             return None
         if not text.isascii() and _SURROGATE.search(text):
             # A "\udcff" escape: no file, terminal or UTF-8 output can hold it.
@@ -435,7 +456,9 @@ class _Walker:
         try:
             value = self.constructor.construct_object(node)
         except yaml.YAMLError as error:
-            self.fault(node, path, f"cannot read value: {_short(str(error))}")
+            self.fault(
+                node, path, f"cannot read value: {_short(str(error))}", bare="cannot read value"
+            )
             return None
         except (ValueError, OverflowError):
             # int() of more than 4,300 digits (Python's int-to-string limit).
@@ -451,7 +474,16 @@ class _Walker:
             return None
         return value
 
+    def _unsupported(self, node: yaml.Node, path: YamlPath, more: str) -> None:
+        self.fault(
+            node,
+            path,
+            f"unsupported YAML tag '{_short(node.tag, 40)}'{more}",
+            bare=f"unsupported YAML tag{more}",
+        )
 
+
+_PLAIN_ONLY = "; only plain strings, numbers, booleans, lists and mappings are allowed"
 # Whole numbers beyond 2**63 mean nothing in a rule or team file.
 _MAX_INT_BITS = 63
 # Decimal digits that always fit in _MAX_INT_BITS (2**63 has 19 digits).

@@ -39,6 +39,7 @@ from pathlib import Path
 from typing import Any, Final
 
 from solver.errors import Fault, InputError, Location, SolverError
+from solver.files.reader import Reader
 from solver.files.yamlio import Document, PathPart, load_document
 from solver.untrusted import shown
 
@@ -118,12 +119,22 @@ def _base(document: Document, value: Any, shipped: Path, chain: tuple[str, ...])
         raise InputError(Fault(where, why))
     display = str(path) if text != SHIPPED else str(shipped)
     try:
-        base = load_document(path, display=display)
+        loaded = load_document(path, display=display)
     except SolverError as error:
-        reason = "; ".join(str(fault) for fault in error.faults[:3])
-        message = f"cannot read the profile it extends ({shown(text, quoted=True)}): {reason}"
-        raise InputError(Fault(where, message)) from None
-    return compose(base, shipped=shipped, chain=(*chain, own))
+        raise _unreadable(where, text, error.faults) from None
+    base = compose(loaded, shipped=shipped, chain=(*chain, own))
+    # A base that is no profile may be any file (/etc/shadow parses as a mapping of its lines):
+    # none of its keys may reach a message as an unknown profile field.
+    reader = Reader(base)
+    if reader.top("identification profile", needs="characteristics") is None:
+        raise _unreadable(where, text, reader.faults)
+    return base
+
+
+def _unreadable(where: Location, text: str, faults: Sequence[Fault]) -> InputError:
+    reason = "; ".join(str(fault) for fault in faults[:3])
+    message = f"cannot read the profile it extends ({shown(text, quoted=True)}): {reason}"
+    return InputError(Fault(where, message))
 
 
 class _Merger:

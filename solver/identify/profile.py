@@ -414,12 +414,11 @@ def parse_profile(document: Document) -> Profile:
     """The profile in ``document`` (on top of the one it ``extends``, if it does)."""
     document = compose(document, shipped=default_profile_path())
     reader = Reader(document)
-    top = reader.mapping((), "identification profile")
-    if not isinstance(document.data, dict):
-        raise ProfileError(
-            reader.faults
-            or [reader.document.fault((), "an identification profile must be a mapping")]
-        )
+    # A file that is no mapping may be anything (/etc/passwd is one plain scalar): quote none of it.
+    found = reader.top("identification profile")
+    if found is None:
+        raise ProfileError(reader.faults)
+    top = found
     if "characteristics" not in top:
         # The file may be anything (/etc/shadow parses as a mapping): quote none of its keys.
         reader.fault(

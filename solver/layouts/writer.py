@@ -32,6 +32,7 @@ __all__ = [
     "PREVIEW",
     "FolderWrite",
     "check_layout_count",
+    "layout_texts",
     "write_layout_folder",
     "write_layouts",
 ]
@@ -90,9 +91,34 @@ def write_layout_folder(
     all in memory and the ``written-bytes`` limit stops a team whose layouts would fill the
     disk; on any refusal no file is changed.
     """
-    chosen = target(fmt)
     check_layout_count(len(solution.configurations), directory, extra=1 if preview else 0)
     folder = Path(directory)
+    texts: dict[str, Content] = dict(layout_texts(solution, presentation, fmt, namespace))
+    if preview:
+        from solver.layouts.preview import preview_html
+
+        # The preview draws every layout: these are built first, all of them.
+        made = {name: "".join(text) for name, text in texts.items()}  # type: ignore[arg-type]
+        made[PREVIEW] = preview_html([(name, json.loads(text)) for name, text in made.items()])
+        texts = dict(made)
+    make_folder(folder)
+    before = _ours(folder)
+    paths = write_all_atomic({folder / name: text for name, text in texts.items()}, within=folder)
+    removed = sorted(before - set(texts))
+    for name in removed:
+        (folder / name).unlink(missing_ok=True)
+    return FolderWrite(tuple(paths), tuple(sorted(before & set(texts))), tuple(removed))
+
+
+def layout_texts(
+    solution: Solution,
+    presentation: Presentation,
+    fmt: str = "foxglove",
+    namespace: str | None = None,
+) -> Iterator[tuple[str, Iterator[str]]]:
+    """Each layout's file name and its text, in configuration order and the default's last;
+    a text is built when it is read, so the layouts need never be all in memory at once."""
+    chosen = target(fmt)
     robot = Robot(namespace)
     numbered: list[tuple[str, Configuration | None]] = [
         (layout_filename(c.number, extension=chosen.extension), c) for c in solution.configurations
@@ -109,21 +135,8 @@ def write_layout_folder(
     def built(name: str, configuration: Configuration | None) -> Iterator[str]:
         yield chosen.render(solution, configuration, presentation, file=name, robot=robot)
 
-    texts: dict[str, Content] = {name: built(name, c) for name, c in numbered}
-    if preview:
-        from solver.layouts.preview import preview_html
-
-        # The preview draws every layout: these are built first, all of them.
-        made = {name: "".join(text) for name, text in texts.items()}  # type: ignore[arg-type]
-        made[PREVIEW] = preview_html([(name, json.loads(text)) for name, text in made.items()])
-        texts = dict(made)
-    make_folder(folder)
-    before = _ours(folder)
-    paths = write_all_atomic({folder / name: text for name, text in texts.items()})
-    removed = sorted(before - set(texts))
-    for name in removed:
-        (folder / name).unlink(missing_ok=True)
-    return FolderWrite(tuple(paths), tuple(sorted(before & set(texts))), tuple(removed))
+    for name, configuration in numbered:
+        yield name, built(name, configuration)
 
 
 def check_layout_count(configurations: int, directory: str | Path, *, extra: int = 0) -> None:

@@ -16,6 +16,14 @@ layout (it could not be identified, or its namespace is no ROS 2 name); the text
 ``layout`` line. What could not be written, and panels left without a real topic, are
 warnings for stderr.
 
+**Bounded.** Every layout the watcher writes while it runs counts against the limits of a
+command (:mod:`solver.limits`): at most ``written-files`` files and ``written-bytes`` bytes in
+all (a layout written again replaces its file: its new size counts, not another file). Past
+either, a new layout is not written: one warning says so (the first time), and the robot's
+selections get ``"layout": null``. No link inside ``DIR`` is followed (a folder someone
+planted as ``DIR/uav1``): that robot gets no layout and a warning naming the link
+(:func:`solver.files.atomic.write_all_atomic`).
+
 Not here: the events themselves (:mod:`solver.live.events`); the layouts
 (:mod:`solver.layouts`).
 """
@@ -32,7 +40,8 @@ from solver.files.atomic import write_atomic
 from solver.layouts.foxglove import layout_filename
 from solver.layouts.plan import check_namespace
 from solver.layouts.presentation import Presentation, load_presentation
-from solver.layouts.robot import robot_layout
+from solver.layouts.robot import RobotLayout, robot_layout
+from solver.limits import limit
 from solver.live.discovery import normalise_namespace
 from solver.live.events import Event, RobotAdded, RobotChanged, RobotRemoved, SelectionChanged
 from solver.live.robot import LiveRobot
@@ -57,6 +66,9 @@ class LiveLayouts:
         self._robots: dict[str, LiveRobot] = {}
         # (namespace, file name) -> the path written for the robot as it is now.
         self._written: dict[tuple[str, str], Path] = {}
+        # Every file written while the watcher runs, and its size now (the bound counts them).
+        self._sizes: dict[Path, int] = {}
+        self._bounded = False  # a limit stopped a layout (and a warning said so)
 
     def update(self, event: Event) -> list[str]:
         """Write what ``event`` calls for; the warnings (located, escaped) for stderr."""
@@ -110,7 +122,11 @@ class LiveLayouts:
             return None, []
         try:
             namespace = check_namespace(robot.namespace, robot.namespace)
-            folder = self.directory.joinpath(*namespace.split("/")[1:])
+            target = self.directory.joinpath(*namespace.split("/")[1:], name)
+            # A file past `written-files` is refused before its layout is built.
+            past = self._past_bound(target, 0)
+            if past is not None:
+                return None, self._bound_warning(robot, past)
             layout = robot_layout(
                 self.solution,
                 assignment,
@@ -119,12 +135,45 @@ class LiveLayouts:
                 topics=robot.graph_topics(),
                 topics_source=f"{robot.namespace} topics",
                 joints=robot.identification.joints,
-                file=str(folder / name),
+                file=str(target),
             )
-            path = write_atomic(folder / name, layout.text)
+            size = len(layout.text.encode("utf-8", "backslashreplace"))
+            past = self._past_bound(target, size)
+            if past is not None:
+                return None, self._bound_warning(robot, past)
+            path = write_atomic(target, layout.text, within=self.directory)
         except SolverError as error:
             return None, [
                 f"no layout for {shown(robot.namespace)}: {shown(str(error), limit=None)}"
             ]
         self._written[key] = path
-        return path, [shown(str(warning), limit=None) for warning in layout.warnings]
+        self._sizes[path] = size
+        return path, _warnings(layout)
+
+    def _past_bound(self, path: Path, size: int) -> str | None:
+        """Why writing ``size`` bytes to ``path`` would take the watcher past a limit, if it
+        would: the limit's message, located at the folder."""
+        files = len(self._sizes) + (path not in self._sizes)
+        total = sum(self._sizes.values()) - self._sizes.get(path, 0) + size
+        for name, count, noun in (
+            ("written-files", files, "files to write"),
+            ("written-bytes", total, "bytes to write"),
+        ):
+            if limit(name).exceeded(count):
+                what = f"{noun} (every layout the watcher writes)"
+                return f"{self.directory}: {limit(name).message(count, noun=what)}"
+        return None
+
+    def _bound_warning(self, robot: LiveRobot, past: str) -> list[str]:
+        """The warning for the first layout a limit stops; nothing for the next ones."""
+        if self._bounded:
+            return []
+        self._bounded = True
+        return [
+            f"no layout for {shown(robot.namespace)} (nor for later robots: the watcher's "
+            f"layouts reached a limit): {shown(past, limit=None)}"
+        ]
+
+
+def _warnings(layout: RobotLayout) -> list[str]:
+    return [shown(str(warning), limit=None) for warning in layout.warnings]

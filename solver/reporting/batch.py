@@ -22,7 +22,9 @@ per-team output is below ``teams/``. So no team's name can collide with them: a 
 called ``summary.yaml`` gets ``OUT/teams/summary.md``, never the batch's ``OUT/summary.md``.
 
 Every file is written atomically (:func:`solver.files.atomic.write_atomic`): an interrupted batch
-leaves finished teams complete and no half-written file.
+leaves finished teams complete and no half-written file. Nothing is written, read back or
+removed through a link inside the output folder (``OUT/teams -> elsewhere``, planted by
+someone who can write there): that team fails, naming the link.
 
 **Up to date.** Beside each team's outputs a *stamp* (``OUT/.stamps/<name>.json``, written
 last) records the SHA-256 of the team file and of the rule file it used, the teleop-ui version
@@ -57,7 +59,7 @@ from solver.core.rules import default_rules_path, shipped_name
 from solver.core.solution import solve
 from solver.core.team import parse_team, resolve_team_path
 from solver.errors import Fault, InputError, Location, SolverError, Terminated
-from solver.files.atomic import remove_temporaries, write_atomic
+from solver.files.atomic import link_inside, remove_output, remove_temporaries, write_atomic
 from solver.files.filekind import describe, file_kind, why
 from solver.files.inputfile import read_text, sha256_bounded
 from solver.files.yamlio import MAX_FILE_BYTES, load_hashed
@@ -195,7 +197,7 @@ def find_teams(patterns: Sequence[str]) -> list[tuple[Path, str]]:
         # os.path's probes say False for a name the system refuses (too long, say) where
         # Path's raise; such a name is then "no such file", as the system would say.
         if _PATTERN_CHARACTERS & set(pattern):
-            matches = sorted(m for m in glob.glob(pattern, recursive=True) if os.path.isfile(m))
+            matches = sorted(m for m in _glob(pattern) if os.path.isfile(m))
         elif os.path.isdir(pattern):
             matches = sorted(
                 str(p)
@@ -225,6 +227,84 @@ def find_teams(patterns: Sequence[str]) -> list[tuple[Path, str]]:
     if faults:
         raise InputError(faults)
     return found
+
+
+def _glob(pattern: str) -> list[str]:
+    """What ``glob.glob(pattern, recursive=True)`` finds, in a bounded walk.
+
+    Python's glob follows every link to a folder under ``**``: a folder holding a link to
+    itself or to its parent is searched again at every level (two such links: 2**40 paths, a
+    batch that never ends). Here a pattern with ``**`` is matched against one walk of the
+    folders below its fixed start, entering each folder once (by device and inode), so a link
+    is followed to a folder not seen yet and never round a loop. Hidden names are matched
+    only by a part that starts with ``.``, as glob does.
+    """
+    parts = pattern.split(os.sep)
+    if "**" not in parts:
+        return glob.glob(pattern)  # no recursion: as deep as the pattern, whatever the links
+    if pattern.endswith(os.sep):
+        return []  # folders only: no team file
+    fixed = next(i for i, part in enumerate(parts) if glob.has_magic(part))
+    start = os.sep.join(parts[:fixed]) or (os.sep if pattern.startswith(os.sep) else "")
+    wanted = [part for part in parts[fixed:] if part]
+    hidden = any(part.startswith(".") for part in wanted)
+    found = []
+    for folder, names in _walk_once(start or os.curdir, hidden=hidden):
+        below = () if folder == "" else tuple(folder.split(os.sep))
+        for name in names:
+            if _glob_match(wanted, [*below, name]):
+                found.append(os.path.join(start, folder, name))
+    return found
+
+
+def _walk_once(top: str, *, hidden: bool) -> Iterator[tuple[str, list[str]]]:
+    """Each folder below ``top`` (its path relative to ``top``) and the names in it; a folder
+    reached again (through a link) is not entered again; hidden folders only if ``hidden``."""
+    seen: set[tuple[int, int]] = set()
+    for folder, folders, files in os.walk(top, followlinks=True):
+        try:
+            here = os.stat(folder)
+        except OSError:
+            folders[:] = []
+            continue
+        if (here.st_dev, here.st_ino) in seen:
+            folders[:] = []
+            continue
+        seen.add((here.st_dev, here.st_ino))
+        # Sorted: a folder reached by two paths is found by the first in name order.
+        folders[:] = sorted(name for name in folders if hidden or not name.startswith("."))
+        relative = os.path.relpath(folder, top)
+        yield ("" if relative == os.curdir else relative), sorted([*folders, *files])
+
+
+def _glob_match(pattern: Sequence[str], names: Sequence[str]) -> bool:
+    """Whether the path ``names`` matches the parts of ``pattern`` as glob reads them: ``**``
+    stands for any number of folders (none included); a wildcard matches a hidden name only
+    when it starts with ``.`` itself, and ``**`` never does."""
+    import fnmatch
+
+    @functools.cache
+    def matches(i: int, k: int) -> bool:  # pattern[i:] matches names[k:]
+        if i == len(pattern):
+            return k == len(names)
+        part = pattern[i]
+        if part == "**" and i == len(pattern) - 1:  # what is left, at least one name: a file
+            return k < len(names) and not any(name.startswith(".") for name in names[k:])
+        if part == "**":
+            more = k < len(names) and not names[k].startswith(".") and matches(i, k + 1)
+            return matches(i + 1, k) or more
+        if k == len(names):
+            return False
+        name = names[k]
+        if not glob.has_magic(part):
+            fits = name == part
+        else:
+            fits = (part.startswith(".") or not name.startswith(".")) and fnmatch.fnmatchcase(
+                name, part
+            )
+        return fits and matches(i + 1, k + 1)
+
+    return matches(0, 0)
 
 
 def _missing(pattern: str) -> str:
@@ -317,6 +397,8 @@ def _read_json(path: Path) -> Any:
 
 
 def _is_up_to_date(job: Job) -> bool:
+    if any(link_inside(path, within=job.out) for path in (job.stamp, *job.outputs)):
+        return False  # never read through a link there: writing will say what is wrong
     stamp = _read_json(job.stamp)
     if (
         not isinstance(stamp, dict)
@@ -376,10 +458,10 @@ def _row(job: Job, data: dict[str, Any]) -> SummaryRow:
 
 
 def _remove_outputs(job: Job) -> None:
-    """A failed team leaves nothing that could pass for a current result."""
+    """A failed team leaves nothing that could pass for a current result (and removes nothing
+    through a link inside the output folder)."""
     for path in (job.stamp, *job.outputs):
-        with contextlib.suppress(OSError):
-            path.unlink()
+        remove_output(path, within=job.out)
 
 
 def run_job(job: Job) -> Outcome:
@@ -408,9 +490,11 @@ def run_job(job: Job) -> Outcome:
         solution = solve(team)
         data = solution_data(solution)  # the summary row's figures
         # The JSON of `solve --format json --list`, streamed into the file.
-        write_atomic(job.output, solution_chunks(solution, "json", configurations=True))
+        write_atomic(
+            job.output, solution_chunks(solution, "json", configurations=True), within=job.out
+        )
         if job.report is not None:
-            write_report(solution, job.report)
+            write_report(solution, job.report, within=job.out)
         stamp = {
             "teleop_ui": _version(),
             "team_file": str(job.team_file.resolve()),
@@ -419,7 +503,7 @@ def run_job(job: Job) -> Outcome:
             "rules_sha256": rules_hash,
             "options": job.options,
         }
-        write_atomic(job.stamp, dumps(stamp))
+        write_atomic(job.stamp, dumps(stamp), within=job.out)
     except SolverError as error:
         message = str(error)
     except Exception as error:  # one team's bug must not stop the batch: report it
@@ -539,7 +623,7 @@ def _died(job: Job, exitcode: int | None) -> Outcome:
     message = f"{job.shown}: the worker process solving it died ({how}); the other teams go on"
     _remove_outputs(job)
     for path in (job.stamp, *job.outputs):
-        remove_temporaries(path)  # a worker killed outright removed none of its own
+        remove_temporaries(path, within=job.out)  # a worker killed outright removed none
     return Outcome(job, "failed", SummaryRow(file=job.shown, status="failed", message=message))
 
 
@@ -692,7 +776,7 @@ def write_summary(
     rows = [by_job[job] for job in jobs if job in by_job]
     folder = Path(out)
     written = [
-        write_atomic(folder / SUMMARY_FILES[0], summary_csv(rows)),
-        write_atomic(folder / SUMMARY_FILES[1], summary_markdown(rows)),
+        write_atomic(folder / SUMMARY_FILES[0], summary_csv(rows), within=folder),
+        write_atomic(folder / SUMMARY_FILES[1], summary_markdown(rows), within=folder),
     ]
     return rows, written

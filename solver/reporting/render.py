@@ -29,7 +29,7 @@ from solver.core.contracts import (
 )
 from solver.engines import describe
 from solver.reporting import markdown
-from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
+from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown, visible
 
 if TYPE_CHECKING:
     from solver.core.assignment import Assignment
@@ -146,17 +146,18 @@ def _write_indented(value: Any, newline: str, parts: list[str]) -> None:
 
 
 def json_printable(text: str) -> str:
-    """JSON ``text`` (from ``json.dumps(..., ensure_ascii=False)``) with every unprintable
-    character but its own line breaks written as a ``\\uXXXX`` escape."""
-    if text.replace("\n", "").isprintable():  # nearly always: one pass in C
+    """JSON ``text`` (from ``json.dumps(..., ensure_ascii=False)``) with every unprintable or
+    invisible character (:func:`solver.untrusted.visible`) but its own line breaks written as
+    a ``\\uXXXX`` escape."""
+    if visible(text.replace("\n", "")):  # nearly always: one pass in C
         return text
     return "\n".join(
-        line if line.isprintable() else "".join(map(_json_char, line)) for line in text.split("\n")
+        line if visible(line) else "".join(map(_json_char, line)) for line in text.split("\n")
     )
 
 
 def _json_char(char: str) -> str:
-    if char.isprintable():
+    if visible(char):
         return char
     code = ord(char)
     if code < 0x10000:
@@ -187,21 +188,38 @@ def text_table(
 
 
 # A spreadsheet reads a cell starting with one of these as a formula (OWASP "CSV injection"):
-# `=HYPERLINK(...)` in a team's name would run when someone opens the summary.
-_FORMULA_STARTS = ("=", "+", "-", "@", "\t", "\r")
+# `=HYPERLINK(...)` in a team's name would run when someone opens the summary. Their fullwidth
+# and other compatibility forms (U+FF1D fullwidth, U+FE66 small, U+207C superscript =) count: a
+# spreadsheet (and an input method) may turn them into the ASCII sign; NFKC maps each to it.
+_FORMULA_SIGNS = frozenset("=+-@")
+# ... and so does a cell that starts with a line break or tab, or with spaces (which a
+# spreadsheet may trim on import) before one of the signs.
+_LINE_STARTS = ("\t", "\r", "\n")
 _NUMBER = re.compile(r"[+-]?[0-9]+(\.[0-9]+)?([eE][+-]?[0-9]+)?")
 
 
 def csv_cell(value: Any) -> Any:
-    """``value`` as a CSV cell no spreadsheet runs: text that starts like a formula gets a
-    leading ``'`` (OWASP's advice); numbers, and text that is just a number, are left alone."""
-    if (
-        isinstance(value, str)
-        and value.startswith(_FORMULA_STARTS)
-        and _NUMBER.fullmatch(value) is None
+    """``value`` as a CSV cell no spreadsheet runs: text that starts like a formula (see
+    above) gets a leading ``'`` (OWASP's advice); numbers, and text that is just a number,
+    are left alone. Every CSV the tool writes has its cells through here."""
+    if not isinstance(value, str) or not value:
+        return value
+    first = value[0]
+    if first.isascii() and first not in _FORMULA_SIGNS and first not in " \t\r\n":
+        return value  # nearly every cell: one look at its first character
+    if value.startswith(_LINE_STARTS) or (
+        _starts_with_a_sign(value) and _NUMBER.fullmatch(value) is None
     ):
         return "'" + value
     return value
+
+
+def _starts_with_a_sign(text: str) -> bool:
+    """Whether ``text``, past any leading spaces, starts with a formula sign in any form."""
+    import unicodedata
+
+    stripped = text.lstrip()
+    return bool(stripped) and unicodedata.normalize("NFKC", stripped[0])[:1] in _FORMULA_SIGNS
 
 
 def csv_row(values: Sequence[Any]) -> list[Any]:

@@ -535,8 +535,11 @@ def _charts(
     return {kind: figure_bytes(draw[kind](solution), fmt) for kind in kinds}
 
 
-def write_report(solution: Solution, path: str | Path) -> list[Path]:
+def write_report(
+    solution: Solution, path: str | Path, *, within: str | Path | None = None
+) -> list[Path]:
     """Write the report to ``path`` (format by extension); returns every file written.
+    ``within``: the output folder holding it (:func:`solver.files.atomic.write_all_atomic`).
 
     HTML is one file. Markdown also writes its two PNG charts beside it (see
     :func:`image_names`); the three are written together or not at all
@@ -545,10 +548,10 @@ def write_report(solution: Solution, path: str | Path) -> list[Path]:
     """
     fmt = report_format(path)
     if fmt == "html":
-        return [write_atomic(path, render_html(solution))]
+        return [write_atomic(path, render_html(solution), within=within)]
     names = image_names(path)
     charts = _charts(solution, "png")
     links = {kind: names[kind].name for kind in _KINDS}
     files: dict[str | Path, str | bytes] = {names[kind]: charts[kind] for kind in _KINDS}
     files[path] = render_markdown(solution, links)
-    return write_all_atomic(files)
+    return write_all_atomic(files, within=within)

@@ -116,11 +116,12 @@ def test_loader_codes_map_to_check_ids(code: str, expected: str) -> None:
 
 
 def test_duplicate_keys_are_kept_as_faults_only_when_the_caller_tolerates_them() -> None:
-    text = "a: 1\na: 2\nb: 3\n"
+    # A team file: a file of no kind has its faults without its keys (issue 36.13).
+    text = "team: {}\na: 1\na: 2\nb: 3\n"
     with pytest.raises(InputError, match="duplicate key 'a'"):
         parse_document(text, "x.yaml")
     document = parse_document(text, "x.yaml", tolerate={"duplicate-key"})
-    assert document.data == {"a": 1, "b": 3}
-    assert [(f.code, f.location.line) for f in document.tolerated] == [("duplicate-key", 2)]
+    assert document.data == {"team": {}, "a": 1, "b": 3}
+    assert [(f.code, f.location.line) for f in document.tolerated] == [("duplicate-key", 3)]
     with pytest.raises(InputError, match="recursive alias"):
         parse_document("a: &x [*x]\n", "x.yaml", tolerate={"duplicate-key"})

@@ -17,7 +17,9 @@ import pytest
 from solver import limits
 from solver.errors import InputError, TooLargeError
 from solver.files.atomic import (
+    link_inside,
     make_folder,
+    remove_output,
     remove_temporaries,
     write_all_atomic,
     write_atomic,
@@ -194,3 +196,102 @@ def test_what_a_write_killed_outright_left_is_removed_and_nothing_else(tmp_path:
     assert len(removed) == 2
     assert sorted(path.name for path in folder.iterdir()) == sorted([*others, "b.txt"])
     assert (folder / "b.txt").read_text() == "old"
+
+
+# ---- links inside an output folder (issue 36.10) ----------------------------------------------
+
+
+def _planted(tmp_path: Path) -> tuple[Path, Path]:
+    """An output folder ``out`` whose ``teams`` someone else replaced by a link to a folder of
+    theirs, ``elsewhere`` (which holds a file of its own)."""
+    out, elsewhere = tmp_path / "out", tmp_path / "elsewhere"
+    out.mkdir()
+    elsewhere.mkdir()
+    (elsewhere / "x.json").write_text("theirs\n")
+    (out / "teams").symlink_to(elsewhere, target_is_directory=True)
+    return out, elsewhere
+
+
+def test_a_folder_link_planted_inside_the_output_folder_is_not_written_through(
+    tmp_path: Path,
+) -> None:
+    out, elsewhere = _planted(tmp_path)
+    with pytest.raises(InputError) as caught:
+        write_all_atomic(
+            {out / "summary.csv": "a\n", out / "teams" / "x.json": "{}", out / "teams" / "y": "{}"},
+            within=out,
+        )
+    assert str(caught.value) == (
+        f"{out / 'teams'}: is a link inside the output folder; refused: a write never "
+        "follows a link there (someone else may have put it there)"
+    )
+    assert sorted(p.name for p in elsewhere.iterdir()) == ["x.json"]
+    assert (elsewhere / "x.json").read_text() == "theirs\n"
+    assert sorted(p.name for p in out.iterdir()) == ["teams"]  # all or nothing
+
+
+def test_a_link_deeper_down_is_refused_and_the_folders_above_it_are_made(tmp_path: Path) -> None:
+    out, elsewhere = tmp_path / "out", tmp_path / "elsewhere"
+    (out / "teams").mkdir(parents=True)
+    elsewhere.mkdir()
+    (out / "teams" / "a").symlink_to("../../elsewhere")  # relative: the same place
+    with pytest.raises(InputError, match=r"teams/a: is a link inside the output folder"):
+        write_atomic(out / "teams" / "a" / "b" / "x.json", "{}", within=out)
+    assert list(elsewhere.iterdir()) == []
+    write_atomic(out / "teams" / "c" / "d" / "x.json", "{}", within=out)  # no link: made
+    assert (out / "teams" / "c" / "d" / "x.json").read_text() == "{}"
+
+
+def test_the_output_folder_itself_may_be_a_link_the_user_gave(tmp_path: Path) -> None:
+    real = tmp_path / "real"
+    real.mkdir()
+    given = tmp_path / "given"
+    given.symlink_to(real, target_is_directory=True)
+    write_atomic(given / "teams" / "x.json", "{}", within=given)
+    assert (real / "teams" / "x.json").read_text() == "{}"
+
+
+def test_a_folder_swapped_for_a_link_while_a_file_is_written_still_gets_the_file(
+    tmp_path: Path,
+) -> None:
+    # The folder is opened once, without following a link, and the file is made and renamed
+    # in that open folder: a link put in its place halfway through the write changes nothing.
+    out, elsewhere = tmp_path / "out", tmp_path / "elsewhere"
+    (out / "teams").mkdir(parents=True)
+    elsewhere.mkdir()
+
+    def chunks() -> Iterator[str]:
+        yield "{"
+        (out / "teams").rename(out / "kept")
+        (out / "teams").symlink_to(elsewhere, target_is_directory=True)
+        yield "}"
+
+    write_atomic(out / "teams" / "x.json", chunks(), within=out)
+    assert list(elsewhere.iterdir()) == []
+    assert [p.name for p in (out / "kept").iterdir()] == ["x.json"]
+    assert (out / "kept" / "x.json").read_text() == "{}"
+
+
+def test_removing_an_output_never_goes_through_a_link_inside_the_output_folder(
+    tmp_path: Path,
+) -> None:
+    out, elsewhere = _planted(tmp_path)
+    (elsewhere / ".x.json.abcdefgh.tmp").write_text("theirs too\n")
+    assert remove_output(out / "teams" / "x.json", within=out) is False
+    assert remove_temporaries(out / "teams" / "x.json", within=out) == []
+    assert sorted(p.name for p in elsewhere.iterdir()) == [".x.json.abcdefgh.tmp", "x.json"]
+    (out / "own").mkdir()
+    (out / "own" / "x.json").write_text("ours\n")
+    assert remove_output(out / "own" / "x.json", within=out) is True
+    assert remove_output(out / "own" / "x.json", within=out) is False  # gone already
+    assert list((out / "own").iterdir()) == []
+
+
+def test_a_link_on_the_way_to_an_output_is_found_without_following_it(tmp_path: Path) -> None:
+    out, _ = _planted(tmp_path)
+    (out / "own").mkdir()
+    (out / "own" / "x.json").symlink_to(tmp_path / "elsewhere" / "x.json")
+    assert link_inside(out / "teams" / "x.json", within=out) == out / "teams"
+    assert link_inside(out / "own" / "x.json", within=out) == out / "own" / "x.json"
+    assert link_inside(out / "own" / "y.json", within=out) is None  # nothing there yet
+    assert link_inside(out / "summary.csv", within=out) is None

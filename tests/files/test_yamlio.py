@@ -227,3 +227,60 @@ def test_a_file_loaded_with_its_hash_is_hashed_from_the_bytes_read(tmp_path: Pat
         with pytest.raises(InputError) as hashed:
             load_hashed(path, display="team.yaml")
         assert str(hashed.value) == str(loaded.value)
+
+
+# ---- a file that reads as no kind of file is quoted nowhere (issue 36.13) ----------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        ("the-secret-key:\nthe-secret-key:\n", "x:2:1: a key written twice (first at line 1)"),
+        (
+            "!the-secret-tag value\n",
+            "x:1:1: unsupported YAML tag; only plain strings, numbers, booleans, lists and "
+            "mappings are allowed",
+        ),
+        (
+            "the-secret-name: !vault |\n  $ANSIBLE_VAULT;1.1;AES256\n",
+            "x:1:18: unsupported YAML tag; only plain strings, numbers, booleans, lists and "
+            "mappings are allowed",
+        ),
+        (
+            "the-secret-key:\n  nested: 1\n  nested: 2\n",
+            "x:3:3: a key written twice (first at line 2)",
+        ),
+    ],
+    ids=["a key twice", "a tag", "an Ansible vault", "a nested key twice"],
+)
+def test_what_reads_as_no_kind_of_file_is_refused_at_its_line_quoting_nothing(
+    text: str, message: str
+) -> None:
+    # No 'team:', 'characteristics:', ... at the top: the file may be anyone's secret, and
+    # neither the faults nor their YAML paths (its keys) quote it.
+    with pytest.raises(InputError) as caught:
+        parse_document(text, "x")
+    assert str(caught.value) == message
+
+
+def test_a_file_of_a_kind_still_has_its_faults_quoted_with_their_paths() -> None:
+    with pytest.raises(InputError) as caught:
+        parse_document("team:\n  UAV: !odd 1\n", "t.yaml")
+    assert str(caught.value) == (
+        "t.yaml:2:8: team.UAV: unsupported YAML tag '!odd'; only plain strings, numbers, "
+        "booleans, lists and mappings are allowed"
+    )
+
+
+@pytest.mark.parametrize(
+    "text",
+    ['name: "a\\0b"\n', 'name: "\\x00"\n', 'team:\n  "U\\0AV": {}\n', 'x: ["\\u0000"]\n'],
+    ids=["\\0", "\\x00", "in a key", "\\u0000 in a list"],
+)
+def test_a_nul_written_as_an_escape_is_refused_at_its_line(text: str) -> None:
+    # The documented limit: text holds no NUL. A NUL byte was refused, its escape was read.
+    with pytest.raises(InputError) as caught:
+        parse_document(text, "t.yaml")
+    fault = caught.value.faults[0]
+    assert fault.location.line == text.count("\n", 0, text.index("\\")) + 1
+    assert fault.message == "contains a NUL character (\\0); not text"

@@ -2,8 +2,11 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
+from solver.errors import SolverError
 from solver.files.yamlio import parse_document
 from solver.identify.profile import ProfileError, load_profile, parse_profile
 from tests.conftest import RULES
@@ -101,3 +104,40 @@ def test_a_navigation_need_for_nothing_that_moves_a_body_is_a_located_fault() ->
     assert fault.location.path == "motion.navigation.needs.wheel"
     assert "unknown navigation source 'wheel'" in fault.message
     assert "wheels" in fault.message
+
+
+# ---- a file that is no profile is named, never quoted (issue 36.13) ---------------------------
+
+PASSWD = "root:x:0:0:the-secret-line:/root:/bin/bash\ndaemon:x:1:1::/:/bin/false\n"
+
+
+@pytest.mark.parametrize(
+    ("text", "got"),
+    [
+        (PASSWD, "a single value"),
+        ("the-secret-password\n", "a single value"),
+        ("- the-secret-one\n- the-secret-two\n", "a list"),
+    ],
+    ids=["/etc/passwd", "a scalar", "a list"],
+)
+def test_a_file_that_is_no_mapping_is_no_profile_and_quoted_nowhere(text: str, got: str) -> None:
+    with pytest.raises(ProfileError) as caught:
+        parse_profile(parse_document(text, "secret"))
+    assert str(caught.value) == (
+        "secret:1:1: not an identification profile: expected a mapping of fields at the top "
+        f"level, got {got}"
+    )
+
+
+def test_a_profile_extending_a_file_that_is_no_profile_quotes_nothing_of_it(tmp_path: Path) -> None:
+    # /etc/shadow's lines end in ':': a mapping whose keys are the secrets.
+    (tmp_path / "shadow").write_text("root:$6$the-secret-hash:19000:0:99999:7:::\n")
+    own = tmp_path / "own.yaml"
+    own.write_text("extends: shadow\ncharacteristics: {}\n")
+    with pytest.raises(SolverError) as caught:
+        load_profile(own)
+    assert str(caught.value) == (
+        f"{own}:1:10: extends: cannot read the profile it extends ('shadow'): "
+        f"{tmp_path / 'shadow'}:1:1: not an identification profile: it has no "
+        "'characteristics:' field"
+    )

@@ -6,11 +6,13 @@ from __future__ import annotations
 import json
 import os
 from collections.abc import Callable, Iterator
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
 import pytest
 
+from solver import limits
 from solver.core.solution import Solution
 from solver.identify.identification import IdentificationCache
 from solver.identify.profile import Profile
@@ -199,3 +201,82 @@ def test_watch_ros2_writes_a_layout_on_the_graphs_own_names_and_types(
     cloud = next(c for k, c in layout["configById"].items() if k.startswith("3D!"))
     assert cloud["topics"]["/ugv1/lidar/points"]["colorField"] == "z"  # a PointCloud2
     assert _faults(written, {"/ugv1/lidar/points": ["sensor_msgs/msg/PointCloud2"]}) == []
+
+
+# ---- a planted link and a bound on what the watcher writes (issue 36.10 and 36.11) ------------
+
+
+def test_a_folder_link_planted_for_a_robot_is_never_written_through(
+    solution: Solution, profile: Profile, tmp_path: Path
+) -> None:
+    out, elsewhere = tmp_path / "layouts", tmp_path / "elsewhere"
+    out.mkdir()
+    elsewhere.mkdir()
+    (out / "ugv1").symlink_to(elsewhere, target_is_directory=True)
+    (robot,) = _rovers(1, solution, profile)
+    layouts = LiveLayouts(out, solution)
+    assert layouts.update(RobotAdded(1, robot)) == [
+        f"no layout for /ugv1: {out / 'ugv1'}: is a link inside the output folder; refused: "
+        "a write never follows a link there (someone else may have put it there)"
+    ]
+    assert list(elsewhere.iterdir()) == []
+    request = Request("/ugv1")
+    event = SelectionChanged(2, request, select(request, {"/ugv1": robot}, solution))
+    assert layouts.path(event) is None
+
+
+def _lower(monkeypatch: pytest.MonkeyPatch, name: str, value: int) -> None:
+    # pylint: disable=protected-access
+    monkeypatch.setitem(limits._BY_NAME, name, replace(limits.limit(name), value=value))
+
+
+def _rovers(count: int, solution: Solution, profile: Profile) -> list[Any]:
+    scan = (
+        Topic("scan", "sensor_msgs/LaserScan", "published"),
+        Topic("cmd_vel", "geometry_msgs/Twist", "subscribed"),
+    )
+    return [
+        _identified(f"/ugv{index}", rover_text(), scan, solution, profile)
+        for index in range(1, count + 1)
+    ]
+
+
+def test_the_watcher_writes_at_most_written_files_layouts_and_says_so_once(
+    solution: Solution, profile: Profile, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # 20,000 robots wrote 30,000 files (82 MB): every layout the watcher writes counts.
+    _lower(monkeypatch, "written-files", 3)
+    robots = _rovers(5, solution, profile)
+    layouts = LiveLayouts(tmp_path, solution)
+    warnings = [w for index, r in enumerate(robots) for w in layouts.update(RobotAdded(index, r))]
+    assert warnings == [
+        f"no layout for /ugv4 (nor for later robots: the watcher's layouts reached a limit): "
+        f"{tmp_path}: 4 files to write (every layout the watcher writes); at most 3 are "
+        "accepted (limit 'written-files', docs/security.md)"
+    ]
+    assert sorted(p.parent.name for p in tmp_path.rglob("*.json")) == ["ugv1", "ugv2", "ugv3"]
+    # A robot past the bound has no layout: its selection says null.
+    request = Request("/ugv5")
+    event = SelectionChanged(9, request, select(request, {"/ugv5": robots[4]}, solution))
+    assert layouts.path(event) is None
+    # A robot already written is written again as it changes: the same files, no more.
+    assert layouts.update(RobotAdded(10, robots[0])) == []
+    assert len(list(tmp_path.rglob("*.json"))) == 3
+
+
+def test_the_watcher_writes_at_most_written_bytes_in_all(
+    solution: Solution, profile: Profile, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    robots = _rovers(3, solution, profile)
+    LiveLayouts(tmp_path / "probe", solution).update(RobotAdded(1, robots[0]))
+    (one,) = (tmp_path / "probe").rglob("*.json")
+    size = one.stat().st_size
+    _lower(monkeypatch, "written-bytes", 2 * size + size // 2)
+    out = tmp_path / "out"
+    layouts = LiveLayouts(out, solution)
+    warnings = [w for index, r in enumerate(robots) for w in layouts.update(RobotAdded(index, r))]
+    assert len(warnings) == 1
+    assert warnings[0].startswith("no layout for /ugv3 (nor for later robots: ")
+    assert f"{3 * size} bytes to write (every layout the watcher writes)" in warnings[0]
+    assert "(limit 'written-bytes', docs/security.md)" in warnings[0]
+    assert sorted(p.parent.name for p in out.rglob("*.json")) == ["ugv1", "ugv2"]

@@ -533,3 +533,116 @@ def test_ctrl_c_ends_a_batch_with_no_traceback_and_every_team_written_whole_or_n
         files.append(out / "teams" / f"{name}.html")
         assert len({path.exists() for path in files}) == 1, (name, [p.exists() for p in files])
     assert not [path for path in out.rglob("*") if path.name.endswith(".tmp")]
+
+
+# ---- links in the output folder and in the input (issue 36.10 and 36.12) ----------------------
+
+
+def _plant(out: Path, name: str) -> Path:
+    """Someone else's folder linked where the batch writes ``OUT/<name>``; it holds a file."""
+    elsewhere = out.parent / f"theirs-{name.strip('.')}"
+    elsewhere.mkdir()
+    (elsewhere / "case1.json").write_text("theirs\n", encoding="utf-8")
+    out.mkdir(exist_ok=True)
+    (out / name).symlink_to(elsewhere, target_is_directory=True)
+    return elsewhere
+
+
+@pytest.mark.parametrize("name", ["teams", STAMPS])
+def test_a_folder_link_planted_in_the_output_folder_is_never_written_through(
+    teams: Path, tmp_path: Path, name: str
+) -> None:
+    elsewhere = _plant(tmp_path / "out", name)
+    status, _, stderr = _batch("teams/case1.yaml", "-o", "out", cwd=tmp_path)
+    assert status == 1
+    message = f"out/{name}: is a link inside the output folder; refused"
+    assert message in stderr
+    assert _summary(tmp_path / "out")["teams/case1.yaml"]["message"].startswith(message)
+    assert [p.name for p in elsewhere.iterdir()] == ["case1.json"]
+    assert (elsewhere / "case1.json").read_text(encoding="utf-8") == "theirs\n"
+
+
+def test_a_link_planted_below_the_teams_folder_is_refused_there(
+    teams: Path, tmp_path: Path
+) -> None:
+    (tmp_path / "out" / "teams").mkdir(parents=True)
+    elsewhere = _plant(tmp_path / "out" / "teams", "ours")
+    status, _, stderr = _batch("teams", "-o", "out", cwd=tmp_path)
+    assert status == 1
+    assert "out/teams/ours: is a link inside the output folder; refused" in stderr
+    rows = _summary(tmp_path / "out")
+    assert rows["teams/case1.yaml"]["status"] == "ok"  # the others are written
+    assert rows["teams/ours/harbour.yaml"]["status"] == "failed"
+    # A failing team's outputs are removed, never through the link.
+    assert [p.name for p in elsewhere.iterdir()] == ["case1.json"]
+
+
+def test_outputs_moved_behind_a_link_are_not_taken_for_up_to_date(
+    teams: Path, tmp_path: Path
+) -> None:
+    _batch("teams/case1.yaml", "-o", "out", cwd=tmp_path)
+    out = tmp_path / "out"
+    (out / "teams").rename(tmp_path / "moved")
+    (out / "teams").symlink_to(tmp_path / "moved", target_is_directory=True)
+    status, _, stderr = _batch("teams/case1.yaml", "-o", "out", cwd=tmp_path)
+    assert status == 1
+    assert "up to date" not in stderr
+    assert "out/teams: is a link inside the output folder" in stderr
+
+
+def test_the_output_folder_may_be_given_through_a_link(teams: Path, tmp_path: Path) -> None:
+    (tmp_path / "real").mkdir()
+    (tmp_path / "out").symlink_to(tmp_path / "real", target_is_directory=True)
+    status, _, stderr = _batch("teams/case1.yaml", "-o", "out", cwd=tmp_path)
+    assert status == 0, stderr
+    assert (tmp_path / "real" / "teams" / "case1.json").is_file()
+
+
+@pytest.mark.parametrize("loops", [1, 3])
+def test_a_recursive_glob_through_links_that_loop_ends_and_finds_each_file_once(
+    teams: Path, loops: int
+) -> None:
+    # A folder linked to itself and to its parent: followed, `**` never ended (each link
+    # another level, 2**40 paths with two of them).
+    for index in range(loops):
+        (teams / "ours" / f"self{index}").symlink_to(".", target_is_directory=True)
+        (teams / "ours" / f"up{index}").symlink_to("..", target_is_directory=True)
+    found = [shown for _, shown in find_teams([f"{teams}/**/*.yaml"])]
+    assert sorted(found) == found
+    assert [Path(f).relative_to(teams).as_posix() for f in found] == [
+        "case1.yaml",
+        "case2.yaml",
+        "case3.yaml",
+        "ours/bad.yaml",
+        "ours/broken.yaml",
+        "ours/harbour.yaml",
+        "ours/own.yaml",
+    ]
+
+
+def test_a_recursive_glob_keeps_globs_meaning(teams: Path, tmp_path: Path) -> None:
+    (teams / "ours" / ".hidden").mkdir()
+    (teams / "ours" / ".hidden" / "x.yaml").write_text(OWN_TEAM, encoding="utf-8")
+    (teams / ".dot.yaml").write_text(OWN_TEAM, encoding="utf-8")
+    (teams / "ours" / "deeper" / "still").mkdir(parents=True)
+    (teams / "ours" / "deeper" / "still" / "h.yaml").write_text(OWN_TEAM, encoding="utf-8")
+    linked = tmp_path / "linked"
+    linked.mkdir()
+    (linked / "l.yaml").write_text(OWN_TEAM, encoding="utf-8")
+    (teams / "link").symlink_to(linked, target_is_directory=True)
+
+    def found(pattern: str) -> list[str]:
+        return [
+            Path(s).relative_to(teams).as_posix() for _, s in find_teams([str(teams / pattern)])
+        ]
+
+    # What Python's glob.glob(recursive=True) gives for these, without the loops:
+    assert found("**/h*.yaml") == ["ours/deeper/still/h.yaml", "ours/harbour.yaml"]
+    assert found("ours/**/*.yaml")[:2] == ["ours/bad.yaml", "ours/broken.yaml"]
+    assert found("*/**/h.yaml") == ["ours/deeper/still/h.yaml"]
+    assert found("**/l.yaml") == ["link/l.yaml"]  # a link to a folder is followed, once
+    with pytest.raises(InputError, match="pattern matches no file"):
+        found("**/x.yaml")  # hidden folders are not searched by `**`
+    assert found("ours/.hidden/**/x.yaml") == ["ours/.hidden/x.yaml"]
+    assert found(".*.yaml") == [".dot.yaml"]
+    assert found("**") == found("**/*")

@@ -25,6 +25,35 @@ def test_a_cell_that_would_read_as_a_formula_is_neutralised() -> None:
     assert csv_cell(3) == 3
 
 
+@pytest.mark.parametrize(
+    "cell",
+    [
+        "\uff1d1+2",  # fullwidth = (a Japanese or Chinese keyboard types it; spreadsheets read =)
+        "\uff0b1+2",  # fullwidth +
+        "\uff0d1+2",  # fullwidth -
+        "\uff20SUM(A1)",  # fullwidth @
+        "\ufe66HYPERLINK()",  # small = (and the other compatibility forms of the four)
+        "\ufe62 1",
+        "\ufe63 1",
+        "\ufe6bSUM(A1)",
+        "\u207c1",  # superscript =
+        " =1+2",  # after spaces, which a spreadsheet may trim
+        "\u3000=1+2",  # after an ideographic space
+        "\xa0@SUM(A1)",  # after a no-break space
+        "\n=1+2",  # a line break first
+    ],
+)
+def test_every_form_of_a_formula_start_is_neutralised_issue_36(cell: str) -> None:
+    assert csv_cell(cell) == "'" + cell
+
+
+@pytest.mark.parametrize(
+    "cell", ["-3", "+1.5", "Camera", "ロボット", "\u2212 not a minus sign", " 5", "a=b"]
+)
+def test_text_that_starts_like_no_formula_is_left_as_it_is(cell: str) -> None:
+    assert csv_cell(cell) == cell
+
+
 def test_the_method_says_which_engine_counted_in_words() -> None:
     team = load_team(TEAMS / "case3.yaml")
     assert method_text(solve(team)) == "counted from the rules' structure, no robots enumerated"

@@ -375,13 +375,14 @@ def test_markdown_report_that_fails_midway_puts_back_the_files_it_replaced(
     real_replace = os.replace
     calls: list[str] = []
 
-    def replace_failing_on_the_page(source: Any, destination: Any) -> None:
+    def replace_failing_on_the_page(source: Any, destination: Any, **folders: Any) -> None:
         # A rename that fails after the charts were renamed into place (a disk error):
-        # it cannot be provoked on purpose, so it is injected here.
+        # it cannot be provoked on purpose, so it is injected here. (Renames are made in the
+        # open folder: names relative to it, src_dir_fd and dst_dir_fd.)
         calls.append(Path(destination).name)
-        if Path(destination) == target:
+        if Path(destination).name == target.name:
             raise OSError(errno.EIO, "Input/output error")
-        real_replace(source, destination)
+        real_replace(source, destination, **folders)
 
     monkeypatch.setattr(os, "replace", replace_failing_on_the_page)
     with pytest.raises(InputError) as caught:

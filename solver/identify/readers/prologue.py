@@ -1,9 +1,10 @@
 """The XML prologue (what comes before the root element), scanned once, in linear time.
 
 A robot description's prologue is an XML declaration, perhaps a comment or two, and in a
-hostile file a document type declaration whose internal subset declares entities. Before
-libxml2 sees a document, :mod:`solver.identify.readers.safexml` asks this module which
-entities the prologue declares, to refuse them with one clear, located message.
+hostile file a document type declaration whose internal subset declares entities, attribute
+defaults or elements. Before libxml2 sees a document, :mod:`solver.identify.readers.safexml`
+asks this module which entities and other declarations the prologue holds, to refuse them with
+one clear, located message.
 
 The scan is a single pass with ``bytes.find`` from a position that only moves forward, so it
 costs time linear in the prologue whatever the bytes are (a regular expression searching for
@@ -30,6 +31,7 @@ __all__ = [
     "MAX_ENTITIES",
     "MAX_PROLOGUE_BYTES",
     "MAX_PROLOGUE_ITEMS",
+    "Declaration",
     "Entity",
     "Prologue",
     "Stop",
@@ -72,10 +74,22 @@ class Entity:
 
 
 @dataclass(frozen=True, slots=True)
+class Declaration:
+    """Any other declaration of the internal subset: ``<!ATTLIST joint ...>`` is
+    ``Declaration("ATTLIST", "joint", offset)``, a parameter entity reference ``%p;`` is
+    ``Declaration("%", "p", offset)``."""
+
+    kind: str
+    name: str
+    offset: int  # of its "<!" (or "%")
+
+
+@dataclass(frozen=True, slots=True)
 class Prologue:
     entities: tuple[Entity, ...]
     stop: Stop
     offset: int  # where the scan ended (the root element's "<" when stop is ROOT)
+    declarations: tuple[Declaration, ...] = ()  # the subset's others, comments aside
 
 
 def scan_prologue(raw: bytes, limit: int = MAX_PROLOGUE_BYTES) -> Prologue:
@@ -90,6 +104,7 @@ class _Scanner:
         self.cut = len(raw) > limit  # running out of bytes at `end` means the limit was hit
         self.pos = 0
         self.entities: list[Entity] = []
+        self.declarations: list[Declaration] = []
         self.items = 0
 
     def prologue(self) -> Prologue:
@@ -168,11 +183,25 @@ class _Scanner:
             return self._past(b"<?", b"?>")
         if raw.startswith(b"<!ENTITY", pos):
             return self._entity()
-        if raw.startswith((b"<!ELEMENT", b"<!ATTLIST", b"<!NOTATION"), pos):
-            return self._past_markup()
+        for kind in (b"ELEMENT", b"ATTLIST", b"NOTATION"):
+            if raw.startswith(b"<!" + kind, pos):
+                self.pos += len(kind) + 2
+                self._declared(kind.decode(), pos)
+                return self._past_markup()
         if raw.startswith(b"%", pos):  # a parameter entity reference
+            end = raw.find(b";", pos + 1, self.end)
+            if end >= 0:
+                self.declarations.append(Declaration("%", _text(raw[pos + 1 : end]), pos))
             return self._past(b"%", b";")
         return None
+
+    def _declared(self, kind: str, start: int) -> None:
+        """Record the declaration of ``kind`` at ``start`` by the name after it."""
+        self._skip_space()
+        found = _NAME_END.search(self.raw, self.pos, self.end)
+        end = self.end if found is None else found.start()
+        self.declarations.append(Declaration(kind, _text(self.raw[self.pos : end]), start))
+        self.pos = end
 
     def _entity(self) -> bool:
         start = self.pos
@@ -184,7 +213,7 @@ class _Scanner:
         name_start = self.pos
         found = _NAME_END.search(self.raw, self.pos, self.end)
         self.pos = self.end if found is None else found.start()
-        name = self.raw[name_start : self.pos].decode("utf-8", errors="replace")
+        name = _text(self.raw[name_start : self.pos])
         self._skip_space()
         literals: list[bytes] = []
         keyword = b""
@@ -256,4 +285,10 @@ class _Scanner:
         return self._result(self._stop_out_of_bytes())
 
     def _result(self, stop: Stop) -> Prologue:
-        return Prologue(tuple(self.entities), stop, min(self.pos, self.end))
+        return Prologue(
+            tuple(self.entities), stop, min(self.pos, self.end), tuple(self.declarations)
+        )
+
+
+def _text(name: bytes) -> str:
+    return name.decode("utf-8", errors="replace")

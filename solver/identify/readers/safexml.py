@@ -6,7 +6,13 @@ entity substitution, DTD loading and network access are off, libxml2's "huge tre
 (it caps depth and text node size), and files are read with a size cap before parsing, so a
 100 MB file or ``/dev/zero`` is refused after reading at most :data:`MAX_XML_BYTES` + 1 bytes.
 A document type declaration that declares entities (the shape of "billion laughs", quadratic
-blowup and external-entity attacks) is refused outright: URDF and SRDF never need one.
+blowup and external-entity attacks) is refused outright: URDF and SRDF never need one. So is
+one that declares anything else (``<!ATTLIST joint type CDATA "revolute">``, an element, a
+notation, a parameter entity reference): an attribute default gives an element an attribute
+the file does not write, to every tool that applies defaults (Python's ElementTree does) and
+to none that does not (this reader, xacro's minidom), so one file would be two robots. A document
+type that declares nothing (``<!DOCTYPE robot>``, an external one, which is never loaded) is
+read.
 
 Every problem is an :class:`~solver.errors.InputError` naming the file and, where libxml2 knows
 it, the line and column.
@@ -27,6 +33,7 @@ from solver.files.inputfile import read_bounded
 from solver.identify.readers.prologue import (
     MAX_PROLOGUE_BYTES,
     MAX_PROLOGUE_ITEMS,
+    Prologue,
     Stop,
     scan_prologue,
 )
@@ -82,7 +89,7 @@ def parse_xml(
         )
     if not raw.strip(b" \t\r\n\x00"):
         raise InputError.at(name, "empty file: expected an XML document", code="xml")
-    _refuse_declared_entities(raw, name)
+    prologue = _refuse_declarations(raw, name)
     if warnings is not None:
         raw = _mend(raw, name, warnings)
     try:
@@ -90,7 +97,7 @@ def parse_xml(
     except etree.XMLSyntaxError as error:
         mended = None if warnings is None else _namespace_recovery(raw, name, warnings)
         if mended is not None:
-            _refuse_entities(mended, raw, name)
+            _refuse_entities(mended, raw, name, prologue)
             return mended
         line, column = error.position if error.position else (None, None)
         message = str(error.msg or error).split(f", line {line}")[0]
@@ -99,7 +106,7 @@ def parse_xml(
         ) from None
     except ValueError as error:  # lxml refuses, e.g., str input carrying an encoding declaration
         raise InputError.at(name, f"malformed XML: {error}", code="xml") from None
-    _refuse_entities(root, raw, name)
+    _refuse_entities(root, raw, name, prologue)
     return root
 
 
@@ -184,26 +191,51 @@ def _namespace_recovery(raw: bytes, name: str, warnings: list[Fault]) -> etree._
     return root
 
 
-def _refuse_declared_entities(raw: bytes, name: str) -> None:
-    """Refuse entity declarations before libxml2 sees them, naming the first one.
+def _refuse_declarations(raw: bytes, name: str) -> Prologue:
+    """Refuse entity and other declarations before libxml2 sees them, naming the first one;
+    the prologue scanned.
 
     libxml2 would refuse most bombs itself, but with messages about loops or amplification;
     scanning the prologue first (:mod:`solver.identify.readers.prologue`, linear and bounded)
     gives one clear message for every variant, and refuses a prologue past its length bound.
     """
     prologue = scan_prologue(raw)
+    if prologue.entities:
+        _refuse_entity_declarations(prologue, raw, name)
+    if prologue.stop is Stop.TOO_LONG:
+        raise InputError.at(
+            name,
+            "no root element within the first "
+            f"{MAX_PROLOGUE_BYTES} bytes or {MAX_PROLOGUE_ITEMS:,} items (XML declaration, "
+            "comments, processing instructions, document type declarations); refused",
+            line=raw.count(b"\n", 0, prologue.offset) + 1,
+            code="xml-prologue",
+        )
+    if prologue.declarations:
+        first = prologue.declarations[0]
+        named = (
+            f"%{shown(first.name)};"
+            if first.kind == "%"
+            else f"<!{first.kind} {shown(first.name)}>"
+        )
+        raise _declared(name, named, line=raw.count(b"\n", 0, first.offset) + 1)
+    return prologue
+
+
+def _declared(name: str, named: str, *, line: int | None) -> InputError:
+    return InputError.at(
+        name,
+        f"the document type declares {named}; declarations in a document type are refused "
+        "(an attribute default would give elements attributes the file does not write, to "
+        "some tools and not to others; a robot description needs none)",
+        line=line,
+        path=named,
+        code="xml-dtd",
+    )
+
+
+def _refuse_entity_declarations(prologue: Prologue, raw: bytes, name: str) -> None:
     entities = prologue.entities
-    if not entities:
-        if prologue.stop is Stop.TOO_LONG:
-            raise InputError.at(
-                name,
-                "no root element within the first "
-                f"{MAX_PROLOGUE_BYTES} bytes or {MAX_PROLOGUE_ITEMS:,} items (XML declaration, "
-                "comments, processing instructions, document type declarations); refused",
-                line=raw.count(b"\n", 0, prologue.offset) + 1,
-                code="xml-prologue",
-            )
-        return
     first = entities[0]
     line = raw.count(b"\n", 0, first.offset) + 1
     external = next((e for e in entities if e.external is not None), None)
@@ -225,11 +257,21 @@ def _refuse_declared_entities(raw: bytes, name: str) -> None:
     )
 
 
-def _refuse_entities(root: etree._Element, raw: bytes, name: str) -> None:
-    """Refuse a DOCTYPE that declares entities, and any entity reference left in the tree."""
+def _refuse_entities(root: etree._Element, raw: bytes, name: str, prologue: Prologue) -> None:
+    """Refuse a DOCTYPE that declares entities, one the prologue scan could not read through
+    (a UTF-16 document, say: its declarations were not seen), and any entity reference left
+    in the tree."""
     from lxml import etree
 
     dtd = root.getroottree().docinfo.internalDTD
+    if dtd is not None and prologue.stop is not Stop.ROOT:
+        raise InputError.at(
+            name,
+            "a document type the prologue scan could not read (is the file UTF-8?); refused: "
+            "what it declares cannot be checked, and a robot description needs none",
+            line=_line_of(raw, b"<!DOCTYPE"),
+            code="xml-dtd",
+        )
     if dtd is not None:
         entities = list(dtd.iterentities())  # type: ignore[attr-defined]  # not in lxml-stubs
         if entities:

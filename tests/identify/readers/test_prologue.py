@@ -8,6 +8,7 @@ from solver.identify.readers.prologue import (
     MAX_ENTITIES,
     MAX_PROLOGUE_BYTES,
     MAX_PROLOGUE_ITEMS,
+    Declaration,
     Entity,
     Stop,
     scan_prologue,
@@ -93,3 +94,29 @@ def test_forty_thousand_open_document_types_are_scanned_once() -> None:
     prologue = scan_prologue(raw)
     assert prologue.stop is Stop.OTHER
     assert prologue.offset == len(b"<!DOCTYPE[")
+
+
+def test_every_other_declaration_of_the_internal_subset_is_named_with_its_offset() -> None:
+    raw = (
+        b"<!DOCTYPE robot [\n"
+        b'  <!ATTLIST joint type CDATA "revolute">\n'
+        b"  <!ELEMENT robot ANY>\n"
+        b'  <!NOTATION n SYSTEM "a>b">\n'
+        b"  %p;\n"
+        b"  <!-- a comment declares nothing --> <?pi nor does this?>\n"
+        b"]>\n" + ROBOT
+    )
+    prologue = scan_prologue(raw)
+    assert prologue.stop is Stop.ROOT
+    assert prologue.entities == ()
+    assert prologue.declarations == (
+        Declaration("ATTLIST", "joint", raw.index(b"<!ATTLIST")),
+        Declaration("ELEMENT", "robot", raw.index(b"<!ELEMENT")),
+        Declaration("NOTATION", "n", raw.index(b"<!NOTATION")),
+        Declaration("%", "p", raw.index(b"%p;")),
+    )
+
+
+def test_an_empty_internal_subset_declares_nothing() -> None:
+    prologue = scan_prologue(b"<!DOCTYPE robot [ <!-- only a comment --> ]>" + ROBOT)
+    assert (prologue.stop, prologue.entities, prologue.declarations) == (Stop.ROOT, (), ())

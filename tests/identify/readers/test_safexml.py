@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from solver.errors import InputError
+from solver.errors import Fault, InputError
 from solver.identify.readers.prologue import MAX_PROLOGUE_BYTES, MAX_PROLOGUE_ITEMS
 from solver.identify.readers.safexml import MAX_XML_BYTES, parse_xml, read_xml
 from tests.conftest import run_cli
@@ -143,4 +143,69 @@ def test_the_cli_refuses_forty_thousand_open_document_types_with_exit_2(tmp_path
     assert result.returncode == 2
     assert result.stderr.startswith(f"{path}:1:")
     assert "malformed XML" in result.stderr
+    assert "Traceback" not in result.stderr
+
+
+# ---- declarations in a document type (issue 36.14c) -------------------------------------------
+# An attribute default gives an element an attribute the file does not write, to every tool
+# that applies it (xml.etree.ElementTree does; lxml with attribute_defaults) and to no other
+# (minidom, lxml as read here): one file, two robots.
+
+
+@pytest.mark.parametrize(
+    ("declaration", "named"),
+    [
+        ('<!ATTLIST joint type CDATA "revolute">', "<!ATTLIST joint>"),
+        ("<!ELEMENT robot ANY>", "<!ELEMENT robot>"),
+        ('<!NOTATION gif SYSTEM "image/gif">', "<!NOTATION gif>"),
+        ("%p;", "%p;"),
+    ],
+    ids=["ATTLIST", "ELEMENT", "NOTATION", "parameter entity reference"],
+)
+def test_a_document_type_that_declares_anything_is_refused_at_its_line(
+    declaration: str, named: str
+) -> None:
+    text = (
+        '<?xml version="1.0"?>\n<!DOCTYPE robot [\n  <!-- fine -->\n'
+        f"  {declaration}\n]>\n"
+        '<robot name="r"><link name="a"/><joint name="j"/></robot>\n'
+    )
+    lenient: list[Fault] = []
+    for warnings in (None, lenient):  # strict, and lenient as the ROS tools are
+        with pytest.raises(InputError) as caught:
+            parse_xml(text, "r.urdf", warnings=warnings)
+        fault = caught.value.faults[0]
+        assert (fault.code, fault.location.line, fault.location.path) == ("xml-dtd", 4, named)
+        assert fault.message.startswith(f"the document type declares {named}; declarations in")
+
+
+def test_a_document_type_that_declares_nothing_is_read() -> None:
+    for doctype in ("<!DOCTYPE robot>", "<!DOCTYPE robot [ ]>", '<!DOCTYPE robot SYSTEM "r.dtd">'):
+        root = parse_xml(f'{doctype}\n<robot name="r"/>', "r.urdf")
+        assert root.get("name") == "r"
+
+
+def test_a_document_type_the_prologue_scan_cannot_read_is_refused_after_parsing() -> None:
+    # UTF-16: the byte scan stops at once, and libxml2 reads the declaration.
+    text = '<!DOCTYPE robot [<!ATTLIST joint type CDATA "revolute">]>\n<robot name="r"/>'
+    with pytest.raises(InputError) as caught:
+        parse_xml(text.encode("utf-16"), "r.urdf")
+    assert caught.value.faults[0].code == "xml-dtd"
+
+
+@pytest.mark.parametrize("option", ["", "--srdf"])
+def test_identify_refuses_an_attribute_default_in_a_urdf_or_srdf(
+    tmp_path: Path, option: str
+) -> None:
+    from tests.identify import builders
+
+    attlist = '<!DOCTYPE robot [\n<!ATTLIST joint type CDATA "revolute">\n]>\n'
+    urdf, srdf = tmp_path / "r.urdf", tmp_path / "r.srdf"
+    urdf.write_text((attlist if not option else "") + builders.ugv().text(), encoding="utf-8")
+    srdf.write_text(attlist + '<robot name="r"><group name="arm"/></robot>\n', encoding="utf-8")
+    srdf_option: list[str | Path] = [option, srdf] if option else []
+    result = run_cli("identify", urdf, *srdf_option)
+    assert result.returncode == 2, result.stdout
+    hostile = srdf if option else urdf
+    assert result.stderr.startswith(f"{hostile}:2: <!ATTLIST joint>: the document type declares")
     assert "Traceback" not in result.stderr
