@@ -16,6 +16,9 @@ and an operator station (:class:`OperatorStation`) that makes each robot active 
 each of its motion controls, every few seconds (``/teleop_ui/active_robot``, and
 ``/teleop_ui/active_<characteristic>`` for the characteristic the shipped profile fills with
 motion controls), and reports the answer a watcher gives (``/teleop_ui/ui_configuration``).
+Any participant on the domain can write that answer, so the operator reads it as the watcher
+reads one (:func:`~solver.live.values.bounded_json`: 1 MiB, 64 levels, checked before
+decoding) and shows each value in it escaped and cut (:func:`~solver.live.values.shown_value`).
 
 **Not emulated**: message payloads other than ``std_msgs/msg/String`` (the other topics carry
 their real ROS 2 type names but no data: only discovery sees them), ROS 2 itself (no rclcpp,
@@ -44,6 +47,7 @@ __all__ = [
     "LOOPBACK_CONFIG",
     "ROBOTS",
     "TEAM",
+    "Answer",
     "DemoRobot",
     "OperatorStation",
     "demo_team",
@@ -337,6 +341,16 @@ def _start_robot(robot: DemoRobot, domain: int) -> _Participant:
     return process
 
 
+@dataclass(frozen=True, slots=True)
+class Answer:
+    """One sample of ``/teleop_ui/ui_configuration`` as the operator read it: its JSON
+    ``value``, or, when it could not be decoded, its ``text`` and the ``error``."""
+
+    value: Any
+    text: str = ""
+    error: str | None = None
+
+
 class OperatorStation:
     """An operator station, as an rclpy node would be one: it publishes the active robot and
     the value of the characteristic ``control`` (``/teleop_ui/active_<control>``), and reads the
@@ -358,16 +372,20 @@ class OperatorStation:
         self.control.write(self.process.string(control))
         self.robot.write(self.process.string(robot))
 
-    def answer(self) -> Any:
-        """The newest answer since the last call (``None`` if none came)."""
+    def answer(self) -> "Answer | None":
+        """The newest answer since the last call (``None`` if none came), decoded as the
+        watcher decodes answers (:func:`~solver.live.values.bounded_json`): any participant
+        on the domain may write one."""
+        from solver.live.values import bounded_json
+
         newest = None
         for sample in self.answers.take(N=64):
             text = getattr(sample, "data", None)
             if isinstance(text, str):
                 try:
-                    newest = json.loads(text)
-                except ValueError:
-                    newest = {"unreadable": text[:60]}
+                    newest = Answer(bounded_json(text))
+                except ValueError as error:  # not JSON, longer or deeper than the bounds
+                    newest = Answer(None, text, str(error))
         return newest
 
     def close(self) -> None:
@@ -425,13 +443,26 @@ def run_demo(
             done += 1
 
 
-def _answered(answer: Any) -> str:
+def _answered(answer: "Answer | None") -> str:
+    """What the operator says of ``answer``: every value a stranger wrote shown escaped and
+    cut (:func:`~solver.live.values.shown_value`), so no answer starts a line of its own."""
+    from solver.live.values import kind_of, shown_value
+
     if answer is None:
         return "  no answer yet (is a watcher running? teleop-ui watch --ros2 ...)"
-    if not isinstance(answer, dict):
+    if answer.error is not None:
+        return f"  answer: unreadable ({answer.error}): {shown_value(answer.text)}"
+    value = answer.value
+    if value is None:
         return "  answer: none (no active robot)"
-    default = " (default)" if answer.get("default") else ""
+    if not isinstance(value, dict):
+        return f"  answer: not a watcher's answer ({kind_of(value)})"
+
+    def field(name: str) -> str:
+        return shown_value(value[name]) if name in value else "?"
+
+    default = " (default)" if value.get("default") is True else ""
     return (
-        f"  answer: UI configuration {answer.get('configuration')}{default} for "
-        f"{answer.get('robot')} from {answer.get('watcher')}"
+        f"  answer: UI configuration {field('configuration')}{default} for {field('robot')} "
+        f"from {field('watcher')}"
     )

@@ -47,8 +47,11 @@ written by another watcher that is still running (the source says so:
 selection's notes. An insisting one (``policy="insist"``) writes over a yielding rival's
 answer, never over an insisting one's. Once that watcher is gone, the parameter is taken over
 at the next poll. A writer the source can tell is no watcher (on ROS 1, a node API that is not
-``http://host:port/``) is overwritten, with a note. Watchers with the same team agree, and
-leave each other's equal answers alone.
+``http://host:port/``) is overwritten, with a note. Any other answer no running watcher wrote
+(anyone can write one: a forgery naming a watcher that does not exist, a killed watcher's,
+something that is no answer at all) is overwritten with a ``warning`` event saying what was
+replaced (once while it lasts). Watchers with the same team agree, and leave each other's
+equal answers alone.
 
 *Lost*: any failed call, or a new pid (the master restarted between two polls), gives
 ``master_lost``; the watcher retries after one interval, doubling up to ``max_backoff``, and
@@ -113,7 +116,7 @@ from solver.live.selection import (
     selection_data,
     ui_configuration_value,
 )
-from solver.live.values import MAX_SELECTION_CHARS, shown_value
+from solver.live.values import MAX_SELECTION_CHARS, kind_of, shown_value
 from solver.ros.names import Topic
 from solver.untrusted import shown
 
@@ -504,11 +507,9 @@ class Watcher:
         ]
         if self._announcing and self.rivals.needs_announcing(params):
             self.source.announce(self.rivals.announcement)
-        return [
-            *self._warnings(warnings),
-            *self.rivals.update(params),
-            *self._select(params, request),
-        ]
+        rivals = self.rivals.update(params)  # before the write-back, which asks who insists
+        selected, replaced = self._select(params, request)
+        return [*self._warnings(warnings + replaced), *rivals, *selected]
 
     def _warnings(self, found: list[tuple[str, str]]) -> list[Event]:
         """A ``warning`` event for each of ``found`` not reported at the last poll (at most
@@ -546,27 +547,33 @@ class Watcher:
             robot = LiveRobot(source.namespace, None, (), error_text, source.topics)
             return robot, robot_data(robot)
 
-    def _select(self, params: dict[str, Any], request: Request) -> list[Event]:
+    def _select(
+        self, params: dict[str, Any], request: Request
+    ) -> tuple[list[Event], list[tuple[str, str]]]:
+        """The ``selection_changed`` event, if the answer changed, and the warning for an
+        answer of no running watcher's that was replaced."""
         selection = select(request, {ns: t.robot for ns, t in self._robots.items()}, self.solution)
         wanted = ui_configuration_value(selection, self.solution, self.caller_id)
-        note = (
+        note, replaced = (
             self._write_back(params.get(_RESULT_KEY, MISSING), wanted, selection)
             if self._announcing
-            else None
+            else (None, None)
         )
         if note is not None and selection is not None:
             selection = dataclasses.replace(selection, notes=(*selection.notes, note))
+        warnings = [(RESULT_PARAM, replaced)] if replaced is not None else []
         data = selection_data(selection, request, self.solution)
         if data == self._selection:
-            return []
+            return [], warnings
         self._selection = data
-        return [SelectionChanged(0, request, selection)]
+        return [SelectionChanged(0, request, selection)], warnings
 
     def _write_back(
         self, present: Any, wanted: dict[str, Any] | None, selection: ActiveSelection | None
-    ) -> str | None:
+    ) -> tuple[str | None, str | None]:
         """Write (or delete) the answer unless a running rival's stays (see the module
-        docstring); a note saying what was not written, or overwritten."""
+        docstring); a note saying what was not written, or overwritten, and a warning when
+        what was replaced came from no running watcher (:func:`_replaced`)."""
         rival, note = self._rival(present, wanted)
         if rival is not None and selection is not None:
             number = shown_value(present.get("configuration", "?"))
@@ -580,13 +587,22 @@ class Watcher:
                     f"{RESULT_PARAM} not written: the watcher {shown_value(rival)} answers there "
                     f"with configuration {number}{both}; run one watcher per graph, give every "
                     f"watcher the same team and rules, or start this one with --insist"
-                )
+                ), None
             # Insisting on a yielding rival: written over (the rival event said so).
+            self._write(present, wanted)
+            return note, None
+        written = self._write(present, wanted)
+        return note, (self._replaced(present, wanted) if written and note is None else None)
+
+    def _write(self, present: Any, wanted: dict[str, Any] | None) -> bool:
+        """Make the answer on the graph ``wanted`` (``None``: deleted); whether it wrote."""
         if wanted is None and present is not MISSING:
             self.source.delete_param(RESULT_PARAM)
-        elif wanted is not None and _answer(present) != _answer(wanted):
+            return True
+        if wanted is not None and _answer(present) != _answer(wanted):
             self.source.set_param(RESULT_PARAM, wanted)
-        return note
+            return True
+        return False
 
     def _rival(self, present: Any, wanted: dict[str, Any] | None) -> tuple[str | None, str | None]:
         """The node name of another watcher, still running, whose different answer is on the
@@ -606,6 +622,22 @@ class Watcher:
             note = f"{RESULT_PARAM} was written by {shown_value(writer)}, {doubt}; overwritten"
             return None, note
         return (writer if running else None), None
+
+    def _replaced(self, present: Any, wanted: dict[str, Any] | None) -> str | None:
+        """What a ``warning`` says of the answer ``present`` this watcher just replaced, when
+        no running watcher wrote it (a forgery, a killed watcher's, anything but an answer);
+        ``None`` for its own, or a running rival's taken away with the active robot."""
+        writer = present.get(WRITER_KEY) if isinstance(present, dict) else None
+        if present is MISSING or writer == self.caller_id:
+            return None  # nothing was there (a deletion is no answer), or its own
+        done = "replaced by this watcher's" if wanted is not None else "deleted (no active robot)"
+        if not isinstance(writer, str):
+            return f"not a watcher's answer ({kind_of(present)}): {done}"
+        # With an answer of its own to write, _rival already found the writer not running.
+        if wanted is None and self.source.running_watcher(writer) == (True, None):
+            return None
+        named = shown_value(writer)
+        return f"an answer in the name of {named}, which is no running watcher: {done}"
 
 
 def _answer(value: Any) -> Any:

@@ -11,12 +11,17 @@ for a time.
 included) with answers the test chooses; an answer may splice raw XML in place of a
 placeholder string (:data:`RAW`), for values the standard marshaller cannot write (thousands
 of levels deep).
+
+:class:`TricklingClients` is the other side: clients that hold a server's connections by
+trickling requests into them, reconnecting whenever they are cut off (a neighbour keeping a
+watcher's node API busy).
 """
 
 from __future__ import annotations
 
 import contextlib
 import gzip
+import select
 import socket
 import threading
 import xmlrpc.client
@@ -186,6 +191,57 @@ class FakeMaster:
 
     def close(self) -> None:
         self.server.close()
+
+
+class TricklingClients:
+    """``count`` clients of the XML-RPC server at ``uri``, each sending the head of a request
+    and then one byte of its body every ``every`` seconds, and connecting again (after
+    ``every``) whenever the server ends the connection, until :meth:`close`. ``ended`` counts
+    the connections the server ended: tests wait for it (an event), never for a time."""
+
+    def __init__(self, uri: str, count: int, every: float = 0.5) -> None:
+        host, port = uri.removeprefix("http://").rstrip("/").rsplit(":", 1)
+        self.address = (host, int(port))
+        self.every = every
+        self.stop = threading.Event()
+        self.ended = 0
+        self._changed = threading.Condition()
+        self.threads = [threading.Thread(target=self._run, daemon=True) for _ in range(count)]
+        for thread in self.threads:
+            thread.start()
+
+    def _run(self) -> None:
+        while not self.stop.is_set():
+            with (
+                contextlib.suppress(OSError),
+                socket.create_connection(self.address, timeout=60) as connection,
+            ):
+                connection.sendall(b"POST / HTTP/1.1\r\nContent-Length: 100000\r\n\r\n")
+                self._trickle(connection)
+            with self._changed:
+                self.ended += 1
+                self._changed.notify_all()
+            self.stop.wait(self.every)
+
+    def _trickle(self, connection: socket.socket) -> None:
+        """A byte whenever the server said nothing for ``every``, until it closes."""
+        while not self.stop.is_set():
+            readable, _, _ = select.select([connection], [], [], self.every)
+            if not readable:
+                connection.sendall(b"<")
+            elif connection.recv(65536) == b"":
+                return
+
+    def wait_ended(self, count: int, timeout: float = 60.0) -> None:
+        """Until the server has ended ``count`` of these connections."""
+        with self._changed:
+            if not self._changed.wait_for(lambda: self.ended >= count, timeout):
+                raise AssertionError(f"the server ended {self.ended} connections, not {count}")
+
+    def close(self) -> None:
+        self.stop.set()
+        for thread in self.threads:
+            thread.join(timeout=60)
 
 
 def empty_graph(params: dict[str, Any] | None = None) -> dict[str, Callable[..., Any]]:

@@ -48,6 +48,7 @@ from tests.identify import builders
 from tests.live.conftest import Recorder
 from tests.live.fleet import (
     drone_configuration,
+    drone_text,
     put_drone,
     put_rover,
     rover_configuration,
@@ -58,6 +59,7 @@ from tests.live.hostile import (
     Behaviour,
     FakeMaster,
     RawServer,
+    TricklingClients,
     answering,
     deep_xml,
     empty_graph,
@@ -418,6 +420,94 @@ def test_a_spoofed_param_update_changes_nothing_the_master_holds(
     assert [d["event"] for d in watch.data(mark)] == ["selection_changed"]
     written = node.get_param("/teleop_ui/ui_configuration")
     assert (written["robot"], written["kinematic_type"]) == ("/uav1", "UAV")
+
+
+def test_a_forged_answer_naming_no_watcher_is_reported_and_replaced(
+    master: Roscore, node: TestNode, start_watcher: Start, solution: Solution
+) -> None:
+    """Issue 36 item 8, as on ROS 2: anyone can set the answer; a watcher that finds one no
+    running watcher wrote says so in a warning and writes its own again."""
+    put_drone(node, "/uav1")
+    node.set_param("/teleop_ui/active_robot", "/uav1")
+    watch = start_watcher(master.uri)
+    mine = watch.watcher.caller_id
+    wait_until(lambda: _writer(node) == mine, 60, "the watcher's answer")
+    mark = watch.mark()
+    forged = {"watcher": "/ghost\nrival", "robot": "/uav1", "configuration": 999}
+    node.set_param("/teleop_ui/ui_configuration", forged, node="/forger")
+    warning = watch.wait_for(
+        lambda d: d["event"] == "warning" and d["where"] == "/teleop_ui/ui_configuration",
+        "the forged answer reported",
+        after=mark,
+    )
+    assert warning["message"] == (
+        "an answer in the name of /ghost\\nrival, which is no running watcher: replaced by "
+        "this watcher's"
+    )
+    wait_until(lambda: _writer(node) == mine, 60, "the watcher's answer again")
+    written = node.get_param("/teleop_ui/ui_configuration")
+    assert written["configuration"] == drone_configuration(solution)
+
+
+def _writer(node: TestNode) -> Any:
+    value = node.get_param("/teleop_ui/ui_configuration")
+    return value.get("watcher") if isinstance(value, dict) else None
+
+
+def _answered_kind(node: TestNode) -> tuple[Any, Any] | None:
+    """The kinematic type and configuration of the answer on the master."""
+    value = node.get_param("/teleop_ui/ui_configuration")
+    if not isinstance(value, dict):
+        return None
+    return value.get("combination", {}).get("kinematic_type"), value.get("configuration")
+
+
+def test_a_neighbour_trickling_at_the_watchers_node_cannot_freeze_its_answer(
+    master: Roscore, node: TestNode, start_watcher: Start, solution: Solution
+) -> None:
+    """Issue 36 item 7: 32 connections trickling a byte at a time into the watcher's node API
+    held its request slots, the master's paramUpdate for a changed description was lost, and
+    the answer kept the old robot's configuration for good."""
+    put_rover(node, "/r1")
+    node.set_param("/r1/robot_description", drone_text())  # a UAV's description at first
+    node.set_param("/teleop_ui/active_robot", "/r1")
+    watch = start_watcher(master.uri)
+    wait_until(lambda: (_answered_kind(node) or ("",))[0] == "UAV", 60, "the UAV's answer")
+    assert watch.watcher.node_uri is not None
+    attack = TricklingClients(watch.watcher.node_uri, 32)
+    try:
+        attack.wait_ended(64)  # the node's slots are full and changing hands
+        node.set_param("/r1/robot_description", rover_text())
+        attack.wait_ended(attack.ended + 64)  # the attack goes on after the change
+    finally:
+        attack.close()
+    wait_until(
+        lambda: _answered_kind(node) == ("UGV", rover_configuration(solution)),
+        60,
+        "the answer for the robot's new description",
+    )
+    assert watch.error is None
+
+
+def test_a_description_push_the_master_never_sends_is_healed_by_a_later_poll(
+    master: Roscore, node: TestNode, start_watcher: Start, solution: Solution
+) -> None:
+    """Issue 36 item 7: anyone can unsubscribe the watcher's node from the master in its name
+    (the master believes any caller id); the change then comes by no push at all, and the
+    watcher's polls read the description again."""
+    put_rover(node, "/r1")
+    node.set_param("/r1/robot_description", drone_text())
+    watch = start_watcher(master.uri)
+    watch.wait_for_event("synced")
+    assert watch.watcher.node_uri is not None
+    neighbour = MasterClient(master.uri, caller_id=watch.watcher.caller_id)
+    neighbour.unsubscribe_param(watch.watcher.node_uri, "/r1/robot_description")
+    neighbour.close()
+    mark = watch.mark()
+    node.set_param("/r1/robot_description", rover_text())
+    changed = watch.wait_for_event("robot_changed", "/r1", after=mark)
+    assert changed["kinematic_type"] == "UGV"
+    assert [c["configuration"] for c in changed["combinations"]] == [rover_configuration(solution)]
 
 
 def _claim(node: TestNode, writer: str, api: str) -> MasterClient:

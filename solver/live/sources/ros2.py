@@ -33,8 +33,15 @@ robot). A robot's own values are String topics ``/<ns>/teleop_ui/<characteristic
 descriptions are. Watchers announce themselves on ``/teleop_ui/watchers``
 (:mod:`solver.live.rivals`); a watcher's name ends in its participant's GUID, so whether it
 still runs is whether that participant is on the domain. A sample on those ``/teleop_ui``
-topics wakes the watcher for them alone (:meth:`DdsGraph.observe_params`); anything else
-discovered or written wakes it for the whole graph.
+topics, the answer's included, wakes the watcher for them alone
+(:meth:`DdsGraph.observe_params`); anything else discovered or written wakes it for the whole
+graph.
+
+*The answer is anyone's to write*: DDS without DDS Security has no access control, so any
+participant can publish on ``/teleop_ui/ui_configuration``. The newest sample read is the
+answer there; when it is not what this watcher last wrote, its next write goes out again (the
+watcher writes when the answer there is no running watcher's, :mod:`solver.live.watcher`), so
+a forged answer is replaced as a ROS 1 parameter set by anyone is.
 
 *Discovery window.* :meth:`DdsGraph.settle` waits until nothing new was discovered for
 :data:`DISCOVERY_QUIET` seconds (at most :data:`DISCOVERY_LIMIT`): the watcher's first
@@ -336,7 +343,11 @@ class DdsGraph:
         self._requests: dict[str, Any] = {}  # /teleop_ui/<name> -> its reader
         answer = Topic(self.participant, dds_topic(ANSWER_TOPIC), self.string_type)
         self._answer_writer = DataWriter(self.participant, answer, qos=_latched())
-        self._answer_reader = DataReader(self.participant, answer, qos=_latched())
+        # Anyone on the domain can write the answer: a sample wakes the watcher, which puts
+        # its own back when that one is not a running watcher's.
+        self._answer_reader = DataReader(
+            self.participant, answer, qos=_latched(), listener=self.params_listener
+        )
         watchers = Topic(self.participant, dds_topic(WATCHERS_TOPIC), self.string_type)
         self._announce_writer = DataWriter(self.participant, watchers, qos=_latched())
         self._announce_reader = DataReader(
@@ -547,6 +558,10 @@ class DdsGraph:
         for sample in self._answer_reader.take(N=16):
             text = getattr(sample, "data", None)
             if isinstance(text, str):
+                if text != self._written:
+                    # Another writer's (or an older one of ours): the topic no longer holds
+                    # what this watcher wrote, so its next write must go out again.
+                    self._written = None
                 try:
                     value = bounded_json(text)
                 except ValueError:  # not JSON, too long or too deep: not an answer to keep

@@ -209,6 +209,55 @@ def test_a_watcher_that_stops_takes_its_answer_back(
         operator.close()
 
 
+def test_a_forged_answer_is_reported_and_replaced_by_the_watchers_own(
+    domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution
+) -> None:
+    """Issue 36 item 8: another participant's answer naming a watcher that does not exist
+    stayed, with no event; now it is a warning and the watcher's answer goes out again (as on
+    ROS 1). DDS cannot stop the forger; the operator station is told what to check."""
+    domain.drone("/uav1")
+    watch = watch_ros2()
+    watch.wait_for(configured("/uav1", drone_configuration(solution)), "/uav1")
+    operator = Operator(domain.id)
+    forger = domain.robot()
+    ghost = "/teleop_ui_watch_1_" + "ab" * 16  # a GUID no participant on the domain has
+    try:
+        operator.activate("/uav1")
+        answer_for(operator, "/uav1")
+        for forged, message in (
+            (
+                {"watcher": ghost, "robot": "/uav1", "configuration": 999},
+                f"an answer in the name of {ghost}, which is no running watcher: replaced by "
+                "this watcher's",
+            ),
+            ([1, 2], "not a watcher's answer (a list): replaced by this watcher's"),
+        ):
+            read = len(operator.answers)
+            mark = watch.mark()
+            forger.latch("/teleop_ui/ui_configuration", json.dumps(forged))
+            warning = watch.wait_for(
+                lambda d: d["event"] == "warning" and d["where"] == "/teleop_ui/ui_configuration",
+                "the forged answer reported",
+                after=mark,
+            )
+            assert warning["message"] == message
+            # The watcher's own answer is written again after the forged one.
+            wait_until(
+                lambda read=read: (  # type: ignore[misc]
+                    operator.answer() is not None
+                    and len(operator.answers) > read
+                    and isinstance(newest := operator.answers[-1], dict)
+                    and newest.get("watcher") == watch.watcher.caller_id
+                ),
+                TIMEOUT,
+                "the watcher's answer again",
+            )
+            assert operator.answers[-1]["configuration"] == drone_configuration(solution)
+        assert [d for d in watch.data() if d["event"] == "rival"] == []
+    finally:
+        operator.close()
+
+
 def test_the_active_motion_control_topic_selects_as_the_ros1_parameter_does(
     domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution
 ) -> None:

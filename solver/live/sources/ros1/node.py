@@ -23,9 +23,19 @@ and its value is never used; ``shutdown`` stops the watcher, as it stops every R
 replies are (:mod:`~solver.live.sources.ros1.rpc`): at most
 :data:`~solver.live.sources.ros1.rpc.MAX_REPLY_BYTES` of body, no DTD, values nested deeper
 than :data:`~solver.live.graph.MAX_DEPTH` not built; a connection that stalls is dropped after
-:data:`REQUEST_TIMEOUT` seconds per read, one that trickles in (a byte now and then, each read
-within that) is cut off :data:`REQUEST_DEADLINE` seconds after it was accepted, and at most
-:data:`MAX_CONNECTIONS` requests are served at once (more are closed unanswered).
+:data:`REQUEST_TIMEOUT` seconds per read, and one that trickles in (a byte now and then, each
+read within that) is cut off :data:`REQUEST_DEADLINE` seconds after it was accepted.
+
+*Slots.* At most :data:`MAX_CONNECTIONS` requests are served at once. When they are all taken,
+a new connection is not turned away: the oldest request still being *read* is cut off to make
+room for it (a request read whole is answered at once: every call here is a few lines). A
+neighbour that opens connections and trickles into them holds no slot against a newcomer, so
+the master's ``paramUpdate``, sent whole in one go, is served however many connections trickle;
+only a flood of more than :data:`MAX_CONNECTIONS` new connections within the moment it takes to
+read that request can still cut it off, and a push lost so is healed by the descriptions'
+re-reading (:mod:`~solver.live.sources.ros1.descriptions`). Cut-off requests whose threads have
+not ended yet count too: past twice :data:`MAX_CONNECTIONS` threads, new connections are closed
+unanswered.
 
 Not here: what an update means (:mod:`~solver.live.sources.ros1.descriptions`,
 :mod:`solver.live.watcher`).
@@ -57,8 +67,8 @@ __all__ = [
 ]
 
 _OK = 1
-REQUEST_TIMEOUT: Final = 5.0
-REQUEST_DEADLINE: Final = 10.0
+REQUEST_TIMEOUT: Final = 1.0
+REQUEST_DEADLINE: Final = 2.0
 MAX_CONNECTIONS: Final = 16
 
 
@@ -83,30 +93,56 @@ def callback_host(master: str) -> str:
 
 
 class _Server(socketserver.ThreadingMixIn, SimpleXMLRPCServer):
-    """A thread per request, at most :data:`MAX_CONNECTIONS` at once; requests parsed by the
+    """A thread per request, :data:`MAX_CONNECTIONS` slots (see the module docstring: the
+    oldest request still being read gives its slot to a newcomer); requests parsed by the
     bounded parser (:func:`solver.live.sources.ros1.rpc.loads`)."""
 
     daemon_threads = True
     allow_reuse_address = True
+    # Connections the kernel holds before they are accepted: a burst does not refuse the master.
+    request_queue_size = 4 * MAX_CONNECTIONS
     deadline = REQUEST_DEADLINE
 
     def __init__(self, *args: Any, **kwargs: Any) -> None:
         super().__init__(*args, **kwargs)
-        self._slots = threading.BoundedSemaphore(MAX_CONNECTIONS)
+        self._lock = threading.Lock()
+        self._running = 0  # request threads not ended yet, cut-off ones included
+        self._reading: dict[socket.socket, None] = {}  # not read whole yet, oldest first
+        self._current = threading.local()  # the request this thread serves
 
     def process_request(self, request: Any, client_address: Any) -> None:
-        if not self._slots.acquire(blocking=False):
-            self.shutdown_request(request)  # busy: the caller may try again
+        if not self._admit(request):
+            self.shutdown_request(request)  # too many threads still ending: try again
             return
         try:
             super().process_request(request, client_address)
         except BaseException:
-            self._slots.release()
+            self._ended(request)
             raise
+
+    def _admit(self, request: socket.socket) -> bool:
+        """Take a slot for ``request``, cutting off the oldest request still being read when
+        every slot is taken; ``False`` when there is none to cut off."""
+        with self._lock:
+            if self._running >= MAX_CONNECTIONS:
+                if not self._reading or self._running >= 2 * MAX_CONNECTIONS:
+                    return False
+                oldest = next(iter(self._reading))
+                del self._reading[oldest]
+                _cut(oldest)  # its read ends at once, and its thread with it
+            self._running += 1
+            self._reading[request] = None
+            return True
+
+    def _ended(self, request: socket.socket) -> None:
+        with self._lock:
+            self._running -= 1
+            self._reading.pop(request, None)
 
     def process_request_thread(self, request: Any, client_address: Any) -> None:
         # The whole request ends by the deadline, however slowly it comes: its socket is shut
         # down then, which ends the read under way.
+        self._current.request = request
         timer = threading.Timer(self.deadline, _cut, (request,))
         timer.daemon = True
         timer.start()
@@ -114,7 +150,11 @@ class _Server(socketserver.ThreadingMixIn, SimpleXMLRPCServer):
             super().process_request_thread(request, client_address)
         finally:
             timer.cancel()
-            self._slots.release()
+            self._ended(request)
+
+    def handle_error(self, request: Any, client_address: Any) -> None:
+        """A request that failed (cut off, or its caller gone) ends quietly: the watcher's
+        output is its events, and the caller's mistake is no one else's."""
 
     def _marshaled_dispatch(
         self,
@@ -123,6 +163,10 @@ class _Server(socketserver.ThreadingMixIn, SimpleXMLRPCServer):
         path: Any = None,  # noqa: ARG002
     ) -> Any:  # bytes (typeshed says str)
         """The standard dispatch, with the bounded parser instead of ``xmlrpc.client.loads``."""
+        request: socket.socket | None = getattr(self._current, "request", None)
+        if request is not None:
+            with self._lock:  # read whole: no longer one to cut off for a newcomer
+                self._reading.pop(request, None)
         try:
             params, method = loads(data)
             if method is None:

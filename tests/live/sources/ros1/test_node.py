@@ -14,10 +14,11 @@ import pytest
 
 from solver.errors import InputError
 from solver.live.graph import MISSING
-from solver.live.sources.ros1.descriptions import Descriptions
+from solver.live.sources.ros1.descriptions import REREAD_AFTER, Descriptions
 from solver.live.sources.ros1.master import MasterClient
-from solver.live.sources.ros1.node import NodeServer, callback_host
-from tests.live.roscore import Roscore, TestNode
+from solver.live.sources.ros1.node import MAX_CONNECTIONS, NodeServer, callback_host
+from tests.live.hostile import TricklingClients
+from tests.live.roscore import Roscore, TestNode, wait_until
 
 TIMEOUT = 60.0
 
@@ -194,3 +195,56 @@ def test_a_request_trickling_in_is_cut_off_at_the_deadline_and_the_node_goes_on(
     # The slot is free again: a well-formed call is answered.
     assert xmlrpc.client.ServerProxy(server.uri).getMasterUri("/rosnode") == [1, "", master]
     server.close()
+
+
+def test_a_fresh_request_is_served_while_more_connections_than_slots_trickle() -> None:
+    """Issue 36 item 7: 32 connections trickling a byte at a time held the node's 16 slots, and
+    the master's paramUpdate was closed unanswered. Now the oldest request still being read
+    gives its slot to a newcomer."""
+    pushes = Pushes()
+    master = "http://127.0.0.1:11311/"  # never called: the node only answers
+    server = NodeServer("127.0.0.1", master, pushes.update, pushes.shutdown)
+    server.start()
+    attack = TricklingClients(server.uri, 2 * MAX_CONNECTIONS)
+    try:
+        # Every slot taken and changing hands: the node is cutting the tricklers off.
+        attack.wait_ended(2 * MAX_CONNECTIONS)
+        for key in ("/uav1/robot_description", "/teleop_ui/active_robot"):
+            answer = xmlrpc.client.ServerProxy(server.uri).paramUpdate("/master", key, "x")
+            assert answer == [1, "", 0]
+            assert pushes.updates.get(timeout=TIMEOUT) == key
+    finally:
+        attack.close()
+        server.close()
+
+
+def test_a_change_whose_push_never_came_is_read_again_by_a_later_sync(
+    master: Roscore, node: TestNode
+) -> None:
+    """Issue 36 item 7: a lost push left a description as it was for good. Whoever can reach
+    the master can unsubscribe the node in its name; the values are read again anyway."""
+    node.set_param("/lost/robot_description", "first")
+    client = MasterClient(master.uri, caller_id="/lost_push_test")
+    pushes = Pushes()
+    server = NodeServer("127.0.0.1", master.uri, pushes.update, pushes.shutdown)
+    server.start()
+    store = Descriptions(client, server.uri)
+    try:
+        store.sync(["/lost/robot_description"])
+        assert store.get("/lost/robot_description") == "first"
+        neighbour = MasterClient(master.uri, caller_id=client.caller_id)
+        neighbour.unsubscribe_param(server.uri, "/lost/robot_description")
+        neighbour.close()
+        node.set_param("/lost/robot_description", "second")
+
+        # The watcher's polls: each sync reads again what is REREAD_AFTER seconds old.
+        def polled() -> bool:
+            store.sync(["/lost/robot_description"])
+            return bool(store.get("/lost/robot_description") == "second")
+
+        wait_until(polled, TIMEOUT + REREAD_AFTER, "the change read again", step=0.05)
+        assert pushes.updates.empty()  # no push came: the master was told to send none
+    finally:
+        store.close()
+        server.close()
+        client.close()
