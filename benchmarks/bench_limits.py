@@ -19,6 +19,7 @@ from solver.check import check_files
 from solver.errors import TooLargeError
 from solver.identify.readers.topics import read_topic_list
 from solver.limits import limit
+from tests.check.helpers import pigeonhole_rules
 
 
 def _team(folder: Path, types: int, motions: int, counts: int) -> Path:
@@ -113,21 +114,8 @@ def test_check_refuses_a_pigeonhole_at_the_conflicts_limit(
 ) -> None:
     # 16 characteristics of 15 values, no two alike (1,800 forbids): no robot exists, and
     # resolution (so the SAT solver) takes exponentially many conflicts to prove it.
-    pigeons, holes = 16, 15
     rules = tmp_path / "pigeonhole.yaml"
-    values = ", ".join(f"h{h}" for h in range(holes))
-    rules.write_text(
-        "name: pigeonhole\ncharacteristics:\n  kinematic_type:\n    values: [A]\n"
-        + "".join(f"  p{i}:\n    values: [{values}]\n" for i in range(pigeons))
-        + "constraints:\n"
-        + "".join(
-            f"  - forbid: {{p{i}: h{h}, p{j}: h{h}}}\n"
-            for h in range(holes)
-            for i in range(pigeons)
-            for j in range(i + 1, pigeons)
-        ),
-        encoding="utf-8",
-    )
+    rules.write_text(pigeonhole_rules(16, 15), encoding="utf-8")
 
     def refused() -> str:
         try:

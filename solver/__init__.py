@@ -16,6 +16,8 @@ The package has wings; each is a package with its own map in its docstring:
                        show it (escaped, cut to 60 characters, marked as cut); every
                        message, text output, finding and event uses it
 ``limits``             every size a command accepts, in one table (docs/security.md)
+``deadline``           a call's time budget (``check``, ``count --symbolic``, the
+                       cover), looked at in its loops; refused when spent
 ``lazy``               packages that load what they export on first use (PEP 562)
 ``collector``          Python's cycle collector held off while many acyclic values
                        are built (reading, solving)
@@ -41,9 +43,9 @@ The package has wings; each is a package with its own map in its docstring:
 
 Layers, lowest first; a module imports only from its own layer or lower ones, and no module
 imports itself back through others (tests/test_architecture.py checks both):
-``errors``, ``extras``, ``untrusted``, ``limits``, ``lazy``, ``collector`` -> ``files``,
-``ros`` -> ``core``, ``engines`` -> ``layouts`` -> ``reporting`` -> ``check``, ``identify``
--> ``live`` -> ``cli``, ``studio``.
+``errors``, ``extras``, ``untrusted``, ``limits``, ``deadline``, ``lazy``, ``collector`` ->
+``files``, ``ros`` -> ``core``, ``engines`` -> ``layouts`` -> ``reporting`` -> ``check``,
+``identify`` -> ``live`` -> ``cli``, ``studio``.
 
 Every command from Python (docs/python-api.md has worked examples):
 
@@ -57,7 +59,7 @@ Every command from Python (docs/python-api.md has worked examples):
 ``count --symbolic``            ``solver.core.symbolic.formulas(team)``
 ``robots``                      ``solver.reporting.listing.numbered_robots(solution)``
 ``reproduce``                   ``compare()``
-``check FILES``                 ``check_files(paths)``
+``check FILES``                 ``check_files(paths)``; ``time_limit=``, ``partial=True``
 ``identify``, ``fleet``         ``identify_urdf(text, ...)``, ``identify_fleet(...)``
 ``watch``, ``assign --master``  ``Watcher``, ``assign_from_master(...)``
 ``demo ros2``                   ``solver.live.demo.emulated_fleet(domain)``

@@ -27,6 +27,7 @@ __all__ = [
     "StructureTooComplex",
     "TeamError",
     "Terminated",
+    "TimeLimitError",
     "TooLargeError",
     "did_you_mean",
 ]
@@ -112,6 +113,11 @@ class TeamError(SolverError, ValueError):
 
 class TooLargeError(SolverError, ValueError):
     """Enumerating or listing would take more than the configured limit allows."""
+
+
+class TimeLimitError(TooLargeError):
+    """A call spent its time budget before it finished (:mod:`solver.deadline`): the input is
+    within every size limit, but the work it asks for took longer than the limit allows."""
 
 
 class StructureTooComplex(TooLargeError):

@@ -8,7 +8,9 @@ names where the size comes from, the size, the limit and this table's name for i
     'characteristics', docs/security.md)
 
 Below each limit, every command ends within seconds (``benchmarks/`` measures the edges).
-docs/security.md shows this table; a test keeps the two in step.
+docs/security.md shows this table; a test keeps the two in step. The ``-seconds`` entries are
+time budgets of work that sizes do not bound: a call stops when its budget is spent
+(:mod:`solver.deadline`), not before it starts.
 
 Not here: the bounds of the file reader (bytes per file, YAML values and nesting, name
 lengths: :mod:`solver.files`), of robot descriptions and bags (:mod:`solver.identify`) and of
@@ -101,6 +103,28 @@ LIMITS: tuple[Limit, ...] = (
         "all questions about one rule set (live values, conflicts, redundancy)",
         "check, and solve's warnings about excluded selections",
     ),
+    # Time budgets (solver.deadline): work that sizes do not bound, stopped when spent.
+    Limit(
+        "check-seconds",
+        30,
+        "seconds of checking",
+        "one check run (--time-limit sets it)",
+        "check",
+    ),
+    Limit(
+        "symbolic-seconds",
+        30,
+        "seconds of building formulas",
+        "one team (--time-limit sets it)",
+        "count --symbolic",
+    ),
+    Limit(
+        "cover-seconds",
+        10,
+        "seconds of proving a minimum cover (HiGHS)",
+        "one cover of overlapping components",
+        _SOLVING + ", count",
+    ),
     # Solving: the engines refuse before enumerating.
     Limit(
         "robots",
@@ -171,15 +195,18 @@ LIMITS: tuple[Limit, ...] = (
         "written-files",
         2_000,
         "files to write",
-        "one command (a layout per UI configuration and the default's)",
-        "layouts",
+        "one command (a layout per UI configuration and the default's; watch --layouts: every "
+        "layout it writes while it runs)",
+        "layouts, watch --layouts",
     ),
     Limit(
         "written-bytes",
         256 * 1024 * 1024,
         "bytes to write",
-        "the files one command writes together (batch: a team's JSON; its report with its charts)",
-        "every command that writes files (layouts, report, batch, fleet -o, solve --plot)",
+        "the files one command writes together (batch: a team's JSON; its report with its "
+        "charts; watch --layouts: every layout it writes while it runs)",
+        "every command that writes files (layouts, report, batch, fleet -o, solve --plot, "
+        "watch --layouts)",
     ),
 )
 

@@ -22,7 +22,7 @@ PACKAGE = ROOT / "solver"
 
 # Lowest first; a wing may import from its own layer and every layer below it.
 LAYERS: tuple[frozenset[str], ...] = (
-    frozenset({"errors", "extras", "untrusted", "limits", "lazy", "collector"}),
+    frozenset({"errors", "extras", "untrusted", "limits", "deadline", "lazy", "collector"}),
     frozenset({"files", "ros"}),
     frozenset({"core", "engines"}),
     frozenset({"layouts"}),

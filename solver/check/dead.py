@@ -91,6 +91,7 @@ def _dead_for_type(context: RulesContext) -> Iterator[Finding]:
     for kinematic_type, live in analysis.type_live.items():
         if kinematic_type in analysis.void_types:
             continue
+        analysis.check_time()
         domains = analysis.type_domains(kinematic_type)
         for position, characteristic in _others(context):
             finding = _dead_for_one_type(
@@ -117,10 +118,12 @@ def _dead_for_one_type(
     """The values of ``characteristic`` other types can have and ``kinematic_type`` cannot,
     with why and the components the type so never needs; None when there are none."""
     anywhere = context.analysis.live_anywhere[position]
-    dead = [v for v in characteristic.values if v in anywhere and v not in live]
-    # One value left is a core value, reported (with its reason) by core-value.
-    if not dead or len(live) == 1:
+    # One value left is a core value, reported (with its reason) by core-value. Live values
+    # are some of those live anywhere: as many means none is dead, told without a walk over
+    # the values (each of 20,000 types walked all 100,000 counts).
+    if len(live) == len(anywhere) or len(live) == 1:
         return None
+    dead = sorted(anywhere - live, key=characteristic.positions.__getitem__)
     reasons = _reasons(context, domains, position, dead)
     blamed = sorted({i for _, conflict in reasons for i in conflict})
     return DEAD_FOR_TYPE.finding(
@@ -174,14 +177,12 @@ def _reasons(
     classes). Groups are in the order of their first value.
     """
     analysis = context.analysis
-    chosen = set(dead)
     groups: dict[tuple[int, ...], list[Value]] = {}
-    # Constraints that exclude nothing over ``domains`` cannot tell values apart there.
-    for values in analysis.classes(domains, analysis.relevant(domains))[position]:
-        members = [v for v in values if v in chosen]
-        if members:
-            conflict = analysis.minimal_conflict(analysis.narrowed(domains, position, members))
-            groups.setdefault(conflict, []).extend(members)
+    # Constraints that exclude nothing over ``domains`` cannot tell values apart there, and
+    # values they cannot tell apart are all dead or all live: classes of the dead ones.
+    for members in analysis.classes(dead, analysis.relevant(domains), position):
+        conflict = analysis.minimal_conflict(analysis.narrowed(domains, position, members))
+        groups.setdefault(conflict, []).extend(members)
     # Classes come in the order of their first values, so the groups do too.
     return [(values, conflict) for conflict, values in groups.items()]
 

@@ -2,8 +2,8 @@
 
 The registry is a constant built from each check module's ``CHECKS`` tuple (no registration
 side effects, no mutable state): load faults first, then coverage and equivalence of the
-components, then the semantic analyses of the constraints, the bound, and finally the checks
-of teams against their rule set.
+components, then the semantic analyses of the constraints, the bound, the checks of teams
+against their rule set, and finally ``unfinished``, which the runner reports itself.
 
 Not here: running the checks over files (:mod:`solver.check.runner`).
 """
@@ -12,12 +12,31 @@ from __future__ import annotations
 
 from typing import Any
 
-from solver.check import bound, core, coverage, dead, equivalence, load, redundancy, teams, void
+from solver.check import (
+    bound,
+    core,
+    coverage,
+    dead,
+    equivalence,
+    load,
+    redundancy,
+    teams,
+    unfinished,
+    void,
+)
 from solver.check.context import RulesContext, TeamContext
 from solver.check.finding import Check
 from solver.check.load import LoadContext
 
-__all__ = ["ALL_CHECKS", "LOAD_CHECKS", "RULE_CHECKS", "TEAM_CHECKS", "check_ids", "get"]
+__all__ = [
+    "ALL_CHECKS",
+    "LOAD_CHECKS",
+    "RULE_CHECKS",
+    "RUN_CHECKS",
+    "TEAM_CHECKS",
+    "check_ids",
+    "get",
+]
 
 LOAD_CHECKS: tuple[Check[LoadContext], ...] = load.CHECKS
 RULE_CHECKS: tuple[Check[RulesContext], ...] = (
@@ -30,7 +49,9 @@ RULE_CHECKS: tuple[Check[RulesContext], ...] = (
     *bound.CHECKS,
 )
 TEAM_CHECKS: tuple[Check[TeamContext], ...] = teams.CHECKS
-ALL_CHECKS: tuple[Check[Any], ...] = (*LOAD_CHECKS, *RULE_CHECKS, *TEAM_CHECKS)
+# Reported by the runner itself, for a run that stopped (partial reports only).
+RUN_CHECKS: tuple[Check[object], ...] = unfinished.CHECKS
+ALL_CHECKS: tuple[Check[Any], ...] = (*LOAD_CHECKS, *RULE_CHECKS, *TEAM_CHECKS, *RUN_CHECKS)
 
 _BY_ID: dict[str, Check[Any]] = {check.id: check for check in ALL_CHECKS}
 if len(_BY_ID) != len(ALL_CHECKS):  # a programming error, caught by the first import in tests

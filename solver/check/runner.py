@@ -16,6 +16,13 @@ that cannot be read or is not YAML at all makes the whole run unusable: :func:`c
 raises one :class:`~solver.errors.InputError` naming every such file and reports nothing
 else. Files are only ever read.
 
+A run has a time budget (the ``check-seconds`` limit, or ``time_limit``: a
+:class:`~solver.deadline.Deadline` every SAT question and every per-type loop looks at), and
+each rule set's SAT search a budget of conflicts. Past either the run raises (the command line
+exits 2); with ``partial=True`` it returns what it found instead, with an ``unfinished``
+finding (:mod:`solver.check.unfinished`): past the conflicts, the other files are still
+checked; past the time, nothing more is.
+
 Not here: the checks (the other modules of this package), printing (:mod:`solver.check.render`).
 """
 
@@ -25,17 +32,27 @@ import os
 from collections.abc import Collection, Iterable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
 from solver.check.context import RulesContext, TeamContext
-from solver.check.finding import LEVELS, Finding, Level
+from solver.check.finding import LEVELS, Check, Finding, Level
 from solver.check.load import LoadContext
 from solver.check.registry import LOAD_CHECKS, RULE_CHECKS, TEAM_CHECKS, check_ids
+from solver.check.unfinished import UNFINISHED, stopped
 from solver.core.analysis import Analysis
 from solver.core.rules import default_rules_path, parse_rules
 from solver.core.ruleset import RuleSet
 from solver.core.team import parse_team
-from solver.errors import Fault, InputError, Location, RulesError, TeamError
+from solver.deadline import Deadline
+from solver.errors import (
+    Fault,
+    InputError,
+    Location,
+    RulesError,
+    TeamError,
+    TimeLimitError,
+    TooLargeError,
+)
 from solver.files.filekind import FileKind, describe, file_kind
 from solver.files.yamlio import Document, load_document
 from solver.limits import limit
@@ -52,6 +69,12 @@ class Report:
 
     files: tuple[str, ...]
     findings: tuple[Finding, ...]
+
+    @property
+    def stopped(self) -> Finding | None:
+        """The first ``unfinished`` finding of a partial run that stopped (``None``: the
+        checks finished)."""
+        return next((f for f in self.findings if f.check == UNFINISHED.id), None)
 
     def count(self, level: Level) -> int:
         return sum(1 for finding in self.findings if finding.level == level)
@@ -72,11 +95,20 @@ def is_team_document(document: Document) -> bool:
     return file_kind(document) == "team"
 
 
+Context = TypeVar("Context", RulesContext, TeamContext)
+
+
+class _OutOfTime(Exception):
+    """A partial run's time is spent: no more file is checked."""
+
+
 @dataclass
 class _Run:
     """The state of one :func:`check_files` call (nothing outlives it)."""
 
     disabled: frozenset[str]
+    deadline: Deadline
+    partial: bool = False
     findings: dict[Finding, None] = field(default_factory=dict)
     unusable: list[Fault] = field(default_factory=list)
     rule_sets: dict[Path, RuleSet | None] = field(default_factory=dict)
@@ -105,8 +137,25 @@ class _Run:
     def analysis(self, rules: RuleSet) -> Analysis:
         """One analysis per rule set, shared by the rule set's checks and its teams'."""
         if id(rules) not in self.analyses:
-            self.analyses[id(rules)] = (rules, Analysis(rules))
+            self.analyses[id(rules)] = (rules, Analysis(rules, deadline=self.deadline))
         return self.analyses[id(rules)][1]
+
+    def run_checks(self, checks: tuple[Check[Context], ...], context: Context) -> None:
+        """Each check not disabled, its findings added as they come. Past the time or the
+        conflicts, a partial run keeps them and says it stopped (:mod:`~solver.check.
+        unfinished`); past the time it raises :class:`_OutOfTime`, as nothing more can run."""
+        try:
+            for check in checks:
+                if check.id not in self.disabled:
+                    context.analysis.check_time()
+                    self.add(check.run(context))
+        except TooLargeError as error:  # the conflicts or the time of the analysis
+            if not self.partial:
+                raise
+            if UNFINISHED.id not in self.disabled:
+                self.add([stopped(error)])
+            if isinstance(error, TimeLimitError):
+                raise _OutOfTime from None
 
     def rules_file(
         self, path: Path, display: str, document: Document | None = None, *, check: bool = True
@@ -128,10 +177,7 @@ class _Run:
             rules = None
         self.rule_sets[key] = rules
         if rules is not None and check:
-            context = RulesContext(rules, self.analysis(rules))
-            for rule_check in RULE_CHECKS:
-                if rule_check.id not in self.disabled:
-                    self.add(rule_check.run(context))
+            self.run_checks(RULE_CHECKS, RulesContext(rules, self.analysis(rules)))
         return rules
 
     def team_file(
@@ -162,10 +208,7 @@ class _Run:
         except InputError as error:
             self.unusable.extend(error.faults)
             return
-        context = TeamContext(team, document, self.analysis(team.rules))
-        for check in TEAM_CHECKS:
-            if check.id not in self.disabled:
-                self.add(check.run(context))
+        self.run_checks(TEAM_CHECKS, TeamContext(team, document, self.analysis(team.rules)))
 
 
 def _own_rules(path: Path, document: Document) -> tuple[Path, str] | None:
@@ -185,17 +228,31 @@ def _own_rules(path: Path, document: Document) -> tuple[Path, str] | None:
 
 
 def check_files(
-    paths: Sequence[str | Path], *, rules: str | Path | None = None, disable: Collection[str] = ()
+    paths: Sequence[str | Path],
+    *,
+    rules: str | Path | None = None,
+    disable: Collection[str] = (),
+    time_limit: float | None = None,
+    partial: bool = False,
 ) -> Report:
     """Check rule set and team files; see the module docstring for which rules a team meets.
 
-    ``disable``: check ids to leave out. Raises :class:`InputError` when a file cannot be read
-    or is not YAML (every such file is named), and :class:`ValueError` for an unknown check id.
+    ``disable``: check ids to leave out. ``time_limit``: the seconds the run may take (default:
+    the ``check-seconds`` limit, docs/security.md). Raises :class:`InputError` when a file
+    cannot be read or is not YAML (every such file is named), :class:`ValueError` for an
+    unknown check id, :class:`~solver.errors.TimeLimitError` past the time limit and
+    :class:`~solver.errors.TooLargeError` past the ``conflicts`` limit. With ``partial``, the
+    last two are not raised: the report holds what was found until then and an
+    ``unfinished`` finding (:attr:`Report.stopped`), as the studio needs to answer a page in
+    time::
+
+        report = check_files(files, time_limit=2.0, partial=True)
+        if report.stopped is not None: ...  # "check stopped after 2 s (limit ...)"
     """
     unknown = sorted(set(disable) - set(check_ids()))
     if unknown:
         raise ValueError(f"unknown check id(s): {', '.join(unknown)}")
-    run = _Run(frozenset(disable))
+    run = _Run(frozenset(disable), Deadline.start("check-seconds", "check", time_limit), partial)
     files = _files_to_read(paths, rules)
     documents = [(Path(name), d) for name in files if (d := run.load(Path(name), name)) is not None]
     if rules is not None:
@@ -206,10 +263,13 @@ def check_files(
         (p, d) for (p, d), kind in zip(documents, kinds, strict=True) if kind in ("rules", None)
     ]
     team_docs = [(p, d) for (p, d), kind in zip(documents, kinds, strict=True) if kind == "team"]
-    loaded = {p: run.rules_file(p, d.file, d) for p, d in rule_docs}
-    against, against_name = _rule_set_for_teams(rules, rule_docs, loaded)
-    for path, document in team_docs:
-        run.team_file(path, document, against, against_name)
+    try:
+        loaded = {p: run.rules_file(p, d.file, d) for p, d in rule_docs}
+        against, against_name = _rule_set_for_teams(rules, rule_docs, loaded)
+        for path, document in team_docs:
+            run.team_file(path, document, against, against_name)
+    except _OutOfTime:
+        pass  # a partial run: what was found is the report
     if run.unusable:
         raise InputError(_sorted_faults(run.unusable))
     findings = sorted(run.findings, key=lambda finding: finding.sort_key)

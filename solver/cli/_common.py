@@ -112,6 +112,20 @@ def seconds(text: str) -> float:
     return value
 
 
+def add_time_limit(parser: argparse.ArgumentParser, name: str, what: str) -> None:
+    """--time-limit S: the time budget of limit ``name`` (docs/security.md) for ``what``."""
+    from solver.limits import limit
+
+    parser.add_argument(
+        "--time-limit",
+        type=seconds,
+        default=None,
+        metavar="S",
+        help=f"stop {what} after S seconds, with exit status 2 (default: "
+        f"{limit(name).value}; limit '{name}', docs/security.md)",
+    )
+
+
 def add_master_options(parser: argparse.ArgumentParser, *, required_help: str) -> None:
     """--master and --timeout, for the commands that read a ROS master."""
     parser.add_argument(

@@ -6,7 +6,7 @@ import argparse
 import textwrap
 from typing import Any
 
-from solver.cli._common import write
+from solver.cli._common import add_time_limit, write
 
 FORMATS = ("text", "parsable", "json", "sarif")
 
@@ -26,7 +26,8 @@ def register(subparsers: Any) -> None:
         "(check-id). Team files are checked against --rules, else against the "
         "one rule set among the files, else against their own 'rules:'. "
         "Exit status: 0 clean, 1 findings at error level (or warning level with "
-        "--strict), 2 unusable input.",
+        "--strict), 2 unusable input, or a rule set whose checks take longer than "
+        "--time-limit or too intricate a SAT search.",
     )
     parser.add_argument(
         "files",
@@ -53,6 +54,7 @@ def register(subparsers: Any) -> None:
         type=_ids,
         help="leave out these checks (repeatable)",
     )
+    add_time_limit(parser, "check-seconds", "checking")
     parser.add_argument(
         "--list-checks",
         action="store_true",
@@ -88,6 +90,8 @@ def run(args: argparse.Namespace) -> int:
     from solver.cli._progress import working
 
     with working(f"checking {len(args.files)} file(s)", fmt=args.format):
-        report = check_files(args.files, rules=args.rules, disable=disabled)
+        report = check_files(
+            args.files, rules=args.rules, disable=disabled, time_limit=args.time_limit
+        )
     write(render(report, args.format))
     return report.exit_status(strict=args.strict)

@@ -9,6 +9,7 @@ from solver.cli._common import (
     add_engine,
     add_format,
     add_rules,
+    add_time_limit,
     load_team_argument,
     team_path,
     write,
@@ -36,6 +37,7 @@ def register(subparsers: Any) -> None:
         help="counts as closed-form expressions of each type's maximum",
     )
     add_engine(parser)
+    add_time_limit(parser, "symbolic-seconds", "building the formulas of --symbolic")
     add_format(parser, ("text", "json", "markdown"))
     parser.set_defaults(run=run)
 
@@ -71,7 +73,7 @@ def run(args: argparse.Namespace) -> int:
     from solver.core.symbolic import agrees_with, formulas
     from solver.reporting.growth import render_growth
 
-    growth = formulas(team)
+    growth = formulas(team, time_limit=args.time_limit)
     write(render_growth(growth, solution, args.format))
     # The output says so too; a formula that disagrees with the exact counter is a bug.
     return 0 if agrees_with(growth, solution) else 1

@@ -27,29 +27,41 @@ Not here: deciding what is a finding (the check modules) or enumerating robots f
 from __future__ import annotations
 
 from bisect import bisect_left
+from collections import OrderedDict
 from collections.abc import Callable, Collection, Iterable, Iterator, Sequence
 from functools import cached_property
 
 from solver.core.constraints import RuleConstraint, Value
 from solver.core.model import Robot
-from solver.core.oracle import Budget, Oracle
+from solver.core.oracle import Budget, Oracle, SharedClasses
 from solver.core.regions import Domains, Sparse, narrowed_positions, sparse_regions
 from solver.core.ruleset import RuleSet
+from solver.deadline import Deadline
 
 __all__ = ["Analysis", "Classes", "deletion"]
 
-# Per characteristic, its domain split into classes of interchangeable values (domain order).
-Classes = tuple[tuple[tuple[Value, ...], ...], ...]
+# A domain split into classes of interchangeable values (domain order).
+Classes = tuple[tuple[Value, ...], ...]
+# A type oracle's constraints, and which of their boxes hold its kinematic types.
+_Signature = tuple[tuple[int, ...], tuple[bool, ...]]
+
+# The variables of the type oracles kept at once (some 400 bytes each, with their clauses);
+# past it, the oracle used least recently is dropped, and built again if a question needs it.
+# Each holds the constraints about any type: 1,000 types with a constraint of their own beside
+# 1,000 such constraints over 1,000 characteristics held 1,000 oracles, 2.8 GB.
+VARIABLES_KEPT = 500_000
 
 
 class Analysis:
     """Questions about one rule set; answers that several checks share are computed once.
 
     Constraints are named by their index in ``rules.constraints`` (two identical constraints
-    are still two constraints).
+    are still two constraints). With a ``deadline`` (:mod:`solver.deadline`), every question
+    looks at it first, and :meth:`check_time` lets a caller's loops do the same: past it, a
+    :class:`~solver.errors.TimeLimitError` located at the rule set.
     """
 
-    def __init__(self, rules: RuleSet) -> None:
+    def __init__(self, rules: RuleSet, *, deadline: Deadline | None = None) -> None:
         self.rules = rules
         # Each constraint's boxes (:mod:`solver.core.regions`) as the (position, set) pairs of
         # the characteristics they restrict: a box about two of 1,000 characteristics is two.
@@ -75,10 +87,19 @@ class Analysis:
             for i, boxes in enumerate(self._sparse)
             if any(all(s for _, s in box) for box in boxes)
         )
-        self._budget = Budget(rules)
-        # One oracle for questions over several types, one per class of types otherwise.
-        self._oracles: dict[tuple[object, ...], Oracle] = {}
-        self._type_oracles: dict[Value, Oracle] = {}  # per kinematic type, of _oracles
+        self._budget = Budget(rules, deadline)
+        # One oracle for questions over several types, one per class of types otherwise (the
+        # ones used last, VARIABLES_KEPT in all; a kinematic type's signature names its own).
+        self._whole_oracle: Oracle | None = None
+        self._oracles: OrderedDict[_Signature, Oracle] = OrderedDict()
+        self._kept_variables = 0
+        self._signatures: dict[Value, _Signature] = {}
+        self._interned: dict[_Signature, _Signature] = {}
+        self._made: SharedClasses = {}
+
+    def check_time(self) -> None:
+        """:class:`~solver.errors.TimeLimitError` once the deadline (if any) has passed."""
+        self._budget.check_time()
 
     # -- domains -------------------------------------------------------------------------------
 
@@ -128,56 +149,76 @@ class Analysis:
         characteristic's own tuple, passed over quickly."""
         return {p: frozenset(domains[p]) for p in narrowed_positions(domains, self.full)}
 
-    def classes(self, domains: Domains, constraints: Sequence[int]) -> Classes:
-        """Each domain split into values that ``constraints`` cannot tell apart."""
-        result = []
-        for position, domain in enumerate(domains):
-            members = frozenset(domain)
-            # Each value's signature lists the tested sets holding it. Walking only each set's
-            # values in the domain (set intersection walks the smaller side) costs the size of
-            # the rules, not domain x conditions; a set holding all or none splits nothing.
-            signature: dict[Value, list[int]] = {}
-            distinct = dict.fromkeys(
-                s for i in constraints for s in self._tested[i].get(position, ())
-            )
-            for k, tested in enumerate(distinct):
-                hits = tested & members
-                if 0 < len(hits) < len(members):
-                    for value in hits:
-                        signature.setdefault(value, []).append(k)
-            groups: dict[tuple[int, ...], list[Value]] = {}
-            for value in domain:
-                groups.setdefault(tuple(signature.get(value, ())), []).append(value)
-            result.append(tuple(tuple(group) for group in groups.values()))
-        return tuple(result)
+    def classes(
+        self, values: Sequence[Value], constraints: Sequence[int], position: int
+    ) -> Classes:
+        """``values`` of the characteristic at ``position`` split into classes that
+        ``constraints`` cannot tell apart, in the order of their first values.
+
+        Only the values asked about, and only the constraints about that characteristic: a
+        question per kinematic type and characteristic split all 1,000 characteristics by all
+        2,000 constraints (two minutes for 1,000 types), and then a range of 100,000 counts
+        for the one value that mattered.
+        """
+        members = frozenset(values)
+        # Each value's signature lists the tested sets holding it. Walking only each set's
+        # values among ``values`` (set intersection walks the smaller side) costs the size of
+        # the rules, not values x conditions; a set holding all or none splits nothing.
+        signature: dict[Value, list[int]] = {}
+        about = self._about[position]
+        distinct = dict.fromkeys(
+            s for i in constraints if i in about for s in self._tested[i].get(position, ())
+        )
+        for k, tested in enumerate(distinct):
+            hits = tested & members
+            if 0 < len(hits) < len(members):
+                for value in hits:
+                    signature.setdefault(value, []).append(k)
+        groups: dict[tuple[int, ...], list[Value]] = {}
+        for value in values:
+            groups.setdefault(tuple(signature.get(value, ())), []).append(value)
+        return tuple(tuple(group) for group in groups.values())
 
     def _oracle(self, domains: Domains) -> Oracle:
         """The oracle for a question: its type's when the key is one value, else the whole
         rule set's."""
         key = self.rules.key_position
         if len(domains[key]) != 1:
-            if () not in self._oracles:
-                self._oracles[()] = Oracle(
-                    self.rules, self._sparse, range(len(self._sparse)), None, self._budget
+            if self._whole_oracle is None:
+                self._whole_oracle = Oracle(
+                    self.rules,
+                    self._sparse,
+                    range(len(self._sparse)),
+                    None,
+                    self._budget,
+                    made=self._made,
                 )
-            return self._oracles[()]
+            return self._whole_oracle
         kinematic_type = domains[key][0]
-        if kinematic_type not in self._type_oracles:
-            self._type_oracles[kinematic_type] = self._type_oracle(kinematic_type)
-        return self._type_oracles[kinematic_type]
+        signature = self._signatures.get(kinematic_type)
+        if signature is None:
+            signature = self._signatures[kinematic_type] = self._signature(kinematic_type)
+        oracle = self._oracles.get(signature)
+        if oracle is not None:
+            self._oracles.move_to_end(signature)
+            return oracle
+        oracle = self._oracles[signature] = Oracle(
+            self.rules, self._sparse, signature[0], kinematic_type, self._budget, made=self._made
+        )
+        self._kept_variables += oracle.variables
+        while self._kept_variables > VARIABLES_KEPT and len(self._oracles) > 1:
+            self._kept_variables -= self._oracles.popitem(last=False)[1].variables
+        return oracle
 
-    def _type_oracle(self, kinematic_type: Value) -> Oracle:
-        included = sorted(self._untyped.union(self._by_type.get(kinematic_type, ())))
-        # Types that meet the same boxes' key sets are the same question.
+    def _signature(self, kinematic_type: Value) -> tuple[tuple[int, ...], tuple[bool, ...]]:
+        """What a type's oracle holds: the constraints about it (or any type), and which of
+        their boxes hold it. Types of one signature are the same question and share it."""
+        included = tuple(sorted(self._untyped.union(self._by_type.get(kinematic_type, ()))))
         signature = (
-            tuple(included),
+            included,
             tuple(_holds(found, kinematic_type) for i in included for found in self._key_sets[i]),
         )
-        if signature not in self._oracles:
-            self._oracles[signature] = Oracle(
-                self.rules, self._sparse, included, kinematic_type, self._budget
-            )
-        return self._oracles[signature]
+        return self._interned.setdefault(signature, signature)
 
     def witness(self, domains: Domains, among: Iterable[int] | None = None) -> Robot | None:
         """A valid robot over ``domains`` under the constraints ``among`` (default: all)."""
@@ -204,6 +245,7 @@ class Analysis:
 
         All sets are empty when there is no valid robot at all.
         """
+        self.check_time()
         oracle = self._oracle(domains)
         found = oracle.live(domains)
         if found is None:
@@ -304,11 +346,20 @@ class Analysis:
 
     @cached_property
     def live_anywhere(self) -> tuple[frozenset[Value], ...]:
-        """Per characteristic, the values some valid robot of some kinematic type has."""
+        """Per characteristic, the values some valid robot of some kinematic type has.
+
+        Each distinct set is added once, and none once all values are in: 20,000 types that
+        can each have all of 100,000 counts cost one set, not 20,000 unions of 100,000.
+        """
         sets: list[set[Value]] = [set() for _ in self.rules.characteristics]
+        added: list[set[int]] = [set() for _ in self.rules.characteristics]
+        sizes = [len(c.values) for c in self.rules.characteristics]
         for live in self.type_live.values():
+            self.check_time()
             for position, values in enumerate(live):
-                sets[position] |= values
+                if len(sets[position]) < sizes[position] and id(values) not in added[position]:
+                    added[position].add(id(values))
+                    sets[position] |= values
         return tuple(frozenset(s) for s in sets)
 
     @cached_property

@@ -44,7 +44,8 @@ import math
 from collections.abc import Collection, Iterable, Sequence
 from dataclasses import dataclass, field
 
-from solver.errors import StructureTooComplex
+from solver.deadline import Deadline
+from solver.errors import Location, StructureTooComplex
 
 __all__ = ["Cover", "Group", "Options", "factors", "minimum_cover", "product_cover"]
 
@@ -117,18 +118,20 @@ class Cover:
         return tuple(key)
 
 
-def minimum_cover(elements: Iterable[Options]) -> Cover:
+def minimum_cover(elements: Iterable[Options], *, file: str = "<cover>") -> Cover:
     """The fewest keys such that every element allows at least one, proven minimal.
 
-    :class:`~solver.errors.StructureTooComplex` if HiGHS ends without a proven optimum (it does
-    not stop early: no time or node limit is set, so this means the solver itself failed).
+    Each program HiGHS solves has the ``cover-seconds`` limit as its time limit: past it, a
+    :class:`~solver.errors.TimeLimitError` at ``file`` (the rule set whose components
+    overlap); :class:`~solver.errors.StructureTooComplex` if HiGHS ends without a proven
+    optimum for any other reason (the solver itself failed).
     """
     family = set(elements)
     width = len(next(iter(family))) if family else 0
-    return product_cover(width, [(tuple(range(width)), family)])
+    return product_cover(width, [(tuple(range(width)), family)], file=file)
 
 
-def product_cover(width: int, parts: Sequence[Part]) -> Cover:
+def product_cover(width: int, parts: Sequence[Part], *, file: str = "<cover>") -> Cover:
     """:func:`minimum_cover` of the product of ``parts`` (disjoint positions, together
     ``0 .. width - 1``), without building the product: the same cover as for the product's
     elements listed one by one."""
@@ -138,9 +141,11 @@ def product_cover(width: int, parts: Sequence[Part]) -> Cover:
         (factor for positions, family in parts for factor in factors(positions, family)),
         key=lambda factor: factor[0],
     )
-    solved = [(positions, family, _cover(family)) for positions, family in found]
+    solved = [(positions, family, _cover(family, file)) for positions, family in found]
     wide = [entry for entry in solved if len(entry[2]) > 1]
-    joint = [] if len(wide) < 2 else [entry for entry in wide if not _packs(entry[1], entry[2])]
+    joint = (
+        [] if len(wide) < 2 else [entry for entry in wide if not _packs(entry[1], entry[2], file)]
+    )
     groups = [
         Group(positions, tuple(sorted(keys)))
         for positions, family, keys in solved
@@ -150,7 +155,7 @@ def product_cover(width: int, parts: Sequence[Part]) -> Cover:
         # No product of the separate covers is proven minimal here: one program over the
         # product of these factors (rare: components that overlap in a cycle, say).
         positions, family = _joined([(entry[0], entry[1]) for entry in joint])
-        groups.append(Group(positions, tuple(sorted(_cover(family)))))
+        groups.append(Group(positions, tuple(sorted(_cover(family, file)))))
         groups.sort(key=lambda group: group.positions)
     return Cover(width, tuple(groups))
 
@@ -242,7 +247,7 @@ def _stabbed(family: Collection[Options]) -> frozenset[Key]:
     return frozenset((component,) for component in chosen)
 
 
-def _cover(family: Collection[Options]) -> frozenset[Key]:
+def _cover(family: Collection[Options], file: str) -> frozenset[Key]:
     """A minimum hitting set of one family, proven by HiGHS where it is not forced."""
     if _runs(family):
         return _stabbed(family)
@@ -251,11 +256,11 @@ def _cover(family: Collection[Options]) -> frozenset[Key]:
     open_elements = [e for e in reduced if forced.isdisjoint(e)]
     if not open_elements:
         return frozenset(forced)
-    chosen = _program(open_elements, packing=False)
+    chosen = _program(open_elements, packing=False, file=file)
     return frozenset(forced | set(chosen))
 
 
-def _packs(family: Collection[Options], cover: frozenset[Key]) -> bool:
+def _packs(family: Collection[Options], cover: frozenset[Key], file: str) -> bool:
     """Whether ``family`` has as many pairwise disjoint elements as ``cover`` has keys."""
     if _runs(family):
         return True
@@ -269,11 +274,11 @@ def _packs(family: Collection[Options], cover: frozenset[Key]) -> bool:
             packed += 1
     if packed >= len(cover):
         return True
-    return len(_program(reduced, packing=True)) >= len(cover)
+    return len(_program(reduced, packing=True, file=file)) >= len(cover)
 
 
-def _program(elements: list[frozenset[Key]], *, packing: bool) -> list[Key]:
-    """Solve one 0/1 program with HiGHS, proven optimal.
+def _program(elements: list[frozenset[Key]], *, packing: bool, file: str) -> list[Key]:
+    """Solve one 0/1 program with HiGHS, proven optimal within the ``cover-seconds`` limit.
 
     Cover: a variable per key, the fewest keys with every element hit. Packing: a variable per
     element, the most elements with no key in two. Returns the keys chosen (cover) or one key
@@ -296,9 +301,14 @@ def _program(elements: list[frozenset[Key]], *, packing: bool) -> list[Key]:
         columns = len(keys)
         lower, upper = np.ones(len(rows)), np.full(len(rows), highspy.kHighsInf)
     starts = [0, *itertools.accumulate(len(row) for row in rows)]
+    deadline = Deadline.start(
+        "cover-seconds", "the minimum cover of overlapping components", option=""
+    )
     solver = _quiet_highs()()
     # One thread: the same input gives the same answer on every machine and run.
     solver.setOptionValue("threads", 1)
+    # Set covers are NP-hard: 300 values in 100 overlapping components took HiGHS minutes.
+    solver.setOptionValue("time_limit", deadline.seconds)
     model = highspy.HighsLp()
     model.num_col_ = columns
     model.num_row_ = len(rows)
@@ -315,6 +325,8 @@ def _program(elements: list[frozenset[Key]], *, packing: bool) -> list[Key]:
     solver.passModel(model)
     solver.run()
     status = solver.getModelStatus()
+    if status == highspy.HighsModelStatus.kTimeLimit:
+        raise deadline.error(Location(file))
     if status != highspy.HighsModelStatus.kOptimal:
         raise StructureTooComplex.at(
             "<cover>",

@@ -162,7 +162,7 @@ def partition_classes(
         from solver.core.cover import minimum_cover
 
         # Positions in numbering order, so that "lowest" below is the lowest number.
-        cover = minimum_cover(sort_key(rules, options) for options in by_options)
+        cover = minimum_cover((sort_key(rules, options) for options in by_options), file=rules.file)
         order = [unsorted(rules, key) for key in cover.chosen()]
         # Each robot goes to the lowest-numbered chosen configuration it can use.
         assigned = {

@@ -622,7 +622,7 @@ def _cover(rules: RuleSet, blocks: Sequence[_Block]) -> Cover:
             if all(c.membership for c in combination)
         }
         parts.append((tuple(place[block.positions[i]] for i in order), family))
-    return product_cover(len(place), parts)
+    return product_cover(len(place), parts, file=rules.file)
 
 
 def _cover_by_block(

@@ -8,6 +8,7 @@ with python-constraint or with :mod:`solver.core.analysis`.
 from __future__ import annotations
 
 import itertools
+import random
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
@@ -33,6 +34,32 @@ def findings(*names: str, check: str | None = None) -> list[Finding]:
     """The findings of checking fixture files together (only ``check``'s, if given)."""
     report = check_files([fixture(name) for name in names])
     return [f for f in report.findings if check is None or f.check == check]
+
+
+def intricate_rules(types: int = 1_000, characteristics: int = 999, shared: int = 1_000) -> str:
+    """A rule set within every size limit that takes ``check`` minutes (item 6 of issue 36).
+
+    ``types`` kinematic types, each with a constraint of its own (so each type's questions go
+    to an oracle of its own), beside ``shared`` constraints about every type, each forbidding
+    one pair of values of two of ``characteristics`` characteristics of three values (seeded,
+    so every run writes the same file). Every type then has some 1,200 classes no first model
+    shows, each a question of its own: with the defaults, 108 KB that took 111 s of CPU and
+    2.8 GB to check, 99 s and 480 MB since.
+    """
+    chosen = random.Random(36)
+    lines = [
+        "name: intricate",
+        "characteristics:",
+        f"  kinematic_type: {{values: [{', '.join(f'K{i}' for i in range(types))}]}}",
+        *(f"  c{c}: {{values: [a, b, c]}}" for c in range(characteristics)),
+        "constraints:",
+        *(f"  - forbid: {{kinematic_type: K{i}, c{i % characteristics}: a}}" for i in range(types)),
+    ]
+    for _ in range(shared):
+        first, second = chosen.sample(range(characteristics), 2)
+        one, other = chosen.choice("abc"), chosen.choice("abc")
+        lines.append(f"  - forbid: {{c{first}: {one}, c{second}: {other}}}")
+    return "\n".join(lines) + "\n"
 
 
 def where(found: Sequence[Finding]) -> list[tuple[str, int, int]]:
@@ -90,3 +117,21 @@ def rule_sets(draw: st.DrawFn, max_constraints: int = 5) -> RuleSet:
         constraints.append(rule)
     data = {"characteristics": characteristics, "constraints": constraints}
     return parse_rules(parse_document(yaml.safe_dump(data, sort_keys=False), "random.yaml"))
+
+
+def pigeonhole_rules(pigeons: int = 16, holes: int = 15) -> str:
+    """A rule set of ``pigeons`` characteristics of ``holes`` values, no two alike (a forbid
+    for each pair and value): no robot exists when there are more pigeons than holes, and
+    resolution (so a SAT solver) takes exponentially many conflicts to prove it."""
+    values = ", ".join(f"h{h}" for h in range(holes))
+    return (
+        "name: pigeonhole\ncharacteristics:\n  kinematic_type:\n    values: [A]\n"
+        + "".join(f"  p{i}:\n    values: [{values}]\n" for i in range(pigeons))
+        + "constraints:\n"
+        + "".join(
+            f"  - forbid: {{p{i}: h{h}, p{j}: h{h}}}\n"
+            for h in range(holes)
+            for i in range(pigeons)
+            for j in range(i + 1, pigeons)
+        )
+    )

@@ -104,8 +104,13 @@ CLEAN: dict[str, str] = {
 }
 
 
+# Reported by the runner of a partial run that stopped, not by a fixture's content:
+# tests/check/test_unfinished.py stops runs to trigger it.
+RUN_ONLY = {"unfinished"}
+
+
 def test_every_check_has_a_trigger_and_a_clean_fixture() -> None:
-    assert set(TRIGGERS) == set(check_ids()) == set(CLEAN)
+    assert set(TRIGGERS) == set(check_ids()) - RUN_ONLY == set(CLEAN)
 
 
 @pytest.mark.parametrize("check_id", sorted(TRIGGERS))

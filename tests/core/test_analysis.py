@@ -7,16 +7,23 @@ combination and testing every constraint with ``RuleConstraint.holds``.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from pathlib import Path
+
+import pytest
 import yaml
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from solver.core import analysis as analysis_module
 from solver.core.analysis import Analysis
 from solver.core.constraints import Value
 from solver.core.rules import parse_rules
 from solver.core.ruleset import RuleSet
+from solver.deadline import Deadline
+from solver.errors import TimeLimitError
 from solver.files.yamlio import parse_document
-from tests.check.helpers import rule_sets, valid_robots
+from tests.check.helpers import pigeonhole_rules, rule_sets, valid_robots
 
 Domains = tuple[tuple[Value, ...], ...]
 
@@ -127,3 +134,59 @@ def test_two_identical_constraints_are_each_redundant_given_the_other() -> None:
     analysis = Analysis(rules)
     assert analysis.entailing(0) == (1,)
     assert analysis.entailing(1) == (0,)
+
+
+def _one_constraint_per_type(types: int) -> RuleSet:
+    """Each type with a constraint of its own (so an oracle of its own) beside two about any
+    type; a third of the types lose a sensor, and K0 every one."""
+    data = {
+        "characteristics": {
+            "kind": {"values": [f"K{i}" for i in range(types)]},
+            "sensor": {"values": ["a", "b", "c"]},
+            "count": {"range": {"min": 1, "max": 4}},
+        },
+        "constraints": [
+            {"forbid": {"sensor": "a", "count": 1}},
+            {"when": {"sensor": "b"}, "require": {"count": {"min": 2}}},
+            *({"forbid": {"kind": f"K{i}", "sensor": "abc"[i % 3]}} for i in range(types)),
+            {"forbid": {"kind": "K0", "count": {"min": 2}}},
+        ],
+    }
+    return parse_rules(parse_document(yaml.safe_dump(data, sort_keys=False), "types.yaml"))
+
+
+def test_type_oracles_dropped_to_bound_memory_give_the_same_answers(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    rules = _one_constraint_per_type(12)
+    kept = Analysis(rules)
+    expected = {kt: kept.live(kept.type_domains(kt)) for kt in rules.key.values}
+    # One oracle at a time: every question about another type drops the one before.
+    monkeypatch.setattr(analysis_module, "VARIABLES_KEPT", 1)
+    dropped = Analysis(rules)
+    for _ in range(2):  # the second time, each oracle is built again
+        for kinematic_type in rules.key.values:
+            domains = dropped.type_domains(kinematic_type)
+            assert dropped.live(domains) == expected[kinematic_type]
+            assert expected[kinematic_type] == _live_by_brute_force(rules, domains)
+    assert len(dropped._oracles) == 1
+    k0 = dropped.type_domains("K0")
+    assert dropped.minimal_conflict(dropped.narrowed(k0, 2, (2, 3, 4))) == (14,)
+
+
+def test_a_long_sat_search_stops_at_its_deadline_not_at_its_conflicts(
+    write_file: Callable[[str, str], Path],
+) -> None:
+    # 16 pigeons, 15 holes: no robot, and MiniSat spends the whole conflicts limit (seconds)
+    # before it can tell. It looks at the deadline every STEP_CONFLICTS conflicts.
+    text = pigeonhole_rules(16, 15)
+    path = write_file("pigeonhole.yaml", text)
+    rules = parse_rules(parse_document(text, str(path)))
+    analysis = Analysis(rules, deadline=Deadline.start("check-seconds", "check", 0.2))
+    with pytest.raises(TimeLimitError) as caught:
+        analysis.live(analysis.full)
+    assert str(caught.value) == (
+        f"{path}: check stopped after 0.2 s (limit 'check-seconds', docs/security.md; "
+        "--time-limit sets it)"
+    )
+    assert analysis._budget.remaining > 0  # the conflicts limit was not reached

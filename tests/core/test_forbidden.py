@@ -116,3 +116,45 @@ def test_a_rule_set_without_constraints_excludes_nothing() -> None:
     from solver.core.forbidden import excluded_by_rules
 
     assert excluded_by_rules(load_rules(RULES / "paper.yaml")) == ()
+
+
+def test_each_of_many_excluded_counts_is_listed_with_the_reason_of_its_own(
+    write_file: Callable[[str, str], Path],
+) -> None:
+    from solver import load_rules
+    from solver.core.forbidden import excluded_by_rules
+
+    rules = write_file(
+        "rules.yaml",
+        "characteristics:\n  kinematic_type: {values: [A, B]}\n"
+        "  sensor_count: {range: {min: 1, max: 5000}}\n"
+        "constraints:\n"
+        "  - {name: few for A, forbid: {kinematic_type: A, sensor_count: {min: 3}}}\n"
+        "  - {name: not 4000 for A, forbid: {kinematic_type: A, sensor_count: 4000}}\n"
+        "  - {name: not 2 for B, forbid: {kinematic_type: B, sensor_count: 2}}\n",
+    )
+    excluded = [
+        (r.kinematic_type, r.values[0], [c.name for c in r.constraints])
+        for r in excluded_by_rules(load_rules(rules))
+    ]
+    # 4000 is excluded by both: deletion in declared order drops the first (the second still
+    # excludes it) and keeps the second.
+    assert excluded == [
+        *(("A", n, ["few for A"]) for n in range(3, 4000)),
+        ("A", 4000, ["not 4000 for A"]),
+        *(("A", n, ["few for A"]) for n in range(4001, 5001)),
+        ("B", 2, ["not 2 for B"]),
+    ]
+
+
+def test_exclusions_past_their_deadline_are_refused() -> None:
+    from dataclasses import replace
+
+    from solver import load_rules
+    from solver.core.forbidden import excluded_by_rules
+    from solver.deadline import Deadline
+    from solver.errors import TimeLimitError
+
+    spent = replace(Deadline.start("check-seconds", "exclusions", 1), end=0.0)
+    with pytest.raises(TimeLimitError, match=r"extended\.yaml: exclusions stopped after 1 s"):
+        excluded_by_rules(load_rules(RULES / "extended.yaml"), deadline=spent)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 from collections.abc import Callable
 from dataclasses import replace
 from pathlib import Path
@@ -10,9 +11,11 @@ import pytest
 import sympy
 from hypothesis import given, settings
 
-from solver import InputError, Team, load_team
+from solver import InputError, Team, load_rules, load_team
 from solver.core.symbolic import formulas, symbol_name
+from solver.core.team import full_team
 from solver.engines.structure import count
+from solver.errors import TimeLimitError
 from solver.reporting.growth import render_growth
 from tests.conftest import TEAMS, run_cli
 from tests.test_properties import problems
@@ -106,8 +109,6 @@ def test_the_rendered_formulas_say_they_equal_the_exact_count() -> None:
 
 
 def test_count_symbolic_json_from_the_command_line() -> None:
-    import json
-
     data = json.loads(run_cli("count", "case2", "--symbolic", "-f", "json").stdout)
     assert data["by_type"][1]["valid_robots"] == "8*n_UGV"
     assert (
@@ -183,3 +184,71 @@ def test_a_constraint_too_large_for_the_structure_is_refused_with_status_2(
     assert result.returncode == 2
     assert "Traceback" not in result.stderr
     assert "constraints link a, b, c into 1030301 class combinations" in result.stderr
+
+
+def _one_component_per_count(write_file: WriteFile, counts: int, constraint: str = "") -> Path:
+    """A rule set of two types whose counts 1..``counts`` each have a component of their own."""
+    components = "".join(
+        f"      - {{name: c{i}, min: {i}, max: {i}}}\n" for i in range(1, counts + 1)
+    )
+    return write_file(
+        "rules.yaml",
+        "characteristics:\n  kinematic_type: {values: [A, B]}\n"
+        "  sensor_type: {values: [camera, lidar]}\n"
+        f"  sensor_count:\n    range: {{min: 1, max: {counts}}}\n    components:\n"
+        + components
+        + constraint,
+    )
+
+
+def test_5000_components_make_an_arrangement_function_of_5000_pieces(
+    write_file: WriteFile,
+) -> None:
+    # Each count reaches a component more: A(n) = n, one piece per count. sympy simplified
+    # each piece against the ones before, and evaluated A piece by piece: 44 s.
+    rules = _one_component_per_count(write_file, 5000)
+    result = run_cli("count", rules, "--symbolic", "-f", "json")
+    assert result.returncode == 0, result.stderr
+    data = json.loads(result.stdout)
+    definition = data["functions"]["A_sensor_count"]["definition"]
+    assert definition.startswith("Piecewise((1, n <= 1), (2, n <= 2), (3, n <= 3), ")
+    assert definition.endswith(", (5000, n <= 5000))")
+    assert data["at_team_maxima"] == {
+        "maxima": {"n_A": 5000, "n_B": 5000},
+        "valid_robots": 2 * 2 * 5000,
+        "ui_configurations": 2 * 2 * 5000,
+        "equal_to_exact_count": True,
+    }
+
+
+def test_an_arrangement_function_is_evaluated_at_every_count_as_the_exact_counter_says(
+    write_file: WriteFile,
+) -> None:
+    _one_component_per_count(write_file, 300)
+    team = load_team(write_file("team.yaml", "rules: rules.yaml\nteam:\n  A: {}\n"))
+    growth = formulas(team)
+    (uav,) = growth.types
+    for n in (1, 2, 150, 299, 300):
+        domains = list(team.selections[0].domains)
+        domains[2] = tuple(range(1, n + 1))
+        exact = count(team.rules, replace(team.selections[0], domains=tuple(domains)))
+        assert growth.evaluate(uav.configurations, {uav.symbol: n}) == exact.ui_configurations
+
+
+def test_formulas_past_their_time_limit_are_refused_naming_the_team_and_the_limit(
+    write_file: WriteFile,
+) -> None:
+    # A constraint on every other count: 2,000 runs of counts, two exact counts each, the
+    # later ones over ever longer prefixes (36 s in full).
+    odd = ", ".join(str(i) for i in range(1, 2001, 2))
+    forbid = f"constraints:\n  - forbid: {{sensor_type: lidar, sensor_count: [{odd}]}}\n"
+    rules = _one_component_per_count(write_file, 2000, forbid)
+    result = run_cli("count", rules, "--symbolic", "--time-limit", "0.5")
+    assert result.returncode == 2
+    assert result.stdout == ""
+    assert result.stderr == (
+        f"{rules}: count --symbolic stopped after 0.5 s (limit 'symbolic-seconds', "
+        "docs/security.md; --time-limit sets it)\n"
+    )
+    with pytest.raises(TimeLimitError, match=r"count --symbolic stopped after 0\.5 s"):
+        formulas(full_team(load_rules(rules)), time_limit=0.5)
