@@ -53,6 +53,7 @@ from benchmarks.latency import report
 from solver import Team, load_team, solve
 from solver.reporting.plot import figure_bytes, radar_figure
 from solver.reporting.svg import chart_svg
+from solver.studio.security import cookie_name
 from solver.studio.selection import parse_query, query_of, team_of
 from tests.studio.conftest import Server, stop, studio_process
 
@@ -144,9 +145,11 @@ class Client:
     def __init__(self, server: Server) -> None:
         where = urlsplit(server.url)
         self.connection = http.client.HTTPConnection(where.hostname or "", where.port, timeout=300)
+        # The cookie a browser keeps after opening the printed address.
+        self.headers = {"cookie": f"{cookie_name(where.port or 0)}={server.token}"}
 
     def get(self, path: str) -> bytes:
-        self.connection.request("GET", path)
+        self.connection.request("GET", path, headers=self.headers)
         response = self.connection.getresponse()
         body = response.read()
         assert response.status == 200, body[:500]

@@ -98,11 +98,13 @@ def run(args: argparse.Namespace) -> int:
     from solver.studio.server import bind, serve
 
     studio = _studio(args)
-    sock = bind(args.host, args.port)
     try:
-        serve(studio, sock, args.host, announce=_announce, open_browser=args.open, warn=_warn)
+        sock = bind(args.host, args.port)
+        try:
+            serve(studio, sock, args.host, announce=_announce, open_browser=args.open, warn=_warn)
+        finally:
+            sock.close()
     finally:
-        sock.close()
         studio.workspace.close()
     return 0
 

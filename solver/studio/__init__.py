@@ -13,12 +13,15 @@ Modules, one concept each:
 ``workspace``          what one studio holds: rule sets, uploads, cached solutions
 ``service``            every answer as data (the API's JSON, the pages' content)
 ``live``               the live view's feed: a watcher on a thread, its events kept
-``security``           the fence: loopback or a token, same-origin changes, sizes
+``security``           the fence: the token, this account, no other site's work, sizes
+``peers``              which account of the machine a connection comes from (Linux)
+``connections``        how many connections, how long a request's head may take
 ``api``                the JSON HTTP API (``/api/...``, ``/openapi.json``)
 ``pages``              the HTML pages (templates in ``templates/``, scripts and
                        styles in ``static/``, shipped with the package)
 ``app``                the ASGI application: pages, API, static files, the fence
-``server``             binding the socket, printing the address, serving (uvicorn)
+``server``             binding the socket, printing the address, serving (uvicorn),
+                       cleaning up whatever signals come
 =====================  ==========================================================
 
 Starlette, uvicorn, python-multipart and Jinja2 come with the ``studio`` extra; they are

@@ -20,7 +20,7 @@ from typing import Any
 from starlette.concurrency import run_in_threadpool
 from starlette.datastructures import UploadFile
 from starlette.exceptions import HTTPException
-from starlette.requests import Request
+from starlette.requests import ClientDisconnect, Request
 from starlette.responses import JSONResponse, Response, StreamingResponse
 from starlette.routing import BaseRoute, Route
 
@@ -34,6 +34,8 @@ __all__ = ["read_uploads", "routes", "safely"]
 Handler = Callable[[Request], Awaitable[Response]]
 # Seconds an event stream waits for an event before a keep-alive comment.
 KEEP_ALIVE = 15.0
+# Event streams open at once, at most (a page of the Live view holds one; they hold no thread).
+MAX_STREAMS = 32
 
 
 def problem(error: SolverError, status: int = 422) -> JSONResponse:
@@ -51,6 +53,9 @@ def safely(handler: Handler) -> Handler:
             return await handler(request)
         except SolverError as error:
             return problem(error)
+        except ClientDisconnect:
+            # Gone, or cut off past the body's bound (solver.studio.security): no one to answer.
+            return Response(status_code=400, headers={"connection": "close"})
         except Exception:
             traceback.print_exc(file=sys.stderr)
             return JSONResponse(
@@ -429,21 +434,35 @@ async def live_events(request: Request) -> Response:
         raise InputError.at("<live>", "the studio was started without --ros2 or --master")
     text = request.headers.get("last-event-id") or request.query_params.get("after", "")
     after = int(text) if text.isdigit() and len(text) < 18 else 0
+    streams: set[object] = request.app.state.streams
+    if len(streams) >= MAX_STREAMS:
+        return JSONResponse(
+            {
+                "error": f"{MAX_STREAMS} live event streams are open already (a page each); "
+                "close one and reload",
+                "faults": [],
+            },
+            status_code=503,
+            headers={"retry-after": "10"},
+        )
+    token = object()
+    streams.add(token)
 
     async def stream() -> Any:
         import json
 
-        seq = after
-        while not feed.stopped:
-            events = await run_in_threadpool(feed.events_after, seq, KEEP_ALIVE)
-            if await request.is_disconnected():
-                return
-            if not events:
-                yield ": keep-alive\n\n"
-                continue
-            for event in events:
-                seq = event["seq"]
-                yield f"id: {seq}\ndata: {json.dumps(event, ensure_ascii=False)}\n\n"
+        try:
+            seq = after
+            while not feed.stopped:
+                events = await feed.next_events(seq, KEEP_ALIVE)
+                if not events:
+                    yield ": keep-alive\n\n"
+                    continue
+                for event in events:
+                    seq = event["seq"]
+                    yield f"id: {seq}\ndata: {json.dumps(event, ensure_ascii=False)}\n\n"
+        finally:
+            streams.discard(token)
 
     return StreamingResponse(stream(), media_type="text/event-stream")
 

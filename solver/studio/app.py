@@ -42,7 +42,7 @@ _SCHEMAS = SchemaGenerator(
 )
 
 
-def make_app(studio: Studio, *, host: str, port: int, token: str | None) -> Guard:
+def make_app(studio: Studio, *, host: str, port: int, token: str) -> Guard:
     """The studio's application for ``studio``, answering as the server at ``host:port``."""
 
     async def openapi(_: Request) -> Response:
@@ -68,4 +68,6 @@ def make_app(studio: Studio, *, host: str, port: int, token: str | None) -> Guar
         lifespan=lifespan,
     )
     app.state.studio = studio
+    # The live event streams open now (solver.studio.api bounds them).
+    app.state.streams = set()
     return Guard(app, host=host, port=port, token=token, max_body=MAX_UPLOAD_BYTES)

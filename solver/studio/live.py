@@ -12,6 +12,8 @@ Not here: watching (:mod:`solver.live`), HTTP (:mod:`solver.studio.api`).
 
 from __future__ import annotations
 
+import asyncio
+import contextlib
 import threading
 from collections import deque
 from collections.abc import Callable
@@ -60,6 +62,8 @@ class LiveFeed:
         self._seq = 0
         self._stop = threading.Event()
         self._watcher: Watcher | None = None
+        # Pages waiting for events on the server's event loop (no thread each).
+        self._waiters: set[tuple[asyncio.AbstractEventLoop, asyncio.Event]] = set()
         self._thread = threading.Thread(target=self._run, name="studio-live", daemon=True)
 
     def start(self) -> None:
@@ -72,6 +76,7 @@ class LiveFeed:
         with self._changed:
             watcher = self._watcher
             self._changed.notify_all()
+            self._wake()
         if watcher is not None:
             watcher.stop("the studio stops")
         if wait and self._thread.is_alive():
@@ -96,6 +101,31 @@ class LiveFeed:
         with self._changed:
             self._changed.wait_for(lambda: self._seq > seq or self._stop.is_set(), timeout)
             return [event for event in self._events if event["seq"] > seq]
+
+    async def next_events(self, seq: int, timeout: float) -> list[dict[str, Any]]:
+        """:meth:`events_after` for a coroutine: it waits on the event loop, holding no
+        thread, so any number of pages may wait at once."""
+        woken = asyncio.Event()
+        waiter = (asyncio.get_running_loop(), woken)
+        with self._changed:
+            if self._seq <= seq and not self._stop.is_set():
+                self._waiters.add(waiter)
+        try:
+            if waiter in self._waiters:
+                await asyncio.wait_for(woken.wait(), timeout)
+        except TimeoutError:
+            pass
+        finally:
+            with self._changed:
+                self._waiters.discard(waiter)
+        with self._changed:
+            return [event for event in self._events if event["seq"] > seq]
+
+    def _wake(self) -> None:
+        """Wake every waiting page (with ``_changed`` held)."""
+        for loop, woken in self._waiters:
+            with contextlib.suppress(RuntimeError):  # its loop is closed: the server stopped
+                loop.call_soon_threadsafe(woken.set)
 
     def _run(self) -> None:
         while not self._stop.is_set():
@@ -144,6 +174,7 @@ class LiveFeed:
                 self._robots.clear()
             self._events.append(event)
             self._changed.notify_all()
+            self._wake()
 
 
 def _message(error: SolverError) -> str:

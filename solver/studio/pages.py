@@ -25,8 +25,9 @@ from starlette.requests import Request
 from starlette.responses import HTMLResponse, RedirectResponse, Response
 from starlette.routing import BaseRoute, Route
 
+from solver.core.forbidden import Removed
 from solver.core.reproduce import published_note
-from solver.core.ruleset import Characteristic
+from solver.core.ruleset import Characteristic, RuleSet
 from solver.errors import Fault, InputError, SolverError
 from solver.studio.api import read_uploads
 from solver.studio.selection import SELECTION_FILE
@@ -202,10 +203,34 @@ class CharacteristicControl:
 
 @dataclass(frozen=True)
 class TypeControl:
+    """A kinematic type's controls. A type not shown on a page too large to hold every type
+    has none: its part of the selection is ``carried`` as the address holds it."""
+
     name: str
     included: bool
     shown: bool
     characteristics: tuple[CharacteristicControl, ...]
+    carried: tuple[tuple[str, str], ...] = ()
+
+
+# Value controls one selection page holds at most with every type shown; a rule set with more
+# is shown one type at a time (1,000 types of 999 characteristics made a page of 1.5 GB).
+MAX_PAGE_CONTROLS = 20_000
+
+
+def shown_view(rules: RuleSet, view: str) -> str:
+    """The view a page shows: ``view``, but the first kinematic type instead of ``all`` when
+    every type's controls together are more than :data:`MAX_PAGE_CONTROLS`."""
+    if view != "all":
+        return view
+    per_type = sum(
+        len(c.values) if c.kind != "integer" else 1
+        for c in rules.characteristics
+        if c.name != rules.team_key
+    )
+    if per_type * len(rules.key.values) <= MAX_PAGE_CONTROLS:
+        return view
+    return str(rules.key.values[0])
 
 
 def _components_text(characteristic: Characteristic, value: object) -> str:
@@ -218,75 +243,94 @@ def _type_controls(page: Page, view: str) -> list[TypeControl]:
         return []
     rules = chosen.rules
     selection = chosen.selection
+    excluded = page.studio.workspace.excluded(chosen.source)
     values = dict(selection.values)
     ranges = dict(selection.ranges)
-    excluded = page.studio.workspace.excluded(chosen.source)
     controls = []
+    collapsed = view != "all"
     for kinematic_type in (str(v) for v in rules.key.values):
-        characteristics = []
-        for characteristic in rules.characteristics:
-            if characteristic.name == rules.team_key:
-                continue
-            key = f"{kinematic_type}.{characteristic.name}"
-            where = (kinematic_type, characteristic.name)
-            if characteristic.kind == "integer":
-                low, high = int(characteristic.values[0]), int(characteristic.values[-1])
-                given = [v for v in values.get(where, ()) if v.strip().isdigit()]
-                start, end = ranges.get(where, (None, None))
-                minimum = _bounded(start, low, high, low)
-                maximum = _bounded(end, low, high, high)
-                if given:
-                    minimum, maximum = min(map(int, given)), max(map(int, given))
-                components = "; ".join(
-                    f"{c.name}: {c.describe_range()}" for c in characteristic.components
-                )
-                characteristics.append(
-                    CharacteristicControl(
-                        key,
-                        characteristic.name,
-                        characteristic.label,
-                        "integer",
-                        low=low,
-                        high=high,
-                        minimum=minimum,
-                        maximum=maximum,
-                        components=components if len(components) < 400 else "",
-                    )
-                )
-                continue
-            chosen_values = values.get(where)
-            reasons = excluded.get(where, {})
-            characteristics.append(
-                CharacteristicControl(
-                    key,
-                    characteristic.name,
-                    characteristic.label,
-                    "categorical",
-                    tuple(
-                        ValueControl(
-                            str(value),
-                            _components_text(characteristic, value),
-                            chosen_values is None or str(value) in chosen_values,
-                            ""
-                            if str(value) not in reasons
-                            else " and ".join(
-                                f"{shown(c.name, quoted=True)} ({c.location})"
-                                for c in reasons[str(value)].constraints
-                            ),
-                        )
-                        for value in characteristic.values
-                    ),
-                )
-            )
-        controls.append(
-            TypeControl(
-                kinematic_type,
-                kinematic_type in selection.types,
-                view in ("", "all") or view == kinematic_type,
-                tuple(characteristics),
-            )
+        shown_here = view in ("", "all") or view == kinematic_type
+        included = kinematic_type in selection.types
+        if collapsed and not shown_here:
+            # Not drawn: its part of the selection travels on as the address holds it.
+            prefix = f"{kinematic_type}."
+            carried = tuple((k, v) for k, v in page.pairs if k.startswith(prefix))
+            controls.append(TypeControl(kinematic_type, included, False, (), carried))
+            continue
+        characteristics = tuple(
+            _integer_control(values, ranges, kinematic_type, characteristic)
+            if characteristic.kind == "integer"
+            else _categorical_control(values, kinematic_type, characteristic, excluded)
+            for characteristic in rules.characteristics
+            if characteristic.name != rules.team_key
         )
+        controls.append(TypeControl(kinematic_type, included, shown_here, characteristics))
     return controls
+
+
+# The values a selection names, by (type, characteristic), as text.
+ChosenValues = dict[tuple[str, str], tuple[str, ...]]
+
+
+def _integer_control(
+    values: ChosenValues,
+    ranges: dict[tuple[str, str], tuple[str | None, str | None]],
+    kinematic_type: str,
+    characteristic: Characteristic,
+) -> CharacteristicControl:
+    """The two sliders of a count characteristic, as the selection sets them."""
+    where = (kinematic_type, characteristic.name)
+    low, high = int(characteristic.values[0]), int(characteristic.values[-1])
+    given = [v for v in values.get(where, ()) if v.strip().isdigit()]
+    start, end = ranges.get(where, (None, None))
+    minimum = _bounded(start, low, high, low)
+    maximum = _bounded(end, low, high, high)
+    if given:
+        minimum, maximum = min(map(int, given)), max(map(int, given))
+    components = "; ".join(f"{c.name}: {c.describe_range()}" for c in characteristic.components)
+    return CharacteristicControl(
+        f"{kinematic_type}.{characteristic.name}",
+        characteristic.name,
+        characteristic.label,
+        "integer",
+        low=low,
+        high=high,
+        minimum=minimum,
+        maximum=maximum,
+        components=components if len(components) < 400 else "",
+    )
+
+
+def _categorical_control(
+    values: ChosenValues,
+    kinematic_type: str,
+    characteristic: Characteristic,
+    excluded: dict[tuple[str, str], dict[str, Removed]],
+) -> CharacteristicControl:
+    """A box per value, ticked as the selection says, disabled where the rules exclude it."""
+    where = (kinematic_type, characteristic.name)
+    chosen_values = values.get(where)
+    reasons = excluded.get(where, {})
+    return CharacteristicControl(
+        f"{kinematic_type}.{characteristic.name}",
+        characteristic.name,
+        characteristic.label,
+        "categorical",
+        tuple(
+            ValueControl(
+                str(value),
+                _components_text(characteristic, value),
+                chosen_values is None or str(value) in chosen_values,
+                ""
+                if str(value) not in reasons
+                else " and ".join(
+                    f"{shown(c.name, quoted=True)} ({c.location})"
+                    for c in reasons[str(value)].constraints
+                ),
+            )
+            for value in characteristic.values
+        ),
+    )
 
 
 @dataclass(frozen=True)
@@ -358,7 +402,7 @@ async def selection(page: Page) -> Response:
         _choose(page)
         chosen = page.chosen
         assert chosen is not None
-        view = _first(page.pairs, "view") or "all"
+        view = shown_view(chosen.rules, _first(page.pairs, "view") or "all")
         data = None
         note = None
         if chosen.team is not None:

@@ -1,31 +1,44 @@
 """The studio's fence, as one ASGI middleware in front of every request.
 
-* **Who may ask.** Bound to loopback, only ``Host`` names of this machine are served (a web page
-  elsewhere cannot reach the studio by rebinding a name of its own to 127.0.0.1). Bound to any
-  other address (``--host``), every request needs the token printed at start: once in the
-  address (``?token=...``, then kept in a same-site cookie) or as ``Authorization: Bearer``.
-* **Who may change.** A request that changes state (anything but GET and HEAD) must come from
-  the studio's own pages: a browser's ``Origin`` or ``Sec-Fetch-Site`` naming another site is
-  refused. Programs that send neither (a notebook, curl) are served.
-* **How much.** A request body must say its length (``Content-Length``) and be at most
-  :data:`~solver.studio.workspace.MAX_UPLOAD_BYTES`; more is refused before it is read.
+* **Who may ask.** Every request carries the token the studio printed at start, on loopback
+  too (another account on the machine reaches 127.0.0.1 as easily as its owner does): once in
+  the address (``?token=...``; a page visited so is sent on to the same address without it,
+  with the token in a same-site cookie of this port's own) or as ``Authorization: Bearer``.
+  A connection from another account of this machine is refused even with the token, where the
+  kernel says whose it is (:mod:`solver.studio.peers`). Bound to loopback, only ``Host`` names
+  of this machine are served (a web page elsewhere cannot reach the studio by rebinding a name
+  of its own to 127.0.0.1).
+* **Who may cause work.** A request from another site (``Sec-Fetch-Site``: ``cross-site``,
+  or ``same-site``, which another port of 127.0.0.1 is) is refused whatever its method, but
+  for a page opened from an address that carries the token (whoever links it holds the
+  token). A request that changes state (anything but GET and HEAD) must moreover come from the
+  studio's own pages: an ``Origin`` naming another site is refused. Programs that send neither
+  (a notebook, curl) are served when they carry the token.
+* **How much.** An address (its query) is at most :data:`MAX_QUERY_BYTES`; a request body
+  must say its length (``Content-Length``, no ``Transfer-Encoding``) and be at most
+  ``max_body`` bytes, refused before it is read; and the bytes actually read are counted, so
+  no header can make the studio read more.
 * **What a page may do.** Every response carries a Content Security Policy that lets a page
   load only the studio's own scripts, styles and images (no inline script, no other site), and
   no ``Referer`` to other sites.
 
-Not here: what is read once a request is let in (:mod:`solver.studio.workspace`).
+Not here: connections (how many, how long a head may take: :mod:`solver.studio.connections`),
+what is read once a request is let in (:mod:`solver.studio.workspace`).
 """
 
 from __future__ import annotations
 
 import hmac
+import html
 import json
 from collections.abc import Awaitable, Callable, MutableMapping
 from http.cookies import SimpleCookie
 from typing import Any
 from urllib.parse import parse_qsl, urlencode
 
-__all__ = ["COOKIE", "HEADERS", "Guard", "loopback"]
+from solver.studio.peers import same_account
+
+__all__ = ["HEADERS", "MAX_QUERY_BYTES", "Guard", "cookie_name", "loopback"]
 
 Scope = MutableMapping[str, Any]
 Message = MutableMapping[str, Any]
@@ -33,7 +46,9 @@ Receive = Callable[[], Awaitable[Message]]
 Send = Callable[[Message], Awaitable[None]]
 App = Callable[[Scope, Receive, Send], Awaitable[None]]
 
-COOKIE = "teleop_ui_studio"
+# Bytes of an address's query at most: a selection of a thousand values (about 40 KB) travels
+# in the address when pages are used without scripts.
+MAX_QUERY_BYTES = 64 * 1024
 HEADERS: tuple[tuple[bytes, bytes], ...] = (
     (
         b"content-security-policy",
@@ -47,6 +62,10 @@ HEADERS: tuple[tuple[bytes, bytes], ...] = (
     (b"x-frame-options", b"DENY"),
 )
 _SAFE_METHODS = frozenset({"GET", "HEAD", "OPTIONS"})
+_NO_TOKEN = (
+    "this studio needs the token it printed at start: open the address it printed "
+    "(http://...?token=...), or send the header Authorization: Bearer TOKEN"
+)
 
 
 def loopback(host: str) -> bool:
@@ -61,134 +80,177 @@ def loopback(host: str) -> bool:
         return False
 
 
+def cookie_name(port: int) -> str:
+    """The cookie of the studio on ``port``: a browser sends a host's cookies to every port of
+    it, so each studio names its own."""
+    return f"teleop_ui_studio_{port}"
+
+
 class Guard:
     """See the module docstring. ``port`` is the port the studio listens on."""
 
-    def __init__(self, app: App, *, host: str, port: int, token: str | None, max_body: int) -> None:
+    def __init__(self, app: App, *, host: str, port: int, token: str, max_body: int) -> None:
         self.app = app
-        self.token = token
+        self.token = token.encode()
+        self.cookie = cookie_name(port)
         self.max_body = max_body
-        self.hosts = {f"{name}:{port}" for name in ("127.0.0.1", "localhost", "[::1]")}
-        self.hosts.add(f"[{host}]:{port}" if ":" in host else f"{host}:{port}")
+        self.hosts: frozenset[str] | None = None
+        if loopback(host):
+            names = {f"{name}:{port}" for name in ("127.0.0.1", "localhost", "[::1]")}
+            names.add(f"[{host}]:{port}" if ":" in host else f"{host}:{port}")
+            self.hosts = frozenset(names)
 
     async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
         if scope["type"] != "http":
             await self.app(scope, receive, send)
             return
         headers = {k.decode("latin-1"): v.decode("latin-1") for k, v in scope["headers"]}
-        host = headers.get("host", "")
-        if self.token is None and host not in self.hosts:
-            await _refuse(send, 421, f"this studio answers to {sorted(self.hosts)[0]} only")
+        navigation = _navigation(headers)
+        refused = self._refused(scope, headers)
+        if refused is not None:
+            await _refuse(send, *refused, page=navigation)
             return
-        if self.token is not None:
-            verdict = _token(scope, headers, self.token)
-            if verdict == "missing":
-                await _refuse(
-                    send,
-                    401,
-                    "this studio needs the token it printed at start: open the address it "
-                    "printed (with ?token=...)",
-                )
-                return
-            if verdict == "in-address":
-                await _redirect_keeping_token(scope, send, self.token)
-                return
-        if scope["method"] not in _SAFE_METHODS:
-            refused = _cross_site(headers, host)
-            if refused:
-                await _refuse(send, 403, refused)
-                return
-            length = headers.get("content-length")
-            if length is None and headers.get("transfer-encoding"):
-                await _refuse(send, 411, "a request body must say its length (Content-Length)")
-                return
-            if length is not None and (not length.isdigit() or int(length) > self.max_body):
-                await _refuse(
-                    send, 413, f"a request body may be at most {self.max_body} bytes; refused"
-                )
-                return
+        if navigation and scope["method"] in ("GET", "HEAD") and self._token_in_query(scope):
+            await self._redirect_keeping_token(scope, send)
+            return
+        await self.app(scope, _bounded(receive, self.max_body), _with_headers(send))
 
-        async def send_with_headers(message: Message) -> None:
-            if message["type"] == "http.response.start":
-                message["headers"] = [*message.get("headers", []), *HEADERS]
-            await send(message)
+    def _refused(self, scope: Scope, headers: dict[str, str]) -> tuple[int, str] | None:
+        """``(status, why)`` for a request the fence refuses, else ``None``."""
+        host = headers.get("host", "")
+        if self.hosts is not None and host not in self.hosts:
+            return 421, f"this studio answers to {sorted(self.hosts)[0]} only"
+        if not same_account(scope.get("client"), scope.get("server")):
+            return 403, "this studio serves the account that started it only"
+        if len(scope.get("query_string", b"")) > MAX_QUERY_BYTES:
+            return 414, f"an address may hold at most {MAX_QUERY_BYTES} bytes of query; refused"
+        site = headers.get("sec-fetch-site")
+        if site in ("cross-site", "same-site") and not (
+            _navigation(headers) and self._token_in_query(scope)
+        ):
+            return 403, "a request may only come from the studio's own pages (cross-site request)"
+        if not (self._token_in_headers(headers) or self._token_in_query(scope)):
+            return 401, _NO_TOKEN
+        if scope["method"] in _SAFE_METHODS:
+            return None
+        origin = headers.get("origin")
+        if (
+            site is None
+            and origin is not None
+            and origin not in (f"http://{host}", f"https://{host}")
+        ):
+            return 403, "a change may only come from the studio's own pages (Origin differs)"
+        if "transfer-encoding" in headers:
+            return 411, "a request body must say its length (Content-Length), not be chunked"
+        length = headers.get("content-length", "0")
+        if not (length.isascii() and length.isdigit()) or int(length) > self.max_body:
+            return 413, f"a request body may be at most {self.max_body} bytes; refused"
+        return None
 
-        await self.app(scope, receive, send_with_headers)
-
-
-def _token(scope: Scope, headers: dict[str, str], token: str) -> str:
-    """``ok``, ``in-address`` (given as ``?token=``: to be moved into a cookie) or ``missing``."""
-    wanted = token.encode()
-    cookie = SimpleCookie()
-    try:
-        cookie.load(headers.get("cookie", ""))
-    except Exception:
+    def _token_in_headers(self, headers: dict[str, str]) -> bool:
         cookie = SimpleCookie()
-    given = cookie.get(COOKIE)
-    if given is not None and hmac.compare_digest(given.value.encode(), wanted):
-        return "ok"
-    bearer = headers.get("authorization", "")
-    if bearer.startswith("Bearer ") and hmac.compare_digest(bearer[7:].encode(), wanted):
-        return "ok"
-    query = dict(parse_qsl(scope.get("query_string", b"").decode("latin-1")))
-    if hmac.compare_digest(query.get("token", "").encode(), wanted):
-        return "in-address"
-    return "missing"
+        try:
+            cookie.load(headers.get("cookie", ""))
+        except Exception:
+            cookie = SimpleCookie()
+        given = cookie.get(self.cookie)
+        if given is not None and hmac.compare_digest(given.value.encode(), self.token):
+            return True
+        bearer = headers.get("authorization", "")
+        return bearer.startswith("Bearer ") and hmac.compare_digest(
+            bearer[7:].encode("latin-1"), self.token
+        )
+
+    def _token_in_query(self, scope: Scope) -> bool:
+        query = scope.get("query_string", b"")
+        if b"token=" not in query:
+            return False
+        given = [v for k, v in parse_qsl(query.decode("latin-1")) if k == "token"]
+        return len(given) == 1 and hmac.compare_digest(given[0].encode("latin-1"), self.token)
+
+    async def _redirect_keeping_token(self, scope: Scope, send: Send) -> None:
+        """The same address without the token, which from now on travels in a cookie."""
+        query = [
+            (k, v)
+            for k, v in parse_qsl(scope.get("query_string", b"").decode("latin-1"), True)
+            if k != "token"
+        ]
+        path: bytes = scope.get("raw_path") or b"/"
+        location = path + (f"?{urlencode(query)}".encode("ascii") if query else b"")
+        cookie = f"{self.cookie}={self.token.decode()}; Path=/; HttpOnly; SameSite=Strict"
+        await send(
+            {
+                "type": "http.response.start",
+                "status": 303,
+                "headers": [
+                    (b"location", location),
+                    (b"set-cookie", cookie.encode()),
+                    (b"content-length", b"0"),
+                    (b"cache-control", b"no-store"),
+                    *HEADERS,
+                ],
+            }
+        )
+        await send({"type": "http.response.body", "body": b""})
 
 
-def _cross_site(headers: dict[str, str], host: str) -> str:
-    """Why a state-changing request is refused as coming from another site ("" if it is not).
-
-    A browser's own word (``Sec-Fetch-Site``) decides where it is given; else ``Origin`` must
-    be the studio's (a browser may send ``Origin: null`` for its own pages' forms, and then it
-    sends ``Sec-Fetch-Site`` too)."""
-    site = headers.get("sec-fetch-site")
-    if site is not None:
-        if site in ("same-origin", "none"):
-            return ""
-        return "a change may only come from the studio's own pages (cross-site request)"
-    origin = headers.get("origin")
-    if origin is not None and origin not in (f"http://{host}", f"https://{host}"):
-        return "a change may only come from the studio's own pages (Origin differs)"
-    return ""
+def _navigation(headers: dict[str, str]) -> bool:
+    """Whether a browser opens the address as a page (not a script's or an image's request)."""
+    mode = headers.get("sec-fetch-mode")
+    if mode is not None:
+        return mode == "navigate"
+    return "text/html" in headers.get("accept", "")
 
 
-async def _refuse(send: Send, status: int, message: str) -> None:
-    body = json.dumps({"error": message, "faults": []}).encode()
+def _bounded(receive: Receive, most: int) -> Receive:
+    """``receive`` that hands on at most ``most`` bytes of body: past them the request reads as
+    one whose client went away, whatever its headers said."""
+    read = 0
+
+    async def bounded() -> Message:
+        nonlocal read
+        message = await receive()
+        if message["type"] == "http.request":
+            read += len(message.get("body", b""))
+            if read > most:
+                return {"type": "http.disconnect"}
+        return message
+
+    return bounded
+
+
+def _with_headers(send: Send) -> Send:
+    async def send_with_headers(message: Message) -> None:
+        if message["type"] == "http.response.start":
+            message["headers"] = [*message.get("headers", []), *HEADERS]
+        await send(message)
+
+    return send_with_headers
+
+
+_PAGE = """<!doctype html>
+<html lang="en"><head><meta charset="utf-8"><title>teleop-ui studio: {status}</title></head>
+<body><h1>teleop-ui studio</h1><p>{message}</p></body></html>
+"""
+
+
+async def _refuse(send: Send, status: int, message: str, *, page: bool = False) -> None:
+    if page:
+        body = _PAGE.format(status=status, message=html.escape(message)).encode()
+        kind = b"text/html; charset=utf-8"
+    else:
+        body = json.dumps({"error": message, "faults": []}).encode()
+        kind = b"application/json"
     await send(
         {
             "type": "http.response.start",
             "status": status,
             "headers": [
-                (b"content-type", b"application/json"),
+                (b"content-type", kind),
                 (b"content-length", str(len(body)).encode()),
+                (b"connection", b"close"),
                 *HEADERS,
             ],
         }
     )
     await send({"type": "http.response.body", "body": body})
-
-
-async def _redirect_keeping_token(scope: Scope, send: Send, token: str) -> None:
-    """The same address without the token, which from now on travels in a cookie."""
-    query = [
-        (k, v)
-        for k, v in parse_qsl(scope.get("query_string", b"").decode("latin-1"), True)
-        if k != "token"
-    ]
-    path: bytes = scope.get("raw_path") or b"/"
-    location = path + (f"?{urlencode(query)}".encode("ascii") if query else b"")
-    cookie = f"{COOKIE}={token}; Path=/; HttpOnly; SameSite=Strict"
-    await send(
-        {
-            "type": "http.response.start",
-            "status": 303,
-            "headers": [
-                (b"location", location),
-                (b"set-cookie", cookie.encode()),
-                (b"content-length", b"0"),
-                *HEADERS,
-            ],
-        }
-    )
-    await send({"type": "http.response.body", "body": b""})

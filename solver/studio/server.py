@@ -1,8 +1,11 @@
 """Listening: the studio's socket, its address printed once it is bound, uvicorn serving.
 
 The socket is bound before anything is printed, so the address printed is one that answers
-(port 0 picks a free port, and the address says which). Binding anything but loopback makes a
-token (printed in the address, as notebook servers do) that every request must carry.
+(port 0 picks a free port, and the address says which). Every start makes a token, printed in
+the address as notebook servers do, that every request must carry (loopback included: another
+account on the machine reaches 127.0.0.1 too). ``--open`` hands the browser a file of the
+studio's private folder that leads on to that address, never the address itself: a command
+line is readable by every account of the machine.
 
 Not here: the application (:mod:`solver.studio.app`).
 """
@@ -18,15 +21,16 @@ from typing import Any
 import uvicorn
 
 from solver.errors import InputError
-from solver.studio.security import loopback
+from solver.studio.connections import BACKLOG, Fence, protocol_class
+from solver.studio.security import MAX_QUERY_BYTES
 from solver.studio.service import Studio
 from solver.untrusted import shown
 
 __all__ = ["address", "bind", "serve"]
 
-# Bytes of a request's head (its address and headers) at most: a selection of a thousand
-# values travels in the address when pages are used without scripts.
-MAX_HEAD_BYTES = 256 * 1024
+# Bytes of a request's head (its address and headers) at most: the longest query the fence
+# takes and room for a browser's headers.
+MAX_HEAD_BYTES = MAX_QUERY_BYTES + 32 * 1024
 
 
 def bind(host: str, port: int) -> socket.socket:
@@ -38,7 +42,7 @@ def bind(host: str, port: int) -> socket.socket:
         sock = socket.socket(family, kind, proto)
         sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
         sock.bind(where)
-        sock.listen(128)
+        sock.listen(BACKLOG)
     except (OSError, UnicodeError) as error:  # UnicodeError: a name no resolver can encode
         reason = error.strerror if isinstance(error, OSError) else None
         raise InputError.at(
@@ -49,9 +53,10 @@ def bind(host: str, port: int) -> socket.socket:
     return sock
 
 
-def address(host: str, port: int, token: str | None) -> str:
+def address(host: str, port: int, token: str) -> str:
+    """The address that opens the studio on ``host:port``, with its token."""
     shown = f"[{host}]" if ":" in host else host
-    return f"http://{shown}:{port}/" + (f"?token={token}" if token else "")
+    return f"http://{shown}:{port}/?token={token}"
 
 
 def serve(
@@ -63,19 +68,24 @@ def serve(
     open_browser: bool = False,
     warn: Callable[[str], None] = lambda _message: None,
 ) -> None:
-    """Serve ``studio`` on ``sock`` until interrupted (SIGINT, SIGTERM), then return.
+    """Serve ``studio`` on ``sock`` until interrupted (SIGINT, SIGTERM), then remove its
+    private folder and return.
 
     ``announce`` is given the page's address; ``warn`` a message when ``open_browser`` finds
     no browser to open it in (a machine without a display)."""
     from solver.studio.app import make_app
 
     port = int(sock.getsockname()[1])
-    token = None if loopback(host) else secrets.token_urlsafe(24)
+    token = secrets.token_urlsafe(24)
     url = address(host, port, token)
     app = make_app(studio, host=host, port=port, token=token)
     config = uvicorn.Config(
         app,
-        log_level="warning",
+        http=protocol_class(Fence()),
+        backlog=BACKLOG,
+        # Not "warning": uvicorn warns once per malformed request, so a stranger could fill
+        # the console with lines of its choosing.
+        log_level="error",
         access_log=False,
         lifespan="on",
         h11_max_incomplete_event_size=MAX_HEAD_BYTES,
@@ -83,21 +93,26 @@ def serve(
         server_header=False,
     )
     server = _Server(config, studio)
-    announce(url)
-    if open_browser:
-        import webbrowser
-
-        if not webbrowser.open(url):
-            warn("no browser could be opened here: open the address above in one")
-    # uvicorn stops on SIGINT and SIGTERM, then raises the signal again for the handler that was
-    # there before: ours ends the serving as Ctrl-C does, so the caller's clean-up runs.
-    previous = signal.signal(signal.SIGTERM, _stopped)
+    # SIGINT and SIGTERM, however many and whenever they come, ask the server to stop and
+    # nothing more: uvicorn raises each one it caught again once it has stopped, and one that
+    # came while the studio cleans up would otherwise cut the clean-up short (leaving the
+    # private folder behind) or end in a traceback.
+    previous = {sig: signal.signal(sig, server.handle_exit) for sig in _STOPPING}
     try:
+        announce(url)
+        if open_browser:
+            import webbrowser
+
+            if not webbrowser.open(studio.workspace.opener(url).as_uri()):
+                warn("no browser could be opened here: open the address above in one")
         server.run(sockets=[sock])
-    except (_Stopped, KeyboardInterrupt):
-        pass
     finally:
-        signal.signal(signal.SIGTERM, previous)
+        studio.workspace.close()
+        for sig, handler in previous.items():
+            signal.signal(sig, handler)
+
+
+_STOPPING = (signal.SIGINT, signal.SIGTERM)
 
 
 class _Server(uvicorn.Server):
@@ -109,14 +124,10 @@ class _Server(uvicorn.Server):
         self.studio = studio
 
     def handle_exit(self, sig: int, frame: Any) -> None:
+        del sig, frame  # whichever signal: the same stop
         if self.studio.live is not None:
             self.studio.live.stop(wait=False)
-        super().handle_exit(sig, frame)
-
-
-class _Stopped(Exception):
-    """SIGTERM arrived: the studio stops as after Ctrl-C."""
-
-
-def _stopped(*_: object) -> None:
-    raise _Stopped
+        # A second Ctrl-C does not force the exit (uvicorn's way): forced, uvicorn skips the
+        # application's own shutdown and ends in a traceback. The graceful one takes at most
+        # ``timeout_graceful_shutdown`` seconds anyway.
+        self.should_exit = True

@@ -10,6 +10,7 @@ Not here: HTTP and HTML (:mod:`solver.studio.api`, :mod:`solver.studio.pages`).
 
 from __future__ import annotations
 
+import copy
 import functools
 import io
 import threading
@@ -47,6 +48,7 @@ if TYPE_CHECKING:
 __all__ = [
     "CHART_KINDS",
     "MAX_PAGE",
+    "PAGE_CHECK_SECONDS",
     "Chosen",
     "Studio",
     "faults_data",
@@ -59,6 +61,9 @@ MAX_PAGE = 500
 DESCRIPTION_SUFFIXES = (".urdf", ".urdf.xacro", ".xacro", ".srdf", ".topics", ".topics.txt")
 # A robot looked up is given as robot.<characteristic>=<value>.
 ROBOT_PREFIX = "robot."
+# Seconds the selection view gives the check of a selection (the Check view and the API give
+# it the documented check-seconds): past them, what it found so far and that it stopped.
+PAGE_CHECK_SECONDS = 2.0
 
 
 @dataclass(frozen=True)
@@ -238,11 +243,19 @@ class Studio:
 
     def check_data(self, pairs: Pairs) -> dict[str, Any]:
         """``teleop-ui check --format json`` on the rule set and the team the page selects;
-        findings in the team are located in ``<selection>`` by their path."""
-        return self._checked(self.chosen(pairs))[0]
+        findings in the team are located in ``<selection>`` by their path. The check has its
+        documented time budget; spent, the findings so far and an ``unfinished`` one."""
+        return self._checked(self.chosen(pairs), None)[0]
 
-    def _checked(self, chosen: Chosen) -> tuple[dict[str, Any], str | None]:
-        """The check's JSON, and the selection's team file it read (``None``: no team)."""
+    def _checked(self, chosen: Chosen, seconds: float | None) -> tuple[dict[str, Any], str | None]:
+        """The check's JSON within ``seconds`` (``None``: the ``check-seconds`` limit), and the
+        selection's team file it read (``None``: no team); each selection checked once while
+        kept."""
+        key = (chosen.source.id, chosen.selection, seconds)
+        data, text = self.workspace.kept_check(key, lambda: self._check(chosen, seconds))
+        return copy.deepcopy(data), text
+
+    def _check(self, chosen: Chosen, seconds: float | None) -> tuple[dict[str, Any], str | None]:
         from solver.check import check_files
         from solver.check.render import json_data
 
@@ -250,14 +263,14 @@ class Studio:
         files = [source.path]
         shown = {str(source.path): source.rules.file}
         text = None
-        if chosen.team is not None:
-            folder = self.workspace.private_folder("check")
-            team_path = folder / "team.yaml"
-            text = team_yaml(chosen.team, rules_reference=str(source.path.resolve()))
-            team_path.write_text(text, encoding="utf-8")
-            files.append(team_path)
-            shown[str(team_path)] = SELECTION_FILE
-        data = json_data(check_files(files))
+        with self.workspace.scratch("check") as folder:
+            if chosen.team is not None:
+                team_path = folder / "team.yaml"
+                text = team_yaml(chosen.team, rules_reference=str(source.path.resolve()))
+                team_path.write_text(text, encoding="utf-8")
+                files.append(team_path)
+                shown[str(team_path)] = SELECTION_FILE
+            data = json_data(check_files(files, time_limit=seconds, partial=True))
         data["files"] = [shown.get(f, f) for f in data["files"]]
 
         def relabel(message: str) -> str:
@@ -275,7 +288,9 @@ class Studio:
         return data, text
 
     def findings_data(self, pairs: Pairs) -> dict[str, Any]:
-        """:meth:`check_data`, each finding with the controls of the selection view it concerns
+        """:meth:`check_data` within :data:`PAGE_CHECK_SECONDS` (the selection view asks it on
+        every change, and never waits longer), each finding with the controls of the
+        selection view it concerns
         (``places``: ``{"type", "characteristic", "value"}``, :mod:`solver.studio.findings`;
         none: the rule set or selection as a whole) and the rule set's id (``rules``), whose
         text ``/rules/source?rules=ID`` shows with its lines numbered."""
@@ -283,7 +298,7 @@ class Studio:
         from solver.studio.findings import place_data, places, rule_places, selection_places
 
         chosen = self.chosen(pairs)
-        data, text = self._checked(chosen)
+        data, text = self._checked(chosen, PAGE_CHECK_SECONDS)
         source = chosen.source
         tables = {
             source.rules.file: rule_places(source.rules, self.workspace.excluded(source)),
@@ -345,20 +360,28 @@ class Studio:
 
     def layouts_zip(self, pairs: Pairs) -> bytes:
         """``teleop-ui layouts`` for Foxglove/Lichtblick and for RViz2, one zip of both."""
-        from solver.layouts import load_presentation, write_layouts
+        from solver.layouts import load_presentation
         from solver.layouts.targets import TARGETS
+        from solver.layouts.writer import check_layout_count, layout_texts
+        from solver.limits import limit
 
         solution = self.solution(self.chosen(pairs), listed=True)
         presentation = load_presentation()
+        check_layout_count(len(solution.configurations), "<layouts.zip>")
+        most = limit("written-bytes")
         buffer = io.BytesIO()
+        written = 0
+        # Built in memory, one layout at a time: nothing is written to disk for a download.
         with zipfile.ZipFile(buffer, "w", zipfile.ZIP_DEFLATED) as archive:
             for fmt in TARGETS:
-                folder = self.workspace.private_folder("layouts")
-                for path in write_layouts(solution, presentation, folder, fmt):
+                for name, text in layout_texts(solution, presentation, fmt):
+                    data = "".join(text).encode("utf-8")
+                    written += len(data)
+                    most.check(written, "<layouts.zip>", noun="bytes of layouts")
                     # A fixed date: the same team gives the same bytes.
-                    info = zipfile.ZipInfo(f"{fmt}/{path.name}", date_time=(2017, 3, 14, 0, 0, 0))
+                    info = zipfile.ZipInfo(f"{fmt}/{name}", date_time=(2017, 3, 14, 0, 0, 0))
                     info.compress_type = zipfile.ZIP_DEFLATED
-                    archive.writestr(info, path.read_bytes())
+                    archive.writestr(info, data)
         return buffer.getvalue()
 
     def chart_svg(self, pairs: Pairs, kind: str) -> bytes:
@@ -394,7 +417,6 @@ class Studio:
                 f"{len(uploads)} files uploaded; at most {MAX_UPLOAD_FILES} at a time",
                 code="too-large",
             )
-        folder = self.workspace.private_folder("fleet")
         names: set[str] = set()
         for upload in uploads:
             name = safe_file_name(upload.name)
@@ -408,8 +430,10 @@ class Studio:
             if name in names:
                 raise InputError.at(name, "uploaded twice (file names must differ)")
             names.add(name)
-            (folder / name).write_bytes(upload.data)
-        return self._identify(folder, pairs, shown="")
+        with self.workspace.scratch("fleet") as folder:
+            for upload in uploads:
+                (folder / safe_file_name(upload.name)).write_bytes(upload.data)
+            return self._identify(folder, pairs, shown="")
 
     def identify_folder(self, index: int, pairs: Pairs) -> dict[str, Any]:
         """``teleop-ui fleet DIR`` on a folder given at start (``--fleet``), by its index."""

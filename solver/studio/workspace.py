@@ -3,29 +3,37 @@ and the solutions it has already computed.
 
 The studio reads only what its user named at start (a team or rule set, ``--fleet`` folders)
 and the rule sets shipped with the package. Everything else arrives as an upload: written into
-the studio's own private folder (mode 0700, removed at exit) under a name of the studio's
-making, then read back through the project's bounded readers, as a file named on the command
-line would be. No request names a path: rule sets, fleets and folders are chosen by id.
+the studio's own private folder (mode 0700, removed at exit; one a studio killed outright left
+is removed by the next studio of the same account) under a name of the studio's making, then
+read back through the project's bounded readers, as a file named on the command line would be.
+No request names a path: rule sets, fleets and folders are chosen by id.
+
+Nothing a request writes outlives it but an uploaded rule set, which the user asked to keep:
+uploaded teams and robot descriptions are removed once read, and a kept rule set's file when
+it is dropped. Kept rule sets are bounded in number and in bytes, so the folder is too.
 
 Solutions are cached by the team file a selection stands for, so a page, its charts and its
-JSON ask the library once.
+JSON ask the library once; the cache is bounded by the memory its solutions take, however many
+teams (or names of one team) are asked for.
 
 Not here: the URL form of a selection (:mod:`solver.studio.selection`), HTTP.
 """
 
 from __future__ import annotations
 
+import contextlib
 import dataclasses
 import hashlib
+import os
 import re
 import shutil
 import tempfile
 import threading
 from collections import OrderedDict
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Literal, TypeVar
+from typing import TYPE_CHECKING, Any, Literal, TypeVar
 
 from solver.core.forbidden import Removed, excluded_by_rules
 from solver.core.reproduce import published_for
@@ -55,13 +63,28 @@ __all__ = [
 # One request's body (every file of an upload together) at most, and files per upload.
 MAX_UPLOAD_BYTES = 64 * 1024 * 1024
 MAX_UPLOAD_FILES = 64
-# Uploaded rule sets and identified fleets kept (the oldest are dropped first).
+# Uploaded rule sets and identified fleets kept (the oldest are dropped first), and the bytes
+# of the kept rule sets' files together (one file may be the bounded readers' 16 MiB).
 MAX_KEPT_RULE_SETS = 32
+MAX_KEPT_RULE_BYTES = 32 * 1024 * 1024
 MAX_KEPT_FLEETS = 8
-# Solutions kept by the team they solve.
-MAX_KEPT_SOLUTIONS = 128
+# Teams kept by the selection they stand for, and the memory the kept solutions may take.
+MAX_KEPT_TEAMS = 128
+MAX_KEPT_SOLUTION_BYTES = 256 * 1024 * 1024
+# Solutions solved (and checks run) at the same time, at most (one per core of a small
+# machine).
+MAX_SOLVING = 2
+# Checks' answers kept by the selection they checked.
+MAX_KEPT_CHECKS = 64
+# Seconds the rule set's exclusions (the values its constraints rule out, shown disabled) may
+# take to find.
+EXCLUSION_SECONDS = 2.0
+# The private folder's name: the studio's process id follows it.
+FOLDER_PREFIX = "teleop-ui-studio-"
 
 Origin = Literal["shipped", "start", "upload"]
+# A check's JSON, and the selection's team file it read (solver.studio.service).
+Checked = tuple[dict[str, Any], str | None]
 K = TypeVar("K")
 V = TypeVar("V")
 
@@ -90,18 +113,47 @@ class Upload:
 
 
 class _Kept(OrderedDict[K, V]):
-    """A dictionary that keeps its newest ``size`` entries."""
+    """A dictionary that keeps its newest entries: at most ``size`` of them, and at most
+    ``most_bytes`` by ``weigh`` (an entry heavier than that alone is not kept). ``dropped`` is
+    told of each entry it lets go."""
 
-    def __init__(self, size: int) -> None:
+    def __init__(
+        self,
+        size: int,
+        *,
+        most_bytes: int | None = None,
+        weigh: Callable[[V], int] = lambda _value: 0,
+        dropped: Callable[[V], None] = lambda _value: None,
+    ) -> None:
         super().__init__()
         self.size = size
+        self.most_bytes = most_bytes
+        self.weigh = weigh
+        self.dropped = dropped
+        self.weights: dict[K, int] = {}
+
+    @property
+    def bytes(self) -> int:
+        return sum(self.weights.values())
 
     def keep(self, key: K, value: V) -> V:
+        weight = self.weigh(value)
+        if self.most_bytes is not None and weight > self.most_bytes:
+            return value
+        if key in self:
+            self._drop(key)
         self[key] = value
-        self.move_to_end(key)
-        while len(self) > self.size:
-            self.popitem(last=False)
+        self.weights[key] = weight
+        while len(self) > self.size or (
+            self.most_bytes is not None and self.bytes > self.most_bytes
+        ):
+            self._drop(next(iter(self)))
         return value
+
+    def _drop(self, key: K) -> None:
+        value = self.pop(key)
+        self.weights.pop(key, None)
+        self.dropped(value)
 
 
 _SAFE = re.compile(r"[^A-Za-z0-9._-]")
@@ -141,14 +193,26 @@ class Workspace:
         self.start_team: Team | None = None
         if start is not None:
             self._start(start, start_display or str(start))
-        self._uploads: _Kept[str, RuleSource] = _Kept(MAX_KEPT_RULE_SETS)
-        self._teams: _Kept[tuple[str, Selection], Team] = _Kept(MAX_KEPT_SOLUTIONS)
-        self._solutions: _Kept[tuple[str, str, bool], Solution] = _Kept(MAX_KEPT_SOLUTIONS)
+        self._uploads: _Kept[str, RuleSource] = _Kept(
+            MAX_KEPT_RULE_SETS,
+            most_bytes=MAX_KEPT_RULE_BYTES,
+            weigh=_file_bytes,
+            dropped=self._forget,
+        )
+        self._teams: _Kept[tuple[str, Selection], Team] = _Kept(MAX_KEPT_TEAMS)
+        self._solutions: _Kept[tuple[str, str, bool], Solution] = _Kept(
+            MAX_KEPT_TEAMS, most_bytes=MAX_KEPT_SOLUTION_BYTES, weigh=solution_bytes
+        )
         self._excluded: dict[str, dict[tuple[str, str], dict[str, Removed]]] = {}
         self.fleets: _Kept[str, Fleet] = _Kept(MAX_KEPT_FLEETS)
+        self._checks: _Kept[tuple[str, Selection, float | None], Checked] = _Kept(MAX_KEPT_CHECKS)
         self._counter = 0
+        # Solutions being made, by key, and how many may be made at once.
+        self._making: dict[object, threading.Event] = {}
+        self._solving = threading.BoundedSemaphore(MAX_SOLVING)
         # Made last: a start file that cannot be read leaves no folder behind.
-        self.folder = Path(tempfile.mkdtemp(prefix="teleop-ui-studio-"))
+        remove_abandoned_folders()
+        self.folder = Path(tempfile.mkdtemp(prefix=f"{FOLDER_PREFIX}{os.getpid()}-"))
         self.folder.chmod(0o700)
 
     def _start(self, path: Path, display: str) -> None:
@@ -176,6 +240,23 @@ class Workspace:
     def close(self) -> None:
         """Remove the private folder and everything uploaded into it."""
         shutil.rmtree(self.folder, ignore_errors=True)
+
+    def opener(self, address: str) -> Path:
+        """A page of the private folder that leads a browser on to ``address`` (which holds the
+        token: a browser given a file instead keeps the token off its command line, which every
+        account of the machine may read)."""
+        from html import escape
+
+        path = self.folder / "open.html"
+        link = escape(address, quote=True)
+        fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_NOFOLLOW, 0o600)
+        with os.fdopen(fd, "w", encoding="utf-8") as page:
+            page.write(
+                '<!doctype html><meta charset="utf-8">'
+                f'<meta http-equiv="refresh" content="0;url={link}">'
+                f'<title>teleop-ui studio</title><a href="{link}">Open the studio</a>\n'
+            )
+        return path
 
     # -- rule sets -------------------------------------------------------------------------
 
@@ -210,21 +291,31 @@ class Workspace:
                 return self._uploads[rules_id]
         path = self._private_file("rules", upload)
         display = shown_name(upload.name)
-        document = load_document(path, display=display)
-        kind = file_kind(document)
+        try:
+            kind = file_kind(load_document(path, display=display))
+        except BaseException:
+            shutil.rmtree(path.parent, ignore_errors=True)
+            raise
         if kind not in ("rules", None):
+            shutil.rmtree(path.parent, ignore_errors=True)
             raise InputError.at(
                 display, f"this is not a rule set (it is {kind} file); upload a rule set here"
             )
-        rules = load_rules(path, display=display)
+        try:
+            rules = load_rules(path, display=display)
+        except BaseException:
+            shutil.rmtree(path.parent, ignore_errors=True)
+            raise
         with self._lock:
             return self._uploads.keep(rules_id, RuleSource(rules_id, rules, path, "upload"))
 
     def read_team(self, upload: Upload, source: RuleSource) -> Team:
         """An uploaded team file, read against ``source``'s rules (its own ``rules:`` line is
         not followed: the studio reads no path a stranger's file names)."""
-        path = self._private_file("teams", upload)
-        return load_team(path, source.rules, display=shown_name(upload.name))
+        with self.scratch("teams") as folder:
+            path = folder / safe_file_name(upload.name)
+            path.write_bytes(upload.data)
+            return load_team(path, source.rules, display=shown_name(upload.name))
 
     def private_folder(self, kind: str) -> Path:
         """A new, empty folder of the studio's own under its private folder."""
@@ -234,10 +325,24 @@ class Workspace:
         folder.mkdir(parents=True, mode=0o700)
         return folder
 
+    @contextlib.contextmanager
+    def scratch(self, kind: str) -> Iterator[Path]:
+        """A new, empty private folder for one request's files, removed when it is done."""
+        folder = self.private_folder(kind)
+        try:
+            yield folder
+        finally:
+            shutil.rmtree(folder, ignore_errors=True)
+
     def _private_file(self, kind: str, upload: Upload) -> Path:
         path = self.private_folder(kind) / safe_file_name(upload.name)
         path.write_bytes(upload.data)
         return path
+
+    def _forget(self, source: RuleSource) -> None:
+        """A kept rule set dropped: its file and what was computed of it go too."""
+        self._excluded.pop(source.id, None)
+        shutil.rmtree(source.path.parent, ignore_errors=True)
 
     # -- teams and solutions ---------------------------------------------------------------
 
@@ -263,12 +368,21 @@ class Workspace:
 
     def excluded(self, source: RuleSource) -> dict[tuple[str, str], dict[str, Removed]]:
         """``(type, characteristic) -> {value text: why excluded}`` for the rule set's
-        constraints (:func:`solver.core.forbidden.excluded_by_rules`), computed once."""
+        constraints (:func:`solver.core.forbidden.excluded_by_rules`), computed once, within
+        :data:`EXCLUSION_SECONDS` (past them none is shown: a page never waits longer)."""
+        from solver.deadline import Deadline
+        from solver.errors import TimeLimitError
+
         with self._lock:
             found = self._excluded.get(source.id)
         if found is None:
             found = {}
-            for removed in excluded_by_rules(source.rules):
+            deadline = Deadline.start("check-seconds", "exclusions", EXCLUSION_SECONDS)
+            try:
+                removed_values = excluded_by_rules(source.rules, deadline=deadline)
+            except TimeLimitError:
+                removed_values = ()
+            for removed in removed_values:
                 where = (removed.kinematic_type, removed.characteristic)
                 for value in removed.values:
                     found.setdefault(where, {})[str(value)] = removed
@@ -276,15 +390,35 @@ class Workspace:
                 self._excluded[source.id] = found
         return found
 
+    def kept_check(
+        self, key: tuple[str, Selection, float | None], make: Callable[[], Checked]
+    ) -> Checked:
+        """A check's answer for ``key`` (rule set, selection, budget), made once while kept."""
+        return self._cached(self._checks, key, make)
+
     def _cached(self, kept: _Kept[K, V], key: K, make: Callable[[], V]) -> V:
-        with self._lock:
-            found = kept.get(key)
-            if found is not None:
-                kept.move_to_end(key)
-                return found
-        value = make()
-        with self._lock:
-            return kept.keep(key, value)
+        """``kept[key]``, made by ``make`` when missing: once, however many ask at the same
+        time, and at most :data:`MAX_SOLVING` made at once (each may take much memory)."""
+        while True:
+            with self._lock:
+                found = kept.get(key)
+                if found is not None:
+                    kept.move_to_end(key)
+                    return found
+                making = self._making.get(key)
+                if making is None:
+                    making = self._making[key] = threading.Event()
+                    break
+            making.wait()
+        try:
+            with self._solving:
+                value = make()
+            with self._lock:
+                return kept.keep(key, value)
+        finally:
+            with self._lock:
+                del self._making[key]
+            making.set()
 
     def fleet_id(self, fleet: Fleet) -> str:
         with self._lock:
@@ -296,6 +430,64 @@ class Workspace:
 
 def _team_key(team: Team) -> str:
     return repr((team.name, team.selections, team.published))
+
+
+def _file_bytes(source: RuleSource) -> int:
+    try:
+        return source.path.stat().st_size
+    except OSError:
+        return 0
+
+
+def solution_bytes(solution: Solution) -> int:
+    """About the memory ``solution`` takes, never less (tests/studio/test_workspace.py checks
+    it against what the allocator counts): a fixed part, and per configuration its object,
+    its key, components and served values (a tuple of 8-byte references each, the key's
+    integers as objects of their own)."""
+    total = 4096 + 512 * len(solution.by_type)
+    for configuration in solution.configurations:
+        total += (
+            224
+            + 92 * len(configuration.key)
+            + 64
+            + 8 * len(configuration.components)
+            + 64
+            + sum(64 + 8 * len(served) for served in configuration.served)
+        )
+    return total
+
+
+def remove_abandoned_folders() -> None:
+    """Remove the private folders of this account's studios that no longer run (killed outright,
+    they could not remove their own)."""
+    parent = Path(tempfile.gettempdir())
+    mine = os.getuid()
+    for folder in parent.glob(f"{FOLDER_PREFIX}*-*"):
+        pid = folder.name[len(FOLDER_PREFIX) :].split("-", 1)[0]
+        try:
+            details = folder.lstat()
+        except OSError:
+            continue
+        if not pid.isdigit() or details.st_uid != mine or not _is_folder(details.st_mode):
+            continue
+        if not _running(int(pid)):
+            shutil.rmtree(folder, ignore_errors=True)
+
+
+def _is_folder(mode: int) -> bool:
+    import stat
+
+    return stat.S_ISDIR(mode)
+
+
+def _running(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except OSError:
+        return True
+    return True
 
 
 def _rules_path(team_path: Path) -> Path:

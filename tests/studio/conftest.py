@@ -46,11 +46,23 @@ expect.set_options(timeout=WAIT_MS)
 
 @dataclass
 class Server:
-    """A running studio: its address and its process (stderr kept in a file)."""
+    """A running studio: its address, its process (stderr kept in a file) and the temporary
+    folder it was given (``TMPDIR``), where it makes its private folder."""
 
     url: str
     process: subprocess.Popen[str]
     stderr: Path
+    temporary: Path
+
+    @property
+    def private(self) -> Path:
+        """The studio's private folder."""
+        (folder,) = self.temporary.glob(f"teleop-ui-studio-{self.process.pid}-*")
+        return folder
+
+    def kept_files(self) -> list[Path]:
+        """Every file in the private folder now."""
+        return sorted(p for p in self.private.rglob("*") if not p.is_dir())
 
     def get(self, path: str, headers: dict[str, str] | None = None) -> tuple[int, bytes]:
         return self.request("GET", path, None, headers)
@@ -63,7 +75,10 @@ class Server:
         headers: dict[str, str] | None = None,
     ) -> tuple[int, bytes]:
         request = urllib.request.Request(
-            self.base + path.lstrip("/"), data=body, method=method, headers=headers or {}
+            self.base + path.lstrip("/"),
+            data=body,
+            method=method,
+            headers={"authorization": f"Bearer {self.token}", **(headers or {})},
         )
         try:
             with urllib.request.urlopen(request, timeout=120) as response:
@@ -80,12 +95,36 @@ class Server:
     def base(self) -> str:
         return self.url.split("?")[0]
 
+    @property
+    def token(self) -> str:
+        """The token the studio printed in its address."""
+        return self.url.split("?token=")[1]
+
+    def at(self, path: str) -> str:
+        """The address of ``path`` (with its query) with the token, as a person would open it
+        after copying the printed address and changing its path."""
+        joiner = "&" if "?" in path else "?"
+        return f"{self.base}{path.lstrip('/')}{joiner}token={self.token}"
+
 
 StartStudio = Callable[..., Server]
 
 
-def studio_process(*args: str, tmp_path: Path, env: dict[str, str] | None = None) -> Server:
-    stderr = tmp_path / f"studio-{len(list(tmp_path.glob('studio-*')))}.err"
+def studio_process(
+    *args: str,
+    tmp_path: Path,
+    env: dict[str, str] | None = None,
+    preexec_fn: Callable[[], None] | None = None,
+) -> Server:
+    number = len(list(tmp_path.glob("studio-*.err")))
+    stderr = tmp_path / f"studio-{number}.err"
+    # A temporary folder of the studio's own (unless the test gives one): other studios on this
+    # machine make private folders of the same kind in the shared one.
+    environment = dict(os.environ if env is None else env)
+    if env is None or "TMPDIR" not in env:
+        environment["TMPDIR"] = str(tmp_path / f"studio-{number}-tmp")
+        Path(environment["TMPDIR"]).mkdir()
+    temporary = Path(environment["TMPDIR"])
     with stderr.open("w") as errors:
         process = subprocess.Popen(
             [sys.executable, "-m", "solver", "studio", *args, "--port", "0"],
@@ -94,7 +133,8 @@ def studio_process(*args: str, tmp_path: Path, env: dict[str, str] | None = None
             stderr=errors,
             text=True,
             start_new_session=True,
-            env=env,
+            env=environment,
+            preexec_fn=preexec_fn,  # noqa: PLW1509 (resource limits of the studio alone)
         )
     assert process.stdout is not None
     line = process.stdout.readline()
@@ -104,7 +144,7 @@ def studio_process(*args: str, tmp_path: Path, env: dict[str, str] | None = None
         raise AssertionError(
             f"the studio did not start: {line!r}\n{stderr.read_text(encoding='utf-8')}"
         )
-    return Server(found.group(1), process, stderr)
+    return Server(found.group(1), process, stderr, temporary)
 
 
 def stop(process: subprocess.Popen[str]) -> None:
@@ -126,8 +166,12 @@ def stop(process: subprocess.Popen[str]) -> None:
 def start_studio(tmp_path: Path) -> Iterator[Callable[..., Server]]:
     started: list[Server] = []
 
-    def start(*args: str, env: dict[str, str] | None = None) -> Server:
-        started.append(studio_process(*args, tmp_path=tmp_path, env=env))
+    def start(
+        *args: str,
+        env: dict[str, str] | None = None,
+        preexec_fn: Callable[[], None] | None = None,
+    ) -> Server:
+        started.append(studio_process(*args, tmp_path=tmp_path, env=env, preexec_fn=preexec_fn))
         return started[-1]
 
     yield start

@@ -5,6 +5,7 @@ parsing, for the same team; pages of configurations and robots are slices of the
 from __future__ import annotations
 
 import json
+from pathlib import Path
 from urllib.parse import urlencode
 
 import pytest
@@ -142,3 +143,20 @@ def test_the_api_is_described_by_openapi(server: Server) -> None:
     assert schema["openapi"].startswith("3.")
     assert {"/api/solve", "/api/assign", "/api/robots", "/api/identify"} <= set(schema["paths"])
     assert schema["paths"]["/api/solve"]["get"]["summary"] == "Solve the selected team"
+
+
+def test_a_rule_set_whose_check_takes_minutes_gets_its_page_with_what_was_found_in_time(
+    start_studio: StartStudio, tmp_path: Path
+) -> None:
+    from tests.check.helpers import intricate_rules
+
+    rules = tmp_path / "intricate.yaml"
+    rules.write_text(intricate_rules(), encoding="utf-8")
+    server = start_studio(str(rules))
+    status, body = server.get("/")
+    assert status == 200
+    assert "check stopped after 2 s" in body.decode()
+    findings = server.json("/api/findings")["findings"]
+    assert [f["check"] for f in findings if f["level"] == "warning"][-1:] == ["unfinished"]
+    # The next page is answered at once: the check's answer is kept.
+    assert server.get("/")[0] == 200

@@ -42,7 +42,7 @@ def test_robots_appear_switch_and_disappear_in_the_live_view(
 
     solution = solve(load_team("case3"))
     server = start_studio("case3", "--ros2", "--domain", str(domain.id), env=domain.env)
-    page.goto(f"{server.base}live")
+    page.goto(server.at("live"))
     expect(page.locator("#live-status")).to_contain_text(f"ROS 2 domain {domain.id}: synced")
 
     domain.drone("/uav1")
@@ -96,7 +96,7 @@ def test_robots_appear_switch_and_disappear_in_the_live_view_of_a_ros_master(
 ) -> None:
     solution = solve(load_team("case3"))
     server = start_studio("case3", "--master", roscore.uri)
-    page.goto(f"{server.base}live")
+    page.goto(server.at("live"))
     expect(page.locator("#live-status")).to_contain_text(f"{roscore.uri}: synced")
 
     node = TestNode(roscore.uri)

@@ -129,7 +129,7 @@ def test_a_bookmarked_selection_of_the_article_is_the_cli_s_case(
         "&UAV.sensor_type=2D+Camera&UAV.sensor_type=360+Camera"
         "&UAV.sensor_type=RGB-D+Camera&UAV.sensor_count.max=5"
     )
-    page.goto(f"{studio.base}?{query}")
+    page.goto(studio.at(f"?{query}"))
     expect(page.locator("#total-robots")).to_have_text("30")
     fieldset = page.locator('fieldset[data-key="UAV.motion_control"]')
     expect(fieldset.get_by_label("Flight", exact=True)).to_be_checked()
@@ -215,7 +215,7 @@ def test_a_typo_in_the_address_is_shown_at_its_control(
     start_studio: StartStudio, page: Page
 ) -> None:
     server = start_studio("case1")
-    page.goto(f"{server.base}?rules=paper&type=UAV&UAV.motion_control=Waypont")
+    page.goto(server.at("?rules=paper&type=UAV&UAV.motion_control=Waypont"))
     expect(page.locator("#faults")).to_contain_text("team.UAV.motion_control")
     slot = page.locator('fieldset[data-key="UAV.motion_control"] [data-faults-for]')
     expect(slot).to_contain_text("'Waypont'")
@@ -335,7 +335,7 @@ def test_a_hostile_urdf_is_a_located_failure_and_the_next_request_is_served(
     bomb = tmp_path / "bomb.urdf"
     bomb.write_text(BOMB, encoding="utf-8")
     good = ROOT / "examples" / "quadrotor.urdf"
-    page.goto(f"{studio.base}fleet")
+    page.goto(studio.at("fleet"))
     page.get_by_label("Robot descriptions").set_input_files([bomb, good])
     page.get_by_role("button", name="Identify").click()
     expect(page.locator("#robots-title")).to_have_text("1 identified, 1 not")
@@ -673,3 +673,31 @@ def test_the_chart_says_it_is_being_redrawn_until_it_shows_the_new_selection(
     title = ElementTree.fromstring(svg).findtext("{http://www.w3.org/2000/svg}title")
     assert title == "Case 3: 722 valid robots, 90 UI configurations"
     expect(page.locator("#total-configurations")).to_have_text("90")
+
+
+def test_a_rule_set_too_large_to_draw_whole_is_shown_a_type_at_a_time_and_keeps_the_rest(
+    start_studio: StartStudio, page: Page, tmp_path: Path
+) -> None:
+    from solver.studio.pages import MAX_PAGE_CONTROLS
+
+    # 30 types of 1,000 values, each value a component of its own: 30,000 value controls.
+    values = ", ".join(f"v{i}" for i in range(1000))
+    types = ", ".join(f"T{i}" for i in range(30))
+    rules = tmp_path / "wide.yaml"
+    rules.write_text(
+        f"name: wide\ncharacteristics:\n  kind: {{values: [{types}]}}\n"
+        f"  c: {{values: [{values}]}}\n",
+        encoding="utf-8",
+    )
+    assert MAX_PAGE_CONTROLS < 30 * 1000
+    server = start_studio(str(rules))
+    # T1 keeps one value; the page, too large for every type, draws T0 alone.
+    page.goto(server.at("?rules=start&type=T0&type=T1&T1.c=v7"))
+    expect(page.locator("#total-robots")).to_have_text("1001")
+    expect(page.locator('fieldset.type[data-type="T0"] fieldset.characteristic')).to_have_count(1)
+    expect(page.locator('fieldset.type[data-type="T1"] fieldset.characteristic')).to_have_count(0)
+    page.locator('fieldset[data-key="T0.c"]').get_by_label("v3", exact=True).uncheck()
+    # T0 lost one value; T1's one value, not drawn, travelled on with the change.
+    expect(page.locator("#total-robots")).to_have_text("1000")
+    expect(page.locator("#total-configurations")).to_have_text("1000")
+    assert ("T1.c", "v7") in parse_qsl(urlsplit(page.url).query)

@@ -7,28 +7,60 @@ import os
 import signal
 from pathlib import Path
 
+import pytest
+
 from tests.studio.conftest import StartStudio
 from tests.studio.test_pages import _multipart
 
 
 def test_sigterm_ends_the_studio_with_status_0_and_leaves_no_upload_behind(
-    start_studio: StartStudio, tmp_path: Path
+    start_studio: StartStudio,
 ) -> None:
-    # A temporary folder of the studio's own: other programs' studios on this machine make
-    # folders of the same name in the shared one.
-    temporary = tmp_path / "tmp"
-    temporary.mkdir()
-    server = start_studio(env={**os.environ, "TMPDIR": str(temporary)})
+    server = start_studio()
     body, headers = _multipart("file", "r.yaml", b"characteristics:\n  t: {values: [a]}\n")
     status, _ = server.request("POST", "/api/rules", body, headers)
     assert status == 200
-    made = list(temporary.glob("teleop-ui-studio-*"))
-    assert len(made) == 1
-    (folder,) = made
+    folder = server.private
     assert folder.stat().st_mode & 0o777 == 0o700
+    assert len(server.kept_files()) == 1
     os.killpg(server.process.pid, signal.SIGTERM)
     assert server.process.wait(timeout=60) == 0
     assert not folder.exists()
+
+
+@pytest.mark.parametrize("signals", [("TERM", "INT"), ("INT", "INT"), ("TERM", "TERM")])
+def test_two_signals_back_to_back_still_remove_the_private_folder_without_a_traceback(
+    start_studio: StartStudio, signals: tuple[str, str]
+) -> None:
+    server = start_studio()
+    body, headers = _multipart("file", "r.yaml", b"characteristics:\n  t: {values: [a]}\n")
+    assert server.request("POST", "/api/rules", body, headers)[0] == 200
+    folder = server.private
+    for name in signals:
+        os.kill(server.process.pid, getattr(signal, f"SIG{name}"))
+    # A second signal that comes once the studio has cleaned up may end it as signals do.
+    assert server.process.wait(timeout=60) in (0, -signal.SIGTERM, 130)
+    assert not folder.exists()
+    assert "Traceback" not in server.stderr.read_text(encoding="utf-8")
+
+
+def test_a_folder_left_by_a_studio_killed_outright_is_removed_by_the_next(
+    start_studio: StartStudio, tmp_path: Path
+) -> None:
+    first = start_studio()
+    body, headers = _multipart("file", "r.yaml", b"characteristics:\n  t: {values: [a]}\n")
+    assert first.request("POST", "/api/rules", body, headers)[0] == 200
+    left = first.private
+    os.killpg(first.process.pid, signal.SIGKILL)
+    first.process.wait(timeout=60)
+    assert left.exists()
+    # Another account's folder, or one whose studio still runs, is not touched.
+    running = first.temporary / f"teleop-ui-studio-{os.getpid()}-x"
+    running.mkdir()
+    second = start_studio(env={**os.environ, "TMPDIR": str(first.temporary)})
+    assert second.get("/api/count?type=UAV")[0] == 200
+    assert not left.exists()
+    assert running.exists()
 
 
 def test_open_with_no_browser_to_open_says_so_and_goes_on_serving(

@@ -176,6 +176,10 @@
           continue;
         }
         const type = box.closest("fieldset.type");
+        // A type this page does not draw carries its part of the selection as it came.
+        for (const carried of type.querySelectorAll("input[data-carried]")) {
+          params.append(carried.name, carried.value);
+        }
         for (const group of type.querySelectorAll("fieldset.characteristic")) {
           const key = group.dataset.key;
           if (group.dataset.kind === "integer") {
@@ -667,6 +671,17 @@
         log.lastElementChild.remove();
       }
       refresh();
+    };
+    events.onerror = () => {
+      // Refused (too many live views open) or the studio stopped: the browser will not try
+      // again by itself, so say so where the log is.
+      if (events.readyState === EventSource.CLOSED) {
+        const item = document.createElement("li");
+        item.textContent =
+          "Live events stopped: the studio refused this view (too many live views open) " +
+          "or stopped. Close other live views and reload.";
+        log.prepend(item);
+      }
     };
 
     async function refresh() {
