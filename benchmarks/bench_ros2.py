@@ -37,12 +37,12 @@ import pytest
 from pytest_benchmark.fixture import BenchmarkFixture
 
 from benchmarks.latency import report
-from solver.core.solution import Solution, solve
 from solver.core.team import load_team
 from solver.identify.profile import load_profile
 from solver.live.events import event_data
 from solver.live.sources.ros2 import DdsGraph
 from solver.live.watcher import Watcher
+from solver.solving.solution import Solution, solve
 from tests.conftest import TEAMS
 from tests.live.fleet import drone_configuration, drone_text, rover_configuration, rover_text
 from tests.live.ros2_graph import EmulatedRobot, Operator, next_domain, write_config

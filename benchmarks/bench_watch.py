@@ -50,12 +50,12 @@ import pytest
 from pytest_benchmark.fixture import BenchmarkFixture
 
 from benchmarks import latency
-from solver.core.solution import Solution, solve
 from solver.core.team import load_team
 from solver.identify.identification import IdentificationCache
 from solver.identify.profile import load_profile
 from solver.live.events import event_data
 from solver.live.watcher import Watcher
+from solver.solving.solution import Solution, solve
 from tests.conftest import TEAMS
 from tests.live.fleet import (
     drone_configuration,

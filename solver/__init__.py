@@ -24,12 +24,14 @@ The package has wings; each is a package with its own map in its docstring:
 ``files``              reading input safely (size limits, YAML with positions,
                        typed access, file kinds) and writing output atomically
 ``ros``                ROS vocabulary with no I/O: topics, message-type names
-``core``               rule sets, constraints, team selections, the constraint
-                       model, the partition into UI configurations, ``solve``,
-                       ``assign``, their JSON contracts, symbolic counts, the
-                       article's published figures
+``core``               the model: rule sets, constraints, team selections, the
+                       constraint model, the partition into UI configurations, the
+                       exact cover, the SAT questions about a rule set
 ``engines``            counting and enumerating: ``structure``, ``fast``, ``csp``;
                        the limits
+``solving``            ``solve`` and ``assign`` with the engines, their JSON
+                       contracts, symbolic counts, the article's published figures,
+                       team files written back
 ``layouts``            UI configurations -> Foxglove/Lichtblick and RViz2 layouts
 ``reporting``          text/JSON/CSV/Markdown views, the robot list, plots,
                        HTML/Markdown reports, UVL export, batch runs
@@ -44,8 +46,9 @@ The package has wings; each is a package with its own map in its docstring:
 Layers, lowest first; a module imports only from its own layer or lower ones, and no module
 imports itself back through others (tests/test_architecture.py checks both):
 ``errors``, ``extras``, ``untrusted``, ``limits``, ``deadline``, ``lazy``, ``collector`` ->
-``files``, ``ros`` -> ``core``, ``engines`` -> ``layouts`` -> ``reporting`` -> ``check``,
-``identify`` -> ``live`` -> ``cli``, ``studio``.
+``files``, ``ros`` -> ``core`` -> ``engines``, ``check`` -> ``solving`` -> ``layouts``,
+``identify`` -> ``reporting`` -> ``live`` -> ``cli``, ``studio``. Every import counts, those
+made only for type checking too.
 
 Every command from Python (docs/python-api.md has worked examples):
 
@@ -56,7 +59,7 @@ Every command from Python (docs/python-api.md has worked examples):
 ``assign``                      ``assign(solution, kinematic_type="UAV", ...)``
 ``count FILE``                  ``solve(team, count_only=True)``; a rule set's whole
                                 design space: ``solver.core.team.full_team(load_rules(path))``
-``count --symbolic``            ``solver.core.symbolic.formulas(team)``
+``count --symbolic``            ``solver.solving.symbolic.formulas(team)``
 ``robots``                      ``solver.reporting.listing.numbered_robots(solution)``
 ``reproduce``                   ``compare()``
 ``check FILES``                 ``check_files(paths)``; ``time_limit=``, ``partial=True``
@@ -90,14 +93,11 @@ __version__ = "0.1.0"
 
 if TYPE_CHECKING:
     from solver.check import Finding, check_files
-    from solver.core.assignment import Assignment, assign, parse_combination
     from solver.core.constraints import Condition, RuleConstraint
     from solver.core.model import Robot, build_problem, robots
     from solver.core.partition import Configuration
-    from solver.core.reproduce import Comparison, compare
     from solver.core.rules import default_rules_path, load_rules
     from solver.core.ruleset import Characteristic, Component, RuleSet
-    from solver.core.solution import Solution, TypeSummary, solve
     from solver.core.team import Published, Team, TypeSelection, load_team
     from solver.errors import Fault, InputError, Location, RulesError, SolverError, TeamError
     from solver.identify import Identification, IdentificationCache, identify_fleet, identify_urdf
@@ -105,11 +105,14 @@ if TYPE_CHECKING:
     from solver.reporting.batch import Outcome, find_teams, plan, run_batch, write_summary
     from solver.reporting.plot import bars_figure, radar_figure, write_plot
     from solver.reporting.report import render_html, render_markdown, write_report
+    from solver.solving.assignment import Assignment, assign, parse_combination
+    from solver.solving.reproduce import Comparison, compare
+    from solver.solving.solution import Solution, TypeSummary, solve
 
 _EXPORTS = {
-    "Assignment": "solver.core.assignment",
+    "Assignment": "solver.solving.assignment",
     "Characteristic": "solver.core.ruleset",
-    "Comparison": "solver.core.reproduce",
+    "Comparison": "solver.solving.reproduce",
     "Component": "solver.core.ruleset",
     "Condition": "solver.core.constraints",
     "Configuration": "solver.core.partition",
@@ -126,33 +129,33 @@ _EXPORTS = {
     "RuleConstraint": "solver.core.constraints",
     "RuleSet": "solver.core.ruleset",
     "RulesError": "solver.errors",
-    "Solution": "solver.core.solution",
+    "Solution": "solver.solving.solution",
     "SolverError": "solver.errors",
     "Team": "solver.core.team",
     "TeamError": "solver.errors",
     "TypeSelection": "solver.core.team",
-    "TypeSummary": "solver.core.solution",
+    "TypeSummary": "solver.solving.solution",
     "Watcher": "solver.live",
-    "assign": "solver.core.assignment",
+    "assign": "solver.solving.assignment",
     "assign_from_master": "solver.live",
     "bars_figure": "solver.reporting.plot",
     "build_problem": "solver.core.model",
     "check_files": "solver.check",
-    "compare": "solver.core.reproduce",
+    "compare": "solver.solving.reproduce",
     "default_rules_path": "solver.core.rules",
     "find_teams": "solver.reporting.batch",
     "identify_fleet": "solver.identify",
     "identify_urdf": "solver.identify",
     "load_rules": "solver.core.rules",
     "load_team": "solver.core.team",
-    "parse_combination": "solver.core.assignment",
+    "parse_combination": "solver.solving.assignment",
     "plan": "solver.reporting.batch",
     "radar_figure": "solver.reporting.plot",
     "render_html": "solver.reporting.report",
     "render_markdown": "solver.reporting.report",
     "robots": "solver.core.model",
     "run_batch": "solver.reporting.batch",
-    "solve": "solver.core.solution",
+    "solve": "solver.solving.solution",
     "write_plot": "solver.reporting.plot",
     "write_report": "solver.reporting.report",
     "write_summary": "solver.reporting.batch",

@@ -8,7 +8,7 @@ the more: they made reading grow faster than the file (3.4x per doubling at 10,2
 without them) and took half of listing 8,000 configurations. What is built meanwhile is
 bounded (:mod:`solver.limits`), so what is held until the collector runs again is too.
 
-Not here: what is read (:mod:`solver.files.yamlio`) or solved (:mod:`solver.core.solution`).
+Not here: what is read (:mod:`solver.files.yamlio`) or solved (:mod:`solver.solving.solution`).
 """
 
 from __future__ import annotations

@@ -17,7 +17,7 @@ check a few seconds. Whether a call finishes near its budget depends on the mach
 answers when it finishes does not.
 
 Not here: the size limits (:mod:`solver.limits`), or where each call looks at its deadline
-(:mod:`solver.core.oracle`, :mod:`solver.check.runner`, :mod:`solver.core.symbolic`).
+(:mod:`solver.core.oracle`, :mod:`solver.check.runner`, :mod:`solver.solving.symbolic`).
 """
 
 from __future__ import annotations

@@ -162,8 +162,8 @@ def test_python_dash_m_solver_is_the_same_command_line() -> None:
 # What a plain URDF's `identify` has no use for: UI configurations, layouts, the live graph,
 # the xacro sandbox, the children that read bags, an SRDF's reader (start-up time, issue 29).
 NOT_FOR_A_URDF = (
-    "solver.core.assignment",
-    "solver.core.solution",
+    "solver.solving.assignment",
+    "solver.solving.solution",
     "solver.identify.fleet",
     "solver.identify.limited",
     "solver.identify.readers.srdf",
@@ -204,7 +204,7 @@ def test_a_command_imports_its_own_module_and_no_other_command() -> None:
     assert "solver.cli.identify" not in loaded
     # Nor what Case 3 does not use: HiGHS's exact cover, assigning a robot.
     assert "solver.core.cover" not in loaded
-    assert "solver.core.assignment" not in loaded
+    assert "solver.solving.assignment" not in loaded
 
 
 def test_identifying_a_urdf_loads_no_configurations_layouts_live_graph_nor_xacro_sandbox() -> None:

@@ -27,8 +27,8 @@ from solver.check.render import sarif_text
 from solver.cli import main
 from solver.cli._terminal import escape_controls
 from solver.errors import SolverError
+from solver.files.output import csv_cell
 from solver.identify import identify_urdf
-from solver.reporting.render import csv_cell
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 from tests.conftest import ROOT, RULES, TEAMS, run_cli
 

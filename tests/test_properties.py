@@ -26,9 +26,9 @@ from solver.core.rules import parse_rules
 from solver.core.team import parse_team
 from solver.engines import structure
 from solver.engines.fast import robots as robots_stream
+from solver.files.output import csv_row
 from solver.files.yamlio import parse_document
 from solver.reporting.listing import numbered_robots, write_robots
-from solver.reporting.render import csv_row
 
 
 @st.composite

@@ -10,7 +10,7 @@ import pytest
 
 import solver
 from solver import assign, load_team, solve
-from solver.core.contracts import solution_data
+from solver.solving.solution import solution_data
 from tests.conftest import ROOT
 
 

@@ -9,8 +9,8 @@ from pathlib import Path
 
 import pytest
 
-from solver.core.reproduce import compare
 from solver.reporting.render import render_comparisons
+from solver.solving.reproduce import compare
 from tests.conftest import ROOT, run_cli
 
 README = (ROOT / "README.md").read_text(encoding="utf-8")

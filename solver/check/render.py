@@ -27,7 +27,7 @@ from solver.check.finding import LEVELS, Finding
 from solver.check.registry import ALL_CHECKS
 from solver.check.runner import Report
 from solver.errors import Location
-from solver.reporting.render import dumps
+from solver.files.output import dumps
 from solver.untrusted import shown
 
 __all__ = ["FORMATS", "json_data", "render", "sarif_data", "sarif_text", "summary_line"]

@@ -16,7 +16,7 @@ JSON output is unchanged by this (``json.dumps`` already escapes control charact
 CSV and Markdown written to standard output get the escapes. Files written with ``-o`` are
 not terminals and keep their content (each format escapes what it must itself).
 
-Not here: escaping for a format (CSV cells: :func:`solver.reporting.render.csv_cell`; SARIF
+Not here: escaping for a format (CSV cells: :func:`solver.files.output.csv_cell`; SARIF
 messages: :mod:`solver.check.render`; Markdown: :mod:`solver.reporting.markdown`).
 """
 

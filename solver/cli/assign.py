@@ -64,10 +64,10 @@ def register(subparsers: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from solver.core.assignment import assign, parse_combination
-    from solver.core.solution import solve
     from solver.errors import InputError
     from solver.reporting.render import render_assignment
+    from solver.solving.assignment import assign, parse_combination
+    from solver.solving.solution import solve
 
     combination = parse_combination(args.combination)
     if args.ros2 or args.master is not None:
@@ -85,11 +85,11 @@ def run(args: argparse.Namespace) -> int:
 def run_live(args: argparse.Namespace, combination: dict[str, str]) -> int:
     """``assign --master`` and ``assign --ros2``: one question, one path for every graph."""
     from solver.cli.watch import graph_address, open_graph
-    from solver.core.solution import solve
     from solver.errors import InputError
     from solver.identify.profile import load_profile
     from solver.live.query import assign_from_graph
     from solver.live.render import render_live_assignment
+    from solver.solving.solution import solve
 
     address = graph_address(args)
     if args.ros2 and args.robot is None:

@@ -95,8 +95,8 @@ def register(subparsers: Any) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from solver.files.atomic import make_folder
+    from solver.files.output import text_table
     from solver.reporting.batch import find_teams, plan, run_batch, write_summary
-    from solver.reporting.render import text_table
 
     if args.rules is not None:
         from solver.core.rules import load_rules

@@ -61,8 +61,8 @@ def load(text: str, rules: str | None) -> Team:
 
 def run(args: argparse.Namespace) -> int:
     from solver.cli._progress import working
-    from solver.core.solution import solve
     from solver.reporting.render import render_counts
+    from solver.solving.solution import solve
 
     team = load(args.file, args.rules)
     with working(f"counting {team.name}", fmt=args.format):
@@ -70,8 +70,8 @@ def run(args: argparse.Namespace) -> int:
     if not args.symbolic:
         write(render_counts(solution, args.format))
         return 0
-    from solver.core.symbolic import agrees_with, formulas
     from solver.reporting.growth import render_growth
+    from solver.solving.symbolic import agrees_with, formulas
 
     growth = formulas(team, time_limit=args.time_limit)
     write(render_growth(growth, solution, args.format))

@@ -44,9 +44,9 @@ def run(args: argparse.Namespace) -> int:
 
     from solver.core.rules import default_rules_path
     from solver.files.atomic import write_atomic
+    from solver.files.output import dumps, text_table
     from solver.identify.fleet import identify_fleet, rules_reference, team_text
     from solver.identify.render import identification_data
-    from solver.reporting.render import dumps, text_table
 
     rules, profile = load_rules_and_profile(args.rules, args.profile)
     with _progress() as progress:

@@ -19,9 +19,9 @@ if TYPE_CHECKING:
     from pathlib import Path
 
     from solver.core.ruleset import RuleSet
-    from solver.core.solution import Solution
     from solver.core.team import Team
     from solver.identify.profile import Profile
+    from solver.solving.solution import Solution
 
 
 def add_description_options(parser: argparse.ArgumentParser) -> None:
@@ -143,10 +143,10 @@ def load_rules_and_profile(rules: str | None, profile: str | None) -> tuple[Rule
 
 
 def run(args: argparse.Namespace) -> int:
+    from solver.files.output import dumps
     from solver.identify.combinations import combinations, missing
     from solver.identify.identification import identify
     from solver.identify.render import identification_data, render_identification
-    from solver.reporting.render import dumps
 
     team = load_team_argument(args.team, args.rules) if args.team else None
     rules, profile = load_rules_and_profile(None if team else args.rules, args.profile)
@@ -187,7 +187,7 @@ def _solved(team: Team | None) -> Solution | None:
     """The team solved, with ``--team`` (solving is loaded for that case only)."""
     if team is None:
         return None
-    from solver.core.solution import solve
+    from solver.solving.solution import solve
 
     return solve(team)
 

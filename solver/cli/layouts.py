@@ -89,8 +89,8 @@ def register(subparsers: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from solver.core.solution import solve
     from solver.layouts import load_presentation
+    from solver.solving.solution import solve
 
     if args.preview and args.format != "foxglove":
         from solver.errors import InputError
@@ -154,7 +154,6 @@ def _names(names: tuple[str, ...], shown: int = 6) -> str:
 
 
 def _robot(args: argparse.Namespace) -> int:
-    from solver.core.solution import solve
     from solver.errors import InputError
     from solver.files.atomic import write_atomic
     from solver.identify import identify_urdf
@@ -164,6 +163,7 @@ def _robot(args: argparse.Namespace) -> int:
     from solver.layouts import load_presentation
     from solver.layouts.plan import check_namespace
     from solver.layouts.robot import robot_layout
+    from solver.solving.solution import solve
 
     if not args.robot_team:
         raise InputError.at("--robot", "--robot needs --team TEAM.yaml")

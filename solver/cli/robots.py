@@ -36,8 +36,8 @@ def run(args: argparse.Namespace) -> int:
     import sys
 
     from solver.cli._progress import working
-    from solver.core.solution import solve
     from solver.reporting.listing import write_robots
+    from solver.solving.solution import solve
 
     team = load_team_argument(args.team, args.rules)
     # A spinner only while the robots go to a file: on the terminal they are the progress.

@@ -51,8 +51,8 @@ def register(subparsers: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from solver.core.solution import solve
     from solver.reporting.render import render_solution, solution_chunks
+    from solver.solving.solution import solve
 
     if args.plot:
         from solver.reporting.plot import plot_format

@@ -142,10 +142,10 @@ def _studio(args: argparse.Namespace) -> Any:
 def _live(args: argparse.Namespace, workspace: Any, chosen: Any) -> Any:
     """The live feed: a watcher on the graph for the team given at start (every type of its
     rule set when a rule set, or nothing, was given)."""
-    from solver.core.solution import solve
     from solver.core.team import full_team
     from solver.identify.profile import load_profile
     from solver.live.watcher import Watcher
+    from solver.solving.solution import solve
     from solver.studio.live import LiveFeed
 
     team = workspace.start_team or full_team(workspace.source(None).rules)

@@ -22,11 +22,11 @@ from solver.cli._common import (
 from solver.untrusted import shown
 
 if TYPE_CHECKING:
-    from solver.core.solution import Solution
     from solver.live.events import Event
     from solver.live.graph import GraphSource, MasterError
     from solver.live.layouts import LiveLayouts
     from solver.live.watcher import Watcher
+    from solver.solving.solution import Solution
 
 
 def register(subparsers: Any) -> None:
@@ -111,10 +111,10 @@ def register(subparsers: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from solver.core.solution import solve
     from solver.identify.profile import load_profile
     from solver.live.given import parse_fixed
     from solver.live.watcher import Watcher
+    from solver.solving.solution import solve
 
     team = load_team_argument(args.team, args.rules)
     profile = load_profile(args.profile)

@@ -1,4 +1,5 @@
-"""The model: rule sets, team selections, constraints, and the solved partition.
+"""The model: rule sets, team selections, constraints, and the partition of robots into
+configurations.
 
 ===============  ==============================================================
 ``constraints``  constraints between characteristic values, as data
@@ -12,12 +13,8 @@
 ``analysis``     which values survive the constraints; minimal conflicting subsets
 ``oracle``       "is there a valid robot over these domains?", asked of a SAT solver
 ``regions``      the robots a constraint excludes, as boxes of value sets
-``solution``     :func:`solve` a team -> :class:`Solution`
-``assignment``   :func:`assign` one combination -> :class:`Assignment`
-``contracts``    the JSON shapes of a solution and an assignment (``--format json``)
-``symbolic``     counts as formulas of a type's maximum sensor count (sympy)
-``reproduce``    the article's published figures beside the computed ones
 ===============  ==============================================================
 
-Counting and enumerating live in :mod:`solver.engines`; output in :mod:`solver.reporting`.
+Counting and enumerating live in :mod:`solver.engines`, above the model; solving a team with
+them in :mod:`solver.solving`, above the engines; output in :mod:`solver.reporting`.
 """

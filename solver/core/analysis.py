@@ -21,7 +21,7 @@ has no solution), asking only about the constraints of the solver's last core
 (:func:`deletion`): a few questions for a conflict of a few constraints among thousands.
 
 Not here: deciding what is a finding (the check modules) or enumerating robots for solving
-(:mod:`solver.core.model`, :mod:`solver.core.solution`).
+(:mod:`solver.core.model`, :mod:`solver.solving.solution`).
 """
 
 from __future__ import annotations

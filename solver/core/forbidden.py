@@ -3,7 +3,7 @@
 A team selects values per kinematic type; a constraint of its rule set may forbid some of them
 for that type (``no force feedback in flight``). The robots with such a value are not valid and
 get the default UI configuration. ``solve``, ``report`` and ``batch`` say so (through
-:func:`solver.core.contracts.solution_warnings`) and the report lists the constraints with what
+:func:`solver.solving.solution.solution_warnings`) and the report lists the constraints with what
 they
 removed; ``teleop-ui check`` gives the same finding, located in the team file
 (``team-forbidden-value``). The analysis is :class:`solver.core.analysis.Analysis`, shared

@@ -14,7 +14,7 @@ A rule set is written once and reused for many teams. It declares
 Every type here is frozen; nothing here reads a file.
 
 Not here: reading a rule file (:mod:`solver.core.rules`), team selections
-(:mod:`solver.core.team`), solving (:mod:`solver.core.solution`).
+(:mod:`solver.core.team`), solving (:mod:`solver.solving.solution`).
 """
 
 from __future__ import annotations

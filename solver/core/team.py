@@ -17,7 +17,7 @@ the other characteristics its robots may take::
 A characteristic a type does not mention may take every value of its domain. Selections use the
 forms of :func:`solver.core.rules.read_selection`.
 
-Not here: what the selection produces (:mod:`solver.core.solution`).
+Not here: what the selection produces (:mod:`solver.solving.solution`).
 """
 
 from __future__ import annotations

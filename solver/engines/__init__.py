@@ -27,9 +27,10 @@ Engine modules are imported on first use only: numpy and python-constraint stay 
 'solver.engines.fast'
 
 Beside them, :mod:`solver.engines.numbering` gives a robot its configuration number from the
-structure, without listing the configurations (for streaming ``robots``).
+structure, without listing the configurations (for streaming ``robots``), and
+:mod:`solver.engines.shared` holds what they share (:class:`Counts`, the team's :class:`Memo`).
 
-Not here: numbering configurations across a team (:mod:`solver.core.solution`); the exact
+Not here: numbering configurations across a team (:mod:`solver.solving.solution`); the exact
 minimum cover every engine uses when components overlap (:mod:`solver.core.cover`).
 """
 
@@ -37,10 +38,11 @@ from __future__ import annotations
 
 import importlib
 from collections.abc import Iterator
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from functools import cached_property
 from typing import TYPE_CHECKING, Protocol, cast
 
+from solver.engines.shared import Counts, Memo
 from solver.errors import Fault, InputError, Location, StructureTooComplex, TooLargeError
 from solver.limits import Limit, limit, readable
 
@@ -49,7 +51,6 @@ if TYPE_CHECKING:
     from solver.core.partition import Partition
     from solver.core.ruleset import RuleSet
     from solver.core.team import Team, TypeSelection
-    from solver.engines.structure import Memo
 
 __all__ = [
     "DESCRIPTIONS",
@@ -59,6 +60,7 @@ __all__ = [
     "NAMES",
     "Counts",
     "Engine",
+    "Memo",
     "check_listing",
     "choose",
     "describe",
@@ -80,16 +82,6 @@ DESCRIPTIONS = {
 NAMES: tuple[str, ...] = ("auto", *DESCRIPTIONS)
 # The engines that produce robots one by one (`teleop-ui robots`).
 ENUMERATING: tuple[str, ...] = ("fast", "csp")
-
-
-@dataclass(frozen=True, slots=True)
-class Counts:
-    """Exact counts for one kinematic type."""
-
-    kinematic_type: str
-    valid_robots: int
-    ui_configurations: int
-    unserved_robots: int
 
 
 class Engine(Protocol):

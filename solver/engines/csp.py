@@ -18,7 +18,7 @@ from solver.core.constraints import Value
 from solver.core.partition import Partition
 from solver.core.ruleset import RuleSet
 from solver.core.team import TypeSelection
-from solver.engines import Counts
+from solver.engines.shared import Counts
 
 __all__ = ["count", "partition", "robots"]
 

@@ -29,7 +29,7 @@ from solver.core.constraints import Value
 from solver.core.partition import Partition, PartitionClass
 from solver.core.ruleset import Characteristic, RuleSet
 from solver.core.team import TypeSelection
-from solver.engines import Counts
+from solver.engines.shared import Counts
 
 if TYPE_CHECKING:
     from numpy.typing import NDArray

@@ -30,7 +30,7 @@ of separate covers is minimal) partitions the joint classes
 (:func:`solver.core.partition.partition_classes`).
 
 Not here: enumerating robots (:mod:`solver.engines.fast`, :mod:`solver.engines.csp`), symbolic
-formulas (:mod:`solver.core.symbolic`).
+formulas (:mod:`solver.solving.symbolic`).
 """
 
 from __future__ import annotations
@@ -47,7 +47,7 @@ from solver.core.constraints import Value
 from solver.core.partition import Key, Partition, PartitionClass, RobotClass, partition_classes
 from solver.core.ruleset import RuleSet
 from solver.core.team import TypeSelection
-from solver.engines import Counts
+from solver.engines.shared import Counts, Memo
 from solver.errors import StructureTooComplex
 from solver.limits import readable
 from solver.untrusted import shown
@@ -61,7 +61,6 @@ if TYPE_CHECKING:
 
 __all__ = [
     "BLOCK_LIMIT",
-    "Memo",
     "Product",
     "component_use",
     "count",
@@ -76,21 +75,6 @@ BLOCK_LIMIT = 1_000_000
 VECTOR = 4096
 
 Members = tuple[Value, ...]
-
-
-class Memo:
-    """What one team's kinematic types can share: counts by selection structure, and the
-    value classes of whole domains (most selections leave most characteristics whole)."""
-
-    def __init__(self) -> None:
-        self.counts: dict[tuple[object, ...], Counts] = {}
-        self.whole: dict[int, list[_Class]] = {}
-        # The blocks count() built for each kinematic type, for partition() to reuse.
-        self.blocks: dict[str, list[_Block]] = {}
-        # _shape() of the whole-domain class lists above, by identity.
-        self.shapes: dict[int, tuple[tuple[int, int], ...]] = {}
-        # The minimum cover count() found for each kinematic type whose values overlap.
-        self.covers: dict[str, Cover] = {}
 
 
 @dataclass(frozen=True, slots=True)

@@ -23,6 +23,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Literal
 
 from solver.errors import Fault, InputError
+from solver.files.yamlio import declares_kind
 
 if TYPE_CHECKING:
     from solver.files.yamlio import Document
@@ -104,21 +105,6 @@ def file_kind(document: Document) -> FileKind | None:
     if "rules" in keys:
         return "team"
     return None
-
-
-# The fields that make a file one kind or another: a file with none of them at its top level
-# is none of the kinds, and nothing of it is quoted (docs/security.md, "No echoes").
-_KIND_FIELDS = frozenset({"team", "rules", "characteristics", "extends", "components"})
-
-
-def declares_kind(data: object) -> bool:
-    """Whether ``data`` (a document's, even one with faults) is a mapping with a field that
-    makes it a kind of file: ``team:``, ``rules:``, ``characteristics:``, ``extends:``, a
-    presentation's ``components:`` or ``profile: presentation``. A reader may quote only such
-    a file (:mod:`solver.files.yamlio`)."""
-    if not isinstance(data, dict):
-        return False
-    return data.get("profile") == "presentation" or any(str(key) in _KIND_FIELDS for key in data)
 
 
 def describe(kind: FileKind) -> str:

@@ -41,6 +41,7 @@ __all__ = [
     "MAX_TEXT_CHARS",
     "Document",
     "PathPart",
+    "declares_kind",
     "format_path",
     "load_document",
     "load_hashed",
@@ -186,18 +187,26 @@ def parse_document(
         raise syntax
     # A file that reads as no kind of file may be anyone's (a secret given by mistake): its
     # faults name only their lines, quoting none of its text, keys or tags.
-    faults = walker.faults if not walker.faults or _of_a_kind(data) else walker.bare
+    faults = walker.faults if not walker.faults or declares_kind(data) else walker.bare
     if any(fault.code not in tolerate for fault in faults):
         raise InputError(faults)
     return Document(name, data, walker.value_marks, walker.key_marks, tuple(faults))
 
 
-def _of_a_kind(data: Any) -> bool:
-    """Whether ``data`` has a field that makes a file a team, a rule set or a profile
-    (:mod:`solver.files.filekind`): only then may a message quote it."""
-    from solver.files.filekind import declares_kind
+# The fields that make a file one kind or another (:mod:`solver.files.filekind`): a file with
+# none of them at its top level is none of the kinds, and nothing of it is quoted
+# (docs/security.md, "No echoes").
+_KIND_FIELDS = frozenset({"team", "rules", "characteristics", "extends", "components"})
 
-    return declares_kind(data)
+
+def declares_kind(data: object) -> bool:
+    """Whether ``data`` (a document's, even one with faults) is a mapping with a field that
+    makes it a kind of file: ``team:``, ``rules:``, ``characteristics:``, ``extends:``, a
+    presentation's ``components:`` or ``profile: presentation``. Only such a file may be quoted
+    in a message."""
+    if not isinstance(data, dict):
+        return False
+    return data.get("profile") == "presentation" or any(str(key) in _KIND_FIELDS for key in data)
 
 
 # Texts up to this many characters are composed before their pre-scan (parse_document). Such a

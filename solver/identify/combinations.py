@@ -24,9 +24,9 @@ from typing import TYPE_CHECKING
 from solver.identify.profile import MOTION_CONTROL, SENSOR_COUNT, SENSOR_TYPE, Profile
 
 if TYPE_CHECKING:
-    from solver.core.assignment import Assignment
-    from solver.core.solution import Solution
     from solver.identify.identification import Identification
+    from solver.solving.assignment import Assignment
+    from solver.solving.solution import Solution
 
 __all__ = ["Combination", "combinations", "missing"]
 
@@ -47,7 +47,7 @@ def combinations(
     ``given`` (characteristic name -> value) replaces what identification found for those
     characteristics and completes the others (a name the rules lack is an
     :class:`~solver.errors.InputError`, as in :func:`solver.assign`)."""
-    from solver.core.assignment import assign  # with a solved team only (identify --team)
+    from solver.solving.assignment import assign  # with a solved team only (identify --team)
 
     rules = solution.rules
     given = dict(given or {})

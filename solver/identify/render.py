@@ -23,15 +23,14 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
-from solver.core.contracts import assignment_data
 from solver.errors import Fault
-from solver.reporting.render import text_table
+from solver.files.output import text_table
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
 if TYPE_CHECKING:
-    from solver.core.solution import Solution
     from solver.identify.combinations import Combination
     from solver.identify.identification import Identification
+    from solver.solving.solution import Solution
 
 __all__ = ["identification_data", "render_identification", "summary_data"]
 
@@ -86,9 +85,7 @@ def identification_data(
         ],
         "sensors": _sensors(identification),
         "motion_controls": _controls(identification),
-        "combinations": []
-        if solution is None
-        else [assignment_data(solution, c.assignment) for c in combinations],
+        "combinations": [] if solution is None else _combinations(solution, combinations),
     }
     if explain:
         data["decision"] = list(identification.decision)
@@ -195,3 +192,11 @@ def _missing_line(name: str, solution: Solution) -> str:
 
 def _indent(text: str, prefix: str = "  ") -> str:
     return "".join(prefix + line + "\n" for line in text.splitlines())
+
+
+def _combinations(solution: Solution, combinations: Sequence[Combination]) -> list[dict[str, Any]]:
+    """Each combination's assignment as ``assign --format json`` gives it (solving is loaded
+    only when there is a team to solve: identifying a URDF alone does not)."""
+    from solver.solving.assignment import assignment_data
+
+    return [assignment_data(solution, c.assignment) for c in combinations]

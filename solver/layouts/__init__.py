@@ -15,7 +15,7 @@
 ``checks``          layouts against the viewers' own rules, kept as data (issue 26)
 ==================  ===============================================================
 
-Not here: solving (:mod:`solver.core.solution`); UVL export (:mod:`solver.reporting.uvl`).
+Not here: solving (:mod:`solver.solving.solution`); UVL export (:mod:`solver.reporting.uvl`).
 """
 
 from __future__ import annotations

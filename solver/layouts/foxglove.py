@@ -24,13 +24,13 @@ import json
 from typing import Any
 
 from solver.core.partition import Configuration
-from solver.core.solution import Solution
 from solver.errors import Fault, Location, SolverError
 from solver.layouts.plan import Panel, Plan, Robot, plan_layout
 from solver.layouts.presentation import PANEL_TYPES, Presentation
 from solver.layouts.samples import sample_message
 from solver.layouts.tiling import split_tree
 from solver.ros.names import normalise_type
+from solver.solving.solution import Solution
 from solver.untrusted import shown
 
 __all__ = [

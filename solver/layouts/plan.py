@@ -27,7 +27,6 @@ from dataclasses import dataclass, field
 from types import MappingProxyType
 
 from solver.core.partition import Configuration
-from solver.core.solution import Solution
 from solver.errors import InputError
 from solver.layouts.presentation import ROBOT, PanelSpec, Presentation
 from solver.layouts.tiling import tiles
@@ -39,6 +38,7 @@ from solver.ros.names import (
     in_namespace,
     normalise_type,
 )
+from solver.solving.solution import Solution
 from solver.untrusted import shown
 
 __all__ = [

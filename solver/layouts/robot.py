@@ -13,8 +13,6 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from solver.core.assignment import Assignment
-from solver.core.solution import Solution
 from solver.errors import Fault
 from solver.layouts.plan import Robot, panel_entries
 from solver.layouts.presentation import Presentation
@@ -22,6 +20,8 @@ from solver.layouts.targets import target
 from solver.layouts.topics import match_topics
 from solver.ros.joints import JointStart
 from solver.ros.names import Topic
+from solver.solving.assignment import Assignment
+from solver.solving.solution import Solution
 
 __all__ = ["RobotLayout", "robot_layout"]
 

@@ -24,13 +24,13 @@ from typing import Any
 import yaml
 
 from solver.core.partition import Configuration
-from solver.core.solution import Solution
 from solver.errors import Fault, Location
 from solver.files.yamlio import parse_document
 from solver.layouts.foxglove import LayoutError
 from solver.layouts.plan import Panel, Plan, Robot, plan_layout
 from solver.layouts.presentation import Presentation
 from solver.ros.names import normalise_type
+from solver.solving.solution import Solution
 from solver.untrusted import shown
 
 __all__ = [

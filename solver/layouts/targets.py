@@ -18,12 +18,12 @@ from dataclasses import dataclass
 from typing import Protocol
 
 from solver.core.partition import Configuration
-from solver.core.solution import Solution
 from solver.errors import InputError
 from solver.layouts.foxglove import foxglove_layout, validate_foxglove
 from solver.layouts.plan import Robot, plan_layout
 from solver.layouts.presentation import Presentation
 from solver.layouts.rviz import plan_rviz, rviz_note, rviz_text, validate_rviz
+from solver.solving.solution import Solution
 from solver.untrusted import shown
 
 __all__ = ["TARGETS", "Target", "target"]

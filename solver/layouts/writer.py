@@ -17,7 +17,6 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from solver.core.partition import Configuration
-from solver.core.solution import Solution
 from solver.errors import InputError
 from solver.files.atomic import Content, make_folder, write_all_atomic
 from solver.layouts.foxglove import layout_filename
@@ -25,6 +24,7 @@ from solver.layouts.plan import Robot
 from solver.layouts.presentation import Presentation
 from solver.layouts.targets import TARGETS, target
 from solver.limits import limit
+from solver.solving.solution import Solution
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
 __all__ = [

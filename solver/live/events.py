@@ -53,9 +53,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
-from solver.core.solution import Solution
 from solver.live.robot import LiveRobot, robot_data
 from solver.live.selection import ActiveSelection, Request, selection_data
+from solver.solving.solution import Solution
 
 __all__ = [
     "Event",

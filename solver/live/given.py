@@ -25,12 +25,12 @@ from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from solver.core.assignment import check_names, parse_combination
 from solver.core.ruleset import RuleSet
 from solver.errors import InputError
 from solver.live.discovery import ROBOT_VALUES, normalise_namespace
 from solver.live.graph import MISSING
 from solver.live.values import selection_text
+from solver.solving.assignment import check_names, parse_combination
 from solver.untrusted import shown
 
 __all__ = [

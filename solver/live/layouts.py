@@ -33,8 +33,6 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from solver.core.assignment import Assignment
-from solver.core.solution import Solution
 from solver.errors import SolverError
 from solver.files.atomic import write_atomic
 from solver.layouts.foxglove import layout_filename
@@ -45,6 +43,8 @@ from solver.limits import limit
 from solver.live.discovery import normalise_namespace
 from solver.live.events import Event, RobotAdded, RobotChanged, RobotRemoved, SelectionChanged
 from solver.live.robot import LiveRobot
+from solver.solving.assignment import Assignment
+from solver.solving.solution import Solution
 from solver.untrusted import shown
 
 __all__ = ["LiveLayouts"]

@@ -21,8 +21,6 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from solver.core.assignment import Assignment
-from solver.core.solution import Solution
 from solver.errors import InputError, did_you_mean
 from solver.identify.identification import IdentificationCache
 from solver.identify.profile import Profile
@@ -31,6 +29,8 @@ from solver.live.given import ACTIVE_PREFIX, robot_values, unknown_name
 from solver.live.graph import MISSING, GraphSource
 from solver.live.robot import identify_robot
 from solver.live.selection import NAMESPACE, choose, read_request
+from solver.solving.assignment import Assignment
+from solver.solving.solution import Solution
 
 __all__ = ["LiveAssignment", "assign_from_graph", "assign_from_master"]
 

@@ -17,9 +17,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
-from solver.core.assignment import Assignment
-from solver.core.contracts import assignment_data
-from solver.core.solution import Solution
+from solver.files.output import dumps
 from solver.live.events import (
     Event,
     GraphWarning,
@@ -36,7 +34,9 @@ from solver.live.events import (
 )
 from solver.live.query import LiveAssignment
 from solver.live.robot import LiveRobot
-from solver.reporting.render import dumps, render_assignment
+from solver.reporting.render import render_assignment
+from solver.solving.assignment import Assignment, assignment_data
+from solver.solving.solution import Solution
 from solver.untrusted import shown
 
 __all__ = ["json_line", "render_event", "render_live_assignment", "text_lines"]

@@ -33,12 +33,12 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any, Final
 
-from solver.core.solution import Solution
 from solver.identify.profile import Profile
 from solver.live.events import Event, Rival, RivalGone
 from solver.live.given import FixedValues
 from solver.live.graph import ANNOUNCEMENTS
 from solver.live.values import selection_text
+from solver.solving.solution import Solution
 
 __all__ = [
     "ASK_AGAIN",

@@ -27,7 +27,6 @@ import dataclasses
 from dataclasses import dataclass
 from typing import Any
 
-from solver.core.solution import Solution
 from solver.errors import SolverError
 from solver.identify.combinations import Combination, combinations, missing
 from solver.identify.identification import Identification, IdentificationCache, TopicSource
@@ -37,6 +36,7 @@ from solver.live.discovery import RobotSource
 from solver.live.given import GivenValue, how_to_give
 from solver.live.graph import MISSING
 from solver.ros.names import Topic
+from solver.solving.solution import Solution
 
 __all__ = ["LiveRobot", "identify_robot", "robot_data", "unexpected_error"]
 

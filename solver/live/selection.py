@@ -30,14 +30,13 @@ from collections.abc import Collection, Iterable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from solver.core.assignment import Assignment, assign, check_names
-from solver.core.contracts import assignment_data
-from solver.core.solution import Solution
 from solver.live.discovery import normalise_namespace
 from solver.live.given import ACTIVE_PREFIX
 from solver.live.graph import MISSING
 from solver.live.robot import LiveRobot
 from solver.live.values import selection_text
+from solver.solving.assignment import Assignment, assign, assignment_data, check_names
+from solver.solving.solution import Solution
 from solver.untrusted import shown
 
 __all__ = [

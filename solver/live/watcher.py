@@ -79,7 +79,6 @@ from dataclasses import dataclass
 from types import TracebackType
 from typing import Any
 
-from solver.core.solution import Solution
 from solver.identify.identification import IdentificationCache
 from solver.identify.profile import Profile
 from solver.live.discovery import RobotSource, discover
@@ -118,6 +117,7 @@ from solver.live.selection import (
 )
 from solver.live.values import MAX_SELECTION_CHARS, kind_of, shown_value
 from solver.ros.names import Topic
+from solver.solving.solution import Solution
 from solver.untrusted import shown
 
 __all__ = ["MAX_WARNINGS", "Watcher"]

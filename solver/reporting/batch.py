@@ -35,7 +35,7 @@ look alike. Reading and hashing two small files costs far less than solving. A t
 leaves no outputs and no stamp (stale ones are removed), so it is tried again next time.
 
 Not here: progress display and exit status (``solver/cli/batch.py``), the per-team JSON shape
-(:func:`solver.core.contracts.solution_data`), reports (:mod:`solver.reporting.report`).
+(:func:`solver.solving.solution.solution_data`), reports (:mod:`solver.reporting.report`).
 """
 
 from __future__ import annotations
@@ -54,20 +54,20 @@ from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Literal, cast
 
-from solver.core.contracts import solution_data
 from solver.core.rules import default_rules_path, shipped_name
-from solver.core.solution import solve
 from solver.core.team import parse_team, resolve_team_path
 from solver.errors import Fault, InputError, Location, SolverError, Terminated
 from solver.files.atomic import link_inside, remove_output, remove_temporaries, write_atomic
 from solver.files.filekind import describe, file_kind, why
 from solver.files.inputfile import read_text, sha256_bounded
+from solver.files.output import csv_row, dumps
 from solver.files.yamlio import MAX_FILE_BYTES, load_hashed
 from solver.limits import limit
 from solver.reporting import markdown
 from solver.reporting.plot import check_chart_size, require_matplotlib
-from solver.reporting.render import csv_row, dumps, solution_chunks
+from solver.reporting.render import solution_chunks
 from solver.reporting.report import image_names, write_report
+from solver.solving.solution import solution_data, solve
 from solver.untrusted import SHOWN_FILE_NAME_CHARS
 from solver.untrusted import shown as shown_text
 
@@ -715,7 +715,7 @@ def _cells(row: SummaryRow) -> list[str]:
 
 def summary_csv(rows: Sequence[SummaryRow]) -> str:
     """The summary as CSV: a header line, then one row per team (cells that a spreadsheet
-    would read as a formula are neutralised: :func:`solver.reporting.render.csv_cell`)."""
+    would read as a formula are neutralised: :func:`solver.files.output.csv_cell`)."""
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
     writer.writerow(_FIELDS)

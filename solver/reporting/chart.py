@@ -25,7 +25,7 @@ Every text that comes from the user's files is held as a chart shows it: unprint
 escaped (:func:`~solver.untrusted.shown`), never cut; the drawings draw it as written.
 
 Not here: drawing (:mod:`solver.reporting.plot`, :mod:`solver.reporting.svg`), solving
-(:mod:`solver.core.solution`).
+(:mod:`solver.solving.solution`).
 """
 
 from __future__ import annotations
@@ -45,8 +45,8 @@ from solver.untrusted import shown
 
 if TYPE_CHECKING:
     from solver.core.partition import Key
-    from solver.core.solution import Solution
     from solver.core.team import Team, TypeSelection
+    from solver.solving.solution import Solution
 
 __all__ = [
     "BarsChart",
@@ -778,7 +778,7 @@ def _component_use(solution: Solution) -> list[Use]:
             if summary.method == "structure":
                 use = structure.component_use(rules, selection)
             if use is None:
-                part = engines.lookup(summary.method).partition(rules, selection, structure.Memo())
+                part = engines.lookup(summary.method).partition(rules, selection, engines.Memo())
                 keys[summary.kinematic_type] = [(c.key, c.robots) for c in part.classes]
         if use is None:
             use = {}

@@ -1,6 +1,6 @@
 """The symbolic counts of ``count --symbolic`` as text, JSON or Markdown.
 
-The formulas themselves are made in :mod:`solver.core.symbolic`; this module only shows them,
+The formulas themselves are made in :mod:`solver.solving.symbolic`; this module only shows them,
 checked against the exact counts of the same team.
 """
 
@@ -11,10 +11,10 @@ from typing import Any
 
 import sympy
 
-from solver.core.solution import Solution
-from solver.core.symbolic import Growth, agrees_with
+from solver.files.output import dumps, text_table
 from solver.reporting import markdown
-from solver.reporting.render import dumps, text_table
+from solver.solving.solution import Solution
+from solver.solving.symbolic import Growth, agrees_with
 
 __all__ = ["render_growth"]
 

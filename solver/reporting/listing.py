@@ -4,7 +4,7 @@ The article's toolbox keeps "a list containing all valid robot combinations"; an
 station looks a robot up in it. This writes that list as CSV or JSON lines while enumerating,
 so memory stays constant however many robots there are.
 
-Not here: choosing configurations (:mod:`solver.core.solution`) or enumerating
+Not here: choosing configurations (:mod:`solver.solving.solution`) or enumerating
 (:mod:`solver.engines`).
 """
 
@@ -22,14 +22,14 @@ import numpy as np
 from solver import engines
 from solver.core.constraints import Value
 from solver.core.ruleset import RuleSet
-from solver.core.solution import Solution
 from solver.core.team import TypeSelection
 from solver.engines import ENUMERATING, MAX_ROBOTS
 from solver.engines.fast import BlockLayout, robot_blocks
 from solver.engines.numbering import Numbers
 from solver.errors import Fault, Location, TooLargeError
+from solver.files.output import csv_cell, csv_row, json_printable
 from solver.limits import limit
-from solver.reporting.render import csv_cell, csv_row, json_printable
+from solver.solving.solution import Solution
 
 if TYPE_CHECKING:
     from numpy.typing import NDArray

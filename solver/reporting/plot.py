@@ -20,7 +20,7 @@ atomically and byte-identical from run to run (fixed SVG hash salt, no dates in 
 matplotlib is imported inside the functions that draw, so importing this module is cheap.
 
 Not here: what the charts show (:mod:`solver.reporting.chart`), the pages that embed them
-(:mod:`solver.reporting.report`), solving (:mod:`solver.core.solution`).
+(:mod:`solver.reporting.report`), solving (:mod:`solver.solving.solution`).
 """
 
 from __future__ import annotations
@@ -53,7 +53,7 @@ if TYPE_CHECKING:
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
-    from solver.core.solution import Solution
+    from solver.solving.solution import Solution
 
 __all__ = [
     "PLOT_FORMATS",

@@ -1,7 +1,7 @@
 """Rendering solutions, assignments and reproduction tables as text, JSON, CSV and Markdown.
 
 The JSON shapes are the project's documented, stable contract and live with their types
-(:mod:`solver.core.contracts`); the formats here are views of the same data. Output is
+(:mod:`solver.solving.contracts`); the formats here are views of the same data. Output is
 deterministic: values in declared order, no timestamps, identical runs give identical bytes.
 
 Not here: the HTML/plot reports of ``teleop-ui report``.
@@ -9,48 +9,32 @@ Not here: the HTML/plot reports of ``teleop-ui report``.
 
 from __future__ import annotations
 
-import csv
-import io
-import json
-import math
-import re
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Iterator, Sequence
 from json.encoder import encode_basestring as _quoted
 from typing import TYPE_CHECKING, Any
 
-from solver.core.contracts import (
-    assignment_data,
-    component_data,
-    configuration_data,
-    counts_data,
-    integer_runs,
-    solution_data,
-    solution_warnings,
-)
 from solver.engines import describe
+from solver.files.output import csv_text, dumps, json_printable, nested_json, text_table
 from solver.reporting import markdown
-from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown, visible
+from solver.solving.contracts import component_data, configuration_data, integer_runs
+from solver.solving.solution import counts_data, solution_data, solution_warnings
+from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
 if TYPE_CHECKING:
-    from solver.core.assignment import Assignment
     from solver.core.partition import Configuration
-    from solver.core.reproduce import Comparison
     from solver.core.ruleset import Characteristic, Component, RuleSet
-    from solver.core.solution import Solution
+    from solver.solving.assignment import Assignment
+    from solver.solving.reproduce import Comparison
+    from solver.solving.solution import Solution
 
 __all__ = [
     "FORMATS",
-    "csv_cell",
-    "csv_row",
-    "dumps",
-    "json_printable",
     "method_text",
     "render_assignment",
     "render_comparisons",
     "render_counts",
     "render_solution",
     "solution_chunks",
-    "text_table",
 ]
 
 FORMATS = ("text", "json", "csv", "markdown")
@@ -64,178 +48,8 @@ def method_text(solution: Solution) -> str:
     return "; ".join(f"{t.kinematic_type}: {describe(t.method)}" for t in solution.by_type)
 
 
-def dumps(data: Any, *, indent: int | None = 2) -> str:
-    """JSON as the project writes it everywhere: indented (``None``: one line), UTF-8 kept,
-    trailing newline.
-
-    Printable characters are kept as they are; every other one (a control, a line separator
-    U+2028, a right-to-left override, a lone surrogate) is written as a JSON escape
-    (``\\u202e``), so the text holds no invisible character, a terminal shows it as it is, and
-    any JSON reader reads the same strings back.
-
-    Indented by two, data of dicts with text keys, lists, text, whole and finite numbers,
-    booleans and None (what the project writes) takes a small writer: the same text in a
-    third of the time, as Python's encoder writes indented JSON a generator per value (its C
-    encoder only writes one-line JSON). Anything else goes to ``json.dumps``.
-    """
-    if indent == 2:
-        parts: list[str] = []
-        try:
-            _write_indented(data, "\n", parts)
-        except (_Unusual, RecursionError):  # json.dumps says what is wrong, if anything
-            pass
-        else:
-            return json_printable("".join(parts)) + "\n"
-    return json_printable(json.dumps(data, indent=indent, ensure_ascii=False)) + "\n"
-
-
-class _Unusual(Exception):
-    """A value :func:`_write_indented` leaves to Python's encoder."""
-
-
-def _float(value: float) -> str:
-    if not math.isfinite(value):  # NaN and the infinities: as json.dumps writes them
-        raise _Unusual
-    return float.__repr__(value)
-
-
-# The text of a value that holds no other, by its exact type (a subclass is unusual).
-_SCALAR: dict[type, Callable[[Any], str]] = {
-    str: _quoted,
-    int: int.__repr__,
-    float: _float,
-    bool: lambda value: "true" if value else "false",
-    type(None): lambda _: "null",
-}
-
-
-def _write_indented(value: Any, newline: str, parts: list[str]) -> None:
-    kind = type(value)
-    scalar = _SCALAR.get(kind)
-    if scalar is not None:
-        parts.append(scalar(value))
-    elif kind is list:
-        if not value:
-            parts.append("[]")
-            return
-        inner = newline + "  "
-        kinds = {type(item) for item in value}
-        if kinds in ({str}, {int}):  # a configuration's served values: one join
-            texts = map(_quoted if kinds == {str} else int.__repr__, value)
-            parts.append("[" + inner + ("," + inner).join(texts) + newline + "]")
-            return
-        parts.append("[")
-        for index, item in enumerate(value):
-            parts.append(inner if index == 0 else "," + inner)
-            _write_indented(item, inner, parts)
-        parts.append(newline + "]")
-    elif kind is dict:
-        if not value:
-            parts.append("{}")
-            return
-        inner = newline + "  "
-        parts.append("{")
-        for index, (key, item) in enumerate(value.items()):
-            if type(key) is not str:
-                raise _Unusual
-            parts.append((inner if index == 0 else "," + inner) + _quoted(key) + ": ")
-            _write_indented(item, inner, parts)
-        parts.append(newline + "}")
-    else:  # anything else: as json.dumps writes it
-        raise _Unusual
-
-
-def json_printable(text: str) -> str:
-    """JSON ``text`` (from ``json.dumps(..., ensure_ascii=False)``) with every unprintable or
-    invisible character (:func:`solver.untrusted.visible`) but its own line breaks written as
-    a ``\\uXXXX`` escape."""
-    if visible(text.replace("\n", "")):  # nearly always: one pass in C
-        return text
-    return "\n".join(
-        line if visible(line) else "".join(map(_json_char, line)) for line in text.split("\n")
-    )
-
-
-def _json_char(char: str) -> str:
-    if visible(char):
-        return char
-    code = ord(char)
-    if code < 0x10000:
-        return f"\\u{code:04x}"
-    code -= 0x10000  # a UTF-16 surrogate pair, as JSON writes characters beyond the BMP
-    return f"\\u{0xD800 + (code >> 10):04x}\\u{0xDC00 + (code & 0x3FF):04x}"
-
-
-def text_table(
-    headers: Sequence[str], rows: Sequence[Sequence[Any]], right: Sequence[bool] | None = None
-) -> str:
-    """A plain aligned table; ``right[i]`` right-aligns column i (numbers). Every cell is one
-    line, whatever the names in it hold (:func:`~solver.untrusted.shown`)."""
-    cells = [
-        [shown(h, limit=None) for h in headers],
-        *[["" if v is None else shown(str(v), limit=None) for v in row] for row in rows],
-    ]
-    widths = [max(len(row[i]) for row in cells) for i in range(len(headers))]
-    align = right or [False] * len(headers)
-    lines = []
-    for row in cells:
-        parts = [
-            cell.rjust(w) if a else cell.ljust(w)
-            for cell, w, a in zip(row, widths, align, strict=True)
-        ]
-        lines.append("  ".join(parts).rstrip())
-    return "\n".join(lines) + "\n"
-
-
-# A spreadsheet reads a cell starting with one of these as a formula (OWASP "CSV injection"):
-# `=HYPERLINK(...)` in a team's name would run when someone opens the summary. Their fullwidth
-# and other compatibility forms (U+FF1D fullwidth, U+FE66 small, U+207C superscript =) count: a
-# spreadsheet (and an input method) may turn them into the ASCII sign; NFKC maps each to it.
-_FORMULA_SIGNS = frozenset("=+-@")
-# ... and so does a cell that starts with a line break or tab, or with spaces (which a
-# spreadsheet may trim on import) before one of the signs.
-_LINE_STARTS = ("\t", "\r", "\n")
-_NUMBER = re.compile(r"[+-]?[0-9]+(\.[0-9]+)?([eE][+-]?[0-9]+)?")
-
-
-def csv_cell(value: Any) -> Any:
-    """``value`` as a CSV cell no spreadsheet runs: text that starts like a formula (see
-    above) gets a leading ``'`` (OWASP's advice); numbers, and text that is just a number,
-    are left alone. Every CSV the tool writes has its cells through here."""
-    if not isinstance(value, str) or not value:
-        return value
-    first = value[0]
-    if first.isascii() and first not in _FORMULA_SIGNS and first not in " \t\r\n":
-        return value  # nearly every cell: one look at its first character
-    if value.startswith(_LINE_STARTS) or (
-        _starts_with_a_sign(value) and _NUMBER.fullmatch(value) is None
-    ):
-        return "'" + value
-    return value
-
-
-def _starts_with_a_sign(text: str) -> bool:
-    """Whether ``text``, past any leading spaces, starts with a formula sign in any form."""
-    import unicodedata
-
-    stripped = text.lstrip()
-    return bool(stripped) and unicodedata.normalize("NFKC", stripped[0])[:1] in _FORMULA_SIGNS
-
-
-def csv_row(values: Sequence[Any]) -> list[Any]:
-    """:func:`csv_cell` of every value of a row."""
-    return [csv_cell(value) for value in values]
-
-
 def _csv(headers: Sequence[str], rows: Sequence[Sequence[Any]]) -> str:
-    return _csv_rows([headers, *rows])
-
-
-def _csv_rows(rows: Sequence[Sequence[Any]]) -> str:
-    buffer = io.StringIO()
-    writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerows(csv_row(row) for row in rows)
-    return buffer.getvalue()
+    return csv_text([headers, *rows])
 
 
 def _summary_rows(solution: Solution) -> list[list[Any]]:
@@ -351,7 +165,7 @@ def solution_chunks(
         yield _csv(["number", *solution.rules.names, "valid_robots"], [])
         for start in range(0, len(solution.configurations), _CHUNK):
             _, rows = _configuration_rows(solution, solution.configurations[start : start + _CHUNK])
-            yield _csv_rows(rows)
+            yield csv_text(rows)
         return
     if fmt != "json":
         raise ValueError(f"fmt must be json or csv (got {fmt!r})")
@@ -433,12 +247,7 @@ def _configurations_text(
 def _nested(data: Any, levels: int = 0) -> str:
     """``dumps(data)`` without its newline, its lines moved to where a listed configuration
     starts and ``levels`` levels further in."""
-    parts: list[str] = []
-    try:
-        _write_indented(data, _AT_CONFIGURATION + "  " * levels, parts)
-    except (_Unusual, RecursionError):
-        return dumps(data)[:-1].replace("\n", _AT_CONFIGURATION + "  " * levels)
-    return json_printable("".join(parts))
+    return nested_json(data, _AT_CONFIGURATION + "  " * levels)
 
 
 def render_counts(solution: Solution, fmt: str = "text") -> str:
@@ -478,7 +287,7 @@ def _footer(solution: Solution) -> list[str]:
         f"(every component: {sum(rules.bound_factors)})",
     ]
     lines += solution_warnings(solution)
-    from solver.core.reproduce import published_note  # a shipped team's figures from the paper
+    from solver.solving.reproduce import published_note  # a shipped team's figures from the paper
 
     note = published_note(solution)
     if note is not None:
@@ -490,6 +299,8 @@ def _footer(solution: Solution) -> list[str]:
 def render_assignment(solution: Solution, assignment: Assignment, fmt: str = "text") -> str:
     """An assignment as text or JSON."""
     if fmt == "json":
+        from solver.solving.assignment import assignment_data  # solve does not load assign
+
         return dumps(assignment_data(solution, assignment))
     # The values were given on a command line or read from a robot: each is shown cut short.
     given = (

@@ -28,11 +28,8 @@ from pathlib import Path
 from typing import Any, Literal
 
 from solver.core.constraints import Value
-from solver.core.contracts import configuration_data, solution_warnings
 from solver.core.partition import Configuration
-from solver.core.reproduce import published_note
 from solver.core.ruleset import Characteristic
-from solver.core.solution import Solution, TypeSummary
 from solver.errors import InputError
 from solver.files.atomic import write_all_atomic, write_atomic
 from solver.reporting import markdown
@@ -44,6 +41,9 @@ from solver.reporting.plot import (
     matrix_figure,
     radar_figure,
 )
+from solver.solving.contracts import configuration_data
+from solver.solving.reproduce import published_note
+from solver.solving.solution import Solution, TypeSummary, solution_warnings
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
 __all__ = [

@@ -38,7 +38,7 @@ from solver.reporting.chart import (
 )
 
 if TYPE_CHECKING:
-    from solver.core.solution import Solution
+    from solver.solving.solution import Solution
 
 __all__ = ["CHART_KINDS", "ChartKind", "bars_svg", "chart_svg", "matrix_svg", "radar_svg"]
 

@@ -24,8 +24,8 @@ from solver.errors import SolverError
 from solver.live.events import event_data
 
 if TYPE_CHECKING:
-    from solver.core.solution import Solution
     from solver.live.watcher import Watcher
+    from solver.solving.solution import Solution
 
 __all__ = ["MAX_KEPT_EVENTS", "LiveFeed", "LiveState"]
 

@@ -26,9 +26,9 @@ from starlette.responses import HTMLResponse, RedirectResponse, Response
 from starlette.routing import BaseRoute, Route
 
 from solver.core.forbidden import Removed
-from solver.core.reproduce import published_note
 from solver.core.ruleset import Characteristic, RuleSet
 from solver.errors import Fault, InputError, SolverError
+from solver.solving.reproduce import published_note
 from solver.studio.api import read_uploads
 from solver.studio.selection import SELECTION_FILE
 from solver.studio.service import CHART_KINDS, MAX_PAGE, Chosen, Studio, robot_pairs

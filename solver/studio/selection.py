@@ -30,8 +30,8 @@ import yaml
 
 from solver.core.ruleset import RuleSet
 from solver.core.team import Team, parse_team
-from solver.core.teamfile import selection_form
 from solver.files.yamlio import parse_document
+from solver.solving.teamfile import selection_form
 
 __all__ = ["SELECTION_FILE", "Selection", "parse_query", "query_of", "team_of"]
 

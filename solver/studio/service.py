@@ -19,19 +19,14 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from solver.core.assignment import assign
-from solver.core.contracts import (
-    assignment_data,
-    configuration_data,
-    counts_data,
-    solution_data,
-)
 from solver.core.ruleset import RuleSet
-from solver.core.solution import Solution
 from solver.core.team import Team
-from solver.core.teamfile import team_yaml
 from solver.errors import InputError, SolverError
 from solver.reporting.svg import CHART_KINDS, chart_svg
+from solver.solving.assignment import assign, assignment_data
+from solver.solving.contracts import configuration_data
+from solver.solving.solution import Solution, counts_data, solution_data
+from solver.solving.teamfile import team_yaml
 from solver.studio.selection import SELECTION_FILE, Selection, parse_query, query_of
 from solver.studio.workspace import (
     MAX_UPLOAD_FILES,

@@ -36,14 +36,14 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, Literal, TypeVar
 
 from solver.core.forbidden import Removed, excluded_by_rules
-from solver.core.reproduce import published_for
 from solver.core.rules import load_rules, shipped_name, shipped_path
 from solver.core.ruleset import RuleSet
-from solver.core.solution import Solution, solve
 from solver.core.team import Team, load_team
 from solver.errors import InputError
 from solver.files.filekind import file_kind
 from solver.files.yamlio import MAX_FILE_BYTES, load_document
+from solver.solving.reproduce import published_for
+from solver.solving.solution import Solution, solve
 from solver.studio.selection import SELECTION_FILE, Selection, team_of
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
@@ -348,7 +348,7 @@ class Workspace:
 
     def team(self, selection: Selection, source: RuleSource) -> Team:
         """The team ``selection`` stands for, with the published figures of a shipped team
-        that selects the same (:func:`solver.core.reproduce.published_for`)."""
+        that selects the same (:func:`solver.solving.reproduce.published_for`)."""
         # Kept by the selection itself: writing its team file on every request cost more
         # than counting (a YAML dump in pure Python).
         key = (source.id, selection)

@@ -7,8 +7,7 @@ import io
 import pytest
 
 from solver import InputError, load_team, solve
-from solver.engines import DESCRIPTIONS, ENUMERATING, NAMES, choose, lookup
-from solver.engines.structure import Memo
+from solver.engines import DESCRIPTIONS, ENUMERATING, NAMES, Memo, choose, lookup
 from solver.reporting.listing import write_robots
 from tests.conftest import TEAMS
 

@@ -8,8 +8,8 @@ from pathlib import Path
 import pytest
 
 from solver import load_team, solve
-from solver.engines import structure
-from solver.engines.structure import Memo, component_use, count
+from solver.engines import Memo, structure
+from solver.engines.structure import component_use, count
 from solver.errors import StructureTooComplex, TooLargeError
 from tests.conftest import TEAMS
 

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-from solver.core.solution import solve
 from solver.core.team import load_team
 from solver.identify import (
     IdentificationCache,
@@ -14,6 +13,7 @@ from solver.identify import (
     identify_urdf,
     load_profile,
 )
+from solver.solving.solution import solve
 from tests.conftest import TEAMS
 from tests.identify import builders
 

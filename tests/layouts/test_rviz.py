@@ -9,11 +9,11 @@ import yaml
 
 from solver import load_team, solve
 from solver.core.partition import Configuration
-from solver.core.solution import Solution
 from solver.layouts import Robot, load_presentation, rviz_layout
 from solver.layouts.plan import plan_layout
 from solver.layouts.rviz import plan_rviz, rviz_note, rviz_text
 from solver.ros.names import Topic
+from solver.solving.solution import Solution
 
 
 def _configuration(solution: Solution, *names: str) -> Configuration:

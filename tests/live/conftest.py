@@ -22,11 +22,11 @@ from typing import Any
 
 import pytest
 
-from solver.core.solution import Solution, solve
 from solver.core.team import load_team
 from solver.identify.profile import Profile, load_profile
 from solver.live.events import Event, event_data
 from solver.live.watcher import Watcher
+from solver.solving.solution import Solution, solve
 from tests.conftest import TEAMS
 from tests.live.roscore import Roscore, TestNode, roscore_available
 

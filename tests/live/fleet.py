@@ -8,8 +8,8 @@ directly, from the combination the robot should have, not of the code under test
 
 from __future__ import annotations
 
-from solver.core.assignment import assign
-from solver.core.solution import Solution
+from solver.solving.assignment import assign
+from solver.solving.solution import Solution
 from tests.identify import builders
 from tests.live.roscore import TestNode
 

@@ -13,10 +13,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from solver.core.assignment import assign
-from solver.core.solution import Solution, solve
 from solver.core.team import load_team
 from solver.identify.profile import Profile, load_profile
+from solver.solving.assignment import assign
+from solver.solving.solution import Solution, solve
 
 RULES = """\
 name: Own live rules (test)

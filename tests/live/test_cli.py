@@ -14,9 +14,9 @@ from typing import Any
 
 import pytest
 
-from solver.core.solution import Solution
 from solver.live.graph import MISSING
 from solver.live.sources.ros1.master import MasterClient
+from solver.solving.solution import Solution
 from tests.conftest import ROOT, run_cli
 from tests.live.fleet import drone_configuration, put_drone, put_rover, rover_configuration
 from tests.live.roscore import Roscore, TestNode, free_port, roscore_available, wait_until

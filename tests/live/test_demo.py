@@ -11,12 +11,12 @@ from pathlib import Path
 
 import pytest
 
-from solver.core.solution import solve
 from solver.core.team import load_team
 from solver.identify.profile import load_profile
 from solver.live.demo import LOOPBACK_CONFIG, ROBOTS, demo_team
 from solver.live.sources.ros2 import DdsGraph
 from solver.live.watcher import Watcher
+from solver.solving.solution import solve
 from tests.conftest import ROOT
 from tests.live.conftest import EVENT_TIMEOUT, Recorder
 from tests.live.ros2_graph import CONFIG, EmulatedRobot, next_domain, write_config

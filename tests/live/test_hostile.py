@@ -34,7 +34,6 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from solver.core.solution import Solution
 from solver.identify.identification import Identification, IdentificationCache
 from solver.identify.profile import Profile
 from solver.identify.readers.safexml import MAX_XML_BYTES
@@ -43,6 +42,7 @@ from solver.live.sources.ros1.master import MasterClient
 from solver.live.sources.ros1.rpc import MAX_REPLY_BYTES
 from solver.live.values import MAX_SELECTION_CHARS
 from solver.live.watcher import Watcher
+from solver.solving.solution import Solution
 from tests.conftest import ROOT, run_cli
 from tests.identify import builders
 from tests.live.conftest import Recorder

@@ -13,7 +13,6 @@ from typing import Any
 import pytest
 
 from solver import limits
-from solver.core.solution import Solution
 from solver.identify.identification import IdentificationCache
 from solver.identify.profile import Profile
 from solver.layouts.checks import check_lichtblick
@@ -23,6 +22,7 @@ from solver.live.layouts import LiveLayouts
 from solver.live.robot import identify_robot
 from solver.live.selection import Request, select
 from solver.ros.names import Topic
+from solver.solving.solution import Solution
 from tests.conftest import run_cli
 from tests.live.fleet import (
     drone_configuration,

@@ -14,10 +14,10 @@ from typing import Any
 
 import pytest
 
-from solver.core.solution import Solution
 from solver.identify.profile import Profile
 from solver.live.given import parse_fixed
 from solver.live.watcher import Watcher
+from solver.solving.solution import Solution
 from tests.conftest import run_cli
 from tests.live.conftest import Recorder
 from tests.live.fleet import put_drone, put_rover
@@ -198,8 +198,8 @@ def test_names_the_rules_do_not_know_and_values_that_are_not_text_are_located_wa
 def test_an_insisting_watcher_of_another_team_takes_the_answer_and_both_report_the_rival(
     node: TestNode, watch_own: Start, own: tuple[Solution, Profile], tmp_path: Path
 ) -> None:
-    from solver.core.solution import solve
     from solver.core.team import load_team
+    from solver.solving.solution import solve
 
     solution, profile = own
     put_drone(node, "/uav1")

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import json
 
-from solver.core.solution import Solution
+from solver.solving.solution import Solution
 from tests.conftest import run_cli
 from tests.live.fleet import put_rover, rover_configuration
 from tests.live.roscore import Roscore, TestNode

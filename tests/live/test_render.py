@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import json
 
-from solver.core.solution import Solution
 from solver.errors import Fault, Location, SolverError
 from solver.identify.identification import IdentificationCache
 from solver.identify.profile import Profile
@@ -26,6 +25,7 @@ from solver.live.render import render_event, text_lines
 from solver.live.robot import LiveRobot, identify_robot
 from solver.live.selection import Request, select
 from solver.ros.names import Topic
+from solver.solving.solution import Solution
 from tests.live.fleet import drone_configuration, drone_text
 
 URI = "http://127.0.0.1:11311/"

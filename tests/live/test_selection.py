@@ -4,7 +4,6 @@ from __future__ import annotations
 
 from typing import Any
 
-from solver.core.solution import Solution
 from solver.identify.identification import IdentificationCache
 from solver.identify.profile import Profile
 from solver.live.discovery import RobotSource
@@ -18,6 +17,7 @@ from solver.live.selection import (
     ui_configuration_value,
 )
 from solver.ros.names import Topic
+from solver.solving.solution import Solution
 from tests.identify.builders import RobotText
 from tests.live.fleet import drone_text, expected, rover_text
 

@@ -6,13 +6,13 @@ import xmlrpc.client
 from collections.abc import Callable
 from typing import Any
 
-from solver.core.solution import Solution, solve
 from solver.core.team import load_team
 from solver.identify.profile import Profile
 from solver.live.events import event_data
 from solver.live.graph import MISSING
 from solver.live.sources.ros1.master import MasterClient
 from solver.live.watcher import Watcher
+from solver.solving.solution import Solution, solve
 from tests.conftest import TEAMS
 from tests.live.conftest import Recorder
 from tests.live.fleet import (

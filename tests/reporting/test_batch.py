@@ -13,10 +13,10 @@ import pytest
 
 from solver import load_team, solve
 from solver.cli import main
-from solver.core.contracts import solution_data
 from solver.errors import InputError
+from solver.files.output import dumps
 from solver.reporting.batch import STAMPS, find_teams, plan, run_batch, summary_csv, write_summary
-from solver.reporting.render import dumps
+from solver.solving.solution import solution_data
 from tests.conftest import RULES, TEAMS, run_cli
 
 BAD = "team:\n  UAV:\n    motion_control: [Flite]\n"

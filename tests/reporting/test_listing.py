@@ -13,8 +13,8 @@ import pytest
 from solver import Solution, load_team, solve
 from solver.engines import fast
 from solver.errors import TooLargeError
+from solver.files.output import csv_row
 from solver.reporting.listing import numbered_robots, write_robots
-from solver.reporting.render import csv_row
 from tests.conftest import run_cli
 
 

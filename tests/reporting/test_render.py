@@ -9,8 +9,10 @@ from pathlib import Path
 import pytest
 
 from solver import load_team, solve
-from solver.core.contracts import integer_runs, solution_data
-from solver.reporting.render import csv_cell, dumps, json_printable, method_text, solution_chunks
+from solver.files.output import csv_cell, dumps, json_printable
+from solver.reporting.render import method_text, solution_chunks
+from solver.solving.contracts import integer_runs
+from solver.solving.solution import solution_data
 from tests.conftest import TEAMS
 
 

@@ -25,11 +25,11 @@ import yaml
 
 from solver import load_team, solve
 from solver.cli import main
-from solver.core.solution import Solution
 from solver.errors import Fault
 from solver.layouts import Presentation, load_presentation
 from solver.layouts.checks import check_lichtblick, check_rviz
 from solver.layouts.checks.rviz import robot_namespace
+from solver.solving.solution import Solution
 from tests.conftest import ROOT, TEAMS
 
 EXAMPLES = ROOT / "examples"

@@ -13,11 +13,11 @@ from typing import Any
 
 import pytest
 
-from solver.core.solution import Solution
 from solver.identify.profile import Profile
 from solver.identify.readers.safexml import MAX_XML_BYTES
 from solver.live.sources.ros2 import DdsGraph, dds_type, ros_name, ros_type
 from solver.live.watcher import Watcher
+from solver.solving.solution import Solution
 from tests.conftest import run_cli
 from tests.live.conftest import Recorder
 from tests.live.fleet import drone_configuration, drone_text, rover_configuration, rover_text
@@ -481,9 +481,9 @@ def test_a_malformed_cyclonedds_uri_is_a_located_usage_error() -> None:
 def watch_own_ros2(domain: Domain, tmp_path: Path) -> Iterator[Callable[..., Recorder]]:
     """``watch_own_ros2(team_file, *set_pairs, policy=...)``: a watcher of the test's own rules
     (:mod:`tests.live.own_rules`) on the domain, stopped afterwards."""
-    from solver.core.solution import solve
     from solver.core.team import load_team
     from solver.live.given import parse_fixed
+    from solver.solving.solution import solve
     from tests.live.own_rules import write_own
 
     _, profile = write_own(tmp_path)

@@ -14,17 +14,19 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
+from typing import Any
 
 from solver.core.constraints import Value
 from solver.core.model import violated_constraints
 from solver.core.partition import Configuration
 from solver.core.ruleset import Characteristic, RuleSet
-from solver.core.solution import Solution
 from solver.errors import InputError, did_you_mean
 from solver.files.reader import MAX_NAME_CHARS
+from solver.solving.contracts import configuration_data
+from solver.solving.solution import Solution
 from solver.untrusted import shown
 
-__all__ = ["Assignment", "assign", "check_names", "parse_combination"]
+__all__ = ["Assignment", "assign", "assignment_data", "check_names", "parse_combination"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -193,3 +195,21 @@ def _team_reasons(solution: Solution, values: dict[str, Value]) -> list[str]:
                 f"{kinematic_type} in team {shown(team.name, quoted=True)}"
             )
     return reasons
+
+
+def assignment_data(solution: Solution, assignment: Assignment) -> dict[str, Any]:
+    """The JSON contract of ``teleop-ui assign --format json``."""
+    configuration = assignment.configuration
+    return {
+        "team": solution.team.name,
+        "combination": dict(assignment.given),
+        "configuration": assignment.number,
+        "default": assignment.is_default,
+        "default_configuration": solution.default_configuration,
+        "kinematic_type": None if configuration is None else configuration.kinematic_type,
+        "components": None
+        if configuration is None
+        else configuration_data(solution.rules, configuration)["components"],
+        "reasons": list(assignment.reasons),
+        "relevant_components": {name: list(names) for name, names in assignment.relevant},
+    }

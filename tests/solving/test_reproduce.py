@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-from solver.core.reproduce import published_for
 from solver.core.team import parse_team
 from solver.files.yamlio import parse_document
+from solver.solving.reproduce import published_for
 
 CASE_3_BY_HAND = """\
 name: my design

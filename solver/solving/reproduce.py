@@ -16,9 +16,9 @@ from functools import cache
 from pathlib import Path
 
 from solver.core.rules import shipped_name, shipped_path
-from solver.core.solution import Solution, solve
 from solver.core.team import Published, Team, load_team, resolve_team_path
 from solver.errors import InputError
+from solver.solving.solution import Solution, solve
 
 __all__ = ["Comparison", "compare", "published_for", "published_note"]
 

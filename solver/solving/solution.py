@@ -6,9 +6,13 @@ team. The :class:`Solution` answers the article's
 questions (valid robots, UI configurations, reduction, the bound T, the default configuration)
 and looks up the configuration of any valid robot.
 
+The JSON contract of ``solve`` and ``count`` lives here too (:func:`solution_data`, which is
+``Solution.to_dict()``; :func:`counts_data`), made of the parts in
+:mod:`solver.solving.contracts`.
+
 Not here: how robots are counted or enumerated (:mod:`solver.engines`), rendering
-(:mod:`solver.reporting.render`; the JSON shape is :mod:`solver.core.contracts`),
-single-combination assignment (:mod:`solver.core.assignment`).
+(:mod:`solver.reporting.render`), single-combination assignment
+(:mod:`solver.solving.assignment`).
 """
 
 from __future__ import annotations
@@ -22,16 +26,26 @@ from typing import Any, Literal
 from solver import engines
 from solver.collector import collector_paused
 from solver.core.constraints import Value
-from solver.core.contracts import solution_data
 from solver.core.forbidden import Removed, removed_by_constraints
 from solver.core.partition import Configuration, Key, Partition
 from solver.core.ruleset import RuleSet
 from solver.core.team import Team
-from solver.engines import MAX_CONFIGURATIONS, MAX_ROBOTS
-from solver.engines.structure import Memo
+from solver.engines import MAX_CONFIGURATIONS, MAX_ROBOTS, Memo
 from solver.errors import TooLargeError
+from solver.solving.contracts import configuration_data, default_components
 
-__all__ = ["MAX_CONFIGURATIONS", "MAX_ROBOTS", "Solution", "TooLargeError", "TypeSummary", "solve"]
+__all__ = [
+    "MAX_CONFIGURATIONS",
+    "MAX_ROBOTS",
+    "Solution",
+    "TooLargeError",
+    "TypeSummary",
+    "counts_data",
+    "solution_data",
+    "solution_warnings",
+    "solve",
+    "summary_data",
+]
 
 
 @dataclass(frozen=True, slots=True)
@@ -236,3 +250,92 @@ def _numbered(
             itertools.count(first), part.classes, zip(*columns, strict=True), strict=False
         )
     ]
+
+
+# -- the JSON contract of solve and count (docs/formats.md) ------------------------------
+
+
+def _ratio(summary: TypeSummary) -> float | None:
+    ratio = summary.reduction_ratio
+    return None if ratio is None else round(ratio, 4)
+
+
+def summary_data(summary: TypeSummary) -> dict[str, Any]:
+    data = {
+        "kinematic_type": summary.kinematic_type,
+        "valid_robots": summary.valid_robots,
+        "ui_configurations": summary.ui_configurations,
+        "reduction_ratio": _ratio(summary),
+        "unserved_robots": summary.unserved_robots,
+    }
+    if summary.method:
+        data["method"] = summary.method
+    return data
+
+
+def solution_data(solution: Solution, *, configurations: bool = False) -> dict[str, Any]:
+    """The JSON contract of ``teleop-ui solve --format json``."""
+    rules = solution.rules
+    team = solution.team
+    data: dict[str, Any] = {
+        "team": team.name,
+        "team_file": team.file,
+        "rules": rules.name,
+        "rules_file": rules.file,
+        "engine": solution.engine,
+        "bound": solution.bound,
+        "bound_factors": dict(zip(rules.names, rules.bound_factors, strict=True)),
+        "by_type": [summary_data(t) for t in solution.by_type],
+        "totals": {k: v for k, v in summary_data(solution.totals).items() if k != "kinematic_type"},
+        "default_configuration": solution.default_configuration,
+        "default_components": default_components(rules),
+        "listed": solution.listed,
+        "proven_minimal": solution.proven_minimal,
+        "published": None
+        if team.published is None
+        else {
+            "valid_robots": team.published.valid_robots,
+            "ui_configurations": team.published.ui_configurations,
+            "source": team.published.source,
+        },
+        # What text output prints as "warning: ..." lines (solution_warnings), for programs.
+        "warnings": [w.removeprefix("warning: ") for w in solution_warnings(solution)],
+    }
+    if configurations:
+        data["configurations"] = [configuration_data(rules, c) for c in solution.configurations]
+    return data
+
+
+def counts_data(solution: Solution) -> dict[str, Any]:
+    """The JSON contract of ``teleop-ui count --format json``: per-type counts only."""
+    return {
+        "team": solution.team.name,
+        "rules": solution.rules.name,
+        "rules_file": solution.rules.file,
+        "bound": solution.bound,
+        "by_type": [summary_data(t) for t in solution.by_type],
+        "totals": {k: v for k, v in summary_data(solution.totals).items() if k != "kinematic_type"},
+        "default_configuration": solution.default_configuration,
+    }
+
+
+def solution_warnings(solution: Solution) -> list[str]:
+    """What a reader of the counts must know: selected values the constraints exclude, robots
+    left unserved, a minimum not proven. The one place for them: solve, report and batch."""
+    warnings = [
+        f"warning: the rules' constraints exclude what the team selects: "
+        f"{removed.describe()}; such robots get the default configuration"
+        for removed in solution.removed
+    ]
+    if solution.totals.unserved_robots:
+        warnings.append(
+            f"warning: {solution.totals.unserved_robots} valid robots have a value "
+            "in no component and get the default configuration (run teleop-ui "
+            "check)"
+        )
+    if not solution.proven_minimal:
+        warnings.append(
+            "warning: overlapping components; the configuration count is the best "
+            "found, not proven minimal"
+        )
+    return warnings

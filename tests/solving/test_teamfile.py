@@ -8,8 +8,8 @@ import pytest
 
 from solver import load_team, solve
 from solver.core.team import parse_team
-from solver.core.teamfile import team_yaml
 from solver.files.yamlio import parse_document
+from solver.solving.teamfile import team_yaml
 from tests.conftest import TEAMS
 
 

@@ -37,11 +37,11 @@ from typing import Any
 import sympy
 
 from solver.core.ruleset import Characteristic, RuleSet
-from solver.core.solution import Solution
 from solver.core.team import Team, TypeSelection
 from solver.deadline import Deadline
 from solver.engines.structure import count
 from solver.errors import InputError, Location
+from solver.solving.solution import Solution
 
 __all__ = [
     "Growth",

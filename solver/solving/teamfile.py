@@ -24,8 +24,8 @@ from solver.untrusted import visible
 
 if TYPE_CHECKING:
     from solver.core.ruleset import Characteristic
-    from solver.core.solution import Solution
     from solver.core.team import Team
+    from solver.solving.solution import Solution
 
 __all__ = ["selection_form", "team_yaml", "yaml_comment", "yaml_inline"]
 

@@ -12,11 +12,11 @@ import sympy
 from hypothesis import given, settings
 
 from solver import InputError, Team, load_rules, load_team
-from solver.core.symbolic import formulas, symbol_name
 from solver.core.team import full_team
 from solver.engines.structure import count
 from solver.errors import TimeLimitError
 from solver.reporting.growth import render_growth
+from solver.solving.symbolic import formulas, symbol_name
 from tests.conftest import TEAMS, run_cli
 from tests.test_properties import problems
 
