@@ -7,7 +7,8 @@ process started here: ``python -I -S -B`` (no user site, no ``.pth`` files, no b
 with an empty environment apart from what the caller passes, in a session of its own, fed one
 JSON request on stdin. The child lowers its own resource limits; this side
 
-* reads at most ``answer_bytes`` of its answer;
+* reads at most ``answer_bytes`` of its answer, and stops the child as soon as it writes more
+  (left writing into a full pipe, it would wait there until the wall-clock limit);
 * stops it (its whole process group, ``SIGKILL``) after ``wall_seconds`` of wall-clock time, or
   as soon as ``watch`` names a reason (polled every 50 ms: a temporary folder grown too big);
 * stops it as well when the caller is interrupted while waiting (``KeyboardInterrupt``,
@@ -21,6 +22,7 @@ Not here: the limits and fences inside each child (:mod:`solver.identify.xacro.c
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import subprocess
@@ -72,7 +74,9 @@ def run_limited(
     )
     output: list[bytes] = []
     reader = threading.Thread(
-        target=_read_bounded, args=(process.stdout, output, answer_bytes + 1), daemon=True
+        target=_read_bounded,
+        args=(process.stdout, output, answer_bytes + 1, lambda: _signal_group(process)),
+        daemon=True,
     )
     reader.start()
     stopped = None
@@ -130,16 +134,26 @@ def _wait(
             return reason
 
 
-def _read_bounded(stream: IO[bytes] | None, output: list[bytes], limit: int) -> None:
+def _read_bounded(
+    stream: IO[bytes] | None, output: list[bytes], limit: int, over: Callable[[], None]
+) -> None:
+    """Read up to ``limit`` bytes into ``output``; ``over()`` once the limit is reached."""
     if stream is None:
         return
     size = 0
     while size < limit:
         chunk = stream.read(min(1 << 20, limit - size))
         if not chunk:
-            break
+            return
         output.append(chunk)
         size += len(chunk)
+    over()
+
+
+def _signal_group(process: subprocess.Popen[bytes]) -> None:
+    """SIGKILL the child's process group (the waiting side reaps it)."""
+    with contextlib.suppress(OSError):  # ended already
+        os.killpg(process.pid, 9)
 
 
 def _kill(process: subprocess.Popen[bytes]) -> None:
