@@ -23,7 +23,9 @@ Run: ``python -m pytest benchmarks/bench_budgets.py`` (timings), or with
 from __future__ import annotations
 
 import json
+from collections.abc import Callable
 from pathlib import Path
+from typing import ParamSpec, TypeVar
 
 from pytest_benchmark.fixture import BenchmarkFixture
 
@@ -33,12 +35,18 @@ from tests.conftest import run_cli
 
 TYPES, COUNTS, LOSING = 20_000, 100_000, 100
 
+P = ParamSpec("P")
+T = TypeVar("T")
 
-def _once(benchmark: BenchmarkFixture, function: object, *args: object, **kwargs: object) -> object:
-    # pytest-benchmark ships no type hints.
-    return benchmark.pedantic(  # type: ignore[no-untyped-call]
+
+def _once(
+    benchmark: BenchmarkFixture, function: Callable[P, T], *args: P.args, **kwargs: P.kwargs
+) -> T:
+    """``function(*args, **kwargs)`` timed once, and what it returned."""
+    result: T = benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
         function, args=args, kwargs=kwargs, rounds=1, iterations=1
     )
+    return result
 
 
 def test_check_20000_types_over_100000_counts(benchmark: BenchmarkFixture, tmp_path: Path) -> None:
@@ -53,7 +61,7 @@ def test_check_20000_types_over_100000_counts(benchmark: BenchmarkFixture, tmp_p
         ),
         encoding="utf-8",
     )
-    report: Report = _once(benchmark, check_files, [rules])  # type: ignore[assignment]
+    report: Report = _once(benchmark, check_files, [rules])
     found = [f for f in report.findings if f.check == "dead-for-type"]
     assert len(found) == LOSING
     assert found[0].message.startswith("no valid K0 robot has sensor_count 1: excluded by")
@@ -72,7 +80,7 @@ def test_check_20000_types_sharing_one_constraint_over_100000_counts(
         "constraints:\n  - forbid: {sensor_type: lidar, sensor_count: 1}\n",
         encoding="utf-8",
     )
-    report: Report = _once(benchmark, check_files, [rules])  # type: ignore[assignment]
+    report: Report = _once(benchmark, check_files, [rules])
     assert [f.check for f in report.findings] == ["bound"]
 
 
@@ -86,7 +94,7 @@ def test_count_symbolic_of_5000_components(benchmark: BenchmarkFixture, tmp_path
         encoding="utf-8",
     )
     result = _once(benchmark, run_cli, "count", rules, "--symbolic", "-f", "json")
-    data = json.loads(result.stdout)  # type: ignore[attr-defined]
+    data = json.loads(result.stdout)
     assert data["at_team_maxima"]["valid_robots"] == 2 * counts
     assert data["at_team_maxima"]["ui_configurations"] == 2 * counts
     assert data["at_team_maxima"]["equal_to_exact_count"] is True
@@ -97,8 +105,6 @@ def test_a_partial_check_of_an_intricate_rule_set_stops_at_its_budget(
 ) -> None:
     rules = tmp_path / "intricate.yaml"
     rules.write_text(intricate_rules(), encoding="utf-8")
-    report: Report = _once(  # type: ignore[assignment]
-        benchmark, check_files, [rules], time_limit=2.0, partial=True
-    )
+    report: Report = _once(benchmark, check_files, [rules], time_limit=2.0, partial=True)
     assert report.stopped is not None
     assert report.stopped.message.startswith("check stopped after 2 s (limit 'check-seconds'")

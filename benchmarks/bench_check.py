@@ -176,7 +176,7 @@ def _assert_findings(report: Report, scale: int = 1) -> None:
     assert counts["bound"] == 1
     assert counts["core-value"] == 1
     dead_for_type = {
-        (f.location.path, re.search(r" has (\w+) ", f.message).group(1))  # type: ignore[union-attr]
+        (f.location.path, re.search(r" has (\w+) ", f.message).group(1))  # type: ignore[union-attr]  # every one says it
         for f in report.findings
         if f.check == "dead-for-type"
     }
@@ -190,7 +190,7 @@ def test_check_large_rule_set(benchmark: BenchmarkFixture, tmp_path: Path) -> No
     rules = tmp_path / "large.yaml"
     rules.write_text(rule_text(), encoding="utf-8")
     # pytest-benchmark ships no type hints.
-    report = benchmark.pedantic(  # type: ignore[no-untyped-call]
+    report = benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
         check_files, args=([rules],), rounds=3, iterations=1
     )
     _assert_findings(report)
@@ -210,7 +210,7 @@ def test_check_doubled_rule_sets(benchmark: BenchmarkFixture, tmp_path: Path, sc
     rules = tmp_path / f"large-x{scale}.yaml"
     rules.write_text(rule_text(scale), encoding="utf-8")
     # pytest-benchmark ships no type hints.
-    report = benchmark.pedantic(  # type: ignore[no-untyped-call]
+    report = benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
         check_files, args=([rules],), rounds=5, iterations=1
     )
     _assert_findings(report, scale)
@@ -236,7 +236,7 @@ def test_check_non_transitive_of_1000_sliding_arrangements(
     rules = tmp_path / "sliding.yaml"
     rules.write_text(sliding_text(), encoding="utf-8")
     # pytest-benchmark ships no type hints.
-    report = benchmark.pedantic(  # type: ignore[no-untyped-call]
+    report = benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
         check_files, args=([rules],), rounds=3, iterations=1
     )
     counts = Counter(f.check for f in report.findings)

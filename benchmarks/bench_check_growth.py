@@ -138,7 +138,7 @@ def test_check_growth(benchmark: BenchmarkFixture, tmp_path: Path, axis: str, sc
     rules = tmp_path / f"{axis}.yaml"
     rules.write_text(text, encoding="utf-8")
     # pytest-benchmark ships no type hints.
-    report = benchmark.pedantic(  # type: ignore[no-untyped-call]
+    report = benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
         check_files, args=([rules],), rounds=3, iterations=1
     )
     assert _problems(report) == expected

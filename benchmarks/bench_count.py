@@ -11,7 +11,7 @@ import pytest
 import yaml
 from pytest_benchmark.fixture import BenchmarkFixture
 
-from benchmarks.conftest import Scale
+from benchmarks.conftest import Scale, Scaled
 from solver import Team, load_team, solve
 
 SCALES = {
@@ -41,7 +41,7 @@ SCALES = {
 
 
 @pytest.mark.parametrize("size", list(SCALES))
-def test_count_scaled_team(benchmark: BenchmarkFixture, scaled, size: str) -> None:  # type: ignore[no-untyped-def]
+def test_count_scaled_team(benchmark: BenchmarkFixture, scaled: Scaled, size: str) -> None:
     scale = SCALES[size]
     team: Team = scaled(scale)
     solution = benchmark(solve, team, count_only=True)

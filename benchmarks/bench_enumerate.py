@@ -16,7 +16,7 @@ from pathlib import Path
 import yaml
 from pytest_benchmark.fixture import BenchmarkFixture
 
-from benchmarks.conftest import Scale
+from benchmarks.conftest import Scale, Scaled
 from solver import Team, load_team, solve
 from solver.core.model import build_problem
 from solver.engines.csp import partition as partition_csp
@@ -29,7 +29,7 @@ MILLION = Scale(
 )
 
 
-def test_enumerate_1e6_fast(benchmark: BenchmarkFixture, scaled) -> None:  # type: ignore[no-untyped-def]
+def test_enumerate_1e6_fast(benchmark: BenchmarkFixture, scaled: Scaled) -> None:
     team: Team = scaled(MILLION)
     solution = benchmark(solve, team, engine="fast")
     assert solution.totals.valid_robots == MILLION.robots == 999_000
@@ -37,7 +37,7 @@ def test_enumerate_1e6_fast(benchmark: BenchmarkFixture, scaled) -> None:  # typ
     assert {t.method for t in solution.by_type} == {"fast"}
 
 
-def test_enumerate_1e6_csp(benchmark: BenchmarkFixture, scaled) -> None:  # type: ignore[no-untyped-def]
+def test_enumerate_1e6_csp(benchmark: BenchmarkFixture, scaled: Scaled) -> None:
     # The csp engine's own work on the same team: `solve --engine csp` refuses a type of more
     # than 100,000 robots (limit 'csp-robots', docs/security.md), so the engine is called
     # directly. One round: python-constraint takes seconds here, the point of the comparison.
@@ -50,7 +50,7 @@ def test_enumerate_1e6_csp(benchmark: BenchmarkFixture, scaled) -> None:  # type
     assert len(partition.classes) == MILLION.configurations
 
 
-def test_iterate_1e6_python_constraint(benchmark: BenchmarkFixture, scaled) -> None:  # type: ignore[no-untyped-def]
+def test_iterate_1e6_python_constraint(benchmark: BenchmarkFixture, scaled: Scaled) -> None:
     # The bare solution iterator, no partitioning: the reference throughput of the issue.
     team: Team = scaled(MILLION)
     (selection,) = team.selections

@@ -10,7 +10,9 @@ to only assert the counts.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
+from typing import ParamSpec, TypeVar
 
 from pytest_benchmark.fixture import BenchmarkFixture
 
@@ -20,6 +22,9 @@ from solver.errors import TooLargeError
 from solver.identify.readers.topics import read_topic_list
 from solver.limits import limit
 from tests.check.helpers import pigeonhole_rules
+
+P = ParamSpec("P")
+T = TypeVar("T")
 
 
 def _team(folder: Path, types: int, motions: int, counts: int) -> Path:
@@ -38,25 +43,28 @@ def _team(folder: Path, types: int, motions: int, counts: int) -> Path:
     return team
 
 
-def _once(benchmark: BenchmarkFixture, function: object, *args: object, **kwargs: object) -> object:
-    # pytest-benchmark ships no type hints.
-    return benchmark.pedantic(  # type: ignore[no-untyped-call]
+def _once(
+    benchmark: BenchmarkFixture, function: Callable[P, T], *args: P.args, **kwargs: P.kwargs
+) -> T:
+    """``function(*args, **kwargs)`` timed once, and what it returned."""
+    result: T = benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
         function, args=args, kwargs=kwargs, rounds=1, iterations=1
     )
+    return result
 
 
 def test_solve_lists_450000_configurations(benchmark: BenchmarkFixture, tmp_path: Path) -> None:
     team = load_team(_team(tmp_path, 5, 3, 30_000))
     solution = _once(benchmark, solve, team)
-    assert solution.totals.ui_configurations == 450_000  # type: ignore[attr-defined]
-    assert len(solution.configurations) == 450_000  # type: ignore[attr-defined]
+    assert solution.totals.ui_configurations == 450_000
+    assert len(solution.configurations) == 450_000
 
 
 def test_csp_engine_at_its_limit(benchmark: BenchmarkFixture, tmp_path: Path) -> None:
     robots = limit("csp-robots").value
     team = load_team(_team(tmp_path, 1, 4, robots // 4))
     solution = _once(benchmark, solve, team, engine="csp", count_only=True)
-    assert solution.totals.valid_robots == robots  # type: ignore[attr-defined]
+    assert solution.totals.valid_robots == robots
 
 
 def test_fast_engine_at_its_limit(benchmark: BenchmarkFixture, tmp_path: Path) -> None:
@@ -64,7 +72,7 @@ def test_fast_engine_at_its_limit(benchmark: BenchmarkFixture, tmp_path: Path) -
     counts = limit("values").value
     team = load_team(_team(tmp_path, 1, rows // counts, counts))
     solution = _once(benchmark, solve, team, engine="fast", count_only=True)
-    assert solution.totals.valid_robots == rows  # type: ignore[attr-defined]
+    assert solution.totals.valid_robots == rows
 
 
 def test_count_with_20000_components(benchmark: BenchmarkFixture, tmp_path: Path) -> None:
@@ -105,7 +113,7 @@ def test_check_2000_constraints(benchmark: BenchmarkFixture, tmp_path: Path) -> 
         encoding="utf-8",
     )
     report = _once(benchmark, check_files, [rules])
-    found = [f for f in report.findings if f.check == "dead-for-type"]  # type: ignore[attr-defined]
+    found = [f for f in report.findings if f.check == "dead-for-type"]
     assert len(found) == 100
 
 
@@ -131,7 +139,7 @@ def test_read_100000_topic_lines(benchmark: BenchmarkFixture, tmp_path: Path) ->
     most = limit("topics").value
     topics = tmp_path / "topics.txt"
     topics.write_text("".join(f"/t{i} sensor_msgs/LaserScan\n" for i in range(most)))
-    assert len(_once(benchmark, read_topic_list, topics)) == most  # type: ignore[arg-type]
+    assert len(_once(benchmark, read_topic_list, topics)) == most
 
 
 def _wide_rules(folder: Path, forbids: int) -> Path:
@@ -163,7 +171,7 @@ def test_count_all_values_a_rule_set_takes(benchmark: BenchmarkFixture, tmp_path
 def test_check_all_values_and_2000_constraints(benchmark: BenchmarkFixture, tmp_path: Path) -> None:
     rules = _wide_rules(tmp_path, limit("constraints").value)
     report = _once(benchmark, check_files, [rules])
-    dead = [f for f in report.findings if f.check == "dead-value"]  # type: ignore[attr-defined]
+    dead = [f for f in report.findings if f.check == "dead-value"]
     # One finding per characteristic, naming its dead values: 2,000 forbids reach all 249.
     assert len(dead) == 249
     assert len({f.location.line for f in dead}) == 249

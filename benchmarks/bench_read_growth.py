@@ -1,15 +1,15 @@
 """Benchmark: reading grows with the values per characteristic, no faster (issue 29, item 4).
 
-A rule set of V sensor values in V/4 components of four, one constraint forbidding the first
-half of the values for ``K0`` (a list of V/2 values), and a team whose ``K0`` lists all V
-values and whose ``K1`` names all V/4 components and leaves out the first quarter of the values
-(``not:``, V/4 of them): every list a reader walks is as long as the domain. ``count`` (read
-the team and its rule set, count) and ``check`` (read the rule set, check it) at V = 5,120,
-10,240 and 20,480, in CPU time; the claim is the growth per doubling (``tools/bench_table.py``;
-linear: 2).
-Both were 3.4-3.7x per doubling at 10,240 values: a team's value list was checked for
-duplicates against a list, and Python's cycle collector walked every object read so far each
-time the old generation had grown by a quarter.
+A rule set of V sensor values in V/4 components of four, one constraint forbidding the first half of
+the values for ``K0`` (a list of V/2 values), and a team whose ``K0`` lists all V values and whose
+``K1`` names all V/4 components and leaves out the first quarter of the values (``not:``, V/4 of
+them): every list a reader walks is as long as the domain. ``count`` (read the team and its rule
+set, count) and ``check`` (read the rule set, check it) at V = 5,120, 10,240 and 20,480, in CPU
+time; the claim is the growth per doubling (``tools/bench_table.py``; linear: 2).
+
+Both were 3.4-3.7x per doubling at 10,240 values: a team's value list was checked for duplicates
+against a list, and Python's cycle collector walked every object read so far each time the old
+generation had grown by a quarter.
 
 What each must say follows from how the files are built: ``K0`` keeps the V/2 values of the
 second half (V/8 components), ``K1`` the 3V/4 values after the first quarter (3V/16
@@ -88,7 +88,7 @@ def _edited(team_file: Path) -> Callable[[], tuple[tuple[Path], dict[str, object
 def test_count_growth_in_values(benchmark: BenchmarkFixture, tmp_path: Path, values: int) -> None:
     team_file = _write(tmp_path, values)
     # pytest-benchmark ships no type hints.
-    counted = benchmark.pedantic(  # type: ignore[no-untyped-call]
+    counted = benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
         _count, setup=_edited(team_file), rounds=5, iterations=1
     )
     assert counted == (values // 2 + 3 * values // 4, values // 8 + 3 * values // 16)
@@ -97,7 +97,7 @@ def test_count_growth_in_values(benchmark: BenchmarkFixture, tmp_path: Path, val
 @pytest.mark.parametrize("values", SIZES, ids=[str(v) for v in SIZES])
 def test_check_growth_in_values(benchmark: BenchmarkFixture, tmp_path: Path, values: int) -> None:
     _write(tmp_path, values)
-    report = benchmark.pedantic(  # type: ignore[no-untyped-call]
+    report = benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
         check_files, args=([tmp_path / "rules.yaml"],), rounds=5, iterations=1
     )
     dead = {f.location.path for f in report.findings if f.check == "dead-for-type"}

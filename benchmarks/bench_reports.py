@@ -18,7 +18,8 @@ from matplotlib.collections import LineCollection
 from matplotlib.patches import PathPatch
 from pytest_benchmark.fixture import BenchmarkFixture
 
-from solver import find_teams, load_team, plan, run_batch, solve
+from solver import load_team, solve
+from solver.reporting.batch import find_teams, plan, run_batch
 from solver.reporting.chart import MIN_TICK_GAP
 from solver.reporting.plot import figure_bytes, radar_figure
 from tests.conftest import RULES, TEAMS

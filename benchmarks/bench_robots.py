@@ -24,7 +24,7 @@ import pytest
 import yaml
 from pytest_benchmark.fixture import BenchmarkFixture
 
-from benchmarks.conftest import Scale
+from benchmarks.conftest import Scale, Scaled
 from solver import Team, load_team, solve
 from solver.core.model import build_problem
 from solver.reporting.listing import write_robots
@@ -67,7 +67,7 @@ def peer_listing(team: Team) -> tuple[str, int]:
     return buffer.getvalue(), len(numbers)
 
 
-def test_list_robots_as_csv(benchmark: BenchmarkFixture, scaled) -> None:  # type: ignore[no-untyped-def]
+def test_list_robots_as_csv(benchmark: BenchmarkFixture, scaled: Scaled) -> None:
     team: Team = scaled(LISTED)
     text = benchmark(listing, team)
     lines = text.splitlines()
@@ -75,7 +75,9 @@ def test_list_robots_as_csv(benchmark: BenchmarkFixture, scaled) -> None:  # typ
     assert len({line.split(",", 1)[0] for line in lines[1:]}) == LISTED.configurations == 250
 
 
-def test_list_robots_as_csv_python_constraint_peer(benchmark: BenchmarkFixture, scaled) -> None:  # type: ignore[no-untyped-def]
+def test_list_robots_as_csv_python_constraint_peer(
+    benchmark: BenchmarkFixture, scaled: Scaled
+) -> None:
     team: Team = scaled(LISTED)
     # One round: the peer takes seconds, which is the point of the comparison.
     text, configurations = benchmark.pedantic(  # type: ignore[no-untyped-call]  # untyped
@@ -85,7 +87,7 @@ def test_list_robots_as_csv_python_constraint_peer(benchmark: BenchmarkFixture, 
     assert configurations == LISTED.configurations
 
 
-def test_list_robots_as_jsonl(benchmark: BenchmarkFixture, scaled) -> None:  # type: ignore[no-untyped-def]
+def test_list_robots_as_jsonl(benchmark: BenchmarkFixture, scaled: Scaled) -> None:
     team: Team = scaled(LISTED)
 
     def jsonl() -> str:

@@ -38,11 +38,11 @@ from types import ModuleType
 import pytest
 from pytest_benchmark.fixture import BenchmarkFixture
 
-from solver import find_teams, load_team, plan, solve
+from solver import load_team, solve
 from solver.core.rules import parse_rules
 from solver.core.team import parse_team
 from solver.files.yamlio import load_document
-from solver.reporting.batch import run_job
+from solver.reporting.batch import find_teams, plan, run_job
 from tests.conftest import ROOT, RULES, TEAMS
 
 CASE3 = TEAMS / "case3.yaml"
@@ -120,7 +120,7 @@ PROCESSES: dict[str, tuple[list[str], Callable[[str], bool]]] = {
 def test_whole_process_cpu(benchmark: BenchmarkFixture, name: str) -> None:
     command, expected = PROCESSES[name]
     _run(command)  # compile bytecode first
-    output = benchmark.pedantic(  # type: ignore[no-untyped-call]
+    output = benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
         _run, args=(command,), rounds=15, iterations=1, warmup_rounds=1
     )
     assert expected(output)
@@ -144,7 +144,7 @@ def test_batch_worker_solves_50_teams(benchmark: BenchmarkFixture, tmp_path: Pat
     def work() -> list[tuple[str, int | None]]:
         return [(o.action, o.row.valid_robots) for o in map(run_job, jobs)]
 
-    outcomes = benchmark.pedantic(work, rounds=5, iterations=1)  # type: ignore[no-untyped-call]
+    outcomes = benchmark.pedantic(work, rounds=5, iterations=1)  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
     assert outcomes == [("solved", 872)] * COPIES
 
 
@@ -165,4 +165,4 @@ def test_plain_loop_over_the_api_solves_50_teams(
             found.append(data["totals"]["valid_robots"])
         return found
 
-    assert benchmark.pedantic(loop, rounds=5, iterations=1) == [872] * COPIES  # type: ignore[no-untyped-call]
+    assert benchmark.pedantic(loop, rounds=5, iterations=1) == [872] * COPIES  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints

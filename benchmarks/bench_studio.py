@@ -315,7 +315,7 @@ def with_charts(
                 answer(change)
 
         # pytest-benchmark has no type hints
-        benchmark.pedantic(answer_all, rounds=1, iterations=1)  # type: ignore[no-untyped-call]
+        benchmark.pedantic(answer_all, rounds=1, iterations=1)  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
     finally:
         client.close()
 

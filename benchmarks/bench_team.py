@@ -54,7 +54,7 @@ def _write(directory: Path, counts: int) -> Path:
 def test_read_team_of_100_types(benchmark: BenchmarkFixture, tmp_path: Path, counts: int) -> None:
     team_file = _write(tmp_path, counts)
     # pytest-benchmark ships no type hints.
-    team = benchmark.pedantic(  # type: ignore[no-untyped-call]
+    team = benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
         load_team, args=(team_file,), rounds=5, iterations=1
     )
     assert len(team.selections) == TYPES

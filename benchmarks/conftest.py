@@ -8,6 +8,7 @@ exclusion for the one constraint), never by the code under test.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -104,8 +105,12 @@ class Scale:
         return load_team(team_path)
 
 
+# What the `scaled` fixture gives: a function that builds the team of a Scale in a fresh folder.
+Scaled = Callable[[Scale], Team]
+
+
 @pytest.fixture
-def scaled(tmp_path_factory: pytest.TempPathFactory):  # type: ignore[no-untyped-def]
+def scaled(tmp_path_factory: pytest.TempPathFactory) -> Scaled:
     """Build the team of a :class:`Scale` in a fresh folder."""
 
     def build(scale: Scale) -> Team:

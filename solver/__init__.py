@@ -58,17 +58,21 @@ Every command from Python (docs/python-api.md has worked examples):
 ``solve --plot``, ``report``    ``write_plot(solution, path)``, ``write_report(...)``
 ``assign``                      ``assign(solution, kinematic_type="UAV", ...)``
 ``count FILE``                  ``solve(team, count_only=True)``; a rule set's whole
-                                design space: ``solver.core.team.full_team(load_rules(path))``
-``count --symbolic``            ``solver.solving.symbolic.formulas(team)``
-``robots``                      ``solver.reporting.listing.numbered_robots(solution)``
+                                design space: ``full_team(load_rules(path))``
+``count --symbolic``            ``formulas(team)``
+``robots``                      ``numbered_robots(solution)``
 ``reproduce``                   ``compare()``
 ``check FILES``                 ``check_files(paths)``; ``time_limit=``, ``partial=True``
 ``identify``, ``fleet``         ``identify_urdf(text, ...)``, ``identify_fleet(...)``
-``watch``, ``assign --master``  ``Watcher``, ``assign_from_master(...)``
-``demo ros2``                   ``solver.live.demo.emulated_fleet(domain)``
-``batch``                       ``find_teams``, ``plan``, ``run_batch``, ``write_summary``
-``layouts``                     ``solver.layouts.writer.write_layouts(solution, profile, dir)``
-``export --format uvl``         ``solver.reporting.uvl.team_to_uvl(team)``
+``watch``, ``assign --master``  ``Watcher``, ``assign_from_master(...)``; on any graph,
+                                ROS 2 too: ``open_watcher(address, solution, profile)``,
+                                ``assign_from_graph(open_source(address), ...)``, the
+                                address from ``graph_address(ros2=True, domain=7)``
+``demo ros2``                   ``emulated_fleet(domain)``; its graph: ``DdsGraph(domain)``
+``batch``                       ``solver.reporting.batch`` (``run_batch``: the steps)
+``layouts``                     ``write_layouts(solution, load_presentation(), dir)``
+``layouts --robot``             ``identified_layout(urdf, solution, ...)``
+``export --format uvl``         ``team_to_uvl(team)``
 ==============================  ========================================================
 
 Example::
@@ -98,16 +102,34 @@ if TYPE_CHECKING:
     from solver.core.partition import Configuration
     from solver.core.rules import default_rules_path, load_rules
     from solver.core.ruleset import Characteristic, Component, RuleSet
-    from solver.core.team import Published, Team, TypeSelection, load_team
+    from solver.core.team import Published, Team, TypeSelection, full_team, load_team
     from solver.errors import Fault, InputError, Location, RulesError, SolverError, TeamError
-    from solver.identify import Identification, IdentificationCache, identify_fleet, identify_urdf
+    from solver.identify import (
+        Identification,
+        IdentificationCache,
+        Profile,
+        identify_fleet,
+        identify_urdf,
+        load_profile,
+    )
+    from solver.layouts.identified import IdentifiedLayout, identified_layout
+    from solver.layouts.presentation import load_presentation
+    from solver.layouts.writer import write_layouts
     from solver.live import MasterError, Watcher, assign_from_master
-    from solver.reporting.batch import Outcome, find_teams, plan, run_batch, write_summary
+    from solver.live.demo import emulated_fleet
+    from solver.live.query import assign_from_graph
+    from solver.live.sources import GraphAddress, graph_address, open_source
+    from solver.live.sources.ros1 import MasterGraph
+    from solver.live.sources.ros2 import DdsGraph
+    from solver.live.watcher import open_watcher
+    from solver.reporting.listing import numbered_robots
     from solver.reporting.plot import bars_figure, radar_figure, write_plot
     from solver.reporting.report import render_html, render_markdown, write_report
+    from solver.reporting.uvl import team_to_uvl
     from solver.solving.assignment import Assignment, assign, parse_combination
     from solver.solving.reproduce import Comparison, compare
     from solver.solving.solution import Solution, TypeSummary, solve
+    from solver.solving.symbolic import formulas
 
 _EXPORTS = {
     "Assignment": "solver.solving.assignment",
@@ -116,14 +138,18 @@ _EXPORTS = {
     "Component": "solver.core.ruleset",
     "Condition": "solver.core.constraints",
     "Configuration": "solver.core.partition",
+    "DdsGraph": "solver.live.sources.ros2",
     "Fault": "solver.errors",
     "Finding": "solver.check",
+    "GraphAddress": "solver.live.sources",
     "Identification": "solver.identify",
     "IdentificationCache": "solver.identify",
+    "IdentifiedLayout": "solver.layouts.identified",
     "InputError": "solver.errors",
     "Location": "solver.errors",
     "MasterError": "solver.live",
-    "Outcome": "solver.reporting.batch",
+    "MasterGraph": "solver.live.sources.ros1",
+    "Profile": "solver.identify",
     "Published": "solver.core.team",
     "Robot": "solver.core.model",
     "RuleConstraint": "solver.core.constraints",
@@ -137,28 +163,37 @@ _EXPORTS = {
     "TypeSummary": "solver.solving.solution",
     "Watcher": "solver.live",
     "assign": "solver.solving.assignment",
+    "assign_from_graph": "solver.live.query",
     "assign_from_master": "solver.live",
     "bars_figure": "solver.reporting.plot",
     "build_problem": "solver.core.model",
     "check_files": "solver.check",
     "compare": "solver.solving.reproduce",
     "default_rules_path": "solver.core.rules",
-    "find_teams": "solver.reporting.batch",
+    "emulated_fleet": "solver.live.demo",
+    "formulas": "solver.solving.symbolic",
+    "full_team": "solver.core.team",
+    "graph_address": "solver.live.sources",
+    "identified_layout": "solver.layouts.identified",
     "identify_fleet": "solver.identify",
     "identify_urdf": "solver.identify",
+    "load_presentation": "solver.layouts.presentation",
+    "load_profile": "solver.identify",
     "load_rules": "solver.core.rules",
     "load_team": "solver.core.team",
+    "numbered_robots": "solver.reporting.listing",
+    "open_source": "solver.live.sources",
+    "open_watcher": "solver.live.watcher",
     "parse_combination": "solver.solving.assignment",
-    "plan": "solver.reporting.batch",
     "radar_figure": "solver.reporting.plot",
     "render_html": "solver.reporting.report",
     "render_markdown": "solver.reporting.report",
     "robots": "solver.core.model",
-    "run_batch": "solver.reporting.batch",
     "solve": "solver.solving.solution",
+    "team_to_uvl": "solver.reporting.uvl",
+    "write_layouts": "solver.layouts.writer",
     "write_plot": "solver.reporting.plot",
     "write_report": "solver.reporting.report",
-    "write_summary": "solver.reporting.batch",
 }
 
 __all__ = [
@@ -168,14 +203,18 @@ __all__ = [
     "Component",
     "Condition",
     "Configuration",
+    "DdsGraph",
     "Fault",
     "Finding",
+    "GraphAddress",
     "Identification",
     "IdentificationCache",
+    "IdentifiedLayout",
     "InputError",
     "Location",
     "MasterError",
-    "Outcome",
+    "MasterGraph",
+    "Profile",
     "Published",
     "Robot",
     "RuleConstraint",
@@ -189,28 +228,37 @@ __all__ = [
     "TypeSummary",
     "Watcher",
     "assign",
+    "assign_from_graph",
     "assign_from_master",
     "bars_figure",
     "build_problem",
     "check_files",
     "compare",
     "default_rules_path",
-    "find_teams",
+    "emulated_fleet",
+    "formulas",
+    "full_team",
+    "graph_address",
+    "identified_layout",
     "identify_fleet",
     "identify_urdf",
+    "load_presentation",
+    "load_profile",
     "load_rules",
     "load_team",
+    "numbered_robots",
+    "open_source",
+    "open_watcher",
     "parse_combination",
-    "plan",
     "radar_figure",
     "render_html",
     "render_markdown",
     "robots",
-    "run_batch",
     "solve",
+    "team_to_uvl",
+    "write_layouts",
     "write_plot",
     "write_report",
-    "write_summary",
 ]
 
 

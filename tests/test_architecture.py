@@ -4,18 +4,24 @@ After pip-tools' ``test_circular_imports.py`` (every module imports on its own) 
 check beside it: the import graph read from the source (imports inside functions included,
 and ``if TYPE_CHECKING:`` blocks: a circle of annotations is a circle of concepts) has no
 cycle, and a module of one wing imports only from its own wing or from the wings below it
-(the package docstring of :mod:`solver` states the layers; docs/development.md draws them).
+(the package docstring of :mod:`solver` states the layers; docs/development.md draws them);
+and no command of the command line imports another command (:data:`solver.cli.COMMANDS`).
+The tests mirror the package: every module has its tests/<wing path>/test_<module>.py, or an
+entry in :data:`TESTED_ELSEWHERE` saying where it is tested.
 """
 
 from __future__ import annotations
 
 import ast
+import functools
 import re
 import subprocess
 import sys
+from collections.abc import Callable, Iterable, Mapping
 from pathlib import Path
 
 import solver
+from solver.cli import COMMANDS
 from tests.conftest import ROOT
 
 PACKAGE = ROOT / "solver"
@@ -154,6 +160,33 @@ def test_a_module_importing_a_higher_wing_would_be_found() -> None:
     assert layer(wing("solver.engines.structure")) > layer(wing("solver.core.partition"))
 
 
+def commands_importing_commands(graph: dict[str, set[str]], commands: set[str]) -> list[str]:
+    """``a -> b`` for each command module ``a`` importing another command module ``b``."""
+    return sorted(
+        f"{module} -> {target}"
+        for module in commands
+        for target in graph.get(module, ())
+        if target in commands
+    )
+
+
+def test_no_command_imports_another_command() -> None:
+    # A command imports the library and the shared options (solver/cli/_*.py) only: what two
+    # commands share is the library's, or a shared option's.
+    commands = set(COMMANDS.values())
+    assert commands <= set(module_files())
+    assert commands_importing_commands(import_graph(), commands) == []
+
+
+def test_a_command_importing_a_command_would_be_found() -> None:
+    graph = {
+        "solver.cli.assign": {"solver.cli._common", "solver.cli.watch", "solver.live"},
+        "solver.cli.watch": {"solver.cli._common"},
+    }
+    commands = {"solver.cli.assign", "solver.cli.watch"}
+    assert commands_importing_commands(graph, commands) == ["solver.cli.assign -> solver.cli.watch"]
+
+
 def test_every_module_imports_on_its_own_in_a_fresh_interpreter() -> None:
     # One interpreter, a clean slate of the package's modules before each import, so a module
     # that only works once another has been imported first (a hidden circle) fails here.
@@ -190,3 +223,147 @@ def test_the_development_page_maps_only_modules_that_exist() -> None:
     assert named, "docs/development.md names no module"
     missing = sorted(n for n in named if not (ROOT / n.rstrip("/")).exists())
     assert missing == []
+
+
+# ---- tests mirror the package ----------------------------------------------------------------
+
+# Modules whose tests live somewhere other than their own tests/<wing path>/test_<module>.py,
+# and where. Short on purpose: a new module gets a test module of its own. An entry must name
+# a module that needs tests and has no test module of its own yet, and a file that exists
+# (the entries of the command line leave with one test module per command, issue 37).
+TESTED_ELSEWHERE: dict[str, str] = {
+    # The command line, tested by what each command does.
+    "solver.__main__": "tests/test_cli.py",
+    "solver.cli": "tests/test_cli.py",
+    "solver.cli._common": "tests/cli/test_hostile_values.py",
+    "solver.cli._progress": "tests/test_progress.py",
+    "solver.cli._terminal": "tests/test_forged_output.py",
+    "solver.cli.assign": "tests/test_cli.py",
+    "solver.cli.batch": "tests/reporting/test_batch.py",
+    "solver.cli.check": "tests/check/test_cli.py",
+    "solver.cli.count": "tests/reporting/test_listing.py",
+    "solver.cli.demo": "tests/live/test_demo.py",
+    "solver.cli.export": "tests/reporting/test_uvl.py",
+    "solver.cli.fleet": "tests/identify/test_fleet.py",
+    "solver.cli.identify": "tests/identify/test_cli.py",
+    "solver.cli.layouts": "tests/layouts/test_writer.py",
+    "solver.cli.report": "tests/reporting/test_report.py",
+    "solver.cli.reproduce": "tests/test_cli.py",
+    "solver.cli.robots": "tests/reporting/test_listing.py",
+    "solver.cli.solve": "tests/test_cli.py",
+    "solver.cli.studio": "tests/studio/test_server.py",
+    "solver.cli.watch": "tests/live/test_cli.py",
+    # Packages whose code is their lazy exports or their lookup.
+    "solver": "tests/test_api.py",
+    "solver.engines": "tests/engines/test_lookup.py",
+    "solver.identify": "tests/test_api.py",
+    "solver.identify.xacro": "tests/test_api.py",
+    # Child processes, run by the tests of the readers that start them.
+    "solver.identify.readers.bag_child": "tests/identify/readers/test_bags.py",
+    "solver.identify.xacro.child": "tests/identify/xacro/test_compiler.py",
+    # Types tested where they are used.
+    "solver.engines.shared": "tests/engines/test_structure.py",
+    "solver.ros.joints": "tests/identify/test_joints.py",
+    # The live watcher's pieces, on a real master or DDS graph.
+    "solver.live.events": "tests/live/test_render.py",
+    "solver.live.given": "tests/live/test_own_rules.py",
+    "solver.live.graph": "tests/live/test_watcher.py",
+    "solver.live.query": "tests/live/test_cli.py",
+    "solver.live.rivals": "tests/live/test_watcher.py",
+    "solver.live.robot": "tests/live/test_selection.py",
+    "solver.live.sources.ros1.descriptions": "tests/live/sources/ros1/test_node.py",
+    "solver.live.sources.ros1.source": "tests/live/test_watcher.py",
+    # The studio, through its server and its API.
+    "solver.studio.app": "tests/studio/test_security.py",
+    "solver.studio.findings": "tests/studio/test_api.py",
+    "solver.studio.service": "tests/studio/test_api.py",
+}
+
+
+def mirrored_test(module: str) -> Path:
+    """Where the tests of ``module`` live: ``tests/<wing path>/test_<name>.py``, a private
+    module's ``_`` dropped (``solver.cli._common``: ``tests/cli/test_common.py``) and a package
+    named inside its own folder (``solver.live.sources``: ``tests/live/sources/test_sources.py``).
+    """
+    *folders, name = module.split(".")
+    if name.startswith("_") and not name.startswith("__"):
+        name = name[1:]
+    if module in packages():
+        folders.append(name)
+    return Path("tests", *folders[1:], f"test_{name}.py")
+
+
+@functools.cache
+def packages() -> frozenset[str]:
+    """The package's packages (their ``__init__`` modules), by dotted name."""
+    return frozenset(m for m, path in module_files().items() if path.name == "__init__.py")
+
+
+def modules_to_test() -> list[str]:
+    """Every module of the package; a package only when its ``__init__`` defines a function or
+    a class (one that documents and re-exports is its modules' map, tested through them)."""
+    found = []
+    for name, path in module_files().items():
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        defines = any(
+            isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef))
+            for node in tree.body
+        )
+        if path.name != "__init__.py" or defines:
+            found.append(name)
+    return found
+
+
+def untested(
+    modules: Iterable[str], exists: Callable[[Path], bool], elsewhere: Mapping[str, str]
+) -> list[str]:
+    """The modules with no test module of their own and no entry in ``elsewhere``."""
+    return sorted(m for m in modules if m not in elsewhere and not exists(mirrored_test(m)))
+
+
+def stale(
+    modules: Iterable[str], exists: Callable[[Path], bool], elsewhere: Mapping[str, str]
+) -> list[str]:
+    """The entries of ``elsewhere`` that say no more than the truth no longer: a module gone
+    (or with nothing to test), a module with a test module of its own, a file that is not."""
+    wanted = set(modules)
+    return sorted(
+        f"{module}: {where}"
+        for module, where in elsewhere.items()
+        if module not in wanted or exists(mirrored_test(module)) or not exists(Path(where))
+    )
+
+
+def in_repository(path: Path) -> bool:
+    return (ROOT / path).is_file()
+
+
+def test_every_module_has_its_test_module_or_says_where_it_is_tested() -> None:
+    assert untested(modules_to_test(), in_repository, TESTED_ELSEWHERE) == []
+
+
+def test_the_table_of_tests_elsewhere_names_only_modules_without_their_own() -> None:
+    assert stale(modules_to_test(), in_repository, TESTED_ELSEWHERE) == []
+
+
+def test_a_module_without_a_test_module_would_be_found() -> None:
+    # The mirror check above must be able to fail: a new module of the model with no test
+    # module, and a table entry left behind once a module has a test module of its own.
+    present = {Path("tests/core/test_rules.py"), Path("tests/test_cli.py")}
+    modules = ["solver.core.rules", "solver.core.novel", "solver.cli.solve"]
+    table = {"solver.cli.solve": "tests/test_cli.py", "solver.core.rules": "tests/test_cli.py"}
+    assert untested(modules, present.__contains__, table) == ["solver.core.novel"]
+    assert stale(modules, present.__contains__, table) == ["solver.core.rules: tests/test_cli.py"]
+    assert stale(modules, set().__contains__, {"solver.cli.solve": "tests/gone.py"}) == [
+        "solver.cli.solve: tests/gone.py"
+    ]
+
+
+def test_a_modules_test_module_is_named_after_its_wing_path_and_its_name() -> None:
+    assert mirrored_test("solver.core.rules") == Path("tests/core/test_rules.py")
+    assert mirrored_test("solver.errors") == Path("tests/test_errors.py")
+    assert mirrored_test("solver.cli._common") == Path("tests/cli/test_common.py")
+    assert mirrored_test("solver.live.sources") == Path("tests/live/sources/test_sources.py")
+    assert mirrored_test("solver.identify.readers.urdf") == Path(
+        "tests/identify/readers/test_urdf.py"
+    )

@@ -207,6 +207,26 @@ def test_a_command_imports_its_own_module_and_no_other_command() -> None:
     assert "solver.solving.assignment" not in loaded
 
 
+def test_the_command_table_lists_each_command_module_and_a_helper_module_is_no_command() -> None:
+    from solver.cli import COMMANDS
+
+    modules = sorted(p.stem for p in (ROOT / "solver" / "cli").glob("*.py"))
+    helpers = [name for name in modules if name.startswith("_")]
+    assert sorted(COMMANDS) == [name for name in modules if name not in helpers]
+    assert all(module == f"solver.cli.{name}" for name, module in COMMANDS.items())
+
+
+def test_help_lists_the_commands_of_the_table_in_its_order() -> None:
+    from solver.cli import COMMANDS
+
+    result = run_cli("--help")
+    assert result.returncode == 0
+    lines = result.stdout.splitlines()
+    # Each command starts a line of its own, indented by four spaces, with its help beside it.
+    listed = [line.split()[0] for line in lines if line.startswith("    ") and line[4] != " "]
+    assert listed == list(COMMANDS) == sorted(COMMANDS)
+
+
 def test_identifying_a_urdf_loads_no_configurations_layouts_live_graph_nor_xacro_sandbox() -> None:
     status, loaded, _, _ = _commands_in_a_fresh_interpreter()
     assert status == "0"

@@ -10,13 +10,34 @@ venv="${VENV:-.venv}"
 
 sudo=""
 [ "$(id -u)" -eq 0 ] || sudo="sudo"
+apt_get() {
+  # apt-get that waits, up to 10 minutes, for a package manager busy elsewhere (a fresh Ubuntu
+  # runs its automatic updates at boot) instead of failing at once. `install` waits by itself
+  # (DPkg::Lock::Timeout); `update` takes the package lists' lock, which that option does not
+  # cover, so it is tried again every 5 seconds while another process holds that lock.
+  local log waited=0
+  log="$(mktemp)"
+  until $sudo env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 "$@" \
+      2>"$log"; do
+    cat "$log" >&2
+    if ! grep -q "Could not get lock" "$log" || [ "$waited" -ge 600 ]; then
+      rm -f "$log"
+      return 1
+    fi
+    [ "$waited" -gt 0 ] || echo "tools/test.sh: another package manager is busy; waiting" >&2
+    sleep 5
+    waited=$((waited + 5))
+  done
+  cat "$log" >&2
+  rm -f "$log"
+}
 apt_updated=""
 apt_install() {
   # Says what it installs and why before it does: $1 is the reason, the rest the packages.
   local why="$1"; shift
   echo "tools/test.sh: installing Debian packages $* ($why)" >&2
-  [ -n "$apt_updated" ] || { $sudo apt-get update -q; apt_updated=1; }
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "$@"
+  [ -n "$apt_updated" ] || { apt_get update -q; apt_updated=1; }
+  apt_get install -y -q --no-install-recommends "$@"
 }
 
 # ros-core: a real ROS 1 master (roscore) for the tests of `teleop-ui watch`.

@@ -1,9 +1,9 @@
 """Checking files: read each one, run the checks that apply, collect sorted findings.
 
 Files are told apart by content, as every command tells them
-(:func:`solver.files.filekind.file_kind`):
-team files, rule sets, and identification profiles (not checked, said with ``not-checked``);
-a file of no recognisable kind is read as a rule set. Team files are checked against
+(:func:`solver.files.filekind.file_kind`): team files, rule sets, and identification profiles (not
+checked, said with ``not-checked``); a file of no recognisable kind is read as a rule set. Team
+files are checked against
 
 1. the rule set given with ``rules=`` (``--rules``), which is checked too; else
 2. the one rule set among the files, when there is exactly one (``teleop-ui check

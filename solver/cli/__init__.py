@@ -1,11 +1,13 @@
 """The ``teleop-ui`` command line: a thin layer over the library.
 
-Each command lives in its own module here (found automatically: every module whose name does
-not start with an underscore) and exposes ``register(subparsers)``; the module's
-``run(args)`` parses nothing itself, calls the library, writes the result and returns the exit
-status. :func:`main` is the one place that turns a :class:`~solver.errors.SolverError` into a
-message on stderr and exit status 2. Heavy imports happen inside ``run`` so that start-up
-stays fast.
+Each command lives in its own module here, named in :data:`COMMANDS` (the one list of
+commands: a module that is not named there is no command), and exposes
+``register(subparsers)``; the module's ``run(args)`` parses nothing itself, calls the library
+(its public API, :mod:`solver`, where that has the thing), writes the result and returns the
+exit status. A command imports the library and the shared options (``_common``, ``_progress``,
+``_terminal``), never another command (tests/test_architecture.py). :func:`main` is the
+one place that turns a :class:`~solver.errors.SolverError` into a message on stderr and exit
+status 2. Heavy imports happen inside ``run`` so that start-up stays fast.
 
 :func:`main` is also the one place that handles output streams that fail, for every command:
 standard output closed (``>&-``) or full (``> /dev/full``) ends the command with exit status 2
@@ -22,19 +24,33 @@ import importlib
 import os
 import sys
 from collections.abc import Sequence
-from pathlib import Path
 from typing import Any
 
+from solver import SolverError
 from solver.cli._terminal import EscapingStream, OutputFailed
-from solver.errors import SolverError, Terminated
+from solver.errors import Terminated
 
-__all__ = ["main"]
+__all__ = ["COMMANDS", "build_parser", "main"]
 
-
-def command_modules() -> list[str]:
-    """The command modules, in name order (the order ``teleop-ui --help`` lists them)."""
-    package = Path(__file__).parent
-    return sorted(path.stem for path in package.glob("*.py") if not path.stem.startswith("_"))
+# Every command and its module, in the order ``teleop-ui --help`` lists them. A module is
+# imported only when its command runs (or for the whole --help), so start-up stays short.
+COMMANDS: dict[str, str] = {
+    "assign": "solver.cli.assign",
+    "batch": "solver.cli.batch",
+    "check": "solver.cli.check",
+    "count": "solver.cli.count",
+    "demo": "solver.cli.demo",
+    "export": "solver.cli.export",
+    "fleet": "solver.cli.fleet",
+    "identify": "solver.cli.identify",
+    "layouts": "solver.cli.layouts",
+    "report": "solver.cli.report",
+    "reproduce": "solver.cli.reproduce",
+    "robots": "solver.cli.robots",
+    "solve": "solver.cli.solve",
+    "studio": "solver.cli.studio",
+    "watch": "solver.cli.watch",
+}
 
 
 def build_parser(command: str | None = None) -> argparse.ArgumentParser:
@@ -47,9 +63,8 @@ def build_parser(command: str | None = None) -> argparse.ArgumentParser:
     )
     parser.add_argument("--version", action="version", version=f"%(prog)s {_version()}")
     subparsers = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
-    names = command_modules()
-    for name in [command] if command in names else names:
-        importlib.import_module(f"solver.cli.{name}").register(subparsers)
+    for name in [command] if command in COMMANDS else COMMANDS:
+        importlib.import_module(COMMANDS[name]).register(subparsers)
     return parser
 
 

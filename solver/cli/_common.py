@@ -1,4 +1,9 @@
-"""Options and helpers the commands share: output format, rule and team arguments, writing."""
+"""Options and helpers the commands share: output format, rule and team arguments, a robot's
+description and the values given beside it, writing.
+
+Only what two or more commands take from the command line is here; what a command does with
+it is the library's (a command imports the library and this module, never another command:
+tests/test_architecture.py)."""
 
 from __future__ import annotations
 
@@ -12,20 +17,27 @@ from solver.untrusted import shown
 if TYPE_CHECKING:
     from pathlib import Path
 
-    from solver.core.team import Team
+    from solver import Profile, RuleSet, Solution, Team
 
 __all__ = [
+    "add_description_options",
     "add_engine",
     "add_format",
     "add_master_options",
     "add_profile",
     "add_rules",
     "add_set",
+    "add_team",
+    "add_time_limit",
+    "given_values",
+    "load_rules_and_profile",
     "load_team_argument",
+    "package_path",
     "positive",
     "seconds",
     "team_path",
     "write",
+    "xacro_arguments",
 ]
 
 
@@ -167,6 +179,92 @@ def add_set(parser: argparse.ArgumentParser, *, per_robot: bool = True) -> None:
     )
 
 
+def given_values(pairs: list[str], solution: Solution | None) -> dict[str, str]:
+    """``--set NAME=VALUE`` pairs for one robot (``identify``, ``layouts --robot``), checked
+    against the team's rules (they need ``--team``)."""
+    if not pairs:
+        return {}
+    from solver import InputError
+    from solver.live.given import parse_fixed
+
+    if solution is None:
+        raise InputError.at("--set", "values are given to a combination: --set needs --team")
+    fixed = parse_fixed(pairs, solution.rules)
+    if fixed.per_robot:
+        raise InputError.at("--set", "one robot here: give NAME=VALUE, without a /ROBOT: part")
+    return dict(fixed.everywhere)
+
+
+def add_description_options(parser: argparse.ArgumentParser) -> None:
+    """Options ``identify`` and ``fleet`` share: profile, xacro arguments, package path."""
+    add_profile(parser)
+    parser.add_argument(
+        "--arg",
+        dest="xacro_args",
+        action="append",
+        default=[],
+        metavar="NAME:=VALUE",
+        help="xacro argument (repeatable)",
+    )
+    parser.add_argument(
+        "--trust-xacro",
+        action="store_true",
+        help="compile .xacro files: xacro runs Python code written in the file, "
+        "so only for files you trust (run in a child process with CPU, "
+        "memory and time limits; see docs/security.md)",
+    )
+    parser.add_argument(
+        "--strict",
+        action="store_true",
+        help="treat the description's and SRDF's warnings (flaws read past: a "
+        "missing link, a duplicate, a joint type outside the spec) as "
+        "errors, exit 2",
+    )
+    parser.add_argument(
+        "--package-path",
+        action="append",
+        default=[],
+        metavar="DIR",
+        help="folder holding ROS packages for $(find pkg) and package:// "
+        "(repeatable; default: $TELEOP_UI_PACKAGE_PATH)",
+    )
+
+
+def xacro_arguments(pairs: list[str]) -> dict[str, str]:
+    """``--arg NAME:=VALUE`` pairs, as xacro takes them; a located error for anything else."""
+    from solver import InputError
+
+    found: dict[str, str] = {}
+    for pair in pairs:
+        name, sep, value = pair.partition(":=")
+        if not sep or not name.strip():
+            raise InputError.at(
+                "<arguments>", f"--arg expects NAME:=VALUE, got {shown(pair, quoted=True)}"
+            )
+        found[name.strip()] = value
+    return found
+
+
+def package_path(folders: list[str]) -> tuple[Path, ...]:
+    """``--package-path`` folders (each may hold several, as ``$ROS_PACKAGE_PATH`` does), else
+    ``$TELEOP_UI_PACKAGE_PATH``."""
+    import os
+    from pathlib import Path
+
+    from solver.identify.xacro.packages import package_path_from_env
+
+    given = tuple(Path(p) for text in folders for p in text.split(os.pathsep) if p)
+    return given or package_path_from_env()
+
+
+def load_rules_and_profile(rules: str | None, profile: str | None) -> tuple[RuleSet, Profile]:
+    """``--rules`` (default: the shipped paper rules) and ``--profile`` (default: the shipped
+    identification profile), read."""
+    from solver import default_rules_path, load_profile, load_rules
+
+    return load_rules(rules or default_rules_path()), load_profile(profile)
+
+
 def add_rules(
     parser: argparse.ArgumentParser,
     help: str = "rule set to use instead of the one the team file names "
@@ -190,9 +288,9 @@ def add_team(parser: argparse.ArgumentParser) -> None:
 def team_path(text: str) -> Path:
     """The file of a team argument: as given, or a shipped team's (``case3``); a bare word that
     is neither raises an :class:`InputError` listing the shipped teams."""
+    from solver import InputError
     from solver.core.rules import shipped_path
     from solver.core.team import resolve_team_path
-    from solver.errors import InputError
 
     path = resolve_team_path(text)
     if not os.path.exists(path) and not path.suffix and path.name == text:
@@ -207,8 +305,8 @@ def team_path(text: str) -> Path:
 
 def load_team_argument(text: str, rules: str | None) -> Team:
     """A team given on the command line: a file, or the name of a shipped team (``case3``)."""
+    from solver import load_team
     from solver.core.rules import shipped_name
-    from solver.core.team import load_team
 
     path = team_path(text)
     shown = text if str(path) == text else (shipped_name(path) or str(path))

@@ -64,10 +64,8 @@ def register(subparsers: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from solver.errors import InputError
+    from solver import InputError, assign, parse_combination, solve
     from solver.reporting.render import render_assignment
-    from solver.solving.assignment import assign, parse_combination
-    from solver.solving.solution import solve
 
     combination = parse_combination(args.combination)
     if args.ros2 or args.master is not None:
@@ -84,14 +82,17 @@ def run(args: argparse.Namespace) -> int:
 
 def run_live(args: argparse.Namespace, combination: dict[str, str]) -> int:
     """``assign --master`` and ``assign --ros2``: one question, one path for every graph."""
-    from solver.cli.watch import graph_address, open_graph
-    from solver.errors import InputError
-    from solver.identify.profile import load_profile
-    from solver.live.query import assign_from_graph
+    from solver import (
+        InputError,
+        assign_from_graph,
+        graph_address,
+        load_profile,
+        open_source,
+        solve,
+    )
     from solver.live.render import render_live_assignment
-    from solver.solving.solution import solve
 
-    address = graph_address(args)
+    address = graph_address(ros2=args.ros2, master=args.master, domain=args.domain)
     if args.ros2 and args.robot is None:
         raise InputError.at(
             "<arguments>",
@@ -99,7 +100,7 @@ def run_live(args: argparse.Namespace, combination: dict[str, str]) -> int:
             "topic on ROS 2: `watch --ros2` answers it)",
         )
     solution = solve(load_team_argument(args.team, args.rules))
-    source = open_graph(address, timeout=args.timeout, push=False)
+    source = open_source(address, timeout=args.timeout, push=False)
     try:
         live = assign_from_graph(
             source, solution, load_profile(args.profile), robot=args.robot, given=combination

@@ -99,7 +99,7 @@ def run(args: argparse.Namespace) -> int:
     from solver.reporting.batch import find_teams, plan, run_batch, write_summary
 
     if args.rules is not None:
-        from solver.core.rules import load_rules
+        from solver import load_rules
 
         load_rules(args.rules)  # a bad override would fail every team: say so once
     teams = find_teams(args.patterns)

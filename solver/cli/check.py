@@ -64,7 +64,8 @@ def register(subparsers: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from solver.check import ALL_CHECKS, check_files, check_ids, render
+    from solver import check_files
+    from solver.check import ALL_CHECKS, check_ids, render
 
     if args.list_checks:
         write(

@@ -16,7 +16,7 @@ from solver.cli._common import (
 )
 
 if TYPE_CHECKING:
-    from solver.core.team import Team
+    from solver import Team
 
 
 def register(subparsers: Any) -> None:
@@ -44,9 +44,8 @@ def register(subparsers: Any) -> None:
 
 def load(text: str, rules: str | None) -> Team:
     """A team file, or a rule set file standing for its whole design space."""
+    from solver import InputError, full_team
     from solver.core.rules import parse_rules
-    from solver.core.team import full_team
-    from solver.errors import InputError
     from solver.files.filekind import file_kind
     from solver.files.yamlio import load_document
 
@@ -60,9 +59,9 @@ def load(text: str, rules: str | None) -> Team:
 
 
 def run(args: argparse.Namespace) -> int:
+    from solver import solve
     from solver.cli._progress import working
     from solver.reporting.render import render_counts
-    from solver.solving.solution import solve
 
     team = load(args.file, args.rules)
     with working(f"counting {team.name}", fmt=args.format):
@@ -70,8 +69,9 @@ def run(args: argparse.Namespace) -> int:
     if not args.symbolic:
         write(render_counts(solution, args.format))
         return 0
+    from solver import formulas
     from solver.reporting.growth import render_growth
-    from solver.solving.symbolic import agrees_with, formulas
+    from solver.solving.symbolic import agrees_with
 
     growth = formulas(team, time_limit=args.time_limit)
     write(render_growth(growth, solution, args.format))

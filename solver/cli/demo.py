@@ -52,12 +52,11 @@ def run(args: argparse.Namespace) -> int:
     import threading
     from pathlib import Path
 
-    from solver.cli.watch import ros2_domain
     from solver.extras import require
+    from solver.live.sources import dds_domain
 
     require("cyclonedds", feature="the ROS 2 demo (teleop-ui demo ros2)")
-    args.master = None
-    domain = ros2_domain(args)
+    domain = dds_domain(args.domain)
     stopped = threading.Event()
     previous = signal.signal(signal.SIGTERM, lambda *_: stopped.set())
     try:

@@ -26,7 +26,7 @@ def register(subparsers: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from solver.reporting.uvl import team_to_uvl
+    from solver import team_to_uvl
 
     write(team_to_uvl(load_team_argument(args.team, args.rules)))
     return 0

@@ -6,11 +6,13 @@ import argparse
 import sys
 from typing import Any
 
-from solver.cli._common import add_format, add_rules, write
-from solver.cli.identify import (
+from solver.cli._common import (
     add_description_options,
+    add_format,
+    add_rules,
     load_rules_and_profile,
     package_path,
+    write,
     xacro_arguments,
 )
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
@@ -42,10 +44,10 @@ def register(subparsers: Any) -> None:
 def run(args: argparse.Namespace) -> int:
     from pathlib import Path
 
-    from solver.core.rules import default_rules_path
+    from solver import default_rules_path, identify_fleet
     from solver.files.atomic import write_atomic
     from solver.files.output import dumps, text_table
-    from solver.identify.fleet import identify_fleet, rules_reference, team_text
+    from solver.identify.fleet import rules_reference, team_text
     from solver.identify.render import identification_data
 
     rules, profile = load_rules_and_profile(args.rules, args.profile)

@@ -6,57 +6,21 @@ import argparse
 from typing import TYPE_CHECKING, Any
 
 from solver.cli._common import (
+    add_description_options,
     add_format,
-    add_profile,
     add_rules,
     add_set,
+    given_values,
+    load_rules_and_profile,
     load_team_argument,
+    package_path,
     write,
+    xacro_arguments,
 )
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
 if TYPE_CHECKING:
-    from pathlib import Path
-
-    from solver.core.ruleset import RuleSet
-    from solver.core.team import Team
-    from solver.identify.profile import Profile
-    from solver.solving.solution import Solution
-
-
-def add_description_options(parser: argparse.ArgumentParser) -> None:
-    """Options ``identify`` and ``fleet`` share: profile, xacro arguments, package path."""
-    add_profile(parser)
-    parser.add_argument(
-        "--arg",
-        dest="xacro_args",
-        action="append",
-        default=[],
-        metavar="NAME:=VALUE",
-        help="xacro argument (repeatable)",
-    )
-    parser.add_argument(
-        "--trust-xacro",
-        action="store_true",
-        help="compile .xacro files: xacro runs Python code written in the file, "
-        "so only for files you trust (run in a child process with CPU, "
-        "memory and time limits; see docs/security.md)",
-    )
-    parser.add_argument(
-        "--strict",
-        action="store_true",
-        help="treat the description's and SRDF's warnings (flaws read past: a "
-        "missing link, a duplicate, a joint type outside the spec) as "
-        "errors, exit 2",
-    )
-    parser.add_argument(
-        "--package-path",
-        action="append",
-        default=[],
-        metavar="DIR",
-        help="folder holding ROS packages for $(find pkg) and package:// "
-        "(repeatable; default: $TELEOP_UI_PACKAGE_PATH)",
-    )
+    from solver import Solution, Team
 
 
 def register(subparsers: Any) -> None:
@@ -111,37 +75,6 @@ def register(subparsers: Any) -> None:
     parser.set_defaults(run=run)
 
 
-def xacro_arguments(pairs: list[str]) -> dict[str, str]:
-    from solver.errors import InputError
-
-    found: dict[str, str] = {}
-    for pair in pairs:
-        name, sep, value = pair.partition(":=")
-        if not sep or not name.strip():
-            raise InputError.at(
-                "<arguments>", f"--arg expects NAME:=VALUE, got {shown(pair, quoted=True)}"
-            )
-        found[name.strip()] = value
-    return found
-
-
-def package_path(folders: list[str]) -> tuple[Path, ...]:
-    import os
-    from pathlib import Path
-
-    from solver.identify.xacro.packages import package_path_from_env
-
-    given = tuple(Path(p) for text in folders for p in text.split(os.pathsep) if p)
-    return given or package_path_from_env()
-
-
-def load_rules_and_profile(rules: str | None, profile: str | None) -> tuple[RuleSet, Profile]:
-    from solver.core.rules import default_rules_path, load_rules
-    from solver.identify.profile import load_profile
-
-    return load_rules(rules or default_rules_path()), load_profile(profile)
-
-
 def run(args: argparse.Namespace) -> int:
     from solver.files.output import dumps
     from solver.identify.combinations import combinations, missing
@@ -168,7 +101,7 @@ def run(args: argparse.Namespace) -> int:
             trust_xacro=args.trust_xacro,
         )
     if args.strict and result.warnings:
-        from solver.errors import InputError
+        from solver import InputError
 
         raise InputError(result.warnings)
     solution = _solved(team)
@@ -187,21 +120,6 @@ def _solved(team: Team | None) -> Solution | None:
     """The team solved, with ``--team`` (solving is loaded for that case only)."""
     if team is None:
         return None
-    from solver.solving.solution import solve
+    from solver import solve
 
     return solve(team)
-
-
-def given_values(pairs: list[str], solution: Solution | None) -> dict[str, str]:
-    """``--set NAME=VALUE`` pairs, checked against the team's rules (they need ``--team``)."""
-    if not pairs:
-        return {}
-    from solver.errors import InputError
-    from solver.live.given import parse_fixed
-
-    if solution is None:
-        raise InputError.at("--set", "values are given to a combination: --set needs --team")
-    fixed = parse_fixed(pairs, solution.rules)
-    if fixed.per_robot:
-        raise InputError.at("--set", "one robot here: give NAME=VALUE, without a /ROBOT: part")
-    return dict(fixed.everywhere)

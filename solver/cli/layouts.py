@@ -6,8 +6,14 @@ import argparse
 import sys
 from typing import Any
 
-from solver.cli._common import add_profile, add_rules, add_set, load_team_argument, write
-from solver.cli.identify import given_values
+from solver.cli._common import (
+    add_profile,
+    add_rules,
+    add_set,
+    given_values,
+    load_team_argument,
+    write,
+)
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
 
@@ -89,18 +95,13 @@ def register(subparsers: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from solver.layouts import load_presentation
-    from solver.solving.solution import solve
+    from solver import InputError, load_presentation, solve
 
     if args.preview and args.format != "foxglove":
-        from solver.errors import InputError
-
         raise InputError.at("--preview", "previews are drawn from foxglove layouts only")
     if args.robot:
         return _robot(args)
     if args.topics or args.bag or args.profile or args.set:
-        from solver.errors import InputError
-
         given = (
             "--topics"
             if args.topics
@@ -112,8 +113,6 @@ def run(args: argparse.Namespace) -> int:
         )
         raise InputError.at(given, "needs --robot URDF")
     if args.team is None:
-        from solver.errors import InputError
-
         raise InputError.at("TEAM.yaml", "a team is needed (or --robot URDF --team TEAM)")
     from solver.layouts.plan import check_namespace
     from solver.layouts.writer import check_layout_count, write_layout_folder
@@ -154,69 +153,32 @@ def _names(names: tuple[str, ...], shown: int = 6) -> str:
 
 
 def _robot(args: argparse.Namespace) -> int:
-    from solver.errors import InputError
+    from solver import InputError, identified_layout, load_profile, solve
     from solver.files.atomic import write_atomic
-    from solver.identify import identify_urdf
-    from solver.identify.combinations import combinations
-    from solver.identify.profile import load_profile
-    from solver.identify.readers.safexml import read_bytes
-    from solver.layouts import load_presentation
     from solver.layouts.plan import check_namespace
-    from solver.layouts.robot import robot_layout
-    from solver.solving.solution import solve
 
     if not args.robot_team:
         raise InputError.at("--robot", "--robot needs --team TEAM.yaml")
+    namespace = check_namespace(args.namespace, "--namespace") if args.namespace else None
     solution = solve(load_team_argument(args.robot_team, args.rules))
     profile = load_profile(args.profile)
-    description = read_bytes(args.robot, display=args.robot)
-    identification = identify_urdf(
-        description, file=args.robot, rules=solution.rules, profile=profile
-    )
-    if args.namespace:
-        namespace = check_namespace(args.namespace, "--namespace")
-    else:
-        namespace = check_namespace(
-            "/" + identification.robot,
-            args.robot,
-            what="; the robot's name makes its namespace: give one with --namespace /NAME",
-        )
-    # The robot's first control mode and sensor type: the combination it starts in.
-    given = given_values(args.set, solution)
-    assignment = combinations(identification, solution, profile, given)[0].assignment
-    presentation = load_presentation(
-        args.presentation, solution.rules if args.presentation else None
-    )
-    source, topics = _robot_topics(args)
-    layout = robot_layout(
+    done = identified_layout(
+        args.robot,
         solution,
-        assignment,
-        presentation,
-        args.format,
+        profile=profile,
+        presentation=args.presentation,
+        fmt=args.format,
         namespace=namespace,
-        topics=topics,
-        topics_source=source,
-        joints=identification.joints,
+        given=given_values(args.set, solution),
+        topics=args.topics,
+        bag=args.bag,
         file=args.output,
     )
-    for warning in layout.warnings:
+    for warning in done.layout.warnings:
         sys.stderr.write(f"warning: {shown(str(warning), limit=None)}\n")
-    write_atomic(args.output, layout.text)
+    write_atomic(args.output, done.layout.text)
     write(
-        f"{shown(identification.robot)}: configuration {assignment.number}; "
+        f"{shown(done.identification.robot)}: configuration {done.assignment.number}; "
         f"wrote {shown(str(args.output), limit=SHOWN_FILE_NAME_CHARS)}\n"
     )
     return 0
-
-
-def _robot_topics(args: argparse.Namespace) -> tuple[str, Any]:
-    """The robot's real topics, read as `identify` reads them (``None``: the templates)."""
-    if args.topics:
-        from solver.identify.readers.topics import read_topic_list
-
-        return args.topics, read_topic_list(args.topics)
-    if args.bag:
-        from solver.identify.readers.bags import read_bag_topics
-
-        return args.bag, read_bag_topics(args.bag)
-    return "", None

@@ -38,9 +38,9 @@ def register(subparsers: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from solver import solve, write_report
     from solver.reporting.plot import check_chart_size
-    from solver.reporting.report import report_format, write_report
-    from solver.solving.solution import solve
+    from solver.reporting.report import report_format
 
     report_format(args.output)  # an unusable file name fails before any solving
     team = load_team_argument(args.team, args.rules)

@@ -26,8 +26,8 @@ def register(subparsers: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from solver import compare
     from solver.reporting.render import render_comparisons
-    from solver.solving.reproduce import compare
 
     write(render_comparisons(compare(args.teams or None), args.format))
     return 0

@@ -35,9 +35,9 @@ def register(subparsers: Any) -> None:
 def run(args: argparse.Namespace) -> int:
     import sys
 
+    from solver import solve
     from solver.cli._progress import working
     from solver.reporting.listing import write_robots
-    from solver.solving.solution import solve
 
     team = load_team_argument(args.team, args.rules)
     # A spinner only while the robots go to a file: on the terminal they are the progress.

@@ -51,8 +51,8 @@ def register(subparsers: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from solver import solve
     from solver.reporting.render import render_solution, solution_chunks
-    from solver.solving.solution import solve
 
     if args.plot:
         from solver.reporting.plot import plot_format
@@ -72,7 +72,7 @@ def run(args: argparse.Namespace) -> int:
         # The warnings (constraints' exclusions) are computed once, here, under the spinner.
         _ = solution.removed
     if args.plot:
-        from solver.reporting.plot import write_plot
+        from solver import write_plot
 
         write_plot(solution, args.plot, args.plot_kind)
     listed = args.list and solution.listed

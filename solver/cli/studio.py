@@ -79,7 +79,7 @@ def positive_seconds(text: str) -> float:
 def run(args: argparse.Namespace) -> int:
     import os
 
-    from solver.errors import InputError
+    from solver import InputError
     from solver.extras import require
     from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
@@ -120,6 +120,7 @@ def _warn(message: str) -> None:
 def _studio(args: argparse.Namespace) -> Any:
     from pathlib import Path
 
+    from solver import load_profile
     from solver.studio.service import Studio
     from solver.studio.workspace import Workspace
 
@@ -131,8 +132,6 @@ def _studio(args: argparse.Namespace) -> Any:
 
         start = team_path(args.start)
         shown = args.start if str(start) == args.start else (shipped_name(start) or str(start))
-    from solver.identify.profile import load_profile
-
     profile = load_profile(args.profile) if args.profile else None
     workspace = Workspace(start=start, start_display=shown, folders=[Path(f) for f in args.fleet])
     live = _live(args, workspace, profile) if args.ros2 or args.master else None
@@ -140,33 +139,13 @@ def _studio(args: argparse.Namespace) -> Any:
 
 
 def _live(args: argparse.Namespace, workspace: Any, chosen: Any) -> Any:
-    """The live feed: a watcher on the graph for the team given at start (every type of its
-    rule set when a rule set, or nothing, was given)."""
-    from solver.core.team import full_team
-    from solver.identify.profile import load_profile
-    from solver.live.watcher import Watcher
-    from solver.solving.solution import solve
-    from solver.studio.live import LiveFeed
+    """The live feed: a watcher on the graph named (:func:`solver.graph_address`) for the team
+    given at start (every type of its rule set when a rule set, or nothing, was given)."""
+    from solver import full_team, graph_address, load_profile, solve
+    from solver.studio.live import live_feed
 
     team = workspace.start_team or full_team(workspace.source(None).rules)
     solution = solve(team)
     profile = chosen if chosen is not None else load_profile()
-    if args.ros2:
-        from solver.cli.watch import ros2_domain
-        from solver.live.sources.ros2 import DdsGraph
-
-        domain = ros2_domain(args)
-
-        def make() -> Watcher:
-            source = DdsGraph(domain)
-            return Watcher(source.name, solution, profile, interval=args.interval, source=source)
-
-        return LiveFeed(f"ROS 2 domain {domain}", solution, make)
-    from solver.live.sources.ros1.master import master_uri
-
-    master = master_uri(args.master)
-
-    def make_ros1() -> Watcher:
-        return Watcher(master, solution, profile, interval=args.interval, timeout=args.timeout)
-
-    return LiveFeed(master, solution, make_ros1)
+    address = graph_address(ros2=args.ros2, master=args.master, domain=args.domain)
+    return live_feed(address, solution, profile, interval=args.interval, timeout=args.timeout)

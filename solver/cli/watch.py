@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-import os
 import sys
 from collections.abc import Iterator
 from contextlib import contextmanager
@@ -22,11 +21,9 @@ from solver.cli._common import (
 from solver.untrusted import shown
 
 if TYPE_CHECKING:
+    from solver import MasterError, Solution, Watcher
     from solver.live.events import Event
-    from solver.live.graph import GraphSource, MasterError
     from solver.live.layouts import LiveLayouts
-    from solver.live.watcher import Watcher
-    from solver.solving.solution import Solution
 
 
 def register(subparsers: Any) -> None:
@@ -111,49 +108,28 @@ def register(subparsers: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from solver.identify.profile import load_profile
+    from solver import graph_address, load_profile, open_watcher, solve
     from solver.live.given import parse_fixed
-    from solver.live.watcher import Watcher
-    from solver.solving.solution import solve
 
     team = load_team_argument(args.team, args.rules)
     profile = load_profile(args.profile)
     solution = solve(team)
     fixed = parse_fixed(args.set, solution.rules)
-    source = open_graph(graph_address(args), timeout=args.timeout, push=not args.once)
+    address = graph_address(ros2=args.ros2, master=args.master, domain=args.domain)
     with (
-        Watcher(
-            source.name,
+        open_watcher(
+            address,
             solution,
             profile,
             interval=args.interval,
-            source=source,
+            timeout=args.timeout,
+            push=not args.once,
             fixed=fixed,
             policy=args.policy,
         ) as watcher,
         _stopped_by_sigterm(watcher),
     ):
         return _watch(watcher, args, solution)
-
-
-def graph_address(args: argparse.Namespace) -> str | int:
-    """The graph the arguments name, checked: a DDS domain id (``--ros2``, ``--domain``) or a
-    ROS 1 master URI (``--master``, ``$ROS_MASTER_URI``); a located error for anything else."""
-    from solver.live.sources.ros1.master import master_uri
-
-    return ros2_domain(args) if args.ros2 else master_uri(args.master)
-
-
-def open_graph(address: str | int, *, timeout: float, push: bool) -> GraphSource:
-    """The graph source at ``address`` (:func:`graph_address`): a DDS domain, or a master
-    (``timeout`` and ``push`` are the master's)."""
-    if isinstance(address, int):
-        from solver.live.sources.ros2 import DdsGraph
-
-        return DdsGraph(address)
-    from solver.live.sources.ros1 import MasterGraph
-
-    return MasterGraph(address, timeout=timeout, push=push)
 
 
 @contextmanager
@@ -169,24 +145,8 @@ def _stopped_by_sigterm(watcher: Watcher) -> Iterator[None]:
         signal.signal(signal.SIGTERM, previous)
 
 
-def ros2_domain(args: argparse.Namespace) -> int:
-    """--domain, else $ROS_DOMAIN_ID, else 0; a located error for anything else."""
-    from solver.errors import InputError
-
-    if args.master is not None:
-        raise InputError.at(
-            "<arguments>", "--ros2 reads a DDS domain: give --domain N, not --master"
-        )
-    text = str(args.domain) if args.domain is not None else os.environ.get("ROS_DOMAIN_ID", "0")
-    if not text.strip().isdigit() or not 0 <= int(text) <= 232:
-        raise InputError.at(
-            "<arguments>", f"DDS domain id must be 0..232, got {shown(text, quoted=True)}"
-        )
-    return int(text)
-
-
 def _watch(watcher: Watcher, args: argparse.Namespace, solution: Solution) -> int:
-    from solver.live.graph import MasterError
+    from solver import MasterError
 
     try:
         _follow(watcher, args, solution)

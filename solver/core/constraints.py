@@ -16,8 +16,7 @@ value of one characteristic lies in this set", with the set already resolved fro
 file wrote (a value, a list, a range, a component, a complement).
 
 Not here: reading the YAML (:mod:`solver.core.rules`) or turning constraints into a
-python-constraint
-problem (:mod:`solver.core.model`).
+python-constraint problem (:mod:`solver.core.model`).
 """
 
 from __future__ import annotations

@@ -11,8 +11,7 @@ Solved in three steps, each exact:
 * **Factors.** Characteristics that vary independently of each other (no rule constraint links
   them) make the family of elements a product: the elements over characteristics A and B are
   every element over A beside every element over B. The family is split into its finest such
-  factors (:func:`factors`; unique, and found from the elements alone, so every engine finds the
-  same).
+  factors (:func:`factors`; unique, and found from the elements alone, so all engines agree).
 * **A cover per factor.** Each factor's hitting set is a small integer program solved by HiGHS
   (``highspy``), a maintained MIP solver that proves its answers optimal: one binary variable per
   key, minimise their sum, one ``>= 1`` row per element.

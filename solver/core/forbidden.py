@@ -1,13 +1,12 @@
 """What a rule set's constraints remove from a team: selected values no valid robot can have.
 
-A team selects values per kinematic type; a constraint of its rule set may forbid some of them
-for that type (``no force feedback in flight``). The robots with such a value are not valid and
-get the default UI configuration. ``solve``, ``report`` and ``batch`` say so (through
+A team selects values per kinematic type; a constraint of its rule set may forbid some of them for
+that type (``no force feedback in flight``). The robots with such a value are not valid and get the
+default UI configuration. ``solve``, ``report`` and ``batch`` say so (through
 :func:`solver.solving.solution.solution_warnings`) and the report lists the constraints with what
-they
-removed; ``teleop-ui check`` gives the same finding, located in the team file
-(``team-forbidden-value``). The analysis is :class:`solver.core.analysis.Analysis`, shared
-with the checker, so both always agree.
+they removed; ``teleop-ui check`` gives the same finding, located in the team file
+(``team-forbidden-value``). The analysis is :class:`solver.core.analysis.Analysis`, shared with the
+checker, so both always agree.
 
 A characteristic a team leaves open (every value selected) is not reported: it takes whatever
 the rules allow. A type left with no valid robot at all is reported as a whole.

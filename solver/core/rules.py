@@ -10,6 +10,7 @@ Not here: the rule set's types (:mod:`solver.core.ruleset`), team files (:mod:`s
 
 from __future__ import annotations
 
+import threading
 from collections.abc import Iterable, Sequence
 from dataclasses import replace
 from pathlib import Path
@@ -83,7 +84,10 @@ def default_rules_path() -> Path:
 def load_rules(path: str | Path, *, display: str | None = None) -> RuleSet:
     """Read a rule set file; :class:`RulesError` lists every problem with its location.
 
-    A shipped rule set is shown by its stable name (``rules/paper.yaml``) unless ``display``."""
+    A shipped rule set is shown by its stable name (``rules/paper.yaml``) unless ``display``.
+    Rule sets read are kept by name and text (16 at most, each of at most 256 KB, the oldest
+    dropped first), so a file read again unchanged is not parsed again; safe to call from many
+    threads at once (the studio does)."""
     if display is None:
         display = shipped_name(Path(path))
     name = display if display is not None else str(path)
@@ -92,19 +96,27 @@ def load_rules(path: str | Path, *, display: str | None = None) -> RuleSet:
     # once per process while its text stays the same: the text is the key, so an edited file
     # is read again. A RuleSet is a frozen value, safe to share.
     key = (name, text)
-    found = _READ.get(key)
-    if found is None:
-        found = parse_rules(parse_document(text, name))
-        if len(text) <= _KEPT_CHARS:
-            if len(_READ) >= _KEPT_FILES:
-                _READ.pop(next(iter(_READ)))  # the oldest
-            _READ[key] = found
+    with _READ_LOCK:
+        found = _READ.get(key)
+    if found is not None:
+        return found
+    # Parsed outside the lock: threads reading other files are not held up. Two threads that
+    # read the same new file at once both parse it, and the first one kept stays.
+    found = parse_rules(parse_document(text, name))
+    if len(text) <= _KEPT_CHARS:
+        with _READ_LOCK:
+            kept = _READ.setdefault(key, found)
+            while len(_READ) > _KEPT_FILES:
+                del _READ[next(iter(_READ))]  # the oldest
+        return kept
     return found
 
 
 # Rule sets read in this process by (shown name, text): at most _KEPT_FILES, of at most
-# _KEPT_CHARS characters each (the shipped ones are under 10,000).
+# _KEPT_CHARS characters each (the shipped ones are under 10,000). The studio reads from many
+# threads: every look into _READ and every change to it holds _READ_LOCK.
 _READ: dict[tuple[str, str], RuleSet] = {}
+_READ_LOCK = threading.Lock()
 _KEPT_FILES = 16
 _KEPT_CHARS = 1 << 18
 

@@ -1,8 +1,7 @@
 """The reference engine: every valid robot from python-constraint's solution iterator.
 
 Slow but obviously right: each robot comes from :func:`solver.core.model.robots`, the same
-constraint
-model ``check`` and ``assign`` use, and is partitioned one by one
+constraint model ``check`` and ``assign`` use, and is partitioned one by one
 (:func:`solver.core.partition.partition`). The property tests hold the other engines to its answers.
 
 Not here: the constraint model itself (:mod:`solver.core.model`).

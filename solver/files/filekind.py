@@ -14,8 +14,7 @@ rule set's fields as unknown team fields. Decided by the top-level keys, in this
 4. anything else -> ``None``: the caller says what it expected.
 
 Not here: reading the file (:mod:`solver.files.yamlio`) or the kinds themselves
-(:mod:`solver.core.team`,
-:mod:`solver.core.rules`, :mod:`solver.identify.profile`).
+(:mod:`solver.core.team`, :mod:`solver.core.rules`, :mod:`solver.identify.profile`).
 """
 
 from __future__ import annotations

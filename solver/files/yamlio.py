@@ -16,8 +16,7 @@ text the project reads (rule sets, teams, identification and presentation profil
 from a live graph through :func:`prescan` itself) goes through it.
 
 Not here: what the data means. :mod:`solver.core.rules` and :mod:`solver.core.team` read the data
-and use
-:meth:`Document.location` to say where a problem is.
+and use :meth:`Document.location` to say where a problem is.
 """
 
 from __future__ import annotations

@@ -16,7 +16,13 @@ Modules, one concept each:
                          ``child``, ``confine``)
 ``profile``              the identification profile (patterns, rules, mappings)
 ``compose``              a profile that ``extends`` another (``extends: shipped``)
-``body``                 body parts from the tree: wheels, rotors, limbs, grippers
+``body``                 the parts a description shows, found by the next six modules
+``tree``                 the joint tree as the steps of ``body`` read it
+``actuation``            what each joint does alone: wheels, rotors, thrusters, grippers
+``placement``            where the body is: a floating or planar base
+``limbs``                chains of the other joints: legs, arms, heads, mounts, trunk
+``hands``                fingers and grippers, by name and by place
+``vehicle``              how the body travels: ground, air, water; trimmed models
 ``classifier``           structure + kinematic type + confidence from the parts
 ``sensors``              sensors from URDF, merged, mapped to sensor types
 ``interfaces``           sensors and motion controls from topic triples

@@ -2,8 +2,7 @@
 
 The one place topic metadata is interpreted, whatever it came from: a topic list file
 (:mod:`solver.identify.readers.topics`), a bag (:mod:`solver.identify.readers.bags`), or a live ROS
-master
-(getTopicTypes / getSystemState give exactly these triples)::
+master (getTopicTypes / getSystemState give exactly these triples)::
 
     >>> from solver.identify import Topic, load_profile, sensors_from_topics
     >>> topics = [Topic("/front/scan", "sensor_msgs/LaserScan", "published")]

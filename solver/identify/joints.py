@@ -2,7 +2,7 @@
 
 A ``trajectory_msgs/JointTrajectory`` that a layout's Publish panel sends must name the robot's
 own joints (a controller rejects a trajectory of joints it does not drive). They are the
-actuated joints of the robot's limbs (arms, legs, head, as :mod:`solver.identify.body` finds
+actuated joints of the robot's limbs (arms, legs, head, as :mod:`solver.identify.limbs` finds
 them; not its wheels), proximal to distal, limb after limb; a mimic joint follows another
 and is left out. Each starts at 0, or at the limit nearest 0 when 0 lies outside its limits.
 

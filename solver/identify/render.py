@@ -140,25 +140,25 @@ def render_identification(
         ]
     lines += [f"  note: {shown(note, limit=None)}" for note in identification.notes]
     lines += [f"  warning: {warning}" for warning in identification.warnings]
-    text = "\n".join(lines) + "\n\n"
+    # Sections (each ending its last line) with a blank line between them, none after the last.
+    sections = ["\n".join(lines) + "\n"]
     if identification.sensors:
         rows = [[s.kind, s.sensor_type or "-", s.count, s.source] for s in identification.sensors]
-        text += _indent(
-            text_table(
-                ["sensor kind", "sensor type", "count", "source"], rows, [False, False, True, False]
-            )
+        table = text_table(
+            ["sensor kind", "sensor type", "count", "source"], rows, [False, False, True, False]
         )
-        text += f"  {identification.sensor_count} sensor(s) with a presentation in the rule set\n\n"
+        count = f"  {identification.sensor_count} sensor(s) with a presentation in the rule set\n"
+        sections.append(_indent(table) + count)
     else:
-        text += "  no sensors found\n\n"
+        sections.append("  no sensors found\n")
     if identification.motion_controls:
         rows = [[c.motion_control, c.source] for c in identification.motion_controls]
-        text += _indent(text_table(["motion control", "source"], rows)) + "\n"
+        sections.append(_indent(text_table(["motion control", "source"], rows)))
     else:
-        text += "  no motion controls found (give --topics or --bag)\n\n"
+        sections.append("  no motion controls found (give --topics or --bag)\n")
     if solution is not None:
-        text += _configurations(combinations, solution, missing)
-    return text
+        sections.append(_configurations(combinations, solution, missing))
+    return "\n".join(sections)
 
 
 def _configurations(

@@ -14,11 +14,12 @@ of strength, and the first that speaks decides:
    ``fin``, ``wing`` for control surfaces, ``caster``, ``wheel``, ``rotor``, ``gripper``).
 
 The roles here are the ones a single joint plays: wheel, steering, caster, rotor, thruster, fin,
-gripper. The limb roles (leg, arm, head, finger, mount, trunk) come from the chains the other
-joints form (:mod:`solver.identify.body`), which also finds wheels by place when names say
-nothing.
+gripper. The limb roles (leg, arm, head, mount, trunk) come from the chains the other joints
+form (:mod:`solver.identify.limbs`), fingers from grippers and from where chains hang
+(:mod:`solver.identify.hands`); the roles of a whole robot's joints, wheels found by place when
+names say nothing among them, are :mod:`solver.identify.actuation`'s.
 
-Not here: chains and limbs (:mod:`solver.identify.body`), the structure
+Not here: chains and limbs (:mod:`solver.identify.limbs`), the structure
 (:mod:`solver.identify.classifier`).
 """
 

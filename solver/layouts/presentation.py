@@ -5,6 +5,7 @@ presentation``); a user passes their own copy with ``layouts --presentation``. (
 *identification profile*, :mod:`solver.identify.profile`, is another thing: how robots are
 read; ``--profile`` names that one on every command.) Every problem in a presentation is
 reported at once, located (file:line:col).
+
 Not here: building layouts (:mod:`solver.layouts.foxglove`).
 """
 

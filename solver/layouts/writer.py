@@ -98,7 +98,7 @@ def write_layout_folder(
         from solver.layouts.preview import preview_html
 
         # The preview draws every layout: these are built first, all of them.
-        made = {name: "".join(text) for name, text in texts.items()}  # type: ignore[arg-type]
+        made = {name: "".join(text) for name, text in texts.items()}  # type: ignore[arg-type]  # layouts are text, never bytes
         made[PREVIEW] = preview_html([(name, json.loads(text)) for name, text in made.items()])
         texts = dict(made)
     make_folder(folder)

@@ -13,7 +13,8 @@ Modules, one concept each:
                        MISSING, the GraphSource protocol, the graph's errors
 ``sources``            graph sources, none importing another: ``ros1`` (a master
                        over XML-RPC: ``rpc``, ``master``, ``node``, ``descriptions``,
-                       ``source``), ``ros2`` (DDS, Cyclone DDS)
+                       ``source``), ``ros2`` (DDS, Cyclone DDS); the one lookup of a
+                       source by its address (``graph_address``, ``open_source``)
 ``values``             bounds on values from a graph (JSON, selection), echoes
 ``discovery``          robots (``robot_description`` namespaces), their topics and
                        their own values' keys (``<ns>/teleop_ui/<characteristic>``)
@@ -24,7 +25,8 @@ Modules, one concept each:
 ``events``             the event kinds and their JSON schema
 ``rivals``             other watchers on the graph: announcements, ``rival`` events,
                        who writes the answer (``--yield`` / ``--insist``)
-``watcher``            the state machine on any source: polls, loss, backoff, resync
+``watcher``            the state machine on any source: polls, loss, backoff, resync;
+                       ``open_watcher``, one on the graph at an address
 ``query``              one question on any source: ``assign --master`` / ``--ros2``
 ``render``             events as JSON lines or text; ``assign --master`` output
 ``demo``               an emulated ROS 2 fleet and operator (``teleop-ui demo ros2``)

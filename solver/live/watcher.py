@@ -77,7 +77,7 @@ import time
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from types import TracebackType
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from solver.identify.identification import IdentificationCache
 from solver.identify.profile import Profile
@@ -120,7 +120,10 @@ from solver.ros.names import Topic
 from solver.solving.solution import Solution
 from solver.untrusted import shown
 
-__all__ = ["MAX_WARNINGS", "Watcher"]
+if TYPE_CHECKING:
+    from solver.live.sources import GraphAddress
+
+__all__ = ["MAX_WARNINGS", "Watcher", "open_watcher"]
 
 # Warning events a poll reports at most (a graph may hold any number of unknown names).
 MAX_WARNINGS = 20
@@ -638,6 +641,40 @@ class Watcher:
             return None
         named = shown_value(writer)
         return f"an answer in the name of {named}, which is no running watcher: {done}"
+
+
+def open_watcher(
+    address: GraphAddress,
+    solution: Solution,
+    profile: Profile,
+    *,
+    interval: float = 0.2,
+    timeout: float = 2.0,
+    push: bool = True,
+    fixed: FixedValues | None = None,
+    policy: str = YIELD,
+) -> Watcher:
+    """A :class:`Watcher` on the graph at ``address`` (:func:`solver.live.sources.graph_address`),
+    its source opened by the one lookup of sources (:func:`solver.live.sources.open_source`;
+    ``timeout`` and ``push`` are a master's) and closed with the watcher: what ``watch`` and
+    the studio's live view follow."""
+    # Here, not at module level: the watcher's machinery imports no source.
+    from solver.live.sources import open_source
+
+    source = open_source(address, timeout=timeout, push=push)
+    try:
+        return Watcher(
+            source.name,
+            solution,
+            profile,
+            interval=interval,
+            source=source,
+            fixed=fixed,
+            policy=policy,
+        )
+    except BaseException:
+        source.close()
+        raise
 
 
 def _answer(value: Any) -> Any:

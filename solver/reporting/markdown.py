@@ -9,8 +9,7 @@ inline markup characters get a backslash (:func:`escape`), and in running text
 :func:`table` builds a table of escaped cells.
 
 Not here: the pages themselves (:mod:`solver.reporting.report`, :mod:`solver.reporting.batch`) or
-HTML
-(``html.escape``).
+HTML (``html.escape``).
 """
 
 from __future__ import annotations

@@ -1,9 +1,8 @@
 """Reports of a solved team, to take to a design meeting: HTML or Markdown.
 
 A report holds the counts per kinematic type, the bound T and the default configuration, the
-comparison with published figures when the team file carries them (``published:``), the radar
-chart and the bar chart of :mod:`solver.reporting.plot`, the team's selections and every UI
-configuration
+comparison with published figures when the team file carries them (``published:``), the radar chart
+and the bar chart of :mod:`solver.reporting.plot`, the team's selections and every UI configuration
 with its components.
 
 * **HTML** is one self-contained file: the charts are SVG embedded as ``data:`` URIs, the style
@@ -475,8 +474,7 @@ def render_markdown(solution: Solution, images: Mapping[PlotKind, str] | None = 
     """The report as Markdown; ``images`` maps ``radar``/``bars`` to the files to link.
 
     Every name from the rule and team files is escaped (:mod:`solver.reporting.markdown`), as the
-    HTML
-    report escapes it: a team called ``<script>`` shows as that text.
+    HTML report escapes it: a team called ``<script>`` shows as that text.
     """
     team = solution.team
     parts = [markdown.heading(1, team.name), "", f"_{markdown.escape(_subtitle(solution))}_", ""]

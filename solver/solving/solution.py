@@ -1,10 +1,9 @@
 """Solving a team: valid robots per kinematic type, their UI configurations, the totals.
 
 :func:`solve` asks an engine (:mod:`solver.engines`) for the counts or the partition of each
-kinematic type in the team into UI configurations, and numbers the configurations across the
-team. The :class:`Solution` answers the article's
-questions (valid robots, UI configurations, reduction, the bound T, the default configuration)
-and looks up the configuration of any valid robot.
+kinematic type in the team into UI configurations, and numbers the configurations across the team.
+The :class:`Solution` answers the article's questions (valid robots, UI configurations, reduction,
+the bound T, the default configuration) and looks up the configuration of any valid robot.
 
 The JSON contract of ``solve`` and ``count`` lives here too (:func:`solution_data`, which is
 ``Solution.to_dict()``; :func:`counts_data`), made of the parts in

@@ -3,33 +3,31 @@
 Every page of the studio is drawn from these answers, and an operator station or a notebook can
 ask them too (``GET /openapi.json`` describes them). A selection travels in the query string as
 the pages' addresses hold it (:mod:`solver.studio.selection`). A request the library refuses
-gets its located faults (status 422), the same faults the command line prints; the server goes
-on serving.
+gets its located faults (status 422, :func:`problem`), the same faults the command line prints;
+the server goes on serving. Handlers raise, and the application's exception handlers answer
+(:mod:`solver.studio.app`): no handler catches errors of its own.
 
 Not here: the answers themselves (:mod:`solver.studio.service`).
 """
 
 from __future__ import annotations
 
-import functools
-import sys
-import traceback
 from collections.abc import Awaitable, Callable
 from typing import Any
 
 from starlette.concurrency import run_in_threadpool
 from starlette.datastructures import UploadFile
 from starlette.exceptions import HTTPException
-from starlette.requests import ClientDisconnect, Request
+from starlette.requests import Request
 from starlette.responses import JSONResponse, Response, StreamingResponse
 from starlette.routing import BaseRoute, Route
 
-from solver.errors import InputError, SolverError
+from solver import InputError, SolverError
 from solver.files.yamlio import MAX_FILE_BYTES
 from solver.studio.service import Studio, faults_data
 from solver.studio.workspace import MAX_UPLOAD_FILES, Upload
 
-__all__ = ["read_uploads", "routes", "safely"]
+__all__ = ["INTERNAL_ERROR", "internal_error", "problem", "read_uploads", "routes"]
 
 Handler = Callable[[Request], Awaitable[Response]]
 # Seconds an event stream waits for an event before a keep-alive comment.
@@ -38,32 +36,19 @@ KEEP_ALIVE = 15.0
 MAX_STREAMS = 32
 
 
+# What a request that failed unexpectedly is told (the details go to the server's console).
+INTERNAL_ERROR = "internal error (the studio's console has the details)"
+
+
 def problem(error: SolverError, status: int = 422) -> JSONResponse:
+    """A located error's answer: its faults as JSON, as ``--format json`` gives them."""
     return JSONResponse(faults_data(error), status_code=status)
 
 
-def safely(handler: Handler) -> Handler:
-    """``handler`` whose located errors are answered as JSON (422), and whose unexpected
-    failures are answered (500, the traceback on the server's stderr) without ending the
-    server."""
-
-    @functools.wraps(handler)
-    async def wrapped(request: Request) -> Response:
-        try:
-            return await handler(request)
-        except SolverError as error:
-            return problem(error)
-        except ClientDisconnect:
-            # Gone, or cut off past the body's bound (solver.studio.security): no one to answer.
-            return Response(status_code=400, headers={"connection": "close"})
-        except Exception:
-            traceback.print_exc(file=sys.stderr)
-            return JSONResponse(
-                {"error": "internal error (the studio's console has the details)", "faults": []},
-                status_code=500,
-            )
-
-    return wrapped
+def internal_error() -> JSONResponse:
+    """The answer to a request that failed unexpectedly (500): no details, which are the
+    console's."""
+    return JSONResponse({"error": INTERNAL_ERROR, "faults": []}, status_code=500)
 
 
 def _studio(request: Request) -> Studio:
@@ -115,7 +100,7 @@ def _json(call: Callable[[Studio, list[tuple[str, str]]], Any]) -> Handler:
         pairs = _pairs(request)
         return JSONResponse(await run_in_threadpool(call, studio, pairs))
 
-    return safely(handler)
+    return handler
 
 
 async def solve(request: Request) -> Response:
@@ -251,7 +236,7 @@ def _download(
             headers={"content-disposition": f'attachment; filename="{name}"'},
         )
 
-    return safely(handler)
+    return handler
 
 
 async def team_yaml(request: Request) -> Response:
@@ -295,7 +280,6 @@ async def model_uvl(request: Request) -> Response:
     return await _download(lambda s, p: s.uvl_text(p), "text/plain", "team.uvl")(request)
 
 
-@safely
 async def chart(request: Request) -> Response:
     """A chart of `teleop-ui report` as SVG: radar (Figure 9), bars or the component matrix.
     ---
@@ -311,7 +295,6 @@ async def chart(request: Request) -> Response:
     return Response(body, media_type="image/svg+xml")
 
 
-@safely
 async def upload_rules(request: Request) -> Response:
     """Upload a rule set (multipart field `file`); it is read as `teleop-ui check` reads one.
     ---
@@ -331,7 +314,6 @@ async def upload_rules(request: Request) -> Response:
     return JSONResponse({"id": source.id, "name": source.rules.name, "file": source.rules.file})
 
 
-@safely
 async def upload_team(request: Request) -> Response:
     """Upload a team file (multipart field `file`), read against the selected rule set.
     ---
@@ -348,7 +330,6 @@ async def upload_team(request: Request) -> Response:
     return JSONResponse({"query": query})
 
 
-@safely
 async def identify(request: Request) -> Response:
     """Identify uploaded robot descriptions (field `file`, repeated): `teleop-ui fleet`.
     Xacro files are never compiled here.
@@ -364,7 +345,6 @@ async def identify(request: Request) -> Response:
     return JSONResponse(data)
 
 
-@safely
 async def identify_folder(request: Request) -> Response:
     """Identify the robots of a folder given at start (`--fleet DIR`), by its index.
     ---
@@ -382,7 +362,6 @@ async def identify_folder(request: Request) -> Response:
     return JSONResponse(data)
 
 
-@safely
 async def fleet_team(request: Request) -> Response:
     """The team selection of an identified fleet (`teleop-ui fleet -o TEAM`).
     ---
@@ -397,7 +376,6 @@ async def fleet_team(request: Request) -> Response:
     return JSONResponse(data)
 
 
-@safely
 async def live_state(request: Request) -> Response:
     """The live graph now: robots with their configurations, the operator's selection.
     ---
@@ -420,7 +398,6 @@ async def live_state(request: Request) -> Response:
     )
 
 
-@safely
 async def live_events(request: Request) -> Response:
     """The watcher's events as they come (Server-Sent Events; each `data:` is one event of
     `teleop-ui watch`, with the studio's own `seq`). `Last-Event-ID` resumes.

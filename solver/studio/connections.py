@@ -102,7 +102,7 @@ class FencedProtocol(H11Protocol):
 
     fence: Fence
 
-    def connection_made(self, transport: asyncio.Transport) -> None:  # type: ignore[override]
+    def connection_made(self, transport: asyncio.Transport) -> None:  # type: ignore[override]  # a TCP transport
         super().connection_made(transport)
         self.fence.opened(self)
 

@@ -29,9 +29,9 @@ from __future__ import annotations
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 
+from solver import Characteristic, RuleSet
 from solver.check.context import item_path
 from solver.core.forbidden import Removed
-from solver.core.ruleset import Characteristic, RuleSet
 from solver.files.yamlio import Document, PathPart, format_path
 
 __all__ = ["Place", "Places", "place_data", "places", "rule_places", "selection_places"]

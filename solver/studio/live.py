@@ -7,7 +7,8 @@ answers) and the newest events, numbered, so a page that reconnects asks for wha
 A graph that cannot be reached is reported and retried until the studio stops; nothing a graph
 sends can stop the feed.
 
-Not here: watching (:mod:`solver.live`), HTTP (:mod:`solver.studio.api`).
+Not here: watching (:mod:`solver.live`; the one way a watcher is made on a graph,
+:func:`solver.open_watcher`), HTTP (:mod:`solver.studio.api`).
 """
 
 from __future__ import annotations
@@ -20,14 +21,13 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from solver.errors import SolverError
+from solver import SolverError
 from solver.live.events import event_data
 
 if TYPE_CHECKING:
-    from solver.live.watcher import Watcher
-    from solver.solving.solution import Solution
+    from solver import GraphAddress, Profile, Solution, Watcher
 
-__all__ = ["MAX_KEPT_EVENTS", "LiveFeed", "LiveState"]
+__all__ = ["MAX_KEPT_EVENTS", "LiveFeed", "LiveState", "live_feed"]
 
 # Events kept for pages that (re)connect; older ones are summed up by the state.
 MAX_KEPT_EVENTS = 500
@@ -175,6 +175,25 @@ class LiveFeed:
             self._events.append(event)
             self._changed.notify_all()
             self._wake()
+
+
+def live_feed(
+    address: GraphAddress,
+    solution: Solution,
+    profile: Profile,
+    *,
+    interval: float = 0.2,
+    timeout: float = 2.0,
+) -> LiveFeed:
+    """The feed of the graph at ``address`` for ``solution``'s team, named as a person reads
+    the address; each watcher it runs is made as ``watch`` makes its own
+    (:func:`solver.open_watcher`)."""
+    from solver import open_watcher
+
+    def make() -> Watcher:
+        return open_watcher(address, solution, profile, interval=interval, timeout=timeout)
+
+    return LiveFeed(address.label, solution, make)
 
 
 def _message(error: SolverError) -> str:

@@ -6,15 +6,17 @@ Each page shows what an API answer holds (:mod:`solver.studio.service`), drawn b
 (:mod:`solver.studio.selection`), so every link carries it along, and forms that change
 something post back to the studio itself and land on an address that shows the result.
 
+A page's handler starts by making its :class:`Page` (kept with the request) and raises what
+fails; the application's exception handlers (:mod:`solver.studio.app`) then show that page
+with the located faults (:func:`refused`, status 422) or say it failed (:func:`failed`, 500).
+
 Not here: the JSON (:mod:`solver.studio.api`), the answers (:mod:`solver.studio.service`).
 """
 
 from __future__ import annotations
 
 import functools
-import sys
-import traceback
-from collections.abc import Awaitable, Callable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 from urllib.parse import urlencode
@@ -25,19 +27,17 @@ from starlette.requests import Request
 from starlette.responses import HTMLResponse, RedirectResponse, Response
 from starlette.routing import BaseRoute, Route
 
+from solver import Characteristic, Fault, InputError, RuleSet, SolverError
 from solver.core.forbidden import Removed
-from solver.core.ruleset import Characteristic, RuleSet
-from solver.errors import Fault, InputError, SolverError
 from solver.solving.reproduce import published_note
-from solver.studio.api import read_uploads
+from solver.studio.api import INTERNAL_ERROR, read_uploads
 from solver.studio.selection import SELECTION_FILE
 from solver.studio.service import CHART_KINDS, MAX_PAGE, Chosen, Studio, robot_pairs
 from solver.untrusted import shown
 
-__all__ = ["routes", "selection_pairs"]
+__all__ = ["failed", "page_of", "refused", "routes", "selection_pairs"]
 
 Pairs = Sequence[tuple[str, str]]
-Handler = Callable[[Request], Awaitable[Response]]
 PER_PAGE = 50
 # The views, in the order the navigation shows them: (path, title).
 VIEWS = (
@@ -113,8 +113,18 @@ class Page:
 
 
 def _page(request: Request, title: str) -> Page:
+    """The page ``request`` asks for, kept with the request: an error its handler raises is
+    shown in it (:func:`refused`, :func:`failed`)."""
     studio: Studio = request.app.state.studio
-    return Page(request, studio, list(request.query_params.multi_items()), title)
+    page = Page(request, studio, list(request.query_params.multi_items()), title)
+    request.state.page = page
+    return page
+
+
+def page_of(request: Request) -> Page | None:
+    """The page ``request`` asked for, when it asked for one (not the JSON API)."""
+    page = getattr(request.state, "page", None)
+    return page if isinstance(page, Page) else None
 
 
 def _choose(page: Page) -> Chosen | None:
@@ -139,39 +149,24 @@ def _first(pairs: Pairs, name: str) -> str | None:
     return next((v for k, v in pairs if k == name), None)
 
 
-def guarded(title: str) -> Callable[[Callable[[Page], Awaitable[Response]]], Handler]:
-    """A page handler whose located errors are shown in the page (status 422) and whose
-    unexpected failures are shown as such (500) while the studio goes on serving."""
+def refused(page: Page, error: SolverError) -> Response:
+    """``page`` showing the located errors that stopped it (status 422), with the selection's
+    controls as far as they could be read."""
+    page.faults.extend(error.faults)
+    if page.chosen is None:
+        _choose(page)
+    return page.render("error.html", status=422)
 
-    def decorate(handler: Callable[[Page], Awaitable[Response]]) -> Handler:
-        @functools.wraps(handler)
-        async def wrapped(request: Request) -> Response:
-            page = _page(request, title)
-            try:
-                return await handler(page)
-            except SolverError as error:
-                page.faults.extend(error.faults)
-                if page.chosen is None:
-                    _choose(page)
-                return page.render("error.html", status=422)
-            except Exception:
-                traceback.print_exc(file=sys.stderr)
-                page.faults.append(
-                    Fault(
-                        page_location(),
-                        "internal error (the studio's console has the details)",
-                        "internal",
-                    )
-                )
-                return page.render("error.html", status=500)
 
-        return wrapped
-
-    return decorate
+def failed(page: Page) -> Response:
+    """``page`` saying that something unexpected failed (status 500); the details are the
+    console's."""
+    page.faults.append(Fault(page_location(), INTERNAL_ERROR, "internal"))
+    return page.render("error.html", status=500)
 
 
 def page_location() -> Any:
-    from solver.errors import Location
+    from solver import Location
 
     return Location("<studio>")
 
@@ -234,7 +229,7 @@ def shown_view(rules: RuleSet, view: str) -> str:
 
 
 def _components_text(characteristic: Characteristic, value: object) -> str:
-    return ", ".join(c.name for c in characteristic.components_of(value))  # type: ignore[arg-type]
+    return ", ".join(c.name for c in characteristic.components_of(value))  # type: ignore[arg-type]  # a Value
 
 
 def _type_controls(page: Page, view: str) -> list[TypeControl]:
@@ -388,8 +383,8 @@ def _bounded(text: str | None, low: int, high: int, default: int) -> int:
     return min(max(int(text), low), high)
 
 
-@guarded("Selection")
-async def selection(page: Page) -> Response:
+async def selection(request: Request) -> Response:
+    page = _page(request, "Selection")
     start = page.studio.workspace.start_team
     if not page.pairs and start is not None:
         # The bare address shows the team the studio was started with.
@@ -439,8 +434,9 @@ async def selection(page: Page) -> Response:
 # -- configurations, robots, one robot ---------------------------------------------------------
 
 
-@guarded("Configurations")
-async def configurations(page: Page) -> Response:
+async def configurations(request: Request) -> Response:
+    page = _page(request, "Configurations")
+
     def work() -> dict[str, Any]:
         offset = _number(page.pairs, "offset", 0)
         pairs = [*page.pairs, ("offset", str(offset)), ("limit", str(PER_PAGE))]
@@ -508,8 +504,8 @@ def _only_last(pairs: Sequence[tuple[str, str]]) -> list[tuple[str, str]]:
     return [(k, v) for k, v in pairs if k not in last] + list(last.items())
 
 
-@guarded("Configuration")
-async def configuration(page: Page) -> Response:
+async def configuration(request: Request) -> Response:
+    page = _page(request, "Configuration")
     text = page.request.path_params["number"]
     number = int(text) if text.isdigit() and len(text) < 18 else -1
 
@@ -538,8 +534,9 @@ async def configuration(page: Page) -> Response:
     return page.render("configuration.html", **await run_in_threadpool(work))
 
 
-@guarded("Robots")
-async def robots(page: Page) -> Response:
+async def robots(request: Request) -> Response:
+    page = _page(request, "Robots")
+
     def work() -> dict[str, Any]:
         offset = _number(page.pairs, "offset", 0)
         pairs = _only_last([*page.pairs, ("offset", str(offset)), ("limit", str(PER_PAGE))])
@@ -586,8 +583,9 @@ async def robots(page: Page) -> Response:
 # -- charts, check, export ---------------------------------------------------------------------
 
 
-@guarded("Charts")
-async def charts(page: Page) -> Response:
+async def charts(request: Request) -> Response:
+    page = _page(request, "Charts")
+
     def work() -> None:
         page.chosen = page.studio.chosen(page.pairs)
         page.chosen.require()
@@ -596,8 +594,9 @@ async def charts(page: Page) -> Response:
     return page.render("charts.html", kinds=CHART_KINDS)
 
 
-@guarded("Check")
-async def check(page: Page) -> Response:
+async def check(request: Request) -> Response:
+    page = _page(request, "Check")
+
     def work() -> dict[str, Any]:
         data = page.studio.check_data(page.pairs)
         page.chosen = page.studio.chosen(page.pairs)
@@ -606,9 +605,9 @@ async def check(page: Page) -> Response:
     return page.render("check.html", **await run_in_threadpool(work))
 
 
-@guarded("Rule set")
-async def rules_source(page: Page) -> Response:
+async def rules_source(request: Request) -> Response:
     """The rule set's text with its lines numbered: where findings and constraints link to."""
+    page = _page(request, "Rule set")
 
     def work() -> dict[str, Any]:
         _choose(page)
@@ -618,8 +617,9 @@ async def rules_source(page: Page) -> Response:
     return page.render("rules_source.html", **await run_in_threadpool(work))
 
 
-@guarded("Export")
-async def export(page: Page) -> Response:
+async def export(request: Request) -> Response:
+    page = _page(request, "Export")
+
     def work() -> dict[str, Any]:
         page.chosen = page.studio.chosen(page.pairs)
         page.chosen.require()
@@ -628,8 +628,8 @@ async def export(page: Page) -> Response:
     return page.render("export.html", **await run_in_threadpool(work))
 
 
-@guarded("Import")
-async def upload_team(page: Page) -> Response:
+async def upload_team(request: Request) -> Response:
+    page = _page(request, "Import")
     uploads, _ = await read_uploads(page.request)
     if len(uploads) != 1:
         raise InputError.at("<upload>", "choose one team file to import")
@@ -637,8 +637,8 @@ async def upload_team(page: Page) -> Response:
     return RedirectResponse(f"/?{_query(query)}", status_code=303)
 
 
-@guarded("Rule set")
-async def upload_rules(page: Page) -> Response:
+async def upload_rules(request: Request) -> Response:
+    page = _page(request, "Rule set")
     uploads, _ = await read_uploads(page.request)
     if len(uploads) != 1:
         raise InputError.at("<upload>", "choose one rule set file to upload")
@@ -649,8 +649,9 @@ async def upload_rules(page: Page) -> Response:
 # -- fleet ---------------------------------------------------------------------------------------
 
 
-@guarded("Fleet")
-async def fleet(page: Page) -> Response:
+async def fleet(request: Request) -> Response:
+    page = _page(request, "Fleet")
+
     def work() -> None:
         _choose(page)
 
@@ -658,24 +659,24 @@ async def fleet(page: Page) -> Response:
     return page.render("fleet.html", data=None, folders=page.studio.workspace.folders)
 
 
-@guarded("Fleet")
-async def fleet_upload(page: Page) -> Response:
+async def fleet_upload(request: Request) -> Response:
+    page = _page(request, "Fleet")
     uploads, _ = await read_uploads(page.request)
     data = await run_in_threadpool(page.studio.identify_uploads, uploads, page.pairs)
     _choose(page)
     return page.render("fleet.html", data=data, folders=page.studio.workspace.folders)
 
 
-@guarded("Fleet")
-async def fleet_folder(page: Page) -> Response:
+async def fleet_folder(request: Request) -> Response:
+    page = _page(request, "Fleet")
     index = _number([("i", page.request.path_params["index"])], "i", -1)
     data = await run_in_threadpool(page.studio.identify_folder, index, page.pairs)
     _choose(page)
     return page.render("fleet.html", data=data, folders=page.studio.workspace.folders)
 
 
-@guarded("Fleet")
-async def fleet_team(page: Page) -> Response:
+async def fleet_team(request: Request) -> Response:
+    page = _page(request, "Fleet")
     fleet_id = page.request.path_params["fleet"]
     data = await run_in_threadpool(page.studio.fleet_team, fleet_id, page.pairs)
     return RedirectResponse(f"/?{_query(data['query'])}", status_code=303)
@@ -684,8 +685,8 @@ async def fleet_team(page: Page) -> Response:
 # -- live, API -----------------------------------------------------------------------------------
 
 
-@guarded("Live")
-async def live(page: Page) -> Response:
+async def live(request: Request) -> Response:
+    page = _page(request, "Live")
     _choose(page)
     feed = page.studio.live
     state = None if feed is None else feed.state()
@@ -693,8 +694,8 @@ async def live(page: Page) -> Response:
     return page.render(template, state=state)
 
 
-@guarded("API")
-async def api_index(page: Page) -> Response:
+async def api_index(request: Request) -> Response:
+    page = _page(request, "API")
     from solver.studio.api import routes as api_routes
 
     _choose(page)

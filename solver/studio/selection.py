@@ -28,8 +28,8 @@ from dataclasses import dataclass
 
 import yaml
 
-from solver.core.ruleset import RuleSet
-from solver.core.team import Team, parse_team
+from solver import RuleSet, Team
+from solver.core.team import parse_team
 from solver.files.yamlio import parse_document
 from solver.solving.teamfile import selection_form
 

@@ -20,7 +20,7 @@ from typing import Any
 
 import uvicorn
 
-from solver.errors import InputError
+from solver import InputError
 from solver.studio.connections import BACKLOG, Fence, protocol_class
 from solver.studio.security import MAX_QUERY_BYTES
 from solver.studio.service import Studio

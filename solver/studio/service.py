@@ -19,13 +19,11 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from solver.core.ruleset import RuleSet
-from solver.core.team import Team
-from solver.errors import InputError, SolverError
+from solver import InputError, RuleSet, Solution, SolverError, Team, assign
 from solver.reporting.svg import CHART_KINDS, chart_svg
-from solver.solving.assignment import assign, assignment_data
+from solver.solving.assignment import assignment_data
 from solver.solving.contracts import configuration_data
-from solver.solving.solution import Solution, counts_data, solution_data
+from solver.solving.solution import counts_data, solution_data
 from solver.solving.teamfile import team_yaml
 from solver.studio.selection import SELECTION_FILE, Selection, parse_query, query_of
 from solver.studio.workspace import (
@@ -37,7 +35,7 @@ from solver.studio.workspace import (
 )
 
 if TYPE_CHECKING:
-    from solver.identify.profile import Profile
+    from solver import Profile
     from solver.studio.live import LiveFeed
 
 __all__ = [
@@ -140,7 +138,7 @@ class Studio:
     def profile(self) -> Profile:
         """The identification profile given at start, else the shipped one."""
         if self._profile is None:
-            from solver.identify import load_profile
+            from solver import load_profile
 
             self._profile = load_profile()
         return self._profile
@@ -251,7 +249,7 @@ class Studio:
         return copy.deepcopy(data), text
 
     def _check(self, chosen: Chosen, seconds: float | None) -> tuple[dict[str, Any], str | None]:
-        from solver.check import check_files
+        from solver import check_files
         from solver.check.render import json_data
 
         source = chosen.source
@@ -341,7 +339,7 @@ class Studio:
 
     def report_html(self, pairs: Pairs) -> str:
         """``teleop-ui report TEAM -o FILE.html``: the HTML report."""
-        from solver.reporting.report import render_html
+        from solver import render_html
 
         solution = self.solution(self.chosen(pairs), listed=True)
         with self._drawing:
@@ -349,13 +347,13 @@ class Studio:
 
     def uvl_text(self, pairs: Pairs) -> str:
         """``teleop-ui export TEAM --format uvl``."""
-        from solver.reporting.uvl import team_to_uvl
+        from solver import team_to_uvl
 
         return team_to_uvl(self.chosen(pairs).require())
 
     def layouts_zip(self, pairs: Pairs) -> bytes:
         """``teleop-ui layouts`` for Foxglove/Lichtblick and for RViz2, one zip of both."""
-        from solver.layouts import load_presentation
+        from solver import load_presentation
         from solver.layouts.targets import TARGETS
         from solver.layouts.writer import check_layout_count, layout_texts
         from solver.limits import limit
@@ -440,7 +438,8 @@ class Studio:
         return self._identify(folders[index], pairs, shown=None)
 
     def _identify(self, folder: Any, pairs: Pairs, *, shown: str | None) -> dict[str, Any]:
-        from solver.identify import identification_data, identify_fleet
+        from solver import identify_fleet
+        from solver.identify import identification_data
         from solver.identify.combinations import combinations
 
         chosen = self.chosen(pairs)
@@ -519,8 +518,8 @@ class Studio:
 
 @functools.cache
 def _shipped_teams() -> tuple[Team, ...]:
+    from solver import load_team
     from solver.core.rules import shipped_name, shipped_path
-    from solver.core.team import load_team
 
     return tuple(
         load_team(path, display=shipped_name(path) or str(path))

@@ -35,15 +35,12 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Literal, TypeVar
 
+from solver import InputError, RuleSet, Solution, Team, load_rules, load_team, solve
 from solver.core.forbidden import Removed, excluded_by_rules
-from solver.core.rules import load_rules, shipped_name, shipped_path
-from solver.core.ruleset import RuleSet
-from solver.core.team import Team, load_team
-from solver.errors import InputError
+from solver.core.rules import shipped_name, shipped_path
 from solver.files.filekind import file_kind
 from solver.files.yamlio import MAX_FILE_BYTES, load_document
 from solver.solving.reproduce import published_for
-from solver.solving.solution import Solution, solve
 from solver.studio.selection import SELECTION_FILE, Selection, team_of
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 

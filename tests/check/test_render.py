@@ -11,6 +11,7 @@ import pytest
 from sarif import loader
 
 from solver.check import ALL_CHECKS, Report, check_files, render
+from solver.check.render import sarif_text
 from tests.check.helpers import fixture
 
 TEXT_LINE = re.compile(
@@ -113,6 +114,12 @@ def test_sarif_declares_every_check_as_a_rule_and_points_results_at_them(report:
         assert region["startColumn"] >= 1
     conflict = next(r for r in run["results"] if r["ruleId"] == "conflict")
     assert [r["id"] for r in conflict["relatedLocations"]] == [1]
+
+
+def test_sarif_messages_hold_no_link() -> None:
+    assert sarif_text("[x](javascript:alert(1))") == "\\[x\\](javascript:alert(1))"
+    assert sarif_text("a\\[b") == "a\\\\\\[b"
+    assert sarif_text("plain (text)") == "plain (text)"
 
 
 def test_every_format_is_identical_on_a_second_run(report: Report) -> None:

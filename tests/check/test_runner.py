@@ -15,7 +15,7 @@ from tests.conftest import RULES, TEAMS
 
 
 def _checks(files: list[Path], **options: object) -> list[tuple[str, str]]:
-    report = check_files(files, **options)  # type: ignore[arg-type]
+    report = check_files(files, **options)  # type: ignore[arg-type]  # keywords of several types
     return [(Path(f.location.file).name, f.check) for f in report.findings]
 
 

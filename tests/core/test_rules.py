@@ -2,11 +2,14 @@
 
 from __future__ import annotations
 
+import sys
+import threading
 from collections.abc import Callable
 from pathlib import Path
 
 import pytest
 
+import solver.core.rules as rules_module
 from solver import RulesError, load_rules, load_team, solve
 from solver.core.rules import default_rules_path
 from solver.core.ruleset import Component
@@ -361,3 +364,46 @@ def test_an_edited_rule_set_is_read_again(tmp_path: Path) -> None:
     )
     with pytest.raises(RulesError, match="duplicate value"):
         load_rules(path)
+
+
+def test_rule_sets_read_from_many_threads_at_once_are_each_read_right(tmp_path: Path) -> None:
+    # The studio reads rule sets from many threads. More files than are kept, read in a
+    # different order by each thread, so that kept rule sets are looked up, added and dropped
+    # by several threads at once; the interpreter switches threads as often as it can.
+    files = []
+    for i in range(3 * rules_module._KEPT_FILES):
+        path = tmp_path / f"rules-{i}.yaml"
+        path.write_text(
+            f"name: set {i}\ncharacteristics:\n  kinematic_type:\n    values: [T{i}]\n",
+            encoding="utf-8",
+        )
+        files.append((path, f"set {i}", (f"T{i}",)))
+    threads = 8
+    start = threading.Barrier(threads)
+    wrong: list[str] = []
+    failures: list[BaseException] = []
+
+    def hammer(offset: int) -> None:
+        start.wait()
+        try:
+            for turn in range(20):
+                for path, name, values in files[offset:] + files[:offset]:
+                    rules = load_rules(path)
+                    if (rules.name, rules.characteristics[0].values) != (name, values):
+                        wrong.append(f"{path.name} read as {rules.name} on turn {turn}")
+        except BaseException as error:  # a thread's exception is lost unless kept
+            failures.append(error)
+
+    interval = sys.getswitchinterval()
+    sys.setswitchinterval(1e-6)
+    try:
+        workers = [threading.Thread(target=hammer, args=(5 * n,)) for n in range(threads)]
+        for worker in workers:
+            worker.start()
+        for worker in workers:
+            worker.join()
+    finally:
+        sys.setswitchinterval(interval)
+    assert failures == []
+    assert wrong == []
+    assert len(rules_module._READ) <= rules_module._KEPT_FILES

@@ -1,7 +1,7 @@
 """The bounded reader: regular files only, at most the limit, every failure located.
 
 A FIFO and standard input from a pipe are tried, as processes with a ceiling, by every command
-in tests/test_hostile.py: here a regression would hang the test run itself.
+in tests/cli/test_hostile_files.py: here a regression would hang the test run itself.
 """
 
 from __future__ import annotations

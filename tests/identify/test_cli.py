@@ -55,6 +55,18 @@ def test_identify_output_is_byte_identical_across_runs(tmp_path: Path) -> None:
     assert json.loads(first.stdout)["structure"] == "Torso"
 
 
+@pytest.mark.parametrize("team", [[], ["--team", "case2"]], ids=["alone", "with a team"])
+def test_identify_text_ends_with_its_last_line_not_a_blank_one(
+    tmp_path: Path, team: list[str]
+) -> None:
+    path = tmp_path / "rover.urdf"
+    path.write_text(builders.ugv().text())
+    result = run_cli("identify", path, *team)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.endswith("\n")
+    assert not result.stdout.endswith("\n\n")
+
+
 def test_a_missing_file_or_bad_arg_exits_2(tmp_path: Path) -> None:
     missing = run_cli("identify", tmp_path / "none.urdf")
     assert missing.returncode == 2

@@ -1,20 +1,20 @@
-"""Identification from text, its cache, and UI configurations for a team."""
+"""Identification from text (solver.identify.identification): its cache, topics that confirm
+what a description can only guess, and mutated URDFs identified or refused."""
 
 from __future__ import annotations
 
-from solver.core.team import load_team
+from hypothesis import given
+
+from solver.errors import SolverError
 from solver.identify import (
     IdentificationCache,
     Topic,
     TopicSource,
-    combinations,
     content_key,
-    identification_data,
     identify_urdf,
     load_profile,
 )
-from solver.solving.solution import solve
-from tests.conftest import TEAMS
+from tests.hostile import FUZZ, mutations
 from tests.identify import builders
 
 LASER = builders.gazebo_sensor("laser", "ray", "laser")
@@ -76,57 +76,13 @@ def test_topics_confirm_the_waypoint_a_description_can_only_guess() -> None:
     assert (lidar.kind, lidar.count, lidar.source) == ("lidar", 1, "urdf: laser; live: /scan")
 
 
-def test_a_ugv_gets_a_ui_configuration_per_control_and_sensor_type() -> None:
-    solution = solve(load_team(TEAMS / "case2.yaml"))
-    result = identify_urdf(rover_text())
-    found = combinations(result, solution, load_profile())
-    # Driven by its plugin; Waypoint guessed from the drive and the lidar.
-    assert [dict(c.values) for c in found] == [
-        {
-            "kinematic_type": "UGV",
-            "motion_control": control,
-            "sensor_type": sensor,
-            "sensor_count": "2",
-        }
-        for control in ("Driving", "Waypoint")
-        for sensor in ("LIDAR", "2D Camera")
-    ]
-    numbers = [c.assignment.number for c in found]
-    assert all(not c.assignment.is_default for c in found)
-    assert len(set(numbers)) == 4  # each control and each sensor type presented differently
-
-
-def test_a_quadruped_gets_the_default_configuration_with_the_reason() -> None:
-    solution = solve(load_team(TEAMS / "case3.yaml"))
-    robot = builders.quadruped()
-    robot.add(CAMERA)
-    found = combinations(identify_urdf(robot.text()), solution, load_profile())
-    assignment = found[0].assignment
-    assert assignment.is_default
-    assert assignment.number == solution.default_configuration
-    assert any("unknown robot kinematic type 'Quadruped'" in r for r in assignment.reasons)
-
-
-def test_the_json_contract_has_exactly_the_documented_keys() -> None:
-    solution = solve(load_team(TEAMS / "case2.yaml"))
-    result = identify_urdf(rover_text(), file="rover.urdf")
-    data = identification_data(result, combinations(result, solution, load_profile()), solution)
-    assert list(data) == [
-        "robot",
-        "file",
-        "structure",
-        "kinematic_type",
-        "confidence",
-        "evidence",
-        "roles",
-        "sensors",
-        "motion_controls",
-        "combinations",
-    ]
-    assert list(data["roles"][0]) == ["joint", "role", "evidence"]
-    assert list(data["sensors"][0]) == ["kind", "sensor_type", "count", "source"]
-    assert list(data["motion_controls"][0]) == ["motion_control", "source"]
-    assert (
-        data["combinations"][0]["configuration"]
-        == combinations(result, solution, load_profile())[0].assignment.number
-    )
+@FUZZ
+@given(data=mutations(builders.ugv().text().encode()))
+def test_mutated_urdfs_are_identified_or_refused(data: bytes) -> None:
+    try:
+        identify_urdf(data, file="fuzz.urdf")
+    except SolverError as error:
+        message = str(error)
+    else:
+        return
+    assert message.startswith("fuzz.urdf")

@@ -56,7 +56,7 @@ def test_an_srdf_group_may_list_the_srdfs_own_virtual_joint() -> None:
     urdf = parse_urdf(builders.manipulator().text())
     srdf = parse_srdf(ARM_SRDF.format(extra="", groups=""), "arm.srdf", urdf)
     assert srdf.group("arm") is not None
-    assert "world_joint" in srdf.group("arm").joints  # type: ignore[union-attr]
+    assert "world_joint" in srdf.group("arm").joints  # type: ignore[union-attr]  # asserted above
 
 
 def test_srdf_items_the_urdf_lacks_are_dropped_with_a_warning_and_the_rest_kept() -> None:
@@ -156,7 +156,8 @@ def test_a_spherical_joint_is_read_as_a_ball_joint_with_a_warning() -> None:
     robot.chain(robot.root, ["neck"], "spherical")
     result = identify_urdf(robot.text(), file="h.urdf")
     # A ball-joint shoulder and an elbow: an arm of four degrees of freedom.
-    assert (result.structure, result.body.count("arm")) == ("Humanoid", 2)  # type: ignore[union-attr]
+    assert result.body is not None
+    assert (result.structure, result.body.count("arm")) == ("Humanoid", 2)
     assert {w.message.split(";")[0] for w in result.warnings} == {"unknown joint type 'spherical'"}
 
 

@@ -19,7 +19,6 @@ from solver.layouts import (
     validate_foxglove,
     write_layouts,
 )
-from solver.layouts.presentation import PresentationError
 
 
 def test_layouts_writes_one_file_per_configuration_plus_the_default(tmp_path: Path) -> None:
@@ -167,16 +166,6 @@ def test_validation_reports_orphan_configs_and_bad_splits() -> None:
     assert "unknown panel type" in message
 
 
-def test_profile_with_unknown_component_and_panel_is_a_located_error(tmp_path: Path) -> None:
-    path = tmp_path / "p.yaml"
-    path.write_text("profile: presentation\ncomponents:\n  smell:\n    panel: Nose\n    topic: x\n")
-    with pytest.raises(PresentationError) as caught:
-        load_presentation(path, solve(load_team("case1")).rules)
-    message = str(caught.value)
-    assert f"{path}:3:3: components.smell: unknown component 'smell'" in message
-    assert "unknown panel 'Nose'" in message
-
-
 def test_layouts_command_exits_2_on_an_unusable_presentation(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
@@ -238,24 +227,6 @@ def test_rviz_gives_velocity_control_a_placeholder_that_subscribes_to_nothing() 
         "Enabled": False,
         "Name": "Flight: cmd_vel (placeholder: no RViz2 display for this component)",
     }
-
-
-def test_a_presentation_topic_that_is_no_ros2_name_is_a_located_error(tmp_path: Path) -> None:
-    path = tmp_path / "p.yaml"
-    path.write_text(
-        "profile: presentation\ncomponents:\n  visual display:\n    panel: Image\n"
-        "    topic: <robot>/front-camera\n"
-    )
-    with pytest.raises(PresentationError) as caught:
-        load_presentation(path)
-    assert str(caught.value) == (
-        f"{path}:5:12: components.visual display.topic: the topic under a robot (/robot1) has a "
-        "character other than a letter, a digit, '_' or '/' at 14"
-    )
-
-
-def test_a_component_the_presentation_omits_gets_a_topic_that_is_a_ros2_name() -> None:
-    assert load_presentation().spec("360 microphone").topic == "<robot>/component_360_microphone"
 
 
 def test_a_component_the_presentation_omits_is_a_panel_whose_title_says_it_is_a_placeholder() -> (

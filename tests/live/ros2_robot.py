@@ -85,21 +85,21 @@ def struct(type_name: str) -> type:
 def discovery_types(size: int) -> tuple[Any, Any, Any]:
     @dataclass
     class Gid(IdlStruct, typename="rmw_dds_common::msg::dds_::Gid_"):
-        data: array[uint8, size]  # type: ignore[valid-type,type-arg]
+        data: array[uint8, size]  # type: ignore[valid-type,type-arg]  # an IDL type, not Python
 
     @dataclass
     class NodeEntitiesInfo(IdlStruct, typename="rmw_dds_common::msg::dds_::NodeEntitiesInfo_"):
         node_namespace: str
         node_name: str
-        reader_gid_seq: sequence[Gid]  # type: ignore[type-arg]
-        writer_gid_seq: sequence[Gid]  # type: ignore[type-arg]
+        reader_gid_seq: sequence[Gid]  # type: ignore[type-arg]  # an IDL type, not Python
+        writer_gid_seq: sequence[Gid]  # type: ignore[type-arg]  # an IDL type, not Python
 
     @dataclass
     class ParticipantEntitiesInfo(
         IdlStruct, typename="rmw_dds_common::msg::dds_::ParticipantEntitiesInfo_"
     ):
         gid: Gid
-        node_entities_info_seq: sequence[NodeEntitiesInfo]  # type: ignore[type-arg]
+        node_entities_info_seq: sequence[NodeEntitiesInfo]  # type: ignore[type-arg]  # an IDL type, not Python
 
     return Gid, NodeEntitiesInfo, ParticipantEntitiesInfo
 
@@ -197,7 +197,7 @@ class Robot:
                 if info is None or info.valid_data:  # not a disposal notice
                     writer.write(sample)
 
-        listener = Listener(on_data_available=repeat)  # type: ignore[no-untyped-call]
+        listener = Listener(on_data_available=repeat)  # type: ignore[no-untyped-call]  # cyclonedds has no hints
         reader = DataReader(
             self.participant, self.topic("rt" + topic, string), qos=LATCHED, listener=listener
         )

@@ -67,7 +67,7 @@ def test_a_watcher_follows_the_demo_fleet_and_the_operator_gets_its_answers(
         # before the other, and the answer to both follows.
         for robot in ROBOTS:
             answered = watch.wait_for(
-                lambda d, robot=robot: (  # type: ignore[misc]
+                lambda d, robot=robot: (  # type: ignore[misc]  # mypy: a default in a lambda
                     d["event"] == "selection_changed"
                     and d["robot"] == robot.namespace
                     and d["active"]["motion_control"] in robot.controls

@@ -40,7 +40,7 @@ TIMEOUT = 60.0
 
 
 def _layout(path: Path) -> dict[str, Any]:
-    return json.loads(path.read_text(encoding="utf-8"))  # type: ignore[no-any-return]
+    return json.loads(path.read_text(encoding="utf-8"))  # type: ignore[no-any-return]  # json gives Any
 
 
 def _topics(layout: dict[str, Any]) -> dict[str, str]:

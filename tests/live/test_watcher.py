@@ -10,8 +10,10 @@ from solver.core.team import load_team
 from solver.identify.profile import Profile
 from solver.live.events import event_data
 from solver.live.graph import MISSING
+from solver.live.sources import graph_address
+from solver.live.sources.ros1 import MasterGraph
 from solver.live.sources.ros1.master import MasterClient
-from solver.live.watcher import Watcher
+from solver.live.watcher import Watcher, open_watcher
 from solver.solving.solution import Solution, solve
 from tests.conftest import TEAMS
 from tests.live.conftest import Recorder
@@ -67,6 +69,19 @@ def test_snapshot_reports_every_robot_then_synced(
     )
     assert synced["robots"] == ["/team/ugv1", "/uav1"]
     assert synced["master"] == master.uri
+
+
+def test_a_watcher_opened_on_an_address_reads_the_graph_there_through_the_lookup(
+    master: Roscore, node: TestNode, solution: Solution, profile: Profile
+) -> None:
+    put_drone(node, "/uav1")
+    address = graph_address(master=master.uri)
+    with open_watcher(address, solution, profile, push=False) as watcher:
+        assert isinstance(watcher.source, MasterGraph)
+        data = [event_data(e, solution) for e in watcher.snapshot()]
+    assert kinds(data) == ["robot_added", "synced"]
+    assert data[0]["robot"] == "/uav1"
+    assert data[1]["master"] == master.uri
 
 
 def test_the_root_namespace_is_a_robot_of_its_own(

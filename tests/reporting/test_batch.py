@@ -535,6 +535,76 @@ def test_ctrl_c_ends_a_batch_with_no_traceback_and_every_team_written_whole_or_n
     assert not [path for path in out.rglob("*") if path.name.endswith(".tmp")]
 
 
+# ---- orphans ---------------------------------------------------------------------------------
+
+
+def _descendants(pid: int) -> set[int]:
+    children: dict[int, list[int]] = {}
+    for entry in Path("/proc").iterdir():
+        if entry.name.isdigit():
+            try:
+                fields = (entry / "stat").read_text().rsplit(")", 1)[1].split()
+            except OSError:
+                continue
+            children.setdefault(int(fields[1]), []).append(int(entry.name))
+    found, todo = set(), [pid]
+    while todo:
+        for child in children.get(todo.pop(), []):
+            if child not in found:
+                found.add(child)
+                todo.append(child)
+    return found
+
+
+def _alive(pid: int) -> bool:
+    try:
+        state = (Path("/proc") / str(pid) / "stat").read_text().rsplit(")", 1)[1].split()[0]
+    except OSError:
+        return False
+    return state != "Z"
+
+
+def test_the_worker_pool_exits_when_batch_is_killed(tmp_path: Path) -> None:
+    import signal
+    import subprocess
+    import time
+
+    from tests.conftest import ROOT
+
+    teams = tmp_path / "teams"
+    teams.mkdir()
+    for number in range(400):
+        (teams / f"t{number}.yaml").write_text(
+            (TEAMS / "case3.yaml")
+            .read_text()
+            .replace("rules: ../paper.yaml", f"rules: {RULES / 'paper.yaml'}")
+        )
+    process = subprocess.Popen(
+        [sys.executable, "-m", "solver", "batch", teams, "-o", tmp_path / "out", "-j", "2"],
+        cwd=ROOT,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.DEVNULL,
+    )
+    pool: set[int] = set()
+    for _ in range(600):  # until the forkserver and both workers are up
+        pool = _descendants(process.pid)
+        if len(pool) >= 3 or process.poll() is not None:
+            break
+        time.sleep(0.05)
+    assert process.poll() is None, "the batch ended before it was killed"
+    assert len(pool) >= 3, "no worker pool was started"
+    os.kill(process.pid, signal.SIGKILL)
+    process.wait()
+    for _ in range(200):  # the workers look every half second
+        if not any(_alive(pid) for pid in pool):
+            break
+        time.sleep(0.1)
+    left = [pid for pid in pool if _alive(pid)]
+    for pid in left:  # do not leave them behind for the next test either
+        os.kill(pid, signal.SIGKILL)
+    assert left == []
+
+
 # ---- links in the output folder and in the input (issue 36.10 and 36.12) ----------------------
 
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import itertools
+import json
 import math
 import os
 import subprocess
@@ -22,7 +23,7 @@ from matplotlib.patches import PathPatch
 from matplotlib.text import Text
 
 from solver import Solution, load_rules, load_team, solve
-from solver.errors import InputError
+from solver.errors import InputError, SolverError
 from solver.reporting.chart import (
     INNER_RADIUS,
     MAX_MATRIX_COLUMNS,
@@ -42,6 +43,7 @@ from solver.reporting.plot import (
     write_plot,
 )
 from tests.conftest import RULES, TEAMS, run_cli
+from tests.hostile import FUZZ, NAME_CHARS
 
 THREE_RULES = """\
 name: Three
@@ -154,7 +156,7 @@ def test_radar_labels_of_the_paper_values_do_not_overlap_and_stay_on_the_page(
     case3: Solution,
 ) -> None:
     figure = radar_figure(case3)
-    renderer = figure.canvas.get_renderer()  # type: ignore[attr-defined]
+    renderer = figure.canvas.get_renderer()  # type: ignore[attr-defined]  # Agg canvas only
     texts = _texts(figure, "tick ") + _texts(figure, "axis ")
     boxes = [t.get_window_extent(renderer) for t in texts]
     page = figure.bbox
@@ -172,7 +174,7 @@ def test_radar_labels_of_the_paper_values_do_not_overlap_and_stay_on_the_page(
 def test_radar_titles_of_flat_spokes_stay_on_the_page() -> None:
     # Five characteristics: two spokes lie almost flat, their titles written out sideways.
     figure = radar_figure(_solved("search-and-rescue"))
-    renderer = figure.canvas.get_renderer()  # type: ignore[attr-defined]
+    renderer = figure.canvas.get_renderer()  # type: ignore[attr-defined]  # Agg canvas only
     page = figure.bbox
     titles = _texts(figure, "axis ")
     assert len(titles) == 5
@@ -620,6 +622,36 @@ def test_radar_draws_every_tex_like_value_as_written(tex_team: Path) -> None:
     drawn = _svg_texts(figure)
     for name in (r"$\input{/etc/passwd}$", "$x^{^{^2}}$", "a$b", "c\\$", r"$\foo{x}$"):
         assert name in drawn
+
+
+# Any name a stranger may write (tests.hostile.NAME_CHARS), four at a time.
+NAMES = st.text(NAME_CHARS, min_size=1, max_size=40).filter(lambda n: n.strip() == n and n)
+
+
+@FUZZ
+@given(names=st.lists(NAMES, min_size=4, max_size=4, unique=True))
+def test_any_names_are_drawn_on_every_chart(
+    tmp_path_factory: pytest.TempPathFactory, names: list[str]
+) -> None:
+    folder = tmp_path_factory.mktemp("chart")
+    quoted = [json.dumps(name) for name in names]  # a JSON string is a YAML string
+    (folder / "rules.yaml").write_text(
+        f"name: {quoted[0]}\nteam_key: kind\ncharacteristics:\n"
+        f"  kind:\n    label: {quoted[1]}\n    values: [{quoted[2]}, {quoted[3]}]\n"
+        f"  count:\n    label: {quoted[0]}\n    range: {{min: 1, max: 3}}\n"
+        f"    components:\n      - {{name: {quoted[3]}, min: 1, max: 3, cluster_size: 1}}\n",
+        encoding="utf-8",
+    )
+    (folder / "team.yaml").write_text(
+        f"name: {quoted[1]}\nrules: rules.yaml\nteam:\n  {quoted[2]}: {{}}\n  {quoted[3]}: {{}}\n",
+        encoding="utf-8",
+    )
+    try:
+        solution = solve(load_team(folder / "team.yaml"))
+    except SolverError:
+        return  # a name the rules refuse (a duplicate once stripped, say) is a located error
+    for draw in (radar_figure, bars_figure, matrix_figure):
+        assert figure_bytes(draw(solution), "svg")
 
 
 def test_reports_and_batch_reports_draw_tex_like_names(tex_team: Path, tmp_path: Path) -> None:

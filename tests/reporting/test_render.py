@@ -1,59 +1,16 @@
-"""Rendering solutions (solver.reporting.render): runs of counts, safe CSV cells, how counts were
-made."""
+"""Rendering solutions (solver.reporting.render): how counts were made, and listings streamed in
+chunks that are the whole JSON or CSV."""
 
 from __future__ import annotations
 
 import json
 from pathlib import Path
 
-import pytest
-
 from solver import load_team, solve
-from solver.files.output import csv_cell, dumps, json_printable
+from solver.files.output import json_printable
 from solver.reporting.render import method_text, solution_chunks
-from solver.solving.contracts import integer_runs
 from solver.solving.solution import solution_data
 from tests.conftest import TEAMS
-
-
-def test_sorted_numbers_read_as_runs_of_consecutive_ones() -> None:
-    assert integer_runs([1, 2, 3, 7, 9, 10]) == [(1, 3), (7, 7), (9, 10)]
-    assert integer_runs([]) == []
-
-
-def test_a_cell_that_would_read_as_a_formula_is_neutralised() -> None:
-    assert csv_cell("=1+2") == "'=1+2"
-    assert csv_cell("Camera") == "Camera"
-    assert csv_cell(3) == 3
-
-
-@pytest.mark.parametrize(
-    "cell",
-    [
-        "\uff1d1+2",  # fullwidth = (a Japanese or Chinese keyboard types it; spreadsheets read =)
-        "\uff0b1+2",  # fullwidth +
-        "\uff0d1+2",  # fullwidth -
-        "\uff20SUM(A1)",  # fullwidth @
-        "\ufe66HYPERLINK()",  # small = (and the other compatibility forms of the four)
-        "\ufe62 1",
-        "\ufe63 1",
-        "\ufe6bSUM(A1)",
-        "\u207c1",  # superscript =
-        " =1+2",  # after spaces, which a spreadsheet may trim
-        "\u3000=1+2",  # after an ideographic space
-        "\xa0@SUM(A1)",  # after a no-break space
-        "\n=1+2",  # a line break first
-    ],
-)
-def test_every_form_of_a_formula_start_is_neutralised_issue_36(cell: str) -> None:
-    assert csv_cell(cell) == "'" + cell
-
-
-@pytest.mark.parametrize(
-    "cell", ["-3", "+1.5", "Camera", "ロボット", "\u2212 not a minus sign", " 5", "a=b"]
-)
-def test_text_that_starts_like_no_formula_is_left_as_it_is(cell: str) -> None:
-    assert csv_cell(cell) == cell
 
 
 def test_the_method_says_which_engine_counted_in_words() -> None:
@@ -125,22 +82,3 @@ def test_a_streamed_csv_listing_is_the_whole_csv_in_chunks() -> None:
     assert rows[0] == ["number", *solution.rules.names, "valid_robots"]
     assert len(rows) == 1 + solution.totals.ui_configurations
     assert [int(row[0]) for row in rows[1:]] == [c.number for c in solution.configurations]
-
-
-def test_indented_json_is_what_pythons_encoder_writes_whatever_the_values() -> None:
-    nested: list[object] = []
-    nested.append(nested)
-    values = [
-        {"a": [1, 2.5, -0.0, 1e300, 1e-7, None, True, False, "x\u2028y", {}], "b": [], "c": {}},
-        {"runs": [[1, 5], [7, 7]], "names": ["a", "b"], "mixed": [1, "a", [2.0]]},
-        {1: "a whole-number key"},
-        ("a", "tuple"),
-        [float("nan"), float("inf"), -float("inf")],
-        "\x00\u202e\ud800 unprintable",
-        10**40,
-    ]
-    for value in values:
-        expected = json_printable(json.dumps(value, indent=2, ensure_ascii=False)) + "\n"
-        assert dumps(value) == expected
-    with pytest.raises(ValueError, match="Circular reference"):
-        dumps(nested)

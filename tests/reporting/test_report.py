@@ -5,18 +5,14 @@ from __future__ import annotations
 import errno
 import os
 from collections.abc import Callable
-from html.parser import HTMLParser
 from pathlib import Path
 from typing import Any
 
 import pytest
-from hypothesis import given
-from hypothesis import strategies as st
 from markdown_it import MarkdownIt
 
 from solver import Solution, load_team, solve
 from solver.errors import InputError
-from solver.reporting import markdown
 from solver.reporting.report import (
     image_names,
     render_html,
@@ -26,35 +22,7 @@ from solver.reporting.report import (
     write_report,
 )
 from tests.conftest import TEAMS, run_cli
-
-
-class _Page(HTMLParser):
-    """Collects what a page would make a browser load, and its visible text."""
-
-    def __init__(self) -> None:
-        super().__init__()
-        self.tags: list[str] = []
-        self.references: list[tuple[str, str, str]] = []
-        self.text: list[str] = []
-        self.meta: list[dict[str, str | None]] = []
-
-    def handle_starttag(self, tag: str, attrs: list[tuple[str, str | None]]) -> None:
-        self.tags.append(tag)
-        if tag == "meta":
-            self.meta.append(dict(attrs))
-        for name, value in attrs:
-            if name in ("src", "href", "srcset", "data", "action") and value is not None:
-                self.references.append((tag, name, value))
-
-    def handle_data(self, data: str) -> None:
-        self.text.append(data)
-
-
-def _page(text: str) -> _Page:
-    page = _Page()
-    page.feed(text)
-    page.close()
-    return page
+from tests.reporting.viewer import Cells, parsed, viewer
 
 
 @pytest.fixture(scope="module")
@@ -68,7 +36,7 @@ def case3_html(case3: Solution) -> str:
 
 
 def test_html_report_fetches_nothing_from_the_network(case3_html: str) -> None:
-    page = _page(case3_html)
+    page = parsed(case3_html)
     assert not {"script", "link", "iframe", "object", "embed"} & set(page.tags)
     assert page.references
     # Embedded images, and links to the page's own sections (the contents): nothing fetched.
@@ -84,13 +52,13 @@ def test_html_report_fetches_nothing_from_the_network(case3_html: str) -> None:
 
 
 def test_html_report_embeds_the_matrix_radar_and_bar_charts_as_svg(case3_html: str) -> None:
-    images = [value for tag, _, value in _page(case3_html).references if tag == "img"]
+    images = [value for tag, _, value in parsed(case3_html).references if tag == "img"]
     assert len(images) == 3
     assert all(i.startswith("data:image/svg+xml;base64,") for i in images)
 
 
 def test_html_report_tables_give_the_counts_of_each_type(case3_html: str) -> None:
-    text = " ".join(_page(case3_html).text)
+    text = " ".join(parsed(case3_html).text)
     for figure in ("Mobile Manipulator", "312", "48", "6.50", "872", "102", "8.55"):
         assert figure in text
     assert "bound T = 900 (6 x 6 x 5 x 5)" in text
@@ -242,64 +210,6 @@ def test_report_command_with_an_unknown_extension_exits_2_and_writes_nothing(
     assert list(tmp_path.iterdir()) == []
 
 
-# ---- Markdown shows names as written ----------------------------------------------------------
-
-_PRINTABLE = st.text(alphabet=st.characters(min_codepoint=32, max_codepoint=126))
-
-
-def _viewer(text: str) -> str:
-    """Markdown rendered as a viewer would: CommonMark, tables, raw HTML passed through."""
-    rendered: str = (
-        MarkdownIt("commonmark", {"html": True}).enable(["table", "strikethrough"]).render(text)
-    )
-    return rendered
-
-
-class _Cells(HTMLParser):
-    def __init__(self) -> None:
-        super().__init__()
-        self.tags: list[str] = []
-        self.cells: list[str] = []
-        self._cell: list[str] | None = None
-
-    def handle_starttag(self, tag: str, attrs: list[tuple[str, str | None]]) -> None:  # noqa: ARG002 (HTMLParser's signature)
-        self.tags.append(tag)
-        if tag in ("th", "td"):
-            self._cell = []
-
-    def handle_endtag(self, tag: str) -> None:
-        if tag in ("th", "td") and self._cell is not None:
-            self.cells.append("".join(self._cell))
-            self._cell = None
-
-    def handle_data(self, data: str) -> None:
-        if self._cell is not None:
-            self._cell.append(data)
-
-
-@given(_PRINTABLE)
-def test_a_markdown_table_cell_shows_any_text_as_written(text: str) -> None:
-    cells = _Cells()
-    cells.feed(_viewer(markdown.table(["name"], [[text]])))
-    cells.close()
-    assert set(cells.tags) <= {"table", "thead", "tbody", "tr", "th", "td"}
-    assert cells.cells == ["name", text.strip()]
-
-
-@given(st.lists(_PRINTABLE.filter(str.strip), min_size=1, max_size=3))
-def test_a_markdown_paragraph_shows_any_lines_as_written(lines: list[str]) -> None:
-    page = _page(_viewer(markdown.paragraph("\n".join(lines))))
-    assert set(page.tags) == {"p"}
-    assert "".join(page.text).strip() == "\n".join(line.strip() for line in lines)
-
-
-@given(_PRINTABLE.filter(str.strip))
-def test_a_markdown_heading_shows_any_name_as_written(name: str) -> None:
-    page = _page(_viewer(markdown.heading(1, name)))
-    assert page.tags == ["h1"]
-    assert "".join(page.text).strip() == " ".join(name.split())
-
-
 def test_markdown_report_escapes_names_from_the_rule_and_team_files(
     write_file: Callable[[str, str], Path],
 ) -> None:
@@ -318,7 +228,7 @@ def test_markdown_report_escapes_names_from_the_rule_and_team_files(
         '  "*bold*": {}\n',
     )
     solution = solve(load_team(team))
-    page = _page(_viewer(render_markdown(solution, {"radar": "my report-radar.png"})))
+    page = parsed(viewer(render_markdown(solution, {"radar": "my report-radar.png"})))
     assert set(page.tags) <= {
         "h1",
         "h2",
@@ -347,8 +257,8 @@ def test_markdown_report_escapes_names_from_the_rule_and_team_files(
         "[link](javascript:alert(1))",
     ):
         assert name in text
-    cells = _Cells()
-    cells.feed(_viewer(render_markdown(solution)))
+    cells = Cells()
+    cells.feed(viewer(render_markdown(solution)))
     rows = [cells.cells[i : i + 4] for i in range(len(cells.cells))]
     assert ["5", "a|b", "[link](javascript:alert(1))", "1"] in rows  # one cell each
 
@@ -464,6 +374,6 @@ def test_an_html_report_shows_line_breaks_and_bidi_controls_as_escapes(
     html = render_html(_forging_solution(write_file))
     for char in ("\u202e", "\u2028", "\u2029", "\r"):
         assert char not in html
-    page = _page(html)
+    page = parsed(html)
     assert "Team\\n# FORGED team heading" in page.text
     assert "UAV\\n# FORGED heading\\u202e" in page.text

@@ -5,6 +5,7 @@ from __future__ import annotations
 import pytest
 
 from solver import InputError, Solution, assign, load_team, parse_combination, solve
+from solver.errors import SolverError
 from tests.conftest import TEAMS
 
 
@@ -124,3 +125,11 @@ def test_combinations_are_parsed_from_name_value_pairs() -> None:
         parse_combination(["UAV"])
     with pytest.raises(InputError, match="given twice"):
         parse_combination(["a=1", "a=2"])
+
+
+def test_a_5000_digit_number_given_to_assign_in_python_is_a_located_error() -> None:
+    solution = solve(load_team(TEAMS / "case3.yaml"))
+    with pytest.raises(SolverError, match="sensor_count: a whole number too large"):
+        assign(solution, kinematic_type="UAV", sensor_count=10**5000)
+    unknown = assign(solution, kinematic_type="UAV", sensor_count="9" * 5000)
+    assert unknown.is_default  # as text: no value of the rules, answered with the default

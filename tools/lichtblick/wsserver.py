@@ -100,7 +100,7 @@ async def serve(bag: Path, port: int, record: Path) -> None:
                 "schema": c.msgdef.data,
                 "schemaEncoding": "ros2msg",
             }
-            ids[c.id] = await server.add_channel(channel)  # type: ignore[arg-type]
+            ids[c.id] = await server.add_channel(channel)
         first = messages[0][1]
         while True:
             base = time.time_ns()

@@ -295,10 +295,10 @@ def _disarm() -> None:
             if hasattr(module, name):
                 setattr(module, name, _refused)
     _io.FileIO = _refused  # type: ignore[misc, assignment]  # no unfenced file objects
-    io.FileIO = _refused  # type: ignore[misc, assignment]
-    sys.modules["_posixsubprocess"] = None  # type: ignore[assignment]
-    sys.modules["subprocess"] = None  # type: ignore[assignment]
-    sys.modules["ctypes"] = None  # type: ignore[assignment]
+    io.FileIO = _refused  # type: ignore[misc, assignment]  # the same class, by its other name
+    sys.modules["_posixsubprocess"] = None  # type: ignore[assignment]  # None blocks the import
+    sys.modules["subprocess"] = None  # type: ignore[assignment]  # None blocks the import
+    sys.modules["ctypes"] = None  # type: ignore[assignment]  # None blocks the import
     loaded = set(sys.modules)
     original = builtins.__import__
 

@@ -161,21 +161,21 @@ def _types() -> Any:
     def discovery(size: int) -> Any:
         @idl_dataclass
         class Gid(IdlStruct, typename="rmw_dds_common::msg::dds_::Gid_"):
-            data: array[uint8, size]  # type: ignore[valid-type,type-arg]
+            data: array[uint8, size]  # type: ignore[valid-type,type-arg]  # an IDL type, not Python's
 
         @idl_dataclass
         class NodeEntitiesInfo(IdlStruct, typename="rmw_dds_common::msg::dds_::NodeEntitiesInfo_"):
             node_namespace: str
             node_name: str
-            reader_gid_seq: sequence[Gid]  # type: ignore[type-arg]
-            writer_gid_seq: sequence[Gid]  # type: ignore[type-arg]
+            reader_gid_seq: sequence[Gid]  # type: ignore[type-arg]  # an IDL type
+            writer_gid_seq: sequence[Gid]  # type: ignore[type-arg]  # an IDL type
 
         @idl_dataclass
         class ParticipantEntitiesInfo(
             IdlStruct, typename="rmw_dds_common::msg::dds_::ParticipantEntitiesInfo_"
         ):
             gid: Gid
-            node_entities_info_seq: sequence[NodeEntitiesInfo]  # type: ignore[type-arg]
+            node_entities_info_seq: sequence[NodeEntitiesInfo]  # type: ignore[type-arg]  # IDL
 
         return Gid, NodeEntitiesInfo, ParticipantEntitiesInfo
 
@@ -313,11 +313,11 @@ class DdsGraph:
         self.on_change: Callable[[], None] | None = None
         self.on_params: Callable[[], None] | None = None
         self.on_stop: Callable[[str], None] | None = None  # a DDS graph never asks to stop
-        self.listener = Listener(  # type: ignore[no-untyped-call]
+        self.listener = Listener(  # type: ignore[no-untyped-call]  # cyclonedds has no hints
             on_data_available=lambda _reader: self._changed()
         )
         # The operator's selection and the announcements: the watched parameters alone.
-        self.params_listener = Listener(  # type: ignore[no-untyped-call]
+        self.params_listener = Listener(  # type: ignore[no-untyped-call]  # no hints
             on_data_available=lambda _reader: self._params_changed()
         )
         self.string_type, discovery = _types()

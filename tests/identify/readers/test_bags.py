@@ -15,7 +15,7 @@ from rosbags.rosbag2 import StoragePlugin
 from rosbags.rosbag2 import Writer as Writer2
 from rosbags.typesys import Stores, get_types_from_msg, get_typestore
 
-from solver.errors import InputError
+from solver.errors import InputError, SolverError
 from solver.identify import identify
 from solver.identify.readers.bags import BagLimits, read_bag_topics
 from solver.ros.names import Topic
@@ -73,6 +73,24 @@ def test_a_file_that_is_not_a_bag_is_refused(tmp_path: Path) -> None:
         read_bag_topics(tmp_path / "x.bag")
     with pytest.raises(InputError, match="no such bag"):
         read_bag_topics(tmp_path / "missing.bag")
+
+
+@pytest.mark.parametrize(
+    "content",
+    [b"\x89MCAP0\r\n", b"\x89MCAP0\r\n" + b"\x00" * 64, b"#ROSBAG V2.0\n", os.urandom(4096)],
+)
+@pytest.mark.parametrize("suffix", [".mcap", ".bag", ".db3"])
+def test_a_corrupt_bag_is_a_located_error(tmp_path: Path, content: bytes, suffix: str) -> None:
+    bag = tmp_path / f"run{suffix}"
+    bag.write_bytes(content)
+    with pytest.raises(SolverError) as raised:
+        read_bag_topics(bag)
+    assert str(raised.value).startswith(str(bag))
+
+
+def test_a_device_given_as_a_bag_is_refused_without_reading_it() -> None:
+    with pytest.raises(SolverError, match="not a bag file or folder"):
+        read_bag_topics("/dev/zero")
 
 
 def test_identify_with_a_bag_adds_sensors_and_controls(tmp_path: Path) -> None:

@@ -14,8 +14,6 @@ from solver.identify.xacro import (
     XacroLimits,
     compile_xacro,
     confine,
-    find_packages,
-    package_path_from_env,
 )
 from tests.conftest import ROOT, run_cli
 
@@ -121,23 +119,6 @@ def test_xacro_errors_are_reported_not_raised_raw(tmp_path: Path) -> None:
     )
     with pytest.raises(InputError, match=r"xacro: .*undefined_thing"):
         compile_xacro(path)
-
-
-def test_the_package_path_comes_from_the_environment() -> None:
-    assert package_path_from_env({"TELEOP_UI_PACKAGE_PATH": "/a:/b"}) == (Path("/a"), Path("/b"))
-
-
-def test_packages_are_found_beside_the_description_and_on_the_package_path(tmp_path: Path) -> None:
-    for name in ("robot_description", "robot_gazebo"):
-        (tmp_path / "src" / name).mkdir(parents=True)
-        (tmp_path / "src" / name / "package.xml").write_text(PACKAGE_XML.format(name=name))
-    (tmp_path / "other" / "deep" / "tools").mkdir(parents=True)
-    (tmp_path / "other" / "deep" / "tools" / "package.xml").write_text(
-        PACKAGE_XML.format(name="tools")
-    )
-    source = tmp_path / "src" / "robot_description" / "urdf" / "r.urdf.xacro"
-    found = find_packages(source, [tmp_path / "other"], environ={})
-    assert sorted(found) == ["robot_description", "robot_gazebo", "tools"]
 
 
 # --- trust -----------------------------------------------------------------------------------

@@ -37,7 +37,7 @@ JOINTS = {
 
 
 def _app(name: str, kind: str) -> dict[str, Any]:
-    return json.loads((APP / f"{name}.{kind}.json").read_text(encoding="utf-8"))  # type: ignore[no-any-return]
+    return json.loads((APP / f"{name}.{kind}.json").read_text(encoding="utf-8"))  # type: ignore[no-any-return]  # json gives Any
 
 
 def _codes(layout: Any, **kwargs: Any) -> dict[str, list[str]]:

@@ -98,7 +98,7 @@ def written(tmp_path_factory: pytest.TempPathFactory) -> dict[tuple[str, str], l
             extra: list[str | Path] = ["--topics", topics] if topics else []
             said = _cli("layouts", "--robot", EXAMPLES / f"{robot}.urdf", "--team", team,
                         "-o", out, "--format", fmt, *extra)  # fmt: skip
-            number = int(re.search(r"configuration (\d+)", said).group(1))  # type: ignore[union-attr]
+            number = int(re.search(r"configuration (\d+)", said).group(1))  # type: ignore[union-attr]  # layouts always says it
             real: dict[str, list[str]] = {}
             if topics:
                 real = {n: [t] for n, t in (line.split() for line in SCAN_TOPICS.splitlines())}

@@ -243,7 +243,7 @@ def test_a_forged_answer_is_reported_and_replaced_by_the_watchers_own(
             assert warning["message"] == message
             # The watcher's own answer is written again after the forged one.
             wait_until(
-                lambda read=read: (  # type: ignore[misc]
+                lambda read=read: (  # type: ignore[misc]  # mypy: a default in a lambda
                     operator.answer() is not None
                     and len(operator.answers) > read
                     and isinstance(newest := operator.answers[-1], dict)
@@ -417,7 +417,7 @@ def test_hostile_answers_and_a_10_mb_selection_end_in_notes_not_a_crash(
             operator.control(f"Driving{len(text)}")  # an event after the hostile answer is read
             asked = f"Driving{len(text)}"
             watch.wait_for(
-                lambda d, asked=asked: (  # type: ignore[misc]
+                lambda d, asked=asked: (  # type: ignore[misc]  # mypy: a default in a lambda
                     d["event"] == "selection_changed" and d["active"]["motion_control"] == asked
                 ),
                 "the selection after a hostile answer",

@@ -123,7 +123,7 @@ def loads(data: bytes, max_depth: int = MAX_DEPTH) -> tuple[tuple[Any, ...], str
     parser.CharacterDataHandler = target.data
     parser.StartDoctypeDeclHandler = _refuse_dtd
     # As the standard ExpatParser does: no encoding, so text stays str (expat decoded it).
-    target.xml(None, None)  # type: ignore[arg-type]
+    target.xml(None, None)  # type: ignore[arg-type]  # no encoding, as ExpatParser does
     try:
         parser.Parse(data, True)
         return target.close(), target.getmethodname()

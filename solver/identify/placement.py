@@ -1,0 +1,88 @@
+"""Where the body is: joints that only place it in the world, a floating or a planar base.
+
+A description may place its body by joints that move no part of it: a ``floating`` or
+``planar`` joint, a chain of joints at the root that slide along x and y and turn about z (a
+planar base, as simulators model a mobile base) or slide along x, y, z and turn about all three
+(a simulated floating base), or an SRDF's virtual joint. :func:`placement` finds them; the
+root chain's joints are then nobody's limb.
+
+Not here: what moves the body (:mod:`solver.identify.vehicle`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from solver.identify.readers.urdf import Joint
+from solver.identify.roles import main_axis
+from solver.identify.tree import JointTree
+
+if TYPE_CHECKING:
+    from solver.identify.readers.srdf import Srdf
+
+__all__ = ["Placement", "placement"]
+
+
+@dataclass(frozen=True, slots=True)
+class Placement:
+    """The floating and planar bases found (a joint's name, or a line saying what places the
+    body) and the root joints that only place it."""
+
+    floating: tuple[str, ...] = ()
+    planar: tuple[str, ...] = ()
+    placing: tuple[str, ...] = ()  # root joints: x, y and a turn, or x, y, z and three turns
+
+
+def placement(tree: JointTree, srdf: Srdf | None) -> Placement:
+    """The floating and planar bases of ``tree`` (``srdf`` adds its virtual joint)."""
+    floating = [j.name for j in tree.urdf.joints if j.type == "floating"]
+    planar = [j.name for j in tree.urdf.joints if j.type == "planar"]
+    placing = _root_axes(tree)
+    if len(placing) == 6:
+        floating.append(f"root joints {', '.join(placing)} (x, y, z and three turns)")
+    elif len(placing) == 3:
+        planar.append(f"root joints {', '.join(placing)} (x, y and a turn about z)")
+    for virtual in srdf.virtual_joints if srdf is not None else ():
+        if virtual.type in ("planar", "floating"):
+            (planar if virtual.type == "planar" else floating).append(
+                f"SRDF virtual joint {virtual.name} ({virtual.type})"
+            )
+    return Placement(tuple(floating), tuple(planar), tuple(placing))
+
+
+def _root_axes(tree: JointTree) -> list[str]:
+    """Joints at the root that only place the body: x, y and a turn about z (planar), or x,
+    y, z and three turns (a simulated floating base); [] when the root is not so.
+    """
+    chain = _root_chain(tree)
+    if len(chain) >= 3 and _moves(chain[:3]) == ({0, 1}, [2]):
+        return [j.name for j in chain[:3]]
+    if len(chain) == 6 and _moves(chain) == ({0, 1, 2}, [0, 1, 2]):
+        return [j.name for j in chain]
+    return []
+
+
+def _root_chain(tree: JointTree) -> list[Joint]:
+    """The unbranched actuated joints right below the root (at most six)."""
+    chain: list[Joint] = []
+    link = tree.urdf.root
+    while len(chain) < 6:
+        below = tree.urdf.children(link)
+        if len(below) != 1:
+            break
+        joint = below[0]
+        link = joint.child
+        if joint.type == "fixed":
+            continue
+        if joint.type not in ("prismatic", "revolute", "continuous") or not joint.actuated:
+            break
+        chain.append(joint)
+    return chain
+
+
+def _moves(chain: list[Joint]) -> tuple[set[int], list[int]]:
+    """The axes a chain slides along and (sorted) the axes it turns about."""
+    slides = {main_axis(j.axis) for j in chain if j.type == "prismatic"}
+    turns = sorted(main_axis(j.axis) for j in chain if j.type != "prismatic")
+    return slides, turns

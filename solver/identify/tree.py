@@ -1,0 +1,55 @@
+"""A robot's joint tree as the body's steps read it, built once per description.
+
+Every step of :func:`~solver.identify.body.detect_body` asks the same few questions of the
+tree: where a joint comes in document order (listings are deterministic), which parts the
+profile's patterns name in a joint or a link, which model plugins the profile reads as a part,
+and which links have a movable joint somewhere below them (a rotor or a wheel is a leaf: none
+below). :class:`JointTree` answers them, each worked out in one pass.
+
+Not here: what the answers mean (:mod:`solver.identify.actuation`, :mod:`~solver.identify.limbs`,
+:mod:`~solver.identify.hands`, :mod:`~solver.identify.vehicle`,
+:mod:`~solver.identify.placement`), one joint's role (:mod:`solver.identify.roles`).
+"""
+
+from __future__ import annotations
+
+from solver.identify.profile import PartMatcher, Profile
+from solver.identify.readers.urdf import Joint, Urdf
+from solver.identify.roles import RoleReader
+
+__all__ = ["JointTree"]
+
+
+class JointTree:
+    """One description with the profile that reads it (see the module docstring)."""
+
+    def __init__(self, urdf: Urdf, profile: Profile) -> None:
+        self.urdf = urdf
+        self.profile = profile
+        # Document order of each joint, for deterministic listings (one pass, not one per ask).
+        self.index = {joint.name: i for i, joint in enumerate(urdf.joints)}
+        self.parts_of = PartMatcher(profile.patterns)
+        self.reader = RoleReader(urdf, profile, self.parts_of)
+        # Links with a movable joint somewhere below them (a rotor is a leaf: none below).
+        self.moving_below: set[str] = set()
+        for joint in urdf.joints:
+            if joint.movable:
+                link: str | None = joint.parent
+                while link is not None and link not in self.moving_below:
+                    self.moving_below.add(link)
+                    parent = urdf.parent_joint(link)
+                    link = None if parent is None else parent.parent
+
+    def matches(self, part: str, joint: Joint) -> bool:
+        """The profile's pattern for ``part`` names the joint or its child link."""
+        return part in self.parts_of(joint.name) or part in self.parts_of(joint.child)
+
+    def labels(self, part: str) -> tuple[str, ...]:
+        """The model plugins the profile reads as ``part``, each named once."""
+        return tuple(
+            dict.fromkeys(self.reader.plugin_label(p) for p in self.reader.plugins_of(part))
+        )
+
+    def order(self, name: str) -> int:
+        """Where the joint ``name`` comes in the document (0 for a name it lacks)."""
+        return self.index.get(name, 0)

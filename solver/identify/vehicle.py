@@ -1,0 +1,185 @@
+"""How the body moves as a whole: on the ground, in the air, in water.
+
+Beside the joints' own roles (:mod:`solver.identify.actuation`), the description shows how the
+body travels in a few more ways, each read here:
+
+* *Ground*: tracks (a track plugin or track names); a body that rolls on wheels, casters,
+  tracks or a drive plugin is grounded (:func:`grounded`).
+* *Air*: wings and control surfaces (fixed links, or fin joints named so); flight words in a
+  model plugin's parameters (a vehicle plugin of its own), not on a body that rolls or walks;
+  rotor-named joints too few to fly, said as such.
+* *Water*: thrusters a thruster plugin lists by a link no joint moves (a hull's list); hints
+  of a hull at the surface (a surface plugin, ``<metacentric_width>``) or of a body below it
+  (buoyancy or hydrodynamics plugins, a DVL or pressure sensor).
+* *Trimmed models*: wheel joints of type fixed, and rotor-named leaf links fixed to the body,
+  still say what the whole model does (read with doubt by :mod:`solver.identify.classifier`).
+
+Not here: the joints' own roles (:mod:`solver.identify.actuation`), where the body is placed
+(:mod:`solver.identify.placement`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from solver.identify.actuation import with_role
+from solver.identify.limbs import Limb
+from solver.identify.roles import Role
+from solver.identify.tree import JointTree
+
+__all__ = [
+    "fixed_rotors",
+    "fixed_wheels",
+    "flight_hints",
+    "grounded",
+    "listed_thrusters",
+    "not_rotors",
+    "surface_hints",
+    "tracks",
+    "underwater_hints",
+    "wings",
+]
+
+_ROTATING = ("continuous", "revolute")
+
+
+def grounded(tree: JointTree, roles: dict[str, Role]) -> bool:
+    """The body moves on the ground: wheels, casters, tracks or a drive plugin."""
+    return bool(
+        with_role(roles, "wheel")
+        or with_role(roles, "caster")
+        or tracks(tree)
+        or tree.labels("drive")
+    )
+
+
+def tracks(tree: JointTree) -> tuple[str, ...]:
+    """Track plugins and track-named joints, each once."""
+    found = list(tree.labels("track"))
+    found += [j.name for j in tree.urdf.joints if tree.matches("track", j)]
+    return tuple(dict.fromkeys(found))
+
+
+def not_rotors(tree: JointTree, roles: dict[str, Role]) -> list[str]:
+    """Rotor-named spinning leaves left without a role: too few to fly."""
+    return [
+        j.name
+        for j in tree.urdf.joints
+        if j.movable
+        and j.type in _ROTATING
+        and j.name not in roles
+        and tree.matches("rotor", j)
+        and not tree.matches("wheel", j)
+        and j.child not in tree.moving_below
+    ]
+
+
+def listed_thrusters(tree: JointTree, roles: dict[str, Role]) -> list[str]:
+    """Thrusters a thruster plugin lists by a link of no moving joint (a hull's list)."""
+    links = {link.name for link in tree.urdf.links}
+    found = []
+    for plugin in tree.reader.plugins_of("thruster"):
+        named = [text for tag, text in plugin.params if text in links]
+        joints = [tree.urdf.parent_joint(link) for link in named]
+        if not any(j is not None and j.name in roles for j in joints):
+            found += [f"{link} ({tree.reader.plugin_label(plugin)})" for link in named][:1]
+    return found
+
+
+def fixed_wheels(tree: JointTree, roles: dict[str, Role]) -> list[str]:
+    """Wheel joints of type fixed (a trimmed model), when no wheel turns."""
+    if with_role(roles, "wheel"):
+        return []
+    return [j.name for j in tree.urdf.joints if j.type == "fixed" and tree.matches("wheel", j)]
+
+
+def fixed_rotors(tree: JointTree) -> list[str]:
+    """Rotor-named leaf links fixed to a part no joint moves (a trimmed multirotor).
+
+    Not on a body with legs or wheels: there a fixed ``*_rotor`` link is a motor's.
+    """
+    legs_or_wheels = any(
+        j.movable and (tree.matches("leg", j) or tree.matches("wheel", j)) for j in tree.urdf.joints
+    )
+    if tree.reader.marine or legs_or_wheels:
+        return []
+    moved = _moved_links(tree)
+    found = [
+        j.name
+        for j in tree.urdf.joints
+        if j.type == "fixed"
+        and not tree.urdf.children(j.child)
+        and j.parent not in moved
+        and tree.matches("rotor", j)
+    ]
+    return found if len(found) >= tree.profile.limb("min_rotors") else []
+
+
+def _moved_links(tree: JointTree) -> set[str]:
+    """Links some movable joint moves (below a movable joint)."""
+    moved: set[str] = set()
+    stack = [(tree.urdf.root, False)]
+    while stack:
+        link, inside = stack.pop()
+        if inside:
+            moved.add(link)
+        for joint in tree.urdf.children(link):
+            stack.append((joint.child, inside or joint.movable))
+    return moved
+
+
+def wings(tree: JointTree, roles: dict[str, Role]) -> list[str]:
+    """Wings and ailerons (fixed links, or fin joints named so) and, beside a wing, fixed
+    control surfaces (a tail, a rudder)."""
+    if tree.reader.marine:
+        return []
+    fixed = [j for j in tree.urdf.joints if not j.movable]
+    found = [j.child for j in fixed if "wing" in tree.parts_of(j.child)]
+    found += [
+        n for n in with_role(roles, "fin") if (j := tree.urdf.joint(n)) and tree.matches("wing", j)
+    ]
+    surfaces = [j.child for j in fixed if "fin" in tree.parts_of(j.child)]
+    return found + surfaces if found else []
+
+
+def surface_hints(tree: JointTree) -> tuple[str, ...]:
+    """A body in water at the surface: surface plugins and tags the profile's ``surface``
+    pattern reads (``<metacentric_width>``, wind on its buoyancy)."""
+    pattern = tree.profile.plugin_pattern("surface")
+    if pattern is None or not (tree.reader.marine):
+        return ()
+    hints = list(tree.labels("surface"))
+    hints += sorted(tag for tag in tree.urdf.tags if pattern.search(tag))
+    return tuple(dict.fromkeys(hints))
+
+
+def underwater_hints(tree: JointTree) -> tuple[str, ...]:
+    """Thruster and underwater plugins, and sensors (by type, name or plugin) the profile's
+    ``underwater`` pattern reads: a DVL, a pressure sensor."""
+    pattern = tree.profile.plugin_pattern("underwater")
+    if not tree.reader.marine:
+        return ()
+    hints = [*tree.labels("thruster"), *tree.labels("underwater")]
+    if pattern is not None:
+        hints += [
+            sensor.name
+            for sensor in tree.urdf.sensors
+            if pattern.search(f"{sensor.type} {sensor.device_text}")
+        ]
+    return tuple(dict.fromkeys(hints))
+
+
+def flight_hints(tree: JointTree, roles: dict[str, Role], limbs: Sequence[Limb]) -> tuple[str, ...]:
+    """Plugins whose parameters use the flight vocabulary (a vehicle plugin of its own that
+    sets a drone's topics). Not on a body that moves on the ground or walks: there a word such
+    as ``drone`` in a parameter is a name (another robot's namespace), not flight.
+    """
+    pattern = tree.profile.plugin_pattern("flight")
+    walks = any(limb.kind == "leg" for limb in limbs)
+    if pattern is None or tree.labels("flight") or walks or grounded(tree, roles):
+        return ()
+    return tuple(
+        tree.reader.plugin_label(p)
+        for p in tree.urdf.plugins
+        if any(pattern.search(text) for _, text in p.params)
+    )

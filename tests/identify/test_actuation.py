@@ -1,0 +1,121 @@
+"""What each joint does alone: wheels by plugin, by name and by place, driven casters, rotors
+too few to fly, the joints below a gripper."""
+
+from __future__ import annotations
+
+from solver.identify import identify_urdf, load_profile
+from solver.identify.actuation import joint_roles, with_role
+from solver.identify.body import detect_body
+from solver.identify.readers.urdf import parse_urdf
+from solver.identify.roles import Role
+from solver.identify.tree import JointTree
+from tests.identify import builders
+from tests.identify.builders import RobotText
+
+
+def roles_of(robot: RobotText) -> dict[str, Role]:
+    return joint_roles(JointTree(parse_urdf(robot.text()), load_profile()))
+
+
+def test_wheels_named_only_by_a_drive_plugin_are_wheels() -> None:
+    robot = RobotText("plain")
+    robot.joint("left_motor", "continuous", "base_link", "l")
+    robot.joint("right_motor", "continuous", "base_link", "r")
+    robot.add(
+        builders.model_plugin(
+            "drive",
+            "libgazebo_ros_diff_drive.so",
+            "<leftJoint>left_motor</leftJoint><rightJoint>right_motor</rightJoint>",
+        )
+    )
+    body = detect_body(parse_urdf(robot.text()), load_profile())
+    assert body.wheels == ("left_motor", "right_motor")
+
+
+def test_one_continuous_prop_joint_in_an_arm_is_never_flight() -> None:
+    robot = builders.manipulator()
+    robot.joint("prop_joint", "continuous", "wrist_3_link", "prop_link")
+    result = identify_urdf(robot.text())
+    assert result.structure == "Manipulator"
+    assert any(line.startswith("not flight: 1 rotor-named joint") for line in result.evidence)
+
+
+def test_motor_links_named_rotor_on_wheeled_legs_make_no_uav() -> None:
+    robot = RobotText("wheel_biped")
+    for side in ("left", "right"):
+        knee = robot.chain("base_link", [f"{side}_hip", f"{side}_knee"])
+        robot.joint(f"{side}_wheel", "continuous", knee, f"{side}_wheel_motor_rotor")
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert (result.structure, result.body.wheels) == (
+        "UGV",
+        ("left_wheel", "right_wheel"),
+    )
+
+
+def _four_spinning_leaves(robot: RobotText, height: float, limits: str = "") -> None:
+    for corner, (x, y) in {"fl": (1, 1), "fr": (1, -1), "rl": (-1, 1), "rr": (-1, -1)}.items():
+        kind = "revolute" if limits else "continuous"
+        origin = f'<origin xyz="{0.2 * x} {0.15 * y} {height}"/><axis xyz="0 1 0"/>{limits}'
+        robot.joint(f"{corner}_joint", kind, "base_link", f"{corner}_Link", origin)
+
+
+def test_unnamed_endless_joints_below_a_body_on_both_sides_are_wheels() -> None:
+    robot = RobotText("rover")
+    _four_spinning_leaves(robot, -0.1)
+    result = identify_urdf(robot.text())
+    assert (result.structure, result.kinematic_type) == ("UGV", "UGV")
+    assert result.body is not None
+    assert result.body.wheels == ("fl_joint", "fr_joint", "rl_joint", "rr_joint")
+
+
+def test_unnamed_spinning_leaves_level_with_the_body_or_limited_are_no_wheels() -> None:
+    level = RobotText("level")
+    _four_spinning_leaves(level, 0.0)
+    limited = RobotText("limited")
+    _four_spinning_leaves(limited, -0.1, '<limit lower="-1" upper="1" effort="1" velocity="1"/>')
+    for robot in (level, limited):
+        result = identify_urdf(robot.text())
+        assert result.body is not None
+        assert result.body.wheels == ()
+        assert result.structure != "UGV"
+
+
+def test_a_caster_with_a_transmission_steers_with_its_swivel_and_drives_its_wheel() -> None:
+    robot = builders.caster_base()
+    robot.add(builders.transmission("front_swivel"))
+    robot.add(builders.transmission("front_roller", "VelocityJointInterface"))
+    found = roles_of(robot)
+    assert found["front_swivel"] == Role(
+        "front_swivel", "steering", "a vertical swivel with a transmission"
+    )
+    assert found["front_roller"] == Role(
+        "front_roller", "wheel", "a caster's wheel with a transmission"
+    )
+    assert found["rear_swivel"].role == "caster"
+
+
+def test_one_rotor_plays_no_role_and_two_are_rotors() -> None:
+    assert "rotor_0_joint" not in roles_of(builders.quadrotor(1))
+    found = roles_of(builders.quadrotor(2))
+    assert [found[f"rotor_{i}_joint"].role for i in range(2)] == ["rotor", "rotor"]
+
+
+def test_every_movable_joint_below_a_gripper_joint_moves_a_finger() -> None:
+    robot = RobotText("claw")
+    jaw = robot.chain("base_link", ["gripper_finger_left"], "prismatic")
+    robot.fixed(jaw, "segment")
+    robot.chain("segment", ["p2"])
+    found = roles_of(robot)
+    assert found["gripper_finger_left"].role == "gripper"
+    assert found["p2"] == Role("p2", "gripper", "moves a finger: below a gripper joint")
+
+
+def test_with_role_lists_the_joints_of_one_role_in_the_order_found() -> None:
+    roles = {
+        "b": Role("b", "wheel", "named"),
+        "a": Role("a", "rotor", "named"),
+        "c": Role("c", "wheel", "by place"),
+    }
+    assert with_role(roles, "wheel") == ["b", "c"]
+    assert with_role(roles, "fin") == []

@@ -1,0 +1,91 @@
+"""The body a description shows: every movable joint given one role, the joints a person
+commands, and the counts and sentences of evidence the classifier and a person read."""
+
+from __future__ import annotations
+
+from solver.identify import load_profile
+from solver.identify.body import Body, detect_body
+from solver.identify.limbs import Limb
+from solver.identify.readers.urdf import parse_urdf
+from solver.identify.roles import Role
+from tests.identify import builders
+from tests.identify.builders import RobotText
+
+
+def body_of(robot: RobotText) -> Body:
+    return detect_body(parse_urdf(robot.text(), strict=False), load_profile())
+
+
+def test_a_body_with_no_movable_joint_says_so_and_counts_nothing() -> None:
+    robot = RobotText("brick")
+    robot.fixed("base_link", "camera")
+    body = body_of(robot)
+    assert body.evidence("base_link") == ("no movable joints below base_link",)
+    assert set(body.features().values()) == {0}
+
+
+def test_every_movable_joint_gets_one_role_from_its_step() -> None:
+    robot = builders.mobile_manipulator()
+    robot.joint("pulley", "revolute", "base_link", "pulley_link", '<mimic joint="torso_lift"/>')
+    roles = {role.joint: role.role for role in body_of(robot).roles}
+    assert roles == {
+        "wheel_left_joint": "wheel",
+        "wheel_right_joint": "wheel",
+        "torso_lift": "trunk",
+        "shoulder_pan": "arm",
+        "shoulder_lift": "arm",
+        "elbow": "arm",
+        "wrist_1": "arm",
+        "wrist_2": "arm",
+        "wrist_3": "arm",
+        "gripper_finger_left": "finger",
+        "gripper_finger_right": "finger",
+        "head_pan": "head",
+        "head_tilt": "head",
+        "pulley": "passive",
+    }
+    assert [role.evidence for role in body_of(robot).roles if role.joint == "pulley"] == [
+        "follows torso_lift (mimic)"
+    ]
+
+
+def test_joints_of_arms_and_of_the_trunk_carrying_them_are_commanded_and_a_head_is_not() -> None:
+    robot = builders.mobile_manipulator()
+    for joint in ("wheel_left_joint", "torso_lift", "shoulder_pan", "head_pan"):
+        robot.add(builders.transmission(joint))
+    body = body_of(robot)
+    assert body.controlled_joints == ("shoulder_pan", "torso_lift")
+    assert body.controlled_wheels == ("wheel_left_joint",)
+
+
+def test_the_features_count_each_kind_of_limb() -> None:
+    body = Body(
+        limbs=(
+            Limb("leg", ("a",), "base", "a_link"),
+            Limb("leg", ("b",), "base", "b_link"),
+            Limb("arm", ("c",), "base", "c_link"),
+        ),
+        wheels=("w",),
+    )
+    features = body.features()
+    assert (features["legs"], features["arms"], features["heads"]) == (2, 1, 0)
+    assert (features["wheels"], features["mobile_base"], features["weak_base"]) == (1, 1, 0)
+
+
+def test_evidence_names_four_parts_and_says_how_many_in_all() -> None:
+    body = Body(wheels=tuple(f"w{i}" for i in range(1, 7)))
+    assert body.evidence("base_link") == ("6 wheel joint(s): w1, w2, w3, w4, ... (6 in all)",)
+
+
+def test_role_lines_group_joints_by_role_with_the_first_reason_and_how_many_more() -> None:
+    body = Body(
+        roles=(
+            Role("a", "wheel", "wheel name (a)"),
+            Role("c", "rotor", "rotor name (c)"),
+            Role("b", "wheel", "by place"),
+        )
+    )
+    assert body.role_lines() == (
+        "wheel: a, b (wheel name (a); and 1 more)",
+        "rotor: c (rotor name (c))",
+    )

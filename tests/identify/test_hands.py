@@ -1,0 +1,124 @@
+"""Hands and grippers: the joints below a gripper move fingers, fingers without names are told
+by where they hang, and a hand is counted by its fingers' tips."""
+
+from __future__ import annotations
+
+from solver.identify import identify_urdf, load_profile
+from solver.identify.hands import finger_groups, finger_tips, gripper_closure
+from solver.identify.limbs import Limb
+from solver.identify.readers.urdf import parse_urdf
+from solver.identify.tree import JointTree
+from tests.identify import builders
+from tests.identify.builders import RobotText
+
+
+def tree_of(robot: RobotText) -> JointTree:
+    return JointTree(parse_urdf(robot.text(), strict=False), load_profile())
+
+
+def test_a_parallel_gripper_with_a_mimic_finger_is_a_gripper() -> None:
+    robot = RobotText("gripper")
+    robot.chain("base_link", ["left_finger_joint"], "prismatic")
+    robot.joint(
+        "right_finger_joint",
+        "prismatic",
+        "base_link",
+        "right_finger",
+        '<mimic joint="left_finger_joint"/><limit lower="0" upper="1"/>',
+    )
+    result = identify_urdf(robot.text())
+    assert (result.structure, result.kinematic_type) == ("Gripper", None)
+    assert result.body is not None
+    assert len(result.body.fingers) == 2
+
+
+def test_a_hand_whose_finger_chains_carry_no_names_is_a_hand() -> None:
+    robot = RobotText("claw")
+    for f in range(3):
+        robot.chain("base_link", [f"j{f}_{i}" for i in range(3)])
+    result = identify_urdf(robot.text())
+    assert result.structure == "Hand"
+    assert result.body is not None
+    assert len(result.body.fingers) == 3
+
+
+def test_unnamed_finger_chains_with_named_tips_on_an_arm_are_one_hand() -> None:
+    robot = builders.manipulator()
+    robot.joints.clear()
+    robot.links[:] = [robot.root]
+    tip = builders.arm(robot, robot.root, gripper=False)
+    for f in range(4):
+        knuckle = robot.chain(tip, [f"d{f}_base"])
+        robot.chain(knuckle, [f"d{f}_finger_tip"])
+    result = identify_urdf(robot.text())
+    assert result.structure == "Manipulator"
+    assert result.body is not None
+    assert (result.body.count("arm"), result.body.grippers) == (1, 1)
+
+
+def test_fingers_on_a_link_named_as_a_hand_make_the_arm_end_in_a_gripper() -> None:
+    robot = RobotText("arm_hand")
+    wrist = robot.chain("base_link", ["a1", "a2", "a3", "a4"])
+    robot.fixed(wrist, "r_hand_base")
+    for f in range(4):
+        robot.chain("r_hand_base", [f"f{f}"])
+    result = identify_urdf(robot.text())
+    assert result.structure == "Manipulator"
+    assert result.body is not None
+    assert result.body.limbs[0].gripper
+
+
+def test_wrist_joints_into_links_named_as_the_hand_stay_arm_joints() -> None:
+    robot = RobotText("arm into hand links")
+    link = robot.chain("base_link", ["shoulder_pitch", "shoulder_roll", "elbow_pitch"])
+    for axis in ("yaw", "roll", "pitch"):
+        link = robot.joint(
+            f"wrist_{axis}_joint",
+            "revolute",
+            link,
+            f"hand_{axis}_link",
+            '<limit lower="-1" upper="1" effort="1" velocity="1"/>',
+        )
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert result.body.grippers == 0
+    assert [len(limb.joints) for limb in result.body.limbs] == [6]
+
+
+def test_the_closure_of_a_gripper_joint_holds_every_movable_joint_below_it_and_no_other() -> None:
+    robot = RobotText("closure")
+    wrist = robot.chain("base_link", ["a1", "a2"])
+    jaw = robot.chain(wrist, ["jaw"], "prismatic")
+    robot.fixed(jaw, "pad")
+    robot.chain("pad", ["pad_tilt"])
+    robot.chain(wrist, ["camera_pan"])
+    assert gripper_closure(tree_of(robot), {"jaw"}) == {"jaw", "pad_tilt"}
+
+
+def test_a_finger_of_three_gripper_joints_has_one_tip_and_tips_come_in_document_order() -> None:
+    robot = RobotText("two fingers", root="palm")
+    robot.chain("palm", ["b1", "b2", "b3"])
+    robot.chain("palm", ["a1", "a2", "a3"])
+    grippers = {"a1", "a2", "a3", "b1", "b2", "b3"}
+    assert finger_tips(tree_of(robot), grippers) == ["b3", "a3"]
+
+
+def _chains(robot: RobotText, link: str, count: int) -> list[Limb]:
+    limbs = []
+    for f in range(count):
+        names = [f"{link}{f}_a", f"{link}{f}_b"]
+        tip = robot.chain(link, names)
+        limbs.append(Limb("other", tuple(names), link, tip))
+    return limbs
+
+
+def test_three_short_unnamed_chains_on_one_link_are_fingers_and_two_are_not() -> None:
+    robot = RobotText("claws")
+    three = _chains(robot, "base_link", 3)
+    robot.fixed("base_link", "mount")
+    two = _chains(robot, "mount", 2)
+    tree = tree_of(robot)
+    assert finger_groups(tree, three + two) == {name for limb in three for name in limb.joints}
+    # On a body that rolls, the chains on its root are the base's own (a tracked vehicle's
+    # flippers).
+    assert finger_groups(tree, three + two, grounded=True) == set()

@@ -1,0 +1,108 @@
+"""Where the body is: a floating or planar joint, root joints that only place the body (x, y
+and a turn, or all six motions), an SRDF's virtual joint; the root joints are then no limb."""
+
+from __future__ import annotations
+
+import pytest
+
+from solver.identify import identify_urdf, load_profile
+from solver.identify.placement import Placement, placement
+from solver.identify.readers.srdf import parse_srdf
+from solver.identify.readers.urdf import parse_urdf
+from solver.identify.tree import JointTree
+from tests.identify import builders
+from tests.identify.builders import RobotText
+
+
+def tree_of(robot: RobotText) -> JointTree:
+    return JointTree(parse_urdf(robot.text(), strict=False), load_profile())
+
+
+def on_rails(axes: list[tuple[str, str, str]]) -> RobotText:
+    """Joints at the root, one below the other: (name, type, axis) each, then a 3-joint arm."""
+    robot = RobotText("on rails", root="odom")
+    link = "odom"
+    for name, kind, axis in axes:
+        link = robot.joint(name, kind, link, f"{name}_link", f'<axis xyz="{axis}"/>')
+    builders.arm(robot, link, joints=3, gripper=False)
+    return robot
+
+
+def test_a_planar_base_joint_is_a_mobile_base() -> None:
+    robot = RobotText("planar", root="odom")
+    base = robot.joint("base_planar", "planar", "odom", "base_link")
+    builders.arm(robot, base)
+    assert identify_urdf(robot.text()).structure == "Mobile Manipulator"
+
+
+def test_root_x_y_theta_joints_are_a_planar_mobile_base_with_doubt() -> None:
+    robot = RobotText("sim_base", root="odom")
+    robot.joint("x", "prismatic", "odom", "x_link", '<axis xyz="1 0 0"/>')
+    robot.joint("y", "prismatic", "x_link", "y_link", '<axis xyz="0 1 0"/>')
+    robot.joint("theta", "continuous", "y_link", "base_link", '<axis xyz="0 0 1"/>')
+    builders.arm(robot, "base_link")
+    result = identify_urdf(robot.text())
+    assert result.structure == "Mobile Manipulator"
+    assert result.body is not None
+    assert result.body.planar_base == ("root joints x, y, theta (x, y and a turn about z)",)
+    assert result.confidence == pytest.approx(0.9 * 0.8, abs=0.01)
+
+
+def test_a_six_joint_virtual_floating_root_is_not_an_arm() -> None:
+    robot = RobotText("floating_hand", root="world")
+    link = "world"
+    for i, (kind, axis) in enumerate(
+        [
+            ("prismatic", "1 0 0"),
+            ("prismatic", "0 1 0"),
+            ("prismatic", "0 0 1"),
+            ("revolute", "1 0 0"),
+            ("revolute", "0 1 0"),
+            ("revolute", "0 0 1"),
+        ]
+    ):
+        link = robot.joint(
+            f"root_{i}",
+            kind,
+            link,
+            f"root_{i}_link",
+            f'<axis xyz="{axis}"/><limit lower="-20" upper="20"/>',
+        )
+    for finger in ("index", "middle", "ring", "thumb"):
+        robot.chain(link, [f"{finger}_1", f"{finger}_2"])
+    result = identify_urdf(robot.text())
+    assert result.structure == "Hand"
+    assert result.body is not None
+    assert result.body.floating_base
+
+
+def test_root_joints_along_x_and_y_and_about_z_place_a_planar_base() -> None:
+    robot = on_rails(
+        [("x", "prismatic", "1 0 0"), ("y", "prismatic", "0 1 0"), ("t", "continuous", "0 0 1")]
+    )
+    assert placement(tree_of(robot), None) == Placement(
+        planar=("root joints x, y, t (x, y and a turn about z)",), placing=("x", "y", "t")
+    )
+
+
+def test_root_joints_that_lift_and_tilt_place_nothing() -> None:
+    robot = on_rails(
+        [("z", "prismatic", "0 0 1"), ("y", "prismatic", "0 1 0"), ("t", "revolute", "1 0 0")]
+    )
+    assert placement(tree_of(robot), None) == Placement()
+
+
+def test_a_floating_joint_and_an_srdf_virtual_planar_joint_are_each_said() -> None:
+    robot = RobotText("both", root="world")
+    base = robot.joint("world_float", "floating", "world", "base_link")
+    builders.arm(robot, base, joints=3, gripper=False)
+    urdf = parse_urdf(robot.text(), strict=False)
+    srdf = parse_srdf(
+        '<robot name="both"><virtual_joint name="odom_joint" type="planar" '
+        'parent_frame="odom" child_link="world"/></robot>',
+        "both.srdf",
+        urdf,
+    )
+    assert placement(JointTree(urdf, load_profile()), srdf) == Placement(
+        floating=("world_float",), planar=("SRDF virtual joint odom_joint (planar)",)
+    )

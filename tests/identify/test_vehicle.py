@@ -1,0 +1,169 @@
+"""How the body travels: tracks and drive plugins on the ground; wings, rotor-named leaves too
+few to fly and flight words in plugins in the air; a hull's thrusters and hints in water; and
+what a model trimmed of its moving parts still shows."""
+
+from __future__ import annotations
+
+import pytest
+
+from solver.identify import identify_urdf, load_profile
+from solver.identify.actuation import joint_roles
+from solver.identify.readers.urdf import parse_urdf
+from solver.identify.roles import Role
+from solver.identify.tree import JointTree
+from solver.identify.vehicle import (
+    fixed_wheels,
+    grounded,
+    listed_thrusters,
+    not_rotors,
+    surface_hints,
+    tracks,
+    underwater_hints,
+    wings,
+)
+from tests.identify import builders
+from tests.identify.builders import RobotText
+
+
+def tree_of(robot: RobotText) -> JointTree:
+    return JointTree(parse_urdf(robot.text(), strict=False), load_profile())
+
+
+def test_fixed_wheels_still_make_a_mobile_base_with_doubt() -> None:
+    robot = RobotText("trimmed")
+    robot.fixed("base_link", "left_wheel")
+    robot.fixed("base_link", "right_wheel")
+    result = identify_urdf(robot.text())
+    assert result.structure == "UGV"
+    assert result.confidence == pytest.approx(0.95 * 0.8, abs=0.01)
+
+
+def test_fixed_propellers_on_a_body_that_cannot_move_are_a_uav_with_doubt() -> None:
+    trimmed = RobotText("trimmed quadrotor")
+    for i in range(4):
+        trimmed.fixed("base_link", f"prop{i}_link")
+    result = identify_urdf(trimmed.text())
+    assert (result.structure, result.kinematic_type) == ("UAV", "UAV")
+    assert result.confidence == pytest.approx(0.95 * 0.8, abs=0.01)
+
+
+def test_fixed_rotor_links_beside_moving_joints_are_motors_not_flight() -> None:
+    legged = RobotText("legged")
+    for corner in ("front_left", "front_right", "rear_left", "rear_right"):
+        legged.chain("base_link", [f"{corner}_hip", f"{corner}_knee"])
+        legged.fixed("base_link", f"{corner}_hip_rotor")
+    result = identify_urdf(legged.text())
+    assert result.structure == "Quadruped"
+    assert result.body is not None
+    assert result.body.fixed_rotors == ()
+
+
+def thrusters_by_name() -> RobotText:
+    """Four joints named as thrusters on a hull; no plugin, no sensor says where it swims."""
+    robot = RobotText("hull")
+    for i in range(4):
+        robot.joint(f"thruster_{i}_joint", "continuous", robot.root, f"thruster_{i}")
+    return robot
+
+
+def test_a_body_in_water_by_thruster_names_alone_is_underwater_with_doubt() -> None:
+    result = identify_urdf(thrusters_by_name().text())
+    assert result.structure == "Underwater Vehicle"
+    assert result.confidence == pytest.approx(0.85 * 0.8, abs=0.01)
+    assert (
+        "in water by thruster names alone: no buoyancy or hydrodynamics plugin, "
+        "no thruster plugin, no DVL or pressure sensor"
+    ) in result.evidence
+    assert "doubt: a typical Underwater Vehicle has underwater" in result.evidence
+
+
+@pytest.mark.parametrize(
+    "evidence",
+    [
+        builders.gazebo_sensor("dvl_link", "dvl", "dvl"),
+        builders.gazebo_sensor("base_link", "altimeter", "depth", plugin="libsubsea_pressure.so"),
+        builders.model_plugin("water", "libunderwater_object.so"),
+        builders.model_plugin("hydro", "gz-sim-hydrodynamics-system"),
+    ],
+    ids=["a DVL", "a pressure sensor", "an underwater plugin", "hydrodynamics"],
+)
+def test_underwater_evidence_keeps_an_underwater_reading_certain(evidence: str) -> None:
+    robot = thrusters_by_name()
+    robot.add(evidence)
+    result = identify_urdf(robot.text())
+    assert (result.structure, result.confidence) == ("Underwater Vehicle", 0.85)
+    assert any(line.startswith("below the surface: ") for line in result.evidence)
+
+
+def test_flight_words_in_a_plugins_parameters_fly_only_a_body_that_cannot_roll_or_walk() -> None:
+    # A vehicle plugin of its own that sets a drone's topics: the one sign the body flies.
+    plugin = builders.model_plugin(
+        "vehicle", "libmy_vehicle.so", "<cmdTopic>drone/cmd_vel</cmdTopic>"
+    )
+    body = RobotText("shell")
+    body.add(plugin)
+    assert identify_urdf(body.text()).structure == "UAV"
+    # A rover in a world it shares with a drone: the word names the other robot.
+    rover = builders.ugv()
+    rover.add(plugin)
+    assert identify_urdf(rover.text()).structure == "UGV"
+    dog = builders.quadruped()
+    dog.add(plugin)
+    assert identify_urdf(dog.text()).structure == "Quadruped"
+
+
+def test_tracks_are_a_track_plugin_and_track_named_joints_each_once() -> None:
+    robot = builders.tracked()
+    robot.joint("left_track_joint", "continuous", robot.root, "left_track")
+    robot.add(builders.model_plugin("tracks2", "libSimpleTrackedVehiclePlugin.so"))
+    tree = tree_of(robot)
+    assert tracks(tree) == ("libSimpleTrackedVehiclePlugin.so", "left_track_joint")
+    assert grounded(tree, {})
+
+
+def test_a_body_with_casters_alone_is_grounded_and_a_bare_one_is_not() -> None:
+    tree = tree_of(RobotText("bare"))
+    assert not grounded(tree, {})
+    assert grounded(tree, {"c": Role("c", "caster", "a swivel")})
+
+
+def test_a_lone_rotor_named_leaf_is_said_not_to_fly() -> None:
+    robot = builders.manipulator()
+    robot.joint("prop_joint", "continuous", "wrist_3_link", "prop_link")
+    tree = tree_of(robot)
+    assert not_rotors(tree, joint_roles(tree)) == ["prop_joint"]
+
+
+def test_fixed_wheel_joints_count_only_while_no_wheel_turns() -> None:
+    robot = RobotText("trimmed")
+    robot.fixed("base_link", "left_wheel")
+    tree = tree_of(robot)
+    assert fixed_wheels(tree, {}) == ["left_wheel_fixed"]
+    assert fixed_wheels(tree, {"w": Role("w", "wheel", "named")}) == []
+
+
+def test_wings_are_wing_links_with_the_control_surfaces_beside_them() -> None:
+    tree = tree_of(builders.fixed_wing())
+    assert wings(tree, {}) == ["main_wing", "aileron_left", "aileron_right", "horizontal_tail"]
+    tail_only = RobotText("tail")
+    tail_only.fixed("base_link", "horizontal_tail")
+    assert wings(tree_of(tail_only), {}) == []
+
+
+def test_a_thruster_plugin_listing_a_fixed_link_names_a_thruster() -> None:
+    robot = RobotText("hull")
+    robot.fixed("base_link", "stern_thruster")
+    robot.add(
+        builders.model_plugin(
+            "t", "libthruster_model.so", "<linkName>stern_thruster</linkName><gain>2</gain>"
+        )
+    )
+    assert listed_thrusters(tree_of(robot), {}) == ["stern_thruster (libthruster_model.so)"]
+
+
+def test_a_hull_is_at_the_surface_by_its_waterline_and_below_it_by_its_plugins() -> None:
+    vessel = tree_of(builders.surface_vessel())
+    assert surface_hints(vessel) == ("metacentric_width",)
+    torpedo = tree_of(builders.underwater_vehicle())
+    assert underwater_hints(torpedo) == ("libthruster_model.so", "libunderwater_object.so")
+    assert surface_hints(tree_of(builders.quadrotor())) == ()
