@@ -19,14 +19,24 @@ a watcher (DdsGraph source, default polling interval 0.2 s) runs in a thread. Ti
   delivers without a network hop, so the ratio is a rough measure: how many bare round trips
   between processes one answer of the watcher costs.
 
+The same again with layouts (``, layouts`` fleets: ``watch --layouts DIR --serve 127.0.0.1:0``,
+the team layout on; issue 38's target: the answer with its layouts within 2x the echo): each
+robot's layouts and ``DIR/team.json`` are written as the robots are identified (untimed), and
+each ``switch`` asserts the answer's layouts too (the robot's file of the configuration
+``solver.assign`` gives, its address, the team layout's tab of that robot and configuration).
+And, on those fleets only, ``served``: the operator's switch -> the answer on the watcher's
+event stream (``GET /answer/events``, what the viewer's follower reads on either graph).
+
 Each round asserts what it timed (robot, configuration number); the median and 95th percentile
 are printed and kept in the benchmark's extra info. Run:
 ``python -m pytest benchmarks/bench_ros2.py -s -p no:cacheprovider``.
 """
 
 import itertools
+import json
 import os
 import queue
+import socket
 import threading
 import time
 from collections.abc import Iterator
@@ -39,7 +49,9 @@ from pytest_benchmark.fixture import BenchmarkFixture
 from benchmarks.latency import report
 from solver.core.team import load_team
 from solver.identify.profile import load_profile
-from solver.live.events import event_data
+from solver.live.events import SelectionChanged, event_data
+from solver.live.layouts import LiveLayouts
+from solver.live.server import AnswerServer
 from solver.live.sources.ros2 import DdsGraph
 from solver.live.watcher import Watcher
 from solver.solving.solution import Solution, solve
@@ -51,6 +63,8 @@ SWITCHES = 40
 DESCRIPTIONS = 10
 PROCESSES = 10  # each holds ROBOTS / PROCESSES robots
 ROBOTS = (10, 100)
+# Each fleet: its number of robots, and whether the watcher writes and serves layouts.
+FLEETS = [(robots, layouts) for layouts in (False, True) for robots in ROBOTS]
 # Untimed, before each switch: an operator switches robots at a human pace. Back-to-back
 # switches are answered at most every 10 ms (the watcher's gap between polls, which keeps
 # bursts of changes from becoming bursts of polls), so without a pause that gap is measured.
@@ -62,7 +76,7 @@ def pause() -> None:
 
 
 class Fleet:
-    def __init__(self, directory: Path, robots: int) -> None:
+    def __init__(self, directory: Path, robots: int, layouts: bool = False) -> None:
         os.environ["CYCLONEDDS_URI"] = write_config(directory)
         self.domain = next_domain()
         self.solution: Solution = solve(load_team(TEAMS / "case3.yaml"))
@@ -74,11 +88,27 @@ class Fleet:
                 self.names.append(self._put(process, number, robots, directory))
             self.robots.append(process)
         source = DdsGraph(self.domain)
-        self.watcher = Watcher(source.name, self.solution, load_profile(), source=source)
+        # With layouts: as `watch --layouts DIR --serve 127.0.0.1:0` runs.
+        self.layouts = directory / "layouts" if layouts else None
+        self.server: AnswerServer | None = None
+        written: LiveLayouts | None = None
+        if self.layouts is not None:
+            self.server = AnswerServer(self.layouts)
+            self.server.start()
+            url = self.server.url
+            written = LiveLayouts(
+                self.layouts, self.solution, base_url=url, answer_url=f"{url}/answer/events"
+            )
+        self.watcher = Watcher(
+            source.name, self.solution, load_profile(), source=source, layouts=written
+        )
         self.events: queue.Queue[tuple[float, dict[str, Any]]] = queue.Queue()
         self.thread = threading.Thread(target=self._run, daemon=True)
         self.thread.start()
         self.operator = Operator(self.domain)
+        # The robots switched to, round-robin across the tests: two switches in a row never
+        # name the same robot (the same robot again would change no answer).
+        self.order = itertools.cycle(self.names)
         ready: set[str] = set()
         deadline = time.monotonic() + 60
         while ready != set(self.names) and time.monotonic() < deadline:
@@ -109,6 +139,8 @@ class Fleet:
 
     def _run(self) -> None:
         for event in self.watcher.events():
+            if self.server is not None and isinstance(event, SelectionChanged):
+                self.server.publish(self.watcher.answer)  # as `watch --serve` does, first
             self.events.put((time.perf_counter(), event_data(event, self.solution)))
 
     def until_event(self, robot: str, kind: str) -> tuple[float, dict[str, Any]]:
@@ -124,32 +156,64 @@ class Fleet:
             else rover_configuration(self.solution)
         )
 
+    def team_titles(self) -> list[str]:
+        """The team layout's tab titles as written now (its robots do not change while the
+        operator switches)."""
+        assert self.layouts is not None
+        team = json.loads((self.layouts / "team.json").read_text(encoding="utf-8"))
+        return [tab["title"] for tab in team["configById"]["Tab!robots"]["tabs"]]
+
+    def check_layouts(self, robot: str, answer: dict[str, Any], titles: list[str]) -> None:
+        """The answer's layouts: the robot's file of the configuration ``solver.assign`` gives
+        (there, and served at the address named), and the team layout's tab of that pair."""
+        assert self.layouts is not None
+        assert self.server is not None
+        number = self.expected(robot)
+        own = answer["layouts"]["foxglove"]
+        name = f"{robot.strip('/')}/config-{number:03d}.json"
+        assert own == {"path": str(self.layouts / name), "url": f"{self.server.url}/layouts/{name}"}
+        assert Path(own["path"]).is_file()
+        team = answer["layouts"]["team"]
+        assert team["path"] == str(self.layouts / "team.json")
+        assert titles[team["tab"]].startswith(f"{robot}: {number} (")
+
     def close(self) -> None:
         self.watcher.stop("benchmark over")
         self.thread.join(timeout=30)
         self.watcher.close()
+        if self.server is not None:
+            self.server.close()
         self.operator.close()
         for robot in self.robots:
             robot.kill()
 
 
-@pytest.fixture(scope="module", params=ROBOTS, ids=[f"{n} robots" for n in ROBOTS])
+@pytest.fixture(
+    scope="module",
+    params=FLEETS,
+    ids=[f"{n} robots" + (", layouts" if layouts else "") for n, layouts in FLEETS],
+)
 def fleet(
     request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory
 ) -> Iterator[Fleet]:
-    running = Fleet(tmp_path_factory.mktemp("dds"), request.param)
+    robots, layouts = request.param
+    running = Fleet(tmp_path_factory.mktemp("dds"), robots, layouts)
     yield running
     running.close()
+
+
+def _which(fleet: Fleet) -> str:
+    return f"{len(fleet.names)} robots" + (", layouts" if fleet.layouts is not None else "")
 
 
 def test_active_robot_message_to_published_configuration(
     benchmark: BenchmarkFixture, fleet: Fleet
 ) -> None:
-    order = itertools.cycle(fleet.names)
     latencies: list[float] = []
+    titles = fleet.team_titles() if fleet.layouts is not None else []
 
     def switch() -> None:
-        robot = next(order)
+        robot = next(fleet.order)
         start = time.perf_counter()
         fleet.operator.activate(robot)
         while True:
@@ -159,13 +223,78 @@ def test_active_robot_message_to_published_configuration(
             time.sleep(0.0005)
         latencies.append(time.perf_counter() - start)
         assert answer["configuration"] == fleet.expected(robot)
+        if fleet.layouts is not None:
+            fleet.check_layouts(robot, answer, titles)
+        else:
+            assert "layouts" not in answer
 
     benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
         switch, setup=pause, rounds=SWITCHES
     )
-    report(
-        benchmark, f"active robot -> published configuration ({len(fleet.names)} robots)", latencies
-    )
+    report(benchmark, f"active robot -> published configuration ({_which(fleet)})", latencies)
+
+
+class Stream:
+    """The watcher's event stream as the viewer's follower reads it (``GET /answer/events``)."""
+
+    def __init__(self, server: AnswerServer) -> None:
+        self.socket = socket.create_connection(("127.0.0.1", server.port), timeout=60)
+        self.socket.sendall(
+            f"GET /answer/events HTTP/1.1\r\nHost: 127.0.0.1:{server.port}\r\n"
+            "Origin: http://127.0.0.1:8080\r\n\r\n".encode()
+        )
+        self.reader = self.socket.makefile("rb")
+        assert self.reader.readline().startswith(b"HTTP/1.1 200")
+        while self.reader.readline() != b"\r\n":
+            pass
+
+    def next(self) -> Any:
+        """The next answer (keep-alive comments skipped; at most a minute)."""
+        deadline = time.monotonic() + 60
+        while time.monotonic() < deadline:
+            line = self.reader.readline()
+            assert line, "the stream ended"
+            if line.startswith(b"data: "):
+                return json.loads(line[len(b"data: ") :])
+        raise AssertionError("no answer on the stream within a minute")
+
+    def close(self) -> None:
+        self.reader.close()
+        self.socket.close()
+
+
+SERVING = [(robots, layouts) for robots, layouts in FLEETS if layouts]
+
+
+# The watcher serves its answer (``--serve``) in the fleets that write layouts only; the fleet
+# fixture is shared with the tests above (same parameters, same module-scoped fleet).
+@pytest.mark.parametrize(
+    "fleet", SERVING, indirect=True, ids=[f"{n} robots, layouts" for n, _ in SERVING]
+)
+def test_active_robot_message_to_served_event(benchmark: BenchmarkFixture, fleet: Fleet) -> None:
+    assert fleet.server is not None
+    stream = Stream(fleet.server)
+    latencies: list[float] = []
+    titles = fleet.team_titles()
+    try:
+        stream.next()  # the current answer, sent first
+
+        def switch() -> None:
+            robot = next(fleet.order)
+            start = time.perf_counter()
+            fleet.operator.activate(robot)
+            while (answer := stream.next()) is None or answer.get("robot") != robot:
+                pass
+            latencies.append(time.perf_counter() - start)
+            assert answer["configuration"] == fleet.expected(robot)
+            fleet.check_layouts(robot, answer, titles)
+
+        benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
+            switch, setup=pause, rounds=SWITCHES
+        )
+    finally:
+        stream.close()
+    report(benchmark, f"active robot -> served event stream ({_which(fleet)})", latencies)
 
 
 def test_new_robots_description_to_its_first_event(
@@ -199,9 +328,7 @@ def test_new_robots_description_to_its_first_event(
     benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
         describe, rounds=DESCRIPTIONS
     )
-    report(
-        benchmark, f"new robot's description -> robot_added ({len(fleet.names)} robots)", latencies
-    )
+    report(benchmark, f"new robot's description -> robot_added ({_which(fleet)})", latencies)
 
 
 class Echo:
@@ -263,7 +390,5 @@ def test_bare_dds_echo_round_trip_peer(benchmark: BenchmarkFixture, fleet: Fleet
     finally:
         echo.close()
     report(
-        benchmark,
-        f"bare DDS echo round trip, another process (peer; {len(fleet.names)} robots)",
-        latencies,
+        benchmark, f"bare DDS echo round trip, another process (peer; {_which(fleet)})", latencies
     )

@@ -23,7 +23,7 @@ The package has wings; each is a package with its own map in its docstring:
                        are built (reading, solving)
 ``files``              reading input safely (size limits, YAML with positions,
                        typed access, file kinds) and writing output atomically
-``ros``                ROS vocabulary with no I/O: topics, message-type names
+``ros``                ROS vocabulary: topics, message-type names, teleoperation descriptions
 ``core``               the model: rule sets, constraints, team selections, the
                        constraint model, the partition into UI configurations, the
                        exact cover, the SAT questions about a rule set
@@ -69,6 +69,8 @@ Every command from Python (docs/python-api.md has worked examples):
                                 ``assign_from_graph(open_source(address), ...)``, the
                                 address from ``graph_address(ros2=True, domain=7)``
 ``demo ros2``                   ``emulated_fleet(domain)``; its graph: ``DdsGraph(domain)``
+``switch``                      ``switch_robot(open_station(address), "/uav1", {...})``
+                                -> :class:`Switched` (the watcher's answer)
 ``batch``                       ``solver.reporting.batch`` (``run_batch``: the steps)
 ``layouts``                     ``write_layouts(solution, load_presentation(), dir)``
 ``layouts --robot``             ``identified_layout(urdf, solution, ...)``
@@ -117,6 +119,7 @@ if TYPE_CHECKING:
     from solver.layouts.writer import write_layouts
     from solver.live import MasterError, Watcher, assign_from_master
     from solver.live.demo import emulated_fleet
+    from solver.live.operator import Switched, open_station, switch_robot
     from solver.live.query import assign_from_graph
     from solver.live.sources import GraphAddress, graph_address, open_source
     from solver.live.sources.ros1 import MasterGraph
@@ -157,6 +160,7 @@ _EXPORTS = {
     "RulesError": "solver.errors",
     "Solution": "solver.solving.solution",
     "SolverError": "solver.errors",
+    "Switched": "solver.live.operator",
     "Team": "solver.core.team",
     "TeamError": "solver.errors",
     "TypeSelection": "solver.core.team",
@@ -183,6 +187,7 @@ _EXPORTS = {
     "load_team": "solver.core.team",
     "numbered_robots": "solver.reporting.listing",
     "open_source": "solver.live.sources",
+    "open_station": "solver.live.operator",
     "open_watcher": "solver.live.watcher",
     "parse_combination": "solver.solving.assignment",
     "radar_figure": "solver.reporting.plot",
@@ -190,6 +195,7 @@ _EXPORTS = {
     "render_markdown": "solver.reporting.report",
     "robots": "solver.core.model",
     "solve": "solver.solving.solution",
+    "switch_robot": "solver.live.operator",
     "team_to_uvl": "solver.reporting.uvl",
     "write_layouts": "solver.layouts.writer",
     "write_plot": "solver.reporting.plot",
@@ -222,6 +228,7 @@ __all__ = [
     "RulesError",
     "Solution",
     "SolverError",
+    "Switched",
     "Team",
     "TeamError",
     "TypeSelection",
@@ -248,6 +255,7 @@ __all__ = [
     "load_team",
     "numbered_robots",
     "open_source",
+    "open_station",
     "open_watcher",
     "parse_combination",
     "radar_figure",
@@ -255,6 +263,7 @@ __all__ = [
     "render_markdown",
     "robots",
     "solve",
+    "switch_robot",
     "team_to_uvl",
     "write_layouts",
     "write_plot",

@@ -186,6 +186,13 @@ LIMITS: tuple[Limit, ...] = (
         "identify, layouts",
     ),
     Limit("bags", 64, "bags", "one command (--bag)", "identify, layouts"),
+    Limit(
+        "description-entries",
+        1_000,
+        "motion controls and sensors",
+        "a teleoperation description",
+        "identify, check",
+    ),
     # Many files at once.
     Limit("check-files", 1_000, "files", "one check run", "check"),
     Limit("batch-teams", 10_000, "team files", "one batch", "batch"),

@@ -229,30 +229,10 @@ def test_the_development_page_maps_only_modules_that_exist() -> None:
 
 # Modules whose tests live somewhere other than their own tests/<wing path>/test_<module>.py,
 # and where. Short on purpose: a new module gets a test module of its own. An entry must name
-# a module that needs tests and has no test module of its own yet, and a file that exists
-# (the entries of the command line leave with one test module per command, issue 37).
+# a module that needs tests and has no test module of its own yet, and a file that exists.
 TESTED_ELSEWHERE: dict[str, str] = {
-    # The command line, tested by what each command does.
-    "solver.__main__": "tests/test_cli.py",
-    "solver.cli": "tests/test_cli.py",
-    "solver.cli._common": "tests/cli/test_hostile_values.py",
-    "solver.cli._progress": "tests/test_progress.py",
-    "solver.cli._terminal": "tests/test_forged_output.py",
-    "solver.cli.assign": "tests/test_cli.py",
-    "solver.cli.batch": "tests/reporting/test_batch.py",
-    "solver.cli.check": "tests/check/test_cli.py",
-    "solver.cli.count": "tests/reporting/test_listing.py",
-    "solver.cli.demo": "tests/live/test_demo.py",
-    "solver.cli.export": "tests/reporting/test_uvl.py",
-    "solver.cli.fleet": "tests/identify/test_fleet.py",
-    "solver.cli.identify": "tests/identify/test_cli.py",
-    "solver.cli.layouts": "tests/layouts/test_writer.py",
-    "solver.cli.report": "tests/reporting/test_report.py",
-    "solver.cli.reproduce": "tests/test_cli.py",
-    "solver.cli.robots": "tests/reporting/test_listing.py",
-    "solver.cli.solve": "tests/test_cli.py",
-    "solver.cli.studio": "tests/studio/test_server.py",
-    "solver.cli.watch": "tests/live/test_cli.py",
+    # ``python -m solver``: the same command line as ``teleop-ui``, tested with main().
+    "solver.__main__": "tests/cli/test_cli.py",
     # Packages whose code is their lazy exports or their lookup.
     "solver": "tests/test_api.py",
     "solver.engines": "tests/engines/test_lookup.py",
@@ -268,7 +248,7 @@ TESTED_ELSEWHERE: dict[str, str] = {
     "solver.live.events": "tests/live/test_render.py",
     "solver.live.given": "tests/live/test_own_rules.py",
     "solver.live.graph": "tests/live/test_watcher.py",
-    "solver.live.query": "tests/live/test_cli.py",
+    "solver.live.query": "tests/cli/test_assign.py",
     "solver.live.rivals": "tests/live/test_watcher.py",
     "solver.live.robot": "tests/live/test_selection.py",
     "solver.live.sources.ros1.descriptions": "tests/live/sources/ros1/test_node.py",

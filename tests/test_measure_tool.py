@@ -8,6 +8,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 from tests.identify.builders import gazebo_sensor, manipulator, model_plugin, ugv
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -159,3 +161,35 @@ def test_each_motion_control_gets_its_own_precision_and_recall(tmp_path: Path) -
     # The rover, labelled Driving, is read as Driving and (its lidar) a Waypoint guess.
     assert "| Driving | 1/1 (100%) | 1/1 (100%) |" in output.splitlines()
     assert "| Waypoint | 0/1 (0%) | - |" in output.splitlines()
+
+
+def test_with_a_split_each_row_is_measured_in_its_part(tmp_path: Path) -> None:
+    tiny_set(tmp_path / "tiny")
+    split = tmp_path / "split.csv"
+    split.write_text(
+        "# seed 41, made by hand for this test\n"
+        "set,robot,family,group,files_here,part\n"
+        "tiny,rover,mobile base,g1,yes,development\n"
+        "tiny,arm_called_humanoid,arm,g2,yes,held-out\n",
+        encoding="utf-8",
+    )
+    output = measure("--set", str(tmp_path / "tiny"), "--split", str(split))
+    assert row_of(output, "mobile base", "development")[:2] == ["1", "1/1 (100%)"]
+    assert row_of(output, "arm", "held-out")[:2] == ["1", "0/1 (0%)"]
+    # The boat is in no part the split lists: measured (here: absent) as unsplit.
+    assert row_of(output, "**all**", "unsplit")[:5] == ["0", "-", "-", "0", "1"]
+
+
+def test_the_shipped_split_is_what_its_seed_makes() -> None:
+    script = ROOT / "tools" / "split_identification.py"
+    corpus = ROOT.parent / "shared" / "corpus" / "truth.csv"
+    if not corpus.is_file():
+        pytest.skip("the shared corpus is not beside this checkout")
+    done = subprocess.run(
+        [sys.executable, str(script), "--check"],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert done.returncode == 0, done.stdout

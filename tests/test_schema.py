@@ -65,3 +65,32 @@ def test_the_team_schema_rejects_what_the_loader_rejects(document: dict[str, Any
 def test_the_rules_schema_rejects_what_the_loader_rejects(document: dict[str, Any]) -> None:
     with pytest.raises(jsonschema.ValidationError):
         jsonschema.validate(document, schema("rules"))
+
+
+def test_the_shipped_teleoperation_description_follows_its_schema() -> None:
+    example = ROOT / "examples" / "teleop" / "rover.teleop.yaml"
+    jsonschema.validate(yaml.safe_load(example.read_text("utf-8")), schema("teleop"))
+
+
+@pytest.mark.parametrize(
+    "document",
+    [
+        {"robot": "no format key"},
+        {"teleop": 2},
+        {"teleop": 1, "motion_controls": [{"control": "Driving"}]},
+        {"teleop": 1, "motion_controls": [{"control": "Driving", "topic": "/a", "action": "/b"}]},
+        {"teleop": 1, "motion_controls": [{"control": "Driving", "topic": "cmd_vel"}]},
+        {"teleop": 1, "sensors": [{"kind": "lidar", "count": 0}]},
+        {"teleop": 1, "sensors": [{"kind": "lidar", "topic": "/a", "topics": ["/b"]}]},
+        {"teleop": 1, "sensors": [{"count": 1}]},
+        {"teleop": 1, "colour": "red"},
+    ],
+)
+def test_the_teleop_schema_rejects_what_the_reader_rejects(document: dict[str, Any]) -> None:
+    from solver.files.yamlio import parse_document
+    from solver.ros.description import DescriptionError, parse_description
+
+    with pytest.raises(jsonschema.ValidationError):
+        jsonschema.validate(document, schema("teleop"))
+    with pytest.raises(DescriptionError):
+        parse_description(parse_document(yaml.safe_dump(document), "d.teleop.yaml"))

@@ -316,6 +316,46 @@ WATCH = [
         "ROS 2: a new robot's description -> robot_added (100 robots)",
         "",
     ),
+    (
+        "test_active_robot_message_to_published_configuration[10 robots, layouts]",
+        "ROS 2 --layouts: active robot -> configuration and layouts (10 robots)",
+        "",
+    ),
+    (
+        "test_active_robot_message_to_served_event[10 robots, layouts]",
+        "ROS 2 --layouts: active robot -> served event stream (10 robots)",
+        "",
+    ),
+    (
+        "test_bare_dds_echo_round_trip_peer[10 robots, layouts]",
+        "ROS 2 --layouts peer: bare DDS echo round trip (10 robots)",
+        "",
+    ),
+    (
+        "test_new_robots_description_to_its_first_event[10 robots, layouts]",
+        "ROS 2 --layouts: new description -> robot_added, layouts (10 robots)",
+        "",
+    ),
+    (
+        "test_active_robot_message_to_published_configuration[100 robots, layouts]",
+        "ROS 2 --layouts: active robot -> configuration and layouts (100 robots)",
+        "",
+    ),
+    (
+        "test_active_robot_message_to_served_event[100 robots, layouts]",
+        "ROS 2 --layouts: active robot -> served event stream (100 robots)",
+        "",
+    ),
+    (
+        "test_bare_dds_echo_round_trip_peer[100 robots, layouts]",
+        "ROS 2 --layouts peer: bare DDS echo round trip (100 robots)",
+        "",
+    ),
+    (
+        "test_new_robots_description_to_its_first_event[100 robots, layouts]",
+        "ROS 2 --layouts: new description -> robot_added, layouts (100 robots)",
+        "",
+    ),
     ("test_setting_a_large_description[parsed]", "a 1.5 MB description set, parsed", ""),
     (
         "test_setting_a_large_description[cached]",
@@ -529,6 +569,20 @@ RATIOS = [
         "test_active_robot_message_to_published_configuration[100 robots]",
         "test_bare_dds_echo_round_trip_peer[100 robots]",
         "<= 3",
+    ),
+    (
+        "ROS 2 `watch --layouts --serve`, 10 robots: active robot -> configuration with its "
+        "layouts / bare DDS echo round trip",
+        "test_active_robot_message_to_published_configuration[10 robots, layouts]",
+        "test_bare_dds_echo_round_trip_peer[10 robots, layouts]",
+        "<= 2",
+    ),
+    (
+        "ROS 2 `watch --layouts --serve`, 100 robots: active robot -> configuration with its "
+        "layouts / bare DDS echo round trip",
+        "test_active_robot_message_to_published_configuration[100 robots, layouts]",
+        "test_bare_dds_echo_round_trip_peer[100 robots, layouts]",
+        "<= 2",
     ),
     (
         "`watch` topic placement: 200 robots / 20 robots (linear: about 10)",

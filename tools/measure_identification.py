@@ -7,6 +7,7 @@ Usage::
     python tools/measure_identification.py --all                # both, side by side
     python tools/measure_identification.py --set DIR --files DIR2   # files kept elsewhere
     python tools/measure_identification.py --all --profile mine.yaml  # another profile
+    python tools/measure_identification.py --all --split      # development / held-out parts
 
 A labelled set is a folder with a ``truth.csv`` (the columns of ``../shared/corpus/truth.csv``:
 ``robot``, ``file``, ``srdf``, ``source``, ``kinematic_type``, ``sensors``,
@@ -29,6 +30,11 @@ Labels that name no structure of the profile are scored against the article's fa
 ``Surface vessel`` or ``Underwater vehicle`` is right as ``Other`` until the profile has a
 structure of that name. A standalone gripper read as ``Gripper`` counts for the label ``Hand``.
 
+With ``--split`` (``tools/identification_split.csv`` by default, or a file named after it: the
+split's list, made by ``tools/split_identification.py`` with a fixed seed) the rows of every set
+are measured by the part the split gives them, ``development`` and ``held-out``, side by side in
+place of the sets; a row the split does not list is measured as ``unsplit``.
+
 The sets are read in place and never copied. A set with no truth.csv is reported and skipped.
 """
 
@@ -48,6 +54,8 @@ from solver.identify import Identification, identify, load_profile
 
 ROOT = Path(__file__).resolve().parent.parent
 OWN_SET = ROOT / "tools" / "identification_set"
+ADDED_SET = ROOT / "tools" / "generalization_set"
+SPLIT = ROOT / "tools" / "identification_split.csv"
 # Truth labels spelled differently from the profile's structure names.
 ALIASES = {
     "biped/lower-body": "Biped",
@@ -111,6 +119,13 @@ def source_of(row: dict[str, str]) -> str:
     """The repository or package a row comes from: `github owner/name`, `PyPI name`."""
     words = row.get("source", "").split()
     return " ".join(words[:2]).split("@")[0] or "(no source)"
+
+
+def read_split(path: Path) -> dict[tuple[str, str], str]:
+    """(set folder name, robot) -> part, from a split file (its ``#`` lines are its method)."""
+    with path.open(encoding="utf-8", newline="") as stream:
+        rows = csv.DictReader(line for line in stream if not line.startswith("#"))
+        return {(row["set"], row["robot"]): row["part"] for row in rows}
 
 
 def share(part: int, whole: int) -> str:
@@ -306,22 +321,33 @@ def locate(relative: str, folders: Iterable[Path]) -> Path:
 
 
 def measure(
-    name: str, folder: Path, extra_files: list[Path], structures: tuple[str, ...], run: Runner
+    name: str,
+    folder: Path,
+    extra_files: list[Path],
+    structures: tuple[str, ...],
+    run: Runner,
+    *,
+    split: dict[tuple[str, str], str] | None = None,
+    parts: dict[str, Measured] | None = None,
 ) -> Measured | None:
+    """Measure one set; with ``split``, each row into the Measured of its part in ``parts``."""
     truth = folder / "truth.csv"
     if not truth.is_file():
         return None
     with truth.open(encoding="utf-8", newline="") as stream:
-        rows = list(csv.DictReader(stream))
+        rows = list(csv.DictReader(line for line in stream if not line.startswith("#")))
     folders = [folder, *extra_files, shared_folder() / folder.name]
-    whole = Score(structures)
-    families: dict[str, Score] = {}
-    sources: dict[str, Score] = {}
+    own = Measured(name, truth, len(rows), Score(structures), {}, {})
     for row in rows:
+        measured = own
+        if split is not None and parts is not None:
+            part = split.get((folder.name, row["robot"]), "unsplit")
+            measured = parts.setdefault(part, Measured(part, truth, 0, Score(structures), {}, {}))
+            measured.rows += 1
         scores = [
-            whole,
-            families.setdefault(family_of(row), Score(structures)),
-            sources.setdefault(source_of(row), Score(structures)),
+            measured.whole,
+            measured.families.setdefault(family_of(row), Score(structures)),
+            measured.sources.setdefault(source_of(row), Score(structures)),
         ]
         urdf = locate(row["file"], folders)
         srdf = locate(row["srdf"], folders) if row.get("srdf") else None
@@ -337,7 +363,7 @@ def measure(
             continue
         for score in scores:
             score.add(row, result)
-    return Measured(name, truth, len(rows), whole, families, sources)
+    return own
 
 
 HEADER = (
@@ -391,6 +417,15 @@ def main(argv: list[str] | None = None) -> int:
         "--corpus", type=Path, help="the shared corpus folder (default: ../shared/corpus)"
     )
     parser.add_argument(
+        "--split",
+        type=Path,
+        nargs="?",
+        const=SPLIT,
+        metavar="SPLIT.csv",
+        help="measure by the parts of a split (default file: tools/identification_split.csv): "
+        "development and held-out side by side; with --all, tools/generalization_set too",
+    )
+    parser.add_argument(
         "--profile",
         type=Path,
         help="an identification profile to measure instead of the shipped one "
@@ -400,7 +435,7 @@ def main(argv: list[str] | None = None) -> int:
     corpus = args.corpus or shared_folder() / "corpus"
     folders: list[Path] = list(args.sets or [])
     if args.all:
-        folders = [corpus, OWN_SET, *folders]
+        folders = [corpus, OWN_SET, *([ADDED_SET] if args.split else []), *folders]
     elif not folders:
         folders = [corpus]
     profile = load_profile(args.profile)
@@ -409,17 +444,27 @@ def main(argv: list[str] | None = None) -> int:
     def run(urdf: Path, srdf: Path | None) -> Identification:
         return identify(urdf, srdf=srdf, rules=rules, profile=profile)
 
+    split = read_split(args.split) if args.split else None
+    parts: dict[str, Measured] = {}
     sets: list[Measured] = []
     for folder in folders:
-        measured = measure(folder.name, folder, args.files, profile.structure_names, run)
+        measured = measure(
+            folder.name, folder, args.files, profile.structure_names, run, split=split, parts=parts
+        )
         if measured is None:
             print(f"no labelled set at {folder} (truth.csv missing); nothing measured there\n")
-        else:
+        elif split is None:
             sets.append(measured)
+        else:
+            print(f"Set `{measured.name}`: {measured.rows} descriptions ({measured.truth})")
+    if split is not None:
+        sets = [parts[p] for p in ("development", "held-out", "unsplit") if p in parts]
+        print(f"Split `{args.split.name}`: " + ", ".join(f"{m.name} {m.rows}" for m in sets))
     if not sets:
         return 0
     for measured in sets:
-        print(f"Set `{measured.name}`: {measured.rows} descriptions ({measured.truth})")
+        if split is None:
+            print(f"Set `{measured.name}`: {measured.rows} descriptions ({measured.truth})")
     print("\nPer family:\n")
     print("\n".join(side_by_side("family", sets, lambda m: m.families)))
     print("\nPer source:\n")

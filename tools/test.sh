@@ -54,6 +54,14 @@ if ! command -v chromium >/dev/null 2>&1; then
 report thumbnails, the studio)" chromium chromium-driver
 fi
 
+# node and npm: the follower extension for Lichtblick (viewer/lichtblick, issue 38) is
+# TypeScript, built with tsc and unit-tested with node's own test runner. Debian 12's nodejs (18)
+# and npm are enough.
+if ! command -v npm >/dev/null 2>&1; then
+  apt_install "node and npm, to build and unit-test the Lichtblick follower extension \
+(viewer/lichtblick)" nodejs npm
+fi
+
 # Debian splits venv's pip bootstrap (ensurepip) into the python3-venv package.
 if [ ! -x "$venv/bin/python" ]; then
   if ! python3 -m venv "$venv" >/dev/null 2>&1; then
@@ -71,6 +79,19 @@ echo "tools/test.sh: installing teleop-ui with every extra and the test tools in
 "$python" -m ruff check solver tests benchmarks tools
 "$python" -m ruff format --check solver tests benchmarks tools
 "$python" -m mypy
+# The follower extension: `npm ci` installs exactly what viewer/lichtblick/package-lock.json pins
+# (integrity-checked, no install scripts run) into viewer/lichtblick/node_modules: typescript (the
+# compiler), @lichtblick/suite (the extension API's types; nothing of it runs in the app) and
+# @types/node (the unit tests' types). Then the build (dist/extension.js, which
+# tests/test_pack_extension_tool.py checks the repository's .foxe against) and its unit tests.
+echo "tools/test.sh: installing the follower extension's build tools into \
+viewer/lichtblick/node_modules (npm ci: typescript, @lichtblick/suite types, @types/node)" >&2
+(
+  cd viewer/lichtblick
+  npm ci --ignore-scripts --no-audit --no-fund --loglevel=error
+  npm run --silent build
+  npm test --silent
+)
 # -n auto: one pytest-xdist worker per core; --dist loadfile keeps a file's tests (and its
 # module fixtures: a roscore, a browser, a cached bag) in one worker.
 "$python" -m pytest tests benchmarks --benchmark-disable -n auto --dist loadfile "$@"

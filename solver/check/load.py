@@ -84,9 +84,10 @@ DUPLICATE_VALUE = Check(
     "duplicate-value",
     "error",
     "load",
-    "A value listed twice: twice in a characteristic's values, twice in one component, or "
-    "two components with the same name. Duplicates usually hide a copy-paste slip; the "
-    "message names the first occurrence.",
+    "A value listed twice: twice in a characteristic's values, twice in one component, two "
+    "components with the same name, or one motion control declared twice in a teleoperation "
+    "description. Duplicates usually hide a copy-paste slip; the message names the first "
+    "occurrence.",
     _duplicate_value,
 )
 DUPLICATE_KEY = Check(
@@ -102,9 +103,10 @@ SCHEMA = Check(
     "schema",
     "error",
     "load",
-    "The file does not follow the rule-set or team format: a field of the wrong type, a "
-    "missing or unknown field, a number out of range (such as an inverted characteristic "
-    "range or a team maximum beyond the rules' range), or a selection that leaves no value. "
+    "The file does not follow the rule-set, team or teleoperation-description format: a field "
+    "of the wrong type, a missing or unknown field, a number out of range (such as an "
+    "inverted characteristic range or a team maximum beyond the rules' range), a selection "
+    "that leaves no value, or a topic that is no full ROS name. "
     "The semantic checks need a file that loads, so they do not run on a file with load "
     "errors.",
     _schema,

@@ -1,9 +1,10 @@
 """Checking files: read each one, run the checks that apply, collect sorted findings.
 
 Files are told apart by content, as every command tells them
-(:func:`solver.files.filekind.file_kind`): team files, rule sets, and identification profiles (not
-checked, said with ``not-checked``); a file of no recognisable kind is read as a rule set. Team
-files are checked against
+(:func:`solver.files.filekind.file_kind`): team files, rule sets, robots' teleoperation
+descriptions (read by :mod:`solver.ros.description`, every problem a located finding), and
+identification profiles (not checked, said with ``not-checked``); a file of no recognisable kind
+is read as a rule set. Team files are checked against
 
 1. the rule set given with ``rules=`` (``--rules``), which is checked too; else
 2. the one rule set among the files, when there is exactly one (``teleop-ui check
@@ -56,9 +57,12 @@ from solver.errors import (
 from solver.files.filekind import FileKind, describe, file_kind
 from solver.files.yamlio import Document, load_document
 from solver.limits import limit
+from solver.ros.description import DescriptionError, parse_description
 
 __all__ = ["Report", "check_files", "is_team_document"]
 
+# What check reads, as a file it does not read is told.
+_READ = "check reads rule sets, teams and teleoperation descriptions"
 # Load faults that still leave a usable document (the first of two duplicate keys is kept).
 TOLERATED = frozenset({"duplicate-key"})
 
@@ -210,6 +214,17 @@ class _Run:
             return
         self.run_checks(TEAM_CHECKS, TeamContext(team, document, self.analysis(team.rules)))
 
+    def teleop_file(self, document: Document) -> None:
+        """A robot's teleoperation description: its load faults as findings (too many entries:
+        refused, as every input past a limit is)."""
+        self.report_faults(document.tolerated)
+        try:
+            parse_description(document)
+        except DescriptionError as error:
+            self.report_faults(error.faults)
+        except TooLargeError as error:
+            self.unusable.extend(error.faults)
+
 
 def _own_rules(path: Path, document: Document) -> tuple[Path, str] | None:
     """The rule set a team file names, as (path to read, name to show); ``None`` when the team
@@ -263,6 +278,9 @@ def check_files(
         (p, d) for (p, d), kind in zip(documents, kinds, strict=True) if kind in ("rules", None)
     ]
     team_docs = [(p, d) for (p, d), kind in zip(documents, kinds, strict=True) if kind == "team"]
+    for (_, document), kind in zip(documents, kinds, strict=True):
+        if kind == "teleop":
+            run.teleop_file(document)
     try:
         loaded = {p: run.rules_file(p, d.file, d) for p, d in rule_docs}
         against, against_name = _rule_set_for_teams(rules, rule_docs, loaded)
@@ -307,7 +325,7 @@ def _note_files_not_checked(
     """Profiles and presentations (rules/ holds them; they are no rule sets): said, not read."""
     for (_, document), kind in zip(documents, kinds, strict=True):
         if kind in ("profile", "presentation"):
-            note = f"not checked: {describe(kind)} (check reads rule sets and teams)"
+            note = f"not checked: {describe(kind)} ({_READ})"
             run.report_faults((), ((document.location(), note),))
 
 

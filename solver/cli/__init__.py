@@ -49,6 +49,7 @@ COMMANDS: dict[str, str] = {
     "robots": "solver.cli.robots",
     "solve": "solver.cli.solve",
     "studio": "solver.cli.studio",
+    "switch": "solver.cli.switch",
     "watch": "solver.cli.watch",
 }
 

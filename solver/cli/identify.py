@@ -32,7 +32,9 @@ def register(subparsers: Any) -> None:
         "its SRDF, "
         "topic lists and bags; print its structure, the rule set's kinematic type, "
         "a confidence, the evidence, its sensors and motion controls. With --team, "
-        "also each characteristic combination and its UI configuration.",
+        "also each characteristic combination and its UI configuration. The robot's "
+        "teleoperation description (ROBOT.teleop.yaml beside the URDF, or --teleop) wins "
+        "over what is read; --describe drafts one.",
     )
     parser.add_argument("description", metavar="ROBOT.urdf", help="URDF or xacro file")
     parser.add_argument("--srdf", metavar="ROBOT.srdf", help="MoveIt SRDF of the robot")
@@ -63,6 +65,19 @@ def register(subparsers: Any) -> None:
         "rule set whose kinematic types, sensor types and motion controls the "
         "robot is mapped to (default: the --team file's rules, else the shipped "
         "paper rules)",
+    )
+    parser.add_argument(
+        "--teleop",
+        metavar="ROBOT.teleop.yaml",
+        help="the robot's teleoperation description (its declared kinematic type, motion "
+        "controls and sensors win over what is read); default: ROBOT.teleop.yaml beside the "
+        "URDF when there is one",
+    )
+    parser.add_argument(
+        "--describe",
+        action="store_true",
+        help="print a teleoperation description drafted from what was found, the evidence as "
+        "comments, instead of the report (no description is read)",
     )
     parser.add_argument(
         "--explain",
@@ -99,11 +114,18 @@ def run(args: argparse.Namespace) -> int:
             rules=team.rules if team else rules,
             profile=profile,
             trust_xacro=args.trust_xacro,
+            teleop=None if args.describe else args.teleop,
+            look_beside=not args.describe,
         )
     if args.strict and result.warnings:
         from solver import InputError
 
         raise InputError(result.warnings)
+    if args.describe:
+        from solver.identify.describe import draft_description
+
+        write(draft_description(result))
+        return 0
     solution = _solved(team)
     given = given_values(args.set, solution)
     found = combinations(result, solution, profile, given) if solution else ()

@@ -61,6 +61,12 @@ def register(subparsers: Any) -> None:
         help="identification profile for Fleet and Live (default: the shipped one)",
     )
     parser.add_argument(
+        "--layouts",
+        metavar="DIR",
+        help="with --ros2/--master: write each live robot's Lichtblick layouts into DIR, as "
+        "watch --layouts does; the Live view shows where the answer's are",
+    )
+    parser.add_argument(
         "--interval",
         type=positive_seconds,
         default=0.2,
@@ -89,6 +95,8 @@ def run(args: argparse.Namespace) -> int:
         raise InputError.at("--port", f"a port is 0..65535, got {args.port}")
     if args.ros2 and args.master:
         raise InputError.at("--master", "give --ros2 or --master URL, not both")
+    if args.layouts is not None and not (args.ros2 or args.master):
+        raise InputError.at("--layouts", "the live robots' layouts need --ros2 or --master URL")
     for folder in args.fleet:
         if not os.path.isdir(folder):  # never raises, where Path.is_dir does on a long name
             raise InputError.at(
@@ -148,4 +156,11 @@ def _live(args: argparse.Namespace, workspace: Any, chosen: Any) -> Any:
     solution = solve(team)
     profile = chosen if chosen is not None else load_profile()
     address = graph_address(ros2=args.ros2, master=args.master, domain=args.domain)
-    return live_feed(address, solution, profile, interval=args.interval, timeout=args.timeout)
+    return live_feed(
+        address,
+        solution,
+        profile,
+        interval=args.interval,
+        timeout=args.timeout,
+        layouts=args.layouts,
+    )

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import sys
 from collections.abc import Iterator
-from contextlib import contextmanager
+from contextlib import ExitStack, contextmanager
 from typing import TYPE_CHECKING, Any
 
 from solver.cli._common import (
@@ -24,6 +24,7 @@ if TYPE_CHECKING:
     from solver import MasterError, Solution, Watcher
     from solver.live.events import Event
     from solver.live.layouts import LiveLayouts
+    from solver.live.server import AnswerServer
 
 
 def register(subparsers: Any) -> None:
@@ -101,8 +102,25 @@ def register(subparsers: Any) -> None:
         "--layouts",
         metavar="DIR",
         help="write each robot's Lichtblick layouts, filled with its real topics, into "
-        "DIR/NAMESPACE/ when it appears or changes, and name the active robot's in each "
-        "selection_changed event",
+        "DIR/NAMESPACE/ when it appears or changes, and the team layout DIR/team.json (a "
+        "tab per robot and configuration, and the follower panel that switches them); the "
+        "answer and each selection_changed event say where the active robot's are",
+    )
+    # --serve (issue 38; solver.live.server): the answer and the layouts on loopback.
+    parser.add_argument(
+        "--serve",
+        metavar="[HOST:]PORT",
+        help="with --layouts: serve the answer (/answer, and /answer/events as Server-Sent "
+        "Events) and DIR's layouts (/layouts/PATH) read-only on this loopback address "
+        "(HOST 127.0.0.1 by default; PORT 0: a free one, printed on stderr at start)",
+    )
+    parser.add_argument(
+        "--viewer-origin",
+        action="append",
+        metavar="ORIGIN",
+        help="with --serve: a web page origin that may read what is served (repeat for "
+        "more; default: http://127.0.0.1:8080 and http://localhost:8080, where "
+        "Lichtblick's web build is served by tools/lichtblick/serve.py)",
     )
     parser.set_defaults(run=run)
 
@@ -111,25 +129,62 @@ def run(args: argparse.Namespace) -> int:
     from solver import graph_address, load_profile, open_watcher, solve
     from solver.live.given import parse_fixed
 
+    _check_serving(args)
     team = load_team_argument(args.team, args.rules)
     profile = load_profile(args.profile)
     solution = solve(team)
     fixed = parse_fixed(args.set, solution.rules)
     address = graph_address(ros2=args.ros2, master=args.master, domain=args.domain)
-    with (
-        open_watcher(
-            address,
-            solution,
-            profile,
-            interval=args.interval,
-            timeout=args.timeout,
-            push=not args.once,
-            fixed=fixed,
-            policy=args.policy,
-        ) as watcher,
-        _stopped_by_sigterm(watcher),
-    ):
-        return _watch(watcher, args, solution)
+    with ExitStack() as stack:
+        server = _server(args, stack)
+        watcher = stack.enter_context(
+            open_watcher(
+                address,
+                solution,
+                profile,
+                interval=args.interval,
+                timeout=args.timeout,
+                push=not args.once,
+                fixed=fixed,
+                policy=args.policy,
+                layouts=_layouts(args, solution, server),
+            )
+        )
+        stack.enter_context(_stopped_by_sigterm(watcher))
+        return _watch(watcher, args, solution, server)
+
+
+def _check_serving(args: argparse.Namespace) -> None:
+    """--serve needs --layouts and a watch that runs; --viewer-origin needs --serve."""
+    from solver.errors import InputError
+
+    if args.serve is not None and args.layouts is None:
+        raise InputError.at("--serve", "needs --layouts DIR: the folder it serves")
+    if args.serve is not None and args.once:
+        raise InputError.at("--serve", "a snapshot (--once) ends at once: nothing to serve")
+    if args.viewer_origin is not None and args.serve is None:
+        raise InputError.at("--viewer-origin", "only with --serve: who may read what it serves")
+
+
+def _server(args: argparse.Namespace, stack: ExitStack) -> AnswerServer | None:
+    """The server of ``--serve``, listening (its address said on stderr), closed with the
+    watch."""
+    if args.serve is None:
+        return None
+    from solver.files.atomic import make_folder
+    from solver.live.server import DEFAULT_ORIGINS, AnswerServer, serve_address, viewer_origin
+
+    address = serve_address(args.serve)
+    origins = [viewer_origin(o) for o in args.viewer_origin or DEFAULT_ORIGINS]
+    make_folder(args.layouts)
+    server = stack.enter_context(AnswerServer(args.layouts, address, origins))
+    print(
+        f"serving on {server.url} (answer: /answer, events: /answer/events, layouts: "
+        f"/layouts/; viewers: {', '.join(origins)})",
+        file=sys.stderr,
+        flush=True,
+    )
+    return server
 
 
 @contextmanager
@@ -145,11 +200,13 @@ def _stopped_by_sigterm(watcher: Watcher) -> Iterator[None]:
         signal.signal(signal.SIGTERM, previous)
 
 
-def _watch(watcher: Watcher, args: argparse.Namespace, solution: Solution) -> int:
+def _watch(
+    watcher: Watcher, args: argparse.Namespace, solution: Solution, server: AnswerServer | None
+) -> int:
     from solver import MasterError
 
     try:
-        _follow(watcher, args, solution)
+        _follow(watcher, args, solution, server)
     except MasterError:
         if not watcher.stopped:
             raise
@@ -159,9 +216,14 @@ def _watch(watcher: Watcher, args: argparse.Namespace, solution: Solution) -> in
     return 0
 
 
-def _follow(watcher: Watcher, args: argparse.Namespace, solution: Solution) -> None:
+def _follow(
+    watcher: Watcher, args: argparse.Namespace, solution: Solution, server: AnswerServer | None
+) -> None:
     """One loop for every graph: wait for it (``--wait``: a master to answer, or on DDS a first
-    robot) or check it answers, then a snapshot (``--once``) or events until stopped."""
+    robot) or check it answers, then a snapshot (``--once``) or events until stopped; each new
+    answer served first (``--serve``), then its event written."""
+    from solver.live.events import SelectionChanged
+
     if args.wait and args.ros2:
         watcher.wait_for_robot(lambda: _waiting(f"a robot on {shown(watcher.master)}", None))
     elif args.wait:
@@ -171,9 +233,10 @@ def _follow(watcher: Watcher, args: argparse.Namespace, solution: Solution) -> N
     else:
         _check_answers(watcher)
     events = [] if watcher.stopped else watcher.snapshot() if args.once else watcher.events()
-    layouts = _layouts(args, solution)
     for event in events:
-        write(_render(event, solution, args, layouts))
+        if server is not None and isinstance(event, SelectionChanged):
+            server.publish(watcher.answer)
+        write(_render(event, solution, args, watcher.layouts))
 
 
 def _waiting(what: str, error: MasterError | None) -> None:
@@ -197,23 +260,27 @@ def _check_answers(watcher: Watcher) -> None:
         ) from None
 
 
-def _layouts(args: argparse.Namespace, solution: Solution) -> LiveLayouts | None:
+def _layouts(
+    args: argparse.Namespace, solution: Solution, server: AnswerServer | None
+) -> LiveLayouts | None:
+    """The robots' layouts of ``--layouts``, with their addresses when served."""
     if args.layouts is None:
         return None
     from solver.live.layouts import LiveLayouts
 
-    return LiveLayouts(args.layouts, solution)
+    if server is None:
+        return LiveLayouts(args.layouts, solution)
+    return LiveLayouts(
+        args.layouts, solution, base_url=server.url, answer_url=f"{server.url}/answer/events"
+    )
 
 
-# --layouts: the robots' layouts written, the event as rendered with the active robot's.
 def _render(
     event: Event, solution: Solution, args: argparse.Namespace, layouts: LiveLayouts | None
 ) -> str:
+    """The event as text or JSON, after the warnings of the layouts written for it (stderr)."""
     from solver.live.render import render_event
 
-    text = render_event(event, solution, args.format)
-    if layouts is None:
-        return text
-    for warning in layouts.update(event):
+    for warning in layouts.take_warnings() if layouts is not None else ():
         print(f"warning: {warning}", file=sys.stderr, flush=True)
-    return layouts.with_layout(text, event, args.format)
+    return render_event(event, solution, args.format)

@@ -1,4 +1,4 @@
-"""Which kind of file a loaded YAML document is: a team, a rule set, or a profile.
+"""Which kind of file a loaded YAML document is: a team, a rule set, a profile, a description.
 
 One answer for every command: ``check`` sorts its files with it, ``batch`` skips what is no
 team, ``count`` reads a rule set as its whole design space, and ``solve`` (through
@@ -6,6 +6,8 @@ team, ``count`` reads a rule set as its whole design space, and ``solve`` (throu
 rule set's fields as unknown team fields. Decided by the top-level keys, in this order:
 
 1. ``team:`` -> a team (whatever else it has: the team reader reports the rest);
+   ``teleop:`` -> a robot's teleoperation description (``ROBOT.teleop.yaml`` beside its URDF,
+   :mod:`solver.ros.description`);
    ``profile: presentation`` -> a presentation profile (``teleop-ui layouts --presentation``);
 2. ``extends:`` -> an identification profile on top of another (``extends: shipped``);
    ``characteristics:`` -> an identification profile when it also has a profile-only section
@@ -37,7 +39,7 @@ __all__ = [
     "why",
 ]
 
-FileKind = Literal["team", "rules", "profile", "presentation"]
+FileKind = Literal["team", "rules", "profile", "presentation", "teleop"]
 
 # Sections only an identification profile has (rules/identification.yaml); a rule set with
 # one of them is a profile, so `check` and `batch` do not read it as a broken rule set.
@@ -60,12 +62,14 @@ _WHAT: dict[FileKind, str] = {
     "rules": "a rule set",
     "profile": "an identification profile",
     "presentation": "a presentation profile",
+    "teleop": "a teleoperation description",
 }
 _WHY: dict[FileKind, str] = {
     "team": "it has 'team:'",
     "rules": "it has 'characteristics:' and no 'team:'",
     "profile": "it has 'extends:', or 'characteristics:' and profile sections such as 'patterns:'",
     "presentation": "it has 'profile: presentation'",
+    "teleop": "it has 'teleop:'",
 }
 
 # What to pass instead, per (kind found, kind wanted).
@@ -84,6 +88,10 @@ _INSTEAD: dict[tuple[FileKind, FileKind], str] = {
         "presentation",
         "rules",
     ): "pass a rule set; a presentation profile is for `layouts --presentation`",
+    ("teleop", "team"): "pass a team file; a teleoperation description is read by `identify` "
+    "(beside its URDF, or with --teleop)",
+    ("teleop", "rules"): "pass a rule set; a teleoperation description is read by `identify` "
+    "(beside its URDF, or with --teleop)",
 }
 
 
@@ -95,6 +103,8 @@ def file_kind(document: Document) -> FileKind | None:
     keys = {str(key) for key in data}
     if "team" in keys:
         return "team"
+    if "teleop" in keys:
+        return "teleop"
     if data.get("profile") == "presentation":
         return "presentation"
     if "extends" in keys:

@@ -16,8 +16,10 @@ Modules, one concept each:
                          ``child``, ``confine``)
 ``profile``              the identification profile (patterns, rules, mappings)
 ``compose``              a profile that ``extends`` another (``extends: shipped``)
-``body``                 the parts a description shows, found by the next six modules
+``body``                 the parts a description shows, found by the next modules
 ``tree``                 the joint tree as the steps of ``body`` read it
+``pose``                 every link's place and joint's axis at rest, in the root's frame
+``couplings``            mimic groups: one actuator each, read where it acts; jaws
 ``actuation``            what each joint does alone: wheels, rotors, thrusters, grippers
 ``placement``            where the body is: a floating or planar base
 ``limbs``                chains of the other joints: legs, arms, heads, mounts, trunk
@@ -27,6 +29,8 @@ Modules, one concept each:
 ``sensors``              sensors from URDF, merged, mapped to sensor types
 ``interfaces``           sensors and motion controls from topic triples
 ``motion``               motion controls the description itself shows
+``declared``             a robot's teleoperation description: declared values win
+``describe``             a teleoperation description drafted from an identification
 ``joints``               the joints a joint command names, with safe start positions
 ``identification``       :func:`identify` / :func:`identify_urdf`, the cache
 ``combinations``         characteristic combinations -> UI configurations

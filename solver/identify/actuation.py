@@ -10,8 +10,13 @@ evidence that decided it, actuation first and names last:
    one on each side of it;
 3. casters, a vertical swivel carrying one wheel; a caster driven through a transmission is no
    caster (its swivel steers, its wheel drives);
-4. rotors too few to fly are dropped (one spinning leaf is a motor or a tool);
-5. every movable joint below a gripper joint moves a finger.
+4. rotors too few to fly are dropped (one spinning leaf is a motor or a tool), unless a
+   simulator poses them (a propeller on a floating joint is one however few);
+5. jaws side by side, found by place (:func:`~solver.identify.hands.jaws`): one motion closing
+   mirrored jaws, or two jaws at the end of a chain;
+6. a motor whose mimic followers are all wheels (or rotors, or thrusters) turns them: it
+   plays their role;
+7. every movable joint below a gripper joint moves a finger.
 
 Not here: the roles of the chains the other joints form (:mod:`solver.identify.limbs`).
 """
@@ -20,14 +25,16 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 
-from solver.identify.hands import gripper_closure
+from solver.identify.hands import gripper_closure, jaws
 from solver.identify.readers.urdf import Joint
-from solver.identify.roles import Role, main_axis
+from solver.identify.roles import POSED, Role, main_axis
 from solver.identify.tree import JointTree
 
 __all__ = ["joint_roles", "with_role"]
 
 _Z_AXIS = 2
+# Roles a motor takes from the joints it turns through a coupling.
+_DRIVEN = ("wheel", "rotor", "thruster")
 
 
 def joint_roles(tree: JointTree) -> dict[str, Role]:
@@ -38,27 +45,57 @@ def joint_roles(tree: JointTree) -> dict[str, Role]:
         role = tree.reader.read(joint, tree.moving_below)
         if role is not None:
             roles[joint.name] = role
+    for name, why in jaws(tree, set(roles)).items():
+        roles[name] = Role(name, "gripper", why)
     for name in _unnamed_wheels(tree, set(roles)):
         roles[name] = Role(
             name, "wheel", "an unnamed endless leaf below its link, wheels on both sides"
         )
     roles.update(tree.reader.casters({n: r for n, r in roles.items() if r.role == "wheel"}))
-    for name, role in list(roles.items()):
-        driven = urdf.joint(name)
-        if role.role == "caster" and driven is not None and name in urdf.controlled_joints:
-            # A driven caster is no caster: its swivel steers, its wheels drive.
-            if main_axis(driven.axis) == _Z_AXIS:
-                roles[name] = Role(name, "steering", "a vertical swivel with a transmission")
-            else:
-                roles[name] = Role(name, "wheel", "a caster's wheel with a transmission")
-    rotors = [n for n, r in roles.items() if r.role == "rotor"]
-    if rotors and len(rotors) < tree.profile.limb("min_rotors"):
-        for name in rotors:  # one spinning leaf is a motor or a tool, not flight
-            del roles[name]
+    roles.update(_driven_casters(tree, roles))
+    _drop_lone_rotors(tree, roles)
+    roles.update(_coupled_drives(tree, roles))
     grippers = gripper_closure(tree, {n for n, r in roles.items() if r.role == "gripper"})
     for name in grippers - set(roles):
         roles[name] = Role(name, "gripper", "moves a finger: below a gripper joint")
     return roles
+
+
+def _driven_casters(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Role]:
+    """A driven caster is no caster: its swivel steers, its wheels drive."""
+    found = {}
+    for name, role in roles.items():
+        driven = tree.urdf.joint(name)
+        if role.role == "caster" and driven is not None and name in tree.urdf.controlled_joints:
+            if main_axis(driven.axis) == _Z_AXIS:
+                found[name] = Role(name, "steering", "a vertical swivel with a transmission")
+            else:
+                found[name] = Role(name, "wheel", "a caster's wheel with a transmission")
+    return found
+
+
+def _drop_lone_rotors(tree: JointTree, roles: dict[str, Role]) -> None:
+    """Rotors too few to fly are none (one spinning leaf is a motor or a tool), unless a
+    simulator poses them."""
+    rotors = [n for n, r in roles.items() if r.role == "rotor"]
+    posed = any(roles[n].evidence.endswith(POSED) for n in rotors)
+    if rotors and len(rotors) < tree.profile.limb("min_rotors") and not posed:
+        for name in rotors:
+            del roles[name]
+
+
+def _coupled_drives(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Role]:
+    """A motor whose mimic followers are all wheels, rotors or thrusters plays their role: it
+    turns them through a gear (its transmission drives the vehicle, not a limb)."""
+    found = {}
+    for driver, followers in tree.couplings.followers.items():
+        kinds = {roles[f].role for f in followers if f in roles}
+        if driver in roles or len(kinds) != 1 or not kinds <= set(_DRIVEN):
+            continue
+        (kind,) = kinds
+        names = ", ".join(followers[:3])
+        found[driver] = Role(driver, kind, f"turns the {kind} joint(s) {names} (mimic coupling)")
+    return found
 
 
 def with_role(roles: Mapping[str, Role], role: str) -> list[str]:

@@ -12,8 +12,10 @@ patterns and thresholds, actuation first and names last, one step per module:
    root joints that only place the body.
 3. *Limbs* (:mod:`solver.identify.limbs`): the remaining actuated joints form a contracted tree
    whose chains are limbs (a *leg*, *arm* or *head*, a *mount* carrying wheels, rotors or
-   thrusters, or *other*) or *trunk*; *hands* (:mod:`solver.identify.hands`): fingers by name
-   and, where chains carry no names, by place, after which the limbs are read again.
+   thrusters, or *other*) or *trunk*; a mimic coupling is one actuator, read where it acts
+   (:mod:`solver.identify.couplings`); *hands* (:mod:`solver.identify.hands`): fingers by name
+   and, where chains carry no names, by place, after which the limbs are read again; legs,
+   a snake's spine and a hand's wrist are read by place and shape where names say nothing.
 4. *How the body travels* (:mod:`solver.identify.vehicle`): Gazebo model plugins add drive,
    track, flight and water evidence (a quadrotor modelled with no rotor joints is still flying;
    a hull's buoyancy says it floats), and a model trimmed of its moving parts still shows its
@@ -31,11 +33,18 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
 
 from solver.identify.actuation import joint_roles, with_role
 from solver.identify.hands import finger_groups, finger_tips, gripper_closure
-from solver.identify.limbs import Limb, find_limbs, legs_at_the_pelvis
+from solver.identify.limbs import (
+    Limb,
+    find_limbs,
+    five_bars,
+    legs_at_the_pelvis,
+    legs_by_place,
+    spine,
+    wrist,
+)
 from solver.identify.placement import Placement, placement
 from solver.identify.profile import Profile
 from solver.identify.readers.urdf import Urdf
@@ -55,13 +64,10 @@ from solver.identify.vehicle import (
 )
 from solver.untrusted import shown
 
-if TYPE_CHECKING:
-    from solver.identify.readers.srdf import Srdf
-
 __all__ = ["Body", "detect_body"]
 
 # Limbs whose joints a person commands one by one (Joint control); not heads, not mounts.
-_COMMANDED = ("arm", "leg", "other")
+_COMMANDED = ("arm", "leg", "other", "spine")
 
 
 @dataclass(frozen=True)
@@ -81,6 +87,8 @@ class Body:
     planar_base: tuple[str, ...] = ()
     controlled_wheels: tuple[str, ...] = ()
     controlled_joints: tuple[str, ...] = ()
+    # Finger and gripper joints a controller drives (a transmission or ros2_control command).
+    controlled_fingers: tuple[str, ...] = ()
     # Rotor-named leaf joints too few to fly (one spinning leaf is a motor or a tool).
     not_rotors: tuple[str, ...] = ()
     # Wheel joints of type fixed (a trimmed model): a mobile base, read with doubt.
@@ -177,6 +185,7 @@ class Body:
             "marine": int(self.marine),
             "surface": int(bool(self.surface_hints)),
             "underwater": int(bool(self.underwater_hints)),
+            "serpentine": int(self.count("spine") > 0),
         }
 
     def _trimmed(self) -> list[str]:
@@ -278,10 +287,11 @@ def _names(items: Iterable[str], limit: int = 4) -> str:
     return listed + (f", ... ({len(names)} in all)" if len(names) > limit else "")
 
 
-def detect_body(urdf: Urdf, profile: Profile, srdf: Srdf | None = None) -> Body:
-    """The parts of ``urdf`` (see the module docstring); ``srdf`` adds its virtual joint."""
+def detect_body(urdf: Urdf, profile: Profile) -> Body:
+    """The parts of ``urdf`` (see the module docstring). The SRDF is not read for the body: its
+    virtual joint is a planning convention, its groups are the classifier's to weigh."""
     tree = JointTree(urdf, profile)
-    parts = _Parts(roles=joint_roles(tree), placement=placement(tree, srdf))
+    parts = _Parts(roles=joint_roles(tree), placement=placement(tree))
     _body_parts(tree, parts)
     controlled = urdf.controlled_joints
     wheels = parts.of("wheel")
@@ -299,6 +309,12 @@ def detect_body(urdf: Urdf, profile: Profile, srdf: Srdf | None = None) -> Body:
         planar_base=parts.placement.planar,
         controlled_wheels=tuple(w for w in wheels if w in controlled),
         controlled_joints=tuple(j for j in _commanded(tree, parts) if j in controlled),
+        controlled_fingers=tuple(
+            sorted(
+                (j for j in parts.grippers if j in controlled and urdf.interfaces(j)),
+                key=tree.order,
+            )
+        ),
         not_rotors=tuple(not_rotors(tree, parts.roles)),
         fixed_wheels=tuple(fixed_wheels(tree, parts.roles)),
         fixed_rotors=tuple(fixed_rotors(tree)),
@@ -340,6 +356,7 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
     parts.limbs, parts.trunk, parts.hosts = find_limbs(
         tree, special | parts.grippers, parts.grippers, parts.roles, flying
     )
+    parts.limbs = legs_by_place(tree, parts.limbs)
     fingers = finger_groups(tree, parts.limbs, grounded=grounded(tree, parts.roles))
     if fingers:
         for name in fingers:
@@ -350,16 +367,25 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
         parts.limbs, parts.trunk, parts.hosts = find_limbs(
             tree, special | parts.grippers, parts.grippers, parts.roles, flying
         )
-    parts.limbs = legs_at_the_pelvis(tree, parts.limbs)
+        parts.limbs = legs_by_place(tree, parts.limbs)
+    parts.limbs = five_bars(tree, legs_at_the_pelvis(tree, parts.limbs))
+    if not parts.roles and not parts.trunk:  # a snake is its one chain, with nothing else
+        parts.limbs = spine(tree, parts.limbs)
+    parts.limbs = wrist(tree, parts.limbs, len(finger_tips(tree, parts.grippers)))
 
 
 def _commanded(tree: JointTree, parts: _Parts) -> list[str]:
     """Joints a person commands one by one: those of arms, legs and other limbs, and the trunk
     joints that carry one. A head points a sensor (a pan/tilt camera); a mount and a trunk
     carrying only mounts move wheels, rotors or thrusters (a transformable multirotor's frame,
-    a tilting rotor): the vehicle's own motion, not joint control.
+    a tilting rotor): the vehicle's own motion, not joint control. On a body that flies or
+    swims, a short chain of no limb is the vehicle's too (a control surface, a gimbal).
     """
-    limbs = [limb for limb in parts.limbs if limb.kind in _COMMANDED]
+    vehicle = bool(
+        parts.of("rotor") or tree.labels("flight") or fixed_rotors(tree) or tree.reader.marine
+    )
+    kinds = tuple(k for k in _COMMANDED if not (vehicle and k == "other"))
+    limbs = [limb for limb in parts.limbs if limb.kind in kinds]
     joints = [name for limb in limbs for name in limb.joints]
     firsts = {limb.joints[0] for limb in limbs}
     for name in parts.trunk:

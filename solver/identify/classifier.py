@@ -130,6 +130,8 @@ def _srdf_agreement(
         )
     if srdf.virtual_joints:
         parts.append(", ".join(f"{v.type} virtual joint {v.name}" for v in srdf.virtual_joints))
+    if any(v.type != "fixed" for v in srdf.virtual_joints):
+        parts.append("a virtual joint is a planning convention, no evidence that the base moves")
     evidence.append("; ".join(parts))
     if distinct and len(distinct) != arms:
         evidence.append(f"doubt: the SRDF plans {len(distinct)} arm(s), the tree shows {arms}")

@@ -1,8 +1,9 @@
 """A folder of real robots -> identifications and a team selection ``teleop-ui solve`` accepts.
 
 Layout: every ``NAME.urdf``, ``NAME.urdf.xacro`` or ``NAME.xacro`` directly in the folder is one
-robot; ``NAME.srdf``, ``NAME.topics`` / ``NAME.topics.txt`` and ``NAME.bag`` beside it are used
-when present. Robots are identified in name order; one that cannot be identified (malformed,
+robot; ``NAME.srdf``, ``NAME.topics`` / ``NAME.topics.txt``, ``NAME.bag`` and
+``NAME.teleop.yaml`` (its teleoperation description, whose declared values win) beside it are
+used when present. Robots are identified in name order; one that cannot be identified (malformed,
 unreadable, a missing xacro package, ...) is kept with its reason and the others still go
 through. A folder that cannot be listed is an error.
 
@@ -163,7 +164,8 @@ def identify_fleet(
         srdf = _companion(path, ".srdf")
         topics = _companion(path, ".topics", ".topics.txt")
         bag = _companion(path, ".bag")
-        outside = [p for p in (path, srdf, topics, bag) if p and _links_out(p, inside)]
+        teleop = _companion(path, ".teleop.yaml")
+        outside = [p for p in (path, srdf, topics, bag, teleop) if p and _links_out(p, inside)]
         if outside:
             entries.append(FleetEntry(name, str(path), None, _link_out(outside[0])))
             continue
@@ -178,6 +180,8 @@ def identify_fleet(
                 rules=rules,
                 profile=profile,
                 trust_xacro=trust_xacro,
+                teleop=teleop,
+                look_beside=False,  # the one beside, checked for links out above
             )
         except MissingExtraError:
             raise  # not this robot's failure: every robot would fail for it

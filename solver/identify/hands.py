@@ -4,7 +4,10 @@ A gripper joint (named so by the profile, or on a link named as a hand or palm:
 :mod:`solver.identify.roles`) moves a finger, and so does every movable joint below one (a
 finger's phalanges): :func:`gripper_closure`. Fingers whose chains carry no names are still
 told by where they are, side by side on one link in threes or more (:func:`finger_groups`).
-A hand is counted by its fingers, one tip per finger (:func:`finger_tips`).
+Jaws are told by where they are too (:func:`jaws`): joints side by side on one link that turn
+or slide about one line with nothing beyond them, closed by one motion (mimic joints follow one
+driver) or, at the end of a chain of two joints or more, each by its own (a humanoid's split
+gripper). A hand is counted by its fingers, one tip per finger (:func:`finger_tips`).
 
 Not here: the limb a hand ends (:mod:`solver.identify.limbs`), the other single-joint roles
 (:mod:`solver.identify.actuation`).
@@ -12,10 +15,80 @@ Not here: the limb a hand ends (:mod:`solver.identify.limbs`), the other single-
 
 from __future__ import annotations
 
+from solver.identify.couplings import jaw_groups
 from solver.identify.limbs import Limb
+from solver.identify.pose import local_axis, parallel
+from solver.identify.readers.urdf import Joint
 from solver.identify.tree import JointTree
 
-__all__ = ["finger_groups", "finger_tips", "gripper_closure"]
+__all__ = ["finger_groups", "finger_tips", "gripper_closure", "jaws"]
+
+# Parts whose names make a joint no jaw (a pair of eyes, two wheels, two legs).
+_NOT_JAWS = ("head", "leg", "wheel", "caster", "rotor", "thruster", "fin", "wing", "track")
+# A split gripper's jaws hang at the end of a chain of at least this many driven joints.
+_CHAIN_BEFORE_JAWS = 2
+# Places this close (metres) are one place.
+_SAME = 1e-4
+
+
+def jaws(tree: JointTree, taken: set[str]) -> dict[str, str]:
+    """Jaw joints (see the module docstring), each with the evidence that found it."""
+    found: dict[str, str] = {}
+    for group in jaw_groups(tree.urdf, tree.couplings):
+        if taken.isdisjoint(group) and not any(_named_otherwise(tree, n) for n in group):
+            driver = tree.couplings.driver(group[0])
+            why = f"one motion ({driver}, {len(group) - 1} mimic joint(s)) closes jaws side by side"
+            found.update(dict.fromkeys(group, why))
+    by_parent: dict[str, list[Joint]] = {}
+    for joint in tree.urdf.joints:
+        if (
+            joint.actuated
+            and joint.type in ("revolute", "prismatic")
+            and joint.lower is not None
+            and joint.child not in tree.moving_below
+            and joint.name not in taken
+            and joint.name not in found
+        ):
+            by_parent.setdefault(joint.parent, []).append(joint)
+    for link, pair in by_parent.items():
+        if (
+            len(pair) == 2
+            and _side_by_side(pair)
+            and not any(_named_otherwise(tree, j.name) for j in pair)
+            and _ends_a_chain(tree, link)
+        ):
+            why = f"one of two jaws side by side at the end of a chain ({link})"
+            found.update(dict.fromkeys((j.name for j in pair), why))
+    return found
+
+
+def _named_otherwise(tree: JointTree, name: str) -> bool:
+    joint = tree.urdf.joint(name)
+    parts = tree.parts_of(name) | (tree.parts_of(joint.child) if joint else frozenset())
+    return any(part in parts for part in _NOT_JAWS)
+
+
+def _side_by_side(pair: list[Joint]) -> bool:
+    """Two joints of one kind about parallel axes, placed apart along one line only."""
+    one, other = pair
+    apart = [abs(a - b) > _SAME for a, b in zip(one.origin, other.origin, strict=True)]
+    return (
+        one.type == other.type and parallel(local_axis(one), local_axis(other)) and sum(apart) <= 1
+    )
+
+
+def _ends_a_chain(tree: JointTree, link: str) -> bool:
+    """At least two driven joints move ``link`` (it is the end of a chain, not the base)."""
+    driven = 0
+    joint = tree.urdf.parent_joint(link)
+    for _ in range(64):
+        if joint is None:
+            break
+        driven += tree.drives(joint)
+        if driven >= _CHAIN_BEFORE_JAWS:
+            return True
+        joint = tree.urdf.parent_joint(joint.parent)
+    return False
 
 
 def gripper_closure(tree: JointTree, grippers: set[str]) -> set[str]:

@@ -13,7 +13,13 @@ Two entry points:
 
 * :func:`identify` reads files: a URDF, or a xacro the caller trusts (compiled first in a limited
   child process, :mod:`solver.identify.xacro.compiler`),
-  an SRDF, topic lists and bags, then calls :func:`identify_urdf`.
+  an SRDF, topic lists and bags, and the robot's teleoperation description (``ROBOT.teleop.yaml``
+  beside the URDF, or one named), then calls :func:`identify_urdf`.
+
+A teleoperation description (:mod:`solver.ros.description`) is the robot's own word: its values
+win over what identification reads or guesses, each disagreement said
+(:mod:`solver.identify.declared`). Like an SRDF it is a supporting file: one that cannot be read
+is a located warning, and the robot is identified without it.
 
 The rule set decides the kinematic types and sensor types results are mapped to (default: the
 article's); the profile (:mod:`solver.identify.profile`) holds every pattern and threshold.
@@ -33,9 +39,10 @@ from typing import TYPE_CHECKING
 
 from solver.core.rules import default_rules_path, load_rules
 from solver.core.ruleset import RuleSet
-from solver.errors import Fault, InputError
+from solver.errors import Fault, InputError, SolverError
 from solver.identify.body import Body, detect_body
 from solver.identify.classifier import classify
+from solver.identify.declared import Characteristics, with_declared
 from solver.identify.interfaces import (
     Control,
     controls_from_topics,
@@ -50,6 +57,7 @@ from solver.identify.readers.urdf import Urdf, parse_urdf
 from solver.identify.roles import Role
 from solver.identify.sensors import Detection, Sensor, merge, presented_count, sensors_from_urdf
 from solver.limits import limit
+from solver.ros.description import TeleopDescription, description_beside, load_description
 from solver.ros.joints import JointStart
 from solver.ros.names import Topic
 
@@ -95,6 +103,10 @@ class Identification:
     decision: tuple[str, ...] = ()
     # The joints a joint command names, each with a safe start (solver.identify.joints).
     joints: tuple[JointStart, ...] = ()
+    # The teleoperation description whose declared values this result holds, and where they
+    # differ from what identification read (solver.identify.declared).
+    declared: str | None = None
+    disagreements: tuple[str, ...] = ()
 
     @property
     def roles(self) -> tuple[Role, ...]:
@@ -144,14 +156,19 @@ def identify_urdf(
     rules: RuleSet | None = None,
     profile: Profile | None = None,
     notes: Sequence[str] = (),
+    description: TeleopDescription | None = None,
+    warnings: Sequence[Fault] = (),
 ) -> Identification:
-    """Identify a robot from URDF text; :class:`~solver.errors.InputError` if unusable."""
+    """Identify a robot from URDF text; :class:`~solver.errors.InputError` if unusable.
+
+    ``description``: the robot's teleoperation description, whose values win; ``warnings``:
+    flaws of supporting files read before (a description that could not be read)."""
     rules = rules if rules is not None else load_rules(default_rules_path())
     profile = profile if profile is not None else load_profile()
     urdf = parse_urdf(urdf_text, file, strict=False)
-    srdf = None if srdf_text is None else _srdf(srdf_text, srdf_file, urdf)
-    warnings = urdf.warnings + (srdf.warnings if srdf is not None else ())
-    body = detect_body(urdf, profile, srdf)
+    srdf, srdf_warnings = (None, ()) if srdf_text is None else _srdf(srdf_text, srdf_file, urdf)
+    found_warnings = (*urdf.warnings, *srdf_warnings, *warnings)
+    body = detect_body(urdf, profile)
     reading = classify(body, profile, rules, root=urdf.root, srdf=srdf, urdf=urdf)
     detections: list[Detection] = list(sensors_from_urdf(urdf, profile))
     controls = [
@@ -169,27 +186,49 @@ def identify_urdf(
         controls.append(
             controls_from_topics(source.topics, profile, reading.structure, source.name)
         )
+    found = Characteristics(
+        reading.structure,
+        reading.kinematic_type,
+        merge_controls(*controls),
+        merge(detections, profile, rules),
+    )
+    evidence = reading.evidence
+    if description is not None:
+        found = with_declared(found, description, profile, rules)
+        evidence = (*evidence, f"declared: {Path(description.file).name} (its values win)")
     return Identification(
         robot=robot or urdf.name,
         file=file,
-        structure=reading.structure,
-        kinematic_type=reading.kinematic_type,
+        structure=found.structure,
+        kinematic_type=found.kinematic_type,
         confidence=reading.confidence,
-        evidence=reading.evidence,
-        sensors=merge(detections, profile, rules),
-        motion_controls=merge_controls(*controls),
+        evidence=evidence,
+        sensors=found.sensors,
+        motion_controls=found.motion_controls,
         body=body,
         notes=tuple(notes),
-        warnings=warnings,
+        warnings=found_warnings,
         decision=reading.path,
         joints=command_joints(urdf, body),
+        declared=None if description is None else description.file,
+        disagreements=found.disagreements,
     )
 
 
-def _srdf(text: str | bytes, file: str, urdf: Urdf) -> Srdf:
+def _srdf(text: str | bytes, file: str, urdf: Urdf) -> tuple[Srdf | None, tuple[Fault, ...]]:
+    """The SRDF and its flaws. An SRDF is supporting evidence: one that cannot be read at all
+    (not XML, a comment XML rejects, hostile declarations, not a ``<robot>``) is not read, each
+    of its problems a located warning, and the URDF is identified alone."""
     from solver.identify.readers.srdf import parse_srdf  # loaded when there is an SRDF
 
-    return parse_srdf(text, file, urdf, strict=False)
+    try:
+        srdf = parse_srdf(text, file, urdf, strict=False)
+    except InputError as error:
+        return None, tuple(
+            Fault(f.location, f"{f.message} (the SRDF is not read; the URDF alone is)", f.code)
+            for f in error.faults
+        )
+    return srdf, srdf.warnings
 
 
 def is_xacro(path: str | Path) -> bool:
@@ -212,11 +251,15 @@ def identify(
     rules: RuleSet | None = None,
     profile: Profile | None = None,
     trust_xacro: bool = False,
+    teleop: str | Path | None = None,
+    look_beside: bool = True,
 ) -> Identification:
     """Identify the robot described by a URDF or xacro file (plus SRDF, topic lists, bags).
 
     A ``.xacro`` file is compiled only with ``trust_xacro=True`` (compiling xacro runs code
     from the file: :mod:`solver.identify.xacro.compiler`); any other file is read as URDF.
+    ``teleop`` names the robot's teleoperation description; without it, ``ROBOT.teleop.yaml``
+    beside the file is read when there is one (``look_beside=False``: never).
     """
     file = str(description)
     # How many files were given is known before any is read: refuse first, read nothing.
@@ -247,6 +290,9 @@ def identify(
         from solver.identify.readers.bags import read_bag_topics
 
         sources += [TopicSource(f"bag {Path(b).name}", read_bag_topics(b)) for b in bags]
+    if teleop is None and look_beside and description_beside(file).is_file():
+        teleop = description_beside(file)
+    declared, flaws = _description(teleop)
     return identify_urdf(
         text,
         file=file,
@@ -256,7 +302,25 @@ def identify(
         rules=rules,
         profile=profile,
         notes=notes,
+        description=declared,
+        warnings=flaws,
     )
+
+
+def _description(
+    path: str | Path | None,
+) -> tuple[TeleopDescription | None, tuple[Fault, ...]]:
+    """The teleoperation description at ``path``; one that cannot be read (not YAML, not a
+    description, past a limit) is each of its problems as a located warning, and not used."""
+    if path is None:
+        return None, ()
+    try:
+        return load_description(path, display=str(path)), ()
+    except SolverError as error:
+        return None, tuple(
+            Fault(f.location, f"{f.message} (the teleoperation description is not read)", f.code)
+            for f in error.faults
+        )
 
 
 def _listed_topics(topic_lists: Sequence[str | Path]) -> list[TopicSource]:

@@ -4,7 +4,8 @@ A ``trajectory_msgs/JointTrajectory`` that a layout's Publish panel sends must n
 own joints (a controller rejects a trajectory of joints it does not drive). They are the
 actuated joints of the robot's limbs (arms, legs, head, as :mod:`solver.identify.limbs` finds
 them; not its wheels), proximal to distal, limb after limb; a mimic joint follows another
-and is left out. Each starts at 0, or at the limit nearest 0 when 0 lies outside its limits.
+and is left out (where one stands in for its driver in a limb, the driver is named). Each
+starts at 0, or at the limit nearest 0 when 0 lies outside its limits.
 
 Not here: the message around them (:mod:`solver.layouts.samples`).
 """
@@ -26,12 +27,15 @@ def command_joints(urdf: Urdf, body: Body | None) -> tuple[JointStart, ...]:
     for limb in body.limbs:
         for name in limb.joints:
             joint = urdf.joint(name)
-            if joint is None or not joint.actuated or name in starts:
+            if joint is not None and joint.mimic is not None:
+                # A follower standing in for its driver (a gear pair): the driver is commanded.
+                joint = urdf.joint(joint.mimic)
+            if joint is None or not joint.actuated or joint.name in starts:
                 continue
             position = 0.0
             if joint.lower is not None and position < joint.lower:
                 position = joint.lower
             if joint.upper is not None and position > joint.upper:
                 position = joint.upper
-            starts[name] = JointStart(name, position)
+            starts[joint.name] = JointStart(joint.name, position)
     return tuple(starts.values())

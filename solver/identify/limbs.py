@@ -11,8 +11,23 @@ ending in a gripper, is an arm; on a flying body any chain of two joints or more
 carrying wheels, rotors or thrusters (Pepper's hip/knee over its wheeled base, a tilt-rotor
 unit, a boat's steered engine) is a *mount*, not a limb, except legs that each end in a wheel,
 three or more of them (a wheel-legged robot walks on them). Anything else (a flipper, a 2-joint
-pan unit without a name) is *other*. Where names say nothing, two equal long chains on a
-humanoid's pelvis below named arms are its legs (:func:`legs_at_the_pelvis`).
+pan unit without a name) is *other*, unless it carries a camera or a range sensor: a short
+unnamed chain pointing one is a *head* (a pan/tilt unit).
+
+Where names say nothing, the chains' places and shapes still speak:
+
+* two equal long chains on a humanoid's pelvis below named arms are its legs
+  (:func:`legs_at_the_pelvis`);
+* four or more alike short chains on one link, on both its sides, each ending below where it
+  starts, are legs: a walker's, whatever their number (:func:`legs_by_place`; fingers point
+  away from their palm, legs down to the ground);
+* two leg chains whose first joints turn about one line, side by side on one side of the
+  body, are the two motors of one leg closed by a linkage (a five-bar leg, the loop a URDF
+  cannot write): one leg (:func:`five_bars`);
+* one long chain of equal modules whose axes alternate, on a body that has nothing else, is a
+  *spine*: a snake robot, no arm (:func:`spine`);
+* a short chain from the root that carries a whole hand and nothing else is that hand's *wrist*
+  (a hand hung from its forearm), no arm (:func:`wrist`).
 
 Not here: fingers and hands (:mod:`solver.identify.hands`), the body they make
 (:mod:`solver.identify.body`).
@@ -22,13 +37,25 @@ from __future__ import annotations
 
 from collections import deque
 from dataclasses import dataclass, replace
+from itertools import pairwise
 
+from solver.identify.pose import distance, parallel, perpendicular
 from solver.identify.readers.urdf import Joint
 from solver.identify.roles import Role
 from solver.identify.tree import JointTree
 from solver.untrusted import shown
 
-__all__ = ["LIMB_KINDS", "Limb", "find_limbs", "legs_at_the_pelvis", "sort_limbs"]
+__all__ = [
+    "LIMB_KINDS",
+    "Limb",
+    "find_limbs",
+    "five_bars",
+    "legs_at_the_pelvis",
+    "legs_by_place",
+    "sort_limbs",
+    "spine",
+    "wrist",
+]
 
 # A spherical (ball) joint is outside the URDF spec but real files have it: a shoulder, a hip.
 _LIMB_JOINTS = ("revolute", "continuous", "prismatic", "spherical")
@@ -41,13 +68,24 @@ _WHEEL_LEGS = 3
 _FLYING_ARM_JOINTS = 2
 # Roles a single joint plays that make it part of the base, not of a limb.
 _MOUNTED = ("wheel", "steering", "caster", "rotor", "thruster")
+# Legs by place: at least this many alike chains of this many joints on one link.
+_WALKER_LEGS = 4
+_LEG_JOINTS = (2, 4)
+# A leg ends below where it starts by at least this share of its reach (fingers do not).
+_LEG_DROP = 0.25
+# The two motors of a five-bar leg sit this close (metres), on one line; legs are paired only
+# on a body of at most this many leg chains (pairing compares each with each).
+_FIVE_BAR_GAP = 0.15
+_MOST_FIVE_BAR_LEGS = 64
+# A snake's modules are alike: every spacing within this share of the middle one.
+_MODULE_SPREAD = 0.1
 
 
 @dataclass(frozen=True, slots=True)
 class Limb:
     """A terminal chain of actuated joints, proximal to distal."""
 
-    kind: str  # leg, arm, head, mount, other
+    kind: str  # leg, arm, head, mount, other; spine (a snake's body), wrist (a hand's)
     joints: tuple[str, ...]
     base: str
     tip: str
@@ -124,6 +162,156 @@ def legs_at_the_pelvis(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     return sort_limbs(tree, [limb for limb in limbs if limb not in pelvis] + legs)
 
 
+def legs_by_place(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
+    """Alike unnamed chains on one link, four or more, on both its sides, each ending below
+    where it starts: legs (a hexapod's, a quadruped's whose joints carry no leg names)."""
+    by_base: dict[str, list[Limb]] = {}
+    for limb in limbs:
+        if (
+            limb.kind in ("arm", "other")
+            and not limb.named
+            and not limb.gripper
+            and _LEG_JOINTS[0] <= len(limb.joints) <= _LEG_JOINTS[1]
+        ):
+            by_base.setdefault(limb.base, []).append(limb)
+    legs: set[int] = set()
+    for base, group in by_base.items():
+        lengths = {len(limb.joints) for limb in group}
+        if len(group) >= _WALKER_LEGS and len(lengths) == 1 and _stands(tree, base, group):
+            legs.update(id(limb) for limb in group)
+    if not legs:
+        return limbs
+    why = "one of alike chains around one link, each ending below where it starts (legs by place)"
+    return sort_limbs(
+        tree, [replace(limb, kind="leg", why=why) if id(limb) in legs else limb for limb in limbs]
+    )
+
+
+def _stands(tree: JointTree, base: str, group: list[Limb]) -> bool:
+    """The chains start on both sides of ``base`` and each ends below where it starts."""
+    poses = tree.poses
+    centre = poses.place(base)
+    sides = set()
+    for limb in group:
+        first = tree.urdf.joint(limb.joints[0])
+        if first is None:
+            return False
+        start, end = poses.place(first.child), poses.place(limb.tip)
+        reach = distance(start, end)
+        if reach == 0 or start[2] - end[2] < _LEG_DROP * reach:
+            return False
+        offset = start[1] - centre[1]
+        if abs(offset) > 1e-6:
+            sides.add(offset > 0)
+    return sides == {True, False}
+
+
+def five_bars(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
+    """Pairs of leg chains that are one five-bar leg (see the module docstring), merged."""
+    legs = [limb for limb in limbs if limb.kind == "leg"]
+    if len(legs) > _MOST_FIVE_BAR_LEGS:
+        return limbs  # no walker has so many: a stranger's file is not paired leg by leg
+    merged: dict[int, Limb] = {}
+    used: set[int] = set()
+    for index, one in enumerate(legs):
+        if id(one) in used:
+            continue
+        for other in legs[index + 1 :]:
+            if id(other) not in used and _coaxial(tree, one, other):
+                why = "two motors of one five-bar leg (their first joints turn about one line)"
+                merged[id(one)] = replace(one, joints=one.joints + other.joints, why=why)
+                used.update((id(one), id(other)))
+                break
+    if not merged:
+        return limbs
+    kept = [
+        merged.get(id(limb), limb) for limb in limbs if id(limb) not in used or id(limb) in merged
+    ]
+    return sort_limbs(tree, kept)
+
+
+def _coaxial(tree: JointTree, one: Limb, other: Limb) -> bool:
+    """The first joints of two chains turn about one line, close together, on one side of the
+    body (a humanoid's two hips share a line too, but on both sides of it)."""
+    first, second = tree.urdf.joint(one.joints[0]), tree.urdf.joint(other.joints[0])
+    if first is None or second is None or first.type == "prismatic":
+        return False
+    poses = tree.poses
+    a, b = poses.place(first.child), poses.place(second.child)
+    axis = poses.axis(first)
+    gap = distance(a, b)
+    if not parallel(axis, poses.axis(second)) or gap > _FIVE_BAR_GAP:
+        return False
+    line = (b[0] - a[0], b[1] - a[1], b[2] - a[2])
+    centre = poses.place(tree.urdf.root)
+    same_side = (a[1] - centre[1]) * (b[1] - centre[1]) > 0
+    return same_side and (gap < 1e-6 or parallel(line, axis))
+
+
+def spine(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
+    """The body's one limb as a *spine* when it is a snake's: a long chain with no arm or leg
+    names and no gripper, of equal modules (every spacing between joints alike), each joint's
+    axis square to the last's, on a body that has nothing else (no wheels, rotors, legs or
+    other chains)."""
+    if len(limbs) != 1:
+        return limbs
+    limb = limbs[0]
+    if (
+        limb.kind not in ("arm", "other")
+        or limb.gripper
+        or len(limb.joints) < tree.profile.limb("spine_min_joints")
+    ):
+        return limbs
+    joints = [j for j in (tree.urdf.joint(name) for name in limb.joints) if j is not None]
+    # A snake may have a head; arm or leg names say it is something else.
+    named = any(
+        part in tree.parts_of(j.name) | tree.parts_of(j.child)
+        for j in joints
+        for part in ("arm", "leg")
+    )
+    if named or not _alternating(tree, joints) or not _modules(tree, joints):
+        return limbs
+    why = f"a chain of {len(joints)} equal modules whose axes alternate, nothing else (a spine)"
+    return [replace(limb, kind="spine", why=why)]
+
+
+def _alternating(tree: JointTree, joints: list[Joint]) -> bool:
+    axes = [tree.poses.axis(joint) for joint in joints]
+    return all(perpendicular(one, other) for one, other in pairwise(axes))
+
+
+def _modules(tree: JointTree, joints: list[Joint]) -> bool:
+    places = [tree.poses.place(joint.child) for joint in joints]
+    spacings = sorted(distance(a, b) for a, b in pairwise(places))
+    middle = spacings[len(spacings) // 2]
+    return middle > 0 and all(abs(s - middle) <= _MODULE_SPREAD * middle for s in spacings)
+
+
+def wrist(tree: JointTree, limbs: list[Limb], fingers: int) -> list[Limb]:
+    """A short chain from the root ending in a whole hand (``fingers`` of them, at least the
+    profile's ``hand_min_fingers``), the body's only limb: the hand's wrist, not an arm."""
+    if len(limbs) != 1 or fingers < tree.profile.limb("hand_min_fingers"):
+        return limbs
+    limb = limbs[0]
+    if (
+        limb.kind != "arm"
+        or not limb.gripper
+        or not _on_the_root(tree, limb.base)
+        or len(limb.joints) >= tree.profile.limb("arm_min_joints")
+    ):
+        return limbs
+    why = f"{len(limb.joints)} joint(s) from the root carrying a hand of {fingers} fingers"
+    return [replace(limb, kind="wrist", why=why)]
+
+
+def _on_the_root(tree: JointTree, link: str) -> bool:
+    """``link`` is the root, or fixed to it (a forearm fixed to ``world``)."""
+    joint = tree.urdf.parent_joint(link)
+    while joint is not None and not joint.movable:
+        joint = tree.urdf.parent_joint(joint.parent)
+    return joint is None
+
+
 def sort_limbs(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     """Legs, arms, heads, then the rest; each kind in the document order of its first joint."""
     return sorted(
@@ -155,7 +343,7 @@ def _contracted(
                 if kind == "gripper":
                     hosts.add(anchor)
                     continue  # the gripper's own subtree is not a limb
-            elif joint.actuated and joint.type in _LIMB_JOINTS:
+            elif tree.drives(joint) and joint.type in _LIMB_JOINTS:
                 children.setdefault(anchor, []).append(joint)
                 below = joint.name
             stack.append((joint.child, below))
@@ -186,13 +374,38 @@ def _classify(
         return Limb("mount", names, base, tip, gripper, named, f"carries {', '.join(mounted)}")
     if kind is not None:
         return Limb(kind, names, base, tip, gripper, named, why)
+    kind, why = _unnamed_kind(tree, chain, length, gripper=gripper, named=named, flying=flying)
+    return Limb(kind, names, base, tip, gripper, named, why)
+
+
+def _unnamed_kind(
+    tree: JointTree, chain: list[Joint], length: int, *, gripper: bool, named: bool, flying: bool
+) -> tuple[str, str]:
+    """The kind of a chain the names do not decide, by its shape and what it carries."""
+    if (
+        not named
+        and not gripper
+        and length <= tree.profile.limb("head_max_joints")
+        and _points_a_sensor(tree, chain[-1])
+    ):
+        return "head", (
+            f"a chain of {length} joint(s) carrying a camera or a range sensor (a pan/tilt unit)"
+        )
     if length >= tree.profile.limb("arm_min_joints") or (gripper and length >= 2):
-        why = "ends in a gripper" if gripper else f"an unnamed chain of {length} joints"
-        return Limb("arm", names, base, tip, gripper, named, why)
+        return "arm", "ends in a gripper" if gripper else f"an unnamed chain of {length} joints"
     if flying and length >= _FLYING_ARM_JOINTS and not named:
-        why = f"a chain of {length} joints hanging from a flying body"
-        return Limb("arm", names, base, tip, gripper, named, why)
-    return Limb("other", names, base, tip, gripper, named, "no name or shape of a limb")
+        return "arm", f"a chain of {length} joints hanging from a flying body"
+    return "other", "no name or shape of a limb"
+
+
+def _points_a_sensor(tree: JointTree, joint: Joint) -> bool:
+    """A camera, lidar or range sensor sits on the joint's child link or below it."""
+    links = tree.sensor_links
+    if not links:
+        return False
+    return joint.child in links or any(
+        j.child in links for j in tree.urdf.subtree_joints(joint.child)
+    )
 
 
 def _named_kind(

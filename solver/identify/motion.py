@@ -92,9 +92,20 @@ def _limbs(body: Body, urdf_source: str) -> _Shown:
         found.append(
             ("controlled_joints", f"{urdf_source}: {count} limb joint(s) with a transmission")
         )
+    if body.controlled_fingers:
+        count = len(body.controlled_fingers)
+        found.append(
+            (
+                "controlled_fingers",
+                f"{urdf_source}: {count} gripper joint(s) a controller drives",
+            )
+        )
     arms = [limb for limb in body.limbs if limb.kind == "arm"]
     if arms:
         found.append(("arm", f"{urdf_source}: {len(arms)} arm(s) of actuated joints"))
+    for limb in body.limbs:
+        if limb.kind == "spine":  # a snake moves by its joints: they take goals
+            found.append(("arm", f"{urdf_source}: a spine of {len(limb.joints)} actuated joints"))
     # Six degrees of freedom reach any pose of the gripper: Cartesian goals can be solved. A
     # guess: whether the software offers them is not in the description.
     if any(limb.gripper and len(limb.joints) >= _CARTESIAN_JOINTS for limb in arms):

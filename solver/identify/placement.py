@@ -1,10 +1,15 @@
 """Where the body is: joints that only place it in the world, a floating or a planar base.
 
 A description may place its body by joints that move no part of it: a ``floating`` or
-``planar`` joint, a chain of joints at the root that slide along x and y and turn about z (a
-planar base, as simulators model a mobile base) or slide along x, y, z and turn about all three
-(a simulated floating base), or an SRDF's virtual joint. :func:`placement` finds them; the
-root chain's joints are then nobody's limb.
+``planar`` joint that carries the body, or a chain of joints at the root that slide along x and
+y and turn about z (a planar base, as simulators model a mobile base) or slide along x, y, z and
+turn about all three (a simulated floating base). :func:`placement` finds them; the root
+chain's joints are then nobody's limb.
+
+A ``floating`` joint that carries only a leaf part is no base: it is a part a simulator poses
+(a propeller drawn turning, :mod:`solver.identify.roles`). An SRDF's virtual joint is a
+planning convention (MoveIt's setup assistant writes a ``planar`` one by default): it says
+nothing about whether the base moves, and is not read here.
 
 Not here: what moves the body (:mod:`solver.identify.vehicle`).
 """
@@ -12,14 +17,10 @@ Not here: what moves the body (:mod:`solver.identify.vehicle`).
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
 from solver.identify.readers.urdf import Joint
 from solver.identify.roles import main_axis
 from solver.identify.tree import JointTree
-
-if TYPE_CHECKING:
-    from solver.identify.readers.srdf import Srdf
 
 __all__ = ["Placement", "placement"]
 
@@ -34,21 +35,22 @@ class Placement:
     placing: tuple[str, ...] = ()  # root joints: x, y and a turn, or x, y, z and three turns
 
 
-def placement(tree: JointTree, srdf: Srdf | None) -> Placement:
-    """The floating and planar bases of ``tree`` (``srdf`` adds its virtual joint)."""
-    floating = [j.name for j in tree.urdf.joints if j.type == "floating"]
-    planar = [j.name for j in tree.urdf.joints if j.type == "planar"]
+def placement(tree: JointTree) -> Placement:
+    """The floating and planar bases of ``tree``."""
+    floating = [j.name for j in tree.urdf.joints if j.type == "floating" and _carries(tree, j)]
+    planar = [j.name for j in tree.urdf.joints if j.type == "planar" and _carries(tree, j)]
     placing = _root_axes(tree)
     if len(placing) == 6:
         floating.append(f"root joints {', '.join(placing)} (x, y, z and three turns)")
     elif len(placing) == 3:
         planar.append(f"root joints {', '.join(placing)} (x, y and a turn about z)")
-    for virtual in srdf.virtual_joints if srdf is not None else ():
-        if virtual.type in ("planar", "floating"):
-            (planar if virtual.type == "planar" else floating).append(
-                f"SRDF virtual joint {virtual.name} ({virtual.type})"
-            )
     return Placement(tuple(floating), tuple(planar), tuple(placing))
+
+
+def _carries(tree: JointTree, joint: Joint) -> bool:
+    """The joint carries more of the body than one part: a joint below it, or it is the only
+    joint on the root (a body of one link placed in the world)."""
+    return bool(tree.urdf.children(joint.child)) or len(tree.urdf.children(tree.urdf.root)) == 1
 
 
 def _root_axes(tree: JointTree) -> list[str]:

@@ -1,10 +1,11 @@
 """What an SRDF plans, read against the body the URDF shows: its arms and its hands.
 
 MoveIt configurations plan more than arms: legs (a quadruped's ``lf_leg``), a torso lift, the
-whole body, pairs of limbs. :func:`arm_plans` keeps the planning groups that move an arm: not
-mostly on the legs or on the trunk, over fewer than three limbs, and not extending another
-such group (Fetch's ``arm_with_torso``; chains are expanded to their joints through the URDF,
-so a chain group from the torso to a hand extends the hand's arm). :func:`hand_effectors`
+whole body, pairs of limbs, a gripper's jaws. :func:`arm_plans` keeps the planning groups that
+move an arm: not only over a gripper's joints, not mostly on the legs or on the trunk, over
+fewer than three limbs, and not extending another such group (Fetch's ``arm_with_torso``;
+chains are expanded to their joints through the URDF, so a chain group from the torso to a
+hand extends the hand's arm). :func:`hand_effectors`
 keeps the end effectors that are not feet (a leg's end effector is where it stands).
 
 Not here: reading the SRDF (:mod:`solver.identify.readers.srdf`).
@@ -37,12 +38,14 @@ def arm_plans(
     legs = {j for limb in body.limbs if limb.kind == "leg" for j in limb.joints}
     trunk = set(body.trunk)
     limb_of = {j: index for index, limb in enumerate(body.limbs) for j in limb.joints}
+    fingers = {role.joint for role in body.roles if role.role == "finger"}
     walker = _Chains(urdf)
     by_joints: dict[frozenset[str], Group] = {}
     for group in srdf.arm_groups(min_joints)[:MOST_GROUPS]:
         joints = walker.joints(group)
         if (
-            2 * len(joints & legs) <= len(joints)
+            not joints <= fingers  # a gripper's group, however it is named
+            and 2 * len(joints & legs) <= len(joints)
             and 2 * len(joints & trunk) <= len(joints)
             and len({limb_of[j] for j in joints if j in limb_of}) < 3
         ):

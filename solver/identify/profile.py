@@ -104,6 +104,7 @@ FEATURES = (
     "marine",
     "surface",
     "underwater",
+    "serpentine",
 )
 # thrusters / fins / casters: joints (or plugin-named links) in those roles; finger_motions: the
 # finger joints that move on their own (not mimic); marine: a body in water (thrusters, marine
@@ -114,6 +115,8 @@ FEATURES = (
 # planar virtual joint (a trimmed or simulated model), not from driven wheels or a plugin.
 # weak_flight: flying is known only from fixed rotor-named links on a body with no movable
 # joint at all (a trimmed multirotor model), not from rotor joints or a flight plugin.
+# serpentine: the body is one long chain of equal modules whose axes alternate, with no base
+# that holds it (a snake robot).
 BOOLEAN_FEATURES = (
     "mobile_base",
     "flying",
@@ -123,6 +126,7 @@ BOOLEAN_FEATURES = (
     "marine",
     "surface",
     "underwater",
+    "serpentine",
 )
 DIRECTIONS = ("published", "subscribed")
 CONTROL_SOURCES = (
@@ -130,6 +134,7 @@ CONTROL_SOURCES = (
     "controlled_wheels",
     "flight",
     "controlled_joints",
+    "controlled_fingers",
     "srdf_group",
     "srdf_end_effector",
     "wheels",
@@ -145,9 +150,10 @@ LIMB_KEYS = (
     "hand_min_fingers",
     "finger_max_joints",
     "min_rotors",
+    "spine_min_joints",
 )
 # Thresholds a profile written before they existed may leave out.
-LIMB_DEFAULTS = {"finger_max_joints": 4, "min_rotors": 2}
+LIMB_DEFAULTS = {"finger_max_joints": 4, "min_rotors": 2, "spine_min_joints": 6}
 VELOCITY = "velocity"
 
 # The sections only a profile has are the ones that tell a profile from a rule set.
@@ -159,7 +165,7 @@ SENSOR_TYPE = "sensor_type"
 SENSOR_COUNT = "sensor_count"
 ROLES = (MOTION_CONTROL, SENSOR_TYPE, SENSOR_COUNT)
 _STRUCTURE_KEYS = {"name", "when", "expect", "kinematic_types", "confidence", "description"}
-_ELEMENT_KEYS = {"kind", "types", "match"}
+_ELEMENT_KEYS = {"kind", "types", "match", "max_rays"}
 _PLUGIN_RULE_KEYS = {"kind", "match"}
 _TOPIC_SENSOR_KEYS = {"kind", "types", "match", "direction"}
 _TOPIC_CONTROL_KEYS = {"control", "types", "match", "direction"}
@@ -294,9 +300,20 @@ class SensorRule:
     match: Pattern | None = None
     direction: str | None = None
     location: Location | None = field(default=None, compare=False)
+    # Ray sensors only: at most this many rays (horizontal x vertical samples). A range finder
+    # casts one; a lidar sweeps hundreds.
+    max_rays: int | None = None
 
-    def accepts(self, kind_or_type: str | None, text: str, direction: str | None = None) -> bool:
+    def accepts(
+        self,
+        kind_or_type: str | None,
+        text: str,
+        direction: str | None = None,
+        rays: int | None = None,
+    ) -> bool:
         if self.types and kind_or_type not in self.types:
+            return False
+        if self.max_rays is not None and (rays is None or rays > self.max_rays):
             return False
         if self.direction is not None and direction is not None and direction != self.direction:
             return False
@@ -368,6 +385,9 @@ class Profile:
     description_controls: tuple[tuple[str, tuple[str, ...]], ...]
     digest: str = ""
     navigation: NavigationRule | None = None
+    # Simulator systems (Gazebo Sim's ``gz::sim::systems::Imu``, ``...::Sensors``): they run
+    # the <sensor> elements, they are none themselves (``sensors.systems``).
+    simulator_systems: Pattern | None = None
 
     def role(self, name: str) -> str:
         """The rule-set characteristic filling role ``name`` (motion_control, ...)."""
@@ -444,10 +464,11 @@ def parse_profile(document: Document) -> Profile:
     reader.unknown_keys(
         ("sensors",),
         reader.mapping(("sensors",), "sensors"),
-        {"elements", "plugins", "ground_truth"},
+        {"elements", "plugins", "ground_truth", "systems"},
         "sensors field",
     )
     ground_truth = _pattern(reader, ("sensors", "ground_truth"), required=False)
+    systems = _pattern(reader, ("sensors", "systems"), required=False)
     sensor_types = _sensor_types(reader)
     topics = reader.mapping(("topics",), "topics")
     reader.unknown_keys(
@@ -486,6 +507,7 @@ def parse_profile(document: Document) -> Profile:
         description,
         hashlib.sha256(text).hexdigest(),
         navigation,
+        systems,
     )
 
 
@@ -690,7 +712,12 @@ def _sensor_rules(
             # Gazebo sensor types are case-insensitive words; message types keep their case.
             allowed = written if messages else frozenset(t.lower() for t in written)
         direction = _direction(reader, item, spec)
-        found.append(SensorRule(kind, allowed, match, direction, reader.document.location(item)))
+        rays = reader.integer((*item, "max_rays"), "most rays", required=False)
+        if rays is not None and rays < 1:
+            reader.fault((*item, "max_rays"), f"max_rays must be 1 or more, got {rays}")
+            rays = None
+        location = reader.document.location(item)
+        found.append(SensorRule(kind, allowed, match, direction, location, rays))
     return tuple(found)
 
 

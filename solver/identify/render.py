@@ -9,6 +9,8 @@
      "combinations": [...],      # assignment JSON of `teleop-ui assign`, with --team
      "missing": [...],           # with --team: characteristics nothing gave (only if some)
      "warnings": [{"file", "line", "message"}],   # flaws read past; only when there are some
+     "declared": "robot.teleop.yaml",   # the teleoperation description read; only with one
+     "disagreements": [...],     # where it differs from what was read; only when some do
      "decision": [...]}          # with explain: the structure rules tried, in order
 
 ``fleet`` prints a list of these; a live graph's robot events carry :func:`summary_data`, the
@@ -98,6 +100,10 @@ def identification_data(
             {"file": w.location.file, "line": w.location.line, "message": _message(w)}
             for w in identification.warnings
         ]
+    if identification.declared is not None:
+        data["declared"] = identification.declared
+    if identification.disagreements:
+        data["disagreements"] = list(identification.disagreements)
     return data
 
 
@@ -140,6 +146,9 @@ def render_identification(
         ]
     lines += [f"  note: {shown(note, limit=None)}" for note in identification.notes]
     lines += [f"  warning: {warning}" for warning in identification.warnings]
+    if identification.disagreements:
+        lines.append("  declared and read differ (the declared value wins):")
+        lines += [f"    - {shown(line, limit=None)}" for line in identification.disagreements]
     # Sections (each ending its last line) with a blank line between them, none after the last.
     sections = ["\n".join(lines) + "\n"]
     if identification.sensors:

@@ -9,7 +9,9 @@ of strength, and the first that speaks decides:
    lift-drag plugin's ``<joint_name>`` (a fin or control surface). Which plugin is which is the
    profile's ``plugins`` patterns.
 2. The joint's place and shape: a vertical swivel that carries a wheel and nothing else is a
-   caster (the wheel below it is the caster's); a propeller on a body in water is a thruster.
+   caster (the wheel below it is the caster's); a propeller on a body in water is a thruster;
+   a propeller on a ``floating`` joint with nothing below (a visual part a simulator poses) is
+   a rotor.
 3. Names last: the profile's part patterns on the joint and its child link (``thruster``,
    ``fin``, ``wing`` for control surfaces, ``caster``, ``wheel``, ``rotor``, ``gripper``).
 
@@ -30,7 +32,7 @@ from dataclasses import dataclass
 from solver.identify.profile import PartMatcher, Profile
 from solver.identify.readers.urdf import Joint, PluginTag, Urdf
 
-__all__ = ["JOINT_ROLES", "Role", "RoleReader"]
+__all__ = ["JOINT_ROLES", "POSED", "Role", "RoleReader"]
 
 JOINT_ROLES = ("wheel", "steering", "caster", "rotor", "thruster", "fin", "gripper")
 _ROTATING = ("continuous", "revolute")
@@ -38,6 +40,8 @@ _ROTATING = ("continuous", "revolute")
 # and a lift-drag plugin both name is a thruster).
 _PLUGIN_ROLES = (("thruster", "thruster"), ("flight", "rotor"), ("drive", "wheel"), ("lift", "fin"))
 _Z = 2
+# The evidence of a propeller a simulator poses on a floating joint (counted however few).
+POSED = ", a part a simulator poses (floating joint)"
 
 
 @dataclass(frozen=True, slots=True)
@@ -74,6 +78,8 @@ class RoleReader:
         for part, pattern in self.profile.plugins:
             if pattern.search(f"{plugin.name} {plugin.filename}"):
                 found.add(part)
+        if "flight" in found:
+            found.discard("drive")  # a multicopter's velocity control flies it
         return frozenset(found)
 
     def plugins_of(self, part: str) -> list[PluginTag]:
@@ -111,6 +117,8 @@ class RoleReader:
 
     def read(self, joint: Joint, moving_below: set[str]) -> Role | None:
         """The single-joint role of ``joint``, or ``None`` (a limb joint, or fixed)."""
+        if joint.type == "floating":
+            return self._posed(joint)
         if not joint.movable or joint.type not in (*_ROTATING, "prismatic"):
             return None
         named = self.named.get(joint.name)
@@ -144,6 +152,15 @@ class RoleReader:
         if self.matches("rotor", joint) and not carries:
             return Role(joint.name, "rotor", self._named("rotor", joint) + ", a spinning leaf")
         return None
+
+    def _posed(self, joint: Joint) -> Role | None:
+        """A propeller on a ``floating`` joint with nothing below it: a visual part a simulator
+        poses (it turns it), a rotor however few there are."""
+        if self.urdf.children(joint.child) or not self.matches("rotor", joint):
+            return None
+        if self.marine:
+            return Role(joint.name, "thruster", self._named("rotor", joint) + " on a body in water")
+        return Role(joint.name, "rotor", self._named("rotor", joint) + POSED)
 
     def on_palm(self, joint: Joint) -> bool:
         """A movable joint on a link named as a hand or palm moves a finger."""

@@ -27,7 +27,14 @@ from solver.identify.profile import SENSOR_TYPE, Profile
 from solver.identify.readers.urdf import PluginTag, SensorTag, Urdf
 from solver.untrusted import shown
 
-__all__ = ["Detection", "Sensor", "merge", "presented_count", "sensors_from_urdf"]
+__all__ = [
+    "Detection",
+    "Sensor",
+    "merge",
+    "presented_count",
+    "sensor_type_of",
+    "sensors_from_urdf",
+]
 
 _LINK_PARAMS = ("linkName", "bodyName", "frameName", "frameId", "frame_name", "link_name")
 _JOINT_PARAMS = ("jointName", "joint_name", "joint")
@@ -174,34 +181,53 @@ def _above(link: str, urdf: Urdf) -> list[str]:
 
 def _element_kind(tag: SensorTag, profile: Profile) -> str:
     kind = tag.type or "unknown"  # a URDF <sensor> with no kind element: told by its name
+    rays = _rays(tag)
     for rule in profile.element_rules:
-        if rule.accepts(kind, tag.device_text):
+        if rule.accepts(kind, tag.device_text, rays=rays):
             return rule.kind
     for rule in profile.element_rules:  # topic names last
-        if rule.match is not None and rule.accepts(kind, tag.text):
+        if rule.match is not None and rule.accepts(kind, tag.text, rays=rays):
             return rule.kind
     return kind
+
+
+def _rays(tag: SensorTag) -> int | None:
+    """How many rays a ray sensor casts (horizontal x vertical samples; a missing axis casts
+    one); None when it says no samples at all."""
+    if tag.horizontal_samples is None and tag.vertical_samples is None:
+        return None
+    return max(tag.horizontal_samples or 1, 1) * max(tag.vertical_samples or 1, 1)
 
 
 def _plugin_kind(plugin: PluginTag, profile: Profile) -> str | None:
     truth = profile.ground_truth
     if truth is not None and truth.search(plugin.text):
         return None
+    systems = profile.simulator_systems
+    if systems is not None and systems.search(f"{plugin.name} {plugin.filename}"):
+        return None  # a simulator system runs the <sensor> elements; it is none itself
     target = plugin.filename or plugin.name
     return next((rule.kind for rule in profile.plugin_rules if rule.accepts(None, target)), None)
 
 
+def sensor_type_of(
+    kind: str, profile: Profile, rules: RuleSet, vertical_samples: int | None = None
+) -> str | None:
+    """The rule set's sensor type for a sensor ``kind`` (None: no presentation in it)."""
+    mapping = profile.sensor_type_mapping(kind)
+    sensor_type = None if mapping is None else mapping.sensor_type_for(vertical_samples)
+    if sensor_type is not None and sensor_type not in _rule_values(
+        rules, profile.role(SENSOR_TYPE)
+    ):
+        return None
+    return sensor_type
+
+
 def merge(detections: Iterable[Detection], profile: Profile, rules: RuleSet) -> tuple[Sensor, ...]:
     """One :class:`Sensor` per (kind, sensor type), in order of first detection."""
-    sensor_types = _rule_values(rules, profile.role(SENSOR_TYPE))
     groups: dict[tuple[str, str | None], dict[str, list[Detection]]] = {}
     for detection in detections:
-        mapping = profile.sensor_type_mapping(detection.kind)
-        sensor_type = (
-            None if mapping is None else mapping.sensor_type_for(detection.vertical_samples)
-        )
-        if sensor_type is not None and sensor_type not in sensor_types:
-            sensor_type = None
+        sensor_type = sensor_type_of(detection.kind, profile, rules, detection.vertical_samples)
         groups.setdefault((detection.kind, sensor_type), {}).setdefault(
             detection.source, []
         ).append(detection)

@@ -4,7 +4,9 @@ Every step of :func:`~solver.identify.body.detect_body` asks the same few questi
 tree: where a joint comes in document order (listings are deterministic), which parts the
 profile's patterns name in a joint or a link, which model plugins the profile reads as a part,
 and which links have a movable joint somewhere below them (a rotor or a wheel is a leaf: none
-below). :class:`JointTree` answers them, each worked out in one pass.
+below), which joints move together (mimic couplings, :mod:`solver.identify.couplings`) and
+where each part is at rest (:mod:`solver.identify.pose`). :class:`JointTree` answers them, each
+worked out in one pass.
 
 Not here: what the answers mean (:mod:`solver.identify.actuation`, :mod:`~solver.identify.limbs`,
 :mod:`~solver.identify.hands`, :mod:`~solver.identify.vehicle`,
@@ -13,11 +15,18 @@ Not here: what the answers mean (:mod:`solver.identify.actuation`, :mod:`~solver
 
 from __future__ import annotations
 
+from functools import cached_property
+
+from solver.identify.couplings import Couplings, couplings
+from solver.identify.pose import Poses
 from solver.identify.profile import PartMatcher, Profile
 from solver.identify.readers.urdf import Joint, Urdf
 from solver.identify.roles import RoleReader
 
 __all__ = ["JointTree"]
+
+# Sensor element types a pan/tilt unit points (cameras of every kind, rays, lidars, sonars).
+_POINTED = ("camera", "depth", "ray", "lidar", "sonar", "rgbd", "thermal")
 
 
 class JointTree:
@@ -30,6 +39,8 @@ class JointTree:
         self.index = {joint.name: i for i, joint in enumerate(urdf.joints)}
         self.parts_of = PartMatcher(profile.patterns)
         self.reader = RoleReader(urdf, profile, self.parts_of)
+        # Mimic groups: one actuator each, and the followers that stand in for their drivers.
+        self.couplings: Couplings = couplings(urdf)
         # Links with a movable joint somewhere below them (a rotor is a leaf: none below).
         self.moving_below: set[str] = set()
         for joint in urdf.joints:
@@ -39,6 +50,24 @@ class JointTree:
                     self.moving_below.add(link)
                     parent = urdf.parent_joint(link)
                     link = None if parent is None else parent.parent
+
+    @cached_property
+    def poses(self) -> Poses:
+        """Every link's place and every joint's axis at rest, in the root's frame."""
+        return Poses(self.urdf)
+
+    @cached_property
+    def sensor_links(self) -> frozenset[str]:
+        """Links that carry a sensor a pan/tilt unit points: cameras, lidars, range finders."""
+        return frozenset(
+            tag.link
+            for tag in self.urdf.sensors
+            if tag.link is not None and any(word in tag.type for word in _POINTED)
+        )
+
+    def drives(self, joint: Joint) -> bool:
+        """The joint moves a chain on its own account (see :mod:`solver.identify.couplings`)."""
+        return self.couplings.drives(joint)
 
     def matches(self, part: str, joint: Joint) -> bool:
         """The profile's pattern for ``part`` names the joint or its child link."""

@@ -9,8 +9,9 @@ body travels in a few more ways, each read here:
   model plugin's parameters (a vehicle plugin of its own), not on a body that rolls or walks;
   rotor-named joints too few to fly, said as such.
 * *Water*: thrusters a thruster plugin lists by a link no joint moves (a hull's list); hints
-  of a hull at the surface (a surface plugin, ``<metacentric_width>``) or of a body below it
-  (buoyancy or hydrodynamics plugins, a DVL or pressure sensor).
+  of a hull at the surface (a surface plugin, ``<metacentric_width>``; a GPS where nothing says
+  the body dives) or of a body below it (hydrodynamics or underwater-object plugins, a DVL or
+  pressure sensor). Buoyancy says only that the body is in water.
 * *Trimmed models*: wheel joints of type fixed, and rotor-named leaf links fixed to the body,
   still say what the whole model does (read with doubt by :mod:`solver.identify.classifier`).
 
@@ -20,6 +21,7 @@ Not here: the joints' own roles (:mod:`solver.identify.actuation`), where the bo
 
 from __future__ import annotations
 
+import re
 from collections.abc import Sequence
 
 from solver.identify.actuation import with_role
@@ -41,6 +43,7 @@ __all__ = [
 ]
 
 _ROTATING = ("continuous", "revolute")
+_GPS = re.compile(r"gps|navsat|gnss", re.IGNORECASE)
 
 
 def grounded(tree: JointTree, roles: dict[str, Role]) -> bool:
@@ -143,14 +146,33 @@ def wings(tree: JointTree, roles: dict[str, Role]) -> list[str]:
 
 
 def surface_hints(tree: JointTree) -> tuple[str, ...]:
-    """A body in water at the surface: surface plugins and tags the profile's ``surface``
-    pattern reads (``<metacentric_width>``, wind on its buoyancy)."""
+    """A body in water at the surface: surface plugins, and the words the profile's ``surface``
+    pattern reads in the hull's own elements (``<metacentric_width>``, wind on its buoyancy)
+    or in the parameters of its water plugins, never in a sensor's settings (a barometer's
+    water-surface offset). With none of them, and nothing of a body below the surface, a GPS
+    says it: satellites are heard only above the water."""
     pattern = tree.profile.plugin_pattern("surface")
     if pattern is None or not (tree.reader.marine):
         return ()
     hints = list(tree.labels("surface"))
     hints += sorted(tag for tag in tree.urdf.tags if pattern.search(tag))
+    for part in ("marine", "thruster", "surface"):
+        for plugin in tree.reader.plugins_of(part):
+            hints += sorted({tag.lower() for tag, _ in plugin.params if pattern.search(tag)})
+    if not hints and not underwater_hints(tree):
+        hints += _satellite_receivers(tree)
     return tuple(dict.fromkeys(hints))
+
+
+def _satellite_receivers(tree: JointTree) -> list[str]:
+    """GPS receivers: sensor elements of a satellite type, or plugins named so."""
+    found = [s.name or s.type for s in tree.urdf.sensors if s.type in ("gps", "navsat")]
+    found += [
+        tree.reader.plugin_label(p)
+        for p in tree.urdf.plugins
+        if _GPS.search(f"{p.name} {p.filename}")
+    ]
+    return [f"{name} (a GPS receiver: satellites are heard above the water)" for name in found][:1]
 
 
 def underwater_hints(tree: JointTree) -> tuple[str, ...]:

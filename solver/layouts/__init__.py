@@ -10,6 +10,8 @@
 ``targets``         the table of targets (foxglove, rviz): extension, how made and checked
 ``writer``          writing every configuration's layout into a folder, as one unit
 ``robot``           one robot's layout under its namespace, fed by its real topics
+``team``            the team layout: a tab per (robot, configuration) beside the
+                    follower panel that switches them (``watch --layouts``)
 ``identified``      a real robot's layout from its description: identified, given its
                     configuration, laid out (``layouts --robot``)
 ``topics``          a robot's real topics in place of the templates

@@ -29,6 +29,12 @@ Modules, one concept each:
                        ``open_watcher``, one on the graph at an address
 ``query``              one question on any source: ``assign --master`` / ``--ros2``
 ``render``             events as JSON lines or text; ``assign --master`` output
+``layouts``            the robots' layouts and the team layout written as they come
+                       (``watch --layouts``), and where an answer's are
+``server``             the answer and the layouts served on loopback, read-only
+                       (``watch --serve``)
+``operator``           the operator's side: a switch checked, written, and its answer
+                       awaited (``teleop-ui switch``, the studio's Live view)
 ``demo``               an emulated ROS 2 fleet and operator (``teleop-ui demo ros2``)
 =====================  ==========================================================
 

@@ -13,7 +13,9 @@ its kind:
                      included) changed: ``robot``, ``active`` (every characteristic
                      of the rule set -> the value asked for, ``null`` when not set),
                      ``assignment`` (``teleop-ui assign``'s JSON, ``null`` with no
-                     active robot), ``notes``
+                     active robot), ``notes``; with ``watch --layouts``,
+                     ``layout`` and ``layouts`` (where the answer's layouts are:
+                     :func:`solver.live.selection.layouts_data`)
 ``warning``          something on the graph is ignored, located: ``where`` (the
                      parameter or topic), ``message`` (an ``active_*`` name or a
                      robot's value the rules know no characteristic of, a robot's
@@ -100,8 +102,12 @@ class RobotRemoved(Event):
 
 @dataclass(frozen=True, slots=True)
 class SelectionChanged(Event):
+    """``with_layouts``: the watcher writes layouts (the event then says where they are, or
+    that there are none)."""
+
     request: Request
     selection: ActiveSelection | None
+    with_layouts: bool = False
     kind: ClassVar[str] = "selection_changed"
 
 
@@ -158,7 +164,9 @@ def event_data(event: Event, solution: Solution) -> dict[str, Any]:
     elif isinstance(event, RobotRemoved):
         data["robot"] = event.namespace
     elif isinstance(event, SelectionChanged):
-        data.update(selection_data(event.selection, event.request, solution))
+        data.update(
+            selection_data(event.selection, event.request, solution, layouts=event.with_layouts)
+        )
     elif isinstance(event, GraphWarning):
         data.update(where=event.where, message=event.message)
     elif isinstance(event, Rival):

@@ -5,6 +5,8 @@ reads the stream line by line (``jq -c``, a ROS node, a UI). Text: a line per ev
 robot's combinations and UI configuration numbers indented beneath it. Everything the graph
 gave (namespaces, robot names, values, messages) is shown through
 :func:`~solver.untrusted.shown`: escaped, so no name starts a forged line, and cut short.
+Paths and addresses of the layouts the watcher wrote (``watch --layouts``) are the tool's own,
+which an operator copies: shown escaped and whole, never cut, each on a line of its own.
 
 :func:`render_live_assignment` is the output of ``teleop-ui assign --master``: ``assign``'s
 own text or JSON, with the robot's namespace and the notes on how the combination was chosen.
@@ -105,12 +107,32 @@ def _label(label: str, text: str) -> list[str]:
     return [f"{label:<{_WIDTH}}{text}"]
 
 
+def _layout_lines(event: SelectionChanged) -> list[str]:
+    """Where the answer's layouts are: a ``layout`` line per target, its address beneath it;
+    paths and addresses whole (escaped, never cut)."""
+    if not event.with_layouts:
+        return []
+    links = () if event.selection is None else event.selection.layouts or ()
+    if not links:
+        return _label("layout", "(no layout)")
+    lines: list[str] = []
+    for link in links:
+        tab = ""
+        if link.target == "team":
+            tab = " (no tab for this answer)" if link.tab is None else f" (tab {link.tab})"
+        lines += _label("layout", f"{link.target}{tab}: {shown(link.path, limit=None)}")
+        if link.url is not None:
+            lines.append(" " * (_WIDTH + 2) + shown(link.url, limit=None))
+    return lines
+
+
 def _selection_lines(event: SelectionChanged) -> list[str]:
     request = event.request
     if event.selection is None or event.selection.assignment is None:
         return [
             *_label("selection", "no active robot (set /teleop_ui/active_robot)"),
             *(f"  note: {shown(n, limit=None)}" for n in request.notes),
+            *_layout_lines(event),
         ]
     assignment = event.selection.assignment
     asked = " ".join(
@@ -126,6 +148,7 @@ def _selection_lines(event: SelectionChanged) -> list[str]:
             " " * (_WIDTH + 2) + f"note: {shown(note, limit=None)}"
             for note in event.selection.notes
         ),
+        *_layout_lines(event),
     ]
 
 

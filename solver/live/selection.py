@@ -11,7 +11,9 @@ The convention (docs/live.md): an operator station sets
 and the watcher answers in ``/teleop_ui/ui_configuration`` with the JSON contract of
 ``teleop-ui assign`` (number, components or the default's reasons) plus the robot's namespace
 and the writing watcher's node name, so any ROS node can read the configuration with
-``rosparam get``. An ``active_*`` name the rules do not know is kept in
+``rosparam get``; a watcher that writes layouts (``watch --layouts``) adds ``layouts``, where
+the answer's layouts are (:class:`LayoutLink`: each target's file, its address when served,
+the team layout's tab). An ``active_*`` name the rules do not know is kept in
 :attr:`Request.unknown` (the watcher warns of it).
 
 :func:`choose` turns a robot's combinations and the values asked for into one combination:
@@ -45,8 +47,10 @@ __all__ = [
     "RESULT_PARAM",
     "WRITER_KEY",
     "ActiveSelection",
+    "LayoutLink",
     "Request",
     "choose",
+    "layouts_data",
     "read_request",
     "select",
     "selection_data",
@@ -73,12 +77,27 @@ class Request:
 
 
 @dataclass(frozen=True, slots=True)
+class LayoutLink:
+    """Where one layout of an answer is: its ``target`` (``foxglove``: the active robot's
+    layout of the configuration; ``team``: the team layout), the file's absolute ``path``, its
+    ``url`` where the watcher serves it, and for the team layout the ``tab`` of the answer's
+    (robot, configuration) (``None``: the team layout has none)."""
+
+    target: str
+    path: str
+    url: str | None = None
+    tab: int | None = None
+
+
+@dataclass(frozen=True, slots=True)
 class ActiveSelection:
-    """The answer to a :class:`Request`: the combination's assignment, with notes."""
+    """The answer to a :class:`Request`: the combination's assignment, with notes, and where
+    its layouts are (``None``: the watcher writes none)."""
 
     request: Request
     assignment: Assignment | None = None
     notes: tuple[str, ...] = ()
+    layouts: tuple[LayoutLink, ...] | None = None
 
 
 def read_request(params: Mapping[str, Any], names: Collection[str]) -> Request:
@@ -221,12 +240,19 @@ def select(
 
 
 def selection_data(
-    selection: ActiveSelection | None, request: Request, solution: Solution
+    selection: ActiveSelection | None,
+    request: Request,
+    solution: Solution,
+    *,
+    layouts: bool = False,
 ) -> dict[str, Any]:
     """The fields of a ``selection_changed`` event (see docs/live.md): ``active`` has every
-    characteristic of the rule set, with the value asked for or ``None``."""
+    characteristic of the rule set, with the value asked for or ``None``. ``layouts``: the
+    watcher writes layouts, and the event says where the answer's are (``layout``, the active
+    robot's, as before ``layouts`` came; ``layouts``, :func:`layouts_data`, ``None`` with no
+    active robot)."""
     asked = dict(request.values)
-    return {
+    data = {
         "robot": request.robot,
         "active": {name: asked.get(name) for name in solution.rules.names},
         "assignment": None
@@ -234,6 +260,26 @@ def selection_data(
         else assignment_data(solution, selection.assignment),
         "notes": list(request.notes if selection is None else selection.notes),
     }
+    if layouts:
+        links = None if selection is None else selection.layouts
+        own = [link.path for link in links or () if link.target == "foxglove"]
+        data["layout"] = own[0] if own else None
+        data["layouts"] = None if links is None else layouts_data(links)
+    return data
+
+
+def layouts_data(links: tuple[LayoutLink, ...]) -> dict[str, Any]:
+    """``{"foxglove": {"path", "url"}, "team": {"path", "url", "tab"}}``: ``url`` only where
+    served; ``tab`` for the team layout (``None``: it has no tab for the answer)."""
+    data: dict[str, Any] = {}
+    for link in links:
+        entry: dict[str, Any] = {"path": link.path}
+        if link.url is not None:
+            entry["url"] = link.url
+        if link.target == "team":
+            entry["tab"] = link.tab
+        data[link.target] = entry
+    return data
 
 
 def _without_none(value: Any) -> Any:
@@ -256,6 +302,7 @@ def ui_configuration_value(
         "robot": selection.request.robot,
         **assignment_data(solution, selection.assignment),
         "notes": list(selection.notes),
+        **({} if selection.layouts is None else {"layouts": layouts_data(selection.layouts)}),
         WRITER_KEY: writer,
     }
     value: dict[str, Any] = _without_none(data)

@@ -53,6 +53,12 @@ something that is no answer at all) is overwritten with a ``warning`` event sayi
 replaced (once while it lasts). Watchers with the same team agree, and leave each other's
 equal answers alone.
 
+*Layouts* (``layouts``, :class:`~solver.live.layouts.LiveLayouts`: ``watch --layouts DIR``):
+the robots' layouts and the team layout are written as robots are read (before the answer
+that names them), and the answer and its ``selection_changed`` event carry where the active
+robot's are (``layouts``); the answer as this watcher makes it is :attr:`Watcher.answer`
+(what ``watch --serve`` serves).
+
 *Lost*: any failed call, or a new pid (the master restarted between two polls), gives
 ``master_lost``; the watcher retries after one interval, doubling up to ``max_backoff``, and
 when the master answers gives ``master_back`` and synchronises again.
@@ -121,6 +127,7 @@ from solver.solving.solution import Solution
 from solver.untrusted import shown
 
 if TYPE_CHECKING:
+    from solver.live.layouts import LiveLayouts
     from solver.live.sources import GraphAddress
 
 __all__ = ["MAX_WARNINGS", "Watcher", "open_watcher"]
@@ -163,7 +170,8 @@ class Watcher:
     ``timeout`` and ``push`` are the ROS 1 master's (``push=False`` runs without a node, no
     parameter subscriptions: enough for :meth:`snapshot`, which reads everything once); a
     ``source`` given brings its own. ``fixed``: values given at start (``--set``);
-    ``policy``: ``yield`` or ``insist`` towards rival watchers (:mod:`solver.live.rivals`).
+    ``policy``: ``yield`` or ``insist`` towards rival watchers (:mod:`solver.live.rivals`);
+    ``layouts``: the robots' layouts, written as they are read and named in the answer.
     """
 
     def __init__(
@@ -180,6 +188,7 @@ class Watcher:
         source: GraphSource | None = None,
         fixed: FixedValues | None = None,
         policy: str = YIELD,
+        layouts: LiveLayouts | None = None,
     ) -> None:
         if source is None:
             # The default source: a ROS 1 master (imported here: watching ROS 2 needs none).
@@ -219,8 +228,10 @@ class Watcher:
         # the graph as it found it.
         self._announcing = False
         self._robots: dict[str, _Tracked] = {}
-        self._no_selection = selection_data(None, Request(), solution)
+        self.layouts = layouts
+        self._no_selection = selection_data(None, Request(), solution, layouts=layouts is not None)
         self._selection = self._no_selection
+        self._answer_value: dict[str, Any] | None = None
         self._pid: int | None = None
         self._seq = 0
         self._last_poll = 0.0  # the last read of the whole graph
@@ -337,6 +348,12 @@ class Watcher:
         return False
 
     # -- events --------------------------------------------------------------------------
+
+    @property
+    def answer(self) -> dict[str, Any] | None:
+        """This watcher's answer to the selection as last read (what it writes, or would
+        write: a rival's may stand on the graph), ``None`` with no active robot."""
+        return self._answer_value
 
     def robots(self) -> dict[str, LiveRobot]:
         """The robots as last read (after :meth:`snapshot` or an event), by namespace."""
@@ -498,7 +515,15 @@ class Watcher:
         ]
         self._robots = robots
         self._robot_warnings = warnings
+        self._write_layouts(changes)  # before the answer that names them
         return [*removed, *changes, *self._answer(dict(observation.params))]
+
+    def _write_layouts(self, changes: list[Event]) -> None:
+        """The robots' layouts (``layouts``), those of the robots in ``changes`` again."""
+        if self.layouts is None:
+            return
+        changed = [e.robot.namespace for e in changes if isinstance(e, RobotAdded | RobotChanged)]
+        self.layouts.sync({ns: t.robot for ns, t in self._robots.items()}, changed)
 
     def _answer(self, params: dict[str, Any]) -> list[Event]:
         """Warnings, rivals and the selection from the watched parameters ``params``."""
@@ -556,7 +581,10 @@ class Watcher:
         """The ``selection_changed`` event, if the answer changed, and the warning for an
         answer of no running watcher's that was replaced."""
         selection = select(request, {ns: t.robot for ns, t in self._robots.items()}, self.solution)
+        if self.layouts is not None and selection is not None:
+            selection = dataclasses.replace(selection, layouts=self.layouts.links(selection))
         wanted = ui_configuration_value(selection, self.solution, self.caller_id)
+        self._answer_value = wanted
         note, replaced = (
             self._write_back(params.get(_RESULT_KEY, MISSING), wanted, selection)
             if self._announcing
@@ -565,11 +593,12 @@ class Watcher:
         if note is not None and selection is not None:
             selection = dataclasses.replace(selection, notes=(*selection.notes, note))
         warnings = [(RESULT_PARAM, replaced)] if replaced is not None else []
-        data = selection_data(selection, request, self.solution)
+        with_layouts = self.layouts is not None
+        data = selection_data(selection, request, self.solution, layouts=with_layouts)
         if data == self._selection:
             return [], warnings
         self._selection = data
-        return [SelectionChanged(0, request, selection)], warnings
+        return [SelectionChanged(0, request, selection, with_layouts)], warnings
 
     def _write_back(
         self, present: Any, wanted: dict[str, Any] | None, selection: ActiveSelection | None
@@ -653,11 +682,12 @@ def open_watcher(
     push: bool = True,
     fixed: FixedValues | None = None,
     policy: str = YIELD,
+    layouts: LiveLayouts | None = None,
 ) -> Watcher:
     """A :class:`Watcher` on the graph at ``address`` (:func:`solver.live.sources.graph_address`),
     its source opened by the one lookup of sources (:func:`solver.live.sources.open_source`;
     ``timeout`` and ``push`` are a master's) and closed with the watcher: what ``watch`` and
-    the studio's live view follow."""
+    the studio's live view follow (``layouts``: see :class:`Watcher`)."""
     # Here, not at module level: the watcher's machinery imports no source.
     from solver.live.sources import open_source
 
@@ -671,6 +701,7 @@ def open_watcher(
             source=source,
             fixed=fixed,
             policy=policy,
+            layouts=layouts,
         )
     except BaseException:
         source.close()

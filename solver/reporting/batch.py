@@ -475,7 +475,7 @@ def run_job(job: Job) -> Outcome:
         # Hashed and read from the same bytes: the stamp names exactly the text solved.
         document, team_hash = load_hashed(job.team_file, display=job.shown)
         kind = file_kind(document)
-        if kind in ("rules", "profile", "presentation"):
+        if kind in ("rules", "profile", "presentation", "teleop"):
             row = SummaryRow(
                 file=job.shown,
                 status="skipped",

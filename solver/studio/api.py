@@ -13,7 +13,7 @@ Not here: the answers themselves (:mod:`solver.studio.service`).
 from __future__ import annotations
 
 from collections.abc import Awaitable, Callable
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from starlette.concurrency import run_in_threadpool
 from starlette.datastructures import UploadFile
@@ -26,6 +26,9 @@ from solver import InputError, SolverError
 from solver.files.yamlio import MAX_FILE_BYTES
 from solver.studio.service import Studio, faults_data
 from solver.studio.workspace import MAX_UPLOAD_FILES, Upload
+
+if TYPE_CHECKING:
+    from solver.studio.live import LiveFeed
 
 __all__ = ["INTERNAL_ERROR", "internal_error", "problem", "read_uploads", "routes"]
 
@@ -381,7 +384,11 @@ async def live_state(request: Request) -> Response:
     ---
     summary: The live graph
     responses:
-      200: {description: "source, status, robots (as watch events give them), selection"}
+      200:
+        description: >-
+          source, status, team and rules (what the feed answers for), robots (as watch events
+          give them), selection, answers (per robot, the last answer naming it that carried
+          layouts: configuration, watcher, layouts)
     """
     feed = _studio(request).live
     if feed is None:
@@ -391,8 +398,11 @@ async def live_state(request: Request) -> Response:
         {
             "source": state.source,
             "status": state.status,
+            "team": state.team,
+            "rules": state.rules,
             "robots": list(state.robots),
             "selection": state.selection,
+            "answers": state.answers,
             "last": state.last,
         }
     )
@@ -444,6 +454,155 @@ async def live_events(request: Request) -> Response:
     return StreamingResponse(stream(), media_type="text/event-stream")
 
 
+# Bytes of a switch's request body at most (a robot and a few values).
+MAX_SWITCH_BYTES = 16 * 1024
+# Seconds a switch from the API may wait for the watcher's answer, at most.
+MAX_SWITCH_WAIT = 30.0
+
+
+def _feed(request: Request) -> LiveFeed:
+    feed = _studio(request).live
+    if feed is None:
+        raise InputError.at("<live>", "the studio was started without --ros2 or --master")
+    return feed
+
+
+async def live_switch(request: Request) -> Response:
+    """Make a robot (and values of its characteristics) the operator's active selection on
+    the live graph, as `teleop-ui switch` does, and wait for the watcher's answer. The body is
+    JSON: `{"robot": "/uav1", "values": {"motion_control": "Flight"}, "clear": true,
+    "wait": 5}` (`values`, `clear` and `wait` optional; `clear` by default when no value is
+    given or another robot was active).
+    ---
+    summary: Switch the active robot
+    requestBody:
+      content:
+        application/json:
+          schema:
+            type: object
+            properties:
+              robot: {type: string}
+              values: {type: object, additionalProperties: {type: string}}
+              clear: {type: boolean}
+              wait: {type: number, minimum: 0.01, maximum: 30}
+    responses:
+      200: {description: "the JSON of `teleop-ui switch --format json`"}
+      202: {description: "the same, `answer` null: written, no watcher answered in time"}
+      422: {description: "located faults (no ROS name, no such characteristic, value or robot)"}
+    """
+    feed = _feed(request)
+    length = request.headers.get("content-length", "0")
+    if not (length.isascii() and length.isdigit()) or int(length) > MAX_SWITCH_BYTES:
+        raise InputError.at("<request>", f"a switch is at most {MAX_SWITCH_BYTES} bytes of JSON")
+    robot, values, clear, wait = _switch_body(await request.body())
+    from solver.live.operator import switched_data
+
+    switched = await run_in_threadpool(feed.switch, robot, values, clear=clear, wait=wait)
+    status = 200 if switched.answer is not None else 202
+    return JSONResponse(switched_data(switched), status_code=status)
+
+
+def _switch_body(body: bytes) -> tuple[str, dict[str, str], bool | None, float | None]:
+    """A switch's JSON body read (see :func:`live_switch`); a located error for anything
+    else."""
+    from solver.live.values import bounded_json
+
+    try:
+        data = bounded_json(body.decode("utf-8"))
+    except (UnicodeDecodeError, ValueError) as error:
+        raise InputError.at("<request>", f"a switch is a JSON object: {error}") from None
+    if not isinstance(data, dict) or not isinstance(data.get("robot"), str):
+        raise InputError.at("<request>", 'a switch is a JSON object with "robot": "/NAME"')
+    values = data.get("values", {})
+    if not isinstance(values, dict) or not all(
+        isinstance(k, str) and isinstance(v, str) for k, v in values.items()
+    ):
+        raise InputError.at("<request>", '"values" is an object of NAME: "VALUE"', path="values")
+    clear = data.get("clear")
+    if clear is not None and not isinstance(clear, bool):
+        raise InputError.at("<request>", '"clear" is true or false', path="clear")
+    wait = data.get("wait")
+    if wait is not None and (
+        isinstance(wait, bool)
+        or not isinstance(wait, int | float)
+        or not 0.01 <= wait <= MAX_SWITCH_WAIT
+    ):
+        raise InputError.at(
+            "<request>", f'"wait" is seconds from 0.01 to {MAX_SWITCH_WAIT:g}', path="wait"
+        )
+    return data["robot"], values, clear, None if wait is None else float(wait)
+
+
+def _robot_layout_query(request: Request) -> tuple[LiveFeed, str, int]:
+    feed = _feed(request)
+    robot = request.query_params.get("robot", "")
+    text = request.query_params.get("configuration", "")
+    if not (text.isascii() and text.isdigit() and len(text) < 18):
+        raise InputError.at("<request>", "configuration=N: a whole number", path="configuration")
+    return feed, robot, int(text)
+
+
+async def live_layout(request: Request) -> Response:
+    """A live robot's Lichtblick layout of one UI configuration, as `watch --layouts` writes
+    it (its real topics and joints), made by the studio.
+    ---
+    summary: A live robot's layout
+    parameters:
+      - {name: robot, in: query, required: true, schema: {type: string}}
+      - {name: configuration, in: query, required: true, schema: {type: integer}}
+    responses:
+      200: {description: a Lichtblick / Foxglove layout (JSON)}
+      422: {description: "no such robot on the graph, or no layout for it"}
+    """
+    feed, robot, configuration = _robot_layout_query(request)
+    text = await run_in_threadpool(feed.layout, robot, configuration)
+    if text is None:
+        raise _no_layout(robot, configuration)
+    from solver.layouts.foxglove import layout_filename
+
+    name = layout_filename(configuration)
+    return Response(
+        text,
+        media_type="application/json",
+        headers={"content-disposition": f'attachment; filename="{name}"'},
+    )
+
+
+async def live_preview(request: Request) -> Response:
+    """The panels of a live robot's layout of one UI configuration, as an SVG thumbnail.
+    ---
+    summary: A live robot's layout preview
+    parameters:
+      - {name: robot, in: query, required: true, schema: {type: string}}
+      - {name: configuration, in: query, required: true, schema: {type: integer}}
+    responses:
+      200: {description: an SVG image}
+      422: {description: "no such robot on the graph, or no layout for it"}
+    """
+    import json
+
+    from solver.layouts.preview import preview_svg
+
+    feed, robot, configuration = _robot_layout_query(request)
+    text = await run_in_threadpool(feed.layout, robot, configuration)
+    if text is None:
+        raise _no_layout(robot, configuration)
+    svg = preview_svg(json.loads(text), 240, 150)
+    return Response(
+        svg, media_type="image/svg+xml", headers={"cache-control": "private, max-age=600"}
+    )
+
+
+def _no_layout(robot: str, configuration: int) -> InputError:
+    from solver.untrusted import shown
+
+    return InputError.at(
+        "<live>",
+        f"no layout of {shown(robot, quoted=True)} in UI configuration {configuration}: no "
+        "such robot on the graph, not identified, no ROS 2 name, or no such configuration",
+    )
+
+
 def routes() -> list[BaseRoute]:
     return [
         Route("/api/solve", solve),
@@ -466,4 +625,7 @@ def routes() -> list[BaseRoute]:
         Route("/api/fleet/{fleet}/team", fleet_team, methods=["POST"]),
         Route("/api/live", live_state),
         Route("/api/live/events", live_events),
+        Route("/api/live/switch", live_switch, methods=["POST"]),
+        Route("/api/live/layout.json", live_layout),
+        Route("/api/live/preview.svg", live_preview),
     ]

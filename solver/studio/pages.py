@@ -23,6 +23,7 @@ from urllib.parse import urlencode
 
 import jinja2
 from starlette.concurrency import run_in_threadpool
+from starlette.exceptions import HTTPException
 from starlette.requests import Request
 from starlette.responses import HTMLResponse, RedirectResponse, Response
 from starlette.routing import BaseRoute, Route
@@ -685,13 +686,103 @@ async def fleet_team(request: Request) -> Response:
 # -- live, API -----------------------------------------------------------------------------------
 
 
+@dataclass(frozen=True)
+class LiveChoice:
+    """One value a robot's combinations take, as a button that selects it."""
+
+    name: str
+    value: str
+    pressed: bool
+
+
+@dataclass(frozen=True)
+class LiveRow:
+    """One robot of the Live view: its event's fields, the values it can be switched to (by
+    characteristic label), the configuration its layout is shown for, and the layouts of
+    the last answer naming it."""
+
+    robot: dict[str, Any]
+    active: bool
+    choices: tuple[tuple[str, tuple[LiveChoice, ...]], ...]
+    configuration: int | None
+    layout_query: str
+    answer: dict[str, Any] | None
+
+
+def live_rows(state: Any, rules: RuleSet) -> list[LiveRow]:
+    """The Live view's rows for ``state`` (:class:`solver.studio.live.LiveState`)."""
+    selection = state.selection or {}
+    asked = selection.get("active") or {}
+    chosen = (selection.get("assignment") or {}).get("configuration")
+    rows = []
+    for robot in state.robots:
+        name = robot.get("robot")
+        active = name == selection.get("robot")
+        combinations = robot.get("combinations") or []
+        configuration = (
+            chosen
+            if active and isinstance(chosen, int)
+            else next((c.get("configuration") for c in combinations), None)
+        )
+        query = (
+            urlencode({"robot": name, "configuration": configuration, "v": robot.get("seq")})
+            if configuration is not None
+            else ""
+        )
+        choices = _live_choices(combinations, rules, asked if active else {})
+        rows.append(LiveRow(robot, active, choices, configuration, query, state.answers.get(name)))
+    return rows
+
+
+def _live_choices(
+    combinations: list[dict[str, Any]], rules: RuleSet, asked: dict[str, Any]
+) -> tuple[tuple[str, tuple[LiveChoice, ...]], ...]:
+    """The values a robot's combinations take, by characteristic (its kind left out: not the
+    operator's to choose), each pressed when the operator asked for it."""
+    found = [c.get("combination") or {} for c in combinations]
+    choices = []
+    for characteristic in rules.characteristics:
+        name = characteristic.name
+        values = list(dict.fromkeys(str(c[name]) for c in found if name in c))
+        if values and name != rules.team_key:
+            buttons = tuple(LiveChoice(name, value, asked.get(name) == value) for value in values)
+            choices.append((characteristic.label, buttons))
+    return tuple(choices)
+
+
 async def live(request: Request) -> Response:
     page = _page(request, "Live")
     _choose(page)
     feed = page.studio.live
     state = None if feed is None else feed.state()
+    rows = [] if feed is None else live_rows(state, feed.solution.rules)
     template = "live_body.html" if _first(page.pairs, "fragment") else "live.html"
-    return page.render(template, state=state)
+    return page.render(template, state=state, rows=rows)
+
+
+async def live_switch(request: Request) -> Response:
+    """A robot's (or one of its values') button in the Live view, without scripts: the switch
+    is made (:meth:`solver.studio.live.LiveFeed.switch`), then the Live view shows it."""
+    page = _page(request, "Live")
+    feed = page.studio.live
+    if feed is None:
+        raise InputError.at("<live>", "the studio was started without --ros2 or --master")
+    try:
+        form = await request.form(max_files=0, max_fields=8)
+    except HTTPException as error:
+        raise InputError.at("<request>", f"switch refused: {error.detail}") from None
+    try:
+        robot = form.get("robot")
+        value = form.get("value")
+    finally:
+        await form.close()
+    if not isinstance(robot, str) or not isinstance(value, str | None):
+        raise InputError.at("<request>", "a switch names a robot (and a NAME=VALUE)")
+    from solver import parse_combination
+
+    values = parse_combination([value]) if value else {}
+    await run_in_threadpool(feed.switch, robot, values)
+    return RedirectResponse(page.link("/live"), status_code=303)
 
 
 async def api_index(request: Request) -> Response:
@@ -724,5 +815,6 @@ def routes() -> list[BaseRoute]:
         Route("/fleet/folders/{index}", fleet_folder, methods=["POST"]),
         Route("/fleet/{fleet}/team", fleet_team, methods=["POST"]),
         Route("/live", live),
+        Route("/live/switch", live_switch, methods=["POST"]),
         Route("/api", api_index),
     ]

@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 
 from solver.check import check_files
-from solver.errors import InputError
+from solver.errors import InputError, SolverError
 from tests.check.helpers import fixture
 from tests.conftest import RULES, TEAMS
 
@@ -118,3 +118,38 @@ def test_checking_never_modifies_the_files_it_reads(
 def test_a_team_file_given_as_the_rules_is_unusable_input() -> None:
     with pytest.raises(InputError, match="is a team file; --rules needs a rule set"):
         check_files([fixture("base.yaml")], rules=fixture("clean.team.yaml"))
+
+
+TELEOP = "teleop: 1\nmotion_controls:\n  - {control: Driving, topic: /cmd_vel}\n"
+
+
+def test_a_teleoperation_description_that_reads_clean_has_no_finding(tmp_path: Path) -> None:
+    described = tmp_path / "rover.teleop.yaml"
+    described.write_text(TELEOP, encoding="utf-8")
+    assert check_files([described]).findings == ()
+
+
+def test_every_problem_of_a_teleoperation_description_is_a_located_finding(
+    tmp_path: Path,
+) -> None:
+    described = tmp_path / "rover.teleop.yaml"
+    described.write_text(
+        TELEOP + "  - {control: Driving, topic: cmd_vel}\nsensors: [{kind: lidar, count: -1}]\n",
+        encoding="utf-8",
+    )
+    report = check_files([described])
+    assert [(f.check, f.location.line, f.location.path) for f in report.findings] == [
+        ("duplicate-value", 4, "motion_controls[1].control"),
+        ("schema", 4, "motion_controls[1].topic"),
+        ("schema", 5, "sensors[0].count"),
+    ]
+    assert report.exit_status() == 1
+
+
+def test_a_teleoperation_description_past_its_limit_makes_the_run_unusable(
+    tmp_path: Path,
+) -> None:
+    described = tmp_path / "big.teleop.yaml"
+    described.write_text("teleop: 1\nsensors:\n" + "  - {kind: imu}\n" * 1001, encoding="utf-8")
+    with pytest.raises(SolverError, match="limit 'description-entries'"):
+        check_files([described])

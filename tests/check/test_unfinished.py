@@ -122,11 +122,3 @@ def test_shipped_rule_sets_check_alike_with_and_without_a_partial_report(files: 
     partial = check_files(paths, partial=True)
     assert partial.stopped is None
     assert partial == whole
-
-
-@pytest.mark.parametrize("given", ["0", "-1", "nan", "soon"])
-def test_a_time_limit_that_is_not_a_positive_number_is_a_usage_error(given: str) -> None:
-    result = run_cli("check", "--time-limit", given, "rules/paper.yaml")
-    assert result.returncode == 2
-    assert "--time-limit" in result.stderr
-    assert result.stdout == ""

@@ -12,8 +12,8 @@ from solver.check.runner import check_files
 from solver.core.rules import load_rules
 from solver.core.team import load_team
 from solver.errors import InputError
-from solver.files.filekind import file_kind
-from solver.files.yamlio import load_document
+from solver.files.filekind import describe, file_kind, require_kind
+from solver.files.yamlio import load_document, parse_document
 from tests.conftest import RULES, TEAMS, run_cli
 
 # A team file that also carries a rule set's field: it is a team (with one unknown field).
@@ -96,16 +96,6 @@ def test_loading_the_wrong_kind_of_file_raises_a_located_input_error() -> None:
     assert fault.message.startswith("this is an identification profile, not a team file")
 
 
-def test_an_unknown_shipped_team_name_lists_the_shipped_teams() -> None:
-    for command in ("solve", "count", "robots"):
-        result = run_cli(command, "case9")
-        assert result.returncode == 2
-        assert result.stderr == (
-            "case9: no such file, and no shipped team of that name; shipped teams: case1, "
-            "case2, case3, case3-hypothesis, figure8, marine-survey, search-and-rescue\n"
-        )
-
-
 @pytest.mark.parametrize(
     ("name", "what", "why"),
     [
@@ -122,9 +112,24 @@ def test_check_says_a_profile_is_not_checked_and_batch_skips_it(
 ) -> None:
     report = check_files([RULES / name])
     assert [(f.check, f.level, f.message) for f in report.findings] == [
-        ("not-checked", "info", f"not checked: {what} (check reads rule sets and teams)")
+        (
+            "not-checked",
+            "info",
+            f"not checked: {what} (check reads rule sets, teams and teleoperation descriptions)",
+        )
     ]
     run_cli("batch", RULES / name, "-o", tmp_path / "out")
     with (tmp_path / "out" / "summary.csv").open(encoding="utf-8") as stream:
         (row,) = csv.DictReader(stream)
     assert (row["status"], row["message"]) == ("skipped", f"not a team file: {what} ({why})")
+
+
+def test_a_teleoperation_description_is_its_own_kind_and_no_team() -> None:
+    document = parse_document("teleop: 1\nrobot: rover\n", "rover.teleop.yaml")
+    assert file_kind(document) == "teleop"
+    assert describe("teleop") == "a teleoperation description"
+    with pytest.raises(InputError) as caught:
+        require_kind(document, "team")
+    assert caught.value.faults[0].message.startswith(
+        "this is a teleoperation description, not a team file (it has 'teleop:'); pass a team"
+    )

@@ -306,3 +306,140 @@ def wheel_legged_manipulator() -> RobotText:
     arm(robot, robot.root, "left_", 6)
     arm(robot, robot.root, "right_", 6)
     return robot
+
+
+def placed(
+    robot: RobotText,
+    name: str,
+    kind: str,
+    parent: str,
+    child: str,
+    *,
+    xyz: str = "0 0 0",
+    rpy: str = "0 0 0",
+    axis: str = "0 0 1",
+    extra: str = "",
+) -> str:
+    """A joint with its place, its turn and its axis written out (limits on a revolute or
+    prismatic one); ``extra`` is more of the joint's elements (a ``<mimic>``)."""
+    limits = (
+        '<limit lower="-1" upper="1" effort="1" velocity="1"/>'
+        if kind in ("revolute", "prismatic")
+        else ""
+    )
+    body = f'<origin xyz="{xyz}" rpy="{rpy}"/><axis xyz="{axis}"/>{limits}{extra}'
+    return robot.joint(name, kind, parent, child, body)
+
+
+def geared_arm() -> RobotText:
+    """An arm drawn as gear pairs: on each link a drive gear (a leaf, actuated) beside the joint
+    it turns (a mimic of the gear, at half its speed), which carries the rest of the arm."""
+    robot = RobotText("geared", root="base")
+    link = "base"
+    for i in range(1, 5):
+        placed(robot, f"drive{i}", "revolute", link, f"drive{i}_gear", xyz="0.02 0 0.05")
+        link = placed(
+            robot,
+            f"joint{i}",
+            "revolute",
+            link,
+            f"link{i}",
+            xyz="0 0 0.1",
+            axis="0 1 0" if i % 2 else "0 0 1",
+            extra=f'<mimic joint="drive{i}" multiplier="-0.5"/>',
+        )
+    return robot
+
+
+def linkage_biped() -> RobotText:
+    """Two legs whose knees are worked by a crank on the hip (a parallel linkage): the crank is
+    actuated, the knee a mimic of it."""
+    robot = RobotText("linkage_biped", root="pelvis")
+    for side, y in (("l", 0.1), ("r", -0.1)):
+        hip = placed(robot, f"{side}_hip", "revolute", "pelvis", f"{side}_hip_link", xyz=f"0 {y} 0")
+        thigh = placed(robot, f"{side}_thigh", "revolute", hip, f"{side}_thigh_link", axis="0 1 0")
+        placed(robot, f"{side}_crank", "revolute", hip, f"{side}_crank_link", axis="0 1 0")
+        shin = placed(
+            robot,
+            f"{side}_knee",
+            "revolute",
+            thigh,
+            f"{side}_shin",
+            xyz="0 0 -0.3",
+            axis="0 1 0",
+            extra=f'<mimic joint="{side}_crank"/>',
+        )
+        robot.fixed(shin, f"{side}_foot")
+    return robot
+
+
+def walker(legs: int = 6) -> RobotText:
+    """A walker whose joints say nothing (j0a, j0b, ...): alike 3-joint chains around its body,
+    each ending in a tip below where it starts."""
+    robot = RobotText("walker", root="body")
+    for i in range(legs):
+        x = 0.1 * (i % (legs // 2)) - 0.1
+        y = 0.08 if i < legs // 2 else -0.08
+        first = placed(robot, f"j{i}a", "revolute", "body", f"l{i}a", xyz=f"{x} {y} 0")
+        second = placed(robot, f"j{i}b", "revolute", first, f"l{i}b", xyz="0.05 0 0", axis="0 1 0")
+        third = placed(robot, f"j{i}c", "revolute", second, f"l{i}c", xyz="0.06 0 0", axis="0 1 0")
+        robot.joint(f"tip{i}", "fixed", third, f"tip{i}_link", '<origin xyz="0.05 0 -0.1"/>')
+    return robot
+
+
+def snake(modules: int = 8) -> RobotText:
+    """A snake: equal modules 0.1 m apart, each joint's axis square to the last's."""
+    robot = RobotText("snake", root="m0")
+    link = "m0"
+    for i in range(1, modules + 1):
+        axis = "0 0 1" if i % 2 else "0 1 0"
+        link = placed(robot, f"j{i}", "revolute", link, f"m{i}", xyz="0.1 0 0", axis=axis)
+    return robot
+
+
+def forearm_hand() -> RobotText:
+    """A hand hung from its forearm: a 2-joint wrist into the palm, five 3-joint fingers."""
+    robot = RobotText("forearm_hand", root="forearm")
+    wrist = robot.chain("forearm", ["wr1", "wr2"])
+    robot.joint("palm_fixed", "fixed", wrist, "palm")
+    for finger in ("ff", "mf", "rf", "lf", "th"):
+        robot.chain("palm", [f"{finger}j3", f"{finger}j2", f"{finger}j1"])
+    return robot
+
+
+def one_motion_gripper() -> RobotText:
+    """Two jaws of two links each closed by one actuated joint (the rest mimic it), no
+    gripper word in any name."""
+    robot = RobotText("jaws", root="base")
+    r1 = placed(robot, "r1", "revolute", "base", "r1_link", xyz="0 0.008 0.05", axis="1 0 0")
+    placed(
+        robot,
+        "r2",
+        "revolute",
+        r1,
+        "r2_link",
+        xyz="0 0.05 0.03",
+        axis="-1 0 0",
+        extra='<mimic joint="r1"/>',
+    )
+    l1 = placed(
+        robot,
+        "l1",
+        "revolute",
+        "base",
+        "l1_link",
+        xyz="0 -0.008 0.05",
+        axis="-1 0 0",
+        extra='<mimic joint="r1"/>',
+    )
+    placed(
+        robot,
+        "l2",
+        "revolute",
+        l1,
+        "l2_link",
+        xyz="0 -0.05 0.03",
+        axis="1 0 0",
+        extra='<mimic joint="r1"/>',
+    )
+    return robot

@@ -119,3 +119,28 @@ def test_with_role_lists_the_joints_of_one_role_in_the_order_found() -> None:
     }
     assert with_role(roles, "wheel") == ["b", "c"]
     assert with_role(roles, "fin") == []
+
+
+def test_a_motor_whose_mimic_followers_are_wheels_drives_them() -> None:
+    robot = RobotText("geared_base")
+    builders.placed(robot, "motor", "continuous", "base_link", "motor_link")
+    for side in ("left", "right"):
+        robot.joint(
+            f"wheel_{side}_joint",
+            "continuous",
+            "base_link",
+            f"wheel_{side}",
+            '<mimic joint="motor"/>',
+        )
+    robot.add(builders.transmission("motor", "VelocityJointInterface"))
+    result = identify_urdf(robot.text())
+    roles = {role.joint: role.role for role in result.roles}
+    assert roles["motor"] == "wheel"
+    assert [c.motion_control for c in result.motion_controls] == ["Driving"]
+
+
+def test_propellers_a_simulator_poses_are_rotors_even_alone() -> None:
+    robot = RobotText("single_prop")
+    robot.joint("propeller_joint", "floating", "base_link", "propeller")
+    roles = joint_roles(JointTree(parse_urdf(robot.text(), strict=False), load_profile()))
+    assert with_role(roles, "rotor") == ["propeller_joint"]

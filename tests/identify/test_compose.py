@@ -74,15 +74,15 @@ def test_a_new_structure_is_tried_before_the_shipped_ones(tmp_path: Path) -> Non
             tmp_path / "six.yaml",
             "extends: shipped\n"
             "structures:\n"
-            "  - {name: Hexapod, when: {legs: 6}, kinematic_types: [Hexapod], confidence: 0.9}\n"
+            "  - {name: Insect, when: {legs: 6}, kinematic_types: [Hexapod], confidence: 0.9}\n"
             "  - {name: Quadruped, kinematic_types: [Legged Robot]}\n",
         )
     )
-    assert profile.structure_names[0] == "Hexapod"
+    assert profile.structure_names[0] == "Insect"
     assert profile.structure_names.count("Quadruped") == 1
     six = identify_urdf(hexapod().text(), rules=rules, profile=profile)
     four = identify_urdf(quadruped().text(), rules=rules, profile=profile)
-    assert (six.structure, six.kinematic_type) == ("Hexapod", "Hexapod")
+    assert (six.structure, six.kinematic_type) == ("Insect", "Hexapod")
     assert (four.structure, four.kinematic_type) == ("Quadruped", "Legged Robot")
 
 
@@ -123,7 +123,7 @@ def test_every_problem_of_a_composed_profile_is_located_in_the_users_file(
         "extends: shipped\n"
         "doubt_factor: 3\n"
         "structures:\n"
-        "  - {name: Hexapod, when: {paws: 6}, kinematic_types: [Hexapod]}\n",
+        "  - {name: Insect, when: {paws: 6}, kinematic_types: [Hexapod]}\n",
     )
     with pytest.raises(SolverError) as caught:
         load_profile(mine)
@@ -134,7 +134,7 @@ def test_every_problem_of_a_composed_profile_is_located_in_the_users_file(
     assert [tuple(where) for *where, _ in found] == [
         (str(mine), 2, 15, "doubt_factor"),
         (str(mine), 4, 5, "structures[0].confidence"),
-        (str(mine), 4, 28, "structures[0].when.paws"),
+        (str(mine), 4, 27, "structures[0].when.paws"),
     ]
     messages = [message for *_, message in found]
     assert messages[0] == "doubt_factor must be a number in (0, 1], got a number (3)"

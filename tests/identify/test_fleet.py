@@ -38,7 +38,10 @@ def fleet_output(folder: Path, team: Path) -> str:
     return result.stdout + result.stderr + team.read_text()
 
 
-@pytest.mark.parametrize("entry", ["drone.urdf", "drone.srdf", "drone.topics", "drone.topics.txt"])
+@pytest.mark.parametrize(
+    "entry",
+    ["drone.urdf", "drone.srdf", "drone.topics", "drone.topics.txt", "drone.teleop.yaml"],
+)
 def test_no_link_out_of_the_folder_is_followed(tmp_path: Path, entry: str) -> None:
     folder, outside = robots_beside(tmp_path)
     if entry != "drone.urdf":
@@ -81,7 +84,16 @@ def test_a_folder_given_through_a_link_is_scanned(tmp_path: Path) -> None:
     assert fleet.failed == ()
 
 
-@pytest.mark.parametrize("entry", ["rover.topics", "rover.srdf", "rover.bag"])
+def test_an_srdf_beside_a_robot_that_is_no_xml_is_a_warning_never_quoted(tmp_path: Path) -> None:
+    folder, _ = robots_beside(tmp_path)
+    (folder / "rover.srdf").write_text(SECRET)  # a supporting file: the URDF is read alone
+    shown = fleet_output(folder, tmp_path / "team.yaml")
+    assert f"warning: {folder / 'rover.srdf'}:1:1: malformed XML" in shown
+    assert "2 robot(s) identified, 0 not" in shown
+    assert "hunter2" not in shown
+
+
+@pytest.mark.parametrize("entry", ["rover.topics", "rover.bag"])
 def test_a_file_beside_a_robot_that_is_not_of_its_kind_is_never_quoted(
     tmp_path: Path, entry: str
 ) -> None:

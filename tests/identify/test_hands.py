@@ -122,3 +122,50 @@ def test_three_short_unnamed_chains_on_one_link_are_fingers_and_two_are_not() ->
     # On a body that rolls, the chains on its root are the base's own (a tracked vehicle's
     # flippers).
     assert finger_groups(tree, three + two, grounded=True) == set()
+
+
+def test_jaws_closed_by_one_motion_are_a_gripper_whatever_their_names() -> None:
+    result = identify_urdf(builders.one_motion_gripper().text())
+    assert result.structure == "Gripper"
+    assert result.body is not None
+    assert result.body.finger_motions == 1  # one actuator: a gripper, not a hand
+    assert {role.role for role in result.roles} == {"finger"}
+
+
+def test_an_srdf_group_of_a_grippers_jaws_is_no_arm_group() -> None:
+    srdf = (
+        '<robot name="jaws"><group name="gripper"><joint name="r1"/><joint name="r2"/>'
+        '<joint name="l1"/><joint name="l2"/></group></robot>'
+    )
+    result = identify_urdf(builders.one_motion_gripper().text(), srdf_text=srdf)
+    assert result.structure == "Gripper"
+    assert "End Effector" not in {c.motion_control for c in result.motion_controls}
+
+
+def test_two_jaws_side_by_side_at_the_end_of_an_arm_make_it_end_in_a_gripper() -> None:
+    # A humanoid's split gripper: two grip joints on the wrist, mirrored, each driven alone.
+    robot = builders.humanoid()
+    for side, sign in (("l", 1), ("r", -1)):
+        wrist = f"{side}_wrist_2_link"
+        builders.placed(
+            robot,
+            f"{side}_grip",
+            "revolute",
+            wrist,
+            f"{side}_grip_a",
+            xyz=f"0.09 {0.058 * sign} 0",
+            axis="0 0 -1",
+        )
+        builders.placed(
+            robot,
+            f"{side}_grip_1",
+            "revolute",
+            wrist,
+            f"{side}_grip_b",
+            xyz=f"0.09 {0.032 * sign} 0",
+            axis="0 0 1",
+        )
+    result = identify_urdf(robot.text())
+    assert result.structure == "Humanoid"
+    assert result.body is not None
+    assert [limb.gripper for limb in result.body.limbs if limb.kind == "arm"] == [True, True]

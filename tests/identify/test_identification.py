@@ -86,3 +86,13 @@ def test_mutated_urdfs_are_identified_or_refused(data: bytes) -> None:
     else:
         return
     assert message.startswith("fuzz.urdf")
+
+
+def test_an_srdf_whose_comment_xml_rejects_is_a_located_warning_the_urdf_read_alone() -> None:
+    # "--" inside a comment is not XML: the SRDF cannot be read at all.
+    srdf = '<?xml version="1.0"?>\n<robot name="arm6">\n<!-- set up -- by hand -->\n</robot>\n'
+    result = identify_urdf(builders.manipulator().text(), srdf_text=srdf, srdf_file="arm6.srdf")
+    assert result.structure == "Manipulator"
+    (warning,) = result.warnings
+    assert (warning.location.file, warning.location.line) == ("arm6.srdf", 3)
+    assert warning.message.endswith("(the SRDF is not read; the URDF alone is)")

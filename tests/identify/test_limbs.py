@@ -136,3 +136,81 @@ def test_a_limb_describes_itself_with_its_names_escaped() -> None:
     assert limb.describe() == "arm: 3-joint chain base_link -> tool0 (a .. c), ends in a gripper"
     forged = Limb("head", ("pan\nstructure UAV",), "base_link", "cam")
     assert "\n" not in forged.describe()
+
+
+def test_six_alike_unnamed_chains_ending_below_the_body_are_legs_of_a_hexapod() -> None:
+    result = identify_urdf(builders.walker(6).text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["leg"] * 6
+    assert result.structure == "Hexapod"
+    assert "legs by place" in result.body.limbs[0].why
+
+
+def test_four_alike_unnamed_chains_ending_below_the_body_are_a_quadrupeds_legs() -> None:
+    assert identify_urdf(builders.walker(4).text()).structure == "Quadruped"
+
+
+def test_fingers_on_a_palm_pointing_away_from_it_stay_fingers() -> None:
+    # A hand's fingers are alike chains on one link too, but they do not end below it.
+    assert identify_urdf(builders.hand().text()).structure == "Hand"
+
+
+def test_a_chain_of_equal_modules_with_alternating_axes_is_a_snakes_spine() -> None:
+    result = identify_urdf(builders.snake(8).text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["spine"]
+    assert result.structure == "Serpentine"
+    assert result.kinematic_type is None  # the article has no snake
+
+
+def test_an_arm_of_unequal_links_is_no_spine() -> None:
+    robot = builders.snake(7)
+    text = robot.text().replace('<origin xyz="0.1 0 0"', '<origin xyz="0.3 0 0"', 2)
+    assert identify_urdf(text).structure == "Manipulator"
+
+
+def test_a_chain_of_modules_whose_axes_do_not_alternate_is_no_spine() -> None:
+    text = builders.snake(8).text().replace('<axis xyz="0 1 0"/>', '<axis xyz="0 0 1"/>')
+    assert identify_urdf(text).structure == "Manipulator"
+
+
+@pytest.mark.parametrize("fixed_to_the_world", [False, True])
+def test_a_short_chain_carrying_a_whole_hand_is_its_wrist_not_an_arm(
+    fixed_to_the_world: bool,
+) -> None:
+    robot = builders.forearm_hand()
+    text = robot.text()
+    if fixed_to_the_world:  # the forearm bolted to a world link: the same hand
+        text = text.replace(
+            "</robot>",
+            '<link name="world"/><joint name="world_fixed" type="fixed"><parent link="world"/>'
+            '<child link="forearm"/></joint></robot>',
+        )
+    result = identify_urdf(text)
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["wrist"]
+    assert result.structure == "Hand"
+
+
+def test_two_coaxial_leg_chains_on_one_side_are_one_five_bar_leg() -> None:
+    robot = RobotText("five_bar")
+    for corner, x, y in (("front_left", 0.2, 0.1), ("front_right", 0.2, -0.1)):
+        for half, dy in (("a", -0.02), ("b", 0.02)):
+            builders.leg(robot, robot.root, f"{corner}_{half}", ("motor", "knee"))
+            robot.joints[-3] = robot.joints[-3].replace(
+                "<limit", f'<origin xyz="{x} {y + dy} 0"/><axis xyz="0 1 0"/><limit'
+            )
+    body = detect_body(parse_urdf(robot.text()), load_profile())
+    assert body.count("leg") == 2
+    assert all(len(limb.joints) == 4 for limb in body.limbs)
+
+
+def test_a_short_unnamed_chain_carrying_a_camera_is_a_head() -> None:
+    robot = builders.ugv()
+    tip = robot.chain(robot.root, ["j1", "j2"])
+    robot.fixed(tip, "cam_frame")
+    robot.add(builders.gazebo_sensor("cam_frame", "camera", "cam"))
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["head"]
+    assert "a pan/tilt unit" in result.body.limbs[0].why

@@ -221,3 +221,46 @@ def test_one_leg_walks_nowhere() -> None:
 
 def test_casters_and_wheels_are_no_legs_to_walk_on() -> None:
     assert "Walking" not in controls(builders.caster_base())
+
+
+def test_a_grippers_driven_joint_takes_joint_goals() -> None:
+    robot = builders.one_motion_gripper()
+    robot.add(builders.transmission("r1"))
+    assert "Joint" in controls(robot)
+
+
+def test_a_short_chain_on_a_flying_body_is_the_vehicles_not_joint_control() -> None:
+    # A 1-joint gimbal or control surface with a transmission on a multirotor.
+    robot = builders.quadrotor()
+    robot.chain(robot.root, ["gimbal_motor"])
+    robot.add(builders.transmission("gimbal_motor"))
+    assert "Joint" not in controls(robot)
+
+
+def test_legs_and_a_lidar_could_take_waypoints_a_guess_said_so() -> None:
+    robot = builders.quadruped()
+    robot.add(builders.gazebo_sensor("base_link", "ray", "laser"))
+    found = controls(robot)
+    assert "Walking" in found
+    assert (
+        found["Waypoint"]
+        == "urdf: likely, not declared: Walking and a lidar sensor, what navigation needs"
+    )
+
+
+@pytest.mark.parametrize(
+    ("plugin", "control"),
+    [
+        ("gz-sim-velocity-control-system", "Driving"),
+        ("gz-sim-diff-drive-system", "Driving"),
+        ("gz-sim-multicopter-velocity-control-system", "Flight"),
+    ],
+)
+def test_gazebo_sim_spellings_of_drive_and_flight_plugins_are_read(
+    plugin: str, control: str
+) -> None:
+    robot = RobotText("sim")
+    robot.add(builders.model_plugin("system", plugin))
+    found = controls(robot)
+    assert control in found
+    assert ({"Driving", "Flight"} - {control}).isdisjoint(found)

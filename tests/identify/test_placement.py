@@ -7,7 +7,6 @@ import pytest
 
 from solver.identify import identify_urdf, load_profile
 from solver.identify.placement import Placement, placement
-from solver.identify.readers.srdf import parse_srdf
 from solver.identify.readers.urdf import parse_urdf
 from solver.identify.tree import JointTree
 from tests.identify import builders
@@ -80,7 +79,7 @@ def test_root_joints_along_x_and_y_and_about_z_place_a_planar_base() -> None:
     robot = on_rails(
         [("x", "prismatic", "1 0 0"), ("y", "prismatic", "0 1 0"), ("t", "continuous", "0 0 1")]
     )
-    assert placement(tree_of(robot), None) == Placement(
+    assert placement(tree_of(robot)) == Placement(
         planar=("root joints x, y, t (x, y and a turn about z)",), placing=("x", "y", "t")
     )
 
@@ -89,20 +88,43 @@ def test_root_joints_that_lift_and_tilt_place_nothing() -> None:
     robot = on_rails(
         [("z", "prismatic", "0 0 1"), ("y", "prismatic", "0 1 0"), ("t", "revolute", "1 0 0")]
     )
-    assert placement(tree_of(robot), None) == Placement()
+    assert placement(tree_of(robot)) == Placement()
 
 
-def test_a_floating_joint_and_an_srdf_virtual_planar_joint_are_each_said() -> None:
+def test_a_floating_joint_that_carries_the_body_is_a_floating_base() -> None:
     robot = RobotText("both", root="world")
     base = robot.joint("world_float", "floating", "world", "base_link")
     builders.arm(robot, base, joints=3, gripper=False)
+    assert placement(tree_of(robot)) == Placement(floating=("world_float",))
+
+
+def test_an_srdf_virtual_joint_places_nothing() -> None:
+    # MoveIt's setup assistant writes a planar virtual joint for an arm bolted to a table.
+    robot = builders.manipulator()
     urdf = parse_urdf(robot.text(), strict=False)
-    srdf = parse_srdf(
-        '<robot name="both"><virtual_joint name="odom_joint" type="planar" '
-        'parent_frame="odom" child_link="world"/></robot>',
-        "both.srdf",
-        urdf,
+    srdf = (
+        '<robot name="arm6"><virtual_joint name="odom_joint" type="planar" '
+        'parent_frame="odom" child_link="base_link"/></robot>'
     )
-    assert placement(JointTree(urdf, load_profile()), srdf) == Placement(
-        floating=("world_float",), planar=("SRDF virtual joint odom_joint (planar)",)
-    )
+    result = identify_urdf(robot.text(), srdf_text=srdf)
+    assert placement(JointTree(urdf, load_profile())) == Placement()
+    assert result.structure == "Manipulator"
+    assert result.body is not None
+    assert not result.body.mobile_base
+
+
+def test_propellers_a_simulator_poses_on_floating_joints_are_no_floating_base() -> None:
+    robot = RobotText("posed_quad")
+    for i in range(4):
+        robot.joint(f"propeller_{i}_joint", "floating", "base_link", f"propeller_{i}")
+    result = identify_urdf(robot.text())
+    assert placement(tree_of(robot)) == Placement()
+    assert (result.structure, result.kinematic_type) == ("UAV", "UAV")
+    assert result.body is not None
+    assert len(result.body.rotors) == 4
+
+
+def test_a_single_posed_propeller_still_flies() -> None:
+    robot = RobotText("posed_plane")
+    robot.joint("prop_joint", "floating", "base_link", "prop")
+    assert identify_urdf(robot.text()).structure == "UAV"

@@ -37,7 +37,7 @@ def test_every_problem_of_a_profile_is_reported_with_its_location() -> None:
         parse_profile(parse_document(text, "mine.yaml"))
     found = {f.location.path: f for f in caught.value.faults}
     assert "invalid regular expression" in found["patterns.wheel"].message
-    assert "unknown feature 'paws'" in found["structures[6].when.paws"].message
+    assert "unknown feature 'paws'" in found["structures[8].when.paws"].message
     assert "doubt_factor" in found["doubt_factor"].message
     assert any("direction must be one of" in f.message for f in caught.value.faults)
     assert all(f.location.file == "mine.yaml" and f.location.line for f in caught.value.faults)

@@ -256,3 +256,43 @@ def test_a_stereo_pair_declared_as_two_cameras_is_one_stereo_camera() -> None:
         ("camera", "left_eye_camera"),
         ("camera", "right_eye_camera"),
     ]
+
+
+def test_gazebo_sim_systems_are_no_sensors_their_sensor_elements_are() -> None:
+    found = kinds(
+        builders.model_plugin("gz::sim::systems::Imu", "gz-sim-imu-system"),
+        builders.model_plugin("gz::sim::systems::Sensors", "gz-sim-sensors-system"),
+        builders.model_plugin("ignition::gazebo::systems::Imu", "ignition-gazebo-imu-system"),
+        builders.model_plugin("control", "gz_ros2_control-system"),
+        builders.gazebo_sensor("imu_link", "imu", "imu"),
+    )
+    assert found == [("imu", None, 1)]
+
+
+def ray(link: str, name: str, samples: int, sweep: float, reach: float) -> str:
+    scan = (
+        f"<ray><scan><horizontal><samples>{samples}</samples><min_angle>{-sweep / 2}</min_angle>"
+        f"<max_angle>{sweep / 2}</max_angle></horizontal></scan>"
+        f"<range><max>{reach}</max></range></ray>"
+    )
+    return builders.gazebo_sensor(link, "gpu_lidar", name, scan)
+
+
+def test_a_one_ray_range_sensor_is_no_lidar_and_four_of_them_stay_four() -> None:
+    # Told apart by what they cast, not their names (fl_range, ..., and a lidar beside them).
+    found = kinds(
+        *(
+            ray(f"{corner}_range", f"{corner}_range", 1, 0.02, 0.9)
+            for corner in ("fl", "fr", "rl", "rr")
+        ),
+        ray("laser", "rplidar", 1600, 6.28, 12.0),
+    )
+    assert found == [("ir_range", None, 4), ("lidar", "LIDAR", 1)]
+
+
+def test_a_ray_sensor_read_from_its_element_knows_its_sweep_and_reach() -> None:
+    robot = builders.ugv()
+    robot.add(ray("laser", "rplidar", 1600, 6.28, 12.0))
+    (tag,) = parse_urdf(robot.text()).sensors
+    assert (tag.horizontal_samples, tag.max_range) == (1600, 12.0)
+    assert tag.sweep == pytest.approx(6.28)

@@ -167,3 +167,39 @@ def test_a_hull_is_at_the_surface_by_its_waterline_and_below_it_by_its_plugins()
     torpedo = tree_of(builders.underwater_vehicle())
     assert underwater_hints(torpedo) == ("libthruster_model.so", "libunderwater_object.so")
     assert surface_hints(tree_of(builders.quadrotor())) == ()
+
+
+def test_a_buoyancy_plugin_says_in_water_not_below_it() -> None:
+    robot = thrusters_by_name()
+    robot.add(builders.model_plugin("float", "libbuoyancy_gazebo_plugin.so"))
+    tree = tree_of(robot)
+    assert underwater_hints(tree) == ()
+
+
+def test_a_word_in_a_sensors_settings_says_nothing_of_the_hull() -> None:
+    # An underwater vehicle's barometer with an offset to the water surface.
+    robot = thrusters_by_name()
+    robot.add(builders.model_plugin("water", "libunderwater_object.so"))
+    robot.add(
+        builders.gazebo_sensor(
+            "base_link", "altimeter", "baro", "<water_surface_offset>0</water_surface_offset>"
+        )
+    )
+    robot.add(
+        builders.model_plugin(
+            "baro", "libbarometer.so", "<water_surface_offset>0</water_surface_offset>"
+        )
+    )
+    assert surface_hints(tree_of(robot)) == ()
+    assert identify_urdf(robot.text()).structure == "Underwater Vehicle"
+
+
+def test_a_gps_on_a_hull_that_shows_nothing_of_diving_says_it_floats() -> None:
+    robot = thrusters_by_name()
+    robot.add(builders.model_plugin("float", "libbuoyancy_gazebo_plugin.so"))
+    robot.add(builders.gazebo_sensor("base_link", "gps", "gps"))
+    assert identify_urdf(robot.text()).structure == "Surface Vessel"
+    diving = thrusters_by_name()
+    diving.add(builders.gazebo_sensor("base_link", "gps", "gps"))
+    diving.add(builders.gazebo_sensor("dvl_link", "dvl", "dvl"))
+    assert identify_urdf(diving.text()).structure == "Underwater Vehicle"

@@ -8,7 +8,6 @@ from pathlib import Path
 import pytest
 
 from solver import load_team, solve
-from solver.cli import main
 from solver.layouts import (
     JointStart,
     LayoutError,
@@ -164,24 +163,6 @@ def test_validation_reports_orphan_configs_and_bad_splits() -> None:
     assert "orphan config" in message
     assert "0..100" in message
     assert "unknown panel type" in message
-
-
-def test_layouts_command_exits_2_on_an_unusable_presentation(
-    tmp_path: Path, capsys: pytest.CaptureFixture[str]
-) -> None:
-    path = tmp_path / "p.yaml"
-    path.write_text("components: [1]\n")
-    out = str(tmp_path / "out")
-    assert main(["layouts", "case1", "-o", out, "--presentation", str(path)]) == 2
-    assert "components" in capsys.readouterr().err
-
-
-def test_an_identification_profile_for_layouts_needs_a_robot(
-    tmp_path: Path, capsys: pytest.CaptureFixture[str]
-) -> None:
-    out = str(tmp_path / "out")
-    assert main(["layouts", "case1", "-o", out, "--profile", "rules/identification.yaml"]) == 2
-    assert "--profile: needs --robot URDF" in capsys.readouterr().err
 
 
 def test_layout_filename_marks_the_default_configuration() -> None:

@@ -34,22 +34,3 @@ def test_preview_page_screenshot_in_headless_chromium_is_not_blank(tmp_path: Pat
     # A blank page is one colour; the thumbnails paint several panel colours over white.
     assert len(painted) >= 3
     assert (85, 168, 104) in painted  # the Image panels' green
-
-
-def test_layouts_preview_option_writes_one_thumbnail_per_layout(tmp_path: Path) -> None:
-    from solver.cli import main
-
-    assert main(["layouts", "case1", "-o", str(tmp_path), "--preview"]) == 0
-    page = (tmp_path / "preview.html").read_text()
-    assert page.count("<figure>") == 7
-    assert "<figcaption>config-007-default.json</figcaption>" in page
-
-
-def test_preview_with_rviz_format_exits_2_before_writing(tmp_path: Path) -> None:
-    from solver.cli import main
-
-    assert (
-        main(["layouts", "case1", "-o", str(tmp_path / "out"), "--format", "rviz", "--preview"])
-        == 2
-    )
-    assert not (tmp_path / "out").exists()

@@ -56,18 +56,6 @@ def test_robot_layout_uses_its_namespace_and_its_own_sensor_tiles(
     )
 
 
-def test_robot_layout_without_a_team_exits_2(
-    tmp_path: Path, capsys: pytest.CaptureFixture[str]
-) -> None:
-    assert (
-        main(
-            ["layouts", "--robot", str(EXAMPLES / "quadrotor.urdf"), "-o", str(tmp_path / "y.json")]
-        )
-        == 2
-    )
-    assert "--robot needs --team" in capsys.readouterr().err
-
-
 def _robot_layout(tmp_path: Path, *extra: str) -> int:
     return main(
         [
@@ -134,11 +122,6 @@ def test_robot_layout_takes_its_real_topics_from_a_ros1_bag(tmp_path: Path) -> N
     config = json.loads(out.read_text())["configById"]
     assert config["3D!p02"]["topics"] == {"/lidar/points": _CLOUD}
     assert config["Teleop!p01"]["topic"] == "/teleop/cmd_vel"
-
-
-def test_topics_without_a_robot_exit_2(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
-    assert main(["layouts", "case1", "--topics", "t.txt", "-o", str(tmp_path)]) == 2
-    assert "--topics: needs --robot URDF" in capsys.readouterr().err
 
 
 def test_an_arms_joint_command_names_the_joints_of_its_description(tmp_path: Path) -> None:

@@ -3,7 +3,6 @@
 
 from __future__ import annotations
 
-import json
 import signal
 import subprocess
 import sys
@@ -19,37 +18,6 @@ from solver.layouts import load_presentation, write_layouts
 from solver.layouts.writer import write_layout_folder
 from solver.limits import limit
 from tests.conftest import ROOT, run_cli
-
-
-def test_a_second_run_replaces_its_layouts_and_removes_those_it_no_longer_writes(
-    tmp_path: Path,
-) -> None:
-    out = tmp_path / "layouts"
-    first = run_cli("layouts", "case2", "-o", out, "--preview")
-    assert first.returncode == 0, first.stderr
-    assert len(list(out.glob("config-*.json"))) == 19
-    (out / "notes.txt").write_text("the operator's own notes\n")
-    second = run_cli("layouts", "case1", "-o", out)
-    assert second.returncode == 0, second.stderr
-    assert second.stdout == (
-        f"wrote 7 layouts to {out}\n"
-        "replaced 6 files of an earlier run: config-001.json, config-002.json, "
-        "config-003.json, config-004.json, config-005.json, config-006.json\n"
-        "removed 14 files of an earlier run: config-007.json, config-008.json, "
-        "config-009.json, config-010.json, config-011.json, config-012.json and 8 more\n"
-    )
-    assert sorted(path.name for path in out.iterdir()) == [
-        *(f"config-{n:03d}.json" for n in range(1, 7)),
-        "config-007-default.json",
-        "notes.txt",
-    ]
-    assert (out / "notes.txt").read_text() == "the operator's own notes\n"
-    # docs/layouts.md shows this run's output.
-    page = (ROOT / "docs" / "layouts.md").read_text(encoding="utf-8")
-    assert (
-        "$ teleop-ui layouts case1 -o layouts/\n" + second.stdout.replace(str(out), "layouts/")
-        in page
-    )
 
 
 def test_rviz_files_written_where_lichtblick_layouts_were_leave_no_json_behind(
@@ -74,43 +42,6 @@ def test_a_preview_is_written_with_the_layouts_it_draws(tmp_path: Path) -> None:
     assert done.paths[-1] == tmp_path / "preview.html"
     page = done.paths[-1].read_text()
     assert page.count("<figure>") == 7
-
-
-def test_layouts_for_a_namespace_put_every_topic_under_it(tmp_path: Path) -> None:
-    result = run_cli("layouts", "case1", "-o", tmp_path, "--namespace", "/uav7/")
-    assert result.returncode == 0, result.stderr
-    layout = json.loads((tmp_path / "config-001.json").read_text())
-    assert layout["configById"]["Teleop!p01"]["topic"] == "/uav7/cmd_vel"
-
-
-def test_a_namespace_that_is_no_ros2_name_exits_2_and_writes_nothing(tmp_path: Path) -> None:
-    out = tmp_path / "out"
-    result = run_cli("layouts", "case1", "-o", out, "--namespace", "uav 7")
-    assert result.returncode == 2
-    assert result.stderr == (
-        "--namespace: 'uav 7' is not a ROS 2 namespace: it is not absolute (a ROS 2 topic name "
-        "starts with '/')\n"
-    )
-    assert not out.exists()
-
-
-def test_a_robot_whose_name_is_no_ros2_name_needs_a_namespace(tmp_path: Path) -> None:
-    urdf = tmp_path / "robot.urdf"
-    urdf.write_text(
-        '<robot name="my-rover"><link name="base_link"/><link name="wheel"/>'
-        '<joint name="wheel_joint" type="continuous"><parent link="base_link"/>'
-        '<child link="wheel"/></joint></robot>'
-    )
-    out = tmp_path / "rover.json"
-    refused = run_cli("layouts", "--robot", urdf, "--team", "case2", "-o", out)
-    assert refused.returncode == 2
-    assert "the robot's name makes its namespace: give one with --namespace /NAME" in refused.stderr
-    assert not out.exists()
-    named = run_cli(
-        "layouts", "--robot", urdf, "--team", "case2", "-o", out, "--namespace", "/rover"
-    )
-    assert named.returncode == 0, named.stderr
-    assert '"/rover/' in out.read_text()
 
 
 def _team(folder: Path, configurations: int) -> Path:

@@ -4,6 +4,8 @@
   every registration and parameter the test made, afterwards). Tests that kill the master
   start their own with ``own_roscore``.
 * ``node``: a :class:`~tests.live.roscore.TestNode` on the master.
+* ``domain``: a DDS domain of the test's own, on loopback (:class:`~tests.live.ros2_graph.Domain`),
+  for the ROS 2 tests; the robots started on it are ended afterwards.
 * ``start_watcher``: a :class:`~solver.live.watcher.Watcher` running in a thread, its events
   recorded; :meth:`Recorder.wait_for` polls for an event with a generous timeout (never a
   duration assertion: the machine may be loaded).
@@ -28,6 +30,7 @@ from solver.live.events import Event, event_data
 from solver.live.watcher import Watcher
 from solver.solving.solution import Solution, solve
 from tests.conftest import TEAMS
+from tests.live.ros2_graph import Domain, write_config
 from tests.live.roscore import Roscore, TestNode, roscore_available
 
 EVENT_TIMEOUT = 60.0  # seconds to wait for an expected event before failing
@@ -96,6 +99,19 @@ def web_server() -> Iterator[str]:
     yield f"http://127.0.0.1:{server.server_address[1]}/"
     server.shutdown()
     server.server_close()
+
+
+@pytest.fixture
+def domain(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Domain]:
+    """A DDS domain of this test's own on loopback; the robots started on it end with the test."""
+    monkeypatch.setenv("CYCLONEDDS_URI", write_config(tmp_path))
+    monkeypatch.setenv("ROS_DOMAIN_ID", "999")  # never used: every test names its domain
+    import os
+
+    found = Domain(tmp_path, dict(os.environ))
+    yield found
+    for robot in found.robots:
+        robot.kill()
 
 
 @pytest.fixture(scope="session")

@@ -18,6 +18,7 @@ from pathlib import Path
 from typing import Any
 
 from tests.conftest import ROOT
+from tests.live.fleet import drone_text, rover_text
 
 CONFIG = """<?xml version="1.0" encoding="UTF-8"?>
 <CycloneDDS xmlns="https://cdds.io/config">
@@ -171,3 +172,36 @@ class Operator:
     def close(self) -> None:
         for entity in (self.reader, *self.writers.values(), self.participant):
             entity.__del__()
+
+
+class Domain:
+    """A DDS domain of this test's own, on loopback, and the robots started on it."""
+
+    def __init__(self, directory: Path, env: dict[str, str]) -> None:
+        self.id = next_domain()
+        self.directory = directory
+        self.env = env
+        self.robots: list[EmulatedRobot] = []
+
+    def robot(self, gid_size: int = 16) -> EmulatedRobot:
+        self.robots.append(EmulatedRobot(self.id, self.env, gid_size))
+        return self.robots[-1]
+
+    def drone(self, namespace: str, gid_size: int = 16) -> EmulatedRobot:
+        robot = self.robot(gid_size)
+        robot.node(
+            f"{namespace}/camera_driver",
+            publish=[(f"{namespace}/camera/image_raw", "sensor_msgs/msg/Image")],
+        )
+        robot.describe(namespace, drone_text(), self.directory)
+        return robot
+
+    def rover(self, namespace: str, gid_size: int = 16) -> EmulatedRobot:
+        robot = self.robot(gid_size)
+        robot.node(
+            f"{namespace}/base_driver",
+            subscribe=[(f"{namespace}/cmd_vel", "geometry_msgs/msg/Twist")],
+            publish=[(f"{namespace}/scan", "sensor_msgs/msg/LaserScan")],
+        )
+        robot.describe(namespace, rover_text(), self.directory)
+        return robot

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import json
 
 from solver.errors import Fault, Location, SolverError
@@ -23,7 +24,7 @@ from solver.live.events import (
 )
 from solver.live.render import render_event, text_lines
 from solver.live.robot import LiveRobot, identify_robot
-from solver.live.selection import Request, select
+from solver.live.selection import LayoutLink, Request, select
 from solver.ros.names import Topic
 from solver.solving.solution import Solution
 from tests.live.fleet import drone_configuration, drone_text
@@ -195,3 +196,57 @@ def test_text_events_show_names_from_the_graph_on_their_own_line(
     assert not any(char in rendered for char in ("\u202e", "\x1b"))
     assert len(rendered) < 10_000
     assert "... (cut from 1,000,0" in rendered
+
+
+# ---- where the answer's layouts are (watch --layouts; issue 38) -----------------------------
+
+
+def test_a_selections_layouts_are_shown_whole_each_on_a_line_of_its_own(
+    solution: Solution, profile: Profile
+) -> None:
+    robot = drone(solution, profile)
+    request = Request("/uav1", FLIGHT)
+    # A folder of the operator's own, longer than a stranger's string is shown and holding a
+    # character a terminal would act on: whole, escaped, never cut.
+    folder = "/home/me/" + "a-long-folder-name-" * 4 + "\x1b[2J"
+    own = f"{folder}/uav1/config-001.json"
+    links = (
+        LayoutLink("foxglove", own, "http://127.0.0.1:8770/layouts/uav1/config-001.json"),
+        LayoutLink("team", f"{folder}/team.json", None, None),
+    )
+    selected = select(request, {"/uav1": robot}, solution)
+    assert selected is not None
+    answer = dataclasses.replace(selected, layouts=links)
+    lines = text_lines(SelectionChanged(7, request, answer, with_layouts=True))
+    escaped = folder.replace("\x1b", "\\x1b")
+    assert lines[-3:] == [
+        f"layout          foxglove: {escaped}/uav1/config-001.json",
+        "                  http://127.0.0.1:8770/layouts/uav1/config-001.json",
+        f"layout          team (no tab for this answer): {escaped}/team.json",
+    ]
+    data = event_data(SelectionChanged(7, request, answer, with_layouts=True), solution)
+    assert (data["layout"], data["layouts"]) == (
+        own,
+        {
+            "foxglove": {"path": own, "url": "http://127.0.0.1:8770/layouts/uav1/config-001.json"},
+            "team": {"path": f"{folder}/team.json", "tab": None},
+        },
+    )
+    assert json.loads(render_event(SelectionChanged(7, request, answer, True), solution))[
+        "layouts"
+    ] == json.loads(json.dumps(data["layouts"]))
+
+
+def test_without_layouts_events_name_none_and_with_them_say_there_are_none(
+    solution: Solution, profile: Profile
+) -> None:
+    robot = drone(solution, profile)
+    request = Request("/uav1", FLIGHT)
+    answer = select(request, {"/uav1": robot}, solution)
+    assert "layouts" not in event_data(SelectionChanged(1, request, answer), solution)
+    none = event_data(SelectionChanged(2, Request(), None, with_layouts=True), solution)
+    assert (none["layout"], none["layouts"]) == (None, None)
+    assert text_lines(SelectionChanged(2, Request(), None, with_layouts=True)) == [
+        "selection       no active robot (set /teleop_ui/active_robot)",
+        "layout          (no layout)",
+    ]

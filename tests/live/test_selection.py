@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import Any
 
 from solver.identify.identification import IdentificationCache
@@ -9,6 +10,7 @@ from solver.identify.profile import Profile
 from solver.live.discovery import RobotSource
 from solver.live.robot import LiveRobot, identify_robot
 from solver.live.selection import (
+    LayoutLink,
     Request,
     choose,
     read_request,
@@ -184,3 +186,24 @@ def test_the_written_back_value_holds_no_null_and_matches_the_event(
     assert value["default"] is True
     assert value["watcher"] == "/teleop_ui_watch_test"
     assert ui_configuration_value(None, solution, "/teleop_ui_watch_test") is None
+
+
+def test_the_written_back_value_carries_the_layouts_when_the_watcher_writes_them(
+    solution: Solution, profile: Profile
+) -> None:
+    drone = robot("/uav1", drone_text(), (CAMERA,), solution, profile)
+    selection = select(Request("/uav1"), {"/uav1": drone}, solution)
+    assert selection is not None
+    assert "layouts" not in (ui_configuration_value(selection, solution, "/w") or {})
+    links = (
+        LayoutLink("foxglove", "/d/uav1/config-001.json", "http://127.0.0.1:1/layouts/x.json"),
+        LayoutLink("team", "/d/team.json", None, None),
+    )
+    value = ui_configuration_value(replace(selection, layouts=links), solution, "/w")
+    assert value is not None
+    # As every null of the answer, the team layout's missing tab is left out (ROS 1 has no null).
+    assert value["layouts"] == {
+        "foxglove": {"path": "/d/uav1/config-001.json", "url": "http://127.0.0.1:1/layouts/x.json"},
+        "team": {"path": "/d/team.json"},
+    }
+    assert list(value)[-2:] == ["layouts", "watcher"]

@@ -1,4 +1,4 @@
-"""Listing every valid robot with its configuration, and the count command."""
+"""Listing every valid robot with its configuration: the block writer, pages of the list."""
 
 from __future__ import annotations
 
@@ -15,61 +15,6 @@ from solver.engines import fast
 from solver.errors import TooLargeError
 from solver.files.output import csv_row
 from solver.reporting.listing import numbered_robots, write_robots
-from tests.conftest import run_cli
-
-
-def test_robots_lists_every_valid_robot_with_its_configuration() -> None:
-    result = run_cli("robots", "rules/teams/case3.yaml")
-    rows = list(csv.reader(io.StringIO(result.stdout)))
-    assert rows[0] == [
-        "configuration",
-        "kinematic_type",
-        "motion_control",
-        "sensor_type",
-        "sensor_count",
-    ]
-    assert len(rows) == 1 + 872
-    assert rows[1] == ["1", "UAV", "Flight", "2D Camera", "1"]
-    assert {int(row[0]) for row in rows[1:]} == set(range(1, 103))
-
-
-def test_robots_from_both_engines_are_the_same_set() -> None:
-    fast = run_cli("robots", "case2", "-f", "jsonl").stdout.splitlines()
-    reference = run_cli("robots", "case2", "-f", "jsonl", "--engine", "csp").stdout.splitlines()
-    assert sorted(fast) == sorted(reference)
-    assert json.loads(fast[-1])["configuration"] == 18
-
-
-def test_robots_refuses_to_list_more_than_the_limit() -> None:
-    result = run_cli("robots", "case3", "--max-robots", "100")
-    assert result.returncode == 2
-    assert result.stdout == ""
-    assert (
-        "listing 872 robots is refused (more than 100, see --max-robots; "
-        "limit 'robots', docs/security.md)" in result.stderr
-    )
-
-
-def test_solve_refuses_to_enumerate_more_than_the_limit_and_suggests_count_only() -> None:
-    result = run_cli("solve", "case3", "--engine", "fast", "--max-robots", "100")
-    assert result.returncode == 2
-    assert "enumerating 312 robots is refused" in result.stderr
-    assert "use --count-only" in result.stderr
-    counted = run_cli("solve", "case3", "--count-only", "--max-robots", "100")
-    assert counted.returncode == 0
-    assert "872" in counted.stdout
-
-
-def test_count_on_a_rule_set_counts_its_whole_design_space() -> None:
-    data = json.loads(run_cli("count", "rules/paper.yaml", "-f", "json").stdout)
-    assert data["totals"]["valid_robots"] == 6 * 6 * 10 * 50
-    assert data["totals"]["ui_configurations"] == 900
-    assert data["team"] == "every value of Mortimer et al. 2017"
-
-
-def test_count_says_how_it_counted() -> None:
-    lines = run_cli("count", "case1", "--engine", "csp").stdout.splitlines()
-    assert lines[3].split() == ["UAV", "30", "6", "csp"]
 
 
 @pytest.mark.parametrize(

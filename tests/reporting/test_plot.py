@@ -42,7 +42,7 @@ from solver.reporting.plot import (
     radar_figure,
     write_plot,
 )
-from tests.conftest import RULES, TEAMS, run_cli
+from tests.conftest import RULES, TEAMS
 from tests.hostile import FUZZ, NAME_CHARS
 
 THREE_RULES = """\
@@ -490,22 +490,6 @@ def test_write_plot_refuses_an_unknown_extension_and_writes_nothing(
     assert list(tmp_path.iterdir()) == []
 
 
-def test_solve_plot_option_draws_the_radar_chart_beside_the_table(tmp_path: Path) -> None:
-    result = run_cli("solve", "case1", "--plot", tmp_path / "case1.svg")
-    assert result.returncode == 0, result.stderr
-    assert "UAV" in result.stdout
-    assert (tmp_path / "case1.svg").read_bytes().startswith(b"<?xml")
-
-
-def test_solve_plot_with_an_unknown_extension_exits_2_without_traceback(tmp_path: Path) -> None:
-    result = run_cli("solve", "case1", "--plot", tmp_path / "case1.gif")
-    assert result.returncode == 2
-    assert "case1.gif: cannot tell the plot format from '.gif'" in result.stderr
-    assert "Traceback" not in result.stderr
-    assert result.stdout == ""
-    assert list(tmp_path.iterdir()) == []
-
-
 def test_the_component_matrix_accounts_for_every_robot_and_configuration_of_each_type(
     case3: Solution,
 ) -> None:
@@ -525,14 +509,6 @@ def test_the_component_matrix_leaves_blank_what_a_type_never_needs(case3: Soluti
     uav = cells[rows.index("UAV")]
     assert uav[columns.index(("Robot Motion Control", "Walking"))] == (0, 0)
     assert uav[columns.index(("Robot Motion Control", "Flight"))] == (3, 15)
-
-
-def test_solve_can_plot_the_component_matrix(tmp_path: Path) -> None:
-    result = run_cli("solve", "case3", "--plot", tmp_path / "m.svg", "--plot-kind", "matrix")
-    assert result.returncode == 0
-    svg = (tmp_path / "m.svg").read_bytes()
-    assert svg.startswith(b"<?xml")
-    assert svg == figure_bytes(matrix_figure(solve(load_team("case3"))), "svg")
 
 
 # ---- names are drawn as written, never parsed as mathtext or TeX ----------------------------

@@ -9,7 +9,6 @@ import pytest
 from flamapy.interfaces.python import flamapy_feature_model as flamapy
 
 from solver import load_team, solve
-from solver.cli import main
 from solver.reporting.uvl import team_to_uvl
 
 
@@ -108,13 +107,6 @@ def test_flamapy_counts_random_small_teams_with_constraints(seed: int, tmp_path:
     assert team.rules.constraints
     expected = solve(team).totals.valid_robots
     assert flamapy_count(team_to_uvl(team), tmp_path / "m.uvl") == expected
-
-
-def test_export_command_prints_the_model(capsys: pytest.CaptureFixture[str]) -> None:
-    assert main(["export", "case1", "--format", "uvl"]) == 0
-    out = capsys.readouterr().out
-    assert "motion_control_Waypoint" in out
-    assert out.startswith("namespace Team\n")
 
 
 # ---- names that are UVL syntax, keywords or collide are written safely ---------------------

@@ -97,20 +97,6 @@ def test_symbol_names_are_identifiers() -> None:
     assert symbol_name("UAV", "sensor_count", True) == "n_UAV_sensor_count"
 
 
-def test_count_symbolic_json_from_the_command_line() -> None:
-    data = json.loads(run_cli("count", "case2", "--symbolic", "-f", "json").stdout)
-    assert data["by_type"][1]["valid_robots"] == "8*n_UGV"
-    assert (
-        data["totals"]["ui_configurations"] == "6*A_sensor_count(n_UAV) + 6*A_sensor_count(n_UGV)"
-    )
-    assert data["at_team_maxima"] == {
-        "maxima": {"n_UAV": 5, "n_UGV": 10},
-        "valid_robots": 110,
-        "ui_configurations": 18,
-        "equal_to_exact_count": True,
-    }
-
-
 def test_types_whose_names_read_alike_get_distinct_symbols(write_file: WriteFile) -> None:
     write_file(
         "rules.yaml",

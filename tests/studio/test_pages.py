@@ -369,6 +369,7 @@ def test_a_malformed_rule_file_uploaded_is_shown_with_its_line_and_the_studio_go
     page.get_by_label("Team name").fill("Mine")
     page.get_by_label("Team name").press("Enter")
     expect(page.locator("#context-team")).to_have_text("Mine")
+    expect(page.locator("#total-robots")).not_to_have_text("0")  # the tick has been counted
     edited = totals(page)
     page.get_by_label("Upload a rule set").set_input_files(bad)
     page.get_by_role("button", name="Upload rule set").click()

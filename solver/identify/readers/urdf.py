@@ -74,6 +74,12 @@ class Joint:
     upper: float | None = None
     axis: tuple[float, float, float] = (1.0, 0.0, 0.0)  # URDF's default axis
     origin: tuple[float, float, float] = (0.0, 0.0, 0.0)  # where it sits on its parent link
+    # How its frame is turned on its parent link (roll, pitch, yaw), so axes and places can be
+    # read in one frame (solver.identify.pose).
+    rpy: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    # A mimic joint's ratio to the joint it follows (<mimic multiplier>): a jaw mirrors its
+    # driver (1 or -1), a gear turns by its ratio.
+    multiplier: float = 1.0
 
     @property
     def movable(self) -> bool:
@@ -128,6 +134,10 @@ class SensorTag:
     vertical_samples: int | None = None
     horizontal_fov: float | None = None
     camera_count: int = 0
+    # A ray sensor's horizontal sweep (max_angle - min_angle, radians) and farthest range
+    # (metres): a one-ray range finder sweeps nothing and reaches a metre or two; a lidar sweeps.
+    sweep: float | None = None
+    max_range: float | None = None
 
     @property
     def text(self) -> str:
@@ -160,8 +170,8 @@ class Urdf:
     # (joint, command interfaces) from <ros2_control> (<command_interface name="velocity"/>) and
     # <transmission> (<hardwareInterface>...VelocityJointInterface): position, velocity, effort.
     command_interfaces: tuple[tuple[str, tuple[str, ...]], ...] = ()
-    # The names of every element in the document (lower case): a hull's <metacentric_width>, a
-    # link's <buoyancy> with <windVelocity> say what the robot floats in.
+    # The names of the document's elements outside sensors and plugins (lower case): a hull's
+    # <metacentric_width>, a link's <buoyancy> with <windVelocity> say what the robot floats in.
     tags: frozenset[str] = frozenset()
 
     @cached_property
@@ -422,7 +432,14 @@ class _Builder:
             self._number(limit, "upper", path),
             _vector(parts.get("axis"), (1.0, 0.0, 0.0)),
             _vector(parts.get("origin"), (0.0, 0.0, 0.0)),
+            _vector(parts.get("origin"), (0.0, 0.0, 0.0), "rpy"),
+            self._multiplier(mimic),
         )
+
+    @staticmethod
+    def _multiplier(mimic: etree._Element | None) -> float:
+        value = None if mimic is None else _float(mimic.get("multiplier"))
+        return 1.0 if value is None else value
 
     def _number(self, element: etree._Element | None, attribute: str, path: str) -> float | None:
         if element is None or element.get(attribute) is None:
@@ -564,6 +581,9 @@ def _sensor(
         samples[axis] = _integer(node.text if node is not None else None)
     fov = element.find(".//horizontal_fov")
     cameras = len(element.findall("camera")) + len(element.findall(".//camera[@name]"))
+    low, high = (element.find(f".//scan/horizontal/{end}_angle") for end in ("min", "max"))
+    low_angle, high_angle = (_float(n.text if n is not None else None) for n in (low, high))
+    farthest = element.find(".//range/max")
     return SensorTag(
         name=(element.get("name") or "").strip(),
         type=(kind if kind is not None else element.get("type") or "").strip().lower(),
@@ -579,6 +599,8 @@ def _sensor(
         vertical_samples=samples["vertical"],
         horizontal_fov=_float(fov.text if fov is not None else None),
         camera_count=cameras,
+        sweep=None if low_angle is None or high_angle is None else abs(high_angle - low_angle),
+        max_range=_float(farthest.text if farthest is not None else None),
     )
 
 
@@ -609,9 +631,19 @@ def _interface_kind(text: str) -> str:
 
 
 def _tags(root: etree._Element) -> frozenset[str]:
+    """The element names of the description itself, not inside a ``<sensor>`` or a
+    ``<plugin>`` (their words are a device's settings: a barometer's water-surface offset says
+    nothing of the hull; plugins keep theirs in :attr:`PluginTag.params`)."""
+    # The elements themselves are kept (not their ids): lxml makes a proxy per access, and a
+    # freed proxy's id may be another element's.
+    inside = {
+        element
+        for device in root.iter("sensor", "plugin", "{*}sensor")
+        for element in device.iterdescendants()
+    }
     found: set[str] = set()
     for element in root.iter():
-        if isinstance(element.tag, str) and len(found) < _MAX_TAGS:
+        if isinstance(element.tag, str) and element not in inside and len(found) < _MAX_TAGS:
             found.add(element.tag.rsplit("}", 1)[-1].lower())
     return frozenset(found)
 
@@ -686,10 +718,12 @@ def _reach(start: str, below: dict[str, list[str]]) -> set[str]:
 
 
 def _vector(
-    element: etree._Element | None, default: tuple[float, float, float]
+    element: etree._Element | None, default: tuple[float, float, float], attribute: str = "xyz"
 ) -> tuple[float, float, float]:
-    """The ``xyz`` of an ``<axis>`` or ``<origin>``; ``default`` where absent or unreadable."""
-    parts = [_float(t) for t in (element.get("xyz") or "").split()] if element is not None else []
+    """The ``xyz`` (or ``rpy``) of an ``<axis>`` or ``<origin>``; ``default`` where absent or
+    unreadable."""
+    text = (element.get(attribute) or "") if element is not None else ""
+    parts = [_float(t) for t in text.split()[:4]]
     if len(parts) != 3 or any(p is None for p in parts):
         return default
     x, y, z = (p or 0.0 for p in parts)

@@ -158,6 +158,8 @@ def _scalar_fits(value: Any, kind: str) -> bool:
         )
     if kind == "boolean":
         return isinstance(value, bool)
+    if kind == "null":
+        return value is None
     raise ValueError(f"bad scalar type in the rules data: {kind!r}")
 
 
@@ -176,7 +178,7 @@ def _kind(value: Any) -> str:
 
 
 def _article(kind: str) -> str:
-    names = {"topic": "a topic name (string)", "path": "a message path (string)"}
+    names = {"topic": "a topic name (string)", "path": "a message path (string)", "null": "null"}
     if kind in names:
         return names[kind]
     return ("an " if kind[0] in "aeiou" else "a ") + kind

@@ -6,6 +6,7 @@ stable ``code``:
 ============================  ===========================================================
 ``lichtblick-import``          what the app's import (``validateLayoutData``) refuses
 ``lichtblick-tree``            the panel tree: split nodes, ids without a config, orphans
+                               (a Tab panel's tabs are trees of their own, walked too)
 ``lichtblick-panel-type``      a panel type the app does not register
 ``lichtblick-config``          a config key the panel does not read, or a value of the wrong type
 ``lichtblick-message-path``    a path the message-path grammar refuses, or only half-written
@@ -18,7 +19,15 @@ stable ``code``:
 ``lichtblick-label-cut``       an Indicator label line longer than a tile shows (it is cut)
 ``lichtblick-plot-legend``     series of one Plot whose legend names read alike once cut
 ``namespace``                  a topic the layout publishes on, outside the robot's namespace
+``teleop-ui-follower``         this project's follower panel without the Tab panel it switches
+                               beside it, or mapping a robot's configuration to no tab of it
 ============================  ===========================================================
+
+A Tab panel's tabs are mounted one at a time: the panels of each tab are one screen, so the
+rules about a screen (one pad per command topic, publishers in the robot's namespace, whose
+namespace their own topics say) apply to each tab's panels on their own, and to the panels
+outside any tab on theirs. Panel types are Lichtblick's own and the extension panels this
+project ships (``extension_panels`` in the data file).
 
 Not here: writing layouts (:mod:`solver.layouts.foxglove`); RViz2 (:mod:`.rviz`).
 """
@@ -28,6 +37,7 @@ from __future__ import annotations
 import json
 import re
 from collections.abc import Collection, Iterator, Mapping
+from dataclasses import dataclass
 from typing import Any, TypeGuard
 
 from solver.errors import Fault, Location
@@ -46,6 +56,19 @@ __all__ = ["check_lichtblick", "robot_namespace"]
 # Plot/utils/config.ts isReferenceLinePlotPathType: !isNaN(parseFloat(value)), a leading number.
 _REFERENCE_LINE = re.compile(r"\s*[+-]?(\d|\.\d|Infinity)")
 _MAX_TREE_NODES = 100_000
+_TAB = "Tab"
+
+
+@dataclass(frozen=True, slots=True)
+class _Node:
+    """A node of the panel tree as walked: a panel id, a split or anything else; where it is;
+    the tab it is in (``""``: in none; else the Tab panel's id and the tab's index); and, for
+    a node that is a branch of a split, the other branch (``None`` otherwise)."""
+
+    node: Any
+    path: str
+    tab: str
+    sibling: Any = None
 
 
 def check_lichtblick(
@@ -65,18 +88,49 @@ def check_lichtblick(
     if not isinstance(layout, dict) or not isinstance(layout.get("configById"), dict):
         return tuple(faults)
     configs: dict[str, Any] = layout["configById"]
-    faults.extend(_tree(layout.get("layout"), configs, file))
+    nodes, cut_at = _walk(layout.get("layout"), configs)
+    faults.extend(_tree(nodes, cut_at, configs, file))
     types = {
         topic: {normalise_type(t) for t in kinds} for topic, kinds in (topic_types or {}).items()
     }
     for panel_id, config in configs.items():
         faults.extend(_panel(str(panel_id), config, file, types))
-    faults.extend(_teleop_topics(configs, file))
-    if namespace is None:
-        namespace = robot_namespace(layout)
-    if namespace is not None:
-        faults.extend(_namespace(configs, namespace, file))
+    # One screen at a time: the panels of each tab, and those outside every tab; a tab's
+    # robot is the one the follower beside its Tab panel names for it, where there is one.
+    robots = _tab_robots(nodes, configs)
+    for tab, screen in _screens(configs, nodes).items():
+        own = namespace or robots.get(tab) or robot_namespace({"configById": screen})
+        faults.extend(_teleop_topics(screen, file))
+        if own is not None:
+            faults.extend(_namespace(screen, own, file))
+    faults.extend(_followers(nodes, configs, file))
     return tuple(faults)
+
+
+def tree_faults(layout: Any, file: str = "<layout>") -> tuple[Fault, ...]:
+    """What the import refuses, the panel tree (tabs included) and unknown panel types: the
+    shape of a layout alone, in time linear in its size (for a writer to check what it built;
+    :func:`check_lichtblick` checks every rule)."""
+    faults = list(_import(layout, file))
+    if not isinstance(layout, dict) or not isinstance(layout.get("configById"), dict):
+        return tuple(faults)
+    configs: dict[str, Any] = layout["configById"]
+    nodes, cut_at = _walk(layout.get("layout"), configs)
+    faults.extend(_tree(nodes, cut_at, configs, file))
+    for panel_id in configs:
+        kind = str(panel_id).partition("!")[0]
+        if _spec(kind) is None and kind not in lichtblick_rules()["panel_types"]:
+            where = f"configById.{shown(panel_id)}"
+            unknown = f"unknown panel type {shown(kind, quoted=True)}"
+            faults.append(_fault(file, where, unknown, "lichtblick-panel-type"))
+    return tuple(faults)
+
+
+def _spec(kind: str) -> Mapping[str, Any] | None:
+    """The rules of a panel type: Lichtblick's own, or an extension panel's of this project."""
+    rules = lichtblick_rules()
+    found: Mapping[str, Any] | None = rules["panels"].get(kind)
+    return found if found is not None else rules["extension_panels"].get(kind)
 
 
 def robot_namespace(layout: Any) -> str | None:
@@ -85,11 +139,10 @@ def robot_namespace(layout: Any) -> str | None:
     The robot's topics are those the panels show or command: every topic field and every
     path's topic, except the click-to-publish topics whose defaults are the app's own.
     """
-    rules = lichtblick_rules()
     names: list[str] = []
     configs = layout.get("configById") if isinstance(layout, dict) else None
     for panel_id, config in (configs or {}).items():
-        spec = rules["panels"].get(str(panel_id).partition("!")[0])
+        spec = _spec(str(panel_id).partition("!")[0])
         if spec is None or not isinstance(config, dict):
             continue
         skipped = set(spec.get("app_defaults", ()))
@@ -122,25 +175,63 @@ def _import(layout: Any, file: str) -> Iterator[Fault]:
         yield _fault(file, path.lstrip("."), problem, "lichtblick-import")
 
 
-def _tree(root: Any, configs: dict[str, Any], file: str) -> Iterator[Fault]:
-    seen: list[str] = []
-    stack: list[tuple[Any, str]] = [] if root is None else [(root, "layout")]
-    visited = 0
+def _walk(root: Any, configs: dict[str, Any]) -> tuple[list[_Node], str | None]:
+    """The panel tree's nodes, depth first, the trees of every Tab panel's tabs included (each
+    Tab panel entered once: a Tab inside its own tab is a panel shown twice, not a loop); and
+    where the walk stopped when the tree has more than ``_MAX_TREE_NODES`` nodes."""
+    nodes: list[_Node] = []
+    stack = [] if root is None else [_Node(root, "layout", "")]
+    entered: set[str] = set()
     while stack:
-        node, path = stack.pop()
-        visited += 1
-        if visited > _MAX_TREE_NODES:
-            yield _fault(file, path, "the panel tree is too large to check", "lichtblick-tree")
-            return
+        item = stack.pop()
+        if len(nodes) >= _MAX_TREE_NODES:
+            return nodes, item.path
+        nodes.append(item)
+        node = item.node
+        if isinstance(node, dict):
+            for key, other in (("second", "first"), ("first", "second")):
+                if key in node:
+                    branch = _Node(node[key], f"{item.path}.{key}", item.tab, node.get(other))
+                    stack.append(branch)
+        elif isinstance(node, str) and node.partition("!")[0] == _TAB and node not in entered:
+            entered.add(node)
+            stack.extend(reversed(_tab_trees(node, configs.get(node))))
+    return nodes, None
+
+
+def _tab_trees(panel_id: str, config: Any) -> list[_Node]:
+    """The root of each tab's panel tree in a Tab panel's config (tabs without one: none)."""
+    tabs = config.get("tabs") if isinstance(config, dict) else None
+    if not isinstance(tabs, list):
+        return []
+    return [
+        _Node(
+            tab["layout"],
+            f"configById.{shown(panel_id)}.tabs[{index}].layout",
+            f"{panel_id}[{index}]",
+        )
+        for index, tab in enumerate(tabs)
+        if isinstance(tab, dict) and tab.get("layout") is not None
+    ]
+
+
+def _tree(
+    nodes: list[_Node], cut_at: str | None, configs: dict[str, Any], file: str
+) -> Iterator[Fault]:
+    seen: list[str] = []
+    for item in nodes:
+        node, path = item.node, item.path
         if isinstance(node, str):
             seen.append(node)
             if node not in configs:
                 yield _fault(file, path, "a panel id with no config", "lichtblick-tree")
         elif isinstance(node, dict):
             yield from _split(node, path, file)
-            stack.extend((node[key], f"{path}.{key}") for key in ("second", "first") if key in node)
         else:
             yield _fault(file, path, "neither a panel id nor a split", "lichtblick-tree")
+    if cut_at is not None:
+        yield _fault(file, cut_at, "the panel tree is too large to check", "lichtblick-tree")
+        return
     for panel_id in sorted(set(seen)):
         if seen.count(panel_id) > 1:
             yield _fault(file, "layout", f"{shown(panel_id)} appears twice", "lichtblick-tree")
@@ -169,7 +260,8 @@ def _panel(panel_id: str, config: Any, file: str, types: dict[str, set[str]]) ->
     rules = lichtblick_rules()
     kind = panel_id.partition("!")[0]
     base = f"configById.{shown(panel_id)}"
-    if kind not in rules["panel_types"]:
+    spec = _spec(kind)
+    if spec is None and kind not in rules["panel_types"]:
         unknown = f"unknown panel type {shown(kind, quoted=True)}"
         yield _fault(file, base, unknown, "lichtblick-panel-type")
         return
@@ -177,7 +269,6 @@ def _panel(panel_id: str, config: Any, file: str, types: dict[str, set[str]]) ->
         yield _fault(file, base, "a panel config is an object", "lichtblick-config")
         return
     yield from _titles(kind, config, base, file)
-    spec = rules["panels"].get(kind)
     if spec is None:
         return  # a panel type whose config keys the rules do not list
     own = {key: value for key, value in config.items() if key not in rules["title_keys"]}
@@ -193,6 +284,8 @@ def _panel(panel_id: str, config: Any, file: str, types: dict[str, set[str]]) ->
         yield _fault(file, f"{base}.publishRate", never, "lichtblick-config")
     if kind == "Publish":
         yield from _publish(config, base, file)
+    if kind == _TAB:
+        yield from _active_tab(config, base, file)
     if "label_lines" in spec:
         yield from _label_lines(config, spec["label_lines"], base, file)
     if "legend_prefix" in spec:
@@ -492,9 +585,8 @@ def _teleop_topics(configs: dict[str, Any], file: str) -> Iterator[Fault]:
 
 
 def _namespace(configs: dict[str, Any], namespace: str, file: str) -> Iterator[Fault]:
-    rules = lichtblick_rules()
     for panel_id, config in configs.items():
-        spec = rules["panels"].get(str(panel_id).partition("!")[0])
+        spec = _spec(str(panel_id).partition("!")[0])
         if spec is None or not isinstance(config, dict):
             continue
         merged = _completed(spec, config)
@@ -528,3 +620,125 @@ def _unset(config: dict[str, Any], reference: str) -> bool:
 def _json(value: Any) -> str:
     text = json.dumps(value, separators=(", ", ": "))
     return text if len(text) <= 60 else text[:57] + "..."
+
+
+def _active_tab(config: dict[str, Any], base: str, file: str) -> Iterator[Fault]:
+    """util/layout.ts validateTabPanelConfig: ``activeTabIdx`` names one of the tabs."""
+    index, tabs = config.get("activeTabIdx"), config.get("tabs")
+    if not _is_number(index) or not isinstance(tabs, list):
+        return  # a type problem, or a key the app fills in: reported
+    if index != int(index) or not 0 <= index < len(tabs):
+        yield _fault(
+            file,
+            f"{base}.activeTabIdx",
+            f"names no tab (the panel has {len(tabs)}): the app replaces the whole config with "
+            "its default, one empty tab",
+            "lichtblick-config",
+        )
+
+
+def _screens(configs: dict[str, Any], nodes: list[_Node]) -> dict[str, dict[str, Any]]:
+    """The panels' configs by what is on screen at once: each tab's (by its Tab panel's id and
+    its index, ``Tab!x[2]``), and those outside every tab (``""``: with an id in no tree), in
+    ``configs``' order."""
+    tab_of = {item.node: item.tab for item in nodes if isinstance(item.node, str)}
+    screens: dict[str, dict[str, Any]] = {}
+    for panel_id, config in configs.items():
+        screens.setdefault(tab_of.get(panel_id, ""), {})[panel_id] = config
+    return screens
+
+
+def _tab_robots(nodes: list[_Node], configs: dict[str, Any]) -> dict[str, str]:
+    """The robot of each tab (``Tab!x[2]`` -> ``/uav1``), as a follower beside a Tab panel maps
+    them: a tab holds that robot's screen, its publishers in that robot's namespace."""
+    robots: dict[str, str] = {}
+    for item in nodes:
+        sibling = item.sibling
+        if not (isinstance(item.node, str) and isinstance(sibling, str)):
+            continue
+        spec = lichtblick_rules()["extension_panels"].get(item.node.partition("!")[0], {})
+        config = configs.get(item.node)
+        if spec.get("sibling") != _TAB or not isinstance(config, dict):
+            continue
+        mapping = config.get("tabs")
+        for entry in mapping if isinstance(mapping, list) else []:
+            if not isinstance(entry, dict):
+                continue
+            tab, robot = entry.get("tab"), entry.get("robot")
+            if isinstance(robot, str) and _is_number(tab) and tab == int(tab):
+                robots.setdefault(f"{sibling}[{int(tab)}]", robot)
+    return robots
+
+
+def _followers(nodes: list[_Node], configs: dict[str, Any], file: str) -> Iterator[Fault]:
+    """An extension panel that acts on the panel beside it (``sibling`` in its rules) has one
+    of that type there; the follower's tabs name tabs of it, each (robot, configuration)
+    once."""
+    extensions = lichtblick_rules()["extension_panels"]
+    for item in nodes:
+        if not isinstance(item.node, str):
+            continue
+        wanted = extensions.get(item.node.partition("!")[0], {}).get("sibling")
+        if wanted is None:
+            continue
+        sibling = item.sibling
+        if not (isinstance(sibling, str) and sibling.partition("!")[0] == wanted):
+            yield _fault(
+                file,
+                item.path,
+                f"no {wanted} panel beside it (the other branch of its split): the panel can "
+                f"switch that one only",
+                "teleop-ui-follower",
+            )
+            continue
+        yield from _follower_tabs(
+            configs.get(item.node), configs.get(sibling), f"configById.{shown(item.node)}", file
+        )
+
+
+def _follower_tabs(config: Any, beside: Any, base: str, file: str) -> Iterator[Fault]:
+    if not isinstance(config, dict) or not isinstance(beside, dict):
+        return  # reported as a tree or config problem
+    tabs = beside.get("tabs")
+    count = len(tabs) if isinstance(tabs, list) else 0
+    mapping = config.get("tabs")
+    first: dict[tuple[str, float], int] = {}
+    for index, entry in enumerate(mapping if isinstance(mapping, list) else []):
+        if not isinstance(entry, dict):
+            continue  # a type problem, reported
+        if not _names_a_tab(entry.get("tab"), count):
+            yield _fault(
+                file,
+                f"{base}.tabs[{index}].tab",
+                f"names no tab of the Tab panel beside it (it has {count})",
+                "teleop-ui-follower",
+            )
+        robot, number = entry.get("robot"), entry.get("configuration")
+        if not isinstance(robot, str) or not _is_number(number):
+            continue
+        if (robot, number) in first:
+            yield _fault(
+                file,
+                f"{base}.tabs[{index}]",
+                f"the robot and configuration of tabs[{first[robot, number]}] again: the "
+                "follower shows one tab per pair",
+                "teleop-ui-follower",
+            )
+        else:
+            first[robot, number] = index
+    default = config.get("defaultTab")
+    if default is not None and not _names_a_tab(default, count):
+        yield _fault(
+            file,
+            f"{base}.defaultTab",
+            f"names no tab of the Tab panel beside it (it has {count})",
+            "teleop-ui-follower",
+        )
+
+
+def _names_a_tab(value: Any, count: int) -> bool:
+    """Whether ``value`` is the index of one of ``count`` tabs (a value of another type is a
+    type problem, reported on its own: taken as naming one here)."""
+    if not _is_number(value):
+        return True
+    return value == int(value) and 0 <= value < count

@@ -29,11 +29,13 @@ them with standard messages: ``/teleop_ui/active_robot`` in (the robot's namespa
 parameters of those names; an empty string clears one: a reader is made for each such topic
 someone writes, at most :data:`MAX_REQUEST_TOPICS`), and ``/teleop_ui/ui_configuration`` out
 (the JSON object a ROS 1 watcher writes to the parameter of that name; ``null`` with no active
-robot). A robot's own values are String topics ``/<ns>/teleop_ui/<characteristic>``, read as
-descriptions are. Watchers announce themselves on ``/teleop_ui/watchers``
-(:mod:`solver.live.rivals`); a watcher's name ends in its participant's GUID, so whether it
-still runs is whether that participant is on the domain. A sample on those ``/teleop_ui``
-topics, the answer's included, wakes the watcher for them alone
+robot). An operator station writes the selection through the same source
+(:meth:`DdsGraph.set_param` on an ``active_*`` key: ``teleop-ui switch``,
+:mod:`solver.live.operator`). A robot's own values are String topics
+``/<ns>/teleop_ui/<characteristic>``, read as descriptions are. Watchers announce themselves
+on ``/teleop_ui/watchers`` (:mod:`solver.live.rivals`); a watcher's name ends in its
+participant's GUID, so whether it still runs is whether that participant is on the domain. A
+sample on those ``/teleop_ui`` topics, the answer's included, wakes the watcher for them alone
 (:meth:`DdsGraph.observe_params`); anything else discovered or written wakes it for the whole
 graph.
 
@@ -365,6 +367,8 @@ class DdsGraph:
         self._answer_value: Any = MISSING
         self._written: str | None = None
         self._announcement: str | None = None
+        # The operator's selection, when this participant writes one (``teleop-ui switch``).
+        self._selection_writers: dict[str, Any] = {}
 
     def _changed(self) -> None:
         callback = self.on_change
@@ -404,11 +408,38 @@ class DdsGraph:
     def cut_off(self, when: float | None) -> None:
         """Nothing to cut: no call on DDS waits."""
 
-    def set_param(self, key: str, value: Any) -> None:  # noqa: ARG002 - one key here
-        self._write(json.dumps(value, sort_keys=True))
+    def set_param(self, key: str, value: Any) -> None:
+        """The answer (``/teleop_ui/ui_configuration``, as JSON), or the operator's selection
+        (``/teleop_ui/active_*``, as text: ``teleop-ui switch``)."""
+        if _selection_key(key):
+            self._select(key, str(value))
+        else:
+            self._write(json.dumps(value, sort_keys=True))
 
-    def delete_param(self, key: str) -> None:  # noqa: ARG002 - one key here
-        self._write("null")
+    def delete_param(self, key: str) -> None:
+        """The answer ``null``; a selection cleared (an empty string, as the convention says)."""
+        if _selection_key(key):
+            self._select(key, "")
+        else:
+            self._write("null")
+
+    def _select(self, key: str, text: str) -> None:
+        """``text`` on the selection topic ``key``, from a writer of this participant's own
+        (reliable, transient-local: a watcher that comes later still reads it while this
+        participant stays), at most :data:`MAX_REQUEST_TOPICS` of them."""
+        from cyclonedds.pub import DataWriter
+        from cyclonedds.topic import Topic
+
+        writer = self._selection_writers.get(key)
+        if writer is None:
+            if len(self._selection_writers) >= MAX_REQUEST_TOPICS:
+                raise InputError.at(
+                    key, f"at most {MAX_REQUEST_TOPICS} selection topics from one participant"
+                )
+            topic = Topic(self.participant, dds_topic(key), self.string_type)
+            writer = DataWriter(self.participant, topic, qos=_latched())
+            self._selection_writers[key] = writer
+        writer.write(self.string_type(text))
 
     def _write(self, text: str) -> None:
         if text != self._written:
@@ -622,6 +653,12 @@ class DdsGraph:
         alive = {endpoint.participant for endpoint in self._endpoints.values()}
         for participant in [p for p in self._nodes if p not in alive]:
             del self._nodes[participant]
+
+
+def _selection_key(key: str) -> bool:
+    """``/teleop_ui/active_<name>``: a topic of the operator's selection, not the answer."""
+    parts = key.strip("/").split("/")
+    return len(parts) == 2 and parts[0] == "teleop_ui" and parts[1].startswith("active_")
 
 
 def _participant_of(watcher: str) -> bytes | None:

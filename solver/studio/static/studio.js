@@ -657,15 +657,32 @@
 
   function livePage(live) {
     const log = document.getElementById("event-log");
+    const status = document.getElementById("switch-status");
     const events = new EventSource(live.dataset.liveEvents);
     let fetching = false;
     let again = false;
+    // A click on a robot or one of its values: the switch as JSON (the form posts it without
+    // this script), the answer said in the status line, the table redrawn by the events.
+    live.addEventListener("submit", (submitted) => {
+      const form = submitted.target;
+      if (!form.matches("form[data-switch]")) {
+        return;
+      }
+      submitted.preventDefault();
+      const button = submitted.submitter;
+      const values = {};
+      if (button && button.name === "value") {
+        const split = button.value.indexOf("=");
+        values[button.value.slice(0, split)] = button.value.slice(split + 1);
+      }
+      switchTo(form.elements.robot.value, values);
+    });
     events.onmessage = (message) => {
       const event = JSON.parse(message.data);
       const item = document.createElement("li");
-      const detail = event.robot ? ` ${event.robot}` : "";
-      const error = event.error ? `: ${event.error}` : "";
-      item.textContent = `#${event.seq} ${event.event}${detail}${error}`;
+      item.dataset.event = event.event;
+      // The studio's own sentence for the event, every value from the graph escaped.
+      item.textContent = `#${event.seq} ${event.summary || event.event}`;
       log.prepend(item);
       while (log.children.length > 100) {
         log.lastElementChild.remove();
@@ -683,6 +700,34 @@
         log.prepend(item);
       }
     };
+
+    async function switchTo(robot, values) {
+      const asked = [robot, ...Object.values(values)].join(" ");
+      status.textContent = `Switching to ${asked}: waiting for the watcher's answer...`;
+      try {
+        const response = await fetch(live.dataset.liveSwitch, {
+          method: "POST",
+          headers: { "content-type": "application/json" },
+          body: JSON.stringify({ robot, values }),
+        });
+        const data = await response.json();
+        if (response.status === 200) {
+          const answer = data.answer;
+          status.textContent =
+            `${asked}: UI configuration ${answer.configuration}` +
+            (answer.default ? " (the default)" : "") +
+            ` (answered by ${answer.watcher})`;
+        } else if (response.status === 202) {
+          status.textContent = `${asked}: selected, but no watcher answered in time`;
+        } else {
+          const faults = (data.faults || []).map((fault) => fault.message);
+          status.textContent = `${asked}: refused: ${faults.join("; ") || data.error}`;
+        }
+      } catch (error) {
+        status.textContent = `${asked}: the studio did not answer (${error})`;
+      }
+      refresh();
+    }
 
     async function refresh() {
       if (fetching) {

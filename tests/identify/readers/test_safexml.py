@@ -205,7 +205,13 @@ def test_identify_refuses_an_attribute_default_in_a_urdf_or_srdf(
     srdf.write_text(attlist + '<robot name="r"><group name="arm"/></robot>\n', encoding="utf-8")
     srdf_option: list[str | Path] = [option, srdf] if option else []
     result = run_cli("identify", urdf, *srdf_option)
-    assert result.returncode == 2, result.stdout
-    hostile = srdf if option else urdf
-    assert result.stderr.startswith(f"{hostile}:2: <!ATTLIST joint>: the document type declares")
     assert "Traceback" not in result.stderr
+    if not option:
+        assert result.returncode == 2, result.stdout
+        assert result.stderr.startswith(f"{urdf}:2: <!ATTLIST joint>: the document type declares")
+        return
+    # A supporting file is refused, not read, with its located warning; the URDF is read alone.
+    assert result.returncode == 0, result.stderr
+    assert f"warning: {srdf}:2: <!ATTLIST joint>: the document type declares" in result.stdout
+    assert "the SRDF is not read; the URDF alone is" in result.stdout
+    assert "structure:      UGV" in result.stdout

@@ -63,12 +63,12 @@ def test_an_srdf_that_disagrees_about_the_arms_lowers_confidence() -> None:
     assert any("the SRDF plans 1 arm(s), the tree shows 2" in e for e in doubted.evidence)
 
 
-def test_a_planar_virtual_joint_makes_a_mobile_base() -> None:
+def test_a_planar_virtual_joint_is_a_planning_convention_not_a_mobile_base() -> None:
+    # MoveIt's setup assistant writes a planar virtual joint for a bolted-down arm too.
     text = SRDF.replace('type="fixed"', 'type="planar"')
-    assert (
-        identify_urdf(builders.manipulator().text(), srdf_text=text).structure
-        == "Mobile Manipulator"
-    )
+    result = identify_urdf(builders.manipulator().text(), srdf_text=text)
+    assert result.structure == "Manipulator"
+    assert any("a virtual joint is a planning convention" in e for e in result.evidence)
 
 
 def test_an_unknown_virtual_joint_type_is_refused() -> None:

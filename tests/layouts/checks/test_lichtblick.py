@@ -336,3 +336,176 @@ def test_faults_show_a_strangers_key_escaped() -> None:
     layout["configById"]["Teleop!p02"]["\x1b[2J"] = 1
     (fault,) = check_lichtblick(layout, topic_types=POINTS)
     assert fault.location.path == "configById.Teleop!p02.\\x1b[2J"
+
+
+# ---- Tab panels and this project's follower panel (issue 38) -------------------------------
+
+FOLLOWER = "teleop-ui.follower!f"
+
+
+def _tabbed(*screens: dict[str, Any], robots: tuple[str, ...] = ()) -> dict[str, Any]:
+    """A layout whose Tab panel holds ``screens`` (each a layout: its configs and tree) of
+    ``robots`` (by default /robot1, /robot2, ...), beside the follower, as the team layout is
+    made; each screen's ids suffixed with its tab."""
+    robots = robots or tuple(f"/robot{index + 1}" for index in range(len(screens)))
+    configs: dict[str, Any] = {}
+    tabs = []
+    for index, screen in enumerate(screens):
+        renamed = {key: f"{key}-{index}" for key in screen["configById"]}
+        configs.update({renamed[k]: copy.deepcopy(v) for k, v in screen["configById"].items()})
+        tabs.append({"title": f"tab {index}", "layout": _renamed(screen["layout"], renamed)})
+    configs["Tab!t"] = {"activeTabIdx": 0, "tabs": tabs}
+    configs[FOLLOWER] = {
+        "answerUrl": None,
+        "answerTopic": "/teleop_ui/ui_configuration",
+        "tabs": [
+            {"robot": robot, "configuration": index, "tab": index}
+            for index, robot in enumerate(robots)
+        ],
+        "defaultTab": None,
+    }
+    return {
+        "configById": configs,
+        "globalVariables": {},
+        "playbackConfig": {"speed": 1},
+        "layout": {"direction": "row", "first": FOLLOWER, "second": "Tab!t"},
+    }
+
+
+def _renamed(node: Any, renamed: dict[str, str]) -> Any:
+    if isinstance(node, str):
+        return renamed[node]
+    return {
+        **node,
+        "first": _renamed(node["first"], renamed),
+        "second": _renamed(node["second"], renamed),
+    }
+
+
+def _moved(layout: dict[str, Any], old: str, new: str) -> dict[str, Any]:
+    """``layout`` with every topic under ``old`` put under ``new`` (another robot's)."""
+    text = json.dumps(layout).replace(f'"{old}/', f'"{new}/').replace(f'"{old}"', f'"{new}"')
+    moved: dict[str, Any] = json.loads(text)
+    return moved
+
+
+def test_a_tab_panel_and_the_follower_beside_it_keep_every_rule() -> None:
+    assert check_lichtblick(_tabbed(_clean(), _moved(_clean(), "/robot1", "/robot2"))) == ()
+
+
+def test_each_tab_is_a_screen_of_its_own_robot() -> None:
+    # The same robot's pads on one topic in two tabs: never on screen together, no fault.
+    assert check_lichtblick(_tabbed(_clean(), _clean(), robots=("/robot1", "/robot1"))) == ()
+    # Each tab's publishers in its own robot's namespace: a pad of /robot2's tab driving
+    # /robot1 is outside it, though /robot1 is another tab's robot.
+    second = _moved(_clean(), "/robot1", "/robot2")
+    second["configById"]["Teleop!p02"]["topic"] = "/robot1/cmd_vel"
+    assert _codes(_tabbed(_clean(), second)) == {"namespace": ["configById.Teleop!p02-1.topic"]}
+    # Two pads on one topic in one tab still are two pads commanding one robot.
+    one = _clean()
+    one["configById"]["Teleop!p04"]["topic"] = "/robot1/cmd_vel"
+    assert _codes(_tabbed(one, _clean(), robots=("/robot1", "/robot1"))) == {
+        "lichtblick-teleop-topic": ["configById.Teleop!p04-0.topic"]
+    }
+
+
+def test_a_tabs_tree_is_checked_as_the_layouts_own_is() -> None:
+    layout = _tabbed(_clean())
+    tab = layout["configById"]["Tab!t"]["tabs"][0]
+    tab["layout"] = {"direction": "row", "first": tab["layout"], "second": "Plot!nope"}
+    codes = _codes(layout)
+    assert codes["lichtblick-tree"] == ["configById.Tab!t.tabs[0].layout.second"]
+    # A panel in no tab and no tree is never shown.
+    layout = _tabbed(_clean())
+    layout["configById"]["Tab!t"]["tabs"][0]["layout"] = "3D!p05-0"
+    assert "configById.Teleop!p02-0" in _codes(layout)["lichtblick-tree"]
+
+
+def test_a_tab_panel_inside_its_own_tab_is_named_and_not_walked_forever() -> None:
+    layout = _tabbed(_clean())
+    tab = layout["configById"]["Tab!t"]["tabs"][0]
+    tab["layout"] = {"direction": "row", "first": tab["layout"], "second": "Tab!t"}
+    (fault,) = (f for f in check_lichtblick(layout) if f.code == "lichtblick-tree")
+    assert (fault.location.path, fault.message) == ("layout", "Tab!t appears twice")
+
+
+@pytest.mark.parametrize(
+    ("config", "code", "where"),
+    [
+        ({"activeTabIdx": 1, "tabs": [{"title": "a"}]}, "lichtblick-config", "activeTabIdx"),
+        ({"activeTabIdx": -1, "tabs": [{"title": "a"}]}, "lichtblick-config", "activeTabIdx"),
+        ({"activeTabIdx": 0.5, "tabs": [{"title": "a"}]}, "lichtblick-config", "activeTabIdx"),
+        ({"activeTabIdx": 0, "tabs": [{"title": 1}]}, "lichtblick-config", "tabs[0].title"),
+        (
+            {"activeTabIdx": 0, "tabs": [{"title": "a", "size": 1}]},
+            "lichtblick-config",
+            "tabs[0].size",
+        ),
+        ({"tabs": [{"title": "a"}]}, "lichtblick-modified", "activeTabIdx"),
+    ],
+)
+def test_a_tab_panel_config_the_app_would_replace_or_complete_is_named(
+    config: dict[str, Any], code: str, where: str
+) -> None:
+    layout = {
+        "configById": {"Tab!t": config},
+        "globalVariables": {},
+        "playbackConfig": {"speed": 1},
+        "layout": "Tab!t",
+    }
+    assert _codes(layout) == {code: [f"configById.Tab!t.{where}"]}
+
+
+def test_the_follower_needs_the_tab_panel_beside_it() -> None:
+    layout = _tabbed(_clean())
+    layout["layout"] = {"direction": "row", "first": FOLLOWER, "second": "3D!p05-0"}
+    layout["configById"]["Tab!t"]["tabs"][0]["layout"] = "3D!p05-0"  # (others now orphans)
+    assert _codes(layout)["teleop-ui-follower"] == ["layout.first"]
+    alone = _tabbed(_clean())
+    alone["layout"] = FOLLOWER
+    assert _codes(alone)["teleop-ui-follower"] == ["layout"]
+
+
+@pytest.mark.parametrize(
+    ("change", "where"),
+    [
+        ({"tabs": [{"robot": "/robot1", "configuration": 1, "tab": 1}]}, "tabs[0].tab"),
+        (
+            {
+                "tabs": [
+                    {"robot": "/robot1", "configuration": 1, "tab": 0},
+                    {"robot": "/robot1", "configuration": 1, "tab": 0},
+                ]
+            },
+            "tabs[1]",
+        ),
+        ({"defaultTab": 3}, "defaultTab"),
+    ],
+)
+def test_the_follower_maps_each_robot_configuration_to_one_tab_that_is_there(
+    change: dict[str, Any], where: str
+) -> None:
+    layout = _tabbed(_clean())
+    layout["configById"][FOLLOWER].update(change)
+    assert _codes(layout) == {"teleop-ui-follower": [f"configById.{FOLLOWER}.{where}"]}
+
+
+@pytest.mark.parametrize(
+    ("key", "value", "code"),
+    [
+        ("answerUrl", 8770, "lichtblick-config"),
+        ("answerTopic", "teleop_ui/ui_configuration", "ros-topic-name"),
+        ("answers", [], "lichtblick-config"),
+    ],
+)
+def test_the_followers_config_is_checked_as_a_panels_is(key: str, value: Any, code: str) -> None:
+    layout = _tabbed(_clean())
+    layout["configById"][FOLLOWER][key] = value
+    assert _codes(layout) == {code: [f"configById.{FOLLOWER}.{key}"]}
+
+
+def test_an_extension_panel_this_project_does_not_ship_is_unknown() -> None:
+    layout = _tabbed(_clean())
+    layout["configById"]["teleop-ui.other!x"] = layout["configById"].pop(FOLLOWER)
+    layout["layout"]["first"] = "teleop-ui.other!x"
+    assert _codes(layout) == {"lichtblick-panel-type": ["configById.teleop-ui.other!x"]}

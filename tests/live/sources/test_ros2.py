@@ -18,58 +18,12 @@ from solver.identify.readers.safexml import MAX_XML_BYTES
 from solver.live.sources.ros2 import DdsGraph, dds_type, ros_name, ros_type
 from solver.live.watcher import Watcher
 from solver.solving.solution import Solution
-from tests.conftest import run_cli
 from tests.live.conftest import Recorder
-from tests.live.fleet import drone_configuration, drone_text, rover_configuration, rover_text
-from tests.live.ros2_graph import EmulatedRobot, Operator, next_domain, write_config
+from tests.live.fleet import drone_configuration, drone_text, rover_configuration
+from tests.live.ros2_graph import Domain, Operator
 from tests.live.roscore import wait_until
 
 TIMEOUT = 60.0
-
-
-class Domain:
-    """A DDS domain of this test's own, on loopback, and the robots started on it."""
-
-    def __init__(self, directory: Path, env: dict[str, str]) -> None:
-        self.id = next_domain()
-        self.directory = directory
-        self.env = env
-        self.robots: list[EmulatedRobot] = []
-
-    def robot(self, gid_size: int = 16) -> EmulatedRobot:
-        self.robots.append(EmulatedRobot(self.id, self.env, gid_size))
-        return self.robots[-1]
-
-    def drone(self, namespace: str, gid_size: int = 16) -> EmulatedRobot:
-        robot = self.robot(gid_size)
-        robot.node(
-            f"{namespace}/camera_driver",
-            publish=[(f"{namespace}/camera/image_raw", "sensor_msgs/msg/Image")],
-        )
-        robot.describe(namespace, drone_text(), self.directory)
-        return robot
-
-    def rover(self, namespace: str, gid_size: int = 16) -> EmulatedRobot:
-        robot = self.robot(gid_size)
-        robot.node(
-            f"{namespace}/base_driver",
-            subscribe=[(f"{namespace}/cmd_vel", "geometry_msgs/msg/Twist")],
-            publish=[(f"{namespace}/scan", "sensor_msgs/msg/LaserScan")],
-        )
-        robot.describe(namespace, rover_text(), self.directory)
-        return robot
-
-
-@pytest.fixture
-def domain(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Domain]:
-    monkeypatch.setenv("CYCLONEDDS_URI", write_config(tmp_path))
-    monkeypatch.setenv("ROS_DOMAIN_ID", "999")  # never used: every test names its domain
-    import os
-
-    found = Domain(tmp_path, dict(os.environ))
-    yield found
-    for robot in found.robots:
-        robot.kill()
 
 
 @pytest.fixture
@@ -335,62 +289,6 @@ def test_another_watcher_on_the_same_domain_sees_the_same_robots_and_agrees(
         operator.close()
 
 
-def test_watch_ros2_once_prints_the_graph_as_json_lines(domain: Domain, solution: Solution) -> None:
-    domain.drone("/uav1", gid_size=24)
-    domain.rover("/ugv1")
-    result = run_cli("watch", "--ros2", "--domain", str(domain.id), "--team", "case3", "--once")
-    assert result.returncode == 0, result.stderr
-    events = [json.loads(line) for line in result.stdout.splitlines()]
-    assert [e["event"] for e in events] == ["robot_added", "robot_added", "synced"]
-    assert events[-1] == {
-        "seq": 3,
-        "event": "synced",
-        "master": f"ros2://domain/{domain.id}",
-        "robots": ["/uav1", "/ugv1"],
-    }
-    assert events[0]["combinations"][0]["configuration"] == drone_configuration(solution)
-    assert events[1]["combinations"][0]["configuration"] == rover_configuration(solution)
-
-
-def test_watch_ros2_refuses_a_master_or_a_bad_domain_with_exit_2() -> None:
-    bad = run_cli("watch", "--ros2", "--domain", "300", "--team", "case3", "--once")
-    assert (bad.returncode, bad.stderr) == (
-        2,
-        "<arguments>: DDS domain id must be 0..232, got '300'\n",
-    )
-    both = run_cli("watch", "--ros2", "--master", "http://127.0.0.1:1/", "--team", "case3")
-    assert both.returncode == 2
-    assert both.stderr == "<arguments>: --ros2 reads a DDS domain: give --domain N, not --master\n"
-
-
-def test_assign_ros2_answers_for_one_robot_and_refuses_an_unknown_one(
-    domain: Domain, solution: Solution
-) -> None:
-    domain.drone("/uav1")
-    domain.rover("/ugv1", gid_size=24)
-    result = run_cli(
-        "assign",
-        "--ros2",
-        "--domain",
-        str(domain.id),
-        "--team",
-        "case3",
-        "--robot",
-        "/ugv1",
-        "-f",
-        "json",
-    )
-    assert result.returncode == 0, result.stderr
-    data = json.loads(result.stdout)
-    assert (data["robot"], data["configuration"]) == ("/ugv1", rover_configuration(solution))
-    unknown = run_cli(
-        "assign", "--ros2", "--domain", str(domain.id), "--team", "case3", "--robot", "/uav2"
-    )
-    assert unknown.returncode == 2
-    assert unknown.stderr.startswith(f"<arguments>: no robot /uav2 on ros2://domain/{domain.id}")
-    assert "robots there: /uav1, /ugv1" in unknown.stderr
-
-
 def test_hostile_answers_and_a_10_mb_selection_end_in_notes_not_a_crash(
     domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution
 ) -> None:
@@ -624,51 +522,3 @@ def test_two_watchers_with_different_teams_report_each_other_and_one_answer_stan
         assert taken["team"] == "Other live team"
     finally:
         operator.close()
-
-
-def test_watch_ros2_wait_waits_for_the_first_robot(domain: Domain) -> None:
-    """Issue 27: `--wait` on DDS waits for a robot (a domain is never down)."""
-    import os
-    import signal
-    import subprocess
-    import sys
-
-    from tests.conftest import ROOT
-
-    process = subprocess.Popen(
-        [
-            sys.executable,
-            "-m",
-            "solver",
-            "watch",
-            "--ros2",
-            "--domain",
-            str(domain.id),
-            "--team",
-            "case3",
-            "--wait",
-            "--once",
-        ],
-        cwd=ROOT,
-        env=domain.env,
-        stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
-        text=True,
-        start_new_session=True,
-    )
-    try:
-        assert process.stderr is not None
-        waiting = process.stderr.readline()
-        assert waiting == f"waiting for a robot on ros2://domain/{domain.id}\n"
-        domain.drone("/uav1")
-        out, err = process.communicate(timeout=TIMEOUT)
-    finally:
-        if process.poll() is None:
-            os.killpg(process.pid, signal.SIGKILL)
-        process.wait(timeout=TIMEOUT)
-    assert (process.returncode, err) == (0, "")
-    events = [json.loads(line) for line in out.splitlines()]
-    assert [(e["event"], e.get("robot")) for e in events] == [
-        ("robot_added", "/uav1"),
-        ("synced", None),
-    ]

@@ -1,13 +1,15 @@
-"""`teleop-ui watch` and `teleop-ui assign --master` as a user runs them, against a real roscore."""
+"""``teleop-ui watch`` as a user runs it: against a real roscore (``--master``), and on a ROS 2
+graph of real Cyclone DDS participants on loopback (``--ros2``).
+"""
 
 from __future__ import annotations
 
 import json
 import os
 import signal
+import socket
 import subprocess
 import sys
-import threading
 from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any
@@ -19,68 +21,9 @@ from solver.live.sources.ros1.master import MasterClient
 from solver.solving.solution import Solution
 from tests.conftest import ROOT, run_cli
 from tests.live.fleet import drone_configuration, put_drone, put_rover, rover_configuration
+from tests.live.ros2_graph import Domain
 from tests.live.roscore import Roscore, TestNode, free_port, roscore_available, wait_until
-
-TIMEOUT = 60.0
-
-
-class WatchProcess:
-    """``python -m solver watch ...`` in a subprocess, its output lines collected as they come."""
-
-    def __init__(self, *args: str, env: dict[str, str] | None = None) -> None:
-        self.process = subprocess.Popen(
-            [sys.executable, "-m", "solver", "watch", *args],
-            cwd=ROOT,
-            text=True,
-            stdout=subprocess.PIPE,
-            stderr=subprocess.PIPE,
-            env=env,
-        )
-        self.stdout: list[str] = []
-        self.stderr: list[str] = []
-        self.readers = [
-            threading.Thread(target=self._read, args=(stream, lines), daemon=True)
-            for stream, lines in (
-                (self.process.stdout, self.stdout),
-                (self.process.stderr, self.stderr),
-            )
-        ]
-        for reader in self.readers:
-            reader.start()
-
-    @staticmethod
-    def _read(stream: Any, lines: list[str]) -> None:
-        for line in stream:
-            lines.append(line)
-
-    def events(self) -> list[dict[str, Any]]:
-        return [json.loads(line) for line in list(self.stdout)]
-
-    def wait_for(self, predicate: Callable[[dict[str, Any]], bool], what: str) -> dict[str, Any]:
-        def found() -> dict[str, Any] | None:
-            if self.process.poll() is not None and not any(map(predicate, self.events())):
-                raise AssertionError(
-                    f"watch exited ({self.process.returncode}) before {what}:"
-                    f" {''.join(self.stderr)}"
-                )
-            return next((e for e in self.events() if predicate(e)), None)
-
-        return wait_until(found, TIMEOUT, what)
-
-    def interrupt(self) -> int:
-        self.process.send_signal(signal.SIGINT)
-        return self.wait()
-
-    def wait(self) -> int:
-        code = self.process.wait(timeout=TIMEOUT)
-        for reader in self.readers:
-            reader.join(timeout=TIMEOUT)
-        return code
-
-    def kill(self) -> None:
-        if self.process.poll() is None:
-            self.process.kill()
-            self.process.wait(timeout=TIMEOUT)
+from tests.live.watching import TIMEOUT, WatchProcess
 
 
 @pytest.fixture
@@ -94,6 +37,9 @@ def watch_process() -> Iterator[Callable[..., WatchProcess]]:
     yield start
     for process in started:
         process.kill()
+
+
+# ---- a ROS master ----------------------------------------------------------------------------
 
 
 def test_once_prints_one_snapshot_as_json_lines_identical_from_run_to_run(
@@ -311,131 +257,6 @@ def test_a_master_killed_under_a_running_watch_is_lost_and_back(
     node.close()
 
 
-def test_assign_reads_the_robot_from_the_master(
-    master: Roscore, node: TestNode, solution: Solution
-) -> None:
-    put_drone(node, "/uav1")
-    result = run_cli(
-        "assign",
-        "--master",
-        master.uri,
-        "--team",
-        "case3",
-        "--robot",
-        "/uav1",
-        "motion_control=Flight",
-        "--format",
-        "json",
-    )
-    assert result.returncode == 0, result.stderr
-    data = json.loads(result.stdout)
-    assert data["robot"] == "/uav1"
-    assert data["combination"] == {
-        "kinematic_type": "UAV",
-        "motion_control": "Flight",
-        "sensor_type": "2D Camera",
-        "sensor_count": "1",
-    }
-    assert data["configuration"] == drone_configuration(solution)
-    assert data["notes"] == []
-    text = run_cli(
-        "assign",
-        "--master",
-        master.uri,
-        "--team",
-        "case3",
-        "--robot",
-        "uav1",
-        "motion_control=Waypoint",
-    )
-    assert text.returncode == 0, text.stderr
-    assert text.stdout.startswith("robot /uav1\nUI configuration ")
-    assert text.stdout.endswith(
-        "  note: /uav1 does not offer motion_control 'Waypoint' (it "
-        "has Flight); using it as asked\n"
-    )
-
-
-def test_assign_reads_with_the_profile_given(
-    master: Roscore, node: TestNode, tmp_path: Path
-) -> None:
-    shipped = (ROOT / "rules" / "identification.yaml").read_text(encoding="utf-8")
-    assert shipped.count("kinematic_types: [UAV]") == 1
-    profile = tmp_path / "flying-is-driving.yaml"
-    profile.write_text(
-        shipped.replace("kinematic_types: [UAV]", "kinematic_types: [UGV]"), encoding="utf-8"
-    )
-    put_drone(node, "/uav1")
-    result = run_cli(
-        "assign",
-        "--master",
-        master.uri,
-        "--team",
-        "case3",
-        "--robot",
-        "/uav1",
-        "--profile",
-        profile,
-        "-f",
-        "json",
-    )
-    assert result.returncode == 0, result.stderr
-    assert json.loads(result.stdout)["combination"]["kinematic_type"] == "UGV"
-    offline = run_cli("assign", "--team", "case3", "--profile", profile, "kinematic_type=UAV")
-    assert (offline.returncode, offline.stderr) == (
-        2,
-        "<arguments>: --profile needs --master URL\n",
-    )
-
-
-def test_assign_without_robot_answers_the_active_selection(
-    master: Roscore, node: TestNode, solution: Solution
-) -> None:
-    put_rover(node, "/ugv1")
-    node.set_param("/teleop_ui/active_robot", "/ugv1")
-    node.set_param("/teleop_ui/active_motion_control", "Driving")
-    result = run_cli("assign", "--master", master.uri, "--team", "case3", "-f", "json")
-    assert result.returncode == 0, result.stderr
-    data = json.loads(result.stdout)
-    assert (data["robot"], data["configuration"]) == ("/ugv1", rover_configuration(solution))
-    # assign only reads: nothing is written back.
-    assert node.get_param("/teleop_ui/ui_configuration") is MISSING
-
-
-def test_assign_errors_on_the_master_exit_2(master: Roscore, node: TestNode) -> None:
-    put_drone(node, "/uav1")
-    node.set_param("/broken/robot_description", "<robot name='b'><link name='a'></robot>")
-    unknown = run_cli("assign", "--master", master.uri, "--team", "case3", "--robot", "/uav2")
-    assert unknown.returncode == 2
-    assert unknown.stderr == (
-        f"<arguments>: no robot /uav2 on {master.uri} (no "
-        "/uav2/robot_description) (did you mean '/uav1'?); robots "
-        "there: /broken, /uav1\n"
-    )
-    broken = run_cli("assign", "--master", master.uri, "--team", "case3", "--robot", "/broken")
-    assert broken.returncode == 2
-    assert broken.stderr.startswith(
-        f"{master.uri}: robot /broken cannot be identified: /broken/robot_description:1:"
-    )
-    nobody = run_cli("assign", "--master", master.uri, "--team", "case3")
-    assert nobody.returncode == 2
-    assert "no --robot given and no /teleop_ui/active_robot set" in nobody.stderr
-    bad_name = run_cli(
-        "assign", "--master", master.uri, "--team", "case3", "--robot", "/uav1", "colour=red"
-    )
-    assert bad_name.returncode == 2
-    assert "unknown characteristic 'colour'" in bad_name.stderr
-
-
-def test_assign_without_master_keeps_its_old_rules() -> None:
-    nothing = run_cli("assign", "--team", "case3")
-    assert nothing.returncode == 2
-    assert "give at least one NAME=VALUE (or --master URL)" in nothing.stderr
-    robot = run_cli("assign", "--team", "case3", "--robot", "/uav1", "kinematic_type=UAV")
-    assert robot.returncode == 2
-    assert "--robot needs --master URL" in robot.stderr
-
-
 def test_once_only_looks_the_master_keeps_no_answer_of_it(
     master: Roscore, node: TestNode, solution: Solution
 ) -> None:
@@ -464,3 +285,127 @@ def test_a_watch_that_stops_takes_its_answer_back(
     assert watch.wait() == 0
     # Left there, it would name a node that no longer runs: an operator station would show it.
     assert node.get_param("/teleop_ui/ui_configuration") is MISSING
+
+
+# ---- a ROS 2 graph ---------------------------------------------------------------------------
+
+
+def test_watch_ros2_once_prints_the_graph_as_json_lines(domain: Domain, solution: Solution) -> None:
+    domain.drone("/uav1", gid_size=24)
+    domain.rover("/ugv1")
+    result = run_cli("watch", "--ros2", "--domain", str(domain.id), "--team", "case3", "--once")
+    assert result.returncode == 0, result.stderr
+    events = [json.loads(line) for line in result.stdout.splitlines()]
+    assert [e["event"] for e in events] == ["robot_added", "robot_added", "synced"]
+    assert events[-1] == {
+        "seq": 3,
+        "event": "synced",
+        "master": f"ros2://domain/{domain.id}",
+        "robots": ["/uav1", "/ugv1"],
+    }
+    assert events[0]["combinations"][0]["configuration"] == drone_configuration(solution)
+    assert events[1]["combinations"][0]["configuration"] == rover_configuration(solution)
+
+
+def test_watch_ros2_refuses_a_master_or_a_bad_domain_with_exit_2() -> None:
+    bad = run_cli("watch", "--ros2", "--domain", "300", "--team", "case3", "--once")
+    assert (bad.returncode, bad.stderr) == (
+        2,
+        "<arguments>: DDS domain id must be 0..232, got '300'\n",
+    )
+    both = run_cli("watch", "--ros2", "--master", "http://127.0.0.1:1/", "--team", "case3")
+    assert both.returncode == 2
+    assert both.stderr == "<arguments>: --ros2 reads a DDS domain: give --domain N, not --master\n"
+
+
+def test_watch_ros2_wait_waits_for_the_first_robot(domain: Domain) -> None:
+    """Issue 27: `--wait` on DDS waits for a robot (a domain is never down)."""
+    process = subprocess.Popen(
+        [
+            sys.executable,
+            "-m",
+            "solver",
+            "watch",
+            "--ros2",
+            "--domain",
+            str(domain.id),
+            "--team",
+            "case3",
+            "--wait",
+            "--once",
+        ],
+        cwd=ROOT,
+        env=domain.env,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        start_new_session=True,
+    )
+    try:
+        assert process.stderr is not None
+        waiting = process.stderr.readline()
+        assert waiting == f"waiting for a robot on ros2://domain/{domain.id}\n"
+        domain.drone("/uav1")
+        out, err = process.communicate(timeout=TIMEOUT)
+    finally:
+        if process.poll() is None:
+            os.killpg(process.pid, signal.SIGKILL)
+        process.wait(timeout=TIMEOUT)
+    assert (process.returncode, err) == (0, "")
+    events = [json.loads(line) for line in out.splitlines()]
+    assert [(e["event"], e.get("robot")) for e in events] == [
+        ("robot_added", "/uav1"),
+        ("synced", None),
+    ]
+
+
+# ---- --serve and --viewer-origin (issue 38; the server itself: tests/live/test_server.py) ----
+
+
+@pytest.mark.parametrize(
+    ("options", "message"),
+    [
+        (["--serve", "0"], "--serve: needs --layouts DIR: the folder it serves\n"),
+        (
+            ["--serve", "0", "--layouts", "LAYOUTS", "--once"],
+            "--serve: a snapshot (--once) ends at once: nothing to serve\n",
+        ),
+        (
+            ["--viewer-origin", "http://127.0.0.1:8080"],
+            "--viewer-origin: only with --serve: who may read what it serves\n",
+        ),
+        (
+            ["--serve", "0.0.0.0:8770", "--layouts", "LAYOUTS"],
+            "--serve: '0.0.0.0' is not a loopback address: the server has no token and serves "
+            "this machine only (127.0.0.1, ::1 or localhost)\n",
+        ),
+        (
+            ["--serve", "0", "--layouts", "LAYOUTS", "--viewer-origin", "*"],
+            "--viewer-origin: expected an origin such as http://127.0.0.1:8080 (scheme, host "
+            "and port only), got '*'\n",
+        ),
+    ],
+)
+def test_serving_options_are_checked_before_the_graph_is_read(
+    tmp_path: Path, options: list[str], message: str
+) -> None:
+    layouts = str(tmp_path / "layouts")
+    uri = f"http://127.0.0.1:{free_port()}/"  # nothing there: the graph is never reached
+    args = [layouts if option == "LAYOUTS" else option for option in options]
+    result = run_cli("watch", "--master", uri, "--team", "case3", *args)
+    assert (result.returncode, result.stdout, result.stderr) == (2, "", message)
+    assert not (tmp_path / "layouts").exists()
+
+
+def test_a_serve_port_already_taken_is_exit_2(tmp_path: Path) -> None:
+    with socket.socket() as taken:
+        taken.bind(("127.0.0.1", 0))
+        taken.listen()
+        port = taken.getsockname()[1]
+        result = run_cli(
+            "watch", "--master", f"http://127.0.0.1:{free_port()}/", "--team", "case3",
+            "--layouts", tmp_path / "layouts", "--serve", f"127.0.0.1:{port}",
+        )  # fmt: skip
+    assert result.returncode == 2
+    assert result.stderr.startswith(f"--serve: cannot listen on 127.0.0.1:{port}: ")
+    assert "Traceback" not in result.stderr

@@ -1,4 +1,5 @@
-"""Progress: a spinner on a terminal for long work only, never on a pipe or in JSON."""
+"""Progress (:mod:`solver.cli._progress`): a spinner on a terminal for long work only, never on a
+pipe or in JSON."""
 
 from __future__ import annotations
 

@@ -6,6 +6,8 @@ import json
 from collections.abc import Callable
 from pathlib import Path
 
+import pytest
+
 from solver.check import FORMATS, check_ids
 from solver.cli import check as cli_check
 from tests.conftest import ROOT, TEAMS, run_cli
@@ -124,3 +126,11 @@ def test_output_is_byte_identical_on_a_second_run() -> None:
 
 def test_the_command_offers_exactly_the_formats_the_renderer_knows() -> None:
     assert cli_check.FORMATS == FORMATS
+
+
+@pytest.mark.parametrize("given", ["0", "-1", "nan", "soon"])
+def test_a_time_limit_that_is_not_a_positive_number_is_a_usage_error(given: str) -> None:
+    result = run_cli("check", "--time-limit", given, "rules/paper.yaml")
+    assert result.returncode == 2
+    assert "--time-limit" in result.stderr
+    assert result.stdout == ""

@@ -1,7 +1,8 @@
-"""Output a terminal, a log or an editor trusts: a name from a stranger's file never starts a
-line of its own, never reaches the terminal as an invisible or controlling character, and a
-long value is echoed cut short with a mark; every format we write reads back, with its own
-reader, as the names written; an output stream that closes or fills ends the command cleanly.
+"""Output a terminal, a log or an editor trusts (:mod:`solver.cli._terminal`): a name from a
+stranger's file never starts a line of its own, never reaches the terminal as an invisible or
+controlling character, and a long value is echoed cut short with a mark; every format we write
+reads back, with its own reader, as the names written. (An output stream that closes or fills:
+tests/cli/test_cli.py.)
 """
 
 from __future__ import annotations
@@ -9,16 +10,12 @@ from __future__ import annotations
 import csv
 import io
 import json
-import subprocess
-import sys
 from pathlib import Path
-from typing import Any
 
 import pytest
 import yaml
 
 from solver.cli import main
-from tests.conftest import ROOT, TEAMS
 
 # What a forged line would start with, and characters that must never reach an output raw:
 # controls, a C1 control, line and paragraph separators, bidi controls, the soft hyphen, a
@@ -246,92 +243,6 @@ def test_the_team_file_fleet_writes_reads_back_with_its_comments_on_their_lines(
     team = yaml.safe_load(text)
     assert list(team["team"]) == ["UAV"]
     assert "  UAV:   # quad #1\\x85x, uav\\nUGV: {}, uav\\u2028# x\n" in text
-
-
-# ---- output streams that close or fill: real processes ------------------------------------
-
-COMMANDS = [
-    ["solve", "case3", "--list"],
-    ["robots", str(TEAMS / "search-and-rescue.yaml")],
-    ["check", str(ROOT / "rules" / "paper.yaml")],
-    ["export", "case1", "--format", "uvl"],
-    ["identify", str(ROOT / "examples" / "diff_drive_lidar.urdf")],
-]
-
-
-def _solver(*args: str, stdout: Any, stderr: Any) -> subprocess.CompletedProcess[bytes]:
-    return subprocess.run(
-        [sys.executable, "-m", "solver", *args],
-        cwd=ROOT,
-        stdout=stdout,
-        stderr=stderr,
-        check=False,
-        timeout=600,
-    )
-
-
-@pytest.mark.parametrize("args", COMMANDS, ids=[c[0] for c in COMMANDS])
-def test_a_closed_standard_output_ends_with_one_line_and_status_2(args: list[str]) -> None:
-    script = 'exec "$@" >&-'
-    result = subprocess.run(
-        ["sh", "-c", script, "sh", sys.executable, "-m", "solver", *args],
-        cwd=ROOT,
-        capture_output=False,
-        stderr=subprocess.PIPE,
-        check=False,
-        timeout=600,
-    )
-    assert result.returncode == 2
-    assert result.stderr.decode() == (
-        "teleop-ui: cannot write to standard output: Bad file descriptor\n"
-    )
-
-
-@pytest.mark.parametrize("args", COMMANDS, ids=[c[0] for c in COMMANDS])
-def test_a_full_standard_output_ends_with_one_line_and_status_2(args: list[str]) -> None:
-    with open("/dev/full", "wb") as full:
-        result = _solver(*args, stdout=full, stderr=subprocess.PIPE)
-    assert result.returncode == 2
-    assert result.stderr.decode() == (
-        "teleop-ui: cannot write to standard output: No space left on device\n"
-    )
-
-
-@pytest.mark.parametrize("args", COMMANDS[:2], ids=[c[0] for c in COMMANDS[:2]])
-def test_a_pipe_closed_by_its_reader_ends_quietly(args: list[str]) -> None:
-    # The reader takes one line and goes (| head -1); the command has far more to write than
-    # a pipe holds, so its next write finds the pipe closed.
-    process = subprocess.Popen(
-        [sys.executable, "-m", "solver", *args],
-        cwd=ROOT,
-        stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
-    )
-    assert process.stdout is not None
-    assert process.stdout.readline()
-    process.stdout.close()
-    _, err = process.communicate(timeout=600)
-    assert process.returncode == 0
-    assert err == b""
-
-
-def test_an_error_with_standard_error_closed_still_exits_2() -> None:
-    result = subprocess.run(
-        ["sh", "-c", 'exec "$@" 2>&-', "sh", sys.executable, "-m", "solver", "solve", "nothing"],
-        cwd=ROOT,
-        stdout=subprocess.PIPE,
-        check=False,
-        timeout=600,
-    )
-    assert result.returncode == 2
-    assert result.stdout == b""
-
-
-def test_an_error_with_standard_error_full_still_exits_2() -> None:
-    with open("/dev/full", "wb") as full:
-        result = _solver("solve", "nothing", stdout=subprocess.PIPE, stderr=full)
-    assert result.returncode == 2
-    assert result.stdout == b""
 
 
 # ---- letters drawn as nothing (issue 36.14a) ---------------------------------------------------

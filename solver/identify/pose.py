@@ -1,0 +1,125 @@
+"""Where each part of a robot is at rest: every link's place and every joint's axis in the root's
+frame.
+
+A joint's ``<origin>`` places its child on its parent (``xyz``, then turned by ``rpy``), and its
+``<axis>`` is written in the child's frame. Walking the tree from the root with every joint at
+zero gives each link's place and turn in one frame, the frame a description is drawn in
+(ROS: x forward, y left, z up). The body's steps ask two questions of it: which way a joint
+turns (a snake's joints alternate their axes; a parallel gripper's jaws turn about one line) and
+where a chain ends (a leg's foot is below its hip; a finger points away from the palm).
+
+:class:`Poses` works them out once per description, in one pass over the joints (linear in
+their number, iterative: a hostile depth costs no recursion).
+
+Not here: what the answers mean (:mod:`solver.identify.limbs`, :mod:`solver.identify.hands`,
+:mod:`solver.identify.actuation`).
+"""
+
+from __future__ import annotations
+
+import math
+
+from solver.identify.readers.urdf import Joint, Urdf
+
+__all__ = ["Poses", "Vector", "distance", "local_axis", "parallel", "perpendicular"]
+
+Vector = tuple[float, float, float]
+_Matrix = tuple[Vector, Vector, Vector]
+_IDENTITY: _Matrix = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))
+# Axes closer than this (|cos| of the angle between them) count as parallel; below the second,
+# as perpendicular.
+_PARALLEL = 0.98
+_PERPENDICULAR = 0.1
+
+
+def _rotation(rpy: Vector) -> _Matrix:
+    """URDF's fixed-axis roll, pitch, yaw: R = Rz(yaw) Ry(pitch) Rx(roll)."""
+    roll, pitch, yaw = rpy
+    cr, sr = math.cos(roll), math.sin(roll)
+    cp, sp = math.cos(pitch), math.sin(pitch)
+    cy, sy = math.cos(yaw), math.sin(yaw)
+    return (
+        (cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr),
+        (sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr),
+        (-sp, cp * sr, cp * cr),
+    )
+
+
+def _turn(matrix: _Matrix, vector: Vector) -> Vector:
+    x, y, z = vector
+    return (
+        matrix[0][0] * x + matrix[0][1] * y + matrix[0][2] * z,
+        matrix[1][0] * x + matrix[1][1] * y + matrix[1][2] * z,
+        matrix[2][0] * x + matrix[2][1] * y + matrix[2][2] * z,
+    )
+
+
+def _compose(first: _Matrix, second: _Matrix) -> _Matrix:
+    columns = [_turn(first, (second[0][c], second[1][c], second[2][c])) for c in range(3)]
+    return (
+        (columns[0][0], columns[1][0], columns[2][0]),
+        (columns[0][1], columns[1][1], columns[2][1]),
+        (columns[0][2], columns[1][2], columns[2][2]),
+    )
+
+
+def _unit(vector: Vector) -> Vector:
+    size = math.sqrt(sum(v * v for v in vector))
+    return (0.0, 0.0, 0.0) if size == 0 else (vector[0] / size, vector[1] / size, vector[2] / size)
+
+
+def _cosine(one: Vector, other: Vector) -> float:
+    a, b = _unit(one), _unit(other)
+    return abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2])
+
+
+def parallel(one: Vector, other: Vector) -> bool:
+    """The two axes lie along one line (either way round)."""
+    return _cosine(one, other) >= _PARALLEL
+
+
+def perpendicular(one: Vector, other: Vector) -> bool:
+    """The two axes are square to each other."""
+    return _cosine(one, other) <= _PERPENDICULAR
+
+
+def distance(one: Vector, other: Vector) -> float:
+    return math.sqrt(sum((a - b) ** 2 for a, b in zip(one, other, strict=True)))
+
+
+class Poses:
+    """Each link's place and turn in the root's frame, every joint at rest (zero)."""
+
+    def __init__(self, urdf: Urdf) -> None:
+        self.urdf = urdf
+        self._frames: dict[str, tuple[_Matrix, Vector]] = {urdf.root: (_IDENTITY, (0.0, 0.0, 0.0))}
+        stack = [urdf.root]
+        while stack:
+            link = stack.pop()
+            turn, place = self._frames[link]
+            for joint in urdf.children(link):
+                if joint.child in self._frames:
+                    continue
+                offset = _turn(turn, joint.origin)
+                child_place = (place[0] + offset[0], place[1] + offset[1], place[2] + offset[2])
+                self._frames[joint.child] = (_compose(turn, _rotation(joint.rpy)), child_place)
+                stack.append(joint.child)
+
+    def place(self, link: str) -> Vector:
+        """Where ``link``'s frame is, in the root's frame (the root's place for a link it lacks)."""
+        return self._frames.get(link, (_IDENTITY, (0.0, 0.0, 0.0)))[1]
+
+    def axis(self, joint: Joint) -> Vector:
+        """The joint's axis, written in the root's frame."""
+        turn = self._frames.get(joint.child, (_IDENTITY, (0.0, 0.0, 0.0)))[0]
+        return _unit(_turn(turn, joint.axis))
+
+    def local_axis(self, joint: Joint) -> Vector:
+        """The joint's axis written in its parent link's frame (turned by its ``rpy``)."""
+        return local_axis(joint)
+
+
+def local_axis(joint: Joint) -> Vector:
+    """The joint's axis written in its parent link's frame (turned by its ``rpy``): what two
+    joints on one link are compared by, with no walk of the tree."""
+    return _unit(_turn(_rotation(joint.rpy), joint.axis))

@@ -1,0 +1,55 @@
+"""Where each part is at rest: links placed and joints' axes turned into the root's frame."""
+
+from __future__ import annotations
+
+import pytest
+
+from solver.identify.pose import Poses, distance, parallel, perpendicular
+from solver.identify.readers.urdf import parse_urdf
+from tests.identify import builders
+from tests.identify.builders import RobotText
+
+
+def poses_of(robot: RobotText) -> Poses:
+    urdf = parse_urdf(robot.text(), strict=False)
+    return Poses(urdf)
+
+
+def test_places_add_up_along_the_chain() -> None:
+    poses = poses_of(builders.snake(3))
+    assert poses.place("m3") == pytest.approx((0.3, 0.0, 0.0))
+
+
+def test_an_axis_is_turned_by_every_turn_above_it() -> None:
+    robot = RobotText("turned", root="a")
+    # Turned 90 degrees about z, a joint about x turns about y in the root's frame.
+    link = builders.placed(robot, "yaw", "fixed", "a", "b", rpy="0 0 1.5707963267948966")
+    builders.placed(robot, "j", "revolute", link, "c", axis="1 0 0")
+    urdf = parse_urdf(robot.text(), strict=False)
+    joint = urdf.joint("j")
+    assert joint is not None
+    assert Poses(urdf).axis(joint) == pytest.approx((0.0, 1.0, 0.0), abs=1e-9)
+    assert Poses(urdf).local_axis(joint) == pytest.approx((1.0, 0.0, 0.0))
+
+
+def test_roll_pitch_yaw_is_urdfs_fixed_axis_order() -> None:
+    # Roll 90 then yaw 90 (about the fixed axes): x stays along the yawed x, z goes to x.
+    robot = RobotText("rpy", root="a")
+    builders.placed(robot, "j", "revolute", "a", "b", rpy="1.5707963267948966 0 1.5707963267948966")
+    urdf = parse_urdf(robot.text(), strict=False)
+    joint = urdf.joint("j")
+    assert joint is not None
+    assert Poses(urdf).axis(joint) == pytest.approx((1.0, 0.0, 0.0), abs=1e-9)
+
+
+def test_axes_are_told_parallel_or_square() -> None:
+    assert parallel((0, 0, 1), (0, 0, -2))
+    assert perpendicular((0, 0, 1), (1, 0, 0))
+    assert not parallel((1, 0, 0), (1, 1, 0))
+    assert not perpendicular((1, 0, 0), (1, 1, 0))
+    assert distance((0, 0, 0), (3, 4, 0)) == 5
+
+
+def test_a_link_no_joint_reaches_sits_at_the_root() -> None:
+    poses = poses_of(builders.snake(2))
+    assert poses.place("nowhere") == (0.0, 0.0, 0.0)

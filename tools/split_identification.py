@@ -1,0 +1,181 @@
+"""Split the labelled robots into a development part and a held-out part, by a fixed seed.
+
+Usage::
+
+    python tools/split_identification.py            # writes tools/identification_split.csv
+    python tools/split_identification.py --check    # exit 1 when the file is not what it makes
+
+Made once, before any identification rule of issue 41 was changed, and kept: rules are tuned on
+the development part only, and the held-out part is measured, never read for tuning.
+
+How it is made (the same every run, from the two ``truth.csv`` files and the seed alone):
+
+1. Every row of ``../shared/corpus/truth.csv`` and ``tools/identification_set/truth.csv`` is a
+   robot. Rows are put in *groups* that must not be split: one source (the repository or
+   package before its commit or version, as ``tools/measure_identification.py`` names it) and
+   one family. Variants of one robot (a TurtleBot3 burger and waffle, Husky with and without
+   its arm) share both, so no variant of a development robot is held out: a held-out robot is
+   not a near copy of one tuned on.
+2. Per family, the groups are shuffled with ``random.Random(f"{SEED}:{family}")`` (after sorting
+   them by name, so the order of the files does not matter), then each group goes to the part
+   that holds fewer rows *with files here* of that family so far, then fewer rows in all (ties:
+   held-out). That keeps both parts alike per family and at least half of the measurable rows
+   held out.
+3. Rows whose files are absent here (the identification set's rows described but not copied,
+   see its README) are split the same way: when their files are rebuilt they are measured in
+   the part written here.
+
+Rows added after the split (``tools/generalization_set``: families and repositories no set had
+used, labelled before any rule was changed) are split by the same method on their own (so the
+first split is not reshuffled); a family of one group there is held out whole.
+
+The file written, ``tools/identification_split.csv``, has the seed and this method in its
+leading ``#`` lines, then one row per robot: ``set``, ``robot``, ``family``, ``group``,
+``files_here`` and ``part`` (``development`` or ``held-out``).
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import io
+import random
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+SEED = 41
+SPLIT = ROOT / "tools" / "identification_split.csv"
+OWN_SET = ROOT / "tools" / "identification_set"
+ADDED_SET = ROOT / "tools" / "generalization_set"
+DEVELOPMENT = "development"
+HELD_OUT = "held-out"
+FAMILY_OF_LABEL = {
+    "ugv": "mobile base",
+    "uav": "aerial vehicle",
+    "manipulator": "arm",
+    "mobile manipulator": "mobile manipulator",
+    "torso": "torso",
+    "humanoid": "humanoid",
+    "quadruped": "quadruped",
+    "biped/lower-body": "biped",
+    "hand": "hand",
+}
+
+
+def shared_folder() -> Path:
+    for base in (ROOT.parent, ROOT.parent.parent):
+        if (base / "shared").is_dir():
+            return base / "shared"
+    return ROOT.parent / "shared"
+
+
+def family_of(row: dict[str, str]) -> str:
+    family = (row.get("family") or "").strip()
+    if family:
+        return family
+    label = row["kinematic_type"].strip().rstrip("?").strip().casefold()
+    return FAMILY_OF_LABEL.get(label, label or "(unlabelled)")
+
+
+def source_of(row: dict[str, str]) -> str:
+    words = row.get("source", "").split()
+    return " ".join(words[:2]).split("@")[0] or "(no source)"
+
+
+def read_rows(folder: Path) -> list[dict[str, str]]:
+    with (folder / "truth.csv").open(encoding="utf-8", newline="") as stream:
+        return list(csv.DictReader(row for row in stream if not row.startswith("#")))
+
+
+def has_files(folder: Path, row: dict[str, str]) -> bool:
+    needed = [row["file"], *([row["srdf"]] if row.get("srdf") else [])]
+    return all((folder / name).is_file() for name in needed)
+
+
+def split_rows(
+    sets: list[tuple[str, Path]], *, files_kept_out: bool = False
+) -> list[dict[str, str]]:
+    """One entry per robot of ``sets`` with its part (see the module docstring)."""
+    entries: list[dict[str, str]] = []
+    for name, folder in sets:
+        for row in read_rows(folder):
+            family = family_of(row)
+            entries.append(
+                {
+                    "set": name,
+                    "robot": row["robot"],
+                    "family": family,
+                    "group": f"{source_of(row)} | {family}",
+                    "files_here": "yes" if has_files(folder, row) and not files_kept_out else "no",
+                }
+            )
+    families = sorted({entry["family"] for entry in entries})
+    for family in families:
+        members = [entry for entry in entries if entry["family"] == family]
+        groups = sorted({entry["group"] for entry in members})
+        random.Random(f"{SEED}:{family}").shuffle(groups)
+        # Per part: rows with files here, then all rows (families with no files here alternate).
+        held = {DEVELOPMENT: [0, 0], HELD_OUT: [0, 0]}
+        for group in groups:
+            rows = [entry for entry in members if entry["group"] == group]
+            part = HELD_OUT if held[HELD_OUT] <= held[DEVELOPMENT] else DEVELOPMENT
+            held[part][0] += sum(1 for entry in rows if entry["files_here"] == "yes")
+            held[part][1] += len(rows)
+            for entry in rows:
+                entry["part"] = part
+    return entries
+
+
+def added_rows() -> list[dict[str, str]]:
+    """Rows labelled after the split (``tools/generalization_set``), split by the same method on
+    their own, so the first split stays as it was made. Their files are kept outside the
+    repository (its README), so every group counts by its rows alone."""
+    if not (ADDED_SET / "truth.csv").is_file():
+        return []
+    return split_rows([(ADDED_SET.name, ADDED_SET)], files_kept_out=True)
+
+
+HEADER = f"""\
+# The development / held-out split of the labelled robots (issue 41), made before any rule
+# was changed. Seed {SEED}. Made by tools/split_identification.py (its docstring says how:
+# groups of one source and one family never split; per family, groups shuffled by the seed
+# and given to the part with fewer measurable rows). Rows of tools/generalization_set were
+# labelled after the first split, from repositories no set had used, before any rule changed;
+# split by the same method on their own (a family of one group there is held out whole).
+# Re-make and compare: python tools/split_identification.py --check
+"""
+
+
+def render(entries: list[dict[str, str]]) -> str:
+    out = io.StringIO()
+    out.write(HEADER)
+    columns = ["set", "robot", "family", "group", "files_here", "part"]
+    writer = csv.DictWriter(out, columns, lineterminator="\n")
+    writer.writeheader()
+    for entry in entries:
+        writer.writerow({key: entry[key] for key in columns})
+    return out.getvalue()
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=(__doc__ or "").splitlines()[0])
+    parser.add_argument("--check", action="store_true", help="compare with the file, write nothing")
+    args = parser.parse_args(argv)
+    sets = [("corpus", shared_folder() / "corpus"), ("identification_set", OWN_SET)]
+    text = render(split_rows(sets) + added_rows())
+    if args.check:
+        same = SPLIT.is_file() and SPLIT.read_text("utf-8") == text
+        print("the split file is what the seed makes" if same else "the split file differs")
+        return 0 if same else 1
+    SPLIT.write_text(text, "utf-8")
+    rows = list(csv.DictReader(line for line in text.splitlines() if not line.startswith("#")))
+    for part in (DEVELOPMENT, HELD_OUT):
+        mine = [r for r in rows if r["part"] == part]
+        here = sum(1 for r in mine if r["files_here"] == "yes")
+        print(f"{part}: {len(mine)} robots, {here} with files here")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
