@@ -19,7 +19,7 @@ from matplotlib.patches import PathPatch
 from pytest_benchmark.fixture import BenchmarkFixture
 
 from solver import load_team, solve
-from solver.reporting.batch import find_teams, plan, run_batch
+from solver.reporting.batch import find_teams, make_jobs, run_batch
 from solver.reporting.chart import MIN_TICK_GAP
 from solver.reporting.plot import figure_bytes, radar_figure
 from tests.conftest import RULES, TEAMS
@@ -53,7 +53,7 @@ def test_batch_solves_40_teams_in_one_process(benchmark: BenchmarkFixture, tmp_p
     found = find_teams([str(_teams(tmp_path))])
 
     def run() -> list[tuple[str, int | None]]:
-        jobs = plan(found, tmp_path / "out", force=True)
+        jobs = make_jobs(found, tmp_path / "out", force=True)
         return [(o.action, o.row.valid_robots) for o in run_batch(jobs, workers=1)]
 
     outcomes = benchmark(run)
@@ -64,10 +64,10 @@ def test_batch_rerun_of_40_unchanged_teams_solves_nothing(
     benchmark: BenchmarkFixture, tmp_path: Path
 ) -> None:
     found = find_teams([str(_teams(tmp_path))])
-    list(run_batch(plan(found, tmp_path / "out"), workers=1))
+    list(run_batch(make_jobs(found, tmp_path / "out"), workers=1))
 
     def rerun() -> list[tuple[str, int | None]]:
-        jobs = plan(found, tmp_path / "out")
+        jobs = make_jobs(found, tmp_path / "out")
         return [(o.action, o.row.ui_configurations) for o in run_batch(jobs, workers=1)]
 
     outcomes = benchmark(rerun)

@@ -42,7 +42,7 @@ from solver import load_team, solve
 from solver.core.rules import parse_rules
 from solver.core.team import parse_team
 from solver.files.yamlio import load_document
-from solver.reporting.batch import find_teams, plan, run_job
+from solver.reporting.batch import find_teams, make_jobs, run_job
 from tests.conftest import ROOT, RULES, TEAMS
 
 CASE3 = TEAMS / "case3.yaml"
@@ -139,7 +139,7 @@ def _copies(folder: Path) -> list[Path]:
 @pytest.mark.benchmark(timer=time.process_time)
 def test_batch_worker_solves_50_teams(benchmark: BenchmarkFixture, tmp_path: Path) -> None:
     _copies(tmp_path)
-    jobs = plan(find_teams([str(tmp_path / "teams")]), tmp_path / "out", force=True)
+    jobs = make_jobs(find_teams([str(tmp_path / "teams")]), tmp_path / "out", force=True)
 
     def work() -> list[tuple[str, int | None]]:
         return [(o.action, o.row.valid_robots) for o in map(run_job, jobs)]

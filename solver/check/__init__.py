@@ -12,7 +12,7 @@ located findings. They cover what a rule author gets wrong and what feature-mode
 ``equivalence``            "can share a component" that is not transitive (witness triples)
 ``void``                   void rule sets and kinematic types, minimal conflicts
 ``dead``                   dead values and components (and per kinematic type)
-``core``                   values and components forced for every robot of a type
+``forced``                 values and components forced for every robot of a type (``core-*``)
 ``redundancy``             redundant (entailed) and tautological constraints
 ``bound``                  the bound T and a declared bound that differs
 ``teams``                  teams against their rules: forbidden selections, void teams

@@ -14,10 +14,10 @@ from typing import Any
 
 from solver.check import (
     bound,
-    core,
     coverage,
     dead,
     equivalence,
+    forced,
     load,
     redundancy,
     teams,
@@ -44,7 +44,7 @@ RULE_CHECKS: tuple[Check[RulesContext], ...] = (
     *equivalence.CHECKS,
     *void.CHECKS,
     *dead.CHECKS,
-    *core.CHECKS,
+    *forced.CHECKS,
     *redundancy.CHECKS,
     *bound.CHECKS,
 )

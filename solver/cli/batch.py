@@ -96,7 +96,7 @@ def register(subparsers: Any) -> None:
 def run(args: argparse.Namespace) -> int:
     from solver.files.atomic import make_folder
     from solver.files.output import text_table
-    from solver.reporting.batch import find_teams, plan, run_batch, write_summary
+    from solver.reporting.batch import find_teams, make_jobs, run_batch, write_summary
 
     if args.rules is not None:
         from solver import load_rules
@@ -104,7 +104,7 @@ def run(args: argparse.Namespace) -> int:
         load_rules(args.rules)  # a bad override would fail every team: say so once
     teams = find_teams(args.patterns)
     # Planned first: a refusal (a report without matplotlib) leaves no folder behind.
-    jobs = plan(teams, args.output, rules=args.rules, report=args.report, force=args.force)
+    jobs = make_jobs(teams, args.output, rules=args.rules, report=args.report, force=args.force)
     out = make_folder(args.output)
     show = _progress_bar if sys.stderr.isatty() else _progress_lines
     outcomes = list(show(run_batch(jobs, args.jobs), len(jobs), sys.stderr))

@@ -61,7 +61,7 @@ class _Rule:
     then_block: Mask | None
 
 
-class _Plan:
+class _TypeTables:
     """Everything about one kinematic type that does not change from block to block."""
 
     def __init__(
@@ -231,18 +231,18 @@ def _first_component(characteristic: Characteristic) -> Callable[[Value], int]:
 
 def robots(rules: RuleSet, selection: TypeSelection) -> Iterator[tuple[Value, ...]]:
     """Every valid robot of one kinematic type, block by block, in product order."""
-    plan = _Plan(rules, selection)
+    tables = _TypeTables(rules, selection)
     cache: dict[tuple[int, ...], Mask | None] = {}
-    domains = plan.domains
+    domains = tables.domains
     width = len(domains)
-    for prefix in plan.prefixes():
-        mask = plan.mask(prefix, cache)
+    for prefix in tables.prefixes():
+        mask = tables.mask(prefix, cache)
         if mask is None:
             continue
         head = tuple(domains[i][d] for i, d in enumerate(prefix))
         columns = [
-            np.asarray(domains[i], dtype=object)[plan.digits[i][mask]]
-            for i in range(plan.start, width)
+            np.asarray(domains[i], dtype=object)[tables.digits[i][mask]]
+            for i in range(tables.start, width)
         ]
         for tail in zip(*columns, strict=True):
             yield head + tuple(tail)
@@ -292,34 +292,34 @@ def robot_blocks(
     of characteristic ``i`` to its component's index (-1: none); by default its first
     component, the configuration of a robot when every value is in at most one component.
     """
-    plan = _Plan(rules, selection, serving=serving)
+    tables = _TypeTables(rules, selection, serving=serving)
     layout = BlockLayout(
-        tuple(plan.domains),
-        plan.start,
-        tuple(plan.digits[i] for i in range(plan.start, len(plan.domains))),
-        tuple(tuple(c) for c in plan.components),
-        tuple(plan.strides),
+        tuple(tables.domains),
+        tables.start,
+        tuple(tables.digits[i] for i in range(tables.start, len(tables.domains))),
+        tuple(tuple(c) for c in tables.components),
+        tuple(tables.strides),
     )
-    return layout, _robot_blocks(plan)
+    return layout, _robot_blocks(tables)
 
 
-def _robot_blocks(plan: _Plan) -> Iterator[RobotBlock]:
+def _robot_blocks(tables: _TypeTables) -> Iterator[RobotBlock]:
     masks: dict[tuple[int, ...], Mask | None] = {}
     # Per distinct mask, once: its valid rows and their distinct codes within the block.
     blocks: dict[int, tuple[Codes, Codes, Codes]] = {}
-    for prefix in plan.prefixes():
-        mask = plan.mask(prefix, masks)
+    for prefix in tables.prefixes():
+        mask = tables.mask(prefix, masks)
         if mask is None:
             continue
         found = blocks.get(id(mask))
         if found is None:
             rows = np.flatnonzero(mask)
             keys, which = np.unique(
-                np.where(plan.block_gap, -1, plan.block_key)[rows], return_inverse=True
+                np.where(tables.block_gap, -1, tables.block_key)[rows], return_inverse=True
             )
             found = blocks[id(mask)] = (rows, keys, which.reshape(-1))
         rows, keys, which = found
-        offset, gap, _ = plan.head(prefix)
+        offset, gap, _ = tables.head(prefix)
         if gap:
             codes = np.full(len(keys), -1, dtype=np.int64)
         elif offset:
@@ -416,9 +416,9 @@ def _classes(rules: RuleSet, selection: TypeSelection) -> _Classes:
 def _scan(rules: RuleSet, classes: _Classes, *, served_too: bool) -> _Scanned:
     """Robots per configuration code, and (``served_too``) the representatives each code
     serves, with the valid and unserved robots."""
-    plan = _Plan(rules, classes.selection, classes.weights)
-    width = len(plan.domains)
-    counts = _Counter(plan.key_space)
+    tables = _TypeTables(rules, classes.selection, classes.weights)
+    width = len(tables.domains)
+    counts = _Counter(tables.key_space)
     # served[i] holds (configuration code, value position) pairs met among valid robots. Only
     # characteristics whose components hold several selected values need it; for the others
     # the configuration names the value.
@@ -426,20 +426,22 @@ def _scan(rules: RuleSet, classes: _Classes, *, served_too: bool) -> _Scanned:
         i
         for i in range(width)
         if served_too
-        and any(np.count_nonzero(plan.codes[i] == c) > 1 for c in range(len(plan.components[i])))
+        and any(
+            np.count_nonzero(tables.codes[i] == c) > 1 for c in range(len(tables.components[i]))
+        )
     ]
-    served = {i: _Pairs(plan.key_space, len(plan.domains[i])) for i in plural}
+    served = {i: _Pairs(tables.key_space, len(tables.domains[i])) for i in plural}
     masks: dict[tuple[int, ...], Mask | None] = {}
     blocks: dict[int, _MaskedBlock] = {}
     total = unserved = 0
-    for prefix in plan.prefixes():
-        mask = plan.mask(prefix, masks)
+    for prefix in tables.prefixes():
+        mask = tables.mask(prefix, masks)
         if mask is None:
             continue
         block = blocks.get(id(mask))
         if block is None:
-            block = blocks[id(mask)] = _MaskedBlock(plan, mask, plural)
-        offset, prefix_gap, weight = plan.head(prefix)
+            block = blocks[id(mask)] = _MaskedBlock(tables, mask, plural)
+        offset, prefix_gap, weight = tables.head(prefix)
         total += block.valid * weight
         if prefix_gap:
             unserved += block.valid * weight
@@ -451,11 +453,11 @@ def _scan(rules: RuleSet, classes: _Classes, *, served_too: bool) -> _Scanned:
             block.distinct + offset, block.counts * weight if weight > 1 else block.counts
         )
         for i in plural:
-            if i < plan.start:
+            if i < tables.start:
                 served[i].add(present, prefix[i])
             else:
                 served[i].add_shifted(block.pairs[i], offset)
-    return _Scanned(plan, counts, served, total, unserved)
+    return _Scanned(tables, counts, served, total, unserved)
 
 
 @dataclass(frozen=True)
@@ -463,7 +465,7 @@ class _Scanned:
     """What :func:`_scan` found: robots per configuration code, the (code, representative)
     pairs served per characteristic that needs them, and the valid and unserved robots."""
 
-    plan: _Plan
+    tables: _TypeTables
     counts: _Counter
     served: dict[int, _Pairs]
     total: int
@@ -474,15 +476,15 @@ class _MaskedBlock:
     """What a mask makes of the block, the same for every prefix with that mask: the valid
     robots' configuration codes within the block, and their (code, value) pairs."""
 
-    def __init__(self, plan: _Plan, mask: Mask, plural: list[int]) -> None:
-        keep = mask & ~plan.block_gap
-        self.keys = plan.block_key[keep]
+    def __init__(self, tables: _TypeTables, mask: Mask, plural: list[int]) -> None:
+        keep = mask & ~tables.block_gap
+        self.keys = tables.block_key[keep]
         # Counted once per mask: a prefix only shifts these codes (its cost follows the
         # configurations of the block, not its robots).
-        space = plan.strides[plan.start - 1] if plan.start else plan.key_space
+        space = tables.strides[tables.start - 1] if tables.start else tables.key_space
         # Rows may stand for several robots (value classes); weighted sums are whole numbers
         # below 2**53 (see _classes), so numpy's float64 adds them exactly.
-        weight = plan.block_weight
+        weight = tables.block_weight
         kept = None if weight is None else weight[keep]
         self.valid = int(np.count_nonzero(mask) if weight is None else weight[mask].sum())
         self.kept = len(self.keys) if kept is None else int(kept.sum())
@@ -497,10 +499,10 @@ class _MaskedBlock:
         # (marked in a bit array over the block's codes x values: cheaper than sorting).
         self.pairs = {}
         for i in plural:
-            if i >= plan.start:
-                size = len(plan.domains[i])
+            if i >= tables.start:
+                size = len(tables.domains[i])
                 seen = np.zeros(space * size, dtype=bool)
-                seen[self.keys * size + plan.digits[i][keep]] = True
+                seen[self.keys * size + tables.digits[i][keep]] = True
                 self.pairs[i] = np.flatnonzero(seen)
 
 
@@ -584,10 +586,10 @@ class _Pairs:
 
 
 def _partition_from_counts(scanned: _Scanned, value_classes: _Classes) -> Partition:
-    plan, served = scanned.plan, scanned.served
+    tables, served = scanned.tables, scanned.served
     codes, numbers = scanned.counts.found()
-    rules = plan.rules
-    width = len(plan.domains)
+    rules = tables.rules
+    width = len(tables.domains)
     original = value_classes.original.domains
     members = value_classes.members
 
@@ -604,20 +606,20 @@ def _partition_from_counts(scanned: _Scanned, value_classes: _Classes) -> Partit
         []
         if i in served
         else [
-            expand(i, np.flatnonzero(plan.codes[i] == c).tolist())
-            for c in range(len(plan.components[i]))
+            expand(i, np.flatnonzero(tables.codes[i] == c).tolist())
+            for c in range(len(tables.components[i]))
         ]
         for i in range(width)
     ]
-    sizes = np.array([len(c) for c in plan.components], dtype=np.int64)
-    digits = (codes[:, None] // np.array(plan.strides, dtype=np.int64)) % sizes
+    sizes = np.array([len(c) for c in tables.components], dtype=np.int64)
+    digits = (codes[:, None] // np.array(tables.strides, dtype=np.int64)) % sizes
     # Column by column (a characteristic at a time), then zipped into one row per
     # configuration: few Python steps per configuration.
     key_columns = []
     value_columns = []
     for i in range(width):
         column = digits[:, i]
-        key_columns.append(np.array(plan.components[i], dtype=np.int64)[column].tolist())
+        key_columns.append(np.array(tables.components[i], dtype=np.int64)[column].tolist())
         if i in served:
             sets, which = served[i].distinct(codes)
             made = [expand(i, found) for found in sets]
@@ -633,5 +635,5 @@ def _partition_from_counts(scanned: _Scanned, value_classes: _Classes) -> Partit
             zip(*key_columns, strict=True), numbers, zip(*value_columns, strict=True), strict=True
         )
     ]
-    kinematic_type = str(plan.domains[rules.key_position][0])
+    kinematic_type = str(tables.domains[rules.key_position][0])
     return Partition(kinematic_type, tuple(classes), scanned.total, scanned.unserved, True)

@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING
 
 from solver.core.ruleset import RuleSet
 from solver.identify.body import Body
-from solver.identify.plans import arm_plans
+from solver.identify.planning_groups import arm_plans
 from solver.identify.profile import BOOLEAN_FEATURES, Profile
 from solver.identify.readers.urdf import Urdf
 from solver.untrusted import shown

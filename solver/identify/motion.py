@@ -8,7 +8,7 @@ Two kinds of evidence, the declared first:
   transmission mean its joints are commanded one by one (a head's pan/tilt points a sensor, a
   rotor or wheel mount moves the vehicle: neither is joint control). From the SRDF: a MoveIt
   planning group over an arm means joint-space and end-effector goals; an ``<end_effector>`` not
-  on a leg means end-effector goals (:mod:`solver.identify.plans`).
+  on a leg means end-effector goals (:mod:`solver.identify.planning_groups`).
 * *Roles.* What the joints do shows a control even where no controller is declared: wheels that
   turn (not a caster's) mean the base is driven, thrusters that the vessel is, an arm of
   actuated joints that its joints are commanded, and an arm of six joints or more ending in a
@@ -35,7 +35,7 @@ from typing import TYPE_CHECKING
 
 from solver.identify.body import Body
 from solver.identify.interfaces import Control
-from solver.identify.plans import arm_plans, hand_effectors
+from solver.identify.planning_groups import arm_plans, hand_effectors
 from solver.identify.profile import Profile
 from solver.identify.readers.urdf import Urdf
 

@@ -392,7 +392,7 @@ class OperatorStation:
         self.process.close()
 
 
-def _plan(robots: Sequence[DemoRobot]) -> Iterator[tuple[str, str]]:
+def _switches(robots: Sequence[DemoRobot]) -> Iterator[tuple[str, str]]:
     while True:
         for robot in robots:
             for control in robot.controls:
@@ -430,7 +430,7 @@ def run_demo(
             f"{len(ROBOTS)} emulated robots on DDS domain {domain}: "
             + ", ".join(robot.namespace for robot in ROBOTS)
         )
-        plan = _plan(ROBOTS)
+        plan = _switches(ROBOTS)
         done = 0
         while not stopped.is_set() and (rounds is None or done < rounds):
             robot, control = next(plan)

@@ -5,7 +5,7 @@
 1. :func:`find_teams` turns file names, shipped team names (``case3``), folders (searched
    recursively for ``*.yaml`` and ``*.yml``) and glob patterns (``**`` included) into a list
    of team files.
-2. :func:`plan` gives each file its outputs in the ``teams/`` folder of the output folder,
+2. :func:`make_jobs` gives each file its outputs in the ``teams/`` folder of the output folder,
    mirroring the files' folders below their deepest common folder (``teams/a/x.yaml`` ->
    ``OUT/teams/a/x.json``), and decides which are already up to date.
 3. :func:`run_batch` solves the rest in worker processes (one, or as many as asked) and
@@ -81,7 +81,7 @@ __all__ = [
     "Outcome",
     "SummaryRow",
     "find_teams",
-    "plan",
+    "make_jobs",
     "run_batch",
     "run_job",
     "summary_csv",
@@ -343,7 +343,7 @@ def _relative_names(paths: Sequence[Path]) -> list[Path]:
     ]
 
 
-def plan(
+def make_jobs(
     teams: Sequence[tuple[Path, str]],
     out: str | Path,
     *,

@@ -1,5 +1,5 @@
 """Batch runs from the library: the team files found (folders, globs, links that loop), the
-plan of outputs, and the outcomes and summary of a run. The command, ``teleop-ui batch``, is
+jobs and their outputs, and the outcomes and summary of a run. The command, ``teleop-ui batch``, is
 tested in tests/cli/test_batch.py.
 """
 
@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 from solver.errors import InputError
-from solver.reporting.batch import find_teams, plan, run_batch, summary_csv, write_summary
+from solver.reporting.batch import find_teams, make_jobs, run_batch, summary_csv, write_summary
 from tests.reporting.batches import OWN_TEAM, write_teams
 
 
@@ -58,11 +58,11 @@ def test_find_teams_reports_every_pattern_that_names_nothing(teams: Path) -> Non
     ]
 
 
-# ---- the plan and a run ----------------------------------------------------------------------
+# ---- the jobs and a run ----------------------------------------------------------------------
 
 
 def test_plan_mirrors_the_folders_below_the_common_one(teams: Path, tmp_path: Path) -> None:
-    jobs = plan(find_teams([str(teams)]), tmp_path / "out")
+    jobs = make_jobs(find_teams([str(teams)]), tmp_path / "out")
     assert [j.output.relative_to(tmp_path / "out" / "teams").as_posix() for j in jobs] == [
         "case1.json",
         "case2.json",
@@ -77,7 +77,7 @@ def test_plan_mirrors_the_folders_below_the_common_one(teams: Path, tmp_path: Pa
 def test_library_batch_gives_one_outcome_per_team_and_a_summary(
     teams: Path, tmp_path: Path
 ) -> None:
-    jobs = plan(find_teams([str(teams / "case1.yaml"), str(teams / "ours")]), tmp_path / "o")
+    jobs = make_jobs(find_teams([str(teams / "case1.yaml"), str(teams / "ours")]), tmp_path / "o")
     outcomes = list(run_batch(jobs, workers=1))
     assert sorted(o.action for o in outcomes) == ["failed", "failed", "skipped", "solved", "solved"]
     rows, written = write_summary(outcomes, jobs, tmp_path / "o")

@@ -1,11 +1,11 @@
-"""What an SRDF plans, read against the body the URDF shows (solver.identify.plans): groups that
-move an arm (not legs, not a chain extending another arm's group, at most MOST_GROUPS read), and
-end effectors that are not feet."""
+"""What an SRDF plans, read against the body the URDF shows (solver.identify.planning_groups):
+groups that move an arm (not legs, not a chain extending another arm's group, at most
+MOST_GROUPS read), and end effectors that are not feet."""
 
 from __future__ import annotations
 
 from solver.identify import identify_urdf
-from solver.identify.plans import MOST_GROUPS
+from solver.identify.planning_groups import MOST_GROUPS
 from tests.identify import builders
 
 SRDF = """<?xml version="1.0"?>
