@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import contextlib
 import csv
+import hashlib
 import io
 import tracemalloc
 from collections.abc import Callable
@@ -199,3 +200,73 @@ def test_listing_every_robot_peaks_where_the_first_1000_do(heads: dict[str, Team
         assert written.count("\n") == min(lines, 1 + 409_600)
     # The text written is kept by the test's stream; what listing holds besides it is a block.
     assert peaks[1] < 2 * peaks[0] + (1 << 20)
+
+
+# ---- issue 42: the whole command against a handwritten numpy listing of the same bytes -------
+# Target: `teleop-ui robots TEAM` (in-process, through the command line's terminal-safe output)
+# at least 1.0x a numpy listing written for this team alone; the ratio is in tools/bench_table.py.
+LONG_VALUES = 1_900  # 2 x 1,900 values: 3,610,000 robots, each its own configuration
+
+
+class _Sink:
+    """Standard output for both listings: what was written is hashed and counted, not kept."""
+
+    def __init__(self) -> None:
+        self.digest = hashlib.sha256()
+        self.size = 0
+
+    def write(self, text: str) -> int:
+        self.digest.update(text.encode())
+        self.size += len(text)
+        return len(text)
+
+    def flush(self) -> None:
+        return None
+
+    def isatty(self) -> bool:
+        return False
+
+
+def command_listing(team_file: Path) -> tuple[str, int]:
+    """`teleop-ui robots TEAM > file`, in-process: the command line's own streams and all."""
+    from solver.cli import main
+
+    sink = _Sink()
+    with contextlib.redirect_stdout(sink):
+        assert main(["robots", str(team_file)]) == 0
+    return sink.digest.hexdigest(), sink.size
+
+
+def numpy_listing(values: int) -> tuple[str, int]:
+    """The peer: the same CSV made by numpy for this team alone (one type, two characteristics,
+    each robot its own configuration, numbered in listing order: no lookup), written at once."""
+    import numpy as np
+
+    sink = _Sink()
+    first = np.array([f",T0,c0v{i}," for i in range(values)], dtype=object)
+    second = np.array([f"c1v{i}\n" for i in range(values)], dtype=object)
+    pieces = np.empty((values * values, 2), dtype=object)
+    pieces[:, 0] = list(map(str, range(1, values * values + 1)))
+    pieces[:, 1] = np.add.outer(first, second).reshape(-1)
+    sink.write("configuration,kinematic_type,c0,c1\n")
+    sink.write("".join(pieces.reshape(-1).tolist()))
+    return sink.digest.hexdigest(), sink.size
+
+
+@pytest.fixture(scope="module")
+def long_team(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    folder = tmp_path_factory.mktemp("long")
+    wide(folder, 2, LONG_VALUES)
+    return folder / "team.yaml"
+
+
+def test_robots_command_lists_3_6_million_robots(
+    benchmark: BenchmarkFixture, long_team: Path
+) -> None:
+    digest, size = benchmark(command_listing, long_team)
+    assert (digest, size) == numpy_listing(LONG_VALUES)  # byte for byte the peer's
+
+
+def test_robots_numpy_listing_peer(benchmark: BenchmarkFixture) -> None:
+    _, size = benchmark(numpy_listing, LONG_VALUES)
+    assert size > LONG_VALUES**2 * len("1,T0,c0v0,c1v0\n")

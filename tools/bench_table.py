@@ -70,6 +70,16 @@ ROWS = [
         "",
     ),
     (
+        "test_robots_command_lists_3_6_million_robots",
+        "`robots` command in-process (terminal-safe output): 3,610,000 robots",
+        "",
+    ),
+    (
+        "test_robots_numpy_listing_peer",
+        "numpy listing written for that team alone, the same bytes (peer)",
+        "",
+    ),
+    (
         "test_first_1000_robots[2 x 40 values]",
         "`robots`, first 1,000 lines: 1,600 robots, each its own configuration",
         "",
@@ -366,6 +376,12 @@ WATCH = [
 
 # (label, slower benchmark, faster benchmark, target)
 RATIOS = [
+    (
+        "3.6 M robots: numpy listing (peer) / `robots` command, byte-identical",
+        "test_robots_numpy_listing_peer",
+        "test_robots_command_lists_3_6_million_robots",
+        ">= 1.0",
+    ),
     (
         "Case 3: csp engine / structure engine",
         "test_solve_case3_in_process[csp]",

@@ -25,11 +25,19 @@ from __future__ import annotations
 import errno
 import os
 import re
-from typing import IO, Any
+from collections.abc import Callable
+from typing import IO, Any, TextIO, cast
 
 from solver.untrusted import shown, visible
 
-__all__ = ["ClosedStream", "EscapingStream", "OutputFailed", "escape_controls", "raw_stream"]
+__all__ = [
+    "ClosedStream",
+    "EscapingStream",
+    "OutputFailed",
+    "escape_controls",
+    "made_safe",
+    "raw_stream",
+]
 
 # The output's own line breaks and tabs; everything between them is shown escaped.
 _LAYOUT = re.compile("([\n\t])")
@@ -93,13 +101,20 @@ class EscapingStream:
     write or flush that fails raises :class:`OutputFailed` naming the stream (``name``).
     """
 
-    def __init__(self, stream: IO[str] | None, name: str = "the output") -> None:
+    def __init__(
+        self,
+        stream: IO[str] | None,
+        name: str = "the output",
+        *,
+        escape: Callable[[str], str] | None = escape_controls,
+    ) -> None:
         self.raw: Any = ClosedStream() if stream is None else stream
         self.name = name
+        self.escape = escape
 
     def write(self, text: str) -> int:
         try:
-            self.raw.write(escape_controls(text))
+            self.raw.write(text if self.escape is None else self.escape(text))
         except OSError as error:
             raise OutputFailed(self.name, error) from None
         return len(text)
@@ -116,6 +131,16 @@ class EscapingStream:
 
     def __getattr__(self, name: str) -> Any:
         return getattr(self.raw, name)
+
+
+def made_safe(stream: TextIO | EscapingStream) -> TextIO:
+    """The stream below an :class:`EscapingStream`, its failures still
+    :class:`OutputFailed`: for text made safe where it was read (a listing's values, each
+    escaped once by :func:`escape_controls`), which escaping every byte again would only slow."""
+    if isinstance(stream, EscapingStream):
+        # An EscapingStream is a TextIO in all but name (it delegates everything but write).
+        return cast("TextIO", EscapingStream(stream.raw, stream.name, escape=None))
+    return stream
 
 
 def raw_stream(stream: IO[str] | EscapingStream) -> IO[str]:

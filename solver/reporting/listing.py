@@ -164,6 +164,7 @@ def write_robots(
     fmt: str = "csv",
     engine: str = ENUMERATING[0],
     max_robots: int = MAX_ROBOTS,
+    escape: Callable[[str], str] | None = None,
 ) -> int:
     """Write every numbered robot to ``stream``; returns how many were written.
 
@@ -171,6 +172,11 @@ def write_robots(
     come from the structure a kinematic type at a time, so the first robot is written before
     the last configuration is known, and memory does not grow with the configurations.
     :class:`TooLargeError`, before writing anything, when there are more than ``max_robots``.
+
+    ``escape``, when given, makes the rule set's text safe for where it goes (the command line
+    gives its terminal escape, :func:`solver.cli._terminal.escape_controls`, and the stream below
+    its escaping one): the output is what ``escape`` of the whole text would be, since it works
+    a character at a time, but each value's text is escaped once, not every byte written.
     """
     total = solution.totals.valid_robots
     if total > max_robots:
@@ -186,11 +192,14 @@ def write_robots(
         _check_csp(solution)
     enumerator = engines.lookup(engine)
     names = solution.rules.names
+    safe = escape or _as_it_is
     if fmt == "csv":
         # Names come from rule files: no cell may read as a spreadsheet formula.
-        csv.writer(stream, lineterminator="\n").writerow(csv_row(["configuration", *names]))
+        header = io.StringIO()
+        csv.writer(header, lineterminator="\n").writerow(csv_row(["configuration", *names]))
+        stream.write(safe(header.getvalue()))
     by_blocks = engine == "fast" and (fmt == "csv" or _plain(names))
-    text = _Text(solution.rules, fmt) if by_blocks else None
+    text = _Text(solution.rules, fmt, safe) if by_blocks else None
     written = 0
     for selection, numbers in _numbers(solution):
         serving = numbers.serving() if text is not None else None
@@ -198,8 +207,26 @@ def write_robots(
             written += _write_blocks(solution, selection, numbers, text, stream, serving=serving)
         else:
             robots = enumerator.robots(solution.rules, selection)
-            written += _write_rows(solution, numbers, robots, fmt, stream)
+            rows = stream if escape is None else _Escaping(stream, escape)
+            written += _write_rows(solution, numbers, robots, fmt, rows)
     return written
+
+
+def _as_it_is(text: str) -> str:
+    return text
+
+
+class _Escaping:
+    """``stream`` written through ``escape``: rows made one at a time (any engine, any names)
+    are escaped as written, quoted cells and all."""
+
+    def __init__(self, stream: TextIO, escape: Callable[[str], str]) -> None:
+        self.stream = stream
+        self.escape = escape
+
+    def write(self, text: str) -> int:
+        self.stream.write(self.escape(text))
+        return len(text)
 
 
 def _write_rows(
@@ -207,7 +234,7 @@ def _write_rows(
     numbers: Numbers,
     robots: Iterable[tuple[Value, ...]],
     fmt: str,
-    stream: TextIO,
+    stream: TextIO | _Escaping,
 ) -> int:
     """Robots one row at a time (any engine, any names)."""
     default = solution.default_configuration
@@ -285,7 +312,7 @@ def _json_field(value: Value) -> str:
 class _Text:
     """The pieces of text the block writer joins: each value's cell made once."""
 
-    def __init__(self, rules: RuleSet, fmt: str) -> None:
+    def __init__(self, rules: RuleSet, fmt: str, safe: Callable[[str], str]) -> None:
         names = rules.names
         if fmt == "csv":
             field: Callable[[Value], str] = _csv_field
@@ -297,7 +324,7 @@ class _Text:
             self.opening, self.separator, self.closing = '{"configuration": ', ", ", "}\n"
         self.rules = rules
         self.cells = [
-            [label + field(value) for value in c.values]
+            [safe(label + field(value)) for value in c.values]
             for label, c in zip(labels, rules.characteristics, strict=True)
         ]
         self.made: dict[tuple[tuple[str, ...], ...], Cells] = {}  # types often share a block

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import functools
 import json
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -97,6 +98,36 @@ def test_a_command_imports_its_own_module_and_no_other_command() -> None:
     # Nor what Case 3 does not use: HiGHS's exact cover, assigning a robot.
     assert "solver.core.cover" not in loaded
     assert "solver.solving.assignment" not in loaded
+
+
+def test_a_command_that_loads_numpy_starts_no_openblas_threads_unless_the_user_asks() -> None:
+    """numpy's OpenBLAS starts a thread per core on import, spinning while numpy loads; no
+    command multiplies matrices. The process's own threads are counted by the kernel."""
+    script = (
+        "import os, sys\n"
+        "from solver.cli import main\n"
+        "sys.stdout = open(os.devnull, 'w')\n"
+        "assert main(['robots', 'case3']) == 0\n"
+        "import numpy\n"
+        "print(len(os.listdir('/proc/self/task')), os.environ['OPENBLAS_NUM_THREADS'],"
+        " file=sys.stderr)\n"
+    )
+
+    def threads(**given: str) -> str:
+        env = {k: v for k, v in os.environ.items() if k != "OPENBLAS_NUM_THREADS"} | given
+        found = subprocess.run(
+            [sys.executable, "-c", script],
+            cwd=ROOT,
+            env=env,
+            capture_output=True,
+            text=True,
+            check=True,
+        )
+        return found.stderr.strip()
+
+    assert threads() == "1 1"
+    if (os.cpu_count() or 1) > 1:  # a user's own setting stands
+        assert threads(OPENBLAS_NUM_THREADS="2") == "2 2"
 
 
 def test_identifying_a_urdf_loads_no_configurations_layouts_live_graph_nor_xacro_sandbox() -> None:

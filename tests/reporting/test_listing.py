@@ -11,6 +11,7 @@ from pathlib import Path
 import pytest
 
 from solver import Solution, load_team, solve
+from solver.cli._terminal import escape_controls
 from solver.engines import fast
 from solver.errors import TooLargeError
 from solver.files.output import csv_row
@@ -212,3 +213,33 @@ def test_robots_numbered_from_the_counts_are_numbered_as_the_solution_numbers_th
     for number, robot in numbered_robots(counted):
         found = listed.configuration_for(robot)
         assert number == (listed.default_configuration if found is None else found.number)
+
+
+@pytest.mark.parametrize(("engine", "fmt"), [("fast", "csv"), ("fast", "jsonl"), ("csp", "csv")])
+def test_values_escaped_once_each_give_the_text_escaping_every_byte_gives(
+    engine: str, fmt: str, write_file: Callable[[str, str], Path]
+) -> None:
+    write_file(
+        "rules.yaml",
+        """\
+characteristics:
+  kinematic_type: {values: ["T\\e[2J", U]}
+  mode:
+    values: ["\\u202eevil", "a\\rb", "tab\\there", "say \\"hi\\"", plain]
+  count: {values: [1, 2]}
+""",
+    )
+    team = load_team(
+        write_file("team.yaml", 'rules: rules.yaml\nteam:\n  "T\\e[2J": {}\n  U: {}\n')
+    )
+    solution = solve(team)
+    plain = io.StringIO()
+    write_robots(solution, plain, fmt=fmt, engine=engine)
+    once = io.StringIO()
+    count = write_robots(solution, once, fmt=fmt, engine=engine, escape=escape_controls)
+    assert count == 2 * 5 * 2
+    assert once.getvalue() == escape_controls(plain.getvalue())
+    if fmt == "csv":  # CSV keeps the rule set's text (JSON escapes controls itself)
+        assert "\x1b[2J" in plain.getvalue()
+        assert "\\x1b[2J" in once.getvalue()
+        assert "\\u202e" in once.getvalue()
