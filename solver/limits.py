@@ -191,7 +191,14 @@ LIMITS: tuple[Limit, ...] = (
         1_000,
         "motion controls and sensors",
         "a teleoperation description",
-        "identify, check",
+        "identify, check, watch, assign",
+    ),
+    Limit(
+        "description-bytes",
+        1_048_576,
+        "characters",
+        "a teleoperation description on a live graph (<ns>/teleop_description)",
+        "watch, assign",
     ),
     # Many files at once.
     Limit("check-files", 1_000, "files", "one check run", "check"),

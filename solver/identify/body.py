@@ -322,7 +322,7 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
         fins=tuple(parts.of("fin")),
         casters=tuple(parts.of("caster")),
         wings=tuple(wings(tree, parts.roles)),
-        marine_plugins=(*tree.labels("thruster"), *tree.labels("marine")),
+        marine_plugins=tuple(dict.fromkeys((*tree.labels("thruster"), *tree.labels("marine")))),
         surface_hints=surface_hints(tree),
         underwater_hints=underwater_hints(tree),
         flight_hints=flight_hints(tree, parts.roles, parts.limbs),

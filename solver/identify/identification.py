@@ -357,11 +357,15 @@ class IdentificationCache:
         profile: Profile | None = None,
         file: str = "<string>",
         robot: str | None = None,
+        description: TeleopDescription | None = None,
+        warnings: Sequence[Fault] = (),
     ) -> Identification:
         """:func:`identify_urdf`, answered from the cache when the content was seen before."""
+        # A description is named by a digest: a key holds no stranger's megabyte.
+        declared = hashlib.sha256(repr((description, tuple(warnings))).encode()).hexdigest()
         key = (
             content_key(urdf_text, srdf_text=srdf_text, topics=topics, profile=profile, rules=rules)
-            + f"|{file}|{robot}"
+            + f"|{file}|{robot}|{declared}"
         )
         found = self._entries.get(key)
         if found is not None:
@@ -377,6 +381,8 @@ class IdentificationCache:
             topics=topics,
             rules=rules,
             profile=profile,
+            description=description,
+            warnings=warnings,
         )
         self._entries[key] = result
         if len(self._entries) > self.maxsize:

@@ -10,7 +10,8 @@ Two kinds of evidence, the declared first:
   planning group over an arm means joint-space and end-effector goals; an ``<end_effector>`` not
   on a leg means end-effector goals (:mod:`solver.identify.planning_groups`).
 * *Roles.* What the joints do shows a control even where no controller is declared: wheels that
-  turn (not a caster's) mean the base is driven, thrusters that the vessel is, an arm of
+  turn (not a caster's) or a base the model moves in the plane (a planar joint, root joints
+  along x, y and about z) mean the base is driven, thrusters that the vessel is, an arm of
   actuated joints that its joints are commanded, and an arm of six joints or more ending in a
   gripper that Cartesian (end-effector) goals can be solved for it, and two legs or more that
   the body walks; those last two are guesses and say so ("likely, not declared": a gait
@@ -25,7 +26,8 @@ description: topics show them (:mod:`solver.identify.interfaces`). A description
 that a vehicle *could* take waypoints: the profile's ``motion.navigation`` names, per source
 that moves the body (wheels, a drive plugin, thrusters, flight; or a control, for every source
 of it), the sensors navigation needs (a driven ground base and a lidar or a GPS; a flown body
-and odometry; thrusters and a Doppler velocity log). Such a Waypoint is a guess and says so.
+and odometry or a GPS; thrusters and a Doppler velocity log). Such a Waypoint is a guess and
+says so.
 """
 
 from __future__ import annotations
@@ -47,7 +49,7 @@ __all__ = ["controls_from_description"]
 # (profile source, evidence): what one place of the description shows.
 _Shown = list[tuple[str, str]]
 # The sources read from what joints do rather than from a declared controller.
-_ROLE_SOURCES = ("wheels", "thrusters", "arm", "arm_gripper", "legs")
+_ROLE_SOURCES = ("wheels", "planar_base", "thrusters", "arm", "arm_gripper", "legs")
 # Legs a body stands and walks on (one leg is a tool, a leg rig or a tail).
 _WALKING_LEGS = 2
 # Joints from the base to a gripper that reach any pose (three for position, three to turn).
@@ -67,6 +69,10 @@ def _ground(body: Body, urdf_source: str) -> _Shown:
         )
     if body.wheels:
         found.append(("wheels", f"{urdf_source}: {len(body.wheels)} wheel joint(s) that turn"))
+    if body.planar_base:
+        # The model moves its base in the plane (a planar joint, or root joints along x, y
+        # and about z): what a planar-move plugin does, velocity commands in the plane.
+        found.append(("planar_base", f"{urdf_source}: a base moved in the plane"))
     if body.thrusters:
         found.append(("thrusters", f"{urdf_source}: {len(body.thrusters)} thruster(s)"))
     return found

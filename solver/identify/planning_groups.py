@@ -2,10 +2,11 @@
 
 MoveIt configurations plan more than arms: legs (a quadruped's ``lf_leg``), a torso lift, the
 whole body, pairs of limbs, a gripper's jaws. :func:`arm_plans` keeps the planning groups that
-move an arm: not only over a gripper's joints, not mostly on the legs or on the trunk, over
-fewer than three limbs, and not extending another such group (Fetch's ``arm_with_torso``;
-chains are expanded to their joints through the URDF, so a chain group from the torso to a
-hand extends the hand's arm). :func:`hand_effectors`
+move an arm: not only over a gripper's joints, of as many joints as an arm needs (a chain to a
+spinning lidar's motor is none), not mostly on the legs, on a head (a pan/tilt pointing a
+sensor) or on the trunk, over fewer than three limbs, and not extending another such group
+(Fetch's ``arm_with_torso``; chains are expanded to their joints through the URDF, so a chain
+group from the torso to a hand extends the hand's arm). :func:`hand_effectors`
 keeps the end effectors that are not feet (a leg's end effector is where it stands).
 
 Not here: reading the SRDF (:mod:`solver.identify.readers.srdf`).
@@ -35,18 +36,22 @@ def arm_plans(
 ) -> tuple[Group, ...]:
     """The SRDF's planning groups that each plan one arm of ``body`` (among its first
     :data:`MOST_GROUPS` candidates); groups with the same joints count once."""
-    legs = {j for limb in body.limbs if limb.kind == "leg" for j in limb.joints}
-    trunk = set(body.trunk)
     limb_of = {j: index for index, limb in enumerate(body.limbs) for j in limb.joints}
     fingers = {role.joint for role in body.roles if role.role == "finger"}
+    # Joints a group may not lie mostly on: legs, heads (a pan/tilt pointing a sensor), trunk.
+    not_arms = [
+        {j for limb in body.limbs if limb.kind == kind for j in limb.joints}
+        for kind in ("leg", "head")
+    ] + [set(body.trunk)]
     walker = _Chains(urdf)
     by_joints: dict[frozenset[str], Group] = {}
     for group in srdf.arm_groups(min_joints)[:MOST_GROUPS]:
         joints = walker.joints(group)
         if (
             not joints <= fingers  # a gripper's group, however it is named
-            and 2 * len(joints & legs) <= len(joints)
-            and 2 * len(joints & trunk) <= len(joints)
+            # a chain of fewer joints than an arm (a spinning lidar's motor) plans none
+            and (urdf is None or len(joints) >= min_joints)
+            and not _mostly_on(joints, not_arms)
             and len({limb_of[j] for j in joints if j in limb_of}) < 3
         ):
             by_joints.setdefault(joints, group)
@@ -55,6 +60,11 @@ def arm_plans(
         for joints, group in by_joints.items()
         if not any(other < joints for other in by_joints)
     )
+
+
+def _mostly_on(joints: frozenset[str], parts: list[set[str]]) -> bool:
+    """More than half of ``joints`` are joints of one of ``parts``."""
+    return any(2 * len(joints & part) > len(joints) for part in parts)
 
 
 def hand_effectors(body: Body, srdf: Srdf, urdf: Urdf | None = None) -> tuple[EndEffector, ...]:

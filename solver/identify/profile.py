@@ -138,6 +138,7 @@ CONTROL_SOURCES = (
     "srdf_group",
     "srdf_end_effector",
     "wheels",
+    "planar_base",
     "thrusters",
     "arm",
     "arm_gripper",

@@ -78,6 +78,11 @@ class RoleReader:
         for part, pattern in self.profile.plugins:
             if pattern.search(f"{plugin.name} {plugin.filename}"):
                 found.add(part)
+        # A plugin that lists thruster entries drives thrusters, whatever it is called (a
+        # floating body's controller with a <thruster> per propeller).
+        thruster = self.profile.plugin_pattern("thruster")
+        if thruster is not None and any(thruster.search(group) for group in plugin.groups):
+            found.add("thruster")
         if "flight" in found:
             found.discard("drive")  # a multicopter's velocity control flies it
         return frozenset(found)

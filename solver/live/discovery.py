@@ -2,7 +2,9 @@
 
 *Robots.* Every namespace holding a ``robot_description`` parameter is one robot, named by the
 namespace (``/uav1``); the root namespace's ``/robot_description`` is the robot ``/`` of a
-single-robot system. ``robot_description_semantic`` beside it (MoveIt's SRDF) is read too.
+single-robot system. ``robot_description_semantic`` beside it (MoveIt's SRDF) is read too, and
+so is ``teleop_description`` (the robot's teleoperation description, the YAML text of a
+``ROBOT.teleop.yaml``: :mod:`solver.ros.description`).
 
 *Topics.* A topic belongs to the robot with the deepest namespace that contains it; the root
 robot, if there is one, takes every topic no other robot claims. Names are given to
@@ -44,6 +46,7 @@ __all__ = [
     "DESCRIPTION",
     "ROBOT_VALUES",
     "SEMANTIC",
+    "TELEOP",
     "RobotSource",
     "description_key",
     "discover",
@@ -54,6 +57,7 @@ __all__ = [
 
 DESCRIPTION = "robot_description"
 SEMANTIC = "robot_description_semantic"
+TELEOP = "teleop_description"
 # A robot's own values are under <ns>/teleop_ui/<characteristic>.
 ROBOT_VALUES = "teleop_ui"
 # Names under /teleop_ui that are the operator's or the watchers', not the root robot's.
@@ -63,14 +67,16 @@ _ANY_TYPE = "*"
 
 @dataclass(frozen=True, slots=True)
 class RobotSource:
-    """What the master holds about one robot: its namespace, parameter keys and topics, and
-    its own values' keys (characteristic name, key), sorted by name."""
+    """What the master holds about one robot: its namespace, parameter keys and topics, its
+    own values' keys (characteristic name, key), sorted by name, and the key of its
+    teleoperation description when it has one."""
 
     namespace: str
     description_key: str
     semantic_key: str | None
     topics: tuple[Topic, ...]
     value_keys: tuple[tuple[str, str], ...] = ()
+    teleop_key: str | None = None
 
 
 def normalise_namespace(text: str) -> str:
@@ -200,6 +206,9 @@ def discover(observation: Observation, profile: Profile) -> tuple[RobotSource, .
             else None,
             topics[namespace],
             values[namespace],
+            description_key(namespace, TELEOP)
+            if description_key(namespace, TELEOP) in names
+            else None,
         )
         for namespace in namespaces
     )

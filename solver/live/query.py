@@ -112,13 +112,19 @@ def assign_from_graph(
         solution=solution,
         profile=profile,
         given=own,
+        teleop=MISSING
+        if robot_source.teleop_key is None
+        else source.descriptions.get(robot_source.teleop_key),
     )
+    notes += [f"{where}: {message}" for where, message in live.warnings]
     if live.identification is None:
         raise InputError.at(
             source.name, f"robot {namespace} cannot be identified: {_one_line(live.error)}"
         )
     assignment, chosen = choose(live, values, solution)
-    return LiveAssignment(namespace, assignment, (*notes, *chosen))
+    said = live.identification.disagreements
+    differ = [f"declared and read differ (the declared value wins): {line}" for line in said]
+    return LiveAssignment(namespace, assignment, (*notes, *differ, *chosen))
 
 
 def _keys(robot: RobotSource, solution: Solution) -> list[str]:
@@ -126,6 +132,7 @@ def _keys(robot: RobotSource, solution: Solution) -> list[str]:
     return [
         robot.description_key,
         *([robot.semantic_key] if robot.semantic_key else []),
+        *([robot.teleop_key] if robot.teleop_key else []),
         *(key for name, key in robot.value_keys if name in solution.rules.names),
     ]
 

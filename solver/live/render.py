@@ -89,8 +89,14 @@ def _robot_lines(label: str, robot: LiveRobot, changed: tuple[str, ...] = ()) ->
     if changed:
         head += f"  [changed: {shown(', '.join(changed), limit=None)}]"
     indent = " " * (_WIDTH + 2)
+    declared = [] if found.declared is None else [f"{indent}declared: {shown(found.declared)}"]
     return [
         head,
+        *declared,
+        *(
+            f"{indent}declared and read differ: {shown(line, limit=None)}"
+            for line in found.disagreements
+        ),
         *(
             f"{indent}given: {value.characteristic} {shown(value.value)} ({shown(value.source)})"
             for value in robot.given

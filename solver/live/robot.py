@@ -12,6 +12,15 @@ model) is not parsed again. The cache is asked with a file name that does not de
 namespace (``robot_description``) for that reason; errors are then re-located to the robot's
 own parameter (``/uav1/robot_description:3:5: ...``).
 
+A robot may declare what it is and what drives it: its teleoperation description, the YAML
+text of a ``ROBOT.teleop.yaml`` in ``<ns>/teleop_description``
+(:mod:`solver.live.discovery`). Its declared values win over what identification read or
+guessed, and where the two differ each difference is in the robot's event
+(``disagreements``), as ``identify`` says them. The description is a supporting input: one
+that cannot be read (not text, not YAML, not a description, past ``description-bytes`` or
+``description-entries``) is a located warning (:attr:`LiveRobot.warnings`, which the watcher
+reports as ``warning`` events and ``assign`` as notes), and what identification read stands.
+
 A description that cannot be identified (not text, malformed XML, a broken tree, larger than
 the reader's cap, or anything the readers did not expect to raise) gives a :class:`LiveRobot`
 with the error and no combinations: the robot is still reported, and the others are not
@@ -27,7 +36,7 @@ import dataclasses
 from dataclasses import dataclass
 from typing import Any
 
-from solver.errors import SolverError
+from solver.errors import Fault, SolverError
 from solver.identify.combinations import Combination, combinations, missing
 from solver.identify.identification import Identification, IdentificationCache, TopicSource
 from solver.identify.profile import Profile
@@ -35,6 +44,7 @@ from solver.identify.render import summary_data
 from solver.live.discovery import RobotSource
 from solver.live.given import GivenValue, how_to_give
 from solver.live.graph import MISSING
+from solver.ros.description import TeleopDescription, parse_description_text
 from solver.ros.names import Topic
 from solver.solving.solution import Solution
 
@@ -59,6 +69,8 @@ class LiveRobot:
     topics: tuple[Topic, ...] = ()
     given: tuple[GivenValue, ...] = ()
     missing: tuple[tuple[str, str], ...] = ()
+    # (where, message) of each problem of a teleoperation description that was not used.
+    warnings: tuple[tuple[str, str], ...] = ()
 
     def graph_topics(self) -> tuple[Topic, ...]:
         """The robot's topics with their full names on the graph (``/uav1/camera/image_raw``)."""
@@ -95,6 +107,43 @@ def _relocated(error: SolverError, description: str, semantic: str | None) -> st
     return "\n".join(lines)
 
 
+def declared_description(
+    key: str | None, value: Any
+) -> tuple[TeleopDescription | None, tuple[tuple[str, str], ...]]:
+    """The teleoperation description in ``value`` (the text of the parameter or topic
+    ``key``), or ``None`` and each of its problems as (where, message): a warning, never the
+    robot's error."""
+    if key is None or value is MISSING:
+        return None, ()
+    if isinstance(value, SolverError):  # a source that could not read the value says why
+        return None, _unused(value.faults)
+    if not isinstance(value, str):
+        kind = "a namespace of parameters" if isinstance(value, dict) else type(value).__name__
+        return None, (
+            (key, f"expected a teleoperation description (YAML text), got {kind}{_UNUSED}"),
+        )
+    try:
+        return parse_description_text(value, key), ()
+    except SolverError as error:
+        return None, _unused(error.faults)
+    except Exception as error:  # the per-robot boundary, as for its URDF
+        return None, ((key, unexpected_error(key, error) + _UNUSED),)
+
+
+_UNUSED = "; not used: what identification read stands"
+
+
+def _unused(faults: tuple[Fault, ...]) -> tuple[tuple[str, str], ...]:
+    """Each fault as (where, message): the file and line, then the field and the problem."""
+    return tuple(
+        (
+            str(f.location),
+            (f"{f.location.path}: " if f.location.path else "") + f.message + _UNUSED,
+        )
+        for f in faults
+    )
+
+
 def identify_robot(
     source: RobotSource,
     description: Any,
@@ -104,11 +153,14 @@ def identify_robot(
     solution: Solution,
     profile: Profile,
     given: tuple[GivenValue, ...] = (),
+    teleop: Any = MISSING,
 ) -> LiveRobot:
     """The robot ``source`` describes, from its parameter values (``robot_description``,
-    ``robot_description_semantic`` or :data:`MISSING`), topics and ``given`` values (names the
-    rules have; the later of two for one name wins); never raises for input."""
+    ``robot_description_semantic``, ``teleop_description`` or :data:`MISSING`), topics and
+    ``given`` values (names the rules have; the later of two for one name wins); never raises
+    for input."""
     namespace = source.namespace
+    declared, flaws = declared_description(source.teleop_key, teleop)
     try:
         text = _text(description, source.description_key)
         srdf = (
@@ -123,6 +175,7 @@ def identify_robot(
             rules=solution.rules,
             profile=profile,
             file=_FILE,
+            description=declared,
         )
         values = {value.characteristic: value.value for value in given}
         found = combinations(identification, solution, profile, values)
@@ -142,7 +195,13 @@ def identify_robot(
     )
     kept = tuple({value.characteristic: value for value in given}.values())
     return LiveRobot(
-        namespace, identification, found, topics=source.topics, given=kept, missing=lacking
+        namespace,
+        identification,
+        found,
+        topics=source.topics,
+        given=kept,
+        missing=lacking,
+        warnings=flaws,
     )
 
 
@@ -153,10 +212,19 @@ def unexpected_error(key: str, error: BaseException) -> str:
 
 
 def robot_data(robot: LiveRobot) -> dict[str, Any]:
-    """The robot fields of a ``robot_added`` / ``robot_changed`` event (see docs/live.md)."""
+    """The robot fields of a ``robot_added`` / ``robot_changed`` event (see docs/live.md):
+    ``declared`` and ``disagreements`` only for a robot whose teleoperation description was
+    read."""
+    found = robot.identification
+    declared = (
+        {"declared": found.declared, "disagreements": list(found.disagreements)}
+        if found is not None and found.declared is not None
+        else {}
+    )
     return {
         "robot": robot.namespace,
         **summary_data(robot.identification),
+        **declared,
         "given": {
             value.characteristic: {"value": value.value, "source": value.source}
             for value in robot.given

@@ -151,7 +151,7 @@ class _Restarted(MasterError):
 
 @dataclass(frozen=True, slots=True)
 class _Tracked:
-    inputs: tuple[Any, Any, tuple[Topic, ...], tuple[GivenValue, ...]]
+    inputs: tuple[Any, Any, Any, tuple[Topic, ...], tuple[GivenValue, ...]]
     robot: LiveRobot
     data: dict[str, Any]
 
@@ -480,29 +480,27 @@ class Watcher:
         self.descriptions.sync(
             [s.description_key for s in sources]
             + [s.semantic_key for s in sources if s.semantic_key is not None]
+            + [s.teleop_key for s in sources if s.teleop_key is not None]
             + [key for s in sources for name, key in s.value_keys if name in rules.names]
         )
         robots: dict[str, _Tracked] = {}
         changes: list[Event] = []
         warnings: list[tuple[str, str]] = []
         for source in sources:
-            description = self.descriptions.get(source.description_key)
+            description, semantic, teleop = self._values(source)
             if description is MISSING:
                 continue  # deleted since the names were read: the next poll removes it
-            semantic = (
-                MISSING
-                if source.semantic_key is None
-                else self.descriptions.get(source.semantic_key)
-            )
             own, noted = robot_values(source.value_keys, self.descriptions.get, rules)
             warnings += noted
             given = (*self.fixed.for_robot(source.namespace), *own)
-            inputs = (description, semantic, source.topics, given)
+            inputs = (description, semantic, teleop, source.topics, given)
             old = self._robots.get(source.namespace)
             if old is not None and old.inputs == inputs:
                 robots[source.namespace] = old
+                warnings += old.robot.warnings
                 continue
-            robot, data = self._identify(source, description, semantic, given)
+            robot, data = self._identify(source, (description, semantic, teleop), given)
+            warnings += robot.warnings
             robots[source.namespace] = _Tracked(inputs, robot, data)
             if old is None:
                 changes.append(RobotAdded(0, robot))
@@ -517,6 +515,15 @@ class Watcher:
         self._robot_warnings = warnings
         self._write_layouts(changes)  # before the answer that names them
         return [*removed, *changes, *self._answer(dict(observation.params))]
+
+    def _values(self, source: RobotSource) -> tuple[Any, Any, Any]:
+        """A robot's description, SRDF and teleoperation description as held now (each
+        :data:`MISSING` when it has none)."""
+
+        def held(key: str | None) -> Any:
+            return MISSING if key is None else self.descriptions.get(key)
+
+        return held(source.description_key), held(source.semantic_key), held(source.teleop_key)
 
     def _write_layouts(self, changes: list[Event]) -> None:
         """The robots' layouts (``layouts``), those of the robots in ``changes`` again."""
@@ -554,9 +561,14 @@ class Watcher:
         return list(new)
 
     def _identify(
-        self, source: RobotSource, description: Any, semantic: Any, given: tuple[GivenValue, ...]
+        self,
+        source: RobotSource,
+        values: tuple[Any, Any, Any],
+        given: tuple[GivenValue, ...],
     ) -> tuple[LiveRobot, dict[str, Any]]:
-        """One robot and its event fields; whatever goes wrong stays that robot's error."""
+        """One robot and its event fields, from its description, SRDF and teleoperation
+        description (``values``); whatever goes wrong stays that robot's error."""
+        description, semantic, teleop = values
         try:
             robot = identify_robot(
                 source,
@@ -566,6 +578,7 @@ class Watcher:
                 solution=self.solution,
                 profile=self.profile,
                 given=given,
+                teleop=teleop,
             )
             return robot, robot_data(robot)
         except Exception as error:  # the per-robot boundary

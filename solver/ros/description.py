@@ -24,8 +24,13 @@ of the wrong type, a topic that is no full ROS name, a message type of no ``pkg/
 two entries for one control, more entries than the ``description-entries`` limit. Nothing in
 the file runs or is looked up: names are data.
 
+A robot on a live graph may carry its description as text (a parameter or topic
+``<ns>/teleop_description`` beside ``robot_description``): :func:`parse_description_text` reads
+it, at most ``description-bytes`` characters.
+
 Not here: what the declared values mean for a robot (``solver.identify.declared``), drafting
-one (``identify --describe``), checking one (``teleop-ui check``).
+one (``identify --describe``), checking one (``teleop-ui check``), reading one from a live
+graph (``solver.live.robot``).
 """
 
 from __future__ import annotations
@@ -36,7 +41,7 @@ from pathlib import Path
 
 from solver.errors import InputError, Location
 from solver.files.reader import Reader, type_name
-from solver.files.yamlio import Document, load_document
+from solver.files.yamlio import Document, load_document, parse_document
 from solver.limits import limit
 from solver.ros.names import full_topic_name_problem
 from solver.untrusted import shown
@@ -53,6 +58,7 @@ __all__ = [
     "description_beside",
     "load_description",
     "parse_description",
+    "parse_description_text",
 ]
 
 # The top-level key that makes a file a teleoperation description, and the version read.
@@ -153,6 +159,14 @@ def description_beside(robot_file: str | Path) -> Path:
 def load_description(path: str | Path, *, display: str | None = None) -> TeleopDescription:
     """Read the description at ``path`` (bounded, safe YAML); :class:`InputError` if not."""
     return parse_description(load_document(path, display=display))
+
+
+def parse_description_text(text: str, file: str) -> TeleopDescription:
+    """The description in ``text`` from a live graph (a ``<ns>/teleop_description`` parameter
+    or topic, named ``file``): at most ``description-bytes`` characters, refused before it is
+    parsed (:class:`~solver.errors.TooLargeError`); then as :func:`parse_description`."""
+    limit("description-bytes").check(len(text), file, noun="characters")
+    return parse_description(parse_document(text, file))
 
 
 def parse_description(document: Document) -> TeleopDescription:

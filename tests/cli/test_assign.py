@@ -11,7 +11,13 @@ from pathlib import Path
 from solver.live.graph import MISSING
 from solver.solving.solution import Solution
 from tests.conftest import ROOT, run_cli
-from tests.live.fleet import drone_configuration, put_drone, put_rover, rover_configuration
+from tests.live.fleet import (
+    drone_configuration,
+    expected,
+    put_drone,
+    put_rover,
+    rover_configuration,
+)
 from tests.live.ros2_graph import Domain
 from tests.live.roscore import Roscore, TestNode
 
@@ -110,6 +116,42 @@ def test_assign_reads_the_robot_from_the_master(
         "  note: /uav1 does not offer motion_control 'Waypoint' (it "
         "has Flight); using it as asked\n"
     )
+
+
+def test_assign_reads_a_robots_declared_description_and_says_where_it_differs(
+    master: Roscore, node: TestNode, solution: Solution
+) -> None:
+    put_rover(node, "/ugv1")  # its topics show Driving
+    node.set_param(
+        "/ugv1/teleop_description",
+        "teleop: 1\nmotion_controls:\n  - {control: Waypoint, action: /ugv1/navigate_to_pose}\n",
+    )
+    put_rover(node, "/ugv2")
+    node.set_param("/ugv2/teleop_description", "teleop: 2\n")
+    ask = ("assign", "--master", master.uri, "--team", "case3", "-f", "json", "--robot")
+    declared = run_cli(*ask, "/ugv1")
+    assert declared.returncode == 0, declared.stderr
+    data = json.loads(declared.stdout)
+    assert data["combination"]["motion_control"] == "Waypoint"
+    assert data["configuration"] == expected(
+        solution,
+        kinematic_type="UGV",
+        motion_control="Waypoint",
+        sensor_type="LIDAR",
+        sensor_count="1",
+    )
+    said = [note for note in data["notes"] if note.startswith("declared and read differ")]
+    assert [note.split(": ")[1] for note in said] == [
+        "motion control Driving",
+        "motion control Waypoint",
+    ]
+    hostile = run_cli(*ask, "/ugv2")
+    assert hostile.returncode == 0, hostile.stderr
+    data = json.loads(hostile.stdout)
+    assert data["configuration"] == rover_configuration(solution)
+    [note] = data["notes"]
+    assert note.startswith("/ugv2/teleop_description:1:")
+    assert note.endswith("; not used: what identification read stands")
 
 
 def test_assign_reads_with_the_profile_given(

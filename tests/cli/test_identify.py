@@ -170,6 +170,62 @@ def test_describe_drafts_a_description_check_accepts_and_identify_reads_back(
     assert run_cli("identify", urdf, "--describe").stdout == draft.stdout
 
 
+def _characteristics(data: dict[str, object]) -> tuple[object, ...]:
+    sensors = data["sensors"]
+    controls = data["motion_controls"]
+    assert isinstance(sensors, list)
+    assert isinstance(controls, list)
+    return (
+        data["kinematic_type"],
+        sorted(c["motion_control"] for c in controls),
+        sorted((s["kind"], s["sensor_type"], s["count"]) for s in sensors),
+    )
+
+
+def _rover_with_sensors() -> builders.RobotText:
+    robot = builders.ugv()
+    robot.add(builders.gazebo_sensor("base_link", "ray", "laser"))
+    robot.add(builders.gazebo_sensor("base_link", "camera", "front_camera"))
+    robot.add(builders.gazebo_sensor("base_link", "imu", "imu"))
+    return robot
+
+
+ROUND_TRIP = {
+    "a rover with a lidar, a camera and an IMU": (_rover_with_sensors, ()),
+    "a mobile manipulator": (builders.mobile_manipulator, ()),
+    "a quadruped": (builders.quadruped, ()),
+    "a surface vessel under the marine rules": (
+        builders.surface_vessel,
+        ("--rules", str(ROOT / "rules" / "marine.yaml")),
+    ),
+}
+
+
+@pytest.mark.parametrize(("make", "options"), ROUND_TRIP.values(), ids=ROUND_TRIP.keys())
+def test_a_draft_checks_clean_and_read_with_teleop_gives_the_same_characteristics(
+    make: object, options: tuple[str, ...], tmp_path: Path
+) -> None:
+    assert callable(make)
+    urdf = tmp_path / "robot.urdf"
+    urdf.write_text(make().text(), encoding="utf-8")
+    first = json.loads(run_cli("identify", urdf, *options, "--format", "json").stdout)
+    draft = run_cli("identify", urdf, *options, "--describe")
+    assert draft.returncode == 0, draft.stderr
+    elsewhere = tmp_path / "drafts" / "robot.yaml"  # not beside the URDF: only --teleop reads it
+    elsewhere.parent.mkdir()
+    elsewhere.write_text(draft.stdout, encoding="utf-8")
+    checked = run_cli("check", elsewhere)
+    assert (checked.returncode, checked.stdout.strip()) == (
+        0,
+        "1 file checked: 0 errors, 0 warnings, 0 info",
+    )
+    again = run_cli("identify", urdf, *options, "--teleop", elsewhere, "--format", "json")
+    data = json.loads(again.stdout)
+    assert data["declared"] == str(elsewhere)
+    assert "disagreements" not in data  # present only when the two differ
+    assert _characteristics(data) == _characteristics(first)
+
+
 def test_teleop_names_a_description_whose_declared_values_win_and_differences_show(
     tmp_path: Path,
 ) -> None:

@@ -6,6 +6,7 @@ from __future__ import annotations
 from hypothesis import given
 
 from solver.errors import SolverError
+from solver.files.yamlio import parse_document
 from solver.identify import (
     IdentificationCache,
     Topic,
@@ -14,6 +15,7 @@ from solver.identify import (
     identify_urdf,
     load_profile,
 )
+from solver.ros.description import TeleopDescription, parse_description
 from tests.hostile import FUZZ, mutations
 from tests.identify import builders
 
@@ -96,3 +98,19 @@ def test_an_srdf_whose_comment_xml_rejects_is_a_located_warning_the_urdf_read_al
     (warning,) = result.warnings
     assert (warning.location.file, warning.location.line) == ("arm6.srdf", 3)
     assert warning.message.endswith("(the SRDF is not read; the URDF alone is)")
+
+
+def test_the_cache_tells_robots_apart_by_their_declared_description() -> None:
+    def declared(control: str) -> TeleopDescription:
+        text = f"teleop: 1\nmotion_controls:\n  - {{control: {control}, topic: /cmd_vel}}\n"
+        return parse_description(parse_document(text, "r.teleop.yaml"))
+
+    cache = IdentificationCache()
+    text = builders.ugv().text()
+    plain = cache.identify_urdf(text)
+    flying = cache.identify_urdf(text, description=declared("Flight"))
+    again = cache.identify_urdf(text, description=declared("Flight"))
+    assert [c.motion_control for c in plain.motion_controls] == ["Driving"]
+    assert [c.motion_control for c in flying.motion_controls] == ["Flight"]
+    assert again is flying
+    assert (cache.misses, cache.hits) == (2, 1)

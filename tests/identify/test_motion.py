@@ -170,6 +170,7 @@ def test_a_vehicle_in_water_with_a_doppler_velocity_log_could_follow_waypoints()
     assert "Waypoint" not in controls(builders.underwater_vehicle())
 
 
+LIMIT = '<limit lower="-10" upper="10" effort="1" velocity="1"/>'
 GPS = builders.gazebo_sensor("gps_link", "gps", "gps")
 
 
@@ -181,15 +182,27 @@ def test_a_driven_base_with_a_gps_could_follow_waypoints_outdoors() -> None:
 
 @pytest.mark.parametrize(
     "build",
-    [builders.surface_vessel, builders.underwater_vehicle, builders.quadrotor],
-    ids=["vessel", "underwater", "multirotor"],
+    [builders.surface_vessel, builders.underwater_vehicle],
+    ids=["vessel", "underwater"],
 )
-def test_a_gps_on_a_vessel_or_an_aircraft_shows_no_waypoints(
+def test_a_gps_on_a_vessel_shows_no_waypoints(
     build: Callable[[], RobotText],
 ) -> None:
-    # Every autopilot carries a GPS: by itself it is no sign of navigation software.
+    # A GPS fixes a vessel only at the surface: by itself it is no sign of navigation software.
     robot = build()
     robot.add(GPS)
+    assert "Waypoint" not in controls(robot)
+
+
+def test_a_multirotor_with_a_gps_could_fly_missions_of_waypoints() -> None:
+    robot = builders.quadrotor()
+    robot.add(GPS)
+    assert controls(robot)["Waypoint"] == GUESS.format("Flight", "gps")
+
+
+def test_a_multirotor_with_neither_odometry_nor_a_gps_shows_no_waypoints() -> None:
+    robot = builders.quadrotor()
+    robot.add(builders.gazebo_sensor("camera_link", "camera", "camera"))
     assert "Waypoint" not in controls(robot)
 
 
@@ -264,3 +277,33 @@ def test_gazebo_sim_spellings_of_drive_and_flight_plugins_are_read(
     found = controls(robot)
     assert control in found
     assert ({"Driving", "Flight"} - {control}).isdisjoint(found)
+
+
+def test_a_plugin_listing_thruster_entries_drives_a_vessel_whatever_it_is_called() -> None:
+    robot = builders.RobotText("boat")
+    robot.joint("fwd_joint", "revolute", robot.root, "fwd", '<limit lower="-0.5" upper="0.5"/>')
+    robot.fixed(robot.root, "aft")
+    robot.add(
+        builders.model_plugin(
+            "body_control",
+            "libfloating_body_control.so",
+            "<thruster><name>fwd</name></thruster><thruster><name>aft</name></thruster>",
+        )
+    )
+    found = identify_urdf(robot.text())
+    assert found.structure in ("Surface Vessel", "Underwater Vehicle")
+    assert found.body is not None
+    assert found.body.thrusters
+    assert "Driving" in {c.motion_control for c in found.motion_controls}
+    # The same plugin with a list of anything else drives nothing.
+    other = robot.text().replace("thruster>", "light>")
+    assert "Driving" not in {c.motion_control for c in identify_urdf(other).motion_controls}
+
+
+def test_a_base_the_model_moves_in_the_plane_is_driven() -> None:
+    robot = builders.RobotText("omni", root="world")
+    link = robot.joint("base_x", "prismatic", "world", "x_link", '<axis xyz="1 0 0"/>' + LIMIT)
+    link = robot.joint("base_y", "prismatic", link, "y_link", '<axis xyz="0 1 0"/>' + LIMIT)
+    link = robot.joint("base_yaw", "continuous", link, "base_link", '<axis xyz="0 0 1"/>')
+    robot.fixed(link, "front_left_wheel")
+    assert controls(robot) == {"Driving": "urdf: a base moved in the plane"}

@@ -60,3 +60,18 @@ def test_many_copies_of_one_arm_group_plan_one_arm_and_the_rest_are_not_read() -
     result = identify_urdf(builders.manipulator().text(), srdf_text=f"<robot>{copies}</robot>")
     assert any(e.startswith("SRDF: 1 arm planning group(s) (copy0)") for e in result.evidence)
     assert result.confidence == identify_urdf(builders.manipulator().text()).confidence
+
+
+def test_groups_that_point_a_sensor_or_spin_a_lidar_plan_no_arm() -> None:
+    robot = builders.mobile_manipulator()  # its head pans and tilts on the torso lift
+    robot.chain(robot.root, ["lidar_motor_joint"], "continuous")
+    groups = (
+        '<group name="head"><chain base_link="base_link" tip_link="head_tilt_link"/></group>'
+        '<group name="spinner"><chain base_link="base_link" tip_link="lidar_motor_joint_link"/>'
+        "</group>"
+    )
+    plain = identify_urdf(robot.text())
+    planned = identify_urdf(robot.text(), srdf_text=f'<robot name="r">{groups}</robot>')
+    assert "SRDF: 0 arm planning group(s)" in planned.evidence
+    assert planned.confidence == plain.confidence
+    assert planned.motion_controls == plain.motion_controls

@@ -86,7 +86,7 @@ def test_the_navigation_guess_is_optional_and_its_fields_are_checked() -> None:
     shipped = load_profile().navigation
     assert shipped is not None
     assert shipped.control == "Waypoint"
-    assert dict(shipped.needs)["flight"] == ("odometry",)
+    assert dict(shipped.needs)["flight"] == ("odometry", "gps")
     assert dict(shipped.needs)["wheels"] == ("lidar", "gps")
     text = SHIPPED.replace("    control: Waypoint\n", "    control: Waypoint\n    guess: yes\n")
     with pytest.raises(ProfileError) as caught:

@@ -165,6 +165,23 @@ def test_discover_finds_the_moveit_semantic_description_beside_the_urdf(profile:
     assert (uav.namespace, uav.semantic_key) == ("/uav1", None)
 
 
+def test_discover_finds_a_teleoperation_description_beside_the_urdf(profile: Profile) -> None:
+    seen = observation(
+        {},
+        {},
+        {},
+        [
+            "/ugv1/robot_description",
+            "/ugv1/teleop_description",
+            "/ugv2/robot_description",
+            "/lost/teleop_description",  # no robot_description: no robot
+        ],
+    )
+    ugv1, ugv2 = discover(seen, profile)
+    assert (ugv1.namespace, ugv1.teleop_key) == ("/ugv1", "/ugv1/teleop_description")
+    assert (ugv2.namespace, ugv2.teleop_key) == ("/ugv2", None)
+
+
 @NO_DEADLINE
 @given(
     st.lists(_namespace, min_size=1, max_size=5, unique=True),

@@ -250,3 +250,31 @@ def test_without_layouts_events_name_none_and_with_them_say_there_are_none(
         "selection       no active robot (set /teleop_ui/active_robot)",
         "layout          (no layout)",
     ]
+
+
+def test_a_declared_robot_says_its_description_and_each_difference_on_a_line(
+    solution: Solution, profile: Profile
+) -> None:
+    source = RobotSource(
+        "/uav1", "/uav1/robot_description", None, (), teleop_key="/uav1/teleop_description"
+    )
+    robot = identify_robot(
+        source,
+        drone_text(),
+        cache=IdentificationCache(),
+        solution=solution,
+        profile=profile,
+        teleop="teleop: 1\nmotion_controls:\n  - {control: Waypoint, action: /uav1/go}\n",
+    )
+    data = event_data(RobotAdded(1, robot), solution)
+    assert data["declared"] == "/uav1/teleop_description"
+    assert len(data["disagreements"]) == 2
+    lines = text_lines(RobotAdded(1, robot))
+    assert lines[1] == "                  declared: /uav1/teleop_description"
+    assert [line.split(": ")[1] for line in lines[2:4]] == [
+        "motion control Flight",
+        "motion control Waypoint",
+    ]
+    assert all(
+        line.startswith("                  declared and read differ: ") for line in lines[2:4]
+    )

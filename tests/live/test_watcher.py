@@ -537,3 +537,74 @@ def test_a_switch_is_answered_from_teleop_ui_alone_and_the_graph_waits_for_its_p
     assert changed["kinematic_type"] == "UGV"
     rover = watch.wait_for_event("robot_changed", "/ugv1", after=mark)
     assert [c["motion_control"] for c in rover["motion_controls"]] == ["Driving", "Waypoint"]
+
+
+# A rover's own teleoperation description: it is driven to waypoints, not by velocity.
+DECLARED = (
+    "teleop: 1\nmotion_controls:\n  - control: Waypoint\n    action: /ugv1/navigate_to_pose\n"
+)
+
+
+def test_a_declared_teleoperation_description_wins_and_a_hostile_one_leaves_the_guess(
+    master: Roscore, node: TestNode, start_watcher: Start, solution: Solution
+) -> None:
+    put_rover(node, "/ugv1")  # read from its topics: Driving
+    node.set_param("/ugv1/teleop_description", DECLARED)
+    watch = start_watcher(master.uri)
+    added = watch.wait_for_event("robot_added", "/ugv1")
+    assert [c["motion_control"] for c in added["motion_controls"]] == ["Waypoint"]
+    assert added["motion_controls"][0]["source"].endswith(": action /ugv1/navigate_to_pose")
+    assert added["declared"] == "/ugv1/teleop_description"
+    [dropped, kept] = added["disagreements"]
+    assert dropped.startswith("motion control Driving: read (")
+    assert dropped.endswith("left out")
+    assert kept.startswith("motion control Waypoint: declared (")
+    assert kept.endswith("kept")
+    assert added["combinations"][0]["configuration"] == expected(
+        solution,
+        kinematic_type="UGV",
+        motion_control="Waypoint",
+        sensor_type="LIDAR",
+        sensor_count="1",
+    )
+    # A hostile description (a topic that is no ROS name, a command in it) is a located
+    # warning: the robot is what its topics show again.
+    mark = watch.mark()
+    node.set_param(
+        "/ugv1/teleop_description",
+        "teleop: 1\nmotion_controls:\n  - {control: Driving, topic: $(rm -rf ~)}\n",
+    )
+    changed = watch.wait_for_event("robot_changed", "/ugv1", after=mark)
+    assert [c["motion_control"] for c in changed["motion_controls"]] == ["Driving"]
+    assert "declared" not in changed
+    assert changed["combinations"][0]["configuration"] == rover_configuration(solution)
+    warning = watch.wait_for_event("warning", after=mark)
+    assert warning["where"].startswith("/ugv1/teleop_description:3:")
+    assert warning["message"].startswith("motion_controls[0].topic: ")
+    assert warning["message"].endswith("; not used: what identification read stands")
+
+
+def test_a_teleoperation_description_past_its_bound_or_not_text_is_a_warning_only(
+    master: Roscore, node: TestNode, start_watcher: Start, solution: Solution
+) -> None:
+    put_rover(node, "/ugv1")
+    put_rover(node, "/ugv2")
+    node.set_param("/ugv1/teleop_description", "teleop: 1\n#" + "x" * (1 << 20))
+    node.set_param("/ugv2/teleop_description", 42)
+    watch = start_watcher(master.uri)
+    for namespace in ("/ugv1", "/ugv2"):
+        robot = watch.wait_for_event("robot_added", namespace)
+        assert robot["error"] is None
+        assert robot["combinations"][0]["configuration"] == rover_configuration(solution)
+    too_long = watch.wait_for(
+        lambda d: d["event"] == "warning" and d["where"] == "/ugv1/teleop_description",
+        "the warning about /ugv1",
+    )
+    assert "limit 'description-bytes'" in too_long["message"]
+    not_text = watch.wait_for(
+        lambda d: d["event"] == "warning" and d["where"] == "/ugv2/teleop_description",
+        "the warning about /ugv2",
+    )
+    assert not_text["message"].startswith(
+        "expected a teleoperation description (YAML text), got int"
+    )

@@ -17,6 +17,7 @@ from solver.ros.description import (
     description_beside,
     load_description,
     parse_description,
+    parse_description_text,
 )
 
 ROVER = """\
@@ -161,3 +162,17 @@ def test_a_declared_control_is_a_frozen_value() -> None:
     assert isinstance(control, DeclaredControl)
     with pytest.raises(AttributeError):
         control.name = "/other"  # type: ignore[misc]  # frozen: the test checks it refuses
+
+
+def test_a_description_from_a_live_graph_is_read_up_to_its_bound_and_refused_past_it() -> None:
+    bound = limit("description-bytes").value
+    text = ROVER + "#" * (bound - len(ROVER))
+    assert len(text) == bound
+    assert parse_description_text(text, "/ugv1/teleop_description") == read(
+        text, "/ugv1/teleop_description"
+    )
+    with pytest.raises(TooLargeError) as caught:
+        parse_description_text(text + "#", "/ugv1/teleop_description")
+    [fault] = caught.value.faults
+    assert fault.location.file == "/ugv1/teleop_description"
+    assert "limit 'description-bytes'" in fault.message

@@ -108,6 +108,9 @@ class PluginTag:
     line: int | None = None
     # (tag, text) of the plugin's simple child elements: topics, frames, joint names.
     params: tuple[tuple[str, str], ...] = ()
+    # Names of the elements inside the plugin that hold elements of their own (a
+    # ``<thruster>`` entry of a thruster list), each once, in document order.
+    groups: tuple[str, ...] = ()
 
     def param(self, *tags: str) -> str | None:
         """The text of the first of ``tags`` the plugin sets (case-insensitive)."""
@@ -692,10 +695,16 @@ def _uncompiled_xacro(root: etree._Element, file: str) -> list[Fault]:
 
 def _plugin(element: etree._Element, reference: str | None) -> PluginTag:
     params: list[tuple[str, str]] = []
+    groups: dict[str, None] = {}
     for child in element.iterdescendants():
         if len(params) >= _MAX_PARAMS:
             break
-        if isinstance(child.tag, str) and len(child) == 0 and child.text and child.text.strip():
+        if not isinstance(child.tag, str):
+            continue
+        if len(child) > 0:
+            if len(groups) < _MAX_PARAMS:
+                groups.setdefault(child.tag[:_MAX_PARAM_TEXT])
+        elif child.text and child.text.strip():
             params.append((child.tag, child.text.strip()[:_MAX_PARAM_TEXT]))
     return PluginTag(
         (element.get("name") or "").strip(),
@@ -703,6 +712,7 @@ def _plugin(element: etree._Element, reference: str | None) -> PluginTag:
         reference,
         line_of(element),
         tuple(params),
+        tuple(groups),
     )
 
 

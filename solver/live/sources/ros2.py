@@ -17,6 +17,8 @@ the rmw sources define it; this module reads that mapping back:
   each with a reader of its own, and matched on the first 16 bytes;
 * ``robot_state_publisher`` publishes ``/<ns>/robot_description`` (``std_msgs/msg/String``)
   reliable and transient-local, once: the reader here asks for transient-local to get it late.
+  A robot's teleoperation description is read the same way, from a latched String topic
+  ``/<ns>/teleop_description`` beside it.
 
 Robots are then found as on a ROS 1 master: the graph is turned into the neutral
 :class:`~solver.live.graph.Observation` (a written ``rt/<ns>/robot_description`` stands for the
@@ -672,16 +674,21 @@ def _participant_of(watcher: str) -> bytes | None:
         return None
 
 
+# String topics that stand for a robot's parameters of these names (solver.live.discovery).
+_DESCRIPTIONS = ("robot_description", "teleop_description")
+
+
 def _parameter_like(name: str, type_name: str) -> bool:
-    """A String topic standing for a parameter: a description, or a robot's own value."""
+    """A String topic standing for a parameter: a description (the URDF, or the robot's
+    teleoperation description), or a robot's own value."""
     if type_name != _STRING:
         return False
     parts = name.strip("/").split("/")
-    return parts[-1] == "robot_description" or (len(parts) >= 2 and parts[-2] == "teleop_ui")
+    return parts[-1] in _DESCRIPTIONS or (len(parts) >= 2 and parts[-2] == "teleop_ui")
 
 
 def _followed(name: str) -> bool:
     """What a one-shot look reads before it reports: descriptions and robots' own values."""
-    return name.endswith("/robot_description") or (
+    return name.endswith(tuple(f"/{d}" for d in _DESCRIPTIONS)) or (
         "/teleop_ui/" in name and not name.startswith("/teleop_ui/")
     )

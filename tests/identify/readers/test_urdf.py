@@ -123,3 +123,19 @@ def test_the_cli_with_strict_reports_flawed_urdfs_with_exit_2(
     assert str(path) in result.stderr
     assert "Traceback" not in result.stderr
     assert result.stdout == ""
+
+
+def test_a_plugins_entries_are_named_once_each_and_bounded() -> None:
+    robot = builders.ugv()
+    entries = "".join(f"<entry_{k}><empty/></entry_{k}>" for k in range(1000))
+    robot.add(
+        builders.model_plugin(
+            "control",
+            "libcontrol.so",
+            "<thruster><name>a</name></thruster><thruster><name>b</name></thruster>" + entries,
+        )
+    )
+    plugin = parse_urdf(robot.text(), "rover.urdf").plugins[0]
+    assert plugin.groups[:2] == ("thruster", "entry_0")
+    assert len(plugin.groups) == 400  # the reader keeps at most this many
+    assert ("name", "a") in plugin.params

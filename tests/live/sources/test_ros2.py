@@ -19,7 +19,7 @@ from solver.live.sources.ros2 import DdsGraph, dds_type, ros_name, ros_type
 from solver.live.watcher import Watcher
 from solver.solving.solution import Solution
 from tests.live.conftest import Recorder
-from tests.live.fleet import drone_configuration, drone_text, rover_configuration
+from tests.live.fleet import drone_configuration, drone_text, expected, rover_configuration
 from tests.live.ros2_graph import Domain, Operator
 from tests.live.roscore import wait_until
 
@@ -522,3 +522,43 @@ def test_two_watchers_with_different_teams_report_each_other_and_one_answer_stan
         assert taken["team"] == "Other live team"
     finally:
         operator.close()
+
+
+# An alias bomb: nine levels of nine references, a billion strings once expanded.
+BOMB = "teleop: 1\na0: &a0 [x]\n" + "".join(
+    f"a{k}: &a{k} [{', '.join([f'*a{k - 1}'] * 9)}]\n" for k in range(1, 10)
+)
+
+
+def test_a_latched_teleoperation_description_beside_the_robot_wins_and_a_bomb_is_a_warning(
+    domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution
+) -> None:
+    rover = domain.rover("/ugv1")  # read from its topics: Driving
+    rover.latch(
+        "/ugv1/teleop_description",
+        "teleop: 1\nmotion_controls:\n  - {control: Waypoint, action: /ugv1/navigate_to_pose}\n",
+    )
+    other = domain.rover("/ugv2", gid_size=24)
+    other.latch("/ugv2/teleop_description", BOMB)
+    watch = watch_ros2()
+    declared = expected(
+        solution,
+        kinematic_type="UGV",
+        motion_control="Waypoint",
+        sensor_type="LIDAR",
+        sensor_count="1",
+    )
+    added = watch.wait_for(configured("/ugv1", declared), "/ugv1 as declared")
+    assert [c["motion_control"] for c in added["motion_controls"]] == ["Waypoint"]
+    assert added["declared"] == "/ugv1/teleop_description"
+    assert [line.split(":")[0] for line in added["disagreements"]] == [
+        "motion control Driving",
+        "motion control Waypoint",
+    ]
+    guessed = watch.wait_for(configured("/ugv2", rover_configuration(solution)), "/ugv2")
+    assert "declared" not in guessed
+    warning = watch.wait_for(
+        lambda d: d["event"] == "warning" and d["where"].startswith("/ugv2/teleop_description"),
+        "the warning about /ugv2's description",
+    )
+    assert warning["message"].endswith("; not used: what identification read stands")
