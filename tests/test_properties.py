@@ -284,12 +284,20 @@ def test_robots_numbered_from_the_counts_alone_are_numbered_as_the_configuration
 @st.composite
 def overlapping(draw: st.DrawFn) -> Team:
     """Characteristics whose every value is in two components: sliding windows (covers that
-    multiply across characteristics) or a cycle of pairs (odd cycles do not: their product is
-    covered jointly), with random selections and, sometimes, a rule linking two of them."""
+    multiply across characteristics), a cycle of pairs (odd cycles do not: their product is
+    covered jointly) or rings of three components over apart blocks of four values (covered
+    jointly block by block), with random selections and, sometimes, a rule linking two of
+    them."""
     characteristics: dict[str, Any] = {"kind": {"values": ["T0", "T1"]}}
     for j in range(draw(st.integers(2, 3))):
         values = [f"v{j}{k}" for k in range(draw(st.integers(3, 7)))]
-        if draw(st.booleans()):
+        if draw(st.integers(0, 2)) == 0:
+            values = [f"v{j}{k}" for k in range(4 * draw(st.integers(1, 2)))]
+            groups = []
+            for start in range(0, len(values), 4):
+                a, b, c, d = values[start : start + 4]
+                groups += [[a, b, d], [b, c, d], [c, a]]
+        elif draw(st.booleans()):
             width = draw(st.integers(2, 3))
             starts = range(0, max(len(values) - width, 0) + 1, draw(st.integers(1, width - 1)))
             groups = [values[s : s + width] for s in starts]

@@ -31,7 +31,7 @@ from solver.errors import StructureTooComplex
 if TYPE_CHECKING:
     from numpy.typing import NDArray
 
-    from solver.core.cover import Group
+    from solver.core.cover import Group, Pieces
 
     Codes = NDArray[Any]
 
@@ -252,7 +252,9 @@ def _first_of(
 
 
 def _chosen_of(
-    membership: Sequence[tuple[int, ...]], index: Callable[[Value], int | None], group: Group
+    membership: Sequence[tuple[int, ...]],
+    index: Callable[[Value], int | None],
+    group: Group | Pieces,
 ) -> Callable[[Value], int]:
     def chosen(value: Value) -> int:
         position = index(value)

@@ -57,7 +57,7 @@ if TYPE_CHECKING:
     from numpy.typing import NDArray
 
     from solver.core.constraints import Condition
-    from solver.core.cover import Cover, Group
+    from solver.core.cover import Cover, Group, Pieces
 
 __all__ = [
     "BLOCK_LIMIT",
@@ -617,7 +617,7 @@ def _cover_by_block(
     ``None`` when a group spans blocks (the cover is then not a product of the blocks')."""
     place = _numbering(rules)
     home = {place[p]: n for n, block in enumerate(blocks) for p in block.positions}
-    groups: list[list[Group]] = [[] for _ in blocks]
+    groups: list[list[Group | Pieces]] = [[] for _ in blocks]
     for group in cover.groups:
         found = {home[p] for p in group.positions}
         if len(found) > 1:
