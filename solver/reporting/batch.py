@@ -55,7 +55,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, Literal, cast
 
 from solver.core.rules import default_rules_path, shipped_name
-from solver.core.team import parse_team, resolve_team_path
+from solver.core.team import parse_team, resolve_team_path, shipped_rules_path
 from solver.errors import Fault, InputError, Location, SolverError, Terminated
 from solver.files.atomic import link_inside, remove_output, remove_temporaries, write_atomic
 from solver.files.filekind import describe, file_kind, why
@@ -422,7 +422,8 @@ def _rules_file(job: Job, data: Any) -> Path:
     if job.rules is not None:
         return Path(job.rules)
     if isinstance(data, dict) and isinstance(data.get("rules"), str) and data["rules"]:
-        return job.team_file.parent / str(data["rules"])
+        named, folder = str(data["rules"]), job.team_file.parent
+        return shipped_rules_path(named, folder) or folder / named  # `rules: extended`
     return default_rules_path()
 
 

@@ -5,10 +5,12 @@ tested in tests/cli/test_batch.py.
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import pytest
 
+import solver
 from solver.errors import InputError
 from solver.reporting.batch import find_teams, make_jobs, run_batch, summary_csv, write_summary
 from tests.reporting.batches import OWN_TEAM, write_teams
@@ -83,6 +85,23 @@ def test_library_batch_gives_one_outcome_per_team_and_a_summary(
     rows, written = write_summary(outcomes, jobs, tmp_path / "o")
     assert [r.file for r in rows] == [j.shown for j in jobs]
     assert written[0].read_text(encoding="utf-8") == summary_csv(rows)
+
+
+def test_a_team_naming_a_shipped_rule_set_is_stamped_with_that_set_and_skipped_next_time(
+    tmp_path: Path,
+) -> None:
+    folder = tmp_path / "elsewhere"
+    folder.mkdir()
+    (folder / "mine.yaml").write_text(
+        "name: mine\nrules: extended\nteam:\n  UAV: {}\n", encoding="utf-8"
+    )
+    first = list(run_batch(make_jobs(find_teams([str(folder)]), tmp_path / "out"), workers=1))
+    assert [o.action for o in first] == ["solved"]
+    stamp = json.loads((tmp_path / "out" / ".stamps" / "mine.json").read_text(encoding="utf-8"))
+    shipped = Path(solver.__file__).parent / "rules" / "extended.yaml"
+    assert Path(stamp["rules_file"]) == shipped.resolve()
+    again = make_jobs(find_teams([str(folder)]), tmp_path / "out")
+    assert [job.up_to_date for job in again] == [True]
 
 
 # ---- links in the input (issue 36.12) ---------------------------------------------------------
