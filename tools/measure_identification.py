@@ -53,6 +53,14 @@ from solver.errors import SolverError
 from solver.identify import Identification, identify, load_profile
 
 ROOT = Path(__file__).resolve().parent.parent
+# The labels' families, sources and the shared folder are the split's (one definition).
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from split_identification import (  # noqa: E402
+    family_of,
+    shared_folder,
+    source_of,
+)
+
 OWN_SET = ROOT / "tools" / "identification_set"
 ADDED_SET = ROOT / "tools" / "generalization_set"
 SPLIT = ROOT / "tools" / "identification_split.csv"
@@ -68,26 +76,6 @@ FALLBACKS = {"surface vessel": "Other", "underwater vehicle": "Other"}
 # Readings a truth label also accepts: the corpus labels standalone grippers Hand (its README:
 # "the README has no gripper label, Hand is the nearest extra label").
 ACCEPTS = {"Hand": {"Gripper"}}
-# The family of a row with no `family` column, by its label.
-FAMILY_OF_LABEL = {
-    "ugv": "mobile base",
-    "uav": "aerial vehicle",
-    "manipulator": "arm",
-    "mobile manipulator": "mobile manipulator",
-    "torso": "torso",
-    "humanoid": "humanoid",
-    "quadruped": "quadruped",
-    "biped/lower-body": "biped",
-    "hand": "hand",
-}
-
-
-def shared_folder() -> Path:
-    """`shared/` beside the project's main checkout (also from a git worktree of it)."""
-    for base in (ROOT.parent, ROOT.parent.parent):
-        if (base / "shared").is_dir():
-            return base / "shared"
-    return ROOT.parent / "shared"
 
 
 def label_of(text: str, structures: tuple[str, ...]) -> str:
@@ -105,20 +93,6 @@ def parse_counts(text: str) -> Counter[str]:
         kind, _, number = item.partition(":")
         counts[kind.strip()] += int(number or 1)
     return counts
-
-
-def family_of(row: dict[str, str]) -> str:
-    family = (row.get("family") or "").strip()
-    if family:
-        return family
-    label = row["kinematic_type"].strip().rstrip("?").strip().casefold()
-    return FAMILY_OF_LABEL.get(label, label or "(unlabelled)")
-
-
-def source_of(row: dict[str, str]) -> str:
-    """The repository or package a row comes from: `github owner/name`, `PyPI name`."""
-    words = row.get("source", "").split()
-    return " ".join(words[:2]).split("@")[0] or "(no source)"
 
 
 def read_split(path: Path) -> dict[tuple[str, str], str]:

@@ -64,6 +64,7 @@ FAMILY_OF_LABEL = {
 
 
 def shared_folder() -> Path:
+    """`shared/` beside the project's main checkout (also from a git worktree of it)."""
     for base in (ROOT.parent, ROOT.parent.parent):
         if (base / "shared").is_dir():
             return base / "shared"
@@ -79,6 +80,7 @@ def family_of(row: dict[str, str]) -> str:
 
 
 def source_of(row: dict[str, str]) -> str:
+    """The repository or package a row comes from: `github owner/name`, `PyPI name`."""
     words = row.get("source", "").split()
     return " ".join(words[:2]).split("@")[0] or "(no source)"
 
