@@ -138,6 +138,18 @@ def add_time_limit(parser: argparse.ArgumentParser, name: str, what: str) -> Non
     )
 
 
+def add_ros2_options(parser: argparse.ArgumentParser, *, ros2_help: str) -> None:
+    """--ros2 and --domain, for the commands that read a ROS 2 graph."""
+    parser.add_argument("--ros2", action="store_true", help=ros2_help)
+    parser.add_argument(
+        "--domain",
+        type=int,
+        default=None,
+        metavar="N",
+        help="with --ros2: the DDS domain id (default: $ROS_DOMAIN_ID, else 0)",
+    )
+
+
 def add_master_options(parser: argparse.ArgumentParser, *, required_help: str) -> None:
     """--master and --timeout, for the commands that read a ROS master."""
     parser.add_argument(

@@ -13,6 +13,7 @@ from solver.cli._common import (
     add_format,
     add_master_options,
     add_profile,
+    add_ros2_options,
     add_team,
     load_team_argument,
     write,
@@ -46,18 +47,10 @@ def register(subparsers: Any) -> None:
         help="with --master: the robot's namespace, e.g. /uav1 (default: "
         "/teleop_ui/active_robot); required with --ros2",
     )
-    parser.add_argument(
-        "--ros2",
-        action="store_true",
-        help="read the robot from a ROS 2 graph on DDS instead (the [ros2] "
+    add_ros2_options(
+        parser,
+        ros2_help="read the robot from a ROS 2 graph on DDS instead (the [ros2] "
         "extra; see docs/live.md)",
-    )
-    parser.add_argument(
-        "--domain",
-        type=int,
-        default=None,
-        metavar="N",
-        help="with --ros2: the DDS domain id (default: $ROS_DOMAIN_ID, else 0)",
     )
     add_profile(parser)
     parser.set_defaults(run=run)

@@ -15,6 +15,7 @@ from typing import Any
 from solver.cli._common import (
     add_format,
     add_master_options,
+    add_ros2_options,
     add_rules,
     load_team_argument,
     seconds,
@@ -42,17 +43,9 @@ def register(subparsers: Any) -> None:
         metavar="NAME=VALUE",
         help="values to select, e.g. motion_control=Waypoint; NAME= clears that selection",
     )
-    parser.add_argument(
-        "--ros2",
-        action="store_true",
-        help="a ROS 2 graph on DDS (the [ros2] extra); default: the ROS 1 master",
-    )
-    parser.add_argument(
-        "--domain",
-        type=int,
-        default=None,
-        metavar="N",
-        help="with --ros2: the DDS domain id (default: $ROS_DOMAIN_ID, else 0)",
+    add_ros2_options(
+        parser,
+        ros2_help="a ROS 2 graph on DDS (the [ros2] extra); default: the ROS 1 master",
     )
     add_master_options(parser, required_help="default: $ROS_MASTER_URI")
     parser.add_argument(

@@ -12,6 +12,7 @@ from solver.cli._common import (
     add_format,
     add_master_options,
     add_profile,
+    add_ros2_options,
     add_set,
     add_team,
     load_team_argument,
@@ -42,19 +43,11 @@ def register(subparsers: Any) -> None:
         "/teleop_ui/ui_configuration.",
     )
     add_master_options(parser, required_help="default: $ROS_MASTER_URI")
-    parser.add_argument(
-        "--ros2",
-        action="store_true",
-        help="follow a ROS 2 graph on DDS instead of a ROS 1 master (no ROS 2 "
+    add_ros2_options(
+        parser,
+        ros2_help="follow a ROS 2 graph on DDS instead of a ROS 1 master (no ROS 2 "
         "needed; the [ros2] extra; Cyclone DDS is configured by "
         "$CYCLONEDDS_URI); see docs/live.md",
-    )
-    parser.add_argument(
-        "--domain",
-        type=int,
-        default=None,
-        metavar="N",
-        help="with --ros2: the DDS domain id (default: $ROS_DOMAIN_ID, else 0)",
     )
     add_team(parser)
     add_profile(parser)
