@@ -86,3 +86,21 @@ def test_each_panel_shows_its_topics_data_or_says_there_is_none(robot1: tuple[Pa
     assert ">/robot1/audio</div>" in page  # a Raw Messages panel's toolbar shows its path
     empty = tool.page(layout, {}, 1280, 720)
     assert "no messages on /robot1/camera/image_raw" in empty
+
+
+def test_a_cluster_of_sensors_shows_its_tab_strip_and_its_active_tab_only(tmp_path: Path) -> None:
+    spec = importlib.util.spec_from_file_location(
+        "layout_screenshots", TOOLS / "layout_screenshots.py"
+    )
+    assert spec is not None
+    assert spec.loader is not None
+    tool = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(tool)
+    out = tmp_path / "layouts"
+    assert run_cli("layouts", "case2", "-o", out, "--namespace", "/robot1").returncode == 0
+    layout = json.loads((out / "config-008.json").read_text())  # 10 cameras, clusters of 2
+    page = tool.page(layout, {}, 1280, 720)
+    assert page.count('<span class="tab on">') == 5  # a Tab panel per cluster
+    assert '<span class="tab">visual display 2</span>' in page
+    assert "no messages on /robot1/camera/image_raw_3<" in page  # cluster 2's active tab
+    assert "no messages on /robot1/camera/image_raw_2<" not in page  # an inactive tab

@@ -113,3 +113,27 @@ def test_a_layout_whose_panels_show_the_bags_topics_passes_and_one_of_other_topi
     assert "    Image!p05: /camera/image_raw is not in the bag" in faults
     assert "    Plot!p08: /wrench is not in the bag" in faults
     assert faults[-1] == "1 of 2 layouts pass"
+
+
+def test_panels_in_a_tab_the_app_does_not_show_are_named_not_failed(
+    case3: tuple[Path, Path, Path], tmp_path: Path
+) -> None:
+    # The default configuration's primary views are the tabs of one Tab panel: the app mounts
+    # the active tab's panel only; the others are not on the screen, and that is no fault.
+    robot1, _, bag = case3
+    layout = robot1 / "config-103-default.json"
+    report = _seen(layout, ["/robot1/cmd_vel"])
+    tabs = json.loads(layout.read_text())["configById"]["Tab!c01"]["tabs"]
+    for tab in tabs[1:]:
+        report["panels"][tab["layout"]]["present"] = False
+    seen = tmp_path / "robot1.report.json"
+    seen.write_text(json.dumps(report))
+    done = _tool(TOOLS / "verdict.py", bag, "/robot1", seen)
+    assert done.returncode == 0, done.stdout
+    assert f"{len(tabs) - 1} in a tab not shown" in done.stdout.splitlines()[0]
+    # A panel of the active tab that is not on the screen still fails.
+    report["panels"][tabs[0]["layout"]]["present"] = False
+    seen.write_text(json.dumps(report))
+    done = _tool(TOOLS / "verdict.py", bag, "/robot1", seen)
+    assert done.returncode == 1
+    assert f"    {tabs[0]['layout']}: not on the screen" in done.stdout.splitlines()

@@ -7,7 +7,8 @@ what each panel shows of the recorded robot: an Image panel the last image on it
 panel its point cloud or laser scan from above over the reference grid (coloured as the layout
 says), a Plot its series over the recording, a Raw Messages panel its last message, and the
 command panels as the operator sees them (a Teleop pad and its topic, a Publish panel's
-message and button, an Indicator's label). The panel's toolbar shows what the app shows there:
+message and button, an Indicator's label); a Tab panel (a cluster of sensors) its tab strip and
+its active tab's panels. The panel's toolbar shows what the app shows there:
 its title, or a Raw Messages panel's topic path. A panel whose topic has no message in the bag
 says so. The page is photographed by Debian's headless Chromium (``/usr/bin/chromium``) into
 ``DIR/NAME.png``.
@@ -57,6 +58,9 @@ body{margin:0;background:#15151a;font:12px sans-serif;color:#e1e1e4}
 .body{flex:1;min-height:0;display:flex;align-items:center;justify-content:center;
   overflow:hidden;position:relative}
 .body img{max-width:100%;max-height:100%;image-rendering:pixelated}
+.tabs{display:flex;gap:2px;padding:0}
+.tab{padding:3px 8px;color:#9a9aa6;overflow:hidden;text-overflow:ellipsis}
+.tab.on{color:#e1e1e4;border-bottom:2px solid #9480ed}
 .body svg{width:100%;height:100%}
 .note{color:#8a8a96;padding:8px;text-align:center}
 pre{margin:0;padding:6px;align-self:stretch;overflow:hidden;color:#c6e3a0;font-size:11px}
@@ -310,6 +314,8 @@ def page(layout: dict[str, Any], topics: dict[str, list[Any]], width: int, heigh
         if isinstance(tree, str):
             kind = tree.partition("!")[0]
             config = configs.get(tree, {})
+            if kind == "Tab":
+                return tabs(config)
             return (
                 f'<div class="panel"><div class="bar">{html.escape(toolbar(kind, config))}</div>'
                 f'<div class="body">{panel_body(kind, config, topics)}</div></div>'
@@ -324,6 +330,23 @@ def page(layout: dict[str, Any], topics: dict[str, list[Any]], width: int, heigh
             f'<div class="split" style="flex-direction:{"row" if row else "column"}">'
             f'<div style="{first}">{node(tree["first"])}</div>'
             f'<div style="{second}">{node(tree["second"])}</div></div>'
+        )
+
+    def tabs(config: dict[str, Any]) -> str:
+        # A Tab panel (a cluster of sensors): its tab strip, the active tab's panels below it
+        # (the app mounts the active tab only).
+        entries = config.get("tabs", [])
+        active = int(config.get("activeTabIdx", 0))
+        strip = "".join(
+            f'<span class="tab{" on" if index == active else ""}">'
+            f"{html.escape(str(entry.get('title', '')))}</span>"
+            for index, entry in enumerate(entries)
+        )
+        inner = entries[active].get("layout") if 0 <= active < len(entries) else None
+        shown = node(inner) if inner is not None else ""
+        return (
+            f'<div class="panel"><div class="bar tabs">{strip}</div>'
+            f'<div class="body" style="align-items:stretch">{shown}</div></div>'
         )
 
     body = node(layout["layout"]) if layout.get("layout") else ""

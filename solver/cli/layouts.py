@@ -83,6 +83,19 @@ def register(subparsers: Any) -> None:
         help="which panel presents each UI component (default: the shipped "
         "rules/presentation.yaml)",
     )
+    parser.add_argument(
+        "--cluster-order",
+        metavar="ORDER",
+        help="how the sensors of a cluster are ordered (the article's three): alphabetical, "
+        "priority (the presentation grammar's priority list) or 'data rate' (bytes per "
+        "second, from --rates-bag); default: the presentation grammar's",
+    )
+    parser.add_argument(
+        "--rates-bag",
+        metavar="BAG",
+        help="a bag (ROS 1 .bag or ROS 2 folder) whose messages give each topic's bytes per "
+        "second, for the 'data rate' order (read streaming, message by message)",
+    )
     add_profile(parser)
     add_set(parser, per_robot=False)
     parser.add_argument(
@@ -95,11 +108,14 @@ def register(subparsers: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from solver import InputError, load_presentation, solve
+    from solver import InputError
 
     if args.preview and args.format != "foxglove":
         raise InputError.at("--preview", "previews are drawn from foxglove layouts only")
     if args.robot:
+        if args.cluster_order or args.rates_bag:
+            given = "--cluster-order" if args.cluster_order else "--rates-bag"
+            raise InputError.at(given, "orders a team's layouts (not with --robot)")
         return _robot(args)
     if args.topics or args.bag or args.profile or args.set:
         given = (
@@ -114,6 +130,12 @@ def run(args: argparse.Namespace) -> int:
         raise InputError.at(given, "needs --robot URDF")
     if args.team is None:
         raise InputError.at("TEAM.yaml", "a team is needed (or --robot URDF --team TEAM)")
+    return _team(args)
+
+
+def _team(args: argparse.Namespace) -> int:
+    """A team's layouts into ``-o DIR``, and what was written, replaced and removed."""
+    from solver import load_presentation, solve
     from solver.layouts.plan import check_namespace
     from solver.layouts.writer import check_layout_count, write_layout_folder
 
@@ -128,6 +150,9 @@ def run(args: argparse.Namespace) -> int:
     presentation = load_presentation(
         args.presentation, solution.rules if args.presentation else None
     )
+    presentation = _ordered(presentation, args)
+    if args.rates_bag:
+        presentation = _rates_found(presentation, solution, namespace, args.rates_bag)
     done = write_layout_folder(
         solution,
         presentation,
@@ -138,6 +163,9 @@ def run(args: argparse.Namespace) -> int:
     )
     layouts = len(done.paths) - (1 if args.preview else 0)
     write(f"wrote {layouts} layouts to {shown(args.output, limit=SHOWN_FILE_NAME_CHARS)}\n")
+    from solver.layouts.checks.quality import describe_consistency, team_consistency
+
+    write(shown(describe_consistency(team_consistency(solution, presentation)), limit=None) + "\n")
     if args.preview:
         write(f"wrote {shown(str(done.paths[-1]), limit=SHOWN_FILE_NAME_CHARS)}\n")
     if done.replaced:
@@ -145,6 +173,46 @@ def run(args: argparse.Namespace) -> int:
     if done.removed:
         write(f"removed {len(done.removed)} files of an earlier run: {_names(done.removed)}\n")
     return 0
+
+
+def _ordered(presentation: Any, args: argparse.Namespace) -> Any:
+    """The presentation with the cluster order of ``--cluster-order`` (or its own) and the
+    rates of ``--rates-bag``, checked (a located error for an order without its data)."""
+    from solver.layouts.ordering import with_order
+
+    rates = None
+    if args.rates_bag:
+        from solver.identify.readers.bags import read_bag_rates
+
+        with_order(presentation, args.cluster_order, {})  # the order is checked first
+        rates = read_bag_rates(args.rates_bag)
+    return with_order(presentation, args.cluster_order, rates)
+
+
+def _rates_found(presentation: Any, solution: Any, namespace: str | None, bag: str) -> Any:
+    """The presentation ordering by data rate where the bag holds a sensor topic of the
+    layouts to write (by name or last part); else alphabetically, and a warning says so."""
+    from solver.layouts.design import SENSORS
+    from solver.layouts.ordering import matched_rates
+    from solver.layouts.plan import panel_entries, template_topic
+
+    sensors = {
+        component.name
+        for characteristic in solution.rules.characteristics
+        if characteristic.name == SENSORS
+        for component in characteristic.components
+    }
+    topics = {
+        template_topic(spec, namespace, tile)
+        for configuration in solution.configurations
+        for spec, count in panel_entries(solution, configuration, presentation)
+        if spec.component in sensors
+        for tile in range(count)
+    }
+    presentation, fault = matched_rates(presentation, topics, str(bag))
+    if fault is not None:
+        sys.stderr.write(f"warning: {shown(str(fault), limit=None)}\n")
+    return presentation
 
 
 def _names(names: tuple[str, ...], shown: int = 6) -> str:

@@ -2,8 +2,11 @@
 
 ==================  ===============================================================
 ``presentation``    the presentation: component -> panel, topic template
-``tiling``          the sensor-count arrangement as a number of tiles; the split tree
+``grammar``         the presentation grammar: roles, their regions and cuts (issue 39)
+``tiling``          the sensor-count arrangement: sensors shown, Equation (2)'s cluster size
+``ordering``        the order of a cluster's sensors: alphabetical, priority, data rate
 ``plan``            what a layout shows for a robot (or a template): panels, names, topics
+``design``          a plan laid out by the grammar: tiles, roles, splits (every target's)
 ``samples``         the whole message a Publish panel holds
 ``foxglove``        Foxglove / Lichtblick layout JSON; its validation
 ``rviz``            RViz2 ``.rviz`` YAML; its validation
@@ -16,7 +19,8 @@
                     configuration, laid out (``layouts --robot``)
 ``topics``          a robot's real topics in place of the templates
 ``preview``         a layout's panel tree as an SVG thumbnail
-``checks``          layouts against the viewers' own rules, kept as data (issue 26)
+``checks``          layouts against the viewers' own rules, kept as data (issue 26), and
+                    the layout quality for an operator (``checks.quality``, issue 39)
 ==================  ===============================================================
 
 Not here: solving (:mod:`solver.solving.solution`); UVL export (:mod:`solver.reporting.uvl`).

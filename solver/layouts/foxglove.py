@@ -25,26 +25,32 @@ from typing import Any
 
 from solver.core.partition import Configuration
 from solver.errors import Fault, Location, SolverError
+from solver.layouts.design import Design, Split, design
 from solver.layouts.plan import Panel, Plan, Robot, plan_layout
 from solver.layouts.presentation import PANEL_TYPES, Presentation
 from solver.layouts.samples import sample_message
-from solver.layouts.tiling import split_tree
 from solver.ros.names import normalise_type
 from solver.solving.solution import Solution
 from solver.untrusted import shown
 
 __all__ = [
+    "DESIGN_VARIABLE",
     "NOTE_VARIABLE",
+    "TAB_TITLE_CHARS",
     "LayoutError",
     "foxglove_layout",
     "layout_filename",
     "plan_foxglove",
+    "short_title",
     "validate_foxglove",
 ]
 
 # The global variable that says whom a layout is for and how to write it for another robot
 # (JSON has no comments; the app lists global variables in its Variables sidebar).
 NOTE_VARIABLE = "teleop_ui_layout"
+# The global variable that says how the layout was designed: the grammar's regions, the
+# cluster order used, and each component's tile (read by :mod:`solver.layouts.quality`).
+DESIGN_VARIABLE = "teleop_ui_design"
 
 # What the 3D renderer (ThreeDeeRender.tsx, IRenderer.ts) starts from and saves when a layout
 # lacks it; written out so that the layout opens unmodified. Lichtblick v1.19.0's values.
@@ -121,20 +127,74 @@ def foxglove_layout(
 
 
 def plan_foxglove(plan: Plan) -> dict[str, Any]:
-    """A plan as a Lichtblick layout."""
+    """A plan as a Lichtblick layout, laid out by its grammar (:mod:`solver.layouts.design`):
+    a tile is a panel, or a Tab panel with a tab per sensor of one cluster."""
+    laid = design(plan)
     config_by_id: dict[str, Any] = {}
-    ids: list[str] = []
+    # Panel ids are numbered in the plan's order (the configuration's components), whatever
+    # region a panel goes to: a component's id says which it is, not where.
+    numbered: dict[int, str] = {}
     for panel in plan.panels:
         kind, config = _panel_config(panel, plan)
-        panel_id = f"{kind}!p{len(ids) + 1:02d}"
+        panel_id = f"{kind}!p{len(numbered) + 1:02d}"
         config_by_id[panel_id] = config
-        ids.append(panel_id)
+        numbered[id(panel)] = panel_id
+    leaves: list[str] = []
+    for tile in laid.tiles:
+        ids = [numbered[id(panel)] for panel in tile.panels]
+        if not tile.grouped:
+            leaves.append(ids[0])
+            continue
+        tab_id = f"Tab!c{len(leaves) + 1:02d}"
+        tabs = [
+            {"title": short_title(panel, plan), "layout": panel_id}
+            for panel, panel_id in zip(tile.panels, ids, strict=True)
+        ]
+        config_by_id[tab_id] = {"activeTabIdx": 0, "tabs": tabs}
+        leaves.append(tab_id)
     return {
         "configById": config_by_id,
-        "globalVariables": {NOTE_VARIABLE: _note(plan)},
+        "globalVariables": {
+            NOTE_VARIABLE: _note(plan),
+            DESIGN_VARIABLE: _design_note(laid, leaves),
+        },
         "userNodes": {},
         "playbackConfig": {"speed": 1},
-        "layout": split_tree(ids) if ids else None,
+        "layout": _tree(laid.tree, leaves),
+    }
+
+
+def _tree(node: Split | int | None, leaves: list[str]) -> Any:
+    if node is None:
+        return None
+    if isinstance(node, int):
+        return leaves[node]
+    return {
+        "direction": node.direction,
+        "first": _tree(node.first, leaves),
+        "second": _tree(node.second, leaves),
+        "splitPercentage": node.percent,
+    }
+
+
+def _design_note(laid: Design, leaves: list[str]) -> dict[str, Any]:
+    """How the layout was designed: the screen, the regions as laid out in percent (the
+    grammar's that hold tiles, grown by the empty ones), the cluster order, and each tile's
+    component, role and panel id (its first tile's, per component)."""
+    grammar = laid.grammar
+    return {
+        "screen": list(grammar.screen),
+        "regions": {
+            role: [round(rect.x, 4), round(rect.y, 4), round(rect.width, 4), round(rect.height, 4)]
+            for role, rect in laid.regions
+        },
+        "clusterOrder": grammar.order,
+        **({"clusterOrderNote": grammar.order_note} if grammar.order_note else {}),
+        "tiles": [
+            {"component": component, "role": tile.role, "panel": leaf}
+            for tile, leaf in zip(laid.tiles, leaves, strict=True)
+            for component in tile.components
+        ],
     }
 
 
@@ -146,10 +206,34 @@ def _note(plan: Plan) -> str:
     return f"{which}, {plan.whom}; for a robot under /NAME: {again}"
 
 
+# A Tab panel's tab shows about 12 characters (Lichtblick v1.19.0 at 1920x1080 cut
+# "visual display 1" to "visual displa"): a tab is titled with the sensor's short name.
+TAB_TITLE_CHARS = 12
+
+
+def short_title(panel: Panel, plan: Plan) -> str:
+    """A tab's title: the first part of the panel's topic under the robot's namespace and the
+    sensor's number (``camera 3`` for ``/uav1/camera/image_raw_3``, ``visual display 3``),
+    at most :data:`TAB_TITLE_CHARS` characters; the panel in the tab names the whole topic."""
+    topic = panel.topic
+    if plan.namespace and topic.startswith(plan.namespace + "/"):
+        topic = topic[len(plan.namespace) + 1 :]
+    first = topic.strip("/").partition("/")[0].rpartition("_")
+    # The template's sensor suffix (_2, _3) ends the last part, not the first: drop it here.
+    base = first[0] if first[2].isdigit() and first[0] else "".join(first)
+    number = panel.name.rpartition(" ")[2]
+    text = f"{base} {number}" if number.isdigit() else base
+    if len(text) <= TAB_TITLE_CHARS:
+        return text
+    keep = TAB_TITLE_CHARS - 1 - (len(number) + 1 if number.isdigit() else 0)
+    return base[:keep] + "\u2026" + (f" {number}" if number.isdigit() else "")
+
+
 def _titled(panel: Panel, config: dict[str, Any], *, note: str = "") -> dict[str, Any]:
     # Lichtblick reads the title from "lichtblickPanelTitle" (util/layout.ts), Foxglove Studio,
-    # the project it forked, from "foxglovePanelTitle"; each ignores the other.
-    title = panel.name
+    # the project it forked, from "foxglovePanelTitle"; each ignores the other. The title names
+    # the component and the topic, the component first (a narrow tile cuts the end).
+    title = f"{panel.name} \u00b7 {panel.topic}"
     if panel.spec.placeholder:
         title += " (placeholder: no panel for this component)"
     title += note
@@ -327,6 +411,11 @@ def validate_foxglove(layout: dict[str, Any], file: str = "<layout>") -> None:
     configs = layout.get("configById", {})
     if layout.get("layout") is not None:
         walk(layout["layout"], "layout")
+    for panel_id in list(seen):
+        if panel_id.partition("!")[0] == "Tab":
+            for index, tab in enumerate(configs.get(panel_id, {}).get("tabs", [])):
+                if tab.get("layout") is not None:
+                    walk(tab["layout"], f"configById.{panel_id}.tabs[{index}].layout")
     for panel_id in sorted(set(seen)):
         if seen.count(panel_id) > 1:
             faults.append(
@@ -341,7 +430,7 @@ def validate_foxglove(layout: dict[str, Any], file: str = "<layout>") -> None:
     for panel_id in configs:
         if panel_id not in seen:
             faults.append(Fault(Location(file, path=f"configById.{panel_id}"), "orphan config"))
-        if panel_id.partition("!")[0] not in PANEL_TYPES:
+        if panel_id.partition("!")[0] not in (*PANEL_TYPES, "Tab"):
             faults.append(
                 Fault(Location(file, path=f"configById.{panel_id}"), "unknown panel type")
             )

@@ -14,10 +14,11 @@ Not here: writing the file (the caller's, atomically), a whole team's layouts
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from solver.layouts.ordering import without_data
 from solver.layouts.plan import check_namespace
 from solver.layouts.presentation import load_presentation
 from solver.layouts.robot import RobotLayout, robot_layout
@@ -83,6 +84,8 @@ def identified_layout(
     # The robot's first control mode and sensor type: the combination it starts in.
     assignment = combinations(identification, solution, profile, given)[0].assignment
     shown = load_presentation(presentation, solution.rules if presentation else None)
+    # No bag of rates here: an order that needs one is applied alphabetically, and said so.
+    shown, unordered = without_data(shown, "layouts --robot")
     source, real = _real_topics(topics, bag)
     layout = robot_layout(
         solution,
@@ -95,6 +98,8 @@ def identified_layout(
         joints=identification.joints,
         file=file,
     )
+    if unordered is not None:
+        layout = replace(layout, warnings=(unordered, *layout.warnings))
     return IdentifiedLayout(identification, assignment, layout)
 
 

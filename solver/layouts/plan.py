@@ -23,13 +23,15 @@ topics to panels (:mod:`solver.layouts.topics`).
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from types import MappingProxyType
 
 from solver.core.partition import Configuration
 from solver.errors import InputError
+from solver.layouts.grammar import DEFAULT_GRAMMAR, Grammar
+from solver.layouts.ordering import ordered
 from solver.layouts.presentation import ROBOT, PanelSpec, Presentation
-from solver.layouts.tiling import tiles
+from solver.layouts.tiling import MAX_TABS, cluster_size, tiles
 from solver.ros.joints import JointStart
 from solver.ros.names import (
     Topic,
@@ -83,6 +85,8 @@ class Panel:
     topic: str
     types: tuple[str, ...]  # the real topic's type when known, else the presentation's
     real: bool = False  # the topic is one the robot really has
+    cluster: int = 0  # the Equation (2) cluster (1, 2, ...) of a clustered sensor; 0: none
+    characteristic: str = ""  # the characteristic its component belongs to ("sensor_type")
 
     @property
     def kind(self) -> str:
@@ -105,6 +109,7 @@ class Plan:
     relative: bool  # topics relative to the viewer's namespace (RViz2 templates)
     joints: tuple[JointStart, ...] | None = None  # the joints a joint command names
     described: bool = False  # one robot's layout, from its description
+    grammar: Grammar = DEFAULT_GRAMMAR  # how it is laid out (:mod:`solver.layouts.design`)
 
     def topic(self, name: str) -> str:
         """``name`` (``clicked_point``) in the robot's namespace, as this plan spells topics."""
@@ -177,7 +182,8 @@ def panel_entries(
     presentation: Presentation,
     tile_count: int | None = None,
 ) -> list[tuple[PanelSpec, int]]:
-    """Each panel spec of ``configuration`` and its number of tiles, in panel order.
+    """Each panel spec of ``configuration`` and its number of tiles (the sensor component:
+    one per sensor shown, :func:`~solver.layouts.tiling.tiles`), in panel order.
 
     ``None`` is the default configuration: every component, one tile each.
     """
@@ -191,7 +197,7 @@ def panel_entries(
                 (presentation.spec(component.name), 1) for component in characteristic.components
             )
         return entries
-    # One robot shows its own g(i) tiles; a template, the most its configuration needs.
+    # One robot shows its own sensors; a template, the most its configuration serves.
     count = tile_count if tile_count is not None else tiles(rules, configuration)
     # Position 0 is the kinematic type (the layout's subject, not a panel); the integer
     # characteristic is the tiling of the sensor panel, not a panel of its own.
@@ -221,23 +227,54 @@ def plan_layout(
     """The plan of ``configuration``'s layout (``None``: the default configuration) for
     ``robot`` (default: a template); ``relative``: templates take relative names."""
     robot = robot if robot is not None else Robot()
+    # At most MAX_TABS sensors a cluster, as tiles() counts them (a rule set of its own may
+    # cluster far more coarsely: one Tab panel of hundreds of tabs shows nothing useful).
+    size = min(cluster_size(solution.rules, configuration), MAX_TABS)
+    owner = {c.name: ch.name for ch in solution.rules.characteristics for c in ch.components}
     panels: list[Panel] = []
     for spec, count in panel_entries(solution, configuration, presentation, tile_count):
+        tiles_ = []
+        of = owner.get(spec.component, "")
         for tile in range(count):
             name = spec.component + (f" {tile + 1}" if count > 1 else "")
             real = robot.topics.get((spec.component, tile))
             if real is not None:
-                panels.append(Panel(spec, name, real.name, (real.type,), real=True))
+                tiles_.append(
+                    Panel(spec, name, real.name, (real.type,), real=True, characteristic=of)
+                )
             else:
                 topic = template_topic(spec, robot.namespace, tile, relative=relative)
-                panels.append(Panel(spec, name, topic, spec.types))
+                tiles_.append(Panel(spec, name, topic, spec.types, characteristic=of))
+        if count > 1:
+            tiles_ = ordered(tiles_, _named, presentation.grammar)
+        panels.extend(_clustered(tiles_, size if count > 1 else 1))
     merged = _merge_commands(panels)
     namespace = _namespace(robot, merged)
     if configuration is None:
         number, default = solution.default_configuration, True
     else:
         number, default = configuration.number, False
-    return Plan(number, default, merged, namespace, relative, robot.joints, robot.described)
+    return Plan(
+        number,
+        default,
+        merged,
+        namespace,
+        relative,
+        robot.joints,
+        robot.described,
+        presentation.grammar,
+    )
+
+
+def _named(panel: Panel) -> tuple[str, str]:
+    return panel.topic, panel.name
+
+
+def _clustered(sensors: list[Panel], size: int) -> list[Panel]:
+    """The sensors in Equation (2)'s clusters of ``size``, in order (``size`` 1: individually)."""
+    if size <= 1:
+        return sensors
+    return [replace(panel, cluster=index // size + 1) for index, panel in enumerate(sensors)]
 
 
 def _namespace(robot: Robot, panels: tuple[Panel, ...]) -> str:
@@ -261,9 +298,7 @@ def _merge_commands(panels: list[Panel]) -> tuple[Panel, ...]:
         elif key in first:
             index = first[key]
             kept = merged[index]
-            merged[index] = Panel(
-                kept.spec, f"{kept.name}, {panel.name}", kept.topic, kept.types, kept.real
-            )
+            merged[index] = replace(kept, name=f"{kept.name}, {panel.name}")
         else:
             first[key] = len(merged)
             merged.append(panel)

@@ -11,13 +11,14 @@ Not here: building layouts (:mod:`solver.layouts.foxglove`).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from solver.core.ruleset import RuleSet
 from solver.errors import SolverError
 from solver.files.reader import Reader
 from solver.files.yamlio import load_document
+from solver.layouts.grammar import DEFAULT_GRAMMAR, Grammar, read_grammar
 from solver.ros.names import full_topic_name_problem
 from solver.untrusted import shown
 
@@ -54,10 +55,11 @@ class PanelSpec:
 
 @dataclass(frozen=True, slots=True)
 class Presentation:
-    """Component name -> panel, in file order."""
+    """Component name -> panel, in file order; the grammar that lays the panels out."""
 
     file: str
     panels: tuple[PanelSpec, ...]
+    grammar: Grammar = field(default=DEFAULT_GRAMMAR)
 
     def spec(self, component: str) -> PanelSpec:
         """The component's panel; a titled placeholder for a component the presentation omits."""
@@ -117,9 +119,10 @@ def load_presentation(path: str | Path | None = None, rules: RuleSet | None = No
             raw_types = entry.get("types") or []
             types = tuple(str(item) for item in raw_types) if isinstance(raw_types, list) else ()
             panels.append(PanelSpec(name, panel, topic, types, entry.get("placeholder") is True))
+    grammar = read_grammar(reader) if top is not None else DEFAULT_GRAMMAR
     if reader.faults:
         raise PresentationError(reader.faults)
-    return Presentation(document.file, tuple(panels))
+    return Presentation(document.file, tuple(panels), grammar)
 
 
 def _topic_problem(template: str) -> str | None:

@@ -1,7 +1,8 @@
 """A layout's panel tree as an SVG thumbnail, and a page of them (one per configuration).
 
 What an operator will see, at a glance: each split divides its rectangle by its percentage;
-each panel is a rectangle coloured by panel type and labelled with its title. Not here:
+each panel is a rectangle coloured by panel type and labelled with its title; a Tab panel (a
+cluster of sensors, :mod:`solver.layouts.design`) is one rectangle naming its tabs. Not here:
 rendering the panels' content.
 """
 
@@ -38,10 +39,7 @@ def preview_svg(layout: dict[str, Any], width: int = 320, height: int = 200) -> 
 
     def draw(node: Any, x: float, y: float, w: float, h: float) -> None:
         if isinstance(node, str):
-            kind = node.partition("!")[0]
-            config = layout["configById"].get(node, {})
-            # What the app shows: the title, or a Raw Messages panel's topic path.
-            title = str(config.get("foxglovePanelTitle", config.get("topicPath", kind)))
+            kind, title = _label(layout["configById"], node)
             shapes.append(
                 f'<rect x="{x:.1f}" y="{y:.1f}" width="{w:.1f}" height="{h:.1f}" '
                 f'fill="{COLOURS.get(kind, "#8c8c8c")}" stroke="#ffffff" stroke-width="2"/>'
@@ -63,6 +61,20 @@ def preview_svg(layout: dict[str, Any], width: int = 320, height: int = 200) -> 
         f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
         f'viewBox="0 0 {width} {height}">' + "".join(shapes) + "</svg>"
     )
+
+
+def _label(configs: dict[str, Any], panel_id: str) -> tuple[str, str]:
+    """The panel's type and what the app shows of it: its title, a Raw Messages panel's topic
+    path; for a Tab panel (a cluster of sensors), its first tab's panel type and the tabs'
+    titles."""
+    kind = panel_id.partition("!")[0]
+    config = configs.get(panel_id, {})
+    if kind == "Tab":
+        tabs = [tab for tab in config.get("tabs", []) if isinstance(tab, dict)]
+        first = tabs[0].get("layout") if tabs else None
+        inner = first.partition("!")[0] if isinstance(first, str) else kind
+        return inner, "tabs " + " | ".join(str(tab.get("title", "")) for tab in tabs)
+    return kind, str(config.get("foxglovePanelTitle", config.get("topicPath", kind)))
 
 
 def preview_html(layouts: list[tuple[str, dict[str, Any]]]) -> str:

@@ -17,6 +17,7 @@ from solver.errors import Fault
 from solver.layouts.plan import Robot, panel_entries
 from solver.layouts.presentation import Presentation
 from solver.layouts.targets import target
+from solver.layouts.tiling import capped
 from solver.layouts.topics import match_topics
 from solver.ros.joints import JointStart
 from solver.ros.names import Topic
@@ -35,14 +36,15 @@ class RobotLayout:
 
 
 def _tile_count(solution: Solution, assignment: Assignment) -> int | None:
-    """The robot's own number of sensor tiles: g(i) of its count, in its configuration."""
+    """The robot's own number of sensors shown: its count, capped (:mod:`.tiling`)."""
     configuration = assignment.configuration
     if configuration is None:
         return None
     given = dict(assignment.given)
     for position, characteristic in enumerate(solution.rules.characteristics):
         if characteristic.kind == "integer" and characteristic.name in given:
-            return configuration.components[position].clusters(int(given[characteristic.name]))
+            size = configuration.components[position].cluster_size
+            return capped(int(given[characteristic.name]), size)
     return None
 
 

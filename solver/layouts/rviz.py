@@ -8,8 +8,11 @@ subscribe best-effort; the robot description is read transient-local in the robo
 (``robot_state_publisher`` publishes it in its own), so a late RViz still gets the model. RViz2
 has no display for velocity commands, joint commands or audio: such a component gets an empty,
 disabled display group named as a placeholder, which subscribes to nothing (never a silent
-drop). The goal tool publishes on the configuration's goal-pose topic (a waypoint's, else an
-end effector's) and is left out when the configuration has none.
+drop). Displays follow the presentation grammar's order (:mod:`solver.layouts.design`): the
+primary view first, then the secondary views, the controls and the status; each of Equation
+(2)'s clusters of sensors is a display group named after it (and so is a region's overflow).
+The goal tool publishes on the configuration's goal-pose topic (a waypoint's, else an end
+effector's) and is left out when the configuration has none.
 
 A template names topics relative to RViz2's own namespace (``camera/image_raw``), re-targeted
 to a robot with ``rviz2 -d FILE --ros-args -r __ns:=/robot1``; the file's first lines say so.
@@ -26,6 +29,7 @@ import yaml
 from solver.core.partition import Configuration
 from solver.errors import Fault, Location
 from solver.files.yamlio import parse_document
+from solver.layouts.design import design
 from solver.layouts.foxglove import LayoutError
 from solver.layouts.plan import Panel, Plan, Robot, plan_layout
 from solver.layouts.presentation import Presentation
@@ -138,7 +142,20 @@ def plan_rviz(plan: Plan) -> dict[str, Any]:
             "Value": True,
         },
     ]
-    displays.extend(_display(panel) for panel in plan.panels)
+    # The grammar's order (primary view, secondary views, controls, status), as in the
+    # Lichtblick layout and the preview; a cluster of sensors is a display group.
+    for tile in design(plan).tiles:
+        if tile.grouped:
+            displays.append(
+                {
+                    "Class": "rviz_common/Group",
+                    "Displays": [_display(panel) for panel in tile.panels],
+                    "Enabled": True,
+                    "Name": f"{tile.title} ({tile.role})",
+                }
+            )
+        else:
+            displays.append(_display(tile.panels[0]))
     # The goal tool publishes only on the operator's click, on the configuration's goal topic.
     tools: list[dict[str, Any]] = [{"Class": "rviz_default_plugins/Interact"}]
     goals = sorted(plan.goals, key=lambda panel: panel.spec.component != "Waypoint")

@@ -93,7 +93,12 @@ def team_layout(
     mapping: list[dict[str, Any]] = []
     for index, tab in enumerate(tabs):
         renamed = {old: _renamed(old, index) for old in tab.layout.get("configById", {})}
-        configs.update({renamed[old]: config for old, config in tab.layout["configById"].items()})
+        configs.update(
+            {
+                renamed[old]: _rename_tabs(config, renamed) if old.startswith("Tab!") else config
+                for old, config in tab.layout["configById"].items()
+            }
+        )
         entry: dict[str, Any] = {"title": tab.title}
         if tab.layout.get("layout") is not None:
             entry["layout"] = _rename_tree(tab.layout["layout"], renamed)
@@ -127,9 +132,25 @@ def _renamed(panel_id: str, index: int) -> str:
     return f"{kind}!t{index + 1}-{own}"
 
 
+def _rename_tabs(config: Any, renamed: Mapping[str, str]) -> Any:
+    """A robot layout's Tab panel (a cluster of sensors) with the ids in its tabs renamed."""
+    tabs = config.get("tabs") if isinstance(config, dict) else None
+    if not isinstance(tabs, list):
+        return config
+    return {
+        **config,
+        "tabs": [
+            {**tab, "layout": _rename_tree(tab["layout"], renamed)}
+            if isinstance(tab, dict) and "layout" in tab
+            else tab
+            for tab in tabs
+        ],
+    }
+
+
 def _rename_tree(node: Any, renamed: Mapping[str, str]) -> Any:
-    """A panel tree with its ids renamed (the robot layouts' trees are balanced halves: their
-    depth is the logarithm of their panels)."""
+    """A panel tree with its ids renamed (the robot layouts' trees hold a split per tile: a
+    few dozen deep at most, :mod:`solver.layouts.tiling`)."""
     if isinstance(node, str):
         return renamed.get(node, node)
     if isinstance(node, dict):

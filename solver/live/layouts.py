@@ -55,6 +55,7 @@ from urllib.parse import quote
 from solver.errors import SolverError
 from solver.files.atomic import write_atomic
 from solver.layouts.foxglove import layout_filename
+from solver.layouts.ordering import without_data
 from solver.layouts.plan import check_namespace
 from solver.layouts.presentation import Presentation, load_presentation
 from solver.layouts.robot import RobotLayout, robot_layout
@@ -91,7 +92,10 @@ class LiveLayouts:
     ) -> None:
         self.directory = Path(directory).absolute()
         self.solution = solution
-        self.presentation = presentation if presentation is not None else load_presentation()
+        # No bag of rates here: an order that needs one is applied alphabetically, said once.
+        self.presentation, unordered = without_data(
+            presentation if presentation is not None else load_presentation(), "watch --layouts"
+        )
         self.base_url = base_url
         self.answer_url = answer_url
         self._robots: dict[str, LiveRobot] = {}
@@ -102,7 +106,7 @@ class LiveLayouts:
         # Every file written while the watcher runs, and its size now (the bound counts them).
         self._sizes: dict[Path, int] = {}
         self._bounded = False  # a limit stopped a layout (and a warning said so)
-        self._warnings: list[str] = []
+        self._warnings: list[str] = [] if unordered is None else [str(unordered)]
         self._synced = False
         # The team layout as last made (what it holds: each tab's robot, configuration and
         # write), where it was written (``None``: it could not be), and (robot, configuration)

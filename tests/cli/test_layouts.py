@@ -27,6 +27,8 @@ def test_a_second_run_replaces_its_layouts_and_removes_those_it_no_longer_writes
     assert second.returncode == 0, second.stderr
     assert second.stdout == (
         f"wrote 7 layouts to {out}\n"
+        "consistency: 100.0% (21 of 21 pairs of configurations sharing a component put it in "
+        "the same region)\n"
         "replaced 6 files of an earlier run: config-001.json, config-002.json, "
         "config-003.json, config-004.json, config-005.json, config-006.json\n"
         "removed 14 files of an earlier run: config-007.json, config-008.json, "

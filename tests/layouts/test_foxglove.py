@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from dataclasses import replace
 from pathlib import Path
 
 import pytest
@@ -18,6 +19,8 @@ from solver.layouts import (
     validate_foxglove,
     write_layouts,
 )
+from solver.layouts.foxglove import TAB_TITLE_CHARS, short_title
+from solver.layouts.plan import plan_layout
 
 
 def test_layouts_writes_one_file_per_configuration_plus_the_default(tmp_path: Path) -> None:
@@ -43,9 +46,10 @@ def test_layouts_are_the_same_bytes_on_every_run(tmp_path: Path) -> None:
     assert [p.read_bytes() for p in first] == [p.read_bytes() for p in second]
 
 
-def test_sensor_clusters_become_tiles_of_the_sensor_panel() -> None:
+def test_sensor_clusters_become_tab_panels_of_a_panel_per_sensor() -> None:
     solution = solve(load_team("case2"))
-    # A UGV with 6..10 sensors in clusters of 2 shows ceil(10/2) = 5 tiles.
+    # A UGV with 6..10 sensors in clusters of 2 shows its 10 sensors in ceil(10/2) = 5
+    # clusters (Equation (2)): 5 Tab panels of 2 tabs each, one 3D panel per sensor.
     configuration = next(
         c
         for c in solution.configurations
@@ -54,7 +58,23 @@ def test_sensor_clusters_become_tiles_of_the_sensor_panel() -> None:
         and c.components[2].name == "point cloud"
     )
     layout = foxglove_layout(solution, configuration, load_presentation())
-    assert sum(1 for key in layout["configById"] if key.startswith("3D!")) == 5
+    configs = layout["configById"]
+    assert sum(1 for key in configs if key.startswith("3D!")) == 10
+    tabs = [configs[key]["tabs"] for key in sorted(configs) if key.startswith("Tab!")]
+    # A tab is titled with the sensor's short name (its topic's first part, its number);
+    # the panel in it names the component and the whole topic.
+    assert [[tab["title"] for tab in cluster] for cluster in tabs] == [
+        ["points 1", "points 2"],
+        ["points 3", "points 4"],
+        ["points 5", "points 6"],
+        ["points 7", "points 8"],
+        ["points 9", "points 10"],
+    ]
+    first = configs[tabs[0][0]["layout"]]
+    assert first["lichtblickPanelTitle"] == "point cloud 1 \u00b7 /points"
+    topics = [configs[tab["layout"]]["topics"] for cluster in tabs for tab in cluster]
+    assert list(topics[0]) == ["/points"]
+    assert list(topics[9]) == ["/points_10"]
 
 
 def test_a_template_names_full_topics_in_the_root_namespace() -> None:
@@ -62,7 +82,7 @@ def test_a_template_names_full_topics_in_the_root_namespace() -> None:
     layout = foxglove_layout(solution, solution.configurations[0], load_presentation())
     teleop = layout["configById"]["Teleop!p01"]
     assert teleop["topic"] == "/cmd_vel"
-    assert teleop["foxglovePanelTitle"] == "Flight"
+    assert teleop["foxglovePanelTitle"] == "Flight \u00b7 /cmd_vel"
     assert layout["globalVariables"]["teleop_ui_layout"] == (
         "teleop-ui: UI configuration 1, topics in the root namespace (/cmd_vel); for a robot "
         "under /NAME: teleop-ui layouts TEAM -o DIR --namespace /NAME"
@@ -93,7 +113,7 @@ def test_three_velocity_components_on_one_topic_share_one_teleop_pad() -> None:
     layout = foxglove_layout(solution, None, load_presentation())
     pads = [c for key, c in layout["configById"].items() if key.startswith("Teleop!")]
     assert [(pad["topic"], pad["foxglovePanelTitle"]) for pad in pads] == [
-        ("/cmd_vel", "Flight, Driving, Walking")
+        ("/cmd_vel", "Flight, Driving, Walking \u00b7 /cmd_vel")
     ]
 
 
@@ -120,7 +140,7 @@ def test_a_joint_command_without_the_robots_joints_is_no_publish_button() -> Non
     joint = layout["configById"]["Indicator!p01"]
     assert joint["path"] == "/joint_trajectory"
     assert joint["foxglovePanelTitle"] == (
-        "Joint (no Publish button: the robot's joint names are not known)"
+        "Joint \u00b7 /joint_trajectory (no Publish button: the robot's joint names are not known)"
     )
 
 
@@ -223,7 +243,10 @@ def test_a_component_the_presentation_omits_is_a_panel_whose_title_says_it_is_a_
         if key.startswith("Indicator!") and "placeholder" in config["lichtblickPanelTitle"]
     }
     assert shown == {
-        f"{name} (placeholder: no panel for this component)": (f"/{topic}", "no panel")
+        f"{name} \u00b7 /{topic} (placeholder: no panel for this component)": (
+            f"/{topic}",
+            "no panel",
+        )
         for name, topic in [
             ("environment gauges", "environment_gauges"),
             ("teleoperated", "teleoperated"),
@@ -241,3 +264,25 @@ def test_plot_series_are_labelled_so_a_narrow_legend_tells_them_apart() -> None:
         ("force y", "/wrench.wrench.force.y"),
         ("force z", "/wrench.wrench.force.z"),
     ]
+
+
+def test_titles_name_the_component_and_the_topic_and_tabs_the_sensors_short_name() -> None:
+    solution = solve(load_team("case2"))
+    configuration = solution.configurations[7]  # UGV, Driving, 6..10 cameras, clusters of 2
+    layout = foxglove_layout(solution, configuration, load_presentation(), robot=Robot("/uav1"))
+    configs = layout["configById"]
+    assert configs["Image!p02"]["lichtblickPanelTitle"] == (
+        "visual display 1 \u00b7 /uav1/camera/image_raw"
+    )
+    assert configs["Image!p02"]["foxglovePanelTitle"] == (
+        "visual display 1 \u00b7 /uav1/camera/image_raw"
+    )
+    assert [tab["title"] for tab in configs["Tab!c05"]["tabs"]] == ["camera 9", "camera 10"]
+
+
+def test_a_tab_title_longer_than_a_tab_shows_is_cut_before_its_number() -> None:
+    solution = solve(load_team("case2"))
+    plan = plan_layout(solution, solution.configurations[7], load_presentation(), Robot("/uav1"))
+    panel = replace(plan.panels[1], name="visual display 3", topic="/uav1/forward_stereo_left_3")
+    assert short_title(panel, plan) == "forward_s\u2026 3"
+    assert len(short_title(panel, plan)) == TAB_TITLE_CHARS

@@ -10,6 +10,7 @@ from solver.layouts import Robot, load_presentation
 from solver.layouts.plan import check_namespace, plan_layout, template_topic
 from solver.layouts.presentation import PanelSpec
 from solver.ros.names import Topic
+from tests.handcounted import SMALL_RULES, team_of
 
 CAMERA = PanelSpec("visual display", "Image", "<robot>/camera/image_raw", ("sensor_msgs/Image",))
 
@@ -36,6 +37,20 @@ def test_a_template_without_the_robot_is_absolute_as_written_or_relative_to_the_
     assert template_topic(scan, "/r", 0) == "/r/scan"
     assert template_topic(scan, None, 0) == "/scan"
     assert template_topic(scan, None, 0, relative=True) == "scan"
+
+
+def test_a_rule_set_clustering_coarser_than_the_cap_gets_clusters_of_at_most_25_sensors() -> None:
+    # A rule set of its own: clusters of 1000 sensors. 625 sensors are shown (25 clusters of
+    # 25, docs/layouts.md), never one Tab panel of 625 tabs.
+    rules = SMALL_RULES.replace("max: 6}\n", "max: 1000}\n").replace(
+        "max: 6, cluster_size: 2", "max: 1000, cluster_size: 1000"
+    )
+    solution = solve(team_of("name: t\nteam:\n  UGV: {sensor_count: [1000]}\n", rules))
+    plan = plan_layout(solution, solution.configurations[0], load_presentation())
+    clusters = [panel.cluster for panel in plan.panels if panel.cluster]
+    assert len(clusters) == 625
+    assert sorted(set(clusters)) == list(range(1, 26))
+    assert {clusters.count(number) for number in range(1, 26)} == {25}
 
 
 def test_velocity_components_on_one_topic_are_one_panel_named_after_each() -> None:

@@ -25,6 +25,9 @@ SPLIT_KEYS = {"first", "second", "direction", "splitPercentage"}
 TITLE_KEYS = {"lichtblickPanelTitle", "foxglovePanelTitle"}
 # Per panel type, the config keys its source declares:
 PANEL_KEYS: dict[str, set[str]] = {
+    # packages/suite-base/src/types/layouts.ts, type TabPanelConfig (the default
+    # configuration's primary views are the tabs of one Tab panel).
+    "Tab": {"activeTabIdx", "tabs"},
     # packages/suite-base/src/panels/Teleop/TeleopPanel.tsx, type Config.
     "Teleop": {"topic", "publishRate", "upButton", "downButton", "leftButton", "rightButton"},
     # packages/suite-base/src/panels/ThreeDeeRender/IRenderer.ts, type RendererConfig (the
@@ -235,7 +238,9 @@ def test_rviz_files_use_only_keys_a_real_rviz2_file_uses() -> None:
     for tool in manager["Tools"]:
         assert set(tool) <= RVIZ_TOOL_KEYS
     classes = set()
-    for display in manager["Displays"]:
+    # A display group (the default configuration's primary views) holds displays of its own.
+    grouped = [d for group in manager["Displays"] for d in group.get("Displays", [])]
+    for display in [*manager["Displays"], *grouped]:
         cls = display["Class"]
         classes.add(cls)
         # Display classes the example does not use (Wrench, Pose, Marker placeholders) share

@@ -156,5 +156,5 @@ def test_velocity_pads_of_one_template_share_the_robots_real_command_topic(
     configs = json.loads(out.read_text())["configById"]
     pads = [c for key, c in configs.items() if key.startswith("Teleop!")]
     assert [(pad["topic"], pad["foxglovePanelTitle"]) for pad in pads] == [
-        ("/dd/base/cmd_vel", "Flight, Driving, Walking")
+        ("/dd/base/cmd_vel", "Flight, Driving, Walking \u00b7 /dd/base/cmd_vel")
     ]

@@ -122,3 +122,19 @@ def test_a_tab_title_names_the_robot_the_configuration_and_its_values() -> None:
     assert tab_title("/ugv1", 103, ["UGV", "Flight"], default=True) == (
         "/ugv1: 103 (default) (UGV, Flight)"
     )
+
+
+def test_a_robots_sensor_clusters_stay_tab_panels_inside_its_tab(solution: Solution) -> None:
+    # A UGV of 6..10 cameras: its layout (a template: the most its configuration serves, 10)
+    # groups them in clusters of 2, Tab panels inside its tab.
+    rover = {"kinematic_type": "UGV", "sensor_type": "2D Camera", "sensor_count": "8"}
+    tab = _robot(solution, "/ugv2", **rover, motion_control="Driving")
+    layout = team_layout([tab], answer_topic=ANSWERS)
+    configs = layout["configById"]
+    clusters = sorted(key for key in configs if key.startswith("Tab!t1-"))
+    assert clusters == [f"Tab!t1-c0{n}" for n in range(1, 6)]
+    # Each cluster's tabs name the renamed panels, which are in configById.
+    inside = [tab["layout"] for key in clusters for tab in configs[key]["tabs"]]
+    assert inside == [f"Image!t1-p{n:02d}" for n in range(2, 12)]  # p01: the Driving pad
+    assert all(panel in configs for panel in inside)
+    assert check_lichtblick(json.loads(json.dumps(layout))) == ()

@@ -198,6 +198,33 @@ def test_a_robot_whose_namespace_is_no_ros2_name_gets_no_layout_and_a_warning(
     assert _tabs(_layout(tmp_path / "team.json")) == {}
 
 
+def test_a_presentation_ordering_by_data_rate_is_applied_alphabetically_and_said_once(
+    solution: Solution, profile: Profile, tmp_path: Path
+) -> None:
+    # watch --layouts reads no bag: the order the file asks for cannot be applied.
+    from solver.layouts.presentation import load_presentation
+
+    file = tmp_path / "presentation.yaml"
+    shipped = Path(__file__).resolve().parents[2] / "rules" / "presentation.yaml"
+    file.write_text(shipped.read_text().replace("order: alphabetical", "order: data rate"))
+    line = next(n for n, text in enumerate(file.read_text().splitlines(), 1) if "data rate" in text)
+    scan = (Topic("scan", "sensor_msgs/LaserScan", "published"),)
+    robot = _identified("/ugv1", rover_text(), scan, solution, profile)
+    out = tmp_path / "out"
+    layouts = LiveLayouts(out, solution, load_presentation(file, solution.rules))
+    warnings = [w for w in _sync(layouts, robot) if "data rate" in w]
+    assert warnings == [
+        f"{file}:{line}: grammar.clusters.order: 'data rate' was asked for and needs each "
+        "topic's bytes per second, from a bag, which watch --layouts does not have: ordered "
+        "alphabetically"
+    ]
+    robot2 = _identified("/ugv2", rover_text(), scan, solution, profile)
+    assert [w for w in _sync(layouts, robot, robot2) if "data rate" in w] == []  # said once
+    design = _layout(next(out.glob("ugv1/*.json")))["globalVariables"]["teleop_ui_design"]
+    assert design["clusterOrder"] == "alphabetical"
+    assert "watch --layouts does not have" in design["clusterOrderNote"]
+
+
 def test_the_root_robot_and_a_mode_it_lacks_get_layouts_too(
     solution: Solution, profile: Profile, tmp_path: Path
 ) -> None:
@@ -365,9 +392,9 @@ def test_the_watcher_writes_at_most_written_bytes_in_all(
     _sync(LiveLayouts(tmp_path / "probe", solution), robots[0])
     one = next((tmp_path / "probe").rglob("config-*.json"))
     size = one.stat().st_size
-    # The team layout holds the robots' panels again: two robots and their team layout fit,
-    # a third robot does not.
-    _lower(monkeypatch, "written-bytes", 5 * size)
+    # The team layout holds the robots' panels again (not their design notes): two robots and
+    # their team layout fit in four robots' bytes, a third robot does not.
+    _lower(monkeypatch, "written-bytes", 4 * size)
     out = tmp_path / "out"
     layouts = LiveLayouts(out, solution)
     (warning,) = _one_by_one(layouts, robots)
@@ -375,7 +402,7 @@ def test_the_watcher_writes_at_most_written_bytes_in_all(
     assert "bytes to write (every layout the watcher writes)" in warning
     assert "(limit 'written-bytes', docs/security.md)" in warning
     assert sorted(p.parent.name for p in out.rglob("config-*.json")) == ["ugv1", "ugv2"]
-    assert sum(p.stat().st_size for p in out.rglob("*.json")) <= 5 * size
+    assert sum(p.stat().st_size for p in out.rglob("*.json")) <= 4 * size
 
 
 # ---- the answer carries its layouts (issue 38) ---------------------------------------------

@@ -2,7 +2,7 @@
 publishes, export the layout, and report what was seen.
 
 usage: python drive.py LAYOUT.json NAME [--app URL] [--ws URL] [--record FILE] [--act]
-       [--shots DIR]
+       [--shots DIR] [--size WIDTHxHEIGHT]
 
 Debian's headless Chromium (never a browser of playwright's own) opens the app connected to a
 Foxglove WebSocket server (``wsserver.py``), imports LAYOUT.json through the app's own menu
@@ -122,7 +122,8 @@ async def run(args: argparse.Namespace) -> dict[str, Any]:
     async with async_playwright() as playwright:
         browser = await playwright.chromium.launch(executable_path=CHROMIUM, args=FLAGS)
         context = await browser.new_context(
-            viewport={"width": 1600, "height": 1000}, accept_downloads=True
+            viewport=dict(zip(("width", "height"), args.size, strict=True)),
+            accept_downloads=True,
         )
         await context.add_init_script(PICKER)
         page = await context.new_page()
@@ -242,6 +243,12 @@ def main() -> None:
     parser.add_argument("--record", default="record.jsonl")
     parser.add_argument("--shots", default="shots")
     parser.add_argument("--wait", type=int, default=6000, help="ms of live data before looking")
+    parser.add_argument(
+        "--size",
+        type=lambda text: tuple(int(side) for side in text.split("x")),
+        default=(1600, 1000),
+        help="the window, WIDTHxHEIGHT (1920x1080: the operator's screen of the quality check)",
+    )
     parser.add_argument("--act", action="store_true", help="press what publishes")
     report = asyncio.run(run(parser.parse_args()))
     summary = {

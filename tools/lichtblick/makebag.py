@@ -1,12 +1,13 @@
 """A small ROS 2 bag (MCAP storage) with one robot's topics, to drive Lichtblick with.
 
-usage: python makebag.py OUT_DIR NAMESPACE [--scan]
+usage: python makebag.py OUT_DIR NAMESPACE [--scan] [--tiles N]
 
 Five seconds at 10 Hz of what the presentation profile's panels show, under NAMESPACE
 (``/robot1``): camera and 360 camera images, point clouds, wrenches and audio bytes (tiles
 ``_2`` .. ``_5`` of each too), and ``/tf`` (map -> base_link -> camera) so that 3D panels
-have frames; ``--scan`` adds ``NAMESPACE/scan`` (``sensor_msgs/msg/LaserScan``). Written with
-rosbags.
+have frames; ``--scan`` adds ``NAMESPACE/scan`` (``sensor_msgs/msg/LaserScan``); ``--tiles N``
+writes ``_2`` .. ``_N`` instead of 5 (10 for a configuration of 6..10 sensors in clusters of 2).
+Written with rosbags.
 """
 
 from __future__ import annotations
@@ -110,6 +111,7 @@ def transforms(stamp: int) -> Any:
 
 def main() -> None:
     out, namespace = Path(sys.argv[1]), sys.argv[2].rstrip("/")
+    tiles = int(sys.argv[sys.argv.index("--tiles") + 1]) if "--tiles" in sys.argv else TILES
     audio = T["audio_common_msgs/msg/AudioData"](data=np.arange(32, dtype=np.uint8))
     with Writer(out, version=9, storage_plugin=StoragePlugin.MCAP) as writer:
         connections: dict[str, Any] = {}
@@ -123,7 +125,7 @@ def main() -> None:
         for k in range(50):
             stamp = start + k * 100_000_000
             put("/tf", "tf2_msgs/msg/TFMessage", transforms(stamp), stamp)
-            for tile in range(TILES):
+            for tile in range(tiles):
                 end = "" if tile == 0 else f"_{tile + 1}"
                 kind = "sensor_msgs/msg/Image"
                 put(

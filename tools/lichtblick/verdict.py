@@ -135,14 +135,37 @@ def judge(report: dict[str, Any], name: str, bag: dict[str, Any], namespace: str
     commands = set().union(*(sends(config) for config in configs.values()))
     context = {"bag": bag, "commands": commands}
     shown: dict[str, int] = {}
+    hidden = inactive_tabs(configs)
     for panel_id, config in configs.items():
-        state, panel_faults = judge_panel(
-            panel_id, config, report["panels"].get(panel_id, {}), context
-        )
+        if panel_id.startswith("Tab!"):
+            continue  # a container: the panels of its tabs are judged
+        seen = report["panels"].get(panel_id, {})
+        if panel_id in hidden and not seen.get("present"):
+            state, panel_faults = "in a tab not shown", []  # the app mounts the active tab only
+        else:
+            state, panel_faults = judge_panel(panel_id, config, seen, context)
         shown[state] = shown.get(state, 0) + 1
         faults += panel_faults
     summary = ", ".join(f"{count} {state}" for state, count in sorted(shown.items()))
-    return [f"{len(configs)} panels: {summary}", *faults]
+    return [f"{sum(shown.values())} panels: {summary}", *faults]
+
+
+def inactive_tabs(configs: dict[str, Any]) -> set[str]:
+    """The panels in the tabs a Tab panel does not show on opening (not its activeTabIdx)."""
+    hidden: set[str] = set()
+    for panel_id, config in configs.items():
+        if not panel_id.startswith("Tab!"):
+            continue
+        active = config.get("activeTabIdx", 0)
+        for index, tab in enumerate(config.get("tabs", [])):
+            stack = [tab.get("layout")] if index != active else []
+            while stack:
+                node = stack.pop()
+                if isinstance(node, str):
+                    hidden.add(node)
+                elif isinstance(node, dict):
+                    stack += [node.get("first"), node.get("second")]
+    return hidden
 
 
 def main() -> None:

@@ -18,10 +18,13 @@ so it starts in the time ``rosbags`` takes to import. It
     SQL), with SQLite's temporary storage in memory and its heap capped;
   - a ROS 2 ``.mcap``: rosbags' MCAP reader, its summary when there is one; where it scans the
     chunks instead, each is decompressed into at most the size it declares, at most
-    ``chunk_bytes`` each and ``bag_bytes`` in all;
+    ``chunk_bytes`` each and ``bag_bytes`` in all (and so is each chunk of a ROS 1 bag whose
+    messages are read: at most ``chunk_bytes``, every read counted in ``bag_bytes``);
   - a bag folder: each storage file in it as above, or rosbags' ``AnyReader`` where it holds
     none (a file-compressed bag, decompressed into the private temporary folder);
 
+* with ``"rates": true`` in the request, reads every message instead, one at a time, and
+  answers each topic's bytes and first and last timestamps (``layouts --rates-bag``);
 * answers with one JSON object on stdout: ``{"ok": true, "pairs": [[topic, type], ...]}``, or
   ``{"ok": false, "kind": ..., "message": ...}`` (``kind``: ``reader`` for what the bag
   library refused, ``limit`` for a bound, ``error`` for anything its parsers tripped over).
@@ -66,6 +69,8 @@ def main() -> None:
 
 def _answer(request: dict[str, Any]) -> dict[str, Any]:
     try:
+        if request.get("rates"):
+            return {"ok": True, "rates": _rates(Path(request["path"]), request)}
         return {"ok": True, "pairs": _pairs(Path(request["path"]), request)}
     except Refused as refused:
         return {"ok": False, "kind": refused.kind, "message": str(refused)}
@@ -109,6 +114,28 @@ def _pairs(bag: Path, request: dict[str, Any]) -> list[tuple[str, str]]:
 
     with AnyReader([bag]) as reader:
         return [(c.topic, c.msgtype) for c in reader.connections]
+
+
+def _rates(bag: Path, request: dict[str, Any]) -> list[tuple[str, int, int, int]]:
+    """(topic, bytes, first, last timestamp in ns) of every topic, its messages read one at a
+    time (rosbags' readers stream them; a ROS 1 bag's per-message index is held, 150 bytes a
+    message)."""
+    _cap_decompression(request["chunk_bytes"], request["bag_bytes"])
+    if bag.is_file() and bag.suffix == ".bag":
+        from rosbags.rosbag1 import Reader as Reader1
+
+        opened: Any = Reader1(bag)
+    else:
+        from rosbags.rosbag2 import Reader as Reader2
+
+        opened = Reader2(bag)
+    seen: dict[str, list[int]] = {}
+    with opened as reader:
+        for connection, timestamp, data in reader.messages():
+            found = seen.setdefault(connection.topic, [0, timestamp, timestamp])
+            found[0] += len(data)
+            found[1], found[2] = min(found[1], timestamp), max(found[2], timestamp)
+    return [(topic, total, first, last) for topic, (total, first, last) in seen.items()]
 
 
 def _storage(file: Path) -> list[tuple[str, str]]:
@@ -181,8 +208,14 @@ def _db3(path: Path) -> list[tuple[str, str]]:
 
 
 def _cap_decompression(chunk_bytes: int, bag_bytes: int) -> None:
-    """Decompress each MCAP chunk into at most the size it declares, within both caps."""
+    """Decompress each MCAP chunk into at most the size it declares, and each ROS 1 chunk
+    (which declares none rosbags reads) into at most ``chunk_bytes``, every chunk read
+    counted against ``bag_bytes`` (a ROS 1 chunk read again, its messages interleaved in time
+    with another chunk's, counted again)."""
+    import bz2
+
     from lz4.frame import LZ4FrameDecompressor  # type: ignore[import-untyped]  # no stubs
+    from rosbags.rosbag1 import reader as ros1
     from rosbags.rosbag2 import storage_mcap
 
     if sys.version_info >= (3, 14):
@@ -204,8 +237,26 @@ def _cap_decompression(chunk_bytes: int, bag_bytes: int) -> None:
 
         return decompress
 
+    def counted(size: int) -> None:
+        spent[0] += size
+        if spent[0] > bag_bytes:
+            raise Refused(f"its chunks decompress to more than {bag_bytes} bytes in all")
+
+    def ros1_capped(make: Callable[[], Any] | None) -> Callable[[bytes], bytes]:
+        def decompress(data: bytes) -> bytes:
+            found = data if make is None else _frames(make, data, chunk_bytes)
+            if len(found) > chunk_bytes:
+                raise Refused(f"a chunk decompresses to more than {chunk_bytes} bytes")
+            counted(len(found))
+            return found
+
+        return decompress
+
     storage_mcap.DECOMPRESSORS["zstd"] = capped(zstd.ZstdDecompressor)
     storage_mcap.DECOMPRESSORS["lz4"] = capped(LZ4FrameDecompressor)
+    ros1.decompressors["bz2"] = ros1_capped(bz2.BZ2Decompressor)
+    ros1.decompressors["lz4"] = ros1_capped(LZ4FrameDecompressor)
+    ros1.decompressors["none"] = ros1_capped(None)
 
 
 def _frames(make: Callable[[], Any], data: bytes, size: int) -> bytes:

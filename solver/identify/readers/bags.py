@@ -26,6 +26,7 @@ import sys
 import tempfile
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 from solver.errors import InputError
 from solver.extras import require
@@ -33,7 +34,7 @@ from solver.identify.limited import Finished, run_limited
 from solver.ros.names import Topic, normalise_type
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
-__all__ = ["BagLimits", "read_bag_topics"]
+__all__ = ["RATE_LIMITS", "BagLimits", "read_bag_rates", "read_bag_topics"]
 
 _MIB = 2**20
 
@@ -80,7 +81,52 @@ def read_bag_topics(
     return tuple(topics)
 
 
-def _read_in_child(bag: Path, name: str, limits: BagLimits) -> list[tuple[str, str]]:
+# Reading every message of a bag takes time linear in its bytes and messages (a 1 GB bag of
+# images: under a second from the page cache, seconds from disk, docs/security.md); its
+# memory stays that of one chunk or message (and a ROS 1 bag's index), whatever its size. A
+# stranger's bag ends within seconds: 30 s of CPU, 40 s in all, and 4 GiB decompressed (a
+# 1 GB bag compressed 4:1; every chunk at most 64 MiB, each read counted, so chunks read
+# again and again cannot spin), past which the bag is refused, naming the bound.
+RATE_LIMITS = BagLimits(cpu_seconds=30, wall_seconds=40.0, bag_bytes=4 * 2**30)
+
+
+def read_bag_rates(
+    path: str | Path, *, display: str | None = None, limits: BagLimits = RATE_LIMITS
+) -> dict[str, float]:
+    """Bytes per second of each topic a bag recorded (its bytes over the bag's span, as
+    ``ros2 topic bw`` over the recording), every message read once, streaming."""
+    require("rosbags", feature="reading bag files (layouts --rates-bag)")
+    name = shown(display if display is not None else str(path), limit=SHOWN_FILE_NAME_CHARS)
+    bag = _checked(Path(path), name)
+    answer = _read_in_child(bag, name, limits, rates=True)
+    rows = [(str(t), int(n), int(a), int(b)) for t, n, a, b in answer]
+    if not rows:
+        return {}
+    span = (max(row[3] for row in rows) - min(row[2] for row in rows)) / 1e9
+    seconds = span if span > 0 else 1.0
+    return {topic: round(total / seconds, 3) for topic, total, _, _ in sorted(rows)}
+
+
+def _checked(bag: Path, name: str) -> Path:
+    """``bag`` resolved, or a located error for a name that is no bag file or folder."""
+    try:
+        if not bag.exists():
+            raise InputError.at(name, "no such bag file or folder", code="bag")
+        if not (bag.is_file() or bag.is_dir()):
+            raise InputError.at(name, "not a bag file or folder (a device or pipe?)", code="bag")
+    except InputError:
+        raise
+    except ValueError:  # a NUL byte in the name
+        raise InputError.at(name, "not a usable file name", code="bag") from None
+    except OSError as error:  # a name past the file system's limits
+        raise InputError.at(
+            name, f"not a usable file name ({error.strerror})", code="bag"
+        ) from None
+    return bag.resolve()
+
+
+def _read_in_child(bag: Path, name: str, limits: BagLimits, *, rates: bool = False) -> list[Any]:
+    """The child's answer: (topic, type) pairs, or with ``rates`` its rows of four."""
     temporary = Path(tempfile.mkdtemp(prefix="teleop-ui-bag-"))
     try:
         finished = run_limited(
@@ -92,6 +138,7 @@ def _read_in_child(bag: Path, name: str, limits: BagLimits) -> list[tuple[str, s
                 "temp_bytes": limits.temp_bytes,
                 "chunk_bytes": limits.chunk_bytes,
                 "bag_bytes": limits.bag_bytes,
+                "rates": rates,
             },
             wall_seconds=limits.wall_seconds,
             answer_bytes=limits.answer_bytes,
@@ -105,8 +152,10 @@ def _read_in_child(bag: Path, name: str, limits: BagLimits) -> list[tuple[str, s
     if answer is None or finished.returncode != 0:
         raise InputError.at(name, _why_stopped(finished, limits), code="bag-limit")
     if answer.get("ok"):
-        pairs = answer.get("pairs")
+        pairs = answer.get("rates" if rates else "pairs")
         if isinstance(pairs, list):
+            if rates:
+                return pairs
             return [(str(topic), str(kind)) for topic, kind in pairs]
     message = shown(str(answer.get("message") or "no reason given"), limit=200)
     kind = answer.get("kind")

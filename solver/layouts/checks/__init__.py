@@ -15,6 +15,9 @@ can refuse a layout before it reaches an operator.
 ``messagepath``      Lichtblick's message-path grammar (``/topic.field[0]{id==1}``)
 ``lichtblick``       :func:`check_lichtblick`: a Lichtblick layout, every problem at once
 ``rviz``             :func:`check_rviz`: an RViz2 document, every problem at once
+``quality.yaml``     the project's own limits for a layout an operator reads (issue 39)
+``quality``          a layout's figures (primary view, smallest tile, tiles on a screen)
+                     and a team's consistency, measured on the split tree
 =================  ======================================================================
 
 ROS 2 topic names are checked by :func:`solver.ros.names.full_topic_name_problem` (rmw's

@@ -1,4 +1,5 @@
-"""The viewers' rules as shipped data: ``lichtblick.yaml`` and ``rviz2.yaml`` beside this module.
+"""The viewers' rules as shipped data: ``lichtblick.yaml`` and ``rviz2.yaml`` beside this module,
+and the project's own limits for a layout an operator reads, ``quality.yaml``.
 
 Each file names the upstream source and commit it was read from; this module only loads them
 (once per process: they are the package's own files and never change while it runs) and walks
@@ -21,6 +22,7 @@ __all__ = [
     "FIELD_REFERENCE_HELP",
     "field_values",
     "lichtblick_rules",
+    "quality_rules",
     "rviz_rules",
     "type_problems",
 ]
@@ -33,6 +35,12 @@ FIELD_REFERENCE_HELP = "a.b: key b of a; a.{}: every key of map a; a.[]: every i
 def lichtblick_rules() -> Mapping[str, Any]:
     """``lichtblick.yaml``: layout shape, panel types, per-panel config types and defaults."""
     return load_document(_HERE / "lichtblick.yaml").data  # type: ignore[no-any-return]  # YAML data is Any
+
+
+@functools.cache
+def quality_rules() -> Mapping[str, Any]:
+    """``quality.yaml``: the screen and the limits a layout for an operator meets."""
+    return load_document(_HERE / "quality.yaml").data  # type: ignore[no-any-return]  # YAML data is Any
 
 
 @functools.cache

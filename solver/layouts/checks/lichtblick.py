@@ -98,7 +98,7 @@ def check_lichtblick(
     # One screen at a time: the panels of each tab, and those outside every tab; a tab's
     # robot is the one the follower beside its Tab panel names for it, where there is one.
     robots = _tab_robots(nodes, configs)
-    for tab, screen in _screens(configs, nodes).items():
+    for tab, screen in _screens(configs, nodes, robots).items():
         own = namespace or robots.get(tab) or robot_namespace({"configById": screen})
         faults.extend(_teleop_topics(screen, file))
         if own is not None:
@@ -637,14 +637,25 @@ def _active_tab(config: dict[str, Any], base: str, file: str) -> Iterator[Fault]
         )
 
 
-def _screens(configs: dict[str, Any], nodes: list[_Node]) -> dict[str, dict[str, Any]]:
-    """The panels' configs by what is on screen at once: each tab's (by its Tab panel's id and
-    its index, ``Tab!x[2]``), and those outside every tab (``""``: with an id in no tree), in
-    ``configs``' order."""
+def _screens(
+    configs: dict[str, Any], nodes: list[_Node], robots: Mapping[str, str]
+) -> dict[str, dict[str, Any]]:
+    """The panels' configs by what is on screen at once: each robot's tab (by its Tab panel's
+    id and its index, ``Tab!x[2]``, as a follower names it in ``robots``), and those outside
+    every such tab (``""``: with an id in no tree), in ``configs``' order. A Tab panel no
+    follower switches (a cluster of one robot's sensors) is part of the screen it sits in."""
     tab_of = {item.node: item.tab for item in nodes if isinstance(item.node, str)}
+
+    def screen(tab: str) -> str:
+        for _ in range(len(tab_of) + 1):  # a Tab inside its own tab ends, as the walk does
+            if not tab or tab in robots:
+                return tab
+            tab = tab_of.get(tab.rpartition("[")[0], "")
+        return tab
+
     screens: dict[str, dict[str, Any]] = {}
     for panel_id, config in configs.items():
-        screens.setdefault(tab_of.get(panel_id, ""), {})[panel_id] = config
+        screens.setdefault(screen(tab_of.get(panel_id, "")), {})[panel_id] = config
     return screens
 
 

@@ -509,3 +509,22 @@ def test_an_extension_panel_this_project_does_not_ship_is_unknown() -> None:
     layout["configById"]["teleop-ui.other!x"] = layout["configById"].pop(FOLLOWER)
     layout["layout"]["first"] = "teleop-ui.other!x"
     assert _codes(layout) == {"lichtblick-panel-type": ["configById.teleop-ui.other!x"]}
+
+
+def test_a_cluster_tab_is_part_of_its_robots_screen_not_a_robot_of_its_own() -> None:
+    from solver import load_team, solve
+    from solver.layouts import Robot, foxglove_layout, load_presentation
+
+    solution = solve(load_team("case2"))
+    # Ten cameras in clusters of 2 under /robot1: each Tab panel's tabs name only
+    # /robot1/camera/... topics, and its panels' click tools publish in /robot1.
+    layout = foxglove_layout(
+        solution, solution.configurations[7], load_presentation(), robot=Robot("/robot1")
+    )
+    assert sum(key.startswith("Tab!") for key in layout["configById"]) == 5
+    assert check_lichtblick(layout) == ()
+    # A click tool outside the robot's namespace, inside a cluster, is still found.
+    layout["configById"]["Image!p03"]["publish"]["pointTopic"] = "/clicked_point"
+    (fault,) = check_lichtblick(layout)
+    assert fault.code == "namespace"
+    assert "outside the robot's namespace '/robot1'" in fault.message
