@@ -142,7 +142,7 @@ def views(page: Page, url: str, out: Path) -> None:
     page.get_by_role("link", name="Check").click()
     shoot(page, out, "check")
 
-    page.get_by_role("link", name="Fleet").click()
+    page.get_by_role("link", name="Fleet", exact=True).click()
     folder = page.get_by_role("button", name=re.compile("^Identify .*examples"))
     if folder.count():
         folder.click()
@@ -189,20 +189,80 @@ def live(page: Page, out: Path, work: Path) -> None:
         core.kill()
 
 
+def design_views(page: Page, url: str, out: Path, suffix: str = "") -> None:
+    """The views of issue 40: the selection's what-if, the configuration map (filtered, several
+    compared), the designs folder with a comparison; ``suffix`` names the width (``-phone``)."""
+    base = url.split("?", maxsplit=1)[0]
+    page.goto(url)
+    expect(page.locator("#whatif li")).not_to_have_count(0)
+    settled(page)
+    page.locator("#whatif-section").scroll_into_view_if_needed()
+    shoot(page, out, f"whatif{suffix}")
+    page.evaluate("window.scrollTo(0, 0)")
+    shoot(page, out, f"selection{suffix}" if suffix else "selection-top")
+
+    page.get_by_role("link", name="Map", exact=True).click()
+    page.get_by_label("Only configurations with the component").select_option("sensor_type:audio")
+    page.get_by_role("button", name="Filter").click()
+    columns = page.locator("#map th[data-configuration]")
+    for index in (0, 1):
+        columns.nth(index).get_by_role("checkbox").check()
+    columns.last.get_by_role("checkbox").check()
+    page.get_by_role("button", name="Compare the picked configurations").click()
+    expect(page.locator("#map-comparison")).to_be_visible()
+    shoot(page, out, f"map{suffix}")
+
+    page.goto(f"{base}designs")
+    if page.locator("#designs").count():  # a studio started with --designs
+        page.goto(url)
+        settled(page)
+        page.get_by_role("link", name="Designs", exact=True).click()
+        page.get_by_label("Name").fill("Case 3")
+        page.get_by_role("button", name="Save design").click()
+        page.goto(url)
+        settled(page)
+        page.locator("#whatif a[data-apply]").first.click()
+        expect(page.locator("#total-configurations")).not_to_have_text("102")
+        page.get_by_role("link", name="Designs", exact=True).click()
+        page.get_by_label("Name").fill("Case 3 smaller")
+        page.get_by_role("button", name="Save design").click()
+        page.get_by_label("From").select_option("Case 3")
+        page.get_by_label("To").select_option("Case 3 smaller")
+        page.get_by_role("button", name="Compare designs").click()
+        expect(page.locator("#diff-changes")).to_be_visible()
+        shoot(page, out, f"designs{suffix}")
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--url", help="a running studio (default: start one)")
     parser.add_argument("--out", type=Path, default=ROOT / "docs", help="folder (default: docs)")
+    parser.add_argument(
+        "--designs-only",
+        action="store_true",
+        help="only the views of issue 40 (what-if, map, designs), at 1280x800 and 390x844",
+    )
     args = parser.parse_args()
     process = None
     url = args.url
+    designs = tempfile.TemporaryDirectory(prefix="studio-designs-")
     if url is None:
-        process, url = start("case3", "--fleet", str(ROOT / "examples"))
+        process, url = start("case3", "--fleet", str(ROOT / "examples"), "--designs", designs.name)
     try:
         with sync_playwright() as playwright:
             browser = playwright.chromium.launch(
                 executable_path="/usr/bin/chromium", args=CHROMIUM_ARGS
             )
+            for width, height, suffix in ((1280, 800, ""), (390, 844, "-phone")):
+                for design in Path(designs.name).glob("*.yaml"):
+                    design.unlink()
+                narrow = browser.new_page(viewport={"width": width, "height": height})
+                narrow.set_default_timeout(60_000)
+                design_views(narrow, url, args.out, suffix)
+                narrow.close()
+            if args.designs_only:
+                browser.close()
+                return 0
             page = browser.new_page(viewport={"width": 1280, "height": 860})
             page.set_default_timeout(60_000)
             views(page, url, args.out)
@@ -213,6 +273,7 @@ def main() -> int:
     finally:
         if process is not None:
             stop(process)
+        designs.cleanup()
     return 0
 
 

@@ -48,6 +48,12 @@ def register(subparsers: Any) -> None:
         help="a folder of robot descriptions the Fleet page may identify (repeatable)",
     )
     parser.add_argument(
+        "--designs",
+        metavar="DIR",
+        help="a folder of designs (team files) the Designs page saves into, lists, reopens, "
+        "compares and deletes",
+    )
+    parser.add_argument(
         "--ros2", action="store_true", help="the Live page follows a ROS 2 graph on DDS"
     )
     parser.add_argument(
@@ -141,9 +147,14 @@ def _studio(args: argparse.Namespace) -> Any:
         start = team_path(args.start)
         shown = args.start if str(start) == args.start else (shipped_name(start) or str(start))
     profile = load_profile(args.profile) if args.profile else None
+    designs = None
+    if args.designs is not None:
+        from solver.studio.designs import Designs
+
+        designs = Designs(Path(args.designs))
     workspace = Workspace(start=start, start_display=shown, folders=[Path(f) for f in args.fleet])
     live = _live(args, workspace, profile) if args.ros2 or args.master else None
-    return Studio(workspace, live, profile)
+    return Studio(workspace, live, profile, designs)
 
 
 def _live(args: argparse.Namespace, workspace: Any, chosen: Any) -> Any:

@@ -22,6 +22,7 @@ Not here: what the selection produces (:mod:`solver.solving.solution`).
 
 from __future__ import annotations
 
+import functools
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -51,6 +52,8 @@ __all__ = [
     "load_team",
     "parse_team",
     "resolve_team_path",
+    "shipped_rule_sets",
+    "shipped_rules_path",
 ]
 
 _TEAM_KEYS = {"name", "description", "rules", "team", "published"}
@@ -204,6 +207,9 @@ def _resolve_rules(
     if not text:
         return None
     relative = folder / text  # the OS resolves ".." (symlinks included); normpath is for show
+    shipped = shipped_rules_path(text, folder)
+    if shipped is not None:
+        return load_rules(shipped)  # a shipped rule set by its name: `rules: extended`
     resolved = os.path.normpath(Path(reader.file).parent / text)
     try:
         return load_rules(relative, display=resolved)
@@ -211,6 +217,9 @@ def _resolve_rules(
         if any(fault.location.line is not None for fault in error.faults):
             raise  # the rules file exists but is not valid YAML: its own faults say where
         reasons = "; ".join(fault.message for fault in error.faults)
+        if not Path(text).suffix and "/" not in text:
+            names = ", ".join(shipped_rule_sets())
+            reasons += f" (a shipped rule set is named by its name: {names})"
         reader.fault(
             ("rules",),
             f"cannot use rules file {shown(text, quoted=True)} "
@@ -218,6 +227,30 @@ def _resolve_rules(
             code="unknown-reference",
         )
         return None
+
+
+def shipped_rules_path(text: str, folder: Path) -> Path | None:
+    """The shipped rule set a team file's ``rules: NAME`` names (``extended`` is
+    ``rules/extended.yaml`` of the package, wherever installed), else ``None``: a bare name
+    (no folder, no suffix) that is no file beside the team and is a shipped rule set's name.
+    So a team names a shipped set the same way on every machine."""
+    if not text or "/" in text or "\\" in text or Path(text).suffix or text.startswith("."):
+        return None
+    if os.path.lexists(folder / text):
+        return None  # a file of that name beside the team is what it names
+    return shipped_path(f"{text}.yaml") if text in shipped_rule_sets() else None
+
+
+@functools.cache
+def shipped_rule_sets() -> tuple[str, ...]:
+    """The names of the rule sets shipped with the package (``paper``, ``extended``, ...)."""
+    from solver.files.filekind import file_kind
+
+    found = []
+    for path in sorted(shipped_path().glob("*.yaml")):
+        if file_kind(load_document(path)) == "rules":
+            found.append(path.stem)
+    return tuple(found)
 
 
 def _read_published(reader: Reader, top: dict[str, object]) -> Published | None:

@@ -593,6 +593,71 @@ async def live_preview(request: Request) -> Response:
     )
 
 
+async def whatif(request: Request) -> Response:
+    """What-if: the single changes of the team (a value dropped, a count's maximum lowered
+    below an arrangement) ranked by UI configurations saved, then valid robots lost; counted
+    exactly by the counting engines, none listed.
+    ---
+    summary: What-if suggestions
+    responses:
+      200: {description: "`suggestions` (best first, at most 10), each with `query` to apply"}
+      409: {description: "`superseded`: a newer what-if was asked while this one waited"}
+      422: {description: located faults}
+    """
+    data = await run_in_threadpool(_studio(request).whatif_data, _pairs(request))
+    return JSONResponse(data, status_code=409 if data.get("superseded") else 200)
+
+
+async def configuration_map(request: Request) -> Response:
+    """The configuration map: a row per component, a column per configuration and the default.
+    ---
+    summary: The configuration map
+    parameters:
+      - {name: component, in: query, schema: {type: string}, description: "CHARACTERISTIC:NAME"}
+      - {name: pick, in: query, schema: {type: integer}, description: "compared (repeated)"}
+    responses:
+      200: {description: "`rows`, `columns` (each with `cells`), `compared`"}
+      422: {description: located faults}
+    """
+    return await _json(lambda s, p: s.map_data(p))(request)
+
+
+async def designs(request: Request) -> Response:
+    """The design folder (`studio --designs DIR`): each design, or why an entry is refused.
+    ---
+    summary: List the designs
+    responses:
+      200: {description: "`designs`: `{name, problem}` each (no problem: a design)"}
+      422: {description: located faults (no design folder)}
+    """
+
+    def listed(studio: Studio, _pairs: list[tuple[str, str]]) -> dict[str, Any]:
+        entries, left_out = studio.designs_list()
+        return {
+            "designs": [{"name": e.name, "problem": e.problem} for e in entries],
+            "left_out": left_out,
+        }
+
+    return await _json(listed)(request)
+
+
+async def design_diff(request: Request) -> Response:
+    """What changed from design `a` to design `b`: types and values added and removed, and
+    each one's counts with the change.
+    ---
+    summary: Compare two designs
+    responses:
+      200: {description: "`changes`, `valid_robots`, `ui_configurations` (of each) and `change`"}
+      422: {description: located faults (no such design, no team, a rule set not allowed)}
+    """
+
+    def diff(studio: Studio, pairs: list[tuple[str, str]]) -> dict[str, Any]:
+        found = dict(pairs)
+        return studio.design_diff(found.get("a", ""), found.get("b", ""))
+
+    return await _json(diff)(request)
+
+
 def _no_layout(robot: str, configuration: int) -> InputError:
     from solver.untrusted import shown
 
@@ -617,6 +682,10 @@ def routes() -> list[BaseRoute]:
         Route("/api/report.html", report_html),
         Route("/api/layouts.zip", layouts_zip),
         Route("/api/model.uvl", model_uvl),
+        Route("/api/map", configuration_map),
+        Route("/api/whatif", whatif),
+        Route("/api/designs", designs),
+        Route("/api/designs/diff", design_diff),
         Route("/api/charts/{kind}.svg", chart),
         Route("/api/rules", upload_rules, methods=["POST"]),
         Route("/api/team", upload_team, methods=["POST"]),

@@ -44,11 +44,13 @@ PER_PAGE = 50
 VIEWS = (
     ("/", "Selection"),
     ("/configurations", "Configurations"),
+    ("/map", "Map"),
     ("/robots", "Robots"),
     ("/charts", "Charts"),
     ("/check", "Check"),
     ("/fleet", "Fleet"),
     ("/export", "Export"),
+    ("/designs", "Designs"),
     ("/live", "Live"),
     ("/api", "API"),
 )
@@ -195,6 +197,10 @@ class CharacteristicControl:
     minimum: int = 0
     maximum: int = 0
     components: str = ""
+    # Where ticking the type starts: the first value the rules allow the type, or the counts of
+    # the first arrangement (a small selection, said in the page, rather than everything).
+    start: str = ""
+    start_most: int = 0
 
 
 @dataclass(frozen=True)
@@ -284,6 +290,8 @@ def _integer_control(
     if given:
         minimum, maximum = min(map(int, given)), max(map(int, given))
     components = "; ".join(f"{c.name}: {c.describe_range()}" for c in characteristic.components)
+    first = next((c for c in characteristic.components if low in c.values), None)
+    start_most = high if first is None else min(high, max(int(v) for v in first.values))
     return CharacteristicControl(
         f"{kinematic_type}.{characteristic.name}",
         characteristic.name,
@@ -294,6 +302,7 @@ def _integer_control(
         minimum=minimum,
         maximum=maximum,
         components=components if len(components) < 400 else "",
+        start_most=start_most,
     )
 
 
@@ -307,12 +316,14 @@ def _categorical_control(
     where = (kinematic_type, characteristic.name)
     chosen_values = values.get(where)
     reasons = excluded.get(where, {})
+    start = next((str(v) for v in characteristic.values if str(v) not in reasons), "")
     return CharacteristicControl(
         f"{kinematic_type}.{characteristic.name}",
         characteristic.name,
         characteristic.label,
         "categorical",
-        tuple(
+        start=start,
+        values=tuple(
             ValueControl(
                 str(value),
                 _components_text(characteristic, value),
@@ -409,13 +420,20 @@ async def selection(request: Request) -> Response:
             except SolverError as error:
                 page.faults.extend(error.faults)
         checked = None
+        whatif = None
         findings: dict[Slot, list[ShownFinding]] = {}
+        # What-if is never made for the page's load (the script asks for it afterwards); a
+        # page without scripts asks for it with whatif=1.
+        if data is not None and not page.faults and _first(page.pairs, "whatif") == "1":
+            whatif = page.studio.whatif_data(page.pairs)
+            whatif = None if whatif.get("superseded") else whatif
         if not page.faults:
             checked = page.studio.findings_data(page.pairs)
             types = [str(v) for v in chosen.rules.key.values]
             findings = _placed_findings(page, checked, types)
         return {
             "checked": checked,
+            "whatif": whatif,
             "findings": findings,
             "view": view,
             "types": _type_controls(page, view),
@@ -424,6 +442,9 @@ async def selection(request: Request) -> Response:
             "sources": page.studio.workspace.rule_sources,
             "teams": [
                 (name, _query(pairs)) for name, pairs in page.studio.shipped_teams(chosen.source)
+            ],
+            "starts": [
+                (name, rules_id, _query(pairs)) for name, rules_id, pairs in page.studio.starts()
             ],
             "chart_query": page.selection_query,
         }
@@ -492,6 +513,14 @@ def _component_text(entry: dict[str, Any]) -> str:
     return f"{entry['component']}: {runs} ({entry['clusters'][0]}..{entry['clusters'][1]} clusters)"
 
 
+def _named_component_text(entry: dict[str, Any]) -> str:
+    """A component by the name the rules give it, and what it serves where that says more
+    than its name (``audio: Speaker, Microphone``; ``UGV``, not ``UGV: UGV``)."""
+    if "values" in entry and [str(v) for v in entry["values"]] == [entry["component"]]:
+        return str(entry["component"])
+    return _component_text(entry)
+
+
 def _number(pairs: Pairs, name: str, default: int) -> int:
     text = _first(pairs, name)
     if text is None or not text.isdigit() or len(text) > 18:
@@ -503,6 +532,32 @@ def _only_last(pairs: Sequence[tuple[str, str]]) -> list[tuple[str, str]]:
     """``pairs`` with only the last of each paging parameter (``offset``, ``limit``)."""
     last = {k: v for k, v in pairs if k in ("offset", "limit")}
     return [(k, v) for k, v in pairs if k not in last] + list(last.items())
+
+
+async def configuration_map(request: Request) -> Response:
+    """The configuration map: components as rows, configurations (the default one too) as
+    columns; filtered by a component, several picked to compare."""
+    page = _page(request, "Map")
+
+    def work() -> dict[str, Any]:
+        data = page.studio.map_data(page.pairs)
+        chosen = page.chosen = page.studio.chosen(page.pairs)
+        labels = {c.name: c.label for c in chosen.rules.characteristics}
+        compared = []
+        if data["compared"]:
+            for index, characteristic in enumerate(chosen.rules.characteristics):
+                cells = [c["components"][index] for c in data["compared"]]
+                texts = [_named_component_text(c) for c in cells]
+                differs = len({c["component"] for c in cells}) > 1
+                compared.append((characteristic.label, texts, differs))
+        return {
+            "data": data,
+            "labels": labels,
+            "compared": compared,
+            "picked": [c["number"] for c in data["compared"]],
+        }
+
+    return page.render("map.html", **await run_in_threadpool(work))
 
 
 async def configuration(request: Request) -> Response:
@@ -624,7 +679,10 @@ async def export(request: Request) -> Response:
     def work() -> dict[str, Any]:
         page.chosen = page.studio.chosen(page.pairs)
         page.chosen.require()
-        return {"yaml": page.studio.team_text(page.pairs)}
+        return {
+            "yaml": page.studio.team_text(page.pairs),
+            "layouts_refused": page.studio.layouts_refused(page.pairs),
+        }
 
     return page.render("export.html", **await run_in_threadpool(work))
 
@@ -645,6 +703,70 @@ async def upload_rules(request: Request) -> Response:
         raise InputError.at("<upload>", "choose one rule set file to upload")
     source = await run_in_threadpool(page.studio.add_rules, uploads[0])
     return RedirectResponse(f"/?{_query([('rules', source.id)])}", status_code=303)
+
+
+# -- designs (``--designs DIR``) ---------------------------------------------------------------
+
+
+async def designs(request: Request) -> Response:
+    """The design folder: every design (and every entry refused, escaped), a form to save the
+    page's selection, and the change from one design to another (``a``, ``b``)."""
+    page = _page(request, "Designs")
+    first, second = _first(page.pairs, "a"), _first(page.pairs, "b")
+
+    def work() -> dict[str, Any]:
+        _choose(page)
+        studio = page.studio
+        if studio.designs is None:
+            return {"entries": None, "left_out": 0, "diff": None}
+        entries, left_out = studio.designs_list()
+        diff = studio.design_diff(first, second) if first and second else None
+        return {"entries": entries, "left_out": left_out, "diff": diff}
+
+    return page.render(
+        "designs.html",
+        saved=_first(page.pairs, "saved") or "",
+        a=first or "",
+        b=second or "",
+        **await run_in_threadpool(work),
+    )
+
+
+async def _form_field(request: Request, name: str) -> str:
+    try:
+        form = await request.form(max_files=0, max_fields=8)
+    except HTTPException as error:
+        raise InputError.at("<request>", f"refused: {error.detail}") from None
+    try:
+        value = form.get(name)
+    finally:
+        await form.close()
+    if not isinstance(value, str):
+        raise InputError.at("<request>", f"the form names no {name}", path=name)
+    return value
+
+
+async def design_save(request: Request) -> Response:
+    page = _page(request, "Designs")
+    name = await _form_field(request, "design")
+    file = await run_in_threadpool(page.studio.save_design, name, selection_pairs(page.pairs))
+    pairs = [(k, v) for k, v in selection_pairs(page.pairs) if k != "name"]
+    query = _query([*pairs, ("name", file.removesuffix(".yaml"))], saved=file)
+    return RedirectResponse(f"/designs?{query}", status_code=303)
+
+
+async def design_delete(request: Request) -> Response:
+    page = _page(request, "Designs")
+    name = await _form_field(request, "design")
+    await run_in_threadpool(page.studio.delete_design, name)
+    return RedirectResponse(page.link("/designs"), status_code=303)
+
+
+async def design_open(request: Request) -> Response:
+    page = _page(request, "Designs")
+    name = _first(page.pairs, "design") or ""
+    query = await run_in_threadpool(page.studio.design_query, name)
+    return RedirectResponse(f"/?{_query(query)}", status_code=303)
 
 
 # -- fleet ---------------------------------------------------------------------------------------
@@ -790,12 +912,59 @@ async def api_index(request: Request) -> Response:
     from solver.studio.api import routes as api_routes
 
     _choose(page)
-    entries = [
-        (route.path, sorted(route.methods or ()), (route.endpoint.__doc__ or "").split("\n---")[0])
-        for route in api_routes()
-        if isinstance(route, Route)
-    ]
+    entries = [_endpoint(route) for route in api_routes() if isinstance(route, Route)]
     return page.render("api.html", entries=entries, max_page=MAX_PAGE)
+
+
+def _endpoint(route: Route) -> dict[str, Any]:
+    """One endpoint as the API page shows it: the OpenAPI document's part of it (the
+    docstring's text, and after ``---`` its summary, parameters and responses), each text as
+    parts of plain text and code (between backticks)."""
+    from starlette.schemas import SchemaGenerator
+
+    text = (route.endpoint.__doc__ or "").split("\n---")[0]
+    schema = SchemaGenerator({}).parse_docstring(route.endpoint)
+    parameters = [
+        {
+            "name": str(p.get("name", "")),
+            "where": str(p.get("in", "")),
+            "type": _schema_type(p.get("schema")),
+            "description": _code_parts(str(p.get("description", ""))),
+        }
+        for p in schema.get("parameters", [])
+        if isinstance(p, dict)
+    ]
+    responses = [
+        (str(code), _code_parts(str(answer.get("description", ""))))
+        for code, answer in (schema.get("responses") or {}).items()
+        if isinstance(answer, dict)
+    ]
+    return {
+        "path": route.path,
+        "methods": sorted(route.methods or ()),
+        "summary": str(schema.get("summary", "")),
+        "text": _code_parts(" ".join(text.split())),
+        "parameters": parameters,
+        "responses": responses,
+    }
+
+
+def _schema_type(schema: object) -> str:
+    """``integer``, ``array of string``: a parameter's schema in words."""
+    if not isinstance(schema, dict):
+        return ""
+    kind = str(schema.get("type", ""))
+    items = schema.get("items")
+    if kind == "array" and isinstance(items, dict):
+        return f"array of {items.get('type', '')}"
+    if "enum" in schema:
+        return f"{kind}: " + ", ".join(map(str, schema["enum"]))
+    return kind
+
+
+def _code_parts(text: str) -> list[tuple[str, bool]]:
+    """``text`` as ``(part, is_code)``: the parts between backticks are code."""
+    return [(part, index % 2 == 1) for index, part in enumerate(text.split("`")) if part]
 
 
 def routes() -> list[BaseRoute]:
@@ -803,11 +972,16 @@ def routes() -> list[BaseRoute]:
         Route("/", selection),
         Route("/configurations", configurations),
         Route("/configurations/{number}", configuration),
+        Route("/map", configuration_map),
         Route("/robots", robots),
         Route("/charts", charts),
         Route("/check", check),
         Route("/rules/source", rules_source),
         Route("/export", export),
+        Route("/designs", designs),
+        Route("/designs", design_save, methods=["POST"]),
+        Route("/designs/delete", design_delete, methods=["POST"]),
+        Route("/designs/open", design_open),
         Route("/team", upload_team, methods=["POST"]),
         Route("/rules", upload_rules, methods=["POST"]),
         Route("/fleet", fleet),

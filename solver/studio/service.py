@@ -13,10 +13,12 @@ from __future__ import annotations
 import copy
 import functools
 import io
+import os
 import threading
 import zipfile
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
+from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from solver import InputError, RuleSet, Solution, SolverError, Team, assign
@@ -25,6 +27,7 @@ from solver.solving.assignment import assignment_data
 from solver.solving.contracts import configuration_data
 from solver.solving.solution import counts_data, solution_data
 from solver.solving.teamfile import team_yaml
+from solver.studio.designs import DESIGNS_FILE, Designs, Entry
 from solver.studio.selection import SELECTION_FILE, Selection, parse_query, query_of
 from solver.studio.workspace import (
     MAX_UPLOAD_FILES,
@@ -36,10 +39,13 @@ from solver.studio.workspace import (
 
 if TYPE_CHECKING:
     from solver import Profile
+    from solver.core.partition import Configuration
+    from solver.core.team import TypeSelection
     from solver.studio.live import LiveFeed
 
 __all__ = [
     "CHART_KINDS",
+    "MAX_MAP_COLUMNS",
     "MAX_PAGE",
     "PAGE_CHECK_SECONDS",
     "Chosen",
@@ -50,6 +56,12 @@ __all__ = [
 Pairs = Sequence[tuple[str, str]]
 # Rows of one page of configurations or robots, at most.
 MAX_PAGE = 500
+# Columns of the configuration map at a time, and configurations compared at once, at most.
+MAX_MAP_COLUMNS = 500
+MAX_PICKED = 12
+# What-if suggestions answered at most (the best), and the seconds its changes may take to try.
+MAX_SUGGESTIONS = 10
+WHATIF_SECONDS = 2.0
 # Files an upload of robot descriptions may hold, by how their names end.
 DESCRIPTION_SUFFIXES = (".urdf", ".urdf.xacro", ".xacro", ".srdf", ".topics", ".topics.txt")
 # A robot looked up is given as robot.<characteristic>=<value>.
@@ -126,10 +138,16 @@ class Studio:
     """The studio's answers over one :class:`Workspace` (and a live feed when started so)."""
 
     def __init__(
-        self, workspace: Workspace, live: LiveFeed | None = None, profile: Profile | None = None
+        self,
+        workspace: Workspace,
+        live: LiveFeed | None = None,
+        profile: Profile | None = None,
+        designs: Designs | None = None,
     ) -> None:
         self.workspace = workspace
         self.live = live
+        # The design folder given at start (``studio --designs DIR``), if any.
+        self.designs = designs
         # The identification profile of Fleet (``studio --profile``; the shipped one if none).
         self._profile = profile
         # matplotlib's rc settings are global: one report's charts are drawn at a time.
@@ -186,6 +204,8 @@ class Studio:
         chosen = self.chosen(pairs)
         solution = self.solution(chosen, listed=True)
         found = next((c for c in solution.configurations if c.number == number), None)
+        if found is None and number == solution.default_configuration:
+            return default_data(solution)
         if found is None:
             raise InputError.at(
                 SELECTION_FILE,
@@ -194,6 +214,112 @@ class Studio:
                 path="configuration",
             )
         return configuration_data(solution.rules, found)
+
+    def map_data(self, pairs: Pairs) -> dict[str, Any]:
+        """The configuration map (as FeatureIDE's): a row per component of the rules (by the
+        names the rules give them), a column per configuration and the default one last; a
+        cell says what the configuration's component serves. ``component=CHARACTERISTIC:NAME``
+        keeps the columns that have that component; ``offset`` pages the columns
+        (:data:`MAX_MAP_COLUMNS` at a time); ``pick=N`` (repeated, at most
+        :data:`MAX_PICKED`) compares those configurations, the default one too."""
+        chosen = self.chosen(pairs)
+        solution = self.solution(chosen, listed=True)
+        rules = solution.rules
+        rows = [(c.name, part.name) for c in rules.characteristics for part in c.components]
+        wanted = _first(pairs, "component") or ""
+        if wanted and tuple(wanted.split(":", 1)) not in rows:
+            raise InputError.at(
+                SELECTION_FILE,
+                f"no component {shown_text(wanted)} in the rules; name it CHARACTERISTIC:NAME",
+                path="component",
+            )
+        # Filtered on the configurations themselves, and only the page shown (and those
+        # compared) written out: a team of 500,000 configurations is not built whole.
+        kept: list[Configuration | None] = list(solution.configurations)
+        if wanted:
+            place, name = _component_place(rules, wanted)
+            kept = [c for c in kept if c is not None and c.components[place].name == name]
+        kept.append(None)  # the default configuration, last: it has every component
+        offset = _whole(pairs, "offset", 0)
+        columns = [_column(solution, c) for c in kept[offset : offset + MAX_MAP_COLUMNS]]
+        picked = _picked(pairs)
+        by_number = {c["number"]: c for c in columns}
+        compared = [by_number.get(n) or self.configuration_data(pairs, n) for n in picked]
+        return {
+            "team": solution.team.name,
+            "total": len(kept),
+            "offset": offset,
+            "limit": MAX_MAP_COLUMNS,
+            "component": wanted,
+            "default_configuration": solution.default_configuration,
+            "rows": [{"characteristic": c, "component": n} for c, n in rows],
+            "columns": [
+                {
+                    "number": c["number"],
+                    "kinematic_type": c["kinematic_type"],
+                    "valid_robots": c["valid_robots"],
+                    "default": bool(c.get("default")),
+                    "cells": [_cell(c, characteristic, name) for characteristic, name in rows],
+                }
+                for c in columns
+            ],
+            "compared": compared,
+        }
+
+    def whatif_data(self, pairs: Pairs) -> dict[str, Any]:
+        """What-if (:mod:`solver.studio.whatif`): the single changes of the team that save UI
+        configurations, best first (at most :data:`MAX_SUGGESTIONS`), each with its counts
+        after and the query that applies it; how many of the changes were tried, why the rest
+        were not, and those tried but not counted (the first :data:`MAX_SUGGESTIONS`).
+        ``{"superseded": true}`` when a newer what-if was asked while this one waited (it
+        is not made: :meth:`Workspace.kept_whatif`)."""
+        from urllib.parse import urlencode
+
+        from solver.studio.whatif import what_if
+
+        chosen = self.chosen(pairs)
+        team = chosen.require()
+        key = (chosen.source.id, chosen.selection, "what-if")
+        totals = self.solution(chosen).totals
+        found = self.workspace.kept_whatif(key, lambda: what_if(team, seconds=WHATIF_SECONDS))
+        if found is None:
+            return {"team": team.name, "superseded": True}
+        suggestions = []
+        for suggestion in found.suggestions[:MAX_SUGGESTIONS]:
+            suggestions.append(
+                {
+                    "change": suggestion.text,
+                    "type": suggestion.kinematic_type,
+                    "characteristic": suggestion.characteristic,
+                    "kind": suggestion.kind,
+                    "value": suggestion.value,
+                    "ui_configurations_saved": suggestion.configurations_saved,
+                    "valid_robots_lost": suggestion.robots_lost,
+                    "after": {
+                        "valid_robots": totals.valid_robots - suggestion.robots_lost,
+                        "ui_configurations": totals.ui_configurations
+                        - suggestion.configurations_saved,
+                    },
+                    "query": urlencode(query_of(suggestion.team, chosen.source.id)),
+                }
+            )
+        return {
+            "team": team.name,
+            "totals": {
+                "valid_robots": totals.valid_robots,
+                "ui_configurations": totals.ui_configurations,
+            },
+            "tried": found.tried,
+            "total": found.total,
+            "stopped": found.stopped,
+            "left_out": [
+                {"change": left.change, "reason": left.reason}
+                for left in found.left_out[:MAX_SUGGESTIONS]
+            ],
+            "left_out_count": len(found.left_out),
+            "found": len(found.suggestions),
+            "suggestions": suggestions,
+        }
 
     def robots_data(self, pairs: Pairs) -> dict[str, Any]:
         """One page of ``teleop-ui robots --format jsonl`` (of one configuration with
@@ -323,14 +449,10 @@ class Studio:
         chosen = self.chosen(pairs)
         team = chosen.require()
         solution = self.solution(chosen)
-        reference = None
-        if chosen.source.id != "paper":
-            # Where the rule set is on this machine; a shipped one by its installed place.
-            reference = str(chosen.source.path.resolve())
         return team_yaml(
             team,
             solution=solution,
-            rules_reference=reference,
+            rules_reference=rules_reference(chosen.source),
             header=(
                 "Team selection made in teleop-ui studio; `teleop-ui solve FILE` solves it.",
                 f"Rule set: {chosen.rules.name} ({chosen.rules.file}).",
@@ -351,6 +473,19 @@ class Studio:
 
         return team_to_uvl(self.chosen(pairs).require())
 
+    def layouts_refused(self, pairs: Pairs) -> str:
+        """Why the layouts of the selection cannot be exported (too many files for the
+        ``written-files`` limit), from its counts alone, before anything is listed or written
+        (``""``: they can)."""
+        from solver.layouts.writer import check_layout_count
+
+        totals = self.solution(self.chosen(pairs)).totals
+        try:
+            check_layout_count(totals.ui_configurations, "<layouts.zip>")
+        except SolverError as error:
+            return error.faults[0].message
+        return ""
+
     def layouts_zip(self, pairs: Pairs) -> bytes:
         """``teleop-ui layouts`` for Foxglove/Lichtblick and for RViz2, one zip of both."""
         from solver import load_presentation
@@ -358,7 +493,10 @@ class Studio:
         from solver.layouts.writer import check_layout_count, layout_texts
         from solver.limits import limit
 
-        solution = self.solution(self.chosen(pairs), listed=True)
+        chosen = self.chosen(pairs)
+        # Refused from the counts, before a configuration is listed (layouts_refused).
+        check_layout_count(self.solution(chosen).totals.ui_configurations, "<layouts.zip>")
+        solution = self.solution(chosen, listed=True)
         presentation = load_presentation()
         check_layout_count(len(solution.configurations), "<layouts.zip>")
         most = limit("written-bytes")
@@ -501,7 +639,132 @@ class Studio:
         team = parse_team(parse_document(text, "<fleet team>"), source.rules)
         return {"yaml": text, "query": query_of(team, source.id)}
 
+    # -- designs (``--designs DIR``) -----------------------------------------------------------
+
+    def design_folder(self) -> Designs:
+        if self.designs is None:
+            raise InputError.at(
+                DESIGNS_FILE, "the studio was started without --designs DIR", path="designs"
+            )
+        return self.designs
+
+    def designs_list(self) -> tuple[list[Entry], int]:
+        """The design folder's entries (designs and refusals) and how many were left out."""
+        return self.design_folder().entries()
+
+    def save_design(self, name: str, pairs: Pairs) -> str:
+        """The page's selection saved as design ``name`` (the team takes that name); its
+        file name. A design under an uploaded rule set is refused: the upload is gone when
+        the studio stops, and the design could not be read again."""
+        from solver.studio.designs import design_name
+
+        folder = self.design_folder()
+        name = design_name(name)
+        pairs = [(k, v) for k, v in pairs if k != "name"] + [("name", name)]
+        chosen = self.chosen(pairs)
+        team = chosen.require()
+        if chosen.source.origin == "upload":
+            raise InputError.at(
+                DESIGNS_FILE,
+                "a design under an uploaded rule set is not saved: the upload is gone when the "
+                "studio stops; put the rule set in a file and start the studio with it",
+                path="rules",
+            )
+        text = team_yaml(
+            team,
+            solution=self.solution(chosen),
+            rules_reference=rules_reference(chosen.source, folder.folder),
+            header=(
+                f"Design {name}, saved by teleop-ui studio; `teleop-ui solve FILE` solves it.",
+            ),
+        )
+        return folder.save(name, text)
+
+    def delete_design(self, name: str) -> None:
+        self.design_folder().delete(name)
+
+    def design_query(self, name: str) -> list[tuple[str, str]]:
+        """The query that selects design ``name`` (located errors: no design, no team, a rule
+        set the studio may not read)."""
+        from solver.core.team import parse_team
+        from solver.files.filekind import require_kind
+
+        folder = self.design_folder()
+        document = folder.read(name)
+        require_kind(document, "team")
+        source = self._design_source(document, folder)
+        team = parse_team(document, source.rules)
+        return query_of(team, source.id)
+
+    def _design_source(self, document: Any, folder: Designs) -> RuleSource:
+        """The rule set a design names: none (the article's), a shipped one by its name, or
+        the one given at start by its path from the design folder; nothing else is read."""
+        data = document.data
+        if not isinstance(data, dict) or "rules" not in data:
+            return self.workspace.source("paper")
+        text = data["rules"]  # `rules:` with nothing is no rule set (`solve` refuses it too)
+        allowed = []
+        for source in self.workspace.rule_sources:
+            if source.origin == "shipped":
+                allowed.append(source.id)
+                if text == source.id:
+                    return source
+            elif source.origin == "start":
+                # As `teleop-ui solve` reads it: from the folder the OS opens (through a link in
+                # the folder's own path), as `save_design` wrote it.
+                here = folder.folder.resolve()
+                allowed.append(os.path.relpath(source.path.resolve(), here))
+                given = os.path.normpath(os.path.join(here, str(text)))
+                if given == os.path.normpath(source.path.resolve()):
+                    return source
+        where = document.location(("rules",))
+        raise InputError.at(
+            document.file,
+            f"rules {shown_text(text)}: a design names a shipped rule set or the one given "
+            f"at start ({', '.join(allowed)}); this studio reads no other path",
+            line=where.line,
+            column=where.column,
+            path="rules",
+            code="unknown-reference",
+        )
+
+    def design_diff(self, first: str, second: str) -> dict[str, Any]:
+        """What changed from design ``first`` to ``second``: kinematic types and values added
+        and removed (per type and characteristic), and the counts of each with the change."""
+        chosen = [self.chosen(self.design_query(name)) for name in (first, second)]
+        teams = [c.require() for c in chosen]
+        totals = [self.solution(c).totals for c in chosen]
+        changes = _team_changes(teams[0], teams[1])
+        return {
+            "designs": [first, second],
+            "rules": [c.rules.name for c in chosen],
+            "changes": changes,
+            "valid_robots": [t.valid_robots for t in totals],
+            "ui_configurations": [t.ui_configurations for t in totals],
+            "change": {
+                "valid_robots": totals[1].valid_robots - totals[0].valid_robots,
+                "ui_configurations": totals[1].ui_configurations - totals[0].ui_configurations,
+            },
+        }
+
     # -- what the pages list -----------------------------------------------------------------
+
+    def starts(self) -> list[tuple[str, str, list[tuple[str, str]]]]:
+        """Every team to start from in one click, whatever its rule set: the one given at
+        start, then the shipped ones (the article's cases first), each as (name, rule set id,
+        query)."""
+        found: list[tuple[str, str, list[tuple[str, str]]]] = []
+        by_file = {s.rules.file: s for s in self.workspace.rule_sources if s.origin != "upload"}
+        start = self.workspace.start_team
+        if start is not None and start.rules.file in by_file:
+            given = by_file[start.rules.file]
+            found.append((f"{start.name} (given at start)", given.id, query_of(start, given.id)))
+        teams = sorted(_shipped_teams(), key=lambda t: (not t.name.startswith("Case"), t.name))
+        for team in teams:
+            source = by_file.get(team.rules.file)
+            if source is not None:
+                found.append((team.name, source.id, query_of(team, source.id)))
+        return found
 
     def shipped_teams(self, source: RuleSource) -> list[tuple[str, list[tuple[str, str]]]]:
         """Shipped teams (and the one given at start) that use ``source``'s rules, with the
@@ -514,6 +777,151 @@ class Studio:
             if team.rules.file == source.rules.file:
                 found.append((team.name, query_of(team, source.id)))
         return found
+
+
+def default_data(solution: Solution) -> dict[str, Any]:
+    """The default configuration as :func:`~solver.solving.contracts.configuration_data`
+    writes a configuration: every component of every characteristic. It serves the robots the
+    selection leaves out (a value not selected, a count beyond the range), so no valid robot."""
+    return {
+        "number": solution.default_configuration,
+        "kinematic_type": "default",
+        "default": True,
+        "valid_robots": 0,
+        "components": [
+            {
+                "characteristic": c.name,
+                "component": "every component",
+                "values": [part.name for part in c.components],
+            }
+            for c in solution.rules.characteristics
+        ],
+    }
+
+
+def _component_place(rules: RuleSet, wanted: str) -> tuple[int, str]:
+    """``(the characteristic's place, the component's name)`` of ``CHARACTERISTIC:NAME``."""
+    characteristic, name = wanted.split(":", 1)
+    names = [c.name for c in rules.characteristics]
+    return names.index(characteristic), name
+
+
+def _column(solution: Solution, configuration: Configuration | None) -> dict[str, Any]:
+    """One column of the map: a configuration as ``configuration_data`` writes it, or the
+    default one (``None``)."""
+    if configuration is None:
+        return default_data(solution)
+    return configuration_data(solution.rules, configuration)
+
+
+def _cell(column: dict[str, Any], characteristic: str, component: str) -> str:
+    """What ``column``'s ``component`` of ``characteristic`` serves ("" when it has none)."""
+    if column.get("default"):
+        return "yes"
+    for entry in column["components"]:
+        if entry["characteristic"] == characteristic and entry["component"] == component:
+            if "values" in entry:
+                return ", ".join(map(str, entry["values"]))
+            return ", ".join(f"{a}" if a == b else f"{a}..{b}" for a, b in entry["counts"])
+    return ""
+
+
+def _picked(pairs: Pairs) -> list[int]:
+    """The configurations ``pick=N`` names (whole numbers, each once, at most
+    :data:`MAX_PICKED`)."""
+    found: list[int] = []
+    for key, value in pairs:
+        if key != "pick" or not (value.isascii() and value.isdigit()) or len(value) > 18:
+            continue
+        if int(value) not in found:
+            found.append(int(value))
+    if len(found) > MAX_PICKED:
+        raise InputError.at(
+            SELECTION_FILE,
+            f"{len(found)} configurations picked; compare at most {MAX_PICKED} at once",
+            path="pick",
+        )
+    return found
+
+
+def shown_text(value: object) -> str:
+    """A value from a stranger's file, quoted and escaped for a message."""
+    from solver.untrusted import shown
+
+    return shown(str(value), quoted=True)
+
+
+def _team_changes(before: Team, after: Team) -> list[dict[str, Any]]:
+    """Per kinematic type: added or removed whole, or each characteristic's values added and
+    removed (by value, in the rule set's order). Characteristics are matched by name: two
+    designs under different rule sets may order them differently, or have one the other
+    lacks (all its values added, or removed)."""
+    old = {s.kinematic_type: s for s in before.selections}
+    new = {s.kinematic_type: s for s in after.selections}
+    changes: list[dict[str, Any]] = []
+    for name in [*old, *(n for n in new if n not in old)]:
+        if name not in new or name not in old:
+            changes.append({"type": name, "change": "removed" if name in old else "added"})
+            continue
+        was = _domains(before, old[name])
+        now = _domains(after, new[name])
+        for key in [*now, *(n for n in was if n not in now)]:
+            change = _values_changed((now.get(key) or was[key])[0], was, now)
+            if change is not None:
+                changes.append({"type": name, **change})
+    return changes
+
+
+Domains = dict[str, tuple[Any, tuple[Any, ...]]]
+
+
+def _values_changed(characteristic: Any, was: Domains, now: Domains) -> dict[str, Any] | None:
+    """The values of ``characteristic`` added and removed from ``was`` to ``now`` (``None``:
+    no change)."""
+    kept = was[characteristic.name][1] if characteristic.name in was else ()
+    made = now[characteristic.name][1] if characteristic.name in now else ()
+    added = _shown_values(characteristic, [v for v in made if v not in kept])
+    removed = _shown_values(characteristic, [v for v in kept if v not in made])
+    if not (added or removed):
+        return None
+    return {"characteristic": characteristic.name, "added": added, "removed": removed}
+
+
+def _domains(team: Team, selection: TypeSelection) -> Domains:
+    """``selection``'s values by characteristic name (the team key left out), each with its
+    characteristic."""
+    rules = team.rules
+    return {
+        c.name: (c, domain)
+        for c, domain in zip(rules.characteristics, selection.domains, strict=True)
+        if c.name != rules.team_key
+    }
+
+
+def _shown_values(characteristic: Any, values: list[Any]) -> list[str]:
+    """Values as a diff shows them: counts in runs (``6..13``), other values one by one."""
+    if characteristic.kind != "integer":
+        return [str(v) for v in values]
+    runs: list[list[int]] = []
+    for count in sorted(int(v) for v in values):
+        if runs and runs[-1][1] == count - 1:
+            runs[-1][1] = count
+        else:
+            runs.append([count, count])
+    return [str(a) if a == b else f"{a}..{b}" for a, b in runs]
+
+
+def rules_reference(source: RuleSource, folder: Path | None = None) -> str | None:
+    """What a team file written by the studio says in ``rules:`` for ``source``: nothing for
+    the article's rules (a team naming none is read against them), a shipped set by its name
+    (``extended``: it solves on any machine with teleop-ui), any other by its path, relative
+    to ``folder`` (where the file is kept) when given, else absolute."""
+    if source.origin == "shipped":
+        return None if source.id == "paper" else source.id
+    path = source.path.resolve()
+    if folder is not None:
+        return os.path.relpath(path, folder.resolve())
+    return str(path)
 
 
 @functools.cache

@@ -203,10 +203,16 @@ class Workspace:
         self._excluded: dict[str, dict[tuple[str, str], dict[str, Removed]]] = {}
         self.fleets: _Kept[str, Fleet] = _Kept(MAX_KEPT_FLEETS)
         self._checks: _Kept[tuple[str, Selection, float | None], Checked] = _Kept(MAX_KEPT_CHECKS)
+        self._whatifs: _Kept[tuple[str, Selection, str], Any] = _Kept(MAX_KEPT_CHECKS)
         self._counter = 0
         # Solutions being made, by key, and how many may be made at once.
         self._making: dict[object, threading.Event] = {}
         self._solving = threading.BoundedSemaphore(MAX_SOLVING)
+        # What-if's own slot (one made at a time), and how many were asked for (the newest
+        # waiting is made; older ones waiting are dropped).
+        self._wondering = threading.Condition(threading.Lock())
+        self._whatif_busy = False
+        self._whatifs_asked = 0
         # Made last: a start file that cannot be read leaves no folder behind.
         remove_abandoned_folders()
         self.folder = Path(tempfile.mkdtemp(prefix=f"{FOLDER_PREFIX}{os.getpid()}-"))
@@ -392,6 +398,43 @@ class Workspace:
     ) -> Checked:
         """A check's answer for ``key`` (rule set, selection, budget), made once while kept."""
         return self._cached(self._checks, key, make)
+
+    def kept_whatif(self, key: tuple[str, Selection, str], make: Callable[[], V]) -> V | None:
+        """What-if's answer for ``key`` (rule set, selection), made once while kept, in a slot
+        of its own: one what-if made at a time, never in one of the :data:`MAX_SOLVING` slots
+        the solutions and checks use (what-if tries thousands of changes; the totals must not
+        wait for it). ``None`` when a newer what-if was asked while this one waited for its
+        slot: the page that asked has moved on, and the newer one is made instead."""
+        with self._wondering:
+            self._whatifs_asked += 1
+            ticket = self._whatifs_asked
+            self._wondering.notify_all()
+            while True:
+                with self._lock:
+                    found = self._whatifs.get(key)
+                    if found is not None:
+                        self._whatifs.move_to_end(key)
+                        return found  # type: ignore[no-any-return]
+                if ticket != self._whatifs_asked:
+                    return None
+                if not self._whatif_busy:
+                    break
+                self._wondering.wait()
+            self._whatif_busy = True
+        try:
+            value = make()
+            with self._lock:
+                return self._whatifs.keep(key, value)  # type: ignore[no-any-return]
+        finally:
+            with self._wondering:
+                self._whatif_busy = False
+                self._wondering.notify_all()
+
+    @property
+    def whatifs_asked(self) -> int:
+        """How many what-ifs were asked for so far (a test waits for its own to be asked)."""
+        with self._wondering:
+            return self._whatifs_asked
 
     def _cached(self, kept: _Kept[K, V], key: K, make: Callable[[], V]) -> V:
         """``kept[key]``, made by ``make`` when missing: once, however many ask at the same

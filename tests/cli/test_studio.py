@@ -5,6 +5,7 @@ serves on. (The studio's process, its signals and its private folder: tests/stud
 from __future__ import annotations
 
 import os
+from pathlib import Path
 
 from tests.studio.conftest import StartStudio
 
@@ -23,3 +24,13 @@ def test_open_with_no_browser_to_open_says_so_and_goes_on_serving(
         "teleop-ui studio: warning: no browser could be opened here: "
         "open the address above in one\n"
     )
+
+
+def test_a_design_folder_that_is_no_folder_is_a_located_error(tmp_path: Path) -> None:
+    from tests.conftest import run_cli
+
+    missing = tmp_path / "nowhere"
+    answer = run_cli("studio", "--designs", missing, "--port", "0")
+    assert answer.returncode == 2
+    assert answer.stderr == f"{missing}: --designs needs a folder (make it first)\n"
+    assert not missing.exists()

@@ -69,6 +69,36 @@ def test_a_relative_rules_path_resolves_against_the_team_files_folder(
     assert load_team(os.path.relpath(team_path)).rules.name == "mine"
 
 
+def test_a_shipped_rule_set_is_named_by_its_name_on_any_machine(write_file: WriteFile) -> None:
+    team = load_team(write_file("anywhere/t.yaml", "rules: extended\nteam:\n  UAV: {}\n"))
+    assert team.rules.name == load_rules(RULES / "extended.yaml").name
+    assert team.rules.file == "rules/extended.yaml"
+
+
+def test_a_file_beside_the_team_wins_over_a_shipped_name(write_file: WriteFile) -> None:
+    write_file(
+        "here/extended",
+        (RULES / "paper.yaml").read_text().replace("name: Mortimer et al. 2017", "name: mine"),
+    )
+    team = load_team(write_file("here/t.yaml", "rules: extended\nteam:\n  UAV: {}\n"))
+    assert team.rules.name == "mine"
+
+
+def test_a_misspelled_shipped_name_lists_the_shipped_rule_sets(write_file: WriteFile) -> None:
+    (message,) = faults(write_file("t.yaml", "rules: extendd\nteam:\n  UAV: {}\n"))
+    assert message.endswith(
+        "no such file (a shipped rule set is named by its name: "
+        "extended, marine, paper-case3-hypothesis, paper)"
+    )
+
+
+def test_a_profile_shipped_beside_the_rule_sets_is_no_rule_set_name(
+    write_file: WriteFile,
+) -> None:
+    (message,) = faults(write_file("t.yaml", "rules: identification\nteam:\n  UAV: {}\n"))
+    assert "cannot use rules file 'identification'" in message
+
+
 def test_rules_given_by_the_caller_override_the_team_file(write_file: WriteFile) -> None:
     rules = load_rules(RULES / "paper-case3-hypothesis.yaml")
     assert load_team(TEAMS / "case3.yaml", rules).rules.bound == 1080

@@ -13,8 +13,10 @@ from collections.abc import Iterable
 from pathlib import Path
 from urllib.parse import parse_qsl, urlsplit
 
+from markupsafe import escape
 from playwright.sync_api import Page, expect
 
+from benchmarks.conftest import Scale
 from tests.conftest import ROOT, run_cli
 from tests.studio.conftest import Server, StartStudio
 
@@ -236,6 +238,135 @@ def test_on_a_phone_nothing_is_wider_than_the_screen(start_studio: StartStudio, 
         assert page.evaluate("document.documentElement.scrollWidth") <= 375, address
 
 
+def test_on_a_phone_the_totals_come_first_stay_reachable_and_nothing_is_clipped(
+    start_studio: StartStudio, page: Page
+) -> None:
+    server = start_studio("case3")
+    page.set_viewport_size({"width": 390, "height": 844})
+    page.goto(server.url)
+    robots = page.locator("#total-robots")
+    expect(robots).to_have_text("872")
+    # The totals are on the first screen, above the controls.
+    box = robots.bounding_box()
+    assert box is not None
+    assert box["y"] + box["height"] <= 844
+    first_control = page.locator("fieldset.type").first.bounding_box()
+    assert first_control is not None
+    assert box["y"] < first_control["y"]
+    # Scrolled to the last control, one link brings the totals back.
+    page.locator("#update").scroll_into_view_if_needed()
+    expect(robots).not_to_be_in_viewport()
+    page.get_by_role("link", name="Totals", exact=True).click()
+    expect(robots).to_be_in_viewport()
+    selection = urlsplit(page.url).query.split("#")[0]
+    for path in ("/", "/map", "/configurations", "/designs", "/export"):
+        page.goto(f"{server.base.rstrip('/')}{path}?{selection}")
+        expect(page.locator("main")).to_be_visible()
+        assert page.evaluate("document.documentElement.scrollWidth") <= 390, path
+        clipped = page.evaluate(
+            "[...document.querySelectorAll('caption')]"
+            ".filter((c) => c.scrollWidth > c.clientWidth + 1).map((c) => c.textContent)"
+        )
+        assert clipped == [], path
+
+
+def test_on_a_phone_the_totals_link_covers_no_what_if_suggestion(
+    start_studio: StartStudio, page: Page
+) -> None:
+    server = start_studio("case3")
+    page.set_viewport_size({"width": 390, "height": 844})
+    page.goto(server.url)
+    suggestions = page.locator("#whatif li")
+    expect(suggestions).to_have_count(10)
+    link = page.get_by_role("link", name="Totals", exact=True)
+    for where in ("#whatif li:last-child", "body"):
+        # Scrolled as far as it goes (the item to the screen's bottom; the page to its end).
+        page.locator(where).evaluate("(e) => e.scrollIntoView({block: 'end'})")
+        last = suggestions.last.bounding_box()
+        covering = link.bounding_box()
+        assert last is not None
+        assert covering is not None
+        assert last["y"] + last["height"] <= covering["y"], where
+
+
+def test_layouts_of_more_configurations_than_may_be_written_say_why_before_any_wait(
+    start_studio: StartStudio, page: Page, tmp_path: Path
+) -> None:
+    # 1 type x 10 motion controls x 100 sensor types (100 groups of one) x 1..5 sensors (5
+    # arrangements): 5,000 configurations, and the default's layout: 5,001 files.
+    scale = Scale(types=1, motions=10, sensors=100, groups=100, counts=5, arrangements=5)
+    scale.team(tmp_path)
+    server = start_studio(str(tmp_path / "team.yaml"))
+    page.goto(server.url)
+    expect(page.locator("#total-configurations")).to_have_text("5000")
+    page.get_by_role("link", name="Export").click()
+    refused = page.locator("#export-layouts-refused")
+    expect(refused).to_contain_text("5001 files to write")
+    expect(refused).to_contain_text("at most 2000")
+    expect(page.locator("#export-layouts")).to_have_count(0)
+    # Asked for anyway, the zip is refused with the same reason (422, located).
+    query = urlsplit(page.url).query
+    status, body = server.get(f"/api/layouts.zip?{query}")
+    assert status == 422
+    assert "5001 files to write" in body.decode()
+    # One motion control and at most one sensor: 100 configurations, offered.
+    page.goto(server.at("/export?rules=start&type=T0&T0.motion_control=M0&T0.sensor_count.max=1"))
+    expect(page.locator("#export-layouts")).to_be_visible()
+    expect(page.locator("#export-layouts-refused")).to_have_count(0)
+
+
+def test_the_articles_cases_and_every_shipped_team_are_one_click_from_the_top(
+    studio: Server, page: Page
+) -> None:
+    page.goto(studio.url)
+    starts = page.locator("nav.starts")
+    top = starts.bounding_box()
+    controls = page.locator("fieldset.type").first.bounding_box()
+    assert top is not None
+    assert controls is not None
+    assert top["y"] < controls["y"]
+    shipped = sorted((ROOT / "rules" / "teams").glob("*.yaml"))
+    expect(starts.locator("a")).to_have_count(len(shipped))
+    starts.get_by_role("link", name="Case 1", exact=True).click()
+    expect(page.locator("#total-robots")).to_have_text("30")
+    expect(page.locator("#total-configurations")).to_have_text("6")
+    # A team under another rule set: one click too, the rule set with it.
+    marine = json.loads(run_cli("solve", "marine-survey", "--format", "json").stdout)["totals"]
+    page.locator("nav.starts").get_by_role("link", name="Marine survey (example)").click()
+    expect(page.get_by_label("Rule set", exact=True)).to_have_value("marine")
+    expect(page.locator("#total-robots")).to_have_text(str(marine["valid_robots"]))
+    expect(page.locator("#total-configurations")).to_have_text(str(marine["ui_configurations"]))
+
+
+def test_a_type_ticked_starts_from_a_small_selection_and_says_which(
+    studio: Server, page: Page, tmp_path: Path
+) -> None:
+    page.goto(studio.url)
+    page.locator("legend").get_by_label("Humanoid", exact=True).check()
+    note = page.locator('fieldset.type[data-type="Humanoid"] .start-note')
+    expect(note).to_contain_text("Started from a small selection: motion_control ")
+    found = re.fullmatch(
+        r"Started from a small selection: motion_control (.+); sensor_type (.+); "
+        r"sensor_count 1\.\.(\d+)\. Tick more values to widen it\.",
+        note.inner_text(),
+    )
+    assert found is not None, note.inner_text()
+    motion, sensor, most = found.groups()
+    # What the page counts is what the command line counts for those values.
+    team = tmp_path / "small.yaml"
+    team.write_text(
+        f"team:\n  Humanoid:\n    motion_control: [{motion}]\n    sensor_type: [{sensor}]\n"
+        f"    sensor_count: {most}\n",
+        encoding="utf-8",
+    )
+    data = json.loads(run_cli("solve", team, "--format", "json").stdout)
+    expect(page.locator("#total-robots")).to_have_text(str(data["totals"]["valid_robots"]))
+    assert data["totals"]["valid_robots"] <= int(most)
+    # Every type of the article's rules, in full, counts far more.
+    every = json.loads(run_cli("count", "rules/paper.yaml", "--format", "json").stdout)
+    assert data["totals"]["valid_robots"] < every["totals"]["valid_robots"] / 100
+
+
 def test_configurations_open_compare_and_a_robot_is_looked_up(
     start_studio: StartStudio, page: Page
 ) -> None:
@@ -295,7 +426,7 @@ def test_the_example_robots_uploaded_are_identified_and_made_a_team(
     # The robots' files (examples/ also holds a rule set, profile and team of its own).
     examples = sorted(p for p in (ROOT / "examples").iterdir() if p.suffix in (".urdf", ".srdf"))
     page.goto(studio.url)
-    page.get_by_role("link", name="Fleet").click()
+    page.get_by_role("link", name="Fleet", exact=True).click()
     page.get_by_label("Robot descriptions").set_input_files(examples)
     page.get_by_role("button", name="Identify").click()
     fleet = page.locator("#fleet")
@@ -395,6 +526,10 @@ def test_a_malformed_rule_file_uploaded_is_shown_with_its_line_and_the_studio_go
     page.get_by_role("button", name="Upload rule set").click()
     expect(page.get_by_label("Rule set", exact=True)).to_contain_text("two robots")
     page.locator("legend").get_by_label("UGV", exact=True).check()
+    expect(page.locator("#total-robots")).to_have_text("1")  # started small: 1 sensor
+    most = page.locator('fieldset[data-key="UGV.sensor_count"]').get_by_label("Most")
+    most.focus()
+    most.press("End")
     expect(page.locator("#total-robots")).to_have_text("4")
     expect(page.locator("#total-configurations")).to_have_text("4")
 
@@ -452,15 +587,21 @@ def test_every_control_of_every_view_is_reached_by_keyboard_and_labelled(
         "/",
         "/configurations",
         "/configurations/7",
+        "/configurations/103",
+        "/map",
         "/robots",
         "/charts",
         "/check",
         "/rules/source",
         "/fleet",
         "/export",
+        "/designs",
         "/api",
     ):
         page.goto(f"{server.base.rstrip('/')}{path}?{query}")
+        if path == "/":
+            # What-if arrives after the page's load (its Apply links are controls too).
+            expect(page.locator("#whatif-section")).to_have_attribute("data-state", "answered")
         controls = page.evaluate(CONTROLS)
         assert [c["what"] for c in controls if not c["named"]] == [], path
         reached = tab_order(page, len(controls) + 10)
@@ -503,6 +644,7 @@ def test_values_the_rules_exclude_are_shown_disabled_with_the_reason(
         "Walking", exact=True
     )
     expect(walking).to_be_disabled()
+    expect(walking).not_to_be_checked()  # not in the team: shown as excluded, not ticked
     # Described by why it is excluded (and by the check's findings about it, none here).
     described = (walking.get_attribute("aria-describedby") or "").split()
     why = page.locator(f"#{described[0]}")
@@ -590,9 +732,18 @@ def test_check_findings_are_shown_at_the_values_they_concern_as_the_selection_ch
     described = sonar.get_by_label("Sonar", exact=True).get_attribute("aria-describedby") or ""
     expect(page.locator(f"#{described.split()[-1]}")).to_contain_text("coverage-gap")
 
-    # Including Rover leaves its sensor types open (every value): Sonar is selected and served
-    # by nothing, which the check locates at the type.
+    # Including Rover starts small (its first sensor type, one sensor); every value ticked
+    # leaves its sensor types open: Sonar is selected and served by nothing, which the check
+    # locates at the type.
     page.locator("legend").get_by_label("Rover", exact=True).check()
+    expect(page.locator("#total-robots")).to_have_text("1")  # Camera, one sensor
+    for value in ("Lidar", "Sonar"):
+        page.locator('fieldset[data-key="Rover.sensor_type"]').get_by_label(
+            value, exact=True
+        ).check()
+    most = page.locator('fieldset[data-key="Rover.sensor_count"]').get_by_label("Most")
+    most.focus()
+    most.press("End")
     expect(page.locator("#total-robots")).to_have_text("12")  # 3 sensor types x 4 counts
     rover = page.locator("#type-1-findings")
     expect(rover.locator(".finding.warning")).to_contain_text(
@@ -702,3 +853,28 @@ def test_a_rule_set_too_large_to_draw_whole_is_shown_a_type_at_a_time_and_keeps_
     expect(page.locator("#total-robots")).to_have_text("1000")
     expect(page.locator("#total-configurations")).to_have_text("1000")
     assert ("T1.c", "v7") in parse_qsl(urlsplit(page.url).query)
+
+
+def test_the_api_page_renders_the_openapi_document_as_a_page(studio: Server) -> None:
+    status, body = studio.get("/api")
+    html = body.decode()
+    assert status == 200
+    assert '"openapi"' not in html  # not the document as text
+    document = studio.json("/openapi.json")
+    # Every path of the document has its section, with its summary, parameters and answers.
+    sections = {
+        re.search(r"<code>([^<]*)</code>", part).group(1): part  # type: ignore[union-attr]
+        for part in html.split('<section class="endpoint"')[1:]
+    }
+    assert set(sections) == set(document["paths"])
+    for path, methods in document["paths"].items():
+        section = sections[path]
+        for operation in methods.values():
+            if "summary" in operation:
+                assert str(escape(operation["summary"])) in section, path
+            for code in operation.get("responses", {}):
+                assert f"<dt>{code}</dt>" in section, path
+            for parameter in operation.get("parameters", []):
+                assert f"<code>{parameter['name']}</code>" in section, path
+    # Backticks of the descriptions are code, not backticks.
+    assert "`" not in html

@@ -4,17 +4,34 @@ nothing a request writes outlives it."""
 
 from __future__ import annotations
 
+import dataclasses
 import gc
+import threading
+import time
 import tracemalloc
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import pytest
 
-from solver import solve
+from benchmarks.conftest import Scale
+from solver import Solution, solve
 from solver.core.team import load_team
 from solver.studio import workspace as workspace_module
-from solver.studio.workspace import Upload, Workspace, solution_bytes
+from solver.studio.selection import Selection
+from solver.studio.whatif import WhatIf, what_if
+from solver.studio.workspace import RuleSource, Upload, Workspace, solution_bytes
+
+# A ceiling on waiting for another thread (seconds), never a measure of speed.
+WAIT_SECONDS = 60.0
+
+
+def wait_until(condition: Callable[[], bool]) -> None:
+    """Wait for ``condition`` to hold (another thread's doing), within the ceiling."""
+    end = time.monotonic() + WAIT_SECONDS
+    while not condition():
+        assert time.monotonic() < end, "waited past the ceiling"
+        time.sleep(0.01)
 
 
 @pytest.fixture
@@ -115,3 +132,65 @@ def test_the_private_folder_carries_the_process_id_for_the_next_studio_to_clean_
     import os
 
     assert workspace.folder.name.startswith(f"{workspace_module.FOLDER_PREFIX}{os.getpid()}-")
+
+
+# A heavy team: 2 kinematic types x 10 motion controls x 2,000 sensor types, 4,028 single
+# changes for what-if to count.
+HEAVY = Scale(types=2, motions=10, sensors=2000, groups=10, counts=10, arrangements=5)
+
+
+def test_the_totals_of_a_change_are_answered_while_what_if_is_busy(
+    workspace: Workspace, tmp_path: Path
+) -> None:
+    team = HEAVY.team(tmp_path)
+    source = RuleSource("heavy", team.rules, Path(team.rules.file), "start")
+    busy = threading.Event()
+    release = threading.Event()
+    answers: dict[str, object] = {}
+
+    def held() -> WhatIf:
+        # The real what-if of the heavy team, each held busy until the test has its totals.
+        busy.set()
+        release.wait(WAIT_SECONDS)
+        return what_if(team)
+
+    def ask(name: str) -> threading.Thread:
+        selection = Selection("heavy", name, ("T0",), (), ())
+        asked = workspace.whatifs_asked
+        thread = threading.Thread(
+            target=lambda: answers.__setitem__(
+                name, workspace.kept_whatif(("heavy", selection, "what-if"), held)
+            )
+        )
+        thread.start()
+        wait_until(lambda: workspace.whatifs_asked > asked)
+        return thread
+
+    # A first what-if is being made (held busy); quick ticks ask for two more.
+    first = ask("first")
+    assert busy.wait(WAIT_SECONDS)
+    older = ask("older")
+    newest = ask("newest")
+
+    # The totals of a change are answered while the what-if is still being made.
+    changed = dataclasses.replace(team, selections=team.selections[:1])
+    totals = threading.Thread(
+        target=lambda: answers.__setitem__("totals", workspace.solution(changed, source))
+    )
+    totals.start()
+    totals.join(WAIT_SECONDS)
+    assert not totals.is_alive(), "the totals waited for what-if"
+    assert not release.is_set()
+    assert first.is_alive()
+    solved = answers["totals"]
+    assert isinstance(solved, Solution)
+    assert solved.totals.valid_robots == HEAVY.robots // 2
+
+    # The older what-if waiting for the slot is dropped (a newer one was asked): not made.
+    older.join(WAIT_SECONDS)
+    assert answers["older"] is None
+    release.set()
+    for thread in (first, newest):
+        thread.join(WAIT_SECONDS)
+    assert isinstance(answers["first"], WhatIf)
+    assert isinstance(answers["newest"], WhatIf)

@@ -74,6 +74,7 @@
       }
       if (target.matches("[data-include]")) {
         enableType(target.closest("fieldset.type"), target.checked);
+        startSmall(target.closest("fieldset.type"), target.checked);
       }
       if (target.type === "range") {
         keepOrder(target);
@@ -93,6 +94,24 @@
     if (undo && redo) {
       undo.addEventListener("click", () => step(-1));
       redo.addEventListener("click", () => step(1));
+    }
+    // A what-if suggestion applied is a change like any other: one entry of the history.
+    const suggestions = document.getElementById("whatif");
+    if (suggestions) {
+      suggestions.addEventListener("click", (event) => {
+        const link = event.target.closest("a[data-apply]");
+        if (!link) {
+          return;
+        }
+        event.preventDefault();
+        const query = link.dataset.apply;
+        if (new URLSearchParams(query).get("rules") !== form.elements.rules.value) {
+          window.location.assign("/?" + query);
+          return;
+        }
+        apply(query);
+        changed();
+      });
     }
     document.addEventListener("keydown", (event) => {
       const typing = event.target.matches("input[type=text], input:not([type]), textarea");
@@ -243,6 +262,47 @@
       }
     }
 
+    // A type ticked starts from a small selection, not everything: the first value the rules
+    // allow it of each characteristic and the counts of the first arrangement; the page says
+    // which, and every other value is a tick away.
+    function startSmall(fieldset, on) {
+      const note = fieldset.querySelector(".start-note");
+      if (!on) {
+        if (note) {
+          note.hidden = true;
+        }
+        return;
+      }
+      const parts = [];
+      for (const group of fieldset.querySelectorAll("fieldset.characteristic")) {
+        const name = group.querySelector("legend .name");
+        const label = name ? name.textContent.replace(/[()]/g, "") : group.dataset.key;
+        if (group.dataset.kind === "integer") {
+          const low = group.querySelector("input[data-low]");
+          const high = group.querySelector("input[data-high]");
+          low.value = low.min;
+          high.value = high.dataset.startMost || high.max;
+          showRange(low);
+          showRange(high);
+          parts.push(`${label} ${low.value}..${high.value}`);
+          continue;
+        }
+        const boxes = [...group.querySelectorAll("input[type=checkbox]")].filter((b) => !b.disabled);
+        const first = boxes.find((b) => b.hasAttribute("data-start"));
+        if (!first) {
+          continue;
+        }
+        for (const box of boxes) {
+          box.checked = box === first;
+        }
+        parts.push(`${label} ${first.value}`);
+      }
+      if (note && parts.length) {
+        note.textContent = `Started from a small selection: ${parts.join("; ")}. Tick more values to widen it.`;
+        note.hidden = false;
+      }
+    }
+
     function enableType(fieldset, on) {
       fieldset.classList.toggle("included", on);
       for (const group of fieldset.querySelectorAll("fieldset.characteristic")) {
@@ -280,6 +340,7 @@
       const mine = ++asked;
       stale(query);
       findings(query);
+      whatIf(query);
       const types = new URLSearchParams(query).getAll("type");
       if (!types.length) {
         clearTotals();
@@ -401,6 +462,106 @@
       } else {
         delete form.dataset.settled;
       }
+    }
+
+    // What-if for the selection: the single changes that save configurations, each with an
+    // Apply link (a change of this page, so undo holds it; without scripts the link opens it).
+    // Asked for only once the selection has rested WHATIF_REST ms (a few quick ticks ask once),
+    // after the page's load (never with it), and in a slot of the studio's own, so the totals
+    // never wait for it; an answer "superseded" (a newer what-if was asked) is dropped.
+    const WHATIF_REST = 400;
+    let wondering = 0;
+    let resting = null;
+    // Never part of the page's load: asked for once the page has loaded (unless the page came
+    // with it, asked for by whatif=1).
+    const wanted = document.getElementById("whatif-section");
+    if (wanted && !wanted.dataset.query) {
+      whatIf(current);
+    }
+    function whatIf(query) {
+      const section = document.getElementById("whatif-section");
+      if (!section) {
+        return;
+      }
+      const mine = ++wondering;
+      section.setAttribute("aria-busy", "true");
+      section.dataset.state = "waiting";
+      window.clearTimeout(resting);
+      resting = window.setTimeout(() => wonder(query, mine), WHATIF_REST);
+    }
+
+    async function wonder(query, mine) {
+      const section = document.getElementById("whatif-section");
+      const list = document.getElementById("whatif");
+      section.dataset.state = "asking";
+      let data = null;
+      if (new URLSearchParams(query).getAll("type").length) {
+        try {
+          const response = await fetch("/api/whatif?" + query, { headers: { accept: "application/json" } });
+          if (response.status === 409 && mine === wondering) {
+            whatIf(query); // dropped for another page's newer what-if: this page asks again
+            return;
+          }
+          data = response.ok ? await response.json() : null;
+        } catch (error) {
+          data = null;
+        }
+      }
+      if (mine !== wondering) {
+        return;
+      }
+      list.replaceChildren();
+      const left = document.getElementById("whatif-left");
+      if (left) {
+        left.replaceChildren();
+      }
+      let text = "";
+      if (data) {
+        text = whatIfSummary(data);
+        for (const found of data.suggestions) {
+          list.append(suggestionItem(found));
+        }
+        for (const found of data.left_out) {
+          const item = document.createElement("li");
+          item.textContent = `${found.change}: ${found.reason}`;
+          left.append(item);
+        }
+      }
+      setText("whatif-summary", text);
+      section.dataset.query = data ? query : "";
+      section.dataset.state = data ? "answered" : "none";
+      section.setAttribute("aria-busy", "false");
+    }
+
+    function whatIfSummary(data) {
+      let text = `${data.tried} of ${data.total} changes tried`;
+      if (data.stopped) {
+        text += ` (the rest not: ${data.stopped})`;
+      }
+      if (data.left_out_count) {
+        text += `; ${data.left_out_count} not counted (below, why)`;
+      }
+      return data.suggestions.length
+        ? `Single changes that save UI configurations, most saved first (counted exactly; ${text}):`
+        : `No single change saves a UI configuration (${text}).`;
+    }
+
+    function suggestionItem(found) {
+      const item = document.createElement("li");
+      item.dataset.saved = String(found.ui_configurations_saved);
+      item.dataset.lost = String(found.valid_robots_lost);
+      const change = document.createElement("span");
+      change.className = "whatif-change";
+      change.textContent = found.change;
+      const saved = document.createElement("strong");
+      saved.textContent = `-${found.ui_configurations_saved} configurations`;
+      const link = document.createElement("a");
+      link.href = "/?" + found.query;
+      link.dataset.apply = found.query;
+      link.setAttribute("aria-label", "Apply: " + found.change);
+      link.textContent = "Apply";
+      item.append(change, ": ", saved, `, -${found.valid_robots_lost} valid robots `, link);
+      return item;
     }
 
     let checking = 0;
