@@ -5,7 +5,9 @@ new one, never half of one, and no temporary: while temporaries exist, SIGTERM i
 :class:`~solver.errors.Terminated` (as SIGINT is a ``KeyboardInterrupt``) so that they are
 removed before the process ends. Every command that writes files goes through
 :func:`write_atomic`, or :func:`write_all_atomic` when its files belong together (a Markdown
-report and its charts): then either every file is written or none is changed.
+report and its charts): then either every file is written or none is changed. The one
+exception, :func:`overwrite`, writes a record whose loss is harmless (a ``batch`` stamp) in
+place, with the same refusals of links.
 
 **Links inside an output folder.** A folder someone else can write into may hold a link
 planted where a subfolder is expected (``OUT/teams -> /home/you``). Given ``within``, the
@@ -44,6 +46,7 @@ __all__ = [
     "Content",
     "link_inside",
     "make_folder",
+    "overwrite",
     "remove_output",
     "remove_temporaries",
     "write_all_atomic",
@@ -97,40 +100,110 @@ def write_all_atomic(
     ``within``: the output folder the user named (``batch -o DIR``), which holds every
     target. It is taken as given, through any link in its own path; every folder between it
     and a target is made or entered without following a link, and a link there (someone else
-    may have put it there) is refused, naming it. Each folder is opened once and the files are
-    made and renamed in the open folder, so a link put in its place meanwhile changes nothing.
+    may have put it there) is refused, naming it. Each folder is opened once, for the checks
+    and the writes, and the files are made and renamed in the open folder, so a link put in
+    its place meanwhile changes nothing.
+
+    Each temporary is flushed to the disk (``fsync``) before it is renamed, so that after a
+    power cut the name holds either the old content or the whole new one (without it a
+    journaling file system may keep the rename and lose the data: an empty file).
     """
     budget = limit("written-bytes").value
     root = None if within is None else Path(within)
     targets = [(Path(path), _encoded(content)) for path, content in files.items()]
+    folders: dict[Path, int] = {}
+    temporaries: list[_Temporary] = []
+    try:
+        modes = _check_targets([target for target, _ in targets], root, folders)
+        whole = sum(len(data) for _, data in targets if isinstance(data, bytes))
+        if whole > budget:
+            _refuse(targets[0][0], whole, budget, "bytes to write")
+        with _terminable():
+            try:
+                written = 0  # by the files before, against the same budget
+                for target, data in targets:
+                    written = _temporary(
+                        _folder(target, root, folders),
+                        target,
+                        data,
+                        _Writing(written, budget, modes.get(target, 0o644)),
+                        made=temporaries,
+                    )
+                _replace_all(temporaries)
+                temporaries.clear()  # each renamed into place: nothing left to remove
+            finally:
+                for temporary in temporaries:
+                    with contextlib.suppress(OSError):  # gone already when put back
+                        os.unlink(temporary.name, dir_fd=temporary.folder)
+    finally:
+        for descriptor in folders.values():
+            os.close(descriptor)
+    return [target for target, _ in targets]
+
+
+def _check_targets(
+    targets: list[Path], root: Path | None, folders: dict[Path, int]
+) -> dict[Path, int]:
+    """Refuse (:class:`InputError`, every fault at once) what is in the way of ``targets``;
+    the permissions of those that exist (a rewritten file keeps them). The folders opened
+    for the checks are left in ``folders`` for the writes."""
     faults: dict[Fault, None] = {}  # in order, each once (two files below one planted link)
-    for target, _ in targets:
-        fault = _in_the_way(target, root)
+    modes: dict[Path, int] = {}
+    for target in targets:
+        fault = _in_the_way(target, root, folders, modes)
         if fault is not None:
             faults[fault] = None
     if faults:
         raise InputError(list(faults))
-    whole = sum(len(data) for _, data in targets if isinstance(data, bytes))
-    if whole > budget:
-        _refuse(targets[0][0], whole, budget, "bytes to write")
+    return modes
+
+
+def overwrite(path: str | Path, content: str | bytes, *, within: str | Path) -> Path:
+    """Write ``content`` over the regular file ``path`` in place (made when missing), below the
+    output folder ``within`` and never through a link inside it (as :func:`write_all_atomic`);
+    :class:`InputError` if something else is there or the folder is unusable.
+
+    Not atomic and not flushed to the disk: a reader, a crash or a kill may meet the file empty
+    or cut. Only for a record whose partial or lost content is harmless: a ``batch`` stamp
+    (:mod:`solver.reporting.batch`), a JSON object, which cut before its closing brace is no
+    JSON at all. It
+    costs no new file and no rename, which an atomic write of a few hundred bytes is mostly made
+    of."""
+    target = Path(path)
+    data = content.encode("utf-8", "backslashreplace") if isinstance(content, str) else content
+    budget = limit("written-bytes").value
+    if len(data) > budget:
+        _refuse(target, len(data), budget, "bytes to write")
     folders: dict[Path, int] = {}
-    temporaries: list[_Temporary] = []
-    with _terminable():
+    try:
+        folder = _folder(target, Path(within), folders)
+        fault = _in_the_way(target, Path(within), folders, {})
+        if fault is not None:
+            raise InputError([fault])
         try:
-            written = 0  # by the files before, against the same budget
-            for target, data in targets:
-                folder = _folder(target, root, folders)
-                written = _temporary(
-                    folder, target, data, written=written, budget=budget, made=temporaries
-                )
-            _replace_all(temporaries)
+            handle = os.open(target.name, _IN_PLACE, 0o644, dir_fd=folder)
+        except OSError as error:
+            raise InputError.at(
+                _shown(target), f"cannot write: {error.strerror or error}"
+            ) from None
+        try:
+            problem = _obstacle(os.fstat(handle).st_mode)  # swapped since the check above
+            if problem is not None:
+                raise InputError.at(_shown(target), problem, code="invalid")
+            os.ftruncate(handle, 0)
+            view = memoryview(data)
+            while view:
+                view = view[os.write(handle, view) :]
+        except OSError as error:
+            raise InputError.at(
+                _shown(target), f"cannot write: {error.strerror or error}"
+            ) from None
         finally:
-            for temporary in temporaries:
-                with contextlib.suppress(OSError):  # gone already when renamed into place
-                    os.unlink(temporary.name, dir_fd=temporary.folder)
-            for descriptor in folders.values():
-                os.close(descriptor)
-    return [target for target, _ in targets]
+            os.close(handle)
+    finally:
+        for descriptor in folders.values():
+            os.close(descriptor)
+    return target
 
 
 def remove_temporaries(target: str | Path, *, within: str | Path | None = None) -> list[Path]:
@@ -231,20 +304,16 @@ def _open_folder(folder: Path, within: Path | None, *, make: bool) -> int | None
     or opened without following a link: :class:`_LinkInside` names one found there. Other
     problems are :class:`OSError`."""
     top, below = (folder, ()) if within is None else (within, _parts_below(folder, within))
-    if make:
-        top.mkdir(parents=True, exist_ok=True)
     try:
         descriptor = os.open(top, _FOLDER_FLAGS)
     except FileNotFoundError:
-        if make:
-            raise
-        return None
+        if not make:
+            return None
+        top.mkdir(parents=True, exist_ok=True)
+        descriptor = os.open(top, _FOLDER_FLAGS)
     for index, part in enumerate(below):
         try:
-            if make:
-                with contextlib.suppress(FileExistsError):
-                    os.mkdir(part, dir_fd=descriptor)
-            inner = os.open(part, _FOLDER_FLAGS | _NOFOLLOW, dir_fd=descriptor)
+            inner = _enter(part, descriptor, make=make)
         except OSError as error:
             linked = _is_link(part, descriptor)
             os.close(descriptor)
@@ -256,6 +325,19 @@ def _open_folder(folder: Path, within: Path | None, *, make: bool) -> int | None
         os.close(descriptor)
         descriptor = inner
     return descriptor
+
+
+def _enter(name: str, folder: int, *, make: bool) -> int:
+    """The folder ``name`` in the open ``folder``, opened without following a link; made first
+    when missing and ``make`` (opened first: a folder is made once and entered many times)."""
+    try:
+        return os.open(name, _FOLDER_FLAGS | _NOFOLLOW, dir_fd=folder)
+    except FileNotFoundError:
+        if not make:
+            raise
+    with contextlib.suppress(FileExistsError):
+        os.mkdir(name, dir_fd=folder)
+    return os.open(name, _FOLDER_FLAGS | _NOFOLLOW, dir_fd=folder)
 
 
 def _is_link(name: str, folder: int) -> bool:
@@ -354,29 +436,37 @@ def _shown(path: str | Path) -> str:
     return shown(str(path), limit=SHOWN_FILE_NAME_CHARS)
 
 
-def _in_the_way(target: Path, within: Path | None) -> Fault | None:
+def _in_the_way(
+    target: Path, within: Path | None, folders: dict[Path, int], modes: dict[Path, int]
+) -> Fault | None:
     """What is at ``target`` that a file must not replace, if anything, or a link on the way
-    to it below ``within``.
+    to it below ``within``. Its folder, when it exists, is opened into ``folders`` (for the
+    write that follows) and the permissions of a regular file there go into ``modes``.
 
     A rename replaces whatever has the name: a device (``/dev/full``, as root), or a link such
     as ``/dev/stdout`` or one planted where an output is expected. Only a regular file is
     replaced."""
-    try:
-        folder = _open_folder(_parent(target), within, make=False)
-    except _LinkInside as link:
-        return Fault(Location(_shown(link.path)), _LINK_INSIDE, "bad-output")
-    except (OSError, ValueError):  # a folder the write will report
-        return None
+    parent = _parent(target)
+    folder = folders.get(parent)
     if folder is None:
-        return None
+        try:
+            folder = _open_folder(parent, within, make=False)
+        except _LinkInside as link:
+            return Fault(Location(_shown(link.path)), _LINK_INSIDE, "bad-output")
+        except (OSError, ValueError):  # a folder the write will report
+            return None
+        if folder is None:
+            return None
+        folders[parent] = folder
     try:
         mode = os.stat(target.name, dir_fd=folder, follow_symlinks=False).st_mode
     except (OSError, ValueError):  # nothing there, or a name the write will report
         return None
-    finally:
-        os.close(folder)
     problem = _obstacle(mode)
-    return None if problem is None else Fault(Location(_shown(target)), problem, "invalid")
+    if problem is None:
+        modes[target] = stat.S_IMODE(mode)
+        return None
+    return Fault(Location(_shown(target)), problem, "invalid")
 
 
 def _obstacle(mode: int) -> str | None:
@@ -401,9 +491,11 @@ class _Temporary:
     target: Path
 
 
-# The characters of a temporary's random part (as tempfile.mkstemp names them).
-_RANDOM = "abcdefghijklmnopqrstuvwxyz0123456789_"
 _ATTEMPTS = 100
+# Opened in place: never through a link, never waiting on a pipe, never a terminal's owner.
+_IN_PLACE = (
+    os.O_WRONLY | os.O_CREAT | _NOFOLLOW | os.O_NONBLOCK | os.O_NOCTTY | getattr(os, "O_CLOEXEC", 0)
+)
 _NEW_FILE = os.O_WRONLY | os.O_CREAT | os.O_EXCL | _NOFOLLOW | getattr(os, "O_CLOEXEC", 0)
 
 
@@ -414,7 +506,7 @@ def _create(folder: int, target: Path, made: list[_Temporary]) -> int:
     # name near the system's limit (255 bytes) still has room for one.
     prefix = f".{target.name[:_KEPT_NAME]}."
     for _ in range(_ATTEMPTS):
-        name = prefix + "".join(secrets.choice(_RANDOM) for _ in range(8)) + ".tmp"
+        name = prefix + secrets.token_hex(4) + ".tmp"  # 8 characters of _LEFT_BEHIND's
         with _signals_held():  # listed as soon as it exists: the caller's clean-up finds it
             try:
                 handle = os.open(name, _NEW_FILE, 0o600, dir_fd=folder)
@@ -425,18 +517,27 @@ def _create(folder: int, target: Path, made: list[_Temporary]) -> int:
     raise FileExistsError(errno.EEXIST, "no free name for a temporary file")
 
 
+@dataclass(frozen=True, slots=True)
+class _Writing:
+    """How one temporary is written: the bytes ``written`` before it against the ``budget``,
+    and the permissions it gets."""
+
+    written: int
+    budget: int
+    mode: int
+
+
 def _temporary(
     folder: int,
     target: Path,
     data: bytes | Iterator[bytes],
+    how: _Writing,
     *,
-    written: int,
-    budget: int,
     made: list[_Temporary],
 ) -> int:
     """``data`` in a new temporary file in ``target``'s open ``folder``, listed in ``made``
-    with its target as it is created; the bytes ``written`` with it.
-    :class:`TooLargeError` (and no temporary) past ``budget``."""
+    with its target as it is created; the bytes written with it and those before.
+    :class:`TooLargeError` (and no temporary) past the budget."""
     try:
         handle = _create(folder, target, made)
     except OSError as error:
@@ -444,16 +545,17 @@ def _temporary(
             _shown(target), f"cannot write here: {error.strerror or error}"
         ) from None
     temporary = made[-1]
+    written = how.written
     try:
         with os.fdopen(handle, "wb") as stream:
             for chunk in (data,) if isinstance(data, bytes) else data:
                 written += len(chunk)
-                if written > budget:
-                    _refuse(target, written, budget, "bytes or more to write")
+                if written > how.budget:
+                    _refuse(target, written, how.budget, "bytes or more to write")
                 stream.write(chunk)
             stream.flush()
             # The temporary is private (0600); give it the mode a plain write would have.
-            os.fchmod(stream.fileno(), _mode_of(folder, target.name))
+            os.fchmod(stream.fileno(), how.mode)
             os.fsync(stream.fileno())
     except BaseException as error:
         with contextlib.suppress(OSError):
@@ -464,15 +566,6 @@ def _temporary(
             ) from None
         raise
     return written
-
-
-def _mode_of(folder: int, name: str) -> int:
-    """The permissions of the regular file ``name`` in ``folder``; 0644 when there is none."""
-    try:
-        mode = os.stat(name, dir_fd=folder, follow_symlinks=False).st_mode
-    except OSError:
-        return 0o644
-    return stat.S_IMODE(mode) if stat.S_ISREG(mode) else 0o644
 
 
 def _replace_all(temporaries: list[_Temporary]) -> None:

@@ -21,18 +21,34 @@
 per-team output is below ``teams/``. So no team's name can collide with them: a team file
 called ``summary.yaml`` gets ``OUT/teams/summary.md``, never the batch's ``OUT/summary.md``.
 
-Every file is written atomically (:func:`solver.files.atomic.write_atomic`): an interrupted batch
-leaves finished teams complete and no half-written file. Nothing is written, read back or
-removed through a link inside the output folder (``OUT/teams -> elsewhere``, planted by
-someone who can write there): that team fails, naming the link.
+Every result is written atomically (:func:`solver.files.atomic.write_atomic`): an interrupted
+batch leaves finished teams complete and no half-written result (a stamp, below, is a record,
+written in place). Nothing is written, read back or removed through a link inside the output
+folder (``OUT/teams -> elsewhere``, planted by someone who can write there): that team fails,
+naming the link.
 
 **Up to date.** Beside each team's outputs a *stamp* (``OUT/.stamps/<name>.json``, written
-last) records the SHA-256 of the team file and of the rule file it used, the teleop-ui version
-and the options that shape the outputs. A rerun skips a team when its stamp matches and its
-outputs exist. Content hashes, not modification times: a ``git checkout`` or a copy changes
-times without changing content, and two edits within the file system's time resolution would
-look alike. Reading and hashing two small files costs far less than solving. A team that fails
-leaves no outputs and no stamp (stale ones are removed), so it is tried again next time.
+last) records the SHA-256 of the team file and of the rule file it used, the teleop-ui version,
+the options that shape the outputs and the SHA-256 of the team's JSON as written. A rerun skips
+a team when its stamp matches, its outputs exist and its JSON still has that hash. Content
+hashes, not modification times: a ``git checkout`` or a copy changes times without changing
+content, and two edits within the file system's time resolution would look alike. Reading and
+hashing three small files costs far less than solving. A team that fails leaves no outputs and
+no stamp (stale ones are removed), so it is tried again next time.
+
+**A crash (power cut, kernel panic).** One file per team is durable: its JSON is written to a
+temporary, flushed to the disk (``fsync``) and only then renamed onto its name (a report and
+its charts likewise, before the stamp). The stamp is written after them, in place
+(:func:`solver.files.atomic.overwrite`: no temporary, no rename, no ``fsync``, never through a
+link): it is a record that lets a rerun skip work, not a result. After a crash or a kill a
+stamp may be missing, empty, cut or the previous one, and the JSON's rename may be lost while
+the stamp's write is kept (the system orders neither unless told); each case costs at most
+solving the team again, never a stale result taken for a current one: a stamp that is not
+valid JSON (a JSON object cut before its closing brace is none), or names other input
+hashes, or a JSON hash the file on disk does not have (its rename was lost and the old file
+is there), does not match. The JSON on disk is always a whole one, old or new. What is not
+checked: a report whose rename was lost while its stamp and JSON were kept is the previous
+report of that team (reports are not hashed; rerun with ``--force`` after a crash to be sure).
 
 Not here: progress display and exit status (``solver/cli/batch.py``), the per-team JSON shape
 (:func:`solver.solving.solution.solution_data`), reports (:mod:`solver.reporting.report`).
@@ -48,7 +64,7 @@ import io
 import json
 import os
 import time
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass, replace
 from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
@@ -57,9 +73,15 @@ from typing import TYPE_CHECKING, Any, Literal, cast
 from solver.core.rules import default_rules_path, shipped_name
 from solver.core.team import parse_team, resolve_team_path, shipped_rules_path
 from solver.errors import Fault, InputError, Location, SolverError, Terminated
-from solver.files.atomic import link_inside, remove_output, remove_temporaries, write_atomic
+from solver.files.atomic import (
+    link_inside,
+    overwrite,
+    remove_output,
+    remove_temporaries,
+    write_atomic,
+)
 from solver.files.filekind import describe, file_kind, why
-from solver.files.inputfile import read_text, sha256_bounded
+from solver.files.inputfile import read_bounded, read_text, sha256_bounded, sha256_hex
 from solver.files.output import csv_row, dumps
 from solver.files.yamlio import MAX_FILE_BYTES, load_hashed
 from solver.limits import limit
@@ -72,6 +94,7 @@ from solver.untrusted import SHOWN_FILE_NAME_CHARS
 from solver.untrusted import shown as shown_text
 
 if TYPE_CHECKING:
+    import hashlib
     from multiprocessing.connection import Connection
     from multiprocessing.context import ForkServerContext, SpawnContext
     from multiprocessing.process import BaseProcess
@@ -396,6 +419,19 @@ def _read_json(path: Path) -> Any:
         return None
 
 
+def _json_and_hash(path: Path) -> tuple[Any, str | None]:
+    """The JSON in ``path`` (``None`` if there is none) and the SHA-256 of its bytes, from one
+    bounded read."""
+    try:
+        data = read_bounded(path, limit=MAX_FILE_BYTES, what="JSON file")
+    except SolverError:
+        return None, None
+    try:
+        return json.loads(data), sha256_hex(data)
+    except (ValueError, RecursionError):
+        return None, sha256_hex(data)
+
+
 def _is_up_to_date(job: Job) -> bool:
     if any(link_inside(path, within=job.out) for path in (job.stamp, *job.outputs)):
         return False  # never read through a link there: writing will say what is wrong
@@ -406,8 +442,11 @@ def _is_up_to_date(job: Job) -> bool:
         or stamp.get("options") != job.options
     ):
         return False
-    if not all(p.is_file() for p in job.outputs) or not isinstance(_read_json(job.output), dict):
+    if not all(p.is_file() for p in job.outputs):
         return False
+    output, output_hash = _json_and_hash(job.output)
+    if not isinstance(output, dict) or stamp.get("output_sha256") != output_hash:
+        return False  # its rename lost in a crash, or the file edited since (see module)
     if stamp.get("team_sha256") != _sha256(job.team_file):
         return False
     rules_file = stamp.get("rules_file")
@@ -490,10 +529,11 @@ def run_job(job: Job) -> Outcome:
             check_chart_size(team)  # before solving: a report of it could not be drawn
         solution = solve(team)
         data = solution_data(solution)  # the summary row's figures
-        # The JSON of `solve --format json --list`, streamed into the file.
-        write_atomic(
-            job.output, solution_chunks(solution, "json", configurations=True), within=job.out
-        )
+        # The JSON of `solve --format json --list`, streamed into the file (durably: see
+        # "A crash" above) and hashed on the way for the stamp.
+        digest = _digest()
+        chunks = solution_chunks(solution, "json", configurations=True)
+        write_atomic(job.output, _hashed(chunks, digest), within=job.out)
         if job.report is not None:
             write_report(solution, job.report, within=job.out)
         stamp = {
@@ -503,8 +543,10 @@ def run_job(job: Job) -> Outcome:
             "rules_file": str(rules_file.resolve()),
             "rules_sha256": rules_hash,
             "options": job.options,
+            "output_sha256": digest.hexdigest(),
         }
-        write_atomic(job.stamp, dumps(stamp), within=job.out)
+        # In place, not atomic, not flushed: a stamp lost or cut only means solving again.
+        overwrite(job.stamp, dumps(stamp), within=job.out)
     except SolverError as error:
         message = str(error)
     except Exception as error:  # one team's bug must not stop the batch: report it
@@ -521,6 +563,21 @@ def run_job(job: Job) -> Outcome:
         SummaryRow(file=job.shown, status="failed", message=message),
         time.perf_counter() - started,
     )
+
+
+def _digest() -> hashlib._Hash:
+    import hashlib  # as solver.files.inputfile: only `batch` digests
+
+    return hashlib.sha256()
+
+
+def _hashed(chunks: Iterable[str], digest: hashlib._Hash) -> Iterator[bytes]:
+    """``chunks`` encoded as the file holds them (UTF-8, as :mod:`solver.files.atomic` writes
+    text), each added to ``digest`` on the way."""
+    for chunk in chunks:
+        data = chunk.encode("utf-8", "backslashreplace")
+        digest.update(data)
+        yield data
 
 
 def _up_to_date(job: Job) -> Outcome:
@@ -551,19 +608,14 @@ def _in_workers(jobs: Sequence[Job], workers: int) -> Iterator[Outcome]:
     """Each job in a worker process; a worker that dies fails its own job only."""
     # Imported here: only solving needs them, and `import solver` stays quick.
     import collections
-    import multiprocessing
     from multiprocessing.connection import wait
 
-    # Not fork: the caller may be running threads (a progress bar's refresh thread), and a
-    # forked child can inherit a lock some thread held. forkserver starts workers from a
-    # clean single-threaded server.
-    context: ForkServerContext | SpawnContext = (
-        multiprocessing.get_context("forkserver")
-        if "forkserver" in multiprocessing.get_all_start_methods()
-        else multiprocessing.get_context("spawn")
-    )
+    context = _context()
     queue = collections.deque(jobs)
-    busy: dict[Connection, tuple[BaseProcess, Job]] = {}
+    # Each worker is handed a few jobs at a time (fewer messages for the batch to send, which
+    # does not parallelise), few enough that the workers end together.
+    chunk = max(1, min(_MOST_JOBS_HANDED, len(jobs) // (4 * max(workers, 1))))
+    busy: dict[Connection, tuple[BaseProcess, collections.deque[Job]]] = {}
 
     def start() -> tuple[BaseProcess, Connection]:
         mine, theirs = context.Pipe()
@@ -575,12 +627,12 @@ def _in_workers(jobs: Sequence[Job], workers: int) -> Iterator[Outcome]:
         return process, mine
 
     def hand(process: BaseProcess, connection: Connection) -> None:
-        job = queue.popleft()
-        busy[connection] = (process, job)
-        # A worker dead already (killed as it started) cannot take it: wait() below then
-        # finds its end of the pipe closed, and the job fails as the worker's.
+        handed = collections.deque(queue.popleft() for _ in range(min(chunk, len(queue))))
+        busy[connection] = (process, handed)
+        # A worker dead already (killed as it started) cannot take them: wait() below then
+        # finds its end of the pipe closed, and the first job fails as the worker's.
         with contextlib.suppress(OSError):
-            connection.send(job)
+            connection.send(list(handed))
 
     try:
         for _ in range(min(max(workers, 1), len(queue))):
@@ -588,16 +640,24 @@ def _in_workers(jobs: Sequence[Job], workers: int) -> Iterator[Outcome]:
         while busy:
             for ready in wait(list(busy)):
                 connection = cast("Connection", ready)
-                process, job = busy.pop(connection)
+                process, handed = busy[connection]
+                job = handed.popleft()
                 try:
-                    outcome: Outcome = connection.recv()
+                    action, row, seconds = connection.recv()
+                    outcome = Outcome(job, action, row, seconds)
                 except (EOFError, OSError):  # the worker died solving this team
+                    del busy[connection]
                     connection.close()
                     process.join()
                     outcome = _died(job, process.exitcode)
+                    queue.extendleft(reversed(handed))  # the teams after it: a fresh worker
+                    handed.clear()
                     if queue:
                         process, connection = start()
                 yield outcome
+                if handed:
+                    continue
+                busy.pop(connection, None)
                 if queue:
                     hand(process, connection)
                 elif not connection.closed:
@@ -609,6 +669,25 @@ def _in_workers(jobs: Sequence[Job], workers: int) -> Iterator[Outcome]:
             process.terminate()
             connection.close()
             process.join(timeout=5)
+
+
+def _context() -> ForkServerContext | SpawnContext:
+    """How workers are started. Not fork: the caller may be running threads (a progress bar's
+    refresh thread), and a forked child can inherit a lock some thread held. forkserver
+    starts workers from a clean single-threaded server."""
+    import multiprocessing
+
+    if "forkserver" in multiprocessing.get_all_start_methods():
+        context = multiprocessing.get_context("forkserver")
+        # The workers' code imported once, by the server, before it forks them: each worker
+        # would otherwise import it anew (a quarter of a second of CPU each).
+        context.set_forkserver_preload([__name__])
+        return context
+    return multiprocessing.get_context("spawn")
+
+
+# The most jobs handed to a worker at once.
+_MOST_JOBS_HANDED = 8
 
 
 def _died(job: Job, exitcode: int | None) -> Outcome:
@@ -629,7 +708,8 @@ def _died(job: Job, exitcode: int | None) -> Outcome:
 
 
 def _worker(connection: Connection, batch_pid: int) -> None:
-    """A worker process: solve the teams it is handed, one at a time, until told to stop.
+    """A worker process: solve the teams it is handed (a few at a time, each answered as it
+    is solved: the batch then knows which one a worker died on), until told to stop.
 
     Ctrl-C reaches the whole process group; only the batch answers it, by ending its busy
     workers with SIGTERM. Here SIGTERM unwinds the stack (:class:`~solver.errors.Terminated`),
@@ -644,12 +724,15 @@ def _worker(connection: Connection, batch_pid: int) -> None:
     try:
         while True:
             try:
-                job = connection.recv()
+                jobs: list[Job] | None = connection.recv()
             except EOFError:  # the batch is gone
                 return
-            if job is None:
+            if jobs is None:
                 return
-            connection.send(run_job(job))
+            for job in jobs:
+                # Without the job, which the batch has: less to pickle and unpickle.
+                outcome = run_job(job)
+                connection.send((outcome.action, outcome.row, outcome.seconds))
     except Terminated:
         signal.signal(signal.SIGTERM, signal.SIG_DFL)
         os.kill(os.getpid(), signal.SIGTERM)

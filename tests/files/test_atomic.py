@@ -19,6 +19,7 @@ from solver.errors import InputError, TooLargeError
 from solver.files.atomic import (
     link_inside,
     make_folder,
+    overwrite,
     remove_output,
     remove_temporaries,
     write_all_atomic,
@@ -33,6 +34,16 @@ def test_a_file_is_written_and_a_regular_file_replaced(tmp_path: Path) -> None:
     write_atomic(target, "second\n")
     assert target.read_text() == "second\n"
     assert os.listdir(tmp_path) == ["team.yaml"]  # no temporary left behind
+
+
+def test_a_rewritten_file_keeps_its_permissions_and_a_new_one_gets_0644(tmp_path: Path) -> None:
+    kept, new = tmp_path / "kept.txt", tmp_path / "new.txt"
+    kept.write_text("old")
+    kept.chmod(0o640)
+    write_all_atomic({kept: "first\n", new: b"second\n"})
+    assert (kept.read_text(), new.read_text()) == ("first\n", "second\n")
+    assert (kept.stat().st_mode & 0o777, new.stat().st_mode & 0o777) == (0o640, 0o644)
+    assert sorted(os.listdir(tmp_path)) == ["kept.txt", "new.txt"]
 
 
 def test_a_name_near_the_systems_limit_still_has_room_for_its_temporary(tmp_path: Path) -> None:
@@ -295,3 +306,49 @@ def test_a_link_on_the_way_to_an_output_is_found_without_following_it(tmp_path: 
     assert link_inside(out / "own" / "x.json", within=out) == out / "own" / "x.json"
     assert link_inside(out / "own" / "y.json", within=out) is None  # nothing there yet
     assert link_inside(out / "summary.csv", within=out) is None
+
+
+# ---- overwrite: a record written in place (a batch stamp) -------------------------------------
+
+
+def test_overwrite_makes_a_file_and_writes_over_a_longer_one_keeping_its_permissions(
+    tmp_path: Path,
+) -> None:
+    out = tmp_path / "out"
+    out.mkdir()
+    overwrite(out / ".stamps" / "a.json", '{"a": 1}\n', within=out)
+    assert (out / ".stamps" / "a.json").read_text() == '{"a": 1}\n'
+    (out / ".stamps" / "a.json").chmod(0o600)
+    overwrite(out / ".stamps" / "a.json", b"{}\n", within=out)
+    assert (out / ".stamps" / "a.json").read_bytes() == b"{}\n"  # nothing of the longer one left
+    assert (out / ".stamps" / "a.json").stat().st_mode & 0o777 == 0o600
+    assert os.listdir(out / ".stamps") == ["a.json"]
+
+
+@pytest.mark.parametrize("kind", ["a link to a file", "a pipe", "a folder"])
+def test_overwrite_refuses_what_is_no_regular_file_and_leaves_it_as_it_was(
+    tmp_path: Path, kind: str
+) -> None:
+    out = tmp_path / "out"
+    out.mkdir()
+    target, elsewhere = out / "a.json", tmp_path / "elsewhere.json"
+    elsewhere.write_text("theirs")
+    if kind == "a link to a file":
+        target.symlink_to(elsewhere)
+    elif kind == "a pipe":
+        os.mkfifo(target)  # no reader: opening it to write would wait, were it not refused
+    else:
+        target.mkdir()
+    with pytest.raises(InputError, match=r"a\.json: is a"):
+        overwrite(target, "{}", within=out)
+    assert elsewhere.read_text() == "theirs"
+    assert target.is_symlink() or target.is_fifo() or target.is_dir()
+
+
+def test_overwrite_never_writes_through_a_folder_link_planted_inside_the_output_folder(
+    tmp_path: Path,
+) -> None:
+    out, elsewhere = _planted(tmp_path)
+    with pytest.raises(InputError, match="is a link inside the output folder; refused"):
+        overwrite(out / "teams" / "x.json", "{}", within=out)
+    assert [(p.name, p.read_text()) for p in elsewhere.iterdir()] == [("x.json", "theirs\n")]

@@ -6,6 +6,7 @@ tested in tests/cli/test_batch.py.
 from __future__ import annotations
 
 import json
+import os
 from pathlib import Path
 
 import pytest
@@ -155,3 +156,87 @@ def test_a_recursive_glob_keeps_globs_meaning(teams: Path, tmp_path: Path) -> No
     assert found("ours/.hidden/**/x.yaml") == ["ours/.hidden/x.yaml"]
     assert found(".*.yaml") == [".dot.yaml"]
     assert found("**") == found("**/*")
+
+
+# ---- workers handed several teams at once (issue 42.4) ----------------------------------------
+
+
+def _grandchildren() -> list[int]:
+    """This process's grandchildren: the batch's workers (forked by the forkserver)."""
+    parents = {}
+    for entry in Path("/proc").iterdir():
+        try:
+            parents[int(entry.name)] = int(
+                (entry / "stat").read_text().rsplit(")", 1)[1].split()[1]
+            )
+        except (ValueError, OSError, IndexError):
+            continue
+    return [pid for pid, parent in parents.items() if parents.get(parent) == os.getpid()]
+
+
+def test_a_worker_killed_among_the_teams_handed_to_it_fails_one_team_and_the_rest_are_solved(
+    tmp_path: Path,
+) -> None:
+    import shutil
+    import signal
+
+    from tests.conftest import RULES, TEAMS
+
+    folder = tmp_path / "teams"
+    folder.mkdir()
+    shutil.copy(RULES / "paper.yaml", tmp_path / "paper.yaml")
+    for index in range(24):  # one worker is handed 6 at a time
+        shutil.copy(TEAMS / "case1.yaml", folder / f"t{index:02d}.yaml")
+    jobs = make_jobs(find_teams([str(folder)]), tmp_path / "out")
+    outcomes = []
+    for outcome in run_batch(jobs, 1):
+        outcomes.append(outcome)
+        if len(outcomes) == 2:  # among its first six, or just past them: either way one dies
+            for worker in _grandchildren():
+                os.kill(worker, signal.SIGKILL)
+    assert sorted(o.job.shown for o in outcomes) == [job.shown for job in jobs]  # each once
+    failed = [o for o in outcomes if o.failed]
+    assert len(failed) == 1
+    assert "the worker process solving it died (killed by SIGKILL)" in failed[0].row.message
+    assert [o.action for o in outcomes if not o.failed] == ["solved"] * 23
+    assert not (tmp_path / "out" / "teams" / f"{Path(failed[0].job.shown).stem}.json").exists()
+
+
+# ---- crash safety: the stamp is a record, not a result (issue 42.4) ---------------------------
+
+
+def test_a_stamp_naming_another_json_than_the_one_on_disk_is_not_up_to_date(
+    teams: Path, tmp_path: Path
+) -> None:
+    # A crash that kept the stamp's rename and lost the JSON's: the previous JSON is there.
+    jobs = make_jobs(find_teams([str(teams / "case1.yaml")]), tmp_path / "out")
+    list(run_batch(jobs, 1))
+    output = tmp_path / "out" / "teams" / "case1.json"
+    previous = json.loads(output.read_text(encoding="utf-8"))
+    previous["totals"]["valid_robots"] = 1
+    output.write_text(json.dumps(previous, indent=2) + "\n", encoding="utf-8")
+    again = make_jobs(find_teams([str(teams / "case1.yaml")]), tmp_path / "out")
+    assert [job.up_to_date for job in again] == [False]
+
+
+@pytest.mark.parametrize("stamp", ["", "{", "{}"], ids=["empty", "cut", "no fields"])
+def test_a_stamp_emptied_or_cut_by_a_crash_means_solving_again(
+    teams: Path, tmp_path: Path, stamp: str
+) -> None:
+    jobs = make_jobs(find_teams([str(teams / "case1.yaml")]), tmp_path / "out")
+    list(run_batch(jobs, 1))
+    assert make_jobs(find_teams([str(teams / "case1.yaml")]), tmp_path / "out")[0].up_to_date
+    (tmp_path / "out" / ".stamps" / "case1.json").write_text(stamp, encoding="utf-8")
+    again = make_jobs(find_teams([str(teams / "case1.yaml")]), tmp_path / "out")
+    assert [job.up_to_date for job in again] == [False]
+    assert [o.action for o in run_batch(again, 1)] == ["solved"]
+
+
+def test_the_stamp_records_the_hash_of_the_json_bytes_written(teams: Path, tmp_path: Path) -> None:
+    import hashlib
+
+    jobs = make_jobs(find_teams([str(teams / "case3.yaml")]), tmp_path / "out")
+    list(run_batch(jobs, 1))
+    stamp = json.loads((tmp_path / "out" / ".stamps" / "case3.json").read_text(encoding="utf-8"))
+    written = (tmp_path / "out" / "teams" / "case3.json").read_bytes()
+    assert stamp["output_sha256"] == hashlib.sha256(written).hexdigest()
