@@ -78,12 +78,21 @@ def test_each_panel_shows_its_topics_data_or_says_there_is_none(robot1: tuple[Pa
     layout_file, bag = robot1
     layout = json.loads(layout_file.read_text())
     topics = tool.read_bag(bag)
+    # The primary views are the tabs of one Tab panel; it opens on the camera's tab.
     page = tool.page(layout, topics, 1280, 720)
-    assert page.count("data:image/png;base64,") == 2  # the visual and the spherical display
-    assert "data: [0, 1, 2, 3, 4, 5, 6, 7, ...] (32 items)" in page  # the raw audio
+    assert page.count("data:image/png;base64,") == 1  # the visual display; the 360 is a tab
     assert "click to publish a goal pose on /robot1/goal_pose" in page
     assert "Twist on /robot1/cmd_vel while held; nothing on release" in page
+    assert "(32 items)" not in page  # the raw audio is in a tab not shown
+    # The operator picks the audio tab: its Raw Messages panel shows the last message.
+    tabs = layout["configById"]["Tab!c01"]
+    audio = [tab["title"] for tab in tabs["tabs"]].index("audio")
+    tabs["activeTabIdx"] = audio
+    page = tool.page(layout, topics, 1280, 720)
+    assert "data: [0, 1, 2, 3, 4, 5, 6, 7, ...] (32 items)" in page
     assert ">/robot1/audio</div>" in page  # a Raw Messages panel's toolbar shows its path
+    assert "data:image/png;base64," not in page
+    tabs["activeTabIdx"] = 0
     empty = tool.page(layout, {}, 1280, 720)
     assert "no messages on /robot1/camera/image_raw" in empty
 
@@ -101,6 +110,6 @@ def test_a_cluster_of_sensors_shows_its_tab_strip_and_its_active_tab_only(tmp_pa
     layout = json.loads((out / "config-008.json").read_text())  # 10 cameras, clusters of 2
     page = tool.page(layout, {}, 1280, 720)
     assert page.count('<span class="tab on">') == 5  # a Tab panel per cluster
-    assert '<span class="tab">visual display 2</span>' in page
+    assert '<span class="tab">camera 2</span>' in page  # a tab is titled by its short name
     assert "no messages on /robot1/camera/image_raw_3<" in page  # cluster 2's active tab
     assert "no messages on /robot1/camera/image_raw_2<" not in page  # an inactive tab

@@ -137,3 +137,23 @@ def test_panels_in_a_tab_the_app_does_not_show_are_named_not_failed(
     done = _tool(TOOLS / "verdict.py", bag, "/robot1", seen)
     assert done.returncode == 1
     assert f"    {tabs[0]['layout']}: not on the screen" in done.stdout.splitlines()
+
+
+def test_a_panel_seen_in_a_tab_clicked_open_is_judged_like_any_other(
+    case3: tuple[Path, Path, Path], tmp_path: Path
+) -> None:
+    # drive.py --tabs clicks each tab the app does not show on opening and reports its panels
+    # as on the screen, each with its tab: a point cloud that draws nothing there fails.
+    robot1, _, bag = case3
+    layout = robot1 / "config-103-default.json"
+    report = _seen(layout, ["/robot1/cmd_vel"])
+    tabs = json.loads(layout.read_text())["configById"]["Tab!c01"]["tabs"]
+    cloud = next(tab for tab in tabs[1:] if tab["layout"].startswith("3D!"))
+    report["panels"][cloud["layout"]].update(hues=1, tab=cloud["title"])
+    seen = tmp_path / "robot1.report.json"
+    seen.write_text(json.dumps(report))
+    done = _tool(TOOLS / "verdict.py", bag, "/robot1", seen)
+    assert done.returncode == 1
+    assert "in a tab not shown" not in done.stdout
+    fault = f"    {cloud['layout']}: 1 hues: no image or point cloud drawn"
+    assert fault in done.stdout.splitlines()

@@ -7,11 +7,11 @@ what each panel shows of the recorded robot: an Image panel the last image on it
 panel its point cloud or laser scan from above over the reference grid (coloured as the layout
 says), a Plot its series over the recording, a Raw Messages panel its last message, and the
 command panels as the operator sees them (a Teleop pad and its topic, a Publish panel's
-message and button, an Indicator's label); a Tab panel (a cluster of sensors) its tab strip and
-its active tab's panels. The panel's toolbar shows what the app shows there:
-its title, or a Raw Messages panel's topic path. A panel whose topic has no message in the bag
-says so. The page is photographed by Debian's headless Chromium (``/usr/bin/chromium``) into
-``DIR/NAME.png``.
+message and button, an Indicator's label); a Tab panel (a cluster of sensors, or the default
+configuration's primary views) its tab strip and its active tab's panels. The panel's toolbar
+shows what the app shows there: its title, or a Raw Messages panel's topic path. A panel whose
+topic has no message in the bag says so. The page is photographed by Debian's headless
+Chromium (``/usr/bin/chromium``) into ``DIR/NAME.png``.
 
 This is a preview of a layout with data, drawn by this tool; it is not Lichtblick (see
 tools/lichtblick_check.md for the app itself). A bag to draw from:

@@ -2,7 +2,7 @@
 publishes, export the layout, and report what was seen.
 
 usage: python drive.py LAYOUT.json NAME [--app URL] [--ws URL] [--record FILE] [--act]
-       [--shots DIR] [--size WIDTHxHEIGHT]
+       [--tabs] [--shots DIR] [--size WIDTHxHEIGHT]
 
 Debian's headless Chromium (never a browser of playwright's own) opens the app connected to a
 Foxglove WebSocket server (``wsserver.py``), imports LAYOUT.json through the app's own menu
@@ -16,7 +16,10 @@ layouts the list marks as having unsaved changes (``unsaved_changes``: the app's
 shows them, the topics the app advertised once the layout was imported (``advertised``; the
 app's own default layout advertises its click-to-publish topics before that:
 ``advertised_before_import``), and with --act what each Teleop pad (held 1.5 s), Publish
-button and 3D click tool sent, decoded by the server.
+button and 3D click tool sent, decoded by the server. The app mounts a Tab panel's active tab
+only; with --tabs, once all that is done (a tab clicked changes the layout), each other tab is
+clicked and its panels looked at after three seconds of data, as ``panels`` (each with its
+``tab``) and a screenshot NAME-Tab-ID-INDEX.png.
 """
 
 from __future__ import annotations
@@ -71,15 +74,47 @@ async def hues(box: Locator) -> int:
     return int((counts > 20).sum())
 
 
+async def panel(page: Page, panel_id: str) -> dict[str, Any]:
+    """A panel as the app shows it: there or not, its text, its hues."""
+    box = page.get_by_test_id(f"panel-mouseenter-container {panel_id}")
+    present = await box.count() > 0
+    text = (await box.first.inner_text())[:400] if present else None
+    shown = await hues(box.first) if present else 0
+    return {"present": present, "text": text, "hues": shown}
+
+
 async def panels(page: Page, layout: dict[str, Any]) -> dict[str, Any]:
-    """Each panel of the layout as the app shows it: there or not, its text, its hues."""
+    """Each panel of the layout as the app shows it."""
+    return {panel_id: await panel(page, panel_id) for panel_id in layout.get("configById", {})}
+
+
+def leaves(node: Any) -> list[str]:
+    """The panel ids of a split tree (a tab's layout)."""
+    if isinstance(node, str):
+        return [node]
+    if isinstance(node, dict):
+        return leaves(node.get("first")) + leaves(node.get("second"))
+    return []
+
+
+async def visit_tabs(page: Page, layout: dict[str, Any], shots: Path, name: str) -> dict[str, Any]:
+    """Click each tab a Tab panel does not show on opening, as an operator would, and look at
+    its panels after three seconds of data; a screenshot of each (NAME-Tab-ID-INDEX.png)."""
     seen: dict[str, Any] = {}
-    for panel_id in layout.get("configById", {}):
-        box = page.get_by_test_id(f"panel-mouseenter-container {panel_id}")
-        present = await box.count() > 0
-        text = (await box.first.inner_text())[:400] if present else None
-        shown = await hues(box.first) if present else 0
-        seen[panel_id] = {"present": present, "text": text, "hues": shown}
+    for panel_id, config in layout.get("configById", {}).items():
+        if not panel_id.startswith("Tab!"):
+            continue
+        strip = page.get_by_test_id(f"panel-mouseenter-container {panel_id}").first
+        for index, tab in enumerate(config.get("tabs", [])):
+            if index == config.get("activeTabIdx", 0):
+                continue
+            # Its own strip comes first in the page: a nested Tab panel's is inside a tab.
+            await strip.get_by_test_id("toolbar-tab").nth(index).click()
+            await page.wait_for_timeout(3000)
+            picture = f"{name}-{panel_id.replace('!', '-')}-{index}.png"
+            await page.screenshot(path=str(shots / picture))
+            for inner in leaves(tab.get("layout")):
+                seen[inner] = {**await panel(page, inner), "tab": tab.get("title"), "shot": picture}
     return seen
 
 
@@ -159,6 +194,10 @@ async def run(args: argparse.Namespace) -> dict[str, Any]:
         await page.wait_for_timeout(800)
         report["variables"] = await page.get_by_test_id("sidebar-right").inner_text()
         await page.screenshot(path=str(shots / f"{args.name}-variables.png"))
+        if args.tabs:  # last: a tab clicked is a change to the layout (its activeTabIdx)
+            await page.get_by_test_id("right-sidebar-button").click()
+            report["tabs"] = await visit_tabs(page, layout, shots, args.name)
+            report["panels"].update(report["tabs"])
         adverts = [r for r in records(record, started) if r["op"] == "advertise"]
         report["advertised_before_import"] = sorted(
             {r["topic"] for r in adverts if r["t"] < imported}
@@ -250,6 +289,11 @@ def main() -> None:
         help="the window, WIDTHxHEIGHT (1920x1080: the operator's screen of the quality check)",
     )
     parser.add_argument("--act", action="store_true", help="press what publishes")
+    parser.add_argument(
+        "--tabs",
+        action="store_true",
+        help="then click each tab a Tab panel does not show on opening and look at its panels",
+    )
     report = asyncio.run(run(parser.parse_args()))
     summary = {
         k: report[k]

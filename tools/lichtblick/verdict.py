@@ -18,7 +18,10 @@ what its panels showed, or each fault. A layout passes when
   ``drive.py``), a Plot one hue per series, a Raw Messages panel the message's type. A topic
   the bag lacks is a fault unless no robot publishes it: a command the layout itself sends (a
   Teleop pad's, a Publish panel's or a goal panel's topic, or an Indicator standing for a
-  Publish button) or a placeholder's (its title says so).
+  Publish button) or a placeholder's (its title says so);
+- the panels of a Tab panel's other tabs (the app mounts the active tab only) are named ``in
+  a tab not shown``, unless ``drive.py --tabs`` clicked them open: then they are judged as
+  the others.
 
 Exit status 1 when a layout fails. Needs rosbags and numpy.
 """
