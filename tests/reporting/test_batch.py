@@ -162,7 +162,9 @@ def test_a_recursive_glob_keeps_globs_meaning(teams: Path, tmp_path: Path) -> No
 
 
 def _grandchildren() -> list[int]:
-    """This process's grandchildren: the batch's workers (forked by the forkserver)."""
+    """The batch's workers: children of this process's multiprocessing forkserver. Only those:
+    other grandchildren (a ROS master a session fixture of this test worker started) are not
+    this test's to kill."""
     parents = {}
     for entry in Path("/proc").iterdir():
         try:
@@ -171,7 +173,15 @@ def _grandchildren() -> list[int]:
             )
         except (ValueError, OSError, IndexError):
             continue
-    return [pid for pid, parent in parents.items() if parents.get(parent) == os.getpid()]
+    servers = {pid for pid, parent in parents.items() if parent == os.getpid() and _forkserver(pid)}
+    return [pid for pid, parent in parents.items() if parent in servers]
+
+
+def _forkserver(pid: int) -> bool:
+    try:
+        return b"multiprocessing.forkserver" in Path(f"/proc/{pid}/cmdline").read_bytes()
+    except OSError:
+        return False
 
 
 def test_a_worker_killed_among_the_teams_handed_to_it_fails_one_team_and_the_rest_are_solved(

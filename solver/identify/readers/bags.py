@@ -62,21 +62,7 @@ def read_bag_topics(
     """The (topic, type) pairs a bag recorded, in the bag's connection order, without repeats."""
     require("rosbags", feature="reading bag files (identify --bag)")
     name = shown(display if display is not None else str(path), limit=SHOWN_FILE_NAME_CHARS)
-    bag = Path(path)
-    try:
-        if not bag.exists():
-            raise InputError.at(name, "no such bag file or folder", code="bag")
-        if not (bag.is_file() or bag.is_dir()):
-            # A FIFO would wait for a writer forever, /dev/zero would be read forever.
-            raise InputError.at(name, "not a bag file or folder (a device or pipe?)", code="bag")
-    except InputError:
-        raise
-    except ValueError:  # a NUL byte in the name
-        raise InputError.at(name, "not a usable file name", code="bag") from None
-    except OSError as error:  # a name past the file system's limits
-        reason = f"not a usable file name ({error.strerror})"
-        raise InputError.at(name, reason, code="bag") from None
-    pairs = _read_in_child(bag.resolve(), name, limits)
+    pairs = _read_in_child(_checked(Path(path), name), name, limits)
     topics = dict.fromkeys(Topic(topic, normalise_type(kind)) for topic, kind in pairs)
     return tuple(topics)
 
@@ -113,6 +99,7 @@ def _checked(bag: Path, name: str) -> Path:
         if not bag.exists():
             raise InputError.at(name, "no such bag file or folder", code="bag")
         if not (bag.is_file() or bag.is_dir()):
+            # A FIFO would wait for a writer forever, /dev/zero would be read forever.
             raise InputError.at(name, "not a bag file or folder (a device or pipe?)", code="bag")
     except InputError:
         raise
