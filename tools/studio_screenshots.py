@@ -51,8 +51,9 @@ SETTLED = """() => {
 
 
 def settled(page: Page) -> None:
+    """Wait until the selection page has settled (its radar chart is drawn into the page as
+    SVG before it settles: nothing more to wait for)."""
     page.wait_for_function(SETTLED)
-    page.locator("#radar").evaluate("(image) => image.decode()")
 
 
 def start(*args: str) -> tuple[subprocess.Popen[str], str]:
@@ -72,8 +73,17 @@ def start(*args: str) -> tuple[subprocess.Popen[str], str]:
 
 
 def shoot(page: Page, out: Path, name: str, *, full: bool = False) -> None:
+    """``docs/studio-NAME.png``; ``full``: the whole page, in a window as tall as the page, so
+    that a panel that scrolls on its own in a window (the totals) is shown whole too."""
     path = out / f"studio-{name}.png"
+    page.wait_for_load_state()
+    size = page.viewport_size
+    if full and size is not None:
+        tall = page.evaluate("() => document.documentElement.scrollHeight")
+        page.set_viewport_size({"width": size["width"], "height": max(size["height"], tall)})
     page.screenshot(path=path, full_page=full)
+    if full and size is not None:
+        page.set_viewport_size(size)
     print(f"wrote {path.relative_to(ROOT) if path.is_relative_to(ROOT) else path}")
 
 
@@ -90,6 +100,7 @@ def findings(page: Page, url: str, out: Path) -> None:
         "&UAV.motion_control=Walking&UAV.sensor_type=2D+Camera&UAV.sensor_count.max=5&view=UAV"
     )
     settled(page)
+    expect(page.locator("#whatif-section")).to_have_attribute("data-state", "answered")
     expect(page.locator(".control-findings .finding.warning")).not_to_have_count(0)
     shoot(page, out, "findings", full=True)
     page.go_back()
@@ -109,6 +120,8 @@ def views(page: Page, url: str, out: Path) -> None:
     ).uncheck()
     expect(page.locator("#change")).to_contain_text("Last change")
     settled(page)
+    # What-if comes once the selection has rested: the picture shows it answered.
+    expect(page.locator("#whatif-section")).to_have_attribute("data-state", "answered")
     page.evaluate("window.scrollTo(0, 0)")
     shoot(page, out, "selection", full=True)
     page.get_by_role("button", name="Undo").click()
@@ -135,6 +148,7 @@ def views(page: Page, url: str, out: Path) -> None:
     shoot(page, out, "robots")
 
     page.get_by_role("link", name="Charts").click()
+    expect(page.locator("img[data-chart]").first).to_be_visible()
     for image in page.locator("img[data-chart]").all():
         image.evaluate("(image) => image.decode()")
     shoot(page, out, "charts", full=True)
@@ -152,8 +166,12 @@ def views(page: Page, url: str, out: Path) -> None:
     page.get_by_role("link", name="Export").click()
     shoot(page, out, "export")
 
-    if page.get_by_role("link", name="Live").count():
-        page.get_by_role("link", name="Live").click()
+    page.get_by_role("link", name="API", exact=True).first.click()
+    expect(page.locator("h1")).to_be_visible()
+    shoot(page, out, "api")
+
+    if page.get_by_role("link", name="Live", exact=True).count():
+        page.get_by_role("link", name="Live", exact=True).click()
         expect(page.locator("#live-status")).to_contain_text("synced")
         shoot(page, out, "live")
 
@@ -176,7 +194,7 @@ def live(page: Page, out: Path, work: Path) -> None:
         put_rover(node, "/ugv1")
         node.set_param("/teleop_ui/active_robot", "/uav1")
         page.goto(url)
-        page.get_by_role("link", name="Live").click()
+        page.get_by_role("link", name="Live", exact=True).click()
         expect(page.locator('tr[data-robot="/uav1"]')).to_have_attribute("aria-current", "true")
         expect(page.locator('tr[data-robot="/ugv1"] td.configurations')).not_to_be_empty()
         expect(page.locator("#event-log li")).not_to_have_count(0)

@@ -97,6 +97,8 @@ COLOURS = ("#0072B2", "#E69F00", "#009E73", "#CC79A7", "#D55E00", "#56B4E9", "#F
 TICK_FONT = 7.5
 # Values wider than this many characters are wrapped onto two lines.
 LABEL_WRAP = 22
+# Spoke titles wider than this are wrapped, where texts are drawn larger (a page's panel).
+TITLE_WRAP = 16
 # The grey of spokes, tick marks and secondary text.
 GREY = "#888888"
 # A region's fill is this opaque (neighbouring types' regions show through one another).
@@ -213,6 +215,7 @@ class Stroke:
     start: Point
     end: Point
     dot: bool
+    spoke: int = 0  # which spoke it runs along
 
 
 @dataclass(frozen=True, slots=True)
@@ -231,6 +234,10 @@ class Layer:
     quads: tuple[tuple[Point, Point, Point, Point], ...]
     strokes: tuple[Stroke, ...]
     legend: str
+    # The type's counts (the legend's text when it shows them), and per spoke the values it
+    # selects there, as text: what a page shows on hover and focus.
+    summary: str = ""
+    notes: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True, slots=True)
@@ -251,6 +258,10 @@ class RadarChart:
     subtitle: str
     legend_bottom: float = 0.1
     legend_pitch: float = 0.24
+    # Texts this many times their size in ``report`` (a chart shown small, on a page); a
+    # chart with ``titled`` off leaves its title and subtitle out (the page says them).
+    text: float = 1.0
+    titled: bool = True
 
 
 def runs(characteristic: Characteristic, values: Sequence[Value]) -> list[tuple[Value, Value]]:
@@ -316,20 +327,26 @@ def _highest(characteristic: Characteristic, domain: Sequence[Value]) -> int:
     return max(int(v) for v in domain)
 
 
-def _tick_values(axis: RadarAxis, team: Team, position: int) -> list[Value]:
+def _tick_values(axis: RadarAxis, team: Team, position: int, text: float = 1.0) -> list[Value]:
     """The values labelled on a spoke: all of them, or for integers the telling ones.
 
     Integers are taken greedily in priority order (the ends, each type's largest count, where
     arrangements end, then every value in ascending order), each kept when it is at least
-    :data:`MIN_TICK_GAP` from every label kept before it.
+    :data:`MIN_TICK_GAP` (times ``text``, the texts' scale) from every label kept before it.
     """
     characteristic = axis.characteristic
     if characteristic.kind != "integer":
         # Past MAX_SPOKE_LABELS a spoke labels every k-th value (and the last): thousands of
         # labels would overlap into a smear and take minutes to draw.
         step = math.ceil(len(axis.shown) / MAX_SPOKE_LABELS)
+        if text != 1.0 and len(axis.shown) > 1:
+            # Larger texts: as many values apart as a label's line needs across the spoke.
+            sine = abs(math.sin(axis.angle))
+            line = TICK_FONT * text * 1.2 / _UNIT / (sine if sine >= STEEP else 1.0)
+            step = max(step, math.ceil(line / ((1 - INNER_RADIUS) / (len(axis.shown) - 1))))
         return list(dict.fromkeys([*axis.shown[::step], *axis.shown[-1:]]))
-    labels = _Labels(axis)
+    gap = MIN_TICK_GAP * text
+    labels = _Labels(axis, gap)
     for value in (
         axis.low,
         axis.high,
@@ -346,7 +363,7 @@ def _tick_values(axis: RadarAxis, team: Team, position: int) -> list[Value]:
         index = (
             index + 1
             if blocker is None
-            else bisect.bisect_left(rest, blocker + MIN_TICK_GAP, lo=index + 1, key=axis.radius)
+            else bisect.bisect_left(rest, blocker + gap, lo=index + 1, key=axis.radius)
         )
     return sorted(labels.values)
 
@@ -354,8 +371,9 @@ def _tick_values(axis: RadarAxis, team: Team, position: int) -> list[Value]:
 class _Labels:
     """The integer labels of a spoke kept so far, with their radii in order (for bisection)."""
 
-    def __init__(self, axis: RadarAxis) -> None:
+    def __init__(self, axis: RadarAxis, gap: float = MIN_TICK_GAP) -> None:
         self.axis = axis
+        self.gap = gap
         self.values: list[int] = []
         self.radii: list[float] = []
 
@@ -368,7 +386,7 @@ class _Labels:
             return None
         radius = self.axis.radius(value)
         at = bisect.bisect_left(self.radii, radius)
-        close = [r for r in self.radii[max(at - 1, 0) : at + 1] if abs(radius - r) < MIN_TICK_GAP]
+        close = [r for r in self.radii[max(at - 1, 0) : at + 1] if abs(radius - r) < self.gap]
         if close:
             return max(close)
         self.values.append(value)
@@ -401,7 +419,7 @@ def counts_text(robots: int, configurations: int) -> str:
     )
 
 
-def _value_label(axis: RadarAxis, value: Value) -> Label:
+def _value_label(axis: RadarAxis, value: Value, size: float = TICK_FONT) -> Label:
     """A value's label beside its spoke: written across a steep spoke, along a flat one."""
     cos, sin = math.cos(axis.angle), math.sin(axis.angle)
     name = f"tick {axis.characteristic.name}"
@@ -412,7 +430,7 @@ def _value_label(axis: RadarAxis, value: Value) -> Label:
             x + LABEL_GAP * outward / abs(sin),
             y,
             _label(value),
-            TICK_FONT,
+            size,
             ha="left" if outward > 0 else "right",
             boxed=True,
             name=name,
@@ -426,7 +444,7 @@ def _value_label(axis: RadarAxis, value: Value) -> Label:
         x,
         y,
         _label(value),
-        TICK_FONT,
+        size,
         ha="left" if ahead else "right",
         rotation=rotation,
         boxed=True,
@@ -434,11 +452,14 @@ def _value_label(axis: RadarAxis, value: Value) -> Label:
     )
 
 
-def _spoke(axis: RadarAxis, team: Team, position: int) -> Spoke:
+def _spoke(axis: RadarAxis, team: Team, position: int, text: float = 1.0) -> Spoke:
     cos, sin = math.cos(axis.angle), math.sin(axis.angle)
-    labelled = _tick_values(axis, team, position)
+    labelled = _tick_values(axis, team, position, text)
     characteristic = axis.characteristic
     title = chart_text(characteristic.label)
+    if text != 1.0:
+        # Larger texts: a long name on two lines, clear of its neighbours' (six spokes).
+        title = textwrap.fill(title, TITLE_WRAP)
     if not axis.complete and characteristic.kind != "integer":
         title += "\n(selected values)"
     if characteristic.kind != "integer" and len(labelled) < len(axis.shown):
@@ -450,12 +471,12 @@ def _spoke(axis: RadarAxis, team: Team, position: int) -> Spoke:
             (axis.point(value, -0.012), axis.point(value, 0.012))
             for value in _tick_marks(axis, labelled)
         ),
-        tuple(_value_label(axis, value) for value in labelled),
+        tuple(_value_label(axis, value, TICK_FONT * text) for value in labelled),
         Label(
             1.09 * cos,
             1.09 * sin,
             title,
-            10.5,
+            10.5 * text,
             ha="center" if abs(sin) >= STEEP else ("left" if cos > 0 else "right"),
             va="bottom" if sin > 0 else "top",
             bold=True,
@@ -503,7 +524,11 @@ def _region_quads(
     return tuple(quads)
 
 
-def _layers(solution: Solution, axes: Sequence[RadarAxis]) -> tuple[Layer, ...]:
+def _layers(
+    solution: Solution, axes: Sequence[RadarAxis], *, counted: bool = True
+) -> tuple[Layer, ...]:
+    """Each type's layer; its legend without the counts unless ``counted`` (its ``summary``
+    has them either way)."""
     team = solution.team
     summaries = {s.kinematic_type: s for s in solution.by_type}
     count = len(team.selections)
@@ -513,10 +538,11 @@ def _layers(solution: Solution, axes: Sequence[RadarAxis]) -> tuple[Layer, ...]:
         spans = _spans(axes, selection.domains, known)
         legend = chart_text(selection.kinematic_type)
         summary = summaries.get(selection.kinematic_type)
+        counts = legend
         if summary is not None:
-            legend += f": {counts_text(summary.valid_robots, summary.ui_configurations)}"
+            counts += f": {counts_text(summary.valid_robots, summary.ui_configurations)}"
             if summary.unserved_robots:
-                legend += f" ({summary.unserved_robots} unserved)"
+                counts += f" ({summary.unserved_robots} unserved)"
         layers.append(
             Layer(
                 selection.kinematic_type,
@@ -525,14 +551,38 @@ def _layers(solution: Solution, axes: Sequence[RadarAxis]) -> tuple[Layer, ...]:
                 index,
                 _region_quads(axes, spans),
                 tuple(
-                    Stroke(axis.point(first), axis.point(last), first == last)
-                    for axis, axis_runs in zip(axes, spans, strict=True)
+                    Stroke(axis.point(first), axis.point(last), first == last, k)
+                    for k, (axis, axis_runs) in enumerate(zip(axes, spans, strict=True))
                     for first, last in axis_runs
                 ),
-                legend,
+                counts if counted else legend,
+                counts,
+                tuple(
+                    _note(legend, axis, axis_runs)
+                    for axis, axis_runs in zip(axes, spans, strict=True)
+                ),
             )
         )
     return tuple(layers)
+
+
+# Values a note names before it counts the rest.
+NOTE_VALUES = 12
+
+
+def _note(kinematic_type: str, axis: RadarAxis, spans: Sequence[tuple[Value, Value]]) -> str:
+    """``UAV: Robot Motion Control: Flight, Waypoint`` (runs of counts as ``1..25``)."""
+    characteristic = axis.characteristic
+    if characteristic.kind == "integer":
+        parts = [_label(a) if a == b else f"{a}..{b}" for a, b in spans]
+    else:
+        parts = []
+        for first, last in spans:
+            start, end = axis.shown.index(first), axis.shown.index(last)
+            parts += [chart_text(v) for v in axis.shown[start : end + 1]]
+    more = len(parts) - NOTE_VALUES
+    text = ", ".join(parts[:NOTE_VALUES]) + (f" and {more} more" if more > 0 else "")
+    return f"{kinematic_type}: {chart_text(characteristic.label)}: {text or 'none shown'}"
 
 
 # Points per radius unit: the drawing is 8 inches for 3 units.
@@ -576,8 +626,10 @@ def _refuse(team: Team, selection: TypeSelection, which: Limit, size: int) -> No
         which.check(size, at.file, line=at.line, column=at.column, path=at.path)
 
 
-def radar_chart(solution: Solution) -> RadarChart:
-    """The team's radar chart (the article's Figure 9)."""
+def radar_chart(solution: Solution, *, text: float = 1.0, titled: bool = True) -> RadarChart:
+    """The team's radar chart (the article's Figure 9): its texts ``text`` times their size
+    in ``report`` (more values then apart on a spoke between labels), and with ``titled`` off
+    no title nor counts in the legend (a page that shows them beside it)."""
     check_chart_size(solution.team)
     team = solution.team
     axes = radar_axes(team)
@@ -585,12 +637,13 @@ def radar_chart(solution: Solution) -> RadarChart:
     # with room for the characteristic names beyond their tips.
     sines = [math.sin(axis.angle) for axis in axes]
     top, bottom = max(*sines, 0.0) + 0.3, min(*sines, 0.0) - 0.3
-    spokes = tuple(_spoke(axis, team, position) for position, axis in enumerate(axes))
+    spokes = tuple(_spoke(axis, team, position, text) for position, axis in enumerate(axes))
     # 8 inches for 3 units, wider where a flat spoke's title would reach past the edge.
     half = max(1.5, *(_reach(spoke.title) for spoke in spokes))
-    width, title_height = 8.0 * half / 1.5, 0.75
+    width, title_height = 8.0 * half / 1.5, 0.75 if titled else 0.1
     plot_height = width * (top - bottom) / (2 * half)
-    legend_height = 0.35 + 0.24 * max(len(team.selections), 1)
+    pitch = 0.24 * text
+    legend_height = 0.35 + pitch * max(len(team.selections), 1)
     height = plot_height + title_height + legend_height
     totals = solution.totals
     return RadarChart(
@@ -600,10 +653,13 @@ def radar_chart(solution: Solution) -> RadarChart:
         (-half, half),
         (bottom, top),
         spokes,
-        _layers(solution, axes),
+        _layers(solution, axes, counted=titled),
         f"{chart_text(team.name)}: {counts_text(totals.valid_robots, totals.ui_configurations)}",
         f"rules: {chart_text(team.rules.name)}    bound T = {solution.bound}    "
         f"default UI configuration: {solution.default_configuration}",
+        legend_pitch=pitch,
+        text=text,
+        titled=titled,
     )
 
 

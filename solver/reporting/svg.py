@@ -29,8 +29,10 @@ from solver.reporting.chart import (
     REGION_ALPHA,
     BarsChart,
     Label,
+    Layer,
     MatrixChart,
     RadarChart,
+    Stroke,
     bars_chart,
     matrix_chart,
     radar_chart,
@@ -40,7 +42,15 @@ from solver.reporting.chart import (
 if TYPE_CHECKING:
     from solver.solving.solution import Solution
 
-__all__ = ["CHART_KINDS", "ChartKind", "bars_svg", "chart_svg", "matrix_svg", "radar_svg"]
+__all__ = [
+    "CHART_KINDS",
+    "ChartKind",
+    "bars_svg",
+    "chart_svg",
+    "matrix_svg",
+    "panel_radar_svg",
+    "radar_svg",
+]
 
 ChartKind = Literal["radar", "bars", "matrix"]
 CHART_KINDS: tuple[ChartKind, ...] = ("radar", "bars", "matrix")
@@ -192,8 +202,9 @@ def _legend_handle(x: float, y: float, colour: str) -> str:
     )
 
 
-def draw_radar(chart: RadarChart) -> bytes:
-    """``chart`` as SVG (see :func:`radar_svg`)."""
+def draw_radar(chart: RadarChart, *, focusable: bool = False) -> bytes:
+    """``chart`` as SVG (see :func:`radar_svg`); ``focusable``: each type's values on each
+    spoke, and each legend entry, a group the keyboard reaches that says its text."""
     canvas = _Canvas(chart.width, chart.height, chart.title)
     frame = canvas.frame(chart.plot, chart.xlim, chart.ylim)
     for spoke in chart.spokes:
@@ -208,43 +219,78 @@ def draw_radar(chart: RadarChart) -> bytes:
         for label in (*spoke.labels, spoke.title):
             canvas.text(5, *frame.point((label.x, label.y)), label)
     for layer in chart.layers:
-        if layer.quads:
-            shape = " ".join(
-                "M"
-                + "L".join(f"{_number(x)} {_number(y)}" for x, y in map(frame.point, quad))
-                + "Z"
-                for quad in layer.quads
-            )
-            canvas.add(
-                2, f'<path d="{shape}" fill="{layer.colour}" fill-opacity="{REGION_ALPHA}"/>'
-            )
-        # One element per layer: every run of the type is a sub-path, every lone value a dot.
-        runs = [frame.point(p) for s in layer.strokes if not s.dot for p in (s.start, s.end)]
-        dots = [frame.point(s.start) for s in layer.strokes if s.dot]
-        markup = f'<g class="layer" fill="{layer.colour}" stroke="{layer.colour}">'
-        if runs:
-            markup += (
-                f'<path d="{_segments(runs)}" fill="none" stroke-width="{_number(layer.width)}" '
-                'stroke-linecap="round"/>'
-            )
-        markup += "".join(
-            f'<circle cx="{_number(x)}" cy="{_number(y)}" r="{_number(layer.width / 2)}" '
-            'stroke="none"/>'
-            for x, y in dots
+        _draw_layer(canvas, frame, layer, focusable=focusable)
+    _draw_legend(canvas, chart, focusable=focusable)
+    if chart.titled:
+        canvas.text(6, canvas.width / 2, 0.3 * 72, Label(0, 0, chart.title, 13, bold=True))
+        subtitle = Label(0, 0, chart.subtitle, 9, colour="#444444")
+        canvas.text(6, canvas.width / 2, 0.6 * 72, subtitle)
+    return canvas.svg()
+
+
+def _draw_layer(canvas: _Canvas, frame: _Frame, layer: Layer, *, focusable: bool) -> None:
+    """A type's region and its runs: one element per layer, every run of the type a sub-path,
+    every lone value a dot; ``focusable`` groups them by spoke, each group a stop of the
+    keyboard saying its values."""
+    if layer.quads:
+        shape = " ".join(
+            "M" + "L".join(f"{_number(x)} {_number(y)}" for x, y in map(frame.point, quad)) + "Z"
+            for quad in layer.quads
         )
-        canvas.add(3 + layer.order, markup + "</g>")
-    # The legend: one row per type, the last row lowest, the block centred under the chart.
-    widest = max((text_width(layer.legend, 10) for layer in chart.layers), default=0.0)
+        canvas.add(2, f'<path d="{shape}" fill="{layer.colour}" fill-opacity="{REGION_ALPHA}"/>')
+    groups = [(layer.strokes, "")]
+    if focusable:
+        groups = [
+            (tuple(s for s in layer.strokes if s.spoke == k), note)
+            for k, note in enumerate(layer.notes)
+        ]
+    markup = f'<g class="layer" fill="{layer.colour}" stroke="{layer.colour}">'
+    markup += "".join(
+        _strokes(frame, strokes, layer.width, note) for strokes, note in groups if strokes
+    )
+    canvas.add(3 + layer.order, markup + "</g>")
+
+
+def _draw_legend(canvas: _Canvas, chart: RadarChart, *, focusable: bool) -> None:
+    """One row per type, the last row lowest, the block centred under the chart;
+    ``focusable``: each row a stop of the keyboard saying the type's counts."""
+    size = 10 * chart.text
+    widest = max((text_width(layer.legend, size) for layer in chart.layers), default=0.0)
     left = (canvas.width - (20 + 8 + widest)) / 2
-    pitch = 10 * 1.16 + 5
-    lowest = canvas.height - chart.legend_bottom * 72 - 9 - 10 * 1.16 / 2
+    pitch = size * 1.16 + 5
+    lowest = canvas.height - chart.legend_bottom * 72 - 9 - size * 1.16 / 2
     for row, layer in enumerate(chart.layers):
         y = lowest - (len(chart.layers) - 1 - row) * pitch
+        if focusable:
+            canvas.add(6, f"<g {_stop(layer.summary)}>")
         canvas.add(6, _legend_handle(left, y, layer.colour))
-        canvas.text(6, left + 28, y, Label(0, 0, layer.legend, 10, ha="left"))
-    canvas.text(6, canvas.width / 2, 0.3 * 72, Label(0, 0, chart.title, 13, bold=True))
-    canvas.text(6, canvas.width / 2, 0.6 * 72, Label(0, 0, chart.subtitle, 9, colour="#444444"))
-    return canvas.svg()
+        canvas.text(6, left + 28, y, Label(0, 0, layer.legend, size, ha="left"))
+        if focusable:
+            canvas.add(6, "</g>")
+
+
+def _stop(note: str) -> str:
+    """The attributes of a group a keyboard reaches, saying ``note`` (hover: its title)."""
+    return f'class="value" tabindex="0" role="img" aria-label="{_xml(note)}"'
+
+
+def _strokes(frame: _Frame, strokes: tuple[Stroke, ...], width: float, note: str) -> str:
+    """A type's runs (one path) and lone values (dots); with a ``note``, as a group saying it."""
+    runs = [frame.point(p) for s in strokes if not s.dot for p in (s.start, s.end)]
+    dots = [frame.point(s.start) for s in strokes if s.dot]
+    markup = ""
+    if runs:
+        markup += (
+            f'<path d="{_segments(runs)}" fill="none" stroke-width="{_number(width)}" '
+            'stroke-linecap="round"/>'
+        )
+    markup += "".join(
+        f'<circle cx="{_number(x)}" cy="{_number(y)}" r="{_number(width / 2)}" stroke="none"/>'
+        for x, y in dots
+    )
+    if note:
+        return f"<g {_stop(note)}><title>{_xml(note)}</title>{markup}</g>"
+    return markup
 
 
 def _hatch(canvas: _Canvas) -> str:
@@ -361,6 +407,19 @@ def draw_matrix(chart: MatrixChart) -> bytes:
 def radar_svg(solution: Solution) -> bytes:
     """The team's radar chart (the article's Figure 9) as SVG."""
     return draw_radar(radar_chart(solution))
+
+
+# A page's radar chart beside its totals: texts this many times ``report``'s, so that at the
+# 480 points a page gives it its smallest labels (7.5 points in ``report``) are 12 pixels.
+PANEL_TEXT = 1.9
+
+
+def panel_radar_svg(solution: Solution) -> bytes:
+    """The radar chart for a page that shows it small beside the team's totals: larger texts,
+    no title (the page has the totals; the SVG's ``<title>`` still says them), the legend by
+    type, and each type's values per spoke and each legend entry a group the keyboard reaches
+    (``tabindex``, ``aria-label``; ``<title>`` on hover) that says its text."""
+    return draw_radar(radar_chart(solution, text=PANEL_TEXT, titled=False), focusable=True)
 
 
 def bars_svg(solution: Solution) -> bytes:

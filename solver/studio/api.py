@@ -284,11 +284,16 @@ async def model_uvl(request: Request) -> Response:
 
 
 async def chart(request: Request) -> Response:
-    """A chart of `teleop-ui report` as SVG: radar (Figure 9), bars or the component matrix.
+    """A chart of `teleop-ui report` as SVG: radar (Figure 9), bars or the component matrix;
+    `panel`: the radar chart as the selection page shows it beside the totals (larger texts,
+    no title, each type's values per spoke a group the keyboard reaches, with its text).
     ---
     summary: A chart
     parameters:
-      - {name: kind, in: path, required: true, schema: {type: string, enum: [radar, bars, matrix]}}
+      - name: kind
+        in: path
+        required: true
+        schema: {type: string, enum: [radar, bars, matrix, panel]}
     responses:
       200: {description: an SVG image}
       422: {description: located faults}

@@ -183,6 +183,9 @@ class ValueControl:
     components: str
     checked: bool
     excluded: str  # why the rules' constraints exclude it ("" when they do not)
+    # The selection names it (not only "every value"): an excluded value named is kept in
+    # the form, so the page says what it costs; one only implied is not added by a change.
+    named: bool = False
 
 
 @dataclass(frozen=True)
@@ -334,6 +337,7 @@ def _categorical_control(
                     f"{shown(c.name, quoted=True)} ({c.location})"
                     for c in reasons[str(value)].constraints
                 ),
+                chosen_values is not None and str(value) in chosen_values,
             )
             for value in characteristic.values
         ),
@@ -469,7 +473,8 @@ async def configurations(request: Request) -> Response:
         if a and b:
             left = page.studio.configuration_data(page.pairs, _number(page.pairs, "a", 0))
             right = page.studio.configuration_data(page.pairs, _number(page.pairs, "b", 0))
-            compared = _compare(left, right)
+            labels = {c.name: c.label for c in chosen.rules.characteristics}
+            compared = _compare(left, right, labels)
         return {
             "data": data,
             "compared": compared,
@@ -483,14 +488,18 @@ async def configurations(request: Request) -> Response:
     return page.render("configurations.html", **await run_in_threadpool(work))
 
 
-def _compare(left: dict[str, Any], right: dict[str, Any]) -> list[dict[str, Any]]:
+def _compare(
+    left: dict[str, Any], right: dict[str, Any], labels: dict[str, str]
+) -> list[dict[str, Any]]:
+    """Two configurations side by side, by the names the rules give (``Robot Kinematic
+    Type``: ``UAV``, not ``kinematic_type``: ``UAV: UAV``)."""
     rows = []
     for one, other in zip(left["components"], right["components"], strict=True):
         rows.append(
             {
-                "characteristic": one["characteristic"],
-                "left": _component_text(one),
-                "right": _component_text(other),
+                "characteristic": labels.get(one["characteristic"], one["characteristic"]),
+                "left": _named_component_text(one),
+                "right": _named_component_text(other),
                 "differs": one["component"] != other["component"],
             }
         )

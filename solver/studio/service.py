@@ -22,12 +22,13 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from solver import InputError, RuleSet, Solution, SolverError, Team, assign
-from solver.reporting.svg import CHART_KINDS, chart_svg
+from solver.reporting.svg import CHART_KINDS, chart_svg, panel_radar_svg
 from solver.solving.assignment import assignment_data
 from solver.solving.contracts import configuration_data
 from solver.solving.solution import counts_data, solution_data
 from solver.solving.teamfile import team_yaml
 from solver.studio.designs import DESIGNS_FILE, Designs, Entry
+from solver.studio.fleetteam import fleet_name, narrowed, narrowings
 from solver.studio.selection import SELECTION_FILE, Selection, parse_query, query_of
 from solver.studio.workspace import (
     MAX_UPLOAD_FILES,
@@ -518,13 +519,18 @@ class Studio:
     def chart_svg(self, pairs: Pairs, kind: str) -> bytes:
         """A chart of ``report`` (radar, bars or the component matrix) as SVG: the chart
         ``report`` draws (:mod:`solver.reporting.chart`), written straight as SVG."""
-        if kind not in CHART_KINDS:
+        if kind not in (*CHART_KINDS, "panel"):
             raise InputError.at(
-                SELECTION_FILE, f"no chart {kind[:40]!r}; charts: {', '.join(CHART_KINDS)}"
+                SELECTION_FILE,
+                f"no chart {kind[:40]!r}; charts: {', '.join(CHART_KINDS)}, panel",
             )
         chosen = self.chosen(pairs)
         # Every chart, the component matrix too, from the counts: the matrix is tallied by
-        # structure where it applies (no configuration listed).
+        # structure where it applies (no configuration listed). The panel: the radar chart
+        # beside the selection's totals, its texts readable at the panel's width and each
+        # value a stop of the keyboard (solver.reporting.svg.panel_radar_svg).
+        if kind == "panel":
+            return panel_radar_svg(self.solution(chosen))
         return chart_svg(self.solution(chosen), kind)
 
     # -- uploads -----------------------------------------------------------------------------
@@ -613,8 +619,11 @@ class Studio:
             data["error"] = None
             robots.append(data)
         fleet_id = self.workspace.fleet_id(fleet)
+        narrow = narrowings(fleet, chosen.rules, profile, self.workspace.excluded(chosen.source))
         return {
             "fleet": fleet_id,
+            "team_name": fleet_name(fleet),
+            "narrowed": [n.sentence for n in narrow],
             "folder": "<upload>" if shown is not None else str(folder),
             "identified": len(fleet.identified),
             "failed": len(fleet.failed),
@@ -634,10 +643,24 @@ class Studio:
                 "<fleet>", f"no fleet {fleet_id[:40]!r}: identify the robots again", path="fleet"
             )
         source = self.workspace.source(_first(pairs, "rules"))
-        name = _first(pairs, "name") or "fleet"
+        # A name of its own (never the page's team's), and nothing the robots do not have
+        # (solver.studio.fleetteam).
+        name = fleet_name(fleet)
         text = team_text(fleet, source.rules, self.profile(), name=name)
-        team = parse_team(parse_document(text, "<fleet team>"), source.rules)
-        return {"yaml": text, "query": query_of(team, source.id)}
+        found = narrowings(fleet, source.rules, self.profile(), self.workspace.excluded(source))
+        team = narrowed(parse_team(parse_document(text, "<fleet team>"), source.rules), found, name)
+        text = team_yaml(
+            team,
+            header=(
+                f"Team made by teleop-ui studio from {len(fleet.identified)} identified robot(s).",
+                *(n.sentence for n in found),
+            ),
+        )
+        return {
+            "yaml": text,
+            "query": query_of(team, source.id),
+            "narrowed": [n.sentence for n in found],
+        }
 
     # -- designs (``--designs DIR``) -----------------------------------------------------------
 

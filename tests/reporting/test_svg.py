@@ -194,3 +194,55 @@ def test_svg_charts_are_byte_identical_from_run_to_run(tmp_path: Path) -> None:
 def test_an_unknown_chart_kind_is_refused(solution: Solution) -> None:
     with pytest.raises(ValueError, match="kind must be in"):
         chart_svg(solution, "pie")
+
+
+def test_the_panel_radar_has_larger_texts_and_names_every_selected_value_for_the_keyboard() -> None:
+    from solver.reporting.chart import TICK_FONT
+    from solver.reporting.svg import PANEL_TEXT, panel_radar_svg
+
+    team = load_team(TEAMS / "case3.yaml")
+    tree = _tree(panel_radar_svg(solve(team)))
+    sizes = [float(t.get("font-size") or 0) for t in tree.iter(f"{SVG}text")]
+    assert min(sizes) == TICK_FONT * PANEL_TEXT
+    stops = [g.get("aria-label") or "" for g in tree.iter(f"{SVG}g") if g.get("tabindex") == "0"]
+    # Per type, one stop per spoke and one for its legend entry.
+    assert len(stops) == len(team.selections) * (len(team.rules.characteristics) + 1)
+    for selection in team.selections:
+        for characteristic, domain in zip(
+            team.rules.characteristics, selection.domains, strict=True
+        ):
+            if characteristic.kind == "integer":
+                continue
+            (stop,) = [
+                s
+                for s in stops
+                if s.startswith(f"{selection.kinematic_type}: {characteristic.label}:")
+            ]
+            # Every value the type selects is in its stop's text, labelled on the spoke or not.
+            assert all(str(value) in stop for value in domain)
+    # The chart of `report` is unchanged: no stops.
+    assert b"tabindex" not in chart_svg(solve(team), "radar")
+
+
+def test_names_from_the_files_stay_text_in_the_panel_radar_and_its_keyboard_names(
+    hostile_team: Path,
+) -> None:
+    from solver.reporting.svg import panel_radar_svg
+
+    svg = panel_radar_svg(solve(load_team(hostile_team)))
+    tree = _tree(svg)
+    assert {element.tag.removeprefix(SVG) for element in tree.iter()} <= {
+        "svg",
+        "title",
+        "rect",
+        "path",
+        "circle",
+        "g",
+        "text",
+        "tspan",
+    }
+    labels = [g.get("aria-label") or "" for g in tree.iter(f"{SVG}g") if g.get("tabindex")]
+    # A type's name read back as the attribute's text, never as markup.
+    assert any(label.startswith(f"{HOSTILE[2]}: ") for label in labels)
+    assert not any("\n" in label or "\u202e" in label for label in labels)
+    assert "\u202e" not in svg.decode()

@@ -389,8 +389,11 @@ def test_configurations_open_compare_and_a_robot_is_looked_up(
     page.get_by_label("Second").fill("4")
     page.get_by_role("button", name="Compare").click()
     rows = page.locator("#comparison tbody tr")
-    expect(rows.filter(has_text="motion_control")).to_contain_text("differs")
-    expect(rows.filter(has_text="kinematic_type")).to_contain_text("same")
+    expect(rows.filter(has_text="Robot Motion Control")).to_contain_text("differs")
+    # By the names the rules give: "UAV", not the internal "kinematic_type" and "UAV: UAV".
+    expect(rows.filter(has_text="Robot Kinematic Type")).to_have_text(
+        re.compile(r"^\s*Robot Kinematic Type\s*UAV\s*UAV\s*same\s*$")
+    )
 
     # Look up a robot, as `teleop-ui assign` does.
     page.get_by_role("link", name="Robots").click()
@@ -425,7 +428,7 @@ def test_the_example_robots_uploaded_are_identified_and_made_a_team(
 ) -> None:
     # The robots' files (examples/ also holds a rule set, profile and team of its own).
     examples = sorted(p for p in (ROOT / "examples").iterdir() if p.suffix in (".urdf", ".srdf"))
-    page.goto(studio.url)
+    page.goto(studio.at("/?rules=paper&name=The+team+before&type=UAV"))
     page.get_by_role("link", name="Fleet", exact=True).click()
     page.get_by_label("Robot descriptions").set_input_files(examples)
     page.get_by_role("button", name="Identify").click()
@@ -434,11 +437,28 @@ def test_the_example_robots_uploaded_are_identified_and_made_a_team(
     expect(fleet.locator("tr", has_text="quadrotor").first).to_contain_text("UAV")
     expect(fleet.locator("tr", has_text="diff_drive_lidar").first).to_contain_text("UGV")
     expect(fleet.locator("tr", has_text="arm_gripper").first).to_contain_text("Manipulator")
+    # The arm has no sensor, and the rules cannot say "none": the page says what it takes.
+    expect(page.locator("#narrowed")).to_contain_text(
+        "arm_gripper (Manipulator): no Sensor Type identified"
+    )
+    expect(page.locator("#narrowed")).to_contain_text("Sensor Type 2D Camera, not every value")
 
     page.get_by_role("button", name="Make a team from these robots").click()
-    # The team `teleop-ui fleet -o` writes for the same files, solved by the command line.
+    expect(page.locator("#team-name")).to_have_value(
+        "Fleet: arm_gripper, diff_drive_lidar, quadrotor"
+    )
+    # What the robots have (the arm: its two motion controls, and the smallest sensor
+    # selection the rules allow, not all ten sensor types and 1..50 sensors), solved by the
+    # command line.
     written = tmp_path / "fleet.yaml"
-    assert run_cli("fleet", ROOT / "examples", "-o", written).returncode == 0
+    written.write_text(
+        "name: robots\nteam:\n"
+        "  UAV: {motion_control: [Flight], sensor_type: [2D Camera], sensor_count: 1}\n"
+        "  UGV: {motion_control: [Driving, Waypoint], sensor_type: [LIDAR], sensor_count: 1}\n"
+        "  Manipulator: {motion_control: [Joint, End Effector], sensor_type: [2D Camera],"
+        " sensor_count: 1}\n",
+        encoding="utf-8",
+    )
     expected = json.loads(run_cli("solve", written, "--format", "json").stdout)["totals"]
     expect(page.locator("#total-robots")).to_have_text(str(expected["valid_robots"]))
     expect(page.locator("#total-configurations")).to_have_text(str(expected["ui_configurations"]))
@@ -556,7 +576,8 @@ CONTROLS = """() => {
   const named = (e) => {
     if (e.matches("a, button")) { return e.textContent.trim() !== ""; }
     if (e.matches("pre")) { return true; }
-    return e.labels.length > 0 || e.hasAttribute("aria-label");
+    // A chart's value (an SVG group) has no labels: its aria-label names it.
+  return (e.labels ? e.labels.length > 0 : false) || e.hasAttribute("aria-label");
   };
   return controls.map((e) => ({ index: e.dataset.control, named: named(e),
                                  what: e.outerHTML.slice(0, 120) }));
@@ -602,6 +623,10 @@ def test_every_control_of_every_view_is_reached_by_keyboard_and_labelled(
         if path == "/":
             # What-if arrives after the page's load (its Apply links are controls too).
             expect(page.locator("#whatif-section")).to_have_attribute("data-state", "answered")
+            # ... and the radar chart (its values are stops of the keyboard).
+            expect(page.locator("form[data-selection]")).to_have_attribute(
+                "data-settled", re.compile(".")
+            )
         controls = page.evaluate(CONTROLS)
         assert [c["what"] for c in controls if not c["named"]] == [], path
         reached = tab_order(page, len(controls) + 10)
@@ -658,20 +683,73 @@ def test_values_the_rules_exclude_are_shown_disabled_with_the_reason(
     expect(flight).to_be_enabled()
 
 
+# The smallest text of the radar chart beside the totals, in CSS pixels as the page shows it.
+RADAR_TEXT_PX = """(svg) => {
+  const scale = svg.getBoundingClientRect().width / svg.viewBox.baseVal.width;
+  const sizes = [...svg.querySelectorAll("text")].map(
+    (text) => parseFloat(text.getAttribute("font-size")) * scale);
+  return sizes.length ? Math.min(...sizes) : 0;
+}"""
+
+
+def test_the_radar_beside_the_totals_reads_at_a_desk_and_on_a_phone_and_says_each_value(
+    start_studio: StartStudio, page: Page
+) -> None:
+    server = start_studio("case3")
+    page.set_viewport_size({"width": 1280, "height": 800})
+    page.goto(server.url)
+    form = page.locator("form[data-selection]")
+    expect(form).to_have_attribute("data-settled", re.compile("."))
+    radar = page.locator("#radar svg")
+    assert radar.evaluate(RADAR_TEXT_PX) >= 11
+
+    # The keyboard reaches each type's values on each spoke and each legend entry, and the
+    # page says the one it is on (4 types x 4 spokes, 4 legend entries).
+    said: dict[str, str] = {}
+    for _ in range(400):  # from the top of the page, past the selection's controls
+        page.keyboard.press("Tab")
+        label = page.evaluate(
+            "() => document.activeElement.closest('#radar') ? "
+            "document.activeElement.getAttribute('aria-label') : null"
+        )
+        if label is None and said:
+            break
+        if label is not None:
+            expect(page.locator("#radar-value")).to_have_text(label)
+            said[label] = label
+    assert len(said) == 20
+    assert "UAV: Robot Motion Control: Flight, Waypoint" in said
+    assert "Humanoid: No. of Sensors: 1..25" in said
+    assert "Mobile Manipulator: 312 valid robots, 48 UI configurations" in said
+    # The pointer too: over a legend entry, its type's counts.
+    page.get_by_role("img", name="UGV: 80 valid robots, 12 UI configurations").hover()
+    expect(page.locator("#radar-value")).to_have_text("UGV: 80 valid robots, 12 UI configurations")
+
+    # On a phone the chart keeps its size, in a frame of its own that scrolls sideways.
+    page.set_viewport_size({"width": 390, "height": 844})
+    assert radar.evaluate(RADAR_TEXT_PX) >= 11
+    assert page.evaluate("() => document.documentElement.scrollWidth") <= 390
+
+
 def test_the_radar_chart_is_redrawn_for_the_new_selection_and_an_export_reads_back(
     start_studio: StartStudio, page: Page, tmp_path: Path
 ) -> None:
     server = start_studio("case2")
     page.goto(server.url)
-    radar = page.locator("#radar")
-    expect(radar).to_have_attribute("src", re.compile("UGV.sensor_count.max=10"))
+    figure = page.locator("#radar-figure")
+    expect(figure).to_have_attribute("data-query", re.compile("UGV.sensor_count.max=10"))
     page.locator('fieldset[data-key="UGV.sensor_type"]').get_by_label(
         "Speaker", exact=True
     ).uncheck()
     # UGV: 2 motion controls x 3 sensor types x 10 counts (Microphone keeps audio).
     expect(page.locator("#total-robots")).to_have_text("90")
-    expect(radar).not_to_have_attribute("src", re.compile("UGV.sensor_type=Speaker"))
-    assert radar.evaluate("(image) => image.decode().then(() => image.naturalWidth)") > 0
+    expect(figure).not_to_have_attribute("data-query", re.compile("UGV.sensor_type=Speaker"))
+    expect(figure).to_have_attribute("data-state", "drawn")
+    robots = page.locator("#total-robots").inner_text()
+    configurations = page.locator("#total-configurations").inner_text()
+    expect(page.locator("#radar svg > title")).to_have_text(
+        f"Case 2: {robots} valid robots, {configurations} UI configurations"
+    )
     chosen = parse_qsl(urlsplit(page.url).query)
 
     # The exported file, imported again, is the same selection.
@@ -799,7 +877,7 @@ def test_the_chart_says_it_is_being_redrawn_until_it_shows_the_new_selection(
         else:
             held.append(route)
 
-    page.route("**/api/charts/radar.svg?*", hold)
+    page.route("**/api/charts/panel.svg?*", hold)
     page.locator('fieldset[data-key="Humanoid.motion_control"]').get_by_label(
         "Walking", exact=True
     ).uncheck()
@@ -820,10 +898,11 @@ def test_the_chart_says_it_is_being_redrawn_until_it_shows_the_new_selection(
     expect(form).to_have_attribute("data-settled", current or "")
     assert figure.get_attribute("data-query") == current
     # The chart drawn is the selection's: its title gives the totals the page shows.
-    status, svg = server.get(page.locator("#radar").get_attribute("src") or "")
+    status, svg = server.get(f"/api/charts/radar.svg?{current}")
     assert status == 200
     title = ElementTree.fromstring(svg).findtext("{http://www.w3.org/2000/svg}title")
     assert title == "Case 3: 722 valid robots, 90 UI configurations"
+    expect(page.locator("#radar svg > title")).to_have_text(title)
     expect(page.locator("#total-configurations")).to_have_text("90")
 
 

@@ -44,21 +44,29 @@
     // still answering an older selection says so itself (the chart is marked as being redrawn).
     const answered = { totals: current, chart: null, findings: null };
     const figure = document.getElementById("radar-figure");
-    const image = document.getElementById("radar");
+    // The radar chart is drawn into the page (inline SVG, not an image): each type's values on
+    // each spoke and each legend entry is a stop of the keyboard, and what the pointer is over
+    // or the keyboard is on is said below the chart (#radar-value).
+    const holder = document.getElementById("radar");
+    let drawing = 0;
     const summary = document.getElementById("check-summary");
     if (summary && summary.dataset.query) {
       answered.findings = current;
     }
-    if (figure && image) {
-      image.addEventListener("load", () => drawn(true));
-      image.addEventListener("error", () => drawn(false));
+    if (figure && holder) {
+      const say = (event) => {
+        const stop = event.target.closest && event.target.closest("[aria-label]");
+        if (stop && holder.contains(stop) && stop !== holder) {
+          setText("radar-value", stop.getAttribute("aria-label"));
+        }
+      };
+      holder.addEventListener("focusin", say);
+      holder.addEventListener("mouseover", say);
       if (figure.hidden) {
         answered.chart = current;
-      } else if (image.complete && image.naturalWidth > 0) {
-        answered.chart = current;
       } else {
-        image.dataset.want = current;
         chartState("drawing", "Drawing the chart…");
+        draw(figure.dataset.query);
       }
     } else {
       answered.chart = current;
@@ -408,34 +416,50 @@
     }
 
     function redraw(query) {
-      if (!figure || !image) {
+      if (!figure || !holder) {
         answer("chart", query);
         return;
       }
       figure.hidden = false;
-      if (figure.dataset.query === query && image.complete && new URL(image.src).search.slice(1) === query) {
-        chartState("drawn", ""); // back to the chart on show (undo): nothing to load
-        answer("chart", query);
+      if (figure.dataset.query === query && figure.dataset.state === "drawn" && holder.querySelector("svg")) {
+        answer("chart", query); // the chart on show already is this selection's (undo)
         return;
       }
-      image.dataset.want = query;
       chartState(figure.dataset.query ? "stale" : "drawing", "Redrawing the chart for this selection…");
-      image.src = "/api/charts/radar.svg?" + query;
+      draw(query);
     }
 
-    function drawn(ok) {
-      const want = image.dataset.want;
-      if (want === undefined || new URL(image.src).search.slice(1) !== want) {
+    // The panel's radar chart of `query`, fetched and put in the page (the studio escapes
+    // every text in it; the page's policy runs no script from it); a newer one replaces it.
+    async function draw(query) {
+      const mine = ++drawing;
+      let svg = null;
+      try {
+        const response = await fetch("/api/charts/panel.svg?" + query);
+        if (response.ok) {
+          const parsed = new DOMParser().parseFromString(await response.text(), "image/svg+xml");
+          if (parsed.documentElement.localName === "svg") {
+            svg = document.importNode(parsed.documentElement, true);
+          }
+        }
+      } catch (error) {
+        svg = null;
+      }
+      if (mine !== drawing) {
         return; // an older chart, replaced since
       }
-      delete image.dataset.want;
-      figure.dataset.query = want;
-      if (ok) {
+      figure.dataset.query = query;
+      if (svg) {
+        // Sized by the page (its viewBox keeps its shape), not in points.
+        svg.removeAttribute("width");
+        svg.removeAttribute("height");
+        holder.replaceChildren(svg);
+        setText("radar-value", "");
         chartState("drawn", "");
       } else {
         chartState("failed", "The chart could not be drawn (the studio's console says why).");
       }
-      answer("chart", want);
+      answer("chart", query);
     }
 
     function chartState(state, text) {
