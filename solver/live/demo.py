@@ -369,8 +369,10 @@ class OperatorStation:
         self.process.announce()
 
     def select(self, robot: str, control: str) -> None:
-        self.control.write(self.process.string(control))
-        self.robot.write(self.process.string(robot))
+        from solver.live.sources.ros2 import write  # the GIL let go: see there
+
+        write(self.control, self.process.string(control))
+        write(self.robot, self.process.string(robot))
 
     def answer(self) -> "Answer | None":
         """The newest answer since the last call (``None`` if none came), decoded as the

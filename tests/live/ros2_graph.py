@@ -17,6 +17,7 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
+from solver.live.sources.ros2 import write
 from tests.conftest import ROOT
 from tests.live.fleet import drone_text, rover_text
 
@@ -140,7 +141,7 @@ class Operator:
         self.answers: list[Any] = []
 
     def activate(self, robot: str) -> None:
-        self.writer.write(self.String(robot))
+        write(self.writer, self.String(robot))  # the GIL let go: the watcher runs here too
 
     def control(self, motion_control: str) -> None:
         """Select the motion control to answer for (an empty string clears it)."""
@@ -161,7 +162,7 @@ class Operator:
                 Topic(self.participant, f"rt/teleop_ui/{key}", self.String),
                 qos=LATCHED,
             )
-        self.writers[key].write(self.String(value))
+        write(self.writers[key], self.String(value))
 
     def answer(self) -> Any:
         """The newest answer read so far (``None`` before any)."""

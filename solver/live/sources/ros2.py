@@ -136,6 +136,41 @@ def ros_type(dds: str) -> str:
     return dds
 
 
+def write(writer: Any, sample: Any) -> None:
+    """``writer.write(sample)``, with the GIL let go while DDS delivers it.
+
+    cyclonedds' ``DataWriter.write`` calls ``dds_write`` from its C extension holding the GIL,
+    and ``dds_write`` delivers to this process's readers itself, waiting for a reader's
+    listener that is running. A listener is Python (:meth:`DdsGraph._changed`): a DDS thread
+    running it for another participant's sample waits for the GIL, so the two threads would
+    wait for each other for ever (seen: a forged answer arriving while the watcher wrote its
+    own). Called through ctypes, which lets the GIL go for the call, ``dds_write`` takes the
+    same serialized sample (cyclonedds' own ``Sample`` container: bytes and their size) and
+    the listener runs. A cyclonedds without these parts gets its own ``write``.
+    """
+    import ctypes
+
+    from cyclonedds.core import DDSException
+    from cyclonedds.internal import DDS
+    from cyclonedds.topic import Sample
+
+    version = getattr(writer, "_use_version_2", MISSING)
+    reference = getattr(writer, "_ref", None)
+    if version is MISSING or not isinstance(reference, int):
+        writer.write(sample)
+        return
+    data = sample.serialize(use_version_2=version)
+    data = data.ljust((len(data) + 3) & ~3, b"\0")  # as DataWriter.write pads it
+    buffer = ctypes.create_string_buffer(data, len(data))
+    container = Sample(ctypes.cast(buffer, ctypes.c_void_p), len(data))
+    dds_write = DDS._dll_handle.dds_write  # the library cyclonedds loaded
+    dds_write.restype = ctypes.c_int32
+    dds_write.argtypes = [ctypes.c_int32, ctypes.c_void_p]
+    code = dds_write(reference, ctypes.byref(container))
+    if code < 0:
+        raise DDSException(code, f"Occurred while writing sample in {writer!r}")
+
+
 @dataclass(frozen=True, slots=True)
 class _Endpoint:
     topic: str
@@ -441,18 +476,18 @@ class DdsGraph:
             topic = Topic(self.participant, dds_topic(key), self.string_type)
             writer = DataWriter(self.participant, topic, qos=_latched())
             self._selection_writers[key] = writer
-        writer.write(self.string_type(text))
+        write(writer, self.string_type(text))
 
     def _write(self, text: str) -> None:
         if text != self._written:
-            self._answer_writer.write(self.string_type(text))
+            write(self._answer_writer, self.string_type(text))
             self._written = text
 
     def announce(self, value: dict[str, Any]) -> None:
         """Publish who this watcher is on ``/teleop_ui/watchers`` (gone with the participant)."""
         text = json.dumps(value, sort_keys=True)
         if text != self._announcement:
-            self._announce_writer.write(self.string_type(text))
+            write(self._announce_writer, self.string_type(text))
             self._announcement = text
 
     def close(self) -> None:
