@@ -14,6 +14,7 @@ from __future__ import annotations
 
 from collections.abc import Awaitable, Callable
 from typing import TYPE_CHECKING, Any
+from urllib.parse import urlencode
 
 from starlette.concurrency import run_in_threadpool
 from starlette.datastructures import UploadFile
@@ -613,6 +614,19 @@ async def whatif(request: Request) -> Response:
     return JSONResponse(data, status_code=409 if data.get("superseded") else 200)
 
 
+async def whatif_apply(request: Request) -> Response:
+    """Apply a what-if change to the rule set (`change`, as a suggestion's `rules_change`
+    names it): the changed rule set is kept as an uploaded one is.
+    ---
+    summary: Apply a what-if change to the rule set
+    responses:
+      200: {description: "`query`: the same selection under the changed rule set"}
+      422: {description: located faults}
+    """
+    pairs = await run_in_threadpool(_studio(request).whatif_apply, _pairs(request))
+    return JSONResponse({"query": urlencode(pairs)})
+
+
 async def configuration_map(request: Request) -> Response:
     """The configuration map: a row per component, a column per configuration and the default.
     ---
@@ -689,6 +703,7 @@ def routes() -> list[BaseRoute]:
         Route("/api/model.uvl", model_uvl),
         Route("/api/map", configuration_map),
         Route("/api/whatif", whatif),
+        Route("/api/whatif/apply", whatif_apply, methods=["POST"]),
         Route("/api/designs", designs),
         Route("/api/designs/diff", design_diff),
         Route("/api/charts/{kind}.svg", chart),

@@ -714,6 +714,14 @@ async def upload_rules(request: Request) -> Response:
     return RedirectResponse(f"/?{_query([('rules', source.id)])}", status_code=303)
 
 
+async def whatif_apply(request: Request) -> Response:
+    """What-if's change to the rule set applied (a page without scripts posts here): the
+    changed rule set kept, and the page of the same selection under it."""
+    page = _page(request, "What-if")
+    pairs = await run_in_threadpool(page.studio.whatif_apply, page.pairs)
+    return RedirectResponse(f"/?{_query(pairs)}", status_code=303)
+
+
 # -- designs (``--designs DIR``) ---------------------------------------------------------------
 
 
@@ -993,6 +1001,7 @@ def routes() -> list[BaseRoute]:
         Route("/designs/open", design_open),
         Route("/team", upload_team, methods=["POST"]),
         Route("/rules", upload_rules, methods=["POST"]),
+        Route("/whatif/apply", whatif_apply, methods=["POST"]),
         Route("/fleet", fleet),
         Route("/fleet", fleet_upload, methods=["POST"]),
         Route("/fleet/folders/{index}", fleet_folder, methods=["POST"]),

@@ -11,6 +11,7 @@ Not here: HTTP and HTML (:mod:`solver.studio.api`, :mod:`solver.studio.pages`).
 from __future__ import annotations
 
 import copy
+import dataclasses
 import functools
 import io
 import os
@@ -43,6 +44,7 @@ if TYPE_CHECKING:
     from solver.core.partition import Configuration
     from solver.core.team import TypeSelection
     from solver.studio.live import LiveFeed
+    from solver.studio.whatif import Suggestion
 
 __all__ = [
     "CHART_KINDS",
@@ -112,6 +114,17 @@ def faults_data(error: SolverError) -> dict[str, Any]:
             for fault in error.faults
         ],
     }
+
+
+def _apply_query(suggestion: Suggestion, chosen: Chosen) -> str:
+    """The query that applies a what-if suggestion: the changed selection's own, or (a change
+    to the rule set, applied by ``POST /whatif/apply``) the page's selection and the change."""
+    from urllib.parse import urlencode
+
+    if suggestion.rules_change:
+        pairs = query_of(suggestion.team, chosen.source.id)
+        return urlencode([*pairs, ("change", suggestion.rules_change)])
+    return urlencode(query_of(suggestion.team, chosen.source.id))
 
 
 def _first(pairs: Pairs, name: str) -> str | None:
@@ -274,8 +287,6 @@ class Studio:
         were not, and those tried but not counted (the first :data:`MAX_SUGGESTIONS`).
         ``{"superseded": true}`` when a newer what-if was asked while this one waited (it
         is not made: :meth:`Workspace.kept_whatif`)."""
-        from urllib.parse import urlencode
-
         from solver.studio.whatif import what_if
 
         chosen = self.chosen(pairs)
@@ -301,7 +312,8 @@ class Studio:
                         "ui_configurations": totals.ui_configurations
                         - suggestion.configurations_saved,
                     },
-                    "query": urlencode(query_of(suggestion.team, chosen.source.id)),
+                    "query": _apply_query(suggestion, chosen),
+                    "rules_change": suggestion.rules_change,
                 }
             )
         return {
@@ -321,6 +333,20 @@ class Studio:
             "found": len(found.suggestions),
             "suggestions": suggestions,
         }
+
+    def whatif_apply(self, pairs: Pairs) -> list[tuple[str, str]]:
+        """Apply what-if's change to the rule set named by ``change``
+        (:attr:`solver.studio.whatif.RuleChange.key`): the changed rule set is kept as an
+        uploaded one is (:meth:`Workspace.add_rules`, its file in the private folder), and the
+        query that selects the same team under it is answered."""
+        from solver.studio.whatif import changed_rules_text
+
+        chosen = self.chosen(pairs)
+        team = chosen.require()
+        text = changed_rules_text(chosen.rules, _first(pairs, "change") or "")
+        stem = Path(chosen.rules.file).stem
+        source = self.workspace.add_rules(Upload(f"{stem}-whatif.yaml", text.encode()))
+        return query_of(dataclasses.replace(team, rules=source.rules), source.id)
 
     def robots_data(self, pairs: Pairs) -> dict[str, Any]:
         """One page of ``teleop-ui robots --format jsonl`` (of one configuration with

@@ -22,10 +22,12 @@
     // Undo and Redo walk the browser's history of this page's changes, as Back and Forward do:
     // one history, whichever way a step is taken. Each change is an entry numbered "index";
     // Undo stops at the entry the page was loaded at, Redo at the newest change.
+    // A change to the rule set (what-if's) loads the page anew: the entry it pushed says where
+    // Undo stops (floor) and Redo (top), so Undo walks back into the rule set before.
     const state = window.history.state;
     let index = state && Number.isInteger(state.index) ? state.index : 0;
-    const floor = index;
-    let top = index;
+    const floor = state && Number.isInteger(state.floor) ? state.floor : index;
+    let top = state && Number.isInteger(state.top) ? state.top : index;
     const undo = document.getElementById("undo");
     const redo = document.getElementById("redo");
     const historyButtons = document.querySelector("[data-history]");
@@ -36,7 +38,8 @@
     if (initial) {
       shown = initial;
     }
-    window.history.replaceState({ query: current, index }, "", "/?" + withView(current));
+    window.history.replaceState(entry(current), "", "/?" + withView(current));
+    buttons(); // a page loaded by a change to the rule set may step back at once
 
     // What each part of the page shows, by the selection it answers: the totals, the radar
     // chart and the check's findings. When all three answer the selection the page holds, the
@@ -107,6 +110,12 @@
     const suggestions = document.getElementById("whatif");
     if (suggestions) {
       suggestions.addEventListener("click", (event) => {
+        const rulesChange = event.target.closest("button[data-apply-rules]");
+        if (rulesChange) {
+          event.preventDefault();
+          applyRules(rulesChange.dataset.applyRules);
+          return;
+        }
         const link = event.target.closest("a[data-apply]");
         if (!link) {
           return;
@@ -142,13 +151,43 @@
         index = entry.index;
       }
       if (new URLSearchParams(query).get("rules") !== form.elements.rules.value) {
-        window.location.assign("/?" + query);
+        window.location.reload(); // this entry, under its own rule set (its state kept)
         return;
       }
       apply(query);
       current = selectionQuery();
       ask(current);
     });
+
+    function entry(query) {
+      return { query, index, floor, top };
+    }
+
+    // What-if's change to the rule set: the studio keeps the changed rule set (as an upload)
+    // and answers the same selection under it; that is one new entry of the history, and the
+    // page is loaded anew under it (Back and Undo come back to this entry).
+    async function applyRules(query) {
+      let data = null;
+      try {
+        const response = await fetch("/api/whatif/apply?" + query, {
+          method: "POST",
+          headers: { accept: "application/json" },
+        });
+        data = await response.json();
+        if (!response.ok) {
+          setText("whatif-summary", "Not applied: " + (data.error || response.status));
+          return;
+        }
+      } catch (error) {
+        setText("whatif-summary", "Not applied: the studio did not answer");
+        return;
+      }
+      top = index + 1;
+      window.history.replaceState(entry(current), "", "/?" + withView(current));
+      index = top;
+      window.history.pushState(entry(data.query), "", "/?" + withView(data.query));
+      window.location.reload();
+    }
 
     function changed() {
       const query = selectionQuery();
@@ -158,7 +197,7 @@
       current = query;
       index += 1;
       top = index;
-      window.history.pushState({ query, index }, "", "/?" + withView(query));
+      window.history.pushState(entry(query), "", "/?" + withView(query));
       ask(query);
     }
 
@@ -570,6 +609,11 @@
         : `No single change saves a UI configuration (${text}).`;
     }
 
+    // A change of a count as the suggestions show it: -32, +12 (removing a constraint gains).
+    function signed(change) {
+      return change > 0 ? `+${change}` : `-${-change}`;
+    }
+
     function suggestionItem(found) {
       const item = document.createElement("li");
       item.dataset.saved = String(found.ui_configurations_saved);
@@ -578,13 +622,28 @@
       change.className = "whatif-change";
       change.textContent = found.change;
       const saved = document.createElement("strong");
-      saved.textContent = `-${found.ui_configurations_saved} configurations`;
-      const link = document.createElement("a");
-      link.href = "/?" + found.query;
-      link.dataset.apply = found.query;
-      link.setAttribute("aria-label", "Apply: " + found.change);
-      link.textContent = "Apply";
-      item.append(change, ": ", saved, `, -${found.valid_robots_lost} valid robots `, link);
+      saved.textContent = `${signed(-found.ui_configurations_saved)} configurations`;
+      let link;
+      if (found.rules_change) {
+        // A change to the rule set is kept by the studio: a form, posted (or by applyRules).
+        link = document.createElement("form");
+        link.className = "whatif-apply";
+        link.method = "post";
+        link.action = "/whatif/apply?" + found.query;
+        const button = document.createElement("button");
+        button.type = "submit";
+        button.dataset.applyRules = found.query;
+        button.setAttribute("aria-label", "Apply: " + found.change);
+        button.textContent = "Apply";
+        link.append(button);
+      } else {
+        link = document.createElement("a");
+        link.href = "/?" + found.query;
+        link.dataset.apply = found.query;
+        link.setAttribute("aria-label", "Apply: " + found.change);
+        link.textContent = "Apply";
+      }
+      item.append(change, ": ", saved, `, ${signed(-found.valid_robots_lost)} valid robots `, link);
       return item;
     }
 
