@@ -634,6 +634,7 @@ async def configuration_map(request: Request) -> Response:
     parameters:
       - {name: component, in: query, schema: {type: string}, description: "CHARACTERISTIC:NAME"}
       - {name: pick, in: query, schema: {type: integer}, description: "compared (repeated)"}
+      - {name: sort, in: query, schema: {type: string, enum: [number, robots, type]}}
     responses:
       200: {description: "`rows`, `columns` (each with `cells`), `compared`"}
       422: {description: located faults}

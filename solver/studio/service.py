@@ -61,6 +61,9 @@ Pairs = Sequence[tuple[str, str]]
 MAX_PAGE = 500
 # Columns of the configuration map at a time, and configurations compared at once, at most.
 MAX_MAP_COLUMNS = 500
+# How the map's columns may be ordered (``sort=``), the first the default: by number, by the
+# valid robots served (most first), by kinematic type (the rules' order, then number).
+MAP_SORTS = ("number", "robots", "type")
 MAX_PICKED = 12
 # What-if suggestions answered at most (the best), and the seconds its changes may take to try.
 MAX_SUGGESTIONS = 10
@@ -233,7 +236,8 @@ class Studio:
         """The configuration map (as FeatureIDE's): a row per component of the rules (by the
         names the rules give them), a column per configuration and the default one last; a
         cell says what the configuration's component serves. ``component=CHARACTERISTIC:NAME``
-        keeps the columns that have that component; ``offset`` pages the columns
+        keeps the columns that have that component; ``sort`` orders them (:data:`MAP_SORTS`,
+        the default one always last); ``offset`` pages the columns
         (:data:`MAX_MAP_COLUMNS` at a time); ``pick=N`` (repeated, at most
         :data:`MAX_PICKED`) compares those configurations, the default one too."""
         chosen = self.chosen(pairs)
@@ -249,11 +253,9 @@ class Studio:
             )
         # Filtered on the configurations themselves, and only the page shown (and those
         # compared) written out: a team of 500,000 configurations is not built whole.
-        kept: list[Configuration | None] = list(solution.configurations)
-        if wanted:
-            place, name = _component_place(rules, wanted)
-            kept = [c for c in kept if c is not None and c.components[place].name == name]
-        kept.append(None)  # the default configuration, last: it has every component
+        order = _map_sort(pairs)
+        # The default configuration, last whatever the order: it has every component.
+        kept: list[Configuration | None] = [*_map_order(rules, solution, wanted, order), None]
         offset = _whole(pairs, "offset", 0)
         columns = [_column(solution, c) for c in kept[offset : offset + MAX_MAP_COLUMNS]]
         picked = _picked(pairs)
@@ -265,6 +267,8 @@ class Studio:
             "offset": offset,
             "limit": MAX_MAP_COLUMNS,
             "component": wanted,
+            "sort": order,
+            "sorts": list(MAP_SORTS),
             "default_configuration": solution.default_configuration,
             "rows": [{"characteristic": c, "component": n} for c, n in rows],
             "columns": [
@@ -846,6 +850,34 @@ def default_data(solution: Solution) -> dict[str, Any]:
             for c in solution.rules.characteristics
         ],
     }
+
+
+def _map_sort(pairs: Pairs) -> str:
+    """The map's order ``sort=`` names (:data:`MAP_SORTS`; by number when none)."""
+    order = _first(pairs, "sort") or MAP_SORTS[0]
+    if order not in MAP_SORTS:
+        raise InputError.at(
+            SELECTION_FILE,
+            f"no map order {shown_text(order)}; sort by one of {', '.join(MAP_SORTS)}",
+            path="sort",
+        )
+    return order
+
+
+def _map_order(rules: RuleSet, solution: Solution, wanted: str, order: str) -> list[Configuration]:
+    """The configurations that have the component ``wanted`` (all when none), in ``order``:
+    by number, by the valid robots served (most first, then number) or by kinematic type (the
+    rules' order of the types, then number). The sorts are stable on the numbered list."""
+    kept = list(solution.configurations)
+    if wanted:
+        place, name = _component_place(rules, wanted)
+        kept = [c for c in kept if c.components[place].name == name]
+    if order == "robots":
+        kept.sort(key=lambda c: -c.robots)
+    elif order == "type":
+        types = {str(value): i for i, value in enumerate(rules.key.values)}
+        kept.sort(key=lambda c: types.get(c.kinematic_type, len(types)))
+    return kept
 
 
 def _component_place(rules: RuleSet, wanted: str) -> tuple[int, str]:

@@ -1,6 +1,7 @@
 """The configuration map in a real browser: Case 3's configurations as columns (the default
-one too), filtered by a component, the default opened, several compared by the components'
-names in the rules. Expected figures are the command line's (`solve --list --format json`)."""
+one too), filtered by a component, sorted by the robots served, the default opened, several
+compared by the components' names in the rules. Expected figures are the command line's
+(`solve --list --format json`)."""
 
 from __future__ import annotations
 
@@ -131,3 +132,39 @@ def test_the_map_writes_out_only_the_columns_of_the_page_it_shows(
         )
     finally:
         workspace.close()
+
+
+def test_the_map_of_case_3_sorted_by_robots_puts_the_configuration_serving_most_first(
+    start_studio: StartStudio, page: Page
+) -> None:
+    cli = listed("case3")
+    robots = {c["number"]: c["valid_robots"] for c in cli["configurations"]}
+    # Of those serving the most, the lowest number first (ties keep the numbered order).
+    most = min(robots, key=lambda number: (-robots[number], number))
+    server = start_studio("case3")
+    page.goto(server.url)
+    page.get_by_role("link", name="Map", exact=True).click()
+    page.get_by_role("link", name="valid robots served (most first)").click()
+    expect(page.locator(".map-sort strong")).to_have_text("valid robots served (most first)")
+    columns = page.locator("#map thead tr").first.locator("th[data-configuration]")
+    expect(columns).to_have_count(len(robots) + 1)
+    numbers = [
+        int(n or 0)
+        for n in columns.evaluate_all("(cells) => cells.map((cell) => cell.dataset.configuration)")
+    ]
+    counts = [int(t) for t in page.locator("#map thead tr").nth(2).locator("td").all_inner_texts()]
+    assert numbers[0] == most
+    assert numbers[-1] == cli["default_configuration"]
+    assert counts[:-1] == [robots[n] for n in numbers[:-1]]
+    assert counts == sorted(counts, reverse=True)
+    assert sorted(numbers[:-1]) == sorted(robots)
+
+    # The API answers the same order; an order it does not know is refused, naming those it does.
+    query = page.url.split("?", 1)[1]
+    api = server.json(f"/api/map?{query}")
+    assert [c["number"] for c in api["columns"]] == numbers
+    status, body = server.get(f"/api/map?{query.replace('sort=robots', 'sort=biggest')}")
+    assert status == 422
+    assert "sort by one of number, robots, type" in body.decode()
+    page.goto(server.at(f"/map?{query.replace('sort=robots', 'sort=biggest')}"))
+    expect(page.locator("main")).to_contain_text("no map order 'biggest'")
