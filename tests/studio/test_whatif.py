@@ -180,6 +180,8 @@ def test_the_top_suggestion_applied_gives_its_counts_and_undo_restores_case_3(
     page.goto(server.url)
     expect(page.locator("#total-configurations")).to_have_text("102")
     expect(page.locator("#whatif-summary")).to_contain_text("61 of 61 changes tried")
+    expect(page.locator("#whatif")).to_contain_text(", 0 valid robots")  # a merge: no sign
+    expect(page.locator("#whatif")).not_to_contain_text("-0 valid robots")
     top = page.locator("#whatif li").first
     expect(top).to_be_visible()
     saved = int(top.get_attribute("data-saved") or "")
@@ -237,6 +239,12 @@ def test_the_selection_page_is_served_without_what_if_which_is_asked_for_after(
     assert status == 200
     assert "61 of 61 changes tried" in body.decode()
     assert "data-apply" in body.decode()
+    # A merge loses no robot: "0 valid robots", never "-0" (the page's script writes the same).
+    assert "-0 valid robots" not in body.decode()
+    assert re.search(
+        r"merge Sensor Type: [^<]*</span>: <strong>-\d+ configurations</strong>, 0 valid robots",
+        body.decode(),
+    )
 
 
 def test_quick_changes_ask_for_one_what_if_once_the_selection_rests(

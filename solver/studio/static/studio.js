@@ -611,7 +611,7 @@
 
     // A change of a count as the suggestions show it: -32, +12 (removing a constraint gains).
     function signed(change) {
-      return change > 0 ? `+${change}` : `-${-change}`;
+      return change > 0 ? `+${change}` : change < 0 ? `-${-change}` : "0";
     }
 
     function suggestionItem(found) {
