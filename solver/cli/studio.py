@@ -6,7 +6,7 @@ import argparse
 import sys
 from typing import Any
 
-from solver.cli._common import add_master_options
+from solver.cli._common import add_master_options, add_ros2_options
 
 
 def register(subparsers: Any) -> None:
@@ -53,12 +53,7 @@ def register(subparsers: Any) -> None:
         help="a folder of designs (team files) the Designs page saves into, lists, reopens, "
         "compares and deletes",
     )
-    parser.add_argument(
-        "--ros2", action="store_true", help="the Live page follows a ROS 2 graph on DDS"
-    )
-    parser.add_argument(
-        "--domain", type=int, default=None, metavar="N", help="with --ros2: the DDS domain id"
-    )
+    add_ros2_options(parser, ros2_help="the Live page follows a ROS 2 graph on DDS")
     add_master_options(parser, required_help="the Live page follows this ROS 1 master")
     parser.add_argument(
         "--profile",

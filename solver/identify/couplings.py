@@ -23,6 +23,7 @@ Not here: what a gripper or a limb is (:mod:`solver.identify.actuation`,
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 
@@ -56,7 +57,7 @@ class Couplings:
             return False
         return joint.actuated or joint.name in self._standing
 
-    @property
+    @functools.cached_property
     def _standing(self) -> frozenset[str]:
         return frozenset(self.stand_ins.values())
 

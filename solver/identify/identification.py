@@ -290,8 +290,9 @@ def identify(
         from solver.identify.readers.bags import read_bag_topics
 
         sources += [TopicSource(f"bag {Path(b).name}", read_bag_topics(b)) for b in bags]
-    if teleop is None and look_beside and description_beside(file).is_file():
-        teleop = description_beside(file)
+    beside = description_beside(file) if teleop is None and look_beside else None
+    if beside is not None and beside.is_file():
+        teleop = beside
     declared, flaws = _description(teleop)
     return identify_urdf(
         text,

@@ -102,6 +102,8 @@ class LiveLayouts:
         # (namespace, file name) -> the path written for the robot as it is now, and its
         # layout (for the team layout), with the number of the write that made it.
         self._written: dict[tuple[str, str], tuple[Path, dict[str, Any], int]] = {}
+        # Robot states whose layout was refused (a warning said why): not tried again each poll.
+        self._refused: set[tuple[str, str]] = set()
         self._writes = 0
         # Every file written while the watcher runs, and its size now (the bound counts them).
         self._sizes: dict[Path, int] = {}
@@ -137,6 +139,7 @@ class LiveLayouts:
             for key, value in self._written.items()
             if key[0] in robots and key[0] not in changed
         }
+        self._refused = {key for key in self._refused if key[0] in robots and key[0] not in changed}
         for namespace in sorted(changed):
             robot = robots.get(namespace)
             if robot is None:
@@ -174,8 +177,18 @@ class LiveLayouts:
         key = (robot.namespace, name)
         if key in self._written:
             return self._written[key][0]
-        if robot.identification is None:
+        if robot.identification is None or key in self._refused:
             return None
+        path = self._written_now(robot, assignment, key, name)
+        if path is None:
+            self._refused.add(key)
+        return path
+
+    def _written_now(
+        self, robot: LiveRobot, assignment: Assignment, key: tuple[str, str], name: str
+    ) -> Path | None:
+        """The layout written (``None``: refused, and a warning says why)."""
+        assert robot.identification is not None  # _write's caller checked
         try:
             namespace = check_namespace(robot.namespace, robot.namespace)
             target = self.directory.joinpath(*namespace.split("/")[1:], name)

@@ -82,8 +82,6 @@ class LiveState:
     rules: str = ""
     rules_file: str = ""
     answers: dict[str, dict[str, Any]] = field(default_factory=dict)
-    names: tuple[str, ...] = ()
-    team_key: str = ""
 
 
 class LiveFeed:
@@ -171,8 +169,6 @@ class LiveFeed:
                 rules=rules.name,
                 rules_file=rules.file,
                 answers=dict(self._answers),
-                names=rules.names,
-                team_key=rules.team_key,
             )
 
     def events_after(self, seq: int, timeout: float) -> list[dict[str, Any]]:
@@ -332,12 +328,7 @@ class LiveFeed:
         with self._changed:
             if switched.answer is not None:
                 self._keep_answer(
-                    switched.switch.robot,
-                    {
-                        "configuration": switched.answer.get("configuration"),
-                        "watcher": switched.answer.get("watcher"),
-                    },
-                    switched.answer.get("layouts"),
+                    switched.switch.robot, switched.answer, switched.answer.get("layouts")
                 )
         self._record(data)
         return switched

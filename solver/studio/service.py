@@ -296,8 +296,11 @@ class Studio:
         chosen = self.chosen(pairs)
         team = chosen.require()
         key = (chosen.source.id, chosen.selection, "what-if")
-        totals = self.solution(chosen).totals
-        found = self.workspace.kept_whatif(key, lambda: what_if(team, seconds=WHATIF_SECONDS))
+        solution = self.solution(chosen)  # counted once: what-if starts from it
+        totals = solution.totals
+        found = self.workspace.kept_whatif(
+            key, lambda: what_if(team, seconds=WHATIF_SECONDS, base=solution)
+        )
         if found is None:
             return {"team": team.name, "superseded": True}
         suggestions = []

@@ -140,7 +140,7 @@ class WhatIf:
     left_out: tuple[LeftOut, ...] = ()
 
 
-def what_if(team: Team, *, seconds: float | None = None) -> WhatIf:
+def what_if(team: Team, *, seconds: float | None = None, base: Solution | None = None) -> WhatIf:
     """The single changes of ``team`` ranked by configurations saved, then robots lost; tried
     in the rules' order for at most ``seconds`` (``None``: no budget) and at most
     :data:`MAX_TRIED` changes."""
@@ -149,7 +149,7 @@ def what_if(team: Team, *, seconds: float | None = None) -> WhatIf:
     total = _total(team) + len(changes)
     found: list[tuple[tuple[int, int, int], Suggestion]] = []
     left_out: list[LeftOut] = []
-    base = solve(team, count_only=True)
+    base = solve(team, count_only=True) if base is None else base  # the team counted
     tried = 0
     stopped = ""
     # Made one at a time as tried: a domain of 20,000 values is 20,000 changes of its own.

@@ -11,12 +11,13 @@ of the test's own on loopback, for ``--ros2``; ``start_studio`` a studio process
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 
 import pytest
 
 from tests.live.conftest import domain, master, node, own_roscore, solution, web_server
 from tests.live.roscore import Roscore, roscore_available
+from tests.live.watching import WatchProcess
 from tests.studio.conftest import start_studio
 
 # Imported for pytest, which takes the fixtures a conftest module holds.
@@ -28,6 +29,7 @@ __all__ = [
     "shared_roscore",
     "solution",
     "start_studio",
+    "watch_process",
     "web_server",
 ]
 
@@ -43,3 +45,17 @@ def shared_roscore(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Roscore
     core.start()
     yield core
     core.kill()
+
+
+@pytest.fixture
+def watch_process() -> Iterator[Callable[..., WatchProcess]]:
+    """`teleop-ui watch` processes a test starts, each killed at its end."""
+    started: list[WatchProcess] = []
+
+    def start(*args: str, env: dict[str, str] | None = None) -> WatchProcess:
+        started.append(WatchProcess(*args, env=env))
+        return started[-1]
+
+    yield start
+    for process in started:
+        process.kill()

@@ -7,7 +7,7 @@ from the command under test.
 from __future__ import annotations
 
 import json
-from collections.abc import Callable, Iterator
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -27,19 +27,6 @@ from tests.live.fleet import (
 from tests.live.ros2_graph import Domain
 from tests.live.roscore import Roscore, TestNode
 from tests.live.watching import WatchProcess
-
-
-@pytest.fixture
-def watch_process() -> Iterator[Callable[..., WatchProcess]]:
-    started: list[WatchProcess] = []
-
-    def start(*args: str, env: dict[str, str] | None = None) -> WatchProcess:
-        started.append(WatchProcess(*args, env=env))
-        return started[-1]
-
-    yield start
-    for process in started:
-        process.kill()
 
 
 def synced(*robots: str) -> Callable[[dict[str, Any]], bool]:

@@ -10,7 +10,7 @@ import signal
 import socket
 import subprocess
 import sys
-from collections.abc import Callable, Iterator
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -24,20 +24,6 @@ from tests.live.fleet import drone_configuration, put_drone, put_rover, rover_co
 from tests.live.ros2_graph import Domain
 from tests.live.roscore import Roscore, TestNode, free_port, roscore_available, wait_until
 from tests.live.watching import TIMEOUT, WatchProcess
-
-
-@pytest.fixture
-def watch_process() -> Iterator[Callable[..., WatchProcess]]:
-    started: list[WatchProcess] = []
-
-    def start(*args: str, env: dict[str, str] | None = None) -> WatchProcess:
-        started.append(WatchProcess(*args, env=env))
-        return started[-1]
-
-    yield start
-    for process in started:
-        process.kill()
-
 
 # ---- a ROS master ----------------------------------------------------------------------------
 

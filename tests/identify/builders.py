@@ -71,6 +71,10 @@ def model_plugin(name: str, filename: str, params: str = "") -> str:
     return f'  <gazebo><plugin name="{name}" filename="{filename}">{params}</plugin></gazebo>'
 
 
+LASER = gazebo_sensor("laser", "ray", "laser")
+CAMERA = gazebo_sensor("cam", "camera", "cam")
+
+
 def transmission(joint: str, interface: str = "PositionJointInterface") -> str:
     """A ROS 1 ``<transmission>`` driving ``joint`` (a controller commands it)."""
     return (
@@ -443,3 +447,12 @@ def one_motion_gripper() -> RobotText:
         extra='<mimic joint="r1"/>',
     )
     return robot
+
+
+def sensing_rover() -> str:
+    """A four-wheeled rover with a laser, a camera and a differential drive plugin."""
+    robot = ugv()
+    robot.add(LASER)
+    robot.add(CAMERA)
+    robot.add(model_plugin("drive", "libgazebo_ros_diff_drive.so"))
+    return robot.text()

@@ -15,22 +15,10 @@ from solver.solving.solution import solve
 from tests.conftest import TEAMS
 from tests.identify import builders
 
-LASER = builders.gazebo_sensor("laser", "ray", "laser")
-CAMERA = builders.gazebo_sensor("cam", "camera", "cam")
-
-
-def rover_text() -> str:
-    """A four-wheeled rover with a laser, a camera and a differential drive plugin."""
-    robot = builders.ugv()
-    robot.add(LASER)
-    robot.add(CAMERA)
-    robot.add(builders.model_plugin("drive", "libgazebo_ros_diff_drive.so"))
-    return robot.text()
-
 
 def test_a_ugv_gets_a_ui_configuration_per_control_and_sensor_type() -> None:
     solution = solve(load_team(TEAMS / "case2.yaml"))
-    result = identify_urdf(rover_text())
+    result = identify_urdf(builders.sensing_rover())
     found = combinations(result, solution, load_profile())
     # Driven by its plugin; Waypoint guessed from the drive and the lidar.
     assert [dict(c.values) for c in found] == [
@@ -51,7 +39,7 @@ def test_a_ugv_gets_a_ui_configuration_per_control_and_sensor_type() -> None:
 def test_a_quadruped_gets_the_default_configuration_with_the_reason() -> None:
     solution = solve(load_team(TEAMS / "case3.yaml"))
     robot = builders.quadruped()
-    robot.add(CAMERA)
+    robot.add(builders.CAMERA)
     found = combinations(identify_urdf(robot.text()), solution, load_profile())
     assignment = found[0].assignment
     assert assignment.is_default
@@ -62,7 +50,10 @@ def test_a_quadruped_gets_the_default_configuration_with_the_reason() -> None:
 def test_a_value_given_beside_identification_replaces_what_it_found() -> None:
     solution = solve(load_team(TEAMS / "case2.yaml"))
     found = combinations(
-        identify_urdf(rover_text()), solution, load_profile(), {"motion_control": "Waypoint"}
+        identify_urdf(builders.sensing_rover()),
+        solution,
+        load_profile(),
+        {"motion_control": "Waypoint"},
     )
     assert [dict(c.values)["motion_control"] for c in found] == ["Waypoint", "Waypoint"]
     assert [dict(c.values)["sensor_type"] for c in found] == ["LIDAR", "2D Camera"]
@@ -71,7 +62,9 @@ def test_a_value_given_beside_identification_replaces_what_it_found() -> None:
 def test_a_given_name_the_rules_lack_is_refused_as_assign_refuses_it() -> None:
     solution = solve(load_team(TEAMS / "case2.yaml"))
     with pytest.raises(InputError, match="battery"):
-        combinations(identify_urdf(rover_text()), solution, load_profile(), {"battery": "full"})
+        combinations(
+            identify_urdf(builders.sensing_rover()), solution, load_profile(), {"battery": "full"}
+        )
 
 
 def test_the_characteristics_no_combination_has_a_value_for_are_missing() -> None:
@@ -83,5 +76,9 @@ def test_the_characteristics_no_combination_has_a_value_for_are_missing() -> Non
     ]
     assert missing(found, solution) == ("sensor_type", "sensor_count")
     assert (
-        missing(combinations(identify_urdf(rover_text()), solution, load_profile()), solution) == ()
+        missing(
+            combinations(identify_urdf(builders.sensing_rover()), solution, load_profile()),
+            solution,
+        )
+        == ()
     )

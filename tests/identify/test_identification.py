@@ -19,22 +19,11 @@ from solver.ros.description import TeleopDescription, parse_description
 from tests.hostile import FUZZ, mutations
 from tests.identify import builders
 
-LASER = builders.gazebo_sensor("laser", "ray", "laser")
-CAMERA = builders.gazebo_sensor("cam", "camera", "cam")
-
-
-def rover_text() -> str:
-    robot = builders.ugv()
-    robot.add(LASER)
-    robot.add(CAMERA)
-    robot.add(builders.model_plugin("drive", "libgazebo_ros_diff_drive.so"))
-    return robot.text()
-
 
 def test_the_cache_answers_the_same_content_without_identifying_again() -> None:
     cache = IdentificationCache(maxsize=2)
-    first = cache.identify_urdf(rover_text())
-    again = cache.identify_urdf(rover_text().encode("utf-8"))
+    first = cache.identify_urdf(builders.sensing_rover())
+    again = cache.identify_urdf(builders.sensing_rover().encode("utf-8"))
     assert again is first
     assert (cache.hits, cache.misses) == (1, 1)
     cache.identify_urdf(builders.quadrotor().text())
@@ -43,7 +32,7 @@ def test_the_cache_answers_the_same_content_without_identifying_again() -> None:
 
 
 def test_the_content_key_changes_with_every_input() -> None:
-    text = rover_text()
+    text = builders.sensing_rover()
     topics = [TopicSource("master", (Topic("/cmd_vel", "geometry_msgs/Twist"),))]
     keys = {
         content_key(text),
@@ -65,7 +54,7 @@ def test_topics_confirm_the_waypoint_a_description_can_only_guess() -> None:
             ),
         )
     ]
-    result = identify_urdf(rover_text(), topics=topics)
+    result = identify_urdf(builders.sensing_rover(), topics=topics)
     assert [(c.motion_control, c.source) for c in result.motion_controls] == [
         ("Driving", "urdf: drive plugin libgazebo_ros_diff_drive.so"),
         (

@@ -10,22 +10,10 @@ from solver.solving.solution import solve
 from tests.conftest import TEAMS
 from tests.identify import builders
 
-LASER = builders.gazebo_sensor("laser", "ray", "laser")
-CAMERA = builders.gazebo_sensor("cam", "camera", "cam")
-
-
-def rover_text() -> str:
-    """A four-wheeled rover with a laser, a camera and a differential drive plugin."""
-    robot = builders.ugv()
-    robot.add(LASER)
-    robot.add(CAMERA)
-    robot.add(builders.model_plugin("drive", "libgazebo_ros_diff_drive.so"))
-    return robot.text()
-
 
 def test_the_json_contract_has_exactly_the_documented_keys() -> None:
     solution = solve(load_team(TEAMS / "case2.yaml"))
-    result = identify_urdf(rover_text(), file="rover.urdf")
+    result = identify_urdf(builders.sensing_rover(), file="rover.urdf")
     data = identification_data(result, combinations(result, solution, load_profile()), solution)
     assert list(data) == [
         "robot",
@@ -61,7 +49,7 @@ def test_a_robot_that_could_not_be_identified_has_an_empty_summary() -> None:
 
 
 def test_a_summary_gives_a_live_robot_its_name_kind_sensors_and_controls() -> None:
-    summary = summary_data(identify_urdf(rover_text()))
+    summary = summary_data(identify_urdf(builders.sensing_rover()))
     assert (summary["name"], summary["kinematic_type"], summary["sensor_count"]) == (
         "rover",
         "UGV",
@@ -72,7 +60,7 @@ def test_a_summary_gives_a_live_robot_its_name_kind_sensors_and_controls() -> No
 
 def test_the_text_names_the_robot_its_kind_and_a_line_per_combination() -> None:
     solution = solve(load_team(TEAMS / "case2.yaml"))
-    result = identify_urdf(rover_text(), file="rover.urdf")
+    result = identify_urdf(builders.sensing_rover(), file="rover.urdf")
     found = combinations(result, solution, load_profile())
     lines = render_identification(result, found, solution).splitlines()
     assert lines[0] == "rover  (rover.urdf)"

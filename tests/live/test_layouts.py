@@ -193,6 +193,10 @@ def test_a_robot_whose_namespace_is_no_ros2_name_gets_no_layout_and_a_warning(
         "other than a letter, a digit, '_' or '/' at 5"
     ]
     assert _foxglove(layouts, Request("/ugv-1"), solution, robot) is None
+    # Asked on every poll while it is active, the refused layout is not tried or warned again.
+    for _ in range(3):
+        assert _foxglove(layouts, Request("/ugv-1"), solution, robot) is None
+    assert layouts.take_warnings() == []
     # The team layout has no tab for it, and nothing else was written.
     assert [p.name for p in tmp_path.iterdir()] == ["team.json"]
     assert _tabs(_layout(tmp_path / "team.json")) == {}

@@ -34,6 +34,7 @@ Not here: writing layouts (:mod:`solver.layouts.foxglove`); RViz2 (:mod:`.rviz`)
 
 from __future__ import annotations
 
+import collections
 import json
 import re
 from collections.abc import Collection, Iterator, Mapping
@@ -232,11 +233,12 @@ def _tree(
     if cut_at is not None:
         yield _fault(file, cut_at, "the panel tree is too large to check", "lichtblick-tree")
         return
-    for panel_id in sorted(set(seen)):
-        if seen.count(panel_id) > 1:
+    counts = collections.Counter(seen)  # linear: team layouts are checked as watch writes them
+    for panel_id in sorted(counts):
+        if counts[panel_id] > 1:
             yield _fault(file, "layout", f"{shown(panel_id)} appears twice", "lichtblick-tree")
     for panel_id in configs:
-        if panel_id not in seen:
+        if panel_id not in counts:
             where = f"configById.{shown(panel_id)}"
             yield _fault(file, where, "not in the panel tree: never shown", "lichtblick-tree")
 

@@ -25,6 +25,7 @@ from typing import Any
 from solver.errors import Fault, Location
 from solver.layouts.checks.data import quality_rules
 from solver.layouts.design import Design, Split, design
+from solver.layouts.foxglove import DESIGN_VARIABLE
 from solver.layouts.grammar import Rect
 from solver.layouts.plan import plan_layout
 from solver.layouts.presentation import Presentation
@@ -41,8 +42,6 @@ __all__ = [
     "quality_faults",
     "team_consistency",
 ]
-
-_DESIGN = "teleop_ui_design"  # solver.layouts.foxglove.DESIGN_VARIABLE (imported there)
 
 
 @dataclass(frozen=True, slots=True)
@@ -110,7 +109,7 @@ def measure(layout: Mapping[str, Any]) -> Quality:
     width, height = float(screen["width"]), float(screen["height"])
     rects = leaf_rects(layout.get("layout"), width, height)
     variables = layout.get("globalVariables")
-    note = variables.get(_DESIGN) if isinstance(variables, dict) else None
+    note = variables.get(DESIGN_VARIABLE) if isinstance(variables, dict) else None
     listed = note.get("tiles") if isinstance(note, dict) else None
     tiles = [t for t in listed if isinstance(t, dict)] if isinstance(listed, list) else []
     regions = _regions(note, width, height)
@@ -232,6 +231,7 @@ def describe_consistency(found: Consistency) -> str:
 
 
 def _as_tree(node: Split | int | None) -> Any:
+    """The split tree as a layout writes it, each leaf the tile's number."""
     if node is None or isinstance(node, int):
         return node
     return {

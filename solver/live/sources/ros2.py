@@ -60,6 +60,7 @@ Not here: identification and events (the watcher's, the same for ROS 1).
 
 # No "from __future__ import annotations": Cyclone DDS resolves the IDL field annotations of
 # the classes built in _types() at run time, in their own scope.
+import functools
 import json
 import os
 import threading
@@ -136,6 +137,19 @@ def ros_type(dds: str) -> str:
     return dds
 
 
+@functools.cache
+def _dds_write() -> Any:
+    """``dds_write`` of the library cyclonedds loaded, as ctypes calls it (set up once)."""
+    import ctypes
+
+    from cyclonedds.internal import DDS
+
+    function = DDS._dll_handle.dds_write
+    function.restype = ctypes.c_int32
+    function.argtypes = [ctypes.c_int32, ctypes.c_void_p]
+    return function
+
+
 def write(writer: Any, sample: Any) -> None:
     """``writer.write(sample)``, with the GIL let go while DDS delivers it.
 
@@ -151,7 +165,6 @@ def write(writer: Any, sample: Any) -> None:
     import ctypes
 
     from cyclonedds.core import DDSException
-    from cyclonedds.internal import DDS
     from cyclonedds.topic import Sample
 
     version = getattr(writer, "_use_version_2", MISSING)
@@ -163,10 +176,7 @@ def write(writer: Any, sample: Any) -> None:
     data = data.ljust((len(data) + 3) & ~3, b"\0")  # as DataWriter.write pads it
     buffer = ctypes.create_string_buffer(data, len(data))
     container = Sample(ctypes.cast(buffer, ctypes.c_void_p), len(data))
-    dds_write = DDS._dll_handle.dds_write  # the library cyclonedds loaded
-    dds_write.restype = ctypes.c_int32
-    dds_write.argtypes = [ctypes.c_int32, ctypes.c_void_p]
-    code = dds_write(reference, ctypes.byref(container))
+    code = _dds_write()(reference, ctypes.byref(container))
     if code < 0:
         raise DDSException(code, f"Occurred while writing sample in {writer!r}")
 
