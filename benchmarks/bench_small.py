@@ -113,6 +113,7 @@ _PRINTS: dict[str, Callable[[str], bool]] = {
     "solve case3": lambda out: "total                        872                102" in out,
     "identify a URDF": lambda out: "UGV" in out,
     "peer script": lambda out: out == "872 102\n",
+    "identify peer script": lambda out: out == "UGV lidar:1 Driving\n",
 }
 PROCESSES: dict[str, tuple[list[str], Callable[[str], bool]]] = {
     name: (command, _PRINTS[name])

@@ -249,7 +249,6 @@ TESTED_ELSEWHERE: dict[str, str] = {
     "solver.live.given": "tests/live/test_own_rules.py",
     "solver.live.graph": "tests/live/test_watcher.py",
     "solver.live.query": "tests/cli/test_assign.py",
-    "solver.live.rivals": "tests/live/test_watcher.py",
     "solver.live.robot": "tests/live/test_selection.py",
     "solver.live.sources.ros1.descriptions": "tests/live/sources/ros1/test_node.py",
     "solver.live.sources.ros1.source": "tests/live/test_watcher.py",

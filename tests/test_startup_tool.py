@@ -30,6 +30,7 @@ def test_it_prints_each_process_with_its_ratio_to_the_bare_interpreter() -> None
         "solve case3",
         "identify a URDF",
         "peer script",
+        "identify peer script",
     ]
     assert rows[0].count("(1.0x)") == 2
 

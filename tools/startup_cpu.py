@@ -9,7 +9,8 @@ bare interpreter:
 * the floor: an interpreter that only imports PyYAML and ``dataclasses``, which ``solve``
   cannot do without, and the same with lxml's ``etree``, which ``identify`` adds;
 * ``python -m solver solve case3`` and ``python -m solver identify`` of a URDF;
-* ``tools/peer_case3.py``, Case 3 written directly with PyYAML and python-constraint2.
+* ``tools/peer_case3.py``, Case 3 written directly with PyYAML and python-constraint2, and
+  ``tools/peer_identify.py``, the example URDF read directly with lxml.
 
 The children start in an empty temporary folder, so ``python -m solver`` is the installed
 package, never a source tree in the current folder. Measure a user's install by running this
@@ -52,6 +53,7 @@ def commands(python: str) -> dict[str, list[str]]:
             str(ROOT / "examples" / "diff_drive_lidar.urdf"),
         ],
         "peer script": [python, str(ROOT / "tools" / "peer_case3.py")],
+        "identify peer script": [python, str(ROOT / "tools" / "peer_identify.py")],
     }
 
 

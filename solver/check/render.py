@@ -18,11 +18,11 @@ Not here: running the checks (:mod:`solver.check.runner`).
 from __future__ import annotations
 
 import re
-from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path, PurePosixPath
 from typing import Any
 from urllib.parse import quote
 
+from solver import __version__
 from solver.check.finding import LEVELS, Finding
 from solver.check.registry import ALL_CHECKS
 from solver.check.runner import Report
@@ -108,13 +108,6 @@ def _physical(location: Location) -> dict[str, Any]:
     }
 
 
-def _version() -> str:
-    try:
-        return version("teleop-ui")
-    except PackageNotFoundError:
-        return "unknown"
-
-
 # In a SARIF plain-text message "[text](target)" is an embedded link (SARIF 2.1.0 section
 # 3.11.6); a literal bracket must be written "\[" / "\]", and a backslash before a bracket
 # doubled, or a name such as "[x](javascript:...)" from a rule file would become a link.
@@ -168,7 +161,7 @@ def sarif_data(report: Report) -> dict[str, Any]:
         "runs": [
             {
                 "tool": {
-                    "driver": {"name": "teleop-ui check", "version": _version(), "rules": rules}
+                    "driver": {"name": "teleop-ui check", "version": __version__, "rules": rules}
                 },
                 "columnKind": "unicodeCodePoints",
                 "artifacts": [{"location": {"uri": _uri(file)}} for file in report.files],

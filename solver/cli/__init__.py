@@ -20,17 +20,18 @@ interpreter's own last flush at exit does not fail again).
 from __future__ import annotations
 
 import argparse
+import gc
 import importlib
 import os
 import sys
 from collections.abc import Sequence
-from typing import Any
+from typing import Any, NoReturn
 
 from solver import SolverError
 from solver.cli._terminal import EscapingStream, OutputFailed
 from solver.errors import Terminated
 
-__all__ = ["COMMANDS", "build_parser", "main"]
+__all__ = ["COMMANDS", "build_parser", "console", "main"]
 
 # Every command and its module, in the order ``teleop-ui --help`` lists them. A module is
 # imported only when its command runs (or for the whole --help), so start-up stays short.
@@ -57,16 +58,57 @@ COMMANDS: dict[str, str] = {
 def build_parser(command: str | None = None) -> argparse.ArgumentParser:
     """The parser of every command, or of ``command`` alone when it names one (what a run
     needs: the other commands' modules are not imported, which keeps start-up short)."""
-    parser = argparse.ArgumentParser(
+    parser = _Parser(
         prog="teleop-ui",
         description="Design teleoperation UI configurations for heterogeneous robot teams: "
         "robot characteristics, relationship rules, team selections.",
     )
     parser.add_argument("--version", action="version", version=f"%(prog)s {_version()}")
-    subparsers = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
+    subparsers = parser.add_subparsers(
+        dest="command", metavar="COMMAND", required=True, parser_class=_Parser
+    )
     for name in [command] if command in COMMANDS else COMMANDS:
         importlib.import_module(COMMANDS[name]).register(subparsers)
     return parser
+
+
+class _Formatter(argparse.HelpFormatter):
+    """argparse's help formatter, told the terminal's width: left to itself it imports
+    ``shutil`` (and with it zlib, bz2 and lzma) to ask, a millisecond of every command's
+    start-up. The width is found as ``shutil.get_terminal_size`` finds it."""
+
+    def __init__(
+        self,
+        prog: str,
+        indent_increment: int = 2,
+        max_help_position: int = 24,
+        width: int | None = None,
+    ) -> None:
+        if width is None:
+            width = _columns() - 2
+        super().__init__(prog, indent_increment, max_help_position, width)
+
+
+class _Parser(argparse.ArgumentParser):
+    """An argument parser whose help is laid out by :class:`_Formatter`."""
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        kwargs.setdefault("formatter_class", _Formatter)
+        super().__init__(*args, **kwargs)
+
+
+def _columns() -> int:
+    """The terminal's width in columns: ``$COLUMNS``, else standard output's terminal, else 80."""
+    try:
+        columns = int(os.environ.get("COLUMNS", ""))
+    except ValueError:
+        columns = 0
+    if columns <= 0:
+        try:
+            columns = os.get_terminal_size(sys.__stdout__.fileno()).columns  # type: ignore[union-attr]
+        except (AttributeError, ValueError, OSError):  # no standard output, or no terminal
+            columns = 0
+    return columns if columns > 0 else 80
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -112,6 +154,22 @@ def main(argv: Sequence[str] | None = None) -> int:
     finally:
         sys.stdout, sys.stderr = stdout, stderr
     return status
+
+
+def console() -> NoReturn:
+    """The ``teleop-ui`` program (and ``python -m solver``): :func:`main`, then exit.
+
+    Before the exit, the objects still alive are moved to the cycle collector's permanent
+    generation (``gc.freeze``). The interpreter's shutdown would otherwise walk all of them
+    looking for cycles, about 5 ms of a 65 ms ``solve`` (measured: docs/benchmarks.md),
+    though a finished command leaves none worth finding: standard output is flushed by
+    :func:`main` and every file a command writes is closed when it is written. Objects are
+    still freed at shutdown by their reference counts, as before. Not in :func:`main`, which
+    tests and programs call in their own process: freezing is for a process about to end.
+    """
+    status = main()
+    gc.freeze()
+    sys.exit(status)
 
 
 def _hold_closed_descriptors() -> None:

@@ -10,7 +10,7 @@ Not here: the rule set's types (:mod:`solver.core.ruleset`), team files (:mod:`s
 
 from __future__ import annotations
 
-import threading
+from _thread import allocate_lock
 from collections.abc import Iterable, Sequence
 from dataclasses import replace
 from pathlib import Path
@@ -116,7 +116,7 @@ def load_rules(path: str | Path, *, display: str | None = None) -> RuleSet:
 # _KEPT_CHARS characters each (the shipped ones are under 10,000). The studio reads from many
 # threads: every look into _READ and every change to it holds _READ_LOCK.
 _READ: dict[tuple[str, str], RuleSet] = {}
-_READ_LOCK = threading.Lock()
+_READ_LOCK = allocate_lock()  # threading's Lock, without importing threading
 _KEPT_FILES = 16
 _KEPT_CHARS = 1 << 18
 

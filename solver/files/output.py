@@ -14,7 +14,6 @@ write those (:mod:`solver.reporting.render`, :mod:`solver.check.render`,
 
 from __future__ import annotations
 
-import csv
 import io
 import json
 import math
@@ -212,6 +211,8 @@ def csv_row(values: Sequence[Any]) -> list[Any]:
 
 def csv_text(rows: Sequence[Sequence[Any]]) -> str:
     """Rows as CSV text (``\\n`` line ends), every cell through :func:`csv_cell`."""
+    import csv  # here: most commands write no CSV, and start-up pays for every import
+
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
     writer.writerows(csv_row(row) for row in rows)

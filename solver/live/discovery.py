@@ -35,7 +35,7 @@ Not here: reading a graph (:mod:`solver.live.sources`), identifying (:mod:`solve
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Collection, Iterable
 from dataclasses import dataclass
 
 from solver.identify.profile import Profile
@@ -77,6 +77,14 @@ class RobotSource:
     topics: tuple[Topic, ...]
     value_keys: tuple[tuple[str, str], ...] = ()
     teleop_key: str | None = None
+
+    def keys(self, characteristics: Collection[str]) -> list[str]:
+        """The keys to read of this robot: its description, SRDF and teleoperation
+        description when it has them, and its own values of ``characteristics``."""
+        found = [self.description_key]
+        found += [key for key in (self.semantic_key, self.teleop_key) if key is not None]
+        found += [key for name, key in self.value_keys if name in characteristics]
+        return found
 
 
 def normalise_namespace(text: str) -> str:

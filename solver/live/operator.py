@@ -49,8 +49,9 @@ from solver.errors import InputError, SolverError, did_you_mean
 from solver.live.discovery import normalise_namespace, robot_namespaces
 from solver.live.given import ACTIVE_PREFIX
 from solver.live.graph import ANNOUNCEMENTS, MISSING, GraphSource
+from solver.live.rivals import announcements
 from solver.live.selection import ACTIVE_ROBOT, NAMESPACE, RESULT_PARAM, WRITER_KEY
-from solver.live.values import MAX_SELECTION_CHARS, kind_of, selection_text
+from solver.live.values import MAX_SELECTION_CHARS, kind_of
 from solver.ros.names import full_topic_name_problem
 from solver.untrusted import shown
 
@@ -81,8 +82,6 @@ LOOK_QUIET: Final = 0.5
 LOOK_LIMIT: Final = 5.0
 # Seconds between looks at the answer when the source wakes no one (a ROS 1 master).
 POLL: Final = 0.05
-# Announcements read at most (as a watcher reads them: solver.live.rivals.MAX_ANNOUNCED).
-_MAX_ANNOUNCED: Final = 8
 _ANSWER_KEY: Final = RESULT_PARAM.rsplit("/", 1)[1]
 # A characteristic's name as a topic or parameter name holds it: a ROS name token.
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
@@ -268,14 +267,9 @@ class Station:
         """The rule set the graph's running watchers announce, and how it is known (or why
         not)."""
         names: dict[str, str] = {}  # rule set name -> a watcher announcing it
-        items = sorted(_mapping(params.get(ANNOUNCEMENTS)).items(), key=lambda i: str(i[0]))
-        for _key, value in items[:_MAX_ANNOUNCED]:
-            announced = _mapping(value)
-            watcher, _ = selection_text("watcher", announced.get("watcher"))
-            rules, _ = selection_text("rules", announced.get("rules"))
-            if watcher is None or rules is None or not self._runs(watcher):
-                continue
-            names.setdefault(rules, watcher)
+        for announced in announcements(params):
+            if announced.rules is not None and self._runs(announced.watcher):
+                names.setdefault(announced.rules, announced.watcher)
         if not names:
             return None, f"no running watcher on {self.name} announces its rule set"
         if len(names) > 1:

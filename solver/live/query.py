@@ -24,7 +24,7 @@ from dataclasses import dataclass
 from solver.errors import InputError, did_you_mean
 from solver.identify.identification import IdentificationCache
 from solver.identify.profile import Profile
-from solver.live.discovery import RobotSource, discover, normalise_namespace
+from solver.live.discovery import discover, normalise_namespace
 from solver.live.given import ACTIVE_PREFIX, robot_values, unknown_name
 from solver.live.graph import MISSING, GraphSource
 from solver.live.robot import identify_robot
@@ -96,7 +96,7 @@ def assign_from_graph(
     robot_source = found.get(namespace)
     if robot_source is None:
         raise _no_robot(namespace, source, found)
-    source.descriptions.sync(_keys(robot_source, solution))
+    source.descriptions.sync(robot_source.keys(solution.rules.names))
     description = source.descriptions.get(robot_source.description_key)
     if description is MISSING:
         raise _no_robot(namespace, source, found)
@@ -125,16 +125,6 @@ def assign_from_graph(
     said = live.identification.disagreements
     differ = [f"declared and read differ (the declared value wins): {line}" for line in said]
     return LiveAssignment(namespace, assignment, (*notes, *differ, *chosen))
-
-
-def _keys(robot: RobotSource, solution: Solution) -> list[str]:
-    """The keys to read of one robot: its description, SRDF and own values the rules know."""
-    return [
-        robot.description_key,
-        *([robot.semantic_key] if robot.semantic_key else []),
-        *([robot.teleop_key] if robot.teleop_key else []),
-        *(key for name, key in robot.value_keys if name in solution.rules.names),
-    ]
 
 
 def _no_robot(namespace: str, source: GraphSource, found: Mapping[str, object]) -> InputError:

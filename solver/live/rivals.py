@@ -30,15 +30,17 @@ import hashlib
 import json
 import time
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
-from typing import Any, Final
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any, Final
 
-from solver.identify.profile import Profile
 from solver.live.events import Event, Rival, RivalGone
-from solver.live.given import FixedValues
 from solver.live.graph import ANNOUNCEMENTS
 from solver.live.values import selection_text
-from solver.solving.solution import Solution
+
+if TYPE_CHECKING:  # types only: `switch` reads announcements without the solving stack
+    from solver.identify.profile import Profile
+    from solver.live.given import FixedValues
+    from solver.solving.solution import Solution
 
 __all__ = [
     "ASK_AGAIN",
@@ -47,8 +49,10 @@ __all__ = [
     "POLICIES",
     "WATCHERS",
     "YIELD",
+    "Announcement",
     "Rivals",
     "announcement_key",
+    "announcements",
     "fingerprint",
 ]
 
@@ -96,15 +100,30 @@ def announcement_key(caller_id: str) -> str:
 
 
 @dataclass(frozen=True, slots=True)
-class _Announced:
+class Announcement:
+    """What one watcher announces of itself under ``/teleop_ui/watchers``."""
+
     watcher: str
     team: str | None
     fingerprint: str | None
     policy: str
+    # The rule set's name, for the operator's `switch`; not part of what makes a rival new.
+    rules: str | None = field(default=None, compare=False)
 
 
-def _read(value: Any) -> _Announced | None:
-    """One announcement, each field short text or left out; ``None`` for anything else."""
+def announcements(params: Mapping[str, Any]) -> list[Announcement]:
+    """The announcements in ``params`` (the ``/teleop_ui`` subtree), by key, at most
+    :data:`MAX_ANNOUNCED` of them read; each field short text or left out, and an entry that
+    names no watcher dropped."""
+    announced = params.get(WATCHERS)
+    if not isinstance(announced, Mapping):
+        return []
+    items = sorted(announced.items(), key=lambda item: str(item[0]))[:MAX_ANNOUNCED]
+    return [found for _key, value in items if (found := _read(value)) is not None]
+
+
+def _read(value: Any) -> Announcement | None:
+    """One announcement; ``None`` for anything that is not one."""
     if not isinstance(value, Mapping):
         return None
     fields: dict[str, str | None] = {}
@@ -115,7 +134,9 @@ def _read(value: Any) -> _Announced | None:
     if watcher is None:
         return None
     policy = fields["policy"] if fields["policy"] in POLICIES else YIELD
-    return _Announced(watcher, fields["team"], fields["fingerprint"], policy or YIELD)
+    return Announcement(
+        watcher, fields["team"], fields["fingerprint"], policy or YIELD, fields["rules"]
+    )
 
 
 class Rivals:
@@ -135,7 +156,7 @@ class Rivals:
         self.digest = digest
         self._running = running
         self._gone: dict[str, float] = {}  # watcher -> when it was found gone
-        self._rivals: dict[str, _Announced] = {}
+        self._rivals: dict[str, Announcement] = {}
         self.announcement: dict[str, Any] = {
             "watcher": caller_id,
             "team": solution.team.name,
@@ -161,16 +182,9 @@ class Rivals:
     def update(self, params: Mapping[str, Any]) -> list[Event]:
         """``rival`` / ``rival_gone`` events for what the announcements in ``params`` (the
         ``/teleop_ui`` subtree) say now."""
-        found: dict[str, _Announced] = {}
-        announced = params.get(WATCHERS)
-        items = (
-            sorted(announced.items(), key=lambda item: str(item[0]))
-            if isinstance(announced, Mapping)
-            else []
-        )
-        for _key, value in items[:MAX_ANNOUNCED]:
-            other = _read(value)
-            if other is None or other.watcher == self.caller_id or other.fingerprint == self.digest:
+        found: dict[str, Announcement] = {}
+        for other in announcements(params):
+            if other.watcher == self.caller_id or other.fingerprint == self.digest:
                 continue
             if self.runs(other.watcher):
                 found[other.watcher] = other

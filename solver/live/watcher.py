@@ -477,12 +477,7 @@ class Watcher:
         if self._discovered is None or self._discovered[0] != graph:
             self._discovered = (graph, discover(graph, self.profile))
         sources = self._discovered[1]
-        self.descriptions.sync(
-            [s.description_key for s in sources]
-            + [s.semantic_key for s in sources if s.semantic_key is not None]
-            + [s.teleop_key for s in sources if s.teleop_key is not None]
-            + [key for s in sources for name, key in s.value_keys if name in rules.names]
-        )
+        self.descriptions.sync([key for s in sources for key in s.keys(rules.names)])
         robots: dict[str, _Tracked] = {}
         changes: list[Event] = []
         warnings: list[tuple[str, str]] = []

@@ -66,10 +66,10 @@ import os
 import time
 from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass, replace
-from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Literal, cast
 
+from solver import __version__  # the installed version: its metadata is read from it
 from solver.core.rules import default_rules_path, shipped_name
 from solver.core.team import parse_team, resolve_team_path, shipped_rules_path
 from solver.errors import Fault, InputError, Location, SolverError, Terminated
@@ -86,10 +86,6 @@ from solver.files.output import csv_row, dumps
 from solver.files.yamlio import MAX_FILE_BYTES, load_hashed
 from solver.limits import limit
 from solver.reporting import markdown
-from solver.reporting.plot import check_chart_size, require_matplotlib
-from solver.reporting.render import solution_chunks
-from solver.reporting.report import image_names, write_report
-from solver.solving.solution import solution_data, solve
 from solver.untrusted import SHOWN_FILE_NAME_CHARS
 from solver.untrusted import shown as shown_text
 
@@ -135,7 +131,13 @@ class Job:
     stamp: Path
     report: Path | None = None  # the per-team report, when asked for
     rules: str | None = None  # a rule file that overrides the team's own
-    up_to_date: bool = False
+    # An up-to-date team's summary row, from its JSON as read when that was decided.
+    kept: SummaryRow | None = None
+
+    @property
+    def up_to_date(self) -> bool:
+        """Whether a rerun skips the team (see "Up to date" in the module docstring)."""
+        return self.kept is not None
 
     @property
     def options(self) -> dict[str, Any]:
@@ -152,6 +154,8 @@ class Job:
             return (self.output,)
         if self.report.suffix != _REPORT_SUFFIX["markdown"]:
             return (self.output, self.report)
+        from solver.reporting.report import image_names
+
         return (self.output, *image_names(self.report).values(), self.report)
 
 
@@ -380,6 +384,8 @@ def make_jobs(
     :class:`~solver.errors.MissingExtraError` before anything is solved: every report draws
     charts, so every team would fail for the same reason."""
     if report is not None:
+        from solver.reporting.plot import require_matplotlib
+
         require_matplotlib()
     folder = Path(out)
     outputs = folder / TEAM_OUTPUTS  # apart from the summaries: see "Layout" above
@@ -395,21 +401,13 @@ def make_jobs(
             None if report is None else outputs / f"{name}{_REPORT_SUFFIX[report]}",
             rules,
         )
-        jobs.append(replace(job, up_to_date=not force and _is_up_to_date(job)))
+        jobs.append(job if force else replace(job, kept=_kept_row(job)))
     return jobs
 
 
 def _sha256(path: Path) -> str | None:
     # Bounded like every read: a team's `rules: /dev/zero` must not be hashed forever.
     return sha256_bounded(path, limit=MAX_FILE_BYTES)
-
-
-@functools.cache  # the installed metadata does not change while a batch runs
-def _version() -> str:
-    try:
-        return version("teleop-ui")
-    except PackageNotFoundError:
-        return "unknown"
 
 
 def _read_json(path: Path) -> Any:
@@ -432,25 +430,29 @@ def _json_and_hash(path: Path) -> tuple[Any, str | None]:
         return None, sha256_hex(data)
 
 
-def _is_up_to_date(job: Job) -> bool:
+def _kept_row(job: Job) -> SummaryRow | None:
+    """The summary row of a team whose outputs are up to date (from its JSON, read once, as
+    its hash is checked); ``None`` when it must be solved again."""
     if any(link_inside(path, within=job.out) for path in (job.stamp, *job.outputs)):
-        return False  # never read through a link there: writing will say what is wrong
+        return None  # never read through a link there: writing will say what is wrong
     stamp = _read_json(job.stamp)
     if (
         not isinstance(stamp, dict)
-        or stamp.get("teleop_ui") != _version()
+        or stamp.get("teleop_ui") != __version__
         or stamp.get("options") != job.options
     ):
-        return False
+        return None
     if not all(p.is_file() for p in job.outputs):
-        return False
+        return None
     output, output_hash = _json_and_hash(job.output)
     if not isinstance(output, dict) or stamp.get("output_sha256") != output_hash:
-        return False  # its rename lost in a crash, or the file edited since (see module)
+        return None  # its rename lost in a crash, or the file edited since (see module)
     if stamp.get("team_sha256") != _sha256(job.team_file):
-        return False
+        return None
     rules_file = stamp.get("rules_file")
-    return isinstance(rules_file, str) and stamp.get("rules_sha256") == _sha256(Path(rules_file))
+    if not isinstance(rules_file, str) or stamp.get("rules_sha256") != _sha256(Path(rules_file)):
+        return None
+    return _row(job, output)
 
 
 # ---- 3. solving ---------------------------------------------------------------------------
@@ -510,6 +512,12 @@ def run_job(job: Job) -> Outcome:
     Runs in a worker process: it takes and returns only picklable values, and catches every
     ``Exception`` so that one team's problem (even a bug) is reported, not raised.
     """
+    # The workers' own modules: the batch process itself never solves (see _WORKER_MODULES).
+    from solver.reporting.plot import check_chart_size
+    from solver.reporting.render import solution_chunks
+    from solver.reporting.report import write_report
+    from solver.solving.solution import solution_data, solve
+
     started = time.perf_counter()
     try:
         # Hashed and read from the same bytes: the stamp names exactly the text solved.
@@ -537,7 +545,7 @@ def run_job(job: Job) -> Outcome:
         if job.report is not None:
             write_report(solution, job.report, within=job.out)
         stamp = {
-            "teleop_ui": _version(),
+            "teleop_ui": __version__,
             "team_file": str(job.team_file.resolve()),
             "team_sha256": team_hash,
             "rules_file": str(rules_file.resolve()),
@@ -580,11 +588,6 @@ def _hashed(chunks: Iterable[str], digest: hashlib._Hash) -> Iterator[bytes]:
         yield data
 
 
-def _up_to_date(job: Job) -> Outcome:
-    data = _read_json(job.output)
-    return Outcome(job, "up to date", _row(job, data))
-
-
 def run_batch(jobs: Sequence[Job], workers: int = 1) -> Iterator[Outcome]:
     """Outcomes of ``jobs``: the up-to-date ones first, the others as they finish.
 
@@ -596,8 +599,8 @@ def run_batch(jobs: Sequence[Job], workers: int = 1) -> Iterator[Outcome]:
     """
     pending = []
     for job in jobs:
-        if job.up_to_date:
-            yield _up_to_date(job)
+        if job.kept is not None:
+            yield Outcome(job, "up to date", job.kept)
         else:
             pending.append(job)
     if pending:
@@ -681,10 +684,19 @@ def _context() -> ForkServerContext | SpawnContext:
         context = multiprocessing.get_context("forkserver")
         # The workers' code imported once, by the server, before it forks them: each worker
         # would otherwise import it anew (a quarter of a second of CPU each).
-        context.set_forkserver_preload([__name__])
+        context.set_forkserver_preload([__name__, *_WORKER_MODULES])
         return context
     return multiprocessing.get_context("spawn")
 
+
+# What only the workers import (run_job's modules): the batch process does not, which shortens
+# its start-up, and the forkserver imports them once for all its workers.
+_WORKER_MODULES = (
+    "solver.reporting.plot",
+    "solver.reporting.render",
+    "solver.reporting.report",
+    "solver.solving.solution",
+)
 
 # The most jobs handed to a worker at once.
 _MOST_JOBS_HANDED = 8

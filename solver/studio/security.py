@@ -36,6 +36,7 @@ from http.cookies import SimpleCookie
 from typing import Any
 from urllib.parse import parse_qsl, urlencode
 
+from solver.live.server import loopback  # one definition, the watch server's
 from solver.studio.peers import same_account
 
 __all__ = ["HEADERS", "MAX_QUERY_BYTES", "Guard", "cookie_name", "loopback"]
@@ -66,18 +67,6 @@ _NO_TOKEN = (
     "this studio needs the token it printed at start: open the address it printed "
     "(http://...?token=...), or send the header Authorization: Bearer TOKEN"
 )
-
-
-def loopback(host: str) -> bool:
-    """Whether ``host`` names this machine only (127.0.0.0/8, ::1, localhost)."""
-    import ipaddress
-
-    if host == "localhost":
-        return True
-    try:
-        return ipaddress.ip_address(host.strip("[]")).is_loopback
-    except ValueError:
-        return False
 
 
 def cookie_name(port: int) -> str:

@@ -7,6 +7,7 @@ from hypothesis import strategies as st
 
 from solver.identify.profile import Profile
 from solver.live.discovery import (
+    RobotSource,
     discover,
     normalise_namespace,
     robot_namespaces,
@@ -234,3 +235,19 @@ def test_each_topic_goes_to_the_deepest_namespace_containing_it(
     assert given_to == {
         name: _deepest(name, namespaces) for name in names if _deepest(name, namespaces) is not None
     }
+
+
+def test_a_robots_keys_are_its_descriptions_and_its_own_values_the_rules_name() -> None:
+    robot = RobotSource(
+        "/uav1",
+        "/uav1/robot_description",
+        None,  # no SRDF
+        (),
+        (("comm_link", "/uav1/teleop_ui/comm_link"), ("colour", "/uav1/teleop_ui/colour")),
+        "/uav1/teleop_description",
+    )
+    assert robot.keys({"comm_link", "sensor_type"}) == [
+        "/uav1/robot_description",
+        "/uav1/teleop_description",
+        "/uav1/teleop_ui/comm_link",
+    ]

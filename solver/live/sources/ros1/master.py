@@ -45,6 +45,7 @@ from xml.parsers.expat import ExpatError
 
 from solver.errors import InputError
 from solver.live.graph import MISSING, MasterError, MasterUnreachable, Observation
+from solver.live.server import loopback
 from solver.live.sources.ros1.rpc import BoundedTransport, OversizedReply
 from solver.untrusted import shown
 
@@ -129,13 +130,7 @@ def _is_address(host: str) -> bool:
 
 def is_loopback(uri: str) -> bool:
     """Whether the master at ``uri`` is on this machine's loopback interface."""
-    host = urlsplit(uri).hostname or ""
-    if host == "localhost":
-        return True
-    try:
-        return ipaddress.ip_address(host).is_loopback
-    except ValueError:
-        return False
+    return loopback(urlsplit(uri).hostname or "")
 
 
 class MasterClient:
