@@ -181,6 +181,44 @@ def test_with_a_split_each_row_is_measured_in_its_part(tmp_path: Path) -> None:
     assert row_of(output, "**all**", "unsplit")[:5] == ["0", "-", "-", "0", "1"]
 
 
+def test_rows_of_the_second_fresh_set_are_held_out_whole_and_on_their_own_line(
+    tmp_path: Path,
+) -> None:
+    tiny_set(tmp_path / "fresh_set_2")
+    split = tmp_path / "split.csv"
+    # The split lists none of its rows, or lists one as development: each is held out by its set.
+    split.write_text(
+        "# seed 41, made by hand for this test\n"
+        "set,robot,family,group,files_here,part\n"
+        "fresh_set_2,rover,mobile base,g1,no,development\n",
+        encoding="utf-8",
+    )
+    output = measure("--set", str(tmp_path / "fresh_set_2"), "--split", str(split))
+    # The rover (right), the arm (read as a manipulator, labelled humanoid) and the absent boat.
+    for part in ("held-out", "held-out (fresh)"):
+        assert row_of(output, "**all**", part)[:5] == ["2", "1/2 (50%)", "1/2 (50%)", "0", "1"]
+    assert "| development |" not in output
+    assert "held-out 3, held-out (fresh) 3" in output
+
+
+def test_rows_of_the_first_fresh_set_are_measured_where_the_split_puts_them(
+    tmp_path: Path,
+) -> None:
+    tiny_set(tmp_path / "fresh_set_1")
+    split = tmp_path / "split.csv"
+    split.write_text(
+        "# seed 41, made by hand for this test\n"
+        "set,robot,family,group,files_here,part\n"
+        "fresh_set_1,rover,mobile base,g1,no,development\n"
+        "fresh_set_1,arm_called_humanoid,arm,g2,no,development\n"
+        "fresh_set_1,boat,surface vessel,g3,no,development\n",
+        encoding="utf-8",
+    )
+    output = measure("--set", str(tmp_path / "fresh_set_1"), "--split", str(split))
+    assert row_of(output, "**all**", "development")[:5] == ["2", "1/2 (50%)", "1/2 (50%)", "0", "1"]
+    assert "held-out" not in output
+
+
 def _split_tool() -> Any:
     spec = importlib.util.spec_from_file_location("split_identification", SPLIT_SCRIPT)
     assert spec is not None
@@ -236,3 +274,15 @@ def test_the_shipped_split_holds_out_whole_groups_and_at_least_60_robots() -> No
     held = [row for row in rows if row["part"] == "held-out"]
     assert len(held) >= 60
     assert len({(row["set"], row["robot"]) for row in rows}) == len(rows)
+
+
+def test_the_shipped_split_puts_every_row_of_the_first_fresh_set_in_development() -> None:
+    text = (ROOT / "tools" / "identification_split.csv").read_text(encoding="utf-8")
+    rows = list(csv.DictReader(line for line in text.splitlines() if not line.startswith("#")))
+    with (ROOT / "tools" / "fresh_set_1" / "truth.csv").open(encoding="utf-8") as stream:
+        moved = {row["robot"] for row in csv.DictReader(stream)}
+    listed = {row["robot"]: row["part"] for row in rows if row["set"] == "fresh_set_1"}
+    assert set(listed) == moved
+    assert set(listed.values()) == {"development"}
+    # The second fresh set is held out by the measurement tool, never listed here.
+    assert not [row for row in rows if row["set"] == "fresh_set_2"]

@@ -33,7 +33,12 @@ structure of that name. A standalone gripper read as ``Gripper`` counts for the 
 With ``--split`` (``tools/identification_split.csv`` by default, or a file named after it: the
 split's list, made by ``tools/split_identification.py`` with a fixed seed) the rows of every set
 are measured by the part the split gives them, ``development`` and ``held-out``, side by side in
-place of the sets; a row the split does not list is measured as ``unsplit``.
+place of the sets; a row the split does not list is measured as ``unsplit``. With ``--all``,
+``tools/generalization_set`` and ``tools/fresh_set_1`` are measured too (the latter measured
+blind once as held-out, then moved to the development part: its README; the split lists its
+rows as ``development``), and ``tools/fresh_set_2`` when it is there: its rows (built blind, to
+measure the rules) are held out whole by their set, whatever the split lists, and count in
+``held-out`` and again on a line of their own, ``held-out (fresh)``.
 
 The sets are read in place and never copied. A set with no truth.csv is reported and skipped.
 """
@@ -63,6 +68,11 @@ from split_identification import (  # noqa: E402
 
 OWN_SET = ROOT / "tools" / "identification_set"
 ADDED_SET = ROOT / "tools" / "generalization_set"
+MOVED_SET = ROOT / "tools" / "fresh_set_1"
+FRESH_SET = ROOT / "tools" / "fresh_set_2"
+# The part the rows of FRESH_SET are also reported in, within the held-out part.
+FRESH_PART = "held-out (fresh)"
+PART_ORDER = ("development", "held-out", FRESH_PART, "unsplit")
 SPLIT = ROOT / "tools" / "identification_split.csv"
 # Truth labels spelled differently from the profile's structure names.
 ALIASES = {
@@ -294,6 +304,14 @@ def locate(relative: str, folders: Iterable[Path]) -> Path:
     return next((path for path in candidates if path.is_file()), candidates[0])
 
 
+def parts_of(set_name: str, robot: str, split: dict[tuple[str, str], str]) -> list[str]:
+    """The parts a row is measured in: its part in the split (``unsplit`` when it lists none);
+    a row of ``tools/fresh_set_2`` is held out by its set, and reported in the fresh part too."""
+    if set_name == FRESH_SET.name:
+        return ["held-out", FRESH_PART]
+    return [split.get((set_name, robot), "unsplit")]
+
+
 def measure(
     name: str,
     folder: Path,
@@ -313,16 +331,21 @@ def measure(
     folders = [folder, *extra_files, shared_folder() / folder.name]
     own = Measured(name, truth, len(rows), Score(structures), {}, {})
     for row in rows:
-        measured = own
+        targets = [own]
         if split is not None and parts is not None:
-            part = split.get((folder.name, row["robot"]), "unsplit")
-            measured = parts.setdefault(part, Measured(part, truth, 0, Score(structures), {}, {}))
-            measured.rows += 1
-        scores = [
-            measured.whole,
-            measured.families.setdefault(family_of(row), Score(structures)),
-            measured.sources.setdefault(source_of(row), Score(structures)),
-        ]
+            targets = [
+                parts.setdefault(part, Measured(part, truth, 0, Score(structures), {}, {}))
+                for part in parts_of(folder.name, row["robot"], split)
+            ]
+            for measured in targets:
+                measured.rows += 1
+        scores: list[Score] = []
+        for measured in targets:
+            scores += [
+                measured.whole,
+                measured.families.setdefault(family_of(row), Score(structures)),
+                measured.sources.setdefault(source_of(row), Score(structures)),
+            ]
         urdf = locate(row["file"], folders)
         srdf = locate(row["srdf"], folders) if row.get("srdf") else None
         if not urdf.is_file() or (srdf is not None and not srdf.is_file()):
@@ -397,7 +420,9 @@ def main(argv: list[str] | None = None) -> int:
         const=SPLIT,
         metavar="SPLIT.csv",
         help="measure by the parts of a split (default file: tools/identification_split.csv): "
-        "development and held-out side by side; with --all, tools/generalization_set too",
+        "development and held-out side by side; with --all, tools/generalization_set and "
+        "tools/fresh_set_1 (development) and tools/fresh_set_2 when present (held out whole, "
+        "also as its own part, held-out (fresh))",
     )
     parser.add_argument(
         "--profile",
@@ -409,7 +434,8 @@ def main(argv: list[str] | None = None) -> int:
     corpus = args.corpus or shared_folder() / "corpus"
     folders: list[Path] = list(args.sets or [])
     if args.all:
-        folders = [corpus, OWN_SET, *([ADDED_SET] if args.split else []), *folders]
+        added = [ADDED_SET, MOVED_SET, *([FRESH_SET] if FRESH_SET.is_dir() else [])]
+        folders = [corpus, OWN_SET, *(added if args.split else []), *folders]
     elif not folders:
         folders = [corpus]
     profile = load_profile(args.profile)
@@ -432,7 +458,7 @@ def main(argv: list[str] | None = None) -> int:
         else:
             print(f"Set `{measured.name}`: {measured.rows} descriptions ({measured.truth})")
     if split is not None:
-        sets = [parts[p] for p in ("development", "held-out", "unsplit") if p in parts]
+        sets = [parts[p] for p in PART_ORDER if p in parts]
         print(f"Split `{args.split.name}`: " + ", ".join(f"{m.name} {m.rows}" for m in sets))
     if not sets:
         return 0

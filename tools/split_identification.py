@@ -29,6 +29,15 @@ Rows added after the split (``tools/generalization_set``: families and repositor
 used, labelled before any rule was changed) are split by the same method on their own (so the
 first split is not reshuffled); a family of one group there is held out whole.
 
+Rows of ``tools/fresh_set_1`` (repositories no set had used, labelled after the rules of issue 41
+were written) are not split: they were measured blind once, whole, as held-out (as
+``tools/heldout_set``), and on 2026-11-29, having been looked at, were moved whole to the
+development part to tune on; every one is a development row.
+
+Rows of ``tools/fresh_set_2`` (built blind after that move) are not listed here: the
+measurement tool holds every one of them out whole, by its set, so this file need not change
+(nor be read) while that set is being built.
+
 The file written, ``tools/identification_split.csv``, has the seed and this method in its
 leading ``#`` lines, then one row per robot: ``set``, ``robot``, ``family``, ``group``,
 ``files_here`` and ``part`` (``development`` or ``held-out``).
@@ -48,6 +57,7 @@ SEED = 41
 SPLIT = ROOT / "tools" / "identification_split.csv"
 OWN_SET = ROOT / "tools" / "identification_set"
 ADDED_SET = ROOT / "tools" / "generalization_set"
+MOVED_SET = ROOT / "tools" / "fresh_set_1"
 DEVELOPMENT = "development"
 HELD_OUT = "held-out"
 FAMILY_OF_LABEL = {
@@ -138,6 +148,15 @@ def added_rows() -> list[dict[str, str]]:
     return split_rows([(ADDED_SET.name, ADDED_SET)], files_kept_out=True)
 
 
+def moved_rows() -> list[dict[str, str]]:
+    """Rows of ``tools/fresh_set_1``: measured blind once as held-out, then moved whole to the
+    development part to tune on (the module docstring). Files kept outside."""
+    if not (MOVED_SET / "truth.csv").is_file():
+        return []
+    entries = split_rows([(MOVED_SET.name, MOVED_SET)], files_kept_out=True)
+    return [{**entry, "part": DEVELOPMENT} for entry in entries]
+
+
 HEADER = f"""\
 # The development / held-out split of the labelled robots (issue 41), made before any rule
 # was changed. Seed {SEED}. Made by tools/split_identification.py (its docstring says how:
@@ -145,6 +164,10 @@ HEADER = f"""\
 # and given to the part with fewer measurable rows). Rows of tools/generalization_set were
 # labelled after the first split, from repositories no set had used, before any rule changed;
 # split by the same method on their own (a family of one group there is held out whole).
+# Rows of tools/fresh_set_1 (first tools/heldout_set) were labelled after the rules were
+# written, from repositories no set had used, and measured blind once as held-out; on 2026-11-29
+# they were moved whole to the development part, to tune on (its README gives the blind figures).
+# Rows of tools/fresh_set_2 are not listed: the measurement tool holds them out whole by set.
 # Re-make and compare: python tools/split_identification.py --check
 """
 
@@ -165,7 +188,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--check", action="store_true", help="compare with the file, write nothing")
     args = parser.parse_args(argv)
     sets = [("corpus", shared_folder() / "corpus"), ("identification_set", OWN_SET)]
-    text = render(split_rows(sets) + added_rows())
+    text = render(split_rows(sets) + added_rows() + moved_rows())
     if args.check:
         same = SPLIT.is_file() and SPLIT.read_text("utf-8") == text
         print("the split file is what the seed makes" if same else "the split file differs")

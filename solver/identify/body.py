@@ -43,6 +43,7 @@ from solver.identify.limbs import (
     legs_at_the_pelvis,
     legs_by_place,
     spine,
+    wheeled_spine,
     wrist,
 )
 from solver.identify.placement import Placement, placement
@@ -68,6 +69,8 @@ __all__ = ["Body", "detect_body"]
 
 # Limbs whose joints a person commands one by one (Joint control); not heads, not mounts.
 _COMMANDED = ("arm", "leg", "other", "spine")
+# Legs a body walks on: their joints follow its gait controller, not an operator.
+_WALKING_LEGS = 2
 
 
 @dataclass(frozen=True)
@@ -217,6 +220,11 @@ class Body:
             lines.append(f"floats at the surface: {_names(self.surface_hints)}")
         elif self.underwater_hints:
             lines.append(f"below the surface: {_names(self.underwater_hints)}")
+        elif self.marine_plugins:  # a buoyancy plugin: in water, nothing says how deep
+            lines.append(
+                "in water, nothing says below or at the surface: no hydrodynamics or thruster "
+                "plugin, no DVL or pressure sensor, no surface cue"
+            )
         elif self.marine:
             lines.append(
                 "in water by thruster names alone: no buoyancy or hydrodynamics plugin, "
@@ -371,6 +379,10 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
     parts.limbs = five_bars(tree, legs_at_the_pelvis(tree, parts.limbs))
     if not parts.roles and not parts.trunk:  # a snake is its one chain, with nothing else
         parts.limbs = spine(tree, parts.limbs)
+    elif not parts.roles and not parts.grippers:  # or its chain, with side wheels on it
+        parts.limbs, parts.trunk, side = wheeled_spine(tree, parts.limbs, parts.trunk)
+        for name in side:
+            parts.roles[name] = Role(name, "passive", "a leaf joint beside a spine (a side wheel)")
     parts.limbs = wrist(tree, parts.limbs, len(finger_tips(tree, parts.grippers)))
 
 
@@ -379,12 +391,18 @@ def _commanded(tree: JointTree, parts: _Parts) -> list[str]:
     joints that carry one. A head points a sensor (a pan/tilt camera); a mount and a trunk
     carrying only mounts move wheels, rotors or thrusters (a transformable multirotor's frame,
     a tilting rotor): the vehicle's own motion, not joint control. On a body that flies or
-    swims, a short chain of no limb is the vehicle's too (a control surface, a gimbal).
+    swims, a short chain of no limb is the vehicle's too (a control surface, a gimbal). The
+    legs of a body that walks (two or more) are driven by its gait controller: a transmission
+    or ``ros2_control`` interface on them carries the gait's output to the motors, not an
+    operator's command (the labelled sets count no Joint for it); a single leg is a limb.
     """
     vehicle = bool(
         parts.of("rotor") or tree.labels("flight") or fixed_rotors(tree) or tree.reader.marine
     )
-    kinds = tuple(k for k in _COMMANDED if not (vehicle and k == "other"))
+    walks = sum(1 for limb in parts.limbs if limb.kind == "leg") >= _WALKING_LEGS
+    kinds = tuple(
+        k for k in _COMMANDED if not (vehicle and k == "other") and not (walks and k == "leg")
+    )
     limbs = [limb for limb in parts.limbs if limb.kind in kinds]
     joints = [name for limb in limbs for name in limb.joints]
     firsts = {limb.joints[0] for limb in limbs}

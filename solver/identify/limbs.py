@@ -23,9 +23,15 @@ Where names say nothing, the chains' places and shapes still speak:
   away from their palm, legs down to the ground);
 * two leg chains whose first joints turn about one line, side by side on one side of the
   body, are the two motors of one leg closed by a linkage (a five-bar leg, the loop a URDF
-  cannot write): one leg (:func:`five_bars`);
+  cannot write): one leg (:func:`five_bars`), when the graph shows the loop: their ends meet
+  (closer than their motors sit), or a mimic joint of one follows a joint of the other. Two
+  legs that hang from different points of the base and end as far apart as they start (a
+  front and a rear hip turning about one line along the body) are two legs;
 * one long chain of equal modules whose axes alternate, on a body that has nothing else, is a
-  *spine*: a snake robot, no arm (:func:`spine`);
+  *spine*: a snake robot, no arm (:func:`spine`); a module may hold one joint or two (a yaw
+  and a pitch joint close together), and the chain may carry single leaf joints on its
+  modules and nothing else (passive side wheels): it is still a spine, and they are passive
+  (:func:`wheeled_spine`);
 * a short chain from the root that carries a whole hand and nothing else is that hand's *wrist*
   (a hand hung from its forearm), no arm (:func:`wrist`).
 
@@ -37,7 +43,7 @@ from __future__ import annotations
 
 from collections import deque
 from dataclasses import dataclass, replace
-from itertools import pairwise
+from itertools import islice, pairwise
 
 from solver.identify.pose import distance, parallel, perpendicular
 from solver.identify.readers.urdf import Joint
@@ -54,6 +60,7 @@ __all__ = [
     "legs_by_place",
     "sort_limbs",
     "spine",
+    "wheeled_spine",
     "wrist",
 ]
 
@@ -76,9 +83,18 @@ _LEG_DROP = 0.25
 # The two motors of a five-bar leg sit this close (metres), on one line; legs are paired only
 # on a body of at most this many leg chains (pairing compares each with each).
 _FIVE_BAR_GAP = 0.15
+# The two chains of a five-bar leg close their loop where they end: their ends are closer than
+# half their motors' gap, or than this (metres) when the motors sit at one point.
+_LOOP_CLOSED = 0.01
+# Joints looked at below each motor for a mimic partner (a leg has a few; bounds a stranger's).
+_MOST_LOOP_JOINTS = 256
 _MOST_FIVE_BAR_LEGS = 64
 # A snake's modules are alike: every spacing within this share of the middle one.
 _MODULE_SPREAD = 0.1
+# A snake's module holds one joint or two (a yaw and a pitch joint close together).
+_MODULE_JOINTS = (1, 2)
+# A spine carries at least this many single leaf joints to be read with side wheels.
+_SIDE_WHEELS = 2
 
 
 @dataclass(frozen=True, slots=True)
@@ -217,8 +233,11 @@ def five_bars(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
         if id(one) in used:
             continue
         for other in legs[index + 1 :]:
-            if id(other) not in used and _coaxial(tree, one, other):
-                why = "two motors of one five-bar leg (their first joints turn about one line)"
+            if id(other) not in used and _coaxial(tree, one, other) and _closed(tree, one, other):
+                why = (
+                    "two motors of one five-bar leg (their first joints turn about one line, "
+                    "their chains close a loop)"
+                )
                 merged[id(one)] = replace(one, joints=one.joints + other.joints, why=why)
                 used.update((id(one), id(other)))
                 break
@@ -248,6 +267,32 @@ def _coaxial(tree: JointTree, one: Limb, other: Limb) -> bool:
     return same_side and (gap < 1e-6 or parallel(line, axis))
 
 
+def _closed(tree: JointTree, one: Limb, other: Limb) -> bool:
+    """The two chains close a loop, as a five-bar leg's do: their ends meet (closer than half
+    the gap between their first joints), or a mimic joint below one follows a joint below the
+    other (a closed chain written as mimic partners)."""
+    poses = tree.poses
+    first, second = tree.urdf.joint(one.joints[0]), tree.urdf.joint(other.joints[0])
+    if first is None or second is None:
+        return False
+    gap = distance(poses.place(first.child), poses.place(second.child))
+    if distance(poses.place(one.tip), poses.place(other.tip)) < max(gap / 2, _LOOP_CLOSED):
+        return True
+    if not tree.couplings.driver_of:
+        return False
+    below_one, below_other = _below(tree, first), _below(tree, second)
+    driver = tree.couplings.driver
+    return any(driver(name) in below_other for name in below_one) or any(
+        driver(name) in below_one for name in below_other
+    )
+
+
+def _below(tree: JointTree, joint: Joint) -> set[str]:
+    """The joint and the joints below it (at most ``_MOST_LOOP_JOINTS`` of them)."""
+    below = islice(tree.urdf.subtree_joints(joint.child), _MOST_LOOP_JOINTS)
+    return {joint.name, *(j.name for j in below)}
+
+
 def spine(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     """The body's one limb as a *spine* when it is a snake's: a long chain with no arm or leg
     names and no gripper, of equal modules (every spacing between joints alike), each joint's
@@ -264,15 +309,69 @@ def spine(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
         return limbs
     joints = [j for j in (tree.urdf.joint(name) for name in limb.joints) if j is not None]
     # A snake may have a head; arm or leg names say it is something else.
-    named = any(
-        part in tree.parts_of(j.name) | tree.parts_of(j.child)
-        for j in joints
-        for part in ("arm", "leg")
-    )
+    named = _named_limb(tree, joints)
     if named or not _alternating(tree, joints) or not _modules(tree, joints):
         return limbs
     why = f"a chain of {len(joints)} equal modules whose axes alternate, nothing else (a spine)"
     return [replace(limb, kind="spine", why=why)]
+
+
+def wheeled_spine(
+    tree: JointTree, limbs: list[Limb], trunk: list[str]
+) -> tuple[list[Limb], list[str], list[str]]:
+    """A snake whose modules carry passive side wheels: the trunk is one unbranched path from
+    the root of at least ``spine_min_joints`` joints (no arm or leg names, equal modules, axes
+    alternating) and every limb is a single unnamed leaf joint on one of its links. Returns the
+    limbs (the spine alone), the trunk (none) and the side joints; else what it was given."""
+    unchanged: tuple[list[Limb], list[str], list[str]] = (limbs, trunk, [])
+    joints = [j for j in (tree.urdf.joint(name) for name in trunk) if j is not None]
+    if (
+        len(joints) != len(trunk)
+        or len(joints) < tree.profile.limb("spine_min_joints")
+        or len(limbs) < _SIDE_WHEELS
+        or not _one_path(tree, joints)
+        or _named_limb(tree, joints)
+    ):
+        return unchanged
+    links = {tree.urdf.root, *(joint.child for joint in joints)}
+    if not all(
+        limb.kind == "other" and len(limb.joints) == 1 and _carrier(tree, limb.base) in links
+        for limb in limbs
+    ):
+        return unchanged
+    if not _alternating(tree, joints) or not _modules(tree, joints):
+        return unchanged
+    why = (
+        f"a chain of {len(joints)} joints in equal modules whose axes alternate, carrying only "
+        f"{len(limbs)} single leaf joint(s) (a spine with passive side wheels)"
+    )
+    spine_limb = Limb("spine", tuple(trunk), joints[0].parent, joints[-1].child, why=why)
+    return [spine_limb], [], [limb.joints[0] for limb in limbs]
+
+
+def _one_path(tree: JointTree, joints: list[Joint]) -> bool:
+    """Each joint is the next movable joint below the one before, from the root (or a link
+    fixed to it)."""
+    if not _on_the_root(tree, joints[0].parent):
+        return False
+    return all(_carrier(tree, joint.parent) == before.child for before, joint in pairwise(joints))
+
+
+def _carrier(tree: JointTree, link: str) -> str:
+    """The link a movable joint ends in that carries ``link`` (through fixed joints); the root
+    when none does."""
+    joint = tree.urdf.parent_joint(link)
+    while joint is not None and not joint.movable:
+        joint = tree.urdf.parent_joint(joint.parent)
+    return tree.urdf.root if joint is None else joint.child
+
+
+def _named_limb(tree: JointTree, joints: list[Joint]) -> bool:
+    return any(
+        part in tree.parts_of(j.name) | tree.parts_of(j.child)
+        for j in joints
+        for part in ("arm", "leg")
+    )
 
 
 def _alternating(tree: JointTree, joints: list[Joint]) -> bool:
@@ -281,10 +380,19 @@ def _alternating(tree: JointTree, joints: list[Joint]) -> bool:
 
 
 def _modules(tree: JointTree, joints: list[Joint]) -> bool:
+    """The joints come in equal modules of one joint, or of two (a yaw and a pitch joint): the
+    spacings between them, every one or every other one, are alike."""
     places = [tree.poses.place(joint.child) for joint in joints]
-    spacings = sorted(distance(a, b) for a, b in pairwise(places))
-    middle = spacings[len(spacings) // 2]
-    return middle > 0 and all(abs(s - middle) <= _MODULE_SPREAD * middle for s in spacings)
+    spacings = [distance(a, b) for a, b in pairwise(places)]
+    return any(
+        all(_alike(spacings[start::period]) for start in range(period)) for period in _MODULE_JOINTS
+    )
+
+
+def _alike(spacings: list[float]) -> bool:
+    ordered = sorted(spacings)
+    middle = ordered[len(ordered) // 2]
+    return middle > 0 and all(abs(s - middle) <= _MODULE_SPREAD * middle for s in ordered)
 
 
 def wrist(tree: JointTree, limbs: list[Limb], fingers: int) -> list[Limb]:

@@ -75,8 +75,12 @@ class RoleReader:
 
     def _plugin_parts(self, plugin: PluginTag) -> frozenset[str]:
         found = set()
+        # The file is what runs; a name is a label its author chose (often copied from the
+        # plugin above it: a frame publisher named ``simple_buoyancy``). The name speaks only
+        # for a plugin that gives no file.
+        said = plugin.filename.strip() or plugin.name
         for part, pattern in self.profile.plugins:
-            if pattern.search(f"{plugin.name} {plugin.filename}"):
+            if pattern.search(said):
                 found.add(part)
         # A plugin that lists thruster entries drives thrusters, whatever it is called (a
         # floating body's controller with a <thruster> per propeller).
@@ -88,7 +92,7 @@ class RoleReader:
         return frozenset(found)
 
     def plugins_of(self, part: str) -> list[PluginTag]:
-        """The model plugins whose name or file name the profile reads as ``part``."""
+        """The model plugins whose file name (or name, when none) the profile reads as ``part``."""
         return [p for p in self.urdf.plugins if part in self.plugin_parts[id(p)]]
 
     def plugin_label(self, plugin: PluginTag) -> str:

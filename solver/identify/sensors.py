@@ -2,7 +2,9 @@
 
 A *detection* is one physical sensor seen by one source: a Gazebo ``<sensor type=...>`` or URDF
 ``<sensor>`` element, a Gazebo model plugin that simulates a sensor without an element (hector's
-IMU, GPS, barometer; RotorS' IMU and odometry), or a device in a topic list or bag
+IMU, GPS, barometer; RotorS' IMU and odometry), a Gazebo model the description includes
+(``<gazebo><include><uri>model://gps</uri>``, read by its model name with the plugin rules),
+or a device in a topic list or bag
 (:mod:`solver.identify.interfaces`). The profile's rules give each its *kind* (``lidar``,
 ``depth_camera``, ``sonar``, ...). Plugins that publish simulation ground truth are skipped, and
 a plugin that feeds an element already counted (same kind, same link) is the same sensor.
@@ -30,6 +32,7 @@ from solver.untrusted import shown
 __all__ = [
     "Detection",
     "Sensor",
+    "element_kind",
     "merge",
     "presented_count",
     "sensor_type_of",
@@ -81,7 +84,7 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
     found: list[tuple[Detection, str]] = []
     urdf_links = {t.name: t.link for t in urdf.sensors if t.origin == "urdf" and t.link}
     for tag in urdf.sensors:
-        kind = _element_kind(tag, profile)
+        kind = element_kind(tag, profile)
         link = tag.link
         if link is not None and not urdf.has_link(link) and link in urdf_links:
             link = urdf_links[link]  # a Gazebo <sensor> referring to a URDF <sensor> by name
@@ -100,7 +103,21 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
         if simulated == "unknown":
             name = f"{name} ({plugin.filename or plugin.name})"
         found.append((Detection(simulated, name, source, link), "plugin"))
+    for model in urdf.models:
+        included = _model_kind(model.model, profile)
+        if included is not None:
+            found.append((Detection(included, model.name, source, model.link), "model"))
     return tuple(_devices(found, urdf))
+
+
+def _model_kind(model: str, profile: Profile) -> str | None:
+    """The sensor a Gazebo model include adds (``model://gps``), read by its model name with
+    the rules for plugins that simulate a sensor: a kind they name, not just ``sensor``."""
+    truth = profile.ground_truth
+    if truth is not None and truth.search(model):
+        return None
+    kind = next((rule.kind for rule in profile.plugin_rules if rule.accepts(None, model)), None)
+    return None if kind == "unknown" else kind
 
 
 def _devices(found: list[tuple[Detection, str]], urdf: Urdf) -> list[Detection]:
@@ -179,7 +196,8 @@ def _above(link: str, urdf: Urdf) -> list[str]:
     return found
 
 
-def _element_kind(tag: SensorTag, profile: Profile) -> str:
+def element_kind(tag: SensorTag, profile: Profile) -> str:
+    """The kind of device a sensor element is, by the profile's element rules."""
     kind = tag.type or "unknown"  # a URDF <sensor> with no kind element: told by its name
     rays = _rays(tag)
     for rule in profile.element_rules:

@@ -9,9 +9,11 @@ body travels in a few more ways, each read here:
   model plugin's parameters (a vehicle plugin of its own), not on a body that rolls or walks;
   rotor-named joints too few to fly, said as such.
 * *Water*: thrusters a thruster plugin lists by a link no joint moves (a hull's list); hints
-  of a hull at the surface (a surface plugin, ``<metacentric_width>``; a GPS where nothing says
-  the body dives) or of a body below it (hydrodynamics or underwater-object plugins, a DVL or
-  pressure sensor). Buoyancy says only that the body is in water.
+  of a hull at the surface (a surface plugin, ``<metacentric_width>``; a body whose buoyancy
+  compensation is above 1, buoyancy over weight: it floats; a GPS or a lidar where nothing
+  says the body dives: satellites are heard and laser light carries only above the water) or
+  of a body below it (hydrodynamics or underwater-object plugins, a DVL or pressure sensor).
+  Buoyancy says only that the body is in water.
 * *Trimmed models*: wheel joints of type fixed, and rotor-named leaf links fixed to the body,
   still say what the whole model does (read with doubt by :mod:`solver.identify.classifier`).
 
@@ -27,6 +29,7 @@ from collections.abc import Sequence
 from solver.identify.actuation import with_role
 from solver.identify.limbs import Limb
 from solver.identify.roles import Role
+from solver.identify.sensors import element_kind
 from solver.identify.tree import JointTree
 
 __all__ = [
@@ -149,8 +152,9 @@ def surface_hints(tree: JointTree) -> tuple[str, ...]:
     """A body in water at the surface: surface plugins, and the words the profile's ``surface``
     pattern reads in the hull's own elements (``<metacentric_width>``, wind on its buoyancy)
     or in the parameters of its water plugins, never in a sensor's settings (a barometer's
-    water-surface offset). With none of them, and nothing of a body below the surface, a GPS
-    says it: satellites are heard only above the water."""
+    water-surface offset); a body whose buoyancy compensation is above 1 (it floats). With
+    none of them, and nothing of a body below the surface, a GPS or a lidar says it:
+    satellites are heard, and a laser scans, only above the water."""
     pattern = tree.profile.plugin_pattern("surface")
     if pattern is None or not (tree.reader.marine):
         return ()
@@ -159,20 +163,48 @@ def surface_hints(tree: JointTree) -> tuple[str, ...]:
     for part in ("marine", "thruster", "surface"):
         for plugin in tree.reader.plugins_of(part):
             hints += sorted({tag.lower() for tag, _ in plugin.params if pattern.search(tag)})
+    hints += _floating_hull(tree)
     if not hints and not underwater_hints(tree):
-        hints += _satellite_receivers(tree)
+        hints += _above_water_sensors(tree)
     return tuple(dict.fromkeys(hints))
 
 
-def _satellite_receivers(tree: JointTree) -> list[str]:
-    """GPS receivers: sensor elements of a satellite type, or plugins named so."""
-    found = [s.name or s.type for s in tree.urdf.sensors if s.type in ("gps", "navsat")]
+def _floating_hull(tree: JointTree) -> list[str]:
+    """The body (its root link, or a link fixed to it) declares a buoyancy compensation above 1:
+    buoyancy over weight, it floats (a part of it, a thruster, may sink: not the body)."""
+    for link in tree.urdf.links:
+        if link.buoyancy is not None and link.buoyancy > 1 and _on_the_body(tree, link.name):
+            return [f"{link.name} buoyancy {link.buoyancy:g} x weight (floats)"]
+    return []
+
+
+def _on_the_body(tree: JointTree, link: str) -> bool:
+    """``link`` is the root, or fixed to it through joints that do not move."""
+    joint = tree.urdf.parent_joint(link)
+    while joint is not None and not joint.movable:
+        joint = tree.urdf.parent_joint(joint.parent)
+    return joint is None
+
+
+def _above_water_sensors(tree: JointTree) -> list[str]:
+    """GPS receivers (sensor elements of a satellite type, or plugins named so) and lidars (a
+    ray sensor the profile reads as a lidar: it scans in air, water absorbs its light)."""
+    found = [
+        f"{s.name or s.type} (GPS: heard above water)"
+        for s in tree.urdf.sensors
+        if s.type in ("gps", "navsat")
+    ]
     found += [
-        tree.reader.plugin_label(p)
+        f"{tree.reader.plugin_label(p)} (GPS: heard above water)"
         for p in tree.urdf.plugins
         if _GPS.search(f"{p.name} {p.filename}")
     ]
-    return [f"{name} (a GPS receiver: satellites are heard above the water)" for name in found][:1]
+    found += [
+        f"{s.name or s.type} (lidar: scans in air)"
+        for s in tree.urdf.sensors
+        if element_kind(s, tree.profile) == "lidar"
+    ]
+    return found[:1]
 
 
 def underwater_hints(tree: JointTree) -> tuple[str, ...]:

@@ -163,6 +163,52 @@ def test_a_chain_of_equal_modules_with_alternating_axes_is_a_snakes_spine() -> N
     assert result.kinematic_type is None  # the article has no snake
 
 
+def wheeled_snake(modules: int = 4, *, names: str = "j") -> RobotText:
+    """A snake of two-joint modules (a yaw joint, then 2.5 cm on a pitch joint, then 18 cm to
+    the next module), each module carrying two leaf wheel joints, one on each side and one
+    ahead of the other (revolute joints with limits, as a model of passive wheels may write
+    them)."""
+    robot = RobotText("wheeled_snake", root="m0")
+    link = "m0"
+    for i in range(1, modules + 1):
+        yaw = builders.placed(
+            robot, f"{names}{i}_yaw", "revolute", link, f"y{i}", xyz="0.18 0 0", axis="0 0 1"
+        )
+        link = builders.placed(
+            robot, f"{names}{i}_pitch", "revolute", yaw, f"p{i}", xyz="0.025 0 0", axis="0 1 0"
+        )
+        for side, x, y in (("a", -0.03, 0.04), ("b", 0.03, -0.04)):
+            builders.placed(
+                robot, f"w{i}{side}", "revolute", link, f"w{i}{side}_link",
+                xyz=f"{x} {y} -0.05", axis="0 1 0",
+            )  # fmt: skip
+    return robot
+
+
+def test_a_snake_of_two_joint_modules_with_passive_side_wheels_is_still_a_spine() -> None:
+    robot = wheeled_snake()
+    for i in range(1, 5):  # every joint driven, the side wheels too
+        for joint in (f"j{i}_yaw", f"j{i}_pitch", f"w{i}a", f"w{i}b"):
+            robot.add(builders.transmission(joint))
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["spine"]
+    assert len(result.body.limbs[0].joints) == 8
+    assert result.structure == "Serpentine"
+    roles = {role.joint: role.role for role in result.roles}
+    assert {roles[f"w{i}{side}"] for i in range(1, 5) for side in "ab"} == {"passive"}
+    assert {c.motion_control: c.source for c in result.motion_controls} == {
+        "Joint": "urdf: 8 limb joint(s) with a transmission"
+    }
+
+
+def test_a_chain_named_as_an_arm_with_leaves_on_it_is_no_spine() -> None:
+    result = identify_urdf(wheeled_snake(names="arm").text())
+    assert result.body is not None
+    assert "spine" not in [limb.kind for limb in result.body.limbs]
+    assert result.structure != "Serpentine"
+
+
 def test_an_arm_of_unequal_links_is_no_spine() -> None:
     robot = builders.snake(7)
     text = robot.text().replace('<origin xyz="0.1 0 0"', '<origin xyz="0.3 0 0"', 2)
@@ -192,17 +238,67 @@ def test_a_short_chain_carrying_a_whole_hand_is_its_wrist_not_an_arm(
     assert result.structure == "Hand"
 
 
-def test_two_coaxial_leg_chains_on_one_side_are_one_five_bar_leg() -> None:
+def five_bar_legs(*, close: str = "ends") -> RobotText:
+    """Two legs of two coaxial motors each, 4 cm apart on one line across the body; each leg's
+    two knees close the loop (``ends``: both chains end at one foot point; ``mimic``: ends
+    apart, the second knee written as a mimic partner of the first; ``open``: neither)."""
     robot = RobotText("five_bar")
     for corner, x, y in (("front_left", 0.2, 0.1), ("front_right", 0.2, -0.1)):
         for half, dy in (("a", -0.02), ("b", 0.02)):
-            builders.leg(robot, robot.root, f"{corner}_{half}", ("motor", "knee"))
-            robot.joints[-3] = robot.joints[-3].replace(
-                "<limit", f'<origin xyz="{x} {y + dy} 0"/><axis xyz="0 1 0"/><limit'
-            )
-    body = detect_body(parse_urdf(robot.text()), load_profile())
+            motor = builders.placed(
+                robot, f"{corner}_{half}_motor", "revolute", robot.root,
+                f"{corner}_{half}_motor_link", xyz=f"{x} {y + dy} 0", axis="0 1 0",
+            )  # fmt: skip
+            inward = -dy if close == "ends" else 0.0
+            mimic = f'<mimic joint="{corner}_a_knee"/>' if close == "mimic" and half == "b" else ""
+            kind = "continuous" if mimic else "revolute"
+            builders.placed(
+                robot, f"{corner}_{half}_knee", kind, motor, f"{corner}_{half}_knee_link",
+                xyz=f"0 {inward} -0.1", axis="0 1 0", extra=mimic,
+            )  # fmt: skip
+    return robot
+
+
+def test_two_coaxial_leg_chains_on_one_side_that_meet_at_the_foot_are_one_five_bar_leg() -> None:
+    body = detect_body(parse_urdf(five_bar_legs().text()), load_profile())
     assert body.count("leg") == 2
     assert all(len(limb.joints) == 4 for limb in body.limbs)
+    assert all("close a loop" in limb.why for limb in body.limbs)
+
+
+def test_coaxial_leg_chains_whose_loop_is_written_as_a_mimic_partner_are_one_leg() -> None:
+    body = detect_body(parse_urdf(five_bar_legs(close="mimic").text()), load_profile())
+    assert body.count("leg") == 2
+
+
+def test_coaxial_leg_chains_that_end_as_far_apart_as_they_start_are_two_legs() -> None:
+    body = detect_body(parse_urdf(five_bar_legs(close="open").text()), load_profile())
+    assert body.count("leg") == 4
+
+
+def test_front_and_rear_hips_turning_about_one_line_along_the_body_are_two_legs() -> None:
+    """Four 3-joint legs whose hips roll about the body's long axis: on each side the front
+    and the rear hip turn about one line, 12 cm apart, and their feet are as far apart."""
+    robot = RobotText("small_dog")
+    for corner, x, y in (("lf", 0.06, 0.04), ("lb", -0.06, 0.04), ("rf", 0.06, -0.04),
+                         ("rb", -0.06, -0.04)):  # fmt: skip
+        hip = builders.placed(
+            robot, f"base_{corner}1", "revolute", robot.root, f"{corner}1", xyz=f"{x} {y} 0",
+            axis="1 0 0",
+        )  # fmt: skip
+        upper = builders.placed(
+            robot, f"{corner}1_{corner}2", "revolute", hip, f"{corner}2", xyz="0 0.02 0",
+            axis="0 1 0",
+        )  # fmt: skip
+        lower = builders.placed(
+            robot, f"{corner}2_{corner}3", "revolute", upper, f"{corner}3", xyz="0 0 -0.05",
+            axis="0 1 0",
+        )  # fmt: skip
+        robot.joint(f"{corner}_foot", "fixed", lower, f"{corner}foot", '<origin xyz="0 0 -0.05"/>')
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert result.body.count("leg") == 4
+    assert result.structure == "Quadruped"
 
 
 def test_a_short_unnamed_chain_carrying_a_camera_is_a_head() -> None:

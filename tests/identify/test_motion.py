@@ -89,6 +89,29 @@ def test_arm_joints_with_transmissions_are_the_evidence_for_joint_control() -> N
     assert controls(robot)["Joint"] == "urdf: 3 limb joint(s) with a transmission"
 
 
+def test_transmissions_on_the_legs_of_a_walker_carry_its_gait_not_joint_commands() -> None:
+    robot = builders.quadruped()
+    for corner in ("FL", "FR", "RL", "RR"):
+        for joint in ("hip", "thigh", "calf"):
+            robot.add(builders.transmission(f"{corner}_{joint}"))
+    assert controls(robot) == {"Walking": "urdf: likely, not declared: 4 legs to walk on"}
+
+
+def test_an_arm_on_a_walker_with_transmissions_is_joint_control_and_its_legs_are_not() -> None:
+    robot = builders.legged_manipulator()
+    for joint in ("FL_hip", "FR_hip", "RL_hip", "RR_hip", "shoulder_pan", "elbow"):
+        robot.add(builders.transmission(joint))
+    assert controls(robot)["Joint"] == "urdf: 2 limb joint(s) with a transmission"
+
+
+def test_one_leg_with_transmissions_walks_nowhere_and_its_joints_take_commands() -> None:
+    robot = RobotText("leg_rig")
+    builders.leg(robot, robot.root, "test", ("hip", "knee", "ankle"))
+    for joint in ("test_hip", "test_knee", "test_ankle"):
+        robot.add(builders.transmission(joint))
+    assert controls(robot) == {"Joint": "urdf: 3 limb joint(s) with a transmission"}
+
+
 def transformable_multirotor() -> RobotText:
     """Three modules joined by driven hinges, each carrying a tilting rotor (a gimbal)."""
     robot = RobotText("modules")

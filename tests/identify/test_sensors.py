@@ -296,3 +296,33 @@ def test_a_ray_sensor_read_from_its_element_knows_its_sweep_and_reach() -> None:
     (tag,) = parse_urdf(robot.text()).sensors
     assert (tag.horizontal_samples, tag.max_range) == (1600, 12.0)
     assert tag.sweep == pytest.approx(6.28)
+
+
+def included(uri: str, name: str = "gps0", parent: str = "base_link") -> str:
+    """A Gazebo model added by ``<include>`` and fixed to ``parent`` by a joint beside it."""
+    return (
+        f"  <gazebo><include><uri>{uri}</uri><pose>0.1 0 0 0 0 0</pose><name>{name}</name>"
+        f'</include><joint name="{name}_joint" type="fixed"><child>{name}::link</child>'
+        f"<parent>{parent}</parent></joint></gazebo>"
+    )
+
+
+def test_a_gps_model_a_description_includes_is_a_gps_on_the_link_it_is_fixed_to() -> None:
+    robot = builders.quadrotor()
+    robot.add(included("model://gps"))
+    detections = sensors_from_urdf(parse_urdf(robot.text()), load_profile())
+    assert [(d.kind, d.name, d.link) for d in detections] == [("gps", "gps0", "base_link")]
+    # A flown body with a position fix could fly to waypoints (a guess, said so).
+    controls = {c.motion_control for c in identify_urdf(robot.text()).motion_controls}
+    assert controls == {"Flight", "Waypoint"}
+
+
+@pytest.mark.parametrize(
+    "uri",
+    ["model://ground_plane", "model://my_sensor_mount", "file://gps/model.sdf", "model://"],
+    ids=["not a sensor", "says only 'sensor'", "not a model URI", "no model name"],
+)
+def test_an_included_model_whose_name_names_no_sensor_kind_adds_none(uri: str) -> None:
+    robot = builders.quadrotor()
+    robot.add(included(uri))
+    assert sensors_from_urdf(parse_urdf(robot.text()), load_profile()) == ()

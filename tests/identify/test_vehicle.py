@@ -203,3 +203,77 @@ def test_a_gps_on_a_hull_that_shows_nothing_of_diving_says_it_floats() -> None:
     diving.add(builders.gazebo_sensor("base_link", "gps", "gps"))
     diving.add(builders.gazebo_sensor("dvl_link", "dvl", "dvl"))
     assert identify_urdf(diving.text()).structure == "Underwater Vehicle"
+
+
+SCAN = (
+    "<ray><scan><horizontal><samples>360</samples><min_angle>-3.14</min_angle>"
+    "<max_angle>3.14</max_angle></horizontal></scan><range><min>0.1</min><max>30</max></range>"
+    "</ray>"
+)
+
+
+def test_a_lidar_on_a_hull_that_shows_nothing_of_diving_says_it_floats() -> None:
+    robot = thrusters_by_name()
+    robot.add(builders.model_plugin("float", "libbuoyancy_gazebo_plugin.so"))
+    robot.add(builders.gazebo_sensor("base_link", "ray", "scanner", SCAN))
+    result = identify_urdf(robot.text())
+    assert result.structure == "Surface Vessel"
+    assert "floats at the surface: scanner (lidar: scans in air)" in result.evidence
+    # Below the surface a ray sensor is something else (a sonar's beams): a DVL says it dives.
+    robot.add(builders.gazebo_sensor("dvl_link", "dvl", "dvl"))
+    assert identify_urdf(robot.text()).structure == "Underwater Vehicle"
+
+
+def test_a_one_ray_range_finder_on_a_hull_says_nothing_of_the_surface() -> None:
+    robot = thrusters_by_name()
+    robot.add(builders.model_plugin("float", "libbuoyancy_gazebo_plugin.so"))
+    one_ray = SCAN.replace("<samples>360</samples>", "<samples>1</samples>")
+    robot.add(builders.gazebo_sensor("base_link", "ray", "echo", one_ray))
+    assert surface_hints(tree_of(robot)) == ()
+
+
+def hull_with_compensation(hull: str, thrusters: str = "0.6") -> str:
+    """A hull whose link gives ``<buoyancy><compensation>`` (buoyancy over weight) under a
+    thruster plugin of a floating-body simulator; each thruster link gives ``thrusters``."""
+    robot = RobotText("hull", root="hull")
+    for i in range(2):
+        robot.joint(f"t{i}", "revolute", "hull", f"t{i}_link", '<axis xyz="0 1 0"/>')
+    robot.add(
+        builders.model_plugin(
+            "floating", "libfloating_control.so", "<thruster><map>1 0 0 0 0 0</map></thruster>"
+        )
+    )
+    text = robot.text()
+    for link, value in (("hull", hull), ("t0_link", thrusters), ("t1_link", thrusters)):
+        text = text.replace(
+            f'<link name="{link}"/>',
+            f'<link name="{link}"><buoyancy><compensation>{value}</compensation></buoyancy></link>',
+        )
+    return text
+
+
+def test_a_hull_whose_buoyancy_is_above_its_weight_floats_at_the_surface() -> None:
+    result = identify_urdf(hull_with_compensation("1.2"))
+    assert result.structure == "Surface Vessel"
+    assert "floats at the surface: hull buoyancy 1.2 x weight (floats)" in result.evidence
+
+
+@pytest.mark.parametrize("hull", ["0.98", "1", "nan", "", "1e999"])
+def test_a_hull_that_does_not_float_by_its_compensation_stays_underwater(hull: str) -> None:
+    result = identify_urdf(hull_with_compensation(hull, thrusters="5"))
+    assert result.structure == "Underwater Vehicle"  # a sinking hull; its thrusters' buoyancy
+    assert not any("floats" in line for line in result.evidence)  # is not the body's
+
+
+def test_a_buoyancy_plugin_with_no_depth_cue_is_said_in_water_without_denying_the_plugin() -> None:
+    robot = thrusters_by_name()
+    robot.add(builders.model_plugin("float", "libbuoyancy_gazebo_plugin.so"))
+    # A frame publisher whose name was copied from the buoyancy plugin above it: not water.
+    robot.add(builders.model_plugin("simple_buoyancy", "libworld_frame_publisher.so"))
+    result = identify_urdf(robot.text())
+    assert "water plugin(s): libbuoyancy_gazebo_plugin.so" in result.evidence
+    assert not any("no buoyancy" in line for line in result.evidence)
+    assert (
+        "in water, nothing says below or at the surface: no hydrodynamics or thruster plugin, "
+        "no DVL or pressure sensor, no surface cue"
+    ) in result.evidence

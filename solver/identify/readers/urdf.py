@@ -33,6 +33,7 @@ __all__ = [
     "MAX_PARTS",
     "Joint",
     "Link",
+    "ModelInclude",
     "PluginTag",
     "SensorTag",
     "Urdf",
@@ -48,6 +49,8 @@ MAX_PARTS = 250_000
 # from the plugin's leaf elements at any depth (a thruster list, a fin's joint), at most this many.
 _MAX_PARAM_TEXT = 200
 _MAX_PARAMS = 400
+# A Gazebo model include's URI (``model://gps``).
+_MODEL_URI = "model://"
 # Distinct element names kept from the whole document (hull and buoyancy hints live there).
 _MAX_TAGS = 2000
 # Warnings of one kind listed per description; the rest are counted.
@@ -58,6 +61,9 @@ _MAX_WARNINGS = 20
 class Link:
     name: str
     line: int | None = None
+    # Its <buoyancy><compensation> (freefloating_gazebo, the usv plugins): buoyancy force over
+    # weight; above 1 the link floats. None when it gives none (or not a finite number).
+    buoyancy: float | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -124,6 +130,17 @@ class PluginTag:
 
 
 @dataclass(frozen=True, slots=True)
+class ModelInclude:
+    """A Gazebo model a ``<gazebo><include>`` adds (``<uri>model://gps</uri>``): ``model`` is
+    the name in its URI, ``link`` the link a ``<joint>`` beside it fixes it to (if any)."""
+
+    model: str
+    name: str
+    link: str | None = None
+    line: int | None = None
+
+
+@dataclass(frozen=True, slots=True)
 class SensorTag:
     """A URDF ``<sensor>`` or Gazebo ``<sensor type=...>`` element."""
 
@@ -176,6 +193,8 @@ class Urdf:
     # The names of the document's elements outside sensors and plugins (lower case): a hull's
     # <metacentric_width>, a link's <buoyancy> with <windVelocity> say what the robot floats in.
     tags: frozenset[str] = frozenset()
+    # Gazebo models the description includes (a GPS model, a camera model), in document order.
+    models: tuple[ModelInclude, ...] = ()
 
     @cached_property
     def _children(self) -> dict[str, tuple[Joint, ...]]:
@@ -323,6 +342,7 @@ class _Builder:
             self.warnings(),
             _command_interfaces(root),
             _tags(root),
+            _models(root),
         )
 
     def _links(self, elements: list[etree._Element]) -> dict[str, Link]:
@@ -338,7 +358,7 @@ class _Builder:
                     f"duplicate link {shown(name, quoted=True)} (first at line {found[name].line})",
                 )
             else:
-                found[name] = Link(name, line_of(element))
+                found[name] = Link(name, line_of(element), _compensation(element))
         return found
 
     def _joints(self, elements: list[etree._Element], links: dict[str, Link]) -> list[Joint]:
@@ -693,6 +713,28 @@ def _uncompiled_xacro(root: etree._Element, file: str) -> list[Fault]:
     return found
 
 
+def _models(root: etree._Element) -> tuple[ModelInclude, ...]:
+    """The ``<gazebo><include>`` models (at most ``_MAX_PARAMS``): the model name of a
+    ``model://NAME`` URI, the include's ``<name>``, and the ``<parent>`` of a ``<joint>`` in the
+    same ``<gazebo>`` whose ``<child>`` is one of that model's links (``NAME::link``)."""
+    found: list[ModelInclude] = []
+    for gazebo in root.findall("gazebo"):
+        parents = {
+            (joint.findtext("child") or "").split("::")[0].strip(): joint.findtext("parent")
+            for joint in gazebo.findall("joint")
+        }
+        for include in gazebo.findall("include"):
+            uri = (include.findtext("uri") or "").strip()
+            if not uri.startswith(_MODEL_URI) or len(found) >= _MAX_PARAMS:
+                continue
+            model = uri[len(_MODEL_URI) :].strip("/").split("/")[0][:_MAX_PARAM_TEXT]
+            name = (include.findtext("name") or model).strip()[:_MAX_PARAM_TEXT]
+            parent = parents.get(name)
+            link = parent.strip() if parent else None
+            found.append(ModelInclude(model, name, link, line_of(include)))
+    return tuple(found)
+
+
 def _plugin(element: etree._Element, reference: str | None) -> PluginTag:
     params: list[tuple[str, str]] = []
     groups: dict[str, None] = {}
@@ -738,6 +780,12 @@ def _vector(
         return default
     x, y, z = (p or 0.0 for p in parts)
     return (x, y, z)
+
+
+def _compensation(link: etree._Element) -> float | None:
+    """A link's ``<buoyancy><compensation>`` value (its first), or None."""
+    found = link.find("buoyancy/compensation")
+    return None if found is None else _float(found.text)
 
 
 def _integer(text: str | None) -> int | None:

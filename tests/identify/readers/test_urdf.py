@@ -139,3 +139,20 @@ def test_a_plugins_entries_are_named_once_each_and_bounded() -> None:
     assert plugin.groups[:2] == ("thruster", "entry_0")
     assert len(plugin.groups) == 400  # the reader keeps at most this many
     assert ("name", "a") in plugin.params
+
+
+def test_included_models_are_read_with_the_link_they_are_fixed_to_and_bounded() -> None:
+    robot = builders.ugv()
+    robot.add(
+        "<gazebo><include><uri>model://gps/</uri><name>fix</name></include>"
+        '<joint name="j" type="fixed"><child>fix::link</child><parent>base_link</parent></joint>'
+        "<include><uri>model://camera</uri></include>"
+        "<include><uri>http://example.com/model</uri></include></gazebo>"
+    )
+    robot.add("<gazebo>" + "<include><uri>model://x</uri></include>" * 1000 + "</gazebo>")
+    models = parse_urdf(robot.text()).models
+    assert [(m.model, m.name, m.link) for m in models[:2]] == [
+        ("gps", "fix", "base_link"),
+        ("camera", "camera", None),
+    ]
+    assert len(models) == 400  # the hostile thousand are cut where plugin parameters are
