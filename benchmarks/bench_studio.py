@@ -15,6 +15,15 @@ The peer, in the same run: ``solve(team, count_only=True)`` in-process on the sa
 many times. The ratio (API p50 / solve p50) is what one answer over HTTP costs beyond the
 library: parsing the address, reading the selection as a team file, solving, JSON, HTTP.
 
+The peer over HTTP (issue 42, item 5: a change within 2x of it): a handwritten Starlette app
+(:func:`peer_app`, a few lines) whose handler reads the same query into a team with the public
+types (:class:`~solver.Team`, :class:`~solver.TypeSelection`), calls the same library function
+the studio calls for that answer (``solve(team, count_only=True)``) and answers its JSON
+(``Solution.to_dict()``, what the studio answers too), in a process of its own served by uvicorn
+as the studio is (:func:`serve_peer`). Every change is asked of both, alternately, by the same
+kind of client; the studio's and the peer's CPU time (their processes', from the kernel's
+accounting) per change and their latency medians are reported with their ratios.
+
 Every answer is checked against counts computed here from how the team was built (SPEC.md
 section 4's closed form), never from the code under test.
 
@@ -31,18 +40,25 @@ and the matrix of the listed configurations (``solve`` then ``chart_svg``: what 
 before).
 
 Run: ``python -m pytest benchmarks/bench_studio.py -s -p no:cacheprovider``.
+The peer alone: ``python -m benchmarks.bench_studio TEAM.yaml`` (prints its address).
 """
 
 from __future__ import annotations
 
+import functools
 import http.client
 import json
 import math
+import os
 import re
 import statistics
+import subprocess
+import sys
 import time
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
+from pathlib import Path
+from typing import TYPE_CHECKING
 from urllib.parse import parse_qsl, urlencode, urlsplit
 
 import pytest
@@ -50,14 +66,23 @@ from pytest_benchmark.fixture import BenchmarkFixture
 
 from benchmarks.bench_count import SCALES
 from benchmarks.latency import report
-from solver import Team, load_team, solve
+from solver import RuleSet, Team, TypeSelection, load_team, solve
 from solver.reporting.plot import figure_bytes, radar_figure
 from solver.reporting.svg import chart_svg
 from solver.studio.security import cookie_name
 from solver.studio.selection import parse_query, query_of, team_of
+from tests.conftest import ROOT
 from tests.studio.conftest import Server, stop, studio_process
 
+if TYPE_CHECKING:
+    from starlette.applications import Starlette
+    from starlette.requests import Request
+    from starlette.responses import Response
+
 CHANGES = 60
+# Rounds of CHANGES new selections each, for the comparison with the peer over HTTP: the
+# processes' CPU time is counted in clock ticks (10 ms), so a round alone is too short.
+PEER_ROUNDS = 5
 
 # The article's sensor groups and arrangements (SPEC.md section 3), for the closed form.
 GROUPS = {
@@ -139,14 +164,26 @@ def scaled_changes(team: Team, label: str = "change") -> list[Change]:
     return changes
 
 
-class Client:
-    """One keep-alive connection to the studio, as a browser's page keeps."""
+@dataclass(frozen=True)
+class Peer:
+    """The handwritten peer's process (:func:`serve_peer`) and its address."""
 
-    def __init__(self, server: Server) -> None:
+    url: str
+    process: subprocess.Popen[str]
+
+
+class Client:
+    """One keep-alive connection to the studio (or the peer), as a browser's page keeps."""
+
+    def __init__(self, server: Server | Peer) -> None:
         where = urlsplit(server.url)
         self.connection = http.client.HTTPConnection(where.hostname or "", where.port, timeout=300)
-        # The cookie a browser keeps after opening the printed address.
-        self.headers = {"cookie": f"{cookie_name(where.port or 0)}={server.token}"}
+        # The cookie a browser keeps after opening the printed address (the peer asks none).
+        self.headers = (
+            {"cookie": f"{cookie_name(where.port or 0)}={server.token}"}
+            if isinstance(server, Server)
+            else {}
+        )
 
     def get(self, path: str) -> bytes:
         self.connection.request("GET", path, headers=self.headers)
@@ -171,6 +208,82 @@ def server(scaled_team: Team, tmp_path_factory: pytest.TempPathFactory) -> Itera
     stop(started.process)
 
 
+def peer_app(rules: dict[str, RuleSet]) -> Starlette:
+    """The peer: what a user would write to answer ``GET /api/solve?<selection>`` with the
+    library (``rules``: the rule sets by the ids the query names, read once)."""
+    from starlette.applications import Starlette
+    from starlette.responses import JSONResponse
+    from starlette.routing import Route
+
+    def answer(request: Request) -> Response:
+        query = request.query_params
+        chosen: dict[str, list[str]] = {}
+        for key, value in query.multi_items():
+            chosen.setdefault(key, []).append(value)
+        ruleset = rules[query["rules"]]
+        selections = []
+        for kinematic_type in chosen.get("type", []):
+            domains: list[tuple[str | int, ...]] = []
+            for characteristic in ruleset.characteristics:
+                key = f"{kinematic_type}.{characteristic.name}"
+                if characteristic.name == ruleset.team_key:
+                    domains.append((kinematic_type,))
+                elif key in chosen:
+                    wanted = set(chosen[key])
+                    domains.append(tuple(v for v in characteristic.values if str(v) in wanted))
+                elif f"{key}.max" in chosen:
+                    most = int(chosen[f"{key}.max"][0])
+                    domains.append(tuple(v for v in characteristic.values if int(v) <= most))
+                else:
+                    domains.append(characteristic.values)
+            selections.append(TypeSelection(kinematic_type, tuple(domains)))
+        team = Team(query.get("name", "team"), "<query>", ruleset, tuple(selections))
+        return JSONResponse(solve(team, count_only=True).to_dict())
+
+    return Starlette(routes=[Route("/api/solve", answer)])
+
+
+def serve_peer(team_file: str) -> None:
+    """The peer in a process of its own, served by uvicorn (HTTP/1.1 by h11, as the studio
+    is), its address printed once its socket listens: the rule sets of Case 3 (``paper``) and
+    of ``team_file`` (``start``, as the studio names the rules it was started with)."""
+    import uvicorn
+
+    from solver.studio.server import bind
+
+    rules = {"paper": load_team("case3").rules, "start": load_team(team_file).rules}
+    sock = bind("127.0.0.1", 0)  # as the studio binds its socket (a TCP one: no Nagle delay)
+    print(f"http://127.0.0.1:{sock.getsockname()[1]}/", flush=True)
+    config = uvicorn.Config(
+        peer_app(rules), http="h11", log_level="error", access_log=False, lifespan="off"
+    )
+    uvicorn.Server(config).run(sockets=[sock])
+
+
+@pytest.fixture(scope="module")
+def peer(scaled_team: Team) -> Iterator[Peer]:
+    process = subprocess.Popen(
+        [sys.executable, "-m", "benchmarks.bench_studio", scaled_team.file],
+        cwd=ROOT,
+        stdout=subprocess.PIPE,
+        text=True,
+        start_new_session=True,
+    )
+    assert process.stdout is not None
+    url = process.stdout.readline().strip()
+    try:
+        assert url.startswith("http://"), "the peer did not start"
+        yield Peer(url, process)
+    finally:
+        stop(process)
+
+
+def cpu_seconds(process: subprocess.Popen[str]) -> float:
+    """A process's CPU time so far (user and system, every thread), from the kernel."""
+    fields = Path(f"/proc/{process.pid}/stat").read_text().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
 def timed(changes: list[Change], ask: Callable[[Change], tuple[int, int]]) -> list[float]:
     latencies = []
     for change in changes:
@@ -192,10 +305,17 @@ def compare(
     server: Server,
     changes: list[Change],
     team_for: Callable[[Change], Team],
+    *,
+    peer: Peer | None = None,
 ) -> None:
-    client = Client(server)
+    """The studio's answers to ``changes`` over HTTP, then ``solve`` in-process on the same
+    teams; with ``peer``, each change is also asked of the peer, alternately (which of the two
+    is asked first changes with every change), and both processes' CPU time is counted."""
+    clients = [Client(server)] + ([Client(peer)] if peer is not None else [])
+    answered: list[list[float]] = [[] for _ in clients]  # latencies, per client
+    cpu: list[float] = []  # CPU seconds per change, per process
 
-    def over_http(change: Change) -> tuple[int, int]:
+    def over_http(change: Change, client: Client) -> tuple[int, int]:
         totals = json.loads(client.get(f"/api/solve?{change.query}"))["totals"]
         return totals["valid_robots"], totals["ui_configurations"]
 
@@ -203,36 +323,78 @@ def compare(
         totals = solve(team_for(change), count_only=True).totals
         return totals.valid_robots, totals.ui_configurations
 
+    def measured() -> None:
+        processes = [server.process] + ([peer.process] if peer is not None else [])
+        started = [cpu_seconds(p) for p in processes]
+        order = list(range(len(clients)))
+        for change in changes:
+            for n in order:
+                answered[n] += timed([change], functools.partial(over_http, client=clients[n]))
+            order.reverse()
+        ended = [cpu_seconds(p) for p in processes]
+        cpu.extend((end - start) / len(changes) for start, end in zip(started, ended, strict=True))
+
     try:
-        over_http(changes[0])  # the studio's first answer loads its modules
-        api: list[float] = []
-        benchmark.pedantic(  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
-            lambda: api.extend(timed(changes, over_http)), rounds=1, iterations=1
-        )
+        for client in clients:
+            over_http(changes[0], client)  # the first answer loads the server's modules
+        benchmark.pedantic(measured, rounds=1, iterations=1)  # type: ignore[no-untyped-call]  # pytest-benchmark has no hints
     finally:
-        client.close()
-    peer = timed(changes, in_process)
-    ratio = statistics.median(api) / statistics.median(peer)
+        for client in clients:
+            client.close()
+    api = answered[0]
+    local = timed(changes, in_process)
+    ratio = statistics.median(api) / statistics.median(local)
     benchmark.extra_info.update(
         {
-            "peer_median_ms": round(statistics.median(peer) * 1000, 3),
-            "peer_p95_ms": round(percentile(peer, 0.95) * 1000, 3),
+            "peer_median_ms": round(statistics.median(local) * 1000, 3),
+            "peer_p95_ms": round(percentile(local, 0.95) * 1000, 3),
             "ratio_to_solve": round(ratio, 1),
+            "studio_cpu_ms": round(cpu[0] * 1000, 3),
         }
     )
+    note = ""
+    if peer is not None:
+        by_peer = answered[1]
+        over = statistics.median(api) / statistics.median(by_peer)
+        # The kernel counts CPU time in ticks (10 ms): an untimed run's few changes may get none.
+        cpu_ratio = cpu[0] / cpu[1] if cpu[0] and cpu[1] else math.nan
+        benchmark.extra_info.update(
+            {
+                "http_peer_median_ms": round(statistics.median(by_peer) * 1000, 3),
+                "http_peer_p95_ms": round(percentile(by_peer, 0.95) * 1000, 3),
+                "ratio_to_http_peer": round(over, 2),
+                "http_peer_cpu_ms": round(cpu[1] * 1000, 3),
+                "cpu_ratio_to_http_peer": round(cpu_ratio, 2),
+                # Peer / ours in CPU time, as tools/bench_targets.py reads every target.
+                "starlette_over_studio": round(1 / cpu_ratio, 3),
+            }
+        )
+        note = (
+            f"; the Starlette peer over HTTP median {statistics.median(by_peer) * 1000:.2f} ms"
+            f" (studio / peer = {over:.2f}x); CPU per change: studio {cpu[0] * 1000:.2f} ms,"
+            f" peer {cpu[1] * 1000:.2f} ms ({cpu_ratio:.2f}x)"
+        )
     report(
         benchmark,
         name,
         api,
         f"; in-process solve(count_only=True) median "
-        f"{statistics.median(peer) * 1000:.2f} ms, p95 {percentile(peer, 0.95) * 1000:.2f} ms"
-        f"; API / solve = {ratio:.1f}x",
+        f"{statistics.median(local) * 1000:.2f} ms, p95 {percentile(local, 0.95) * 1000:.2f} ms"
+        f"; API / solve = {ratio:.1f}x{note}",
     )
 
 
-def test_studio_answers_a_change_of_case_3(benchmark: BenchmarkFixture, server: Server) -> None:
+def rounds(make: Callable[[str], list[Change]], benchmark: BenchmarkFixture) -> list[Change]:
+    """:data:`PEER_ROUNDS` lists of new selections (one when not timed)."""
+    count = 1 if benchmark.disabled else PEER_ROUNDS
+    return [change for n in range(count) for change in make(f"change {n}")]
+
+
+def test_studio_answers_a_change_of_case_3(
+    benchmark: BenchmarkFixture, server: Server, peer: Peer
+) -> None:
     rules = load_team("case3").rules
-    changes = case3_changes()
+    changes = rounds(case3_changes, benchmark)
     # Teams are read before the peer is timed: it times solve alone.
     teams = {
         c.query: team_of(parse_query(parse_qsl(c.query), rules, "paper"), rules) for c in changes
@@ -243,14 +405,15 @@ def test_studio_answers_a_change_of_case_3(benchmark: BenchmarkFixture, server: 
         server,
         changes,
         lambda change: teams[change.query],
+        peer=peer,
     )
 
 
 def test_studio_answers_a_change_of_ten_million_robots(
-    benchmark: BenchmarkFixture, server: Server, scaled_team: Team
+    benchmark: BenchmarkFixture, server: Server, scaled_team: Team, peer: Peer
 ) -> None:
     rules = scaled_team.rules
-    changes = scaled_changes(scaled_team)
+    changes = rounds(lambda label: scaled_changes(scaled_team, label), benchmark)
     teams = {
         c.query: team_of(parse_query(parse_qsl(c.query), rules, "start"), rules) for c in changes
     }
@@ -260,6 +423,7 @@ def test_studio_answers_a_change_of_ten_million_robots(
         server,
         changes,
         lambda change: teams[change.query],
+        peer=peer,
     )
 
 
@@ -452,3 +616,7 @@ def test_studio_draws_the_charts_pages_other_charts_of_a_new_selection(
         latencies,
         f"{note}; HTTP / in-process = {ratio:.1f}x",
     )
+
+
+if __name__ == "__main__":
+    serve_peer(sys.argv[1])

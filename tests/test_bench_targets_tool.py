@@ -67,9 +67,9 @@ def test_a_growth_target_takes_the_worst_doubling_and_can_be_missed(tool: Module
 
 
 def test_a_figure_recorded_by_the_benchmark_is_read_from_its_extra_info(tool: ModuleType) -> None:
-    name = "test_batch_whole_process_two_workers_against_one"
+    name = "test_batch_whole_process_two_workers_against_one[400 teams]"
     run = tool.Run.of(_run({name: 1.0}, {name: {"j2_over_j1": 1.7}}))
-    row = _row(tool.table(run), "`batch -j2` over `batch -j1`, 400 teams, wall clock")
+    row = _row(tool.table(run), "`batch -j2` over `batch -j1`, 400 teams of Case 3, wall clock")
     assert row[3:] == [">= 1.6x", "2.00x", "1.70x", "met"]
 
 

@@ -37,6 +37,7 @@ minimum cover every engine uses when components overlap (:mod:`solver.core.cover
 from __future__ import annotations
 
 import importlib
+import sys
 from collections.abc import Iterator
 from dataclasses import replace
 from functools import cached_property
@@ -116,7 +117,9 @@ def lookup(name: str) -> Engine:
         raise InputError.at(
             "<arguments>", f"unknown engine {name!r}; choose from {', '.join(DESCRIPTIONS)}"
         )
-    return cast("Engine", importlib.import_module(f"solver.engines.{name}"))
+    module = f"solver.engines.{name}"
+    # Loaded once: the import machinery costs microseconds per call even for a loaded module.
+    return cast("Engine", sys.modules.get(module) or importlib.import_module(module))
 
 
 def choose(
@@ -142,12 +145,9 @@ def choose(
     counts = None
     reason = ""
     bounds = _Bounds(team.rules, selection)
-    over = (
-        selection.size > max_robots
-        or (name == "csp" and limit("csp-robots").exceeded(selection.size))
-        or (name in ("auto", "fast") and limit("fast-rows").exceeded(bounds.rows))
-    )
-    if name in ("auto", "structure") or over:
+    # The structure counts first when asked to, or when enumerating would pass a limit (the
+    # bounds are worked out only then: counting by structure needs none of them).
+    if name in ("auto", "structure") or _over(selection, name, max_robots, bounds):
         try:
             counts = lookup("structure").count(team.rules, selection, memo)
         except StructureTooComplex as error:
@@ -180,6 +180,15 @@ def choose(
         # The fast engine enumerates value classes (robots where components overlap).
         _refuse(team, selection, limit("fast-rows"), bounds.rows, bound=False, reason=reason)
     return chosen, counts
+
+
+def _over(selection: TypeSelection, name: str, max_robots: int, bounds: _Bounds) -> bool:
+    """Whether enumerating ``selection`` with engine ``name`` could pass one of its limits."""
+    return (
+        selection.size > max_robots
+        or (name == "csp" and limit("csp-robots").exceeded(selection.size))
+        or (name == "fast" and limit("fast-rows").exceeded(bounds.rows))
+    )
 
 
 def check_listing(

@@ -15,9 +15,10 @@ Two observations make counting independent of how many robots there are:
 For one kinematic type: valid robots = product over blocks of the block's weight; UI
 configurations = product over blocks of the distinct component combinations the block reaches
 (the article's closed form, a product of component counts, is the constraint-free special
-case). Team totals are sums over kinematic types. All arithmetic is on Python integers, so
-10^30 robots are counted exactly. Kinematic types whose selections have the same structure are
-counted once (:class:`Memo`).
+case, and rules without constraints are counted as that product: :func:`count`). Team totals
+are sums over kinematic types. All arithmetic is on Python integers, so 10^30 robots are
+counted exactly. Kinematic types whose selections have the same structure are counted once
+(:class:`Memo`).
 
 Where the structure does not allow this (a block whose class combinations exceed
 :data:`BLOCK_LIMIT`), :class:`~solver.errors.StructureTooComplex` says so and the ``auto``
@@ -89,9 +90,11 @@ class _Class:
 class _Block:
     """Characteristics linked by constraints, and their valid class combinations.
 
-    Small blocks list their combinations; large ones (more than :data:`VECTOR` class
-    combinations) hold them as a numpy mask over the product of their classes, so counting
-    never makes a Python tuple per combination, and the list is made only if asked for.
+    Small blocks list their combinations and are tallied once, as they are made (plain
+    attributes: a cached property takes a lock on every first use, and counting a team made
+    over a hundred of them). Large ones (more than :data:`VECTOR` class combinations) hold
+    them as a numpy mask over the product of their classes, so counting never makes a Python
+    tuple per combination, and the list is made only if asked for.
     """
 
     def __init__(
@@ -103,14 +106,14 @@ class _Block:
         self.positions = positions
         self._combinations = combinations
         self.grid = grid
+        self._tally = None if combinations is None else _tally(combinations)
 
-    @cached_property
+    @property
     def combinations(self) -> tuple[tuple[tuple[_Class, ...], int], ...]:
         """(one class per position, the robots it stands for), in product order."""
         if self._combinations is not None:
             return self._combinations
-        assert self.grid is not None  # one of the two is always given
-        return self.grid.combinations()
+        return self._grid_combinations
 
     @staticmethod
     def partial_key(classes: tuple[_Class, ...]) -> Key | None:
@@ -119,44 +122,57 @@ class _Block:
             return None
         return tuple(c.membership[0] for c in classes)
 
-    @cached_property
-    def _figures(self) -> _Tally:
-        """A listed block's figures, in one pass over its combinations."""
-        return _tally(self.combinations)
+    # A grid block's figures, each worked out over its mask when first asked for.
+    @property
+    def _grid(self) -> _Grid:
+        assert self.grid is not None  # one of the two is always given
+        return self.grid
 
     @cached_property
+    def _grid_combinations(self) -> tuple[tuple[tuple[_Class, ...], int], ...]:
+        return self._grid.combinations()
+
+    @cached_property
+    def _grid_weights(self) -> dict[Key, int]:
+        return self._grid.partial_weights()
+
+    @cached_property
+    def _grid_configurations(self) -> int:
+        return len(self._grid.keys())
+
+    @cached_property
+    def _grid_robots(self) -> tuple[int, int]:
+        return self._grid.robots(served=False), self._grid.robots(served=True)
+
+    @cached_property
+    def _grid_overlaps(self) -> bool:
+        return self._grid.overlaps()
+
+    @property
     def partial_weights(self) -> dict[Key, int]:
         """Robots per partial configuration (robots with a value in no component left out)."""
-        if self.grid is not None:
-            return self.grid.partial_weights()
-        return self._figures.partial_weights
+        return self._grid_weights if self._tally is None else self._tally.partial_weights
 
-    @cached_property
+    @property
     def configurations(self) -> int:
         """How many partial configurations the block reaches (values in one component each)."""
-        if self.grid is not None:
-            return len(self.grid.keys())
-        return len(self.partial_weights)
+        if self._tally is None:
+            return self._grid_configurations
+        return len(self._tally.partial_weights)
 
-    @cached_property
+    @property
     def robots(self) -> int:
-        if self.grid is not None:
-            return self.grid.robots(served=False)
-        return self._figures.robots
+        return self._grid_robots[0] if self._tally is None else self._tally.robots
 
-    @cached_property
+    @property
     def served(self) -> int:
         """Robots whose every class is in some component."""
-        if self.grid is not None:
-            return self.grid.robots(served=True)
-        return self._figures.served
+        return self._grid_robots[1] if self._tally is None else self._tally.served
 
-    @cached_property
+    @property
     def overlaps(self) -> bool:
         """Whether a class of a valid combination is in several components."""
-        if self.grid is not None:
-            return self.grid.overlaps()
-        return self._figures.overlaps
+        return self._grid_overlaps if self._tally is None else self._tally.overlaps
 
 
 class _Tally(NamedTuple):
@@ -173,6 +189,14 @@ def _tally(combinations: tuple[tuple[tuple[_Class, ...], int], ...]) -> _Tally:
     overlaps = False
     for combination, weight in combinations:
         robots += weight
+        if len(combination) == 1:  # most blocks: one characteristic
+            membership = combination[0].membership
+            if membership:
+                overlaps = overlaps or len(membership) > 1
+                own = (membership[0],)
+                served += weight
+                weights[own] = weights.get(own, 0) + weight
+            continue
         # Plain loops: a block's combinations are few and short, and a generator per step
         # cost more than the step.
         components: list[int] | None = []
@@ -294,6 +318,10 @@ def count(rules: RuleSet, selection: TypeSelection, memo: Memo | None = None) ->
     ``memo``, shared across the kinematic types of a team, avoids counting twice a structure
     that several types share (their robots differ only by the type's name).
     """
+    if not rules.constraints:
+        free = _free_count(rules, selection, memo)
+        if free is not None:
+            return free
     classes = _selected_classes(rules, selection, memo)
     signature: list[object] = [_shape(found, memo) for found in classes]
     # The type itself only matters through the constraint conditions it meets (each type is
@@ -667,28 +695,79 @@ def _joint_classes(rules: RuleSet, blocks: Sequence[_Block]) -> Iterator[RobotCl
 def _shape(classes: list[_Class], memo: Memo | None) -> tuple[tuple[int, int], ...]:
     """What counting sees of a characteristic's classes: which classes, how many values each."""
     if memo is not None and id(classes) in memo.shapes:
-        return memo.shapes[id(classes)]
-    shape = tuple((c.index, len(c.members)) for c in classes)
-    if memo is not None and any(classes is whole for whole in memo.whole.values()):
-        memo.shapes[id(classes)] = shape  # whole-domain lists live as long as the memo
-    return shape
+        return memo.shapes[id(classes)]  # a whole domain's (see _selected_classes)
+    return tuple([(c.index, len(c.members)) for c in classes])
+
+
+def _free_count(rules: RuleSet, selection: TypeSelection, memo: Memo | None) -> Counts | None:
+    """The counts of a kinematic type under rules without constraints: the article's closed
+    form, a product over the characteristics, which vary freely (robots: the selected values;
+    served robots: those in some component; configurations: the components they reach).
+    ``None`` where a selected value is in several components (the minimum cover decides)."""
+    robots = served = configurations = 1
+    for position, domain in enumerate(selection.domains):
+        factor = _free_factor(rules, position, domain, memo)
+        if factor is None:
+            return None
+        robots *= len(domain)
+        served *= factor[0]
+        configurations *= factor[1]
+    return Counts(selection.kinematic_type, robots, configurations, robots - served)
+
+
+# A selection of at most this many values of a characteristic is counted value by value when
+# nothing links its characteristics; a longer one (a range of 100,000 counts) by its classes.
+FREE_VALUES = 64
+
+
+def _free_factor(
+    rules: RuleSet, position: int, domain: Sequence[Value], memo: Memo | None
+) -> tuple[int, int] | None:
+    """Of one characteristic's selected values: how many are in some component, and how many
+    components they reach; ``None`` if one is in several."""
+    if len(domain) > FREE_VALUES:
+        memberships = [
+            (len(c.members), c.membership) for c in _classes(rules, position, domain, memo)
+        ]
+    else:
+        characteristic = rules.characteristics[position]
+        membership, where = characteristic.membership, characteristic.positions
+        memberships = [(1, membership[where[value]]) for value in domain]
+    served = 0
+    reached = set()
+    for size, components in memberships:
+        if len(components) > 1:
+            return None
+        if components:
+            served += size
+            reached.add(components[0])
+    return served, len(reached)
 
 
 def _selected_classes(
     rules: RuleSet, selection: TypeSelection, memo: Memo | None = None
 ) -> list[list[_Class]]:
     """Per characteristic: the selected values, grouped into the rule set's value classes."""
-    found = []
-    for position, domain in enumerate(selection.domains):
-        whole = len(domain) == len(rules.characteristics[position].values)
-        if whole and memo is not None and position in memo.whole:
-            found.append(memo.whole[position])
-            continue
-        classes = _cut(rules, position, domain)
-        if whole and memo is not None:
-            memo.whole[position] = classes
-        found.append(classes)
-    return found
+    return [
+        _classes(rules, position, domain, memo) for position, domain in enumerate(selection.domains)
+    ]
+
+
+def _classes(
+    rules: RuleSet, position: int, domain: Sequence[Value], memo: Memo | None
+) -> list[_Class]:
+    """One characteristic's selected values grouped into its value classes (a whole domain's
+    made once per team: ``memo``)."""
+    whole = len(domain) == len(rules.characteristics[position].values)
+    if whole and memo is not None and position in memo.whole:
+        found: list[_Class] = memo.whole[position]
+        return found
+    classes = _cut(rules, position, domain)
+    if whole and memo is not None:
+        memo.whole[position] = classes
+        # Its shape too, by identity: whole-domain lists live as long as the memo.
+        memo.shapes[id(classes)] = tuple([(c.index, len(c.members)) for c in classes])
+    return classes
 
 
 def _cut(rules: RuleSet, position: int, domain: Sequence[Value]) -> list[_Class]:
@@ -737,6 +816,8 @@ def _linked_groups(
     """The characteristics' positions in groups that constraints link (each group and the
     groups in position order), and per group the numbers of the constraints over it."""
     width = len(rules.characteristics)
+    if not rules.constraints:  # nothing links anything: a group per characteristic
+        return [[i] for i in range(width)], [[] for _ in range(width)]
     index = {name: i for i, name in enumerate(rules.names)}
     parent = list(range(width))
 
@@ -777,6 +858,9 @@ def _block(
     """One group's block: no combination when a characteristic has no class selected, its
     combinations listed when few, a grid of them past :data:`VECTOR`; refused past
     :data:`BLOCK_LIMIT`."""
+    if len(group) == 1 and not numbers and len(classes[group[0]]) <= VECTOR:
+        # Most blocks: one characteristic, no rule; each class is a valid combination.
+        return _Block((group[0],), tuple([((c,), len(c.members)) for c in classes[group[0]]]))
     if any(not classes[i] for i in group):
         return _Block(tuple(group), ())
     size = math.prod(len(classes[i]) for i in group)
@@ -807,8 +891,6 @@ def _listed(
     characteristic, the block's overwritten as its combinations are tried)."""
     choices = itertools.product(*(classes[i] for i in group))
     if not numbers:  # no rule over the block: every combination is valid
-        if len(group) == 1:
-            return tuple(((found,), len(found.members)) for found in classes[group[0]])
         return tuple((choice, math.prod(len(c.members) for c in choice)) for choice in choices)
     index = {name: i for i, name in enumerate(rules.names)}
     checks = [

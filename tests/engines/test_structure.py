@@ -44,12 +44,26 @@ def test_counts_10_to_the_30_robots_exactly(write_file: WriteFile) -> None:
 
 
 def test_types_with_the_same_structure_are_counted_once(write_file: WriteFile) -> None:
-    team = load_team(TEAMS / "case3.yaml")
+    # A constraint links the characteristics (without one, counting is a product of factors
+    # and needs no memo): UAV and UGV meet it alike, so their counts are one structure's.
+    write_file(
+        "rules.yaml",
+        "characteristics:\n"
+        "  kinematic_type: {values: [UAV, UGV, Humanoid]}\n"
+        "  motion_control: {values: [Flight, Driving, Walking]}\n"
+        "  sensor_count: {range: {min: 1, max: 9}}\n"
+        "constraints:\n"
+        "  - name: Walking is for legged robots\n"
+        "    when: {motion_control: Walking}\n"
+        "    require: {kinematic_type: [Humanoid]}\n",
+    )
+    team = load_team(write_file("team.yaml", "rules: rules.yaml\nteam: {UAV: {}, UGV: {}}\n"))
     memo = Memo()
-    uav = team.selections[0]
-    count(team.rules, uav, memo)
-    count(team.rules, uav, memo)
+    uav, ugv = (count(team.rules, selection, memo) for selection in team.selections)
     assert len(memo.counts) == 1
+    assert (uav.kinematic_type, ugv.kinematic_type) == ("UAV", "UGV")
+    assert (uav.valid_robots, uav.ui_configurations) == (ugv.valid_robots, ugv.ui_configurations)
+    assert (uav.valid_robots, uav.ui_configurations) == (2 * 9, 2 * 9)
 
 
 def test_linked_characteristics_too_many_to_count_fall_back_to_enumeration(
@@ -142,3 +156,37 @@ constraints:
     assert of("motion_control", "Driving") == (2 * 3, 3 * 3)
     assert of("sensor_count", "1") == (2 * 2, 2 * 3)
     assert (rules.names.index("motion_control"), 0) not in use  # Flight: never a UGV's
+
+
+def test_long_selections_without_constraints_count_as_their_robots_enumerated(
+    write_file: WriteFile,
+) -> None:
+    # More than FREE_VALUES values of a characteristic are counted by their classes, the rest
+    # value by value; counts 121..200 and sensor "z" are in no component (unserved robots).
+    write_file(
+        "rules.yaml",
+        "characteristics:\n"
+        "  kinematic_type: {values: [A, B, C]}\n"
+        "  sensor: {values: [x, y, z], components: [{name: xy, values: [x, y]}]}\n"
+        "  sensor_count:\n"
+        "    range: {min: 1, max: 200}\n"
+        "    components: [{name: few, min: 1, max: 50}, {name: many, min: 51, max: 120}]\n",
+    )
+    every_other = ", ".join(str(n) for n in range(1, 200, 2))  # 100 counts, not a range
+    team = load_team(
+        write_file(
+            "team.yaml",
+            "rules: rules.yaml\nteam:\n"
+            "  A: {sensor_count: 150}\n"
+            f"  B: {{sensor: [x, z], sensor_count: [{every_other}]}}\n"
+            "  C: {sensor: [z], sensor_count: 40}\n",
+        )
+    )
+    assert len(team.selections[0].domains[2]) > structure.FREE_VALUES
+    counted = solve(team, count_only=True).by_type
+    enumerated = solve(team, engine="fast").by_type
+    figures = [(t.valid_robots, t.ui_configurations, t.unserved_robots) for t in counted]
+    assert figures == [(t.valid_robots, t.ui_configurations, t.unserved_robots) for t in enumerated]
+    # By hand: A: 3 sensors x 150 counts, served 2 x 120, configurations 1 x 2.
+    assert figures[0] == (450, 2, 450 - 240)
+    assert figures[2] == (40, 0, 40)
