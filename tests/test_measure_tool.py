@@ -181,24 +181,73 @@ def test_with_a_split_each_row_is_measured_in_its_part(tmp_path: Path) -> None:
     assert row_of(output, "**all**", "unsplit")[:5] == ["0", "-", "-", "0", "1"]
 
 
-def test_rows_of_the_second_fresh_set_are_held_out_whole_and_on_their_own_line(
+def test_the_highest_fresh_set_the_split_does_not_list_is_held_out_whole_on_its_own_line(
     tmp_path: Path,
 ) -> None:
     tiny_set(tmp_path / "fresh_set_2")
+    tiny_set(tmp_path / "fresh_set_3")
     split = tmp_path / "split.csv"
-    # The split lists none of its rows, or lists one as development: each is held out by its set.
+    # fresh_set_2 is listed (moved to development); fresh_set_3 is not: it is the blind one.
     split.write_text(
         "# seed 41, made by hand for this test\n"
         "set,robot,family,group,files_here,part\n"
-        "fresh_set_2,rover,mobile base,g1,no,development\n",
+        "fresh_set_2,rover,mobile base,g1,no,development\n"
+        "fresh_set_2,arm_called_humanoid,arm,g2,no,development\n"
+        "fresh_set_2,boat,surface vessel,g3,no,development\n",
         encoding="utf-8",
     )
-    output = measure("--set", str(tmp_path / "fresh_set_2"), "--split", str(split))
+    output = measure(
+        "--set",
+        str(tmp_path / "fresh_set_2"),
+        "--set",
+        str(tmp_path / "fresh_set_3"),
+        "--split",
+        str(split),
+    )
     # The rover (right), the arm (read as a manipulator, labelled humanoid) and the absent boat.
-    for part in ("held-out", "held-out (fresh)"):
+    for part in ("development", "held-out", "held-out (fresh)"):
         assert row_of(output, "**all**", part)[:5] == ["2", "1/2 (50%)", "1/2 (50%)", "0", "1"]
-    assert "| development |" not in output
-    assert "held-out 3, held-out (fresh) 3" in output
+    assert "development 3, held-out 3, held-out (fresh) 3" in output
+
+
+def test_a_fresh_set_the_split_lists_even_in_part_is_no_longer_blind(tmp_path: Path) -> None:
+    tiny_set(tmp_path / "fresh_set_4")
+    split = tmp_path / "split.csv"
+    split.write_text(
+        "# seed 41, made by hand for this test\n"
+        "set,robot,family,group,files_here,part\n"
+        "fresh_set_4,rover,mobile base,g1,no,development\n",
+        encoding="utf-8",
+    )
+    output = measure("--set", str(tmp_path / "fresh_set_4"), "--split", str(split))
+    # Listed: its rows are measured where the split puts them (unlisted rows: unsplit).
+    assert "held-out" not in output
+    assert "development 1, unsplit 2" in output
+
+
+def _measure_tool() -> Any:
+    spec = importlib.util.spec_from_file_location("measure_identification", SCRIPT)
+    assert spec is not None
+    assert spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = module  # its dataclasses look their module up by name
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_the_blind_set_is_the_highest_numbered_fresh_set_not_listed(tmp_path: Path) -> None:
+    tool = _measure_tool()
+    split = {("fresh_set_1", "a"): "development", ("fresh_set_2", "b"): "development"}
+    names = ["corpus", "fresh_set_1", "fresh_set_2", "fresh_set_3", "fresh_set_10", "fresh_set_x"]
+    assert tool.blind_set(names, split) == "fresh_set_10"
+    assert tool.blind_set(["corpus", "fresh_set_1", "fresh_set_2"], split) is None
+    for name in ("fresh_set_10", "fresh_set_2", "fresh_set_1", "notes", "fresh_set_x"):
+        (tmp_path / name).mkdir()
+    assert [p.name for p in tool.fresh_sets(tmp_path)] == [
+        "fresh_set_1",
+        "fresh_set_2",
+        "fresh_set_10",
+    ]
 
 
 def test_rows_of_the_first_fresh_set_are_measured_where_the_split_puts_them(
@@ -276,13 +325,15 @@ def test_the_shipped_split_holds_out_whole_groups_and_at_least_60_robots() -> No
     assert len({(row["set"], row["robot"]) for row in rows}) == len(rows)
 
 
-def test_the_shipped_split_puts_every_row_of_the_first_fresh_set_in_development() -> None:
+def test_the_shipped_split_puts_every_row_of_the_measured_fresh_sets_in_development() -> None:
     text = (ROOT / "tools" / "identification_split.csv").read_text(encoding="utf-8")
     rows = list(csv.DictReader(line for line in text.splitlines() if not line.startswith("#")))
-    with (ROOT / "tools" / "fresh_set_1" / "truth.csv").open(encoding="utf-8") as stream:
-        moved = {row["robot"] for row in csv.DictReader(stream)}
-    listed = {row["robot"]: row["part"] for row in rows if row["set"] == "fresh_set_1"}
-    assert set(listed) == moved
-    assert set(listed.values()) == {"development"}
-    # The second fresh set is held out by the measurement tool, never listed here.
-    assert not [row for row in rows if row["set"] == "fresh_set_2"]
+    for name in ("fresh_set_1", "fresh_set_2"):
+        with (ROOT / "tools" / name / "truth.csv").open(encoding="utf-8") as stream:
+            moved = {row["robot"] for row in csv.DictReader(stream)}
+        listed = {row["robot"]: row["part"] for row in rows if row["set"] == name}
+        assert set(listed) == moved
+        assert set(listed.values()) == {"development"}
+    # The blind set is held out by the measurement tool, never listed here (nor read here).
+    assert not [row for row in rows if row["set"] == "fresh_set_3"]
+    assert "moved whole to the development" in text

@@ -34,11 +34,14 @@ With ``--split`` (``tools/identification_split.csv`` by default, or a file named
 split's list, made by ``tools/split_identification.py`` with a fixed seed) the rows of every set
 are measured by the part the split gives them, ``development`` and ``held-out``, side by side in
 place of the sets; a row the split does not list is measured as ``unsplit``. With ``--all``,
-``tools/generalization_set`` and ``tools/fresh_set_1`` are measured too (the latter measured
-blind once as held-out, then moved to the development part: its README; the split lists its
-rows as ``development``), and ``tools/fresh_set_2`` when it is there: its rows (built blind, to
-measure the rules) are held out whole by their set, whatever the split lists, and count in
-``held-out`` and again on a line of their own, ``held-out (fresh)``.
+``tools/generalization_set`` and every ``tools/fresh_set_N`` folder are measured too. A fresh
+set is built blind, to measure the rules once, then moved to the development part (the split
+lists its rows as ``development``: ``tools/fresh_set_1`` and ``tools/fresh_set_2``, their
+READMEs). The *blind* set is the highest-numbered ``fresh_set_N`` among the sets measured
+whose name the split does not list at all (now ``tools/fresh_set_3``, when it is there): its
+rows are held out whole by their set, and count in ``held-out`` and again on a line of their
+own, ``held-out (fresh)``. Moving it to development is listing it in the split; another
+unlisted fresh set is measured as ``unsplit``.
 
 The sets are read in place and never copied. A set with no truth.csv is reported and skipped.
 """
@@ -47,6 +50,7 @@ from __future__ import annotations
 
 import argparse
 import csv
+import re
 import sys
 from collections import Counter
 from collections.abc import Callable, Iterable
@@ -68,9 +72,10 @@ from split_identification import (  # noqa: E402
 
 OWN_SET = ROOT / "tools" / "identification_set"
 ADDED_SET = ROOT / "tools" / "generalization_set"
-MOVED_SET = ROOT / "tools" / "fresh_set_1"
-FRESH_SET = ROOT / "tools" / "fresh_set_2"
-# The part the rows of FRESH_SET are also reported in, within the held-out part.
+TOOLS = ROOT / "tools"
+# A fresh set's folder name: fresh_set_N (the highest N the split does not list is the blind one).
+FRESH_NAME = re.compile(r"fresh_set_([0-9]+)")
+# The part the rows of the blind fresh set are also reported in, within the held-out part.
 FRESH_PART = "held-out (fresh)"
 PART_ORDER = ("development", "held-out", FRESH_PART, "unsplit")
 SPLIT = ROOT / "tools" / "identification_split.csv"
@@ -304,10 +309,32 @@ def locate(relative: str, folders: Iterable[Path]) -> Path:
     return next((path for path in candidates if path.is_file()), candidates[0])
 
 
-def parts_of(set_name: str, robot: str, split: dict[tuple[str, str], str]) -> list[str]:
+def fresh_number(name: str) -> int | None:
+    """N of a folder named ``fresh_set_N``; None for any other name."""
+    found = FRESH_NAME.fullmatch(name)
+    return int(found.group(1)) if found else None
+
+
+def fresh_sets(tools: Path = TOOLS) -> list[Path]:
+    """The ``fresh_set_N`` folders under ``tools``, by N."""
+    found = [(fresh_number(path.name), path) for path in tools.iterdir() if path.is_dir()]
+    return [path for number, path in sorted((n, p) for n, p in found if n is not None)]
+
+
+def blind_set(names: Iterable[str], split: dict[tuple[str, str], str]) -> str | None:
+    """The blind set among ``names``: the highest-numbered ``fresh_set_N`` the split lists no row
+    of (a fresh set moves to development by being listed)."""
+    listed = {set_name for set_name, _ in split}
+    unlisted = [name for name in names if fresh_number(name) is not None and name not in listed]
+    return max(unlisted, key=lambda name: fresh_number(name) or 0, default=None)
+
+
+def parts_of(
+    set_name: str, robot: str, split: dict[tuple[str, str], str], blind: str | None = None
+) -> list[str]:
     """The parts a row is measured in: its part in the split (``unsplit`` when it lists none);
-    a row of ``tools/fresh_set_2`` is held out by its set, and reported in the fresh part too."""
-    if set_name == FRESH_SET.name:
+    a row of the blind set is held out by its set, and reported in the fresh part too."""
+    if set_name == blind:
         return ["held-out", FRESH_PART]
     return [split.get((set_name, robot), "unsplit")]
 
@@ -321,8 +348,10 @@ def measure(
     *,
     split: dict[tuple[str, str], str] | None = None,
     parts: dict[str, Measured] | None = None,
+    blind: str | None = None,
 ) -> Measured | None:
-    """Measure one set; with ``split``, each row into the Measured of its part in ``parts``."""
+    """Measure one set; with ``split``, each row into the Measured of its part in ``parts``
+    (the rows of the set named ``blind`` held out whole, see ``parts_of``)."""
     truth = folder / "truth.csv"
     if not truth.is_file():
         return None
@@ -335,7 +364,7 @@ def measure(
         if split is not None and parts is not None:
             targets = [
                 parts.setdefault(part, Measured(part, truth, 0, Score(structures), {}, {}))
-                for part in parts_of(folder.name, row["robot"], split)
+                for part in parts_of(folder.name, row["robot"], split, blind)
             ]
             for measured in targets:
                 measured.rows += 1
@@ -420,9 +449,9 @@ def main(argv: list[str] | None = None) -> int:
         const=SPLIT,
         metavar="SPLIT.csv",
         help="measure by the parts of a split (default file: tools/identification_split.csv): "
-        "development and held-out side by side; with --all, tools/generalization_set and "
-        "tools/fresh_set_1 (development) and tools/fresh_set_2 when present (held out whole, "
-        "also as its own part, held-out (fresh))",
+        "development and held-out side by side; with --all, tools/generalization_set and every "
+        "tools/fresh_set_N (the highest-numbered one the split does not list is blind: held "
+        "out whole, also as its own part, held-out (fresh))",
     )
     parser.add_argument(
         "--profile",
@@ -434,7 +463,7 @@ def main(argv: list[str] | None = None) -> int:
     corpus = args.corpus or shared_folder() / "corpus"
     folders: list[Path] = list(args.sets or [])
     if args.all:
-        added = [ADDED_SET, MOVED_SET, *([FRESH_SET] if FRESH_SET.is_dir() else [])]
+        added = [ADDED_SET, *fresh_sets()]
         folders = [corpus, OWN_SET, *(added if args.split else []), *folders]
     elif not folders:
         folders = [corpus]
@@ -445,11 +474,19 @@ def main(argv: list[str] | None = None) -> int:
         return identify(urdf, srdf=srdf, rules=rules, profile=profile)
 
     split = read_split(args.split) if args.split else None
+    blind = blind_set((folder.name for folder in folders), split) if split is not None else None
     parts: dict[str, Measured] = {}
     sets: list[Measured] = []
     for folder in folders:
         measured = measure(
-            folder.name, folder, args.files, profile.structure_names, run, split=split, parts=parts
+            folder.name,
+            folder,
+            args.files,
+            profile.structure_names,
+            run,
+            split=split,
+            parts=parts,
+            blind=blind,
         )
         if measured is None:
             print(f"no labelled set at {folder} (truth.csv missing); nothing measured there\n")

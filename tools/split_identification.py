@@ -34,9 +34,14 @@ were written) are not split: they were measured blind once, whole, as held-out (
 ``tools/heldout_set``), and on 2026-11-29, having been looked at, were moved whole to the
 development part to tune on; every one is a development row.
 
-Rows of ``tools/fresh_set_2`` (built blind after that move) are not listed here: the
-measurement tool holds every one of them out whole, by its set, so this file need not change
-(nor be read) while that set is being built.
+Rows of ``tools/fresh_set_2`` (built blind after that move) were not listed here while it was
+blind; measured blind once, whole, as held-out, they were moved whole to the development part on
+2026-11-29 like those of ``tools/fresh_set_1``; every one is a development row.
+
+The blind set is never listed: ``tools/measure_identification.py`` holds out whole, by its set,
+the highest-numbered ``tools/fresh_set_N`` this file does not list (now ``tools/fresh_set_3``),
+so this file need not change (nor that set be read) while it is being built. Moving a fresh set
+to development is adding it to ``MOVED_SETS`` and re-making this file.
 
 The file written, ``tools/identification_split.csv``, has the seed and this method in its
 leading ``#`` lines, then one row per robot: ``set``, ``robot``, ``family``, ``group``,
@@ -57,7 +62,8 @@ SEED = 41
 SPLIT = ROOT / "tools" / "identification_split.csv"
 OWN_SET = ROOT / "tools" / "identification_set"
 ADDED_SET = ROOT / "tools" / "generalization_set"
-MOVED_SET = ROOT / "tools" / "fresh_set_1"
+# Fresh sets measured blind once, then moved whole to the development part (oldest first).
+MOVED_SETS = (ROOT / "tools" / "fresh_set_1", ROOT / "tools" / "fresh_set_2")
 DEVELOPMENT = "development"
 HELD_OUT = "held-out"
 FAMILY_OF_LABEL = {
@@ -149,11 +155,12 @@ def added_rows() -> list[dict[str, str]]:
 
 
 def moved_rows() -> list[dict[str, str]]:
-    """Rows of ``tools/fresh_set_1``: measured blind once as held-out, then moved whole to the
-    development part to tune on (the module docstring). Files kept outside."""
-    if not (MOVED_SET / "truth.csv").is_file():
-        return []
-    entries = split_rows([(MOVED_SET.name, MOVED_SET)], files_kept_out=True)
+    """Rows of the fresh sets in ``MOVED_SETS``: each measured blind once as held-out, then moved
+    whole to the development part to tune on (the module docstring). Files kept outside."""
+    entries: list[dict[str, str]] = []
+    for folder in MOVED_SETS:
+        if (folder / "truth.csv").is_file():
+            entries += split_rows([(folder.name, folder)], files_kept_out=True)
     return [{**entry, "part": DEVELOPMENT} for entry in entries]
 
 
@@ -167,7 +174,11 @@ HEADER = f"""\
 # Rows of tools/fresh_set_1 (first tools/heldout_set) were labelled after the rules were
 # written, from repositories no set had used, and measured blind once as held-out; on 2026-11-29
 # they were moved whole to the development part, to tune on (its README gives the blind figures).
-# Rows of tools/fresh_set_2 are not listed: the measurement tool holds them out whole by set.
+# Rows of tools/fresh_set_2 were labelled blind while the rules of the second round were written
+# and measured blind once as held-out; on 2026-11-29 they were moved whole to the development
+# part, to tune on (its README gives the blind figures).
+# The blind set (the highest-numbered tools/fresh_set_N, now fresh_set_3) is not listed: the
+# measurement tool holds it out whole by set.
 # Re-make and compare: python tools/split_identification.py --check
 """
 

@@ -207,7 +207,7 @@ class Body:
         if self.wings:
             lines.append(f"wing and control-surface link(s): {_names(self.wings)}")
         if self.flight_hints:
-            lines.append(f"flight named in plugin parameters: {_names(self.flight_hints)}")
+            lines.append(f"flight named in: {_names(self.flight_hints)}")
         return lines
 
     def _water(self) -> list[str]:

@@ -55,7 +55,14 @@ from solver.identify.profile import Profile, load_profile
 from solver.identify.readers.safexml import read_bytes
 from solver.identify.readers.urdf import Urdf, parse_urdf
 from solver.identify.roles import Role
-from solver.identify.sensors import Detection, Sensor, merge, presented_count, sensors_from_urdf
+from solver.identify.sensors import (
+    Detection,
+    Sensor,
+    merge,
+    presented_count,
+    sensors_from_urdf,
+    under_water,
+)
 from solver.limits import limit
 from solver.ros.description import TeleopDescription, description_beside, load_description
 from solver.ros.joints import JointStart
@@ -171,6 +178,10 @@ def identify_urdf(
     body = detect_body(urdf, profile)
     reading = classify(body, profile, rules, root=urdf.root, srdf=srdf, urdf=urdf)
     detections: list[Detection] = list(sensors_from_urdf(urdf, profile))
+    # A body in water that nothing places at the surface dives: its barometer is a depth gauge.
+    dives = body.marine and not body.surface_hints
+    if dives:
+        detections = list(under_water(detections))
     controls = [
         controls_from_description(
             body,
@@ -182,7 +193,8 @@ def identify_urdf(
         )
     ]
     for source in topics:
-        detections += sensors_from_topics(source.topics, profile, source.name)
+        topical = sensors_from_topics(source.topics, profile, source.name)
+        detections += under_water(topical) if dives else topical
         controls.append(
             controls_from_topics(source.topics, profile, reading.structure, source.name)
         )

@@ -8,7 +8,9 @@ Two kinds of evidence, the declared first:
   transmission mean its joints are commanded one by one (a head's pan/tilt points a sensor, a
   rotor or wheel mount moves the vehicle: neither is joint control). From the SRDF: a MoveIt
   planning group over an arm means joint-space and end-effector goals; an ``<end_effector>`` not
-  on a leg means end-effector goals (:mod:`solver.identify.planning_groups`).
+  on a leg means end-effector goals (:mod:`solver.identify.planning_groups`). An SRDF whose end
+  effectors are all feet models a walker's whole body for its balance controller: its arm
+  groups mean joint-space goals only, and no end effector is guessed for its arms.
 * *Roles.* What the joints do shows a control even where no controller is declared: wheels that
   turn (not a caster's) or a base the model moves in the plane (a planar joint, root joints
   along x, y and about z) mean the base is driven, thrusters that the vessel is, an arm of
@@ -25,9 +27,9 @@ Navigation (Waypoint) and walking live in launch and config files, not in the ro
 description: topics show them (:mod:`solver.identify.interfaces`). A description shows only
 that a vehicle *could* take waypoints: the profile's ``motion.navigation`` names, per source
 that moves the body (wheels, a drive plugin, thrusters, flight; or a control, for every source
-of it), the sensors navigation needs (a driven ground base and a lidar or a GPS; a flown body
-and odometry or a GPS; thrusters and a Doppler velocity log). Such a Waypoint is a guess and
-says so.
+of it), the sensors navigation needs (a driven ground base and a lidar or a GPS; thrusters and
+a lidar or a Doppler velocity log; a flown body and odometry or a GPS; a walker and a lidar).
+Such a Waypoint is a guess and says so.
 """
 
 from __future__ import annotations
@@ -85,8 +87,12 @@ def _flight(body: Body, urdf_source: str) -> _Shown:
         what = f"{len(body.rotors)} rotor joint(s)"
     elif body.flight_plugins:
         what = f"flight plugin {body.flight_plugins[0]}"
-    else:
+    elif body.fixed_rotors:
         what = f"{len(body.fixed_rotors)} fixed rotor joint(s) of a trimmed model"
+    elif body.wings:
+        what = f"{len(body.wings)} wing and control-surface link(s)"
+    else:
+        what = f"flight named in {body.flight_hints[0]}"
     return [("flight", f"{urdf_source}: {what}")]
 
 
@@ -139,11 +145,21 @@ def _planned(
     groups = arm_plans(body, srdf, profile.limb("arm_min_joints"), urdf)
     if groups:
         names = ", ".join(g.name for g in groups)
-        found.append(("srdf_group", f"{srdf_source}: planning group(s) {names}"))
+        if feet_only(body, srdf, urdf):
+            why = f"{srdf_source}: planning group(s) {names} (its end effectors are feet only)"
+            found.append(("srdf_walker_group", why))
+        else:
+            found.append(("srdf_group", f"{srdf_source}: planning group(s) {names}"))
     if effectors := hand_effectors(body, srdf, urdf):
         names = ", ".join(e.name for e in effectors)
         found.append(("srdf_end_effector", f"{srdf_source}: end effector(s) {names}"))
     return found
+
+
+def feet_only(body: Body, srdf: Srdf, urdf: Urdf | None) -> bool:
+    """The SRDF names end effectors and every one is a foot: it models a walker's whole body
+    for its balance and gait (where it stands), and plans no Cartesian goal for an arm."""
+    return bool(srdf.end_effectors) and not hand_effectors(body, srdf, urdf)
 
 
 def _navigation(
@@ -187,6 +203,9 @@ def controls_from_description(
         *_limbs(body, urdf_source),
         *_planned(body, srdf, profile, urdf, srdf_source),
     ]
+    if srdf is not None and feet_only(body, srdf, urdf):
+        # The SRDF says where the end effectors are, and none is on an arm: no guess of one.
+        shown = [(source, text) for source, text in shown if source != "arm_gripper"]
     found: dict[str, list[str]] = {}
     by_roles: dict[str, list[str]] = {}
     for source, text in shown:

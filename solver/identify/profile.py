@@ -136,6 +136,7 @@ CONTROL_SOURCES = (
     "controlled_joints",
     "controlled_fingers",
     "srdf_group",
+    "srdf_walker_group",
     "srdf_end_effector",
     "wheels",
     "planar_base",

@@ -6,8 +6,9 @@ of strength, and the first that speaks decides:
 1. A Gazebo model plugin that names the joint in a parameter: a thruster plugin's
    ``<jointName>`` (also a thruster link it lists), a motor model's ``<jointName>`` (a rotor), a
    drive plugin's ``<leftJoint>`` (a wheel; a joint it names for steering steers), a fin or
-   lift-drag plugin's ``<joint_name>`` (a fin or control surface). Which plugin is which is the
-   profile's ``plugins`` patterns.
+   lift-drag plugin's ``<joint_name>`` (a fin or control surface; a rotor when the joint turns
+   without limits: a propeller blade's lift). Which plugin is which is the profile's ``plugins``
+   patterns.
 2. The joint's place and shape: a vertical swivel that carries a wheel and nothing else is a
    caster (the wheel below it is the caster's); a propeller on a body in water is a thruster;
    a propeller on a ``floating`` joint with nothing below (a visual part a simulator poses) is
@@ -68,10 +69,10 @@ class RoleReader:
         self.profile = profile
         self.parts_of = parts_of
         self.plugin_parts = {id(p): self._plugin_parts(p) for p in urdf.plugins}
-        self.named = self._named_by_plugins()
         self.marine = bool(self.plugins_of("marine") or self.plugins_of("thruster")) or any(
             self.matches("thruster", joint) for joint in urdf.joints if joint.movable
         )
+        self.named = self._named_by_plugins()
 
     def _plugin_parts(self, plugin: PluginTag) -> frozenset[str]:
         found = set()
@@ -118,8 +119,18 @@ class RoleReader:
                     if joint is None or joint in found:
                         continue
                     kind = "steering" if role == "wheel" and "steer" in tag.lower() else role
-                    found[joint] = Role(joint, kind, f"<{tag}> of {part} plugin {label}")
+                    why = f"<{tag}> of {part} plugin {label}"
+                    if kind == "fin" and self._spins(joint):
+                        # Lift and drag on a joint that turns without limits: a propeller's
+                        # blade (how Gazebo models rotors), not a control surface's travel.
+                        kind, why = "rotor", why + ", turning without limits (a propeller)"
+                    found[joint] = Role(joint, kind, why)
         return found
+
+    def _spins(self, name: str) -> bool:
+        """The joint turns without limits (continuous): it spins, it does not deflect."""
+        joint = self.urdf.joint(name)
+        return joint is not None and joint.type == "continuous" and not self.marine
 
     def matches(self, part: str, joint: Joint) -> bool:
         return part in self.parts_of(joint.name) or part in self.parts_of(joint.child)

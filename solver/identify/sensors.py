@@ -7,7 +7,9 @@ IMU, GPS, barometer; RotorS' IMU and odometry), a Gazebo model the description i
 or a device in a topic list or bag
 (:mod:`solver.identify.interfaces`). The profile's rules give each its *kind* (``lidar``,
 ``depth_camera``, ``sonar``, ...). Plugins that publish simulation ground truth are skipped, and
-a plugin that feeds an element already counted (same kind, same link) is the same sensor.
+a plugin that feeds an element already counted (same kind, same link) is the same sensor, and
+depth streams on sibling frames of one camera link are one RGB-D camera. :func:`under_water`
+reads a barometer on a body below the water as the depth gauge it is there.
 
 :func:`merge` turns detections into one :class:`Sensor` per kind and sensor type. Sources are
 views of the same robot, so a kind's count is the largest any one source reports (a URDF lidar
@@ -37,6 +39,7 @@ __all__ = [
     "presented_count",
     "sensor_type_of",
     "sensors_from_urdf",
+    "under_water",
 ]
 
 _LINK_PARAMS = ("linkName", "bodyName", "frameName", "frameId", "frame_name", "link_name")
@@ -110,6 +113,17 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
     return tuple(_devices(found, urdf))
 
 
+def under_water(detections: Iterable[Detection]) -> tuple[Detection, ...]:
+    """The sensors of a body below the water: a barometer there reads the water's pressure,
+    which is its depth (a depth gauge, kind ``pressure``, as the labelled sets count it)."""
+    return tuple(
+        Detection("pressure", d.name, d.source, d.link, d.vertical_samples)
+        if d.kind == "barometer"
+        else d
+        for d in detections
+    )
+
+
 def _model_kind(model: str, profile: Profile) -> str | None:
     """The sensor a Gazebo model include adds (``model://gps``), read by its model name with
     the rules for plugins that simulate a sensor: a kind they name, not just ``sensor``."""
@@ -145,7 +159,32 @@ def _devices(found: list[tuple[Detection, str]], urdf: Urdf) -> list[Detection]:
         kept.append(detection)
     depth = {d.link for d in kept if d.kind == "depth_camera"}
     # A colour camera on the link of a depth camera is the RGB-D camera's colour stream.
-    return _stereo_pairs([d for d in kept if not (d.kind == "camera" and d.link in depth)])
+    kept = [d for d in kept if not (d.kind == "camera" and d.link in depth)]
+    return _stereo_pairs(_rgbd_frames(kept, urdf))
+
+
+def _rgbd_frames(found: list[Detection], urdf: Urdf) -> list[Detection]:
+    """An RGB-D camera declared as streams on sibling frames (a colour frame and a depth frame
+    fixed to one camera link, not to the body's root), each read as a depth camera (the colour
+    stream by its device's name, ``kinect``), is one device: the first stays. Plain cameras
+    beside a depth camera stay cameras (a head's two cameras and its depth sensor)."""
+    device: dict[int, str] = {}
+    for detection in found:
+        if detection.kind == "depth_camera" and detection.link is not None:
+            joint = urdf.parent_joint(detection.link)
+            if joint is not None and not joint.movable and joint.parent != urdf.root:
+                device[id(detection)] = joint.parent
+    owners: dict[str, Detection] = {}
+    for detection in found:
+        mount = device.get(id(detection))
+        if mount is not None:
+            owners.setdefault(mount, detection)
+    kept = []
+    for detection in found:
+        owner = owners.get(device.get(id(detection), ""))
+        if owner is None or owner is detection or owner.link == detection.link:
+            kept.append(detection)
+    return kept
 
 
 def _stereo_pairs(found: list[Detection]) -> list[Detection]:

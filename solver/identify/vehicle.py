@@ -6,8 +6,9 @@ body travels in a few more ways, each read here:
 * *Ground*: tracks (a track plugin or track names); a body that rolls on wheels, casters,
   tracks or a drive plugin is grounded (:func:`grounded`).
 * *Air*: wings and control surfaces (fixed links, or fin joints named so); flight words in a
-  model plugin's parameters (a vehicle plugin of its own), not on a body that rolls or walks;
-  rotor-named joints too few to fly, said as such.
+  model plugin's parameters (a vehicle plugin of its own), not on a body that rolls or walks,
+  or in the robot's name when the body is bare (no movable joint, plugin or sensor: an
+  aircraft exported as one mesh); rotor-named joints too few to fly, said as such.
 * *Water*: thrusters a thruster plugin lists by a link no joint moves (a hull's list); hints
   of a hull at the surface (a surface plugin, ``<metacentric_width>``; a body whose buoyancy
   compensation is above 1, buoyancy over weight: it floats; a GPS or a lidar where nothing
@@ -232,8 +233,16 @@ def flight_hints(tree: JointTree, roles: dict[str, Role], limbs: Sequence[Limb])
     walks = any(limb.kind == "leg" for limb in limbs)
     if pattern is None or tree.labels("flight") or walks or grounded(tree, roles):
         return ()
-    return tuple(
-        tree.reader.plugin_label(p)
+    found = tuple(
+        f"the parameters of plugin {tree.reader.plugin_label(p)}"
         for p in tree.urdf.plugins
         if any(pattern.search(text) for _, text in p.params)
     )
+    # A bare body (no movable joint, no plugin, no sensor) says what it is only by its name: an
+    # aircraft exported as one link and its mesh (`Fixed_Wing_UAV`) flies, with doubt.
+    bare = not (tree.urdf.plugins or tree.urdf.sensors) and not any(
+        joint.movable for joint in tree.urdf.joints
+    )
+    if bare and pattern.search(tree.urdf.name):
+        found += (f"robot name {tree.urdf.name}",)
+    return found

@@ -330,3 +330,54 @@ def test_a_base_the_model_moves_in_the_plane_is_driven() -> None:
     link = robot.joint("base_yaw", "continuous", link, "base_link", '<axis xyz="0 0 1"/>')
     robot.fixed(link, "front_left_wheel")
     assert controls(robot) == {"Driving": "urdf: a base moved in the plane"}
+
+
+FOOT_EFFECTORS = (
+    '<end_effector name="l_foot" parent_link="l_leg_foot" group="l_leg"/>'
+    '<end_effector name="r_foot" parent_link="r_leg_foot" group="r_leg"/>'
+)
+
+
+def long_armed_humanoid() -> RobotText:
+    """Two 6-joint legs, two 6-joint arms ending in grippers, a 2-joint head."""
+    robot = RobotText("long_arms")
+    for side in ("l", "r"):
+        builders.leg(
+            robot,
+            robot.root,
+            f"{side}_leg",
+            ("hip_yaw", "hip_roll", "hip_pitch", "knee", "ankle_pitch", "ankle_roll"),
+        )
+        builders.arm(robot, robot.root, f"{side}_", 6)
+    robot.chain(robot.root, ["neck_yaw", "head_pitch"])
+    return robot
+
+
+def walker_srdf(effectors: str) -> str:
+    """A whole-body SRDF of :func:`long_armed_humanoid`: leg and arm groups, ``effectors``."""
+    groups = "".join(
+        f'<group name="{side}_arm"><chain base_link="base_link" tip_link="{side}_wrist_3_link"/>'
+        f'</group><group name="{side}_leg"><chain base_link="base_link" '
+        f'tip_link="{side}_leg_ankle_roll_link"/></group>'
+        for side in ("l", "r")
+    )
+    return f'<robot name="long_arms">{groups}{effectors}</robot>'
+
+
+def test_an_srdf_whose_end_effectors_are_all_feet_plans_joints_not_cartesian_goals() -> None:
+    # A walker's whole-body model (for its balance controller) names where it stands; its arm
+    # groups are joint groups, and no end effector is guessed for its arms ending in grippers.
+    text = long_armed_humanoid().text()
+    assert "End Effector" in {c.motion_control for c in identify_urdf(text).motion_controls}
+    found = identify_urdf(text, srdf_text=walker_srdf(FOOT_EFFECTORS), srdf_file="w.srdf")
+    shown = {c.motion_control: c.source for c in found.motion_controls}
+    assert "End Effector" not in shown
+    planned = "w.srdf: planning group(s) l_arm, r_arm (its end effectors are feet only)"
+    assert planned in shown["Joint"]
+    # An end effector on a hand says the arms take Cartesian goals.
+    hand = '<end_effector name="l_hand" parent_link="l_wrist_3_link" group="l_arm"/>'
+    with_hand = identify_urdf(text, srdf_text=walker_srdf(FOOT_EFFECTORS + hand))
+    assert "End Effector" in {c.motion_control for c in with_hand.motion_controls}
+    # An SRDF naming no end effector at all plans arm goals as before.
+    plain = identify_urdf(text, srdf_text=walker_srdf(""))
+    assert "End Effector" in {c.motion_control for c in plain.motion_controls}

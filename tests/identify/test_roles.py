@@ -77,3 +77,43 @@ def test_the_decision_path_names_each_structure_rule_tried_in_order() -> None:
     result = identify_urdf(builders.caster_base().text())
     assert result.decision[0] == "Surface Vessel: no (needs marine, has 0, needs surface, has 0)"
     assert result.decision[-1] == "UGV: yes (mobile_base, arms = 0, legs = 0)"
+
+
+def test_lift_and_drag_on_spinning_joints_are_propellers_on_limited_ones_control_surfaces() -> None:
+    # Gazebo models a propeller as a lift-drag plugin on a blade joint that turns without
+    # limits; a control surface deflects within limits. Names say nothing here.
+    robot = RobotText("frame")
+    for i in range(4):
+        robot.joint(f"m{i}", "continuous", robot.root, f"blade{i}")
+        robot.add(
+            builders.model_plugin(
+                f"ld{i}", "libLiftDragPlugin.so", f"<control_joint>m{i}</control_joint>"
+            )
+        )
+    robot.chain(robot.root, ["surface_a"])
+    robot.add(
+        builders.model_plugin(
+            "ld_a", "libLiftDragPlugin.so", "<control_joint>surface_a</control_joint>"
+        )
+    )
+    result = identify_urdf(robot.text())
+    roles = {role.joint: role for role in result.roles}
+    assert {roles[f"m{i}"].role for i in range(4)} == {"rotor"}
+    assert roles["m0"].evidence == (
+        "<control_joint> of lift plugin libLiftDragPlugin.so, turning without limits (a propeller)"
+    )
+    assert roles["surface_a"].role == "fin"
+    assert result.structure == "UAV"
+
+
+def test_a_spinning_joint_a_lift_plugin_names_on_a_body_in_water_is_no_rotor() -> None:
+    robot = builders.underwater_vehicle()
+    robot.joint("spinner", "continuous", robot.root, "spinner_link")
+    robot.add(
+        builders.model_plugin(
+            "ld", "libLiftDragPlugin.so", "<control_joint>spinner</control_joint>"
+        )
+    )
+    result = identify_urdf(robot.text())
+    assert {role.joint: role.role for role in result.roles}["spinner"] == "fin"
+    assert result.structure == "Underwater Vehicle"

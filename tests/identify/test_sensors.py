@@ -326,3 +326,49 @@ def test_an_included_model_whose_name_names_no_sensor_kind_adds_none(uri: str) -
     robot = builders.quadrotor()
     robot.add(included(uri))
     assert sensors_from_urdf(parse_urdf(robot.text()), load_profile()) == ()
+
+
+ALTIMETER = builders.gazebo_sensor("base_link", "altimeter", "pressure_sensor")
+
+
+def test_a_barometer_on_a_body_below_the_water_is_a_depth_gauge() -> None:
+    def found(robot: builders.RobotText) -> dict[str, int]:
+        robot.add(ALTIMETER)
+        return {s.kind: s.count for s in identify_urdf(robot.text()).sensors}
+
+    # Below the water a pressure sensor measures depth; in the air, altitude; on a hull at the
+    # surface, the weather.
+    assert found(builders.underwater_vehicle()) == {"pressure": 1}
+    assert found(builders.quadrotor()) == {"barometer": 1}
+    assert found(builders.surface_vessel()) == {"barometer": 1}
+
+
+def rgbd_on_sibling_frames(mount_on_root: bool = False) -> builders.RobotText:
+    """A Kinect declared as two Gazebo sensors, a colour stream on its rgb frame and a depth
+    stream on its depth frame, both fixed to the camera's own link (or straight to the root)."""
+    robot = builders.ugv()
+    mount = robot.root if mount_on_root else robot.fixed(robot.root, "kinect_link")
+    robot.fixed(mount, "kinect_rgb_frame")
+    robot.fixed(mount, "kinect_depth_frame")
+    robot.add(builders.gazebo_sensor("kinect_rgb_frame", "camera", "camera"))
+    robot.add(builders.gazebo_sensor("kinect_depth_frame", "depth_camera", "depth_camera1"))
+    return robot
+
+
+def test_depth_streams_on_sibling_frames_of_one_camera_link_are_one_rgbd_camera() -> None:
+    one = identify_urdf(rgbd_on_sibling_frames().text()).sensors
+    assert [(s.kind, s.count) for s in one] == [("depth_camera", 1)]
+    # Frames fixed straight to the body are no one device's: two depth cameras.
+    two = identify_urdf(rgbd_on_sibling_frames(mount_on_root=True).text()).sensors
+    assert [(s.kind, s.count) for s in two] == [("depth_camera", 2)]
+
+
+def test_a_plain_camera_beside_a_depth_camera_on_one_camera_link_stays_a_camera() -> None:
+    robot = builders.ugv()
+    head = robot.fixed(robot.root, "head_link")
+    robot.fixed(head, "top_camera_frame")
+    robot.fixed(head, "depth_frame")
+    robot.add(builders.gazebo_sensor("top_camera_frame", "camera", "top_camera"))
+    robot.add(builders.gazebo_sensor("depth_frame", "depth_camera", "depth"))
+    found = {s.kind: s.count for s in identify_urdf(robot.text()).sensors}
+    assert found == {"camera": 1, "depth_camera": 1}

@@ -277,3 +277,30 @@ def test_a_buoyancy_plugin_with_no_depth_cue_is_said_in_water_without_denying_th
         "in water, nothing says below or at the surface: no hydrodynamics or thruster plugin, "
         "no DVL or pressure sensor, no surface cue"
     ) in result.evidence
+
+
+def bare_body(name: str) -> RobotText:
+    """One body link and its visual part on a fixed joint: nothing moves, no plugin, no sensor
+    (an aircraft exported from CAD as one mesh)."""
+    robot = RobotText(name, root="body")
+    robot.fixed(robot.root, "body_viz")
+    return robot
+
+
+def test_a_bare_body_named_as_an_aircraft_flies_with_doubt() -> None:
+    result = identify_urdf(bare_body("Fixed_Wing_UAV").text())
+    assert result.structure == "UAV"
+    assert result.confidence == pytest.approx(0.95 * 0.8, abs=0.01)
+    assert "flight named in: robot name Fixed_Wing_UAV" in result.evidence
+    flight = {c.motion_control: c.source for c in result.motion_controls}["Flight"]
+    assert flight == "urdf: flight named in robot name Fixed_Wing_UAV"
+
+
+def test_a_robot_name_says_nothing_when_the_body_has_parts_plugins_or_sensors() -> None:
+    assert identify_urdf(bare_body("display_stand").text()).structure == "Other"
+    armed = bare_body("drone_arm_rig")
+    builders.arm(armed, armed.root, joints=6, gripper=False)
+    assert identify_urdf(armed.text()).structure == "Manipulator"
+    sensed = bare_body("uav_camera_mount")
+    sensed.add(builders.gazebo_sensor("body_viz", "camera", "cam"))
+    assert identify_urdf(sensed.text()).structure == "Other"
