@@ -36,9 +36,10 @@ are measured by the part the split gives them, ``development`` and ``held-out``,
 place of the sets; a row the split does not list is measured as ``unsplit``. With ``--all``,
 ``tools/generalization_set`` and every ``tools/fresh_set_N`` folder are measured too. A fresh
 set is built blind, to measure the rules once, then moved to the development part (the split
-lists its rows as ``development``: ``tools/fresh_set_1`` and ``tools/fresh_set_2``, their
-READMEs). The *blind* set is the highest-numbered ``fresh_set_N`` among the sets measured
-whose name the split does not list at all (now ``tools/fresh_set_3``, when it is there): its
+lists its rows as ``development``: ``tools/fresh_set_1``, ``tools/fresh_set_2`` and
+``tools/fresh_set_3``, their READMEs). The *blind* set is the highest-numbered ``fresh_set_N``
+among the sets measured whose name the split does not list at all (now ``tools/fresh_set_4``,
+when it is there): its
 rows are held out whole by their set, and count in ``held-out`` and again on a line of their
 own, ``held-out (fresh)``. Moving it to development is listing it in the split; another
 unlisted fresh set is measured as ``unsplit``.

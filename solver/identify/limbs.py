@@ -58,6 +58,7 @@ __all__ = [
     "five_bars",
     "legs_at_the_pelvis",
     "legs_by_place",
+    "lone_leg",
     "sort_limbs",
     "spine",
     "wheeled_spine",
@@ -410,6 +411,19 @@ def wrist(tree: JointTree, limbs: list[Limb], fingers: int) -> list[Limb]:
         return limbs
     why = f"{len(limb.joints)} joint(s) from the root carrying a hand of {fingers} fingers"
     return [replace(limb, kind="wrist", why=why)]
+
+
+def lone_leg(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
+    """A leg that is the body's only limb, hanging from the root on a body that does not move
+    as a whole (no wheels, rotors or thrusters), holds nothing up: it is an arm that carries
+    leg names (one leg of a walker, set up on a bench to reach)."""
+    if moves or len(limbs) != 1 or limbs[0].kind != "leg":
+        return limbs
+    limb = limbs[0]
+    if not _on_the_root(tree, limb.base):
+        return limbs
+    why = f"the body's only limb, a leg-named chain of {len(limb.joints)} joint(s) on its root"
+    return [replace(limb, kind="arm", why=why)]
 
 
 def _on_the_root(tree: JointTree, link: str) -> bool:

@@ -10,12 +10,15 @@ Two kinds of evidence, the declared first:
   planning group over an arm means joint-space and end-effector goals; an ``<end_effector>`` not
   on a leg means end-effector goals (:mod:`solver.identify.planning_groups`). An SRDF whose end
   effectors are all feet models a walker's whole body for its balance controller: its arm
-  groups mean joint-space goals only, and no end effector is guessed for its arms.
+  groups mean joint-space goals only, and no end effector is guessed for its arms. So does an
+  SRDF of a body on two legs that names no end effector on a hand, and no end effector is
+  guessed for a biped's arms without one.
 * *Roles.* What the joints do shows a control even where no controller is declared: wheels that
   turn (not a caster's) or a base the model moves in the plane (a planar joint, root joints
   along x, y and about z) mean the base is driven, thrusters that the vessel is, an arm of
-  actuated joints that its joints are commanded, and an arm of six joints or more ending in a
-  gripper that Cartesian (end-effector) goals can be solved for it, and two legs or more that
+  actuated joints that its joints are commanded, and an arm of six motions or more ending in a
+  gripper (a telescope's segments sliding along one axis are one motion) that Cartesian
+  (end-effector) goals can be solved for it, and two legs or more that
   the body walks; those last two are guesses and say so ("likely, not declared": a gait
   controller, like a Cartesian solver, is software). Roles are named only for a control no
   declared controller shows.
@@ -41,7 +44,7 @@ from solver.identify.body import Body
 from solver.identify.interfaces import Control
 from solver.identify.planning_groups import arm_plans, hand_effectors
 from solver.identify.profile import Profile
-from solver.identify.readers.urdf import Urdf
+from solver.identify.readers.urdf import Joint, Urdf
 
 if TYPE_CHECKING:
     from solver.identify.readers.srdf import Srdf
@@ -56,6 +59,8 @@ _ROLE_SOURCES = ("wheels", "planar_base", "thrusters", "arm", "arm_gripper", "le
 _WALKING_LEGS = 2
 # Joints from the base to a gripper that reach any pose (three for position, three to turn).
 _CARTESIAN_JOINTS = 6
+# Axes and turns this close (unit vector components, radians) are the same.
+_SAME_AXIS = 1e-3
 
 
 def _ground(body: Body, urdf_source: str) -> _Shown:
@@ -96,7 +101,31 @@ def _flight(body: Body, urdf_source: str) -> _Shown:
     return [("flight", f"{urdf_source}: {what}")]
 
 
-def _limbs(body: Body, urdf_source: str) -> _Shown:
+def _motions(joints: tuple[str, ...], urdf: Urdf | None) -> int:
+    """How many motions a chain of joints has: a prismatic joint that slides on the previous
+    one along the same axis (no turn between them: a telescope's segments) adds none."""
+    if urdf is None:
+        return len(joints)
+    count = 0
+    previous = None
+    for name in joints:
+        joint = urdf.joint(name)
+        count += not (joint is not None and previous is not None and _telescopes(previous, joint))
+        previous = joint
+    return count
+
+
+def _telescopes(previous: Joint, joint: Joint) -> bool:
+    """``joint`` slides on the link ``previous`` slides, along the same axis."""
+    return (
+        previous.type == joint.type == "prismatic"
+        and joint.parent == previous.child
+        and all(abs(angle) < _SAME_AXIS for angle in joint.rpy)
+        and all(abs(a - b) < _SAME_AXIS for a, b in zip(previous.axis, joint.axis, strict=True))
+    )
+
+
+def _limbs(body: Body, urdf_source: str, urdf: Urdf | None = None) -> _Shown:
     """Limb joints with a transmission (declared); arms of actuated joints (roles)."""
     found = []
     if body.controlled_joints:
@@ -120,7 +149,7 @@ def _limbs(body: Body, urdf_source: str) -> _Shown:
             found.append(("arm", f"{urdf_source}: a spine of {len(limb.joints)} actuated joints"))
     # Six degrees of freedom reach any pose of the gripper: Cartesian goals can be solved. A
     # guess: whether the software offers them is not in the description.
-    if any(limb.gripper and len(limb.joints) >= _CARTESIAN_JOINTS for limb in arms):
+    if any(limb.gripper and _motions(limb.joints, urdf) >= _CARTESIAN_JOINTS for limb in arms):
         found.append(
             (
                 "arm_gripper",
@@ -148,12 +177,22 @@ def _planned(
         if feet_only(body, srdf, urdf):
             why = f"{srdf_source}: planning group(s) {names} (its end effectors are feet only)"
             found.append(("srdf_walker_group", why))
+        elif _balances(body) and not hand_effectors(body, srdf, urdf):
+            why = f"{srdf_source}: planning group(s) {names} (on two legs, no hand end effector)"
+            found.append(("srdf_walker_group", why))
         else:
             found.append(("srdf_group", f"{srdf_source}: planning group(s) {names}"))
     if effectors := hand_effectors(body, srdf, urdf):
         names = ", ".join(e.name for e in effectors)
         found.append(("srdf_end_effector", f"{srdf_source}: end effector(s) {names}"))
     return found
+
+
+def _balances(body: Body) -> bool:
+    """The body stands on two legs: its arms move inside the balance of the whole body, so
+    Cartesian goals for a hand are its whole-body controller's (software, not in the
+    description); only an SRDF end effector on a hand says they are offered."""
+    return body.count("leg") == _WALKING_LEGS
 
 
 def feet_only(body: Body, srdf: Srdf, urdf: Urdf | None) -> bool:
@@ -200,11 +239,12 @@ def controls_from_description(
     shown = [
         *_ground(body, urdf_source),
         *_flight(body, urdf_source),
-        *_limbs(body, urdf_source),
+        *_limbs(body, urdf_source, urdf),
         *_planned(body, srdf, profile, urdf, srdf_source),
     ]
-    if srdf is not None and feet_only(body, srdf, urdf):
-        # The SRDF says where the end effectors are, and none is on an arm: no guess of one.
+    if (srdf is not None and feet_only(body, srdf, urdf)) or _balances(body):
+        # The SRDF says where the end effectors are, and none is on an arm; or the arms are a
+        # biped's (measured: no labelled biped of the development part offers them): no guess.
         shown = [(source, text) for source, text in shown if source != "arm_gripper"]
     found: dict[str, list[str]] = {}
     by_roles: dict[str, list[str]] = {}

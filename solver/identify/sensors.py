@@ -47,8 +47,11 @@ _JOINT_PARAMS = ("jointName", "joint_name", "joint")
 # How many joints that do not move may separate one device's frames (a sensor link, its
 # optical frame, a beam).
 _DEVICE_DEPTH = 2
-# Kinds whose one device is declared as parts (an IMU's accelerometer and gyrometer).
-_COMPOSED = ("imu",)
+# Kinds whose one device is declared as parts on one link: an IMU's accelerometer and
+# gyrometer, an RGB-D camera's colour and depth streams (each read as a depth camera).
+_COMPOSED = ("imu", "depth_camera")
+# A link that is a camera's own body (its streams' frames are fixed to it), by its name.
+_CAMERA_BODY = re.compile(r"camera|realsense|kinect|openni|xtion", re.IGNORECASE)
 # A side of a stereo pair in a sensor name: l, r, left or right between separators.
 _SIDE = re.compile(r"(^|[_/-])(l|r|left|right)([_/-]|$)", re.IGNORECASE)
 
@@ -167,7 +170,8 @@ def _rgbd_frames(found: list[Detection], urdf: Urdf) -> list[Detection]:
     """An RGB-D camera declared as streams on sibling frames (a colour frame and a depth frame
     fixed to one camera link, not to the body's root), each read as a depth camera (the colour
     stream by its device's name, ``kinect``), is one device: the first stays. Plain cameras
-    beside a depth camera stay cameras (a head's two cameras and its depth sensor)."""
+    beside a depth camera stay cameras (a head's two cameras and its depth sensor), unless the
+    link they share is the camera's own body (:func:`_stream_of`)."""
     device: dict[int, str] = {}
     for detection in found:
         if detection.kind == "depth_camera" and detection.link is not None:
@@ -182,9 +186,22 @@ def _rgbd_frames(found: list[Detection], urdf: Urdf) -> list[Detection]:
     kept = []
     for detection in found:
         owner = owners.get(device.get(id(detection), ""))
-        if owner is None or owner is detection or owner.link == detection.link:
+        own = owner is None or owner is detection or owner.link == detection.link
+        if own and not _stream_of(detection, owners, urdf):
             kept.append(detection)
     return kept
+
+
+def _stream_of(detection: Detection, owners: dict[str, Detection], urdf: Urdf) -> bool:
+    """A plain camera on a frame fixed to the body of an RGB-D camera (a link named a camera,
+    whose depth stream hangs from it too) is one of that camera's streams: its colour or
+    infrared image. On any other mount (a head) it is a camera of its own."""
+    if detection.kind != "camera" or detection.link is None:
+        return False
+    joint = urdf.parent_joint(detection.link)
+    if joint is None or joint.movable or joint.parent not in owners:
+        return False
+    return _CAMERA_BODY.search(joint.parent) is not None
 
 
 def _stereo_pairs(found: list[Detection]) -> list[Detection]:

@@ -15,8 +15,9 @@ body travels in a few more ways, each read here:
   says the body dives: satellites are heard and laser light carries only above the water) or
   of a body below it (hydrodynamics or underwater-object plugins, a DVL or pressure sensor).
   Buoyancy says only that the body is in water.
-* *Trimmed models*: wheel joints of type fixed, and rotor-named leaf links fixed to the body,
-  still say what the whole model does (read with doubt by :mod:`solver.identify.classifier`).
+* *Trimmed models*: wheel joints of type fixed, and rotor-named leaf links fixed to the body
+  (motor-named ones too, on a body where no joint moves), still say what the whole model does
+  (read with doubt by :mod:`solver.identify.classifier`).
 
 Not here: the joints' own roles (:mod:`solver.identify.actuation`), where the body is placed
 (:mod:`solver.identify.placement`).
@@ -48,6 +49,8 @@ __all__ = [
 
 _ROTATING = ("continuous", "revolute")
 _GPS = re.compile(r"gps|navsat|gnss", re.IGNORECASE)
+# A motor named as such (``arm1_motor_link``, ``motor_2``), not ``motorcycle`` or ``rotor``.
+_MOTOR = re.compile(r"(^|[_/\s])motors?([_/\d\s]|$)", re.IGNORECASE)
 
 
 def grounded(tree: JointTree, roles: dict[str, Role]) -> bool:
@@ -111,13 +114,17 @@ def fixed_rotors(tree: JointTree) -> list[str]:
     if tree.reader.marine or legs_or_wheels:
         return []
     moved = _moved_links(tree)
+    # On a body where nothing moves, a motor fixed at a leaf turns what the model leaves out:
+    # a wheel would be modelled (a wheel link), so it is a propeller's (a quadcopter of fixed
+    # arm and motor links that a force plugin moves).
+    still = not any(j.movable for j in tree.urdf.joints)
     found = [
         j.name
         for j in tree.urdf.joints
         if j.type == "fixed"
         and not tree.urdf.children(j.child)
         and j.parent not in moved
-        and tree.matches("rotor", j)
+        and (tree.matches("rotor", j) or (still and _MOTOR.search(f"{j.name} {j.child}")))
     ]
     return found if len(found) >= tree.profile.limb("min_rotors") else []
 

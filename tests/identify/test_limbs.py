@@ -310,3 +310,28 @@ def test_a_short_unnamed_chain_carrying_a_camera_is_a_head() -> None:
     assert result.body is not None
     assert [limb.kind for limb in result.body.limbs] == ["head"]
     assert "a pan/tilt unit" in result.body.limbs[0].why
+
+
+def lone_leg(wheels: int = 0) -> RobotText:
+    """A 3-joint chain named as a quadruped's front left leg, alone on a fixed base, its tip
+    on a floating joint (a leg set up on a bench to reach); ``wheels`` under the base."""
+    robot = RobotText("leg_rig")
+    if wheels:
+        builders.wheeled_base(robot, wheels)
+    tip = robot.chain(robot.root, ["base_motor", "left_front_upper_leg", "left_front_lower_leg"])
+    robot.joint("left_front_toe", "floating", tip, "left_front_toe_link")
+    return robot
+
+
+def test_a_leg_alone_on_a_still_body_is_an_arm_with_leg_names() -> None:
+    result = identify_urdf(lone_leg().text())
+    assert (result.structure, result.kinematic_type) == ("Manipulator", "Manipulator")
+    assert result.body is not None
+    assert [(limb.kind, len(limb.joints)) for limb in result.body.limbs] == [("arm", 3)]
+    assert "the body's only limb" in result.body.limbs[0].why
+    # On a body that moves (wheels), a leg-named chain stays what it was read as; two legs
+    # stay legs.
+    rolling = identify_urdf(lone_leg(wheels=4).text()).body
+    assert rolling is not None
+    assert [limb.kind for limb in rolling.limbs] == ["leg"]
+    assert identify_urdf(builders.biped().text()).structure == "Biped"

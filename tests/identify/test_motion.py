@@ -368,7 +368,6 @@ def test_an_srdf_whose_end_effectors_are_all_feet_plans_joints_not_cartesian_goa
     # A walker's whole-body model (for its balance controller) names where it stands; its arm
     # groups are joint groups, and no end effector is guessed for its arms ending in grippers.
     text = long_armed_humanoid().text()
-    assert "End Effector" in {c.motion_control for c in identify_urdf(text).motion_controls}
     found = identify_urdf(text, srdf_text=walker_srdf(FOOT_EFFECTORS), srdf_file="w.srdf")
     shown = {c.motion_control: c.source for c in found.motion_controls}
     assert "End Effector" not in shown
@@ -378,6 +377,74 @@ def test_an_srdf_whose_end_effectors_are_all_feet_plans_joints_not_cartesian_goa
     hand = '<end_effector name="l_hand" parent_link="l_wrist_3_link" group="l_arm"/>'
     with_hand = identify_urdf(text, srdf_text=walker_srdf(FOOT_EFFECTORS + hand))
     assert "End Effector" in {c.motion_control for c in with_hand.motion_controls}
-    # An SRDF naming no end effector at all plans arm goals as before.
-    plain = identify_urdf(text, srdf_text=walker_srdf(""))
-    assert "End Effector" in {c.motion_control for c in plain.motion_controls}
+
+
+def test_a_bipeds_arms_take_cartesian_goals_only_where_an_srdf_end_effector_is_on_a_hand() -> None:
+    # Two legs: the arms move inside the balance of the whole body. Neither 6-joint arms ending
+    # in grippers nor SRDF arm groups without a hand end effector say Cartesian goals are offered.
+    text = long_armed_humanoid().text()
+    alone = {c.motion_control for c in identify_urdf(text).motion_controls}
+    assert alone == {"Joint", "Walking"}
+    plain = identify_urdf(text, srdf_text=walker_srdf(""), srdf_file="w.srdf")
+    shown = {c.motion_control: c.source for c in plain.motion_controls}
+    assert "End Effector" not in shown
+    assert (
+        "w.srdf: planning group(s) l_arm, r_arm (on two legs, no hand end effector)"
+        in (shown["Joint"])
+    )
+    hand = '<end_effector name="l_hand" parent_link="l_wrist_3_link" group="l_arm"/>'
+    with_hand = identify_urdf(text, srdf_text=walker_srdf(hand))
+    assert "End Effector" in {c.motion_control for c in with_hand.motion_controls}
+    # The same arms on four legs (a legged manipulator) are guessed as before.
+    robot = builders.quadruped()
+    builders.arm(robot, robot.root, "", 6)
+    four = {c.motion_control for c in identify_urdf(robot.text()).motion_controls}
+    assert "End Effector" in four
+
+
+def telescoping_arm(segments: int, turned: bool = False) -> RobotText:
+    """A mobile base with a lift, an arm of ``segments`` prismatic segments sliding along one
+    axis (``turned``: each turned a quarter on the last, so each slides another way), a wrist
+    and a two-finger gripper."""
+    robot = builders.ugv()
+    robot.fixed(robot.root, "mast")
+    robot.add(
+        '<joint name="lift" type="prismatic"><parent link="mast"/><child link="lift_link"/>'
+        '<axis xyz="0 0 1"/><limit lower="0" upper="1" effort="1" velocity="1"/></joint>'
+        '<link name="lift_link"/>'
+    )
+    parent = "lift_link"
+    for index in range(segments):
+        child = f"arm_l{index}"
+        rpy = '<origin rpy="1.5708 0 0"/>' if index == 0 or turned else '<origin xyz="0 0 0.01"/>'
+        robot.add(
+            f'<joint name="arm_joint_{index}" type="prismatic"><parent link="{parent}"/>'
+            f'<child link="{child}"/>{rpy}<axis xyz="0 0 1"/>'
+            '<limit lower="0" upper="0.1" effort="1" velocity="1"/></joint>'
+            f'<link name="{child}"/>'
+        )
+        parent = child
+    robot.add(
+        f'<joint name="wrist_yaw" type="revolute"><parent link="{parent}"/>'
+        '<child link="wrist_link"/><axis xyz="0 0 1"/>'
+        '<limit lower="-3" upper="3" effort="1" velocity="1"/></joint><link name="wrist_link"/>'
+    )
+    for side in ("left", "right"):
+        robot.add(
+            f'<joint name="gripper_finger_{side}" type="revolute"><parent link="wrist_link"/>'
+            f'<child link="finger_{side}"/><axis xyz="0 0 1"/>'
+            '<limit lower="0" upper="1" effort="1" velocity="1"/></joint>'
+            f'<link name="finger_{side}"/>'
+        )
+    return robot
+
+
+def test_a_telescopes_segments_sliding_along_one_axis_are_one_motion_of_an_arm() -> None:
+    # Lift, four segments of one telescope, a wrist: six joints, three motions. No pose of the
+    # gripper is reachable in every direction: no Cartesian goal is guessed.
+    found = identify_urdf(telescoping_arm(4).text())
+    assert found.structure == "Mobile Manipulator"
+    assert "End Effector" not in {c.motion_control for c in found.motion_controls}
+    # Segments each turned on the last slide in other directions: six motions, a guess.
+    turned = identify_urdf(telescoping_arm(4, turned=True).text())
+    assert "End Effector" in {c.motion_control for c in turned.motion_controls}

@@ -372,3 +372,42 @@ def test_a_plain_camera_beside_a_depth_camera_on_one_camera_link_stays_a_camera(
     robot.add(builders.gazebo_sensor("depth_frame", "depth_camera", "depth"))
     found = {s.kind: s.count for s in identify_urdf(robot.text()).sensors}
     assert found == {"camera": 1, "depth_camera": 1}
+
+
+def realsense_on_its_body(mount: str) -> dict[str, int]:
+    """A D435 declared as four Gazebo cameras, colour, two infrared and depth, each on its own
+    frame fixed to ``mount`` (a link fixed on a head), as a realsense xacro writes it."""
+    robot = builders.ugv()
+    head = robot.fixed(robot.root, "head_link")
+    body = robot.fixed(head, mount) if mount != "head_link" else head
+    for stream, kind in (("color", "camera"), ("infra1", "camera"), ("infra2", "camera")):
+        robot.fixed(body, f"cam_{stream}_frame")
+        robot.add(builders.gazebo_sensor(f"cam_{stream}_frame", kind, stream))
+    robot.fixed(body, "cam_depth_frame")
+    robot.add(builders.gazebo_sensor("cam_depth_frame", "depth", "depth"))
+    return {s.kind: s.count for s in identify_urdf(robot.text()).sensors}
+
+
+def test_cameras_on_frames_fixed_to_an_rgbd_cameras_own_link_are_its_streams() -> None:
+    assert realsense_on_its_body("camera_link") == {"depth_camera": 1}
+    # The same frames on a head (no camera's body): three cameras and a depth camera.
+    assert realsense_on_its_body("head_link") == {"camera": 3, "depth_camera": 1}
+
+
+def test_colour_and_depth_streams_on_one_link_read_as_depth_cameras_are_one_device() -> None:
+    # A realsense's colour stream is read as a depth camera by its device's name; on the link
+    # of its depth stream it is the same camera.
+    robot = builders.ugv()
+    robot.fixed(robot.root, "camera_link")
+    robot.add(builders.gazebo_sensor("camera_link", "camera", "realsense_d435_color"))
+    robot.add(builders.gazebo_sensor("camera_link", "depth_camera", "realsense_d435_depth"))
+    found = [(s.kind, s.count) for s in identify_urdf(robot.text()).sensors]
+    assert found == [("depth_camera", 1)]
+
+
+def test_an_airspeed_plugin_is_an_airspeed_sensor_not_a_barometer() -> None:
+    robot = builders.quadrotor()
+    robot.add(builders.model_plugin("fcu_airspeed", "libairspeed_plugin.so"))
+    robot.add(builders.model_plugin("fcu_baro", "libbarometer_plugin.so"))
+    found = {s.kind: (s.sensor_type, s.count) for s in identify_urdf(robot.text()).sensors}
+    assert found == {"airspeed": (None, 1), "barometer": (None, 1)}

@@ -47,6 +47,29 @@ def test_fixed_propellers_on_a_body_that_cannot_move_are_a_uav_with_doubt() -> N
     assert result.confidence == pytest.approx(0.95 * 0.8, abs=0.01)
 
 
+def motor_arms(moving_joint: bool = False, word: str = "motor") -> RobotText:
+    """A body of four arms each ending in a link named ``arm<i>_<word>_link``, all fixed (a
+    quadcopter a force plugin moves); ``moving_joint`` adds a pan joint somewhere."""
+    robot = RobotText("simple_body")
+    for i in range(4):
+        arm = robot.fixed(robot.root, f"arm{i}_link")
+        robot.fixed(arm, f"arm{i}_{word}_link")
+    if moving_joint:
+        robot.chain(robot.root, ["pan"])
+    return robot
+
+
+def test_motors_fixed_at_the_leaves_of_a_body_where_nothing_moves_fly_it_with_doubt() -> None:
+    result = identify_urdf(motor_arms().text())
+    assert (result.structure, result.kinematic_type) == ("UAV", "UAV")
+    assert result.confidence == pytest.approx(0.95 * 0.8, abs=0.01)
+    assert "Flight" in {c.motion_control for c in result.motion_controls}
+    # A joint that moves: the motors may turn it, or wheels the model left out; no flight. A
+    # word that only begins with motor (a motorcycle's part) is no motor.
+    assert identify_urdf(motor_arms(moving_joint=True).text()).structure != "UAV"
+    assert identify_urdf(motor_arms(word="motorcycle").text()).structure == "Other"
+
+
 def test_fixed_rotor_links_beside_moving_joints_are_motors_not_flight() -> None:
     legged = RobotText("legged")
     for corner in ("front_left", "front_right", "rear_left", "rear_right"):
