@@ -46,7 +46,7 @@ from dataclasses import dataclass, replace
 from itertools import islice, pairwise
 
 from solver.identify.pose import distance, parallel, perpendicular
-from solver.identify.readers.urdf import Joint
+from solver.identify.readers.urdf import Joint, Urdf
 from solver.identify.roles import Role
 from solver.identify.tree import JointTree
 from solver.untrusted import shown
@@ -335,8 +335,9 @@ def wheeled_spine(
     ):
         return unchanged
     links = {tree.urdf.root, *(joint.child for joint in joints)}
+    known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
     if not all(
-        limb.kind == "other" and len(limb.joints) == 1 and _carrier(tree, limb.base) in links
+        limb.kind == "other" and len(limb.joints) == 1 and _carrier(tree, limb.base, known) in links
         for limb in limbs
     ):
         return unchanged
@@ -355,16 +356,40 @@ def _one_path(tree: JointTree, joints: list[Joint]) -> bool:
     fixed to it)."""
     if not _on_the_root(tree, joints[0].parent):
         return False
-    return all(_carrier(tree, joint.parent) == before.child for before, joint in pairwise(joints))
+    known: dict[str, str | None] = {}
+    return all(
+        _carrier(tree, joint.parent, known) == before.child for before, joint in pairwise(joints)
+    )
 
 
-def _carrier(tree: JointTree, link: str) -> str:
+def _carrier(tree: JointTree, link: str, known: dict[str, str | None]) -> str:
     """The link a movable joint ends in that carries ``link`` (through fixed joints); the root
-    when none does."""
-    joint = tree.urdf.parent_joint(link)
-    while joint is not None and not joint.movable:
-        joint = tree.urdf.parent_joint(joint.parent)
+    when none does. ``known`` is :func:`moved_by`'s memo, shared by the calls of one reading."""
+    name = moved_by(tree.urdf, link, known)
+    joint = None if name is None else tree.urdf.joint(name)
     return tree.urdf.root if joint is None else joint.child
+
+
+def moved_by(urdf: Urdf, link: str, known: dict[str, str | None]) -> str | None:
+    """The nearest movable joint above ``link`` (None at the root, or when only fixed joints
+    lead up to it); every link walked is remembered in ``known``, so many links cost one walk
+    of the tree at most."""
+    walked = []
+    found: str | None = None
+    current: str | None = link
+    while current is not None and current not in known:
+        walked.append(current)
+        joint = urdf.parent_joint(current)
+        if joint is None or joint.movable:
+            found = None if joint is None else joint.name
+            current = None
+        else:
+            current = joint.parent
+    if current is not None:
+        found = known[current]
+    for name in walked:
+        known[name] = found
+    return found
 
 
 def _named_limb(tree: JointTree, joints: list[Joint]) -> bool:

@@ -47,7 +47,7 @@ from solver.identify.profile import Profile
 from solver.identify.readers.urdf import Joint, Urdf
 
 if TYPE_CHECKING:
-    from solver.identify.readers.srdf import Srdf
+    from solver.identify.readers.srdf import EndEffector, Srdf
 
 __all__ = ["controls_from_description"]
 
@@ -165,24 +165,31 @@ def _limbs(body: Body, urdf_source: str, urdf: Urdf | None = None) -> _Shown:
 
 
 def _planned(
-    body: Body, srdf: Srdf | None, profile: Profile, urdf: Urdf | None, srdf_source: str
+    body: Body,
+    srdf: Srdf | None,
+    profile: Profile,
+    urdf: Urdf | None,
+    srdf_source: str,
+    *,
+    effectors: tuple[EndEffector, ...],
 ) -> _Shown:
-    """What an SRDF plans: arm groups, end effectors."""
+    """What an SRDF plans: arm groups, end effectors (``effectors``, its hand end effectors:
+    :func:`~solver.identify.planning_groups.hand_effectors`)."""
     if srdf is None:
         return []
     found = []
     groups = arm_plans(body, srdf, profile.limb("arm_min_joints"), urdf)
     if groups:
         names = ", ".join(g.name for g in groups)
-        if feet_only(body, srdf, urdf):
+        if _feet_only(srdf, effectors):
             why = f"{srdf_source}: planning group(s) {names} (its end effectors are feet only)"
             found.append(("srdf_walker_group", why))
-        elif _balances(body) and not hand_effectors(body, srdf, urdf):
+        elif _balances(body) and not effectors:
             why = f"{srdf_source}: planning group(s) {names} (on two legs, no hand end effector)"
             found.append(("srdf_walker_group", why))
         else:
             found.append(("srdf_group", f"{srdf_source}: planning group(s) {names}"))
-    if effectors := hand_effectors(body, srdf, urdf):
+    if effectors:
         names = ", ".join(e.name for e in effectors)
         found.append(("srdf_end_effector", f"{srdf_source}: end effector(s) {names}"))
     return found
@@ -195,10 +202,11 @@ def _balances(body: Body) -> bool:
     return body.count("leg") == _WALKING_LEGS
 
 
-def feet_only(body: Body, srdf: Srdf, urdf: Urdf | None) -> bool:
-    """The SRDF names end effectors and every one is a foot: it models a walker's whole body
-    for its balance and gait (where it stands), and plans no Cartesian goal for an arm."""
-    return bool(srdf.end_effectors) and not hand_effectors(body, srdf, urdf)
+def _feet_only(srdf: Srdf | None, effectors: tuple[EndEffector, ...]) -> bool:
+    """The SRDF names end effectors and every one is a foot (``effectors``, its hand end
+    effectors, is empty): it models a walker's whole body for its balance and gait (where it
+    stands), and plans no Cartesian goal for an arm."""
+    return srdf is not None and bool(srdf.end_effectors) and not effectors
 
 
 def _navigation(
@@ -236,13 +244,14 @@ def controls_from_description(
 ) -> tuple[Control, ...]:
     """The motion controls the body (and SRDF) show, each with what shows it; with the kinds
     of the sensors the description declares, the profile's navigation guess too."""
+    effectors = () if srdf is None else hand_effectors(body, srdf, urdf)  # once per SRDF
     shown = [
         *_ground(body, urdf_source),
         *_flight(body, urdf_source),
         *_limbs(body, urdf_source, urdf),
-        *_planned(body, srdf, profile, urdf, srdf_source),
+        *_planned(body, srdf, profile, urdf, srdf_source, effectors=effectors),
     ]
-    if (srdf is not None and feet_only(body, srdf, urdf)) or _balances(body):
+    if _feet_only(srdf, effectors) or _balances(body):
         # The SRDF says where the end effectors are, and none is on an arm; or the arms are a
         # biped's (measured: no labelled biped of the development part offers them): no guess.
         shown = [(source, text) for source, text in shown if source != "arm_gripper"]

@@ -17,6 +17,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from solver.identify.body import Body
+from solver.identify.limbs import moved_by
 from solver.identify.readers.urdf import Urdf
 
 if TYPE_CHECKING:
@@ -72,33 +73,12 @@ def hand_effectors(body: Body, srdf: Srdf, urdf: Urdf | None = None) -> tuple[En
     if urdf is None:
         return srdf.end_effectors
     legs = {j for limb in body.limbs if limb.kind == "leg" for j in limb.joints}
-    moved_by: dict[str, str | None] = {}  # link -> the nearest movable joint above it
+    known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
     return tuple(
         effector
         for effector in srdf.end_effectors
-        if _moved_by(urdf, effector.parent_link, moved_by) not in legs
+        if moved_by(urdf, effector.parent_link, known) not in legs
     )
-
-
-def _moved_by(urdf: Urdf, link: str, known: dict[str, str | None]) -> str | None:
-    """The nearest movable joint above ``link`` (None at the root); every link walked is
-    remembered in ``known``, so many end effectors cost one walk of the tree at most."""
-    walked = []
-    found: str | None = None
-    current: str | None = link
-    while current is not None and current not in known:
-        walked.append(current)
-        joint = urdf.parent_joint(current)
-        if joint is None or joint.movable:
-            found = None if joint is None else joint.name
-            current = None
-        else:
-            current = joint.parent
-    if current is not None:
-        found = known[current]
-    for name in walked:
-        known[name] = found
-    return found
 
 
 class _Chains:

@@ -22,13 +22,14 @@ Not here: reading topic lists (:mod:`solver.identify.readers.topics`).
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
 from solver.core.ruleset import RuleSet
 from solver.identify.profile import SENSOR_TYPE, Profile
-from solver.identify.readers.urdf import PluginTag, SensorTag, Urdf
+from solver.identify.readers.urdf import Joint, PluginTag, SensorTag, Urdf
 from solver.untrusted import shown
 
 __all__ = [
@@ -50,6 +51,8 @@ _DEVICE_DEPTH = 2
 # Kinds whose one device is declared as parts on one link: an IMU's accelerometer and
 # gyrometer, an RGB-D camera's colour and depth streams (each read as a depth camera).
 _COMPOSED = ("imu", "depth_camera")
+# How far apart two frames on one link may sit and still be one device's streams (metres).
+_STREAM_REACH = 0.1
 # A link that is a camera's own body (its streams' frames are fixed to it), by its name.
 _CAMERA_BODY = re.compile(r"camera|realsense|kinect|openni|xtion", re.IGNORECASE)
 # A side of a stereo pair in a sensor name: l, r, left or right between separators.
@@ -168,40 +171,60 @@ def _devices(found: list[tuple[Detection, str]], urdf: Urdf) -> list[Detection]:
 
 def _rgbd_frames(found: list[Detection], urdf: Urdf) -> list[Detection]:
     """An RGB-D camera declared as streams on sibling frames (a colour frame and a depth frame
-    fixed to one camera link, not to the body's root), each read as a depth camera (the colour
-    stream by its device's name, ``kinect``), is one device: the first stays. Plain cameras
-    beside a depth camera stay cameras (a head's two cameras and its depth sensor), unless the
-    link they share is the camera's own body (:func:`_stream_of`)."""
-    device: dict[int, str] = {}
+    fixed to one camera link, not to the body's root, within :data:`_STREAM_REACH` of each
+    other and facing the same way), each read as a depth camera (the colour stream by its
+    device's name, ``kinect``), is one device: the first stays. Two depth cameras on one mount
+    further apart or facing apart (a front and a rear camera on ``base_link``) are two. Plain
+    cameras beside a depth camera stay cameras (a head's two cameras and its depth sensor),
+    unless the link they share is the camera's own body (:func:`_stream_of`)."""
+    mounts: dict[int, Joint] = {}
     for detection in found:
         if detection.kind == "depth_camera" and detection.link is not None:
             joint = urdf.parent_joint(detection.link)
             if joint is not None and not joint.movable and joint.parent != urdf.root:
-                device[id(detection)] = joint.parent
-    owners: dict[str, Detection] = {}
+                mounts[id(detection)] = joint
+    owners: dict[str, list[tuple[Detection, Joint]]] = {}
+    owner_of: dict[int, Detection] = {}
     for detection in found:
-        mount = device.get(id(detection))
-        if mount is not None:
-            owners.setdefault(mount, detection)
+        joint = mounts.get(id(detection))
+        if joint is not None:
+            here = owners.setdefault(joint.parent, [])
+            near = next((d for d, j in here if _one_device(j, joint)), None)
+            if near is None:
+                here.append((detection, joint))
+            owner_of[id(detection)] = near or detection
     kept = []
     for detection in found:
-        owner = owners.get(device.get(id(detection), ""))
+        owner = owner_of.get(id(detection))
         own = owner is None or owner is detection or owner.link == detection.link
         if own and not _stream_of(detection, owners, urdf):
             kept.append(detection)
     return kept
 
 
-def _stream_of(detection: Detection, owners: dict[str, Detection], urdf: Urdf) -> bool:
+def _one_device(first: Joint, second: Joint) -> bool:
+    """Two frames fixed to one link are one device's streams: they sit within
+    :data:`_STREAM_REACH` of each other and face the same way (a Kinect's colour and depth
+    frames, 2.5 cm apart)."""
+    close = math.dist(first.origin, second.origin) <= _STREAM_REACH
+    return close and all(abs(a - b) <= 1e-6 for a, b in zip(first.rpy, second.rpy, strict=True))
+
+
+def _stream_of(
+    detection: Detection, owners: dict[str, list[tuple[Detection, Joint]]], urdf: Urdf
+) -> bool:
     """A plain camera on a frame fixed to the body of an RGB-D camera (a link named a camera,
-    whose depth stream hangs from it too) is one of that camera's streams: its colour or
-    infrared image. On any other mount (a head) it is a camera of its own."""
+    whose depth stream hangs from it too, near it and facing its way: :func:`_one_device`) is
+    one of that camera's streams: its colour or infrared image. On any other mount (a head) it
+    is a camera of its own."""
     if detection.kind != "camera" or detection.link is None:
         return False
     joint = urdf.parent_joint(detection.link)
     if joint is None or joint.movable or joint.parent not in owners:
         return False
-    return _CAMERA_BODY.search(joint.parent) is not None
+    if _CAMERA_BODY.search(joint.parent) is None:
+        return False
+    return any(_one_device(theirs, joint) for _, theirs in owners[joint.parent])
 
 
 def _stereo_pairs(found: list[Detection]) -> list[Detection]:

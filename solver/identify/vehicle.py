@@ -29,7 +29,7 @@ import re
 from collections.abc import Sequence
 
 from solver.identify.actuation import with_role
-from solver.identify.limbs import Limb
+from solver.identify.limbs import Limb, moved_by
 from solver.identify.roles import Role
 from solver.identify.sensors import element_kind
 from solver.identify.tree import JointTree
@@ -180,18 +180,12 @@ def surface_hints(tree: JointTree) -> tuple[str, ...]:
 def _floating_hull(tree: JointTree) -> list[str]:
     """The body (its root link, or a link fixed to it) declares a buoyancy compensation above 1:
     buoyancy over weight, it floats (a part of it, a thruster, may sink: not the body)."""
+    known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
     for link in tree.urdf.links:
-        if link.buoyancy is not None and link.buoyancy > 1 and _on_the_body(tree, link.name):
+        floats = link.buoyancy is not None and link.buoyancy > 1
+        if floats and moved_by(tree.urdf, link.name, known) is None:
             return [f"{link.name} buoyancy {link.buoyancy:g} x weight (floats)"]
     return []
-
-
-def _on_the_body(tree: JointTree, link: str) -> bool:
-    """``link`` is the root, or fixed to it through joints that do not move."""
-    joint = tree.urdf.parent_joint(link)
-    while joint is not None and not joint.movable:
-        joint = tree.urdf.parent_joint(joint.parent)
-    return joint is None
 
 
 def _above_water_sensors(tree: JointTree) -> list[str]:

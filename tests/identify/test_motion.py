@@ -402,6 +402,27 @@ def test_a_bipeds_arms_take_cartesian_goals_only_where_an_srdf_end_effector_is_o
     assert "End Effector" in four
 
 
+def test_an_srdf_naming_only_feet_drops_the_arm_guess_even_without_arm_groups() -> None:
+    # A legged manipulator whose SRDF plans no arm group and names only its feet: the guess
+    # from the arm's shape (End Effector) is dropped; a hand end effector says it is offered.
+    robot = builders.quadruped()
+    builders.arm(robot, robot.root, "", 6)
+    feet = "".join(
+        f'<group name="{c}_leg"><chain base_link="base_link" tip_link="{c}_foot"/></group>'
+        f'<end_effector name="{c}_foot" parent_link="{c}_foot" group="{c}_leg"/>'
+        for c in ("FL", "FR", "RL", "RR")
+    )
+    only_feet = identify_urdf(robot.text(), srdf_text=f'<robot name="dog">{feet}</robot>')
+    assert "End Effector" not in {c.motion_control for c in only_feet.motion_controls}
+    hand = (
+        '<group name="arm"><chain base_link="base_link" tip_link="wrist_3_link"/></group>'
+        '<end_effector name="hand" parent_link="wrist_3_link" group="arm"/>'
+    )
+    with_hand = identify_urdf(robot.text(), srdf_text=f'<robot name="dog">{feet}{hand}</robot>')
+    shown = {c.motion_control: c.source for c in with_hand.motion_controls}
+    assert "<srdf>: end effector(s) hand" in shown["End Effector"]
+
+
 def telescoping_arm(segments: int, turned: bool = False) -> RobotText:
     """A mobile base with a lift, an arm of ``segments`` prismatic segments sliding along one
     axis (``turned``: each turned a quarter on the last, so each slides another way), a wrist

@@ -117,3 +117,31 @@ def test_a_spinning_joint_a_lift_plugin_names_on_a_body_in_water_is_no_rotor() -
     result = identify_urdf(robot.text())
     assert {role.joint: role.role for role in result.roles}["spinner"] == "fin"
     assert result.structure == "Underwater Vehicle"
+
+
+def test_a_gazebo_sim_lift_drag_system_names_fins_by_its_file_name() -> None:
+    # Gazebo Sim spells the plugin with dashes: gz-sim-lift-drag-system (and the advanced
+    # one); the joints it names have neutral names here, so only the plugin says what they are.
+    robot = RobotText("glider")
+    for i, filename in enumerate(("gz-sim-lift-drag-system", "gz-sim-advanced-lift-drag-system")):
+        robot.chain(robot.root, [f"j{i}"])
+        robot.add(
+            builders.model_plugin(
+                f"gz::sim::systems::LiftDrag{i}",
+                filename,
+                f"<control_joint_name>j{i}</control_joint_name>",
+            )
+        )
+    roles = {role.joint: role.role for role in identify_urdf(robot.text()).roles}
+    assert roles == {"j0": "fin", "j1": "fin"}
+
+
+def test_a_vrx_surface_plugin_in_a_lib_file_is_a_hull_at_the_surface() -> None:
+    robot = RobotText("wamv")
+    for side in ("left", "right"):
+        robot.joint(f"{side}_thruster_joint", "continuous", robot.root, f"{side}_thruster")
+    robot.add(
+        builders.model_plugin("vrx::Surface", "libSurface.so", "<link_name>base_link</link_name>")
+    )
+    result = identify_urdf(robot.text())
+    assert result.structure == "Surface Vessel"

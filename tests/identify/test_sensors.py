@@ -411,3 +411,32 @@ def test_an_airspeed_plugin_is_an_airspeed_sensor_not_a_barometer() -> None:
     robot.add(builders.model_plugin("fcu_baro", "libbarometer_plugin.so"))
     found = {s.kind: (s.sensor_type, s.count) for s in identify_urdf(robot.text()).sensors}
     assert found == {"airspeed": (None, 1), "barometer": (None, 1)}
+
+
+def two_depth_cameras(mount: str, rear_xyz: str, rear_rpy: str) -> dict[str, int]:
+    """A front and a rear depth camera, each on its own link fixed to ``mount`` (``base_link``
+    under a ``base_footprint`` root, or a mast on it); the front one at 0.3 m ahead."""
+    robot = builders.RobotText("rover", root="base_footprint")
+    robot.fixed(robot.root, "base_link")
+    if mount != "base_link":
+        robot.fixed("base_link", mount)
+    for side, xyz, rpy in (("front", "0.3 0 0.2", "0 0 0"), ("rear", rear_xyz, rear_rpy)):
+        robot.joint(
+            f"{side}_camera_joint",
+            "fixed",
+            mount,
+            f"{side}_camera_link",
+            f'<origin xyz="{xyz}" rpy="{rpy}"/>',
+        )
+        robot.add(builders.gazebo_sensor(f"{side}_camera_link", "depth", f"{side}_realsense"))
+    return {s.kind: s.count for s in identify_urdf(robot.text()).sensors}
+
+
+def test_depth_cameras_on_separate_links_of_one_mount_are_one_camera_each() -> None:
+    # Apart on base_link (behind, facing back), and on a mast, 0.5 m apart facing one way.
+    assert two_depth_cameras("base_link", "-0.3 0 0.2", "0 0 3.14159") == {"depth_camera": 2}
+    assert two_depth_cameras("mast_link", "0.3 0 0.7", "0 0 0") == {"depth_camera": 2}
+    # Two frames 2.5 cm apart facing one way are one device's streams (a Kinect's).
+    assert two_depth_cameras("base_link", "0.3 0.025 0.2", "0 0 0") == {"depth_camera": 1}
+    # Close but facing apart: two cameras.
+    assert two_depth_cameras("base_link", "0.3 0.025 0.2", "0 0 3.14159") == {"depth_camera": 2}

@@ -327,3 +327,22 @@ def test_a_robot_name_says_nothing_when_the_body_has_parts_plugins_or_sensors() 
     sensed = bare_body("uav_camera_mount")
     sensed.add(builders.gazebo_sensor("body_viz", "camera", "cam"))
     assert identify_urdf(sensed.text()).structure == "Other"
+
+
+def test_a_long_fixed_chain_of_floating_links_under_a_moving_joint_is_read_once() -> None:
+    # A sinking hull, a thruster joint, then 20,000 links fixed one under the next, each
+    # declaring it floats: none is the body, so no floating hull (each link's walk up to the
+    # thruster joint is remembered, not repeated).
+    text = hull_with_compensation("0.98", thrusters="5")
+    chain = RobotText("chain", root="t0_link")
+    parent = "t0_link"
+    for i in range(20_000):
+        parent = chain.fixed(parent, f"c{i}")
+    links = "".join(
+        f'<link name="c{i}"><buoyancy><compensation>1.5</compensation></buoyancy></link>'
+        for i in range(20_000)
+    )
+    text = text.replace("</robot>", links + "\n".join(chain.joints) + "</robot>")
+    result = identify_urdf(text)
+    assert result.structure == "Underwater Vehicle"
+    assert not any("floats" in line for line in result.evidence)

@@ -286,6 +286,32 @@ class _Builder:
                 )
         return tuple(kept)
 
+    def _models(self, root: etree._Element) -> tuple[ModelInclude, ...]:
+        """The ``<gazebo><include>`` models (at most ``_MAX_PARAMS``; a located warning at the
+        first one past it): the model name of a ``model://NAME`` URI, the include's ``<name>``
+        (the model's, when empty), and the ``<parent>`` of a ``<joint>`` in the same ``<gazebo>``
+        whose ``<child>`` is one of that model's links (``NAME::link``)."""
+        found: list[ModelInclude] = []
+        for gazebo in root.findall("gazebo"):
+            parents = {
+                (joint.findtext("child") or "").split("::")[0].strip(): joint.findtext("parent")
+                for joint in gazebo.findall("joint")
+            }
+            for include in gazebo.findall("include"):
+                uri = (include.findtext("uri") or "").strip()
+                if not uri.startswith(_MODEL_URI):
+                    continue
+                if len(found) >= _MAX_PARAMS:
+                    message = f"more than {_MAX_PARAMS} model includes: the rest are not read"
+                    self.fault(include, "gazebo/include", message, "too-large")
+                    return tuple(found)
+                model = uri[len(_MODEL_URI) :].strip("/").split("/")[0][:_MAX_PARAM_TEXT]
+                name = (include.findtext("name") or "").strip()[:_MAX_PARAM_TEXT] or model
+                parent = parents.get(name)
+                link = parent.strip() if parent else None
+                found.append(ModelInclude(model, name, link, line_of(include)))
+        return tuple(found)
+
     def build(self, root: etree._Element) -> Urdf:
         if root.tag != "robot":
             raise InputError.at(
@@ -330,6 +356,7 @@ class _Builder:
         )
         controlled = frozenset(self._controlled(root))
         self.faults += _uncompiled_xacro(root, self.file)  # read as URDF, never compiled: say so
+        models = self._models(root)
         return Urdf(
             name or "robot",
             self.file,
@@ -342,7 +369,7 @@ class _Builder:
             self.warnings(),
             _command_interfaces(root),
             _tags(root),
-            _models(root),
+            models,
         )
 
     def _links(self, elements: list[etree._Element]) -> dict[str, Link]:
@@ -711,28 +738,6 @@ def _uncompiled_xacro(root: etree._Element, file: str) -> list[Fault]:
             )
         )
     return found
-
-
-def _models(root: etree._Element) -> tuple[ModelInclude, ...]:
-    """The ``<gazebo><include>`` models (at most ``_MAX_PARAMS``): the model name of a
-    ``model://NAME`` URI, the include's ``<name>``, and the ``<parent>`` of a ``<joint>`` in the
-    same ``<gazebo>`` whose ``<child>`` is one of that model's links (``NAME::link``)."""
-    found: list[ModelInclude] = []
-    for gazebo in root.findall("gazebo"):
-        parents = {
-            (joint.findtext("child") or "").split("::")[0].strip(): joint.findtext("parent")
-            for joint in gazebo.findall("joint")
-        }
-        for include in gazebo.findall("include"):
-            uri = (include.findtext("uri") or "").strip()
-            if not uri.startswith(_MODEL_URI) or len(found) >= _MAX_PARAMS:
-                continue
-            model = uri[len(_MODEL_URI) :].strip("/").split("/")[0][:_MAX_PARAM_TEXT]
-            name = (include.findtext("name") or model).strip()[:_MAX_PARAM_TEXT]
-            parent = parents.get(name)
-            link = parent.strip() if parent else None
-            found.append(ModelInclude(model, name, link, line_of(include)))
-    return tuple(found)
 
 
 def _plugin(element: etree._Element, reference: str | None) -> PluginTag:

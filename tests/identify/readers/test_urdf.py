@@ -150,9 +150,23 @@ def test_included_models_are_read_with_the_link_they_are_fixed_to_and_bounded() 
         "<include><uri>http://example.com/model</uri></include></gazebo>"
     )
     robot.add("<gazebo>" + "<include><uri>model://x</uri></include>" * 1000 + "</gazebo>")
-    models = parse_urdf(robot.text()).models
-    assert [(m.model, m.name, m.link) for m in models[:2]] == [
+    urdf = parse_urdf(robot.text(), "many.urdf", strict=False)
+    assert [(m.model, m.name, m.link) for m in urdf.models[:2]] == [
         ("gps", "fix", "base_link"),
         ("camera", "camera", None),
     ]
-    assert len(models) == 400  # the hostile thousand are cut where plugin parameters are
+    assert len(urdf.models) == 400  # the hostile thousand are cut where plugin parameters are
+    # ... and the cut is said, once, where it falls (the 399th of the thousand).
+    cut = [w for w in urdf.warnings if w.code == "too-large"]
+    assert [(w.location.file, w.location.path, w.message) for w in cut] == [
+        ("many.urdf", "gazebo/include", "more than 400 model includes: the rest are not read")
+    ]
+    assert cut[0].location.line == robot.text().splitlines().index(robot.extra[-1]) + 1
+    with pytest.raises(InputError, match="more than 400 model includes"):
+        parse_urdf(robot.text())  # strict: every problem is an error
+
+
+def test_an_included_model_with_a_blank_name_is_named_by_its_model() -> None:
+    robot = builders.ugv()
+    robot.add("<gazebo><include><uri>model://gps</uri><name>   </name></include></gazebo>")
+    assert [(m.model, m.name) for m in parse_urdf(robot.text()).models] == [("gps", "gps")]
