@@ -21,6 +21,8 @@ The package has wings; each is a package with its own map in its docstring:
 ``lazy``               packages that load what they export on first use (PEP 562)
 ``collector``          Python's cycle collector held off while many acyclic values
                        are built (reading, solving)
+``addresses``          whether a host names this machine only (loopback), for every
+                       server and client of the tool
 ``files``              reading input safely (size limits, YAML with positions,
                        typed access, file kinds) and writing output atomically
 ``ros``                ROS vocabulary: topics, message-type names, teleoperation descriptions
@@ -45,7 +47,8 @@ The package has wings; each is a package with its own map in its docstring:
 
 Layers, lowest first; a module imports only from its own layer or lower ones, and no module
 imports itself back through others (tests/test_architecture.py checks both):
-``errors``, ``extras``, ``untrusted``, ``limits``, ``deadline``, ``lazy``, ``collector`` ->
+``errors``, ``extras``, ``untrusted``, ``limits``, ``deadline``, ``lazy``, ``collector``,
+``addresses`` ->
 ``files``, ``ros`` -> ``core`` -> ``engines``, ``check`` -> ``solving`` -> ``layouts``,
 ``identify`` -> ``reporting`` -> ``live`` -> ``cli``, ``studio``. Every import counts, those
 made only for type checking too.

@@ -28,7 +28,9 @@ PACKAGE = ROOT / "solver"
 
 # Lowest first; a wing may import from its own layer and every layer below it.
 LAYERS: tuple[frozenset[str], ...] = (
-    frozenset({"errors", "extras", "untrusted", "limits", "deadline", "lazy", "collector"}),
+    frozenset(
+        {"errors", "extras", "untrusted", "limits", "deadline", "lazy", "collector", "addresses"}
+    ),
     frozenset({"files", "ros"}),
     frozenset({"core"}),
     frozenset({"engines", "check"}),

@@ -164,9 +164,10 @@ def overwrite(path: str | Path, content: str | bytes, *, within: str | Path) -> 
     :class:`InputError` if something else is there or the folder is unusable.
 
     Not atomic and not flushed to the disk: a reader, a crash or a kill may meet the file empty
-    or cut. Only for a record whose partial or lost content is harmless: a ``batch`` stamp
-    (:mod:`solver.reporting.batch`), a JSON object, which cut before its closing brace is no
-    JSON at all. It
+    (new), cut, or the new bytes followed by the tail of longer old ones (they are written
+    over the old bytes, then the file is cut to their length). Only for a record whose partial
+    or lost content is harmless: a ``batch`` stamp (:mod:`solver.reporting.batch`), a JSON
+    object, which cut before its closing brace, or followed by another's tail, is no JSON. It
     costs no new file and no rename, which an atomic write of a few hundred bytes is mostly made
     of."""
     target = Path(path)

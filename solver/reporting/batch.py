@@ -452,7 +452,18 @@ def _kept_row(job: Job) -> SummaryRow | None:
     rules_file = stamp.get("rules_file")
     if not isinstance(rules_file, str) or stamp.get("rules_sha256") != _sha256(Path(rules_file)):
         return None
+    if not _summarisable(output):
+        return None  # a JSON planted under a matching stamp: solved again, overwritten
     return _row(job, output)
+
+
+def _summarisable(output: dict[str, Any]) -> bool:
+    """Whether a team's JSON has the shapes its summary row reads."""
+    return (
+        isinstance(output.get("totals", {}), dict)
+        and isinstance(output.get("by_type", []), list)
+        and isinstance(output.get("warnings", []), list)
+    )
 
 
 # ---- 3. solving ---------------------------------------------------------------------------
@@ -692,6 +703,7 @@ def _context() -> ForkServerContext | SpawnContext:
 # What only the workers import (run_job's modules): the batch process does not, which shortens
 # its start-up, and the forkserver imports them once for all its workers.
 _WORKER_MODULES = (
+    "solver.engines.structure",  # the engine `solve` picks for every shipped team
     "solver.reporting.plot",
     "solver.reporting.render",
     "solver.reporting.report",

@@ -36,7 +36,7 @@ from http.cookies import SimpleCookie
 from typing import Any
 from urllib.parse import parse_qsl, urlencode
 
-from solver.live.server import loopback  # one definition, the watch server's
+from solver.addresses import loopback
 from solver.studio.peers import same_account
 
 __all__ = ["HEADERS", "MAX_QUERY_BYTES", "Guard", "cookie_name", "loopback"]

@@ -250,3 +250,47 @@ def test_the_stamp_records_the_hash_of_the_json_bytes_written(teams: Path, tmp_p
     stamp = json.loads((tmp_path / "out" / ".stamps" / "case3.json").read_text(encoding="utf-8"))
     written = (tmp_path / "out" / "teams" / "case3.json").read_bytes()
     assert stamp["output_sha256"] == hashlib.sha256(written).hexdigest()
+
+
+@pytest.mark.parametrize(
+    ("field", "value"), [("totals", []), ("by_type", {}), ("warnings", "text")]
+)
+def test_a_json_of_another_shape_planted_under_a_matching_stamp_is_solved_again(
+    teams: Path, tmp_path: Path, field: str, value: object
+) -> None:
+    import hashlib
+
+    jobs = make_jobs(find_teams([str(teams / "case1.yaml")]), tmp_path / "out")
+    list(run_batch(jobs, 1))
+    output = tmp_path / "out" / "teams" / "case1.json"
+    planted = json.loads(output.read_text(encoding="utf-8"))
+    planted[field] = value
+    output.write_text(json.dumps(planted), encoding="utf-8")
+    stamp_file = tmp_path / "out" / ".stamps" / "case1.json"
+    stamp = json.loads(stamp_file.read_text(encoding="utf-8"))
+    stamp["output_sha256"] = hashlib.sha256(output.read_bytes()).hexdigest()  # it matches
+    stamp_file.write_text(json.dumps(stamp), encoding="utf-8")
+    again = make_jobs(find_teams([str(teams / "case1.yaml")]), tmp_path / "out")
+    assert [job.up_to_date for job in again] == [False]
+    assert [o.action for o in run_batch(again, 1)] == ["solved"]
+
+
+def test_the_forkserver_preloads_every_module_a_worker_imports_to_solve(
+    teams: Path, tmp_path: Path
+) -> None:
+    import subprocess
+    import sys
+
+    # In a fresh interpreter, as the forkserver starts: the preload, then one team solved.
+    code = (
+        "import importlib, sys\n"
+        "from solver.reporting import batch\n"
+        "for name in batch._WORKER_MODULES: importlib.import_module(name)\n"
+        "before = set(sys.modules)\n"
+        f"jobs = batch.make_jobs(batch.find_teams([{str(teams / 'case3.yaml')!r}]), "
+        f"{str(tmp_path / 'out')!r}, force=True)\n"
+        "assert batch.run_job(jobs[0]).action == 'solved'\n"
+        "print(sorted(m for m in set(sys.modules) - before if m.startswith('solver')))\n"
+    )
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert done.stdout == "[]\n"

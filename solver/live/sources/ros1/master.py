@@ -43,9 +43,9 @@ from typing import Any, Final
 from urllib.parse import urlsplit
 from xml.parsers.expat import ExpatError
 
+from solver.addresses import loopback
 from solver.errors import InputError
 from solver.live.graph import MISSING, MasterError, MasterUnreachable, Observation
-from solver.live.server import loopback
 from solver.live.sources.ros1.rpc import BoundedTransport, OversizedReply
 from solver.untrusted import shown
 
