@@ -13,8 +13,10 @@ A labelled set is a folder with a ``truth.csv`` (the columns of ``../shared/corp
 ``robot``, ``file``, ``srdf``, ``source``, ``kinematic_type``, ``sensors``,
 ``motion_control_kinds``, ``uncertainty_note``, ...; optionally ``family`` and ``licence``).
 ``file`` and ``srdf`` are paths relative to the set; a file absent there is looked up under each
-``--files`` folder and then under ``../shared/<set folder name>/``, and a row whose file is
-nowhere is counted as *absent* (its ``source`` says how to fetch it) and not measured.
+``--files`` folder and then under ``../shared/<set folder name>/`` (a name that another set
+measured lists too, only in the set's home ``--files`` folder, the one holding most of its other
+files: two sets may label different robots under one file name), and a row whose file is nowhere
+is counted as *absent* (its ``source`` says how to fetch it) and not measured.
 
 Each robot is identified from its URDF (and SRDF when it has one) with the shipped profile and
 the article's rule set, exactly as ``teleop-ui identify`` would. Printed, as Markdown, per
@@ -36,9 +38,10 @@ are measured by the part the split gives them, ``development`` and ``held-out``,
 place of the sets; a row the split does not list is measured as ``unsplit``. With ``--all``,
 ``tools/generalization_set`` and every ``tools/fresh_set_N`` folder are measured too. A fresh
 set is built blind, to measure the rules once, then moved to the development part (the split
-lists its rows as ``development``: ``tools/fresh_set_1``, ``tools/fresh_set_2`` and
-``tools/fresh_set_3``, their READMEs). The *blind* set is the highest-numbered ``fresh_set_N``
-among the sets measured whose name the split does not list at all (now ``tools/fresh_set_4``,
+lists its rows as ``development``: ``tools/fresh_set_1``, ``tools/fresh_set_2``,
+``tools/fresh_set_3`` and ``tools/fresh_set_4``, their READMEs). The *blind* set is the
+highest-numbered ``fresh_set_N`` among the sets measured whose name the split does not list at
+all (now ``tools/fresh_set_5``,
 when it is there): its
 rows are held out whole by their set, and count in ``held-out`` and again on a line of their
 own, ``held-out (fresh)``. Moving it to development is listing it in the split; another
@@ -310,6 +313,37 @@ def locate(relative: str, folders: Iterable[Path]) -> Path:
     return next((path for path in candidates if path.is_file()), candidates[0])
 
 
+def shared_names(folders: Iterable[Path]) -> frozenset[str]:
+    """File names (``file`` and ``srdf``) that more than one of the sets in ``folders`` lists:
+    two sets may label different robots under one name (``urdf/sjtu_drone.urdf``)."""
+    seen: dict[str, int] = {}
+    for folder in folders:
+        truth = folder / "truth.csv"
+        if not truth.is_file():
+            continue
+        with truth.open(encoding="utf-8", newline="") as stream:
+            rows = list(csv.DictReader(line for line in stream if not line.startswith("#")))
+        for name in {row.get(key) or "" for row in rows for key in ("file", "srdf")} - {""}:
+            seen[name] = seen.get(name, 0) + 1
+    return frozenset(name for name, count in seen.items() if count > 1)
+
+
+def lookup_folders(
+    folder: Path, rows: list[dict[str, str]], extra_files: list[Path], shared: frozenset[str]
+) -> tuple[list[Path], list[Path]]:
+    """Where a set's files are looked up: every folder (its own, each ``--files`` folder, then
+    ``../shared/<set>``), and for a name another set lists too (``shared``) only its own
+    folder, its home among the ``--files`` folders (the one holding most of its other files;
+    none when none does) and ``../shared/<set>``, so that no row is measured on another set's
+    file."""
+    last = shared_folder() / folder.name
+    names = [row.get(key) or "" for row in rows for key in ("file", "srdf") if row.get(key) or ""]
+    own = [name for name in names if name not in shared]
+    held = [sum(1 for name in own if (extra / name).is_file()) for extra in extra_files]
+    home = [extra_files[held.index(max(held))]] if held and max(held) > 0 else []
+    return [folder, *extra_files, last], [folder, *home, last]
+
+
 def fresh_number(name: str) -> int | None:
     """N of a folder named ``fresh_set_N``; None for any other name."""
     found = FRESH_NAME.fullmatch(name)
@@ -350,15 +384,18 @@ def measure(
     split: dict[tuple[str, str], str] | None = None,
     parts: dict[str, Measured] | None = None,
     blind: str | None = None,
+    shared: frozenset[str] = frozenset(),
 ) -> Measured | None:
     """Measure one set; with ``split``, each row into the Measured of its part in ``parts``
-    (the rows of the set named ``blind`` held out whole, see ``parts_of``)."""
+    (the rows of the set named ``blind`` held out whole, see ``parts_of``). A file name in
+    ``shared`` (listed by another set too) is looked up only where this set keeps its files
+    (``lookup_folders``)."""
     truth = folder / "truth.csv"
     if not truth.is_file():
         return None
     with truth.open(encoding="utf-8", newline="") as stream:
         rows = list(csv.DictReader(line for line in stream if not line.startswith("#")))
-    folders = [folder, *extra_files, shared_folder() / folder.name]
+    folders, narrow = lookup_folders(folder, rows, extra_files, shared)
     own = Measured(name, truth, len(rows), Score(structures), {}, {})
     for row in rows:
         targets = [own]
@@ -376,8 +413,9 @@ def measure(
                 measured.families.setdefault(family_of(row), Score(structures)),
                 measured.sources.setdefault(source_of(row), Score(structures)),
             ]
-        urdf = locate(row["file"], folders)
-        srdf = locate(row["srdf"], folders) if row.get("srdf") else None
+        urdf = locate(row["file"], narrow if row["file"] in shared else folders)
+        srdf_name = row.get("srdf") or ""
+        srdf = locate(srdf_name, narrow if srdf_name in shared else folders) if srdf_name else None
         if not urdf.is_file() or (srdf is not None and not srdf.is_file()):
             for score in scores:
                 score.miss_file(row, urdf if not urdf.is_file() else srdf or urdf)
@@ -478,6 +516,7 @@ def main(argv: list[str] | None = None) -> int:
     blind = blind_set((folder.name for folder in folders), split) if split is not None else None
     parts: dict[str, Measured] = {}
     sets: list[Measured] = []
+    shared = shared_names(folders)
     for folder in folders:
         measured = measure(
             folder.name,
@@ -488,6 +527,7 @@ def main(argv: list[str] | None = None) -> int:
             split=split,
             parts=parts,
             blind=blind,
+            shared=shared,
         )
         if measured is None:
             print(f"no labelled set at {folder} (truth.csv missing); nothing measured there\n")

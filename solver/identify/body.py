@@ -62,6 +62,7 @@ from solver.identify.vehicle import (
     surface_hints,
     tracks,
     underwater_hints,
+    water_frames,
     wings,
 )
 from solver.untrusted import shown
@@ -111,6 +112,9 @@ class Body:
     # What a body below the surface has: a buoyancy or hydrodynamics plugin, a thruster plugin,
     # a DVL or pressure sensor. A body in water by thruster names alone has none.
     underwater_hints: tuple[str, ...] = ()
+    # Frames fixed to the body named as an underwater sensor's (a DVL), with nothing behind them:
+    # a body in water below the surface, though no plugin says so.
+    water_frames: tuple[str, ...] = ()
     # Flying known only from a model plugin's parameters (a vehicle plugin of its own).
     flight_hints: tuple[str, ...] = ()
     finger_motions: int = 0
@@ -140,7 +144,7 @@ class Body:
 
     @property
     def marine(self) -> bool:
-        return bool(self.thrusters or self.marine_plugins)
+        return bool(self.thrusters or self.marine_plugins or self.water_frames)
 
     @property
     def flying(self) -> bool:
@@ -188,7 +192,7 @@ class Body:
             "finger_motions": self.finger_motions,
             "marine": int(self.marine),
             "surface": int(bool(self.surface_hints)),
-            "underwater": int(bool(self.underwater_hints)),
+            "underwater": int(bool(self.underwater_hints or self.water_frames)),
             "serpentine": int(self.count("spine") > 0),
         }
 
@@ -221,6 +225,8 @@ class Body:
             lines.append(f"floats at the surface: {_names(self.surface_hints)}")
         elif self.underwater_hints:
             lines.append(f"below the surface: {_names(self.underwater_hints)}")
+        elif self.water_frames:
+            lines.append(f"an underwater sensor's frame on the body: {_names(self.water_frames)}")
         elif self.marine_plugins:  # a buoyancy plugin: in water, nothing says how deep
             lines.append(
                 "in water, nothing says below or at the surface: no hydrodynamics or thruster "
@@ -334,6 +340,7 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
         marine_plugins=tuple(dict.fromkeys((*tree.labels("thruster"), *tree.labels("marine")))),
         surface_hints=surface_hints(tree),
         underwater_hints=underwater_hints(tree),
+        water_frames=water_frames(tree),
         flight_hints=flight_hints(tree, parts.roles, parts.limbs),
         finger_motions=sum(1 for name in parts.grippers if (j := urdf.joint(name)) and j.actuated),
         roles=_all_roles(tree, parts),

@@ -16,7 +16,7 @@ Not here: the limb a hand ends (:mod:`solver.identify.limbs`), the other single-
 from __future__ import annotations
 
 from solver.identify.couplings import jaw_groups
-from solver.identify.limbs import Limb
+from solver.identify.limbs import Limb, moved_by
 from solver.identify.pose import local_axis, parallel
 from solver.identify.readers.urdf import Joint
 from solver.identify.tree import JointTree
@@ -143,4 +143,31 @@ def finger_groups(tree: JointTree, limbs: list[Limb], *, grounded: bool = False)
     for group in by_base.values():
         if len(group) >= tree.profile.limb("hand_min_fingers"):
             found.update(name for limb in group for name in limb.joints)
+    return found or _spread_fingers(tree, by_base)
+
+
+def _spread_fingers(tree: JointTree, by_base: dict[str, list[Limb]]) -> set[str]:
+    """Fingers that each spread on a joint of their own (abduction) before they branch: the
+    short chains' bases each moved by one joint from one body (the palm), in threes or more,
+    no chain counting its spreading joint longer than a finger. The spreading joints are
+    fingers' too."""
+    longest = tree.profile.limb("finger_max_joints")
+    by_palm: dict[str | None, list[Joint]] = {}
+    known: dict[str, str | None] = {}
+    for base, group in by_base.items():
+        spread = tree.urdf.parent_joint(base)
+        if (
+            spread is None
+            or not spread.movable
+            or any(len(limb.joints) + 1 > longest for limb in group)
+        ):
+            continue
+        # The palm: what carries the spreading joint's link (a metacarpal fixed to it each).
+        by_palm.setdefault(moved_by(tree.urdf, spread.parent, known), []).append(spread)
+    found: set[str] = set()
+    for spreads in by_palm.values():
+        if len(spreads) >= tree.profile.limb("hand_min_fingers"):
+            found.update(joint.name for joint in spreads)
+            for joint in spreads:
+                found.update(name for limb in by_base[joint.child] for name in limb.joints)
     return found

@@ -41,6 +41,7 @@ Not here: fingers and hands (:mod:`solver.identify.hands`), the body they make
 
 from __future__ import annotations
 
+import math
 from collections import deque
 from dataclasses import dataclass, replace
 from itertools import islice, pairwise
@@ -79,6 +80,14 @@ _MOUNTED = ("wheel", "steering", "caster", "rotor", "thruster")
 # Legs by place: at least this many alike chains of this many joints on one link.
 _WALKER_LEGS = 4
 _LEG_JOINTS = (2, 4)
+# Six or more such chains that lie flat at rest, each reaching out from the body by this share
+# of its reach, are a walker's legs too (a hexapod drawn with its legs stretched out).
+_LEG_SPREAD = 0.5
+# One-joint chains turning whole (a wheel-leg walker's, RHex-like) on one body: legs when this
+# many, about parallel axes, on both sides and at this many places along the body.
+_WHOLE_TURN_LEGS = 6
+_WHOLE_TURN_ROWS = 3
+_FULL_TURN = 2 * math.pi - 1e-6
 # A leg ends below where it starts by at least this share of its reach (fingers do not).
 _LEG_DROP = 0.25
 # The two motors of a five-bar leg sit this close (metres), on one line; legs are paired only
@@ -94,6 +103,9 @@ _MOST_FIVE_BAR_LEGS = 64
 _MODULE_SPREAD = 0.1
 # A snake's module holds one joint or two (a yaw and a pitch joint close together).
 _MODULE_JOINTS = (1, 2)
+# A snake that moves in a plane (every axis parallel) has at least this many modules; planar
+# arms of equal links are far shorter.
+_PLANAR_SPINE_JOINTS = 12
 # A spine carries at least this many single leaf joints to be read with side wheels.
 _SIDE_WHEELS = 2
 
@@ -183,6 +195,7 @@ def legs_by_place(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     """Alike unnamed chains on one link, four or more, on both its sides, each ending below
     where it starts: legs (a hexapod's, a quadruped's whose joints carry no leg names)."""
     by_base: dict[str, list[Limb]] = {}
+    known: dict[str, str | None] = {}
     for limb in limbs:
         if (
             limb.kind in ("arm", "other")
@@ -190,18 +203,117 @@ def legs_by_place(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
             and not limb.gripper
             and _LEG_JOINTS[0] <= len(limb.joints) <= _LEG_JOINTS[1]
         ):
-            by_base.setdefault(limb.base, []).append(limb)
-    legs: set[int] = set()
+            # Chains on links fixed to one body hang from that body (a hip bracket each).
+            by_base.setdefault(_carrier(tree, limb.base, known), []).append(limb)
+        elif limb.kind == "other" and len(limb.joints) == 1 and _turns_whole(tree, limb):
+            by_base.setdefault(_carrier(tree, limb.base, known), []).append(limb)
+    legs: dict[int, str] = {}
     for base, group in by_base.items():
         lengths = {len(limb.joints) for limb in group}
-        if len(group) >= _WALKER_LEGS and len(lengths) == 1 and _stands(tree, base, group):
-            legs.update(id(limb) for limb in group)
+        if len(group) < _WALKER_LEGS or len(lengths) != 1:
+            continue
+        why = _legs_why(tree, base, group)
+        if why:
+            legs.update((id(limb), why) for limb in group)
     if not legs:
         return limbs
-    why = "one of alike chains around one link, each ending below where it starts (legs by place)"
     return sort_limbs(
-        tree, [replace(limb, kind="leg", why=why) if id(limb) in legs else limb for limb in limbs]
+        tree,
+        [
+            replace(limb, kind="leg", why=legs[id(limb)]) if id(limb) in legs else limb
+            for limb in limbs
+        ],
     )
+
+
+def _legs_why(tree: JointTree, base: str, group: list[Limb]) -> str:
+    """Why alike chains around ``base`` are legs, or "" when they are not."""
+    if len(group[0].joints) == 1:
+        if len(group) >= _WHOLE_TURN_LEGS and _around(tree, base, group) and _parallel(tree, group):
+            return (
+                "one of six or more one-joint chains turning whole about parallel axes around one"
+                " body (a wheel-leg walker's legs)"
+            )
+        return ""
+    if _stands(tree, base, group):
+        return (
+            "one of alike chains around one link, each ending below where it starts (legs by place)"
+        )
+    if len(group) >= _WHOLE_TURN_LEGS and _spreads(tree, base, group):
+        return (
+            "one of six or more alike chains around one link, each reaching out flat from it"
+            " (a walker's legs at rest, by place)"
+        )
+    return ""
+
+
+def _turns_whole(tree: JointTree, limb: Limb) -> bool:
+    """The limb's one joint turns all the way round (continuous, or a range of a full turn)."""
+    joint = tree.urdf.joint(limb.joints[0])
+    if joint is None or joint.mimic is not None:
+        return False
+    if joint.type == "continuous":
+        return True
+    return (
+        joint.type == "revolute"
+        and joint.lower is not None
+        and joint.upper is not None
+        and joint.upper - joint.lower >= _FULL_TURN
+    )
+
+
+def _parallel(tree: JointTree, group: list[Limb]) -> bool:
+    """The chains' first joints turn about parallel axes."""
+    axes = []
+    for limb in group:
+        joint = tree.urdf.joint(limb.joints[0])
+        if joint is None:
+            return False
+        axes.append(tree.poses.axis(joint))
+    return all(parallel(axes[0], axis) for axis in axes[1:])
+
+
+def _around(tree: JointTree, base: str, group: list[Limb]) -> bool:
+    """The chains start on both sides of ``base`` and at three places or more along it."""
+    centre = tree.poses.place(base)
+    sides = set()
+    along = set()
+    for limb in group:
+        joint = tree.urdf.joint(limb.joints[0])
+        if joint is None:
+            return False
+        start = tree.poses.place(joint.child)
+        offset = start[1] - centre[1]
+        if abs(offset) > 1e-6:
+            sides.add(offset > 0)
+        along.add(round(start[0] - centre[0], 2))
+    return sides == {True, False} and len(along) >= _WHOLE_TURN_ROWS
+
+
+def _spreads(tree: JointTree, base: str, group: list[Limb]) -> bool:
+    """Each chain, on both sides of ``base``, ends farther out from it across the ground than
+    it starts, by most of its reach, and not above it by more than a leg's drop share."""
+    poses = tree.poses
+    centre = poses.place(base)
+    sides = set()
+    for limb in group:
+        first = tree.urdf.joint(limb.joints[0])
+        if first is None:
+            return False
+        start, end = poses.place(first.child), poses.place(limb.tip)
+        reach = distance(start, end)
+        out = _flat(end, centre) - _flat(start, centre)
+        if reach == 0 or out < _LEG_SPREAD * reach or end[2] - start[2] > _LEG_DROP * reach:
+            return False
+        offset = start[1] - centre[1]
+        if abs(offset) > 1e-6:
+            sides.add(offset > 0)
+    return sides == {True, False}
+
+
+def _flat(one: tuple[float, float, float], other: tuple[float, float, float]) -> float:
+    """Distance across the ground (x and y only)."""
+    return math.hypot(one[0] - other[0], one[1] - other[1])
 
 
 def _stands(tree: JointTree, base: str, group: list[Limb]) -> bool:
@@ -234,11 +346,8 @@ def five_bars(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
         if id(one) in used:
             continue
         for other in legs[index + 1 :]:
-            if id(other) not in used and _coaxial(tree, one, other) and _closed(tree, one, other):
-                why = (
-                    "two motors of one five-bar leg (their first joints turn about one line, "
-                    "their chains close a loop)"
-                )
+            why = "" if id(other) in used else _one_leg(tree, one, other)
+            if why:
                 merged[id(one)] = replace(one, joints=one.joints + other.joints, why=why)
                 used.update((id(one), id(other)))
                 break
@@ -250,9 +359,30 @@ def five_bars(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     return sort_limbs(tree, kept)
 
 
+def _one_leg(tree: JointTree, one: Limb, other: Limb) -> str:
+    """Why two leg chains are one leg (a five-bar or a parallel linkage), or ""."""
+    if _coaxial(tree, one, other) and _closed(tree, one, other):
+        return (
+            "two motors of one five-bar leg (their first joints turn about one line, "
+            "their chains close a loop)"
+        )
+    if _beside(tree, one, other, on_line=False) and _ends_meet(tree, one, other):
+        return (
+            "two chains of one parallel-linkage leg (their first joints turn about "
+            "parallel axes side by side, their ends meet)"
+        )
+    return ""
+
+
 def _coaxial(tree: JointTree, one: Limb, other: Limb) -> bool:
     """The first joints of two chains turn about one line, close together, on one side of the
     body (a humanoid's two hips share a line too, but on both sides of it)."""
+    return _beside(tree, one, other, on_line=True)
+
+
+def _beside(tree: JointTree, one: Limb, other: Limb, *, on_line: bool) -> bool:
+    """The first joints of two chains turn about parallel axes, close together, on one side of
+    the body; with ``on_line``, about one line."""
     first, second = tree.urdf.joint(one.joints[0]), tree.urdf.joint(other.joints[0])
     if first is None or second is None or first.type == "prismatic":
         return False
@@ -265,19 +395,28 @@ def _coaxial(tree: JointTree, one: Limb, other: Limb) -> bool:
     line = (b[0] - a[0], b[1] - a[1], b[2] - a[2])
     centre = poses.place(tree.urdf.root)
     same_side = (a[1] - centre[1]) * (b[1] - centre[1]) > 0
-    return same_side and (gap < 1e-6 or parallel(line, axis))
+    return same_side and (not on_line or gap < 1e-6 or parallel(line, axis))
+
+
+def _ends_meet(tree: JointTree, one: Limb, other: Limb) -> bool:
+    """The two chains end at one place (closer than half the gap between their first joints):
+    a closed chain, written as two open ones."""
+    poses = tree.poses
+    first, second = tree.urdf.joint(one.joints[0]), tree.urdf.joint(other.joints[0])
+    if first is None or second is None:
+        return False
+    gap = distance(poses.place(first.child), poses.place(second.child))
+    return distance(poses.place(one.tip), poses.place(other.tip)) < max(gap / 2, _LOOP_CLOSED)
 
 
 def _closed(tree: JointTree, one: Limb, other: Limb) -> bool:
     """The two chains close a loop, as a five-bar leg's do: their ends meet (closer than half
     the gap between their first joints), or a mimic joint below one follows a joint below the
     other (a closed chain written as mimic partners)."""
-    poses = tree.poses
     first, second = tree.urdf.joint(one.joints[0]), tree.urdf.joint(other.joints[0])
     if first is None or second is None:
         return False
-    gap = distance(poses.place(first.child), poses.place(second.child))
-    if distance(poses.place(one.tip), poses.place(other.tip)) < max(gap / 2, _LOOP_CLOSED):
+    if _ends_meet(tree, one, other):
         return True
     if not tree.couplings.driver_of:
         return False
@@ -311,9 +450,17 @@ def spine(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     joints = [j for j in (tree.urdf.joint(name) for name in limb.joints) if j is not None]
     # A snake may have a head; arm or leg names say it is something else.
     named = _named_limb(tree, joints)
-    if named or not _alternating(tree, joints) or not _modules(tree, joints):
+    if named or not _modules(tree, joints):
         return limbs
-    why = f"a chain of {len(joints)} equal modules whose axes alternate, nothing else (a spine)"
+    if _alternating(tree, joints):
+        why = f"a chain of {len(joints)} equal modules whose axes alternate, nothing else (a spine)"
+    elif len(joints) >= _PLANAR_SPINE_JOINTS and _planar(tree, joints):
+        why = (
+            f"a chain of {len(joints)} equal modules turning about parallel axes, nothing else"
+            " (a planar snake's spine)"
+        )
+    else:
+        return limbs
     return [replace(limb, kind="spine", why=why)]
 
 
@@ -403,6 +550,13 @@ def _named_limb(tree: JointTree, joints: list[Joint]) -> bool:
 def _alternating(tree: JointTree, joints: list[Joint]) -> bool:
     axes = [tree.poses.axis(joint) for joint in joints]
     return all(perpendicular(one, other) for one, other in pairwise(axes))
+
+
+def _planar(tree: JointTree, joints: list[Joint]) -> bool:
+    axes = [tree.poses.axis(joint) for joint in joints]
+    return all(joint.type in ("revolute", "continuous") for joint in joints) and all(
+        parallel(axes[0], axis) for axis in axes[1:]
+    )
 
 
 def _modules(tree: JointTree, joints: list[Joint]) -> bool:

@@ -54,7 +54,15 @@ __all__ = ["controls_from_description"]
 # (profile source, evidence): what one place of the description shows.
 _Shown = list[tuple[str, str]]
 # The sources read from what joints do rather than from a declared controller.
-_ROLE_SOURCES = ("wheels", "planar_base", "thrusters", "arm", "arm_gripper", "legs")
+_ROLE_SOURCES = (
+    "wheels",
+    "steered_wheels",
+    "planar_base",
+    "thrusters",
+    "arm",
+    "arm_gripper",
+    "legs",
+)
 # Legs a body stands and walks on (one leg is a tool, a leg rig or a tail).
 _WALKING_LEGS = 2
 # Joints from the base to a gripper that reach any pose (three for position, three to turn).
@@ -76,6 +84,15 @@ def _ground(body: Body, urdf_source: str) -> _Shown:
         )
     if body.wheels:
         found.append(("wheels", f"{urdf_source}: {len(body.wheels)} wheel joint(s) that turn"))
+    if body.casters and not (
+        body.wheels or body.drive_plugins or body.tracks or body.count("leg") or body.flying
+    ):
+        # Wheels that all hang under swivels, and no other wheel: casters cannot move a base
+        # by themselves, so the swivels steer drive modules (an omnidirectional base).
+        count = len(body.casters)
+        found.append(
+            ("steered_wheels", f"{urdf_source}: {count} swivel and wheel joint(s), no other wheel")
+        )
     if body.planar_base:
         # The model moves its base in the plane (a planar joint, or root joints along x, y
         # and about z): what a planar-move plugin does, velocity commands in the plane.

@@ -139,6 +139,7 @@ CONTROL_SOURCES = (
     "srdf_walker_group",
     "srdf_end_effector",
     "wheels",
+    "steered_wheels",
     "planar_base",
     "thrusters",
     "arm",

@@ -44,6 +44,7 @@ __all__ = [
     "surface_hints",
     "tracks",
     "underwater_hints",
+    "water_frames",
     "wings",
 ]
 
@@ -223,6 +224,21 @@ def underwater_hints(tree: JointTree) -> tuple[str, ...]:
             if pattern.search(f"{sensor.type} {sensor.device_text}")
         ]
     return tuple(dict.fromkeys(hints))
+
+
+def water_frames(tree: JointTree) -> tuple[str, ...]:
+    """Links fixed to the body whose names the profile's ``underwater`` pattern reads (a DVL's
+    frame): a Doppler log or a subsea sensor works only in water, so its frame puts the body in
+    water below the surface, with no plugin or sensor element behind it."""
+    pattern = tree.profile.plugin_pattern("underwater")
+    if pattern is None:
+        return ()
+    known: dict[str, str | None] = {}
+    return tuple(
+        link.name
+        for link in tree.urdf.links
+        if pattern.search(link.name) and moved_by(tree.urdf, link.name, known) is None
+    )
 
 
 def flight_hints(tree: JointTree, roles: dict[str, Role], limbs: Sequence[Limb]) -> tuple[str, ...]:

@@ -169,3 +169,26 @@ def test_two_jaws_side_by_side_at_the_end_of_an_arm_make_it_end_in_a_gripper() -
     assert result.structure == "Humanoid"
     assert result.body is not None
     assert [limb.gripper for limb in result.body.limbs if limb.kind == "arm"] == [True, True]
+
+
+def spread_hand(fingers: int = 4) -> RobotText:
+    """A hand of unnamed joints: on each metacarpal link fixed to the palm, a spreading joint
+    (``aaN``) into a knuckle link that carries a 3-joint finger and a 1-joint tendon driver."""
+    robot = RobotText("anatomy", root="palm")
+    for i in range(1, fingers + 1):
+        meta = robot.joint(f"meta{i}", "fixed", "palm", f"meta{i}_link")
+        knuckle = robot.chain(meta, [f"aa{i}"])
+        robot.chain(knuckle, [f"mcp{i}", f"pip{i}", f"dip{i}"])
+        robot.chain(knuckle, [f"act{i}"])
+    return robot
+
+
+def test_fingers_that_spread_on_a_joint_of_their_own_before_they_branch_make_a_hand() -> None:
+    result = identify_urdf(spread_hand().text())
+    assert result.structure == "Hand"
+    roles = {role.joint: role.role for role in result.roles}
+    assert {roles[f"aa{i}"] for i in range(1, 5)} == {"finger"}
+
+
+def test_two_spreading_chains_on_one_palm_are_no_hand() -> None:
+    assert identify_urdf(spread_hand(2).text()).structure != "Hand"

@@ -335,3 +335,179 @@ def test_a_leg_alone_on_a_still_body_is_an_arm_with_leg_names() -> None:
     assert rolling is not None
     assert [limb.kind for limb in rolling.limbs] == ["leg"]
     assert identify_urdf(builders.biped().text()).structure == "Biped"
+
+
+def stretched_hexapod(legs: int = 6) -> RobotText:
+    """A hexapod drawn with its legs stretched out flat (numbered joints, feet named
+    ``end_effector_N``): each leg hangs from a bracket link fixed to the body, its three joints
+    reach 0.3 m out from the body and end 5 cm above where they start."""
+    robot = RobotText("numbered", root="body")
+    for i in range(legs):
+        x = 0.2 * (i % (legs // 2)) - 0.2
+        y = 0.1 if i < legs // 2 else -0.1
+        bracket = robot.joint(
+            f"bracket_{i}", "fixed", "body", f"J{3 * i + 1}/body", f'<origin xyz="{x} {y} 0"/>'
+        )
+        out = f"0 {y} 0"  # 0.1 m further out from the body, on its side
+        first = builders.placed(robot, f"J{3 * i + 1}", "continuous", bracket, f"a{i}")
+        second = builders.placed(
+            robot, f"J{3 * i + 2}", "continuous", first, f"b{i}", xyz=out, axis="1 0 0"
+        )
+        third = builders.placed(
+            robot, f"J{3 * i + 3}", "continuous", second, f"c{i}", xyz=out, axis="1 0 0"
+        )
+        robot.joint(
+            f"foot_{i}", "fixed", third, f"end_effector_{i + 1}",
+            f'<origin xyz="0 {y} 0.05"/>',
+        )  # fmt: skip
+    return robot
+
+
+def test_six_chains_on_brackets_fixed_to_one_body_reaching_out_flat_are_a_hexapods_legs() -> None:
+    result = identify_urdf(stretched_hexapod().text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["leg"] * 6
+    assert "reaching out flat" in result.body.limbs[0].why
+    assert result.structure == "Hexapod"
+
+
+def test_four_chains_reaching_out_flat_are_not_legs_by_that_rule() -> None:
+    # Flat chains are legs only six or more at once: four could be a torso's arms.
+    result = identify_urdf(stretched_hexapod(4).text())
+    assert result.body is not None
+    assert "leg" not in [limb.kind for limb in result.body.limbs]
+
+
+def whole_turn_legs(legs: int = 6, *, kind: str = "continuous", axis: str = "0 1 0") -> RobotText:
+    """A body with ``legs`` one-joint chains, half on each side, in rows along it (RHex-like)."""
+    robot = RobotText("six_spokes", root="body")
+    rows = legs // 2
+    for i in range(legs):
+        x = 0.2 * (i % rows) - 0.2
+        y = 0.1 if i < rows else -0.1
+        builders.placed(robot, f"L{i}", kind, "body", f"spoke{i}", xyz=f"{x} {y} 0", axis=axis)
+    return robot
+
+
+def test_six_one_joint_chains_turning_whole_about_parallel_axes_are_a_wheel_leg_walker() -> None:
+    result = identify_urdf(whole_turn_legs().text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["leg"] * 6
+    assert "turning whole" in result.body.limbs[0].why
+    assert result.structure == "Hexapod"
+    assert "Walking" in {c.motion_control for c in result.motion_controls}
+
+
+@pytest.mark.parametrize(
+    ("legs", "kind", "axis"),
+    [(4, "continuous", "0 1 0"), (6, "revolute", "0 1 0"), (6, "continuous", "0 0 1")],
+)
+def test_one_joint_chains_that_are_few_or_turn_partly_are_no_legs(
+    legs: int, kind: str, axis: str
+) -> None:
+    text = whole_turn_legs(legs, kind=kind).text()
+    if axis != "0 1 0":  # one spoke turns about another axis than the rest
+        text = text.replace('<axis xyz="0 1 0"/>', f'<axis xyz="{axis}"/>', 1)
+    result = identify_urdf(text)
+    assert result.body is not None
+    assert "leg" not in [limb.kind for limb in result.body.limbs]
+
+
+def planar_snake(modules: int) -> RobotText:
+    """A chain of equal modules 0.15 m apart, every axis vertical, its first link fixed to a
+    world link."""
+    robot = RobotText("planar", root="world")
+    link = robot.joint("world_joint", "fixed", "world", "m0")
+    for i in range(1, modules + 1):
+        link = builders.placed(robot, f"joint{i}", "revolute", link, f"m{i}", xyz="0.15 0 0")
+    return robot
+
+
+def test_a_long_chain_of_equal_modules_on_parallel_axes_fixed_to_the_world_is_a_planar_snake() -> (
+    None
+):
+    result = identify_urdf(planar_snake(20).text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["spine"]
+    assert "parallel axes" in result.body.limbs[0].why
+    assert result.structure == "Serpentine"
+
+
+def test_a_short_planar_chain_of_equal_links_stays_an_arm() -> None:
+    assert identify_urdf(planar_snake(6).text()).structure == "Manipulator"
+
+
+def parallel_linkage_legs(*, meet: bool = True) -> RobotText:
+    """A humanoid whose legs each have a parallel copy: from one hip link a 3-joint leg and,
+    3.5 cm ahead of its first joint, a 2-joint copy turning about parallel axes whose end meets
+    the leg's foot (``meet``) or stays 3.5 cm ahead of it."""
+    robot = RobotText("parallel_legs", root="trunk")
+    for side, y in (("left", 0.08), ("right", -0.08)):
+        hip = builders.placed(
+            robot, f"{side}_hip_yaw", "revolute", "trunk", f"{side}_hip", xyz=f"0 {y} -0.05"
+        )
+        thigh = builders.placed(
+            robot, f"{side}_hip_pitch", "revolute", hip, f"{side}_thigh", axis="0 1 0"
+        )
+        shank = builders.placed(
+            robot,
+            f"{side}_knee_pitch",
+            "revolute",
+            thigh,
+            f"{side}_shank",
+            xyz="0 0 -0.3",
+            axis="0 1 0",
+        )
+        ankle = builders.placed(
+            robot,
+            f"{side}_ankle_pitch",
+            "revolute",
+            shank,
+            f"{side}_ankle",
+            xyz="0 0 -0.3",
+            axis="0 1 0",
+        )
+        robot.joint(f"{side}_sole", "fixed", ankle, f"{side}_foot_plane")
+        upper = builders.placed(
+            robot,
+            f"parallel_{side}_thigh",
+            "revolute",
+            hip,
+            f"parallel_{side}_upper",
+            xyz="0.035 0 0",
+            axis="0 1 0",
+        )
+        lower = builders.placed(
+            robot,
+            f"parallel_{side}_shank",
+            "revolute",
+            upper,
+            f"parallel_{side}_lower",
+            xyz="0 0 -0.3",
+            axis="0 1 0",
+        )
+        back = "-0.035" if meet else "0"
+        robot.joint(
+            f"parallel_{side}_sole",
+            "fixed",
+            lower,
+            f"parallel_{side}_foot_plane",
+            f'<origin xyz="{back} 0 -0.3"/>',
+        )
+    builders.arm(robot, "trunk", "l_", 3, gripper=False)
+    builders.arm(robot, "trunk", "r_", 3, gripper=False)
+    return robot
+
+
+def test_a_legs_parallel_copy_whose_end_meets_its_foot_is_folded_into_the_leg() -> None:
+    result = identify_urdf(parallel_linkage_legs().text())
+    assert result.body is not None
+    assert result.body.count("leg") == 2
+    assert any("parallel-linkage" in limb.why for limb in result.body.limbs)
+    assert result.structure == "Humanoid"
+
+
+def test_a_legs_parallel_copy_whose_end_stays_apart_is_another_chain() -> None:
+    result = identify_urdf(parallel_linkage_legs(meet=False).text())
+    assert result.body is not None
+    assert result.body.count("leg") == 4

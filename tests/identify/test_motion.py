@@ -469,3 +469,42 @@ def test_a_telescopes_segments_sliding_along_one_axis_are_one_motion_of_an_arm()
     # Segments each turned on the last slide in other directions: six motions, a guess.
     turned = identify_urdf(telescoping_arm(4, turned=True).text())
     assert "End Effector" in {c.motion_control for c in turned.motion_controls}
+
+
+def swivel_modules(*, drive_wheels: int = 0) -> RobotText:
+    """A base whose four wheels each hang under a vertical swivel (no transmission, no plugin),
+    with ``drive_wheels`` more wheels on the base itself."""
+    robot = RobotText("modules")
+    for corner in ("front_left", "front_right", "back_left", "back_right"):
+        swivel = robot.joint(
+            f"caster_{corner}_joint", "continuous", robot.root, f"caster_{corner}_link",
+            '<axis xyz="0 0 1"/>',
+        )  # fmt: skip
+        robot.joint(f"wheel_{corner}_joint", "continuous", swivel, f"wheel_{corner}_link")
+    if drive_wheels:
+        builders.wheeled_base(robot, drive_wheels)
+    return robot
+
+
+def test_wheels_that_all_hang_under_swivels_are_steered_drive_modules() -> None:
+    found = controls(swivel_modules())
+    assert set(found) == {"Driving"}
+    assert "no other wheel" in found["Driving"]
+
+
+def test_swivels_beside_wheels_of_their_own_are_casters_and_the_wheels_drive() -> None:
+    found = controls(swivel_modules(drive_wheels=2))
+    assert "no other wheel" not in found["Driving"]
+
+
+def test_a_thrust_plugin_that_names_only_the_hull_drives_the_vessel() -> None:
+    robot = RobotText("hull")
+    robot.add(builders.model_plugin("dyn", "libusv_gazebo_dynamics_plugin.so"))
+    robot.add(
+        builders.model_plugin(
+            "thrust", "libusv_gazebo_thrust_plugin.so", "<bodyName>base_link</bodyName>"
+        )
+    )
+    result = identify_urdf(robot.text())
+    assert result.structure == "Surface Vessel"
+    assert {c.motion_control for c in result.motion_controls} == {"Driving"}

@@ -346,3 +346,30 @@ def test_a_long_fixed_chain_of_floating_links_under_a_moving_joint_is_read_once(
     result = identify_urdf(text)
     assert result.structure == "Underwater Vehicle"
     assert not any("floats" in line for line in result.evidence)
+
+
+def dvl_arm(frame: str = "dvl_link") -> RobotText:
+    """A body with fixed sensor frames and no plugin, carrying a 2-joint arm with a gripper."""
+    robot = RobotText("drone_with_arm")
+    robot.joint(f"{frame}_joint", "fixed", robot.root, frame)
+    robot.joint("camera_joint", "fixed", robot.root, "front_camera_link")
+    tip = robot.chain(robot.root, ["shoulder_joint", "arm_joint"])
+    robot.chain(tip, ["finger_joint1"], "prismatic")
+    robot.joint("finger_joint2", "prismatic", tip, "finger2", '<mimic joint="finger_joint1"/>')
+    return robot
+
+
+def test_a_body_with_a_dvl_frame_carrying_a_small_arm_is_an_underwater_vehicle() -> None:
+    result = identify_urdf(dvl_arm().text())
+    assert result.structure == "Underwater Vehicle"
+    assert result.body is not None
+    assert result.body.water_frames == ("dvl_link",)
+
+
+def test_a_dvl_frame_moved_by_a_joint_is_no_evidence_of_water() -> None:
+    robot = dvl_arm("camera_mount")
+    robot.joint("dvl_tilt", "revolute", "front_camera_link", "dvl_link", "")
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert result.body.water_frames == ()
+    assert result.structure == "Manipulator"
