@@ -9,7 +9,9 @@ evidence that decided it, actuation first and names last:
 2. wheels without names, told by where they are: endless leaves hanging below a link, at least
    one on each side of it;
 3. casters, a vertical swivel carrying one wheel; a caster driven through a transmission is no
-   caster (its swivel steers, its wheel drives);
+   caster (its swivel steers, its wheel drives); on a base so steered, another driven vertical
+   swivel that carries nothing that moves steers too (the vehicle's steering input); three
+   undriven endless joints about three axes through one point are a ball caster;
 4. rotors too few to fly are dropped (one spinning leaf is a motor or a tool), unless a
    simulator poses them (a propeller on a floating joint is one however few);
 5. jaws side by side, found by place (:func:`~solver.identify.hands.jaws`): one motion closing
@@ -26,6 +28,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 from solver.identify.hands import gripper_closure, jaws
+from solver.identify.limbs import moved_by
 from solver.identify.readers.urdf import Joint
 from solver.identify.roles import POSED, Role, main_axis
 from solver.identify.tree import JointTree
@@ -33,6 +36,8 @@ from solver.identify.tree import JointTree
 __all__ = ["joint_roles", "with_role"]
 
 _Z_AXIS = 2
+# A ball joint written as hinges: one about each axis.
+_BALL_AXES = 3
 # Roles a motor takes from the joints it turns through a coupling.
 _DRIVEN = ("wheel", "rotor", "thruster")
 
@@ -52,13 +57,50 @@ def joint_roles(tree: JointTree) -> dict[str, Role]:
             name, "wheel", "an unnamed endless leaf below its link, wheels on both sides"
         )
     roles.update(tree.reader.casters({n: r for n, r in roles.items() if r.role == "wheel"}))
+    roles.update(_ball_casters(tree, roles))
     roles.update(_driven_casters(tree, roles))
+    roles.update(_steering_beside(tree, roles))
     _drop_lone_rotors(tree, roles)
     roles.update(_coupled_drives(tree, roles))
     grippers = gripper_closure(tree, {n for n, r in roles.items() if r.role == "gripper"})
     for name in grippers - set(roles):
         roles[name] = Role(name, "gripper", "moves a finger: below a gripper joint")
     return roles
+
+
+def _ball_casters(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Role]:
+    """Three endless joints in a row about three different axes through one point (no offset
+    between them), none driven, carrying nothing that moves: a ball caster written as a ball
+    joint, passive, not an arm, hanging from a base that has wheels (a wrist hangs from an arm).
+    One walk up from each leaf: linear in the joints."""
+    found: dict[str, Role] = {}
+    if not any(r.role == "wheel" for r in roles.values()):
+        return found
+    known: dict[str, str | None] = {}  # one memo for every upward walk (as limbs.moved_by)
+    for leaf in tree.urdf.joints:
+        if leaf.type != "continuous" or leaf.child in tree.moving_below or leaf.name in roles:
+            continue
+        chain = [leaf]
+        while len(chain) < _BALL_AXES:
+            above = tree.urdf.parent_joint(chain[-1].parent)
+            if above is None or above.type != "continuous" or above.name in roles:
+                break
+            chain.append(above)
+        if _ball(tree, chain) and moved_by(tree.urdf, chain[-1].parent, known) is None:
+            names = ", ".join(j.name for j in reversed(chain))
+            for joint in chain:
+                found[joint.name] = Role(joint.name, "caster", f"a ball joint ({names}), undriven")
+    return found
+
+
+def _ball(tree: JointTree, chain: list[Joint]) -> bool:
+    """``chain`` (leaf first) turns about three axes through one point, and nothing drives it."""
+    return (
+        len(chain) == _BALL_AXES
+        and {main_axis(j.axis) for j in chain} == {0, 1, _Z_AXIS}
+        and all(j.origin == (0.0, 0.0, 0.0) for j in chain[:-1])
+        and not any(j.name in tree.urdf.controlled_joints for j in chain)
+    )
 
 
 def _driven_casters(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Role]:
@@ -71,6 +113,29 @@ def _driven_casters(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Rol
                 found[name] = Role(name, "steering", "a vertical swivel with a transmission")
             else:
                 found[name] = Role(name, "wheel", "a caster's wheel with a transmission")
+    return found
+
+
+def _steering_beside(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Role]:
+    """On a base whose wheels are already steered, another vertical swivel with a transmission
+    that carries nothing that moves (no wheel of its own, no limb name) steers too: the steering
+    input of the vehicle (a virtual front wheel the hardware maps onto the steered wheels), not a
+    limb to command joint by joint."""
+    steered = [n for n, r in roles.items() if r.role == "steering"]
+    if not steered:
+        return {}
+    found = {}
+    for joint in tree.urdf.joints:
+        if (
+            joint.name not in roles
+            and joint.type in ("revolute", "continuous")
+            and joint.name in tree.urdf.controlled_joints
+            and main_axis(joint.axis) == _Z_AXIS
+            and joint.child not in tree.moving_below
+            and not (tree.parts_of(joint.name) | tree.parts_of(joint.child))
+        ):
+            why = f"a driven vertical swivel beside {len(steered)} steering joint(s)"
+            found[joint.name] = Role(joint.name, "steering", why)
     return found
 
 

@@ -42,6 +42,7 @@ from solver.identify.limbs import (
     five_bars,
     legs_at_the_pelvis,
     legs_by_place,
+    lone_head,
     lone_leg,
     spine,
     wheeled_spine,
@@ -392,7 +393,9 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
         for name in side:
             parts.roles[name] = Role(name, "passive", "a leaf joint beside a spine (a side wheel)")
     parts.limbs = wrist(tree, parts.limbs, len(finger_tips(tree, parts.grippers)))
-    parts.limbs = lone_leg(tree, parts.limbs, flying or grounded(tree, parts.roles))
+    moves = flying or grounded(tree, parts.roles)
+    parts.limbs = lone_head(tree, parts.limbs, moves)
+    parts.limbs = lone_leg(tree, parts.limbs, moves)
 
 
 def _commanded(tree: JointTree, parts: _Parts) -> list[str]:

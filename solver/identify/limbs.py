@@ -59,6 +59,7 @@ __all__ = [
     "five_bars",
     "legs_at_the_pelvis",
     "legs_by_place",
+    "lone_head",
     "lone_leg",
     "sort_limbs",
     "spine",
@@ -603,6 +604,28 @@ def lone_leg(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
         return limbs
     why = f"the body's only limb, a leg-named chain of {len(limb.joints)} joint(s) on its root"
     return [replace(limb, kind="arm", why=why)]
+
+
+def lone_head(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
+    """A short unnamed chain read as a pan/tilt unit because it carries a sensor, the body's
+    only limb, hanging from a root fixed to ``world`` on a body that does not move: nothing
+    else is there to point the sensor for, and the base is bolted down. It is an arm (of two
+    joints or more) that carries the sensor at its tip."""
+    if moves or len(limbs) != 1 or limbs[0].kind != "head" or limbs[0].named:
+        return limbs
+    limb = limbs[0]
+    if len(limb.joints) < 2 or not _on_the_root(tree, limb.base) or not _world_root(tree):
+        return limbs
+    why = (
+        f"the body's only limb, an unnamed chain of {len(limb.joints)} joints on a root fixed"
+        " to the world (a short arm carrying a sensor)"
+    )
+    return [replace(limb, kind="arm", why=why)]
+
+
+def _world_root(tree: JointTree) -> bool:
+    """The description's root link is ``world``: the robot is bolted to the ground."""
+    return tree.urdf.root.lower() == "world"
 
 
 def _on_the_root(tree: JointTree, link: str) -> bool:

@@ -140,6 +140,7 @@ CONTROL_SOURCES = (
     "srdf_end_effector",
     "wheels",
     "steered_wheels",
+    "fixed_wheels",
     "planar_base",
     "thrusters",
     "arm",

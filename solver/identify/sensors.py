@@ -8,7 +8,8 @@ or a device in a topic list or bag
 (:mod:`solver.identify.interfaces`). The profile's rules give each its *kind* (``lidar``,
 ``depth_camera``, ``sonar``, ...). Plugins that publish simulation ground truth are skipped, and
 a plugin that feeds an element already counted (same kind, same link) is the same sensor, and
-depth streams on sibling frames of one camera link are one RGB-D camera. :func:`under_water`
+depth streams on sibling frames of one camera link are one RGB-D camera, and a depth stream on
+a stereo camera's frame is the pair's. :func:`under_water`
 reads a barometer on a body below the water as the depth gauge it is there.
 
 :func:`merge` turns detections into one :class:`Sensor` per kind and sensor type. Sources are
@@ -166,7 +167,7 @@ def _devices(found: list[tuple[Detection, str]], urdf: Urdf) -> list[Detection]:
     depth = {d.link for d in kept if d.kind == "depth_camera"}
     # A colour camera on the link of a depth camera is the RGB-D camera's colour stream.
     kept = [d for d in kept if not (d.kind == "camera" and d.link in depth)]
-    return _stereo_pairs(_rgbd_frames(kept, urdf))
+    return _stereo_depth(_stereo_pairs(_rgbd_frames(kept, urdf)), urdf)
 
 
 def _rgbd_frames(found: list[Detection], urdf: Urdf) -> list[Detection]:
@@ -245,6 +246,36 @@ def _stereo_pairs(found: list[Detection]) -> list[Detection]:
                 Detection("stereo_camera", _pair_name(*pair), detection.source, detection.link)
             )
     return kept
+
+
+def _stereo_depth(found: list[Detection], urdf: Urdf) -> list[Detection]:
+    """A depth stream on the frame of a stereo camera, or on a frame fixed to it within
+    :data:`_STREAM_REACH` and facing its way (either above the other), is the depth the pair
+    computes: one stereo camera. Linear: a set of the stereo cameras' links, one joint up and
+    the joints down from each depth stream's link."""
+    stereo = {d.link for d in found if d.kind == "stereo_camera" and d.link is not None}
+    if not stereo:
+        return found
+    return [d for d in found if not (d.kind == "depth_camera" and _beside_stereo(d, stereo, urdf))]
+
+
+def _beside_stereo(detection: Detection, stereo: set[str], urdf: Urdf) -> bool:
+    link = detection.link
+    if link is None:
+        return False
+    if link in stereo:
+        return True
+    up = urdf.parent_joint(link)
+    joints = [j for j in urdf.children(link) if j.child in stereo]
+    if up is not None and up.parent in stereo:
+        joints.append(up)
+    return any(not j.movable and _near(j) for j in joints)
+
+
+def _near(joint: Joint) -> bool:
+    """A fixed frame within :data:`_STREAM_REACH` of its parent, not turned from it."""
+    close = math.dist(joint.origin, (0.0, 0.0, 0.0)) <= _STREAM_REACH
+    return close and all(abs(a) <= 1e-6 for a in joint.rpy)
 
 
 def _pair_name(first: Detection, second: Detection) -> str:

@@ -11,9 +11,10 @@ body travels in a few more ways, each read here:
   aircraft exported as one mesh); rotor-named joints too few to fly, said as such.
 * *Water*: thrusters a thruster plugin lists by a link no joint moves (a hull's list); hints
   of a hull at the surface (a surface plugin, ``<metacentric_width>``; a body whose buoyancy
-  compensation is above 1, buoyancy over weight: it floats; a GPS or a lidar where nothing
-  says the body dives: satellites are heard and laser light carries only above the water) or
-  of a body below it (hydrodynamics or underwater-object plugins, a DVL or pressure sensor).
+  compensation, buoyancy over weight, has a hull's reserve (1.1 or more): it floats; a GPS or
+  a lidar where nothing says the body dives: satellites are heard and laser light carries only
+  above the water) or of a body below it (hydrodynamics or underwater-object plugins, a DVL or
+  pressure sensor).
   Buoyancy says only that the body is in water.
 * *Trimmed models*: wheel joints of type fixed, and rotor-named leaf links fixed to the body
   (motor-named ones too, on a body where no joint moves), still say what the whole model does
@@ -51,6 +52,10 @@ __all__ = [
 _ROTATING = ("continuous", "revolute")
 _GPS = re.compile(r"gps|navsat|gnss", re.IGNORECASE)
 # A motor named as such (``arm1_motor_link``, ``motor_2``), not ``motorcycle`` or ``rotor``.
+# Buoyancy over weight a hull floats with: a surface hull carries a reserve (measured on the
+# development part: 1.2 to 12.5); a submersible is trimmed a hair above neutral (1.01, so it
+# rises when its thrusters stop) and works below the surface.
+_HULL_RESERVE = 1.1
 _MOTOR = re.compile(r"(^|[_/\s])motors?([_/\d\s]|$)", re.IGNORECASE)
 
 
@@ -161,7 +166,7 @@ def surface_hints(tree: JointTree) -> tuple[str, ...]:
     """A body in water at the surface: surface plugins, and the words the profile's ``surface``
     pattern reads in the hull's own elements (``<metacentric_width>``, wind on its buoyancy)
     or in the parameters of its water plugins, never in a sensor's settings (a barometer's
-    water-surface offset); a body whose buoyancy compensation is above 1 (it floats). With
+    water-surface offset); a body whose buoyancy compensation has a hull's reserve (it floats). With
     none of them, and nothing of a body below the surface, a GPS or a lidar says it:
     satellites are heard, and a laser scans, only above the water."""
     pattern = tree.profile.plugin_pattern("surface")
@@ -179,11 +184,12 @@ def surface_hints(tree: JointTree) -> tuple[str, ...]:
 
 
 def _floating_hull(tree: JointTree) -> list[str]:
-    """The body (its root link, or a link fixed to it) declares a buoyancy compensation above 1:
-    buoyancy over weight, it floats (a part of it, a thruster, may sink: not the body)."""
+    """The body (its root link, or a link fixed to it) declares a buoyancy compensation with a
+    hull's reserve (``_HULL_RESERVE`` or more): buoyancy over weight, it floats (a part of it, a
+    thruster, may sink: not the body). A body trimmed just above neutral is a submersible's."""
     known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
     for link in tree.urdf.links:
-        floats = link.buoyancy is not None and link.buoyancy > 1
+        floats = link.buoyancy is not None and link.buoyancy >= _HULL_RESERVE
         if floats and moved_by(tree.urdf, link.name, known) is None:
             return [f"{link.name} buoyancy {link.buoyancy:g} x weight (floats)"]
     return []

@@ -144,3 +144,74 @@ def test_propellers_a_simulator_poses_are_rotors_even_alone() -> None:
     robot.joint("propeller_joint", "floating", "base_link", "propeller")
     roles = joint_roles(JointTree(parse_urdf(robot.text(), strict=False), load_profile()))
     assert with_role(roles, "rotor") == ["propeller_joint"]
+
+
+def ackermann_car(*, virtual: bool) -> RobotText:
+    """Two steered front wheels under driven vertical swivels, two rear wheels; with
+    ``virtual``, a bicycle's steering joint beside them that carries no wheel."""
+    robot = RobotText("car")
+    for side in ("left", "right"):
+        knuckle = robot.joint(
+            f"front_{side}_steer_joint", "revolute", robot.root, f"front_{side}_knuckle",
+            '<axis xyz="0 0 1"/><limit lower="-0.7" upper="0.7" effort="1" velocity="1"/>',
+        )  # fmt: skip
+        robot.joint(f"front_{side}_wheel_joint", "continuous", knuckle, f"front_{side}_wheel")
+        robot.joint(f"rear_{side}_wheel_joint", "continuous", robot.root, f"rear_{side}_wheel")
+        robot.add(builders.transmission(f"front_{side}_steer_joint"))
+    if virtual:
+        robot.joint(
+            "bicycle_steer_joint", "revolute", robot.root, "bicycle_steer_link",
+            '<axis xyz="0 0 1"/><limit lower="-0.7" upper="0.7" effort="1" velocity="1"/>',
+        )  # fmt: skip
+        robot.add(builders.transmission("bicycle_steer_joint"))
+    return robot
+
+
+def test_a_driven_swivel_beside_a_cars_steered_wheels_steers_the_car() -> None:
+    roles = roles_of(ackermann_car(virtual=True))
+    assert roles["bicycle_steer_joint"].role == "steering"
+    result = identify_urdf(ackermann_car(virtual=True).text())
+    assert result.structure == "UGV"
+    assert "Joint" not in {c.motion_control for c in result.motion_controls}
+
+
+def test_a_driven_swivel_on_a_base_with_no_steering_is_not_read_as_steering() -> None:
+    robot = builders.ugv()
+    robot.joint(
+        "turret_joint", "revolute", robot.root, "turret",
+        '<axis xyz="0 0 1"/><limit lower="-3" upper="3" effort="1" velocity="1"/>',
+    )  # fmt: skip
+    robot.add(builders.transmission("turret_joint"))
+    assert "turret_joint" not in with_role(roles_of(robot), "steering")
+
+
+def ball_caster_base(*, offset: str = "0 0 0", driven: bool = False) -> RobotText:
+    """Two drive wheels and a ball caster written as yaw, roll and pitch hinges through one
+    point (``offset``: where the roll and pitch joints sit on their parents)."""
+    robot = RobotText("boat_like")
+    builders.wheeled_base(robot)
+    link = robot.root
+    for name, axis in (("yaw", "0 0 1"), ("roll", "1 0 0"), ("pitch", "0 1 0")):
+        origin = "0.3 0 -0.1" if name == "yaw" else offset
+        link = robot.joint(
+            f"ball_{name}_joint", "continuous", link, f"ball_{name}_link",
+            f'<origin xyz="{origin}"/><axis xyz="{axis}"/>',
+        )  # fmt: skip
+        if driven:
+            robot.add(builders.transmission(f"ball_{name}_joint"))
+    return robot
+
+
+def test_three_undriven_endless_hinges_through_one_point_on_a_wheeled_base_are_a_ball_caster() -> (
+    None
+):
+    roles = roles_of(ball_caster_base())
+    assert with_role(roles, "caster") == ["ball_pitch_joint", "ball_roll_joint", "ball_yaw_joint"]
+    result = identify_urdf(ball_caster_base().text())
+    assert result.structure == "UGV"  # not a mobile manipulator: the caster is no arm
+    assert "Joint" not in {c.motion_control for c in result.motion_controls}
+
+
+def test_hinges_apart_or_driven_are_no_ball_caster() -> None:
+    for robot in (ball_caster_base(offset="0 0 0.2"), ball_caster_base(driven=True)):
+        assert not with_role(roles_of(robot), "caster")

@@ -511,3 +511,31 @@ def test_a_legs_parallel_copy_whose_end_stays_apart_is_another_chain() -> None:
     result = identify_urdf(parallel_linkage_legs(meet=False).text())
     assert result.body is not None
     assert result.body.count("leg") == 4
+
+
+def test_a_two_joint_chain_carrying_a_sensor_on_a_base_fixed_to_the_world_is_an_arm() -> None:
+    """Two unnamed hinges on a link fixed to ``world``, a camera and a laser at the tip, nothing
+    else: the base is bolted down and nothing else is there to point, so it is a short arm."""
+    robot = RobotText("two_link", root="world")
+    base = robot.fixed("world", "link1")
+    tip = robot.chain(base, ["joint1", "joint2"])
+    robot.fixed(tip, "cam")
+    robot.add(builders.CAMERA)
+    robot.add(builders.transmission("joint1"))
+    robot.add(builders.transmission("joint2"))
+    result = identify_urdf(robot.text())
+    assert result.structure == "Manipulator"
+    assert "Joint" in {c.motion_control for c in result.motion_controls}
+
+
+def test_the_same_chain_on_a_free_root_or_with_head_names_stays_a_pan_tilt_unit() -> None:
+    free = RobotText("camera_mount")
+    tip = free.chain(free.root, ["joint1", "joint2"])
+    free.fixed(tip, "cam")
+    free.add(builders.CAMERA)
+    assert identify_urdf(free.text()).structure == "Other"  # not bolted to the world
+    named = RobotText("ptu", root="world")
+    tip = named.chain(named.fixed("world", "base"), ["pan_joint", "tilt_joint"])
+    named.fixed(tip, "cam")
+    named.add(builders.CAMERA)
+    assert identify_urdf(named.text()).structure == "Other"  # a pan/tilt unit by its names

@@ -508,3 +508,26 @@ def test_a_thrust_plugin_that_names_only_the_hull_drives_the_vessel() -> None:
     result = identify_urdf(robot.text())
     assert result.structure == "Surface Vessel"
     assert {c.motion_control for c in result.motion_controls} == {"Driving"}
+
+
+def test_a_force_based_move_plugin_drives_a_base_with_no_wheel_joint() -> None:
+    """A holonomic base pushed in the plane by a force plugin on cmd_vel, two arms on it: a
+    mobile manipulator, driven (an SRDF's planar virtual joint would be no evidence)."""
+    robot = builders.torso()
+    robot.add(
+        builders.model_plugin(
+            "mover", "libgazebo_ros_force_based_move.so", "<commandTopic>cmd_vel</commandTopic>"
+        )
+    )
+    result = identify_urdf(robot.text())
+    assert result.structure == "Mobile Manipulator"
+    assert "Driving" in {c.motion_control for c in result.motion_controls}
+
+
+def test_wheels_all_written_on_fixed_joints_still_drive_the_base() -> None:
+    robot = RobotText("trimmed")
+    for side in ("left", "right"):
+        robot.joint(f"wheel_{side}_joint", "fixed", robot.root, f"wheel_{side}_link")
+    assert controls(robot)["Driving"] == "urdf: 2 wheel joint(s) written fixed"
+    robot.add(builders.LASER)
+    assert "Waypoint" in controls(robot)  # a wheeled base with a scan: navigation, guessed

@@ -440,3 +440,34 @@ def test_depth_cameras_on_separate_links_of_one_mount_are_one_camera_each() -> N
     assert two_depth_cameras("base_link", "0.3 0.025 0.2", "0 0 0") == {"depth_camera": 1}
     # Close but facing apart: two cameras.
     assert two_depth_cameras("base_link", "0.3 0.025 0.2", "0 0 3.14159") == {"depth_camera": 2}
+
+
+def test_a_camera_element_with_a_colour_plugin_is_a_camera_whatever_the_product_name() -> None:
+    """A camera sensor named for an RGB-D product but simulated by a plain camera plugin streams
+    colour only; a depth plugin or a depth name makes it a depth camera."""
+    realsense = builders.gazebo_sensor(
+        "cam", "camera", "realsense_r200", plugin="libgazebo_ros_camera.so"
+    )
+    assert kinds(realsense) == [("camera", "2D Camera", 1)]
+    kinect = builders.gazebo_sensor(
+        "cam", "camera", "kinect", plugin="libgazebo_ros_openni_kinect.so"
+    )
+    assert kinds(kinect) == [("depth_camera", "RGB-D Camera", 1)]
+
+
+def stereo_with_depth(depth_origin: str) -> list[tuple[str, str | None, int]]:
+    """A stereo pair on a camera's centre frame and a depth stream on a frame fixed to it."""
+    robot = builders.ugv()
+    robot.joint("center_joint", "fixed", robot.root, "zed_center", '<origin xyz="0.2 0 0.4"/>')
+    robot.joint("pair_joint", "fixed", "zed_center", "zed_pair", f'<origin xyz="{depth_origin}"/>')
+    robot.add(builders.gazebo_sensor("zed_pair", "multicamera", "zed_stereo"))
+    robot.add(builders.gazebo_sensor("zed_center", "depth", "zed_depth"))
+    return [(s.kind, s.sensor_type, s.count) for s in identify_urdf(robot.text()).sensors]
+
+
+def test_a_depth_stream_beside_a_stereo_pair_is_the_pairs_depth_one_device() -> None:
+    assert stereo_with_depth("0.01 0 0.01") == [("stereo_camera", "3D Camera", 1)]
+    assert sorted(stereo_with_depth("0.5 0 0")) == [  # half a metre apart: two devices
+        ("depth_camera", "RGB-D Camera", 1),
+        ("stereo_camera", "3D Camera", 1),
+    ]

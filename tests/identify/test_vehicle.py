@@ -373,3 +373,13 @@ def test_a_dvl_frame_moved_by_a_joint_is_no_evidence_of_water() -> None:
     assert result.body is not None
     assert result.body.water_frames == ()
     assert result.structure == "Manipulator"
+
+
+@pytest.mark.parametrize("hull", ["1.01", "1.05"])
+def test_a_body_trimmed_just_above_neutral_is_a_submersible_not_a_floating_hull(hull: str) -> None:
+    """A submersible is trimmed a hair buoyant (it rises when its thrusters stop); a hull that
+    floats carries a reserve of a tenth of its weight or more."""
+    result = identify_urdf(hull_with_compensation(hull, thrusters="1"))
+    assert result.structure == "Underwater Vehicle"
+    assert not any("floats" in line for line in result.evidence)
+    assert identify_urdf(hull_with_compensation("1.1", thrusters="1")).structure == "Surface Vessel"
