@@ -57,7 +57,6 @@ _Shown = list[tuple[str, str]]
 _ROLE_SOURCES = (
     "wheels",
     "steered_wheels",
-    "fixed_wheels",
     "planar_base",
     "thrusters",
     "arm",
@@ -100,11 +99,6 @@ def _ground(body: Body, urdf_source: str) -> _Shown:
         found.append(("planar_base", f"{urdf_source}: a base moved in the plane"))
     if body.thrusters:
         found.append(("thrusters", f"{urdf_source}: {len(body.thrusters)} thruster(s)"))
-    if body.fixed_wheels and not (found or body.flying or body.marine):
-        # Wheels written on fixed joints (a model trimmed for display, or one the hardware's
-        # kinematics node drives), nothing else moving the base: still a wheeled base.
-        count = len(body.fixed_wheels)
-        found.append(("fixed_wheels", f"{urdf_source}: {count} wheel joint(s) written fixed"))
     return found
 
 

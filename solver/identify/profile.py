@@ -140,7 +140,6 @@ CONTROL_SOURCES = (
     "srdf_end_effector",
     "wheels",
     "steered_wheels",
-    "fixed_wheels",
     "planar_base",
     "thrusters",
     "arm",
