@@ -50,7 +50,19 @@ def test_a_streamed_json_listing_is_the_json_of_the_solution_in_chunks(tmp_path:
         '  "Odd\\u202eType": {sensor_count: 7}\n',
         encoding="utf-8",
     )
-    teams = [load_team(tmp_path / name) for name in ("odd.yaml", "team.yaml")]
+    # Counts with gaps (several runs in one component), names a JSON string must escape.
+    (tmp_path / "gaps.yaml").write_text(
+        "name: gaps\ncharacteristics:\n  kinematic_type:\n    values: [UGV]\n"
+        "  sensor_type:\n    values: ['q\"uo\\\\te', \"caf\u00e9\\u2028x\"]\n"
+        "  sensor_count:\n    range: {min: 1, max: 9}\n    components:\n"
+        "      - {name: 'all \"of\" them', min: 1, max: 9, cluster_size: 4}\n"
+        "constraints:\n  - forbid: {sensor_count: 5}\n  - forbid: {sensor_count: 7}\n",
+        encoding="utf-8",
+    )
+    (tmp_path / "gappy.yaml").write_text(
+        "name: gappy\nrules: gaps.yaml\nteam:\n  UGV: {}\n", encoding="utf-8"
+    )
+    teams = [load_team(tmp_path / name) for name in ("odd.yaml", "team.yaml", "gappy.yaml")]
     for team in (*teams, load_team(TEAMS / "case3.yaml")):
         solution = solve(team)
         for listed in (True, False):
