@@ -44,6 +44,7 @@ from solver.identify.limbs import (
     legs_by_place,
     lone_head,
     lone_leg,
+    moved_by,
     spine,
     wheeled_spine,
     wrist,
@@ -308,6 +309,7 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
     virtual joint is a planning convention, its groups are the classifier's to weigh."""
     tree = JointTree(urdf, profile)
     parts = _Parts(roles=joint_roles(tree), placement=placement(tree))
+    parts.roles.update(_rollers(tree, parts.roles))
     _body_parts(tree, parts)
     controlled = urdf.controlled_joints
     wheels = parts.of("wheel")
@@ -346,6 +348,24 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
         finger_motions=sum(1 for name in parts.grippers if (j := urdf.joint(name)) and j.actuated),
         roles=_all_roles(tree, parts),
     )
+
+
+def _rollers(tree: JointTree, roles: dict[str, Role]) -> dict[str, Role]:
+    """Joints of no role that a wheel carries (through fixed joints): the rollers of a mecanum
+    or omni wheel, turning with the ground, passive whatever transmission is written on them.
+    One walk up the tree for all (``moved_by``'s shared memo)."""
+    wheels = {name for name, role in roles.items() if role.role == "wheel"}
+    if not wheels:
+        return {}
+    known: dict[str, str | None] = {}
+    found: dict[str, Role] = {}
+    for joint in tree.urdf.joints:
+        if not joint.movable or joint.name in roles:
+            continue
+        wheel = moved_by(tree.urdf, joint.parent, known)
+        if wheel in wheels:
+            found[joint.name] = Role(joint.name, "passive", f"on wheel {wheel} (a roller)")
+    return found
 
 
 @dataclass

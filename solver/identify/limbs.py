@@ -109,6 +109,8 @@ _MODULE_JOINTS = (1, 2)
 _PLANAR_SPINE_JOINTS = 12
 # A spine carries at least this many single leaf joints to be read with side wheels.
 _SIDE_WHEELS = 2
+# Joints (or the links they move) with arm or leg names that make a chain a named limb.
+_LIMB_NAMES = 2
 
 
 @dataclass(frozen=True, slots=True)
@@ -489,14 +491,29 @@ def wheeled_spine(
         for limb in limbs
     ):
         return unchanged
-    if not _alternating(tree, joints) or not _modules(tree, joints):
+    if not _modules(tree, joints):
         return unchanged
-    why = (
-        f"a chain of {len(joints)} joints in equal modules whose axes alternate, carrying only "
-        f"{len(limbs)} single leaf joint(s) (a spine with passive side wheels)"
-    )
+    if _alternating(tree, joints):
+        why = (
+            f"a chain of {len(joints)} joints in equal modules whose axes alternate, carrying only "
+            f"{len(limbs)} single leaf joint(s) (a spine with passive side wheels)"
+        )
+    elif _planar(tree, joints) and _pads(tree, limbs):
+        why = (
+            f"a chain of {len(joints)} joints in equal modules turning about parallel axes, "
+            f"carrying only {len(limbs)} sliding leaf joint(s) (a spine that anchors on pads)"
+        )
+    else:
+        return unchanged
     spine_limb = Limb("spine", tuple(trunk), joints[0].parent, joints[-1].child, why=why)
     return [spine_limb], [], [limb.joints[0] for limb in limbs]
+
+
+def _pads(tree: JointTree, limbs: list[Limb]) -> bool:
+    """Every side joint slides (a pad pressed down and lifted: a snake moving in a plane, as a
+    concertina, anchors its modules so)."""
+    side = [tree.urdf.joint(limb.joints[0]) for limb in limbs]
+    return all(joint is not None and joint.type == "prismatic" for joint in side)
 
 
 def _one_path(tree: JointTree, joints: list[Joint]) -> bool:
@@ -541,11 +558,14 @@ def moved_by(urdf: Urdf, link: str, known: dict[str, str | None]) -> str | None:
 
 
 def _named_limb(tree: JointTree, joints: list[Joint]) -> bool:
-    return any(
-        part in tree.parts_of(j.name) | tree.parts_of(j.child)
+    """Arm or leg names on at least two of the chain's joints (or the links they move): an arm
+    names its parts (upper arm, forearm); one word on one module is a label, not a limb."""
+    named = [
+        j
         for j in joints
-        for part in ("arm", "leg")
-    )
+        if any(part in tree.parts_of(j.name) | tree.parts_of(j.child) for part in ("arm", "leg"))
+    ]
+    return len(named) >= _LIMB_NAMES
 
 
 def _alternating(tree: JointTree, joints: list[Joint]) -> bool:

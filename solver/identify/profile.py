@@ -70,7 +70,8 @@ PARTS = (
 # drive/track/flight/thruster/lift: plugins that move the robot (a joint they name takes their
 # role); marine: plugins of a body in water; surface: hints of a hull floating at the surface
 # (plugins and element names such as <metacentric_width>); underwater: what a body below the
-# surface has (plugins and sensors: hydrodynamics, buoyancy, a DVL, a pressure sensor).
+# surface has (plugins and sensors: hydrodynamics, buoyancy, a DVL, a pressure sensor); spring:
+# plugins that hold a joint on a spring (a joint they name yields: passive, no limb's).
 PLUGIN_PARTS = (
     "drive",
     "track",
@@ -80,6 +81,7 @@ PLUGIN_PARTS = (
     "marine",
     "surface",
     "underwater",
+    "spring",
 )
 FEATURES = (
     "wheels",

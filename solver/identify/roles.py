@@ -39,7 +39,13 @@ JOINT_ROLES = ("wheel", "steering", "caster", "rotor", "thruster", "fin", "gripp
 _ROTATING = ("continuous", "revolute")
 # Plugin part -> the role of a joint it names, strongest first (a propeller a thruster plugin
 # and a lift-drag plugin both name is a thruster).
-_PLUGIN_ROLES = (("thruster", "thruster"), ("flight", "rotor"), ("drive", "wheel"), ("lift", "fin"))
+_PLUGIN_ROLES = (
+    ("thruster", "thruster"),
+    ("flight", "rotor"),
+    ("drive", "wheel"),
+    ("lift", "fin"),
+    ("spring", "passive"),  # a joint held on a spring yields: nobody drives it
+)
 _Z = 2
 # The evidence of a propeller a simulator poses on a floating joint (counted however few).
 POSED = ", a part a simulator poses (floating joint)"

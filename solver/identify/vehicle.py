@@ -166,16 +166,20 @@ def surface_hints(tree: JointTree) -> tuple[str, ...]:
     """A body in water at the surface: surface plugins, and the words the profile's ``surface``
     pattern reads in the hull's own elements (``<metacentric_width>``, wind on its buoyancy)
     or in the parameters of its water plugins, never in a sensor's settings (a barometer's
-    water-surface offset); a body whose buoyancy compensation has a hull's reserve (it floats). With
-    none of them, and nothing of a body below the surface, a GPS or a lidar says it:
-    satellites are heard, and a laser scans, only above the water."""
+    water-surface offset) nor in an underwater plugin's (a buoyancy engine's surface); a body
+    whose buoyancy compensation has a hull's reserve (it floats). With none of them, and nothing
+    of a body below the surface, a GPS or a lidar says it: satellites are heard, and a laser
+    scans, only above the water."""
     pattern = tree.profile.plugin_pattern("surface")
     if pattern is None or not (tree.reader.marine):
         return ()
     hints = list(tree.labels("surface"))
     hints += sorted(tag for tag in tree.urdf.tags if pattern.search(tag))
+    below = {id(plugin) for plugin in tree.reader.plugins_of("underwater")}
     for part in ("marine", "thruster", "surface"):
         for plugin in tree.reader.plugins_of(part):
+            if id(plugin) in below:
+                continue  # a diver's plugin names the surface it rises to, not a hull on it
             hints += sorted({tag.lower() for tag, _ in plugin.params if pattern.search(tag)})
     hints += _floating_hull(tree)
     if not hints and not underwater_hints(tree):

@@ -3,7 +3,7 @@ commands, and the counts and sentences of evidence the classifier and a person r
 
 from __future__ import annotations
 
-from solver.identify import load_profile
+from solver.identify import identify_urdf, load_profile
 from solver.identify.body import Body, detect_body
 from solver.identify.limbs import Limb
 from solver.identify.readers.urdf import parse_urdf
@@ -89,3 +89,21 @@ def test_role_lines_group_joints_by_role_with_the_first_reason_and_how_many_more
         "wheel: a, b (wheel name (a); and 1 more)",
         "rotor: c (rotor name (c))",
     )
+
+
+def test_joints_a_wheel_carries_are_its_rollers_passive_whatever_transmission_they_have() -> None:
+    # A mecanum base: each wheel carries rollers on joints of their own, every one written with
+    # a transmission as the wheels are. The rollers turn with the ground: no limb, no Joint.
+    robot = builders.ugv()
+    for side in ("left", "right", "rear_left", "rear_right"):
+        robot.add(builders.transmission(f"wheel_{side}_joint", "VelocityJointInterface"))
+        for i in range(3):
+            robot.joint(f"{side}_roller{i}", "continuous", f"wheel_{side}_link", f"{side}_r{i}")
+            robot.add(builders.transmission(f"{side}_roller{i}", "EffortJointInterface"))
+    result = identify_urdf(robot.text())
+    assert result.structure == "UGV"
+    roles = {role.joint: role for role in result.roles}
+    assert roles["left_roller0"].role == "passive"
+    assert roles["left_roller0"].evidence == "on wheel wheel_left_joint (a roller)"
+    assert "Joint" not in {c.motion_control for c in result.motion_controls}
+    assert "Driving" in {c.motion_control for c in result.motion_controls}

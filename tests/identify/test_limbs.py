@@ -539,3 +539,45 @@ def test_the_same_chain_on_a_free_root_or_with_head_names_stays_a_pan_tilt_unit(
     named.fixed(tip, "cam")
     named.add(builders.CAMERA)
     assert identify_urdf(named.text()).structure == "Other"  # a pan/tilt unit by its names
+
+
+def concertina_snake(modules: int = 7, *, names: str = "revolute") -> RobotText:
+    """A snake of one-joint modules 12 cm apart, every joint turning about z (it bends in the
+    plane it crawls on), each module carrying two prismatic pads it presses down to anchor
+    itself (a concertina gait). Only the last module's link has a word of a limb in its name
+    (an author's label: a motor 'with no arms')."""
+    robot = RobotText("concertina", root="m0")
+    link = "m0"
+    for i in range(1, modules + 1):
+        for side, place in (("inner", "0.008 0.001 -0.057"), ("outer", "0.012 0.009 -0.057")):
+            builders.placed(
+                robot, f"{side}_pad_{i}", "prismatic", link, f"{side}_pad_link_{i}", xyz=place
+            )
+        if i < modules:
+            child = "motor_with_no_arms" if i == modules - 1 else f"m{i}"
+            link = builders.placed(robot, f"{names}_{i}", "revolute", link, child, xyz="0.12 0 0")
+    return robot
+
+
+def test_a_planar_chain_of_equal_modules_anchoring_on_sliding_pads_is_a_snakes_spine() -> None:
+    result = identify_urdf(concertina_snake().text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["spine"]
+    assert len(result.body.limbs[0].joints) == 6
+    assert result.structure == "Serpentine"
+    roles = {role.joint: role.role for role in result.roles}
+    assert {roles[f"{side}_pad_{i}"] for i in range(1, 8) for side in ("inner", "outer")} == {
+        "passive"
+    }
+
+
+def test_a_planar_chain_named_as_an_arm_on_its_joints_is_no_spine_whatever_its_pads() -> None:
+    result = identify_urdf(concertina_snake(names="arm").text())
+    assert result.structure != "Serpentine"
+
+
+def test_a_short_planar_chain_whose_leaves_turn_is_no_spine() -> None:
+    # Leaf joints that turn (fingers, wheels) do not anchor a planar snake: 6 parallel joints of
+    # equal links with them is no snake (planar snakes of bare modules need 12).
+    text = concertina_snake().text().replace('type="prismatic"', 'type="revolute"')
+    assert identify_urdf(text).structure != "Serpentine"

@@ -145,3 +145,37 @@ def test_a_vrx_surface_plugin_in_a_lib_file_is_a_hull_at_the_surface() -> None:
     )
     result = identify_urdf(robot.text())
     assert result.structure == "Surface Vessel"
+
+
+def sampling_rover(springs: bool = True) -> RobotText:
+    """A tracked rover lowering a sampling chamber: one driven slide from the base, under it a
+    holder and the chamber on two hinges, each held on a torsional spring plugin (they yield
+    to the ground; nobody drives them)."""
+    robot = builders.tracked()
+    robot.joint("slide", "prismatic", robot.root, "coupling")
+    robot.joint("holder_hinge", "revolute", "coupling", "holder")
+    robot.joint("chamber_hinge", "revolute", "holder", "chamber")
+    robot.add(builders.transmission("slide"))
+    if springs:
+        for joint in ("holder_hinge", "chamber_hinge"):
+            robot.add(
+                builders.model_plugin(
+                    f"{joint}_spring",
+                    "libgazebo_joint_torsional_spring.so",
+                    f"<kx>10</kx><set_point>0</set_point><joint>{joint}</joint>",
+                )
+            )
+    return robot
+
+
+def test_joints_a_spring_plugin_holds_are_passive_and_leave_a_one_joint_tool_no_arm() -> None:
+    found = roles(sampling_rover())
+    assert found["holder_hinge"] == (
+        "passive",
+        "<joint> of spring plugin libgazebo_joint_torsional_spring.so",
+    )
+    assert found["chamber_hinge"][0] == "passive"
+    assert found["slide"][0] != "arm"
+    assert identify_urdf(sampling_rover().text()).structure == "UGV"
+    # The same three joints with no spring: a short arm on a rover.
+    assert identify_urdf(sampling_rover(springs=False).text()).structure == "Mobile Manipulator"

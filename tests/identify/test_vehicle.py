@@ -383,3 +383,23 @@ def test_a_body_trimmed_just_above_neutral_is_a_submersible_not_a_floating_hull(
     assert result.structure == "Underwater Vehicle"
     assert not any("floats" in line for line in result.evidence)
     assert identify_urdf(hull_with_compensation("1.1", thrusters="1")).structure == "Surface Vessel"
+
+
+def test_a_buoyancy_engine_puts_the_body_below_the_surface_it_names() -> None:
+    # A submersible's variable-buoyancy engine fills and empties a volume to dive and rise; its
+    # <surface> parameter is the height it rises to, not the word of a hull floating there.
+    robot = thrusters_by_name()
+    robot.add(
+        builders.model_plugin(
+            "engine",
+            "gz-sim-buoyancy-engine-system",
+            "<link_name>base_link</link_name><neutral_volume>4.7</neutral_volume>"
+            "<surface>100.0</surface>",
+        )
+    )
+    tree = tree_of(robot)
+    assert surface_hints(tree) == ()
+    assert underwater_hints(tree) == ("gz-sim-buoyancy-engine-system",)
+    result = identify_urdf(robot.text())
+    assert result.structure == "Underwater Vehicle"
+    assert result.confidence == pytest.approx(0.85, abs=0.01)  # no doubt left

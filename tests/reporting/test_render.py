@@ -53,7 +53,7 @@ def test_a_streamed_json_listing_is_the_json_of_the_solution_in_chunks(tmp_path:
     # Counts with gaps (several runs in one component), names a JSON string must escape.
     (tmp_path / "gaps.yaml").write_text(
         "name: gaps\ncharacteristics:\n  kinematic_type:\n    values: [UGV]\n"
-        "  sensor_type:\n    values: ['q\"uo\\\\te', \"caf\u00e9\\u2028x\"]\n"
+        '  sensor_type:\n    values: [\'q"uo\\\\te\', "caf\u00e9\\u2028x"]\n'
         "  sensor_count:\n    range: {min: 1, max: 9}\n    components:\n"
         "      - {name: 'all \"of\" them', min: 1, max: 9, cluster_size: 4}\n"
         "constraints:\n  - forbid: {sensor_count: 5}\n  - forbid: {sensor_count: 7}\n",
