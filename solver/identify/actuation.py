@@ -28,7 +28,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 from solver.identify.hands import gripper_closure, jaws
-from solver.identify.limbs import moved_by
+from solver.identify.limbs import moved_by, points_a_sensor
 from solver.identify.readers.urdf import Joint
 from solver.identify.roles import POSED, Role, main_axis
 from solver.identify.tree import JointTree
@@ -86,7 +86,11 @@ def _ball_casters(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Role]
             if above is None or above.type != "continuous" or above.name in roles:
                 break
             chain.append(above)
-        if _ball(tree, chain) and moved_by(tree.urdf, chain[-1].parent, known) is None:
+        if (
+            _ball(tree, chain)
+            and not points_a_sensor(tree, chain[0])  # a three-axis gimbal carries a camera
+            and moved_by(tree.urdf, chain[-1].parent, known) is None
+        ):
             names = ", ".join(j.name for j in reversed(chain))
             for joint in chain:
                 found[joint.name] = Role(joint.name, "caster", f"a ball joint ({names}), undriven")
@@ -133,6 +137,7 @@ def _steering_beside(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Ro
             and main_axis(joint.axis) == _Z_AXIS
             and joint.child not in tree.moving_below
             and not (tree.parts_of(joint.name) | tree.parts_of(joint.child))
+            and not points_a_sensor(tree, joint)  # a spinning scanner's mount is a head
         ):
             why = f"a driven vertical swivel beside {len(steered)} steering joint(s)"
             found[joint.name] = Role(joint.name, "steering", why)

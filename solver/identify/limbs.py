@@ -197,7 +197,9 @@ def legs_at_the_pelvis(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
 def legs_by_place(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     """Alike unnamed chains on one link, four or more, on both its sides, each ending below
     where it starts: legs (a hexapod's, a quadruped's whose joints carry no leg names)."""
-    by_base: dict[str, list[Limb]] = {}
+    # By the body carrying them, and whether they are one-joint chains that turn whole (a
+    # wheel-leg walker's) or not: a spinning leaf beside a hexapod's legs is no leg of it.
+    by_base: dict[tuple[str, bool], list[Limb]] = {}
     known: dict[str, str | None] = {}
     for limb in limbs:
         if (
@@ -207,11 +209,11 @@ def legs_by_place(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
             and _LEG_JOINTS[0] <= len(limb.joints) <= _LEG_JOINTS[1]
         ):
             # Chains on links fixed to one body hang from that body (a hip bracket each).
-            by_base.setdefault(_carrier(tree, limb.base, known), []).append(limb)
+            by_base.setdefault((_carrier(tree, limb.base, known), False), []).append(limb)
         elif limb.kind == "other" and len(limb.joints) == 1 and _turns_whole(tree, limb):
-            by_base.setdefault(_carrier(tree, limb.base, known), []).append(limb)
+            by_base.setdefault((_carrier(tree, limb.base, known), True), []).append(limb)
     legs: dict[int, str] = {}
-    for base, group in by_base.items():
+    for (base, _), group in by_base.items():
         lengths = {len(limb.joints) for limb in group}
         if len(group) < _WALKER_LEGS or len(lengths) != 1:
             continue
@@ -636,6 +638,9 @@ def lone_head(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
     limb = limbs[0]
     if len(limb.joints) < 2 or not _on_the_root(tree, limb.base) or not _world_root(tree):
         return limbs
+    pan, tilt = (tree.urdf.joint(name) for name in limb.joints[:2])
+    if pan is not None and tilt is not None and _pan_then_tilt(tree, pan, tilt):
+        return limbs  # a pan/tilt unit bolted down is still a head
     why = (
         f"the body's only limb, an unnamed chain of {len(limb.joints)} joints on a root fixed"
         " to the world (a short arm carrying a sensor)"
@@ -730,7 +735,7 @@ def _unnamed_kind(
         not named
         and not gripper
         and length <= tree.profile.limb("head_max_joints")
-        and _points_a_sensor(tree, chain[-1])
+        and points_a_sensor(tree, chain[-1])
     ):
         return "head", (
             f"a chain of {length} joint(s) carrying a camera or a range sensor (a pan/tilt unit)"
@@ -742,7 +747,17 @@ def _unnamed_kind(
     return "other", "no name or shape of a limb"
 
 
-def _points_a_sensor(tree: JointTree, joint: Joint) -> bool:
+def _pan_then_tilt(tree: JointTree, pan: Joint, tilt: Joint) -> bool:
+    """A vertical axis, then one square to it: how a pan/tilt unit turns."""
+    axis = tree.poses.axis(pan)
+    return abs(axis[2]) >= _VERTICAL and perpendicular(axis, tree.poses.axis(tilt))
+
+
+# How vertical a pan axis is (the cosine of its angle to the vertical).
+_VERTICAL = 0.99
+
+
+def points_a_sensor(tree: JointTree, joint: Joint) -> bool:
     """A camera, lidar or range sensor sits on the joint's child link or below it."""
     links = tree.sensor_links
     if not links:

@@ -85,7 +85,12 @@ def _ground(body: Body, urdf_source: str) -> _Shown:
     if body.wheels:
         found.append(("wheels", f"{urdf_source}: {len(body.wheels)} wheel joint(s) that turn"))
     if body.casters and not (
-        body.wheels or body.drive_plugins or body.tracks or body.count("leg") or body.flying
+        body.wheels
+        or body.fixed_wheels  # a trimmed base shows no motion control (see the tests' robots)
+        or body.drive_plugins
+        or body.tracks
+        or body.count("leg")
+        or body.flying
     ):
         # Wheels that all hang under swivels, and no other wheel: casters cannot move a base
         # by themselves, so the swivels steer drive modules (an omnidirectional base).

@@ -240,15 +240,17 @@ def water_frames(tree: JointTree) -> tuple[str, ...]:
     """Links fixed to the body whose names the profile's ``underwater`` pattern reads (a DVL's
     frame): a Doppler log or a subsea sensor works only in water, so its frame puts the body in
     water below the surface, with no plugin or sensor element behind it."""
-    pattern = tree.profile.plugin_pattern("underwater")
-    if pattern is None:
-        return ()
     known: dict[str, str | None] = {}
     return tuple(
         link.name
         for link in tree.urdf.links
-        if pattern.search(link.name) and moved_by(tree.urdf, link.name, known) is None
+        if _DVL.search(link.name) and moved_by(tree.urdf, link.name, known) is None
     )
+
+
+# A Doppler velocity log's frame, by the words of the profile's dvl sensor rule (not the whole
+# underwater plugin pattern: a camera's `depth_sensor_link` is no subsea sensor).
+_DVL = re.compile(r"dvl|doppler", re.IGNORECASE)
 
 
 def flight_hints(tree: JointTree, roles: dict[str, Role], limbs: Sequence[Limb]) -> tuple[str, ...]:

@@ -223,7 +223,11 @@ class Urdf:
 
     def interfaces(self, joint: str) -> tuple[str, ...]:
         """The command interfaces a controller declares for ``joint`` (may be empty)."""
-        return dict(self.command_interfaces).get(joint, ())
+        return self._interfaces.get(joint, ())
+
+    @cached_property
+    def _interfaces(self) -> dict[str, tuple[str, ...]]:
+        return dict(self.command_interfaces)
 
     def has_link(self, name: str) -> bool:
         return name in self._children
