@@ -280,64 +280,63 @@ def _parallel(tree: JointTree, group: list[Limb]) -> bool:
 
 def _around(tree: JointTree, base: str, group: list[Limb]) -> bool:
     """The chains start on both sides of ``base`` and at three places or more along it."""
-    centre = tree.poses.place(base)
-    sides = set()
-    along = set()
-    for limb in group:
-        joint = tree.urdf.joint(limb.joints[0])
-        if joint is None:
-            return False
-        start = tree.poses.place(joint.child)
-        offset = start[1] - centre[1]
-        if abs(offset) > 1e-6:
-            sides.add(offset > 0)
-        along.add(round(start[0] - centre[0], 2))
-    return sides == {True, False} and len(along) >= _WHOLE_TURN_ROWS
+    centre, placed = tree.poses.place(base), _placed(tree, group)
+    if placed is None or not _both_sides(centre, placed):
+        return False
+    along = {round(start[0] - centre[0], 2) for start, _ in placed}
+    return len(along) >= _WHOLE_TURN_ROWS
 
 
 def _spreads(tree: JointTree, base: str, group: list[Limb]) -> bool:
     """Each chain, on both sides of ``base``, ends farther out from it across the ground than
     it starts, by most of its reach, and not above it by more than a leg's drop share."""
-    poses = tree.poses
-    centre = poses.place(base)
-    sides = set()
-    for limb in group:
-        first = tree.urdf.joint(limb.joints[0])
-        if first is None:
-            return False
-        start, end = poses.place(first.child), poses.place(limb.tip)
+    centre, placed = tree.poses.place(base), _placed(tree, group)
+    if placed is None:
+        return False
+    for start, end in placed:
         reach = distance(start, end)
         out = _flat(end, centre) - _flat(start, centre)
         if reach == 0 or out < _LEG_SPREAD * reach or end[2] - start[2] > _LEG_DROP * reach:
             return False
-        offset = start[1] - centre[1]
-        if abs(offset) > 1e-6:
-            sides.add(offset > 0)
-    return sides == {True, False}
-
-
-def _flat(one: tuple[float, float, float], other: tuple[float, float, float]) -> float:
-    """Distance across the ground (x and y only)."""
-    return math.hypot(one[0] - other[0], one[1] - other[1])
+    return _both_sides(centre, placed)
 
 
 def _stands(tree: JointTree, base: str, group: list[Limb]) -> bool:
     """The chains start on both sides of ``base`` and each ends below where it starts."""
-    poses = tree.poses
-    centre = poses.place(base)
-    sides = set()
-    for limb in group:
-        first = tree.urdf.joint(limb.joints[0])
-        if first is None:
-            return False
-        start, end = poses.place(first.child), poses.place(limb.tip)
+    centre, placed = tree.poses.place(base), _placed(tree, group)
+    if placed is None:
+        return False
+    for start, end in placed:
         reach = distance(start, end)
         if reach == 0 or start[2] - end[2] < _LEG_DROP * reach:
             return False
-        offset = start[1] - centre[1]
-        if abs(offset) > 1e-6:
-            sides.add(offset > 0)
+    return _both_sides(centre, placed)
+
+
+Place = tuple[float, float, float]
+
+
+def _placed(tree: JointTree, group: list[Limb]) -> list[tuple[Place, Place]] | None:
+    """Where each chain starts (its first joint's child) and ends (its tip); ``None`` when a
+    first joint is missing."""
+    placed = []
+    for limb in group:
+        first = tree.urdf.joint(limb.joints[0])
+        if first is None:
+            return None
+        placed.append((tree.poses.place(first.child), tree.poses.place(limb.tip)))
+    return placed
+
+
+def _both_sides(centre: Place, placed: list[tuple[Place, Place]]) -> bool:
+    """Some chains start left of ``centre`` and some right of it (across y)."""
+    sides = {start[1] - centre[1] > 0 for start, _ in placed if abs(start[1] - centre[1]) > 1e-6}
     return sides == {True, False}
+
+
+def _flat(one: Place, other: Place) -> float:
+    """Distance across the ground (x and y only)."""
+    return math.hypot(one[0] - other[0], one[1] - other[1])
 
 
 def five_bars(tree: JointTree, limbs: list[Limb]) -> list[Limb]:

@@ -43,7 +43,7 @@ from typing import TYPE_CHECKING
 from solver.identify.body import Body
 from solver.identify.interfaces import Control
 from solver.identify.planning_groups import arm_plans, hand_effectors
-from solver.identify.profile import Profile
+from solver.identify.profile import ROLE_SOURCES, Profile
 from solver.identify.readers.urdf import Joint, Urdf
 
 if TYPE_CHECKING:
@@ -53,16 +53,6 @@ __all__ = ["controls_from_description"]
 
 # (profile source, evidence): what one place of the description shows.
 _Shown = list[tuple[str, str]]
-# The sources read from what joints do rather than from a declared controller.
-_ROLE_SOURCES = (
-    "wheels",
-    "steered_wheels",
-    "planar_base",
-    "thrusters",
-    "arm",
-    "arm_gripper",
-    "legs",
-)
 # Legs a body stands and walks on (one leg is a tool, a leg rig or a tail).
 _WALKING_LEGS = 2
 # Joints from the base to a gripper that reach any pose (three for position, three to turn).
@@ -282,7 +272,7 @@ def controls_from_description(
     for source, text in shown:
         for control in profile.description_control(source):
             # Roles speak for a control only where no declared controller does.
-            (by_roles if source in _ROLE_SOURCES else found).setdefault(control, []).append(text)
+            (by_roles if source in ROLE_SOURCES else found).setdefault(control, []).append(text)
     for control, texts in by_roles.items():
         found.setdefault(control, texts)
     order = [control for source, _ in shown for control in profile.description_control(source)]

@@ -38,6 +38,7 @@ __all__ = [
     "PARTS",
     "PLUGIN_PARTS",
     "ROLES",
+    "ROLE_SOURCES",
     "SENSOR_COUNT",
     "SENSOR_TYPE",
     "ControlRule",
@@ -131,6 +132,16 @@ BOOLEAN_FEATURES = (
     "serpentine",
 )
 DIRECTIONS = ("published", "subscribed")
+# Description sources read from what joints do, not from a declared controller or plan.
+ROLE_SOURCES = (
+    "wheels",
+    "steered_wheels",
+    "planar_base",
+    "thrusters",
+    "arm",
+    "arm_gripper",
+    "legs",
+)
 CONTROL_SOURCES = (
     "drive_plugin",
     "controlled_wheels",
@@ -140,13 +151,7 @@ CONTROL_SOURCES = (
     "srdf_group",
     "srdf_walker_group",
     "srdf_end_effector",
-    "wheels",
-    "steered_wheels",
-    "planar_base",
-    "thrusters",
-    "arm",
-    "arm_gripper",
-    "legs",
+    *ROLE_SOURCES,
 )
 LIMB_KEYS = (
     "arm_min_joints",

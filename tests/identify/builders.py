@@ -85,6 +85,17 @@ def transmission(joint: str, interface: str = "PositionJointInterface") -> str:
     )
 
 
+def joint_xml(name: str, kind: str, parent: str, child: str, *pose: str) -> str:
+    """One joint as URDF text, placed: ``pose`` is its origin's xyz and its axis, as written
+    (for a robot written whole, where :class:`RobotText` would add each link itself)."""
+    xyz, axis = pose
+    limit = '<limit lower="-1" upper="1" effort="1" velocity="1"/>' if kind == "revolute" else ""
+    return (
+        f'<joint name="{name}" type="{kind}"><parent link="{parent}"/><child link="{child}"/>'
+        f'<origin xyz="{xyz}"/><axis xyz="{axis}"/>{limit}</joint>'
+    )
+
+
 def wheeled_base(robot: RobotText, wheels: int = 2) -> None:
     for side in ("left", "right", "rear_left", "rear_right")[:wheels]:
         robot.joint(f"wheel_{side}_joint", "continuous", robot.root, f"wheel_{side}_link")

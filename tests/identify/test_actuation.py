@@ -217,36 +217,26 @@ def test_hinges_apart_or_driven_are_no_ball_caster() -> None:
         assert not with_role(roles_of(robot), "caster")
 
 
-def _joint_xml(name: str, kind: str, parent: str, child: str, *pose: str) -> str:
-    xyz, axis = pose  # the origin's xyz and the axis, as written
-    limit = '<limit lower="-1" upper="1" effort="1" velocity="1"/>' if kind == "revolute" else ""
-    return (
-        f'<joint name="{name}" type="{kind}"><parent link="{parent}"/><child link="{child}"/>'
-        f'<origin xyz="{xyz}"/><axis xyz="{axis}"/>{limit}</joint>'
-    )
-
-
-def _transmission_xml(joint: str) -> str:
-    return (
-        f'<transmission name="t_{joint}"><type>transmission_interface/SimpleTransmission</type>'
-        f'<joint name="{joint}"><hardwareInterface>hardware_interface/VelocityJointInterface'
-        f'</hardwareInterface></joint><actuator name="a_{joint}"><mechanicalReduction>1'
-        "</mechanicalReduction></actuator></transmission>"
-    )
-
-
 def test_a_driven_scanner_on_a_steered_base_is_a_head_not_steering() -> None:
     parts = ['<link name="base_link"/>']
     for i, (x, y) in enumerate([(0.3, 0.2), (0.3, -0.2), (-0.3, 0.2), (-0.3, -0.2)]):
         parts += [f'<link name="s{i}"/>', f'<link name="w{i}"/>']
-        parts += [_joint_xml(f"steer{i}", "revolute", "base_link", f"s{i}", f"{x} {y} 0", "0 0 1")]
         parts += [
-            _joint_xml(f"wheel{i}_joint", "continuous", f"s{i}", f"w{i}", "0 0 -0.1", "0 1 0")
+            builders.joint_xml(f"steer{i}", "revolute", "base_link", f"s{i}", f"{x} {y} 0", "0 0 1")
         ]
-        parts += [_transmission_xml(f"steer{i}"), _transmission_xml(f"wheel{i}_joint")]
+        parts += [
+            builders.joint_xml(
+                f"wheel{i}_joint", "continuous", f"s{i}", f"w{i}", "0 0 -0.1", "0 1 0"
+            )
+        ]
+        parts += [builders.transmission(f"steer{i}"), builders.transmission(f"wheel{i}_joint")]
     parts += ['<link name="scanner"/>']
-    parts += [_joint_xml("scanner_joint", "continuous", "base_link", "scanner", "0 0 0.3", "0 0 1")]
-    parts += [_transmission_xml("scanner_joint")]
+    parts += [
+        builders.joint_xml(
+            "scanner_joint", "continuous", "base_link", "scanner", "0 0 0.3", "0 0 1"
+        )
+    ]
+    parts += [builders.transmission("scanner_joint")]
     parts += ['<gazebo reference="scanner"><sensor name="l" type="ray"/></gazebo>']
     found = identify_urdf('<robot name="r">' + "".join(parts) + "</robot>")
     assert {r.role for r in found.roles if r.joint == "scanner_joint"} != {"steering"}
@@ -254,19 +244,25 @@ def test_a_driven_scanner_on_a_steered_base_is_a_head_not_steering() -> None:
 
 def test_a_three_axis_camera_gimbal_is_no_ball_caster() -> None:
     parts = ['<link name="base_link"/>', '<link name="lw"/>', '<link name="rw"/>']
-    parts += [_joint_xml("left_wheel_joint", "continuous", "base_link", "lw", "0 0.2 0", "0 1 0")]
-    parts += [_joint_xml("right_wheel_joint", "continuous", "base_link", "rw", "0 -0.2 0", "0 1 0")]
+    parts += [
+        builders.joint_xml("left_wheel_joint", "continuous", "base_link", "lw", "0 0.2 0", "0 1 0")
+    ]
+    parts += [
+        builders.joint_xml(
+            "right_wheel_joint", "continuous", "base_link", "rw", "0 -0.2 0", "0 1 0"
+        )
+    ]
     above = "base_link"
     for k, axis in enumerate(["0 0 1", "0 1 0", "1 0 0"]):
         xyz = "0.2 0 0.3" if k == 0 else "0 0 0"
         parts += [
             f'<link name="g{k}"/>',
-            _joint_xml(f"gimbal{k}", "continuous", above, f"g{k}", xyz, axis),
+            builders.joint_xml(f"gimbal{k}", "continuous", above, f"g{k}", xyz, axis),
         ]
         above = f"g{k}"
     parts += [
         '<link name="cam"/>',
-        _joint_xml("cam_fixed", "fixed", above, "cam", "0.05 0 0", "1 0 0"),
+        builders.joint_xml("cam_fixed", "fixed", above, "cam", "0.05 0 0", "1 0 0"),
     ]
     parts += ['<gazebo reference="cam"><sensor name="c" type="camera"/></gazebo>']
     found = identify_urdf('<robot name="r">' + "".join(parts) + "</robot>")

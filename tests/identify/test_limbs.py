@@ -583,24 +583,6 @@ def test_a_short_planar_chain_whose_leaves_turn_is_no_spine() -> None:
     assert identify_urdf(text).structure != "Serpentine"
 
 
-def _joint_xml(name: str, kind: str, parent: str, child: str, *pose: str) -> str:
-    xyz, axis = pose  # the origin's xyz and the axis, as written
-    limit = '<limit lower="-1" upper="1" effort="1" velocity="1"/>' if kind == "revolute" else ""
-    return (
-        f'<joint name="{name}" type="{kind}"><parent link="{parent}"/><child link="{child}"/>'
-        f'<origin xyz="{xyz}"/><axis xyz="{axis}"/>{limit}</joint>'
-    )
-
-
-def _transmission_xml(joint: str) -> str:
-    return (
-        f'<transmission name="t_{joint}"><type>transmission_interface/SimpleTransmission</type>'
-        f'<joint name="{joint}"><hardwareInterface>hardware_interface/VelocityJointInterface'
-        f'</hardwareInterface></joint><actuator name="a_{joint}"><mechanicalReduction>1'
-        "</mechanicalReduction></actuator></transmission>"
-    )
-
-
 def test_a_spinning_leaf_beside_a_hexapods_legs_is_no_leg_of_it() -> None:
     parts = ['<link name="base_link"/>']
     for leg in range(6):
@@ -613,15 +595,17 @@ def test_a_spinning_leaf_beside_a_hexapods_legs_is_no_leg_of_it() -> None:
             ]
         ):
             parts += [f'<link name="s{leg}_{k}"/>']
-            parts += [_joint_xml(f"j{leg}_{k}", "revolute", above, f"s{leg}_{k}", xyz, axis)]
+            parts += [
+                builders.joint_xml(f"j{leg}_{k}", "revolute", above, f"s{leg}_{k}", xyz, axis)
+            ]
             above = f"s{leg}_{k}"
         parts += [
             f'<link name="t{leg}"/>',
-            _joint_xml(f"f{leg}", "fixed", above, f"t{leg}", "0 0 -0.2", "1 0 0"),
+            builders.joint_xml(f"f{leg}", "fixed", above, f"t{leg}", "0 0 -0.2", "1 0 0"),
         ]
     parts += [
         '<link name="spin"/>',
-        _joint_xml("spin_joint", "continuous", "base_link", "spin", "0 0 0.2", "0 0 1"),
+        builders.joint_xml("spin_joint", "continuous", "base_link", "spin", "0 0 0.2", "0 0 1"),
     ]
     assert identify_urdf('<robot name="r">' + "".join(parts) + "</robot>").structure == "Hexapod"
 
@@ -630,8 +614,8 @@ def test_a_pan_tilt_unit_bolted_to_the_world_is_still_a_head() -> None:
     def bolted(first_axis: str) -> list[str]:
         text = (
             '<robot name="r"><link name="world"/><link name="l1"/><link name="l2"/>'
-            + _joint_xml("joint1", "revolute", "world", "l1", "0 0 0.1", first_axis)
-            + _joint_xml("joint2", "revolute", "l1", "l2", "0 0 0.1", "0 1 0")
+            + builders.joint_xml("joint1", "revolute", "world", "l1", "0 0 0.1", first_axis)
+            + builders.joint_xml("joint2", "revolute", "l1", "l2", "0 0 0.1", "0 1 0")
             + '<gazebo reference="l2"><sensor name="cam" type="camera"/></gazebo></robot>'
         )
         body = identify_urdf(text).body

@@ -533,32 +533,18 @@ def test_wheels_all_written_on_fixed_joints_show_no_motion_control() -> None:
     assert "Driving" not in controls(robot)
 
 
-def _joint_xml(name: str, kind: str, parent: str, child: str, *pose: str) -> str:
-    xyz, axis = pose  # the origin's xyz and the axis, as written
-    limit = '<limit lower="-1" upper="1" effort="1" velocity="1"/>' if kind == "revolute" else ""
-    return (
-        f'<joint name="{name}" type="{kind}"><parent link="{parent}"/><child link="{child}"/>'
-        f'<origin xyz="{xyz}"/><axis xyz="{axis}"/>{limit}</joint>'
-    )
-
-
-def _transmission_xml(joint: str) -> str:
-    return (
-        f'<transmission name="t_{joint}"><type>transmission_interface/SimpleTransmission</type>'
-        f'<joint name="{joint}"><hardwareInterface>hardware_interface/VelocityJointInterface'
-        f'</hardwareInterface></joint><actuator name="a_{joint}"><mechanicalReduction>1'
-        "</mechanicalReduction></actuator></transmission>"
-    )
-
-
 def test_wheels_written_fixed_beside_a_swivel_caster_show_no_motion_control() -> None:
     text = (
         '<robot name="r"><link name="base_link"/><link name="lw"/><link name="rw"/>'
         '<link name="cs"/><link name="cw"/>'
-        + _joint_xml("left_wheel_joint", "fixed", "base_link", "lw", "0 0.2 0", "0 1 0")
-        + _joint_xml("right_wheel_joint", "fixed", "base_link", "rw", "0 -0.2 0", "0 1 0")
-        + _joint_xml("caster_swivel_joint", "continuous", "base_link", "cs", "-0.3 0 0", "0 0 1")
-        + _joint_xml("caster_wheel_joint", "continuous", "cs", "cw", "-0.03 0 -0.05", "0 1 0")
+        + builders.joint_xml("left_wheel_joint", "fixed", "base_link", "lw", "0 0.2 0", "0 1 0")
+        + builders.joint_xml("right_wheel_joint", "fixed", "base_link", "rw", "0 -0.2 0", "0 1 0")
+        + builders.joint_xml(
+            "caster_swivel_joint", "continuous", "base_link", "cs", "-0.3 0 0", "0 0 1"
+        )
+        + builders.joint_xml(
+            "caster_wheel_joint", "continuous", "cs", "cw", "-0.03 0 -0.05", "0 1 0"
+        )
         + "</robot>"
     )
     assert "Driving" not in {c.motion_control for c in identify_urdf(text).motion_controls}

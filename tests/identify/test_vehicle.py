@@ -405,32 +405,18 @@ def test_a_buoyancy_engine_puts_the_body_below_the_surface_it_names() -> None:
     assert result.confidence == pytest.approx(0.85, abs=0.01)  # no doubt left
 
 
-def _joint_xml(name: str, kind: str, parent: str, child: str, *pose: str) -> str:
-    xyz, axis = pose  # the origin's xyz and the axis, as written
-    limit = '<limit lower="-1" upper="1" effort="1" velocity="1"/>' if kind == "revolute" else ""
-    return (
-        f'<joint name="{name}" type="{kind}"><parent link="{parent}"/><child link="{child}"/>'
-        f'<origin xyz="{xyz}"/><axis xyz="{axis}"/>{limit}</joint>'
-    )
-
-
-def _transmission_xml(joint: str) -> str:
-    return (
-        f'<transmission name="t_{joint}"><type>transmission_interface/SimpleTransmission</type>'
-        f'<joint name="{joint}"><hardwareInterface>hardware_interface/VelocityJointInterface'
-        f'</hardwareInterface></joint><actuator name="a_{joint}"><mechanicalReduction>1'
-        "</mechanicalReduction></actuator></transmission>"
-    )
-
-
 def test_a_cameras_depth_sensor_frame_puts_no_wheeled_base_under_water() -> None:
     for frame in ("depth_sensor_link", "dvl_link"):
         text = (
             f'<robot name="r"><link name="base_link"/><link name="lw"/><link name="rw"/>'
             f'<link name="{frame}"/>'
-            + _joint_xml("left_wheel_joint", "continuous", "base_link", "lw", "0 0.2 0", "0 1 0")
-            + _joint_xml("right_wheel_joint", "continuous", "base_link", "rw", "0 -0.2 0", "0 1 0")
-            + _joint_xml("frame_joint", "fixed", "base_link", frame, "0.2 0 0.3", "1 0 0")
+            + builders.joint_xml(
+                "left_wheel_joint", "continuous", "base_link", "lw", "0 0.2 0", "0 1 0"
+            )
+            + builders.joint_xml(
+                "right_wheel_joint", "continuous", "base_link", "rw", "0 -0.2 0", "0 1 0"
+            )
+            + builders.joint_xml("frame_joint", "fixed", "base_link", frame, "0.2 0 0.3", "1 0 0")
             + "</robot>"
         )
         expected = "UGV" if frame == "depth_sensor_link" else "Underwater Vehicle"
