@@ -257,34 +257,37 @@ def _component_json(characteristic: Characteristic, component: Component, served
     listing (Case 3's 38 parts: 0.15 ms). Anything of another shape than text names and whole
     numbers (a value that is neither, a count written as a float) goes the generic way; the
     bytes are the same (``tests/reporting/test_render.py`` compares both)."""
+    text = _usual_component(characteristic, component, served)
+    if text is None:
+        return _nested(component_data(characteristic, component, served), 2)
+    return json_printable(text)
+
+
+def _usual_component(
+    characteristic: Characteristic, component: Component, served: Any
+) -> str | None:
+    """A listed component's JSON text when its names are text and its values all text or all
+    whole numbers; ``None`` for any other shape."""
     name, own = characteristic.name, component.name
     if type(name) is not str or type(own) is not str or not served:
-        return _nested(component_data(characteristic, component, served), 2)
+        return None
     head = f'{{{_AT_FIELD}"characteristic": {_quoted(name)},{_AT_FIELD}"component": {_quoted(own)},'
+    kinds = {type(v) for v in served}
     if characteristic.kind == "integer":
-        if not all(type(v) is int for v in served):
-            return _nested(component_data(characteristic, component, served), 2)
-        counts = sorted(served)
-        low, high = counts[0], counts[-1]
-        clusters = (component.clusters(low), component.clusters(high))
-        if not all(type(n) is int for n in clusters):
-            return _nested(component_data(characteristic, component, served), 2)
+        counts = sorted(served) if kinds == {int} else []
+        clusters = (component.clusters(counts[0]), component.clusters(counts[-1])) if counts else ()
+        if not clusters or not all(type(n) is int for n in clusters):
+            return None
         runs = ("," + _AT_ITEM).join(_pair(*run, _AT_ITEM + "  ") for run in integer_runs(counts))
-        text = (
-            f'{head}{_AT_FIELD}"range": {_pair(low, high, _AT_ITEM)},'
+        return (
+            f'{head}{_AT_FIELD}"range": {_pair(counts[0], counts[-1], _AT_ITEM)},'
             f'{_AT_FIELD}"clusters": {_pair(*clusters, _AT_ITEM)},'
             f'{_AT_FIELD}"counts": [{_AT_ITEM}{runs}{_AT_FIELD}]{_AT_COMPONENT}}}'
         )
-    else:
-        kinds = {type(v) for v in served}
-        if kinds == {str}:
-            items = ("," + _AT_ITEM).join(map(_quoted, served))
-        elif kinds == {int}:
-            items = ("," + _AT_ITEM).join(map(int.__repr__, served))
-        else:
-            return _nested(component_data(characteristic, component, served), 2)
-        text = f'{head}{_AT_FIELD}"values": [{_AT_ITEM}{items}{_AT_FIELD}]{_AT_COMPONENT}}}'
-    return json_printable(text)
+    if kinds not in ({str}, {int}):
+        return None
+    items = ("," + _AT_ITEM).join(map(_quoted if kinds == {str} else int.__repr__, served))
+    return f'{head}{_AT_FIELD}"values": [{_AT_ITEM}{items}{_AT_FIELD}]{_AT_COMPONENT}}}'
 
 
 def _pair(first: int, second: int, at: str) -> str:
