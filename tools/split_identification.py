@@ -40,11 +40,12 @@ blind; measured blind once, whole, as held-out, they were moved whole to the dev
 of ``tools/fresh_set_3`` (built blind after that), measured blind once and moved on 2026-11-29,
 those of ``tools/fresh_set_4`` (built blind after that), measured blind once and moved on
 2026-11-29, those of ``tools/fresh_set_5`` (built blind after that), measured blind once and
-moved on 2026-11-29, and those of ``tools/fresh_set_6`` (built blind after that), measured blind
-once and moved on 2026-11-29.
+moved on 2026-11-29, those of ``tools/fresh_set_6`` (built blind after that), measured blind
+once and moved on 2026-11-29, and those of ``tools/fresh_set_7`` (built blind after that),
+measured blind once and moved on 2026-11-29.
 
 The blind set is never listed: ``tools/measure_identification.py`` holds out whole, by its set,
-the highest-numbered ``tools/fresh_set_N`` this file does not list (now ``tools/fresh_set_7``),
+the highest-numbered ``tools/fresh_set_N`` this file does not list (now ``tools/fresh_set_8``),
 so this file need not change (nor that set be read) while it is being built. Moving a fresh set
 to development is adding it to ``MOVED_SETS`` and re-making this file.
 
@@ -75,6 +76,7 @@ MOVED_SETS = (
     ROOT / "tools" / "fresh_set_4",
     ROOT / "tools" / "fresh_set_5",
     ROOT / "tools" / "fresh_set_6",
+    ROOT / "tools" / "fresh_set_7",
 )
 DEVELOPMENT = "development"
 HELD_OUT = "held-out"
@@ -201,7 +203,10 @@ HEADER = f"""\
 # Rows of tools/fresh_set_6 were labelled blind while the rules of the sixth round were written
 # and measured blind once as held-out; on 2026-11-29 they were moved whole to the development
 # part, to tune on (its README gives the blind figures).
-# The blind set (the highest-numbered tools/fresh_set_N, now fresh_set_7) is not listed: the
+# Rows of tools/fresh_set_7 were labelled blind while the rules of the seventh round were written
+# and measured blind once as held-out; on 2026-11-29 they were moved whole to the development
+# part, to tune on (its README gives the blind figures).
+# The blind set (the highest-numbered tools/fresh_set_N, now fresh_set_8) is not listed: the
 # measurement tool holds it out whole by set.
 # Re-make and compare: python tools/split_identification.py --check
 """

@@ -56,6 +56,7 @@ from solver.identify.roles import Role
 from solver.identify.tree import JointTree
 from solver.identify.vehicle import (
     fixed_rotors,
+    fixed_thrusters,
     fixed_wheels,
     flight_hints,
     grounded,
@@ -336,7 +337,9 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
         not_rotors=tuple(not_rotors(tree, parts.roles)),
         fixed_wheels=tuple(fixed_wheels(tree, parts.roles)),
         fixed_rotors=tuple(fixed_rotors(tree)),
-        thrusters=tuple(parts.of("thruster") + listed_thrusters(tree, parts.roles)),
+        thrusters=tuple(
+            parts.of("thruster") + listed_thrusters(tree, parts.roles) + fixed_thrusters(tree)
+        ),
         fins=tuple(parts.of("fin")),
         casters=tuple(parts.of("caster")),
         wings=tuple(wings(tree, parts.roles)),

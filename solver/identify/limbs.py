@@ -628,21 +628,27 @@ def lone_leg(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
 
 
 def lone_head(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
-    """A short unnamed chain read as a pan/tilt unit because it carries a sensor, the body's
-    only limb, hanging from a root fixed to ``world`` on a body that does not move: nothing
-    else is there to point the sensor for, and the base is bolted down. It is an arm (of two
-    joints or more) that carries the sensor at its tip."""
-    if moves or len(limbs) != 1 or limbs[0].kind != "head" or limbs[0].named:
+    """A short unnamed chain, the body's only limb, hanging from a root fixed to ``world`` on a
+    body that does not move: the base is bolted down and the chain is what it is there for. It
+    is an arm (of two joints or more), whether it carries a sensor at its tip (read as a
+    pan/tilt unit only for that) or nothing the names tell (a two-link teaching arm)."""
+    if moves or len(limbs) != 1 or limbs[0].kind not in ("head", "other") or limbs[0].named:
         return limbs
     limb = limbs[0]
     if len(limb.joints) < 2 or not _on_the_root(tree, limb.base) or not _world_root(tree):
         return limbs
     pan, tilt = (tree.urdf.joint(name) for name in limb.joints[:2])
-    if pan is not None and tilt is not None and _pan_then_tilt(tree, pan, tilt):
+    if (
+        limb.kind == "head"
+        and pan is not None
+        and tilt is not None
+        and _pan_then_tilt(tree, pan, tilt)
+    ):
         return limbs  # a pan/tilt unit bolted down is still a head
+    what = "carrying a sensor" if limb.kind == "head" else "of no limb's name"
     why = (
         f"the body's only limb, an unnamed chain of {len(limb.joints)} joints on a root fixed"
-        " to the world (a short arm carrying a sensor)"
+        f" to the world (a short arm {what})"
     )
     return [replace(limb, kind="arm", why=why)]
 

@@ -75,10 +75,24 @@ class RoleReader:
         self.profile = profile
         self.parts_of = parts_of
         self.plugin_parts = {id(p): self._plugin_parts(p) for p in urdf.plugins}
-        self.marine = bool(self.plugins_of("marine") or self.plugins_of("thruster")) or any(
-            self.matches("thruster", joint) for joint in urdf.joints if joint.movable
-        )
+        self.fixed_thrusters = self._fixed_thrusters()
+        self.marine = bool(
+            self.plugins_of("marine") or self.plugins_of("thruster") or self.fixed_thrusters
+        ) or any(self.matches("thruster", joint) for joint in urdf.joints if joint.movable)
         self.named = self._named_by_plugins()
+
+    def _fixed_thrusters(self) -> tuple[str, ...]:
+        """Thruster-named leaf links fixed to the root's part, at least ``min_rotors`` of them (a
+        vehicle trimmed of its propellers, moved by a plugin that pushes the hull): in water."""
+        found = tuple(
+            joint.child
+            for joint in self.urdf.joints
+            if joint.type == "fixed"
+            and not self.urdf.children(joint.child)
+            and self.matches("thruster", joint)
+            and not self._moved(joint.parent)
+        )
+        return found if len(found) >= self.profile.limb("min_rotors") else ()
 
     def _plugin_parts(self, plugin: PluginTag) -> frozenset[str]:
         found = set()

@@ -9,7 +9,8 @@ body travels in a few more ways, each read here:
   model plugin's parameters (a vehicle plugin of its own), not on a body that rolls or walks,
   or in the robot's name when the body is bare (no movable joint, plugin or sensor: an
   aircraft exported as one mesh); rotor-named joints too few to fly, said as such.
-* *Water*: thrusters a thruster plugin lists by a link no joint moves (a hull's list); hints
+* *Water*: thrusters a thruster plugin lists by a link no joint moves (a hull's list), and
+  thruster-named leaf links fixed to the hull, two or more (propellers left out); hints
   of a hull at the surface (a surface plugin, ``<metacentric_width>``; a body whose buoyancy
   compensation, buoyancy over weight, has a hull's reserve (1.1 or more): it floats; a GPS or
   a lidar where nothing says the body dives: satellites are heard and laser light carries only
@@ -37,6 +38,7 @@ from solver.identify.tree import JointTree
 
 __all__ = [
     "fixed_rotors",
+    "fixed_thrusters",
     "fixed_wheels",
     "flight_hints",
     "grounded",
@@ -100,6 +102,15 @@ def listed_thrusters(tree: JointTree, roles: dict[str, Role]) -> list[str]:
         if not any(j is not None and j.name in roles for j in joints):
             found += [f"{link} ({tree.reader.plugin_label(plugin)})" for link in named][:1]
     return found
+
+
+def fixed_thrusters(tree: JointTree) -> list[str]:
+    """Thruster-named leaf links fixed to the hull, two or more (a vehicle trimmed of its
+    propellers, a plugin pushing the hull), when no thruster plugin lists them: in water, by
+    thruster names alone."""
+    if tree.reader.plugins_of("thruster"):
+        return []
+    return [f"{link} (fixed)" for link in tree.reader.fixed_thrusters]
 
 
 def fixed_wheels(tree: JointTree, roles: dict[str, Role]) -> list[str]:

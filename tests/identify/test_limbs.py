@@ -528,6 +528,24 @@ def test_a_two_joint_chain_carrying_a_sensor_on_a_base_fixed_to_the_world_is_an_
     assert "Joint" in {c.motion_control for c in result.motion_controls}
 
 
+def test_a_two_joint_chain_of_no_limb_name_bolted_to_the_world_is_an_arm() -> None:
+    """Two unnamed hinges on parallel axes from a link fixed to ``world``, nothing at the tip
+    but an end link, driven through transmissions: a two-link teaching arm, not Other."""
+    robot = RobotText("two_link", root="world")
+    base = robot.fixed("world", "base_link")
+    tip = robot.chain(base, ["joint_1", "joint_2"])
+    robot.fixed(tip, "link_ee")
+    robot.add(builders.transmission("joint_1"))
+    robot.add(builders.transmission("joint_2"))
+    result = identify_urdf(robot.text())
+    assert result.structure == "Manipulator"
+    assert result.body is not None
+    assert any("of no limb's name" in limb.why for limb in result.body.limbs)
+    free = RobotText("two_link_free")
+    free.fixed(free.chain(free.root, ["joint_1", "joint_2"]), "link_ee")
+    assert identify_urdf(free.text()).structure == "Other"  # not bolted down: nothing says arm
+
+
 def test_the_same_chain_on_a_free_root_or_with_head_names_stays_a_pan_tilt_unit() -> None:
     free = RobotText("camera_mount")
     tip = free.chain(free.root, ["joint1", "joint2"])

@@ -290,6 +290,30 @@ def test_a_one_ray_range_sensor_is_no_lidar_and_four_of_them_stay_four() -> None
     assert found == [("ir_range", None, 4), ("lidar", "LIDAR", 1)]
 
 
+def range_finder(name: str, radiation: str) -> str:
+    """A cone of 10 x 10 rays (a range plugin's beam) whose plugin says what it casts."""
+    grid = "<samples>10</samples><min_angle>-0.13</min_angle><max_angle>0.13</max_angle>"
+    scan = (
+        f"<ray><scan><horizontal>{grid}</horizontal><vertical>{grid}</vertical></scan>"
+        "<range><max>4.5</max></range></ray>"
+    )
+    plugin = (
+        f'<plugin name="{name}_range" filename="libgazebo_ros_range.so">'
+        f"<topicName>{name}</topicName><radiation>{radiation}</radiation></plugin>"
+    )
+    return builders.gazebo_sensor(f"{name}_link", "ray", name, scan + plugin)
+
+
+def test_a_range_plugins_radiation_tells_a_sonar_and_an_infrared_ranger_from_a_lidar() -> None:
+    # Named only by place (front_c, front_l): the wave the plugin casts says what they are.
+    found = kinds(
+        range_finder("front_c", "ultrasound"),
+        range_finder("front_l", "ultrasound"),
+        range_finder("rear", "infrared"),
+    )
+    assert found == [("sonar", None, 2), ("ir_range", None, 1)]
+
+
 def test_a_ray_sensor_read_from_its_element_knows_its_sweep_and_reach() -> None:
     robot = builders.ugv()
     robot.add(ray("laser", "rplidar", 1600, 6.28, 12.0))

@@ -100,6 +100,32 @@ def test_a_body_in_water_by_thruster_names_alone_is_underwater_with_doubt() -> N
     assert "doubt: a typical Underwater Vehicle has underwater" in result.evidence
 
 
+def hull_of_fixed_thrusters(count: int = 6, *, under_a_joint: bool = False) -> RobotText:
+    """A hull whose thrusters are leaf links fixed to it (the propellers left out), pushed by a
+    velocity plugin on cmd_vel; ``under_a_joint`` hangs them from a turning link instead."""
+    robot = RobotText("hull")
+    parent = robot.root
+    if under_a_joint:
+        parent = robot.chain(robot.root, ["turret"])
+    for i in range(count):
+        robot.fixed(parent, f"thruster_{i}")
+    robot.add(builders.model_plugin("velocity", "libgazebo_ros_velocity_controller.so"))
+    return robot
+
+
+def test_thruster_links_fixed_to_a_pushed_hull_put_it_in_water_with_doubt() -> None:
+    result = identify_urdf(hull_of_fixed_thrusters().text())
+    assert result.structure == "Underwater Vehicle"
+    assert result.confidence == pytest.approx(0.85 * 0.8, abs=0.01)
+    assert any("thruster_0 (fixed)" in line for line in result.evidence)
+    assert "Driving" in {c.motion_control for c in result.motion_controls}
+
+
+def test_one_fixed_thruster_link_or_ones_a_joint_moves_say_nothing_of_water() -> None:
+    assert identify_urdf(hull_of_fixed_thrusters(1).text()).structure == "UGV"
+    assert identify_urdf(hull_of_fixed_thrusters(under_a_joint=True).text()).structure == "UGV"
+
+
 @pytest.mark.parametrize(
     "evidence",
     [

@@ -166,9 +166,10 @@ class SensorTag:
 
     @property
     def device_text(self) -> str:
-        """What names the device itself: its name, link and plugins, not the topics it feeds
+        """What names the device itself: its name, link and plugins, and the wave a range
+        plugin says it casts (``<radiation>ultrasound</radiation>``), not the topics it feeds
         (a plain camera whose plugin publishes ``depth/...`` topics is still a camera)."""
-        plugins = (f"{p.name} {p.filename}" for p in self.plugins)
+        plugins = (f"{p.name} {p.filename} {p.param('radiation') or ''}" for p in self.plugins)
         return " ".join([self.name, self.link or "", *plugins])
 
 
