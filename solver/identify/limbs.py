@@ -438,10 +438,10 @@ def _below(tree: JointTree, joint: Joint) -> set[str]:
 
 
 def spine(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
-    """The body's one limb as a *spine* when it is a snake's: a long chain with no arm or leg
-    names and no gripper, of equal modules (every spacing between joints alike), each joint's
-    axis square to the last's, on a body that has nothing else (no wheels, rotors, legs or
-    other chains)."""
+    """The body's one limb as a *spine* when it is a snake's: a long chain of turning joints
+    (no slide) with no arm or leg names and no gripper, of equal modules (every spacing between
+    joints alike), each joint's axis square to the last's, on a body that has nothing else (no
+    wheels, rotors, legs or other chains)."""
     if len(limbs) != 1:
         return limbs
     limb = limbs[0]
@@ -452,9 +452,11 @@ def spine(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     ):
         return limbs
     joints = [j for j in (tree.urdf.joint(name) for name in limb.joints) if j is not None]
-    # A snake may have a head; arm or leg names say it is something else.
+    # A snake may have a head; arm or leg names say it is something else. Its modules turn: a
+    # chain with a slide in it is an arm on a rail or a lift.
     named = _named_limb(tree, joints)
-    if named or not _modules(tree, joints):
+    turning = all(j.type in ("revolute", "continuous") for j in joints)
+    if named or not turning or not _modules(tree, joints):
         return limbs
     if _alternating(tree, joints):
         why = f"a chain of {len(joints)} equal modules whose axes alternate, nothing else (a spine)"

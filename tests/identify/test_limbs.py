@@ -163,6 +163,19 @@ def test_a_chain_of_equal_modules_with_alternating_axes_is_a_snakes_spine() -> N
     assert result.kinematic_type is None  # the article has no snake
 
 
+def test_the_same_chain_on_a_rail_is_an_arm_not_a_snake() -> None:
+    """Equal modules with alternating axes behind a slide (a linear rail carrying the chain):
+    a snake's modules only turn, so the chain is an arm on a rail."""
+    snake = builders.snake(6).text()
+    rail = (
+        '<link name="rail_base"/><joint name="rail" type="prismatic"><parent link="rail_base"/>'
+        '<child link="m0"/><axis xyz="1 0 0"/><limit lower="0" upper="2" effort="1" '
+        'velocity="1"/></joint></robot>'
+    )
+    result = identify_urdf(snake.replace("</robot>", rail))
+    assert result.structure == "Manipulator"
+
+
 def wheeled_snake(modules: int = 4, *, names: str = "j") -> RobotText:
     """A snake of two-joint modules (a yaw joint, then 2.5 cm on a pitch joint, then 18 cm to
     the next module), each module carrying two leaf wheel joints, one on each side and one
