@@ -94,6 +94,8 @@ class Body:
     floating_base: tuple[str, ...] = ()
     planar_base: tuple[str, ...] = ()
     controlled_wheels: tuple[str, ...] = ()
+    # Fins (rudders, control surfaces) a controller drives (a transmission or ros2_control).
+    controlled_fins: tuple[str, ...] = ()
     controlled_joints: tuple[str, ...] = ()
     # Finger and gripper joints a controller drives (a transmission or ros2_control command).
     controlled_fingers: tuple[str, ...] = ()
@@ -327,6 +329,7 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
         floating_base=parts.placement.floating,
         planar_base=parts.placement.planar,
         controlled_wheels=tuple(w for w in wheels if w in controlled),
+        controlled_fins=tuple(f for f in parts.of("fin") if f in controlled),
         controlled_joints=tuple(j for j in _commanded(tree, parts) if j in controlled),
         controlled_fingers=tuple(
             sorted(

@@ -788,7 +788,10 @@ def _named_kind(
             return "leg", why
         if kind == "head" and length <= tree.profile.limb("head_max_joints") and not gripper:
             return "head", why
-        if kind == "arm" and (length >= tree.profile.limb("arm_min_joints") or gripper):
+        # Two joints both named as an arm's (arm_1_joint, arm_2_joint) are a short arm.
+        if kind == "arm" and (
+            length >= tree.profile.limb("arm_min_joints") or gripper or scores[kind] >= _LIMB_NAMES
+        ):
             return "arm", why
     return None, ""
 

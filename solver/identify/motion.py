@@ -94,6 +94,13 @@ def _ground(body: Body, urdf_source: str) -> _Shown:
         found.append(("planar_base", f"{urdf_source}: a base moved in the plane"))
     if body.thrusters:
         found.append(("thrusters", f"{urdf_source}: {len(body.thrusters)} thruster(s)"))
+    elif body.marine and body.controlled_fins:
+        # A vessel with no thruster steered by a rudder a controller drives (a sailboat): the
+        # operator steers it, as thrusters take a vessel's velocity commands.
+        count = len(body.controlled_fins)
+        found.append(
+            ("controlled_rudders", f"{urdf_source}: {count} rudder joint(s) with a transmission")
+        )
     return found
 
 
@@ -169,11 +176,29 @@ def _limbs(body: Body, urdf_source: str, urdf: Urdf | None = None) -> _Shown:
                 "more ending in a gripper",
             )
         )
+    # An end effector alone (no arm, leg or vehicle to carry it) is there to be opened and
+    # closed (or its suction switched): its one command is its joints'. A guess when no
+    # controller is declared on them.
+    if not body.controlled_fingers and _end_effector_alone(body):
+        found.append(
+            (
+                "gripper_alone",
+                f"{urdf_source}: likely, not declared: a gripper or hand alone, "
+                "opened and closed on command",
+            )
+        )
     legs = body.count("leg")
     # Legs are there to walk on; the gait that walks them is software, not in the description.
     if legs >= _WALKING_LEGS:
         found.append(("legs", f"{urdf_source}: likely, not declared: {legs} legs to walk on"))
     return found
+
+
+def _end_effector_alone(body: Body) -> bool:
+    """A gripper or a hand with nothing else: no arm, leg, spine, mobile base or vehicle."""
+    return bool(body.grippers or body.fingers) and not (
+        body.limbs or body.mobile_base or body.flying or body.marine
+    )
 
 
 def _planned(

@@ -140,11 +140,13 @@ ROLE_SOURCES = (
     "thrusters",
     "arm",
     "arm_gripper",
+    "gripper_alone",
     "legs",
 )
 CONTROL_SOURCES = (
     "drive_plugin",
     "controlled_wheels",
+    "controlled_rudders",
     "flight",
     "controlled_joints",
     "controlled_fingers",

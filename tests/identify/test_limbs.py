@@ -655,3 +655,17 @@ def test_a_pan_tilt_unit_bolted_to_the_world_is_still_a_head() -> None:
 
     assert bolted("0 0 1") == ["head"]  # a pan, then a tilt: it points the camera
     assert bolted("0 1 0") == ["arm"]  # two parallel hinges carrying it: a short arm
+
+
+def test_two_joints_both_named_as_an_arms_are_a_short_arm_on_a_base() -> None:
+    """A tracked base carrying arm_1_joint and arm_2_joint (links arm1, arm2): a two-joint arm,
+    so a mobile manipulator; the same two joints with no name of a limb stay the base's."""
+    named = builders.ugv()
+    named.chain(named.root, ["arm_1_joint", "arm_2_joint"])
+    assert identify_urdf(named.text()).structure == "Mobile Manipulator"
+    unnamed = builders.ugv()
+    unnamed.chain(unnamed.root, ["joint_a", "joint_b"])
+    assert identify_urdf(unnamed.text()).structure == "UGV"
+    one = builders.ugv()
+    one.chain(one.root, ["arm_joint", "tool_joint"])  # one arm word is a label, not a limb
+    assert identify_urdf(one.text()).structure == "UGV"

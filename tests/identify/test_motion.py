@@ -30,7 +30,7 @@ def controls(robot: RobotText) -> dict[str, str]:
         (builders.manipulator, {"Joint", "End Effector"}),
         (builders.quadrotor, {"Flight"}),
         (builders.tilt_rotor, {"Flight"}),
-        (builders.hand, set()),
+        (builders.hand, {"Joint"}),
     ],
     ids=[
         "wheels",
@@ -548,3 +548,36 @@ def test_wheels_written_fixed_beside_a_swivel_caster_show_no_motion_control() ->
         + "</robot>"
     )
     assert "Driving" not in {c.motion_control for c in identify_urdf(text).motion_controls}
+
+
+def sailboat(*, driven_rudder: bool = True) -> RobotText:
+    """A hull at the surface (a sail plugin), no thruster, a rudder and a sail on hinges."""
+    robot = RobotText("sloop")
+    robot.chain(robot.root, ["rudder_joint"])
+    robot.chain(robot.root, ["main_sail_joint"])
+    robot.add(builders.model_plugin("sail", "libSailPlugin.so"))
+    if driven_rudder:
+        robot.add(builders.transmission("rudder_joint"))
+    return robot
+
+
+def test_a_vessel_with_no_thruster_steered_by_a_driven_rudder_is_driven() -> None:
+    result = identify_urdf(sailboat().text())
+    assert result.structure == "Surface Vessel"
+    assert {c.motion_control for c in result.motion_controls} == {"Driving"}
+    assert "rudder joint(s) with a transmission" in result.motion_controls[0].source
+    # A rudder no controller drives steers nothing an operator commands.
+    assert controls(sailboat(driven_rudder=False)) == {}
+
+
+def test_a_gripper_alone_is_opened_and_closed_on_command_a_guess_said_so() -> None:
+    result = identify_urdf(builders.parallel_gripper().text())
+    assert result.structure == "Gripper"
+    (control,) = result.motion_controls
+    assert control.motion_control == "Joint"
+    assert "likely, not declared: a gripper or hand alone" in control.source
+    # On an arm the arm's joints say Joint; the guess for a lone end effector is not made.
+    sources = " ".join(
+        c.source for c in identify_urdf(builders.manipulator().text()).motion_controls
+    )
+    assert "gripper or hand alone" not in sources
