@@ -84,15 +84,29 @@ class RoleReader:
     def _fixed_thrusters(self) -> tuple[str, ...]:
         """Thruster-named leaf links fixed to the root's part, at least ``min_rotors`` of them (a
         vehicle trimmed of its propellers, moved by a plugin that pushes the hull): in water."""
-        found = tuple(
-            joint.child
+        leaves = [
+            joint
             for joint in self.urdf.joints
             if joint.type == "fixed"
             and not self.urdf.children(joint.child)
             and self.matches("thruster", joint)
-            and not self._moved(joint.parent)
-        )
+        ]
+        if len(leaves) < self.profile.limb("min_rotors"):
+            return ()
+        still = self._still_links()
+        found = tuple(joint.child for joint in leaves if joint.parent in still)
         return found if len(found) >= self.profile.limb("min_rotors") else ()
+
+    def _still_links(self) -> set[str]:
+        """Links no movable joint moves (the root's part), in one walk from the root."""
+        still = {self.urdf.root}
+        stack = [self.urdf.root]
+        while stack:
+            for joint in self.urdf.children(stack.pop()):
+                if not joint.movable:
+                    still.add(joint.child)
+                    stack.append(joint.child)
+        return still
 
     def _plugin_parts(self, plugin: PluginTag) -> frozenset[str]:
         found = set()

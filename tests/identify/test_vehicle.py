@@ -374,6 +374,20 @@ def test_a_long_fixed_chain_of_floating_links_under_a_moving_joint_is_read_once(
     assert not any("floats" in line for line in result.evidence)
 
 
+def test_thruster_leaves_under_a_deep_fixed_chain_are_placed_in_one_walk() -> None:
+    # 20,000 links fixed one under the next, then 20,000 thruster-named leaves on the last:
+    # whether each leaf's link is still is known from one walk of the tree, not a walk up
+    # from every leaf (which took minutes).
+    robot = RobotText("deep_hull")
+    parent = robot.root
+    for i in range(20_000):
+        parent = robot.fixed(parent, f"c{i}")
+    for i in range(20_000):
+        robot.fixed(parent, f"thruster_{i}")
+    result = identify_urdf(robot.text())
+    assert result.structure == "Underwater Vehicle"
+
+
 def dvl_arm(frame: str = "dvl_link") -> RobotText:
     """A body with fixed sensor frames and no plugin, carrying a 2-joint arm with a gripper."""
     robot = RobotText("drone_with_arm")
