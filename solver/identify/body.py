@@ -38,11 +38,11 @@ from solver.identify.actuation import joint_roles, with_role
 from solver.identify.hands import finger_groups, finger_tips, gripper_closure
 from solver.identify.limbs import (
     Limb,
+    bolted_chain,
     find_limbs,
     five_bars,
     legs_at_the_pelvis,
     legs_by_place,
-    lone_head,
     lone_leg,
     moved_by,
     spine,
@@ -420,7 +420,7 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
             parts.roles[name] = Role(name, "passive", "a leaf joint beside a spine (a side wheel)")
     parts.limbs = wrist(tree, parts.limbs, len(finger_tips(tree, parts.grippers)))
     moves = flying or grounded(tree, parts.roles)
-    parts.limbs = lone_head(tree, parts.limbs, moves)
+    parts.limbs = bolted_chain(tree, parts.limbs, moves)
     parts.limbs = lone_leg(tree, parts.limbs, moves)
 
 

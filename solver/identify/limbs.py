@@ -55,11 +55,11 @@ from solver.untrusted import shown
 __all__ = [
     "LIMB_KINDS",
     "Limb",
+    "bolted_chain",
     "find_limbs",
     "five_bars",
     "legs_at_the_pelvis",
     "legs_by_place",
-    "lone_head",
     "lone_leg",
     "sort_limbs",
     "spine",
@@ -629,7 +629,7 @@ def lone_leg(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
     return [replace(limb, kind="arm", why=why)]
 
 
-def lone_head(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
+def bolted_chain(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
     """A short unnamed chain, the body's only limb, hanging from a root fixed to ``world`` on a
     body that does not move: the base is bolted down and the chain is what it is there for. It
     is an arm (of two joints or more), whether it carries a sensor at its tip (read as a
