@@ -373,3 +373,45 @@ def test_the_shipped_split_puts_every_row_of_the_measured_fresh_sets_in_developm
     # The blind set is held out by the measurement tool, never listed here (nor read here).
     assert not [row for row in rows if row["set"] == "fresh_set_9"]
     assert "moved whole to the development" in text
+
+
+NAMED_ONLY = (
+    '<robot name="rover"><link name="base_link"/><link name="left_wheel"/>'
+    '<link name="right_wheel"/><link name="0"/>'
+    '<joint name="left_wheel_joint" type="revolute"><parent link="base_link"/>'
+    '<child link="left_wheel"/><origin xyz="0 0.2 0"/><axis xyz="0 0 1"/>'
+    '<limit lower="0" upper="1" effort="1" velocity="1"/></joint>'
+    '<joint name="right_wheel_joint" type="revolute"><parent link="base_link"/>'
+    '<child link="right_wheel"/><origin xyz="0 -0.2 0"/><axis xyz="0 0 1"/>'
+    '<limit lower="0" upper="1" effort="1" velocity="1"/></joint>'
+    '<joint name="zero" type="fixed"><parent link="base_link"/><child link="0"/></joint>'
+    '<gazebo reference="left_wheel"><mu1>0</mu1></gazebo></robot>'
+)
+
+
+def test_without_names_every_link_and_joint_is_renamed_wherever_it_is_written(
+    tmp_path: Path,
+) -> None:
+    path = tmp_path / "rover.urdf"
+    path.write_text(NAMED_ONLY, encoding="utf-8")
+    text = _measure_tool().without_names(path).decode()
+    for name in ("rover", "base_link", "wheel", "zero"):
+        assert name not in text
+    assert '<parent link="l0"/>' in text
+    assert '<child link="l1"/>' in text
+    assert '<gazebo reference="l1">' in text
+    # A number stays a number, though a link is named "0".
+    assert 'lower="0"' in text
+    assert "<mu1>0</mu1>" in text
+
+
+def test_no_names_measures_what_is_read_with_no_word_of_a_parts_name(tmp_path: Path) -> None:
+    # Only the joints' names say these limited hinges are wheels: with them the rover is a UGV,
+    # without them nothing says so.
+    (tmp_path / "set" / "urdf").mkdir(parents=True)
+    (tmp_path / "set" / "urdf" / "rover.urdf").write_text(NAMED_ONLY, encoding="utf-8")
+    row = {"robot": "rover", "file": "urdf/rover.urdf", "kinematic_type": "UGV"}
+    write_truth(tmp_path / "set", [row])
+    named = row_of(measure("--set", str(tmp_path / "set")), "**all**", "set")
+    nameless = row_of(measure("--set", str(tmp_path / "set"), "--no-names"), "**all**", "set")
+    assert (named[1], nameless[1]) == ("1/1 (100%)", "0/1 (0%)")

@@ -8,6 +8,7 @@ Usage::
     python tools/measure_identification.py --set DIR --files DIR2   # files kept elsewhere
     python tools/measure_identification.py --all --profile mine.yaml  # another profile
     python tools/measure_identification.py --all --split      # development / held-out parts
+    python tools/measure_identification.py --all --split --no-names   # every name removed
 
 A labelled set is a folder with a ``truth.csv`` (the columns of ``../shared/corpus/truth.csv``:
 ``robot``, ``file``, ``srdf``, ``source``, ``kinematic_type``, ``sensors``,
@@ -48,6 +49,13 @@ rows are held out whole by their set, and count in ``held-out`` and again on a l
 own, ``held-out (fresh)``. Moving it to development is listing it in the split; another
 unlisted fresh set is measured as ``unsplit``.
 
+With ``--no-names`` each URDF is read with every link and joint renamed to a neutral id
+(``l0``, ``j0``, ... wherever the name is written: the tree, mimic joints, transmissions, Gazebo
+references and plugin parameters) and the robot named ``robot``, and without its SRDF (which
+names groups by them): what identification reads from what the joints do and what the plugins
+and sensors are, with no word of a part's name (a CAD export's ``Revolute_3``, a team's own
+language). Sensor names, plugin files and everything else stay.
+
 The sets are read in place and never copied. A set with no truth.csv is reported and skipped.
 """
 
@@ -57,14 +65,18 @@ import argparse
 import csv
 import re
 import sys
+import tempfile
 from collections import Counter
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from lxml import etree
+
 from solver.core.rules import default_rules_path, load_rules
 from solver.errors import SolverError
 from solver.identify import Identification, identify, load_profile
+from solver.identify.readers.safexml import read_xml
 
 ROOT = Path(__file__).resolve().parent.parent
 # The labels' families, sources and the shared folder are the split's (one definition).
@@ -308,6 +320,38 @@ class Measured:
 Runner = Callable[[Path, "Path | None"], Identification]
 
 
+# The attributes that name a link or a joint (the tree, mimic, transmissions, Gazebo references).
+_NAMING = ("name", "link", "joint", "reference")
+_NUMBER = re.compile(r"[-+]?[0-9.eE+-]+")
+
+
+def without_names(urdf: Path) -> bytes:
+    """The URDF with every link renamed ``l<i>`` and every joint ``j<i>`` (document order),
+    wherever a ``name``, ``link``, ``joint`` or ``reference`` attribute or an element's whole
+    text is such a name (not a number: a link named ``0`` leaves a ``<lower>0</lower>`` as it
+    is), and the robot ``robot``. A file that cannot be read is returned as it is (its refusal
+    is the measurement's)."""
+    try:
+        root = read_xml(urdf)
+    except SolverError:
+        return urdf.read_bytes()
+    names: dict[str, str] = {}
+    for kind, prefix in (("link", "l"), ("joint", "j")):
+        found = dict.fromkeys(e.get("name") for e in root.findall(kind))
+        names |= {name: f"{prefix}{i}" for i, name in enumerate(found) if name is not None}
+    for name in [name for name in names if _NUMBER.fullmatch(name)]:
+        del names[name]  # kept: a number is no word, and such text is mostly a quantity
+    for element in root.iter():
+        for key in _NAMING:
+            value = element.get(key)
+            if value is not None and value in names:
+                element.set(key, names[value])
+        if element.text is not None and element.text.strip() in names:
+            element.text = names[element.text.strip()]
+    root.set("name", "robot")
+    return etree.tostring(root)
+
+
 def locate(relative: str, folders: Iterable[Path]) -> Path:
     """The first folder holding `relative`; the first candidate when none does."""
     candidates = [folder / relative for folder in folders]
@@ -494,6 +538,12 @@ def main(argv: list[str] | None = None) -> int:
         "out whole, also as its own part, held-out (fresh))",
     )
     parser.add_argument(
+        "--no-names",
+        action="store_true",
+        help="read each URDF with every link and joint renamed to a neutral id, without its "
+        "SRDF: what identification reads with no word of a part's name",
+    )
+    parser.add_argument(
         "--profile",
         type=Path,
         help="an identification profile to measure instead of the shipped one "
@@ -511,6 +561,11 @@ def main(argv: list[str] | None = None) -> int:
     rules = load_rules(default_rules_path())
 
     def run(urdf: Path, srdf: Path | None) -> Identification:
+        if args.no_names:
+            with tempfile.TemporaryDirectory() as folder:
+                nameless = Path(folder) / urdf.name
+                nameless.write_bytes(without_names(urdf))
+                return identify(nameless, rules=rules, profile=profile)
         return identify(urdf, srdf=srdf, rules=rules, profile=profile)
 
     split = read_split(args.split) if args.split else None

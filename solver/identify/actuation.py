@@ -29,6 +29,7 @@ from collections.abc import Mapping
 
 from solver.identify.hands import gripper_closure, jaws
 from solver.identify.limbs import moved_by, points_a_sensor
+from solver.identify.pose import local_axis
 from solver.identify.readers.urdf import Joint
 from solver.identify.roles import POSED, Role, main_axis
 from solver.identify.tree import JointTree
@@ -36,6 +37,12 @@ from solver.identify.tree import JointTree
 __all__ = ["joint_roles", "with_role"]
 
 _Z_AXIS = 2
+# How far from level an axle may lean (the z part of its unit axis).
+_LEVEL = 0.2
+# The fewest free rollers on an omni or mecanum wheel's rim.
+_ROLLERS = 3
+# As many endless joints level with one link are a wheel-leg walker's legs, not its wheels.
+_WHEEL_LEGS = 6
 # A ball joint written as hinges: one about each axis.
 _BALL_AXES = 3
 # Roles a motor takes from the joints it turns through a coupling.
@@ -54,7 +61,9 @@ def joint_roles(tree: JointTree) -> dict[str, Role]:
         roles[name] = Role(name, "gripper", why)
     for name in _unnamed_wheels(tree, set(roles)):
         roles[name] = Role(
-            name, "wheel", "an unnamed endless leaf below its link, wheels on both sides"
+            name,
+            "wheel",
+            "an unnamed endless joint below its link or on a level axle, wheels on both sides",
         )
     roles.update(tree.reader.casters({n: r for n, r in roles.items() if r.role == "wheel"}))
     roles.update(_ball_casters(tree, roles))
@@ -173,28 +182,108 @@ def with_role(roles: Mapping[str, Role], role: str) -> list[str]:
     return [name for name, r in roles.items() if r.role == role]
 
 
+def _axle(axis: tuple[float, float, float]) -> bool:
+    """A level axis: a wheel's axle (a rotor turns about an upright one)."""
+    return abs(axis[_Z_AXIS]) < _LEVEL
+
+
+def _hangs_freely(tree: JointTree, link: str, known: dict[str, bool]) -> bool:
+    """No joint above ``link`` up to the root is driven (a transmission or ros2_control);
+    every link walked is remembered in ``known``, so many links cost one walk at most."""
+    walked = []
+    current: str | None = link
+    free = True
+    while current is not None and current not in known:
+        walked.append(current)
+        joint = tree.urdf.parent_joint(current)
+        if joint is None:
+            current = None
+        elif joint.movable and joint.name in tree.urdf.controlled_joints:
+            free, current = False, None
+        else:
+            current = joint.parent
+    if current is not None:
+        free = known[current]
+    for name in walked:
+        known[name] = free
+    return free
+
+
+def _rollers_only(tree: JointTree, joint: Joint) -> bool:
+    """Everything that moves below ``joint`` is an endless leaf hanging from its child, three or
+    more of them: the free rollers on the rim of an omni or mecanum wheel."""
+    below = [j for j in tree.urdf.subtree_joints(joint.child) if j.movable]
+    return len(below) >= _ROLLERS and all(
+        j.type == "continuous" and j.parent == joint.child and j.child not in tree.moving_below
+        for j in below
+    )
+
+
+def _on_a_spinning_part(tree: JointTree, joint: Joint, known: dict[str, str | None]) -> bool:
+    """``joint`` hangs from a part an endless joint turns about a level axle: a roller on a
+    wheel's rim, no wheel (a caster's swivel turns about an upright axis and carries one)."""
+    above = moved_by(tree.urdf, joint.parent, known)
+    carrier = tree.urdf.joint(above) if above is not None else None
+    return carrier is not None and carrier.type == "continuous" and _axle(local_axis(carrier))
+
+
 def _unnamed_wheels(tree: JointTree, taken: set[str]) -> list[str]:
     """Unnamed spinning leaves below a link, on both its sides: wheels.
 
     A base whose wheel joints carry no name (``fl_joint`` on ``fl_Link``) still has them where
     wheels are: continuous joints (no limits, they turn for ever) that carry nothing that
-    moves, hanging below the link they are on, at least one on each side of it. Fingers have
-    limits; rotors sit level with or above their body.
+    moves, hanging below the link they are on or turning about a level axis across it (a
+    wheel's axle, whatever the height of the link's origin), at least one on each side of it.
+    Fingers have limits; rotors sit level with or above their body and turn about an upright
+    axis; a propeller on a wing turns about the axis it flies along. Six or more level with a
+    link are a wheel-leg walker's whole-turning legs (:func:`~solver.identify.limbs.find_limbs`).
     """
+    below, level = _wheel_candidates(tree, taken)
+    driven = bool(tree.labels("drive") or tree.labels("track"))
+    for link, joints in level.items():
+        if len(joints) < _WHEEL_LEGS or driven:  # road wheels of a driven body, not legs
+            below.setdefault(link, []).extend(joints)
+    found: list[str] = []
+    apart: list[Joint] = []
+    for joints in below.values():
+        if len(joints) >= 2 and _sides({j.origin[1] for j in joints}):
+            found.extend(j.name for j in joints)
+        else:
+            apart.extend(joints)
+    # One on a caster's swivel, two on a rocker: sides told across the whole body instead,
+    # for those that hang from the body through joints nothing drives (a driven flipper's
+    # sprocket is the flipper's).
+    known: dict[str, bool] = {}
+    apart = [j for j in apart if _hangs_freely(tree, j.parent, known)]
+    if len(apart) >= 2 and _sides({tree.poses.place(j.child)[1] for j in apart}):
+        found.extend(j.name for j in apart)
+    return found
+
+
+def _sides(across: set[float]) -> bool:
+    """Some of these places are on the left (y > 0) and some on the right (y < 0)."""
+    return {y > 0 for y in across if y != 0} == {True, False}
+
+
+def _wheel_candidates(
+    tree: JointTree, taken: set[str]
+) -> tuple[dict[str, list[Joint]], dict[str, list[Joint]]]:
+    """Unnamed endless joints that could be wheels, by the link they hang from: those below it,
+    and those level with or above it turning about a level axle."""
     below: dict[str, list[Joint]] = {}
+    level: dict[str, list[Joint]] = {}
+    known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
     for joint in tree.urdf.joints:
         if (
             joint.type == "continuous"
             and joint.actuated
             and joint.name not in taken
-            and joint.child not in tree.moving_below
+            and (joint.child not in tree.moving_below or _rollers_only(tree, joint))
             and not (tree.parts_of(joint.name) | tree.parts_of(joint.child))
-            and joint.origin[2] < 0
+            and not _on_a_spinning_part(tree, joint, known)
         ):
-            below.setdefault(joint.parent, []).append(joint)
-    found: list[str] = []
-    for joints in below.values():
-        sides = {j.origin[1] > 0 for j in joints if j.origin[1] != 0}
-        if len(joints) >= 2 and sides == {True, False}:
-            found.extend(j.name for j in joints)
-    return found
+            if joint.origin[2] < 0:
+                below.setdefault(joint.parent, []).append(joint)
+            elif _axle(local_axis(joint)):
+                level.setdefault(joint.parent, []).append(joint)
+    return below, level

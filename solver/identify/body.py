@@ -43,6 +43,7 @@ from solver.identify.limbs import (
     five_bars,
     legs_at_the_pelvis,
     legs_by_place,
+    legs_by_reach,
     lone_leg,
     moved_by,
     spine,
@@ -411,7 +412,7 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
             tree, special | parts.grippers, parts.grippers, parts.roles, flying
         )
         parts.limbs = legs_by_place(tree, parts.limbs)
-    parts.limbs = five_bars(tree, legs_at_the_pelvis(tree, parts.limbs))
+    parts.limbs = five_bars(tree, legs_by_reach(tree, legs_at_the_pelvis(tree, parts.limbs)))
     if not parts.roles and not parts.trunk:  # a snake is its one chain, with nothing else
         parts.limbs = spine(tree, parts.limbs)
     elif not parts.roles and not parts.grippers:  # or its chain, with side wheels on it

@@ -60,6 +60,7 @@ __all__ = [
     "five_bars",
     "legs_at_the_pelvis",
     "legs_by_place",
+    "legs_by_reach",
     "lone_leg",
     "sort_limbs",
     "spine",
@@ -80,6 +81,8 @@ _FLYING_ARM_JOINTS = 2
 _MOUNTED = ("wheel", "steering", "caster", "rotor", "thruster")
 # Legs by place: at least this many alike chains of this many joints on one link.
 _WALKER_LEGS = 4
+# How far from a mirror image across the body a pair of hips may be (a share of the width).
+_MIRRORED = 0.25
 _LEG_JOINTS = (2, 4)
 # Six or more such chains that lie flat at rest, each reaching out from the body by this share
 # of its reach, are a walker's legs too (a hexapod drawn with its legs stretched out).
@@ -91,6 +94,9 @@ _WHOLE_TURN_ROWS = 3
 _FULL_TURN = 2 * math.pi - 1e-6
 # A leg ends below where it starts by at least this share of its reach (fingers do not).
 _LEG_DROP = 0.25
+# A biped's leg, known by place alone, hangs nearly straight down in the zero pose.
+_LEG_STRAIGHT = 0.8
+_BIPED_LEGS = 2
 # The two motors of a five-bar leg sit this close (metres), on one line; legs are paired only
 # on a body of at most this many leg chains (pairing compares each with each).
 _FIVE_BAR_GAP = 0.15
@@ -194,6 +200,74 @@ def legs_at_the_pelvis(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     return sort_limbs(tree, [limb for limb in limbs if limb not in pelvis] + legs)
 
 
+def legs_by_reach(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
+    """Two unnamed chains that hang straight down from the bottom of a free body: its legs.
+
+    When no name says which chains are legs (``j0`` .. ``j17``), a biped's still show where
+    they are in the zero pose: a mirrored pair of equal chains (two joints or more, no gripper)
+    that each end below where they start by most of their reach (``_LEG_STRAIGHT``), whose tips
+    are the body's lowest and below its root by half their reach, and that start no higher
+    than any other chain (arms hang from shoulders above the hips). Not on a body bolted to
+    the world (a torso's arms may hang down too), nor when legs were found otherwise.
+    """
+    if any(limb.kind == "leg" for limb in limbs) or _world_root(tree):
+        return limbs
+    placed: dict[int, tuple[Place, Place]] = {}
+    for limb in limbs:
+        first = tree.urdf.joint(limb.joints[0])
+        if first is not None:
+            placed[id(limb)] = (tree.poses.place(first.child), tree.poses.place(limb.tip))
+    pair = _hanging_pair(tree, limbs, placed)
+    if pair is None:
+        return limbs
+    why = "one of two equal unnamed chains hanging straight down from the bottom of the body"
+    legs = {id(limb) for limb in pair}
+    return sort_limbs(
+        tree,
+        [replace(limb, kind="leg", why=why) if id(limb) in legs else limb for limb in limbs],
+    )
+
+
+def _hanging_pair(
+    tree: JointTree, limbs: list[Limb], placed: dict[int, tuple[Place, Place]]
+) -> tuple[Limb, Limb] | None:
+    """The two limbs whose tips are lowest, when they are a biped's legs (``legs_by_reach``)."""
+    candidates = [
+        limb
+        for limb in limbs
+        if limb.kind in ("arm", "other")
+        and not limb.named
+        and not limb.gripper
+        and len(limb.joints) >= _LEG_JOINTS[0]
+        and id(limb) in placed
+    ]
+    if len(candidates) < _BIPED_LEGS:
+        return None
+    lowest = sorted(candidates, key=lambda limb: placed[id(limb)][1][2])
+    one, other = lowest[0], lowest[1]
+    if len(one.joints) != len(other.joints):
+        return None
+    root = tree.poses.place(tree.urdf.root)[2]
+    for limb in (one, other):
+        start, end = placed[id(limb)]
+        reach = distance(start, end)
+        if reach == 0 or start[2] - end[2] < _LEG_STRAIGHT * reach:
+            return None
+        if root - end[2] < reach / 2:
+            return None
+    (a, _), (b, _) = placed[id(one)], placed[id(other)]
+    # Mirrored across the body: one on each side, as far out.
+    if a[1] * b[1] >= 0 or abs(a[1] + b[1]) > _MIRRORED * abs(a[1] - b[1]):
+        return None
+    hips = max(a[2], b[2])
+    others = [
+        placed[id(limb)][0][2] for limb in limbs if limb not in (one, other) and id(limb) in placed
+    ]
+    if any(z < hips for z in others):
+        return None
+    return one, other
+
+
 def legs_by_place(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     """Alike unnamed chains on one link, four or more, on both its sides, each ending below
     where it starts: legs (a hexapod's, a quadruped's whose joints carry no leg names)."""
@@ -210,7 +284,12 @@ def legs_by_place(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
         ):
             # Chains on links fixed to one body hang from that body (a hip bracket each).
             by_base.setdefault((_carrier(tree, limb.base, known), False), []).append(limb)
-        elif limb.kind == "other" and len(limb.joints) == 1 and _turns_whole(tree, limb):
+        elif (
+            limb.kind == "other"
+            and len(limb.joints) == 1
+            and _turns_whole(tree, limb)
+            and not (tree.labels("drive") or tree.labels("track"))  # a driven body's road wheels
+        ):
             by_base.setdefault((_carrier(tree, limb.base, known), True), []).append(limb)
     legs: dict[int, str] = {}
     for (base, _), group in by_base.items():
@@ -249,7 +328,37 @@ def _legs_why(tree: JointTree, base: str, group: list[Limb]) -> str:
             "one of six or more alike chains around one link, each reaching out flat from it"
             " (a walker's legs at rest, by place)"
         )
+    # On a body tracks or a drive plugin move, chains at its corners are flippers.
+    if not (tree.labels("track") or tree.labels("drive")) and _at_corners(tree, base, group):
+        return (
+            "one of alike chains starting in mirrored pairs at the corners of one link (a"
+            " walker's hips, its legs folded at rest: legs by place)"
+        )
     return ""
+
+
+def _at_corners(tree: JointTree, base: str, group: list[Limb]) -> bool:
+    """The chains start at the corners of ``base``: in pairs mirrored across it (left and right
+    at one place along it), spread front to back at least as far as a pair is from the middle.
+    A walker's hips are so, however its legs are folded in the zero pose; a hand's fingers
+    start side by side along one edge of the palm."""
+    if len(group) > _MOST_FIVE_BAR_LEGS:
+        return False  # no walker has so many: a stranger's file is not compared pair by pair
+    centre, placed = tree.poses.place(base), _placed(tree, group)
+    if placed is None:
+        return False
+    starts = [(start[0] - centre[0], start[1] - centre[1]) for start, _ in placed]
+    across = max(abs(y) for _, y in starts)
+    tolerance = _MIRRORED * across
+    if across <= 0:
+        return False
+    for x, y in starts:
+        if abs(y) <= tolerance or not any(
+            abs(x2 - x) <= tolerance and abs(y2 + y) <= tolerance for x2, y2 in starts
+        ):
+            return False
+    along = [x for x, _ in starts]
+    return max(along) - min(along) >= across
 
 
 def _turns_whole(tree: JointTree, limb: Limb) -> bool:

@@ -53,10 +53,12 @@ def test_motor_links_named_rotor_on_wheeled_legs_make_no_uav() -> None:
     )
 
 
-def _four_spinning_leaves(robot: RobotText, height: float, limits: str = "") -> None:
+def _four_spinning_leaves(
+    robot: RobotText, height: float, limits: str = "", axis: str = "0 1 0"
+) -> None:
     for corner, (x, y) in {"fl": (1, 1), "fr": (1, -1), "rl": (-1, 1), "rr": (-1, -1)}.items():
         kind = "revolute" if limits else "continuous"
-        origin = f'<origin xyz="{0.2 * x} {0.15 * y} {height}"/><axis xyz="0 1 0"/>{limits}'
+        origin = f'<origin xyz="{0.2 * x} {0.15 * y} {height}"/><axis xyz="{axis}"/>{limits}'
         robot.joint(f"{corner}_joint", kind, "base_link", f"{corner}_Link", origin)
 
 
@@ -69,12 +71,23 @@ def test_unnamed_endless_joints_below_a_body_on_both_sides_are_wheels() -> None:
     assert result.body.wheels == ("fl_joint", "fr_joint", "rl_joint", "rr_joint")
 
 
-def test_unnamed_spinning_leaves_level_with_the_body_or_limited_are_no_wheels() -> None:
-    level = RobotText("level")
-    _four_spinning_leaves(level, 0.0)
+def test_unnamed_endless_joints_on_level_axles_above_the_origin_are_wheels_too() -> None:
+    # A base whose origin is low (a wheel's axle 3 cm above it): the axles are level across
+    # the body, so these turn as wheels do, whatever the origin's height.
+    robot = RobotText("low_origin")
+    _four_spinning_leaves(robot, 0.03)
+    result = identify_urdf(robot.text())
+    assert result.structure == "UGV"
+    assert result.body is not None
+    assert len(result.body.wheels) == 4
+
+
+def test_unnamed_spinning_leaves_on_upright_axes_or_limited_are_no_wheels() -> None:
+    upright = RobotText("upright")
+    _four_spinning_leaves(upright, 0.0, axis="0 0 1")  # a rotor's axis
     limited = RobotText("limited")
     _four_spinning_leaves(limited, -0.1, '<limit lower="-1" upper="1" effort="1" velocity="1"/>')
-    for robot in (level, limited):
+    for robot in (upright, limited):
         result = identify_urdf(robot.text())
         assert result.body is not None
         assert result.body.wheels == ()
@@ -267,3 +280,77 @@ def test_a_three_axis_camera_gimbal_is_no_ball_caster() -> None:
     parts += ['<gazebo reference="cam"><sensor name="c" type="camera"/></gazebo>']
     found = identify_urdf('<robot name="r">' + "".join(parts) + "</robot>")
     assert not {r.role for r in found.roles if r.joint.startswith("gimbal")} & {"caster"}
+
+
+def kiwi_base() -> RobotText:
+    """Three unnamed rims at 120 degrees, each turning about a level radial axle and carrying
+    six free rollers on endless joints (omni wheels), no name of a wheel anywhere."""
+    robot = RobotText("kiwi")
+    for i, (x, y) in enumerate(((0.2, 0.0), (-0.1, 0.17), (-0.1, -0.17))):
+        place = f"{x} {y} 0"
+        rim = builders.placed(
+            robot, f"rim_{i}", "continuous", robot.root, f"r{i}", xyz=place, axis=place
+        )
+        for k in range(6):
+            builders.placed(
+                robot, f"rim_{i}_r{k}", "continuous", rim, f"r{i}_{k}", xyz="0 0 0.03", axis="0 0 1"
+            )
+    return robot
+
+
+def test_unnamed_rims_carrying_free_rollers_are_omni_wheels_and_the_rollers_passive() -> None:
+    result = identify_urdf(kiwi_base().text())
+    assert result.structure == "UGV"
+    assert result.body is not None
+    assert result.body.wheels == ("rim_0", "rim_1", "rim_2")
+    roles = {role.joint: role.role for role in result.body.roles}
+    assert {roles[f"rim_{i}_r{k}"] for i in range(3) for k in range(6)} == {"passive"}
+    assert {c.motion_control for c in result.motion_controls} == {"Driving"}
+
+
+def base_on_casters() -> RobotText:
+    """Two unnamed driven wheels on the axle line, and four unnamed casters at the corners: a
+    vertical endless swivel each, carrying one endless wheel below it."""
+    robot = RobotText("r")
+    for side, y in (("a", 0.2), ("b", -0.2)):
+        builders.placed(
+            robot,
+            f"d{side}",
+            "continuous",
+            robot.root,
+            f"d{side}_l",
+            xyz=f"0 {y} -0.05",
+            axis="0 1 0",
+        )
+        robot.add(builders.transmission(f"d{side}", "VelocityJointInterface"))
+    for i, (x, y) in enumerate(((0.3, 0.15), (0.3, -0.15), (-0.3, 0.15), (-0.3, -0.15))):
+        swivel = builders.placed(
+            robot, f"s{i}", "continuous", robot.root, f"s{i}_l", xyz=f"{x} {y} -0.02", axis="0 0 1"
+        )
+        builders.placed(
+            robot, f"w{i}", "continuous", swivel, f"w{i}_l", xyz="-0.03 0 -0.05", axis="0 1 0"
+        )
+    return robot
+
+
+def test_unnamed_caster_wheels_one_on_each_swivel_are_told_by_sides_across_the_body() -> None:
+    result = identify_urdf(base_on_casters().text())
+    assert result.structure == "UGV"
+    assert result.body is not None
+    assert set(result.body.wheels) >= {"da", "db"}
+    assert len(result.body.casters) >= 4
+    assert "leg" not in [limb.kind for limb in result.body.limbs]
+
+
+def test_many_road_wheels_of_a_tracked_body_are_wheels_not_a_walkers_legs() -> None:
+    robot = RobotText("r")
+    for i in range(8):
+        x, y = 0.1 * (i % 4) - 0.15, 0.2 if i < 4 else -0.2
+        builders.placed(
+            robot, f"r{i}", "continuous", robot.root, f"r{i}_l", xyz=f"{x} {y} 0", axis="0 1 0"
+        )
+    robot.add(builders.model_plugin("tracks", "libSimpleTrackedVehiclePlugin.so"))
+    result = identify_urdf(robot.text())
+    assert result.structure == "UGV"
+    assert result.body is not None
+    assert "leg" not in [limb.kind for limb in result.body.limbs]

@@ -385,10 +385,13 @@ def test_six_chains_on_brackets_fixed_to_one_body_reaching_out_flat_are_a_hexapo
 
 
 def test_four_chains_reaching_out_flat_are_not_legs_by_that_rule() -> None:
-    # Flat chains are legs only six or more at once: four could be a torso's arms.
+    # Flat chains are legs only six or more at once (four could be a torso's arms); these four
+    # start in mirrored pairs at the body's corners, which is a walker's hips by another rule.
     result = identify_urdf(stretched_hexapod(4).text())
     assert result.body is not None
-    assert "leg" not in [limb.kind for limb in result.body.limbs]
+    legs = [limb for limb in result.body.limbs if limb.kind == "leg"]
+    assert len(legs) == 4
+    assert all("corners" in limb.why and "flat" not in limb.why for limb in legs)
 
 
 def whole_turn_legs(legs: int = 6, *, kind: str = "continuous", axis: str = "0 1 0") -> RobotText:
@@ -669,3 +672,77 @@ def test_two_joints_both_named_as_an_arms_are_a_short_arm_on_a_base() -> None:
     one = builders.ugv()
     one.chain(one.root, ["arm_joint", "tool_joint"])  # one arm word is a label, not a limb
     assert identify_urdf(one.text()).structure == "UGV"
+
+
+def placed_chain(
+    robot: RobotText, parent: str, prefix: str, *, start: str, steps: list[str], axis: str = "0 1 0"
+) -> str:
+    """Unnamed joints ``<prefix>0``.. from ``parent``: the first at ``start``, then each at the
+    offset of ``steps`` from the last."""
+    link = builders.placed(
+        robot, f"{prefix}0", "revolute", parent, f"{prefix}l0", xyz=start, axis=axis
+    )
+    for i, step in enumerate(steps, start=1):
+        link = builders.placed(
+            robot, f"{prefix}{i}", "revolute", link, f"{prefix}l{i}", xyz=step, axis=axis
+        )
+    return link
+
+
+def nameless_humanoid(*, root: str = "pelvis") -> RobotText:
+    """Links and joints named by letters only: from the root two six-joint chains hang 0.6 m
+    straight down, two three-joint chains start 0.4 m higher and reach out sideways."""
+    robot = RobotText("r", root=root)
+    down = ["0 0 -0.1"] * 5
+    for side, y in (("a", 0.1), ("b", -0.1)):
+        placed_chain(robot, root, f"{side}j", start=f"0 {y} -0.05", steps=down)
+    for side, y in (("c", 0.2), ("d", -0.2)):
+        placed_chain(
+            robot, root, f"{side}j", start=f"0 {y} 0.4", steps=[f"0 {y / 2} 0", f"0 {y / 2} 0"]
+        )
+    return robot
+
+
+def test_two_unnamed_chains_hanging_straight_down_from_a_free_body_are_its_legs() -> None:
+    result = identify_urdf(nameless_humanoid().text())
+    assert result.body is not None
+    assert sorted(limb.kind for limb in result.body.limbs) == ["arm", "arm", "leg", "leg"]
+    assert result.structure == "Humanoid"
+    assert any("hanging straight down" in limb.why for limb in result.body.limbs)
+
+
+def test_the_same_chains_on_a_body_bolted_to_the_world_stay_arms() -> None:
+    robot = nameless_humanoid(root="world")
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert "leg" not in [limb.kind for limb in result.body.limbs]
+
+
+def folded_quadruped(*, tracked: bool = False) -> RobotText:
+    """Four unnamed three-joint chains at the corners of a body, each folded flat in the zero
+    pose (the tip back level with the hip); ``tracked`` adds a tracked-vehicle plugin."""
+    robot = RobotText("r")
+    for i, (x, y) in enumerate(((0.3, 0.1), (0.3, -0.1), (-0.3, 0.1), (-0.3, -0.1))):
+        placed_chain(
+            robot,
+            robot.root,
+            f"k{i}_",
+            start=f"{x} {y} 0",
+            steps=[f"0 {y / 2} 0", "-0.2 0 0", "0.2 0 0"],
+        )
+    if tracked:
+        robot.add(builders.model_plugin("tracks", "libSimpleTrackedVehiclePlugin.so"))
+    return robot
+
+
+def test_alike_chains_starting_in_mirrored_pairs_at_a_bodys_corners_are_legs_however_folded() -> (
+    None
+):
+    result = identify_urdf(folded_quadruped().text())
+    assert result.structure == "Quadruped"
+    assert result.body is not None
+    assert "corners" in result.body.limbs[0].why
+    # On a body tracks move, chains at its corners are flippers, not legs.
+    tracked = identify_urdf(folded_quadruped(tracked=True).text())
+    assert tracked.body is not None
+    assert "leg" not in [limb.kind for limb in tracked.body.limbs]
