@@ -59,6 +59,9 @@ _GPS = re.compile(r"gps|navsat|gnss", re.IGNORECASE)
 # rises when its thrusters stop) and works below the surface.
 _HULL_RESERVE = 1.1
 _MOTOR = re.compile(r"(^|[_/\s])motors?([_/\d\s]|$)", re.IGNORECASE)
+# Gazebo's contact and friction settings of a collision (``<surface><friction>``, the contact
+# layer): every simulated body has them, afloat or not; no word of a hull at the surface.
+_CONTACT_SETTINGS = frozenset({"surface", "contact_surface_layer"})
 
 
 def grounded(tree: JointTree, roles: dict[str, Role]) -> bool:
@@ -185,7 +188,9 @@ def surface_hints(tree: JointTree) -> tuple[str, ...]:
     if pattern is None or not (tree.reader.marine):
         return ()
     hints = list(tree.labels("surface"))
-    hints += sorted(tag for tag in tree.urdf.tags if pattern.search(tag))
+    hints += sorted(
+        tag for tag in tree.urdf.tags if pattern.search(tag) and tag not in _CONTACT_SETTINGS
+    )
     below = {id(plugin) for plugin in tree.reader.plugins_of("underwater")}
     for part in ("marine", "thruster", "surface"):
         for plugin in tree.reader.plugins_of(part):

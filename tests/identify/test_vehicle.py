@@ -461,3 +461,18 @@ def test_a_cameras_depth_sensor_frame_puts_no_wheeled_base_under_water() -> None
         )
         expected = "UGV" if frame == "depth_sensor_link" else "Underwater Vehicle"
         assert identify_urdf(text).structure == expected, frame
+
+
+def test_a_collisions_contact_settings_say_nothing_of_a_hull_at_the_surface() -> None:
+    # Gazebo's <surface> (friction) and <contact_surface_layer> are on every simulated body:
+    # a submersible with thrusters and a DVL frame that carries them still dives.
+    robot = thrusters_by_name()
+    robot.joint("dvl_joint", "fixed", robot.root, "dvl_link")
+    robot.add(
+        '<gazebo reference="base_link"><collision><surface><friction><ode><mu>1</mu></ode>'
+        "</friction></surface></collision><contact_surface_layer>0.001</contact_surface_layer>"
+        "</gazebo>"
+    )
+    result = identify_urdf(robot.text())
+    assert result.structure == "Underwater Vehicle"
+    assert not any(line.startswith("floats at the surface") for line in result.evidence)
