@@ -43,6 +43,8 @@ _LEVEL = 0.2
 _ROLLERS = 3
 # As many endless joints level with one link are a wheel-leg walker's legs, not its wheels.
 _WHEEL_LEGS = 6
+# Unnamed upright spinning leaves on one link are rotors from this many (a tricopter's).
+_FEWEST_UNNAMED_ROTORS = 3
 # A ball joint written as hinges: one about each axis.
 _BALL_AXES = 3
 # Roles a motor takes from the joints it turns through a coupling.
@@ -64,6 +66,10 @@ def joint_roles(tree: JointTree) -> dict[str, Role]:
             name,
             "wheel",
             "an unnamed endless joint below its link or on a level axle, wheels on both sides",
+        )
+    for name in _unnamed_rotors(tree, set(roles)):
+        roles[name] = Role(
+            name, "rotor", "an unnamed endless leaf on an upright axis, with others all round"
         )
     roles.update(tree.reader.casters({n: r for n, r in roles.items() if r.role == "wheel"}))
     roles.update(_ball_casters(tree, roles))
@@ -260,8 +266,36 @@ def _unnamed_wheels(tree: JointTree, taken: set[str]) -> list[str]:
     return found
 
 
+def _unnamed_rotors(tree: JointTree, taken: set[str]) -> list[str]:
+    """Unnamed endless leaves turning about upright axes, three or more on one link and all
+    round it (before and behind, left and right): a multirotor's propellers. A wheel turns about
+    a level axle, a caster's swivel carries its wheel, a spinning lidar is one."""
+    around: dict[str, list[Joint]] = {}
+    known: dict[str, str | None] = {}
+    for joint in tree.urdf.joints:
+        if (
+            joint.type == "continuous"
+            and joint.actuated
+            and joint.name not in taken
+            and joint.child not in tree.moving_below
+            and not (tree.parts_of(joint.name) | tree.parts_of(joint.child))
+            and abs(local_axis(joint)[_Z_AXIS]) >= 1 - _LEVEL
+            and not _on_a_spinning_part(tree, joint, known)
+        ):
+            around.setdefault(joint.parent, []).append(joint)
+    found: list[str] = []
+    for joints in around.values():
+        if (
+            len(joints) >= _FEWEST_UNNAMED_ROTORS
+            and _sides({j.origin[0] for j in joints})
+            and _sides({j.origin[1] for j in joints})
+        ):
+            found.extend(j.name for j in joints)
+    return found
+
+
 def _sides(across: set[float]) -> bool:
-    """Some of these places are on the left (y > 0) and some on the right (y < 0)."""
+    """Some of these places are on one side of a link's origin (> 0) and some on the other."""
     return {y > 0 for y in across if y != 0} == {True, False}
 
 

@@ -354,3 +354,17 @@ def test_many_road_wheels_of_a_tracked_body_are_wheels_not_a_walkers_legs() -> N
     assert result.structure == "UGV"
     assert result.body is not None
     assert "leg" not in [limb.kind for limb in result.body.limbs]
+
+
+def test_unnamed_endless_leaves_on_upright_axes_all_round_a_body_are_its_rotors() -> None:
+    robot = RobotText("r")
+    _four_spinning_leaves(robot, 0.02, axis="0 0 1")
+    result = identify_urdf(robot.text())
+    assert result.structure == "UAV"
+    assert result.body is not None
+    assert len(result.body.rotors) == 4
+    # Three on one side of the body are no rotors all round it (a row of spinning tools).
+    row = RobotText("row")
+    for i in range(3):
+        builders.placed(row, f"s{i}", "continuous", row.root, f"s{i}_l", xyz=f"{0.1 * i} 0.1 0.02")
+    assert identify_urdf(row.text()).structure != "UAV"
