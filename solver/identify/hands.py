@@ -55,11 +55,26 @@ def jaws(tree: JointTree, taken: set[str]) -> dict[str, str]:
             len(pair) == 2
             and _side_by_side(pair)
             and not any(_named_otherwise(tree, j.name) for j in pair)
-            and _ends_a_chain(tree, link)
         ):
-            why = f"one of two jaws side by side at the end of a chain ({link})"
+            if _ends_a_chain(tree, link):
+                why = f"one of two jaws side by side at the end of a chain ({link})"
+            elif _only_motions(tree, pair):
+                why = f"one of two jaws side by side, the body's only motions ({link})"
+            else:
+                continue
             found.update(dict.fromkeys((j.name for j in pair), why))
     return found
+
+
+def _only_motions(tree: JointTree, pair: list[Joint]) -> bool:
+    """Every movable joint of the body is one of ``pair`` or follows one (a mimic joint): a
+    gripper on its own, its two jaws each driven."""
+    names = {joint.name for joint in pair}
+    return all(
+        joint.name in names or tree.couplings.driver(joint.name) in names
+        for joint in tree.urdf.joints
+        if joint.movable
+    )
 
 
 def _named_otherwise(tree: JointTree, name: str) -> bool:

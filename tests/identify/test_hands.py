@@ -192,3 +192,40 @@ def test_fingers_that_spread_on_a_joint_of_their_own_before_they_branch_make_a_h
 
 def test_two_spreading_chains_on_one_palm_are_no_hand() -> None:
     assert identify_urdf(spread_hand(2).text()).structure != "Hand"
+
+
+def sliding_jaws(*, third: bool = False) -> RobotText:
+    """Two unnamed prismatic joints on the root at one place, sliding opposite ways, each with
+    its own drive (no mimic); ``third`` adds an unnamed hinge elsewhere on the body."""
+    robot = RobotText("r")
+    builders.placed(robot, "p0", "prismatic", robot.root, "a", axis="1 0 0")
+    builders.placed(robot, "p1", "prismatic", robot.root, "b", rpy="0 0 3.14159", axis="-1 0 0")
+    if third:
+        builders.placed(robot, "h0", "revolute", robot.root, "c", xyz="0 0 0.3", axis="0 1 0")
+    return robot
+
+
+def test_two_alike_jaws_that_are_a_bodys_only_motions_are_a_gripper_on_its_own() -> None:
+    result = identify_urdf(sliding_jaws().text())
+    assert result.structure == "Gripper"
+    assert result.body is not None
+    assert any("the body's only motions" in role.evidence for role in result.body.roles)
+    # Beside another motion, two joints side by side on the body are no jaws by that rule.
+    assert identify_urdf(sliding_jaws(third=True).text()).structure != "Gripper"
+
+
+def test_a_parallel_linkage_of_four_knuckles_closed_by_one_motion_is_a_gripper() -> None:
+    robot = RobotText("r")
+    builders.placed(robot, "k0", "revolute", robot.root, "k0_l", xyz="0 -0.017 0.12", axis="-1 0 0")
+    for name, y, z in (("k1", -0.008, 0.14), ("k2", 0.017, 0.12), ("k3", 0.008, 0.14)):
+        builders.placed(
+            robot,
+            name,
+            "revolute",
+            robot.root,
+            f"{name}_l",
+            xyz=f"0 {y} {z}",
+            axis="1 0 0",
+            extra='<mimic joint="k0"/>',
+        )
+    assert identify_urdf(robot.text()).structure == "Gripper"
