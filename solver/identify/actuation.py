@@ -28,7 +28,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 from solver.identify.hands import gripper_closure, jaws
-from solver.identify.limbs import moved_by, points_a_sensor
+from solver.identify.limbs import moved_by, nearest_above, points_a_sensor
 from solver.identify.pose import local_axis
 from solver.identify.readers.urdf import Joint
 from solver.identify.roles import POSED, Role, main_axis
@@ -193,26 +193,10 @@ def _axle(axis: tuple[float, float, float]) -> bool:
     return abs(axis[_Z_AXIS]) < _LEVEL
 
 
-def _hangs_freely(tree: JointTree, link: str, known: dict[str, bool]) -> bool:
-    """No joint above ``link`` up to the root is driven (a transmission or ros2_control);
-    every link walked is remembered in ``known``, so many links cost one walk at most."""
-    walked = []
-    current: str | None = link
-    free = True
-    while current is not None and current not in known:
-        walked.append(current)
-        joint = tree.urdf.parent_joint(current)
-        if joint is None:
-            current = None
-        elif joint.movable and joint.name in tree.urdf.controlled_joints:
-            free, current = False, None
-        else:
-            current = joint.parent
-    if current is not None:
-        free = known[current]
-    for name in walked:
-        known[name] = free
-    return free
+def _hangs_freely(tree: JointTree, link: str, known: dict[str, str | None]) -> bool:
+    """No joint above ``link`` up to the root is driven (a transmission or ros2_control)."""
+    driven = tree.urdf.controlled_joints
+    return nearest_above(tree.urdf, link, known, lambda j: j.movable and j.name in driven) is None
 
 
 def _rollers_only(tree: JointTree, joint: Joint) -> bool:
@@ -259,7 +243,7 @@ def _unnamed_wheels(tree: JointTree, taken: set[str]) -> list[str]:
     # One on a caster's swivel, two on a rocker: sides told across the whole body instead,
     # for those that hang from the body through joints nothing drives (a driven flipper's
     # sprocket is the flipper's).
-    known: dict[str, bool] = {}
+    known: dict[str, str | None] = {}  # link -> the nearest driven joint above it
     apart = [j for j in apart if _hangs_freely(tree, j.parent, known)]
     if len(apart) >= 2 and _sides({tree.poses.place(j.child)[1] for j in apart}):
         found.extend(j.name for j in apart)

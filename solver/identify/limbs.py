@@ -43,6 +43,7 @@ from __future__ import annotations
 
 import math
 from collections import deque
+from collections.abc import Callable
 from dataclasses import dataclass, replace
 from itertools import islice, pairwise
 
@@ -651,13 +652,22 @@ def moved_by(urdf: Urdf, link: str, known: dict[str, str | None]) -> str | None:
     """The nearest movable joint above ``link`` (None at the root, or when only fixed joints
     lead up to it); every link walked is remembered in ``known``, so many links cost one walk
     of the tree at most."""
+    return nearest_above(urdf, link, known, lambda joint: joint.movable)
+
+
+def nearest_above(
+    urdf: Urdf, link: str, known: dict[str, str | None], wanted: Callable[[Joint], bool]
+) -> str | None:
+    """The nearest joint above ``link`` that is ``wanted`` (None when none is, up to the root);
+    every link walked is remembered in ``known`` (one ``known`` per ``wanted``), so many links
+    cost one walk of the tree at most."""
     walked = []
     found: str | None = None
     current: str | None = link
     while current is not None and current not in known:
         walked.append(current)
         joint = urdf.parent_joint(current)
-        if joint is None or joint.movable:
+        if joint is None or wanted(joint):
             found = None if joint is None else joint.name
             current = None
         else:
