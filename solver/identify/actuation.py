@@ -194,9 +194,15 @@ def _axle(axis: tuple[float, float, float]) -> bool:
 
 
 def _hangs_freely(tree: JointTree, link: str, known: dict[str, str | None]) -> bool:
-    """No joint above ``link`` up to the root is driven (a transmission or ros2_control)."""
+    """No joint above ``link`` up to the root is driven (a transmission or ros2_control) but
+    about an upright axis (steering)."""
     driven = tree.urdf.controlled_joints
-    return nearest_above(tree.urdf, link, known, lambda j: j.movable and j.name in driven) is None
+
+    def lifts(joint: Joint) -> bool:
+        upright = abs(local_axis(joint)[_Z_AXIS]) >= 1 - _LEVEL
+        return joint.movable and joint.name in driven and not upright
+
+    return nearest_above(tree.urdf, link, known, lifts) is None
 
 
 def _rollers_only(tree: JointTree, joint: Joint) -> bool:
@@ -240,9 +246,9 @@ def _unnamed_wheels(tree: JointTree, taken: set[str]) -> list[str]:
             found.extend(j.name for j in joints)
         else:
             apart.extend(joints)
-    # One on a caster's swivel, two on a rocker: sides told across the whole body instead,
-    # for those that hang from the body through joints nothing drives (a driven flipper's
-    # sprocket is the flipper's).
+    # One on a caster's swivel or a steering knuckle, two on a rocker: sides told across the
+    # whole body instead, for those that hang from the body through no driven joint but a
+    # steering one (a driven flipper's sprocket is the flipper's).
     known: dict[str, str | None] = {}  # link -> the nearest driven joint above it
     apart = [j for j in apart if _hangs_freely(tree, j.parent, known)]
     if len(apart) >= 2 and _sides({tree.poses.place(j.child)[1] for j in apart}):

@@ -368,3 +368,40 @@ def test_unnamed_endless_leaves_on_upright_axes_all_round_a_body_are_its_rotors(
     for i in range(3):
         builders.placed(row, f"s{i}", "continuous", row.root, f"s{i}_l", xyz=f"{0.1 * i} 0.1 0.02")
     assert identify_urdf(row.text()).structure != "UAV"
+
+
+def test_unnamed_wheels_on_driven_steering_knuckles_are_wheels_and_a_flippers_are_not() -> None:
+    # A car: two unnamed rear wheels on the body, two front ones each on its own driven
+    # knuckle turning about an upright axis (steering). Driven joints about level axes instead
+    # (flippers) carry their sprockets, no wheels of the body.
+    car = RobotText("car")
+    for side, y in (("a", 0.2), ("b", -0.2)):
+        builders.placed(
+            car,
+            f"r{side}",
+            "continuous",
+            car.root,
+            f"r{side}_l",
+            xyz=f"-0.3 {y} -0.05",
+            axis="0 1 0",
+        )
+        knuckle = builders.placed(
+            car, f"k{side}", "revolute", car.root, f"k{side}_l", xyz=f"0.3 {y} 0", axis="0 0 1"
+        )
+        car.add(builders.transmission(f"k{side}"))
+        builders.placed(
+            car, f"f{side}", "continuous", knuckle, f"f{side}_l", xyz="0 0 -0.05", axis="0 1 0"
+        )
+    result = identify_urdf(car.text())
+    assert result.structure == "UGV"
+    assert result.body is not None
+    roles = {role.joint: role.role for role in result.body.roles}
+    # The front wheels roll under their steering (no transmission of their own): casters'.
+    assert [roles[name] for name in ("ra", "rb", "ka", "kb", "fa", "fb")] == (
+        ["wheel", "wheel", "steering", "steering", "caster", "caster"]
+    )
+    flippers = car.text().replace('axis xyz="0 0 1"', 'axis xyz="0 1 0"')
+    body = identify_urdf(flippers).body
+    assert body is not None
+    roles = {role.joint: role.role for role in body.roles}
+    assert roles["fa"] not in ("wheel", "caster")
