@@ -41,6 +41,7 @@ from solver.identify.limbs import (
     bolted_chain,
     find_limbs,
     five_bars,
+    flippers,
     legs_at_the_pelvis,
     legs_by_place,
     legs_by_reach,
@@ -413,6 +414,7 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
         )
         parts.limbs = legs_by_place(tree, parts.limbs)
     parts.limbs = five_bars(tree, legs_by_reach(tree, legs_at_the_pelvis(tree, parts.limbs)))
+    parts.limbs = flippers(tree, parts.limbs)
     if not parts.roles and not parts.trunk:  # a snake is its one chain, with nothing else
         parts.limbs = spine(tree, parts.limbs)
     elif not parts.roles and not parts.grippers:  # or its chain, with side wheels on it

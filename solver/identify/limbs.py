@@ -59,6 +59,7 @@ __all__ = [
     "bolted_chain",
     "find_limbs",
     "five_bars",
+    "flippers",
     "legs_at_the_pelvis",
     "legs_by_place",
     "legs_by_reach",
@@ -272,6 +273,8 @@ def _hanging_pair(
 def legs_by_place(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     """Alike unnamed chains on one link, four or more, on both its sides, each ending below
     where it starts: legs (a hexapod's, a quadruped's whose joints carry no leg names)."""
+    if _rolls(tree):
+        return limbs  # chains on a body tracks or a drive plugin move are flippers, road wheels
     # By the body carrying them, and whether they are one-joint chains that turn whole (a
     # wheel-leg walker's) or not: a spinning leaf beside a hexapod's legs is no leg of it.
     by_base: dict[tuple[str, bool], list[Limb]] = {}
@@ -285,12 +288,7 @@ def legs_by_place(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
         ):
             # Chains on links fixed to one body hang from that body (a hip bracket each).
             by_base.setdefault((_carrier(tree, limb.base, known), False), []).append(limb)
-        elif (
-            limb.kind == "other"
-            and len(limb.joints) == 1
-            and _turns_whole(tree, limb)
-            and not (tree.labels("drive") or tree.labels("track"))  # a driven body's road wheels
-        ):
+        elif limb.kind == "other" and len(limb.joints) == 1 and _turns_whole(tree, limb):
             by_base.setdefault((_carrier(tree, limb.base, known), True), []).append(limb)
     legs: dict[int, str] = {}
     for (base, _), group in by_base.items():
@@ -329,13 +327,33 @@ def _legs_why(tree: JointTree, base: str, group: list[Limb]) -> str:
             "one of six or more alike chains around one link, each reaching out flat from it"
             " (a walker's legs at rest, by place)"
         )
-    # On a body tracks or a drive plugin move, chains at its corners are flippers.
-    if not (tree.labels("track") or tree.labels("drive")) and _at_corners(tree, base, group):
+    if _at_corners(tree, base, group):
         return (
             "one of alike chains starting in mirrored pairs at the corners of one link (a"
             " walker's hips, its legs folded at rest: legs by place)"
         )
     return ""
+
+
+def _rolls(tree: JointTree) -> bool:
+    """Tracks or a drive plugin move the body."""
+    return bool(tree.labels("drive")) or _tracked(tree)
+
+
+def _tracked(tree: JointTree) -> bool:
+    """Tracks move the body: a track plugin, or track-named joints."""
+    return bool(tree.labels("track")) or any(
+        tree.matches("track", joint) for joint in tree.urdf.joints if joint.movable
+    )
+
+
+def flippers(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
+    """On a body tracks move, chains read as legs (by a corner's name: ``front_left_flipper``)
+    are its flippers: they tilt track segments, nothing walks."""
+    if not any(limb.kind == "leg" for limb in limbs) or not _tracked(tree):
+        return limbs
+    why = "a flipper: a chain on a body that tracks move"
+    return [replace(limb, kind="other", why=why) if limb.kind == "leg" else limb for limb in limbs]
 
 
 def _at_corners(tree: JointTree, base: str, group: list[Limb]) -> bool:

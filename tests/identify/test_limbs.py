@@ -746,3 +746,43 @@ def test_alike_chains_starting_in_mirrored_pairs_at_a_bodys_corners_are_legs_how
     tracked = identify_urdf(folded_quadruped(tracked=True).text())
     assert tracked.body is not None
     assert "leg" not in [limb.kind for limb in tracked.body.limbs]
+
+
+def test_corner_named_chains_on_a_body_tracks_move_are_flippers_not_legs() -> None:
+    # Two crawler joints (track names) and four two-joint chains named by their corner
+    # (front_left_flipper ..), each a flipper and its sprocket: a tracked base.
+    robot = RobotText("crawler")
+    for side, y in (("left", 0.1), ("right", -0.1)):
+        builders.placed(
+            robot,
+            f"{side}_crawler_joint",
+            "continuous",
+            robot.root,
+            f"{side}_crawler",
+            xyz=f"0 {y} 0",
+            axis="0 1 0",
+        )
+        for end, x in (("front", 0.2), ("rear", -0.2)):
+            flipper = builders.placed(
+                robot,
+                f"{end}_{side}_flipper_joint",
+                "revolute",
+                robot.root,
+                f"{end}_{side}_flipper",
+                xyz=f"{x} {y * 1.6} 0",
+                axis="0 1 0",
+            )
+            builders.placed(
+                robot,
+                f"{end}_{side}_sprocket",
+                "continuous",
+                flipper,
+                f"{end}_{side}_sprocket_l",
+                xyz="0.2 0 0",
+                axis="0 1 0",
+            )
+    result = identify_urdf(robot.text())
+    assert result.structure == "UGV"
+    assert result.body is not None
+    assert "leg" not in [limb.kind for limb in result.body.limbs]
+    assert any(limb.why.startswith("a flipper") for limb in result.body.limbs)
