@@ -48,7 +48,7 @@ after that), measured blind once and moved on 2026-11-29, those of ``tools/fresh
 ``tools/fresh_set_10`` (built blind after that), measured blind once and moved on 2026-11-29.
 
 The blind set is never listed: ``tools/measure_identification.py`` holds out whole, by its set,
-the highest-numbered ``tools/fresh_set_N`` this file does not list (now ``tools/fresh_set_11``, when there is one),
+the highest-numbered ``tools/fresh_set_N`` this file does not list (now ``tools/fresh_set_11``),
 so this file need not change (nor that set be read) while it is being built. Moving a fresh set
 to development is adding it to ``MOVED_SETS`` and re-making this file.
 
