@@ -54,7 +54,8 @@ With ``--no-names`` each URDF is read with every link and joint renamed to a neu
 references and plugin parameters) and the robot named ``robot``, and without its SRDF (which
 names groups by them): what identification reads from what the joints do and what the plugins
 and sensors are, with no word of a part's name (a CAD export's ``Revolute_3``, a team's own
-language). Sensor names, plugin files and everything else stay.
+language). A sensor's or a plugin's name that is also a link's or a joint's is renamed with it;
+plugin files and everything else stay.
 
 The sets are read in place and never copied. A set with no truth.csv is reported and skipped.
 """
@@ -322,7 +323,7 @@ Runner = Callable[[Path, "Path | None"], Identification]
 
 # The attributes that name a link or a joint (the tree, mimic, transmissions, Gazebo references).
 _NAMING = ("name", "link", "joint", "reference")
-_NUMBER = re.compile(r"[-+]?[0-9.eE+-]+")
+_NUMBER = re.compile(r"[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?")
 
 
 def without_names(urdf: Path) -> bytes:

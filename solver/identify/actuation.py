@@ -208,11 +208,15 @@ def _hangs_freely(tree: JointTree, link: str, known: dict[str, str | None]) -> b
 def _rollers_only(tree: JointTree, joint: Joint) -> bool:
     """Everything that moves below ``joint`` is an endless leaf hanging from its child, three or
     more of them: the free rollers on the rim of an omni or mecanum wheel."""
-    below = [j for j in tree.urdf.subtree_joints(joint.child) if j.movable]
-    return len(below) >= _ROLLERS and all(
-        j.type == "continuous" and j.parent == joint.child and j.child not in tree.moving_below
-        for j in below
-    )
+    rollers = 0
+    for below in tree.urdf.children(joint.child):
+        if below.child in tree.moving_below:
+            return False  # something moves deeper: no rim of rollers
+        if below.movable:
+            if below.type != "continuous":
+                return False
+            rollers += 1
+    return rollers >= _ROLLERS
 
 
 def _on_a_spinning_part(tree: JointTree, joint: Joint, known: dict[str, str | None]) -> bool:

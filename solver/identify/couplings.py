@@ -32,8 +32,9 @@ from solver.identify.readers.urdf import Joint, Urdf
 
 __all__ = ["Couplings", "couplings", "jaw_groups"]
 
-# Jaws side by side come in twos (a parallel gripper) or threes (a three-jaw chuck).
-_MOST_JAWS = 4  # two jaws of a parallel linkage: an inner and an outer knuckle each
+# Jaws side by side come in twos (a parallel gripper), threes (a three-jaw chuck) or fours (two
+# jaws of a parallel linkage, an inner and an outer knuckle each).
+_MOST_JAWS = 4
 # How far up a follower is looked at for the chain it sits in (a knee is a joint or two below
 # the hip its crank turns beside): bounds the walk on a hostile description.
 _MOST_STEPS_UP = 16

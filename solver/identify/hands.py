@@ -39,6 +39,13 @@ def jaws(tree: JointTree, taken: set[str]) -> dict[str, str]:
             driver = tree.couplings.driver(group[0])
             why = f"one motion ({driver}, {len(group) - 1} mimic joint(s)) closes jaws side by side"
             found.update(dict.fromkeys(group, why))
+    found.update(_jaw_pairs(tree, taken | set(found)))
+    return found
+
+
+def _jaw_pairs(tree: JointTree, taken: set[str]) -> dict[str, str]:
+    """Two limited leaf joints side by side on one link, each driven on its own: jaws at the
+    end of a chain, or a gripper's whole body (its only motions)."""
     by_parent: dict[str, list[Joint]] = {}
     for joint in tree.urdf.joints:
         if (
@@ -47,34 +54,32 @@ def jaws(tree: JointTree, taken: set[str]) -> dict[str, str]:
             and joint.lower is not None
             and joint.child not in tree.moving_below
             and joint.name not in taken
-            and joint.name not in found
         ):
             by_parent.setdefault(joint.parent, []).append(joint)
+    motions = [joint.name for joint in tree.urdf.joints if joint.movable]
+    found: dict[str, str] = {}
     for link, pair in by_parent.items():
         if (
-            len(pair) == 2
-            and _side_by_side(pair)
-            and not any(_named_otherwise(tree, j.name) for j in pair)
+            len(pair) != 2
+            or not _side_by_side(pair)
+            or any(_named_otherwise(tree, j.name) for j in pair)
         ):
-            if _ends_a_chain(tree, link):
-                why = f"one of two jaws side by side at the end of a chain ({link})"
-            elif _only_motions(tree, pair):
-                why = f"one of two jaws side by side, the body's only motions ({link})"
-            else:
-                continue
-            found.update(dict.fromkeys((j.name for j in pair), why))
+            continue
+        if _ends_a_chain(tree, link):
+            why = f"one of two jaws side by side at the end of a chain ({link})"
+        elif _only_motions(tree, pair, motions):
+            why = f"one of two jaws side by side, the body's only motions ({link})"
+        else:
+            continue
+        found.update(dict.fromkeys((j.name for j in pair), why))
     return found
 
 
-def _only_motions(tree: JointTree, pair: list[Joint]) -> bool:
-    """Every movable joint of the body is one of ``pair`` or follows one (a mimic joint): a
-    gripper on its own, its two jaws each driven."""
+def _only_motions(tree: JointTree, pair: list[Joint], motions: list[str]) -> bool:
+    """Every movable joint of the body (``motions``) is one of ``pair`` or follows one (a mimic
+    joint): a gripper on its own, its two jaws each driven. Stops at the first other joint."""
     names = {joint.name for joint in pair}
-    return all(
-        joint.name in names or tree.couplings.driver(joint.name) in names
-        for joint in tree.urdf.joints
-        if joint.movable
-    )
+    return all(name in names or tree.couplings.driver(name) in names for name in motions)
 
 
 def _named_otherwise(tree: JointTree, name: str) -> bool:

@@ -72,6 +72,7 @@ __all__ = [
 
 # A spherical (ball) joint is outside the URDF spec but real files have it: a shoulder, a hip.
 _LIMB_JOINTS = ("revolute", "continuous", "prismatic", "spherical")
+_TURNING = ("revolute", "continuous")
 LIMB_KINDS = ("leg", "arm", "head")
 # An unnamed pair of chains on the root this long, beside named arms higher up, are legs.
 _LEG_BY_PLACE_JOINTS = 5
@@ -583,7 +584,7 @@ def spine(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     # A snake may have a head; arm or leg names say it is something else. Its modules turn: a
     # chain with a slide in it is an arm on a rail or a lift.
     named = _named_limb(tree, joints)
-    turning = all(j.type in ("revolute", "continuous") for j in joints)
+    turning = all(j.type in _TURNING for j in joints)
     if named or not turning or not _modules(tree, joints):
         return limbs
     if _alternating(tree, joints):
@@ -715,7 +716,7 @@ def _alternating(tree: JointTree, joints: list[Joint]) -> bool:
 
 def _planar(tree: JointTree, joints: list[Joint]) -> bool:
     axes = [tree.poses.axis(joint) for joint in joints]
-    return all(joint.type in ("revolute", "continuous") for joint in joints) and all(
+    return all(joint.type in _TURNING for joint in joints) and all(
         parallel(axes[0], axis) for axis in axes[1:]
     )
 

@@ -84,7 +84,8 @@ def perpendicular(one: Vector, other: Vector) -> bool:
 
 
 def distance(one: Vector, other: Vector) -> float:
-    return math.sqrt(sum((a - b) ** 2 for a, b in zip(one, other, strict=True)))
+    """How far apart two places are; ``inf`` for places too far out to square (1e200)."""
+    return math.dist(one, other)
 
 
 class Poses:

@@ -29,6 +29,7 @@ Not here: chains and limbs (:mod:`solver.identify.limbs`), the structure
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 from solver.identify.profile import PartMatcher, Profile
 from solver.identify.readers.urdf import Joint, PluginTag, Urdf
@@ -93,11 +94,11 @@ class RoleReader:
         ]
         if len(leaves) < self.profile.limb("min_rotors"):
             return ()
-        still = self._still_links()
-        found = tuple(joint.child for joint in leaves if joint.parent in still)
+        found = tuple(joint.child for joint in leaves if joint.parent in self.still)
         return found if len(found) >= self.profile.limb("min_rotors") else ()
 
-    def _still_links(self) -> set[str]:
+    @cached_property
+    def still(self) -> frozenset[str]:
         """Links no movable joint moves (the root's part), in one walk from the root."""
         still = {self.urdf.root}
         stack = [self.urdf.root]
@@ -106,7 +107,7 @@ class RoleReader:
                 if not joint.movable:
                     still.add(joint.child)
                     stack.append(joint.child)
-        return still
+        return frozenset(still)
 
     def _plugin_parts(self, plugin: PluginTag) -> frozenset[str]:
         found = set()
@@ -222,12 +223,7 @@ class RoleReader:
 
     def _moved(self, link: str) -> bool:
         """Some movable joint above ``link`` moves it (it is not on the base)."""
-        joint = self.urdf.parent_joint(link)
-        while joint is not None:
-            if joint.movable:
-                return True
-            joint = self.urdf.parent_joint(joint.parent)
-        return False
+        return link not in self.still
 
     def _named(self, part: str, joint: Joint) -> str:
         where = joint.name if part in self.parts_of(joint.name) else f"its link {joint.child}"

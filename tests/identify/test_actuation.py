@@ -405,3 +405,28 @@ def test_unnamed_wheels_on_driven_steering_knuckles_are_wheels_and_a_flippers_ar
     assert body is not None
     roles = {role.joint: role.role for role in body.roles}
     assert roles["fa"] not in ("wheel", "caster")
+
+
+def test_a_chain_of_20000_endless_joints_is_read_in_one_walk() -> None:
+    # Whether each joint carries only rollers is told from its own child's joints, not the
+    # whole subtree below it (which took a minute on such a chain).
+    robot = RobotText("r")
+    link = robot.root
+    for i in range(20_000):
+        link = builders.placed(robot, f"j{i}", "continuous", link, f"c{i}", axis="0 1 0")
+    assert identify_urdf(robot.text()).structure
+
+
+def test_10000_casters_under_a_deep_fixed_chain_are_placed_in_one_walk() -> None:
+    # Whether a swivel is on the still base is one set, made once, not a walk up per wheel.
+    robot = RobotText("r")
+    link = robot.root
+    for i in range(20_000):
+        link = robot.fixed(link, f"f{i}")
+    for i in range(10_000):
+        y = 0.1 if i % 2 else -0.1
+        swivel = builders.placed(robot, f"s{i}", "continuous", link, f"s{i}_l", xyz=f"0 {y} -0.1")
+        builders.placed(
+            robot, f"w{i}", "continuous", swivel, f"w{i}_l", xyz="0 0 -0.1", axis="0 1 0"
+        )
+    assert identify_urdf(robot.text()).structure == "UGV"

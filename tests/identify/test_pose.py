@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import pytest
 
+from solver.identify import identify_urdf
 from solver.identify.pose import Poses, distance, parallel, perpendicular
 from solver.identify.readers.urdf import parse_urdf
 from tests.identify import builders
@@ -53,3 +54,18 @@ def test_axes_are_told_parallel_or_square() -> None:
 def test_a_link_no_joint_reaches_sits_at_the_root() -> None:
     poses = poses_of(builders.snake(2))
     assert poses.place("nowhere") == (0.0, 0.0, 0.0)
+
+
+def test_places_too_far_out_to_square_are_measured_not_an_error() -> None:
+    # A stranger's origin of 1e200 m is a finite number the reader takes; squaring it overflows.
+    assert distance((0.0, 0.0, 0.0), (0.0, 3e200, -4e200)) == pytest.approx(5e200)
+
+
+def test_a_chain_hanging_from_an_origin_far_out_is_read_not_a_traceback() -> None:
+    robot = RobotText("r", root="pelvis")
+    for side, y in (("a", 0.1), ("b", -0.1)):
+        link = builders.placed(
+            robot, f"{side}0", "revolute", "pelvis", f"{side}l0", xyz=f"0 {y} -1e200"
+        )
+        builders.placed(robot, f"{side}1", "revolute", link, f"{side}l1", xyz="0 0 -1e200")
+    assert identify_urdf(robot.text()).structure
