@@ -25,7 +25,7 @@ Not here: the roles of the chains the other joints form (:mod:`solver.identify.l
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Iterator, Mapping
 
 from solver.identify.hands import gripper_closure, jaws
 from solver.identify.limbs import moved_by, nearest_above, points_a_sensor
@@ -265,17 +265,8 @@ def _unnamed_rotors(tree: JointTree, taken: set[str]) -> list[str]:
     round it (before and behind, left and right): a multirotor's propellers. A wheel turns about
     a level axle, a caster's swivel carries its wheel, a spinning lidar is one."""
     around: dict[str, list[Joint]] = {}
-    known: dict[str, str | None] = {}
-    for joint in tree.urdf.joints:
-        if (
-            joint.type == "continuous"
-            and joint.actuated
-            and joint.name not in taken
-            and joint.child not in tree.moving_below
-            and not (tree.parts_of(joint.name) | tree.parts_of(joint.child))
-            and abs(local_axis(joint)[_Z_AXIS]) >= 1 - _LEVEL
-            and not _on_a_spinning_part(tree, joint, known)
-        ):
+    for joint in _unnamed_spinners(tree, taken):
+        if joint.child not in tree.moving_below and abs(local_axis(joint)[_Z_AXIS]) >= 1 - _LEVEL:
             around.setdefault(joint.parent, []).append(joint)
     found: list[str] = []
     for joints in around.values():
@@ -300,18 +291,26 @@ def _wheel_candidates(
     and those level with or above it turning about a level axle."""
     below: dict[str, list[Joint]] = {}
     level: dict[str, list[Joint]] = {}
+    for joint in _unnamed_spinners(tree, taken):
+        if joint.child in tree.moving_below and not _rollers_only(tree, joint):
+            continue
+        if joint.origin[2] < 0:
+            below.setdefault(joint.parent, []).append(joint)
+        elif _axle(local_axis(joint)):
+            level.setdefault(joint.parent, []).append(joint)
+    return below, level
+
+
+def _unnamed_spinners(tree: JointTree, taken: set[str]) -> Iterator[Joint]:
+    """Endless joints of no role yet and no part's name, not on a part an endless joint turns
+    about a level axle (a rim's rollers): what could be wheels or rotors, told by place."""
     known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
     for joint in tree.urdf.joints:
         if (
             joint.type == "continuous"
             and joint.actuated
             and joint.name not in taken
-            and (joint.child not in tree.moving_below or _rollers_only(tree, joint))
             and not (tree.parts_of(joint.name) | tree.parts_of(joint.child))
             and not _on_a_spinning_part(tree, joint, known)
         ):
-            if joint.origin[2] < 0:
-                below.setdefault(joint.parent, []).append(joint)
-            elif _axle(local_axis(joint)):
-                level.setdefault(joint.parent, []).append(joint)
-    return below, level
+            yield joint
