@@ -180,7 +180,7 @@ class RoleReader:
         if named is not None:
             return named
         if joint.type in _ROTATING:
-            role = self._by_name(joint, joint.child in moving_below)
+            role = self._by_name(joint, joint.child in moving_below, moving_below)
             if role is not None:
                 return role
         own = self.parts_of(joint.name)
@@ -191,7 +191,7 @@ class RoleReader:
             return Role(joint.name, "gripper", self._named("gripper", joint))
         return None
 
-    def _by_name(self, joint: Joint, carries: bool) -> Role | None:
+    def _by_name(self, joint: Joint, carries: bool, moving_below: set[str]) -> Role | None:
         if self.matches("thruster", joint):
             return Role(joint.name, "thruster", self._named("thruster", joint))
         if self.marine and self.matches("rotor", joint) and not carries:
@@ -199,7 +199,7 @@ class RoleReader:
         if not carries and (self.matches("fin", joint) or self.matches("wing", joint)):
             part = "fin" if self.matches("fin", joint) else "wing"
             return Role(joint.name, "fin", self._named(part, joint) + " (a control surface)")
-        if self.matches("caster", joint):
+        if self.matches("caster", joint) and self._rolls_on(joint, moving_below):
             return Role(joint.name, "caster", self._named("caster", joint))
         # Wheels first: a wheel's motor link may be named *_rotor.
         if self.matches("wheel", joint):
@@ -207,6 +207,14 @@ class RoleReader:
         if self.matches("rotor", joint) and not carries:
             return Role(joint.name, "rotor", self._named("rotor", joint) + ", a spinning leaf")
         return None
+
+    def _rolls_on(self, joint: Joint, moving_below: set[str]) -> bool:
+        """All that moves below ``joint`` is endless joints with nothing moving beyond them (a
+        caster's wheel), or nothing: a swivel carrying a finger is no caster."""
+        return all(
+            below.child not in moving_below and (not below.movable or below.type == "continuous")
+            for below in self.urdf.children(joint.child)
+        )
 
     def _posed(self, joint: Joint) -> Role | None:
         """A propeller on a ``floating`` joint with nothing below it: a visual part a simulator

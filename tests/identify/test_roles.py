@@ -179,3 +179,19 @@ def test_joints_a_spring_plugin_holds_are_passive_and_leave_a_one_joint_tool_no_
     assert identify_urdf(sampling_rover().text()).structure == "UGV"
     # The same three joints with no spring: a short arm on a rover.
     assert identify_urdf(sampling_rover(springs=False).text()).structure == "Mobile Manipulator"
+
+
+def test_a_swivel_named_joint_that_carries_a_finger_is_no_caster() -> None:
+    # Three fingers on a palm, two of them on preshape joints into links named swivel_N: the
+    # swivels turn fingers, not wheels, so the hand is no mobile base.
+    robot = RobotText("hand", root="palm")
+    for i in (1, 2):
+        swivel = builders.placed(
+            robot, f"preshape_{i}", "revolute", "palm", f"swivel_{i}", xyz=f"0 {0.03 * i} 0"
+        )
+        robot.chain(swivel, [f"proximal_{i}", f"distal_{i}"])
+    robot.chain("palm", ["proximal_3", "distal_3"])
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert result.body.casters == ()
+    assert result.structure != "UGV"

@@ -495,3 +495,15 @@ def test_a_depth_stream_beside_a_stereo_pair_is_the_pairs_depth_one_device() -> 
         ("depth_camera", "RGB-D Camera", 1),
         ("stereo_camera", "3D Camera", 1),
     ]
+
+
+def test_gazebo_sims_lidar_spelling_of_a_ray_sensor_is_told_apart_by_the_same_words() -> None:
+    # Gazebo Sim writes an infrared proximity sensor's or a sonar's rays as a gpu_lidar.
+    grid = "<samples>5</samples><min_angle>-0.09</min_angle><max_angle>0.09</max_angle>"
+    scan = f"<lidar><scan><horizontal>{grid}</horizontal><vertical>{grid}</vertical></scan></lidar>"
+    found = kinds(
+        builders.gazebo_sensor("ir_front", "gpu_lidar", "ir_intensity_front", scan),
+        builders.gazebo_sensor("sonar_rear", "gpu_lidar", "sonar_rear", scan),
+        ray("laser", "rplidar", 720, 6.28, 12.0),
+    )
+    assert found == [("ir_range", None, 1), ("sonar", None, 1), ("lidar", "LIDAR", 1)]
