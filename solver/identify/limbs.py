@@ -42,6 +42,7 @@ Not here: fingers and hands (:mod:`solver.identify.hands`), the body they make
 from __future__ import annotations
 
 import math
+import re
 from collections import deque
 from collections.abc import Callable
 from dataclasses import dataclass, replace
@@ -73,6 +74,9 @@ __all__ = [
 # A spherical (ball) joint is outside the URDF spec but real files have it: a shoulder, a hip.
 _LIMB_JOINTS = ("revolute", "continuous", "prismatic", "spherical")
 _TURNING = ("revolute", "continuous")
+# A wrist turns a hand about up to three axes, its joints named so.
+_WRIST_JOINTS = 3
+_WRIST = re.compile("wrist", re.IGNORECASE)
 LIMB_KINDS = ("leg", "arm", "head")
 # An unnamed pair of chains on the root this long, beside named arms higher up, are legs.
 _LEG_BY_PLACE_JOINTS = 5
@@ -739,16 +743,16 @@ def _alike(spacings: list[float]) -> bool:
 
 def wrist(tree: JointTree, limbs: list[Limb], fingers: int) -> list[Limb]:
     """A short chain from the root ending in a whole hand (``fingers`` of them, at least the
-    profile's ``hand_min_fingers``), the body's only limb: the hand's wrist, not an arm."""
+    profile's ``hand_min_fingers``), the body's only limb: the hand's wrist, not an arm. Short
+    is fewer joints than an arm's, or up to three joints all named as a wrist's (a pitch, a
+    yaw and a pitch under the palm)."""
     if len(limbs) != 1 or fingers < tree.profile.limb("hand_min_fingers"):
         return limbs
     limb = limbs[0]
-    if (
-        limb.kind != "arm"
-        or not limb.gripper
-        or not _on_the_root(tree, limb.base)
-        or len(limb.joints) >= tree.profile.limb("arm_min_joints")
-    ):
+    short = len(limb.joints) < tree.profile.limb("arm_min_joints") or (
+        len(limb.joints) <= _WRIST_JOINTS and all(_WRIST.search(name) for name in limb.joints)
+    )
+    if limb.kind != "arm" or not limb.gripper or not _on_the_root(tree, limb.base) or not short:
         return limbs
     why = f"{len(limb.joints)} joint(s) from the root carrying a hand of {fingers} fingers"
     return [replace(limb, kind="wrist", why=why)]

@@ -786,3 +786,20 @@ def test_corner_named_chains_on_a_body_tracks_move_are_flippers_not_legs() -> No
     assert result.body is not None
     assert "leg" not in [limb.kind for limb in result.body.limbs]
     assert any(limb.why.startswith("a flipper") for limb in result.body.limbs)
+
+
+def forearm_hand_on(wrist_joints: list[str]) -> RobotText:
+    """Five three-joint fingers on a palm, the palm on ``wrist_joints`` from a free forearm."""
+    robot = RobotText("hand", root="forearm")
+    wrist_link = robot.chain("forearm", wrist_joints)
+    robot.joint("palm_fixed", "fixed", wrist_link, "palm")
+    for finger in ("ff", "mf", "rf", "lf", "th"):
+        robot.chain("palm", [f"{finger}j3", f"{finger}j2", f"{finger}j1"])
+    return robot
+
+
+def test_three_joints_named_as_a_wrists_under_a_whole_hand_are_its_wrist_not_an_arm() -> None:
+    named = forearm_hand_on(["wrist_pitch_lower", "wrist_yaw", "wrist_pitch_upper"])
+    assert identify_urdf(named.text()).structure == "Hand"
+    # Three joints of no wrist's name under the same hand are an arm carrying it.
+    assert identify_urdf(forearm_hand_on(["j1", "j2", "j3"]).text()).structure == "Manipulator"
