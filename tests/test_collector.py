@@ -1,42 +1,69 @@
-"""The cycle collector is held off for a block and left as the block found it."""
+"""The cycle collector is held off for a block and left as the block found it.
+
+The collector's switch is one per process: a block that another test's thread (a studio or a
+watcher left serving in the same test worker) holds open would turn it off under these checks.
+So each check runs in an interpreter of its own, where no other thread uses it.
+"""
 
 from __future__ import annotations
 
-import gc
+import subprocess
+import sys
+import textwrap
 
-import pytest
+from tests.conftest import ROOT
 
-from solver.collector import collector_paused
+
+def holds(check: str) -> None:
+    """Run ``check`` (Python, with ``gc``, ``pytest`` and ``collector_paused`` imported) in a
+    fresh interpreter; its assertions must hold."""
+    code = (
+        "import gc\nimport pytest\nfrom solver.collector import collector_paused\n"
+        + textwrap.dedent(check)
+    )
+    done = subprocess.run(
+        [sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, check=False
+    )
+    assert done.returncode == 0, done.stderr
 
 
 def test_a_block_holds_it_off_and_turns_it_back_on_even_when_it_raises() -> None:
-    seen: list[bool] = []
+    holds(
+        """
+        seen = []
 
-    @collector_paused()
-    def fails() -> None:
-        seen.append(gc.isenabled())
-        raise KeyError("x")
+        @collector_paused()
+        def fails():
+            seen.append(gc.isenabled())
+            raise KeyError("x")
 
-    assert gc.isenabled()
-    with pytest.raises(KeyError):
-        fails()
-    assert seen == [False]
-    assert gc.isenabled()
+        assert gc.isenabled()
+        with pytest.raises(KeyError):
+            fails()
+        assert seen == [False]
+        assert gc.isenabled()
+        """
+    )
 
 
 def test_nested_blocks_end_with_it_as_the_outermost_found_it() -> None:
-    with collector_paused():
+    holds(
+        """
         with collector_paused():
-            assert not gc.isenabled()
-        assert not gc.isenabled()  # the inner block found it off: it stays off
-    assert gc.isenabled()
+            with collector_paused():
+                assert not gc.isenabled()
+            assert not gc.isenabled()  # the inner block found it off: it stays off
+        assert gc.isenabled()
+        """
+    )
 
 
 def test_a_block_that_found_it_off_leaves_it_off() -> None:
-    gc.disable()
-    try:
+    holds(
+        """
+        gc.disable()
         with collector_paused():
             pass
         assert not gc.isenabled()
-    finally:
-        gc.enable()
+        """
+    )

@@ -366,7 +366,18 @@ def test_a_team_whose_worker_is_killed_fails_alone_and_the_summary_is_written(
     folder = tmp_path / "teams"
     folder.mkdir()
     shutil.copy(RULES / "paper.yaml", tmp_path / "paper.yaml")
-    shutil.copy(TEAMS / "case3.yaml", folder / "a-crashes.yaml")  # its worker gets SIGSEGV
+    # Its worker gets SIGSEGV: a team of 300,000 configurations keeps it busy for seconds, so
+    # the kill lands while it holds the team (Case 3 was solved in 10 ms, sometimes before).
+    kinds = [f"T{i}" for i in range(5)]
+    (tmp_path / "wide.yaml").write_text(
+        f"name: wide\ncharacteristics:\n  kinematic_type:\n    values: [{', '.join(kinds)}]\n"
+        "  m:\n    values: [m0, m1, m2]\n  n:\n    range: {min: 1, max: 20000}\n",
+        encoding="utf-8",
+    )
+    (folder / "a-crashes.yaml").write_text(
+        "rules: ../wide.yaml\nteam:\n" + "".join(f"  {k}: {{}}\n" for k in kinds),
+        encoding="utf-8",
+    )
     for number in range(others):
         shutil.copy(TEAMS / "case1.yaml", folder / f"b-after-{number}.yaml")
     out = tmp_path / "out"
