@@ -133,7 +133,7 @@ def fixed_rotors(tree: JointTree) -> list[str]:
     )
     if tree.reader.marine or legs_or_wheels:
         return []
-    moved = _moved_links(tree)
+    on_the_hull = tree.reader.still  # links no movable joint moves
     # On a body where nothing moves, a motor fixed at a leaf turns what the model leaves out:
     # a wheel would be modelled (a wheel link), so it is a propeller's (a quadcopter of fixed
     # arm and motor links that a force plugin moves).
@@ -143,23 +143,10 @@ def fixed_rotors(tree: JointTree) -> list[str]:
         for j in tree.urdf.joints
         if j.type == "fixed"
         and not tree.urdf.children(j.child)
-        and j.parent not in moved
+        and j.parent in on_the_hull
         and (tree.matches("rotor", j) or (still and _MOTOR.search(f"{j.name} {j.child}")))
     ]
     return found if len(found) >= tree.profile.limb("min_rotors") else []
-
-
-def _moved_links(tree: JointTree) -> set[str]:
-    """Links some movable joint moves (below a movable joint)."""
-    moved: set[str] = set()
-    stack = [(tree.urdf.root, False)]
-    while stack:
-        link, inside = stack.pop()
-        if inside:
-            moved.add(link)
-        for joint in tree.urdf.children(link):
-            stack.append((joint.child, inside or joint.movable))
-    return moved
 
 
 def wings(tree: JointTree, roles: dict[str, Role]) -> list[str]:
