@@ -7,6 +7,7 @@ import io
 import os
 import subprocess
 import sys
+import textwrap
 from collections.abc import Callable
 from pathlib import Path
 
@@ -94,3 +95,20 @@ def run_process(
         check=False,
         timeout=600,
     )
+
+
+def holds_alone(check: str) -> None:
+    """Run ``check`` (Python source) in an interpreter of its own; its assertions must hold.
+
+    For what is one per process, such as the cycle collector's switch: a thread another test
+    left running in the same test worker (a studio, a watcher) may use it meanwhile.
+    """
+    done = subprocess.run(
+        [sys.executable, "-c", textwrap.dedent(check)],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+        check=False,
+        timeout=600,
+    )
+    assert done.returncode == 0, done.stderr

@@ -7,24 +7,18 @@ So each check runs in an interpreter of its own, where no other thread uses it.
 
 from __future__ import annotations
 
-import subprocess
-import sys
 import textwrap
 
-from tests.conftest import ROOT
+from tests.conftest import holds_alone
 
 
 def holds(check: str) -> None:
     """Run ``check`` (Python, with ``gc``, ``pytest`` and ``collector_paused`` imported) in a
     fresh interpreter; its assertions must hold."""
-    code = (
+    holds_alone(
         "import gc\nimport pytest\nfrom solver.collector import collector_paused\n"
         + textwrap.dedent(check)
     )
-    done = subprocess.run(
-        [sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, check=False
-    )
-    assert done.returncode == 0, done.stderr
 
 
 def test_a_block_holds_it_off_and_turns_it_back_on_even_when_it_raises() -> None:

@@ -31,12 +31,20 @@ def test_a_process_started_by_a_test_carries_the_runs_mark_and_is_found_and_ende
 
 def test_a_run_that_leaves_a_process_alive_fails_and_ends_it(tmp_path: Path) -> None:
     pid_file = tmp_path / "pid"
+    # The leak says it runs once it does: a process that has just been started may still be
+    # inside exec, with no environment to read yet (the run's mark is read from it).
+    leak = (
+        "import os, time; "
+        f"open({str(pid_file) + '.part'!r}, 'w').write(str(os.getpid())); "
+        f"os.rename({str(pid_file) + '.part'!r}, {str(pid_file)!r}); "
+        "time.sleep(600)"
+    )
     (tmp_path / "test_leak.py").write_text(
-        "import subprocess, sys\n"
+        "import os, subprocess, sys, time\n"
         "def test_leaks():\n"
-        f"    child = subprocess.Popen([sys.executable, '-c', 'import time; time.sleep(600)'],"
-        " start_new_session=True)\n"
-        f"    open({str(pid_file)!r}, 'w').write(str(child.pid))\n",
+        f"    subprocess.Popen([sys.executable, '-c', {leak!r}], start_new_session=True)\n"
+        f"    while not os.path.exists({str(pid_file)!r}):\n"
+        "        time.sleep(0.01)\n",
         encoding="utf-8",
     )
     # A run of its own (not nested in this one): without this run's mark in its environment.

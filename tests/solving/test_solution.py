@@ -2,14 +2,13 @@
 
 from __future__ import annotations
 
-import gc
 from collections.abc import Callable
 from pathlib import Path
 
 import pytest
 
 from solver import load_team, solve
-from tests.conftest import TEAMS
+from tests.conftest import TEAMS, holds_alone
 
 WriteFile = Callable[[str, str], Path]
 
@@ -157,20 +156,28 @@ def test_a_value_in_no_component_leaves_its_robots_unserved(write_file: WriteFil
 
 def test_solving_holds_the_cycle_collector_off_and_leaves_it_on() -> None:
     # Hundreds of configurations: thousands of objects, none in a cycle (solver/collector.py).
-    team = load_team("search-and-rescue")
-    assert gc.isenabled()
-    started: list[int] = []
+    # In an interpreter of its own: the collector's switch is one per process.
+    holds_alone(
+        """
+        import gc
+        from solver import load_team, solve
 
-    def seen(phase: str, info: dict[str, int]) -> None:
-        if phase == "start":
-            started.append(info["generation"])
+        team = load_team("search-and-rescue")
+        assert gc.isenabled()
+        started = []
 
-    gc.callbacks.append(seen)
-    try:
-        solution = solve(team)
-    finally:
-        gc.callbacks.remove(seen)
-    assert len(solution.configurations) > 700  # a collection every 700 new objects otherwise
-    # At most the one deferred collection, as the collector comes back on at the end.
-    assert len(started) <= 1
-    assert gc.isenabled()
+        def seen(phase, info):
+            if phase == "start":
+                started.append(info["generation"])
+
+        gc.callbacks.append(seen)
+        try:
+            solution = solve(team)
+        finally:
+            gc.callbacks.remove(seen)
+        assert len(solution.configurations) > 700  # a collection every 700 new objects otherwise
+        # At most the one deferred collection, as the collector comes back on at the end.
+        assert len(started) <= 1, started
+        assert gc.isenabled()
+        """
+    )
