@@ -89,7 +89,9 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
     hang from its own link on joints that do not move (a DVL plugin and its four range rays),
     and a colour and a depth stream on one link are one RGB-D camera. Distinct devices count
     apart even when they share a name (one force sensor per joint), and sensors declared alike
-    with names of their own on one link (three cameras on a head frame) are as many.
+    with names of their own on one link (three cameras on a head frame) are as many. A
+    ``<ros2_control>`` sensor (told by what it reads) counts when no element or plugin declares
+    a device of its kind.
     """
     found: list[tuple[Detection, str]] = []
     urdf_links = {t.name: t.link for t in urdf.sensors if t.origin == "urdf" and t.link}
@@ -117,6 +119,12 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
         included = _model_kind(model.model, profile)
         if included is not None:
             found.append((Detection(included, model.name, source, model.link), "model"))
+    # A ros2_control block reads the devices the description declares elsewhere (a Gazebo IMU
+    # it names again): it adds one only of a kind nothing else declares.
+    declared = {detection.kind for detection, origin in found if origin != "ros2_control"}
+    found = [
+        (d, origin) for d, origin in found if origin != "ros2_control" or d.kind not in declared
+    ]
     return tuple(_devices(found, urdf))
 
 

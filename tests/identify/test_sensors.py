@@ -507,3 +507,37 @@ def test_gazebo_sims_lidar_spelling_of_a_ray_sensor_is_told_apart_by_the_same_wo
         ray("laser", "rplidar", 720, 6.28, 12.0),
     )
     assert found == [("ir_range", None, 1), ("sonar", None, 1), ("lidar", "LIDAR", 1)]
+
+
+def hardware_sensor(name: str, *readings: str, frame: str = "") -> str:
+    """A ``<ros2_control>`` system with one ``<sensor>`` reading ``readings``."""
+    states = "".join(f'<state_interface name="{reading}"/>' for reading in readings)
+    param = f'<param name="frame_id">{frame}</param>' if frame else ""
+    return (
+        '<ros2_control name="hw" type="system"><hardware><plugin>mock</plugin></hardware>'
+        f'<sensor name="{name}">{states}{param}</sensor></ros2_control>'
+    )
+
+
+WRENCH = ("force.x", "force.y", "force.z", "torque.x", "torque.y", "torque.z")
+
+
+def test_a_ros2_control_sensor_is_told_by_what_it_reads() -> None:
+    found = kinds(
+        hardware_sensor("wrist", *WRENCH, frame="flange"),
+        hardware_sensor("left_load_cell", "force"),  # a gripper's one-axis load cell
+        hardware_sensor("body", "orientation.x", "angular_velocity.x", "linear_acceleration.x"),
+        hardware_sensor("tcp_pose", "position.x", "orientation.w"),  # a pose: computed
+        hardware_sensor("external_wrench_in_base", *WRENCH),  # the controller's estimate
+        hardware_sensor("battery", "voltage"),
+    )
+    assert sorted(found) == [("force_torque", "Force Sensor", 2), ("imu", None, 1)]
+
+
+def test_a_ros2_control_sensor_that_names_a_device_declared_elsewhere_adds_none() -> None:
+    found = kinds(
+        builders.gazebo_sensor("imu_link", "imu", "imu_sensor"),
+        hardware_sensor("imu_sensor", "orientation.x", "angular_velocity.x"),
+        hardware_sensor("ft", *WRENCH),
+    )
+    assert sorted(found) == [("force_torque", "Force Sensor", 1), ("imu", None, 1)]

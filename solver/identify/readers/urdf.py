@@ -16,6 +16,7 @@ Not here: what the body is (:mod:`solver.identify.body`), what the sensors are
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Iterator
 from dataclasses import dataclass, replace
 from functools import cached_property
@@ -148,7 +149,9 @@ class SensorTag:
     type: str
     link: str | None
     line: int | None = None
-    origin: str = "gazebo"  # "gazebo" (<gazebo><sensor type>) or "urdf" (top-level <sensor>)
+    # "gazebo" (<gazebo><sensor type>), "urdf" (top-level <sensor>) or "ros2_control" (a
+    # hardware interface's <sensor>, its kind told by what it reads).
+    origin: str = "gazebo"
     plugins: tuple[PluginTag, ...] = ()
     horizontal_samples: int | None = None
     vertical_samples: int | None = None
@@ -598,6 +601,7 @@ class _Builder:
                 "",
             )
             found.append(self._sensor(sensor, link, "urdf", str(kind)))
+        found += _hardware_sensors(root)
         return tuple(found)
 
     @staticmethod
@@ -657,6 +661,44 @@ def _sensor(
         sweep=None if low_angle is None or high_angle is None else abs(high_angle - low_angle),
         max_range=_float(farthest.text if farthest is not None else None),
     )
+
+
+def _hardware_sensors(root: etree._Element) -> list[SensorTag]:
+    """The devices a ``<ros2_control>`` block reads, told by their state interfaces: a wrench
+    (``force.x`` .. ``torque.z``, or a load cell's one ``force``) is a force-torque sensor, and
+    angular velocity or linear acceleration an IMU. A pose (``tcp_pose``) is computed, not
+    read, and a block named as an estimate (``external_wrench_in_base``) is the controller's
+    reckoning from the joints' torques, not a device of its own."""
+    found = []
+    for control in root.findall("ros2_control"):
+        for sensor in control.findall("sensor"):
+            name = (sensor.get("name") or "").strip()
+            readings = {
+                (state.get("name") or "").strip().lower().split(".", 1)[0]
+                for state in sensor.findall("state_interface")
+            }
+            kind = next((k for k, read in _HARDWARE_READINGS if readings & read), None)
+            if kind is None or _ESTIMATE.search(name):
+                continue
+            frame = next(
+                (
+                    (param.text or "").strip()
+                    for param in sensor.findall("param")
+                    if param.get("name") in _FRAME_PARAMS and (param.text or "").strip()
+                ),
+                None,
+            )
+            found.append(SensorTag(name, kind, frame, line_of(sensor), "ros2_control"))
+    return found
+
+
+# What a ros2_control sensor's state interfaces read (the part before the first dot), by kind.
+_HARDWARE_READINGS = (
+    ("force_torque", frozenset({"force", "torque"})),
+    ("imu", frozenset({"angular_velocity", "linear_acceleration"})),
+)
+_FRAME_PARAMS = frozenset({"frame_id", "sensor_frame", "frame"})
+_ESTIMATE = re.compile(r"estimat|external", re.IGNORECASE)
 
 
 def _command_interfaces(root: etree._Element) -> tuple[tuple[str, tuple[str, ...]], ...]:
