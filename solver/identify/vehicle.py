@@ -169,7 +169,7 @@ def surface_hints(tree: JointTree) -> tuple[str, ...]:
     or in the parameters of its water plugins, never in a sensor's settings (a barometer's
     water-surface offset) nor in an underwater plugin's (a buoyancy engine's surface); a body
     whose buoyancy compensation has a hull's reserve (it floats). With none of them, and nothing
-    of a body below the surface, a GPS or a lidar says it: satellites are heard, and a laser
+    of a body below the surface (no plugin, sensor or frame of one), a GPS or a lidar says it: satellites are heard, and a laser
     scans, only above the water."""
     pattern = tree.profile.plugin_pattern("surface")
     if pattern is None or not (tree.reader.marine):
@@ -185,7 +185,7 @@ def surface_hints(tree: JointTree) -> tuple[str, ...]:
                 continue  # a diver's plugin names the surface it rises to, not a hull on it
             hints += sorted({tag.lower() for tag, _ in plugin.params if pattern.search(tag)})
     hints += _floating_hull(tree)
-    if not hints and not underwater_hints(tree):
+    if not hints and not underwater_hints(tree) and not water_frames(tree):
         hints += _above_water_sensors(tree)
     return tuple(dict.fromkeys(hints))
 
@@ -203,8 +203,9 @@ def _floating_hull(tree: JointTree) -> list[str]:
 
 
 def _above_water_sensors(tree: JointTree) -> list[str]:
-    """GPS receivers (sensor elements of a satellite type, or plugins named so) and lidars (a
-    ray sensor the profile reads as a lidar: it scans in air, water absorbs its light)."""
+    """GPS receivers (sensor elements of a satellite type, plugins named so, or a frame fixed
+    to the body named so) and lidars (a ray sensor the profile reads as a lidar: it scans in
+    air, water absorbs its light)."""
     found = [
         f"{s.name or s.type} (GPS: heard above water)"
         for s in tree.urdf.sensors
@@ -219,6 +220,14 @@ def _above_water_sensors(tree: JointTree) -> list[str]:
         f"{s.name or s.type} (lidar: scans in air)"
         for s in tree.urdf.sensors
         if element_kind(s, tree.profile) == "lidar"
+    ]
+    # A receiver's frame alone, fixed to the hull (a description of frames for a driver's
+    # tf): as the DVL's frame says below (:func:`water_frames`), the GPS's says above.
+    known: dict[str, str | None] = {}
+    found += [
+        f"{link.name} (a GPS frame: heard above water)"
+        for link in tree.urdf.links
+        if _GPS.search(link.name) and moved_by(tree.urdf, link.name, known) is None
     ]
     return found[:1]
 

@@ -121,6 +121,24 @@ def test_thruster_links_fixed_to_a_pushed_hull_put_it_in_water_with_doubt() -> N
     assert "Driving" in {c.motion_control for c in result.motion_controls}
 
 
+def test_a_gps_frame_fixed_to_a_hull_of_fixed_thrusters_floats_it_unless_a_dvl_frame_dives_it() -> (
+    None
+):
+    boat = hull_of_fixed_thrusters(2)
+    boat.fixed(boat.root, "gps_frame")
+    result = identify_urdf(boat.text())
+    assert result.structure == "Surface Vessel"
+    assert result.body.surface_hints == ("gps_frame (a GPS frame: heard above water)",)
+    boat.fixed(boat.root, "dvl")  # an AUV's GPS, heard when it comes up
+    assert identify_urdf(boat.text()).structure == "Underwater Vehicle"
+
+
+def test_a_gps_frame_a_joint_moves_says_nothing_of_the_surface() -> None:
+    boat = hull_of_fixed_thrusters(2)
+    boat.fixed(boat.chain(boat.root, ["mast"]), "gps_frame")
+    assert identify_urdf(boat.text()).structure == "Underwater Vehicle"
+
+
 def test_one_fixed_thruster_link_or_ones_a_joint_moves_say_nothing_of_water() -> None:
     assert identify_urdf(hull_of_fixed_thrusters(1).text()).structure == "UGV"
     assert identify_urdf(hull_of_fixed_thrusters(under_a_joint=True).text()).structure == "UGV"
