@@ -233,7 +233,8 @@ def _unnamed_wheels(tree: JointTree, taken: set[str]) -> list[str]:
     A base whose wheel joints carry no name (``fl_joint`` on ``fl_Link``) still has them where
     wheels are: continuous joints (no limits, they turn for ever) that carry nothing that
     moves, hanging below the link they are on or turning about a level axis across it (a
-    wheel's axle, whatever the height of the link's origin), at least one on each side of it.
+    wheel's axle, whatever the height of the link's origin; in the body's frame on a link that
+    only slides), at least one on each side of it.
     Fingers have limits; rotors sit level with or above their body and turn about an upright
     axis; a propeller on a wing turns about the axis it flies along. Six or more level with a
     link are a wheel-leg walker's whole-turning legs (:func:`~solver.identify.limbs.find_limbs`).
@@ -291,14 +292,24 @@ def _wheel_candidates(
     and those level with or above it turning about a level axle."""
     below: dict[str, list[Joint]] = {}
     level: dict[str, list[Joint]] = {}
+    known: dict[str, str | None] = {}  # link -> the nearest joint above it that turns
     for joint in _unnamed_spinners(tree, taken):
         if joint.child in tree.moving_below and not _rollers_only(tree, joint):
             continue
         if joint.origin[2] < 0:
             below.setdefault(joint.parent, []).append(joint)
-        elif _axle(local_axis(joint)):
+        elif _axle(local_axis(joint)) or (
+            # On a link that only slides on the body (a wheel-drop suspension, its frame turned
+            # to slide along its own axis), the axle is read in the body's frame.
+            nearest_above(tree.urdf, joint.parent, known, _turns) is None
+            and _axle(tree.poses.axis(joint))
+        ):
             level.setdefault(joint.parent, []).append(joint)
     return below, level
+
+
+def _turns(joint: Joint) -> bool:
+    return joint.movable and joint.type != "prismatic"
 
 
 def _unnamed_spinners(tree: JointTree, taken: set[str]) -> Iterator[Joint]:

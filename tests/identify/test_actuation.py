@@ -82,6 +82,29 @@ def test_unnamed_endless_joints_on_level_axles_above_the_origin_are_wheels_too()
     assert len(result.body.wheels) == 4
 
 
+def drop_wheels(slide: str) -> RobotText:
+    """Two unnamed endless leaves on suspension links whose frames are turned a quarter about
+    x (a wheel-drop: each slides, or turns when ``slide`` says revolute, along its own y): in
+    those frames the wheels turn about z, in the body's about y, level."""
+    robot = RobotText("drops")
+    for index, y in enumerate((0.12, -0.12)):
+        limit = '<limit lower="0" upper="0.03" effort="0" velocity="0"/>'
+        turned = f'<origin rpy="-1.5707963 0 0" xyz="0 {y} 0.04"/><axis xyz="0 1 0"/>{limit}'
+        robot.joint(f"d{index}", slide, "base_link", f"drop{index}", turned)
+        robot.joint(f"s{index}", "continuous", f"drop{index}", f"l{index}", '<axis xyz="0 0 1"/>')
+    return robot
+
+
+def test_unnamed_wheels_on_sliding_suspension_links_turn_about_level_axles_in_the_body() -> None:
+    result = identify_urdf(drop_wheels("prismatic").text())
+    assert result.body is not None
+    assert (result.structure, result.body.wheels) == ("UGV", ("s0", "s1"))
+    # Below a joint that turns (a limb), the body's frame at rest says nothing of an axle.
+    turned = identify_urdf(drop_wheels("revolute").text())
+    assert turned.body is not None
+    assert turned.body.wheels == ()
+
+
 def test_unnamed_spinning_leaves_on_upright_axes_or_limited_are_no_wheels() -> None:
     upright = RobotText("upright")
     _four_spinning_leaves(upright, 0.0, axis="0 0 1")  # a rotor's axis
