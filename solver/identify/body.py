@@ -38,6 +38,7 @@ from solver.identify.actuation import joint_roles, with_role
 from solver.identify.hands import finger_groups, finger_tips, gripper_closure
 from solver.identify.limbs import (
     Limb,
+    arms_beside_legs,
     bolted_chain,
     find_limbs,
     five_bars,
@@ -402,7 +403,9 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
         tree, special | parts.grippers, parts.grippers, parts.roles, flying
     )
     parts.limbs = legs_by_place(tree, parts.limbs)
-    fingers = finger_groups(tree, parts.limbs, grounded=grounded(tree, parts.roles))
+    fingers = finger_groups(
+        tree, parts.limbs, grounded=grounded(tree, parts.roles), walks_on=_trunks(tree, parts)
+    )
     if fingers:
         for name in fingers:
             parts.roles[name] = Role(
@@ -414,6 +417,7 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
         )
         parts.limbs = legs_by_place(tree, parts.limbs)
     parts.limbs = five_bars(tree, legs_by_reach(tree, legs_at_the_pelvis(tree, parts.limbs)))
+    parts.limbs = arms_beside_legs(tree, parts.limbs)
     parts.limbs = flippers(tree, parts.limbs)
     if not parts.roles and not parts.trunk:  # a snake is its one chain, with nothing else
         parts.limbs = spine(tree, parts.limbs)
@@ -425,6 +429,21 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
     moves = flying or grounded(tree, parts.roles)
     parts.limbs = bolted_chain(tree, parts.limbs, moves)
     parts.limbs = lone_leg(tree, parts.limbs, moves)
+
+
+def _trunks(tree: JointTree, parts: _Parts) -> frozenset[str | None]:
+    """The rigid bodies two legs or more hang from, as :func:`finger_groups` is told them: the
+    nearest joint above each leg's base that moves (None: the root's), legs found by name or
+    where a walker's hang (at the pelvis, straight down)."""
+    legs = [
+        limb
+        for limb in legs_by_reach(tree, legs_at_the_pelvis(tree, parts.limbs))
+        if limb.kind == "leg"
+    ]
+    if len(legs) < 2:
+        return frozenset()
+    known: dict[str, str | None] = {}
+    return frozenset(moved_by(tree.urdf, limb.base, known) for limb in legs)
 
 
 def _commanded(tree: JointTree, parts: _Parts) -> list[str]:

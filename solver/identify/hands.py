@@ -144,18 +144,29 @@ def finger_tips(tree: JointTree, grippers: set[str]) -> list[str]:
     return sorted(tips, key=tree.order)
 
 
-def finger_groups(tree: JointTree, limbs: list[Limb], *, grounded: bool = False) -> set[str]:
+def finger_groups(
+    tree: JointTree,
+    limbs: list[Limb],
+    *,
+    grounded: bool = False,
+    walks_on: frozenset[str | None] = frozenset(),
+) -> set[str]:
     """Joints of unnamed short chains hanging from one link in threes or more: fingers (also
     where each ends in a named fingertip).
 
     A claw or a hand whose fingers carry no names still has them side by side on a palm; arms
     and legs on one link come in ones and twos. On a body that moves on the ground, chains on
-    its root link are the base's own (a tracked vehicle's flippers), not fingers.
+    its root link are the base's own (a tracked vehicle's flippers), not fingers; nor are
+    chains on the trunk a pair of legs hangs from (``walks_on``: the nearest joint above each
+    leg's base that moves, None for the root's rigid body): a humanoid's two arms and neck.
     """
     by_base: dict[str, list[Limb]] = {}
     longest = tree.profile.limb("finger_max_joints")
+    known: dict[str, str | None] = {}
     for limb in limbs:
         if grounded and limb.base == tree.urdf.root:
+            continue
+        if walks_on and moved_by(tree.urdf, limb.base, known) in walks_on:
             continue
         if limb.kind in ("arm", "other") and not limb.named and len(limb.joints) <= longest:
             by_base.setdefault(limb.base, []).append(limb)

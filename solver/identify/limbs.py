@@ -57,6 +57,7 @@ from solver.untrusted import shown
 __all__ = [
     "LIMB_KINDS",
     "Limb",
+    "arms_beside_legs",
     "bolted_chain",
     "find_limbs",
     "five_bars",
@@ -232,6 +233,63 @@ def legs_by_reach(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     return sort_limbs(
         tree,
         [replace(limb, kind="leg", why=why) if id(limb) in legs else limb for limb in limbs],
+    )
+
+
+def arms_beside_legs(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
+    """Two unnamed chains above a biped's legs, mirrored across its trunk: its arms.
+
+    A small humanoid's arms may be two joints each, too short for an arm by count; on a body
+    that stands on two legs, a mirrored pair of equal chains (two joints or more, nothing named)
+    starting higher than the hips, on the rigid body the legs hang from, is the pair of arms (a
+    head sits on the middle line, a tail behind). Not when arms were found otherwise.
+    """
+    legs = [limb for limb in limbs if limb.kind == "leg"]
+    if len(legs) != _BIPED_LEGS or any(limb.kind == "arm" for limb in limbs):
+        return limbs
+    known: dict[str, str | None] = {}
+    trunk = {moved_by(tree.urdf, limb.base, known) for limb in legs}
+    hips = max(_start(tree, limb)[2] for limb in legs)
+    candidates = [
+        limb
+        for limb in limbs
+        if limb.kind == "other"
+        and not limb.named
+        and len(limb.joints) >= _LEG_JOINTS[0]
+        and moved_by(tree.urdf, limb.base, known) in trunk
+        and _start(tree, limb)[2] > hips
+    ]
+    pairs = [
+        (one, other)
+        for index, one in enumerate(candidates)
+        for other in candidates[index + 1 :]
+        if len(one.joints) == len(other.joints)
+        and _mirrored(_start(tree, one), _start(tree, other))
+    ]
+    if len(pairs) != 1:
+        return limbs  # none, or no one pair to choose
+    why = "one of two mirrored unnamed chains above a biped's legs (its arms)"
+    arms = {id(limb) for limb in pairs[0]}
+    return sort_limbs(
+        tree,
+        [replace(limb, kind="arm", why=why) if id(limb) in arms else limb for limb in limbs],
+    )
+
+
+def _start(tree: JointTree, limb: Limb) -> Place:
+    """Where a limb's first joint turns, in the body's frame at rest."""
+    first = tree.urdf.joint(limb.joints[0])
+    return tree.poses.place(first.child if first is not None else limb.base)
+
+
+def _mirrored(a: Place, b: Place) -> bool:
+    """One on each side of the body, as far out, at one height and one place along it."""
+    across = abs(a[1] - b[1])
+    return (
+        a[1] * b[1] < 0
+        and abs(a[1] + b[1]) <= _MIRRORED * across
+        and abs(a[0] - b[0]) <= _MIRRORED * across
+        and abs(a[2] - b[2]) <= _MIRRORED * across
     )
 
 

@@ -169,8 +169,8 @@ def surface_hints(tree: JointTree) -> tuple[str, ...]:
     or in the parameters of its water plugins, never in a sensor's settings (a barometer's
     water-surface offset) nor in an underwater plugin's (a buoyancy engine's surface); a body
     whose buoyancy compensation has a hull's reserve (it floats). With none of them, and nothing
-    of a body below the surface (no plugin, sensor or frame of one), a GPS or a lidar says it: satellites are heard, and a laser
-    scans, only above the water."""
+    of a body below the surface (no plugin, sensor or frame of one), a GPS or a lidar says it:
+    satellites are heard, and a laser scans, only above the water."""
     pattern = tree.profile.plugin_pattern("surface")
     if pattern is None or not (tree.reader.marine):
         return ()

@@ -718,6 +718,38 @@ def test_the_same_chains_on_a_body_bolted_to_the_world_stay_arms() -> None:
     assert "leg" not in [limb.kind for limb in result.body.limbs]
 
 
+def small_humanoid() -> RobotText:
+    """The nameless humanoid's legs, with two-joint arms (a small humanoid's) and a two-joint
+    neck on the body: three short chains on one link, as a hand's fingers are."""
+    robot = RobotText("r", root="pelvis")
+    down = ["0 0 -0.1"] * 5
+    for side, y in (("a", 0.1), ("b", -0.1)):
+        placed_chain(robot, "pelvis", f"{side}j", start=f"0 {y} -0.05", steps=down)
+    for side, y in (("c", 0.2), ("d", -0.2)):
+        placed_chain(robot, "pelvis", f"{side}j", start=f"0 {y} 0.4", steps=[f"0 {y / 2} 0"])
+    placed_chain(robot, "pelvis", "nj", start="0 0 0.5", steps=["0 0 0.05"], axis="0 0 1")
+    return robot
+
+
+def test_short_chains_on_the_trunk_a_bipeds_legs_hang_from_are_its_arms_and_neck() -> None:
+    result = identify_urdf(small_humanoid().text())
+    assert result.body is not None
+    assert (result.body.grippers, result.body.fingers) == (0, ())  # no hand on a trunk on legs
+    arms = [limb for limb in result.body.limbs if limb.kind == "arm"]
+    assert sorted(limb.joints[0] for limb in arms) == ["cj0", "dj0"]
+    assert all("mirrored" in limb.why for limb in arms)
+    assert result.structure == "Humanoid"
+
+
+def test_two_mirrored_chains_are_no_arms_without_a_bipeds_legs_below_them() -> None:
+    robot = RobotText("r")
+    for side, y in (("c", 0.2), ("d", -0.2)):
+        placed_chain(robot, robot.root, f"{side}j", start=f"0 {y} 0.4", steps=[f"0 {y / 2} 0"])
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert "arm" not in [limb.kind for limb in result.body.limbs]
+
+
 def folded_quadruped(*, tracked: bool = False) -> RobotText:
     """Four unnamed three-joint chains at the corners of a body, each folded flat in the zero
     pose (the tip back level with the hip); ``tracked`` adds a tracked-vehicle plugin."""
