@@ -247,18 +247,7 @@ def arms_beside_legs(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     legs = [limb for limb in limbs if limb.kind == "leg"]
     if len(legs) != _BIPED_LEGS or any(limb.kind == "arm" for limb in limbs):
         return limbs
-    known: dict[str, str | None] = {}
-    trunk = {moved_by(tree.urdf, limb.base, known) for limb in legs}
-    hips = max(_start(tree, limb)[2] for limb in legs)
-    candidates = [
-        limb
-        for limb in limbs
-        if limb.kind == "other"
-        and not limb.named
-        and len(limb.joints) >= _LEG_JOINTS[0]
-        and moved_by(tree.urdf, limb.base, known) in trunk
-        and _start(tree, limb)[2] > hips
-    ]
+    candidates = _above_the_hips(tree, limbs, legs)
     pairs = [
         (one, other)
         for index, one in enumerate(candidates)
@@ -274,6 +263,23 @@ def arms_beside_legs(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
         tree,
         [replace(limb, kind="arm", why=why) if id(limb) in arms else limb for limb in limbs],
     )
+
+
+def _above_the_hips(tree: JointTree, limbs: list[Limb], legs: list[Limb]) -> list[Limb]:
+    """Unnamed chains of two joints or more and of no kind yet, on the rigid body ``legs``
+    hang from, starting higher than the hips."""
+    known: dict[str, str | None] = {}
+    trunk = {moved_by(tree.urdf, limb.base, known) for limb in legs}
+    hips = max(_start(tree, limb)[2] for limb in legs)
+    return [
+        limb
+        for limb in limbs
+        if limb.kind == "other"
+        and not limb.named
+        and len(limb.joints) >= _LEG_JOINTS[0]
+        and moved_by(tree.urdf, limb.base, known) in trunk
+        and _start(tree, limb)[2] > hips
+    ]
 
 
 def _start(tree: JointTree, limb: Limb) -> Place:

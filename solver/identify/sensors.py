@@ -119,13 +119,16 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
         included = _model_kind(model.model, profile)
         if included is not None:
             found.append((Detection(included, model.name, source, model.link), "model"))
-    # A ros2_control block reads the devices the description declares elsewhere (a Gazebo IMU
-    # it names again): it adds one only of a kind nothing else declares.
+    return tuple(_devices(_hardware_kept(found), urdf))
+
+
+def _hardware_kept(found: list[tuple[Detection, str]]) -> list[tuple[Detection, str]]:
+    """``found`` without the ros2_control sensors of kinds something else declares: such a
+    block reads a device declared elsewhere (a Gazebo IMU it names again)."""
     declared = {detection.kind for detection, origin in found if origin != "ros2_control"}
-    found = [
+    return [
         (d, origin) for d, origin in found if origin != "ros2_control" or d.kind not in declared
     ]
-    return tuple(_devices(found, urdf))
 
 
 def under_water(detections: Iterable[Detection]) -> tuple[Detection, ...]:

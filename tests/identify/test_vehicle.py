@@ -128,6 +128,7 @@ def test_a_gps_frame_fixed_to_a_hull_of_fixed_thrusters_floats_it_unless_a_dvl_f
     boat.fixed(boat.root, "gps_frame")
     result = identify_urdf(boat.text())
     assert result.structure == "Surface Vessel"
+    assert result.body is not None
     assert result.body.surface_hints == ("gps_frame (a GPS frame: heard above water)",)
     boat.fixed(boat.root, "dvl")  # an AUV's GPS, heard when it comes up
     assert identify_urdf(boat.text()).structure == "Underwater Vehicle"
