@@ -29,7 +29,7 @@ from collections.abc import Iterator, Mapping
 
 from solver.identify.hands import gripper_closure, jaws
 from solver.identify.limbs import moved_by, nearest_above, points_a_sensor
-from solver.identify.pose import local_axis
+from solver.identify.pose import local_axis, parallel
 from solver.identify.readers.urdf import Joint
 from solver.identify.roles import POSED, Role, main_axis
 from solver.identify.tree import JointTree
@@ -39,6 +39,9 @@ __all__ = ["joint_roles", "with_role"]
 _Z_AXIS = 2
 # How far from level an axle may lean (the z part of its unit axis).
 _LEVEL = 0.2
+# Twin screws sit apart across their axes; along them, at most this share of that (wheels on
+# one axle sit apart along it).
+_SCREWS_ALONG = 0.25
 # The fewest free rollers on an omni or mecanum wheel's rim.
 _ROLLERS = 3
 # As many endless joints level with one link are a wheel-leg walker's legs, not its wheels.
@@ -61,6 +64,13 @@ def joint_roles(tree: JointTree) -> dict[str, Role]:
             roles[joint.name] = role
     for name, why in jaws(tree, set(roles)).items():
         roles[name] = Role(name, "gripper", why)
+    for name in _unnamed_screws(tree, set(roles)):
+        roles[name] = Role(
+            name,
+            "thruster",
+            "unnamed endless joints below the body, side by side, turning about the line they "
+            "push along (screws)",
+        )
     for name in _unnamed_wheels(tree, set(roles)):
         roles[name] = Role(
             name,
@@ -259,6 +269,40 @@ def _unnamed_wheels(tree: JointTree, taken: set[str]) -> list[str]:
     if len(apart) >= 2 and _sides({tree.poses.place(j.child)[1] for j in apart}):
         found.extend(j.name for j in apart)
     return found
+
+
+def _unnamed_screws(tree: JointTree, taken: set[str]) -> list[str]:
+    """Unnamed spinning leaves below one link, two or more side by side, turning about the
+    line the body travels along and sitting apart across it: a vessel's screws, pushing it.
+
+    Wheels on axles sit apart along the axle they share (a left and a right wheel), or turn
+    about lines that are not one (an omni base's rims); twin propellers under a hull turn about
+    the line they push along and sit apart across it.
+    """
+    below, _ = _wheel_candidates(tree, taken)
+    found: list[str] = []
+    for joints in below.values():
+        if len(joints) >= 2 and _side_by_side(tree, joints):
+            found.extend(j.name for j in joints)
+    return found
+
+
+def _side_by_side(tree: JointTree, joints: list[Joint]) -> bool:
+    """``joints`` turn about the line the body travels along (x, forward in a ROS body's
+    frame) and sit apart across it, hardly at all along it (a front and a rear wheel on one
+    side turn about lines across the body)."""
+    axis = tree.poses.axis(joints[0])
+    if abs(axis[0]) < 1 - _LEVEL or not all(parallel(axis, tree.poses.axis(j)) for j in joints):
+        return False
+    across = (-axis[1], axis[0], 0.0)  # level, at right angles to the axis
+    places = [tree.poses.place(j.child) for j in joints]
+    along_spread = _spread([sum(a * b for a, b in zip(p, axis, strict=True)) for p in places])
+    across_spread = _spread([sum(a * b for a, b in zip(p, across, strict=True)) for p in places])
+    return across_spread > 0 and along_spread <= _SCREWS_ALONG * across_spread
+
+
+def _spread(values: list[float]) -> float:
+    return max(values) - min(values)
 
 
 def _unnamed_rotors(tree: JointTree, taken: set[str]) -> list[str]:

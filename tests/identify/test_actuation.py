@@ -105,6 +105,45 @@ def test_unnamed_wheels_on_sliding_suspension_links_turn_about_level_axles_in_th
     assert turned.body.wheels == ()
 
 
+def twin_screws(*, gps: bool = False, axis: str = "1 0 0") -> RobotText:
+    """Two unnamed endless leaves hanging below a hull at its stern, side by side, turning
+    about ``axis`` (x: the line the body travels along); ``gps`` adds a GPS frame."""
+    robot = RobotText("hull")
+    for index, y in enumerate((1.0, -1.0)):
+        place = f'<origin xyz="-1.5 {y} -0.5"/><axis xyz="{axis}"/>'
+        robot.joint(f"m{index}", "continuous", "base_link", f"p{index}", place)
+    if gps:
+        robot.fixed("base_link", "gps")
+    return robot
+
+
+def test_unnamed_spinners_side_by_side_below_a_hull_turning_along_it_are_its_screws() -> None:
+    result = identify_urdf(twin_screws().text())
+    assert result.body is not None
+    assert (result.body.wheels, result.body.thrusters) == ((), ("m0", "m1"))
+    assert result.structure == "Underwater Vehicle"  # in water, nothing says where
+    assert identify_urdf(twin_screws(gps=True).text()).structure == "Surface Vessel"
+
+
+def test_spinners_turning_about_a_line_across_the_body_are_wheels_not_screws() -> None:
+    # A left and a right wheel on one axle; and a front and a rear wheel on one side (a
+    # bogie's), apart across their axle as twin screws are across theirs.
+    axle = identify_urdf(twin_screws(axis="0 1 0").text())
+    assert axle.body is not None
+    assert (axle.structure, axle.body.thrusters) == ("UGV", ())
+    bogies = RobotText("bogies")
+    for side, y in (("a", 0.5), ("b", -0.5)):
+        limit = '<limit lower="-0.3" upper="0.3" effort="1" velocity="1"/>'
+        pivot = f'<origin xyz="0 {y} 0"/><axis xyz="0 1 0"/>{limit}'
+        bogies.joint(f"{side}p", "revolute", "base_link", f"{side}_unit", pivot)
+        for index, x in enumerate((0.4, -0.4)):
+            place = f'<origin xyz="{x} 0 -0.2"/><axis xyz="0 1 0"/>'
+            bogies.joint(f"{side}{index}", "continuous", f"{side}_unit", f"{side}w{index}", place)
+    result = identify_urdf(bogies.text())
+    assert result.body is not None
+    assert (result.structure, result.body.thrusters, len(result.body.wheels)) == ("UGV", (), 4)
+
+
 def test_unnamed_spinning_leaves_on_upright_axes_or_limited_are_no_wheels() -> None:
     upright = RobotText("upright")
     _four_spinning_leaves(upright, 0.0, axis="0 0 1")  # a rotor's axis
