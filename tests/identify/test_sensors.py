@@ -541,3 +541,13 @@ def test_a_ros2_control_sensor_that_names_a_device_declared_elsewhere_adds_none(
         hardware_sensor("ft", *WRENCH),
     )
     assert sorted(found) == [("force_torque", "Force Sensor", 1), ("imu", None, 1)]
+
+
+def test_a_sensor_on_an_sdf_link_a_gazebo_block_adds_is_the_models() -> None:
+    # PX4's models insert a GPS on a link of its own, written in SDF inside <gazebo>.
+    found = kinds(
+        '<gazebo><link name="gps0_link"><pose>0 0 0 0 0 0</pose>'
+        '<sensor name="gps" type="gps">'
+        '<plugin filename="libgazebo_gps_plugin.so" name="gps_plugin"/></sensor></link></gazebo>'
+    )
+    assert found == [("gps", None, 1)]
