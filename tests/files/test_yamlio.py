@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import gc
 from pathlib import Path
 
 import pytest
@@ -10,7 +9,7 @@ import yaml
 
 from solver.errors import InputError
 from solver.files.yamlio import load_document, load_hashed, parse_document, prescan
-from tests.conftest import run_cli
+from tests.conftest import holds_alone, run_cli
 
 
 def test_values_and_keys_are_located_by_line_and_column() -> None:
@@ -199,17 +198,24 @@ def test_scalars_read_as_pyyaml_reads_them(scalar: str) -> None:
 
 
 def test_reading_leaves_the_cycle_collector_as_it_was() -> None:
-    parse_document("a: [1, 2]\n")
-    assert gc.isenabled()
-    with pytest.raises(InputError):
-        parse_document("a: [1, 2\n")
-    assert gc.isenabled()
-    gc.disable()
-    try:
-        parse_document("a: [1, 2]\n")
+    # In an interpreter of its own: the collector's switch is one per process.
+    holds_alone(
+        """
+        import gc
+        import pytest
+        from solver.errors import InputError
+        from solver.files.yamlio import parse_document
+
+        parse_document("a: [1, 2]\\n")
+        assert gc.isenabled()
+        with pytest.raises(InputError):
+            parse_document("a: [1, 2\\n")
+        assert gc.isenabled()
+        gc.disable()
+        parse_document("a: [1, 2]\\n")
         assert not gc.isenabled()
-    finally:
-        gc.enable()
+        """
+    )
 
 
 def test_a_file_loaded_with_its_hash_is_hashed_from_the_bytes_read(tmp_path: Path) -> None:
