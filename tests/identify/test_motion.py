@@ -273,14 +273,16 @@ def test_a_short_chain_on_a_flying_body_is_the_vehicles_not_joint_control() -> N
     assert "Joint" not in controls(robot)
 
 
-def test_legs_and_a_lidar_could_take_waypoints_a_guess_said_so() -> None:
-    robot = builders.quadruped()
-    robot.add(builders.gazebo_sensor("base_link", "ray", "laser"))
-    found = controls(robot)
+def test_legs_and_a_lidar_are_no_guess_of_waypoints_wheels_and_a_lidar_are() -> None:
+    walker = builders.quadruped()
+    walker.add(builders.gazebo_sensor("base_link", "ray", "laser"))
+    found = controls(walker)
     assert "Walking" in found
-    assert (
-        found["Waypoint"]
-        == "urdf: likely, not declared: Walking and a lidar sensor, what navigation needs"
+    assert "Waypoint" not in found
+    rover = builders.ugv()
+    rover.add(builders.gazebo_sensor("base_link", "ray", "laser"))
+    assert controls(rover)["Waypoint"] == (
+        "urdf: likely, not declared: Driving and a lidar sensor, what navigation needs"
     )
 
 
