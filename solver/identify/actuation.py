@@ -306,19 +306,23 @@ def _spread(values: list[float]) -> float:
 
 
 def _unnamed_rotors(tree: JointTree, taken: set[str]) -> list[str]:
-    """Unnamed endless leaves turning about upright axes, three or more on one link and all
-    round it (before and behind, left and right): a multirotor's propellers. A wheel turns about
-    a level axle, a caster's swivel carries its wheel, a spinning lidar is one."""
-    around: dict[str, list[Joint]] = {}
+    """Unnamed endless leaves turning about upright axes, three or more on one rigid body (a
+    link, or links fixed to it: a frame's arms, one rotor on each) and all round it (before and
+    behind, left and right): a multirotor's propellers. A wheel turns about a level axle, a
+    caster's swivel carries its wheel, a spinning lidar is one."""
+    around: dict[str | None, list[Joint]] = {}
+    known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
     for joint in _unnamed_spinners(tree, taken):
         if joint.child not in tree.moving_below and abs(local_axis(joint)[_Z_AXIS]) >= 1 - _LEVEL:
-            around.setdefault(joint.parent, []).append(joint)
+            around.setdefault(moved_by(tree.urdf, joint.parent, known), []).append(joint)
     found: list[str] = []
     for joints in around.values():
+        places = [tree.poses.place(j.child) for j in joints]
+        centre = tuple(sum(axis) / len(places) for axis in zip(*places, strict=True))
         if (
             len(joints) >= _FEWEST_UNNAMED_ROTORS
-            and _sides({j.origin[0] for j in joints})
-            and _sides({j.origin[1] for j in joints})
+            and _sides({place[0] - centre[0] for place in places})
+            and _sides({place[1] - centre[1] for place in places})
         ):
             found.extend(j.name for j in joints)
     return found

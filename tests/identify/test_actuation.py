@@ -432,6 +432,17 @@ def test_unnamed_endless_leaves_on_upright_axes_all_round_a_body_are_its_rotors(
     assert identify_urdf(row.text()).structure != "UAV"
 
 
+def test_unnamed_rotors_each_on_an_arm_fixed_to_the_frame_are_all_round_one_body() -> None:
+    # A frame whose four arms are links of their own, fixed to it, one rotor at each arm's end.
+    robot = RobotText("r")
+    for i, (x, y) in enumerate(((0.2, 0.2), (0.2, -0.2), (-0.2, 0.2), (-0.2, -0.2))):
+        arm = builders.placed(robot, f"a{i}", "fixed", robot.root, f"arm{i}", xyz=f"{x} {y} 0")
+        builders.placed(robot, f"s{i}", "continuous", arm, f"p{i}", xyz="0 0 0.03")
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert (result.structure, len(result.body.rotors)) == ("UAV", 4)
+
+
 def test_unnamed_wheels_on_driven_steering_knuckles_are_wheels_and_a_flippers_are_not() -> None:
     # A car: two unnamed rear wheels on the body, two front ones each on its own driven
     # knuckle turning about an upright axis (steering). Driven joints about level axes instead
