@@ -105,6 +105,8 @@ _LEG_DROP = 0.25
 # A biped's leg, known by place alone, hangs nearly straight down in the zero pose.
 _LEG_STRAIGHT = 0.8
 _BIPED_LEGS = 2
+# The most joints a waist puts between a biped's pelvis and its torso.
+_WAIST = 3
 # The two motors of a five-bar leg sit this close (metres), on one line; legs are paired only
 # on a body of at most this many leg chains (pairing compares each with each).
 _FIVE_BAR_GAP = 0.15
@@ -331,12 +333,35 @@ def _hanging_pair(
     if a[1] * b[1] >= 0 or abs(a[1] + b[1]) > _MIRRORED * abs(a[1] - b[1]):
         return None
     hips = max(a[2], b[2])
+    # Chains on the trunk (the body and a waist above it) start above the hips; a hand's
+    # fingers, past an arm's joints, hang lower.
+    depth: dict[str, int] = {}
     others = [
-        placed[id(limb)][0][2] for limb in limbs if limb not in (one, other) and id(limb) in placed
+        placed[id(limb)][0][2]
+        for limb in limbs
+        if limb not in (one, other)
+        and id(limb) in placed
+        and _movable_above(tree, limb.base, depth) <= _WAIST
     ]
     if any(z < hips for z in others):
         return None
     return one, other
+
+
+def _movable_above(tree: JointTree, link: str, known: dict[str, int]) -> int:
+    """How many movable joints lie between the root and ``link``; every link walked is
+    remembered in ``known``, so many links cost one walk of the tree at most."""
+    walked: list[tuple[str, int]] = []
+    current: str | None = link
+    while current is not None and current not in known:
+        joint = tree.urdf.parent_joint(current)
+        walked.append((current, int(joint is not None and joint.movable)))
+        current = None if joint is None else joint.parent
+    count = 0 if current is None else known[current]
+    for name, step in reversed(walked):
+        count += step
+        known[name] = count
+    return count
 
 
 def legs_by_place(tree: JointTree, limbs: list[Limb]) -> list[Limb]:

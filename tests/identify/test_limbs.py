@@ -711,6 +711,28 @@ def test_two_unnamed_chains_hanging_straight_down_from_a_free_body_are_its_legs(
     assert any("hanging straight down" in limb.why for limb in result.body.limbs)
 
 
+def test_a_bipeds_legs_are_found_though_its_hands_hang_lower_than_its_hips() -> None:
+    # Arms hanging straight down at rest, each ending in a hand of three long fingers (five
+    # joints each, as a hand with mimic knuckles has) whose bases are below the hips: chains
+    # past an arm's joints are on no trunk, and say nothing of where arms start.
+    robot = RobotText("r", root="pelvis")
+    for side, y in (("a", 0.1), ("b", -0.1)):
+        placed_chain(robot, "pelvis", f"{side}j", start=f"0 {y} -0.05", steps=["0 0 -0.1"] * 5)
+    for side, y in (("c", 0.25), ("d", -0.25)):
+        hand = placed_chain(robot, "pelvis", f"{side}j", start=f"0 {y} 0.4", steps=["0 0 -0.2"] * 3)
+        for finger in range(3):
+            placed_chain(
+                robot,
+                hand,
+                f"{side}f{finger}",
+                start=f"0.02 {0.01 * finger} -0.05",
+                steps=["0 0 -0.01"] * 4,
+            )
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs].count("leg") == 2
+
+
 def test_the_same_chains_on_a_body_bolted_to_the_world_stay_arms() -> None:
     robot = nameless_humanoid(root="world")
     result = identify_urdf(robot.text())

@@ -587,9 +587,9 @@ class _Builder:
                     found.append(self._sensor(sensor, reference, "gazebo", kind))
             # SDF links a <gazebo> block adds to the model (a GPS on a link of its own, as PX4's
             # models insert): their sensors are the model's.
-            for link in gazebo.findall("link"):
-                name = (link.get("name") or "").strip() or None
-                found += [self._sensor(sensor, name, "gazebo") for sensor in link.findall("sensor")]
+            for sdf_link in gazebo.findall("link"):
+                name = (sdf_link.get("name") or "").strip() or None
+                found += [self._sensor(s, name, "gazebo") for s in sdf_link.findall("sensor")]
         # URDF's own <sensor> element (urdfdom): <sensor name><parent link/><camera|ray/>.
         for sensor in root.findall("sensor"):
             parent = sensor.find("parent")
