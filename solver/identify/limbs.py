@@ -332,20 +332,28 @@ def _hanging_pair(
     # Mirrored across the body: one on each side, as far out.
     if a[1] * b[1] >= 0 or abs(a[1] + b[1]) > _MIRRORED * abs(a[1] - b[1]):
         return None
-    hips = max(a[2], b[2])
-    # Chains on the trunk (the body and a waist above it) start above the hips; a hand's
-    # fingers, past an arm's joints, hang lower.
-    depth: dict[str, int] = {}
-    others = [
-        placed[id(limb)][0][2]
-        for limb in limbs
-        if limb not in (one, other)
-        and id(limb) in placed
-        and _movable_above(tree, limb.base, depth) <= _WAIST
-    ]
-    if any(z < hips for z in others):
+    if not _trunk_above(tree, limbs, (one, other), placed, max(a[2], b[2])):
         return None
     return one, other
+
+
+def _trunk_above(
+    tree: JointTree,
+    limbs: list[Limb],
+    pair: tuple[Limb, Limb],
+    placed: dict[int, tuple[Place, Place]],
+    hips: float,
+) -> bool:
+    """Every other chain on the trunk (the body and a waist above it) starts no lower than
+    ``hips``; a hand's fingers, past an arm's joints, may hang lower."""
+    depth: dict[str, int] = {}
+    return not any(
+        placed[id(limb)][0][2] < hips
+        for limb in limbs
+        if limb not in pair
+        and id(limb) in placed
+        and _movable_above(tree, limb.base, depth) <= _WAIST
+    )
 
 
 def _movable_above(tree: JointTree, link: str, known: dict[str, int]) -> int:
