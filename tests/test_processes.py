@@ -42,8 +42,9 @@ def test_a_run_that_leaves_a_process_alive_fails_and_ends_it(tmp_path: Path) -> 
     (tmp_path / "test_leak.py").write_text(
         "import os, subprocess, sys, time\n"
         "def test_leaks():\n"
-        f"    subprocess.Popen([sys.executable, '-c', {leak!r}], start_new_session=True)\n"
+        f"    child = subprocess.Popen([sys.executable, '-c', {leak!r}], start_new_session=True)\n"
         f"    while not os.path.exists({str(pid_file)!r}):\n"
+        "        assert child.poll() is None, 'the leak ended before it said it runs'\n"
         "        time.sleep(0.01)\n",
         encoding="utf-8",
     )

@@ -25,6 +25,7 @@ Not here: the roles of the chains the other joints form (:mod:`solver.identify.l
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator, Mapping
 
 from solver.identify.hands import gripper_closure, jaws
@@ -42,6 +43,10 @@ _LEVEL = 0.2
 # Twin screws sit apart across their axes; along them, at most this share of that (wheels on
 # one axle sit apart along it).
 _SCREWS_ALONG = 0.25
+# How many screws a vessel has, in mirrored pairs.
+_SCREWS = (2, 4)
+# How far (metres) two mirrored places may miss each other's mirror image.
+_MIRROR_TOLERANCE = 0.02
 # The fewest free rollers on an omni or mecanum wheel's rim.
 _ROLLERS = 3
 # As many endless joints level with one link are a wheel-leg walker's legs, not its wheels.
@@ -64,7 +69,7 @@ def joint_roles(tree: JointTree) -> dict[str, Role]:
             roles[joint.name] = role
     for name, why in jaws(tree, set(roles)).items():
         roles[name] = Role(name, "gripper", why)
-    for name in _unnamed_screws(tree, set(roles)):
+    for name in _unnamed_screws(tree, roles):
         roles[name] = Role(
             name,
             "thruster",
@@ -243,8 +248,8 @@ def _unnamed_wheels(tree: JointTree, taken: set[str]) -> list[str]:
     A base whose wheel joints carry no name (``fl_joint`` on ``fl_Link``) still has them where
     wheels are: continuous joints (no limits, they turn for ever) that carry nothing that
     moves, hanging below the link they are on or turning about a level axis across it (a
-    wheel's axle, whatever the height of the link's origin; in the body's frame on a link that
-    only slides), at least one on each side of it.
+    wheel's axle, whatever the height of the link's origin; in the body's frame too on a link
+    fixed to the body or sliding on it), at least one on each side of it.
     Fingers have limits; rotors sit level with or above their body and turn about an upright
     axis; a propeller on a wing turns about the axis it flies along. Six or more level with a
     link are a wheel-leg walker's whole-turning legs (:func:`~solver.identify.limbs.find_limbs`).
@@ -271,20 +276,42 @@ def _unnamed_wheels(tree: JointTree, taken: set[str]) -> list[str]:
     return found
 
 
-def _unnamed_screws(tree: JointTree, taken: set[str]) -> list[str]:
+def _unnamed_screws(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     """Unnamed spinning leaves below one link, two or more side by side, turning about the
     line the body travels along and sitting apart across it: a vessel's screws, pushing it.
 
     Wheels on axles sit apart along the axle they share (a left and a right wheel), or turn
     about lines that are not one (an omni base's rims); twin propellers under a hull turn about
-    the line they push along and sit apart across it.
+    the line they push along and sit apart across it, two or four, mirrored across the body.
+    Not on a body a drive, track or flight plugin moves, nor one with control surfaces (an
+    aircraft's propellers).
     """
-    below, _ = _wheel_candidates(tree, taken)
+    if tree.labels("drive") or tree.labels("track") or tree.labels("flight"):
+        return []  # a drive plugin's body rolls; a flight plugin's flies
+    if any(role.role == "fin" for role in roles.values()):
+        return []  # control surfaces: an aircraft's propellers
+    below, _ = _wheel_candidates(tree, set(roles))
     found: list[str] = []
     for joints in below.values():
-        if len(joints) >= 2 and _side_by_side(tree, joints):
+        if len(joints) in _SCREWS and _side_by_side(tree, joints) and _mirrored_pairs(tree, joints):
             found.extend(j.name for j in joints)
     return found
+
+
+def _mirrored_pairs(tree: JointTree, joints: list[Joint]) -> bool:
+    """Each of ``joints`` has a partner mirrored across the body's middle (y to -y, at one
+    place along it and one height): a pair of screws or two, not a row."""
+    places = [tree.poses.place(j.child) for j in joints]
+    return all(
+        any(
+            math.isclose(a[1], -b[1], abs_tol=_MIRROR_TOLERANCE)
+            and a[1] != 0
+            and math.isclose(a[0], b[0], abs_tol=_MIRROR_TOLERANCE)
+            and math.isclose(a[2], b[2], abs_tol=_MIRROR_TOLERANCE)
+            for b in places
+        )
+        for a in places
+    )
 
 
 def _side_by_side(tree: JointTree, joints: list[Joint]) -> bool:
@@ -307,18 +334,19 @@ def _spread(values: list[float]) -> float:
 
 def _unnamed_rotors(tree: JointTree, taken: set[str]) -> list[str]:
     """Unnamed endless leaves turning about upright axes, three or more on one rigid body (a
-    link, or links fixed to it: a frame's arms, one rotor on each) and all round it (before and
-    behind, left and right): a multirotor's propellers. A wheel turns about a level axle, a
-    caster's swivel carries its wheel, a spinning lidar is one."""
+    link, or links fixed to it: a frame's arms, one rotor on each) and all round its frame's
+    origin (before and behind, left and right): a multirotor's propellers. A wheel turns about
+    a level axle, a caster's swivel carries its wheel, a spinning lidar is one."""
     around: dict[str | None, list[Joint]] = {}
     known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
     for joint in _unnamed_spinners(tree, taken):
         if joint.child not in tree.moving_below and abs(local_axis(joint)[_Z_AXIS]) >= 1 - _LEVEL:
             around.setdefault(moved_by(tree.urdf, joint.parent, known), []).append(joint)
     found: list[str] = []
-    for joints in around.values():
+    for carrier, joints in around.items():
         places = [tree.poses.place(j.child) for j in joints]
-        centre = tuple(sum(axis) / len(places) for axis in zip(*places, strict=True))
+        body = tree.urdf.joint(carrier) if carrier is not None else None
+        centre = tree.poses.place(body.child if body is not None else tree.urdf.root)
         if (
             len(joints) >= _FEWEST_UNNAMED_ROTORS
             and _sides({place[0] - centre[0] for place in places})
@@ -347,8 +375,8 @@ def _wheel_candidates(
         if joint.origin[2] < 0:
             below.setdefault(joint.parent, []).append(joint)
         elif _axle(local_axis(joint)) or (
-            # On a link that only slides on the body (a wheel-drop suspension, its frame turned
-            # to slide along its own axis), the axle is read in the body's frame.
+            # On a link fixed to the body or sliding on it (a wheel-drop suspension, its frame
+            # turned to slide along its own axis), the axle is read in the body's frame too.
             nearest_above(tree.urdf, joint.parent, known, _turns) is None
             and _axle(tree.poses.axis(joint))
         ):

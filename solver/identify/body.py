@@ -350,7 +350,7 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
         casters=tuple(parts.of("caster")),
         wings=tuple(wings(tree, parts.roles)),
         marine_plugins=tuple(dict.fromkeys((*tree.labels("thruster"), *tree.labels("marine")))),
-        surface_hints=surface_hints(tree, screws=bool(parts.of("thruster"))),
+        surface_hints=surface_hints(tree, thrusters=bool(parts.of("thruster"))),
         underwater_hints=underwater_hints(tree),
         water_frames=water_frames(tree),
         flight_hints=flight_hints(tree, parts.roles, parts.limbs),

@@ -107,6 +107,9 @@ _LEG_STRAIGHT = 0.8
 _BIPED_LEGS = 2
 # The most joints a waist puts between a biped's pelvis and its torso.
 _WAIST = 3
+# The most unnamed chains above a biped's hips among which its two arms are looked for (two
+# arms, a neck, a tail, a sensor mount); with more, none is chosen.
+_MOST_ABOVE_THE_HIPS = 6
 # The two motors of a five-bar leg sit this close (metres), on one line; legs are paired only
 # on a body of at most this many leg chains (pairing compares each with each).
 _FIVE_BAR_GAP = 0.15
@@ -250,12 +253,14 @@ def arms_beside_legs(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     if len(legs) != _BIPED_LEGS or any(limb.kind == "arm" for limb in limbs):
         return limbs
     candidates = _above_the_hips(tree, limbs, legs)
+    if len(candidates) > _MOST_ABOVE_THE_HIPS:
+        return limbs  # no biped's upper body: too many chains to choose a pair from
+    starts = {id(limb): _start(tree, limb) for limb in candidates}
     pairs = [
         (one, other)
         for index, one in enumerate(candidates)
         for other in candidates[index + 1 :]
-        if len(one.joints) == len(other.joints)
-        and _mirrored(_start(tree, one), _start(tree, other))
+        if len(one.joints) == len(other.joints) and _mirrored(starts[id(one)], starts[id(other)])
     ]
     if len(pairs) != 1:
         return limbs  # none, or no one pair to choose

@@ -31,8 +31,8 @@ description: topics show them (:mod:`solver.identify.interfaces`). A description
 that a vehicle *could* take waypoints: the profile's ``motion.navigation`` names, per source
 that moves the body (wheels, a drive plugin, thrusters, flight; or a control, for every source
 of it), the sensors navigation needs (a driven ground base and a lidar or a GPS; thrusters and
-a lidar or a Doppler velocity log; a flown body and odometry or a GPS; a walker and a lidar).
-Such a Waypoint is a guess and says so.
+a lidar or a Doppler velocity log; a flown body and odometry or a GPS; no walker, whose file
+does not tell). Such a Waypoint is a guess and says so.
 """
 
 from __future__ import annotations

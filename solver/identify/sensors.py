@@ -160,7 +160,9 @@ def _devices(found: list[tuple[Detection, str]], urdf: Urdf) -> list[Detection]:
         if detection.link is not None:
             origins.setdefault((detection.kind, detection.link), set()).add(origin)
     kept: list[Detection] = []
-    seen: dict[tuple[str, str], list[tuple[str, str]]] = {}
+    # Per kind and link: the names and the origins kept so far (what :func:`_same` compares a
+    # new declaration with, by sets: many sensors on one link stay linear).
+    seen: dict[tuple[str, str], tuple[set[str], set[str]]] = {}
     for detection, origin in found:
         link = detection.link
         if link is None:
@@ -170,10 +172,11 @@ def _devices(found: list[tuple[Detection, str]], urdf: Urdf) -> list[Detection]:
         # sensor's optical frame); two elements of one kind (a shin and a foot contact) stay.
         if any(origins.get((detection.kind, up), {origin}) - {origin} for up in _above(link, urdf)):
             continue
-        here = seen.setdefault((detection.kind, link), [])
-        if any(_same(detection, origin, name, theirs) for name, theirs in here):
+        names, places = seen.setdefault((detection.kind, link), (set(), set()))
+        if _same(detection, origin, names, places):
             continue
-        here.append((detection.name, origin))
+        names.add(detection.name)
+        places.add(origin)
         kept.append(detection)
     depth = {d.link for d in kept if d.kind == "depth_camera"}
     # A colour camera on the link of a depth camera is the RGB-D camera's colour stream.
@@ -298,11 +301,14 @@ def _pair_name(first: Detection, second: Detection) -> str:
     return first.name
 
 
-def _same(detection: Detection, origin: str, name: str, theirs: str) -> bool:
-    """Declarations of one kind on one link are one device when they come from two places
-    (a Gazebo and a URDF element) or share a name, or are parts of one IMU (a gyrometer and
-    an accelerometer); sensors declared alike with names of their own are distinct."""
-    return origin != theirs or detection.name == name or detection.kind in _COMPOSED
+def _same(detection: Detection, origin: str, names: set[str], origins: set[str]) -> bool:
+    """A declaration is a device already kept on its link (``names`` and ``origins`` of those
+    of its kind there) when one came from another place (a Gazebo and a URDF element) or
+    shares its name, or when both are parts of one IMU (a gyrometer and an accelerometer);
+    sensors declared alike with names of their own are distinct."""
+    if not origins:
+        return False
+    return bool(origins - {origin}) or detection.name in names or detection.kind in _COMPOSED
 
 
 def _above(link: str, urdf: Urdf) -> list[str]:

@@ -163,17 +163,18 @@ def wings(tree: JointTree, roles: dict[str, Role]) -> list[str]:
     return found + surfaces if found else []
 
 
-def surface_hints(tree: JointTree, *, screws: bool = False) -> tuple[str, ...]:
+def surface_hints(tree: JointTree, *, thrusters: bool = False) -> tuple[str, ...]:
     """A body in water at the surface: surface plugins, and the words the profile's ``surface``
     pattern reads in the hull's own elements (``<metacentric_width>``, wind on its buoyancy)
     or in the parameters of its water plugins, never in a sensor's settings (a barometer's
     water-surface offset) nor in an underwater plugin's (a buoyancy engine's surface); a body
     whose buoyancy compensation has a hull's reserve (it floats). With none of them, and nothing
     of a body below the surface (no plugin, sensor or frame of one), a GPS or a lidar says it:
-    satellites are heard, and a laser scans, only above the water. ``screws``: the body is in
-    water by its propellers' place alone (:mod:`solver.identify.actuation`), no plugin's word."""
+    satellites are heard, and a laser scans, only above the water. ``thrusters``: joints play a
+    thruster's role (an unnamed pair of screws, :mod:`solver.identify.actuation`): the body is
+    in water though no plugin or name says so."""
     pattern = tree.profile.plugin_pattern("surface")
-    if pattern is None or not (tree.reader.marine or screws):
+    if pattern is None or not (tree.reader.marine or thrusters):
         return ()
     hints = list(tree.labels("surface"))
     hints += sorted(

@@ -125,6 +125,32 @@ def test_unnamed_spinners_side_by_side_below_a_hull_turning_along_it_are_its_scr
     assert identify_urdf(twin_screws(gps=True).text()).structure == "Surface Vessel"
 
 
+def test_spinners_below_a_body_a_drive_plugin_moves_or_with_control_surfaces_are_no_screws() -> (
+    None
+):
+    driven = twin_screws()
+    driven.add(builders.model_plugin("drive", "libgazebo_ros_diff_drive.so"))
+    plane = twin_screws()
+    limit = '<limit lower="-0.3" upper="0.3" effort="1" velocity="1"/>'
+    plane.joint("aileron_joint", "revolute", "base_link", "aileron", limit)
+    for robot in (driven, plane):
+        result = identify_urdf(robot.text())
+        assert result.body is not None
+        assert result.body.thrusters == ()
+        assert result.structure not in ("Surface Vessel", "Underwater Vehicle")
+
+
+def test_a_row_of_spinners_below_a_body_is_no_pair_of_screws() -> None:
+    # Three in a row across the body (not mirrored pairs), turning about x.
+    robot = RobotText("row")
+    for index, y in enumerate((0.5, 0.2, -0.3)):
+        place = f'<origin xyz="-1.0 {y} -0.5"/><axis xyz="1 0 0"/>'
+        robot.joint(f"m{index}", "continuous", "base_link", f"p{index}", place)
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert result.body.thrusters == ()
+
+
 def test_spinners_turning_about_a_line_across_the_body_are_wheels_not_screws() -> None:
     # A left and a right wheel on one axle; and a front and a rear wheel on one side (a
     # bogie's), apart across their axle as twin screws are across theirs.
@@ -441,6 +467,16 @@ def test_unnamed_rotors_each_on_an_arm_fixed_to_the_frame_are_all_round_one_body
     result = identify_urdf(robot.text())
     assert result.body is not None
     assert (result.structure, len(result.body.rotors)) == ("UAV", 4)
+
+
+def test_unnamed_upright_spinners_all_on_one_side_of_a_frame_are_no_rotors() -> None:
+    # Three fans off a straight line, all before and left of the frame's origin.
+    robot = RobotText("fans")
+    for i, (x, y) in enumerate(((0.1, 0.1), (0.2, 0.15), (0.3, 0.12))):
+        builders.placed(robot, f"s{i}", "continuous", robot.root, f"s{i}_l", xyz=f"{x} {y} 0.02")
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert result.body.rotors == ()
 
 
 def test_unnamed_wheels_on_driven_steering_knuckles_are_wheels_and_a_flippers_are_not() -> None:

@@ -529,9 +529,27 @@ def test_a_ros2_control_sensor_is_told_by_what_it_reads() -> None:
         hardware_sensor("body", "orientation.x", "angular_velocity.x", "linear_acceleration.x"),
         hardware_sensor("tcp_pose", "position.x", "orientation.w"),  # a pose: computed
         hardware_sensor("external_wrench_in_base", *WRENCH),  # the controller's estimate
+        hardware_sensor("estimated_tcp_wrench", *WRENCH),
         hardware_sensor("battery", "voltage"),
     )
     assert sorted(found) == [("force_torque", "Force Sensor", 2), ("imu", None, 1)]
+
+
+def test_a_ros2_control_device_named_external_is_still_a_device() -> None:
+    # An IMU or a force sensor mounted outside the robot's body: external, measured.
+    found = kinds(
+        hardware_sensor("external_imu", "angular_velocity.x", "linear_acceleration.x"),
+        hardware_sensor("external_ft_sensor", *WRENCH),
+    )
+    assert sorted(found) == [("force_torque", "Force Sensor", 1), ("imu", None, 1)]
+
+
+def test_twenty_thousand_force_sensors_on_one_link_are_told_apart_in_linear_time() -> None:
+    # Each is compared with the names and sources kept so far, as sets (pair by pair, 14 s).
+    sensors = "".join(
+        builders.gazebo_sensor("base_link", "force_torque", f"ft{i}") for i in range(20_000)
+    )
+    assert kinds(sensors) == [("force_torque", "Force Sensor", 20_000)]
 
 
 def test_a_ros2_control_sensor_that_names_a_device_declared_elsewhere_adds_none() -> None:

@@ -703,7 +703,7 @@ _HARDWARE_READINGS = (
     ("imu", frozenset({"angular_velocity", "linear_acceleration"})),
 )
 _FRAME_PARAMS = frozenset({"frame_id", "sensor_frame", "frame"})
-_ESTIMATE = re.compile(r"estimat|external", re.IGNORECASE)
+_ESTIMATE = re.compile(r"estimat|external_(wrench|force|torque)", re.IGNORECASE)
 
 
 def _command_interfaces(root: etree._Element) -> tuple[tuple[str, tuple[str, ...]], ...]:
