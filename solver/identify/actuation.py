@@ -69,6 +69,13 @@ def joint_roles(tree: JointTree) -> dict[str, Role]:
             roles[joint.name] = role
     for name, why in jaws(tree, set(roles)).items():
         roles[name] = Role(name, "gripper", why)
+    for name in _named_screws(tree, roles):
+        roles[name] = Role(
+            name,
+            "thruster",
+            f"named as a rotor ({roles[name].evidence}), but below the body beside its "
+            "partner, turning about the line it pushes along (a screw)",
+        )
     for name in _unnamed_screws(tree, roles):
         roles[name] = Role(
             name,
@@ -276,6 +283,32 @@ def _unnamed_wheels(tree: JointTree, taken: set[str]) -> list[str]:
     return found
 
 
+def _named_screws(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
+    """Rotor-named joints (``left_prop_joint``) that are a vessel's screws by place: below the
+    link they turn on, side by side, mirrored, turning about the line the body travels along
+    (see :func:`_unnamed_screws`); a multirotor's rotors turn about upright axes."""
+    if not _may_have_screws(tree, roles):
+        return []
+    by_link: dict[str, list[Joint]] = {}
+    for name, role in roles.items():
+        joint = tree.urdf.joint(name)
+        if role.role == "rotor" and joint is not None and joint.origin[2] < 0:
+            by_link.setdefault(joint.parent, []).append(joint)
+    found: list[str] = []
+    for joints in by_link.values():
+        if len(joints) in _SCREWS and _side_by_side(tree, joints) and _mirrored_pairs(tree, joints):
+            found.extend(j.name for j in joints)
+    return found
+
+
+def _may_have_screws(tree: JointTree, roles: Mapping[str, Role]) -> bool:
+    """No drive, track or flight plugin moves the body, and it has no control surface (an
+    aircraft's propellers)."""
+    if tree.labels("drive") or tree.labels("track") or tree.labels("flight"):
+        return False
+    return not any(role.role == "fin" for role in roles.values())
+
+
 def _unnamed_screws(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     """Unnamed spinning leaves below one link, two or more side by side, turning about the
     line the body travels along and sitting apart across it: a vessel's screws, pushing it.
@@ -286,10 +319,8 @@ def _unnamed_screws(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     Not on a body a drive, track or flight plugin moves, nor one with control surfaces (an
     aircraft's propellers).
     """
-    if tree.labels("drive") or tree.labels("track") or tree.labels("flight"):
-        return []  # a drive plugin's body rolls; a flight plugin's flies
-    if any(role.role == "fin" for role in roles.values()):
-        return []  # control surfaces: an aircraft's propellers
+    if not _may_have_screws(tree, roles):
+        return []
     below, _ = _wheel_candidates(tree, set(roles))
     found: list[str] = []
     for joints in below.values():

@@ -167,7 +167,8 @@ def surface_hints(tree: JointTree, *, thrusters: bool = False) -> tuple[str, ...
     """A body in water at the surface: surface plugins, and the words the profile's ``surface``
     pattern reads in the hull's own elements (``<metacentric_width>``, wind on its buoyancy)
     or in the parameters of its water plugins, never in a sensor's settings (a barometer's
-    water-surface offset) nor in an underwater plugin's (a buoyancy engine's surface); a body
+    water-surface offset) nor in an underwater plugin's (a buoyancy engine's surface), nor in a
+    ``<surface>`` of numbers (where the water's surface lies, :func:`_water_level`); a body
     whose buoyancy compensation has a hull's reserve (it floats). With none of them, and nothing
     of a body below the surface (no plugin, sensor or frame of one), a GPS or a lidar says it:
     satellites are heard, and a laser scans, only above the water. ``thrusters``: joints play a
@@ -185,11 +186,30 @@ def surface_hints(tree: JointTree, *, thrusters: bool = False) -> tuple[str, ...
         for plugin in tree.reader.plugins_of(part):
             if id(plugin) in below:
                 continue  # a diver's plugin names the surface it rises to, not a hull on it
-            hints += sorted({tag.lower() for tag, _ in plugin.params if pattern.search(tag)})
+            hints += sorted(
+                {
+                    tag.lower()
+                    for tag, text in plugin.params
+                    if pattern.search(tag) and not _water_level(tag, text)
+                }
+            )
     hints += _floating_hull(tree)
     if not hints and not underwater_hints(tree) and not water_frames(tree):
         hints += _above_water_sensors(tree)
     return tuple(dict.fromkeys(hints))
+
+
+def _water_level(tag: str, text: str) -> bool:
+    """A plugin's ``<surface>`` holding only numbers (``0 0 40``, ``100.0``): where the water's
+    surface lies in the world, a setting of every body in water, afloat or diving."""
+    numbers = text.split()
+    if tag.lower() != "surface" or not numbers:
+        return False
+    try:
+        [float(number) for number in numbers]
+    except ValueError:
+        return False
+    return True
 
 
 def _floating_hull(tree: JointTree) -> list[str]:

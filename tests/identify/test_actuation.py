@@ -105,13 +105,15 @@ def test_unnamed_wheels_on_sliding_suspension_links_turn_about_level_axles_in_th
     assert turned.body.wheels == ()
 
 
-def twin_screws(*, gps: bool = False, axis: str = "1 0 0") -> RobotText:
-    """Two unnamed endless leaves hanging below a hull at its stern, side by side, turning
-    about ``axis`` (x: the line the body travels along); ``gps`` adds a GPS frame."""
+def twin_screws(*, gps: bool = False, axis: str = "1 0 0", named: str = "m") -> RobotText:
+    """Two endless leaves (``<named>0_joint`` ..) hanging below a hull at its stern, side by
+    side, turning about ``axis`` (x: the line the body travels along); ``gps`` adds a GPS
+    frame."""
     robot = RobotText("hull")
     for index, y in enumerate((1.0, -1.0)):
         place = f'<origin xyz="-1.5 {y} -0.5"/><axis xyz="{axis}"/>'
-        robot.joint(f"m{index}", "continuous", "base_link", f"p{index}", place)
+        joint = "m" + str(index) if named == "m" else f"{named}{index}_joint"
+        robot.joint(joint, "continuous", "base_link", f"p{index}", place)
     if gps:
         robot.fixed("base_link", "gps")
     return robot
@@ -149,6 +151,17 @@ def test_a_row_of_spinners_below_a_body_is_no_pair_of_screws() -> None:
     result = identify_urdf(robot.text())
     assert result.body is not None
     assert result.body.thrusters == ()
+
+
+def test_propeller_named_joints_side_by_side_below_a_hull_are_screws_not_rotors() -> None:
+    result = identify_urdf(twin_screws(named="prop", gps=True).text())
+    assert result.body is not None
+    assert (result.body.rotors, result.body.thrusters) == ((), ("prop0_joint", "prop1_joint"))
+    assert result.structure == "Surface Vessel"
+    # Turning about upright axes, they lift: a bicopter's rotors.
+    lifting = identify_urdf(twin_screws(named="prop", axis="0 0 1").text())
+    assert lifting.body is not None
+    assert lifting.body.thrusters == ()
 
 
 def test_spinners_turning_about_a_line_across_the_body_are_wheels_not_screws() -> None:

@@ -569,3 +569,10 @@ def test_a_sensor_on_an_sdf_link_a_gazebo_block_adds_is_the_models() -> None:
         '<plugin filename="libgazebo_gps_plugin.so" name="gps_plugin"/></sensor></link></gazebo>'
     )
     assert found == [("gps", None, 1)]
+    nested = kinds(
+        '<gazebo><model name="gps0"><link name="link">'
+        '<sensor name="gps" type="gps"><plugin filename="libgazebo_gps_plugin.so" name="g"/>'
+        '</sensor></link></model><joint name="gps0_joint" type="fixed"><parent>base_link</parent>'
+        "<child>gps0::link</child></joint></gazebo>"
+    )
+    assert nested == [("gps", None, 1)]  # PX4's: a model of its own, joined to the body

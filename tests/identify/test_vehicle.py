@@ -134,6 +134,19 @@ def test_a_gps_frame_fixed_to_a_hull_of_fixed_thrusters_floats_it_unless_a_dvl_f
     assert identify_urdf(boat.text()).structure == "Underwater Vehicle"
 
 
+def test_a_water_plugins_surface_of_numbers_is_where_the_water_lies_not_a_floating_hull() -> None:
+    # freefloating_gazebo's buoyancy plugin sets the water's surface at z = 40 for any body.
+    diver = hull_of_fixed_thrusters(2)
+    diver.add(
+        builders.model_plugin(
+            "freebuoyancy_gazebo", "libfreebuoyancy_gazebo.so", "<surface>0 0 40</surface>"
+        )
+    )
+    result = identify_urdf(diver.text())
+    assert result.body is not None
+    assert (result.structure, result.body.surface_hints) == ("Underwater Vehicle", ())
+
+
 def test_a_gps_frame_a_joint_moves_says_nothing_of_the_surface() -> None:
     boat = hull_of_fixed_thrusters(2)
     boat.fixed(boat.chain(boat.root, ["mast"]), "gps_frame")

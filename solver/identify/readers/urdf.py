@@ -585,9 +585,9 @@ class _Builder:
                 elif _legacy(sensor, "sensor"):
                     kind = str(sensor.tag).rsplit("}", 1)[1]
                     found.append(self._sensor(sensor, reference, "gazebo", kind))
-            # SDF links a <gazebo> block adds to the model (a GPS on a link of its own, as PX4's
-            # models insert): their sensors are the model's.
-            for sdf_link in gazebo.findall("link"):
+            # SDF links a <gazebo> block adds to the model, alone or in a nested <model> (a GPS
+            # on a link of its own, as PX4's models insert): their sensors are the model's.
+            for sdf_link in gazebo.iterfind(".//link"):
                 name = (sdf_link.get("name") or "").strip() or None
                 found += [self._sensor(s, name, "gazebo") for s in sdf_link.findall("sensor")]
         # URDF's own <sensor> element (urdfdom): <sensor name><parent link/><camera|ray/>.
