@@ -576,3 +576,11 @@ def test_a_sensor_on_an_sdf_link_a_gazebo_block_adds_is_the_models() -> None:
         "<child>gps0::link</child></joint></gazebo>"
     )
     assert nested == [("gps", None, 1)]  # PX4's: a model of its own, joined to the body
+
+
+def test_a_sensor_written_inside_a_urdf_link_as_sdf_writes_it_is_that_links() -> None:
+    found = kinds(
+        '<link name="imu_link"><sensor name="imu_sensor" type="imu"><always_on>true</always_on>'
+        '</sensor><sensor name="imager" type="camera"><camera/></sensor></link>'
+    )
+    assert sorted(found) == [("camera", "2D Camera", 1), ("imu", None, 1)]

@@ -606,6 +606,10 @@ class _Builder:
                 "",
             )
             found.append(self._sensor(sensor, link, "urdf", str(kind)))
+        # SDF's way, kept by some URDFs a converter reads: a <sensor> inside its <link>.
+        for urdf_link in root.findall("link"):
+            name = (urdf_link.get("name") or "").strip() or None
+            found += [self._sensor(s, name, "gazebo") for s in urdf_link.findall("sensor")]
         found += _hardware_sensors(root)
         return tuple(found)
 
