@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, replace
 from functools import cached_property
 from typing import TYPE_CHECKING
@@ -578,18 +578,7 @@ class _Builder:
     ) -> tuple[SensorTag, ...]:
         found = []
         for gazebo in root.findall("gazebo"):
-            reference = gazebo.get("reference")
-            for sensor in gazebo:
-                if sensor.tag == "sensor":
-                    found.append(self._sensor(sensor, reference, "gazebo"))
-                elif _legacy(sensor, "sensor"):
-                    kind = str(sensor.tag).rsplit("}", 1)[1]
-                    found.append(self._sensor(sensor, reference, "gazebo", kind))
-            # SDF links a <gazebo> block adds to the model, alone or in a nested <model> (a GPS
-            # on a link of its own, as PX4's models insert): their sensors are the model's.
-            for sdf_link in gazebo.iterfind(".//link"):
-                name = (sdf_link.get("name") or "").strip() or None
-                found += [self._sensor(s, name, "gazebo") for s in sdf_link.findall("sensor")]
+            found += self._gazebo_sensors(gazebo)
         # URDF's own <sensor> element (urdfdom): <sensor name><parent link/><camera|ray/>.
         for sensor in root.findall("sensor"):
             parent = sensor.find("parent")
@@ -607,11 +596,31 @@ class _Builder:
             )
             found.append(self._sensor(sensor, link, "urdf", str(kind)))
         # SDF's way, kept by some URDFs a converter reads: a <sensor> inside its <link>.
-        for urdf_link in root.findall("link"):
-            name = (urdf_link.get("name") or "").strip() or None
-            found += [self._sensor(s, name, "gazebo") for s in urdf_link.findall("sensor")]
+        found += self._link_sensors(root.findall("link"))
         found += _hardware_sensors(root)
         return tuple(found)
+
+    def _gazebo_sensors(self, gazebo: etree._Element) -> list[SensorTag]:
+        """The sensors of one ``<gazebo>`` block: its own (on its ``reference`` link), and
+        those of SDF links it adds to the model, alone or in a nested ``<model>`` (a GPS on a
+        link of its own, as PX4's models insert)."""
+        reference = gazebo.get("reference")
+        found = []
+        for sensor in gazebo:
+            if sensor.tag == "sensor":
+                found.append(self._sensor(sensor, reference, "gazebo"))
+            elif _legacy(sensor, "sensor"):
+                kind = str(sensor.tag).rsplit("}", 1)[1]
+                found.append(self._sensor(sensor, reference, "gazebo", kind))
+        return found + self._link_sensors(gazebo.iterfind(".//link"))
+
+    def _link_sensors(self, links: Iterable[etree._Element]) -> list[SensorTag]:
+        """The ``<sensor>`` elements written inside ``links``, each on its link."""
+        found = []
+        for link in links:
+            name = (link.get("name") or "").strip() or None
+            found += [self._sensor(sensor, name, "gazebo") for sensor in link.findall("sensor")]
+        return found
 
     @staticmethod
     def _controlled(root: etree._Element) -> Iterator[str]:
