@@ -284,29 +284,40 @@ def _unnamed_wheels(tree: JointTree, taken: set[str]) -> list[str]:
 
 
 def _named_screws(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
-    """Rotor-named joints (``left_prop_joint``) that are a vessel's screws by place: below the
-    link they turn on, side by side, mirrored, turning about the line the body travels along
-    (see :func:`_unnamed_screws`); a multirotor's rotors turn about upright axes."""
+    """Rotor-named joints (``left_prop_joint``) that are a vessel's screws by place: on one
+    rigid body and below it, side by side, mirrored, turning about the line the body travels
+    along as their written ``<axis>`` says (see :func:`_unnamed_screws`); a multirotor's rotors
+    turn about upright axes, and a name outweighs a defaulted axis."""
     if not _may_have_screws(tree, roles):
         return []
-    by_link: dict[str, list[Joint]] = {}
+    by_body: dict[str | None, list[Joint]] = {}
+    known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
     for name, role in roles.items():
         joint = tree.urdf.joint(name)
-        if role.role == "rotor" and joint is not None and joint.origin[2] < 0:
-            by_link.setdefault(joint.parent, []).append(joint)
+        if role.role == "rotor" and joint is not None and joint.axis_written:
+            by_body.setdefault(moved_by(tree.urdf, joint.parent, known), []).append(joint)
     found: list[str] = []
-    for joints in by_link.values():
-        if len(joints) in _SCREWS and _side_by_side(tree, joints) and _mirrored_pairs(tree, joints):
+    for carrier, joints in by_body.items():
+        body = tree.urdf.joint(carrier) if carrier is not None else None
+        floor = tree.poses.place(body.child if body is not None else tree.urdf.root)[_Z_AXIS]
+        if (
+            len(joints) in _SCREWS
+            and all(tree.poses.place(j.child)[_Z_AXIS] < floor for j in joints)
+            and _side_by_side(tree, joints)
+            and _mirrored_pairs(tree, joints)
+        ):
             found.extend(j.name for j in joints)
     return found
 
 
 def _may_have_screws(tree: JointTree, roles: Mapping[str, Role]) -> bool:
-    """No drive, track or flight plugin moves the body, and it has no control surface (an
-    aircraft's propellers)."""
+    """No drive, track or flight plugin moves the body, and it has no control surface nor a
+    wing (an aircraft's propellers)."""
     if tree.labels("drive") or tree.labels("track") or tree.labels("flight"):
         return False
-    return not any(role.role == "fin" for role in roles.values())
+    if any(role.role == "fin" for role in roles.values()):
+        return False
+    return not any("wing" in tree.parts_of(joint.child) for joint in tree.urdf.joints)
 
 
 def _unnamed_screws(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:

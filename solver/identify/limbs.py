@@ -105,8 +105,6 @@ _LEG_DROP = 0.25
 # A biped's leg, known by place alone, hangs nearly straight down in the zero pose.
 _LEG_STRAIGHT = 0.8
 _BIPED_LEGS = 2
-# The z axis of a place: up in a ROS body's frame.
-_Z = 2
 # The most joints a waist puts between a biped's pelvis and its torso.
 _WAIST = 3
 # The most unnamed chains above a biped's hips among which its two arms are looked for (two
@@ -469,31 +467,13 @@ def _at_corners(tree: JointTree, base: str, group: list[Limb]) -> bool:
     """The chains start at the corners of ``base``: in pairs mirrored across it (left and right
     at one place along it), spread front to back at least as far as a pair is from the middle.
     A walker's hips are so, however its legs are folded in the zero pose; a hand's fingers
-    start side by side along one edge of the palm. Read in the body's frame (x along, y across)
-    and, failing that, in the plane of the frame's axes the hips lie in (a CAD export drawn y up,
-    or facing y: the axis they do not spread along is its up, the others its length and width,
-    either way round)."""
+    start side by side along one edge of the palm."""
     if len(group) > _MOST_FIVE_BAR_LEGS:
         return False  # no walker has so many: a stranger's file is not compared pair by pair
     centre, placed = tree.poses.place(base), _placed(tree, group)
     if placed is None:
         return False
-    starts = [tuple(s - c for s, c in zip(start, centre, strict=True)) for start, _ in placed]
-    if _corners([(x, y) for x, y, _ in starts]):
-        return True
-    spreads = [max(p[axis] for p in starts) - min(p[axis] for p in starts) for axis in range(3)]
-    up = spreads.index(min(spreads))
-    if spreads[up] > _MIRRORED * max(spreads):
-        return False  # the hips lie in no plane of the frame's axes
-    one, other = (axis for axis in range(3) if axis != up)
-    # (along, across): z up is the body's frame, read above as (x, y); it may face y.
-    frames = [(other, one)] if up == _Z else [(one, other), (other, one)]
-    return any(_corners([(p[along], p[across]) for p in starts]) for along, across in frames)
-
-
-def _corners(starts: list[tuple[float, float]]) -> bool:
-    """``starts`` (along, across) are in pairs mirrored across the middle line, spread along
-    it at least as far as a pair is from it."""
+    starts = [(start[0] - centre[0], start[1] - centre[1]) for start, _ in placed]
     across = max(abs(y) for _, y in starts)
     tolerance = _MIRRORED * across
     if across <= 0:

@@ -164,6 +164,19 @@ def test_propeller_named_joints_side_by_side_below_a_hull_are_screws_not_rotors(
     assert lifting.body.thrusters == ()
 
 
+def test_propeller_named_joints_stay_rotors_with_no_axis_written_or_on_an_aircraft() -> None:
+    unwritten = twin_screws(named="rotor")
+    unwritten.joints = [j.replace('<axis xyz="1 0 0"/>', "") for j in unwritten.joints]
+    winged = twin_screws(named="prop")
+    winged.fixed("base_link", "left_wing")
+    flown = twin_screws(named="prop")
+    flown.add(builders.model_plugin("fdm", "libArduPilotPlugin_aircraft.so"))
+    for robot in (unwritten, winged, flown):
+        result = identify_urdf(robot.text())
+        assert result.body is not None
+        assert result.body.thrusters == ()
+
+
 def test_spinners_turning_about_a_line_across_the_body_are_wheels_not_screws() -> None:
     # A left and a right wheel on one axle; and a front and a rear wheel on one side (a
     # bogie's), apart across their axle as twin screws are across theirs.

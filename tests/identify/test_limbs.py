@@ -802,28 +802,6 @@ def test_alike_chains_starting_in_mirrored_pairs_at_a_bodys_corners_are_legs_how
     assert "leg" not in [limb.kind for limb in tracked.body.limbs]
 
 
-def test_legs_at_the_corners_of_a_body_drawn_y_up_or_facing_y_are_legs() -> None:
-    # A CAD export: the hips in the x-z plane (y up), the body long along z, the legs folded
-    # back along it; and the same walker drawn z up but facing y (long along y).
-    for hips, steps in (
-        (
-            [(0.065, 0.05, 0.1), (-0.065, 0.05, 0.1), (0.065, 0.05, -0.1), (-0.065, 0.05, -0.1)],
-            ["0.03 0 -0.03", "0 0 -0.12", "0.03 0 -0.1"],
-        ),
-        (
-            [(0.05, 0.15, 0), (-0.05, 0.15, 0), (0.05, -0.15, 0), (-0.05, -0.15, 0)],
-            ["0.03 0 0", "0 -0.12 0", "0.03 -0.1 0"],
-        ),
-    ):
-        robot = RobotText("r")
-        for i, (x, y, z) in enumerate(hips):
-            placed_chain(robot, robot.root, f"k{i}_", start=f"{x} {y} {z}", steps=steps)
-        result = identify_urdf(robot.text())
-        assert result.structure == "Quadruped", hips
-        assert result.body is not None
-        assert "corners" in result.body.limbs[0].why
-
-
 def test_corner_named_chains_on_a_body_tracks_move_are_flippers_not_legs() -> None:
     # Two crawler joints (track names) and four two-joint chains named by their corner
     # (front_left_flipper ..), each a flipper and its sprocket: a tracked base.

@@ -584,3 +584,25 @@ def test_a_sensor_written_inside_a_urdf_link_as_sdf_writes_it_is_that_links() ->
         '</sensor><sensor name="imager" type="camera"><camera/></sensor></link>'
     )
     assert sorted(found) == [("camera", "2D Camera", 1), ("imu", None, 1)]
+
+
+def test_a_sensor_declared_inside_its_link_and_again_in_gazebo_counts_once() -> None:
+    found = kinds(
+        '<link name="cam_link"><sensor name="cam_a" type="camera"><camera/></sensor></link>'
+        '<gazebo reference="cam_link"><sensor name="camera_sensor" type="camera"><camera/>'
+        "</sensor></gazebo>"
+    )
+    assert found == [("camera", "2D Camera", 1)]
+
+
+def test_two_nested_gps_models_are_two_gps_and_links_inside_sensors_are_no_models_links() -> None:
+    two = kinds(
+        '<gazebo><model name="gps0"><link name="link"><sensor name="gps" type="gps"/></link>'
+        '</model><model name="gps1"><link name="link"><sensor name="gps" type="gps"/></link>'
+        "</model></gazebo>"
+    )
+    assert two == [("gps", None, 2)]
+    # 120 links and sensors nested in one another: a stranger's file is read once, its first.
+    nested = "".join(f'<link name="l{i}"><sensor name="s{i}" type="camera">' for i in range(120))
+    nested += "</sensor></link>" * 120
+    assert kinds(f"<gazebo>{nested}</gazebo>") == [("camera", "2D Camera", 1)]

@@ -145,6 +145,10 @@ def test_a_water_plugins_surface_of_numbers_is_where_the_water_lies_not_a_floati
     result = identify_urdf(diver.text())
     assert result.body is not None
     assert (result.structure, result.body.surface_hints) == ("Underwater Vehicle", ())
+    # A <surface> that names no place (a switch for a hull's surface model) still says it.
+    hull = hull_of_fixed_thrusters(2)
+    hull.add(builders.model_plugin("hull", "libusv_dynamics.so", "<surface>hull</surface>"))
+    assert identify_urdf(hull.text()).structure == "Surface Vessel"
 
 
 def test_a_gps_frame_a_joint_moves_says_nothing_of_the_surface() -> None:

@@ -87,6 +87,9 @@ class Joint:
     # A mimic joint's ratio to the joint it follows (<mimic multiplier>): a jaw mirrors its
     # driver (1 or -1), a gear turns by its ratio.
     multiplier: float = 1.0
+    # Whether the description writes an <axis> (else ``axis`` is URDF's default, x): what a
+    # joint's name says is weighed against a written axis only.
+    axis_written: bool = True
 
     @property
     def movable(self) -> bool:
@@ -492,6 +495,7 @@ class _Builder:
             _vector(parts.get("origin"), (0.0, 0.0, 0.0)),
             _vector(parts.get("origin"), (0.0, 0.0, 0.0), "rpy"),
             self._multiplier(mimic),
+            parts.get("axis") is not None,
         )
 
     @staticmethod
@@ -595,8 +599,13 @@ class _Builder:
                 "",
             )
             found.append(self._sensor(sensor, link, "urdf", str(kind)))
-        # SDF's way, kept by some URDFs a converter reads: a <sensor> inside its <link>.
-        found += self._link_sensors(root.findall("link"))
+        # SDF's way, kept by some URDFs a converter reads: a <sensor> inside its <link>. A
+        # declaration of its own ("link"): the same device declared again on that link (a
+        # Gazebo <sensor> referring to it) counts once.
+        found += self._link_sensors(
+            (((link.get("name") or "").strip() or None, link) for link in root.findall("link")),
+            "link",
+        )
         found += _hardware_sensors(root)
         return tuple(found)
 
@@ -612,14 +621,16 @@ class _Builder:
             elif _legacy(sensor, "sensor"):
                 kind = str(sensor.tag).rsplit("}", 1)[1]
                 found.append(self._sensor(sensor, reference, "gazebo", kind))
-        return found + self._link_sensors(gazebo.iterfind(".//link"))
+        return found + self._link_sensors(_sdf_links(gazebo), "gazebo")
 
-    def _link_sensors(self, links: Iterable[etree._Element]) -> list[SensorTag]:
-        """The ``<sensor>`` elements written inside ``links``, each on its link."""
+    def _link_sensors(
+        self, links: Iterable[tuple[str | None, etree._Element]], origin: str
+    ) -> list[SensorTag]:
+        """The ``<sensor>`` elements written inside ``links`` (name, element), each on its
+        link."""
         found = []
-        for link in links:
-            name = (link.get("name") or "").strip() or None
-            found += [self._sensor(sensor, name, "gazebo") for sensor in link.findall("sensor")]
+        for name, link in links:
+            found += [self._sensor(sensor, name, origin) for sensor in link.findall("sensor")]
         return found
 
     @staticmethod
@@ -679,6 +690,22 @@ def _sensor(
         sweep=None if low_angle is None or high_angle is None else abs(high_angle - low_angle),
         max_range=_float(farthest.text if farthest is not None else None),
     )
+
+
+def _sdf_links(gazebo: etree._Element) -> Iterator[tuple[str, etree._Element]]:
+    """The SDF links a ``<gazebo>`` block adds to the model: its own ``<link>`` children and
+    those of the ``<model>``s it nests (``gps0::link``, as the ``<joint>`` joining them names
+    them), models within models too; nothing inside a sensor or a plugin. Each element is
+    visited once: linear in the block."""
+    stack: list[tuple[str, etree._Element]] = [("", gazebo)]
+    while stack:
+        scope, element = stack.pop()
+        for child in element:
+            name = (child.get("name") or "").strip() if isinstance(child.tag, str) else ""
+            if child.tag == "link":
+                yield f"{scope}{name}", child
+            elif child.tag == "model":
+                stack.append((f"{scope}{name}::", child))
 
 
 def _hardware_sensors(root: etree._Element) -> list[SensorTag]:
