@@ -215,14 +215,18 @@ def _axle(axis: tuple[float, float, float]) -> bool:
     return abs(axis[_Z_AXIS]) < _LEVEL
 
 
+def _upright(axis: tuple[float, float, float]) -> bool:
+    """An upright axis: a rotor's, a caster's or a steering knuckle's swivel."""
+    return abs(axis[_Z_AXIS]) >= 1 - _LEVEL
+
+
 def _hangs_freely(tree: JointTree, link: str, known: dict[str, str | None]) -> bool:
     """No joint above ``link`` up to the root is driven (a transmission or ros2_control) but
     about an upright axis (steering)."""
     driven = tree.urdf.controlled_joints
 
     def lifts(joint: Joint) -> bool:
-        upright = abs(local_axis(joint)[_Z_AXIS]) >= 1 - _LEVEL
-        return joint.movable and joint.name in driven and not upright
+        return joint.movable and joint.name in driven and not _upright(local_axis(joint))
 
     return nearest_above(tree.urdf, link, known, lifts) is None
 
@@ -298,13 +302,9 @@ def _named_screws(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
             by_body.setdefault(moved_by(tree.urdf, joint.parent, known), []).append(joint)
     found: list[str] = []
     for carrier, joints in by_body.items():
-        body = tree.urdf.joint(carrier) if carrier is not None else None
-        floor = tree.poses.place(body.child if body is not None else tree.urdf.root)[_Z_AXIS]
-        if (
-            len(joints) in _SCREWS
-            and all(tree.poses.place(j.child)[_Z_AXIS] < floor for j in joints)
-            and _side_by_side(tree, joints)
-            and _mirrored_pairs(tree, joints)
+        floor = _body_origin(tree, carrier)[_Z_AXIS]
+        if all(tree.poses.place(j.child)[_Z_AXIS] < floor for j in joints) and _screws(
+            tree, joints
         ):
             found.extend(j.name for j in joints)
     return found
@@ -333,11 +333,20 @@ def _unnamed_screws(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     if not _may_have_screws(tree, roles):
         return []
     below, _ = _wheel_candidates(tree, set(roles))
-    found: list[str] = []
-    for joints in below.values():
-        if len(joints) in _SCREWS and _side_by_side(tree, joints) and _mirrored_pairs(tree, joints):
-            found.extend(j.name for j in joints)
-    return found
+    return [j.name for joints in below.values() if _screws(tree, joints) for j in joints]
+
+
+def _screws(tree: JointTree, joints: list[Joint]) -> bool:
+    """``joints`` are a vessel's screws by place: two or four, side by side turning about the
+    line the body travels along, in mirrored pairs."""
+    return len(joints) in _SCREWS and _side_by_side(tree, joints) and _mirrored_pairs(tree, joints)
+
+
+def _body_origin(tree: JointTree, carrier: str | None) -> tuple[float, float, float]:
+    """Where the rigid body a movable joint ``carrier`` moves (None: the root's) has its frame's
+    origin, in the root's frame at rest."""
+    body = tree.urdf.joint(carrier) if carrier is not None else None
+    return tree.poses.place(body.child if body is not None else tree.urdf.root)
 
 
 def _mirrored_pairs(tree: JointTree, joints: list[Joint]) -> bool:
@@ -382,13 +391,12 @@ def _unnamed_rotors(tree: JointTree, taken: set[str]) -> list[str]:
     around: dict[str | None, list[Joint]] = {}
     known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
     for joint in _unnamed_spinners(tree, taken):
-        if joint.child not in tree.moving_below and abs(local_axis(joint)[_Z_AXIS]) >= 1 - _LEVEL:
+        if joint.child not in tree.moving_below and _upright(local_axis(joint)):
             around.setdefault(moved_by(tree.urdf, joint.parent, known), []).append(joint)
     found: list[str] = []
     for carrier, joints in around.items():
         places = [tree.poses.place(j.child) for j in joints]
-        body = tree.urdf.joint(carrier) if carrier is not None else None
-        centre = tree.poses.place(body.child if body is not None else tree.urdf.root)
+        centre = _body_origin(tree, carrier)
         if (
             len(joints) >= _FEWEST_UNNAMED_ROTORS
             and _sides({place[0] - centre[0] for place in places})

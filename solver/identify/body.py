@@ -403,8 +403,11 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
         tree, special | parts.grippers, parts.grippers, parts.roles, flying
     )
     parts.limbs = legs_by_place(tree, parts.limbs)
+    # Legs where a walker's hang (at the pelvis, straight down): the trunk they hang from
+    # carries no fingers.
+    legged = legs_by_reach(tree, legs_at_the_pelvis(tree, parts.limbs))
     fingers = finger_groups(
-        tree, parts.limbs, grounded=grounded(tree, parts.roles), walks_on=_trunks(tree, parts)
+        tree, parts.limbs, grounded=grounded(tree, parts.roles), walks_on=_trunks(tree, legged)
     )
     if fingers:
         for name in fingers:
@@ -416,7 +419,8 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
             tree, special | parts.grippers, parts.grippers, parts.roles, flying
         )
         parts.limbs = legs_by_place(tree, parts.limbs)
-    parts.limbs = five_bars(tree, legs_by_reach(tree, legs_at_the_pelvis(tree, parts.limbs)))
+        legged = legs_by_reach(tree, legs_at_the_pelvis(tree, parts.limbs))
+    parts.limbs = five_bars(tree, legged)
     parts.limbs = arms_beside_legs(tree, parts.limbs)
     parts.limbs = flippers(tree, parts.limbs)
     if not parts.roles and not parts.trunk:  # a snake is its one chain, with nothing else
@@ -431,15 +435,10 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
     parts.limbs = lone_leg(tree, parts.limbs, moves)
 
 
-def _trunks(tree: JointTree, parts: _Parts) -> frozenset[str | None]:
-    """The rigid bodies two legs or more hang from, as :func:`finger_groups` is told them: the
-    nearest joint above each leg's base that moves (None: the root's), legs found by name or
-    where a walker's hang (at the pelvis, straight down)."""
-    legs = [
-        limb
-        for limb in legs_by_reach(tree, legs_at_the_pelvis(tree, parts.limbs))
-        if limb.kind == "leg"
-    ]
+def _trunks(tree: JointTree, limbs: list[Limb]) -> frozenset[str | None]:
+    """The rigid bodies two legs or more of ``limbs`` hang from, as :func:`finger_groups` is
+    told them: the nearest joint above each leg's base that moves (None: the root's)."""
+    legs = [limb for limb in limbs if limb.kind == "leg"]
     if len(legs) < 2:
         return frozenset()
     known: dict[str, str | None] = {}

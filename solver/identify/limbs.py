@@ -299,11 +299,15 @@ def _mirrored(a: Place, b: Place) -> bool:
     """One on each side of the body, as far out, at one height and one place along it."""
     across = abs(a[1] - b[1])
     return (
-        a[1] * b[1] < 0
-        and abs(a[1] + b[1]) <= _MIRRORED * across
+        _across_from(a, b)
         and abs(a[0] - b[0]) <= _MIRRORED * across
         and abs(a[2] - b[2]) <= _MIRRORED * across
     )
+
+
+def _across_from(a: Place, b: Place) -> bool:
+    """One on each side of the body (across y), as far out."""
+    return a[1] * b[1] < 0 and abs(a[1] + b[1]) <= _MIRRORED * abs(a[1] - b[1])
 
 
 def _hanging_pair(
@@ -334,8 +338,7 @@ def _hanging_pair(
         if root - end[2] < reach / 2:
             return None
     (a, _), (b, _) = placed[id(one)], placed[id(other)]
-    # Mirrored across the body: one on each side, as far out.
-    if a[1] * b[1] >= 0 or abs(a[1] + b[1]) > _MIRRORED * abs(a[1] - b[1]):
+    if not _across_from(a, b):
         return None
     if not _trunk_above(tree, limbs, (one, other), placed, max(a[2], b[2])):
         return None
