@@ -68,6 +68,7 @@ from solver.identify.vehicle import (
     surface_hints,
     tracks,
     underwater_hints,
+    vessel_name,
     water_frames,
     wings,
 )
@@ -123,6 +124,8 @@ class Body:
     # Frames fixed to the body named as an underwater sensor's (a DVL), with nothing behind them:
     # a body in water below the surface, though no plugin says so.
     water_frames: tuple[str, ...] = ()
+    # The robot's name in water words, when nothing else says how the body travels.
+    vessel_name: tuple[str, ...] = ()
     # Flying known only from a model plugin's parameters (a vehicle plugin of its own).
     flight_hints: tuple[str, ...] = ()
     finger_motions: int = 0
@@ -152,7 +155,7 @@ class Body:
 
     @property
     def marine(self) -> bool:
-        return bool(self.thrusters or self.marine_plugins or self.water_frames)
+        return bool(self.thrusters or self.marine_plugins or self.water_frames or self.vessel_name)
 
     @property
     def flying(self) -> bool:
@@ -194,6 +197,7 @@ class Body:
             "floating_base": int(bool(self.floating_base)),
             "weak_base": int(self.weak_base),
             "weak_flight": int(self.weak_flight),
+            "weak_water": int(bool(self.vessel_name)),
             "thrusters": len(self.thrusters),
             "fins": len(self.fins),
             "casters": len(self.casters),
@@ -229,6 +233,8 @@ class Body:
             lines.append(f"{len(self.thrusters)} thruster(s): {_names(self.thrusters)}")
         if self.marine_plugins:
             lines.append(f"water plugin(s): {_names(self.marine_plugins)}")
+        if self.vessel_name:
+            lines.append(f"a vessel by its name alone: {_names(self.vessel_name)}")
         if self.surface_hints:
             lines.append(f"floats at the surface: {_names(self.surface_hints)}")
         elif self.underwater_hints:
@@ -319,6 +325,7 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
     _body_parts(tree, parts)
     controlled = urdf.controlled_joints
     wheels = parts.of("wheel")
+    named_vessel = vessel_name(tree, parts.roles, parts.limbs)
     return Body(
         wheels=tuple(wheels),
         rotors=tuple(parts.of("rotor")),
@@ -350,9 +357,12 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
         casters=tuple(parts.of("caster")),
         wings=tuple(wings(tree, parts.roles)),
         marine_plugins=tuple(dict.fromkeys((*tree.labels("thruster"), *tree.labels("marine")))),
-        surface_hints=surface_hints(tree, thrusters=bool(parts.of("thruster"))),
+        surface_hints=surface_hints(
+            tree, thrusters=bool(parts.of("thruster")), named=named_vessel
+        ),
         underwater_hints=underwater_hints(tree),
         water_frames=water_frames(tree),
+        vessel_name=named_vessel,
         flight_hints=flight_hints(tree, parts.roles, parts.limbs),
         finger_motions=sum(1 for name in parts.grippers if (j := urdf.joint(name)) and j.actuated),
         roles=_all_roles(tree, parts),

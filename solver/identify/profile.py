@@ -100,6 +100,7 @@ FEATURES = (
     "floating_base",
     "weak_base",
     "weak_flight",
+    "weak_water",
     "thrusters",
     "fins",
     "casters",
@@ -118,6 +119,7 @@ FEATURES = (
 # planar virtual joint (a trimmed or simulated model), not from driven wheels or a plugin.
 # weak_flight: flying is known only from fixed rotor-named links on a body with no movable
 # joint at all (a trimmed multirotor model), not from rotor joints or a flight plugin.
+# weak_water: the body is in water by the robot's name alone (nothing else says how it travels).
 # serpentine: the body is one long chain of equal modules whose axes alternate, with no base
 # that holds it (a snake robot).
 BOOLEAN_FEATURES = (
@@ -126,6 +128,7 @@ BOOLEAN_FEATURES = (
     "floating_base",
     "weak_base",
     "weak_flight",
+    "weak_water",
     "marine",
     "surface",
     "underwater",

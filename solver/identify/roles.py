@@ -206,6 +206,23 @@ class RoleReader:
             return Role(joint.name, "wheel", self._named("wheel", joint))
         if self.matches("rotor", joint) and not carries:
             return Role(joint.name, "rotor", self._named("rotor", joint) + ", a spinning leaf")
+        propeller = None if carries or joint.type != "continuous" else self._propeller(joint)
+        if propeller is not None:
+            kind = "thruster" if self.marine else "rotor"
+            return Role(joint.name, kind, f"turns the propeller-named link {propeller} fixed to it")
+        return None
+
+    def _propeller(self, joint: Joint) -> str | None:
+        """A rotor-named link fixed below ``joint``'s child (an axle carrying its propeller): what
+        the joint turns (the first found, the tree walked breadth first from the child)."""
+        stack = [joint.child]
+        while stack:
+            for below in self.urdf.children(stack.pop()):
+                if below.movable:
+                    continue
+                if "rotor" in self.parts_of(below.child):
+                    return below.child
+                stack.append(below.child)
         return None
 
     def _rolls_on(self, joint: Joint, moving_below: set[str]) -> bool:

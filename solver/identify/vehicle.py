@@ -15,7 +15,8 @@ body travels in a few more ways, each read here:
   compensation, buoyancy over weight, has a hull's reserve (1.1 or more): it floats; a GPS or
   a lidar where nothing says the body dives: satellites are heard and laser light carries only
   above the water) or of a body below it (hydrodynamics or underwater-object plugins, a DVL or
-  pressure sensor).
+  pressure sensor); the robot's name (``sailboat``) when nothing else says how the body
+  travels.
   Buoyancy says only that the body is in water.
 * *Trimmed models*: wheel joints of type fixed, and rotor-named leaf links fixed to the body
   (motor-named ones too, on a body where no joint moves), still say what the whole model does
@@ -47,6 +48,7 @@ __all__ = [
     "surface_hints",
     "tracks",
     "underwater_hints",
+    "vessel_name",
     "water_frames",
     "wings",
 ]
@@ -163,7 +165,9 @@ def wings(tree: JointTree, roles: dict[str, Role]) -> list[str]:
     return found + surfaces if found else []
 
 
-def surface_hints(tree: JointTree, *, thrusters: bool = False) -> tuple[str, ...]:
+def surface_hints(
+    tree: JointTree, *, thrusters: bool = False, named: tuple[str, ...] = ()
+) -> tuple[str, ...]:
     """A body in water at the surface: surface plugins, and the words the profile's ``surface``
     pattern reads in the hull's own elements (``<metacentric_width>``, wind on its buoyancy)
     or in the parameters of its water plugins, never in a sensor's settings (a barometer's
@@ -173,11 +177,14 @@ def surface_hints(tree: JointTree, *, thrusters: bool = False) -> tuple[str, ...
     of a body below the surface (no plugin, sensor or frame of one), a GPS or a lidar says it:
     satellites are heard, and a laser scans, only above the water. ``thrusters``: joints play a
     thruster's role (an unnamed pair of screws, :mod:`solver.identify.actuation`): the body is
-    in water though no plugin or name says so."""
+    in water though no plugin or name says so. ``named``: the robot's name alone puts it in
+    water (:func:`vessel_name`); its surface words (``sail``, ``boat``) float it."""
     pattern = tree.profile.plugin_pattern("surface")
-    if pattern is None or not (tree.reader.marine or thrusters):
+    if pattern is None or not (tree.reader.marine or thrusters or named):
         return ()
     hints = list(tree.labels("surface"))
+    if named and pattern.search(tree.urdf.name):
+        hints += named
     hints += sorted(
         tag for tag in tree.urdf.tags if pattern.search(tag) and tag not in _CONTACT_SETTINGS
     )
@@ -309,3 +316,19 @@ def flight_hints(tree: JointTree, roles: dict[str, Role], limbs: Sequence[Limb])
     if bare and pattern.search(tree.urdf.name):
         found += (f"robot name {tree.urdf.name}",)
     return found
+
+
+def vessel_name(tree: JointTree, roles: dict[str, Role], limbs: Sequence[Limb]) -> tuple[str, ...]:
+    """The robot's name in the profile's water words (``boat``, ``sail``, ``vessel``, ``usv``),
+    when nothing else says how the body travels: no wheel, caster, track, rotor or thruster, no
+    leg or arm, no plugin that moves it, flies it or puts it in water. A hull exported as a few
+    frames, or with only its rudder and sail on joints, is a vessel by its name, with doubt."""
+    pattern = tree.profile.plugin_pattern("marine")
+    if pattern is None or not pattern.search(tree.urdf.name):
+        return ()
+    moves = {"wheel", "caster", "rotor", "thruster"} & {role.role for role in roles.values()}
+    if moves or grounded(tree, roles) or any(limb.kind in ("arm", "leg") for limb in limbs):
+        return ()
+    if any(tree.labels(part) for part in ("flight", "marine", "thruster")):
+        return ()
+    return (f"robot name {tree.urdf.name}",)

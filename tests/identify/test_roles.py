@@ -195,3 +195,33 @@ def test_a_swivel_named_joint_that_carries_a_finger_is_no_caster() -> None:
     assert result.body is not None
     assert result.body.casters == ()
     assert result.structure != "UGV"
+
+
+def axles_carrying_propellers(count: int, *, in_water: bool = False) -> RobotText:
+    """``count`` unnamed axles on endless joints, each carrying a ``prop<i>`` link on a fixed
+    joint (how a simulator's model fixes a propeller to its motor's shaft)."""
+    robot = RobotText("model")
+    for i in range(count):
+        axle = robot.joint(f"motor{i}_to_axle{i}", "continuous", robot.root, f"axle{i}")
+        robot.fixed(axle, f"prop{i}")
+    if in_water:
+        robot.add(builders.model_plugin("buoyancy", "libbuoyancy_gazebo_plugin.so"))
+    return robot
+
+
+def test_an_axle_turning_a_propeller_fixed_to_it_is_a_rotor_or_in_water_a_thruster() -> None:
+    found = roles(axles_carrying_propellers(6))
+    assert found["motor0_to_axle0"] == (
+        "rotor",
+        "turns the propeller-named link prop0 fixed to it",
+    )
+    assert identify_urdf(axles_carrying_propellers(6).text()).structure == "UAV"
+    wet = roles(axles_carrying_propellers(2, in_water=True))
+    assert {role for role, _ in wet.values()} == {"thruster"}
+
+
+def test_an_axle_whose_fixed_link_has_no_propeller_name_plays_no_rotor() -> None:
+    robot = RobotText("model")
+    for i in range(4):
+        robot.fixed(robot.joint(f"j{i}", "continuous", robot.root, f"axle{i}"), f"disc{i}")
+    assert all(role != "rotor" for role, _ in roles(robot).values())

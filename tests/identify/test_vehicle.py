@@ -512,3 +512,33 @@ def test_a_collisions_contact_settings_say_nothing_of_a_hull_at_the_surface() ->
     result = identify_urdf(robot.text())
     assert result.structure == "Underwater Vehicle"
     assert not any(line.startswith("floats at the surface") for line in result.evidence)
+
+
+def named_hull(name: str) -> RobotText:
+    """A hull described as a few frames and a rudder and a sail on endless joints (no plugin,
+    no sensor), called ``name``."""
+    robot = RobotText(name)
+    robot.fixed(robot.root, "gps_link")
+    robot.fixed(robot.root, "imu_link")
+    robot.joint("hull_to_rudder", "continuous", robot.root, "rudder")
+    robot.joint("hull_to_mast", "continuous", robot.root, "mast")
+    return robot
+
+
+def test_a_robot_named_as_a_boat_that_shows_no_other_way_of_travelling_floats_with_doubt() -> None:
+    for name in ("sailboat001", "boat", "harbour_usv"):
+        result = identify_urdf(named_hull(name).text())
+        assert result.structure == "Surface Vessel", name
+        assert result.confidence == pytest.approx(0.9 * 0.8, abs=0.01)
+        assert f"a vessel by its name alone: robot name {name}" in result.evidence
+    # Nothing of water in the name: no vessel.
+    assert identify_urdf(named_hull("weather_station").text()).structure == "Other"
+
+
+def test_a_boat_name_says_nothing_of_a_body_its_joints_move_otherwise() -> None:
+    rover = named_hull("boat_trailer")
+    builders.wheeled_base(rover)
+    assert identify_urdf(rover.text()).structure == "UGV"
+    arm = named_hull("boat_crane")
+    builders.arm(arm, arm.root)
+    assert identify_urdf(arm.text()).structure == "Manipulator"
