@@ -357,9 +357,7 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
         casters=tuple(parts.of("caster")),
         wings=tuple(wings(tree, parts.roles)),
         marine_plugins=tuple(dict.fromkeys((*tree.labels("thruster"), *tree.labels("marine")))),
-        surface_hints=surface_hints(
-            tree, thrusters=bool(parts.of("thruster")), named=named_vessel
-        ),
+        surface_hints=surface_hints(tree, thrusters=bool(parts.of("thruster")), named=named_vessel),
         underwater_hints=underwater_hints(tree),
         water_frames=water_frames(tree),
         vessel_name=named_vessel,

@@ -161,6 +161,7 @@ def finger_groups(
     leg's base that moves, None for the root's rigid body): a humanoid's two arms and neck.
     """
     by_base: dict[str, list[Limb]] = {}
+    beside: dict[str, list[Limb]] = {}  # every arm or other chain, named or not, by its link
     longest = tree.profile.limb("finger_max_joints")
     known: dict[str, str | None] = {}
     for limb in limbs:
@@ -168,13 +169,45 @@ def finger_groups(
             continue
         if walks_on and moved_by(tree.urdf, limb.base, known) in walks_on:
             continue
-        if limb.kind in ("arm", "other") and not limb.named and len(limb.joints) <= longest:
-            by_base.setdefault(limb.base, []).append(limb)
+        if limb.kind in ("arm", "other"):
+            beside.setdefault(limb.base, []).append(limb)
+            if not limb.named and len(limb.joints) <= longest:
+                by_base.setdefault(limb.base, []).append(limb)
     found: set[str] = set()
     for group in by_base.values():
         if len(group) >= tree.profile.limb("hand_min_fingers"):
             found.update(name for limb in group for name in limb.joints)
-    return found or _spread_fingers(tree, by_base)
+    return found or _spread_fingers(tree, by_base) or _beside_a_thumb(tree, beside)
+
+
+def _beside_a_thumb(tree: JointTree, by_base: dict[str, list[Limb]]) -> set[str]:
+    """Chains on the link a thumb starts from, three or more in all and none longer than a
+    finger: the palm's fingers, even where a name says otherwise (a carpal joint named for the
+    wrist). A thumb is a chain ending in a gripper that, with the finger joints below it, is no
+    longer than a finger (an arm ending in a gripper is longer)."""
+    longest = tree.profile.limb("finger_max_joints")
+    found: set[str] = set()
+    for group in by_base.values():
+        if len(group) < tree.profile.limb("hand_min_fingers"):
+            continue
+        if any(len(limb.joints) > longest for limb in group):
+            continue  # a chain longer than any finger: an arm beside it, no palm
+        if any(
+            limb.gripper and len(limb.joints) + _movable_below(tree, limb.tip, longest) <= longest
+            for limb in group
+        ):
+            found.update(name for limb in group for name in limb.joints)
+    return found
+
+
+def _movable_below(tree: JointTree, link: str, most: int) -> int:
+    """How many movable joints hang below ``link`` (counted up to ``most`` + 1 only)."""
+    count, stack = 0, [link]
+    while stack and count <= most:
+        for joint in tree.urdf.children(stack.pop()):
+            count += joint.movable
+            stack.append(joint.child)
+    return count
 
 
 def _spread_fingers(tree: JointTree, by_base: dict[str, list[Limb]]) -> set[str]:

@@ -102,6 +102,8 @@ _WHOLE_TURN_ROWS = 3
 _FULL_TURN = 2 * math.pi - 1e-6
 # A leg ends below where it starts by at least this share of its reach (fingers do not).
 _LEG_DROP = 0.25
+# Places closer than this (metres) across the body are one (a row of hips, not two sides).
+_SAME_PLACE = 1e-6
 # A biped's leg, known by place alone, hangs nearly straight down in the zero pose.
 _LEG_STRAIGHT = 0.8
 _BIPED_LEGS = 2
@@ -381,8 +383,9 @@ def _movable_above(tree: JointTree, link: str, known: dict[str, int]) -> int:
 
 
 def legs_by_place(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
-    """Alike unnamed chains on one link, four or more, on both its sides, each ending below
-    where it starts: legs (a hexapod's, a quadruped's whose joints carry no leg names)."""
+    """Alike unnamed chains on one link, four or more, left and right of their middle, each
+    ending below where it starts: legs (a hexapod's, a quadruped's whose joints carry no leg
+    names)."""
     if _rolls(tree):
         return limbs  # chains on a body tracks or a drive plugin move are flippers, road wheels
     # By the body carrying them, and whether they are one-joint chains that turn whole (a
@@ -428,7 +431,7 @@ def _legs_why(tree: JointTree, base: str, group: list[Limb]) -> str:
                 " body (a wheel-leg walker's legs)"
             )
         return ""
-    if _stands(tree, base, group):
+    if _stands(tree, group):
         return (
             "one of alike chains around one link, each ending below where it starts (legs by place)"
         )
@@ -539,16 +542,20 @@ def _spreads(tree: JointTree, base: str, group: list[Limb]) -> bool:
     return _both_sides(centre, placed)
 
 
-def _stands(tree: JointTree, base: str, group: list[Limb]) -> bool:
-    """The chains start on both sides of ``base`` and each ends below where it starts."""
-    centre, placed = tree.poses.place(base), _placed(tree, group)
+def _stands(tree: JointTree, group: list[Limb]) -> bool:
+    """The chains start on both sides of their middle (left and right) and each ends below
+    where it starts."""
+    placed = _placed(tree, group)
     if placed is None:
         return False
     for start, end in placed:
         reach = distance(start, end)
         if reach == 0 or start[2] - end[2] < _LEG_DROP * reach:
             return False
-    return _both_sides(centre, placed)
+    # Left and right of the hips' own middle: a CAD export may put the body's origin at a
+    # corner of it, every hip on one side of the origin.
+    across = [start[1] for start, _ in placed]
+    return max(across) - min(across) > _SAME_PLACE
 
 
 Place = tuple[float, float, float]
@@ -568,7 +575,9 @@ def _placed(tree: JointTree, group: list[Limb]) -> list[tuple[Place, Place]] | N
 
 def _both_sides(centre: Place, placed: list[tuple[Place, Place]]) -> bool:
     """Some chains start left of ``centre`` and some right of it (across y)."""
-    sides = {start[1] - centre[1] > 0 for start, _ in placed if abs(start[1] - centre[1]) > 1e-6}
+    sides = {
+        start[1] - centre[1] > 0 for start, _ in placed if abs(start[1] - centre[1]) > _SAME_PLACE
+    }
     return sides == {True, False}
 
 

@@ -229,3 +229,28 @@ def test_a_parallel_linkage_of_four_knuckles_closed_by_one_motion_is_a_gripper()
             extra='<mimic joint="k0"/>',
         )
     assert identify_urdf(robot.text()).structure == "Gripper"
+
+
+def palm_with_a_thumb(*, arm_beside: bool = False) -> RobotText:
+    """A forearm's wrist joint into a palm carrying a thumb (one joint to its base, two
+    thumb-named joints) and four three- or four-joint chains, two of them starting with a
+    carpal joint named for the wrist; ``arm_beside`` makes one of the four a six-joint chain."""
+    robot = RobotText("smart_arm", root="elbow_link")
+    palm = robot.chain(robot.root, ["wrist_joint"])
+    robot.chain(robot.chain(palm, ["wrist_upper_joint"]), ["thumb_1_joint", "thumb_2_joint"])
+    robot.chain(palm, ["wrist_lower_joint", "a_1", "a_2", "a_3"])
+    robot.chain(palm, ["wrist_middle_joint", "b_1", "b_2", "b_3"])
+    robot.chain(palm, ["c_1", "c_2", "c_3"])
+    robot.chain(palm, [f"d_{i}" for i in range(6 if arm_beside else 3)])
+    return robot
+
+
+def test_chains_beside_a_thumb_are_fingers_though_a_carpal_joint_is_named_for_the_wrist() -> None:
+    result = identify_urdf(palm_with_a_thumb().text())
+    assert result.structure == "Hand"
+    fingers = {role.joint for role in result.roles if role.role == "finger"}
+    assert {"wrist_lower_joint", "a_3", "c_1", "d_2", "thumb_2_joint"} <= fingers
+    # A chain longer than any finger on that link: an arm beside a short gripper, no palm.
+    beside = identify_urdf(palm_with_a_thumb(arm_beside=True).text())
+    assert beside.structure != "Hand"
+    assert "d_5" not in {role.joint for role in beside.roles if role.role == "finger"}

@@ -867,3 +867,33 @@ def test_thousands_of_chains_above_a_bipeds_hips_are_read_without_comparing_ever
             crowd, "pelvis", f"x{i}", start=f"0.1 {0.3 + i / 1e4} 0.45", steps=["0 0.05 0"]
         )
     assert identify_urdf(crowd.text()).structure
+
+
+def walker_drawn_from_a_corner(
+    hips: tuple[tuple[float, float], ...] = (
+        (0.0, -0.05),
+        (0.0, -0.25),
+        (0.25, -0.05),
+        (0.25, -0.25),
+    ),
+) -> RobotText:
+    """Four unnamed two-joint chains hanging down from ``hips`` (x, y), every hip on one side of
+    the body link's origin (a CAD export whose origin is a corner of the body)."""
+    robot = RobotText("Assem")
+    for i, (x, y) in enumerate(hips):
+        placed_chain(robot, robot.root, f"c{i}_", start=f"{x} {y} 0.1", steps=["0.02 0 -0.1"])
+    return robot
+
+
+def test_chains_hanging_down_left_and_right_of_their_middle_are_legs_wherever_the_origin_is() -> (
+    None
+):
+    result = identify_urdf(walker_drawn_from_a_corner().text())
+    assert result.structure == "Quadruped"
+    assert result.body is not None
+    assert "legs by place" in result.body.limbs[0].why
+    # Four in one row along the body (one place across it) are no walker's hips.
+    row = identify_urdf(
+        walker_drawn_from_a_corner(tuple((x, -0.1) for x in (0, 0.1, 0.2, 0.3))).text()
+    )
+    assert row.structure != "Quadruped"
