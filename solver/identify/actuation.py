@@ -444,7 +444,7 @@ def _unnamed_spinners(tree: JointTree, taken: set[str]) -> Iterator[Joint]:
     known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
     for joint in tree.urdf.joints:
         if (
-            joint.type == "continuous"
+            joint.endless
             and joint.actuated
             and joint.name not in taken
             and not (tree.parts_of(joint.name) | tree.parts_of(joint.child))

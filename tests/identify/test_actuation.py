@@ -495,6 +495,31 @@ def test_unnamed_rotors_each_on_an_arm_fixed_to_the_frame_are_all_round_one_body
     assert (result.structure, len(result.body.rotors)) == ("UAV", 4)
 
 
+def revolute_rotors(bound: str) -> RobotText:
+    """Four unnamed revolute leaves on upright axes all round a body, limited to +-``bound``."""
+    robot = RobotText("r")
+    for i, (x, y) in enumerate(((0.2, 0.2), (0.2, -0.2), (-0.2, 0.2), (-0.2, -0.2))):
+        robot.joint(
+            f"s{i}",
+            "revolute",
+            robot.root,
+            f"p{i}",
+            f'<origin xyz="{x} {y} 0.03"/><axis xyz="0 0 1"/>'
+            f'<limit lower="-{bound}" upper="{bound}" effort="1" velocity="1"/>',
+        )
+    return robot
+
+
+def test_revolute_leaves_with_a_range_no_stop_has_spin_as_rotors_and_limited_ones_do_not() -> None:
+    # PX4's models write rotors as revolute joints of +-1e16 rad.
+    endless = identify_urdf(revolute_rotors("1e+16").text())
+    assert endless.body is not None
+    assert (endless.structure, len(endless.body.rotors)) == ("UAV", 4)
+    limited = identify_urdf(revolute_rotors("3.1416").text())
+    assert limited.body is not None
+    assert not limited.body.rotors
+
+
 def test_unnamed_upright_spinners_all_on_one_side_of_a_frame_are_no_rotors() -> None:
     # Three fans off a straight line, all before and left of the frame's origin.
     robot = RobotText("fans")

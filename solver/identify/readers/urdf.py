@@ -52,6 +52,8 @@ _MAX_PARAM_TEXT = 200
 _MAX_PARAMS = 400
 # A Gazebo model include's URI (``model://gps``).
 _MODEL_URI = "model://"
+# A revolute joint whose range spans this many radians (16 turns) has no stop: it is endless.
+_ENDLESS_RANGE = 100.0
 # Distinct element names kept from the whole document (hull and buoyancy hints live there).
 _MAX_TAGS = 2000
 # Warnings of one kind listed per description; the rest are counted.
@@ -100,6 +102,19 @@ class Joint:
             self.type in ("revolute", "prismatic")
             and self.lower is not None
             and self.lower == self.upper
+        )
+
+    @property
+    def endless(self) -> bool:
+        """It turns for ever: continuous, or revolute with a range no real stop has (PX4's
+        rotors are revolute joints of +-1e16 rad)."""
+        if self.type == "continuous":
+            return True
+        return (
+            self.type == "revolute"
+            and self.lower is not None
+            and self.upper is not None
+            and self.upper - self.lower >= _ENDLESS_RANGE
         )
 
     @property
