@@ -332,19 +332,50 @@ def _hanging_pair(
     if len(one.joints) != len(other.joints):
         return None
     root = tree.poses.place(tree.urdf.root)[2]
+    below_the_root = True
     for limb in (one, other):
         start, end = placed[id(limb)]
         reach = distance(start, end)
         if reach == 0 or start[2] - end[2] < _LEG_STRAIGHT * reach:
             return None
-        if root - end[2] < reach / 2:
-            return None
+        below_the_root = below_the_root and root - end[2] >= reach / 2
     (a, _), (b, _) = placed[id(one)], placed[id(other)]
     if not _across_from(a, b):
         return None
-    if not _trunk_above(tree, limbs, (one, other), placed, max(a[2], b[2])):
+    hips = max(a[2], b[2])
+    if not _trunk_above(tree, limbs, (one, other), placed, hips):
+        return None
+    # Feet below the root's frame, or (a root drawn at the feet) a pair of arms above the hips.
+    if not below_the_root and not _pair_above(limbs, (one, other), placed, hips):
         return None
     return one, other
+
+
+def _pair_above(
+    limbs: list[Limb],
+    pair: tuple[Limb, Limb],
+    placed: dict[int, tuple[Place, Place]],
+    hips: float,
+) -> bool:
+    """Two other equal unnamed chains of two joints or more start mirrored across the body,
+    higher than ``hips``: a pair of arms above a pair of legs (a head's two ears turn on one
+    joint each; a few chains only are compared, pair by pair)."""
+    above = [
+        limb
+        for limb in limbs
+        if limb not in pair
+        and not limb.named
+        and len(limb.joints) >= _LEG_JOINTS[0]
+        and id(limb) in placed
+        and placed[id(limb)][0][2] > hips
+    ]
+    if len(above) > _MOST_ABOVE_THE_HIPS:
+        return False
+    return any(
+        len(one.joints) == len(other.joints) and _mirrored(placed[id(one)][0], placed[id(other)][0])
+        for index, one in enumerate(above)
+        for other in above[index + 1 :]
+    )
 
 
 def _trunk_above(

@@ -897,3 +897,31 @@ def test_chains_hanging_down_left_and_right_of_their_middle_are_legs_wherever_th
         walker_drawn_from_a_corner(tuple((x, -0.1) for x in (0, 0.1, 0.2, 0.3))).text()
     )
     assert row.structure != "Quadruped"
+
+
+def nameless_humanoid_drawn_from_its_feet(*, arms: bool = True) -> RobotText:
+    """Letters only, the root's frame at the feet: two six-joint chains hang straight down
+    from hips 0.5 m up to 0.05 m; above them two five-joint chains hang from shoulders 0.75 m
+    up (``arms``), or two one-joint ears turn on a head."""
+    robot = RobotText("r")
+    for side, y in (("a", 0.08), ("b", -0.08)):
+        placed_chain(robot, robot.root, f"{side}j", start=f"0 {y} 0.5", steps=["0 0 -0.09"] * 5)
+    for side, y in (("c", 0.18), ("d", -0.18)):
+        steps = ["0 0 -0.06"] * 4 if arms else []
+        placed_chain(robot, robot.root, f"{side}j", start=f"0 {y} 0.75", steps=steps)
+    return robot
+
+
+def test_legs_hang_from_the_hips_below_a_pair_of_arms_though_the_root_is_drawn_at_the_feet() -> (
+    None
+):
+    result = identify_urdf(nameless_humanoid_drawn_from_its_feet().text())
+    assert result.structure == "Humanoid"
+    # Above them only a head's two one-joint ears: nothing says these are legs, not arms
+    # hanging down a torso standing on its root.
+    assert identify_urdf(
+        nameless_humanoid_drawn_from_its_feet(arms=False).text()
+    ).structure not in (
+        "Biped",
+        "Humanoid",
+    )
