@@ -26,6 +26,7 @@ Not here: the roles of the chains the other joints form (:mod:`solver.identify.l
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Iterator, Mapping
 
 from solver.identify.hands import gripper_closure, jaws
@@ -35,7 +36,7 @@ from solver.identify.readers.urdf import Joint
 from solver.identify.roles import POSED, Role, main_axis
 from solver.identify.tree import JointTree
 
-__all__ = ["joint_roles", "with_role"]
+__all__ = ["MOTOR", "joint_roles", "with_role"]
 
 _Z_AXIS = 2
 # How far from level an axle may lean (the z part of its unit axis).
@@ -55,6 +56,8 @@ _WHEEL_LEGS = 6
 _FEWEST_UNNAMED_ROTORS = 3
 # A ball joint written as hinges: one about each axis.
 _BALL_AXES = 3
+# A motor named as such (``arm1_motor_link``, ``motor_2``), not ``motorcycle`` or ``rotor``.
+MOTOR = re.compile(r"(^|[_/\s])motors?([_/\d\s]|$)", re.IGNORECASE)
 # Roles a motor takes from the joints it turns through a coupling.
 _DRIVEN = ("wheel", "rotor", "thruster")
 
@@ -390,7 +393,7 @@ def _unnamed_rotors(tree: JointTree, taken: set[str]) -> list[str]:
     a level axle, a caster's swivel carries its wheel, a spinning lidar is one."""
     around: dict[str | None, list[Joint]] = {}
     known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
-    for joint in _unnamed_spinners(tree, taken):
+    for joint in (*_unnamed_spinners(tree, taken), *_motor_leaves(tree, taken)):
         if joint.child not in tree.moving_below and _upright(local_axis(joint)):
             around.setdefault(moved_by(tree.urdf, joint.parent, known), []).append(joint)
     found: list[str] = []
@@ -436,6 +439,22 @@ def _wheel_candidates(
 
 def _turns(joint: Joint) -> bool:
     return joint.movable and joint.type != "prismatic"
+
+
+def _motor_leaves(tree: JointTree, taken: set[str]) -> Iterator[Joint]:
+    """Limited revolute joints of no role yet named as motors (``motor_1_joint``): a model
+    that turns its propellers on joints with limits, told as rotors by place like endless
+    ones (a motor is what spins a propeller; a finger or a wheel is named otherwise)."""
+    for joint in tree.urdf.joints:
+        if (
+            joint.type == "revolute"
+            and not joint.endless
+            and joint.actuated
+            and joint.name not in taken
+            and MOTOR.search(f"{joint.name} {joint.child}")
+            and not (tree.parts_of(joint.name) | tree.parts_of(joint.child))
+        ):
+            yield joint
 
 
 def _unnamed_spinners(tree: JointTree, taken: set[str]) -> Iterator[Joint]:

@@ -31,7 +31,7 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 
-from solver.identify.actuation import with_role
+from solver.identify.actuation import MOTOR, with_role
 from solver.identify.limbs import Limb, moved_by
 from solver.identify.roles import Role
 from solver.identify.sensors import element_kind
@@ -55,12 +55,10 @@ __all__ = [
 
 _ROTATING = ("continuous", "revolute")
 _GPS = re.compile(r"gps|navsat|gnss", re.IGNORECASE)
-# A motor named as such (``arm1_motor_link``, ``motor_2``), not ``motorcycle`` or ``rotor``.
 # Buoyancy over weight a hull floats with: a surface hull carries a reserve (measured on the
 # development part: 1.2 to 12.5); a submersible is trimmed a hair above neutral (1.01, so it
 # rises when its thrusters stop) and works below the surface.
 _HULL_RESERVE = 1.1
-_MOTOR = re.compile(r"(^|[_/\s])motors?([_/\d\s]|$)", re.IGNORECASE)
 # Gazebo's contact and friction settings of a collision (``<surface><friction>``, the contact
 # layer): every simulated body has them, afloat or not; no word of a hull at the surface.
 _CONTACT_SETTINGS = frozenset({"surface", "contact_surface_layer"})
@@ -146,7 +144,7 @@ def fixed_rotors(tree: JointTree) -> list[str]:
         if j.type == "fixed"
         and not tree.urdf.children(j.child)
         and j.parent in on_the_hull
-        and (tree.matches("rotor", j) or (still and _MOTOR.search(f"{j.name} {j.child}")))
+        and (tree.matches("rotor", j) or (still and MOTOR.search(f"{j.name} {j.child}")))
     ]
     return found if len(found) >= tree.profile.limb("min_rotors") else []
 
@@ -178,13 +176,15 @@ def surface_hints(
     satellites are heard, and a laser scans, only above the water. ``thrusters``: joints play a
     thruster's role (an unnamed pair of screws, :mod:`solver.identify.actuation`): the body is
     in water though no plugin or name says so. ``named``: the robot's name alone puts it in
-    water (:func:`vessel_name`); its surface words (``sail``, ``boat``) float it."""
+    water (:func:`vessel_name`). The robot's name in surface words (``sailboat``, ``asv``,
+    ``catamaran``) floats a body in water, whatever its plugins are also used for (a
+    hydrodynamics plugin moves hulls at the surface too)."""
     pattern = tree.profile.plugin_pattern("surface")
     if pattern is None or not (tree.reader.marine or thrusters or named):
         return ()
     hints = list(tree.labels("surface"))
-    if named and pattern.search(tree.urdf.name):
-        hints += named
+    if pattern.search(tree.urdf.name):  # a boat, a catamaran, an ASV: a hull at the surface
+        hints.append(f"robot name {tree.urdf.name}")
     hints += sorted(
         tag for tag in tree.urdf.tags if pattern.search(tag) and tag not in _CONTACT_SETTINGS
     )

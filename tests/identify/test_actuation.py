@@ -495,12 +495,13 @@ def test_unnamed_rotors_each_on_an_arm_fixed_to_the_frame_are_all_round_one_body
     assert (result.structure, len(result.body.rotors)) == ("UAV", 4)
 
 
-def revolute_rotors(bound: str) -> RobotText:
-    """Four unnamed revolute leaves on upright axes all round a body, limited to +-``bound``."""
+def revolute_rotors(bound: str, name: str = "s") -> RobotText:
+    """Four revolute leaves ``<name><i>`` on upright axes all round a body, limited to
+    +-``bound``."""
     robot = RobotText("r")
     for i, (x, y) in enumerate(((0.2, 0.2), (0.2, -0.2), (-0.2, 0.2), (-0.2, -0.2))):
         robot.joint(
-            f"s{i}",
+            f"{name}{i}",
             "revolute",
             robot.root,
             f"p{i}",
@@ -518,6 +519,14 @@ def test_revolute_leaves_with_a_range_no_stop_has_spin_as_rotors_and_limited_one
     limited = identify_urdf(revolute_rotors("3.1416").text())
     assert limited.body is not None
     assert not limited.body.rotors
+
+
+def test_limited_leaves_named_as_motors_all_round_a_body_are_its_rotors() -> None:
+    result = identify_urdf(revolute_rotors("2", name="motor_").text())
+    assert result.body is not None
+    assert (result.structure, len(result.body.rotors)) == ("UAV", 4)
+    # A word that only begins with motor is none.
+    assert identify_urdf(revolute_rotors("2", name="motorcycle_").text()).structure != "UAV"
 
 
 def test_unnamed_upright_spinners_all_on_one_side_of_a_frame_are_no_rotors() -> None:

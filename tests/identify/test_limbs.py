@@ -925,3 +925,18 @@ def test_legs_hang_from_the_hips_below_a_pair_of_arms_though_the_root_is_drawn_a
         "Biped",
         "Humanoid",
     )
+
+
+def test_a_shoulder_written_shld_names_an_arm_as_shoulder_does() -> None:
+    robot = RobotText("r")
+    builders.wheeled_base(robot, 4)
+    for side in ("lt", "rt"):
+        robot.chain(robot.root, [f"joint_shld_{side}", f"joint_arm_{side}"])
+    result = identify_urdf(robot.text())
+    assert result.structure == "Mobile Manipulator"
+    # A word that only holds the letters is no shoulder.
+    other = RobotText("r")
+    builders.wheeled_base(other, 4)
+    for side in ("lt", "rt"):
+        other.chain(other.root, [f"joint_bshldr_{side}", f"joint_x_{side}"])
+    assert identify_urdf(other.text()).structure == "UGV"

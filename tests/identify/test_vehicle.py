@@ -248,7 +248,7 @@ def test_a_thruster_plugin_listing_a_fixed_link_names_a_thruster() -> None:
 
 def test_a_hull_is_at_the_surface_by_its_waterline_and_below_it_by_its_plugins() -> None:
     vessel = tree_of(builders.surface_vessel())
-    assert surface_hints(vessel) == ("metacentric_width",)
+    assert surface_hints(vessel) == ("robot name catamaran", "metacentric_width")
     torpedo = tree_of(builders.underwater_vehicle())
     assert underwater_hints(torpedo) == ("libthruster_model.so", "libunderwater_object.so")
     assert surface_hints(tree_of(builders.quadrotor())) == ()
@@ -542,3 +542,30 @@ def test_a_boat_name_says_nothing_of_a_body_its_joints_move_otherwise() -> None:
     arm = named_hull("boat_crane")
     builders.arm(arm, arm.root)
     assert identify_urdf(arm.text()).structure == "Manipulator"
+
+
+def hull_with_hydrodynamics(name: str) -> RobotText:
+    """Four thrusters a thruster plugin drives and a hydrodynamics plugin (used for hulls
+    afloat and for vehicles below alike), called ``name``."""
+    robot = RobotText(name)
+    for i in range(4):
+        robot.joint(f"t{i}_joint", "continuous", robot.root, f"t{i}")
+        robot.add(
+            builders.model_plugin(
+                f"t{i}", "libuuv_thruster_ros_plugin.so", f"<linkName>t{i}</linkName>"
+            )
+        )
+    robot.add(builders.model_plugin("hydro", "libHydrodynamicsPlugin.so"))
+    return robot
+
+
+def test_a_robot_named_as_a_surface_craft_floats_whatever_its_water_plugins_say() -> None:
+    for name in ("asv", "harbour_asv", "catamaran"):
+        result = identify_urdf(hull_with_hydrodynamics(name).text())
+        assert result.structure == "Surface Vessel", name
+        assert f"robot name {name}" in "\n".join(result.evidence)
+    # An ASV word inside another word is none; a submersible's name says nothing of a surface.
+    for name in ("vasvik", "auv"):
+        assert identify_urdf(hull_with_hydrodynamics(name).text()).structure == (
+            "Underwater Vehicle"
+        ), name
