@@ -77,9 +77,13 @@ class RoleReader:
         self.parts_of = parts_of
         self.plugin_parts = {id(p): self._plugin_parts(p) for p in urdf.plugins}
         self.fixed_thrusters = self._fixed_thrusters()
-        self.marine = bool(
-            self.plugins_of("marine") or self.plugins_of("thruster") or self.fixed_thrusters
-        ) or any(self.matches("thruster", joint) for joint in urdf.joints if joint.movable)
+        surface = profile.plugin_pattern("surface")
+        self.marine = (
+            bool(self.plugins_of("marine") or self.plugins_of("thruster") or self.fixed_thrusters)
+            or any(self.matches("thruster", joint) for joint in urdf.joints if joint.movable)
+            # A craft named for the surface (a boat, an ASV): its propellers push it in water.
+            or (surface is not None and bool(surface.search(urdf.name)))
+        )
         self.named = self._named_by_plugins()
 
     def _fixed_thrusters(self) -> tuple[str, ...]:

@@ -569,3 +569,20 @@ def test_a_robot_named_as_a_surface_craft_floats_whatever_its_water_plugins_say(
         assert identify_urdf(hull_with_hydrodynamics(name).text()).structure == (
             "Underwater Vehicle"
         ), name
+
+
+def test_propellers_of_a_craft_named_for_the_surface_push_it_in_water() -> None:
+    boat = RobotText("boat")
+    for side in ("left", "right"):
+        boat.joint(f"{side}_prop_joint", "continuous", boat.root, f"{side}_prop")
+    result = identify_urdf(boat.text())
+    assert result.structure == "Surface Vessel"
+    assert {role.role for role in result.roles} == {"thruster"}
+    ship = thrusters_by_name()
+    ship.name = "research_ship"
+    assert identify_urdf(ship.text()).structure == "Surface Vessel"
+    # Named for nothing in water, the same propellers fly.
+    copter = RobotText("bicopter")
+    for side in ("left", "right"):
+        copter.joint(f"{side}_prop_joint", "continuous", copter.root, f"{side}_prop")
+    assert identify_urdf(copter.text()).structure == "UAV"
