@@ -174,7 +174,12 @@ def finger_groups(
             if not limb.named and len(limb.joints) <= longest:
                 by_base.setdefault(limb.base, []).append(limb)
     found: set[str] = set()
-    for group in by_base.values():
+    # By the rigid body the chains start on: a finger may start on a metacarpal link of its
+    # own, fixed to the palm.
+    by_palm: dict[str | None, list[Limb]] = {}
+    for base, group in by_base.items():
+        by_palm.setdefault(moved_by(tree.urdf, base, known), []).extend(group)
+    for group in by_palm.values():
         if len(group) >= tree.profile.limb("hand_min_fingers"):
             found.update(name for limb in group for name in limb.joints)
     return found or _spread_fingers(tree, by_base) or _beside_a_thumb(tree, beside)

@@ -115,8 +115,8 @@ def _chains(robot: RobotText, link: str, count: int) -> list[Limb]:
 def test_three_short_unnamed_chains_on_one_link_are_fingers_and_two_are_not() -> None:
     robot = RobotText("claws")
     three = _chains(robot, "base_link", 3)
-    robot.fixed("base_link", "mount")
-    two = _chains(robot, "mount", 2)
+    mount = robot.chain("base_link", ["mount"])  # another body, a joint away
+    two = _chains(robot, mount, 2)
     tree = tree_of(robot)
     assert finger_groups(tree, three + two) == {name for limb in three for name in limb.joints}
     # On a body that rolls, the chains on its root are the base's own (a tracked vehicle's
@@ -254,3 +254,12 @@ def test_chains_beside_a_thumb_are_fingers_though_a_carpal_joint_is_named_for_th
     beside = identify_urdf(palm_with_a_thumb(arm_beside=True).text())
     assert beside.structure != "Hand"
     assert "d_5" not in {role.joint for role in beside.roles if role.role == "finger"}
+
+
+def test_short_chains_each_on_a_metacarpal_fixed_to_the_palm_are_its_fingers() -> None:
+    robot = RobotText("hand", root="palm")
+    chains = []
+    for f in range(4):
+        chains += _chains(robot, robot.fixed("palm", f"metacarpal{f}"), 1)
+    tree = tree_of(robot)
+    assert finger_groups(tree, chains) == {name for limb in chains for name in limb.joints}
