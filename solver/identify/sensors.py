@@ -29,6 +29,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
 from solver.core.ruleset import RuleSet
+from solver.identify.limbs import moved_by
 from solver.identify.profile import SENSOR_TYPE, Profile
 from solver.identify.readers.urdf import Joint, PluginTag, SensorTag, Urdf
 from solver.untrusted import shown
@@ -181,7 +182,23 @@ def _devices(found: list[tuple[Detection, str]], urdf: Urdf) -> list[Detection]:
     depth = {d.link for d in kept if d.kind == "depth_camera"}
     # A colour camera on the link of a depth camera is the RGB-D camera's colour stream.
     kept = [d for d in kept if not (d.kind == "camera" and d.link in depth)]
-    return _stereo_depth(_stereo_pairs(_rgbd_frames(kept, urdf)), urdf)
+    return _stereo_depth(_stereo_pairs(_rgbd_frames(_one_dvl(kept, urdf), urdf)), urdf)
+
+
+def _one_dvl(found: list[Detection], urdf: Urdf) -> list[Detection]:
+    """A DVL and its beams (range rays its plugin reads, each on a frame of its own) on one
+    rigid body are one device: a vehicle's Doppler log, however its beams are declared."""
+    kept: list[Detection] = []
+    bodies: set[str | None] = set()
+    known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
+    for detection in found:
+        if detection.kind == "dvl" and detection.link is not None:
+            body = moved_by(urdf, detection.link, known)
+            if body in bodies:
+                continue
+            bodies.add(body)
+        kept.append(detection)
+    return kept
 
 
 def _rgbd_frames(found: list[Detection], urdf: Urdf) -> list[Detection]:

@@ -606,3 +606,22 @@ def test_two_nested_gps_models_are_two_gps_and_links_inside_sensors_are_no_model
     nested = "".join(f'<link name="l{i}"><sensor name="s{i}" type="camera">' for i in range(120))
     nested += "</sensor></link>" * 120
     assert kinds(f"<gazebo>{nested}</gazebo>") == [("camera", "2D Camera", 1)]
+
+
+def test_a_dvl_on_the_hull_and_its_beams_on_frames_below_it_are_one_device() -> None:
+    from tests.identify.builders import RobotText, gazebo_sensor, model_plugin
+
+    auv = RobotText("auv")
+    dvl = auv.fixed(auv.root, "dvl_link")
+    for i in range(4):
+        auv.fixed(dvl, f"dvl_beam{i}_link")
+        auv.add(gazebo_sensor(f"dvl_beam{i}_link", "ray", f"dvl_beam{i}"))
+    # The DVL plugin names the hull (the root), not the beams' frame.
+    auv.add(
+        model_plugin("dvl", "libuuv_gazebo_ros_dvl_plugin.so", "<link_name>base_link</link_name>")
+    )
+    assert _kinds(auv.text())["dvl"] == 1
+    # On a body a joint moves apart from the hull, another DVL is another device.
+    turret = auv.chain(auv.root, ["turret"])
+    auv.add(gazebo_sensor(turret, "ray", "dvl_up"))
+    assert _kinds(auv.text())["dvl"] == 2
