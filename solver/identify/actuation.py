@@ -235,16 +235,19 @@ def _hangs_freely(tree: JointTree, link: str, known: dict[str, str | None]) -> b
 
 
 def _rollers_only(tree: JointTree, joint: Joint) -> bool:
-    """Everything that moves below ``joint`` is an endless leaf hanging from its child, three or
-    more of them: the free rollers on the rim of an omni or mecanum wheel."""
+    """Everything that moves below ``joint`` is an endless leaf hanging from the part it turns
+    (its child, or a hub fixed to it), three or more of them: the free rollers on the rim of
+    an omni or mecanum wheel."""
     rollers = 0
-    for below in tree.urdf.children(joint.child):
-        if below.child in tree.moving_below:
-            return False  # something moves deeper: no rim of rollers
-        if below.movable:
-            if below.type != "continuous":
-                return False
-            rollers += 1
+    stack = [joint.child]
+    while stack:
+        for below in tree.urdf.children(stack.pop()):
+            if not below.movable:
+                stack.append(below.child)  # a hub, a housing: the same turning part
+            elif below.type != "continuous" or below.child in tree.moving_below:
+                return False  # a limited joint, or something moves deeper: no rim of rollers
+            else:
+                rollers += 1
     return rollers >= _ROLLERS
 
 

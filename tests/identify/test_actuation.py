@@ -3,6 +3,8 @@ too few to fly, the joints below a gripper."""
 
 from __future__ import annotations
 
+import pytest
+
 from solver.identify import identify_urdf, load_profile
 from solver.identify.actuation import joint_roles, with_role
 from solver.identify.body import detect_body
@@ -396,15 +398,18 @@ def test_a_three_axis_camera_gimbal_is_no_ball_caster() -> None:
     assert not {r.role for r in found.roles if r.joint.startswith("gimbal")} & {"caster"}
 
 
-def kiwi_base() -> RobotText:
+def kiwi_base(*, hubs: bool = False) -> RobotText:
     """Three unnamed rims at 120 degrees, each turning about a level radial axle and carrying
-    six free rollers on endless joints (omni wheels), no name of a wheel anywhere."""
+    six free rollers on endless joints (omni wheels), no name of a wheel anywhere; ``hubs``
+    hangs each rim's rollers from a hub link fixed to the rim (a CAD export's housing)."""
     robot = RobotText("kiwi")
     for i, (x, y) in enumerate(((0.2, 0.0), (-0.1, 0.17), (-0.1, -0.17))):
         place = f"{x} {y} 0"
         rim = builders.placed(
             robot, f"rim_{i}", "continuous", robot.root, f"r{i}", xyz=place, axis=place
         )
+        if hubs:
+            rim = robot.fixed(rim, f"hub{i}")
         for k in range(6):
             builders.placed(
                 robot, f"rim_{i}_r{k}", "continuous", rim, f"r{i}_{k}", xyz="0 0 0.03", axis="0 0 1"
@@ -412,8 +417,11 @@ def kiwi_base() -> RobotText:
     return robot
 
 
-def test_unnamed_rims_carrying_free_rollers_are_omni_wheels_and_the_rollers_passive() -> None:
-    result = identify_urdf(kiwi_base().text())
+@pytest.mark.parametrize("hubs", [False, True], ids=["on-the-rim", "on-a-hub-fixed-to-it"])
+def test_unnamed_rims_carrying_free_rollers_are_omni_wheels_and_the_rollers_passive(
+    hubs: bool,
+) -> None:
+    result = identify_urdf(kiwi_base(hubs=hubs).text())
     assert result.structure == "UGV"
     assert result.body is not None
     assert result.body.wheels == ("rim_0", "rim_1", "rim_2")
