@@ -44,15 +44,16 @@ def jaws(tree: JointTree, taken: set[str]) -> dict[str, str]:
 
 
 def _jaw_pairs(tree: JointTree, taken: set[str]) -> dict[str, str]:
-    """Two limited leaf joints side by side on one link, each driven on its own: jaws at the
-    end of a chain, or a gripper's whole body (its only motions)."""
+    """Two limited joints side by side on one link, each driven on its own and moving nothing
+    but its own followers (a leaf, or a jaw's linkage of mimic joints): jaws at the end of a
+    chain, or a gripper's whole body (its only motions)."""
     by_parent: dict[str, list[Joint]] = {}
     for joint in tree.urdf.joints:
         if (
             joint.actuated
             and joint.type in ("revolute", "prismatic")
             and joint.lower is not None
-            and joint.child not in tree.moving_below
+            and _moves_alone(tree, joint)
             and joint.name not in taken
         ):
             by_parent.setdefault(joint.parent, []).append(joint)
@@ -73,6 +74,21 @@ def _jaw_pairs(tree: JointTree, taken: set[str]) -> dict[str, str]:
             continue
         found.update(dict.fromkeys((j.name for j in pair), why))
     return found
+
+
+def _moves_alone(tree: JointTree, joint: Joint) -> bool:
+    """Nothing moves below ``joint`` but joints that follow it (a jaw's own linkage, its mimic
+    joints closing a four-bar): what it carries moves by it alone. Walks down only as far as
+    the first joint that moves on its own."""
+    if joint.child not in tree.moving_below:
+        return True
+    stack = [joint.child]
+    while stack:
+        for below in tree.urdf.children(stack.pop()):
+            if below.movable and tree.couplings.driver(below.name) != joint.name:
+                return False
+            stack.append(below.child)
+    return True
 
 
 def _only_motions(tree: JointTree, pair: list[Joint], motions: list[str]) -> bool:

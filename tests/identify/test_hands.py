@@ -263,3 +263,39 @@ def test_short_chains_each_on_a_metacarpal_fixed_to_the_palm_are_its_fingers() -
         chains += _chains(robot, robot.fixed("palm", f"metacarpal{f}"), 1)
     tree = tree_of(robot)
     assert finger_groups(tree, chains) == {name for limb in chains for name in limb.joints}
+
+
+def linkage_gripper(*, free_link: bool = False) -> RobotText:
+    """Two unnamed joints side by side on a base, each driving a linkage of three mimic joints
+    (a parallel gripper's cranks and rods); ``free_link`` makes one rod turn on its own."""
+    robot = RobotText("r")
+    for side, x in (("a", 0.055), ("b", -0.055)):
+        crank = builders.placed(
+            robot,
+            f"{side}0",
+            "revolute",
+            robot.root,
+            f"{side}_crank",
+            xyz=f"{x} 0 0.05",
+            axis="0 1 0",
+        )
+        link = crank
+        for k in range(1, 4):
+            mimic = "" if free_link and side == "b" and k == 2 else f'<mimic joint="{side}0"/>'
+            link = builders.placed(
+                robot,
+                f"{side}{k}",
+                "revolute",
+                link,
+                f"{side}_rod{k}",
+                xyz="0 0 0.07",
+                axis="0 1 0",
+                extra=mimic,
+            )
+    return robot
+
+
+def test_two_jaws_each_driving_a_linkage_of_its_own_mimic_joints_are_a_gripper() -> None:
+    assert identify_urdf(linkage_gripper().text()).structure == "Gripper"
+    # A joint in the linkage that moves on its own: no jaw's own linkage.
+    assert identify_urdf(linkage_gripper(free_link=True).text()).structure != "Gripper"
