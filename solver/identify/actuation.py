@@ -162,13 +162,15 @@ def _driven_casters(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Rol
 
 def _steering_beside(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Role]:
     """On a base whose wheels are already steered, another vertical swivel with a transmission
-    that carries nothing that moves (no wheel of its own, no limb name) steers too: the steering
-    input of the vehicle (a virtual front wheel the hardware maps onto the steered wheels), not a
-    limb to command joint by joint."""
+    that carries nothing that moves (no wheel of its own, no limb name) and hangs from the base
+    through no driven joint (not a wrist's last joint) steers too: the steering input of the
+    vehicle (a virtual front wheel the hardware maps onto the steered wheels), not a limb to
+    command joint by joint."""
     steered = [n for n, r in roles.items() if r.role == "steering"]
     if not steered:
         return {}
     found = {}
+    known: dict[str, str | None] = {}  # link -> the nearest driven joint above it
     for joint in tree.urdf.joints:
         if (
             joint.name not in roles
@@ -178,6 +180,7 @@ def _steering_beside(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Ro
             and joint.child not in tree.moving_below
             and not (tree.parts_of(joint.name) | tree.parts_of(joint.child))
             and not points_a_sensor(tree, joint)  # a spinning scanner's mount is a head
+            and _hangs_freely(tree, joint.parent, known)  # not an arm's last joint
         ):
             why = f"a driven vertical swivel beside {len(steered)} steering joint(s)"
             found[joint.name] = Role(joint.name, "steering", why)

@@ -304,6 +304,19 @@ def test_a_driven_swivel_beside_a_cars_steered_wheels_steers_the_car() -> None:
     assert "Joint" not in {c.motion_control for c in result.motion_controls}
 
 
+def test_an_arms_last_driven_swivel_on_a_steered_base_stays_the_arms() -> None:
+    robot = ackermann_car(virtual=False)
+    link = robot.root
+    for i in range(6):
+        axis = "0 0 1" if i in (0, 5) else "0 1 0"
+        link = builders.placed(
+            robot, f"a{i}", "revolute", link, f"a{i}_link", xyz="0 0 0.1", axis=axis
+        )
+        robot.add(builders.transmission(f"a{i}"))
+    assert "a5" not in with_role(roles_of(robot), "steering")
+    assert identify_urdf(robot.text()).structure == "Mobile Manipulator"
+
+
 def test_a_driven_swivel_on_a_base_with_no_steering_is_not_read_as_steering() -> None:
     robot = builders.ugv()
     robot.joint(
