@@ -102,6 +102,9 @@ _WHOLE_TURN_ROWS = 3
 _FULL_TURN = 2 * math.pi - 1e-6
 # A leg ends below where it starts by at least this share of its reach (fingers do not).
 _LEG_DROP = 0.25
+# A walker's feet at rest are level: their heights differ by at most this share of the
+# shortest drop from hip to foot (a hand's fingers end at their own lengths).
+_FEET_LEVEL = 0.25
 # Places closer than this (metres) across the body are one (a row of hips, not two sides).
 _SAME_PLACE = 1e-6
 # A biped's leg, known by place alone, hangs nearly straight down in the zero pose.
@@ -575,7 +578,7 @@ def _spreads(tree: JointTree, base: str, group: list[Limb]) -> bool:
 
 def _stands(tree: JointTree, group: list[Limb]) -> bool:
     """The chains start on both sides of their middle (left and right) and each ends below
-    where it starts."""
+    where it starts, the feet level with one another."""
     placed = _placed(tree, group)
     if placed is None:
         return False
@@ -583,13 +586,20 @@ def _stands(tree: JointTree, group: list[Limb]) -> bool:
         reach = distance(start, end)
         if reach == 0 or start[2] - end[2] < _LEG_DROP * reach:
             return False
-    # Left and right of the hips' own middle: a CAD export may put the body's origin at a
-    # corner of it, every hip on one side of the origin.
-    across = [start[1] for start, _ in placed]
-    return max(across) - min(across) > _SAME_PLACE
+    # Left and right of the hips' own middle (a CAD export may put the body's origin at a
+    # corner of it, every hip on one side of the origin), the feet level with one another (a
+    # walker stands on the ground; a hand's fingers, hanging down, end at their own lengths).
+    across = _spread([start[1] for start, _ in placed])
+    feet = _spread([end[2] for _, end in placed])
+    shortest = min(start[2] - end[2] for start, end in placed)
+    return across > _SAME_PLACE and feet <= _FEET_LEVEL * shortest
 
 
 Place = tuple[float, float, float]
+
+
+def _spread(values: list[float]) -> float:
+    return max(values) - min(values)
 
 
 def _placed(tree: JointTree, group: list[Limb]) -> list[tuple[Place, Place]] | None:

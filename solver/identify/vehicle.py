@@ -308,27 +308,31 @@ def flight_hints(tree: JointTree, roles: dict[str, Role], limbs: Sequence[Limb])
         for p in tree.urdf.plugins
         if any(pattern.search(text) for _, text in p.params)
     )
-    # A bare body (no movable joint, no plugin, no sensor) says what it is only by its name: an
-    # aircraft exported as one link and its mesh (`Fixed_Wing_UAV`) flies, with doubt.
-    bare = not (tree.urdf.plugins or tree.urdf.sensors) and not any(
-        joint.movable for joint in tree.urdf.joints
-    )
-    if bare and pattern.search(tree.urdf.name):
+    # A body that shows no way of travelling says what it is only by its name: an aircraft
+    # exported as one link and its mesh (`Fixed_Wing_UAV`), a drone a simulator moves by
+    # setting its pose, flies, with doubt.
+    if _travels_no_way_read(tree, roles, limbs) and pattern.search(tree.urdf.name):
         found += (f"robot name {tree.urdf.name}",)
     return found
 
 
 def vessel_name(tree: JointTree, roles: dict[str, Role], limbs: Sequence[Limb]) -> tuple[str, ...]:
     """The robot's name in the profile's water words (``boat``, ``sail``, ``vessel``, ``usv``),
-    when nothing else says how the body travels: no wheel, caster, track, rotor or thruster, no
-    leg or arm, no plugin that moves it, flies it or puts it in water. A hull exported as a few
-    frames, or with only its rudder and sail on joints, is a vessel by its name, with doubt."""
+    when nothing else says how the body travels (:func:`_travels_no_way_read`). A hull exported
+    as a few frames, or with only its rudder and sail on joints, is a vessel by its name, with
+    doubt."""
     pattern = tree.profile.plugin_pattern("marine")
     if pattern is None or not pattern.search(tree.urdf.name):
         return ()
-    moves = {"wheel", "caster", "rotor", "thruster"} & {role.role for role in roles.values()}
-    if moves or grounded(tree, roles) or any(limb.kind in ("arm", "leg") for limb in limbs):
-        return ()
-    if any(tree.labels(part) for part in ("flight", "marine", "thruster")):
+    if not _travels_no_way_read(tree, roles, limbs):
         return ()
     return (f"robot name {tree.urdf.name}",)
+
+
+def _travels_no_way_read(tree: JointTree, roles: dict[str, Role], limbs: Sequence[Limb]) -> bool:
+    """Nothing says how the body travels: no wheel, caster, track, rotor or thruster, no leg or
+    arm, no plugin that moves it, flies it or puts it in water."""
+    moves = {"wheel", "caster", "rotor", "thruster"} & {role.role for role in roles.values()}
+    if moves or grounded(tree, roles) or any(limb.kind in ("arm", "leg") for limb in limbs):
+        return False
+    return not any(tree.labels(part) for part in ("flight", "marine", "thruster"))

@@ -940,3 +940,20 @@ def test_a_shoulder_written_shld_names_an_arm_as_shoulder_does() -> None:
     for side in ("lt", "rt"):
         other.chain(other.root, [f"joint_bshldr_{side}", f"joint_x_{side}"])
     assert identify_urdf(other.text()).structure == "UGV"
+
+
+def fingers_hanging_down(*, level: bool) -> RobotText:
+    """Five unnamed three-joint chains hanging down from a palm, their bases in a row across it;
+    their tips end at their own lengths (a hand) or, with ``level``, at one height."""
+    robot = RobotText("r")
+    for i, y in enumerate((-0.04, -0.02, 0.0, 0.02, 0.04)):
+        step = 0.03 if level else 0.015 + 0.01 * i
+        placed_chain(
+            robot, robot.root, f"f{i}_", start=f"0.25 {y} -0.05", steps=[f"0 0 -{step}"] * 2
+        )
+    return robot
+
+
+def test_chains_hanging_down_are_legs_only_when_their_feet_are_level() -> None:
+    assert identify_urdf(fingers_hanging_down(level=False).text()).structure == "Hand"
+    assert identify_urdf(fingers_hanging_down(level=True).text()).structure == "Hexapod"

@@ -381,14 +381,14 @@ def test_a_bare_body_named_as_an_aircraft_flies_with_doubt() -> None:
     assert flight == "urdf: flight named in robot name Fixed_Wing_UAV"
 
 
-def test_a_robot_name_says_nothing_when_the_body_has_parts_plugins_or_sensors() -> None:
+def test_a_robot_name_says_nothing_when_the_body_has_limbs_or_a_plugin_that_moves_it() -> None:
     assert identify_urdf(bare_body("display_stand").text()).structure == "Other"
     armed = bare_body("drone_arm_rig")
     builders.arm(armed, armed.root, joints=6, gripper=False)
     assert identify_urdf(armed.text()).structure == "Manipulator"
-    sensed = bare_body("uav_camera_mount")
-    sensed.add(builders.gazebo_sensor("body_viz", "camera", "cam"))
-    assert identify_urdf(sensed.text()).structure == "Other"
+    driven = bare_body("drone_carrier")
+    driven.add(builders.model_plugin("drive", "libgazebo_ros_planar_move.so"))
+    assert identify_urdf(driven.text()).structure == "UGV"
 
 
 def test_a_long_fixed_chain_of_floating_links_under_a_moving_joint_is_read_once() -> None:
@@ -586,3 +586,17 @@ def test_propellers_of_a_craft_named_for_the_surface_push_it_in_water() -> None:
     for side in ("left", "right"):
         copter.joint(f"{side}_prop_joint", "continuous", copter.root, f"{side}_prop")
     assert identify_urdf(copter.text()).structure == "UAV"
+
+
+def test_a_robot_named_as_a_drone_that_shows_no_way_of_travelling_flies_with_doubt() -> None:
+    # A drone a simulator moves by setting its pose: sensors, no rotor.
+    scout = RobotText("drone")
+    scout.fixed(scout.root, "lidar_link")
+    scout.add(builders.gazebo_sensor("lidar_link", "ray", "lidar"))
+    result = identify_urdf(scout.text())
+    assert result.structure == "UAV"
+    assert result.confidence == pytest.approx(0.95 * 0.8, abs=0.01)
+    assert "flight named in: robot name drone" in result.evidence
+    # Wheels say how it travels: the name is no evidence then.
+    builders.wheeled_base(scout)
+    assert identify_urdf(scout.text()).structure == "UGV"
