@@ -58,6 +58,8 @@ _FEWEST_UNNAMED_ROTORS = 3
 _BALL_AXES = 3
 # A motor named as such (``arm1_motor_link``, ``motor_2``), not ``motorcycle`` or ``rotor``.
 MOTOR = re.compile(r"(^|[_/\s])motors?([_/\d\s]|$)", re.IGNORECASE)
+# A joint named for steering (``fl_steer_motor``): it turns a wheel's heading, no propeller.
+_STEER = re.compile(r"steer", re.IGNORECASE)
 # Roles a motor takes from the joints it turns through a coupling.
 _DRIVEN = ("wheel", "rotor", "thruster")
 
@@ -247,7 +249,7 @@ def _rollers_only(tree: JointTree, joint: Joint) -> bool:
         for below in tree.urdf.children(stack.pop()):
             if not below.movable:
                 stack.append(below.child)  # a hub, a housing: the same turning part
-            elif below.type != "continuous" or below.child in tree.moving_below:
+            elif not below.endless or below.child in tree.moving_below:
                 return False  # a limited joint, or something moves deeper: no rim of rollers
             else:
                 rollers += 1
@@ -448,9 +450,11 @@ def _turns(joint: Joint) -> bool:
 
 
 def _motor_leaves(tree: JointTree, taken: set[str]) -> Iterator[Joint]:
-    """Limited revolute joints of no role yet named as motors (``motor_1_joint``): a model
-    that turns its propellers on joints with limits, told as rotors by place like endless
-    ones (a motor is what spins a propeller; a finger or a wheel is named otherwise)."""
+    """Limited revolute joints of no role yet named as motors (``motor_1_joint``), carrying
+    nothing named (a swerve module's steering motor carries its wheel) and named for no
+    steering: a model that turns its propellers on joints with limits, told as rotors by place
+    like endless ones (a motor is what spins a propeller; a finger or a wheel is named
+    otherwise)."""
     for joint in tree.urdf.joints:
         if (
             joint.type == "revolute"
@@ -458,9 +462,23 @@ def _motor_leaves(tree: JointTree, taken: set[str]) -> Iterator[Joint]:
             and joint.actuated
             and joint.name not in taken
             and MOTOR.search(f"{joint.name} {joint.child}")
+            and not _STEER.search(joint.name)
             and not (tree.parts_of(joint.name) | tree.parts_of(joint.child))
+            and not _carries_a_named_part(tree, joint)
         ):
             yield joint
+
+
+def _carries_a_named_part(tree: JointTree, joint: Joint) -> bool:
+    """A link fixed below ``joint``'s child names a part (a wheel, a rotor, a gripper)."""
+    stack = [joint.child]
+    while stack:
+        for below in tree.urdf.children(stack.pop()):
+            if not below.movable:
+                if tree.parts_of(below.child):
+                    return True
+                stack.append(below.child)
+    return False
 
 
 def _unnamed_spinners(tree: JointTree, taken: set[str]) -> Iterator[Joint]:

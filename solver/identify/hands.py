@@ -205,7 +205,8 @@ def _beside_a_thumb(tree: JointTree, by_base: dict[str, list[Limb]]) -> set[str]
     """Chains on the link a thumb starts from, three or more in all and none longer than a
     finger: the palm's fingers, even where a name says otherwise (a carpal joint named for the
     wrist). A thumb is a chain ending in a gripper that, with the finger joints below it, is no
-    longer than a finger (an arm ending in a gripper is longer)."""
+    longer than a finger (an arm ending in a gripper is longer); a palm has one (a torso's two
+    short arms each ending in a gripper are no thumbs)."""
     longest = tree.profile.limb("finger_max_joints")
     found: set[str] = set()
     for group in by_base.values():
@@ -213,10 +214,13 @@ def _beside_a_thumb(tree: JointTree, by_base: dict[str, list[Limb]]) -> set[str]
             continue
         if any(len(limb.joints) > longest for limb in group):
             continue  # a chain longer than any finger: an arm beside it, no palm
-        if any(
-            limb.gripper and len(limb.joints) + _movable_below(tree, limb.tip, longest) <= longest
+        thumbs = [
+            limb
             for limb in group
-        ):
+            if limb.gripper
+            and len(limb.joints) + _movable_below(tree, limb.tip, longest) <= longest
+        ]
+        if len(thumbs) == 1:  # two short arms, each ending in a gripper, are no thumbs
             found.update(name for limb in group for name in limb.joints)
     return found
 

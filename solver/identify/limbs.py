@@ -335,42 +335,52 @@ def _hanging_pair(
     if len(one.joints) != len(other.joints):
         return None
     root = tree.poses.place(tree.urdf.root)[2]
-    below_the_root = True
+    below_the_root = at_the_root = True
     for limb in (one, other):
         start, end = placed[id(limb)]
         reach = distance(start, end)
         if reach == 0 or start[2] - end[2] < _LEG_STRAIGHT * reach:
             return None
         below_the_root = below_the_root and root - end[2] >= reach / 2
+        at_the_root = at_the_root and abs(root - end[2]) <= reach / 2
     (a, _), (b, _) = placed[id(one)], placed[id(other)]
     if not _across_from(a, b):
         return None
     hips = max(a[2], b[2])
     if not _trunk_above(tree, limbs, (one, other), placed, hips):
         return None
-    # Feet below the root's frame, or (a root drawn at the feet) a pair of arms above the hips.
-    if not below_the_root and not _pair_above(limbs, (one, other), placed, hips):
+    # Feet below the root's frame, or at it (a root drawn at the feet) below a pair of arms.
+    if not below_the_root and not (
+        at_the_root and _pair_above(tree, limbs, (one, other), placed, hips)
+    ):
         return None
     return one, other
 
 
 def _pair_above(
+    tree: JointTree,
     limbs: list[Limb],
     pair: tuple[Limb, Limb],
     placed: dict[int, tuple[Place, Place]],
     hips: float,
 ) -> bool:
-    """Two other equal unnamed chains of two joints or more start mirrored across the body,
-    higher than ``hips``: a pair of arms above a pair of legs (a head's two ears turn on one
-    joint each; a few chains only are compared, pair by pair)."""
+    """Two other equal unnamed chains of two joints or more, no gripper's or head's, on the
+    trunk (the body and a waist above it, as :func:`_trunk_above` reads it), start mirrored
+    across it higher than ``hips``: a pair of arms above a pair of legs (a head's two ears turn
+    on one joint each, a camera's pan and tilt are a head; a few chains only are compared, pair
+    by pair)."""
+    depth: dict[str, int] = {}
     above = [
         limb
         for limb in limbs
         if limb not in pair
+        and limb.kind in ("arm", "other")
         and not limb.named
+        and not limb.gripper
         and len(limb.joints) >= _LEG_JOINTS[0]
         and id(limb) in placed
         and placed[id(limb)][0][2] > hips
+        and _movable_above(tree, limb.base, depth) <= _WAIST
     ]
     if len(above) > _MOST_ABOVE_THE_HIPS:
         return False
@@ -417,9 +427,9 @@ def _movable_above(tree: JointTree, link: str, known: dict[str, int]) -> int:
 
 
 def legs_by_place(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
-    """Alike unnamed chains on one link, four or more, left and right of their middle, each
-    ending below where it starts: legs (a hexapod's, a quadruped's whose joints carry no leg
-    names)."""
+    """Alike unnamed chains on one link, four or more, on both its sides or at the corners
+    around their own middle, each ending below where it starts, the feet level: legs (a
+    hexapod's, a quadruped's whose joints carry no leg names)."""
     if _rolls(tree):
         return limbs  # chains on a body tracks or a drive plugin move are flippers, road wheels
     # By the body carrying them, and whether they are one-joint chains that turn whole (a
@@ -465,7 +475,7 @@ def _legs_why(tree: JointTree, base: str, group: list[Limb]) -> str:
                 " body (a wheel-leg walker's legs)"
             )
         return ""
-    if _stands(tree, group):
+    if _stands(tree, base, group):
         return (
             "one of alike chains around one link, each ending below where it starts (legs by place)"
         )
@@ -508,12 +518,18 @@ def _at_corners(tree: JointTree, base: str, group: list[Limb]) -> bool:
     at one place along it), spread front to back at least as far as a pair is from the middle.
     A walker's hips are so, however its legs are folded in the zero pose; a hand's fingers
     start side by side along one edge of the palm."""
-    if len(group) > _MOST_FIVE_BAR_LEGS:
-        return False  # no walker has so many: a stranger's file is not compared pair by pair
-    centre, placed = tree.poses.place(base), _placed(tree, group)
+    placed = _placed(tree, group)
     if placed is None:
         return False
-    starts = [(start[0] - centre[0], start[1] - centre[1]) for start, _ in placed]
+    centre = tree.poses.place(base)
+    return _mirrored_corners([(s[0] - centre[0], s[1] - centre[1]) for s, _ in placed])
+
+
+def _mirrored_corners(starts: list[tuple[float, float]]) -> bool:
+    """``starts`` (x along the body, y across it, from its middle) come in pairs mirrored
+    across the middle, spread front to back at least as far as a pair is from the middle."""
+    if len(starts) > _MOST_FIVE_BAR_LEGS:
+        return False  # no walker has so many: a stranger's file is not compared pair by pair
     across = max(abs(y) for _, y in starts)
     tolerance = _MIRRORED * across
     if across <= 0:
@@ -576,9 +592,11 @@ def _spreads(tree: JointTree, base: str, group: list[Limb]) -> bool:
     return _both_sides(centre, placed)
 
 
-def _stands(tree: JointTree, group: list[Limb]) -> bool:
-    """The chains start on both sides of their middle (left and right) and each ends below
-    where it starts, the feet level with one another."""
+def _stands(tree: JointTree, base: str, group: list[Limb]) -> bool:
+    """Each chain ends below where it starts, the feet level with one another (a walker stands
+    on the ground; a hand's fingers, hanging down, end at their own lengths), the chains
+    starting on both sides of ``base``, or (a CAD export may put the body's origin at a corner
+    of it, every hip on one side) at the corners around their own middle, facing x or y."""
     placed = _placed(tree, group)
     if placed is None:
         return False
@@ -586,13 +604,16 @@ def _stands(tree: JointTree, group: list[Limb]) -> bool:
         reach = distance(start, end)
         if reach == 0 or start[2] - end[2] < _LEG_DROP * reach:
             return False
-    # Left and right of the hips' own middle (a CAD export may put the body's origin at a
-    # corner of it, every hip on one side of the origin), the feet level with one another (a
-    # walker stands on the ground; a hand's fingers, hanging down, end at their own lengths).
-    across = _spread([start[1] for start, _ in placed])
     feet = _spread([end[2] for _, end in placed])
-    shortest = min(start[2] - end[2] for start, end in placed)
-    return across > _SAME_PLACE and feet <= _FEET_LEVEL * shortest
+    if feet > _FEET_LEVEL * min(start[2] - end[2] for start, end in placed):
+        return False
+    if _both_sides(tree.poses.place(base), placed):
+        return True
+    xs, ys = [start[0] for start, _ in placed], [start[1] for start, _ in placed]
+    middle = ((max(xs) + min(xs)) / 2, (max(ys) + min(ys)) / 2)
+    corners = [(x - middle[0], y - middle[1]) for x, y in zip(xs, ys, strict=True)]
+    # Facing x, or facing y (a CAD export's rows of hips along y): standing, either way.
+    return _mirrored_corners(corners) or _mirrored_corners([(y, x) for x, y in corners])
 
 
 Place = tuple[float, float, float]

@@ -28,6 +28,7 @@ Not here: chains and limbs (:mod:`solver.identify.limbs`), the structure
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -61,6 +62,14 @@ class Role:
     evidence: str
 
 
+# A robot name that says a craft at the surface, read as whole words (``simple_boat``,
+# ``sailboat001``, ``chelon_asv``; not ``airship``, ``mothership`` or a lab's ``vessel``).
+_VESSEL_NAME = re.compile(
+    r"(^|[_/\d-])(boat|sailboat|ship|asv|usv|catamaran|yacht|kayak|sail)s?([_/\d-]|$)",
+    re.IGNORECASE,
+)
+
+
 def main_axis(axis: tuple[float, float, float]) -> int:
     """0, 1 or 2 for an axis along x, y or z; -1 for a slanted one."""
     sizes = [abs(v) for v in axis]
@@ -77,14 +86,25 @@ class RoleReader:
         self.parts_of = parts_of
         self.plugin_parts = {id(p): self._plugin_parts(p) for p in urdf.plugins}
         self.fixed_thrusters = self._fixed_thrusters()
-        surface = profile.plugin_pattern("surface")
+        self.named_vessel = self._named_vessel()
         self.marine = (
             bool(self.plugins_of("marine") or self.plugins_of("thruster") or self.fixed_thrusters)
             or any(self.matches("thruster", joint) for joint in urdf.joints if joint.movable)
             # A craft named for the surface (a boat, an ASV): its propellers push it in water.
-            or (surface is not None and bool(surface.search(urdf.name)))
+            or self.named_vessel
         )
         self.named = self._named_by_plugins()
+
+    def _named_vessel(self) -> bool:
+        """The robot's own name is a surface craft's (:data:`_VESSEL_NAME`: ``boat``, ``sailboat``,
+        ``asv``, ``catamaran``, as whole words), and no flight plugin flies it nor a sensor of a
+        body below the water (a DVL, a depth gauge) dives it."""
+        if not _VESSEL_NAME.search(self.urdf.name) or self.plugins_of("flight"):
+            return False
+        below = self.profile.plugin_pattern("underwater")
+        return below is None or not any(
+            below.search(f"{sensor.type} {sensor.device_text}") for sensor in self.urdf.sensors
+        )
 
     def _fixed_thrusters(self) -> tuple[str, ...]:
         """Thruster-named leaf links fixed to the root's part, at least ``min_rotors`` of them (a
@@ -210,24 +230,29 @@ class RoleReader:
             return Role(joint.name, "wheel", self._named("wheel", joint))
         if self.matches("rotor", joint) and not carries:
             return Role(joint.name, "rotor", self._named("rotor", joint) + ", a spinning leaf")
-        propeller = None if carries or joint.type != "continuous" else self._propeller(joint)
+        propeller = None if carries or not joint.endless else self._propeller(joint)
         if propeller is not None:
             kind = "thruster" if self.marine else "rotor"
             return Role(joint.name, kind, f"turns the propeller-named link {propeller} fixed to it")
         return None
 
     def _propeller(self, joint: Joint) -> str | None:
-        """A rotor-named link fixed below ``joint``'s child (an axle carrying its propeller): what
-        the joint turns (the first found, the tree walked breadth first from the child)."""
+        """The rotor-named link fixed below ``joint``'s child (an axle carrying its propeller),
+        when no link fixed there names another part (a car's hub carries its wheel and a brake
+        rotor): what the joint turns (the first found, walking down from the child)."""
+        found = None
         stack = [joint.child]
         while stack:
             for below in self.urdf.children(stack.pop()):
                 if below.movable:
                     continue
-                if "rotor" in self.parts_of(below.child):
-                    return below.child
+                parts = self.parts_of(below.child)
+                if parts - {"rotor"}:
+                    return None
+                if found is None and "rotor" in parts:
+                    found = below.child
                 stack.append(below.child)
-        return None
+        return found
 
     def _rolls_on(self, joint: Joint, moving_below: set[str]) -> bool:
         """All that moves below ``joint`` is endless joints with nothing moving beyond them (a

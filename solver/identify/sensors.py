@@ -45,6 +45,8 @@ __all__ = [
     "under_water",
 ]
 
+# Sensor elements a DVL's beams are written as (a range ray each).
+_BEAM_TYPES = ("ray", "gpu_ray", "sonar")
 _LINK_PARAMS = ("linkName", "bodyName", "frameName", "frameId", "frame_name", "link_name")
 _JOINT_PARAMS = ("jointName", "joint_name", "joint")
 # How many joints that do not move may separate one device's frames (a sensor link, its
@@ -95,15 +97,17 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
     a device of its kind.
     """
     found: list[tuple[Detection, str]] = []
+    beams: set[int] = set()  # range rays a DVL's name marks: its beams, not devices
     urdf_links = {t.name: t.link for t in urdf.sensors if t.origin == "urdf" and t.link}
     for tag in urdf.sensors:
         kind = element_kind(tag, profile)
         link = tag.link
         if link is not None and not urdf.has_link(link) and link in urdf_links:
             link = urdf_links[link]  # a Gazebo <sensor> referring to a URDF <sensor> by name
-        found.append(
-            (Detection(kind, tag.name or tag.type, source, link, tag.vertical_samples), tag.origin)
-        )
+        detection = Detection(kind, tag.name or tag.type, source, link, tag.vertical_samples)
+        if kind == "dvl" and tag.type in _BEAM_TYPES:
+            beams.add(id(detection))
+        found.append((detection, tag.origin))
     for plugin in urdf.plugins:
         simulated = _plugin_kind(plugin, profile)
         if simulated is None:
@@ -120,7 +124,7 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
         included = _model_kind(model.model, profile)
         if included is not None:
             found.append((Detection(included, model.name, source, model.link), "model"))
-    return tuple(_devices(_hardware_kept(found), urdf))
+    return tuple(_devices(_hardware_kept(found), urdf, beams))
 
 
 def _hardware_kept(found: list[tuple[Detection, str]]) -> list[tuple[Detection, str]]:
@@ -153,7 +157,7 @@ def _model_kind(model: str, profile: Profile) -> str | None:
     return None if kind == "unknown" else kind
 
 
-def _devices(found: list[tuple[Detection, str]], urdf: Urdf) -> list[Detection]:
+def _devices(found: list[tuple[Detection, str]], urdf: Urdf, beams: set[int]) -> list[Detection]:
     """One detection per physical device (see :func:`sensors_from_urdf`); linear in their
     number (an index by kind and link, a few links up each)."""
     origins: dict[tuple[str, str], set[str]] = {}
@@ -182,21 +186,26 @@ def _devices(found: list[tuple[Detection, str]], urdf: Urdf) -> list[Detection]:
     depth = {d.link for d in kept if d.kind == "depth_camera"}
     # A colour camera on the link of a depth camera is the RGB-D camera's colour stream.
     kept = [d for d in kept if not (d.kind == "camera" and d.link in depth)]
-    return _stereo_depth(_stereo_pairs(_rgbd_frames(_one_dvl(kept, urdf), urdf)), urdf)
+    return _stereo_depth(_stereo_pairs(_rgbd_frames(_dvl_beams(kept, urdf, beams), urdf)), urdf)
 
 
-def _one_dvl(found: list[Detection], urdf: Urdf) -> list[Detection]:
-    """A DVL and its beams (range rays its plugin reads, each on a frame of its own) on one
-    rigid body are one device: a vehicle's Doppler log, however its beams are declared."""
-    kept: list[Detection] = []
-    bodies: set[str | None] = set()
+def _dvl_beams(found: list[Detection], urdf: Urdf, beams: set[int]) -> list[Detection]:
+    """A DVL's beams (range rays named for it, each on a frame of its own) are parts of the DVL
+    on their rigid body, however its plugin names the hull; with no DVL declared there, the
+    beams are one DVL. Two DVLs declared as such stay two."""
     known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
+
+    def body(detection: Detection) -> str | None:
+        return None if detection.link is None else moved_by(urdf, detection.link, known)
+
+    devices = {body(d) for d in found if d.kind == "dvl" and id(d) not in beams}
+    kept: list[Detection] = []
     for detection in found:
-        if detection.kind == "dvl" and detection.link is not None:
-            body = moved_by(urdf, detection.link, known)
-            if body in bodies:
+        if id(detection) in beams:
+            carrier = body(detection)
+            if carrier in devices:
                 continue
-            bodies.add(body)
+            devices.add(carrier)  # the first beam stands for a DVL drawn as its beams alone
         kept.append(detection)
     return kept
 

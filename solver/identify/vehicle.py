@@ -176,14 +176,15 @@ def surface_hints(
     satellites are heard, and a laser scans, only above the water. ``thrusters``: joints play a
     thruster's role (an unnamed pair of screws, :mod:`solver.identify.actuation`): the body is
     in water though no plugin or name says so. ``named``: the robot's name alone puts it in
-    water (:func:`vessel_name`). The robot's name in surface words (``sailboat``, ``asv``,
-    ``catamaran``) floats a body in water, whatever its plugins are also used for (a
-    hydrodynamics plugin moves hulls at the surface too)."""
+    water (:func:`vessel_name`). The robot's name as a surface craft's (``sailboat``, ``asv``,
+    ``catamaran``, whole words; :meth:`~solver.identify.roles.RoleReader.named_vessel`) floats a
+    body in water whatever its water plugins are also used for (a hydrodynamics plugin moves
+    hulls at the surface too), unless a flight plugin or a DVL or depth sensor says otherwise."""
     pattern = tree.profile.plugin_pattern("surface")
     if pattern is None or not (tree.reader.marine or thrusters or named):
         return ()
     hints = list(tree.labels("surface"))
-    if pattern.search(tree.urdf.name):  # a boat, a catamaran, an ASV: a hull at the surface
+    if tree.reader.named_vessel:  # a boat, a catamaran, an ASV: a hull at the surface
         hints.append(f"robot name {tree.urdf.name}")
     hints += sorted(
         tag for tag in tree.urdf.tags if pattern.search(tag) and tag not in _CONTACT_SETTINGS
@@ -317,22 +318,20 @@ def flight_hints(tree: JointTree, roles: dict[str, Role], limbs: Sequence[Limb])
 
 
 def vessel_name(tree: JointTree, roles: dict[str, Role], limbs: Sequence[Limb]) -> tuple[str, ...]:
-    """The robot's name in the profile's water words (``boat``, ``sail``, ``vessel``, ``usv``),
+    """The robot's name as a surface craft's (``boat``, ``sailboat``, ``usv``, whole words),
     when nothing else says how the body travels (:func:`_travels_no_way_read`). A hull exported
     as a few frames, or with only its rudder and sail on joints, is a vessel by its name, with
     doubt."""
-    pattern = tree.profile.plugin_pattern("marine")
-    if pattern is None or not pattern.search(tree.urdf.name):
-        return ()
-    if not _travels_no_way_read(tree, roles, limbs):
+    if not tree.reader.named_vessel or not _travels_no_way_read(tree, roles, limbs):
         return ()
     return (f"robot name {tree.urdf.name}",)
 
 
 def _travels_no_way_read(tree: JointTree, roles: dict[str, Role], limbs: Sequence[Limb]) -> bool:
     """Nothing says how the body travels: no wheel, caster, track, rotor or thruster, no leg or
-    arm, no plugin that moves it, flies it or puts it in water."""
-    moves = {"wheel", "caster", "rotor", "thruster"} & {role.role for role in roles.values()}
+    arm, no gripper (a gripper named for its use is a gripper), no plugin that moves it, flies
+    it or puts it in water."""
+    moves = {"wheel", "caster", "rotor", "thruster", "gripper"} & {r.role for r in roles.values()}
     if moves or grounded(tree, roles) or any(limb.kind in ("arm", "leg") for limb in limbs):
         return False
     return not any(tree.labels(part) for part in ("flight", "marine", "thruster"))

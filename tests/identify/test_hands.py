@@ -299,3 +299,14 @@ def test_two_jaws_each_driving_a_linkage_of_its_own_mimic_joints_are_a_gripper()
     assert identify_urdf(linkage_gripper().text()).structure == "Gripper"
     # A joint in the linkage that moves on its own: no jaw's own linkage.
     assert identify_urdf(linkage_gripper(free_link=True).text()).structure != "Gripper"
+
+
+def test_two_short_arms_each_ending_in_a_gripper_are_no_thumbs_of_a_palm() -> None:
+    robot = RobotText("desk_bot", root="torso")
+    for side in ("l", "r"):
+        tip = robot.chain(
+            "torso", [f"{side}_shoulder_pitch", f"{side}_shoulder_roll", f"{side}_elbow"]
+        )
+        robot.chain(tip, [f"{side}_gripper"])
+    robot.chain("torso", ["t1", "t2"])
+    assert identify_urdf(robot.text()).structure != "Hand"

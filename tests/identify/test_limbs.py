@@ -957,3 +957,50 @@ def fingers_hanging_down(*, level: bool) -> RobotText:
 def test_chains_hanging_down_are_legs_only_when_their_feet_are_level() -> None:
     assert identify_urdf(fingers_hanging_down(level=False).text()).structure == "Hand"
     assert identify_urdf(fingers_hanging_down(level=True).text()).structure == "Hexapod"
+
+
+def test_chains_hanging_in_a_row_are_no_walkers_legs_however_the_row_lies() -> None:
+    # Four pick heads (a slide and a spin each) in a row across a carriage.
+    tool = RobotText("pick_tool", root="carriage")
+    for i, y in enumerate((0.05, 0.10, 0.15, 0.20)):
+        head = builders.placed(
+            tool, f"h{i}_z", "prismatic", "carriage", f"h{i}_slide", xyz=f"0 {y} -0.05"
+        )
+        builders.placed(tool, f"h{i}_r", "revolute", head, f"h{i}_nozzle", xyz="0 0 -0.1")
+    assert identify_urdf(tool.text()).structure != "Quadruped"
+    # Four fingers in a row along the palm, a CAD export's microns of jitter across it.
+    hand = RobotText("hand", root="base")
+    for i, x in enumerate((0.0, 0.02, 0.04, 0.06)):
+        placed_chain(
+            hand,
+            "base",
+            f"f{i}_",
+            start=f"{x} {0.000002 * i} -0.08",
+            steps=["0 0 -0.04", "0 0 -0.03"],
+        )
+    assert identify_urdf(hand.text()).structure != "Quadruped"
+
+
+def test_a_hexapod_drawn_facing_y_from_a_corner_stands_on_six_legs() -> None:
+    # Hips in two columns along x and three rows along y, the origin at a corner hip.
+    robot = RobotText("r")
+    for i, (x, y) in enumerate((x, y) for x in (0.01, 0.14) for y in (0.01, 0.125, 0.24)):
+        placed_chain(
+            robot, robot.root, f"c{i}_", start=f"{x} {y} 0.0", steps=["0 0 -0.05", "0 0 -0.05"]
+        )
+    assert identify_urdf(robot.text()).structure == "Hexapod"
+
+
+def test_a_dual_arm_pedestal_with_camera_heads_above_is_no_biped() -> None:
+    # The root on the floor; two six-joint arms hang from shoulders 1.2 m up, ending 0.7 m
+    # above the root; above them two pan/tilt camera mounts.
+    robot = RobotText("r", root="base")
+    column = robot.fixed("base", "column")
+    for side, y in (("a", 0.25), ("b", -0.25)):
+        placed_chain(robot, column, f"{side}j", start=f"0 {y} 1.2", steps=["0 0 -0.1"] * 5)
+    for side, y in (("c", 0.08), ("d", -0.08)):
+        tip = placed_chain(
+            robot, column, f"{side}j", start=f"0.1 {y} 1.5", steps=["0 0 0.05"], axis="0 0 1"
+        )
+        robot.add(builders.gazebo_sensor(tip, "camera", f"cam_{side}"))
+    assert identify_urdf(robot.text()).structure not in ("Biped", "Humanoid")

@@ -23,9 +23,15 @@ def test_the_shipped_profile_loads_with_its_structures_in_order() -> None:
     assert profile.role("sensor_type") == "sensor_type"
 
 
+def with_wheel(pattern: str) -> str:
+    """The shipped profile with its wheel pattern replaced by ``pattern`` (YAML text)."""
+    line = next(line for line in SHIPPED.splitlines() if line.startswith("  wheel: "))
+    return SHIPPED.replace(line, f"  wheel: {pattern}")
+
+
 def test_every_problem_of_a_profile_is_reported_with_its_location() -> None:
     text = (
-        SHIPPED.replace("  wheel: 'wheel'", "  wheel: '(unclosed'")
+        with_wheel("'(unclosed'")
         .replace("when: {legs: {min: 4}, arms: 0}", "when: {paws: 4, arms: 0}")
         .replace("doubt_factor: 0.8", "doubt_factor: 3")
         .replace(
@@ -62,7 +68,7 @@ def test_a_profile_that_is_not_a_mapping_is_refused() -> None:
 
 def test_a_catastrophic_user_pattern_runs_without_backtracking() -> None:
     # ^(a+)+$ takes Python's re some 13 s on 29 letters and a '!'; RE2 answers at once.
-    text = SHIPPED.replace("  wheel: 'wheel'", "  wheel: '^(a+)+$'")
+    text = with_wheel("'^(a+)+$'")
     profile = parse_profile(parse_document(text, "mine.yaml"))
     pattern = profile.pattern("wheel")
     assert pattern is not None
@@ -71,7 +77,7 @@ def test_a_catastrophic_user_pattern_runs_without_backtracking() -> None:
 
 
 def test_a_pattern_needing_backtracking_is_refused_with_its_location() -> None:
-    text = SHIPPED.replace("  wheel: 'wheel'", "  wheel: '(?<=left_)wheel'")
+    text = with_wheel("'(?<=left_)wheel'")
     with pytest.raises(ProfileError) as caught:
         parse_profile(parse_document(text, "mine.yaml"))
     fault = next(f for f in caught.value.faults if f.location.path == "patterns.wheel")

@@ -225,3 +225,47 @@ def test_an_axle_whose_fixed_link_has_no_propeller_name_plays_no_rotor() -> None
     for i in range(4):
         robot.fixed(robot.joint(f"j{i}", "continuous", robot.root, f"axle{i}"), f"disc{i}")
     assert all(role != "rotor" for role, _ in roles(robot).values())
+
+
+def test_a_hub_carrying_a_wheel_and_a_brake_rotor_is_a_wheel_not_a_rotor() -> None:
+    car = RobotText("car")
+    for corner, (x, y) in (
+        ("fl", (1.2, 0.7)),
+        ("fr", (1.2, -0.7)),
+        ("rl", (-1.2, 0.7)),
+        ("rr", (-1.2, -0.7)),
+    ):
+        hub = builders.placed(
+            car,
+            f"{corner}_hub_joint",
+            "continuous",
+            car.root,
+            f"{corner}_hub",
+            xyz=f"{x} {y} -0.2",
+            axis="0 1 0",
+        )
+        car.fixed(hub, f"{corner}_tyre")
+        car.fixed(hub, f"{corner}_brake_rotor")
+    result = identify_urdf(car.text())
+    assert result.structure == "UGV"
+    assert "rotor" not in {role.role for role in result.roles}
+
+
+def test_steering_motors_carrying_wheels_are_no_rotors() -> None:
+    swerve = RobotText("swerve")
+    for corner, (x, y) in (
+        ("fl", (0.3, 0.3)),
+        ("fr", (0.3, -0.3)),
+        ("rl", (-0.3, 0.3)),
+        ("rr", (-0.3, -0.3)),
+    ):
+        module = builders.placed(
+            swerve,
+            f"{corner}_steer_motor",
+            "revolute",
+            swerve.root,
+            f"{corner}_module",
+            xyz=f"{x} {y} 0",
+        )
+        swerve.fixed(module, f"{corner}_wheel")
+    assert identify_urdf(swerve.text()).structure != "UAV"

@@ -625,3 +625,13 @@ def test_a_dvl_on_the_hull_and_its_beams_on_frames_below_it_are_one_device() -> 
     turret = auv.chain(auv.root, ["turret"])
     auv.add(gazebo_sensor(turret, "ray", "dvl_up"))
     assert _kinds(auv.text())["dvl"] == 2
+
+
+def test_two_dvls_declared_as_such_are_two_devices() -> None:
+    from tests.identify.builders import RobotText, gazebo_sensor
+
+    auv = RobotText("auv")
+    for side in ("down", "up"):
+        auv.fixed(auv.root, f"dvl_{side}_link")
+        auv.add(gazebo_sensor(f"dvl_{side}_link", "dvl", f"dvl_{side}", plugin=f"libdvl_{side}.so"))
+    assert _kinds(auv.text())["dvl"] == 2

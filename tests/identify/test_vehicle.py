@@ -600,3 +600,34 @@ def test_a_robot_named_as_a_drone_that_shows_no_way_of_travelling_flies_with_dou
     # Wheels say how it travels: the name is no evidence then.
     builders.wheeled_base(scout)
     assert identify_urdf(scout.text()).structure == "UGV"
+
+
+def quad(name: str) -> RobotText:
+    """Four unnamed-by-role propeller joints on upright axes all round a body, called ``name``."""
+    robot = RobotText(name)
+    for i, (x, y) in enumerate(((0.2, 0.2), (0.2, -0.2), (-0.2, 0.2), (-0.2, -0.2))):
+        builders.placed(
+            robot, f"prop{i}_joint", "continuous", robot.root, f"prop{i}", xyz=f"{x} {y} 0.05"
+        )
+    return robot
+
+
+def test_a_water_word_inside_another_word_or_a_tag_floats_nothing() -> None:
+    for name in ("airship", "mothership_drone", "surface_survey_quad", "spaceship"):
+        assert identify_urdf(quad(name).text()).structure == "UAV", name
+    auv = hull_with_hydrodynamics("auv")
+    auv.add("<gazebo><relationship>none</relationship><ownership/></gazebo>")
+    assert identify_urdf(auv.text()).structure == "Underwater Vehicle"
+
+
+def test_a_boat_name_does_not_float_a_body_with_a_dvl() -> None:
+    sub = hull_with_hydrodynamics("u_boat")
+    sub.fixed(sub.root, "dvl_link")
+    sub.add(builders.gazebo_sensor("dvl_link", "dvl", "dvl"))
+    assert identify_urdf(sub.text()).structure == "Underwater Vehicle"
+
+
+def test_a_gripper_named_for_boats_is_a_gripper() -> None:
+    robot = builders.parallel_gripper()
+    robot.name = "boat_gripper"
+    assert identify_urdf(robot.text()).structure == "Gripper"
