@@ -96,18 +96,7 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
     ``<ros2_control>`` sensor (told by what it reads) counts when no element or plugin declares
     a device of its kind.
     """
-    found: list[tuple[Detection, str]] = []
-    beams: set[int] = set()  # range rays a DVL's name marks: its beams, not devices
-    urdf_links = {t.name: t.link for t in urdf.sensors if t.origin == "urdf" and t.link}
-    for tag in urdf.sensors:
-        kind = element_kind(tag, profile)
-        link = tag.link
-        if link is not None and not urdf.has_link(link) and link in urdf_links:
-            link = urdf_links[link]  # a Gazebo <sensor> referring to a URDF <sensor> by name
-        detection = Detection(kind, tag.name or tag.type, source, link, tag.vertical_samples)
-        if kind == "dvl" and tag.type in _BEAM_TYPES:
-            beams.add(id(detection))
-        found.append((detection, tag.origin))
+    found, beams = _element_detections(urdf, profile, source)
     for plugin in urdf.plugins:
         simulated = _plugin_kind(plugin, profile)
         if simulated is None:
@@ -125,6 +114,26 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
         if included is not None:
             found.append((Detection(included, model.name, source, model.link), "model"))
     return tuple(_devices(_hardware_kept(found), urdf, beams))
+
+
+def _element_detections(
+    urdf: Urdf, profile: Profile, source: str
+) -> tuple[list[tuple[Detection, str]], set[int]]:
+    """One detection per sensor element, with where it was declared; and the ids of those that
+    are a DVL's beams (range rays its name marks), parts of a device rather than devices."""
+    found: list[tuple[Detection, str]] = []
+    beams: set[int] = set()
+    urdf_links = {t.name: t.link for t in urdf.sensors if t.origin == "urdf" and t.link}
+    for tag in urdf.sensors:
+        kind = element_kind(tag, profile)
+        link = tag.link
+        if link is not None and not urdf.has_link(link) and link in urdf_links:
+            link = urdf_links[link]  # a Gazebo <sensor> referring to a URDF <sensor> by name
+        detection = Detection(kind, tag.name or tag.type, source, link, tag.vertical_samples)
+        if kind == "dvl" and tag.type in _BEAM_TYPES:
+            beams.add(id(detection))
+        found.append((detection, tag.origin))
+    return found, beams
 
 
 def _hardware_kept(found: list[tuple[Detection, str]]) -> list[tuple[Detection, str]]:
