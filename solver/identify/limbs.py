@@ -546,16 +546,7 @@ def _mirrored_corners(starts: list[tuple[float, float]]) -> bool:
 def _turns_whole(tree: JointTree, limb: Limb) -> bool:
     """The limb's one joint turns all the way round (continuous, or a range of a full turn)."""
     joint = tree.urdf.joint(limb.joints[0])
-    if joint is None or joint.mimic is not None:
-        return False
-    if joint.type == "continuous":
-        return True
-    return (
-        joint.type == "revolute"
-        and joint.lower is not None
-        and joint.upper is not None
-        and joint.upper - joint.lower >= _FULL_TURN
-    )
+    return joint is not None and joint.mimic is None and joint.turns(_FULL_TURN)
 
 
 def _parallel(tree: JointTree, group: list[Limb]) -> bool:

@@ -104,18 +104,22 @@ class Joint:
             and self.lower == self.upper
         )
 
-    @property
-    def endless(self) -> bool:
-        """It turns for ever: continuous, or revolute with a range no real stop has (PX4's
-        rotors are revolute joints of +-1e16 rad)."""
+    def turns(self, at_least: float) -> bool:
+        """It turns through ``at_least`` radians: continuous, or revolute with that range."""
         if self.type == "continuous":
             return True
         return (
             self.type == "revolute"
             and self.lower is not None
             and self.upper is not None
-            and self.upper - self.lower >= _ENDLESS_RANGE
+            and self.upper - self.lower >= at_least
         )
+
+    @property
+    def endless(self) -> bool:
+        """It turns for ever: continuous, or revolute with a range no real stop has (PX4's
+        rotors are revolute joints of +-1e16 rad)."""
+        return self.turns(_ENDLESS_RANGE)
 
     @property
     def actuated(self) -> bool:
