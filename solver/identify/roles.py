@@ -70,6 +70,13 @@ _VESSEL_NAME = re.compile(
 )
 
 
+# A robot name that says a craft below the surface, whole words (``rov_model``, ``lauv``'s
+# ``auv`` part is not one: ``lauv`` is no whole word; ``submarine``, ``uuv``).
+_SUBMERSIBLE_NAME = re.compile(
+    r"(^|[_/\d-])(auv|rov|uuv|submarine|submersible)s?([_/\d-]|$)", re.IGNORECASE
+)
+
+
 def main_axis(axis: tuple[float, float, float]) -> int:
     """0, 1 or 2 for an axis along x, y or z; -1 for a slanted one."""
     sizes = [abs(v) for v in axis]
@@ -87,19 +94,25 @@ class RoleReader:
         self.plugin_parts = {id(p): self._plugin_parts(p) for p in urdf.plugins}
         self.fixed_thrusters = self._fixed_thrusters()
         self.named_vessel = self._named_vessel()
+        self.named_submersible = self._name_says(_SUBMERSIBLE_NAME)
         self.marine = (
             bool(self.plugins_of("marine") or self.plugins_of("thruster") or self.fixed_thrusters)
             or any(self.matches("thruster", joint) for joint in urdf.joints if joint.movable)
-            # A craft named for the surface (a boat, an ASV): its propellers push it in water.
+            # A craft named for the water (a boat, an ASV, an AUV): its propellers push it.
             or self.named_vessel
+            or self.named_submersible
         )
         self.named = self._named_by_plugins()
+
+    def _name_says(self, words: re.Pattern[str]) -> bool:
+        """The robot's own name holds one of ``words`` and no flight plugin flies it."""
+        return bool(words.search(self.urdf.name)) and not self.plugins_of("flight")
 
     def _named_vessel(self) -> bool:
         """The robot's own name is a surface craft's (:data:`_VESSEL_NAME`: ``boat``, ``sailboat``,
         ``asv``, ``catamaran``, as whole words), and no flight plugin flies it nor a sensor of a
         body below the water (a DVL, a depth gauge) dives it."""
-        if not _VESSEL_NAME.search(self.urdf.name) or self.plugins_of("flight"):
+        if not self._name_says(_VESSEL_NAME):
             return False
         below = self.profile.plugin_pattern("underwater")
         return below is None or not any(

@@ -54,6 +54,8 @@ __all__ = [
 ]
 
 _ROTATING = ("continuous", "revolute")
+# A plugin that sets a body's twist in space (Gazebo Sim's VelocityControl), air or ground alike.
+_VELOCITY_CONTROL = re.compile(r"velocity[_-]?control", re.IGNORECASE)
 _GPS = re.compile(r"gps|navsat|gnss", re.IGNORECASE)
 # Buoyancy over weight a hull floats with: a surface hull carries a reserve (measured on the
 # development part: 1.2 to 12.5); a submersible is trimmed a hair above neutral (1.01, so it
@@ -301,37 +303,51 @@ def flight_hints(tree: JointTree, roles: dict[str, Role], limbs: Sequence[Limb])
     as ``drone`` in a parameter is a name (another robot's namespace), not flight.
     """
     pattern = tree.profile.plugin_pattern("flight")
-    walks = any(limb.kind == "leg" for limb in limbs)
-    if pattern is None or tree.labels("flight") or walks or grounded(tree, roles):
+    if pattern is None or tree.labels("flight"):
         return ()
+    # A body that shows no way of travelling says what it is only by its name: an aircraft
+    # exported as one link and its mesh (`Fixed_Wing_UAV`), a drone a simulator moves by
+    # setting its pose or its velocity (a velocity plugin moves a wheelless body in the air as
+    # well as on the ground), flies, with doubt.
+    named = (
+        (f"robot name {tree.urdf.name}",)
+        if pattern.search(tree.urdf.name) and _travels_no_way_read(tree, roles, limbs, pushed=True)
+        else ()
+    )
+    walks = any(limb.kind == "leg" for limb in limbs)
+    if walks or grounded(tree, roles):
+        return named
     found = tuple(
         f"the parameters of plugin {tree.reader.plugin_label(p)}"
         for p in tree.urdf.plugins
         if any(pattern.search(text) for _, text in p.params)
     )
-    # A body that shows no way of travelling says what it is only by its name: an aircraft
-    # exported as one link and its mesh (`Fixed_Wing_UAV`), a drone a simulator moves by
-    # setting its pose, flies, with doubt.
-    if _travels_no_way_read(tree, roles, limbs) and pattern.search(tree.urdf.name):
-        found += (f"robot name {tree.urdf.name}",)
-    return found
+    return found + named
 
 
 def vessel_name(tree: JointTree, roles: dict[str, Role], limbs: Sequence[Limb]) -> tuple[str, ...]:
-    """The robot's name as a surface craft's (``boat``, ``sailboat``, ``usv``, whole words),
-    when nothing else says how the body travels (:func:`_travels_no_way_read`). A hull exported
-    as a few frames, or with only its rudder and sail on joints, is a vessel by its name, with
-    doubt."""
-    if not tree.reader.named_vessel or not _travels_no_way_read(tree, roles, limbs):
+    """The robot's name as a craft's in water, whole words (a surface craft's: ``boat``,
+    ``sailboat``, ``usv``; a submersible's: ``auv``, ``rov``), when nothing else says how the
+    body travels (:func:`_travels_no_way_read`). A hull exported as a few frames, or with only
+    its rudder and sail on joints, is a vessel by its name, with doubt."""
+    named = tree.reader.named_vessel or tree.reader.named_submersible
+    if not named or not _travels_no_way_read(tree, roles, limbs):
         return ()
     return (f"robot name {tree.urdf.name}",)
 
 
-def _travels_no_way_read(tree: JointTree, roles: dict[str, Role], limbs: Sequence[Limb]) -> bool:
+def _travels_no_way_read(
+    tree: JointTree, roles: dict[str, Role], limbs: Sequence[Limb], *, pushed: bool = False
+) -> bool:
     """Nothing says how the body travels: no wheel, caster, track, rotor or thruster, no leg or
     arm, no gripper (a gripper named for its use is a gripper), no plugin that moves it, flies
-    it or puts it in water."""
+    it or puts it in water. ``pushed``: a velocity-control plugin on a body with no wheel,
+    caster or track (it sets the body's twist, in the air as on the ground) says nothing of
+    where it travels either; a planar-move or drive plugin does."""
     moves = {"wheel", "caster", "rotor", "thruster", "gripper"} & {r.role for r in roles.values()}
-    if moves or grounded(tree, roles) or any(limb.kind in ("arm", "leg") for limb in limbs):
+    if moves or tracks(tree) or any(limb.kind in ("arm", "leg") for limb in limbs):
+        return False
+    drives = tree.labels("drive")
+    if drives and not (pushed and all(_VELOCITY_CONTROL.search(label) for label in drives)):
         return False
     return not any(tree.labels(part) for part in ("flight", "marine", "thruster"))

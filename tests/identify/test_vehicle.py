@@ -631,3 +631,30 @@ def test_a_gripper_named_for_boats_is_a_gripper() -> None:
     robot = builders.parallel_gripper()
     robot.name = "boat_gripper"
     assert identify_urdf(robot.text()).structure == "Gripper"
+
+
+def test_a_drone_a_velocity_plugin_pushes_flies_by_its_name_and_a_wheeled_one_rolls() -> None:
+    drone = RobotText("drone")
+    drone.add(
+        builders.model_plugin(
+            "ignition::gazebo::systems::VelocityControl", "ignition-gazebo-velocity-control-system"
+        )
+    )
+    assert identify_urdf(drone.text()).structure == "UAV"
+    builders.wheeled_base(drone)
+    assert identify_urdf(drone.text()).structure == "UGV"
+
+
+def test_a_robot_named_as_a_submersible_that_shows_no_way_of_travelling_dives_with_doubt() -> None:
+    rov = RobotText("rov_model_urdf")
+    rov.fixed(rov.root, "camera_link")
+    rov.add(builders.gazebo_sensor("camera_link", "camera", "camera_front"))
+    result = identify_urdf(rov.text())
+    assert result.structure == "Underwater Vehicle"
+    assert result.confidence < 0.85
+    # Its propellers push it in water; a rover's name is no submersible's.
+    auv = RobotText("my_auv")
+    for side in ("left", "right"):
+        auv.joint(f"{side}_prop_joint", "continuous", auv.root, f"{side}_prop")
+    assert {role.role for role in identify_urdf(auv.text()).roles} == {"thruster"}
+    assert identify_urdf(named_hull("rover").text()).structure == "Other"
