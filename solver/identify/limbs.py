@@ -310,6 +310,11 @@ def _mirrored(a: Place, b: Place) -> bool:
     )
 
 
+def _facing_y(place: Place) -> Place:
+    """``place`` as a body drawn facing y would have it drawn facing x (x and y swapped)."""
+    return (place[1], place[0], place[2])
+
+
 def _across_from(a: Place, b: Place) -> bool:
     """One on each side of the body (across y), as far out."""
     return a[1] * b[1] < 0 and abs(a[1] + b[1]) <= _MIRRORED * abs(a[1] - b[1])
@@ -344,7 +349,8 @@ def _hanging_pair(
         below_the_root = below_the_root and root - end[2] >= reach / 2
         at_the_root = at_the_root and abs(root - end[2]) <= reach / 2
     (a, _), (b, _) = placed[id(one)], placed[id(other)]
-    if not _across_from(a, b):
+    # Side by side across the body (y), or across x in a file drawn facing y.
+    if not (_across_from(a, b) or _across_from(_facing_y(a), _facing_y(b))):
         return None
     hips = max(a[2], b[2])
     if not _trunk_above(tree, limbs, (one, other), placed, hips):

@@ -1004,3 +1004,16 @@ def test_a_dual_arm_pedestal_with_camera_heads_above_is_no_biped() -> None:
         )
         robot.add(builders.gazebo_sensor(tip, "camera", f"cam_{side}"))
     assert identify_urdf(robot.text()).structure not in ("Biped", "Humanoid")
+
+
+def test_two_legs_hanging_side_by_side_across_x_are_a_biped_drawn_facing_y() -> None:
+    robot = RobotText("r", root="torso")
+    for side, x in (("a", 0.15), ("b", -0.15)):
+        placed_chain(
+            robot,
+            robot.root,
+            f"{side}j",
+            start=f"{x} 0 0",
+            steps=["0 0 -0.13", "0 0 -0.4", "0 0 -0.4"],
+        )
+    assert identify_urdf(robot.text()).structure == "Biped"
