@@ -70,8 +70,8 @@ _VESSEL_NAME = re.compile(
 )
 
 
-# A robot name that says a craft below the surface, whole words (``rov_model``, ``lauv``'s
-# ``auv`` part is not one: ``lauv`` is no whole word; ``submarine``, ``uuv``).
+# A robot name that says a craft below the surface, read as whole words (``rov_model``,
+# ``my_auv``, ``submarine``; not ``rover``).
 _SUBMERSIBLE_NAME = re.compile(
     r"(^|[_/\d-])(auv|rov|uuv|submarine|submersible)s?([_/\d-]|$)", re.IGNORECASE
 )

@@ -266,11 +266,14 @@ def _above_water_sensors(tree: JointTree) -> list[str]:
 
 def underwater_hints(tree: JointTree) -> tuple[str, ...]:
     """Thruster and underwater plugins, and sensors (by type, name or plugin) the profile's
-    ``underwater`` pattern reads: a DVL, a pressure sensor."""
+    ``underwater`` pattern reads: a DVL, a pressure sensor; the robot's name as a submersible's
+    (``auv``, ``rov``, whole words)."""
     pattern = tree.profile.plugin_pattern("underwater")
     if not tree.reader.marine:
         return ()
     hints = [*tree.labels("thruster"), *tree.labels("underwater")]
+    if tree.reader.named_submersible:  # an AUV, an ROV: a body below the surface
+        hints.append(f"robot name {tree.urdf.name}")
     if pattern is not None:
         hints += [
             sensor.name

@@ -652,6 +652,10 @@ def test_a_robot_named_as_a_submersible_that_shows_no_way_of_travelling_dives_wi
     result = identify_urdf(rov.text())
     assert result.structure == "Underwater Vehicle"
     assert result.confidence < 0.85
+    # Its name says it dives: a scanner on it floats it no more than a DVL would.
+    rov.fixed(rov.root, "scan_link")
+    rov.add(builders.gazebo_sensor("scan_link", "ray", "lidar"))
+    assert identify_urdf(rov.text()).structure == "Underwater Vehicle"
     # Its propellers push it in water; a rover's name is no submersible's.
     auv = RobotText("my_auv")
     for side in ("left", "right"):
