@@ -3,7 +3,8 @@
 A description may place its body by joints that move no part of it: a ``floating`` or
 ``planar`` joint that carries the body, or a chain of joints at the root that slide along x and
 y and turn about z (a planar base, as simulators model a mobile base) or slide along x, y, z and
-turn about all three (a simulated floating base). :func:`placement` finds them; the root
+turn about all three (a simulated floating base) or about z alone (a simulated hovering body, a
+drone's four degrees of freedom). :func:`placement` finds them; the root
 chain's joints are then nobody's limb.
 
 A ``floating`` joint that carries only a leaf part is no base: it is a part a simulator poses
@@ -32,7 +33,7 @@ class Placement:
 
     floating: tuple[str, ...] = ()
     planar: tuple[str, ...] = ()
-    placing: tuple[str, ...] = ()  # root joints: x, y and a turn, or x, y, z and three turns
+    placing: tuple[str, ...] = ()  # root joints: x, y and a turn; x, y, z and one or three turns
 
 
 def placement(tree: JointTree) -> Placement:
@@ -42,6 +43,8 @@ def placement(tree: JointTree) -> Placement:
     placing = _root_axes(tree)
     if len(placing) == 6:
         floating.append(f"root joints {', '.join(placing)} (x, y, z and three turns)")
+    elif len(placing) == 4:
+        floating.append(f"root joints {', '.join(placing)} (x, y, z and a turn about z)")
     elif len(placing) == 3:
         planar.append(f"root joints {', '.join(placing)} (x, y and a turn about z)")
     return Placement(tuple(floating), tuple(planar), tuple(placing))
@@ -55,12 +58,15 @@ def _carries(tree: JointTree, joint: Joint) -> bool:
 
 def _root_axes(tree: JointTree) -> list[str]:
     """Joints at the root that only place the body: x, y and a turn about z (planar), or x,
-    y, z and three turns (a simulated floating base); [] when the root is not so.
+    y, z and three turns or a turn about z (a simulated floating or hovering base); [] when the
+    root is not so.
     """
     chain = _root_chain(tree)
     if len(chain) >= 3 and _moves(chain[:3]) == ({0, 1}, [2]):
         return [j.name for j in chain[:3]]
     if len(chain) == 6 and _moves(chain) == ({0, 1, 2}, [0, 1, 2]):
+        return [j.name for j in chain]
+    if len(chain) == 4 and _moves(chain) == ({0, 1, 2}, [2]):
         return [j.name for j in chain]
     return []
 

@@ -128,3 +128,27 @@ def test_a_single_posed_propeller_still_flies() -> None:
     robot = RobotText("posed_plane")
     robot.joint("prop_joint", "floating", "base_link", "prop")
     assert identify_urdf(robot.text()).structure == "UAV"
+
+
+def test_root_joints_along_x_y_z_and_about_z_place_a_hovering_body() -> None:
+    # A simulator's drone: a box slid along x, y and z and turned about z, rotors fixed to it.
+    drone = RobotText("mydrone", root="world")
+    link = "world"
+    for name, kind, axis in (
+        ("flightx", "prismatic", "1 0 0"),
+        ("flighty", "prismatic", "0 1 0"),
+        ("flightz", "prismatic", "0 0 1"),
+        ("yaw", "continuous", "0 0 1"),
+    ):
+        link = drone.joint(
+            name, kind, link, f"{name}_link", f'<axis xyz="{axis}"/><limit lower="-20" upper="20"/>'
+        )
+    found = placement(tree_of(drone))
+    assert found.placing == ("flightx", "flighty", "flightz", "yaw")
+    assert found.floating == (
+        "root joints flightx, flighty, flightz, yaw (x, y, z and a turn about z)",
+    )
+    result = identify_urdf(drone.text())
+    assert result.structure == "UAV"
+    assert result.body is not None
+    assert not result.body.limbs  # the chain places the body: no arm
