@@ -945,14 +945,20 @@ def lone_leg(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
 
 
 def bolted_chain(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
-    """A short unnamed chain, the body's only limb, hanging from a root fixed to ``world`` on a
-    body that does not move: the base is bolted down and the chain is what it is there for. It
+    """A short unnamed chain, the body's only limb, hanging from a root fixed to ``world`` (or
+    every joint of it driven by a controller) on a body that does not move: the base is bolted
+    down and the chain is what it is there for. It
     is an arm (of two joints or more), whether it carries a sensor at its tip (read as a
     pan/tilt unit only for that) or nothing the names tell (a two-link teaching arm)."""
     if moves or len(limbs) != 1 or limbs[0].kind not in ("head", "other") or limbs[0].named:
         return limbs
     limb = limbs[0]
-    if len(limb.joints) < 2 or not _on_the_root(tree, limb.base) or not _world_root(tree):
+    # Bolted down: the root fixed to the world, or every joint of the chain commanded by a
+    # controller (a transmission or ros2_control) on a body that does not move itself.
+    driven = all(name in tree.urdf.controlled_joints for name in limb.joints)
+    if len(limb.joints) < 2 or not _on_the_root(tree, limb.base):
+        return limbs
+    if not (_world_root(tree) or driven):
         return limbs
     pan, tilt = (tree.urdf.joint(name) for name in limb.joints[:2])
     if (

@@ -562,6 +562,20 @@ def test_a_two_joint_chain_of_no_limb_name_bolted_to_the_world_is_an_arm() -> No
     assert identify_urdf(free.text()).structure == "Other"  # not bolted down: nothing says arm
 
 
+def test_a_two_joint_chain_every_joint_of_which_a_controller_drives_is_an_arm() -> None:
+    # No world link: the controller on each joint says the base holds the chain to move it.
+    robot = RobotText("leg_test_rig")
+    robot.fixed(robot.chain(robot.root, ["rev1", "rev_2"]), "link_ee")
+    for joint in ("rev1", "rev_2"):
+        robot.add(builders.transmission(joint))
+    assert identify_urdf(robot.text()).structure == "Manipulator"
+    # One joint driven, the other free: no such evidence.
+    half = RobotText("rig")
+    half.fixed(half.chain(half.root, ["rev1", "rev_2"]), "link_ee")
+    half.add(builders.transmission("rev1"))
+    assert identify_urdf(half.text()).structure == "Other"
+
+
 def test_the_same_chain_on_a_free_root_or_with_head_names_stays_a_pan_tilt_unit() -> None:
     free = RobotText("camera_mount")
     tip = free.chain(free.root, ["joint1", "joint2"])
