@@ -3,11 +3,12 @@
 A gripper joint (named so by the profile, or on a link named as a hand or palm:
 :mod:`solver.identify.roles`) moves a finger, and so does every movable joint below one (a
 finger's phalanges): :func:`gripper_closure`. Fingers whose chains carry no names are still
-told by where they are, side by side on one link in threes or more (:func:`finger_groups`).
+told by where they are, side by side on one palm in threes or more (:func:`finger_groups`).
 Jaws are told by where they are too (:func:`jaws`): joints side by side on one link that turn
-or slide about one line with nothing beyond them, closed by one motion (mimic joints follow one
-driver) or, at the end of a chain of two joints or more, each by its own (a humanoid's split
-gripper). A hand is counted by its fingers, one tip per finger (:func:`finger_tips`).
+or slide about one line with nothing beyond them but their own followers (a linkage of mimic
+joints), closed by one motion (mimic joints follow one driver) or, at the end of a chain of two
+joints or more, each by its own (a humanoid's split gripper). A hand is counted by its
+fingers, one tip per finger (:func:`finger_tips`).
 
 Not here: the limb a hand ends (:mod:`solver.identify.limbs`), the other single-joint roles
 (:mod:`solver.identify.actuation`).
@@ -167,8 +168,9 @@ def finger_groups(
     grounded: bool = False,
     walks_on: frozenset[str | None] = frozenset(),
 ) -> set[str]:
-    """Joints of unnamed short chains hanging from one link in threes or more: fingers (also
-    where each ends in a named fingertip).
+    """Joints of unnamed short chains hanging from one palm (a link, and the links fixed to it:
+    a metacarpal each) in threes or more: fingers (also where each ends in a named fingertip);
+    failing that, fingers that spread on joints of their own, and chains beside a thumb.
 
     A claw or a hand whose fingers carry no names still has them side by side on a palm; arms
     and legs on one link come in ones and twos. On a body that moves on the ground, chains on
