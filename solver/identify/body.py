@@ -415,7 +415,11 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
     # carries no fingers.
     legged = legs_by_reach(tree, legs_at_the_pelvis(tree, parts.limbs))
     fingers = finger_groups(
-        tree, parts.limbs, grounded=grounded(tree, parts.roles), walks_on=_trunks(tree, legged)
+        tree,
+        parts.limbs,
+        grounded=grounded(tree, parts.roles),
+        walks_on=_trunks(tree, legged),
+        grippers=frozenset(parts.grippers),
     )
     if fingers:
         for name in fingers:

@@ -167,6 +167,7 @@ def finger_groups(
     *,
     grounded: bool = False,
     walks_on: frozenset[str | None] = frozenset(),
+    grippers: frozenset[str] = frozenset(),
 ) -> set[str]:
     """Joints of unnamed short chains hanging from one palm (a link, and the links fixed to it:
     a metacarpal each) in threes or more: fingers (also where each ends in a named fingertip);
@@ -200,21 +201,37 @@ def finger_groups(
     for group in by_palm.values():
         if len(group) >= tree.profile.limb("hand_min_fingers"):
             found.update(name for limb in group for name in limb.joints)
-    return found or _spread_fingers(tree, by_base) or _beside_a_thumb(tree, beside)
+    if found:
+        return found
+    # By rigid body too: the palm's links, and the bodies a gripper joint starts from (a thumb
+    # named so, on a carpal link fixed to the palm).
+    on_palm: dict[str | None, list[Limb]] = {}
+    for base, group in beside.items():
+        on_palm.setdefault(moved_by(tree.urdf, base, known), []).extend(group)
+    palms = frozenset(
+        moved_by(tree.urdf, joint.parent, known)
+        for name in grippers
+        if (joint := tree.urdf.joint(name)) is not None
+    )
+    return _spread_fingers(tree, by_base) or _beside_a_thumb(tree, on_palm, palms)
 
 
-def _beside_a_thumb(tree: JointTree, by_base: dict[str, list[Limb]]) -> set[str]:
-    """Chains on the link a thumb starts from, three or more in all and none longer than a
-    finger: the palm's fingers, even where a name says otherwise (a carpal joint named for the
-    wrist). A thumb is a chain ending in a gripper that, with the finger joints below it, is no
-    longer than a finger (an arm ending in a gripper is longer); a palm has one (a torso's two
-    short arms each ending in a gripper are no thumbs)."""
+def _beside_a_thumb(
+    tree: JointTree, by_body: dict[str | None, list[Limb]], palms: frozenset[str | None]
+) -> set[str]:
+    """Chains on the rigid body a thumb starts from, three or more in all and none longer than a
+    finger and its carpometacarpal joint: the palm's fingers, even where a name says otherwise
+    (a carpal joint named for the wrist). A thumb is a chain ending in a gripper that, with the
+    finger joints below it, is no longer than a finger (an arm ending in a gripper is longer),
+    or gripper joints on the body itself (``palms``: a thumb named so); a palm has one (a
+    torso's two short arms each ending in a gripper are no thumbs)."""
     longest = tree.profile.limb("finger_max_joints")
     found: set[str] = set()
-    for group in by_base.values():
-        if len(group) < tree.profile.limb("hand_min_fingers"):
+    for body, group in by_body.items():
+        named_thumb = body in palms
+        if len(group) < tree.profile.limb("hand_min_fingers") - named_thumb:
             continue
-        if any(len(limb.joints) > longest for limb in group):
+        if any(len(limb.joints) > longest + 1 for limb in group):
             continue  # a chain longer than any finger: an arm beside it, no palm
         thumbs = [
             limb
@@ -222,7 +239,7 @@ def _beside_a_thumb(tree: JointTree, by_base: dict[str, list[Limb]]) -> set[str]
             if limb.gripper
             and len(limb.joints) + _movable_below(tree, limb.tip, longest) <= longest
         ]
-        if len(thumbs) == 1:  # two short arms, each ending in a gripper, are no thumbs
+        if len(thumbs) + named_thumb == 1:  # two short arms ending in grippers: no thumbs
             found.update(name for limb in group for name in limb.joints)
     return found
 

@@ -310,3 +310,19 @@ def test_two_short_arms_each_ending_in_a_gripper_are_no_thumbs_of_a_palm() -> No
         robot.chain(tip, [f"{side}_gripper"])
     robot.chain("torso", ["t1", "t2"])
     assert identify_urdf(robot.text()).structure != "Hand"
+
+
+def hand_with_a_named_thumb(*, finger_joints: int = 5) -> RobotText:
+    """A wrist link carrying four unnamed chains of ``finger_joints`` joints (a finger with its
+    carpometacarpal joint) and, on a carpal link fixed to it, a thumb named so."""
+    robot = RobotText("Hand9DOF", root="Wrist")
+    for finger in ("a", "b", "c", "d"):
+        robot.chain("Wrist", [f"{finger}{i}_joint" for i in range(finger_joints)])
+    robot.chain(robot.fixed("Wrist", "trapezium"), ["ThumbTMC_joint", "ThumbIP_joint"])
+    return robot
+
+
+def test_chains_on_the_body_a_named_thumb_starts_from_are_fingers_with_their_cmc_joint() -> None:
+    assert identify_urdf(hand_with_a_named_thumb().text()).structure == "Hand"
+    # Six joints each: arms beside a thumb-named part, no palm.
+    assert identify_urdf(hand_with_a_named_thumb(finger_joints=6).text()).structure != "Hand"

@@ -372,6 +372,11 @@ def bare_body(name: str) -> RobotText:
     return robot
 
 
+def test_a_bare_body_named_as_a_multirotor_flies_with_doubt() -> None:
+    for name in ("quadrotor", "swarm_hexarotor", "octorotor_3"):
+        assert identify_urdf(bare_body(name).text()).structure == "UAV", name
+
+
 def test_a_bare_body_named_as_an_aircraft_flies_with_doubt() -> None:
     result = identify_urdf(bare_body("Fixed_Wing_UAV").text())
     assert result.structure == "UAV"
