@@ -535,6 +535,16 @@ def test_a_ros2_control_sensor_is_told_by_what_it_reads() -> None:
     assert sorted(found) == [("force_torque", "Force Sensor", 2), ("imu", None, 1)]
 
 
+def test_a_ros2_control_magnetometer_pressure_gauge_and_named_dvl_are_read() -> None:
+    found = kinds(
+        hardware_sensor("compass", "magnetic_field.x", "magnetic_field.y"),
+        hardware_sensor("depth", "fluid_pressure"),
+        hardware_sensor("dvl_sensor", "linear_velocity.x", "angular_velocity.x", "distance_z"),
+        hardware_sensor("wheel_odometry", "linear_velocity.x"),  # odometry: no device of a kind
+    )
+    assert sorted(kind for kind, _, _ in found) == ["barometer", "dvl", "magnetometer"]
+
+
 def test_a_ros2_control_device_named_external_is_still_a_device() -> None:
     # An IMU or a force sensor mounted outside the robot's body: external, measured.
     found = kinds(

@@ -729,10 +729,12 @@ def _sdf_links(gazebo: etree._Element) -> Iterator[tuple[str, etree._Element]]:
 
 def _hardware_sensors(root: etree._Element) -> list[SensorTag]:
     """The devices a ``<ros2_control>`` block reads, told by their state interfaces: a wrench
-    (``force.x`` .. ``torque.z``, or a load cell's one ``force``) is a force-torque sensor, and
-    angular velocity or linear acceleration an IMU. A pose (``tcp_pose``) is computed, not
-    read, and a block named as an estimate (``external_wrench_in_base``) is the controller's
-    reckoning from the joints' torques, not a device of its own."""
+    (``force.x`` .. ``torque.z``, or a load cell's one ``force``) is a force-torque sensor,
+    angular velocity or linear acceleration an IMU, a magnetic field a magnetometer, a fluid
+    pressure a barometer (a depth gauge below the water), a velocity a DVL named so. A pose
+    (``tcp_pose``) is computed, not read, and a block named as an estimate
+    (``external_wrench_in_base``) is the controller's reckoning from the joints' torques, not a
+    device of its own."""
     found = []
     for control in root.findall("ros2_control"):
         for sensor in control.findall("sensor"):
@@ -741,7 +743,7 @@ def _hardware_sensors(root: etree._Element) -> list[SensorTag]:
                 (state.get("name") or "").strip().lower().split(".", 1)[0]
                 for state in sensor.findall("state_interface")
             }
-            kind = next((k for k, read in _HARDWARE_READINGS if readings & read), None)
+            kind = _hardware_kind(name, readings)
             if kind is None or _ESTIMATE.search(name):
                 continue
             frame = next(
@@ -756,11 +758,22 @@ def _hardware_sensors(root: etree._Element) -> list[SensorTag]:
     return found
 
 
+def _hardware_kind(name: str, readings: set[str]) -> str | None:
+    """The kind of device a ``<ros2_control>`` sensor is, by what it reads; a velocity over the
+    ground is a DVL's only where its name says so (odometry reads one too)."""
+    if "linear_velocity" in readings and _DVL_NAME.search(name):
+        return "dvl"
+    return next((k for k, read in _HARDWARE_READINGS if readings & read), None)
+
+
 # What a ros2_control sensor's state interfaces read (the part before the first dot), by kind.
 _HARDWARE_READINGS = (
     ("force_torque", frozenset({"force", "torque"})),
     ("imu", frozenset({"angular_velocity", "linear_acceleration"})),
+    ("magnetometer", frozenset({"magnetic_field"})),
+    ("barometer", frozenset({"fluid_pressure"})),  # a depth gauge below the water
 )
+_DVL_NAME = re.compile(r"dvl|doppler", re.IGNORECASE)
 _FRAME_PARAMS = frozenset({"frame_id", "sensor_frame", "frame"})
 _ESTIMATE = re.compile(r"estimat|external_(wrench|force|torque)", re.IGNORECASE)
 
