@@ -105,7 +105,7 @@ _LEG_DROP = 0.25
 # A walker's feet at rest are level: their heights differ by at most this share of the
 # shortest drop from hip to foot (a hand's fingers end at their own lengths).
 _FEET_LEVEL = 0.25
-# Places closer than this (metres) across the body are one (a row of hips, not two sides).
+# Places closer than this (metres) across the body are on neither side of its middle.
 _SAME_PLACE = 1e-6
 # A biped's leg, known by place alone, hangs nearly straight down in the zero pose.
 _LEG_STRAIGHT = 0.8
@@ -311,7 +311,7 @@ def _mirrored(a: Place, b: Place) -> bool:
 
 
 def _facing_y(place: Place) -> Place:
-    """``place`` as a body drawn facing y would have it drawn facing x (x and y swapped)."""
+    """``place`` with x and y swapped: a body drawn facing y, read as one drawn facing x."""
     return (place[1], place[0], place[2])
 
 
@@ -947,9 +947,9 @@ def lone_leg(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
 def bolted_chain(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
     """A short unnamed chain, the body's only limb, hanging from a root fixed to ``world`` (or
     every joint of it driven by a controller) on a body that does not move: the base is bolted
-    down and the chain is what it is there for. It
-    is an arm (of two joints or more), whether it carries a sensor at its tip (read as a
-    pan/tilt unit only for that) or nothing the names tell (a two-link teaching arm)."""
+    down and the chain is what it is there for. It is an arm (of two joints or more), whether
+    it carries a sensor at its tip (read as a pan/tilt unit only for that) or nothing the names
+    tell (a two-link teaching arm)."""
     if moves or len(limbs) != 1 or limbs[0].kind not in ("head", "other") or limbs[0].named:
         return limbs
     limb = limbs[0]
