@@ -31,7 +31,7 @@ from collections.abc import Iterator, Mapping
 
 from solver.identify.hands import gripper_closure, jaws
 from solver.identify.limbs import moved_by, nearest_above, points_a_sensor
-from solver.identify.pose import local_axis, parallel
+from solver.identify.pose import local_axis, parallel, spread
 from solver.identify.readers.urdf import Joint
 from solver.identify.roles import POSED, Role, main_axis
 from solver.identify.tree import JointTree
@@ -244,15 +244,13 @@ def _rollers_only(tree: JointTree, joint: Joint) -> bool:
     (its child, or a hub fixed to it), three or more of them: the free rollers on the rim of
     an omni or mecanum wheel."""
     rollers = 0
-    stack = [joint.child]
-    while stack:
-        for below in tree.urdf.children(stack.pop()):
+    for link in (joint.child, *tree.urdf.fixed_below(joint.child)):  # a hub, a housing
+        for below in tree.urdf.children(link):
             if not below.movable:
-                stack.append(below.child)  # a hub, a housing: the same turning part
-            elif not below.endless or below.child in tree.moving_below:
+                continue
+            if not below.endless or below.child in tree.moving_below:
                 return False  # a limited joint, or something moves deeper: no rim of rollers
-            else:
-                rollers += 1
+            rollers += 1
     return rollers >= _ROLLERS
 
 
@@ -385,13 +383,9 @@ def _side_by_side(tree: JointTree, joints: list[Joint]) -> bool:
         return False
     across = (-axis[1], axis[0], 0.0)  # level, at right angles to the axis
     places = [tree.poses.place(j.child) for j in joints]
-    along_spread = _spread([sum(a * b for a, b in zip(p, axis, strict=True)) for p in places])
-    across_spread = _spread([sum(a * b for a, b in zip(p, across, strict=True)) for p in places])
+    along_spread = spread([sum(a * b for a, b in zip(p, axis, strict=True)) for p in places])
+    across_spread = spread([sum(a * b for a, b in zip(p, across, strict=True)) for p in places])
     return across_spread > 0 and along_spread <= _SCREWS_ALONG * across_spread
-
-
-def _spread(values: list[float]) -> float:
-    return max(values) - min(values)
 
 
 def _unnamed_rotors(tree: JointTree, taken: set[str]) -> list[str]:
@@ -471,14 +465,7 @@ def _motor_leaves(tree: JointTree, taken: set[str]) -> Iterator[Joint]:
 
 def _carries_a_named_part(tree: JointTree, joint: Joint) -> bool:
     """A link fixed below ``joint``'s child names a part (a wheel, a rotor, a gripper)."""
-    stack = [joint.child]
-    while stack:
-        for below in tree.urdf.children(stack.pop()):
-            if not below.movable:
-                if tree.parts_of(below.child):
-                    return True
-                stack.append(below.child)
-    return False
+    return any(tree.parts_of(link) for link in tree.urdf.fixed_below(joint.child))
 
 
 def _unnamed_spinners(tree: JointTree, taken: set[str]) -> Iterator[Joint]:

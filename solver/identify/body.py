@@ -325,7 +325,6 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
     _body_parts(tree, parts)
     controlled = urdf.controlled_joints
     wheels = parts.of("wheel")
-    named_vessel = vessel_name(tree, parts.roles, parts.limbs)
     return Body(
         wheels=tuple(wheels),
         rotors=tuple(parts.of("rotor")),
@@ -357,10 +356,10 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
         casters=tuple(parts.of("caster")),
         wings=tuple(wings(tree, parts.roles)),
         marine_plugins=tuple(dict.fromkeys((*tree.labels("thruster"), *tree.labels("marine")))),
-        surface_hints=surface_hints(tree, thrusters=bool(parts.of("thruster")), named=named_vessel),
+        surface_hints=surface_hints(tree, thrusters=bool(parts.of("thruster"))),
         underwater_hints=underwater_hints(tree),
         water_frames=water_frames(tree),
-        vessel_name=named_vessel,
+        vessel_name=vessel_name(tree, parts.roles, parts.limbs),
         flight_hints=flight_hints(tree, parts.roles, parts.limbs),
         finger_motions=sum(1 for name in parts.grippers if (j := urdf.joint(name)) and j.actuated),
         roles=_all_roles(tree, parts),

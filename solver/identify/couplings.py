@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 from solver.identify.pose import local_axis, parallel
 from solver.identify.readers.urdf import Joint, Urdf
 
-__all__ = ["Couplings", "couplings", "jaw_groups"]
+__all__ = ["Couplings", "Walk", "couplings", "jaw_groups"]
 
 # Jaws side by side come in twos (a parallel gripper), threes (a three-jaw chuck) or fours (two
 # jaws of a parallel linkage, an inner and an outer knuckle each).
@@ -74,7 +74,7 @@ def couplings(urdf: Urdf) -> Couplings:
     for follower, driver in driver_of.items():
         followers.setdefault(driver, []).append(follower)
     groups = {driver: tuple(names) for driver, names in followers.items()}
-    walk = _Walk(urdf)
+    walk = Walk(urdf)
     stand_ins: dict[str, str] = {}
     for driver, names in groups.items():
         stand_in = _stand_in(urdf, driver, names, walk, driver_of)
@@ -119,7 +119,7 @@ def _drivers(urdf: Urdf) -> dict[str, str]:
     }
 
 
-class _Walk:
+class Walk:
     """Whether something moves below a joint beyond a group, within one budget of steps for
     the whole description (past it, a joint is taken to carry the body on: a stranger's
     thousand followers of long chains cost a bounded walk)."""
@@ -164,7 +164,7 @@ def _stand_in(
     urdf: Urdf,
     driver: str,
     names: tuple[str, ...],
-    walk: _Walk,
+    walk: Walk,
     driver_of: Mapping[str, str],
 ) -> str | None:
     """The follower that acts for ``driver`` in the tree, or None (see the module docstring)."""
@@ -203,7 +203,7 @@ def _in_another_chain(urdf: Urdf, name: str, stop: str, group: set[str]) -> bool
 def jaw_groups(urdf: Urdf, found: Couplings) -> list[tuple[str, ...]]:
     """Joints of one motion that close side by side: on one link, turning or sliding about one
     line, nothing beyond them but their own followers; two or three of them (jaws)."""
-    walk = _Walk(urdf)
+    walk = Walk(urdf)
     groups = []
     for driver, names in found.followers.items():
         members = [j for j in (urdf.joint(n) for n in (driver, *names)) if j is not None]

@@ -16,7 +16,7 @@ Not here: the limb a hand ends (:mod:`solver.identify.limbs`), the other single-
 
 from __future__ import annotations
 
-from solver.identify.couplings import jaw_groups
+from solver.identify.couplings import Walk, jaw_groups
 from solver.identify.limbs import Limb, moved_by
 from solver.identify.pose import local_axis, parallel
 from solver.identify.readers.urdf import Joint
@@ -49,12 +49,13 @@ def _jaw_pairs(tree: JointTree, taken: set[str]) -> dict[str, str]:
     but its own followers (a leaf, or a jaw's linkage of mimic joints): jaws at the end of a
     chain, or a gripper's whole body (its only motions)."""
     by_parent: dict[str, list[Joint]] = {}
+    walk = Walk(tree.urdf)
     for joint in tree.urdf.joints:
         if (
             joint.actuated
             and joint.type in ("revolute", "prismatic")
             and joint.lower is not None
-            and _moves_alone(tree, joint)
+            and _moves_alone(tree, joint, walk)
             and joint.name not in taken
         ):
             by_parent.setdefault(joint.parent, []).append(joint)
@@ -77,19 +78,14 @@ def _jaw_pairs(tree: JointTree, taken: set[str]) -> dict[str, str]:
     return found
 
 
-def _moves_alone(tree: JointTree, joint: Joint) -> bool:
+def _moves_alone(tree: JointTree, joint: Joint, walk: Walk) -> bool:
     """Nothing moves below ``joint`` but joints that follow it (a jaw's own linkage, its mimic
-    joints closing a four-bar): what it carries moves by it alone. Walks down only as far as
-    the first joint that moves on its own."""
+    joints closing a four-bar): what it carries moves by it alone (``walk`` bounds the walks
+    of the whole description)."""
     if joint.child not in tree.moving_below:
         return True
-    stack = [joint.child]
-    while stack:
-        for below in tree.urdf.children(stack.pop()):
-            if below.movable and tree.couplings.driver(below.name) != joint.name:
-                return False
-            stack.append(below.child)
-    return True
+    followers = set(tree.couplings.followers.get(joint.name, ()))
+    return not walk.moves_beyond(joint.name, followers)
 
 
 def _only_motions(tree: JointTree, pair: list[Joint], motions: list[str]) -> bool:
@@ -179,35 +175,34 @@ def finger_groups(
     chains on the trunk a pair of legs hangs from (``walks_on``: the nearest joint above each
     leg's base that moves, None for the root's rigid body): a humanoid's two arms and neck.
     """
-    by_base: dict[str, list[Limb]] = {}
-    beside: dict[str, list[Limb]] = {}  # every arm or other chain, named or not, by its link
+    by_base: dict[str, list[Limb]] = {}  # short unnamed chains, by the link they start on
+    # By the rigid body the chains start on (a finger may start on a metacarpal link of its own,
+    # fixed to the palm): the short unnamed ones, and every arm or other chain, named or not.
+    by_palm: dict[str | None, list[Limb]] = {}
+    on_palm: dict[str | None, list[Limb]] = {}
     longest = tree.profile.limb("finger_max_joints")
     known: dict[str, str | None] = {}
     for limb in limbs:
         if grounded and limb.base == tree.urdf.root:
             continue
-        if walks_on and moved_by(tree.urdf, limb.base, known) in walks_on:
+        body = moved_by(tree.urdf, limb.base, known)
+        if (walks_on and body in walks_on) or limb.kind not in ("arm", "other"):
             continue
-        if limb.kind in ("arm", "other"):
-            beside.setdefault(limb.base, []).append(limb)
-            if not limb.named and len(limb.joints) <= longest:
-                by_base.setdefault(limb.base, []).append(limb)
-    found: set[str] = set()
-    # By the rigid body the chains start on: a finger may start on a metacarpal link of its
-    # own, fixed to the palm.
-    by_palm: dict[str | None, list[Limb]] = {}
-    for base, group in by_base.items():
-        by_palm.setdefault(moved_by(tree.urdf, base, known), []).extend(group)
-    for group in by_palm.values():
-        if len(group) >= tree.profile.limb("hand_min_fingers"):
-            found.update(name for limb in group for name in limb.joints)
+        on_palm.setdefault(body, []).append(limb)
+        if not limb.named and len(limb.joints) <= longest:
+            by_base.setdefault(limb.base, []).append(limb)
+            by_palm.setdefault(body, []).append(limb)
+    found = {
+        name
+        for group in by_palm.values()
+        if len(group) >= tree.profile.limb("hand_min_fingers")
+        for limb in group
+        for name in limb.joints
+    }
     if found:
         return found
-    # By rigid body too: the palm's links, and the bodies a gripper joint starts from (a thumb
-    # named so, on a carpal link fixed to the palm).
-    on_palm: dict[str | None, list[Limb]] = {}
-    for base, group in beside.items():
-        on_palm.setdefault(moved_by(tree.urdf, base, known), []).extend(group)
+    # The bodies a gripper joint starts from: a thumb named so, on a carpal link fixed to the
+    # palm.
     palms = frozenset(
         moved_by(tree.urdf, joint.parent, known)
         for name in grippers

@@ -48,7 +48,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, replace
 from itertools import islice, pairwise
 
-from solver.identify.pose import distance, parallel, perpendicular
+from solver.identify.pose import distance, parallel, perpendicular, spread
 from solver.identify.readers.urdf import Joint, Urdf
 from solver.identify.roles import Role
 from solver.identify.tree import JointTree
@@ -601,7 +601,7 @@ def _stands(tree: JointTree, base: str, group: list[Limb]) -> bool:
         reach = distance(start, end)
         if reach == 0 or start[2] - end[2] < _LEG_DROP * reach:
             return False
-    feet = _spread([end[2] for _, end in placed])
+    feet = spread([end[2] for _, end in placed])
     if feet > _FEET_LEVEL * min(start[2] - end[2] for start, end in placed):
         return False
     if _both_sides(tree.poses.place(base), placed):
@@ -614,10 +614,6 @@ def _stands(tree: JointTree, base: str, group: list[Limb]) -> bool:
 
 
 Place = tuple[float, float, float]
-
-
-def _spread(values: list[float]) -> float:
-    return max(values) - min(values)
 
 
 def _placed(tree: JointTree, group: list[Limb]) -> list[tuple[Place, Place]] | None:

@@ -21,7 +21,7 @@ import math
 
 from solver.identify.readers.urdf import Joint, Urdf
 
-__all__ = ["Poses", "Vector", "distance", "local_axis", "parallel", "perpendicular"]
+__all__ = ["Poses", "Vector", "distance", "local_axis", "parallel", "perpendicular", "spread"]
 
 Vector = tuple[float, float, float]
 _Matrix = tuple[Vector, Vector, Vector]
@@ -81,6 +81,11 @@ def parallel(one: Vector, other: Vector) -> bool:
 def perpendicular(one: Vector, other: Vector) -> bool:
     """The two axes are square to each other."""
     return _cosine(one, other) <= _PERPENDICULAR
+
+
+def spread(values: list[float]) -> float:
+    """How far apart the farthest two of ``values`` (coordinates along one line) lie."""
+    return max(values) - min(values)
 
 
 def distance(one: Vector, other: Vector) -> float:

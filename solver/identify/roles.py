@@ -137,14 +137,7 @@ class RoleReader:
     @cached_property
     def still(self) -> frozenset[str]:
         """Links no movable joint moves (the root's part), in one walk from the root."""
-        still = {self.urdf.root}
-        stack = [self.urdf.root]
-        while stack:
-            for joint in self.urdf.children(stack.pop()):
-                if not joint.movable:
-                    still.add(joint.child)
-                    stack.append(joint.child)
-        return frozenset(still)
+        return frozenset((self.urdf.root, *self.urdf.fixed_below(self.urdf.root)))
 
     def _plugin_parts(self, plugin: PluginTag) -> frozenset[str]:
         found = set()
@@ -254,17 +247,12 @@ class RoleReader:
         when no link fixed there names another part (a car's hub carries its wheel and a brake
         rotor): what the joint turns (the first found, walking down from the child)."""
         found = None
-        stack = [joint.child]
-        while stack:
-            for below in self.urdf.children(stack.pop()):
-                if below.movable:
-                    continue
-                parts = self.parts_of(below.child)
-                if parts - {"rotor"}:
-                    return None
-                if found is None and "rotor" in parts:
-                    found = below.child
-                stack.append(below.child)
+        for link in self.urdf.fixed_below(joint.child):
+            parts = self.parts_of(link)
+            if parts - {"rotor"}:
+                return None
+            if found is None and "rotor" in parts:
+                found = link
         return found
 
     def _rolls_on(self, joint: Joint, moving_below: set[str]) -> bool:

@@ -165,9 +165,7 @@ def wings(tree: JointTree, roles: dict[str, Role]) -> list[str]:
     return found + surfaces if found else []
 
 
-def surface_hints(
-    tree: JointTree, *, thrusters: bool = False, named: tuple[str, ...] = ()
-) -> tuple[str, ...]:
+def surface_hints(tree: JointTree, *, thrusters: bool = False) -> tuple[str, ...]:
     """A body in water at the surface: surface plugins, and the words the profile's ``surface``
     pattern reads in the hull's own elements (``<metacentric_width>``, wind on its buoyancy)
     or in the parameters of its water plugins, never in a sensor's settings (a barometer's
@@ -177,13 +175,12 @@ def surface_hints(
     of a body below the surface (no plugin, sensor or frame of one), a GPS or a lidar says it:
     satellites are heard, and a laser scans, only above the water. ``thrusters``: joints play a
     thruster's role (an unnamed pair of screws, :mod:`solver.identify.actuation`): the body is
-    in water though no plugin or name says so. ``named``: the robot's name alone puts it in
-    water (:func:`vessel_name`). The robot's name as a surface craft's (``sailboat``, ``asv``,
-    ``catamaran``, whole words; :meth:`~solver.identify.roles.RoleReader.named_vessel`) floats a
+    in water though no plugin or name says so. The robot's name as a surface craft's
+    (``sailboat``, ``asv``, ``catamaran``, whole words; ``RoleReader.named_vessel``) floats a
     body in water whatever its water plugins are also used for (a hydrodynamics plugin moves
     hulls at the surface too), unless a flight plugin or a DVL or depth sensor says otherwise."""
     pattern = tree.profile.plugin_pattern("surface")
-    if pattern is None or not (tree.reader.marine or thrusters or named):
+    if pattern is None or not (tree.reader.marine or thrusters):
         return ()
     hints = list(tree.labels("surface"))
     if tree.reader.named_vessel:  # a boat, a catamaran, an ASV: a hull at the surface

@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 from solver.identify import identify_urdf
-from solver.identify.pose import Poses, distance, parallel, perpendicular
+from solver.identify.pose import Poses, distance, parallel, perpendicular, spread
 from solver.identify.readers.urdf import parse_urdf
 from tests.identify import builders
 from tests.identify.builders import RobotText
@@ -69,3 +69,8 @@ def test_a_chain_hanging_from_an_origin_far_out_is_read_not_a_traceback() -> Non
         )
         builders.placed(robot, f"{side}1", "revolute", link, f"{side}l1", xyz="0 0 -1e200")
     assert identify_urdf(robot.text()).structure
+
+
+def test_the_spread_of_values_is_how_far_apart_the_farthest_two_lie() -> None:
+    assert spread([0.5, -0.25, 0.125]) == 0.75
+    assert spread([3.0]) == 0.0

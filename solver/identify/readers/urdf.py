@@ -258,6 +258,16 @@ class Urdf:
     def has_link(self, name: str) -> bool:
         return name in self._children
 
+    def fixed_below(self, link: str) -> Iterator[str]:
+        """The links fixed below ``link`` (through joints that cannot move): the rest of the
+        rigid part ``link`` begins, depth first."""
+        stack = [link]
+        while stack:
+            for joint in self.children(stack.pop()):
+                if not joint.movable:
+                    yield joint.child
+                    stack.append(joint.child)
+
     def subtree_joints(self, link: str) -> Iterator[Joint]:
         """Every joint below ``link``, depth first in document order."""
         stack = list(reversed(self.children(link)))

@@ -170,3 +170,15 @@ def test_an_included_model_with_a_blank_name_is_named_by_its_model() -> None:
     robot = builders.ugv()
     robot.add("<gazebo><include><uri>model://gps</uri><name>   </name></include></gazebo>")
     assert [(m.model, m.name) for m in parse_urdf(robot.text()).models] == [("gps", "gps")]
+
+
+def test_the_links_fixed_below_a_link_stop_at_every_joint_that_moves() -> None:
+    robot = builders.RobotText("r")
+    hub = robot.fixed(robot.root, "hub")
+    robot.fixed(hub, "tyre")
+    spoke = robot.chain(hub, ["spin"])
+    robot.fixed(spoke, "cap")
+    urdf = parse_urdf(robot.text())
+    assert sorted(urdf.fixed_below(robot.root)) == ["hub", "tyre"]
+    assert list(urdf.fixed_below(spoke)) == ["cap"]
+    assert list(urdf.fixed_below("tyre")) == []
