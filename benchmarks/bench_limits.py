@@ -175,3 +175,22 @@ def test_check_all_values_and_2000_constraints(benchmark: BenchmarkFixture, tmp_
     # One finding per characteristic, naming its dead values: 2,000 forbids reach all 249.
     assert len(dead) == 249
     assert len({f.location.line for f in dead}) == 249
+
+
+def test_read_a_workspace_at_its_byte_bound(benchmark: BenchmarkFixture, tmp_path: Path) -> None:
+    """300 packages that all name each other, each a launch file at the per-file bound: the
+    walk stops at the byte bound with one warning, and what it read is the robot's."""
+    from solver.identify.readers import workspace
+
+    names = [f"pkg_{i:04d}" for i in range(300)]
+    words = " ".join(names) + " nav2_bringup "
+    text = words * (workspace.MAX_FILE_BYTES // len(words))
+    for name in names:
+        (tmp_path / name / "launch").mkdir(parents=True)
+        (tmp_path / name / "package.xml").write_text(f"<package><name>{name}</name></package>")
+        (tmp_path / name / "launch" / "a.launch").write_text(text)
+    found = _once(benchmark, workspace.read_workspace, tmp_path / names[0])
+    assert found is not None
+    per_file = len(text)
+    assert len(found.files) == -(-workspace.MAX_TOTAL_BYTES // per_file)
+    assert "more than 48 MiB of files" in found.warnings[0].message

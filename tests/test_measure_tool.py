@@ -377,6 +377,7 @@ def test_the_shipped_split_puts_every_row_of_the_measured_fresh_sets_in_developm
         "fresh_set_20",
         "fresh_set_21",
         "fresh_set_22",
+        "fresh_set_23",
     )
     for name in moved_sets:
         with (ROOT / "tools" / name / "truth.csv").open(encoding="utf-8") as stream:
@@ -385,7 +386,7 @@ def test_the_shipped_split_puts_every_row_of_the_measured_fresh_sets_in_developm
         assert set(listed) == moved
         assert set(listed.values()) == {"development"}
     # The blind set is held out by the measurement tool, never listed here (nor read here).
-    assert not [row for row in rows if row["set"] == "fresh_set_23"]
+    assert not [row for row in rows if row["set"] == "fresh_set_24"]
     assert "moved whole to the development" in text
 
 
@@ -429,3 +430,23 @@ def test_no_names_measures_what_is_read_with_no_word_of_a_parts_name(tmp_path: P
     named = row_of(measure("--set", str(tmp_path / "set")), "**all**", "set")
     nameless = row_of(measure("--set", str(tmp_path / "set"), "--no-names"), "**all**", "set")
     assert (named[1], nameless[1]) == ("1/1 (100%)", "0/1 (0%)")
+
+
+def test_a_rows_kept_repository_is_read_for_the_controls_its_packages_ship(
+    tmp_path: Path,
+) -> None:
+    tiny_set(tmp_path / "tiny")
+    guessed = row_of(measure("--set", str(tmp_path / "tiny")), "mobile base", "tiny")
+    assert guessed[7] == "1/2 (50%)"  # Driving, and Waypoint guessed from the drive and laser
+    repository = tmp_path / "rovers"
+    (repository / "rover_description" / "urdf").mkdir(parents=True)
+    (repository / "rover_description" / "package.xml").write_text(
+        "<package><name>rover_description</name></package>", encoding="utf-8"
+    )
+    kept = tmp_path / "workspaces.tsv"
+    kept.write_text(
+        f"tiny\trover\t{repository}\trover_description/urdf/rover.urdf.xacro\n", encoding="utf-8"
+    )
+    read = measure("--set", str(tmp_path / "tiny"), "--workspaces", str(kept))
+    # Its packages ship no navigation: none is guessed.
+    assert row_of(read, "mobile base", "tiny")[7:9] == ["1/1 (100%)", "1/1 (100%)"]

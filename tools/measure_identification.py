@@ -43,9 +43,9 @@ lists its rows as ``development``: ``tools/fresh_set_1``, ``tools/fresh_set_2``,
 ``tools/fresh_set_3``, ``tools/fresh_set_4``, ``tools/fresh_set_5``, ``tools/fresh_set_6``,
 ``tools/fresh_set_7``, ``tools/fresh_set_8``, ``tools/fresh_set_9``, ``tools/fresh_set_10``,
 ``tools/fresh_set_11``, ``tools/fresh_set_12``, ``tools/fresh_set_13``, ``tools/fresh_set_14``,
-``tools/fresh_set_15`` .. ``tools/fresh_set_22``, their READMEs). The
+``tools/fresh_set_15`` .. ``tools/fresh_set_23``, their READMEs). The
 *blind* set is the highest-numbered ``fresh_set_N`` among the sets measured whose name the
-split does not list at all (now ``tools/fresh_set_23``, when it is there): its rows are held
+split does not list at all (now ``tools/fresh_set_24``, when it is there): its rows are held
 out whole by their set, and count in ``held-out`` and again on a line of their own,
 ``held-out (fresh)``. Moving it to development is listing it in the split; another unlisted
 fresh set is measured as ``unsplit``.
@@ -79,6 +79,7 @@ from solver.core.rules import default_rules_path, load_rules
 from solver.errors import SolverError
 from solver.identify import Identification, identify, load_profile
 from solver.identify.readers.safexml import read_xml
+from solver.identify.readers.workspace import description_package
 
 ROOT = Path(__file__).resolve().parent.parent
 # The labels' families, sources and the shared folder are the split's (one definition).
@@ -319,7 +320,8 @@ class Measured:
     sources: dict[str, Score]
 
 
-Runner = Callable[[Path, "Path | None"], Identification]
+# (urdf, srdf, (set, robot)) -> the identification of one row.
+Runner = Callable[[Path, "Path | None", tuple[str, str]], Identification]
 
 
 # The attributes that name a link or a joint (the tree, mimic, transmissions, Gazebo references).
@@ -421,6 +423,19 @@ def parts_of(
     return [split.get((set_name, robot), "unsplit")]
 
 
+def read_workspaces(path: Path) -> dict[tuple[str, str], tuple[Path, Path | None]]:
+    """(set, robot) -> (workspace, the description's package in it) from a --workspaces file;
+    a row whose description is in no package has none (its workspace is not read)."""
+    found: dict[tuple[str, str], tuple[Path, Path | None]] = {}
+    for line in path.read_text(encoding="utf-8").splitlines():
+        fields = line.split("\t")
+        if len(fields) == 4 and not line.startswith("#"):
+            set_name, robot, workspace, inside = fields
+            package = description_package(Path(workspace) / inside)
+            found[(set_name, robot)] = (Path(workspace), package)
+    return found
+
+
 def measure(
     name: str,
     folder: Path,
@@ -468,7 +483,7 @@ def measure(
                 score.miss_file(row, urdf if not urdf.is_file() else srdf or urdf)
             continue
         try:
-            result = run(urdf, srdf)
+            result = run(urdf, srdf, (name, row["robot"]))
         except SolverError as error:
             for score in scores:
                 score.refuse(row, error)
@@ -503,9 +518,10 @@ def side_by_side(
     return lines
 
 
-def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=(__doc__ or "").splitlines()[0])
-    parser.add_argument(
+def parser() -> argparse.ArgumentParser:
+    """The command line of this tool."""
+    found = argparse.ArgumentParser(description=(__doc__ or "").splitlines()[0])
+    found.add_argument(
         "--set",
         dest="sets",
         type=Path,
@@ -514,10 +530,10 @@ def main(argv: list[str] | None = None) -> int:
         help="a labelled set (a folder with truth.csv); repeat for several "
         "(default: ../shared/corpus)",
     )
-    parser.add_argument(
+    found.add_argument(
         "--all", action="store_true", help="the shared corpus and tools/identification_set"
     )
-    parser.add_argument(
+    found.add_argument(
         "--files",
         type=Path,
         action="append",
@@ -525,10 +541,10 @@ def main(argv: list[str] | None = None) -> int:
         metavar="DIR",
         help="another folder holding the sets' urdf/ and srdf/ files",
     )
-    parser.add_argument(
+    found.add_argument(
         "--corpus", type=Path, help="the shared corpus folder (default: ../shared/corpus)"
     )
-    parser.add_argument(
+    found.add_argument(
         "--split",
         type=Path,
         nargs="?",
@@ -539,19 +555,32 @@ def main(argv: list[str] | None = None) -> int:
         "tools/fresh_set_N (the highest-numbered one the split does not list is blind: held "
         "out whole, also as its own part, held-out (fresh))",
     )
-    parser.add_argument(
+    found.add_argument(
         "--no-names",
         action="store_true",
         help="read each URDF with every link and joint renamed to a neutral id, without its "
         "SRDF: what identification reads with no word of a part's name",
     )
-    parser.add_argument(
+    found.add_argument(
+        "--workspaces",
+        type=Path,
+        metavar="WORKSPACES.tsv",
+        help="where rows' repositories were kept: lines 'SET<TAB>ROBOT<TAB>WORKSPACE<TAB>PATH' "
+        "(PATH: the row's description inside WORKSPACE); such a row's packages are read for "
+        "the controls they ship (solver/identify/readers/workspace.py), as identify reads them "
+        "around a description in its package",
+    )
+    found.add_argument(
         "--profile",
         type=Path,
         help="an identification profile to measure instead of the shipped one "
         "(a copy with a rule left out measures that rule)",
     )
-    args = parser.parse_args(argv)
+    return found
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = parser().parse_args(argv)
     corpus = args.corpus or shared_folder() / "corpus"
     folders: list[Path] = list(args.sets or [])
     if args.all:
@@ -562,13 +591,27 @@ def main(argv: list[str] | None = None) -> int:
     profile = load_profile(args.profile)
     rules = load_rules(default_rules_path())
 
-    def run(urdf: Path, srdf: Path | None) -> Identification:
+    kept = read_workspaces(args.workspaces) if args.workspaces else {}
+
+    def run(urdf: Path, srdf: Path | None, row: tuple[str, str]) -> Identification:
         if args.no_names:
             with tempfile.TemporaryDirectory() as folder:
                 nameless = Path(folder) / urdf.name
                 nameless.write_bytes(without_names(urdf))
-                return identify(nameless, rules=rules, profile=profile)
-        return identify(urdf, srdf=srdf, rules=rules, profile=profile)
+                return identify(
+                    nameless, rules=rules, profile=profile, look_beside=False, look_around=False
+                )
+        workspace, package = kept.get(row, (None, None))
+        return identify(
+            urdf,
+            srdf=srdf,
+            rules=rules,
+            profile=profile,
+            look_beside=False,
+            look_around=False,
+            package=package,
+            workspace=workspace,
+        )
 
     split = read_split(args.split) if args.split else None
     blind = blind_set((folder.name for folder in folders), split) if split is not None else None

@@ -74,6 +74,23 @@ def register(subparsers: Any) -> None:
         "URDF when there is one",
     )
     parser.add_argument(
+        "--package",
+        metavar="DIR",
+        help="the description's ROS package folder, when the file is not in it (an expanded "
+        "URDF); default: the package holding the file. The robot's packages (this one, those "
+        "that use it, those they use) are read for the controls they ship",
+    )
+    parser.add_argument(
+        "--workspace",
+        metavar="DIR",
+        help="the folder the robot's packages are found in (default: the folder above its package)",
+    )
+    parser.add_argument(
+        "--no-packages",
+        action="store_true",
+        help="read the description alone: no package's launch, configuration or script file",
+    )
+    parser.add_argument(
         "--describe",
         action="store_true",
         help="print a teleoperation description drafted from what was found, the evidence as "
@@ -116,6 +133,9 @@ def run(args: argparse.Namespace) -> int:
             trust_xacro=args.trust_xacro,
             teleop=None if args.describe else args.teleop,
             look_beside=not args.describe,
+            package=None if args.no_packages else args.package,
+            workspace=args.workspace,
+            look_around=not args.no_packages,
         )
     if args.strict and result.warnings:
         from solver import InputError

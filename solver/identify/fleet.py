@@ -182,6 +182,7 @@ def identify_fleet(
                 trust_xacro=trust_xacro,
                 teleop=teleop,
                 look_beside=False,  # the one beside, checked for links out above
+                look_around=False,  # a folder of robots: each file alone, no workspace
             )
         except MissingExtraError:
             raise  # not this robot's failure: every robot would fail for it

@@ -63,6 +63,7 @@ from solver.identify.sensors import (
     sensors_from_urdf,
     under_water,
 )
+from solver.identify.shipped import controls_from_workspace
 from solver.limits import limit
 from solver.ros.description import TeleopDescription, description_beside, load_description
 from solver.ros.joints import JointStart
@@ -70,6 +71,7 @@ from solver.ros.names import Topic
 
 if TYPE_CHECKING:
     from solver.identify.readers.srdf import Srdf
+    from solver.identify.readers.workspace import Workspace
 
 __all__ = [
     "Identification",
@@ -165,16 +167,24 @@ def identify_urdf(
     notes: Sequence[str] = (),
     description: TeleopDescription | None = None,
     warnings: Sequence[Fault] = (),
+    workspace: Workspace | None = None,
 ) -> Identification:
     """Identify a robot from URDF text; :class:`~solver.errors.InputError` if unusable.
 
     ``description``: the robot's teleoperation description, whose values win; ``warnings``:
-    flaws of supporting files read before (a description that could not be read)."""
+    flaws of supporting files read before (a description that could not be read);
+    ``workspace``: the robot's packages, whose launch, configuration and script files show
+    the controls they ship (:mod:`solver.identify.shipped`)."""
     rules = rules if rules is not None else load_rules(default_rules_path())
     profile = profile if profile is not None else load_profile()
     urdf = parse_urdf(urdf_text, file, strict=False)
     srdf, srdf_warnings = (None, ()) if srdf_text is None else _srdf(srdf_text, srdf_file, urdf)
-    found_warnings = (*urdf.warnings, *srdf_warnings, *warnings)
+    found_warnings = (
+        *urdf.warnings,
+        *srdf_warnings,
+        *warnings,
+        *(workspace.warnings if workspace is not None else ()),
+    )
     body = detect_body(urdf, profile)
     reading = classify(body, profile, rules, root=urdf.root, srdf=srdf, urdf=urdf)
     detections: list[Detection] = list(sensors_from_urdf(urdf, profile))
@@ -190,8 +200,11 @@ def identify_urdf(
             urdf=urdf,
             sensor_kinds={d.kind for d in detections},
             srdf_source=Path(srdf_file).name,
+            guess_navigation=workspace is None,
         )
     ]
+    if workspace is not None:
+        controls.append(controls_from_workspace(workspace, profile, reading.structure))
     for source in topics:
         topical = sensors_from_topics(source.topics, profile, source.name)
         detections += under_water(topical) if dives else topical
@@ -205,6 +218,9 @@ def identify_urdf(
         merge(detections, profile, rules),
     )
     evidence = reading.evidence
+    if workspace is not None:
+        read = ", ".join(workspace.packages)
+        evidence = (*evidence, f"packages read for the controls they ship: {read}")
     if description is not None:
         found = with_declared(found, description, profile, rules)
         evidence = (*evidence, f"declared: {Path(description.file).name} (its values win)")
@@ -265,6 +281,9 @@ def identify(
     trust_xacro: bool = False,
     teleop: str | Path | None = None,
     look_beside: bool = True,
+    package: str | Path | None = None,
+    workspace: str | Path | None = None,
+    look_around: bool = True,
 ) -> Identification:
     """Identify the robot described by a URDF or xacro file (plus SRDF, topic lists, bags).
 
@@ -272,6 +291,10 @@ def identify(
     from the file: :mod:`solver.identify.xacro.compiler`); any other file is read as URDF.
     ``teleop`` names the robot's teleoperation description; without it, ``ROBOT.teleop.yaml``
     beside the file is read when there is one (``look_beside=False``: never).
+    ``package`` names the description's ROS package folder; without it, the package holding
+    the file (``look_around=False``: none). The robot's packages in ``workspace`` (default: the
+    folder above the package) are read for the controls they ship
+    (:mod:`solver.identify.readers.workspace`).
     """
     file = str(description)
     # How many files were given is known before any is read: refuse first, read nothing.
@@ -306,6 +329,15 @@ def identify(
     if beside is not None and beside.is_file():
         teleop = beside
     declared, flaws = _description(teleop)
+    if package is None and look_around:
+        from solver.identify.readers.workspace import description_package
+
+        package = description_package(file)
+    packages = None
+    if package is not None:
+        from solver.identify.readers.workspace import read_workspace
+
+        packages = read_workspace(package, workspace)
     return identify_urdf(
         text,
         file=file,
@@ -317,6 +349,7 @@ def identify(
         notes=notes,
         description=declared,
         warnings=flaws,
+        workspace=packages,
     )
 
 

@@ -278,9 +278,11 @@ def controls_from_description(
     sensor_kinds: Collection[str] = (),
     urdf_source: str = "urdf",
     srdf_source: str = "srdf",
+    guess_navigation: bool = True,
 ) -> tuple[Control, ...]:
     """The motion controls the body (and SRDF) show, each with what shows it; with the kinds
-    of the sensors the description declares, the profile's navigation guess too."""
+    of the sensors the description declares, the profile's navigation guess too (not with
+    ``guess_navigation=False``: the robot's packages were read, and say)."""
     effectors = () if srdf is None else hand_effectors(body, srdf, urdf)  # once per SRDF
     shown = [
         *_ground(body, urdf_source),
@@ -304,4 +306,6 @@ def controls_from_description(
     controls = tuple(
         Control(name, "; ".join(found[name])) for name in dict.fromkeys(order) if name in found
     )
+    if not guess_navigation:
+        return controls
     return controls + _navigation(shown, controls, sensor_kinds, profile, urdf_source)

@@ -44,6 +44,7 @@ __all__ = [
     "ControlRule",
     "FeatureCondition",
     "NavigationRule",
+    "PackageRule",
     "Pattern",
     "Profile",
     "ProfileError",
@@ -184,6 +185,7 @@ _ELEMENT_KEYS = {"kind", "types", "match", "max_rays"}
 _PLUGIN_RULE_KEYS = {"kind", "match"}
 _TOPIC_SENSOR_KEYS = {"kind", "types", "match", "direction"}
 _TOPIC_CONTROL_KEYS = {"control", "types", "match", "direction"}
+_PACKAGE_KEYS = {"control", "match", "not_for"}
 _LIDAR_KEYS = {"single_plane", "multi_plane"}
 
 YPath = tuple[PathPart, ...]
@@ -212,6 +214,11 @@ class Pattern:
 
     def search(self, text: str) -> bool:
         return self.compiled.search(text) is not None
+
+    def find(self, text: str) -> str | None:
+        """The first text this pattern matches in ``text``, or None."""
+        found = self.compiled.search(text)
+        return None if found is None else str(found.group(0))
 
 
 class PartMatcher:
@@ -376,6 +383,18 @@ class NavigationRule:
     needs: tuple[tuple[str, tuple[str, ...]], ...]
 
 
+@dataclass(frozen=True, slots=True)
+class PackageRule:
+    """What a text of the robot's packages shows (:mod:`solver.identify.shipped`): ``match``
+    found in a launch, configuration or script file means ``control`` (``velocity``: the
+    structure's velocity control), except for a structure in ``not_for``."""
+
+    control: str
+    match: Pattern
+    not_for: frozenset[str] = frozenset()
+    location: Location | None = field(default=None, compare=False)
+
+
 @dataclass(frozen=True)
 class Profile:
     """A loaded identification profile (see the module docstring and the shipped file)."""
@@ -403,6 +422,8 @@ class Profile:
     # Simulator systems (Gazebo Sim's ``gz::sim::systems::Imu``, ``...::Sensors``): they run
     # the <sensor> elements, they are none themselves (``sensors.systems``).
     simulator_systems: Pattern | None = None
+    # Launch, configuration and script texts of the robot's packages -> motion controls.
+    package_controls: tuple[PackageRule, ...] = ()
 
     def role(self, name: str) -> str:
         """The rule-set characteristic filling role ``name`` (motion_control, ...)."""
@@ -498,6 +519,7 @@ def parse_profile(document: Document) -> Profile:
     topic_controls = _control_rules(reader)
     velocity_default, by_structure, description = _motion(reader, names)
     navigation = _navigation(reader, description)
+    package_controls = _package_rules(reader, names)
     if reader.faults:
         raise ProfileError(reader.faults)
     text = repr(document.data).encode("utf-8")
@@ -523,6 +545,7 @@ def parse_profile(document: Document) -> Profile:
         hashlib.sha256(text).hexdigest(),
         navigation,
         systems,
+        package_controls,
     )
 
 
@@ -801,7 +824,10 @@ def _motion(
 ) -> tuple[str, tuple[tuple[str, str], ...], tuple[tuple[str, tuple[str, ...]], ...]]:
     spec = reader.mapping(("motion",), "motion")
     reader.unknown_keys(
-        ("motion",), spec, {"velocity", "description", "navigation"}, "motion field"
+        ("motion",),
+        spec,
+        {"velocity", "description", "navigation", "packages"},
+        "motion field",
     )
     velocity = reader.mapping(("motion", "velocity"), "velocity")
     reader.unknown_keys(
@@ -832,6 +858,38 @@ def _motion(
             names = reader.names(("motion", "description", source), "motion controls")
             sources.append((source, tuple(text for _, text in names)))
     return default, tuple(pairs), tuple(sources)
+
+
+def _package_rules(reader: Reader, structures: set[str]) -> tuple[PackageRule, ...]:
+    """``motion.packages`` (optional): what a text of the robot's packages shows."""
+    path: YPath = ("motion", "packages")
+    if reader.get(path) is None:
+        return ()
+    found = []
+    for index in range(len(_list(reader, path))):
+        item: YPath = (*path, index)
+        spec = reader.mapping(item, "package rule")
+        if not spec:
+            continue
+        reader.unknown_keys(item, spec, _PACKAGE_KEYS, "package rule field")
+        control = reader.string((*item, "control"), "motion control")
+        match = _pattern(reader, (*item, "match"))
+        not_for = []
+        listed = reader.names((*item, "not_for"), "structures") if "not_for" in spec else []
+        for where, structure in listed:
+            if structure not in structures:
+                reader.fault(
+                    where,
+                    f"unknown structure "
+                    f"{shown(structure, quoted=True)}{did_you_mean(structure, structures)}",
+                    code="unknown-reference",
+                )
+            not_for.append(structure)
+        if control and match is not None:
+            found.append(
+                PackageRule(control, match, frozenset(not_for), reader.document.location(item))
+            )
+    return tuple(found)
 
 
 def _navigation(

@@ -243,3 +243,39 @@ def test_teleop_names_a_description_whose_declared_values_win_and_differences_sh
         "motion control Waypoint: declared (mine.yaml:3: action /go), not read from the "
         "description: kept",
     ]
+
+
+def _rover_package(tmp_path: Path) -> Path:
+    """A rover's description package and a navigation package that launches it with
+    move_base; the description file."""
+    src = tmp_path / "ws" / "src"
+    for name, relative, text in (
+        ("rover_description", "urdf/rover.urdf", _rover_with_sensors().text()),
+        (
+            "rover_navigation",
+            "launch/nav.launch",
+            "<include file='$(find rover_description)'/><node pkg='move_base' type='move_base'/>",
+        ),
+    ):
+        (src / name / relative).parent.mkdir(parents=True)
+        (src / name / "package.xml").write_text(f"<package><name>{name}</name></package>")
+        (src / name / relative).write_text(text, encoding="utf-8")
+    return src / "rover_description" / "urdf" / "rover.urdf"
+
+
+def test_identify_reads_the_packages_around_a_description_for_the_controls_they_ship(
+    tmp_path: Path,
+) -> None:
+    urdf = _rover_package(tmp_path)
+    result = run_cli("identify", urdf)
+    assert result.returncode == 0, result.stderr
+    assert (
+        "  Waypoint        package rover_navigation: rover_navigation/launch/nav.launch "
+        "(move_base)\n" in result.stdout
+    )
+    alone = run_cli("identify", urdf, "--no-packages")
+    assert "package rover_navigation" not in alone.stdout
+    copy = tmp_path / "rover.urdf"
+    copy.write_text(urdf.read_text(encoding="utf-8"), encoding="utf-8")
+    named = run_cli("identify", copy, "--package", urdf.parent.parent)
+    assert "package rover_navigation: rover_navigation/launch/nav.launch" in named.stdout

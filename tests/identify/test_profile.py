@@ -112,6 +112,24 @@ def test_a_navigation_need_for_nothing_that_moves_a_body_is_a_located_fault() ->
     assert "wheels" in fault.message
 
 
+def test_package_rules_are_optional_and_their_structures_are_checked() -> None:
+    start = SHIPPED.index("  packages:")
+    assert parse_profile(parse_document(SHIPPED[:start], "plain.yaml")).package_controls == ()
+    shipped = load_profile().package_controls
+    assert [rule.control for rule in shipped] == ["Waypoint", "velocity", "End Effector"]
+    assert "Manipulator" in shipped[0].not_for
+    text = SHIPPED.replace(
+        "      not_for: [Manipulator, Gripper, Hand, Torso]\n",
+        "      not_for: [Manipulater, Gripper, Hand, Torso]\n",
+        1,
+    )
+    with pytest.raises(ProfileError) as caught:
+        parse_profile(parse_document(text, "p.yaml"))
+    [fault] = caught.value.faults
+    assert fault.location.path == "motion.packages[0].not_for[0]"
+    assert "unknown structure 'Manipulater' (did you mean 'Manipulator'?)" in fault.message
+
+
 # ---- a file that is no profile is named, never quoted (issue 36.13) ---------------------------
 
 PASSWD = "root:x:0:0:the-secret-line:/root:/bin/bash\ndaemon:x:1:1::/:/bin/false\n"

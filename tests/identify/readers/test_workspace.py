@@ -1,0 +1,186 @@
+"""The robot's workspace: its packages found around the description, read as text, bounded."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import pytest
+
+from solver.identify.readers import workspace as reader
+from solver.identify.readers.workspace import (
+    description_package,
+    read_workspace,
+    uncommented,
+)
+
+
+def package(folder: Path, name: str, files: dict[str, str] | None = None) -> Path:
+    """A ROS package ``name`` in ``folder/name`` holding ``files`` (relative path -> text)."""
+    root = folder / name
+    root.mkdir(parents=True)
+    (root / "package.xml").write_text(
+        f'<?xml version="1.0"?>\n<package format="3">\n  <name>{name}</name>\n</package>\n'
+    )
+    for relative, text in (files or {}).items():
+        path = root / relative
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text)
+    return root
+
+
+def rover_workspace(tmp_path: Path) -> Path:
+    """A description, a bringup that finds it and includes a navigation package, and another
+    robot's package that runs navigation too; the description's package folder."""
+    src = tmp_path / "ws" / "src"
+    described = package(src, "rover_description", {"urdf/rover.urdf": "<robot name='rover'/>"})
+    package(
+        src,
+        "rover_bringup",
+        {
+            "launch/bringup.launch.py": (
+                "get_package_share_directory('rover_description')\n"
+                "IncludeLaunchDescription('rover_navigation')\n"
+            )
+        },
+    )
+    package(src, "rover_navigation", {"launch/nav.launch.py": "nav2_bringup"})
+    package(src, "drone_navigation", {"launch/nav.launch.py": "nav2_bringup"})
+    return described
+
+
+def read(described: Path, root: Path | None = None) -> reader.Workspace:
+    found = read_workspace(described, root)
+    assert found is not None
+    return found
+
+
+def test_the_description_package_is_the_nearest_folder_above_with_a_package_xml(
+    tmp_path: Path,
+) -> None:
+    described = rover_workspace(tmp_path)
+    assert description_package(described / "urdf" / "rover.urdf") == described
+
+
+def test_a_file_in_no_package_has_no_package(tmp_path: Path) -> None:
+    (tmp_path / "a" / "b").mkdir(parents=True)
+    assert description_package(tmp_path / "a" / "b" / "robot.urdf") is None
+
+
+def test_the_robots_packages_are_its_own_those_that_use_it_and_those_they_use(
+    tmp_path: Path,
+) -> None:
+    found = read(rover_workspace(tmp_path))
+    assert found.package == "rover_description"
+    assert found.packages == ("rover_description", "rover_bringup", "rover_navigation")
+    assert [f.path for f in found.files] == [
+        "rover_bringup/launch/bringup.launch.py",
+        "rover_navigation/launch/nav.launch.py",
+    ]
+
+
+def test_another_robots_package_is_not_read_however_much_it_holds(tmp_path: Path) -> None:
+    found = read(rover_workspace(tmp_path))
+    assert "drone_navigation" not in found.packages
+    assert all(f.package != "drone_navigation" for f in found.files)
+
+
+def test_a_name_inside_a_longer_word_is_no_use(tmp_path: Path) -> None:
+    src = tmp_path / "src"
+    described = package(src, "arm")
+    package(src, "farm_tools", {"launch/a.launch": "<node pkg='farming_arms'/>"})
+    assert read(described).packages == ("arm",)
+
+
+def test_build_test_and_hidden_folders_and_files_in_no_package_are_not_read(
+    tmp_path: Path,
+) -> None:
+    src = tmp_path / "src"
+    described = package(
+        src,
+        "rover_description",
+        {
+            "build/gen.py": "nav2_bringup",
+            "test/test_nav.py": "nav2_bringup",
+            ".git/config.yaml": "nav2_bringup",
+            "launch/view.launch": "<launch/>",
+        },
+    )
+    (src / "notes.py").write_text("rover_description nav2_bringup")
+    assert [f.path for f in read(described).files] == ["rover_description/launch/view.launch"]
+
+
+def test_links_are_never_followed(tmp_path: Path) -> None:
+    outside = tmp_path / "outside"
+    outside.mkdir()
+    (outside / "nav.launch.py").write_text("nav2_bringup")
+    described = package(tmp_path / "src", "rover_description")
+    os.symlink(outside / "nav.launch.py", described / "nav.launch.py")
+    os.symlink(outside, described / "linked")
+    assert read(described).files == ()
+
+
+def test_a_fifo_is_passed_by_without_waiting_on_it(tmp_path: Path) -> None:
+    described = package(tmp_path / "src", "rover_description", {"a.yaml": "x: 1"})
+    os.mkfifo(described / "b.launch")
+    assert [f.path for f in read(described).files] == ["rover_description/a.yaml"]
+
+
+def test_xml_comments_are_removed_from_launch_files(tmp_path: Path) -> None:
+    described = package(
+        tmp_path / "src",
+        "rover_description",
+        {"launch/a.launch": "<launch><!-- <node pkg='move_base'/> --><arg/></launch>"},
+    )
+    assert read(described).files[0].text == "<launch><arg/></launch>"
+
+
+def test_an_unclosed_comment_runs_to_the_end_of_the_text() -> None:
+    assert uncommented("a<!--b-->c<!--d") == "ac"
+    assert uncommented("<!--" * 100_000) == ""
+
+
+def test_a_file_is_read_up_to_its_bound(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(reader, "MAX_FILE_BYTES", 10)
+    described = package(tmp_path / "src", "rover_description", {"a.yaml": "0123456789nav2"})
+    assert read(described).files[0].text == "0123456789"
+
+
+def test_past_the_file_bound_a_located_warning_says_the_rest_is_not_read(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(reader, "MAX_FILES", 2)
+    described = package(
+        tmp_path / "src", "rover_description", {f"{n}.yaml": "x: 1" for n in "abcd"}
+    )
+    found = read(described)
+    assert len(found.files) == 2
+    (warning,) = found.warnings
+    assert warning.location.file == str(tmp_path / "src")
+    assert "more than 2 files; the rest of it is not read" in warning.message
+
+
+def test_past_the_entry_bound_the_walk_stops_with_a_warning(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(reader, "MAX_ENTRIES", 4)
+    described = package(tmp_path / "src", "rover_description", {"a.yaml": "x: 1"})
+    for name in "bcde":
+        package(tmp_path / "src", f"rover_{name}", {"a.yaml": "rover_description"})
+    found = read(described)
+    assert "more than 4 entries" in found.warnings[0].message
+    assert found.packages == ("rover_description",)
+
+
+def test_a_package_xml_without_a_name_is_no_package(tmp_path: Path) -> None:
+    folder = tmp_path / "src" / "nameless"
+    folder.mkdir(parents=True)
+    (folder / "package.xml").write_text("<package format='3'></package>")
+    assert read_workspace(folder) is None
+
+
+def test_a_workspace_that_does_not_exist_leaves_the_package_read_alone(tmp_path: Path) -> None:
+    described = package(tmp_path / "src", "rover_description", {"a.yaml": "x: 1"})
+    found = read(described, tmp_path / "no such folder")
+    assert found.packages == ("rover_description",)
+    assert [f.package for f in found.files] == ["rover_description"]

@@ -1,0 +1,140 @@
+"""Motion controls the robot's packages ship, read from their launch, config and script texts."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from solver.identify import identify, load_profile
+from solver.identify.readers.workspace import ShippedFile, Workspace
+from solver.identify.shipped import controls_from_workspace
+from tests.identify.builders import LASER, RobotText, manipulator, quadrotor, ugv
+
+PROFILE = load_profile()
+
+
+def shipping(*texts: str) -> Workspace:
+    files = tuple(
+        ShippedFile("rover_bringup", f"rover_bringup/launch/{n}.launch.py", text)
+        for n, text in enumerate(texts)
+    )
+    return Workspace("/ws/src", "rover_description", ("rover_bringup",), files)
+
+
+def shipped(structure: str, *texts: str) -> dict[str, str]:
+    found = controls_from_workspace(shipping(*texts), PROFILE, structure)
+    return {c.motion_control: c.source for c in found}
+
+
+def test_a_bringup_that_runs_nav2_ships_waypoint_goals_named_by_its_file() -> None:
+    assert shipped("UGV", "IncludeLaunchDescription('nav2_bringup')") == {
+        "Waypoint": "package rover_bringup: rover_bringup/launch/0.launch.py (nav2_bringup)"
+    }
+
+
+def test_move_base_and_position_set_points_are_navigation_too() -> None:
+    assert "Waypoint" in shipped("UGV", "<node pkg='move_base' type='move_base'/>")
+    assert "Waypoint" in shipped("UAV", "rospy.Publisher('mavros/setpoint_position/local')")
+
+
+def test_an_arm_bolted_in_place_is_sent_no_waypoints_whatever_its_repository_holds() -> None:
+    assert shipped("Manipulator", "target_pose = Pose()") == {}
+
+
+def test_a_teleop_node_is_the_structures_velocity_control() -> None:
+    teleop = "Node(package='teleop_twist_keyboard')"
+    assert list(shipped("UGV", teleop)) == ["Driving"]
+    assert list(shipped("UAV", teleop)) == ["Flight"]
+    assert list(shipped("Quadruped", teleop)) == ["Walking"]
+
+
+def test_moveits_planning_node_means_end_effector_goals() -> None:
+    assert list(shipped("Manipulator", "<include file='$(find arm_moveit)/move_group.launch'/>"))
+
+
+def test_the_first_file_that_shows_a_control_is_named() -> None:
+    found = shipped("UGV", "nothing here", "waypoint_follower", "bt_navigator")
+    assert found["Waypoint"].endswith("1.launch.py (waypoint)")
+
+
+def test_a_workspace_that_ships_nothing_shows_nothing() -> None:
+    assert shipped("UGV", "<launch><node pkg='robot_state_publisher'/></launch>") == {}
+
+
+def package(folder: Path, name: str, files: dict[str, str]) -> Path:
+    root = folder / name
+    root.mkdir(parents=True)
+    (root / "package.xml").write_text(f"<package format='3'><name>{name}</name></package>")
+    for relative, text in files.items():
+        (root / relative).parent.mkdir(parents=True, exist_ok=True)
+        (root / relative).write_text(text)
+    return root
+
+
+def rover_with_a_lidar() -> RobotText:
+    robot = ugv()
+    robot.add('  <gazebo><plugin name="d" filename="libgazebo_ros_diff_drive.so"/></gazebo>')
+    robot.fixed(robot.root, "laser")
+    robot.add(LASER)
+    return robot
+
+
+def described(tmp_path: Path, robot: RobotText, bringup: str) -> Path:
+    """A description package holding ``robot`` and a bringup that finds it and runs
+    ``bringup``; the description file."""
+    src = tmp_path / "ws" / "src"
+    own = package(src, "rover_description", {"urdf/rover.urdf": robot.text()})
+    package(src, "rover_bringup", {"launch/bringup.launch": f"rover_description {bringup}"})
+    return own / "urdf" / "rover.urdf"
+
+
+def controls_of(path: Path, **options: object) -> dict[str, str]:
+    result = identify(path, **options)  # type: ignore[arg-type]
+    return {c.motion_control: c.source for c in result.motion_controls}
+
+
+def test_a_description_in_its_package_is_read_with_the_packages_that_use_it(
+    tmp_path: Path,
+) -> None:
+    path = described(tmp_path, rover_with_a_lidar(), "<node pkg='move_base'/>")
+    found = controls_of(path)
+    assert found["Waypoint"] == (
+        "package rover_bringup: rover_bringup/launch/bringup.launch (move_base)"
+    )
+    assert "packages read for the controls they ship: rover_description, rover_bringup" in (
+        identify(path).evidence
+    )
+
+
+def test_packages_that_ship_no_navigation_leave_no_guess_of_it(tmp_path: Path) -> None:
+    path = described(tmp_path, rover_with_a_lidar(), "<node pkg='robot_state_publisher'/>")
+    assert "Waypoint" not in controls_of(path)
+    guessed = controls_of(path, look_around=False)
+    assert guessed["Waypoint"].startswith("urdf: likely, not declared")
+
+
+def test_a_package_can_be_named_for_a_description_kept_elsewhere(tmp_path: Path) -> None:
+    path = described(tmp_path, quadrotor(), "<node pkg='teleop_twist_keyboard'/>")
+    copy = tmp_path / "copter.urdf"
+    copy.write_text(path.read_text())
+    assert "Flight" in controls_of(copy, package=path.parent.parent)
+    assert controls_of(copy) == controls_of(copy, look_around=False)
+
+
+def test_an_arms_guess_of_end_effector_goals_is_joined_by_the_moveit_it_ships(
+    tmp_path: Path,
+) -> None:
+    path = described(tmp_path, manipulator(), "<include file='move_group.launch'/>")
+    guess, shown = controls_of(path)["End Effector"].split("; ")
+    assert guess.startswith("urdf: likely, not declared")
+    assert shown == "package rover_bringup: rover_bringup/launch/bringup.launch (move_group)"
+
+
+def test_a_file_name_is_shown_with_its_unprintable_characters_escaped() -> None:
+    hostile = Workspace(
+        "/ws",
+        "p",
+        ("p",),
+        (ShippedFile("p", "p/\x1b[2Jnav\n.launch", "<node pkg='move_base'/>"),),
+    )
+    [control] = controls_from_workspace(hostile, PROFILE, "UGV")
+    assert control.source == "package p: p/\\x1b[2Jnav\\n.launch (move_base)"
