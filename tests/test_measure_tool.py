@@ -234,6 +234,22 @@ def test_the_highest_fresh_set_the_split_does_not_list_is_held_out_whole_on_its_
     for part in ("development", "held-out", "held-out (fresh)"):
         assert row_of(output, "**all**", part)[:5] == ["2", "1/2 (50%)", "1/2 (50%)", "0", "1"]
     assert "development 3, held-out 3, held-out (fresh) 3" in output
+    # Its misses are counted, not listed: reading them would make it development data.
+    blind_part = output[output.index("## Set `held-out (fresh)`") :]
+    assert "arm_called_humanoid" not in blind_part
+    # The rover's sensors and controls (a camera not in its file, a guessed Waypoint), the arm's
+    # structure, the absent boat.
+    assert "(4 misses of the blind set withheld: --read-blind lists them" in blind_part
+    read = measure(
+        "--set",
+        str(tmp_path / "fresh_set_2"),
+        "--set",
+        str(tmp_path / "fresh_set_3"),
+        "--split",
+        str(split),
+        "--read-blind",
+    )
+    assert "arm_called_humanoid: structure Manipulator" in read[read.index("## Set `held-out`") :]
 
 
 def test_a_fresh_set_the_split_lists_even_in_part_is_no_longer_blind(tmp_path: Path) -> None:

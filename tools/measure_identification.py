@@ -168,6 +168,13 @@ class Score:
     per_label: Counter[tuple[str, bool]] = field(default_factory=Counter)
     confusion: Counter[tuple[str, str]] = field(default_factory=Counter)
     misses: list[str] = field(default_factory=list)
+    # Misses of the blind set's rows, counted but not listed (see ``measure``).
+    withheld: int = 0
+
+    def keep_blind(self, since: int) -> None:
+        """Withhold the misses listed since ``since``: they are a blind row's."""
+        self.withheld += len(self.misses) - since
+        del self.misses[since:]
 
     def add(self, row: dict[str, str], result: Identification) -> None:
         self.robots += 1
@@ -305,6 +312,11 @@ class Score:
             lines += [*self.per_control_table(), ""]
         lines += ["Misses:", ""]
         lines += [f"- {miss}" for miss in self.misses or ["(none)"]]
+        if self.withheld:
+            lines.append(
+                f"- ({self.withheld} misses of the blind set withheld: --read-blind lists them, "
+                "and reading them makes it development data)"
+            )
         return "\n".join(lines) + "\n"
 
 
@@ -447,11 +459,13 @@ def measure(
     parts: dict[str, Measured] | None = None,
     blind: str | None = None,
     shared: frozenset[str] = frozenset(),
+    read_blind: bool = False,
 ) -> Measured | None:
     """Measure one set; with ``split``, each row into the Measured of its part in ``parts``
     (the rows of the set named ``blind`` held out whole, see ``parts_of``). A file name in
     ``shared`` (listed by another set too) is looked up only where this set keeps its files
-    (``lookup_folders``)."""
+    (``lookup_folders``). The blind set's misses are counted, not listed, unless
+    ``read_blind``."""
     truth = folder / "truth.csv"
     if not truth.is_file():
         return None
@@ -475,22 +489,33 @@ def measure(
                 measured.families.setdefault(family_of(row), Score(structures)),
                 measured.sources.setdefault(source_of(row), Score(structures)),
             ]
+        hidden = name == blind and not read_blind
+        since = [len(score.misses) for score in scores]
         urdf = locate(row["file"], narrow if row["file"] in shared else folders)
         srdf_name = row.get("srdf") or ""
         srdf = locate(srdf_name, narrow if srdf_name in shared else folders) if srdf_name else None
         if not urdf.is_file() or (srdf is not None and not srdf.is_file()):
             for score in scores:
                 score.miss_file(row, urdf if not urdf.is_file() else srdf or urdf)
+            _withhold(scores, since, hidden)
             continue
         try:
             result = run(urdf, srdf, (name, row["robot"]))
         except SolverError as error:
             for score in scores:
                 score.refuse(row, error)
+            _withhold(scores, since, hidden)
             continue
         for score in scores:
             score.add(row, result)
+        _withhold(scores, since, hidden)
     return own
+
+
+def _withhold(scores: list[Score], since: list[int], hidden: bool) -> None:
+    if hidden:
+        for score, start in zip(scores, since, strict=True):
+            score.keep_blind(start)
 
 
 HEADER = (
@@ -562,6 +587,12 @@ def parser() -> argparse.ArgumentParser:
         "SRDF: what identification reads with no word of a part's name",
     )
     found.add_argument(
+        "--read-blind",
+        action="store_true",
+        help="list the blind set's misses too (withheld by default: once read, a blind set "
+        "measures nothing unseen and is moved to development)",
+    )
+    found.add_argument(
         "--workspaces",
         type=Path,
         metavar="WORKSPACES.tsv",
@@ -629,6 +660,7 @@ def main(argv: list[str] | None = None) -> int:
             parts=parts,
             blind=blind,
             shared=shared,
+            read_blind=args.read_blind,
         )
         if measured is None:
             print(f"no labelled set at {folder} (truth.csv missing); nothing measured there\n")

@@ -51,6 +51,15 @@ def test_moveits_planning_node_means_end_effector_goals() -> None:
     assert list(shipped("Manipulator", "<include file='$(find arm_moveit)/move_group.launch'/>"))
 
 
+def test_a_base_or_a_gripper_alone_has_no_end_effector_whatever_moveit_its_repository_holds() -> (
+    None
+):
+    moveit = "<include file='$(find fetch_moveit_config)/launch/move_group.launch'/>"
+    assert shipped("UGV", moveit) == {}
+    assert shipped("Gripper", moveit) == {}
+    assert list(shipped("Mobile Manipulator", moveit)) == ["End Effector"]
+
+
 def test_the_first_file_that_shows_a_control_is_named() -> None:
     found = shipped("UGV", "nothing here", "waypoint_follower", "bt_navigator")
     assert found["Waypoint"].endswith("1.launch.py (waypoint)")
