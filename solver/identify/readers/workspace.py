@@ -13,8 +13,10 @@ imported or parsed as code.
   folders builds and tests write (``build``, ``install``, ``devel``, ``log``, ``test``, ...) are
   skipped, at most :data:`MAX_DEPTH` folders deep and :data:`MAX_ENTRIES` entries. Each file
   belongs to the nearest package above it; a file in no package is nobody's.
-* The *robot's packages*: the description's, then every package that uses one of the robot's
-  (names it as a word in its ``package.xml`` or its files: a bringup that finds the
+* The *robot's packages*: the description's and, for a package named ``ROBOT_description``,
+  every package named ``ROBOT_...`` (the ROS convention: ``jackal_navigation`` is the Jackal's
+  though it never names ``jackal_description``); then every package that uses one of the
+  robot's (names it as a word in its ``package.xml`` or its files: a bringup that finds the
   description) and every package one of the robot's uses (a bringup that includes a navigation
   package), in at most :data:`MAX_ROUNDS` rounds. Other packages of the workspace (another
   robot's, a library's source) are not the robot's, however much navigation they hold.
@@ -166,9 +168,17 @@ def _by_name(packages: dict[str, _Package], name: str) -> _Package:
 
 
 def _robots_packages(packages: dict[str, _Package], folder: str) -> tuple[str, ...]:
-    """The description's package, then those that use one of the robot's or that one of the
-    robot's uses, round by round (names compared as words)."""
-    ours = [packages[folder]]
+    """The description's package and the packages named for the same robot, then those that
+    use one of the robot's or that one of the robot's uses, round by round (names compared as
+    words)."""
+    own = packages[folder]
+    stem = _robot_stem(own.name)
+    ours = [own]
+    if stem is not None:
+        ours += sorted(
+            (p for p in packages.values() if p is not own and p.name.startswith(stem)),
+            key=lambda p: p.folder,
+        )
     for _ in range(MAX_ROUNDS):
         names = {p.name for p in ours}
         words = set().union(*(p.words for p in ours))
@@ -181,6 +191,16 @@ def _robots_packages(packages: dict[str, _Package], folder: str) -> tuple[str, .
             break
         ours += sorted(added, key=lambda p: p.folder)
     return tuple(dict.fromkeys(p.name for p in ours))
+
+
+def _robot_stem(name: str) -> str | None:
+    """``jackal_`` for ``jackal_description``: the prefix of the packages a robot's authors
+    name for it (``jackal_navigation``, ``jackal_bringup``), the ROS convention; None for a
+    package not named ``ROBOT_description(s)``."""
+    for suffix in ("_descriptions", "_description"):
+        if name.endswith(suffix) and len(name) > len(suffix):
+            return name[: -len(suffix)] + "_"
+    return None
 
 
 def _walk(start: str, budget: _Budget, top: str, skip: str | None = None) -> dict[str, _Package]:

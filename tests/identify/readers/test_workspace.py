@@ -85,6 +85,16 @@ def test_another_robots_package_is_not_read_however_much_it_holds(tmp_path: Path
     assert all(f.package != "drone_navigation" for f in found.files)
 
 
+def test_packages_named_for_the_robot_are_its_own_though_they_never_name_its_description(
+    tmp_path: Path,
+) -> None:
+    src = tmp_path / "src"
+    described = package(src, "jackal_description")
+    package(src, "jackal_navigation", {"launch/amcl.launch": "<node pkg='move_base'/>"})
+    package(src, "husky_navigation", {"launch/amcl.launch": "<node pkg='move_base'/>"})
+    assert read(described).packages == ("jackal_description", "jackal_navigation")
+
+
 def test_a_name_inside_a_longer_word_is_no_use(tmp_path: Path) -> None:
     src = tmp_path / "src"
     described = package(src, "arm")
