@@ -63,6 +63,7 @@ def test_what_the_robot_only_subscribes_to_is_not_its_sensor() -> None:
         ("UAV", "Flight"),
         ("Humanoid", "Walking"),
         ("Quadruped", "Walking"),
+        ("Hexapod", "Walking"),
         ("Biped", "Walking"),
         ("Legged Mobile Manipulator", "Walking"),
         ("Aerial Manipulator", "Flight"),
