@@ -355,7 +355,11 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
         fins=tuple(parts.of("fin")),
         casters=tuple(parts.of("caster")),
         wings=tuple(wings(tree, parts.roles)),
-        marine_plugins=tuple(dict.fromkeys((*tree.labels("thruster"), *tree.labels("marine")))),
+        marine_plugins=tuple(
+            dict.fromkeys(
+                (*tree.labels("thruster"), *tree.labels("marine"), *tree.labels("underwater"))
+            )
+        ),
         surface_hints=surface_hints(tree, thrusters=bool(parts.of("thruster"))),
         underwater_hints=underwater_hints(tree),
         water_frames=water_frames(tree),

@@ -97,6 +97,8 @@ class RoleReader:
         self.named_submersible = self._name_says(_SUBMERSIBLE_NAME)
         self.marine = (
             bool(self.plugins_of("marine") or self.plugins_of("thruster") or self.fixed_thrusters)
+            # A plugin only a submerged body runs (a subsea pressure gauge, a DVL): in water.
+            or bool(self.plugins_of("underwater"))
             or any(self.matches("thruster", joint) for joint in urdf.joints if joint.movable)
             # A craft named for the water (a boat, an ASV, an AUV): its propellers push it.
             or self.named_vessel

@@ -667,3 +667,20 @@ def test_a_robot_named_as_a_submersible_that_shows_no_way_of_travelling_dives_wi
         auv.joint(f"{side}_prop_joint", "continuous", auv.root, f"{side}_prop")
     assert {role.role for role in identify_urdf(auv.text()).roles} == {"thruster"}
     assert identify_urdf(named_hull("rover").text()).structure == "Other"
+
+
+def test_a_box_a_planar_move_pushes_that_carries_a_subsea_pressure_gauge_is_underwater() -> None:
+    robot = RobotText("sub")
+    robot.add(builders.model_plugin("move", "libgazebo_ros_planar_move.so"))
+    robot.add(builders.model_plugin("depth", "libuuv_gazebo_ros_subsea_pressure_plugin.so"))
+    result = identify_urdf(robot.text())
+    assert result.structure == "Underwater Vehicle"
+    assert result.body is not None
+    assert result.body.marine_plugins == ("libuuv_gazebo_ros_subsea_pressure_plugin.so",)
+
+
+def test_the_same_box_with_a_camera_plugin_stays_a_ground_base() -> None:
+    robot = RobotText("rover")
+    robot.add(builders.model_plugin("move", "libgazebo_ros_planar_move.so"))
+    robot.add(builders.model_plugin("cam", "libgazebo_ros_camera.so"))
+    assert identify_urdf(robot.text()).structure == "UGV"
