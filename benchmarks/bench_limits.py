@@ -179,7 +179,8 @@ def test_check_all_values_and_2000_constraints(benchmark: BenchmarkFixture, tmp_
 
 def test_read_a_workspace_at_its_byte_bound(benchmark: BenchmarkFixture, tmp_path: Path) -> None:
     """300 packages that all name each other, each a launch file at the per-file bound: the
-    walk stops at the byte bound with one warning, and what it read is the robot's."""
+    walk stops at the byte bound with a note; every package read is the robot's (each names
+    the description), and no more was read than the bound."""
     from solver.identify.readers import workspace
 
     names = [f"pkg_{i:04d}" for i in range(300)]
@@ -191,6 +192,27 @@ def test_read_a_workspace_at_its_byte_bound(benchmark: BenchmarkFixture, tmp_pat
         (tmp_path / name / "launch" / "a.launch").write_text(text)
     found = _once(benchmark, workspace.read_workspace, tmp_path / names[0])
     assert found is not None
-    per_file = len(text)
-    assert len(found.files) == -(-workspace.MAX_TOTAL_BYTES // per_file)
-    assert "more than 48 MiB of files" in found.warnings[0].message
+    assert len(found.files) == -(-workspace.MAX_TOTAL_BYTES // len(text))
+    assert len(found.packages) == len(found.files)
+    assert "more than 48 MiB of files" in found.notes[0]
+
+
+def test_read_a_workspace_of_20000_packages(benchmark: BenchmarkFixture, tmp_path: Path) -> None:
+    """20,000 one-file packages that each name the description (60,000 entries and more, past
+    the entry bound): the walk stops, every package read is the robot's, and the evidence line
+    names 12 and counts the rest."""
+    from solver.identify.readers import workspace
+
+    own = tmp_path / "rover_description"
+    own.mkdir()
+    (own / "package.xml").write_text("<package><name>rover_description</name></package>")
+    for i in range(20_000):
+        folder = tmp_path / f"u{i:05d}"
+        folder.mkdir()
+        (folder / "package.xml").write_text(f"<package><name>u{i:05d}</name></package>")
+        (folder / "a.launch").write_text("rover_description")
+    found = _once(benchmark, workspace.read_workspace, own)
+    assert found is not None
+    assert len(found.packages) == len(found.files) + 1  # the description's package has none
+    assert not found.complete
+    assert found.shown_packages.endswith(f" and {len(found.packages) - 12:,} more")

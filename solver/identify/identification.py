@@ -167,13 +167,13 @@ def identify_urdf(
     notes: Sequence[str] = (),
     description: TeleopDescription | None = None,
     warnings: Sequence[Fault] = (),
-    workspace: Workspace | None = None,
+    packages: Workspace | None = None,
 ) -> Identification:
     """Identify a robot from URDF text; :class:`~solver.errors.InputError` if unusable.
 
     ``description``: the robot's teleoperation description, whose values win; ``warnings``:
     flaws of supporting files read before (a description that could not be read);
-    ``workspace``: the robot's packages, whose launch, configuration and script files show
+    ``packages``: the robot's packages, whose launch, configuration and script files show
     the controls they ship (:mod:`solver.identify.shipped`)."""
     rules = rules if rules is not None else load_rules(default_rules_path())
     profile = profile if profile is not None else load_profile()
@@ -183,7 +183,6 @@ def identify_urdf(
         *urdf.warnings,
         *srdf_warnings,
         *warnings,
-        *(workspace.warnings if workspace is not None else ()),
     )
     body = detect_body(urdf, profile)
     reading = classify(body, profile, rules, root=urdf.root, srdf=srdf, urdf=urdf)
@@ -200,11 +199,12 @@ def identify_urdf(
             urdf=urdf,
             sensor_kinds={d.kind for d in detections},
             srdf_source=Path(srdf_file).name,
-            guess_navigation=workspace is None,
+            guess_navigation=packages is None or not packages.conclusive,
         )
     ]
-    if workspace is not None:
-        controls.append(controls_from_workspace(workspace, profile, reading.structure))
+    if packages is not None:
+        controls.append(controls_from_workspace(packages, profile, reading.structure))
+        notes = (*notes, *packages.notes)
     for source in topics:
         topical = sensors_from_topics(source.topics, profile, source.name)
         detections += under_water(topical) if dives else topical
@@ -218,8 +218,8 @@ def identify_urdf(
         merge(detections, profile, rules),
     )
     evidence = reading.evidence
-    if workspace is not None:
-        read = ", ".join(workspace.packages)
+    if packages is not None:
+        read = packages.shown_packages
         evidence = (*evidence, f"packages read for the controls they ship: {read}")
     if description is not None:
         found = with_declared(found, description, profile, rules)
@@ -329,15 +329,7 @@ def identify(
     if beside is not None and beside.is_file():
         teleop = beside
     declared, flaws = _description(teleop)
-    if package is None and look_around:
-        from solver.identify.readers.workspace import description_package
-
-        package = description_package(file)
-    packages = None
-    if package is not None:
-        from solver.identify.readers.workspace import read_workspace
-
-        packages = read_workspace(package, workspace)
+    around, unused = _packages(file, package, workspace, look_around)
     return identify_urdf(
         text,
         file=file,
@@ -346,11 +338,31 @@ def identify(
         topics=sources,
         rules=rules,
         profile=profile,
-        notes=notes,
+        notes=(*notes, *unused),
         description=declared,
         warnings=flaws,
-        workspace=packages,
+        packages=around,
     )
+
+
+def _packages(
+    file: str, package: str | Path | None, workspace: str | Path | None, look_around: bool
+) -> tuple[Workspace | None, tuple[str, ...]]:
+    """The robot's packages around ``file`` (or in the ``package`` named), and a note for a
+    folder the caller named that is not used."""
+    from solver.identify.readers.workspace import description_package, read_workspace
+
+    named = package is not None
+    if package is None and look_around:
+        package = description_package(file)
+    if package is None:
+        if workspace is None or not look_around:
+            return None, ()
+        return None, (f"workspace {workspace}: no package holds the description; none is read",)
+    around = read_workspace(package, workspace)
+    if around is None and named:
+        return None, (f"package {package}: no package.xml names a package there; none is read",)
+    return around, ()
 
 
 def _description(

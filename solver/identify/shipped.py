@@ -9,8 +9,9 @@ Effector). A rule may exclude structures (no navigation for an arm bolted to a t
 its repository holds). Each control names the file that shows it, the first one found in the
 order the packages were read (the description's package first).
 
-What the packages ship is the robot's author's word, stronger than a guess: when packages were
-read, the description's navigation guess is not made (:func:`solver.identify.motion.
+What the packages ship is the robot's author's word, stronger than a guess: when they were read
+whole and hold more than the description's own package (``Workspace.conclusive``), the
+description's navigation guess is not made (:func:`solver.identify.motion.
 controls_from_description`); they ship navigation or they do not.
 """
 
@@ -39,6 +40,7 @@ def controls_from_workspace(
             matched = rule.match.find(shipped.text)
             if matched is not None:
                 where = shown(shipped.path, limit=SHOWN_FILE_NAME_CHARS)
-                found[control] = f"package {shipped.package}: {where} ({shown(matched)})"
+                package = shown(shipped.package)
+                found[control] = f"package {package}: {where} ({shown(matched)})"
                 break
     return tuple(Control(control, source) for control, source in found.items())

@@ -279,3 +279,16 @@ def test_identify_reads_the_packages_around_a_description_for_the_controls_they_
     copy.write_text(urdf.read_text(encoding="utf-8"), encoding="utf-8")
     named = run_cli("identify", copy, "--package", urdf.parent.parent)
     assert "package rover_navigation: rover_navigation/launch/nav.launch" in named.stdout
+
+
+def test_a_workspace_named_for_a_description_in_no_package_is_said_in_a_note(
+    tmp_path: Path,
+) -> None:
+    urdf = tmp_path / "rover.urdf"
+    urdf.write_text(_rover_with_sensors().text(), encoding="utf-8")
+    result = run_cli("identify", urdf, "--workspace", tmp_path)
+    assert result.returncode == 0, result.stderr
+    assert (
+        f"  note: workspace {tmp_path}: no package holds the description; none is read\n"
+        in result.stdout
+    )

@@ -102,3 +102,21 @@ def test_a_file_beside_a_robot_that_is_not_of_its_kind_is_never_quoted(
     shown = fleet_output(folder, tmp_path / "team.yaml")
     assert f"not identified: rover: {folder / entry}" in shown
     assert "hunter2" not in shown
+
+
+def test_a_folder_of_robots_inside_a_package_reads_no_package_around_them(tmp_path: Path) -> None:
+    (tmp_path / "package.xml").write_text("<package><name>fleet_pkg</name></package>")
+    (tmp_path / "nav.launch").write_text("<node pkg='move_base'/>")
+    robots = tmp_path / "robots"
+    robots.mkdir()
+    rover = builders.ugv()
+    rover.add(builders.model_plugin("drive", "libgazebo_ros_diff_drive.so"))
+    rover.fixed(rover.root, "laser")
+    rover.add(builders.LASER)
+    (robots / "rover.urdf").write_text(rover.text())
+    fleet = identify_fleet(robots, rules=load_rules(RULES / "paper.yaml"), profile=load_profile())
+    [entry] = fleet.entries
+    assert entry.identification is not None
+    controls = {c.motion_control: c.source for c in entry.identification.motion_controls}
+    assert controls["Waypoint"].startswith("urdf: likely, not declared")
+    assert not any("packages read" in line for line in entry.identification.evidence)

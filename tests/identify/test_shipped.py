@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
+
 from solver.identify import identify, load_profile
 from solver.identify.readers.workspace import ShippedFile, Workspace
 from solver.identify.shipped import controls_from_workspace
@@ -48,7 +50,8 @@ def test_a_teleop_node_is_the_structures_velocity_control() -> None:
 
 
 def test_moveits_planning_node_means_end_effector_goals() -> None:
-    assert list(shipped("Manipulator", "<include file='$(find arm_moveit)/move_group.launch'/>"))
+    moveit = "<include file='$(find arm_moveit)/launch/move_group.launch'/>"
+    assert list(shipped("Manipulator", moveit)) == ["End Effector"]
 
 
 def test_a_base_or_a_gripper_alone_has_no_end_effector_whatever_moveit_its_repository_holds() -> (
@@ -147,3 +150,37 @@ def test_a_file_name_is_shown_with_its_unprintable_characters_escaped() -> None:
     )
     [control] = controls_from_workspace(hostile, PROFILE, "UGV")
     assert control.source == "package p: p/\\x1b[2Jnav\\n.launch (move_base)"
+
+
+def test_a_description_package_alone_read_whole_ships_no_navigation(tmp_path: Path) -> None:
+    src = tmp_path / "ws" / "src"
+    own = package(src, "rover_description", {"urdf/rover.urdf": rover_with_a_lidar().text()})
+    path = own / "urdf" / "rover.urdf"
+    assert "Waypoint" not in controls_of(path)
+    assert "Waypoint" in controls_of(path, look_around=False)
+
+
+def test_a_workspace_read_in_part_keeps_the_guess_and_says_why_in_a_note(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from solver.identify.readers import workspace
+
+    monkeypatch.setattr(workspace, "MAX_FILES", 1)
+    path = described(tmp_path, rover_with_a_lidar(), "<node pkg='robot_state_publisher'/>")
+    package(
+        tmp_path / "ws" / "src", "rover_extras", {"a.launch": "rover_description", "b.yaml": ""}
+    )
+    result = identify(path)
+    controls = {c.motion_control: c.source for c in result.motion_controls}
+    assert controls["Waypoint"].startswith("urdf: likely, not declared")
+    assert result.warnings == ()  # a bound of the workspace is no flaw of the robot: a note
+    assert any("more than 1 files" in note for note in result.notes)
+
+
+def test_a_package_named_that_holds_no_package_is_said_in_a_note(tmp_path: Path) -> None:
+    path = tmp_path / "rover.urdf"
+    path.write_text(rover_with_a_lidar().text())
+    result = identify(path, package=tmp_path)
+    assert result.notes == (
+        f"package {tmp_path}: no package.xml names a package there; none is read",
+    )

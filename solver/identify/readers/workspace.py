@@ -7,27 +7,36 @@ them and reads their launch, configuration and script files as text; nothing in 
 imported or parsed as code.
 
 * The description's *package* is the nearest folder above the file (at most
-  :data:`MAX_LEVELS_UP` folders up) holding a ``package.xml``; the *workspace* is the folder
-  above that package, or one the caller names.
-* The workspace is walked once: symbolic links are never followed, hidden folders and the
-  folders builds and tests write (``build``, ``install``, ``devel``, ``log``, ``test``, ...) are
-  skipped, at most :data:`MAX_DEPTH` folders deep and :data:`MAX_ENTRIES` entries. Each file
-  belongs to the nearest package above it; a file in no package is nobody's.
+  :data:`MAX_LEVELS_UP` folders up) holding a ``package.xml``. The *workspace* is the nearest
+  folder named ``src`` at most two folders above that package's folder (a colcon or catkin
+  workspace, where a bringup may sit in a sibling repository), else the folder above the
+  package, or one the caller names.
+* The workspace is walked once, the description's package first: symbolic links are never
+  followed, hidden folders and the folders builds and tests write (``build``, ``install``,
+  ``devel``, ``log``, ``test``, ...) are skipped, at most :data:`MAX_DEPTH` folders deep and
+  :data:`MAX_ENTRIES` entries. Each file belongs to the nearest package above it; a file in no
+  package is nobody's.
+* Files are read in the order the robot's packages are likeliest: the description's, those
+  named for the robot, those whose ``package.xml`` names one of them, then the rest; so a bound
+  spent on a vendored library leaves the robot's own packages read. Text files
+  (:data:`TEXT_SUFFIXES`, and files with no suffix in ``scripts`` and ``nodes`` folders, ROS 1
+  nodes) are opened only when they are regular files (a link, a FIFO or a device is passed by,
+  never opened), at most :data:`MAX_FILE_BYTES` of each, :data:`MAX_FILES` files and
+  :data:`MAX_TOTAL_BYTES` in all; XML comments are removed.
 * The *robot's packages*: the description's and, for a package named ``ROBOT_description``,
   every package named ``ROBOT_...`` (the ROS convention: ``jackal_navigation`` is the Jackal's
-  though it never names ``jackal_description``); then every package that uses one of the
-  robot's (names it as a word in its ``package.xml`` or its files: a bringup that finds the
-  description) and every package one of the robot's uses (a bringup that includes a navigation
-  package), in at most :data:`MAX_ROUNDS` rounds. Other packages of the workspace (another
-  robot's, a library's source) are not the robot's, however much navigation they hold.
-* Text files (launch, YAML, XML, Python, C++: :data:`TEXT_SUFFIXES`) are read through a
-  descriptor that refuses links and anything but a regular file (a FIFO or a device is
-  skipped, never waited on), at most :data:`MAX_FILE_BYTES` of each, :data:`MAX_FILES` files and
-  :data:`MAX_TOTAL_BYTES` in all, decoded with replacement; XML comments are removed.
+  though it never names ``jackal_description``); then every package that *uses* one of them
+  (names it as a word in its ``package.xml`` or its files: a bringup that finds the
+  description); then every package one of those uses (the navigation package a bringup
+  includes). A package another robot's package uses is not reached through a dependency both
+  share (a vendored ``gazebo_ros`` used by every robot of the workspace), and a name most
+  packages of the workspace write (``robot_description``, the parameter) is no evidence that
+  the package of that name is used.
 
-Past a bound the rest is not read and one located warning says so; a workspace that cannot be
-read (no such folder, no permission) is no evidence, never an error: the description is read
-alone. What the files mean is :mod:`solver.identify.shipped`'s.
+Past a bound the rest is not read and a note says so; the workspace is then *incomplete*, and
+what it does not say is not taken as said (:mod:`solver.identify.shipped`). A workspace that
+cannot be read (no such folder, no permission) is no evidence, never an error: the description
+is read alone. What the files mean is :mod:`solver.identify.shipped`'s.
 """
 
 from __future__ import annotations
@@ -35,10 +44,9 @@ from __future__ import annotations
 import os
 import re
 import stat
-from dataclasses import dataclass
+from collections import Counter
+from dataclasses import dataclass, field
 from pathlib import Path
-
-from solver.errors import Fault, Location
 
 __all__ = [
     "MAX_DEPTH",
@@ -46,13 +54,13 @@ __all__ = [
     "MAX_FILES",
     "MAX_FILE_BYTES",
     "MAX_LEVELS_UP",
-    "MAX_ROUNDS",
     "MAX_TOTAL_BYTES",
     "TEXT_SUFFIXES",
     "ShippedFile",
     "Workspace",
     "description_package",
     "read_workspace",
+    "workspace_of",
 ]
 
 # Folders above the description file searched for its package.xml (pkg/urdf/robots/x.urdf).
@@ -63,16 +71,24 @@ MAX_ENTRIES = 50_000
 MAX_FILES = 4_000
 MAX_FILE_BYTES = 256 * 1024
 MAX_TOTAL_BYTES = 48 * 1024 * 1024
-# Rounds of "uses or is used by" from the description's package.
-MAX_ROUNDS = 3
 # A package.xml is read up to this size (its name and dependencies are at the top).
 MAX_MANIFEST_BYTES = 64 * 1024
+# Package names the evidence line lists before "and N more".
+SHOWN_PACKAGES = 12
 
-TEXT_SUFFIXES = (".launch", ".xml", ".yaml", ".yml", ".py", ".cpp")
+TEXT_SUFFIXES = (".launch", ".xml", ".yaml", ".yml", ".py", ".cpp", ".cc", ".sh")
+# Folders whose files with no suffix are scripts (ROS 1 nodes: scripts/teleop, nodes/walker).
+SCRIPT_FOLDERS = frozenset({"scripts", "nodes", "bin"})
 # Folders no package ships controls in: builds, installs, logs, caches and tests.
 SKIPPED_FOLDERS = frozenset(
     {"build", "devel", "install", "log", "logs", "node_modules", "__pycache__", "test", "tests"}
 )
+# Stems too generic to name a robot (``robot_description`` beside ``robot_localization``).
+GENERIC_STEMS = frozenset({"robot_", "my_robot_", "ros_", "ros2_", "test_", "my_"})
+# A name written by more than this share of the workspace's packages (and by more than
+# MIN_COMMON of them) is a word of every launch file, not a use.
+COMMON_SHARE = 0.5
+MIN_COMMON = 3
 _NAME = re.compile(r"<name>\s*([A-Za-z0-9_.-]{1,200})\s*</name>")
 _WORD = re.compile(r"[A-Za-z0-9_]+")
 
@@ -88,13 +104,32 @@ class ShippedFile:
 
 @dataclass(frozen=True, slots=True)
 class Workspace:
-    """The robot's packages (the description's first) and their text files."""
+    """The robot's packages (the description's first) and their text files; ``notes`` say
+    where a bound stopped the reading (``complete`` is then false)."""
 
     root: str
     package: str
     packages: tuple[str, ...]
     files: tuple[ShippedFile, ...]
-    warnings: tuple[Fault, ...] = ()
+    notes: tuple[str, ...] = ()
+
+    @property
+    def complete(self) -> bool:
+        return not self.notes
+
+    @property
+    def conclusive(self) -> bool:
+        """What the packages do not ship can be taken as not shipped: every file was read.
+        (Even the description's package alone: of the labelled rows whose repository holds
+        only it, most ship no navigation; measured, docs/identify.md.)"""
+        return self.complete
+
+    @property
+    def shown_packages(self) -> str:
+        """The robot's packages as a line shows them (the first few, then how many more)."""
+        shown = ", ".join(self.packages[:SHOWN_PACKAGES])
+        more = len(self.packages) - SHOWN_PACKAGES
+        return f"{shown} and {more:,} more" if more > 0 else shown
 
 
 def description_package(path: str | Path) -> Path | None:
@@ -102,24 +137,33 @@ def description_package(path: str | Path) -> Path | None:
     :data:`MAX_LEVELS_UP` up) with a ``package.xml`` that is a regular file; else None."""
     here = Path(os.path.abspath(path)).parent
     for _ in range(MAX_LEVELS_UP):
-        manifest = here / "package.xml"
-        try:
-            if stat.S_ISREG(os.lstat(manifest).st_mode):
-                return here
-        except OSError:
-            pass
+        if _regular(str(here / "package.xml")):
+            return here
         if here.parent == here:
             return None
         here = here.parent
     return None
 
 
-@dataclass(slots=True)
+def workspace_of(package: str | Path) -> Path:
+    """The workspace around ``package``: the nearest folder named ``src`` at most two folders
+    above the package's folder, else the folder above the package."""
+    parent = Path(os.path.abspath(package)).parent
+    for folder in (parent, parent.parent, parent.parent.parent):
+        if folder.name == "src":
+            return folder
+    return parent
+
+
+@dataclass(slots=True, eq=False)
 class _Package:
     folder: str
     name: str
-    words: set[str]
-    files: list[ShippedFile]
+    manifest: set[str]
+    paths: list[str] = field(default_factory=list)
+    # Package names this package writes (its package.xml and its files), once all are known.
+    mentions: set[str] = field(default_factory=set)
+    files: list[ShippedFile] = field(default_factory=list)
 
 
 @dataclass(slots=True)
@@ -127,108 +171,138 @@ class _Budget:
     entries: int = 0
     files: int = 0
     total: int = 0
-    stopped: str | None = None
+    stopped: bool = False
+    notes: list[str] = field(default_factory=list)
 
-    def stop(self, why: str) -> None:
-        self.stopped = self.stopped or why
+    def note(self, why: str, *, stop: bool = True) -> None:
+        """A bound was reached: say so once; ``stop``: nothing more is walked or read."""
+        self.stopped = self.stopped or stop
+        if why not in self.notes:
+            self.notes.append(why)
 
 
 def read_workspace(package: str | Path, root: str | Path | None = None) -> Workspace | None:
     """The robot's packages in the workspace around the description's ``package`` folder
-    (``root``: the workspace; default: the folder above the package). None when the package
-    has no readable ``package.xml`` (no package, no evidence)."""
+    (``root``: the workspace; default: :func:`workspace_of`). None when the package has no
+    readable ``package.xml`` (no package, no evidence)."""
     folder = os.path.abspath(package)
-    top = os.path.abspath(root) if root is not None else os.path.dirname(folder)
-    own = _manifest_name(os.path.join(folder, "package.xml"))
+    top = os.path.abspath(root) if root is not None else str(workspace_of(folder))
+    budget = _Budget()
+    packages = _walk(folder, budget)
+    own = packages.get(folder)
     if own is None:
         return None
-    budget = _Budget()
-    # The description's own package first: the bounds never leave it unread.
-    packages = _walk(folder, budget, top)
-    if folder not in packages:
-        return None
-    packages.update(_walk(top, budget, top, skip=folder))
-    ours = _robots_packages(packages, folder)
-    files = tuple(f for name in ours for f in _by_name(packages, name).files)
-    warnings: tuple[Fault, ...] = ()
-    if budget.stopped is not None:
-        warnings = (
-            Fault(
-                Location(file=top),
-                f"workspace: {budget.stopped}; the rest of it is not read "
-                f"(docs/identify.md, The robot's packages)",
-                "too-large",
-            ),
-        )
-    return Workspace(top, own, ours, files, warnings)
+    packages.update(_walk(top, budget, skip=folder))
+    ordered = _reading_order(own, list(packages.values()))
+    names = {p.name for p in ordered}
+    for each in ordered:
+        each.mentions = each.manifest & names
+        for path in each.paths:
+            _read_into(each, path, top, names, budget)
+    ours = _robots_packages(own, ordered)
+    return Workspace(
+        top,
+        own.name,
+        tuple(p.name for p in ours),
+        tuple(f for p in ours for f in p.files),
+        tuple(
+            f"workspace {top}: {why}; the rest of it is not read "
+            "(docs/identify.md, The robot's packages)"
+            for why in budget.notes
+        ),
+    )
 
 
-def _by_name(packages: dict[str, _Package], name: str) -> _Package:
-    return next(p for p in packages.values() if p.name == name)
-
-
-def _robots_packages(packages: dict[str, _Package], folder: str) -> tuple[str, ...]:
-    """The description's package and the packages named for the same robot, then those that
-    use one of the robot's or that one of the robot's uses, round by round (names compared as
-    words)."""
-    own = packages[folder]
-    stem = _robot_stem(own.name)
-    ours = [own]
-    if stem is not None:
-        ours += sorted(
-            (p for p in packages.values() if p is not own and p.name.startswith(stem)),
-            key=lambda p: p.folder,
-        )
-    for _ in range(MAX_ROUNDS):
-        names = {p.name for p in ours}
-        words = set().union(*(p.words for p in ours))
-        added = [
-            p
-            for p in packages.values()
-            if p not in ours and (p.name in words or not names.isdisjoint(p.words))
-        ]
-        if not added:
-            break
-        ours += sorted(added, key=lambda p: p.folder)
-    return tuple(dict.fromkeys(p.name for p in ours))
-
-
-def _robot_stem(name: str) -> str | None:
+def _stem(name: str) -> str | None:
     """``jackal_`` for ``jackal_description``: the prefix of the packages a robot's authors
     name for it (``jackal_navigation``, ``jackal_bringup``), the ROS convention; None for a
-    package not named ``ROBOT_description(s)``."""
+    package not named ``ROBOT_description(s)``, or named for no robot in particular."""
     for suffix in ("_descriptions", "_description"):
         if name.endswith(suffix) and len(name) > len(suffix):
-            return name[: -len(suffix)] + "_"
+            stem = name[: -len(suffix)] + "_"
+            return None if stem in GENERIC_STEMS else stem
     return None
 
 
-def _walk(start: str, budget: _Budget, top: str, skip: str | None = None) -> dict[str, _Package]:
-    """Every package under ``start`` (by folder) with its words and text files (paths shown
-    from ``top``); a package owns the folders below it (links not followed, skipped folders
-    and ``skip`` left out)."""
+def _reading_order(own: _Package, packages: list[_Package]) -> list[_Package]:
+    """The description's package, those named for the robot, those whose package.xml names
+    one of them, then the rest (each group by folder)."""
+    stem = _stem(own.name)
+    named = [p for p in packages if p is not own and stem is not None and p.name.startswith(stem)]
+    first = {own.name, *(p.name for p in named)}
+    rest = [p for p in packages if p is not own and p not in named]
+    users = [p for p in rest if not first.isdisjoint(p.manifest)]
+    others = [p for p in rest if first.isdisjoint(p.manifest)]
+    return [own, *_by_folder(named), *_by_folder(users), *_by_folder(others)]
+
+
+def _by_folder(packages: list[_Package]) -> list[_Package]:
+    return sorted(packages, key=lambda p: p.folder)
+
+
+def _robots_packages(own: _Package, packages: list[_Package]) -> list[_Package]:
+    """The description's package and those named for the robot, the packages that use one of
+    them, then the packages one of those uses (names compared as words; a name most packages
+    write, ``robot_description`` the parameter, is no evidence that one is used)."""
+    stem = _stem(own.name)
+    core = [own, *(p for p in packages if stem and p is not own and p.name.startswith(stem))]
+    core_names = {p.name for p in core}
+    chosen = {id(p) for p in core}
+    users = [p for p in packages if id(p) not in chosen and not core_names.isdisjoint(p.mentions)]
+    chosen |= {id(p) for p in users}
+    used_names = set().union(*(p.mentions for p in (*core, *users))) - _common_names(packages)
+    used = [p for p in packages if id(p) not in chosen and p.name in used_names]
+    return [*core, *_by_folder(users), *_by_folder(used)]
+
+
+def _common_names(packages: list[_Package]) -> set[str]:
+    """Names more than :data:`COMMON_SHARE` of the packages (and more than :data:`MIN_COMMON`)
+    write: words every launch file has, not uses."""
+    counts = Counter(name for p in packages for name in p.mentions if name != p.name)
+    bound = max(MIN_COMMON, COMMON_SHARE * len(packages))
+    return {name for name, count in counts.items() if count > bound}
+
+
+def _walk(start: str, budget: _Budget, skip: str | None = None) -> dict[str, _Package]:
+    """Every package under ``start`` (by folder) with its manifest's words and its text files'
+    paths; a package owns the folders below it (links not followed, skipped folders and
+    ``skip`` left out)."""
     packages: dict[str, _Package] = {}
     stack: list[tuple[str, int, _Package | None]] = [(start, 0, None)]
-    while stack and budget.stopped is None:
+    while stack and not budget.stopped:
         folder, level, owner = stack.pop()
         if folder == skip:
             continue
         files, subfolders = _list(folder, budget)
         if "package.xml" in files:
-            name = _manifest_name(os.path.join(folder, "package.xml"))
-            if name is not None:
-                owner = packages[folder] = _Package(folder, name, set(), [])
-                owner.words.update(_WORD.findall(_read(os.path.join(folder, "package.xml"))))
+            manifest = _read(os.path.join(folder, "package.xml"), MAX_MANIFEST_BYTES)
+            found = _NAME.search(manifest or "")
+            if found is not None and manifest is not None:
+                owner = packages[folder] = _Package(
+                    folder, found.group(1), set(_WORD.findall(manifest))
+                )
         if owner is not None:
-            for name in sorted(files):
-                if name.endswith(TEXT_SUFFIXES) and name != "package.xml":
-                    _add_file(owner, folder, name, top, budget)
-        if level < MAX_DEPTH:
+            owner.paths += [os.path.join(folder, name) for name in _texts(folder, files)]
+        if level >= MAX_DEPTH and subfolders:
+            budget.note(f"folders deeper than {MAX_DEPTH} levels are not walked", stop=False)
+        elif subfolders:
             stack += [(os.path.join(folder, n), level + 1, owner) for n in sorted(subfolders)[::-1]]
     return packages
 
 
+def _texts(folder: str, files: list[str]) -> list[str]:
+    """The names of ``files`` (in ``folder``) read as text: by suffix, and scripts with none."""
+    script = os.path.basename(folder) in SCRIPT_FOLDERS
+    return [
+        name
+        for name in sorted(files)
+        if name != "package.xml" and (name.endswith(TEXT_SUFFIXES) or (script and "." not in name))
+    ]
+
+
 def _list(folder: str, budget: _Budget) -> tuple[list[str], list[str]]:
+    """The regular files and the folders (links and hidden or skipped names left out) of
+    ``folder``; none when it cannot be listed."""
     files: list[str] = []
     subfolders: list[str] = []
     try:
@@ -236,7 +310,7 @@ def _list(folder: str, budget: _Budget) -> tuple[list[str], list[str]]:
             for entry in entries:
                 budget.entries += 1
                 if budget.entries > MAX_ENTRIES:
-                    budget.stop(f"more than {MAX_ENTRIES} entries")
+                    budget.note(f"more than {MAX_ENTRIES:,} entries")
                     break
                 if entry.name.startswith(".") or entry.is_symlink():
                     continue
@@ -250,48 +324,57 @@ def _list(folder: str, budget: _Budget) -> tuple[list[str], list[str]]:
     return files, subfolders
 
 
-def _add_file(owner: _Package, folder: str, name: str, top: str, budget: _Budget) -> None:
+def _read_into(owner: _Package, path: str, top: str, names: set[str], budget: _Budget) -> None:
+    """Read the file ``path`` of ``owner`` within the bounds: its text and the package names
+    it writes."""
     if budget.files >= MAX_FILES:
-        budget.stop(f"more than {MAX_FILES} files")
+        budget.note(f"more than {MAX_FILES:,} files")
         return
     if budget.total >= MAX_TOTAL_BYTES:
-        budget.stop(f"more than {MAX_TOTAL_BYTES // (1024 * 1024)} MiB of files")
+        budget.note(f"more than {MAX_TOTAL_BYTES // (1024 * 1024)} MiB of files")
         return
-    path = os.path.join(folder, name)
-    text = _read(path)
+    text = _read(path, MAX_FILE_BYTES)
+    if text is None:
+        return
     budget.files += 1
-    budget.total += len(text)
-    if name.endswith((".launch", ".xml")):
-        text = uncommented(text)
-    owner.words.update(_WORD.findall(text))
+    budget.total += len(text.encode("utf-8", errors="replace"))
+    if path.endswith((".launch", ".xml")):
+        text = _uncommented(text)
+    owner.mentions.update(names.intersection(_WORD.findall(text)))
     owner.files.append(ShippedFile(owner.name, os.path.relpath(path, top), text))
 
 
-def _manifest_name(path: str) -> str | None:
-    found = _NAME.search(_read(path, MAX_MANIFEST_BYTES))
-    return found.group(1) if found else None
+def _regular(path: str) -> bool:
+    """``path`` is a regular file (not a link to one)."""
+    try:
+        return stat.S_ISREG(os.lstat(path).st_mode)
+    except (OSError, ValueError):
+        return False
 
 
-def _read(path: str, limit: int | None = None) -> str:
-    """At most ``limit`` bytes of the regular file ``path`` as text; links, FIFOs, devices
-    and unreadable files are empty (opened without following a link, never blocking)."""
-    flags = os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_NONBLOCK", 0)
+def _read(path: str, limit: int) -> str | None:
+    """At most ``limit`` bytes of the regular file ``path`` as text; None for a link, a FIFO,
+    a device or a file that cannot be read (none of them is opened: the kind is asked first,
+    and the file opened without following a link, waiting or taking a terminal)."""
+    if not _regular(path):
+        return None
+    flags = os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK | os.O_NOCTTY | os.O_CLOEXEC
     try:
         descriptor = os.open(path, flags)
-    except OSError:
-        return ""
+    except (OSError, ValueError):
+        return None
     try:
         if not stat.S_ISREG(os.fstat(descriptor).st_mode):
-            return ""
-        data = os.read(descriptor, MAX_FILE_BYTES if limit is None else limit)
+            return None
+        data = os.read(descriptor, limit)
     except OSError:
-        return ""
+        return None
     finally:
         os.close(descriptor)
     return data.decode("utf-8", errors="replace")
 
 
-def uncommented(text: str) -> str:
+def _uncommented(text: str) -> str:
     """``text`` without XML comments, in one pass (an unclosed comment runs to the end)."""
     kept: list[str] = []
     start = 0

@@ -9,9 +9,10 @@ import pytest
 
 from solver.identify.readers import workspace as reader
 from solver.identify.readers.workspace import (
+    _uncommented,
     description_package,
     read_workspace,
-    uncommented,
+    workspace_of,
 )
 
 
@@ -146,8 +147,8 @@ def test_xml_comments_are_removed_from_launch_files(tmp_path: Path) -> None:
 
 
 def test_an_unclosed_comment_runs_to_the_end_of_the_text() -> None:
-    assert uncommented("a<!--b-->c<!--d") == "ac"
-    assert uncommented("<!--" * 100_000) == ""
+    assert _uncommented("a<!--b-->c<!--d") == "ac"
+    assert _uncommented("<!--" * 100_000) == ""
 
 
 def test_a_file_is_read_up_to_its_bound(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
@@ -165,9 +166,11 @@ def test_past_the_file_bound_a_located_warning_says_the_rest_is_not_read(
     )
     found = read(described)
     assert len(found.files) == 2
-    (warning,) = found.warnings
-    assert warning.location.file == str(tmp_path / "src")
-    assert "more than 2 files; the rest of it is not read" in warning.message
+    assert found.notes == (
+        f"workspace {tmp_path / 'src'}: more than 2 files; the rest of it is not read "
+        "(docs/identify.md, The robot's packages)",
+    )
+    assert not found.complete
 
 
 def test_past_the_entry_bound_the_walk_stops_with_a_warning(
@@ -178,7 +181,7 @@ def test_past_the_entry_bound_the_walk_stops_with_a_warning(
     for name in "bcde":
         package(tmp_path / "src", f"rover_{name}", {"a.yaml": "rover_description"})
     found = read(described)
-    assert "more than 4 entries" in found.warnings[0].message
+    assert "more than 4 entries" in found.notes[0]
     assert found.packages == ("rover_description",)
 
 
@@ -194,3 +197,110 @@ def test_a_workspace_that_does_not_exist_leaves_the_package_read_alone(tmp_path:
     found = read(described, tmp_path / "no such folder")
     assert found.packages == ("rover_description",)
     assert [f.package for f in found.files] == ["rover_description"]
+
+
+def test_a_dependency_shared_with_another_robot_brings_none_of_that_robots_packages(
+    tmp_path: Path,
+) -> None:
+    src = tmp_path / "src"
+    described = package(src, "rover_description", {"launch/sim.launch": "gazebo_ros"})
+    package(src, "gazebo_ros")
+    package(src, "drone_gazebo", {"launch/sim.launch": "gazebo_ros drone_navigation"})
+    package(src, "drone_navigation", {"launch/nav.launch": "move_base"})
+    assert read(described).packages == ("rover_description", "gazebo_ros")
+
+
+def test_a_name_most_packages_write_is_no_evidence_that_its_package_is_used(
+    tmp_path: Path,
+) -> None:
+    src = tmp_path / "src"
+    described = package(src, "rover_description")
+    launch = "rover_description robot_description robot_state_publisher"
+    package(src, "rover_bringup", {"launch/a.launch": launch})
+    for name in ("arm_bringup", "cam_bringup", "lidar_bringup", "sim_bringup"):
+        package(src, name, {"launch/a.launch": "robot_description"})
+    package(src, "robot_description", {"launch/display.launch": "move_base"})
+    assert read(described).packages == ("rover_description", "rover_bringup")
+
+
+def test_a_generic_stem_names_no_robot(tmp_path: Path) -> None:
+    src = tmp_path / "src"
+    described = package(src, "robot_description")
+    package(src, "robot_localization", {"launch/ekf.launch": "x"})
+    assert read(described).packages == ("robot_description",)
+
+
+def test_two_packages_of_one_name_are_both_read(tmp_path: Path) -> None:
+    src = tmp_path / "src"
+    described = package(src, "rover_description")
+    for folder in ("ros1", "ros2"):
+        package(src / folder, "rover_bringup", {"launch/a.launch": f"rover_description {folder}"})
+    found = read(described)
+    assert [f.path for f in found.files] == [
+        "ros1/rover_bringup/launch/a.launch",
+        "ros2/rover_bringup/launch/a.launch",
+    ]
+
+
+def test_the_robots_packages_are_read_before_a_vendored_library_spends_the_bound(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(reader, "MAX_FILES", 3)
+    src = tmp_path / "src"
+    described = package(src, "rover_description")
+    package(src, "AAA_autopilot", {f"{n}.cpp": "waypoint" for n in range(10)})
+    package(src, "rover_navigation", {"launch/nav.launch": "move_base"})
+    found = read(described)
+    assert found.packages == ("rover_description", "rover_navigation")
+    assert [f.path for f in found.files] == ["rover_navigation/launch/nav.launch"]
+    assert not found.complete
+
+
+def test_ros1_scripts_without_a_suffix_are_read(tmp_path: Path) -> None:
+    described = package(
+        tmp_path / "src",
+        "rover_description",
+        {"scripts/teleop": "#!/usr/bin/env python\n", "meshes/base": "solid"},
+    )
+    assert [f.path for f in read(described).files] == ["rover_description/scripts/teleop"]
+
+
+def test_the_workspace_is_the_src_folder_above_a_repository(tmp_path: Path) -> None:
+    src = tmp_path / "ws" / "src"
+    described = package(src / "rover", "rover_description")
+    package(src / "rover_robot", "rover_bringup", {"launch/a.launch": "rover_description"})
+    assert workspace_of(described) == src
+    assert read(described).packages == ("rover_description", "rover_bringup")
+    assert workspace_of(tmp_path / "repo" / "pkg") == tmp_path / "repo"
+
+
+def test_folders_deeper_than_the_bound_are_not_walked_and_a_note_says_so(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(reader, "MAX_DEPTH", 2)
+    described = package(
+        tmp_path / "src", "rover_description", {"a/b.yaml": "x: 1", "a/b/c/d.yaml": "x: 1"}
+    )
+    found = read(described)
+    assert [f.path for f in found.files] == ["rover_description/a/b.yaml"]
+    assert "folders deeper than 2 levels are not walked" in found.notes[0]
+
+
+def test_a_package_xml_that_is_a_folder_or_a_fifo_is_no_package(tmp_path: Path) -> None:
+    folder = tmp_path / "src" / "odd"
+    (folder / "package.xml").mkdir(parents=True)
+    assert read_workspace(folder) is None
+    other = tmp_path / "src" / "odder"
+    other.mkdir()
+    os.mkfifo(other / "package.xml")
+    assert read_workspace(other) is None
+
+
+def test_many_packages_shown_are_cut_with_a_count(tmp_path: Path) -> None:
+    src = tmp_path / "src"
+    described = package(src, "rover_description")
+    for n in range(20):
+        package(src, f"user_{n:02d}", {"a.launch": "rover_description"})
+    found = read(described)
+    assert len(found.packages) == 21
+    assert found.shown_packages.endswith(", user_10 and 9 more")
