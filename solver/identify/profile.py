@@ -838,14 +838,7 @@ def _motion(
     by_structure = reader.mapping(by_path, "by_structure", required=False)
     pairs = []
     for structure in by_structure:
-        if structure not in structures:
-            reader.fault(
-                (*by_path, structure),
-                f"unknown structure "
-                f"{shown(structure, quoted=True)}{did_you_mean(structure, structures)}",
-                key=True,
-                code="unknown-reference",
-            )
+        if not _known_structure(reader, (*by_path, structure), structure, structures, key=True):
             continue
         pairs.append((structure, reader.string((*by_path, structure), "motion control")))
     description = reader.mapping(("motion", "description"), "description controls")
@@ -858,6 +851,21 @@ def _motion(
             names = reader.names(("motion", "description", source), "motion controls")
             sources.append((source, tuple(text for _, text in names)))
     return default, tuple(pairs), tuple(sources)
+
+
+def _known_structure(
+    reader: Reader, path: YPath, structure: str, structures: set[str], *, key: bool = False
+) -> bool:
+    """``structure`` is one of the profile's; else a located fault (``key``: at the key)."""
+    if structure in structures:
+        return True
+    reader.fault(
+        path,
+        f"unknown structure {shown(structure, quoted=True)}{did_you_mean(structure, structures)}",
+        key=key,
+        code="unknown-reference",
+    )
+    return False
 
 
 def _package_rules(reader: Reader, structures: set[str]) -> tuple[PackageRule, ...]:
@@ -877,13 +885,7 @@ def _package_rules(reader: Reader, structures: set[str]) -> tuple[PackageRule, .
         not_for = []
         listed = reader.names((*item, "not_for"), "structures") if "not_for" in spec else []
         for where, structure in listed:
-            if structure not in structures:
-                reader.fault(
-                    where,
-                    f"unknown structure "
-                    f"{shown(structure, quoted=True)}{did_you_mean(structure, structures)}",
-                    code="unknown-reference",
-                )
+            _known_structure(reader, where, structure, structures)
             not_for.append(structure)
         if control and match is not None:
             found.append(
