@@ -47,6 +47,7 @@ from solver.identify.limbs import (
     legs_by_place,
     legs_by_reach,
     lone_leg,
+    meeting_tips,
     moved_by,
     spine,
     wheeled_spine,
@@ -438,6 +439,7 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
     parts.limbs = five_bars(tree, legged)
     parts.limbs = arms_beside_legs(tree, parts.limbs)
     parts.limbs = flippers(tree, parts.limbs)
+    parts.limbs = meeting_tips(tree, parts.limbs)
     if not parts.roles and not parts.trunk:  # a snake is its one chain, with nothing else
         parts.limbs = spine(tree, parts.limbs)
     elif not parts.roles and not parts.grippers:  # or its chain, with side wheels on it

@@ -107,6 +107,11 @@ _LEG_DROP = 0.25
 _FEET_LEVEL = 0.25
 # Places closer than this (metres) across the body are on neither side of its middle.
 _SAME_PLACE = 1e-6
+# Three chains or more whose tips stand closer together than this share of how far apart they
+# start meet at one platform: a parallel robot's arms (every labelled walker's feet stand at
+# least 0.8 as far apart as its hips; a delta's tips, 0.13).
+_MEETING = 0.5
+_MEETING_LEGS = 3
 # A biped's leg, known by place alone, hangs nearly straight down in the zero pose.
 _LEG_STRAIGHT = 0.8
 _BIPED_LEGS = 2
@@ -517,6 +522,30 @@ def flippers(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
         return limbs
     why = "a flipper: a chain on a body that tracks move"
     return [replace(limb, kind="other", why=why) if limb.kind == "leg" else limb for limb in limbs]
+
+
+def meeting_tips(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
+    """Three chains read as legs or more whose tips meet (across the ground, a fraction of how
+    far apart they start): a parallel robot (a delta, its arms named as legs, all holding one
+    platform), one manipulator, not legs: a walker's feet stand at least as far apart as its
+    hips. Its longest chain is the arm, the others are its linkage."""
+    legs = [limb for limb in limbs if limb.kind == "leg"]
+    if len(legs) < _MEETING_LEGS:
+        return limbs
+    starts = [_start(tree, limb) for limb in legs]
+    tips = [tree.poses.place(limb.tip) for limb in legs]
+    apart = max(_flat(a, b) for a in starts for b in starts)
+    if apart == 0 or max(_flat(a, b) for a in tips for b in tips) >= _MEETING * apart:
+        return limbs
+    # One manipulator: its longest chain is the arm, the others its parallel linkage.
+    arm = max(legs, key=lambda limb: len(limb.joints))
+    why = "a parallel robot: chains whose tips meet, holding one platform (a delta)"
+    return [
+        replace(limb, kind="arm" if limb is arm else "other", why=why)
+        if limb.kind == "leg"
+        else limb
+        for limb in limbs
+    ]
 
 
 def _at_corners(tree: JointTree, base: str, group: list[Limb]) -> bool:

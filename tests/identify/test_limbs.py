@@ -3,6 +3,8 @@ mounts or other by their names, their length and what they carry; trunk where th
 
 from __future__ import annotations
 
+import math
+
 import pytest
 
 from solver.identify import identify_urdf, load_profile
@@ -1031,3 +1033,45 @@ def test_two_legs_hanging_side_by_side_across_x_are_a_biped_drawn_facing_y() -> 
             steps=["0 0 -0.13", "0 0 -0.4", "0 0 -0.4"],
         )
     assert identify_urdf(robot.text()).structure == "Biped"
+
+
+def delta(reach: float) -> str:
+    """A base with three two-joint chains named as legs, 120 degrees apart 0.2 m out, each
+    ending ``reach`` of the way back in toward the middle, 0.3 m below (``reach`` 1: all three
+    tips at the middle, a delta holding one platform)."""
+    links = ["base_link"]
+    joints = []
+    for i, angle in enumerate((0.0, 2.0944, 4.1888)):
+        x, y = 0.2 * math.cos(angle), 0.2 * math.sin(angle)
+        back = (-x * reach, -y * reach)
+        links += [f"upper_leg_{i}", f"lower_leg_{i}"]
+        joints.append(
+            builders.joint_xml(
+                f"motor_{i}", "revolute", "base_link", f"upper_leg_{i}", f"{x} {y} 0", "0 1 0"
+            )
+        )
+        joints.append(
+            builders.joint_xml(
+                f"elbow_{i}",
+                "revolute",
+                f"upper_leg_{i}",
+                f"lower_leg_{i}",
+                f"{back[0]} {back[1]} -0.3",
+                "0 1 0",
+            )
+        )
+    body = "".join(f'<link name="{link}"/>' for link in links) + "".join(joints)
+    return f'<robot name="parallel">{body}</robot>'
+
+
+def test_three_legs_whose_tips_meet_are_one_parallel_manipulator() -> None:
+    result = identify_urdf(delta(reach=1.0))
+    assert result.structure == "Manipulator"
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["arm", "other", "other"]
+
+
+def test_three_legs_whose_tips_stand_apart_stay_legs() -> None:
+    result = identify_urdf(delta(reach=0.0))
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["leg", "leg", "leg"]
