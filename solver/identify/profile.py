@@ -17,7 +17,7 @@ Not here: applying the profile (:mod:`solver.identify.body`, :mod:`~solver.ident
 from __future__ import annotations
 
 import hashlib
-from collections.abc import Mapping
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -732,16 +732,24 @@ def _list(reader: Reader, path: YPath) -> list[Any]:
     return raw
 
 
+def _rules(
+    reader: Reader, path: YPath, what: str, keys: set[str]
+) -> Iterator[tuple[YPath, dict[str, Any]]]:
+    """Each rule of the list at ``path`` (a mapping; others are located faults) with its path,
+    its fields checked against ``keys``."""
+    for index in range(len(_list(reader, path))):
+        item: YPath = (*path, index)
+        spec = reader.mapping(item, what)
+        if spec:
+            reader.unknown_keys(item, spec, keys, f"{what} field")
+            yield item, spec
+
+
 def _sensor_rules(
     reader: Reader, path: YPath, keys: set[str], *, types: bool, messages: bool = False
 ) -> tuple[SensorRule, ...]:
     found = []
-    for index in range(len(_list(reader, path))):
-        item: YPath = (*path, index)
-        spec = reader.mapping(item, "sensor rule")
-        if not spec:
-            continue
-        reader.unknown_keys(item, spec, keys, "sensor rule field")
+    for item, spec in _rules(reader, path, "sensor rule", keys):
         kind = reader.string((*item, "kind"), "sensor kind")
         match = _pattern(reader, (*item, "match"), required=not types)
         allowed: frozenset[str] = frozenset()
@@ -777,12 +785,7 @@ def _direction(reader: Reader, item: YPath, spec: dict[str, Any]) -> str | None:
 def _control_rules(reader: Reader) -> tuple[ControlRule, ...]:
     path: YPath = ("topics", "controls")
     found = []
-    for index in range(len(_list(reader, path))):
-        item: YPath = (*path, index)
-        spec = reader.mapping(item, "control rule")
-        if not spec:
-            continue
-        reader.unknown_keys(item, spec, _TOPIC_CONTROL_KEYS, "control rule field")
+    for item, spec in _rules(reader, path, "control rule", _TOPIC_CONTROL_KEYS):
         control = reader.string((*item, "control"), "motion control")
         found.append(
             ControlRule(
@@ -874,12 +877,7 @@ def _package_rules(reader: Reader, structures: set[str]) -> tuple[PackageRule, .
     if reader.get(path) is None:
         return ()
     found = []
-    for index in range(len(_list(reader, path))):
-        item: YPath = (*path, index)
-        spec = reader.mapping(item, "package rule")
-        if not spec:
-            continue
-        reader.unknown_keys(item, spec, _PACKAGE_KEYS, "package rule field")
+    for item, spec in _rules(reader, path, "package rule", _PACKAGE_KEYS):
         control = reader.string((*item, "control"), "motion control")
         match = _pattern(reader, (*item, "match"))
         not_for = []
