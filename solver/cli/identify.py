@@ -83,7 +83,8 @@ def register(subparsers: Any) -> None:
     parser.add_argument(
         "--workspace",
         metavar="DIR",
-        help="the folder the robot's packages are found in (default: the folder above its package)",
+        help="the folder the robot's packages are found in (default: the workspace's src folder "
+        "above the description's package, else the folder above that package)",
     )
     parser.add_argument(
         "--no-packages",

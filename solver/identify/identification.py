@@ -179,11 +179,7 @@ def identify_urdf(
     profile = profile if profile is not None else load_profile()
     urdf = parse_urdf(urdf_text, file, strict=False)
     srdf, srdf_warnings = (None, ()) if srdf_text is None else _srdf(srdf_text, srdf_file, urdf)
-    found_warnings = (
-        *urdf.warnings,
-        *srdf_warnings,
-        *warnings,
-    )
+    found_warnings = (*urdf.warnings, *srdf_warnings, *warnings)
     body = detect_body(urdf, profile)
     reading = classify(body, profile, rules, root=urdf.root, srdf=srdf, urdf=urdf)
     detections: list[Detection] = list(sensors_from_urdf(urdf, profile))
@@ -293,8 +289,8 @@ def identify(
     beside the file is read when there is one (``look_beside=False``: never).
     ``package`` names the description's ROS package folder; without it, the package holding
     the file (``look_around=False``: none). The robot's packages in ``workspace`` (default: the
-    folder above the package) are read for the controls they ship
-    (:mod:`solver.identify.readers.workspace`).
+    ``src`` folder above the package, else the folder above it) are read for the controls they
+    ship (:mod:`solver.identify.readers.workspace`); a folder named and not used is a note.
     """
     file = str(description)
     # How many files were given is known before any is read: refuse first, read nothing.
