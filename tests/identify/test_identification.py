@@ -79,14 +79,25 @@ def test_mutated_urdfs_are_identified_or_refused(data: bytes) -> None:
     assert message.startswith("fuzz.urdf")
 
 
-def test_an_srdf_whose_comment_xml_rejects_is_a_located_warning_the_urdf_read_alone() -> None:
-    # "--" inside a comment is not XML: the SRDF cannot be read at all.
-    srdf = '<?xml version="1.0"?>\n<robot name="arm6">\n<!-- set up -- by hand -->\n</robot>\n'
+def test_an_srdf_cut_short_is_a_located_warning_the_urdf_read_alone() -> None:
+    srdf = '<?xml version="1.0"?>\n<robot name="arm6">\n<group name="arm">\n'
     result = identify_urdf(builders.manipulator().text(), srdf_text=srdf, srdf_file="arm6.srdf")
     assert result.structure == "Manipulator"
     (warning,) = result.warnings
-    assert (warning.location.file, warning.location.line) == ("arm6.srdf", 3)
+    assert warning.location.file == "arm6.srdf"
     assert warning.message.endswith("(the SRDF is not read; the URDF alone is)")
+
+
+def test_a_comment_xml_rejects_and_ros_reads_is_a_located_warning_and_read_on() -> None:
+    # "--" inside a comment is not XML; ROS's URDF parser (TinyXML2) reads it.
+    srdf = '<?xml version="1.0"?>\n<robot name="arm6">\n<!-- set up -- by hand --->\n</robot>\n'
+    urdf = builders.manipulator().text().replace("<robot", "<!-- made -- by hand -->\n<robot", 1)
+    result = identify_urdf(urdf, srdf_text=srdf, srdf_file="arm6.srdf")
+    assert result.structure == "Manipulator"
+    assert [(w.location.file, w.location.line, w.code) for w in result.warnings] == [
+        ("<string>", 2, "xml-comment"),
+        ("arm6.srdf", 3, "xml-comment"),
+    ]
 
 
 def test_the_cache_tells_robots_apart_by_their_declared_description() -> None:

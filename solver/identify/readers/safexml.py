@@ -161,7 +161,44 @@ def _mend(raw: bytes, name: str, warnings: list[Fault]) -> bytes:
             text = declaration.group(0)
             fixed = text[: version.start(2)] + b"1.0" + text[version.end(2) :]
             raw = fixed + raw[declaration.end() :]
-    return raw
+    return _mend_comments(raw, name, warnings)
+
+
+def _mend_comments(raw: bytes, name: str, warnings: list[Fault]) -> bytes:
+    """Comments holding ``--`` or ending in ``-`` (``<!-- a -- b -->``, ``<!-- x --->``), which
+    XML forbids and ROS's own URDF parser (TinyXML2) reads: read as the comments they are, the
+    offending hyphens blanked (same length: every line keeps its number), one warning at the
+    first. One pass over the document."""
+    pieces: list[bytes] = []
+    start = first = 0
+    mended = 0
+    while True:
+        opening = raw.find(b"<!--", start)
+        closing = -1 if opening < 0 else raw.find(b"-->", opening + 4)
+        if closing < 0:
+            break
+        body = raw[opening + 4 : closing]
+        if b"--" in body or body.endswith(b"-"):
+            fixed = body.replace(b"--", b"- ")
+            fixed = fixed[:-1] + b" " if fixed.endswith(b"-") else fixed
+            pieces += [raw[start : opening + 4], fixed]
+            start = closing
+            first = first or raw.count(b"\n", 0, opening) + 1
+            mended += 1
+        else:
+            pieces.append(raw[start : closing + 3])
+            start = closing + 3
+    if not mended:
+        return raw
+    _warn(
+        warnings,
+        name,
+        first,
+        f"{mended} comment(s) hold '--' or end in '-', which XML forbids (ROS's URDF parser "
+        "reads them); read as comments",
+        "xml-comment",
+    )
+    return b"".join(pieces) + raw[start:]
 
 
 def _namespace_recovery(raw: bytes, name: str, warnings: list[Fault]) -> etree._Element | None:

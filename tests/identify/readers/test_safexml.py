@@ -215,3 +215,14 @@ def test_identify_refuses_an_attribute_default_in_a_urdf_or_srdf(
     assert f"warning: {srdf}:2: <!ATTLIST joint>: the document type declares" in result.stdout
     assert "the SRDF is not read; the URDF alone is" in result.stdout
     assert "structure:      UGV" in result.stdout
+
+
+def test_comments_xml_forbids_are_read_with_one_warning_and_refused_when_strict() -> None:
+    text = b'<robot name="r">\n<link name="a"/>\n<!-- a -- b -->\n<!-- c --->\n</robot>\n'
+    warnings: list[Fault] = []
+    root = parse_xml(text, "r.urdf", warnings=warnings)
+    assert [child.get("name") for child in root] == ["a"]
+    assert [(w.location.line, w.code) for w in warnings] == [(3, "xml-comment")]
+    assert warnings[0].message.startswith("2 comment(s) hold '--' or end in '-'")
+    with pytest.raises(InputError, match=r"r.urdf:3:\d+: malformed XML: Double hyphen"):
+        parse_xml(text, "r.urdf")
