@@ -12,6 +12,8 @@ Not here: the application (:mod:`solver.studio.app`).
 
 from __future__ import annotations
 
+import asyncio
+import logging
 import secrets
 import signal
 import socket
@@ -26,7 +28,7 @@ from solver.studio.security import MAX_QUERY_BYTES
 from solver.studio.service import Studio
 from solver.untrusted import shown
 
-__all__ = ["address", "bind", "serve"]
+__all__ = ["CutOffAtShutdown", "address", "bind", "serve"]
 
 # Bytes of a request's head (its address and headers) at most: the longest query the fence
 # takes and room for a browser's headers.
@@ -93,6 +95,7 @@ def serve(
         server_header=False,
     )
     server = _Server(config, studio)
+    logging.getLogger("uvicorn.error").addFilter(CutOffAtShutdown())
     # SIGINT and SIGTERM, however many and whenever they come, ask the server to stop and
     # nothing more: uvicorn raises each one it caught again once it has stopped, and one that
     # came while the studio cleans up would otherwise cut the clean-up short (leaving the
@@ -113,6 +116,20 @@ def serve(
 
 
 _STOPPING = (signal.SIGINT, signal.SIGTERM)
+
+
+class CutOffAtShutdown(logging.Filter):
+    """A request still being answered when the studio stops (a long count, past the graceful
+    shutdown's seconds) is cancelled: uvicorn logs that with the cancellation's traceback. It
+    is the stop the person asked for, not a fault: one line says so, no traceback."""
+
+    def filter(self, record: logging.LogRecord) -> bool:
+        if record.exc_info and isinstance(record.exc_info[1], asyncio.CancelledError):
+            record.exc_info = None
+            record.exc_text = None
+            record.msg = "a request still being answered was cut off: the studio stopped"
+            record.args = ()
+        return True
 
 
 class _Server(uvicorn.Server):

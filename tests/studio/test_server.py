@@ -61,3 +61,31 @@ def test_a_folder_left_by_a_studio_killed_outright_is_removed_by_the_next(
     assert second.get("/api/count?type=UAV")[0] == 200
     assert not left.exists()
     assert running.exists()
+
+
+def test_a_request_cut_off_at_shutdown_is_one_line_not_a_traceback() -> None:
+    import asyncio
+    import logging
+
+    from solver.studio.server import CutOffAtShutdown
+
+    def record(error: BaseException) -> logging.LogRecord:
+        return logging.LogRecord(
+            "uvicorn.error",
+            logging.ERROR,
+            "h11_impl.py",
+            1,
+            "Exception in ASGI application\n",
+            (),
+            (type(error), error, None),
+        )
+
+    cut = record(asyncio.CancelledError("Task cancelled, timeout graceful shutdown exceeded"))
+    assert CutOffAtShutdown().filter(cut)
+    assert (cut.exc_info, cut.getMessage()) == (
+        None,
+        "a request still being answered was cut off: the studio stopped",
+    )
+    fault = record(ValueError("a real fault"))
+    CutOffAtShutdown().filter(fault)
+    assert fault.exc_info is not None  # anything else keeps its traceback
