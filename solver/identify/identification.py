@@ -195,7 +195,7 @@ def identify_urdf(
             urdf=urdf,
             sensor_kinds={d.kind for d in detections},
             srdf_source=Path(srdf_file).name,
-            guess_navigation=packages is None or not packages.conclusive,
+            guess_navigation=packages is None or not packages.complete,
         )
     ]
     if packages is not None:

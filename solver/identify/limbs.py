@@ -112,6 +112,7 @@ _SAME_PLACE = 1e-6
 # least 0.8 as far apart as its hips; a delta's tips, 0.13).
 _MEETING = 0.5
 _MEETING_LEGS = 3
+_MOST_MEETING_LEGS = 8  # parallel robots have three to six arms
 # A biped's leg, known by place alone, hangs nearly straight down in the zero pose.
 _LEG_STRAIGHT = 0.8
 _BIPED_LEGS = 2
@@ -530,8 +531,8 @@ def meeting_tips(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     platform), one manipulator, not legs: a walker's feet stand at least as far apart as its
     hips. Its longest chain is the arm, the others are its linkage."""
     legs = [limb for limb in limbs if limb.kind == "leg"]
-    if len(legs) < _MEETING_LEGS:
-        return limbs
+    if not _MEETING_LEGS <= len(legs) <= _MOST_MEETING_LEGS:
+        return limbs  # a stranger's thousands of chains are not compared pair by pair
     starts = [_start(tree, limb) for limb in legs]
     tips = [tree.poses.place(limb.tip) for limb in legs]
     apart = max(_flat(a, b) for a in starts for b in starts)

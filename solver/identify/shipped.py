@@ -10,7 +10,7 @@ its repository holds). Each control names the file that shows it, the first one 
 order the packages were read (the description's package first).
 
 What the packages ship is the robot's author's word, stronger than a guess: when they were read
-whole (``Workspace.conclusive``), the description's navigation guess is not made
+whole (``Workspace.complete``), the description's navigation guess is not made
 (:func:`solver.identify.motion.controls_from_description`); they ship navigation or they do
 not. When a bound stopped the reading, the guess stays.
 """

@@ -115,14 +115,10 @@ class Workspace:
 
     @property
     def complete(self) -> bool:
+        """Every file was read: what the packages do not ship can be taken as not shipped
+        (even with the description's package alone: of the labelled rows whose repository
+        holds only it, most ship no navigation; measured, docs/identify.md)."""
         return not self.notes
-
-    @property
-    def conclusive(self) -> bool:
-        """What the packages do not ship can be taken as not shipped: every file was read.
-        (Even the description's package alone: of the labelled rows whose repository holds
-        only it, most ship no navigation; measured, docs/identify.md.)"""
-        return self.complete
 
     @property
     def shown_packages(self) -> str:
@@ -193,13 +189,14 @@ def read_workspace(package: str | Path, root: str | Path | None = None) -> Works
     if own is None:
         return None
     packages.update(_walk(top, budget, skip=folder))
-    ordered = _reading_order(own, list(packages.values()))
+    core = _core(own, list(packages.values()))
+    ordered = _reading_order(core, list(packages.values()))
     names = {p.name for p in ordered}
     for each in ordered:
         each.mentions = each.manifest & names
         for path in each.paths:
             _read_into(each, path, top, names, budget)
-    ours = _robots_packages(own, ordered)
+    ours = _robots_packages(core, ordered)
     return Workspace(
         top,
         own.name,
@@ -224,28 +221,33 @@ def _stem(name: str) -> str | None:
     return None
 
 
-def _reading_order(own: _Package, packages: list[_Package]) -> list[_Package]:
-    """The description's package, those named for the robot, those whose package.xml names
-    one of them, then the rest (each group by folder)."""
+def _core(own: _Package, packages: list[_Package]) -> list[_Package]:
+    """The description's package, then those named for the robot (by folder)."""
     stem = _stem(own.name)
-    named = [p for p in packages if p is not own and stem is not None and p.name.startswith(stem)]
-    first = {own.name, *(p.name for p in named)}
-    rest = [p for p in packages if p is not own and p not in named]
+    if stem is None:
+        return [own]
+    return [own, *_by_folder([p for p in packages if p is not own and p.name.startswith(stem)])]
+
+
+def _reading_order(core: list[_Package], packages: list[_Package]) -> list[_Package]:
+    """The robot's core packages (:func:`_core`), those whose package.xml names one of them,
+    then the rest (each group by folder)."""
+    first = {p.name for p in core}
+    chosen = {id(p) for p in core}
+    rest = [p for p in packages if id(p) not in chosen]
     users = [p for p in rest if not first.isdisjoint(p.manifest)]
     others = [p for p in rest if first.isdisjoint(p.manifest)]
-    return [own, *_by_folder(named), *_by_folder(users), *_by_folder(others)]
+    return [*core, *_by_folder(users), *_by_folder(others)]
 
 
 def _by_folder(packages: list[_Package]) -> list[_Package]:
     return sorted(packages, key=lambda p: p.folder)
 
 
-def _robots_packages(own: _Package, packages: list[_Package]) -> list[_Package]:
-    """The description's package and those named for the robot, the packages that use one of
-    them, then the packages one of those uses (names compared as words; a name most packages
-    write, ``robot_description`` the parameter, is no evidence that one is used)."""
-    stem = _stem(own.name)
-    core = [own, *(p for p in packages if stem and p is not own and p.name.startswith(stem))]
+def _robots_packages(core: list[_Package], packages: list[_Package]) -> list[_Package]:
+    """The robot's core packages (:func:`_core`), the packages that use one of them, then the
+    packages one of those uses (names compared as words; a name most packages write,
+    ``robot_description`` the parameter, is no evidence that one is used)."""
     core_names = {p.name for p in core}
     chosen = {id(p) for p in core}
     users = [p for p in packages if id(p) not in chosen and not core_names.isdisjoint(p.mentions)]
@@ -275,9 +277,9 @@ def _walk(start: str, budget: _Budget, skip: str | None = None) -> dict[str, _Pa
             continue
         files, subfolders = _list(folder, budget)
         if "package.xml" in files:
-            manifest = _read(os.path.join(folder, "package.xml"), MAX_MANIFEST_BYTES)
-            found = _NAME.search(manifest or "")
-            if found is not None and manifest is not None:
+            manifest = _text(_read(os.path.join(folder, "package.xml"), MAX_MANIFEST_BYTES))
+            found = _NAME.search(manifest)
+            if found is not None:
                 owner = packages[folder] = _Package(
                     folder, found.group(1), set(_WORD.findall(manifest))
                 )
@@ -333,11 +335,12 @@ def _read_into(owner: _Package, path: str, top: str, names: set[str], budget: _B
     if budget.total >= MAX_TOTAL_BYTES:
         budget.note(f"more than {MAX_TOTAL_BYTES // (1024 * 1024)} MiB of files")
         return
-    text = _read(path, MAX_FILE_BYTES)
-    if text is None:
+    data = _read(path, MAX_FILE_BYTES)
+    if data is None:
         return
     budget.files += 1
-    budget.total += len(text.encode("utf-8", errors="replace"))
+    budget.total += len(data)
+    text = _text(data)
     if path.endswith((".launch", ".xml")):
         text = _uncommented(text)
     owner.mentions.update(names.intersection(_WORD.findall(text)))
@@ -352,8 +355,13 @@ def _regular(path: str) -> bool:
         return False
 
 
-def _read(path: str, limit: int) -> str | None:
-    """At most ``limit`` bytes of the regular file ``path`` as text; None for a link, a FIFO,
+def _text(data: bytes | None) -> str:
+    """Bytes read as UTF-8 text (undecodable bytes replaced); none as empty."""
+    return "" if data is None else data.decode("utf-8", errors="replace")
+
+
+def _read(path: str, limit: int) -> bytes | None:
+    """At most ``limit`` bytes of the regular file ``path``; None for a link, a FIFO,
     a device or a file that cannot be read (none of them is opened: the kind is asked first,
     and the file opened without following a link, waiting or taking a terminal)."""
     if not _regular(path):
@@ -371,7 +379,7 @@ def _read(path: str, limit: int) -> str | None:
         return None
     finally:
         os.close(descriptor)
-    return data.decode("utf-8", errors="replace")
+    return data
 
 
 def _uncommented(text: str) -> str:
