@@ -54,6 +54,7 @@ PROFILE_SECTIONS = frozenset(
         "sensor_types",
         "topics",
         "motion",
+        "body_packages",
     }
 )
 

@@ -83,6 +83,10 @@ _COMMANDED = ("arm", "leg", "other", "spine")
 _WALKING_LEGS = 2
 
 
+# The media the robot's packages may put a body in that are water (solver.identify.shipped).
+_WATER = ("underwater", "surface")
+
+
 @dataclass(frozen=True)
 class Body:
     """The parts found in one robot description, with the evidence for each."""
@@ -129,6 +133,10 @@ class Body:
     vessel_name: tuple[str, ...] = ()
     # Flying known only from a model plugin's parameters (a vehicle plugin of its own).
     flight_hints: tuple[str, ...] = ()
+    # The medium the robot's packages say the body travels in (flight, underwater, surface),
+    # when its description shows no way, and the file that says it (solver.identify.shipped).
+    shipped_as: str = ""
+    shipped_by: str = ""
     finger_motions: int = 0
     # Every moving joint's role and the evidence that decided it.
     roles: tuple[Role, ...] = field(default=(), compare=False)
@@ -156,7 +164,27 @@ class Body:
 
     @property
     def marine(self) -> bool:
-        return bool(self.thrusters or self.marine_plugins or self.water_frames or self.vessel_name)
+        return bool(
+            self.thrusters
+            or self.marine_plugins
+            or self.water_frames
+            or self.vessel_name
+            or self.shipped_as in _WATER
+        )
+
+    @property
+    def travels_no_way(self) -> bool:
+        """Nothing in the description says how the body travels: no wheel, track, caster or
+        drive plugin, no rotor, wing or flight cue, nothing of water, no arm, leg or spine, no
+        gripper or finger (one link and its mesh, a few sensor frames, a camera's pan-tilt)."""
+        return not (
+            self.mobile_base
+            or self.flying
+            or self.marine
+            or self.grippers
+            or self.fingers
+            or any(limb.kind in ("arm", "leg", "spine") for limb in self.limbs)
+        )
 
     @property
     def flying(self) -> bool:
@@ -168,6 +196,7 @@ class Body:
             or self.fixed_rotors
             or self.aero
             or self.flight_hints
+            or self.shipped_as == "flight"
         )
 
     @property
@@ -198,14 +227,16 @@ class Body:
             "floating_base": int(bool(self.floating_base)),
             "weak_base": int(self.weak_base),
             "weak_flight": int(self.weak_flight),
-            "weak_water": int(bool(self.vessel_name)),
+            "weak_water": int(bool(self.vessel_name) or self.shipped_as in _WATER),
             "thrusters": len(self.thrusters),
             "fins": len(self.fins),
             "casters": len(self.casters),
             "finger_motions": self.finger_motions,
             "marine": int(self.marine),
-            "surface": int(bool(self.surface_hints)),
-            "underwater": int(bool(self.underwater_hints or self.water_frames)),
+            "surface": int(bool(self.surface_hints) or self.shipped_as == "surface"),
+            "underwater": int(
+                bool(self.underwater_hints or self.water_frames) or self.shipped_as == "underwater"
+            ),
             "serpentine": int(self.count("spine") > 0),
         }
 
@@ -226,6 +257,8 @@ class Body:
             lines.append(f"wing and control-surface link(s): {_names(self.wings)}")
         if self.flight_hints:
             lines.append(f"flight named in: {_names(self.flight_hints)}")
+        if self.shipped_as == "flight":
+            lines.append(f"a flying body by its packages alone: {self.shipped_by}")
         return lines
 
     def _water(self) -> list[str]:
@@ -236,6 +269,9 @@ class Body:
             lines.append(f"water plugin(s): {_names(self.marine_plugins)}")
         if self.vessel_name:
             lines.append(f"a vessel by its name alone: {_names(self.vessel_name)}")
+        if self.shipped_as in _WATER:
+            where = "below the surface" if self.shipped_as == "underwater" else "at the surface"
+            lines.append(f"in water {where} by its packages alone: {self.shipped_by}")
         if self.surface_hints:
             lines.append(f"floats at the surface: {_names(self.surface_hints)}")
         elif self.underwater_hints:
@@ -247,7 +283,7 @@ class Body:
                 "in water, nothing says below or at the surface: no hydrodynamics or thruster "
                 "plugin, no DVL or pressure sensor, no surface cue"
             )
-        elif self.marine:
+        elif self.marine and not self.shipped_as:
             lines.append(
                 "in water by thruster names alone: no buoyancy or hydrodynamics plugin, "
                 "no thruster plugin, no DVL or pressure sensor"

@@ -63,7 +63,7 @@ from solver.identify.sensors import (
     sensors_from_urdf,
     under_water,
 )
-from solver.identify.shipped import controls_from_workspace
+from solver.identify.shipped import body_from_workspace, controls_from_workspace
 from solver.limits import limit
 from solver.ros.description import TeleopDescription, description_beside, load_description
 from solver.ros.joints import JointStart
@@ -181,6 +181,8 @@ def identify_urdf(
     srdf, srdf_warnings = (None, ()) if srdf_text is None else _srdf(srdf_text, srdf_file, urdf)
     found_warnings = (*urdf.warnings, *srdf_warnings, *warnings)
     body = detect_body(urdf, profile)
+    if packages is not None:
+        body = body_from_workspace(body, packages, profile)
     reading = classify(body, profile, rules, root=urdf.root, srdf=srdf, urdf=urdf)
     detections: list[Detection] = list(sensors_from_urdf(urdf, profile))
     # A body in water that nothing places at the surface dives: its barometer is a depth gauge.

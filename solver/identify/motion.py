@@ -115,8 +115,10 @@ def _flight(body: Body, urdf_source: str) -> _Shown:
         what = f"{len(body.fixed_rotors)} fixed rotor joint(s) of a trimmed model"
     elif body.wings:
         what = f"{len(body.wings)} wing and control-surface link(s)"
-    else:
+    elif body.flight_hints:
         what = f"flight named in {body.flight_hints[0]}"
+    else:
+        what = f"flying by its packages ({body.shipped_by})"
     return [("flight", f"{urdf_source}: {what}")]
 
 

@@ -41,6 +41,7 @@ __all__ = [
     "ROLE_SOURCES",
     "SENSOR_COUNT",
     "SENSOR_TYPE",
+    "VEHICLE_MEDIA",
     "ControlRule",
     "FeatureCondition",
     "NavigationRule",
@@ -186,6 +187,8 @@ _PLUGIN_RULE_KEYS = {"kind", "match"}
 _TOPIC_SENSOR_KEYS = {"kind", "types", "match", "direction"}
 _TOPIC_CONTROL_KEYS = {"control", "types", "match", "direction"}
 _PACKAGE_KEYS = {"control", "match", "not_for"}
+# What the robot's packages may say a body travels in (``body_packages``).
+VEHICLE_MEDIA = ("flight", "underwater", "surface")
 _LIDAR_KEYS = {"single_plane", "multi_plane"}
 
 YPath = tuple[PathPart, ...]
@@ -424,6 +427,8 @@ class Profile:
     simulator_systems: Pattern | None = None
     # Launch, configuration and script texts of the robot's packages -> motion controls.
     package_controls: tuple[PackageRule, ...] = ()
+    # The same texts -> the medium a body travels in, when its description shows no way.
+    body_packages: tuple[tuple[str, Pattern], ...] = ()
 
     def role(self, name: str) -> str:
         """The rule-set characteristic filling role ``name`` (motion_control, ...)."""
@@ -520,6 +525,11 @@ def parse_profile(document: Document) -> Profile:
     velocity_default, by_structure, description = _motion(reader, names)
     navigation = _navigation(reader, description)
     package_controls = _package_rules(reader, names)
+    body_packages = (
+        _patterns(reader, ("body_packages",), VEHICLE_MEDIA, "medium")
+        if reader.get(("body_packages",)) is not None
+        else ()
+    )
     if reader.faults:
         raise ProfileError(reader.faults)
     text = repr(document.data).encode("utf-8")
@@ -546,6 +556,7 @@ def parse_profile(document: Document) -> Profile:
         navigation,
         systems,
         package_controls,
+        body_packages,
     )
 
 

@@ -9,6 +9,12 @@ Effector). A rule may exclude structures (no navigation for an arm bolted to a t
 its repository holds). Each control names the file that shows it, the first one found in the
 order the packages were read (the description's package first).
 
+The same texts say what a body travels in when its description shows no way at all (one link
+and its mesh, a few sensor frames: a drone a simulator poses, an AUV drawn for RViz): the
+profile's ``body_packages`` words (a take-off command, a flight stack; a submersible's or a
+surface craft's words) found in the robot's packages fly it or put it in water, with doubt
+(:func:`body_from_workspace`). Packages of two kinds of vehicle say nothing.
+
 What the packages ship is the robot's author's word, stronger than a guess: when they were read
 whole (``Workspace.complete``), the description's navigation guess is not made
 (:func:`solver.identify.motion.controls_from_description`); they ship navigation or they do
@@ -17,12 +23,16 @@ not. When a bound stopped the reading, the guess stays.
 
 from __future__ import annotations
 
+import string
+from dataclasses import replace
+
+from solver.identify.body import Body
 from solver.identify.interfaces import Control
 from solver.identify.profile import VELOCITY, Profile
 from solver.identify.readers.workspace import Workspace
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
-__all__ = ["controls_from_workspace"]
+__all__ = ["body_from_workspace", "controls_from_workspace"]
 
 
 def controls_from_workspace(
@@ -39,8 +49,37 @@ def controls_from_workspace(
         for shipped in workspace.files:
             matched = rule.match.find(shipped.text)
             if matched is not None:
-                where = shown(shipped.path, limit=SHOWN_FILE_NAME_CHARS)
-                package = shown(shipped.package)
-                found[control] = f"package {package}: {where} ({shown(matched)})"
+                found[control] = _shown_file(shipped.package, shipped.path, matched)
                 break
     return tuple(Control(control, source) for control, source in found.items())
+
+
+def body_from_workspace(body: Body, workspace: Workspace, profile: Profile) -> Body:
+    """``body`` travelling in the medium the robot's packages name, when its description shows
+    no way of travelling (:attr:`Body.travels_no_way`) and the packages name one medium only
+    (a repository of drones and boats says nothing of this one)."""
+    if not body.travels_no_way:
+        return body
+    said: dict[str, str] = {}
+    for medium, pattern in profile.body_packages:
+        for shipped in workspace.files:
+            matched = pattern.find(shipped.text)
+            if matched is not None:
+                said[medium] = _shown_file(shipped.package, shipped.path, matched)
+                break
+    if len(said) != 1:
+        return body
+    ((medium, evidence),) = said.items()
+    return replace(body, shipped_as=medium, shipped_by=evidence)
+
+
+def _shown_file(package: str, path: str, matched: str) -> str:
+    """A file of the robot's packages and the text found in it (without the characters that
+    bound a word: ``'takeoff`` is ``takeoff``), as evidence shows them."""
+    where = shown(path, limit=SHOWN_FILE_NAME_CHARS)
+    word = matched.strip(_BOUNDS) or matched
+    return f"package {shown(package)}: {where} ({shown(word)})"
+
+
+# What a pattern's word boundary matches around the word (a quote, a slash, a space).
+_BOUNDS = string.punctuation.replace("_", "") + string.whitespace

@@ -56,6 +56,7 @@ __all__ = [
 _ROTATING = ("continuous", "revolute")
 # A plugin that sets a body's twist in space (Gazebo Sim's VelocityControl), air or ground alike.
 _VELOCITY_CONTROL = re.compile(r"velocity[_-]?control", re.IGNORECASE)
+_PLANAR_MOVE = re.compile(r"planar[_-]?move", re.IGNORECASE)
 _GPS = re.compile(r"gps|navsat|gnss", re.IGNORECASE)
 # Buoyancy over weight a hull floats with: a surface hull carries a reserve (measured on the
 # development part: 1.2 to 12.5); a submersible is trimmed a hair above neutral (1.01, so it
@@ -336,6 +337,14 @@ def vessel_name(tree: JointTree, roles: dict[str, Role], limbs: Sequence[Limb]) 
     return (f"robot name {tree.urdf.name}",)
 
 
+def _pushes(tree: JointTree, label: str) -> bool:
+    """A drive plugin that sets a wheelless body's velocity wherever it is: a velocity control,
+    or a planar move on a body gravity does not pull (a drone a simulator holds at its height)."""
+    return bool(
+        _VELOCITY_CONTROL.search(label) or (tree.urdf.gravity_off and _PLANAR_MOVE.search(label))
+    )
+
+
 def _travels_no_way_read(
     tree: JointTree, roles: dict[str, Role], limbs: Sequence[Limb], *, pushed: bool = False
 ) -> bool:
@@ -343,11 +352,12 @@ def _travels_no_way_read(
     arm, no gripper (a gripper named for its use is a gripper), no plugin that moves it, flies
     it or puts it in water. ``pushed``: a velocity-control plugin on a body with no wheel,
     caster or track (it sets the body's twist, in the air as on the ground) says nothing of
-    where it travels either; a planar-move or drive plugin does."""
+    where it travels either, nor a planar move on a body with gravity off (a simulator's drone
+    held at its height); a drive plugin, or a planar move on a body gravity pulls, does."""
     moves = {"wheel", "caster", "rotor", "thruster", "gripper"} & {r.role for r in roles.values()}
     if moves or tracks(tree) or any(limb.kind in ("arm", "leg") for limb in limbs):
         return False
     drives = tree.labels("drive")
-    if drives and not (pushed and all(_VELOCITY_CONTROL.search(label) for label in drives)):
+    if drives and not (pushed and all(_pushes(tree, label) for label in drives)):
         return False
     return not any(tree.labels(part) for part in ("flight", "marine", "thruster"))

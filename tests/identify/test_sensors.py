@@ -243,6 +243,12 @@ def test_sensors_count_by_physical_device() -> None:
     }
 
 
+def test_a_wind_sensor_plugin_is_an_anemometer() -> None:
+    robot = builders.surface_vessel()
+    robot.add(builders.model_plugin("wind_sensor", "libWindSensorPlugin.so"))
+    assert _kinds(robot.text())["anemometer"] == 1
+
+
 def test_a_stereo_pair_declared_as_two_cameras_is_one_stereo_camera() -> None:
     robot = builders.ugv()
     for side in ("l", "r"):

@@ -8,8 +8,16 @@ import pytest
 
 from solver.identify import identify, load_profile
 from solver.identify.readers.workspace import ShippedFile, Workspace
-from solver.identify.shipped import controls_from_workspace
-from tests.identify.builders import LASER, RobotText, manipulator, quadrotor, ugv
+from solver.identify.shipped import body_from_workspace, controls_from_workspace
+from tests.identify.builders import (
+    LASER,
+    RobotText,
+    manipulator,
+    pan_tilt_only,
+    parallel_gripper,
+    quadrotor,
+    ugv,
+)
 
 PROFILE = load_profile()
 
@@ -184,3 +192,66 @@ def test_a_package_named_that_holds_no_package_is_said_in_a_note(tmp_path: Path)
     assert result.notes == (
         f"package {tmp_path}: no package.xml names a package there; none is read",
     )
+
+
+def one_link(name: str = "vehicle") -> RobotText:
+    """A body exported as one link and its mesh, a camera frame on it."""
+    robot = RobotText(name)
+    robot.fixed(robot.root, "camera_link")
+    return robot
+
+
+def read_with(tmp_path: Path, robot: RobotText, bringup: str) -> tuple[str, tuple[str, ...]]:
+    result = identify(described(tmp_path, robot, bringup))
+    return result.structure, result.evidence
+
+
+def test_a_body_that_shows_no_way_of_travelling_flies_when_its_packages_take_off(
+    tmp_path: Path,
+) -> None:
+    structure, evidence = read_with(tmp_path, one_link(), "rospy.ServiceProxy('takeoff')")
+    assert structure == "UAV"
+    assert (
+        "a flying body by its packages alone: package rover_bringup: "
+        "rover_bringup/launch/bringup.launch (takeoff)"
+    ) in evidence
+
+
+def test_a_body_that_shows_no_way_of_travelling_dives_when_its_packages_are_an_auvs(
+    tmp_path: Path,
+) -> None:
+    structure, _ = read_with(tmp_path, one_link(), "<node pkg='auv_control' type='depth'/>")
+    assert structure == "Underwater Vehicle"
+
+
+def test_a_body_that_shows_no_way_of_travelling_floats_when_its_packages_are_a_boats(
+    tmp_path: Path,
+) -> None:
+    structure, _ = read_with(tmp_path, one_link(), "<node pkg='boat_control'/>")
+    assert structure == "Surface Vessel"
+
+
+def test_read_alone_the_same_body_is_nothing_in_particular(tmp_path: Path) -> None:
+    path = described(tmp_path, one_link(), "rospy.ServiceProxy('takeoff')")
+    assert identify(path, look_around=False).structure == "Other"
+
+
+def test_packages_of_two_kinds_of_vehicle_say_nothing_of_this_one(tmp_path: Path) -> None:
+    structure, _ = read_with(tmp_path, one_link(), "takeoff(); rov_pilot")
+    assert structure == "Other"
+
+
+def test_a_body_whose_description_shows_how_it_travels_keeps_its_reading() -> None:
+    """A rover in a repository of drones is a rover; an arm, a gripper, a pan-tilt stay."""
+    from solver.identify.body import detect_body
+    from solver.identify.readers.urdf import parse_urdf
+
+    packages = shipping("takeoff()")
+    for robot, moves in ((rover_with_a_lidar(), False), (manipulator(), False)):
+        body = detect_body(parse_urdf(robot.text(), "r.urdf"), PROFILE)
+        assert body_from_workspace(body, packages, PROFILE) is body
+        assert body.travels_no_way is moves
+    gripper = detect_body(parse_urdf(parallel_gripper().text(), "g.urdf"), PROFILE)
+    assert not gripper.travels_no_way
+    pan_tilt = detect_body(parse_urdf(pan_tilt_only().text(), "p.urdf"), PROFILE)
+    assert body_from_workspace(pan_tilt, packages, PROFILE).shipped_as == "flight"

@@ -650,6 +650,30 @@ def test_a_drone_a_velocity_plugin_pushes_flies_by_its_name_and_a_wheeled_one_ro
     assert identify_urdf(drone.text()).structure == "UGV"
 
 
+def test_a_drone_named_so_that_a_planar_move_plugin_holds_with_gravity_off_flies() -> None:
+    """A simulator's kinematic drone: gravity off, a planar-move plugin on cmd_vel."""
+    drone = RobotText("uav")
+    drone.fixed(drone.root, "camera_link")
+    drone.add(builders.model_plugin("move", "libgazebo_ros_planar_move.so"))
+    assert identify_urdf(drone.text()).structure == "UGV"  # gravity pulls it: it rolls
+    drone.add("<gazebo><turnGravityOff>true</turnGravityOff></gazebo>")
+    assert identify_urdf(drone.text()).structure == "UAV"
+    drone.name = "carrier"
+    assert identify_urdf(drone.text()).structure == "UGV"
+
+
+def test_propellers_named_in_spanish_or_portuguese_are_an_rovs_thrusters() -> None:
+    """``hélice`` is a propeller: six of them spinning on a body named as an ROV dive it."""
+    rov = RobotText("rov_simulation")
+    for i in range(6):
+        housing = rov.fixed(rov.root, f"truster_{i}")
+        rov.joint(f"truster_{i}_to_helice", "continuous", housing, f"helice_{i}")
+    result = identify_urdf(rov.text())
+    assert result.structure == "Underwater Vehicle"
+    assert result.body is not None
+    assert not result.body.wheels
+
+
 def test_a_robot_named_as_a_submersible_that_shows_no_way_of_travelling_dives_with_doubt() -> None:
     rov = RobotText("rov_model_urdf")
     rov.fixed(rov.root, "camera_link")

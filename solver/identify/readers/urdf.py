@@ -221,6 +221,9 @@ class Urdf:
     tags: frozenset[str] = frozenset()
     # Gazebo models the description includes (a GPS model, a camera model), in document order.
     models: tuple[ModelInclude, ...] = ()
+    # A <gazebo> block turns gravity off (<turnGravityOff>true, <gravity>false): a body the
+    # simulator holds in the air (a kinematic drone) or in water.
+    gravity_off: bool = False
 
     @cached_property
     def _children(self) -> dict[str, tuple[Joint, ...]]:
@@ -410,6 +413,7 @@ class _Builder:
             _command_interfaces(root),
             _tags(root),
             models,
+            _gravity_off(root),
         )
 
     def _links(self, elements: list[etree._Element]) -> dict[str, Link]:
@@ -830,6 +834,20 @@ def _tags(root: etree._Element) -> frozenset[str]:
         if isinstance(element.tag, str) and element not in inside and len(found) < _MAX_TAGS:
             found.add(element.tag.rsplit("}", 1)[-1].lower())
     return frozenset(found)
+
+
+def _gravity_off(root: etree._Element) -> bool:
+    """A ``<gazebo>`` block of the description turns gravity off for its links: Gazebo
+    Classic's ``<turnGravityOff>true`` or ``<gravity>`` false (``0``, ``false``)."""
+    for block in root.iterchildren("gazebo"):
+        for element in block.iterchildren(*_GRAVITY_OFF):
+            if (element.text or "").strip().lower() in _GRAVITY_OFF[element.tag]:
+                return True
+    return False
+
+
+# The Gazebo flags that turn gravity off, and the texts that do.
+_GRAVITY_OFF = {"turnGravityOff": ("1", "true"), "gravity": ("0", "false")}
 
 
 def _legacy(element: etree._Element, kind: str) -> bool:

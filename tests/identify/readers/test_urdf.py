@@ -182,3 +182,18 @@ def test_the_links_fixed_below_a_link_stop_at_every_joint_that_moves() -> None:
     assert sorted(urdf.fixed_below(robot.root)) == ["hub", "tyre"]
     assert list(urdf.fixed_below(spoke)) == ["cap"]
     assert list(urdf.fixed_below("tyre")) == []
+
+
+@pytest.mark.parametrize(
+    ("block", "off"),
+    [
+        ("<turnGravityOff>true</turnGravityOff>", True),
+        ("<gravity>0</gravity>", True),
+        ("<gravity>false</gravity>", True),
+        ("<turnGravityOff>false</turnGravityOff>", False),
+        ("<gravity>true</gravity>", False),
+    ],
+)
+def test_a_gazebo_block_that_turns_gravity_off_is_read(block: str, off: bool) -> None:
+    text = f'<robot name="r"><link name="a"/><gazebo reference="a">{block}</gazebo></robot>'
+    assert parse_urdf(text, "r.urdf").gravity_off is off
