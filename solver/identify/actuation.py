@@ -31,7 +31,7 @@ from collections.abc import Iterator, Mapping
 
 from solver.identify.hands import gripper_closure, jaws
 from solver.identify.limbs import moved_by, nearest_above, points_a_sensor
-from solver.identify.pose import local_axis, parallel, spread
+from solver.identify.pose import Vector, local_axis, parallel, spread
 from solver.identify.readers.urdf import Joint
 from solver.identify.roles import POSED, Role, main_axis
 from solver.identify.tree import JointTree
@@ -395,8 +395,9 @@ def _unnamed_rotors(tree: JointTree, taken: set[str]) -> list[str]:
     a level axle, a caster's swivel carries its wheel, a spinning lidar is one."""
     around: dict[str | None, list[Joint]] = {}
     known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
+    turning: dict[str, str | None] = {}  # link -> the nearest joint above it that turns
     for joint in (*_unnamed_spinners(tree, taken), *_motor_leaves(tree, taken)):
-        if joint.child not in tree.moving_below and _upright(local_axis(joint)):
+        if joint.child not in tree.moving_below and _upright(_resting_axis(tree, joint, turning)):
             around.setdefault(moved_by(tree.urdf, joint.parent, known), []).append(joint)
     found: list[str] = []
     for carrier, joints in around.items():
@@ -429,14 +430,19 @@ def _wheel_candidates(
             continue
         if joint.origin[2] < 0:
             below.setdefault(joint.parent, []).append(joint)
-        elif _axle(local_axis(joint)) or (
-            # On a link fixed to the body or sliding on it (a wheel-drop suspension, its frame
-            # turned to slide along its own axis), the axle is read in the body's frame too.
-            nearest_above(tree.urdf, joint.parent, known, _turns) is None
-            and _axle(tree.poses.axis(joint))
-        ):
+        elif _axle(_resting_axis(tree, joint, known)):
             level.setdefault(joint.parent, []).append(joint)
     return below, level
+
+
+def _resting_axis(tree: JointTree, joint: Joint, known: dict[str, str | None]) -> Vector:
+    """``joint``'s axis as the body carries it: in the body's frame when nothing that turns is
+    above it (a link fixed to the body or sliding on it: a motor mount tipped upright, a
+    wheel-drop suspension's frame turned to slide along its own axis), else in its parent's
+    frame (a leg's or a steering link's rest pose says nothing of the axle's)."""
+    if nearest_above(tree.urdf, joint.parent, known, _turns) is None:
+        return tree.poses.axis(joint)
+    return local_axis(joint)
 
 
 def _turns(joint: Joint) -> bool:

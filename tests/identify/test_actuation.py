@@ -516,6 +516,20 @@ def test_unnamed_rotors_each_on_an_arm_fixed_to_the_frame_are_all_round_one_body
     assert (result.structure, len(result.body.rotors)) == ("UAV", 4)
 
 
+def test_unnamed_rotors_on_motor_mounts_tipped_upright_turn_about_upright_axes() -> None:
+    """A frame's motor mounts turned a quarter about y (their x upright), each spinning its
+    leaf about its own x: upright in the body's frame, so rotors, not wheels on level axles."""
+    robot = RobotText("r")
+    for i, (x, y) in enumerate(((0.2, 0.2), (0.2, -0.2), (-0.2, 0.2), (-0.2, -0.2))):
+        mount = builders.placed(
+            robot, f"m{i}", "fixed", robot.root, f"mount{i}", xyz=f"{x} {y} 0", rpy="0 -1.5708 0"
+        )
+        builders.placed(robot, f"s{i}", "continuous", mount, f"p{i}", xyz="0.01 0 0", axis="1 0 0")
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert (result.structure, len(result.body.rotors), result.body.wheels) == ("UAV", 4, ())
+
+
 def revolute_rotors(bound: str, name: str = "s") -> RobotText:
     """Four revolute leaves ``<name><i>`` on upright axes all round a body, limited to
     +-``bound``."""
