@@ -243,8 +243,9 @@ class Station:
 
     def look(self, robot: str, *, announcements: bool) -> tuple[tuple[str, ...], dict[str, Any]]:
         """The robots on the graph and the ``/teleop_ui`` parameters, once ``robot`` is there
-        (and, with ``announcements``, a watcher has announced itself), or once the graph has
-        been quiet for :data:`LOOK_QUIET` seconds (at most :data:`LOOK_LIMIT`)."""
+        (and, with ``announcements``, a watcher that announced its rule set is seen running), or
+        once the graph has been quiet for :data:`LOOK_QUIET` seconds (at most
+        :data:`LOOK_LIMIT`)."""
         start = quiet_since = time.monotonic()
         seen: Any = None
         while True:
@@ -253,15 +254,26 @@ class Station:
             self._graph_changed = False
             robots = robot_namespaces(observation.param_names)
             params = dict(observation.params)
-            if robot in robots and (not announcements or params.get(ANNOUNCEMENTS)):
+            # A watcher's announcement may come before its answer's writer is discovered
+            # (a busy machine): it counts once that watcher is seen running.
+            running = self._running_announcers(params) if announcements else ()
+            if robot in robots and (not announcements or running):
                 return robots, params
             now = time.monotonic()
-            state = (robots, sorted(map(str, _mapping(params.get(ANNOUNCEMENTS)))))
+            state = (robots, sorted(map(str, _mapping(params.get(ANNOUNCEMENTS)))), running)
             if state != seen:
                 seen, quiet_since = state, now
             elif now - quiet_since >= LOOK_QUIET or now - start >= LOOK_LIMIT:
                 return robots, params
             self._woken.wait(POLL)
+
+    def _running_announcers(self, params: Mapping[str, Any]) -> tuple[str, ...]:
+        """The watchers that announce a rule set in ``params`` and are seen running."""
+        return tuple(
+            a.watcher
+            for a in announcements(params)
+            if a.rules is not None and self._runs(a.watcher)
+        )
 
     def announced_rules(self, params: Mapping[str, Any]) -> tuple[RuleSet | None, str]:
         """The rule set the graph's running watchers announce, and how it is known (or why
