@@ -62,15 +62,11 @@ def _jaw_pairs(tree: JointTree, taken: set[str]) -> dict[str, str]:
     motions = [joint.name for joint in tree.urdf.joints if joint.movable]
     found: dict[str, str] = {}
     for link, pair in by_parent.items():
-        if (
-            len(pair) != 2
-            or not _side_by_side(pair)
-            or any(_named_otherwise(tree, j.name) for j in pair)
-        ):
+        if len(pair) != 2 or any(_named_otherwise(tree, j.name) for j in pair):
             continue
-        if _ends_a_chain(tree, link):
+        if _ends_a_chain(tree, link) and (_side_by_side(pair) or _twins(pair)):
             why = f"one of two jaws side by side at the end of a chain ({link})"
-        elif _only_motions(tree, pair, motions):
+        elif _side_by_side(pair) and _only_motions(tree, pair, motions):
             why = f"one of two jaws side by side, the body's only motions ({link})"
         else:
             continue
@@ -108,6 +104,33 @@ def _side_by_side(pair: list[Joint]) -> bool:
     return (
         one.type == other.type and parallel(local_axis(one), local_axis(other)) and sum(apart) <= 1
     )
+
+
+def _twins(pair: list[Joint]) -> bool:
+    """Two hinges that mirror each other: about one line, turning opposite ways over the same
+    travel (opposite axes and the same limits, or one axis and opposite limits), a CAD export's
+    jaws placed apart along and across their axes, closing toward each other. At the end of a
+    chain, a gripper's jaws. Not two slides (a snake's last module pushes two pads out), nor
+    two hinges that turn alike or over a travel symmetric about zero (wheels, say)."""
+    one, other = pair
+    travel, mirror = _travel(one), _travel(other)
+    if not (one.type == other.type == "revolute" and travel and mirror):
+        return False
+    if abs(travel[0] + travel[1]) <= _SAME:
+        return False  # a travel symmetric about zero mirrors itself: it says nothing
+    axis, other_axis = local_axis(one), local_axis(other)
+    if not parallel(axis, other_axis):
+        return False
+    if sum(a * b for a, b in zip(axis, other_axis, strict=True)) > 0:
+        mirror = (-mirror[1], -mirror[0])  # about one axis: a mirror turns the other way
+    return abs(travel[0] - mirror[0]) <= _SAME and abs(travel[1] - mirror[1]) <= _SAME
+
+
+def _travel(joint: Joint) -> tuple[float, float] | None:
+    """A hinge's limits (lower, upper), or None when it has none written."""
+    if joint.lower is None or joint.upper is None:
+        return None
+    return joint.lower, joint.upper
 
 
 def _ends_a_chain(tree: JointTree, link: str) -> bool:

@@ -558,7 +558,9 @@ def _at_corners(tree: JointTree, base: str, group: list[Limb]) -> bool:
     if placed is None:
         return False
     centre = tree.poses.place(base)
-    return _mirrored_corners([(s[0] - centre[0], s[1] - centre[1]) for s, _ in placed])
+    corners = [(s[0] - centre[0], s[1] - centre[1]) for s, _ in placed]
+    # Facing x, or facing y (a body drawn with its length along y, left and right along x).
+    return _mirrored_corners(corners) or _mirrored_corners([(y, x) for x, y in corners])
 
 
 def _mirrored_corners(starts: list[tuple[float, float]]) -> bool:

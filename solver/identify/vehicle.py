@@ -203,8 +203,24 @@ def surface_hints(tree: JointTree, *, thrusters: bool = False) -> tuple[str, ...
             )
     hints += _floating_hull(tree)
     if not hints and not underwater_hints(tree) and not water_frames(tree):
-        hints += _above_water_sensors(tree)
+        hints += _nothing_dives(tree)
     return tuple(dict.fromkeys(hints))
+
+
+def _nothing_dives(tree: JointTree) -> list[str]:
+    """A body in water that nothing places below or at the surface: a GPS or a lidar on it
+    says above water; with no water plugin at all, its thrusters alone do (nothing dives it)."""
+    found = _above_water_sensors(tree)
+    if not found and not any(tree.reader.plugins_of(p) for p in _WATER_PLUGINS):
+        found = [_THRUSTERS_ALONE]
+    return found
+
+
+# In water by its thrusters alone (their names, or screws by place), with no water plugin, no
+# sensor or frame of a diver, no name: nothing makes the body dive, so it floats (a hull with a
+# pair of thrusters, as every such labelled row of the development part is).
+_THRUSTERS_ALONE = "thrusters alone (no water plugin, DVL or depth gauge)"
+_WATER_PLUGINS = ("marine", "thruster", "underwater")
 
 
 def _water_level(tag: str, text: str) -> bool:

@@ -125,7 +125,7 @@ def test_unnamed_spinners_side_by_side_below_a_hull_turning_along_it_are_its_scr
     result = identify_urdf(twin_screws().text())
     assert result.body is not None
     assert (result.body.wheels, result.body.thrusters) == ((), ("m0", "m1"))
-    assert result.structure == "Underwater Vehicle"  # in water, nothing says where
+    assert result.structure == "Surface Vessel"  # in water by its screws: nothing dives it
     assert identify_urdf(twin_screws(gps=True).text()).structure == "Surface Vessel"
 
 

@@ -205,6 +205,35 @@ def sliding_jaws(*, third: bool = False) -> RobotText:
     return robot
 
 
+def cad_arm(jaw_axes: tuple[str, str], limits: tuple[float, float]) -> RobotText:
+    """A five-joint arm on a world link whose last link carries two hinges placed apart along
+    and across their axes, about ``jaw_axes`` over ``limits`` (a CAD export's jaws)."""
+    robot = RobotText("arm", root="world")
+    tip = robot.chain(robot.root, [f"joint{i}" for i in range(1, 6)])
+    lower, upper = limits
+    for name, axis, xyz in (
+        ("6a", jaw_axes[0], "-0.005 -0.015 0.035"),
+        ("6b", jaw_axes[1], "0.005 0.01 0.035"),
+    ):
+        robot.joint(
+            f"joint{name}",
+            "revolute",
+            tip,
+            f"link{name}",
+            f'<origin xyz="{xyz}"/><axis xyz="{axis}"/>'
+            f'<limit lower="{lower}" upper="{upper}" effort="1" velocity="1"/>',
+        )
+    return robot
+
+
+def test_two_hinges_mirroring_each_other_at_the_end_of_an_arm_are_its_jaws() -> None:
+    result = identify_urdf(cad_arm(("0 -1 0", "0 1 0"), (-1.3, 1.135)).text())
+    assert (result.structure, result.body and result.body.grippers) == ("Manipulator", 1)
+    # Two hinges that turn alike, or over a travel symmetric about zero, mirror nothing.
+    for axes, limits in ((("0 1 0", "0 1 0"), (-1.3, 1.135)), (("0 -1 0", "0 1 0"), (-1.0, 1.0))):
+        assert identify_urdf(cad_arm(axes, limits).text()).structure != "Manipulator"
+
+
 def test_two_alike_jaws_that_are_a_bodys_only_motions_are_a_gripper_on_its_own() -> None:
     result = identify_urdf(sliding_jaws().text())
     assert result.structure == "Gripper"

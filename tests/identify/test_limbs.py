@@ -788,11 +788,13 @@ def test_two_mirrored_chains_are_no_arms_without_a_bipeds_legs_below_them() -> N
     assert "arm" not in [limb.kind for limb in result.body.limbs]
 
 
-def folded_quadruped(*, tracked: bool = False) -> RobotText:
+def folded_quadruped(*, tracked: bool = False, facing_y: bool = False) -> RobotText:
     """Four unnamed three-joint chains at the corners of a body, each folded flat in the zero
-    pose (the tip back level with the hip); ``tracked`` adds a tracked-vehicle plugin."""
+    pose (the tip back level with the hip); ``tracked`` adds a tracked-vehicle plugin;
+    ``facing_y`` draws the body with its length along y (left and right along x)."""
     robot = RobotText("r")
-    for i, (x, y) in enumerate(((0.3, 0.1), (0.3, -0.1), (-0.3, 0.1), (-0.3, -0.1))):
+    corners = ((0.3, 0.1), (0.3, -0.1), (-0.3, 0.1), (-0.3, -0.1))
+    for i, (x, y) in enumerate((y, x) for x, y in corners) if facing_y else enumerate(corners):
         placed_chain(
             robot,
             robot.root,
@@ -812,10 +814,21 @@ def test_alike_chains_starting_in_mirrored_pairs_at_a_bodys_corners_are_legs_how
     assert result.structure == "Quadruped"
     assert result.body is not None
     assert "corners" in result.body.limbs[0].why
+    # The same body drawn with its length along y stands on the same legs.
+    assert identify_urdf(folded_quadruped(facing_y=True).text()).structure == "Quadruped"
     # On a body tracks move, chains at its corners are flippers, not legs.
     tracked = identify_urdf(folded_quadruped(tracked=True).text())
     assert tracked.body is not None
     assert "leg" not in [limb.kind for limb in tracked.body.limbs]
+
+
+def test_a_hexapods_coxa_femur_and_tibia_abbreviated_are_leg_names() -> None:
+    leg = load_profile().pattern("leg")
+    assert leg is not None
+    for name in ("R_M_COX_joint", "L_F_FEM_link", "r3/tib", "coxa_2"):
+        assert leg.search(name), name
+    for name in ("female_connector", "tibet_camera", "box_link"):
+        assert not leg.search(name), name
 
 
 def test_corner_named_chains_on_a_body_tracks_move_are_flippers_not_legs() -> None:

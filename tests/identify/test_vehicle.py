@@ -89,15 +89,21 @@ def thrusters_by_name() -> RobotText:
     return robot
 
 
-def test_a_body_in_water_by_thruster_names_alone_is_underwater_with_doubt() -> None:
+def test_a_body_in_water_by_thruster_names_alone_floats() -> None:
+    """Nothing makes it dive (no water plugin, no DVL or depth gauge, no submersible's name):
+    a hull with thrusters, as every such labelled row of the development part is."""
     result = identify_urdf(thrusters_by_name().text())
-    assert result.structure == "Underwater Vehicle"
-    assert result.confidence == pytest.approx(0.85 * 0.8, abs=0.01)
+    assert result.structure == "Surface Vessel"
     assert (
-        "in water by thruster names alone: no buoyancy or hydrodynamics plugin, "
-        "no thruster plugin, no DVL or pressure sensor"
-    ) in result.evidence
-    assert "doubt: a typical Underwater Vehicle has underwater" in result.evidence
+        "floats at the surface: thrusters alone (no water plugin, DVL or depth gauge)"
+        in result.evidence
+    )
+    diver = thrusters_by_name()
+    diver.fixed(diver.root, "dvl_link")
+    assert identify_urdf(diver.text()).structure == "Underwater Vehicle"
+    rov = thrusters_by_name()
+    rov.name = "rov"
+    assert identify_urdf(rov.text()).structure == "Underwater Vehicle"
 
 
 def hull_of_fixed_thrusters(count: int = 6, *, under_a_joint: bool = False) -> RobotText:
@@ -113,10 +119,9 @@ def hull_of_fixed_thrusters(count: int = 6, *, under_a_joint: bool = False) -> R
     return robot
 
 
-def test_thruster_links_fixed_to_a_pushed_hull_put_it_in_water_with_doubt() -> None:
+def test_thruster_links_fixed_to_a_pushed_hull_put_it_in_water() -> None:
     result = identify_urdf(hull_of_fixed_thrusters().text())
-    assert result.structure == "Underwater Vehicle"
-    assert result.confidence == pytest.approx(0.85 * 0.8, abs=0.01)
+    assert result.structure == "Surface Vessel"  # nothing makes it dive
     assert any("thruster_0 (fixed)" in line for line in result.evidence)
     assert "Driving" in {c.motion_control for c in result.motion_controls}
 
@@ -154,7 +159,9 @@ def test_a_water_plugins_surface_of_numbers_is_where_the_water_lies_not_a_floati
 def test_a_gps_frame_a_joint_moves_says_nothing_of_the_surface() -> None:
     boat = hull_of_fixed_thrusters(2)
     boat.fixed(boat.chain(boat.root, ["mast"]), "gps_frame")
-    assert identify_urdf(boat.text()).structure == "Underwater Vehicle"
+    result = identify_urdf(boat.text())
+    assert result.body is not None
+    assert not any("gps_frame" in hint for hint in result.body.surface_hints)
 
 
 def test_one_fixed_thruster_link_or_ones_a_joint_moves_say_nothing_of_water() -> None:
@@ -426,7 +433,7 @@ def test_thruster_leaves_under_a_deep_fixed_chain_are_placed_in_one_walk() -> No
     for i in range(20_000):
         robot.fixed(parent, f"thruster_{i}")
     result = identify_urdf(robot.text())
-    assert result.structure == "Underwater Vehicle"
+    assert result.structure == "Surface Vessel"
 
 
 def dvl_arm(frame: str = "dvl_link") -> RobotText:
