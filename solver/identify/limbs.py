@@ -78,6 +78,8 @@ _TURNING = ("revolute", "continuous")
 # A wrist turns a hand about up to three axes, its joints named so.
 _WRIST_JOINTS = 3
 _WRIST = re.compile("wrist", re.IGNORECASE)
+# A camera's frame by its name (camera_link, cam_1, gimbal_camera).
+_CAMERA = re.compile(r"camera|(^|[_/])cam([_/\d]|$)", re.IGNORECASE)
 LIMB_KINDS = ("leg", "arm", "head")
 # An unnamed pair of chains on the root this long, beside named arms higher up, are legs.
 _LEG_BY_PLACE_JOINTS = 5
@@ -1073,6 +1075,17 @@ def _classify(
     # Degrees of freedom, not joints: a ball-joint shoulder moves like three hinges.
     length = sum(3 if j.type == "spherical" else 1 for j in chain)
     kind, why = _named_kind(tree, scores, length, gripper)
+    if (
+        not gripper
+        and length <= tree.profile.limb("head_max_joints")
+        and _CAMERA.search(chain[-1].child)
+    ):
+        # A camera's own frame turned by the chain's last joint: a gimbal, whatever the chain
+        # is named (a drone's gimbal arms); an arm's camera hangs fixed below its wrist.
+        why = (
+            f"its last joint turns a camera's frame ({chain[-1].child}): a gimbal or pan/tilt unit"
+        )
+        return Limb("head", names, base, tip, gripper, named, why)
     if mounted:
         if mounted == ["wheel"] and kind == "leg":
             return Limb("wheel_leg", names, base, tip, gripper, named, f"{why}, on a wheel")

@@ -316,6 +316,23 @@ def test_front_and_rear_hips_turning_about_one_line_along_the_body_are_two_legs(
     assert result.structure == "Quadruped"
 
 
+def test_a_chain_whose_last_joint_turns_a_cameras_frame_is_a_gimbal_whatever_its_names() -> None:
+    """A drone's gimbal whose joints are named as arms (arm_one, arm_two), its last joint
+    turning the camera's own frame: a head, so the drone is no aerial manipulator."""
+    drone = builders.quadrotor()
+    first = drone.joint("arm_one_joint", "continuous", drone.root, "arm_one_link")
+    second = drone.joint("arm_two_joint", "continuous", first, "arm_two_link")
+    drone.joint("camera_joint", "continuous", second, "camera_link")
+    result = identify_urdf(drone.text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["head"]
+    assert result.structure == "UAV"
+    # An arm whose camera hangs fixed below its wrist is still an arm.
+    arm = builders.manipulator()
+    arm.fixed(arm.links[-1], "camera_link")
+    assert identify_urdf(arm.text()).structure == "Manipulator"
+
+
 def test_a_short_unnamed_chain_carrying_a_camera_is_a_head() -> None:
     robot = builders.ugv()
     tip = robot.chain(robot.root, ["j1", "j2"])
