@@ -848,6 +848,16 @@ def test_a_hexapods_coxa_femur_and_tibia_abbreviated_are_leg_names() -> None:
         assert not leg.search(name), name
 
 
+def test_a_continuous_track_plugin_moves_a_body_on_tracks_too() -> None:
+    """The ContinuousTrack Gazebo plugin drives tracks: chains at the corners are flippers."""
+    robot = folded_quadruped()
+    robot.add(builders.model_plugin("track", "libContinuousTrack.so"))
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert "leg" not in [limb.kind for limb in result.body.limbs]
+    assert result.body.mobile_base
+
+
 def test_corner_named_chains_on_a_body_tracks_move_are_flippers_not_legs() -> None:
     # Two crawler joints (track names) and four two-joint chains named by their corner
     # (front_left_flipper ..), each a flipper and its sprocket: a tracked base.
