@@ -273,7 +273,8 @@ def arms_beside_legs(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
         (one, other)
         for index, one in enumerate(candidates)
         for other in candidates[index + 1 :]
-        if len(one.joints) == len(other.joints) and _mirrored(starts[id(one)], starts[id(other)])
+        if len(one.joints) == len(other.joints)
+        and _mirrored_either_way(starts[id(one)], starts[id(other)])
     ]
     if len(pairs) != 1:
         return limbs  # none, or no one pair to choose
@@ -316,6 +317,11 @@ def _mirrored(a: Place, b: Place) -> bool:
         and abs(a[0] - b[0]) <= _MIRRORED * across
         and abs(a[2] - b[2]) <= _MIRRORED * across
     )
+
+
+def _mirrored_either_way(a: Place, b: Place) -> bool:
+    """:func:`_mirrored` across y, or across x in a file drawn facing y."""
+    return _mirrored(a, b) or _mirrored(_facing_y(a), _facing_y(b))
 
 
 def _facing_y(place: Place) -> Place:
@@ -378,19 +384,17 @@ def _pair_above(
     placed: dict[int, tuple[Place, Place]],
     hips: float,
 ) -> bool:
-    """Two other equal unnamed chains of two joints or more, no gripper's or head's, on the
-    trunk (the body and a waist above it, as :func:`_trunk_above` reads it), start mirrored
-    across it higher than ``hips``: a pair of arms above a pair of legs (a head's two ears turn
-    on one joint each, a camera's pan and tilt are a head; a few chains only are compared, pair
-    by pair)."""
+    """Two other equal chains of two joints or more, arms (named, or ending in grippers) or
+    unnamed ones, no head's, on the trunk (the body and a waist above it, as
+    :func:`_trunk_above` reads it), start mirrored across it higher than ``hips``: a pair of
+    arms above a pair of legs (a head's two ears turn on one joint each, a camera's pan and
+    tilt are a head; a few chains only are compared, pair by pair)."""
     depth: dict[str, int] = {}
     above = [
         limb
         for limb in limbs
         if limb not in pair
-        and limb.kind in ("arm", "other")
-        and not limb.named
-        and not limb.gripper
+        and (limb.kind == "arm" or (limb.kind == "other" and not limb.named))
         and len(limb.joints) >= _LEG_JOINTS[0]
         and id(limb) in placed
         and placed[id(limb)][0][2] > hips
@@ -399,7 +403,8 @@ def _pair_above(
     if len(above) > _MOST_ABOVE_THE_HIPS:
         return False
     return any(
-        len(one.joints) == len(other.joints) and _mirrored(placed[id(one)][0], placed[id(other)][0])
+        len(one.joints) == len(other.joints)
+        and _mirrored_either_way(placed[id(one)][0], placed[id(other)][0])
         for index, one in enumerate(above)
         for other in above[index + 1 :]
     )

@@ -73,7 +73,7 @@ _VESSEL_NAME = re.compile(
 # A robot name that says a craft below the surface, read as whole words (``rov_model``,
 # ``my_auv``, ``submarine``; not ``rover``).
 _SUBMERSIBLE_NAME = re.compile(
-    r"(^|[_/\d-])(auv|rov|uuv|submarine|submersible)s?([_/\d-]|$)", re.IGNORECASE
+    r"(^|[_/\d-])([a-z]{0,6}(auv|rov)|uuv|submarine|submersible)s?([_/\d-]|$)", re.IGNORECASE
 )
 
 

@@ -955,16 +955,26 @@ def test_chains_hanging_down_left_and_right_of_their_middle_are_legs_wherever_th
     assert row.structure != "Quadruped"
 
 
-def nameless_humanoid_drawn_from_its_feet(*, arms: bool = True) -> RobotText:
+def nameless_humanoid_drawn_from_its_feet(
+    *, arms: bool = True, facing_y: bool = False, hands: bool = False
+) -> RobotText:
     """Letters only, the root's frame at the feet: two six-joint chains hang straight down
     from hips 0.5 m up to 0.05 m; above them two five-joint chains hang from shoulders 0.75 m
-    up (``arms``), or two one-joint ears turn on a head."""
+    up (``arms``), or two one-joint ears turn on a head. ``facing_y``: left and right along x;
+    ``hands``: each arm ends in a gripper's jaw."""
+
+    def across(offset: float) -> str:
+        return f"{offset} 0" if facing_y else f"0 {offset}"
+
     robot = RobotText("r")
     for side, y in (("a", 0.08), ("b", -0.08)):
-        placed_chain(robot, robot.root, f"{side}j", start=f"0 {y} 0.5", steps=["0 0 -0.09"] * 5)
+        start = f"{across(y)} 0.5"
+        placed_chain(robot, robot.root, f"{side}j", start=start, steps=["0 0 -0.09"] * 5)
     for side, y in (("c", 0.18), ("d", -0.18)):
         steps = ["0 0 -0.06"] * 4 if arms else []
-        placed_chain(robot, robot.root, f"{side}j", start=f"0 {y} 0.75", steps=steps)
+        tip = placed_chain(robot, robot.root, f"{side}j", start=f"{across(y)} 0.75", steps=steps)
+        if hands:
+            robot.chain(tip, [f"{side}_gripper_joint"])
     return robot
 
 
@@ -973,6 +983,9 @@ def test_legs_hang_from_the_hips_below_a_pair_of_arms_though_the_root_is_drawn_a
 ):
     result = identify_urdf(nameless_humanoid_drawn_from_its_feet().text())
     assert result.structure == "Humanoid"
+    # Drawn with left and right along x, its arms ending in grippers: the same humanoid.
+    drawn = nameless_humanoid_drawn_from_its_feet(facing_y=True, hands=True)
+    assert identify_urdf(drawn.text()).structure == "Humanoid"
     # Above them only a head's two one-joint ears: nothing says these are legs, not arms
     # hanging down a torso standing on its root.
     assert identify_urdf(

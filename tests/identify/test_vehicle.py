@@ -681,6 +681,20 @@ def test_propellers_named_in_spanish_or_portuguese_are_an_rovs_thrusters() -> No
     assert not result.body.wheels
 
 
+@pytest.mark.parametrize("name", ["AROV", "bluerov2", "openrov_v1", "mini_auv"])
+def test_an_rov_or_auv_compound_name_dives_a_hull_of_thrusters(name: str) -> None:
+    robot = thrusters_by_name()
+    robot.name = name
+    assert identify_urdf(robot.text()).structure == "Underwater Vehicle"
+
+
+@pytest.mark.parametrize("name", ["rover", "provant_vant4", "improver"])
+def test_a_word_that_only_holds_rov_is_no_submersibles_name(name: str) -> None:
+    robot = thrusters_by_name()
+    robot.name = name
+    assert identify_urdf(robot.text()).structure == "Surface Vessel"
+
+
 def test_a_robot_named_as_a_submersible_that_shows_no_way_of_travelling_dives_with_doubt() -> None:
     rov = RobotText("rov_model_urdf")
     rov.fixed(rov.root, "camera_link")
