@@ -59,6 +59,7 @@ from solver.identify.readers.urdf import Urdf
 from solver.identify.roles import Role
 from solver.identify.tree import JointTree
 from solver.identify.vehicle import (
+    THRUSTERS_ALONE,
     fixed_rotors,
     fixed_thrusters,
     fixed_wheels,
@@ -227,7 +228,11 @@ class Body:
             "floating_base": int(bool(self.floating_base)),
             "weak_base": int(self.weak_base),
             "weak_flight": int(self.weak_flight),
-            "weak_water": int(bool(self.vessel_name) or self.shipped_as in _WATER),
+            "weak_water": int(
+                bool(self.vessel_name)
+                or self.shipped_as in _WATER
+                or self.surface_hints == (THRUSTERS_ALONE,)
+            ),
             "thrusters": len(self.thrusters),
             "fins": len(self.fins),
             "casters": len(self.casters),

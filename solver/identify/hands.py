@@ -47,7 +47,8 @@ def jaws(tree: JointTree, taken: set[str]) -> dict[str, str]:
 def _jaw_pairs(tree: JointTree, taken: set[str]) -> dict[str, str]:
     """Two limited joints side by side on one link, each driven on its own and moving nothing
     but its own followers (a leaf, or a jaw's linkage of mimic joints): jaws at the end of a
-    chain, or a gripper's whole body (its only motions)."""
+    chain, or a gripper's whole body (its only motions). At the end of a chain that is no
+    head's, two hinges mirroring each other (:func:`_twins`) are jaws too."""
     by_parent: dict[str, list[Joint]] = {}
     walk = Walk(tree.urdf)
     for joint in tree.urdf.joints:
@@ -64,14 +65,23 @@ def _jaw_pairs(tree: JointTree, taken: set[str]) -> dict[str, str]:
     for link, pair in by_parent.items():
         if len(pair) != 2 or any(_named_otherwise(tree, j.name) for j in pair):
             continue
-        if _ends_a_chain(tree, link) and (_side_by_side(pair) or _twins(pair)):
-            why = f"one of two jaws side by side at the end of a chain ({link})"
-        elif _side_by_side(pair) and _only_motions(tree, pair, motions):
-            why = f"one of two jaws side by side, the body's only motions ({link})"
-        else:
-            continue
-        found.update(dict.fromkeys((j.name for j in pair), why))
+        why = _pair_why(tree, link, pair, motions)
+        if why:
+            found.update(dict.fromkeys((j.name for j in pair), why))
     return found
+
+
+def _pair_why(tree: JointTree, link: str, pair: list[Joint], motions: list[str]) -> str:
+    """Why two joints on ``link`` are jaws (see :func:`_jaw_pairs`), or "" when they are not."""
+    beside = _side_by_side(pair)
+    at_the_end = _ends_a_chain(tree, link)
+    if at_the_end and beside:
+        return f"one of two jaws side by side at the end of a chain ({link})"
+    if at_the_end and _twins(pair) and not _on_a_head(tree, link):
+        return f"one of two hinges mirroring each other at the end of a chain ({link})"
+    if beside and _only_motions(tree, pair, motions):
+        return f"one of two jaws side by side, the body's only motions ({link})"
+    return ""
 
 
 def _moves_alone(tree: JointTree, joint: Joint, walk: Walk) -> bool:
@@ -107,11 +117,11 @@ def _side_by_side(pair: list[Joint]) -> bool:
 
 
 def _twins(pair: list[Joint]) -> bool:
-    """Two hinges that mirror each other: about one line, turning opposite ways over the same
-    travel (opposite axes and the same limits, or one axis and opposite limits), a CAD export's
-    jaws placed apart along and across their axes, closing toward each other. At the end of a
-    chain, a gripper's jaws. Not two slides (a snake's last module pushes two pads out), nor
-    two hinges that turn alike or over a travel symmetric about zero (wheels, say)."""
+    """Two hinges that mirror each other: about parallel axes, turning opposite ways over the
+    same travel (opposite axes and the same limits, or one axis and opposite limits), as a CAD
+    export's jaws placed apart along and across their axes are. Not two slides (a snake's last
+    module pushes two pads out), nor two hinges that turn alike or over a travel symmetric
+    about zero (wheels, say)."""
     one, other = pair
     travel, mirror = _travel(one), _travel(other)
     if not (one.type == other.type == "revolute" and travel and mirror):
@@ -131,6 +141,19 @@ def _travel(joint: Joint) -> tuple[float, float] | None:
     if joint.lower is None or joint.upper is None:
         return None
     return joint.lower, joint.upper
+
+
+def _on_a_head(tree: JointTree, link: str) -> bool:
+    """A joint named as a head's moves ``link`` (a neck's pan and tilt: two mirrored hinges
+    there are eyelids or ears, not jaws)."""
+    joint = tree.urdf.parent_joint(link)
+    for _ in range(64):
+        if joint is None:
+            return False
+        if joint.movable and tree.matches("head", joint):
+            return True
+        joint = tree.urdf.parent_joint(joint.parent)
+    return False
 
 
 def _ends_a_chain(tree: JointTree, link: str) -> bool:

@@ -566,24 +566,35 @@ def _at_corners(tree: JointTree, base: str, group: list[Limb]) -> bool:
         return False
     centre = tree.poses.place(base)
     corners = [(s[0] - centre[0], s[1] - centre[1]) for s, _ in placed]
-    # Facing x, or facing y (a body drawn with its length along y, left and right along x).
-    return _mirrored_corners(corners) or _mirrored_corners([(y, x) for x, y in corners])
+    return _corners_either_way(corners)
 
 
-def _mirrored_corners(starts: list[tuple[float, float]]) -> bool:
-    """``starts`` (x along the body, y across it, from its middle) come in pairs mirrored
-    across the middle, spread front to back at least as far as a pair is from the middle."""
-    if len(starts) > _MOST_FIVE_BAR_LEGS:
+def _corners_either_way(corners: list[tuple[float, float]]) -> bool:
+    """``corners`` (from the body's middle) are a walker's hips facing x (:func:`_corners`);
+    only when no pairing across x's line is found, facing y (a body drawn with its length
+    along y): a square of four chains paired one way is not tried the other way."""
+    if len(corners) > _MOST_FIVE_BAR_LEGS:
         return False  # no walker has so many: a stranger's file is not compared pair by pair
-    across = max(abs(y) for _, y in starts)
+    paired = _corners(corners)
+    if paired is not None:
+        return paired
+    swapped = _corners([(y, x) for x, y in corners])
+    return bool(swapped)
+
+
+def _corners(starts: list[tuple[float, float]]) -> bool | None:
+    """``starts`` (x along the body, y across it, from its middle): ``None`` when they do not
+    come in pairs mirrored across the middle, else whether they spread front to back at least
+    as far as a pair is from the middle."""
+    across = max((abs(y) for _, y in starts), default=0.0)
     tolerance = _MIRRORED * across
     if across <= 0:
-        return False
+        return None
     for x, y in starts:
         if abs(y) <= tolerance or not any(
             abs(x2 - x) <= tolerance and abs(y2 + y) <= tolerance for x2, y2 in starts
         ):
-            return False
+            return None
     along = [x for x, _ in starts]
     return max(along) - min(along) >= across
 
@@ -649,7 +660,7 @@ def _stands(tree: JointTree, base: str, group: list[Limb]) -> bool:
     middle = ((max(xs) + min(xs)) / 2, (max(ys) + min(ys)) / 2)
     corners = [(x - middle[0], y - middle[1]) for x, y in zip(xs, ys, strict=True)]
     # Facing x, or facing y (a CAD export's rows of hips along y): standing, either way.
-    return _mirrored_corners(corners) or _mirrored_corners([(y, x) for x, y in corners])
+    return _corners_either_way(corners)
 
 
 Place = tuple[float, float, float]

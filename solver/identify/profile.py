@@ -121,7 +121,8 @@ FEATURES = (
 # planar virtual joint (a trimmed or simulated model), not from driven wheels or a plugin.
 # weak_flight: flying is known only from fixed rotor-named links on a body with no movable
 # joint at all (a trimmed multirotor model), not from rotor joints or a flight plugin.
-# weak_water: the body is in water by the robot's name alone (nothing else says how it travels).
+# weak_water: the body is in water by the robot's name, its packages' words or its thrusters
+# alone (nothing else says how it travels, or where in the water).
 # serpentine: the body is one long chain of equal modules whose axes alternate, with no base
 # that holds it (a snake robot).
 BOOLEAN_FEATURES = (

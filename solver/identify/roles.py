@@ -71,9 +71,12 @@ _VESSEL_NAME = re.compile(
 
 
 # A robot name that says a craft below the surface, read as whole words (``rov_model``,
-# ``my_auv``, ``submarine``; not ``rover``).
+# ``my_auv``, ``submarine``; not ``rover``), an ROV's or AUV's with a usual prefix too
+# (``AROV``, ``bluerov2``, ``openrov``; not ``petrov`` or ``improv``).
 _SUBMERSIBLE_NAME = re.compile(
-    r"(^|[_/\d-])([a-z]{0,6}(auv|rov)|uuv|submarine|submersible)s?([_/\d-]|$)", re.IGNORECASE
+    r"(^|[_/\d-])((a|b|blue|open|mini|micro|sea|deep|sub|my)?(auv|rov)|uuv|submarine|submersible)"
+    r"s?([_/\d-]|$)",
+    re.IGNORECASE,
 )
 
 

@@ -74,8 +74,9 @@ def body_from_workspace(body: Body, workspace: Workspace, profile: Profile) -> B
 
 
 def _shown_file(package: str, path: str, matched: str) -> str:
-    """A file of the robot's packages and the text found in it (without the characters that
-    bound a word: ``'takeoff`` is ``takeoff``), as evidence shows them."""
+    """A file of the robot's packages and the text found in it, as evidence shows them, the
+    punctuation and spaces a pattern's word boundary matched stripped from its ends
+    (``'takeoff(`` shows as ``takeoff``; an underscore or a digit stays)."""
     where = shown(path, limit=SHOWN_FILE_NAME_CHARS)
     word = matched.strip(_BOUNDS) or matched
     return f"package {shown(package)}: {where} ({shown(word)})"

@@ -209,17 +209,31 @@ def surface_hints(tree: JointTree, *, thrusters: bool = False) -> tuple[str, ...
 
 def _nothing_dives(tree: JointTree) -> list[str]:
     """A body in water that nothing places below or at the surface: a GPS or a lidar on it
-    says above water; with no water plugin at all, its thrusters alone do (nothing dives it)."""
+    says above water; with no water plugin and no pressure sensor at all (a diver's depth
+    gauge is a pressure sensor), its thrusters alone do, with doubt (nothing dives it)."""
     found = _above_water_sensors(tree)
-    if not found and not any(tree.reader.plugins_of(p) for p in _WATER_PLUGINS):
-        found = [_THRUSTERS_ALONE]
+    if (
+        not found
+        and not any(tree.reader.plugins_of(p) for p in _WATER_PLUGINS)
+        and not _pressure_sensor(tree)
+    ):
+        found = [THRUSTERS_ALONE]
     return found
 
 
+def _pressure_sensor(tree: JointTree) -> bool:
+    """A pressure sensor or plugin (a barometer in air, a depth gauge in water): what an
+    autopilot of a submersible holds its depth with."""
+    return any(
+        _PRESSURE.search(f"{sensor.type} {sensor.name}") for sensor in tree.urdf.sensors
+    ) or any(_PRESSURE.search(f"{p.name} {p.filename}") for p in tree.urdf.plugins)
+
+
 # In water by its thrusters alone (their names, or screws by place), with no water plugin, no
-# sensor or frame of a diver, no name: nothing makes the body dive, so it floats (a hull with a
-# pair of thrusters, as every such labelled row of the development part is).
-_THRUSTERS_ALONE = "thrusters alone (no water plugin, DVL or depth gauge)"
+# sensor or frame of a diver, no name: nothing makes the body dive, so it floats, with doubt (a
+# hull with a pair of thrusters, as every such labelled row of the development part is).
+THRUSTERS_ALONE = "thrusters alone (no water plugin, DVL or depth gauge)"
+_PRESSURE = re.compile(r"pressure|baro|altimeter", re.IGNORECASE)
 _WATER_PLUGINS = ("marine", "thruster", "underwater")
 
 

@@ -256,7 +256,7 @@ class Station:
             params = dict(observation.params)
             # A watcher's announcement may come before its answer's writer is discovered
             # (a busy machine): it counts once that watcher is seen running.
-            running = self._running_announcers(params) if announcements else ()
+            running = announcements and self._an_announcer_runs(params, start)
             if robot in robots and (not announcements or running):
                 return robots, params
             now = time.monotonic()
@@ -267,13 +267,16 @@ class Station:
                 return robots, params
             self._woken.wait(POLL)
 
-    def _running_announcers(self, params: Mapping[str, Any]) -> tuple[str, ...]:
-        """The watchers that announce a rule set in ``params`` and are seen running."""
-        return tuple(
-            a.watcher
-            for a in announcements(params)
-            if a.rules is not None and self._runs(a.watcher)
-        )
+    def _an_announcer_runs(self, params: Mapping[str, Any], start: float) -> bool:
+        """A watcher that announces a rule set in ``params`` is seen running: asked one by one,
+        the first running one ends the asking, and none is asked past :data:`LOOK_LIMIT` from
+        ``start`` (on ROS 1 each asking may wait for a node that does not answer)."""
+        for announced in announcements(params):
+            if time.monotonic() - start >= LOOK_LIMIT:
+                return False
+            if announced.rules is not None and self._runs(announced.watcher):
+                return True
+        return False
 
     def announced_rules(self, params: Mapping[str, Any]) -> tuple[RuleSet | None, str]:
         """The rule set the graph's running watchers announce, and how it is known (or why

@@ -229,6 +229,12 @@ def cad_arm(jaw_axes: tuple[str, str], limits: tuple[float, float]) -> RobotText
 def test_two_hinges_mirroring_each_other_at_the_end_of_an_arm_are_its_jaws() -> None:
     result = identify_urdf(cad_arm(("0 -1 0", "0 1 0"), (-1.3, 1.135)).text())
     assert (result.structure, result.body and result.body.grippers) == ("Manipulator", 1)
+    # On a head (its pan and tilt named so), two mirrored hinges are eyelids or ears.
+    head = cad_arm(("0 -1 0", "0 1 0"), (-1.3, 1.135))
+    head.joints = [
+        j.replace('"joint4"', '"head_pan"').replace('"joint5"', '"head_tilt"') for j in head.joints
+    ]
+    assert identify_urdf(head.text()).structure != "Manipulator"
     # Two hinges that turn alike, or over a travel symmetric about zero, mirror nothing.
     for axes, limits in ((("0 1 0", "0 1 0"), (-1.3, 1.135)), (("0 -1 0", "0 1 0"), (-1.0, 1.0))):
         assert identify_urdf(cad_arm(axes, limits).text()).structure != "Manipulator"

@@ -805,13 +805,11 @@ def test_two_mirrored_chains_are_no_arms_without_a_bipeds_legs_below_them() -> N
     assert "arm" not in [limb.kind for limb in result.body.limbs]
 
 
-def folded_quadruped(*, tracked: bool = False, facing_y: bool = False) -> RobotText:
+def folded_quadruped(*, tracked: bool = False) -> RobotText:
     """Four unnamed three-joint chains at the corners of a body, each folded flat in the zero
-    pose (the tip back level with the hip); ``tracked`` adds a tracked-vehicle plugin;
-    ``facing_y`` draws the body with its length along y (left and right along x)."""
+    pose (the tip back level with the hip); ``tracked`` adds a tracked-vehicle plugin."""
     robot = RobotText("r")
-    corners = ((0.3, 0.1), (0.3, -0.1), (-0.3, 0.1), (-0.3, -0.1))
-    for i, (x, y) in enumerate((y, x) for x, y in corners) if facing_y else enumerate(corners):
+    for i, (x, y) in enumerate(((0.3, 0.1), (0.3, -0.1), (-0.3, 0.1), (-0.3, -0.1))):
         placed_chain(
             robot,
             robot.root,
@@ -824,6 +822,23 @@ def folded_quadruped(*, tracked: bool = False, facing_y: bool = False) -> RobotT
     return robot
 
 
+def hexapod_facing_y() -> RobotText:
+    """Six unnamed three-joint chains folded flat on a body drawn with its length along y, each
+    tip back over its hip: the middle pair on the x line, the others at the corners (left and
+    right along x)."""
+    robot = RobotText("r")
+    hips = ((0.064, 0.0), (0.057, 0.066), (0.057, -0.066))
+    for i, (x, y) in enumerate([*hips, *((-x, y) for x, y in hips)]):
+        placed_chain(
+            robot,
+            robot.root,
+            f"k{i}_",
+            start=f"{x} {y} 0",
+            steps=[f"{x / 2} 0 0", "0 -0.05 0", f"{-x / 2} 0.05 0"],
+        )
+    return robot
+
+
 def test_alike_chains_starting_in_mirrored_pairs_at_a_bodys_corners_are_legs_however_folded() -> (
     None
 ):
@@ -831,8 +846,16 @@ def test_alike_chains_starting_in_mirrored_pairs_at_a_bodys_corners_are_legs_how
     assert result.structure == "Quadruped"
     assert result.body is not None
     assert "corners" in result.body.limbs[0].why
-    # The same body drawn with its length along y stands on the same legs.
-    assert identify_urdf(folded_quadruped(facing_y=True).text()).structure == "Quadruped"
+    # Six drawn with the body's length along y (no pair mirrored across x's line): legs too.
+    assert identify_urdf(hexapod_facing_y().text()).structure == "Hexapod"
+    # Four in a square two fingers' width apart are paired across x's line and not spread
+    # along it: not tried facing y, no walker's hips.
+    square = RobotText("r")
+    for i, (x, y) in enumerate(((0.01, 0.04), (0.01, -0.04), (-0.01, 0.04), (-0.01, -0.04))):
+        placed_chain(
+            square, square.root, f"k{i}_", start=f"{x} {y} 0", steps=[f"0 {y / 2} 0", "-0.02 0 0"]
+        )
+    assert identify_urdf(square.text()).structure != "Quadruped"
     # On a body tracks move, chains at its corners are flippers, not legs.
     tracked = identify_urdf(folded_quadruped(tracked=True).text())
     assert tracked.body is not None

@@ -98,9 +98,14 @@ def test_a_body_in_water_by_thruster_names_alone_floats() -> None:
         "floats at the surface: thrusters alone (no water plugin, DVL or depth gauge)"
         in result.evidence
     )
+    assert result.confidence == pytest.approx(0.9 * 0.8, abs=0.01)  # with doubt: weak_water
     diver = thrusters_by_name()
     diver.fixed(diver.root, "dvl_link")
     assert identify_urdf(diver.text()).structure == "Underwater Vehicle"
+    # A pressure sensor is a diver's depth gauge (or an autopilot's barometer): it may dive.
+    gauged = thrusters_by_name()
+    gauged.add(builders.gazebo_sensor(gauged.root, "air_pressure", "baro"))
+    assert identify_urdf(gauged.text()).structure == "Underwater Vehicle"
     rov = thrusters_by_name()
     rov.name = "rov"
     assert identify_urdf(rov.text()).structure == "Underwater Vehicle"
@@ -688,7 +693,7 @@ def test_an_rov_or_auv_compound_name_dives_a_hull_of_thrusters(name: str) -> Non
     assert identify_urdf(robot.text()).structure == "Underwater Vehicle"
 
 
-@pytest.mark.parametrize("name", ["rover", "provant_vant4", "improver"])
+@pytest.mark.parametrize("name", ["rover", "provant_vant4", "improver", "petrov_bot", "improv"])
 def test_a_word_that_only_holds_rov_is_no_submersibles_name(name: str) -> None:
     robot = thrusters_by_name()
     robot.name = name
