@@ -522,14 +522,21 @@ def _commanded(tree: JointTree, parts: _Parts) -> list[str]:
     )
     limbs = [limb for limb in parts.limbs if limb.kind in kinds]
     joints = [name for limb in limbs for name in limb.joints]
-    firsts = {limb.joints[0] for limb in limbs}
-    for name in parts.trunk:
-        trunk = tree.urdf.joint(name)
-        if trunk is not None and any(
-            j.name in firsts for j in tree.urdf.subtree_joints(trunk.child)
-        ):
-            joints.append(name)
-    return joints
+    carrying = _above(tree, [limb.joints[0] for limb in limbs])
+    return joints + [name for name in parts.trunk if name in carrying]
+
+
+def _above(tree: JointTree, names: list[str]) -> set[str]:
+    """The joints above any of ``names`` (their ancestors in the tree): one walk up from each,
+    stopping where an earlier walk passed, so linear in the joints however deep the tree."""
+    seen: set[str] = set()
+    for name in names:
+        joint = tree.urdf.joint(name)
+        above = tree.urdf.parent_joint(joint.parent) if joint is not None else None
+        while above is not None and above.name not in seen:
+            seen.add(above.name)
+            above = tree.urdf.parent_joint(above.parent)
+    return seen
 
 
 def _all_roles(tree: JointTree, parts: _Parts) -> tuple[Role, ...]:

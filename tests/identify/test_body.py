@@ -107,3 +107,24 @@ def test_joints_a_wheel_carries_are_its_rollers_passive_whatever_transmission_th
     assert roles["left_roller0"].evidence == "on wheel wheel_left_joint (a roller)"
     assert "Joint" not in {c.motion_control for c in result.motion_controls}
     assert "Driving" in {c.motion_control for c in result.motion_controls}
+
+
+def test_the_trunk_joints_above_limbs_are_found_in_one_walk_up_a_deep_chain() -> None:
+    # 20,000 sliding joints one under the next, 2,000 spinning leaves on the last links: which
+    # trunk joints carry a limb is known from one walk up from each limb, not a walk down the
+    # subtree of every trunk joint (which took a minute and a half).
+    parts = ['<robot name="r"><link name="l0"/>']
+    for i in range(1, 20_000):
+        parts.append(
+            f'<link name="l{i}"/><joint name="f{i}" type="prismatic"><parent link="l{i - 1}"/>'
+            f'<child link="l{i}"/><axis xyz="0 0 1"/>'
+            '<limit lower="0" upper="1" effort="1" velocity="1"/></joint>'
+        )
+    for i in range(2_000):
+        parts.append(
+            f'<link name="w{i}"/><joint name="s{i}" type="continuous">'
+            f'<parent link="l{19_999 - i}"/><child link="w{i}"/><axis xyz="0 1 0"/></joint>'
+        )
+    result = identify_urdf("".join(parts) + "</robot>")
+    assert result.body is not None
+    assert len(result.body.roles) >= 20_000
