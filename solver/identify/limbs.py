@@ -1090,7 +1090,6 @@ def _classify(
     named = any(scores.values())
     # Degrees of freedom, not joints: a ball-joint shoulder moves like three hinges.
     length = sum(3 if j.type == "spherical" else 1 for j in chain)
-    kind, why = _named_kind(tree, scores, length, gripper)
     if (
         not gripper
         and length <= tree.profile.limb("head_max_joints")
@@ -1102,6 +1101,7 @@ def _classify(
             f"its last joint turns a camera's frame ({chain[-1].child}): a gimbal or pan/tilt unit"
         )
         return Limb("head", names, base, tip, gripper, named, why)
+    kind, why = _named_kind(tree, scores, length, gripper)
     if mounted:
         if mounted == ["wheel"] and kind == "leg":
             return Limb("wheel_leg", names, base, tip, gripper, named, f"{why}, on a wheel")

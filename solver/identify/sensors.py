@@ -39,6 +39,7 @@ __all__ = [
     "Sensor",
     "element_kind",
     "merge",
+    "plugin_kind",
     "presented_count",
     "sensor_type_of",
     "sensors_from_urdf",
@@ -98,7 +99,7 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
     """
     found, beams = _element_detections(urdf, profile, source)
     for plugin in urdf.plugins:
-        simulated = _plugin_kind(plugin, profile)
+        simulated = plugin_kind(plugin, profile)
         if simulated is None:
             continue
         link = plugin.param(*_LINK_PARAMS) or plugin.reference
@@ -379,7 +380,9 @@ def _rays(tag: SensorTag) -> int | None:
     return max(tag.horizontal_samples or 1, 1) * max(tag.vertical_samples or 1, 1)
 
 
-def _plugin_kind(plugin: PluginTag, profile: Profile) -> str | None:
+def plugin_kind(plugin: PluginTag, profile: Profile) -> str | None:
+    """The sensor kind a Gazebo plugin simulates by the profile's plugin rules; None for ground
+    truth, a simulator system or a plugin of no sensor."""
     truth = profile.ground_truth
     if truth is not None and truth.search(plugin.text):
         return None

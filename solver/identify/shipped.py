@@ -28,7 +28,7 @@ from dataclasses import replace
 
 from solver.identify.body import Body
 from solver.identify.interfaces import Control
-from solver.identify.profile import VELOCITY, Profile
+from solver.identify.profile import VELOCITY, Pattern, Profile
 from solver.identify.readers.workspace import Workspace
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
@@ -46,11 +46,9 @@ def controls_from_workspace(
         control = profile.velocity_control(structure) if rule.control == VELOCITY else rule.control
         if control in found:
             continue
-        for shipped in workspace.files:
-            matched = rule.match.find(shipped.text)
-            if matched is not None:
-                found[control] = _shown_file(shipped.package, shipped.path, matched)
-                break
+        shown_file = _first_found(workspace, rule.match)
+        if shown_file is not None:
+            found[control] = shown_file
     return tuple(Control(control, source) for control, source in found.items())
 
 
@@ -60,17 +58,25 @@ def body_from_workspace(body: Body, workspace: Workspace, profile: Profile) -> B
     (a repository of drones and boats says nothing of this one)."""
     if not body.travels_no_way:
         return body
-    said: dict[str, str] = {}
-    for medium, pattern in profile.body_packages:
-        for shipped in workspace.files:
-            matched = pattern.find(shipped.text)
-            if matched is not None:
-                said[medium] = _shown_file(shipped.package, shipped.path, matched)
-                break
+    said = {
+        medium: shown_file
+        for medium, pattern in profile.body_packages
+        if (shown_file := _first_found(workspace, pattern)) is not None
+    }
     if len(said) != 1:
         return body
     ((medium, evidence),) = said.items()
     return replace(body, shipped_as=medium, shipped_by=evidence)
+
+
+def _first_found(workspace: Workspace, pattern: Pattern) -> str | None:
+    """The first file of the robot's packages ``pattern`` finds text in, as evidence shows it
+    (in the order the packages were read), or None."""
+    for shipped in workspace.files:
+        matched = pattern.find(shipped.text)
+        if matched is not None:
+            return _shown_file(shipped.package, shipped.path, matched)
+    return None
 
 
 def _shown_file(package: str, path: str, matched: str) -> str:

@@ -34,7 +34,7 @@ from collections.abc import Sequence
 from solver.identify.actuation import MOTOR, with_role
 from solver.identify.limbs import Limb, moved_by
 from solver.identify.roles import Role
-from solver.identify.sensors import element_kind
+from solver.identify.sensors import element_kind, plugin_kind
 from solver.identify.tree import JointTree
 
 __all__ = [
@@ -222,18 +222,18 @@ def _nothing_dives(tree: JointTree) -> list[str]:
 
 
 def _pressure_sensor(tree: JointTree) -> bool:
-    """A pressure sensor or plugin (a barometer in air, a depth gauge in water): what an
-    autopilot of a submersible holds its depth with."""
-    return any(
-        _PRESSURE.search(f"{sensor.type} {sensor.name}") for sensor in tree.urdf.sensors
-    ) or any(_PRESSURE.search(f"{p.name} {p.filename}") for p in tree.urdf.plugins)
+    """A pressure sensor or plugin, as the profile's sensor rules read them (a barometer in
+    air, a depth gauge in water): what an autopilot of a submersible holds its depth with."""
+    return any(element_kind(s, tree.profile) in _PRESSURE_KINDS for s in tree.urdf.sensors) or any(
+        plugin_kind(p, tree.profile) in _PRESSURE_KINDS for p in tree.urdf.plugins
+    )
 
 
 # In water by its thrusters alone (their names, or screws by place), with no water plugin, no
 # sensor or frame of a diver, no name: nothing makes the body dive, so it floats, with doubt (a
 # hull with a pair of thrusters, as every such labelled row of the development part is).
 THRUSTERS_ALONE = "thrusters alone (no water plugin, DVL or depth gauge)"
-_PRESSURE = re.compile(r"pressure|baro|altimeter", re.IGNORECASE)
+_PRESSURE_KINDS = ("barometer", "pressure")
 _WATER_PLUGINS = ("marine", "thruster", "underwater")
 
 
