@@ -130,6 +130,24 @@ def test_package_rules_are_optional_and_their_structures_are_checked() -> None:
     assert "unknown structure 'Manipulater' (did you mean 'Manipulator'?)" in fault.message
 
 
+def test_body_package_words_are_optional_and_name_only_known_media() -> None:
+    start = SHIPPED.index("body_packages:")
+    assert parse_profile(parse_document(SHIPPED[:start], "plain.yaml")).body_packages == ()
+    assert [medium for medium, _ in load_profile().body_packages] == [
+        "flight",
+        "underwater",
+        "surface",
+    ]
+    text = SHIPPED.replace("  surface: '(^|[^a-z])(usvs", "  surfce: '(^|[^a-z])(usvs", 1)
+    assert text != SHIPPED
+    with pytest.raises(ProfileError) as caught:
+        parse_profile(parse_document(text, "p.yaml"))
+    [fault] = caught.value.faults
+    assert fault.location is not None
+    assert fault.location.path == "body_packages.surfce"
+    assert fault.location.line is not None
+
+
 # ---- a file that is no profile is named, never quoted (issue 36.13) ---------------------------
 
 PASSWD = "root:x:0:0:the-secret-line:/root:/bin/bash\ndaemon:x:1:1::/:/bin/false\n"
