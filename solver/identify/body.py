@@ -7,7 +7,8 @@ patterns and thresholds, actuation first and names last, one step per module:
    (a drive plugin's wheels, a motor model's rotors, a thruster plugin's thrusters, a fin
    plugin's fins), then shapes (a vertical swivel carrying one wheel is a caster) and names.
    Wheels without names are told by where they are. Joints that cannot move (fixed, or
-   revolute/prismatic with lower == upper) and mimic joints (they follow another) are not actuated.
+   revolute/prismatic with lower == upper and no mimic coupling) and mimic joints (they follow
+   another) are not actuated.
 2. *Where the body is* (:mod:`solver.identify.placement`): a floating or planar base, and the
    root joints that only place the body.
 3. *Limbs* (:mod:`solver.identify.limbs`): the remaining actuated joints form a contracted tree

@@ -6,7 +6,8 @@ finger's phalanges): :func:`gripper_closure`. Fingers whose chains carry no name
 told by where they are, side by side on one palm in threes or more (:func:`finger_groups`).
 Jaws are told by where they are too (:func:`jaws`): joints side by side on one link that turn
 or slide about one line with nothing beyond them but their own followers (a linkage of mimic
-joints), closed by one motion (mimic joints follow one driver) or, at the end of a chain of two
+joints), closed by one motion (mimic joints follow one driver; not on a head, where a mirrored
+pair is ears or eyelids) or, at the end of a chain of two
 joints or more, each by its own (a humanoid's split gripper). A hand is counted by its
 fingers, one tip per finger (:func:`finger_tips`).
 
@@ -36,8 +37,12 @@ def jaws(tree: JointTree, taken: set[str]) -> dict[str, str]:
     """Jaw joints (see the module docstring), each with the evidence that found it."""
     found: dict[str, str] = {}
     for group in jaw_groups(tree.urdf, tree.couplings):
-        if taken.isdisjoint(group) and not any(_named_otherwise(tree, n) for n in group):
-            driver = tree.couplings.driver(group[0])
+        driver = tree.couplings.driver(group[0])
+        if (
+            taken.isdisjoint(group)
+            and not any(_named_otherwise(tree, n) for n in group)
+            and not _on_a_head(tree, _parent_link(tree, driver))
+        ):
             why = f"one motion ({driver}, {len(group) - 1} mimic joint(s)) closes jaws side by side"
             found.update(dict.fromkeys(group, why))
     found.update(_jaw_pairs(tree, taken | set(found)))
@@ -154,6 +159,11 @@ def _on_a_head(tree: JointTree, link: str) -> bool:
             return True
         joint = tree.urdf.parent_joint(joint.parent)
     return False
+
+
+def _parent_link(tree: JointTree, name: str) -> str:
+    joint = tree.urdf.joint(name)
+    return "" if joint is None else joint.parent
 
 
 def _ends_a_chain(tree: JointTree, link: str) -> bool:

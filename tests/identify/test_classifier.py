@@ -84,6 +84,24 @@ def test_zero_range_revolute_joints_are_fixed_and_mimic_joints_not_actuated() ->
     assert not arm.actuated
 
 
+def test_equal_limits_on_joints_coupled_by_mimic_are_placeholders_not_a_lock() -> None:
+    # A kinematic simulator's gripper: limits all zero, one finger following the other.
+    robot = RobotText("gripper", root="world")
+    robot.joint("pose", "floating", "world", "hand", "")
+    zero = '<axis xyz="0 1 0"/><limit lower="0" upper="0" effort="0" velocity="0"/>'
+    robot.joint("left", "prismatic", "hand", "left_pad", zero)
+    robot.joint(
+        "right", "prismatic", "hand", "right_pad", zero + '<mimic joint="left" multiplier="-1"/>'
+    )
+    urdf = parse_urdf(robot.text())
+    left, right = urdf.joint("left"), urdf.joint("right")
+    assert left is not None
+    assert right is not None
+    assert (left.mimicked, left.movable, left.actuated) == (True, True, True)
+    assert (right.movable, right.actuated) == (True, False)
+    assert identify_urdf(robot.text()).structure == "Gripper"
+
+
 def test_flight_plugins_alone_make_a_uav() -> None:
     robot = RobotText("hector")
     robot.add(builders.model_plugin("propulsion", "libhector_gazebo_quadrotor_propulsion.so"))

@@ -240,6 +240,31 @@ def test_two_hinges_mirroring_each_other_at_the_end_of_an_arm_are_its_jaws() -> 
         assert identify_urdf(cad_arm(axes, limits).text()).structure != "Manipulator"
 
 
+def test_two_hinges_one_motion_closes_on_a_head_are_ears_not_jaws() -> None:
+    # A pet robot's head (pan and tilt named so) with two ears, one following the other.
+    robot = RobotText("pet")
+    tip = robot.chain(robot.root, ["head_pan", "head_tilt"])
+    builders.placed(robot, "ear_l", "revolute", tip, "ear_l_link", xyz="0 0.02 0.05", axis="1 0 0")
+    builders.placed(
+        robot,
+        "ear_r",
+        "revolute",
+        tip,
+        "ear_r_link",
+        xyz="0 -0.02 0.05",
+        axis="1 0 0",
+        extra='<mimic joint="ear_l" multiplier="-1"/>',
+    )
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert result.body.grippers == 0
+    # The same pair at the end of an arm's two joints closes a gripper.
+    arm = robot.text().replace("head_pan", "joint1").replace("head_tilt", "joint2")
+    found = identify_urdf(arm)
+    assert found.body is not None
+    assert found.body.grippers == 1
+
+
 def test_two_alike_jaws_that_are_a_bodys_only_motions_are_a_gripper_on_its_own() -> None:
     result = identify_urdf(sliding_jaws().text())
     assert result.structure == "Gripper"

@@ -116,7 +116,12 @@ def test_package_rules_are_optional_and_their_structures_are_checked() -> None:
     start = SHIPPED.index("  packages:")
     assert parse_profile(parse_document(SHIPPED[:start], "plain.yaml")).package_controls == ()
     shipped = load_profile().package_controls
-    assert [rule.control for rule in shipped] == ["Waypoint", "velocity", "End Effector"]
+    assert [rule.control for rule in shipped] == [
+        "Waypoint",
+        "velocity",
+        "End Effector",
+        "End Effector",
+    ]
     assert "Manipulator" in shipped[0].not_for
     text = SHIPPED.replace(
         "      not_for: [Manipulator, Gripper, Hand, Torso]\n",

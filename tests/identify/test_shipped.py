@@ -73,6 +73,15 @@ def test_a_base_or_a_gripper_alone_has_no_end_effector_whatever_moveit_its_repos
     assert list(shipped("Mobile Manipulator", moveit)) == ["End Effector"]
 
 
+def test_an_arm_moved_by_inverse_kinematics_to_a_target_is_sent_end_effector_goals() -> None:
+    script = "from ikpy.chain import Chain\nangles = chain.inverse_kinematics(target)"
+    assert list(shipped("Manipulator", script)) == ["End Effector"]
+    assert list(shipped("Manipulator", "q = solve_ik(x, y, z)")) == ["End Effector"]
+    # A walker's inverse kinematics places its feet: no end effector of its own.
+    assert shipped("Humanoid", script) == {}
+    assert shipped("Quadruped", "legs = inverse_kinematics(foot)") == {}
+
+
 def test_the_first_file_that_shows_a_control_is_named() -> None:
     found = shipped("UGV", "nothing here", "waypoint_follower", "bt_navigator")
     assert found["Waypoint"].endswith("1.launch.py (waypoint)")

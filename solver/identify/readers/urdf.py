@@ -92,16 +92,22 @@ class Joint:
     # Whether the description writes an <axis> (else ``axis`` is URDF's default, x): what a
     # joint's name says is weighed against a written axis only.
     axis_written: bool = True
+    # Whether another joint follows it (names it in <mimic>).
+    mimicked: bool = False
 
     @property
     def movable(self) -> bool:
         if self.type == "fixed":
             return False
         # RotorS and others mount sensors on revolute joints with lower == upper: fixed in effect.
+        # Not a joint coupled by <mimic>: nobody couples a joint that cannot move, so its equal
+        # limits are placeholders (a kinematic simulator's fingers, limits all zero).
         return not (
             self.type in ("revolute", "prismatic")
             and self.lower is not None
             and self.lower == self.upper
+            and self.mimic is None
+            and not self.mimicked
         )
 
     def turns(self, at_least: float) -> bool:
@@ -449,7 +455,11 @@ class _Builder:
                 )
                 continue
             found[joint.name] = joint
-        return list(found.values())
+        followed = {joint.mimic for joint in found.values() if joint.mimic is not None}
+        return [
+            replace(joint, mimicked=True) if name in followed else joint
+            for name, joint in found.items()
+        ]
 
     def _joint(self, element: etree._Element, links: dict[str, Link]) -> Joint | None:
         line = line_of(element)
