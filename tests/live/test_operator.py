@@ -218,6 +218,38 @@ def test_a_switch_on_ros2_is_answered_by_the_running_watcher_with_the_values_ask
     assert again.answer["configuration"] == drone_configuration(solution)
 
 
+class LateDiscovery(DdsGraph):
+    """A real DDS source that sees a running watcher only from its third asking on: a busy
+    machine, where a watcher's announcement (a parameter) is read before its answer's writer
+    is discovered."""
+
+    asked = 0
+
+    def running_watcher(self, node: str) -> tuple[bool, str | None]:
+        self.asked += 1
+        if self.asked <= 2:
+            return False, None
+        return super().running_watcher(node)
+
+
+def test_a_switch_waits_until_the_watcher_that_announced_its_rules_is_seen_running(
+    domain: Domain, ros2_watcher: Callable[..., Recorder]
+) -> None:
+    domain.drone("/uav1")
+    ros2_watcher()
+    source = LateDiscovery(domain.id)
+    station = Station(source)
+    try:
+        switched = switch_robot(station, "/uav1", {"motion_control": "Waypoint"})
+    finally:
+        station.close()
+    # Checked against the rule set the watcher announces, not against names alone: a value
+    # misspelt would be refused (exit 2), not written.
+    assert switched.rules == "rules/paper.yaml"
+    assert switched.answer is not None
+    assert source.asked >= 3
+
+
 def test_the_station_leaves_the_domain_when_closed_and_the_watcher_keeps_the_selection(
     domain: Domain, ros2_watcher: Callable[..., Recorder], solution: Solution
 ) -> None:
