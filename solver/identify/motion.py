@@ -42,7 +42,7 @@ from typing import TYPE_CHECKING
 
 from solver.identify.body import Body
 from solver.identify.interfaces import Control
-from solver.identify.planning_groups import arm_plans, hand_effectors
+from solver.identify.planning_groups import arm_plans, hand_effectors, leg_plans
 from solver.identify.profile import ROLE_SOURCES, Profile
 from solver.identify.readers.urdf import Joint, Urdf
 
@@ -228,6 +228,12 @@ def _planned(
             found.append(("srdf_walker_group", why))
         else:
             found.append(("srdf_group", f"{srdf_source}: planning group(s) {names}"))
+    else:
+        legs = leg_plans(body, srdf, profile.limb("arm_min_joints"), urdf)
+        if legs:
+            names = ", ".join(g.name for g in legs)
+            why = f"{srdf_source}: planning group(s) {names} (each on a leg)"
+            found.append(("srdf_walker_group", why))
     if effectors:
         names = ", ".join(e.name for e in effectors)
         found.append(("srdf_end_effector", f"{srdf_source}: end effector(s) {names}"))

@@ -7,7 +7,8 @@ spinning lidar's motor is none), not mostly on the legs, on a head (a pan/tilt p
 sensor) or on the trunk, over fewer than three limbs, and not extending another such group
 (Fetch's ``arm_with_torso``; chains are expanded to their joints through the URDF, so a chain
 group from the torso to a hand extends the hand's arm). :func:`hand_effectors`
-keeps the end effectors that are not feet (a leg's end effector is where it stands).
+keeps the end effectors that are not feet (a leg's end effector is where it stands);
+:func:`leg_plans` the groups each on a leg (a walker's MoveIt configuration plans its legs).
 
 Not here: reading the SRDF (:mod:`solver.identify.readers.srdf`).
 """
@@ -23,7 +24,7 @@ from solver.identify.readers.urdf import Urdf
 if TYPE_CHECKING:
     from solver.identify.readers.srdf import EndEffector, Group, Srdf
 
-__all__ = ["MOST_GROUPS", "arm_plans", "hand_effectors"]
+__all__ = ["MOST_GROUPS", "arm_plans", "hand_effectors", "leg_plans"]
 
 # A real SRDF has tens of groups; a stranger's file may have hundreds of thousands. Only this
 # many candidate arm groups are compared (each with each), and chains are walked for at most
@@ -60,6 +61,23 @@ def arm_plans(
         group
         for joints, group in by_joints.items()
         if not any(other < joints for other in by_joints)
+    )
+
+
+def leg_plans(
+    body: Body, srdf: Srdf, min_joints: int, urdf: Urdf | None = None
+) -> tuple[Group, ...]:
+    """The SRDF's planning groups (among its first :data:`MOST_GROUPS` candidates) that lie
+    mostly on one of ``body``'s legs: a walker's MoveIt configuration plans its legs one by
+    one (their joints take goals)."""
+    legs = [set(limb.joints) for limb in body.limbs if limb.kind == "leg"]
+    if not legs:
+        return ()
+    walker = _Chains(urdf)
+    return tuple(
+        group
+        for group in srdf.arm_groups(min_joints)[:MOST_GROUPS]
+        if _mostly_on(walker.joints(group), legs)
     )
 
 

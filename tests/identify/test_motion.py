@@ -366,6 +366,24 @@ def walker_srdf(effectors: str) -> str:
     return f'<robot name="long_arms">{groups}{effectors}</robot>'
 
 
+def test_srdf_groups_each_on_a_leg_say_a_walkers_joints_take_goals() -> None:
+    # A walker's MoveIt configuration plans its legs one by one: no arm, no end effector.
+    text = builders.quadruped().text()
+    groups = "".join(
+        f'<group name="{c}_leg"><joint name="{c}_hip"/><joint name="{c}_thigh"/>'
+        f'<joint name="{c}_calf"/></group>'
+        for c in ("FL", "FR", "RL", "RR")
+    )
+    srdf = f'<robot name="dog">{groups}</robot>'
+    found = identify_urdf(text, srdf_text=srdf, srdf_file="dog.srdf")
+    shown = {c.motion_control: c.source for c in found.motion_controls}
+    planned = "dog.srdf: planning group(s) FL_leg, FR_leg, RL_leg, RR_leg (each on a leg)"
+    assert planned in shown["Joint"]
+    assert "End Effector" not in shown
+    # Read alone, its legs walk under a gait: no joint goals.
+    assert "Joint" not in {c.motion_control for c in identify_urdf(text).motion_controls}
+
+
 def test_an_srdf_whose_end_effectors_are_all_feet_plans_joints_not_cartesian_goals() -> None:
     # A walker's whole-body model (for its balance controller) names where it stands; its arm
     # groups are joint groups, and no end effector is guessed for its arms ending in grippers.

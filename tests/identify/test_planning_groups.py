@@ -33,7 +33,7 @@ def test_a_chain_group_that_extends_an_arm_group_plans_the_same_arm() -> None:
     assert any(e.startswith("SRDF: 1 arm planning group(s) (upper)") for e in extended.evidence)
 
 
-def test_leg_groups_and_feet_plan_no_arm_and_no_end_effector_goals() -> None:
+def test_leg_groups_and_feet_plan_no_arm_and_no_end_effector_goals_only_the_legs_joints() -> None:
     legs = "".join(
         f'<group name="{c}_leg"><chain base_link="base_link" tip_link="{c}_foot"/></group>'
         f'<end_effector name="{c}_foot" parent_link="{c}_foot" group="{c}_leg"/>'
@@ -47,9 +47,10 @@ def test_leg_groups_and_feet_plan_no_arm_and_no_end_effector_goals() -> None:
     plain = identify_urdf(builders.quadruped().text())
     planned = identify_urdf(builders.quadruped().text(), srdf_text=text)
     assert (planned.structure, planned.confidence) == (plain.structure, plain.confidence)
-    # The legs walk (a guess from the legs themselves); the SRDF adds no goal for them.
-    assert planned.motion_controls == plain.motion_controls
-    assert [c.motion_control for c in planned.motion_controls] == ["Walking"]
+    # The legs walk (a guess from the legs themselves); the SRDF plans them joint by joint
+    # (labelled Joint on the development part's hexapods), no Cartesian goal.
+    assert [c.motion_control for c in plain.motion_controls] == ["Walking"]
+    assert [c.motion_control for c in planned.motion_controls] == ["Walking", "Joint"]
 
 
 def test_many_copies_of_one_arm_group_plan_one_arm_and_the_rest_are_not_read() -> None:

@@ -551,6 +551,24 @@ def test_a_ros2_control_magnetometer_pressure_gauge_and_named_dvl_are_read() -> 
     assert sorted(kind for kind, _, _ in found) == ["barometer", "dvl", "magnetometer"]
 
 
+def test_a_ros2_control_sensor_block_reading_an_attitude_through_joints_is_an_imu() -> None:
+    # A balancing robot's IMU chip, its roll, pitch and yaw written on the wheels' joints.
+    states = (
+        '<state_interface name="yaw"/><state_interface name="pitch"/><state_interface name="roll"/>'
+    )
+    gyro = (
+        '<ros2_control name="Gyro" type="sensor"><hardware><plugin>hw/ICM20948</plugin>'
+        f'</hardware><joint name="left_wheel">{states}</joint>'
+        f'<joint name="right_wheel">{states}</joint></ros2_control>'
+    )
+    assert kinds(gyro) == [("imu", None, 1)]
+    # A sensor block reading only its joints' positions is an encoder's: no device.
+    encoder = gyro.replace(states, '<state_interface name="position"/>')
+    assert kinds(encoder) == []
+    # A system's joints read their own motion, whatever their interfaces are named.
+    assert kinds(gyro.replace('type="sensor"', 'type="system"')) == []
+
+
 def test_a_ros2_control_device_named_external_is_still_a_device() -> None:
     # An IMU or a force sensor mounted outside the robot's body: external, measured.
     found = kinds(

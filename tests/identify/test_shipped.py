@@ -46,6 +46,7 @@ def test_a_bringup_that_runs_nav2_ships_waypoint_goals_named_by_its_file() -> No
 def test_move_base_and_position_set_points_are_navigation_too() -> None:
     assert "Waypoint" in shipped("UGV", "<node pkg='move_base' type='move_base'/>")
     assert "Waypoint" in shipped("UAV", "rospy.Publisher('mavros/setpoint_position/local')")
+    assert "Waypoint" in shipped("Hexapod", "# point_to_point.py: walk to each (x, y) listed")
 
 
 def test_an_arm_bolted_in_place_is_sent_no_waypoints_whatever_its_repository_holds() -> None:

@@ -758,9 +758,14 @@ def _hardware_sensors(root: etree._Element) -> list[SensorTag]:
     pressure a barometer (a depth gauge below the water), a velocity a DVL named so. A pose
     (``tcp_pose``) is computed, not read, and a block named as an estimate
     (``external_wrench_in_base``) is the controller's reckoning from the joints' torques, not a
-    device of its own."""
+    device of its own. A block of ``type="sensor"`` that writes its readings on joints instead
+    (a balancing robot's IMU read as the wheels' roll, pitch and yaw) is one device, named by
+    the block."""
     found = []
     for control in root.findall("ros2_control"):
+        on_joints = _sensor_on_joints(control)
+        if on_joints is not None:
+            found.append(on_joints)
         for sensor in control.findall("sensor"):
             name = (sensor.get("name") or "").strip()
             readings = {
@@ -782,11 +787,31 @@ def _hardware_sensors(root: etree._Element) -> list[SensorTag]:
     return found
 
 
+def _sensor_on_joints(control: etree._Element) -> SensorTag | None:
+    """The device a ``<ros2_control type="sensor">`` block with no ``<sensor>`` reads through
+    its joints' state interfaces (a joint's position or velocity is an encoder's, no device)."""
+    if (control.get("type") or "").strip() != "sensor" or control.find("sensor") is not None:
+        return None
+    readings = {
+        (state.get("name") or "").strip().lower().split(".", 1)[0]
+        for joint in control.findall("joint")
+        for state in joint.findall("state_interface")
+    }
+    name = (control.get("name") or "").strip()
+    kind = _hardware_kind(name, readings)
+    if kind is None or _ESTIMATE.search(name):
+        return None
+    return SensorTag(name, kind, None, line_of(control), "ros2_control")
+
+
 def _hardware_kind(name: str, readings: set[str]) -> str | None:
     """The kind of device a ``<ros2_control>`` sensor is, by what it reads; a velocity over the
-    ground is a DVL's only where its name says so (odometry reads one too)."""
+    ground is a DVL's only where its name says so (odometry reads one too), and an attitude
+    (roll and pitch) is an IMU's."""
     if "linear_velocity" in readings and _DVL_NAME.search(name):
         return "dvl"
+    if readings >= _ATTITUDE:
+        return "imu"
     return next((k for k, read in _HARDWARE_READINGS if readings & read), None)
 
 
@@ -798,6 +823,8 @@ _HARDWARE_READINGS = (
     ("barometer", frozenset({"fluid_pressure"})),  # a depth gauge below the water
 )
 _DVL_NAME = re.compile(r"dvl|doppler", re.IGNORECASE)
+# An attitude a ros2_control sensor reads (its roll and pitch): an IMU's.
+_ATTITUDE = frozenset({"roll", "pitch"})
 _FRAME_PARAMS = frozenset({"frame_id", "sensor_frame", "frame"})
 _ESTIMATE = re.compile(r"estimat|external_(wrench|force|torque)", re.IGNORECASE)
 
