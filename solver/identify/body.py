@@ -41,6 +41,7 @@ from solver.identify.limbs import (
     Limb,
     arms_beside_legs,
     bolted_chain,
+    closed_loops,
     find_limbs,
     five_bars,
     flippers,
@@ -50,6 +51,7 @@ from solver.identify.limbs import (
     lone_leg,
     meeting_tips,
     moved_by,
+    parallel_robot,
     spine,
     wheeled_spine,
     wrist,
@@ -481,7 +483,8 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
     parts.limbs = five_bars(tree, legged)
     parts.limbs = arms_beside_legs(tree, parts.limbs)
     parts.limbs = flippers(tree, parts.limbs)
-    parts.limbs = meeting_tips(tree, parts.limbs)
+    parts.limbs = parallel_robot(tree, meeting_tips(tree, parts.limbs))
+    parts.limbs = closed_loops(tree, parts.limbs)
     if not parts.roles and not parts.trunk:  # a snake is its one chain, with nothing else
         parts.limbs = spine(tree, parts.limbs)
     elif not parts.roles and not parts.grippers:  # or its chain, with side wheels on it

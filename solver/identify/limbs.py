@@ -27,6 +27,10 @@ Where names say nothing, the chains' places and shapes still speak:
   (closer than their motors sit), or a mimic joint of one follows a joint of the other. Two
   legs that hang from different points of the base and end as far apart as they start (a
   front and a rear hip turning about one line along the body) are two legs;
+* three or six alike chains, the body's only limbs, starting on a level circle a third of a
+  turn apart, are one parallel manipulator (:func:`parallel_robot`: a delta, a Stewart
+  platform); two chains an SDF joint of a ``<gazebo>`` block closes onto each other are one
+  linkage (:func:`closed_loops`: a wheel-legged robot's five-bar leg drawn open);
 * one long chain of equal modules whose axes alternate, on a body that has nothing else, is a
   *spine*: a snake robot, no arm (:func:`spine`); a module may hold one joint or two (a yaw
   and a pitch joint close together), and the chain may carry single leaf joints on its
@@ -59,6 +63,7 @@ __all__ = [
     "Limb",
     "arms_beside_legs",
     "bolted_chain",
+    "closed_loops",
     "find_limbs",
     "five_bars",
     "flippers",
@@ -556,6 +561,76 @@ def meeting_tips(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     ]
 
 
+def parallel_robot(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
+    """Three or six alike chains, all the body's limbs, none a leg or ending in a gripper, on
+    one rigid body, starting on a circle whose third of a turn maps their starts onto each
+    other: a parallel robot (a delta's three arms, a Stewart platform's six), one manipulator
+    whose platform the description cannot hold. Its longest chain is the arm, the others its
+    linkage (as :func:`meeting_tips` reads chains named as legs whose tips meet)."""
+    if len(limbs) not in _PARALLEL_CHAINS or not _alike_chains(tree, limbs):
+        return limbs
+    starts = [_start(tree, limb) for limb in limbs]
+    if not _third_turn_symmetric(starts):
+        return limbs
+    arm = max(limbs, key=lambda limb: len(limb.joints))
+    why = (
+        f"a parallel mechanism: {len(limbs)} alike chains on a circle, a third of a turn "
+        "apart (a delta, a Stewart platform, a three-jaw claw)"
+    )
+    return [replace(limb, kind="arm" if limb is arm else "other", why=why) for limb in limbs]
+
+
+# A parallel robot's chains: a delta's three, a Stewart platform's six.
+_PARALLEL_CHAINS = (3, 6)
+# Starts this close (a share of the circle's radius) are one place.
+_ON_CIRCLE = 0.1
+
+
+def _alike_chains(tree: JointTree, limbs: list[Limb]) -> bool:
+    """Chains of one sequence of joint types (one of them may go on: the joint that turns
+    the platform), none a leg or ending in a gripper, all on one rigid body (the same nearest
+    moving joint above their bases)."""
+    known: dict[str, str | None] = {}
+    first = limbs[0]
+    kinds = [_joint_types(tree, limb) for limb in limbs]
+    shortest = min(len(k) for k in kinds)
+    if sum(len(k) > shortest for k in kinds) > 1:
+        return False
+    return all(
+        limb.kind in ("arm", "other")
+        and not limb.gripper
+        and kinds[i][:shortest] == kinds[0][:shortest]
+        and moved_by(tree.urdf, limb.base, known) == moved_by(tree.urdf, first.base, known)
+        for i, limb in enumerate(limbs)
+    )
+
+
+def _joint_types(tree: JointTree, limb: Limb) -> tuple[str, ...]:
+    return tuple(j.type if (j := tree.urdf.joint(n)) is not None else "" for n in limb.joints)
+
+
+def _third_turn_symmetric(starts: list[Place]) -> bool:
+    """``starts`` lie on a level circle (one height, one radius from their middle) and a third
+    of a turn about its middle maps each onto another."""
+    cx = sum(p[0] for p in starts) / len(starts)
+    cy = sum(p[1] for p in starts) / len(starts)
+    radii = [math.hypot(p[0] - cx, p[1] - cy) for p in starts]
+    radius = max(radii)
+    heights = [p[2] for p in starts]
+    if radius < _SAME_PLACE or min(radii) < (1 - _ON_CIRCLE) * radius:
+        return False
+    if max(heights) - min(heights) > _ON_CIRCLE * radius:
+        return False
+    turn = 2 * math.pi / 3
+    cos, sin = math.cos(turn), math.sin(turn)
+    for x, y, _ in starts:
+        rx = cx + cos * (x - cx) - sin * (y - cy)
+        ry = cy + sin * (x - cx) + cos * (y - cy)
+        if min(math.hypot(rx - p[0], ry - p[1]) for p in starts) > _ON_CIRCLE * radius:
+            return False
+    return True
+
+
 def _at_corners(tree: JointTree, base: str, group: list[Limb]) -> bool:
     """The chains start at the corners of ``base``: in pairs mirrored across it (left and right
     at one place along it), spread front to back at least as far as a pair is from the middle.
@@ -713,6 +788,58 @@ def five_bars(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
         merged.get(id(limb), limb) for limb in limbs if id(limb) not in used or id(limb) in merged
     ]
     return sort_limbs(tree, kept)
+
+
+def closed_loops(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
+    """Two chains a loop-closing joint of a ``<gazebo>`` block joins (an SDF joint from a link
+    below one to a link below the other: the loop a URDF cannot write) are one linkage, read as
+    the one that carries something (a wheel's mount, an arm, before a leg): a wheel-legged
+    robot's passive rear link closed onto the front one at its wheel is no leg of its own."""
+    if not tree.urdf.closures:
+        return limbs
+    owner = {name: index for index, limb in enumerate(limbs) for name in limb.joints}
+    known: dict[str, str | None] = {}
+    into: dict[int, int] = {}
+    for parent, child in tree.urdf.closures:
+        ends = [_limb_below(tree, link, owner, known) for link in (parent, child)]
+        if None in ends or ends[0] == ends[1]:
+            continue
+        one, other = sorted(
+            (i for i in ends if i is not None),
+            key=lambda i: _KEPT.index(limbs[i].kind) if limbs[i].kind in _KEPT else len(_KEPT),
+        )
+        if other not in into and one not in into:
+            into[other] = one
+    if not into:
+        return limbs
+    merged = {kept: limbs[kept] for kept in into.values()}
+    for closed, kept in into.items():
+        limb = merged[kept]
+        why = f"{limb.why}; closed by a loop joint with {shown(limbs[closed].joints[0])}'s chain"
+        merged[kept] = replace(limb, joints=limb.joints + limbs[closed].joints, why=why)
+    return [merged.get(i, limb) for i, limb in enumerate(limbs) if i not in into]
+
+
+# Which of two chains a loop closes keeps its kind: the one that carries something.
+_KEPT = ("mount", "arm", "head", "leg")
+
+
+def _limb_below(
+    tree: JointTree, link: str, owner: dict[str, int], known: dict[str, str | None]
+) -> int | None:
+    """The limb (its index in ``owner``) whose joints move ``link``: the nearest joint above it
+    that is a limb's, through joints of no limb (a wheel below a leg's last link)."""
+    for _ in range(_MOST_LOOP_JOINTS):
+        joint = moved_by(tree.urdf, link, known)
+        if joint is None:
+            return None
+        if joint in owner:
+            return owner[joint]
+        found = tree.urdf.joint(joint)
+        if found is None:
+            return None
+        link = found.parent
+    return None
 
 
 def _one_leg(tree: JointTree, one: Limb, other: Limb) -> str:

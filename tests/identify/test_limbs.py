@@ -1151,3 +1151,100 @@ def test_three_legs_whose_tips_stand_apart_stay_legs() -> None:
     result = identify_urdf(delta(reach=0.0))
     assert result.body is not None
     assert [limb.kind for limb in result.body.limbs] == ["leg", "leg", "leg"]
+
+
+def wheel_legged(*, closed: bool) -> RobotText:
+    """Two five-bar legs drawn open: on each side a front chain (hip, knee) carrying the wheel
+    and a passive rear chain (hip, knee) whose end a ``<gazebo>`` joint closes onto the wheel
+    (with ``closed``; the loop a URDF cannot write)."""
+    robot = RobotText("wheel_legged")
+    axis = '<axis xyz="0 1 0"/>'
+    for side, y in (("l", 0.2), ("r", -0.2)):
+        for end, x in (("front", 0.05), ("rear", -0.05)):
+            robot.joint(
+                f"{side}_{end}_hip",
+                "revolute",
+                robot.root,
+                f"{side}_{end}_thigh",
+                f'<origin xyz="{x} {y} 0"/>{axis}<limit lower="-1" upper="1"/>',
+            )
+            robot.joint(
+                f"{side}_{end}_knee",
+                "continuous",
+                f"{side}_{end}_thigh",
+                f"{side}_{end}_shin",
+                f'<origin xyz="{3 * x} 0 -0.1"/>{axis}',
+            )
+        robot.joint(
+            f"{side}_wheel_joint",
+            "continuous",
+            f"{side}_front_shin",
+            f"{side}_wheel",
+            f'<origin xyz="-0.1 0 -0.2"/>{axis}',
+        )
+        if closed:
+            robot.add(
+                f'<gazebo><joint name="{side}_closure" type="revolute">'
+                f"<parent>{side}_rear_shin</parent><child>{side}_wheel</child></joint></gazebo>"
+            )
+    return robot
+
+
+def test_a_chain_a_gazebo_joint_closes_onto_another_is_part_of_that_linkage() -> None:
+    result = identify_urdf(wheel_legged(closed=True).text())
+    assert result.body is not None
+    assert [(limb.kind, len(limb.joints)) for limb in result.body.limbs] == [
+        ("mount", 4),
+        ("mount", 4),
+    ]
+    assert result.structure == "UGV"
+    assert any("closed by a loop joint" in limb.why for limb in result.body.limbs)
+    # Drawn open, with nothing that closes the loop, the rear chains are legs of their own.
+    assert identify_urdf(wheel_legged(closed=False).text()).structure == "Biped"
+
+
+def test_the_urdf_keeps_only_the_gazebo_closures_between_its_own_links() -> None:
+    robot = wheel_legged(closed=True)
+    robot.add(
+        "<gazebo><joint name='x' type='revolute'><parent>l_rear_shin</parent>"
+        "<child>nowhere</child></joint></gazebo>"
+    )
+    closures = parse_urdf(robot.text()).closures
+    assert closures == (("l_rear_shin", "l_wheel"), ("r_rear_shin", "r_wheel"))
+
+
+def circle_of_arms(count: int, *, turn: float = 0.0) -> str:
+    """``count`` alike two-joint chains named as arms on a circle 0.2 m out, evenly spaced
+    (the first turned ``turn`` radians further)."""
+    links = ["base_link"]
+    joints = []
+    for i in range(count):
+        angle = 2 * math.pi * i / count + (turn if i == 0 else 0.0)
+        x, y = 0.2 * math.cos(angle), 0.2 * math.sin(angle)
+        links += [f"upper_arm_{i}", f"lower_arm_{i}"]
+        joints.append(
+            builders.joint_xml(
+                f"shoulder_{i}", "revolute", "base_link", f"upper_arm_{i}", f"{x} {y} 0", "0 1 0"
+            )
+        )
+        joints.append(
+            builders.joint_xml(
+                f"elbow_{i}", "revolute", f"upper_arm_{i}", f"lower_arm_{i}", "0.2 0 0", "0 1 0"
+            )
+        )
+    body = "".join(f'<link name="{link}"/>' for link in links) + "".join(joints)
+    return f'<robot name="parallel">{body}</robot>'
+
+
+@pytest.mark.parametrize("count", [3, 6])
+def test_alike_chains_a_third_of_a_turn_apart_are_one_parallel_manipulator(count: int) -> None:
+    # A delta's three arms, a Stewart platform's six: one manipulator holding one platform.
+    result = identify_urdf(circle_of_arms(count))
+    assert result.structure == "Manipulator"
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["arm"] + ["other"] * (count - 1)
+
+
+def test_chains_not_a_third_of_a_turn_apart_or_four_of_them_stay_arms() -> None:
+    assert identify_urdf(circle_of_arms(3, turn=0.5)).structure == "Torso"
+    assert identify_urdf(circle_of_arms(4)).structure == "Torso"

@@ -118,6 +118,7 @@ def test_package_rules_are_optional_and_their_structures_are_checked() -> None:
     shipped = load_profile().package_controls
     assert [rule.control for rule in shipped] == [
         "Waypoint",
+        "Waypoint",
         "velocity",
         "End Effector",
         "End Effector",

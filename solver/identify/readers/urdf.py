@@ -58,6 +58,8 @@ _ENDLESS_RANGE = 100.0
 _MAX_TAGS = 2000
 # Warnings of one kind listed per description; the rest are counted.
 _MAX_WARNINGS = 20
+# Loop-closing joints read from <gazebo> blocks (a walker has a few; bounds a stranger's).
+MAX_CLOSURES = 256
 
 
 @dataclass(frozen=True, slots=True)
@@ -230,6 +232,9 @@ class Urdf:
     # A <gazebo> block turns gravity off (<turnGravityOff>true, <gravity>false): a body the
     # simulator holds in the air (a kinematic drone) or in water.
     gravity_off: bool = False
+    # Loops a URDF cannot write, closed by SDF joints in <gazebo> blocks (<joint><parent>
+    # <child>): (parent link, child link), both links of the description.
+    closures: tuple[tuple[str, str], ...] = ()
 
     @cached_property
     def _children(self) -> dict[str, tuple[Joint, ...]]:
@@ -420,6 +425,7 @@ class _Builder:
             _tags(root),
             models,
             _gravity_off(root),
+            _closures(root, links),
         )
 
     def _links(self, elements: list[etree._Element]) -> dict[str, Link]:
@@ -827,6 +833,21 @@ _DVL_NAME = re.compile(r"dvl|doppler", re.IGNORECASE)
 _ATTITUDE = frozenset({"roll", "pitch"})
 _FRAME_PARAMS = frozenset({"frame_id", "sensor_frame", "frame"})
 _ESTIMATE = re.compile(r"estimat|external_(wrench|force|torque)", re.IGNORECASE)
+
+
+def _closures(root: etree._Element, links: dict[str, Link]) -> tuple[tuple[str, str], ...]:
+    """The links SDF joints in ``<gazebo>`` blocks join (a loop the tree cannot write: a
+    five-bar leg closed at its wheel), at most :data:`MAX_CLOSURES` of them."""
+    found = []
+    for block in root.findall("gazebo"):
+        for joint in block.findall("joint"):
+            parent = (joint.findtext("parent") or "").strip()
+            child = (joint.findtext("child") or "").strip()
+            if parent in links and child in links and parent != child:
+                found.append((parent, child))
+                if len(found) >= MAX_CLOSURES:
+                    return tuple(found)
+    return tuple(found)
 
 
 def _command_interfaces(root: etree._Element) -> tuple[tuple[str, tuple[str, ...]], ...]:
