@@ -149,14 +149,15 @@ def _travel(joint: Joint) -> tuple[float, float] | None:
 
 
 def _on_a_head(tree: JointTree, link: str) -> bool:
-    """A joint named as a head's moves ``link`` (a neck's pan and tilt: two mirrored hinges
-    there are eyelids or ears, not jaws)."""
+    """The nearest joint that moves ``link`` is named as a head's and not as an arm's (a
+    neck's pan and tilt: two mirrored hinges there are eyelids or ears, not jaws; an arm's
+    ``shoulder_pan`` far above a gripper is no head)."""
     joint = tree.urdf.parent_joint(link)
     for _ in range(64):
         if joint is None:
             return False
-        if joint.movable and tree.matches("head", joint):
-            return True
+        if joint.movable:
+            return tree.matches("head", joint) and not tree.matches("arm", joint)
         joint = tree.urdf.parent_joint(joint.parent)
     return False
 

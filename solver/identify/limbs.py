@@ -615,18 +615,21 @@ def _third_turn_symmetric(starts: list[Place]) -> bool:
     cx = sum(p[0] for p in starts) / len(starts)
     cy = sum(p[1] for p in starts) / len(starts)
     radii = [math.hypot(p[0] - cx, p[1] - cy) for p in starts]
+    if not all(math.isfinite(r) for r in (cx, cy, *radii)):
+        return False  # a stranger's 1e308s overflow: no circle is read
     radius = max(radii)
     heights = [p[2] for p in starts]
-    if radius < _SAME_PLACE or min(radii) < (1 - _ON_CIRCLE) * radius:
+    # Each test is written so that a NaN (a stranger's overflowing numbers) fails it.
+    if not (radius >= _SAME_PLACE and min(radii) >= (1 - _ON_CIRCLE) * radius):
         return False
-    if max(heights) - min(heights) > _ON_CIRCLE * radius:
+    if not max(heights) - min(heights) <= _ON_CIRCLE * radius:
         return False
     turn = 2 * math.pi / 3
     cos, sin = math.cos(turn), math.sin(turn)
     for x, y, _ in starts:
         rx = cx + cos * (x - cx) - sin * (y - cy)
         ry = cy + sin * (x - cx) + cos * (y - cy)
-        if min(math.hypot(rx - p[0], ry - p[1]) for p in starts) > _ON_CIRCLE * radius:
+        if not min(math.hypot(rx - p[0], ry - p[1]) for p in starts) <= _ON_CIRCLE * radius:
             return False
     return True
 
@@ -808,7 +811,9 @@ def closed_loops(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
             (i for i in ends if i is not None),
             key=lambda i: _KEPT.index(limbs[i].kind) if limbs[i].kind in _KEPT else len(_KEPT),
         )
-        if other not in into and one not in into:
+        # A chain is closed onto one other, or keeps others closed onto it, never both: a
+        # chain of closures never drops the chain in its middle.
+        if other not in into and one not in into and other not in into.values():
             into[other] = one
     if not into:
         return limbs

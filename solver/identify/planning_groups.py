@@ -67,18 +67,20 @@ def arm_plans(
 def leg_plans(
     body: Body, srdf: Srdf, min_joints: int, urdf: Urdf | None = None
 ) -> tuple[Group, ...]:
-    """The SRDF's planning groups (among its first :data:`MOST_GROUPS` candidates) that lie
-    mostly on one of ``body``'s legs: a walker's MoveIt configuration plans its legs one by
-    one (their joints take goals)."""
+    """The SRDF's planning groups (among its first :data:`MOST_GROUPS` candidates) of as many
+    joints as an arm group, each lying mostly on one of ``body``'s legs: a walker's MoveIt
+    configuration plans its legs (their joints take goals)."""
     legs = [set(limb.joints) for limb in body.limbs if limb.kind == "leg"]
     if not legs:
         return ()
     walker = _Chains(urdf)
-    return tuple(
-        group
-        for group in srdf.arm_groups(min_joints)[:MOST_GROUPS]
-        if _mostly_on(walker.joints(group), legs)
-    )
+    found = []
+    for group in srdf.arm_groups(min_joints)[:MOST_GROUPS]:
+        joints = walker.joints(group)
+        # as many joints as an arm group needs: an ankle's chain alone plans no leg
+        if (urdf is None or len(joints) >= min_joints) and _mostly_on(joints, legs):
+            found.append(group)
+    return tuple(found)
 
 
 def _mostly_on(joints: frozenset[str], parts: list[set[str]]) -> bool:

@@ -97,9 +97,16 @@ def test_equal_limits_on_joints_coupled_by_mimic_are_placeholders_not_a_lock() -
     left, right = urdf.joint("left"), urdf.joint("right")
     assert left is not None
     assert right is not None
-    assert (left.mimicked, left.movable, left.actuated) == (True, True, True)
+    assert (left.coupled, left.movable, left.actuated) == (True, True, True)
     assert (right.movable, right.actuated) == (True, False)
     assert identify_urdf(robot.text()).structure == "Gripper"
+    # A fixed joint couples nothing: a sensor mount naming it in <mimic> stays locked.
+    mount = RobotText("m")
+    mount.joint("drv", "fixed", mount.root, "a", "")
+    mount.joint("f1", "revolute", mount.root, "b", zero + '<mimic joint="drv"/>')
+    mount.joint("f2", "revolute", mount.root, "c", zero + '<mimic joint="f2"/>')  # itself
+    locked = parse_urdf(mount.text())
+    assert [locked.joint(n).movable for n in ("f1", "f2")] == [False, False]  # type: ignore[union-attr]
 
 
 def test_flight_plugins_alone_make_a_uav() -> None:

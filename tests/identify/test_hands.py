@@ -265,6 +265,27 @@ def test_two_hinges_one_motion_closes_on_a_head_are_ears_not_jaws() -> None:
     assert found.body.grippers == 1
 
 
+def test_jaws_one_motion_closes_at_an_arms_end_stay_jaws_below_a_shoulder_pan() -> None:
+    # A UR-style arm: "pan" names its shoulder far above the gripper, no head's.
+    robot = RobotText("ur")
+    names = ["shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint"]
+    tip = robot.chain(robot.root, [*names, "wrist_1_joint", "wrist_2_joint", "wrist_3_joint"])
+    builders.placed(robot, "j_left", "prismatic", tip, "left_pad", xyz="0 0.02 0.05", axis="0 1 0")
+    builders.placed(
+        robot,
+        "j_right",
+        "prismatic",
+        tip,
+        "right_pad",
+        xyz="0 -0.02 0.05",
+        axis="0 -1 0",
+        extra='<mimic joint="j_left"/>',
+    )
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert result.body.grippers == 1
+
+
 def test_two_alike_jaws_that_are_a_bodys_only_motions_are_a_gripper_on_its_own() -> None:
     result = identify_urdf(sliding_jaws().text())
     assert result.structure == "Gripper"

@@ -1213,9 +1213,9 @@ def test_the_urdf_keeps_only_the_gazebo_closures_between_its_own_links() -> None
     assert closures == (("l_rear_shin", "l_wheel"), ("r_rear_shin", "r_wheel"))
 
 
-def circle_of_arms(count: int, *, turn: float = 0.0) -> str:
+def circle_of_arms(count: int, *, turn: float = 0.0, rise: float = 0.0) -> str:
     """``count`` alike two-joint chains named as arms on a circle 0.2 m out, evenly spaced
-    (the first turned ``turn`` radians further)."""
+    (the first turned ``turn`` radians further; each ``rise`` metres above the one before)."""
     links = ["base_link"]
     joints = []
     for i in range(count):
@@ -1224,7 +1224,12 @@ def circle_of_arms(count: int, *, turn: float = 0.0) -> str:
         links += [f"upper_arm_{i}", f"lower_arm_{i}"]
         joints.append(
             builders.joint_xml(
-                f"shoulder_{i}", "revolute", "base_link", f"upper_arm_{i}", f"{x} {y} 0", "0 1 0"
+                f"shoulder_{i}",
+                "revolute",
+                "base_link",
+                f"upper_arm_{i}",
+                f"{x} {y} {i * rise}",
+                "0 1 0",
             )
         )
         joints.append(
@@ -1248,3 +1253,48 @@ def test_alike_chains_a_third_of_a_turn_apart_are_one_parallel_manipulator(count
 def test_chains_not_a_third_of_a_turn_apart_or_four_of_them_stay_arms() -> None:
     assert identify_urdf(circle_of_arms(3, turn=0.5)).structure == "Torso"
     assert identify_urdf(circle_of_arms(4)).structure == "Torso"
+
+
+def test_a_chain_of_closures_drops_no_chain() -> None:
+    # Two legs closed onto each other, and an arm closed onto the first: every joint stays in
+    # a limb (a chain is closed onto one other, or keeps others, never both).
+    robot = RobotText("r")
+    for chain, x, y in (("a", 0.3, 0.1), ("b", 0.3, -0.1), ("c", -0.3, 0.0)):
+        link = robot.root
+        for i in range(3):
+            xyz = f"{x} {y} 0" if i == 0 else "0 0 -0.2"
+            link = builders.placed(
+                robot, f"{chain}_j{i}", "revolute", link, f"{chain}_l{i}", xyz=xyz, axis="0 1 0"
+            )
+    for parent, child in (("a_l2", "b_l2"), ("c_l2", "a_l2")):
+        robot.add(
+            f"<gazebo><joint name='{parent}_{child}' type='revolute'><parent>{parent}</parent>"
+            f"<child>{child}</child></joint></gazebo>"
+        )
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    in_limbs = sorted(name for limb in result.body.limbs for name in limb.joints)
+    assert in_limbs == sorted(f"{c}_j{i}" for c in "abc" for i in range(3))
+
+
+def test_only_alike_chains_on_a_level_circle_are_a_parallel_manipulator() -> None:
+    delta = circle_of_arms(3)
+    # Two chains longer than the rest (only the platform's chain may go on): three arms.
+    longer = delta.replace(
+        "</robot>",
+        builders.joint_xml("w1", "revolute", "lower_arm_1", "h1", "0.1 0 0", "0 0 1")
+        + builders.joint_xml("w2", "revolute", "lower_arm_2", "h2", "0.1 0 0", "0 0 1")
+        + '<link name="h1"/><link name="h2"/></robot>',
+    )
+    assert identify_urdf(longer).structure == "Torso"
+    # Chains at three heights are no level circle.
+    assert identify_urdf(circle_of_arms(3, rise=0.1)).structure == "Torso"
+
+
+def test_overflowing_places_read_no_circle() -> None:
+    # A stranger's 1e308s: no symmetry can be read, the chains stay three arms.
+    robot = circle_of_arms(3)
+    places = [p.split('"')[0] for p in robot.split('<origin xyz="')[1:]]
+    for place, far in zip(places[::2], ("1e+308 0 0", "1e+308 1e+308 0", "0.5 -3 1"), strict=True):
+        robot = robot.replace(f'<origin xyz="{place}"/>', f'<origin xyz="{far}"/>', 1)
+    assert identify_urdf(robot).structure == "Torso"

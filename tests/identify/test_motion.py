@@ -382,6 +382,13 @@ def test_srdf_groups_each_on_a_leg_say_a_walkers_joints_take_goals() -> None:
     assert "End Effector" not in shown
     # Read alone, its legs walk under a gait: no joint goals.
     assert "Joint" not in {c.motion_control for c in identify_urdf(text).motion_controls}
+    # A group of one ankle joint plans no leg.
+    ankle = (
+        '<robot name="dog"><group name="ankle">'
+        '<chain base_link="FL_thigh_link" tip_link="FL_calf_link"/></group></robot>'
+    )
+    alone = identify_urdf(text, srdf_text=ankle, srdf_file="dog.srdf")
+    assert "Joint" not in {c.motion_control for c in alone.motion_controls}
 
 
 def test_an_srdf_whose_end_effectors_are_all_feet_plans_joints_not_cartesian_goals() -> None:

@@ -47,6 +47,9 @@ def test_move_base_and_position_set_points_are_navigation_too() -> None:
     assert "Waypoint" in shipped("UGV", "<node pkg='move_base' type='move_base'/>")
     assert "Waypoint" in shipped("UAV", "rospy.Publisher('mavros/setpoint_position/local')")
     assert "Waypoint" in shipped("Hexapod", "# point_to_point.py: walk to each (x, y) listed")
+    # Point-to-point scan matching (ICP) is no walk.
+    for icp in ("TransformationEstimationPointToPoint()", "icp_method: point_to_point"):
+        assert shipped("UGV", icp) == {}
     # A target pose is a vehicle's goal, but a walker's foot in its leg kinematics.
     assert "Waypoint" in shipped("UGV", "self.target_pose = goal")
     assert shipped("Hexapod", "foot.target_pose = ik(leg)") == {}

@@ -94,8 +94,9 @@ class Joint:
     # Whether the description writes an <axis> (else ``axis`` is URDF's default, x): what a
     # joint's name says is weighed against a written axis only.
     axis_written: bool = True
-    # Whether another joint follows it (names it in <mimic>).
-    mimicked: bool = False
+    # Whether it is one of a pair <mimic> couples: it follows another joint that is no fixed
+    # joint, or such a joint follows it.
+    coupled: bool = False
 
     @property
     def movable(self) -> bool:
@@ -108,8 +109,7 @@ class Joint:
             self.type in ("revolute", "prismatic")
             and self.lower is not None
             and self.lower == self.upper
-            and self.mimic is None
-            and not self.mimicked
+            and not self.coupled
         )
 
     def turns(self, at_least: float) -> bool:
@@ -461,9 +461,9 @@ class _Builder:
                 )
                 continue
             found[joint.name] = joint
-        followed = {joint.mimic for joint in found.values() if joint.mimic is not None}
+        coupled = _coupled(found)
         return [
-            replace(joint, mimicked=True) if name in followed else joint
+            replace(joint, coupled=True) if name in coupled else joint
             for name, joint in found.items()
         ]
 
@@ -833,6 +833,20 @@ _DVL_NAME = re.compile(r"dvl|doppler", re.IGNORECASE)
 _ATTITUDE = frozenset({"roll", "pitch"})
 _FRAME_PARAMS = frozenset({"frame_id", "sensor_frame", "frame"})
 _ESTIMATE = re.compile(r"estimat|external_(wrench|force|torque)", re.IGNORECASE)
+
+
+def _coupled(joints: dict[str, Joint]) -> set[str]:
+    """The joints of pairs ``<mimic>`` couples: a joint that is not fixed following another
+    that exists, is not fixed and is not itself, and that joint."""
+    followers = {
+        joint.name
+        for joint in joints.values()
+        if joint.type != "fixed"
+        and joint.mimic not in (None, joint.name)
+        and (leader := joints.get(joint.mimic or "")) is not None
+        and leader.type != "fixed"
+    }
+    return followers | {joints[name].mimic or "" for name in followers}
 
 
 def _closures(root: etree._Element, links: dict[str, Link]) -> tuple[tuple[str, str], ...]:
