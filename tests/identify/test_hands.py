@@ -240,50 +240,45 @@ def test_two_hinges_mirroring_each_other_at_the_end_of_an_arm_are_its_jaws() -> 
         assert identify_urdf(cad_arm(axes, limits).text()).structure != "Manipulator"
 
 
-def test_two_hinges_one_motion_closes_on_a_head_are_ears_not_jaws() -> None:
-    # A pet robot's head (pan and tilt named so) with two ears, one following the other.
-    robot = RobotText("pet")
-    tip = robot.chain(robot.root, ["head_pan", "head_tilt"])
-    builders.placed(robot, "ear_l", "revolute", tip, "ear_l_link", xyz="0 0.02 0.05", axis="1 0 0")
+def mirrored_pair(chain: list[str], kind: str, axis: str) -> RobotText:
+    """A chain of joints ``chain`` ending in two joints of ``kind`` side by side, one following
+    the other mirrored (``<mimic multiplier="-1">``), about ``axis``."""
+    robot = RobotText("r")
+    tip = robot.chain(robot.root, chain)
+    builders.placed(robot, "pair_l", kind, tip, "pair_l_link", xyz="0 0.02 0.05", axis=axis)
     builders.placed(
         robot,
-        "ear_r",
-        "revolute",
+        "pair_r",
+        kind,
         tip,
-        "ear_r_link",
+        "pair_r_link",
         xyz="0 -0.02 0.05",
-        axis="1 0 0",
-        extra='<mimic joint="ear_l" multiplier="-1"/>',
+        axis=axis,
+        extra='<mimic joint="pair_l" multiplier="-1"/>',
     )
+    return robot
+
+
+def grippers(robot: RobotText) -> int:
     result = identify_urdf(robot.text())
     assert result.body is not None
-    assert result.body.grippers == 0
+    return result.body.grippers
+
+
+def test_two_hinges_one_motion_closes_on_a_head_are_ears_not_jaws() -> None:
+    # A pet robot's head (pan and tilt named so) with two ears, one following the other.
+    assert grippers(mirrored_pair(["head_pan", "head_tilt"], "revolute", "1 0 0")) == 0
     # The same pair at the end of an arm's two joints closes a gripper.
-    arm = robot.text().replace("head_pan", "joint1").replace("head_tilt", "joint2")
-    found = identify_urdf(arm)
-    assert found.body is not None
-    assert found.body.grippers == 1
+    assert grippers(mirrored_pair(["joint1", "joint2"], "revolute", "1 0 0")) == 1
 
 
 def test_jaws_one_motion_closes_at_an_arms_end_stay_jaws_below_a_shoulder_pan() -> None:
     # A UR-style arm: "pan" names its shoulder far above the gripper, no head's.
-    robot = RobotText("ur")
-    names = ["shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint"]
-    tip = robot.chain(robot.root, [*names, "wrist_1_joint", "wrist_2_joint", "wrist_3_joint"])
-    builders.placed(robot, "j_left", "prismatic", tip, "left_pad", xyz="0 0.02 0.05", axis="0 1 0")
-    builders.placed(
-        robot,
-        "j_right",
-        "prismatic",
-        tip,
-        "right_pad",
-        xyz="0 -0.02 0.05",
-        axis="0 -1 0",
-        extra='<mimic joint="j_left"/>',
+    names = ["shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint", "wrist_1_joint"]
+    assert (
+        grippers(mirrored_pair([*names, "wrist_2_joint", "wrist_3_joint"], "prismatic", "0 1 0"))
+        == 1
     )
-    result = identify_urdf(robot.text())
-    assert result.body is not None
-    assert result.body.grippers == 1
 
 
 def test_two_alike_jaws_that_are_a_bodys_only_motions_are_a_gripper_on_its_own() -> None:
