@@ -769,45 +769,34 @@ def _hardware_sensors(root: etree._Element) -> list[SensorTag]:
     the block."""
     found = []
     for control in root.findall("ros2_control"):
-        on_joints = _sensor_on_joints(control)
-        if on_joints is not None:
-            found.append(on_joints)
-        for sensor in control.findall("sensor"):
-            name = (sensor.get("name") or "").strip()
-            readings = {
-                (state.get("name") or "").strip().lower().split(".", 1)[0]
-                for state in sensor.findall("state_interface")
-            }
-            kind = _hardware_kind(name, readings)
-            if kind is None or _ESTIMATE.search(name):
-                continue
-            frame = next(
-                (
-                    (param.text or "").strip()
-                    for param in sensor.findall("param")
-                    if param.get("name") in _FRAME_PARAMS and (param.text or "").strip()
-                ),
-                None,
-            )
-            found.append(SensorTag(name, kind, frame, line_of(sensor), "ros2_control"))
-    return found
+        sensors = control.findall("sensor")
+        if not sensors and (control.get("type") or "").strip() == "sensor":
+            # Its readings written on joints (a joint's position or velocity is an encoder's).
+            states = [
+                s for joint in control.findall("joint") for s in joint.findall("state_interface")
+            ]
+            found.append(_device(control, states))
+        found += (_device(sensor, sensor.findall("state_interface")) for sensor in sensors)
+    return [device for device in found if device is not None]
 
 
-def _sensor_on_joints(control: etree._Element) -> SensorTag | None:
-    """The device a ``<ros2_control type="sensor">`` block with no ``<sensor>`` reads through
-    its joints' state interfaces (a joint's position or velocity is an encoder's, no device)."""
-    if (control.get("type") or "").strip() != "sensor" or control.find("sensor") is not None:
-        return None
-    readings = {
-        (state.get("name") or "").strip().lower().split(".", 1)[0]
-        for joint in control.findall("joint")
-        for state in joint.findall("state_interface")
-    }
-    name = (control.get("name") or "").strip()
+def _device(element: etree._Element, states: list[etree._Element]) -> SensorTag | None:
+    """The device ``element`` (a ``<sensor>``, or a sensor block) is by what its ``states``
+    read, or None (see :func:`_hardware_sensors`)."""
+    name = (element.get("name") or "").strip()
+    readings = {(state.get("name") or "").strip().lower().split(".", 1)[0] for state in states}
     kind = _hardware_kind(name, readings)
     if kind is None or _ESTIMATE.search(name):
         return None
-    return SensorTag(name, kind, None, line_of(control), "ros2_control")
+    frame = next(
+        (
+            (param.text or "").strip()
+            for param in element.findall("param")
+            if param.get("name") in _FRAME_PARAMS and (param.text or "").strip()
+        ),
+        None,
+    )
+    return SensorTag(name, kind, frame, line_of(element), "ros2_control")
 
 
 def _hardware_kind(name: str, readings: set[str]) -> str | None:
