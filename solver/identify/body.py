@@ -515,7 +515,9 @@ def _commanded(tree: JointTree, parts: _Parts) -> list[str]:
     swims, a short chain of no limb is the vehicle's too (a control surface, a gimbal). The
     legs of a body that walks (two or more) are driven by its gait controller: a transmission
     or ``ros2_control`` interface on them carries the gait's output to the motors, not an
-    operator's command (the labelled sets count no Joint for it); a single leg is a limb.
+    operator's command (the labelled sets count no Joint for it); a single leg is a limb. A
+    track's sprocket spinning on a joint of no other role (a chain of its own) drives the
+    vehicle too.
     """
     vehicle = bool(
         parts.of("rotor") or tree.labels("flight") or fixed_rotors(tree) or tree.reader.marine
@@ -524,10 +526,24 @@ def _commanded(tree: JointTree, parts: _Parts) -> list[str]:
     kinds = tuple(
         k for k in _COMMANDED if not (vehicle and k == "other") and not (walks and k == "leg")
     )
-    limbs = [limb for limb in parts.limbs if limb.kind in kinds]
+    sprockets = set(_sprockets(tree))
+    limbs = [
+        limb
+        for limb in parts.limbs
+        if limb.kind in kinds and not (limb.kind == "other" and set(limb.joints) <= sprockets)
+    ]
     joints = [name for limb in limbs for name in limb.joints]
     carrying = _above(tree, [limb.joints[0] for limb in limbs])
     return joints + [name for name in parts.trunk if name in carrying]
+
+
+def _sprockets(tree: JointTree) -> list[str]:
+    """Track-named joints that spin without end (a track's drive sprocket or idler)."""
+    return [
+        name
+        for name in tracks(tree)
+        if (joint := tree.urdf.joint(name)) is not None and joint.type == "continuous"
+    ]
 
 
 def _above(tree: JointTree, names: list[str]) -> set[str]:

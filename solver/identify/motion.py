@@ -88,6 +88,10 @@ def _ground(body: Body, urdf_source: str) -> _Shown:
         found.append(
             ("steered_wheels", f"{urdf_source}: {count} swivel and wheel joint(s), no other wheel")
         )
+    if body.marine and not (body.thrusters or body.fins):
+        # A vessel whose propulsion is not drawn (a hull and sensor frames, thrusters a
+        # driver runs): it is driven, as a body flying by its packages is flown.
+        found.append(("thrusters", f"{urdf_source}: a vessel, its propulsion not drawn"))
     if body.planar_base:
         # The model moves its base in the plane (a planar joint, or root joints along x, y
         # and about z): what a planar-move plugin does, velocity commands in the plane.

@@ -128,8 +128,11 @@ def _element_detections(
     for tag in urdf.sensors:
         kind = element_kind(tag, profile)
         link = tag.link
-        if link is not None and not urdf.has_link(link) and link in urdf_links:
-            link = urdf_links[link]  # a Gazebo <sensor> referring to a URDF <sensor> by name
+        if link is not None and not urdf.has_link(link):
+            if link in urdf_links:
+                link = urdf_links[link]  # a Gazebo <sensor> referring to a URDF <sensor> by name
+            elif (joint := urdf.joint(link)) is not None:
+                link = joint.child  # a Gazebo <sensor> on a joint (a force/torque sensor)
         detection = Detection(kind, tag.name or tag.type, source, link, tag.vertical_samples)
         if kind == "dvl" and tag.type in _BEAM_TYPES:
             beams.add(id(detection))

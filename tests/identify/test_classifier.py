@@ -97,7 +97,7 @@ def test_equal_limits_on_joints_coupled_by_mimic_are_placeholders_not_a_lock() -
     left, right = urdf.joint("left"), urdf.joint("right")
     assert left is not None
     assert right is not None
-    assert (left.coupled, left.movable, left.actuated) == (True, True, True)
+    assert (left.unlocked, left.movable, left.actuated) == (True, True, True)
     assert (right.movable, right.actuated) == (True, False)
     assert identify_urdf(robot.text()).structure == "Gripper"
     # A fixed joint couples nothing: a sensor mount naming it in <mimic> stays locked.
@@ -105,8 +105,28 @@ def test_equal_limits_on_joints_coupled_by_mimic_are_placeholders_not_a_lock() -
     mount.joint("drv", "fixed", mount.root, "a", "")
     mount.joint("f1", "revolute", mount.root, "b", zero + '<mimic joint="drv"/>')
     mount.joint("f2", "revolute", mount.root, "c", zero + '<mimic joint="f2"/>')  # itself
+    mount.chain(mount.root, ["pan"])  # a joint that moves: the zero limits are no placeholders
     locked = parse_urdf(mount.text())
     assert [locked.joint(n).movable for n in ("f1", "f2")] == [False, False]  # type: ignore[union-attr]
+
+
+def test_limits_all_equal_on_every_joint_are_a_cad_exporters_placeholders_not_a_lock() -> None:
+    # An aerial manipulator exported from CAD: every joint revolute with limits 0..0.
+    zero = '<axis xyz="1 0 0"/><limit lower="0" upper="0" effort="0" velocity="0"/>'
+    robot = RobotText("drone_with_arm")
+    for i in range(1, 5):
+        robot.joint(f"prop{i}", "revolute", robot.root, f"prop{i}", zero)
+    robot.joint("manipulator_joint_1", "revolute", robot.root, "arm1", zero)
+    robot.joint("manipulator_joint_2", "revolute", "arm1", "arm2", zero)
+    urdf = parse_urdf(robot.text())
+    assert all(joint.unlocked and joint.movable for joint in urdf.joints)
+    assert identify_urdf(robot.text()).structure == "Aerial Manipulator"
+    # A camera mount locked beside rotors that spin (RotorS) stays locked.
+    rotors = builders.quadrotor()
+    rotors.joint("camera_mount", "revolute", rotors.root, "camera", zero)
+    rotors.joint("gimbal_mount", "revolute", rotors.root, "gimbal", zero)
+    mounts = parse_urdf(rotors.text())
+    assert [mounts.joint(n).movable for n in ("camera_mount", "gimbal_mount")] == [False, False]  # type: ignore[union-attr]
 
 
 def test_flight_plugins_alone_make_a_uav() -> None:

@@ -305,7 +305,8 @@ def test_gazebo_sim_spellings_of_drive_and_flight_plugins_are_read(
 
 
 def test_a_plugin_listing_thruster_entries_drives_a_vessel_whatever_it_is_called() -> None:
-    robot = builders.RobotText("boat")
+    # Named for no vessel: a vessel's name alone is driven (its propulsion not drawn).
+    robot = builders.RobotText("platform")
     robot.joint("fwd_joint", "revolute", robot.root, "fwd", '<limit lower="-0.5" upper="0.5"/>')
     robot.fixed(robot.root, "aft")
     robot.add(
@@ -608,3 +609,34 @@ def test_a_gripper_alone_is_opened_and_closed_on_command_a_guess_said_so() -> No
         c.source for c in identify_urdf(builders.manipulator().text()).motion_controls
     )
     assert "gripper or hand alone" not in sources
+
+
+def test_a_vessel_whose_propulsion_is_not_drawn_is_driven() -> None:
+    # A hull, a GPS and an IMU frame, and the buoyancy plugin that floats it: the thrusters are
+    # a driver's, not the description's.
+    robot = RobotText("hull")
+    robot.fixed(robot.root, "gps_link")
+    robot.fixed(robot.root, "imu_link")
+    robot.add(builders.model_plugin("float", "libbuoyancy_gazebo_plugin.so"))
+    result = identify_urdf(robot.text())
+    assert result.structure in {"Surface Vessel", "Underwater Vehicle"}
+    assert controls(robot) == {"Driving": "urdf: a vessel, its propulsion not drawn"}
+
+
+def tracked_base(*, sprocket: str = "continuous") -> RobotText:
+    """Two track-named joints a ros2_control block drives, sprockets too high to be wheels."""
+    robot = RobotText("crawler")
+    for side in ("left", "right"):
+        robot.joint(f"{side}_track_joint", sprocket, robot.root, f"{side}_drive_sprocket")
+    interfaces = "".join(
+        f'<joint name="{side}_track_joint"><command_interface name="velocity"/></joint>'
+        for side in ("left", "right")
+    )
+    robot.add(f'<ros2_control name="base" type="system">{interfaces}</ros2_control>')
+    return robot
+
+
+def test_a_tracks_spinning_sprockets_drive_the_vehicle_not_joint_goals() -> None:
+    assert "Joint" not in controls(tracked_base())
+    # A track-named joint with limits (a flipper on its hinge) is a limb a person commands.
+    assert "Joint" in controls(tracked_base(sprocket="revolute"))

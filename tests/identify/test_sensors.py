@@ -139,6 +139,8 @@ def test_model_plugins_count_as_sensors_but_ground_truth_does_not() -> None:
             "librotors_gazebo_odometry_plugin.so",
             "<linkName>ground_truth/odometry_link</linkName>",
         ),
+        # The simulator's link poses, published under a sensor's name.
+        builders.model_plugin("link_state_sensor", "libxbot2_gz_link_state_sensor.so"),
     )
     assert found == [("imu", None, 1), ("gps", None, 1), ("barometer", None, 1)]
 
@@ -151,6 +153,17 @@ def test_a_plugin_feeding_a_counted_element_is_the_same_sensor() -> None:
         ),
     )
     assert found == [("imu", None, 1)]
+
+
+def test_a_force_plugin_naming_the_joint_a_gazebo_force_sensor_is_on_is_the_same_sensor() -> None:
+    # builders.ugv() has wheel_left_joint: a force/torque sensor on a joint measures at its
+    # child link, the link a plugin naming the joint measures at.
+    assert kinds(
+        builders.gazebo_sensor("wheel_left_joint", "force_torque", "wheel_fts"),
+        builders.model_plugin(
+            "ft_sensor", "libgazebo_ros_ft_sensor.so", "<jointName>wheel_left_joint</jointName>"
+        ),
+    ) == [("force_torque", "Force Sensor", 1)]
 
 
 def test_counts_add_up_per_kind_and_only_presented_sensors_count() -> None:

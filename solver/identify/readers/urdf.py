@@ -54,6 +54,8 @@ _MAX_PARAMS = 400
 _MODEL_URI = "model://"
 # A revolute joint whose range spans this many radians (16 turns) has no stop: it is endless.
 _ENDLESS_RANGE = 100.0
+# Joints with limits, all equal, that read as an exporter's placeholders (one may be a lock).
+_PLACEHOLDER_JOINTS = 2
 # Distinct element names kept from the whole document (hull and buoyancy hints live there).
 _MAX_TAGS = 2000
 # Warnings of one kind listed per description; the rest are counted.
@@ -94,22 +96,24 @@ class Joint:
     # Whether the description writes an <axis> (else ``axis`` is URDF's default, x): what a
     # joint's name says is weighed against a written axis only.
     axis_written: bool = True
-    # Whether it is one of a pair <mimic> couples: it follows another joint that is no fixed
-    # joint, or such a joint follows it.
-    coupled: bool = False
+    # Whether equal limits are placeholders, not a lock: it is one of a pair <mimic> couples
+    # (it follows another joint that is no fixed joint, or such a joint follows it), or every
+    # joint with limits in the file has equal ones (:func:`_placeholders`).
+    unlocked: bool = False
 
     @property
     def movable(self) -> bool:
         if self.type == "fixed":
             return False
         # RotorS and others mount sensors on revolute joints with lower == upper: fixed in effect.
-        # Not a joint coupled by <mimic>: nobody couples a joint that cannot move, so its equal
-        # limits are placeholders (a kinematic simulator's fingers, limits all zero).
+        # Not an unlocked joint: nobody couples a joint that cannot move, nor locks every joint
+        # of a robot, so such equal limits are placeholders (a kinematic simulator's fingers, a
+        # CAD exporter's limits all zero).
         return not (
             self.type in ("revolute", "prismatic")
             and self.lower is not None
             and self.lower == self.upper
-            and not self.coupled
+            and not self.unlocked
         )
 
     def turns(self, at_least: float) -> bool:
@@ -461,9 +465,9 @@ class _Builder:
                 )
                 continue
             found[joint.name] = joint
-        coupled = _coupled(found)
+        unlocked = _coupled(found) | _placeholders(found)
         return [
-            replace(joint, coupled=True) if name in coupled else joint
+            replace(joint, unlocked=True) if name in unlocked else joint
             for name, joint in found.items()
         ]
 
@@ -836,6 +840,18 @@ def _coupled(joints: dict[str, Joint]) -> set[str]:
         and leader.type != "fixed"
     }
     return followers | {joints[name].mimic or "" for name in followers}
+
+
+def _placeholders(joints: dict[str, Joint]) -> set[str]:
+    """Every joint with limits, when all of them (two or more) have equal ones and no joint
+    turns without limits: a CAD exporter's placeholder limits (all zero), not a robot locked
+    whole. A sensor mount locked beside spinning rotors or wheels stays locked."""
+    limited = [j for j in joints.values() if j.type in ("revolute", "prismatic")]
+    if len(limited) < _PLACEHOLDER_JOINTS or any(j.type == "continuous" for j in joints.values()):
+        return set()
+    if all(j.lower is not None and j.lower == j.upper for j in limited):
+        return {j.name for j in limited}
+    return set()
 
 
 def _closures(root: etree._Element, links: dict[str, Link]) -> tuple[tuple[str, str], ...]:
