@@ -5,7 +5,7 @@ evidence that decided it, actuation first and names last:
 
 1. what :class:`~solver.identify.roles.RoleReader` reads of the joint: a plugin that names it,
    then its shape, then its name. Joints that cannot move (fixed, or revolute/prismatic with
-   lower == upper and no mimic coupling) play none;
+   lower == upper, unless their equal limits are placeholders: ``Joint.unlocked``) play none;
 2. wheels without names, told by where they are: endless leaves hanging below a link, at least
    one on each side of it;
 3. casters, a vertical swivel carrying one wheel; a caster driven through a transmission is no

@@ -7,8 +7,8 @@ patterns and thresholds, actuation first and names last, one step per module:
    (a drive plugin's wheels, a motor model's rotors, a thruster plugin's thrusters, a fin
    plugin's fins), then shapes (a vertical swivel carrying one wheel is a caster) and names.
    Wheels without names are told by where they are. Joints that cannot move (fixed, or
-   revolute/prismatic with lower == upper and no mimic coupling) and mimic joints (they follow
-   another) are not actuated.
+   revolute/prismatic with lower == upper, unless :attr:`Joint.unlocked`) and mimic joints
+   (they follow another) are not actuated.
 2. *Where the body is* (:mod:`solver.identify.placement`): a floating or planar base, and the
    root joints that only place the body.
 3. *Limbs* (:mod:`solver.identify.limbs`): the remaining actuated joints form a contracted tree
@@ -538,11 +538,14 @@ def _commanded(tree: JointTree, parts: _Parts) -> list[str]:
 
 
 def _sprockets(tree: JointTree) -> list[str]:
-    """Track-named joints that spin without end (a track's drive sprocket or idler)."""
+    """Track-named joints that spin without end (a track's drive sprocket or idler), not
+    commanded to a position (a flipper on a track, drawn continuous, is)."""
     return [
         name
         for name in tracks(tree)
-        if (joint := tree.urdf.joint(name)) is not None and joint.type == "continuous"
+        if (joint := tree.urdf.joint(name)) is not None
+        and joint.type == "continuous"
+        and "position" not in tree.urdf.interfaces(name)
     ]
 
 

@@ -88,10 +88,10 @@ def _ground(body: Body, urdf_source: str) -> _Shown:
         found.append(
             ("steered_wheels", f"{urdf_source}: {count} swivel and wheel joint(s), no other wheel")
         )
-    if body.marine and not (body.thrusters or body.fins):
+    if _undrawn_vessel(body):
         # A vessel whose propulsion is not drawn (a hull and sensor frames, thrusters a
         # driver runs): it is driven, as a body flying by its packages is flown.
-        found.append(("thrusters", f"{urdf_source}: a vessel, its propulsion not drawn"))
+        found.append(("thrusters", f"{urdf_source}: a vessel with no thruster or fin drawn"))
     if body.planar_base:
         # The model moves its base in the plane (a planar joint, or root joints along x, y
         # and about z): what a planar-move plugin does, velocity commands in the plane.
@@ -106,6 +106,14 @@ def _ground(body: Body, urdf_source: str) -> _Shown:
             ("controlled_rudders", f"{urdf_source}: {count} rudder joint(s) with a transmission")
         )
     return found
+
+
+def _undrawn_vessel(body: Body) -> bool:
+    """A body in water with no thruster or fin drawn (a sailboat's rudder no controller drives
+    steers nothing an operator commands). An arm or a gripper on it does not say otherwise: an
+    ROV carrying an arm has its thrusters left out as often (measured: asking for no arm and no
+    gripper lost two labelled vessels and kept none from a wrong Driving)."""
+    return body.marine and not (body.thrusters or body.fins)
 
 
 def _flight(body: Body, urdf_source: str) -> _Shown:

@@ -105,7 +105,6 @@ def test_equal_limits_on_joints_coupled_by_mimic_are_placeholders_not_a_lock() -
     mount.joint("drv", "fixed", mount.root, "a", "")
     mount.joint("f1", "revolute", mount.root, "b", zero + '<mimic joint="drv"/>')
     mount.joint("f2", "revolute", mount.root, "c", zero + '<mimic joint="f2"/>')  # itself
-    mount.chain(mount.root, ["pan"])  # a joint that moves: the zero limits are no placeholders
     locked = parse_urdf(mount.text())
     assert [locked.joint(n).movable for n in ("f1", "f2")] == [False, False]  # type: ignore[union-attr]
 
@@ -121,12 +120,26 @@ def test_limits_all_equal_on_every_joint_are_a_cad_exporters_placeholders_not_a_
     urdf = parse_urdf(robot.text())
     assert all(joint.unlocked and joint.movable for joint in urdf.joints)
     assert identify_urdf(robot.text()).structure == "Aerial Manipulator"
-    # A camera mount locked beside rotors that spin (RotorS) stays locked.
+    # Sensor mounts written so (RotorS, the UUV simulator) stay locked: each a leaf on the
+    # body, beside rotors that spin or alone, or on a floating base in a chain.
     rotors = builders.quadrotor()
     rotors.joint("camera_mount", "revolute", rotors.root, "camera", zero)
     rotors.joint("gimbal_mount", "revolute", rotors.root, "gimbal", zero)
-    mounts = parse_urdf(rotors.text())
-    assert [mounts.joint(n).movable for n in ("camera_mount", "gimbal_mount")] == [False, False]  # type: ignore[union-attr]
+    rig = RobotText("sensor_rig")
+    rig.joint("imu_joint", "revolute", rig.root, "imu_link", zero)
+    rig.joint("gps_joint", "revolute", rig.root, "gps_link", zero)
+    floating = RobotText("drone", root="world")
+    floating.joint("pose", "floating", "world", "body", "")
+    floating.joint("camera_mount", "revolute", "body", "camera", zero)
+    floating.joint("gimbal_mount", "revolute", "camera", "gimbal", zero)
+    for locked, names in [
+        (rotors, ("camera_mount", "gimbal_mount")),
+        (rig, ("imu_joint", "gps_joint")),
+        (floating, ("camera_mount", "gimbal_mount")),
+    ]:
+        urdf = parse_urdf(locked.text())
+        assert [urdf.joint(name).movable for name in names] == [False, False]  # type: ignore[union-attr]
+    assert identify_urdf(rig.text()).structure == "Other"
 
 
 def test_flight_plugins_alone_make_a_uav() -> None:

@@ -620,16 +620,26 @@ def test_a_vessel_whose_propulsion_is_not_drawn_is_driven() -> None:
     robot.add(builders.model_plugin("float", "libbuoyancy_gazebo_plugin.so"))
     result = identify_urdf(robot.text())
     assert result.structure in {"Surface Vessel", "Underwater Vehicle"}
-    assert controls(robot) == {"Driving": "urdf: a vessel, its propulsion not drawn"}
+    assert controls(robot) == {"Driving": "urdf: a vessel with no thruster or fin drawn"}
+    # A fin drawn (a sailboat's rudder no controller drives) steers nothing: no control.
+    robot.chain(robot.root, ["rudder_joint"])
+    assert controls(robot) == {}
 
 
-def tracked_base(*, sprocket: str = "continuous") -> RobotText:
+def tracked_base(*, sprocket: str = "continuous", command: str = "velocity") -> RobotText:
     """Two track-named joints a ros2_control block drives, sprockets too high to be wheels."""
     robot = RobotText("crawler")
+    limits = '<limit lower="-1" upper="1" effort="1" velocity="1"/>'
     for side in ("left", "right"):
-        robot.joint(f"{side}_track_joint", sprocket, robot.root, f"{side}_drive_sprocket")
+        robot.joint(
+            f"{side}_track_joint",
+            sprocket,
+            robot.root,
+            f"{side}_drive_sprocket",
+            limits if sprocket == "revolute" else "",
+        )
     interfaces = "".join(
-        f'<joint name="{side}_track_joint"><command_interface name="velocity"/></joint>'
+        f'<joint name="{side}_track_joint"><command_interface name="{command}"/></joint>'
         for side in ("left", "right")
     )
     robot.add(f'<ros2_control name="base" type="system">{interfaces}</ros2_control>')
@@ -638,5 +648,7 @@ def tracked_base(*, sprocket: str = "continuous") -> RobotText:
 
 def test_a_tracks_spinning_sprockets_drive_the_vehicle_not_joint_goals() -> None:
     assert "Joint" not in controls(tracked_base())
-    # A track-named joint with limits (a flipper on its hinge) is a limb a person commands.
+    # A track-named joint with limits (a flipper on its hinge) is a limb a person commands;
+    # so is one drawn continuous that a controller turns to a position.
     assert "Joint" in controls(tracked_base(sprocket="revolute"))
+    assert "Joint" in controls(tracked_base(command="position"))

@@ -54,8 +54,8 @@ _MAX_PARAMS = 400
 _MODEL_URI = "model://"
 # A revolute joint whose range spans this many radians (16 turns) has no stop: it is endless.
 _ENDLESS_RANGE = 100.0
-# Joints with limits, all equal, that read as an exporter's placeholders (one may be a lock).
-_PLACEHOLDER_JOINTS = 2
+# Joints that move without limits: beside them, equal limits are a lock, not placeholders.
+_UNLIMITED = frozenset({"continuous", "floating", "planar"})
 # Distinct element names kept from the whole document (hull and buoyancy hints live there).
 _MAX_TAGS = 2000
 # Warnings of one kind listed per description; the rest are counted.
@@ -843,15 +843,19 @@ def _coupled(joints: dict[str, Joint]) -> set[str]:
 
 
 def _placeholders(joints: dict[str, Joint]) -> set[str]:
-    """Every joint with limits, when all of them (two or more) have equal ones and no joint
-    turns without limits: a CAD exporter's placeholder limits (all zero), not a robot locked
-    whole. A sensor mount locked beside spinning rotors or wheels stays locked."""
-    limited = [j for j in joints.values() if j.type in ("revolute", "prismatic")]
-    if len(limited) < _PLACEHOLDER_JOINTS or any(j.type == "continuous" for j in joints.values()):
+    """Every joint with limits, when all of them have equal ones, one carries another (a chain,
+    not only mounts on a body) and no joint moves without limits (continuous, floating,
+    planar): a CAD exporter's placeholder limits (all zero), not a robot locked whole. Sensor
+    mounts written so (RotorS, the UUV simulator: each a leaf on the body) stay locked."""
+    limited = {j.name: j for j in joints.values() if j.type in ("revolute", "prismatic")}
+    if any(j.type in _UNLIMITED for j in joints.values()) or not all(
+        j.lower is not None and j.lower == j.upper for j in limited.values()
+    ):
         return set()
-    if all(j.lower is not None and j.lower == j.upper for j in limited):
-        return {j.name for j in limited}
-    return set()
+    carried = {j.child for j in limited.values()}
+    if not any(j.parent in carried for j in limited.values()):
+        return set()
+    return set(limited)
 
 
 def _closures(root: etree._Element, links: dict[str, Link]) -> tuple[tuple[str, str], ...]:
