@@ -370,10 +370,11 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
     _body_parts(tree, parts)
     controlled = urdf.controlled_joints
     wheels = parts.of("wheel")
+    track_names = tracks(tree)
     return Body(
         wheels=tuple(wheels),
         rotors=tuple(parts.of("rotor")),
-        tracks=tracks(tree),
+        tracks=track_names,
         drive_plugins=tree.labels("drive"),
         flight_plugins=tree.labels("flight"),
         limbs=tuple(parts.limbs),
@@ -384,7 +385,7 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
         planar_base=parts.placement.planar,
         controlled_wheels=tuple(w for w in wheels if w in controlled),
         controlled_fins=tuple(f for f in parts.of("fin") if f in controlled),
-        controlled_joints=tuple(j for j in _commanded(tree, parts) if j in controlled),
+        controlled_joints=tuple(j for j in _commanded(tree, parts, track_names) if j in controlled),
         controlled_fingers=tuple(
             sorted(
                 (j for j in parts.grippers if j in controlled and urdf.interfaces(j)),
@@ -507,7 +508,7 @@ def _trunks(tree: JointTree, limbs: list[Limb]) -> frozenset[str | None]:
     return frozenset(moved_by(tree.urdf, limb.base, known) for limb in legs)
 
 
-def _commanded(tree: JointTree, parts: _Parts) -> list[str]:
+def _commanded(tree: JointTree, parts: _Parts, track_names: tuple[str, ...]) -> list[str]:
     """Joints a person commands one by one: those of arms, legs and other limbs, and the trunk
     joints that carry one. A head points a sensor (a pan/tilt camera); a mount and a trunk
     carrying only mounts move wheels, rotors or thrusters (a transformable multirotor's frame,
@@ -526,7 +527,7 @@ def _commanded(tree: JointTree, parts: _Parts) -> list[str]:
     kinds = tuple(
         k for k in _COMMANDED if not (vehicle and k == "other") and not (walks and k == "leg")
     )
-    sprockets = set(_sprockets(tree))
+    sprockets = set(_sprockets(tree, track_names))
     limbs = [
         limb
         for limb in parts.limbs
@@ -537,12 +538,12 @@ def _commanded(tree: JointTree, parts: _Parts) -> list[str]:
     return joints + [name for name in parts.trunk if name in carrying]
 
 
-def _sprockets(tree: JointTree) -> list[str]:
-    """Track-named joints that spin without end (a track's drive sprocket or idler), not
-    commanded to a position (a flipper on a track, drawn continuous, is)."""
+def _sprockets(tree: JointTree, track_names: tuple[str, ...]) -> list[str]:
+    """The track joints (:func:`tracks`) that spin without end (a track's drive sprocket or
+    idler), not commanded to a position (a flipper on a track, drawn continuous, is)."""
     return [
         name
-        for name in tracks(tree)
+        for name in track_names
         if (joint := tree.urdf.joint(name)) is not None
         and joint.type == "continuous"
         and "position" not in tree.urdf.interfaces(name)

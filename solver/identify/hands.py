@@ -152,14 +152,9 @@ def _on_a_head(tree: JointTree, link: str) -> bool:
     """The nearest joint that moves ``link`` is named as a head's and not as an arm's (a
     neck's pan and tilt: two mirrored hinges there are eyelids or ears, not jaws; an arm's
     ``shoulder_pan`` far above a gripper is no head)."""
-    joint = tree.urdf.parent_joint(link)
-    for _ in range(64):
-        if joint is None:
-            return False
-        if joint.movable:
-            return tree.matches("head", joint) and not tree.matches("arm", joint)
-        joint = tree.urdf.parent_joint(joint.parent)
-    return False
+    name = moved_by(tree.urdf, link, {})
+    joint = tree.urdf.joint(name) if name is not None else None
+    return joint is not None and tree.matches("head", joint) and not tree.matches("arm", joint)
 
 
 def _parent_link(tree: JointTree, name: str) -> str:
