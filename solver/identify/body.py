@@ -36,7 +36,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 
 from solver.identify.actuation import joint_roles, with_role
-from solver.identify.hands import finger_groups, finger_tips, gripper_closure
+from solver.identify.hands import finger_groups, finger_tips, gripper_closure, stacked_grippers
 from solver.identify.limbs import (
     Limb,
     arms_beside_legs,
@@ -367,6 +367,8 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
     tree = JointTree(urdf, profile)
     parts = _Parts(roles=joint_roles(tree), placement=placement(tree))
     parts.roles.update(_rollers(tree, parts.roles))
+    for name in stacked_grippers(tree, parts.of("gripper")):
+        del parts.roles[name]  # an arm's joint, named for the gripper it carries
     _body_parts(tree, parts)
     controlled = urdf.controlled_joints
     wheels = parts.of("wheel")

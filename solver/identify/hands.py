@@ -23,7 +23,7 @@ from solver.identify.pose import local_axis, parallel
 from solver.identify.readers.urdf import Joint
 from solver.identify.tree import JointTree
 
-__all__ = ["finger_groups", "finger_tips", "gripper_closure", "jaws"]
+__all__ = ["finger_groups", "finger_tips", "gripper_closure", "jaws", "stacked_grippers"]
 
 # Parts whose names make a joint no jaw (a pair of eyes, two wheels, two legs).
 _NOT_JAWS = ("head", "leg", "wheel", "caster", "rotor", "thruster", "fin", "wing", "track")
@@ -174,6 +174,22 @@ def _ends_a_chain(tree: JointTree, link: str) -> bool:
             return True
         joint = tree.urdf.parent_joint(joint.parent)
     return False
+
+
+def stacked_grippers(tree: JointTree, grippers: list[str]) -> list[str]:
+    """The gripper-named joints that are an arm: every gripper joint of the body driven on its
+    own, one upon another in one unbranched chain of more than ``arm_min_joints`` (a lift, a
+    tilt and a turn, then the jaw). A gripper's jaws stand side by side or follow one motion;
+    stacked so, all but the last are the arm that carries it. Those, proximal first."""
+    joints = [j for j in (tree.urdf.joint(name) for name in grippers) if j is not None]
+    if len(joints) <= tree.profile.limb("arm_min_joints") or not all(j.actuated for j in joints):
+        return []
+    known: dict[str, str | None] = {}
+    above = {joint.name: moved_by(tree.urdf, joint.parent, known) for joint in joints}
+    carried = [name for name in above.values() if name is not None and name in above]
+    if len(carried) != len(joints) - 1 or len(set(carried)) != len(carried):
+        return []  # two chains, or two joints on one (fingers side by side)
+    return sorted(carried, key=tree.order)
 
 
 def gripper_closure(tree: JointTree, grippers: set[str]) -> set[str]:

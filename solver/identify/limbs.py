@@ -139,8 +139,8 @@ _MOST_LOOP_JOINTS = 256
 _MOST_FIVE_BAR_LEGS = 64
 # A snake's modules are alike: every spacing within this share of the middle one.
 _MODULE_SPREAD = 0.1
-# A snake's module holds one joint or two (a yaw and a pitch joint close together).
-_MODULE_JOINTS = (1, 2)
+# Two joints of one module this close (metres) sit at one point (a universal joint).
+_AT_ONE_POINT = 1e-6
 # A snake that moves in a plane (every axis parallel) has at least this many modules; planar
 # arms of equal links are far shorter.
 _PLANAR_SPINE_JOINTS = 12
@@ -940,7 +940,7 @@ def spine(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     # chain with a slide in it is an arm on a rail or a lift.
     named = _named_limb(tree, joints)
     turning = all(j.type in _TURNING for j in joints)
-    if named or not turning or not _modules(tree, joints):
+    if named or not turning or not _modules(tree, joints) or not _bends(tree, joints):
         return limbs
     if _alternating(tree, joints):
         why = f"a chain of {len(joints)} equal modules whose axes alternate, nothing else (a spine)"
@@ -1078,16 +1078,43 @@ def _planar(tree: JointTree, joints: list[Joint]) -> bool:
 
 def _modules(tree: JointTree, joints: list[Joint]) -> bool:
     """The joints come in equal modules of one joint, or of two (a yaw and a pitch joint): the
-    spacings between them, every one or every other one, are alike."""
+    spacings between them, every one or every other one, are alike. A module's two joints may
+    sit at one point (a universal joint): every other spacing is then none."""
     places = [tree.poses.place(joint.child) for joint in joints]
     spacings = [distance(a, b) for a, b in pairwise(places)]
+    if _alike(spacings):
+        return True
+    odd, even = spacings[0::2], spacings[1::2]
     return any(
-        all(_alike(spacings[start::period]) for start in range(period)) for period in _MODULE_JOINTS
+        _alike(one) and (_alike(other) or _none(other)) for one, other in ((odd, even), (even, odd))
     )
+
+
+def _bends(tree: JointTree, joints: list[Joint]) -> bool:
+    """No joint turns about the line the chain runs along from it: a snake's modules bend (yaw
+    and pitch); an arm's roll joints turn about its own links."""
+    places = [tree.poses.place(joint.child) for joint in joints]
+    ahead = 0
+    for at, joint in enumerate(joints):
+        ahead = max(ahead, at + 1)
+        while ahead < len(places) and distance(places[ahead], places[at]) <= _AT_ONE_POINT:
+            ahead += 1
+        if ahead == len(places):
+            return True
+        run = tuple(b - a for a, b in zip(places[at], places[ahead], strict=True))
+        if parallel(tree.poses.axis(joint), (run[0], run[1], run[2])):
+            return False
+    return True
+
+
+def _none(spacings: list[float]) -> bool:
+    return all(s <= _AT_ONE_POINT for s in spacings)
 
 
 def _alike(spacings: list[float]) -> bool:
     ordered = sorted(spacings)
+    if not ordered:
+        return False
     middle = ordered[len(ordered) // 2]
     return middle > 0 and all(abs(s - middle) <= _MODULE_SPREAD * middle for s in ordered)
 

@@ -21,7 +21,16 @@ import math
 
 from solver.identify.readers.urdf import Joint, Urdf
 
-__all__ = ["Poses", "Vector", "distance", "local_axis", "parallel", "perpendicular", "spread"]
+__all__ = [
+    "Poses",
+    "Vector",
+    "distance",
+    "local_axis",
+    "parallel",
+    "perpendicular",
+    "same_way",
+    "spread",
+]
 
 Vector = tuple[float, float, float]
 _Matrix = tuple[Vector, Vector, Vector]
@@ -78,6 +87,11 @@ def parallel(one: Vector, other: Vector) -> bool:
     return _cosine(one, other) >= _PARALLEL
 
 
+def same_way(one: Vector, other: Vector) -> bool:
+    """The two directions point one way (parallel, not opposed)."""
+    return parallel(one, other) and sum(a * b for a, b in zip(one, other, strict=True)) > 0
+
+
 def perpendicular(one: Vector, other: Vector) -> bool:
     """The two axes are square to each other."""
     return _cosine(one, other) <= _PERPENDICULAR
@@ -114,6 +128,11 @@ class Poses:
     def place(self, link: str) -> Vector:
         """Where ``link``'s frame is, in the root's frame (the root's place for a link it lacks)."""
         return self._frames.get(link, (_IDENTITY, (0.0, 0.0, 0.0)))[1]
+
+    def facing(self, link: str) -> Vector:
+        """Where ``link``'s x axis points (a camera's view), in the root's frame."""
+        turn = self._frames.get(link, (_IDENTITY, (0.0, 0.0, 0.0)))[0]
+        return _turn(turn, (1.0, 0.0, 0.0))
 
     def axis(self, joint: Joint) -> Vector:
         """The joint's axis, written in the root's frame."""

@@ -30,6 +30,7 @@ from dataclasses import dataclass
 
 from solver.core.ruleset import RuleSet
 from solver.identify.limbs import moved_by
+from solver.identify.pose import Poses, distance, same_way
 from solver.identify.profile import SENSOR_TYPE, Profile
 from solver.identify.readers.urdf import Joint, PluginTag, SensorTag, Urdf
 from solver.untrusted import shown
@@ -62,6 +63,8 @@ _STREAM_REACH = 0.1
 _CAMERA_BODY = re.compile(r"camera|realsense|kinect|openni|xtion", re.IGNORECASE)
 # A side of a stereo pair in a sensor name: l, r, left or right between separators.
 _SIDE = re.compile(r"(^|[_/-])(l|r|left|right)([_/-]|$)", re.IGNORECASE)
+# The widest baseline of a stereo camera (metres): two frames farther apart are two cameras.
+_BASELINE = 0.3
 
 
 @dataclass(frozen=True, slots=True)
@@ -199,7 +202,8 @@ def _devices(found: list[tuple[Detection, str]], urdf: Urdf, beams: set[int]) ->
     depth = {d.link for d in kept if d.kind == "depth_camera"}
     # A colour camera on the link of a depth camera is the RGB-D camera's colour stream.
     kept = [d for d in kept if not (d.kind == "camera" and d.link in depth)]
-    return _stereo_depth(_stereo_pairs(_rgbd_frames(_dvl_beams(kept, urdf, beams), urdf)), urdf)
+    cameras = _stereo_pairs(_rgbd_frames(_dvl_beams(kept, urdf, beams), urdf), urdf)
+    return _stereo_depth(cameras, urdf)
 
 
 def _dvl_beams(found: list[Detection], urdf: Urdf, beams: set[int]) -> list[Detection]:
@@ -281,24 +285,52 @@ def _stream_of(
     return any(_one_device(theirs, joint) for _, theirs in owners[joint.parent])
 
 
-def _stereo_pairs(found: list[Detection]) -> list[Detection]:
-    """Two cameras named stereo whose names differ only by a side (``wide_stereo_l_...`` and
-    ``wide_stereo_r_...``) are one stereo camera, where the first of them was."""
-    pairs: dict[str, list[Detection]] = {}
+def _stereo_pairs(found: list[Detection], urdf: Urdf) -> list[Detection]:
+    """Two cameras that are one stereo camera, where the first of them was: named stereo, with
+    names that differ only by a side (``wide_stereo_l_...`` and ``wide_stereo_r_...``); or with
+    one name on two frames that differ only by a side (``duo3d_left_link`` and
+    ``duo3d_right_link``), a stereo baseline apart and facing one way."""
+    pairs: dict[tuple[str, str, str], list[Detection]] = {}  # (by what, name, frame)
     for detection in found:
-        if detection.kind == "camera" and "stereo" in detection.name.lower():
-            pairs.setdefault(_SIDE.sub(r"\1*\3", detection.name), []).append(detection)
-    merged = {id(d): ps for ps in pairs.values() if len(ps) == 2 for d in ps}
+        if detection.kind != "camera":
+            continue
+        if "stereo" in detection.name.lower():
+            pairs.setdefault(("name", _unsided(detection.name), ""), []).append(detection)
+        elif detection.link is not None and _SIDE.search(detection.link):
+            key = ("frame", detection.name, _unsided(detection.link))
+            pairs.setdefault(key, []).append(detection)
+    poses: list[Poses] = []  # computed once, when two frames are compared
+    merged: dict[int, list[Detection]] = {}
+    for key, pair in pairs.items():
+        if len(pair) != 2:
+            continue
+        if key[0] == "frame":
+            poses = poses or [Poses(urdf)]
+            if not _side_by_side(pair[0], pair[1], poses[0]):
+                continue
+        merged.update({id(d): pair for d in pair})
     kept = []
     for detection in found:
-        pair = merged.get(id(detection))
-        if pair is None:
+        both = merged.get(id(detection))
+        if both is None:
             kept.append(detection)
-        elif detection is pair[0]:
+        elif detection is both[0]:
             kept.append(
-                Detection("stereo_camera", _pair_name(*pair), detection.source, detection.link)
+                Detection("stereo_camera", _pair_name(*both), detection.source, detection.link)
             )
     return kept
+
+
+def _unsided(name: str) -> str:
+    return _SIDE.sub(r"\1*\3", name)
+
+
+def _side_by_side(one: Detection, other: Detection, poses: Poses) -> bool:
+    """Two camera frames (not one) at most :data:`_BASELINE` apart, looking one way."""
+    if one.link is None or other.link is None or one.link == other.link:
+        return False
+    apart = distance(poses.place(one.link), poses.place(other.link))
+    return 0 < apart <= _BASELINE and same_way(poses.facing(one.link), poses.facing(other.link))
 
 
 def _stereo_depth(found: list[Detection], urdf: Urdf) -> list[Detection]:

@@ -402,3 +402,27 @@ def test_chains_on_the_body_a_named_thumb_starts_from_are_fingers_with_their_cmc
     assert identify_urdf(hand_with_a_named_thumb().text()).structure == "Hand"
     # Six joints each: arms beside a thumb-named part, no palm.
     assert identify_urdf(hand_with_a_named_thumb(finger_joints=6).text()).structure != "Hand"
+
+
+def test_gripper_joints_stacked_in_one_chain_are_an_arm_carrying_the_last() -> None:
+    """A lift, a tilt and a turn named for the gripper they carry, then its jaw, on a rover:
+    a gripper's jaws stand side by side, so the three below the jaw are an arm."""
+    robot = builders.ugv()
+    lift = robot.chain("base_link", ["gripper_lift"], "prismatic")
+    robot.chain(lift, ["gripper_tilt", "gripper_turn", "gripper_claw"])
+    result = identify_urdf(robot.text())
+    assert result.structure == "Mobile Manipulator"
+    assert result.body is not None
+    assert [(limb.kind, limb.joints) for limb in result.body.limbs] == [
+        ("arm", ("gripper_lift", "gripper_tilt", "gripper_turn"))
+    ]
+    assert result.body.fingers == ("gripper_claw",)
+
+
+def test_a_finger_of_three_gripper_joints_on_a_rover_stays_a_gripper() -> None:
+    robot = builders.ugv()
+    robot.chain("base_link", ["gripper_a", "gripper_b", "gripper_c"])
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert result.body.limbs == ()
+    assert result.body.fingers == ("gripper_c",)  # one finger, counted by its tip

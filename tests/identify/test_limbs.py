@@ -178,6 +178,32 @@ def test_the_same_chain_on_a_rail_is_an_arm_not_a_snake() -> None:
     assert result.structure == "Manipulator"
 
 
+def universal_chain(modules: int, *, length: str, along: str) -> RobotText:
+    """Modules of two joints at one point (a turn about z, then about y, as a universal joint),
+    ``length`` apart along ``along`` (x: a snake lying down; z: an arm standing up)."""
+    robot = RobotText("universal", root="m0")
+    link = "m0"
+    step = {"x": f"{length} 0 0", "z": f"0 0 {length}"}[along]
+    for i in range(1, modules + 1):
+        z = builders.placed(robot, f"j{i}_z", "revolute", link, f"z{i}", xyz=step, axis="0 0 1")
+        link = builders.placed(robot, f"j{i}_y", "revolute", z, f"m{i}", axis="0 1 0")
+    return robot
+
+
+def test_a_snake_whose_modules_turn_two_ways_at_one_point_is_a_spine() -> None:
+    result = identify_urdf(universal_chain(4, length="0.16", along="x").text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["spine"]
+    assert result.structure == "Serpentine"
+
+
+def test_an_arm_whose_joints_turn_about_its_own_links_is_no_spine() -> None:
+    """The same modules stacked upwards: every other joint turns about the link above it (a
+    roll joint, as a seven-axis arm has), which a snake's bending modules never do."""
+    result = identify_urdf(universal_chain(4, length="0.4", along="z").text())
+    assert result.structure == "Manipulator"
+
+
 def wheeled_snake(modules: int = 4, *, names: str = "j") -> RobotText:
     """A snake of two-joint modules (a yaw joint, then 2.5 cm on a pitch joint, then 18 cm to
     the next module), each module carrying two leaf wheel joints, one on each side and one

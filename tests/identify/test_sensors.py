@@ -277,6 +277,39 @@ def test_a_stereo_pair_declared_as_two_cameras_is_one_stereo_camera() -> None:
     ]
 
 
+def side_cameras(*, gap: float, yaw: float) -> list[tuple[str, str]]:
+    """Two cameras named alike on a left and a right frame ``gap`` apart, each turned by
+    ``yaw`` away from the middle."""
+    robot = builders.ugv()
+    for side, sign in (("left", 1), ("right", -1)):
+        builders.placed(
+            robot, f"duo_{side}_joint", "fixed", "base_link", f"duo_{side}_link",
+            xyz=f"0.2 {sign * gap / 2} 0.1", rpy=f"0 0 {sign * yaw}",
+        )  # fmt: skip
+        robot.add(builders.gazebo_sensor(f"duo_{side}_link", "camera", "camera"))
+    return [(d.kind, d.name) for d in sensors_from_urdf(parse_urdf(robot.text()), load_profile())]
+
+
+def test_two_cameras_on_frames_a_side_apart_looking_one_way_are_one_stereo_camera() -> None:
+    assert side_cameras(gap=0.03, yaw=0) == [("stereo_camera", "camera")]
+
+
+@pytest.mark.parametrize(
+    ("gap", "yaw"),
+    [(0.03, 1.57), (0.6, 0)],
+    ids=["looking out of each side", "farther apart than a stereo baseline"],
+)
+def test_two_cameras_on_a_left_and_a_right_frame_otherwise_stay_two(gap: float, yaw: float) -> None:
+    assert side_cameras(gap=gap, yaw=yaw) == [("camera", "camera"), ("camera", "camera")]
+
+
+def test_a_plugin_that_says_only_depth_on_a_vessel_is_its_depth_gauge() -> None:
+    robot = builders.underwater_vehicle()
+    robot.add(builders.model_plugin("depth_plugin", "libplugin_depth.so"))
+    robot.add(builders.model_plugin("cam", "libgazebo_ros_depth_camera.so"))
+    assert _kinds(robot.text()) == {"pressure": 1}
+
+
 def test_gazebo_sim_systems_are_no_sensors_their_sensor_elements_are() -> None:
     found = kinds(
         builders.model_plugin("gz::sim::systems::Imu", "gz-sim-imu-system"),
