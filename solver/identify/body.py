@@ -368,7 +368,7 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
     parts = _Parts(roles=joint_roles(tree), placement=placement(tree))
     parts.roles.update(_rollers(tree, parts.roles))
     for name in stacked_grippers(tree, parts.of("gripper")):
-        del parts.roles[name]  # an arm's joint, named for the gripper it carries
+        del parts.roles[name]  # an arm's joint, though named as a gripper's
     _body_parts(tree, parts)
     controlled = urdf.controlled_joints
     wheels = parts.of("wheel")

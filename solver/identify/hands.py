@@ -17,6 +17,8 @@ Not here: the limb a hand ends (:mod:`solver.identify.limbs`), the other single-
 
 from __future__ import annotations
 
+import re
+
 from solver.identify.couplings import Walk, jaw_groups
 from solver.identify.limbs import Limb, moved_by
 from solver.identify.pose import local_axis, parallel
@@ -27,6 +29,8 @@ __all__ = ["finger_groups", "finger_tips", "gripper_closure", "jaws", "stacked_g
 
 # Parts whose names make a joint no jaw (a pair of eyes, two wheels, two legs).
 _NOT_JAWS = ("head", "leg", "wheel", "caster", "rotor", "thruster", "fin", "wing", "track")
+# Words of a finger's joints (or the links they move): a hand's finger, not a gripper's jaw.
+_FINGER = re.compile(r"finger|thumb|knuckle|phalan", re.IGNORECASE)
 # A split gripper's jaws hang at the end of a chain of at least this many driven joints.
 _CHAIN_BEFORE_JAWS = 2
 # Places this close (metres) are one place.
@@ -179,10 +183,15 @@ def _ends_a_chain(tree: JointTree, link: str) -> bool:
 def stacked_grippers(tree: JointTree, grippers: list[str]) -> list[str]:
     """The gripper-named joints that are an arm: every gripper joint of the body driven on its
     own, one upon another in one unbranched chain of more than ``arm_min_joints`` (a lift, a
-    tilt and a turn, then the jaw). A gripper's jaws stand side by side or follow one motion;
-    stacked so, all but the last are the arm that carries it. Those, proximal first."""
+    tilt and a turn, then the jaw), and more than ``finger_max_joints`` when one of them is
+    named as a finger's (a finger of four joints is a finger). A gripper's jaws stand side by
+    side or follow one motion; stacked so, all but the last are the arm that carries it.
+    Those, in document order."""
     joints = [j for j in (tree.urdf.joint(name) for name in grippers) if j is not None]
-    if len(joints) <= tree.profile.limb("arm_min_joints") or not all(j.actuated for j in joints):
+    shortest = tree.profile.limb("arm_min_joints")
+    if any(_FINGER.search(f"{joint.name} {joint.child}") for joint in joints):
+        shortest = max(shortest, tree.profile.limb("finger_max_joints"))
+    if len(joints) <= shortest or not all(j.actuated for j in joints):
         return []
     known: dict[str, str | None] = {}
     above = {joint.name: moved_by(tree.urdf, joint.parent, known) for joint in joints}

@@ -923,9 +923,10 @@ def _below(tree: JointTree, joint: Joint) -> set[str]:
 
 def spine(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     """The body's one limb as a *spine* when it is a snake's: a long chain of turning joints
-    (no slide) with no arm or leg names and no gripper, of equal modules (every spacing between
-    joints alike), each joint's axis square to the last's, on a body that has nothing else (no
-    wheels, rotors, legs or other chains)."""
+    (no slide) with no arm or leg names and no gripper, of equal modules (:func:`_modules`:
+    every spacing between joints alike, or every other one, a module's two joints maybe at one
+    point), each joint's axis square to the last's and none along the chain (:func:`_bends`),
+    on a body that has nothing else (no wheels, rotors, legs or other chains)."""
     if len(limbs) != 1:
         return limbs
     limb = limbs[0]
@@ -958,9 +959,10 @@ def wheeled_spine(
     tree: JointTree, limbs: list[Limb], trunk: list[str]
 ) -> tuple[list[Limb], list[str], list[str]]:
     """A snake whose modules carry passive side wheels: the trunk is one unbranched path from
-    the root of at least ``spine_min_joints`` joints (no arm or leg names, equal modules, axes
-    alternating) and every limb is a single unnamed leaf joint on one of its links. Returns the
-    limbs (the spine alone), the trunk (none) and the side joints; else what it was given."""
+    the root of at least ``spine_min_joints`` joints (no arm or leg names, equal modules that
+    bend, axes alternating) and every limb is a single unnamed leaf joint on one of its links.
+    Returns the limbs (the spine alone), the trunk (none) and the side joints; else what it
+    was given."""
     unchanged: tuple[list[Limb], list[str], list[str]] = (limbs, trunk, [])
     joints = [j for j in (tree.urdf.joint(name) for name in trunk) if j is not None]
     if (
@@ -978,7 +980,7 @@ def wheeled_spine(
         for limb in limbs
     ):
         return unchanged
-    if not _modules(tree, joints):
+    if not _modules(tree, joints) or not _bends(tree, joints):
         return unchanged
     if _alternating(tree, joints):
         why = (
@@ -1091,18 +1093,14 @@ def _modules(tree: JointTree, joints: list[Joint]) -> bool:
 
 
 def _bends(tree: JointTree, joints: list[Joint]) -> bool:
-    """No joint turns about the line the chain runs along from it: a snake's modules bend (yaw
-    and pitch); an arm's roll joints turn about its own links."""
+    """No joint turns about the line the chain runs along from it, a module ahead (two joints
+    on: a two-joint module's partner may sit beside it): a snake's modules bend (yaw and
+    pitch); an arm's roll joints turn about its own links."""
     places = [tree.poses.place(joint.child) for joint in joints]
-    ahead = 0
-    for at, joint in enumerate(joints):
-        ahead = max(ahead, at + 1)
-        while ahead < len(places) and distance(places[ahead], places[at]) <= _AT_ONE_POINT:
-            ahead += 1
-        if ahead == len(places):
-            return True
-        run = tuple(b - a for a, b in zip(places[at], places[ahead], strict=True))
-        if parallel(tree.poses.axis(joint), (run[0], run[1], run[2])):
+    for at, joint in enumerate(joints[:-2]):
+        here, ahead = places[at], places[at + 2]
+        run = (ahead[0] - here[0], ahead[1] - here[1], ahead[2] - here[2])
+        if distance(ahead, here) > _AT_ONE_POINT and parallel(tree.poses.axis(joint), run):
             return False
     return True
 

@@ -130,7 +130,8 @@ class Poses:
         return self._frames.get(link, (_IDENTITY, (0.0, 0.0, 0.0)))[1]
 
     def facing(self, link: str) -> Vector:
-        """Where ``link``'s x axis points (a camera's view), in the root's frame."""
+        """Where ``link``'s x axis points, in the root's frame (a camera's view, when its
+        sensor is not turned on the link)."""
         turn = self._frames.get(link, (_IDENTITY, (0.0, 0.0, 0.0)))[0]
         return _turn(turn, (1.0, 0.0, 0.0))
 

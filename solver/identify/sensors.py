@@ -289,7 +289,7 @@ def _stereo_pairs(found: list[Detection], urdf: Urdf) -> list[Detection]:
     """Two cameras that are one stereo camera, where the first of them was: named stereo, with
     names that differ only by a side (``wide_stereo_l_...`` and ``wide_stereo_r_...``); or with
     one name on two frames that differ only by a side (``duo3d_left_link`` and
-    ``duo3d_right_link``), a stereo baseline apart and facing one way."""
+    ``duo3d_right_link``) on one rigid body, a stereo baseline apart and facing one way."""
     pairs: dict[tuple[str, str, str], list[Detection]] = {}  # (by what, name, frame)
     for detection in found:
         if detection.kind != "camera":
@@ -300,13 +300,14 @@ def _stereo_pairs(found: list[Detection], urdf: Urdf) -> list[Detection]:
             key = ("frame", detection.name, _unsided(detection.link))
             pairs.setdefault(key, []).append(detection)
     poses: list[Poses] = []  # computed once, when two frames are compared
+    known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
     merged: dict[int, list[Detection]] = {}
     for key, pair in pairs.items():
         if len(pair) != 2:
             continue
         if key[0] == "frame":
             poses = poses or [Poses(urdf)]
-            if not _side_by_side(pair[0], pair[1], poses[0]):
+            if not _side_by_side(pair[0], pair[1], poses[0], known):
                 continue
         merged.update({id(d): pair for d in pair})
     kept = []
@@ -325,12 +326,22 @@ def _unsided(name: str) -> str:
     return _SIDE.sub(r"\1*\3", name)
 
 
-def _side_by_side(one: Detection, other: Detection, poses: Poses) -> bool:
-    """Two camera frames (not one) at most :data:`_BASELINE` apart, looking one way."""
-    if one.link is None or other.link is None or one.link == other.link:
+def _side_by_side(
+    one: Detection, other: Detection, poses: Poses, known: dict[str, str | None]
+) -> bool:
+    """Two camera frames (not one) of the description on one rigid body (no joint moves one
+    without the other), at most :data:`_BASELINE` apart, their x axes one way. ``known`` is
+    :func:`moved_by`'s memo."""
+    urdf = poses.urdf
+    first, second = one.link, other.link
+    if first is None or second is None or first == second:
         return False
-    apart = distance(poses.place(one.link), poses.place(other.link))
-    return 0 < apart <= _BASELINE and same_way(poses.facing(one.link), poses.facing(other.link))
+    if not (urdf.has_link(first) and urdf.has_link(second)):
+        return False
+    if moved_by(urdf, first, known) != moved_by(urdf, second, known):
+        return False
+    apart = distance(poses.place(first), poses.place(second))
+    return 0 < apart <= _BASELINE and same_way(poses.facing(first), poses.facing(second))
 
 
 def _stereo_depth(found: list[Detection], urdf: Urdf) -> list[Detection]:

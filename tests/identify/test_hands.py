@@ -3,6 +3,8 @@ by where they hang, and a hand is counted by its fingers' tips."""
 
 from __future__ import annotations
 
+import pytest
+
 from solver.identify import identify_urdf, load_profile
 from solver.identify.hands import finger_groups, finger_tips, gripper_closure
 from solver.identify.limbs import Limb
@@ -419,10 +421,38 @@ def test_gripper_joints_stacked_in_one_chain_are_an_arm_carrying_the_last() -> N
     assert result.body.fingers == ("gripper_claw",)
 
 
-def test_a_finger_of_three_gripper_joints_on_a_rover_stays_a_gripper() -> None:
+@pytest.mark.parametrize(
+    ("names", "tip"),
+    [
+        (["gripper_a", "gripper_b", "gripper_c"], "gripper_c"),
+        (["finger_base", "finger_proximal", "finger_middle", "finger_distal"], "finger_distal"),
+    ],
+    ids=["three gripper joints", "four finger joints"],
+)
+def test_a_finger_no_longer_than_an_arms_minimum_or_a_fingers_most_stays_a_finger(
+    names: list[str], tip: str
+) -> None:
     robot = builders.ugv()
-    robot.chain("base_link", ["gripper_a", "gripper_b", "gripper_c"])
+    robot.chain("base_link", names)
     result = identify_urdf(robot.text())
     assert result.body is not None
     assert result.body.limbs == ()
-    assert result.body.fingers == ("gripper_c",)  # one finger, counted by its tip
+    assert result.body.fingers == (tip,)  # one finger, counted by its tip
+
+
+def test_stacked_gripper_joints_with_two_jaws_side_by_side_or_a_follower_stay_a_gripper() -> None:
+    branched = builders.ugv()
+    wrist = branched.chain("base_link", ["gripper_lift", "gripper_tilt", "gripper_wrist"])
+    branched.chain(wrist, ["gripper_left_jaw"], "prismatic")
+    branched.chain(wrist, ["gripper_right_jaw"], "prismatic")
+    following = builders.ugv()
+    turn = following.chain("base_link", ["gripper_lift", "gripper_tilt", "gripper_turn"])
+    following.joint(
+        "gripper_claw", "revolute", turn, "claw",
+        '<mimic joint="gripper_turn"/><limit lower="0" upper="1" effort="1" velocity="1"/>',
+    )  # fmt: skip
+    for robot in (branched, following):
+        result = identify_urdf(robot.text())
+        assert result.structure == "UGV"
+        assert result.body is not None
+        assert result.body.limbs == ()

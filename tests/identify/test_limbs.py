@@ -197,6 +197,22 @@ def test_a_snake_whose_modules_turn_two_ways_at_one_point_is_a_spine() -> None:
     assert result.structure == "Serpentine"
 
 
+def test_a_snake_whose_modules_pitch_joint_sits_above_its_yaw_joint_is_a_spine() -> None:
+    """Stacked servos: each module's pitch joint 2 cm above its yaw joint, along the yaw axis;
+    the chain still runs along x, module to module."""
+    robot = RobotText("stacked", root="m0")
+    link = "m0"
+    for i in range(1, 7):
+        yaw = builders.placed(
+            robot, f"j{i}_yaw", "revolute", link, f"y{i}",
+            xyz="0.16 0 -0.02" if i > 1 else "0.16 0 0", axis="0 0 1",
+        )  # fmt: skip
+        link = builders.placed(
+            robot, f"j{i}_pitch", "revolute", yaw, f"m{i}", xyz="0 0 0.02", axis="0 1 0"
+        )
+    assert identify_urdf(robot.text()).structure == "Serpentine"
+
+
 def test_an_arm_whose_joints_turn_about_its_own_links_is_no_spine() -> None:
     """The same modules stacked upwards: every other joint turns about the link above it (a
     roll joint, as a seven-axis arm has), which a snake's bending modules never do."""

@@ -303,9 +303,22 @@ def test_two_cameras_on_a_left_and_a_right_frame_otherwise_stay_two(gap: float, 
     assert side_cameras(gap=gap, yaw=yaw) == [("camera", "camera"), ("camera", "camera")]
 
 
-def test_a_plugin_that_says_only_depth_on_a_vessel_is_its_depth_gauge() -> None:
+def test_two_cameras_of_one_name_on_two_wrists_that_move_apart_stay_two() -> None:
+    robot = builders.ugv()
+    for side, y in (("left", 0.03), ("right", -0.03)):
+        wrist = robot.chain("base_link", [f"{side}_wrist"])
+        builders.placed(
+            robot, f"{side}_camera_joint", "fixed", wrist, f"{side}_camera_link", xyz=f"0 {y} 0"
+        )
+        robot.add(builders.gazebo_sensor(f"{side}_camera_link", "camera", "camera"))
+    found = [d.kind for d in sensors_from_urdf(parse_urdf(robot.text()), load_profile())]
+    assert found == ["camera", "camera"]
+
+
+@pytest.mark.parametrize("filename", ["libplugin_depth.so", "libdepth.so", "depth_plugin.so"])
+def test_a_plugin_that_says_only_depth_on_a_vessel_is_its_depth_gauge(filename: str) -> None:
     robot = builders.underwater_vehicle()
-    robot.add(builders.model_plugin("depth_plugin", "libplugin_depth.so"))
+    robot.add(builders.model_plugin("gauge", filename))
     robot.add(builders.model_plugin("cam", "libgazebo_ros_depth_camera.so"))
     assert _kinds(robot.text()) == {"pressure": 1}
 
