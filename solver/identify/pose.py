@@ -129,6 +129,12 @@ class Poses:
         """Where ``link``'s frame is, in the root's frame (the root's place for a link it lacks)."""
         return self._frames.get(link, (_IDENTITY, (0.0, 0.0, 0.0)))[1]
 
+    def turned(self, link: str, rpy: Vector, vector: Vector) -> Vector:
+        """``vector``, written in a frame turned by ``rpy`` on ``link`` (a visual's), in the
+        root's frame."""
+        turn = self._frames.get(link, (_IDENTITY, (0.0, 0.0, 0.0)))[0]
+        return _turn(_compose(turn, _rotation(rpy)), vector)
+
     def facing(self, link: str) -> Vector:
         """Where ``link``'s x axis points, in the root's frame (a camera's view, when its
         sensor is not turned on the link)."""

@@ -28,11 +28,13 @@ Not here: the joints' own roles (:mod:`solver.identify.actuation`), where the bo
 
 from __future__ import annotations
 
+import math
 import re
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 
 from solver.identify.actuation import MOTOR, with_role
 from solver.identify.limbs import Limb, moved_by
+from solver.identify.pose import parallel
 from solver.identify.roles import Role
 from solver.identify.sensors import element_kind, plugin_kind
 from solver.identify.tree import JointTree
@@ -54,6 +56,12 @@ __all__ = [
 ]
 
 _ROTATING = ("continuous", "revolute")
+# A propeller drawn as a disc: a cylinder at least this many times as wide (its radius) as it
+# is thick; discs alike are within this share of one radius; a multirotor has at most this
+# many (a stranger's thousands of discs are read as none).
+_DISC = 2.0
+_MODULE_SPREAD = 0.1
+_MOST_DISCS = 16
 # A plugin that sets a body's twist in space (Gazebo Sim's VelocityControl), air or ground alike.
 _VELOCITY_CONTROL = re.compile(r"velocity[_-]?control", re.IGNORECASE)
 _PLANAR_MOVE = re.compile(r"planar[_-]?move", re.IGNORECASE)
@@ -127,7 +135,9 @@ def fixed_wheels(tree: JointTree, roles: dict[str, Role]) -> list[str]:
 
 
 def fixed_rotors(tree: JointTree) -> list[str]:
-    """Rotor-named leaf links fixed to a part no joint moves (a trimmed multirotor).
+    """Rotor-named leaf links fixed to a part no joint moves (a trimmed multirotor); on a body
+    where nothing moves, leaf links drawn as propeller discs side by side, whatever their
+    names (:func:`_discs`).
 
     Not on a body with legs or wheels: there a fixed ``*_rotor`` link is a motor's.
     """
@@ -149,7 +159,50 @@ def fixed_rotors(tree: JointTree) -> list[str]:
         and j.parent in on_the_hull
         and (tree.matches("rotor", j) or (still and MOTOR.search(f"{j.name} {j.child}")))
     ]
+    if still and len(found) < tree.profile.limb("min_rotors"):
+        found = _discs(tree, on_the_hull)
     return found if len(found) >= tree.profile.limb("min_rotors") else []
+
+
+def _discs(tree: JointTree, on_the_hull: Collection[str]) -> list[str]:
+    """Leaf joints fixed to the hull whose links are drawn as propeller discs: cylinders at
+    least :data:`_DISC` times as wide (radius) as they are thick, turning about the vertical,
+    all of one size, at one height and side by side (none over another: a stack of plates is
+    no rotor). At most :data:`_MOST_DISCS` of them."""
+    discs = []
+    for joint in tree.urdf.joints:
+        link = tree.urdf.link(joint.child)
+        shape = None if link is None else link.cylinder
+        if (
+            shape is None
+            or joint.type != "fixed"
+            or tree.urdf.children(joint.child)
+            or joint.parent not in on_the_hull
+            or shape.radius < _DISC * shape.length
+        ):
+            continue
+        if parallel(tree.poses.turned(joint.child, shape.rpy, (0.0, 0.0, 1.0)), (0.0, 0.0, 1.0)):
+            link_place = tree.poses.place(joint.child)
+            offset = tree.poses.turned(joint.child, (0.0, 0.0, 0.0), shape.xyz)
+            place = (
+                link_place[0] + offset[0],
+                link_place[1] + offset[1],
+                link_place[2] + offset[2],
+            )
+            discs.append((joint.name, shape.radius, place))
+    if not discs or len(discs) > _MOST_DISCS:
+        return []
+    radius, height = discs[0][1], discs[0][2][2]
+    alike = all(
+        abs(r - radius) <= _MODULE_SPREAD * radius and abs(p[2] - height) <= radius
+        for _, r, p in discs
+    )
+    apart = all(
+        math.dist(one[2][:2], other[2][:2]) >= radius
+        for at, one in enumerate(discs)
+        for other in discs[at + 1 :]
+    )
+    return [name for name, _, _ in discs] if alike and apart else []
 
 
 def wings(tree: JointTree, roles: dict[str, Role]) -> list[str]:

@@ -734,3 +734,42 @@ def test_the_same_box_with_a_camera_plugin_stays_a_ground_base() -> None:
     robot.add(builders.model_plugin("move", "libgazebo_ros_planar_move.so"))
     robot.add(builders.model_plugin("cam", "libgazebo_ros_camera.so"))
     assert identify_urdf(robot.text()).structure == "UGV"
+
+
+def disc_body(places: list[str], *, rpy: str = "0 0 0", radius: float = 0.12) -> str:
+    """A body where nothing moves, with leaf links drawn as cylinders 2 cm thick ``radius``
+    wide, placed by their visuals at ``places`` and turned by ``rpy``; no part named."""
+    leaves = "".join(
+        f'<link name="l{i}"><visual><origin xyz="{xyz}" rpy="{rpy}"/><geometry>'
+        f'<cylinder radius="{radius}" length="0.02"/></geometry></visual></link>'
+        f'<joint name="j{i}" type="fixed"><parent link="l0"/><child link="l{i}"/></joint>'
+        for i, xyz in enumerate(places, start=1)
+    )
+    return f'<robot name="robot"><link name="l0"/>{leaves}</robot>'
+
+
+CORNERS = ["0.2 0.2 0.05", "0.2 -0.2 0.05", "-0.2 0.2 0.05", "-0.2 -0.2 0.05"]
+
+
+def test_discs_side_by_side_on_a_body_where_nothing_moves_are_propellers_whatever_their_names() -> (
+    None
+):
+    result = identify_urdf(disc_body(CORNERS))
+    assert result.structure == "UAV"
+    assert result.body is not None
+    assert result.body.fixed_rotors == ("j1", "j2", "j3", "j4")
+
+
+@pytest.mark.parametrize(
+    ("places", "rpy", "radius"),
+    [
+        (CORNERS, "1.5708 0 0", 0.12),
+        (["0 0 0.05", "0 0 0.1", "0 0 0.15"], "0 0 0", 0.12),
+        (CORNERS, "0 0 0", 0.03),
+    ],
+    ids=["wheels standing on edge", "plates stacked on one axis", "posts thicker than wide"],
+)
+def test_cylinders_that_are_no_propeller_discs_do_not_fly(
+    places: list[str], rpy: str, radius: float
+) -> None:
+    assert identify_urdf(disc_body(places, rpy=rpy, radius=radius)).structure != "UAV"

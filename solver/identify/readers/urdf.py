@@ -32,6 +32,7 @@ if TYPE_CHECKING:
 __all__ = [
     "JOINT_TYPES",
     "MAX_PARTS",
+    "Cylinder",
     "Joint",
     "Link",
     "ModelInclude",
@@ -71,6 +72,20 @@ class Link:
     # Its <buoyancy><compensation> (freefloating_gazebo, the usv plugins): buoyancy force over
     # weight; above 1 the link floats. None when it gives none (or not a finite number).
     buoyancy: float | None = None
+    # Its first <visual> when that is a cylinder: what its shape says (a propeller's disc, a
+    # wheel); None for a mesh, a box, or no visual.
+    cylinder: Cylinder | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class Cylinder:
+    """A link's ``<visual>`` cylinder: its size, and where it sits and how it is turned on the
+    link (its axis is the turned z axis)."""
+
+    radius: float
+    length: float
+    rpy: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    xyz: tuple[float, float, float] = (0.0, 0.0, 0.0)  # where it sits on the link
 
 
 @dataclass(frozen=True, slots=True)
@@ -276,6 +291,13 @@ class Urdf:
     def has_link(self, name: str) -> bool:
         return name in self._children
 
+    def link(self, name: str) -> Link | None:
+        return self._link_by_name.get(name)
+
+    @cached_property
+    def _link_by_name(self) -> dict[str, Link]:
+        return {link.name: link for link in self.links}
+
     def fixed_below(self, link: str) -> Iterator[str]:
         """The links fixed below ``link`` (through joints that cannot move): the rest of the
         rigid part ``link`` begins, depth first."""
@@ -445,7 +467,9 @@ class _Builder:
                     f"duplicate link {shown(name, quoted=True)} (first at line {found[name].line})",
                 )
             else:
-                found[name] = Link(name, line_of(element), _compensation(element))
+                found[name] = Link(
+                    name, line_of(element), _compensation(element), _cylinder(element)
+                )
         return found
 
     def _joints(self, elements: list[etree._Element], links: dict[str, Link]) -> list[Joint]:
@@ -1024,6 +1048,20 @@ def _compensation(link: etree._Element) -> float | None:
     """A link's ``<buoyancy><compensation>`` value (its first), or None."""
     found = link.find("buoyancy/compensation")
     return None if found is None else _float(found.text)
+
+
+def _cylinder(link: etree._Element) -> Cylinder | None:
+    """A link's first ``<visual>``, when it is a cylinder of a readable size, or None."""
+    visual = link.find("visual")
+    shape = None if visual is None else visual.find("geometry/cylinder")
+    if visual is None or shape is None:
+        return None
+    radius, length = _float(shape.get("radius")), _float(shape.get("length"))
+    if radius is None or length is None or radius <= 0 or length <= 0:
+        return None
+    origin = visual.find("origin")
+    zero = (0.0, 0.0, 0.0)
+    return Cylinder(radius, length, _vector(origin, zero, "rpy"), _vector(origin, zero))
 
 
 def _integer(text: str | None) -> int | None:

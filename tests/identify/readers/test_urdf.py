@@ -7,7 +7,7 @@ from pathlib import Path
 import pytest
 
 from solver.errors import InputError
-from solver.identify.readers.urdf import parse_urdf
+from solver.identify.readers.urdf import Cylinder, parse_urdf
 from tests.conftest import run_cli
 from tests.identify import builders
 
@@ -197,3 +197,31 @@ def test_the_links_fixed_below_a_link_stop_at_every_joint_that_moves() -> None:
 def test_a_gazebo_block_that_turns_gravity_off_is_read(block: str, off: bool) -> None:
     text = f'<robot name="r"><link name="a"/><gazebo reference="a">{block}</gazebo></robot>'
     assert parse_urdf(text, "r.urdf").gravity_off is off
+
+
+@pytest.mark.parametrize(
+    ("visual", "expected"),
+    [
+        (
+            '<visual><origin xyz="0.1 0 0" rpy="0 1.5 0"/><geometry>'
+            '<cylinder radius="0.2" length="0.03"/></geometry></visual>',
+            Cylinder(0.2, 0.03, (0.0, 1.5, 0.0), (0.1, 0.0, 0.0)),
+        ),
+        (
+            '<visual><geometry><cylinder radius="0.2" length="0.03"/></geometry></visual>',
+            Cylinder(0.2, 0.03),
+        ),
+        ('<visual><geometry><cylinder radius="nan" length="0.03"/></geometry></visual>', None),
+        ('<visual><geometry><cylinder radius="-1" length="0.03"/></geometry></visual>', None),
+        ('<visual><geometry><box size="1 1 1"/></geometry></visual>', None),
+        ("", None),
+    ],
+    ids=["placed and turned", "at the link", "not a number", "negative", "a box", "no visual"],
+)
+def test_a_links_first_visual_is_kept_when_it_is_a_readable_cylinder(
+    visual: str, expected: Cylinder | None
+) -> None:
+    urdf = parse_urdf(f'<robot name="r"><link name="base">{visual}</link></robot>', "r.urdf")
+    link = urdf.link("base")
+    assert link is not None
+    assert link.cylinder == expected
