@@ -212,8 +212,13 @@ def jaw_groups(urdf: Urdf, found: Couplings) -> list[tuple[str, ...]]:
         for joint in members:
             if not walk.moves_beyond(joint.name, group):
                 by_parent.setdefault(joint.parent, []).append(joint)
-        for jaws in by_parent.values():
-            if 2 <= len(jaws) <= _MOST_JAWS and _alike(jaws):
+        for on_one_link in by_parent.values():
+            # The jaws: every joint of the motion on the link, or its followers there alone (a
+            # lever between them, the driver, works them at a ratio of its own).
+            followers = [j for j in on_one_link if j.name != driver]
+            if any(
+                2 <= len(jaws) <= _MOST_JAWS and _alike(jaws) for jaws in (on_one_link, followers)
+            ):
                 groups.append(tuple(sorted(group)))
                 break
     return groups
@@ -221,12 +226,13 @@ def jaw_groups(urdf: Urdf, found: Couplings) -> list[tuple[str, ...]]:
 
 def _alike(jaws: list[Joint]) -> bool:
     """Jaws of one kind, each with limits, turning or sliding about parallel axes, each as far
-    as the other (a mimic ratio of 1 or -1; a gear pair turns by its ratio)."""
+    as the other (mimic ratios equal but for their sign: a jaw mirrors the other, or both
+    follow a lever between them at one ratio; a gear pair turns by its ratio)."""
     first = jaws[0]
     return all(
         jaw.type == first.type
         and jaw.type in ("revolute", "prismatic")
-        and abs(abs(jaw.multiplier) - 1.0) < 1e-6
+        and abs(abs(jaw.multiplier) - abs(first.multiplier)) < 1e-6
         and parallel(local_axis(jaw), local_axis(first))
         for jaw in jaws
     )
