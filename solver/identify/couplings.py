@@ -35,6 +35,8 @@ __all__ = ["Couplings", "Walk", "couplings", "jaw_groups"]
 # Jaws side by side come in twos (a parallel gripper), threes (a three-jaw chuck) or fours (two
 # jaws of a parallel linkage, an inner and an outer knuckle each).
 _MOST_JAWS = 4
+# Mimic ratios closer than this are one ratio; a ratio this small moves nothing.
+_NO_RATIO = 1e-6
 # How far up a follower is looked at for the chain it sits in (a knee is a joint or two below
 # the hip its crank turns beside): bounds the walk on a hostile description.
 _MOST_STEPS_UP = 16
@@ -216,23 +218,39 @@ def jaw_groups(urdf: Urdf, found: Couplings) -> list[tuple[str, ...]]:
             # The jaws: every joint of the motion on the link, or its followers there alone (a
             # lever between them, the driver, works them at a ratio of its own).
             followers = [j for j in on_one_link if j.name != driver]
-            if any(
-                2 <= len(jaws) <= _MOST_JAWS and _alike(jaws) for jaws in (on_one_link, followers)
+            lever = len(followers) < len(on_one_link)  # the driver is on the link
+            if (2 <= len(on_one_link) <= _MOST_JAWS and _alike(on_one_link, 1.0)) or (
+                lever
+                and 2 <= len(followers) <= _MOST_JAWS
+                and _alike(followers, abs(followers[0].multiplier))
+                and _mirrored(followers)
             ):
                 groups.append(tuple(sorted(group)))
                 break
     return groups
 
 
-def _alike(jaws: list[Joint]) -> bool:
+def _mirrored(jaws: list[Joint]) -> bool:
+    """Two of the jaws move opposite ways (they close on each other), not one way (gears,
+    wheels a motor turns)."""
+    moves = [tuple(jaw.multiplier * a for a in local_axis(jaw)) for jaw in jaws]
+    return any(
+        sum(a * b for a, b in zip(one, other, strict=True)) < 0
+        for at, one in enumerate(moves)
+        for other in moves[at + 1 :]
+    )
+
+
+def _alike(jaws: list[Joint], ratio: float) -> bool:
     """Jaws of one kind, each with limits, turning or sliding about parallel axes, each as far
-    as the other (mimic ratios equal but for their sign: a jaw mirrors the other, or both
-    follow a lever between them at one ratio; a gear pair turns by its ratio)."""
+    as the other: each at ``ratio`` (but for its sign) to the motion, and that ratio not none
+    (a jaw mirrors the other at 1 or -1; jaws a lever between them works follow it at one
+    ratio; a gear pair turns by its ratio)."""
     first = jaws[0]
-    return all(
+    return ratio > _NO_RATIO and all(
         jaw.type == first.type
         and jaw.type in ("revolute", "prismatic")
-        and abs(abs(jaw.multiplier) - abs(first.multiplier)) < 1e-6
+        and abs(abs(jaw.multiplier) - ratio) < _NO_RATIO
         and parallel(local_axis(jaw), local_axis(first))
         for jaw in jaws
     )

@@ -34,7 +34,7 @@ from collections.abc import Collection, Sequence
 
 from solver.identify.actuation import MOTOR, with_role
 from solver.identify.limbs import Limb, moved_by
-from solver.identify.pose import parallel
+from solver.identify.pose import Vector, parallel
 from solver.identify.roles import Role
 from solver.identify.sensors import element_kind, plugin_kind
 from solver.identify.tree import JointTree
@@ -57,11 +57,14 @@ __all__ = [
 
 _ROTATING = ("continuous", "revolute")
 # A propeller drawn as a disc: a cylinder at least this many times as wide (its radius) as it
-# is thick; discs alike are within this share of one radius; a multirotor has at most this
-# many (a stranger's thousands of discs are read as none).
+# is thick; discs alike are within this share of one radius; a multirotor has at least three
+# and at most sixteen (a stranger's thousands of discs are read as none).
 _DISC = 2.0
 _MODULE_SPREAD = 0.1
+_FEWEST_DISCS = 3
 _MOST_DISCS = 16
+# Parts whose fixed joints say a body stands on the ground, whatever discs it has.
+_NOT_ROTORS = ("wheel", "caster", "track", "leg")
 # A plugin that sets a body's twist in space (Gazebo Sim's VelocityControl), air or ground alike.
 _VELOCITY_CONTROL = re.compile(r"velocity[_-]?control", re.IGNORECASE)
 _PLANAR_MOVE = re.compile(r"planar[_-]?move", re.IGNORECASE)
@@ -167,9 +170,17 @@ def fixed_rotors(tree: JointTree) -> list[str]:
 def _discs(tree: JointTree, on_the_hull: Collection[str]) -> list[str]:
     """Leaf joints fixed to the hull whose links are drawn as propeller discs: cylinders at
     least :data:`_DISC` times as wide (radius) as they are thick, turning about the vertical,
-    all of one size, at one height and side by side (none over another: a stack of plates is
-    no rotor). At most :data:`_MOST_DISCS` of them."""
-    discs = []
+    no sensor's link, all of one size, at one height, not below the body's frame (feet, pads),
+    side by side (none over another: a stack of plates is no rotor) and not all on one line (a
+    row of plates, antennas on a bar); at least :data:`_FEWEST_DISCS`, at most
+    :data:`_MOST_DISCS`. None on a body with fixed wheels, casters, tracks or legs (a trimmed
+    ground robot's round brushes, a table's pads)."""
+    if any(
+        j.type == "fixed" and any(tree.matches(p, j) for p in _NOT_ROTORS) for j in tree.urdf.joints
+    ):
+        return []
+    sensed = {tag.link for tag in tree.urdf.sensors if tag.link is not None}
+    discs: list[tuple[str, float, Vector]] = []
     for joint in tree.urdf.joints:
         link = tree.urdf.link(joint.child)
         shape = None if link is None else link.cylinder
@@ -178,6 +189,7 @@ def _discs(tree: JointTree, on_the_hull: Collection[str]) -> list[str]:
             or joint.type != "fixed"
             or tree.urdf.children(joint.child)
             or joint.parent not in on_the_hull
+            or joint.child in sensed
             or shape.radius < _DISC * shape.length
         ):
             continue
@@ -190,19 +202,25 @@ def _discs(tree: JointTree, on_the_hull: Collection[str]) -> list[str]:
                 link_place[2] + offset[2],
             )
             discs.append((joint.name, shape.radius, place))
-    if not discs or len(discs) > _MOST_DISCS:
+            if len(discs) > _MOST_DISCS:
+                return []
+    if len(discs) < _FEWEST_DISCS:
         return []
-    radius, height = discs[0][1], discs[0][2][2]
-    alike = all(
-        abs(r - radius) <= _MODULE_SPREAD * radius and abs(p[2] - height) <= radius
-        for _, r, p in discs
-    )
+    radii, heights = [r for _, r, _ in discs], [p[2] for _, _, p in discs]
+    radius = min(radii)
+    alike = max(radii) <= (1 + _MODULE_SPREAD) * radius and max(heights) - min(heights) <= radius
     apart = all(
         math.dist(one[2][:2], other[2][:2]) >= radius
         for at, one in enumerate(discs)
         for other in discs[at + 1 :]
     )
-    return [name for name, _, _ in discs] if alike and apart else []
+    (x0, y0, _), (x1, y1, _) = discs[0][2], discs[1][2]
+    spread_out = any(
+        abs((x1 - x0) * (p[1] - y0) - (y1 - y0) * (p[0] - x0)) >= radius * radius
+        for _, _, p in discs[2:]
+    )
+    above = min(heights) >= -radius
+    return [name for name, _, _ in discs] if alike and apart and spread_out and above else []
 
 
 def wings(tree: JointTree, roles: dict[str, Role]) -> list[str]:

@@ -134,20 +134,33 @@ def test_jaws_closed_by_one_motion_are_a_gripper_whatever_their_names() -> None:
     assert {role.role for role in result.roles} == {"finger"}
 
 
-def test_jaws_a_lever_between_them_works_at_a_ratio_of_their_own_are_a_gripper() -> None:
-    """A lever (the driven joint) between two jaws that follow it at half its turn each, one
-    mirroring the other; no name says gripper."""
+def lever(ratios: tuple[str, str]) -> RobotText:
+    """A lever (the driven joint) between two joints that follow it at ``ratios``; no name
+    says gripper."""
     robot = RobotText("lever", root="base")
     builders.placed(robot, "lever", "revolute", "base", "lever_link", xyz="0.05 0 0")
-    for jaw, y, ratio in (("a", "0.03", "0.5"), ("b", "-0.03", "-0.5")):
+    for jaw, y, ratio in (("a", "0.03", ratios[0]), ("b", "-0.03", ratios[1])):
         builders.placed(
             robot, jaw, "revolute", "base", f"{jaw}_link", xyz=f"0.05 {y} 0",
             extra=f'<mimic joint="lever" multiplier="{ratio}"/>',
         )  # fmt: skip
-    result = identify_urdf(robot.text())
+    return robot
+
+
+def test_jaws_a_lever_between_them_works_at_a_ratio_of_their_own_are_a_gripper() -> None:
+    result = identify_urdf(lever(("0.5", "-0.5")).text())  # one mirrors the other
     assert result.structure == "Gripper"
     assert result.body is not None
     assert result.body.finger_motions == 1
+
+
+@pytest.mark.parametrize(
+    "ratios", [("0.5", "0.5"), ("0", "0")], ids=["turning one way (gears)", "not moving"]
+)
+def test_followers_of_a_lever_that_do_not_close_on_each_other_are_no_jaws(
+    ratios: tuple[str, str],
+) -> None:
+    assert identify_urdf(lever(ratios).text()).structure != "Gripper"
 
 
 def test_an_srdf_group_of_a_grippers_jaws_is_no_arm_group() -> None:

@@ -736,19 +736,26 @@ def test_the_same_box_with_a_camera_plugin_stays_a_ground_base() -> None:
     assert identify_urdf(robot.text()).structure == "UGV"
 
 
-def disc_body(places: list[str], *, rpy: str = "0 0 0", radius: float = 0.12) -> str:
+def disc_body(
+    places: list[str], *, rpy: str = "0 0 0", radius: float = 0.12, extra: str = ""
+) -> str:
     """A body where nothing moves, with leaf links drawn as cylinders 2 cm thick ``radius``
-    wide, placed by their visuals at ``places`` and turned by ``rpy``; no part named."""
+    wide, placed by their visuals at ``places`` and turned by ``rpy``; no part named but by
+    ``extra`` (more of the description)."""
     leaves = "".join(
         f'<link name="l{i}"><visual><origin xyz="{xyz}" rpy="{rpy}"/><geometry>'
         f'<cylinder radius="{radius}" length="0.02"/></geometry></visual></link>'
         f'<joint name="j{i}" type="fixed"><parent link="l0"/><child link="l{i}"/></joint>'
         for i, xyz in enumerate(places, start=1)
     )
-    return f'<robot name="robot"><link name="l0"/>{leaves}</robot>'
+    return f'<robot name="robot"><link name="l0"/>{leaves}{extra}</robot>'
 
 
 CORNERS = ["0.2 0.2 0.05", "0.2 -0.2 0.05", "-0.2 0.2 0.05", "-0.2 -0.2 0.05"]
+FIXED_WHEEL = (
+    '<link name="left_wheel"/><joint name="left_wheel_joint" type="fixed"><parent link="l0"/>'
+    '<child link="left_wheel"/></joint>'
+)
 
 
 def test_discs_side_by_side_on_a_body_where_nothing_moves_are_propellers_whatever_their_names() -> (
@@ -761,15 +768,35 @@ def test_discs_side_by_side_on_a_body_where_nothing_moves_are_propellers_whateve
 
 
 @pytest.mark.parametrize(
-    ("places", "rpy", "radius"),
+    ("places", "rpy", "radius", "extra"),
     [
-        (CORNERS, "1.5708 0 0", 0.12),
-        (["0 0 0.05", "0 0 0.1", "0 0 0.15"], "0 0 0", 0.12),
-        (CORNERS, "0 0 0", 0.03),
+        (CORNERS, "1.5708 0 0", 0.12, ""),
+        (["0 0 0.05", "0 0 0.1", "0 0 0.15"], "0 0 0", 0.12, ""),
+        (CORNERS, "0 0 0", 0.03, ""),
+        (CORNERS[:2], "0 0 0", 0.12, ""),
+        (["0.4 0 0.1", "0 0 0.1", "-0.4 0 0.1"], "0 0 0", 0.12, ""),
+        ([c.replace("0.05", "-0.5") for c in CORNERS], "0 0 0", 0.12, ""),
+        (CORNERS, "0 0 0", 0.12, FIXED_WHEEL),
+        (
+            CORNERS[:3],
+            "0 0 0",
+            0.12,
+            "".join(builders.gazebo_sensor(f"l{i}", "gpu_ray", f"scan{i}") for i in (1, 2, 3)),
+        ),
     ],
-    ids=["wheels standing on edge", "plates stacked on one axis", "posts thicker than wide"],
+    ids=[
+        "wheels standing on edge",
+        "plates stacked on one axis",
+        "posts thicker than wide",
+        "two antennas",
+        "plates in a row",
+        "pads under a table",
+        "round brushes beside a fixed wheel",
+        "lidar pucks",
+    ],
 )
 def test_cylinders_that_are_no_propeller_discs_do_not_fly(
-    places: list[str], rpy: str, radius: float
+    places: list[str], rpy: str, radius: float, extra: str
 ) -> None:
-    assert identify_urdf(disc_body(places, rpy=rpy, radius=radius)).structure != "UAV"
+    text = disc_body(places, rpy=rpy, radius=radius, extra=extra)
+    assert identify_urdf(text).structure != "UAV"

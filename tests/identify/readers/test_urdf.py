@@ -214,9 +214,24 @@ def test_a_gazebo_block_that_turns_gravity_off_is_read(block: str, off: bool) ->
         ('<visual><geometry><cylinder radius="nan" length="0.03"/></geometry></visual>', None),
         ('<visual><geometry><cylinder radius="-1" length="0.03"/></geometry></visual>', None),
         ('<visual><geometry><box size="1 1 1"/></geometry></visual>', None),
+        (
+            '<visual><geometry><mesh filename="prop.dae"/></geometry></visual>'
+            '<visual><geometry><cylinder radius="0.2" length="0.03"/></geometry></visual>',
+            None,
+        ),
+        ('<visual><geometry><cylinder radius="0.2"/></geometry></visual>', None),
         ("", None),
     ],
-    ids=["placed and turned", "at the link", "not a number", "negative", "a box", "no visual"],
+    ids=[
+        "placed and turned",
+        "at the link",
+        "not a number",
+        "negative",
+        "a box",
+        "a mesh first",
+        "no length",
+        "no visual",
+    ],
 )
 def test_a_links_first_visual_is_kept_when_it_is_a_readable_cylinder(
     visual: str, expected: Cylinder | None
