@@ -175,10 +175,6 @@ def _discs(tree: JointTree, on_the_hull: Collection[str]) -> list[str]:
     row of plates, antennas on a bar); at least :data:`_FEWEST_DISCS`, at most
     :data:`_MOST_DISCS`. None on a body with fixed wheels, casters, tracks or legs (a trimmed
     ground robot's round brushes, a table's pads)."""
-    if any(
-        j.type == "fixed" and any(tree.matches(p, j) for p in _NOT_ROTORS) for j in tree.urdf.joints
-    ):
-        return []
     sensed = {tag.link for tag in tree.urdf.sensors if tag.link is not None}
     discs: list[tuple[str, float, Vector]] = []
     for joint in tree.urdf.joints:
@@ -204,7 +200,9 @@ def _discs(tree: JointTree, on_the_hull: Collection[str]) -> list[str]:
             discs.append((joint.name, shape.radius, place))
             if len(discs) > _MOST_DISCS:
                 return []
-    if len(discs) < _FEWEST_DISCS:
+    if len(discs) < _FEWEST_DISCS or any(
+        j.type == "fixed" and any(tree.matches(p, j) for p in _NOT_ROTORS) for j in tree.urdf.joints
+    ):
         return []
     radii, heights = [r for _, r, _ in discs], [p[2] for _, _, p in discs]
     radius = min(radii)
