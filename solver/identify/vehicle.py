@@ -35,6 +35,7 @@ from collections.abc import Collection, Sequence
 from solver.identify.actuation import MOTOR, with_role
 from solver.identify.limbs import Limb, moved_by
 from solver.identify.pose import Vector, parallel
+from solver.identify.readers.urdf import Joint
 from solver.identify.roles import Role
 from solver.identify.sensors import element_kind, plugin_kind
 from solver.identify.tree import JointTree
@@ -168,42 +169,52 @@ def fixed_rotors(tree: JointTree) -> list[str]:
 
 
 def _discs(tree: JointTree, on_the_hull: Collection[str]) -> list[str]:
-    """Leaf joints fixed to the hull whose links are drawn as propeller discs: cylinders at
-    least :data:`_DISC` times as wide (radius) as they are thick, turning about the vertical,
-    no sensor's link, all of one size, at one height, not below the body's frame (feet, pads),
-    side by side (none over another: a stack of plates is no rotor) and not all on one line (a
-    row of plates, antennas on a bar); at least :data:`_FEWEST_DISCS`, at most
-    :data:`_MOST_DISCS`. None on a body with fixed wheels, casters, tracks or legs (a trimmed
-    ground robot's round brushes, a table's pads)."""
+    """Leaf joints fixed to the hull whose links are drawn as propeller discs
+    (:func:`_disc`), at least :data:`_FEWEST_DISCS` and at most :data:`_MOST_DISCS` of them,
+    laid out as rotors are (:func:`_rotor_layout`). None on a body with fixed wheels, casters,
+    tracks or legs (a trimmed ground robot's round brushes, a table's pads)."""
     sensed = {tag.link for tag in tree.urdf.sensors if tag.link is not None}
     discs: list[tuple[str, float, Vector]] = []
     for joint in tree.urdf.joints:
-        link = tree.urdf.link(joint.child)
-        shape = None if link is None else link.cylinder
-        if (
-            shape is None
-            or joint.type != "fixed"
-            or tree.urdf.children(joint.child)
-            or joint.parent not in on_the_hull
-            or joint.child in sensed
-            or shape.radius < _DISC * shape.length
-        ):
-            continue
-        if parallel(tree.poses.turned(joint.child, shape.rpy, (0.0, 0.0, 1.0)), (0.0, 0.0, 1.0)):
-            link_place = tree.poses.place(joint.child)
-            offset = tree.poses.turned(joint.child, (0.0, 0.0, 0.0), shape.xyz)
-            place = (
-                link_place[0] + offset[0],
-                link_place[1] + offset[1],
-                link_place[2] + offset[2],
-            )
-            discs.append((joint.name, shape.radius, place))
+        disc = _disc(tree, joint, on_the_hull, sensed)
+        if disc is not None:
+            discs.append(disc)
             if len(discs) > _MOST_DISCS:
                 return []
-    if len(discs) < _FEWEST_DISCS or any(
-        j.type == "fixed" and any(tree.matches(p, j) for p in _NOT_ROTORS) for j in tree.urdf.joints
-    ):
+    if len(discs) < _FEWEST_DISCS or not _rotor_layout(discs) or _stands(tree):
         return []
+    return [name for name, _, _ in discs]
+
+
+def _disc(
+    tree: JointTree, joint: Joint, on_the_hull: Collection[str], sensed: set[str]
+) -> tuple[str, float, Vector] | None:
+    """The joint, its disc's radius and where the disc sits, when the joint is a leaf fixed to
+    the hull whose link (no sensor's) is drawn as a cylinder at least :data:`_DISC` times as
+    wide (radius) as it is thick, turning about the vertical; else None."""
+    link = tree.urdf.link(joint.child)
+    shape = None if link is None else link.cylinder
+    if (
+        shape is None
+        or joint.type != "fixed"
+        or tree.urdf.children(joint.child)
+        or joint.parent not in on_the_hull
+        or joint.child in sensed
+        or shape.radius < _DISC * shape.length
+    ):
+        return None
+    if not parallel(tree.poses.turned(joint.child, shape.rpy, (0.0, 0.0, 1.0)), (0.0, 0.0, 1.0)):
+        return None
+    at = tree.poses.place(joint.child)
+    offset = tree.poses.turned(joint.child, (0.0, 0.0, 0.0), shape.xyz)
+    return joint.name, shape.radius, (at[0] + offset[0], at[1] + offset[1], at[2] + offset[2])
+
+
+def _rotor_layout(discs: list[tuple[str, float, Vector]]) -> bool:
+    """The discs are all of one size (radii within :data:`_MODULE_SPREAD`), at one height
+    (within a radius) and not below the body's frame (feet, pads), side by side (none over
+    another: a stack of plates is no rotor) and not all on one line (a row of plates, antennas
+    on a bar)."""
     radii, heights = [r for _, r, _ in discs], [p[2] for _, _, p in discs]
     radius = min(radii)
     alike = max(radii) <= (1 + _MODULE_SPREAD) * radius and max(heights) - min(heights) <= radius
@@ -217,8 +228,16 @@ def _discs(tree: JointTree, on_the_hull: Collection[str]) -> list[str]:
         abs((x1 - x0) * (p[1] - y0) - (y1 - y0) * (p[0] - x0)) >= radius * radius
         for _, _, p in discs[2:]
     )
-    above = min(heights) >= -radius
-    return [name for name, _, _ in discs] if alike and apart and spread_out and above else []
+    return alike and apart and spread_out and min(heights) >= -radius
+
+
+def _stands(tree: JointTree) -> bool:
+    """A fixed joint named as a wheel's, a caster's, a track's or a leg's: a body on the
+    ground, a trimmed model of one."""
+    return any(
+        j.type == "fixed" and any(tree.matches(part, j) for part in _NOT_ROTORS)
+        for j in tree.urdf.joints
+    )
 
 
 def wings(tree: JointTree, roles: dict[str, Role]) -> list[str]:
