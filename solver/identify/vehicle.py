@@ -35,7 +35,7 @@ from collections.abc import Collection, Sequence
 from solver.identify.actuation import MOTOR, with_role
 from solver.identify.limbs import Limb, moved_by
 from solver.identify.pose import Vector, parallel
-from solver.identify.readers.urdf import Joint
+from solver.identify.readers.urdf import Cylinder, Joint
 from solver.identify.roles import Role
 from solver.identify.sensors import element_kind, plugin_kind
 from solver.identify.tree import JointTree
@@ -170,28 +170,35 @@ def fixed_rotors(tree: JointTree) -> list[str]:
 
 def _discs(tree: JointTree, on_the_hull: Collection[str]) -> list[str]:
     """Leaf joints fixed to the hull whose links are drawn as propeller discs
-    (:func:`_disc`), at least :data:`_FEWEST_DISCS` and at most :data:`_MOST_DISCS` of them,
-    laid out as rotors are (:func:`_rotor_layout`). None on a body with fixed wheels, casters,
-    tracks or legs (a trimmed ground robot's round brushes, a table's pads)."""
+    (:func:`_thin`, turning about the vertical), at least :data:`_FEWEST_DISCS` of them, laid
+    out as rotors are (:func:`_rotor_layout`); none when more than :data:`_MOST_DISCS` thin
+    cylinders hang there (read no further: no pose is worked out). None on a body with fixed
+    wheels, casters, tracks or legs (a trimmed ground robot's round brushes, a table's pads)."""
     sensed = {tag.link for tag in tree.urdf.sensors if tag.link is not None}
-    discs: list[tuple[str, float, Vector]] = []
+    thin: list[tuple[Joint, Cylinder]] = []
     for joint in tree.urdf.joints:
-        disc = _disc(tree, joint, on_the_hull, sensed)
-        if disc is not None:
-            discs.append(disc)
-            if len(discs) > _MOST_DISCS:
+        shape = _thin(tree, joint, on_the_hull, sensed)
+        if shape is not None:
+            thin.append((joint, shape))
+            if len(thin) > _MOST_DISCS:
                 return []
+    up = (0.0, 0.0, 1.0)
+    discs = [
+        (joint.name, shape.radius, _disc_place(tree, joint.child, shape))
+        for joint, shape in thin
+        if parallel(tree.poses.turned(joint.child, shape.rpy, up), up)
+    ]
     if len(discs) < _FEWEST_DISCS or not _rotor_layout(discs) or _stands(tree):
         return []
     return [name for name, _, _ in discs]
 
 
-def _disc(
+def _thin(
     tree: JointTree, joint: Joint, on_the_hull: Collection[str], sensed: set[str]
-) -> tuple[str, float, Vector] | None:
-    """The joint, its disc's radius and where the disc sits, when the joint is a leaf fixed to
-    the hull whose link (no sensor's) is drawn as a cylinder at least :data:`_DISC` times as
-    wide (radius) as it is thick, turning about the vertical; else None."""
+) -> Cylinder | None:
+    """The cylinder ``joint``'s link is drawn as, when the joint is a leaf fixed to the hull
+    and the link (no sensor's) a cylinder at least :data:`_DISC` times as wide (radius) as it
+    is thick; else None."""
     link = tree.urdf.link(joint.child)
     shape = None if link is None else link.cylinder
     if (
@@ -203,11 +210,13 @@ def _disc(
         or shape.radius < _DISC * shape.length
     ):
         return None
-    if not parallel(tree.poses.turned(joint.child, shape.rpy, (0.0, 0.0, 1.0)), (0.0, 0.0, 1.0)):
-        return None
-    at = tree.poses.place(joint.child)
-    offset = tree.poses.turned(joint.child, (0.0, 0.0, 0.0), shape.xyz)
-    return joint.name, shape.radius, (at[0] + offset[0], at[1] + offset[1], at[2] + offset[2])
+    return shape
+
+
+def _disc_place(tree: JointTree, link: str, shape: Cylinder) -> Vector:
+    at = tree.poses.place(link)
+    offset = tree.poses.turned(link, (0.0, 0.0, 0.0), shape.xyz)
+    return (at[0] + offset[0], at[1] + offset[1], at[2] + offset[2])
 
 
 def _rotor_layout(discs: list[tuple[str, float, Vector]]) -> bool:
