@@ -61,7 +61,7 @@ _ROTATING = ("continuous", "revolute")
 # is thick; discs alike are within this share of one radius; a multirotor has at least three
 # and at most sixteen (a stranger's thousands of discs are read as none).
 _DISC = 2.0
-_MODULE_SPREAD = 0.1
+_DISC_SPREAD = 0.1
 _FEWEST_DISCS = 3
 _MOST_DISCS = 16
 # Parts whose fixed joints say a body stands on the ground, whatever discs it has.
@@ -220,13 +220,13 @@ def _disc_place(tree: JointTree, link: str, shape: Cylinder) -> Vector:
 
 
 def _rotor_layout(discs: list[tuple[str, float, Vector]]) -> bool:
-    """The discs are all of one size (radii within :data:`_MODULE_SPREAD`), at one height
+    """The discs are all of one size (radii within :data:`_DISC_SPREAD`), at one height
     (within a radius) and not below the body's frame (feet, pads), side by side (none over
     another: a stack of plates is no rotor) and not all on one line (a row of plates, antennas
     on a bar)."""
     radii, heights = [r for _, r, _ in discs], [p[2] for _, _, p in discs]
     radius = min(radii)
-    alike = max(radii) <= (1 + _MODULE_SPREAD) * radius and max(heights) - min(heights) <= radius
+    alike = max(radii) <= (1 + _DISC_SPREAD) * radius and max(heights) - min(heights) <= radius
     apart = all(
         math.dist(one[2][:2], other[2][:2]) >= radius
         for at, one in enumerate(discs)
