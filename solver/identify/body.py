@@ -365,7 +365,9 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
     """The parts of ``urdf`` (see the module docstring). The SRDF is not read for the body: its
     virtual joint is a planning convention, its groups are the classifier's to weigh."""
     tree = JointTree(urdf, profile)
-    parts = _Parts(roles=joint_roles(tree), placement=placement(tree))
+    parts = _Parts(
+        roles=joint_roles(tree), placement=placement(tree), fixed_rotors=tuple(fixed_rotors(tree))
+    )
     parts.roles.update(_rollers(tree, parts.roles))
     for name in stacked_grippers(tree, parts.of("gripper")):
         del parts.roles[name]  # an arm's joint, though named as a gripper's
@@ -396,7 +398,7 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
         ),
         not_rotors=tuple(not_rotors(tree, parts.roles)),
         fixed_wheels=tuple(fixed_wheels(tree, parts.roles)),
-        fixed_rotors=tuple(fixed_rotors(tree)),
+        fixed_rotors=parts.fixed_rotors,
         thrusters=tuple(
             parts.of("thruster") + listed_thrusters(tree, parts.roles) + fixed_thrusters(tree)
         ),
@@ -446,6 +448,8 @@ class _Parts:
     trunk: list[str] = field(default_factory=list)
     grippers: set[str] = field(default_factory=set)
     hosts: set[str] = field(default_factory=set)
+    # Leaf links fixed where rotors would turn (:func:`fixed_rotors`), read once per body.
+    fixed_rotors: tuple[str, ...] = ()
 
     def of(self, role: str) -> list[str]:
         return with_role(self.roles, role)
@@ -457,7 +461,7 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
         parts.placement.placing
     )
     parts.grippers = {n for n, r in parts.roles.items() if r.role == "gripper"}
-    flying = bool(parts.of("rotor")) or bool(tree.labels("flight")) or bool(fixed_rotors(tree))
+    flying = bool(parts.of("rotor")) or bool(tree.labels("flight")) or bool(parts.fixed_rotors)
     parts.limbs, parts.trunk, parts.hosts = find_limbs(
         tree, special | parts.grippers, parts.grippers, parts.roles, flying
     )
@@ -523,7 +527,7 @@ def _commanded(tree: JointTree, parts: _Parts, track_names: tuple[str, ...]) -> 
     vehicle too.
     """
     vehicle = bool(
-        parts.of("rotor") or tree.labels("flight") or fixed_rotors(tree) or tree.reader.marine
+        parts.of("rotor") or tree.labels("flight") or parts.fixed_rotors or tree.reader.marine
     )
     walks = sum(1 for limb in parts.limbs if limb.kind == "leg") >= _WALKING_LEGS
     kinds = tuple(

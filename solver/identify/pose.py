@@ -138,8 +138,7 @@ class Poses:
     def facing(self, link: str) -> Vector:
         """Where ``link``'s x axis points, in the root's frame (a camera's view, when its
         sensor is not turned on the link)."""
-        turn = self._frames.get(link, (_IDENTITY, (0.0, 0.0, 0.0)))[0]
-        return _turn(turn, (1.0, 0.0, 0.0))
+        return self.turned(link, (0.0, 0.0, 0.0), (1.0, 0.0, 0.0))
 
     def axis(self, joint: Joint) -> Vector:
         """The joint's axis, written in the root's frame."""
