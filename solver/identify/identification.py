@@ -63,7 +63,7 @@ from solver.identify.sensors import (
     sensors_from_urdf,
     under_water,
 )
-from solver.identify.shipped import body_from_workspace, controls_from_workspace
+from solver.identify.shipped import body_from_workspace, controls_from_workspace, named_joints
 from solver.limits import limit
 from solver.ros.description import TeleopDescription, description_beside, load_description
 from solver.ros.joints import JointStart
@@ -198,6 +198,7 @@ def identify_urdf(
             sensor_kinds={d.kind for d in detections},
             srdf_source=Path(srdf_file).name,
             guess_navigation=packages is None or not packages.complete,
+            named=_named(packages, body),
         )
     ]
     if packages is not None:
@@ -238,6 +239,15 @@ def identify_urdf(
         joints=command_joints(urdf, body),
         declared=None if description is None else description.file,
         disagreements=found.disagreements,
+    )
+
+
+def _named(packages: Workspace | None, body: Body) -> frozenset[str] | None:
+    """The arms' joints the robot's packages name, when they were read whole; else None."""
+    if packages is None or not packages.complete:
+        return None
+    return named_joints(
+        packages, {j for limb in body.limbs if limb.kind == "arm" for j in limb.joints}
     )
 
 

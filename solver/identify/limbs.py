@@ -1250,6 +1250,7 @@ def _classify(
     if (
         not gripper
         and length <= tree.profile.limb("head_max_joints")
+        and _turns(chain)
         and _CAMERA.search(chain[-1].child)
     ):
         # A camera's own frame turned by the chain's last joint: a gimbal, whatever the chain
@@ -1277,6 +1278,7 @@ def _unnamed_kind(
         not named
         and not gripper
         and length <= tree.profile.limb("head_max_joints")
+        and _turns(chain)
         and points_a_sensor(tree, chain[-1])
     ):
         return "head", (
@@ -1287,6 +1289,12 @@ def _unnamed_kind(
     if flying and length >= _FLYING_ARM_JOINTS and not named:
         return "arm", f"a chain of {length} joints hanging from a flying body"
     return "other", "no name or shape of a limb"
+
+
+def _turns(chain: list[Joint]) -> bool:
+    """A joint of the chain turns: a pan/tilt unit points a sensor (on a lift or not), and a
+    slide alone (a forklift's carriage) only carries it up and down."""
+    return any(joint.type != "prismatic" for joint in chain)
 
 
 def _pan_then_tilt(tree: JointTree, pan: Joint, tilt: Joint) -> bool:

@@ -42,6 +42,7 @@ from typing import TYPE_CHECKING
 
 from solver.identify.body import Body
 from solver.identify.interfaces import Control
+from solver.identify.limbs import Limb
 from solver.identify.planning_groups import arm_plans, hand_effectors, leg_plans
 from solver.identify.profile import ROLE_SOURCES, Profile
 from solver.identify.readers.urdf import Joint, Urdf
@@ -158,8 +159,11 @@ def _telescopes(previous: Joint, joint: Joint) -> bool:
     )
 
 
-def _limbs(body: Body, urdf_source: str, urdf: Urdf | None = None) -> _Shown:
-    """Limb joints with a transmission (declared); arms of actuated joints (roles)."""
+def _limbs(
+    body: Body, urdf_source: str, urdf: Urdf | None = None, named: Collection[str] | None = None
+) -> _Shown:
+    """Limb joints with a transmission (declared); arms of actuated joints (roles), but for
+    an arm nothing commands (:func:`_shown_only`)."""
     found = []
     if body.controlled_joints:
         count = len(body.controlled_joints)
@@ -174,7 +178,11 @@ def _limbs(body: Body, urdf_source: str, urdf: Urdf | None = None) -> _Shown:
                 f"{urdf_source}: {count} gripper joint(s) a controller drives",
             )
         )
-    arms = [limb for limb in body.limbs if limb.kind == "arm"]
+    arms = [
+        limb
+        for limb in body.limbs
+        if limb.kind == "arm" and not _shown_only(limb, body, urdf, named)
+    ]
     if arms:
         found.append(("arm", f"{urdf_source}: {len(arms)} arm(s) of actuated joints"))
     for limb in body.limbs:
@@ -289,6 +297,18 @@ def _navigation(
     return ()
 
 
+def _shown_only(limb: Limb, body: Body, urdf: Urdf | None, named: Collection[str] | None) -> bool:
+    """An arm only drawn, on a vehicle its description drives by a plugin: no transmission or
+    ``ros2_control`` block commands a joint of it, and the robot's packages, read whole
+    (``named``: the joints their files name), name none (a model whose arm moves by the
+    joint state publisher's sliders in RViz). Without the packages the arm is taken as
+    commanded, a guess."""
+    if named is None or urdf is None or not body.drive_plugins:
+        return False
+    joints = set(limb.joints)
+    return not (joints & urdf.controlled_joints or joints & set(named))
+
+
 def controls_from_description(
     body: Body,
     profile: Profile,
@@ -299,15 +319,17 @@ def controls_from_description(
     urdf_source: str = "urdf",
     srdf_source: str = "srdf",
     guess_navigation: bool = True,
+    named: Collection[str] | None = None,
 ) -> tuple[Control, ...]:
     """The motion controls the body (and SRDF) show, each with what shows it; with the kinds
     of the sensors the description declares, the profile's navigation guess too (not with
-    ``guess_navigation=False``: the robot's packages were read, and say)."""
+    ``guess_navigation=False``: the robot's packages were read, and say). ``named``: the
+    joints the robot's packages name, when they were read whole."""
     effectors = () if srdf is None else hand_effectors(body, srdf, urdf)  # once per SRDF
     shown = [
         *_ground(body, urdf_source),
         *_flight(body, urdf_source),
-        *_limbs(body, urdf_source, urdf),
+        *_limbs(body, urdf_source, urdf, named),
         *_planned(body, srdf, profile, urdf, srdf_source, effectors=effectors),
     ]
     if _feet_only(srdf, effectors) or _balances(body):

@@ -23,7 +23,9 @@ not. When a bound stopped the reading, the guess stays.
 
 from __future__ import annotations
 
+import re
 import string
+from collections.abc import Collection
 from dataclasses import replace
 
 from solver.identify.body import Body
@@ -32,7 +34,7 @@ from solver.identify.profile import VELOCITY, Pattern, Profile
 from solver.identify.readers.workspace import Workspace
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
-__all__ = ["body_from_workspace", "controls_from_workspace"]
+__all__ = ["body_from_workspace", "controls_from_workspace", "named_joints"]
 
 
 def controls_from_workspace(
@@ -67,6 +69,35 @@ def body_from_workspace(body: Body, workspace: Workspace, profile: Profile) -> B
         return body
     ((medium, evidence),) = said.items()
     return replace(body, shipped_as=medium, shipped_by=evidence)
+
+
+def named_joints(workspace: Workspace, joints: Collection[str]) -> frozenset[str]:
+    """The ``joints`` a file of the robot's packages names (a controller's joint list, a
+    script's command): joints the packages may command. Each file is split into words once,
+    and looked up by them (linear in its size, however many joints a description lists); a
+    name of several words (``arm.wrist-1``) is named where all its words are."""
+    by_word: dict[str, list[tuple[str, frozenset[str]]]] = {}
+    named: set[str] = set()
+    for name in set(joints):
+        parts = _WORD.findall(name)
+        if not parts:
+            named.add(name)  # no word to look for: nothing says it is not named
+        else:
+            by_word.setdefault(parts[0], []).append((name, frozenset(parts)))
+    for shipped in workspace.files:
+        if not by_word:
+            break
+        words = set(_WORD.findall(shipped.text))
+        for first in words.intersection(by_word):
+            found = {name for name, mine in by_word[first] if mine <= words}
+            named |= found
+            by_word[first] = [entry for entry in by_word[first] if entry[0] not in found]
+            if not by_word[first]:
+                del by_word[first]
+    return frozenset(named)
+
+
+_WORD = re.compile(r"\w+")
 
 
 def _first_found(workspace: Workspace, pattern: Pattern) -> str | None:

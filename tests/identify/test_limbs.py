@@ -386,6 +386,39 @@ def test_a_short_unnamed_chain_carrying_a_camera_is_a_head() -> None:
     assert "a pan/tilt unit" in result.body.limbs[0].why
 
 
+def limb_kinds(robot: RobotText) -> list[str]:
+    body = identify_urdf(robot.text()).body
+    assert body is not None
+    return [limb.kind for limb in body.limbs]
+
+
+def test_a_slide_carrying_a_camera_points_nothing_it_is_no_head() -> None:
+    # A forklift's carriage slides its camera up and down: its joint is commanded, not aimed.
+    robot = builders.ugv()
+    tip = robot.chain(robot.root, ["j1"], "prismatic")
+    robot.fixed(tip, "cam_frame")
+    robot.add(builders.gazebo_sensor("cam_frame", "camera", "cam"))
+    robot.add(builders.transmission("j1"))
+    assert limb_kinds(robot) == ["other"]
+    assert [c.motion_control for c in identify_urdf(robot.text()).motion_controls] == [
+        "Driving",
+        "Joint",
+    ]
+    # A slide whose child is the camera's own link is no gimbal either.
+    robot = builders.ugv()
+    robot.chain(robot.root, ["camera"], "prismatic")
+    assert limb_kinds(robot) == ["other"]
+
+
+def test_a_pan_tilt_unit_on_a_lift_still_points_its_camera() -> None:
+    robot = builders.ugv()
+    tip = robot.chain(robot.root, ["j1"], "prismatic")
+    tip = robot.chain(tip, ["j2", "j3"])
+    robot.fixed(tip, "cam_frame")
+    robot.add(builders.gazebo_sensor("cam_frame", "camera", "cam"))
+    assert limb_kinds(robot) == ["head"]
+
+
 def lone_leg(wheels: int = 0) -> RobotText:
     """A 3-joint chain named as a quadruped's front left leg, alone on a fixed base, its tip
     on a floating joint (a leg set up on a bench to reach); ``wheels`` under the base."""

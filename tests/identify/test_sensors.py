@@ -256,6 +256,15 @@ def test_sensors_count_by_physical_device() -> None:
     }
 
 
+@pytest.mark.parametrize("filename", ["libmil_passive_sonar_gazebo.so", "libhydrophones.so"])
+def test_a_hydrophone_array_is_acoustic_positioning(filename: str) -> None:
+    # A passive sonar listens for a pinger and gives its direction; an active one ranges.
+    robot = builders.underwater_vehicle()
+    robot.add(builders.model_plugin("hydrophones", filename))
+    robot.add(builders.gazebo_sensor("sonar_link", "sonar", "imaging_sonar"))
+    assert _kinds(robot.text()) == {"acoustic_positioning": 1, "sonar": 1}
+
+
 def test_a_wind_sensor_plugin_is_an_anemometer() -> None:
     robot = builders.surface_vessel()
     robot.add(builders.model_plugin("wind_sensor", "libWindSensorPlugin.so"))
@@ -315,7 +324,9 @@ def test_two_cameras_of_one_name_on_two_wrists_that_move_apart_stay_two() -> Non
     assert found == ["camera", "camera"]
 
 
-@pytest.mark.parametrize("filename", ["libplugin_depth.so", "libdepth.so", "depth_plugin.so"])
+@pytest.mark.parametrize(
+    "filename", ["libplugin_depth.so", "libdepth.so", "depth_plugin.so", "libmil_depth_gazebo.so"]
+)
 def test_a_plugin_that_says_only_depth_on_a_vessel_is_its_depth_gauge(filename: str) -> None:
     robot = builders.underwater_vehicle()
     robot.add(builders.model_plugin("gauge", filename))

@@ -10,14 +10,16 @@ from solver.identify import identify, load_profile
 from solver.identify.body import detect_body
 from solver.identify.readers.urdf import parse_urdf
 from solver.identify.readers.workspace import ShippedFile, Workspace
-from solver.identify.shipped import body_from_workspace, controls_from_workspace
+from solver.identify.shipped import body_from_workspace, controls_from_workspace, named_joints
 from tests.identify.builders import (
     LASER,
     RobotText,
+    arm,
     manipulator,
     pan_tilt_only,
     parallel_gripper,
     quadrotor,
+    transmission,
     ugv,
 )
 
@@ -165,6 +167,64 @@ def test_an_arms_guess_of_end_effector_goals_is_joined_by_the_moveit_it_ships(
     guess, shown = controls_of(path)["End Effector"].split("; ")
     assert guess.startswith("urdf: likely, not declared")
     assert shown == "package rover_bringup: rover_bringup/launch/bringup.launch (move_group)"
+
+
+def picker(*extra: str) -> RobotText:
+    """A rover a drive plugin moves, with an arm of six joints and a gripper on it."""
+    robot = rover_with_a_lidar()
+    arm(robot, robot.root)
+    for xml in extra:
+        robot.add(xml)
+    return robot
+
+
+def test_an_arm_only_drawn_on_a_driven_rover_is_commanded_by_nothing(tmp_path: Path) -> None:
+    # The joint state publisher's sliders move it in RViz; no controller, no script.
+    path = described(tmp_path, picker(), "<node pkg='joint_state_publisher_gui'/>")
+    assert set(controls_of(path)) == {"Driving"}
+    # Read alone, the arm is taken as commanded: a guess, as before.
+    assert set(controls_of(path, look_around=False)) == {
+        "Driving",
+        "Joint",
+        "End Effector",
+        "Waypoint",
+    }
+
+
+@pytest.mark.parametrize(
+    ("robot", "bringup"),
+    [
+        (picker(), "controller: {joints: [shoulder_pan, elbow]}"),  # a package names a joint
+        (picker(transmission("elbow")), ""),  # the description commands one
+    ],
+)
+def test_an_arm_a_package_or_the_description_commands_keeps_its_controls(
+    tmp_path: Path, robot: RobotText, bringup: str
+) -> None:
+    assert {"Joint", "End Effector"} <= set(controls_of(described(tmp_path, robot, bringup)))
+
+
+def test_an_arm_on_a_base_no_plugin_drives_is_taken_as_commanded(tmp_path: Path) -> None:
+    robot = ugv()
+    arm(robot, robot.root)
+    assert "Joint" in controls_of(described(tmp_path, robot, ""))
+
+
+def test_the_joints_packages_name_are_read_word_by_word() -> None:
+    joints = ["elbow", "arm.wrist-1", "j7", "lift", "--"]
+    found = named_joints(shipping("joints: [elbow, arm.wrist-1]", "cmd('/arm/j7.pos')"), joints)
+    # "lift" is named nowhere; a name of no word ("--") is taken as named: nothing says.
+    assert found == {"elbow", "arm.wrist-1", "j7", "--"}
+    # Part of a longer word is no name.
+    assert named_joints(shipping("liftoff"), ["lift"]) == frozenset()
+
+
+def test_a_script_that_kills_a_planner_does_not_run_it(tmp_path: Path) -> None:
+    stop = 'pkill -9 -f "gazebo|rviz2|move_group"\nros2 launch rover_description robot.launch.py'
+    path = described(tmp_path, manipulator(), stop)
+    assert "move_group" not in controls_of(path).get("End Effector", "")
+    path = described(tmp_path / "runs", manipulator(), "ros2 launch arm move_group.launch.py")
+    assert "move_group" in controls_of(path)["End Effector"]
 
 
 def test_a_file_name_is_shown_with_its_unprintable_characters_escaped() -> None:

@@ -343,6 +343,8 @@ def _read_into(owner: _Package, path: str, top: str, names: set[str], budget: _B
     text = _text(data)
     if path.endswith((".launch", ".xml")):
         text = _uncommented(text)
+    if "kill" in text:
+        text = _KILLS.sub("", text)
     owner.mentions.update(names.intersection(_WORD.findall(text)))
     owner.files.append(ShippedFile(owner.name, os.path.relpath(path, top), text))
 
@@ -380,6 +382,11 @@ def _read(path: str, limit: int) -> bytes | None:
     finally:
         os.close(descriptor)
     return data
+
+
+# A line that stops processes (``pkill -f "gazebo|move_group"``, ``killall``, ``rosnode
+# kill``) names what a script ends, not what it runs.
+_KILLS = re.compile(r"^.*\b(pkill|killall|rosnode\s+kill)\b.*$", re.MULTILINE)
 
 
 def _uncommented(text: str) -> str:
