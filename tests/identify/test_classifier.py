@@ -142,6 +142,39 @@ def test_limits_all_equal_on_every_joint_are_a_cad_exporters_placeholders_not_a_
     assert identify_urdf(rig.text()).structure == "Other"
 
 
+def ros2_control(*joints: tuple[str, str]) -> str:
+    """A ``<ros2_control>`` block: each joint with a command interface of the kind given, or
+    with a state interface only (kind ``""``)."""
+    rows = "".join(
+        f'<joint name="{name}">'
+        + (f'<command_interface name="{kind}"/>' if kind else "")
+        + '<state_interface name="position"/></joint>'
+        for name, kind in joints
+    )
+    return f'<ros2_control name="hw" type="system">{rows}</ros2_control>'
+
+
+def test_equal_limits_on_a_joint_a_controller_commands_are_placeholders_not_a_lock() -> None:
+    # A CAD export of a cartesian arm on a rover: its slides written 0..0, beside wheels.
+    zero = '<axis xyz="0 0 1"/><limit lower="0" upper="0" effort="1" velocity="1"/>'
+    robot = builders.ugv()
+    robot.joint("lift", "prismatic", robot.root, "carriage", zero)
+    robot.joint("reach", "prismatic", "carriage", "boom", zero)
+    robot.joint("wrist", "continuous", "boom", "tool", '<axis xyz="1 0 0"/>')
+    robot.joint("imu_joint", "revolute", robot.root, "imu_link", zero)
+    robot.add(ros2_control(("lift", "position"), ("reach", "position"), ("imu_joint", "")))
+    urdf = parse_urdf(robot.text())
+    assert [urdf.joint(n).movable for n in ("lift", "reach")] == [True, True]  # type: ignore[union-attr]
+    # A joint the block only reads (no command interface) stays locked.
+    assert not urdf.joint("imu_joint").movable  # type: ignore[union-attr]
+    assert identify_urdf(robot.text()).structure == "Mobile Manipulator"
+    # A transmission's hardware interface commands a joint too.
+    geared = RobotText("g")
+    geared.joint("slide", "prismatic", geared.root, "s", zero)
+    geared.add(builders.transmission("slide"))
+    assert parse_urdf(geared.text()).joint("slide").movable  # type: ignore[union-attr]
+
+
 def test_flight_plugins_alone_make_a_uav() -> None:
     robot = RobotText("hector")
     robot.add(builders.model_plugin("propulsion", "libhector_gazebo_quadrotor_propulsion.so"))

@@ -525,6 +525,47 @@ def test_swivels_beside_wheels_of_their_own_are_casters_and_the_wheels_drive() -
     assert "no other wheel" not in found["Driving"]
 
 
+def climber(interface: str | None) -> RobotText:
+    """A ring of four wheels, each on a slide that presses it to a pole; ``interface``: how a
+    ``<ros2_control>`` block commands the slides (None: it does not)."""
+    robot = RobotText("climber")
+    blocks = []
+    for corner in ("ne", "nw", "sw", "se"):
+        slide = robot.joint(
+            f"{corner}_actuator", "prismatic", robot.root, f"{corner}_carriage",
+            '<axis xyz="1 0 0"/><limit lower="0" upper="0.04" effort="1" velocity="1"/>',
+        )  # fmt: skip
+        robot.joint(f"{corner}_wheel_joint", "continuous", slide, f"{corner}_wheel")
+        wheel = '<command_interface name="velocity"/>'
+        blocks.append(f'<joint name="{corner}_wheel_joint">{wheel}</joint>')
+        if interface is not None:
+            command = f'<command_interface name="{interface}"/>'
+            blocks.append(f'<joint name="{corner}_actuator">{command}</joint>')
+    robot.add(f'<ros2_control name="hw" type="system">{"".join(blocks)}</ros2_control>')
+    return robot
+
+
+def test_slides_that_carry_wheels_set_to_a_position_are_joint_control() -> None:
+    # A climber's arms press its wheels to the pole: each set to a place, one by one.
+    assert set(controls(climber("position"))) == {"Driving", "Joint"}
+    # A slide moved by velocity, or not commanded, carries its wheel as a steering mount does.
+    assert set(controls(climber("velocity"))) == {"Driving"}
+    assert set(controls(climber(None))) == {"Driving"}
+    # A rocker set to an angle carries its wheels over the ground: the vehicle's own motion.
+    rover = RobotText("rocker_rover")
+    rockers = ""
+    for side in ("left", "right"):
+        rocker = rover.joint(
+            f"{side}_rocker_joint", "revolute", rover.root, f"{side}_rocker",
+            '<axis xyz="0 1 0"/><limit lower="-0.3" upper="0.3" effort="1" velocity="1"/>',
+        )  # fmt: skip
+        for end in ("front", "rear"):
+            rover.joint(f"{side}_{end}_wheel_joint", "continuous", rocker, f"{side}_{end}_wheel")
+        rockers += f'<joint name="{side}_rocker_joint"><command_interface name="position"/></joint>'
+    rover.add(f'<ros2_control name="hw" type="system">{rockers}</ros2_control>')
+    assert set(controls(rover)) == {"Driving"}
+
+
 def test_a_thrust_plugin_that_names_only_the_hull_drives_the_vessel() -> None:
     robot = RobotText("hull")
     robot.add(builders.model_plugin("dyn", "libusv_gazebo_dynamics_plugin.so"))

@@ -265,6 +265,15 @@ def test_a_hydrophone_array_is_acoustic_positioning(filename: str) -> None:
     assert _kinds(robot.text()) == {"acoustic_positioning": 1, "sonar": 1}
 
 
+def test_a_magnetic_plugin_is_a_magnetometer_but_a_magnetic_wheel_is_none() -> None:
+    robot = builders.ugv()
+    robot.add(builders.model_plugin("compass", "libhector_gazebo_ros_magnetic.so"))
+    robot.add(builders.model_plugin("mag", "librotors_gazebo_magnetometer_plugin.so"))
+    robot.add(builders.model_plugin("grip", "libmagnetic_wheel_gazebo_plugin.so"))
+    robot.add(builders.model_plugin("hold", "libmagnet_gripper_plugin.so"))
+    assert _kinds(robot.text()) == {"magnetometer": 2}
+
+
 def test_a_wind_sensor_plugin_is_an_anemometer() -> None:
     robot = builders.surface_vessel()
     robot.add(builders.model_plugin("wind_sensor", "libWindSensorPlugin.so"))

@@ -437,17 +437,18 @@ class _Builder:
         controlled = frozenset(self._controlled(root))
         self.faults += _uncompiled_xacro(root, self.file)  # read as URDF, never compiled: say so
         models = self._models(root)
+        commands = _command_interfaces(root)
         return Urdf(
             name or "robot",
             self.file,
             tuple(links.values()),
-            tree,
+            _commanded_unlocked(tree, commands),
             sensors,
             plugins,
             controlled,
             top,
             self.warnings(),
-            _command_interfaces(root),
+            commands,
             _tags(root),
             models,
             _gravity_off(root),
@@ -895,6 +896,19 @@ def _closures(root: etree._Element, links: dict[str, Link]) -> tuple[tuple[str, 
                 if len(found) >= MAX_CLOSURES:
                     return tuple(found)
     return tuple(found)
+
+
+def _commanded_unlocked(
+    joints: tuple[Joint, ...], commands: tuple[tuple[str, tuple[str, ...]], ...]
+) -> tuple[Joint, ...]:
+    """``joints``, those a controller commands (a ``<ros2_control>`` command interface, a
+    transmission's hardware interface) unlocked: a joint a controller moves is not fixed, and
+    its equal limits are a CAD exporter's placeholders (every prismatic joint exported 0..0)."""
+    commanded = {name for name, _ in commands}
+    return tuple(
+        replace(joint, unlocked=True) if joint.name in commanded and not joint.movable else joint
+        for joint in joints
+    )
 
 
 def _command_interfaces(root: etree._Element) -> tuple[tuple[str, tuple[str, ...]], ...]:
