@@ -519,7 +519,7 @@ def _commanded(tree: JointTree, parts: _Parts, track_names: tuple[str, ...]) -> 
     joints that carry one. A head points a sensor (a pan/tilt camera); a mount and a trunk
     carrying only mounts move wheels, rotors or thrusters (a transformable multirotor's frame,
     a tilting rotor): the vehicle's own motion, not joint control, but for a mount's slide
-    commanded to a position (:func:`_slid_to_a_place`). On a body that flies or
+    commanded to a position (:func:`_placed_slides`). On a body that flies or
     swims, a short chain of no limb is the vehicle's too (a control surface, a gimbal). The
     legs of a body that walks (two or more) are driven by its gait controller: a transmission
     or ``ros2_control`` interface on them carries the gait's output to the motors, not an
@@ -541,25 +541,24 @@ def _commanded(tree: JointTree, parts: _Parts, track_names: tuple[str, ...]) -> 
         if limb.kind in kinds and not (limb.kind == "other" and set(limb.joints) <= sprockets)
     ]
     joints = [name for limb in limbs for name in limb.joints]
-    joints += [
-        name
-        for limb in parts.limbs
-        if limb.kind == "mount"
-        for name in limb.joints
-        if _slid_to_a_place(tree, name)
-    ]
+    joints += _placed_slides(tree, parts)
     carrying = _above(tree, [limb.joints[0] for limb in limbs])
     return joints + [name for name in parts.trunk if name in carrying]
 
 
-def _slid_to_a_place(tree: JointTree, name: str) -> bool:
-    """A mount's joint that slides, commanded to a position (a climber's arm pressing its
-    wheel to the pole, a wheel's lift): set one joint at a time, it does not move the vehicle
+def _placed_slides(tree: JointTree, parts: _Parts) -> list[str]:
+    """Mounts' joints that slide, commanded to a position (a climber's arms pressing its
+    wheels to the pole, a wheel's lift): set one joint at a time, they do not move the vehicle
     as a steering or a drive joint does."""
-    joint = tree.urdf.joint(name)
-    return (
-        joint is not None and joint.type == "prismatic" and "position" in tree.urdf.interfaces(name)
-    )
+    return [
+        name
+        for limb in parts.limbs
+        if limb.kind == "mount"
+        for name in limb.joints
+        if (joint := tree.urdf.joint(name)) is not None
+        and joint.type == "prismatic"
+        and "position" in tree.urdf.interfaces(name)
+    ]
 
 
 def _sprockets(tree: JointTree, track_names: tuple[str, ...]) -> list[str]:
