@@ -10,6 +10,7 @@ import pytest
 from solver.files.yamlio import parse_document
 from solver.identify import identify_urdf
 from solver.identify.profile import parse_profile
+from solver.identify.readers.urdf import parse_urdf
 from tests.conftest import RULES
 from tests.identify import builders
 from tests.identify.builders import RobotText
@@ -564,6 +565,45 @@ def test_slides_that_carry_wheels_set_to_a_position_are_joint_control() -> None:
         rockers += f'<joint name="{side}_rocker_joint"><command_interface name="position"/></joint>'
     rover.add(f'<ros2_control name="hw" type="system">{rockers}</ros2_control>')
     assert set(controls(rover)) == {"Driving"}
+
+
+def forklift(*plugins: tuple[str, str]) -> RobotText:
+    """A rover with a fork carriage on a slide; ``plugins``: (file name, joint) of Gazebo
+    plugins naming a joint in ``<joint_name>``."""
+    robot = builders.ugv()
+    robot.joint(
+        "fork_joint", "prismatic", robot.root, "fork",
+        '<axis xyz="0 0 1"/><limit lower="0" upper="1" effort="1" velocity="1"/>',
+    )  # fmt: skip
+    for filename, joint in plugins:
+        robot.add(builders.model_plugin(filename, filename, f"<joint_name>{joint}</joint_name>"))
+    return robot
+
+
+@pytest.mark.parametrize(
+    "filename",
+    [
+        "gz-sim-joint-controller-system",
+        "gz-sim-joint-position-controller-system",
+        "libignition-gazebo-joint-position-controller-system.so",
+    ],
+)
+def test_a_joint_a_simulators_joint_controller_commands_is_joint_control(filename: str) -> None:
+    assert "Joint" in controls(forklift((filename, "fork_joint")))
+
+
+def test_a_joint_only_a_state_publisher_names_is_commanded_by_nothing() -> None:
+    robot = forklift(("gz-sim-joint-state-publisher-system", "fork_joint"))
+    assert "Joint" not in controls(robot)
+    # What the plugin commands: a position controller to a position, the other by velocity.
+    urdf = parse_urdf(
+        forklift(
+            ("gz-sim-joint-position-controller-system", "fork_joint"),
+            ("gz-sim-joint-controller-system", "wheel_left_joint"),
+        ).text()
+    )
+    assert urdf.interfaces("fork_joint") == ("position",)
+    assert urdf.interfaces("wheel_left_joint") == ("velocity",)
 
 
 def test_a_thrust_plugin_that_names_only_the_hull_drives_the_vessel() -> None:

@@ -434,10 +434,11 @@ class _Builder:
             for p in g
             if p.tag == "plugin" or _legacy(p, "controller")
         )
-        controlled = frozenset(self._controlled(root))
+        simulated = _plugin_commands(plugins)
+        controlled = frozenset(self._controlled(root)) | {name for name, _ in simulated}
         self.faults += _uncompiled_xacro(root, self.file)  # read as URDF, never compiled: say so
         models = self._models(root)
-        commands = _command_interfaces(root)
+        commands = _merged_commands(_command_interfaces(root), simulated)
         return Urdf(
             name or "robot",
             self.file,
@@ -896,6 +897,38 @@ def _closures(root: etree._Element, links: dict[str, Link]) -> tuple[tuple[str, 
                 if len(found) >= MAX_CLOSURES:
                     return tuple(found)
     return tuple(found)
+
+
+# A simulator's joint controller plugin (Gazebo Sim's JointPositionController and
+# JointController, Ignition's): it commands the joints its <joint_name> elements name, as a
+# ros2_control block does (to a position, or a velocity).
+_JOINT_CONTROLLER = re.compile(r"joint[-_]?(position[-_]?)?controller", re.IGNORECASE)
+
+
+def _plugin_commands(plugins: tuple[PluginTag, ...]) -> tuple[tuple[str, tuple[str, ...]], ...]:
+    """(joint, command interfaces) of the joints a simulator's joint controller plugin
+    commands: position for a position controller, velocity for the others."""
+    found: dict[str, list[str]] = {}
+    for plugin in plugins:
+        matched = _JOINT_CONTROLLER.search(plugin.filename or plugin.name)
+        if matched is None:
+            continue
+        kind = "position" if matched.group(1) else "velocity"
+        for tag, text in plugin.params:
+            if tag.lower() == "joint_name":
+                found.setdefault(text, []).append(kind)
+    return tuple((name, tuple(dict.fromkeys(kinds))) for name, kinds in found.items())
+
+
+def _merged_commands(
+    *sources: tuple[tuple[str, tuple[str, ...]], ...],
+) -> tuple[tuple[str, tuple[str, ...]], ...]:
+    """(joint, command interfaces) of every source, each joint once with all its kinds."""
+    found: dict[str, list[str]] = {}
+    for source in sources:
+        for name, kinds in source:
+            found.setdefault(name, []).extend(kinds)
+    return tuple((name, tuple(dict.fromkeys(kinds))) for name, kinds in found.items())
 
 
 def _commanded_unlocked(
