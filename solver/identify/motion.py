@@ -209,11 +209,29 @@ def _limbs(
                 "opened and closed on command",
             )
         )
+    # A pan/tilt unit alone (no vehicle, arm, leg or gripper) is there to be aimed: its one
+    # command is its joints'.
+    if _head_alone(body):
+        found.append(
+            (
+                "head_alone",
+                f"{urdf_source}: likely, not declared: a pan/tilt unit alone, aimed on command",
+            )
+        )
     legs = body.count("leg")
     # Legs are there to walk on; the gait that walks them is software, not in the description.
     if legs >= _WALKING_LEGS:
         found.append(("legs", f"{urdf_source}: likely, not declared: {legs} legs to walk on"))
     return found
+
+
+def _head_alone(body: Body) -> bool:
+    """A pan/tilt unit with nothing else: heads only, no mobile base, vehicle or gripper."""
+    return (
+        bool(body.limbs)
+        and all(limb.kind == "head" for limb in body.limbs)
+        and not (body.grippers or body.fingers or body.mobile_base or body.flying or body.marine)
+    )
 
 
 def _end_effector_alone(body: Body) -> bool:

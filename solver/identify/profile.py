@@ -147,6 +147,7 @@ ROLE_SOURCES = (
     "arm",
     "arm_gripper",
     "gripper_alone",
+    "head_alone",
     "legs",
 )
 CONTROL_SOURCES = (

@@ -73,6 +73,20 @@ def test_an_arm_of_five_joints_with_a_gripper_shows_joint_goals_only() -> None:
     assert set(controls(robot)) == {"Joint"}
 
 
+def test_a_pan_tilt_unit_alone_is_aimed_by_its_joints() -> None:
+    assert controls(builders.pan_tilt_only()) == {
+        "Joint": "urdf: likely, not declared: a pan/tilt unit alone, aimed on command"
+    }
+    # A gimbal under a drone, or a pan/tilt unit beside a gripper, aims for something else.
+    drone = builders.quadrotor()
+    tip = drone.chain(drone.root, ["gimbal_pan", "gimbal_tilt"])
+    drone.fixed(tip, "camera_link")
+    assert "Joint" not in controls(drone)
+    rig = builders.pan_tilt_only()
+    rig.chain(rig.root, ["gripper_finger_joint"], "prismatic")
+    assert all("pan/tilt" not in source for source in controls(rig).values())
+
+
 def test_a_pan_tilt_head_with_transmissions_is_not_joint_control() -> None:
     # A camera's pan/tilt points a sensor; it is not a motion control of the robot.
     robot = builders.ugv()
