@@ -541,15 +541,19 @@ def _commanded(tree: JointTree, parts: _Parts, track_names: tuple[str, ...]) -> 
         if limb.kind in kinds and not (limb.kind == "other" and set(limb.joints) <= sprockets)
     ]
     joints = [name for limb in limbs for name in limb.joints]
-    joints += _placed_slides(tree, parts)
+    joints += _placed_slides(tree, parts, vehicle)
     carrying = _above(tree, [limb.joints[0] for limb in limbs])
     return joints + [name for name in parts.trunk if name in carrying]
 
 
-def _placed_slides(tree: JointTree, parts: _Parts) -> list[str]:
-    """Mounts' joints that slide, commanded to a position (a climber's arms pressing its
-    wheels to the pole, a wheel's lift): set one joint at a time, they do not move the vehicle
-    as a steering or a drive joint does."""
+def _placed_slides(tree: JointTree, parts: _Parts, vehicle: bool) -> list[str]:
+    """Mounts' joints that slide across the ground's vertical, commanded to a position (a
+    climber's arms pressing its wheels to the pole): set one joint at a time, they do not move
+    the vehicle as a steering or a drive joint does. A slide along the vertical holds its
+    wheel to the ground (a suspension, whatever holds it), and a flying or swimming body's
+    (``vehicle``) move its rotors or thrusters."""
+    if vehicle:
+        return []
     return [
         name
         for limb in parts.limbs
@@ -558,7 +562,12 @@ def _placed_slides(tree: JointTree, parts: _Parts) -> list[str]:
         if (joint := tree.urdf.joint(name)) is not None
         and joint.type == "prismatic"
         and "position" in tree.urdf.interfaces(name)
+        and abs(tree.poses.axis(joint)[2]) < _UPRIGHT
     ]
+
+
+# How upright a slide's axis is (its cosine to the vertical) to hold a wheel to the ground.
+_UPRIGHT = 0.9
 
 
 def _sprockets(tree: JointTree, track_names: tuple[str, ...]) -> list[str]:

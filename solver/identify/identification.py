@@ -243,12 +243,13 @@ def identify_urdf(
 
 
 def _named(packages: Workspace | None, body: Body) -> frozenset[str] | None:
-    """The arms' joints the robot's packages name, when they were read whole; else None."""
-    if packages is None or not packages.complete:
+    """The arms' joints the robot's packages name, when they were read whole and an arm may be
+    only drawn (:func:`~solver.identify.motion.controls_from_description`: a body a drive
+    plugin moves); else None."""
+    arms = {j for limb in body.limbs if limb.kind == "arm" for j in limb.joints}
+    if packages is None or not packages.complete or not arms or not body.drive_plugins:
         return None
-    return named_joints(
-        packages, {j for limb in body.limbs if limb.kind == "arm" for j in limb.joints}
-    )
+    return named_joints(packages, arms)
 
 
 def _srdf(text: str | bytes, file: str, urdf: Urdf) -> tuple[Srdf | None, tuple[Fault, ...]]:

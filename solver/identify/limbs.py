@@ -1292,9 +1292,10 @@ def _unnamed_kind(
 
 
 def _turns(chain: list[Joint]) -> bool:
-    """A joint of the chain turns: a pan/tilt unit points a sensor (on a lift or not), and a
-    slide alone (a forklift's carriage) only carries it up and down."""
-    return any(joint.type != "prismatic" for joint in chain)
+    """The chain's last joint turns: a pan/tilt unit points the sensor it carries (on a lift
+    or not); a chain that ends in a slide carries it up and down (a forklift's carriage, on a
+    mast that tilts or not)."""
+    return chain[-1].type != "prismatic"
 
 
 def _pan_then_tilt(tree: JointTree, pan: Joint, tilt: Joint) -> bool:

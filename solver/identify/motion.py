@@ -37,6 +37,7 @@ does not tell). Such a Waypoint is a guess and says so.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Collection
 from typing import TYPE_CHECKING
 
@@ -316,15 +317,22 @@ def _navigation(
 
 
 def _shown_only(limb: Limb, body: Body, urdf: Urdf | None, named: Collection[str] | None) -> bool:
-    """An arm only drawn, on a vehicle its description drives by a plugin: no transmission or
-    ``ros2_control`` block commands a joint of it, and the robot's packages, read whole
-    (``named``: the joints their files name), name none (a model whose arm moves by the
-    joint state publisher's sliders in RViz). Without the packages the arm is taken as
-    commanded, a guess."""
+    """An arm only drawn, on a vehicle its description drives by a plugin: no transmission,
+    ``ros2_control`` block or simulator's joint controller names a joint of it, no plugin
+    plays joint trajectories, and the robot's packages, read whole (``named``: the joints
+    their files name), name none (a model whose arm moves by the joint state publisher's
+    sliders in RViz). Without the packages the arm is taken as commanded, a guess."""
     if named is None or urdf is None or not body.drive_plugins:
+        return False
+    if any(_TRAJECTORIES.search(f"{p.name} {p.filename}") for p in urdf.plugins):
         return False
     joints = set(limb.joints)
     return not (joints & urdf.controlled_joints or joints & set(named))
+
+
+# A plugin that plays joint trajectories on the description's joints (Gazebo's
+# joint_pose_trajectory): it names none of them, and commands them all.
+_TRAJECTORIES = re.compile(r"joint_?(pose_?)?trajector", re.IGNORECASE)
 
 
 def controls_from_description(

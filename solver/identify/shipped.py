@@ -73,31 +73,31 @@ def body_from_workspace(body: Body, workspace: Workspace, profile: Profile) -> B
 
 def named_joints(workspace: Workspace, joints: Collection[str]) -> frozenset[str]:
     """The ``joints`` a file of the robot's packages names (a controller's joint list, a
-    script's command): joints the packages may command. Each file is split into words once,
-    and looked up by them (linear in its size, however many joints a description lists); a
-    name of several words (``arm.wrist-1``) is named where all its words are."""
-    by_word: dict[str, list[tuple[str, frozenset[str]]]] = {}
-    named: set[str] = set()
+    script's command): joints the packages may command. A joint is named by a word of a file
+    (``elbow``, ``arm.wrist-1``, ``j7`` in ``/arm/j7.pos``), or by the end of its name after
+    an underscore (``shoulder_pan`` for ``ur_shoulder_pan``: a launch file adds a prefix).
+    Each file is split into words once and they are looked up (linear in its size, however
+    many joints a description lists); a name no word can be (a space in it) is taken as
+    named: nothing says it is not."""
+    tails: dict[str, set[str]] = {}  # a word -> the joints it names
     for name in set(joints):
-        parts = _WORD.findall(name)
-        if not parts:
-            named.add(name)  # no word to look for: nothing says it is not named
-        else:
-            by_word.setdefault(parts[0], []).append((name, frozenset(parts)))
+        for tail in (name, *(name[at + 1 :] for at, c in enumerate(name) if c == "_")):
+            if tail:
+                tails.setdefault(tail, set()).add(name)
+    named = {name for name in joints if not _WORD.fullmatch(name)}
     for shipped in workspace.files:
-        if not by_word:
+        if not tails:
             break
         words = set(_WORD.findall(shipped.text))
-        for first in words.intersection(by_word):
-            found = {name for name, mine in by_word[first] if mine <= words}
-            named |= found
-            by_word[first] = [entry for entry in by_word[first] if entry[0] not in found]
-            if not by_word[first]:
-                del by_word[first]
+        words.update(_PART.findall(shipped.text))
+        for word in tails.keys() & words:  # iterates the smaller of the two
+            named |= tails.pop(word)
     return frozenset(named)
 
 
-_WORD = re.compile(r"\w+")
+# A word a joint is named by as written (``arm.wrist-1``), and the words inside it (``j7``).
+_WORD = re.compile(r"[\w.\-]+")
+_PART = re.compile(r"\w+")
 
 
 def _first_found(workspace: Workspace, pattern: Pattern) -> str | None:

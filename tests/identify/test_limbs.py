@@ -408,6 +408,13 @@ def test_a_slide_carrying_a_camera_points_nothing_it_is_no_head() -> None:
     robot = builders.ugv()
     robot.chain(robot.root, ["camera"], "prismatic")
     assert limb_kinds(robot) == ["other"]
+    # Nor a carriage on a mast that tilts: the chain ends in the slide.
+    robot = builders.ugv()
+    tip = robot.chain(robot.root, ["j1"])
+    tip = robot.chain(tip, ["j2"], "prismatic")
+    robot.fixed(tip, "cam_frame")
+    robot.add(builders.gazebo_sensor("cam_frame", "camera", "cam"))
+    assert limb_kinds(robot) == ["other"]
 
 
 def test_a_pan_tilt_unit_on_a_lift_still_points_its_camera() -> None:

@@ -581,6 +581,40 @@ def test_slides_that_carry_wheels_set_to_a_position_are_joint_control() -> None:
     assert set(controls(rover)) == {"Driving"}
 
 
+def test_slides_that_hold_wheels_up_or_move_rotors_are_the_vehicles_own() -> None:
+    # Each wheel on an upright slide (a suspension, even one held to a position).
+    rover = RobotText("sprung")
+    blocks = ""
+    for corner in ("fl", "fr", "rl", "rr"):
+        slide = rover.joint(
+            f"{corner}_suspension", "prismatic", rover.root, f"{corner}_strut",
+            '<axis xyz="0 0 1"/><limit lower="-0.05" upper="0.05" effort="1" velocity="1"/>',
+        )  # fmt: skip
+        rover.joint(f"{corner}_wheel_joint", "continuous", slide, f"{corner}_wheel")
+        blocks += f'<joint name="{corner}_suspension"><command_interface name="position"/></joint>'
+    rover.add(f'<ros2_control name="hw" type="system">{blocks}</ros2_control>')
+    assert set(controls(rover)) == {"Driving"}
+    # A quadrotor whose rotor arms slide out.
+    drone = RobotText("morphing")
+    for i in range(4):
+        arm = drone.joint(
+            f"arm_{i}", "prismatic", drone.root, f"arm_{i}_link",
+            '<axis xyz="1 0 0"/><limit lower="0" upper="0.1" effort="1" velocity="1"/>',
+        )  # fmt: skip
+        drone.joint(f"rotor_{i}_joint", "continuous", arm, f"rotor_{i}", '<axis xyz="0 0 1"/>')
+        drone.add(builders.transmission(f"arm_{i}"))
+    assert "Joint" not in controls(drone)
+    # A mast lifting a pan/tilt camera, commanded to a position, points a sensor: a head.
+    mast = builders.ugv()
+    tip = mast.chain(mast.root, ["j1"], "prismatic")
+    tip = mast.chain(tip, ["j2", "j3"])
+    mast.fixed(tip, "cam_frame")
+    mast.add(builders.gazebo_sensor("cam_frame", "camera", "cam"))
+    for name in ("j1", "j2", "j3"):
+        mast.add(builders.transmission(name))
+    assert set(controls(mast)) == {"Driving"}
+
+
 def forklift(*plugins: tuple[str, str]) -> RobotText:
     """A rover with a fork carriage on a slide; ``plugins``: (file name, joint) of Gazebo
     plugins naming a joint in ``<joint_name>``."""

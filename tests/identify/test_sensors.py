@@ -269,9 +269,12 @@ def test_a_magnetic_plugin_is_a_magnetometer_but_a_magnetic_wheel_is_none() -> N
     robot = builders.ugv()
     robot.add(builders.model_plugin("compass", "libhector_gazebo_ros_magnetic.so"))
     robot.add(builders.model_plugin("mag", "librotors_gazebo_magnetometer_plugin.so"))
+    robot.add(builders.model_plugin("field", "libmagnetic_field_plugin.so"))
+    robot.add(builders.model_plugin("sensor", "libmagnetic_sensor_plugin.so"))
     robot.add(builders.model_plugin("grip", "libmagnetic_wheel_gazebo_plugin.so"))
     robot.add(builders.model_plugin("hold", "libmagnet_gripper_plugin.so"))
-    assert _kinds(robot.text()) == {"magnetometer": 2}
+    robot.add(builders.model_plugin("coil", "libelectromagnetic.so"))
+    assert _kinds(robot.text()) == {"magnetometer": 4}
 
 
 def test_a_wind_sensor_plugin_is_an_anemometer() -> None:

@@ -204,6 +204,22 @@ def test_an_arm_a_package_or_the_description_commands_keeps_its_controls(
     assert {"Joint", "End Effector"} <= set(controls_of(described(tmp_path, robot, bringup)))
 
 
+def test_an_arm_a_trajectory_plugin_plays_is_commanded(tmp_path: Path) -> None:
+    player = '<gazebo><plugin name="t" filename="libgazebo_ros_joint_pose_trajectory.so"/></gazebo>'
+    assert "Joint" in controls_of(described(tmp_path, picker(player), ""))
+
+
+def test_an_arm_whose_packages_were_read_in_part_is_taken_as_commanded(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from solver.identify.readers import workspace
+
+    monkeypatch.setattr(workspace, "MAX_FILES", 1)
+    path = described(tmp_path, picker(), "<node pkg='joint_state_publisher_gui'/>")
+    package(tmp_path / "ws" / "src", "rover_extras", {"a.launch": "rover_description"})
+    assert "Joint" in controls_of(path)
+
+
 def test_an_arm_on_a_base_no_plugin_drives_is_taken_as_commanded(tmp_path: Path) -> None:
     robot = ugv()
     arm(robot, robot.root)
@@ -211,20 +227,42 @@ def test_an_arm_on_a_base_no_plugin_drives_is_taken_as_commanded(tmp_path: Path)
 
 
 def test_the_joints_packages_name_are_read_word_by_word() -> None:
-    joints = ["elbow", "arm.wrist-1", "j7", "lift", "--"]
-    found = named_joints(shipping("joints: [elbow, arm.wrist-1]", "cmd('/arm/j7.pos')"), joints)
-    # "lift" is named nowhere; a name of no word ("--") is taken as named: nothing says.
-    assert found == {"elbow", "arm.wrist-1", "j7", "--"}
+    joints = ["elbow", "arm.wrist-1", "j7", "lift", "a b", "ur_shoulder_pan", "arm.tool"]
+    texts = ("joints: [elbow, arm.wrist-1]", "cmd('/arm/j7.pos', tool)", "$(arg p)shoulder_pan")
+    found = named_joints(shipping(*texts), joints)
+    # A name no word can be ("a b") is taken as named; the end of a name after an underscore
+    # names it (a launch file's prefix); "lift", and "arm.tool" whose words are apart, are not.
+    assert found == {"elbow", "arm.wrist-1", "j7", "a b", "ur_shoulder_pan"}
     # Part of a longer word is no name.
     assert named_joints(shipping("liftoff"), ["lift"]) == frozenset()
 
 
-def test_a_script_that_kills_a_planner_does_not_run_it(tmp_path: Path) -> None:
-    stop = 'pkill -9 -f "gazebo|rviz2|move_group"\nros2 launch rover_description robot.launch.py'
-    path = described(tmp_path, manipulator(), stop)
+@pytest.mark.parametrize(
+    "stop",
+    [
+        'pkill -9 -f "gazebo|rviz2|move_group"',
+        "killall -q move_group",
+        "rosnode kill /move_group",
+    ],
+)
+def test_a_script_that_kills_a_planner_does_not_run_it(tmp_path: Path, stop: str) -> None:
+    path = described(tmp_path, manipulator(), f"{stop}\nros2 launch rover_description x.py")
     assert "move_group" not in controls_of(path).get("End Effector", "")
     path = described(tmp_path / "runs", manipulator(), "ros2 launch arm move_group.launch.py")
     assert "move_group" in controls_of(path)["End Effector"]
+
+
+def test_only_the_kill_command_is_left_out_not_its_line_or_the_next() -> None:
+    from solver.identify.readers.workspace import _KILLS
+
+    assert (
+        _KILLS.sub("", "pkill -f gz && ros2 launch nav2_bringup a")
+        == "&& ros2 launch nav2_bringup a"
+    )
+    assert _KILLS.sub("", "killall 'a|b'; move_base") == "; move_base"
+    # "rosnode" and "kill" on two lines are no command.
+    text = "# needs rosnode\n\nkill -INT $PID\nnav2_bringup"
+    assert _KILLS.sub("", text) == text
 
 
 def test_a_file_name_is_shown_with_its_unprintable_characters_escaped() -> None:

@@ -384,9 +384,10 @@ def _read(path: str, limit: int) -> bytes | None:
     return data
 
 
-# A line that stops processes (``pkill -f "gazebo|move_group"``, ``killall``, ``rosnode
-# kill``) names what a script ends, not what it runs.
-_KILLS = re.compile(r"^.*\b(pkill|killall|rosnode\s+kill)\b.*$", re.MULTILINE)
+# A command that stops processes (``pkill -f "gazebo|move_group"``, ``killall``, ``rosnode
+# kill``) names what a script ends, not what it runs: it is left out up to the end of the
+# command (a newline, ``;``, ``&`` or ``|`` outside quotes), the rest of its line kept.
+_KILLS = re.compile(r"\b(pkill|killall|rosnode[ \t]+kill)\b(?:\"[^\"\n]*\"|'[^'\n]*'|[^\n;&|\"'])*")
 
 
 def _uncommented(text: str) -> str:
