@@ -59,6 +59,9 @@ def test_move_base_and_position_set_points_are_navigation_too() -> None:
 
 def test_an_arm_bolted_in_place_is_sent_no_waypoints_whatever_its_repository_holds() -> None:
     assert shipped("Manipulator", "target_pose = Pose()") == {}
+    # Nor a body no structure fits: a pan/tilt unit alone beside a repository's Nav2.
+    assert shipped("Other", "IncludeLaunchDescription('nav2_bringup')") == {}
+    assert shipped("Other", "goal.target_pose = pose") == {}
 
 
 def test_a_teleop_node_is_the_structures_velocity_control() -> None:
