@@ -527,9 +527,7 @@ def _commanded(tree: JointTree, parts: _Parts, track_names: tuple[str, ...]) -> 
     track's sprocket spinning on a joint of no other role (a chain of its own) drives the
     vehicle too.
     """
-    vehicle = bool(
-        parts.of("rotor") or tree.labels("flight") or parts.fixed_rotors or tree.reader.marine
-    )
+    vehicle = _vehicle(tree, parts)
     walks = sum(1 for limb in parts.limbs if limb.kind == "leg") >= _WALKING_LEGS
     kinds = tuple(
         k for k in _COMMANDED if not (vehicle and k == "other") and not (walks and k == "leg")
@@ -544,6 +542,18 @@ def _commanded(tree: JointTree, parts: _Parts, track_names: tuple[str, ...]) -> 
     joints += _placed_slides(tree, parts, vehicle)
     carrying = _above(tree, [limb.joints[0] for limb in limbs])
     return joints + [name for name in parts.trunk if name in carrying]
+
+
+def _vehicle(tree: JointTree, parts: _Parts) -> bool:
+    """The body flies or swims: rotors, control surfaces or a rudder, a flight plugin, or a
+    body in water."""
+    return bool(
+        parts.of("rotor")
+        or parts.of("fin")
+        or tree.labels("flight")
+        or parts.fixed_rotors
+        or tree.reader.marine
+    )
 
 
 def _placed_slides(tree: JointTree, parts: _Parts, vehicle: bool) -> list[str]:

@@ -189,6 +189,9 @@ def identify_urdf(
     dives = body.marine and not body.surface_hints
     if dives:
         detections = list(under_water(detections))
+    shipped = (
+        () if packages is None else controls_from_workspace(packages, profile, reading.structure)
+    )
     controls = [
         controls_from_description(
             body,
@@ -199,10 +202,11 @@ def identify_urdf(
             srdf_source=Path(srdf_file).name,
             guess_navigation=packages is None or not packages.complete,
             named=_named(packages, body),
-        )
+            moved=_moves(shipped, profile),
+        ),
+        shipped,
     ]
     if packages is not None:
-        controls.append(controls_from_workspace(packages, profile, reading.structure))
         notes = (*notes, *packages.notes)
     for source in topics:
         topical = sensors_from_topics(source.topics, profile, source.name)
@@ -240,6 +244,13 @@ def identify_urdf(
         declared=None if description is None else description.file,
         disagreements=found.disagreements,
     )
+
+
+def _moves(shipped: Sequence[Control], profile: Profile) -> bool:
+    """The robot's packages ship a velocity control (a teleop node driving, flying or walking
+    the body): the body moves."""
+    velocities = {profile.velocity_default, *(c for _, c in profile.velocity_by_structure)}
+    return any(control.motion_control in velocities for control in shipped)
 
 
 def _named(packages: Workspace | None, body: Body) -> frozenset[str] | None:

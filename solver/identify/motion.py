@@ -72,7 +72,7 @@ def _ground(body: Body, urdf_source: str) -> _Shown:
     if body.controlled_wheels:
         count = len(body.controlled_wheels)
         found.append(
-            ("controlled_wheels", f"{urdf_source}: {count} wheel joint(s) with a transmission")
+            ("controlled_wheels", f"{urdf_source}: {count} wheel joint(s) a controller drives")
         )
     if body.wheels:
         found.append(("wheels", f"{urdf_source}: {len(body.wheels)} wheel joint(s) that turn"))
@@ -105,7 +105,7 @@ def _ground(body: Body, urdf_source: str) -> _Shown:
         # operator steers it, as thrusters take a vessel's velocity commands.
         count = len(body.controlled_fins)
         found.append(
-            ("controlled_rudders", f"{urdf_source}: {count} rudder joint(s) with a transmission")
+            ("controlled_rudders", f"{urdf_source}: {count} rudder joint(s) a controller drives")
         )
     return found
 
@@ -161,15 +161,21 @@ def _telescopes(previous: Joint, joint: Joint) -> bool:
 
 
 def _limbs(
-    body: Body, urdf_source: str, urdf: Urdf | None = None, named: Collection[str] | None = None
+    body: Body,
+    urdf_source: str,
+    urdf: Urdf | None = None,
+    named: Collection[str] | None = None,
+    *,
+    moved: bool = False,
 ) -> _Shown:
-    """Limb joints with a transmission (declared); arms of actuated joints (roles), but for
-    an arm nothing commands (:func:`_shown_only`)."""
+    """Limb joints a controller drives (declared); arms of actuated joints (roles), but for
+    an arm nothing commands (:func:`_shown_only`); a pan/tilt unit alone, unless the robot's
+    packages move the body it is on (``moved``: a description trimmed to its sensor head)."""
     found = []
     if body.controlled_joints:
         count = len(body.controlled_joints)
         found.append(
-            ("controlled_joints", f"{urdf_source}: {count} limb joint(s) with a transmission")
+            ("controlled_joints", f"{urdf_source}: {count} limb joint(s) a controller drives")
         )
     if body.controlled_fingers:
         count = len(body.controlled_fingers)
@@ -212,7 +218,7 @@ def _limbs(
         )
     # A pan/tilt unit alone (no vehicle, arm, leg or gripper) is there to be aimed: its one
     # command is its joints'.
-    if _head_alone(body):
+    if _head_alone(body) and not moved:
         found.append(
             (
                 "head_alone",
@@ -332,7 +338,7 @@ def _shown_only(limb: Limb, body: Body, urdf: Urdf | None, named: Collection[str
 
 # A plugin that plays joint trajectories on the description's joints (Gazebo's
 # joint_pose_trajectory): it names none of them, and commands them all.
-_TRAJECTORIES = re.compile(r"joint_?(pose_?)?trajector", re.IGNORECASE)
+_TRAJECTORIES = re.compile(r"joint[-_]?(pose[-_]?)?trajector", re.IGNORECASE)
 
 
 def controls_from_description(
@@ -346,16 +352,18 @@ def controls_from_description(
     srdf_source: str = "srdf",
     guess_navigation: bool = True,
     named: Collection[str] | None = None,
+    moved: bool = False,
 ) -> tuple[Control, ...]:
     """The motion controls the body (and SRDF) show, each with what shows it; with the kinds
     of the sensors the description declares, the profile's navigation guess too (not with
     ``guess_navigation=False``: the robot's packages were read, and say). ``named``: the
-    joints the robot's packages name, when they were read whole."""
+    joints the robot's packages name, when they were read whole; ``moved``: the packages ship
+    a control that moves the body (a teleop node)."""
     effectors = () if srdf is None else hand_effectors(body, srdf, urdf)  # once per SRDF
     shown = [
         *_ground(body, urdf_source),
         *_flight(body, urdf_source),
-        *_limbs(body, urdf_source, urdf, named),
+        *_limbs(body, urdf_source, urdf, named, moved=moved),
         *_planned(body, srdf, profile, urdf, srdf_source, effectors=effectors),
     ]
     if _feet_only(srdf, effectors) or _balances(body):

@@ -74,16 +74,15 @@ def body_from_workspace(body: Body, workspace: Workspace, profile: Profile) -> B
 def named_joints(workspace: Workspace, joints: Collection[str]) -> frozenset[str]:
     """The ``joints`` a file of the robot's packages names (a controller's joint list, a
     script's command): joints the packages may command. A joint is named by a word of a file
-    (``elbow``, ``arm.wrist-1``, ``j7`` in ``/arm/j7.pos``), or by the end of its name after
-    an underscore (``shoulder_pan`` for ``ur_shoulder_pan``: a launch file adds a prefix).
+    (``elbow``, ``arm.wrist-1``, ``j7`` in ``/arm/j7.pos``), or by its name without a prefix
+    a launch file adds (:func:`_prefixed`).
     Each file is split into words once and they are looked up (linear in its size, however
     many joints a description lists); a name no word can be (a space in it) is taken as
     named: nothing says it is not."""
     tails: dict[str, set[str]] = {}  # a word -> the joints it names
     for name in set(joints):
-        for tail in (name, *(name[at + 1 :] for at, c in enumerate(name) if c == "_")):
-            if tail:
-                tails.setdefault(tail, set()).add(name)
+        for tail in (name, *_prefixed(name)):
+            tails.setdefault(tail, set()).add(name)
     named = {name for name in joints if not _WORD.fullmatch(name)}
     for shipped in workspace.files:
         if not tails:
@@ -95,6 +94,16 @@ def named_joints(workspace: Workspace, joints: Collection[str]) -> frozenset[str
     return frozenset(named)
 
 
+def _prefixed(name: str) -> tuple[str, ...]:
+    """What a name reads as without a prefix of one or two words a launch file adds
+    (``ur_shoulder_pan`` as ``shoulder_pan``), when that still has two words: a last word alone
+    (``1``, ``lift``, ``joint``) names nothing."""
+    parts = name.split("_", _PREFIX_WORDS)
+    return tuple(tail for at in range(1, len(parts)) if "_" in (tail := "_".join(parts[at:])))
+
+
+# The most words of a prefix a launch file adds to a joint's name (``ur_``, ``left_ur_``).
+_PREFIX_WORDS = 2
 # A word a joint is named by as written (``arm.wrist-1``), and the words inside it (``j7``).
 _WORD = re.compile(r"[\w.\-]+")
 _PART = re.compile(r"\w+")

@@ -255,7 +255,7 @@ def test_a_snake_of_two_joint_modules_with_passive_side_wheels_is_still_a_spine(
     roles = {role.joint: role.role for role in result.roles}
     assert {roles[f"w{i}{side}"] for i in range(1, 5) for side in "ab"} == {"passive"}
     assert {c.motion_control: c.source for c in result.motion_controls} == {
-        "Joint": "urdf: 8 limb joint(s) with a transmission"
+        "Joint": "urdf: 8 limb joint(s) a controller drives"
     }
 
 

@@ -85,6 +85,13 @@ def test_a_pan_tilt_unit_alone_is_aimed_by_its_joints() -> None:
     rig = builders.pan_tilt_only()
     rig.chain(rig.root, ["gripper_finger_joint"], "prismatic")
     assert all("pan/tilt" not in source for source in controls(rig).values())
+    # Nor a sensor mast on a hull in water, or a head beside a limb of no name.
+    mast = builders.underwater_vehicle()
+    mast.chain(mast.root, ["pan_joint", "tilt_joint"])
+    assert all("pan/tilt" not in source for source in controls(mast).values())
+    beside = builders.pan_tilt_only()
+    beside.chain(beside.root, ["j1"])
+    assert all("pan/tilt" not in source for source in controls(beside).values())
 
 
 def test_a_pan_tilt_head_with_transmissions_is_not_joint_control() -> None:
@@ -101,7 +108,7 @@ def test_arm_joints_with_transmissions_are_the_evidence_for_joint_control() -> N
     for name in ("shoulder_pan", "shoulder_lift", "elbow", "head_pan", "head_tilt"):
         robot.add(builders.transmission(name))
     # The head's two transmissions are not counted; the arm's three are.
-    assert controls(robot)["Joint"] == "urdf: 3 limb joint(s) with a transmission"
+    assert controls(robot)["Joint"] == "urdf: 3 limb joint(s) a controller drives"
 
 
 def test_transmissions_on_the_legs_of_a_walker_carry_its_gait_not_joint_commands() -> None:
@@ -116,7 +123,7 @@ def test_an_arm_on_a_walker_with_transmissions_is_joint_control_and_its_legs_are
     robot = builders.legged_manipulator()
     for joint in ("FL_hip", "FR_hip", "RL_hip", "RR_hip", "shoulder_pan", "elbow"):
         robot.add(builders.transmission(joint))
-    assert controls(robot)["Joint"] == "urdf: 2 limb joint(s) with a transmission"
+    assert controls(robot)["Joint"] == "urdf: 2 limb joint(s) a controller drives"
 
 
 def test_one_leg_with_transmissions_walks_nowhere_and_its_joints_take_commands() -> None:
@@ -124,7 +131,7 @@ def test_one_leg_with_transmissions_walks_nowhere_and_its_joints_take_commands()
     builders.leg(robot, robot.root, "test", ("hip", "knee", "ankle"))
     for joint in ("test_hip", "test_knee", "test_ankle"):
         robot.add(builders.transmission(joint))
-    assert controls(robot) == {"Joint": "urdf: 3 limb joint(s) with a transmission"}
+    assert controls(robot) == {"Joint": "urdf: 3 limb joint(s) a controller drives"}
 
 
 def transformable_multirotor() -> RobotText:
@@ -166,7 +173,7 @@ def test_a_tracked_bases_flippers_are_driven_limbs_not_the_fingers_of_a_hand() -
     assert {role.role for role in result.roles} == {"other"}
     assert controls(tracked_with_flippers()) == {
         "Driving": "urdf: drive plugin libSimpleTrackedVehiclePlugin.so",
-        "Joint": "urdf: 4 limb joint(s) with a transmission",
+        "Joint": "urdf: 4 limb joint(s) a controller drives",
     }
 
 
@@ -640,6 +647,40 @@ def test_a_joint_a_simulators_joint_controller_commands_is_joint_control(filenam
     assert "Joint" in controls(forklift((filename, "fork_joint")))
 
 
+def test_a_joint_a_plugin_commands_is_no_lock_whatever_its_limits() -> None:
+    robot = forklift(("gz-sim-joint-position-controller-system", "fork_joint"))
+    text = robot.text().replace('lower="0" upper="1"', 'lower="0" upper="0"')
+    assert parse_urdf(text).joint("fork_joint").movable  # type: ignore[union-attr]
+    # A force-commanded controller commands an effort.
+    forced = forklift(("gz-sim-joint-controller-system", "fork_joint"))
+    forced.add(
+        builders.model_plugin(
+            "gz-sim-joint-controller-system",
+            "gz-sim-joint-controller-system",
+            "<joint_name>wheel_left_joint</joint_name><use_force_commands>true</use_force_commands>",
+        )
+    )
+    assert parse_urdf(forced.text()).interfaces("wheel_left_joint") == ("effort",)
+
+
+def test_an_aircrafts_propeller_a_plugin_spins_is_its_flight_not_joint_control() -> None:
+    plane = RobotText("plane")
+    for side in ("left", "right"):
+        plane.joint(
+            f"{side}_aileron_joint", "revolute", plane.root, f"{side}_aileron",
+            '<axis xyz="0 1 0"/><limit lower="-0.5" upper="0.5" effort="1" velocity="1"/>',
+        )  # fmt: skip
+    plane.joint("prop_joint", "continuous", plane.root, "propeller", '<axis xyz="1 0 0"/>')
+    plane.add(
+        builders.model_plugin(
+            "gz-sim-joint-controller-system",
+            "gz-sim-joint-controller-system",
+            "<joint_name>prop_joint</joint_name>",
+        )
+    )
+    assert "Joint" not in controls(plane)
+
+
 def test_a_joint_only_a_state_publisher_names_is_commanded_by_nothing() -> None:
     robot = forklift(("gz-sim-joint-state-publisher-system", "fork_joint"))
     assert "Joint" not in controls(robot)
@@ -722,7 +763,7 @@ def test_a_vessel_with_no_thruster_steered_by_a_driven_rudder_is_driven() -> Non
     result = identify_urdf(sailboat().text())
     assert result.structure == "Surface Vessel"
     assert {c.motion_control for c in result.motion_controls} == {"Driving"}
-    assert "rudder joint(s) with a transmission" in result.motion_controls[0].source
+    assert "rudder joint(s) a controller drives" in result.motion_controls[0].source
     # A rudder no controller drives steers nothing an operator commands.
     assert controls(sailboat(driven_rudder=False)) == {}
 

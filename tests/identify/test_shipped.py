@@ -59,9 +59,6 @@ def test_move_base_and_position_set_points_are_navigation_too() -> None:
 
 def test_an_arm_bolted_in_place_is_sent_no_waypoints_whatever_its_repository_holds() -> None:
     assert shipped("Manipulator", "target_pose = Pose()") == {}
-    # Nor a body no structure fits: a pan/tilt unit alone beside a repository's Nav2.
-    assert shipped("Other", "IncludeLaunchDescription('nav2_bringup')") == {}
-    assert shipped("Other", "goal.target_pose = pose") == {}
 
 
 def test_a_teleop_node_is_the_structures_velocity_control() -> None:
@@ -208,8 +205,19 @@ def test_an_arm_a_package_or_the_description_commands_keeps_its_controls(
 
 
 def test_an_arm_a_trajectory_plugin_plays_is_commanded(tmp_path: Path) -> None:
-    player = '<gazebo><plugin name="t" filename="libgazebo_ros_joint_pose_trajectory.so"/></gazebo>'
-    assert "Joint" in controls_of(described(tmp_path, picker(player), ""))
+    for filename in ("libgazebo_ros_joint_pose_trajectory.so", "gz-sim-joint-trajectory-system"):
+        player = f'<gazebo><plugin name="t" filename="{filename}"/></gazebo>'
+        assert "Joint" in controls_of(described(tmp_path / filename, picker(player), ""))
+
+
+def test_a_pan_tilt_head_is_not_alone_on_a_body_its_packages_drive(tmp_path: Path) -> None:
+    # A description trimmed to its sensor head, on a base a teleop node drives.
+    robot = pan_tilt_only()
+    robot.fixed(robot.root, "laser")
+    robot.add(LASER)
+    path = described(tmp_path, robot, "<node pkg='teleop_twist_keyboard'/>")
+    assert "Joint" not in controls_of(path)
+    assert "Joint" in controls_of(path, look_around=False)
 
 
 def test_an_arm_whose_packages_were_read_in_part_is_taken_as_commanded(
@@ -236,8 +244,14 @@ def test_the_joints_packages_name_are_read_word_by_word() -> None:
     # A name no word can be ("a b") is taken as named; the end of a name after an underscore
     # names it (a launch file's prefix); "lift", and "arm.tool" whose words are apart, are not.
     assert found == {"elbow", "arm.wrist-1", "j7", "a b", "ur_shoulder_pan"}
-    # Part of a longer word is no name.
+    # Part of a longer word is no name, nor a name's last word alone ("1", "lift", "joint").
     assert named_joints(shipping("liftoff"), ["lift"]) == frozenset()
+    last_words = ["wrist_1", "shoulder_lift", "elbow_joint", "left_ur_elbow_joint"]
+    assert named_joints(shipping("default='1' lift.rviz joint"), last_words) == frozenset()
+    assert named_joints(shipping("[elbow_joint]"), last_words) == {
+        "elbow_joint",
+        "left_ur_elbow_joint",
+    }
 
 
 @pytest.mark.parametrize(
@@ -263,6 +277,7 @@ def test_only_the_kill_command_is_left_out_not_its_line_or_the_next() -> None:
         == "&& ros2 launch nav2_bringup a"
     )
     assert _KILLS.sub("", "killall 'a|b'; move_base") == "; move_base"
+    assert _KILLS.sub("", "pkill -f gz | tee log\nmove_base") == "| tee log\nmove_base"
     # "rosnode" and "kill" on two lines are no command.
     text = "# needs rosnode\n\nkill -INT $PID\nnav2_bringup"
     assert _KILLS.sub("", text) == text

@@ -235,13 +235,15 @@ class Urdf:
     joints: tuple[Joint, ...]
     sensors: tuple[SensorTag, ...] = ()
     plugins: tuple[PluginTag, ...] = ()
-    # Joints named by a <transmission> or a <ros2_control> block: driven by a controller.
+    # Joints named by a <transmission>, a <ros2_control> block or a simulator's joint
+    # controller plugin (<joint_name>): driven by a controller.
     controlled_joints: frozenset[str] = frozenset()
     root: str = ""
     # Local flaws read past (parse_urdf(strict=False)), each located.
     warnings: tuple[Fault, ...] = ()
-    # (joint, command interfaces) from <ros2_control> (<command_interface name="velocity"/>) and
-    # <transmission> (<hardwareInterface>...VelocityJointInterface): position, velocity, effort.
+    # (joint, command interfaces) from <ros2_control> (<command_interface name="velocity"/>),
+    # <transmission> (<hardwareInterface>...VelocityJointInterface) and a simulator's joint
+    # controller plugin: position, velocity, effort.
     command_interfaces: tuple[tuple[str, tuple[str, ...]], ...] = ()
     # The names of the document's elements outside sensors and plugins (lower case): a hull's
     # <metacentric_width>, a link's <buoyancy> with <windVelocity> say what the robot floats in.
@@ -907,13 +909,16 @@ _JOINT_CONTROLLER = re.compile(r"joint[-_]?(position[-_]?)?controller", re.IGNOR
 
 def _plugin_commands(plugins: tuple[PluginTag, ...]) -> tuple[tuple[str, tuple[str, ...]], ...]:
     """(joint, command interfaces) of the joints a simulator's joint controller plugin
-    commands: position for a position controller, velocity for the others."""
+    commands: position for a position controller, velocity for the others (effort where it
+    says ``<use_force_commands>``)."""
     found: dict[str, list[str]] = {}
     for plugin in plugins:
         matched = _JOINT_CONTROLLER.search(plugin.filename or plugin.name)
         if matched is None:
             continue
         kind = "position" if matched.group(1) else "velocity"
+        if (plugin.param("use_force_commands") or "").lower() == "true":
+            kind = "effort"
         for tag, text in plugin.params:
             if tag.lower() == "joint_name":
                 found.setdefault(text, []).append(kind)
@@ -935,8 +940,9 @@ def _commanded_unlocked(
     joints: tuple[Joint, ...], commands: tuple[tuple[str, tuple[str, ...]], ...]
 ) -> tuple[Joint, ...]:
     """``joints``, those a controller commands (a ``<ros2_control>`` command interface, a
-    transmission's hardware interface) unlocked: a joint a controller moves is not fixed, and
-    its equal limits are a CAD exporter's placeholders (every prismatic joint exported 0..0)."""
+    transmission's hardware interface, a simulator's joint controller plugin) unlocked: a
+    joint a controller moves is not fixed, and its equal limits are a CAD exporter's
+    placeholders (every prismatic joint exported 0..0)."""
     commanded = {name for name, _ in commands}
     return tuple(
         replace(joint, unlocked=True) if joint.name in commanded and not joint.movable else joint
