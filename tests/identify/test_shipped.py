@@ -220,14 +220,26 @@ def test_a_pan_tilt_head_is_not_alone_on_a_body_its_packages_drive(tmp_path: Pat
     assert "Joint" in controls_of(path, look_around=False)
 
 
-def test_an_arm_whose_packages_were_read_in_part_is_taken_as_commanded(
-    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
-) -> None:
+def read_in_part(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, robot: RobotText, bringup: str
+) -> Path:
+    """``described``, with a second package using the description, and a bound of one file:
+    the workspace is read in part."""
     from solver.identify.readers import workspace
 
     monkeypatch.setattr(workspace, "MAX_FILES", 1)
-    path = described(tmp_path, picker(), "<node pkg='joint_state_publisher_gui'/>")
-    package(tmp_path / "ws" / "src", "rover_extras", {"a.launch": "rover_description"})
+    path = described(tmp_path, robot, bringup)
+    package(
+        tmp_path / "ws" / "src", "rover_extras", {"a.launch": "rover_description", "b.yaml": ""}
+    )
+    return path
+
+
+def test_an_arm_whose_packages_were_read_in_part_is_taken_as_commanded(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    bringup = "<node pkg='joint_state_publisher_gui'/>"
+    path = read_in_part(tmp_path, monkeypatch, picker(), bringup)
     assert "Joint" in controls_of(path)
 
 
@@ -305,13 +317,8 @@ def test_a_description_package_alone_read_whole_ships_no_navigation(tmp_path: Pa
 def test_a_workspace_read_in_part_keeps_the_guess_and_says_why_in_a_note(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    from solver.identify.readers import workspace
-
-    monkeypatch.setattr(workspace, "MAX_FILES", 1)
-    path = described(tmp_path, rover_with_a_lidar(), "<node pkg='robot_state_publisher'/>")
-    package(
-        tmp_path / "ws" / "src", "rover_extras", {"a.launch": "rover_description", "b.yaml": ""}
-    )
+    bringup = "<node pkg='robot_state_publisher'/>"
+    path = read_in_part(tmp_path, monkeypatch, rover_with_a_lidar(), bringup)
     result = identify(path)
     controls = {c.motion_control: c.source for c in result.motion_controls}
     assert controls["Waypoint"].startswith("urdf: likely, not declared")
