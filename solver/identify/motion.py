@@ -20,7 +20,10 @@ Two kinds of evidence, the declared first:
   gripper (a telescope's segments sliding along one axis are one motion) that Cartesian
   (end-effector) goals can be solved for it, and two legs or more that
   the body walks; those last two are guesses and say so ("likely, not declared": a gait
-  controller, like a Cartesian solver, is software). Roles are named only for a control no
+  controller, like a Cartesian solver, is software), as are a gripper alone opened and closed
+  and a pan/tilt unit alone aimed by its joints. An arm on a base a drive plugin moves that
+  nothing commands (no controller in the description, no joint of it named by the robot's
+  packages, read whole) is only drawn: no control. Roles are named only for a control no
   declared controller shows.
 
 Which control each of these means is the profile's ``motion.description`` (data); this module
