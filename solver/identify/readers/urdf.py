@@ -428,8 +428,6 @@ class _Builder:
                 code="urdf-empty",
             )
         links = self._links(link_elements)
-        tree, top = self._tree(root, links, self._joints(joint_elements, links))
-        sensors = self._sensors(root, {j.name: j.child for j in tree})
         plugins = tuple(
             _plugin(p, g.get("reference"))
             for g in root.findall("gazebo")
@@ -437,15 +435,18 @@ class _Builder:
             if p.tag == "plugin" or _legacy(p, "controller")
         )
         simulated = _plugin_commands(plugins)
+        commands = _merged_commands(_command_interfaces(root), simulated)
+        joints = self._joints(joint_elements, links, {name for name, _ in commands})
+        tree, top = self._tree(root, links, joints)
+        sensors = self._sensors(root, {j.name: j.child for j in tree})
         controlled = frozenset(self._controlled(root)) | {name for name, _ in simulated}
         self.faults += _uncompiled_xacro(root, self.file)  # read as URDF, never compiled: say so
         models = self._models(root)
-        commands = _merged_commands(_command_interfaces(root), simulated)
         return Urdf(
             name or "robot",
             self.file,
             tuple(links.values()),
-            _commanded_unlocked(tree, commands),
+            tree,
             sensors,
             plugins,
             controlled,
@@ -476,7 +477,12 @@ class _Builder:
                 )
         return found
 
-    def _joints(self, elements: list[etree._Element], links: dict[str, Link]) -> list[Joint]:
+    def _joints(
+        self, elements: list[etree._Element], links: dict[str, Link], commanded: set[str]
+    ) -> list[Joint]:
+        """The joints, those whose equal limits are placeholders unlocked: coupled by
+        ``<mimic>``, all equal (:func:`_placeholders`), or ``commanded`` by a controller (a
+        joint a controller moves is not fixed: a CAD exporter wrote every slide 0..0)."""
         found: dict[str, Joint] = {}
         for element in elements:
             joint = self._joint(element, links)
@@ -493,7 +499,7 @@ class _Builder:
                 )
                 continue
             found[joint.name] = joint
-        unlocked = _coupled(found) | _placeholders(found)
+        unlocked = _coupled(found) | _placeholders(found) | (commanded & found.keys())
         return [
             replace(joint, unlocked=True) if name in unlocked else joint
             for name, joint in found.items()
@@ -908,10 +914,10 @@ _JOINT_CONTROLLER = re.compile(r"joint[-_]?(position[-_]?)?controller", re.IGNOR
 
 
 def _plugin_commands(plugins: tuple[PluginTag, ...]) -> tuple[tuple[str, tuple[str, ...]], ...]:
-    """(joint, command interfaces) of the joints a simulator's joint controller plugin
-    commands: position for a position controller, velocity for the others (effort where it
-    says ``<use_force_commands>``)."""
-    found: dict[str, list[str]] = {}
+    """(joint, command interface) of each joint a simulator's joint controller plugin names:
+    position for a position controller, velocity for the others (effort where it says
+    ``<use_force_commands>``); :func:`_merged_commands` puts one joint's together."""
+    found: list[tuple[str, tuple[str, ...]]] = []
     for plugin in plugins:
         matched = _JOINT_CONTROLLER.search(plugin.filename or plugin.name)
         if matched is None:
@@ -919,16 +925,15 @@ def _plugin_commands(plugins: tuple[PluginTag, ...]) -> tuple[tuple[str, tuple[s
         kind = "position" if matched.group(1) else "velocity"
         if (plugin.param("use_force_commands") or "").lower() == "true":
             kind = "effort"
-        for tag, text in plugin.params:
-            if tag.lower() == "joint_name":
-                found.setdefault(text, []).append(kind)
-    return tuple((name, tuple(dict.fromkeys(kinds))) for name, kinds in found.items())
+        found += ((text, (kind,)) for tag, text in plugin.params if tag.lower() == "joint_name")
+    return tuple(found)
 
 
 def _merged_commands(
     *sources: tuple[tuple[str, tuple[str, ...]], ...],
 ) -> tuple[tuple[str, tuple[str, ...]], ...]:
-    """(joint, command interfaces) of every source, each joint once with all its kinds."""
+    """(joint, command interfaces) of every source, each joint once with all its kinds, in
+    the order first given."""
     found: dict[str, list[str]] = {}
     for source in sources:
         for name, kinds in source:
@@ -936,38 +941,25 @@ def _merged_commands(
     return tuple((name, tuple(dict.fromkeys(kinds))) for name, kinds in found.items())
 
 
-def _commanded_unlocked(
-    joints: tuple[Joint, ...], commands: tuple[tuple[str, tuple[str, ...]], ...]
-) -> tuple[Joint, ...]:
-    """``joints``, those a controller commands (a ``<ros2_control>`` command interface, a
-    transmission's hardware interface, a simulator's joint controller plugin) unlocked: a
-    joint a controller moves is not fixed, and its equal limits are a CAD exporter's
-    placeholders (every prismatic joint exported 0..0)."""
-    commanded = {name for name, _ in commands}
-    return tuple(
-        replace(joint, unlocked=True) if joint.name in commanded and not joint.movable else joint
-        for joint in joints
-    )
-
-
 def _command_interfaces(root: etree._Element) -> tuple[tuple[str, tuple[str, ...]], ...]:
-    """(joint, interfaces) from ``<ros2_control>`` joints and ``<transmission>`` joints."""
-    found: dict[str, list[str]] = {}
+    """(joint, command interface) of each ``<ros2_control>`` joint's and ``<transmission>``
+    joint's; :func:`_merged_commands` puts one joint's together."""
+    found: list[tuple[str, tuple[str, ...]]] = []
     for control in root.findall("ros2_control"):
         for joint in control.findall("joint"):
             name = (joint.get("name") or "").strip()
             for command in joint.findall("command_interface"):
                 kind = (command.get("name") or "").strip().lower()
                 if name and kind:
-                    found.setdefault(name, []).append(kind)
+                    found.append((name, (kind,)))
     for transmission in root.findall("transmission"):
         for joint in transmission.findall("joint"):
             name = (joint.get("name") or "").strip()
             for interface in joint.iterfind("hardwareInterface"):
                 kind = _interface_kind(interface.text or "")
                 if name and kind:
-                    found.setdefault(name, []).append(kind)
-    return tuple((name, tuple(dict.fromkeys(kinds))) for name, kinds in found.items())
+                    found.append((name, (kind,)))
+    return tuple(found)
 
 
 def _interface_kind(text: str) -> str:
