@@ -109,8 +109,9 @@ ALIASES = {
 # while the profile has no structure of that name.
 FALLBACKS = {"surface vessel": "Other", "underwater vehicle": "Other"}
 # Readings a truth label also accepts: the corpus labels standalone grippers Hand (its README:
-# "the README has no gripper label, Hand is the nearest extra label").
-ACCEPTS = {"Hand": {"Gripper"}}
+# "the README has no gripper label, Hand is the nearest extra label"); the sets have no pan/tilt
+# label and label a pan/tilt unit alone Manipulator, the kinematic type the profile maps it to.
+ACCEPTS = {"Hand": {"Gripper"}, "Manipulator": {"Pan/Tilt Unit"}}
 
 
 def label_of(text: str, structures: tuple[str, ...]) -> str:

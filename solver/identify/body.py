@@ -191,6 +191,18 @@ class Body:
         )
 
     @property
+    def head_alone(self) -> bool:
+        """A pan/tilt unit with nothing else: heads only, no mobile base, vehicle, gripper or
+        finger (a camera's pan/tilt on a fixed base, aimed by its joints)."""
+        return (
+            bool(self.limbs)
+            and all(limb.kind == "head" for limb in self.limbs)
+            and not (
+                self.grippers or self.fingers or self.mobile_base or self.flying or self.marine
+            )
+        )
+
+    @property
     def flying(self) -> bool:
         if self.marine:
             return False
@@ -246,6 +258,7 @@ class Body:
                 bool(self.underwater_hints or self.water_frames) or self.shipped_as == "underwater"
             ),
             "serpentine": int(self.count("spine") > 0),
+            "head_alone": int(self.head_alone),
         }
 
     def _trimmed(self) -> list[str]:

@@ -221,7 +221,7 @@ def _limbs(
         )
     # A pan/tilt unit alone (no vehicle, arm, leg or gripper) is there to be aimed: its one
     # command is its joints'.
-    if _head_alone(body) and not moved:
+    if body.head_alone and not moved:
         found.append(
             (
                 "head_alone",
@@ -233,15 +233,6 @@ def _limbs(
     if legs >= _WALKING_LEGS:
         found.append(("legs", f"{urdf_source}: likely, not declared: {legs} legs to walk on"))
     return found
-
-
-def _head_alone(body: Body) -> bool:
-    """A pan/tilt unit with nothing else: heads only, no mobile base, vehicle or gripper."""
-    return (
-        bool(body.limbs)
-        and all(limb.kind == "head" for limb in body.limbs)
-        and not (body.grippers or body.fingers or body.mobile_base or body.flying or body.marine)
-    )
 
 
 def _end_effector_alone(body: Body) -> bool:

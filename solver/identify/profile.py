@@ -111,6 +111,7 @@ FEATURES = (
     "surface",
     "underwater",
     "serpentine",
+    "head_alone",
 )
 # thrusters / fins / casters: joints (or plugin-named links) in those roles; finger_motions: the
 # finger joints that move on their own (not mimic); marine: a body in water (thrusters, marine
@@ -125,6 +126,8 @@ FEATURES = (
 # alone (nothing else says how it travels, or where in the water).
 # serpentine: the body is one long chain of equal modules whose axes alternate, with no base
 # that holds it (a snake robot).
+# head_alone: the body is pan/tilt heads only, with no vehicle, arm, leg, gripper or finger (a
+# camera's pan/tilt on a fixed base).
 BOOLEAN_FEATURES = (
     "mobile_base",
     "flying",
@@ -136,6 +139,7 @@ BOOLEAN_FEATURES = (
     "surface",
     "underwater",
     "serpentine",
+    "head_alone",
 )
 DIRECTIONS = ("published", "subscribed")
 # Description sources read from what joints do, not from a declared controller or plan.

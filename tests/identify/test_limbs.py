@@ -682,12 +682,13 @@ def test_the_same_chain_on_a_free_root_or_with_head_names_stays_a_pan_tilt_unit(
     tip = free.chain(free.root, ["joint1", "joint2"])
     free.fixed(tip, "cam")
     free.add(builders.CAMERA)
-    assert identify_urdf(free.text()).structure == "Other"  # not bolted to the world
+    # Not bolted to the world, and no arm: a head aiming its camera.
+    assert identify_urdf(free.text()).structure == "Pan/Tilt Unit"
     named = RobotText("ptu", root="world")
     tip = named.chain(named.fixed("world", "base"), ["pan_joint", "tilt_joint"])
     named.fixed(tip, "cam")
     named.add(builders.CAMERA)
-    assert identify_urdf(named.text()).structure == "Other"  # a pan/tilt unit by its names
+    assert identify_urdf(named.text()).structure == "Pan/Tilt Unit"  # by its names
 
 
 def concertina_snake(modules: int = 7, *, names: str = "revolute") -> RobotText:

@@ -125,8 +125,8 @@ def test_package_rules_are_optional_and_their_structures_are_checked() -> None:
     ]
     assert "Manipulator" in shipped[0].not_for
     text = SHIPPED.replace(
-        "      not_for: [Manipulator, Gripper, Hand, Torso]\n",
-        "      not_for: [Manipulater, Gripper, Hand, Torso]\n",
+        "      not_for: [Manipulator, Pan/Tilt Unit, Gripper, Hand, Torso]\n",
+        "      not_for: [Manipulater, Pan/Tilt Unit, Gripper, Hand, Torso]\n",
         1,
     )
     with pytest.raises(ProfileError) as caught:

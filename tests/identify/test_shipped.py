@@ -61,6 +61,20 @@ def test_an_arm_bolted_in_place_is_sent_no_waypoints_whatever_its_repository_hol
     assert shipped("Manipulator", "target_pose = Pose()") == {}
 
 
+def test_a_pan_tilt_unit_is_aimed_whatever_navigation_or_planning_its_repository_holds() -> None:
+    # A sensor head's repository may hold a rover's Nav2 launch or a MoveIt setup for its two
+    # joints: it is aimed by them (the description's guess), not driven or sent poses.
+    for text in (
+        "IncludeLaunchDescription('nav2_bringup')",
+        "self.target_pose = goal",
+        "<include file='$(find ptu_moveit_config)/launch/move_group.launch'/>",
+        "q = solve_ik(x, y, z)",
+    ):
+        assert shipped("Pan/Tilt Unit", text) == {}
+    # A teleop node drives the body the head is on (a description trimmed to its sensor head).
+    assert list(shipped("Pan/Tilt Unit", "Node(package='teleop_twist_keyboard')")) == ["Driving"]
+
+
 def test_a_teleop_node_is_the_structures_velocity_control() -> None:
     teleop = "Node(package='teleop_twist_keyboard')"
     assert list(shipped("UGV", teleop)) == ["Driving"]
