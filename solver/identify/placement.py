@@ -25,6 +25,11 @@ from solver.identify.tree import JointTree
 
 __all__ = ["Placement", "placement"]
 
+# A slide whose written limits let it travel less than this (metres) is a machine's axis (a
+# gantry's or a linear stage's, under a metre or two), not a body a simulator places: those
+# move it over tens of metres or more.
+_MACHINE_TRAVEL = 5.0
+
 
 @dataclass(frozen=True, slots=True)
 class Placement:
@@ -59,16 +64,30 @@ def _carries(tree: JointTree, joint: Joint) -> bool:
 def _root_axes(tree: JointTree) -> list[str]:
     """Joints at the root that only place the body: x, y and a turn about z (planar), or x,
     y, z and three turns or a turn about z (a simulated floating or hovering base); [] when the
-    root is not so.
+    root is not so, or when a slide of them travels as a machine's axis does (an XY gantry
+    turning a tool: :data:`_MACHINE_TRAVEL`).
     """
     chain = _root_chain(tree)
     if len(chain) >= 3 and _moves(chain[:3]) == ({0, 1}, [2]):
-        return [j.name for j in chain[:3]]
-    if len(chain) == 6 and _moves(chain) == ({0, 1, 2}, [0, 1, 2]):
-        return [j.name for j in chain]
-    if len(chain) == 4 and _moves(chain) == ({0, 1, 2}, [2]):
-        return [j.name for j in chain]
-    return []
+        chain = chain[:3]
+    elif not (
+        (len(chain) == 6 and _moves(chain) == ({0, 1, 2}, [0, 1, 2]))
+        or (len(chain) == 4 and _moves(chain) == ({0, 1, 2}, [2]))
+    ):
+        return []
+    if any(_machine_axis(joint) for joint in chain):
+        return []
+    return [j.name for j in chain]
+
+
+def _machine_axis(joint: Joint) -> bool:
+    """A slide with written limits less than :data:`_MACHINE_TRAVEL` apart."""
+    return (
+        joint.type == "prismatic"
+        and joint.lower is not None
+        and joint.upper is not None
+        and joint.upper - joint.lower < _MACHINE_TRAVEL
+    )
 
 
 def _root_chain(tree: JointTree) -> list[Joint]:

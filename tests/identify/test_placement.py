@@ -84,6 +84,26 @@ def test_root_joints_along_x_and_y_and_about_z_place_a_planar_base() -> None:
     )
 
 
+def xy_stage(travel: float) -> RobotText:
+    """Slides along x and y from the world, each ``travel`` metres long, turning a round tool
+    about z at the end (a whiteboard gantry's duster); nothing below it."""
+    robot = RobotText("stage", root="world")
+    limit = f'<limit lower="0" upper="{travel}" effort="100" velocity="1"/>'
+    robot.joint("x_joint", "prismatic", "world", "x_link", f'<axis xyz="1 0 0"/>{limit}')
+    robot.joint("y_joint", "prismatic", "x_link", "y_link", f'<axis xyz="0 1 0"/>{limit}')
+    robot.joint("tool_joint", "continuous", "y_link", "tool_link", '<axis xyz="0 0 1"/>')
+    return robot
+
+
+def test_slides_that_travel_as_a_machines_axes_place_no_body() -> None:
+    # A gantry's axes travel a metre: they move its tool, an arm of three joints.
+    gantry = xy_stage(0.9)
+    assert placement(tree_of(gantry)) == Placement()
+    assert identify_urdf(gantry.text()).structure == "Manipulator"
+    # A simulator's placing joints travel tens of metres: the body is a planar base.
+    assert placement(tree_of(xy_stage(20.0))).placing == ("x_joint", "y_joint", "tool_joint")
+
+
 def test_root_joints_that_lift_and_tilt_place_nothing() -> None:
     robot = on_rails(
         [("z", "prismatic", "0 0 1"), ("y", "prismatic", "0 1 0"), ("t", "revolute", "1 0 0")]

@@ -49,6 +49,11 @@ def test_move_base_and_position_set_points_are_navigation_too() -> None:
     assert "Waypoint" in shipped("UGV", "<node pkg='move_base' type='move_base'/>")
     assert "Waypoint" in shipped("UAV", "rospy.Publisher('mavros/setpoint_position/local')")
     assert "Waypoint" in shipped("Hexapod", "# point_to_point.py: walk to each (x, y) listed")
+    # A "go to" a place is navigation; a "go to" a state, a joint or sleep is not.
+    assert "Waypoint" in shipped("UGV", "self.go_to_pose(x, y)")
+    assert "Waypoint" in shipped("Underwater Vehicle", "state = go_to_depth(2.0)")
+    for other in ("go_to_stop_state_on_crash(this);", "arm.go_to_joint(q)", "go_to_sleep()"):
+        assert shipped("Biped", other) == {}
     # Point-to-point scan matching (ICP) is no walk.
     for icp in ("TransformationEstimationPointToPoint()", "icp_method: point_to_point"):
         assert shipped("UGV", icp) == {}
