@@ -10,7 +10,14 @@ import sys
 from pathlib import Path
 from typing import Any
 
-from tests.identify.builders import gazebo_sensor, manipulator, model_plugin, ugv
+from tests.identify.builders import (
+    gazebo_sensor,
+    manipulator,
+    model_plugin,
+    pan_tilt_only,
+    parallel_gripper,
+    ugv,
+)
 
 ROOT = Path(__file__).resolve().parent.parent
 SCRIPT = ROOT / "tools" / "measure_identification.py"
@@ -107,6 +114,26 @@ def test_a_set_is_reported_per_family_with_what_was_right(tmp_path: Path) -> Non
     assert rover[8] == "1/1 (100%)"
     assert row_of(output, "arm", "tiny")[:2] == ["1", "0/1 (0%)"]
     assert "arm_called_humanoid: structure Manipulator, labelled Humanoid" in output
+
+
+def test_a_gripper_counts_for_a_hand_and_a_pan_tilt_unit_for_an_uncertain_manipulator(
+    tmp_path: Path,
+) -> None:
+    folder = tmp_path / "heads"
+    (folder / "urdf").mkdir(parents=True)
+    (folder / "urdf" / "ptu.urdf").write_text(pan_tilt_only().text(), encoding="utf-8")
+    (folder / "urdf" / "jaws.urdf").write_text(parallel_gripper().text(), encoding="utf-8")
+    rows = [
+        {"robot": "ptu_certain", "file": "urdf/ptu.urdf", "kinematic_type": "Manipulator"},
+        {"robot": "ptu_doubted", "file": "urdf/ptu.urdf", "kinematic_type": "Manipulator?"},
+        {"robot": "jaws", "file": "urdf/jaws.urdf", "kinematic_type": "Hand"},
+    ]
+    write_truth(folder, rows)
+    output = measure("--set", str(folder))
+    # The gripper is right as a Hand; the pan/tilt unit is right only as an uncertain arm.
+    assert "structure correct: 1/3 strict, 2/3 lenient" in output
+    assert "ptu_certain: structure Pan/Tilt Unit, labelled Manipulator" in output
+    assert "jaws: structure" not in output
 
 
 def test_a_row_whose_file_is_missing_is_counted_absent_not_measured(tmp_path: Path) -> None:

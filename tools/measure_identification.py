@@ -109,9 +109,12 @@ ALIASES = {
 # while the profile has no structure of that name.
 FALLBACKS = {"surface vessel": "Other", "underwater vehicle": "Other"}
 # Readings a truth label also accepts: the corpus labels standalone grippers Hand (its README:
-# "the README has no gripper label, Hand is the nearest extra label"); the sets have no pan/tilt
-# label and label a pan/tilt unit alone Manipulator, the kinematic type the profile maps it to.
-ACCEPTS = {"Hand": {"Gripper"}, "Manipulator": {"Pan/Tilt Unit"}}
+# "the README has no gripper label, Hand is the nearest extra label").
+ACCEPTS = {"Hand": {"Gripper"}}
+# Readings an uncertain label (ending in ``?``) also accepts, in the lenient score only: the
+# sets have no pan/tilt label and label a pan/tilt unit alone ``Manipulator?``, the kinematic
+# type the profile maps the structure to. A certain Manipulator read so is a miss.
+LENIENT_ACCEPTS = {"Manipulator": {"Pan/Tilt Unit"}}
 
 
 def label_of(text: str, structures: tuple[str, ...]) -> str:
@@ -210,6 +213,7 @@ class Score:
         alternatives = {label, *ACCEPTS.get(label, set())}
         if row["kinematic_type"].endswith("?"):
             alternatives |= {s for s in self.structures if s.casefold() in note}
+            alternatives |= LENIENT_ACCEPTS.get(label, set())
         self.strict += right
         self.lenient += result.structure in alternatives
         if not right:

@@ -56,7 +56,7 @@ from solver.identify.limbs import (
     wheeled_spine,
     wrist,
 )
-from solver.identify.placement import Placement, placement
+from solver.identify.placement import MACHINE_TRAVEL, Placement, placement
 from solver.identify.profile import Profile
 from solver.identify.readers.urdf import Urdf
 from solver.identify.roles import Role
@@ -106,6 +106,8 @@ class Body:
     grippers: int = 0
     floating_base: tuple[str, ...] = ()
     planar_base: tuple[str, ...] = ()
+    # Root slides along x and y that travel as a machine's axes (an XY gantry's): no base.
+    machine_axes: tuple[str, ...] = ()
     controlled_wheels: tuple[str, ...] = ()
     # Fins (rudders, control surfaces) a controller drives (a transmission or ros2_control).
     controlled_fins: tuple[str, ...] = ()
@@ -141,6 +143,9 @@ class Body:
     # when its description shows no way, and the file that says it (solver.identify.shipped).
     shipped_as: str = ""
     shipped_by: str = ""
+    # The file of the robot's packages whose teleop node drives the body (a description trimmed
+    # to a base's sensor head: no pan/tilt unit alone).
+    driven_by: str = ""
     finger_motions: int = 0
     # Every moving joint's role and the evidence that decided it.
     roles: tuple[Role, ...] = field(default=(), compare=False)
@@ -192,14 +197,14 @@ class Body:
 
     @property
     def head_alone(self) -> bool:
-        """A pan/tilt unit with nothing else: heads only, no mobile base, vehicle, gripper or
-        finger (a camera's pan/tilt on a fixed base, aimed by its joints)."""
+        """A pan/tilt unit with nothing else: heads only, no mobile or floating base, vehicle,
+        gripper or finger, and no teleop node of its packages driving the body (a camera's
+        pan/tilt on a fixed base, aimed by its joints)."""
         return (
             bool(self.limbs)
             and all(limb.kind == "head" for limb in self.limbs)
-            and not (
-                self.grippers or self.fingers or self.mobile_base or self.flying or self.marine
-            )
+            and not (self.grippers or self.fingers or self.mobile_base or self.floating_base)
+            and not (self.flying or self.marine or self.driven_by)
         )
 
     @property
@@ -338,6 +343,13 @@ class Body:
             lines.append(f"planar base: {_names(self.planar_base)}")
         if self.floating_base:
             lines.append(f"floating base: {_names(self.floating_base)}")
+        if self.driven_by:
+            lines.append(f"a base driven by its packages' teleop node: {self.driven_by}")
+        if self.machine_axes:
+            lines.append(
+                f"root slides {_names(self.machine_axes)} travel as a machine's axes do (less "
+                f"than {MACHINE_TRAVEL:g} m each): no base placed in the world"
+            )
         if self.trunk:
             lines.append(f"trunk joint(s) below the limbs: {_names(self.trunk)}")
         lines += [limb.describe() for limb in self.limbs]
@@ -400,6 +412,7 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
         grippers=len(parts.hosts),
         floating_base=parts.placement.floating,
         planar_base=parts.placement.planar,
+        machine_axes=parts.placement.machine,
         controlled_wheels=tuple(w for w in wheels if w in controlled),
         controlled_fins=tuple(f for f in parts.of("fin") if f in controlled),
         controlled_joints=tuple(j for j in _commanded(tree, parts, track_names) if j in controlled),

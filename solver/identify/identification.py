@@ -202,7 +202,6 @@ def identify_urdf(
             srdf_source=Path(srdf_file).name,
             guess_navigation=packages is None or not packages.complete,
             named=_named(packages, body),
-            moved=_moves(shipped, profile),
         ),
         shipped,
     ]
@@ -244,13 +243,6 @@ def identify_urdf(
         declared=None if description is None else description.file,
         disagreements=found.disagreements,
     )
-
-
-def _moves(shipped: Sequence[Control], profile: Profile) -> bool:
-    """The robot's packages ship a velocity control (a teleop node driving, flying or walking
-    the body): the body moves."""
-    velocities = {profile.velocity_default, *(c for _, c in profile.velocity_by_structure)}
-    return any(control.motion_control in velocities for control in shipped)
 
 
 def _named(packages: Workspace | None, body: Body) -> frozenset[str] | None:

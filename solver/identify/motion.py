@@ -168,12 +168,10 @@ def _limbs(
     urdf_source: str,
     urdf: Urdf | None = None,
     named: Collection[str] | None = None,
-    *,
-    moved: bool = False,
 ) -> _Shown:
     """Limb joints a controller drives (declared); arms of actuated joints (roles), but for
-    an arm nothing commands (:func:`_shown_only`); a pan/tilt unit alone, unless the robot's
-    packages move the body it is on (``moved``: a description trimmed to its sensor head)."""
+    an arm nothing commands (:func:`_shown_only`); a pan/tilt unit alone
+    (:attr:`Body.head_alone`)."""
     found = []
     if body.controlled_joints:
         count = len(body.controlled_joints)
@@ -221,7 +219,7 @@ def _limbs(
         )
     # A pan/tilt unit alone (no vehicle, arm, leg or gripper) is there to be aimed: its one
     # command is its joints'.
-    if body.head_alone and not moved:
+    if body.head_alone:
         found.append(
             (
                 "head_alone",
@@ -346,18 +344,16 @@ def controls_from_description(
     srdf_source: str = "srdf",
     guess_navigation: bool = True,
     named: Collection[str] | None = None,
-    moved: bool = False,
 ) -> tuple[Control, ...]:
     """The motion controls the body (and SRDF) show, each with what shows it; with the kinds
     of the sensors the description declares, the profile's navigation guess too (not with
     ``guess_navigation=False``: the robot's packages were read, and say). ``named``: the
-    joints the robot's packages name, when they were read whole; ``moved``: the packages ship
-    a control that moves the body (a teleop node)."""
+    joints the robot's packages name, when they were read whole."""
     effectors = () if srdf is None else hand_effectors(body, srdf, urdf)  # once per SRDF
     shown = [
         *_ground(body, urdf_source),
         *_flight(body, urdf_source),
-        *_limbs(body, urdf_source, urdf, named, moved=moved),
+        *_limbs(body, urdf_source, urdf, named),
         *_planned(body, srdf, profile, urdf, srdf_source, effectors=effectors),
     ]
     if _feet_only(srdf, effectors) or _balances(body):

@@ -5,7 +5,9 @@ A description may place its body by joints that move no part of it: a ``floating
 y and turn about z (a planar base, as simulators model a mobile base) or slide along x, y, z and
 turn about all three (a simulated floating base) or about z alone (a simulated hovering body, a
 drone's four degrees of freedom). :func:`placement` finds them; the root
-chain's joints are then nobody's limb.
+chain's joints are then nobody's limb. Slides along x and y and a turn about z whose slides
+each travel less than a simulator's world (:data:`MACHINE_TRAVEL`) are a machine's axes (an
+XY gantry turning a tool): they place nothing, and are an arm's joints.
 
 A ``floating`` joint that carries only a leaf part is no base: it is a part a simulator poses
 (a propeller drawn turning, :mod:`solver.identify.roles`). An SRDF's virtual joint is a
@@ -23,12 +25,12 @@ from solver.identify.readers.urdf import Joint
 from solver.identify.roles import main_axis
 from solver.identify.tree import JointTree
 
-__all__ = ["Placement", "placement"]
+__all__ = ["MACHINE_TRAVEL", "Placement", "placement"]
 
-# A slide whose written limits let it travel less than this (metres) is a machine's axis (a
-# gantry's or a linear stage's, under a metre or two), not a body a simulator places: those
-# move it over tens of metres or more.
-_MACHINE_TRAVEL = 5.0
+# Root slides along x and y whose written limits each let them travel less than this (metres)
+# are a machine's axes (an XY table's or a small gantry's), not a planar base a simulator places:
+# those move it over tens of metres (the labelled sets' travel 20 m or more).
+MACHINE_TRAVEL = 2.0
 
 
 @dataclass(frozen=True, slots=True)
@@ -39,6 +41,7 @@ class Placement:
     floating: tuple[str, ...] = ()
     planar: tuple[str, ...] = ()
     placing: tuple[str, ...] = ()  # root joints: x, y and a turn; x, y, z and one or three turns
+    machine: tuple[str, ...] = ()  # root slides along x and y that travel as a machine's axes
 
 
 def placement(tree: JointTree) -> Placement:
@@ -46,13 +49,16 @@ def placement(tree: JointTree) -> Placement:
     floating = [j.name for j in tree.urdf.joints if j.type == "floating" and _carries(tree, j)]
     planar = [j.name for j in tree.urdf.joints if j.type == "planar" and _carries(tree, j)]
     placing = _root_axes(tree)
+    machine: list[str] = []
     if len(placing) == 6:
         floating.append(f"root joints {', '.join(placing)} (x, y, z and three turns)")
     elif len(placing) == 4:
         floating.append(f"root joints {', '.join(placing)} (x, y, z and a turn about z)")
+    elif len(placing) == 3 and (slides := _machine_slides(tree, placing)):
+        machine, placing = slides, []
     elif len(placing) == 3:
         planar.append(f"root joints {', '.join(placing)} (x, y and a turn about z)")
-    return Placement(tuple(floating), tuple(planar), tuple(placing))
+    return Placement(tuple(floating), tuple(planar), tuple(placing), tuple(machine))
 
 
 def _carries(tree: JointTree, joint: Joint) -> bool:
@@ -64,30 +70,30 @@ def _carries(tree: JointTree, joint: Joint) -> bool:
 def _root_axes(tree: JointTree) -> list[str]:
     """Joints at the root that only place the body: x, y and a turn about z (planar), or x,
     y, z and three turns or a turn about z (a simulated floating or hovering base); [] when the
-    root is not so, or when a slide of them travels as a machine's axis does (an XY gantry
-    turning a tool: :data:`_MACHINE_TRAVEL`).
+    root is not so.
     """
     chain = _root_chain(tree)
     if len(chain) >= 3 and _moves(chain[:3]) == ({0, 1}, [2]):
-        chain = chain[:3]
-    elif not (
-        (len(chain) == 6 and _moves(chain) == ({0, 1, 2}, [0, 1, 2]))
-        or (len(chain) == 4 and _moves(chain) == ({0, 1, 2}, [2]))
-    ):
-        return []
-    if any(_machine_axis(joint) for joint in chain):
-        return []
-    return [j.name for j in chain]
+        return [j.name for j in chain[:3]]
+    if len(chain) == 6 and _moves(chain) == ({0, 1, 2}, [0, 1, 2]):
+        return [j.name for j in chain]
+    if len(chain) == 4 and _moves(chain) == ({0, 1, 2}, [2]):
+        return [j.name for j in chain]
+    return []
 
 
-def _machine_axis(joint: Joint) -> bool:
-    """A slide with written limits less than :data:`_MACHINE_TRAVEL` apart."""
-    return (
-        joint.type == "prismatic"
-        and joint.lower is not None
+def _machine_slides(tree: JointTree, planar: list[str]) -> list[str]:
+    """The planar root joints' two slides when each travels less than
+    :data:`MACHINE_TRAVEL` between its written limits (a machine's axes); else []."""
+    joints = [joint for name in planar if (joint := tree.urdf.joint(name)) is not None]
+    slides = [joint for joint in joints if joint.type == "prismatic"]
+    short = all(
+        joint.lower is not None
         and joint.upper is not None
-        and joint.upper - joint.lower < _MACHINE_TRAVEL
+        and abs(joint.upper - joint.lower) < MACHINE_TRAVEL
+        for joint in slides
     )
+    return [joint.name for joint in slides] if short and len(slides) == 2 else []
 
 
 def _root_chain(tree: JointTree) -> list[Joint]:

@@ -57,7 +57,9 @@ def controls_from_workspace(
 def body_from_workspace(body: Body, workspace: Workspace, profile: Profile) -> Body:
     """``body`` travelling in the medium the robot's packages name, when its description shows
     no way of travelling (:attr:`Body.travels_no_way`) and the packages name one medium only
-    (a repository of drones and boats says nothing of this one)."""
+    (a repository of drones and boats says nothing of this one); a pan/tilt head alone driven
+    by a teleop node its packages ship (:func:`_driven`)."""
+    body = _driven(body, workspace, profile)
     if not body.travels_no_way:
         return body
     said = {
@@ -69,6 +71,18 @@ def body_from_workspace(body: Body, workspace: Workspace, profile: Profile) -> B
         return body
     ((medium, evidence),) = said.items()
     return replace(body, shipped_as=medium, shipped_by=evidence)
+
+
+def _driven(body: Body, workspace: Workspace, profile: Profile) -> Body:
+    """``body``, driven by the file of its packages that runs a teleop node (a velocity
+    control rule), when it is a pan/tilt head alone: its description was trimmed to a base's
+    sensor head, and it is no pan/tilt unit (:attr:`Body.head_alone`)."""
+    if not body.head_alone:
+        return body
+    for rule in profile.package_controls:
+        if rule.control == VELOCITY and (found := _first_found(workspace, rule.match)):
+            return replace(body, driven_by=found)
+    return body
 
 
 def named_joints(workspace: Workspace, joints: Collection[str]) -> frozenset[str]:

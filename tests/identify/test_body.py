@@ -3,6 +3,8 @@ commands, and the counts and sentences of evidence the classifier and a person r
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from solver.identify import identify_urdf, load_profile
 from solver.identify.body import Body, detect_body
 from solver.identify.limbs import Limb
@@ -128,3 +130,33 @@ def test_the_trunk_joints_above_limbs_are_found_in_one_walk_up_a_deep_chain() ->
     result = identify_urdf("".join(parts) + "</robot>")
     assert result.body is not None
     assert len(result.body.roles) >= 20_000
+
+
+def test_a_pan_tilt_head_is_alone_only_with_nothing_else_on_its_body() -> None:
+    assert body_of(builders.pan_tilt_only()).head_alone
+    beside_jaws = builders.pan_tilt_only()
+    beside_jaws.chain(beside_jaws.root, ["gripper_finger_joint"], "prismatic")
+    beside_fingers = builders.pan_tilt_only()
+    beside_fingers.chain(beside_fingers.root, ["index_finger_joint"])
+    floating = RobotText("floating_gimbal", root="world")
+    base = floating.joint("world_joint", "floating", "world", "base_link")
+    floating.chain(base, ["pan_joint", "tilt_joint"])
+    drone = builders.quadrotor()
+    drone.chain(drone.root, ["gimbal_pan", "gimbal_tilt"])
+    rover = builders.ugv()
+    rover.chain(rover.root, ["camera_pan_joint", "camera_tilt_joint"])
+    mast = builders.underwater_vehicle()
+    mast.chain(mast.root, ["pan_joint", "tilt_joint"])
+    beside_limb = builders.pan_tilt_only()
+    beside_limb.chain(beside_limb.root, ["j1"])
+    for robot in (beside_jaws, beside_fingers, floating, drone, rover, mast, beside_limb):
+        assert not body_of(robot).head_alone, robot.name
+
+
+def test_a_pan_tilt_head_driven_by_its_packages_teleop_node_is_no_unit_alone() -> None:
+    driven = replace(body_of(builders.pan_tilt_only()), driven_by="bringup/teleop.launch")
+    assert not driven.head_alone
+    assert driven.features()["head_alone"] == 0
+    assert "a base driven by its packages' teleop node: bringup/teleop.launch" in driven.evidence(
+        "base_link"
+    )

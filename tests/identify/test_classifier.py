@@ -231,17 +231,3 @@ def test_a_body_no_structure_fits_is_other_with_the_parts_it_has() -> None:
         )
         for line in result.evidence
     )
-
-
-def test_a_pan_tilt_unit_is_alone_only_with_nothing_else_on_its_body() -> None:
-    # A gimbal under a drone, a head beside a gripper, a mast on a hull, a head on a rover.
-    drone = builders.quadrotor()
-    drone.fixed(drone.chain(drone.root, ["gimbal_pan", "gimbal_tilt"]), "camera_link")
-    rig = builders.pan_tilt_only()
-    rig.chain(rig.root, ["gripper_finger_joint"], "prismatic")
-    mast = builders.underwater_vehicle()
-    mast.chain(mast.root, ["pan_joint", "tilt_joint"])
-    rover = builders.ugv()
-    rover.chain(rover.root, ["camera_pan_joint", "camera_tilt_joint"])
-    readings = [identify_urdf(robot.text()).structure for robot in (drone, rig, mast, rover)]
-    assert readings == ["UAV", "Gripper", "Underwater Vehicle", "UGV"]

@@ -84,24 +84,72 @@ def test_root_joints_along_x_and_y_and_about_z_place_a_planar_base() -> None:
     )
 
 
-def xy_stage(travel: float) -> RobotText:
-    """Slides along x and y from the world, each ``travel`` metres long, turning a round tool
-    about z at the end (a whiteboard gantry's duster); nothing below it."""
+def xy_stage(x_travel: float, y_travel: float | None = None, turn: str = "") -> RobotText:
+    """Slides along x and y from the world, travelling ``x_travel`` and ``y_travel`` metres
+    (the same by default), turning a round tool about z at the end (a whiteboard gantry's
+    duster; ``turn``: the turn's limit, none for a continuous joint); nothing below it."""
     robot = RobotText("stage", root="world")
-    limit = f'<limit lower="0" upper="{travel}" effort="100" velocity="1"/>'
-    robot.joint("x_joint", "prismatic", "world", "x_link", f'<axis xyz="1 0 0"/>{limit}')
-    robot.joint("y_joint", "prismatic", "x_link", "y_link", f'<axis xyz="0 1 0"/>{limit}')
-    robot.joint("tool_joint", "continuous", "y_link", "tool_link", '<axis xyz="0 0 1"/>')
+    for axis, parent, travel in (("x", "world", x_travel), ("y", "x_link", y_travel or x_travel)):
+        limit = f'<limit lower="0" upper="{travel}" effort="100" velocity="1"/>'
+        xyz = "1 0 0" if axis == "x" else "0 1 0"
+        robot.joint(
+            f"{axis}_joint", "prismatic", parent, f"{axis}_link", f'<axis xyz="{xyz}"/>{limit}'
+        )
+    kind = "revolute" if turn else "continuous"
+    robot.joint("tool_joint", kind, "y_link", "tool_link", f'<axis xyz="0 0 1"/>{turn}')
     return robot
 
 
 def test_slides_that_travel_as_a_machines_axes_place_no_body() -> None:
     # A gantry's axes travel a metre: they move its tool, an arm of three joints.
     gantry = xy_stage(0.9)
-    assert placement(tree_of(gantry)) == Placement()
-    assert identify_urdf(gantry.text()).structure == "Manipulator"
-    # A simulator's placing joints travel tens of metres: the body is a planar base.
-    assert placement(tree_of(xy_stage(20.0))).placing == ("x_joint", "y_joint", "tool_joint")
+    assert placement(tree_of(gantry)) == Placement(machine=("x_joint", "y_joint"))
+    result = identify_urdf(gantry.text())
+    assert result.structure == "Manipulator"
+    assert result.evidence[0] == (
+        "root slides x_joint, y_joint travel as a machine's axes do (less than 2 m each): "
+        "no base placed in the world"
+    )
+    assert placement(tree_of(xy_stage(1.9))).machine == ("x_joint", "y_joint")
+    # The slides are told by their type wherever the turn is among the three.
+    turned = RobotText("turned_stage", root="world")
+    limit = '<limit lower="0" upper="0.9" effort="100" velocity="1"/>'
+    link = turned.joint("turn", "continuous", "world", "turn_link", '<axis xyz="0 0 1"/>')
+    link = turned.joint("x_joint", "prismatic", link, "x_link", f'<axis xyz="1 0 0"/>{limit}')
+    turned.joint("y_joint", "prismatic", link, "y_link", f'<axis xyz="0 1 0"/>{limit}')
+    assert placement(tree_of(turned)).machine == ("x_joint", "y_joint")
+
+
+def test_a_planar_base_placed_over_a_simulators_world_stays_one() -> None:
+    placed = ("x_joint", "y_joint", "tool_joint")
+    # Slides of tens of metres; one slide of a machine's travel beside one of a world's; a
+    # turn with limits beside long slides.
+    for stage in (
+        xy_stage(20.0),
+        xy_stage(2.1),
+        xy_stage(0.9, 20.0),
+        xy_stage(20.0, turn='<limit lower="-1.5" upper="1.5" effort="1" velocity="1"/>'),
+    ):
+        assert placement(tree_of(stage)).placing == placed
+
+
+def test_a_hovering_body_placed_with_a_short_lift_still_floats() -> None:
+    # x and y over a world, z a few metres up, a turn about z: a drone's four freedoms.
+    robot = RobotText("hover", root="world")
+    link = "world"
+    for name, kind, axis, limit in (
+        ("x", "prismatic", "1 0 0", (-50, 50)),
+        ("y", "prismatic", "0 1 0", (-50, 50)),
+        ("z", "prismatic", "0 0 1", (0, 3)),
+        ("yaw", "continuous", "0 0 1", None),
+    ):
+        bounds = "" if limit is None else f'<limit lower="{limit[0]}" upper="{limit[1]}"/>'
+        link = robot.joint(name, kind, link, f"{name}_link", f'<axis xyz="{axis}"/>{bounds}')
+    robot.fixed(link, "imu_link")
+    robot.fixed(link, "camera_link")
+    assert placement(tree_of(robot)).floating == (
+        "root joints x, y, z, yaw (x, y, z and a turn about z)",
+    )
 
 
 def test_root_joints_that_lift_and_tilt_place_nothing() -> None:

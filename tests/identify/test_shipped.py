@@ -49,11 +49,18 @@ def test_move_base_and_position_set_points_are_navigation_too() -> None:
     assert "Waypoint" in shipped("UGV", "<node pkg='move_base' type='move_base'/>")
     assert "Waypoint" in shipped("UAV", "rospy.Publisher('mavros/setpoint_position/local')")
     assert "Waypoint" in shipped("Hexapod", "# point_to_point.py: walk to each (x, y) listed")
-    # A "go to" a place is navigation; a "go to" a state, a joint or sleep is not.
-    assert "Waypoint" in shipped("UGV", "self.go_to_pose(x, y)")
-    assert "Waypoint" in shipped("Underwater Vehicle", "state = go_to_depth(2.0)")
-    for other in ("go_to_stop_state_on_crash(this);", "arm.go_to_joint(q)", "go_to_sleep()"):
-        assert shipped("Biped", other) == {}
+    # A "go to" a place is navigation; a "go to" a state, a joint or sleep is not, nor
+    # MoveIt's tutorial pose goal (an arm's).
+    for place in ("self.go_to_pose(x, y)", "goto_depth(2.0)", "go_to_dock()", "goto_wp(3)"):
+        assert "Waypoint" in shipped("Underwater Vehicle", place)
+    for other in (
+        "go_to_stop_state_on_crash(this);",
+        "arm.go_to_joint(q)",
+        "goto_sleep()",
+        "goto_joint_state(q)",
+        "self.go_to_pose_goal()",
+    ):
+        assert shipped("Mobile Manipulator", other) == {}
     # Point-to-point scan matching (ICP) is no walk.
     for icp in ("TransformationEstimationPointToPoint()", "icp_method: point_to_point"):
         assert shipped("UGV", icp) == {}
@@ -72,12 +79,11 @@ def test_a_pan_tilt_unit_is_aimed_whatever_navigation_or_planning_its_repository
     for text in (
         "IncludeLaunchDescription('nav2_bringup')",
         "self.target_pose = goal",
+        "Node(package='teleop_twist_keyboard')",
         "<include file='$(find ptu_moveit_config)/launch/move_group.launch'/>",
         "q = solve_ik(x, y, z)",
     ):
         assert shipped("Pan/Tilt Unit", text) == {}
-    # A teleop node drives the body the head is on (a description trimmed to its sensor head).
-    assert list(shipped("Pan/Tilt Unit", "Node(package='teleop_twist_keyboard')")) == ["Driving"]
 
 
 def test_a_teleop_node_is_the_structures_velocity_control() -> None:
@@ -235,8 +241,17 @@ def test_a_pan_tilt_head_is_not_alone_on_a_body_its_packages_drive(tmp_path: Pat
     robot.fixed(robot.root, "laser")
     robot.add(LASER)
     path = described(tmp_path, robot, "<node pkg='teleop_twist_keyboard'/>")
-    assert "Joint" not in controls_of(path)
-    assert "Joint" in controls_of(path, look_around=False)
+    driven = identify(path)
+    assert (driven.structure, set(controls_of(path))) == ("Other", {"Driving"})
+    assert (
+        "a base driven by its packages' teleop node: package rover_bringup: "
+        "rover_bringup/launch/bringup.launch (teleop_twist_keyboard)"
+    ) in driven.evidence
+    alone = identify(path, look_around=False)
+    assert (alone.structure, set(controls_of(path, look_around=False))) == (
+        "Pan/Tilt Unit",
+        {"Joint"},
+    )
 
 
 def read_in_part(
