@@ -61,6 +61,15 @@ def test_move_base_and_position_set_points_are_navigation_too() -> None:
         "self.go_to_pose_goal()",
     ):
         assert shipped("Mobile Manipulator", other) == {}
+    # A path planned by A* or followed (a path follower, a tracker, pure pursuit) is navigation.
+    for path in (
+        "from astar import plan",
+        "a_star(grid)",
+        "path_following.launch.py",
+        "PurePursuit",
+    ):
+        assert "Waypoint" in shipped("UGV", path)
+    assert shipped("UGV", "datastar_client(); a_start = 0") == {}
     # Point-to-point scan matching (ICP) is no walk.
     for icp in ("TransformationEstimationPointToPoint()", "icp_method: point_to_point"):
         assert shipped("UGV", icp) == {}
