@@ -77,7 +77,8 @@ __all__ = [
 # Seconds to wait for the watcher's answer, unless told otherwise (``switch --wait``).
 DEFAULT_WAIT: Final = 5.0
 # Looking for the robot and the watchers' announcements on a graph whose participants are
-# discovered one by one: until nothing new for LOOK_QUIET seconds, at most LOOK_LIMIT.
+# discovered one by one: until nothing new for LOOK_QUIET seconds, at most LOOK_LIMIT (and a
+# watcher that announced a rule set is waited for until LOOK_LIMIT, not LOOK_QUIET).
 LOOK_QUIET: Final = 0.5
 LOOK_LIMIT: Final = 5.0
 # Seconds between looks at the answer when the source wakes no one (a ROS 1 master).
@@ -245,7 +246,10 @@ class Station:
         """The robots on the graph and the ``/teleop_ui`` parameters, once ``robot`` is there
         (and, with ``announcements``, a watcher that announced its rule set is seen running), or
         once the graph has been quiet for :data:`LOOK_QUIET` seconds (at most
-        :data:`LOOK_LIMIT`)."""
+        :data:`LOOK_LIMIT`). A rule set announced by a watcher not yet seen running is waited
+        for until :data:`LOOK_LIMIT`: on a busy machine the watcher's participant may be
+        discovered long after its announcement, and a switch that stopped looking would check
+        its values for syntax only and write a misspelt one."""
         start = quiet_since = time.monotonic()
         seen: Any = None
         while True:
@@ -260,10 +264,12 @@ class Station:
             if robot in robots and (not announcements or running):
                 return robots, params
             now = time.monotonic()
-            state = (robots, sorted(map(str, _mapping(params.get(ANNOUNCEMENTS)))), running)
+            announced = sorted(map(str, _mapping(params.get(ANNOUNCEMENTS))))
+            state = (robots, announced, running)
+            awaited = announcements and bool(announced) and robot in robots
             if state != seen:
                 seen, quiet_since = state, now
-            elif now - quiet_since >= LOOK_QUIET or now - start >= LOOK_LIMIT:
+            elif now - start >= LOOK_LIMIT or (now - quiet_since >= LOOK_QUIET and not awaited):
                 return robots, params
             self._woken.wait(POLL)
 

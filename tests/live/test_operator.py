@@ -351,6 +351,36 @@ def test_a_forged_announcement_tells_no_rule_set(node: TestNode, ros1_station: S
     assert why == f"no running watcher on {ros1_station.name} announces its rule set"
 
 
+def test_an_announced_watcher_not_yet_seen_running_is_looked_for_past_a_quiet_graph(
+    node: TestNode, ros1_station: Station, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # A graph quiet at once would end the look after two observations; an announcement
+    # whose watcher is not seen running keeps it looking (its participant may come late).
+    from solver.live import operator
+
+    put_drone(node, "/uav1")
+    node.set_param(
+        "/teleop_ui/watchers/late",
+        {"watcher": "/late", "team": "Case 3", "rules": "Mortimer et al. 2017"},
+    )
+    monkeypatch.setattr(operator, "LOOK_QUIET", 0.0)
+    monkeypatch.setattr(operator, "LOOK_LIMIT", 2.0)
+    observed: list[object] = []
+    observe = ros1_station.source.observe
+
+    def counted(*args: Any) -> Any:
+        observed.append(args)
+        return observe(*args)
+
+    monkeypatch.setattr(ros1_station.source, "observe", counted)
+    ros1_station.look("/uav1", announcements=True)
+    assert len(observed) > 2
+    # Without announcements asked for, the quiet graph ends it.
+    observed.clear()
+    ros1_station.look("/uav1", announcements=False)
+    assert len(observed) == 1
+
+
 def test_a_switch_on_a_master_is_answered_and_the_parameters_hold_it(
     master: Roscore,
     node: TestNode,
