@@ -21,7 +21,7 @@ import re
 
 from solver.identify.couplings import Walk, jaw_groups
 from solver.identify.limbs import Limb, moved_by
-from solver.identify.pose import local_axis, parallel
+from solver.identify.pose import Vector, local_axis, parallel
 from solver.identify.readers.urdf import Joint
 from solver.identify.tree import JointTree
 
@@ -117,11 +117,30 @@ def _named_otherwise(tree: JointTree, name: str) -> bool:
 
 
 def _side_by_side(pair: list[Joint]) -> bool:
-    """Two joints of one kind about parallel axes, placed apart along one line only."""
+    """Two joints of one kind about parallel axes, placed apart along one line only; not two
+    hinges on one axis line that swing both ways alike (a head's ears, a pair of flaps: jaws
+    close one way, on each other or, as two fingers curling together, on the palm)."""
     one, other = pair
     apart = [abs(a - b) > _SAME for a, b in zip(one.origin, other.origin, strict=True)]
+    axis = local_axis(one)
     return (
-        one.type == other.type and parallel(local_axis(one), local_axis(other)) and sum(apart) <= 1
+        one.type == other.type
+        and parallel(axis, local_axis(other))
+        and sum(apart) <= 1
+        and not _swing_on_one_line(pair, axis)
+    )
+
+
+def _swing_on_one_line(pair: list[Joint], axis: Vector) -> bool:
+    """Two hinges placed apart along their own axis, each travelling as far either way."""
+    one, other = pair
+    (ax, ay, az), (bx, by, bz) = one.origin, other.origin
+    between = (bx - ax, by - ay, bz - az)
+    if one.type == "prismatic" or not any(abs(d) > _SAME for d in between):
+        return False
+    travels = [_travel(joint) for joint in pair]
+    return parallel(axis, between) and all(
+        travel is not None and abs(travel[0] + travel[1]) <= _SAME for travel in travels
     )
 
 

@@ -303,6 +303,24 @@ def test_two_hinges_one_motion_closes_on_a_head_are_ears_not_jaws() -> None:
     assert grippers(mirrored_pair(["joint1", "joint2"], "revolute", "1 0 0")) == 1
 
 
+def test_two_hinges_swinging_both_ways_on_one_axis_line_at_a_chains_end_are_no_jaws() -> None:
+    # Two ears on a head box, each driven alone, hinged about the line between them and
+    # swinging as far either way: they close on nothing. Two fingers curling one way about
+    # that line close on the palm, and a pair hinged across it close on each other: jaws.
+    def pair_on_a_chain(axis: str, travel: tuple[float, float] = (-1.0, 1.0)) -> RobotText:
+        robot = RobotText("r")
+        tip = robot.chain(robot.root, ["joint1", "joint2"])
+        limit = f'<limit lower="{travel[0]}" upper="{travel[1]}" effort="1" velocity="1"/>'
+        for side, y in (("l", "0.09"), ("r", "-0.09")):
+            body = f'<origin xyz="0 {y} 0.04"/><axis xyz="{axis}"/>{limit}'
+            robot.joint(f"side_{side}", "revolute", tip, f"side_{side}_link", body)
+        return robot
+
+    assert grippers(pair_on_a_chain("0 1 0")) == 0
+    assert grippers(pair_on_a_chain("0 1 0", (0.0, 2.6))) == 1
+    assert grippers(pair_on_a_chain("1 0 0")) == 1
+
+
 def test_jaws_one_motion_closes_at_an_arms_end_stay_jaws_below_a_shoulder_pan() -> None:
     # A UR-style arm: "pan" names its shoulder far above the gripper, no head's.
     names = ["shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint", "wrist_1_joint"]
