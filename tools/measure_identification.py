@@ -23,7 +23,8 @@ Each robot is identified from its URDF (and SRDF when it has one) with the shipp
 the article's rule set, exactly as ``teleop-ui identify`` would. Printed, as Markdown, per
 family and per source (the repository or package in ``source``), each set's rows side by side:
 structure accuracy on the certain labels (no trailing ``?``), the lenient score (a label ending
-in ``?`` also accepts a structure its ``uncertainty_note`` names), descriptions refused (exit
+in ``?`` also accepts a structure its ``uncertainty_note`` names, and the ``LENIENT_ACCEPTS``
+readings of its label), descriptions refused (exit
 2), sensor precision and recall (kinds with counts), and motion-control precision and recall
 (robots whose ``motion_control_kinds`` is empty are not labelled for controls); then per set the
 per-label table, the structure confusion table, each motion control's precision and recall

@@ -166,7 +166,8 @@ class Body:
 
     @property
     def weak_base(self) -> bool:
-        """A mobile base known only from fixed wheels or planar (virtual) joints."""
+        """A mobile base known only from fixed wheels or planar root joints (an SRDF's virtual
+        joint is not read: :mod:`solver.identify.placement`)."""
         return self.mobile_base and not (
             self.wheels or self.tracks or self.drive_plugins or self.casters
         )

@@ -217,7 +217,8 @@ def _limbs(
                 "opened and closed on command",
             )
         )
-    # A pan/tilt unit alone (no vehicle, arm, leg or gripper) is there to be aimed: its one
+    # A pan/tilt unit alone (Body.head_alone: no vehicle, mobile or floating base, arm, leg or
+    # gripper, and no teleop node of its packages driving it) is there to be aimed: its one
     # command is its joints'.
     if body.head_alone:
         found.append(

@@ -5,9 +5,10 @@ A description may place its body by joints that move no part of it: a ``floating
 y and turn about z (a planar base, as simulators model a mobile base) or slide along x, y, z and
 turn about all three (a simulated floating base) or about z alone (a simulated hovering body, a
 drone's four degrees of freedom). :func:`placement` finds them; the root
-chain's joints are then nobody's limb. Slides along x and y and a turn about z whose slides
-each travel less than a simulator's world (:data:`MACHINE_TRAVEL`) are a machine's axes (an
-XY gantry turning a tool): they place nothing, and are an arm's joints.
+chain's joints are then nobody's limb. Slides along x and y (and z) and a turn about z whose
+slides each travel less than a simulator's world (:data:`MACHINE_TRAVEL`) are a machine's
+axes (an XY table or a Cartesian gantry turning a tool): they place nothing, and are an arm's
+joints.
 
 A ``floating`` joint that carries only a leaf part is no base: it is a part a simulator poses
 (a propeller drawn turning, :mod:`solver.identify.roles`). An SRDF's virtual joint is a
@@ -27,9 +28,9 @@ from solver.identify.tree import JointTree
 
 __all__ = ["MACHINE_TRAVEL", "Placement", "placement"]
 
-# Root slides along x and y whose written limits each let them travel less than this (metres)
-# are a machine's axes (an XY table's or a small gantry's), not a planar base a simulator places:
-# those move it over tens of metres (the labelled sets' travel 20 m or more).
+# Root slides along x and y (and z) whose written limits each let them travel less than this
+# (metres) are a machine's axes (an XY table's or a small gantry's), not a base a simulator
+# places: those move it over tens of metres (the labelled sets' travel 20 m or more).
 MACHINE_TRAVEL = 2.0
 
 
@@ -41,7 +42,7 @@ class Placement:
     floating: tuple[str, ...] = ()
     planar: tuple[str, ...] = ()
     placing: tuple[str, ...] = ()  # root joints: x, y and a turn; x, y, z and one or three turns
-    machine: tuple[str, ...] = ()  # root slides along x and y that travel as a machine's axes
+    machine: tuple[str, ...] = ()  # root slides that travel as a machine's axes
 
 
 def placement(tree: JointTree) -> Placement:
@@ -49,13 +50,13 @@ def placement(tree: JointTree) -> Placement:
     floating = [j.name for j in tree.urdf.joints if j.type == "floating" and _carries(tree, j)]
     planar = [j.name for j in tree.urdf.joints if j.type == "planar" and _carries(tree, j)]
     placing = _root_axes(tree)
-    machine: list[str] = []
-    if len(placing) == 6:
+    machine = _machine_slides(tree, placing) if len(placing) in (3, 4) else []
+    if machine:
+        placing = []
+    elif len(placing) == 6:
         floating.append(f"root joints {', '.join(placing)} (x, y, z and three turns)")
     elif len(placing) == 4:
         floating.append(f"root joints {', '.join(placing)} (x, y, z and a turn about z)")
-    elif len(placing) == 3 and (slides := _machine_slides(tree, placing)):
-        machine, placing = slides, []
     elif len(placing) == 3:
         planar.append(f"root joints {', '.join(placing)} (x, y and a turn about z)")
     return Placement(tuple(floating), tuple(planar), tuple(placing), tuple(machine))
@@ -82,10 +83,11 @@ def _root_axes(tree: JointTree) -> list[str]:
     return []
 
 
-def _machine_slides(tree: JointTree, planar: list[str]) -> list[str]:
-    """The planar root joints' two slides when each travels less than
-    :data:`MACHINE_TRAVEL` between its written limits (a machine's axes); else []."""
-    joints = [joint for name in planar if (joint := tree.urdf.joint(name)) is not None]
+def _machine_slides(tree: JointTree, placing: list[str]) -> list[str]:
+    """The root joints' slides (x and y of a planar pattern, x, y and z of a hovering one)
+    when each travels less than :data:`MACHINE_TRAVEL` between its written limits (a
+    machine's axes: an XY table's, a Cartesian gantry's); else []."""
+    joints = [joint for name in placing if (joint := tree.urdf.joint(name)) is not None]
     slides = [joint for joint in joints if joint.type == "prismatic"]
     short = all(
         joint.lower is not None
@@ -93,7 +95,7 @@ def _machine_slides(tree: JointTree, planar: list[str]) -> list[str]:
         and abs(joint.upper - joint.lower) < MACHINE_TRAVEL
         for joint in slides
     )
-    return [joint.name for joint in slides] if short and len(slides) == 2 else []
+    return [joint.name for joint in slides] if short else []
 
 
 def _root_chain(tree: JointTree) -> list[Joint]:

@@ -94,6 +94,15 @@ def test_a_pan_tilt_unit_alone_is_aimed_by_its_joints() -> None:
     assert all("pan/tilt" not in source for source in controls(beside).values())
 
 
+def test_a_pan_tilt_head_on_a_floating_base_is_not_aimed_alone() -> None:
+    # A gimbal on a body a simulator floats (a drone's, its rotors trimmed): no pan/tilt unit.
+    robot = RobotText("floating_gimbal", root="world")
+    base = robot.joint("world_joint", "floating", "world", "base_link")
+    robot.fixed(base, "imu_link")
+    robot.chain(base, ["gimbal_pan", "gimbal_tilt"])
+    assert "Joint" not in controls(robot)
+
+
 def test_a_pan_tilt_head_with_transmissions_is_not_joint_control() -> None:
     # A camera's pan/tilt points a sensor; it is not a motion control of the robot.
     robot = builders.ugv()

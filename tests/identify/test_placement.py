@@ -120,6 +120,19 @@ def test_slides_that_travel_as_a_machines_axes_place_no_body() -> None:
     assert placement(tree_of(turned)).machine == ("x_joint", "y_joint")
 
 
+def test_a_cartesian_gantrys_three_slides_and_a_turn_are_an_arm() -> None:
+    # x, y and z slides of under a metre and a tool turning about z: no hovering body.
+    robot = RobotText("cartesian", root="world")
+    link = "world"
+    for name, axis in (("x", "1 0 0"), ("y", "0 1 0"), ("z", "0 0 1")):
+        limit = '<limit lower="0.8" upper="0" effort="1" velocity="1"/>'  # written in reverse
+        link = robot.joint(name, "prismatic", link, f"{name}_link", f'<axis xyz="{axis}"/>{limit}')
+    turn = '<axis xyz="0 0 1"/><limit lower="-1.5" upper="1.5" effort="1" velocity="1"/>'
+    robot.joint("spindle", "revolute", link, "tool", turn)
+    assert placement(tree_of(robot)).machine == ("x", "y", "z")
+    assert identify_urdf(robot.text()).structure == "Manipulator"
+
+
 def test_a_planar_base_placed_over_a_simulators_world_stays_one() -> None:
     placed = ("x_joint", "y_joint", "tool_joint")
     # Slides of tens of metres; one slide of a machine's travel beside one of a world's; a
@@ -131,6 +144,12 @@ def test_a_planar_base_placed_over_a_simulators_world_stays_one() -> None:
         xy_stage(20.0, turn='<limit lower="-1.5" upper="1.5" effort="1" velocity="1"/>'),
     ):
         assert placement(tree_of(stage)).placing == placed
+    # Limits written in reverse travel as far.
+    reversed_limits = (
+        xy_stage(20.0).text().replace('lower="0" upper="20.0"', 'lower="20.0" upper="0"')
+    )
+    tree = JointTree(parse_urdf(reversed_limits, strict=False), load_profile())
+    assert placement(tree).placing == placed
 
 
 def test_a_hovering_body_placed_with_a_short_lift_still_floats() -> None:

@@ -51,7 +51,13 @@ def test_move_base_and_position_set_points_are_navigation_too() -> None:
     assert "Waypoint" in shipped("Hexapod", "# point_to_point.py: walk to each (x, y) listed")
     # A "go to" a place is navigation; a "go to" a state, a joint or sleep is not, nor
     # MoveIt's tutorial pose goal (an arm's).
-    for place in ("self.go_to_pose(x, y)", "goto_depth(2.0)", "go_to_dock()", "goto_wp(3)"):
+    for place in (
+        "self.go_to_pose(x, y)",
+        "goto_depth(2.0)",
+        "go_to_dock()",
+        "goto_wp(3)",
+        "go_to_lat_lon(a, b)",
+    ):
         assert "Waypoint" in shipped("Underwater Vehicle", place)
     for other in (
         "go_to_stop_state_on_crash(this);",
@@ -59,16 +65,21 @@ def test_move_base_and_position_set_points_are_navigation_too() -> None:
         "goto_sleep()",
         "goto_joint_state(q)",
         "self.go_to_pose_goal()",
+        "locobot.arm.go_to_home_pose()",
+        "go_to_latest_frame()",
+        "ego_to_target = t",
     ):
         assert shipped("Mobile Manipulator", other) == {}
     # A path planned by A* or followed (a path follower, a tracker, pure pursuit) is navigation.
     for path in (
         "from astar import plan",
         "a_star(grid)",
+        "AStarPlanner(ox, oy)",
         "path_following.launch.py",
+        "path_tracking_node",
         "PurePursuit",
     ):
-        assert "Waypoint" in shipped("UGV", path)
+        assert "Waypoint" in shipped("UGV", path), path
     assert shipped("UGV", "datastar_client(); a_start = 0") == {}
     # Point-to-point scan matching (ICP) is no walk.
     for icp in ("TransformationEstimationPointToPoint()", "icp_method: point_to_point"):
@@ -261,6 +272,25 @@ def test_a_pan_tilt_head_is_not_alone_on_a_body_its_packages_drive(tmp_path: Pat
         "Pan/Tilt Unit",
         {"Joint"},
     )
+
+
+def test_only_a_teleop_node_drives_a_pan_tilt_head_and_only_a_head_alone_is_driven(
+    tmp_path: Path,
+) -> None:
+    # A head whose packages hold only navigation stays a pan/tilt unit, aimed.
+    head = pan_tilt_only()
+    aimed = identify(described(tmp_path / "nav", head, "<include file='nav2_bringup'/>"))
+    assert (aimed.structure, [c.motion_control for c in aimed.motion_controls]) == (
+        "Pan/Tilt Unit",
+        ["Joint"],
+    )
+    # A rover whose packages ship a teleop node is driven, and says nothing of it.
+    rover = identify(
+        described(tmp_path / "rover", rover_with_a_lidar(), "<node pkg='teleop_twist_keyboard'/>")
+    )
+    assert rover.body is not None
+    assert rover.body.driven_by == ""
+    assert not any("teleop node" in line for line in rover.evidence)
 
 
 def read_in_part(
