@@ -106,7 +106,7 @@ class Body:
     grippers: int = 0
     floating_base: tuple[str, ...] = ()
     planar_base: tuple[str, ...] = ()
-    # Root slides along x and y that travel as a machine's axes (an XY gantry's): no base.
+    # Root slides that travel as a machine's axes (an XY table's, a Cartesian gantry's): no base.
     machine_axes: tuple[str, ...] = ()
     controlled_wheels: tuple[str, ...] = ()
     # Fins (rudders, control surfaces) a controller drives (a transmission or ros2_control).

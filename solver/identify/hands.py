@@ -7,7 +7,8 @@ told by where they are, side by side on one palm in threes or more (:func:`finge
 Jaws are told by where they are too (:func:`jaws`): joints side by side on one link that turn
 or slide about one line with nothing beyond them but their own followers (a linkage of mimic
 joints), closed by one motion (mimic joints follow one driver; not on a head, where a mirrored
-pair is ears or eyelids) or, at the end of a chain of two
+pair, or a pair swinging both ways about the line between them, is ears or eyelids) or, at the
+end of a chain of two
 joints or more, each by its own (a humanoid's split gripper). A hand is counted by its
 fingers, one tip per finger (:func:`finger_tips`).
 
@@ -21,7 +22,7 @@ import re
 
 from solver.identify.couplings import Walk, jaw_groups
 from solver.identify.limbs import Limb, moved_by
-from solver.identify.pose import Vector, local_axis, parallel
+from solver.identify.pose import local_axis, parallel
 from solver.identify.readers.urdf import Joint
 from solver.identify.tree import JointTree
 
@@ -84,7 +85,7 @@ def _pair_why(tree: JointTree, link: str, pair: list[Joint], motions: list[str])
     """Why two joints on ``link`` are jaws (see :func:`_jaw_pairs`), or "" when they are not."""
     beside = _side_by_side(pair)
     at_the_end = _ends_a_chain(tree, link)
-    if at_the_end and beside:
+    if at_the_end and beside and not (_ears(pair) and _on_a_head(tree, link)):
         return f"one of two jaws side by side at the end of a chain ({link})"
     if at_the_end and _twins(pair) and not _on_a_head(tree, link):
         return f"one of two hinges mirroring each other at the end of a chain ({link})"
@@ -117,30 +118,29 @@ def _named_otherwise(tree: JointTree, name: str) -> bool:
 
 
 def _side_by_side(pair: list[Joint]) -> bool:
-    """Two joints of one kind about parallel axes, placed apart along one line only; not two
-    hinges on one axis line that swing both ways alike (a head's ears, a pair of flaps: jaws
-    close one way, on each other or, as two fingers curling together, on the palm)."""
+    """Two joints of one kind about parallel axes, placed apart along one line only."""
     one, other = pair
     apart = [abs(a - b) > _SAME for a, b in zip(one.origin, other.origin, strict=True)]
-    axis = local_axis(one)
     return (
-        one.type == other.type
-        and parallel(axis, local_axis(other))
-        and sum(apart) <= 1
-        and not _swing_on_one_line(pair, axis)
+        one.type == other.type and parallel(local_axis(one), local_axis(other)) and sum(apart) <= 1
     )
 
 
-def _swing_on_one_line(pair: list[Joint], axis: Vector) -> bool:
-    """Two hinges placed apart along their own axis, each travelling as far either way."""
+def _ears(pair: list[Joint]) -> bool:
+    """Two hinges placed apart along their own axis, each with written limits (no placeholder)
+    travelling as far either way: on a head, ears that swing (a head's jaws would close one
+    way, as pliers' or a clamshell's do on a gripper, which this is not asked of)."""
     one, other = pair
     (ax, ay, az), (bx, by, bz) = one.origin, other.origin
     between = (bx - ax, by - ay, bz - az)
-    if one.type == "prismatic" or not any(abs(d) > _SAME for d in between):
+    if one.type != "revolute" or not parallel(local_axis(one), between):
         return False
-    travels = [_travel(joint) for joint in pair]
-    return parallel(axis, between) and all(
-        travel is not None and abs(travel[0] + travel[1]) <= _SAME for travel in travels
+    return all(
+        joint.lower is not None
+        and joint.upper is not None
+        and joint.lower < joint.upper
+        and abs(joint.lower + joint.upper) <= _SAME
+        for joint in pair
     )
 
 

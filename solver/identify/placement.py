@@ -86,7 +86,10 @@ def _root_axes(tree: JointTree) -> list[str]:
 def _machine_slides(tree: JointTree, placing: list[str]) -> list[str]:
     """The root joints' slides (x and y of a planar pattern, x, y and z of a hovering one)
     when each travels less than :data:`MACHINE_TRAVEL` between its written limits (a
-    machine's axes: an XY table's, a Cartesian gantry's); else []."""
+    machine's axes: an XY table's, a Cartesian gantry's); else [], and for a body something
+    else says travels (a drive, flight or water plugin, a rotor: a vehicle in a small world)."""
+    if _travels(tree):
+        return []
     joints = [joint for name in placing if (joint := tree.urdf.joint(name)) is not None]
     slides = [joint for joint in joints if joint.type == "prismatic"]
     short = all(
@@ -96,6 +99,16 @@ def _machine_slides(tree: JointTree, placing: list[str]) -> list[str]:
         for joint in slides
     )
     return [joint.name for joint in slides] if short else []
+
+
+def _travels(tree: JointTree) -> bool:
+    """A drive, flight or water plugin, or a rotor-named joint, says the body travels."""
+    return bool(
+        tree.labels("drive")
+        or tree.labels("flight")
+        or tree.reader.marine
+        or any(tree.matches("rotor", joint) for joint in tree.urdf.joints)
+    )
 
 
 def _root_chain(tree: JointTree) -> list[Joint]:

@@ -18,7 +18,9 @@ feed), or announced by the graph's running watchers (``/teleop_ui/watchers``,
 Where the graph does not tell, only the names' syntax is checked, and :attr:`Switched.rules`
 says why. The robot must be on the graph (a namespace with a ``robot_description``); a DDS
 graph's participants are discovered one by one, so it is looked for until discovery is quiet
-(:data:`LOOK_QUIET`, at most :data:`LOOK_LIMIT` seconds), as a one-shot look at DDS waits.
+(:data:`LOOK_QUIET`, at most :data:`LOOK_LIMIT` seconds), as a one-shot look at DDS waits; a
+rule set a watcher announced there is looked for until that watcher is seen running (at most
+:data:`LOOK_LIMIT`).
 
 *What is read back is a stranger's*: the answer and the announcements are bounded by the source
 (:mod:`solver.live.values`), shown escaped by :func:`render_switched`, and an answer counts only
@@ -77,8 +79,8 @@ __all__ = [
 # Seconds to wait for the watcher's answer, unless told otherwise (``switch --wait``).
 DEFAULT_WAIT: Final = 5.0
 # Looking for the robot and the watchers' announcements on a graph whose participants are
-# discovered one by one: until nothing new for LOOK_QUIET seconds, at most LOOK_LIMIT (and a
-# watcher that announced a rule set is waited for until LOOK_LIMIT, not LOOK_QUIET).
+# discovered one by one: until nothing new for LOOK_QUIET seconds, at most LOOK_LIMIT (and, on
+# DDS, a watcher that announced a rule set is waited for until LOOK_LIMIT, not LOOK_QUIET).
 LOOK_QUIET: Final = 0.5
 LOOK_LIMIT: Final = 5.0
 # Seconds between looks at the answer when the source wakes no one (a ROS 1 master).
@@ -224,6 +226,9 @@ class Station:
     def __init__(self, source: GraphSource) -> None:
         self.source = source
         self.name = source.name
+        # A DDS graph discovers its participants one by one, long after their words on a busy
+        # machine; a ROS master answers at once (a watcher it does not know has stopped).
+        self._discovers = self.name.startswith("ros2://")
         self.busy = threading.Lock()
         self._woken = threading.Event()
         self._graph_changed = True
@@ -246,10 +251,11 @@ class Station:
         """The robots on the graph and the ``/teleop_ui`` parameters, once ``robot`` is there
         (and, with ``announcements``, a watcher that announced its rule set is seen running), or
         once the graph has been quiet for :data:`LOOK_QUIET` seconds (at most
-        :data:`LOOK_LIMIT`). A rule set announced by a watcher not yet seen running is waited
-        for until :data:`LOOK_LIMIT`: on a busy machine the watcher's participant may be
-        discovered long after its announcement, and a switch that stopped looking would check
-        its values for syntax only and write a misspelt one."""
+        :data:`LOOK_LIMIT`). On a DDS graph a rule set announced by a watcher not yet seen
+        running is waited for until :data:`LOOK_LIMIT`: on a busy machine the watcher's
+        participant may be discovered long after its announcement, and a switch that stopped
+        looking would check its values for syntax only and write a misspelt one (a ROS master
+        tells at once: a stale announcement there costs no wait)."""
         start = quiet_since = time.monotonic()
         seen: Any = None
         while True:
@@ -266,7 +272,7 @@ class Station:
             now = time.monotonic()
             announced = sorted(map(str, _mapping(params.get(ANNOUNCEMENTS))))
             state = (robots, announced, running)
-            awaited = announcements and bool(announced) and robot in robots
+            awaited = self._discovers and bool(announced) and robot in robots
             if state != seen:
                 seen, quiet_since = state, now
             elif now - start >= LOOK_LIMIT or (now - quiet_since >= LOOK_QUIET and not awaited):

@@ -291,7 +291,11 @@ def mirrored_pair(chain: list[str], kind: str, axis: str) -> RobotText:
 
 
 def grippers(robot: RobotText) -> int:
-    result = identify_urdf(robot.text())
+    return grippers_of(robot.text())
+
+
+def grippers_of(text: str) -> int:
+    result = identify_urdf(text)
     assert result.body is not None
     return result.body.grippers
 
@@ -303,22 +307,30 @@ def test_two_hinges_one_motion_closes_on_a_head_are_ears_not_jaws() -> None:
     assert grippers(mirrored_pair(["joint1", "joint2"], "revolute", "1 0 0")) == 1
 
 
-def test_two_hinges_swinging_both_ways_on_one_axis_line_at_a_chains_end_are_no_jaws() -> None:
-    # Two ears on a head box, each driven alone, hinged about the line between them and
-    # swinging as far either way: they close on nothing. Two fingers curling one way about
-    # that line close on the palm, and a pair hinged across it close on each other: jaws.
-    def pair_on_a_chain(axis: str, travel: tuple[float, float] = (-1.0, 1.0)) -> RobotText:
+def test_two_hinges_swinging_both_ways_on_one_axis_line_on_a_head_are_ears() -> None:
+    # A head box (pan and tilt named so) with two ears, each driven alone, hinged about the
+    # line between them and swinging as far either way: ears, no jaws.
+    def pair_on_a_chain(
+        chain: list[str], axis: str, travel: tuple[float, float] = (-1.0, 1.0)
+    ) -> RobotText:
         robot = RobotText("r")
-        tip = robot.chain(robot.root, ["joint1", "joint2"])
+        tip = robot.chain(robot.root, chain)
         limit = f'<limit lower="{travel[0]}" upper="{travel[1]}" effort="1" velocity="1"/>'
         for side, y in (("l", "0.09"), ("r", "-0.09")):
             body = f'<origin xyz="0 {y} 0.04"/><axis xyz="{axis}"/>{limit}'
             robot.joint(f"side_{side}", "revolute", tip, f"side_{side}_link", body)
         return robot
 
-    assert grippers(pair_on_a_chain("0 1 0")) == 0
-    assert grippers(pair_on_a_chain("0 1 0", (0.0, 2.6))) == 1
-    assert grippers(pair_on_a_chain("1 0 0")) == 1
+    head = ["head_pan", "head_tilt"]
+    assert grippers(pair_on_a_chain(head, "0 1 0")) == 0
+    # The same pair at an arm's end (pliers' blades on one pin), curling one way, hinged across
+    # the line between them, or with placeholder limits, is a gripper's jaws.
+    assert grippers(pair_on_a_chain(["joint1", "joint2"], "0 1 0")) == 1
+    assert grippers(pair_on_a_chain(head, "0 1 0", (0.0, 2.6))) == 1
+    assert grippers(pair_on_a_chain(head, "1 0 0")) == 1
+    # A CAD export whose every limit is 0/0 (placeholders) says nothing of how they swing.
+    placeholders = pair_on_a_chain(head, "0 1 0", (0.0, 0.0)).text()
+    assert grippers_of(placeholders.replace('lower="-1" upper="1"', 'lower="0" upper="0"')) == 1
 
 
 def test_jaws_one_motion_closes_at_an_arms_end_stay_jaws_below_a_shoulder_pan() -> None:

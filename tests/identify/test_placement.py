@@ -133,6 +133,23 @@ def test_a_cartesian_gantrys_three_slides_and_a_turn_are_an_arm() -> None:
     assert identify_urdf(robot.text()).structure == "Manipulator"
 
 
+def test_short_slides_of_a_body_that_travels_otherwise_still_place_it() -> None:
+    # A simulated base in a small world: a drive, flight or water plugin, or rotors, say the
+    # body travels, and the slides place it however short.
+    plugins = (
+        builders.model_plugin("drive", "libgazebo_ros_planar_move.so"),
+        builders.model_plugin("flight", "libhector_quadrotor_propulsion.so"),
+        builders.model_plugin("water", "libuuv_underwater_object_ros_plugin.so"),
+    )
+    for plugin in plugins:
+        stage = xy_stage(0.9)
+        stage.add(plugin)
+        assert placement(tree_of(stage)).placing == ("x_joint", "y_joint", "tool_joint")
+    rotor = xy_stage(0.9)
+    rotor.chain("tool_link", ["rotor_0_joint"], "continuous")
+    assert placement(tree_of(rotor)).machine == ()
+
+
 def test_a_planar_base_placed_over_a_simulators_world_stays_one() -> None:
     placed = ("x_joint", "y_joint", "tool_joint")
     # Slides of tens of metres; one slide of a machine's travel beside one of a world's; a

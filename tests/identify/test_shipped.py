@@ -81,6 +81,8 @@ def test_move_base_and_position_set_points_are_navigation_too() -> None:
     ):
         assert "Waypoint" in shipped("UGV", path), path
     assert shipped("UGV", "datastar_client(); a_start = 0") == {}
+    assert shipped("UGV", "#include <AStar32U4.h>  // a motor board") == {}
+    assert "Waypoint" in shipped("UGV", "a-star search")
     # Point-to-point scan matching (ICP) is no walk.
     for icp in ("TransformationEstimationPointToPoint()", "icp_method: point_to_point"):
         assert shipped("UGV", icp) == {}

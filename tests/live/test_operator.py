@@ -354,8 +354,9 @@ def test_a_forged_announcement_tells_no_rule_set(node: TestNode, ros1_station: S
 def test_an_announced_watcher_not_yet_seen_running_is_looked_for_past_a_quiet_graph(
     node: TestNode, ros1_station: Station, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    # A graph quiet at once would end the look after two observations; an announcement
-    # whose watcher is not seen running keeps it looking (its participant may come late).
+    # A quiet graph ends the look after two observations; on a graph that discovers its
+    # participants late (DDS), an announcement whose watcher is not seen running keeps it
+    # looking. A master tells at once: a stale announcement there costs no wait.
     from solver.live import operator
 
     put_drone(node, "/uav1")
@@ -374,11 +375,24 @@ def test_an_announced_watcher_not_yet_seen_running_is_looked_for_past_a_quiet_gr
 
     monkeypatch.setattr(ros1_station.source, "observe", counted)
     ros1_station.look("/uav1", announcements=True)
+    assert len(observed) == 2
+    observed.clear()
+    monkeypatch.setattr(ros1_station, "_discovers", True)  # as a DDS graph's station
+    ros1_station.look("/uav1", announcements=True)
     assert len(observed) > 2
-    # Without announcements asked for, the quiet graph ends it.
+    # A robot not on the graph is not looked for past the quiet: it is refused at once.
+    observed.clear()
+    ros1_station.look("/uav9", announcements=True)
+    assert len(observed) == 2
+    # Without announcements asked for, the robot there ends it.
     observed.clear()
     ros1_station.look("/uav1", announcements=False)
     assert len(observed) == 1
+    # With no announcement on the graph, nothing is waited for.
+    node.delete_param("/teleop_ui/watchers/late")
+    observed.clear()
+    ros1_station.look("/uav1", announcements=True)
+    assert len(observed) == 2
 
 
 def test_a_switch_on_a_master_is_answered_and_the_parameters_hold_it(
