@@ -126,8 +126,9 @@ FEATURES = (
 # alone (nothing else says how it travels, or where in the water).
 # serpentine: the body is one long chain of equal modules whose axes alternate, with no base
 # that holds it (a snake robot).
-# head_alone: the body is pan/tilt heads only, with no vehicle, arm, leg, gripper or finger (a
-# camera's pan/tilt on a fixed base).
+# head_alone: the body is pan/tilt heads only, with no vehicle, mobile or floating base, arm,
+# leg, gripper or finger, and no teleop node of its packages driving it (a camera's pan/tilt on
+# a fixed base).
 BOOLEAN_FEATURES = (
     "mobile_base",
     "flying",
