@@ -52,7 +52,7 @@ and 15 together), measured blind and moved on 2026-11-29.
 The blind set is never listed: ``tools/measure_identification.py`` holds out whole, by its set,
 the highest-numbered ``tools/fresh_set_N`` this file does not list (next ``tools/fresh_set_50``),
 so this file need not change (nor that set be read) while it is being built. Moving a fresh set
-to development is adding it to ``MOVED_SETS`` and re-making this file.
+to development is raising ``LAST_MOVED`` and re-making this file.
 
 The file written, ``tools/identification_split.csv``, has the seed and this method in its
 leading ``#`` lines, then one row per robot: ``set``, ``robot``, ``family``, ``group``,
@@ -73,58 +73,10 @@ SEED = 41
 SPLIT = ROOT / "tools" / "identification_split.csv"
 OWN_SET = ROOT / "tools" / "identification_set"
 ADDED_SET = ROOT / "tools" / "generalization_set"
-# Fresh sets measured blind once, then moved whole to the development part (oldest first).
-MOVED_SETS = (
-    ROOT / "tools" / "fresh_set_1",
-    ROOT / "tools" / "fresh_set_2",
-    ROOT / "tools" / "fresh_set_3",
-    ROOT / "tools" / "fresh_set_4",
-    ROOT / "tools" / "fresh_set_5",
-    ROOT / "tools" / "fresh_set_6",
-    ROOT / "tools" / "fresh_set_7",
-    ROOT / "tools" / "fresh_set_8",
-    ROOT / "tools" / "fresh_set_9",
-    ROOT / "tools" / "fresh_set_10",
-    ROOT / "tools" / "fresh_set_11",
-    ROOT / "tools" / "fresh_set_12",
-    ROOT / "tools" / "fresh_set_13",
-    ROOT / "tools" / "fresh_set_14",
-    ROOT / "tools" / "fresh_set_15",
-    ROOT / "tools" / "fresh_set_16",
-    ROOT / "tools" / "fresh_set_17",
-    ROOT / "tools" / "fresh_set_18",
-    ROOT / "tools" / "fresh_set_19",
-    ROOT / "tools" / "fresh_set_20",
-    ROOT / "tools" / "fresh_set_21",
-    ROOT / "tools" / "fresh_set_22",
-    ROOT / "tools" / "fresh_set_23",
-    ROOT / "tools" / "fresh_set_24",
-    ROOT / "tools" / "fresh_set_25",
-    ROOT / "tools" / "fresh_set_26",
-    ROOT / "tools" / "fresh_set_27",
-    ROOT / "tools" / "fresh_set_28",
-    ROOT / "tools" / "fresh_set_29",
-    ROOT / "tools" / "fresh_set_30",
-    ROOT / "tools" / "fresh_set_31",
-    ROOT / "tools" / "fresh_set_32",
-    ROOT / "tools" / "fresh_set_33",
-    ROOT / "tools" / "fresh_set_34",
-    ROOT / "tools" / "fresh_set_35",
-    ROOT / "tools" / "fresh_set_36",
-    ROOT / "tools" / "fresh_set_37",
-    ROOT / "tools" / "fresh_set_38",
-    ROOT / "tools" / "fresh_set_39",
-    ROOT / "tools" / "fresh_set_40",
-    ROOT / "tools" / "fresh_set_41",
-    ROOT / "tools" / "fresh_set_42",
-    ROOT / "tools" / "fresh_set_43",
-    ROOT / "tools" / "fresh_set_44",
-    ROOT / "tools" / "fresh_set_45",
-    ROOT / "tools" / "fresh_set_46",
-    ROOT / "tools" / "fresh_set_47",
-    ROOT / "tools" / "fresh_set_48",
-    ROOT / "tools" / "fresh_set_49",
-)
+# Fresh sets measured blind once, then moved whole to the development part (oldest first):
+# fresh_set_1 .. fresh_set_LAST_MOVED. Moving the next one is raising LAST_MOVED.
+LAST_MOVED = 49
+MOVED_SETS = tuple(ROOT / "tools" / f"fresh_set_{n}" for n in range(1, LAST_MOVED + 1))
 DEVELOPMENT = "development"
 HELD_OUT = "held-out"
 FAMILY_OF_LABEL = {

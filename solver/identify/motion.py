@@ -326,7 +326,7 @@ def _shown_only(limb: Limb, body: Body, urdf: Urdf | None, named: Collection[str
     if any(_TRAJECTORIES.search(f"{p.name} {p.filename}") for p in urdf.plugins):
         return False
     joints = set(limb.joints)
-    return not (joints & urdf.controlled_joints or joints & set(named))
+    return joints.isdisjoint(urdf.controlled_joints) and joints.isdisjoint(named)
 
 
 # A plugin that plays joint trajectories on the description's joints (Gazebo's
