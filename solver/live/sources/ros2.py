@@ -45,7 +45,14 @@ graph.
 participant can publish on ``/teleop_ui/ui_configuration``. The newest sample read is the
 answer there; when it is not what this watcher last wrote, its next write goes out again (the
 watcher writes when the answer there is no running watcher's, :mod:`solver.live.watcher`), so
-a forged answer is replaced as a ROS 1 parameter set by anyone is.
+a forged answer is replaced as a ROS 1 parameter set by anyone is. Unlike a parameter, a topic
+has no one newest value: DDS orders no two writers, and a writer keeps its last sample for the
+readers it matches later, so a station can get another participant's answer *after* the
+watcher's (a forger's that matched the station late, or any such writer's when the station
+joins), and keep it. So while another participant has a writer of the answer topic and the
+newest answer read is this watcher's, it is written again :data:`REASSERT_FIRST` seconds after
+each write, then at gaps doubling up to :data:`REASSERT_LIMIT`: such a station shows the
+forgery for that long at most.
 
 *Discovery window.* :meth:`DdsGraph.settle` waits until nothing new was discovered for
 :data:`DISCOVERY_QUIET` seconds (at most :data:`DISCOVERY_LIMIT`): the watcher's first
@@ -64,6 +71,7 @@ import functools
 import json
 import os
 import threading
+import time
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from typing import Any
@@ -80,8 +88,11 @@ __all__ = [
     "DISCOVERY_QUIET",
     "MAX_ANNOUNCEMENTS",
     "MAX_REQUEST_TOPICS",
+    "REASSERT_FIRST",
+    "REASSERT_LIMIT",
     "WATCHERS_TOPIC",
     "DdsGraph",
+    "Reassertion",
     "dds_topic",
     "dds_type",
     "message_types",
@@ -102,6 +113,11 @@ MAX_ANNOUNCEMENTS = 16
 # seconds, and at most DISCOVERY_LIMIT seconds.
 DISCOVERY_QUIET = 0.5
 DISCOVERY_LIMIT = 5.0
+# The answer written again (see the module docstring) REASSERT_FIRST seconds after it was
+# written, then at gaps doubling up to REASSERT_LIMIT, while another participant has a writer
+# of the answer topic and the newest answer read is still this watcher's.
+REASSERT_FIRST = 1.0
+REASSERT_LIMIT = 30.0
 _STRING = "std_msgs::msg::dds_::String_"
 _DISCOVERY = "ros_discovery_info"
 _PREFIXES = {"rt/": "", "rq/": "Request", "rr/": "Reply"}
@@ -179,6 +195,32 @@ def write(writer: Any, sample: Any) -> None:
     code = _dds_write()(reference, ctypes.byref(container))
     if code < 0:
         raise DDSException(code, f"Occurred while writing sample in {writer!r}")
+
+
+@dataclass(frozen=True, slots=True)
+class Reassertion:
+    """When the watcher's answer goes out again (see the module docstring): ``due`` (a
+    ``time.monotonic()`` instant; ``None``: never), then ``gap`` seconds after that."""
+
+    due: float | None = None
+    gap: float = REASSERT_FIRST
+
+    @classmethod
+    def after_write(cls, now: float) -> "Reassertion":
+        """The schedule that starts when the answer was written at ``now``."""
+        return cls(now + REASSERT_FIRST, REASSERT_FIRST)
+
+    def at(self, now: float, *, own_newest: bool, others: bool) -> "tuple[bool, Reassertion]":
+        """Whether to write the answer again at ``now``, and the schedule after: again when
+        due while the newest answer read is the watcher's own (``own_newest``) and another
+        participant has a writer of the answer topic (``others``); with either gone the
+        schedule ends (the watcher's next write starts another)."""
+        if self.due is None or now < self.due:
+            return False, self
+        if not (own_newest and others):
+            return False, Reassertion()
+        gap = min(2 * self.gap, REASSERT_LIMIT)
+        return True, Reassertion(now + gap, gap)
 
 
 @dataclass(frozen=True, slots=True)
@@ -413,6 +455,7 @@ class DdsGraph:
         self._announced: dict[str, tuple[bytes | None, Any]] = {}  # key -> (participant, value)
         self._answer_value: Any = MISSING
         self._written: str | None = None
+        self._reassertion = Reassertion()  # when the answer goes out again, if it does
         self._announcement: str | None = None
         # The operator's selection, when this participant writes one (``teleop-ui switch``).
         self._selection_writers: dict[str, Any] = {}
@@ -492,6 +535,26 @@ class DdsGraph:
         if text != self._written:
             write(self._answer_writer, self.string_type(text))
             self._written = text
+            self._reassertion = Reassertion.after_write(time.monotonic())
+
+    @property
+    def reassertion(self) -> Reassertion:
+        """When this watcher's answer goes out again, if it does (:class:`Reassertion`)."""
+        return self._reassertion
+
+    def _reassert(self) -> None:
+        """The answer written again when it is due (see the module docstring and
+        :class:`Reassertion`)."""
+        answer = dds_topic(ANSWER_TOPIC)
+        others = any(
+            e.writer and e.topic == answer and e.participant != self._own
+            for e in self._endpoints.values()
+        )
+        again, self._reassertion = self._reassertion.at(
+            time.monotonic(), own_newest=self._written is not None, others=others
+        )
+        if again and self._written is not None:
+            write(self._answer_writer, self.string_type(self._written))
 
     def announce(self, value: dict[str, Any]) -> None:
         """Publish who this watcher is on ``/teleop_ui/watchers`` (gone with the participant)."""
@@ -516,8 +579,6 @@ class DdsGraph:
         """Wait until discovery is quiet (nothing new for ``quiet`` seconds: no endpoint,
         node, description or robot value; at most ``limit``, or until ``stopped()``): what a
         snapshot reports as every robot must give the other participants time to be found."""
-        import time
-
         start = last_change = time.monotonic()
         seen: tuple[Any, ...] = ()
         while time.monotonic() - start < limit and not stopped():
@@ -540,6 +601,7 @@ class DdsGraph:
         self._read_requests()
         self._read_answer()
         self._read_announcements()
+        self._reassert()
         publishers, subscribers, types, written = self._graph()
         params = self._params()
         return Observation(

@@ -15,7 +15,15 @@ import pytest
 
 from solver.identify.profile import Profile
 from solver.identify.readers.safexml import MAX_XML_BYTES
-from solver.live.sources.ros2 import DdsGraph, dds_type, ros_name, ros_type
+from solver.live.sources.ros2 import (
+    REASSERT_FIRST,
+    REASSERT_LIMIT,
+    DdsGraph,
+    Reassertion,
+    dds_type,
+    ros_name,
+    ros_type,
+)
 from solver.live.watcher import Watcher
 from solver.solving.solution import Solution
 from tests.live.conftest import Recorder
@@ -210,6 +218,88 @@ def test_a_forged_answer_is_reported_and_replaced_by_the_watchers_own(
         assert [d for d in watch.data() if d["event"] == "rival"] == []
     finally:
         operator.close()
+
+
+def test_the_answer_goes_out_again_at_doubling_gaps_while_another_writer_of_it_stays() -> None:
+    schedule = Reassertion.after_write(100.0)
+    assert schedule.at(100.5, own_newest=True, others=True) == (False, schedule)
+    again, schedule = schedule.at(100.0 + REASSERT_FIRST, own_newest=True, others=True)
+    assert again
+    assert schedule.gap == 2 * REASSERT_FIRST
+    gaps = []
+    for _ in range(10):
+        now = schedule.due
+        assert now is not None
+        again, schedule = schedule.at(now, own_newest=True, others=True)
+        assert again
+        gaps.append(schedule.gap)
+    assert gaps[-1] == REASSERT_LIMIT
+    assert gaps == sorted(gaps)
+
+
+def test_the_answer_is_not_written_again_once_no_one_else_writes_it_or_it_was_replaced() -> None:
+    due = 100.0 + REASSERT_FIRST
+    for own_newest, others in ((True, False), (False, True)):
+        again, schedule = Reassertion.after_write(100.0).at(
+            due, own_newest=own_newest, others=others
+        )
+        assert not again
+        assert schedule.due is None
+        assert schedule.at(1e9, own_newest=True, others=True) == (False, schedule)
+
+
+def test_a_station_that_got_a_forgery_after_the_watchers_answer_gets_the_answer_again(
+    domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution
+) -> None:
+    """DDS orders no two writers: a station the forger's writer matched late, or one that joins
+    after the forgery, can get the forged sample after the watcher's answer and keep it. While
+    the forger's writer stays, the watcher writes its answer again (1 s after it replaced the
+    forgery, then at doubling gaps)."""
+    domain.drone("/uav1")
+    watch = watch_ros2()
+    watch.wait_for(configured("/uav1", drone_configuration(solution)), "/uav1")
+    operator = Operator(domain.id)
+    forger = domain.robot()
+    late: Operator | None = None
+    try:
+        operator.activate("/uav1")
+        answer_for(operator, "/uav1")
+        mark = watch.mark()
+        forger.latch("/teleop_ui/ui_configuration", json.dumps({"configuration": 999}))
+        watch.wait_for(
+            lambda d: d["event"] == "warning" and d["where"] == "/teleop_ui/ui_configuration",
+            "the forged answer reported",
+            after=mark,
+        )
+        mine = watch.watcher.caller_id
+        operator.answer()
+        read = len(operator.answers)
+
+        def watchers_since() -> int:
+            operator.answer()
+            return sum(a.get("watcher") == mine for a in operator.answers[read:])
+
+        # Written again: the answer reaches this station twice more once the forgery was
+        # reported (its replacement may have come before; a sample each second or more apart).
+        wait_until(lambda: watchers_since() >= 2, TIMEOUT, "the answer written again")
+        # A station started now gets both kept samples, in either order, and ends with the
+        # watcher's.
+        late = Operator(domain.id)
+        wait_until(
+            lambda: (newest := late.answer()) is not None and newest.get("watcher") == mine,
+            TIMEOUT,
+            "the watcher's answer at a station started after the forgery",
+        )
+        assert late.answers[-1]["configuration"] == drone_configuration(solution)
+        # The forger gone, no one else writes the answer: the schedule ends.
+        forger.kill()
+        source = watch.watcher.source
+        assert isinstance(source, DdsGraph)
+        wait_until(lambda: source.reassertion.due is None, TIMEOUT, "the schedule's end")
+    finally:
+        for station in (operator, late):
+            if station is not None:
+                station.close()
 
 
 def test_the_active_motion_control_topic_selects_as_the_ros1_parameter_does(
