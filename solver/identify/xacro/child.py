@@ -17,8 +17,11 @@ compiles in the caller's process. It starts this module in a fresh interpreter (
    (:func:`~solver.identify.xacro.confine.restrict_reads`, Landlock), drops ctypes, and
    replaces ``open`` with a fence that reads regular files inside those folders only, each
    through the size cap and the safe-XML check; no module may be imported from then on;
-5. refuses ``$(env ...)`` / ``$(optenv ...)`` (the robot's author does not get to read the
-   operator's environment) and resolves ``$(find pkg)`` only from the package map it was given;
+5. never reads the environment (the robot's author does not get to read the operator's):
+   ``$(env NAME)`` takes the value of the xacro argument ``NAME`` (``--arg NAME:=VALUE``) and
+   is refused without one; ``$(optenv NAME DEFAULT)`` takes that argument, else its default
+   (as xacro does with the variable unset); ``$(find pkg)`` resolves only from the package map
+   it was given;
 6. only then reads the user's file and compiles it, answering with one JSON object on stdout:
    the URDF text and xacro's warnings, or an error message with the file and line it concerns.
 
@@ -113,11 +116,21 @@ def _compile(request: dict[str, Any], *, seccomp: bool) -> dict[str, Any]:
         import xacro
         from xacro import substitution_args
 
-        def refuse_env(name: str, *_: object, **__: object) -> str:
+        given: dict[str, str] = dict(request["args"])
+
+        def env(name: str) -> str:
+            """``$(env NAME)``: the value ``--arg NAME:=VALUE`` gives, never the environment."""
+            if name in given:
+                return given[name]
             raise Refused(
-                f"$(env {name}) / $(optenv {name}): environment lookups are refused; "
-                "pass the value with --arg NAME:=VALUE"
+                f"$(env {name}): environment lookups are refused; "
+                f"pass the value with --arg {name}:=VALUE"
             )
+
+        def optenv(name: str, default: str = "") -> str:
+            """``$(optenv NAME DEFAULT)``: ``--arg NAME:=VALUE``, else the default, as xacro
+            does with the variable unset (the environment is never read)."""
+            return given.get(name, default)
 
         def find(package: str) -> str:
             folder = packages.get(package)
@@ -125,10 +138,10 @@ def _compile(request: dict[str, Any], *, seccomp: bool) -> dict[str, Any]:
                 raise Refused(f"Package not found: {package}")
             return folder
 
-        substitution_args._eval_env = refuse_env
-        substitution_args._eval_optenv = refuse_env
+        substitution_args._eval_env = env
+        substitution_args._eval_optenv = optenv
         substitution_args._eval_find = find
-        substitution_args._eval_dict.update(env=refuse_env, optenv=refuse_env, find=find)
+        substitution_args._eval_dict.update(env=env, optenv=optenv, find=find)
         captured = io.StringIO()
         with contextlib.redirect_stderr(captured):
             xacro.init_stacks(source)

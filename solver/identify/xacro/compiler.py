@@ -13,8 +13,9 @@ ends with a located error.
 ``$(find pkg)`` resolves through the package map of :mod:`solver.identify.xacro.packages`; a
 package found nowhere is a located error naming it and where it was looked for. The child may
 read files only inside the description's own folder (or its package) and the packages of that
-map; ``$(env)`` and ``$(optenv)`` are refused. Mesh ``package://`` references are left as
-written: identification never opens a mesh.
+map; the environment is never read (``$(env NAME)`` is the xacro argument ``NAME`` or
+refused, ``$(optenv NAME DEFAULT)`` that argument or its default). Mesh ``package://``
+references are left as written: identification never opens a mesh.
 
 Not here: reading the compiled URDF (:mod:`solver.identify.readers.urdf`); the child's fence
 (:mod:`solver.identify.xacro.child`).

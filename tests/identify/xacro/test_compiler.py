@@ -353,11 +353,30 @@ def test_load_yaml_inside_the_package_is_read(tmp_path: Path) -> None:
     assert '<link name="from_yaml"/>' in compile_xacro(path, limits=FAST).text
 
 
-@pytest.mark.parametrize("lookup", ["$(env HOME)", "$(optenv PATH nothing)"])
-def test_environment_lookups_are_refused(lookup: str, tmp_path: Path) -> None:
+def test_the_environment_is_never_read(tmp_path: Path) -> None:
     path = tmp_path / "r.xacro"
-    path.write_text(robot(f'<link name="{lookup}"/>'))
+    path.write_text(robot('<link name="$(env HOME)"/>'))
     with pytest.raises(InputError, match="environment lookups are refused") as caught:
         compile_xacro(path, limits=FAST)
     assert "/root" not in str(caught.value)
-    assert "/usr/bin" not in str(caught.value)
+    assert "--arg HOME:=VALUE" in str(caught.value)
+
+
+def test_an_optional_environment_variable_takes_its_default_as_if_unset(tmp_path: Path) -> None:
+    """As xacro with the variable unset: PATH is set here, and not read."""
+    path = tmp_path / "r.xacro"
+    path.write_text(robot('<link name="$(optenv PATH no_path)"/><link name="$(optenv EMPTY)x"/>'))
+    text = compile_xacro(path, limits=FAST).text
+    assert '<link name="no_path"/>' in text
+    assert '<link name="x"/>' in text
+    assert "/usr/bin" not in text
+
+
+def test_an_argument_gives_an_environment_variable_its_value(tmp_path: Path) -> None:
+    path = tmp_path / "r.xacro"
+    path.write_text(
+        robot('<link name="$(env ROBOT_PREFIX)base"/><link name="$(optenv ARM none)"/>')
+    )
+    text = compile_xacro(path, args={"ROBOT_PREFIX": "left_", "ARM": "ur5"}, limits=FAST).text
+    assert '<link name="left_base"/>' in text
+    assert '<link name="ur5"/>' in text
