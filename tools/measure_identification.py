@@ -608,6 +608,13 @@ def parser() -> argparse.ArgumentParser:
         "around a description in its package",
     )
     found.add_argument(
+        "--rebuilt",
+        type=Path,
+        metavar="OUT",
+        help="the folder tools/rebuild_set_files.py made: each OUT/<set> as --files and "
+        "OUT/workspaces.tsv as --workspaces",
+    )
+    found.add_argument(
         "--profile",
         type=Path,
         help="an identification profile to measure instead of the shipped one "
@@ -628,6 +635,9 @@ def main(argv: list[str] | None = None) -> int:
     profile = load_profile(args.profile)
     rules = load_rules(default_rules_path())
 
+    if args.rebuilt is not None:
+        args.files += sorted(path for path in args.rebuilt.iterdir() if (path / "urdf").is_dir())
+        args.workspaces = args.workspaces or args.rebuilt / "workspaces.tsv"
     kept = read_workspaces(args.workspaces) if args.workspaces else {}
 
     def run(urdf: Path, srdf: Path | None, row: tuple[str, str]) -> Identification:

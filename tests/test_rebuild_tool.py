@@ -1,0 +1,238 @@
+"""tools/rebuild_set_files.py makes the sets' files again from the repositories their rows name."""
+
+from __future__ import annotations
+
+import csv
+import importlib.util
+import os
+import subprocess
+import sys
+from pathlib import Path
+from types import ModuleType
+
+from tests.identify.builders import manipulator
+
+ROOT = Path(__file__).resolve().parent.parent
+SCRIPT = ROOT / "tools" / "rebuild_set_files.py"
+
+PACKAGE = """<?xml version="1.0"?>
+<package format="3"><name>NAME</name><version>0.0.1</version>
+<description>d</description><maintainer email="a@b.c">a</maintainer><license>MIT</license>
+</package>
+"""
+XACRO = """<?xml version="1.0"?>
+<robot name="demo" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <xacro:arg name="arm_name" default="short"/>
+  <xacro:include filename="$(find demo_parts)/urdf/parts.xacro"/>
+  <link name="base_link"/>
+  <link name="$(arg arm_name)_link"/>
+  <xacro:wheel side="left"/>
+  <joint name="to_arm" type="revolute">
+    <parent link="base_link"/><child link="$(arg arm_name)_link"/>
+    <limit lower="-1" upper="1" effort="1" velocity="1"/>
+  </joint>
+</robot>
+"""
+PARTS = """<?xml version="1.0"?>
+<robot xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <xacro:macro name="wheel" params="side">
+    <link name="${side}_wheel"/>
+    <joint name="${side}_wheel_joint" type="continuous">
+      <parent link="base_link"/><child link="${side}_wheel"/><axis xyz="0 1 0"/>
+    </joint>
+  </xacro:macro>
+</robot>
+"""
+SRDF = (
+    '<?xml version="1.0"?><robot name="demo">'
+    '<group name="arm"><joint name="to_arm"/></group></robot>\n'
+)
+
+
+def load() -> ModuleType:
+    spec = importlib.util.spec_from_file_location("rebuild_set_files", SCRIPT)
+    assert spec is not None
+    assert spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = module  # its dataclasses look their module up
+    spec.loader.exec_module(module)
+    return module
+
+
+def git(folder: Path, *args: str) -> str:
+    done = subprocess.run(
+        ["git", "-C", str(folder), *args],
+        capture_output=True,
+        text=True,
+        check=True,
+        env={
+            **os.environ,
+            "GIT_AUTHOR_NAME": "t",
+            "GIT_AUTHOR_EMAIL": "t@t",
+            "GIT_COMMITTER_NAME": "t",
+            "GIT_COMMITTER_EMAIL": "t@t",
+        },
+    )
+    return done.stdout.strip()
+
+
+def committed(work: Path) -> str:
+    git(work, "init", "-q")
+    git(work, "add", ".")
+    git(work, "commit", "-q", "-m", "demo")
+    return git(work, "rev-parse", "HEAD")
+
+
+def mirrored_repository(mirror: Path) -> str:
+    """owner/demo under ``mirror`` as the workplace's fetch leaves it, and other/parts, whose
+    package its xacro finds though its rows never name it; owner/demo's commit."""
+    parts = mirror / "other+parts" / "repo"
+    (parts / "demo_parts" / "urdf").mkdir(parents=True)
+    (parts / "demo_parts" / "package.xml").write_text(
+        PACKAGE.replace("NAME", "demo_parts"), encoding="utf-8"
+    )
+    (parts / "demo_parts" / "urdf" / "parts.xacro").write_text(PARTS, encoding="utf-8")
+    committed(parts)
+    work = mirror / "owner+demo" / "repo"
+    (work / "pkg" / "urdf").mkdir(parents=True)
+    (work / "pkg" / "config").mkdir()
+    (work / "pkg" / "package.xml").write_text(
+        PACKAGE.replace("NAME", "demo_description"), encoding="utf-8"
+    )
+    (work / "pkg" / "urdf" / "demo.urdf.xacro").write_text(XACRO, encoding="utf-8")
+    (work / "pkg" / "urdf" / "arm.urdf").write_text(manipulator().text(), encoding="utf-8")
+    (work / "pkg" / "urdf" / "linked.urdf").symlink_to("arm.urdf")
+    (work / "pkg" / "config" / "demo.srdf").write_text(SRDF, encoding="utf-8")
+    return committed(work)
+
+
+def labelled_set(folder: Path, commit: str) -> None:
+    folder.mkdir(parents=True)
+    rows = [
+        {
+            "robot": "demo",
+            "file": "urdf/demo.urdf",
+            "srdf": "srdf/demo.srdf",
+            "source": f"github owner/demo@{commit[:8]} (MIT) pkg/urdf/demo.urdf.xacro "
+            "[xacro->urdf with arm_name:=long, as its launch passes; paths=.../x dropped; "
+            "SRDF verbatim copy of pkg/config/demo.srdf]",
+        },
+        {
+            "robot": "arm",
+            "file": "urdf/arm.urdf",
+            "srdf": "",
+            "source": f"https://github.com/owner/demo @{commit}, pkg/urdf/linked.urdf [plain]",
+            "kinematic_type": "Manipulator",
+            "family": "arm",
+        },
+        {"robot": "pypi", "file": "urdf/p.urdf", "srdf": "", "source": "PyPI example 1.0 p.urdf"},
+        {
+            "robot": "gone",
+            "file": "urdf/gone.urdf",
+            "srdf": "",
+            "source": f"github owner/demo@{commit[:8]} pkg/urdf/gone.urdf [plain URDF]",
+        },
+    ]
+    columns = ["robot", "file", "srdf", "source", "kinematic_type", "family", "sensors"]
+    columns += ["motion_controls", "motion_control_kinds", "sensor_tags"]
+    with (folder / "truth.csv").open("w", encoding="utf-8", newline="") as stream:
+        writer = csv.DictWriter(stream, columns, restval="")
+        writer.writeheader()
+        writer.writerows(rows)
+
+
+def rebuild(*args: str) -> subprocess.CompletedProcess[str]:
+    return subprocess.run(
+        [sys.executable, str(SCRIPT), *args],
+        cwd=ROOT,
+        env={**os.environ, "PYTHONPATH": str(ROOT)},
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+
+
+def test_a_source_names_the_repository_commit_file_arguments_and_srdf() -> None:
+    tool = load()
+    source = tool.parse_source(
+        "github a/b@0123abcd (BSD) src/b_description/urdf/b.urdf.xacro [xacro->urdf with "
+        "use_gazebo:=true prefix:=left_, kinematics:=.../x.yaml, as launch/x.launch.py; SRDF "
+        "b_moveit/config/b.srdf; $(find c_description) from github c/c@89abcdef]",
+        srdf=True,
+    )
+    assert source.repository == "a/b"
+    assert source.commit == "0123abcd"
+    assert source.path == "src/b_description/urdf/b.urdf.xacro"
+    assert source.args == (("use_gazebo", "true"), ("prefix", "left_"))
+    assert source.srdf == "b_moveit/config/b.srdf"
+    assert source.others == (("c/c", "89abcdef"),)
+    assert tool.parse_source("PyPI example-robot-data 6.0.0 robots/x.urdf", srdf=False) is None
+
+
+def test_rows_are_made_from_the_mirrored_commit_and_those_that_cannot_be_are_said(
+    tmp_path: Path,
+) -> None:
+    commit = mirrored_repository(tmp_path / "mirror")
+    labelled_set(tmp_path / "tools" / "fresh_set_1", commit)
+    out = tmp_path / "out"
+    done = rebuild(
+        "--mirror",
+        str(tmp_path / "mirror"),
+        "--out",
+        str(out),
+        "--set",
+        str(tmp_path / "tools" / "fresh_set_1"),
+    )
+    assert done.returncode == 1, done.stderr
+    made = (out / "fresh_set_1" / "urdf" / "demo.urdf").read_text(encoding="utf-8")
+    # The source's argument is passed, and $(find ...) resolved in the mirrored repository
+    # that has the package.
+    assert 'link name="long_link"' in made
+    assert 'joint name="left_wheel_joint" type="continuous"' in made
+    # A symbolic link to a file of the tree is that file.
+    assert (out / "fresh_set_1" / "srdf" / "demo.srdf").read_text(encoding="utf-8") == SRDF
+    assert (out / "fresh_set_1" / "urdf" / "arm.urdf").read_text(
+        encoding="utf-8"
+    ) == manipulator().text()
+    assert "fresh_set_1 pypi: not made: its source names no GitHub repository" in done.stderr
+    assert "fresh_set_1 gone: not made: " in done.stderr
+    assert "has no file pkg/urdf/gone.urdf" in done.stderr
+    report = (out / "report.tsv").read_text(encoding="utf-8").splitlines()
+    assert [line.split("\t")[2] for line in report[1:]] == ["yes", "yes", "no", "no"]
+    assert report[1].split("\t")[3] == "packages taken: demo_parts from other/parts"
+    tree = out / "trees" / f"owner+demo@{commit[:8]}" / "repo"
+    assert (out / "workspaces.tsv").read_text(encoding="utf-8").splitlines()[0] == (
+        f"fresh_set_1\tdemo\t{tree}\tpkg/urdf/demo.urdf.xacro"
+    )
+
+
+def test_the_repositories_to_bring_are_listed_once_each(tmp_path: Path) -> None:
+    labelled_set(tmp_path / "fresh_set_1", "0123abcd")
+    done = rebuild("--repos", "--set", str(tmp_path / "fresh_set_1"))
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.splitlines() == ["owner/demo"]
+
+
+def test_the_measure_tool_reads_the_files_made_with_rebuilt(tmp_path: Path) -> None:
+    commit = mirrored_repository(tmp_path / "mirror")
+    labelled = tmp_path / "tools" / "fresh_set_1"
+    labelled_set(labelled, commit)
+    out = tmp_path / "out"
+    rebuild("--mirror", str(tmp_path / "mirror"), "--out", str(out), "--set", str(labelled))
+    measure = [sys.executable, str(ROOT / "tools" / "measure_identification.py")]
+    done = subprocess.run(
+        [*measure, "--set", str(labelled), "--rebuilt", str(out)],
+        cwd=ROOT,
+        env={**os.environ, "PYTHONPATH": str(ROOT)},
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert done.returncode == 0, done.stderr
+    family = next(line for line in done.stdout.splitlines() if line.startswith("| arm |"))
+    # The rebuilt arm is measured (read right), not counted absent.
+    assert [cell.strip() for cell in family.strip("|").split("|")][3:6] == [
+        "1/1 (100%)",
+        "1/1 (100%)",
+        "0",
+    ]

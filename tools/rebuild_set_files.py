@@ -1,0 +1,381 @@
+"""Make the labelled sets' description files again from the repositories their rows name.
+
+Usage::
+
+    python tools/rebuild_set_files.py --repos                    # owner/name to bring, one a line
+    python tools/rebuild_set_files.py --mirror DIR --out OUT     # OUT/<set>/urdf/, srdf/, ...
+
+The rows of ``tools/identification_set``, ``tools/generalization_set`` and every
+``tools/fresh_set_N`` name where each robot's file came from (the ``source`` column), but the
+files of GitHub rows are not committed (the workplace's rule for fetched content: see
+``tools/identification_set/README.md``). They were made on a machine that is gone; this tool
+makes them again, the same way, so that ``tools/measure_identification.py`` measures the
+development part on any machine:
+
+* a row's source is read for the repository and commit (``github owner/name@commit`` or
+  ``https://github.com/owner/name @commit``), the file's path in it (the first ``.urdf``,
+  ``.xacro``, ``.urdf.xacro`` after them), the xacro arguments it names (``name:=value``), the
+  SRDF's path when the row has one, and the other repositories it names (their packages resolve
+  ``$(find ...)``);
+* ``DIR/owner+name/repo`` holds each repository as a git directory (the workplace's ``fetch``
+  leaves them so; a clone's ``.git`` is found too); the commit's tree is written out once
+  under ``OUT/trees/``;
+* a ``.urdf`` is copied; a ``.xacro`` is compiled with teleop-ui's own xacro sandbox
+  (:func:`solver.identify.xacro.compiler.compile_xacro`, the ``xacro`` extra) with those
+  arguments and every package of those trees on the package path. An SRDF likewise;
+* ``OUT/<set>/urdf/<file>`` (and ``srdf/``) are the row's files under the names its ``file``
+  and ``srdf`` columns give; ``OUT/workspaces.tsv`` says where each row's tree is
+  (``--workspaces`` of the measure tool: the controls its packages ship).
+
+A row not made (no repository in its source, no such commit or file, xacro that does not
+compile) is listed with why, on standard error, and the rest go on; exit 1 when any was not.
+The files made need not be byte for byte those the rows were labelled on (an argument the
+source only describes in words is not passed), so ``OUT/report.tsv`` lists every row.
+
+Then, for instance::
+
+    python tools/measure_identification.py --all --split $(for d in OUT/*/urdf; do
+        echo --files "${d%/urdf}"; done) --workspaces OUT/workspaces.tsv
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import re
+import subprocess
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+TOOLS = ROOT / "tools"
+SETS = ("identification_set", "generalization_set")
+
+REPOSITORY = re.compile(
+    r"github(?:\.com/|:\s*|\s+)([\w.-]+/[\w.-]+?)(?:\.git)?\s*@\s*([0-9a-f]{7,40})\b"
+)
+DESCRIPTION = re.compile(r"(?<![\w/.-])((?:[\w.+-]+/)*[\w.+-]+\.(?:urdf\.xacro|xacro|urdf))\b")
+SRDF = re.compile(r"(?<![\w/.-])((?:[\w.+-]+/)*[\w.+-]+\.srdf(?:\.xacro)?)\b")
+ARGUMENT = re.compile(r"(?<![\w$(])([A-Za-z_][\w-]*):=([^\s,;\])'\"]*)")
+# Placeholders the sources write in argument values: the repository's tree, the package's folder.
+PLACEHOLDERS = ("<repo>", "<fetched>", "<package>")
+MISSING_PACKAGE = re.compile(r"ROS package '([^']+)' not found")
+
+
+@dataclass(frozen=True, slots=True)
+class Source:
+    """Where one row's files came from, as its ``source`` column says."""
+
+    repository: str  # owner/name
+    commit: str
+    path: str  # the description's path in the repository
+    args: tuple[tuple[str, str], ...]
+    srdf: str | None
+    others: tuple[tuple[str, str], ...]  # other (repository, commit) the source names
+
+
+def parse_source(text: str, *, srdf: bool) -> Source | None:
+    """A row's :class:`Source`, or ``None`` when its text names no repository and file."""
+    found = list(REPOSITORY.finditer(text))
+    if not found:
+        return None
+    first = found[0]
+    rest = text[first.end() :]
+    description = DESCRIPTION.search(rest)
+    if description is None:
+        return None
+    args = tuple(
+        (name, value.rstrip(":."))
+        for name, value in ARGUMENT.findall(rest)
+        if value.rstrip(":.") and "..." not in value and "$(" not in value
+    )
+    srdf_path = None
+    if srdf:
+        match = SRDF.search(rest)
+        srdf_path = match.group(1) if match else None
+    others = tuple(
+        dict.fromkeys((m.group(1), m.group(2)) for m in found[1:] if m.group(1) != first.group(1))
+    )
+    return Source(
+        first.group(1),
+        first.group(2),
+        description.group(1),
+        tuple(dict(args).items()),
+        srdf_path,
+        others,
+    )
+
+
+def set_folders(tools: Path = TOOLS) -> list[Path]:
+    """The labelled sets whose rows this tool rebuilds, in a fixed order."""
+    fresh = sorted(
+        (int(path.name.removeprefix("fresh_set_")), path)
+        for path in tools.glob("fresh_set_*")
+        if path.name.removeprefix("fresh_set_").isdigit()
+    )
+    return [tools / name for name in SETS] + [path for _, path in fresh]
+
+
+def rows(folder: Path) -> list[dict[str, str]]:
+    with (folder / "truth.csv").open(encoding="utf-8", newline="") as stream:
+        return list(csv.DictReader(stream))
+
+
+def git_directory(mirror: Path, repository: str) -> Path | None:
+    """The git directory of ``repository`` under ``mirror`` (``owner+name/repo[/.git]``)."""
+    base = mirror / repository.replace("/", "+") / "repo"
+    for candidate in (base / ".git", base):
+        if (candidate / "HEAD").is_file():
+            return candidate
+    return None
+
+
+class Trees:
+    """Commits' trees written out once each under ``folder``, and which mirrored repository
+    holds a ROS package of a given name (at its newest commit)."""
+
+    def __init__(self, mirror: Path, folder: Path) -> None:
+        self.mirror = mirror
+        self.folder = folder
+        self._packages: dict[str, str] | None = None
+
+    def tree(self, repository: str, commit: str) -> Path:
+        """The folder holding ``repository`` at ``commit``; :class:`LookupError` if it cannot."""
+        git = git_directory(self.mirror, repository)
+        if git is None:
+            raise LookupError(f"{repository} is not under {self.mirror}")
+        # A folder of its own above each tree: the xacro sandbox finds the packages beside a
+        # package at a tree's root, and must not find another tree's.
+        where = self.folder / f"{repository.replace('/', '+')}@{commit}" / "repo"
+        if where.is_dir():
+            return where
+        partial = where.with_name("repo.part")
+        _write_tree(git, commit, partial)
+        partial.rename(where)
+        return where
+
+    def holder(self, package: str) -> str | None:
+        """The mirrored repository (owner/name) with a ``package.xml`` named ``package``."""
+        if self._packages is None:
+            # (name, depth of its package.xml, repository): the shallowest copy is the
+            # package's own repository, not one that vendors it.
+            found = sorted(
+                (name, depth, folder.name.replace("+", "/", 1))
+                for folder in self.mirror.iterdir()
+                if (git := git_directory(self.mirror, folder.name.replace("+", "/", 1)))
+                for name, depth in _package_names(git)
+            )
+            self._packages = {}
+            for name, _, repository in found:
+                self._packages.setdefault(name, repository)
+        return self._packages.get(package)
+
+
+def _package_names(git: Path) -> list[tuple[str, int]]:
+    """The names in the ``package.xml`` files of a git directory's newest commit, each with
+    how many folders down its file is."""
+    listing = subprocess.run(
+        ["git", "--git-dir", str(git), "ls-tree", "-r", "HEAD"],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    entries = [
+        (line.split()[2], line.split("\t", 1)[1].count("/"))
+        for line in listing.stdout.splitlines()
+        if line.endswith("/package.xml") or line.endswith("\tpackage.xml")
+    ]
+    if not entries:
+        return []
+    batch = subprocess.run(
+        ["git", "--git-dir", str(git), "cat-file", "--batch"],
+        input="".join(f"{sha}\n" for sha, _ in entries),
+        capture_output=True,
+        text=True,
+        errors="replace",
+        check=False,
+    )
+    # One answer per file, in order: its header line, then its content.
+    answers = re.split(r"^[0-9a-f]{40} (?:blob \d+|missing)$", batch.stdout, flags=re.M)[1:]
+    names = [re.search(r"<name>\s*([\w.-]+)\s*</name>", answer) for answer in answers]
+    return [
+        (name.group(1), depth) for name, (_, depth) in zip(names, entries, strict=False) if name
+    ]
+
+
+def _write_tree(git: Path, commit: str, folder: Path) -> None:
+    """The files of ``commit`` under ``folder``; blobs the mirror lacks (its largest files,
+    meshes mostly) are left out, and a symbolic link to a file of the tree is a copy of it."""
+    listing = subprocess.run(
+        ["git", "--git-dir", str(git), "ls-tree", "-r", "-z", commit],
+        capture_output=True,
+        check=False,
+    )
+    if listing.returncode != 0:
+        message = listing.stderr.decode(errors="replace").strip().splitlines()
+        raise LookupError(f"{git}: {message[-1] if message else 'no tree'} ({commit})")
+    blobs: list[tuple[str, str, bool]] = []
+    for entry in listing.stdout.split(b"\0"):
+        if not entry:
+            continue
+        meta, name = entry.split(b"\t", 1)
+        mode, kind, sha = meta.decode().split()
+        if kind == "blob":
+            blobs.append((sha, name.decode(errors="replace"), mode == "120000"))
+    batch = subprocess.run(
+        ["git", "--git-dir", str(git), "cat-file", "--batch"],
+        input="".join(f"{sha}\n" for sha, _, _ in blobs).encode(),
+        capture_output=True,
+        check=True,
+    )
+    data, at = batch.stdout, 0
+    root = folder.resolve()
+    links: list[tuple[Path, Path]] = []
+    for _, path, link in blobs:
+        end = data.index(b"\n", at)
+        header = data[at:end].split()
+        at = end + 1
+        if header[-1] == b"missing":
+            continue
+        size = int(header[2])
+        content = data[at : at + size]
+        at += size + 1
+        target = (root / path).resolve()
+        if root not in target.parents:  # no path leaves the folder
+            continue
+        if link:
+            links.append((target, (target.parent / content.decode(errors="replace")).resolve()))
+            continue
+        target.parent.mkdir(parents=True, exist_ok=True)
+        target.write_bytes(content)
+    for target, linked in links:
+        if root in linked.parents and linked.is_file():
+            target.parent.mkdir(parents=True, exist_ok=True)
+            target.write_bytes(linked.read_bytes())
+
+
+def make(
+    source: Source, trees: Trees, urdf_out: Path, srdf_out: Path | None
+) -> tuple[Path, list[str]]:
+    """Write the row's files; the folder of its main tree (its workspace) and the packages
+    taken from repositories its source does not name."""
+    tree = trees.tree(source.repository, source.commit)
+    roots = [tree, *(trees.tree(name, commit) for name, commit in source.others)]
+    taken: list[str] = []
+    for path, out in ((source.path, urdf_out), (source.srdf, srdf_out)):
+        if path is None or out is None:
+            continue
+        file = tree / path
+        if not file.is_file():
+            raise LookupError(f"{source.repository}@{source.commit} has no file {path}")
+        out.parent.mkdir(parents=True, exist_ok=True)
+        if path.endswith(".xacro"):
+            out.write_text(_compiled(file, source, trees, roots, taken), encoding="utf-8")
+        else:
+            out.write_bytes(file.read_bytes())
+    return tree, taken
+
+
+def _compiled(file: Path, source: Source, trees: Trees, roots: list[Path], taken: list[str]) -> str:
+    """``file`` through teleop-ui's xacro sandbox with the source's arguments; a package no
+    tree in ``roots`` has is taken from the mirrored repository that has it (its newest commit),
+    as the labellers took a package their source did not name (said in ``taken``)."""
+    from solver.errors import InputError
+    from solver.identify.xacro.compiler import compile_xacro
+    from solver.identify.xacro.packages import own_package_root
+
+    places = {"<repo>": str(roots[0]), "<fetched>": str(roots[0])}
+    places["<package>"] = str(own_package_root(file))
+    args = {name: _placed(value, places) for name, value in source.args}
+    for _ in range(8):
+        try:
+            return compile_xacro(file, args=args, package_path=roots).text
+        except InputError as error:
+            missing = MISSING_PACKAGE.search(str(error))
+            package = missing.group(1) if missing else ""
+            holder = trees.holder(package) if package else None
+            if holder is None:
+                raise
+            added = trees.tree(holder, "HEAD")
+            if added in roots:
+                raise
+            roots = [*roots, added]
+            taken.append(f"{package} from {holder}")
+    raise LookupError(f"{file}: more than 8 packages from other repositories")
+
+
+def _placed(value: str, places: dict[str, str]) -> str:
+    for placeholder in PLACEHOLDERS:
+        value = value.replace(placeholder, places[placeholder])
+    return value
+
+
+def repositories(folders: list[Path]) -> list[str]:
+    """Every repository the sets' rows name, in order of first mention."""
+    found: dict[str, None] = {}
+    for folder in folders:
+        for row in rows(folder):
+            for match in REPOSITORY.finditer(row["source"]):
+                found.setdefault(match.group(1))
+    return list(found)
+
+
+def rebuild(folders: list[Path], mirror: Path, out: Path) -> int:
+    """Make every row's files under ``out``; the number of rows not made."""
+    trees = Trees(mirror, out / "trees")
+    report = ["set\trobot\tmade\twhy (or the packages taken from other repositories)"]
+    workspaces = []
+    missed = 0
+    for folder in folders:
+        for row in rows(folder):
+            name, robot = folder.name, row["robot"]
+            srdf_column = row.get("srdf", "").strip()
+            source = parse_source(row["source"], srdf=bool(srdf_column))
+            why = note = ""
+            if source is None:
+                why = "its source names no GitHub repository, commit and file"
+            elif srdf_column and source.srdf is None:
+                why = "its source names no SRDF file"
+            else:
+                srdf_out = out / name / srdf_column if srdf_column else None
+                try:
+                    tree, taken = make(source, trees, out / name / row["file"], srdf_out)
+                except (LookupError, OSError, ValueError) as error:
+                    why = str(error).splitlines()[0]
+                else:
+                    workspaces.append(f"{name}\t{robot}\t{tree}\t{source.path}")
+                    note = "packages taken: " + ", ".join(taken) if taken else ""
+            if why:
+                missed += 1
+                print(f"{name} {robot}: not made: {why}", file=sys.stderr)
+            report.append(f"{name}\t{robot}\t{'no' if why else 'yes'}\t{why or note}")
+    out.mkdir(parents=True, exist_ok=True)
+    (out / "workspaces.tsv").write_text("\n".join(workspaces) + "\n", encoding="utf-8")
+    (out / "report.tsv").write_text("\n".join(report) + "\n", encoding="utf-8")
+    return missed
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--repos", action="store_true", help="list the repositories to bring")
+    parser.add_argument("--mirror", type=Path, help="where the repositories are (owner+name/repo)")
+    parser.add_argument("--out", type=Path, help="where the files go")
+    parser.add_argument(
+        "--set", type=Path, action="append", default=[], help="one set only (repeat for several)"
+    )
+    args = parser.parse_args(argv)
+    folders = args.set or set_folders()
+    if args.repos:
+        print("\n".join(repositories(folders)))
+        return 0
+    if args.mirror is None or args.out is None:
+        parser.error("--mirror and --out are needed to make the files (or --repos)")
+    missed = rebuild(folders, args.mirror, args.out)
+    print(f"{missed} rows not made; see {args.out / 'report.tsv'}", file=sys.stderr)
+    return 1 if missed else 0
+
+
+if __name__ == "__main__":
+    sys.path.insert(0, str(ROOT))
+    sys.exit(main())
