@@ -191,6 +191,8 @@ class _Fence:
         resolved = path.resolve()
         if not any(resolved.is_relative_to(root) for root in self.roots):
             raise Refused(f"{os.fspath(file)}: outside the description's package folders; refused")
+        if not resolved.exists():
+            raise Refused(f"{os.fspath(file)}: no such file")
         if not resolved.is_file():
             raise Refused(f"{os.fspath(file)}: not a regular file; refused")
         return resolved

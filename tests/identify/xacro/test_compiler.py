@@ -380,3 +380,24 @@ def test_an_argument_gives_an_environment_variable_its_value(tmp_path: Path) -> 
     text = compile_xacro(path, args={"ROBOT_PREFIX": "left_", "ARM": "ur5"}, limits=FAST).text
     assert '<link name="left_base"/>' in text
     assert '<link name="ur5"/>' in text
+
+
+def test_an_included_file_that_does_not_exist_is_said_to_be_missing(tmp_path: Path) -> None:
+    path = tmp_path / "r.xacro"
+    path.write_text(robot('<xacro:include filename="parts.xacro"/>'))
+    with pytest.raises(InputError, match=r"parts\.xacro: no such file") as caught:
+        compile_xacro(path, limits=FAST)
+    assert "not a regular file" not in str(caught.value)
+
+
+def test_a_file_that_is_no_regular_file_is_refused(tmp_path: Path) -> None:
+    os.mkfifo(tmp_path / "config.yaml")  # a read would wait for a writer for ever
+    path = tmp_path / "r.xacro"
+    path.write_text(
+        robot(
+            '<xacro:property name="d" value="${xacro.load_yaml(\'config.yaml\')}"/>'
+            '<link name="${d}"/>'
+        )
+    )
+    with pytest.raises(InputError, match=r"config\.yaml: not a regular file; refused"):
+        compile_xacro(path, limits=FAST)
