@@ -166,7 +166,26 @@ def test_a_source_names_the_repository_commit_file_arguments_and_srdf() -> None:
     assert source.args == (("use_gazebo", "true"), ("prefix", "left_"))
     assert source.srdf == "b_moveit/config/b.srdf"
     assert source.others == (("c/c", "89abcdef"),)
+    assert source.xacro
     assert tool.parse_source("PyPI example-robot-data 6.0.0 robots/x.urdf", srdf=False) is None
+
+
+def test_a_file_xacro_expands_under_another_name_and_an_environment_it_sets_are_read() -> None:
+    tool = load()
+    source = tool.parse_source(
+        "github a/b@0123abcd rotors/urdf/generic.gazebo [xacro->urdf, mav_name:=iris; "
+        "environment unset except SPOT_ARM=1: the MIT licence]",
+        srdf=False,
+    )
+    assert source.path == "rotors/urdf/generic.gazebo"
+    assert source.xacro
+    assert source.args == (("mav_name", "iris"), ("SPOT_ARM", "1"))
+    plain = tool.parse_source("github a/b@0123abcd urdf/b.urdf [plain URDF, not xacro]", srdf=False)
+    assert not plain.xacro
+    expanded = tool.parse_source(
+        "github a/b@0123abcd urdf/b.urdf [xacro->urdf, no args]", srdf=False
+    )
+    assert expanded.xacro
 
 
 def test_rows_are_made_from_the_mirrored_commit_and_those_that_cannot_be_are_said(
@@ -204,6 +223,19 @@ def test_rows_are_made_from_the_mirrored_commit_and_those_that_cannot_be_are_sai
     assert (out / "workspaces.tsv").read_text(encoding="utf-8").splitlines()[0] == (
         f"fresh_set_1\tdemo\t{tree}\tpkg/urdf/demo.urdf.xacro"
     )
+
+
+def test_a_row_not_made_keeps_no_file_of_an_earlier_run(tmp_path: Path) -> None:
+    commit = mirrored_repository(tmp_path / "mirror")
+    labelled = tmp_path / "tools" / "fresh_set_1"
+    labelled_set(labelled, commit)
+    out = tmp_path / "out"
+    stale = out / "fresh_set_1" / "urdf" / "gone.urdf"
+    stale.parent.mkdir(parents=True)
+    stale.write_text("<robot name='stale'/>", encoding="utf-8")
+    rebuild("--mirror", str(tmp_path / "mirror"), "--out", str(out), "--set", str(labelled))
+    assert not stale.exists()
+    assert (out / "fresh_set_1" / "urdf" / "demo.urdf").is_file()
 
 
 def test_the_repositories_to_bring_are_listed_once_each(tmp_path: Path) -> None:

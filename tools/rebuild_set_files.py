@@ -55,9 +55,13 @@ SETS = ("identification_set", "generalization_set")
 REPOSITORY = re.compile(
     r"github(?:\.com/|:\s*|\s+)([\w.-]+/[\w.-]+?)(?:\.git)?\s*@\s*([0-9a-f]{7,40})\b"
 )
-DESCRIPTION = re.compile(r"(?<![\w/.-])((?:[\w.+-]+/)*[\w.+-]+\.(?:urdf\.xacro|xacro|urdf))\b")
+DESCRIPTION = re.compile(
+    r"(?<![\w/.-])((?:[\w.+-]+/)*[\w.+-]+\.(?:urdf\.xacro|xacro|urdf|gazebo))\b"
+)
 SRDF = re.compile(r"(?<![\w/.-])((?:[\w.+-]+/)*[\w.+-]+\.srdf(?:\.xacro)?)\b")
 ARGUMENT = re.compile(r"(?<![\w$(])([A-Za-z_][\w-]*):=([^\s,;\])'\"]*)")
+# An environment variable a source sets (``SPOT_ARM=1``): what $(optenv SPOT_ARM) reads.
+ENVIRONMENT = re.compile(r"(?<![\w$(=])([A-Z][A-Z0-9_]*)=(?!=)([^\s,;\])'\"]+)")
 # Placeholders the sources write in argument values: the repository's tree, the package's folder.
 PLACEHOLDERS = ("<repo>", "<fetched>", "<package>")
 MISSING_PACKAGE = re.compile(r"ROS package '([^']+)' not found")
@@ -70,6 +74,7 @@ class Source:
     repository: str  # owner/name
     commit: str
     path: str  # the description's path in the repository
+    xacro: bool  # compiled (a .xacro, or another name the source says xacro expands)
     args: tuple[tuple[str, str], ...]
     srdf: str | None
     others: tuple[tuple[str, str], ...]  # other (repository, commit) the source names
@@ -87,7 +92,7 @@ def parse_source(text: str, *, srdf: bool) -> Source | None:
         return None
     args = tuple(
         (name, value.rstrip(":."))
-        for name, value in ARGUMENT.findall(rest)
+        for name, value in (*ARGUMENT.findall(rest), *ENVIRONMENT.findall(rest))
         if value.rstrip(":.") and "..." not in value and "$(" not in value
     )
     srdf_path = None
@@ -97,10 +102,15 @@ def parse_source(text: str, *, srdf: bool) -> Source | None:
     others = tuple(
         dict.fromkeys((m.group(1), m.group(2)) for m in found[1:] if m.group(1) != first.group(1))
     )
+    path = description.group(1)
+    # How it was made is said right after the path: "[xacro->urdf ...]", "[plain URDF ...]".
+    how = rest[description.end() : description.end() + 40]
+    xacro = path.endswith(".xacro") or ("xacro" in how and "plain" not in how)
     return Source(
         first.group(1),
         first.group(2),
-        description.group(1),
+        path,
+        xacro,
         tuple(dict(args).items()),
         srdf_path,
         others,
@@ -263,14 +273,17 @@ def make(
     tree = trees.tree(source.repository, source.commit)
     roots = [tree, *(trees.tree(name, commit) for name, commit in source.others)]
     taken: list[str] = []
-    for path, out in ((source.path, urdf_out), (source.srdf, srdf_out)):
+    for path, out, xacro in (
+        (source.path, urdf_out, source.xacro),
+        (source.srdf, srdf_out, (source.srdf or "").endswith(".xacro")),
+    ):
         if path is None or out is None:
             continue
         file = tree / path
         if not file.is_file():
             raise LookupError(f"{source.repository}@{source.commit} has no file {path}")
         out.parent.mkdir(parents=True, exist_ok=True)
-        if path.endswith(".xacro"):
+        if xacro:
             out.write_text(_compiled(file, source, trees, roots, taken), encoding="utf-8")
         else:
             out.write_bytes(file.read_bytes())
@@ -333,6 +346,9 @@ def rebuild(folders: list[Path], mirror: Path, out: Path) -> int:
             srdf_column = row.get("srdf", "").strip()
             source = parse_source(row["source"], srdf=bool(srdf_column))
             why = note = ""
+            outputs = [out / name / row["file"], *([out / name / srdf_column] * bool(srdf_column))]
+            for stale in outputs:  # a row not made now keeps no file of an earlier run
+                stale.unlink(missing_ok=True)
             if source is None:
                 why = "its source names no GitHub repository, commit and file"
             elif srdf_column and source.srdf is None:
