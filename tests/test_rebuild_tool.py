@@ -101,7 +101,9 @@ def mirrored_repository(mirror: Path) -> str:
     )
     (work / "pkg" / "urdf" / "demo.urdf.xacro").write_text(XACRO, encoding="utf-8")
     (work / "pkg" / "urdf" / "arm.urdf").write_text(manipulator().text(), encoding="utf-8")
-    (work / "pkg" / "urdf" / "linked.urdf").symlink_to("arm.urdf")
+    # A link to a link (listed before it) to a file.
+    (work / "pkg" / "urdf" / "a_linked.urdf").symlink_to("z_link.urdf")
+    (work / "pkg" / "urdf" / "z_link.urdf").symlink_to("arm.urdf")
     (work / "pkg" / "config" / "demo.srdf").write_text(SRDF, encoding="utf-8")
     return committed(work)
 
@@ -121,7 +123,7 @@ def labelled_set(folder: Path, commit: str) -> None:
             "robot": "arm",
             "file": "urdf/arm.urdf",
             "srdf": "",
-            "source": f"https://github.com/owner/demo @{commit}, pkg/urdf/linked.urdf [plain]",
+            "source": f"https://github.com/owner/demo @{commit}, pkg/urdf/a_linked.urdf [plain]",
             "kinematic_type": "Manipulator",
             "family": "arm",
         },
@@ -155,15 +157,17 @@ def rebuild(*args: str) -> subprocess.CompletedProcess[str]:
 def test_a_source_names_the_repository_commit_file_arguments_and_srdf() -> None:
     tool = load()
     source = tool.parse_source(
-        "github a/b@0123abcd (BSD) src/b_description/urdf/b.urdf.xacro [xacro->urdf with "
-        "use_gazebo:=true prefix:=left_, kinematics:=.../x.yaml, as launch/x.launch.py; SRDF "
-        "b_moveit/config/b.srdf; $(find c_description) from github c/c@89abcdef]",
+        "github a/b@0123abcd (BSD, package.xml) src/b_description/urdf/b.urdf.xacro [xacro->urdf "
+        "with use_gazebo:=true prefix:=left_ imu:='1 2 3', kinematics:=.../x.yaml, as "
+        "launch/x.launch.py; SRDF b_moveit/config/b.srdf; $(find c_description) from github "
+        "c/c@89abcdef; use_gazebo:=false would drop the plugins]",
         srdf=True,
     )
     assert source.repository == "a/b"
     assert source.commit == "0123abcd"
     assert source.path == "src/b_description/urdf/b.urdf.xacro"
-    assert source.args == (("use_gazebo", "true"), ("prefix", "left_"))
+    # The recipe's values: the first of each name, quoted ones whole.
+    assert source.args == (("use_gazebo", "true"), ("prefix", "left_"), ("imu", "1 2 3"))
     assert source.srdf == "b_moveit/config/b.srdf"
     assert source.others == (("c/c", "89abcdef"),)
     assert source.xacro
@@ -180,6 +184,10 @@ def test_a_file_xacro_expands_under_another_name_and_an_environment_it_sets_are_
     assert source.path == "rotors/urdf/generic.gazebo"
     assert source.xacro
     assert source.args == (("mav_name", "iris"), ("SPOT_ARM", "1"))
+    upper = tool.parse_source(
+        "github a/b@0123abcd (manifest.xml says BSD) robots/B.URDF [plain URDF]", srdf=False
+    )
+    assert upper.path == "robots/B.URDF"
     plain = tool.parse_source("github a/b@0123abcd urdf/b.urdf [plain URDF, not xacro]", srdf=False)
     assert not plain.xacro
     expanded = tool.parse_source(
@@ -236,6 +244,36 @@ def test_a_row_not_made_keeps_no_file_of_an_earlier_run(tmp_path: Path) -> None:
     rebuild("--mirror", str(tmp_path / "mirror"), "--out", str(out), "--set", str(labelled))
     assert not stale.exists()
     assert (out / "fresh_set_1" / "urdf" / "demo.urdf").is_file()
+
+
+def test_one_set_made_again_keeps_the_other_sets_lines(tmp_path: Path) -> None:
+    commit = mirrored_repository(tmp_path / "mirror")
+    first, second = tmp_path / "tools" / "fresh_set_1", tmp_path / "tools" / "fresh_set_2"
+    labelled_set(first, commit)
+    labelled_set(second, commit)
+    out = tmp_path / "out"
+    for labelled in (first, second):
+        rebuild("--mirror", str(tmp_path / "mirror"), "--out", str(out), "--set", str(labelled))
+    rebuild("--mirror", str(tmp_path / "mirror"), "--out", str(out), "--set", str(first))
+    lines = (out / "workspaces.tsv").read_text(encoding="utf-8").splitlines()
+    assert sorted(line.split("\t")[:2] for line in lines) == [
+        ["fresh_set_1", "arm"],
+        ["fresh_set_1", "demo"],
+        ["fresh_set_2", "arm"],
+        ["fresh_set_2", "demo"],
+    ]
+    report = (out / "report.tsv").read_text(encoding="utf-8").splitlines()
+    assert len(report) == 1 + 2 * 4
+    assert report[0].startswith("set\trobot\tmade")
+
+
+def test_rows_that_cannot_be_made_here_are_listed_and_the_run_succeeds(tmp_path: Path) -> None:
+    folder = tmp_path / "fresh_set_1"
+    labelled_set(folder, "0123abcd")  # owner/demo is not mirrored: nothing could be made
+    done = rebuild("--mirror", str(tmp_path), "--out", str(tmp_path / "out"), "--set", str(folder))
+    assert done.returncode == 0, done.stderr
+    assert "fresh_set_1 demo: not made: owner/demo is not under" in done.stderr
+    assert "4 rows not made, 0 of them with their repository here" in done.stderr
 
 
 def test_the_repositories_to_bring_are_listed_once_each(tmp_path: Path) -> None:

@@ -28,7 +28,9 @@ development part on any machine:
   (``--workspaces`` of the measure tool: the controls its packages ship).
 
 A row not made (no repository in its source, no such commit or file, xacro that does not
-compile) is listed with why, on standard error, and the rest go on; exit 1 when any was not.
+compile) is listed with why, on standard error, and the rest go on; exit 1 when a row whose
+repository is under the mirror was not made (a row whose repository is not there is only
+listed). Running one ``--set`` keeps the other sets' lines of the two ``.tsv`` files.
 The files made need not be byte for byte those the rows were labelled on (an argument the
 source only describes in words is not passed), so ``OUT/report.tsv`` lists every row.
 
@@ -43,8 +45,11 @@ from __future__ import annotations
 import argparse
 import csv
 import re
+import shutil
 import subprocess
 import sys
+import tempfile
+from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -56,10 +61,14 @@ REPOSITORY = re.compile(
     r"github(?:\.com/|:\s*|\s+)([\w.-]+/[\w.-]+?)(?:\.git)?\s*@\s*([0-9a-f]{7,40})\b"
 )
 DESCRIPTION = re.compile(
-    r"(?<![\w/.-])((?:[\w.+-]+/)*[\w.+-]+\.(?:urdf\.xacro|xacro|urdf|gazebo))\b"
+    r"(?<![\w/.-])((?:[\w.+-]+/)*[\w.+-]+\.(?:urdf\.xacro|xacro|urdf|gazebo|xml))\b",
+    re.IGNORECASE,
 )
+# XML files a source names that are never the description.
+NOT_DESCRIPTIONS = ("package.xml", "manifest.xml", "launch.xml")
 SRDF = re.compile(r"(?<![\w/.-])((?:[\w.+-]+/)*[\w.+-]+\.srdf(?:\.xacro)?)\b")
-ARGUMENT = re.compile(r"(?<![\w$(])([A-Za-z_][\w-]*):=([^\s,;\])'\"]*)")
+# name:=value, name:='a b' or name:="a b".
+ARGUMENT = re.compile(r"(?<![\w$(])([A-Za-z_][\w-]*):=(?:'([^']*)'|\"([^\"]*)\"|([^\s,;\])'\"]*))")
 # An environment variable a source sets (``SPOT_ARM=1``): what $(optenv SPOT_ARM) reads.
 ENVIRONMENT = re.compile(r"(?<![\w$(=])([A-Z][A-Z0-9_]*)=(?!=)([^\s,;\])'\"]+)")
 # Placeholders the sources write in argument values: the repository's tree, the package's folder.
@@ -87,14 +96,25 @@ def parse_source(text: str, *, srdf: bool) -> Source | None:
         return None
     first = found[0]
     rest = text[first.end() :]
-    description = DESCRIPTION.search(rest)
+    description = next(
+        (
+            match
+            for match in DESCRIPTION.finditer(rest)
+            if not match.group(1).lower().endswith(NOT_DESCRIPTIONS)
+        ),
+        None,
+    )
     if description is None:
         return None
-    args = tuple(
-        (name, value.rstrip(":."))
-        for name, value in (*ARGUMENT.findall(rest), *ENVIRONMENT.findall(rest))
-        if value.rstrip(":.") and "..." not in value and "$(" not in value
-    )
+    # The recipe's own arguments come first; the same name later is prose ("own:=false would
+    # give ..."): the first value of each name is kept.
+    args: dict[str, str] = {}
+    for name, quoted, double, bare in ARGUMENT.findall(rest):
+        value = quoted or double or bare.rstrip(":.")
+        if (quoted or double or value) and not any(t in value for t in ("...", "$(", "${")):
+            args.setdefault(name, value)
+    for name, value in ENVIRONMENT.findall(rest):
+        args.setdefault(name, value.rstrip(":."))
     srdf_path = None
     if srdf:
         match = SRDF.search(rest)
@@ -111,7 +131,7 @@ def parse_source(text: str, *, srdf: bool) -> Source | None:
         first.group(2),
         path,
         xacro,
-        tuple(dict(args).items()),
+        tuple(args.items()),
         srdf_path,
         others,
     )
@@ -145,124 +165,136 @@ class Trees:
     """Commits' trees written out once each under ``folder``, and which mirrored repository
     holds a ROS package of a given name (at its newest commit)."""
 
-    def __init__(self, mirror: Path, folder: Path) -> None:
+    def __init__(self, mirror: Path, folder: Path, named: frozenset[str] = frozenset()) -> None:
         self.mirror = mirror
         self.folder = folder
+        self.named = named  # repositories the sets name (lower case): preferred holders
         self._packages: dict[str, str] | None = None
 
     def tree(self, repository: str, commit: str) -> Path:
-        """The folder holding ``repository`` at ``commit``; :class:`LookupError` if it cannot."""
+        """The folder holding ``repository`` at ``commit`` (``HEAD``: its newest commit, named
+        by its hash); :class:`LookupError` if it cannot be had."""
         git = git_directory(self.mirror, repository)
         if git is None:
             raise LookupError(f"{repository} is not under {self.mirror}")
+        if commit == "HEAD":
+            commit = _git(git, "rev-parse", "HEAD").decode().strip()[:12]
         # A folder of its own above each tree: the xacro sandbox finds the packages beside a
         # package at a tree's root, and must not find another tree's.
         where = self.folder / f"{repository.replace('/', '+')}@{commit}" / "repo"
         if where.is_dir():
             return where
         partial = where.with_name("repo.part")
+        shutil.rmtree(partial, ignore_errors=True)
         _write_tree(git, commit, partial)
         partial.rename(where)
         return where
 
     def holder(self, package: str) -> str | None:
-        """The mirrored repository (owner/name) with a ``package.xml`` named ``package``."""
+        """The mirrored repository (owner/name) with a ``package.xml`` named ``package``: the
+        shallowest copy (the package's own repository, not one that vendors it deeper down),
+        then one the sets name, then by name."""
         if self._packages is None:
-            # (name, depth of its package.xml, repository): the shallowest copy is the
-            # package's own repository, not one that vendors it.
             found = sorted(
-                (name, depth, folder.name.replace("+", "/", 1))
-                for folder in self.mirror.iterdir()
-                if (git := git_directory(self.mirror, folder.name.replace("+", "/", 1)))
+                (name, depth, repository.lower() not in self.named, repository)
+                for folder in sorted(self.mirror.iterdir())
+                if (git := git_directory(self.mirror, repository := _repository(folder)))
                 for name, depth in _package_names(git)
             )
             self._packages = {}
-            for name, _, repository in found:
+            for name, _, _, repository in found:
                 self._packages.setdefault(name, repository)
         return self._packages.get(package)
+
+
+def _repository(folder: Path) -> str:
+    """owner/name of a mirror's folder ``owner+name``."""
+    return folder.name.replace("+", "/", 1)
+
+
+def _git(git: Path, *args: str) -> bytes:
+    """A git command's output; :class:`LookupError` with git's last word when it fails."""
+    done = subprocess.run(["git", "--git-dir", str(git), *args], capture_output=True, check=False)
+    if done.returncode != 0:
+        message = done.stderr.decode(errors="replace").strip().splitlines()
+        raise LookupError(f"{git}: {message[-1] if message else 'git failed'} ({' '.join(args)})")
+    return done.stdout
+
+
+def _blobs(git: Path, shas: list[str]) -> Iterator[bytes | None]:
+    """Each blob's content in order (``None``: the mirror lacks it), read one at a time."""
+    with tempfile.TemporaryFile() as wanted:
+        wanted.write("".join(f"{sha}\n" for sha in shas).encode())
+        wanted.seek(0)
+        with subprocess.Popen(
+            ["git", "--git-dir", str(git), "cat-file", "--batch"],
+            stdin=wanted,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.DEVNULL,
+        ) as batch:
+            assert batch.stdout is not None
+            for _ in shas:
+                header = batch.stdout.readline().split()
+                if not header:
+                    raise LookupError(f"{git}: git cat-file ended early")
+                if header[-1] == b"missing":
+                    yield None
+                    continue
+                content = batch.stdout.read(int(header[2]))
+                batch.stdout.read(1)  # the newline after each blob
+                yield content
 
 
 def _package_names(git: Path) -> list[tuple[str, int]]:
     """The names in the ``package.xml`` files of a git directory's newest commit, each with
     how many folders down its file is."""
-    listing = subprocess.run(
-        ["git", "--git-dir", str(git), "ls-tree", "-r", "HEAD"],
-        capture_output=True,
-        text=True,
-        check=False,
-    )
-    entries = [
-        (line.split()[2], line.split("\t", 1)[1].count("/"))
-        for line in listing.stdout.splitlines()
-        if line.endswith("/package.xml") or line.endswith("\tpackage.xml")
-    ]
-    if not entries:
-        return []
-    batch = subprocess.run(
-        ["git", "--git-dir", str(git), "cat-file", "--batch"],
-        input="".join(f"{sha}\n" for sha, _ in entries),
-        capture_output=True,
-        text=True,
-        errors="replace",
-        check=False,
-    )
-    # One answer per file, in order: its header line, then its content.
-    answers = re.split(r"^[0-9a-f]{40} (?:blob \d+|missing)$", batch.stdout, flags=re.M)[1:]
-    names = [re.search(r"<name>\s*([\w.-]+)\s*</name>", answer) for answer in answers]
-    return [
-        (name.group(1), depth) for name, (_, depth) in zip(names, entries, strict=False) if name
-    ]
+    try:
+        listing = _git(git, "ls-tree", "-r", "HEAD").decode(errors="replace")
+        entries = [
+            (line.split()[2], line.split("\t", 1)[1].count("/"))
+            for line in listing.splitlines()
+            if line.endswith(("/package.xml", "\tpackage.xml"))
+        ]
+        found = []
+        for content, (_, depth) in zip(_blobs(git, [e[0] for e in entries]), entries, strict=True):
+            name = re.search(rb"<name>\s*([\w.-]+)\s*</name>", content or b"")
+            if name:
+                found.append((name.group(1).decode(), depth))
+    except LookupError:
+        return []  # a mirror git cannot read holds no package to take
+    return found
 
 
 def _write_tree(git: Path, commit: str, folder: Path) -> None:
     """The files of ``commit`` under ``folder``; blobs the mirror lacks (its largest files,
     meshes mostly) are left out, and a symbolic link to a file of the tree is a copy of it."""
-    listing = subprocess.run(
-        ["git", "--git-dir", str(git), "ls-tree", "-r", "-z", commit],
-        capture_output=True,
-        check=False,
-    )
-    if listing.returncode != 0:
-        message = listing.stderr.decode(errors="replace").strip().splitlines()
-        raise LookupError(f"{git}: {message[-1] if message else 'no tree'} ({commit})")
     blobs: list[tuple[str, str, bool]] = []
-    for entry in listing.stdout.split(b"\0"):
-        if not entry:
-            continue
-        meta, name = entry.split(b"\t", 1)
-        mode, kind, sha = meta.decode().split()
-        if kind == "blob":
-            blobs.append((sha, name.decode(errors="replace"), mode == "120000"))
-    batch = subprocess.run(
-        ["git", "--git-dir", str(git), "cat-file", "--batch"],
-        input="".join(f"{sha}\n" for sha, _, _ in blobs).encode(),
-        capture_output=True,
-        check=True,
-    )
-    data, at = batch.stdout, 0
+    for entry in _git(git, "ls-tree", "-r", "-z", commit).split(b"\0"):
+        if entry:
+            meta, name = entry.split(b"\t", 1)
+            mode, kind, sha = meta.decode().split()
+            if kind == "blob":
+                blobs.append((sha, name.decode(errors="replace"), mode == "120000"))
     root = folder.resolve()
-    links: list[tuple[Path, Path]] = []
-    for _, path, link in blobs:
-        end = data.index(b"\n", at)
-        header = data[at:end].split()
-        at = end + 1
-        if header[-1] == b"missing":
-            continue
-        size = int(header[2])
-        content = data[at : at + size]
-        at += size + 1
+    root.mkdir(parents=True, exist_ok=True)
+    links: dict[Path, Path] = {}
+    contents = _blobs(git, [sha for sha, _, _ in blobs])
+    for content, (_, path, link) in zip(contents, blobs, strict=True):
         target = (root / path).resolve()
-        if root not in target.parents:  # no path leaves the folder
+        if content is None or root not in target.parents:  # no path leaves the folder
             continue
         if link:
-            links.append((target, (target.parent / content.decode(errors="replace")).resolve()))
+            links[target] = (target.parent / content.decode(errors="replace")).resolve()
             continue
         target.parent.mkdir(parents=True, exist_ok=True)
         target.write_bytes(content)
-    for target, linked in links:
-        if root in linked.parents and linked.is_file():
+    while links:  # a link to a link is copied once the link it names is
+        copied = [t for t, linked in links.items() if root in linked.parents and linked.is_file()]
+        if not copied:
+            break  # the rest name folders, nothing, or what lies outside the tree
+        for target in copied:
             target.parent.mkdir(parents=True, exist_ok=True)
-            target.write_bytes(linked.read_bytes())
+            target.write_bytes(links.pop(target).read_bytes())
 
 
 def make(
@@ -279,8 +311,8 @@ def make(
     ):
         if path is None or out is None:
             continue
-        file = tree / path
-        if not file.is_file():
+        file = (tree / path).resolve()
+        if tree.resolve() not in file.parents or not file.is_file():
             raise LookupError(f"{source.repository}@{source.commit} has no file {path}")
         out.parent.mkdir(parents=True, exist_ok=True)
         if xacro:
@@ -334,12 +366,15 @@ def repositories(folders: list[Path]) -> list[str]:
     return list(found)
 
 
-def rebuild(folders: list[Path], mirror: Path, out: Path) -> int:
-    """Make every row's files under ``out``; the number of rows not made."""
-    trees = Trees(mirror, out / "trees")
-    report = ["set\trobot\tmade\twhy (or the packages taken from other repositories)"]
-    workspaces = []
-    missed = 0
+def rebuild(folders: list[Path], mirror: Path, out: Path) -> tuple[int, int]:
+    """Make every row's files under ``out``: how many rows were not made, and how many of
+    those could have been (their repository is under ``mirror``). ``OUT/report.tsv`` and
+    ``OUT/workspaces.tsv`` keep the lines of sets not made this time."""
+    named = frozenset(repository.lower() for repository in repositories(set_folders()))
+    trees = Trees(mirror, out / "trees", named)
+    report: list[str] = []
+    workspaces: list[str] = []
+    missed = failed = 0
     for folder in folders:
         for row in rows(folder):
             name, robot = folder.name, row["robot"]
@@ -364,12 +399,31 @@ def rebuild(folders: list[Path], mirror: Path, out: Path) -> int:
                     note = "packages taken: " + ", ".join(taken) if taken else ""
             if why:
                 missed += 1
+                here = source is not None and git_directory(mirror, source.repository)
+                failed += bool(here)
                 print(f"{name} {robot}: not made: {why}", file=sys.stderr)
             report.append(f"{name}\t{robot}\t{'no' if why else 'yes'}\t{why or note}")
-    out.mkdir(parents=True, exist_ok=True)
-    (out / "workspaces.tsv").write_text("\n".join(workspaces) + "\n", encoding="utf-8")
-    (out / "report.tsv").write_text("\n".join(report) + "\n", encoding="utf-8")
-    return missed
+    made = {folder.name for folder in folders}
+    _merge(out / "report.tsv", report, made, REPORT_HEADER)
+    _merge(out / "workspaces.tsv", workspaces, made)
+    return missed, failed
+
+
+REPORT_HEADER = "set\trobot\tmade\twhy (or the packages taken from other repositories)"
+
+
+def _merge(path: Path, lines: list[str], sets: set[str], header: str | None = None) -> None:
+    """Write ``lines`` to ``path``, keeping its lines of sets other than ``sets``."""
+    kept = []
+    if path.is_file():
+        kept = [
+            line
+            for line in path.read_text(encoding="utf-8").splitlines()
+            if line != header and line.split("\t", 1)[0] not in sets
+        ]
+    path.parent.mkdir(parents=True, exist_ok=True)
+    head = [header] if header is not None else []
+    path.write_text("\n".join([*head, *kept, *lines]) + "\n", encoding="utf-8")
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -387,9 +441,13 @@ def main(argv: list[str] | None = None) -> int:
         return 0
     if args.mirror is None or args.out is None:
         parser.error("--mirror and --out are needed to make the files (or --repos)")
-    missed = rebuild(folders, args.mirror, args.out)
-    print(f"{missed} rows not made; see {args.out / 'report.tsv'}", file=sys.stderr)
-    return 1 if missed else 0
+    missed, failed = rebuild(folders, args.mirror, args.out)
+    print(
+        f"{missed} rows not made, {failed} of them with their repository here; "
+        f"see {args.out / 'report.tsv'}",
+        file=sys.stderr,
+    )
+    return 1 if failed else 0
 
 
 if __name__ == "__main__":

@@ -7,7 +7,7 @@ that boundary lives here, and nothing else does:
 ===============  ============================================================================
 ``compiler``     the parent: starting the child, its limits, reading its answer
 ``packages``     ``$(find pkg)``: ROS packages found with no ROS install (also the child's roots)
-``child``        the child: resource limits, the file fence, ``$(env)`` refused, the compilation
+``child``        the child: resource limits, the file fence, no environment read, the compilation
 ``expressions``  the child's guard on ``${...}`` and ``$(eval ...)``: no module reachable
 ``confine``      the child's kernel fences (Landlock, seccomp), raw system calls through ctypes
 ===============  ============================================================================

@@ -52,7 +52,9 @@ watcher's (a forger's that matched the station late, or any such writer's when t
 joins), and keep it. So while another participant has a writer of the answer topic and the
 newest answer read is this watcher's, it is written again :data:`REASSERT_FIRST` seconds after
 each write, then at gaps doubling up to :data:`REASSERT_LIMIT`: such a station shows the
-forgery for that long at most.
+forgery for that long at most. (A forger's writer looks like any other: a second watcher's, or
+an operator station's, whose source has one unused, keeps the schedule going too, one repeated
+answer every :data:`REASSERT_LIMIT` seconds.)
 
 *Discovery window.* :meth:`DdsGraph.settle` waits until nothing new was discovered for
 :data:`DISCOVERY_QUIET` seconds (at most :data:`DISCOVERY_LIMIT`): the watcher's first
