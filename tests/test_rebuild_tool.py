@@ -86,13 +86,19 @@ def committed(work: Path) -> str:
 def mirrored_repository(mirror: Path) -> str:
     """owner/demo under ``mirror`` as the workplace's fetch leaves it, and other/parts, whose
     package its xacro finds though its rows never name it; owner/demo's commit."""
-    parts = mirror / "other+parts" / "repo"
-    (parts / "demo_parts" / "urdf").mkdir(parents=True)
-    (parts / "demo_parts" / "package.xml").write_text(
-        PACKAGE.replace("NAME", "demo_parts"), encoding="utf-8"
-    )
-    (parts / "demo_parts" / "urdf" / "parts.xacro").write_text(PARTS, encoding="utf-8")
-    committed(parts)
+    # Two repositories hold demo_parts as deep: the one named like it is taken, not the copy
+    # (whose macro would make no wheel) that comes first by name.
+    for holder, parts_text in (
+        ("aaa+vendored", PARTS.replace("_wheel", "_cog")),
+        ("other+demo_parts", PARTS),
+    ):
+        parts = mirror / holder / "repo"
+        (parts / "demo_parts" / "urdf").mkdir(parents=True)
+        (parts / "demo_parts" / "package.xml").write_text(
+            PACKAGE.replace("NAME", "demo_parts"), encoding="utf-8"
+        )
+        (parts / "demo_parts" / "urdf" / "parts.xacro").write_text(parts_text, encoding="utf-8")
+        committed(parts)
     work = mirror / "owner+demo" / "repo"
     (work / "pkg" / "urdf").mkdir(parents=True)
     (work / "pkg" / "config").mkdir()
@@ -117,7 +123,7 @@ def labelled_set(folder: Path, commit: str) -> None:
             "srdf": "srdf/demo.srdf",
             "source": f"github owner/demo@{commit[:8]} (MIT) pkg/urdf/demo.urdf.xacro "
             "[xacro->urdf with arm_name:=long, as its launch passes; paths=.../x dropped; "
-            "SRDF verbatim copy of pkg/config/demo.srdf]",
+            "SRDF verbatim copy of pkg/config/demo.srdf; meshes from ghost/absent@0123abcd]",
         },
         {
             "robot": "arm",
@@ -160,16 +166,24 @@ def test_a_source_names_the_repository_commit_file_arguments_and_srdf() -> None:
         "github a/b@0123abcd (BSD, package.xml) src/b_description/urdf/b.urdf.xacro [xacro->urdf "
         "with use_gazebo:=true prefix:=left_ imu:='1 2 3', kinematics:=.../x.yaml, as "
         "launch/x.launch.py; SRDF b_moveit/config/b.srdf; $(find c_description) from github "
-        "c/c@89abcdef; use_gazebo:=false would drop the plugins]",
+        "c/c@89abcdef, $(find d) resolved to d/d@deadbeef; use_gazebo:=false would drop the "
+        "plugins; ns:='' tf:=<that package>/tf.yaml]",
         srdf=True,
     )
     assert source.repository == "a/b"
     assert source.commit == "0123abcd"
     assert source.path == "src/b_description/urdf/b.urdf.xacro"
     # The recipe's values: the first of each name, quoted ones whole.
-    assert source.args == (("use_gazebo", "true"), ("prefix", "left_"), ("imu", "1 2 3"))
+    # An empty quoted value is a value; a placeholder the tool cannot fill is left out.
+    assert source.args == (
+        ("use_gazebo", "true"),
+        ("prefix", "left_"),
+        ("imu", "1 2 3"),
+        ("ns", ""),
+    )
     assert source.srdf == "b_moveit/config/b.srdf"
-    assert source.others == (("c/c", "89abcdef"),)
+    # A second repository, named with "github" or bare.
+    assert source.others == (("c/c", "89abcdef"), ("d/d", "deadbeef"))
     assert source.xacro
     assert tool.parse_source("PyPI example-robot-data 6.0.0 robots/x.urdf", srdf=False) is None
 
@@ -210,7 +224,7 @@ def test_rows_are_made_from_the_mirrored_commit_and_those_that_cannot_be_are_sai
         "--set",
         str(tmp_path / "tools" / "fresh_set_1"),
     )
-    assert done.returncode == 1, done.stderr
+    assert done.returncode == 0, done.stderr
     made = (out / "fresh_set_1" / "urdf" / "demo.urdf").read_text(encoding="utf-8")
     # The source's argument is passed, and $(find ...) resolved in the mirrored repository
     # that has the package.
@@ -226,8 +240,15 @@ def test_rows_are_made_from_the_mirrored_commit_and_those_that_cannot_be_are_sai
     assert "has no file pkg/urdf/gone.urdf" in done.stderr
     report = (out / "report.tsv").read_text(encoding="utf-8").splitlines()
     assert [line.split("\t")[2] for line in report[1:]] == ["yes", "yes", "no", "no"]
-    assert report[1].split("\t")[3] == "packages taken: demo_parts from other/parts"
-    tree = out / "trees" / f"owner+demo@{commit[:8]}" / "repo"
+    # A second repository the mirror lacks is left out, and said.
+    assert report[1].split("\t")[3] == (
+        "without ghost/absent (not in the mirror); package demo_parts taken from other/demo_parts"
+    )
+    # One tree for the commit, however the rows spell it (8 hex digits, 40).
+    assert [folder.name for folder in (out / "trees").iterdir() if "owner+demo" in folder.name] == [
+        f"owner+demo@{commit}"
+    ]
+    tree = out / "trees" / f"owner+demo@{commit}" / "repo"  # the full hash
     assert (out / "workspaces.tsv").read_text(encoding="utf-8").splitlines()[0] == (
         f"fresh_set_1\tdemo\t{tree}\tpkg/urdf/demo.urdf.xacro"
     )
@@ -280,7 +301,7 @@ def test_the_repositories_to_bring_are_listed_once_each(tmp_path: Path) -> None:
     labelled_set(tmp_path / "fresh_set_1", "0123abcd")
     done = rebuild("--repos", "--set", str(tmp_path / "fresh_set_1"))
     assert done.returncode == 0, done.stderr
-    assert done.stdout.splitlines() == ["owner/demo"]
+    assert done.stdout.splitlines() == ["owner/demo", "ghost/absent"]
 
 
 def test_the_measure_tool_reads_the_files_made_with_rebuilt(tmp_path: Path) -> None:

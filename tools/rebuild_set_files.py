@@ -28,9 +28,10 @@ development part on any machine:
   (``--workspaces`` of the measure tool: the controls its packages ship).
 
 A row not made (no repository in its source, no such commit or file, xacro that does not
-compile) is listed with why, on standard error, and the rest go on; exit 1 when a row whose
-repository is under the mirror was not made (a row whose repository is not there is only
-listed). Running one ``--set`` keeps the other sets' lines of the two ``.tsv`` files.
+compile) is listed with why, on standard error and in the report, and the rest go on: the run
+exits 0 when it went through every row (some rows' recipes can never be followed: a labeller's
+own patch script, a Python 2 file), 2 on a wrong command line. Running one ``--set`` keeps the
+other sets' lines of the two ``.tsv`` files.
 The files made need not be byte for byte those the rows were labelled on (an argument the
 source only describes in words is not passed), so ``OUT/report.tsv`` lists every row.
 
@@ -60,6 +61,8 @@ SETS = ("identification_set", "generalization_set")
 REPOSITORY = re.compile(
     r"github(?:\.com/|:\s*|\s+)([\w.-]+/[\w.-]+?)(?:\.git)?\s*@\s*([0-9a-f]{7,40})\b"
 )
+# A second repository is often named bare: "... resolved to uuvsimulator/uuv_simulator@ed260c82".
+SECOND = re.compile(r"(?<![\w./-])([\w.-]+/[\w.-]+?)(?:\.git)?\s*@\s*([0-9a-f]{7,40})\b")
 DESCRIPTION = re.compile(
     r"(?<![\w/.-])((?:[\w.+-]+/)*[\w.+-]+\.(?:urdf\.xacro|xacro|urdf|gazebo|xml))\b",
     re.IGNORECASE,
@@ -109,18 +112,28 @@ def parse_source(text: str, *, srdf: bool) -> Source | None:
     # The recipe's own arguments come first; the same name later is prose ("own:=false would
     # give ..."): the first value of each name is kept.
     args: dict[str, str] = {}
-    for name, quoted, double, bare in ARGUMENT.findall(rest):
-        value = quoted or double or bare.rstrip(":.")
-        if (quoted or double or value) and not any(t in value for t in ("...", "$(", "${")):
+    for match in ARGUMENT.finditer(rest):
+        name, quoted, double, bare = match.groups()
+        given = quoted is not None or double is not None  # '' is a value
+        value = quoted or double or (bare or "").rstrip(":.")
+        # Placeholders other than PLACEHOLDERS ("<that package>") and elisions are words.
+        unknown = "<" in value.replace("<repo>", "").replace("<fetched>", "").replace(
+            "<package>", ""
+        )
+        if (given or value) and not unknown and not any(t in value for t in ("...", "$(", "${")):
             args.setdefault(name, value)
     for name, value in ENVIRONMENT.findall(rest):
         args.setdefault(name, value.rstrip(":."))
     srdf_path = None
     if srdf:
-        match = SRDF.search(rest)
-        srdf_path = match.group(1) if match else None
+        named = SRDF.search(rest)
+        srdf_path = named.group(1) if named else None
     others = tuple(
-        dict.fromkeys((m.group(1), m.group(2)) for m in found[1:] if m.group(1) != first.group(1))
+        dict.fromkeys(
+            (m.group(1), m.group(2))
+            for m in (*found[1:], *SECOND.finditer(rest))
+            if m.group(1).lower() != first.group(1).lower()
+        )
     )
     path = description.group(1)
     # How it was made is said right after the path: "[xacro->urdf ...]", "[plain URDF ...]".
@@ -165,10 +178,9 @@ class Trees:
     """Commits' trees written out once each under ``folder``, and which mirrored repository
     holds a ROS package of a given name (at its newest commit)."""
 
-    def __init__(self, mirror: Path, folder: Path, named: frozenset[str] = frozenset()) -> None:
+    def __init__(self, mirror: Path, folder: Path) -> None:
         self.mirror = mirror
         self.folder = folder
-        self.named = named  # repositories the sets name (lower case): preferred holders
         self._packages: dict[str, str] | None = None
 
     def tree(self, repository: str, commit: str) -> Path:
@@ -177,8 +189,8 @@ class Trees:
         git = git_directory(self.mirror, repository)
         if git is None:
             raise LookupError(f"{repository} is not under {self.mirror}")
-        if commit == "HEAD":
-            commit = _git(git, "rev-parse", "HEAD").decode().strip()[:12]
+        # Named by the full hash: one tree per commit however a source spells it.
+        commit = _git(git, "rev-parse", "--verify", f"{commit}^{{commit}}").decode().strip()
         # A folder of its own above each tree: the xacro sandbox finds the packages beside a
         # package at a tree's root, and must not find another tree's.
         where = self.folder / f"{repository.replace('/', '+')}@{commit}" / "repo"
@@ -193,10 +205,11 @@ class Trees:
     def holder(self, package: str) -> str | None:
         """The mirrored repository (owner/name) with a ``package.xml`` named ``package``: the
         shallowest copy (the package's own repository, not one that vendors it deeper down),
-        then one the sets name, then by name."""
+        then the repository whose name begins most like the package's (``uuv_simulator`` for
+        ``uuv_assistants``, not a simulator that copied it), then by name."""
         if self._packages is None:
             found = sorted(
-                (name, depth, repository.lower() not in self.named, repository)
+                (name, depth, -_shared(name, repository), repository)
                 for folder in sorted(self.mirror.iterdir())
                 if (git := git_directory(self.mirror, repository := _repository(folder)))
                 for name, depth in _package_names(git)
@@ -205,6 +218,15 @@ class Trees:
             for name, _, _, repository in found:
                 self._packages.setdefault(name, repository)
         return self._packages.get(package)
+
+
+def _shared(package: str, repository: str) -> int:
+    """How many leading characters the package's name and the repository's name share."""
+    name = repository.split("/", 1)[1].lower().replace("-", "_")
+    return next(
+        (i for i, (a, b) in enumerate(zip(package.lower(), name, strict=False)) if a != b),
+        min(len(package), len(name)),
+    )
 
 
 def _repository(folder: Path) -> str:
@@ -300,11 +322,19 @@ def _write_tree(git: Path, commit: str, folder: Path) -> None:
 def make(
     source: Source, trees: Trees, urdf_out: Path, srdf_out: Path | None
 ) -> tuple[Path, list[str]]:
-    """Write the row's files; the folder of its main tree (its workspace) and the packages
-    taken from repositories its source does not name."""
+    """Write the row's files; the folder of its main tree (its workspace) and notes: the
+    packages taken from repositories its source does not name, the second repositories it was
+    made without."""
     tree = trees.tree(source.repository, source.commit)
-    roots = [tree, *(trees.tree(name, commit) for name, commit in source.others)]
+    roots = [tree]
     taken: list[str] = []
+    for name, commit in source.others:
+        # A second repository the mirror lacks may not be needed: the row is tried without
+        # it (a package it held is then missing, and said so).
+        try:
+            roots.append(trees.tree(name, commit))
+        except LookupError:
+            taken.append(f"without {name} (not in the mirror)")
     for path, out, xacro in (
         (source.path, urdf_out, source.xacro),
         (source.srdf, srdf_out, (source.srdf or "").endswith(".xacro")),
@@ -346,7 +376,7 @@ def _compiled(file: Path, source: Source, trees: Trees, roots: list[Path], taken
             if added in roots:
                 raise
             roots = [*roots, added]
-            taken.append(f"{package} from {holder}")
+            taken.append(f"package {package} taken from {holder}")
     raise LookupError(f"{file}: more than 8 packages from other repositories")
 
 
@@ -361,6 +391,10 @@ def repositories(folders: list[Path]) -> list[str]:
     found: dict[str, None] = {}
     for folder in folders:
         for row in rows(folder):
+            source = parse_source(row["source"], srdf=False)
+            if source is not None:
+                for repository in (source.repository, *(name for name, _ in source.others)):
+                    found.setdefault(repository)
             for match in REPOSITORY.finditer(row["source"]):
                 found.setdefault(match.group(1))
     return list(found)
@@ -370,8 +404,7 @@ def rebuild(folders: list[Path], mirror: Path, out: Path) -> tuple[int, int]:
     """Make every row's files under ``out``: how many rows were not made, and how many of
     those could have been (their repository is under ``mirror``). ``OUT/report.tsv`` and
     ``OUT/workspaces.tsv`` keep the lines of sets not made this time."""
-    named = frozenset(repository.lower() for repository in repositories(set_folders()))
-    trees = Trees(mirror, out / "trees", named)
+    trees = Trees(mirror, out / "trees")
     report: list[str] = []
     workspaces: list[str] = []
     missed = failed = 0
@@ -396,7 +429,7 @@ def rebuild(folders: list[Path], mirror: Path, out: Path) -> tuple[int, int]:
                     why = str(error).splitlines()[0]
                 else:
                     workspaces.append(f"{name}\t{robot}\t{tree}\t{source.path}")
-                    note = "packages taken: " + ", ".join(taken) if taken else ""
+                    note = "; ".join(taken)
             if why:
                 missed += 1
                 here = source is not None and git_directory(mirror, source.repository)
@@ -409,7 +442,7 @@ def rebuild(folders: list[Path], mirror: Path, out: Path) -> tuple[int, int]:
     return missed, failed
 
 
-REPORT_HEADER = "set\trobot\tmade\twhy (or the packages taken from other repositories)"
+REPORT_HEADER = "set\trobot\tmade\twhy not (or how: packages taken, repositories left out)"
 
 
 def _merge(path: Path, lines: list[str], sets: set[str], header: str | None = None) -> None:
@@ -447,7 +480,7 @@ def main(argv: list[str] | None = None) -> int:
         f"see {args.out / 'report.tsv'}",
         file=sys.stderr,
     )
-    return 1 if failed else 0
+    return 0
 
 
 if __name__ == "__main__":
