@@ -14,9 +14,10 @@ development part on any machine:
 
 * a row's source is read for the repository and commit (``github owner/name@commit`` or
   ``https://github.com/owner/name @commit``), the file's path in it (the first ``.urdf``,
-  ``.xacro``, ``.urdf.xacro`` after them), the xacro arguments it names (``name:=value``), the
-  SRDF's path when the row has one, and the other repositories it names (their packages resolve
-  ``$(find ...)``);
+  ``.xacro``, ``.gazebo`` or ``.xml`` after them, in any case, never a ``package.xml``), the
+  xacro arguments it names (``name:=value``, the first value of each name; ``NAME=value`` for
+  an environment variable), the SRDF's path when the row has one, and the other repositories
+  it names, with ``github`` or bare (their packages resolve ``$(find ...)``);
 * ``DIR/owner+name/repo`` holds each repository as a git directory (the workplace's ``fetch``
   leaves them so; a clone's ``.git`` is found too); the commit's tree is written out once
   under ``OUT/trees/``;
@@ -31,14 +32,13 @@ A row not made (no repository in its source, no such commit or file, xacro that 
 compile) is listed with why, on standard error and in the report, and the rest go on: the run
 exits 0 when it went through every row (some rows' recipes can never be followed: a labeller's
 own patch script, a Python 2 file), 2 on a wrong command line. Running one ``--set`` keeps the
-other sets' lines of the two ``.tsv`` files.
-The files made need not be byte for byte those the rows were labelled on (an argument the
-source only describes in words is not passed), so ``OUT/report.tsv`` lists every row.
+other sets' lines of the two ``.tsv`` files. The files made need not be byte for byte those
+the rows were labelled on (an argument the source only describes in words is not passed), so
+``OUT/report.tsv`` lists every row and how it was made.
 
-Then, for instance::
+Then::
 
-    python tools/measure_identification.py --all --split $(for d in OUT/*/urdf; do
-        echo --files "${d%/urdf}"; done) --workspaces OUT/workspaces.tsv
+    PYTHONPATH=. python tools/measure_identification.py --all --split --rebuilt OUT
 """
 
 from __future__ import annotations
