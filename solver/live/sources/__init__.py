@@ -68,14 +68,17 @@ def _master(address: GraphAddress, timeout: float, push: bool) -> GraphSource:
 
 
 def _dds(address: GraphAddress, timeout: float, push: bool) -> GraphSource:
-    del timeout, push  # a DDS domain has neither calls to time nor pushes to ask for
+    del timeout  # a DDS domain has no calls to time
     from solver.live.sources.ros2 import DdsGraph
 
-    return DdsGraph(int(address.where))
+    # Without push (a snapshot, `assign`, an operator station) the source reads only: no
+    # writer of the answer topic (DDS has no pushes to ask for).
+    return DdsGraph(int(address.where), answers=push)
 
 
 # The graph sources by family: each opens its source for an address (``timeout``: seconds each
-# call to a master may take; ``push``: a master tells the watcher's own node what changed).
+# call to a master may take; ``push``: a master tells the watcher's own node what changed; on
+# DDS, the source writes answers).
 SOURCES: dict[str, Callable[[GraphAddress, float, bool], GraphSource]] = {
     "ros1": _master,
     "ros2": _dds,

@@ -52,9 +52,9 @@ watcher's (a forger's that matched the station late, or any such writer's when t
 joins), and keep it. So while another participant has a writer of the answer topic and the
 newest answer read is this watcher's, it is written again :data:`REASSERT_FIRST` seconds after
 each write, then at gaps doubling up to :data:`REASSERT_LIMIT`: such a station shows the
-forgery for that long at most. (A forger's writer looks like any other: a second watcher's, or
-an operator station's, whose source has one unused, keeps the schedule going too, one repeated
-answer every :data:`REASSERT_LIMIT` seconds.)
+forgery for that long at most. (A forger's writer looks like any other: a second watcher's
+keeps the schedule going too, one repeated answer every :data:`REASSERT_LIMIT` seconds. A source
+that only reads, an operator station's or a snapshot's, has no answer writer.)
 
 *Discovery window.* :meth:`DdsGraph.settle` waits until nothing new was discovered for
 :data:`DISCOVERY_QUIET` seconds (at most :data:`DISCOVERY_LIMIT`): the watcher's first
@@ -385,8 +385,16 @@ class DdsGraph:
     timeout = 0.0
 
     def __init__(
-        self, domain: int = 0, *, caller_id: str | None = None, limit: int | None = None
+        self,
+        domain: int = 0,
+        *,
+        caller_id: str | None = None,
+        limit: int | None = None,
+        answers: bool = True,
     ) -> None:
+        """``answers=False``: a participant that reads the graph only (a snapshot, ``assign``,
+        an operator station) has no writer of the answer topic, so no watcher takes it for
+        a running watcher, nor for another writer of the answer (:class:`Reassertion`)."""
         _require_cyclonedds()
         from cyclonedds.builtin import (
             BuiltinDataReader,
@@ -435,7 +443,9 @@ class DdsGraph:
         ]
         self._requests: dict[str, Any] = {}  # /teleop_ui/<name> -> its reader
         answer = Topic(self.participant, dds_topic(ANSWER_TOPIC), self.string_type)
-        self._answer_writer = DataWriter(self.participant, answer, qos=_latched())
+        self._answer_writer = (
+            DataWriter(self.participant, answer, qos=_latched()) if answers else None
+        )
         # Anyone on the domain can write the answer: a sample wakes the watcher, which puts
         # its own back when that one is not a running watcher's.
         self._answer_reader = DataReader(
@@ -534,6 +544,8 @@ class DdsGraph:
         write(writer, self.string_type(text))
 
     def _write(self, text: str) -> None:
+        if self._answer_writer is None:
+            return  # a source that reads only writes no answer (nor takes one back)
         if text != self._written:
             write(self._answer_writer, self.string_type(text))
             self._written = text
@@ -555,7 +567,7 @@ class DdsGraph:
         again, self._reassertion = self._reassertion.at(
             time.monotonic(), own_newest=self._written is not None, others=others
         )
-        if again and self._written is not None:
+        if again and self._written is not None and self._answer_writer is not None:
             write(self._answer_writer, self.string_type(self._written))
 
     def announce(self, value: dict[str, Any]) -> None:

@@ -302,6 +302,29 @@ def test_a_station_that_got_a_forgery_after_the_watchers_answer_gets_the_answer_
                 station.close()
 
 
+def test_a_participant_that_only_reads_is_no_writer_of_the_answer(
+    domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution
+) -> None:
+    """An operator station's or a snapshot's source writes no answer: the watcher's answer is
+    not written again for it (only another writer's kept sample could reach a station late)."""
+    domain.drone("/uav1")
+    watch = watch_ros2()
+    watch.wait_for(configured("/uav1", drone_configuration(solution)), "/uav1")
+    operator = Operator(domain.id)
+    station = DdsGraph(domain.id, answers=False)
+    try:
+        operator.activate("/uav1")
+        answer_for(operator, "/uav1")
+        station.set_param("/teleop_ui/ui_configuration", {"forged": True})  # writes nothing
+        source = watch.watcher.source
+        assert isinstance(source, DdsGraph)
+        wait_until(lambda: source.reassertion.due is None, TIMEOUT, "the schedule's end")
+        assert operator.answer() == watch.watcher.answer
+    finally:
+        station.close()
+        operator.close()
+
+
 def test_the_active_motion_control_topic_selects_as_the_ros1_parameter_does(
     domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution
 ) -> None:
