@@ -117,9 +117,7 @@ def parse_source(text: str, *, srdf: bool) -> Source | None:
         given = quoted is not None or double is not None  # '' is a value
         value = quoted or double or (bare or "").rstrip(":.")
         # Placeholders other than PLACEHOLDERS ("<that package>") and elisions are words.
-        unknown = "<" in value.replace("<repo>", "").replace("<fetched>", "").replace(
-            "<package>", ""
-        )
+        unknown = "<" in _placed(value, dict.fromkeys(PLACEHOLDERS, ""))
         if (given or value) and not unknown and not any(t in value for t in ("...", "$(", "${")):
             args.setdefault(name, value)
     for name, value in ENVIRONMENT.findall(rest):

@@ -212,12 +212,16 @@ class Reassertion:
         """The schedule that starts when the answer was written at ``now``."""
         return cls(now + REASSERT_FIRST, REASSERT_FIRST)
 
+    def is_due(self, now: float) -> bool:
+        """Whether the schedule has come to its next write at ``now``."""
+        return self.due is not None and now >= self.due
+
     def at(self, now: float, *, own_newest: bool, others: bool) -> "tuple[bool, Reassertion]":
         """Whether to write the answer again at ``now``, and the schedule after: again when
         due while the newest answer read is the watcher's own (``own_newest``) and another
         participant has a writer of the answer topic (``others``); with either gone the
         schedule ends (the watcher's next write starts another)."""
-        if self.due is None or now < self.due:
+        if not self.is_due(now):
             return False, self
         if not (own_newest and others):
             return False, Reassertion()
@@ -558,16 +562,19 @@ class DdsGraph:
 
     def _reassert(self) -> None:
         """The answer written again when it is due (see the module docstring and
-        :class:`Reassertion`)."""
+        :class:`Reassertion`); the endpoints are looked through only then, not every poll."""
+        now = time.monotonic()
+        if not self._reassertion.is_due(now):
+            return
         answer = dds_topic(ANSWER_TOPIC)
         others = any(
             e.writer and e.topic == answer and e.participant != self._own
             for e in self._endpoints.values()
         )
         again, self._reassertion = self._reassertion.at(
-            time.monotonic(), own_newest=self._written is not None, others=others
+            now, own_newest=self._written is not None, others=others
         )
-        if again and self._written is not None and self._answer_writer is not None:
+        if again and self._written is not None:  # only a source with a writer has written
             write(self._answer_writer, self.string_type(self._written))
 
     def announce(self, value: dict[str, Any]) -> None:
