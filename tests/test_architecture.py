@@ -243,6 +243,7 @@ TESTED_ELSEWHERE: dict[str, str] = {
     # Child processes, run by the tests of the readers that start them.
     "solver.identify.readers.bag_child": "tests/identify/readers/test_bags.py",
     "solver.identify.xacro.child": "tests/identify/xacro/test_compiler.py",
+    "solver.identify.xacro.legacy": "tests/identify/xacro/test_compiler.py",
     # Types tested where they are used.
     "solver.engines.shared": "tests/engines/test_structure.py",
     "solver.ros.joints": "tests/identify/test_joints.py",

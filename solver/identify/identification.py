@@ -43,6 +43,7 @@ from solver.errors import Fault, InputError, SolverError
 from solver.identify.body import Body, detect_body
 from solver.identify.classifier import classify
 from solver.identify.declared import Characteristics, with_declared
+from solver.identify.frames import sensors_on_frames
 from solver.identify.interfaces import (
     Control,
     controls_from_topics,
@@ -185,6 +186,8 @@ def identify_urdf(
         body = body_from_workspace(body, packages, profile)
     reading = classify(body, profile, rules, root=urdf.root, srdf=srdf, urdf=urdf)
     detections: list[Detection] = list(sensors_from_urdf(urdf, profile))
+    if packages is not None:
+        detections += sensors_on_frames(packages, urdf, profile, detections)
     # A body in water that nothing places at the surface dives: its barometer is a depth gauge.
     dives = body.marine and not body.surface_hints
     if dives:

@@ -436,6 +436,9 @@ class Profile:
     package_controls: tuple[PackageRule, ...] = ()
     # The same texts -> the medium a body travels in, when its description shows no way.
     body_packages: tuple[tuple[str, Pattern], ...] = ()
+    # A link the robot's packages publish in (a frame id), by its name -> a sensor kind
+    # (``sensors.frames``, :mod:`solver.identify.frames`).
+    frame_rules: tuple[SensorRule, ...] = ()
 
     def role(self, name: str) -> str:
         """The rule-set characteristic filling role ``name`` (motion_control, ...)."""
@@ -509,10 +512,15 @@ def parse_profile(document: Document) -> Profile:
     names = {rule.name for rule in structures}
     elements = _sensor_rules(reader, ("sensors", "elements"), _ELEMENT_KEYS, types=True)
     plugin_rules = _sensor_rules(reader, ("sensors", "plugins"), _PLUGIN_RULE_KEYS, types=False)
+    frame_rules = (
+        _sensor_rules(reader, ("sensors", "frames"), _PLUGIN_RULE_KEYS, types=False)
+        if reader.get(("sensors", "frames")) is not None
+        else ()
+    )
     reader.unknown_keys(
         ("sensors",),
         reader.mapping(("sensors",), "sensors"),
-        {"elements", "plugins", "ground_truth", "systems"},
+        {"elements", "plugins", "frames", "ground_truth", "systems"},
         "sensors field",
     )
     ground_truth = _pattern(reader, ("sensors", "ground_truth"), required=False)
@@ -564,6 +572,7 @@ def parse_profile(document: Document) -> Profile:
         systems,
         package_controls,
         body_packages,
+        frame_rules,
     )
 
 

@@ -420,8 +420,10 @@ def element_kind(tag: SensorTag, profile: Profile) -> str:
 
 def _rays(tag: SensorTag) -> int | None:
     """How many rays a ray sensor casts (horizontal x vertical samples; a missing axis casts
-    one); None when it says no samples at all."""
-    if tag.horizontal_samples is None and tag.vertical_samples is None:
+    one); None when it says no samples at all, or none a simulator would cast (``0``, which
+    Gazebo refuses: a count left at zero says nothing of the device)."""
+    axes = [n for n in (tag.horizontal_samples, tag.vertical_samples) if n is not None]
+    if not axes or any(n < 1 for n in axes):
         return None
     return max(tag.horizontal_samples or 1, 1) * max(tag.vertical_samples or 1, 1)
 

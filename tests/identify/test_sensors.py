@@ -378,6 +378,11 @@ def test_a_one_ray_range_sensor_is_no_lidar_and_four_of_them_stay_four() -> None
     assert found == [("ir_range", None, 4), ("lidar", "LIDAR", 1)]
 
 
+def test_a_ray_sensor_left_at_zero_samples_is_read_by_its_type_not_as_one_ray() -> None:
+    # Gazebo casts no ray for <samples>0</samples>: the count says nothing of the device.
+    assert kinds(ray("laser", "head_hokuyo", 0, 3.14, 25.0)) == [("lidar", "LIDAR", 1)]
+
+
 def range_finder(name: str, radiation: str) -> str:
     """A cone of 10 x 10 rays (a range plugin's beam) whose plugin says what it casts."""
     grid = "<samples>10</samples><min_angle>-0.13</min_angle><max_angle>0.13</max_angle>"

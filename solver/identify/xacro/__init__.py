@@ -8,6 +8,7 @@ that boundary lives here, and nothing else does:
 ``compiler``     the parent: starting the child, its limits, reading its answer
 ``packages``     ``$(find pkg)``: ROS packages found with no ROS install (also the child's roots)
 ``child``        the child: resource limits, the file fence, no environment read, the compilation
+``legacy``       the child's reading of ROS 1's unprefixed xacro tags, as xacro 1.13 read them
 ``expressions``  the child's guard on ``${...}`` and ``$(eval ...)``: no module reachable
 ``confine``      the child's kernel fences (Landlock, seccomp), raw system calls through ctypes
 ===============  ============================================================================

@@ -47,7 +47,7 @@ from pathlib import Path
 from typing import Any
 
 from solver.errors import SolverError
-from solver.identify.xacro import expressions
+from solver.identify.xacro import expressions, legacy
 from solver.identify.xacro.confine import (
     Confinement,
     forbid_system_calls,
@@ -234,6 +234,7 @@ class _Fence:
         from solver.identify.readers.safexml import parse_xml
 
         expressions.install(xacro, xacro.substitution_args)
+        legacy.install(xacro)
         warm_up = (
             '<robot xmlns:xacro="http://www.ros.org/wiki/xacro"><xacro:property '
             'name="p" value="${1 + 1}"/><xacro:macro name="m" params="x"><link '

@@ -401,3 +401,31 @@ def test_a_file_that_is_no_regular_file_is_refused(tmp_path: Path) -> None:
     )
     with pytest.raises(InputError, match=r"config\.yaml: not a regular file; refused"):
         compile_xacro(path, limits=FAST)
+
+
+def test_ros1_tags_without_the_prefix_are_read_as_ros1_xacro_read_them(tmp_path: Path) -> None:
+    """Melodic's xacro (1.13) read unprefixed keywords and macro calls; xacro 2 drops them."""
+    (tmp_path / "parts.xacro").write_text(
+        robot(
+            '<macro name="wheel" params="side"><link name="${side}_${size}"/></macro>'
+            '<macro name="link" params=""><link name="never_called"/></macro>'
+            '<xacro:macro name="light" params=""><link name="never_lit"/></xacro:macro>'
+        )
+    )
+    path = tmp_path / "r.xacro"
+    path.write_text(
+        robot(
+            '<property name="size" value="small"/><include filename="parts.xacro"/>'
+            '<link name="base_link"/><wheel side="left"/><wheel side="right"/>'
+            '<if value="false"><link name="dropped"/></if><unless value="false">'
+            '<link name="kept"/></unless><gazebo><include><uri>model://gps</uri></include>'
+            '<light name="lamp" type="spot"/></gazebo>'
+        )
+    )
+    compiled = compile_xacro(path, limits=FAST)
+    names = [link.name for link in parse_urdf(compiled.text, "r.urdf", strict=False).links]
+    assert names == ["base_link", "left_small", "right_small", "kept"]
+    assert "<uri>model://gps</uri>" in compiled.text  # an SDF include is no xacro include
+    assert '<light name="lamp" type="spot"/>' in compiled.text  # SDF's light, no macro call
+    said = [w.split("'")[1] for w in compiled.warnings if "without the 'xacro:' prefix" in w]
+    assert sorted(said) == ["if", "include", "macro", "property", "unless", "wheel"]  # once each
