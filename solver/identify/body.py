@@ -197,6 +197,25 @@ class Body:
         )
 
     @property
+    def moved_by_plugin_alone(self) -> bool:
+        """A drive plugin moves the body and nothing of it touches the ground: no wheel,
+        track, caster, fixed wheel or planar root joint (a box a planar-move plugin slides, a
+        velocity-control plugin flies or swims); nothing else says how it travels. The
+        simulator moves it; what it travels in is not said."""
+        return bool(self.drive_plugins) and not (
+            self.wheels
+            or self.tracks
+            or self.casters
+            or self.fixed_wheels
+            or self.planar_base
+            or self.flying
+            or self.marine
+            or self.grippers
+            or self.fingers
+            or any(limb.kind in ("arm", "leg", "spine") for limb in self.limbs)
+        )
+
+    @property
     def head_alone(self) -> bool:
         """A pan/tilt unit with nothing else: heads only, no mobile or floating base, vehicle,
         gripper or finger, and no teleop node of its packages driving the body (a camera's

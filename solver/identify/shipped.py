@@ -10,8 +10,9 @@ its repository holds). Each control names the file that shows it, the first one 
 order the packages were read (the description's package first).
 
 The same texts say what a body travels in when its description shows no way at all (one link
-and its mesh, a few sensor frames: a drone a simulator poses, an AUV drawn for RViz): the
-profile's ``body_packages`` words (a take-off command, a flight stack; a submersible's or a
+and its mesh, a few sensor frames: a drone a simulator poses, an AUV drawn for RViz), or only
+a drive plugin that slides it, nothing of it on the ground (:attr:`Body.moved_by_plugin_alone`):
+the profile's ``body_packages`` words (a take-off command, a flight stack; a submersible's or a
 surface craft's words) found in the robot's packages fly it or put it in water, with doubt
 (:func:`body_from_workspace`). Packages of two kinds of vehicle say nothing.
 
@@ -56,11 +57,12 @@ def controls_from_workspace(
 
 def body_from_workspace(body: Body, workspace: Workspace, profile: Profile) -> Body:
     """``body`` travelling in the medium the robot's packages name, when its description shows
-    no way of travelling (:attr:`Body.travels_no_way`) and the packages name one medium only
+    no way of travelling (:attr:`Body.travels_no_way`) or a drive plugin alone moves it
+    (:attr:`Body.moved_by_plugin_alone`), and the packages name one medium only
     (a repository of drones and boats says nothing of this one); a pan/tilt head alone driven
     by a teleop node its packages ship (:func:`_driven`)."""
     body = _driven(body, workspace, profile)
-    if not body.travels_no_way:
+    if not (body.travels_no_way or body.moved_by_plugin_alone):
         return body
     said = {
         medium: shown_file

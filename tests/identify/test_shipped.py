@@ -469,3 +469,30 @@ def test_a_body_whose_description_shows_how_it_travels_keeps_its_reading() -> No
     assert not gripper.travels_no_way
     pan_tilt = detect_body(parse_urdf(pan_tilt_only().text(), "p.urdf"), PROFILE)
     assert body_from_workspace(pan_tilt, packages, PROFILE).shipped_as == "flight"
+
+
+def slid_by_a_plugin(name: str = "vehicle") -> RobotText:
+    """A box a planar-move plugin slides: nothing of it touches the ground."""
+    robot = one_link(name)
+    robot.add(
+        '<gazebo><plugin name="mover" filename="libgazebo_ros_planar_move.so">'
+        "<commandTopic>cmd_vel</commandTopic></plugin></gazebo>"
+    )
+    return robot
+
+
+def test_a_body_a_plugin_alone_moves_travels_in_what_its_packages_say(tmp_path: Path) -> None:
+    """The simulator slides it: its packages, an AUV's, say it dives."""
+    structure, evidence = read_with(tmp_path, slid_by_a_plugin(), "<node pkg='auv_control'/>")
+    assert structure == "Underwater Vehicle"
+    assert any(line.startswith("in water below the surface by its packages") for line in evidence)
+
+
+def test_a_body_a_plugin_moves_on_wheels_keeps_its_ground(tmp_path: Path) -> None:
+    rover = slid_by_a_plugin()
+    rover.chain(rover.root, ["left_wheel_joint"], kind="continuous")
+    rover.chain(rover.root, ["right_wheel_joint"], kind="continuous")
+    structure, _ = read_with(tmp_path, rover, "<node pkg='auv_control'/>")
+    assert structure == "UGV"
+    # With packages that name no medium, the plugin's box is a ground base as before.
+    assert read_with(tmp_path / "quiet", slid_by_a_plugin(), "<node pkg='map_server'/>")[0] == "UGV"
