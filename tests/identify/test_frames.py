@@ -132,3 +132,31 @@ def test_a_kind_the_description_declares_keeps_the_descriptions_count() -> None:
     )
     assert kinds(two_more, declared)["camera"] == 1
     assert kinds(two_more, drawn)["camera"] == 2  # no camera declared: the drivers' two
+
+
+# Two RGB-D cameras a driver names (realsense2_camera, orbbec_camera build their frames from
+# camera_name): one drawn as camera_front and its streams, one as camera_top_base_link.
+CAMERAS = (
+    '<robot name="base"><link name="base_link"/>'
+    + fixed("base_link", "camera_front")
+    + fixed("camera_front", "camera_front_mount")
+    + fixed("camera_front_mount", "camera_front_color_frame")
+    + fixed("camera_front_mount", "camera_front_depth_frame")
+    + fixed("base_link", "camera_top_base_link")
+    + fixed("camera_top_base_link", "camera_top_depth_optical_frame")
+    + "</robot>"
+)
+
+
+def test_a_camera_driver_named_publishes_in_the_frames_it_builds_from_its_name() -> None:
+    bringup = shipping(
+        bringup_py='Node(package="orbbec_camera", parameters=[{"camera_name": "camera_front"}])',
+        top_launch='<arg name="camera_name" value="camera_top"/>',
+    )
+    urdf = parse_urdf(CAMERAS, "base.urdf")
+    assert named_frames(bringup, urdf) == {
+        "camera_front": "bringup_py",
+        "camera_top_base_link": "top_launch",
+    }
+    # A depth stream's frame beneath the named one says the camera is an RGB-D camera.
+    assert kinds(bringup, CAMERAS) == {"depth_camera": 2}
