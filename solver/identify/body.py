@@ -197,6 +197,12 @@ class Body:
         )
 
     @property
+    def carries_itself(self) -> bool:
+        """The body moves by itself, whatever carries an arm on it: a drive plugin moves it, or
+        it walks on two legs or more (an arm there may be only drawn: nothing commands it)."""
+        return bool(self.drive_plugins) or self.count("leg") >= 2
+
+    @property
     def moved_by_plugin_alone(self) -> bool:
         """A drive plugin moves the body and nothing of it touches the ground: no wheel,
         track, caster, fixed wheel or planar root joint (a box a planar-move plugin slides, a

@@ -250,10 +250,10 @@ def identify_urdf(
 
 def _named(packages: Workspace | None, body: Body) -> frozenset[str] | None:
     """The arms' joints the robot's packages name, when they were read whole and an arm may be
-    only drawn (:func:`~solver.identify.motion.controls_from_description`: a body a drive
-    plugin moves); else None."""
+    only drawn (:func:`~solver.identify.motion.controls_from_description`: a body that moves
+    by itself, :attr:`Body.carries_itself`); else None."""
     arms = {j for limb in body.limbs if limb.kind == "arm" for j in limb.joints}
-    if packages is None or not packages.complete or not arms or not body.drive_plugins:
+    if packages is None or not packages.complete or not arms or not body.carries_itself:
         return None
     return named_joints(packages, arms)
 

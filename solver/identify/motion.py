@@ -21,9 +21,10 @@ Two kinds of evidence, the declared first:
   (end-effector) goals can be solved for it, and two legs or more that
   the body walks; those last two are guesses and say so ("likely, not declared": a gait
   controller, like a Cartesian solver, is software), as are a gripper alone opened and closed
-  and a pan/tilt unit alone aimed by its joints. An arm on a base a drive plugin moves that
-  nothing commands (no controller in the description, no joint of it named by the robot's
-  packages, read whole) is only drawn: no control. Roles are named only for a control no
+  and a pan/tilt unit alone aimed by its joints. An arm on a body that moves by itself (a
+  drive plugin moves it, or it walks on two legs or more) that nothing commands (no controller
+  in the description, no joint of it named by the robot's packages, read whole) is only drawn:
+  no control. Roles are named only for a control no
   declared controller shows.
 
 Which control each of these means is the profile's ``motion.description`` (data); this module
@@ -316,12 +317,13 @@ def _navigation(
 
 
 def _shown_only(limb: Limb, body: Body, urdf: Urdf | None, named: Collection[str] | None) -> bool:
-    """An arm only drawn, on a vehicle its description drives by a plugin: no transmission,
+    """An arm only drawn, on a body that moves by itself (:attr:`Body.carries_itself`: a
+    vehicle its description drives by a plugin, a walker): no transmission,
     ``ros2_control`` block or simulator's joint controller names a joint of it, no plugin
     plays joint trajectories, and the robot's packages, read whole (``named``: the joints
     their files name), name none (a model whose arm moves by the joint state publisher's
     sliders in RViz). Without the packages the arm is taken as commanded, a guess."""
-    if named is None or urdf is None or not body.drive_plugins:
+    if named is None or urdf is None or not body.carries_itself:
         return False
     if any(_TRAJECTORIES.search(f"{p.name} {p.filename}") for p in urdf.plugins):
         return False

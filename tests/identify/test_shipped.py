@@ -15,6 +15,7 @@ from tests.identify.builders import (
     LASER,
     RobotText,
     arm,
+    legged_manipulator,
     manipulator,
     pan_tilt_only,
     parallel_gripper,
@@ -322,6 +323,16 @@ def test_an_arm_on_a_base_no_plugin_drives_is_taken_as_commanded(tmp_path: Path)
     robot = ugv()
     arm(robot, robot.root)
     assert "Joint" in controls_of(described(tmp_path, robot, ""))
+
+
+def test_an_arm_only_drawn_on_a_walker_is_commanded_by_nothing(tmp_path: Path) -> None:
+    """A dog with an arm its packages never name: the gait walks the dog, nothing moves the
+    arm. A package naming one of its joints commands it."""
+    quiet = described(tmp_path / "quiet", legged_manipulator(), "<node pkg='gait'/>")
+    assert "Joint" not in controls_of(quiet)
+    assert "Joint" in controls_of(quiet, look_around=False)  # alone: a guess, as before
+    named = described(tmp_path / "named", legged_manipulator(), "arm: {joints: [elbow]}")
+    assert "Joint" in controls_of(named)
 
 
 def test_the_joints_packages_name_are_read_word_by_word() -> None:
