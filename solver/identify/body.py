@@ -99,6 +99,8 @@ class Body:
     rotors: tuple[str, ...] = ()
     tracks: tuple[str, ...] = ()
     drive_plugins: tuple[str, ...] = ()
+    # Drive plugins that move the body itself, no wheel turning (a planar move).
+    mover_plugins: tuple[str, ...] = ()
     flight_plugins: tuple[str, ...] = ()
     limbs: tuple[Limb, ...] = ()
     trunk: tuple[str, ...] = ()
@@ -200,25 +202,30 @@ class Body:
     def carries_itself(self) -> bool:
         """The body moves by itself, whatever carries an arm on it: a drive plugin moves it, or
         it walks on two legs or more (an arm there may be only drawn: nothing commands it)."""
-        return bool(self.drive_plugins) or self.count("leg") >= 2
+        return bool(self.drive_plugins) or self.count("leg") >= _WALKING_LEGS
 
     @property
     def moved_by_plugin_alone(self) -> bool:
-        """A drive plugin moves the body and nothing of it touches the ground: no wheel,
-        track, caster, fixed wheel or planar root joint (a box a planar-move plugin slides, a
-        velocity-control plugin flies or swims); nothing else says how it travels. The
-        simulator moves it; what it travels in is not said."""
-        return bool(self.drive_plugins) and not (
-            self.wheels
-            or self.tracks
-            or self.casters
-            or self.fixed_wheels
-            or self.planar_base
-            or self.flying
-            or self.marine
-            or self.grippers
-            or self.fingers
-            or any(limb.kind in ("arm", "leg", "spine") for limb in self.limbs)
+        """Plugins that move the body itself move it (a planar move, a velocity control: the
+        profile's ``mover`` plugins; no diff-drive or other wheel drive among its drive
+        plugins), and nothing of it is on the ground or says how it travels: no wheel, track,
+        caster, fixed wheel or planar root joint, no flight or water cue, no gripper, finger,
+        arm, leg or spine. The simulator slides it; what it travels in is not said."""
+        return (
+            bool(self.mover_plugins)
+            and set(self.drive_plugins) <= set(self.mover_plugins)
+            and not (
+                self.wheels
+                or self.tracks
+                or self.casters
+                or self.fixed_wheels
+                or self.planar_base
+                or self.flying
+                or self.marine
+                or self.grippers
+                or self.fingers
+                or any(limb.kind in ("arm", "leg", "spine") for limb in self.limbs)
+            )
         )
 
     @property
@@ -431,6 +438,7 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
         rotors=tuple(parts.of("rotor")),
         tracks=track_names,
         drive_plugins=tree.labels("drive"),
+        mover_plugins=tree.labels("mover"),
         flight_plugins=tree.labels("flight"),
         limbs=tuple(parts.limbs),
         trunk=tuple(parts.trunk),

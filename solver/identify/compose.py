@@ -56,6 +56,7 @@ YPath = tuple[PathPart, ...]
 _RULE_LISTS: Final = {
     ("sensors", "elements"),
     ("sensors", "plugins"),
+    ("sensors", "frames"),
     ("topics", "sensors"),
     ("topics", "controls"),
 }

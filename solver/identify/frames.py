@@ -9,22 +9,28 @@ a driver that stamps its data with that frame (``frame_id: imu_link`` in its con
 "imu_link"`` in a node), the device is real and the operator's UI has its data to show.
 
 * A frame is *named* by a package when one of its launch, configuration or script files
-  (:mod:`solver.identify.readers.workspace`) assigns a frame id (``frame_id``, ``frame``,
-  ``frame_name``, ``camera_frame_id``, ...) whose value, its last ``/`` segment, is a link of
-  the description; or names a camera driver (``camera_name``) from which the driver builds its
-  frames (realsense2_camera, orbbec_camera): the link of that name, else ``NAME_link``, else
-  the first link whose name begins ``NAME_``.
+  (:mod:`solver.identify.readers.workspace`) gives a driver a link of the description as its
+  frame id: a key ``frame_id``, ``frame``, ``frame_name`` or one a device's word begins
+  (``imu_frame``, ``camera_frame_id``; not a node's ``target_frame``, where it looks a
+  transform up), the value naming the link whole or by its last ``/`` segment; or when it names
+  a camera driver (``camera_name``) from which the driver builds its frames (realsense2_camera,
+  orbbec_camera): the link of that name, else ``NAME_link``, else the first link whose name
+  begins ``NAME_`` and reads as a camera.
 * The profile's ``sensors.frames`` rules tell a named link's kind by its name (``imu``,
   ``gps``, ``lidar``, ``camera``, ...); a link no rule matches (``base_link``, ``odom``) is
   no sensor.
 * One device's frames are one sensor: a frame hangs from its device's body through fixed
-  joints whose links the rules match too (``camera_color_optical_frame`` under
-  ``camera_color_frame`` under ``camera_link``); the device's frames, named or fixed beneath its
-  body, say what it is, the first rule among them naming it (a colour and a depth frame of one
-  camera: an RGB-D camera).
+  joints whose links read as the same kind (any camera kind, for a camera's frames:
+  ``camera_color_optical_frame`` under ``camera_color_frame`` under ``camera_link``); a
+  camera's frames fixed beneath its body, named or not, say which camera it is, the first rule
+  among them naming it (a colour and a depth frame: an RGB-D camera). Any other kind is a device
+  of its own wherever it hangs (a D435i's IMU frame, under its camera link, is an IMU).
 * The description's own word wins: no device is added for a kind the description declares
   (its camera's optical frame is that camera), nor on a device that carries a sensor the
   description declares.
+* Bounds: the patterns are linear in the texts; each link's rule is found once; a device's
+  body is at most three joints up and its camera frames at most three down; at most 64 camera
+  names are looked up among the links.
 """
 
 from __future__ import annotations
@@ -42,58 +48,102 @@ __all__ = ["SOURCE", "named_frames", "sensors_on_frames"]
 
 # The source the detections are merged under (a view of the robot, as a topic list is).
 SOURCE = "packages"
-# Fixed joints climbed from a frame to its device's body (an optical frame, a stream frame).
+# Fixed joints climbed from a frame to its device's body (an optical frame, a stream frame),
+# and walked down from a camera's body to the frames of its streams.
 _DEVICE_DEPTH = 3
-# A frame id assigned a value: `frame_id: x`, `frame_id:=x`, `"frame_id": "x"`,
-# `frame_id="x"`, `header.frame_id = 'x'`, `("frame_id", "x")`, `camera_frame_id: x`.
+# Kinds of one family: a camera's streams (a colour and a depth frame) are one camera, the
+# first rule among them naming it. Any other kind is a device of its own wherever it hangs
+# (an IMU inside a camera is an IMU, not the camera).
+_CAMERAS = frozenset(
+    {"camera", "depth_camera", "stereo_camera", "wide_angle_camera", "thermal_camera"}
+)
+# The most camera names resolved to links (each a walk over the links, for a name no link
+# has): a stranger's files may write any number.
+_MAX_CAMERA_NAMES = 64
+# A frame id a driver is given: `frame_id`, `frame`, `frame_name`, or one of a device's
+# (`camera_frame_id`, `imu_frame`), a word of its own; not a consumer's (`target_frame`,
+# `base_frame`: what a node looks a transform up in).
+_KEY_WORD = (
+    r"(?:(?:imu|gps|gnss|navsat|laser|lidar|scan|camera|cam|sensor|depth|color|rgb|sonar|dvl|"
+    r"range)_)?frame(?:_?id|_?name)?"
+)
+_KEY = r"(?<![A-Za-z0-9_])" + _KEY_WORD
+# A value: a link's name, after an optional `$(arg ns)/` or `/`, up to 200 characters.
+_VALUE = r"(?:\$\([^()\n]{0,80}\))?/?([A-Za-z_][A-Za-z0-9_/.-]{0,199})"
+# `frame_id: x`, `frame_id:=x`, `"frame_id": "x"`, `frame_id="x"`, `header.frame_id = 'x'`,
+# `declare_parameter("frame_id", "x")` (a quoted key and a comma).
 _ASSIGNED = re.compile(
-    r"""frame(?:_?id|_?name)?["'\s]{0,3}(?::=|:|=|,)[ \t]{0,8}["']?/?"""
-    r"""([A-Za-z_][A-Za-z0-9_/]{0,199})""",
+    _KEY + r"""["']?[ \t]{0,3}(?::=|:|=)[ \t]{0,8}["']?""" + _VALUE
+    + r"""|["']""" + _KEY + r"""["'][ \t]{0,3},[ \t]{0,8}["']""" + _VALUE,
     re.IGNORECASE,
-)
-# A launch parameter: <param name="frame_id" value="x"/> (or imu_frame, camera_frame_id).
+)  # fmt: skip
+# A launch parameter or argument: <param name="frame_id" type="string" value="x"/>,
+# <arg name="imu_frame" default="x"/>.
 _PARAMETER = re.compile(
-    r"""name\s{0,3}=\s{0,3}["'][A-Za-z0-9_]{0,60}frame(?:_?id|_?name)?["']\s{1,8}"""
-    r"""value\s{0,3}=\s{0,3}["']/?([A-Za-z_][A-Za-z0-9_/]{0,199})""",
+    r"""name\s{0,3}=\s{0,3}["']""" + _KEY_WORD
+    + r"""["'][^<>]{0,120}?(?:value|default)\s{0,3}=\s{0,3}["']""" + _VALUE,
     re.IGNORECASE,
-)
-
-
+)  # fmt: skip
 # A camera driver's name, from which it builds its frames (realsense2_camera, orbbec_camera:
 # camera_name:=camera_front publishes in camera_front_link, camera_front_color_optical_frame).
 _DEVICE_NAME = re.compile(
-    r"""camera_?name["'\s]{0,3}(?::=|:|=|,)[ \t]{0,8}["']?/?([A-Za-z_][A-Za-z0-9_/]{0,199})"""
-    r"""|name\s{0,3}=\s{0,3}["']camera_?name["']\s{1,8}(?:value|default)\s{0,3}=\s{0,3}["']/?"""
-    r"""([A-Za-z_][A-Za-z0-9_/]{0,199})""",
+    r"""(?<![A-Za-z0-9_])camera_?name["']?[ \t]{0,3}(?::=|:|=)[ \t]{0,8}["']?""" + _VALUE
+    + r"""|name\s{0,3}=\s{0,3}["']camera_?name["'][^<>]{0,120}?(?:value|default)\s{0,3}="""
+    + r"""\s{0,3}["']""" + _VALUE,
     re.IGNORECASE,
-)
+)  # fmt: skip
 
 
-def named_frames(workspace: Workspace, urdf: Urdf) -> dict[str, str]:
-    """Each link of ``urdf`` a file of the robot's packages assigns as a frame id, or names as
-    a camera driver's frames (:func:`_device_frame`), with the first such file (its path in
-    the workspace)."""
+def named_frames(workspace: Workspace, urdf: Urdf, profile: Profile) -> dict[str, str]:
+    """Each link of ``urdf`` a file of the robot's packages gives a driver as its frame id, or
+    names as a camera driver's (:func:`_device_frame`), with how and where first (``frame id
+    in PATH``, ``camera name in PATH``; the path in the workspace)."""
     found: dict[str, str] = {}
+    cameras: dict[str, str | None] = {}  # a camera name -> its link, each resolved once
     for shipped in workspace.files:
         for pattern in (_ASSIGNED, _PARAMETER):
             for match in pattern.finditer(shipped.text):
-                link = match.group(1).rsplit("/", 1)[-1]
-                if link not in found and urdf.has_link(link):
-                    found[link] = shipped.path
+                link = _link(next(g for g in match.groups() if g is not None), urdf)
+                if link is not None and link not in found:
+                    found[link] = f"frame id in {shown(shipped.path)}"
         for match in _DEVICE_NAME.finditer(shipped.text):
-            link = _device_frame((match.group(1) or match.group(2)).rsplit("/", 1)[-1], urdf)
+            name = next(g for g in match.groups() if g is not None).rsplit("/", 1)[-1]
+            if name not in cameras and len(cameras) < _MAX_CAMERA_NAMES:
+                cameras[name] = _device_frame(name, urdf, profile)
+            link = cameras.get(name)
             if link is not None and link not in found:
-                found[link] = shipped.path
+                found[link] = f"camera name in {shown(shipped.path)}"
     return found
 
 
-def _device_frame(name: str, urdf: Urdf) -> str | None:
-    """The link a camera driver named ``name`` publishes in: ``name`` itself, ``name_link``,
-    else the first link whose name begins ``name_`` (its stream frames); None when none is."""
-    for link in (name, f"{name}_link"):
+def _link(value: str, urdf: Urdf) -> str | None:
+    """The link a frame id names: the value, else its last ``/`` segment (a namespace the
+    driver adds); None when the description has neither."""
+    for link in (value, value.rsplit("/", 1)[-1]):
         if urdf.has_link(link):
             return link
-    return next((link.name for link in urdf.links if link.name.startswith(f"{name}_")), None)
+    return None
+
+
+def _device_frame(name: str, urdf: Urdf, profile: Profile) -> str | None:
+    """The link a camera driver named ``name`` publishes in: ``name`` itself, ``name_link``,
+    else the first link whose name begins ``name_`` that the frame rules read as a camera (its
+    stream frames); None when none is."""
+    for exact in (name, f"{name}_link"):
+        if urdf.has_link(exact):
+            return exact
+    for link in urdf.links:
+        if link.name.startswith(f"{name}_"):
+            rule = _rule(link.name, profile)
+            if rule is not None and profile.frame_rules[rule].kind in _CAMERAS:
+                return link.name
+    return None
+
+
+def _rule(link: str, profile: Profile) -> int | None:
+    """The index of the first frame rule that reads ``link``, or None."""
+    rules = profile.frame_rules
+    return next((i for i, rule in enumerate(rules) if rule.accepts(None, link)), None)
 
 
 def sensors_on_frames(
@@ -106,33 +156,53 @@ def sensors_on_frames(
         return ()
     declared = tuple(declared)
     kinds_declared = {d.kind for d in declared}
+    known: dict[str, int | None] = {}
 
     def kind_of(link: str) -> int | None:
-        return next((i for i, rule in enumerate(rules) if rule.accepts(None, link)), None)
+        if link not in known:
+            known[link] = _rule(link, profile)
+        return known[link]
 
-    def body(link: str) -> str:
+    def family(rule: int) -> str:
+        kind = rules[rule].kind
+        return "camera" if kind in _CAMERAS else kind
+
+    def body(link: str, rule: int) -> str:
+        """The device's body: up through fixed joints while the parent reads as a device of
+        the same family (a camera's optical frame under its camera link)."""
         for _ in range(_DEVICE_DEPTH):
             joint = urdf.parent_joint(link)
-            if joint is None or joint.movable or kind_of(joint.parent) is None:
+            above = None if joint is None or joint.movable else kind_of(joint.parent)
+            if joint is None or above is None or family(above) != family(rule):
                 break
             link = joint.parent
         return link
 
-    bodies_declared = {body(d.link) for d in declared if d.link is not None}
-    devices: dict[str, list[tuple[int, str, str]]] = {}  # body -> (rule, frame, file)
-    for link, path in named_frames(workspace, urdf).items():
+    def streams(device: str, rule: int) -> list[int]:
+        """The camera rules of the frames fixed beneath a camera's body, a few levels down."""
+        found, level = [], [device]
+        for _ in range(_DEVICE_DEPTH):
+            below = [j.child for link in level for j in urdf.children(link) if not j.movable]
+            found += [r for r in map(kind_of, below) if r is not None and family(r) == "camera"]
+            level = below
+        return found if family(rule) == "camera" else []
+
+    bodies_declared = set()
+    for detection in declared:
+        rule = None if detection.link is None else kind_of(detection.link)
+        if detection.link is not None:
+            bodies_declared.add(detection.link if rule is None else body(detection.link, rule))
+    devices: dict[str, list[tuple[int, str, str]]] = {}  # body -> (rule, frame, how)
+    for link, how in named_frames(workspace, urdf, profile).items():
         rule = kind_of(link)
         if rule is not None:
-            devices.setdefault(body(link), []).append((rule, link, path))
+            devices.setdefault(body(link, rule), []).append((rule, link, how))
     found = []
     for device, frames in devices.items():
-        rule, link, path = min(frames)
-        # The device's own frames, named or not, say what it is (a depth stream's frame).
-        streams = (kind_of(part) for part in urdf.fixed_below(device))
-        rule = min((rule, *(r for r in streams if r is not None)))
+        rule, link, how = min(frames)
+        rule = min((rule, *streams(device, rule)))
         kind = rules[rule].kind
-        if kind in kinds_declared or kind == "unknown" or device in bodies_declared:
+        if kind in kinds_declared or device in bodies_declared:
             continue
-        name = f"{shown(link)} (frame id in {shown(path)})"
-        found.append(Detection(kind, name, SOURCE, device))
+        found.append(Detection(kind, f"{shown(link)} ({how})", SOURCE, device))
     return tuple(found)

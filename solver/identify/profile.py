@@ -85,6 +85,7 @@ PLUGIN_PARTS = (
     "surface",
     "underwater",
     "spring",
+    "mover",
 )
 FEATURES = (
     "wheels",

@@ -115,6 +115,18 @@ def test_mappings_merge_key_by_key_and_new_rules_come_first(tmp_path: Path) -> N
     assert profile.topic_controls == shipped.topic_controls
 
 
+def test_a_users_frame_rules_come_before_the_shipped_ones(tmp_path: Path) -> None:
+    shipped = load_profile()
+    profile = load_profile(
+        write(
+            tmp_path / "mine.yaml",
+            "extends: shipped\nsensors:\n  frames:\n    - {kind: thermal_camera, match: flir}\n",
+        )
+    )
+    assert profile.frame_rules[0].kind == "thermal_camera"
+    assert profile.frame_rules[1:] == shipped.frame_rules
+
+
 def test_every_problem_of_a_composed_profile_is_located_in_the_users_file(
     tmp_path: Path,
 ) -> None:

@@ -68,22 +68,34 @@ def test_a_frame_no_driver_names_is_no_sensor() -> None:
     assert "gps" not in kinds(DRIVERS)
 
 
-def test_every_way_a_frame_id_is_written_is_read() -> None:
-    urdf = parse_urdf(ROVER, "rover.urdf")
+def test_every_way_a_driver_is_given_its_frame_id_is_read() -> None:
+    urdf = parse_urdf(ROVER.replace("</robot>", fixed("base_link", "r1/imu") + "</robot>"), "r")
     written = {
         "a": 'self.declare_parameter("frame_id", "imu_link")',
         "b": "msg.header.frame_id = 'gps_link'",
-        "c": "<arg name='x'/><param name='camera_frame' value='camera_link' />",
+        "c": "<param name='camera_frame' type='string' value='camera_link' />",
         "d": 'Node(parameters=[{"frame_id": "laser"}])',
         "e": "ros2 run driver node --ros-args -p frame_id:=base_link",
+        "f": '<arg name="imu_frame" default="$(arg ns)/r1/imu"/>',
     }
-    assert set(named_frames(shipping(**written), urdf)) == {
-        "imu_link",
-        "gps_link",
-        "camera_link",
-        "laser",
-        "base_link",
+    assert named_frames(shipping(**written), urdf, PROFILE) == {
+        "imu_link": "frame id in a",
+        "gps_link": "frame id in b",
+        "camera_link": "frame id in c",
+        "laser": "frame id in d",
+        "base_link": "frame id in e",
+        "r1/imu": "frame id in f",
     }
+
+
+def test_a_frame_a_node_only_looks_up_is_no_drivers() -> None:
+    urdf = parse_urdf(ROVER, "rover.urdf")
+    consumers = shipping(
+        nav_yaml="target_frame: camera_link\nrobot_base_frame: laser\n",
+        node_py='tf.lookup_transform(target_frame, "imu_link", now)',
+        ns_yaml="frame_id: robot2/gps_link\n",  # another robot's: its last segment is read
+    )
+    assert named_frames(consumers, urdf, PROFILE) == {"gps_link": "frame id in ns_yaml"}
 
 
 def test_the_streams_of_one_camera_are_one_rgbd_camera() -> None:
@@ -154,9 +166,59 @@ def test_a_camera_driver_named_publishes_in_the_frames_it_builds_from_its_name()
         top_launch='<arg name="camera_name" value="camera_top"/>',
     )
     urdf = parse_urdf(CAMERAS, "base.urdf")
-    assert named_frames(bringup, urdf) == {
-        "camera_front": "bringup_py",
-        "camera_top_base_link": "top_launch",
+    assert named_frames(bringup, urdf, PROFILE) == {
+        "camera_front": "camera name in bringup_py",
+        "camera_top_base_link": "camera name in top_launch",
     }
     # A depth stream's frame beneath the named one says the camera is an RGB-D camera.
     assert kinds(bringup, CAMERAS) == {"depth_camera": 2}
+
+
+def test_a_camera_name_is_its_link_or_name_link_before_any_link_it_begins() -> None:
+    urdf = parse_urdf(
+        '<robot name="r"><link name="base_link"/>'
+        + fixed("base_link", "front_imu_link")
+        + fixed("base_link", "front_camera_optical")
+        + fixed("base_link", "side_link")
+        + fixed("base_link", "side_camera_frame")
+        + "</robot>",
+        "r.urdf",
+    )
+    named = shipping(launch_py='{"camera_name": "front"}, {"camera_name": "side"}')
+    # `front` is no link: the first of its links that is a camera's, not its IMU's; `side`
+    # is drawn as side_link.
+    assert set(named_frames(named, urdf, PROFILE)) == {"front_camera_optical", "side_link"}
+
+
+def test_an_imu_inside_a_camera_is_an_imu_beside_the_camera() -> None:
+    """A D435i: its IMU frame hangs from the camera's body; both are devices."""
+    d435i = (
+        '<robot name="r"><link name="base_link"/>'
+        + fixed("base_link", "camera_link")
+        + fixed("camera_link", "camera_depth_optical_frame")
+        + fixed("camera_link", "camera_imu_optical_frame")
+        + "</robot>"
+    )
+    driver = shipping(
+        rs_launch='{"camera_name": "camera"}, {"imu_frame_id": "camera_imu_optical_frame"}'
+    )
+    assert kinds(driver, d435i) == {"depth_camera": 1, "imu": 1}
+
+
+def test_at_most_64_camera_names_are_looked_up() -> None:
+    urdf = parse_urdf(CAMERAS, "base.urdf")
+    many = "".join(f'{{"camera_name": "nothing_{n}"}}\n' for n in range(64))
+    late = shipping(names_py=many + '{"camera_name": "camera_front"}')
+    assert named_frames(late, urdf, PROFILE) == {}
+    assert named_frames(shipping(names_py=many[:-1]), urdf, PROFILE) == {}
+
+
+def test_only_a_cameras_body_is_named_by_the_camera_frames_beneath_it() -> None:
+    # A compass module carrying a camera: the compass is named by its own frame.
+    mast = (
+        '<robot name="r"><link name="base_link"/>'
+        + fixed("base_link", "compass_link")
+        + fixed("compass_link", "camera_link")
+        + "</robot>"
+    )
+    assert kinds(shipping(mag_yaml="frame_id: compass_link\n"), mast) == {"magnetometer": 1}

@@ -61,6 +61,23 @@ def test_unknown_keys_and_unknown_structures_are_named() -> None:
     assert any("unknown structure 'Quadropod' (did you mean 'Quadruped'?)" in m for m in messages)
 
 
+def frames_block() -> str:
+    """The shipped profile's ``sensors.frames`` block (its comment lines and rules)."""
+    start = SHIPPED.index("  # A link the description only draws")
+    return SHIPPED[start : SHIPPED.index("  # Plugins publishing simulation ground truth")]
+
+
+def test_a_profile_without_frame_rules_reads_no_frame_and_a_bad_rule_is_located() -> None:
+    without = parse_profile(parse_document(SHIPPED.replace(frames_block(), ""), "p.yaml"))
+    assert without.frame_rules == ()
+    bad = SHIPPED.replace(frames_block(), "  frames:\n    - {kind: imu, match: '(?=imu)'}\n")
+    with pytest.raises(ProfileError) as caught:
+        parse_profile(parse_document(bad, "p.yaml"))
+    (fault,) = caught.value.faults
+    assert fault.location.path == "sensors.frames[0].match"
+    assert "invalid regular expression" in fault.message
+
+
 def test_a_profile_that_is_not_a_mapping_is_refused() -> None:
     with pytest.raises(ProfileError):
         parse_profile(parse_document("- a\n- b\n", "list.yaml"))

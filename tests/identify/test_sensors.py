@@ -380,7 +380,8 @@ def test_a_one_ray_range_sensor_is_no_lidar_and_four_of_them_stay_four() -> None
 
 def test_a_ray_sensor_left_at_zero_samples_is_read_by_its_type_not_as_one_ray() -> None:
     # Gazebo casts no ray for <samples>0</samples>: the count says nothing of the device.
-    assert kinds(ray("laser", "head_hokuyo", 0, 3.14, 25.0)) == [("lidar", "LIDAR", 1)]
+    for samples in (0, -1):
+        assert kinds(ray("laser", "head_hokuyo", samples, 3.14, 25.0)) == [("lidar", "LIDAR", 1)]
 
 
 def range_finder(name: str, radiation: str) -> str:

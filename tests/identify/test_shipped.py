@@ -505,5 +505,15 @@ def test_a_body_a_plugin_moves_on_wheels_keeps_its_ground(tmp_path: Path) -> Non
     rover.chain(rover.root, ["right_wheel_joint"], kind="continuous")
     structure, _ = read_with(tmp_path, rover, "<node pkg='auv_control'/>")
     assert structure == "UGV"
+    # A wheel drive (diff drive) is a ground base's, its wheels drawn or not.
+    rover_box = one_link()
+    rover_box.add(
+        '<gazebo><plugin name="drive" filename="libgazebo_ros_diff_drive.so">'
+        "<leftJoint>left_wheel_joint</leftJoint></plugin></gazebo>"
+    )
+    assert read_with(tmp_path / "box", rover_box, "<node pkg='auv_control'/>")[0] == "UGV"
+    both = slid_by_a_plugin()  # a planar move beside a wheel drive: the wheels' base
+    both.add('<gazebo><plugin name="drive" filename="libgazebo_ros_diff_drive.so"/></gazebo>')
+    assert read_with(tmp_path / "both", both, "<node pkg='auv_control'/>")[0] == "UGV"
     # With packages that name no medium, the plugin's box is a ground base as before.
     assert read_with(tmp_path / "quiet", slid_by_a_plugin(), "<node pkg='map_server'/>")[0] == "UGV"

@@ -8,11 +8,13 @@ and sensors inside those macros silently vanish from the URDF. So, in the child,
 document xacro parses (the file and each file it includes) has those keyword tags renamed
 when they carry the attributes only xacro's own tag has (an SDF ``<include>`` names its model
 by a ``<uri>`` child, never ``filename``); and an element that names a macro defined by then
-is called as that macro where a robot's parts are written (in ``<robot>``, a macro's body or
-an ``if``), unless it is one of URDF's own elements there (``link``, ``joint``, ``gazebo``,
-...); inside a ``<gazebo>`` block, SDF's elements keep their names (``<light>``, ``<camera>``:
-a macro named like one is called with the prefix only, as xacro 2 does). Each tag so read
-is a warning (once per tag), as ROS 1's xacro gave.
+is called as that macro, wherever it is, when it is written as a call of it: its attributes
+are the macro's parameters (every one without a default among them), and it holds elements
+only when the macro takes blocks. An element of another language a macro is named like (SDF's
+``<light name type>`` inside ``<gazebo>``, a ``<camera>`` and its settings) does not fit and
+keeps its name, and URDF's own elements (``link``, ``sensor``, ``plugin``, ...) are never
+calls: a macro named like one is called with the prefix only, as xacro 2 does. Each tag so
+read is a warning (once per tag, the first ten named), as ROS 1's xacro gave.
 """
 
 from __future__ import annotations
@@ -33,11 +35,16 @@ _KEYWORDS: dict[str, tuple[str, ...]] = {
     "if": ("value",),
     "unless": ("value",),
 }
-# Where a robot's parts are written: a macro call stands there (SDF's elements, inside a
-# <gazebo> block, have names macros take too: <light>, <camera>).
-_PLACES = frozenset({"robot", "xacro:macro", "xacro:if", "xacro:unless"})
-# URDF's own elements at those places: never read as a macro call unprefixed.
-_ELEMENTS = frozenset({"link", "joint", "transmission", "gazebo", "material", "ros2_control"})
+# URDF's own elements: never read as a macro call unprefixed (a modern file may name a
+# macro ``sensor`` and write URDF sensors beside it).
+_ELEMENTS = frozenset(
+    {
+        "robot", "link", "joint", "transmission", "gazebo", "material", "ros2_control",
+        "sensor", "plugin", "visual", "collision", "inertial", "origin", "geometry",
+    }
+)  # fmt: skip
+# At most this many tags are named in warnings (the child keeps 100 warnings in all).
+_WARNED_TAGS = 10
 
 
 def install(xacro: Any) -> None:
@@ -50,13 +57,17 @@ def install(xacro: Any) -> None:
     def read_as_xacro(node: Any, what: str) -> None:
         tag = node.tagName
         node.tagName = node.nodeName = f"xacro:{tag}"
-        if tag not in warned:
-            warned.add(tag)
-            print(
-                f"deprecated: xacro tag '{tag}' without the 'xacro:' prefix read as {what}, "
-                "as ROS 1's xacro (1.13 and older) read it",
-                file=sys.stderr,
-            )
+        if tag in warned or len(warned) > _WARNED_TAGS:
+            return
+        warned.add(tag)
+        if len(warned) > _WARNED_TAGS:
+            print("deprecated: more xacro tags without the 'xacro:' prefix", file=sys.stderr)
+            return
+        print(
+            f"deprecated: xacro tag '{tag}' without the 'xacro:' prefix read as {what}, "
+            "as ROS 1's xacro (1.13 and older) read it",
+            file=sys.stderr,
+        )
 
     def legacy_parse(*args: Any, **kwargs: Any) -> Any:
         document = parse(*args, **kwargs)
@@ -65,28 +76,36 @@ def install(xacro: Any) -> None:
 
     def legacy_call(node: Any, macros: Any, symbols: Any) -> bool:
         tag = node.tagName
-        if _legacy_call(node) and _defined(xacro, tag, macros, symbols):
-            read_as_xacro(node, "a macro call")
+        if ":" not in tag and tag not in _ELEMENTS:
+            macro = _macro(xacro, tag, macros, symbols)
+            if macro is not None and _fits(node, macro):
+                read_as_xacro(node, "a macro call")
         return call(node, macros, symbols)
 
     xacro.parse = legacy_parse
     xacro.handle_macro_call = legacy_call
 
 
-def _legacy_call(node: Any) -> bool:
-    """``node`` may be a macro call written without the prefix: an unprefixed element, not
-    URDF's own, where a robot's parts are written."""
-    tag = node.tagName
-    parent = getattr(node.parentNode, "tagName", None)
-    return ":" not in tag and tag not in _ELEMENTS and parent in _PLACES
-
-
-def _defined(xacro: Any, name: str, macros: Any, symbols: Any) -> bool:
+def _macro(xacro: Any, name: str, macros: Any, symbols: Any) -> Any:
+    """The macro ``name`` defined by now, or None (a dotted name whose head is no namespace
+    is none either)."""
     try:
-        xacro.resolve_macro(name, macros, symbols)
+        return xacro.resolve_macro(name, macros, symbols)[2]
     except (KeyError, TypeError):
-        return False
-    return True
+        return None
+
+
+def _fits(node: Any, macro: Any) -> bool:
+    """``node`` is written as a call of ``macro``: its attributes are the macro's parameters,
+    every parameter without a default among them, and it holds elements only when the macro
+    takes blocks. An element of another language that a macro is named like (SDF's ``<light
+    name type>``, ``<camera>`` and its settings) does not fit, and is left as it is."""
+    blocks = [p for p in macro.params if p.startswith("*")]
+    plain = {p for p in macro.params if not p.startswith("*")}
+    given = set(node.attributes.keys())
+    required = {p for p in plain if p not in macro.defaultmap}
+    holds = any(child.nodeType == child.ELEMENT_NODE for child in node.childNodes)
+    return given <= plain and required <= given and (bool(blocks) or not holds)
 
 
 def _rename_keywords(node: Any, rename: Callable[[Any, str], None]) -> None:

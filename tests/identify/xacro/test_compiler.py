@@ -408,24 +408,56 @@ def test_ros1_tags_without_the_prefix_are_read_as_ros1_xacro_read_them(tmp_path:
     (tmp_path / "parts.xacro").write_text(
         robot(
             '<macro name="wheel" params="side"><link name="${side}_${size}"/></macro>'
+            '<macro name="hokuyo" params="*origin"><sensor name="scan" type="ray">'
+            '<xacro:insert_block name="origin"/></sensor></macro>'
             '<macro name="link" params=""><link name="never_called"/></macro>'
-            '<xacro:macro name="light" params=""><link name="never_lit"/></xacro:macro>'
+            '<xacro:macro name="light" params="reference"><link name="never_lit"/></xacro:macro>'
+            '<xacro:macro name="camera" params=""><link name="never_seen"/></xacro:macro>'
         )
     )
     path = tmp_path / "r.xacro"
     path.write_text(
         robot(
-            '<property name="size" value="small"/><include filename="parts.xacro"/>'
+            '<arg name="which" default="small"/><property name="size" value="$(arg which)"/>'
+            '<include filename="parts.xacro"/>'
             '<link name="base_link"/><wheel side="left"/><wheel side="right"/>'
             '<if value="false"><link name="dropped"/></if><unless value="false">'
             '<link name="kept"/></unless><gazebo><include><uri>model://gps</uri></include>'
             '<light name="lamp" type="spot"/></gazebo>'
+            '<gazebo reference="base_link"><hokuyo><pose>0 0 1 0 0 0</pose></hokuyo>'
+            "<sensor><camera><horizontal_fov>1</horizontal_fov></camera></sensor></gazebo>"
         )
     )
     compiled = compile_xacro(path, limits=FAST)
-    names = [link.name for link in parse_urdf(compiled.text, "r.urdf", strict=False).links]
-    assert names == ["base_link", "left_small", "right_small", "kept"]
-    assert "<uri>model://gps</uri>" in compiled.text  # an SDF include is no xacro include
-    assert '<light name="lamp" type="spot"/>' in compiled.text  # SDF's light, no macro call
+    urdf = parse_urdf(compiled.text, "r.urdf", strict=False)
+    assert [link.name for link in urdf.links] == ["base_link", "left_small", "right_small", "kept"]
+    # A call inside a <gazebo> block is a call: the macro's sensor, with the block passed in.
+    assert '<sensor name="scan" type="ray"><pose>0 0 1 0 0 0</pose></sensor>' in compiled.text
+    # What is not written as a call is left as it is: an SDF include (no filename), SDF's
+    # light (attributes no parameter of the `light` macro), a camera and its settings (a macro
+    # of no block holds no elements).
+    assert "<uri>model://gps</uri>" in compiled.text
+    assert '<light name="lamp" type="spot"/>' in compiled.text
+    assert "<camera><horizontal_fov>1</horizontal_fov></camera>" in compiled.text
     said = [w.split("'")[1] for w in compiled.warnings if "without the 'xacro:' prefix" in w]
-    assert sorted(said) == ["if", "include", "macro", "property", "unless", "wheel"]  # once each
+    assert sorted(said) == [
+        "arg",
+        "hokuyo",
+        "if",
+        "include",
+        "macro",
+        "property",
+        "unless",
+        "wheel",
+    ]
+
+
+def test_many_unprefixed_tags_are_named_in_ten_warnings_and_one_more(tmp_path: Path) -> None:
+    macros = "".join(f'<macro name="m{n}" params=""><link name="l{n}"/></macro>' for n in range(15))
+    path = tmp_path / "r.xacro"
+    path.write_text(robot(macros + "".join(f"<m{n}/>" for n in range(15))))
+    compiled = compile_xacro(path, limits=FAST)
+    said = [w for w in compiled.warnings if "without the 'xacro:' prefix" in w]
+    assert len(said) == 11  # macro and m0 .. m8, then one line for the rest
+    assert said[-1] == "deprecated: more xacro tags without the 'xacro:' prefix"
+    assert len(parse_urdf(compiled.text, "r.urdf", strict=False).links) == 15
