@@ -179,19 +179,20 @@ def sensors_on_frames(
         return link
 
     def streams(device: str, rule: int) -> list[int]:
-        """The camera rules of the frames fixed beneath a camera's body, a few levels down."""
-        found, level = [], [device]
+        """The camera rules of the frames fixed beneath a camera's body, a few levels down
+        (each link is walked from at most that many bodies above it); none for another kind."""
+        found: list[int] = []
+        level = [device] if family(rule) == "camera" else []
         for _ in range(_DEVICE_DEPTH):
-            below = [j.child for link in level for j in urdf.children(link) if not j.movable]
-            found += [r for r in map(kind_of, below) if r is not None and family(r) == "camera"]
-            level = below
-        return found if family(rule) == "camera" else []
+            level = [j.child for link in level for j in urdf.children(link) if not j.movable]
+            found += [r for r in map(kind_of, level) if r is not None and family(r) == "camera"]
+        return found
 
-    bodies_declared = set()
-    for detection in declared:
-        rule = None if detection.link is None else kind_of(detection.link)
-        if detection.link is not None:
-            bodies_declared.add(detection.link if rule is None else body(detection.link, rule))
+    def body_of(link: str) -> str:
+        rule = kind_of(link)
+        return link if rule is None else body(link, rule)
+
+    bodies_declared = {body_of(d.link) for d in declared if d.link is not None}
     devices: dict[str, list[tuple[int, str, str]]] = {}  # body -> (rule, frame, how)
     for link, how in named_frames(workspace, urdf, profile).items():
         rule = kind_of(link)
