@@ -97,8 +97,8 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
     and a colour and a depth stream on one link are one RGB-D camera. Distinct devices count
     apart even when they share a name (one force sensor per joint), and sensors declared alike
     with names of their own on one link (three cameras on a head frame) are as many. A
-    ``<ros2_control>`` sensor (told by what it reads) counts when no element or plugin declares
-    a device of its kind.
+    ``<ros2_control>`` sensor (told by what it reads, else by its name) counts when no element
+    or plugin declares a device of its kind, and not when neither tells its kind.
     """
     found, beams = _element_detections(urdf, profile, source)
     for plugin in urdf.plugins:
@@ -147,6 +147,7 @@ def _hardware_kept(found: list[tuple[Detection, str]]) -> list[tuple[Detection, 
     """``found`` without the ros2_control sensors of kinds something else declares: such a
     block reads a device declared elsewhere (a Gazebo IMU it names again)."""
     declared = {detection.kind for detection, origin in found if origin != "ros2_control"}
+    declared.add("unknown")  # a ros2_control sensor neither its readings nor its name tell
     return [
         (d, origin) for d, origin in found if origin != "ros2_control" or d.kind not in declared
     ]

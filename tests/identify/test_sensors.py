@@ -629,6 +629,18 @@ def test_a_ros2_control_sensor_is_told_by_what_it_reads() -> None:
     assert sorted(found) == [("force_torque", "Force Sensor", 2), ("imu", None, 1)]
 
 
+def test_a_ros2_control_sensor_whose_readings_say_nothing_is_told_by_its_name() -> None:
+    """A hand's fingertip sensors read x, y, z and its palm's ranger a value (a MuJoCo hand's
+    ros2_control): their names say what they are; a name that says nothing adds none."""
+    found = kinds(
+        hardware_sensor("thumb_tip_force", "x", "y", "z"),
+        hardware_sensor("index_tip_force", "x", "y", "z"),
+        hardware_sensor("palm_range", "value"),
+        hardware_sensor("status_word", "value"),
+    )
+    assert sorted(found) == [("force_torque", "Force Sensor", 2), ("ir_range", None, 1)]
+
+
 def test_a_ros2_control_magnetometer_pressure_gauge_and_named_dvl_are_read() -> None:
     found = kinds(
         hardware_sensor("compass", "magnetic_field.x", "magnetic_field.y"),

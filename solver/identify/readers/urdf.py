@@ -799,7 +799,9 @@ def _hardware_sensors(root: etree._Element) -> list[SensorTag]:
     """The devices a ``<ros2_control>`` block reads, told by their state interfaces: a wrench
     (``force.x`` .. ``torque.z``, or a load cell's one ``force``) is a force-torque sensor,
     angular velocity or linear acceleration an IMU, a magnetic field a magnetometer, a fluid
-    pressure a barometer (a depth gauge below the water), a velocity a DVL named so. A pose
+    pressure a barometer (a depth gauge below the water), a velocity a DVL named so; a
+    ``<sensor>`` whose readings say none of these (``x``, ``y``, ``z``; ``value``) is of type
+    ``unknown``, told by its name as a URDF ``<sensor>`` with no type is. A pose
     (``tcp_pose``) is computed, not read, and a block named as an estimate
     (``external_wrench_in_base``) is the controller's reckoning from the joints' torques, not a
     device of its own. A block of ``type="sensor"`` that writes its readings on joints instead
@@ -824,6 +826,8 @@ def _device(element: etree._Element, states: list[etree._Element]) -> SensorTag 
     name = (element.get("name") or "").strip()
     readings = {(state.get("name") or "").strip().lower().split(".", 1)[0] for state in states}
     kind = _hardware_kind(name, readings)
+    if kind is None and element.tag == "sensor":
+        kind = "unknown"  # its readings do not say (x, y, z; value): told by its name
     if kind is None or _ESTIMATE.search(name):
         return None
     frame = next(
