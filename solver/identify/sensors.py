@@ -144,8 +144,9 @@ def _element_detections(
 
 
 def _hardware_kept(found: list[tuple[Detection, str]]) -> list[tuple[Detection, str]]:
-    """``found`` without the ros2_control sensors of kinds something else declares: such a
-    block reads a device declared elsewhere (a Gazebo IMU it names again)."""
+    """``found`` without the ros2_control sensors of kinds something else declares (such a
+    block reads a device declared elsewhere: a Gazebo IMU it names again), nor those whose
+    readings and name both say nothing of their kind (``unknown``)."""
     declared = {detection.kind for detection, origin in found if origin != "ros2_control"}
     declared.add("unknown")  # a ros2_control sensor neither its readings nor its name tell
     return [
