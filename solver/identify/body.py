@@ -33,7 +33,7 @@ Not here: deciding the structure (:mod:`solver.identify.classifier`).
 from __future__ import annotations
 
 from collections.abc import Iterable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from solver.identify.actuation import joint_roles, with_role
 from solver.identify.hands import finger_groups, finger_tips, gripper_closure, stacked_grippers
@@ -208,24 +208,13 @@ class Body:
     def moved_by_plugin_alone(self) -> bool:
         """Plugins that move the body itself move it (a planar move, a velocity control: the
         profile's ``mover`` plugins; no diff-drive or other wheel drive among its drive
-        plugins), and nothing of it is on the ground or says how it travels: no wheel, track,
-        caster, fixed wheel or planar root joint, no flight or water cue, no gripper, finger,
-        arm, leg or spine. The simulator slides it; what it travels in is not said."""
+        plugins), and without them it travels no way (:attr:`travels_no_way`: no wheel,
+        track, caster or planar root joint, no flight or water cue, no gripper, finger, arm,
+        leg or spine). The simulator slides it; what it travels in is not said."""
         return (
             bool(self.mover_plugins)
             and set(self.drive_plugins) <= set(self.mover_plugins)
-            and not (
-                self.wheels
-                or self.tracks
-                or self.casters
-                or self.fixed_wheels
-                or self.planar_base
-                or self.flying
-                or self.marine
-                or self.grippers
-                or self.fingers
-                or any(limb.kind in ("arm", "leg", "spine") for limb in self.limbs)
-            )
+            and replace(self, drive_plugins=()).travels_no_way
         )
 
     @property

@@ -427,7 +427,7 @@ def _rays(tag: SensorTag) -> int | None:
     axes = [n for n in (tag.horizontal_samples, tag.vertical_samples) if n is not None]
     if not axes or any(n < 1 for n in axes):
         return None
-    return max(tag.horizontal_samples or 1, 1) * max(tag.vertical_samples or 1, 1)
+    return (tag.horizontal_samples or 1) * (tag.vertical_samples or 1)
 
 
 def plugin_kind(plugin: PluginTag, profile: Profile) -> str | None:
