@@ -216,3 +216,33 @@ def test_read_a_workspace_of_20000_packages(benchmark: BenchmarkFixture, tmp_pat
     assert len(found.packages) == len(found.files) + 1  # the description's package has none
     assert not found.complete
     assert found.shown_packages.endswith(f" and {len(found.packages) - 12:,} more")
+
+
+def test_read_the_frames_of_a_4000_link_chain_each_named(
+    benchmark: BenchmarkFixture, tmp_path: Path
+) -> None:
+    """A stranger's description of 4,000 camera links chained by fixed joints, each named a
+    frame id in a file, and a file of 10,000 camera names no link has: each link's rule is
+    found once, a device's body is at most three joints up, at most 64 camera names are looked
+    up. Each link from the fourth hangs from its own body three links up: 3,997 devices."""
+    from solver.identify import load_profile
+    from solver.identify.frames import sensors_on_frames
+    from solver.identify.readers.urdf import parse_urdf
+    from solver.identify.readers.workspace import ShippedFile, Workspace
+
+    links, parent = 4000, "base_link"
+    parts = ['<robot name="r"><link name="base_link"/>']
+    for i in range(links):
+        parts.append(
+            f'<link name="cam{i}_link"/><joint name="j{i}" type="fixed">'
+            f'<parent link="{parent}"/><child link="cam{i}_link"/></joint>'
+        )
+        parent = f"cam{i}_link"
+    urdf = parse_urdf("".join(parts) + "</robot>", "r.urdf")
+    named = "".join(f"frame_id: cam{i}_link\n" for i in range(links))
+    names = "".join(f"camera_name: nothing_{i}\n" for i in range(10_000))
+    files = (ShippedFile("r_bringup", "a.yaml", named), ShippedFile("r_bringup", "b.yaml", names))
+    packages = Workspace("/ws/src", "r_description", ("r_bringup",), files)
+    found = _once(benchmark, sensors_on_frames, packages, urdf, load_profile(), ())
+    assert len(found) == links - 3
+    assert {d.kind for d in found} == {"camera"}
