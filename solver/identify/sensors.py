@@ -111,6 +111,8 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
             link = joint.child  # a sensor on a joint measures at the joint's child link
         name = plugin.name or plugin.filename
         if simulated == "unknown":
+            simulated = _told_by_name(plugin.text, profile)
+        if simulated == "unknown":
             name = f"{name} ({plugin.filename or plugin.name})"
         found.append((Detection(simulated, name, source, link), "plugin"))
     for model in urdf.models:
@@ -418,6 +420,17 @@ def element_kind(tag: SensorTag, profile: Profile) -> str:
         if rule.match is not None and rule.accepts(kind, tag.text, rays=rays):
             return rule.kind
     return kind
+
+
+def _told_by_name(text: str, profile: Profile) -> str:
+    """The kind of a sensor nothing but its names tell (a Gazebo plugin that only says it is a
+    sensor, ``libgazebo_ros_ray_sensor.so`` outside any ``<sensor>``): read by the element rules
+    for a ``<sensor>`` of no type, over its name, file name and settings (its topics: a
+    ``range`` it publishes, an ``ultrasonic`` one); ``unknown`` when they do not tell."""
+    for rule in profile.element_rules:
+        if rule.match is not None and rule.accepts("unknown", text):
+            return rule.kind
+    return "unknown"
 
 
 def _rays(tag: SensorTag) -> int | None:

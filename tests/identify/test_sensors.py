@@ -769,3 +769,22 @@ def test_two_dvls_declared_as_such_are_two_devices() -> None:
         auv.fixed(auv.root, f"dvl_{side}_link")
         auv.add(gazebo_sensor(f"dvl_{side}_link", "dvl", f"dvl_{side}", plugin=f"libdvl_{side}.so"))
     assert _kinds(auv.text())["dvl"] == 2
+
+
+def test_a_sensor_plugin_outside_any_sensor_element_is_told_by_its_names_and_topics() -> None:
+    # libgazebo_ros_ray_sensor.so written straight under <gazebo> says only "sensor": what it
+    # publishes tells a range finder, an ultrasonic one a sonar; a plugin nothing tells stays
+    # a sensor of unknown kind.
+    robot = builders.ugv()
+    for name, remap in [
+        ("tof_left_plugin", "range:=/distance/left"),
+        ("tof_right_plugin", "range:=/distance/right"),
+        ("front_plugin", "range:=/ultrasonic/front"),
+    ]:
+        robot.add(
+            builders.model_plugin(
+                name, "libgazebo_ros_ray_sensor.so", f"<ros><remapping>{remap}</remapping></ros>"
+            )
+        )
+    robot.add(builders.model_plugin("mystery_plugin", "libgazebo_ros_ray_sensor.so"))
+    assert _kinds(robot.text()) == {"ir_range": 2, "sonar": 1, "unknown": 1}
