@@ -222,3 +222,18 @@ def test_only_a_cameras_body_is_named_by_the_camera_frames_beneath_it() -> None:
         + "</robot>"
     )
     assert kinds(shipping(mag_yaml="frame_id: compass_link\n"), mast) == {"magnetometer": 1}
+
+
+def test_a_frame_named_for_a_sonar_model_is_a_sonar() -> None:
+    # A Ping360 or a BlueView imaging sonar's frame says its model, not "sonar".
+    vehicle = (
+        '<robot name="auv"><link name="base_link"/>'
+        + fixed("base_link", "ping360_link")
+        + fixed("base_link", "blueview")
+        + "</robot>"
+    )
+    drivers = shipping(
+        ping_yaml="ping360_node:\n  frame_id: auv/ping360_link\n",
+        blueview_launch="<rosparam>frame_id: blueview</rosparam>",
+    )
+    assert kinds(drivers, vehicle) == {"sonar": 2}
