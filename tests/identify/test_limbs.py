@@ -945,6 +945,29 @@ def test_alike_chains_starting_in_mirrored_pairs_at_a_bodys_corners_are_legs_how
     assert "leg" not in [limb.kind for limb in tracked.body.limbs]
 
 
+def quadruped_drawn_y_up(heights: tuple[float, ...] = (0.05, 0.05, 0.05, 0.05)) -> RobotText:
+    """Four unnamed three-joint chains on a body a CAD export drew with y up: the hips at the
+    corners of the x-z plane, at ``heights`` along y, each leg reaching down y."""
+    robot = RobotText("r")
+    corners = ((0.3, 0.1), (0.3, -0.1), (-0.3, 0.1), (-0.3, -0.1))
+    for i, ((x, z), y) in enumerate(zip(corners, heights, strict=True)):
+        placed_chain(
+            robot,
+            robot.root,
+            f"k{i}_",
+            start=f"{x} {y} {z}",
+            steps=[f"0 0 {z / 2}", "0 -0.2 0", "0 -0.2 0"],
+        )
+    return robot
+
+
+def test_alike_chains_at_the_corners_of_a_body_drawn_with_y_up_are_legs() -> None:
+    assert identify_urdf(quadruped_drawn_y_up().text()).structure == "Quadruped"
+    # Hips at four heights along that axis are at no plane's corners.
+    uneven = quadruped_drawn_y_up(heights=(0.05, 0.3, -0.2, 0.1))
+    assert identify_urdf(uneven.text()).structure != "Quadruped"
+
+
 def test_a_hexapods_coxa_femur_and_tibia_abbreviated_are_leg_names() -> None:
     leg = load_profile().pattern("leg")
     assert leg is not None
