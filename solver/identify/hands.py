@@ -3,7 +3,8 @@
 A gripper joint (named so by the profile, or on a link named as a hand or palm:
 :mod:`solver.identify.roles`) moves a finger, and so does every movable joint below one (a
 finger's phalanges): :func:`gripper_closure`. Fingers whose chains carry no names are still
-told by where they are, side by side on one palm in threes or more (:func:`finger_groups`).
+told by where they are, side by side on one palm in threes or more, or in a two-finger
+gripper's pair, short and close together (:func:`finger_groups`).
 Jaws are told by where they are too (:func:`jaws`): joints side by side on one link that turn
 or slide about one line with nothing beyond them but their own followers (a linkage of mimic
 joints), closed by one motion (mimic joints follow one driver; not on a head, where a mirrored
@@ -22,7 +23,7 @@ import re
 
 from solver.identify.couplings import Walk, jaw_groups
 from solver.identify.limbs import Limb, moved_by
-from solver.identify.pose import local_axis, parallel
+from solver.identify.pose import distance, local_axis, parallel
 from solver.identify.readers.urdf import Joint
 from solver.identify.tree import JointTree
 
@@ -36,6 +37,9 @@ _FINGER = re.compile(r"finger|thumb|knuckle|phalan", re.IGNORECASE)
 _CHAIN_BEFORE_JAWS = 2
 # Places this close (metres) are one place.
 _SAME = 1e-4
+# The farthest a finger reaches from its first joint to its tip (metres): a hand's finger is
+# about 0.1 m, a gripper's jaw less; an arm, even a small one, reaches farther.
+_FINGER_REACH = 0.15
 
 
 def jaws(tree: JointTree, taken: set[str]) -> dict[str, str]:
@@ -263,7 +267,8 @@ def finger_groups(
 ) -> set[str]:
     """Joints of unnamed short chains hanging from one palm (a link, and the links fixed to it:
     a metacarpal each) in threes or more: fingers (also where each ends in a named fingertip);
-    failing that, fingers that spread on joints of their own, and chains beside a thumb.
+    failing that, fingers that spread on joints of their own, chains beside a thumb, and a
+    two-finger gripper's two short chains close together (:func:`_two_fingers`).
 
     A claw or a hand whose fingers carry no names still has them side by side on a palm; arms
     and legs on one link come in ones and twos. On a body that moves on the ground, chains on
@@ -304,7 +309,40 @@ def finger_groups(
         for name in grippers
         if (joint := tree.urdf.joint(name)) is not None
     )
-    return _spread_fingers(tree, by_base) or _beside_a_thumb(tree, on_palm, palms)
+    return (
+        _spread_fingers(tree, by_base)
+        or _beside_a_thumb(tree, on_palm, palms)
+        or _two_fingers(tree, by_palm, on_palm)
+    )
+
+
+def _two_fingers(
+    tree: JointTree,
+    by_palm: dict[str | None, list[Limb]],
+    on_palm: dict[str | None, list[Limb]],
+) -> set[str]:
+    """Two unnamed short chains, the only chains on one rigid body, each reaching no farther
+    than a finger (:data:`_FINGER_REACH`) and starting closer to each other than half that
+    reach: a two-finger gripper whose fingers bend on joints of their own. A torso's two arms
+    start a shoulder's width apart and reach farther; chains drawn at no place (every joint at
+    its parent's origin) say nothing of their size."""
+    found: set[str] = set()
+    for body, group in by_palm.items():
+        if len(group) != 2 or len(on_palm.get(body, ())) != 2:
+            continue
+        ends = []
+        for limb in group:
+            first = tree.urdf.joint(limb.joints[0])
+            if first is None:
+                break
+            ends.append((tree.poses.place(first.child), tree.poses.place(limb.tip)))
+        if len(ends) != 2:
+            continue
+        reaches = [distance(start, end) for start, end in ends]
+        apart = distance(ends[0][0], ends[1][0])
+        if min(reaches) > _SAME and max(reaches) <= _FINGER_REACH and apart <= min(reaches) / 2:
+            found.update(name for limb in group for name in limb.joints)
+    return found
 
 
 def _beside_a_thumb(

@@ -515,3 +515,33 @@ def test_stacked_gripper_joints_with_two_jaws_side_by_side_or_a_follower_stay_a_
         assert result.structure == "UGV"
         assert result.body is not None
         assert result.body.limbs == ()
+
+
+def two_chains(apart: float, link: float) -> RobotText:
+    """Two unnamed three-joint chains on one link, their first joints ``apart`` metres from
+    each other, each link of them ``link`` metres long (straight up)."""
+    robot = RobotText("r")
+    for side, y in (("a", apart / 2), ("b", -apart / 2)):
+        link_name = builders.placed(
+            robot, f"{side}0", "revolute", robot.root, f"{side}l0", xyz=f"0 {y} 0.04", axis="0 1 0"
+        )
+        for i in (1, 2):
+            link_name = builders.placed(
+                robot,
+                f"{side}{i}",
+                "revolute",
+                link_name,
+                f"{side}l{i}",
+                xyz=f"0 0 {link}",
+                axis="1 0 0",
+            )
+    return robot
+
+
+def test_two_short_unnamed_chains_close_together_are_a_two_finger_grippers_fingers() -> None:
+    # A two-finger gripper whose fingers bend on three joints each, 1.6 cm apart, about 8 cm
+    # long, names saying nothing (j_1_1 .. j_2_3): no torso of two arms.
+    assert identify_urdf(two_chains(apart=0.016, link=0.04).text()).structure == "Gripper"
+    # Two arms a shoulder's width apart, or reaching farther than a finger, stay arms.
+    assert identify_urdf(two_chains(apart=0.3, link=0.04).text()).structure == "Torso"
+    assert identify_urdf(two_chains(apart=0.016, link=0.3).text()).structure == "Torso"
