@@ -528,7 +528,7 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
     if fingers:
         for name in fingers:
             parts.roles[name] = Role(
-                name, "gripper", "a short unnamed chain beside two more on one link (a finger)"
+                name, "gripper", "a short unnamed chain beside others on one palm (a finger)"
             )
         parts.grippers = gripper_closure(tree, parts.grippers | fingers)
         parts.limbs, parts.trunk, parts.hosts = find_limbs(

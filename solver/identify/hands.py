@@ -321,28 +321,30 @@ def _two_fingers(
     by_palm: dict[str | None, list[Limb]],
     on_palm: dict[str | None, list[Limb]],
 ) -> set[str]:
-    """Two unnamed short chains, the only chains on one rigid body, each reaching no farther
-    than a finger (:data:`_FINGER_REACH`) and starting closer to each other than half that
-    reach: a two-finger gripper whose fingers bend on joints of their own. A torso's two arms
-    start a shoulder's width apart and reach farther; chains drawn at no place (every joint at
-    its parent's origin) say nothing of their size."""
-    found: set[str] = set()
-    for body, group in by_palm.items():
-        if len(group) != 2 or len(on_palm.get(body, ())) != 2:
-            continue
-        ends = []
-        for limb in group:
-            first = tree.urdf.joint(limb.joints[0])
-            if first is None:
-                break
-            ends.append((tree.poses.place(first.child), tree.poses.place(limb.tip)))
-        if len(ends) != 2:
-            continue
-        reaches = [distance(start, end) for start, end in ends]
-        apart = distance(ends[0][0], ends[1][0])
-        if min(reaches) > _SAME and max(reaches) <= _FINGER_REACH and apart <= min(reaches) / 2:
-            found.update(name for limb in group for name in limb.joints)
-    return found
+    """Two unnamed short chains, the only chains of the body and both on its root's rigid body
+    (a gripper alone), each reaching no farther than a finger (:data:`_FINGER_REACH`, from its
+    first joint to its last link), starting apart but closer to each other than half the
+    shorter one's reach: a two-finger gripper whose fingers bend on joints of their own. A
+    torso's two arms start a shoulder's width apart and reach farther, or start at one place
+    (the chest's middle, the shoulder's offset on their second joint); chains on a moving body
+    are a head's or a tool's; chains drawn at no place (every joint at its parent's origin) say
+    nothing of their size."""
+    group = by_palm.get(None, [])
+    if len(group) != 2 or sum(len(chains) for chains in on_palm.values()) != 2:
+        return set()
+    ends = []
+    for limb in group:
+        first = tree.urdf.joint(limb.joints[0])
+        if first is None:
+            return set()
+        ends.append((tree.poses.place(first.child), tree.poses.place(limb.tip)))
+    reaches = [distance(start, end) for start, end in ends]
+    apart = distance(ends[0][0], ends[1][0])
+    if min(reaches) <= _SAME or max(reaches) > _FINGER_REACH:
+        return set()
+    if not _SAME < apart <= min(reaches) / 2:
+        return set()
+    return {name for limb in group for name in limb.joints}
 
 
 def _beside_a_thumb(

@@ -637,27 +637,14 @@ def _third_turn_symmetric(starts: list[Place]) -> bool:
 def _at_corners(tree: JointTree, base: str, group: list[Limb]) -> bool:
     """The chains start at the corners of ``base``: in pairs mirrored across it (left and right
     at one place along it), spread front to back at least as far as a pair is from the middle.
-    A walker's hips are so, however its legs are folded in the zero pose (and whichever axis
-    its drawing has up); a hand's fingers start side by side along one edge of the palm."""
+    A walker's hips are so, however its legs are folded in the zero pose; a hand's fingers
+    start side by side along one edge of the palm."""
     placed = _placed(tree, group)
     if placed is None:
         return False
-    cx, cy, cz = tree.poses.place(base)
-    starts = [(x - cx, y - cy, z - cz) for (x, y, z), _ in placed]
-    # Facing z up; else a body a CAD export drew with y (or x) up: its hips level along that
-    # axis, at the corners of the plane across it.
-    planes = (
-        ([(x, y) for x, y, _ in starts], None),
-        ([(x, z) for x, _, z in starts], [y for _, y, _ in starts]),
-        ([(y, z) for _, y, z in starts], [x for x, _, _ in starts]),
-    )
-    for corners, heights in planes:
-        size = max((abs(v) for corner in corners for v in corner), default=0.0)
-        if heights is not None and spread(heights) > _MIRRORED * size:
-            continue
-        if _corners_either_way(corners):
-            return True
-    return False
+    centre = tree.poses.place(base)
+    corners = [(s[0] - centre[0], s[1] - centre[1]) for s, _ in placed]
+    return _corners_either_way(corners)
 
 
 def _corners_either_way(corners: list[tuple[float, float]]) -> bool:

@@ -65,6 +65,10 @@ _CAMERA_BODY = re.compile(r"camera|realsense|kinect|openni|xtion", re.IGNORECASE
 _SIDE = re.compile(r"(^|[_/-])(l|r|left|right)([_/-]|$)", re.IGNORECASE)
 # The widest baseline of a stereo camera (metres): two frames farther apart are two cameras.
 _BASELINE = 0.3
+# A Gazebo plugin that casts rays (gazebo_ros_ray_sensor, a GPU ray sensor), and the outputs of
+# one that sweeps a scan.
+_RAY_PLUGIN = re.compile(r"(^|[^a-z])(gpu_?)?ray([^a-z]|$)", re.IGNORECASE)
+_SCAN_OUTPUT = re.compile(r"laserscan|pointcloud", re.IGNORECASE)
 
 
 @dataclass(frozen=True, slots=True)
@@ -110,8 +114,8 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
         if link is None and joint is not None:
             link = joint.child  # a sensor on a joint measures at the joint's child link
         name = plugin.name or plugin.filename
-        if simulated == "unknown":
-            simulated = _told_by_name(plugin.text, profile)
+        if simulated == "unknown" and _RAY_PLUGIN.search(plugin.filename or plugin.name):
+            simulated = _ray_plugin_kind(plugin, profile)
         if simulated == "unknown":
             name = f"{name} ({plugin.filename or plugin.name})"
         found.append((Detection(simulated, name, source, link), "plugin"))
@@ -422,15 +426,21 @@ def element_kind(tag: SensorTag, profile: Profile) -> str:
     return kind
 
 
-def _told_by_name(text: str, profile: Profile) -> str:
-    """The kind of a sensor nothing but its names tell (a Gazebo plugin that only says it is a
-    sensor, ``libgazebo_ros_ray_sensor.so`` outside any ``<sensor>``): read by the element rules
-    for a ``<sensor>`` of no type, over its name, file name and settings (its topics: a
-    ``range`` it publishes, an ``ultrasonic`` one); ``unknown`` when they do not tell."""
+def _ray_plugin_kind(plugin: PluginTag, profile: Profile) -> str:
+    """The device a ray sensor plugin written outside any ``<sensor>`` simulates (Gazebo's
+    ``libgazebo_ros_ray_sensor.so`` straight under ``<gazebo>``; it says how many rays it casts
+    nowhere): told by its names and topics as a ray ``<sensor>`` is (a DVL, a sonar, an
+    infrared ranger), a range finder when it publishes a range (its output type, or a topic or
+    remapping named so, as the profile's rule for a ``<sensor>`` of no type reads), else a
+    lidar (its default output, a point cloud; a scan it says it publishes)."""
+    text = plugin.text
     for rule in profile.element_rules:
-        if rule.match is not None and rule.accepts("unknown", text):
+        if rule.match is not None and rule.accepts("ray", text):
             return rule.kind
-    return "unknown"
+    if _SCAN_OUTPUT.search(plugin.param("output_type") or ""):
+        return "lidar"
+    ranges = (rule for rule in profile.element_rules if rule.kind == "ir_range")
+    return "ir_range" if any(rule.accepts("unknown", text) for rule in ranges) else "lidar"
 
 
 def _rays(tag: SensorTag) -> int | None:

@@ -517,13 +517,17 @@ def test_stacked_gripper_joints_with_two_jaws_side_by_side_or_a_follower_stay_a_
         assert result.body.limbs == ()
 
 
-def two_chains(apart: float, link: float) -> RobotText:
+def two_chains(apart: float, link: float, *, on: str = "", third: bool = False) -> RobotText:
     """Two unnamed three-joint chains on one link, their first joints ``apart`` metres from
-    each other, each link of them ``link`` metres long (straight up)."""
+    each other, each link of them ``link`` metres long (straight up); ``on``: that link is
+    turned by a joint of this name on the root; ``third``: a third chain elsewhere."""
     robot = RobotText("r")
+    palm = robot.root
+    if on:
+        palm = builders.placed(robot, on, "revolute", palm, "chest", xyz="0 0 0.1", axis="0 0 1")
     for side, y in (("a", apart / 2), ("b", -apart / 2)):
         link_name = builders.placed(
-            robot, f"{side}0", "revolute", robot.root, f"{side}l0", xyz=f"0 {y} 0.04", axis="0 1 0"
+            robot, f"{side}0", "revolute", palm, f"{side}l0", xyz=f"0 {y} 0.04", axis="0 1 0"
         )
         for i in (1, 2):
             link_name = builders.placed(
@@ -535,6 +539,8 @@ def two_chains(apart: float, link: float) -> RobotText:
                 xyz=f"0 0 {link}",
                 axis="1 0 0",
             )
+    if third:
+        robot.chain(robot.root, ["c0", "c1", "c2", "c3", "c4", "c5"])
     return robot
 
 
@@ -542,6 +548,16 @@ def test_two_short_unnamed_chains_close_together_are_a_two_finger_grippers_finge
     # A two-finger gripper whose fingers bend on three joints each, 1.6 cm apart, about 8 cm
     # long, names saying nothing (j_1_1 .. j_2_3): no torso of two arms.
     assert identify_urdf(two_chains(apart=0.016, link=0.04).text()).structure == "Gripper"
-    # Two arms a shoulder's width apart, or reaching farther than a finger, stay arms.
-    assert identify_urdf(two_chains(apart=0.3, link=0.04).text()).structure == "Torso"
-    assert identify_urdf(two_chains(apart=0.016, link=0.3).text()).structure == "Torso"
+    # Two arms a shoulder's width apart (farther than half their reach), reaching farther than
+    # a finger, starting at one place (the chest's middle), or on a body a joint turns (a
+    # torso; a head's antennae): arms.
+    for robot in (
+        two_chains(apart=0.06, link=0.04),
+        two_chains(apart=0.016, link=0.3),
+        two_chains(apart=0.0, link=0.04),
+        two_chains(apart=0.016, link=0.04, on="waist"),
+    ):
+        assert identify_urdf(robot.text()).structure == "Torso"
+    # Beside a third chain of the body (an arm on the same base), no gripper alone.
+    beside = identify_urdf(two_chains(apart=0.016, link=0.04, third=True).text())
+    assert "finger" not in {role.role for role in beside.roles}

@@ -771,20 +771,29 @@ def test_two_dvls_declared_as_such_are_two_devices() -> None:
     assert _kinds(auv.text())["dvl"] == 2
 
 
-def test_a_sensor_plugin_outside_any_sensor_element_is_told_by_its_names_and_topics() -> None:
-    # libgazebo_ros_ray_sensor.so written straight under <gazebo> says only "sensor": what it
-    # publishes tells a range finder, an ultrasonic one a sonar; a plugin nothing tells stays
-    # a sensor of unknown kind.
+def test_a_ray_sensor_plugin_outside_any_sensor_element_is_told_by_its_names_and_topics() -> None:
+    # libgazebo_ros_ray_sensor.so written straight under <gazebo> says nothing of its rays:
+    # what it publishes tells a range finder, an ultrasonic one a sonar, a scan (even in a
+    # frame named for a range finder) or nothing a lidar. Another plugin that only says it is a
+    # sensor stays one of unknown kind, whatever its topics say (a wheel encoder's distance,
+    # a contact sensor named for a simulation).
     robot = builders.ugv()
-    for name, remap in [
-        ("tof_left_plugin", "range:=/distance/left"),
-        ("tof_right_plugin", "range:=/distance/right"),
-        ("front_plugin", "range:=/ultrasonic/front"),
+    ray = "libgazebo_ros_ray_sensor.so"
+    for name, params in [
+        ("tof_left_plugin", "<ros><remapping>range:=/distance/left</remapping></ros>"),
+        ("tof_right_plugin", "<output_type>sensor_msgs/Range</output_type>"),
+        ("front_plugin", "<ros><remapping>range:=/ultrasonic/front</remapping></ros>"),
+        (
+            "hokuyo_plugin",
+            "<output_type>sensor_msgs/LaserScan</output_type>"
+            "<frame_name>laser_range_finder</frame_name>",
+        ),
     ]:
-        robot.add(
-            builders.model_plugin(
-                name, "libgazebo_ros_ray_sensor.so", f"<ros><remapping>{remap}</remapping></ros>"
-            )
+        robot.add(builders.model_plugin(name, ray, params))
+    robot.add(
+        builders.model_plugin(
+            "encoder", "libwheel_encoder_sensor.so", "<topic>wheel/distance</topic>"
         )
-    robot.add(builders.model_plugin("mystery_plugin", "libgazebo_ros_ray_sensor.so"))
-    assert _kinds(robot.text()) == {"ir_range": 2, "sonar": 1, "unknown": 1}
+    )
+    robot.add(builders.model_plugin("bumper_simulation", "libcontact_sensor.so"))
+    assert _kinds(robot.text()) == {"ir_range": 2, "sonar": 1, "lidar": 1, "unknown": 2}
