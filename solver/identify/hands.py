@@ -321,10 +321,11 @@ def _two_fingers(
     by_palm: dict[str | None, list[Limb]],
     on_palm: dict[str | None, list[Limb]],
 ) -> set[str]:
-    """Two unnamed short chains, the only chains of the body and both on its root's rigid body
-    (a gripper alone), each reaching no farther than a finger (:data:`_FINGER_REACH`, from its
-    first joint to its last link), starting apart but closer to each other than half the
-    shorter one's reach: a two-finger gripper whose fingers bend on joints of their own. A
+    """Two unnamed short chains, the body's only chains but its legs and heads, both on its
+    root's rigid body (a gripper alone), each reaching no farther than a finger
+    (:data:`_FINGER_REACH`, from its first joint to its last link), starting apart but closer
+    to each other than half the shorter one's reach: a two-finger gripper whose fingers bend
+    on joints of their own. A
     torso's two arms start a shoulder's width apart and reach farther, or start at one place
     (the chest's middle, the shoulder's offset on their second joint); chains on a moving body
     are a head's or a tool's; chains drawn at no place (every joint at its parent's origin) say

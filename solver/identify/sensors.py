@@ -6,7 +6,9 @@ IMU, GPS, barometer; RotorS' IMU and odometry), a Gazebo model the description i
 (``<gazebo><include><uri>model://gps</uri>``, read by its model name with the plugin rules),
 or a device in a topic list or bag
 (:mod:`solver.identify.interfaces`). The profile's rules give each its *kind* (``lidar``,
-``depth_camera``, ``sonar``, ...). Plugins that publish simulation ground truth are skipped, and
+``depth_camera``, ``sonar``, ...); a ray sensor plugin written outside any ``<sensor>``, which
+says nothing of its rays, is told by its names and topics (:func:`_ray_plugin_kind`). Plugins
+that publish simulation ground truth are skipped, and
 a plugin that feeds an element already counted (same kind, same link) is the same sensor, and
 depth streams on sibling frames of one camera link are one RGB-D camera, and a depth stream on
 a stereo camera's frame is the pair's. :func:`under_water`
