@@ -98,8 +98,9 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
     """The sensors a URDF declares, one per physical device, in document order.
 
     One device declared twice (a Gazebo ``<sensor>`` and a URDF ``<sensor>``, a plugin feeding
-    an element, two parts of one IMU on one link) counts once; so does a device whose beams
-    hang from its own link on joints that do not move (a DVL plugin and its four range rays),
+    an element or written again outside it, two parts of one IMU on one link) counts once; so
+    does a device whose beams hang from its own link on joints that do not move (a DVL plugin
+    and its four range rays),
     and a colour and a depth stream on one link are one RGB-D camera. Distinct devices count
     apart even when they share a name (one force sensor per joint), and sensors declared alike
     with names of their own on one link (three cameras on a head frame) are as many. A
@@ -107,9 +108,12 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
     or plugin declares a device of its kind, and not when neither tells its kind.
     """
     found, beams = _element_detections(urdf, profile, source)
+    # A plugin a <sensor> runs, written again outside it (the same name, file and settings):
+    # the element's, declared twice.
+    inside = {_same_plugin(p) for tag in urdf.sensors for p in tag.plugins}
     for plugin in urdf.plugins:
         simulated = plugin_kind(plugin, profile)
-        if simulated is None:
+        if simulated is None or _same_plugin(plugin) in inside:
             continue
         link = plugin.param(*_LINK_PARAMS) or plugin.reference
         joint = urdf.joint(plugin.param(*_JOINT_PARAMS) or "")
@@ -126,6 +130,11 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
         if included is not None:
             found.append((Detection(included, model.name, source, model.link), "model"))
     return tuple(_devices(_hardware_kept(found), urdf, beams))
+
+
+def _same_plugin(plugin: PluginTag) -> tuple[str, str, tuple[tuple[str, str], ...]]:
+    """What makes two plugin declarations one: name, file name and settings."""
+    return (plugin.name, plugin.filename, plugin.params)
 
 
 def _element_detections(

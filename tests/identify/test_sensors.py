@@ -797,3 +797,25 @@ def test_a_ray_sensor_plugin_outside_any_sensor_element_is_told_by_its_names_and
     )
     robot.add(builders.model_plugin("bumper_simulation", "libcontact_sensor.so"))
     assert _kinds(robot.text()) == {"ir_range": 2, "sonar": 1, "lidar": 1, "unknown": 2}
+
+
+def test_an_imu_declared_for_gazebo_again_as_an_accelerometer_and_its_plugin_outside_is_one() -> (
+    None
+):
+    # iCub-style descriptions declare each IMU three times: a Gazebo <sensor type="imu"> running
+    # a plugin, a URDF <sensor type="accelerometer"> of the same name on the same link, and the
+    # same plugin (name, file, settings) again outside any sensor. One device; an accelerometer
+    # alone is an IMU's part, an IMU; a different plugin outside is a device of its own.
+    robot = builders.ugv()
+    robot.fixed(robot.root, "head")
+    config = "<yarpConfigurationFile>model://bot/conf/head_inertial.ini</yarpConfigurationFile>"
+    plugin = f'<plugin name="yarp_imu" filename="libgazebo_yarp_imu.so">{config}</plugin>'
+    robot.add(
+        f'  <gazebo reference="head"><sensor name="head_imu" type="imu">{plugin}</sensor></gazebo>'
+    )
+    robot.add('  <sensor name="head_imu" type="accelerometer"><parent link="head"/></sensor>')
+    robot.add(f"  <gazebo>{plugin}</gazebo>")
+    assert _kinds(robot.text()) == {"imu": 1}
+    waist = plugin.replace("head_inertial", "waist_inertial")
+    robot.add(f"  <gazebo>{waist}</gazebo>")
+    assert _kinds(robot.text()) == {"imu": 2}
