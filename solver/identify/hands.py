@@ -22,7 +22,7 @@ from __future__ import annotations
 import re
 
 from solver.identify.couplings import Walk, jaw_groups
-from solver.identify.limbs import Limb, moved_by
+from solver.identify.limbs import Limb, chain_ends, moved_by
 from solver.identify.pose import distance, local_axis, parallel
 from solver.identify.readers.urdf import Joint
 from solver.identify.tree import JointTree
@@ -333,12 +333,9 @@ def _two_fingers(
     group = by_palm.get(None, [])
     if len(group) != 2 or sum(len(chains) for chains in on_palm.values()) != 2:
         return set()
-    ends = []
-    for limb in group:
-        first = tree.urdf.joint(limb.joints[0])
-        if first is None:
-            return set()
-        ends.append((tree.poses.place(first.child), tree.poses.place(limb.tip)))
+    ends = chain_ends(tree, group)
+    if ends is None:
+        return set()
     reaches = [distance(start, end) for start, end in ends]
     apart = distance(ends[0][0], ends[1][0])
     if min(reaches) <= _SAME or max(reaches) > _FINGER_REACH:

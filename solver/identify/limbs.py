@@ -63,6 +63,7 @@ __all__ = [
     "Limb",
     "arms_beside_legs",
     "bolted_chain",
+    "chain_ends",
     "closed_loops",
     "find_limbs",
     "five_bars",
@@ -639,7 +640,7 @@ def _at_corners(tree: JointTree, base: str, group: list[Limb]) -> bool:
     at one place along it), spread front to back at least as far as a pair is from the middle.
     A walker's hips are so, however its legs are folded in the zero pose; a hand's fingers
     start side by side along one edge of the palm."""
-    placed = _placed(tree, group)
+    placed = chain_ends(tree, group)
     if placed is None:
         return False
     centre = tree.poses.place(base)
@@ -696,7 +697,7 @@ def _parallel(tree: JointTree, group: list[Limb]) -> bool:
 
 def _around(tree: JointTree, base: str, group: list[Limb]) -> bool:
     """The chains start on both sides of ``base`` and at three places or more along it."""
-    centre, placed = tree.poses.place(base), _placed(tree, group)
+    centre, placed = tree.poses.place(base), chain_ends(tree, group)
     if placed is None or not _both_sides(centre, placed):
         return False
     along = {round(start[0] - centre[0], 2) for start, _ in placed}
@@ -706,7 +707,7 @@ def _around(tree: JointTree, base: str, group: list[Limb]) -> bool:
 def _spreads(tree: JointTree, base: str, group: list[Limb]) -> bool:
     """Each chain, on both sides of ``base``, ends farther out from it across the ground than
     it starts, by most of its reach, and not above it by more than a leg's drop share."""
-    centre, placed = tree.poses.place(base), _placed(tree, group)
+    centre, placed = tree.poses.place(base), chain_ends(tree, group)
     if placed is None:
         return False
     for start, end in placed:
@@ -722,7 +723,7 @@ def _stands(tree: JointTree, base: str, group: list[Limb]) -> bool:
     on the ground; a hand's fingers, hanging down, end at their own lengths), the chains
     starting on both sides of ``base``, or (a CAD export may put the body's origin at a corner
     of it, every hip on one side) at the corners around their own middle, facing x or y."""
-    placed = _placed(tree, group)
+    placed = chain_ends(tree, group)
     if placed is None:
         return False
     for start, end in placed:
@@ -744,7 +745,7 @@ def _stands(tree: JointTree, base: str, group: list[Limb]) -> bool:
 Place = tuple[float, float, float]
 
 
-def _placed(tree: JointTree, group: list[Limb]) -> list[tuple[Place, Place]] | None:
+def chain_ends(tree: JointTree, group: list[Limb]) -> list[tuple[Place, Place]] | None:
     """Where each chain starts (its first joint's child) and ends (its tip); ``None`` when a
     first joint is missing."""
     placed = []

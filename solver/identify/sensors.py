@@ -8,8 +8,8 @@ or a device in a topic list or bag
 (:mod:`solver.identify.interfaces`). The profile's rules give each its *kind* (``lidar``,
 ``depth_camera``, ``sonar``, ...); a ray sensor plugin written outside any ``<sensor>``, which
 says nothing of its rays, is told by its names and topics (:func:`_ray_plugin_kind`). Plugins
-that publish simulation ground truth are skipped, and
-a plugin that feeds an element already counted (same kind, same link) is the same sensor, and
+that publish simulation ground truth are skipped, a plugin that feeds an element already
+counted (same kind, same link) or repeats one a ``<sensor>`` runs is the same sensor, and
 depth streams on sibling frames of one camera link are one RGB-D camera, and a depth stream on
 a stereo camera's frame is the pair's. :func:`under_water`
 reads a barometer on a body below the water as the depth gauge it is there.
@@ -100,10 +100,10 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
     One device declared twice (a Gazebo ``<sensor>`` and a URDF ``<sensor>``, a plugin feeding
     an element or written again outside it, two parts of one IMU on one link) counts once; so
     does a device whose beams hang from its own link on joints that do not move (a DVL plugin
-    and its four range rays),
-    and a colour and a depth stream on one link are one RGB-D camera. Distinct devices count
-    apart even when they share a name (one force sensor per joint), and sensors declared alike
-    with names of their own on one link (three cameras on a head frame) are as many. A
+    and its four range rays), and a colour and a depth stream on one link are one RGB-D
+    camera. Distinct devices count apart even when they share a name (one force sensor per
+    joint), and sensors declared alike with names of their own on one link (three cameras on a
+    head frame) are as many. A
     ``<ros2_control>`` sensor (told by what it reads, else by its name) counts when no element
     or plugin declares a device of its kind, and not when neither tells its kind.
     """
