@@ -20,7 +20,8 @@ Where names say nothing, the chains' places and shapes still speak:
   (:func:`legs_at_the_pelvis`);
 * four or more alike short chains on one link, on both its sides, each ending below where it
   starts, are legs: a walker's, whatever their number (:func:`legs_by_place`; fingers point
-  away from their palm, legs down to the ground);
+  away from their palm, legs down to the ground), when the link is the trunk's (no more turning
+  joints above it than a waist has: a hand's fingers hanging from an arm's wrist are no legs);
 * two leg chains whose first joints turn about one line, side by side on one side of the
   body, are the two motors of one leg closed by a linkage (a five-bar leg, the loop a URDF
   cannot write): one leg (:func:`five_bars`), when the graph shows the loop: their ends meet
@@ -404,7 +405,7 @@ def _pair_above(
         and len(limb.joints) >= _LEG_JOINTS[0]
         and id(limb) in placed
         and placed[id(limb)][0][2] > hips
-        and _movable_above(tree, limb.base, depth) <= _WAIST
+        and _joints_above(tree, limb.base, depth) <= _WAIST
     ]
     if len(above) > _MOST_ABOVE_THE_HIPS:
         return False
@@ -431,18 +432,24 @@ def _trunk_above(
         for limb in limbs
         if limb not in pair
         and id(limb) in placed
-        and _movable_above(tree, limb.base, depth) <= _WAIST
+        and _joints_above(tree, limb.base, depth) <= _WAIST
     )
 
 
-def _movable_above(tree: JointTree, link: str, known: dict[str, int]) -> int:
-    """How many movable joints lie between the root and ``link``; every link walked is
-    remembered in ``known``, so many links cost one walk of the tree at most."""
+def _joints_above(
+    tree: JointTree,
+    link: str,
+    known: dict[str, int],
+    counted: Callable[[Joint], bool] = lambda joint: joint.movable,
+) -> int:
+    """How many ``counted`` joints (movable ones, by default) lie between the root and
+    ``link``; every link walked is remembered in ``known`` (one ``known`` per ``counted``), so
+    many links cost one walk of the tree at most."""
     walked: list[tuple[str, int]] = []
     current: str | None = link
     while current is not None and current not in known:
         joint = tree.urdf.parent_joint(current)
-        walked.append((current, int(joint is not None and joint.movable)))
+        walked.append((current, int(joint is not None and counted(joint))))
         current = None if joint is None else joint.parent
     count = 0 if current is None else known[current]
     for name, step in reversed(walked):
@@ -451,10 +458,18 @@ def _movable_above(tree: JointTree, link: str, known: dict[str, int]) -> int:
     return count
 
 
+def _turning(joint: Joint) -> bool:
+    """A joint that turns (a hip, a shoulder, a wrist); not a slide nor a floating or planar
+    base a simulator's description writes as joints above the body."""
+    return joint.movable and joint.type in ("revolute", "continuous")
+
+
 def legs_by_place(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     """Alike unnamed chains on one link, four or more, on both its sides or at the corners
     around their own middle, each ending below where it starts, the feet level: legs (a
-    hexapod's, a quadruped's whose joints carry no leg names)."""
+    hexapod's, a quadruped's whose joints carry no leg names), when the link is the trunk's: no
+    more joints turn above it than a waist has (slides and a simulator's floating base do not
+    count); past an arm's joints they are a hand's fingers."""
     if _rolls(tree):
         return limbs  # chains on a body tracks or a drive plugin move are flippers, road wheels
     # By the body carrying them, and whether they are one-joint chains that turn whole (a
@@ -473,10 +488,13 @@ def legs_by_place(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
         elif limb.kind == "other" and len(limb.joints) == 1 and _turns_whole(tree, limb):
             by_base.setdefault((_carrier(tree, limb.base, known), True), []).append(limb)
     legs: dict[int, str] = {}
+    turns: dict[str, int] = {}
     for (base, _), group in by_base.items():
         lengths = {len(limb.joints) for limb in group}
         if len(group) < _WALKER_LEGS or len(lengths) != 1:
             continue
+        if _joints_above(tree, base, turns, _turning) > _WAIST:
+            continue  # a hand's fingers past an arm's joints: legs hang from the trunk
         why = _legs_why(tree, base, group)
         if why:
             legs.update((id(limb), why) for limb in group)

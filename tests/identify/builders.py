@@ -388,10 +388,24 @@ def linkage_biped() -> RobotText:
     return robot
 
 
-def walker(legs: int = 6) -> RobotText:
+def walker(legs: int = 6, *, simulated_base: bool = False) -> RobotText:
     """A walker whose joints say nothing (j0a, j0b, ...): alike 3-joint chains around its body,
-    each ending in a tip below where it starts."""
-    robot = RobotText("walker", root="body")
+    each ending in a tip below where it starts. ``simulated_base``: the body hangs from a
+    ``world`` link by the six joints a simulator's description writes for a floating base
+    (three slides, then roll, pitch and yaw)."""
+    robot = RobotText("walker", root="world" if simulated_base else "body")
+    if simulated_base:
+        link = "world"
+        for name, kind, axis in (
+            ("x", "prismatic", "1 0 0"),
+            ("y", "prismatic", "0 1 0"),
+            ("z", "prismatic", "0 0 1"),
+            ("roll", "revolute", "1 0 0"),
+            ("pitch", "revolute", "0 1 0"),
+            ("yaw", "revolute", "0 0 1"),
+        ):
+            child = "body" if name == "yaw" else f"base_{name}_link"
+            link = placed(robot, f"base_{name}", kind, link, child, axis=axis)
     for i in range(legs):
         x = 0.1 * (i % (legs // 2)) - 0.1
         y = 0.08 if i < legs // 2 else -0.08

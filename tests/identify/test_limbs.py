@@ -1140,21 +1140,39 @@ def test_a_shoulder_written_shld_names_an_arm_as_shoulder_does() -> None:
     assert identify_urdf(other.text()).structure == "UGV"
 
 
-def fingers_hanging_down(*, level: bool) -> RobotText:
+def fingers_hanging_down(*, level: bool, arm_joints: int = 0) -> RobotText:
     """Five unnamed three-joint chains hanging down from a palm, their bases in a row across it;
-    their tips end at their own lengths (a hand) or, with ``level``, at one height."""
+    their tips end at their own lengths (a hand) or, with ``level``, at one height. The palm is
+    the root, or the end of an unnamed arm of ``arm_joints`` joints reaching out sideways."""
     robot = RobotText("r")
+    palm = robot.root
+    if arm_joints:
+        palm = placed_chain(
+            robot, palm, "a", start="0 0.2 0.3", steps=["0 0.1 0"] * (arm_joints - 1)
+        )
     for i, y in enumerate((-0.04, -0.02, 0.0, 0.02, 0.04)):
         step = 0.03 if level else 0.015 + 0.01 * i
-        placed_chain(
-            robot, robot.root, f"f{i}_", start=f"0.25 {y} -0.05", steps=[f"0 0 -{step}"] * 2
-        )
+        placed_chain(robot, palm, f"f{i}_", start=f"0.25 {y} -0.05", steps=[f"0 0 -{step}"] * 2)
     return robot
 
 
 def test_chains_hanging_down_are_legs_only_when_their_feet_are_level() -> None:
     assert identify_urdf(fingers_hanging_down(level=False).text()).structure == "Hand"
     assert identify_urdf(fingers_hanging_down(level=True).text()).structure == "Hexapod"
+
+
+def test_chains_hanging_level_from_the_end_of_an_arm_are_its_fingers_not_legs() -> None:
+    # Legs hang from the trunk (the body, a waist above it); past an arm's seven joints, alike
+    # chains hanging down are a hand's fingers, however level their tips.
+    result = identify_urdf(fingers_hanging_down(level=True, arm_joints=7).text())
+    assert result.body is not None
+    assert "leg" not in [limb.kind for limb in result.body.limbs]
+    assert result.structure != "Hexapod"
+
+
+def test_a_walker_on_a_simulators_six_joint_floating_base_still_stands_on_its_legs() -> None:
+    # Three slides and three turns above the body are how a simulator floats it, no arm.
+    assert identify_urdf(builders.walker(4, simulated_base=True).text()).structure == "Quadruped"
 
 
 def test_chains_hanging_in_a_row_are_no_walkers_legs_however_the_row_lies() -> None:
