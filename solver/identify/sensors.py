@@ -10,8 +10,9 @@ or a device in a topic list or bag
 says nothing of its rays, is told by its names and topics (:func:`_ray_plugin_kind`). Plugins
 that publish simulation ground truth are skipped, a plugin that feeds an element already
 counted (same kind, same link) or repeats one a ``<sensor>`` runs is the same sensor, and
-depth streams on sibling frames of one camera link are one RGB-D camera, and a depth stream on
-a stereo camera's frame is the pair's. :func:`under_water`
+depth streams on sibling frames of one camera link are one RGB-D camera (and cameras on frames
+fixed beneath the camera's body its streams), and a depth stream on a stereo camera's frame is
+the pair's. :func:`under_water`
 reads a barometer on a body below the water as the depth gauge it is there.
 
 :func:`merge` turns detections into one :class:`Sensor` per kind and sensor type. Sources are
@@ -253,7 +254,8 @@ def _rgbd_frames(found: list[Detection], urdf: Urdf) -> list[Detection]:
     device's name, ``kinect``), is one device: the first stays. Two depth cameras on one mount
     further apart or facing apart (a front and a rear camera on ``base_link``) are two. Plain
     cameras beside a depth camera stay cameras (a head's two cameras and its depth sensor),
-    unless the link they share is the camera's own body (:func:`_stream_of`)."""
+    unless the link they share is the camera's own body (:func:`_stream_of`) or they hang
+    beneath the body that carries the depth stream (:func:`_below`)."""
     mounts: dict[int, Joint] = {}
     for detection in found:
         if detection.kind == "depth_camera" and detection.link is not None:
@@ -270,13 +272,39 @@ def _rgbd_frames(found: list[Detection], urdf: Urdf) -> list[Detection]:
             if near is None:
                 here.append((detection, joint))
             owner_of[id(detection)] = near or detection
+    bodies = {
+        detection.link
+        for detection in found
+        if detection.kind == "depth_camera"
+        and detection.link is not None
+        and _CAMERA_BODY.search(detection.link) is not None
+    }
     kept = []
     for detection in found:
         owner = owner_of.get(id(detection))
         own = owner is None or owner is detection or owner.link == detection.link
-        if own and not _stream_of(detection, owners, urdf):
+        if own and not _stream_of(detection, owners, urdf) and not _below(detection, bodies, urdf):
             kept.append(detection)
     return kept
+
+
+def _below(detection: Detection, bodies: set[str], urdf: Urdf) -> bool:
+    """A plain camera on a frame fixed beneath a camera's body that carries a depth stream
+    (:data:`_DEVICE_DEPTH` fixed joints down at most, within :data:`_STREAM_REACH` of it: a
+    RealSense macro's colour and infrared frames under the ``camera_link`` its depth sensor is
+    on) is one of that camera's streams."""
+    if detection.kind != "camera" or detection.link is None:
+        return False
+    link, reach = detection.link, 0.0
+    for _ in range(_DEVICE_DEPTH):
+        joint = urdf.parent_joint(link)
+        if joint is None or joint.movable:
+            return False
+        reach += math.hypot(*joint.origin)
+        link = joint.parent
+        if link in bodies:
+            return reach <= _STREAM_REACH
+    return False
 
 
 def _one_device(first: Joint, second: Joint) -> bool:

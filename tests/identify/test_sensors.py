@@ -512,6 +512,31 @@ def test_cameras_on_frames_fixed_to_an_rgbd_cameras_own_link_are_its_streams() -
     assert realsense_on_its_body("head_link") == {"camera": 3, "depth_camera": 1}
 
 
+def realsense_below_its_body(body: str, *, apart: float = 0.0) -> dict[str, int]:
+    """A D435 as another realsense macro writes it: the depth stream on the camera's ``body``
+    link itself, the colour and infrared cameras on frames beneath it (through its depth frame),
+    the right infrared frame ``apart`` metres across."""
+    robot = builders.ugv()
+    robot.fixed(robot.root, body)
+    robot.add(builders.gazebo_sensor(body, "depth", "depth"))
+    depth = robot.fixed(body, "cam_depth_frame")
+    for stream, y in (("color", 0.0), ("infra1", 0.0), ("infra2", -apart)):
+        builders.placed(
+            robot, f"cam_{stream}_joint", "fixed", depth, f"cam_{stream}_frame", xyz=f"0 {y} 0"
+        )
+        robot.add(builders.gazebo_sensor(f"cam_{stream}_frame", "camera", stream))
+    return {s.kind: s.count for s in identify_urdf(robot.text()).sensors}
+
+
+def test_cameras_on_frames_beneath_an_rgbd_cameras_body_carrying_its_depth_are_its_streams() -> (
+    None
+):
+    assert realsense_below_its_body("camera_link", apart=0.05) == {"depth_camera": 1}
+    # Past a camera's reach, or beneath a link that is no camera's body: cameras of their own.
+    assert realsense_below_its_body("camera_link", apart=0.5) == {"camera": 1, "depth_camera": 1}
+    assert realsense_below_its_body("head_link") == {"camera": 3, "depth_camera": 1}
+
+
 def test_colour_and_depth_streams_on_one_link_read_as_depth_cameras_are_one_device() -> None:
     # A realsense's colour stream is read as a depth camera by its device's name; on the link
     # of its depth stream it is the same camera.
