@@ -74,7 +74,8 @@ PARTS = (
 # role); marine: plugins of a body in water; surface: hints of a hull floating at the surface
 # (plugins and element names such as <metacentric_width>); underwater: what a body below the
 # surface has (plugins and sensors: hydrodynamics, buoyancy, a DVL, a pressure sensor); spring:
-# plugins that hold a joint on a spring (a joint they name yields: passive, no limb's).
+# plugins that hold a joint on a spring (a joint they name yields: passive, no limb's); force:
+# plugins that push a link with a commanded force (in water, a thruster's link).
 PLUGIN_PARTS = (
     "drive",
     "track",
@@ -86,6 +87,7 @@ PLUGIN_PARTS = (
     "underwater",
     "spring",
     "mover",
+    "force",
 )
 FEATURES = (
     "wheels",

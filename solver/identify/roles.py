@@ -7,8 +7,9 @@ of strength, and the first that speaks decides:
    ``<jointName>`` (also a thruster link it lists), a motor model's ``<jointName>`` (a rotor), a
    drive plugin's ``<leftJoint>`` (a wheel; a joint it names for steering steers), a fin or
    lift-drag plugin's ``<joint_name>`` (a fin or control surface; a rotor when the joint turns
-   without limits: a propeller blade's lift). Which plugin is which is the profile's ``plugins``
-   patterns.
+   without limits: a propeller blade's lift); on a body in water, the link a force plugin
+   pushes (``gazebo_ros_force``'s ``<link_name>``) is a thruster's, the joint carrying it the
+   thruster's. Which plugin is which is the profile's ``plugins`` patterns.
 2. The joint's place and shape: a vertical swivel that carries a wheel and nothing else is a
    caster (the wheel below it is the caster's); a propeller on a body in water is a thruster;
    a propeller on a ``floating`` joint with nothing below (a visual part a simulator poses) is
@@ -48,6 +49,9 @@ _PLUGIN_ROLES = (
     ("lift", "fin"),
     ("spring", "passive"),  # a joint held on a spring yields: nobody drives it
 )
+# On a body in water: a link a force plugin pushes on command is a thruster (a boat's swivelling
+# thruster drawn as a link its force plugin pushes).
+_IN_WATER_ROLES = (("force", "thruster"),)
 _Z = 2
 # The evidence of a propeller a simulator poses on a floating joint (counted however few).
 POSED = ", a part a simulator poses (floating joint)"
@@ -174,7 +178,7 @@ class RoleReader:
         joints = {j.name for j in self.urdf.joints if j.movable}
         by_link = {j.child: j.name for j in self.urdf.joints if j.movable}
         found: dict[str, Role] = {}
-        for part, role in _PLUGIN_ROLES:
+        for part, role in (*_PLUGIN_ROLES, *(_IN_WATER_ROLES if self.marine else ())):
             for plugin in self.plugins_of(part):
                 label = self.plugin_label(plugin)
                 for tag, text in plugin.params:
@@ -183,7 +187,7 @@ class RoleReader:
                         text
                         if text in joints
                         else by_link.get(text)
-                        if part == "thruster"
+                        if role == "thruster"
                         else None
                     )
                     if joint is None or joint in found:

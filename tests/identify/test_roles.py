@@ -43,6 +43,31 @@ def test_a_joint_a_thruster_plugin_names_is_a_thruster_and_says_which_plugin() -
     assert found["surface0"][0] == "fin"
 
 
+def pushed_pods(*, in_water: bool) -> RobotText:
+    """Two unnamed pods on swivels (``p1_yaw``, ``p2_yaw``) that force plugins push on command,
+    on a hull a buoyancy plugin floats (``in_water``) or on a bare body."""
+    robot = RobotText("r")
+    for i, y in ((1, 0.2), (2, -0.2)):
+        builders.placed(robot, f"p{i}_yaw", "revolute", robot.root, f"p{i}", xyz=f"0 {y} -0.1")
+        robot.add(
+            builders.model_plugin(
+                f"p{i}_force", "libgazebo_ros_force.so", f"<link_name>p{i}</link_name>"
+            )
+        )
+    if in_water:
+        robot.add(builders.model_plugin("b", "libbuoyancy_plugin.so", "<surface_z>0</surface_z>"))
+    return robot
+
+
+def test_a_link_a_force_plugin_pushes_on_a_body_in_water_is_a_thrusters() -> None:
+    found = roles(pushed_pods(in_water=True))
+    assert found["p1_yaw"] == ("thruster", "<link_name> of force plugin libgazebo_ros_force.so")
+    assert identify_urdf(pushed_pods(in_water=True).text()).structure == "Surface Vessel"
+    # Out of water a force plugin pushes whatever it is given (a drone's rotor, a test rig):
+    # no thruster.
+    assert "thruster" not in {role for role, _ in roles(pushed_pods(in_water=False)).values()}
+
+
 def test_thrusters_named_only_by_name_on_a_hull_are_not_wheels() -> None:
     result = identify_urdf(builders.surface_vessel().text())
     assert result.body is not None
