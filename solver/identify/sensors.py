@@ -272,13 +272,7 @@ def _rgbd_frames(found: list[Detection], urdf: Urdf) -> list[Detection]:
             if near is None:
                 here.append((detection, joint))
             owner_of[id(detection)] = near or detection
-    bodies = {
-        detection.link
-        for detection in found
-        if detection.kind == "depth_camera"
-        and detection.link is not None
-        and _CAMERA_BODY.search(detection.link) is not None
-    }
+    bodies = _depth_bodies(found)
     kept = []
     for detection in found:
         owner = owner_of.get(id(detection))
@@ -286,6 +280,15 @@ def _rgbd_frames(found: list[Detection], urdf: Urdf) -> list[Detection]:
         if own and not _stream_of(detection, owners, urdf) and not _below(detection, bodies, urdf):
             kept.append(detection)
     return kept
+
+
+def _depth_bodies(found: list[Detection]) -> set[str]:
+    """The links named as a camera's body (:data:`_CAMERA_BODY`) that carry a depth stream."""
+    return {
+        d.link
+        for d in found
+        if d.kind == "depth_camera" and d.link is not None and _CAMERA_BODY.search(d.link)
+    }
 
 
 def _below(detection: Detection, bodies: set[str], urdf: Urdf) -> bool:
