@@ -98,6 +98,9 @@ _FLYING_ARM_JOINTS = 2
 _MOUNTED = ("wheel", "steering", "caster", "rotor", "thruster")
 # Legs by place: at least this many alike chains of this many joints on one link.
 _WALKER_LEGS = 4
+# ... on the trunk: the most joints that turn above the link they hang from (a waist, or a
+# simulator's floating base's roll, pitch and yaw); past more, an arm's, they are fingers.
+_TRUNK_TURNS = 3
 # How far from a mirror image across the body a pair of hips may be (a share of the width).
 _MIRRORED = 0.25
 _LEG_JOINTS = (2, 4)
@@ -467,9 +470,10 @@ def _turning(joint: Joint) -> bool:
 def legs_by_place(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     """Alike unnamed chains on one link, four or more, on both its sides or at the corners
     around their own middle, each ending below where it starts, the feet level: legs (a
-    hexapod's, a quadruped's whose joints carry no leg names), when the link is the trunk's: no
-    more joints turn above it than a waist has (slides and a simulator's floating base do not
-    count); past an arm's joints they are a hand's fingers."""
+    hexapod's, a quadruped's whose joints carry no leg names), when the link is the trunk's: at
+    most :data:`_TRUNK_TURNS` joints turn above it (slides do not count; a simulator's floating
+    base turns three); past an arm's joints they are a hand's fingers. The same holds for every
+    way below (legs spread flat, at the corners, one-joint legs that turn whole)."""
     if _rolls(tree):
         return limbs  # chains on a body tracks or a drive plugin move are flippers, road wheels
     # By the body carrying them, and whether they are one-joint chains that turn whole (a
@@ -493,7 +497,7 @@ def legs_by_place(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
         lengths = {len(limb.joints) for limb in group}
         if len(group) < _WALKER_LEGS or len(lengths) != 1:
             continue
-        if _joints_above(tree, base, turns, _turning) > _WAIST:
+        if _joints_above(tree, base, turns, _turning) > _TRUNK_TURNS:
             continue  # a hand's fingers past an arm's joints: legs hang from the trunk
         why = _legs_why(tree, base, group)
         if why:

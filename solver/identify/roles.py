@@ -7,9 +7,9 @@ of strength, and the first that speaks decides:
    ``<jointName>`` (also a thruster link it lists), a motor model's ``<jointName>`` (a rotor), a
    drive plugin's ``<leftJoint>`` (a wheel; a joint it names for steering steers), a fin or
    lift-drag plugin's ``<joint_name>`` (a fin or control surface; a rotor when the joint turns
-   without limits: a propeller blade's lift); on a body in water, the link a force plugin
-   pushes (``gazebo_ros_force``'s ``<link_name>``) is a thruster's, the joint carrying it the
-   thruster's. Which plugin is which is the profile's ``plugins`` patterns.
+   without limits: a propeller blade's lift); on a body in water, a swivel or a spin on the
+   hull whose link a force plugin pushes (``gazebo_ros_force``'s ``<link_name>``) is a
+   thruster. Which plugin is which is the profile's ``plugins`` patterns.
 2. The joint's place and shape: a vertical swivel that carries a wheel and nothing else is a
    caster (the wheel below it is the caster's); a propeller on a body in water is a thruster;
    a propeller on a ``floating`` joint with nothing below (a visual part a simulator poses) is
@@ -49,9 +49,6 @@ _PLUGIN_ROLES = (
     ("lift", "fin"),
     ("spring", "passive"),  # a joint held on a spring yields: nobody drives it
 )
-# On a body in water: a link a force plugin pushes on command is a thruster (a boat's swivelling
-# thruster drawn as a link its force plugin pushes).
-_IN_WATER_ROLES = (("force", "thruster"),)
 _Z = 2
 # The evidence of a propeller a simulator poses on a floating joint (counted however few).
 POSED = ", a part a simulator poses (floating joint)"
@@ -111,7 +108,8 @@ class RoleReader:
             or self.named_vessel
             or self.named_submersible
         )
-        self.named = self._named_by_plugins()
+        # A plugin that names a joint outright speaks before a force plugin pushing its link.
+        self.named = {**self._pushed_thrusters(), **self._named_by_plugins()}
 
     def _name_says(self, words: re.Pattern[str]) -> bool:
         """The robot's own name holds one of ``words`` and no flight plugin flies it."""
@@ -178,7 +176,7 @@ class RoleReader:
         joints = {j.name for j in self.urdf.joints if j.movable}
         by_link = {j.child: j.name for j in self.urdf.joints if j.movable}
         found: dict[str, Role] = {}
-        for part, role in (*_PLUGIN_ROLES, *(_IN_WATER_ROLES if self.marine else ())):
+        for part, role in _PLUGIN_ROLES:
             for plugin in self.plugins_of(part):
                 label = self.plugin_label(plugin)
                 for tag, text in plugin.params:
@@ -187,7 +185,7 @@ class RoleReader:
                         text
                         if text in joints
                         else by_link.get(text)
-                        if role == "thruster"
+                        if part == "thruster"
                         else None
                     )
                     if joint is None or joint in found:
@@ -199,6 +197,32 @@ class RoleReader:
                         # blade (how Gazebo models rotors), not a control surface's travel.
                         kind, why = "rotor", why + ", turning without limits (a propeller)"
                     found[joint] = Role(joint, kind, why)
+        return found
+
+    def _pushed_thrusters(self) -> dict[str, Role]:
+        """On a body in water, the joint whose link a force plugin pushes on command (its
+        ``<link_name>``): a thruster, when it is a swivel or a spin (revolute or continuous) on
+        the hull itself and no fin's or wing's (not an arm's last link, a float's heave, a
+        rudder a current pushes)."""
+        if not self.marine:
+            return {}
+        by_link = {j.child: j for j in self.urdf.joints if j.movable}
+        found: dict[str, Role] = {}
+        for plugin in self.plugins_of("force"):
+            label = self.plugin_label(plugin)
+            for tag, text in plugin.params:
+                joint = by_link.get(text)
+                if (
+                    joint is None
+                    or joint.name in found
+                    or joint.type not in _ROTATING
+                    or joint.parent not in self.still
+                    or self.matches("fin", joint)
+                    or self.matches("wing", joint)
+                ):
+                    continue
+                why = f"<{tag}> of force plugin {label}: a link it pushes, on a body in water"
+                found[joint.name] = Role(joint.name, "thruster", why)
         return found
 
     def _spins(self, name: str) -> bool:

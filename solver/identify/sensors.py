@@ -255,7 +255,7 @@ def _rgbd_frames(found: list[Detection], urdf: Urdf) -> list[Detection]:
     further apart or facing apart (a front and a rear camera on ``base_link``) are two. Plain
     cameras beside a depth camera stay cameras (a head's two cameras and its depth sensor),
     unless the link they share is the camera's own body (:func:`_stream_of`) or they hang
-    beneath the body that carries the depth stream (:func:`_below`)."""
+    beneath the body that carries the depth stream (:func:`_stream_beneath_body`)."""
     mounts: dict[int, Joint] = {}
     for detection in found:
         if detection.kind == "depth_camera" and detection.link is not None:
@@ -277,7 +277,11 @@ def _rgbd_frames(found: list[Detection], urdf: Urdf) -> list[Detection]:
     for detection in found:
         owner = owner_of.get(id(detection))
         own = owner is None or owner is detection or owner.link == detection.link
-        if own and not _stream_of(detection, owners, urdf) and not _below(detection, bodies, urdf):
+        if (
+            own
+            and not _stream_of(detection, owners, urdf)
+            and not _stream_beneath_body(detection, bodies, urdf)
+        ):
             kept.append(detection)
     return kept
 
@@ -291,22 +295,27 @@ def _depth_bodies(found: list[Detection]) -> set[str]:
     }
 
 
-def _below(detection: Detection, bodies: set[str], urdf: Urdf) -> bool:
-    """A plain camera on a frame fixed beneath a camera's body that carries a depth stream
-    (:data:`_DEVICE_DEPTH` fixed joints down at most, within :data:`_STREAM_REACH` of it: a
+def _stream_beneath_body(detection: Detection, bodies: set[str], urdf: Urdf) -> bool:
+    """A plain camera on a frame named for a camera's body that carries a depth stream (as the
+    body's name up to its camera word: ``camera_color_frame`` for ``camera_link`` or
+    ``camera_depth_frame``), fixed beneath it facing its way (:data:`_DEVICE_DEPTH` fixed joints
+    down at most, none turned, their offsets adding up to :data:`_STREAM_REACH` at most: a
     RealSense macro's colour and infrared frames under the ``camera_link`` its depth sensor is
-    on) is one of that camera's streams."""
+    on) is one of that camera's streams; a thermal camera or a rear camera bolted to its bracket
+    is not."""
     if detection.kind != "camera" or detection.link is None:
         return False
     link, reach = detection.link, 0.0
     for _ in range(_DEVICE_DEPTH):
         joint = urdf.parent_joint(link)
-        if joint is None or joint.movable:
+        if joint is None or joint.movable or any(abs(turn) > 1e-6 for turn in joint.rpy):
             return False
         reach += math.hypot(*joint.origin)
         link = joint.parent
         if link in bodies:
-            return reach <= _STREAM_REACH
+            named = _CAMERA_BODY.search(link)
+            prefix = link[: named.end()] if named else link
+            return reach <= _STREAM_REACH and detection.link.startswith(prefix)
     return False
 
 

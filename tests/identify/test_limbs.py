@@ -791,16 +791,21 @@ def test_two_joints_both_named_as_an_arms_are_a_short_arm_on_a_base() -> None:
 
 
 def placed_chain(
-    robot: RobotText, parent: str, prefix: str, *, start: str, steps: list[str], axis: str = "0 1 0"
+    robot: RobotText,
+    parent: str,
+    prefix: str,
+    *,
+    start: str,
+    steps: list[str],
+    axis: str = "0 1 0",
+    kind: str = "revolute",
 ) -> str:
-    """Unnamed joints ``<prefix>0``.. from ``parent``: the first at ``start``, then each at the
-    offset of ``steps`` from the last."""
-    link = builders.placed(
-        robot, f"{prefix}0", "revolute", parent, f"{prefix}l0", xyz=start, axis=axis
-    )
+    """Unnamed joints ``<prefix>0``.. of ``kind`` from ``parent``: the first at ``start``, then
+    each at the offset of ``steps`` from the last."""
+    link = builders.placed(robot, f"{prefix}0", kind, parent, f"{prefix}l0", xyz=start, axis=axis)
     for i, step in enumerate(steps, start=1):
         link = builders.placed(
-            robot, f"{prefix}{i}", "revolute", link, f"{prefix}l{i}", xyz=step, axis=axis
+            robot, f"{prefix}{i}", kind, link, f"{prefix}l{i}", xyz=step, axis=axis
         )
     return link
 
@@ -1140,16 +1145,18 @@ def test_a_shoulder_written_shld_names_an_arm_as_shoulder_does() -> None:
     assert identify_urdf(other.text()).structure == "UGV"
 
 
-def fingers_hanging_down(*, level: bool, arm_joints: int = 0) -> RobotText:
+def fingers_hanging_down(
+    *, level: bool, arm_joints: int = 0, arm_kind: str = "revolute"
+) -> RobotText:
     """Five unnamed three-joint chains hanging down from a palm, their bases in a row across it;
     their tips end at their own lengths (a hand) or, with ``level``, at one height. The palm is
-    the root, or the end of an unnamed arm of ``arm_joints`` joints reaching out sideways."""
+    the root, or the end of an unnamed arm of ``arm_joints`` joints of ``arm_kind`` reaching
+    out sideways."""
     robot = RobotText("r")
     palm = robot.root
     if arm_joints:
-        palm = placed_chain(
-            robot, palm, "a", start="0 0.2 0.3", steps=["0 0.1 0"] * (arm_joints - 1)
-        )
+        steps = ["0 0.1 0"] * (arm_joints - 1)
+        palm = placed_chain(robot, palm, "a", start="0 0.2 0.3", steps=steps, kind=arm_kind)
     for i, y in enumerate((-0.04, -0.02, 0.0, 0.02, 0.04)):
         step = 0.03 if level else 0.015 + 0.01 * i
         placed_chain(robot, palm, f"f{i}_", start=f"0.25 {y} -0.05", steps=[f"0 0 -{step}"] * 2)
@@ -1161,10 +1168,14 @@ def test_chains_hanging_down_are_legs_only_when_their_feet_are_level() -> None:
     assert identify_urdf(fingers_hanging_down(level=True).text()).structure == "Hexapod"
 
 
-def test_chains_hanging_level_from_the_end_of_an_arm_are_its_fingers_not_legs() -> None:
-    # Legs hang from the trunk (the body, a waist above it); past an arm's seven joints, alike
-    # chains hanging down are a hand's fingers, however level their tips.
-    result = identify_urdf(fingers_hanging_down(level=True, arm_joints=7).text())
+@pytest.mark.parametrize(("joints", "kind"), [(7, "revolute"), (4, "revolute"), (4, "continuous")])
+def test_chains_hanging_level_from_the_end_of_an_arm_are_its_fingers_not_legs(
+    joints: int, kind: str
+) -> None:
+    # Legs hang from the trunk (the body, a waist above it); past an arm's joints (more than
+    # three that turn), alike chains hanging down are a hand's fingers, however level their tips.
+    robot = fingers_hanging_down(level=True, arm_joints=joints, arm_kind=kind)
+    result = identify_urdf(robot.text())
     assert result.body is not None
     assert "leg" not in [limb.kind for limb in result.body.limbs]
     assert result.structure != "Hexapod"

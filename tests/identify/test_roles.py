@@ -49,23 +49,50 @@ def pushed_pods(*, in_water: bool) -> RobotText:
     robot = RobotText("r")
     for i, y in ((1, 0.2), (2, -0.2)):
         builders.placed(robot, f"p{i}_yaw", "revolute", robot.root, f"p{i}", xyz=f"0 {y} -0.1")
-        robot.add(
-            builders.model_plugin(
-                f"p{i}_force", "libgazebo_ros_force.so", f"<link_name>p{i}</link_name>"
-            )
-        )
+        robot.add(pushed(f"p{i}"))
     if in_water:
-        robot.add(builders.model_plugin("b", "libbuoyancy_plugin.so", "<surface_z>0</surface_z>"))
+        robot.add(FLOATS)
     return robot
 
 
-def test_a_link_a_force_plugin_pushes_on_a_body_in_water_is_a_thrusters() -> None:
+def pushed(link: str) -> str:
+    return builders.model_plugin(
+        f"{link}_force", "libgazebo_ros_force.so", f"<link_name>{link}</link_name>"
+    )
+
+
+FLOATS = builders.model_plugin("b", "libbuoyancy_plugin.so", "<surface_z>0</surface_z>")
+
+
+def test_a_swivel_on_a_hull_in_water_whose_link_a_force_plugin_pushes_is_a_thruster() -> None:
     found = roles(pushed_pods(in_water=True))
-    assert found["p1_yaw"] == ("thruster", "<link_name> of force plugin libgazebo_ros_force.so")
+    assert found["p1_yaw"] == (
+        "thruster",
+        "<link_name> of force plugin libgazebo_ros_force.so: a link it pushes, on a body in water",
+    )
     assert identify_urdf(pushed_pods(in_water=True).text()).structure == "Surface Vessel"
     # Out of water a force plugin pushes whatever it is given (a drone's rotor, a test rig):
     # no thruster.
     assert "thruster" not in {role for role, _ in roles(pushed_pods(in_water=False)).values()}
+
+
+def test_a_pushed_link_past_an_arms_joints_on_a_slide_or_a_rudder_is_no_thruster() -> None:
+    # An ROV's arm whose last link a force plugin pushes (a tether's pull, a test load) stays
+    # an arm; a float's heave slide that waves push, and a rudder, stay what they were.
+    rov = builders.underwater_vehicle()
+    rov.chain(rov.root, ["arm_joint_1", "arm_joint_2", "arm_joint_3", "arm_joint_4"])
+    rov.add(pushed("arm_joint_4_link"))
+    assert roles(rov)["arm_joint_4"][0] != "thruster"
+    float_ = RobotText("r")
+    builders.placed(float_, "heave", "prismatic", float_.root, "float", axis="0 0 1")
+    float_.add(pushed("float"))
+    float_.add(FLOATS)
+    assert roles(float_)["heave"][0] != "thruster"
+    # A rudder a current pushes is a control surface.
+    boat = pushed_pods(in_water=True)
+    builders.placed(boat, "rudder_joint", "revolute", boat.root, "rudder", xyz="-0.5 0 -0.1")
+    boat.add(pushed("rudder"))
+    assert roles(boat)["rudder_joint"][0] == "fin"
 
 
 def test_thrusters_named_only_by_name_on_a_hull_are_not_wheels() -> None:

@@ -512,19 +512,21 @@ def test_cameras_on_frames_fixed_to_an_rgbd_cameras_own_link_are_its_streams() -
     assert realsense_on_its_body("head_link") == {"camera": 3, "depth_camera": 1}
 
 
-def realsense_below_its_body(body: str, *, apart: float = 0.0) -> dict[str, int]:
+def realsense_below_its_body(body: str, *, apart: float = 0.0, extra: str = "") -> dict[str, int]:
     """A D435 as another realsense macro writes it: the depth stream on the camera's ``body``
-    link itself, the colour and infrared cameras on frames beneath it (through its depth frame),
-    the right infrared frame ``apart`` metres across."""
+    link itself (``camera_link``), the colour and infrared cameras on frames named for it
+    beneath it, through its depth frame (``camera_color_frame``), the right infrared frame
+    ``apart`` metres across; ``extra``: more of the description."""
     robot = builders.ugv()
     robot.fixed(robot.root, body)
     robot.add(builders.gazebo_sensor(body, "depth", "depth"))
-    depth = robot.fixed(body, "cam_depth_frame")
+    stem = body.rsplit("_", 1)[0]
+    depth = robot.fixed(body, f"{stem}_depth_frame")
     for stream, y in (("color", 0.0), ("infra1", 0.0), ("infra2", -apart)):
-        builders.placed(
-            robot, f"cam_{stream}_joint", "fixed", depth, f"cam_{stream}_frame", xyz=f"0 {y} 0"
-        )
-        robot.add(builders.gazebo_sensor(f"cam_{stream}_frame", "camera", stream))
+        frame = f"{stem}_{stream}_frame"
+        builders.placed(robot, f"{stream}_joint", "fixed", depth, frame, xyz=f"0 {y} 0")
+        robot.add(builders.gazebo_sensor(frame, "camera", stream))
+    robot.add(extra)
     return {s.kind: s.count for s in identify_urdf(robot.text()).sensors}
 
 
@@ -535,6 +537,41 @@ def test_cameras_on_frames_beneath_an_rgbd_cameras_body_carrying_its_depth_are_i
     # Past a camera's reach, or beneath a link that is no camera's body: cameras of their own.
     assert realsense_below_its_body("camera_link", apart=0.5) == {"camera": 1, "depth_camera": 1}
     assert realsense_below_its_body("head_link") == {"camera": 3, "depth_camera": 1}
+
+
+def bolted(name: str, joint: str, *, under: str = "camera_link") -> str:
+    """A camera ``name`` on its own frame under ``under``, by ``joint``'s kind and place."""
+    kind, _, place = joint.partition(" ")
+    return (
+        f'<link name="{name}_frame"/><joint name="{name}_joint" type="{kind}">'
+        f'<parent link="{under}"/><child link="{name}_frame"/>{place}'
+        '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint>'
+        + builders.gazebo_sensor(f"{name}_frame", "camera", name)
+    )
+
+
+@pytest.mark.parametrize(
+    "other",
+    [
+        # A thermal camera 4 cm beneath the body, on a frame not named for it.
+        bolted("thermal", 'fixed <origin xyz="0 0 -0.04"/>'),
+        # A rear camera named for the body, 6 cm behind it and facing back.
+        bolted("camera_rear", 'fixed <origin xyz="-0.06 0 0" rpy="0 0 3.14159"/>'),
+        # A camera named for the body on a joint that moves it.
+        bolted("camera_pan", 'revolute <origin xyz="0 0 -0.02"/>'),
+        # A camera named for the body three fixed joints down.
+        '<link name="camera_a"/><joint name="ja" type="fixed"><parent link="camera_link"/>'
+        '<child link="camera_a"/></joint><link name="camera_b"/><joint name="jb" type="fixed">'
+        '<parent link="camera_a"/><child link="camera_b"/></joint>'
+        + bolted("camera_deep", "fixed", under="camera_b"),
+    ],
+    ids=["thermal", "rear", "moved", "deep"],
+)
+def test_a_camera_bolted_beneath_an_rgbd_cameras_body_that_is_no_stream_stays_a_camera(
+    other: str,
+) -> None:
+    found = realsense_below_its_body("camera_link", extra=other)
+    assert found == {"camera": 1, "depth_camera": 1}
 
 
 def test_colour_and_depth_streams_on_one_link_read_as_depth_cameras_are_one_device() -> None:
