@@ -7,7 +7,8 @@ evidence that decided it, actuation first and names last:
    then its shape, then its name. Joints that cannot move (fixed, or revolute/prismatic with
    lower == upper, unless their equal limits are placeholders: ``Joint.unlocked``) play none;
 2. wheels without names, told by where they are: endless leaves hanging below a link, at least
-   one on each side of it;
+   one on each side of it; and endless leaves that end legs of limited joints, two or more,
+   whatever their names (a wheel-legged robot's);
 3. casters, a vertical swivel carrying one wheel; a caster driven through a transmission is no
    caster (its swivel steers, its wheel drives); on a base so steered, another driven vertical
    swivel that carries nothing that moves steers too (the vehicle's steering input); three
@@ -93,6 +94,12 @@ def joint_roles(tree: JointTree) -> dict[str, Role]:
             name,
             "wheel",
             "an unnamed endless joint below its link or on a level axle, wheels on both sides",
+        )
+    for name in _leg_wheels(tree, set(roles)):
+        roles[name] = Role(
+            name,
+            "wheel",
+            "an endless leaf ending a leg of limited joints (a wheel-legged robot's wheel)",
         )
     for name in _unnamed_rotors(tree, set(roles)):
         roles[name] = Role(
@@ -294,6 +301,38 @@ def _unnamed_wheels(tree: JointTree, taken: set[str]) -> list[str]:
     if len(apart) >= 2 and _sides({tree.poses.place(j.child)[1] for j in apart}):
         found.extend(j.name for j in apart)
     return found
+
+
+def _leg_wheels(tree: JointTree, taken: set[str]) -> list[str]:
+    """Endless leaves named as a leg's (``joint_left_leg_4``), of no role yet, each at the end of
+    a chain of limited joints (a leg's hip and knee have stops; a wheel turns for ever), two or
+    more: the wheels a wheel-legged robot rolls on, whatever their names."""
+    found = []
+    for joint in tree.urdf.joints:
+        if (
+            joint.endless
+            and joint.actuated
+            and joint.name not in taken
+            and joint.child not in tree.moving_below
+            and "leg" in (tree.parts_of(joint.name) | tree.parts_of(joint.child))
+            and _on_limited_joints(tree, joint)
+        ):
+            found.append(joint.name)
+    return found if len(found) >= 2 else []
+
+
+def _on_limited_joints(tree: JointTree, joint: Joint) -> bool:
+    """The movable joints just above ``joint`` (two at least, through fixed ones) turn with
+    stops: a leg's, not a chain of spinning parts."""
+    seen = 0
+    parent = tree.urdf.parent_joint(joint.parent)
+    while parent is not None and seen < 2:
+        if parent.movable:
+            if parent.endless or parent.type != "revolute":
+                return False
+            seen += 1
+        parent = tree.urdf.parent_joint(parent.parent)
+    return seen == 2
 
 
 def _named_screws(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:

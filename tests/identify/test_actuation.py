@@ -634,3 +634,53 @@ def test_10000_casters_under_a_deep_fixed_chain_are_placed_in_one_walk() -> None
             robot, f"w{i}", "continuous", swivel, f"w{i}_l", xyz="0 0 -0.1", axis="0 1 0"
         )
     assert identify_urdf(robot.text()).structure == "UGV"
+
+
+def legs_ending_in_spinners(
+    *,
+    last: str = "revolute",
+    upper: str = "1e5",
+    above: str = "revolute",
+    sides: tuple[str, ...] = ("left", "right"),
+    beyond: bool = False,
+) -> RobotText:
+    """Two leg-named chains (``left_leg_1`` .. ``left_leg_4``) whose hip and knees are ``above``
+    (revolute: with stops) and whose last joint is ``last``, turning through +-``upper`` radians
+    when revolute (a wheel written with placeholder limits, as an RL export writes it); legs on
+    ``sides``; ``beyond``: a toe joint below the last one."""
+    robot = RobotText("r")
+    for side, y in (("left", 0.1), ("right", -0.1)):
+        if side not in sides:
+            continue
+        link = robot.root
+        for i, xyz in enumerate((f"0 {y} 0", "0 0 -0.2", "0 0 -0.2"), start=1):
+            link = builders.placed(robot, f"{side}_leg_{i}", above, link, f"{side}_l{i}", xyz=xyz)
+        limit = f'<limit lower="-{upper}" upper="{upper}" effort="1" velocity="1"/>'
+        robot.joint(
+            f"{side}_leg_4",
+            last,
+            link,
+            f"{side}_l4",
+            '<origin xyz="0 0 -0.2"/><axis xyz="0 1 0"/>' + (limit if last == "revolute" else ""),
+        )
+        if beyond:
+            builders.placed(robot, f"{side}_toe", "revolute", f"{side}_l4", f"{side}_t")
+    return robot
+
+
+def test_an_endless_leaf_ending_a_leg_of_limited_joints_is_a_wheel_whatever_its_name() -> None:
+    # A wheel-legged biped: two legs on wheels it rolls on, a UGV, driven.
+    result = identify_urdf(legs_ending_in_spinners().text())
+    assert [r.joint for r in result.roles if r.role == "wheel"] == ["left_leg_4", "right_leg_4"]
+    assert result.structure == "UGV"
+    assert identify_urdf(legs_ending_in_spinners(last="continuous").text()).structure == "UGV"
+    # An ankle with stops is a leg's: a biped; and a chain that spins all along is no leg's.
+    assert identify_urdf(legs_ending_in_spinners(upper="1").text()).structure == "Biped"
+    # Not on a chain that spins all along, nor on a joint carrying more, nor on one leg alone.
+    for robot in (
+        legs_ending_in_spinners(above="continuous"),
+        legs_ending_in_spinners(beyond=True),
+        legs_ending_in_spinners(sides=("left",)),
+    ):
+        evidence = " ".join(r.evidence for r in identify_urdf(robot.text()).roles)
+        assert "an endless leaf ending a leg" not in evidence
