@@ -87,9 +87,12 @@ def test_move_base_and_position_set_points_are_navigation_too() -> None:
     # Point-to-point scan matching (ICP) is no walk.
     for icp in ("TransformationEstimationPointToPoint()", "icp_method: point_to_point"):
         assert shipped("UGV", icp) == {}
-    # A target pose is a vehicle's goal, but a walker's foot in its leg kinematics.
+    # A target pose is a vehicle's goal, but a walker's foot in its leg kinematics, and a
+    # mobile manipulator's arm goal (its base's navigation shows otherwise).
     assert "Waypoint" in shipped("UGV", "self.target_pose = goal")
     assert shipped("Hexapod", "foot.target_pose = ik(leg)") == {}
+    assert shipped("Mobile Manipulator", "arm.setPoseTarget(target_pose)") == {}
+    assert "Waypoint" in shipped("Mobile Manipulator", "goal = NavigateToPose.Goal()")
 
 
 def test_an_arm_bolted_in_place_is_sent_no_waypoints_whatever_its_repository_holds() -> None:
