@@ -20,8 +20,9 @@ Where names say nothing, the chains' places and shapes still speak:
   (:func:`legs_at_the_pelvis`);
 * four or more alike short chains on one link, on both its sides, each ending below where it
   starts, are legs: a walker's, whatever their number (:func:`legs_by_place`; fingers point
-  away from their palm, legs down to the ground), when the link is the trunk's (no more turning
-  joints above it than a waist has: a hand's fingers hanging from an arm's wrist are no legs);
+  away from their palm, legs down to the ground), when the link is the trunk's (at most three
+  joints turning above it, a waist's or a simulator's floating base's: a hand's fingers hanging
+  from an arm's wrist are no legs);
 * two leg chains whose first joints turn about one line, side by side on one side of the
   body, are the two motors of one leg closed by a linkage (a five-bar leg, the loop a URDF
   cannot write): one leg (:func:`five_bars`), when the graph shows the loop: their ends meet

@@ -11,8 +11,8 @@ says nothing of its rays, is told by its names and topics (:func:`_ray_plugin_ki
 that publish simulation ground truth are skipped, a plugin that feeds an element already
 counted (same kind, same link) or repeats one a ``<sensor>`` runs is the same sensor, and
 depth streams on sibling frames of one camera link are one RGB-D camera (and cameras on frames
-fixed beneath the camera's body its streams), and a depth stream on a stereo camera's frame is
-the pair's. :func:`under_water`
+named for the camera's body, fixed beneath it facing its way, its streams), and a depth stream
+on a stereo camera's frame is the pair's. :func:`under_water`
 reads a barometer on a body below the water as the depth gauge it is there.
 
 :func:`merge` turns detections into one :class:`Sensor` per kind and sensor type. Sources are
