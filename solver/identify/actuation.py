@@ -53,6 +53,10 @@ _MIRROR_TOLERANCE = 0.02
 _ROLLERS = 3
 # As many endless joints level with one link are a wheel-leg walker's legs, not its wheels.
 _WHEEL_LEGS = 6
+# Wheel-legged robots roll on two legs' wheels or four (bipeds, quadrupeds).
+_WHEEL_LEGGED = (2, 4)
+# A leg's last joint named for a foot's part turns a foot, whatever its range (an ankle, a toe).
+_FOOT_JOINT = re.compile(r"ankle|toe", re.IGNORECASE)
 # Unnamed upright spinning leaves on one link are rotors from this many (a tricopter's).
 _FEWEST_UNNAMED_ROTORS = 3
 # A ball joint written as hinges: one about each axis.
@@ -304,35 +308,47 @@ def _unnamed_wheels(tree: JointTree, taken: set[str]) -> list[str]:
 
 
 def _leg_wheels(tree: JointTree, taken: set[str]) -> list[str]:
-    """Endless leaves named as a leg's (``joint_left_leg_4``), of no role yet, each at the end of
-    a chain of limited joints (a leg's hip and knee have stops; a wheel turns for ever), two or
-    more: the wheels a wheel-legged robot rolls on, whatever their names."""
+    """Endless leaves named as a leg's (``joint_left_leg_4``, not an ankle's or a toe's), of no
+    role yet, under two revolute joints with stops (the nearest movable ones, through fixed
+    joints: a leg's hip and knee; a wheel turns for ever), turning about the nearest one's axis
+    (a wheel rolls about its knee's axis; an ankle's roll or a swivel foot does not), two or
+    four of them: the wheels a wheel-legged biped or quadruped rolls on, whatever a wheel's name
+    would say. One walk up the tree serves all the leaves (``known``)."""
+    known: dict[str, str | None] = {}
     found = []
     for joint in tree.urdf.joints:
-        if (
+        if not (
             joint.endless
             and joint.actuated
             and joint.name not in taken
             and joint.child not in tree.moving_below
             and "leg" in (tree.parts_of(joint.name) | tree.parts_of(joint.child))
-            and _on_limited_joints(tree, joint)
+            and not _FOOT_JOINT.search(f"{joint.name} {joint.child}")
         ):
+            continue
+        knee = _limited_above(tree, joint, known)
+        if knee is not None and parallel(tree.poses.axis(joint), tree.poses.axis(knee)):
             found.append(joint.name)
-    return found if len(found) >= 2 else []
+    return found if len(found) in _WHEEL_LEGGED else []
 
 
-def _on_limited_joints(tree: JointTree, joint: Joint) -> bool:
-    """The movable joints just above ``joint`` (two at least, through fixed ones) turn with
-    stops: a leg's, not a chain of spinning parts."""
-    seen = 0
-    parent = tree.urdf.parent_joint(joint.parent)
-    while parent is not None and seen < 2:
-        if parent.movable:
-            if parent.endless or parent.type != "revolute":
-                return False
-            seen += 1
-        parent = tree.urdf.parent_joint(parent.parent)
-    return seen == 2
+def _limited_above(tree: JointTree, joint: Joint, known: dict[str, str | None]) -> Joint | None:
+    """The nearest movable joint above ``joint`` when it and the next movable one above it both
+    turn with stops (revolute, not endless), else None."""
+    nearest = None
+    link = joint.parent
+    for _ in range(2):
+        name = nearest_above(tree.urdf, link, known, _movable)
+        above = None if name is None else tree.urdf.joint(name)
+        if above is None or above.endless or above.type != "revolute":
+            return None
+        nearest = nearest or above
+        link = above.parent
+    return nearest
+
+
+def _movable(joint: Joint) -> bool:
+    return joint.movable
 
 
 def _named_screws(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:

@@ -640,28 +640,48 @@ def legs_ending_in_spinners(
     *,
     last: str = "revolute",
     upper: str = "1e5",
-    above: str = "revolute",
+    above: tuple[str, ...] = ("revolute", "revolute", "revolute"),
     sides: tuple[str, ...] = ("left", "right"),
     beyond: bool = False,
+    name: str = "leg_4",
+    axis: str = "0 1 0",
+    extra: str = "",
 ) -> RobotText:
-    """Two leg-named chains (``left_leg_1`` .. ``left_leg_4``) whose hip and knees are ``above``
-    (revolute: with stops) and whose last joint is ``last``, turning through +-``upper`` radians
-    when revolute (a wheel written with placeholder limits, as an RL export writes it); legs on
-    ``sides``; ``beyond``: a toe joint below the last one."""
+    """Leg-named chains on ``sides`` (``left_leg_1`` .. ``left_leg_3``, each of the kind in
+    ``above``, ``spinning`` for a revolute one with placeholder limits, turning about y, the
+    knee's axis) ending in a joint ``left_<name>`` of kind
+    ``last`` about ``axis``, turning through +-``upper`` radians when revolute (a wheel written
+    with placeholder limits, as an RL export writes it); ``beyond``: a toe joint below the last
+    one; ``extra``: more of the last joint's elements (a ``<mimic>``)."""
     robot = RobotText("r")
-    for side, y in (("left", 0.1), ("right", -0.1)):
+    for side, y in (("left", 0.1), ("right", -0.1), ("mid", 0.0)):
         if side not in sides:
             continue
         link = robot.root
-        for i, xyz in enumerate((f"0 {y} 0", "0 0 -0.2", "0 0 -0.2"), start=1):
-            link = builders.placed(robot, f"{side}_leg_{i}", above, link, f"{side}_l{i}", xyz=xyz)
+        places = (f"0 {y} 0", "0 0 -0.2", "0 0 -0.2")
+        for i, (kind, xyz) in enumerate(zip(above, places, strict=True), start=1):
+            if kind == "spinning":  # revolute with placeholder limits: it turns for ever
+                link = robot.joint(
+                    f"{side}_leg_{i}",
+                    "revolute",
+                    link,
+                    f"{side}_l{i}",
+                    f'<origin xyz="{xyz}"/><axis xyz="0 1 0"/>'
+                    '<limit lower="-1e5" upper="1e5" effort="1" velocity="1"/>',
+                )
+                continue
+            link = builders.placed(
+                robot, f"{side}_leg_{i}", kind, link, f"{side}_l{i}", xyz=xyz, axis="0 1 0"
+            )
         limit = f'<limit lower="-{upper}" upper="{upper}" effort="1" velocity="1"/>'
         robot.joint(
-            f"{side}_leg_4",
+            f"{side}_{name}",
             last,
             link,
             f"{side}_l4",
-            '<origin xyz="0 0 -0.2"/><axis xyz="0 1 0"/>' + (limit if last == "revolute" else ""),
+            f'<origin xyz="0 0 -0.2"/><axis xyz="{axis}"/>'
+            + (limit if last == "revolute" else "")
+            + extra,
         )
         if beyond:
             builders.placed(robot, f"{side}_toe", "revolute", f"{side}_l4", f"{side}_t")
@@ -674,13 +694,41 @@ def test_an_endless_leaf_ending_a_leg_of_limited_joints_is_a_wheel_whatever_its_
     assert [r.joint for r in result.roles if r.role == "wheel"] == ["left_leg_4", "right_leg_4"]
     assert result.structure == "UGV"
     assert identify_urdf(legs_ending_in_spinners(last="continuous").text()).structure == "UGV"
-    # An ankle with stops is a leg's: a biped; and a chain that spins all along is no leg's.
+    # An ankle with stops is a leg's: a biped.
     assert identify_urdf(legs_ending_in_spinners(upper="1").text()).structure == "Biped"
-    # Not on a chain that spins all along, nor on a joint carrying more, nor on one leg alone.
-    for robot in (
-        legs_ending_in_spinners(above="continuous"),
-        legs_ending_in_spinners(beyond=True),
-        legs_ending_in_spinners(sides=("left",)),
-    ):
-        evidence = " ".join(r.evidence for r in identify_urdf(robot.text()).roles)
-        assert "an endless leaf ending a leg" not in evidence
+
+
+@pytest.mark.parametrize(
+    "robot",
+    [
+        legs_ending_in_spinners(above=("continuous",) * 3),  # a chain that spins all along
+        legs_ending_in_spinners(above=("revolute", "prismatic", "revolute")),  # a slide above
+        legs_ending_in_spinners(above=("revolute", "revolute", "prismatic")),
+        legs_ending_in_spinners(above=("revolute", "revolute", "spinning")),  # a knee that spins
+        legs_ending_in_spinners(beyond=True),  # the joint carries more
+        legs_ending_in_spinners(sides=("left",)),  # one leg alone
+        legs_ending_in_spinners(sides=("left", "right", "mid")),  # three
+        legs_ending_in_spinners(name="arm_4"),  # another part's name
+        legs_ending_in_spinners(name="leg_ankle_roll"),  # an ankle's
+        legs_ending_in_spinners(axis="1 0 0"),  # rolling across the knee: an ankle's roll
+        legs_ending_in_spinners(extra='<mimic joint="left_leg_3"/>'),  # it follows a joint
+    ],
+    ids=[
+        "spinning",
+        "slide",
+        "slide-knee",
+        "spinning-knee",
+        "beyond",
+        "one",
+        "three",
+        "arm-named",
+        "ankle",
+        "across",
+        "mimic",
+    ],
+)
+def test_an_endless_leaf_is_no_legs_wheel_unless_it_ends_a_limited_leg_about_its_knees_axis(
+    robot: RobotText,
+) -> None:
+    evidence = " ".join(r.evidence for r in identify_urdf(robot.text()).roles)
+    assert "an endless leaf ending a leg" not in evidence

@@ -92,7 +92,16 @@ def test_move_base_and_position_set_points_are_navigation_too() -> None:
     assert "Waypoint" in shipped("UGV", "self.target_pose = goal")
     assert shipped("Hexapod", "foot.target_pose = ik(leg)") == {}
     assert shipped("Mobile Manipulator", "arm.setPoseTarget(target_pose)") == {}
+    assert shipped("Legged Mobile Manipulator", "arm.set_pose_target(target_pose)") == {}
     assert "Waypoint" in shipped("Mobile Manipulator", "goal = NavigateToPose.Goal()")
+    # Nav2's simple commander and move_base_flex send a base its goals under their own names.
+    for navigation in (
+        "from nav2_simple_commander.robot_navigator import BasicNavigator",
+        "nav = BasicNavigator(); nav.goToPose(target_pose)",
+        "client = actionlib.SimpleActionClient('move_base_flex/exe_path', ExePathAction)",
+        "from mbf_msgs.msg import MoveBaseAction",
+    ):
+        assert "Waypoint" in shipped("Mobile Manipulator", navigation), navigation
 
 
 def test_an_arm_bolted_in_place_is_sent_no_waypoints_whatever_its_repository_holds() -> None:
