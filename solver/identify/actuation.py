@@ -338,17 +338,13 @@ def _limited_above(tree: JointTree, joint: Joint, known: dict[str, str | None]) 
     nearest = None
     link = joint.parent
     for _ in range(2):
-        name = nearest_above(tree.urdf, link, known, _movable)
+        name = moved_by(tree.urdf, link, known)
         above = None if name is None else tree.urdf.joint(name)
         if above is None or above.endless or above.type != "revolute":
             return None
         nearest = nearest or above
         link = above.parent
     return nearest
-
-
-def _movable(joint: Joint) -> bool:
-    return joint.movable
 
 
 def _named_screws(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
