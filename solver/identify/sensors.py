@@ -68,6 +68,8 @@ _CAMERA_BODY = re.compile(r"camera|realsense|kinect|openni|xtion", re.IGNORECASE
 _SIDE = re.compile(r"(^|[_/-])(l|r|left|right)([_/-]|$)", re.IGNORECASE)
 # The widest baseline of a stereo camera (metres): two frames farther apart are two cameras.
 _BASELINE = 0.3
+# A horizontal fan of rays narrower than this (radians, one degree) points one way: one beam.
+_POINT_SWEEP = math.radians(1.0)
 # A Gazebo plugin that casts rays (gazebo_ros_ray_sensor, a GPU ray sensor), and the outputs of
 # one that sweeps a scan.
 _RAY_PLUGIN = re.compile(r"(^|[^a-z])(gpu_?)?ray([^a-z]|$)", re.IGNORECASE)
@@ -496,12 +498,16 @@ def _ray_plugin_kind(plugin: PluginTag, profile: Profile) -> str:
 
 def _rays(tag: SensorTag) -> int | None:
     """How many rays a ray sensor casts (horizontal x vertical samples; a missing axis casts
-    one); None when it says no samples at all, or none a simulator would cast (``0``, which
-    Gazebo refuses: a count left at zero says nothing of the device)."""
+    one; a horizontal fan sweeping less than :data:`_POINT_SWEEP` casts its rays along one line,
+    one ray: a single-beam laser's two samples 0.02 degrees apart measure one distance); None
+    when it says no samples at all, or none a simulator would cast (``0``, which Gazebo refuses:
+    a count left at zero says nothing of the device)."""
     axes = [n for n in (tag.horizontal_samples, tag.vertical_samples) if n is not None]
     if not axes or any(n < 1 for n in axes):
         return None
-    return (tag.horizontal_samples or 1) * (tag.vertical_samples or 1)
+    along_one_line = tag.sweep is not None and tag.sweep < _POINT_SWEEP
+    horizontal = 1 if along_one_line else tag.horizontal_samples or 1
+    return horizontal * (tag.vertical_samples or 1)
 
 
 def plugin_kind(plugin: PluginTag, profile: Profile) -> str | None:

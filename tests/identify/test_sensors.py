@@ -378,6 +378,13 @@ def test_a_one_ray_range_sensor_is_no_lidar_and_four_of_them_stay_four() -> None
     assert found == [("ir_range", None, 4), ("lidar", "LIDAR", 1)]
 
 
+def test_rays_fanned_over_less_than_a_degree_are_one_beam_a_range_finder() -> None:
+    # A single-beam laser written as two samples 0.02 degrees apart measures one distance;
+    # the same two samples a few degrees apart sweep, as a lidar's do.
+    assert kinds(ray("tool", "laser_distance", 2, 0.0004, 2.0)) == [("ir_range", None, 1)]
+    assert kinds(ray("tool", "laser_distance", 2, 0.05, 2.0)) == [("lidar", "LIDAR", 1)]
+
+
 def test_a_ray_sensor_left_at_zero_samples_is_read_by_its_type_not_as_one_ray() -> None:
     # Gazebo casts no ray for <samples>0</samples>: the count says nothing of the device.
     for samples in (0, -1):
