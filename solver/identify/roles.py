@@ -206,14 +206,14 @@ class RoleReader:
         rudder a current pushes)."""
         if not self.marine:
             return {}
-        by_link = {j.child: j for j in self.urdf.joints if j.movable}
         found: dict[str, Role] = {}
         for plugin in self.plugins_of("force"):
             label = self.plugin_label(plugin)
             for tag, text in plugin.params:
-                joint = by_link.get(text)
+                joint = self.urdf.parent_joint(text)
                 if (
                     joint is None
+                    or not joint.movable
                     or joint.name in found
                     or joint.type not in _ROTATING
                     or joint.parent not in self.still

@@ -288,16 +288,19 @@ def _rgbd_frames(found: list[Detection], urdf: Urdf) -> list[Detection]:
     return kept
 
 
-def _depth_bodies(found: list[Detection]) -> set[str]:
-    """The links named as a camera's body (:data:`_CAMERA_BODY`) that carry a depth stream."""
+def _depth_bodies(found: list[Detection]) -> dict[str, str]:
+    """The links named as a camera's body (:data:`_CAMERA_BODY`) that carry a depth stream,
+    each with the name its streams' frames begin with (its own, up to its camera word)."""
     return {
-        d.link
+        d.link: d.link[: named.end()]
         for d in found
-        if d.kind == "depth_camera" and d.link is not None and _CAMERA_BODY.search(d.link)
+        if d.kind == "depth_camera"
+        and d.link is not None
+        and (named := _CAMERA_BODY.search(d.link)) is not None
     }
 
 
-def _stream_beneath_body(detection: Detection, bodies: set[str], urdf: Urdf) -> bool:
+def _stream_beneath_body(detection: Detection, bodies: dict[str, str], urdf: Urdf) -> bool:
     """A plain camera on a frame named for a camera's body that carries a depth stream (as the
     body's name up to its camera word: ``camera_color_frame`` for ``camera_link`` or
     ``camera_depth_frame``), fixed beneath it facing its way (:data:`_DEVICE_DEPTH` fixed joints
@@ -315,9 +318,7 @@ def _stream_beneath_body(detection: Detection, bodies: set[str], urdf: Urdf) -> 
         reach += math.hypot(*joint.origin)
         link = joint.parent
         if link in bodies:
-            named = _CAMERA_BODY.search(link)
-            prefix = link[: named.end()] if named else link
-            return reach <= _STREAM_REACH and detection.link.startswith(prefix)
+            return reach <= _STREAM_REACH and detection.link.startswith(bodies[link])
     return False
 
 
