@@ -64,7 +64,12 @@ from solver.identify.sensors import (
     sensors_from_urdf,
     under_water,
 )
-from solver.identify.shipped import body_from_workspace, controls_from_workspace, named_joints
+from solver.identify.shipped import (
+    body_from_workspace,
+    controls_from_workspace,
+    leg_controllers,
+    named_joints,
+)
 from solver.limits import limit
 from solver.ros.description import TeleopDescription, description_beside, load_description
 from solver.ros.joints import JointStart
@@ -205,6 +210,7 @@ def identify_urdf(
             srdf_source=Path(srdf_file).name,
             guess_navigation=packages is None or not packages.complete,
             named=_named(packages, body),
+            leg_controllers=None if packages is None else leg_controllers(packages, profile),
         ),
         shipped,
     ]

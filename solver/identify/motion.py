@@ -169,10 +169,13 @@ def _limbs(
     urdf_source: str,
     urdf: Urdf | None = None,
     named: Collection[str] | None = None,
+    leg_controllers: str | None = None,
 ) -> _Shown:
     """Limb joints a controller drives (declared); arms of actuated joints (roles), but for
     an arm nothing commands (:func:`_shown_only`); a pan/tilt unit alone
-    (:attr:`Body.head_alone`)."""
+    (:attr:`Body.head_alone`); legs to walk on, or, when the robot's packages configure
+    joint controllers and ship no gait (``leg_controllers``, the file that shows it), legs
+    commanded joint by joint."""
     found = []
     if body.controlled_joints:
         count = len(body.controlled_joints)
@@ -230,7 +233,11 @@ def _limbs(
         )
     legs = body.count("leg")
     # Legs are there to walk on; the gait that walks them is software, not in the description.
-    if legs >= _WALKING_LEGS:
+    # Packages read whole that configure joint controllers and ship no gait say it is not there.
+    if legs >= _WALKING_LEGS and leg_controllers is not None:
+        why = f"{leg_controllers}: joint controllers for {legs} legs, no gait shipped"
+        found.append(("leg_controllers", why))
+    elif legs >= _WALKING_LEGS:
         found.append(("legs", f"{urdf_source}: likely, not declared: {legs} legs to walk on"))
     return found
 
@@ -347,16 +354,19 @@ def controls_from_description(
     srdf_source: str = "srdf",
     guess_navigation: bool = True,
     named: Collection[str] | None = None,
+    leg_controllers: str | None = None,
 ) -> tuple[Control, ...]:
     """The motion controls the body (and SRDF) show, each with what shows it; with the kinds
     of the sensors the description declares, the profile's navigation guess too (not with
     ``guess_navigation=False``: the robot's packages were read, and say). ``named``: the
-    joints the robot's packages name, when they were read whole."""
+    joints the robot's packages name, when they were read whole; ``leg_controllers``: the file
+    of the robot's packages that configures joint controllers, when they ship no gait
+    (:func:`solver.identify.shipped.leg_controllers`)."""
     effectors = () if srdf is None else hand_effectors(body, srdf, urdf)  # once per SRDF
     shown = [
         *_ground(body, urdf_source),
         *_flight(body, urdf_source),
-        *_limbs(body, urdf_source, urdf, named),
+        *_limbs(body, urdf_source, urdf, named, leg_controllers),
         *_planned(body, srdf, profile, urdf, srdf_source, effectors=effectors),
     ]
     if _feet_only(srdf, effectors) or _balances(body):

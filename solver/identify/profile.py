@@ -44,6 +44,7 @@ __all__ = [
     "VEHICLE_MEDIA",
     "ControlRule",
     "FeatureCondition",
+    "GaitRule",
     "NavigationRule",
     "PackageRule",
     "Pattern",
@@ -168,6 +169,7 @@ CONTROL_SOURCES = (
     "srdf_group",
     "srdf_walker_group",
     "srdf_end_effector",
+    "leg_controllers",
     *ROLE_SOURCES,
 )
 LIMB_KEYS = (
@@ -397,6 +399,16 @@ class NavigationRule:
 
 
 @dataclass(frozen=True, slots=True)
+class GaitRule:
+    """What tells a walker's gait from its legs' joint controllers in the texts of its
+    packages (:func:`solver.identify.shipped.leg_controllers`): ``shipped``, a gait (walking
+    software, a velocity command, a teleop); ``controllers``, joint controllers configured."""
+
+    shipped: Pattern
+    controllers: Pattern
+
+
+@dataclass(frozen=True, slots=True)
 class PackageRule:
     """What a text of the robot's packages shows (:mod:`solver.identify.shipped`): ``match``
     found in a launch, configuration or script file means ``control`` (``velocity``: the
@@ -442,6 +454,8 @@ class Profile:
     # A link the robot's packages publish in (a frame id), by its name -> a sensor kind
     # (``sensors.frames``, :mod:`solver.identify.frames`).
     frame_rules: tuple[SensorRule, ...] = ()
+    # A walker's gait, or its legs' joint controllers, in the same texts (``motion.gait``).
+    gait: GaitRule | None = None
 
     def role(self, name: str) -> str:
         """The rule-set characteristic filling role ``name`` (motion_control, ...)."""
@@ -543,6 +557,7 @@ def parse_profile(document: Document) -> Profile:
     velocity_default, by_structure, description = _motion(reader, names)
     navigation = _navigation(reader, description)
     package_controls = _package_rules(reader, names)
+    gait = _gait(reader)
     body_packages = (
         _patterns(reader, ("body_packages",), VEHICLE_MEDIA, "medium")
         if reader.get(("body_packages",)) is not None
@@ -576,6 +591,7 @@ def parse_profile(document: Document) -> Profile:
         package_controls,
         body_packages,
         frame_rules,
+        gait,
     )
 
 
@@ -859,7 +875,7 @@ def _motion(
     reader.unknown_keys(
         ("motion",),
         spec,
-        {"velocity", "description", "navigation", "packages"},
+        {"velocity", "description", "navigation", "packages", "gait"},
         "motion field",
     )
     velocity = reader.mapping(("motion", "velocity"), "velocity")
@@ -920,6 +936,20 @@ def _package_rules(reader: Reader, structures: set[str]) -> tuple[PackageRule, .
                 PackageRule(control, match, frozenset(not_for), reader.document.location(item))
             )
     return tuple(found)
+
+
+def _gait(reader: Reader) -> GaitRule | None:
+    """``motion.gait`` (optional): a gait shipped, joint controllers configured."""
+    path: YPath = ("motion", "gait")
+    spec = reader.mapping(path, "gait", required=False)
+    if not spec:
+        return None
+    reader.unknown_keys(path, spec, {"shipped", "controllers"}, "gait field")
+    shipped = _pattern(reader, (*path, "shipped"))
+    controllers = _pattern(reader, (*path, "controllers"))
+    if shipped is None or controllers is None:
+        return None
+    return GaitRule(shipped, controllers)
 
 
 def _navigation(

@@ -9,6 +9,10 @@ Effector). A rule may exclude structures (no navigation for an arm bolted to a t
 its repository holds). Each control names the file that shows it, the first one found in the
 order the packages were read (the description's package first).
 
+The same texts tell a walker's gait from its legs' joint controllers: packages read whole that
+configure joint controllers and ship no gait (no walking software, velocity command or teleop)
+command its joints one by one, and no gait is guessed for its legs (:func:`leg_controllers`).
+
 The same texts say what a body travels in when its description shows no way at all (one link
 and its mesh, a few sensor frames: a drone a simulator poses, an AUV drawn for RViz), or only
 a drive plugin that slides it, nothing of it on the ground (:attr:`Body.moved_by_plugin_alone`):
@@ -35,7 +39,7 @@ from solver.identify.profile import VELOCITY, Pattern, Profile
 from solver.identify.readers.workspace import Workspace
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
-__all__ = ["body_from_workspace", "controls_from_workspace", "named_joints"]
+__all__ = ["body_from_workspace", "controls_from_workspace", "leg_controllers", "named_joints"]
 
 
 def controls_from_workspace(
@@ -85,6 +89,18 @@ def _driven(body: Body, workspace: Workspace, profile: Profile) -> Body:
         if rule.control == VELOCITY and (found := _first_found(workspace, rule.match)):
             return replace(body, driven_by=found)
     return body
+
+
+def leg_controllers(workspace: Workspace, profile: Profile) -> str | None:
+    """The file of the robot's packages that configures joint controllers, when they were read
+    whole and none ships a gait (the profile's ``motion.gait``): a walker whose author ships
+    its joints' controllers and no walking software is commanded joint by joint, whatever its
+    legs could do (:func:`solver.identify.motion.controls_from_description`). None when a
+    bound stopped the reading: what was not read may walk it."""
+    rule = profile.gait
+    if rule is None or not workspace.complete or _first_found(workspace, rule.shipped):
+        return None
+    return _first_found(workspace, rule.controllers)
 
 
 def named_joints(workspace: Workspace, joints: Collection[str]) -> frozenset[str]:

@@ -129,6 +129,21 @@ def test_a_navigation_need_for_nothing_that_moves_a_body_is_a_located_fault() ->
     assert "wheels" in fault.message
 
 
+def test_the_gait_rule_is_optional_and_its_fields_are_checked() -> None:
+    start, end = SHIPPED.index("  gait:"), SHIPPED.index("  packages:")
+    assert parse_profile(parse_document(SHIPPED[:start] + SHIPPED[end:], "p.yaml")).gait is None
+    shipped = load_profile().gait
+    assert shipped is not None
+    assert shipped.shipped.find("ros2 launch dog walking.launch.py") is not None
+    assert shipped.controllers.find("type: forward_command_controller/X") is not None
+    text = SHIPPED.replace("  gait:\n", "  gait:\n    stance: yes\n")
+    with pytest.raises(ProfileError) as caught:
+        parse_profile(parse_document(text, "p.yaml"))
+    [fault] = caught.value.faults
+    assert fault.location.path == "motion.gait.stance"
+    assert "unknown gait field 'stance'" in fault.message
+
+
 def test_package_rules_are_optional_and_their_structures_are_checked() -> None:
     start = SHIPPED.index("  packages:")
     assert parse_profile(parse_document(SHIPPED[:start], "plain.yaml")).package_controls == ()

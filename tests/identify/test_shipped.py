@@ -15,11 +15,13 @@ from tests.identify.builders import (
     LASER,
     RobotText,
     arm,
+    biped,
     legged_manipulator,
     manipulator,
     pan_tilt_only,
     parallel_gripper,
     quadrotor,
+    quadruped,
     transmission,
     ugv,
 )
@@ -529,3 +531,59 @@ def test_a_body_a_plugin_moves_on_wheels_keeps_its_ground(tmp_path: Path) -> Non
     assert read_with(tmp_path / "both", both, "<node pkg='auv_control'/>")[0] == "UGV"
     # With packages that name no medium, the plugin's box is a ground base as before.
     assert read_with(tmp_path / "quiet", slid_by_a_plugin(), "<node pkg='map_server'/>")[0] == "UGV"
+
+
+# A ros2_control configuration of a walker's joints, as a description package ships it.
+JOINT_CONTROLLERS = "legs_controller: {type: joint_trajectory_controller/JointTrajectoryController}"
+
+
+def test_a_walker_whose_packages_configure_joint_controllers_and_no_gait_is_commanded_by_joint(
+    tmp_path: Path,
+) -> None:
+    found = controls_of(described(tmp_path, quadruped(), JOINT_CONTROLLERS))
+    assert found == {
+        "Joint": "package rover_bringup: rover_bringup/launch/bringup.launch "
+        "(joint_trajectory_controller): joint controllers for 4 legs, no gait shipped"
+    }
+
+
+@pytest.mark.parametrize(
+    "gait",
+    [
+        "gait_planner: {type: tripod}",
+        "<node pkg='teleop_twist_keyboard'/>",  # a velocity command to walk by
+        "remap: {from: cmd_vel, to: /dog/cmd_vel}",
+        "walking_engine.launch",
+        "locomotion_policy.onnx",
+    ],
+)
+def test_a_walker_whose_packages_ship_a_gait_is_still_walked(tmp_path: Path, gait: str) -> None:
+    found = controls_of(described(tmp_path, quadruped(), f"{JOINT_CONTROLLERS}\n{gait}"))
+    assert "Walking" in found
+    assert "Joint" not in found
+
+
+def test_a_walker_whose_packages_configure_no_joint_controller_keeps_the_guess_of_a_gait(
+    tmp_path: Path,
+) -> None:
+    found = controls_of(described(tmp_path, biped(), "<node pkg='robot_state_publisher'/>"))
+    assert set(found) == {"Walking"}
+    assert found["Walking"].startswith("urdf: likely, not declared: 2 legs to walk on")
+
+
+def test_a_walker_read_alone_or_in_part_keeps_the_guess_of_a_gait(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    alone = described(tmp_path / "alone", quadruped(), JOINT_CONTROLLERS)
+    assert set(controls_of(alone, look_around=False)) == {"Walking"}
+    # What a bound left unread may hold the gait.
+    in_part = read_in_part(tmp_path / "part", monkeypatch, quadruped(), JOINT_CONTROLLERS)
+    assert set(controls_of(in_part)) == {"Walking"}
+
+
+def test_joint_controllers_of_a_body_with_one_leg_or_none_change_nothing(tmp_path: Path) -> None:
+    arm_alone = controls_of(described(tmp_path / "arm", manipulator(), JOINT_CONTROLLERS))
+    assert "Walking" not in arm_alone
+    assert not [source for source in arm_alone.values() if "no gait shipped" in source]
+    rover = controls_of(described(tmp_path / "rover", rover_with_a_lidar(), JOINT_CONTROLLERS))
+    assert set(rover) == {"Driving"}
