@@ -9,13 +9,15 @@ imported or parsed as code.
 * The description's *package* is the nearest folder above the file (at most
   :data:`MAX_LEVELS_UP` folders up) holding a ``package.xml``. The *workspace* is the nearest
   folder named ``src`` at most two folders above that package's folder (a colcon or catkin
-  workspace, where a bringup may sit in a sibling repository), else the folder above the
-  package, or one the caller names.
+  workspace, where a bringup may sit in a sibling repository); for an installed package
+  (``PREFIX/share/NAME``) the install space its neighbours were installed in; else the folder
+  above the package, or one the caller names.
 * The workspace is walked once, the description's package first: symbolic links are never
   followed, hidden folders and the folders builds and tests write (``build``, ``install``,
-  ``devel``, ``log``, ``test``, ...) are skipped, at most :data:`MAX_DEPTH` folders deep and
-  :data:`MAX_ENTRIES` entries. Each file belongs to the nearest package above it; a file in no
-  package is nobody's.
+  ``devel``, ``log``, ``test``, ...) are skipped (but one the description lies in: an
+  installed description's neighbours are installed beside it), at most :data:`MAX_DEPTH`
+  folders deep and :data:`MAX_ENTRIES` entries. Each file belongs to the nearest package above
+  it; a file in no package is nobody's.
 * Files are read in the order the robot's packages are likeliest: the description's, those
   named for the robot, those whose ``package.xml`` names one of them, then the rest; so a bound
   spent on a vendored library leaves the robot's own packages read. Text files
@@ -143,11 +145,17 @@ def description_package(path: str | Path) -> Path | None:
 
 def workspace_of(package: str | Path) -> Path:
     """The workspace around ``package``: the nearest folder named ``src`` at most two folders
-    above the package's folder, else the folder above the package."""
-    parent = Path(os.path.abspath(package)).parent
-    for folder in (parent, parent.parent, parent.parent.parent):
-        if folder.name == "src":
-            return folder
+    above the package's folder; for an installed package (``PREFIX/share/NAME``), the install
+    space its neighbours were installed in (``install/`` above a colcon package's own prefix,
+    ``install/NAME/share/NAME``; else the ``share`` folder, as ``/opt/ros/DISTRO/share``);
+    else the folder above the package."""
+    folder = Path(os.path.abspath(package))
+    parent = folder.parent
+    for above in (parent, parent.parent, parent.parent.parent):
+        if above.name == "src":
+            return above
+    if parent.name == "share" and parent.parent.name == folder.name:
+        return parent.parent.parent
     return parent
 
 
@@ -188,7 +196,7 @@ def read_workspace(package: str | Path, root: str | Path | None = None) -> Works
     own = packages.get(folder)
     if own is None:
         return None
-    packages.update(_walk(top, budget, skip=folder))
+    packages.update(_walk(top, budget, skip=folder, holding=_above(folder)))
     core = _core(own, list(packages.values()))
     ordered = _reading_order(core, list(packages.values()))
     names = {p.name for p in ordered}
@@ -265,17 +273,30 @@ def _common_names(packages: list[_Package]) -> set[str]:
     return {name for name, count in counts.items() if count > bound}
 
 
-def _walk(start: str, budget: _Budget, skip: str | None = None) -> dict[str, _Package]:
+def _above(folder: str) -> frozenset[str]:
+    """The folders above ``folder``: a skipped name among them (``install``) is walked, since
+    the description was installed there and its neighbours were installed beside it."""
+    found = set()
+    here = os.path.dirname(folder)
+    while here and here not in found and os.path.dirname(here) != here:
+        found.add(here)
+        here = os.path.dirname(here)
+    return frozenset(found)
+
+
+def _walk(
+    start: str, budget: _Budget, skip: str | None = None, holding: frozenset[str] = frozenset()
+) -> dict[str, _Package]:
     """Every package under ``start`` (by folder) with its manifest's words and its text files'
-    paths; a package owns the folders below it (links not followed, skipped folders and
-    ``skip`` left out)."""
+    paths; a package owns the folders below it (links not followed, skipped folders but those
+    in ``holding`` and ``skip`` left out)."""
     packages: dict[str, _Package] = {}
     stack: list[tuple[str, int, _Package | None]] = [(start, 0, None)]
     while stack and not budget.stopped:
         folder, level, owner = stack.pop()
         if folder == skip:
             continue
-        files, subfolders = _list(folder, budget)
+        files, subfolders = _list(folder, budget, holding)
         if "package.xml" in files:
             manifest = _text(_read(os.path.join(folder, "package.xml"), MAX_MANIFEST_BYTES))
             found = _NAME.search(manifest)
@@ -302,9 +323,11 @@ def _texts(folder: str, files: list[str]) -> list[str]:
     ]
 
 
-def _list(folder: str, budget: _Budget) -> tuple[list[str], list[str]]:
-    """The regular files and the folders (links and hidden or skipped names left out) of
-    ``folder``; none when it cannot be listed."""
+def _list(
+    folder: str, budget: _Budget, holding: frozenset[str] = frozenset()
+) -> tuple[list[str], list[str]]:
+    """The regular files and the folders (links and hidden or skipped names left out, but for
+    a folder in ``holding``) of ``folder``; none when it cannot be listed."""
     files: list[str] = []
     subfolders: list[str] = []
     try:
@@ -317,7 +340,7 @@ def _list(folder: str, budget: _Budget) -> tuple[list[str], list[str]]:
                 if entry.name.startswith(".") or entry.is_symlink():
                     continue
                 if entry.is_dir(follow_symlinks=False):
-                    if entry.name not in SKIPPED_FOLDERS:
+                    if entry.name not in SKIPPED_FOLDERS or entry.path in holding:
                         subfolders.append(entry.name)
                 elif entry.is_file(follow_symlinks=False):
                     files.append(entry.name)

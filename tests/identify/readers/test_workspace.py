@@ -274,6 +274,42 @@ def test_the_workspace_is_the_src_folder_above_a_repository(tmp_path: Path) -> N
     assert workspace_of(tmp_path / "repo" / "pkg") == tmp_path / "repo"
 
 
+def installed(prefix: Path, name: str, files: dict[str, str] | None = None) -> Path:
+    """A package installed under ``prefix`` as colcon installs it, ``PREFIX/share/NAME``."""
+    return package(prefix / "share", name, files)
+
+
+def test_an_installed_description_is_read_with_the_packages_installed_beside_it(
+    tmp_path: Path,
+) -> None:
+    # colcon's isolated install: install/NAME/share/NAME, a build folder beside it.
+    install = tmp_path / "ws" / "install"
+    described = installed(install / "rover_description", "rover_description")
+    installed(install / "rover_bringup", "rover_bringup", {"launch/a.launch": "rover_description"})
+    package(tmp_path / "ws" / "build", "rover_bringup", {"launch/b.launch": "rover_description"})
+    assert workspace_of(described) == install
+    found = read(described)
+    assert found.packages == ("rover_description", "rover_bringup")
+    assert [f.path for f in found.files] == ["rover_bringup/share/rover_bringup/launch/a.launch"]
+    # A merged install (or /opt/ros/DISTRO): the share folder.
+    merged = installed(tmp_path / "opt", "dog_description")
+    installed(tmp_path / "opt", "dog_bringup", {"launch/a.launch": "dog_description"})
+    assert workspace_of(merged) == tmp_path / "opt" / "share"
+    assert read(merged).packages == ("dog_description", "dog_bringup")
+
+
+def test_a_skipped_folder_holding_the_description_is_walked_and_no_other(tmp_path: Path) -> None:
+    # A repository that commits its install space, read from its top.
+    repo = tmp_path / "repo"
+    described = installed(repo / "install" / "car_description", "car_description")
+    installed(
+        repo / "install" / "car_bringup", "car_bringup", {"launch/a.launch": "car_description"}
+    )
+    package(repo / "build", "car_teleop", {"launch/t.launch": "car_description"})
+    package(repo / "src" / "test", "car_tests", {"launch/t.launch": "car_description"})
+    assert read(described, repo).packages == ("car_description", "car_bringup")
+
+
 def test_folders_deeper_than_the_bound_are_not_walked_and_a_note_says_so(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
