@@ -164,12 +164,13 @@ class Body:
             or self.planar_base
             or self.fixed_wheels
             or self.casters
+            or self.shipped_as == "ground"
         )
 
     @property
     def weak_base(self) -> bool:
-        """A mobile base known only from fixed wheels or planar root joints (an SRDF's virtual
-        joint is not read: :mod:`solver.identify.placement`)."""
+        """A mobile base known only from fixed wheels, planar root joints or its packages' words
+        (an SRDF's virtual joint is not read: :mod:`solver.identify.placement`)."""
         return self.mobile_base and not (
             self.wheels or self.tracks or self.drive_plugins or self.casters
         )
@@ -348,6 +349,8 @@ class Body:
             lines.append(f"tracks: {_names(self.tracks)}")
         if self.drive_plugins:
             lines.append(f"drive plugin(s): {_names(self.drive_plugins)}")
+        if self.shipped_as == "ground":
+            lines.append(f"a ground vehicle by its packages alone: {self.shipped_by}")
         return lines
 
     def evidence(self, root: str) -> tuple[str, ...]:

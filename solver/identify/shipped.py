@@ -17,7 +17,8 @@ The same texts say what a body travels in when its description shows no way at a
 and its mesh, a few sensor frames: a drone a simulator poses, an AUV drawn for RViz), or only
 a drive plugin that slides it, nothing of it on the ground (:attr:`Body.moved_by_plugin_alone`):
 the profile's ``body_packages`` words (a take-off command, a flight stack; a submersible's or a
-surface craft's words) found in the robot's packages fly it or put it in water, with doubt
+surface craft's words; a ground vehicle's or its drive's) found in the robot's packages fly it,
+put it in water or on the ground, with doubt
 (:func:`body_from_workspace`). Packages of two kinds of vehicle say nothing.
 
 What the packages ship is the robot's author's word, stronger than a guess: when they were read

@@ -154,6 +154,7 @@ def test_package_rules_are_optional_and_their_structures_are_checked() -> None:
         "velocity",
         "End Effector",
         "End Effector",
+        "End Effector",
     ]
     assert "Manipulator" in shipped[0].not_for
     text = SHIPPED.replace(
@@ -175,6 +176,7 @@ def test_body_package_words_are_optional_and_name_only_known_media() -> None:
         "flight",
         "underwater",
         "surface",
+        "ground",
     ]
     text = SHIPPED.replace("  surface: '(^|[^a-z])(usvs", "  surfce: '(^|[^a-z])(usvs", 1)
     assert text != SHIPPED

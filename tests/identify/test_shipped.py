@@ -31,10 +31,10 @@ PROFILE = load_profile()
 
 def shipping(*texts: str) -> Workspace:
     files = tuple(
-        ShippedFile("rover_bringup", f"rover_bringup/launch/{n}.launch.py", text)
+        ShippedFile("craft_bringup", f"craft_bringup/launch/{n}.launch.py", text)
         for n, text in enumerate(texts)
     )
-    return Workspace("/ws/src", "rover_description", ("rover_bringup",), files)
+    return Workspace("/ws/src", "craft_description", ("craft_bringup",), files)
 
 
 def shipped(structure: str, *texts: str) -> dict[str, str]:
@@ -44,7 +44,7 @@ def shipped(structure: str, *texts: str) -> dict[str, str]:
 
 def test_a_bringup_that_runs_nav2_ships_waypoint_goals_named_by_its_file() -> None:
     assert shipped("UGV", "IncludeLaunchDescription('nav2_bringup')") == {
-        "Waypoint": "package rover_bringup: rover_bringup/launch/0.launch.py (nav2_bringup)"
+        "Waypoint": "package craft_bringup: craft_bringup/launch/0.launch.py (nav2_bringup)"
     }
 
 
@@ -153,6 +153,44 @@ def test_an_arm_moved_by_inverse_kinematics_to_a_target_is_sent_end_effector_goa
     assert shipped("Quadruped", "legs = inverse_kinematics(foot)") == {}
 
 
+@pytest.mark.parametrize(
+    "text",
+    [
+        "arm_cartesian_controller: {type: cartesian_controllers/CartesianMotionController}",
+        "cartesian_impedance_example_controller",
+        "twist_controller/command_twist",
+        "client.call(JogLinear(v))",  # a maker's Cartesian jog
+        "robot.MovePose(x, y, z, a, b, c)",
+        "robot.movel(pose)",
+        "pub = rospy.Publisher('/ee_target', PoseStamped)",
+        "solve in task_space",
+    ],
+)
+def test_a_cartesian_controller_or_goal_an_arms_packages_ship_is_an_end_effector_control(
+    text: str,
+) -> None:
+    assert list(shipped("Manipulator", text)) == ["End Effector"]
+    assert list(shipped("Mobile Manipulator", text)) == ["End Effector"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "# Cartesian product of the grid",  # the word alone
+        "cartesian_grid = make_map()",
+        "log(end_effector_pose)",  # a pose logged, not a goal
+        "moveline = 3",
+    ],
+)
+def test_the_word_cartesian_or_a_logged_pose_is_no_end_effector_control(text: str) -> None:
+    assert shipped("Manipulator", text) == {}
+
+
+def test_a_body_of_no_arm_is_sent_no_cartesian_goals_whatever_its_packages_hold() -> None:
+    for structure in ("UGV", "UAV", "Quadruped", "Humanoid", "Gripper", "Pan/Tilt Unit"):
+        assert shipped(structure, "cartesian_controller: {type: CartesianMotionController}") == {}
+
+
 def test_the_first_file_that_shows_a_control_is_named() -> None:
     found = shipped("UGV", "nothing here", "waypoint_follower", "bt_navigator")
     assert found["Waypoint"].endswith("1.launch.py (waypoint)")
@@ -184,9 +222,9 @@ def described(tmp_path: Path, robot: RobotText, bringup: str) -> Path:
     """A description package holding ``robot`` and a bringup that finds it and runs
     ``bringup``; the description file."""
     src = tmp_path / "ws" / "src"
-    own = package(src, "rover_description", {"urdf/rover.urdf": robot.text()})
-    package(src, "rover_bringup", {"launch/bringup.launch": f"rover_description {bringup}"})
-    return own / "urdf" / "rover.urdf"
+    own = package(src, "craft_description", {"urdf/craft.urdf": robot.text()})
+    package(src, "craft_bringup", {"launch/bringup.launch": f"craft_description {bringup}"})
+    return own / "urdf" / "craft.urdf"
 
 
 def controls_of(path: Path, **options: object) -> dict[str, str]:
@@ -200,9 +238,9 @@ def test_a_description_in_its_package_is_read_with_the_packages_that_use_it(
     path = described(tmp_path, rover_with_a_lidar(), "<node pkg='move_base'/>")
     found = controls_of(path)
     assert found["Waypoint"] == (
-        "package rover_bringup: rover_bringup/launch/bringup.launch (move_base)"
+        "package craft_bringup: craft_bringup/launch/bringup.launch (move_base)"
     )
-    assert "packages read for the controls they ship: rover_description, rover_bringup" in (
+    assert "packages read for the controls they ship: craft_description, craft_bringup" in (
         identify(path).evidence
     )
 
@@ -228,7 +266,7 @@ def test_an_arms_guess_of_end_effector_goals_is_joined_by_the_moveit_it_ships(
     path = described(tmp_path, manipulator(), "<include file='move_group.launch'/>")
     guess, shown = controls_of(path)["End Effector"].split("; ")
     assert guess.startswith("urdf: likely, not declared")
-    assert shown == "package rover_bringup: rover_bringup/launch/bringup.launch (move_group)"
+    assert shown == "package craft_bringup: craft_bringup/launch/bringup.launch (move_group)"
 
 
 def picker(*extra: str) -> RobotText:
@@ -281,8 +319,8 @@ def test_a_pan_tilt_head_is_not_alone_on_a_body_its_packages_drive(tmp_path: Pat
     driven = identify(path)
     assert (driven.structure, set(controls_of(path))) == ("Other", {"Driving"})
     assert (
-        "a base driven by its packages' teleop node: package rover_bringup: "
-        "rover_bringup/launch/bringup.launch (teleop_twist_keyboard)"
+        "a base driven by its packages' teleop node: package craft_bringup: "
+        "craft_bringup/launch/bringup.launch (teleop_twist_keyboard)"
     ) in driven.evidence
     alone = identify(path, look_around=False)
     assert (alone.structure, set(controls_of(path, look_around=False))) == (
@@ -320,7 +358,7 @@ def read_in_part(
     monkeypatch.setattr(workspace, "MAX_FILES", 1)
     path = described(tmp_path, robot, bringup)
     package(
-        tmp_path / "ws" / "src", "rover_extras", {"a.launch": "rover_description", "b.yaml": ""}
+        tmp_path / "ws" / "src", "craft_extras", {"a.launch": "craft_description", "b.yaml": ""}
     )
     return path
 
@@ -375,7 +413,7 @@ def test_the_joints_packages_name_are_read_word_by_word() -> None:
     ],
 )
 def test_a_script_that_kills_a_planner_does_not_run_it(tmp_path: Path, stop: str) -> None:
-    path = described(tmp_path, manipulator(), f"{stop}\nros2 launch rover_description x.py")
+    path = described(tmp_path, manipulator(), f"{stop}\nros2 launch craft_description x.py")
     assert "move_group" not in controls_of(path).get("End Effector", "")
     path = described(tmp_path / "runs", manipulator(), "ros2 launch arm move_group.launch.py")
     assert "move_group" in controls_of(path)["End Effector"]
@@ -408,8 +446,8 @@ def test_a_file_name_is_shown_with_its_unprintable_characters_escaped() -> None:
 
 def test_a_description_package_alone_read_whole_ships_no_navigation(tmp_path: Path) -> None:
     src = tmp_path / "ws" / "src"
-    own = package(src, "rover_description", {"urdf/rover.urdf": rover_with_a_lidar().text()})
-    path = own / "urdf" / "rover.urdf"
+    own = package(src, "craft_description", {"urdf/craft.urdf": rover_with_a_lidar().text()})
+    path = own / "urdf" / "craft.urdf"
     assert "Waypoint" not in controls_of(path)
     assert "Waypoint" in controls_of(path, look_around=False)
 
@@ -427,7 +465,7 @@ def test_a_workspace_read_in_part_keeps_the_guess_and_says_why_in_a_note(
 
 
 def test_a_package_named_that_holds_no_package_is_said_in_a_note(tmp_path: Path) -> None:
-    path = tmp_path / "rover.urdf"
+    path = tmp_path / "craft.urdf"
     path.write_text(rover_with_a_lidar().text())
     result = identify(path, package=tmp_path)
     assert result.notes == (
@@ -453,8 +491,8 @@ def test_a_body_that_shows_no_way_of_travelling_flies_when_its_packages_take_off
     structure, evidence = read_with(tmp_path, one_link(), "rospy.ServiceProxy('takeoff')")
     assert structure == "UAV"
     assert (
-        "a flying body by its packages alone: package rover_bringup: "
-        "rover_bringup/launch/bringup.launch (takeoff)"
+        "a flying body by its packages alone: package craft_bringup: "
+        "craft_bringup/launch/bringup.launch (takeoff)"
     ) in evidence
 
 
@@ -470,6 +508,31 @@ def test_a_body_that_shows_no_way_of_travelling_floats_when_its_packages_are_a_b
 ) -> None:
     structure, _ = read_with(tmp_path, one_link(), "<node pkg='boat_control'/>")
     assert structure == "Surface Vessel"
+
+
+@pytest.mark.parametrize(
+    "bringup",
+    [
+        "controller: {type: diff_drive_controller/DiffDriveController}",
+        "<node pkg='ackermann_steering'/>",
+        "# the rover's bringup",
+        "mecanum_drive: {wheel_radius: 0.05}",
+        "lawn_mower: true",
+    ],
+)
+def test_a_body_that_shows_no_way_of_travelling_drives_when_its_packages_are_a_ground_vehicles(
+    tmp_path: Path, bringup: str
+) -> None:
+    result = identify(described(tmp_path, one_link(), bringup))
+    assert result.structure == "UGV"
+    assert result.confidence < 0.95  # with doubt: nothing of it touches the ground
+    said = "a ground vehicle by its packages alone"
+    assert any(line.startswith(said) for line in result.evidence)
+
+
+def test_ground_words_inside_longer_words_or_beside_a_drones_say_nothing(tmp_path: Path) -> None:
+    assert read_with(tmp_path / "a", one_link(), "amrita grovers ramrod")[0] == "Other"
+    assert read_with(tmp_path / "b", one_link(), "diff_drive; takeoff()")[0] == "Other"
 
 
 def test_read_alone_the_same_body_is_nothing_in_particular(tmp_path: Path) -> None:
@@ -542,7 +605,7 @@ def test_a_walker_whose_packages_configure_joint_controllers_and_no_gait_is_comm
 ) -> None:
     found = controls_of(described(tmp_path, quadruped(), JOINT_CONTROLLERS))
     assert found == {
-        "Joint": "package rover_bringup: rover_bringup/launch/bringup.launch "
+        "Joint": "package craft_bringup: craft_bringup/launch/bringup.launch "
         "(joint_trajectory_controller): joint controllers for 4 legs, no gait shipped"
     }
 
