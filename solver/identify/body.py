@@ -57,7 +57,7 @@ from solver.identify.limbs import (
     wrist,
 )
 from solver.identify.placement import MACHINE_TRAVEL, Placement, placement
-from solver.identify.profile import Profile
+from solver.identify.profile import GROUND, Profile
 from solver.identify.readers.urdf import Urdf
 from solver.identify.roles import Role
 from solver.identify.tree import JointTree
@@ -164,7 +164,7 @@ class Body:
             or self.planar_base
             or self.fixed_wheels
             or self.casters
-            or self.shipped_as == "ground"
+            or self.shipped_as == GROUND
         )
 
     @property
@@ -349,7 +349,7 @@ class Body:
             lines.append(f"tracks: {_names(self.tracks)}")
         if self.drive_plugins:
             lines.append(f"drive plugin(s): {_names(self.drive_plugins)}")
-        if self.shipped_as == "ground":
+        if self.shipped_as == GROUND:
             lines.append(f"a ground vehicle by its packages alone: {self.shipped_by}")
         return lines
 

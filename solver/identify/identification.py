@@ -210,7 +210,7 @@ def identify_urdf(
             srdf_source=Path(srdf_file).name,
             guess_navigation=packages is None or not packages.complete,
             named=_named(packages, body),
-            leg_controllers=None if packages is None else leg_controllers(packages, profile),
+            leg_controllers=_leg_controllers(packages, body, profile),
         ),
         shipped,
     ]
@@ -252,6 +252,15 @@ def identify_urdf(
         declared=None if description is None else description.file,
         disagreements=found.disagreements,
     )
+
+
+def _leg_controllers(packages: Workspace | None, body: Body, profile: Profile) -> str | None:
+    """The file of the robot's packages that configures its legs' joint controllers, when they
+    ship no gait (:func:`~solver.identify.shipped.leg_controllers`); else None."""
+    if packages is None:
+        return None
+    legs = [j for limb in body.limbs if limb.kind == "leg" for j in limb.joints]
+    return leg_controllers(packages, profile, legs)
 
 
 def _named(packages: Workspace | None, body: Body) -> frozenset[str] | None:

@@ -49,7 +49,7 @@ from solver.identify.body import Body
 from solver.identify.interfaces import Control
 from solver.identify.limbs import Limb
 from solver.identify.planning_groups import arm_plans, hand_effectors, leg_plans
-from solver.identify.profile import ROLE_SOURCES, Profile
+from solver.identify.profile import GROUND, ROLE_SOURCES, Profile
 from solver.identify.readers.urdf import Joint, Urdf
 
 if TYPE_CHECKING:
@@ -98,6 +98,10 @@ def _ground(body: Body, urdf_source: str) -> _Shown:
         # A vessel whose propulsion is not drawn (a hull and sensor frames, thrusters a
         # driver runs): it is driven, as a body flying by its packages is flown.
         found.append(("thrusters", f"{urdf_source}: a vessel with no thruster or fin drawn"))
+    if body.shipped_as == GROUND:
+        # A ground vehicle by its packages' words, nothing of it on the ground drawn (a body of
+        # sensor frames): it is driven, as a vessel whose propulsion is not drawn is.
+        found.append(("undrawn_wheels", f"{urdf_source}: a ground vehicle with no wheel drawn"))
     if body.planar_base:
         # The model moves its base in the plane (a planar joint, or root joints along x, y
         # and about z): what a planar-move plugin does, velocity commands in the plane.
@@ -235,7 +239,7 @@ def _limbs(
     # Legs are there to walk on; the gait that walks them is software, not in the description.
     # Packages read whole that configure joint controllers and ship no gait say it is not there.
     if legs >= _WALKING_LEGS and leg_controllers is not None:
-        why = f"{leg_controllers}: joint controllers for {legs} legs, no gait shipped"
+        why = f"{leg_controllers}: joint controllers naming joints of {legs} legs, no gait shipped"
         found.append(("leg_controllers", why))
     elif legs >= _WALKING_LEGS:
         found.append(("legs", f"{urdf_source}: likely, not declared: {legs} legs to walk on"))

@@ -34,6 +34,7 @@ __all__ = [
     "CONTROL_SOURCES",
     "DIRECTIONS",
     "FEATURES",
+    "GROUND",
     "MOTION_CONTROL",
     "PARTS",
     "PLUGIN_PARTS",
@@ -152,6 +153,7 @@ ROLE_SOURCES = (
     "wheels",
     "steered_wheels",
     "planar_base",
+    "undrawn_wheels",
     "thrusters",
     "arm",
     "arm_gripper",
@@ -201,6 +203,7 @@ _TOPIC_CONTROL_KEYS = {"control", "types", "match", "direction"}
 _PACKAGE_KEYS = {"control", "match", "not_for"}
 # What the robot's packages may say a body travels in (``body_packages``).
 VEHICLE_MEDIA = ("flight", "underwater", "surface", "ground")
+GROUND = "ground"
 _LIDAR_KEYS = {"single_plane", "multi_plane"}
 
 YPath = tuple[PathPart, ...]

@@ -36,7 +36,7 @@ from dataclasses import replace
 
 from solver.identify.body import Body
 from solver.identify.interfaces import Control
-from solver.identify.profile import VELOCITY, Pattern, Profile
+from solver.identify.profile import GROUND, VELOCITY, Pattern, Profile
 from solver.identify.readers.workspace import Workspace
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
@@ -65,15 +65,21 @@ def body_from_workspace(body: Body, workspace: Workspace, profile: Profile) -> B
     no way of travelling (:attr:`Body.travels_no_way`) or a drive plugin alone moves it
     (:attr:`Body.moved_by_plugin_alone`), and the packages name one medium only
     (a repository of drones and boats says nothing of this one); a pan/tilt head alone driven
-    by a teleop node its packages ship (:func:`_driven`)."""
+    by a teleop node its packages ship (:func:`_driven`). The ground is read last, and only
+    for a body of no limb: its words (a rover, a diff drive) are in many a repository of other
+    vehicles, and a pan/tilt unit on a rover is the rover's sensor head, no rover."""
     body = _driven(body, workspace, profile)
     if not (body.travels_no_way or body.moved_by_plugin_alone):
         return body
     said = {
         medium: shown_file
         for medium, pattern in profile.body_packages
-        if (shown_file := _first_found(workspace, pattern)) is not None
+        if medium != GROUND and (shown_file := _first_found(workspace, pattern)) is not None
     }
+    if not said and not body.limbs:
+        ground = dict(profile.body_packages).get(GROUND)
+        found = None if ground is None else _first_found(workspace, ground)
+        said = {} if found is None else {GROUND: found}
     if len(said) != 1:
         return body
     ((medium, evidence),) = said.items()
@@ -92,16 +98,23 @@ def _driven(body: Body, workspace: Workspace, profile: Profile) -> Body:
     return body
 
 
-def leg_controllers(workspace: Workspace, profile: Profile) -> str | None:
-    """The file of the robot's packages that configures joint controllers, when they were read
-    whole and none ships a gait (the profile's ``motion.gait``): a walker whose author ships
-    its joints' controllers and no walking software is commanded joint by joint, whatever its
-    legs could do (:func:`solver.identify.motion.controls_from_description`). None when a
-    bound stopped the reading: what was not read may walk it."""
+def leg_controllers(workspace: Workspace, profile: Profile, legs: Collection[str]) -> str | None:
+    """The first file of the robot's packages that configures joint controllers and names a
+    joint of the ``legs``, when the packages were read whole and none ships a gait (the
+    profile's ``motion.gait``): a walker whose author ships its legs' controllers and no
+    walking software is commanded joint by joint, whatever its legs could do
+    (:func:`solver.identify.motion.controls_from_description`). None when a bound stopped
+    the reading: what was not read may walk it."""
     rule = profile.gait
-    if rule is None or not workspace.complete or _first_found(workspace, rule.shipped):
+    if rule is None or not legs or not workspace.complete:
         return None
-    return _first_found(workspace, rule.controllers)
+    if _first_found(workspace, rule.shipped):
+        return None
+    for shipped in workspace.files:
+        matched = rule.controllers.find(shipped.text)
+        if matched is not None and named_joints(replace(workspace, files=(shipped,)), legs):
+            return _shown_file(shipped.package, shipped.path, matched)
+    return None
 
 
 def named_joints(workspace: Workspace, joints: Collection[str]) -> frozenset[str]:

@@ -151,6 +151,7 @@ def test_package_rules_are_optional_and_their_structures_are_checked() -> None:
     assert [rule.control for rule in shipped] == [
         "Waypoint",
         "Waypoint",
+        "Waypoint",
         "velocity",
         "End Effector",
         "End Effector",

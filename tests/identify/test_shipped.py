@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
@@ -16,6 +17,7 @@ from tests.identify.builders import (
     RobotText,
     arm,
     biped,
+    humanoid,
     legged_manipulator,
     manipulator,
     pan_tilt_only,
@@ -162,8 +164,12 @@ def test_an_arm_moved_by_inverse_kinematics_to_a_target_is_sent_end_effector_goa
         "client.call(JogLinear(v))",  # a maker's Cartesian jog
         "robot.MovePose(x, y, z, a, b, c)",
         "robot.movel(pose)",
+        "MoveLinear.srv",
         "pub = rospy.Publisher('/ee_target', PoseStamped)",
+        "goal = end_effector_goal(x)",
+        "end_effector_velocity: [0, 0, 0.1]",
         "solve in task_space",
+        "operational_space_controller",
     ],
 )
 def test_a_cartesian_controller_or_goal_an_arms_packages_ship_is_an_end_effector_control(
@@ -179,6 +185,10 @@ def test_a_cartesian_controller_or_goal_an_arms_packages_ship_is_an_end_effector
         "# Cartesian product of the grid",  # the word alone
         "cartesian_grid = make_map()",
         "log(end_effector_pose)",  # a pose logged, not a goal
+        "self.get_logger().info(f'{ee_pose}')",
+        "create_publisher(PoseStamped, '/ee_pose', 10)",
+        "planning_scene.remove_pose(marker)",
+        "saved_move_poses = []",
         "moveline = 3",
     ],
 )
@@ -189,6 +199,33 @@ def test_the_word_cartesian_or_a_logged_pose_is_no_end_effector_control(text: st
 def test_a_body_of_no_arm_is_sent_no_cartesian_goals_whatever_its_packages_hold() -> None:
     for structure in ("UGV", "UAV", "Quadruped", "Humanoid", "Gripper", "Pan/Tilt Unit"):
         assert shipped(structure, "cartesian_controller: {type: CartesianMotionController}") == {}
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "offboard_control_mode: position",
+        "pub = create_publisher(TrajectorySetpoint, 'fmu/trajectory_setpoint/in')",
+        "mission: [wp1, wp2]",
+        "from pymavlink import mavwp",
+        "set_mode('GUIDED')",
+        "<include file='$(find hector_quadrotor_actions)/launch/actions.launch'/>",
+        "client = PoseAction()",
+        "destination: [1, 2, 3]",
+        "srv.call('set_target 1 2 3')",
+        "autoflight/start flight_plan.mavlink",
+        "formation: triangle",
+    ],
+)
+def test_a_flown_bodys_goals_its_packages_ship_are_waypoints(text: str) -> None:
+    assert list(shipped("UAV", text)) == ["Waypoint"]
+    assert list(shipped("Aerial Manipulator", text)) == ["Waypoint"]
+
+
+def test_a_flown_bodys_goal_words_are_not_read_for_other_bodies_or_inside_other_words() -> None:
+    for structure in ("UGV", "Underwater Vehicle", "Manipulator", "Quadruped", "Other"):
+        assert shipped(structure, "mission: [wp1]; offboard; formation: line") == {}
+    assert shipped("UAV", "information transformation permission submissions") == {}
 
 
 def test_the_first_file_that_shows_a_control_is_named() -> None:
@@ -515,9 +552,15 @@ def test_a_body_that_shows_no_way_of_travelling_floats_when_its_packages_are_a_b
     [
         "controller: {type: diff_drive_controller/DiffDriveController}",
         "<node pkg='ackermann_steering'/>",
-        "# the rover's bringup",
+        "skid_steer_drive: {}",
         "mecanum_drive: {wheel_radius: 0.05}",
+        "# the rover's bringup",
+        "ugv_base: {}",
+        "agv_driver.py",
+        "amr_fleet.launch",
         "lawn_mower: true",
+        "mower_blade: off",
+        "wheelchair_driver",
     ],
 )
 def test_a_body_that_shows_no_way_of_travelling_drives_when_its_packages_are_a_ground_vehicles(
@@ -528,11 +571,29 @@ def test_a_body_that_shows_no_way_of_travelling_drives_when_its_packages_are_a_g
     assert result.confidence < 0.95  # with doubt: nothing of it touches the ground
     said = "a ground vehicle by its packages alone"
     assert any(line.startswith(said) for line in result.evidence)
+    assert {c.motion_control: c.source for c in result.motion_controls}["Driving"] == (
+        "urdf: a ground vehicle with no wheel drawn"
+    )
 
 
-def test_ground_words_inside_longer_words_or_beside_a_drones_say_nothing(tmp_path: Path) -> None:
-    assert read_with(tmp_path / "a", one_link(), "amrita grovers ramrod")[0] == "Other"
-    assert read_with(tmp_path / "b", one_link(), "diff_drive; takeoff()")[0] == "Other"
+def test_ground_words_inside_longer_words_say_nothing(tmp_path: Path) -> None:
+    assert read_with(tmp_path, one_link(), "amrita grovers ramrod")[0] == "Other"
+
+
+def test_ground_words_do_not_outvote_a_flying_or_a_diving_bodys(tmp_path: Path) -> None:
+    """A flight stack or a submersible's simulator names rovers and diff drives among its
+    examples: the other medium's word is read first."""
+    flown = read_with(tmp_path / "px4", one_link(), "px4 posix_sitl: iris, plane, rover")
+    assert flown[0] == "UAV"
+    dived = read_with(tmp_path / "uuv", one_link(), "<node pkg='uuv_control'/> diff_drive")
+    assert dived[0] == "Underwater Vehicle"
+
+
+def test_a_pan_tilt_unit_in_a_rovers_packages_stays_a_pan_tilt_unit(tmp_path: Path) -> None:
+    """A body with a limb (a head's pan and tilt) is not put on the ground by its packages'
+    words: the rover it sits on is another description."""
+    structure, _ = read_with(tmp_path, pan_tilt_only(), "# ptu on our rover, diff_drive")
+    assert structure == "Pan/Tilt Unit"
 
 
 def test_read_alone_the_same_body_is_nothing_in_particular(tmp_path: Path) -> None:
@@ -596,28 +657,87 @@ def test_a_body_a_plugin_moves_on_wheels_keeps_its_ground(tmp_path: Path) -> Non
     assert read_with(tmp_path / "quiet", slid_by_a_plugin(), "<node pkg='map_server'/>")[0] == "UGV"
 
 
-# A ros2_control configuration of a walker's joints, as a description package ships it.
-JOINT_CONTROLLERS = "legs_controller: {type: joint_trajectory_controller/JointTrajectoryController}"
+# A ros2_control configuration of a walker's legs, as a description package ships it.
+JOINT_CONTROLLERS = (
+    "legs_controller: {type: joint_trajectory_controller/JointTrajectoryController, "
+    "joints: [FL_hip, FL_thigh, FL_calf]}"
+)
 
 
-def test_a_walker_whose_packages_configure_joint_controllers_and_no_gait_is_commanded_by_joint(
+def test_a_walker_whose_packages_configure_its_legs_controllers_and_no_gait_is_commanded_by_joint(
     tmp_path: Path,
 ) -> None:
     found = controls_of(described(tmp_path, quadruped(), JOINT_CONTROLLERS))
     assert found == {
         "Joint": "package craft_bringup: craft_bringup/launch/bringup.launch "
-        "(joint_trajectory_controller): joint controllers for 4 legs, no gait shipped"
+        "(joint_trajectory_controller): joint controllers naming joints of 4 legs, "
+        "no gait shipped"
     }
+
+
+@pytest.mark.parametrize(
+    "controller",
+    [
+        "type: joint_trajectory_controller/JointTrajectoryController",
+        "type: position_controllers/JointGroupPositionController",
+        "type: effort_controllers/JointEffortController",
+        "type: velocity_controllers/JointVelocityController",
+        "type: forward_command_controller/ForwardCommandController",
+        "type: JointPositionController",
+    ],
+)
+def test_each_kind_of_joint_controller_naming_a_leg_commands_it(
+    tmp_path: Path, controller: str
+) -> None:
+    bringup = f"legs: {{{controller}, joint: RR_calf}}"
+    assert set(controls_of(described(tmp_path, quadruped(), bringup))) == {"Joint"}
+
+
+@pytest.mark.parametrize(
+    ("robot", "bringup"),
+    [
+        # A gripper's controller on a walker carrying an arm: no leg named.
+        (
+            legged_manipulator,
+            "gripper: {type: position_controllers/GripperActionController, joint: gripper_left}",
+        ),
+        # A head's joint group on a humanoid.
+        (
+            humanoid,
+            "head: {type: position_controllers/JointGroupPositionController, "
+            "joints: [neck_yaw, head_pitch]}",
+        ),
+        # A joint state broadcaster names every joint and commands none.
+        (quadruped, "joint_state_broadcaster: {type: JointStateBroadcaster, joints: [FL_hip]}"),
+    ],
+)
+def test_controllers_that_name_no_leg_or_command_none_leave_the_guess_of_a_gait(
+    tmp_path: Path, robot: Callable[[], RobotText], bringup: str
+) -> None:
+    assert "Walking" in controls_of(described(tmp_path, robot(), bringup))
 
 
 @pytest.mark.parametrize(
     "gait",
     [
-        "gait_planner: {type: tripod}",
-        "<node pkg='teleop_twist_keyboard'/>",  # a velocity command to walk by
-        "remap: {from: cmd_vel, to: /dog/cmd_vel}",
+        "gait_planner: {pattern: wave}",
         "walking_engine.launch",
         "locomotion_policy.onnx",
+        "footstep_planner",
+        "trot_speed: 0.3",
+        "crawl_mode: true",
+        "tripod: {height: 0.1}",
+        "stride_length: 0.2",
+        "controller: convex_mpc",
+        "cpg: {frequency: 1.0}",
+        "wbc: {weights: []}",
+        "legged_control.launch",
+        "ocs2_legged_robot",
+        "rl_policy: model.pt",
+        "remap: {from: cmd_vel, to: /dog/cmd_vel}",
+        "<node pkg='teleop_twist_keyboard'/>",
+        "<node pkg='joy' type='joy_node'/>",
+        "champ_base",
     ],
 )
 def test_a_walker_whose_packages_ship_a_gait_is_still_walked(tmp_path: Path, gait: str) -> None:

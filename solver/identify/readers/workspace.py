@@ -9,15 +9,16 @@ imported or parsed as code.
 * The description's *package* is the nearest folder above the file (at most
   :data:`MAX_LEVELS_UP` folders up) holding a ``package.xml``. The *workspace* is the nearest
   folder named ``src`` at most two folders above that package's folder (a colcon or catkin
-  workspace, where a bringup may sit in a sibling repository); for an installed package
-  (``PREFIX/share/NAME``) the install space its neighbours were installed in; else the folder
-  above the package, or one the caller names.
+  workspace, where a bringup may sit in a sibling repository); for a package colcon installed
+  (``install/NAME/share/NAME``) the install space its neighbours were installed in; else the
+  folder above the package (``/opt/ros/DISTRO/share``), or one the caller names.
 * The workspace is walked once, the description's package first: symbolic links are never
   followed, hidden folders and the folders builds and tests write (``build``, ``install``,
-  ``devel``, ``log``, ``test``, ...) are skipped (but one the description lies in: an
-  installed description's neighbours are installed beside it), at most :data:`MAX_DEPTH`
-  folders deep and :data:`MAX_ENTRIES` entries. Each file belongs to the nearest package above
-  it; a file in no package is nobody's.
+  ``devel``, ``log``, ``test``, ...) are skipped (but an ``install`` folder the description
+  lies in: its neighbours are installed beside it), at most :data:`MAX_DEPTH` folders deep and
+  :data:`MAX_ENTRIES` entries; an install prefix (``share`` beside ``lib``, ``include`` or
+  ``bin``, in no package) is walked in ``share`` alone. Each file belongs to the nearest
+  package above it; a file in no package is nobody's.
 * Files are read in the order the robot's packages are likeliest: the description's, those
   named for the robot, those whose ``package.xml`` names one of them, then the rest; so a bound
   spent on a vendored library leaves the robot's own packages read. Text files
@@ -85,6 +86,9 @@ SCRIPT_FOLDERS = frozenset({"scripts", "nodes", "bin"})
 SKIPPED_FOLDERS = frozenset(
     {"build", "devel", "install", "log", "logs", "node_modules", "__pycache__", "test", "tests"}
 )
+# An install space's folder name, and the folders beside share/ that tell an install prefix.
+INSTALL = "install"
+_PREFIX_FOLDERS = frozenset({"lib", "include", "bin"})
 # Stems too generic to name a robot (``robot_description`` beside ``robot_localization``).
 GENERIC_STEMS = frozenset({"robot_", "my_robot_", "ros_", "ros2_", "test_", "my_"})
 # A name written by more than this share of the workspace's packages (and by more than
@@ -145,17 +149,17 @@ def description_package(path: str | Path) -> Path | None:
 
 def workspace_of(package: str | Path) -> Path:
     """The workspace around ``package``: the nearest folder named ``src`` at most two folders
-    above the package's folder; for an installed package (``PREFIX/share/NAME``), the install
-    space its neighbours were installed in (``install/`` above a colcon package's own prefix,
-    ``install/NAME/share/NAME``; else the ``share`` folder, as ``/opt/ros/DISTRO/share``);
-    else the folder above the package."""
+    above the package's folder; for a package colcon installed (``install/NAME/share/NAME``),
+    the install space its neighbours were installed in (``install``); else the folder above
+    the package (a merged install's ``share``, as ``/opt/ros/DISTRO/share``)."""
     folder = Path(os.path.abspath(package))
     parent = folder.parent
     for above in (parent, parent.parent, parent.parent.parent):
         if above.name == "src":
             return above
-    if parent.name == "share" and parent.parent.name == folder.name:
-        return parent.parent.parent
+    prefix = parent.parent
+    if parent.name == "share" and prefix.name == folder.name and prefix.parent.name == INSTALL:
+        return prefix.parent
     return parent
 
 
@@ -274,12 +278,13 @@ def _common_names(packages: list[_Package]) -> set[str]:
 
 
 def _above(folder: str) -> frozenset[str]:
-    """The folders above ``folder``: a skipped name among them (``install``) is walked, since
-    the description was installed there and its neighbours were installed beside it."""
+    """The install spaces above ``folder`` (folders named ``install``): skipped elsewhere, one
+    is walked when the description was installed in it, its neighbours installed beside it."""
     found = set()
     here = os.path.dirname(folder)
-    while here and here not in found and os.path.dirname(here) != here:
-        found.add(here)
+    while here and os.path.dirname(here) != here:
+        if os.path.basename(here) == INSTALL:
+            found.add(here)
         here = os.path.dirname(here)
     return frozenset(found)
 
@@ -306,6 +311,10 @@ def _walk(
                 )
         if owner is not None:
             owner.paths += [os.path.join(folder, name) for name in _texts(folder, files)]
+        elif "share" in subfolders and not _PREFIX_FOLDERS.isdisjoint(subfolders):
+            # An install prefix: its packages are in share/NAME; its libraries and headers
+            # belong to none (read nothing, and would spend the walk's bound).
+            subfolders = ["share"]
         if level >= MAX_DEPTH and subfolders:
             budget.note(f"folders deeper than {MAX_DEPTH} levels are not walked", stop=False)
         elif subfolders:

@@ -310,6 +310,46 @@ def test_a_skipped_folder_holding_the_description_is_walked_and_no_other(tmp_pat
     assert read(described, repo).packages == ("car_description", "car_bringup")
 
 
+def test_a_share_folder_outside_an_install_space_is_no_install_prefix(tmp_path: Path) -> None:
+    described = installed(tmp_path / "home" / "robot_description", "robot_description")
+    package(tmp_path / "home" / "thesis", "exp_bringup", {"launch/a.launch": "robot_description"})
+    assert workspace_of(described) == described.parent
+    assert read(described).packages == ("robot_description",)
+
+
+def test_only_the_install_space_a_description_lies_in_is_walked(tmp_path: Path) -> None:
+    # A description kept in a test folder: the folder stays skipped for its neighbours.
+    src = tmp_path / "ws" / "src"
+    fixture = package(src / "urdf_tools" / "test", "fixture_description")
+    package(src / "urdf_tools" / "test", "test_planning", {"a.launch": "fixture_description"})
+    assert read(fixture, src).packages == ("fixture_description",)
+    # Another install space beside the one read is not walked.
+    repo = tmp_path / "repo"
+    described = installed(repo / "install" / "car_description", "car_description")
+    package(repo / "old" / "install", "car_teleop", {"launch/t.launch": "car_description"})
+    assert read(described, repo).packages == ("car_description",)
+
+
+def test_an_install_prefix_is_walked_in_its_share_folder_alone(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Libraries and headers beside share/ belong to no package: listing them would spend the
+    walk's bound and leave the robot's packages read in part."""
+    monkeypatch.setattr(reader, "MAX_ENTRIES", 200)
+    install = tmp_path / "ws" / "install"
+    described = installed(install / "dog_description", "dog_description")
+    installed(install / "dog_bringup", "dog_bringup", {"launch/a.launch": "dog_description"})
+    for prefix in ("dog_description", "dog_bringup"):
+        for folder in ("lib", "include"):
+            many = install / prefix / folder / prefix
+            many.mkdir(parents=True)
+            for n in range(150):
+                (many / f"f{n}.py").write_text("")
+    found = read(described)
+    assert found.complete
+    assert found.packages == ("dog_description", "dog_bringup")
+
+
 def test_folders_deeper_than_the_bound_are_not_walked_and_a_note_says_so(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
