@@ -66,8 +66,8 @@ def body_from_workspace(body: Body, workspace: Workspace, profile: Profile) -> B
     (:attr:`Body.moved_by_plugin_alone`), and the packages name one medium only
     (a repository of drones and boats says nothing of this one); a pan/tilt head alone driven
     by a teleop node its packages ship (:func:`_driven`). The ground is read last, and only
-    for a body of no limb: its words (a rover, a diff drive) are in many a repository of other
-    vehicles, and a pan/tilt unit on a rover is the rover's sensor head, no rover."""
+    for a body with no head: its words (a rover, a diff drive) are in many a repository of
+    other vehicles, and a pan/tilt unit on a rover is the rover's sensor head, no rover."""
     body = _driven(body, workspace, profile)
     if not (body.travels_no_way or body.moved_by_plugin_alone):
         return body
@@ -76,7 +76,7 @@ def body_from_workspace(body: Body, workspace: Workspace, profile: Profile) -> B
         for medium, pattern in profile.body_packages
         if medium != GROUND and (shown_file := _first_found(workspace, pattern)) is not None
     }
-    if not said and not body.limbs:
+    if not said and not body.count("head"):
         ground = dict(profile.body_packages).get(GROUND)
         found = None if ground is None else _first_found(workspace, ground)
         said = {} if found is None else {GROUND: found}
