@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from solver.errors import SolverError
+from solver.errors import Fault, SolverError
 from solver.files.yamlio import parse_document
 from solver.identify.profile import ProfileError, load_profile, parse_profile
 from tests.conftest import RULES
@@ -102,6 +102,14 @@ def test_a_pattern_needing_backtracking_is_refused_with_its_location() -> None:
     assert "no lookaround or backreferences" in fault.message
 
 
+def the_fault(text: str) -> Fault:
+    """The one located fault of a profile written as ``text``."""
+    with pytest.raises(ProfileError) as caught:
+        parse_profile(parse_document(text, "p.yaml"))
+    [fault] = caught.value.faults
+    return fault
+
+
 def test_the_navigation_guess_is_optional_and_its_fields_are_checked() -> None:
     start = SHIPPED.index("  navigation:")
     without = parse_profile(parse_document(SHIPPED[:start], "plain.yaml"))
@@ -112,18 +120,14 @@ def test_the_navigation_guess_is_optional_and_its_fields_are_checked() -> None:
     assert dict(shipped.needs)["flight"] == ("odometry", "gps")
     assert dict(shipped.needs)["wheels"] == ("lidar", "gps")
     text = SHIPPED.replace("    control: Waypoint\n", "    control: Waypoint\n    guess: yes\n")
-    with pytest.raises(ProfileError) as caught:
-        parse_profile(parse_document(text, "p.yaml"))
-    [fault] = caught.value.faults
+    fault = the_fault(text)
     assert fault.location.path == "motion.navigation.guess"
     assert "unknown navigation field 'guess'" in fault.message
 
 
 def test_a_navigation_need_for_nothing_that_moves_a_body_is_a_located_fault() -> None:
     text = SHIPPED.replace("      wheels: [lidar, gps]\n", "      wheel: [lidar, gps]\n")
-    with pytest.raises(ProfileError) as caught:
-        parse_profile(parse_document(text, "p.yaml"))
-    [fault] = caught.value.faults
+    fault = the_fault(text)
     assert fault.location.path == "motion.navigation.needs.wheel"
     assert "unknown navigation source 'wheel'" in fault.message
     assert "wheels" in fault.message
@@ -137,9 +141,7 @@ def test_the_gait_rule_is_optional_and_its_fields_are_checked() -> None:
     assert shipped.shipped.find("ros2 launch dog walking.launch.py") is not None
     assert shipped.controllers.find("type: forward_command_controller/X") is not None
     text = SHIPPED.replace("  gait:\n", "  gait:\n    stance: yes\n")
-    with pytest.raises(ProfileError) as caught:
-        parse_profile(parse_document(text, "p.yaml"))
-    [fault] = caught.value.faults
+    fault = the_fault(text)
     assert fault.location.path == "motion.gait.stance"
     assert "unknown gait field 'stance'" in fault.message
 
@@ -163,9 +165,7 @@ def test_package_rules_are_optional_and_their_structures_are_checked() -> None:
         "      not_for: [Manipulater, Pan/Tilt Unit, Gripper, Hand, Torso]\n",
         1,
     )
-    with pytest.raises(ProfileError) as caught:
-        parse_profile(parse_document(text, "p.yaml"))
-    [fault] = caught.value.faults
+    fault = the_fault(text)
     assert fault.location.path == "motion.packages[0].not_for[0]"
     assert "unknown structure 'Manipulater' (did you mean 'Manipulator'?)" in fault.message
 
@@ -181,9 +181,7 @@ def test_body_package_words_are_optional_and_name_only_known_media() -> None:
     ]
     text = SHIPPED.replace("  surface: '(^|[^a-z])(usvs", "  surfce: '(^|[^a-z])(usvs", 1)
     assert text != SHIPPED
-    with pytest.raises(ProfileError) as caught:
-        parse_profile(parse_document(text, "p.yaml"))
-    [fault] = caught.value.faults
+    fault = the_fault(text)
     assert fault.location is not None
     assert fault.location.path == "body_packages.surfce"
     assert fault.location.line is not None
