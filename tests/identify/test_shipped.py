@@ -163,6 +163,9 @@ def test_an_arm_moved_by_inverse_kinematics_to_a_target_is_sent_end_effector_goa
         "twist_controller/command_twist",
         "client.call(JogLinear(v))",  # a maker's Cartesian jog
         "robot.MovePose(x, y, z, a, b, c)",
+        "client = create_client(MoveCartesianLine, 'utarm/apisrv/moveto_cartesian_line')",
+        "plan = group.compute_cartesian_path(poses, 0.01)",
+        "gantry.move_to_cartesian(x, y, z)",
         "robot.movel(pose)",
         "MoveLinear.srv",
         "pub = rospy.Publisher('/ee_target', PoseStamped)",
