@@ -590,8 +590,11 @@ def parallel_robot(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     one rigid body, starting on a circle whose third of a turn maps their starts onto each
     other: a parallel robot (a delta's three arms, a Stewart platform's six), one manipulator
     whose platform the description cannot hold. Its longest chain is the arm, the others its
-    linkage (as :func:`meeting_tips` reads chains named as legs whose tips meet)."""
-    if len(limbs) not in _PARALLEL_CHAINS or not _alike_chains(tree, limbs):
+    linkage (as :func:`meeting_tips` reads chains named as legs whose tips meet). Chains named
+    as legs count when they are struts on a body bolted to the world (:func:`_struts`): a
+    walker is not bolted down, and does not walk on linear actuators."""
+    struts = _struts(tree, limbs)
+    if len(limbs) not in _PARALLEL_CHAINS or not _alike_chains(tree, limbs, legs=struts):
         return limbs
     starts = [_start(tree, limb) for limb in limbs]
     if not _third_turn_symmetric(starts):
@@ -610,18 +613,31 @@ _PARALLEL_CHAINS = (3, 6)
 _ON_CIRCLE = 0.1
 
 
-def _alike_chains(tree: JointTree, limbs: list[Limb]) -> bool:
+def _struts(tree: JointTree, limbs: list[Limb]) -> bool:
+    """Every chain slides (a prismatic joint: a linear actuator's strut) and the body is bolted
+    to the world (its root is ``world``): a Stewart platform's legs."""
+    return _world_root(tree) and all(
+        any(
+            (joint := tree.urdf.joint(name)) is not None and joint.type == "prismatic"
+            for name in limb.joints
+        )
+        for limb in limbs
+    )
+
+
+def _alike_chains(tree: JointTree, limbs: list[Limb], *, legs: bool = False) -> bool:
     """Chains of one sequence of joint types (one of them may go on: the joint that turns
-    the platform), none a leg or ending in a gripper, all on one rigid body (the same nearest
-    moving joint above their bases)."""
+    the platform), none ending in a gripper nor a leg (but with ``legs``), all on one rigid
+    body (the same nearest moving joint above their bases)."""
     known: dict[str, str | None] = {}
     first = limbs[0]
     kinds = [_joint_types(tree, limb) for limb in limbs]
     shortest = min(len(k) for k in kinds)
     if sum(len(k) > shortest for k in kinds) > 1:
         return False
+    kinds_taken = ("arm", "other", "leg") if legs else ("arm", "other")
     return all(
-        limb.kind in ("arm", "other")
+        limb.kind in kinds_taken
         and not limb.gripper
         and kinds[i][:shortest] == kinds[0][:shortest]
         and moved_by(tree.urdf, limb.base, known) == moved_by(tree.urdf, first.base, known)

@@ -1433,3 +1433,36 @@ def test_overflowing_places_read_no_circle() -> None:
     for place, far in zip(places[::2], ("1e+308 0 0", "1e+308 1e+308 0", "0.5 -3 1"), strict=True):
         robot = robot.replace(f'<origin xyz="{place}"/>', f'<origin xyz="{far}"/>', 1)
     assert identify_urdf(robot).structure == "Torso"
+
+
+def strut_platform(*, root: str = "world", strut: str = "prismatic") -> RobotText:
+    """Six legs named so, each a universal joint and a strut, on a circle a sixth of a turn
+    apart (a Stewart platform whose moving platform is drawn elsewhere); the base bolted to
+    ``root``."""
+    robot = RobotText("stewart", root=root)
+    for i in range(6):
+        angle = i * math.pi / 3
+        xyz = f"{0.2 * math.cos(angle):.4f} {0.2 * math.sin(angle):.4f} 0"
+        pitch = builders.placed(robot, f"leg{i}_pitch", "revolute", root, f"leg{i}_a", xyz=xyz)
+        roll = builders.placed(robot, f"leg{i}_roll", "revolute", pitch, f"leg{i}_b", axis="1 0 0")
+        builders.placed(
+            robot, f"leg{i}_strut", strut, roll, f"leg{i}_tip", xyz="0 0 0.1", axis="0 0 1"
+        )
+    return robot
+
+
+def test_six_struts_named_legs_on_a_base_bolted_to_the_world_are_a_parallel_robot() -> None:
+    result = identify_urdf(strut_platform().text())
+    assert result.structure == "Manipulator"
+    assert result.body is not None
+    assert "a parallel mechanism" in result.body.limbs[0].why
+
+
+@pytest.mark.parametrize(
+    ("root", "strut"),
+    [("body", "prismatic"), ("world", "revolute")],  # a free body; legs that do not slide
+)
+def test_legs_on_a_free_body_or_without_struts_stay_legs(root: str, strut: str) -> None:
+    result = identify_urdf(strut_platform(root=root, strut=strut).text())
+    assert result.body is not None
+    assert result.body.count("leg") == 6

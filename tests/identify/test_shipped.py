@@ -167,6 +167,7 @@ def test_an_arm_moved_by_inverse_kinematics_to_a_target_is_sent_end_effector_goa
         "plan = group.compute_cartesian_path(poses, 0.01)",
         "gantry.move_to_cartesian(x, y, z)",
         "robot.movel(pose)",
+        "dobot.MovL(x, y, z, r)",  # a maker's linear move
         "MoveLinear.srv",
         "pub = rospy.Publisher('/ee_target', PoseStamped)",
         "goal = end_effector_goal(x)",
