@@ -614,14 +614,23 @@ _ON_CIRCLE = 0.1
 
 
 def _struts(tree: JointTree, limbs: list[Limb]) -> bool:
-    """Every chain slides (a prismatic joint: a linear actuator's strut) and the body is bolted
-    to the world (its root is ``world``): a Stewart platform's legs."""
-    return _world_root(tree) and all(
-        any(
-            (joint := tree.urdf.joint(name)) is not None and joint.type == "prismatic"
-            for name in limb.joints
+    """Every chain slides (a prismatic joint: a linear actuator's strut), rises from where it
+    starts (to the platform it holds up; a walker's feet hang below its hips), and starts on a
+    body bolted to the world (its root is ``world``, no moving joint between): a Stewart
+    platform's legs, not a walker's on a floating base hung from ``world``."""
+    return (
+        _world_root(tree)
+        and all(
+            _on_the_root(tree, limb.base) and tree.poses.place(limb.tip)[2] > _start(tree, limb)[2]
+            for limb in limbs
         )
-        for limb in limbs
+        and all(
+            any(
+                (joint := tree.urdf.joint(name)) is not None and joint.type == "prismatic"
+                for name in limb.joints
+            )
+            for limb in limbs
+        )
     )
 
 

@@ -65,21 +65,19 @@ def body_from_workspace(body: Body, workspace: Workspace, profile: Profile) -> B
     no way of travelling (:attr:`Body.travels_no_way`) or a drive plugin alone moves it
     (:attr:`Body.moved_by_plugin_alone`), and the packages name one medium only
     (a repository of drones and boats says nothing of this one); a pan/tilt head alone driven
-    by a teleop node its packages ship (:func:`_driven`). The ground is read last, and only
-    for a body with no head: its words (a rover, a diff drive) are in many a repository of
-    other vehicles, and a pan/tilt unit on a rover is the rover's sensor head, no rover."""
+    by a teleop node its packages ship (:func:`_driven`). The ground is read only for a body
+    with no head: a pan/tilt unit in a rover's packages is the rover's sensor head, no rover.
+    A ground word beside another medium's says nothing either way (a flight stack that lists
+    rovers among its vehicles, a rover's packages that mention a drone)."""
     body = _driven(body, workspace, profile)
     if not (body.travels_no_way or body.moved_by_plugin_alone):
         return body
     said = {
         medium: shown_file
         for medium, pattern in profile.body_packages
-        if medium != GROUND and (shown_file := _first_found(workspace, pattern)) is not None
+        if (medium != GROUND or not body.count("head"))
+        and (shown_file := _first_found(workspace, pattern)) is not None
     }
-    if not said and not body.count("head"):
-        ground = dict(profile.body_packages).get(GROUND)
-        found = None if ground is None else _first_found(workspace, ground)
-        said = {} if found is None else {GROUND: found}
     if len(said) != 1:
         return body
     ((medium, evidence),) = said.items()
@@ -100,16 +98,19 @@ def _driven(body: Body, workspace: Workspace, profile: Profile) -> Body:
 
 def leg_controllers(workspace: Workspace, profile: Profile, legs: Collection[str]) -> str | None:
     """The first file of the robot's packages that configures joint controllers and names a
-    joint of the ``legs``, when the packages were read whole and none ships a gait (the
-    profile's ``motion.gait``): a walker whose author ships its legs' controllers and no
-    walking software is commanded joint by joint, whatever its legs could do
-    (:func:`solver.identify.motion.controls_from_description`). None when a bound stopped
+    joint of the ``legs``, when the packages were read whole, none ships a gait (the
+    profile's ``motion.gait``) and no other package of the workspace is named for one (a
+    ``gait_planner`` beside them that names none of them): a walker whose author ships its
+    legs' controllers and no walking software is commanded joint by joint, whatever its legs
+    could do (:func:`solver.identify.motion.controls_from_description`). None when a bound stopped
     the reading: what was not read may walk it."""
     rule = profile.gait
     if rule is None or not legs or not workspace.complete:
         return None
-    if _first_found(workspace, rule.shipped):
-        return None
+    if _first_found(workspace, rule.shipped) or any(
+        rule.shipped.find(name) is not None for name in workspace.neighbours
+    ):
+        return None  # a gait its packages ship, or a package of the workspace named for one
     for shipped in workspace.files:
         matched = rule.controllers.find(shipped.text)
         if matched is not None and named_joints(replace(workspace, files=(shipped,)), legs):

@@ -4,6 +4,7 @@ mounts or other by their names, their length and what they carry; trunk where th
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import pytest
 
@@ -1435,18 +1436,35 @@ def test_overflowing_places_read_no_circle() -> None:
     assert identify_urdf(robot).structure == "Torso"
 
 
-def strut_platform(*, root: str = "world", strut: str = "prismatic") -> RobotText:
-    """Six legs named so, each a universal joint and a strut, on a circle a sixth of a turn
-    apart (a Stewart platform whose moving platform is drawn elsewhere); the base bolted to
-    ``root``."""
+def strut_platform(
+    *,
+    root: str = "world",
+    strut: str = "prismatic",
+    rise: float = 0.1,
+    hung: str = "",
+    stiff: int = 0,
+) -> RobotText:
+    """Six legs named so, each a universal joint and a strut reaching ``rise`` up, on a circle
+    a sixth of a turn apart (a Stewart platform whose moving platform is drawn elsewhere); the
+    base is ``root``, or a body hung from it by a ``hung`` joint (a floating base); the first
+    ``stiff`` legs turn at their end instead of sliding."""
     robot = RobotText("stewart", root=root)
+    base = root
+    if hung:
+        base = builders.placed(robot, "base_joint", hung, root, "body")
     for i in range(6):
         angle = i * math.pi / 3
         xyz = f"{0.2 * math.cos(angle):.4f} {0.2 * math.sin(angle):.4f} 0"
-        pitch = builders.placed(robot, f"leg{i}_pitch", "revolute", root, f"leg{i}_a", xyz=xyz)
+        pitch = builders.placed(robot, f"leg{i}_pitch", "revolute", base, f"leg{i}_a", xyz=xyz)
         roll = builders.placed(robot, f"leg{i}_roll", "revolute", pitch, f"leg{i}_b", axis="1 0 0")
         builders.placed(
-            robot, f"leg{i}_strut", strut, roll, f"leg{i}_tip", xyz="0 0 0.1", axis="0 0 1"
+            robot,
+            f"leg{i}_strut",
+            "revolute" if i < stiff else strut,
+            roll,
+            f"leg{i}_tip",
+            xyz=f"0 0 {rise}",
+            axis="0 0 1",
         )
     return robot
 
@@ -1459,10 +1477,18 @@ def test_six_struts_named_legs_on_a_base_bolted_to_the_world_are_a_parallel_robo
 
 
 @pytest.mark.parametrize(
-    ("root", "strut"),
-    [("body", "prismatic"), ("world", "revolute")],  # a free body; legs that do not slide
+    "platform",
+    [
+        {"root": "body"},  # a free body
+        {"strut": "revolute"},  # legs that do not slide
+        {"stiff": 1},  # one leg that does not
+        {"hung": "floating"},  # a walker's floating base hung from world
+        {"rise": -0.1},  # feet hanging below the hips: a walker on a test stand
+    ],
 )
-def test_legs_on_a_free_body_or_without_struts_stay_legs(root: str, strut: str) -> None:
-    result = identify_urdf(strut_platform(root=root, strut=strut).text())
+def test_legs_on_a_free_body_without_struts_or_hanging_stay_legs(
+    platform: dict[str, Any],
+) -> None:
+    result = identify_urdf(strut_platform(**platform).text())
     assert result.body is not None
     assert result.body.count("leg") == 6

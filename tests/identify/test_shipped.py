@@ -226,10 +226,23 @@ def test_a_flown_bodys_goals_its_packages_ship_are_waypoints(text: str) -> None:
     assert list(shipped("Aerial Manipulator", text)) == ["Waypoint"]
 
 
-def test_a_flown_bodys_goal_words_are_not_read_for_other_bodies_or_inside_other_words() -> None:
+def test_a_flown_bodys_goal_words_are_not_read_for_other_bodies() -> None:
     for structure in ("UGV", "Underwater Vehicle", "Manipulator", "Quadruped", "Other"):
         assert shipped(structure, "mission: [wp1]; offboard; formation: line") == {}
-    assert shipped("UAV", "information transformation permission submissions") == {}
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "information transformation permission submissions",
+        "offset_target = 3; reset_target(); dataset_target",
+        "unguided; cv2.ximgproc.guidedFilter(img)",
+        "compose_action(); expose_action",
+        "lookup_transform(destination_frame); shutil.copy(x, destination_dir)",
+    ],
+)
+def test_a_flown_bodys_goal_words_inside_other_words_are_not_read(text: str) -> None:
+    assert shipped("UAV", text) == {}
 
 
 def test_the_first_file_that_shows_a_control_is_named() -> None:
@@ -584,13 +597,19 @@ def test_ground_words_inside_longer_words_say_nothing(tmp_path: Path) -> None:
     assert read_with(tmp_path, one_link(), "amrita grovers ramrod")[0] == "Other"
 
 
-def test_ground_words_do_not_outvote_a_flying_or_a_diving_bodys(tmp_path: Path) -> None:
-    """A flight stack or a submersible's simulator names rovers and diff drives among its
-    examples: the other medium's word is read first."""
-    flown = read_with(tmp_path / "px4", one_link(), "px4 posix_sitl: iris, plane, rover")
-    assert flown[0] == "UAV"
-    dived = read_with(tmp_path / "uuv", one_link(), "<node pkg='uuv_control'/> diff_drive")
-    assert dived[0] == "Underwater Vehicle"
+@pytest.mark.parametrize(
+    "bringup",
+    [
+        "px4 posix_sitl: iris, plane, rover",  # a flight stack lists rovers
+        "<node pkg='uuv_control'/> diff_drive",  # a submersible's simulator's example
+        "<node pkg='agv_driver'/> # TODO: port the drone's teleop",  # a rover names a drone
+    ],
+)
+def test_a_ground_word_beside_another_mediums_says_nothing(tmp_path: Path, bringup: str) -> None:
+    assert read_with(tmp_path, one_link(), bringup)[0] == "Other"
+    # The other medium's word alone still says it.
+    alone = read_with(tmp_path / "alone", one_link(), "px4 posix_sitl: iris, plane")
+    assert alone[0] == "UAV"
 
 
 def test_a_pan_tilt_unit_in_a_rovers_packages_stays_a_pan_tilt_unit(tmp_path: Path) -> None:
@@ -748,6 +767,16 @@ def test_a_walker_whose_packages_ship_a_gait_is_still_walked(tmp_path: Path, gai
     found = controls_of(described(tmp_path, quadruped(), f"{JOINT_CONTROLLERS}\n{gait}"))
     assert "Walking" in found
     assert "Joint" not in found
+
+
+def test_a_gait_planner_package_beside_the_robots_keeps_the_guess_of_a_gait(
+    tmp_path: Path,
+) -> None:
+    """Its planner names none of the robot's packages, so its files are not read; its name
+    says a gait is in the workspace."""
+    path = described(tmp_path, quadruped(), JOINT_CONTROLLERS)
+    package(tmp_path / "ws" / "src", "gait_planner", {"src/gait.cpp": "// step planner"})
+    assert set(controls_of(path)) == {"Walking"}
 
 
 def test_a_walker_whose_packages_configure_no_joint_controller_keeps_the_guess_of_a_gait(

@@ -16,9 +16,9 @@ imported or parsed as code.
   followed, hidden folders and the folders builds and tests write (``build``, ``install``,
   ``devel``, ``log``, ``test``, ...) are skipped (but an ``install`` folder the description
   lies in: its neighbours are installed beside it), at most :data:`MAX_DEPTH` folders deep and
-  :data:`MAX_ENTRIES` entries; an install prefix (``share`` beside ``lib``, ``include`` or
-  ``bin``, in no package) is walked in ``share`` alone. Each file belongs to the nearest
-  package above it; a file in no package is nobody's.
+  :data:`MAX_ENTRIES` entries; an install prefix (``install`` or ``install/NAME``: ``share``
+  beside ``lib``, ``include`` or ``bin``) is walked in ``share`` alone. Each file belongs to
+  the nearest package above it; a file in no package is nobody's.
 * Files are read in the order the robot's packages are likeliest: the description's, those
   named for the robot, those whose ``package.xml`` names one of them, then the rest; so a bound
   spent on a vendored library leaves the robot's own packages read. Text files
@@ -111,13 +111,16 @@ class ShippedFile:
 @dataclass(frozen=True, slots=True)
 class Workspace:
     """The robot's packages (the description's first) and their text files; ``notes`` say
-    where a bound stopped the reading (``complete`` is then false)."""
+    where a bound stopped the reading (``complete`` is then false); ``neighbours``: the names
+    of the workspace's other packages, whose files are not read (a gait planner beside the
+    robot's packages that names none of them)."""
 
     root: str
     package: str
     packages: tuple[str, ...]
     files: tuple[ShippedFile, ...]
     notes: tuple[str, ...] = ()
+    neighbours: tuple[str, ...] = ()
 
     @property
     def complete(self) -> bool:
@@ -219,6 +222,7 @@ def read_workspace(package: str | Path, root: str | Path | None = None) -> Works
             "(docs/identify.md, The robot's packages)"
             for why in budget.notes
         ),
+        tuple(sorted({p.name for p in ordered} - {p.name for p in ours})),
     )
 
 
@@ -311,7 +315,7 @@ def _walk(
                 )
         if owner is not None:
             owner.paths += [os.path.join(folder, name) for name in _texts(folder, files)]
-        elif "share" in subfolders and not _PREFIX_FOLDERS.isdisjoint(subfolders):
+        elif _install_prefix(folder, subfolders):
             # An install prefix: its packages are in share/NAME; its libraries and headers
             # belong to none (read nothing, and would spend the walk's bound).
             subfolders = ["share"]
@@ -320,6 +324,14 @@ def _walk(
         elif subfolders:
             stack += [(os.path.join(folder, n), level + 1, owner) for n in sorted(subfolders)[::-1]]
     return packages
+
+
+def _install_prefix(folder: str, subfolders: list[str]) -> bool:
+    """``folder`` is an install space (``install``, merged) or a prefix in one
+    (``install/NAME``): ``share`` beside ``lib``, ``include`` or ``bin``. A source tree's
+    folder of that shape is walked whole."""
+    named = INSTALL in (os.path.basename(folder), os.path.basename(os.path.dirname(folder)))
+    return named and "share" in subfolders and not _PREFIX_FOLDERS.isdisjoint(subfolders)
 
 
 def _texts(folder: str, files: list[str]) -> list[str]:

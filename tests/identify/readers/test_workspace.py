@@ -350,6 +350,15 @@ def test_an_install_prefix_is_walked_in_its_share_folder_alone(
     assert found.packages == ("dog_description", "dog_bringup")
 
 
+def test_a_source_folder_shaped_like_an_install_prefix_is_walked_whole(tmp_path: Path) -> None:
+    repo = tmp_path / "ws" / "src" / "myrepo"
+    described = package(repo, "rover_description")
+    package(repo, "rover_navigation", {"launch/nav.launch": "rover_description move_base"})
+    (repo / "share").mkdir()
+    (repo / "lib").mkdir()
+    assert read(described).packages == ("rover_description", "rover_navigation")
+
+
 def test_folders_deeper_than_the_bound_are_not_walked_and_a_note_says_so(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
