@@ -9,9 +9,11 @@ Effector). A rule may exclude structures (no navigation for an arm bolted to a t
 its repository holds). Each control names the file that shows it, the first one found in the
 order the packages were read (the description's package first).
 
-The same texts tell a walker's gait from its legs' joint controllers: packages read whole that
-configure joint controllers and ship no gait (no walking software, velocity command or teleop)
-command its joints one by one, and no gait is guessed for its legs (:func:`leg_controllers`).
+The same texts tell a walker's gait from its legs' joint controllers: packages read whole with
+a file that configures joint controllers naming a leg's joint, shipping no gait (no walking
+software, velocity command, teleop or joystick) beside a workspace with no package named for
+one, command its joints one by one, and no gait is guessed for its legs
+(:func:`leg_controllers`).
 
 The same texts say what a body travels in when its description shows no way at all (one link
 and its mesh, a few sensor frames: a drone a simulator poses, an AUV drawn for RViz), or only
