@@ -348,7 +348,10 @@ def _across_from(a: Place, b: Place) -> bool:
 def _hanging_pair(
     tree: JointTree, limbs: list[Limb], placed: dict[int, tuple[Place, Place]]
 ) -> tuple[Limb, Limb] | None:
-    """The two limbs whose tips are lowest, when they are a biped's legs (``legs_by_reach``)."""
+    """The two limbs whose tips are lowest, when they are a biped's legs (``legs_by_reach``):
+    chains on the trunk, at most :data:`_TRUNK_TURNS` joints turning above them (past an arm's
+    joints, hanging fingers are a hand's, as :func:`legs_by_place` reads them)."""
+    turns: dict[str, int] = {}
     candidates = [
         limb
         for limb in limbs
@@ -357,6 +360,7 @@ def _hanging_pair(
         and not limb.gripper
         and len(limb.joints) >= _LEG_JOINTS[0]
         and id(limb) in placed
+        and _joints_above(tree, limb.base, turns, _turning) <= _TRUNK_TURNS
     ]
     if len(candidates) < _BIPED_LEGS:
         return None

@@ -1492,3 +1492,48 @@ def test_legs_on_a_free_body_without_struts_or_hanging_stay_legs(
     result = identify_urdf(strut_platform(**platform).text())
     assert result.body is not None
     assert result.body.count("leg") == 6
+
+
+def upper_body_on_a_column() -> RobotText:
+    """A humanoid's upper body on a fixed column: a waist of three turning joints, two arms of
+    four (names saying nothing) going down, each ending in two hanging two-joint fingers, one
+    longer: the long fingers' tips are the body's lowest, one on each side."""
+    robot = RobotText("upper_body", root="column")
+    link = "column"
+    for name, axis in (("w1", "0 0 1"), ("w2", "0 1 0"), ("w3", "1 0 0")):
+        link = builders.placed(robot, name, "revolute", link, f"{name}_link", axis=axis)
+    for side, y in (("a", 0.2), ("b", -0.2)):
+        arm = builders.placed(
+            robot, f"{side}1", "revolute", link, f"{side}1_link", xyz=f"0 {y} 0.1", axis="0 1 0"
+        )
+        for n in range(2, 5):
+            arm = builders.placed(
+                robot, f"{side}{n}", "revolute", arm, f"{side}{n}_link", xyz="0 0 -0.1"
+            )
+        for finger, x, length in (("p", 0.01, 0.06), ("q", -0.01, 0.03)):
+            tip = arm
+            for n in (1, 2):
+                tip = builders.placed(
+                    robot,
+                    f"{side}{finger}{n}",
+                    "revolute",
+                    tip,
+                    f"{side}{finger}{n}_link",
+                    xyz=f"{x if n == 1 else 0} 0 -{length}",
+                    axis="0 1 0",
+                )
+            robot.joint(
+                f"{side}{finger}_tip",
+                "fixed",
+                tip,
+                f"{side}{finger}_tip_link",
+                f'<origin xyz="0 0 -{length}"/>',
+            )
+    return robot
+
+
+def test_fingers_hanging_from_arms_past_a_waist_are_no_legs_by_reach() -> None:
+    result = identify_urdf(upper_body_on_a_column().text())
+    assert result.body is not None
+    assert result.body.count("leg") == 0
+    assert result.structure != "Biped"
