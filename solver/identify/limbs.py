@@ -348,20 +348,8 @@ def _across_from(a: Place, b: Place) -> bool:
 def _hanging_pair(
     tree: JointTree, limbs: list[Limb], placed: dict[int, tuple[Place, Place]]
 ) -> tuple[Limb, Limb] | None:
-    """The two limbs whose tips are lowest, when they are a biped's legs (``legs_by_reach``):
-    chains on the trunk, at most :data:`_TRUNK_TURNS` joints turning above them (past an arm's
-    joints, hanging fingers are a hand's, as :func:`legs_by_place` reads them)."""
-    turns: dict[str, int] = {}
-    candidates = [
-        limb
-        for limb in limbs
-        if limb.kind in ("arm", "other")
-        and not limb.named
-        and not limb.gripper
-        and len(limb.joints) >= _LEG_JOINTS[0]
-        and id(limb) in placed
-        and _joints_above(tree, limb.base, turns, _turning) <= _TRUNK_TURNS
-    ]
+    """The two limbs whose tips are lowest, when they are a biped's legs (``legs_by_reach``)."""
+    candidates = _leg_candidates(tree, limbs, placed)
     if len(candidates) < _BIPED_LEGS:
         return None
     lowest = sorted(candidates, key=lambda limb: placed[id(limb)][1][2])
@@ -390,6 +378,25 @@ def _hanging_pair(
     ):
         return None
     return one, other
+
+
+def _leg_candidates(
+    tree: JointTree, limbs: list[Limb], placed: dict[int, tuple[Place, Place]]
+) -> list[Limb]:
+    """Unnamed chains of two joints or more, no gripper's, placed, on the trunk: at most
+    :data:`_TRUNK_TURNS` joints turning above them (past an arm's joints, hanging fingers are a
+    hand's, as :func:`legs_by_place` reads them)."""
+    turns: dict[str, int] = {}
+    return [
+        limb
+        for limb in limbs
+        if limb.kind in ("arm", "other")
+        and not limb.named
+        and not limb.gripper
+        and len(limb.joints) >= _LEG_JOINTS[0]
+        and id(limb) in placed
+        and _joints_above(tree, limb.base, turns, _turning) <= _TRUNK_TURNS
+    ]
 
 
 def _pair_above(
