@@ -34,6 +34,31 @@ def test_a_parallel_gripper_with_a_mimic_finger_is_a_gripper() -> None:
     assert len(result.body.fingers) == 2
 
 
+@pytest.mark.parametrize("regulator", ["suction_regulator", "vacuum_cup_level"])
+def test_a_vacuum_gripper_whose_one_joint_stands_for_its_suction_is_a_gripper(
+    regulator: str,
+) -> None:
+    """Suction cups fixed to the body and one slide standing for the vacuum's level (a
+    simulator's stand-in for the pump): a gripper, opened and closed on command."""
+    robot = RobotText("vacuum_gripper")
+    for cup in range(4):
+        robot.fixed("base_link", f"suction{cup}")
+    robot.chain("base_link", [regulator], "prismatic")
+    result = identify_urdf(robot.text())
+    assert result.structure == "Gripper"
+    assert {c.motion_control for c in result.motion_controls} == {"Joint"}
+
+
+def test_a_robot_vacuum_cleaners_brush_is_no_gripper() -> None:
+    """A cleaner's vacuum is no cup: only a vacuum's cup, pad, gripper or tool holds a part."""
+    robot = RobotText("cleaner")
+    robot.chain("base_link", ["vacuum_brush_joint"], "continuous")
+    assert identify_urdf(robot.text()).structure != "Gripper"
+    with_wheels = builders.ugv()
+    with_wheels.chain(with_wheels.root, ["vacuum_brush_joint"], "continuous")
+    assert identify_urdf(with_wheels.text()).structure == "UGV"
+
+
 def test_a_hand_whose_finger_chains_carry_no_names_is_a_hand() -> None:
     robot = RobotText("claw")
     for f in range(3):
