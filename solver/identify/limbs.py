@@ -383,9 +383,9 @@ def _hanging_pair(
 def _leg_candidates(
     tree: JointTree, limbs: list[Limb], placed: dict[int, tuple[Place, Place]]
 ) -> list[Limb]:
-    """Unnamed chains of two joints or more, no gripper's, placed, on the trunk: at most
-    :data:`_TRUNK_TURNS` joints turning above them (past an arm's joints, hanging fingers are a
-    hand's, as :func:`legs_by_place` reads them)."""
+    """Unnamed chains of two joints or more, no gripper's, placed, on the trunk
+    (:func:`_on_the_trunk`: past an arm's joints, hanging fingers are a hand's, as
+    :func:`legs_by_place` reads them)."""
     turns: dict[str, int] = {}
     return [
         limb
@@ -395,7 +395,7 @@ def _leg_candidates(
         and not limb.gripper
         and len(limb.joints) >= _LEG_JOINTS[0]
         and id(limb) in placed
-        and _joints_above(tree, limb.base, turns, _turning) <= _TRUNK_TURNS
+        and _on_the_trunk(tree, limb.base, turns)
     ]
 
 
@@ -473,6 +473,13 @@ def _joints_above(
     return count
 
 
+def _on_the_trunk(tree: JointTree, link: str, turns: dict[str, int]) -> bool:
+    """At most :data:`_TRUNK_TURNS` joints turn above ``link`` (a waist's, or a simulator's
+    floating base's roll, pitch and yaw): legs may hang from it; past an arm's joints, chains
+    are a hand's fingers. ``turns``: the walk's memory, one per reading."""
+    return _joints_above(tree, link, turns, _turning) <= _TRUNK_TURNS
+
+
 def _turning(joint: Joint) -> bool:
     """A joint that turns (a hip, a shoulder, a wrist); not a slide nor a floating or planar
     base a simulator's description writes as joints above the body."""
@@ -509,7 +516,7 @@ def legs_by_place(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
         lengths = {len(limb.joints) for limb in group}
         if len(group) < _WALKER_LEGS or len(lengths) != 1:
             continue
-        if _joints_above(tree, base, turns, _turning) > _TRUNK_TURNS:
+        if not _on_the_trunk(tree, base, turns):
             continue  # a hand's fingers past an arm's joints: legs hang from the trunk
         why = _legs_why(tree, base, group)
         if why:
@@ -629,19 +636,11 @@ def _struts(tree: JointTree, limbs: list[Limb]) -> bool:
     starts (to the platform it holds up; a walker's feet hang below its hips), and starts on a
     body bolted to the world (its root is ``world``, no moving joint between): a Stewart
     platform's legs, not a walker's on a floating base hung from ``world``."""
-    return (
-        _world_root(tree)
-        and all(
-            _on_the_root(tree, limb.base) and tree.poses.place(limb.tip)[2] > _start(tree, limb)[2]
-            for limb in limbs
-        )
-        and all(
-            any(
-                (joint := tree.urdf.joint(name)) is not None and joint.type == "prismatic"
-                for name in limb.joints
-            )
-            for limb in limbs
-        )
+    return _world_root(tree) and all(
+        _on_the_root(tree, limb.base)
+        and tree.poses.place(limb.tip)[2] > _start(tree, limb)[2]
+        and "prismatic" in _joint_types(tree, limb)
+        for limb in limbs
     )
 
 
