@@ -68,7 +68,12 @@ _SAME_AXIS = 1e-3
 
 
 def _ground(body: Body, urdf_source: str) -> _Shown:
-    """Drive plugins and driven wheels (declared); wheels that turn and thrusters (roles)."""
+    """Drive plugins and driven wheels (declared); wheels that turn and thrusters (roles).
+    Nothing for a flying body: its wheels are landing gear, and a drive plugin moves it in the
+    simulator as it flies (its velocity commands are flight; measured: no labelled aircraft
+    is driven, docs/identify.md)."""
+    if body.flying:
+        return []
     found = []
     if body.drive_plugins or body.tracks:
         plugins = ", ".join((*body.drive_plugins, *body.tracks)[:3])

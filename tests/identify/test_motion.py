@@ -717,6 +717,18 @@ def test_a_thrust_plugin_that_names_only_the_hull_drives_the_vessel() -> None:
     assert {c.motion_control for c in result.motion_controls} == {"Driving"}
 
 
+def test_an_aircrafts_landing_wheels_are_no_driving() -> None:
+    plane = builders.tilt_rotor()
+    builders.wheeled_base(plane, 3)
+    assert set(controls(plane)) == {"Flight"}
+
+
+def test_a_drive_plugin_moving_an_aircraft_in_the_simulator_is_no_driving() -> None:
+    copter = builders.quadrotor()
+    copter.add(builders.model_plugin("mover", "libgazebo_ros_planar_move.so"))
+    assert set(controls(copter)) == {"Flight"}
+
+
 def test_a_force_based_move_plugin_drives_a_base_with_no_wheel_joint() -> None:
     """A holonomic base pushed in the plane by a force plugin on cmd_vel, two arms on it: a
     mobile manipulator, driven (an SRDF's planar virtual joint would be no evidence)."""

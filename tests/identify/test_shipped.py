@@ -208,6 +208,34 @@ def test_a_body_of_no_arm_is_sent_no_cartesian_goals_whatever_its_packages_hold(
 @pytest.mark.parametrize(
     "text",
     [
+        "client = ActionClient(node, GripperCommand, 'gripper_controller/gripper_cmd')",
+        "gripper_controller: {type: position_controllers/GripperActionController}",
+        "type: gripper_action_controller/GripperActionController",
+        "sub = rospy.Subscriber('gripper_cmd', Float64, cb)",
+        "robot.open_gripper()",
+        "close_gripper: 5  # joystick button",
+    ],
+)
+def test_a_grippers_open_and_close_an_arms_packages_command_is_an_end_effector_control(
+    text: str,
+) -> None:
+    assert list(shipped("Manipulator", text)) == ["End Effector"]
+    assert list(shipped("Mobile Manipulator", text)) == ["End Effector"]
+
+
+@pytest.mark.parametrize("text", ["reopen_gripper_log()", "open_grippers = 2", "disclose_gripper"])
+def test_gripper_command_words_inside_other_words_are_not_read(text: str) -> None:
+    assert shipped("Manipulator", text) == {}
+
+
+def test_a_gripper_or_hand_alone_is_not_given_end_effector_goals_by_its_open_and_close() -> None:
+    for structure in ("Gripper", "Hand", "UGV", "Humanoid", "Quadruped", "Other"):
+        assert shipped(structure, "client = ActionClient(node, GripperCommand, 'g')") == {}
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
         "offboard_control_mode: position",
         "pub = create_publisher(TrajectorySetpoint, 'fmu/trajectory_setpoint/in')",
         "mission: [wp1, wp2]",

@@ -97,6 +97,7 @@ COMMON_SHARE = 0.5
 MIN_COMMON = 3
 _NAME = re.compile(r"<name>\s*([A-Za-z0-9_.-]{1,200})\s*</name>")
 _WORD = re.compile(r"[A-Za-z0-9_]+")
+_METAPACKAGE = re.compile(r"<metapackage\s*/?>")
 
 
 @dataclass(frozen=True, slots=True)
@@ -172,6 +173,8 @@ class _Package:
     name: str
     manifest: set[str]
     paths: list[str] = field(default_factory=list)
+    # A metapackage (``<metapackage/>`` exported): it only groups packages, uses none.
+    meta: bool = False
     # Package names this package writes (its package.xml and its files), once all are known.
     mentions: set[str] = field(default_factory=set)
     files: list[ShippedFile] = field(default_factory=list)
@@ -263,10 +266,16 @@ def _by_folder(packages: list[_Package]) -> list[_Package]:
 def _robots_packages(core: list[_Package], packages: list[_Package]) -> list[_Package]:
     """The robot's core packages (:func:`_core`), the packages that use one of them, then the
     packages one of those uses (names compared as words; a name most packages write,
-    ``robot_description`` the parameter, is no evidence that one is used)."""
+    ``robot_description`` the parameter, is no evidence that one is used). A metapackage
+    uses nothing: it groups a repository's packages (every robot's of a vendor's repository),
+    and launches none."""
     core_names = {p.name for p in core}
     chosen = {id(p) for p in core}
-    users = [p for p in packages if id(p) not in chosen and not core_names.isdisjoint(p.mentions)]
+    users = [
+        p
+        for p in packages
+        if id(p) not in chosen and not p.meta and not core_names.isdisjoint(p.mentions)
+    ]
     chosen |= {id(p) for p in users}
     used_names = set().union(*(p.mentions for p in (*core, *users))) - _common_names(packages)
     used = [p for p in packages if id(p) not in chosen and p.name in used_names]
@@ -311,7 +320,10 @@ def _walk(
             found = _NAME.search(manifest)
             if found is not None:
                 owner = packages[folder] = _Package(
-                    folder, found.group(1), set(_WORD.findall(manifest))
+                    folder,
+                    found.group(1),
+                    set(_WORD.findall(manifest)),
+                    meta=_METAPACKAGE.search(_uncommented(manifest)) is not None,
                 )
         if owner is not None:
             owner.paths += [os.path.join(folder, name) for name in _texts(folder, files)]
