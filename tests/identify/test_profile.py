@@ -158,6 +158,7 @@ def test_package_rules_are_optional_and_their_structures_are_checked() -> None:
         "End Effector",
         "End Effector",
         "End Effector",
+        "End Effector",
     ]
     assert "Manipulator" in shipped[0].not_for
     text = SHIPPED.replace(
