@@ -68,8 +68,10 @@ _CAMERA_BODY = re.compile(r"camera|realsense|kinect|openni|xtion", re.IGNORECASE
 _SIDE = re.compile(r"(^|[_/-])(l|r|left|right)([_/-]|$)", re.IGNORECASE)
 # The widest baseline of a stereo camera (metres): two frames farther apart are two cameras.
 _BASELINE = 0.3
-# A horizontal fan of rays narrower than this (radians, one degree) points one way: one beam.
-_POINT_SWEEP = math.radians(1.0)
+# A horizontal fan of rays narrower than this (radians, twenty degrees) points one way: a range
+# finder's beam or cone, one distance. A lidar sweeps wider: every labelled ray sensor of the
+# development rows this narrow is a range finder, a sonar or a DVL's beam (docs/identify.md).
+_POINT_SWEEP = math.radians(20.0)
 # A Gazebo plugin that casts rays (gazebo_ros_ray_sensor, a GPU ray sensor), and the outputs of
 # one that sweeps a scan.
 _RAY_PLUGIN = re.compile(r"(^|[^a-z])(gpu_?)?ray([^a-z]|$)", re.IGNORECASE)

@@ -378,11 +378,15 @@ def test_a_one_ray_range_sensor_is_no_lidar_and_four_of_them_stay_four() -> None
     assert found == [("ir_range", None, 4), ("lidar", "LIDAR", 1)]
 
 
-def test_rays_fanned_over_less_than_a_degree_are_one_beam_a_range_finder() -> None:
-    # A single-beam laser written as two samples 0.02 degrees apart measures one distance;
-    # the same two samples a few degrees apart sweep, as a lidar's do.
+def test_rays_fanned_over_less_than_twenty_degrees_are_one_beam_a_range_finder() -> None:
+    # A single-beam laser written as two samples 0.02 degrees apart measures one distance, and
+    # so does a narrow laser ranger's fan of three rays over 3.6 degrees; rays fanned over 30
+    # degrees sweep, as a lidar's do.
     assert kinds(ray("tool", "laser_distance", 2, 0.0004, 2.0)) == [("ir_range", None, 1)]
-    assert kinds(ray("tool", "laser_distance", 2, 0.05, 2.0)) == [("lidar", "LIDAR", 1)]
+    assert kinds(ray("front", "laser_one", 3, 0.0628, 5.0)) == [("ir_range", None, 1)]
+    assert kinds(ray("tool", "laser_distance", 2, 0.34, 2.0)) == [("ir_range", None, 1)]
+    assert kinds(ray("tool", "laser_distance", 2, 0.36, 2.0)) == [("lidar", "LIDAR", 1)]
+    assert kinds(ray("tool", "laser_distance", 2, 0.52, 2.0)) == [("lidar", "LIDAR", 1)]
 
 
 def test_a_ray_sensor_left_at_zero_samples_is_read_by_its_type_not_as_one_ray() -> None:
