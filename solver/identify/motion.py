@@ -15,7 +15,8 @@ Two kinds of evidence, the declared first:
   guessed for a biped's arms without one.
 * *Roles.* What the joints do shows a control even where no controller is declared: wheels that
   turn (not a caster's) or a base the model moves in the plane (a planar joint, root joints
-  along x, y and about z) mean the base is driven, thrusters that the vessel is, an arm of
+  along x, y and about z) mean the base is driven (not a flying body's: landing gear, the
+  simulator's mover), thrusters that the vessel is, an arm of
   actuated joints that its joints are commanded, and an arm of six motions or more ending in a
   gripper (a telescope's segments sliding along one axis are one motion) that Cartesian
   (end-effector) goals can be solved for it, and two legs or more that
@@ -69,21 +70,22 @@ _SAME_AXIS = 1e-3
 
 def _ground(body: Body, urdf_source: str) -> _Shown:
     """Drive plugins and driven wheels (declared); wheels that turn and thrusters (roles).
-    Nothing for a flying body: its wheels are landing gear, and a drive plugin moves it in the
-    simulator as it flies (its velocity commands are flight; measured: no labelled aircraft
-    is driven, docs/identify.md)."""
-    if body.flying:
-        return []
+    A flying body's wheels that turn are landing gear and a plugin that moves it in the plane
+    (a planar-move or velocity-control plugin) is the simulator's mover, its velocity commands
+    flight: neither drives it (measured: no labelled aircraft is driven, docs/identify.md). A
+    drive plugin or wheels a controller drives still do (a robot that rolls and flies)."""
+    movers = set(body.mover_plugins) if body.flying else set()
+    drives = tuple(plugin for plugin in body.drive_plugins if plugin not in movers)
     found = []
-    if body.drive_plugins or body.tracks:
-        plugins = ", ".join((*body.drive_plugins, *body.tracks)[:3])
+    if drives or body.tracks:
+        plugins = ", ".join((*drives, *body.tracks)[:3])
         found.append(("drive_plugin", f"{urdf_source}: drive plugin {plugins}"))
     if body.controlled_wheels:
         count = len(body.controlled_wheels)
         found.append(
             ("controlled_wheels", f"{urdf_source}: {count} wheel joint(s) a controller drives")
         )
-    if body.wheels:
+    if body.wheels and not body.flying:
         found.append(("wheels", f"{urdf_source}: {len(body.wheels)} wheel joint(s) that turn"))
     if body.casters and not (
         body.wheels
@@ -107,7 +109,7 @@ def _ground(body: Body, urdf_source: str) -> _Shown:
         # A ground vehicle by its packages' words, nothing of it on the ground drawn (a body of
         # sensor frames): it is driven, as a vessel whose propulsion is not drawn is.
         found.append(("undrawn_wheels", f"{urdf_source}: a ground vehicle with no wheel drawn"))
-    if body.planar_base:
+    if body.planar_base and not body.flying:
         # The model moves its base in the plane (a planar joint, or root joints along x, y
         # and about z): what a planar-move plugin does, velocity commands in the plane.
         found.append(("planar_base", f"{urdf_source}: a base moved in the plane"))

@@ -501,8 +501,9 @@ def _ray_plugin_kind(plugin: PluginTag, profile: Profile) -> str:
 
 def _rays(tag: SensorTag) -> int | None:
     """How many rays a ray sensor casts (horizontal x vertical samples; a missing axis casts
-    one; a horizontal fan sweeping less than :data:`_POINT_SWEEP` casts its rays along one line,
-    one ray: a single-beam laser's two samples 0.02 degrees apart measure one distance); None
+    one; a horizontal fan sweeping less than :data:`_POINT_SWEEP` points one way, a range
+    finder's beam or cone, one ray across: a single-beam laser's two samples 0.02 degrees
+    apart, a narrow ranger's three over 3.6 degrees measure one distance); None
     when it says no samples at all, or none a simulator would cast (``0``, which Gazebo refuses:
     a count left at zero says nothing of the device)."""
     axes = [n for n in (tag.horizontal_samples, tag.vertical_samples) if n is not None]

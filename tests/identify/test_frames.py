@@ -206,21 +206,23 @@ def test_an_imu_inside_a_camera_is_an_imu_beside_the_camera() -> None:
 
 
 def test_a_stereo_depth_camera_named_for_its_maker_is_an_rgbd_camera() -> None:
-    """Luxonis' OAK-D cameras frame their streams oak_rgb_camera_frame, oakd_left_...: a
-    maker's name, as a RealSense's is."""
+    """Luxonis' OAK-D cameras frame their streams oak_rgb_camera_frame, oakd_left_...,
+    oak-d-base-frame (its driver's default): a maker's name, as a RealSense's is."""
     oaks = (
         '<robot name="r"><link name="base_link"/>'
         + fixed("base_link", "oak0_rgb_camera_frame")
         + fixed("base_link", "oakd_link")
+        + fixed("base_link", "oak-d-base-frame")
         + fixed("base_link", "cloak_camera_frame")
         + "</robot>"
     )
     driver = shipping(
         front_yaml="frame_id: oak0_rgb_camera_frame\n",
         rear_yaml="frame_id: oakd_link\n",
+        mast_yaml="frame_id: oak-d-base-frame\n",
         hood_yaml="frame_id: cloak_camera_frame\n",
     )
-    assert kinds(driver, oaks) == {"depth_camera": 2, "camera": 1}
+    assert kinds(driver, oaks) == {"depth_camera": 3, "camera": 1}
 
 
 def test_at_most_64_camera_names_are_looked_up() -> None:

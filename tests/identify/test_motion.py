@@ -723,10 +723,31 @@ def test_an_aircrafts_landing_wheels_are_no_driving() -> None:
     assert set(controls(plane)) == {"Flight"}
 
 
-def test_a_drive_plugin_moving_an_aircraft_in_the_simulator_is_no_driving() -> None:
-    copter = builders.quadrotor()
-    copter.add(builders.model_plugin("mover", "libgazebo_ros_planar_move.so"))
-    assert set(controls(copter)) == {"Flight"}
+def test_a_plugin_moving_an_aircraft_in_the_simulator_is_no_driving() -> None:
+    for mover in ("libgazebo_ros_planar_move.so", "gz-sim-velocity-control-system"):
+        copter = builders.quadrotor()
+        copter.add(builders.model_plugin("mover", mover))
+        assert set(controls(copter)) == {"Flight"}
+
+
+def test_an_aircraft_the_model_moves_in_the_plane_is_flown_not_driven() -> None:
+    robot = builders.RobotText("hover", root="odom")
+    robot.joint("base_planar", "planar", "odom", "base_link")
+    for i in range(4):
+        robot.joint(f"rotor_{i}_joint", "continuous", "base_link", f"rotor_{i}")
+    assert set(controls(robot)) == {"Flight"}
+
+
+def test_a_robot_that_flies_and_rolls_on_a_declared_drive_is_driven_and_flown() -> None:
+    rolling = builders.quadrotor()
+    builders.wheeled_base(rolling, 2)
+    rolling.add(builders.model_plugin("drive", "libgazebo_ros_diff_drive.so"))
+    assert set(controls(rolling)) == {"Flight", "Driving"}
+    geared = builders.quadrotor()
+    builders.wheeled_base(geared, 2)
+    for side in ("left", "right"):
+        geared.add(builders.transmission(f"wheel_{side}_joint", "VelocityJointInterface"))
+    assert set(controls(geared)) == {"Flight", "Driving"}
 
 
 def test_a_force_based_move_plugin_drives_a_base_with_no_wheel_joint() -> None:

@@ -214,6 +214,10 @@ def test_a_body_of_no_arm_is_sent_no_cartesian_goals_whatever_its_packages_hold(
         "sub = rospy.Subscriber('gripper_cmd', Float64, cb)",
         "robot.open_gripper()",
         "close_gripper: 5  # joystick button",
+        "arm.openGripper()",
+        "GRIPPER_OPEN = 0.04",
+        "pub = create_publisher(Float64, '/gripper_command', 1)",
+        "client = SimpleActionClient('gripper', GripperCommandAction)",
     ],
 )
 def test_a_grippers_open_and_close_an_arms_packages_command_is_an_end_effector_control(
@@ -223,14 +227,43 @@ def test_a_grippers_open_and_close_an_arms_packages_command_is_an_end_effector_c
     assert list(shipped("Mobile Manipulator", text)) == ["End Effector"]
 
 
-@pytest.mark.parametrize("text", ["reopen_gripper_log()", "open_grippers = 2", "disclose_gripper"])
+@pytest.mark.parametrize(
+    "text",
+    ["reopen_gripper_log()", "open_grippers = 2", "disclose_gripper", "nogripper_commandline"],
+)
 def test_gripper_command_words_inside_other_words_are_not_read(text: str) -> None:
     assert shipped("Manipulator", text) == {}
 
 
-def test_a_gripper_or_hand_alone_is_not_given_end_effector_goals_by_its_open_and_close() -> None:
-    for structure in ("Gripper", "Hand", "UGV", "Humanoid", "Quadruped", "Other"):
-        assert shipped(structure, "client = ActionClient(node, GripperCommand, 'g')") == {}
+@pytest.mark.parametrize(
+    "structure",
+    [
+        "UGV",
+        "UAV",
+        "Surface Vessel",
+        "Underwater Vehicle",
+        "Quadruped",
+        "Hexapod",
+        "Biped",
+        "Humanoid",
+        "Serpentine",
+        "Gripper",
+        "Hand",
+        "Pan/Tilt Unit",
+        "Other",
+    ],
+)
+def test_a_body_with_no_arm_is_not_given_end_effector_goals_by_a_grippers_commands(
+    structure: str,
+) -> None:
+    assert shipped(structure, "client = ActionClient(node, GripperCommand, 'g')") == {}
+
+
+@pytest.mark.parametrize("structure", ["Torso", "Legged Mobile Manipulator", "Aerial Manipulator"])
+def test_every_body_with_an_arm_is_given_end_effector_goals_by_a_grippers_commands(
+    structure: str,
+) -> None:
+    assert list(shipped(structure, "robot.close_gripper()")) == ["End Effector"]
 
 
 @pytest.mark.parametrize(

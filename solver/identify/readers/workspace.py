@@ -97,7 +97,8 @@ COMMON_SHARE = 0.5
 MIN_COMMON = 3
 _NAME = re.compile(r"<name>\s*([A-Za-z0-9_.-]{1,200})\s*</name>")
 _WORD = re.compile(r"[A-Za-z0-9_]+")
-_METAPACKAGE = re.compile(r"<metapackage\s*/?>")
+# A metapackage exports ``<metapackage/>`` (``<metapackage />``, ``<metapackage></metapackage>``).
+_METAPACKAGE = re.compile(r"<export\b[^>]*>(?:(?!</export>).)*<metapackage\s*/?>", re.DOTALL)
 
 
 @dataclass(frozen=True, slots=True)

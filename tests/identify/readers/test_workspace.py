@@ -223,19 +223,38 @@ def test_a_name_most_packages_write_is_no_evidence_that_its_package_is_used(
     assert read(described).packages == ("rover_description", "rover_bringup")
 
 
+@pytest.mark.parametrize(
+    "export",
+    [
+        "<export><metapackage/></export>",
+        "<export>\n  <metapackage />\n</export>",
+        "<export><metapackage></metapackage></export>",
+    ],
+)
 def test_a_metapackage_grouping_every_robot_of_a_repository_uses_none_of_them(
-    tmp_path: Path,
+    tmp_path: Path, export: str
 ) -> None:
     src = tmp_path / "src"
     described = package(src, "irb5400_support", {"urdf/irb5400.xacro": "<robot/>"})
     group = package(src, "vendor")
     (group / "package.xml").write_text(
         "<package><name>vendor</name><exec_depend>irb5400_support</exec_depend>"
-        "<exec_depend>irb2400_moveit_config</exec_depend>"
-        "<export><metapackage/></export></package>"
+        f"<exec_depend>irb2400_moveit_config</exec_depend>{export}</package>"
     )
     package(src, "irb2400_moveit_config", {"launch/demo.launch": "move_group"})
     assert read(described).packages == ("irb5400_support",)
+
+
+def test_a_metapackage_tag_outside_the_export_is_no_metapackage(tmp_path: Path) -> None:
+    src = tmp_path / "src"
+    described = package(src, "irb5400_support")
+    bringup = package(src, "cell_bringup", {"launch/cell.launch": "irb5400_support"})
+    (bringup / "package.xml").write_text(
+        "<package><name>cell_bringup</name><description>not a <metapackage/></description>"
+        "<exec_depend>irb5400_support</exec_depend><export><build_type>x</build_type></export>"
+        "</package>"
+    )
+    assert read(described).packages == ("irb5400_support", "cell_bringup")
 
 
 def test_a_metapackage_only_named_in_a_comment_is_a_package_that_uses_its_names(
