@@ -69,11 +69,12 @@ _SAME_AXIS = 1e-3
 
 
 def _ground(body: Body, urdf_source: str) -> _Shown:
-    """Drive plugins and driven wheels (declared); wheels that turn and thrusters (roles).
-    A flying body's wheels that turn are landing gear and a plugin that moves it in the plane
-    (a planar-move or velocity-control plugin) is the simulator's mover, its velocity commands
-    flight: neither drives it (measured: no labelled aircraft is driven, docs/identify.md). A
-    drive plugin or wheels a controller drives still do (a robot that rolls and flies)."""
+    """Drive plugins and driven wheels (declared); wheels that turn (roles); then what drives a
+    vessel (:func:`_water`). A flying body's wheels that turn are landing gear and a plugin that
+    moves it in the plane (a planar-move or velocity-control plugin) is the simulator's mover,
+    its velocity commands flight: neither drives it (measured: no labelled aircraft is driven,
+    docs/identify.md). A drive plugin or wheels a controller drives still do (a robot that
+    rolls and flies)."""
     movers = set(body.mover_plugins) if body.flying else set()
     drives = tuple(plugin for plugin in body.drive_plugins if plugin not in movers)
     found = []
@@ -87,24 +88,13 @@ def _ground(body: Body, urdf_source: str) -> _Shown:
         )
     if body.wheels and not body.flying:
         found.append(("wheels", f"{urdf_source}: {len(body.wheels)} wheel joint(s) that turn"))
-    if body.casters and not (
-        body.wheels
-        or body.fixed_wheels  # a trimmed base shows no motion control (see the tests' robots)
-        or body.drive_plugins
-        or body.tracks
-        or body.count("leg")
-        or body.flying
-    ):
+    if _steered_only(body):
         # Wheels that all hang under swivels, and no other wheel: casters cannot move a base
         # by themselves, so the swivels steer drive modules (an omnidirectional base).
         count = len(body.casters)
         found.append(
             ("steered_wheels", f"{urdf_source}: {count} swivel and wheel joint(s), no other wheel")
         )
-    if _undrawn_vessel(body):
-        # A vessel whose propulsion is not drawn (a hull and sensor frames, thrusters a
-        # driver runs): it is driven, as a body flying by its packages is flown.
-        found.append(("thrusters", f"{urdf_source}: a vessel with no thruster or fin drawn"))
     if body.shipped_as == GROUND:
         # A ground vehicle by its packages' words, nothing of it on the ground drawn (a body of
         # sensor frames): it is driven, as a vessel whose propulsion is not drawn is.
@@ -113,6 +103,29 @@ def _ground(body: Body, urdf_source: str) -> _Shown:
         # The model moves its base in the plane (a planar joint, or root joints along x, y
         # and about z): what a planar-move plugin does, velocity commands in the plane.
         found.append(("planar_base", f"{urdf_source}: a base moved in the plane"))
+    return found + _water(body, urdf_source)
+
+
+def _steered_only(body: Body) -> bool:
+    """Casters and no other wheel, drive plugin, track, leg or flight: a trimmed base's fixed
+    wheels show no motion control either (see the tests' robots)."""
+    return bool(body.casters) and not (
+        body.wheels
+        or body.fixed_wheels
+        or body.drive_plugins
+        or body.tracks
+        or body.count("leg")
+        or body.flying
+    )
+
+
+def _water(body: Body, urdf_source: str) -> _Shown:
+    """Thrusters, a vessel whose propulsion is not drawn, or a rudder a controller drives."""
+    found = []
+    if _undrawn_vessel(body):
+        # A vessel whose propulsion is not drawn (a hull and sensor frames, thrusters a
+        # driver runs): it is driven, as a body flying by its packages is flown.
+        found.append(("thrusters", f"{urdf_source}: a vessel with no thruster or fin drawn"))
     if body.thrusters:
         found.append(("thrusters", f"{urdf_source}: {len(body.thrusters)} thruster(s)"))
     elif body.marine and body.controlled_fins:
