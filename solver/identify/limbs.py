@@ -197,6 +197,7 @@ def find_limbs(
             continue
         marks = set().union(*(carries.get(j.name, set()) for j in chain))
         limbs.append(_classify(tree, chain, chain[0].parent, marks, flying))
+    limbs, trunk = _carried_grippers(tree, limbs, trunk, (children, carries), flying)
     wheel_legs = sum(1 for limb in limbs if limb.kind == "wheel_leg")
     limbs = [
         replace(limb, kind="leg" if wheel_legs >= _WHEEL_LEGS else "mount")
@@ -205,6 +206,59 @@ def find_limbs(
         for limb in limbs
     ]
     return sort_limbs(tree, limbs), trunk, hosts
+
+
+def _carried_grippers(
+    tree: JointTree,
+    limbs: list[Limb],
+    trunk: list[str],
+    contracted: tuple[dict[str, list[Joint]], dict[str, set[str]]],
+    flying: bool,
+) -> tuple[list[Limb], list[str]]:
+    """A chain ending in a gripper too short to be an arm, on trunk joints whose every other
+    branch is a single side joint (a camera's or a light's mount on a gantry's carriage, no
+    limb of its own): those trunk joints carry the gripper, one arm with it (a Cartesian
+    gantry's X and Y carriages above its Z slide). Another limb branching off the way (an
+    arm, a leg, a head of two joints) leaves the trunk a trunk."""
+    children, carries = contracted
+    above = {joint.name: anchor for anchor, below in children.items() for joint in below}
+    joints = {joint.name: joint for below in children.values() for joint in below}
+    for index, limb in enumerate(limbs):
+        if not limb.gripper or limb.kind != "other":
+            continue
+        chain = [j for j in (tree.urdf.joint(name) for name in limb.joints) if j is not None]
+        carriage = _carriage(chain[0].name, above, joints, children, carries)
+        if not carriage:
+            continue
+        joined = [*carriage, *chain]
+        marks = set().union({"gripper"}, *(carries.get(j.name, set()) for j in joined))
+        arm = _classify(tree, joined, joined[0].parent, marks, flying)
+        if arm.kind != "arm":
+            continue
+        kept = {j.name for j in carriage}
+        return [*limbs[:index], arm, *limbs[index + 1 :]], [n for n in trunk if n not in kept]
+    return limbs, trunk
+
+
+def _carriage(
+    first: str,
+    above: dict[str, str],
+    joints: dict[str, Joint],
+    children: dict[str, list[Joint]],
+    carries: dict[str, set[str]],
+) -> list[Joint]:
+    """The trunk joints from the root down to ``first`` when each link on the way branches
+    only into the way on and single side joints (nothing below them, no gripper); else none."""
+    path: list[Joint] = []
+    here = first
+    while (anchor := above.get(here, "")) != "":
+        siblings = [j for j in children.get(anchor, []) if j.name != here]
+        if any(children.get(j.name) or carries.get(j.name) for j in siblings):
+            return []
+        path.insert(0, joints[anchor])
+        here = anchor
+    siblings = [j for j in children.get("", []) if j.name != here]
+    return path if path and not siblings else []
 
 
 def legs_at_the_pelvis(tree: JointTree, limbs: list[Limb]) -> list[Limb]:

@@ -1537,3 +1537,59 @@ def test_fingers_hanging_from_arms_past_a_waist_are_no_legs_by_reach() -> None:
     assert result.body is not None
     assert result.body.count("leg") == 0
     assert result.structure != "Biped"
+
+
+def gantry(side_joints: int = 1) -> RobotText:
+    """A Cartesian gantry: X and Y carriages, a Z slide ending in a two-jaw gripper, and a
+    camera's mount of ``side_joints`` joints beside the Z slide, on the Y carriage; joints
+    named for their axes, nothing of an arm in their names."""
+    robot = RobotText("gantry")
+    carriage = robot.chain("base_link", ["base_to_x", "x_to_y"], "prismatic")
+    tool = robot.chain(carriage, ["y_to_z"], "prismatic")
+    robot.chain(tool, ["gripper"], "prismatic")
+    robot.chain(tool, ["gripper_sub"], "prismatic")
+    robot.chain(carriage, [f"camera_{n}" for n in range(side_joints)])
+    return robot
+
+
+def test_a_gantrys_carriages_carry_its_gripper_one_arm_with_a_cameras_mount_beside() -> None:
+    result = identify_urdf(gantry().text())
+    arms = [limb for limb in result.body.limbs if limb.kind == "arm"]
+    assert [arm.joints for arm in arms] == [("base_to_x", "x_to_y", "y_to_z")]
+    assert result.structure == "Manipulator"
+
+
+def test_a_branch_of_two_joints_beside_the_gripper_leaves_the_carriages_a_trunk() -> None:
+    result = identify_urdf(gantry(side_joints=2).text())
+    assert not [limb for limb in result.body.limbs if limb.kind == "arm" and limb.gripper]
+
+
+def test_a_body_with_an_arm_keeps_its_trunk_beside_a_short_gripper_chain() -> None:
+    robot = gantry()
+    robot.chain("base_link", ["shoulder_pan", "shoulder_lift", "elbow"])
+    result = identify_urdf(robot.text())
+    arms = [limb for limb in result.body.limbs if limb.kind == "arm"]
+    assert [arm.joints for arm in arms] == [("shoulder_pan", "shoulder_lift", "elbow")]
+
+
+def test_one_carriage_and_a_slide_carrying_a_gripper_are_a_two_joint_arm() -> None:
+    robot = RobotText("slide")
+    carriage = robot.chain("base_link", ["base_to_x"], "prismatic")
+    tool = robot.chain(carriage, ["x_to_z"], "prismatic")
+    robot.chain(tool, ["gripper"], "prismatic")
+    robot.chain(tool, ["gripper_sub"], "prismatic")
+    robot.chain(carriage, ["camera_0"])
+    limbs = identify_urdf(robot.text()).body.limbs
+    assert [limb.joints for limb in limbs if limb.kind == "arm"] == [("base_to_x", "x_to_z")]
+
+
+def test_trunk_joints_that_would_make_a_gripper_chain_no_arm_stay_the_trunk() -> None:
+    # Joints named for a leg above a gripper's slide: joined, no arm; the trunk stays.
+    robot = RobotText("odd")
+    carriage = robot.chain("base_link", ["hip_x", "knee_y"], "prismatic")
+    tool = robot.chain(carriage, ["y_to_z"], "prismatic")
+    robot.chain(tool, ["gripper"], "prismatic")
+    robot.chain(tool, ["gripper_sub"], "prismatic")
+    robot.chain(carriage, ["camera_0"])
+    limbs = identify_urdf(robot.text()).body.limbs
+    assert [limb.joints for limb in limbs if limb.gripper] == [("y_to_z",)]
