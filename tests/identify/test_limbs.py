@@ -1553,22 +1553,23 @@ def gantry(side_joints: int = 1) -> RobotText:
 
 
 def test_a_gantrys_carriages_carry_its_gripper_one_arm_with_a_cameras_mount_beside() -> None:
-    result = identify_urdf(gantry().text())
-    arms = [limb for limb in result.body.limbs if limb.kind == "arm"]
+    robot = gantry()
+    limbs = detect_body(parse_urdf(robot.text()), load_profile()).limbs
+    arms = [limb for limb in limbs if limb.kind == "arm"]
     assert [arm.joints for arm in arms] == [("base_to_x", "x_to_y", "y_to_z")]
-    assert result.structure == "Manipulator"
+    assert identify_urdf(robot.text()).structure == "Manipulator"
 
 
 def test_a_branch_of_two_joints_beside_the_gripper_leaves_the_carriages_a_trunk() -> None:
-    result = identify_urdf(gantry(side_joints=2).text())
-    assert not [limb for limb in result.body.limbs if limb.kind == "arm" and limb.gripper]
+    limbs = detect_body(parse_urdf(gantry(side_joints=2).text()), load_profile()).limbs
+    assert not [limb for limb in limbs if limb.kind == "arm" and limb.gripper]
 
 
 def test_a_body_with_an_arm_keeps_its_trunk_beside_a_short_gripper_chain() -> None:
     robot = gantry()
     robot.chain("base_link", ["shoulder_pan", "shoulder_lift", "elbow"])
-    result = identify_urdf(robot.text())
-    arms = [limb for limb in result.body.limbs if limb.kind == "arm"]
+    limbs = detect_body(parse_urdf(robot.text()), load_profile()).limbs
+    arms = [limb for limb in limbs if limb.kind == "arm"]
     assert [arm.joints for arm in arms] == [("shoulder_pan", "shoulder_lift", "elbow")]
 
 
@@ -1579,7 +1580,7 @@ def test_one_carriage_and_a_slide_carrying_a_gripper_are_a_two_joint_arm() -> No
     robot.chain(tool, ["gripper"], "prismatic")
     robot.chain(tool, ["gripper_sub"], "prismatic")
     robot.chain(carriage, ["camera_0"])
-    limbs = identify_urdf(robot.text()).body.limbs
+    limbs = detect_body(parse_urdf(robot.text()), load_profile()).limbs
     assert [limb.joints for limb in limbs if limb.kind == "arm"] == [("base_to_x", "x_to_z")]
 
 
@@ -1591,5 +1592,5 @@ def test_trunk_joints_that_would_make_a_gripper_chain_no_arm_stay_the_trunk() ->
     robot.chain(tool, ["gripper"], "prismatic")
     robot.chain(tool, ["gripper_sub"], "prismatic")
     robot.chain(carriage, ["camera_0"])
-    limbs = identify_urdf(robot.text()).body.limbs
+    limbs = detect_body(parse_urdf(robot.text()), load_profile()).limbs
     assert [limb.joints for limb in limbs if limb.gripper] == [("y_to_z",)]
