@@ -98,7 +98,8 @@ MIN_COMMON = 3
 _NAME = re.compile(r"<name>\s*([A-Za-z0-9_.-]{1,200})\s*</name>")
 _WORD = re.compile(r"[A-Za-z0-9_]+")
 # A metapackage exports ``<metapackage/>`` (``<metapackage />``, ``<metapackage></metapackage>``).
-_METAPACKAGE = re.compile(r"<export\b[^>]*>(?:(?!</export>).)*<metapackage\s*/?>", re.DOTALL)
+_EXPORT = re.compile(r"<export[\s>]")
+_METAPACKAGE = re.compile(r"<metapackage\s*/?>")
 
 
 @dataclass(frozen=True, slots=True)
@@ -324,7 +325,7 @@ def _walk(
                     folder,
                     found.group(1),
                     set(_WORD.findall(manifest)),
-                    meta=_METAPACKAGE.search(_uncommented(manifest)) is not None,
+                    meta=_exports_metapackage(_uncommented(manifest)),
                 )
         if owner is not None:
             owner.paths += [os.path.join(folder, name) for name in _texts(folder, files)]
@@ -337,6 +338,21 @@ def _walk(
         elif subfolders:
             stack += [(os.path.join(folder, n), level + 1, owner) for n in sorted(subfolders)[::-1]]
     return packages
+
+
+def _exports_metapackage(manifest: str) -> bool:
+    """The manifest's ``<export>`` holds ``<metapackage/>``; each character is looked at once
+    (a stranger's manifest of many unclosed ``<export>`` tags costs no more than its length)."""
+    end = 0
+    while (opening := _EXPORT.search(manifest, end)) is not None:
+        close = manifest.find("</export>", opening.end())
+        stop = len(manifest) if close < 0 else close
+        if _METAPACKAGE.search(manifest, opening.end(), stop) is not None:
+            return True
+        if close < 0:
+            return False
+        end = close
+    return False
 
 
 def _install_prefix(folder: str, subfolders: list[str]) -> bool:

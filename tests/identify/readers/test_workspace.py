@@ -436,3 +436,9 @@ def test_many_packages_shown_are_cut_with_a_count(tmp_path: Path) -> None:
     found = read(described)
     assert len(found.packages) == 21
     assert found.shown_packages.endswith(", user_10 and 9 more")
+
+
+def test_a_manifest_of_many_unclosed_exports_is_read_once_through() -> None:
+    manifest = "<package><name>x</name>" + "<export>" * 20_000 + "</package>"
+    assert not reader._exports_metapackage(manifest)
+    assert reader._exports_metapackage(manifest + "<export><metapackage/></export>")
