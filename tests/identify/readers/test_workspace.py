@@ -245,27 +245,23 @@ def test_a_metapackage_grouping_every_robot_of_a_repository_uses_none_of_them(
     assert read(described).packages == ("irb5400_support",)
 
 
-def test_a_metapackage_tag_outside_the_export_is_no_metapackage(tmp_path: Path) -> None:
-    src = tmp_path / "src"
-    described = package(src, "irb5400_support")
-    bringup = package(src, "cell_bringup", {"launch/cell.launch": "irb5400_support"})
-    (bringup / "package.xml").write_text(
-        "<package><name>cell_bringup</name><description>not a <metapackage/></description>"
-        "<exec_depend>irb5400_support</exec_depend><export><build_type>x</build_type></export>"
-        "</package>"
-    )
-    assert read(described).packages == ("irb5400_support", "cell_bringup")
-
-
-def test_a_metapackage_only_named_in_a_comment_is_a_package_that_uses_its_names(
-    tmp_path: Path,
+@pytest.mark.parametrize(
+    "where",
+    [
+        "<description>not a <metapackage/></description><export><build_type/></export>",
+        "<!-- <export><metapackage/></export> -->",
+    ],
+    ids=["outside its export", "in a comment"],
+)
+def test_a_metapackage_tag_not_exported_leaves_a_package_that_uses_its_names(
+    tmp_path: Path, where: str
 ) -> None:
     src = tmp_path / "src"
     described = package(src, "irb5400_support")
     bringup = package(src, "cell_bringup", {"launch/cell.launch": "irb5400_support"})
     (bringup / "package.xml").write_text(
-        "<package><name>cell_bringup</name><exec_depend>irb5400_support</exec_depend>"
-        "<!-- <export><metapackage/></export> --></package>"
+        f"<package><name>cell_bringup</name><exec_depend>irb5400_support</exec_depend>{where}"
+        "</package>"
     )
     assert read(described).packages == ("irb5400_support", "cell_bringup")
 
