@@ -39,7 +39,11 @@ Where names say nothing, the chains' places and shapes still speak:
   modules and nothing else (passive side wheels): it is still a spine, and they are passive
   (:func:`wheeled_spine`);
 * a short chain from the root that carries a whole hand and nothing else is that hand's *wrist*
-  (a hand hung from its forearm), no arm (:func:`wrist`).
+  (a hand hung from its forearm), no arm (:func:`wrist`);
+* trunk joints that carry a gripper chain too short to be an arm, every link on the way from
+  the root holding at most one other joint and that joint nothing (a Cartesian gantry's X and
+  Y carriages, a camera's mount beside its Z slide), are that arm's first joints
+  (:func:`find_limbs`).
 
 Not here: fingers and hands (:mod:`solver.identify.hands`), the body they make
 (:mod:`solver.identify.body`).
@@ -195,8 +199,7 @@ def find_limbs(
             trunk.extend(j.name for j in chain)
             starts.extend(branches)
             continue
-        marks = set().union(*(carries.get(j.name, set()) for j in chain))
-        limbs.append(_classify(tree, chain, chain[0].parent, marks, flying))
+        limbs.append(_classify(tree, chain, chain[0].parent, _marks(chain, carries), flying))
     limbs, trunk = _carried_grippers(tree, limbs, trunk, (children, carries), flying)
     wheel_legs = sum(1 for limb in limbs if limb.kind == "wheel_leg")
     limbs = [
@@ -215,10 +218,13 @@ def _carried_grippers(
     contracted: tuple[dict[str, list[Joint]], dict[str, set[str]]],
     flying: bool,
 ) -> tuple[list[Limb], list[str]]:
-    """A chain ending in a gripper too short to be an arm, on trunk joints whose every other
-    branch is a single side joint (a camera's or a light's mount on a gantry's carriage, no
-    limb of its own): those trunk joints carry the gripper, one arm with it (a Cartesian
-    gantry's X and Y carriages above its Z slide). Another limb branching off the way (an
+    """A chain ending in a gripper too short to be an arm (kind *other*), on trunk joints from
+    the root where every link on the way holds at most one other joint, and that joint carries
+    nothing and has nothing below it (a camera's or a light's mount on a gantry's carriage; it
+    stays a limb of its own, a head or other): those trunk joints carry the gripper, one arm
+    with it (a Cartesian gantry's X and Y carriages above its Z slide), when the joined chain
+    reads as an arm. Another chain on the root, a second side joint on one link (a palm's
+    fingers), a side joint carrying a wheel, rotor or gripper, or one with joints below it (an
     arm, a leg, a head of two joints) leaves the trunk a trunk."""
     children, carries = contracted
     above = {joint.name: anchor for anchor, below in children.items() for joint in below}
@@ -226,13 +232,12 @@ def _carried_grippers(
     for index, limb in enumerate(limbs):
         if not limb.gripper or limb.kind != "other":
             continue
-        chain = [j for j in (tree.urdf.joint(name) for name in limb.joints) if j is not None]
+        chain = [joints[name] for name in limb.joints]
         carriage = _carriage(chain[0].name, above, joints, children, carries)
         if not carriage:
             continue
         joined = [*carriage, *chain]
-        marks = set().union({"gripper"}, *(carries.get(j.name, set()) for j in joined))
-        arm = _classify(tree, joined, joined[0].parent, marks, flying)
+        arm = _classify(tree, joined, joined[0].parent, _marks(joined, carries), flying)
         if arm.kind != "arm":
             continue
         kept = {j.name for j in carriage}
@@ -247,18 +252,24 @@ def _carriage(
     children: dict[str, list[Joint]],
     carries: dict[str, set[str]],
 ) -> list[Joint]:
-    """The trunk joints from the root down to ``first`` when each link on the way branches
-    only into the way on and single side joints (nothing below them, no gripper); else none."""
+    """The trunk joints above ``first``, from the root down, when each link on the way holds
+    besides the way on at most one joint carrying nothing with nothing below it, and the root
+    nothing besides; else none."""
     path: list[Joint] = []
     here = first
     while (anchor := above.get(here, "")) != "":
         siblings = [j for j in children.get(anchor, []) if j.name != here]
-        if any(children.get(j.name) or carries.get(j.name) for j in siblings):
+        if len(siblings) > 1 or any(children.get(j.name) or carries.get(j.name) for j in siblings):
             return []
-        path.insert(0, joints[anchor])
+        path.append(joints[anchor])
         here = anchor
     siblings = [j for j in children.get("", []) if j.name != here]
-    return path if path and not siblings else []
+    return path[::-1] if path and not siblings else []
+
+
+def _marks(chain: list[Joint], carries: dict[str, set[str]]) -> set[str]:
+    """What a chain's joints carry (wheels, rotors, a gripper, ...)."""
+    return set().union(*(carries.get(j.name, set()) for j in chain))
 
 
 def legs_at_the_pelvis(tree: JointTree, limbs: list[Limb]) -> list[Limb]:

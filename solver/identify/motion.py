@@ -69,12 +69,13 @@ _SAME_AXIS = 1e-3
 
 
 def _ground(body: Body, urdf_source: str) -> _Shown:
-    """Drive plugins and driven wheels (declared); wheels that turn (roles); then what drives a
-    vessel (:func:`_water`). A flying body's wheels that turn are landing gear and a plugin that
-    moves it in the plane (a planar-move or velocity-control plugin) is the simulator's mover,
-    its velocity commands flight: neither drives it (measured: no labelled aircraft is driven,
-    docs/identify.md). A drive plugin or wheels a controller drives still do (a robot that
-    rolls and flies)."""
+    """What drives a body on the ground: drive plugins and driven wheels (declared); wheels that
+    turn, wheels that all hang under swivels, a ground vehicle by its packages with no wheel
+    drawn, a base the model moves in the plane (roles). A flying body's wheels that turn are
+    landing gear and a plugin or a planar base that moves it in the plane (a planar-move or
+    velocity-control plugin) is the simulator's mover, its velocity commands flight: neither
+    drives it (measured: no labelled aircraft is driven, docs/identify.md). A drive plugin or
+    wheels a controller drives still do (a robot that rolls and flies)."""
     movers = set(body.mover_plugins) if body.flying else set()
     drives = tuple(plugin for plugin in body.drive_plugins if plugin not in movers)
     found = []
@@ -103,7 +104,7 @@ def _ground(body: Body, urdf_source: str) -> _Shown:
         # The model moves its base in the plane (a planar joint, or root joints along x, y
         # and about z): what a planar-move plugin does, velocity commands in the plane.
         found.append(("planar_base", f"{urdf_source}: a base moved in the plane"))
-    return found + _water(body, urdf_source)
+    return found
 
 
 def _steered_only(body: Body) -> bool:
@@ -389,6 +390,7 @@ def controls_from_description(
     effectors = () if srdf is None else hand_effectors(body, srdf, urdf)  # once per SRDF
     shown = [
         *_ground(body, urdf_source),
+        *_water(body, urdf_source),
         *_flight(body, urdf_source),
         *_limbs(body, urdf_source, urdf, named, leg_controllers),
         *_planned(body, srdf, profile, urdf, srdf_source, effectors=effectors),

@@ -1594,3 +1594,16 @@ def test_trunk_joints_that_would_make_a_gripper_chain_no_arm_stay_the_trunk() ->
     robot.chain(carriage, ["camera_0"])
     limbs = detect_body(parse_urdf(robot.text()), load_profile()).limbs
     assert [limb.joints for limb in limbs if limb.gripper] == [("y_to_z",)]
+
+
+def test_a_wrist_whose_palm_holds_fingers_beside_a_gripper_slide_stays_a_hand() -> None:
+    # Two unnamed wrist joints, a palm with a slide ending in jaws and three one-joint fingers.
+    robot = RobotText("palm")
+    palm = robot.chain("base_link", ["j1", "j2"])
+    tool = robot.chain(palm, ["j3"], "prismatic")
+    robot.chain(tool, ["gripper"], "prismatic")
+    robot.chain(tool, ["gripper_sub"], "prismatic")
+    for n in range(3):
+        robot.chain(palm, [f"f{n}"])
+    limbs = detect_body(parse_urdf(robot.text()), load_profile()).limbs
+    assert not [limb for limb in limbs if limb.kind == "arm"]

@@ -98,7 +98,8 @@ MIN_COMMON = 3
 _NAME = re.compile(r"<name>\s*([A-Za-z0-9_.-]{1,200})\s*</name>")
 _WORD = re.compile(r"[A-Za-z0-9_]+")
 # A metapackage exports ``<metapackage/>`` (``<metapackage />``, ``<metapackage></metapackage>``).
-_EXPORT = re.compile(r"<export[\s>]")
+_EXPORT = re.compile(r"<export(?:\s[^<>]*)?>")
+_EXPORT_END = re.compile(r"</export\s*>")
 _METAPACKAGE = re.compile(r"<metapackage\s*/?>")
 
 
@@ -341,17 +342,21 @@ def _walk(
 
 
 def _exports_metapackage(manifest: str) -> bool:
-    """The manifest's ``<export>`` holds ``<metapackage/>``; each character is looked at once
-    (a stranger's manifest of many unclosed ``<export>`` tags costs no more than its length)."""
+    """The manifest's ``<export>`` holds ``<metapackage/>`` (an empty ``<export/>`` holds
+    nothing); linear in the manifest's length (a stranger's manifest of many unclosed
+    ``<export>`` tags is read through once)."""
     end = 0
     while (opening := _EXPORT.search(manifest, end)) is not None:
-        close = manifest.find("</export>", opening.end())
-        stop = len(manifest) if close < 0 else close
+        if opening.group().endswith("/>"):
+            end = opening.end()
+            continue
+        close = _EXPORT_END.search(manifest, opening.end())
+        stop = len(manifest) if close is None else close.start()
         if _METAPACKAGE.search(manifest, opening.end(), stop) is not None:
             return True
-        if close < 0:
+        if close is None:
             return False
-        end = close
+        end = close.end()
     return False
 
 

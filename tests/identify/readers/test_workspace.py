@@ -438,3 +438,16 @@ def test_a_manifest_of_many_unclosed_exports_is_read_once_through() -> None:
     manifest = "<package><name>x</name>" + "<export>" * 20_000 + "</package>"
     assert not reader._exports_metapackage(manifest)
     assert reader._exports_metapackage(manifest + "<export><metapackage/></export>")
+
+
+@pytest.mark.parametrize(
+    ("manifest", "meta"),
+    [
+        ("<export /><description>a <metapackage/></description>", False),
+        ("<export/><metapackage/>", False),
+        ('<export lang="en">\n<metapackage />\n</export >', True),
+        ("<exports><metapackage/></exports>", False),
+    ],
+)
+def test_only_a_metapackage_inside_an_export_block_counts(manifest: str, meta: bool) -> None:
+    assert reader._exports_metapackage(manifest) is meta
