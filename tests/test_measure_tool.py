@@ -383,7 +383,8 @@ def test_the_shipped_split_holds_out_whole_groups_and_at_least_60_robots() -> No
 def test_the_shipped_split_puts_every_row_of_the_measured_fresh_sets_in_development() -> None:
     text = (ROOT / "tools" / "identification_split.csv").read_text(encoding="utf-8")
     rows = list(csv.DictReader(line for line in text.splitlines() if not line.startswith("#")))
-    moved_sets = [f"fresh_set_{n}" for n in range(1, 84)]  # fresh sets 1 to 83
+    tool = _split_tool()
+    moved_sets = [f"fresh_set_{n}" for n in range(1, tool.LAST_MOVED + 1)]
     for name in moved_sets:
         with (ROOT / "tools" / name / "truth.csv").open(encoding="utf-8") as stream:
             moved = {row["robot"] for row in csv.DictReader(stream)}
@@ -391,7 +392,7 @@ def test_the_shipped_split_puts_every_row_of_the_measured_fresh_sets_in_developm
         assert set(listed) == moved
         assert set(listed.values()) == {"development"}
     # The blind set is held out by the measurement tool, never listed here (nor read here).
-    assert not [row for row in rows if row["set"] == "fresh_set_84"]
+    assert not [row for row in rows if row["set"] == f"fresh_set_{tool.BLIND_NEXT}"]
     assert "moved whole to the development" in text
 
 

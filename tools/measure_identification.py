@@ -46,8 +46,8 @@ lists its rows as ``development``: ``tools/fresh_set_1``, ``tools/fresh_set_2``,
 ``tools/fresh_set_11``, ``tools/fresh_set_12``, ``tools/fresh_set_13``, ``tools/fresh_set_14``,
 ``tools/fresh_set_15`` .. ``tools/fresh_set_26``, their READMEs). The
 *blind* set is the highest-numbered ``fresh_set_N`` among the sets measured whose name the
-split does not list at all (next ``tools/fresh_set_84``, when it is there): its rows are held
-out whole by their set, and count in ``held-out`` and again on a line of their own,
+split does not list at all (``split_identification.BLIND_NEXT``, when it is there): its rows
+are held out whole by their set, and count in ``held-out`` and again on a line of their own,
 ``held-out (fresh)``. Moving it to development is listing it in the split; another unlisted
 fresh set is measured as ``unsplit``.
 

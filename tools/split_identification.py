@@ -46,13 +46,13 @@ measured blind once and moved on 2026-11-29, those of ``tools/fresh_set_8`` (bui
 after that), measured blind once and moved on 2026-11-29, those of ``tools/fresh_set_9``
 (built blind after that), measured blind once and moved on 2026-11-29, and those of
 ``tools/fresh_set_10``, ``tools/fresh_set_11``, ``tools/fresh_set_12``, ``tools/fresh_set_13``,
-``tools/fresh_set_14`` .. ``tools/fresh_set_83`` (each built blind after the one before, 14
+``tools/fresh_set_14`` .. the one ``LAST_MOVED`` names (each built blind after the one before, 14
 and 15 together), measured blind and moved on 2026-11-29 and 2026-11-30.
 
 The blind set is never listed: ``tools/measure_identification.py`` holds out whole, by its set,
-the highest-numbered ``tools/fresh_set_N`` this file does not list (next ``tools/fresh_set_84``),
+the highest-numbered ``tools/fresh_set_N`` this file does not list (next ``BLIND_NEXT``),
 so this file need not change (nor that set be read) while it is being built. Moving a fresh set
-to development is raising ``LAST_MOVED`` and re-making this file.
+to development is adding its number and day to ``MOVED_ON`` and re-making this file.
 
 The file written, ``tools/identification_split.csv``, has the seed and this method in its
 leading ``#`` lines, then one row per robot: ``set``, ``robot``, ``family``, ``group``,
@@ -74,8 +74,12 @@ SPLIT = ROOT / "tools" / "identification_split.csv"
 OWN_SET = ROOT / "tools" / "identification_set"
 ADDED_SET = ROOT / "tools" / "generalization_set"
 # Fresh sets measured blind once, then moved whole to the development part (oldest first):
-# fresh_set_1 .. fresh_set_LAST_MOVED. Moving the next one is raising LAST_MOVED.
-LAST_MOVED = 83
+# fresh_set_1 .. fresh_set_LAST_MOVED. Those from fresh set 52 on were each labelled from the
+# brief of the one before after it was read, and moved on the day given here: moving the next
+# one is adding its number and day.
+MOVED_ON = dict.fromkeys(range(52, 84), "2026-11-30")
+LAST_MOVED = max(MOVED_ON)
+BLIND_NEXT = LAST_MOVED + 1
 MOVED_SETS = tuple(ROOT / "tools" / f"fresh_set_{n}" for n in range(1, LAST_MOVED + 1))
 DEVELOPMENT = "development"
 HELD_OUT = "held-out"
@@ -177,7 +181,8 @@ def moved_rows() -> list[dict[str, str]]:
     return [{**entry, "part": DEVELOPMENT} for entry in entries]
 
 
-HEADER = f"""\
+HEADER = (
+    f"""\
 # The development / held-out split of the labelled robots (issue 41), made before any rule
 # was changed. Seed {SEED}. Made by tools/split_identification.py (its docstring says how:
 # groups of one source and one family never split; per family, groups shuffled by the seed
@@ -342,138 +347,23 @@ HEADER = f"""\
 # and measured blind once as held-out with the rules then committed; its misses were read in
 # the same stop, and on 2026-11-30 they were moved whole to the development part (its README
 # gives the figures).
-# Rows of tools/fresh_set_52 were labelled blind from that brief after fresh set 51 was read,
+"""
+    + "".join(
+        f"""\
+# Rows of tools/fresh_set_{n} were labelled blind from that brief after fresh set {n - 1} was read,
 # and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
+# the same stop, and on {day} they were moved whole to the development part (its README
 # gives the figures).
-# Rows of tools/fresh_set_53 were labelled blind from that brief after fresh set 52 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_54 were labelled blind from that brief after fresh set 53 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_55 were labelled blind from that brief after fresh set 54 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_56 were labelled blind from that brief after fresh set 55 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_57 were labelled blind from that brief after fresh set 56 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_58 were labelled blind from that brief after fresh set 57 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_59 were labelled blind from that brief after fresh set 58 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_60 were labelled blind from that brief after fresh set 59 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_61 were labelled blind from that brief after fresh set 60 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_62 were labelled blind from that brief after fresh set 61 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_63 were labelled blind from that brief after fresh set 62 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_64 were labelled blind from that brief after fresh set 63 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_65 were labelled blind from that brief after fresh set 64 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_66 were labelled blind from that brief after fresh set 65 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_67 were labelled blind from that brief after fresh set 66 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_68 were labelled blind from that brief after fresh set 67 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_69 were labelled blind from that brief after fresh set 68 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_70 were labelled blind from that brief after fresh set 69 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_71 were labelled blind from that brief after fresh set 70 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_72 were labelled blind from that brief after fresh set 71 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_73 were labelled blind from that brief after fresh set 72 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_74 were labelled blind from that brief after fresh set 73 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_75 were labelled blind from that brief after fresh set 74 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_76 were labelled blind from that brief after fresh set 75 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_77 were labelled blind from that brief after fresh set 76 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_78 were labelled blind from that brief after fresh set 77 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_79 were labelled blind from that brief after fresh set 78 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_80 were labelled blind from that brief after fresh set 79 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_81 were labelled blind from that brief after fresh set 80 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_82 were labelled blind from that brief after fresh set 81 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# Rows of tools/fresh_set_83 were labelled blind from that brief after fresh set 82 was read,
-# and measured blind once as held-out with the rules then committed; its misses were read in
-# the same stop, and on 2026-11-30 they were moved whole to the development part (its README
-# gives the figures).
-# The blind set (the highest-numbered tools/fresh_set_N, next fresh_set_84) is not listed: the
+"""
+        for n, day in sorted(MOVED_ON.items())
+    )
+    + f"""\
+# The blind set (the highest-numbered tools/fresh_set_N, next fresh_set_{BLIND_NEXT}) \
+is not listed: the
 # measurement tool holds it out whole by set.
 # Re-make and compare: python tools/split_identification.py --check
 """
+)
 
 
 def render(entries: list[dict[str, str]]) -> str:
