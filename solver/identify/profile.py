@@ -202,8 +202,8 @@ _TOPIC_SENSOR_KEYS = {"kind", "types", "match", "direction"}
 _TOPIC_CONTROL_KEYS = {"control", "types", "match", "direction"}
 _PACKAGE_KEYS = {"control", "match", "not_for"}
 # What the robot's packages may say a body travels in (``body_packages``).
-VEHICLE_MEDIA = ("flight", "underwater", "surface", "ground")
 GROUND = "ground"
+VEHICLE_MEDIA = ("flight", "underwater", "surface", GROUND)
 _LIDAR_KEYS = {"single_plane", "multi_plane"}
 
 YPath = tuple[PathPart, ...]
