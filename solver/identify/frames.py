@@ -24,7 +24,9 @@ a driver that stamps its data with that frame (``frame_id: imu_link`` in its con
   ``camera_color_optical_frame`` under ``camera_color_frame`` under ``camera_link``); a
   camera's frames fixed beneath its body, named or not, say which camera it is, the first rule
   among them naming it (a colour and a depth frame: an RGB-D camera). Any other kind is a device
-  of its own wherever it hangs (a D435i's IMU frame, under its camera link, is an IMU).
+  of its own wherever it hangs (a D435i's IMU frame, under its camera link, is an IMU); named
+  frames of one body of another kind farther apart than :data:`_STREAM_REACH` are a device
+  each (a front and a back laser hung from one ``base_scan`` link).
 * The description's own word wins: no device is added for a kind the description declares
   (its camera's optical frame is that camera), nor on a device that carries a sensor the
   description declares.
@@ -38,7 +40,8 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable
 
-from solver.identify.profile import Profile
+from solver.identify.pose import Poses, distance
+from solver.identify.profile import Profile, SensorRule
 from solver.identify.readers.urdf import Urdf
 from solver.identify.readers.workspace import Workspace
 from solver.identify.sensors import Detection
@@ -57,6 +60,9 @@ _DEVICE_DEPTH = 3
 _CAMERAS = frozenset(
     {"camera", "depth_camera", "stereo_camera", "wide_angle_camera", "thermal_camera"}
 )
+# How far apart (metres) two named frames of one body may sit and still be one device's (a
+# lidar's frame and its driver's scan frame); farther apart, they are two devices.
+_STREAM_REACH = 0.1
 # The most camera names resolved to links (each a walk over the links, for a name no link
 # has): a stranger's files may write any number.
 _MAX_CAMERA_NAMES = 64
@@ -199,11 +205,43 @@ def sensors_on_frames(
         if rule is not None:
             devices.setdefault(body(link, rule), []).append((rule, link, how))
     found = []
-    for device, frames in devices.items():
-        rule, link, how = min(frames)
-        rule = min((rule, *streams(device, rule)))
-        kind = rules[rule].kind
-        if kind in kinds_declared or device in bodies_declared:
-            continue
-        found.append(Detection(kind, f"{shown(link)} ({how})", SOURCE, device))
+    poses: list[Poses] = []  # computed once, when two frames of one body are compared
+    for body_link, named in devices.items():
+        for device, frames in _apart(body_link, named, rules, urdf, poses):
+            rule, link, how = min(frames)
+            rule = min((rule, *streams(device, rule)))
+            kind = rules[rule].kind
+            if kind in kinds_declared or device in bodies_declared:
+                continue
+            found.append(Detection(kind, f"{shown(link)} ({how})", SOURCE, device))
     return tuple(found)
+
+
+def _apart(
+    body: str,
+    frames: list[tuple[int, str, str]],
+    rules: tuple[SensorRule, ...],
+    urdf: Urdf,
+    poses: list[Poses],
+) -> list[tuple[str, list[tuple[int, str, str]]]]:
+    """The devices the named ``frames`` under one ``body`` are: one, for a camera's streams
+    (its colour and depth frames) or frames within :data:`_STREAM_REACH` of each other; one
+    per place otherwise (a front and a back laser a driver each publishes in, hung from one
+    ``base_scan`` link), each its own frame's device."""
+    if len(frames) < 2 or rules[frames[0][0]].kind in _CAMERAS:
+        return [(body, frames)]
+    if not poses:
+        poses.append(Poses(urdf))
+    groups: list[list[tuple[int, str, str]]] = []
+    for frame in sorted(frames):
+        at = poses[0].place(frame[1])
+        near = next(
+            (g for g in groups if distance(at, poses[0].place(g[0][1])) <= _STREAM_REACH), None
+        )
+        if near is None:
+            groups.append([frame])
+        else:
+            near.append(frame)
+    if len(groups) == 1:
+        return [(body, frames)]
+    return [(group[0][1], group) for group in groups]

@@ -257,3 +257,35 @@ def test_a_frame_named_for_a_sonar_model_is_a_sonar() -> None:
         blueview_launch="<rosparam>frame_id: blueview</rosparam>",
     )
     assert kinds(drivers, vehicle) == {"sonar": 2}
+
+
+def placed(parent: str, child: str, x: float) -> str:
+    return (
+        f'<link name="{child}"/><joint name="{child}_joint" type="fixed">'
+        f'<parent link="{parent}"/><child link="{child}"/><origin xyz="{x} 0 0"/></joint>'
+    )
+
+
+def lasers(back_at: float) -> dict[str, int]:
+    """A front and a back laser hung from one scan link, each driver given its own frame."""
+    base = (
+        '<robot name="r"><link name="base_link"/>'
+        + fixed("base_link", "base_scan")
+        + placed("base_scan", "base_scan_front", 0.15)
+        + placed("base_scan", "base_scan_back", back_at)
+        + "</robot>"
+    )
+    drivers = shipping(
+        front_yaml='lidar:\n  frame_id: "base_scan_front"\n',
+        back_yaml='lidar:\n  frame_id: "base_scan_back"\n',
+    )
+    return kinds(drivers, base)
+
+
+def test_two_lasers_a_driver_each_publishes_in_apart_on_one_link_are_two_lidars() -> None:
+    assert lasers(back_at=-0.15) == {"lidar": 2}
+
+
+def test_two_frames_of_one_body_close_together_are_one_devices() -> None:
+    # A lidar's mount frame and its scan frame, 5 cm apart: one laser, whatever names them.
+    assert lasers(back_at=0.10) == {"lidar": 1}
