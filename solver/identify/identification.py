@@ -67,7 +67,7 @@ from solver.identify.sensors import (
 from solver.identify.shipped import (
     body_from_workspace,
     controls_from_workspace,
-    leg_controllers,
+    joint_controllers,
     named_joints,
 )
 from solver.limits import limit
@@ -211,6 +211,7 @@ def identify_urdf(
             guess_navigation=packages is None or not packages.complete,
             named=_named(packages, body),
             leg_controllers=_leg_controllers(packages, body, profile),
+            rotor_controllers=_rotor_controllers(packages, body, profile),
         ),
         shipped,
     ]
@@ -256,11 +257,20 @@ def identify_urdf(
 
 def _leg_controllers(packages: Workspace | None, body: Body, profile: Profile) -> str | None:
     """The file of the robot's packages that configures its legs' joint controllers, when they
-    ship no gait (:func:`~solver.identify.shipped.leg_controllers`); else None."""
+    ship no gait (:func:`~solver.identify.shipped.joint_controllers`); else None."""
     if packages is None:
         return None
     legs = [j for limb in body.limbs if limb.kind == "leg" for j in limb.joints]
-    return leg_controllers(packages, profile, legs)
+    return joint_controllers(packages, profile.gait, legs)
+
+
+def _rotor_controllers(packages: Workspace | None, body: Body, profile: Profile) -> str | None:
+    """The file of the robot's packages that configures its rotors' joint controllers, when
+    they ship no flight software (:func:`~solver.identify.shipped.joint_controllers`); else
+    None."""
+    if packages is None:
+        return None
+    return joint_controllers(packages, profile.flight, body.rotors)
 
 
 def _named(packages: Workspace | None, body: Body) -> frozenset[str] | None:

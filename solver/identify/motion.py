@@ -6,7 +6,9 @@ Two kinds of evidence, the declared first:
   vehicle) or wheels driven through a transmission / ``ros2_control`` mean the robot is driven;
   rotors or flight plugins mean it is flown; joints of arms, legs and other limbs with a
   transmission mean its joints are commanded one by one (a head's pan/tilt points a sensor, a
-  rotor or wheel mount moves the vehicle: neither is joint control). From the SRDF: a MoveIt
+  rotor or wheel mount moves the vehicle: neither is joint control; but a flown body whose
+  packages, read whole, configure its rotors' joint controllers and ship no flight software
+  has its rotors commanded one by one). From the SRDF: a MoveIt
   planning group over an arm means joint-space and end-effector goals; an ``<end_effector>`` not
   on a leg means end-effector goals (:mod:`solver.identify.planning_groups`). An SRDF whose end
   effectors are all feet models a walker's whole body for its balance controller: its arm
@@ -147,9 +149,16 @@ def _undrawn_vessel(body: Body) -> bool:
     return body.marine and not (body.thrusters or body.fins)
 
 
-def _flight(body: Body, urdf_source: str) -> _Shown:
+def _flight(body: Body, urdf_source: str, rotor_controllers: str | None = None) -> _Shown:
+    """A flown body is flown; when the robot's packages configure its rotors' joint
+    controllers and ship no flight software (``rotor_controllers``, the file that shows it),
+    its rotors are commanded one by one too."""
     if not body.flying:
         return []
+    commanded = []
+    if body.rotors and rotor_controllers is not None:
+        why = f"{rotor_controllers}: joint controllers naming its rotors, no flight software"
+        commanded.append(("rotor_controllers", why))
     if body.rotors:
         what = f"{len(body.rotors)} rotor joint(s)"
     elif body.flight_plugins:
@@ -162,7 +171,7 @@ def _flight(body: Body, urdf_source: str) -> _Shown:
         what = f"flight named in {body.flight_hints[0]}"
     else:
         what = f"flying by its packages ({body.shipped_by})"
-    return [("flight", f"{urdf_source}: {what}")]
+    return [("flight", f"{urdf_source}: {what}"), *commanded]
 
 
 def _motions(joints: tuple[str, ...], urdf: Urdf | None) -> int:
@@ -380,18 +389,20 @@ def controls_from_description(
     guess_navigation: bool = True,
     named: Collection[str] | None = None,
     leg_controllers: str | None = None,
+    rotor_controllers: str | None = None,
 ) -> tuple[Control, ...]:
     """The motion controls the body (and SRDF) show, each with what shows it; with the kinds
     of the sensors the description declares, the profile's navigation guess too (not with
     ``guess_navigation=False``: the robot's packages were read, and say). ``named``: the
-    joints the robot's packages name, when they were read whole; ``leg_controllers``: the file
-    of the robot's packages that configures joint controllers, when they ship no gait
-    (:func:`solver.identify.shipped.leg_controllers`)."""
+    joints the robot's packages name, when they were read whole; ``leg_controllers`` and
+    ``rotor_controllers``: the file of the robot's packages that configures joint controllers
+    of its legs or rotors, when they ship no gait or no flight software
+    (:func:`solver.identify.shipped.joint_controllers`)."""
     effectors = () if srdf is None else hand_effectors(body, srdf, urdf)  # once per SRDF
     shown = [
         *_ground(body, urdf_source),
         *_water(body, urdf_source),
-        *_flight(body, urdf_source),
+        *_flight(body, urdf_source, rotor_controllers),
         *_limbs(body, urdf_source, urdf, named, leg_controllers),
         *_planned(body, srdf, profile, urdf, srdf_source, effectors=effectors),
     ]

@@ -45,13 +45,13 @@ __all__ = [
     "VEHICLE_MEDIA",
     "ControlRule",
     "FeatureCondition",
-    "GaitRule",
     "NavigationRule",
     "PackageRule",
     "Pattern",
     "Profile",
     "ProfileError",
     "SensorRule",
+    "SoftwareRule",
     "StructureRule",
     "default_profile_path",
     "load_profile",
@@ -172,6 +172,7 @@ CONTROL_SOURCES = (
     "srdf_walker_group",
     "srdf_end_effector",
     "leg_controllers",
+    "rotor_controllers",
     *ROLE_SOURCES,
 )
 LIMB_KEYS = (
@@ -402,10 +403,11 @@ class NavigationRule:
 
 
 @dataclass(frozen=True, slots=True)
-class GaitRule:
-    """What tells a walker's gait from its legs' joint controllers in the texts of its
-    packages (:func:`solver.identify.shipped.leg_controllers`): ``shipped``, a gait (walking
-    software, a velocity command, a teleop); ``controllers``, joint controllers configured."""
+class SoftwareRule:
+    """What tells a body's own software from its joint controllers in the texts of its
+    packages (:func:`solver.identify.shipped.joint_controllers`): ``shipped``, the software
+    (a walker's gait, a flown body's flight controller, a velocity command, a teleop);
+    ``controllers``, joint controllers configured."""
 
     shipped: Pattern
     controllers: Pattern
@@ -458,7 +460,9 @@ class Profile:
     # (``sensors.frames``, :mod:`solver.identify.frames`).
     frame_rules: tuple[SensorRule, ...] = ()
     # A walker's gait, or its legs' joint controllers, in the same texts (``motion.gait``).
-    gait: GaitRule | None = None
+    gait: SoftwareRule | None = None
+    # A flown body's flight software, or its rotors' joint controllers (``motion.flight``).
+    flight: SoftwareRule | None = None
 
     def role(self, name: str) -> str:
         """The rule-set characteristic filling role ``name`` (motion_control, ...)."""
@@ -560,7 +564,8 @@ def parse_profile(document: Document) -> Profile:
     velocity_default, by_structure, description = _motion(reader, names)
     navigation = _navigation(reader, description)
     package_controls = _package_rules(reader, names)
-    gait = _gait(reader)
+    gait = _software(reader, "gait")
+    flight = _software(reader, "flight")
     body_packages = (
         _patterns(reader, ("body_packages",), VEHICLE_MEDIA, "medium")
         if reader.get(("body_packages",)) is not None
@@ -595,6 +600,7 @@ def parse_profile(document: Document) -> Profile:
         body_packages,
         frame_rules,
         gait,
+        flight,
     )
 
 
@@ -878,7 +884,7 @@ def _motion(
     reader.unknown_keys(
         ("motion",),
         spec,
-        {"velocity", "description", "navigation", "packages", "gait"},
+        {"velocity", "description", "navigation", "packages", "gait", "flight"},
         "motion field",
     )
     velocity = reader.mapping(("motion", "velocity"), "velocity")
@@ -941,18 +947,19 @@ def _package_rules(reader: Reader, structures: set[str]) -> tuple[PackageRule, .
     return tuple(found)
 
 
-def _gait(reader: Reader) -> GaitRule | None:
-    """``motion.gait`` (optional): a gait shipped, joint controllers configured."""
-    path: YPath = ("motion", "gait")
-    spec = reader.mapping(path, "gait", required=False)
+def _software(reader: Reader, key: str) -> SoftwareRule | None:
+    """``motion.gait`` or ``motion.flight`` (optional): the body's software shipped, joint
+    controllers configured."""
+    path: YPath = ("motion", key)
+    spec = reader.mapping(path, key, required=False)
     if not spec:
         return None
-    reader.unknown_keys(path, spec, {"shipped", "controllers"}, "gait field")
+    reader.unknown_keys(path, spec, {"shipped", "controllers"}, f"{key} field")
     shipped = _pattern(reader, (*path, "shipped"))
     controllers = _pattern(reader, (*path, "controllers"))
     if shipped is None or controllers is None:
         return None
-    return GaitRule(shipped, controllers)
+    return SoftwareRule(shipped, controllers)
 
 
 def _navigation(

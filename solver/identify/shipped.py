@@ -9,11 +9,13 @@ Effector). A rule may exclude structures (no navigation for an arm bolted to a t
 its repository holds). Each control names the file that shows it, the first one found in the
 order the packages were read (the description's package first).
 
-The same texts tell a walker's gait from its legs' joint controllers: packages read whole with
-a file that configures joint controllers naming a leg's joint, shipping no gait (no walking
-software, velocity command, teleop or joystick) beside a workspace with no package named for
-one, command its joints one by one, and no gait is guessed for its legs
-(:func:`leg_controllers`).
+The same texts tell a body's own software from its joint controllers: packages read whole
+with a file that configures joint controllers naming a joint of its legs, shipping no gait (no
+walking software, velocity command, teleop or joystick) beside a workspace with no package
+named for one, command its joints one by one, and no gait is guessed for its legs; a flown
+body's packages that so name its rotors and ship no flight software (an attitude or position
+controller, a flight stack, a teleop) command its rotors one by one
+(:func:`joint_controllers`, with the profile's ``motion.gait`` or ``motion.flight``).
 
 The same texts say what a body travels in when its description shows no way at all (one link
 and its mesh, a few sensor frames: a drone a simulator poses, an AUV drawn for RViz), or only
@@ -38,11 +40,11 @@ from dataclasses import replace
 
 from solver.identify.body import Body
 from solver.identify.interfaces import Control
-from solver.identify.profile import GROUND, VELOCITY, Pattern, Profile
+from solver.identify.profile import GROUND, VELOCITY, Pattern, Profile, SoftwareRule
 from solver.identify.readers.workspace import Workspace
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
-__all__ = ["body_from_workspace", "controls_from_workspace", "leg_controllers", "named_joints"]
+__all__ = ["body_from_workspace", "controls_from_workspace", "joint_controllers", "named_joints"]
 
 
 def controls_from_workspace(
@@ -98,24 +100,26 @@ def _driven(body: Body, workspace: Workspace, profile: Profile) -> Body:
     return body
 
 
-def leg_controllers(workspace: Workspace, profile: Profile, legs: Collection[str]) -> str | None:
-    """The first file of the robot's packages that configures joint controllers and names a
-    joint of the ``legs``, when the packages were read whole, none ships a gait (the
-    profile's ``motion.gait``) and no other package of the workspace is named for one (a
-    ``gait_planner`` beside them that names none of them): a walker whose author ships its
-    legs' controllers and no walking software is commanded joint by joint, whatever its legs
-    could do (:func:`solver.identify.motion.controls_from_description`). None when a bound stopped
-    the reading: what was not read may walk it."""
-    rule = profile.gait
-    if rule is None or not legs or not workspace.complete:
+def joint_controllers(
+    workspace: Workspace, rule: SoftwareRule | None, joints: Collection[str]
+) -> str | None:
+    """The first file of the robot's packages that configures joint controllers and names one
+    of the ``joints`` (a walker's legs', a flown body's rotors'), when the packages were read
+    whole, none ships the body's own software (``rule``: the profile's ``motion.gait`` or
+    ``motion.flight``) and no other package of the workspace is named for it (a
+    ``gait_planner`` beside them that names none of them): a body whose author ships those
+    joints' controllers and nothing that moves the body as a whole is commanded joint by joint,
+    whatever it could do (:func:`solver.identify.motion.controls_from_description`). None when a
+    bound stopped the reading: what was not read may move it."""
+    if rule is None or not joints or not workspace.complete:
         return None
     if _first_found(workspace, rule.shipped) or any(
         rule.shipped.find(name) is not None for name in workspace.neighbours
     ):
-        return None  # a gait its packages ship, or a package of the workspace named for one
+        return None  # software its packages ship, or a package of the workspace named for it
     for shipped in workspace.files:
         matched = rule.controllers.find(shipped.text)
-        if matched is not None and named_joints(replace(workspace, files=(shipped,)), legs):
+        if matched is not None and named_joints(replace(workspace, files=(shipped,)), joints):
             return _shown_file(shipped.package, shipped.path, matched)
     return None
 

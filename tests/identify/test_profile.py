@@ -146,6 +146,19 @@ def test_the_gait_rule_is_optional_and_its_fields_are_checked() -> None:
     assert "unknown gait field 'stance'" in fault.message
 
 
+def test_the_flight_rule_is_optional_and_its_fields_are_checked() -> None:
+    start, end = SHIPPED.index("  flight:\n"), SHIPPED.index("  packages:")
+    assert parse_profile(parse_document(SHIPPED[:start] + SHIPPED[end:], "p.yaml")).flight is None
+    shipped = load_profile().flight
+    assert shipped is not None
+    assert shipped.shipped.find("rosrun mavros mavros_node") is not None
+    assert shipped.controllers.find("type: velocity_controllers/JointGroupVelocityController")
+    text = SHIPPED.replace("  flight:\n", "  flight:\n    autopilot: yes\n")
+    fault = the_fault(text)
+    assert fault.location.path == "motion.flight.autopilot"
+    assert "unknown flight field 'autopilot'" in fault.message
+
+
 def test_package_rules_are_optional_and_their_structures_are_checked() -> None:
     start = SHIPPED.index("  packages:")
     assert parse_profile(parse_document(SHIPPED[:start], "plain.yaml")).package_controls == ()

@@ -864,3 +864,58 @@ def test_joint_controllers_of_a_body_with_one_leg_or_none_change_nothing(tmp_pat
     assert not [source for source in arm_alone.values() if "no gait shipped" in source]
     rover = controls_of(described(tmp_path / "rover", rover_with_a_lidar(), JOINT_CONTROLLERS))
     assert set(rover) == {"Driving"}
+
+
+# A ros_control configuration of a quadrotor's four rotors, as a description package ships it.
+ROTOR_CONTROLLERS = (
+    "rotors_controller: {type: velocity_controllers/JointGroupVelocityController, "
+    "joints: [rotor_0_joint, rotor_1_joint, rotor_2_joint, rotor_3_joint]}"
+)
+
+
+def test_a_drone_whose_packages_command_its_rotors_and_ship_no_flight_software_has_them_commanded(
+    tmp_path: Path,
+) -> None:
+    found = controls_of(described(tmp_path, quadrotor(), ROTOR_CONTROLLERS))
+    assert found["Joint"] == (
+        "package craft_bringup: craft_bringup/launch/bringup.launch "
+        "(velocity_controllers): joint controllers naming its rotors, no flight software"
+    )
+    assert found["Flight"] == "urdf: 4 rotor joint(s)"  # still flown
+
+
+@pytest.mark.parametrize(
+    "software",
+    [
+        "attitude_controller: {rate: 100}",
+        "altitude_hold.py",
+        "<node pkg='mavros'/>",
+        "px4_sitl",
+        "ardupilot_gazebo",
+        "take_off.py",
+        "hover_thrust: 0.5",
+        "mission_planner",
+        "waypoint_follower",
+        "lee_position_controller_node",
+        "<include file='$(find rotors_gazebo)/launch/spawn_mav.launch'/>",
+        "remap: {from: cmd_vel, to: /copter/cmd_vel}",
+        "<node pkg='teleop_twist_keyboard'/>",
+        "<node pkg='joy' type='joy_node'/>",
+    ],
+)
+def test_a_drone_whose_packages_ship_flight_software_is_only_flown(
+    tmp_path: Path, software: str
+) -> None:
+    found = controls_of(described(tmp_path, quadrotor(), f"{ROTOR_CONTROLLERS}\n{software}"))
+    assert "Flight" in found
+    assert "Joint" not in found
+
+
+def test_rotor_controllers_read_alone_or_naming_no_rotor_change_nothing(tmp_path: Path) -> None:
+    alone = described(tmp_path / "alone", quadrotor(), ROTOR_CONTROLLERS)
+    assert "Joint" not in controls_of(alone, look_around=False)
+    broadcaster = "joint_state_broadcaster: {type: JointStateBroadcaster, joints: [rotor_0_joint]}"
+    assert "Joint" not in controls_of(described(tmp_path / "state", quadrotor(), broadcaster))
+    # A walker's legs' controllers are read by the gait rule, not as a flown body's rotors.
+    walker = controls_of(described(tmp_path / "walker", quadruped(), ROTOR_CONTROLLERS))
+    assert "Flight" not in walker
