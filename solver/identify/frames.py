@@ -26,21 +26,22 @@ a driver that stamps its data with that frame (``frame_id: imu_link`` in its con
   among them naming it (a colour and a depth frame: an RGB-D camera). Any other kind is a device
   of its own wherever it hangs (a D435i's IMU frame, under its camera link, is an IMU); named
   frames of one body of another kind farther apart than :data:`_STREAM_REACH` are a device
-  each (a front and a back laser hung from one ``base_scan`` link).
+  each (a front and a back laser hung from one ``base_scan`` link; :func:`_apart`).
 * The description's own word wins: no device is added for a kind the description declares
   (its camera's optical frame is that camera), nor on a device that carries a sensor the
   description declares.
 * Bounds: the patterns are linear in the texts; each link's rule is found once; a device's
   body is at most three joints up and its camera frames at most three down; at most 64 camera
-  names are looked up among the links.
+  names are looked up among the links; one body's frames are told apart at eight places at
+  most.
 """
 
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 
-from solver.identify.pose import Poses, distance
+from solver.identify.pose import Poses, Vector, distance
 from solver.identify.profile import Profile, SensorRule
 from solver.identify.readers.urdf import Urdf
 from solver.identify.readers.workspace import Workspace
@@ -63,6 +64,9 @@ _CAMERAS = frozenset(
 # How far apart (metres) two named frames of one body may sit and still be one device's (a
 # lidar's frame and its driver's scan frame); farther apart, they are two devices.
 _STREAM_REACH = 0.1
+# The most places one body's named frames are told apart at (each frame is compared with each
+# place): more are read as one device, a stranger's thousand frames in linear time.
+_MOST_PLACES = 8
 # The most camera names resolved to links (each a walk over the links, for a name no link
 # has): a stranger's files may write any number.
 _MAX_CAMERA_NAMES = 64
@@ -204,10 +208,20 @@ def sensors_on_frames(
         rule = kind_of(link)
         if rule is not None:
             devices.setdefault(body(link, rule), []).append((rule, link, how))
+    poses: Poses | None = None
+
+    def place(link: str) -> Vector:
+        """Where ``link`` is in the root's frame (the poses computed once, when needed)."""
+        nonlocal poses
+        if poses is None:
+            poses = Poses(urdf)
+        return poses.place(link)
+
     found = []
-    poses: list[Poses] = []  # computed once, when two frames of one body are compared
     for body_link, named in devices.items():
-        for device, frames in _apart(body_link, named, rules, urdf, poses):
+        if body_link in bodies_declared:
+            continue  # a device the description declares a sensor on
+        for device, frames in _apart(body_link, named, rules, place):
             rule, link, how = min(frames)
             rule = min((rule, *streams(device, rule)))
             kind = rules[rule].kind
@@ -221,27 +235,26 @@ def _apart(
     body: str,
     frames: list[tuple[int, str, str]],
     rules: tuple[SensorRule, ...],
-    urdf: Urdf,
-    poses: list[Poses],
+    place: Callable[[str], Vector],
 ) -> list[tuple[str, list[tuple[int, str, str]]]]:
     """The devices the named ``frames`` under one ``body`` are: one, for a camera's streams
-    (its colour and depth frames) or frames within :data:`_STREAM_REACH` of each other; one
-    per place otherwise (a front and a back laser a driver each publishes in, hung from one
-    ``base_scan`` link), each its own frame's device."""
-    if len(frames) < 2 or rules[frames[0][0]].kind in _CAMERAS:
+    (its colour and depth frames, wherever they sit); else one per place (a front and a back
+    laser a driver each publishes in, hung from one ``base_scan`` link), each its own first
+    frame's device: a frame, in rule-then-name order, joins the first place whose first frame
+    is within :data:`_STREAM_REACH` of it. More places than :data:`_MOST_PLACES` are one device,
+    as before (each frame is compared with that many places at most)."""
+    if len(frames) < 2 or any(rules[rule].kind in _CAMERAS for rule, _, _ in frames):
         return [(body, frames)]
-    if not poses:
-        poses.append(Poses(urdf))
-    groups: list[list[tuple[int, str, str]]] = []
+    groups: list[tuple[Vector, list[tuple[int, str, str]]]] = []
     for frame in sorted(frames):
-        at = poses[0].place(frame[1])
-        near = next(
-            (g for g in groups if distance(at, poses[0].place(g[0][1])) <= _STREAM_REACH), None
-        )
-        if near is None:
-            groups.append([frame])
-        else:
+        at = place(frame[1])
+        near = next((g for first, g in groups if distance(at, first) <= _STREAM_REACH), None)
+        if near is not None:
             near.append(frame)
+        elif len(groups) == _MOST_PLACES:
+            return [(body, frames)]
+        else:
+            groups.append((at, [frame]))
     if len(groups) == 1:
         return [(body, frames)]
-    return [(group[0][1], group) for group in groups]
+    return [(group[0][1], group) for _, group in groups]

@@ -111,7 +111,10 @@ def joint_controllers(
     joints' controllers and nothing that moves the body as a whole is commanded joint by joint,
     whatever it could do (:func:`solver.identify.motion.controls_from_description`). None when a
     bound stopped the reading: what was not read may move it."""
-    if rule is None or not joints or not workspace.complete:
+    # Each joint by its name after a namespace (``firefly/rotor_0_joint``), as a controller's
+    # list names it; a name no word can be is not taken as named here: this is a claim.
+    words = {tail for name in joints if _WORD.fullmatch(tail := name.rsplit("/", 1)[-1])}
+    if rule is None or not words or not workspace.complete:
         return None
     if _first_found(workspace, rule.shipped) or any(
         rule.shipped.find(name) is not None for name in workspace.neighbours
@@ -119,7 +122,7 @@ def joint_controllers(
         return None  # software its packages ship, or a package of the workspace named for it
     for shipped in workspace.files:
         matched = rule.controllers.find(shipped.text)
-        if matched is not None and named_joints(replace(workspace, files=(shipped,)), joints):
+        if matched is not None and named_joints(replace(workspace, files=(shipped,)), words):
             return _shown_file(shipped.package, shipped.path, matched)
     return None
 

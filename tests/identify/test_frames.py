@@ -266,26 +266,59 @@ def placed(parent: str, child: str, x: float) -> str:
     )
 
 
-def lasers(back_at: float) -> dict[str, int]:
-    """A front and a back laser hung from one scan link, each driver given its own frame."""
-    base = (
+def lasers_at(*places: float, declared: str = "") -> str:
+    """Lasers hung from one scan link at ``places`` along x (``base_scan_0`` ...)."""
+    return (
         '<robot name="r"><link name="base_link"/>'
         + fixed("base_link", "base_scan")
-        + placed("base_scan", "base_scan_front", 0.15)
-        + placed("base_scan", "base_scan_back", back_at)
+        + "".join(placed("base_scan", f"base_scan_{i}", x) for i, x in enumerate(places))
+        + declared
         + "</robot>"
     )
-    drivers = shipping(
-        front_yaml='lidar:\n  frame_id: "base_scan_front"\n',
-        back_yaml='lidar:\n  frame_id: "base_scan_back"\n',
+
+
+def drivers_of(count: int) -> Workspace:
+    """One driver configuration per laser, each given its own frame."""
+    return shipping(
+        **{f"laser_{i}_yaml": f'lidar:\n  frame_id: "base_scan_{i}"\n' for i in range(count)}
     )
-    return kinds(drivers, base)
 
 
 def test_two_lasers_a_driver_each_publishes_in_apart_on_one_link_are_two_lidars() -> None:
-    assert lasers(back_at=-0.15) == {"lidar": 2}
+    text = lasers_at(0.15, -0.15)
+    assert kinds(drivers_of(2), text) == {"lidar": 2}
+    found = sensors_on_frames(drivers_of(2), parse_urdf(text, "r.urdf"), PROFILE, ())
+    assert sorted(str(d.link) for d in found) == ["base_scan_0", "base_scan_1"]
 
 
-def test_two_frames_of_one_body_close_together_are_one_devices() -> None:
-    # A lidar's mount frame and its scan frame, 5 cm apart: one laser, whatever names them.
-    assert lasers(back_at=0.10) == {"lidar": 1}
+def test_two_frames_of_one_body_close_together_are_one_device() -> None:
+    # A lidar's mount frame and its scan frame, 5 cm apart, or 10 cm: one laser.
+    assert kinds(drivers_of(2), lasers_at(0.15, 0.10)) == {"lidar": 1}
+    assert kinds(drivers_of(2), lasers_at(0.2, 0.1)) == {"lidar": 1}
+
+
+def test_a_cameras_streams_far_apart_are_still_one_camera() -> None:
+    """A stereo pair's colour and depth frames, 12 cm apart on one camera body."""
+    camera = (
+        '<robot name="r"><link name="base_link"/>'
+        + fixed("base_link", "camera_link")
+        + placed("camera_link", "camera_color_frame", 0.06)
+        + placed("camera_link", "camera_depth_frame", -0.06)
+        + "</robot>"
+    )
+    driver = shipping(
+        color_yaml="color_frame_id: camera_color_frame\ndepth_frame_id: camera_depth_frame\n"
+    )
+    assert kinds(driver, camera) == {"depth_camera": 1}
+
+
+def test_one_bodys_frames_are_told_apart_at_eight_places_at_most() -> None:
+    eight = [float(i) for i in range(8)]
+    assert kinds(drivers_of(8), lasers_at(*eight)) == {"lidar": 8}
+    # A ninth place: the body's frames are one device again, each compared with eight at most.
+    assert kinds(drivers_of(9), lasers_at(*eight, 8.0)) == {"lidar": 1}
+
+
+def test_lasers_on_a_body_the_description_declares_a_sensor_on_add_nothing() -> None:
+    imu = '<gazebo reference="base_scan"><sensor type="imu" name="imu"/></gazebo>'
+    assert kinds(drivers_of(2), lasers_at(0.15, -0.15, declared=imu)) == {"imu": 1}

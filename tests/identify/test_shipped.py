@@ -911,11 +911,53 @@ def test_a_drone_whose_packages_ship_flight_software_is_only_flown(
     assert "Joint" not in found
 
 
-def test_rotor_controllers_read_alone_or_naming_no_rotor_change_nothing(tmp_path: Path) -> None:
+@pytest.mark.parametrize(
+    "text",
+    [
+        "# Permission is hereby granted, free of charge",
+        "transmission_interface",
+        "except KeyboardInterrupt:",
+        "<node pkg='hoverboard_driver'/>",
+        "enjoy_the_flight_of_the_rotors: true",
+    ],
+)
+def test_flight_words_inside_other_words_are_no_flight_software(tmp_path: Path, text: str) -> None:
+    found = controls_of(described(tmp_path, quadrotor(), f"{ROTOR_CONTROLLERS}\n{text}"))
+    assert "Joint" in found
+
+
+def test_rotor_controllers_read_alone_or_in_part_change_nothing(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
     alone = described(tmp_path / "alone", quadrotor(), ROTOR_CONTROLLERS)
     assert "Joint" not in controls_of(alone, look_around=False)
+    in_part = read_in_part(tmp_path / "part", monkeypatch, quadrotor(), ROTOR_CONTROLLERS)
+    assert "Joint" not in controls_of(in_part)
+
+
+def test_controllers_naming_no_rotor_command_none_of_them(tmp_path: Path) -> None:
     broadcaster = "joint_state_broadcaster: {type: JointStateBroadcaster, joints: [rotor_0_joint]}"
     assert "Joint" not in controls_of(described(tmp_path / "state", quadrotor(), broadcaster))
-    # A walker's legs' controllers are read by the gait rule, not as a flown body's rotors.
-    walker = controls_of(described(tmp_path / "walker", quadruped(), ROTOR_CONTROLLERS))
-    assert "Flight" not in walker
+    gimbal = "gimbal: {type: position_controllers/JointPositionController, joint: gimbal_pitch}"
+    assert "Joint" not in controls_of(described(tmp_path / "gimbal", quadrotor(), gimbal))
+
+
+def namespaced_quadrotor() -> RobotText:
+    """RotorS' way: every rotor named under the vehicle's namespace."""
+    robot = RobotText("firefly")
+    for i in range(4):
+        robot.joint(f"firefly/rotor_{i}_joint", "continuous", robot.root, f"firefly/rotor_{i}")
+    return robot
+
+
+def test_namespaced_rotors_are_named_by_their_name_after_the_namespace(tmp_path: Path) -> None:
+    gimbal = "gimbal: {type: position_controllers/JointPositionController, joint: gimbal_pitch}"
+    assert "Joint" not in controls_of(described(tmp_path / "g", namespaced_quadrotor(), gimbal))
+    found = controls_of(described(tmp_path / "r", namespaced_quadrotor(), ROTOR_CONTROLLERS))
+    assert "joint controllers naming its rotors" in found["Joint"]
+
+
+def test_a_flight_stack_package_beside_the_robots_keeps_its_rotors_to_it(tmp_path: Path) -> None:
+    path = described(tmp_path, quadrotor(), ROTOR_CONTROLLERS)
+    package(tmp_path / "ws" / "src", "px4_msgs", {"msg/VehicleCommand.msg": "uint32 command"})
+    assert set(controls_of(path)) == {"Flight"}
