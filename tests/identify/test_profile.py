@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import pytest
@@ -133,30 +134,40 @@ def test_a_navigation_need_for_nothing_that_moves_a_body_is_a_located_fault() ->
     assert "wheels" in fault.message
 
 
-def test_the_gait_rule_is_optional_and_its_fields_are_checked() -> None:
-    start, end = SHIPPED.index("  gait:"), SHIPPED.index("  packages:")
-    assert parse_profile(parse_document(SHIPPED[:start] + SHIPPED[end:], "p.yaml")).gait is None
-    shipped = load_profile().gait
-    assert shipped is not None
-    assert shipped.shipped.find("ros2 launch dog walking.launch.py") is not None
-    assert shipped.controllers.find("type: forward_command_controller/X") is not None
-    text = SHIPPED.replace("  gait:\n", "  gait:\n    stance: yes\n")
-    fault = the_fault(text)
-    assert fault.location.path == "motion.gait.stance"
-    assert "unknown gait field 'stance'" in fault.message
-
-
-def test_the_flight_rule_is_optional_and_its_fields_are_checked() -> None:
-    start, end = SHIPPED.index("  flight:\n"), SHIPPED.index("  packages:")
-    assert parse_profile(parse_document(SHIPPED[:start] + SHIPPED[end:], "p.yaml")).flight is None
-    shipped = load_profile().flight
-    assert shipped is not None
-    assert shipped.shipped.find("rosrun mavros mavros_node") is not None
-    assert shipped.controllers.find("type: velocity_controllers/JointGroupVelocityController")
-    text = SHIPPED.replace("  flight:\n", "  flight:\n    autopilot: yes\n")
-    fault = the_fault(text)
-    assert fault.location.path == "motion.flight.autopilot"
-    assert "unknown flight field 'autopilot'" in fault.message
+@pytest.mark.parametrize(
+    ("key", "software", "controllers", "field"),
+    [
+        (
+            "gait",
+            "ros2 launch dog walking.launch.py",
+            "type: forward_command_controller/X",
+            "stance",
+        ),
+        (
+            "flight",
+            "rosrun mavros mavros_node",
+            "type: velocity_controllers/JointVelocityController",
+            "autopilot",
+        ),
+    ],
+)
+def test_each_software_rule_is_optional_and_its_fields_are_checked(
+    key: str, software: str, controllers: str, field: str
+) -> None:
+    start = SHIPPED.index(f"  {key}:\n")
+    found = re.search(r"\n  \S", SHIPPED[start + 1 :])
+    assert found is not None
+    end = start + 1 + found.start() + 1  # up to the next key or comment of `motion`
+    assert (
+        getattr(parse_profile(parse_document(SHIPPED[:start] + SHIPPED[end:], "p.yaml")), key)
+        is None
+    )
+    shipped = getattr(load_profile(), key)
+    assert shipped.shipped.find(software) is not None
+    assert shipped.controllers.find(controllers) is not None
+    fault = the_fault(SHIPPED.replace(f"  {key}:\n", f"  {key}:\n    {field}: yes\n"))
+    assert fault.location.path == f"motion.{key}.{field}"
+    assert f"unknown {key} field '{field}'" in fault.message
 
 
 def test_package_rules_are_optional_and_their_structures_are_checked() -> None:
