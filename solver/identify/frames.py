@@ -25,8 +25,10 @@ a driver that stamps its data with that frame (``frame_id: imu_link`` in its con
   camera's frames fixed beneath its body, named or not, say which camera it is, the first rule
   among them naming it (a colour and a depth frame: an RGB-D camera). Any other kind is a device
   of its own wherever it hangs (a D435i's IMU frame, under its camera link, is an IMU); named
-  frames of one body of another kind farther apart than :data:`_STREAM_REACH` are a device
-  each (a front and a back laser hung from one ``base_scan`` link; :func:`_apart`).
+  frames of one body of another kind farther apart than one device's streams sit
+  (:data:`~solver.identify.sensors.STREAM_REACH`: a lidar's frame and its driver's scan
+  frame) are a device each (a front and a back laser hung from one ``base_scan`` link;
+  :func:`_apart`).
 * The description's own word wins: no device is added for a kind the description declares
   (its camera's optical frame is that camera), nor on a device that carries a sensor the
   description declares.
@@ -45,7 +47,7 @@ from solver.identify.pose import Poses, Vector, distance
 from solver.identify.profile import Profile, SensorRule
 from solver.identify.readers.urdf import Urdf
 from solver.identify.readers.workspace import Workspace
-from solver.identify.sensors import Detection
+from solver.identify.sensors import STREAM_REACH, Detection
 from solver.untrusted import shown
 
 __all__ = ["SOURCE", "named_frames", "sensors_on_frames"]
@@ -61,9 +63,6 @@ _DEVICE_DEPTH = 3
 _CAMERAS = frozenset(
     {"camera", "depth_camera", "stereo_camera", "wide_angle_camera", "thermal_camera"}
 )
-# How far apart (metres) two named frames of one body may sit and still be one device's (a
-# lidar's frame and its driver's scan frame); farther apart, they are two devices.
-_STREAM_REACH = 0.1
 # The most places one body's named frames are told apart at (each frame is compared with each
 # place): more are read as one device, a stranger's thousand frames in linear time.
 _MOST_PLACES = 8
@@ -241,14 +240,14 @@ def _apart(
     (its colour and depth frames, wherever they sit); else one per place (a front and a back
     laser a driver each publishes in, hung from one ``base_scan`` link), each its own first
     frame's device: a frame, in rule-then-name order, joins the first place whose first frame
-    is within :data:`_STREAM_REACH` of it. More places than :data:`_MOST_PLACES` are one device,
+    is within :data:`STREAM_REACH` of it. More places than :data:`_MOST_PLACES` are one device,
     as before (each frame is compared with that many places at most)."""
     if len(frames) < 2 or any(rules[rule].kind in _CAMERAS for rule, _, _ in frames):
         return [(body, frames)]
     groups: list[tuple[Vector, list[tuple[int, str, str]]]] = []
     for frame in sorted(frames):
         at = place(frame[1])
-        near = next((g for first, g in groups if distance(at, first) <= _STREAM_REACH), None)
+        near = next((g for first, g in groups if distance(at, first) <= STREAM_REACH), None)
         if near is not None:
             near.append(frame)
         elif len(groups) == _MOST_PLACES:

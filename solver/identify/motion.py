@@ -156,7 +156,7 @@ def _flight(body: Body, urdf_source: str, rotor_controllers: str | None = None) 
     if not body.flying:
         return []
     commanded = []
-    if body.rotors and rotor_controllers is not None:
+    if rotor_controllers is not None:  # found only for a body with rotors
         why = f"{rotor_controllers}: joint controllers naming its rotors, no flight software"
         commanded.append(("rotor_controllers", why))
     if body.rotors:

@@ -39,6 +39,7 @@ from solver.identify.readers.urdf import Joint, PluginTag, SensorTag, Urdf
 from solver.untrusted import shown
 
 __all__ = [
+    "STREAM_REACH",
     "Detection",
     "Sensor",
     "element_kind",
@@ -61,7 +62,7 @@ _DEVICE_DEPTH = 2
 # gyrometer, an RGB-D camera's colour and depth streams (each read as a depth camera).
 _COMPOSED = ("imu", "depth_camera")
 # How far apart two frames on one link may sit and still be one device's streams (metres).
-_STREAM_REACH = 0.1
+STREAM_REACH = 0.1
 # A link that is a camera's own body (its streams' frames are fixed to it), by its name.
 _CAMERA_BODY = re.compile(r"camera|realsense|kinect|openni|xtion", re.IGNORECASE)
 # A side of a stereo pair in a sensor name: l, r, left or right between separators.
@@ -253,7 +254,7 @@ def _dvl_beams(found: list[Detection], urdf: Urdf, beams: set[int]) -> list[Dete
 
 def _rgbd_frames(found: list[Detection], urdf: Urdf) -> list[Detection]:
     """An RGB-D camera declared as streams on sibling frames (a colour frame and a depth frame
-    fixed to one camera link, not to the body's root, within :data:`_STREAM_REACH` of each
+    fixed to one camera link, not to the body's root, within :data:`STREAM_REACH` of each
     other and facing the same way), each read as a depth camera (the colour stream by its
     device's name, ``kinect``), is one device: the first stays. Two depth cameras on one mount
     further apart or facing apart (a front and a rear camera on ``base_link``) are two. Plain
@@ -306,7 +307,7 @@ def _stream_beneath_body(detection: Detection, bodies: dict[str, str], urdf: Urd
     """A plain camera on a frame named for a camera's body that carries a depth stream (as the
     body's name up to its camera word: ``camera_color_frame`` for ``camera_link`` or
     ``camera_depth_frame``), fixed beneath it facing its way (:data:`_DEVICE_DEPTH` fixed joints
-    down at most, none turned, their offsets adding up to :data:`_STREAM_REACH` at most: a
+    down at most, none turned, their offsets adding up to :data:`STREAM_REACH` at most: a
     RealSense macro's colour and infrared frames under the ``camera_link`` its depth sensor is
     on) is one of that camera's streams; a thermal camera or a rear camera bolted to its bracket
     is not."""
@@ -320,15 +321,15 @@ def _stream_beneath_body(detection: Detection, bodies: dict[str, str], urdf: Urd
         reach += math.hypot(*joint.origin)
         link = joint.parent
         if link in bodies:
-            return reach <= _STREAM_REACH and detection.link.startswith(bodies[link])
+            return reach <= STREAM_REACH and detection.link.startswith(bodies[link])
     return False
 
 
 def _one_device(first: Joint, second: Joint) -> bool:
     """Two frames fixed to one link are one device's streams: they sit within
-    :data:`_STREAM_REACH` of each other and face the same way (a Kinect's colour and depth
+    :data:`STREAM_REACH` of each other and face the same way (a Kinect's colour and depth
     frames, 2.5 cm apart)."""
-    close = math.dist(first.origin, second.origin) <= _STREAM_REACH
+    close = math.dist(first.origin, second.origin) <= STREAM_REACH
     return close and all(abs(a - b) <= 1e-6 for a, b in zip(first.rpy, second.rpy, strict=True))
 
 
@@ -410,7 +411,7 @@ def _side_by_side(
 
 def _stereo_depth(found: list[Detection], urdf: Urdf) -> list[Detection]:
     """A depth stream on the frame of a stereo camera, or on a frame fixed to it within
-    :data:`_STREAM_REACH` and facing its way (either above the other), is the depth the pair
+    :data:`STREAM_REACH` and facing its way (either above the other), is the depth the pair
     computes: one stereo camera. Linear: a set of the stereo cameras' links, one joint up and
     the joints down from each depth stream's link."""
     stereo = {d.link for d in found if d.kind == "stereo_camera" and d.link is not None}
@@ -433,8 +434,8 @@ def _beside_stereo(detection: Detection, stereo: set[str], urdf: Urdf) -> bool:
 
 
 def _near(joint: Joint) -> bool:
-    """A fixed frame within :data:`_STREAM_REACH` of its parent, not turned from it."""
-    close = math.dist(joint.origin, (0.0, 0.0, 0.0)) <= _STREAM_REACH
+    """A fixed frame within :data:`STREAM_REACH` of its parent, not turned from it."""
+    close = math.dist(joint.origin, (0.0, 0.0, 0.0)) <= STREAM_REACH
     return close and all(abs(a) <= 1e-6 for a in joint.rpy)
 
 

@@ -44,6 +44,11 @@ def shipped(structure: str, *texts: str) -> dict[str, str]:
     return {c.motion_control: c.source for c in found}
 
 
+def shipped_to_arms(text: str) -> list[list[str]]:
+    """The controls ``text`` shows for a fixed arm and for a mobile manipulator."""
+    return [list(shipped(structure, text)) for structure in ("Manipulator", "Mobile Manipulator")]
+
+
 def test_a_bringup_that_runs_nav2_ships_waypoint_goals_named_by_its_file() -> None:
     assert shipped("UGV", "IncludeLaunchDescription('nav2_bringup')") == {
         "Waypoint": "package craft_bringup: craft_bringup/launch/0.launch.py (nav2_bringup)"
@@ -179,8 +184,7 @@ def test_an_arm_moved_by_inverse_kinematics_to_a_target_is_sent_end_effector_goa
 def test_a_cartesian_controller_or_goal_an_arms_packages_ship_is_an_end_effector_control(
     text: str,
 ) -> None:
-    assert list(shipped("Manipulator", text)) == ["End Effector"]
-    assert list(shipped("Mobile Manipulator", text)) == ["End Effector"]
+    assert shipped_to_arms(text) == [["End Effector"], ["End Effector"]]
 
 
 @pytest.mark.parametrize(
@@ -223,8 +227,7 @@ def test_a_body_of_no_arm_is_sent_no_cartesian_goals_whatever_its_packages_hold(
 def test_a_grippers_open_and_close_an_arms_packages_command_is_an_end_effector_control(
     text: str,
 ) -> None:
-    assert list(shipped("Manipulator", text)) == ["End Effector"]
-    assert list(shipped("Mobile Manipulator", text)) == ["End Effector"]
+    assert shipped_to_arms(text) == [["End Effector"], ["End Effector"]]
 
 
 @pytest.mark.parametrize(
