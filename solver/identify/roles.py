@@ -9,7 +9,9 @@ of strength, and the first that speaks decides:
    lift-drag plugin's ``<joint_name>`` (a fin or control surface; a rotor when the joint turns
    without limits: a propeller blade's lift); on a body in water, a swivel or a spin on the
    hull whose link a force plugin pushes (``gazebo_ros_force``'s ``<link_name>``) is a
-   thruster. Which plugin is which is the profile's ``plugins`` patterns.
+   thruster. Which plugin is which is the profile's ``plugins`` patterns; a plugin that gives
+   a wheel spacing and a wheel size (``<wheelSeparation>``, ``<wheelDiameter>``) is a drive
+   plugin whatever it is called (a robot's own drive plugin).
 2. The joint's place and shape: a vertical swivel that carries a wheel and nothing else is a
    caster (the wheel below it is the caster's); a propeller on a body in water is a thruster;
    a propeller on a ``floating`` joint with nothing below (a visual part a simulator poses) is
@@ -52,6 +54,18 @@ _PLUGIN_ROLES = (
 _Z = 2
 # The evidence of a propeller a simulator poses on a floating joint (counted however few).
 POSED = ", a part a simulator poses (floating joint)"
+
+
+# A drive plugin's parameters, read by what they give (tags compared without case, ``_`` or
+# ``-``): the wheels' spacing, and their size.
+_WHEEL_SPACING = frozenset({"wheelseparation", "wheeltrack", "wheeldistance"})
+_WHEEL_SIZE = frozenset({"wheeldiameter", "wheelradius"})
+
+
+def _wheel_geometry(plugin: PluginTag) -> bool:
+    """Whether ``plugin`` sets both a wheel spacing and a wheel size."""
+    tags = {re.sub(r"[_-]", "", tag).lower() for tag, _ in plugin.params}
+    return bool(tags & _WHEEL_SPACING and tags & _WHEEL_SIZE)
 
 
 @dataclass(frozen=True, slots=True)
@@ -160,6 +174,10 @@ class RoleReader:
         thruster = self.profile.plugin_pattern("thruster")
         if thruster is not None and any(thruster.search(group) for group in plugin.groups):
             found.add("thruster")
+        # A plugin that gives a wheel spacing and a wheel size drives wheels, whatever it is
+        # called (a robot's own drive plugin, ``<wheelSeparation>`` and ``<wheelDiameter>``).
+        if _wheel_geometry(plugin):
+            found.add("drive")
         if "flight" in found:
             found.discard("drive")  # a multicopter's velocity control flies it
         return frozenset(found)

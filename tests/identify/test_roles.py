@@ -321,3 +321,31 @@ def test_steering_motors_carrying_wheels_are_no_rotors() -> None:
         )
         swerve.fixed(module, f"{corner}_wheel")
     assert identify_urdf(swerve.text()).structure != "UAV"
+
+
+def ball_robot(params: str) -> RobotText:
+    """A ball that rolls on two unnamed joints (a spin about z, a roll about x), moved by a
+    plugin of its own (``libball_controller.so``) with ``params``."""
+    ball = RobotText("ball")
+    spun = ball.joint("spin", "continuous", ball.root, "inner", '<axis xyz="0 0 1"/>')
+    ball.joint("roll", "continuous", spun, "shell", '<axis xyz="1 0 0"/>')
+    ball.add(builders.model_plugin("ctl", "libball_controller.so", params))
+    return ball
+
+
+def test_a_plugin_of_its_own_that_gives_wheel_spacing_and_size_drives_the_body() -> None:
+    result = identify_urdf(
+        ball_robot(
+            "<leftJoint>roll</leftJoint><rightJoint>spin</rightJoint>"
+            "<wheelSeparation>0.5</wheelSeparation><wheel_diameter>0.2</wheel_diameter>"
+        ).text()
+    )
+    assert result.structure == "UGV"
+    assert {r.joint: r.evidence for r in result.roles}["roll"] == (
+        "<leftJoint> of drive plugin libball_controller.so"
+    )
+
+
+def test_a_plugin_that_gives_a_wheel_size_alone_drives_nothing() -> None:
+    result = identify_urdf(ball_robot("<wheelDiameter>0.2</wheelDiameter>").text())
+    assert result.structure != "UGV"
