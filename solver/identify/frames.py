@@ -15,7 +15,9 @@ a driver that stamps its data with that frame (``frame_id: imu_link`` in its con
   transform up), the value naming the link whole or by its last ``/`` segment; or when it names
   a camera driver (``camera_name``) from which the driver builds its frames (realsense2_camera,
   orbbec_camera): the link of that name, else ``NAME_link``, else the first link whose name
-  begins ``NAME_`` and reads as a camera.
+  begins ``NAME_`` and reads as a camera. A depth camera's driver (realsense2_camera,
+  orbbec_camera) launched in a file that names no camera names its default, ``camera``; a
+  camera such a driver names is a depth camera, whatever its frame's name says.
 * The profile's ``sensors.frames`` rules tell a named link's kind by its name (``imu``,
   ``gps``, ``lidar``, ``camera``, ...); a link no rule matches (``base_link``, ``odom``) is
   no sensor.
@@ -102,6 +104,15 @@ _DEVICE_NAME = re.compile(
     re.IGNORECASE,
 )  # fmt: skip
 
+# A depth camera's driver that builds its frames from its name, launched or included in a
+# file (``pkg="realsense2_camera"``, ``$(find-pkg-share realsense2_camera)/launch/rs_launch.py``):
+# the camera it names there is a depth camera, and given no name it takes its default,
+# ``camera`` (``camera_link``).
+_DEPTH_DRIVER = re.compile(r"(?<![A-Za-z0-9_])(?:realsense2_camera|orbbec_camera)(?![A-Za-z0-9_])")
+_DEFAULT_CAMERA_NAME = "camera"
+# How a frame was named by a depth camera's driver (the start of its evidence).
+_BY_DEPTH_DRIVER = "depth camera driver"
+
 
 def named_frames(workspace: Workspace, urdf: Urdf, profile: Profile) -> dict[str, str]:
     """Each link of ``urdf`` a file of the robot's packages gives a driver as its frame id, or
@@ -115,13 +126,21 @@ def named_frames(workspace: Workspace, urdf: Urdf, profile: Profile) -> dict[str
                 link = _link(next(g for g in match.groups() if g is not None), urdf)
                 if link is not None and link not in found:
                     found[link] = f"frame id in {shown(shipped.path)}"
-        for match in _DEVICE_NAME.finditer(shipped.text):
-            name = next(g for g in match.groups() if g is not None).rsplit("/", 1)[-1]
+        names = [
+            next(g for g in match.groups() if g is not None).rsplit("/", 1)[-1]
+            for match in _DEVICE_NAME.finditer(shipped.text)
+        ]
+        how = "camera name"
+        if _DEPTH_DRIVER.search(shipped.text):
+            how = f"{_BY_DEPTH_DRIVER}'s name"
+            if not names:
+                names, how = [_DEFAULT_CAMERA_NAME], f"{_BY_DEPTH_DRIVER}, named by default,"
+        for name in names:
             if name not in cameras and len(cameras) < _MAX_CAMERA_NAMES:
                 cameras[name] = _device_frame(name, urdf, profile)
             link = cameras.get(name)
             if link is not None and link not in found:
-                found[link] = f"camera name in {shown(shipped.path)}"
+                found[link] = f"{how} in {shown(shipped.path)}"
     return found
 
 
@@ -224,6 +243,8 @@ def sensors_on_frames(
             rule, link, how = min(frames)
             rule = min((rule, *streams(device, rule)))
             kind = rules[rule].kind
+            if kind == "camera" and any(h.startswith(_BY_DEPTH_DRIVER) for _, _, h in frames):
+                kind = "depth_camera"  # a depth camera's driver publishes in it
             if kind in kinds_declared or device in bodies_declared:
                 continue
             found.append(Detection(kind, f"{shown(link)} ({how})", SOURCE, device))

@@ -167,11 +167,51 @@ def test_a_camera_driver_named_publishes_in_the_frames_it_builds_from_its_name()
     )
     urdf = parse_urdf(CAMERAS, "base.urdf")
     assert named_frames(bringup, urdf, PROFILE) == {
-        "camera_front": "camera name in bringup_py",
+        "camera_front": "depth camera driver's name in bringup_py",
         "camera_top_base_link": "camera name in top_launch",
     }
     # A depth stream's frame beneath the named one says the camera is an RGB-D camera.
     assert kinds(bringup, CAMERAS) == {"depth_camera": 2}
+
+
+# A car drawn for its TF tree: one camera_link, nothing beneath it.
+CAR = '<robot name="car"><link name="base_link"/>' + fixed("base_link", "camera_link") + "</robot>"
+
+
+def test_a_depth_camera_driver_given_no_name_publishes_in_its_default_camera_link() -> None:
+    bringup = shipping(
+        car_launch='<include file="$(find-pkg-share realsense2_camera)/launch/rs_launch.py">'
+        '<arg name="enable_gyro" value="true"/></include>'
+    )
+    assert named_frames(bringup, parse_urdf(CAR, "car.urdf"), PROFILE) == {
+        "camera_link": "depth camera driver, named by default, in car_launch"
+    }
+    # Its driver says what the frame's name does not: a depth camera.
+    assert kinds(bringup, CAR) == {"depth_camera": 1}
+
+
+def test_a_camera_another_driver_names_is_the_camera_its_frame_says() -> None:
+    usb = shipping(cam_launch='<node pkg="usb_cam"><param name="camera_name" value="camera"/>')
+    assert kinds(usb, CAR) == {"camera": 1}
+    assert kinds(shipping(cam_launch='<node pkg="usb_cam"/>'), CAR) == {}
+
+
+def test_an_infrared_range_frame_a_driver_publishes_in_is_an_ir_range_sensor() -> None:
+    base = (
+        '<robot name="base"><link name="base_link"/>'
+        + fixed("base_link", "ir_front_left_link")
+        + fixed("base_link", "ir_front_right_link")
+        + fixed("base_link", "camera_link")
+        + fixed("camera_link", "camera_ir_frame")
+        + "</robot>"
+    )
+    broadcasters = shipping(
+        controllers_yaml="left:\n  ros__parameters:\n    frame_id: ir_front_left_link\n"
+        "right:\n  ros__parameters:\n    frame_id: ir_front_right_link\n"
+        "depth:\n  ros__parameters:\n    frame_id: camera_ir_frame\n"
+    )
+    # The camera's infrared stream is the camera's.
+    assert kinds(broadcasters, base) == {"ir_range": 2, "camera": 1}
 
 
 def test_a_camera_name_is_its_link_or_name_link_before_any_link_it_begins() -> None:
