@@ -20,6 +20,12 @@ def fixed(parent: str, child: str) -> str:
     )
 
 
+def drawn(*frames: tuple[str, str]) -> str:
+    """A robot drawn as frames only: each (parent, child) a fixed joint, from ``base_link``."""
+    joints = "".join(fixed(parent, child) for parent, child in frames)
+    return f'<robot name="r"><link name="base_link"/>{joints}</robot>'
+
+
 # A rover drawn for its TF tree: an IMU, a GPS and an RGB-D camera's frames, and a lidar with
 # a simulated <sensor> of its own.
 ROVER = (
@@ -175,7 +181,7 @@ def test_a_camera_driver_named_publishes_in_the_frames_it_builds_from_its_name()
 
 
 # A car drawn for its TF tree: one camera_link, nothing beneath it.
-CAR = '<robot name="car"><link name="base_link"/>' + fixed("base_link", "camera_link") + "</robot>"
+CAR = drawn(("base_link", "camera_link"))
 
 
 def test_a_depth_camera_driver_given_no_name_publishes_in_its_default_camera_link() -> None:
@@ -197,13 +203,11 @@ def test_a_camera_another_driver_names_is_the_camera_its_frame_says() -> None:
 
 
 def test_an_infrared_range_frame_a_driver_publishes_in_is_an_ir_range_sensor() -> None:
-    base = (
-        '<robot name="base"><link name="base_link"/>'
-        + fixed("base_link", "ir_front_left_link")
-        + fixed("base_link", "ir_front_right_link")
-        + fixed("base_link", "camera_link")
-        + fixed("camera_link", "camera_ir_frame")
-        + "</robot>"
+    base = drawn(
+        ("base_link", "ir_front_left_link"),
+        ("base_link", "ir_front_right_link"),
+        ("base_link", "camera_link"),
+        ("camera_link", "camera_ir_frame"),
     )
     broadcasters = shipping(
         controllers_yaml="left:\n  ros__parameters:\n    frame_id: ir_front_left_link\n"
@@ -232,12 +236,10 @@ def test_a_camera_name_is_its_link_or_name_link_before_any_link_it_begins() -> N
 
 def test_an_imu_inside_a_camera_is_an_imu_beside_the_camera() -> None:
     """A D435i: its IMU frame hangs from the camera's body; both are devices."""
-    d435i = (
-        '<robot name="r"><link name="base_link"/>'
-        + fixed("base_link", "camera_link")
-        + fixed("camera_link", "camera_depth_optical_frame")
-        + fixed("camera_link", "camera_imu_optical_frame")
-        + "</robot>"
+    d435i = drawn(
+        ("base_link", "camera_link"),
+        ("camera_link", "camera_depth_optical_frame"),
+        ("camera_link", "camera_imu_optical_frame"),
     )
     driver = shipping(
         rs_launch='{"camera_name": "camera"}, {"imu_frame_id": "camera_imu_optical_frame"}'
