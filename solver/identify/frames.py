@@ -15,9 +15,11 @@ a driver that stamps its data with that frame (``frame_id: imu_link`` in its con
   transform up), the value naming the link whole or by its last ``/`` segment; or when it names
   a camera driver (``camera_name``) from which the driver builds its frames (realsense2_camera,
   orbbec_camera): the link of that name, else ``NAME_link``, else the first link whose name
-  begins ``NAME_`` and reads as a camera. A depth camera's driver (realsense2_camera,
-  orbbec_camera) launched in a file that names no camera names its default, ``camera``; a
-  camera such a driver names is a depth camera, whatever its frame's name says.
+  begins ``NAME_`` and reads as a camera. A file that launches a depth camera's driver
+  (a node of realsense2_camera or orbbec_camera, or their launch files) and names no camera
+  names the one its ROS 1 launch file's ``camera`` argument gives, else the driver's default,
+  ``camera``; the camera so named is a depth camera, whatever its frame's name says (a
+  ``camera_name`` in such a file may be another driver's, and says no kind).
 * The profile's ``sensors.frames`` rules tell a named link's kind by its name (``imu``,
   ``gps``, ``lidar``, ``camera``, ...); a link no rule matches (``base_link``, ``odom``) is
   no sensor.
@@ -105,43 +107,79 @@ _DEVICE_NAME = re.compile(
 )  # fmt: skip
 
 # A depth camera's driver that builds its frames from its name, launched or included in a
-# file (``pkg="realsense2_camera"``, ``$(find-pkg-share realsense2_camera)/launch/rs_launch.py``):
-# the camera it names there is a depth camera, and given no name it takes its default,
-# ``camera`` (``camera_link``).
-_DEPTH_DRIVER = re.compile(r"(?<![A-Za-z0-9_])(?:realsense2_camera|orbbec_camera)(?![A-Za-z0-9_])")
+# file: a node of its package (``pkg="realsense2_camera"``, ``package='orbbec_camera'``), its
+# package's launch file (``$(find-pkg-share realsense2_camera)/...``, ``$(find ...)``,
+# ``get_package_share_directory("...")``, ``FindPackageShare("...")``, ``ros2 launch ...``).
+# A mention elsewhere (a comment, a build script) launches nothing.
+_DEPTH_DRIVERS = r"(?:realsense2_camera|orbbec_camera)"
+_DEPTH_LAUNCH = re.compile(
+    r"""(?<![A-Za-z0-9_])(?:pkg|package)\s{0,3}=\s{0,3}["']""" + _DEPTH_DRIVERS + r"""["']"""
+    + r"|\$\(find(?:-pkg-share)?[ \t]{1,3}" + _DEPTH_DRIVERS + r"\)"
+    + r"""|(?:get_package_share_directory|FindPackageShare)\(\s{0,3}["']""" + _DEPTH_DRIVERS
+    + r"""["']|(?:ros2[ \t]+launch|roslaunch)[ \t]+""" + _DEPTH_DRIVERS + r"(?![A-Za-z0-9_])",
+)  # fmt: skip
+# The name a ROS 1 depth camera's launch file takes its camera's by (``rs_camera.launch``'s
+# ``<arg name="camera" value="d435"/>``), read only in a file that launches such a driver.
+_CAMERA_ARGUMENT = re.compile(
+    r"""name\s{0,3}=\s{0,3}["']camera["'][^<>]{0,120}?(?:value|default)\s{0,3}=\s{0,3}["']"""
+    + _VALUE,
+)  # fmt: skip
+# The name such a driver gives its camera when a file that launches it names none.
 _DEFAULT_CAMERA_NAME = "camera"
-# How a frame was named by a depth camera's driver (the start of its evidence).
-_BY_DEPTH_DRIVER = "depth camera driver"
 
 
 def named_frames(workspace: Workspace, urdf: Urdf, profile: Profile) -> dict[str, str]:
     """Each link of ``urdf`` a file of the robot's packages gives a driver as its frame id, or
     names as a camera driver's (:func:`_device_frame`), with how and where first (``frame id
-    in PATH``, ``camera name in PATH``; the path in the workspace)."""
+    in PATH``, ``camera name in PATH``, ``default camera name in PATH``; the path in the
+    workspace)."""
+    return _named(workspace, urdf, profile)[0]
+
+
+def _named(
+    workspace: Workspace, urdf: Urdf, profile: Profile
+) -> tuple[dict[str, str], frozenset[str]]:
+    """:func:`named_frames`, and the links a depth camera's driver publishes in: those a file
+    that launches one names by its ROS 1 ``camera`` argument, or by its default name when the
+    file names no camera (a ``camera_name`` there may be another driver's)."""
     found: dict[str, str] = {}
+    depth: set[str] = set()
     cameras: dict[str, str | None] = {}  # a camera name -> its link, each resolved once
+
+    def camera(name: str, how: str, path: str) -> str | None:
+        if name not in cameras and len(cameras) < _MAX_CAMERA_NAMES:
+            cameras[name] = _device_frame(name, urdf, profile)
+        link = cameras.get(name)
+        if link is not None and link not in found:
+            found[link] = f"{how} in {path}"
+        return link
+
     for shipped in workspace.files:
+        path = shown(shipped.path)
         for pattern in (_ASSIGNED, _PARAMETER):
             for match in pattern.finditer(shipped.text):
                 link = _link(next(g for g in match.groups() if g is not None), urdf)
                 if link is not None and link not in found:
-                    found[link] = f"frame id in {shown(shipped.path)}"
-        names = [
-            next(g for g in match.groups() if g is not None).rsplit("/", 1)[-1]
-            for match in _DEVICE_NAME.finditer(shipped.text)
-        ]
-        how = "camera name"
-        if _DEPTH_DRIVER.search(shipped.text):
-            how = f"{_BY_DEPTH_DRIVER}'s name"
-            if not names:
-                names, how = [_DEFAULT_CAMERA_NAME], f"{_BY_DEPTH_DRIVER}, named by default,"
-        for name in names:
-            if name not in cameras and len(cameras) < _MAX_CAMERA_NAMES:
-                cameras[name] = _device_frame(name, urdf, profile)
-            link = cameras.get(name)
-            if link is not None and link not in found:
-                found[link] = f"{how} in {shown(shipped.path)}"
-    return found
+                    found[link] = f"frame id in {path}"
+        named = False
+        for match in _DEVICE_NAME.finditer(shipped.text):
+            named = True
+            camera(_last(match), "camera name", path)
+        if named or not _DEPTH_LAUNCH.search(shipped.text):
+            continue
+        given = [_last(match) for match in _CAMERA_ARGUMENT.finditer(shipped.text)]
+        for name, how in [(name, "camera name") for name in given] or [
+            (_DEFAULT_CAMERA_NAME, "default camera name")
+        ]:
+            link = camera(name, how, path)
+            if link is not None:
+                depth.add(link)
+    return found, frozenset(depth)
+
+
+def _last(match: re.Match[str]) -> str:
+    """The name a match gives: its value's last ``/`` segment (a namespace the launch adds)."""
+    return next(g for g in match.groups() if g is not None).rsplit("/", 1)[-1]
 
 
 def _link(value: str, urdf: Urdf) -> str | None:
@@ -222,7 +260,8 @@ def sensors_on_frames(
 
     bodies_declared = {body_of(d.link) for d in declared if d.link is not None}
     devices: dict[str, list[tuple[int, str, str]]] = {}  # body -> (rule, frame, how)
-    for link, how in named_frames(workspace, urdf, profile).items():
+    frame_ids, depth = _named(workspace, urdf, profile)
+    for link, how in frame_ids.items():
         rule = kind_of(link)
         if rule is not None:
             devices.setdefault(body(link, rule), []).append((rule, link, how))
@@ -243,7 +282,7 @@ def sensors_on_frames(
             rule, link, how = min(frames)
             rule = min((rule, *streams(device, rule)))
             kind = rules[rule].kind
-            if kind == "camera" and any(h.startswith(_BY_DEPTH_DRIVER) for _, _, h in frames):
+            if kind == "camera" and any(frame in depth for _, frame, _ in frames):
                 kind = "depth_camera"  # a depth camera's driver publishes in it
             if kind in kinds_declared or device in bodies_declared:
                 continue

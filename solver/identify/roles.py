@@ -11,7 +11,9 @@ of strength, and the first that speaks decides:
    hull whose link a force plugin pushes (``gazebo_ros_force``'s ``<link_name>``) is a
    thruster. Which plugin is which is the profile's ``plugins`` patterns; a plugin that gives
    a wheel spacing and a wheel size (``<wheelSeparation>``, ``<wheelDiameter>``) is a drive
-   plugin whatever it is called (a robot's own drive plugin).
+   plugin whatever it is called (a robot's own drive plugin), and the joints it names by a
+   side or as wheels (``<leftJoint>``, ``<wheel_joint>``) are its wheels; its other joints
+   (an arm's, a head's) it drives otherwise.
 2. The joint's place and shape: a vertical swivel that carries a wheel and nothing else is a
    caster (the wheel below it is the caster's); a propeller on a body in water is a thruster;
    a propeller on a ``floating`` joint with nothing below (a visual part a simulator poses) is
@@ -60,6 +62,11 @@ POSED = ", a part a simulator poses (floating joint)"
 # ``-``): the wheels' spacing, and their size.
 _WHEEL_SPACING = frozenset({"wheelseparation", "wheeltrack", "wheeldistance"})
 _WHEEL_SIZE = frozenset({"wheeldiameter", "wheelradius"})
+
+
+# The parameters of such a plugin that name its wheels (``<leftJoint>``, ``<wheel_joint>``); a
+# robot's own plugin may name other joints too (an arm's, a head's), which it drives otherwise.
+_WHEEL_TAG = re.compile(r"left|right|wheel|front|rear|back|steer", re.IGNORECASE)
 
 
 def _wheel_geometry(plugin: PluginTag) -> bool:
@@ -194,10 +201,16 @@ class RoleReader:
         joints = {j.name for j in self.urdf.joints if j.movable}
         by_link = {j.child: j.name for j in self.urdf.joints if j.movable}
         found: dict[str, Role] = {}
+        drive = self.profile.plugin_pattern("drive")
         for part, role in _PLUGIN_ROLES:
             for plugin in self.plugins_of(part):
                 label = self.plugin_label(plugin)
+                # A drive plugin known by its wheel geometry alone names its wheels by side.
+                said = plugin.filename.strip() or plugin.name
+                by_geometry = part == "drive" and not (drive and drive.search(said))
                 for tag, text in plugin.params:
+                    if by_geometry and not _WHEEL_TAG.search(tag):
+                        continue
                     # A thruster plugin may list its thrusters by link (a hull's thruster list).
                     joint = (
                         text

@@ -173,7 +173,7 @@ def test_a_camera_driver_named_publishes_in_the_frames_it_builds_from_its_name()
     )
     urdf = parse_urdf(CAMERAS, "base.urdf")
     assert named_frames(bringup, urdf, PROFILE) == {
-        "camera_front": "depth camera driver's name in bringup_py",
+        "camera_front": "camera name in bringup_py",
         "camera_top_base_link": "camera name in top_launch",
     }
     # A depth stream's frame beneath the named one says the camera is an RGB-D camera.
@@ -190,16 +190,52 @@ def test_a_depth_camera_driver_given_no_name_publishes_in_its_default_camera_lin
         '<arg name="enable_gyro" value="true"/></include>'
     )
     assert named_frames(bringup, parse_urdf(CAR, "car.urdf"), PROFILE) == {
-        "camera_link": "depth camera driver, named by default, in car_launch"
+        "camera_link": "default camera name in car_launch"
     }
     # Its driver says what the frame's name does not: a depth camera.
     assert kinds(bringup, CAR) == {"depth_camera": 1}
+
+
+def test_the_depth_camera_is_told_whichever_file_names_its_frame_first() -> None:
+    both = shipping(
+        a_yaml="frame_id: camera_link\n",
+        b_py='Node(package="orbbec_camera", parameters=[{"enable_depth": True}])',
+    )
+    assert kinds(both, CAR) == {"depth_camera": 1}
+
+
+def test_a_ros1_depth_camera_is_named_by_its_launch_files_camera_argument() -> None:
+    front = drawn(("base_link", "camera_link"), ("base_link", "d435_link"))
+    include = shipping(
+        rs_launch='<include file="$(find realsense2_camera)/launch/rs_camera.launch">'
+        '<arg name="camera" value="d435"/></include>'
+    )
+    # The RealSense is d435_link; camera_link is another camera nothing here names.
+    assert kinds(include, front) == {"depth_camera": 1}
+    assert named_frames(include, parse_urdf(front, "r.urdf"), PROFILE) == {
+        "d435_link": "camera name in rs_launch"
+    }
+
+
+def test_a_depth_camera_driver_mentioned_but_not_launched_names_no_camera() -> None:
+    for text in (
+        "# realsense2_camera parameters, unused on this robot\n",
+        "colcon build --packages-skip realsense2_camera\n",
+    ):
+        assert kinds(shipping(notes_yaml=text), CAR) == {}
 
 
 def test_a_camera_another_driver_names_is_the_camera_its_frame_says() -> None:
     usb = shipping(cam_launch='<node pkg="usb_cam"><param name="camera_name" value="camera"/>')
     assert kinds(usb, CAR) == {"camera": 1}
     assert kinds(shipping(cam_launch='<node pkg="usb_cam"/>'), CAR) == {}
+    # Beside a depth camera's driver in one file, a name given is no sign of which driver
+    # takes it: the camera is the one its frame says.
+    beside = shipping(
+        cams_launch='<include file="$(find realsense2_camera)/launch/rs_camera.launch"/>'
+        '<node pkg="usb_cam"><param name="camera_name" value="camera"/></node>'
+    )
+    assert kinds(beside, CAR) == {"camera": 1}
 
 
 def test_an_infrared_range_frame_a_driver_publishes_in_is_an_ir_range_sensor() -> None:
@@ -216,6 +252,12 @@ def test_an_infrared_range_frame_a_driver_publishes_in_is_an_ir_range_sensor() -
     )
     # The camera's infrared stream is the camera's.
     assert kinds(broadcasters, base) == {"ir_range": 2, "camera": 1}
+
+
+def test_a_frame_whose_name_holds_ir_inside_a_word_is_no_ir_range_sensor() -> None:
+    base = drawn(("base_link", "air_speed_link"), ("base_link", "flir_link"))
+    named = shipping(drivers_yaml="frame_id: air_speed_link\nframe_id: flir_link\n")
+    assert "ir_range" not in kinds(named, base)
 
 
 def test_a_camera_name_is_its_link_or_name_link_before_any_link_it_begins() -> None:

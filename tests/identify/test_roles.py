@@ -333,17 +333,49 @@ def ball_robot(params: str) -> RobotText:
     return ball
 
 
-def test_a_plugin_of_its_own_that_gives_wheel_spacing_and_size_drives_the_body() -> None:
+@pytest.mark.parametrize(
+    ("spacing", "size"),
+    [
+        ("wheelSeparation", "wheel_diameter"),
+        ("wheel_track", "wheelRadius"),
+        ("wheelDistance", "wheel-radius"),
+    ],
+)
+def test_a_plugin_of_its_own_that_gives_wheel_spacing_and_size_drives_the_body(
+    spacing: str, size: str
+) -> None:
     result = identify_urdf(
         ball_robot(
             "<leftJoint>roll</leftJoint><rightJoint>spin</rightJoint>"
-            "<wheelSeparation>0.5</wheelSeparation><wheel_diameter>0.2</wheel_diameter>"
+            f"<{spacing}>0.5</{spacing}><{size}>0.2</{size}>"
         ).text()
     )
     assert result.structure == "UGV"
     assert {r.joint: r.evidence for r in result.roles}["roll"] == (
         "<leftJoint> of drive plugin libball_controller.so"
     )
+
+
+def test_the_joints_such_a_plugin_names_not_as_wheels_keep_their_own_roles() -> None:
+    """A robot's own plugin drives its base and names its arm's joints too: the arm stays."""
+    robot = RobotText("mybot")
+    for side, y in (("left", 0.2), ("right", -0.2)):
+        builders.placed(
+            robot, f"{side}_joint", "continuous", robot.root, side, xyz=f"0 {y} 0", axis="0 1 0"
+        )
+    robot.chain(robot.root, ["j1", "j2", "j3", "j4", "j5", "j6"])
+    robot.add(
+        builders.model_plugin(
+            "ctl",
+            "libmybot_gazebo.so",
+            "<leftJoint>left_joint</leftJoint><rightJoint>right_joint</rightJoint>"
+            "<wheelSeparation>0.4</wheelSeparation><wheelDiameter>0.1</wheelDiameter>"
+            + "".join(f"<joint{i}>j{i}</joint{i}>" for i in range(1, 7)),
+        )
+    )
+    result = identify_urdf(robot.text())
+    assert result.structure == "Mobile Manipulator"
+    assert {r.role for r in result.roles if r.joint.startswith("j")} == {"arm"}
 
 
 def test_a_plugin_that_gives_a_wheel_size_alone_drives_nothing() -> None:
