@@ -274,6 +274,7 @@ def test_a_magnetic_plugin_is_a_magnetometer_but_a_magnetic_wheel_is_none() -> N
     robot.add(builders.model_plugin("grip", "libmagnetic_wheel_gazebo_plugin.so"))
     robot.add(builders.model_plugin("hold", "libmagnet_gripper_plugin.so"))
     robot.add(builders.model_plugin("coil", "libelectromagnetic.so"))
+    robot.add(builders.model_plugin("magnetic_hand", "libmagnetic.so"))  # holds a grasp
     assert _kinds(robot.text()) == {"magnetometer": 4}
 
 
