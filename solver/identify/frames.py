@@ -147,6 +147,7 @@ def _named(
     cameras: dict[str, str | None] = {}  # a camera name -> its link, each resolved once
 
     def camera(name: str, how: str, path: str) -> str | None:
+        """The link a camera driver named ``name`` publishes in (resolved once), noted."""
         if name not in cameras and len(cameras) < _MAX_CAMERA_NAMES:
             cameras[name] = _device_frame(name, urdf, profile)
         link = cameras.get(name)

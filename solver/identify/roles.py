@@ -69,6 +69,13 @@ _WHEEL_SIZE = frozenset({"wheeldiameter", "wheelradius"})
 _WHEEL_TAG = re.compile(r"left|right|wheel|front|rear|back|steer", re.IGNORECASE)
 
 
+def _said(plugin: PluginTag) -> str:
+    """What a plugin says it is: its file, which is what runs; else its name, a label its author
+    chose (often copied from the plugin above it: a frame publisher named ``simple_buoyancy``),
+    which speaks only for a plugin that gives no file."""
+    return plugin.filename.strip() or plugin.name
+
+
 def _wheel_geometry(plugin: PluginTag) -> bool:
     """Whether ``plugin`` sets both a wheel spacing and a wheel size."""
     tags = {re.sub(r"[_-]", "", tag).lower() for tag, _ in plugin.params}
@@ -169,10 +176,7 @@ class RoleReader:
 
     def _plugin_parts(self, plugin: PluginTag) -> frozenset[str]:
         found = set()
-        # The file is what runs; a name is a label its author chose (often copied from the
-        # plugin above it: a frame publisher named ``simple_buoyancy``). The name speaks only
-        # for a plugin that gives no file.
-        said = plugin.filename.strip() or plugin.name
+        said = _said(plugin)
         for part, pattern in self.profile.plugins:
             if pattern.search(said):
                 found.add(part)
@@ -206,8 +210,7 @@ class RoleReader:
             for plugin in self.plugins_of(part):
                 label = self.plugin_label(plugin)
                 # A drive plugin known by its wheel geometry alone names its wheels by side.
-                said = plugin.filename.strip() or plugin.name
-                by_geometry = part == "drive" and not (drive and drive.search(said))
+                by_geometry = part == "drive" and not (drive and drive.search(_said(plugin)))
                 for tag, text in plugin.params:
                     if by_geometry and not _WHEEL_TAG.search(tag):
                         continue
