@@ -16,10 +16,12 @@ a driver that stamps its data with that frame (``frame_id: imu_link`` in its con
   a camera driver (``camera_name``) from which the driver builds its frames (realsense2_camera,
   orbbec_camera): the link of that name, else ``NAME_link``, else the first link whose name
   begins ``NAME_`` and reads as a camera. A file that launches a depth camera's driver
-  (a node of realsense2_camera or orbbec_camera, or their launch files) and names no camera
-  names the one its ROS 1 launch file's ``camera`` argument gives, else the driver's default,
-  ``camera``; the camera so named is a depth camera, whatever its frame's name says (a
-  ``camera_name`` in such a file may be another driver's, and says no kind).
+  (a node of realsense2_camera, orbbec_camera or depthai_ros_driver, or their launch files)
+  and names no camera names the link it gives the driver as its ``parent_frame`` (depthai's
+  mount), the one its ROS 1 launch file's ``camera`` argument gives, else the driver's default
+  name (``camera``, depthai's ``oak``); the camera so named is a depth camera, whatever its
+  frame's name says (a ``camera_name`` in such a file may be another driver's, and says no
+  kind).
 * The profile's ``sensors.frames`` rules tell a named link's kind by its name (``imu``,
   ``gps``, ``lidar``, ``camera``, ...); a link no rule matches (``base_link``, ``odom``) is
   no sensor.
@@ -81,8 +83,9 @@ _KEY_WORD = (
     r"range)_)?frame(?:_?id|_?name)?"
 )
 _KEY = r"(?<![A-Za-z0-9_])" + _KEY_WORD
-# A value: a link's name, after an optional `$(arg ns)/` or `/`, up to 200 characters.
-_VALUE = r"(?:\$\([^()\n]{0,80}\))?/?([A-Za-z_][A-Za-z0-9_/.-]{0,199})"
+# A value: a link's name (which may begin with a digit: `3d_camera_link`), after an optional
+# `$(arg ns)/` or `/`, up to 200 characters.
+_VALUE = r"(?:\$\([^()\n]{0,80}\))?/?([A-Za-z0-9_][A-Za-z0-9_/.-]{0,199})"
 # `frame_id: x`, `frame_id:=x`, `"frame_id": "x"`, `frame_id="x"`, `header.frame_id = 'x'`,
 # `declare_parameter("frame_id", "x")` (a quoted key and a comma).
 _ASSIGNED = re.compile(
@@ -110,13 +113,19 @@ _DEVICE_NAME = re.compile(
 # file: a node of its package (``pkg="realsense2_camera"``, ``package='orbbec_camera'``), its
 # package's launch file (``$(find-pkg-share realsense2_camera)/...``, ``$(find ...)``,
 # ``get_package_share_directory("...")``, ``FindPackageShare("...")``, ``ros2 launch ...``).
-# A mention elsewhere (a comment, a build script) launches nothing.
-_DEPTH_DRIVERS = r"(?:realsense2_camera|orbbec_camera)"
+# A mention elsewhere (a comment, a build script) launches nothing. Each driver's default
+# name for its camera, taken when the file names none.
+_DEPTH_DRIVERS = {
+    "realsense2_camera": "camera",
+    "orbbec_camera": "camera",
+    "depthai_ros_driver": "oak",
+}
+_DRIVER = "(" + "|".join(_DEPTH_DRIVERS) + ")"
 _DEPTH_LAUNCH = re.compile(
-    r"""(?<![A-Za-z0-9_])(?:pkg|package)\s{0,3}=\s{0,3}["']""" + _DEPTH_DRIVERS + r"""["']"""
-    + r"|\$\(find(?:-pkg-share)?[ \t]{1,3}" + _DEPTH_DRIVERS + r"\)"
-    + r"""|(?:get_package_share_directory|FindPackageShare)\(\s{0,3}["']""" + _DEPTH_DRIVERS
-    + r"""["']|(?:ros2[ \t]+launch|roslaunch)[ \t]+""" + _DEPTH_DRIVERS + r"(?![A-Za-z0-9_])",
+    r"""(?<![A-Za-z0-9_])(?:pkg|package)\s{0,3}=\s{0,3}["']""" + _DRIVER + r"""["']"""
+    + r"|\$\(find(?:-pkg-share)?[ \t]{1,3}" + _DRIVER + r"\)"
+    + r"""|(?:get_package_share_directory|FindPackageShare)\(\s{0,3}["']""" + _DRIVER
+    + r"""["']|(?:ros2[ \t]+launch|roslaunch)[ \t]+""" + _DRIVER + r"(?![A-Za-z0-9_])",
 )  # fmt: skip
 # The name a ROS 1 depth camera's launch file takes its camera's by (``rs_camera.launch``'s
 # ``<arg name="camera" value="d435"/>``), read only in a file that launches such a driver.
@@ -124,8 +133,13 @@ _CAMERA_ARGUMENT = re.compile(
     r"""name\s{0,3}=\s{0,3}["']camera["'][^<>]{0,120}?(?:value|default)\s{0,3}=\s{0,3}["']"""
     + _VALUE,
 )  # fmt: skip
-# The name such a driver gives its camera when a file that launches it names none.
-_DEFAULT_CAMERA_NAME = "camera"
+# The link a depth camera's driver hangs its frames from (depthai's ``"parent_frame":
+# "oak_mount"``), read only in a file that launches such a driver.
+_PARENT_FRAME = re.compile(
+    r"""(?<![A-Za-z0-9_])parent_frame["']?[ \t]{0,3}(?::=|:|=)[ \t]{0,8}["']?""" + _VALUE
+    + r"""|name\s{0,3}=\s{0,3}["']parent_frame["'][^<>]{0,120}?(?:value|default)\s{0,3}="""
+    + r"""\s{0,3}["']""" + _VALUE,
+)  # fmt: skip
 
 
 def named_frames(workspace: Workspace, urdf: Urdf, profile: Profile) -> dict[str, str]:
@@ -140,8 +154,9 @@ def _named(
     workspace: Workspace, urdf: Urdf, profile: Profile
 ) -> tuple[dict[str, str], frozenset[str]]:
     """:func:`named_frames`, and the links a depth camera's driver publishes in: those a file
-    that launches one names by its ROS 1 ``camera`` argument, or by its default name when the
-    file names no camera (a ``camera_name`` there may be another driver's)."""
+    that launches one and names no camera (a ``camera_name`` there may be another driver's)
+    gives it as its ``parent_frame``, names by its ROS 1 ``camera`` argument, or else by the
+    driver's default name."""
     found: dict[str, str] = {}
     depth: set[str] = set()
     cameras: dict[str, str | None] = {}  # a camera name -> its link, each resolved once
@@ -166,11 +181,20 @@ def _named(
         for match in _DEVICE_NAME.finditer(shipped.text):
             named = True
             camera(_last(match), "camera name", path)
-        if named or not _DEPTH_LAUNCH.search(shipped.text):
+        drivers = {
+            match[1] or match[2] or match[3] or match[4]
+            for match in _DEPTH_LAUNCH.finditer(shipped.text)
+        }
+        if named or not drivers:
             continue
+        for match in _PARENT_FRAME.finditer(shipped.text):
+            link = _link(next(g for g in match.groups() if g is not None), urdf)
+            if link is not None:
+                found.setdefault(link, f"parent frame in {path}")
+                depth.add(link)
         given = [_last(match) for match in _CAMERA_ARGUMENT.finditer(shipped.text)]
         for name, how in [(name, "camera name") for name in given] or [
-            (_DEFAULT_CAMERA_NAME, "default camera name")
+            (_DEPTH_DRIVERS[driver], "default camera name") for driver in sorted(drivers)
         ]:
             link = camera(name, how, path)
             if link is not None:

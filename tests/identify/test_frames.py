@@ -217,6 +217,20 @@ def test_a_ros1_depth_camera_is_named_by_its_launch_files_camera_argument() -> N
     }
 
 
+def test_a_depthai_camera_hangs_from_the_parent_frame_it_is_given_else_its_default_oak() -> None:
+    mounted = drawn(("base_link", "3d_camera_link"))
+    oak = shipping(
+        oak_launch_py='share = get_package_share_directory("depthai_ros_driver")\n'
+        'launch_arguments={"name": name, "parent_frame": "3d_camera_link"}'
+    )
+    assert named_frames(oak, parse_urdf(mounted, "r.urdf"), PROFILE) == {
+        "3d_camera_link": "parent frame in oak_launch_py"
+    }
+    assert kinds(oak, mounted) == {"depth_camera": 1}
+    unnamed = shipping(oak_launch='<node pkg="depthai_ros_driver" exec="camera_node"/>')
+    assert kinds(unnamed, drawn(("base_link", "oak"))) == {"depth_camera": 1}
+
+
 def test_a_depth_camera_driver_mentioned_but_not_launched_names_no_camera() -> None:
     for text in (
         "# realsense2_camera parameters, unused on this robot\n",
