@@ -3,6 +3,8 @@ publishes in."""
 
 from __future__ import annotations
 
+import pytest
+
 from solver.identify import load_profile
 from solver.identify.frames import named_frames, sensors_on_frames
 from solver.identify.identification import identify_urdf
@@ -184,16 +186,53 @@ def test_a_camera_driver_named_publishes_in_the_frames_it_builds_from_its_name()
 CAR = drawn(("base_link", "camera_link"))
 
 
-def test_a_depth_camera_driver_given_no_name_publishes_in_its_default_camera_link() -> None:
-    bringup = shipping(
-        car_launch='<include file="$(find-pkg-share realsense2_camera)/launch/rs_launch.py">'
-        '<arg name="enable_gyro" value="true"/></include>'
+def frames_and_kinds(packages: Workspace, text: str) -> tuple[dict[str, str], dict[str, int]]:
+    """The frames ``packages`` name in the robot ``text``, and the sensors read from them."""
+    return named_frames(packages, parse_urdf(text, "r.urdf"), PROFILE), kinds(packages, text)
+
+
+# A depth camera's driver launched in a file, the robot drawn, and the frame it names there (how).
+DEPTH_DRIVERS = [
+    pytest.param(
+        '<include file="$(find-pkg-share realsense2_camera)/launch/rs_launch.py">'
+        '<arg name="enable_gyro" value="true"/></include>',
+        CAR,
+        ("camera_link", "default camera name in launch"),
+        id="given-no-name-its-default-camera",
+    ),
+    pytest.param(
+        # The RealSense is d435_link; camera_link is another camera nothing here names.
+        '<include file="$(find realsense2_camera)/launch/rs_camera.launch">'
+        '<arg name="camera" value="d435"/></include>',
+        drawn(("base_link", "camera_link"), ("base_link", "d435_link")),
+        ("d435_link", "camera name in launch"),
+        id="ros1-camera-argument",
+    ),
+    pytest.param(
+        'share = get_package_share_directory("depthai_ros_driver")\n'
+        'launch_arguments={"name": name, "parent_frame": "3d_camera_link"}',
+        drawn(("base_link", "3d_camera_link")),
+        ("3d_camera_link", "parent frame in launch"),
+        id="depthai-parent-frame",
+    ),
+    pytest.param(
+        '<node pkg="depthai_ros_driver" exec="camera_node"/>',
+        drawn(("base_link", "oak")),
+        ("oak", "default camera name in launch"),
+        id="depthai-default-oak",
+    ),
+]
+
+
+@pytest.mark.parametrize(("launch", "robot", "named"), DEPTH_DRIVERS)
+def test_a_depth_camera_driver_launched_names_a_depth_camera(
+    launch: str, robot: str, named: tuple[str, str]
+) -> None:
+    # Its driver says what the frame's name may not: a depth camera.
+    assert frames_and_kinds(shipping(launch=launch), robot) == (
+        dict([named]),
+        {"depth_camera": 1},
     )
-    assert named_frames(bringup, parse_urdf(CAR, "car.urdf"), PROFILE) == {
-        "camera_link": "default camera name in car_launch"
-    }
-    # Its driver says what the frame's name does not: a depth camera.
-    assert kinds(bringup, CAR) == {"depth_camera": 1}
 
 
 def test_the_depth_camera_is_told_whichever_file_names_its_frame_first() -> None:
@@ -202,33 +241,6 @@ def test_the_depth_camera_is_told_whichever_file_names_its_frame_first() -> None
         b_py='Node(package="orbbec_camera", parameters=[{"enable_depth": True}])',
     )
     assert kinds(both, CAR) == {"depth_camera": 1}
-
-
-def test_a_ros1_depth_camera_is_named_by_its_launch_files_camera_argument() -> None:
-    front = drawn(("base_link", "camera_link"), ("base_link", "d435_link"))
-    include = shipping(
-        rs_launch='<include file="$(find realsense2_camera)/launch/rs_camera.launch">'
-        '<arg name="camera" value="d435"/></include>'
-    )
-    # The RealSense is d435_link; camera_link is another camera nothing here names.
-    assert kinds(include, front) == {"depth_camera": 1}
-    assert named_frames(include, parse_urdf(front, "r.urdf"), PROFILE) == {
-        "d435_link": "camera name in rs_launch"
-    }
-
-
-def test_a_depthai_camera_hangs_from_the_parent_frame_it_is_given_else_its_default_oak() -> None:
-    mounted = drawn(("base_link", "3d_camera_link"))
-    oak = shipping(
-        oak_launch_py='share = get_package_share_directory("depthai_ros_driver")\n'
-        'launch_arguments={"name": name, "parent_frame": "3d_camera_link"}'
-    )
-    assert named_frames(oak, parse_urdf(mounted, "r.urdf"), PROFILE) == {
-        "3d_camera_link": "parent frame in oak_launch_py"
-    }
-    assert kinds(oak, mounted) == {"depth_camera": 1}
-    unnamed = shipping(oak_launch='<node pkg="depthai_ros_driver" exec="camera_node"/>')
-    assert kinds(unnamed, drawn(("base_link", "oak"))) == {"depth_camera": 1}
 
 
 def test_a_depth_camera_driver_mentioned_but_not_launched_names_no_camera() -> None:
