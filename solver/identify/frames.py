@@ -157,54 +157,76 @@ def _named(
     that launches one and names no camera (a ``camera_name`` there may be another driver's)
     gives it as its ``parent_frame``, names by its ROS 1 ``camera`` argument, or else by the
     driver's default name."""
-    found: dict[str, str] = {}
-    depth: set[str] = set()
-    cameras: dict[str, str | None] = {}  # a camera name -> its link, each resolved once
-
-    def camera(name: str, how: str, path: str) -> str | None:
-        """The link a camera driver named ``name`` publishes in (resolved once), noted."""
-        if name not in cameras and len(cameras) < _MAX_CAMERA_NAMES:
-            cameras[name] = _device_frame(name, urdf, profile)
-        link = cameras.get(name)
-        if link is not None and link not in found:
-            found[link] = f"{how} in {path}"
-        return link
-
+    naming = _Naming(urdf, profile)
     for shipped in workspace.files:
-        path = shown(shipped.path)
+        naming.read(shipped.text, shown(shipped.path))
+    return naming.found, frozenset(naming.depth)
+
+
+class _Naming:
+    """The frames the files read so far name, each with how and where first; the depth
+    cameras among them; the camera names resolved to links (each once, at most
+    :data:`_MAX_CAMERA_NAMES`)."""
+
+    def __init__(self, urdf: Urdf, profile: Profile) -> None:
+        self.urdf = urdf
+        self.profile = profile
+        self.found: dict[str, str] = {}
+        self.depth: set[str] = set()
+        self.cameras: dict[str, str | None] = {}
+
+    def read(self, text: str, path: str) -> None:
+        """What one file names: frame ids, camera names, and a depth camera's driver's."""
         for pattern in (_ASSIGNED, _PARAMETER):
-            for match in pattern.finditer(shipped.text):
-                link = _link(next(g for g in match.groups() if g is not None), urdf)
-                if link is not None and link not in found:
-                    found[link] = f"frame id in {path}"
+            for match in pattern.finditer(text):
+                self.note(_link(_value(match), self.urdf), f"frame id in {path}")
         named = False
-        for match in _DEVICE_NAME.finditer(shipped.text):
+        for match in _DEVICE_NAME.finditer(text):
             named = True
-            camera(_last(match), "camera name", path)
-        drivers = {
-            match[1] or match[2] or match[3] or match[4]
-            for match in _DEPTH_LAUNCH.finditer(shipped.text)
-        }
-        if named or not drivers:
-            continue
-        for match in _PARENT_FRAME.finditer(shipped.text):
-            link = _link(next(g for g in match.groups() if g is not None), urdf)
+            self.camera(_last(match), f"camera name in {path}")
+        if not named:
+            self.depth_cameras(text, path)
+
+    def depth_cameras(self, text: str, path: str) -> None:
+        """The depth cameras a file that launches their driver names (and names no camera):
+        its ``parent_frame``, its ROS 1 ``camera`` argument, else each driver's default."""
+        drivers = {m[1] or m[2] or m[3] or m[4] for m in _DEPTH_LAUNCH.finditer(text)}
+        if not drivers:
+            return
+        for match in _PARENT_FRAME.finditer(text):
+            link = _link(_value(match), self.urdf)
+            self.note(link, f"parent frame in {path}")
             if link is not None:
-                found.setdefault(link, f"parent frame in {path}")
-                depth.add(link)
-        given = [_last(match) for match in _CAMERA_ARGUMENT.finditer(shipped.text)]
+                self.depth.add(link)
+        given = [_last(match) for match in _CAMERA_ARGUMENT.finditer(text)]
         for name, how in [(name, "camera name") for name in given] or [
             (_DEPTH_DRIVERS[driver], "default camera name") for driver in sorted(drivers)
         ]:
-            link = camera(name, how, path)
+            link = self.camera(name, f"{how} in {path}")
             if link is not None:
-                depth.add(link)
-    return found, frozenset(depth)
+                self.depth.add(link)
+
+    def camera(self, name: str, how: str) -> str | None:
+        """The link a camera driver named ``name`` publishes in (resolved once), noted."""
+        if name not in self.cameras and len(self.cameras) < _MAX_CAMERA_NAMES:
+            self.cameras[name] = _device_frame(name, self.urdf, self.profile)
+        link = self.cameras.get(name)
+        self.note(link, how)
+        return link
+
+    def note(self, link: str | None, how: str) -> None:
+        if link is not None and link not in self.found:
+            self.found[link] = how
+
+
+def _value(match: re.Match[str]) -> str:
+    """The value a match gives (the group of the form that matched)."""
+    return next(g for g in match.groups() if g is not None)
 
 
 def _last(match: re.Match[str]) -> str:
     """The name a match gives: its value's last ``/`` segment (a namespace the launch adds)."""
-    return next(g for g in match.groups() if g is not None).rsplit("/", 1)[-1]
+    return _value(match).rsplit("/", 1)[-1]
 
 
 def _link(value: str, urdf: Urdf) -> str | None:
