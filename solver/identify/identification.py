@@ -32,7 +32,7 @@ from __future__ import annotations
 
 import hashlib
 from collections import OrderedDict
-from collections.abc import Mapping, Sequence
+from collections.abc import Collection, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -52,7 +52,7 @@ from solver.identify.interfaces import (
 )
 from solver.identify.joints import command_joints
 from solver.identify.motion import controls_from_description
-from solver.identify.profile import Profile, load_profile
+from solver.identify.profile import Profile, SoftwareRule, load_profile
 from solver.identify.readers.safexml import read_bytes
 from solver.identify.readers.urdf import Urdf, parse_urdf
 from solver.identify.roles import Role
@@ -210,8 +210,8 @@ def identify_urdf(
             srdf_source=Path(srdf_file).name,
             guess_navigation=packages is None or not packages.complete,
             named=_named(packages, body),
-            leg_controllers=_leg_controllers(packages, body, profile),
-            rotor_controllers=_rotor_controllers(packages, body, profile),
+            leg_controllers=_joint_controllers(packages, profile.gait, _legs(body)),
+            rotor_controllers=_joint_controllers(packages, profile.flight, body.rotors),
         ),
         shipped,
     ]
@@ -255,22 +255,18 @@ def identify_urdf(
     )
 
 
-def _leg_controllers(packages: Workspace | None, body: Body, profile: Profile) -> str | None:
-    """The file of the robot's packages that configures its legs' joint controllers, when they
-    ship no gait (:func:`~solver.identify.shipped.joint_controllers`); else None."""
-    if packages is None:
-        return None
-    legs = [j for limb in body.limbs if limb.kind == "leg" for j in limb.joints]
-    return joint_controllers(packages, profile.gait, legs)
+def _joint_controllers(
+    packages: Workspace | None, rule: SoftwareRule | None, joints: Collection[str]
+) -> str | None:
+    """The file of the robot's packages that configures the ``joints``' controllers (its legs',
+    its rotors'), when they ship none of the body's own software (``rule``: a gait, flight
+    software; :func:`~solver.identify.shipped.joint_controllers`); else None."""
+    return None if packages is None else joint_controllers(packages, rule, joints)
 
 
-def _rotor_controllers(packages: Workspace | None, body: Body, profile: Profile) -> str | None:
-    """The file of the robot's packages that configures its rotors' joint controllers, when
-    they ship no flight software (:func:`~solver.identify.shipped.joint_controllers`); else
-    None."""
-    if packages is None:
-        return None
-    return joint_controllers(packages, profile.flight, body.rotors)
+def _legs(body: Body) -> list[str]:
+    """The joints of the body's legs."""
+    return [j for limb in body.limbs if limb.kind == "leg" for j in limb.joints]
 
 
 def _named(packages: Workspace | None, body: Body) -> frozenset[str] | None:
