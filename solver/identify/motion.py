@@ -152,13 +152,13 @@ def _undrawn_vessel(body: Body) -> bool:
 def _flight(body: Body, urdf_source: str, rotor_controllers: str | None = None) -> _Shown:
     """A flown body is flown; when the robot's packages configure its rotors' joint
     controllers and ship no flight software (``rotor_controllers``, the file that shows it),
-    its rotors are commanded one by one too."""
+    its rotors are commanded one by one instead, and no flight is guessed (as legs are walked
+    by a gait, a body is flown by software its author did not ship)."""
     if not body.flying:
         return []
-    commanded = []
     if rotor_controllers is not None:  # found only for a body with rotors
         why = f"{rotor_controllers}: joint controllers naming its rotors, no flight software"
-        commanded.append(("rotor_controllers", why))
+        return [("rotor_controllers", why)]
     if body.rotors:
         what = f"{len(body.rotors)} rotor joint(s)"
     elif body.flight_plugins:
@@ -171,7 +171,7 @@ def _flight(body: Body, urdf_source: str, rotor_controllers: str | None = None) 
         what = f"flight named in {body.flight_hints[0]}"
     else:
         what = f"flying by its packages ({body.shipped_by})"
-    return [("flight", f"{urdf_source}: {what}"), *commanded]
+    return [("flight", f"{urdf_source}: {what}")]
 
 
 def _motions(joints: tuple[str, ...], urdf: Urdf | None) -> int:

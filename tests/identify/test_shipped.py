@@ -880,11 +880,15 @@ def test_a_drone_whose_packages_command_its_rotors_and_ship_no_flight_software_h
     tmp_path: Path,
 ) -> None:
     found = controls_of(described(tmp_path, quadrotor(), ROTOR_CONTROLLERS))
-    assert found["Joint"] == (
-        "package craft_bringup: craft_bringup/launch/bringup.launch "
+    assert found == {
+        "Joint": "package craft_bringup: craft_bringup/launch/bringup.launch "
         "(velocity_controllers): joint controllers naming its rotors, no flight software"
-    )
-    assert found["Flight"] == "urdf: 4 rotor joint(s)"  # still flown
+    }  # no flight guessed: nothing its author ships flies it
+
+
+def test_a_drone_without_its_packages_is_flown(tmp_path: Path) -> None:
+    alone = described(tmp_path, quadrotor(), ROTOR_CONTROLLERS)
+    assert controls_of(alone, look_around=False)["Flight"] == "urdf: 4 rotor joint(s)"
 
 
 @pytest.mark.parametrize(
