@@ -141,6 +141,49 @@ def test_blank_lines_before_the_xml_declaration_keep_every_line_number() -> None
     assert found[1].startswith("r.urdf:9: joint[j].parent:")
 
 
+def test_an_xml_declaration_after_a_licence_comment_keeps_every_line_number() -> None:
+    text = '<!-- licence\n  banner -->\n<?xml version="1.0"?>\n' + two_links(parent="ghost")
+    found = warnings_of(text)
+    assert found[0] == (
+        "r.urdf:3: the XML declaration is not at the start of the document "
+        "(a comment before it); read anyway"
+    )
+    assert found[1].startswith("r.urdf:8: joint[j].parent:")
+    with pytest.raises(InputError, match="XML declaration allowed only at the start"):
+        parse_urdf(text, "r.urdf")
+
+
+def test_a_second_xml_declaration_a_generator_wrote_after_its_banner_is_ignored() -> None:
+    text = '<?xml version="1.0"?>\n<!-- generated -->\n<?xml version="1.0" ?>\n' + two_links()
+    assert warnings_of(text) == [
+        "r.urdf:3: 1 more XML declaration(s) after the first (between comments); read anyway"
+    ]
+
+
+def test_a_declaration_written_inside_a_comment_is_a_comment() -> None:
+    text = '<!-- <?xml version="1.0"?> -->\n<!-- -->\n' + two_links()
+    assert warnings_of(text) == []
+    many = '<!-- <?xml version="1.0"?> -->' * 5000 + two_links()  # each search starts past the last
+    assert parse_urdf(many, "r.urdf", strict=False).root == "a"
+
+
+def test_a_urdf_in_drakes_namespace_is_read_by_its_local_names() -> None:
+    text = two_links().replace(
+        '<robot name="r">',
+        '<robot name="r" xmlns="http://drake.mit.edu" xmlns:xacro="http://ros.org/wiki/xacro">',
+    )
+    text = text.replace("</joint>", '<xacro:x/></joint>\n<loop_joint name="loop"/>')
+    urdf = parse_urdf(text, "r.urdf", strict=False)
+    assert (urdf.root, [j.name for j in urdf.joints]) == ("a", ["j"])
+    assert [str(w).split(":")[:3] for w in urdf.warnings] == [
+        ["r.urdf", "1", " the document's elements are in the namespace 'http"],
+        ["r.urdf", "7", " xacro"],  # a prefixed element keeps its namespace: still xacro's
+    ]
+    assert "read by their local names, as ROS's parsers read them" in str(urdf.warnings[0])
+    with pytest.raises(InputError, match="expected <robot>"):
+        parse_urdf(text, "r.urdf")
+
+
 def test_a_trailing_nul_byte_is_ignored_with_a_warning() -> None:
     assert warnings_of(two_links() + "\x00") == [
         "r.urdf:9: NUL byte(s) after the end of the document ignored"

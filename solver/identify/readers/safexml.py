@@ -91,7 +91,7 @@ def parse_xml(
         raise InputError.at(name, "empty file: expected an XML document", code="xml")
     prologue = _refuse_declarations(raw, name)
     if warnings is not None:
-        raw = _mend(raw, name, warnings)
+        raw = _mend(raw, name, warnings, prologue)
     try:
         root = etree.fromstring(raw, _parser())
     except etree.XMLSyntaxError as error:
@@ -107,7 +107,31 @@ def parse_xml(
     except ValueError as error:  # lxml refuses, e.g., str input carrying an encoding declaration
         raise InputError.at(name, f"malformed XML: {error}", code="xml") from None
     _refuse_entities(root, raw, name, prologue)
+    if warnings is not None:
+        _drop_default_namespace(root, name, warnings)
     return root
+
+
+def _drop_default_namespace(root: etree._Element, name: str, warnings: list[Fault]) -> None:
+    """Elements in the root's default namespace (``<robot xmlns="http://drake.mit.edu">``,
+    Drake's URDF) renamed by their local names, as ROS's parsers (TinyXML2, which knows no
+    namespaces) read them, with one warning. Prefixed elements (``xacro:``) keep theirs."""
+    from lxml import etree
+
+    namespace = root.nsmap.get(None)
+    if namespace is None or etree.QName(root).namespace != namespace:
+        return
+    _warn(
+        warnings,
+        name,
+        line_of(root),
+        f"the document's elements are in the namespace {shown(namespace, quoted=True)}; "
+        "read by their local names, as ROS's parsers read them",
+        "xml-namespace",
+    )
+    prefix = f"{{{namespace}}}"
+    for element in root.iter(prefix + "*"):
+        element.tag = element.tag[len(prefix) :]
 
 
 _DECLARATION = re.compile(rb"<\?xml\s[^>]*?\?>")
@@ -118,7 +142,7 @@ def _warn(warnings: list[Fault], name: str, line: int | None, message: str, code
     warnings.append(Fault(Location(name, line), message, code))
 
 
-def _mend(raw: bytes, name: str, warnings: list[Fault]) -> bytes:
+def _mend(raw: bytes, name: str, warnings: list[Fault], prologue: Prologue) -> bytes:
     """Repair the flaws real descriptions have outside their elements, keeping line numbers."""
     stripped = raw.rstrip(b" \t\r\n\x00")
     if b"\x00" in raw[len(stripped) :]:
@@ -146,6 +170,7 @@ def _mend(raw: bytes, name: str, warnings: list[Fault]) -> bytes:
                 "xml-declaration",
             )
             raw = body[:end] + lead + body[end:]
+    raw = _declaration_first(raw, name, warnings, prologue)
     declaration = _DECLARATION.match(raw)
     if declaration is not None:
         version = _VERSION.search(declaration.group(0))
@@ -162,6 +187,61 @@ def _mend(raw: bytes, name: str, warnings: list[Fault]) -> bytes:
             fixed = text[: version.start(2)] + b"1.0" + text[version.end(2) :]
             raw = fixed + raw[declaration.end() :]
     return _mend_comments(raw, name, warnings)
+
+
+def _declaration_first(raw: bytes, name: str, warnings: list[Fault], prologue: Prologue) -> bytes:
+    """XML declarations between the prologue's comments (one under a licence banner, or a
+    second one a generator wrote after its own), which XML forbids and ROS's URDF parser
+    (TinyXML2) reads: the first moved to the start when none is there, the others blanked;
+    every line keeps its number; one warning. Text inside a comment is never taken for one."""
+    if prologue.stop is not Stop.ROOT:
+        return raw
+    first = _DECLARATION.match(raw)
+    found = _declarations_between_comments(raw, 0 if first is None else first.end(), prologue)
+    if not found:
+        return raw
+    line = raw.count(b"\n", 0, found[0].start()) + 1
+    if first is None:
+        why = "the XML declaration is not at the start of the document (a comment before it)"
+    else:
+        why = f"{len(found)} more XML declaration(s) after the first (between comments)"
+    _warn(warnings, name, line, f"{why}; read anyway", "xml-declaration")
+    pieces = [b"" if first is not None else _one_line(found[0].group(0))]
+    position = 0
+    for declaration in found:
+        blank = bytes(c if c in b"\r\n" else 0x20 for c in declaration.group(0))
+        pieces += [raw[position : declaration.start()], blank]
+        position = declaration.end()
+    return b"".join(pieces) + raw[position:]
+
+
+def _one_line(text: bytes) -> bytes:
+    return text.replace(b"\r", b" ").replace(b"\n", b" ")
+
+
+def _declarations_between_comments(
+    raw: bytes, start: int, prologue: Prologue
+) -> list[re.Match[bytes]]:
+    """The XML declarations from ``start`` to the root element, outside comments. Each
+    search starts past the last, so the prologue is scanned once."""
+    end = prologue.offset
+    found: list[re.Match[bytes]] = []
+    at = raw.find(b"<?xml", start, end)
+    comment = raw.find(b"<!--", start, end)
+    while at >= 0:
+        if comment < 0 or at < comment:
+            declaration = _DECLARATION.match(raw, at)
+            if declaration is not None:
+                found.append(declaration)
+            at = raw.find(b"<?xml", at + 5 if declaration is None else declaration.end(), end)
+            continue
+        closing = raw.find(b"-->", comment + 4, end)
+        if closing < 0:
+            break
+        if at < closing + 3:
+            at = raw.find(b"<?xml", closing + 3, end)
+        comment = raw.find(b"<!--", closing + 3, end)
+    return found
 
 
 def _mend_comments(raw: bytes, name: str, warnings: list[Fault]) -> bytes:
