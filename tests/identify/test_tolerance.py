@@ -160,6 +160,14 @@ def test_a_second_xml_declaration_a_generator_wrote_after_its_banner_is_ignored(
     ]
 
 
+def test_a_declaration_after_a_byte_order_mark_is_at_the_start() -> None:
+    assert warnings_of("\ufeff<?xml version='1.0'?>\n<!-- c -->\n" + two_links()) == []
+    assert warnings_of("\ufeff<!-- c -->\n<?xml version='1.0'?>\n" + two_links()) == [
+        "r.urdf:2: the XML declaration is not at the start of the document "
+        "(a comment before it); read anyway"
+    ]
+
+
 def test_a_declaration_written_inside_a_comment_is_a_comment() -> None:
     text = '<!-- <?xml version="1.0"?> -->\n<!-- -->\n' + two_links()
     assert warnings_of(text) == []

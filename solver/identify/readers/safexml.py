@@ -135,6 +135,7 @@ def _drop_default_namespace(root: etree._Element, name: str, warnings: list[Faul
 
 
 _DECLARATION = re.compile(rb"<\?xml\s[^>]*?\?>")
+_BOM = b"\xef\xbb\xbf"
 _VERSION = re.compile(rb"""version\s*=\s*(["'])([^"']*)\1""")
 
 
@@ -196,8 +197,9 @@ def _declaration_first(raw: bytes, name: str, warnings: list[Fault], prologue: P
     every line keeps its number; one warning. Text inside a comment is never taken for one."""
     if prologue.stop is not Stop.ROOT:
         return raw
-    first = _DECLARATION.match(raw)
-    found = _declarations_between_comments(raw, 0 if first is None else first.end(), prologue)
+    lead = len(_BOM) if raw.startswith(_BOM) else 0  # a declaration may follow a byte order mark
+    first = _DECLARATION.match(raw, lead)
+    found = _declarations_between_comments(raw, lead if first is None else first.end(), prologue)
     if not found:
         return raw
     line = raw.count(b"\n", 0, found[0].start()) + 1
@@ -206,8 +208,8 @@ def _declaration_first(raw: bytes, name: str, warnings: list[Fault], prologue: P
     else:
         why = f"{len(found)} more XML declaration(s) after the first (between comments)"
     _warn(warnings, name, line, f"{why}; read anyway", "xml-declaration")
-    pieces = [b"" if first is not None else _one_line(found[0].group(0))]
-    position = 0
+    pieces = [raw[:lead], b"" if first is not None else _one_line(found[0].group(0))]
+    position = lead
     for declaration in found:
         blank = bytes(c if c in b"\r\n" else 0x20 for c in declaration.group(0))
         pieces += [raw[position : declaration.start()], blank]
