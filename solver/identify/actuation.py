@@ -110,6 +110,7 @@ def joint_roles(tree: JointTree) -> dict[str, Role]:
             name, "rotor", "an unnamed endless leaf on an upright axis, with others all round"
         )
     roles.update(tree.reader.casters({n: r for n, r in roles.items() if r.role == "wheel"}))
+    roles.update(_steered_wheels(tree, roles))
     roles.update(_ball_casters(tree, roles))
     roles.update(_driven_casters(tree, roles))
     roles.update(_steering_beside(tree, roles))
@@ -304,6 +305,41 @@ def _unnamed_wheels(tree: JointTree, taken: set[str]) -> list[str]:
     apart = [j for j in apart if _hangs_freely(tree, j.parent, known)]
     if len(apart) >= 2 and _sides({tree.poses.place(j.child)[1] for j in apart}):
         found.extend(j.name for j in apart)
+    return found
+
+
+def _steered_wheels(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Role]:
+    """Endless leaves of no role yet, each the only moving joint below a joint named for
+    steering (``steer_front_left_joint``) that turns about an upright axis, the leaf about a
+    level one, on both sides of the body: steered wheels and their steering, whatever else
+    their names say (a corner's words, ``front_left``, name a leg's corner as well as a
+    wheel's; a leg is never steered)."""
+    found: dict[str, Role] = {}
+    wheels: list[Joint] = []
+    for leaf in tree.urdf.joints:
+        if not leaf.endless or leaf.name in roles or leaf.child in tree.moving_below:
+            continue
+        steer = tree.urdf.parent_joint(leaf.parent)
+        if (
+            steer is None
+            or steer.name in roles
+            or not steer.movable
+            or steer.type == "prismatic"
+            or not _STEER.search(steer.name)
+            or not _upright(local_axis(steer))
+            or not _axle(local_axis(leaf))
+            or len([j for j in tree.urdf.children(leaf.parent) if j.movable]) != 1
+        ):
+            continue
+        wheels.append(leaf)
+        found[steer.name] = Role(
+            steer.name, "steering", f"named for steering, an upright axis carrying {leaf.name}"
+        )
+        found[leaf.name] = Role(
+            leaf.name, "wheel", f"an endless leaf turning about a level axle below {steer.name}"
+        )
+    if len(wheels) < 2 or not _sides({tree.poses.place(j.child)[1] for j in wheels}):
+        return {}
     return found
 
 

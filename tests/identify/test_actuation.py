@@ -732,3 +732,52 @@ def test_an_endless_leaf_is_no_legs_wheel_unless_it_ends_a_limited_leg_about_its
 ) -> None:
     evidence = " ".join(r.evidence for r in identify_urdf(robot.text()).roles)
     assert "an endless leaf ending a leg" not in evidence
+
+
+# A four-wheeled vehicle's corners and where each is on the body (x forward, y to the left).
+CORNERS = {
+    "front_left": (1, 0.6),
+    "front_right": (1, -0.6),
+    "back_left": (-1, 0.6),
+    "back_right": (-1, -0.6),
+}
+
+
+def four_wheel_steered(steer: str = "steer") -> RobotText:
+    """A farm vehicle's four corners, each a swivel named ``steer`` (upright axis) carrying one
+    endless leaf on a level axle, every name carrying its corner's words (``front_left``)."""
+    robot = RobotText("double_ackermann")
+    for corner, (x, y) in CORNERS.items():
+        knuckle = builders.placed(
+            robot,
+            f"{steer}_{corner}_j",
+            "continuous",
+            robot.root,
+            f"{steer}_{corner}_link",
+            xyz=f"{x} {y} -0.4",
+        )
+        builders.placed(
+            robot,
+            f"drive_{corner}_j",
+            "continuous",
+            knuckle,
+            f"drive_{corner}_link",
+            xyz="0 0 -0.3",
+            axis="0 1 0",
+        )
+    return robot
+
+
+def test_leaves_below_swivels_named_for_steering_are_steered_wheels_whatever_their_corners() -> (
+    None
+):
+    roles = roles_of(four_wheel_steered())
+    assert with_role(roles, "steering") == [f"steer_{c}_j" for c in CORNERS]
+    assert with_role(roles, "wheel") == [f"drive_{c}_j" for c in CORNERS]
+    assert identify_urdf(four_wheel_steered().text()).structure == "UGV"
+
+
+def test_corners_under_swivels_named_for_nothing_stay_a_legs_reading() -> None:
+    roles = roles_of(four_wheel_steered(steer="hip"))
+    assert not with_role(roles, "steering")
+    assert identify_urdf(four_wheel_steered(steer="hip").text()).structure == "Quadruped"
