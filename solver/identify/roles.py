@@ -64,6 +64,11 @@ _WHEEL_SPACING = frozenset({"wheelseparation", "wheeltrack", "wheeldistance"})
 _WHEEL_SIZE = frozenset({"wheeldiameter", "wheelradius"})
 
 
+# A tracked vehicle plugin's parameters (Gazebo's ``SimpleTrackedVehiclePlugin`` and the
+# plugins written after it): the link of each side's track.
+_TRACK_SIDES = frozenset({"lefttrack", "righttrack"})
+
+
 # The parameters of such a plugin that name its wheels (``<leftJoint>``, ``<wheel_joint>``); a
 # robot's own plugin may name other joints too (an arm's, a head's), which it drives otherwise.
 _WHEEL_TAG = re.compile(r"left|right|wheel|front|rear|back|steer", re.IGNORECASE)
@@ -76,9 +81,14 @@ def _said(plugin: PluginTag) -> str:
     return plugin.filename.strip() or plugin.name
 
 
+def _tags(plugin: PluginTag) -> set[str]:
+    """The plugin's parameter tags, compared without case, ``_`` or ``-``."""
+    return {re.sub(r"[_-]", "", tag).lower() for tag, _ in plugin.params}
+
+
 def _wheel_geometry(plugin: PluginTag) -> bool:
     """Whether ``plugin`` sets both a wheel spacing and a wheel size."""
-    tags = {re.sub(r"[_-]", "", tag).lower() for tag, _ in plugin.params}
+    tags = _tags(plugin)
     return bool(tags & _WHEEL_SPACING and tags & _WHEEL_SIZE)
 
 
@@ -189,6 +199,10 @@ class RoleReader:
         # called (a robot's own drive plugin, ``<wheelSeparation>`` and ``<wheelDiameter>``).
         if _wheel_geometry(plugin):
             found.add("drive")
+        # A plugin that names a left and a right track moves the body on them, whatever it is
+        # called (a tracked wheelchair's ``libsimple.so`` with ``<left_track>``).
+        if _tags(plugin) >= _TRACK_SIDES:
+            found.add("track")
         if "flight" in found:
             found.discard("drive")  # a multicopter's velocity control flies it
         return frozenset(found)

@@ -381,3 +381,31 @@ def test_the_joints_such_a_plugin_names_not_as_wheels_keep_their_own_roles() -> 
 def test_a_plugin_that_gives_a_wheel_size_alone_drives_nothing() -> None:
     result = identify_urdf(ball_robot("<wheelDiameter>0.2</wheelDiameter>").text())
     assert result.structure != "UGV"
+
+
+def tracked_chair(params: str) -> RobotText:
+    """A tracked wheelchair as its author drew it: two side frames (``limgf``, ``rimgf``), two
+    flippers on limited hinges each, no name a track's, moved by a plugin of its own file
+    (``libsimple.so``) with ``params``."""
+    chair = RobotText("chair")
+    for side, y in (("l", 0.3), ("r", -0.3)):
+        frame = builders.placed(chair, f"{side}imgf", "fixed", chair.root, f"{side}imgf")
+        for end, x in (("f", 0.3), ("r", -0.3)):
+            builders.placed(
+                chair,
+                f"{end}{side}",
+                "revolute",
+                frame,
+                f"{end}{side}_link",
+                xyz=f"{x} {y} 0",
+                axis="0 1 0",
+            )
+    chair.add(builders.model_plugin("simple_tracked_vehicle", "libsimple.so", params))
+    return chair
+
+
+def test_a_plugin_of_its_own_that_names_a_left_and_a_right_track_moves_the_body_on_them() -> None:
+    tracks = "<body>base_link</body><left_track>limgf</left_track>"
+    result = identify_urdf(tracked_chair(f"{tracks}<right_track>rimgf</right_track>").text())
+    assert (result.structure, result.evidence[0]) == ("UGV", "tracks: libsimple.so")
+    assert identify_urdf(tracked_chair(tracks).text()).structure != "UGV"  # one side: no tracks
