@@ -425,6 +425,11 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
     controlled = urdf.controlled_joints
     wheels = parts.of("wheel")
     track_names = tracks(tree)
+    thrusters = (
+        *parts.of("thruster"),
+        *listed_thrusters(tree, parts.roles),
+        *fixed_thrusters(tree),
+    )
     return Body(
         wheels=tuple(wheels),
         rotors=tuple(parts.of("rotor")),
@@ -451,9 +456,7 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
         not_rotors=tuple(not_rotors(tree, parts.roles)),
         fixed_wheels=tuple(fixed_wheels(tree, parts.roles)),
         fixed_rotors=parts.fixed_rotors,
-        thrusters=tuple(
-            parts.of("thruster") + listed_thrusters(tree, parts.roles) + fixed_thrusters(tree)
-        ),
+        thrusters=thrusters,
         fins=tuple(parts.of("fin")),
         casters=tuple(parts.of("caster")),
         wings=tuple(wings(tree, parts.roles)),
@@ -462,7 +465,7 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
                 (*tree.labels("thruster"), *tree.labels("marine"), *tree.labels("underwater"))
             )
         ),
-        surface_hints=surface_hints(tree, thrusters=bool(parts.of("thruster"))),
+        surface_hints=surface_hints(tree, thrusters=len(thrusters)),
         underwater_hints=underwater_hints(tree),
         water_frames=water_frames(tree),
         vessel_name=vessel_name(tree, parts.roles, parts.limbs),

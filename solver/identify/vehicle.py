@@ -263,7 +263,7 @@ def wings(tree: JointTree, roles: dict[str, Role]) -> list[str]:
     return found + surfaces if found else []
 
 
-def surface_hints(tree: JointTree, *, thrusters: bool = False) -> tuple[str, ...]:
+def surface_hints(tree: JointTree, *, thrusters: int = 0) -> tuple[str, ...]:
     """A body in water at the surface: surface plugins, and the words the profile's ``surface``
     pattern reads in the hull's own elements (``<metacentric_width>``, wind on its buoyancy)
     or in the parameters of its water plugins, never in a sensor's settings (a barometer's
@@ -271,9 +271,9 @@ def surface_hints(tree: JointTree, *, thrusters: bool = False) -> tuple[str, ...
     ``<surface>`` of numbers (where the water's surface lies, :func:`_water_level`); a body
     whose buoyancy compensation has a hull's reserve (it floats). With none of them, and nothing
     of a body below the surface (no plugin, sensor or frame of one), a GPS or a lidar says it:
-    satellites are heard, and a laser scans, only above the water. ``thrusters``: joints play a
-    thruster's role (an unnamed pair of screws, :mod:`solver.identify.actuation`): the body is
-    in water though no plugin or name says so. The robot's name as a surface craft's
+    satellites are heard, and a laser scans, only above the water. ``thrusters``: how many
+    thrusters the body has; any (an unnamed pair of screws, :mod:`solver.identify.actuation`)
+    put it in water though no plugin or name says so. The robot's name as a surface craft's
     (``sailboat``, ``asv``, ``catamaran``, whole words; ``RoleReader.named_vessel``) floats a
     body in water whatever its water plugins are also used for (a hydrodynamics plugin moves
     hulls at the surface too), unless a flight plugin or a DVL or depth sensor says otherwise."""
@@ -300,17 +300,20 @@ def surface_hints(tree: JointTree, *, thrusters: bool = False) -> tuple[str, ...
             )
     hints += _floating_hull(tree)
     if not hints and not underwater_hints(tree) and not water_frames(tree):
-        hints += _nothing_dives(tree)
+        hints += _nothing_dives(tree, thrusters)
     return tuple(dict.fromkeys(hints))
 
 
-def _nothing_dives(tree: JointTree) -> list[str]:
+def _nothing_dives(tree: JointTree, thrusters: int) -> list[str]:
     """A body in water that nothing places below or at the surface: a GPS or a lidar on it
     says above water; with no water plugin and no pressure sensor at all (a diver's depth
-    gauge is a pressure sensor), its thrusters alone do, with doubt (nothing dives it)."""
+    gauge is a pressure sensor), its thrusters alone do, with doubt (nothing dives it), when
+    they are as few as a surface craft's (a hull's pair, a WAM-V's four): more push the body
+    in every direction, up and down too, as a submersible's six or eight do."""
     found = _above_water_sensors(tree)
     if (
         not found
+        and thrusters <= _SURFACE_THRUSTERS
         and not any(tree.reader.plugins_of(p) for p in _WATER_PLUGINS)
         and not _pressure_sensor(tree)
     ):
@@ -330,6 +333,8 @@ def _pressure_sensor(tree: JointTree) -> bool:
 # sensor or frame of a diver, no name: nothing makes the body dive, so it floats, with doubt (a
 # hull with a pair of thrusters, as every such labelled row of the development part is).
 THRUSTERS_ALONE = "thrusters alone (no water plugin, DVL or depth gauge)"
+# The most thrusters a surface craft has (a twin-hull's pair, a WAM-V's four).
+_SURFACE_THRUSTERS = 4
 _PRESSURE_KINDS = ("barometer", "pressure")
 _WATER_PLUGINS = ("marine", "thruster", "underwater")
 

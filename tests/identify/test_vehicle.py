@@ -81,12 +81,23 @@ def test_fixed_rotor_links_beside_moving_joints_are_motors_not_flight() -> None:
     assert result.body.fixed_rotors == ()
 
 
-def thrusters_by_name() -> RobotText:
-    """Four joints named as thrusters on a hull; no plugin, no sensor says where it swims."""
+def thrusters_by_name(count: int = 4) -> RobotText:
+    """``count`` joints named as thrusters on a hull; no plugin, no sensor says where it swims."""
     robot = RobotText("hull")
-    for i in range(4):
+    for i in range(count):
         robot.joint(f"thruster_{i}_joint", "continuous", robot.root, f"thruster_{i}")
     return robot
+
+
+@pytest.mark.parametrize("count", [5, 8])
+def test_more_thrusters_than_a_surface_craft_has_dive_the_body(count: int) -> None:
+    """A surface craft has two to four; six or eight push a submersible up and down too."""
+    result = identify_urdf(thrusters_by_name(count).text())
+    assert result.structure == "Underwater Vehicle"
+    fixed = RobotText("sub")
+    for i in range(count):
+        fixed.fixed(fixed.root, f"vertical{i}_thruster")  # a RoboSub team's, trimmed of joints
+    assert identify_urdf(fixed.text()).structure == "Underwater Vehicle"
 
 
 def test_a_body_in_water_by_thruster_names_alone_floats() -> None:
@@ -125,7 +136,7 @@ def hull_of_fixed_thrusters(count: int = 6, *, under_a_joint: bool = False) -> R
 
 
 def test_thruster_links_fixed_to_a_pushed_hull_put_it_in_water() -> None:
-    result = identify_urdf(hull_of_fixed_thrusters().text())
+    result = identify_urdf(hull_of_fixed_thrusters(4).text())
     assert result.structure == "Surface Vessel"  # nothing makes it dive
     assert any("thruster_0 (fixed)" in line for line in result.evidence)
     assert "Driving" in {c.motion_control for c in result.motion_controls}
@@ -438,7 +449,7 @@ def test_thruster_leaves_under_a_deep_fixed_chain_are_placed_in_one_walk() -> No
     for i in range(20_000):
         robot.fixed(parent, f"thruster_{i}")
     result = identify_urdf(robot.text())
-    assert result.structure == "Surface Vessel"
+    assert result.structure == "Underwater Vehicle"  # more thrusters than a surface craft's
 
 
 def dvl_arm(frame: str = "dvl_link") -> RobotText:
