@@ -309,11 +309,11 @@ def _unnamed_wheels(tree: JointTree, taken: set[str]) -> list[str]:
 
 
 def _steered_wheels(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Role]:
-    """Endless leaves of no role yet, each the only moving joint below a joint named for
-    steering (``steer_front_left_joint``) that turns about an upright axis, the leaf about a
-    level one, on both sides of the body: steered wheels and their steering, whatever else
-    their names say (a corner's words, ``front_left``, name a leg's corner as well as a
-    wheel's; a leg is never steered)."""
+    """Endless leaves of no role yet, each the only moving joint on the link of a joint named
+    for steering (``steer_front_left_joint``) that turns about an upright axis, the leaf about
+    a level one (both as the body rests), on both sides of the body: steered wheels and their
+    steering, whatever corner words their names carry (``front_left`` names a leg's corner as
+    well as a wheel's; a leg is never steered)."""
     found: dict[str, Role] = {}
     wheels: list[Joint] = []
     for leaf in tree.urdf.joints:
@@ -324,10 +324,10 @@ def _steered_wheels(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Rol
             steer is None
             or steer.name in roles
             or not steer.movable
-            or steer.type == "prismatic"
+            or steer.type not in ("revolute", "continuous")
             or not _STEER.search(steer.name)
-            or not _upright(local_axis(steer))
-            or not _axle(local_axis(leaf))
+            or not _upright(tree.poses.axis(steer))
+            or not _axle(tree.poses.axis(leaf))
             or len([j for j in tree.urdf.children(leaf.parent) if j.movable]) != 1
         ):
             continue

@@ -86,9 +86,8 @@ def _tags(plugin: PluginTag) -> set[str]:
     return {re.sub(r"[_-]", "", tag).lower() for tag, _ in plugin.params}
 
 
-def _wheel_geometry(plugin: PluginTag) -> bool:
-    """Whether ``plugin`` sets both a wheel spacing and a wheel size."""
-    tags = _tags(plugin)
+def _wheel_geometry(tags: set[str]) -> bool:
+    """Whether a plugin of these parameter ``tags`` sets both a wheel spacing and a size."""
     return bool(tags & _WHEEL_SPACING and tags & _WHEEL_SIZE)
 
 
@@ -197,15 +196,24 @@ class RoleReader:
             found.add("thruster")
         # A plugin that gives a wheel spacing and a wheel size drives wheels, whatever it is
         # called (a robot's own drive plugin, ``<wheelSeparation>`` and ``<wheelDiameter>``).
-        if _wheel_geometry(plugin):
+        tags = _tags(plugin)
+        if _wheel_geometry(tags):
             found.add("drive")
-        # A plugin that names a left and a right track moves the body on them, whatever it is
-        # called (a tracked wheelchair's ``libsimple.so`` with ``<left_track>``).
-        if _tags(plugin) >= _TRACK_SIDES:
+        # A plugin that names a left and a right track, each a link of the body, moves the body
+        # on them, whatever it is called (a tracked wheelchair's ``libsimple.so``).
+        if tags >= _TRACK_SIDES and self._names_links(plugin, _TRACK_SIDES):
             found.add("track")
         if "flight" in found:
             found.discard("drive")  # a multicopter's velocity control flies it
         return frozenset(found)
+
+    def _names_links(self, plugin: PluginTag, tags: frozenset[str]) -> bool:
+        """Every parameter of ``plugin`` whose tag is one of ``tags`` names a link of the body."""
+        return all(
+            self.urdf.link(text.strip()) is not None
+            for tag, text in plugin.params
+            if re.sub(r"[_-]", "", tag).lower() in tags
+        )
 
     def plugins_of(self, part: str) -> list[PluginTag]:
         """The model plugins whose file name (or name, when none) the profile reads as ``part``."""

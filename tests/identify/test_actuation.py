@@ -777,7 +777,7 @@ def test_leaves_below_swivels_named_for_steering_are_steered_wheels_whatever_the
     assert identify_urdf(four_wheel_steered().text()).structure == "UGV"
 
 
-def test_corners_under_swivels_named_for_nothing_stay_a_legs_reading() -> None:
+def test_corners_under_swivels_named_for_nothing_are_a_quadrupeds_legs() -> None:
     roles = roles_of(four_wheel_steered(steer="hip"))
     assert not with_role(roles, "steering")
     assert identify_urdf(four_wheel_steered(steer="hip").text()).structure == "Quadruped"

@@ -409,3 +409,5 @@ def test_a_plugin_of_its_own_that_names_a_left_and_a_right_track_moves_the_body_
     result = identify_urdf(tracked_chair(f"{tracks}<right_track>rimgf</right_track>").text())
     assert (result.structure, result.evidence[0]) == ("UGV", "tracks: libsimple.so")
     assert identify_urdf(tracked_chair(tracks).text()).structure != "UGV"  # one side: no tracks
+    elsewhere = f"{tracks}<right_track>stereo_right</right_track>"  # no link of the body
+    assert identify_urdf(tracked_chair(elsewhere).text()).structure != "UGV"

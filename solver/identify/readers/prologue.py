@@ -52,6 +52,8 @@ _NOT_SPACE = re.compile(rb"[^ \t\r\n]")
 _NAME_END = re.compile(rb"[ \t\r\n>\"']")
 _MARKUP_END = re.compile(rb"[>\"']")
 _DOCTYPE_PART_END = re.compile(rb"[\[>\"']")
+# A processing instruction whose target is ``xml``: an XML declaration (not ``<?xml-model``).
+_XML_TARGET = re.compile(rb"<\?xml[ \t\r\n]")
 
 
 class Stop(Enum):
@@ -90,6 +92,10 @@ class Prologue:
     stop: Stop
     offset: int  # where the scan ended (the root element's "<" when stop is ROOT)
     declarations: tuple[Declaration, ...] = ()  # the subset's others, comments aside
+    # Where each XML declaration of the prologue (a processing instruction whose target is
+    # ``xml``, outside the document type) starts and ends: the first, and any a file wrote
+    # after a comment or a second time.
+    xml_declarations: tuple[tuple[int, int], ...] = ()
 
 
 def scan_prologue(raw: bytes, limit: int = MAX_PROLOGUE_BYTES) -> Prologue:
@@ -105,6 +111,7 @@ class _Scanner:
         self.pos = 0
         self.entities: list[Entity] = []
         self.declarations: list[Declaration] = []
+        self.xml_declarations: list[tuple[int, int]] = []
         self.items = 0
 
     def prologue(self) -> Prologue:
@@ -119,7 +126,7 @@ class _Scanner:
             if self._crowded():
                 return self._result(Stop.TOO_LONG)
             if raw.startswith(b"<?", self.pos):
-                if not self._past(b"<?", b"?>"):
+                if not self._instruction():
                     return self._out_of_bytes()
             elif raw.startswith(b"<!--", self.pos):
                 if not self._past(b"<!--", b"-->"):
@@ -133,6 +140,15 @@ class _Scanner:
                 return self._result(Stop.ROOT)
             else:
                 return self._result(Stop.OTHER)
+
+    def _instruction(self) -> bool:
+        """Past one processing instruction, an XML declaration's place noted; ``False`` if open."""
+        start = self.pos
+        if not self._past(b"<?", b"?>"):
+            return False
+        if _XML_TARGET.match(self.raw, start):
+            self.xml_declarations.append((start, self.pos))
+        return True
 
     def _doctype(self) -> Stop | None:
         """Past ``<!DOCTYPE name ExternalID? [subset]? >``; a stop if the scan ends inside."""
@@ -286,7 +302,11 @@ class _Scanner:
 
     def _result(self, stop: Stop) -> Prologue:
         return Prologue(
-            tuple(self.entities), stop, min(self.pos, self.end), tuple(self.declarations)
+            tuple(self.entities),
+            stop,
+            min(self.pos, self.end),
+            tuple(self.declarations),
+            tuple(self.xml_declarations),
         )
 
 

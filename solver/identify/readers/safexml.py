@@ -74,10 +74,12 @@ def parse_xml(
     """Safely parse XML text or bytes into its root element (see the module docstring).
 
     With a ``warnings`` list the parse is lenient the way the ROS tools are with real files:
-    blank lines before the XML declaration, an XML version other than 1.0, trailing NUL bytes
-    and undeclared namespace prefixes (``<xacro:include>`` in an expanded URDF) are read, and
-    each is appended to ``warnings`` as a located :class:`~solver.errors.Fault`. Without it,
-    each is an error. Hostile XML (entity declarations) is refused either way.
+    blank lines before the XML declaration, a declaration after a comment or a second one, an
+    XML version other than 1.0, trailing NUL bytes, comments XML forbids (``--`` inside),
+    undeclared namespace prefixes (``<xacro:include>`` in an expanded URDF) and elements in a
+    default namespace (Drake's) are read, and each is appended to ``warnings`` as a located
+    :class:`~solver.errors.Fault`. Without it, each is an error. Hostile XML (entity
+    declarations) is refused either way.
     """
     require("lxml", feature="reading URDF, SRDF and xacro files (identify, fleet, watch)")
     from lxml import etree
@@ -96,14 +98,17 @@ def parse_xml(
         root = etree.fromstring(raw, _parser())
     except etree.XMLSyntaxError as error:
         mended = None if warnings is None else _namespace_recovery(raw, name, warnings)
-        if mended is not None:
-            _refuse_entities(mended, raw, name, prologue)
-            return mended
-        line, column = error.position if error.position else (None, None)
-        message = str(error.msg or error).split(f", line {line}")[0]
-        raise InputError.at(
-            name, f"malformed XML: {message}", line=line or None, column=column or None, code="xml"
-        ) from None
+        if mended is None:
+            line, column = error.position if error.position else (None, None)
+            message = str(error.msg or error).split(f", line {line}")[0]
+            raise InputError.at(
+                name,
+                f"malformed XML: {message}",
+                line=line or None,
+                column=column or None,
+                code="xml",
+            ) from None
+        root = mended
     except ValueError as error:  # lxml refuses, e.g., str input carrying an encoding declaration
         raise InputError.at(name, f"malformed XML: {error}", code="xml") from None
     _refuse_entities(root, raw, name, prologue)
@@ -113,9 +118,10 @@ def parse_xml(
 
 
 def _drop_default_namespace(root: etree._Element, name: str, warnings: list[Fault]) -> None:
-    """Elements in the root's default namespace (``<robot xmlns="http://drake.mit.edu">``,
-    Drake's URDF) renamed by their local names, as ROS's parsers (TinyXML2, which knows no
-    namespaces) read them, with one warning. Prefixed elements (``xacro:``) keep theirs."""
+    """Elements written without a prefix in the root's default namespace (``<robot
+    xmlns="http://drake.mit.edu">``, Drake's URDF) renamed by their local names, as ROS's
+    parsers (TinyXML2, which knows no namespaces) read them, with one warning. Prefixed
+    elements (``xacro:``) keep their names, whatever namespace their prefix is bound to."""
     from lxml import etree
 
     namespace = root.nsmap.get(None)
@@ -131,7 +137,8 @@ def _drop_default_namespace(root: etree._Element, name: str, warnings: list[Faul
     )
     prefix = f"{{{namespace}}}"
     for element in root.iter(prefix + "*"):
-        element.tag = element.tag[len(prefix) :]
+        if element.prefix is None:
+            element.tag = element.tag[len(prefix) :]
 
 
 _DECLARATION = re.compile(rb"<\?xml\s[^>]*?\?>")
@@ -191,59 +198,37 @@ def _mend(raw: bytes, name: str, warnings: list[Fault], prologue: Prologue) -> b
 
 
 def _declaration_first(raw: bytes, name: str, warnings: list[Fault], prologue: Prologue) -> bytes:
-    """XML declarations between the prologue's comments (one under a licence banner, or a
-    second one a generator wrote after its own), which XML forbids and ROS's URDF parser
-    (TinyXML2) reads: the first moved to the start when none is there, the others blanked;
-    every line keeps its number; one warning. Text inside a comment is never taken for one."""
-    if prologue.stop is not Stop.ROOT:
+    """XML declarations the prologue scan found out of place (one under a licence banner, a
+    second one a generator wrote after its own banner), which XML forbids and ROS's URDF
+    parser (TinyXML2) reads: the first moved to the start when none is there, the others
+    blanked; every line keeps its number; one warning. Only the prologue's own processing
+    instructions are touched (:attr:`Prologue.xml_declarations`), never text inside a
+    comment, another instruction or the document type."""
+    spans = prologue.xml_declarations
+    if prologue.stop is not Stop.ROOT or not spans:
         return raw
     lead = len(_BOM) if raw.startswith(_BOM) else 0  # a declaration may follow a byte order mark
-    first = _DECLARATION.match(raw, lead)
-    found = _declarations_between_comments(raw, lead if first is None else first.end(), prologue)
-    if not found:
+    in_place = _DECLARATION.match(raw, lead) is not None  # at the start, or moved there
+    misplaced = spans[1:] if in_place else spans
+    if not misplaced:
         return raw
-    line = raw.count(b"\n", 0, found[0].start()) + 1
-    if first is None:
-        why = "the XML declaration is not at the start of the document (a comment before it)"
+    first = misplaced[0][0]
+    if in_place:
+        why = f"{len(misplaced)} more XML declaration(s) after the first"
     else:
-        why = f"{len(found)} more XML declaration(s) after the first (between comments)"
-    _warn(warnings, name, line, f"{why}; read anyway", "xml-declaration")
-    pieces = [raw[:lead], b"" if first is not None else _one_line(found[0].group(0))]
+        before = "a comment" if b"<!--" in raw[lead:first] else "something"
+        why = f"the XML declaration is not at the start of the document ({before} before it)"
+    _warn(warnings, name, raw.count(b"\n", 0, first) + 1, f"{why}; read anyway", "xml-declaration")
+    pieces = [raw[:lead], b"" if in_place else _one_line(raw[first : misplaced[0][1]])]
     position = lead
-    for declaration in found:
-        blank = bytes(c if c in b"\r\n" else 0x20 for c in declaration.group(0))
-        pieces += [raw[position : declaration.start()], blank]
-        position = declaration.end()
+    for start, end in misplaced:
+        pieces += [raw[position:start], bytes(c if c in b"\r\n" else 0x20 for c in raw[start:end])]
+        position = end
     return b"".join(pieces) + raw[position:]
 
 
 def _one_line(text: bytes) -> bytes:
     return text.replace(b"\r", b" ").replace(b"\n", b" ")
-
-
-def _declarations_between_comments(
-    raw: bytes, start: int, prologue: Prologue
-) -> list[re.Match[bytes]]:
-    """The XML declarations from ``start`` to the root element, outside comments. Each
-    search starts past the last, so the prologue is scanned once."""
-    end = prologue.offset
-    found: list[re.Match[bytes]] = []
-    at = raw.find(b"<?xml", start, end)
-    comment = raw.find(b"<!--", start, end)
-    while at >= 0:
-        if comment < 0 or at < comment:
-            declaration = _DECLARATION.match(raw, at)
-            if declaration is not None:
-                found.append(declaration)
-            at = raw.find(b"<?xml", at + 5 if declaration is None else declaration.end(), end)
-            continue
-        closing = raw.find(b"-->", comment + 4, end)
-        if closing < 0:
-            break
-        if at < closing + 3:
-            at = raw.find(b"<?xml", closing + 3, end)
-        comment = raw.find(b"<!--", closing + 3, end)
-    return found
 
 
 def _mend_comments(raw: bytes, name: str, warnings: list[Fault]) -> bytes:
