@@ -131,24 +131,20 @@ def test_an_xml_version_0_0_is_read_as_xml_1_0() -> None:
     assert warnings_of(text) == ["r.urdf:1: XML version '0.0' declared; read as XML 1.0"]
 
 
-def test_blank_lines_before_the_xml_declaration_keep_every_line_number() -> None:
-    text = '\n\n\n<?xml version="1.0"?>\n' + two_links(parent="ghost")
+@pytest.mark.parametrize(
+    ("before", "why"),
+    [
+        ("\n\n\n", "blank lines before it"),
+        ("<!-- licence\n  banner -->\n\n", "a comment before it"),
+    ],
+)
+def test_an_xml_declaration_out_of_place_keeps_every_line_number(before: str, why: str) -> None:
+    text = before + '<?xml version="1.0"?>\n' + two_links(parent="ghost")
     found = warnings_of(text)
     assert found[0] == (
-        "r.urdf:4: the XML declaration is not at the start of the document "
-        "(blank lines before it); read anyway"
+        f"r.urdf:4: the XML declaration is not at the start of the document ({why}); read anyway"
     )
     assert found[1].startswith("r.urdf:9: joint[j].parent:")
-
-
-def test_an_xml_declaration_after_a_licence_comment_keeps_every_line_number() -> None:
-    text = '<!-- licence\n  banner -->\n<?xml version="1.0"?>\n' + two_links(parent="ghost")
-    found = warnings_of(text)
-    assert found[0] == (
-        "r.urdf:3: the XML declaration is not at the start of the document "
-        "(a comment before it); read anyway"
-    )
-    assert found[1].startswith("r.urdf:8: joint[j].parent:")
     with pytest.raises(InputError, match="XML declaration allowed only at the start"):
         parse_urdf(text, "r.urdf")
 
