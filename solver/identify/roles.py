@@ -81,9 +81,14 @@ def _said(plugin: PluginTag) -> str:
     return plugin.filename.strip() or plugin.name
 
 
+def _plain(tag: str) -> str:
+    """A parameter's tag as tags are compared: without case, ``_`` or ``-``."""
+    return re.sub(r"[_-]", "", tag).lower()
+
+
 def _tags(plugin: PluginTag) -> set[str]:
     """The plugin's parameter tags, compared without case, ``_`` or ``-``."""
-    return {re.sub(r"[_-]", "", tag).lower() for tag, _ in plugin.params}
+    return {_plain(tag) for tag, _ in plugin.params}
 
 
 def _wheel_geometry(tags: set[str]) -> bool:
@@ -212,7 +217,7 @@ class RoleReader:
         return all(
             self.urdf.link(text.strip()) is not None
             for tag, text in plugin.params
-            if re.sub(r"[_-]", "", tag).lower() in tags
+            if _plain(tag) in tags
         )
 
     def plugins_of(self, part: str) -> list[PluginTag]:
