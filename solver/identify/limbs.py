@@ -208,7 +208,55 @@ def find_limbs(
         else limb
         for limb in limbs
     ]
-    return sort_limbs(tree, limbs), trunk, hosts
+    return sort_limbs(tree, _short_pair(tree, limbs)), trunk, hosts
+
+
+# A humanoid's two pairs of limbs: one pair found, the other sought among one-joint chains.
+_PAIRED = {"leg": "arm", "arm": "leg"}
+
+
+def _short_pair(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
+    """``limbs`` with a pair of one-joint chains named as legs (``hips_to_left_leg``) or arms
+    (``base_to_right_shoulder``), one on each side of the body, read as that pair when the
+    body has exactly the other pair (two arms, two legs) and no more one-joint chains so named:
+    a toy humanoid's one-hinge legs, a biped's one-hinge shoulders. Alone such a chain is too
+    short to be a limb (a leg needs two joints, an arm three)."""
+    for kind, other in _PAIRED.items():
+        if sum(1 for limb in limbs if limb.kind == other) != 2 or any(
+            limb.kind == kind for limb in limbs
+        ):
+            continue
+        short = [
+            index
+            for index, limb in enumerate(limbs)
+            if limb.kind == "other"
+            and len(limb.joints) == 1
+            and kind in tree.parts_of(limb.joints[0]) | tree.parts_of(limb.tip)
+        ]
+        if len(short) != 2 or not _opposite(tree, [limbs[i] for i in short]):
+            continue
+        why = f"one of a pair of one-joint chains named as {kind}s, beside two {other}s"
+        return [
+            replace(limb, kind=kind, named=True, why=why) if index in short else limb
+            for index, limb in enumerate(limbs)
+        ]
+    return limbs
+
+
+def _opposite(tree: JointTree, pair: list[Limb]) -> bool:
+    """The two chains are on either side of the body: their names say left and right (a model
+    drawn in its CAD's axes), or their tips lie across its y axis as it rests."""
+    sides = [
+        {m.group(0).lower() for m in _SIDE.finditer(f"{limb.joints[0]} {limb.tip}")}
+        for limb in pair
+    ]
+    if sides[0] ^ sides[1] == {"left", "right"} and not sides[0] & sides[1]:
+        return True
+    first, second = (tree.poses.place(limb.tip)[1] for limb in pair)
+    return first * second < 0
+
+
+_SIDE = re.compile(r"left|right", re.IGNORECASE)
 
 
 def _carried_grippers(

@@ -1607,3 +1607,35 @@ def test_a_wrist_whose_palm_holds_fingers_beside_a_gripper_slide_stays_a_hand() 
         robot.chain(palm, [f"f{n}"])
     limbs = detect_body(parse_urdf(robot.text()), load_profile()).limbs
     assert not [limb for limb in limbs if limb.kind == "arm"]
+
+
+def toy_humanoid(legs: tuple[str, ...] = ("left", "right")) -> RobotText:
+    """A beginner's humanoid: two arms of two joints named as arms, a head, and a leg of one
+    hinge on each of ``legs`` (``hips_to_left_leg``)."""
+    robot = RobotText("toy")
+    for side in ("left", "right"):
+        robot.chain(robot.root, [f"body_to_{side}_arm", f"{side}_arm_elbow"])
+    robot.chain(robot.root, ["body_to_head"])
+    for side in legs:
+        robot.chain(robot.root, [f"hips_to_{side}_leg"])
+    return robot
+
+
+def test_one_hinge_legs_in_a_pair_beside_two_arms_are_legs() -> None:
+    result = identify_urdf(toy_humanoid().text())
+    assert result.body is not None
+    assert (result.structure, result.body.count("leg")) == ("Humanoid", 2)
+    assert identify_urdf(toy_humanoid(legs=("left",)).text()).structure != "Humanoid"
+    assert identify_urdf(toy_humanoid(legs=("left", "right", "rear")).text()).structure != (
+        "Humanoid"
+    )
+
+
+def test_one_hinge_shoulders_in_a_pair_on_a_biped_are_arms() -> None:
+    robot = RobotText("biped")
+    for side in ("left", "right"):
+        builders.leg(robot, robot.root, f"{side}_leg", ("hip", "knee", "ankle"))
+        robot.chain(robot.root, [f"base_to_{side}_shoulder"])
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert (result.structure, result.body.count("arm")) == ("Humanoid", 2)

@@ -588,12 +588,12 @@ def hull_with_hydrodynamics(name: str) -> RobotText:
 
 
 def test_a_robot_named_as_a_surface_craft_floats_whatever_its_water_plugins_say() -> None:
-    for name in ("asv", "harbour_asv", "catamaran"):
+    for name in ("asv", "harbour_asv", "catamaran", "stinger_tug", "river_barge", "canoe2"):
         result = identify_urdf(hull_with_hydrodynamics(name).text())
         assert result.structure == "Surface Vessel", name
         assert f"robot name {name}" in "\n".join(result.evidence)
     # An ASV word inside another word is none; a submersible's name says nothing of a surface.
-    for name in ("vasvik", "auv"):
+    for name in ("vasvik", "auv", "tugger"):
         assert identify_urdf(hull_with_hydrodynamics(name).text()).structure == (
             "Underwater Vehicle"
         ), name
