@@ -87,7 +87,7 @@ def _plain(tag: str) -> str:
 
 
 def _tags(plugin: PluginTag) -> set[str]:
-    """The plugin's parameter tags, compared without case, ``_`` or ``-``."""
+    """The plugin's parameter tags, each made plain (:func:`_plain`)."""
     return {_plain(tag) for tag, _ in plugin.params}
 
 

@@ -14,8 +14,9 @@ with a file that configures joint controllers naming a joint of its legs, shippi
 walking software, velocity command, teleop or joystick) beside a workspace with no package
 named for one, command its joints one by one, and no gait is guessed for its legs; a flown
 body's packages that so name its rotors (by their names after a namespace) and ship no flight
-software (an attitude controller, a flight stack, a teleop) command its rotors one by one
-(:func:`joint_controllers`, with the profile's ``motion.gait`` or ``motion.flight``).
+software (an attitude controller, a flight stack, a teleop) command its rotors one by one, and
+no flight is guessed (:func:`joint_controllers`, with the profile's ``motion.gait`` or
+``motion.flight``).
 
 The same texts say what a body travels in when its description shows no way at all (one link
 and its mesh, a few sensor frames: a drone a simulator poses, an AUV drawn for RViz), or only

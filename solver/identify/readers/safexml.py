@@ -162,22 +162,6 @@ def _mend(raw: bytes, name: str, warnings: list[Fault], prologue: Prologue) -> b
             "xml-trailing-nul",
         )
         raw = stripped + b"\n"
-    body = raw.lstrip(b" \t\r\n")
-    if body is not raw and len(body) != len(raw) and body.startswith(b"<?xml"):
-        declaration = _DECLARATION.match(body)
-        if declaration is not None:
-            # Move the blank lines after the declaration, so every element keeps its line.
-            lead = raw[: len(raw) - len(body)]
-            end = declaration.end()
-            _warn(
-                warnings,
-                name,
-                lead.count(b"\n") + 1,
-                "the XML declaration is not at the "
-                "start of the document (blank lines before it); read anyway",
-                "xml-declaration",
-            )
-            raw = body[:end] + lead + body[end:]
     raw = _declaration_first(raw, name, warnings, prologue)
     declaration = _DECLARATION.match(raw)
     if declaration is not None:
@@ -198,14 +182,14 @@ def _mend(raw: bytes, name: str, warnings: list[Fault], prologue: Prologue) -> b
 
 
 def _declaration_first(raw: bytes, name: str, warnings: list[Fault], prologue: Prologue) -> bytes:
-    """XML declarations the prologue scan found out of place (one under a licence banner, a
-    second one a generator wrote after its own banner), which XML forbids and ROS's URDF
-    parser (TinyXML2) reads: the first moved to the start when none is there, the others
-    blanked; every line keeps its number; one warning. Only the prologue's own processing
-    instructions are touched (:attr:`Prologue.xml_declarations`), never text inside a
-    comment, another instruction or the document type."""
+    """XML declarations the prologue scan found out of place (one after blank lines or under a
+    licence banner, a second one a generator wrote after its own banner), which XML forbids
+    and ROS's URDF parser (TinyXML2) reads: the first moved to the start when none is there,
+    the others blanked; every line keeps its number; one warning. Only the prologue's own
+    processing instructions are touched (:attr:`Prologue.xml_declarations`), never text
+    inside a comment, another instruction or the document type."""
     spans = prologue.xml_declarations
-    if prologue.stop is not Stop.ROOT or not spans:
+    if not spans:
         return raw
     lead = len(_BOM) if raw.startswith(_BOM) else 0  # a declaration may follow a byte order mark
     in_place = _DECLARATION.match(raw, lead) is not None  # at the start, or moved there
@@ -216,8 +200,9 @@ def _declaration_first(raw: bytes, name: str, warnings: list[Fault], prologue: P
     if in_place:
         why = f"{len(misplaced)} more XML declaration(s) after the first"
     else:
-        before = "a comment" if b"<!--" in raw[lead:first] else "something"
-        why = f"the XML declaration is not at the start of the document ({before} before it)"
+        why = (
+            f"the XML declaration is not at the start of the document ({_before(raw[lead:first])})"
+        )
     _warn(warnings, name, raw.count(b"\n", 0, first) + 1, f"{why}; read anyway", "xml-declaration")
     pieces = [raw[:lead], b"" if in_place else _one_line(raw[first : misplaced[0][1]])]
     position = lead
@@ -225,6 +210,13 @@ def _declaration_first(raw: bytes, name: str, warnings: list[Fault], prologue: P
         pieces += [raw[position:start], bytes(c if c in b"\r\n" else 0x20 for c in raw[start:end])]
         position = end
     return b"".join(pieces) + raw[position:]
+
+
+def _before(text: bytes) -> str:
+    """What comes before a declaration out of place, in words."""
+    if not text.strip(b" \t\r\n"):
+        return "blank lines before it"
+    return "a comment before it" if b"<!--" in text else "something before it"
 
 
 def _one_line(text: bytes) -> bytes:
