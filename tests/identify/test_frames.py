@@ -96,6 +96,30 @@ def test_every_way_a_driver_is_given_its_frame_id_is_read() -> None:
     }
 
 
+@pytest.mark.parametrize(
+    "default",
+    [
+        "self.frame_id = rospy.get_param('~frame_id', 'imu_link')",
+        "frame_id = LaunchConfiguration('frame_id', default='imu_link')",
+        "DeclareLaunchArgument('imu_frame', default_value='/imu_link')",
+        'private_nh.param("frame_id", frame_id_, std::string("imu_link"));',
+        'nh.param<std::string>("imu_frame_id", frame, "imu_link");',
+    ],
+)
+def test_a_parameters_default_frame_id_is_read(default: str) -> None:
+    urdf = parse_urdf(ROVER, "rover.urdf")
+    assert named_frames(shipping(node=default), urdf, PROFILE) == {"imu_link": "frame id in node"}
+
+
+def test_a_default_given_to_another_key_names_no_frame() -> None:
+    urdf = parse_urdf(ROVER, "rover.urdf")
+    others = shipping(
+        node='nh.param("odom_frame", odom_frame_, std::string("imu_link"));\n'
+        "self.declare_parameter('frame_id', frame)\nget_param('~topic', 'imu_link')\n"
+    )
+    assert named_frames(others, urdf, PROFILE) == {}
+
+
 def test_a_frame_a_node_only_looks_up_is_no_drivers() -> None:
     urdf = parse_urdf(ROVER, "rover.urdf")
     consumers = shipping(
