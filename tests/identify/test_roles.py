@@ -411,3 +411,28 @@ def test_a_plugin_of_its_own_that_names_a_left_and_a_right_track_moves_the_body_
     assert identify_urdf(tracked_chair(tracks).text()).structure != "UGV"  # one side: no tracks
     elsewhere = f"{tracks}<right_track>stereo_right</right_track>"  # no link of the body
     assert identify_urdf(tracked_chair(elsewhere).text()).structure != "UGV"
+
+
+def two_hinges(word: str) -> RobotText:
+    """Two hinges with stops on level axles, one on each side, named ``WORD_izquierda_joint``
+    and ``WORD_derecha_joint``: wheels only by their name (a gripper's two fingers else)."""
+    base = RobotText("base")
+    for side, y in (("izquierda", 0.3), ("derecha", -0.3)):
+        builders.placed(
+            base, f"{word}_{side}_joint", "revolute", base.root, f"{word}_{side}",
+            xyz=f"0 {y} 0", axis="0 1 0",
+        )  # fmt: skip
+    return base
+
+
+@pytest.mark.parametrize("word", ["wheel", "rueda", "llanta", "ruota", "roue"])
+def test_a_wheel_named_in_spanish_italian_or_french_is_a_wheel(word: str) -> None:
+    """``Acople_1__rueda_1``: the wheel's name in the language its makers wrote."""
+    result = identify_urdf(two_hinges(word).text())
+    assert (result.structure, {role.role for role in result.roles}) == ("UGV", {"wheel"})
+
+
+@pytest.mark.parametrize("word", ["proue", "rouet"])
+def test_a_word_holding_roue_inside_it_names_no_wheel(word: str) -> None:
+    result = identify_urdf(two_hinges(word).text())
+    assert (result.structure, {role.role for role in result.roles}) == ("Gripper", {"finger"})
