@@ -436,3 +436,30 @@ def test_a_wheel_named_in_spanish_italian_or_french_is_a_wheel(word: str) -> Non
 def test_a_word_holding_roue_inside_it_names_no_wheel(word: str) -> None:
     result = identify_urdf(two_hinges(word).text())
     assert (result.structure, {role.role for role in result.roles}) == ("Gripper", {"finger"})
+
+
+def jaws(word: str) -> RobotText:
+    """A four-joint chain of unnamed axes (``eje_1``) ending in two hinged jaws named with
+    ``word`` (``garra_d``, ``garra_i``)."""
+    robot = RobotText("brazo")
+    tip = robot.chain(robot.root, [f"eje_{i}" for i in range(1, 5)])
+    for side, y in (("d", 0.02), ("i", -0.02)):
+        builders.placed(
+            robot, f"{word}_{side}", "revolute", tip, f"{word}_{side}_link",
+            xyz=f"0 {y} 0.05", axis="1 0 0",
+        )  # fmt: skip
+    return robot
+
+
+@pytest.mark.parametrize("word", ["pinza", "garra", "greifer"])
+def test_a_gripper_named_in_spanish_or_german_is_read_by_its_name(word: str) -> None:
+    """``Pinza_Garra_D``: a gripper's jaw named in the language its makers wrote."""
+    fingers = [r for r in identify_urdf(jaws(word).text()).roles if r.role == "finger"]
+    assert [r.evidence for r in fingers] == [f"gripper name ({word}_{s})" for s in "di"]
+
+
+def test_jaws_named_for_nothing_are_told_by_their_shape_alone() -> None:
+    fingers = [r for r in identify_urdf(jaws("xyz").text()).roles if r.role == "finger"]
+    assert [r.evidence for r in fingers] == [
+        "one of two jaws side by side at the end of a chain (eje_4_link)"
+    ] * 2
