@@ -88,15 +88,16 @@ _KEY = r"(?<![A-Za-z0-9_])" + _KEY_WORD
 _VALUE = r"(?:\$\([^()\n]{0,80}\))?/?([A-Za-z0-9_][A-Za-z0-9_/.-]{0,199})"
 # `frame_id: x`, `frame_id:=x`, `"frame_id": "x"`, `frame_id="x"`, `header.frame_id = 'x'`;
 # a parameter's default after its quoted key and a comma: `declare_parameter("frame_id", "x")`,
-# `rospy.get_param("~frame_id", "x")`, `LaunchConfiguration("frame_id", default="x")`, and
-# roscpp's `nh.param("frame_id", frame_id_, std::string("x"))` (a variable between).
-_DEFAULT = (
-    r"""[ \t]{0,3},[ \t]{0,8}(?:default(?:_value)?[ \t]{0,3}=[ \t]{0,3}"""
-    r"""|[A-Za-z_][A-Za-z0-9_.]{0,60}[ \t]{0,3},[ \t]{0,8}(?:std::string\([ \t]{0,3})?)?["']"""
-)
+# `rospy.get_param("~frame_id", "x")`, `LaunchConfiguration("frame_id", default="x")`; and
+# roscpp's `nh.param("frame_id", frame_id_, std::string("x"))`, a variable between, only in a
+# `param` call (a log line's `("frame_id", frame, "x")` gives no frame).
+_QUOTED_KEY = r"""["'][~/]?""" + _KEY + r"""["'][ \t]{0,3},[ \t]{0,8}"""
 _ASSIGNED = re.compile(
     _KEY + r"""["']?[ \t]{0,3}(?::=|:|=)[ \t]{0,8}["']?""" + _VALUE
-    + r"""|["'][~/]?""" + _KEY + r"""["']""" + _DEFAULT + _VALUE,
+    + r"|" + _QUOTED_KEY + r"""(?:default(?:_value)?[ \t]{0,3}=[ \t]{0,3})?["']""" + _VALUE
+    + r"""|(?<![A-Za-z0-9_])param(?:<[A-Za-z0-9_:]{0,30}>)?\([ \t]{0,3}""" + _QUOTED_KEY
+    + r"""[A-Za-z_][A-Za-z0-9_.]{0,60}[ \t]{0,3},[ \t]{0,8}(?:std::string\([ \t]{0,3})?["']"""
+    + _VALUE,
     re.IGNORECASE,
 )  # fmt: skip
 # A launch parameter or argument: <param name="frame_id" type="string" value="x"/>,

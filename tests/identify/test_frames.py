@@ -111,11 +111,12 @@ def test_a_parameters_default_frame_id_is_read(default: str) -> None:
     assert named_frames(shipping(node=default), urdf, PROFILE) == {"imu_link": "frame id in node"}
 
 
-def test_a_default_given_to_another_key_names_no_frame() -> None:
+def test_a_default_given_to_another_key_or_outside_a_param_call_names_no_frame() -> None:
     urdf = parse_urdf(ROVER, "rover.urdf")
     others = shipping(
         node='nh.param("odom_frame", odom_frame_, std::string("imu_link"));\n'
         "self.declare_parameter('frame_id', frame)\nget_param('~topic', 'imu_link')\n"
+        "ROS_INFO(\"frame_id\", frame, \"imu_link\");\nprint('frame_id', frame_id, 'imu_link')\n"
     )
     assert named_frames(others, urdf, PROFILE) == {}
 
