@@ -79,7 +79,7 @@ MAX_MANIFEST_BYTES = 64 * 1024
 # Package names the evidence line lists before "and N more".
 SHOWN_PACKAGES = 12
 
-TEXT_SUFFIXES = (".launch", ".xml", ".yaml", ".yml", ".py", ".cpp", ".cc", ".sh")
+TEXT_SUFFIXES = (".launch", ".xml", ".yaml", ".yml", ".py", ".cpp", ".cc", ".hpp", ".sh")
 # Folders whose files with no suffix are scripts (ROS 1 nodes: scripts/teleop, nodes/walker).
 SCRIPT_FOLDERS = frozenset({"scripts", "nodes", "bin"})
 # Folders no package ships controls in: builds, installs, logs, caches and tests.

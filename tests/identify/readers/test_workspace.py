@@ -308,6 +308,21 @@ def test_ros1_scripts_without_a_suffix_are_read(tmp_path: Path) -> None:
     assert [f.path for f in read(described).files] == ["rover_description/scripts/teleop"]
 
 
+def test_a_nodes_cpp_header_is_read_and_a_c_header_is_not(tmp_path: Path) -> None:
+    # A ROS 2 node class is often written whole in its .hpp; a .h is mostly a vendor's SDK.
+    described = package(
+        tmp_path / "src",
+        "arm_controller",
+        {
+            "include/arm_controller/node.hpp": "create_subscription",
+            "include/sdk/can.h": "struct frame;",
+        },
+    )
+    assert [f.path for f in read(described).files] == [
+        "arm_controller/include/arm_controller/node.hpp"
+    ]
+
+
 def test_the_workspace_is_the_src_folder_above_a_repository(tmp_path: Path) -> None:
     src = tmp_path / "ws" / "src"
     described = package(src / "rover", "rover_description")
