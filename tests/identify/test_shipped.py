@@ -49,6 +49,28 @@ def shipped_to_arms(text: str) -> list[list[str]]:
     return [list(shipped(structure, text)) for structure in ("Manipulator", "Mobile Manipulator")]
 
 
+@pytest.mark.parametrize(
+    ("name", "line"),
+    [
+        ("scripts/goals.py", "client = SimpleActionClient('move_base', MoveBaseAction)"),
+        ("src/planner.cpp", "std::vector<geometry_msgs::Pose> waypoints;"),
+    ],
+)
+def test_code_commented_out_in_a_script_or_a_node_ships_nothing(
+    tmp_path: Path, name: str, line: str
+) -> None:
+    mark = "//" if name.endswith(".cpp") else "#"
+
+    def controls_shipping(text: str, folder: str) -> dict[str, str]:
+        path = described(tmp_path / folder, rover_with_a_lidar(), "")
+        files = {name: f"#!/usr/bin/env python\n{text}\nuse(craft_description)\n"}
+        package(tmp_path / folder / "ws" / "src", "craft_navigation", files)
+        return controls_of(path)
+
+    assert "Waypoint" in controls_shipping(line, "running")
+    assert "Waypoint" not in controls_shipping(f"  {mark} {line}", "commented")
+
+
 def test_a_bringup_that_runs_nav2_ships_waypoint_goals_named_by_its_file() -> None:
     assert shipped("UGV", "IncludeLaunchDescription('nav2_bringup')") == {
         "Waypoint": "package craft_bringup: craft_bringup/launch/0.launch.py (nav2_bringup)"
@@ -908,6 +930,7 @@ def test_a_drone_without_its_packages_is_flown(tmp_path: Path) -> None:
         "remap: {from: cmd_vel, to: /copter/cmd_vel}",
         "<node pkg='teleop_twist_keyboard'/>",
         "<node pkg='joy' type='joy_node'/>",
+        "(thrust, err_roll, err_pitch) = pid(roll, pitch, yaw, thrust)",
     ],
 )
 def test_a_drone_whose_packages_ship_flight_software_is_only_flown(

@@ -421,6 +421,8 @@ def _read_into(owner: _Package, path: str, top: str, names: set[str], budget: _B
     text = _text(data)
     if path.endswith((".launch", ".xml")):
         text = _uncommented(text)
+    else:
+        text = _without_comment_lines(text, "//" if path.endswith(_CPP_SUFFIXES) else "#")
     if "kill" in text:
         text = _KILLS.sub("", text)
     owner.mentions.update(names.intersection(_WORD.findall(text)))
@@ -466,6 +468,21 @@ def _read(path: str, limit: int) -> bytes | None:
 # kill``) names what a script ends, not what it runs: it is left out up to the end of the
 # command (a newline, ``;``, ``&`` or ``|`` outside quotes), the rest of its line kept.
 _KILLS = re.compile(r"\b(pkill|killall|rosnode[ \t]+kill)\b(?:\"[^\"\n]*\"|'[^'\n]*'|[^\n;&|\"'])*")
+
+
+# C++ sources, whose comments open with ``//`` (``#`` opens a preprocessor line); Python,
+# YAML, shell and suffixless scripts comment with ``#``.
+_CPP_SUFFIXES = (".cpp", ".cc", ".hpp")
+
+
+def _without_comment_lines(text: str, mark: str) -> str:
+    """``text`` without its whole-line comments (a line whose first text is ``mark``; a
+    ``#!`` interpreter line kept): code commented out runs nothing."""
+    return "".join(
+        line
+        for line in text.splitlines(keepends=True)
+        if not line.lstrip().startswith(mark) or line.startswith("#!")
+    )
 
 
 def _uncommented(text: str) -> str:

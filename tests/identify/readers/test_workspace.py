@@ -323,6 +323,22 @@ def test_a_nodes_cpp_header_is_read_and_a_c_header_is_not(tmp_path: Path) -> Non
     ]
 
 
+def test_whole_line_comments_of_code_are_left_out_and_the_code_kept(tmp_path: Path) -> None:
+    described = package(
+        tmp_path / "src",
+        "rover_navigation",
+        {
+            "scripts/goals.py": "#!/usr/bin/env python\n  # go_to_pose(x, y)\nrun()  # trailing\n",
+            "src/node.cpp": "#include <rclcpp/rclcpp.hpp>\n// move_base\nspin(node);\n",
+        },
+    )
+    texts = {f.path: f.text for f in read(described).files}
+    assert texts == {
+        "rover_navigation/scripts/goals.py": "#!/usr/bin/env python\nrun()  # trailing\n",
+        "rover_navigation/src/node.cpp": "#include <rclcpp/rclcpp.hpp>\nspin(node);\n",
+    }
+
+
 def test_the_workspace_is_the_src_folder_above_a_repository(tmp_path: Path) -> None:
     src = tmp_path / "ws" / "src"
     described = package(src / "rover", "rover_description")
