@@ -9,9 +9,10 @@ Jaws are told by where they are too (:func:`jaws`): joints side by side on one l
 or slide about one line with nothing beyond them but their own followers (a linkage of mimic
 joints), closed by one motion (mimic joints follow one driver; not on a head, where a mirrored
 pair, or a pair swinging both ways about the line between them, is ears or eyelids) or, at the
-end of a chain of two
-joints or more, each by its own (a humanoid's split gripper). A hand is counted by its
-fingers, one tip per finger (:func:`finger_tips`).
+end of a chain of two joints or more, each by its own (a humanoid's split gripper); so are the
+joints of a body whose every motion is one motor's, turning on its link about three directions
+or more (a linkage gripper's fingers spread about its palm). A hand is counted by its fingers,
+one tip per finger (:func:`finger_tips`).
 
 Not here: the limb a hand ends (:mod:`solver.identify.limbs`), the other single-joint roles
 (:mod:`solver.identify.actuation`).
@@ -37,6 +38,10 @@ _FINGER = re.compile(r"finger|thumb|knuckle|phalan", re.IGNORECASE)
 _CHAIN_BEFORE_JAWS = 2
 # Places this close (metres) are one place.
 _SAME = 1e-4
+# A body's one motion turning joints on one link about this many directions or more closes
+# fingers spread about a palm; a follower's ratio this small moves nothing.
+_ABOUT_A_PALM = 3
+_STILL = 1e-6
 # The farthest a finger reaches from its first joint to its tip (metres): a hand's finger is
 # about 0.1 m, a gripper's jaw less; an arm, even a small one, reaches farther.
 _FINGER_REACH = 0.15
@@ -55,7 +60,36 @@ def jaws(tree: JointTree, taken: set[str]) -> dict[str, str]:
             why = f"one motion ({driver}, {len(group) - 1} mimic joint(s)) closes jaws side by side"
             found.update(dict.fromkeys(group, why))
     found.update(_jaw_pairs(tree, taken | set(found)))
+    found.update(_one_motion(tree, taken | set(found)))
     return found
+
+
+def _one_motion(tree: JointTree, taken: set[str]) -> dict[str, str]:
+    """A body whose every motion is one limited driver's, none named as another part, the
+    joints of that motion on the driver's link turning about :data:`_ABOUT_A_PALM` directions
+    or more (fingers spread about a palm; gears and a lever's jaws turn about one), each
+    follower moving: a gripper's linkage one motor closes."""
+    motions = [joint for joint in tree.urdf.joints if joint.movable]
+    drivers = {tree.couplings.driver(joint.name) for joint in motions}
+    driver = tree.urdf.joint(drivers.pop()) if len(drivers) == 1 else None
+    if (
+        driver is None
+        or driver.type not in ("revolute", "prismatic")
+        or driver.lower is None
+        or not taken.isdisjoint(joint.name for joint in motions)
+        or any(abs(joint.multiplier) <= _STILL for joint in motions)
+        or any(_named_otherwise(tree, joint.name) for joint in motions)
+    ):
+        return {}
+    directions: list[tuple[float, float, float]] = []
+    for joint in motions:
+        axis = local_axis(joint)
+        if joint.parent == driver.parent and not any(parallel(axis, d) for d in directions):
+            directions.append(axis)
+    if len(directions) < _ABOUT_A_PALM:
+        return {}
+    why = f"the body's only motion ({driver.name}) closes {len(directions)} fingers about its palm"
+    return dict.fromkeys((joint.name for joint in motions), why)
 
 
 def _jaw_pairs(tree: JointTree, taken: set[str]) -> dict[str, str]:

@@ -393,6 +393,40 @@ def test_a_parallel_linkage_of_four_knuckles_closed_by_one_motion_is_a_gripper()
     assert identify_urdf(robot.text()).structure == "Gripper"
 
 
+def three_fingers_about_a_palm(*, second_motor: bool = False) -> RobotText:
+    """Three unnamed fingers a third of a turn apart about the palm, each a hinge and a link
+    of its linkage, all following the first hinge (one motor); ``second_motor`` drives the
+    third finger on its own."""
+    robot = RobotText("r")
+    for i in range(3):
+        follows = "" if i == 0 or (second_motor and i == 2) else '<mimic joint="m0"/>'
+        turn = f"0 0 {i * 2.0944:.4f}"
+        builders.placed(robot, f"m{i}", "revolute", robot.root, f"m{i}_l", rpy=turn, axis="1 0 0")
+        robot.joints[-1] = robot.joints[-1].replace("</joint>", f"{follows}</joint>")
+        builders.placed(
+            robot,
+            f"s{i}",
+            "revolute",
+            f"m{i}_l",
+            f"s{i}_l",
+            xyz="0 0 0.03",
+            axis="1 0 0",
+            extra=f'<mimic joint="m{i}" multiplier="-1"/>',
+        )
+    return robot
+
+
+def test_three_fingers_one_motion_closes_about_a_palm_are_a_gripper() -> None:
+    result = identify_urdf(three_fingers_about_a_palm().text())
+    assert result.structure == "Gripper"
+    assert result.body is not None
+    assert any("the body's only motion (m0)" in role.evidence for role in result.body.roles)
+    # A second motor: the body's motions are no longer one.
+    other = identify_urdf(three_fingers_about_a_palm(second_motor=True).text())
+    assert other.body is not None
+    assert not any("the body's only motion" in role.evidence for role in other.body.roles)
+
+
 def palm_with_a_thumb(*, arm_beside: bool = False) -> RobotText:
     """A forearm's wrist joint into a palm carrying a thumb (one joint to its base, two
     thumb-named joints) and four three- or four-joint chains, two of them starting with a
