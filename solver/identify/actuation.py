@@ -563,14 +563,17 @@ def _carries_a_named_part(tree: JointTree, joint: Joint) -> bool:
 
 def _unnamed_spinners(tree: JointTree, taken: set[str]) -> Iterator[Joint]:
     """Endless joints of no role yet and no part's name, not on a part an endless joint turns
-    about a level axle (a rim's rollers): what could be wheels or rotors, told by place."""
+    about a level axle (a rim's rollers) nor carrying a sensor (a camera or a lidar on a
+    turning mount): what could be wheels or rotors, told by place."""
     known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
+    sensed = {sensor.link for sensor in tree.urdf.sensors if sensor.link}
     for joint in tree.urdf.joints:
         if (
             joint.endless
             and joint.actuated
             and joint.name not in taken
             and not (tree.parts_of(joint.name) | tree.parts_of(joint.child))
+            and sensed.isdisjoint((joint.child, *tree.urdf.fixed_below(joint.child)))
             and not _on_a_spinning_part(tree, joint, known)
         ):
             yield joint

@@ -271,7 +271,8 @@ def surface_hints(tree: JointTree, *, thrusters: int = 0) -> tuple[str, ...]:
     ``<surface>`` of numbers (where the water's surface lies, :func:`_water_level`); a body
     whose buoyancy compensation has a hull's reserve (it floats). With none of them, and nothing
     of a body below the surface (no plugin, sensor or frame of one), a GPS or a lidar says it:
-    satellites are heard, and a laser scans, only above the water. ``thrusters``: how many
+    satellites are heard, and a laser scans, only above the water; both together say it over
+    a water plugin of a body below (:func:`_heard_and_scanned`). ``thrusters``: how many
     thrusters the body has; any (an unnamed pair of screws, :mod:`solver.identify.actuation`)
     put it in water though no plugin or name says so. The robot's name as a surface craft's
     (``sailboat``, ``asv``, ``catamaran``, whole words; ``RoleReader.named_vessel``) floats a
@@ -299,6 +300,8 @@ def surface_hints(tree: JointTree, *, thrusters: int = 0) -> tuple[str, ...]:
                 }
             )
     hints += _floating_hull(tree)
+    if not hints:
+        hints += _heard_and_scanned(tree)
     if not hints and not underwater_hints(tree) and not water_frames(tree):
         hints += _nothing_dives(tree, thrusters)
     return tuple(dict.fromkeys(hints))
@@ -368,30 +371,44 @@ def _above_water_sensors(tree: JointTree) -> list[str]:
     """GPS receivers (sensor elements of a satellite type, plugins named so, or a frame fixed
     to the body named so) and lidars (a ray sensor the profile reads as a lidar: it scans in
     air, water absorbs its light)."""
+    # A receiver's frame alone, fixed to the hull (a description of frames for a driver's
+    # tf): as the DVL's frame says below (:func:`water_frames`), the GPS's says above.
+    known: dict[str, str | None] = {}
+    frames = [
+        f"{link.name} (a GPS frame: heard above water)"
+        for link in tree.urdf.links
+        if _GPS.search(link.name) and moved_by(tree.urdf, link.name, known) is None
+    ]
+    return [*_receivers(tree), *_lidars(tree), *frames][:1]
+
+
+def _heard_and_scanned(tree: JointTree) -> list[str]:
+    """A GPS receiver and a lidar both on the body (sensor elements or plugins): it works at
+    the surface, whatever water plugin it also carries (a hull simulated with a submersible's
+    hydrodynamics); a diver carries one of them at most."""
+    receivers, lidars = _receivers(tree), _lidars(tree)
+    return [receivers[0], lidars[0]] if receivers and lidars else []
+
+
+def _receivers(tree: JointTree) -> list[str]:
     found = [
         f"{s.name or s.type} (GPS: heard above water)"
         for s in tree.urdf.sensors
         if s.type in ("gps", "navsat")
     ]
-    found += [
+    return found + [
         f"{tree.reader.plugin_label(p)} (GPS: heard above water)"
         for p in tree.urdf.plugins
         if _GPS.search(f"{p.name} {p.filename}")
     ]
-    found += [
+
+
+def _lidars(tree: JointTree) -> list[str]:
+    return [
         f"{s.name or s.type} (lidar: scans in air)"
         for s in tree.urdf.sensors
         if element_kind(s, tree.profile) == "lidar"
     ]
-    # A receiver's frame alone, fixed to the hull (a description of frames for a driver's
-    # tf): as the DVL's frame says below (:func:`water_frames`), the GPS's says above.
-    known: dict[str, str | None] = {}
-    found += [
-        f"{link.name} (a GPS frame: heard above water)"
-        for link in tree.urdf.links
-        if _GPS.search(link.name) and moved_by(tree.urdf, link.name, known) is None
-    ]
-    return found[:1]
 
 
 def underwater_hints(tree: JointTree) -> tuple[str, ...]:

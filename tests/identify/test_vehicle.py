@@ -332,6 +332,21 @@ def test_a_lidar_on_a_hull_that_shows_nothing_of_diving_says_it_floats() -> None
     assert identify_urdf(robot.text()).structure == "Underwater Vehicle"
 
 
+def test_a_gps_and_a_lidar_float_a_hull_simulated_with_a_submersibles_plugin() -> None:
+    robot = thrusters_by_name()
+    robot.add(builders.model_plugin("hull", "libuuv_underwater_object_ros_plugin.so"))
+    robot.add(builders.gazebo_sensor("base_link", "ray", "scanner", SCAN))
+    # One of them is not enough against the plugin: a diver may carry either.
+    assert identify_urdf(robot.text()).structure == "Underwater Vehicle"
+    robot.add(builders.gazebo_sensor("base_link", "gps", "gps"))
+    result = identify_urdf(robot.text())
+    assert result.structure == "Surface Vessel"
+    assert (
+        "floats at the surface: gps (GPS: heard above water), scanner (lidar: scans in air)"
+        in result.evidence
+    )
+
+
 def test_a_one_ray_range_finder_on_a_hull_says_nothing_of_the_surface() -> None:
     robot = thrusters_by_name()
     robot.add(builders.model_plugin("float", "libbuoyancy_gazebo_plugin.so"))
