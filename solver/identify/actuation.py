@@ -563,10 +563,11 @@ def _carries_a_named_part(tree: JointTree, joint: Joint) -> bool:
 
 def _unnamed_spinners(tree: JointTree, taken: set[str]) -> Iterator[Joint]:
     """Endless joints of no role yet and no part's name, not on a part an endless joint turns
-    about a level axle (a rim's rollers) nor carrying a sensor (a camera or a lidar on a
-    turning mount): what could be wheels or rotors, told by place."""
+    about a level axle (a rim's rollers) nor carrying a sensor a mount points (a camera, a
+    lidar or a range finder: a wheel's contact or IMU sensor turns with it): what could be
+    wheels or rotors, told by place."""
     known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
-    sensed = {sensor.link for sensor in tree.urdf.sensors if sensor.link}
+    sensed = tree.sensor_links
     for joint in tree.urdf.joints:
         if (
             joint.endless

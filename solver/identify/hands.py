@@ -20,6 +20,7 @@ Not here: the limb a hand ends (:mod:`solver.identify.limbs`), the other single-
 
 from __future__ import annotations
 
+import math
 import re
 
 from solver.identify.couplings import Walk, jaw_groups
@@ -42,6 +43,8 @@ _SAME = 1e-4
 # fingers spread about a palm; a follower's ratio this small moves nothing.
 _ABOUT_A_PALM = 3
 _STILL = 1e-6
+# A direction within about 6 degrees of square to the palm's axis is square to it.
+_SQUARE = 0.1
 # The farthest a finger reaches from its first joint to its tip (metres): a hand's finger is
 # about 0.1 m, a gripper's jaw less; an arm, even a small one, reaches farther.
 _FINGER_REACH = 0.15
@@ -86,10 +89,22 @@ def _one_motion(tree: JointTree, taken: set[str]) -> dict[str, str]:
         axis = local_axis(joint)
         if joint.parent == driver.parent and not any(parallel(axis, d) for d in directions):
             directions.append(axis)
-    if len(directions) < _ABOUT_A_PALM:
+    if len(directions) < _ABOUT_A_PALM or not _about_one_line(directions):
         return {}
-    why = f"the body's only motion ({driver.name}) closes {len(directions)} fingers about its palm"
+    why = f"the body's only motion ({driver.name}) closes a linkage spread about its palm"
     return dict.fromkeys((joint.name for joint in motions), why)
+
+
+def _about_one_line(directions: list[tuple[float, float, float]]) -> bool:
+    """Every direction square to one line (the palm's axis): fingers spread round a palm
+    hinge about tangents to it; a gearbox's shafts (along x, y and z) do not."""
+    (ax, ay, az), (bx, by, bz) = directions[0], directions[1]
+    normal = (ay * bz - az * by, az * bx - ax * bz, ax * by - ay * bx)
+    size = math.sqrt(sum(c * c for c in normal))
+    return all(
+        abs(sum(n * d for n, d in zip(normal, axis, strict=True))) <= _SQUARE * size
+        for axis in directions[2:]
+    )
 
 
 def _jaw_pairs(tree: JointTree, taken: set[str]) -> dict[str, str]:

@@ -272,7 +272,8 @@ def surface_hints(tree: JointTree, *, thrusters: int = 0) -> tuple[str, ...]:
     whose buoyancy compensation has a hull's reserve (it floats). With none of them, and nothing
     of a body below the surface (no plugin, sensor or frame of one), a GPS or a lidar says it:
     satellites are heard, and a laser scans, only above the water; both together say it over
-    a water plugin of a body below (:func:`_heard_and_scanned`). ``thrusters``: how many
+    a submersible's water plugin, though over nothing else that dives it
+    (:func:`_heard_and_scanned`). ``thrusters``: how many
     thrusters the body has; any (an unnamed pair of screws, :mod:`solver.identify.actuation`)
     put it in water though no plugin or name says so. The robot's name as a surface craft's
     (``sailboat``, ``asv``, ``catamaran``, whole words; ``RoleReader.named_vessel``) floats a
@@ -300,7 +301,7 @@ def surface_hints(tree: JointTree, *, thrusters: int = 0) -> tuple[str, ...]:
                 }
             )
     hints += _floating_hull(tree)
-    if not hints:
+    if not hints and not _dives_but_by_plugins(tree):
         hints += _heard_and_scanned(tree)
     if not hints and not underwater_hints(tree) and not water_frames(tree):
         hints += _nothing_dives(tree, thrusters)
@@ -383,11 +384,28 @@ def _above_water_sensors(tree: JointTree) -> list[str]:
 
 
 def _heard_and_scanned(tree: JointTree) -> list[str]:
-    """A GPS receiver and a lidar both on the body (sensor elements or plugins): it works at
-    the surface, whatever water plugin it also carries (a hull simulated with a submersible's
-    hydrodynamics); a diver carries one of them at most."""
+    """A GPS receiver (a sensor element or a plugin) and a lidar (a sensor element) both on the
+    body: it works at the surface, whatever water plugin it also carries (a hull simulated with
+    a submersible's hydrodynamics); a diver carries one of them at most. Not read when anything
+    but a water plugin says the body dives (:func:`_dives_but_by_plugins`)."""
     receivers, lidars = _receivers(tree), _lidars(tree)
     return [receivers[0], lidars[0]] if receivers and lidars else []
+
+
+def _dives_but_by_plugins(tree: JointTree) -> bool:
+    """Something other than a water plugin puts the body below the surface: a submersible's
+    name, a sensor the ``underwater`` pattern reads (a DVL, a depth gauge) or its frame, a
+    pressure sensor."""
+    pattern = tree.profile.plugin_pattern("underwater")
+    return (
+        tree.reader.named_submersible
+        or bool(water_frames(tree))
+        or _pressure_sensor(tree)
+        or (
+            pattern is not None
+            and any(pattern.search(f"{s.type} {s.device_text}") for s in tree.urdf.sensors)
+        )
+    )
 
 
 def _receivers(tree: JointTree) -> list[str]:

@@ -83,6 +83,17 @@ def test_unnamed_endless_joints_carrying_sensors_are_turning_mounts_not_wheels()
     assert result.body.wheels == ()
 
 
+@pytest.mark.parametrize("kind", ["contact", "imu", "force_torque"])
+def test_a_sensor_that_turns_with_a_wheel_leaves_it_a_wheel(kind: str) -> None:
+    robot = RobotText("rover")
+    _four_spinning_leaves(robot, -0.1)
+    for corner in ("fl", "fr", "rl", "rr"):
+        robot.add(builders.gazebo_sensor(f"{corner}_Link", kind, f"{corner}_{kind}"))
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert result.body.wheels == ("fl_joint", "fr_joint", "rl_joint", "rr_joint")
+
+
 def test_unnamed_endless_joints_on_level_axles_above_the_origin_are_wheels_too() -> None:
     # A base whose origin is low (a wheel's axle 3 cm above it): the axles are level across
     # the body, so these turn as wheels do, whatever the origin's height.

@@ -427,6 +427,19 @@ def test_three_fingers_one_motion_closes_about_a_palm_are_a_gripper() -> None:
     assert not any("the body's only motion" in role.evidence for role in other.body.roles)
 
 
+def test_a_gearbox_whose_shafts_turn_along_x_y_and_z_is_no_gripper() -> None:
+    robot = RobotText("gearbox")
+    builders.placed(robot, "input", "revolute", robot.root, "in_l", axis="1 0 0")
+    for name, axis in (("out_y", "0 1 0"), ("out_z", "0 0 1")):
+        builders.placed(
+            robot, name, "revolute", robot.root, f"{name}_l", axis=axis,
+            extra='<mimic joint="input"/>',
+        )  # fmt: skip
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert not any("the body's only motion" in role.evidence for role in result.body.roles)
+
+
 def palm_with_a_thumb(*, arm_beside: bool = False) -> RobotText:
     """A forearm's wrist joint into a palm carrying a thumb (one joint to its base, two
     thumb-named joints) and four three- or four-joint chains, two of them starting with a

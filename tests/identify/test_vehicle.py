@@ -345,6 +345,9 @@ def test_a_gps_and_a_lidar_float_a_hull_simulated_with_a_submersibles_plugin() -
         "floats at the surface: gps (GPS: heard above water), scanner (lidar: scans in air)"
         in result.evidence
     )
+    # Over a DVL they say nothing: an AUV surfaces for a fix and may scan its sea floor.
+    robot.add(builders.gazebo_sensor("dvl_link", "dvl", "dvl"))
+    assert identify_urdf(robot.text()).structure == "Underwater Vehicle"
 
 
 def test_a_one_ray_range_finder_on_a_hull_says_nothing_of_the_surface() -> None:

@@ -475,14 +475,17 @@ _KILLS = re.compile(r"\b(pkill|killall|rosnode[ \t]+kill)\b(?:\"[^\"\n]*\"|'[^'\
 _CPP_SUFFIXES = (".cpp", ".cc", ".hpp")
 
 
+# A whole line of comment: its first text is the mark (``#!`` is an interpreter's line).
+_COMMENT_LINES = {
+    "#": re.compile(r"^[ \t]*#(?!!)[^\n]*(?:\n|$)", re.MULTILINE),
+    "//": re.compile(r"^[ \t]*//[^\n]*(?:\n|$)", re.MULTILINE),
+}
+
+
 def _without_comment_lines(text: str, mark: str) -> str:
-    """``text`` without its whole-line comments (a line whose first text is ``mark``; a
-    ``#!`` interpreter line kept): code commented out runs nothing."""
-    return "".join(
-        line
-        for line in text.splitlines(keepends=True)
-        if not line.lstrip().startswith(mark) or line.startswith("#!")
-    )
+    """``text`` without its whole-line comments (a line, split at newlines only, whose first
+    text is ``mark``; a ``#!`` line kept): code commented out runs nothing."""
+    return _COMMENT_LINES[mark].sub("", text)
 
 
 def _uncommented(text: str) -> str:

@@ -328,13 +328,15 @@ def test_whole_line_comments_of_code_are_left_out_and_the_code_kept(tmp_path: Pa
         tmp_path / "src",
         "rover_navigation",
         {
-            "scripts/goals.py": "#!/usr/bin/env python\n  # go_to_pose(x, y)\nrun()  # trailing\n",
+            "scripts/goals.py": (
+                "#!/usr/bin/env python\n  # go_to_pose(x, y)\nrun()  # trailing\na\x0b#b\n"
+            ),
             "src/node.cpp": "#include <rclcpp/rclcpp.hpp>\n// move_base\nspin(node);\n",
         },
     )
     texts = {f.path: f.text for f in read(described).files}
     assert texts == {
-        "rover_navigation/scripts/goals.py": "#!/usr/bin/env python\nrun()  # trailing\n",
+        "rover_navigation/scripts/goals.py": "#!/usr/bin/env python\nrun()  # trailing\na\x0b#b\n",
         "rover_navigation/src/node.cpp": "#include <rclcpp/rclcpp.hpp>\nspin(node);\n",
     }
 
