@@ -68,21 +68,13 @@ def jaws(tree: JointTree, taken: set[str]) -> dict[str, str]:
 
 
 def _one_motion(tree: JointTree, taken: set[str]) -> dict[str, str]:
-    """A body whose every motion is one limited driver's, none named as another part, the
-    joints of that motion on the driver's link turning about :data:`_ABOUT_A_PALM` directions
-    or more (fingers spread about a palm; gears and a lever's jaws turn about one), each
-    follower moving: a gripper's linkage one motor closes."""
+    """A body whose every motion is one limited driver's (:func:`_sole_driver`), the joints of
+    that motion on the driver's link turning about :data:`_ABOUT_A_PALM` directions or more,
+    square to one line (fingers spread about a palm; gears and a lever's jaws turn about one):
+    a gripper's linkage one motor closes."""
     motions = [joint for joint in tree.urdf.joints if joint.movable]
-    drivers = {tree.couplings.driver(joint.name) for joint in motions}
-    driver = tree.urdf.joint(drivers.pop()) if len(drivers) == 1 else None
-    if (
-        driver is None
-        or driver.type not in ("revolute", "prismatic")
-        or driver.lower is None
-        or not taken.isdisjoint(joint.name for joint in motions)
-        or any(abs(joint.multiplier) <= _STILL for joint in motions)
-        or any(_named_otherwise(tree, joint.name) for joint in motions)
-    ):
+    driver = _sole_driver(tree, motions, taken)
+    if driver is None:
         return {}
     directions: list[tuple[float, float, float]] = []
     for joint in motions:
@@ -93,6 +85,23 @@ def _one_motion(tree: JointTree, taken: set[str]) -> dict[str, str]:
         return {}
     why = f"the body's only motion ({driver.name}) closes a linkage spread about its palm"
     return dict.fromkeys((joint.name for joint in motions), why)
+
+
+def _sole_driver(tree: JointTree, motions: list[Joint], taken: set[str]) -> Joint | None:
+    """The one limited joint every one of ``motions`` is or follows, each follower moving and
+    none named as another part nor ``taken``; None when there is no such joint."""
+    drivers = {tree.couplings.driver(joint.name) for joint in motions}
+    driver = tree.urdf.joint(drivers.pop()) if len(drivers) == 1 else None
+    if (
+        driver is None
+        or driver.type not in ("revolute", "prismatic")
+        or driver.lower is None
+        or not taken.isdisjoint(joint.name for joint in motions)
+        or any(abs(joint.multiplier) <= _STILL for joint in motions)
+        or any(_named_otherwise(tree, joint.name) for joint in motions)
+    ):
+        return None
+    return driver
 
 
 def _about_one_line(directions: list[tuple[float, float, float]]) -> bool:
