@@ -664,6 +664,7 @@ def test_a_body_that_shows_no_way_of_travelling_floats_when_its_packages_are_a_b
         "lawn_mower: true",
         "mower_blade: off",
         "wheelchair_driver",
+        "<node pkg='segway_sim'/>",
     ],
 )
 def test_a_body_that_shows_no_way_of_travelling_drives_when_its_packages_are_a_ground_vehicles(
@@ -689,6 +690,7 @@ def test_ground_words_inside_longer_words_say_nothing(tmp_path: Path) -> None:
         "px4 posix_sitl: iris, plane, rover",  # a flight stack lists rovers
         "<node pkg='uuv_control'/> diff_drive",  # a submersible's simulator's example
         "<node pkg='agv_driver'/> # TODO: port the drone's teleop",  # a rover names a drone
+        "<node pkg='segway_sim' type='mpc_drone_node'/>",  # a Segway and a drone it carries
     ],
 )
 def test_a_ground_word_beside_another_mediums_says_nothing(tmp_path: Path, bringup: str) -> None:
