@@ -567,14 +567,13 @@ def _unnamed_spinners(tree: JointTree, taken: set[str]) -> Iterator[Joint]:
     lidar or a range finder: a wheel's contact or IMU sensor turns with it): what could be
     wheels or rotors, told by place."""
     known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
-    sensed = tree.sensor_links
     for joint in tree.urdf.joints:
         if (
             joint.endless
             and joint.actuated
             and joint.name not in taken
             and not (tree.parts_of(joint.name) | tree.parts_of(joint.child))
-            and sensed.isdisjoint((joint.child, *tree.urdf.fixed_below(joint.child)))
+            and not points_a_sensor(tree, joint)
             and not _on_a_spinning_part(tree, joint, known)
         ):
             yield joint

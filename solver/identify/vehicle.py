@@ -396,15 +396,11 @@ def _dives_but_by_plugins(tree: JointTree) -> bool:
     """Something other than a water plugin puts the body below the surface: a submersible's
     name, a sensor the ``underwater`` pattern reads (a DVL, a depth gauge) or its frame, a
     pressure sensor."""
-    pattern = tree.profile.plugin_pattern("underwater")
     return (
         tree.reader.named_submersible
         or bool(water_frames(tree))
         or _pressure_sensor(tree)
-        or (
-            pattern is not None
-            and any(pattern.search(f"{s.type} {s.device_text}") for s in tree.urdf.sensors)
-        )
+        or bool(_diving_sensors(tree))
     )
 
 
@@ -433,19 +429,26 @@ def underwater_hints(tree: JointTree) -> tuple[str, ...]:
     """Thruster and underwater plugins, and sensors (by type, name or plugin) the profile's
     ``underwater`` pattern reads: a DVL, a pressure sensor; the robot's name as a submersible's
     (``auv``, ``rov``, whole words)."""
-    pattern = tree.profile.plugin_pattern("underwater")
     if not tree.reader.marine:
         return ()
     hints = [*tree.labels("thruster"), *tree.labels("underwater")]
     if tree.reader.named_submersible:  # an AUV, an ROV: a body below the surface
         hints.append(f"robot name {tree.urdf.name}")
-    if pattern is not None:
-        hints += [
-            sensor.name
-            for sensor in tree.urdf.sensors
-            if pattern.search(f"{sensor.type} {sensor.device_text}")
-        ]
+    hints += _diving_sensors(tree)
     return tuple(dict.fromkeys(hints))
+
+
+def _diving_sensors(tree: JointTree) -> list[str]:
+    """The sensors (by type, name or plugin) the profile's ``underwater`` pattern reads: a
+    DVL, a subsea pressure sensor."""
+    pattern = tree.profile.plugin_pattern("underwater")
+    if pattern is None:
+        return []
+    return [
+        sensor.name
+        for sensor in tree.urdf.sensors
+        if pattern.search(f"{sensor.type} {sensor.device_text}")
+    ]
 
 
 def water_frames(tree: JointTree) -> tuple[str, ...]:
