@@ -242,11 +242,17 @@ def _upright(axis: tuple[float, float, float]) -> bool:
 
 def _hangs_freely(tree: JointTree, link: str, known: dict[str, str | None]) -> bool:
     """No joint above ``link`` up to the root is driven (a transmission or ros2_control) but
-    about an upright axis (steering)."""
+    about an upright axis (steering), in its parent's frame or as the body rests (a rover's
+    steering joint on a deployment link whose frame is turned)."""
     driven = tree.urdf.controlled_joints
 
     def lifts(joint: Joint) -> bool:
-        return joint.movable and joint.name in driven and not _upright(local_axis(joint))
+        return (
+            joint.movable
+            and joint.name in driven
+            and not _upright(local_axis(joint))
+            and not _upright(tree.poses.axis(joint))
+        )
 
     return nearest_above(tree.urdf, link, known, lifts) is None
 

@@ -632,6 +632,28 @@ def test_unnamed_wheels_on_driven_steering_knuckles_are_wheels_and_a_flippers_ar
     assert roles["fa"] not in ("wheel", "caster")
 
 
+def test_unnamed_wheels_steered_by_joints_upright_only_as_the_body_rests_are_wheels() -> None:
+    # A planetary rover: each wheel on a driven steering joint hung from a passive deployment
+    # link whose frame is turned a quarter about x, so the steering axis, (0, -1, 0) in its
+    # parent's frame, stands upright as the body rests.
+    rover = RobotText("rover")
+    for i, (x, y) in enumerate(((0.3, 0.3), (0.3, -0.3), (-0.3, 0.3), (-0.3, -0.3))):
+        deploy = builders.placed(
+            rover, f"d{i}", "revolute", rover.root, f"d{i}_l", xyz=f"{x} {y} 0",
+            rpy="-1.5707963 0 0", axis="1 0 0",
+        )  # fmt: skip
+        steer = builders.placed(rover, f"s{i}", "revolute", deploy, f"s{i}_l", axis="0 -1 0")
+        builders.placed(
+            rover, f"w{i}", "continuous", steer, f"w{i}_l", xyz="0 0 -0.09",
+            rpy="-1.5707963 0 0", axis="0 0 1",
+        )  # fmt: skip
+        rover.add(builders.transmission(f"s{i}") + builders.transmission(f"w{i}"))
+    result = identify_urdf(rover.text())
+    assert result.structure == "UGV"
+    assert result.body is not None
+    assert result.body.wheels == ("w0", "w1", "w2", "w3")
+
+
 def test_a_chain_of_20000_endless_joints_is_read_in_one_walk() -> None:
     # Whether each joint carries only rollers is told from its own child's joints, not the
     # whole subtree below it (which took a minute on such a chain).
