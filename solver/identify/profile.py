@@ -17,6 +17,7 @@ Not here: applying the profile (:mod:`solver.identify.body`, :mod:`~solver.ident
 from __future__ import annotations
 
 import hashlib
+import math
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -197,7 +198,7 @@ SENSOR_TYPE = "sensor_type"
 SENSOR_COUNT = "sensor_count"
 ROLES = (MOTION_CONTROL, SENSOR_TYPE, SENSOR_COUNT)
 _STRUCTURE_KEYS = {"name", "when", "expect", "kinematic_types", "confidence", "description"}
-_ELEMENT_KEYS = {"kind", "types", "match", "max_rays"}
+_ELEMENT_KEYS = {"kind", "types", "match", "max_rays", "wider_than"}
 _PLUGIN_RULE_KEYS = {"kind", "match"}
 _TOPIC_SENSOR_KEYS = {"kind", "types", "match", "direction"}
 _TOPIC_CONTROL_KEYS = {"control", "types", "match", "direction"}
@@ -344,6 +345,9 @@ class SensorRule:
     # Ray sensors only: at most this many rays (horizontal x vertical samples). A range finder
     # casts one; a lidar sweeps hundreds.
     max_rays: int | None = None
+    # Cameras only: a horizontal field of view wider than this many degrees (a panoramic
+    # camera sees more than a half-turn; a fisheye lens less).
+    wider_than: int | None = None
 
     def accepts(
         self,
@@ -351,10 +355,14 @@ class SensorRule:
         text: str,
         direction: str | None = None,
         rays: int | None = None,
+        fov: float | None = None,
     ) -> bool:
+        """``fov``: the sensor's horizontal field of view in radians, when it says one."""
         if self.types and kind_or_type not in self.types:
             return False
         if self.max_rays is not None and (rays is None or rays > self.max_rays):
+            return False
+        if self.wider_than is not None and (fov is None or math.degrees(fov) <= self.wider_than):
             return False
         if self.direction is not None and direction is not None and direction != self.direction:
             return False
@@ -817,8 +825,12 @@ def _sensor_rules(
         if rays is not None and rays < 1:
             reader.fault((*item, "max_rays"), f"max_rays must be 1 or more, got {rays}")
             rays = None
+        wider = reader.integer((*item, "wider_than"), "degrees", required=False)
+        if wider is not None and not 0 <= wider < 360:
+            reader.fault((*item, "wider_than"), f"wider_than must be 0 to 359 degrees, got {wider}")
+            wider = None
         location = reader.document.location(item)
-        found.append(SensorRule(kind, allowed, match, direction, location, rays))
+        found.append(SensorRule(kind, allowed, match, direction, location, rays, wider))
     return tuple(found)
 
 

@@ -474,11 +474,12 @@ def element_kind(tag: SensorTag, profile: Profile) -> str:
     """The kind of device a sensor element is, by the profile's element rules."""
     kind = tag.type or "unknown"  # a URDF <sensor> with no kind element: told by its name
     rays = _rays(tag)
+    fov = tag.horizontal_fov
     for rule in profile.element_rules:
-        if rule.accepts(kind, tag.device_text, rays=rays):
+        if rule.accepts(kind, tag.device_text, rays=rays, fov=fov):
             return rule.kind
     for rule in profile.element_rules:  # topic names last
-        if rule.match is not None and rule.accepts(kind, tag.text, rays=rays):
+        if rule.match is not None and rule.accepts(kind, tag.text, rays=rays, fov=fov):
             return rule.kind
     return kind
 

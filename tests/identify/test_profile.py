@@ -126,6 +126,14 @@ def test_the_navigation_guess_is_optional_and_its_fields_are_checked() -> None:
     assert "unknown navigation field 'guess'" in fault.message
 
 
+@pytest.mark.parametrize("degrees", [-1, 360])
+def test_a_field_of_view_no_camera_can_have_is_a_located_fault(degrees: int) -> None:
+    text = SHIPPED.replace("wider_than: 180}", f"wider_than: {degrees}}}")
+    fault = the_fault(text)
+    assert fault.location.path.endswith(".wider_than")
+    assert f"0 to 359 degrees, got {degrees}" in fault.message
+
+
 def test_a_navigation_need_for_nothing_that_moves_a_body_is_a_located_fault() -> None:
     text = SHIPPED.replace("      wheels: [lidar, gps]\n", "      wheel: [lidar, gps]\n")
     fault = the_fault(text)

@@ -42,7 +42,12 @@ def kinds(*sensors: str) -> list[tuple[str, str | None, int]]:
         ),
         (builders.gazebo_sensor("cam", "multicamera", "stereo"), ("stereo_camera", "3D Camera", 1)),
         (
-            builders.gazebo_sensor("cam", "wideanglecamera", "fisheye"),
+            builders.gazebo_sensor(
+                "cam",
+                "wideanglecamera",
+                "panorama",
+                "<camera><horizontal_fov>6.2832</horizontal_fov></camera>",
+            ),
             ("wide_angle_camera", "360 Camera", 1),
         ),
         (
@@ -365,6 +370,21 @@ def ray(link: str, name: str, samples: int, sweep: float, reach: float) -> str:
         f"<range><max>{reach}</max></range></ray>"
     )
     return builders.gazebo_sensor(link, "gpu_lidar", name, scan)
+
+
+@pytest.mark.parametrize(
+    ("fov", "kind"),
+    [(None, "camera"), (2.88, "camera"), (3.1415, "camera"), (3.3, "wide_angle_camera")],
+)
+def test_a_wide_angle_camera_is_panoramic_only_when_it_sees_more_than_a_half_turn(
+    fov: float | None, kind: str
+) -> None:
+    # A fisheye lens written as Gazebo's wideanglecamera (165 degrees, 180) is a camera; one
+    # that sees more than a half-turn is a panoramic camera; one that says no field of view
+    # is a camera (Gazebo's default view is 60 degrees).
+    inner = "" if fov is None else f"<camera><horizontal_fov>{fov}</horizontal_fov></camera>"
+    found = kinds(builders.gazebo_sensor("cam", "wideanglecamera", "front_fisheye", inner))
+    assert [k for k, _, _ in found] == [kind]
 
 
 def test_a_one_ray_range_sensor_is_no_lidar_and_four_of_them_stay_four() -> None:
