@@ -39,6 +39,7 @@ _FINGER = re.compile(r"finger|thumb|knuckle|phalan", re.IGNORECASE)
 _CHAIN_BEFORE_JAWS = 2
 # Places this close (metres) are one place.
 _SAME = 1e-4
+_ASIDE = 0.1
 # A body's one motion turning joints on one link about this many directions or more closes
 # fingers spread about a palm; a follower's ratio this small moves nothing.
 _ABOUT_A_PALM = 3
@@ -182,7 +183,9 @@ def _named_otherwise(tree: JointTree, name: str) -> bool:
 def _side_by_side(pair: list[Joint]) -> bool:
     """Two joints of one kind about parallel axes, placed apart along one line only."""
     one, other = pair
-    apart = [abs(a - b) > _SAME for a, b in zip(one.origin, other.origin, strict=True)]
+    offsets = [abs(a - b) for a, b in zip(one.origin, other.origin, strict=True)]
+    across = max(offsets) * _ASIDE
+    apart = [offset > max(_SAME, across) for offset in offsets]
     return (
         one.type == other.type and parallel(local_axis(one), local_axis(other)) and sum(apart) <= 1
     )

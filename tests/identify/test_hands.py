@@ -227,6 +227,34 @@ def test_two_jaws_side_by_side_at_the_end_of_an_arm_make_it_end_in_a_gripper() -
     assert [limb.gripper for limb in result.body.limbs if limb.kind == "arm"] == [True, True]
 
 
+def test_jaws_apart_along_one_line_but_a_hair_across_it_are_side_by_side() -> None:
+    # A CAD export places a six-joint arm's two unnamed sliding fingers 0.8 m apart across the
+    # tool and 0.03 m apart along its axis (the second finger turned half a turn about x):
+    # apart along one line, within a tenth of the distance; beside it by as much as a third
+    # they are no jaws by that rule.
+    def arm(across: float) -> RobotText:
+        robot = RobotText("arm6")
+        tool = builders.arm(robot, robot.root, gripper=False)
+        for name, y, z, rpy in (
+            ("s1", -0.4, -across / 2, "0 0 0"),
+            ("s2", 0.4, across / 2, "3.1416 0 0"),
+        ):
+            builders.placed(
+                robot, name, "prismatic", tool, f"{name}_l", xyz=f"0.53 {y} {z}", rpy=rpy
+            )
+        return robot
+
+    def read(across: float) -> tuple[list[str], list[bool]]:
+        body = identify_urdf(arm(across).text()).body
+        assert body is not None
+        found = {role.joint: role.role for role in body.roles}
+        ends = [limb.gripper for limb in body.limbs if limb.kind == "arm"]
+        return [found.get(name, "") for name in ("s1", "s2")], ends
+
+    assert read(0.032) == (["finger", "finger"], [True])
+    assert read(0.3)[0] == ["other", "other"]
+
+
 def spread_hand(fingers: int = 4) -> RobotText:
     """A hand of unnamed joints: on each metacarpal link fixed to the palm, a spreading joint
     (``aaN``) into a knuckle link that carries a 3-joint finger and a 1-joint tendon driver."""
