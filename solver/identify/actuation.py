@@ -184,7 +184,7 @@ def _steering_beside(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Ro
     if not steered:
         return {}
     found = {}
-    known: dict[str, str | None] = {}  # link -> the nearest driven joint above it
+    known: dict[bool, dict[str, str | None]] = {}  # link -> the nearest driven joint above it
     for joint in tree.urdf.joints:
         if (
             joint.name not in roles
@@ -194,7 +194,7 @@ def _steering_beside(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Ro
             and joint.child not in tree.moving_below
             and not (tree.parts_of(joint.name) | tree.parts_of(joint.child))
             and not points_a_sensor(tree, joint)  # a spinning scanner's mount is a head
-            and _hangs_freely(tree, joint.parent, known)  # not an arm's last joint
+            and _hangs_freely(tree, joint, known)  # not an arm's last joint
         ):
             why = f"a driven vertical swivel beside {len(steered)} steering joint(s)"
             found[joint.name] = Role(joint.name, "steering", why)
@@ -240,21 +240,21 @@ def _upright(axis: tuple[float, float, float]) -> bool:
     return abs(axis[_Z_AXIS]) >= 1 - _LEVEL
 
 
-def _hangs_freely(tree: JointTree, link: str, known: dict[str, str | None]) -> bool:
-    """No joint above ``link`` up to the root is driven (a transmission or ros2_control) but
-    about an upright axis (steering), in its parent's frame or as the body rests (a rover's
-    steering joint on a deployment link whose frame is turned)."""
+def _hangs_freely(tree: JointTree, leaf: Joint, known: dict[bool, dict[str, str | None]]) -> bool:
+    """No joint above ``leaf`` (a wheel, a swivel) up to the root is driven (a transmission or
+    ros2_control) but about an upright axis (steering): upright in its parent's frame, or as
+    the body rests when ``leaf`` turns about a level axle as the body rests (a rover's steering
+    joint on a deployment link whose frame is turned; above a leaf upright at rest too, a
+    turned-frame SCARA's tool, it is no steering). ``known`` caches the walks by that axle."""
     driven = tree.urdf.controlled_joints
+    rolls = _axle(tree.poses.axis(leaf))
 
     def lifts(joint: Joint) -> bool:
-        return (
-            joint.movable
-            and joint.name in driven
-            and not _upright(local_axis(joint))
-            and not _upright(tree.poses.axis(joint))
-        )
+        if not (joint.movable and joint.name in driven) or _upright(local_axis(joint)):
+            return False
+        return not (rolls and _upright(tree.poses.axis(joint)))
 
-    return nearest_above(tree.urdf, link, known, lifts) is None
+    return nearest_above(tree.urdf, leaf.parent, known.setdefault(rolls, {}), lifts) is None
 
 
 def _rollers_only(tree: JointTree, joint: Joint) -> bool:
@@ -307,8 +307,8 @@ def _unnamed_wheels(tree: JointTree, taken: set[str]) -> list[str]:
     # One on a caster's swivel or a steering knuckle, two on a rocker: sides told across the
     # whole body instead, for those that hang from the body through no driven joint but a
     # steering one (a driven flipper's sprocket is the flipper's).
-    known: dict[str, str | None] = {}  # link -> the nearest driven joint above it
-    apart = [j for j in apart if _hangs_freely(tree, j.parent, known)]
+    known: dict[bool, dict[str, str | None]] = {}  # link -> the nearest driven joint above it
+    apart = [j for j in apart if _hangs_freely(tree, j, known)]
     if len(apart) >= 2 and _sides({tree.poses.place(j.child)[1] for j in apart}):
         found.extend(j.name for j in apart)
     return found

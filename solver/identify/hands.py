@@ -39,6 +39,8 @@ _FINGER = re.compile(r"finger|thumb|knuckle|phalan", re.IGNORECASE)
 _CHAIN_BEFORE_JAWS = 2
 # Places this close (metres) are one place.
 _SAME = 1e-4
+# Two sliding jaws sit apart along one line within this share of their distance across it
+# (a CAD export places a finger a few millimetres off the line).
 _ASIDE = 0.1
 # A body's one motion turning joints on one link about this many directions or more closes
 # fingers spread about a palm; a follower's ratio this small moves nothing.
@@ -146,7 +148,7 @@ def _jaw_pairs(tree: JointTree, taken: set[str]) -> dict[str, str]:
 
 def _pair_why(tree: JointTree, link: str, pair: list[Joint], motions: list[str]) -> str:
     """Why two joints on ``link`` are jaws (see :func:`_jaw_pairs`), or "" when they are not."""
-    beside = _side_by_side(pair)
+    beside = _side_by_side(pair, exactly=_on_a_head(tree, link))
     at_the_end = _ends_a_chain(tree, link)
     if at_the_end and beside and not (_ears(pair) and _on_a_head(tree, link)):
         return f"one of two jaws side by side at the end of a chain ({link})"
@@ -180,12 +182,14 @@ def _named_otherwise(tree: JointTree, name: str) -> bool:
     return any(part in parts for part in _NOT_JAWS)
 
 
-def _side_by_side(pair: list[Joint]) -> bool:
-    """Two joints of one kind about parallel axes, placed apart along one line only."""
+def _side_by_side(pair: list[Joint], exactly: bool = False) -> bool:
+    """Two joints of one kind about parallel axes, placed apart along one line only: for two
+    sliding joints, within :data:`_ASIDE` of their distance across it (a CAD export's fingers),
+    else (``exactly``, or hinges: eyelids, one-joint arms) to :data:`_SAME`."""
     one, other = pair
     offsets = [abs(a - b) for a, b in zip(one.origin, other.origin, strict=True)]
-    across = max(offsets) * _ASIDE
-    apart = [offset > max(_SAME, across) for offset in offsets]
+    slack = 0.0 if exactly or one.type != "prismatic" else max(offsets) * _ASIDE
+    apart = [offset > max(_SAME, slack) for offset in offsets]
     return (
         one.type == other.type and parallel(local_axis(one), local_axis(other)) and sum(apart) <= 1
     )

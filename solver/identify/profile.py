@@ -198,6 +198,9 @@ SENSOR_TYPE = "sensor_type"
 SENSOR_COUNT = "sensor_count"
 ROLES = (MOTION_CONTROL, SENSOR_TYPE, SENSOR_COUNT)
 _STRUCTURE_KEYS = {"name", "when", "expect", "kinematic_types", "confidence", "description"}
+# Degrees in a full turn: a field of view written wider says nothing (degrees where radians
+# belong).
+_FULL_TURN = 360
 _ELEMENT_KEYS = {"kind", "types", "match", "max_rays", "wider_than"}
 _PLUGIN_RULE_KEYS = {"kind", "match"}
 _TOPIC_SENSOR_KEYS = {"kind", "types", "match", "direction"}
@@ -345,8 +348,9 @@ class SensorRule:
     # Ray sensors only: at most this many rays (horizontal x vertical samples). A range finder
     # casts one; a lidar sweeps hundreds.
     max_rays: int | None = None
-    # Cameras only: a horizontal field of view wider than this many degrees (a panoramic
-    # camera sees more than a half-turn; a fisheye lens less).
+    # Sensors whose horizontal field of view is wider than this many degrees (a panoramic
+    # camera sees more than a half-turn; a fisheye lens less): one that says none, or more
+    # than a full turn (degrees written where radians belong), is not.
     wider_than: int | None = None
 
     def accepts(
@@ -357,12 +361,16 @@ class SensorRule:
         rays: int | None = None,
         fov: float | None = None,
     ) -> bool:
-        """``fov``: the sensor's horizontal field of view in radians, when it says one."""
+        """This rule takes a sensor of ``kind_or_type`` whose names are ``text`` (a topic's
+        ``direction``; a ray sensor's ``rays``; its horizontal field of view ``fov`` in
+        radians, when it says one)."""
         if self.types and kind_or_type not in self.types:
             return False
         if self.max_rays is not None and (rays is None or rays > self.max_rays):
             return False
-        if self.wider_than is not None and (fov is None or math.degrees(fov) <= self.wider_than):
+        if self.wider_than is not None and not (
+            fov is not None and self.wider_than < math.degrees(fov) <= _FULL_TURN
+        ):
             return False
         if self.direction is not None and direction is not None and direction != self.direction:
             return False

@@ -634,24 +634,47 @@ def test_unnamed_wheels_on_driven_steering_knuckles_are_wheels_and_a_flippers_ar
 
 def test_unnamed_wheels_steered_by_joints_upright_only_as_the_body_rests_are_wheels() -> None:
     # A planetary rover: each wheel on a driven steering joint hung from a passive deployment
-    # link whose frame is turned a quarter about x, so the steering axis, (0, -1, 0) in its
-    # parent's frame, stands upright as the body rests.
+    # link whose frame is turned (a quarter about x, then about z), so the steering axis,
+    # (0, -1, 0) in its parent's frame, stands upright as the body rests, and the wheel below
+    # it turns about a level axle.
     rover = RobotText("rover")
     for i, (x, y) in enumerate(((0.3, 0.3), (0.3, -0.3), (-0.3, 0.3), (-0.3, -0.3))):
         deploy = builders.placed(
             rover, f"d{i}", "revolute", rover.root, f"d{i}_l", xyz=f"{x} {y} 0",
-            rpy="-1.5707963 0 0", axis="1 0 0",
+            rpy="-1.5707963 0 1.5707963", axis="1 0 0",
         )  # fmt: skip
         steer = builders.placed(rover, f"s{i}", "revolute", deploy, f"s{i}_l", axis="0 -1 0")
         builders.placed(
-            rover, f"w{i}", "continuous", steer, f"w{i}_l", xyz="0 0 -0.09",
-            rpy="-1.5707963 0 0", axis="0 0 1",
-        )  # fmt: skip
+            rover, f"w{i}", "continuous", steer, f"w{i}_l", xyz="0 0.09 0", axis="1 0 0"
+        )
         rover.add(builders.transmission(f"s{i}") + builders.transmission(f"w{i}"))
     result = identify_urdf(rover.text())
     assert result.structure == "UGV"
     assert result.body is not None
     assert result.body.wheels == ("w0", "w1", "w2", "w3")
+    assert [c.motion_control for c in result.motion_controls] == ["Driving"]
+
+
+def test_a_spinner_upright_at_rest_under_joints_upright_at_rest_is_a_tool_not_a_wheel() -> None:
+    # Two SCARA arms on a wheeled base, written with frames turned a quarter about x: every
+    # joint, the endless tool's too, turns about an upright axis as the body rests, none in
+    # its parent's frame. The tool spins about its arm's axes, as no wheel does.
+    robot = RobotText("scara_bot")
+    builders.wheeled_base(robot)
+    for side, y in (("l", 0.25), ("r", -0.25)):
+        link = builders.placed(
+            robot, f"{side}mount", "fixed", robot.root, f"{side}mount_l", xyz=f"0 {y} 0.5",
+            rpy="1.5707963 0 0",
+        )  # fmt: skip
+        for i, kind in enumerate(("revolute", "revolute", "continuous")):
+            name = f"{side}s{i}"
+            xyz = "0.3 0 0" if i else "0 0 0"
+            link = builders.placed(robot, name, kind, link, f"{name}_l", xyz=xyz, axis="0 1 0")
+            robot.add(builders.transmission(name))
+    result = identify_urdf(robot.text())
+    assert result.structure == "Mobile Manipulator"
+    assert result.body is not None
+    assert result.body.wheels == ("wheel_left_joint", "wheel_right_joint")
 
 
 def test_a_chain_of_20000_endless_joints_is_read_in_one_walk() -> None:

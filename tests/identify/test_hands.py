@@ -252,7 +252,31 @@ def test_jaws_apart_along_one_line_but_a_hair_across_it_are_side_by_side() -> No
         return [found.get(name, "") for name in ("s1", "s2")], ends
 
     assert read(0.032) == (["finger", "finger"], [True])
-    assert read(0.3)[0] == ["other", "other"]
+    assert read(0.09)[0] == ["other", "other"]  # more than a tenth of 0.8 m across
+
+
+def test_hinges_a_hair_off_one_line_on_a_head_or_a_torso_are_no_jaws() -> None:
+    # Two eyelids on a pan/tilt head, and two one-joint arms on a waist, placed 2 and 30 mm
+    # off one line: hinges must sit exactly side by side to be jaws (sliding fingers may not).
+    robot = builders.ugv()
+    head = robot.chain(robot.root, ["neck_pan", "neck_tilt"])
+    builders.placed(
+        robot, "lid_l", "revolute", head, "lid_l_link", xyz="0.08 0.03 0.05", axis="0 1 0"
+    )
+    builders.placed(
+        robot, "lid_r", "revolute", head, "lid_r_link", xyz="0.08 -0.03 0.052", axis="0 1 0"
+    )
+    waist = robot.chain(robot.root, ["waist_yaw", "waist_pitch"])
+    builders.placed(robot, "arm_l", "revolute", waist, "arm_l_link", xyz="0 0.2 0.3", axis="0 1 0")
+    builders.placed(
+        robot, "arm_r", "revolute", waist, "arm_r_link", xyz="0 -0.2 0.33", axis="0 1 0"
+    )
+    body = identify_urdf(robot.text()).body
+    assert body is not None
+    roles = {role.joint: role.role for role in body.roles}
+    assert not {"lid_l", "lid_r", "arm_l", "arm_r"} & {
+        n for n, r in roles.items() if r in ("finger", "gripper")
+    }
 
 
 def spread_hand(fingers: int = 4) -> RobotText:

@@ -46,7 +46,7 @@ def kinds(*sensors: str) -> list[tuple[str, str | None, int]]:
                 "cam",
                 "wideanglecamera",
                 "panorama",
-                "<camera><horizontal_fov>6.2832</horizontal_fov></camera>",
+                "<camera><horizontal_fov>6.283</horizontal_fov></camera>",
             ),
             ("wide_angle_camera", "360 Camera", 1),
         ),
@@ -374,14 +374,22 @@ def ray(link: str, name: str, samples: int, sweep: float, reach: float) -> str:
 
 @pytest.mark.parametrize(
     ("fov", "kind"),
-    [(None, "camera"), (2.88, "camera"), (3.1415, "camera"), (3.3, "wide_angle_camera")],
+    [
+        (None, "camera"),
+        (2.88, "camera"),
+        (3.1415, "camera"),
+        (3.3, "wide_angle_camera"),
+        (6.2831, "wide_angle_camera"),
+        (170.0, "camera"),
+    ],
 )
 def test_a_wide_angle_camera_is_panoramic_only_when_it_sees_more_than_a_half_turn(
     fov: float | None, kind: str
 ) -> None:
     # A fisheye lens written as Gazebo's wideanglecamera (165 degrees, 180) is a camera; one
     # that sees more than a half-turn is a panoramic camera; one that says no field of view
-    # is a camera (Gazebo's default view is 60 degrees).
+    # is a camera (Gazebo's default view is 60 degrees), and so is one whose field of view is
+    # more than a full turn (170 degrees written where radians belong says no more than that).
     inner = "" if fov is None else f"<camera><horizontal_fov>{fov}</horizontal_fov></camera>"
     found = kinds(builders.gazebo_sensor("cam", "wideanglecamera", "front_fisheye", inner))
     assert [k for k, _, _ in found] == [kind]
