@@ -184,7 +184,8 @@ def _steering_beside(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Ro
     if not steered:
         return {}
     found = {}
-    known: dict[bool, dict[str, str | None]] = {}  # link -> the nearest driven joint above it
+    # By whether a leaf's axle is level at rest: link -> the nearest driven joint above it.
+    known: dict[bool, dict[str, str | None]] = {}
     for joint in tree.urdf.joints:
         if (
             joint.name not in roles
@@ -307,7 +308,8 @@ def _unnamed_wheels(tree: JointTree, taken: set[str]) -> list[str]:
     # One on a caster's swivel or a steering knuckle, two on a rocker: sides told across the
     # whole body instead, for those that hang from the body through no driven joint but a
     # steering one (a driven flipper's sprocket is the flipper's).
-    known: dict[bool, dict[str, str | None]] = {}  # link -> the nearest driven joint above it
+    # By whether a leaf's axle is level at rest: link -> the nearest driven joint above it.
+    known: dict[bool, dict[str, str | None]] = {}
     apart = [j for j in apart if _hangs_freely(tree, j, known)]
     if len(apart) >= 2 and _sides({tree.poses.place(j.child)[1] for j in apart}):
         found.extend(j.name for j in apart)

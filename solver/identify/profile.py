@@ -834,7 +834,7 @@ def _sensor_rules(
             reader.fault((*item, "max_rays"), f"max_rays must be 1 or more, got {rays}")
             rays = None
         wider = reader.integer((*item, "wider_than"), "degrees", required=False)
-        if wider is not None and not 0 <= wider < 360:
+        if wider is not None and not 0 <= wider < _FULL_TURN:
             reader.fault((*item, "wider_than"), f"wider_than must be 0 to 359 degrees, got {wider}")
             wider = None
         location = reader.document.location(item)
