@@ -355,7 +355,7 @@ def finger_groups(
         if (walks_on and body in walks_on) or limb.kind not in ("arm", "other"):
             continue
         on_palm.setdefault(body, []).append(limb)
-        if not limb.named and len(limb.joints) <= longest:
+        if not limb.named and len(limb.joints) <= longest + _ends_in_a_fingertip(tree, limb):
             by_base.setdefault(limb.base, []).append(limb)
             by_palm.setdefault(body, []).append(limb)
     found = {
@@ -379,6 +379,12 @@ def finger_groups(
         or _beside_a_thumb(tree, on_palm, palms)
         or _two_fingers(tree, by_palm, on_palm)
     )
+
+
+def _ends_in_a_fingertip(tree: JointTree, limb: Limb) -> bool:
+    """``limb`` ends in a link named as a finger's, or one fixed below it (``fingertip_1``): a
+    finger, its own base's rotation beside (a thumb's carpometacarpal joint)."""
+    return any(_FINGER.search(link) for link in (limb.tip, *tree.urdf.fixed_below(limb.tip)))
 
 
 def _two_fingers(

@@ -83,6 +83,21 @@ def test_unnamed_finger_chains_with_named_tips_on_an_arm_are_one_hand() -> None:
     assert (result.body.count("arm"), result.body.grippers) == (1, 1)
 
 
+def test_chains_a_joint_longer_than_a_finger_ending_in_named_fingertips_are_fingers() -> None:
+    # A four-finger hand of unnamed joints: two fingers of four joints, two of five (a
+    # rotation at their base), each ending in a link fixed to a `fingertip_N` frame. Without
+    # the fingertips' names the two long chains are arms beside two fingers.
+    def hand(tip: str) -> RobotText:
+        robot = RobotText("hand4", root="base")
+        for f, joints in enumerate((5, 4, 4, 5), start=1):
+            last = robot.chain("base", [f"q{f}{k}" for k in range(joints)])
+            robot.joint(f"q{f}_end", "fixed", last, f"{tip}_{f}")
+        return robot
+
+    assert identify_urdf(hand("fingertip").text()).structure == "Hand"
+    assert identify_urdf(hand("end").text()).structure == "Torso"
+
+
 def test_fingers_on_a_link_named_as_a_hand_make_the_arm_end_in_a_gripper() -> None:
     robot = RobotText("arm_hand")
     wrist = robot.chain("base_link", ["a1", "a2", "a3", "a4"])
