@@ -35,6 +35,8 @@ __all__ = ["finger_groups", "finger_tips", "gripper_closure", "jaws", "stacked_g
 _NOT_JAWS = ("head", "leg", "wheel", "caster", "rotor", "thruster", "fin", "wing", "track")
 # Words of a finger's joints (or the links they move): a hand's finger, not a gripper's jaw.
 _FINGER = re.compile(r"finger|thumb|knuckle|phalan", re.IGNORECASE)
+# A frame at a finger's end (``fingertip_1``, ``thumb_tip``).
+_FINGERTIP = re.compile(r"(finger|thumb)[_-]?tip", re.IGNORECASE)
 # A split gripper's jaws hang at the end of a chain of at least this many driven joints.
 _CHAIN_BEFORE_JAWS = 2
 # Places this close (metres) are one place.
@@ -331,7 +333,8 @@ def finger_groups(
     grippers: frozenset[str] = frozenset(),
 ) -> set[str]:
     """Joints of unnamed short chains hanging from one palm (a link, and the links fixed to it:
-    a metacarpal each) in threes or more: fingers (also where each ends in a named fingertip);
+    a metacarpal each) in threes or more: fingers (also where each ends in a named fingertip,
+    and then one joint longer than a finger: :func:`_ends_in_a_fingertip`);
     failing that, fingers that spread on joints of their own, chains beside a thumb, and a
     two-finger gripper's two short chains close together (:func:`_two_fingers`).
 
@@ -355,7 +358,10 @@ def finger_groups(
         if (walks_on and body in walks_on) or limb.kind not in ("arm", "other"):
             continue
         on_palm.setdefault(body, []).append(limb)
-        if not limb.named and len(limb.joints) <= longest + _ends_in_a_fingertip(tree, limb):
+        joints = len(limb.joints)
+        if not limb.named and (
+            joints <= longest or (joints == longest + 1 and _ends_in_a_fingertip(tree, limb))
+        ):
             by_base.setdefault(limb.base, []).append(limb)
             by_palm.setdefault(body, []).append(limb)
     found = {
@@ -382,9 +388,14 @@ def finger_groups(
 
 
 def _ends_in_a_fingertip(tree: JointTree, limb: Limb) -> bool:
-    """``limb`` ends in a link named as a finger's, or one fixed below it (``fingertip_1``): a
-    finger, its own base's rotation beside (a thumb's carpometacarpal joint)."""
-    return any(_FINGER.search(link) for link in (limb.tip, *tree.urdf.fixed_below(limb.tip)))
+    """``limb`` ends in a fingertip's frame: its last link, or a leaf link fixed below it, named
+    as a finger's or thumb's tip (``fingertip_1``, ``thumb_tip``), and no gripper on it. Such a
+    chain is a finger even with one joint more than a finger has (a rotation at its base); a
+    jaw, a finger's mount or a knuckle on an arm's wrist names no tip."""
+    return not limb.gripper and any(
+        _FINGERTIP.search(link) and not tree.urdf.children(link)
+        for link in (limb.tip, *tree.urdf.fixed_below(limb.tip))
+    )
 
 
 def _two_fingers(

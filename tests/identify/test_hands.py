@@ -98,6 +98,40 @@ def test_chains_a_joint_longer_than_a_finger_ending_in_named_fingertips_are_fing
     assert identify_urdf(hand("end").text()).structure == "Torso"
 
 
+@pytest.mark.parametrize("ends", [("left_finger", "right_finger"), ("thumbscrew",), ("knuckle",)])
+def test_five_joint_arms_whose_wrists_carry_finger_words_but_no_fingertip_stay_arms(
+    ends: tuple[str, ...],
+) -> None:
+    # A cell of three unnamed five-joint arms, each wrist carrying fixed jaws named as
+    # fingers, a thumbscrew or a knuckle: no fingertip frame ends them, so they stay arms.
+    robot = RobotText("cell")
+    for arm in "abc":
+        wrist = robot.chain("base_link", [f"{arm}j{k}" for k in range(1, 6)])
+        for end in ends:
+            robot.joint(f"{arm}_{end}_fix", "fixed", wrist, f"{arm}_{end}")
+    result = identify_urdf(robot.text())
+    assert result.structure == "Torso"
+    assert result.body is not None
+    assert result.body.count("arm") == 3
+
+
+def test_arms_whose_hands_mount_fingers_on_fixed_finger_bases_stay_arms() -> None:
+    # An upper body: a waist, a two-joint neck and two unnamed five-joint arms ending in
+    # palms, each palm's named fingers on fixed `*_finger_base` links (mounts, no tips).
+    robot = RobotText("upper")
+    waist = robot.chain("base_link", ["waist"])
+    robot.chain(waist, ["n1", "n2"])
+    for side in "lr":
+        palm = robot.fixed(robot.chain(waist, [f"{side}j{k}" for k in range(1, 6)]), f"{side}_palm")
+        for finger in ("index", "middle"):
+            base = robot.fixed(palm, f"{side}_{finger}_finger_base")
+            robot.chain(base, [f"{side}_{finger}_finger_j1", f"{side}_{finger}_finger_j2"])
+    result = identify_urdf(robot.text())
+    assert result.structure == "Torso"
+    assert result.body is not None
+    assert (result.body.count("arm"), result.body.grippers) == (2, 2)
+
+
 def test_fingers_on_a_link_named_as_a_hand_make_the_arm_end_in_a_gripper() -> None:
     robot = RobotText("arm_hand")
     wrist = robot.chain("base_link", ["a1", "a2", "a3", "a4"])
