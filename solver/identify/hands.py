@@ -20,12 +20,11 @@ Not here: the limb a hand ends (:mod:`solver.identify.limbs`), the other single-
 
 from __future__ import annotations
 
-import math
 import re
 
 from solver.identify.couplings import Walk, jaw_groups
 from solver.identify.limbs import Limb, chain_ends, moved_by
-from solver.identify.pose import distance, local_axis, parallel
+from solver.identify.pose import distance, local_axis, parallel, perpendicular
 from solver.identify.readers.urdf import Joint
 from solver.identify.tree import JointTree
 
@@ -48,8 +47,6 @@ _ASIDE = 0.1
 # fingers spread about a palm; a follower's ratio this small moves nothing.
 _ABOUT_A_PALM = 3
 _STILL = 1e-6
-# A direction within about 6 degrees of square to the palm's axis is square to it.
-_SQUARE = 0.1
 # The farthest a finger reaches from its first joint to its tip (metres): a hand's finger is
 # about 0.1 m, a gripper's jaw less; an arm, even a small one, reaches farther.
 _FINGER_REACH = 0.15
@@ -114,11 +111,7 @@ def _about_one_line(directions: list[tuple[float, float, float]]) -> bool:
     hinge about tangents to it; a gearbox's shafts (along x, y and z) do not."""
     (ax, ay, az), (bx, by, bz) = directions[0], directions[1]
     normal = (ay * bz - az * by, az * bx - ax * bz, ax * by - ay * bx)
-    size = math.sqrt(sum(c * c for c in normal))
-    return all(
-        abs(sum(n * d for n, d in zip(normal, axis, strict=True))) <= _SQUARE * size
-        for axis in directions[2:]
-    )
+    return all(perpendicular(normal, axis) for axis in directions[2:])
 
 
 def _jaw_pairs(tree: JointTree, taken: set[str]) -> dict[str, str]:
