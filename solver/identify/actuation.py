@@ -99,6 +99,13 @@ def joint_roles(tree: JointTree) -> dict[str, Role]:
             "wheel",
             "an unnamed endless joint below its link or on a level axle, wheels on both sides",
         )
+    for name in _roller_wheels(tree, set(roles)):
+        roles[name] = Role(
+            name,
+            "wheel",
+            "an endless joint on a level axle carrying free rollers round its rim (an omni or "
+            "mecanum wheel), whatever its name",
+        )
     for name in _leg_wheels(tree, set(roles)):
         roles[name] = Role(
             name,
@@ -314,6 +321,41 @@ def _unnamed_wheels(tree: JointTree, taken: set[str]) -> list[str]:
     if len(apart) >= 2 and _sides({tree.poses.place(j.child)[1] for j in apart}):
         found.extend(j.name for j in apart)
     return found
+
+
+def _roller_wheels(tree: JointTree, taken: set[str]) -> list[str]:
+    """Endless joints of no role yet, each turning about a level axle at rest and carrying
+    nothing that moves but free rollers round the part it turns (:func:`_rollers_only`), two or
+    more of them, each roller about an axis across the joint's (:func:`_rolls_across`): an omni
+    or mecanum base's wheels drawn with their rollers, named for what they are
+    (``rim_front_right``: a corner's word names a leg as often) or not at all. A leg carries
+    limited joints, a rotor's head turns about an upright axis, a flipper's road wheels turn
+    about axles parallel to its own."""
+    known: dict[str, str | None] = {}  # link -> the nearest joint above it that turns
+    found = [
+        joint.name
+        for joint in tree.urdf.joints
+        if joint.endless
+        and joint.name not in taken
+        and joint.child in tree.moving_below
+        and _rollers_only(tree, joint)
+        and _rolls_across(tree, joint)
+        and _axle(_resting_axis(tree, joint, known))
+    ]
+    return found if len(found) >= 2 else []
+
+
+def _rolls_across(tree: JointTree, joint: Joint) -> bool:
+    """Everything that moves below ``joint`` turns about an axis across its own: a rim's
+    rollers (tangent to it, or at an angle), not the road wheels a flipper's bar carries,
+    which turn about axles parallel to the bar's."""
+    axis = tree.poses.axis(joint)
+    return not any(
+        parallel(axis, tree.poses.axis(below))
+        for link in (joint.child, *tree.urdf.fixed_below(joint.child))
+        for below in tree.urdf.children(link)
+        if below.movable
+    )
 
 
 def _steered_wheels(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Role]:

@@ -432,15 +432,18 @@ def test_a_three_axis_camera_gimbal_is_no_ball_caster() -> None:
     assert not {r.role for r in found.roles if r.joint.startswith("gimbal")} & {"caster"}
 
 
-def kiwi_base(*, hubs: bool = False) -> RobotText:
+def kiwi_base(*, hubs: bool = False, corners: bool = False) -> RobotText:
     """Three unnamed rims at 120 degrees, each turning about a level radial axle and carrying
     six free rollers on endless joints (omni wheels), no name of a wheel anywhere; ``hubs``
-    hangs each rim's rollers from a hub link fixed to the rim (a CAD export's housing)."""
+    hangs each rim's rollers from a hub link fixed to the rim (a CAD export's housing);
+    ``corners`` names each rim's link for the corner it is at (``front_right``, a word legs
+    are named by too)."""
     robot = RobotText("kiwi")
     for i, (x, y) in enumerate(((0.2, 0.0), (-0.1, 0.17), (-0.1, -0.17))):
         place = f"{x} {y} 0"
+        link = ("front_right_rim", "back_left_rim", "back_right_rim")[i] if corners else f"r{i}"
         rim = builders.placed(
-            robot, f"rim_{i}", "continuous", robot.root, f"r{i}", xyz=place, axis=place
+            robot, f"rim_{i}", "continuous", robot.root, link, xyz=place, axis=place
         )
         if hubs:
             rim = robot.fixed(rim, f"hub{i}")
@@ -462,6 +465,51 @@ def test_unnamed_rims_carrying_free_rollers_are_omni_wheels_and_the_rollers_pass
     roles = {role.joint: role.role for role in result.body.roles}
     assert {roles[f"rim_{i}_r{k}"] for i in range(3) for k in range(6)} == {"passive"}
     assert {c.motion_control for c in result.motion_controls} == {"Driving"}
+
+
+def test_rims_named_for_a_corner_carrying_free_rollers_are_omni_wheels_not_legs() -> None:
+    # A corner's word names a leg as often as a wheel; a rim of free rollers is a wheel.
+    result = identify_urdf(kiwi_base(corners=True).text())
+    assert result.structure == "UGV"
+    assert result.body is not None
+    assert result.body.wheels == ("rim_0", "rim_1", "rim_2")
+    assert not result.body.limbs
+
+
+def flippers_with_road_wheels() -> RobotText:
+    """A tracked base's two flippers: an endless bar joint on each side, level across the body,
+    carrying three unnamed endless road wheels whose axles are parallel to the bar's."""
+    robot = RobotText("tracked")
+    for side, y in (("left", 0.25), ("right", -0.25)):
+        bar = builders.placed(
+            robot,
+            f"front_{side}_flipper",
+            "continuous",
+            robot.root,
+            f"{side}_bar",
+            xyz=f"0.3 {y} 0",
+            axis="0 1 0",
+        )
+        for k in range(3):
+            builders.placed(
+                robot,
+                f"{side}_bar_{k}",
+                "continuous",
+                bar,
+                f"{side}_road_{k}",
+                xyz=f"{0.08 * (k + 1)} 0 -0.02",
+                axis="0 1 0",
+            )
+    return robot
+
+
+def test_a_flippers_road_wheels_are_not_a_rims_rollers() -> None:
+    # Its leaves turn about axles parallel to the bar's: a flipper, not an omni wheel.
+    result = identify_urdf(flippers_with_road_wheels().text())
+    assert result.body is not None
+    evidence = {role.joint: role.evidence for role in result.body.roles}
+    assert "rollers" not in evidence.get("front_left_flipper", "")
+    assert "rollers" not in evidence.get("front_right_flipper", "")
 
 
 def base_on_casters() -> RobotText:
