@@ -210,6 +210,20 @@ def test_a_file_xacro_expands_under_another_name_and_an_environment_it_sets_are_
     assert expanded.xacro
 
 
+def test_a_description_path_with_spaces_is_read_whole_between_backquotes() -> None:
+    tool = load()
+    source = tool.parse_source(
+        "github a/b@0123abcd (MIT) `Mechanical Design/Fusion to URDF/bot_description/urdf/"
+        "bot.xacro` [xacro->urdf, no args]",
+        srdf=False,
+    )
+    assert source.path == "Mechanical Design/Fusion to URDF/bot_description/urdf/bot.xacro"
+    assert source.xacro
+    # A path with no space is read as before, quoted or not.
+    quoted = tool.parse_source("github a/b@0123abcd `urdf/b.urdf` [plain URDF]", srdf=False)
+    assert quoted.path == "urdf/b.urdf"
+
+
 def test_rows_are_made_from_the_mirrored_commit_and_those_that_cannot_be_are_said(
     tmp_path: Path,
 ) -> None:

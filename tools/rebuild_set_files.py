@@ -67,6 +67,8 @@ DESCRIPTION = re.compile(
     r"(?<![\w/.-])((?:[\w.+-]+/)*[\w.+-]+\.(?:urdf\.xacro|xacro|urdf|gazebo|xml))\b",
     re.IGNORECASE,
 )
+# A path with a space in it, written between backquotes (`Mechanical Design/x/robot.urdf`).
+QUOTED_DESCRIPTION = re.compile(r"`([^`\n]* [^`\n]*\.(?:urdf\.xacro|xacro|urdf))`", re.IGNORECASE)
 # XML files a source names that are never the description.
 NOT_DESCRIPTIONS = ("package.xml", "manifest.xml", "launch.xml")
 SRDF = re.compile(r"(?<![\w/.-])((?:[\w.+-]+/)*[\w.+-]+\.srdf(?:\.xacro)?)\b")
@@ -107,6 +109,9 @@ def parse_source(text: str, *, srdf: bool) -> Source | None:
         ),
         None,
     )
+    quoted = QUOTED_DESCRIPTION.search(rest)
+    if quoted is not None and (description is None or quoted.start() < description.start()):
+        description = quoted
     if description is None:
         return None
     # The recipe's own arguments come first; the same name later is prose ("own:=false would
