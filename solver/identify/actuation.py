@@ -51,6 +51,8 @@ _SCREWS = (2, 4)
 _MIRROR_TOLERANCE = 0.02
 # The fewest free rollers on an omni or mecanum wheel's rim.
 _ROLLERS = 3
+# What a rim of rollers may be named for: a wheel, or a corner of the body (a leg's word too).
+_A_RIMS_PARTS = frozenset({"leg", "wheel"})
 # As many endless joints level with one link are a wheel-leg walker's legs, not its wheels.
 _WHEEL_LEGS = 6
 # Wheel-legged robots roll on two legs' wheels or four (bipeds, quadrupeds).
@@ -93,13 +95,13 @@ def joint_roles(tree: JointTree) -> dict[str, Role]:
             "unnamed endless joints below the body, side by side, turning about the line they "
             "push along (screws)",
         )
-    for name in _unnamed_wheels(tree, set(roles)):
+    for name in _unnamed_wheels(tree, roles):
         roles[name] = Role(
             name,
             "wheel",
             "an unnamed endless joint below its link or on a level axle, wheels on both sides",
         )
-    for name in _roller_wheels(tree, set(roles)):
+    for name in _roller_wheels(tree, roles):
         roles[name] = Role(
             name,
             "wheel",
@@ -265,18 +267,18 @@ def _hangs_freely(tree: JointTree, leaf: Joint, known: dict[bool, dict[str, str 
     return nearest_above(tree.urdf, leaf.parent, known.setdefault(rolls, {}), lifts) is None
 
 
-def _rollers_only(tree: JointTree, joint: Joint) -> bool:
+def _rollers_only(tree: JointTree, joint: Joint, roles: Mapping[str, Role]) -> bool:
     """Everything that moves below ``joint`` is an endless leaf hanging from the part it turns
-    (its child, or a hub fixed to it), three or more of them: the free rollers on the rim of
-    an omni or mecanum wheel."""
+    (its child, or a hub fixed to it), three or more of them, none with a role but a wheel's (a
+    finger, a rotor's blade): the free rollers on the rim of an omni or mecanum wheel."""
     rollers = 0
-    for link in (joint.child, *tree.urdf.fixed_below(joint.child)):  # a hub, a housing
-        for below in tree.urdf.children(link):
-            if not below.movable:
-                continue
-            if not below.endless or below.child in tree.moving_below:
-                return False  # a limited joint, or something moves deeper: no rim of rollers
-            rollers += 1
+    for name in _carried(tree, joint):
+        below = tree.urdf.joint(name)
+        if below is None or not below.endless or below.child in tree.moving_below:
+            return False  # a limited joint, or something moves deeper: no rim of rollers
+        if name in roles and roles[name].role != "wheel":
+            return False  # a finger on a wrist that rolls, a blade on a propeller's hub
+        rollers += 1
     return rollers >= _ROLLERS
 
 
@@ -288,7 +290,7 @@ def _on_a_spinning_part(tree: JointTree, joint: Joint, known: dict[str, str | No
     return carrier is not None and carrier.type == "continuous" and _axle(local_axis(carrier))
 
 
-def _unnamed_wheels(tree: JointTree, taken: set[str]) -> list[str]:
+def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     """Unnamed spinning leaves below a link, on both its sides: wheels.
 
     A base whose wheel joints carry no name (``fl_joint`` on ``fl_Link``) still has them where
@@ -300,7 +302,7 @@ def _unnamed_wheels(tree: JointTree, taken: set[str]) -> list[str]:
     axis; a propeller on a wing turns about the axis it flies along. Six or more level with a
     link are a wheel-leg walker's whole-turning legs (:func:`~solver.identify.limbs.find_limbs`).
     """
-    below, level = _wheel_candidates(tree, taken)
+    below, level = _wheel_candidates(tree, roles)
     driven = bool(tree.labels("drive") or tree.labels("track"))
     for link, joints in level.items():
         if len(joints) < _WHEEL_LEGS or driven:  # road wheels of a driven body, not legs
@@ -323,26 +325,41 @@ def _unnamed_wheels(tree: JointTree, taken: set[str]) -> list[str]:
     return found
 
 
-def _roller_wheels(tree: JointTree, taken: set[str]) -> list[str]:
+def _roller_wheels(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     """Endless joints of no role yet, each turning about a level axle at rest and carrying
-    nothing that moves but free rollers round the part it turns (:func:`_rollers_only`), two or
-    more of them, each roller about an axis across the joint's (:func:`_rolls_across`): an omni
-    or mecanum base's wheels drawn with their rollers, named for what they are
-    (``rim_front_right``: a corner's word names a leg as often) or not at all. A leg carries
+    nothing that moves but free rollers round the part it turns (:func:`_rollers_only`; none of
+    them a finger, a rotor or anything but a wheel by its name), on both sides of the body, each
+    roller about an axis across the joint's (:func:`_rolls_across`): an omni or mecanum base's
+    wheels drawn with their rollers, named for what they are (``rim_front_right``: a corner's
+    word names a leg as often) or not at all. A joint named as a part other than a leg's or a
+    wheel's (a wrist, a propeller) or as a foot's (an ankle, a toe) is that part; a leg carries
     limited joints, a rotor's head turns about an upright axis, a flipper's road wheels turn
-    about axles parallel to its own."""
+    about axles parallel to its own, a helicopter's tail hubs sit on one side."""
     known: dict[str, str | None] = {}  # link -> the nearest joint above it that turns
     found = [
-        joint.name
+        joint
         for joint in tree.urdf.joints
         if joint.endless
-        and joint.name not in taken
-        and joint.child in tree.moving_below
-        and _rollers_only(tree, joint)
+        and joint.name not in roles
+        and (tree.parts_of(joint.name) | tree.parts_of(joint.child)) <= _A_RIMS_PARTS
+        and not _FOOT_JOINT.search(joint.name)
+        and _rollers_only(tree, joint, roles)
         and _rolls_across(tree, joint)
         and _axle(_resting_axis(tree, joint, known))
     ]
-    return found if len(found) >= 2 else []
+    if not _sides({tree.poses.place(joint.child)[1] for joint in found}):
+        return []  # none, one, or all on one side
+    return [joint.name for joint in found]
+
+
+def _carried(tree: JointTree, joint: Joint) -> list[str]:
+    """The movable joints on the part ``joint`` turns (its child, or links fixed to it)."""
+    return [
+        below.name
+        for link in (joint.child, *tree.urdf.fixed_below(joint.child))
+        for below in tree.urdf.children(link)
+        if below.movable
+    ]
 
 
 def _rolls_across(tree: JointTree, joint: Joint) -> bool:
@@ -351,10 +368,8 @@ def _rolls_across(tree: JointTree, joint: Joint) -> bool:
     which turn about axles parallel to the bar's."""
     axis = tree.poses.axis(joint)
     return not any(
-        parallel(axis, tree.poses.axis(below))
-        for link in (joint.child, *tree.urdf.fixed_below(joint.child))
-        for below in tree.urdf.children(link)
-        if below.movable
+        parallel(axis, tree.poses.axis(tree.urdf.joint(name) or joint))
+        for name in _carried(tree, joint)
     )
 
 
@@ -478,7 +493,7 @@ def _unnamed_screws(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     """
     if not _may_have_screws(tree, roles):
         return []
-    below, _ = _wheel_candidates(tree, set(roles))
+    below, _ = _wheel_candidates(tree, roles)
     return [j.name for joints in below.values() if _screws(tree, joints) for j in joints]
 
 
@@ -555,15 +570,15 @@ def _sides(across: set[float]) -> bool:
 
 
 def _wheel_candidates(
-    tree: JointTree, taken: set[str]
+    tree: JointTree, roles: Mapping[str, Role]
 ) -> tuple[dict[str, list[Joint]], dict[str, list[Joint]]]:
     """Unnamed endless joints that could be wheels, by the link they hang from: those below it,
     and those level with or above it turning about a level axle."""
     below: dict[str, list[Joint]] = {}
     level: dict[str, list[Joint]] = {}
     known: dict[str, str | None] = {}  # link -> the nearest joint above it that turns
-    for joint in _unnamed_spinners(tree, taken):
-        if joint.child in tree.moving_below and not _rollers_only(tree, joint):
+    for joint in _unnamed_spinners(tree, set(roles)):
+        if joint.child in tree.moving_below and not _rollers_only(tree, joint, roles):
             continue
         if joint.origin[2] < 0:
             below.setdefault(joint.parent, []).append(joint)

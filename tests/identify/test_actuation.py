@@ -441,7 +441,8 @@ def kiwi_base(*, hubs: bool = False, corners: bool = False) -> RobotText:
     robot = RobotText("kiwi")
     for i, (x, y) in enumerate(((0.2, 0.0), (-0.1, 0.17), (-0.1, -0.17))):
         place = f"{x} {y} 0"
-        link = ("front_right_rim", "back_left_rim", "back_right_rim")[i] if corners else f"r{i}"
+        corner = ("front_right", "back_left", "back_right")[i]
+        link = f"{corner}_rim" if corners else f"r{i}"
         rim = builders.placed(
             robot, f"rim_{i}", "continuous", robot.root, link, xyz=place, axis=place
         )
@@ -469,11 +470,116 @@ def test_unnamed_rims_carrying_free_rollers_are_omni_wheels_and_the_rollers_pass
 
 def test_rims_named_for_a_corner_carrying_free_rollers_are_omni_wheels_not_legs() -> None:
     # A corner's word names a leg as often as a wheel; a rim of free rollers is a wheel.
-    result = identify_urdf(kiwi_base(corners=True).text())
+    text = kiwi_base(corners=True).text()
+    for i, corner in enumerate(("front_right", "back_left", "back_right")):
+        text = text.replace(f'"rim_{i}"', f'"rim_{corner}"').replace(
+            f'"rim_{i}_r', f'"rim_{corner}_r'
+        )
+    result = identify_urdf(text)
     assert result.structure == "UGV"
     assert result.body is not None
-    assert result.body.wheels == ("rim_0", "rim_1", "rim_2")
+    assert result.body.wheels == ("rim_front_right", "rim_back_left", "rim_back_right")
     assert not result.body.limbs
+    roles = {role.joint: role.role for role in result.body.roles}
+    assert {roles[f"rim_back_left_r{k}"] for k in range(6)} == {"passive"}
+
+
+def rims_of_rollers(*, upright: bool = False, one_side: bool = False, count: int = 2) -> str:
+    """Unnamed endless hubs on a body, each carrying six endless leaves across its axis: on a
+    level axle at both sides (wheels), or turning about upright axes, or all on one side."""
+    robot = RobotText("hubs")
+    for i in range(count):
+        y = 0.2 if one_side else (0.2 if i % 2 == 0 else -0.2)
+        place = f"{0.3 * i} {y} 0"
+        hub = builders.placed(
+            robot,
+            f"hub_{i}",
+            "continuous",
+            robot.root,
+            f"h{i}",
+            xyz=place,
+            axis="0 0 1" if upright else "0 1 0",
+        )
+        for k in range(6):
+            builders.placed(
+                robot, f"hub_{i}_b{k}", "continuous", hub, f"h{i}_{k}", xyz="0.05 0 0", axis="1 0 0"
+            )
+    return robot.text()
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        rims_of_rollers(upright=True),
+        rims_of_rollers(one_side=True),
+        rims_of_rollers(count=1),
+    ],
+    ids=["upright-hubs", "all-on-one-side", "a-single-rim"],
+)
+def test_hubs_of_rollers_that_turn_upright_sit_on_one_side_or_alone_are_no_rims(text: str) -> None:
+    result = identify_urdf(text)
+    assert result.body is not None
+    evidence = {role.joint: role.evidence for role in result.body.roles}
+    assert all("rollers round" not in evidence.get(f"hub_{i}", "") for i in range(2))
+
+
+def test_a_level_pair_of_rims_of_rollers_on_both_sides_are_wheels() -> None:
+    # The cases above fail on what they change alone: this one is read as wheels.
+    result = identify_urdf(rims_of_rollers())
+    assert result.body is not None
+    assert set(result.body.wheels) == {"hub_0", "hub_1"}
+
+
+@pytest.mark.parametrize(
+    ("wrist", "finger"),
+    [("wrist_roll", "finger"), ("j3", "finger"), ("wrist_roll", "j4")],
+    ids=[
+        "a-wrist-carrying-fingers",
+        "an-unnamed-joint-carrying-fingers",
+        "a-wrist-carrying-joints",
+    ],
+)
+def test_wrists_that_roll_for_ever_carrying_endless_fingers_are_no_wheels(
+    wrist: str, finger: str
+) -> None:
+    # A two-arm robot's wrist rolls (endless) each carry three endless joints across their
+    # axis: named a wrist, or carrying fingers, they are no rims of rollers.
+    robot = RobotText("two_arms")
+    for side, y in (("left", 0.3), ("right", -0.3)):
+        upper = builders.placed(
+            robot,
+            f"{side}_shoulder",
+            "revolute",
+            robot.root,
+            f"{side}_upper",
+            xyz=f"0 {y} 1",
+            axis="0 1 0",
+        )
+        fore = builders.placed(
+            robot, f"{side}_elbow", "revolute", upper, f"{side}_fore", xyz="0.3 0 0", axis="0 1 0"
+        )
+        palm = builders.placed(
+            robot,
+            f"{side}_{wrist}",
+            "continuous",
+            fore,
+            f"{side}_link3",
+            xyz="0.3 0 0",
+            axis="1 0 0",
+        )
+        for k, axis in enumerate(("0 0 1", "0 -0.866 -0.5", "0 0.866 -0.5")):
+            builders.placed(
+                robot,
+                f"{side}_{finger}_{k}",
+                "continuous",
+                palm,
+                f"{side}_{finger}_{k}_link",
+                xyz="0.05 0 0",
+                axis=axis,
+            )
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert not {f"left_{wrist}", f"right_{wrist}"} & set(result.body.wheels)
 
 
 def flippers_with_road_wheels() -> RobotText:
@@ -507,9 +613,7 @@ def test_a_flippers_road_wheels_are_not_a_rims_rollers() -> None:
     # Its leaves turn about axles parallel to the bar's: a flipper, not an omni wheel.
     result = identify_urdf(flippers_with_road_wheels().text())
     assert result.body is not None
-    evidence = {role.joint: role.evidence for role in result.body.roles}
-    assert "rollers" not in evidence.get("front_left_flipper", "")
-    assert "rollers" not in evidence.get("front_right_flipper", "")
+    assert not {"front_left_flipper", "front_right_flipper"} & set(result.body.wheels)
 
 
 def base_on_casters() -> RobotText:
