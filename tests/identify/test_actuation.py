@@ -616,6 +616,52 @@ def test_a_flippers_road_wheels_are_not_a_rims_rollers() -> None:
     assert not {"front_left_flipper", "front_right_flipper"} & set(result.body.wheels)
 
 
+def test_ankles_that_turn_for_ever_carrying_toes_are_no_wheels() -> None:
+    # A leg's last joint named for a foot's part (an ankle) turns a foot, whatever it carries.
+    robot = RobotText("dog")
+    for corner, (x, y) in {"lf": (0.3, 0.2), "rf": (0.3, -0.2), "lh": (-0.3, 0.2)}.items():
+        hip = builders.placed(
+            robot,
+            f"{corner}_hip",
+            "revolute",
+            robot.root,
+            f"{corner}_thigh",
+            xyz=f"{x} {y} 0",
+            axis="0 1 0",
+        )
+        shin = builders.placed(
+            robot,
+            f"{corner}_knee",
+            "revolute",
+            hip,
+            f"{corner}_shin",
+            xyz="0 0 -0.2",
+            axis="0 1 0",
+        )
+        foot = builders.placed(
+            robot,
+            f"{corner}_leg_ankle",
+            "continuous",
+            shin,
+            f"{corner}_foot",
+            xyz="0 0 -0.2",
+            axis="0 1 0",
+        )
+        for k in range(3):
+            builders.placed(
+                robot,
+                f"{corner}_toe{k}",
+                "continuous",
+                foot,
+                f"{corner}_toe{k}_link",
+                xyz="0.03 0 0",
+                axis="1 0 0",
+            )
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert not {"lf_leg_ankle", "rf_leg_ankle", "lh_leg_ankle"} & set(result.body.wheels)
+
+
 def base_on_casters() -> RobotText:
     """Two unnamed driven wheels on the axle line, and four unnamed casters at the corners: a
     vertical endless swivel each, carrying one endless wheel below it."""
