@@ -272,11 +272,10 @@ def _rollers_only(tree: JointTree, joint: Joint, roles: Mapping[str, Role]) -> b
     (its child, or a hub fixed to it), three or more of them, none with a role but a wheel's (a
     finger, a rotor's blade): the free rollers on the rim of an omni or mecanum wheel."""
     rollers = 0
-    for name in _carried(tree, joint):
-        below = tree.urdf.joint(name)
-        if below is None or not below.endless or below.child in tree.moving_below:
+    for below in _carried(tree, joint):
+        if not below.endless or below.child in tree.moving_below:
             return False  # a limited joint, or something moves deeper: no rim of rollers
-        if name in roles and roles[name].role != "wheel":
+        if below.name in roles and roles[below.name].role != "wheel":
             return False  # a finger on a wrist that rolls, a blade on a propeller's hub
         rollers += 1
     return rollers >= _ROLLERS
@@ -352,10 +351,10 @@ def _roller_wheels(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     return [joint.name for joint in found]
 
 
-def _carried(tree: JointTree, joint: Joint) -> list[str]:
+def _carried(tree: JointTree, joint: Joint) -> list[Joint]:
     """The movable joints on the part ``joint`` turns (its child, or links fixed to it)."""
     return [
-        below.name
+        below
         for link in (joint.child, *tree.urdf.fixed_below(joint.child))
         for below in tree.urdf.children(link)
         if below.movable
@@ -367,10 +366,7 @@ def _rolls_across(tree: JointTree, joint: Joint) -> bool:
     rollers (tangent to it, or at an angle), not the road wheels a flipper's bar carries,
     which turn about axles parallel to the bar's."""
     axis = tree.poses.axis(joint)
-    return not any(
-        parallel(axis, tree.poses.axis(tree.urdf.joint(name) or joint))
-        for name in _carried(tree, joint)
-    )
+    return not any(parallel(axis, tree.poses.axis(below)) for below in _carried(tree, joint))
 
 
 def _steered_wheels(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Role]:
