@@ -37,7 +37,6 @@ minimum cover every engine uses when components overlap (:mod:`solver.core.cover
 from __future__ import annotations
 
 import importlib
-import sys
 from collections.abc import Iterator
 from dataclasses import replace
 from functools import cached_property
@@ -111,15 +110,24 @@ def describe(name: str) -> str:
     return DESCRIPTIONS.get(name, name)
 
 
+# Engines whose module has been imported whole, by name.
+_LOADED: dict[str, Engine] = {}
+
+
 def lookup(name: str) -> Engine:
     """The engine called ``name``; an :class:`~solver.errors.InputError` for any other name."""
     if name not in DESCRIPTIONS:
         raise InputError.at(
             "<arguments>", f"unknown engine {name!r}; choose from {', '.join(DESCRIPTIONS)}"
         )
-    module = f"solver.engines.{name}"
     # Loaded once: the import machinery costs microseconds per call even for a loaded module.
-    return cast("Engine", sys.modules.get(module) or importlib.import_module(module))
+    # Kept only once its import has finished: ``sys.modules`` holds a module while it is still
+    # being executed, and a second thread (the studio solves in a thread pool) would get it
+    # half made; ``import_module`` waits for the thread importing it.
+    engine = _LOADED.get(name)
+    if engine is None:
+        engine = _LOADED[name] = cast("Engine", importlib.import_module(f"solver.engines.{name}"))
+    return engine
 
 
 def choose(

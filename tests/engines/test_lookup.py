@@ -3,13 +3,16 @@
 from __future__ import annotations
 
 import io
+import os
+import subprocess
+import sys
 
 import pytest
 
 from solver import InputError, load_team, solve
 from solver.engines import DESCRIPTIONS, ENUMERATING, NAMES, Memo, choose, lookup
 from solver.reporting.listing import write_robots
-from tests.conftest import TEAMS
+from tests.conftest import ROOT, TEAMS
 
 
 @pytest.mark.parametrize("name", list(DESCRIPTIONS))
@@ -44,3 +47,37 @@ def test_auto_takes_the_structure_and_names_the_engine_it_used() -> None:
     assert chosen == ["structure"] * len(team.selections)
     assert set(ENUMERATING) < set(NAMES)
     assert {t.method for t in solve(team, engine="csp").by_type} == {"csp"}
+
+
+# Eight threads look the structure engine up at once in a fresh interpreter, its module not
+# yet imported, and each asks it for ``count``; prints how many found it missing.
+FIRST_USE_IN_THREADS = """
+import threading
+from solver import engines
+barrier = threading.Barrier(8)
+missing = []
+def look():
+    barrier.wait()
+    if not hasattr(engines.lookup("structure"), "count"):
+        missing.append(1)
+threads = [threading.Thread(target=look) for _ in range(8)]
+for thread in threads:
+    thread.start()
+for thread in threads:
+    thread.join()
+print(len(missing))
+"""
+
+
+def test_threads_looking_an_engine_up_on_its_first_use_each_get_it_whole() -> None:
+    # The studio solves in a thread pool: the first requests import an engine's module, and
+    # a thread that came second got the module half made (no `count` yet).
+    done = subprocess.run(
+        [sys.executable, "-c", FIRST_USE_IN_THREADS],
+        cwd=ROOT,
+        env={**os.environ, "PYTHONPATH": str(ROOT)},
+        capture_output=True,
+        text=True,
+        check=True,
+    )
+    assert done.stdout.strip() == "0"
