@@ -436,21 +436,26 @@ def kiwi_base(*, hubs: bool = False, corners: bool = False) -> RobotText:
     """Three unnamed rims at 120 degrees, each turning about a level radial axle and carrying
     six free rollers on endless joints (omni wheels), no name of a wheel anywhere; ``hubs``
     hangs each rim's rollers from a hub link fixed to the rim (a CAD export's housing);
-    ``corners`` names each rim's link for the corner it is at (``front_right``, a word legs
-    are named by too)."""
+    ``corners`` names each rim, its link and its rollers for the corner it is at
+    (``rim_front_right``, a word legs are named by too) instead of its number."""
     robot = RobotText("kiwi")
     for i, (x, y) in enumerate(((0.2, 0.0), (-0.1, 0.17), (-0.1, -0.17))):
         place = f"{x} {y} 0"
-        corner = ("front_right", "back_left", "back_right")[i]
-        link = f"{corner}_rim" if corners else f"r{i}"
+        rim_name = f"rim_{('front_right', 'back_left', 'back_right')[i] if corners else i}"
         rim = builders.placed(
-            robot, f"rim_{i}", "continuous", robot.root, link, xyz=place, axis=place
+            robot, rim_name, "continuous", robot.root, f"{rim_name}_link", xyz=place, axis=place
         )
         if hubs:
             rim = robot.fixed(rim, f"hub{i}")
         for k in range(6):
             builders.placed(
-                robot, f"rim_{i}_r{k}", "continuous", rim, f"r{i}_{k}", xyz="0 0 0.03", axis="0 0 1"
+                robot,
+                f"{rim_name}_r{k}",
+                "continuous",
+                rim,
+                f"r{i}_{k}",
+                xyz="0 0 0.03",
+                axis="0 0 1",
             )
     return robot
 
@@ -470,12 +475,7 @@ def test_unnamed_rims_carrying_free_rollers_are_omni_wheels_and_the_rollers_pass
 
 def test_rims_named_for_a_corner_carrying_free_rollers_are_omni_wheels_not_legs() -> None:
     # A corner's word names a leg as often as a wheel; a rim of free rollers is a wheel.
-    text = kiwi_base(corners=True).text()
-    for i, corner in enumerate(("front_right", "back_left", "back_right")):
-        text = text.replace(f'"rim_{i}"', f'"rim_{corner}"').replace(
-            f'"rim_{i}_r', f'"rim_{corner}_r'
-        )
-    result = identify_urdf(text)
+    result = identify_urdf(kiwi_base(corners=True).text())
     assert result.structure == "UGV"
     assert result.body is not None
     assert result.body.wheels == ("rim_front_right", "rim_back_left", "rim_back_right")
