@@ -810,23 +810,34 @@ def _at_corners(tree: JointTree, base: str, group: list[Limb]) -> bool:
     """The chains start at the corners of ``base``: in pairs mirrored across it (left and right
     at one place along it), spread front to back at least as far as a pair is from the middle.
     A walker's hips are so, however its legs are folded in the zero pose; a hand's fingers
-    start side by side along one edge of the palm."""
+    start side by side along one edge of the palm. The middle is the link's origin or, where a
+    CAD export put that origin at a corner of the body, the middle of the chains' own starts."""
     placed = chain_ends(tree, group)
     if placed is None:
         return False
-    centre = tree.poses.place(base)
-    corners = [(s[0] - centre[0], s[1] - centre[1]) for s, _ in placed]
-    return _corners_either_way(corners)
+    starts = [start for start, _ in placed]
+    return any(
+        _corners_either_way([(s[0] - middle[0], s[1] - middle[1]) for s in starts])
+        for middle in (tree.poses.place(base), _middle(starts))
+    )
 
 
-def _corners_either_way(corners: list[tuple[float, float]]) -> bool:
+def _middle(starts: list[Place]) -> tuple[float, float]:
+    """The middle of the box around ``starts`` across the ground (x and y)."""
+    xs, ys = [start[0] for start in starts], [start[1] for start in starts]
+    return ((max(xs) + min(xs)) / 2, (max(ys) + min(ys)) / 2)
+
+
+def _corners_either_way(corners: list[tuple[float, float]], *, standing: bool = False) -> bool:
     """``corners`` (from the body's middle) are a walker's hips facing x (:func:`_corners`);
     only when no pairing across x's line is found, facing y (a body drawn with its length
-    along y): a square of four chains paired one way is not tried the other way."""
+    along y): a square of four chains paired one way is not tried the other way, unless the
+    chains stand (``standing``: feet level below the hips), when a body longer along y than
+    its hips are apart across x is tried facing y too."""
     if len(corners) > _MOST_FIVE_BAR_LEGS:
         return False  # no walker has so many: a stranger's file is not compared pair by pair
     paired = _corners(corners)
-    if paired is not None:
+    if paired is not None and (paired or not standing):
         return paired
     swapped = _corners([(y, x) for x, y in corners])
     return bool(swapped)
@@ -906,11 +917,10 @@ def _stands(tree: JointTree, base: str, group: list[Limb]) -> bool:
         return False
     if _both_sides(tree.poses.place(base), placed):
         return True
-    xs, ys = [start[0] for start, _ in placed], [start[1] for start, _ in placed]
-    middle = ((max(xs) + min(xs)) / 2, (max(ys) + min(ys)) / 2)
-    corners = [(x - middle[0], y - middle[1]) for x, y in zip(xs, ys, strict=True)]
+    middle = _middle([start for start, _ in placed])
+    corners = [(start[0] - middle[0], start[1] - middle[1]) for start, _ in placed]
     # Facing x, or facing y (a CAD export's rows of hips along y): standing, either way.
-    return _corners_either_way(corners)
+    return _corners_either_way(corners, standing=True)
 
 
 Place = tuple[float, float, float]

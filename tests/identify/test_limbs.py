@@ -153,6 +153,53 @@ def test_four_alike_unnamed_chains_ending_below_the_body_are_a_quadrupeds_legs()
     assert identify_urdf(builders.walker(4).text()).structure == "Quadruped"
 
 
+def cornered_walker(hips: list[tuple[float, float]], *, tip_z: float) -> RobotText:
+    """An unnamed four-legged CAD export: the body's origin at a corner of it (every hip on one
+    side of it), a 3-joint chain at each of ``hips``, its tip ``tip_z`` from its last joint."""
+    robot = RobotText("cad_export", root="l0")
+    for i, (x, y) in enumerate(hips):
+        first = builders.placed(robot, f"Rev{i}a", "revolute", "l0", f"l{i}a", xyz=f"{x} {y} 0")
+        second = builders.placed(
+            robot, f"Rev{i}b", "revolute", first, f"l{i}b", xyz="0.03 0 0", axis="0 1 0"
+        )
+        third = builders.placed(
+            robot, f"Rev{i}c", "revolute", second, f"l{i}c", xyz="0.04 0 0", axis="0 1 0"
+        )
+        robot.joint(f"tip{i}", "fixed", third, f"tip{i}_link", f'<origin xyz="0.03 0 {tip_z}"/>')
+    return robot
+
+
+def test_legs_raised_at_rest_at_the_corners_of_a_body_whose_origin_is_a_corner_are_legs() -> None:
+    # Hips at the corners around their own middle, the body's origin at one of them: the legs
+    # are folded up in the zero pose, so only where they start says they are legs.
+    robot = cornered_walker([(0.08, -0.03), (0.08, -0.11), (0.0, -0.03), (0.0, -0.11)], tip_z=0.06)
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["leg"] * 4
+    assert "corners" in result.body.limbs[0].why
+    assert result.structure == "Quadruped"
+
+
+def test_standing_legs_of_a_body_drawn_along_y_are_legs_though_its_hips_pair_across_x_too() -> None:
+    # Four hips at the corners of a box 0.1 m wide and 0.27 m long along y: paired across x's
+    # line too, but shorter that way than across; standing, they are read facing y.
+    robot = cornered_walker([(0.07, 0.04), (-0.03, 0.04), (0.07, 0.31), (-0.03, 0.31)], tip_z=-0.15)
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["leg"] * 4
+    assert "ending below" in result.body.limbs[0].why
+    assert result.structure == "Quadruped"
+
+
+@pytest.mark.parametrize("tip_z", [0.06, -0.15])
+def test_four_unnamed_fingers_in_a_row_on_a_palm_whose_origin_is_a_corner_stay_fingers(
+    tip_z: float,
+) -> None:
+    # In a row along one edge of the palm, pointing up or hanging down: no corners either way.
+    hips = [(0.0, -0.01), (0.0, -0.03), (0.0, -0.05), (0.0, -0.07)]
+    assert identify_urdf(cornered_walker(hips, tip_z=tip_z).text()).structure == "Hand"
+
+
 def test_fingers_on_a_palm_pointing_away_from_it_stay_fingers() -> None:
     # A hand's fingers are alike chains on one link too, but they do not end below it.
     assert identify_urdf(builders.hand().text()).structure == "Hand"
