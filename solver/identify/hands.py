@@ -3,7 +3,8 @@
 A gripper joint (named so by the profile, or on a link named as a hand or palm:
 :mod:`solver.identify.roles`) moves a finger, and so does every movable joint below one (a
 finger's phalanges): :func:`gripper_closure`. Fingers whose chains carry no names are still
-told by where they are, side by side on one palm in threes or more, or in a two-finger
+told by where they are, side by side on one palm in threes or more (short chains, or chains
+of many joints no longer than a finger: a soft or flexure finger), or in a two-finger
 gripper's pair, short and close together (:func:`finger_groups`).
 Jaws are told by where they are too (:func:`jaws`): joints side by side on one link that turn
 or slide about one line with nothing beyond them but their own followers (a linkage of mimic
@@ -21,6 +22,7 @@ Not here: the limb a hand ends (:mod:`solver.identify.limbs`), the other single-
 from __future__ import annotations
 
 import re
+from itertools import pairwise
 
 from solver.identify.couplings import Walk, jaw_groups
 from solver.identify.limbs import Limb, chain_ends, moved_by
@@ -50,6 +52,9 @@ _STILL = 1e-6
 # The farthest a finger reaches from its first joint to its tip (metres): a hand's finger is
 # about 0.1 m, a gripper's jaw less; an arm, even a small one, reaches farther.
 _FINGER_REACH = 0.15
+# Fingers' tips lie at least this share of how far apart they start from each other; chains
+# whose tips meet closer hold one platform.
+_MEETING = 0.5
 
 
 def jaws(tree: JointTree, taken: set[str]) -> dict[str, str]:
@@ -327,7 +332,9 @@ def finger_groups(
 ) -> set[str]:
     """Joints of unnamed short chains hanging from one palm (a link, and the links fixed to it:
     a metacarpal each) in threes or more: fingers (also where each ends in a named fingertip,
-    and then one joint longer than a finger: :func:`_ends_in_a_fingertip`);
+    and then one joint longer than a finger: :func:`_ends_in_a_fingertip`; and chains of more
+    joints no longer than a finger, a flexure finger's: :func:`_finger_sized`, unless their tips
+    meet: :func:`_tips_meet`);
     failing that, fingers that spread on joints of their own, chains beside a thumb, and a
     two-finger gripper's two short chains close together (:func:`_two_fingers`).
 
@@ -353,7 +360,9 @@ def finger_groups(
         on_palm.setdefault(body, []).append(limb)
         joints = len(limb.joints)
         if not limb.named and (
-            joints <= longest or (joints == longest + 1 and _ends_in_a_fingertip(tree, limb))
+            joints <= longest
+            or (joints == longest + 1 and _ends_in_a_fingertip(tree, limb))
+            or _finger_sized(tree, limb)
         ):
             by_base.setdefault(limb.base, []).append(limb)
             by_palm.setdefault(body, []).append(limb)
@@ -361,6 +370,7 @@ def finger_groups(
         name
         for group in by_palm.values()
         if len(group) >= tree.profile.limb("hand_min_fingers")
+        and (all(len(limb.joints) <= longest + 1 for limb in group) or not _tips_meet(tree, group))
         for limb in group
         for name in limb.joints
     }
@@ -378,6 +388,34 @@ def finger_groups(
         or _beside_a_thumb(tree, on_palm, palms)
         or _two_fingers(tree, by_palm, on_palm)
     )
+
+
+def _finger_sized(tree: JointTree, limb: Limb) -> bool:
+    """``limb`` is no longer than a finger reaches (:data:`_FINGER_REACH`, along its links from
+    its first joint to its tip, however it is bent at rest) on more joints than a finger has: a
+    soft or flexure finger drawn as a row of short links, its bending split among them; an arm,
+    even a small one folded at rest, is longer, a snake's modules longer still. A chain drawn at
+    no place says nothing of its size."""
+    places = [
+        tree.poses.place(joint.child)
+        for name in limb.joints
+        if (joint := tree.urdf.joint(name)) is not None
+    ]
+    places.append(tree.poses.place(limb.tip))
+    length = sum(distance(a, b) for a, b in pairwise(places))
+    return _SAME < length <= _FINGER_REACH
+
+
+def _tips_meet(tree: JointTree, group: list[Limb]) -> bool:
+    """The chains' tips lie closer together than :data:`_MEETING` of how far apart the chains
+    start: one platform's linkage (a small delta's arms), no fingers."""
+    ends = chain_ends(tree, group)
+    if ends is None:
+        return True
+    starts = [start for start, _ in ends]
+    tips = [tip for _, tip in ends]
+    apart = max(distance(a, b) for a in starts for b in starts)
+    return max(distance(a, b) for a in tips for b in tips) < _MEETING * apart
 
 
 def _ends_in_a_fingertip(tree: JointTree, limb: Limb) -> bool:

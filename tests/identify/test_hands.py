@@ -200,6 +200,44 @@ def test_three_short_unnamed_chains_on_one_link_are_fingers_and_two_are_not() ->
     assert finger_groups(tree, three + two, grounded=True) == set()
 
 
+def segmented(steps: list[list[tuple[float, float, float]]]) -> RobotText:
+    """A body with one unnamed chain per entry of ``steps``, starting 0.03 m apart across it:
+    a joint at each step (an offset from the joint before), its tip one step further."""
+    robot = RobotText("segmented", root="body")
+    for c, chain in enumerate(steps):
+        link, (x, y, z) = "body", (0.0, 0.03 * (c - 1), 0.0)
+        for j, step in enumerate(chain[:-1]):
+            link = builders.placed(
+                robot, f"j{c}_{j}", "revolute", link, f"l{c}_{j}", xyz=f"{x} {y} {z}",
+                axis="0 1 0",
+            )  # fmt: skip
+            x, y, z = step
+        robot.joint(f"tip{c}", "fixed", link, f"tip{c}_link", f'<origin xyz="{x} {y} {z}"/>')
+    return robot
+
+
+def test_three_unnamed_chains_of_many_short_links_are_flexure_fingers() -> None:
+    # Ten joints 8 mm apart: longer than a finger's joints, no longer than a finger.
+    robot = segmented([[(0.0, 0.0, 0.008)] * 11] * 3)
+    result = identify_urdf(robot.text())
+    assert result.structure == "Hand"
+    assert result.body is not None
+    assert len(result.body.fingers) == 3
+
+
+def test_arms_folded_at_rest_are_as_long_as_their_links_and_no_fingers() -> None:
+    # Six joints 0.1 m apart, each link folding back on the last: the tips end 7 cm from the
+    # starts, as near as a finger's would.
+    folded = [(0.0, 0.01, 0.1 if j % 2 == 0 else -0.1) for j in range(7)]
+    assert identify_urdf(segmented([folded] * 3).text()).structure != "Hand"
+
+
+def test_short_chains_of_many_links_whose_tips_meet_hold_one_platform_and_are_no_fingers() -> None:
+    # Each chain steps in towards the middle: the three tips meet above the palm (a small delta).
+    chains = [[(0.0, -0.003 * (c - 1), 0.006)] * 11 for c in range(3)]
+    assert identify_urdf(segmented(chains).text()).structure != "Hand"
+
+
 def test_jaws_closed_by_one_motion_are_a_gripper_whatever_their_names() -> None:
     result = identify_urdf(builders.one_motion_gripper().text())
     assert result.structure == "Gripper"
