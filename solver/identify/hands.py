@@ -55,6 +55,9 @@ _FINGER_REACH = 0.15
 # Fingers' tips lie at least this share of how far apart they start from each other; chains
 # whose tips meet closer hold one platform.
 _MEETING = 0.5
+# Chains taken as fingers by their size on one palm, at most (a hand has five, a claw a few
+# more): past this, a stranger's thousands of chains are no fingers, not compared pair by pair.
+_MOST_SIZED_FINGERS = 16
 
 
 def jaws(tree: JointTree, taken: set[str]) -> dict[str, str]:
@@ -351,6 +354,7 @@ def finger_groups(
     on_palm: dict[str | None, list[Limb]] = {}
     longest = tree.profile.limb("finger_max_joints")
     known: dict[str, str | None] = {}
+    sized: set[str | None] = set()  # palms holding a chain taken by its size alone
     for limb in limbs:
         if grounded and limb.base == tree.urdf.root:
             continue
@@ -358,22 +362,14 @@ def finger_groups(
         if (walks_on and body in walks_on) or limb.kind not in ("arm", "other"):
             continue
         on_palm.setdefault(body, []).append(limb)
-        joints = len(limb.joints)
-        if not limb.named and (
-            joints <= longest
-            or (joints == longest + 1 and _ends_in_a_fingertip(tree, limb))
-            or _finger_sized(tree, limb)
-        ):
-            by_base.setdefault(limb.base, []).append(limb)
-            by_palm.setdefault(body, []).append(limb)
-    found = {
-        name
-        for group in by_palm.values()
-        if len(group) >= tree.profile.limb("hand_min_fingers")
-        and (all(len(limb.joints) <= longest + 1 for limb in group) or not _tips_meet(tree, group))
-        for limb in group
-        for name in limb.joints
-    }
+        taken = None if limb.named else _finger_like(tree, limb, longest)
+        if taken is None:
+            continue
+        if taken == "size":
+            sized.add(body)
+        by_base.setdefault(limb.base, []).append(limb)
+        by_palm.setdefault(body, []).append(limb)
+    found = _on_one_palm(tree, by_palm, sized)
     if found:
         return found
     # The bodies a gripper joint starts from: a thumb named so, on a carpal link fixed to the
@@ -390,28 +386,61 @@ def finger_groups(
     )
 
 
+def _on_one_palm(
+    tree: JointTree, by_palm: dict[str | None, list[Limb]], sized: set[str | None]
+) -> set[str]:
+    """The joints of the chains on a palm holding enough of them to be a hand's fingers, the
+    tips of a palm's chains taken by their size apart (:func:`_tips_meet`)."""
+    return {
+        name
+        for body, group in by_palm.items()
+        if len(group) >= tree.profile.limb("hand_min_fingers")
+        and (body not in sized or not _tips_meet(tree, group))
+        for limb in group
+        for name in limb.joints
+    }
+
+
+def _finger_like(tree: JointTree, limb: Limb, longest: int) -> str | None:
+    """How an unnamed chain is a finger's: ``"joints"`` (no more joints than a finger has, one
+    more ending in a named fingertip), ``"size"`` (:func:`_finger_sized`), or ``None``."""
+    joints = len(limb.joints)
+    if joints <= longest or (joints == longest + 1 and _ends_in_a_fingertip(tree, limb)):
+        return "joints"
+    return "size" if _finger_sized(tree, limb) else None
+
+
 def _finger_sized(tree: JointTree, limb: Limb) -> bool:
     """``limb`` is no longer than a finger reaches (:data:`_FINGER_REACH`, along its links from
     its first joint to its tip, however it is bent at rest) on more joints than a finger has: a
     soft or flexure finger drawn as a row of short links, its bending split among them; an arm,
     even a small one folded at rest, is longer, a snake's modules longer still. A chain drawn at
-    no place says nothing of its size."""
+    no place says nothing of its size; one that slides (a Stewart platform's strut) or has two
+    joints at one point past its first (a universal or ball joint of a linkage written as
+    hinges; a finger's base may turn two ways at one point) is no finger by its size."""
+    if any((j := tree.urdf.joint(n)) is None or j.type == "prismatic" for n in limb.joints):
+        return False  # a strut slides (a Stewart platform's leg); a flexure finger bends
     places = [
         tree.poses.place(joint.child)
         for name in limb.joints
         if (joint := tree.urdf.joint(name)) is not None
     ]
     places.append(tree.poses.place(limb.tip))
-    length = sum(distance(a, b) for a, b in pairwise(places))
+    steps = [distance(a, b) for a, b in pairwise(places)]
+    if any(step <= _SAME for step in steps[1:-1]):
+        return False  # joints at one point past the first: a universal or ball joint (a linkage's)
+    length = sum(steps)
     return _SAME < length <= _FINGER_REACH
 
 
 def _tips_meet(tree: JointTree, group: list[Limb]) -> bool:
     """The chains' tips lie closer together than :data:`_MEETING` of how far apart the chains
-    start: one platform's linkage (a small delta's arms), no fingers."""
+    start (in space, not across the ground: a hand may point any way): one platform's linkage
+    (a small delta's arms), no fingers. More than :data:`_MOST_SIZED_FINGERS` chains are not
+    compared pair by pair and count as meeting."""
     ends = chain_ends(tree, group)
-    if ends is None:
-        return True
+    if ends is None or len(ends) > _MOST_SIZED_FINGERS:
+        return True  # a stranger's thousands of chains are not compared pair by pair
     starts = [start for start, _ in ends]
     tips = [tip for _, tip in ends]
     apart = max(distance(a, b) for a in starts for b in starts)

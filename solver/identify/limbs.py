@@ -811,15 +811,28 @@ def _at_corners(tree: JointTree, base: str, group: list[Limb]) -> bool:
     at one place along it), spread front to back at least as far as a pair is from the middle.
     A walker's hips are so, however its legs are folded in the zero pose; a hand's fingers
     start side by side along one edge of the palm. The middle is the link's origin or, where a
-    CAD export put that origin at a corner of the body, the middle of the chains' own starts."""
+    CAD export put that origin at a corner of the chains' starts or beyond them (inside their
+    box along neither x nor y), the middle of the starts; not on a body with wheels of its own
+    (a tracked base's flippers)."""
     placed = chain_ends(tree, group)
     if placed is None:
         return False
     starts = [start for start, _ in placed]
+    origin = tree.poses.place(base)
+    middles = [(origin[0], origin[1])]
+    low = [min(s[i] for s in starts) + _SAME_PLACE for i in (0, 1)]
+    high = [max(s[i] for s in starts) - _SAME_PLACE for i in (0, 1)]
+    if not _wheeled(tree) and not any(low[i] < origin[i] < high[i] for i in (0, 1)):
+        middles.append(_middle(starts))
     return any(
         _corners_either_way([(s[0] - middle[0], s[1] - middle[1]) for s in starts])
-        for middle in (tree.poses.place(base), _middle(starts))
+        for middle in middles
     )
+
+
+def _wheeled(tree: JointTree) -> bool:
+    """A movable joint of the body is named as a wheel's."""
+    return any(tree.matches("wheel", joint) for joint in tree.urdf.joints if joint.movable)
 
 
 def _middle(starts: list[Place]) -> tuple[float, float]:

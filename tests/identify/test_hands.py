@@ -6,7 +6,14 @@ from __future__ import annotations
 import pytest
 
 from solver.identify import identify_urdf, load_profile
-from solver.identify.hands import finger_groups, finger_tips, gripper_closure
+from solver.identify.hands import (
+    _MOST_SIZED_FINGERS,
+    _finger_sized,
+    _tips_meet,
+    finger_groups,
+    finger_tips,
+    gripper_closure,
+)
 from solver.identify.limbs import Limb
 from solver.identify.readers.urdf import parse_urdf
 from solver.identify.tree import JointTree
@@ -232,10 +239,36 @@ def test_arms_folded_at_rest_are_as_long_as_their_links_and_no_fingers() -> None
     assert identify_urdf(segmented([folded] * 3).text()).structure != "Hand"
 
 
-def test_short_chains_of_many_links_whose_tips_meet_hold_one_platform_and_are_no_fingers() -> None:
-    # Each chain steps in towards the middle: the three tips meet above the palm (a small delta).
-    chains = [[(0.0, -0.003 * (c - 1), 0.006)] * 11 for c in range(3)]
+@pytest.mark.parametrize("joints", [5, 10])
+def test_short_chains_of_many_links_whose_tips_meet_hold_one_platform_and_are_no_fingers(
+    joints: int,
+) -> None:
+    # Each chain steps in towards the middle: the three tips meet above the palm (a small delta),
+    # with one joint more than a finger's four (no fingertip named), or many more.
+    chains = [[(0.0, -0.03 * (c - 1) / joints, 0.06 / joints)] * (joints + 1) for c in range(3)]
     assert identify_urdf(segmented(chains).text()).structure != "Hand"
+
+
+def test_a_chain_that_slides_or_turns_twice_at_one_point_past_its_first_is_no_flexure_finger() -> (
+    None
+):
+    # A small Stewart platform's strut slides; a linkage's ball joint is hinges at one point.
+    finger = Limb("arm", tuple(f"j0_{j}" for j in range(10)), "body", "tip0_link")
+    robot = segmented([[(0.0, 0.0, 0.008)] * 11] * 3)
+    assert _finger_sized(tree_of(robot), finger)
+    strut = robot.text().replace('name="j0_5" type="revolute"', 'name="j0_5" type="prismatic"')
+    assert not _finger_sized(JointTree(parse_urdf(strut, strict=False), load_profile()), finger)
+    ball = segmented([[(0.0, 0.0, 0.008)] * 3 + [(0.0, 0.0, 0.0)] + [(0.0, 0.0, 0.008)] * 7])
+    assert not _finger_sized(tree_of(ball), finger)
+
+
+def test_chains_past_the_most_fingers_a_palm_holds_are_not_compared_pair_by_pair() -> None:
+    robot = segmented([[(0.0, 0.0, 0.008)] * 11] * 3)
+    fingers = [
+        Limb("arm", tuple(f"j{c}_{j}" for j in range(10)), "body", f"tip{c}_link") for c in range(3)
+    ]
+    assert not _tips_meet(tree_of(robot), fingers)
+    assert _tips_meet(tree_of(robot), fingers * _MOST_SIZED_FINGERS)
 
 
 def test_jaws_closed_by_one_motion_are_a_gripper_whatever_their_names() -> None:

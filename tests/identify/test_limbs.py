@@ -191,6 +191,28 @@ def test_standing_legs_of_a_body_drawn_along_y_are_legs_though_its_hips_pair_acr
     assert result.structure == "Quadruped"
 
 
+def test_four_chains_raised_at_rest_around_a_palm_whose_origin_lies_between_them_stay_fingers() -> (
+    None
+):
+    # The origin inside the chains' box across y: no corner of them, and the chains are not
+    # mirrored about it; a gripper's four fingers, not legs by their own middle.
+    robot = cornered_walker([(0.08, 0.03), (0.08, -0.05), (0.0, 0.03), (0.0, -0.05)], tip_z=0.06)
+    assert identify_urdf(robot.text()).structure == "Hand"
+
+
+def test_chains_at_the_corners_of_a_wheeled_body_whose_origin_is_a_corner_are_no_legs() -> None:
+    # A base on its own wheels with four flippers: not legs by the chains' own middle.
+    robot = cornered_walker([(0.08, -0.03), (0.08, -0.11), (0.0, -0.03), (0.0, -0.11)], tip_z=0.06)
+    for side, y in (("left", 0.0), ("right", -0.14)):
+        builders.placed(
+            robot, f"{side}_wheel_joint", "continuous", "l0", f"{side}_wheel", xyz=f"0.04 {y} 0",
+            axis="0 1 0",
+        )  # fmt: skip
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert not [limb for limb in result.body.limbs if limb.kind == "leg"]
+
+
 @pytest.mark.parametrize("tip_z", [0.06, -0.15])
 def test_four_unnamed_fingers_in_a_row_on_a_palm_whose_origin_is_a_corner_stay_fingers(
     tip_z: float,
