@@ -25,7 +25,7 @@ import re
 from itertools import pairwise
 
 from solver.identify.couplings import Walk, jaw_groups
-from solver.identify.limbs import Limb, chain_ends, moved_by
+from solver.identify.limbs import Limb, chain_ends, moved_by, tips_meet
 from solver.identify.pose import distance, local_axis, parallel, perpendicular
 from solver.identify.readers.urdf import Joint
 from solver.identify.tree import JointTree
@@ -52,9 +52,6 @@ _STILL = 1e-6
 # The farthest a finger reaches from its first joint to its tip (metres): a hand's finger is
 # about 0.1 m, a gripper's jaw less; an arm, even a small one, reaches farther.
 _FINGER_REACH = 0.15
-# Fingers' tips lie at least this share of how far apart they start from each other; chains
-# whose tips meet closer hold one platform.
-_MEETING = 0.5
 # Chains taken as fingers by their size on one palm, at most (a hand has five, a claw a few
 # more): past this, a stranger's thousands of chains are no fingers, not compared pair by pair.
 _MOST_SIZED_FINGERS = 16
@@ -418,13 +415,10 @@ def _finger_sized(tree: JointTree, limb: Limb) -> bool:
     no place says nothing of its size; one that slides (a Stewart platform's strut) or has two
     joints at one point past its first (a universal or ball joint of a linkage written as
     hinges; a finger's base may turn two ways at one point) is no finger by its size."""
-    if any((j := tree.urdf.joint(n)) is None or j.type == "prismatic" for n in limb.joints):
+    joints = [tree.urdf.joint(name) for name in limb.joints]
+    if any(joint is None or joint.type == "prismatic" for joint in joints):
         return False  # a strut slides (a Stewart platform's leg); a flexure finger bends
-    places = [
-        tree.poses.place(joint.child)
-        for name in limb.joints
-        if (joint := tree.urdf.joint(name)) is not None
-    ]
+    places = [tree.poses.place(joint.child) for joint in joints if joint is not None]
     places.append(tree.poses.place(limb.tip))
     steps = [distance(a, b) for a, b in pairwise(places)]
     if any(step <= _SAME for step in steps[1:-1]):
@@ -434,17 +428,14 @@ def _finger_sized(tree: JointTree, limb: Limb) -> bool:
 
 
 def _tips_meet(tree: JointTree, group: list[Limb]) -> bool:
-    """The chains' tips lie closer together than :data:`_MEETING` of how far apart the chains
-    start (in space, not across the ground: a hand may point any way): one platform's linkage
-    (a small delta's arms), no fingers. More than :data:`_MOST_SIZED_FINGERS` chains are not
-    compared pair by pair and count as meeting."""
+    """The chains' tips meet (:func:`~solver.identify.limbs.tips_meet`, in space, not across
+    the ground: a hand may point any way): one platform's linkage (a small delta's arms), no
+    fingers. More than :data:`_MOST_SIZED_FINGERS` chains are not compared pair by pair and count
+    as meeting."""
     ends = chain_ends(tree, group)
     if ends is None or len(ends) > _MOST_SIZED_FINGERS:
         return True  # a stranger's thousands of chains are not compared pair by pair
-    starts = [start for start, _ in ends]
-    tips = [tip for _, tip in ends]
-    apart = max(distance(a, b) for a in starts for b in starts)
-    return max(distance(a, b) for a in tips for b in tips) < _MEETING * apart
+    return tips_meet([start for start, _ in ends], [tip for _, tip in ends], distance)
 
 
 def _ends_in_a_fingertip(tree: JointTree, limb: Limb) -> bool:

@@ -80,6 +80,7 @@ __all__ = [
     "lone_leg",
     "sort_limbs",
     "spine",
+    "tips_meet",
     "wheeled_spine",
     "wrist",
 ]
@@ -625,13 +626,14 @@ def legs_by_place(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
             by_base.setdefault((_carrier(tree, limb.base, known), True), []).append(limb)
     legs: dict[int, str] = {}
     turns: dict[str, int] = {}
+    wheeled = _wheeled(tree)
     for (base, _), group in by_base.items():
         lengths = {len(limb.joints) for limb in group}
         if len(group) < _WALKER_LEGS or len(lengths) != 1:
             continue
         if not _on_the_trunk(tree, base, turns):
             continue  # a hand's fingers past an arm's joints: legs hang from the trunk
-        why = _legs_why(tree, base, group)
+        why = _legs_why(tree, base, group, wheeled=wheeled)
         if why:
             legs.update((id(limb), why) for limb in group)
     if not legs:
@@ -645,8 +647,9 @@ def legs_by_place(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     )
 
 
-def _legs_why(tree: JointTree, base: str, group: list[Limb]) -> str:
-    """Why alike chains around ``base`` are legs, or "" when they are not."""
+def _legs_why(tree: JointTree, base: str, group: list[Limb], *, wheeled: bool) -> str:
+    """Why alike chains around ``base`` are legs, or "" when they are not; ``wheeled``: the
+    body has wheels of its own (:func:`_at_corners`)."""
     if len(group[0].joints) == 1:
         if len(group) >= _WHOLE_TURN_LEGS and _around(tree, base, group) and _parallel(tree, group):
             return (
@@ -663,7 +666,7 @@ def _legs_why(tree: JointTree, base: str, group: list[Limb]) -> str:
             "one of six or more alike chains around one link, each reaching out flat from it"
             " (a walker's legs at rest, by place)"
         )
-    if _at_corners(tree, base, group):
+    if _at_corners(tree, base, group, wheeled=wheeled):
         return (
             "one of alike chains starting in mirrored pairs at the corners of one link (a"
             " walker's hips, its legs folded at rest: legs by place)"
@@ -702,8 +705,7 @@ def meeting_tips(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
         return limbs  # a stranger's thousands of chains are not compared pair by pair
     starts = [_start(tree, limb) for limb in legs]
     tips = [tree.poses.place(limb.tip) for limb in legs]
-    apart = max(_flat(a, b) for a in starts for b in starts)
-    if apart == 0 or max(_flat(a, b) for a in tips for b in tips) >= _MEETING * apart:
+    if not tips_meet(starts, tips, _flat):
         return limbs
     # One manipulator: its longest chain is the arm, the others its parallel linkage.
     arm = max(legs, key=lambda limb: len(limb.joints))
@@ -714,6 +716,16 @@ def meeting_tips(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
         else limb
         for limb in limbs
     ]
+
+
+def tips_meet(
+    starts: list[Place], tips: list[Place], measure: Callable[[Place, Place], float]
+) -> bool:
+    """The tips lie closer together, by ``measure`` (across the ground, or in space), than
+    :data:`_MEETING` of how far apart the chains start: one platform's linkage. Pair by pair:
+    callers bound how many chains they compare."""
+    apart = max(measure(a, b) for a in starts for b in starts)
+    return apart > 0 and max(measure(a, b) for a in tips for b in tips) < _MEETING * apart
 
 
 def parallel_robot(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
@@ -806,14 +818,14 @@ def _third_turn_symmetric(starts: list[Place]) -> bool:
     return True
 
 
-def _at_corners(tree: JointTree, base: str, group: list[Limb]) -> bool:
+def _at_corners(tree: JointTree, base: str, group: list[Limb], *, wheeled: bool) -> bool:
     """The chains start at the corners of ``base``: in pairs mirrored across it (left and right
     at one place along it), spread front to back at least as far as a pair is from the middle.
     A walker's hips are so, however its legs are folded in the zero pose; a hand's fingers
     start side by side along one edge of the palm. The middle is the link's origin or, where a
     CAD export put that origin at a corner of the chains' starts or beyond them (inside their
     box along neither x nor y), the middle of the starts; not on a body with wheels of its own
-    (a tracked base's flippers)."""
+    (``wheeled``: a tracked base's flippers)."""
     placed = chain_ends(tree, group)
     if placed is None:
         return False
@@ -822,7 +834,7 @@ def _at_corners(tree: JointTree, base: str, group: list[Limb]) -> bool:
     middles = [(origin[0], origin[1])]
     low = [min(s[i] for s in starts) + _SAME_PLACE for i in (0, 1)]
     high = [max(s[i] for s in starts) - _SAME_PLACE for i in (0, 1)]
-    if not _wheeled(tree) and not any(low[i] < origin[i] < high[i] for i in (0, 1)):
+    if not wheeled and not any(low[i] < origin[i] < high[i] for i in (0, 1)):
         middles.append(_middle(starts))
     return any(
         _corners_either_way([(s[0] - middle[0], s[1] - middle[1]) for s in starts])
