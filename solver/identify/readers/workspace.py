@@ -95,6 +95,18 @@ GENERIC_STEMS = frozenset({"robot_", "my_robot_", "ros_", "ros2_", "test_", "my_
 # MIN_COMMON of them) is a word of every launch file, not a use.
 COMMON_SHARE = 0.5
 MIN_COMMON = 3
+# Package names that are also a parameter every launch file writes: ``robot_description``
+# holds the URDF. A package of such a name is used only where a file names it as a package
+# (``$(find robot_description)``, ``package://robot_description``,
+# ``get_package_share_directory('robot_description')``, a package.xml), never by the parameter:
+# a neighbouring robot's launch file setting its own ``robot_description`` does not use it.
+PARAMETER_NAMES = frozenset({"robot_description"})
+_AS_PACKAGE = re.compile(
+    r"(?:\$\((?:find|find-pkg-share|find-pkg-prefix)\s+|package://|"
+    r"(?:get_package_share_directory|get_package_share_path|get_package_prefix|"
+    r"FindPackageShare|FindPackagePrefix|get_path)\(\s*(?:package\s*=\s*)?['\"]|pkg=['\"])"
+    r"([A-Za-z0-9_]+)"
+)
 _NAME = re.compile(r"<name>\s*([A-Za-z0-9_.-]{1,200})\s*</name>")
 _WORD = re.compile(r"[A-Za-z0-9_]+")
 # A metapackage exports ``<metapackage/>`` (``<metapackage />``, ``<metapackage></metapackage>``).
@@ -425,7 +437,10 @@ def _read_into(owner: _Package, path: str, top: str, names: set[str], budget: _B
         text = _without_comment_lines(text, "//" if path.endswith(_CPP_SUFFIXES) else "#")
     if "kill" in text:
         text = _KILLS.sub("", text)
-    owner.mentions.update(names.intersection(_WORD.findall(text)))
+    written = names.intersection(_WORD.findall(text))
+    if not written.isdisjoint(PARAMETER_NAMES):
+        written -= PARAMETER_NAMES - set(_AS_PACKAGE.findall(text))
+    owner.mentions.update(written)
     owner.files.append(ShippedFile(owner.name, os.path.relpath(path, top), text))
 
 

@@ -223,6 +223,36 @@ def test_a_name_most_packages_write_is_no_evidence_that_its_package_is_used(
     assert read(described).packages == ("rover_description", "rover_bringup")
 
 
+def test_a_neighbours_robot_description_parameter_does_not_use_a_package_of_that_name(
+    tmp_path: Path,
+) -> None:
+    # A repository of demos: the rover's description package is named like the parameter every
+    # launch file sets; the arm's demo sets its own parameter and plans with a pose goal.
+    src = tmp_path / "src"
+    described = package(src, "robot_description")
+    package(src, "arm_demo", {"launch/arm.launch.py": "{'robot_description': doc.toxml()}"})
+    assert read(described).packages == ("robot_description",)
+
+
+@pytest.mark.parametrize(
+    "reference",
+    [
+        "$(find-pkg-share robot_description)/launch/rsp.launch.py",
+        "$(find robot_description)/urdf/rover.xacro",
+        "get_package_share_directory('robot_description')",
+        'FindPackageShare(package="robot_description")',
+        "package://robot_description/meshes/base.dae",
+    ],
+)
+def test_a_package_named_like_the_parameter_is_used_where_a_file_names_it_as_a_package(
+    tmp_path: Path, reference: str
+) -> None:
+    src = tmp_path / "src"
+    described = package(src, "robot_description")
+    package(src, "rover_gazebo", {"launch/sim.launch": reference})
+    assert read(described).packages == ("robot_description", "rover_gazebo")
+
+
 @pytest.mark.parametrize(
     "export",
     [
