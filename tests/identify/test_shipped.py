@@ -125,12 +125,14 @@ def test_move_base_and_position_set_points_are_navigation_too() -> None:
     assert shipped("Mobile Manipulator", "arm.setPoseTarget(target_pose)") == {}
     assert shipped("Legged Mobile Manipulator", "arm.set_pose_target(target_pose)") == {}
     assert "Waypoint" in shipped("Mobile Manipulator", "goal = NavigateToPose.Goal()")
-    # The goal topic RViz and Nav2 name `goal_pose` is a vehicle's or a walker's goal, but a
-    # mobile manipulator's arm goal in a MoveIt script; a word of its own, not a reward weight.
+    # The goal topic RViz and Nav2 name `goal_pose` is a vehicle's or a walker's goal, but an
+    # arm's goal on a body with arms (a MoveIt script's, a humanoid's arm kinematics); a word of
+    # its own, not a reward weight.
     for goal in ("self.create_publisher(PoseStamped, '/goal_pose', 10)", "topic: goal_pose"):
         assert "Waypoint" in shipped("UGV", goal), goal
         assert "Waypoint" in shipped("Quadruped", goal), goal
     assert shipped("Mobile Manipulator", "planning_component.set_goal_state(goal_pose)") == {}
+    assert shipped("Humanoid", "arm_ik.solve(goal_pose)") == {}
     assert shipped("Quadruped", "reward = goal_pose_weight * distance") == {}
     # Nav2's simple commander and move_base_flex send a base its goals under their own names.
     for navigation in (
