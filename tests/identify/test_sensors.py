@@ -104,6 +104,29 @@ def test_a_urdf_sensor_without_a_kind_element_is_told_by_its_name() -> None:
     ]
 
 
+def test_a_model_exported_from_sdf_keeps_its_sensors_names_and_they_tell_their_kinds() -> None:
+    # A subterranean challenge rover's URDF: each SDF sensor written again with no kind element.
+    robot = builders.ugv()
+    robot.joint("mast_joint", "fixed", robot.root, "mast")
+
+    def bare(name: str, link: str = "base_link") -> str:
+        return f'  <sensor name="{name}" update_rate="20"><parent link="{link}"/></sensor>'
+
+    for name in ("front_laser", "lidar_back", "magnetometer", "air_pressure", "gps_antenna"):
+        robot.add(bare(name))
+    robot.add(bare("depth_camera_up"))
+    robot.add(bare("camera_rear", "mast"))
+    found = [(s.kind, s.sensor_type, s.count) for s in identify_urdf(robot.text()).sensors]
+    assert sorted(found) == [
+        ("barometer", None, 1),
+        ("camera", "2D Camera", 1),
+        ("depth_camera", "RGB-D Camera", 1),
+        ("gps", None, 1),
+        ("lidar", "LIDAR", 2),
+        ("magnetometer", None, 1),
+    ]
+
+
 def test_gazebo_0x_namespaced_sensors_and_controllers_are_read() -> None:
     old = "http://playerstage.sourceforge.net/gazebo/xmlschema/#"
     text = (
