@@ -61,6 +61,11 @@ _DEVICE_DEPTH = 2
 # Kinds whose one device is declared as parts on one link: an IMU's accelerometer and
 # gyrometer, an RGB-D camera's colour and depth streams (each read as a depth camera).
 _COMPOSED = ("imu", "depth_camera")
+# Kinds a ros2_control sensor cannot be, whatever its name: its state interfaces carry numbers,
+# no image or scan (a `camera_pose` reads a pose).
+_IMAGING = frozenset(
+    {"camera", "depth_camera", "stereo_camera", "wide_angle_camera", "thermal_camera", "lidar"}
+)
 # How far apart two frames on one link may sit and still be one device's streams (metres).
 STREAM_REACH = 0.1
 # A link that is a camera's own body (its streams' frames are fixed to it), by its name.
@@ -153,6 +158,8 @@ def _element_detections(
     urdf_links = {t.name: t.link for t in urdf.sensors if t.origin == "urdf" and t.link}
     for tag in urdf.sensors:
         kind = element_kind(tag, profile)
+        if tag.origin == "ros2_control" and kind in _IMAGING:
+            kind = "unknown"  # told by a name it cannot be: dropped with the other unknown ones
         link = tag.link
         if link is not None and not urdf.has_link(link):
             if link in urdf_links:

@@ -186,6 +186,7 @@ def test_package_rules_are_optional_and_their_structures_are_checked() -> None:
         "Waypoint",
         "Waypoint",
         "Waypoint",
+        "Waypoint",
         "velocity",
         "End Effector",
         "End Effector",

@@ -127,6 +127,41 @@ def test_a_model_exported_from_sdf_keeps_its_sensors_names_and_they_tell_their_k
     ]
 
 
+def test_a_sensor_without_a_kind_element_is_not_misread_by_a_part_of_its_name() -> None:
+    def bare(name: str) -> str:
+        return f'  <sensor name="{name}" update_rate="20"><parent link="base_link"/></sensor>'
+
+    # Two cameras named stereo, left and right, are one stereo camera; a scan frame is a
+    # lidar's, a scan matcher's name is no device; a sonar's range is a sonar's.
+    found = kinds(
+        bare("stereo_left"),
+        bare("stereo_right"),
+        bare("front_scan"),
+        bare("scan_matcher"),
+        bare("sonar_distance"),
+    )
+    assert sorted(found) == [
+        ("lidar", "LIDAR", 1),
+        ("sonar", None, 1),
+        ("stereo_camera", "3D Camera", 1),
+        ("unknown", None, 1),
+    ]
+
+
+def test_a_depth_gauge_without_a_kind_element_on_a_submarine_is_no_camera() -> None:
+    robot = builders.underwater_vehicle()
+    robot.add('  <sensor name="depth_gauge" update_rate="20"><parent link="base_link"/></sensor>')
+    assert [s.kind for s in identify_urdf(robot.text()).sensors] == ["pressure"]
+
+
+def test_a_ros2_control_sensor_named_for_a_camera_or_a_lidar_reads_no_image_or_scan() -> None:
+    found = kinds(
+        hardware_sensor("camera_pose", "x", "y", "z"),
+        hardware_sensor("lidar", "value"),
+    )
+    assert found == []
+
+
 def test_gazebo_0x_namespaced_sensors_and_controllers_are_read() -> None:
     old = "http://playerstage.sourceforge.net/gazebo/xmlschema/#"
     text = (

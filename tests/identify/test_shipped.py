@@ -128,7 +128,12 @@ def test_move_base_and_position_set_points_are_navigation_too() -> None:
     # The goal topic RViz and Nav2 name `goal_pose` is a vehicle's or a walker's goal, but an
     # arm's goal on a body with arms (a MoveIt script's, a humanoid's arm kinematics); a word of
     # its own, not a reward weight.
-    for goal in ("self.create_publisher(PoseStamped, '/goal_pose', 10)", "topic: goal_pose"):
+    for goal in (
+        "self.create_publisher(PoseStamped, '/goal_pose', 10)",
+        "topic: goal_pose",
+        "self.goal_pose_sub = self.create_subscription(PoseStamped, 'goal', cb, 1)",
+        "def goal_pose_callback(self, msg):",
+    ):
         assert "Waypoint" in shipped("UGV", goal), goal
         assert "Waypoint" in shipped("Quadruped", goal), goal
     assert shipped("Mobile Manipulator", "planning_component.set_goal_state(goal_pose)") == {}

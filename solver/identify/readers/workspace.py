@@ -34,7 +34,10 @@ imported or parsed as code.
   includes). A package another robot's package uses is not reached through a dependency both
   share (a vendored ``gazebo_ros`` used by every robot of the workspace), and a name most
   packages of the workspace write (``robot_description``, the parameter) is no evidence that
-  the package of that name is used.
+  the package of that name is used. A package named like that parameter is used only where a
+  file names it as a package (found, launched, run: :data:`PARAMETER_NAMES`), so that a
+  description package named ``robot_description`` does not take in every neighbour that sets
+  its own robot's parameter.
 
 Past a bound the rest is not read and a note says so; the workspace is then *incomplete*, and
 what it does not say is not taken as said (:mod:`solver.identify.shipped`). A workspace that
@@ -97,14 +100,21 @@ COMMON_SHARE = 0.5
 MIN_COMMON = 3
 # Package names that are also a parameter every launch file writes: ``robot_description``
 # holds the URDF. A package of such a name is used only where a file names it as a package
-# (``$(find robot_description)``, ``package://robot_description``,
-# ``get_package_share_directory('robot_description')``, a package.xml), never by the parameter:
-# a neighbouring robot's launch file setting its own ``robot_description`` does not use it.
+# (:data:`_AS_PACKAGE`; or where its package.xml names it), never by the parameter: a
+# neighbouring robot's launch file setting its own ``robot_description`` does not use it.
 PARAMETER_NAMES = frozenset({"robot_description"})
+# A package named as one: found (``$(find P)``, ``find-pkg-share``, ``package://P``, the
+# Python, C++ and CMake lookups), launched or run (``roslaunch P``, ``ros2 run P``, a node's
+# ``pkg``/``package``), or given as a package argument's value (``pkg_name = 'P'``,
+# ``'description_package', default_value='P'``).
 _AS_PACKAGE = re.compile(
     r"(?:\$\((?:find|find-pkg-share|find-pkg-prefix)\s+|package://|"
     r"(?:get_package_share_directory|get_package_share_path|get_package_prefix|"
-    r"FindPackageShare|FindPackagePrefix|get_path)\(\s*(?:package\s*=\s*)?['\"]|pkg=['\"])"
+    r"FindPackageShare|FindPackagePrefix|get_path|getPath|get_pkg_dir|find_package)"
+    r"\(\s*(?:package\s*=\s*)?['\"]?|"
+    r"(?:roslaunch|rosrun|roscd|rospack\s+find|ros2\s+(?:launch|run|pkg\s+prefix))\s+|"
+    r"(?<![A-Za-z0-9_])(?:pkg|package)(?:_name)?['\"]?\s*[=:]\s*['\"]?|"
+    r"package['\"]\s*,\s*default_value\s*=\s*['\"])"
     r"([A-Za-z0-9_]+)"
 )
 _NAME = re.compile(r"<name>\s*([A-Za-z0-9_.-]{1,200})\s*</name>")
@@ -281,9 +291,10 @@ def _by_folder(packages: list[_Package]) -> list[_Package]:
 def _robots_packages(core: list[_Package], packages: list[_Package]) -> list[_Package]:
     """The robot's core packages (:func:`_core`), the packages that use one of them, then the
     packages one of those uses (names compared as words; a name most packages write,
-    ``robot_description`` the parameter, is no evidence that one is used). A metapackage
-    uses nothing: it groups a repository's packages (every robot's of a vendor's repository),
-    and launches none."""
+    ``robot_description`` the parameter, is no evidence that one is used, and a package of
+    that name is written only where a file names it as a package: :func:`_read_into`). A
+    metapackage uses nothing: it groups a repository's packages (every robot's of a vendor's
+    repository), and launches none."""
     core_names = {p.name for p in core}
     chosen = {id(p) for p in core}
     users = [

@@ -230,7 +230,12 @@ def test_a_neighbours_robot_description_parameter_does_not_use_a_package_of_that
     # launch file sets; the arm's demo sets its own parameter and plans with a pose goal.
     src = tmp_path / "src"
     described = package(src, "robot_description")
-    package(src, "arm_demo", {"launch/arm.launch.py": "{'robot_description': doc.toxml()}"})
+    launch = (
+        "robot_description = {'robot_description': doc.toxml()}\n"
+        "Node(package='robot_state_publisher', parameters=[robot_description])\n"
+        "Node(package='gazebo_ros', arguments=['-topic', '/robot_description'])\n"
+    )
+    package(src, "arm_demo", {"launch/arm.launch.py": launch})
     assert read(described).packages == ("robot_description",)
 
 
@@ -242,6 +247,11 @@ def test_a_neighbours_robot_description_parameter_does_not_use_a_package_of_that
         "get_package_share_directory('robot_description')",
         'FindPackageShare(package="robot_description")',
         "package://robot_description/meshes/base.dae",
+        "Node(package='robot_description', executable='state_publisher')",
+        "pkg_name = 'robot_description'",
+        "roslaunch robot_description display.launch",
+        "ros2 launch robot_description rsp.launch.py",
+        'ros::package::getPath("robot_description")',
     ],
 )
 def test_a_package_named_like_the_parameter_is_used_where_a_file_names_it_as_a_package(
