@@ -14,7 +14,9 @@ no robot; removing the constraint gives back its 100 robots per type and motion 
 
 Beside it, the review's heavy team (2 types x 2,000 sensor types, 4,028 changes of the team and
 40 merges of its rules), with the studio's 2 s budget: how many of its changes are tried, and
-in what time; its total and best saving are checked against the same closed form.
+in what time; its total and best saving are checked against the same closed form, the best
+saving on a run with no budget when a busy machine spent the budget first (how far a budget
+gets is the machine's, not the code's).
 
 Run: ``python -m pytest benchmarks/bench_whatif.py --benchmark-only -s -p no:cacheprovider``.
 """
@@ -66,7 +68,12 @@ def test_whatif_for_a_team_of_two_types_of_2000_sensor_types(
     found = benchmark(what_if, team, seconds=WHATIF_SECONDS)
     team_total = scale.types * (scale.motions + scale.sensors + scale.arrangements - 1)
     assert found.total == team_total + 40  # 40 merges of two motion controls, no constraint
+    # How many changes the budget lets through depends on the machine (a busy one stops early,
+    # before the best is tried): the best saving is checked where every change was tried.
+    whole = what_if(team) if found.stopped else found
+    assert not whole.stopped
+    assert whole.tried == whole.total
     # Lowering a type's maximum below its second arrangement saves motions x groups x 4.
-    best = next(s for s in found.suggestions if not s.rules_change)
+    best = next(s for s in whole.suggestions if not s.rules_change)
     assert best.configurations_saved == scale.motions * scale.groups * (scale.arrangements - 1)
     print(f"\n{found.tried} of {found.total} changes tried ({found.stopped or 'all'})")
