@@ -18,11 +18,20 @@ RAY = (
 )
 
 
-def kinds(*sensors: str) -> list[tuple[str, str | None, int]]:
-    robot = builders.ugv()
+def kinds(
+    *sensors: str, robot: builders.RobotText | None = None
+) -> list[tuple[str, str | None, int]]:
+    """(kind, sensor type, count) read from ``robot`` (a wheeled base unless given) with
+    ``sensors`` added."""
+    robot = robot or builders.ugv()
     for sensor in sensors:
         robot.add(sensor)
     return [(s.kind, s.sensor_type, s.count) for s in identify_urdf(robot.text()).sensors]
+
+
+def bare(name: str, link: str = "base_link") -> str:
+    """A URDF ``<sensor>`` with no kind element (no ``<camera>``, ``<ray>``, ...)."""
+    return f'  <sensor name="{name}" update_rate="20"><parent link="{link}"/></sensor>'
 
 
 @pytest.mark.parametrize(
@@ -87,9 +96,6 @@ def test_a_urdf_sensor_element_is_read_too() -> None:
 
 
 def test_a_urdf_sensor_without_a_kind_element_is_told_by_its_name() -> None:
-    def bare(name: str, link: str = "base_link") -> str:
-        return f'  <sensor name="{name}" update_rate="20"><parent link="{link}"/></sensor>'
-
     found = kinds(
         bare("gyrometer_SENSOR"),
         bare("rfsensor_SENSOR"),
@@ -108,15 +114,12 @@ def test_a_model_exported_from_sdf_keeps_its_sensors_names_and_they_tell_their_k
     # A subterranean challenge rover's URDF: each SDF sensor written again with no kind element.
     robot = builders.ugv()
     robot.joint("mast_joint", "fixed", robot.root, "mast")
-
-    def bare(name: str, link: str = "base_link") -> str:
-        return f'  <sensor name="{name}" update_rate="20"><parent link="{link}"/></sensor>'
-
-    for name in ("front_laser", "lidar_back", "magnetometer", "air_pressure", "gps_antenna"):
-        robot.add(bare(name))
-    robot.add(bare("depth_camera_up"))
-    robot.add(bare("camera_rear", "mast"))
-    found = [(s.kind, s.sensor_type, s.count) for s in identify_urdf(robot.text()).sensors]
+    found = kinds(
+        *map(bare, ("front_laser", "lidar_back", "magnetometer", "air_pressure", "gps_antenna")),
+        bare("depth_camera_up"),
+        bare("camera_rear", "mast"),
+        robot=robot,
+    )
     assert sorted(found) == [
         ("barometer", None, 1),
         ("camera", "2D Camera", 1),
@@ -128,9 +131,6 @@ def test_a_model_exported_from_sdf_keeps_its_sensors_names_and_they_tell_their_k
 
 
 def test_a_sensor_without_a_kind_element_is_not_misread_by_a_part_of_its_name() -> None:
-    def bare(name: str) -> str:
-        return f'  <sensor name="{name}" update_rate="20"><parent link="base_link"/></sensor>'
-
     # Two cameras named stereo, left and right, are one stereo camera; a scan frame is a
     # lidar's, a scan matcher's name is no device; a sonar's range is a sonar's.
     found = kinds(
@@ -149,9 +149,8 @@ def test_a_sensor_without_a_kind_element_is_not_misread_by_a_part_of_its_name() 
 
 
 def test_a_depth_gauge_without_a_kind_element_on_a_submarine_is_no_camera() -> None:
-    robot = builders.underwater_vehicle()
-    robot.add('  <sensor name="depth_gauge" update_rate="20"><parent link="base_link"/></sensor>')
-    assert [s.kind for s in identify_urdf(robot.text()).sensors] == ["pressure"]
+    found = kinds(bare("depth_gauge"), robot=builders.underwater_vehicle())
+    assert [kind for kind, _, _ in found] == ["pressure"]
 
 
 def test_a_ros2_control_sensor_named_for_a_camera_or_a_lidar_reads_no_image_or_scan() -> None:
