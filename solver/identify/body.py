@@ -42,6 +42,7 @@ from solver.identify.limbs import (
     arms_beside_legs,
     bolted_chain,
     closed_loops,
+    drives_beside_legs,
     find_limbs,
     five_bars,
     flippers,
@@ -544,6 +545,7 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
         legged = legs_by_reach(tree, legs_at_the_pelvis(tree, parts.limbs))
     parts.limbs = five_bars(tree, legged)
     parts.limbs = arms_beside_legs(tree, parts.limbs)
+    parts.limbs = drives_beside_legs(tree, parts.limbs)
     parts.limbs = flippers(tree, parts.limbs)
     parts.limbs = parallel_robot(tree, meeting_tips(tree, parts.limbs))
     parts.limbs = closed_loops(tree, parts.limbs)

@@ -155,6 +155,16 @@ _AT_ONE_POINT = 1e-6
 # A snake that moves in a plane (every axis parallel) has at least this many modules; planar
 # arms of equal links are far shorter.
 _PLANAR_SPINE_JOINTS = 12
+# A robot that calls itself a snake, read as a word (``snake``, ``robosnake``, ``snakebot``,
+# ``sea_snake``, ``snake2``; not ``snake_arm`` or ``snake_tool``, a manipulator named for its
+# shape): its one chain of turning joints, nothing else, is a spine however short or unevenly
+# drawn (a bare chain with no axes or geometry, a two-joint student model).
+_SNAKE_NAME = re.compile(
+    r"(^|[_/\d-]|robo|sea)(snake|serpent)(bot|robot)?s?(?![_ -]?(arm|tool|manipulator|like))"
+    r"([_/\d-]|$)",
+    re.IGNORECASE,
+)
+_NAMED_SPINE_JOINTS = 2
 # A spine carries at least this many single leaf joints to be read with side wheels.
 _SIDE_WHEELS = 2
 # Joints (or the links they move) with arm or leg names that make a chain a named limb.
@@ -409,6 +419,25 @@ def arms_beside_legs(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
         tree,
         [replace(limb, kind="arm", why=why) if id(limb) in arms else limb for limb in limbs],
     )
+
+
+def drives_beside_legs(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
+    """Unnamed arms that start where a leg starts, on a link the body turns (a leg's hip), on a
+    body of three legs or more: that leg's drive, no arm. A leg moved by linear actuators, its
+    closed loops opened by a CAD export, shows each actuator's pivot and slide as a chain
+    beside the leg on its hip; an arm is carried by the body, never by one leg's hip."""
+    legs = [limb for limb in limbs if limb.kind == "leg"]
+    if len(legs) <= _BIPED_LEGS:
+        return limbs
+    known: dict[str, str | None] = {}
+    hips = {limb.base for limb in legs if moved_by(tree.urdf, limb.base, known) is not None}
+    why = "a chain beside a leg on the hip it starts from (that leg's drive, its loop opened)"
+    return [
+        replace(limb, kind="other", why=why)
+        if limb.kind == "arm" and not limb.named and not limb.gripper and limb.base in hips
+        else limb
+        for limb in limbs
+    ]
 
 
 def _above_the_hips(tree: JointTree, limbs: list[Limb], legs: list[Limb]) -> list[Limb]:
@@ -1133,24 +1162,29 @@ def spine(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     (no slide) with no arm or leg names and no gripper, of equal modules (:func:`_modules`:
     every spacing between joints alike, or every other one, a module's two joints maybe at one
     point), each joint's axis square to the last's and none along the chain (:func:`_bends`),
-    on a body that has nothing else (no wheels, rotors, legs or other chains)."""
+    on a body that has nothing else (no wheels, rotors, legs or other chains); on a robot
+    named a snake (:data:`_SNAKE_NAME`), any such chain of two turning joints or more."""
     if len(limbs) != 1:
         return limbs
     limb = limbs[0]
-    if (
-        limb.kind not in ("arm", "other")
-        or limb.gripper
-        or len(limb.joints) < tree.profile.limb("spine_min_joints")
-    ):
+    snake = _SNAKE_NAME.search(tree.urdf.name) is not None
+    least = _NAMED_SPINE_JOINTS if snake else tree.profile.limb("spine_min_joints")
+    if limb.kind not in ("arm", "other") or limb.gripper or len(limb.joints) < least:
         return limbs
     joints = [j for j in (tree.urdf.joint(name) for name in limb.joints) if j is not None]
     # A snake may have a head; arm or leg names say it is something else. Its modules turn: a
     # chain with a slide in it is an arm on a rail or a lift.
-    named = _named_limb(tree, joints)
-    turning = all(j.type in _TURNING for j in joints)
-    if named or not turning or not _modules(tree, joints) or not _bends(tree, joints):
+    # On a robot named a snake, its modules' part names (``arm_1``) say nothing more.
+    if (not snake and _named_limb(tree, joints)) or not all(j.type in _TURNING for j in joints):
         return limbs
-    if _alternating(tree, joints):
+    if snake:
+        why = (
+            f"a chain of {len(joints)} turning joints, nothing else, on a robot named a snake"
+            f" ({shown(tree.urdf.name)})"
+        )
+    elif not _modules(tree, joints) or not _bends(tree, joints):
+        return limbs
+    elif _alternating(tree, joints):
         why = f"a chain of {len(joints)} equal modules whose axes alternate, nothing else (a spine)"
     elif len(joints) >= _PLANAR_SPINE_JOINTS and _planar(tree, joints):
         why = (

@@ -416,9 +416,10 @@ def walker(legs: int = 6, *, simulated_base: bool = False) -> RobotText:
     return robot
 
 
-def snake(modules: int = 8) -> RobotText:
-    """A snake: equal modules 0.1 m apart, each joint's axis square to the last's."""
-    robot = RobotText("snake", root="m0")
+def snake(modules: int = 8, *, name: str = "modules") -> RobotText:
+    """A snake: equal modules 0.1 m apart, each joint's axis square to the last's; called
+    ``name`` (by default a name that says nothing: its shape alone speaks)."""
+    robot = RobotText(name, root="m0")
     link = "m0"
     for i in range(1, modules + 1):
         axis = "0 0 1" if i % 2 else "0 1 0"

@@ -504,6 +504,29 @@ def test_two_hinges_one_motion_closes_on_a_head_are_ears_not_jaws() -> None:
     assert grippers(mirrored_pair(["joint1", "joint2"], "revolute", "1 0 0")) == 1
 
 
+def droid_head(names: tuple[str, str]) -> RobotText:
+    """Two legs and a neck of three joints (named so) ending in two hinges ``names`` that
+    swing unevenly and mirror each other about the line between them (a droid's antennas)."""
+    robot = builders.biped()
+    tip = robot.chain(robot.root, ["neck_pitch", "head_pitch", "head_yaw"])
+    for name, y, (lower, upper) in zip(
+        names, ("0.03", "-0.03"), ((-1.1, 2.1), (-2.1, 1.1)), strict=True
+    ):
+        limit = f'<limit lower="{lower}" upper="{upper}" effort="1" velocity="1"/>'
+        body = f'<origin xyz="0 {y} 0.05"/><axis xyz="0 1 0"/>{limit}'
+        robot.joint(name, "revolute", tip, f"{name}_link", body)
+    return robot
+
+
+def test_a_heads_antennas_or_ears_named_so_are_no_jaws() -> None:
+    for names in (("left_antenna", "right_antenna"), ("ear_l", "ear_r"), ("l_eyelid", "r_eyelid")):
+        robot = droid_head(names)
+        assert grippers(robot) == 0, names
+        assert identify_urdf(robot.text()).structure == "Biped", names
+    # Named for nothing, the pair could close like pliers at the end of the neck: jaws.
+    assert grippers(droid_head(("side_l", "side_r"))) == 1
+
+
 def test_two_hinges_swinging_both_ways_on_one_axis_line_on_a_head_are_ears() -> None:
     # A head box (pan and tilt named so) with two ears, each driven alone, hinged about the
     # line between them and swinging as far either way: ears, no jaws.

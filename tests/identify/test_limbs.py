@@ -347,6 +347,72 @@ def test_a_chain_of_modules_whose_axes_do_not_alternate_is_no_spine() -> None:
     assert identify_urdf(text).structure == "Manipulator"
 
 
+def walker_with_opened_actuators(*, arm_on_the_body: bool = False) -> RobotText:
+    """Four legs, each on a hip the body turns; each hip also carries its leg's linear
+    actuator drawn open by a CAD export (a pivot, a second pivot, a slide; names that say
+    nothing), as a large walker's hydraulic or electric cylinders are."""
+    robot = RobotText("walker", root="center")
+    for i in range(1, 5):
+        hip = robot.chain("center", [f"l{i}_r2"])
+        robot.chain(hip, [f"l{i}_femur", f"l{i}_tibia", f"l{i}_foot"])
+        pivots = robot.chain(hip, [f"l{i}_r7", f"l{i}_r8"])
+        robot.chain(pivots, [f"l{i}_c3"], "prismatic")
+    if arm_on_the_body:
+        builders.arm(robot, "center", joints=6)
+    return robot
+
+
+def test_chains_beside_each_leg_on_its_turning_hip_are_the_legs_drives_not_arms() -> None:
+    result = identify_urdf(walker_with_opened_actuators().text())
+    assert result.structure == "Quadruped"
+    assert result.body is not None
+    assert result.body.count("arm") == 0
+    # An arm the body carries is still an arm.
+    armed = identify_urdf(walker_with_opened_actuators(arm_on_the_body=True).text())
+    assert armed.structure == "Legged Mobile Manipulator"
+
+
+def short_uneven_chain(name: str) -> str:
+    """Two joints about one axis, links of unequal length named as an arm's parts (a CAD
+    export's ``arm_1``, ``arm_2``): by its shape alone no snake's spine."""
+    robot = RobotText(name, root="base_link")
+    link = builders.placed(robot, "Rev1", "revolute", "base_link", "arm_1", axis="0 1 0")
+    link = builders.placed(robot, "Rev2", "revolute", link, "arm_2", xyz="0.1 0 0", axis="0 1 0")
+    builders.placed(robot, "Rev3", "revolute", link, "arm_3", xyz="0.3 0 0", axis="0 1 0")
+    return robot.text()
+
+
+@pytest.mark.parametrize("name", ["snake", "robosnake", "edmo_snake", "snakebot", "sea_snake2"])
+def test_a_robot_named_a_snake_crawls_on_its_one_chain_however_short_or_unevenly_drawn(
+    name: str,
+) -> None:
+    result = identify_urdf(short_uneven_chain(name))
+    assert result.structure == "Serpentine"
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["spine"]
+    assert "on a robot named a snake" in result.body.limbs[0].why
+
+
+def test_without_a_snakes_name_the_same_chain_is_an_arm() -> None:
+    assert identify_urdf(short_uneven_chain("modules")).structure == "Manipulator"
+
+
+@pytest.mark.parametrize("name", ["snake_arm_description", "snake_tool", "snake-like_manipulator"])
+def test_a_manipulator_named_for_a_snakes_shape_is_an_arm(name: str) -> None:
+    assert identify_urdf(short_uneven_chain(name)).structure == "Manipulator"
+    assert identify_urdf(builders.snake(3, name=name).text()).structure == "Manipulator"
+
+
+def test_a_snake_named_so_whose_chain_slides_or_ends_in_a_gripper_is_no_snake() -> None:
+    sliding = short_uneven_chain("snake").replace(
+        'name="Rev3" type="revolute"', 'name="Rev3" type="prismatic"'
+    )
+    assert identify_urdf(sliding).structure != "Serpentine"
+    gripping = builders.snake(3, name="snake")
+    builders.placed(gripping, "gripper_finger_joint", "prismatic", "m3", "gripper_finger")
+    assert identify_urdf(gripping.text()).structure == "Manipulator"
+
+
 @pytest.mark.parametrize("fixed_to_the_world", [False, True])
 def test_a_short_chain_carrying_a_whole_hand_is_its_wrist_not_an_arm(
     fixed_to_the_world: bool,

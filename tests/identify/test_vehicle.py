@@ -427,6 +427,15 @@ def test_a_bare_body_named_as_an_aircraft_flies_with_doubt() -> None:
     assert flight == "urdf: flight named in robot name Fixed_Wing_UAV"
 
 
+def test_a_bare_body_named_as_a_lighter_than_air_craft_flies_with_doubt() -> None:
+    # A competition blimp exported from CAD: its body on a zero-axis joint, a camera frame.
+    for name in ("burn_cream_blimp", "airship", "Dirigible_2", "zeppelin"):
+        robot = RobotText(name, root="world")
+        robot.joint("IMU", "continuous", "world", "envelope", '<axis xyz="0 0 0"/>')
+        robot.fixed("envelope", "camera_link")
+        assert identify_urdf(robot.text()).structure == "UAV", name
+
+
 def test_a_robot_name_says_nothing_when_the_body_has_limbs_or_a_plugin_that_moves_it() -> None:
     assert identify_urdf(bare_body("display_stand").text()).structure == "Other"
     armed = bare_body("drone_arm_rig")
