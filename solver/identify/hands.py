@@ -34,6 +34,11 @@ __all__ = ["finger_groups", "finger_tips", "gripper_closure", "jaws", "stacked_g
 
 # Parts whose names make a joint no jaw (a pair of eyes, two wheels, two legs).
 _NOT_JAWS = ("head", "leg", "wheel", "caster", "rotor", "thruster", "fin", "wing", "track")
+# A head's own moving parts, by their names (a droid's antennas, a pet's ears, eyelids): on a
+# head, no gripper's jaws, though two of them swing side by side at the end of a neck. Only
+# that: such a joint alone makes no head (a rover's hinged radio antenna is no pan/tilt unit),
+# nor are a gripper's jaws at an arm's end anything else, whatever they are called.
+_HEAD_PARTS = re.compile(r"antenna|(^|[_/])ears?([_/]|$)|eyelid|eyebrow", re.IGNORECASE)
 # Words of a finger's joints (or the links they move): a hand's finger, not a gripper's jaw.
 _FINGER = re.compile(r"finger|thumb|knuckle|phalan", re.IGNORECASE)
 # A frame at a finger's end (``fingertip_1``, ``thumb_tip``).
@@ -150,7 +155,7 @@ def _pair_why(tree: JointTree, link: str, pair: list[Joint], motions: list[str])
     """Why two joints on ``link`` are jaws (see :func:`_jaw_pairs`), or "" when they are not."""
     beside = _side_by_side(pair, exactly=_on_a_head(tree, link))
     at_the_end = _ends_a_chain(tree, link)
-    if at_the_end and beside and not (_ears(pair) and _on_a_head(tree, link)):
+    if at_the_end and beside and not (_head_parts(pair) and _on_a_head(tree, link)):
         return f"one of two jaws side by side at the end of a chain ({link})"
     if at_the_end and _twins(pair) and not _on_a_head(tree, link):
         return f"one of two hinges mirroring each other at the end of a chain ({link})"
@@ -193,6 +198,12 @@ def _side_by_side(pair: list[Joint], exactly: bool = False) -> bool:
     return (
         one.type == other.type and parallel(local_axis(one), local_axis(other)) and sum(apart) <= 1
     )
+
+
+def _head_parts(pair: list[Joint]) -> bool:
+    """Ears by their swing (:func:`_ears`), or a head's parts by their names
+    (:data:`_HEAD_PARTS`, on either joint or the link it moves)."""
+    return _ears(pair) or any(_HEAD_PARTS.search(f"{j.name} {j.child}") for j in pair)
 
 
 def _ears(pair: list[Joint]) -> bool:

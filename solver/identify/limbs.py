@@ -53,7 +53,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections import deque
+from collections import Counter, deque
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 from itertools import islice, pairwise
@@ -156,15 +156,26 @@ _AT_ONE_POINT = 1e-6
 # arms of equal links are far shorter.
 _PLANAR_SPINE_JOINTS = 12
 # A robot that calls itself a snake, read as a word (``snake``, ``robosnake``, ``snakebot``,
-# ``sea_snake``, ``snake2``; not ``snake_arm`` or ``snake_tool``, a manipulator named for its
-# shape): its one chain of turning joints, nothing else, is a spine however short or unevenly
-# drawn (a bare chain with no axes or geometry, a two-joint student model).
+# ``sea_snake``, ``Snake Robot``): its one chain of turning joints, nothing else, is a spine
+# however short or unevenly drawn (a bare chain with no axes or geometry, a two-joint student
+# model). Not when its name also says a manipulator (``snake_arm``, ``snake2_arm``,
+# ``snake_tool``, ``serpent_7dof``, a snake-like continuum robot or endoscope), named for its
+# shape, nor a snake's eyes.
 _SNAKE_NAME = re.compile(
-    r"(^|[_/\d-]|robo|sea)(snake|serpent)(bot|robot)?s?(?![_ -]?(arm|tool|manipulator|like))"
-    r"([_/\d-]|$)",
+    r"(^|[_/\d\s-]|robo|sea)(snake|serpent)(bot|robot)?s?([_/\d\s-]|$)", re.IGNORECASE
+)
+_MANIPULATOR_NAME = re.compile(
+    r"arm|manip|tool|gripper|grabber|hand|dof|continuum|endoscop|catheter|surgical|like|eye",
     re.IGNORECASE,
 )
+# A snake's modules may be labelled ``arm_1`` .. by a CAD exporter; these words name an arm's
+# or a leg's joints, which a snake has none of.
+_LIMB_JOINT_WORDS = re.compile(
+    r"shoulder|elbow|wrist|forearm|upper_?arm|hip|knee|ankle|thigh|shin|foot", re.IGNORECASE
+)
 _NAMED_SPINE_JOINTS = 2
+# A linear actuator drawn open beside a leg: at most this many joints (two pivots, a rod).
+_DRIVE_JOINTS = 3
 # A spine carries at least this many single leaf joints to be read with side wheels.
 _SIDE_WHEELS = 2
 # Joints (or the links they move) with arm or leg names that make a chain a named limb.
@@ -422,22 +433,37 @@ def arms_beside_legs(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
 
 
 def drives_beside_legs(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
-    """Unnamed arms that start where a leg starts, on a link the body turns (a leg's hip), on a
-    body of three legs or more: that leg's drive, no arm. A leg moved by linear actuators, its
-    closed loops opened by a CAD export, shows each actuator's pivot and slide as a chain
-    beside the leg on its hip; an arm is carried by the body, never by one leg's hip."""
+    """Short unnamed arms with a slide in them that start where one leg starts, on a link the
+    body turns (a leg's hip), on a body of three legs or more: that leg's drive, no arm. A leg
+    moved by linear actuators, its closed loops opened by a CAD export, shows each actuator's
+    pivots and rod as a chain beside the leg on its hip; an arm is carried by the body (where
+    several legs start, however it moves), not by one leg's hip."""
     legs = [limb for limb in limbs if limb.kind == "leg"]
     if len(legs) <= _BIPED_LEGS:
         return limbs
     known: dict[str, str | None] = {}
-    hips = {limb.base for limb in legs if moved_by(tree.urdf, limb.base, known) is not None}
+    starts = Counter(limb.base for limb in legs)
+    hips = {
+        base
+        for base, count in starts.items()
+        if count == 1 and moved_by(tree.urdf, base, known) is not None
+    }
     why = "a chain beside a leg on the hip it starts from (that leg's drive, its loop opened)"
     return [
-        replace(limb, kind="other", why=why)
-        if limb.kind == "arm" and not limb.named and not limb.gripper and limb.base in hips
-        else limb
+        replace(limb, kind="other", why=why) if _drive_beside(tree, limb, hips) else limb
         for limb in limbs
     ]
+
+
+def _drive_beside(tree: JointTree, limb: Limb, hips: set[str]) -> bool:
+    """An unnamed arm of at most :data:`_DRIVE_JOINTS` joints, one of them a slide (a linear
+    actuator's pivots and rod), with no gripper, on one leg's hip."""
+    if limb.kind != "arm" or limb.named or limb.gripper or limb.base not in hips:
+        return False
+    if len(limb.joints) > _DRIVE_JOINTS:
+        return False
+    kinds = [j.type for j in (tree.urdf.joint(name) for name in limb.joints) if j is not None]
+    return "prismatic" in kinds
 
 
 def _above_the_hips(tree: JointTree, limbs: list[Limb], legs: list[Limb]) -> list[Limb]:
@@ -1167,15 +1193,16 @@ def spine(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     if len(limbs) != 1:
         return limbs
     limb = limbs[0]
-    snake = _SNAKE_NAME.search(tree.urdf.name) is not None
+    snake = _named_snake(tree)
     least = _NAMED_SPINE_JOINTS if snake else tree.profile.limb("spine_min_joints")
     if limb.kind not in ("arm", "other") or limb.gripper or len(limb.joints) < least:
         return limbs
     joints = [j for j in (tree.urdf.joint(name) for name in limb.joints) if j is not None]
-    # A snake may have a head; arm or leg names say it is something else. Its modules turn: a
-    # chain with a slide in it is an arm on a rail or a lift.
-    # On a robot named a snake, its modules' part names (``arm_1``) say nothing more.
-    if (not snake and _named_limb(tree, joints)) or not all(j.type in _TURNING for j in joints):
+    # A snake may have a head; arm or leg names say it is something else (on a robot named a
+    # snake, the words of an arm's or a leg's joints: its modules may be labelled ``arm_1``).
+    # Its modules turn: a chain with a slide in it is an arm on a rail or a lift.
+    named = _limb_joint_words(joints) if snake else _named_limb(tree, joints)
+    if named or not all(j.type in _TURNING for j in joints):
         return limbs
     if snake:
         why = (
@@ -1194,6 +1221,22 @@ def spine(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     else:
         return limbs
     return [replace(limb, kind="spine", why=why)]
+
+
+def _named_snake(tree: JointTree) -> bool:
+    """The robot's name says a snake and no manipulator (:data:`_SNAKE_NAME`), and no plugin
+    drives, tracks or flies its body (a base a plugin moves carries an arm, however named)."""
+    name = tree.urdf.name
+    if not _SNAKE_NAME.search(name) or _MANIPULATOR_NAME.search(name):
+        return False
+    return not any(tree.labels(kind) for kind in ("drive", "track", "flight"))
+
+
+def _limb_joint_words(joints: list[Joint]) -> bool:
+    """An arm's or a leg's joint words on at least two of the chain's joints or the links
+    they move (``shoulder``, ``elbow``, ``knee``; not a module's label ``arm_1``)."""
+    named = [j for j in joints if _LIMB_JOINT_WORDS.search(f"{j.name} {j.child}")]
+    return len(named) >= _LIMB_NAMES
 
 
 def wheeled_spine(

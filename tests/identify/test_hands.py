@@ -525,6 +525,22 @@ def test_a_heads_antennas_or_ears_named_so_are_no_jaws() -> None:
         assert identify_urdf(robot.text()).structure == "Biped", names
     # Named for nothing, the pair could close like pliers at the end of the neck: jaws.
     assert grippers(droid_head(("side_l", "side_r"))) == 1
+    # At an arm's end, a gripper's jaws are jaws whatever they are called.
+    robot = RobotText("clamp_arm")
+    tip = robot.chain(robot.root, ["joint_1", "joint_2", "joint_3", "joint_4"])
+    for side, y in (("left", "0.03"), ("right", "-0.03")):
+        limit = '<limit lower="0" upper="0.8" effort="1" velocity="1"/>'
+        body = f'<origin xyz="0 {y} 0.05"/><axis xyz="1 0 0"/>{limit}'
+        robot.joint(f"{side}_ear_joint", "revolute", tip, f"{side}_ear", body)
+    assert grippers(robot) == 1
+    assert identify_urdf(robot.text()).structure == "Manipulator"
+
+
+def test_a_lone_antenna_hinge_makes_no_head() -> None:
+    # A rover trimmed of its wheels, its radio antenna on a hinge: no pan/tilt unit.
+    robot = RobotText("rover", root="chassis")
+    robot.chain("chassis", ["antenna_hinge"])
+    assert identify_urdf(robot.text()).structure == "Other"
 
 
 def test_two_hinges_swinging_both_ways_on_one_axis_line_on_a_head_are_ears() -> None:

@@ -367,9 +367,18 @@ def test_chains_beside_each_leg_on_its_turning_hip_are_the_legs_drives_not_arms(
     assert result.structure == "Quadruped"
     assert result.body is not None
     assert result.body.count("arm") == 0
-    # An arm the body carries is still an arm.
-    armed = identify_urdf(walker_with_opened_actuators(arm_on_the_body=True).text())
-    assert armed.structure == "Legged Mobile Manipulator"
+    # An arm the body carries is still an arm, where the body is fixed and where a joint
+    # moves it (a simulator's floating base: every leg starts there, no one leg's hip).
+    armed = walker_with_opened_actuators(arm_on_the_body=True)
+    assert identify_urdf(armed.text()).structure == "Legged Mobile Manipulator"
+    armed.joints.append(
+        '  <joint name="float" type="floating"><parent link="world"/><child link="center"/></joint>'
+    )
+    armed.links.append("world")
+    assert identify_urdf(armed.text()).structure == "Legged Mobile Manipulator"
+    # Beside a leg on its hip, a chain of turning joints only is no linear actuator: an arm.
+    hinged = walker_with_opened_actuators().text().replace('type="prismatic"', 'type="revolute"')
+    assert identify_urdf(hinged).structure == "Legged Mobile Manipulator"
 
 
 def short_uneven_chain(name: str) -> str:
@@ -382,7 +391,9 @@ def short_uneven_chain(name: str) -> str:
     return robot.text()
 
 
-@pytest.mark.parametrize("name", ["snake", "robosnake", "edmo_snake", "snakebot", "sea_snake2"])
+@pytest.mark.parametrize(
+    "name", ["snake", "robosnake", "edmo_snake", "snakebot", "sea_snake2", "Snake Robot"]
+)
 def test_a_robot_named_a_snake_crawls_on_its_one_chain_however_short_or_unevenly_drawn(
     name: str,
 ) -> None:
@@ -397,10 +408,33 @@ def test_without_a_snakes_name_the_same_chain_is_an_arm() -> None:
     assert identify_urdf(short_uneven_chain("modules")).structure == "Manipulator"
 
 
-@pytest.mark.parametrize("name", ["snake_arm_description", "snake_tool", "snake-like_manipulator"])
+@pytest.mark.parametrize(
+    "name",
+    [
+        "snake_arm_description",
+        "snake2_arm",
+        "snake_tool",
+        "snake-like_manipulator",
+        "serpent_7dof",
+        "snake_continuum_robot",
+        "snake_eyes",
+    ],
+)
 def test_a_manipulator_named_for_a_snakes_shape_is_an_arm(name: str) -> None:
     assert identify_urdf(short_uneven_chain(name)).structure == "Manipulator"
     assert identify_urdf(builders.snake(3, name=name).text()).structure == "Manipulator"
+
+
+def test_a_robot_named_a_snake_whose_joints_are_an_arms_or_a_plugin_drives_it_is_no_snake() -> None:
+    # Shoulder, elbow and wrist joints name an arm, whatever the robot is called.
+    robot = RobotText("snake_v2", root="base_link")
+    builders.arm(robot, "base_link", joints=4, gripper=False)
+    assert identify_urdf(robot.text()).structure == "Manipulator"
+    # A drive plugin moves the body the short chain is on: a base that carries an arm.
+    driven = short_uneven_chain("snake").replace(
+        "</robot>", builders.model_plugin("drive", "libgazebo_ros_planar_move.so") + "</robot>"
+    )
+    assert identify_urdf(driven).structure == "Mobile Manipulator"
 
 
 def test_a_snake_named_so_whose_chain_slides_or_ends_in_a_gripper_is_no_snake() -> None:

@@ -434,6 +434,10 @@ def test_a_bare_body_named_as_a_lighter_than_air_craft_flies_with_doubt() -> Non
         robot.joint("IMU", "continuous", "world", "envelope", '<axis xyz="0 0 0"/>')
         robot.fixed("envelope", "camera_link")
         assert identify_urdf(robot.text()).structure == "UAV", name
+    # A plugin named for a blimp (a tracker following one) flies no wheeled rover.
+    rover = builders.ugv()
+    rover.add(builders.model_plugin("tracker", "libblimp_tracker.so"))
+    assert identify_urdf(rover.text()).structure == "UGV"
 
 
 def test_a_robot_name_says_nothing_when_the_body_has_limbs_or_a_plugin_that_moves_it() -> None:
