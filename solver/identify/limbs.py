@@ -33,11 +33,14 @@ Where names say nothing, the chains' places and shapes still speak:
   turn apart, are one parallel manipulator (:func:`parallel_robot`: a delta, a Stewart
   platform); two chains an SDF joint of a ``<gazebo>`` block closes onto each other are one
   linkage (:func:`closed_loops`: a wheel-legged robot's five-bar leg drawn open);
+* a short unnamed chain with a slide in it, beside a leg on the hip the body turns, is that
+  leg's linear actuator drawn open, no arm (:func:`drives_beside_legs`);
 * one long chain of equal modules whose axes alternate, on a body that has nothing else, is a
   *spine*: a snake robot, no arm (:func:`spine`); a module may hold one joint or two (a yaw
   and a pitch joint close together), and the chain may carry single leaf joints on its
   modules and nothing else (passive side wheels): it is still a spine, and they are passive
-  (:func:`wheeled_spine`);
+  (:func:`wheeled_spine`); on a robot that calls itself a snake, any one chain of two turning
+  joints or more is (:data:`_SNAKE_NAME`);
 * a short chain from the root that carries a whole hand and nothing else is that hand's *wrist*
   (a hand hung from its forearm), no arm (:func:`wrist`);
 * trunk joints that carry a gripper chain too short to be an arm, every link on the way from
