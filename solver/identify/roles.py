@@ -125,6 +125,14 @@ _SUBMERSIBLE_NAME = re.compile(
 )
 
 
+# A robot name that says a lighter-than-air craft, read as whole words (``burn_cream_blimp``,
+# ``airship``, ``Dirigible_2``): an aircraft by its name, as the flight words say one. Not a
+# plugin's name (a tracker plugin named for a blimp it follows runs on a rover too).
+_AIRSHIP_NAME = re.compile(
+    r"(^|[_/\d\s-])(blimp|airship|dirigible|zeppelin)s?([_/\d\s-]|$)", re.IGNORECASE
+)
+
+
 def main_axis(axis: tuple[float, float, float]) -> int:
     """0, 1 or 2 for an axis along x, y or z; -1 for a slanted one."""
     sizes = [abs(v) for v in axis]
@@ -143,6 +151,7 @@ class RoleReader:
         self.fixed_thrusters = self._fixed_thrusters()
         self.named_vessel = self._named_vessel()
         self.named_submersible = self._name_says(_SUBMERSIBLE_NAME)
+        self.named_airship = self._name_says(_AIRSHIP_NAME)
         self.marine = (
             bool(self.plugins_of("marine") or self.plugins_of("thruster") or self.fixed_thrusters)
             # A plugin only a submerged body runs (a subsea pressure gauge, a DVL): in water.

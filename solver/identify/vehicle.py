@@ -466,12 +466,6 @@ def water_frames(tree: JointTree) -> tuple[str, ...]:
 # A Doppler velocity log's frame, by the words of the profile's dvl sensor rule (not the whole
 # underwater plugin pattern: a camera's `depth_sensor_link` is no subsea sensor).
 _DVL = re.compile(r"dvl|doppler", re.IGNORECASE)
-# A robot name that says a lighter-than-air craft, read as whole words (``burn_cream_blimp``,
-# ``airship``, ``Dirigible_2``): an aircraft by its name, as the flight words say one. Not a
-# plugin's name (a tracker plugin named for a blimp it follows runs on a rover too).
-_AIRSHIP_NAME = re.compile(
-    r"(^|[_/\d\s-])(blimp|airship|dirigible|zeppelin)s?([_/\d\s-]|$)", re.IGNORECASE
-)
 
 
 def flight_hints(tree: JointTree, roles: dict[str, Role], limbs: Sequence[Limb]) -> tuple[str, ...]:
@@ -486,7 +480,7 @@ def flight_hints(tree: JointTree, roles: dict[str, Role], limbs: Sequence[Limb])
     # exported as one link and its mesh (`Fixed_Wing_UAV`), a drone a simulator moves by
     # setting its pose or its velocity (a velocity plugin moves a wheelless body in the air as
     # well as on the ground), flies, with doubt; so does an airship named so.
-    said = pattern.search(tree.urdf.name) or _AIRSHIP_NAME.search(tree.urdf.name)
+    said = pattern.search(tree.urdf.name) or tree.reader.named_airship
     named = (
         (f"robot name {tree.urdf.name}",)
         if said and _travels_no_way_read(tree, roles, limbs, pushed=True)
