@@ -24,7 +24,9 @@ replies are (:mod:`~solver.live.sources.ros1.rpc`): at most
 :data:`~solver.live.sources.ros1.rpc.MAX_REPLY_BYTES` of body, no DTD, values nested deeper
 than :data:`~solver.live.graph.MAX_DEPTH` not built; a connection that stalls is dropped after
 :data:`REQUEST_TIMEOUT` seconds per read, and one that trickles in (a byte now and then, each
-read within that) is cut off :data:`REQUEST_DEADLINE` seconds after it was accepted.
+read within that) is cut off :data:`REQUEST_DEADLINE` seconds after it was accepted, unless it
+has been read whole by then (parsing a request of the largest size allowed, nested deep, takes
+about a second, more on a busy machine: the answer to a request read in time is never lost).
 
 *Slots.* At most :data:`MAX_CONNECTIONS` requests are served at once. When they are all taken,
 a new connection is not turned away: the oldest request still being *read* is cut off to make
@@ -145,6 +147,7 @@ class _Server(socketserver.ThreadingMixIn, SimpleXMLRPCServer):
         self._current.request = request
         timer = threading.Timer(self.deadline, _cut, (request,))
         timer.daemon = True
+        self._current.deadline = timer
         timer.start()
         try:
             super().process_request_thread(request, client_address)
@@ -167,6 +170,11 @@ class _Server(socketserver.ThreadingMixIn, SimpleXMLRPCServer):
         if request is not None:
             with self._lock:  # read whole: no longer one to cut off for a newcomer
                 self._reading.pop(request, None)
+        deadline: threading.Timer | None = getattr(self._current, "deadline", None)
+        if deadline is not None:
+            # The deadline bounds a request's arrival; one read whole is answered however long
+            # its (bounded) parse takes on a busy machine.
+            deadline.cancel()
         try:
             params, method = loads(data)
             if method is None:

@@ -197,6 +197,31 @@ def test_a_request_trickling_in_is_cut_off_at_the_deadline_and_the_node_goes_on(
     server.close()
 
 
+def test_a_request_read_in_time_is_answered_however_long_it_takes_past_the_deadline() -> None:
+    """A deep request of the largest size parses for about a second, longer on a busy machine:
+    the deadline that cuts off a trickle must not cut off the answer to a request read whole."""
+    deadline = 0.2
+    accepted = time.monotonic()
+
+    def slow_update(key: str) -> None:
+        # Work that outlasts the request's deadline, as a slow parse does on a loaded machine.
+        while time.monotonic() < accepted + 3 * deadline:
+            time.sleep(deadline / 4)
+        pushes.update(key)
+
+    pushes = Pushes()
+    master = "http://127.0.0.1:11311/"  # never called: the node only answers
+    server = NodeServer("127.0.0.1", master, slow_update, pushes.shutdown, deadline=deadline)
+    server.start()
+    try:
+        accepted = time.monotonic()
+        answer = xmlrpc.client.ServerProxy(server.uri).paramUpdate("/master", "/uav1/x", "x")
+        assert answer == [1, "", 0]
+        assert pushes.updates.get(timeout=TIMEOUT) == "/uav1/x"
+    finally:
+        server.close()
+
+
 def test_a_fresh_request_is_served_while_more_connections_than_slots_trickle() -> None:
     """Issue 36 item 7: 32 connections trickling a byte at a time held the node's 16 slots, and
     the master's paramUpdate was closed unanswered. Now the oldest request still being read
