@@ -512,7 +512,8 @@ def _rays(tag: SensorTag) -> int | None:
     """How many rays a ray sensor casts (horizontal x vertical samples; a missing axis casts
     one; a horizontal fan sweeping less than :data:`_POINT_SWEEP` points one way, a range
     finder's beam or cone, one ray across: a single-beam laser's two samples 0.02 degrees
-    apart, a narrow ranger's three over 3.6 degrees measure one distance); None
+    apart, a narrow ranger's three over 3.6 degrees measure one distance; so does a grid
+    narrower than that both ways, a laser altimeter's 5 x 5 rays over 1.7 degrees); None
     when it says no samples at all, or none a simulator would cast (``0``, which Gazebo refuses:
     a count left at zero says nothing of the device)."""
     axes = [n for n in (tag.horizontal_samples, tag.vertical_samples) if n is not None]
@@ -520,7 +521,13 @@ def _rays(tag: SensorTag) -> int | None:
         return None
     along_one_line = tag.sweep is not None and tag.sweep < _POINT_SWEEP
     horizontal = 1 if along_one_line else tag.horizontal_samples or 1
-    return horizontal * (tag.vertical_samples or 1)
+    # A narrow cone both ways (a rangefinder drawn as a grid of rays a degree across) measures
+    # one distance too; a narrow vertical fan under a wide sweep is a lidar's few layers.
+    in_one_cone = (
+        along_one_line and tag.vertical_sweep is not None and tag.vertical_sweep < _POINT_SWEEP
+    )
+    vertical = 1 if in_one_cone else tag.vertical_samples or 1
+    return horizontal * vertical
 
 
 def plugin_kind(plugin: PluginTag, profile: Profile) -> str | None:

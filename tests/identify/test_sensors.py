@@ -475,6 +475,35 @@ def test_rays_fanned_over_less_than_twenty_degrees_are_one_beam_a_range_finder()
     assert kinds(ray("tool", "laser_distance", 2, 0.52, 2.0)) == [("lidar", "LIDAR", 1)]
 
 
+def cone(name: str, samples: int, across: float, tall: float) -> str:
+    """A ray sensor of ``samples`` x ``samples`` rays, ``across`` radians wide, ``tall`` high."""
+
+    def axis(span: float) -> str:
+        return (
+            f"<samples>{samples}</samples><min_angle>{-span / 2}</min_angle>"
+            f"<max_angle>{span / 2}</max_angle>"
+        )
+
+    scan = (
+        f"<ray><scan><horizontal>{axis(across)}</horizontal><vertical>{axis(tall)}</vertical>"
+        "</scan><range><max>40</max></range></ray>"
+    )
+    return builders.gazebo_sensor(f"{name}_link", "ray", name, scan)
+
+
+def test_a_grid_of_rays_a_degree_or_two_across_both_ways_is_one_beam_a_range_finder() -> None:
+    # A laser altimeter written as 5 x 5 rays over 1.7 degrees each way (a Garmin LIDAR-Lite
+    # in a drone's model) measures one distance; the same grid fanned 30 degrees high is a
+    # vertical scanner, and one swept a full turn with 16 layers over 30 degrees is a 3D lidar.
+    assert kinds(cone("garmin", 5, 0.03, 0.03)) == [("ir_range", None, 1)]
+    assert kinds(cone("garmin", 5, 0.03, 0.52)) == [("lidar", "LIDAR", 1)]
+    assert kinds(cone("velodyne", 16, 6.28, 0.52)) == [("lidar", "LIDAR", 1)]
+    robot = builders.ugv()
+    robot.add(cone("garmin", 5, 0.03, 0.52))
+    (tag,) = parse_urdf(robot.text()).sensors
+    assert tag.vertical_sweep == pytest.approx(0.52)
+
+
 def test_a_ray_sensor_left_at_zero_samples_is_read_by_its_type_not_as_one_ray() -> None:
     # Gazebo casts no ray for <samples>0</samples>: the count says nothing of the device.
     for samples in (0, -1):

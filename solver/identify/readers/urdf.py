@@ -206,9 +206,11 @@ class SensorTag:
     vertical_samples: int | None = None
     horizontal_fov: float | None = None
     camera_count: int = 0
-    # A ray sensor's horizontal sweep (max_angle - min_angle, radians) and farthest range
-    # (metres): a one-ray range finder sweeps nothing and reaches a metre or two; a lidar sweeps.
+    # A ray sensor's horizontal sweep (max_angle - min_angle, radians), its vertical one, and
+    # farthest range (metres): a one-ray range finder sweeps nothing and reaches a metre or
+    # two; a lidar sweeps.
     sweep: float | None = None
+    vertical_sweep: float | None = None
     max_range: float | None = None
 
     @property
@@ -756,8 +758,8 @@ def _sensor(
         samples[axis] = _integer(node.text if node is not None else None)
     fov = element.find(".//horizontal_fov")
     cameras = len(element.findall("camera")) + len(element.findall(".//camera[@name]"))
-    low, high = (element.find(f".//scan/horizontal/{end}_angle") for end in ("min", "max"))
-    low_angle, high_angle = (_float(n.text if n is not None else None) for n in (low, high))
+    low_angle, high_angle = _angles(element, "horizontal")
+    low_tilt, high_tilt = _angles(element, "vertical")
     farthest = element.find(".//range/max")
     return SensorTag(
         name=(element.get("name") or "").strip(),
@@ -775,7 +777,17 @@ def _sensor(
         horizontal_fov=_float(fov.text if fov is not None else None),
         camera_count=cameras,
         sweep=None if low_angle is None or high_angle is None else abs(high_angle - low_angle),
+        vertical_sweep=None if low_tilt is None or high_tilt is None else abs(high_tilt - low_tilt),
         max_range=_float(farthest.text if farthest is not None else None),
+    )
+
+
+def _angles(element: etree._Element, axis: str) -> tuple[float | None, float | None]:
+    """A ray sensor's ``min_angle`` and ``max_angle`` along ``axis`` (radians), None where
+    not given."""
+    low, high = (element.find(f".//scan/{axis}/{end}_angle") for end in ("min", "max"))
+    return _float(low.text if low is not None else None), _float(
+        high.text if high is not None else None
     )
 
 
