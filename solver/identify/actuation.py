@@ -370,20 +370,26 @@ def _rolls_across(tree: JointTree, joint: Joint) -> bool:
 
 
 def _steered_wheels(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Role]:
-    """Endless leaves of no role yet, each the only moving joint on the link of a joint named
-    for steering (``steer_front_left_joint``) that turns about an upright axis, the leaf about
+    """Endless leaves of no role yet (or wheels by their names), each the only moving joint on
+    the link of a joint named for steering (``steer_front_left_joint``; of no role yet, or read
+    as a gripper's by a link named ``finger_*``: a wheel hangs from no gripper) that turns
+    about an upright axis, the leaf about
     a level one (both as the body rests), on both sides of the body: steered wheels and their
     steering, whatever corner words their names carry (``front_left`` names a leg's corner as
     well as a wheel's; a leg is never steered)."""
     found: dict[str, Role] = {}
     wheels: list[Joint] = []
     for leaf in tree.urdf.joints:
-        if not leaf.endless or leaf.name in roles or leaf.child in tree.moving_below:
+        if (
+            not leaf.endless
+            or _role(roles, leaf.name) not in (None, "wheel")
+            or leaf.child in tree.moving_below
+        ):
             continue
         steer = tree.urdf.parent_joint(leaf.parent)
         if (
             steer is None
-            or steer.name in roles
+            or _role(roles, steer.name) not in (None, "gripper")
             or not steer.movable
             or steer.type not in ("revolute", "continuous")
             or not _STEER.search(steer.name)
@@ -402,6 +408,12 @@ def _steered_wheels(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Rol
     if len(wheels) < 2 or not _sides({tree.poses.place(j.child)[1] for j in wheels}):
         return {}
     return found
+
+
+def _role(roles: Mapping[str, Role], name: str) -> str | None:
+    """The role ``name`` was given so far, or None."""
+    role = roles.get(name)
+    return None if role is None else role.role
 
 
 def _leg_wheels(tree: JointTree, taken: set[str]) -> list[str]:

@@ -830,6 +830,53 @@ def test_unnamed_wheels_on_driven_steering_knuckles_are_wheels_and_a_flippers_ar
     assert roles["fa"] not in ("wheel", "caster")
 
 
+def test_a_steering_joint_whose_link_is_named_like_a_finger_still_steers_its_wheel() -> None:
+    # A rover model names each wheel-walking joint's link wrist_* and each driven steering
+    # knuckle's link finger_*: a joint named for steering, about an upright axis, carrying
+    # only a named wheel on a level axle, steers it (a wheel hangs from no gripper), on both
+    # sides of the body, and the joint above it mounts the wheel (no arm).
+    rover = RobotText("rover")
+    for side, y in (("left", 0.3), ("right", -0.3)):
+        for end, x in (("front", 0.4), ("back", -0.4)):
+            corner = f"{end}_{side}"
+            walking = builders.placed(
+                rover,
+                f"joint_ww_{corner}",
+                "revolute",
+                rover.root,
+                f"wrist_{corner}",
+                xyz=f"{x} {y} 0",
+                axis="0 1 0",
+            )
+            knuckle = builders.placed(
+                rover,
+                f"joint_steer_{corner}",
+                "revolute",
+                walking,
+                f"finger_{corner}",
+                xyz="0 0 -0.1",
+                axis="0 0 1",
+            )
+            builders.placed(
+                rover,
+                f"joint_drive_{corner}",
+                "continuous",
+                knuckle,
+                f"wheel_{corner}",
+                xyz="0 0 -0.1",
+                axis="0 1 0",
+            )
+            rover.add(builders.transmission(f"joint_ww_{corner}"))
+            rover.add(builders.transmission(f"joint_steer_{corner}"))
+            rover.add(builders.transmission(f"joint_drive_{corner}"))
+    result = identify_urdf(rover.text())
+    assert result.body is not None
+    roles = {role.joint: role.role for role in result.body.roles}
+    assert roles["joint_steer_front_left"] == "steering"
+    assert roles["joint_drive_front_left"] == "wheel"
+    assert (result.structure, result.body.grippers) == ("UGV", 0)
+
+
 def test_unnamed_wheels_steered_by_joints_upright_only_as_the_body_rests_are_wheels() -> None:
     # A planetary rover: each wheel on a driven steering joint hung from a passive deployment
     # link whose frame is turned (a quarter about x, then about z), so the steering axis,
