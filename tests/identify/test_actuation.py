@@ -839,36 +839,17 @@ def test_a_steering_joint_whose_link_is_named_like_a_finger_still_steers_its_whe
     for side, y in (("left", 0.3), ("right", -0.3)):
         for end, x in (("front", 0.4), ("back", -0.4)):
             corner = f"{end}_{side}"
-            walking = builders.placed(
-                rover,
-                f"joint_ww_{corner}",
-                "revolute",
-                rover.root,
-                f"wrist_{corner}",
-                xyz=f"{x} {y} 0",
-                axis="0 1 0",
-            )
-            knuckle = builders.placed(
-                rover,
-                f"joint_steer_{corner}",
-                "revolute",
-                walking,
-                f"finger_{corner}",
-                xyz="0 0 -0.1",
-                axis="0 0 1",
-            )
-            builders.placed(
-                rover,
-                f"joint_drive_{corner}",
-                "continuous",
-                knuckle,
-                f"wheel_{corner}",
-                xyz="0 0 -0.1",
-                axis="0 1 0",
-            )
-            rover.add(builders.transmission(f"joint_ww_{corner}"))
-            rover.add(builders.transmission(f"joint_steer_{corner}"))
-            rover.add(builders.transmission(f"joint_drive_{corner}"))
+            parent = rover.root
+            for joint, kind, link, xyz, axis in (
+                ("ww", "revolute", "wrist", f"{x} {y} 0", "0 1 0"),
+                ("steer", "revolute", "finger", "0 0 -0.1", "0 0 1"),
+                ("drive", "continuous", "wheel", "0 0 -0.1", "0 1 0"),
+            ):
+                name = f"joint_{joint}_{corner}"
+                parent = builders.placed(
+                    rover, name, kind, parent, f"{link}_{corner}", xyz=xyz, axis=axis
+                )
+                rover.add(builders.transmission(name))
     result = identify_urdf(rover.text())
     assert result.body is not None
     roles = {role.joint: role.role for role in result.body.roles}
