@@ -1547,6 +1547,15 @@ def _classify(
         )
         return Limb("head", names, base, tip, gripper, named, why)
     kind, why = _named_kind(tree, scores, length, gripper)
+    if (
+        kind == "arm"
+        and not gripper
+        and length >= tree.profile.limb("leg_min_joints")
+        and _FOOT.search(tip)
+    ):
+        # Modules named as an arm's (base, shoulder, elbow) that end in a foot: a leg built
+        # of arm modules, as a modular walker's are; an arm never ends in a foot.
+        kind, why = "leg", f"{why}, but it ends in a foot ({tip})"
     if mounted:
         if mounted == ["wheel"] and kind == "leg":
             return Limb("wheel_leg", names, base, tip, gripper, named, f"{why}, on a wheel")
@@ -1635,6 +1644,10 @@ def _tip(tree: JointTree, joint: Joint) -> str:
         if len(tree.urdf.children(link)) != 1 or len(below) != 1:
             return link
         link = below[0].child
+
+
+# A foot's name at a limb's tip (``leg1__FOOT``, ``rf_foot``, ``toe_link``, ``sole``).
+_FOOT = re.compile(r"foot|feet|(^|[_/])(soles?|toes?)([_/\d]|$)", re.IGNORECASE)
 
 
 def _tip_matches(tree: JointTree, part: str, joint: Joint) -> bool:

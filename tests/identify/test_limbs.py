@@ -48,6 +48,23 @@ def test_legs_named_by_their_corner_are_legs() -> None:
     assert identify_urdf(robot.text()).structure == "Quadruped"
 
 
+def modular_walker(tip: str) -> RobotText:
+    """Six chains of actuator modules named as an arm's (base, shoulder, elbow), each ending
+    in a link ``leg<i>__<tip>`` fixed below its last module."""
+    robot = RobotText("modules")
+    for i in range(1, 7):
+        last = robot.chain("base_link", [f"base{i}", f"shoulder{i}", f"elbow{i}"])
+        robot.fixed(last, f"leg{i}__{tip}")
+    return robot
+
+
+def test_chains_of_arm_named_modules_that_end_in_a_foot_are_legs() -> None:
+    # A modular hexapod whose legs are built of arm modules: an arm never ends in a foot.
+    assert identify_urdf(modular_walker("FOOT").text()).structure == "Hexapod"
+    # The same chains ending in anything else stay six arms on a fixed body.
+    assert identify_urdf(modular_walker("TOOL").text()).structure == "Torso"
+
+
 def test_unnamed_legs_on_the_pelvis_below_named_arms_make_a_humanoid() -> None:
     robot = RobotText("abbreviated", root="pelvis")
     for side in ("L", "R"):
