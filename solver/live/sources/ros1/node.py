@@ -26,7 +26,9 @@ than :data:`~solver.live.graph.MAX_DEPTH` not built; a connection that stalls is
 :data:`REQUEST_TIMEOUT` seconds per read, and one that trickles in (a byte now and then, each
 read within that) is cut off :data:`REQUEST_DEADLINE` seconds after it was accepted, unless it
 has been read whole by then (parsing a request of the largest size allowed, nested deep, takes
-about a second, more on a busy machine: the answer to a request read in time is never lost).
+about a second, more on a busy machine: that parse does not lose the answer to a request read
+in time). An answer is written by a deadline of its own, as long from when it is ready, and it
+is short: nothing a caller sends is echoed back longer than a line.
 
 *Slots.* At most :data:`MAX_CONNECTIONS` requests are served at once. When they are all taken,
 a new connection is not turned away: the oldest request still being *read* is cut off to make
@@ -59,6 +61,7 @@ from xmlrpc.server import SimpleXMLRPCRequestHandler, SimpleXMLRPCServer
 from solver.errors import InputError
 from solver.live.sources.ros1.master import is_loopback
 from solver.live.sources.ros1.rpc import MAX_REPLY_BYTES, loads
+from solver.untrusted import shown
 
 __all__ = [
     "MAX_CONNECTIONS",
@@ -142,18 +145,33 @@ class _Server(socketserver.ThreadingMixIn, SimpleXMLRPCServer):
             self._reading.pop(request, None)
 
     def process_request_thread(self, request: Any, client_address: Any) -> None:
-        # The whole request ends by the deadline, however slowly it comes: its socket is shut
-        # down then, which ends the read under way.
+        # The request arrives by the deadline, however slowly it comes: its socket is shut down
+        # then, which ends the read under way; its answer is written by a deadline of its own.
         self._current.request = request
-        timer = threading.Timer(self.deadline, _cut, (request,))
-        timer.daemon = True
-        self._current.deadline = timer
-        timer.start()
+        self._current.deadline = self._cut_after(request)
         try:
             super().process_request_thread(request, client_address)
         finally:
-            timer.cancel()
+            self._current.deadline.cancel()
             self._ended(request)
+
+    def _cut_after(self, request: socket.socket) -> threading.Timer:
+        """A timer that shuts ``request``'s socket down :attr:`deadline` seconds from now."""
+        timer = threading.Timer(self.deadline, _cut, (request,))
+        timer.daemon = True
+        timer.start()
+        return timer
+
+    def read_whole(self) -> None:
+        """The request this thread serves was read whole: no longer one to cut off for a
+        newcomer, and its arrival's deadline is over (parsing the largest request allowed,
+        nested deep, takes about a second, longer on a busy machine)."""
+        request: socket.socket | None = getattr(self._current, "request", None)
+        if request is None:
+            return
+        with self._lock:
+            self._reading.pop(request, None)
+        self._current.deadline.cancel()
 
     def handle_error(self, request: Any, client_address: Any) -> None:
         """A request that failed (cut off, or its caller gone) ends quietly: the watcher's
@@ -165,16 +183,9 @@ class _Server(socketserver.ThreadingMixIn, SimpleXMLRPCServer):
         dispatch_method: Any = None,  # noqa: ARG002 - the standard signature
         path: Any = None,  # noqa: ARG002
     ) -> Any:  # bytes (typeshed says str)
-        """The standard dispatch, with the bounded parser instead of ``xmlrpc.client.loads``."""
-        request: socket.socket | None = getattr(self._current, "request", None)
-        if request is not None:
-            with self._lock:  # read whole: no longer one to cut off for a newcomer
-                self._reading.pop(request, None)
-        deadline: threading.Timer | None = getattr(self._current, "deadline", None)
-        if deadline is not None:
-            # The deadline bounds a request's arrival; one read whole is answered however long
-            # its (bounded) parse takes on a busy machine.
-            deadline.cancel()
+        """The standard dispatch, with the bounded parser instead of ``xmlrpc.client.loads``;
+        the answer is written by a deadline of its own (a caller that reads it slowly is cut
+        off, as one that sends slowly is)."""
         try:
             params, method = loads(data)
             if method is None:
@@ -186,6 +197,9 @@ class _Server(socketserver.ThreadingMixIn, SimpleXMLRPCServer):
         except Exception as error:  # a caller's mistake is its answer, never the server's end
             message = f"{type(error).__name__}: {error}"[:200]
             encoded = xmlrpc.client.dumps(xmlrpc.client.Fault(1, message))
+        request: socket.socket | None = getattr(self._current, "request", None)
+        if request is not None:
+            self._current.deadline = self._cut_after(request)
         return encoded.encode("utf-8", "xmlcharrefreplace")
 
 
@@ -199,6 +213,12 @@ class _Quiet(SimpleXMLRPCRequestHandler):
     than the cap is refused unread."""
 
     timeout = REQUEST_TIMEOUT
+
+    def decode_request_content(self, data: bytes) -> bytes | None:
+        """The body, read whole (the standard handler calls this right after reading it)."""
+        if isinstance(self.server, _Server):
+            self.server.read_whole()
+        return super().decode_request_content(data)
 
     def do_POST(self) -> None:
         length = self.headers.get("content-length", "")
@@ -312,4 +332,4 @@ class NodeServer:
         return [_OK, "", []]
 
     def _requestTopic(self, _caller: str, topic: str, _protocols: list[Any]) -> list[Any]:
-        return [-1, f"the teleop-ui watcher publishes no topic (asked for {topic})", 0]
+        return [-1, f"the teleop-ui watcher publishes no topic (asked for {shown(topic)})", 0]

@@ -69,6 +69,23 @@ def test_the_node_answers_what_ros_tools_ask_and_shuts_down_on_request(master: R
     server.close()
 
 
+def test_the_node_echoes_nothing_a_caller_sends_back_longer_than_a_line() -> None:
+    # A reply as long as the request would keep a thread writing to a caller that reads it
+    # slowly: the topic a caller asks for comes back cut.
+    pushes = Pushes()
+    server = NodeServer("127.0.0.1", "http://127.0.0.1:11311/", pushes.update, pushes.shutdown)
+    server.start()
+    try:
+        refused: Any = xmlrpc.client.ServerProxy(server.uri).requestTopic(
+            "/rosnode", "/x" * 500_000, [["TCPROS"]]
+        )
+        assert refused[0] == -1
+        assert len(refused[1]) < 200
+        assert "cut from 1,000,000 characters" in refused[1]
+    finally:
+        server.close()
+
+
 def test_a_node_cannot_listen_on_an_address_of_another_machine() -> None:
     pushes = Pushes()
     with pytest.raises(InputError, match="set ROS_IP to an address of this machine"):
