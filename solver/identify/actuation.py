@@ -370,11 +370,11 @@ def _rolls_across(tree: JointTree, joint: Joint) -> bool:
 
 
 def _steered_wheels(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Role]:
-    """Endless leaves of no role yet (or wheels by their names), each the only moving joint on
-    the link of a joint named for steering (``steer_front_left_joint``; of no role yet, or read
-    as a gripper's by a link named ``finger_*``: a wheel hangs from no gripper) that turns
-    about an upright axis, the leaf about
-    a level one (both as the body rests), on both sides of the body: steered wheels and their
+    """Endless leaves of no role yet, or wheels already, each the only moving joint on the link
+    of a joint named for steering (``steer_front_left_joint``) of no role yet, or read as a
+    gripper's (a link named ``finger_*`` or ``knuckle``: a wheel hangs from no gripper), that
+    turns about an upright axis, the leaf about a level one (both as the body rests), on both
+    sides of the body: steered wheels (a wheel keeps the evidence it was found by) and their
     steering, whatever corner words their names carry (``front_left`` names a leg's corner as
     well as a wheel's; a leg is never steered)."""
     found: dict[str, Role] = {}
@@ -402,7 +402,7 @@ def _steered_wheels(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Rol
         found[steer.name] = Role(
             steer.name, "steering", f"named for steering, an upright axis carrying {leaf.name}"
         )
-        found[leaf.name] = Role(
+        found[leaf.name] = roles.get(leaf.name) or Role(
             leaf.name, "wheel", f"an endless leaf turning about a level axle below {steer.name}"
         )
     if len(wheels) < 2 or not _sides({tree.poses.place(j.child)[1] for j in wheels}):
