@@ -21,7 +21,8 @@ any caller id. So nothing a call carries is believed: ``paramUpdate`` passes on 
 and its value is never used; ``shutdown`` stops the watcher, as it stops every ROS 1 node
 (``rosnode kill`` sends it), which changes no answer the watcher gives. Requests are bounded as
 replies are (:mod:`~solver.live.sources.ros1.rpc`): at most
-:data:`~solver.live.sources.ros1.rpc.MAX_REPLY_BYTES` of body, no DTD, values nested deeper
+:data:`~solver.live.sources.ros1.rpc.MAX_REPLY_BYTES` of body, none in a content encoding (ROS
+clients send plain XML: a gzip body is not inflated), no DTD, values nested deeper
 than :data:`~solver.live.graph.MAX_DEPTH` not built; a connection that stalls is dropped after
 :data:`REQUEST_TIMEOUT` seconds per read, and one that trickles in (a byte now and then, each
 read within that) is cut off :data:`REQUEST_DEADLINE` seconds after it was accepted, unless it
@@ -148,11 +149,13 @@ class _Server(socketserver.ThreadingMixIn, SimpleXMLRPCServer):
         # The request arrives by the deadline, however slowly it comes: its socket is shut down
         # then, which ends the read under way; its answer is written by a deadline of its own.
         self._current.request = request
-        self._current.deadline = self._cut_after(request)
+        self._current.deadline = None
         try:
+            self._current.deadline = self._cut_after(request)
             super().process_request_thread(request, client_address)
         finally:
-            self._current.deadline.cancel()
+            if self._current.deadline is not None:
+                self._current.deadline.cancel()
             self._ended(request)
 
     def _cut_after(self, request: socket.socket) -> threading.Timer:
@@ -171,7 +174,8 @@ class _Server(socketserver.ThreadingMixIn, SimpleXMLRPCServer):
             return
         with self._lock:
             self._reading.pop(request, None)
-        self._current.deadline.cancel()
+        if self._current.deadline is not None:
+            self._current.deadline.cancel()
 
     def handle_error(self, request: Any, client_address: Any) -> None:
         """A request that failed (cut off, or its caller gone) ends quietly: the watcher's
@@ -192,13 +196,15 @@ class _Server(socketserver.ThreadingMixIn, SimpleXMLRPCServer):
                 raise xmlrpc.client.ResponseError("not a method call")
             response = self._dispatch(method, params)
             encoded = xmlrpc.client.dumps((response,), methodresponse=True, allow_none=False)
-        except xmlrpc.client.Fault as fault:
-            encoded = xmlrpc.client.dumps(fault, allow_none=False)
         except Exception as error:  # a caller's mistake is its answer, never the server's end
+            # A fault the caller sent (a methodResponse) too: no call here raises one, and its
+            # text is the caller's, cut as every echo is.
             message = f"{type(error).__name__}: {error}"[:200]
             encoded = xmlrpc.client.dumps(xmlrpc.client.Fault(1, message))
         request: socket.socket | None = getattr(self._current, "request", None)
         if request is not None:
+            if self._current.deadline is not None:
+                self._current.deadline.cancel()
             self._current.deadline = self._cut_after(request)
         return encoded.encode("utf-8", "xmlcharrefreplace")
 
@@ -210,26 +216,36 @@ def _cut(request: socket.socket) -> None:
 
 class _Quiet(SimpleXMLRPCRequestHandler):
     """The standard handler, bounded: a read that stalls ends the request, and a body longer
-    than the cap is refused unread."""
+    than the cap, or in a content encoding, is refused unread."""
 
     timeout = REQUEST_TIMEOUT
 
     def decode_request_content(self, data: bytes) -> bytes | None:
-        """The body, read whole (the standard handler calls this right after reading it)."""
+        """The body, read whole (the standard handler calls this right after reading it; an
+        encoded body was refused unread)."""
         if isinstance(self.server, _Server):
             self.server.read_whole()
-        return super().decode_request_content(data)
+        return data
 
     def do_POST(self) -> None:
         length = self.headers.get("content-length", "")
+        encoding = self.headers.get("content-encoding", "identity").strip().lower()
         if not length.strip().isdigit() or int(length) > MAX_REPLY_BYTES:
-            self.send_response(413 if length.strip().isdigit() else 411)
-            self.send_header("Content-Length", "0")
-            self.send_header("Connection", "close")
-            self.end_headers()
-            self.close_connection = True
-            return
-        super().do_POST()
+            self._refuse(413 if length.strip().isdigit() else 411)
+        elif encoding != "identity":
+            # ROS clients send plain XML; the standard handler would inflate a gzip body and
+            # echo any other encoding's name back in its error, however long.
+            self._refuse(415)
+        else:
+            super().do_POST()
+
+    def _refuse(self, status: int) -> None:
+        """An empty answer of ``status``, the body unread, the connection closed."""
+        self.send_response(status)
+        self.send_header("Content-Length", "0")
+        self.send_header("Connection", "close")
+        self.end_headers()
+        self.close_connection = True
 
     def log_message(self, format: str, *args: Any) -> None:
         """Requests are not logged: the watcher's output is its events."""

@@ -86,6 +86,40 @@ def test_the_node_echoes_nothing_a_caller_sends_back_longer_than_a_line() -> Non
         server.close()
 
 
+def raw_post(uri: str, headers: str, body: bytes) -> bytes:
+    """What the node answers a POST of ``body`` with ``headers``, read until it closes."""
+    host, port = uri.removeprefix("http://").rstrip("/").rsplit(":", 1)
+    with socket.create_connection((host, int(port)), timeout=TIMEOUT) as connection:
+        head = f"POST / HTTP/1.1\r\nContent-Length: {len(body)}\r\n{headers}\r\n"
+        connection.sendall(head.encode() + body)
+        reply = b""
+        while chunk := connection.recv(65536):
+            reply += chunk
+    return reply
+
+
+def test_an_encoded_body_is_refused_unread_and_a_forged_fault_is_not_echoed_whole() -> None:
+    # The standard handler inflates a gzip body (20 MB from a small one) and names any other
+    # encoding in its error, however long (a folded header of megabytes); a methodResponse
+    # carrying a fault came back with the caller's whole text.
+    pushes = Pushes()
+    server = NodeServer("127.0.0.1", "http://127.0.0.1:11311/", pushes.update, pushes.shutdown)
+    server.start()
+    try:
+        call = b"<?xml version='1.0'?><methodCall><methodName>getPid</methodName></methodCall>"
+        for encoding in ("gzip", "x" * 60_000):
+            refused = raw_post(server.uri, f"Content-Encoding: {encoding}\r\n", call)
+            assert refused.split(b"\r\n", 1)[0].split(b" ", 1)[1].startswith(b"415")
+            assert len(refused) < 1_000
+        fault = xmlrpc.client.dumps(xmlrpc.client.Fault(1, "x" * 1_000_000)).encode()
+        answer = raw_post(server.uri, "", fault)
+        assert b"<name>faultCode</name>" in answer
+        assert len(answer) < 2_000
+        assert xmlrpc.client.ServerProxy(server.uri).getPid("/rosnode") == [1, "", os.getpid()]
+    finally:
+        server.close()
+
+
 def test_a_node_cannot_listen_on_an_address_of_another_machine() -> None:
     pushes = Pushes()
     with pytest.raises(InputError, match="set ROS_IP to an address of this machine"):
