@@ -1547,15 +1547,7 @@ def _classify(
         )
         return Limb("head", names, base, tip, gripper, named, why)
     kind, why = _named_kind(tree, scores, length, gripper)
-    if (
-        kind == "arm"
-        and not gripper
-        and length >= tree.profile.limb("leg_min_joints")
-        and _FOOT.search(tip)
-    ):
-        # Modules named as an arm's (base, shoulder, elbow) that end in a foot: a leg built
-        # of arm modules, as a modular walker's are; an arm never ends in a foot.
-        kind, why = "leg", f"{why}, but it ends in a foot ({tip})"
+    kind, why = _ends_in_a_foot(tree, kind, why, tip, length=length, gripper=gripper)
     if mounted:
         if mounted == ["wheel"] and kind == "leg":
             return Limb("wheel_leg", names, base, tip, gripper, named, f"{why}, on a wheel")
@@ -1644,6 +1636,22 @@ def _tip(tree: JointTree, joint: Joint) -> str:
         if len(tree.urdf.children(link)) != 1 or len(below) != 1:
             return link
         link = below[0].child
+
+
+def _ends_in_a_foot(
+    tree: JointTree, kind: str | None, why: str, tip: str, *, length: int, gripper: bool
+) -> tuple[str | None, str]:
+    """A chain the names make an arm, at least a leg's length, with no gripper, whose tip is
+    named as a foot: a leg built of modules named as an arm's (base, shoulder, elbow), as a
+    modular walker's are; an arm never ends in a foot. Else ``kind`` and ``why`` as they were."""
+    if (
+        kind == "arm"
+        and not gripper
+        and length >= tree.profile.limb("leg_min_joints")
+        and _FOOT.search(tip)
+    ):
+        return "leg", f"{why}, but it ends in a foot ({tip})"
+    return kind, why
 
 
 # A foot's name at a limb's tip (``leg1__FOOT``, ``rf_foot``, ``toe_link``, ``sole``).
