@@ -265,6 +265,22 @@ def empty_graph(params: dict[str, Any] | None = None) -> dict[str, Callable[...,
     }
 
 
+def post_raw(uri: str, head: str, body: bytes = b"") -> bytes:
+    """The answer of the XML-RPC server at ``uri`` to ``head`` (a request line and headers)
+    and ``body``, read until it is whole or the connection closes."""
+    host, port = uri.removeprefix("http://").rstrip("/").rsplit(":", 1)
+    with socket.create_connection((host, int(port)), timeout=60) as connection:
+        connection.sendall(head.encode() + b"\r\n\r\n" + body)
+        reply = b""
+        while chunk := connection.recv(65536):
+            reply += chunk
+            if b"\r\n\r\n" in reply and b"</methodResponse>" in reply:
+                break
+            if reply.startswith(b"HTTP/1.") and b" 200 " not in reply.split(b"\r\n")[0]:
+                break
+    return reply
+
+
 def deep_xml(depth: int, leaf: str = "<value>x</value>") -> str:
     """Raw XML-RPC for a list ``depth`` levels deep (the standard marshaller recurses)."""
     return "<value><array><data>" * depth + leaf + "</data></array></value>" * depth

@@ -23,7 +23,6 @@ from __future__ import annotations
 import json
 import os
 import signal
-import socket
 import subprocess
 import sys
 import xmlrpc.client
@@ -65,6 +64,7 @@ from tests.live.hostile import (
     empty_graph,
     flooding,
     gzip_bomb,
+    post_raw,
     raw_set_param,
     trickling,
 )
@@ -588,20 +588,6 @@ def test_a_rival_whose_node_answers_a_byte_a_second_does_not_hold_the_watcher(
         rival.close()
 
 
-def _post(uri: str, head: str, body: bytes = b"") -> bytes:
-    host, port = uri.removeprefix("http://").rstrip("/").rsplit(":", 1)
-    with socket.create_connection((host, int(port)), timeout=60) as connection:
-        connection.sendall(head.encode() + b"\r\n\r\n" + body)
-        reply = b""
-        while chunk := connection.recv(65536):
-            reply += chunk
-            if b"\r\n\r\n" in reply and b"</methodResponse>" in reply:
-                break
-            if reply.startswith(b"HTTP/1.") and b" 200 " not in reply.split(b"\r\n")[0]:
-                break
-    return reply
-
-
 def test_the_watchers_node_refuses_oversized_dtd_and_deep_requests_and_goes_on(
     master: Roscore, node: TestNode, start_watcher: Start
 ) -> None:
@@ -610,17 +596,17 @@ def test_the_watchers_node_refuses_oversized_dtd_and_deep_requests_and_goes_on(
     watch.wait_for_event("synced")
     api = watch.watcher.node_uri
     assert api is not None
-    oversized = _post(api, f"POST / HTTP/1.1\r\nContent-Length: {MAX_REPLY_BYTES + 1}")
+    oversized = post_raw(api, f"POST / HTTP/1.1\r\nContent-Length: {MAX_REPLY_BYTES + 1}")
     assert oversized.startswith(b"HTTP/1.0 413") or oversized.startswith(b"HTTP/1.1 413")
     dtd = b'<?xml version="1.0"?><!DOCTYPE m [<!ENTITY a "a">]><methodCall/>'
-    refused = _post(api, f"POST / HTTP/1.1\r\nContent-Length: {len(dtd)}", dtd)
+    refused = post_raw(api, f"POST / HTTP/1.1\r\nContent-Length: {len(dtd)}", dtd)
     assert b"<name>faultCode</name>" in refused
     deep = (
         "<?xml version='1.0'?><methodCall><methodName>paramUpdate</methodName><params>"
         "<param><value>/x</value></param><param><value>/teleop_ui/x</value></param>"
         f"<param>{deep_xml(100_000)}</param></params></methodCall>"
     ).encode()
-    answered = _post(api, f"POST / HTTP/1.1\r\nContent-Length: {len(deep)}", deep)
+    answered = post_raw(api, f"POST / HTTP/1.1\r\nContent-Length: {len(deep)}", deep)
     assert b"<int>1</int>" in answered
     shutdown: Any = xmlrpc.client.ServerProxy(api).shutdown("/x", "bye\n[forged line]" + "x" * 500)
     assert shutdown[0] == 1

@@ -17,7 +17,7 @@ from solver.live.graph import MISSING
 from solver.live.sources.ros1.descriptions import REREAD_AFTER, Descriptions
 from solver.live.sources.ros1.master import MasterClient
 from solver.live.sources.ros1.node import MAX_CONNECTIONS, NodeServer, callback_host
-from tests.live.hostile import TricklingClients
+from tests.live.hostile import TricklingClients, post_raw
 from tests.live.roscore import Roscore, TestNode, wait_until
 
 TIMEOUT = 60.0
@@ -86,18 +86,6 @@ def test_the_node_echoes_nothing_a_caller_sends_back_longer_than_a_line() -> Non
         server.close()
 
 
-def raw_post(uri: str, headers: str, body: bytes) -> bytes:
-    """What the node answers a POST of ``body`` with ``headers``, read until it closes."""
-    host, port = uri.removeprefix("http://").rstrip("/").rsplit(":", 1)
-    with socket.create_connection((host, int(port)), timeout=TIMEOUT) as connection:
-        head = f"POST / HTTP/1.1\r\nContent-Length: {len(body)}\r\n{headers}\r\n"
-        connection.sendall(head.encode() + body)
-        reply = b""
-        while chunk := connection.recv(65536):
-            reply += chunk
-    return reply
-
-
 def test_an_encoded_body_is_refused_unread_and_a_forged_fault_is_not_echoed_whole() -> None:
     # The standard handler inflates a gzip body (20 MB from a small one) and names any other
     # encoding in its error, however long (a folded header of megabytes); a methodResponse
@@ -108,11 +96,12 @@ def test_an_encoded_body_is_refused_unread_and_a_forged_fault_is_not_echoed_whol
     try:
         call = b"<?xml version='1.0'?><methodCall><methodName>getPid</methodName></methodCall>"
         for encoding in ("gzip", "x" * 60_000):
-            refused = raw_post(server.uri, f"Content-Encoding: {encoding}\r\n", call)
+            head = f"POST / HTTP/1.1\r\nContent-Length: {len(call)}\r\nContent-Encoding: {encoding}"
+            refused = post_raw(server.uri, head, call)
             assert refused.split(b"\r\n", 1)[0].split(b" ", 1)[1].startswith(b"415")
             assert len(refused) < 1_000
         fault = xmlrpc.client.dumps(xmlrpc.client.Fault(1, "x" * 1_000_000)).encode()
-        answer = raw_post(server.uri, "", fault)
+        answer = post_raw(server.uri, f"POST / HTTP/1.1\r\nContent-Length: {len(fault)}", fault)
         assert b"<name>faultCode</name>" in answer
         assert len(answer) < 2_000
         assert xmlrpc.client.ServerProxy(server.uri).getPid("/rosnode") == [1, "", os.getpid()]
