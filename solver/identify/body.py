@@ -135,6 +135,9 @@ class Body:
     # What a body below the surface has: a buoyancy or hydrodynamics plugin, a thruster plugin,
     # a DVL or pressure sensor. A body in water by thruster names alone has none.
     underwater_hints: tuple[str, ...] = ()
+    # Plugins of a craft its thrusters fly in air or space (a reaction wheel, air thrusters),
+    # nothing of water beside them (RoleReader.spaceborne).
+    space_plugins: tuple[str, ...] = ()
     # Frames fixed to the body named as an underwater sensor's (a DVL), with nothing behind them:
     # a body in water below the surface, though no plugin says so.
     water_frames: tuple[str, ...] = ()
@@ -179,7 +182,7 @@ class Body:
     @property
     def marine(self) -> bool:
         return bool(
-            self.thrusters
+            (self.thrusters and not self.space_plugins)
             or self.marine_plugins
             or self.water_frames
             or self.vessel_name
@@ -241,6 +244,7 @@ class Body:
             or self.fixed_rotors
             or self.aero
             or self.flight_hints
+            or (self.space_plugins and self.thrusters)
             or self.shipped_as == "flight"
         )
 
@@ -252,7 +256,12 @@ class Body:
     @property
     def weak_flight(self) -> bool:
         """Flying known only from fixed rotor links, wing names or a plugin's parameters."""
-        return self.flying and not (self.rotors or self.flight_plugins or self.fins)
+        return self.flying and not (
+            self.rotors
+            or self.flight_plugins
+            or self.fins
+            or (self.space_plugins and self.thrusters)
+        )
 
     def features(self) -> dict[str, int]:
         """The counts and flags the profile's structure rules read."""
@@ -363,6 +372,8 @@ class Body:
             lines.append(f"flight plugin(s): {_names(self.flight_plugins)}")
         if self.fins:
             lines.append(f"{len(self.fins)} fin / control-surface joint(s): {_names(self.fins)}")
+        if self.space_plugins:
+            lines.append(f"thrusters flown in air or space: {_names(self.space_plugins)}")
         lines += self._water()
         lines += self._trimmed()
         if self.planar_base:
@@ -461,11 +472,14 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
         fins=tuple(parts.of("fin")),
         casters=tuple(parts.of("caster")),
         wings=tuple(wings(tree, parts.roles)),
-        marine_plugins=tuple(
+        marine_plugins=()
+        if tree.reader.spaceborne
+        else tuple(
             dict.fromkeys(
                 (*tree.labels("thruster"), *tree.labels("marine"), *tree.labels("underwater"))
             )
         ),
+        space_plugins=tree.labels("space") if tree.reader.spaceborne else (),
         surface_hints=surface_hints(tree, thrusters=len(thrusters)),
         underwater_hints=underwater_hints(tree),
         water_frames=water_frames(tree),

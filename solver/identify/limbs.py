@@ -31,7 +31,8 @@ Where names say nothing, the chains' places and shapes still speak:
   front and a rear hip turning about one line along the body) are two legs;
 * three or six alike chains, the body's only limbs, starting on a level circle a third of a
   turn apart, are one parallel manipulator (:func:`parallel_robot`: a delta, a Stewart
-  platform); two chains an SDF joint of a ``<gazebo>`` block closes onto each other are one
+  platform), and so are three chains named as legs on a root bolted to the world beside other
+  limbs (a delta whose platform moves on slides of its own); two chains an SDF joint of a ``<gazebo>`` block closes onto each other are one
   linkage (:func:`closed_loops`: a wheel-legged robot's five-bar leg drawn open);
 * a short unnamed chain with a slide in it, beside a leg on the hip the body turns, is that
   leg's linear actuator drawn open, no arm (:func:`drives_beside_legs`);
@@ -793,23 +794,48 @@ def parallel_robot(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     whose platform the description cannot hold. Its longest chain is the arm, the others its
     linkage (as :func:`meeting_tips` reads chains named as legs whose tips meet). Chains named
     as legs count when they are struts on a body bolted to the world (:func:`_struts`): a
-    walker is not bolted down, and does not walk on linear actuators."""
-    struts = _struts(tree, limbs)
-    if len(limbs) not in _PARALLEL_CHAINS or not _alike_chains(tree, limbs, legs=struts):
+    walker is not bolted down, and does not walk on linear actuators. Three chains named as
+    legs on the root bolted to the world are a delta's arms beside other limbs too
+    (:func:`_bolted_legs`: the platform a simulator moves on a chain of its own)."""
+    bolted = _bolted_legs(tree, limbs)
+    group = bolted or limbs
+    struts = bool(bolted) or _struts(tree, limbs)
+    if len(group) not in _PARALLEL_CHAINS or not _alike_chains(tree, group, legs=struts):
         return limbs
-    starts = [_start(tree, limb) for limb in limbs]
+    starts = [_start(tree, limb) for limb in group]
     if not _third_turn_symmetric(starts):
         return limbs
-    arm = max(limbs, key=lambda limb: len(limb.joints))
+    chains = {id(limb) for limb in group}
+    # The platform a chain of its own moves is the arm (the delta's reach); else its longest.
+    moved = any(limb.kind == "arm" and id(limb) not in chains for limb in limbs)
+    arm = None if moved else max(group, key=lambda limb: len(limb.joints))
     why = (
-        f"a parallel mechanism: {len(limbs)} alike chains on a circle, a third of a turn "
+        f"a parallel mechanism: {len(group)} alike chains on a circle, a third of a turn "
         "apart (a delta, a Stewart platform, a three-jaw claw)"
     )
-    return [replace(limb, kind="arm" if limb is arm else "other", why=why) for limb in limbs]
+    return [
+        replace(limb, kind="arm" if limb is arm else "other", why=why)
+        if id(limb) in chains
+        else limb
+        for limb in limbs
+    ]
+
+
+def _bolted_legs(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
+    """Exactly three chains named as legs, each starting on the root of a description bolted
+    to the world (its root is ``world``, no moving joint between): a delta's three arms, which
+    its makers call legs, whatever other chains the model adds (a platform moved on a chain of
+    its own). No walker stands on three legs bolted to the world."""
+    legs = [limb for limb in limbs if limb.kind == "leg"]
+    if len(legs) != _DELTA_LEGS or not _world_root(tree):
+        return []
+    return legs if all(_on_the_root(tree, limb.base) for limb in legs) else []
 
 
 # A parallel robot's chains: a delta's three, a Stewart platform's six.
 _PARALLEL_CHAINS = (3, 6)
+# A delta's arms, named as legs.
+_DELTA_LEGS = 3
 # Starts this close (a share of the circle's radius) are one place.
 _ON_CIRCLE = 0.1
 

@@ -129,7 +129,7 @@ def _water(body: Body, urdf_source: str) -> _Shown:
         # A vessel whose propulsion is not drawn (a hull and sensor frames, thrusters a
         # driver runs): it is driven, as a body flying by its packages is flown.
         found.append(("thrusters", f"{urdf_source}: a vessel with no thruster or fin drawn"))
-    if body.thrusters:
+    if body.thrusters and body.marine:  # a craft they fly in air or space is flown
         found.append(("thrusters", f"{urdf_source}: {len(body.thrusters)} thruster(s)"))
     elif body.marine and body.controlled_fins:
         # A vessel with no thruster steered by a rudder a controller drives (a sailboat): the
@@ -169,6 +169,9 @@ def _flight(body: Body, urdf_source: str, rotor_controllers: str | None = None) 
         what = f"{len(body.wings)} wing and control-surface link(s)"
     elif body.flight_hints:
         what = f"flight named in {body.flight_hints[0]}"
+    elif body.space_plugins:
+        space = body.space_plugins[0]
+        what = f"{len(body.thrusters)} thruster(s) of a craft in air or space ({space})"
     else:
         what = f"flying by its packages ({body.shipped_by})"
     return [("flight", f"{urdf_source}: {what}")]

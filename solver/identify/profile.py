@@ -76,7 +76,8 @@ PARTS = (
 # drive/track/flight/thruster/lift: plugins that move the robot (a joint they name takes their
 # role); marine: plugins of a body in water; surface: hints of a hull floating at the surface
 # (plugins and element names such as <metacentric_width>); underwater: what a body below the
-# surface has (plugins and sensors: hydrodynamics, buoyancy, a DVL, a pressure sensor); spring:
+# surface has (plugins and sensors: hydrodynamics, buoyancy, a DVL, a pressure sensor); space:
+# plugins of a craft thrusters fly in air or space (a reaction wheel, air thrusters); spring:
 # plugins that hold a joint on a spring (a joint they name yields: passive, no limb's); force:
 # plugins that push a link with a commanded force (in water, a thruster's link).
 PLUGIN_PARTS = (
@@ -88,6 +89,7 @@ PLUGIN_PARTS = (
     "marine",
     "surface",
     "underwater",
+    "space",
     "spring",
     "mover",
     "force",

@@ -152,7 +152,12 @@ class RoleReader:
         self.named_vessel = self._named_vessel()
         self.named_submersible = self._name_says(_SUBMERSIBLE_NAME)
         self.named_airship = self._name_says(_AIRSHIP_NAME)
-        self.marine = (
+        # A craft its thrusters fly in air or space (a reaction wheel, air thrusters), nothing
+        # of water beside them: the thrusters do not put it in water.
+        self.spaceborne = bool(self.plugins_of("space")) and not (
+            self.plugins_of("marine") or self.plugins_of("underwater")
+        )
+        self.marine = not self.spaceborne and (
             bool(self.plugins_of("marine") or self.plugins_of("thruster") or self.fixed_thrusters)
             # A plugin only a submerged body runs (a subsea pressure gauge, a DVL): in water.
             or bool(self.plugins_of("underwater"))

@@ -1475,6 +1475,64 @@ def test_three_legs_whose_tips_stand_apart_stay_legs() -> None:
     assert [limb.kind for limb in result.body.limbs] == ["leg", "leg", "leg"]
 
 
+def bolted_delta(*, legs: int = 3, root: str = "world", platform: bool = True) -> str:
+    """:func:`delta`'s chains standing apart (``legs`` of them, evenly around), on a base fixed
+    to ``root``; with ``platform``, the platform a simulator moves on a chain of three slides
+    from the root (the loop a URDF cannot close)."""
+    links = ["base_link"]
+    joints = [builders.joint_xml("bolt", "fixed", root, "base_link", "0 0 1", "1 0 0")]
+    for i in range(legs):
+        angle = 2 * math.pi * i / legs
+        x, y = 0.2 * math.cos(angle), 0.2 * math.sin(angle)
+        links += [f"upper_leg_{i}", f"lower_leg_{i}"]
+        joints.append(
+            builders.joint_xml(
+                f"motor_{i}", "revolute", "base_link", f"upper_leg_{i}", f"{x} {y} 0", "0 1 0"
+            )
+        )
+        joints.append(
+            builders.joint_xml(
+                f"elbow_{i}", "revolute", f"upper_leg_{i}", f"lower_leg_{i}", "0 0 -0.3", "0 1 0"
+            )
+        )
+    if platform:
+        parent = root
+        for axis, vector in (("x", "1 0 0"), ("y", "0 1 0"), ("z", "0 0 1")):
+            links.append(f"platform_{axis}")
+            joints.append(
+                f'<joint name="{axis}" type="prismatic"><parent link="{parent}"/>'
+                f'<child link="platform_{axis}"/><axis xyz="{vector}"/>'
+                '<limit lower="-0.5" upper="0.5" effort="1" velocity="1"/></joint>'
+            )
+            parent = f"platform_{axis}"
+    body = "".join(f'<link name="{link}"/>' for link in (root, *links)) + "".join(joints)
+    return f'<robot name="delta">{body}</robot>'
+
+
+def test_three_legs_on_a_base_bolted_to_the_world_are_a_deltas_arms() -> None:
+    # The chains' tips stand apart: the platform they hold moves on slides of its own.
+    result = identify_urdf(bolted_delta())
+    assert result.structure == "Manipulator"
+    assert result.body is not None
+    kinds = {limb.joints[0]: limb.kind for limb in result.body.limbs}
+    assert kinds == {"x": "arm", "motor_0": "other", "motor_1": "other", "motor_2": "other"}
+
+
+def test_three_legs_bolted_to_the_world_with_no_platform_drawn_are_one_manipulator() -> None:
+    result = identify_urdf(bolted_delta(platform=False))
+    assert result.structure == "Manipulator"
+    assert result.body is not None
+    assert sorted(limb.kind for limb in result.body.limbs) == ["arm", "other", "other"]
+
+
+@pytest.mark.parametrize("robot", [{"root": "stand"}, {"legs": 4}])
+def test_legs_on_a_free_base_or_four_bolted_down_stay_legs(robot: dict[str, Any]) -> None:
+    # A walker on a test stand is not a delta: its base is no world's, or it has four legs.
+    result = identify_urdf(bolted_delta(**robot))
+    assert result.body is not None
+    assert result.body.count("leg") == robot.get("legs", 3)
+
+
 def wheel_legged(*, closed: bool) -> RobotText:
     """Two five-bar legs drawn open: on each side a front chain (hip, knee) carrying the wheel
     and a passive rear chain (hip, knee) whose end a ``<gazebo>`` joint closes onto the wheel

@@ -842,3 +842,36 @@ def test_cylinders_that_are_no_propeller_discs_do_not_fly(
 ) -> None:
     text = disc_body(places, rpy=rpy, radius=radius, extra=extra)
     assert identify_urdf(text).structure != "UAV"
+
+
+def spacecraft(*plugins: tuple[str, str]) -> RobotText:
+    """A box four thruster plugins push (each names the hull), with ``plugins`` beside them."""
+    robot = RobotText("craft")
+    for i in range(4):
+        robot.add(
+            builders.model_plugin(
+                f"t{i}", "libbang_bang_thruster.so", "<body_link>base_link</body_link>"
+            )
+        )
+    for name, filename in plugins:
+        robot.add(builders.model_plugin(name, filename))
+    return robot
+
+
+@pytest.mark.parametrize(
+    "plugin",
+    [("wheel", "libcontinuous_reaction_wheel.so"), ("air", "libair_thruster_ros_plugin.so")],
+)
+def test_thrusters_beside_a_reaction_wheel_or_air_thrusters_fly_the_craft(
+    plugin: tuple[str, str],
+) -> None:
+    # A free-flyer on an air table or in orbit: its thrusters do not put it in water.
+    result = identify_urdf(spacecraft(plugin).text())
+    assert result.structure == "UAV"
+    assert [c.motion_control for c in result.motion_controls] == ["Flight"]
+
+
+def test_thrusters_with_a_reaction_wheel_and_a_water_plugin_stay_in_water() -> None:
+    craft = spacecraft(("wheel", "libreaction_wheel.so"), ("water", "libunderwater_object.so"))
+    assert identify_urdf(craft.text()).structure == "Underwater Vehicle"
+    assert identify_urdf(spacecraft().text()).structure == "Underwater Vehicle"
