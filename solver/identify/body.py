@@ -41,6 +41,7 @@ from solver.identify.limbs import (
     Limb,
     arms_beside_legs,
     bolted_chain,
+    closed_arms,
     closed_loops,
     drives_beside_legs,
     find_limbs,
@@ -562,7 +563,7 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
     parts.limbs = drives_beside_legs(tree, parts.limbs)
     parts.limbs = flippers(tree, parts.limbs)
     parts.limbs = parallel_robot(tree, meeting_tips(tree, parts.limbs))
-    parts.limbs = closed_loops(tree, parts.limbs)
+    parts.limbs = closed_arms(tree, closed_loops(tree, parts.limbs))
     if not parts.roles and not parts.trunk:  # a snake is its one chain, with nothing else
         parts.limbs = spine(tree, parts.limbs)
     elif not parts.roles and not parts.grippers:  # or its chain, with side wheels on it

@@ -32,8 +32,10 @@ Where names say nothing, the chains' places and shapes still speak:
 * three or six alike chains, the body's only limbs, starting on a level circle a third of a
   turn apart, are one parallel manipulator (:func:`parallel_robot`: a delta, a Stewart
   platform), and so are three chains named as legs on a root bolted to the world beside other
-  limbs (a delta whose platform moves on slides of its own); two chains an SDF joint of a ``<gazebo>`` block closes onto each other are one
-  linkage (:func:`closed_loops`: a wheel-legged robot's five-bar leg drawn open);
+  limbs (a delta whose platform moves on slides of its own); two chains an SDF joint of a
+  ``<gazebo>`` block closes onto each other are one linkage (:func:`closed_loops`: a
+  wheel-legged robot's five-bar leg drawn open); two arm chains of hinges about parallel axes
+  whose ends meet are one five-bar arm (:func:`closed_arms`);
 * a short unnamed chain with a slide in it, beside a leg on the hip the body turns, is that
   leg's linear actuator drawn open, no arm (:func:`drives_beside_legs`);
 * one long chain of equal modules whose axes alternate, on a body that has nothing else, is a
@@ -1114,6 +1116,56 @@ def closed_loops(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
         why = f"{limb.why}; closed by a loop joint with {shown(limbs[closed].joints[0])}'s chain"
         merged[kept] = replace(limb, joints=limb.joints + limbs[closed].joints, why=why)
     return [merged.get(i, limb) for i, limb in enumerate(limbs) if i not in into]
+
+
+def closed_arms(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
+    """Two arm chains that start apart on one body and end at one place (closer than
+    :data:`_ARM_CLOSED` of the gap between their starts) are one arm closed by a linkage (a
+    five-bar arm written as two open chains, the loop a URDF cannot close): merged, as
+    :func:`five_bars` merges a leg's, when both turn in one plane (:func:`_arms_meet`): a
+    dual-arm robot's hands may meet in the zero pose, but its arms are not planar."""
+    arms = [limb for limb in limbs if limb.kind == "arm"]
+    if not 2 <= len(arms) <= _MOST_FIVE_BAR_LEGS:
+        return limbs  # a stranger's thousands of chains are not paired one by one
+    known: dict[str, str | None] = {}
+    merged: dict[int, Limb] = {}
+    used: set[int] = set()
+    why = "two chains of one five-bar arm (they start apart on one body, their ends meet)"
+    for index, one in enumerate(arms):
+        for other in arms[index + 1 :]:
+            if {id(one), id(other)} & used or not _arms_meet(tree, one, other, known):
+                continue
+            merged[id(one)] = replace(one, joints=one.joints + other.joints, why=why)
+            used.update((id(one), id(other)))
+    if not merged:
+        return limbs
+    kept = [
+        merged.get(id(limb), limb) for limb in limbs if id(limb) not in used or id(limb) in merged
+    ]
+    return sort_limbs(tree, kept)
+
+
+def _arms_meet(tree: JointTree, one: Limb, other: Limb, known: dict[str, str | None]) -> bool:
+    """The two chains hang from one body, turn in one plane (every joint of both a hinge about
+    parallel axes: a five-bar linkage is planar; two arms of a dual-arm robot whose hands meet
+    in the zero pose are not) and end closer than :data:`_ARM_CLOSED` of the gap between
+    where they start."""
+    if moved_by(tree.urdf, one.base, known) != moved_by(tree.urdf, other.base, known):
+        return False
+    joints = [tree.urdf.joint(name) for name in (*one.joints, *other.joints)]
+    hinges = [j for j in joints if j is not None and j.type in ("revolute", "continuous")]
+    if len(hinges) != len(joints):
+        return False
+    axis = tree.poses.axis(hinges[0])
+    if not all(parallel(axis, tree.poses.axis(j)) for j in hinges[1:]):
+        return False
+    gap = distance(_start(tree, one), _start(tree, other))
+    ends = distance(tree.poses.place(one.tip), tree.poses.place(other.tip))
+    return gap > 0 and ends < _ARM_CLOSED * gap
+
+
+# Two arm chains' ends this close (a share of their starts' gap) are one place: one loop.
+_ARM_CLOSED = 0.1
 
 
 # Which of two chains a loop closes keeps its kind: the one that carries something.

@@ -132,10 +132,26 @@ def fixed_thrusters(tree: JointTree) -> list[str]:
 
 
 def fixed_wheels(tree: JointTree, roles: dict[str, Role]) -> list[str]:
-    """Wheel joints of type fixed (a trimmed model), when no wheel turns."""
+    """Wheel joints of type fixed (a trimmed model), when no wheel turns; not on a body bolted
+    to the world (its root is ``world`` and no joint moves between it and the wheel: a cart's
+    casters under a table the model fixes in place)."""
     if with_role(roles, "wheel"):
         return []
-    return [j.name for j in tree.urdf.joints if j.type == "fixed" and tree.matches("wheel", j)]
+    return [
+        j.name
+        for j in tree.urdf.joints
+        if j.type == "fixed" and tree.matches("wheel", j) and not _bolted(tree, j.parent)
+    ]
+
+
+def _bolted(tree: JointTree, link: str) -> bool:
+    """``link`` is fixed to a root named ``world``: no joint between them moves."""
+    if tree.urdf.root.lower() != "world":
+        return False
+    joint = tree.urdf.parent_joint(link)
+    while joint is not None and not joint.movable:
+        joint = tree.urdf.parent_joint(joint.parent)
+    return joint is None
 
 
 def fixed_rotors(tree: JointTree) -> list[str]:

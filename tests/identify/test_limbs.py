@@ -1533,6 +1533,51 @@ def test_legs_on_a_free_base_or_four_bolted_down_stay_legs(robot: dict[str, Any]
     assert result.body.count("leg") == robot.get("legs", 3)
 
 
+def five_bar_arm(*, closed: bool, elbow: str = "1 0 0") -> RobotText:
+    """Two two-joint arm chains starting 0.4 m apart on one table, their shoulders turning
+    about x and their elbows about ``elbow``, their ends meeting 0.6 m above the middle
+    (``closed``) or rising straight up, as far apart as they start."""
+    robot = RobotText("five_bar", root="table")
+    for side, y in (("left", 0.2), ("right", -0.2)):
+        upper = builders.placed(
+            robot,
+            f"{side}_shoulder",
+            "revolute",
+            "table",
+            f"{side}_upper",
+            xyz=f"0 {y} 0.1",
+            axis="1 0 0",
+        )
+        end = f"0 {-y if closed else 0} 0.3"
+        builders.placed(
+            robot, f"{side}_elbow", "revolute", upper, f"{side}_fore", xyz="0 0 0.3", axis=elbow
+        )
+        robot.joint(
+            f"{side}_tip", "fixed", f"{side}_fore", f"{side}_tip_link", f'<origin xyz="{end}"/>'
+        )
+    return robot
+
+
+def test_two_arm_chains_whose_ends_meet_are_one_five_bar_arm() -> None:
+    result = identify_urdf(five_bar_arm(closed=True).text())
+    assert result.structure == "Manipulator"
+    assert result.body is not None
+    assert [(limb.kind, len(limb.joints)) for limb in result.body.limbs] == [("arm", 4)]
+
+
+@pytest.mark.parametrize(
+    "arms",
+    [
+        {"closed": False},  # ending as far apart as they start
+        {"closed": True, "elbow": "0 1 0"},  # hands meeting, arms not in one plane (a YuMi)
+    ],
+)
+def test_two_arms_apart_or_not_in_one_plane_stay_two_arms(arms: dict[str, Any]) -> None:
+    result = identify_urdf(five_bar_arm(**arms).text())
+    assert result.body is not None
+    assert result.body.count("arm") == 2
+
+
 def wheel_legged(*, closed: bool) -> RobotText:
     """Two five-bar legs drawn open: on each side a front chain (hip, knee) carrying the wheel
     and a passive rear chain (hip, knee) whose end a ``<gazebo>`` joint closes onto the wheel

@@ -250,6 +250,19 @@ def test_fixed_wheel_joints_count_only_while_no_wheel_turns() -> None:
     assert fixed_wheels(tree, {"w": Role("w", "wheel", "named")}) == []
 
 
+def test_fixed_wheels_under_a_body_bolted_to_the_world_make_no_mobile_base() -> None:
+    # A cart's casters under a table the model fixes in place: nothing of it travels.
+    table = RobotText("table", root="world")
+    table.fixed("world", "base_link")
+    table.fixed("base_link", "front_caster_wheel")
+    table.fixed("base_link", "rear_caster_wheel")
+    assert fixed_wheels(tree_of(table), {}) == []
+    hung = RobotText("hung", root="world")
+    hung.joint("float", "floating", "world", "base_link")
+    hung.fixed("base_link", "left_wheel")
+    assert fixed_wheels(tree_of(hung), {}) == ["left_wheel_fixed"]
+
+
 def test_wings_are_wing_links_with_the_control_surfaces_beside_them() -> None:
     tree = tree_of(builders.fixed_wing())
     assert wings(tree, {}) == ["main_wing", "aileron_left", "aileron_right", "horizontal_tail"]
