@@ -50,6 +50,7 @@ from solver.identify.limbs import (
     legs_at_the_pelvis,
     legs_by_place,
     legs_by_reach,
+    legs_through_linkages,
     lone_leg,
     meeting_tips,
     moved_by,
@@ -558,7 +559,8 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
         )
         parts.limbs = legs_by_place(tree, parts.limbs)
         legged = legs_by_reach(tree, legs_at_the_pelvis(tree, parts.limbs))
-    parts.limbs = five_bars(tree, legged)
+    parts.limbs, parts.trunk = legs_through_linkages(tree, legged, parts.trunk)
+    parts.limbs = five_bars(tree, parts.limbs)
     parts.limbs = arms_beside_legs(tree, parts.limbs)
     parts.limbs = drives_beside_legs(tree, parts.limbs)
     parts.limbs = flippers(tree, parts.limbs)

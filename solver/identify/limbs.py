@@ -35,7 +35,9 @@ Where names say nothing, the chains' places and shapes still speak:
   limbs (a delta whose platform moves on slides of its own); two chains an SDF joint of a
   ``<gazebo>`` block closes onto each other are one linkage (:func:`closed_loops`: a
   wheel-legged robot's five-bar leg drawn open); two arm chains of hinges about parallel axes
-  whose ends meet are one five-bar arm (:func:`closed_arms`);
+  whose ends meet are one five-bar arm (:func:`closed_arms`); a short chain ending in a foot,
+  below trunk joints named as a leg's that branch only into other short chains, is the end of
+  one leg, the branches its linkage (:func:`legs_through_linkages`);
 * a short unnamed chain with a slide in it, beside a leg on the hip the body turns, is that
   leg's linear actuator drawn open, no arm (:func:`drives_beside_legs`);
 * one long chain of equal modules whose axes alternate, on a body that has nothing else, is a
@@ -1116,6 +1118,86 @@ def closed_loops(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
         why = f"{limb.why}; closed by a loop joint with {shown(limbs[closed].joints[0])}'s chain"
         merged[kept] = replace(limb, joints=limb.joints + limbs[closed].joints, why=why)
     return [merged.get(i, limb) for i, limb in enumerate(limbs) if i not in into]
+
+
+def legs_through_linkages(
+    tree: JointTree, limbs: list[Limb], trunk: list[str]
+) -> tuple[list[Limb], list[str]]:
+    """A short chain ending in a foot, below trunk joints that branch only into other short
+    chains (a leg's linkage drawn open: a rod, a servo's horn), is the end of one leg: the
+    trunk joints from the body down to it and the chain are that leg, the short branches its
+    linkage (``other``). Only when the trunk joints carry a leg's name, nothing above them
+    is a limb's but the body, and the branch holds no other foot, arm or leg."""
+    if len(limbs) > _MOST_FIVE_BAR_LEGS:
+        return limbs, trunk  # a stranger's thousands of chains are not walked one by one
+    free = set(trunk)
+    owner = {name: i for i, limb in enumerate(limbs) for name in limb.joints}
+    legs: dict[int, Limb] = {}
+    linkage: set[int] = set()
+    for i, limb in enumerate(limbs):
+        if limb.kind not in ("other", "leg") or not _FOOT.search(limb.tip):
+            continue
+        found = _leg_through(tree, limbs, i, owner, free)
+        if found is not None:
+            legs[i], branches, used = found
+            linkage |= branches
+            free -= used
+    if not legs:
+        return limbs, trunk
+    kept = [
+        legs.get(i, replace(limb, kind="other", why="a leg's linkage") if i in linkage else limb)
+        for i, limb in enumerate(limbs)
+    ]
+    return sort_limbs(tree, kept), [name for name in trunk if name in free]
+
+
+def _leg_through(
+    tree: JointTree, limbs: list[Limb], i: int, owner: dict[str, int], trunk: set[str]
+) -> tuple[Limb, set[int], set[str]] | None:
+    """Limb ``i`` (a foot's chain) with the ``trunk`` joints above it as one leg, the limbs
+    branching off them (its linkage), and the trunk joints it takes; None when they are not
+    (see :func:`legs_through_linkages`)."""
+    limb = limbs[i]
+    path = _trunk_to_the_body(tree, limb, trunk)
+    if not path or not any(tree.matches("leg", joint) for joint in path):
+        return None
+    below = _below(tree, path[0])
+    branches = {owner[name] for name in below if name in owner} - {i}
+    if any(
+        limbs[b].kind != "other"
+        or _FOOT.search(limbs[b].tip)
+        or len(limbs[b].joints) > _LINKAGE_JOINTS
+        for b in branches
+    ):
+        return None
+    chains = {name for b in (*branches, i) for name in limbs[b].joints}
+    if below - chains - trunk:
+        return None  # a joint below it is no limb's nor the trunk's: read no further
+    joints = tuple(j.name for j in path) + limb.joints
+    why = f"a leg through its linkage ({len(branches)} short chain(s) beside it), to {limb.tip}"
+    leg = replace(limb, kind="leg", joints=joints, base=path[0].parent, why=why)
+    return leg, branches, below & trunk
+
+
+def _trunk_to_the_body(tree: JointTree, limb: Limb, trunk: set[str]) -> list[Joint]:
+    """The trunk joints above ``limb``'s first, top-down, up to a joint on the body (nothing
+    above it moves); empty when a joint above them moves and is no trunk joint."""
+    path: list[Joint] = []
+    joint = tree.urdf.parent_joint(limb.base)
+    for _ in range(_MOST_LOOP_JOINTS):
+        while joint is not None and not joint.movable:
+            joint = tree.urdf.parent_joint(joint.parent)
+        if joint is None:
+            return path[::-1]
+        if joint.name not in trunk:
+            return []
+        path.append(joint)
+        joint = tree.urdf.parent_joint(joint.parent)
+    return []
+
+
+# A leg's linkage drawn open: chains of at most this many joints beside it (a rod, a horn).
+_LINKAGE_JOINTS = 2
 
 
 def closed_arms(tree: JointTree, limbs: list[Limb]) -> list[Limb]:

@@ -1578,6 +1578,38 @@ def test_two_arms_apart_or_not_in_one_plane_stay_two_arms(arms: dict[str, Any]) 
     assert result.body.count("arm") == 2
 
 
+def branching_biped(end: str = "foot") -> RobotText:
+    """Two legs drawn open where their linkages branch off: hip yaw, hip roll and thigh, then a
+    rod beside the knee and shin, then a servo's two-joint horn beside the last joint, whose
+    link is named ``end``."""
+    robot = RobotText("branching")
+    for side in ("l", "r"):
+        thigh = robot.chain("base_link", [f"{side}_hip_yaw", f"{side}_hip_roll", f"{side}_thigh"])
+        shin = robot.chain(thigh, [f"{side}_knee", f"{side}_shin"])
+        robot.chain(shin, [f"{side}_{end}"])
+        robot.chain(shin, [f"{side}_servo", f"{side}_horn"])
+        robot.chain(thigh, [f"{side}_rod"])
+    return robot
+
+
+def test_a_leg_whose_linkages_branch_off_is_one_leg_down_to_its_foot() -> None:
+    result = identify_urdf(branching_biped().text())
+    assert result.structure == "Biped"
+    assert result.body is not None
+    legs = [limb.joints for limb in result.body.limbs if limb.kind == "leg"]
+    assert legs == [
+        ("l_hip_yaw", "l_hip_roll", "l_thigh", "l_knee", "l_shin", "l_foot"),
+        ("r_hip_yaw", "r_hip_roll", "r_thigh", "r_knee", "r_shin", "r_foot"),
+    ]
+    assert not result.body.trunk
+
+
+def test_branches_that_end_in_no_foot_are_no_leg_through_a_linkage() -> None:
+    result = identify_urdf(branching_biped(end="plate").text())
+    assert result.body is not None
+    assert not any("linkage" in limb.why for limb in result.body.limbs)
+
+
 def wheel_legged(*, closed: bool) -> RobotText:
     """Two five-bar legs drawn open: on each side a front chain (hip, knee) carrying the wheel
     and a passive rear chain (hip, knee) whose end a ``<gazebo>`` joint closes onto the wheel
