@@ -66,7 +66,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, replace
 from itertools import islice, pairwise
 
-from solver.identify.pose import distance, parallel, perpendicular, spread
+from solver.identify.pose import Vector, distance, parallel, perpendicular, spread
 from solver.identify.readers.urdf import Joint, Urdf
 from solver.identify.roles import Role
 from solver.identify.tree import JointTree
@@ -826,10 +826,11 @@ def parallel_robot(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
 
 
 def _bolted_legs(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
-    """Exactly three chains named as legs, each starting on the root of a description bolted
-    to the world (its root is ``world``, no moving joint between): a delta's three arms, which
-    its makers call legs, whatever other chains the model adds (a platform moved on a chain of
-    its own). No walker stands on three legs bolted to the world."""
+    """Exactly three chains read as legs (by their names or where they hang), each starting on
+    the root of a description bolted to the world (its root is ``world``, no moving joint
+    between): a delta's three arms, which its makers call legs, whatever other chains the model
+    adds (a platform moved on a chain of its own). No walker stands on three legs bolted to the
+    world."""
     legs = [limb for limb in limbs if limb.kind == "leg"]
     if len(legs) != _DELTA_LEGS or not _world_root(tree):
         return []
@@ -1162,6 +1163,8 @@ def _leg_through(
     if not path or not any(tree.matches("leg", joint) for joint in path):
         return None
     below = _below(tree, path[0])
+    if len(below) > _MOST_LOOP_JOINTS:
+        return None  # more than the walk reads: what it does not see is not taken as absent
     branches = {owner[name] for name in below if name in owner} - {i}
     if any(
         limbs[b].kind != "other"
@@ -1170,13 +1173,17 @@ def _leg_through(
         for b in branches
     ):
         return None
+    on_path = {j.name for j in path}
     chains = {name for b in (*branches, i) for name in limbs[b].joints}
-    if below - chains - trunk:
-        return None  # a joint below it is no limb's nor the trunk's: read no further
+    moving = {name for name in below if (j := tree.urdf.joint(name)) is not None and j.movable}
+    # Every moving joint below is the leg's or a linkage chain's: no other trunk joint (a rod
+    # carrying two chains), nor one of no limb (a sole's frame is fixed, and is passed by).
+    if moving - chains - on_path:
+        return None
     joints = tuple(j.name for j in path) + limb.joints
     why = f"a leg through its linkage ({len(branches)} short chain(s) beside it), to {limb.tip}"
     leg = replace(limb, kind="leg", joints=joints, base=path[0].parent, why=why)
-    return leg, branches, below & trunk
+    return leg, branches, on_path
 
 
 def _trunk_to_the_body(tree: JointTree, limb: Limb, trunk: set[str]) -> list[Joint]:
@@ -1184,14 +1191,13 @@ def _trunk_to_the_body(tree: JointTree, limb: Limb, trunk: set[str]) -> list[Joi
     above it moves); empty when a joint above them moves and is no trunk joint."""
     path: list[Joint] = []
     joint = tree.urdf.parent_joint(limb.base)
-    for _ in range(_MOST_LOOP_JOINTS):
-        while joint is not None and not joint.movable:
-            joint = tree.urdf.parent_joint(joint.parent)
+    for _ in range(_MOST_LOOP_JOINTS):  # every joint walked, fixed ones too
         if joint is None:
             return path[::-1]
-        if joint.name not in trunk:
-            return []
-        path.append(joint)
+        if joint.movable:
+            if joint.name not in trunk:
+                return []
+            path.append(joint)
         joint = tree.urdf.parent_joint(joint.parent)
     return []
 
@@ -1204,18 +1210,22 @@ def closed_arms(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     """Two arm chains that start apart on one body and end at one place (closer than
     :data:`_ARM_CLOSED` of the gap between their starts) are one arm closed by a linkage (a
     five-bar arm written as two open chains, the loop a URDF cannot close): merged, as
-    :func:`five_bars` merges a leg's, when both turn in one plane (:func:`_arms_meet`): a
-    dual-arm robot's hands may meet in the zero pose, but its arms are not planar."""
+    :func:`five_bars` merges a leg's, when both turn in one plane (every joint of both a hinge
+    about parallel axes: a five-bar linkage is planar; a dual-arm robot's hands may meet in the
+    zero pose, but its arms are not planar)."""
     arms = [limb for limb in limbs if limb.kind == "arm"]
     if not 2 <= len(arms) <= _MOST_FIVE_BAR_LEGS:
         return limbs  # a stranger's thousands of chains are not paired one by one
     known: dict[str, str | None] = {}
+    # Each arm read once: the body it hangs from, where it starts and ends, its hinges' axis.
+    planar = {id(arm): found for arm in arms if (found := _planar_arm(tree, arm, known))}
     merged: dict[int, Limb] = {}
     used: set[int] = set()
     why = "two chains of one five-bar arm (they start apart on one body, their ends meet)"
     for index, one in enumerate(arms):
         for other in arms[index + 1 :]:
-            if {id(one), id(other)} & used or not _arms_meet(tree, one, other, known):
+            a, b = planar.get(id(one)), planar.get(id(other))
+            if {id(one), id(other)} & used or a is None or b is None or not _meet(a, b):
                 continue
             merged[id(one)] = replace(one, joints=one.joints + other.joints, why=why)
             used.update((id(one), id(other)))
@@ -1227,23 +1237,35 @@ def closed_arms(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     return sort_limbs(tree, kept)
 
 
-def _arms_meet(tree: JointTree, one: Limb, other: Limb, known: dict[str, str | None]) -> bool:
-    """The two chains hang from one body, turn in one plane (every joint of both a hinge about
-    parallel axes: a five-bar linkage is planar; two arms of a dual-arm robot whose hands meet
-    in the zero pose are not) and end closer than :data:`_ARM_CLOSED` of the gap between
-    where they start."""
-    if moved_by(tree.urdf, one.base, known) != moved_by(tree.urdf, other.base, known):
-        return False
-    joints = [tree.urdf.joint(name) for name in (*one.joints, *other.joints)]
+# An arm read once for :func:`closed_arms`: the body it hangs from, its start, its tip, its axis.
+_Planar = tuple[str | None, Vector, Vector, Vector]
+
+
+def _planar_arm(tree: JointTree, arm: Limb, known: dict[str, str | None]) -> _Planar | None:
+    """The body an arm hangs from, where it starts and ends and its hinges' one axis; None when
+    a joint slides or turns about another axis."""
+    joints = [tree.urdf.joint(name) for name in arm.joints]
     hinges = [j for j in joints if j is not None and j.type in ("revolute", "continuous")]
-    if len(hinges) != len(joints):
-        return False
+    if not hinges or len(hinges) != len(joints):
+        return None
     axis = tree.poses.axis(hinges[0])
     if not all(parallel(axis, tree.poses.axis(j)) for j in hinges[1:]):
-        return False
-    gap = distance(_start(tree, one), _start(tree, other))
-    ends = distance(tree.poses.place(one.tip), tree.poses.place(other.tip))
-    return gap > 0 and ends < _ARM_CLOSED * gap
+        return None
+    body = moved_by(tree.urdf, arm.base, known)
+    return body, _start(tree, arm), tree.poses.place(arm.tip), axis
+
+
+def _meet(one: _Planar, other: _Planar) -> bool:
+    """Two planar arms on one body, about parallel axes, ending closer than
+    :data:`_ARM_CLOSED` of the gap between where they start."""
+    body, start, tip, axis = one
+    gap = distance(start, other[1])
+    return (
+        body == other[0]
+        and parallel(axis, other[3])
+        and gap > 0
+        and distance(tip, other[2]) < _ARM_CLOSED * gap
+    )
 
 
 # Two arm chains' ends this close (a share of their starts' gap) are one place: one loop.

@@ -153,9 +153,17 @@ class RoleReader:
         self.named_submersible = self._name_says(_SUBMERSIBLE_NAME)
         self.named_airship = self._name_says(_AIRSHIP_NAME)
         # A craft its thrusters fly in air or space (a reaction wheel, air thrusters), nothing
-        # of water beside them: the thrusters do not put it in water.
-        self.spaceborne = bool(self.plugins_of("space")) and not (
-            self.plugins_of("marine") or self.plugins_of("underwater")
+        # of water beside them (no water plugin, no name of a boat or a submersible): the
+        # thrusters do not put it in water.
+        self.spaceborne = (
+            bool(self.plugins_of("space"))
+            and bool(self.plugins_of("thruster") or self.fixed_thrusters)
+            and not (
+                self.plugins_of("marine")
+                or self.plugins_of("underwater")
+                or self.named_vessel
+                or self.named_submersible
+            )
         )
         self.marine = not self.spaceborne and (
             bool(self.plugins_of("marine") or self.plugins_of("thruster") or self.fixed_thrusters)

@@ -137,21 +137,21 @@ def fixed_wheels(tree: JointTree, roles: dict[str, Role]) -> list[str]:
     casters under a table the model fixes in place)."""
     if with_role(roles, "wheel"):
         return []
+    bolted = _bolted(tree)
     return [
         j.name
         for j in tree.urdf.joints
-        if j.type == "fixed" and tree.matches("wheel", j) and not _bolted(tree, j.parent)
+        if j.type == "fixed" and tree.matches("wheel", j) and j.parent not in bolted
     ]
 
 
-def _bolted(tree: JointTree, link: str) -> bool:
-    """``link`` is fixed to a root named ``world``: no joint between them moves."""
-    if tree.urdf.root.lower() != "world":
-        return False
-    joint = tree.urdf.parent_joint(link)
-    while joint is not None and not joint.movable:
-        joint = tree.urdf.parent_joint(joint.parent)
-    return joint is None
+def _bolted(tree: JointTree) -> set[str]:
+    """The links fixed to a root named ``world`` (the root too), found in one walk; none when
+    the root is named otherwise."""
+    root = tree.urdf.root
+    if root.lower() != "world":
+        return set()
+    return {root, *tree.urdf.fixed_below(root)}
 
 
 def fixed_rotors(tree: JointTree) -> list[str]:

@@ -1433,13 +1433,13 @@ def test_two_legs_hanging_side_by_side_across_x_are_a_biped_drawn_facing_y() -> 
     assert identify_urdf(robot.text()).structure == "Biped"
 
 
-def delta(reach: float) -> str:
-    """A base with three two-joint chains named as legs, 120 degrees apart 0.2 m out, each
-    ending ``reach`` of the way back in toward the middle, 0.3 m below (``reach`` 1: all three
-    tips at the middle, a delta holding one platform)."""
-    links = ["base_link"]
-    joints = []
-    for i, angle in enumerate((0.0, 2.0944, 4.1888)):
+def delta_chains(legs: int, reach: float) -> tuple[list[str], list[str]]:
+    """The links and joints of ``legs`` two-joint chains named as legs on ``base_link``, evenly
+    around 0.2 m out, each ending ``reach`` of the way back in toward the middle, 0.3 m below
+    (``reach`` 1: all tips at the middle, a delta holding one platform)."""
+    links, joints = [], []
+    for i in range(legs):
+        angle = 2 * math.pi * i / legs
         x, y = 0.2 * math.cos(angle), 0.2 * math.sin(angle)
         back = (-x * reach, -y * reach)
         links += [f"upper_leg_{i}", f"lower_leg_{i}"]
@@ -1458,7 +1458,13 @@ def delta(reach: float) -> str:
                 "0 1 0",
             )
         )
-    body = "".join(f'<link name="{link}"/>' for link in links) + "".join(joints)
+    return links, joints
+
+
+def delta(reach: float) -> str:
+    """A base with three of :func:`delta_chains`, their tips ``reach`` of the way in."""
+    links, joints = delta_chains(3, reach)
+    body = "".join(f'<link name="{link}"/>' for link in ["base_link", *links]) + "".join(joints)
     return f'<robot name="parallel">{body}</robot>'
 
 
@@ -1479,22 +1485,10 @@ def bolted_delta(*, legs: int = 3, root: str = "world", platform: bool = True) -
     """:func:`delta`'s chains standing apart (``legs`` of them, evenly around), on a base fixed
     to ``root``; with ``platform``, the platform a simulator moves on a chain of three slides
     from the root (the loop a URDF cannot close)."""
-    links = ["base_link"]
+    chains, legs_joints = delta_chains(legs, reach=0.0)
+    links = ["base_link", *chains]
     joints = [builders.joint_xml("bolt", "fixed", root, "base_link", "0 0 1", "1 0 0")]
-    for i in range(legs):
-        angle = 2 * math.pi * i / legs
-        x, y = 0.2 * math.cos(angle), 0.2 * math.sin(angle)
-        links += [f"upper_leg_{i}", f"lower_leg_{i}"]
-        joints.append(
-            builders.joint_xml(
-                f"motor_{i}", "revolute", "base_link", f"upper_leg_{i}", f"{x} {y} 0", "0 1 0"
-            )
-        )
-        joints.append(
-            builders.joint_xml(
-                f"elbow_{i}", "revolute", f"upper_leg_{i}", f"lower_leg_{i}", "0 0 -0.3", "0 1 0"
-            )
-        )
+    joints += legs_joints
     if platform:
         parent = root
         for axis, vector in (("x", "1 0 0"), ("y", "0 1 0"), ("z", "0 0 1")):
@@ -1602,6 +1596,28 @@ def test_a_leg_whose_linkages_branch_off_is_one_leg_down_to_its_foot() -> None:
         ("r_hip_yaw", "r_hip_roll", "r_thigh", "r_knee", "r_shin", "r_foot"),
     ]
     assert not result.body.trunk
+
+
+def test_a_frame_fixed_under_the_foot_keeps_the_leg_through_its_linkage() -> None:
+    robot = branching_biped()
+    for side in ("l", "r"):
+        robot.fixed(f"{side}_foot_link", f"{side}_sole_frame")
+    result = identify_urdf(robot.text())
+    assert result.structure == "Biped"
+
+
+def test_a_trunk_joint_beside_the_leg_leaves_every_joint_where_it_was() -> None:
+    # A rod off the thigh carrying two chains: no leg through a linkage, and no joint lost.
+    robot = branching_biped()
+    for side in ("l", "r"):
+        rod = robot.chain(f"{side}_thigh_link", [f"{side}_rocker"])
+        robot.chain(rod, [f"{side}_pin_a", f"{side}_pin_b"])
+        robot.chain(rod, [f"{side}_pin_c", f"{side}_pin_d"])
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert not any("linkage" in limb.why for limb in result.body.limbs)
+    kept = {name for limb in result.body.limbs for name in limb.joints} | set(result.body.trunk)
+    assert {"l_rocker", "r_rocker", "l_hip_yaw", "r_foot"} <= kept
 
 
 def test_branches_that_end_in_no_foot_are_no_leg_through_a_linkage() -> None:

@@ -884,7 +884,19 @@ def test_thrusters_beside_a_reaction_wheel_or_air_thrusters_fly_the_craft(
     assert [c.motion_control for c in result.motion_controls] == ["Flight"]
 
 
-def test_thrusters_with_a_reaction_wheel_and_a_water_plugin_stay_in_water() -> None:
+def test_thrusters_with_a_reaction_wheel_and_a_water_plugin_or_name_stay_in_water() -> None:
     craft = spacecraft(("wheel", "libreaction_wheel.so"), ("water", "libunderwater_object.so"))
     assert identify_urdf(craft.text()).structure == "Underwater Vehicle"
     assert identify_urdf(spacecraft().text()).structure == "Underwater Vehicle"
+    # A gyro stabiliser on a craft named for the water does not lift it out.
+    auv = spacecraft(("gyro", "libreaction_wheel.so"))
+    auv.name = "auv"
+    assert identify_urdf(auv.text()).structure == "Underwater Vehicle"
+
+
+def test_a_reaction_wheel_with_no_thruster_says_nothing_of_flight() -> None:
+    rover = builders.ugv()
+    rover.add(builders.model_plugin("wheel", "libreaction_wheel.so"))
+    result = identify_urdf(rover.text())
+    assert result.structure == "UGV"
+    assert not any("air or space" in line for line in result.evidence)
