@@ -65,6 +65,7 @@ from collections import Counter, deque
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 from itertools import islice, pairwise
+from typing import NamedTuple
 
 from solver.identify.pose import Vector, distance, parallel, perpendicular, spread
 from solver.identify.readers.urdf import Joint, Urdf
@@ -832,9 +833,8 @@ def _bolted_legs(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     adds (a platform moved on a chain of its own). No walker stands on three legs bolted to the
     world."""
     legs = [limb for limb in limbs if limb.kind == "leg"]
-    if len(legs) != _DELTA_LEGS or not _world_root(tree):
-        return []
-    return legs if all(_on_the_root(tree, limb.base) for limb in legs) else []
+    bolted = len(legs) == _DELTA_LEGS and all(limb.base in tree.bolted for limb in legs)
+    return legs if bolted else []
 
 
 # A parallel robot's chains: a delta's three, a Stewart platform's six.
@@ -1237,8 +1237,13 @@ def closed_arms(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     return sort_limbs(tree, kept)
 
 
-# An arm read once for :func:`closed_arms`: the body it hangs from, its start, its tip, its axis.
-_Planar = tuple[str | None, Vector, Vector, Vector]
+class _Planar(NamedTuple):
+    """An arm read once for :func:`closed_arms`."""
+
+    body: str | None  # the joint that moves the link it hangs from (None: the root's body)
+    start: Vector
+    tip: Vector
+    axis: Vector  # its hinges' one axis
 
 
 def _planar_arm(tree: JointTree, arm: Limb, known: dict[str, str | None]) -> _Planar | None:
@@ -1252,19 +1257,18 @@ def _planar_arm(tree: JointTree, arm: Limb, known: dict[str, str | None]) -> _Pl
     if not all(parallel(axis, tree.poses.axis(j)) for j in hinges[1:]):
         return None
     body = moved_by(tree.urdf, arm.base, known)
-    return body, _start(tree, arm), tree.poses.place(arm.tip), axis
+    return _Planar(body, _start(tree, arm), tree.poses.place(arm.tip), axis)
 
 
 def _meet(one: _Planar, other: _Planar) -> bool:
     """Two planar arms on one body, about parallel axes, ending closer than
     :data:`_ARM_CLOSED` of the gap between where they start."""
-    body, start, tip, axis = one
-    gap = distance(start, other[1])
+    gap = distance(one.start, other.start)
     return (
-        body == other[0]
-        and parallel(axis, other[3])
+        one.body == other.body
+        and parallel(one.axis, other.axis)
         and gap > 0
-        and distance(tip, other[2]) < _ARM_CLOSED * gap
+        and distance(one.tip, other.tip) < _ARM_CLOSED * gap
     )
 
 

@@ -57,6 +57,15 @@ class JointTree:
         return Poses(self.urdf)
 
     @cached_property
+    def bolted(self) -> frozenset[str]:
+        """The links fixed to a root named ``world`` (the root too: a body bolted in place, no
+        joint between them moves); none when the root is named otherwise."""
+        root = self.urdf.root
+        if root.lower() != "world":
+            return frozenset()
+        return frozenset((root, *self.urdf.fixed_below(root)))
+
+    @cached_property
     def sensor_links(self) -> frozenset[str]:
         """Links that carry a sensor a pan/tilt unit points: cameras, lidars, range finders."""
         return frozenset(

@@ -137,21 +137,11 @@ def fixed_wheels(tree: JointTree, roles: dict[str, Role]) -> list[str]:
     casters under a table the model fixes in place)."""
     if with_role(roles, "wheel"):
         return []
-    bolted = _bolted(tree)
     return [
         j.name
         for j in tree.urdf.joints
-        if j.type == "fixed" and tree.matches("wheel", j) and j.parent not in bolted
+        if j.type == "fixed" and tree.matches("wheel", j) and j.parent not in tree.bolted
     ]
-
-
-def _bolted(tree: JointTree) -> set[str]:
-    """The links fixed to a root named ``world`` (the root too), found in one walk; none when
-    the root is named otherwise."""
-    root = tree.urdf.root
-    if root.lower() != "world":
-        return set()
-    return {root, *tree.urdf.fixed_below(root)}
 
 
 def fixed_rotors(tree: JointTree) -> list[str]:

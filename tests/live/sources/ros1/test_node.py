@@ -8,6 +8,8 @@ import select
 import socket
 import time
 import xmlrpc.client
+from collections.abc import Iterator
+from contextlib import contextmanager
 from typing import Any
 
 import pytest
@@ -33,6 +35,18 @@ class Pushes:
 
     def shutdown(self, message: str) -> None:
         self.shutdowns.append(message)
+
+
+@contextmanager
+def lone_node() -> Iterator[NodeServer]:
+    """A started node whose master is not asked (its callers are the test's), closed after."""
+    pushes = Pushes()
+    server = NodeServer("127.0.0.1", "http://127.0.0.1:11311/", pushes.update, pushes.shutdown)
+    server.start()
+    try:
+        yield server
+    finally:
+        server.close()
 
 
 def test_the_master_says_which_subscribed_parameter_changed(
@@ -72,28 +86,20 @@ def test_the_node_answers_what_ros_tools_ask_and_shuts_down_on_request(master: R
 def test_the_node_echoes_nothing_a_caller_sends_back_longer_than_a_line() -> None:
     # A reply as long as the request would keep a thread writing to a caller that reads it
     # slowly: the topic a caller asks for comes back cut.
-    pushes = Pushes()
-    server = NodeServer("127.0.0.1", "http://127.0.0.1:11311/", pushes.update, pushes.shutdown)
-    server.start()
-    try:
+    with lone_node() as server:
         refused: Any = xmlrpc.client.ServerProxy(server.uri).requestTopic(
             "/rosnode", "/x" * 500_000, [["TCPROS"]]
         )
         assert refused[0] == -1
         assert len(refused[1]) < 200
         assert "cut from 1,000,000 characters" in refused[1]
-    finally:
-        server.close()
 
 
 def test_an_encoded_body_is_refused_unread_and_a_forged_fault_is_not_echoed_whole() -> None:
     # The standard handler inflates a gzip body (20 MB from a small one) and names any other
     # encoding in its error, however long (a folded header of megabytes); a methodResponse
     # carrying a fault came back with the caller's whole text.
-    pushes = Pushes()
-    server = NodeServer("127.0.0.1", "http://127.0.0.1:11311/", pushes.update, pushes.shutdown)
-    server.start()
-    try:
+    with lone_node() as server:
         call = b"<?xml version='1.0'?><methodCall><methodName>getPid</methodName></methodCall>"
         for encoding in ("gzip", "x" * 60_000):
             head = f"POST / HTTP/1.1\r\nContent-Length: {len(call)}\r\nContent-Encoding: {encoding}"
@@ -105,8 +111,6 @@ def test_an_encoded_body_is_refused_unread_and_a_forged_fault_is_not_echoed_whol
         assert b"<name>faultCode</name>" in answer
         assert len(answer) < 2_000
         assert xmlrpc.client.ServerProxy(server.uri).getPid("/rosnode") == [1, "", os.getpid()]
-    finally:
-        server.close()
 
 
 def test_a_node_cannot_listen_on_an_address_of_another_machine() -> None:
