@@ -730,6 +730,12 @@ def _legs_why(tree: JointTree, base: str, group: list[Limb], *, wheeled: bool) -
             "one of six or more alike chains around one link, each reaching out flat from it"
             " (a walker's legs at rest, by place)"
         )
+    if len(group) >= _WHOLE_TURN_LEGS and _spreads_from_hips(tree, group):
+        return (
+            "one of six or more alike chains starting on one plane around their middle, each"
+            " reaching out from it and down from that plane (a walker's legs, its body drawn"
+            " tilted in the file: legs by place)"
+        )
     if _at_corners(tree, base, group, wheeled=wheeled):
         return (
             "one of alike chains starting in mirrored pairs at the corners of one link (a"
@@ -1012,6 +1018,84 @@ def _spreads(tree: JointTree, base: str, group: list[Limb]) -> bool:
         if reach == 0 or out < _LEG_SPREAD * reach or end[2] - start[2] > _LEG_DROP * reach:
             return False
     return _both_sides(centre, placed)
+
+
+def _spreads_from_hips(tree: JointTree, group: list[Limb]) -> bool:
+    """:func:`_spreads` with "down" read from the chains themselves, not the file's z: the
+    chains start on one plane around their middle (a walker's hips; a CAD export may draw the
+    body tilted), and each ends farther out from that middle along the plane than it starts, by
+    most of its reach, and on the side of the plane the chains reach to, not above it by more
+    than a leg's drop share (the feet below the hips, whichever way the file turns them)."""
+    placed = chain_ends(tree, group)
+    if placed is None or len(placed) > _MOST_FIVE_BAR_LEGS:
+        return False  # a stranger's thousands of chains are not paired hip by hip
+    starts = [start for start, _ in placed]
+    middle = _centroid(starts)
+    normal = _plane(starts, middle)
+    if normal is None:
+        return False
+    if sum(_dot(_minus(end, start), normal) for start, end in placed) > 0:
+        normal = (-normal[0], -normal[1], -normal[2])  # "up": away from where the chains reach
+    for start, end in placed:
+        reach = distance(start, end)
+        out = _along_plane(end, middle, normal) - _along_plane(start, middle, normal)
+        rise = _dot(_minus(end, start), normal)
+        # Each test is written so that a NaN (a stranger's overflowing numbers) fails it.
+        if not (reach > 0 and out >= _LEG_SPREAD * reach and -rise >= -_LEG_DROP * reach):
+            return False
+    return True
+
+
+def _centroid(places: list[Place]) -> Place:
+    count = len(places)
+    return (
+        sum(p[0] for p in places) / count,
+        sum(p[1] for p in places) / count,
+        sum(p[2] for p in places) / count,
+    )
+
+
+def _minus(one: Place, other: Place) -> Place:
+    return (one[0] - other[0], one[1] - other[1], one[2] - other[2])
+
+
+def _dot(one: Place, other: Place) -> float:
+    return one[0] * other[0] + one[1] * other[1] + one[2] * other[2]
+
+
+def _cross(one: Place, other: Place) -> Place:
+    return (
+        one[1] * other[2] - one[2] * other[1],
+        one[2] * other[0] - one[0] * other[2],
+        one[0] * other[1] - one[1] * other[0],
+    )
+
+
+def _plane(places: list[Place], middle: Place) -> Place | None:
+    """The unit normal of the plane ``places`` lie on around ``middle`` (spread both ways
+    along it, none off it by more than :data:`_ON_CIRCLE` of their radius), else ``None``."""
+    offsets = [_minus(place, middle) for place in places]
+    radius = max(math.sqrt(_dot(offset, offset)) for offset in offsets)
+    if not radius >= _SAME_PLACE:
+        return None
+    widest = max(
+        (_cross(one, other) for index, one in enumerate(offsets) for other in offsets[index + 1 :]),
+        key=lambda normal: _dot(normal, normal),
+    )
+    size = math.sqrt(_dot(widest, widest))
+    if not size >= _MIRRORED * radius * radius:
+        return None  # the places lie along one line: no plane is theirs
+    normal = (widest[0] / size, widest[1] / size, widest[2] / size)
+    if not all(abs(_dot(offset, normal)) <= _ON_CIRCLE * radius for offset in offsets):
+        return None
+    return normal
+
+
+def _along_plane(place: Place, middle: Place, normal: Place) -> float:
+    """How far ``place`` lies from ``middle`` along the plane of ``normal``."""
+    offset = _minus(place, middle)
+    across = _dot(offset, normal)
+    return math.sqrt(max(0.0, _dot(offset, offset) - across * across))
 
 
 def _stands(tree: JointTree, base: str, group: list[Limb]) -> bool:

@@ -682,6 +682,44 @@ def test_four_chains_reaching_out_flat_are_not_legs_by_that_rule() -> None:
     assert all("corners" in limb.why and "flat" not in limb.why for limb in legs)
 
 
+def tilted_hexapod(*, reach: float = 1.0, hips: int = 6) -> RobotText:
+    """Six unnamed three-joint chains on a hexagon of hips around a body drawn turned on its
+    root (``rpy 0.7 0.5 0.3``, as a CAD export may draw it), each reaching out from the body's
+    middle and down in the body's frame (``reach`` -1: in towards the middle); ``hips`` 2: on
+    two places only, three chains at each."""
+    robot = RobotText("r")
+    body = robot.joint("mount", "fixed", robot.root, "body", '<origin rpy="0.7 0.5 0.3"/>')
+    for i in range(6):
+        angle = 2 * math.pi * (i if hips == 6 else i % 2 * 3) / 6
+        x, y = math.cos(angle), math.sin(angle)
+        placed_chain(
+            robot,
+            body,
+            f"k{i}_",
+            start=f"{0.1 * x:.4f} {0.1 * y:.4f} 0",
+            steps=[
+                f"{0.05 * reach * x:.4f} {0.05 * reach * y:.4f} 0",
+                f"{0.1 * reach * x:.4f} {0.1 * reach * y:.4f} -0.06",
+                "0 0 -0.1",
+            ],
+        )
+    return robot
+
+
+def test_six_chains_reaching_out_and_down_from_a_tilted_body_are_a_hexapods_legs() -> None:
+    result = identify_urdf(tilted_hexapod().text())
+    assert result.structure == "Hexapod"
+    assert result.body is not None
+    assert "tilted" in result.body.limbs[0].why
+
+
+def test_six_chains_reaching_in_or_from_two_places_on_a_tilted_body_are_no_legs() -> None:
+    # Reaching in towards their middle (a gripper's fingers closing), or starting at two
+    # places only (no plane of hips around a middle): no walker's legs by that rule.
+    for robot in (tilted_hexapod(reach=-1.0), tilted_hexapod(hips=2)):
+        assert identify_urdf(robot.text()).structure != "Hexapod"
+
+
 def whole_turn_legs(legs: int = 6, *, kind: str = "continuous", axis: str = "0 1 0") -> RobotText:
     """A body with ``legs`` one-joint chains, half on each side, in rows along it (RHex-like)."""
     robot = RobotText("six_spokes", root="body")
