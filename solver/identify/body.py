@@ -47,6 +47,7 @@ from solver.identify.limbs import (
     find_limbs,
     five_bars,
     flippers,
+    gripping_leg,
     legs_at_the_pelvis,
     legs_by_place,
     legs_by_reach,
@@ -575,7 +576,7 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
     parts.limbs = wrist(tree, parts.limbs, len(finger_tips(tree, parts.grippers)))
     moves = flying or grounded(tree, parts.roles)
     parts.limbs = bolted_chain(tree, parts.limbs, moves)
-    parts.limbs = lone_leg(tree, parts.limbs, moves)
+    parts.limbs = gripping_leg(lone_leg(tree, parts.limbs, moves))
 
 
 def _trunks(tree: JointTree, limbs: list[Limb]) -> frozenset[str | None]:

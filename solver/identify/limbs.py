@@ -83,6 +83,7 @@ __all__ = [
     "find_limbs",
     "five_bars",
     "flippers",
+    "gripping_leg",
     "legs_at_the_pelvis",
     "legs_by_place",
     "legs_by_reach",
@@ -1702,6 +1703,18 @@ def lone_leg(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
         return limbs
     why = f"the body's only limb, a leg-named chain of {len(limb.joints)} joint(s) on its root"
     return [replace(limb, kind="arm", why=why)]
+
+
+def gripping_leg(limbs: list[Limb]) -> list[Limb]:
+    """The body's only leg-named chain, ending in a gripper, is an arm: one leg walks nowhere,
+    and a leg that grips holds nothing up (a rover's arm whose joints are numbered as a leg's
+    segments, ``leg1_2_joint``). Two or more such legs stay legs (a climber grips with its
+    feet)."""
+    legs = [limb for limb in limbs if limb.kind == "leg"]
+    if len(legs) != 1 or not legs[0].gripper:
+        return limbs
+    why = f"the body's only leg-named chain, of {len(legs[0].joints)} joint(s), ending in a gripper"
+    return [replace(limb, kind="arm", why=why) if limb is legs[0] else limb for limb in limbs]
 
 
 def bolted_chain(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:

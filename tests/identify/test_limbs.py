@@ -638,6 +638,32 @@ def test_a_leg_alone_on_a_still_body_is_an_arm_with_leg_names() -> None:
     assert identify_urdf(builders.biped().text()).structure == "Biped"
 
 
+def gripping_legs(legs: int = 1, *, wheels: int = 4) -> RobotText:
+    """``legs`` four-joint chains whose joints are numbered as a leg's segments
+    (``leg1_2_joint``), each ending in a claw of two jaws, on a base with ``wheels``."""
+    robot = RobotText("rover")
+    if wheels:
+        builders.wheeled_base(robot, wheels)
+    for n in range(legs):
+        tip = robot.chain(robot.root, [f"leg{n}_{i}_joint" for i in range(4)])
+        robot.chain(tip, [f"claw{n}_top_joint"])
+        robot.chain(tip, [f"claw{n}_bottom_joint"])
+    return robot
+
+
+def test_the_only_leg_named_chain_ending_in_a_gripper_on_a_rover_is_its_arm() -> None:
+    result = identify_urdf(gripping_legs().text())
+    assert result.structure == "Mobile Manipulator"
+    assert result.body is not None
+    arms = [limb for limb in result.body.limbs if limb.kind == "arm"]
+    assert [len(limb.joints) for limb in arms] == [4]
+    assert "ending in a gripper" in arms[0].why
+    # Two legs that grip (a climber's feet) stay legs.
+    climber = identify_urdf(gripping_legs(2, wheels=0).text()).body
+    assert climber is not None
+    assert [limb.kind for limb in climber.limbs if len(limb.joints) == 4] == ["leg", "leg"]
+
+
 def stretched_hexapod(legs: int = 6) -> RobotText:
     """A hexapod drawn with its legs stretched out flat (numbered joints, feet named
     ``end_effector_N``): each leg hangs from a bracket link fixed to the body, its three joints
