@@ -96,6 +96,8 @@ __all__ = [
 ]
 
 # A spherical (ball) joint is outside the URDF spec but real files have it: a shoulder, a hip.
+# Hands side by side on their wrists, at most (a pair on fixed forearms).
+_HANDS = 2
 _LIMB_JOINTS = ("revolute", "continuous", "prismatic", "spherical")
 _TURNING = ("revolute", "continuous")
 # A wrist turns a hand about up to three axes, its joints named so.
@@ -1676,20 +1678,29 @@ def _alike(spacings: list[float]) -> bool:
 
 
 def wrist(tree: JointTree, limbs: list[Limb], fingers: int) -> list[Limb]:
-    """A short chain from the root ending in a whole hand (``fingers`` of them, at least the
-    profile's ``hand_min_fingers``), the body's only limb: the hand's wrist, not an arm. Short
-    is fewer joints than an arm's, or up to three joints all named as a wrist's (a pitch, a
-    yaw and a pitch under the palm)."""
-    if len(limbs) != 1 or fingers < tree.profile.limb("hand_min_fingers"):
+    """Short chains from the root each ending in a whole hand (``fingers`` in all, at least
+    the profile's ``hand_min_fingers`` a hand), the body's only limbs: the hands' wrists, not
+    arms (one hand on its forearm; two side by side, a pair of hands on fixed forearms). Short
+    is fewer joints than an arm's, or up to three joints all named as a wrist's (a pitch, a yaw
+    and a pitch under the palm)."""
+    if (
+        not limbs
+        or len(limbs) > _HANDS
+        or fingers < len(limbs) * tree.profile.limb("hand_min_fingers")
+    ):
         return limbs
-    limb = limbs[0]
+    if not all(_wrist(tree, limb) for limb in limbs):
+        return limbs
+    why = f"joint(s) from the root carrying a hand ({fingers} fingers on {len(limbs)} hand(s))"
+    return [replace(limb, kind="wrist", why=f"{len(limb.joints)} {why}") for limb in limbs]
+
+
+def _wrist(tree: JointTree, limb: Limb) -> bool:
+    """``limb`` is a short arm from the root ending in a gripper (:func:`wrist`)."""
     short = len(limb.joints) < tree.profile.limb("arm_min_joints") or (
         len(limb.joints) <= _WRIST_JOINTS and all(_WRIST.search(name) for name in limb.joints)
     )
-    if limb.kind != "arm" or not limb.gripper or not _on_the_root(tree, limb.base) or not short:
-        return limbs
-    why = f"{len(limb.joints)} joint(s) from the root carrying a hand of {fingers} fingers"
-    return [replace(limb, kind="wrist", why=why)]
+    return limb.kind == "arm" and limb.gripper and _on_the_root(tree, limb.base) and short
 
 
 def lone_leg(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:

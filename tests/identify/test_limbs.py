@@ -482,6 +482,32 @@ def test_a_short_chain_carrying_a_whole_hand_is_its_wrist_not_an_arm(
     assert result.structure == "Hand"
 
 
+def pair_of_hands(fingers: int = 5) -> RobotText:
+    """Two hands on forearms fixed 0.4 m apart on one stand, each a one-joint wrist into its
+    palm and ``fingers`` three-joint fingers (a bimanual hand rig, no arm)."""
+    robot = RobotText("hands", root="stand")
+    for side, y in (("rh", -0.2), ("lh", 0.2)):
+        robot.joint(
+            f"{side}_mount", "fixed", "stand", f"{side}_forearm", f'<origin xyz="0 {y} 0"/>'
+        )
+        wrist = robot.chain(f"{side}_forearm", [f"{side}_wrist"])
+        robot.joint(f"{side}_palm_fixed", "fixed", wrist, f"{side}_palm")
+        for finger in ("ff", "mf", "rf", "lf", "th")[:fingers]:
+            robot.chain(f"{side}_palm", [f"{side}_{finger}j{i}" for i in (3, 2, 1)])
+    return robot
+
+
+def test_two_short_chains_each_carrying_a_whole_hand_are_wrists_not_a_torsos_arms() -> None:
+    result = identify_urdf(pair_of_hands().text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["wrist", "wrist"]
+    assert result.structure == "Hand"
+    # Two fingers a hand are grippers, no whole hands: their chains stay arms.
+    grippers = identify_urdf(pair_of_hands(fingers=2).text()).body
+    assert grippers is not None
+    assert "wrist" not in [limb.kind for limb in grippers.limbs]
+
+
 def five_bar_legs(*, close: str = "ends") -> RobotText:
     """Two legs of two coaxial motors each, 4 cm apart on one line across the body; each leg's
     two knees close the loop (``ends``: both chains end at one foot point; ``mimic``: ends

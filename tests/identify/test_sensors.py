@@ -73,6 +73,10 @@ def bare(name: str, link: str = "base_link") -> str:
         ),
         (builders.gazebo_sensor("cliff_left", "ray", "cliff_sensor_left"), ("ir_range", None, 1)),
         (
+            builders.gazebo_sensor("tof_1", "ray", "tof_1", plugin="libhector_gazebo_ros_sonar.so"),
+            ("ir_range", None, 1),
+        ),
+        (
             builders.gazebo_sensor("wrist", "force_torque", "ft"),
             ("force_torque", "Force Sensor", 1),
         ),
