@@ -1866,6 +1866,9 @@ def _unnamed_kind(
         return "head", (
             f"a chain of {length} joint(s) carrying a camera or a range sensor (a pan/tilt unit)"
         )
+    if len(chain) == 1 and chain[0].type == "spherical" and not gripper:
+        # Three turns in one ball, nothing after it: a ball caster, a rolling robot's shell.
+        return "other", "a lone ball joint carrying no gripper (a ball caster or a shell)"
     if length >= tree.profile.limb("arm_min_joints") or (gripper and length >= 2):
         return "arm", "ends in a gripper" if gripper else f"an unnamed chain of {length} joints"
     if flying and length >= _FLYING_ARM_JOINTS and not named:
@@ -1948,8 +1951,12 @@ def _ends_in_a_foot(
     return kind, why
 
 
-# A foot's name at a limb's tip (``leg1__FOOT``, ``rf_foot``, ``toe_link``, ``sole``).
-_FOOT = re.compile(r"foot|feet|(^|[_/])(soles?|toes?)([_/\d]|$)", re.IGNORECASE)
+# A foot's name at a limb's tip (``leg1__FOOT``, ``rf_foot``, ``toe_link``, ``sole``, a
+# camel-cased ``RightToe``).
+_FOOT = re.compile(
+    r"foot|feet|(^|[_/]|(?-i:(?<=[a-z])(?=[A-Z])))(soles?|toes?)([_/\d]|$|(?-i:(?=[A-Z])))",
+    re.IGNORECASE,
+)
 
 
 def _tip_matches(tree: JointTree, part: str, joint: Joint) -> bool:

@@ -664,6 +664,16 @@ def test_a_leg_alone_on_a_still_body_is_an_arm_with_leg_names() -> None:
     assert identify_urdf(builders.biped().text()).structure == "Biped"
 
 
+def test_a_lone_ball_joint_carrying_no_gripper_on_a_rover_is_no_arm() -> None:
+    # A spherical robot's shell on a ball joint around the wheels that roll it from inside.
+    robot = builders.ugv()
+    robot.joint("shell_joint", "spherical", robot.root, "shell_link")
+    result = identify_urdf(robot.text())
+    assert result.structure == "UGV"
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["other"]
+
+
 def gripping_legs(legs: int = 1, *, wheels: int = 4) -> RobotText:
     """``legs`` four-joint chains whose joints are numbered as a leg's segments
     (``leg1_2_joint``), each ending in a claw of two jaws, on a base with ``wheels``."""
@@ -1714,6 +1724,24 @@ def test_branches_that_end_in_no_foot_are_no_leg_through_a_linkage() -> None:
     result = identify_urdf(branching_biped(end="plate").text())
     assert result.body is not None
     assert not any("linkage" in limb.why for limb in result.body.limbs)
+
+
+def test_a_leg_whose_foot_splits_into_a_camel_cased_toe_and_heel_is_one_leg() -> None:
+    # A motion-capture body model: hip, knee and ankle down to the foot, where a ball-of-foot
+    # joint to ``RightToe`` and a heel joint branch off (names camel-cased, no ``_``).
+    robot = RobotText("human", root="Pelvis")
+    for side in ("Right", "Left"):
+        foot = robot.chain("Pelvis", [f"j{side}Hip", f"j{side}Knee", f"j{side}Ankle"])
+        robot.joint(f"j{side}BallFoot", "revolute", foot, f"{side}Toe")
+        robot.joint(f"j{side}Heel", "revolute", foot, f"{side}Heel")
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    legs = [limb for limb in result.body.limbs if limb.kind == "leg"]
+    assert [(limb.joints[0], limb.tip) for limb in legs] == [
+        ("jRightHip", "RightToe"),
+        ("jLeftHip", "LeftToe"),
+    ]
+    assert result.structure == "Biped"
 
 
 def wheel_legged(*, closed: bool) -> RobotText:
