@@ -573,7 +573,7 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
         parts.limbs, parts.trunk, side = wheeled_spine(tree, parts.limbs, parts.trunk)
         for name in side:
             parts.roles[name] = Role(name, "passive", "a leaf joint beside a spine (a side wheel)")
-    parts.limbs = wrist(tree, parts.limbs, len(finger_tips(tree, parts.grippers)))
+    parts.limbs = wrist(tree, parts.limbs, finger_tips(tree, parts.grippers))
     moves = flying or grounded(tree, parts.roles)
     parts.limbs = bolted_chain(tree, parts.limbs, moves)
     parts.limbs = gripping_leg(lone_leg(tree, parts.limbs, moves))

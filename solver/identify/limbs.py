@@ -67,7 +67,17 @@ from dataclasses import dataclass, replace
 from itertools import islice, pairwise
 from typing import NamedTuple
 
-from solver.identify.pose import Vector, distance, parallel, perpendicular, spread
+from solver.identify.pose import (
+    Vector,
+    centroid,
+    cross,
+    distance,
+    dot,
+    minus,
+    parallel,
+    perpendicular,
+    spread,
+)
 from solver.identify.readers.urdf import Joint, Urdf
 from solver.identify.roles import Role
 from solver.identify.tree import JointTree
@@ -736,7 +746,7 @@ def _legs_why(tree: JointTree, base: str, group: list[Limb], *, wheeled: bool) -
     if len(group) >= _WHOLE_TURN_LEGS and _spreads_from_hips(tree, group):
         return (
             "one of six or more alike chains starting on one plane around their middle, each"
-            " reaching out from it and down from that plane (a walker's legs, its body drawn"
+            " reaching out from it and not up from that plane (a walker's legs, its body drawn"
             " tilted in the file: legs by place)"
         )
     if _at_corners(tree, base, group, wheeled=wheeled):
@@ -1024,81 +1034,75 @@ def _spreads(tree: JointTree, base: str, group: list[Limb]) -> bool:
 
 
 def _spreads_from_hips(tree: JointTree, group: list[Limb]) -> bool:
-    """:func:`_spreads` with "down" read from the chains themselves, not the file's z: the
-    chains start on one plane around their middle (a walker's hips; a CAD export may draw the
-    body tilted), and each ends farther out from that middle along the plane than it starts, by
-    most of its reach, and on the side of the plane the chains reach to, not above it by more
-    than a leg's drop share (the feet below the hips, whichever way the file turns them)."""
+    """:func:`_spreads` on a body the file draws tilted (a CAD export's): "up" read from the
+    plane the chains start on (a walker's hips, around their middle), tilted from the file's z
+    but not standing on edge, taken on its side where z rises. Each chain ends farther out from
+    the hips' middle along that plane than it starts, by most of its reach, and not up from the
+    plane by more than a leg's drop share. A body drawn level is :func:`_spreads`'s."""
     placed = chain_ends(tree, group)
     if placed is None or len(placed) > _MOST_FIVE_BAR_LEGS:
         return False  # a stranger's thousands of chains are not paired hip by hip
-    starts = [start for start, _ in placed]
-    middle = _centroid(starts)
-    normal = _plane(starts, middle)
-    if normal is None:
+    middle = centroid([start for start, _ in placed])
+    # Read at the hips' own scale (a stranger's 1e100s neither overflow nor pass unread).
+    radius = max(math.hypot(*minus(start, middle)) for start, _ in placed)
+    if not (math.isfinite(radius) and radius >= _SAME_PLACE):
         return False
-    if sum(_dot(_minus(end, start), normal) for start, end in placed) > 0:
-        normal = (-normal[0], -normal[1], -normal[2])  # "up": away from where the chains reach
-    for start, end in placed:
+    scaled = [
+        (_scaled(start, middle, radius), _scaled(end, middle, radius)) for start, end in placed
+    ]
+    normal = _plane([start for start, _ in scaled])
+    if normal is None or parallel(normal, _UP) or perpendicular(normal, _UP):
+        return False  # level (the file's z is "up"), or on edge (no side is "up")
+    if normal[2] < 0:
+        normal = (-normal[0], -normal[1], -normal[2])
+    for start, end in scaled:
         reach = distance(start, end)
-        out = _along_plane(end, middle, normal) - _along_plane(start, middle, normal)
-        rise = _dot(_minus(end, start), normal)
-        # Each test is written so that a NaN (a stranger's overflowing numbers) fails it.
-        if not (reach > 0 and out >= _LEG_SPREAD * reach and -rise >= -_LEG_DROP * reach):
+        out = _along_plane(end, normal) - _along_plane(start, normal)
+        rise = dot(minus(end, start), normal)
+        # Each test is written so that a NaN or an overflow fails it.
+        if not (
+            math.isfinite(reach)
+            and reach > 0
+            and out >= _LEG_SPREAD * reach
+            and rise <= _LEG_DROP * reach
+        ):
             return False
     return True
 
 
-def _centroid(places: list[Place]) -> Place:
-    count = len(places)
-    return (
-        sum(p[0] for p in places) / count,
-        sum(p[1] for p in places) / count,
-        sum(p[2] for p in places) / count,
-    )
+# The file's "up".
+_UP = (0.0, 0.0, 1.0)
+# Hips on a plane: none off it by more than this share of their radius, and not along one line
+# (the widest pair of them spans at least this share of the radius squared).
+_OFF_THE_PLANE = 0.1
+_ALONG_A_LINE = 0.25
 
 
-def _minus(one: Place, other: Place) -> Place:
-    return (one[0] - other[0], one[1] - other[1], one[2] - other[2])
+def _scaled(place: Place, middle: Place, radius: float) -> Place:
+    offset = minus(place, middle)
+    return (offset[0] / radius, offset[1] / radius, offset[2] / radius)
 
 
-def _dot(one: Place, other: Place) -> float:
-    return one[0] * other[0] + one[1] * other[1] + one[2] * other[2]
-
-
-def _cross(one: Place, other: Place) -> Place:
-    return (
-        one[1] * other[2] - one[2] * other[1],
-        one[2] * other[0] - one[0] * other[2],
-        one[0] * other[1] - one[1] * other[0],
-    )
-
-
-def _plane(places: list[Place], middle: Place) -> Place | None:
-    """The unit normal of the plane ``places`` lie on around ``middle`` (spread both ways
-    along it, none off it by more than :data:`_ON_CIRCLE` of their radius), else ``None``."""
-    offsets = [_minus(place, middle) for place in places]
-    radius = max(math.sqrt(_dot(offset, offset)) for offset in offsets)
-    if not radius >= _SAME_PLACE:
-        return None
+def _plane(offsets: list[Place]) -> Place | None:
+    """The unit normal of the plane ``offsets`` (from their middle, the farthest at 1) lie on:
+    spread both ways along it, none off it by more than :data:`_OFF_THE_PLANE`; else ``None``."""
     widest = max(
-        (_cross(one, other) for index, one in enumerate(offsets) for other in offsets[index + 1 :]),
-        key=lambda normal: _dot(normal, normal),
+        (cross(one, other) for index, one in enumerate(offsets) for other in offsets[index + 1 :]),
+        key=lambda normal: math.hypot(*normal),
     )
-    size = math.sqrt(_dot(widest, widest))
-    if not size >= _MIRRORED * radius * radius:
+    size = math.hypot(*widest)
+    if not (math.isfinite(size) and size >= _ALONG_A_LINE):
         return None  # the places lie along one line: no plane is theirs
     normal = (widest[0] / size, widest[1] / size, widest[2] / size)
-    if not all(abs(_dot(offset, normal)) <= _ON_CIRCLE * radius for offset in offsets):
+    if not all(abs(dot(offset, normal)) <= _OFF_THE_PLANE for offset in offsets):
         return None
     return normal
 
 
-def _along_plane(place: Place, middle: Place, normal: Place) -> float:
-    """How far ``place`` lies from ``middle`` along the plane of ``normal``."""
-    offset = _minus(place, middle)
-    across = _dot(offset, normal)
-    return math.sqrt(max(0.0, _dot(offset, offset) - across * across))
+def _along_plane(offset: Place, normal: Place) -> float:
+    """How far ``offset`` (from the hips' middle) reaches along the plane of ``normal``."""
+    across = dot(offset, normal)
+    return math.hypot(*minus(offset, (normal[0] * across, normal[1] * across, normal[2] * across)))
 
 
 def _stands(tree: JointTree, base: str, group: list[Limb]) -> bool:
@@ -1677,21 +1681,28 @@ def _alike(spacings: list[float]) -> bool:
     return middle > 0 and all(abs(s - middle) <= _MODULE_SPREAD * middle for s in ordered)
 
 
-def wrist(tree: JointTree, limbs: list[Limb], fingers: int) -> list[Limb]:
-    """Short chains from the root each ending in a whole hand (``fingers`` in all, at least
-    the profile's ``hand_min_fingers`` a hand), the body's only limbs: the hands' wrists, not
-    arms (one hand on its forearm; two side by side, a pair of hands on fixed forearms). Short
-    is fewer joints than an arm's, or up to three joints all named as a wrist's (a pitch, a yaw
-    and a pitch under the palm)."""
-    if (
-        not limbs
-        or len(limbs) > _HANDS
-        or fingers < len(limbs) * tree.profile.limb("hand_min_fingers")
-    ):
+def wrist(tree: JointTree, limbs: list[Limb], tips: list[str]) -> list[Limb]:
+    """A short chain from the root ending in a whole hand (``tips``: the fingers' last joints,
+    at least the profile's ``hand_min_fingers``), the body's only limb: the hand's wrist, not
+    an arm. Short is fewer joints than an arm's, or up to three joints all named as a wrist's
+    (a pitch, a yaw and a pitch under the palm). Two such chains side by side (a pair of hands
+    on fixed forearms) are wrists too when each carries a whole hand of its own and neither
+    is named but as a wrist (short arms named ``shoulder`` or ``elbow`` are a torso's)."""
+    minimum = tree.profile.limb("hand_min_fingers")
+    if len(limbs) == 1:
+        if len(tips) < minimum or not _wrist(tree, limbs[0]):
+            return limbs
+    elif len(limbs) == _HANDS:
+        if not all(
+            _wrist(tree, limb)
+            and _named_as_a_wrist(tree, limb)
+            and _fingers_below(tree, limb.tip, tips) >= minimum
+            for limb in limbs
+        ):
+            return limbs
+    else:
         return limbs
-    if not all(_wrist(tree, limb) for limb in limbs):
-        return limbs
-    why = f"joint(s) from the root carrying a hand ({fingers} fingers on {len(limbs)} hand(s))"
+    why = f"joint(s) from the root carrying a hand ({len(tips)} fingers on {len(limbs)} hand(s))"
     return [replace(limb, kind="wrist", why=f"{len(limb.joints)} {why}") for limb in limbs]
 
 
@@ -1701,6 +1712,32 @@ def _wrist(tree: JointTree, limb: Limb) -> bool:
         len(limb.joints) <= _WRIST_JOINTS and all(_WRIST.search(name) for name in limb.joints)
     )
     return limb.kind == "arm" and limb.gripper and _on_the_root(tree, limb.base) and short
+
+
+def _named_as_a_wrist(tree: JointTree, limb: Limb) -> bool:
+    """No name but a wrist's: the chain is unnamed, or each joint or the link it moves is
+    named as a wrist (``rh_WRJ2`` turning ``rh_wrist``)."""
+    if not limb.named:
+        return True
+    return all(
+        _WRIST.search(name)
+        or ((moved := tree.urdf.joint(name)) is not None and bool(_WRIST.search(moved.child)))
+        for name in limb.joints
+    )
+
+
+def _fingers_below(tree: JointTree, link: str, tips: list[str]) -> int:
+    """How many of the finger ``tips`` hang below ``link`` (one walk down from it)."""
+    below: set[str] = set()
+    stack = [link]
+    while stack:
+        for joint in tree.urdf.children(stack.pop()):
+            if joint.child not in below:
+                below.add(joint.child)
+                stack.append(joint.child)
+    return sum(
+        1 for name in tips if (found := tree.urdf.joint(name)) is not None and found.child in below
+    )
 
 
 def lone_leg(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
@@ -1717,12 +1754,12 @@ def lone_leg(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
 
 
 def gripping_leg(limbs: list[Limb]) -> list[Limb]:
-    """The body's only leg-named chain, ending in a gripper, is an arm: one leg walks nowhere,
-    and a leg that grips holds nothing up (a rover's arm whose joints are numbered as a leg's
-    segments, ``leg1_2_joint``). Two or more such legs stay legs (a climber grips with its
+    """The body's only leg, named as a leg and ending in a gripper, is an arm: one leg walks
+    nowhere, and a leg that grips holds nothing up (a rover's arm whose joints are numbered as
+    a leg's segments, ``leg1_2_joint``). Two or more legs stay legs (a climber grips with its
     feet)."""
     legs = [limb for limb in limbs if limb.kind == "leg"]
-    if len(legs) != 1 or not legs[0].gripper:
+    if len(legs) != 1 or not legs[0].gripper or not legs[0].named:
         return limbs
     why = f"the body's only leg-named chain, of {len(legs[0].joints)} joint(s), ending in a gripper"
     return [replace(limb, kind="arm", why=why) if limb is legs[0] else limb for limb in limbs]
@@ -1866,9 +1903,10 @@ def _unnamed_kind(
         return "head", (
             f"a chain of {length} joint(s) carrying a camera or a range sensor (a pan/tilt unit)"
         )
-    if len(chain) == 1 and chain[0].type == "spherical" and not gripper:
-        # Three turns in one ball, nothing after it: a ball caster, a rolling robot's shell.
-        return "other", "a lone ball joint carrying no gripper (a ball caster or a shell)"
+    if len(chain) == 1 and chain[0].type == "spherical" and not gripper and _wheeled(tree):
+        # Three turns in one ball on a wheeled body, no joint after it: a ball caster, a
+        # rolling robot's shell (elsewhere an unnamed ball may be a shoulder).
+        return "other", "a lone ball joint on a wheeled body (a ball caster or a shell)"
     if length >= tree.profile.limb("arm_min_joints") or (gripper and length >= 2):
         return "arm", "ends in a gripper" if gripper else f"an unnamed chain of {length} joints"
     if flying and length >= _FLYING_ARM_JOINTS and not named:
@@ -1954,7 +1992,7 @@ def _ends_in_a_foot(
 # A foot's name at a limb's tip (``leg1__FOOT``, ``rf_foot``, ``toe_link``, ``sole``, a
 # camel-cased ``RightToe``).
 _FOOT = re.compile(
-    r"foot|feet|(^|[_/]|(?-i:(?<=[a-z])(?=[A-Z])))(soles?|toes?)([_/\d]|$|(?-i:(?=[A-Z])))",
+    r"foot|feet|(^|[_/])(soles?|toes?)([_/\d]|$)|(?-i:(?<=[a-z])(Soles?|Toes?)(?=[A-Z_/\d]|$))",
     re.IGNORECASE,
 )
 

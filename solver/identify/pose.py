@@ -24,8 +24,12 @@ from solver.identify.readers.urdf import Joint, Urdf
 __all__ = [
     "Poses",
     "Vector",
+    "centroid",
+    "cross",
     "distance",
+    "dot",
     "local_axis",
+    "minus",
     "parallel",
     "perpendicular",
     "same_way",
@@ -95,6 +99,35 @@ def same_way(one: Vector, other: Vector) -> bool:
 def perpendicular(one: Vector, other: Vector) -> bool:
     """The two axes are square to each other."""
     return _cosine(one, other) <= _PERPENDICULAR
+
+
+def dot(one: Vector, other: Vector) -> float:
+    """The dot product of two vectors."""
+    return one[0] * other[0] + one[1] * other[1] + one[2] * other[2]
+
+
+def cross(one: Vector, other: Vector) -> Vector:
+    """The cross product of two vectors (square to both, as long as the area they span)."""
+    return (
+        one[1] * other[2] - one[2] * other[1],
+        one[2] * other[0] - one[0] * other[2],
+        one[0] * other[1] - one[1] * other[0],
+    )
+
+
+def minus(one: Vector, other: Vector) -> Vector:
+    """``one`` less ``other``: the way from ``other`` to ``one``."""
+    return (one[0] - other[0], one[1] - other[1], one[2] - other[2])
+
+
+def centroid(places: list[Vector]) -> Vector:
+    """The mean of ``places`` (at least one)."""
+    count = len(places)
+    return (
+        sum(p[0] for p in places) / count,
+        sum(p[1] for p in places) / count,
+        sum(p[2] for p in places) / count,
+    )
 
 
 def spread(values: list[float]) -> float:

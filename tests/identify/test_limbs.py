@@ -482,17 +482,17 @@ def test_a_short_chain_carrying_a_whole_hand_is_its_wrist_not_an_arm(
     assert result.structure == "Hand"
 
 
-def pair_of_hands(fingers: int = 5) -> RobotText:
-    """Two hands on forearms fixed 0.4 m apart on one stand, each a one-joint wrist into its
-    palm and ``fingers`` three-joint fingers (a bimanual hand rig, no arm)."""
+def pair_of_hands(fingers: tuple[int, int] = (5, 5), joint: str = "wrist") -> RobotText:
+    """Two hands on forearms fixed 0.4 m apart on one stand, each a one-joint chain named
+    ``joint`` into its palm and ``fingers`` three-joint fingers (a bimanual hand rig, no arm)."""
     robot = RobotText("hands", root="stand")
-    for side, y in (("rh", -0.2), ("lh", 0.2)):
+    for (side, y), count in zip((("rh", -0.2), ("lh", 0.2)), fingers, strict=True):
         robot.joint(
             f"{side}_mount", "fixed", "stand", f"{side}_forearm", f'<origin xyz="0 {y} 0"/>'
         )
-        wrist = robot.chain(f"{side}_forearm", [f"{side}_wrist"])
+        wrist = robot.chain(f"{side}_forearm", [f"{side}_{joint}"])
         robot.joint(f"{side}_palm_fixed", "fixed", wrist, f"{side}_palm")
-        for finger in ("ff", "mf", "rf", "lf", "th")[:fingers]:
+        for finger in ("ff", "mf", "rf", "lf", "th")[:count]:
             robot.chain(f"{side}_palm", [f"{side}_{finger}j{i}" for i in (3, 2, 1)])
     return robot
 
@@ -502,10 +502,21 @@ def test_two_short_chains_each_carrying_a_whole_hand_are_wrists_not_a_torsos_arm
     assert result.body is not None
     assert [limb.kind for limb in result.body.limbs] == ["wrist", "wrist"]
     assert result.structure == "Hand"
-    # Two fingers a hand are grippers, no whole hands: their chains stay arms.
-    grippers = identify_urdf(pair_of_hands(fingers=2).text()).body
-    assert grippers is not None
-    assert "wrist" not in [limb.kind for limb in grippers.limbs]
+
+
+@pytest.mark.parametrize(
+    "hands",
+    [
+        {"fingers": (2, 2)},  # two grippers: no whole hand
+        {"fingers": (5, 2)},  # a hand and a gripper: seven fingers, one whole hand
+        {"joint": "shoulder"},  # short arms named as arms: a torso's, hands on them
+    ],
+)
+def test_short_chains_not_each_a_wrist_of_a_whole_hand_stay_arms(hands: dict[str, Any]) -> None:
+    result = identify_urdf(pair_of_hands(**hands).text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["arm", "arm"]
+    assert result.structure == "Torso"
 
 
 def five_bar_legs(*, close: str = "ends") -> RobotText:
@@ -672,6 +683,11 @@ def test_a_lone_ball_joint_carrying_no_gripper_on_a_rover_is_no_arm() -> None:
     assert result.structure == "UGV"
     assert result.body is not None
     assert [limb.kind for limb in result.body.limbs] == ["other"]
+    # On a body with no wheels, unnamed balls on the pelvis stay a humanoid's shoulders.
+    walker = builders.biped()
+    for side in ("a", "b"):
+        walker.joint(f"{side}_ball", "spherical", walker.root, f"{side}_upper")
+    assert identify_urdf(walker.text()).structure == "Humanoid"
 
 
 def gripping_legs(legs: int = 1, *, wheels: int = 4) -> RobotText:
@@ -744,25 +760,33 @@ def test_four_chains_reaching_out_flat_are_not_legs_by_that_rule() -> None:
     assert all("corners" in limb.why and "flat" not in limb.why for limb in legs)
 
 
-def tilted_hexapod(*, reach: float = 1.0, hips: int = 6) -> RobotText:
-    """Six unnamed three-joint chains on a hexagon of hips around a body drawn turned on its
-    root (``rpy 0.7 0.5 0.3``, as a CAD export may draw it), each reaching out from the body's
-    middle and down in the body's frame (``reach`` -1: in towards the middle); ``hips`` 2: on
-    two places only, three chains at each."""
+def tilted_hexapod(
+    *,
+    reach: float = 1.0,
+    hips: int = 6,
+    chains: int = 6,
+    rpy: str = "0.7 0.5 0.3",
+    down: float = 1.0,
+    scale: float = 1.0,
+) -> RobotText:
+    """``chains`` unnamed three-joint chains on a circle of hips around a body drawn turned on
+    its root by ``rpy`` (as a CAD export may draw it), each reaching out from the body's middle
+    and down in the body's frame (``reach`` -1: in towards the middle; ``down`` -1: up);
+    ``hips`` 2: on two places only, half the chains at each; ``scale``: every length."""
     robot = RobotText("r")
-    body = robot.joint("mount", "fixed", robot.root, "body", '<origin rpy="0.7 0.5 0.3"/>')
-    for i in range(6):
-        angle = 2 * math.pi * (i if hips == 6 else i % 2 * 3) / 6
-        x, y = math.cos(angle), math.sin(angle)
+    body = robot.joint("mount", "fixed", robot.root, "body", f'<origin rpy="{rpy}"/>')
+    for i in range(chains):
+        angle = 2 * math.pi * (i if hips != 2 else i % 2 * chains / 2) / chains
+        x, y = scale * math.cos(angle), scale * math.sin(angle)
         placed_chain(
             robot,
             body,
             f"k{i}_",
-            start=f"{0.1 * x:.4f} {0.1 * y:.4f} 0",
+            start=f"{0.1 * x:.6g} {0.1 * y:.6g} 0",
             steps=[
-                f"{0.05 * reach * x:.4f} {0.05 * reach * y:.4f} 0",
-                f"{0.1 * reach * x:.4f} {0.1 * reach * y:.4f} -0.06",
-                "0 0 -0.1",
+                f"{0.05 * reach * x:.6g} {0.05 * reach * y:.6g} 0",
+                f"{0.1 * reach * x:.6g} {0.1 * reach * y:.6g} {-0.06 * down * scale:.6g}",
+                f"0 0 {-0.1 * down * scale:.6g}",
             ],
         )
     return robot
@@ -773,13 +797,29 @@ def test_six_chains_reaching_out_and_down_from_a_tilted_body_are_a_hexapods_legs
     assert result.structure == "Hexapod"
     assert result.body is not None
     assert "tilted" in result.body.limbs[0].why
+    # The same read at any scale, past squaring too (1e100 m): the hips' own scale is read.
+    for scale in (1000.0, 1e100):
+        assert identify_urdf(tilted_hexapod(scale=scale).text()).structure == "Hexapod"
 
 
-def test_six_chains_reaching_in_or_from_two_places_on_a_tilted_body_are_no_legs() -> None:
-    # Reaching in towards their middle (a gripper's fingers closing), or starting at two
-    # places only (no plane of hips around a middle): no walker's legs by that rule.
-    for robot in (tilted_hexapod(reach=-1.0), tilted_hexapod(hips=2)):
-        assert identify_urdf(robot.text()).structure != "Hexapod"
+@pytest.mark.parametrize(
+    "drawn",
+    [
+        {"reach": -1.0},  # reaching in towards their middle (fingers closing)
+        {"hips": 2},  # starting at two places only: no plane of hips
+        {"down": -1.0},  # reaching up from the tilted body (an open hand)
+        # Twelve on a level body, reaching up and out: the file's z is "up", and says fingers.
+        {"chains": 12, "rpy": "0 0 0", "down": -1.0},
+        # Numbers past squaring (1e100 m) reaching up: read at the hips' own scale, as at 1.
+        {"scale": 1e100, "down": -1.0},
+    ],
+)
+def test_chains_that_reach_in_up_or_from_no_plane_of_hips_are_no_tilted_walkers_legs(
+    drawn: dict[str, Any],
+) -> None:
+    result = identify_urdf(tilted_hexapod(**drawn).text())
+    assert result.body is not None
+    assert not any("tilted" in limb.why for limb in result.body.limbs)
 
 
 def whole_turn_legs(legs: int = 6, *, kind: str = "continuous", axis: str = "0 1 0") -> RobotText:

@@ -73,8 +73,14 @@ def bare(name: str, link: str = "base_link") -> str:
         ),
         (builders.gazebo_sensor("cliff_left", "ray", "cliff_sensor_left"), ("ir_range", None, 1)),
         (
-            builders.gazebo_sensor("tof_1", "ray", "tof_1", plugin="libhector_gazebo_ros_sonar.so"),
+            builders.gazebo_sensor(
+                "tof_1", "ray", "tof_1", RAY.format(h=10, v=10), "libhector_gazebo_ros_sonar.so"
+            ),
             ("ir_range", None, 1),
+        ),
+        (
+            builders.gazebo_sensor("tof_lidar", "gpu_ray", "tof_lidar", RAY.format(h=720, v=1)),
+            ("lidar", "LIDAR", 1),
         ),
         (
             builders.gazebo_sensor("wrist", "force_torque", "ft"),
