@@ -106,9 +106,9 @@ __all__ = [
 ]
 
 # A spherical (ball) joint is outside the URDF spec but real files have it: a shoulder, a hip.
+_LIMB_JOINTS = ("revolute", "continuous", "prismatic", "spherical")
 # Hands side by side on their wrists, at most (a pair on fixed forearms).
 _HANDS = 2
-_LIMB_JOINTS = ("revolute", "continuous", "prismatic", "spherical")
 _TURNING = ("revolute", "continuous")
 # A wrist turns a hand about up to three axes, its joints named so.
 _WRIST_JOINTS = 3
