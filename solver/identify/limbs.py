@@ -1728,16 +1728,8 @@ def _named_as_a_wrist(tree: JointTree, limb: Limb) -> bool:
 
 def _fingers_below(tree: JointTree, link: str, tips: list[str]) -> int:
     """How many of the finger ``tips`` hang below ``link`` (one walk down from it)."""
-    below: set[str] = set()
-    stack = [link]
-    while stack:
-        for joint in tree.urdf.children(stack.pop()):
-            if joint.child not in below:
-                below.add(joint.child)
-                stack.append(joint.child)
-    return sum(
-        1 for name in tips if (found := tree.urdf.joint(name)) is not None and found.child in below
-    )
+    fingers = set(tips)
+    return sum(1 for joint in tree.urdf.subtree_joints(link) if joint.name in fingers)
 
 
 def lone_leg(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
