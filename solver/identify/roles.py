@@ -223,6 +223,12 @@ class RoleReader:
         thruster = self.profile.plugin_pattern("thruster")
         if thruster is not None and any(thruster.search(group) for group in plugin.groups):
             found.add("thruster")
+        # One that lists rotor entries flies the body, whatever it is called (a quadrotor's own
+        # thrust model with a <rotors> entry per propeller link): a rotorcraft's, no thrusters.
+        rotor = self.profile.pattern("rotor")
+        if rotor is not None and any(rotor.search(group) for group in plugin.groups):
+            found.add("flight")
+            found.discard("thruster")
         # A plugin that gives a wheel spacing and a wheel size drives wheels, whatever it is
         # called (a robot's own drive plugin, ``<wheelSeparation>`` and ``<wheelDiameter>``).
         tags = _tags(plugin)

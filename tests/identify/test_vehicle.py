@@ -371,6 +371,29 @@ def test_a_one_ray_range_finder_on_a_hull_says_nothing_of_the_surface() -> None:
     assert surface_hints(tree_of(robot)) == ()
 
 
+def thrust_model(entry: str) -> RobotText:
+    """Four spinning ``rotor_N`` links on a body, pushed by a plugin of the robot's own
+    (``libthrust_plugin.so``) that lists one ``<entry>`` per link."""
+    robot = RobotText("drone")
+    entries = ""
+    for i in range(4):
+        robot.joint(f"rotor{i}_joint", "continuous", "base_link", f"rotor_{i}")
+        entries += f"<{entry}><linkName>rotor_{i}</linkName><maxForce>30</maxForce></{entry}>"
+    robot.add(builders.model_plugin("thrust", "libthrust_plugin.so", entries))
+    return robot
+
+
+def test_a_thrust_plugin_listing_rotor_entries_flies_the_body_it_does_not_float_it() -> None:
+    result = identify_urdf(thrust_model("rotors").text())
+    assert result.structure == "UAV"
+    assert "flight plugin(s): libthrust_plugin.so" in result.evidence
+
+
+def test_the_same_plugin_listing_thruster_entries_still_drives_thrusters_in_water() -> None:
+    result = identify_urdf(thrust_model("thruster").text())
+    assert result.structure in ("Surface Vessel", "Underwater Vehicle")
+
+
 def hull_with_compensation(hull: str, thrusters: str = "0.6") -> str:
     """A hull whose link gives ``<buoyancy><compensation>`` (buoyancy over weight) under a
     thruster plugin of a floating-body simulator; each thruster link gives ``thrusters``."""
