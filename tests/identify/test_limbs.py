@@ -1295,7 +1295,7 @@ def test_four_alike_unnamed_chains_at_the_corners_of_an_upright_body_are_a_human
 ):
     # Shoulders and hips are at the corners of a plane too, the upright one: a reading of the
     # corners in any plane (a quadruped a CAD export drew y up) would make this a quadruped; it
-    # was tried and taken back (docs/identify.md, Fresh set 53).
+    # was tried and taken back (docs/identify-journal.md, Fresh set 53).
     assert identify_urdf(upright_four_limbs().text()).structure == "Humanoid"
     assert identify_urdf(upright_four_limbs(facing_y=True).text()).structure == "Humanoid"
 
