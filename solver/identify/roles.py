@@ -74,6 +74,12 @@ _TRACK_SIDES = frozenset({"lefttrack", "righttrack"})
 _WHEEL_TAG = re.compile(r"left|right|wheel|front|rear|back|steer", re.IGNORECASE)
 
 
+def _pattern_parts(plugin: PluginTag, profile: Profile) -> frozenset[str]:
+    """The parts the profile's plugin patterns read in what names ``plugin`` (:func:`_said`)."""
+    said = _said(plugin)
+    return frozenset(part for part, pattern in profile.plugins if pattern.search(said))
+
+
 def _said(plugin: PluginTag) -> str:
     """What a plugin says it is: its file, which is what runs; else its name, a label its author
     chose (often copied from the plugin above it: a frame publisher named ``simple_buoyancy``),
@@ -133,6 +139,12 @@ _AIRSHIP_NAME = re.compile(
 )
 
 
+# A plugin's entry that is a rotorcraft's (``<rotor>``, ``<rotors>``), read as a whole tag;
+# and the plugin parts that put a body in water (such a plugin's rotor entries are not flown).
+_ROTOR_ENTRY = re.compile(r"rotors?", re.IGNORECASE)
+_WATER_PARTS = frozenset({"marine", "surface", "underwater"})
+
+
 def main_axis(axis: tuple[float, float, float]) -> int:
     """0, 1 or 2 for an axis along x, y or z; -1 for a slanted one."""
     sizes = [abs(v) for v in axis]
@@ -147,6 +159,9 @@ class RoleReader:
         self.urdf = urdf
         self.profile = profile
         self.parts_of = parts_of
+        # A plugin says water by its words (a hydrodynamics, buoyancy or boat plugin): then no
+        # plugin's rotor entries fly the body (``_plugin_parts``).
+        self.water_plugins = any(_pattern_parts(p, profile) & _WATER_PARTS for p in urdf.plugins)
         self.plugin_parts = {id(p): self._plugin_parts(p) for p in urdf.plugins}
         self.fixed_thrusters = self._fixed_thrusters()
         self.named_vessel = self._named_vessel()
@@ -213,20 +228,16 @@ class RoleReader:
         return frozenset((self.urdf.root, *self.urdf.fixed_below(self.urdf.root)))
 
     def _plugin_parts(self, plugin: PluginTag) -> frozenset[str]:
-        found = set()
-        said = _said(plugin)
-        for part, pattern in self.profile.plugins:
-            if pattern.search(said):
-                found.add(part)
+        found = set(_pattern_parts(plugin, self.profile))
         # A plugin that lists thruster entries drives thrusters, whatever it is called (a
         # floating body's controller with a <thruster> per propeller).
         thruster = self.profile.plugin_pattern("thruster")
         if thruster is not None and any(thruster.search(group) for group in plugin.groups):
             found.add("thruster")
-        # One that lists rotor entries flies the body, whatever it is called (a quadrotor's own
-        # thrust model with a <rotors> entry per propeller link): a rotorcraft's, no thrusters.
-        rotor = self.profile.pattern("rotor")
-        if rotor is not None and any(rotor.search(group) for group in plugin.groups):
+        # One that lists rotor entries and no thruster flies the body, whatever it is called (a
+        # quadrotor's own thrust model with a <rotors> entry per propeller link, as Gazebo's
+        # multicopter control lists a <rotor> per motor), when no plugin says water.
+        elif not self.water_plugins and any(_ROTOR_ENTRY.fullmatch(g) for g in plugin.groups):
             found.add("flight")
             found.discard("thruster")
         # A plugin that gives a wheel spacing and a wheel size drives wheels, whatever it is
@@ -360,22 +371,32 @@ class RoleReader:
             return Role(joint.name, "wheel", self._named("wheel", joint))
         if self.matches("rotor", joint) and not carries:
             return Role(joint.name, "rotor", self._named("rotor", joint) + ", a spinning leaf")
-        propeller = None if carries or not joint.endless else self._propeller(joint)
+        if carries or not joint.endless:
+            return None
+        propeller = self._turns(joint, "rotor")
         if propeller is not None:
             kind = "thruster" if self.marine else "rotor"
             return Role(joint.name, kind, f"turns the propeller-named link {propeller} fixed to it")
+        # A rim, a hub or an axle turning the tyres fixed to it (a CAD export naming only the
+        # tyre); links named by a corner (``rear_left_rim``, the leg pattern's) name no part.
+        tyre = self._turns(joint, "wheel", also={"leg"})
+        if tyre is not None:
+            return Role(joint.name, "wheel", f"turns the wheel-named link {tyre} fixed to it")
         return None
 
-    def _propeller(self, joint: Joint) -> str | None:
-        """The rotor-named link fixed below ``joint``'s child (an axle carrying its propeller),
-        when no link fixed there names another part (a car's hub carries its wheel and a brake
-        rotor): what the joint turns (the first found, walking down from the child)."""
+    def _turns(
+        self, joint: Joint, part: str, also: frozenset[str] | set[str] = frozenset()
+    ) -> str | None:
+        """The ``part``-named link fixed below ``joint``'s child (an axle carrying its
+        propeller, a rim its tyre), when no link fixed there names another part than ``part``
+        and ``also`` (a car's hub carries its wheel and a brake rotor): what the joint turns
+        (the first found, walking down from the child)."""
         found = None
         for link in self.urdf.fixed_below(joint.child):
             parts = self.parts_of(link)
-            if parts - {"rotor"}:
+            if parts - {part, *also}:
                 return None
-            if found is None and "rotor" in parts:
+            if found is None and part in parts:
                 found = link
         return found
 

@@ -220,6 +220,40 @@ def test_flight_words_in_a_plugins_parameters_fly_only_a_body_that_cannot_roll_o
     assert identify_urdf(dog.text()).structure == "Quadruped"
 
 
+def car_of_tyres(below_front: str = "link_front_{}_tyre") -> RobotText:
+    """A CAD export's car: front rims spinning on steered axles and a rear axle spinning two
+    rims, each rim's tyre fixed to it, no joint named for a wheel (links named by corner)."""
+    robot = RobotText("car")
+    robot.joint("joint_rear_axle", "continuous", "base_link", "link_rear_axle")
+    for side in ("left", "right"):
+        robot.fixed("link_rear_axle", f"link_rear_{side}_rim")
+        robot.fixed(f"link_rear_{side}_rim", f"link_rear_{side}_tyre")
+        robot.joint(f"joint_front_{side}_axle", "revolute", "base_link", f"link_front_{side}_axle")
+        robot.joint(
+            f"joint_front_{side}_rim",
+            "continuous",
+            f"link_front_{side}_axle",
+            f"link_front_{side}_rim",
+        )
+        robot.fixed(f"link_front_{side}_rim", below_front.format(side))
+    return robot
+
+
+def test_a_rim_or_an_axle_turning_the_tyre_fixed_to_it_is_a_wheel() -> None:
+    robot = car_of_tyres()
+    assert identify_urdf(robot.text()).structure == "UGV"
+    roles = {name: role.role for name, role in joint_roles(tree_of(robot)).items()}
+    assert roles["joint_rear_axle"] == roles["joint_front_left_rim"] == "wheel"
+    assert "leg" not in roles.values()
+
+
+def test_a_spinning_joint_carrying_a_tyre_and_a_gripper_turns_no_wheel() -> None:
+    robot = car_of_tyres()
+    robot.fixed("link_front_left_rim", "link_front_left_gripper")
+    roles = {name: role.role for name, role in joint_roles(tree_of(robot)).items()}
+    assert roles.get("joint_front_left_rim") != "wheel"
+
+
 def test_tracks_are_a_track_plugin_and_track_named_joints_each_once() -> None:
     robot = builders.tracked()
     robot.joint("left_track_joint", "continuous", robot.root, "left_track")
@@ -371,26 +405,50 @@ def test_a_one_ray_range_finder_on_a_hull_says_nothing_of_the_surface() -> None:
     assert surface_hints(tree_of(robot)) == ()
 
 
-def thrust_model(entry: str) -> RobotText:
+def thrust_model(entry: str, *extra: str) -> RobotText:
     """Four spinning ``rotor_N`` links on a body, pushed by a plugin of the robot's own
-    (``libthrust_plugin.so``) that lists one ``<entry>`` per link."""
+    (``libthrust_plugin.so``) that lists one ``entry`` per link (``{}`` its link's name);
+    ``extra`` more plugins."""
     robot = RobotText("drone")
     entries = ""
     for i in range(4):
         robot.joint(f"rotor{i}_joint", "continuous", "base_link", f"rotor_{i}")
-        entries += f"<{entry}><linkName>rotor_{i}</linkName><maxForce>30</maxForce></{entry}>"
+        entries += entry.format(f"rotor_{i}")
     robot.add(builders.model_plugin("thrust", "libthrust_plugin.so", entries))
+    for plugin in extra:
+        robot.add(plugin)
     return robot
 
 
+ROTORS = "<rotors><linkName>{}</linkName><maxForce>30</maxForce></rotors>"
+
+
 def test_a_thrust_plugin_listing_rotor_entries_flies_the_body_it_does_not_float_it() -> None:
-    result = identify_urdf(thrust_model("rotors").text())
+    result = identify_urdf(thrust_model(ROTORS).text())
     assert result.structure == "UAV"
     assert "flight plugin(s): libthrust_plugin.so" in result.evidence
 
 
-def test_the_same_plugin_listing_thruster_entries_still_drives_thrusters_in_water() -> None:
-    result = identify_urdf(thrust_model("thruster").text())
+@pytest.mark.parametrize(
+    ("entry", "why"),
+    [
+        ("<thruster><linkName>{}</linkName></thruster>", "thruster entries"),
+        ("<propeller><linkName>{}</linkName></propeller>", "a boat's propeller entries"),
+        ("<thruster><rotor><linkName>{}</linkName></rotor></thruster>", "rotors in thrusters"),
+    ],
+)
+def test_a_thrust_plugin_listing_thrusters_or_propellers_flies_nothing(
+    entry: str, why: str
+) -> None:
+    result = identify_urdf(thrust_model(entry).text())
+    assert not any(line.startswith("flight plugin") for line in result.evidence), why
+    assert result.structure in ("Surface Vessel", "Underwater Vehicle"), why
+
+
+def test_rotor_entries_beside_a_water_plugin_fly_nothing() -> None:
+    buoyancy = builders.model_plugin("float", "libbuoyancy_gazebo_plugin.so")
+    result = identify_urdf(thrust_model(ROTORS, buoyancy).text())
+    assert not any(line.startswith("flight plugin") for line in result.evidence)
     assert result.structure in ("Surface Vessel", "Underwater Vehicle")
 
 
