@@ -234,7 +234,7 @@ def test_with_a_split_each_row_is_measured_in_its_part(tmp_path: Path) -> None:
     assert row_of(output, "**all**", "unsplit")[:5] == ["0", "-", "-", "0", "1"]
 
 
-def test_the_highest_fresh_set_the_split_does_not_list_is_held_out_whole_on_its_own_line(
+def test_a_fresh_set_the_split_does_not_list_is_held_out_whole_on_its_own_line(
     tmp_path: Path,
 ) -> None:
     tiny_set(tmp_path / "fresh_set_2")
@@ -265,6 +265,24 @@ def test_the_highest_fresh_set_the_split_does_not_list_is_held_out_whole_on_its_
     assert "arm_called_humanoid: structure Manipulator" in read[read.index("## Set `held-out`") :]
 
 
+def test_two_fresh_sets_built_together_are_both_held_out_and_neither_is_listed(
+    tmp_path: Path,
+) -> None:
+    tiny_set(tmp_path / "fresh_set_5")
+    tiny_set(tmp_path / "fresh_set_6")
+    split = tmp_path / "split.csv"
+    split.write_text(
+        "# seed 41, made by hand for this test\nset,robot,family,group,files_here,part\n",
+        encoding="utf-8",
+    )
+    sets = ["--set", str(tmp_path / "fresh_set_5"), "--set", str(tmp_path / "fresh_set_6")]
+    output = measure(*sets, "--split", str(split))
+    assert "held-out 6, held-out (fresh) 6" in output
+    assert "unsplit" not in output
+    assert "arm_called_humanoid" not in output
+    assert output.count("(8 misses of the blind set withheld") == 2
+
+
 def test_a_fresh_set_the_split_lists_even_in_part_is_no_longer_blind(tmp_path: Path) -> None:
     tiny_set(tmp_path / "fresh_set_4")
     split = tmp_path / "split.csv"
@@ -290,12 +308,13 @@ def _measure_tool() -> Any:
     return module
 
 
-def test_the_blind_set_is_the_highest_numbered_fresh_set_not_listed(tmp_path: Path) -> None:
+def test_every_fresh_set_the_split_does_not_list_is_blind(tmp_path: Path) -> None:
     tool = _measure_tool()
     split = {("fresh_set_1", "a"): "development", ("fresh_set_2", "b"): "development"}
     names = ["corpus", "fresh_set_1", "fresh_set_2", "fresh_set_3", "fresh_set_10", "fresh_set_x"]
-    assert tool.blind_set(names, split) == "fresh_set_10"
-    assert tool.blind_set(["corpus", "fresh_set_1", "fresh_set_2"], split) is None
+    # Sets are built two at a time: both unlisted ones are held out, not only the highest.
+    assert tool.blind_sets(names, split) == {"fresh_set_3", "fresh_set_10"}
+    assert tool.blind_sets(["corpus", "fresh_set_1", "fresh_set_2"], split) == set()
     for name in ("fresh_set_10", "fresh_set_2", "fresh_set_1", "notes", "fresh_set_x"):
         (tmp_path / name).mkdir()
     assert [p.name for p in tool.fresh_sets(tmp_path)] == [

@@ -45,11 +45,11 @@ lists its rows as ``development``: ``tools/fresh_set_1``, ``tools/fresh_set_2``,
 ``tools/fresh_set_7``, ``tools/fresh_set_8``, ``tools/fresh_set_9``, ``tools/fresh_set_10``,
 ``tools/fresh_set_11``, ``tools/fresh_set_12``, ``tools/fresh_set_13``, ``tools/fresh_set_14``,
 ``tools/fresh_set_15`` .. ``tools/fresh_set_26``, their READMEs). The
-*blind* set is the highest-numbered ``fresh_set_N`` among the sets measured whose name the
-split does not list at all (``split_identification.BLIND_NEXT``, when it is there): its rows
-are held out whole by their set, and count in ``held-out`` and again on a line of their own,
-``held-out (fresh)``. Moving it to development is listing it in the split; another unlisted
-fresh set is measured as ``unsplit``.
+*blind* sets are the ``fresh_set_N`` among the sets measured whose name the split does not
+list at all (``split_identification.BLIND_NEXT`` and the ones built beside it, two or more at
+a time): their rows are held out whole by their set, and count in ``held-out`` and again on a
+line of their own, ``held-out (fresh)``, their misses counted and not listed. Moving a set to
+development is listing it in the split.
 
 With ``--no-names`` each URDF is read with every link and joint renamed to a neutral id
 (``l0``, ``j0``, ... wherever the name is written: the tree, mimic joints, transmissions, Gazebo
@@ -94,9 +94,9 @@ from split_identification import (  # noqa: E402
 OWN_SET = ROOT / "tools" / "identification_set"
 ADDED_SET = ROOT / "tools" / "generalization_set"
 TOOLS = ROOT / "tools"
-# A fresh set's folder name: fresh_set_N (the highest N the split does not list is the blind one).
+# A fresh set's folder name: fresh_set_N (one the split does not list is blind).
 FRESH_NAME = re.compile(r"fresh_set_([0-9]+)")
-# The part the rows of the blind fresh set are also reported in, within the held-out part.
+# The part the rows of the blind fresh sets are also reported in, within the held-out part.
 FRESH_PART = "held-out (fresh)"
 PART_ORDER = ("development", "held-out", FRESH_PART, "unsplit")
 SPLIT = ROOT / "tools" / "identification_split.csv"
@@ -423,20 +423,24 @@ def fresh_sets(tools: Path = TOOLS) -> list[Path]:
     return [path for number, path in sorted((n, p) for n, p in found if n is not None)]
 
 
-def blind_set(names: Iterable[str], split: dict[tuple[str, str], str]) -> str | None:
-    """The blind set among ``names``: the highest-numbered ``fresh_set_N`` the split lists no row
-    of (a fresh set moves to development by being listed)."""
+def blind_sets(names: Iterable[str], split: dict[tuple[str, str], str]) -> frozenset[str]:
+    """The blind sets among ``names``: every ``fresh_set_N`` the split lists no row of (a fresh
+    set moves to development by being listed; sets are built two or more at a time)."""
     listed = {set_name for set_name, _ in split}
-    unlisted = [name for name in names if fresh_number(name) is not None and name not in listed]
-    return max(unlisted, key=lambda name: fresh_number(name) or 0, default=None)
+    return frozenset(
+        name for name in names if fresh_number(name) is not None and name not in listed
+    )
 
 
 def parts_of(
-    set_name: str, robot: str, split: dict[tuple[str, str], str], blind: str | None = None
+    set_name: str,
+    robot: str,
+    split: dict[tuple[str, str], str],
+    blind: frozenset[str] = frozenset(),
 ) -> list[str]:
     """The parts a row is measured in: its part in the split (``unsplit`` when it lists none);
-    a row of the blind set is held out by its set, and reported in the fresh part too."""
-    if set_name == blind:
+    a row of a blind set is held out by its set, and reported in the fresh part too."""
+    if set_name in blind:
         return ["held-out", FRESH_PART]
     return [split.get((set_name, robot), "unsplit")]
 
@@ -463,14 +467,14 @@ def measure(
     *,
     split: dict[tuple[str, str], str] | None = None,
     parts: dict[str, Measured] | None = None,
-    blind: str | None = None,
+    blind: frozenset[str] = frozenset(),
     shared: frozenset[str] = frozenset(),
     read_blind: bool = False,
 ) -> Measured | None:
     """Measure one set; with ``split``, each row into the Measured of its part in ``parts``
-    (the rows of the set named ``blind`` held out whole, see ``parts_of``). A file name in
+    (the rows of the sets named in ``blind`` held out whole, see ``parts_of``). A file name in
     ``shared`` (listed by another set too) is looked up only where this set keeps its files
-    (``lookup_folders``). The blind set's misses are counted, not listed, unless
+    (``lookup_folders``). A blind set's misses are counted, not listed, unless
     ``read_blind``."""
     truth = folder / "truth.csv"
     if not truth.is_file():
@@ -495,7 +499,7 @@ def measure(
                 measured.families.setdefault(family_of(row), Score(structures)),
                 measured.sources.setdefault(source_of(row), Score(structures)),
             ]
-        hidden = name == blind and not read_blind
+        hidden = name in blind and not read_blind
         since = [len(score.misses) for score in scores]
         urdf = locate(row["file"], narrow if row["file"] in shared else folders)
         srdf_name = row.get("srdf") or ""
@@ -583,8 +587,8 @@ def parser() -> argparse.ArgumentParser:
         metavar="SPLIT.csv",
         help="measure by the parts of a split (default file: tools/identification_split.csv): "
         "development and held-out side by side; with --all, tools/generalization_set and every "
-        "tools/fresh_set_N (the highest-numbered one the split does not list is blind: held "
-        "out whole, also as its own part, held-out (fresh))",
+        "tools/fresh_set_N (one the split does not list is blind: held out whole, also as "
+        "a part of its own, held-out (fresh))",
     )
     found.add_argument(
         "--no-names",
@@ -595,7 +599,7 @@ def parser() -> argparse.ArgumentParser:
     found.add_argument(
         "--read-blind",
         action="store_true",
-        help="list the blind set's misses too (withheld by default: once read, a blind set "
+        help="list the blind sets' misses too (withheld by default: once read, a blind set "
         "measures nothing unseen and is moved to development)",
     )
     found.add_argument(
@@ -661,7 +665,7 @@ def main(argv: list[str] | None = None) -> int:
         )
 
     split = read_split(args.split) if args.split else None
-    blind = blind_set((folder.name for folder in folders), split) if split is not None else None
+    blind = blind_sets((f.name for f in folders), split) if split is not None else frozenset()
     parts: dict[str, Measured] = {}
     sets: list[Measured] = []
     shared = shared_names(folders)

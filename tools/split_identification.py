@@ -49,10 +49,10 @@ after that), measured blind once and moved on 2026-11-29, those of ``tools/fresh
 ``tools/fresh_set_14`` .. the one ``LAST_MOVED`` names (each built blind after the one before, 14
 and 15 together), measured blind and moved on 2026-11-29 and 2026-11-30.
 
-The blind set is never listed: ``tools/measure_identification.py`` holds out whole, by its set,
-the highest-numbered ``tools/fresh_set_N`` this file does not list (next ``BLIND_NEXT``),
-so this file need not change (nor that set be read) while it is being built. Moving a fresh set
-to development is adding its number and day to ``MOVED_ON`` and re-making this file.
+A blind set is never listed: ``tools/measure_identification.py`` holds out whole, by its set,
+every ``tools/fresh_set_N`` this file does not list (next ``BLIND_NEXT``, and those built beside
+it), so this file need not change (nor those sets be read) while they are being built. Moving a
+fresh set to development is adding its number and day to ``MOVED_ON`` and re-making this file.
 
 The file written, ``tools/identification_split.csv``, has the seed and this method in its
 leading ``#`` lines, then one row per robot: ``set``, ``robot``, ``family``, ``group``,
@@ -78,7 +78,7 @@ ADDED_SET = ROOT / "tools" / "generalization_set"
 # brief of the one before after it was read, and moved on the day given here: moving the next
 # one is adding its number and day.
 MOVED_ON = dict.fromkeys(range(52, 130), "2026-11-30")
-MOVED_ON |= dict.fromkeys(range(130, 175), "2026-12-01")
+MOVED_ON |= dict.fromkeys(range(130, 177), "2026-12-01")
 LAST_MOVED = max(MOVED_ON)
 BLIND_NEXT = LAST_MOVED + 1
 MOVED_SETS = tuple(ROOT / "tools" / f"fresh_set_{n}" for n in range(1, LAST_MOVED + 1))
@@ -359,9 +359,9 @@ HEADER = (
         for n, day in sorted(MOVED_ON.items())
     )
     + f"""\
-# The blind set (the highest-numbered tools/fresh_set_N, next fresh_set_{BLIND_NEXT}) \
+# A blind set (every tools/fresh_set_N not listed here, next fresh_set_{BLIND_NEXT}) \
 is not listed: the
-# measurement tool holds it out whole by set.
+# measurement tool holds each out whole by set.
 # Re-make and compare: python tools/split_identification.py --check
 """
 )
