@@ -76,8 +76,8 @@ def _ground(body: Body, urdf_source: str) -> _Shown:
     drawn, a base the model moves in the plane (roles). A flying body's wheels that turn are
     landing gear and a plugin or a planar base that moves it in the plane (a planar-move or
     velocity-control plugin) is the simulator's mover, its velocity commands flight: neither
-    drives it (measured: no labelled aircraft is driven, docs/identify.md). A drive plugin or
-    wheels a controller drives still do (a robot that rolls and flies)."""
+    drives it (measured: no labelled aircraft is driven, docs/identify-journal.md). A drive
+    plugin or wheels a controller drives still do (a robot that rolls and flies)."""
     movers = set(body.mover_plugins) if body.flying else set()
     drives = tuple(plugin for plugin in body.drive_plugins if plugin not in movers)
     found = []
