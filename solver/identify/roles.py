@@ -379,14 +379,12 @@ class RoleReader:
             return Role(joint.name, kind, f"turns the propeller-named link {propeller} fixed to it")
         # A rim, a hub or an axle turning the tyres fixed to it (a CAD export naming only the
         # tyre); links named by a corner (``rear_left_rim``, the leg pattern's) name no part.
-        tyre = self._turns(joint, "wheel", also={"leg"})
+        tyre = self._turns(joint, "wheel", also=frozenset({"leg"}))
         if tyre is not None:
             return Role(joint.name, "wheel", f"turns the wheel-named link {tyre} fixed to it")
         return None
 
-    def _turns(
-        self, joint: Joint, part: str, also: frozenset[str] | set[str] = frozenset()
-    ) -> str | None:
+    def _turns(self, joint: Joint, part: str, also: frozenset[str] = frozenset()) -> str | None:
         """The ``part``-named link fixed below ``joint``'s child (an axle carrying its
         propeller, a rim its tyre), when no link fixed there names another part than ``part``
         and ``also`` (a car's hub carries its wheel and a brake rotor): what the joint turns
