@@ -377,10 +377,12 @@ class RoleReader:
         if propeller is not None:
             kind = "thruster" if self.marine else "rotor"
             return Role(joint.name, kind, f"turns the propeller-named link {propeller} fixed to it")
-        # A rim, a hub or an axle turning the tyres fixed to it (a CAD export naming only the
-        # tyre); links named by a corner (``rear_left_rim``, the leg pattern's) name no part.
-        tyre = self._turns(joint, "wheel", also=frozenset({"leg"}))
-        if tyre is not None:
+        # A rim turning the tyre fixed to it (a CAD export naming only the tyre), the rim named
+        # by its corner (``front_left_rim``: the leg pattern's corners name no part here). Not
+        # a body's own joint carrying a wheel-named link (a planar base's yaw).
+        corner = frozenset({"leg"})
+        tyre = self._turns(joint, "wheel", also=corner)
+        if tyre is not None and self.parts_of(joint.child) & {"wheel", *corner}:
             return Role(joint.name, "wheel", f"turns the wheel-named link {tyre} fixed to it")
         return None
 
