@@ -220,7 +220,7 @@ def test_flight_words_in_a_plugins_parameters_fly_only_a_body_that_cannot_roll_o
     assert identify_urdf(dog.text()).structure == "Quadruped"
 
 
-def car_of_tyres(below_front: str = "link_front_{}_tyre") -> RobotText:
+def car_of_tyres() -> RobotText:
     """A CAD export's car: front rims spinning on steered axles and a rear axle spinning two
     rims, each rim's tyre fixed to it, no joint named for a wheel (links named by corner; the
     rear axle's own link by nothing: it stays an axle)."""
@@ -236,7 +236,7 @@ def car_of_tyres(below_front: str = "link_front_{}_tyre") -> RobotText:
             f"link_front_{side}_axle",
             f"link_front_{side}_rim",
         )
-        robot.fixed(f"link_front_{side}_rim", below_front.format(side))
+        robot.fixed(f"link_front_{side}_rim", f"link_front_{side}_tyre")
     return robot
 
 
@@ -245,6 +245,7 @@ def test_a_rim_turning_the_tyre_fixed_to_it_is_a_wheel() -> None:
     assert identify_urdf(robot.text()).structure == "UGV"
     roles = {name: role.role for name, role in joint_roles(tree_of(robot)).items()}
     assert roles["joint_front_left_rim"] == roles["joint_front_right_rim"] == "wheel"
+    assert roles.get("joint_rear_axle") != "wheel"
     assert "leg" not in roles.values()
 
 
