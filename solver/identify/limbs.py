@@ -1422,7 +1422,7 @@ def _beside(tree: JointTree, one: Limb, other: Limb, *, on_line: bool) -> bool:
     gap = distance(a, b)
     if not parallel(axis, poses.axis(second)) or gap > _FIVE_BAR_GAP:
         return False
-    line = (b[0] - a[0], b[1] - a[1], b[2] - a[2])
+    line = minus(b, a)
     centre = poses.place(tree.urdf.root)
     same_side = (a[1] - centre[1]) * (b[1] - centre[1]) > 0
     return same_side and (not on_line or gap < 1e-6 or parallel(line, axis))
@@ -1663,7 +1663,7 @@ def _bends(tree: JointTree, joints: list[Joint]) -> bool:
     places = [tree.poses.place(joint.child) for joint in joints]
     for at, joint in enumerate(joints[:-2]):
         here, ahead = places[at], places[at + 2]
-        run = (ahead[0] - here[0], ahead[1] - here[1], ahead[2] - here[2])
+        run = minus(ahead, here)
         if distance(ahead, here) > _AT_ONE_POINT and parallel(tree.poses.axis(joint), run):
             return False
     return True

@@ -82,8 +82,7 @@ def _unit(vector: Vector) -> Vector:
 
 
 def _cosine(one: Vector, other: Vector) -> float:
-    a, b = _unit(one), _unit(other)
-    return abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2])
+    return abs(dot(_unit(one), _unit(other)))
 
 
 def parallel(one: Vector, other: Vector) -> bool:
@@ -93,7 +92,7 @@ def parallel(one: Vector, other: Vector) -> bool:
 
 def same_way(one: Vector, other: Vector) -> bool:
     """The two directions point one way (parallel, not opposed)."""
-    return parallel(one, other) and sum(a * b for a, b in zip(one, other, strict=True)) > 0
+    return parallel(one, other) and dot(one, other) > 0
 
 
 def perpendicular(one: Vector, other: Vector) -> bool:

@@ -161,8 +161,9 @@ class RoleReader:
         self.parts_of = parts_of
         # A plugin says water by its words (a hydrodynamics, buoyancy or boat plugin): then no
         # plugin's rotor entries fly the body (``_plugin_parts``).
-        self.water_plugins = any(_pattern_parts(p, profile) & _WATER_PARTS for p in urdf.plugins)
-        self.plugin_parts = {id(p): self._plugin_parts(p) for p in urdf.plugins}
+        said = {id(p): _pattern_parts(p, profile) for p in urdf.plugins}
+        self.water_plugins = any(parts & _WATER_PARTS for parts in said.values())
+        self.plugin_parts = {id(p): self._plugin_parts(p, said[id(p)]) for p in urdf.plugins}
         self.fixed_thrusters = self._fixed_thrusters()
         self.named_vessel = self._named_vessel()
         self.named_submersible = self._name_says(_SUBMERSIBLE_NAME)
@@ -227,8 +228,10 @@ class RoleReader:
         """Links no movable joint moves (the root's part), in one walk from the root."""
         return frozenset((self.urdf.root, *self.urdf.fixed_below(self.urdf.root)))
 
-    def _plugin_parts(self, plugin: PluginTag) -> frozenset[str]:
-        found = set(_pattern_parts(plugin, self.profile))
+    def _plugin_parts(self, plugin: PluginTag, said: frozenset[str]) -> frozenset[str]:
+        """What ``plugin`` is: the parts its words say (``said``), and what its entries and
+        parameters show whatever it is called."""
+        found = set(said)
         # A plugin that lists thruster entries drives thrusters, whatever it is called (a
         # floating body's controller with a <thruster> per propeller).
         thruster = self.profile.plugin_pattern("thruster")
