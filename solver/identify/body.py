@@ -56,6 +56,7 @@ from solver.identify.limbs import (
     meeting_tips,
     moved_by,
     parallel_robot,
+    pendulum,
     spine,
     wheeled_spine,
     wrist,
@@ -577,6 +578,8 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
     moves = flying or grounded(tree, parts.roles)
     parts.limbs = bolted_chain(tree, parts.limbs, moves)
     parts.limbs = gripping_leg(lone_leg(tree, parts.limbs, moves))
+    if not parts.roles and not parts.trunk:  # a pendulum rig is its one chain, too
+        parts.limbs = pendulum(tree, parts.limbs)
 
 
 def _trunks(tree: JointTree, limbs: list[Limb]) -> frozenset[str | None]:

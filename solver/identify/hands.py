@@ -127,8 +127,10 @@ def _about_one_line(directions: list[tuple[float, float, float]]) -> bool:
 def _jaw_pairs(tree: JointTree, taken: set[str]) -> dict[str, str]:
     """Two limited joints side by side on one link, each driven on its own and moving nothing
     but its own followers (a leaf, or a jaw's linkage of mimic joints): jaws at the end of a
-    chain, or a gripper's whole body (its only motions). At the end of a chain that is no
-    head's, two hinges mirroring each other (:func:`_twins`) are jaws too."""
+    chain, or a gripper's whole body (its only motions), unless they swing both ways about the
+    line between them (:func:`_ears`: they never close on each other; a tilt-rotor's two motor
+    mounts). At the end of a chain that is no head's, two hinges mirroring each other
+    (:func:`_twins`) are jaws too."""
     by_parent: dict[str, list[Joint]] = {}
     walk = Walk(tree.urdf)
     for joint in tree.urdf.joints:
@@ -159,7 +161,7 @@ def _pair_why(tree: JointTree, link: str, pair: list[Joint], motions: list[str])
         return f"one of two jaws side by side at the end of a chain ({link})"
     if at_the_end and _twins(pair) and not _on_a_head(tree, link):
         return f"one of two hinges mirroring each other at the end of a chain ({link})"
-    if beside and _only_motions(tree, pair, motions):
+    if beside and _only_motions(tree, pair, motions) and not _ears(pair):
         return f"one of two jaws side by side, the body's only motions ({link})"
     return ""
 

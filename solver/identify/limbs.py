@@ -46,6 +46,9 @@ Where names say nothing, the chains' places and shapes still speak:
   modules and nothing else (passive side wheels): it is still a spine, and they are passive
   (:func:`wheeled_spine`); on a robot that calls itself a snake, any one chain of two turning
   joints or more is (:data:`_SNAKE_NAME`);
+* on a robot that calls itself a pendulum rig (a control course's plant: a cart-pole, a Furuta
+  pendulum, an acrobot), its one chain ending in no gripper is the plant's links, swung by
+  their actuators: *other*, no arm (:func:`pendulum`, :data:`_PENDULUM_NAME`);
 * a short chain from the root that carries a whole hand and nothing else is that hand's *wrist*
   (a hand hung from its forearm), no arm (:func:`wrist`);
 * trunk joints that carry a gripper chain too short to be an arm, every link on the way from
@@ -98,6 +101,7 @@ __all__ = [
     "legs_by_place",
     "legs_by_reach",
     "lone_leg",
+    "pendulum",
     "sort_limbs",
     "spine",
     "tips_meet",
@@ -196,6 +200,10 @@ _LIMB_JOINT_WORDS = re.compile(
     r"shoulder|elbow|wrist|forearm|upper_?arm|hip|knee|ankle|thigh|shin|foot", re.IGNORECASE
 )
 _NAMED_SPINE_JOINTS = 2
+# A robot that calls itself a pendulum rig, a control course's plant (``cart_pole``,
+# ``furuta_pendulum``, ``acrobot``, ``pendubot``, ``double_pendulum``): not a manipulator
+# named for its shape (``pendulum_arm``: :data:`_MANIPULATOR_NAME`).
+_PENDULUM_NAME = re.compile(r"pendul|cart[_\s-]?pole|acrobot|pendubot|furuta", re.IGNORECASE)
 # A linear actuator drawn open beside a leg: at most this many joints (two pivots, a rod).
 _DRIVE_JOINTS = 3
 # A spine carries at least this many single leaf joints to be read with side wheels.
@@ -1501,6 +1509,21 @@ def spine(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     else:
         return limbs
     return [replace(limb, kind="spine", why=why)]
+
+
+def pendulum(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
+    """The body's one arm as a pendulum rig's links (*other*) when the robot's name says one
+    (:data:`_PENDULUM_NAME`, not a manipulator's) and the chain ends in no gripper: a control
+    course's plant, its joints swung by their actuators to balance it, carrying no tool. Asked
+    only of a body with nothing else (no wheels: a robot balancing on them is a vehicle)."""
+    name = tree.urdf.name
+    if len(limbs) != 1 or not _PENDULUM_NAME.search(name) or _MANIPULATOR_NAME.search(name):
+        return limbs
+    limb = limbs[0]
+    if limb.kind != "arm" or limb.gripper:
+        return limbs
+    why = f"a pendulum rig's links, on a robot named one ({shown(name)})"
+    return [replace(limb, kind="other", why=why)]
 
 
 def _named_snake(tree: JointTree) -> bool:

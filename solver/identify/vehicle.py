@@ -149,7 +149,9 @@ def fixed_rotors(tree: JointTree) -> list[str]:
     where nothing moves, leaf links drawn as propeller discs side by side, whatever their
     names (:func:`_discs`).
 
-    Not on a body with legs or wheels: there a fixed ``*_rotor`` link is a motor's.
+    Not on a body with legs or wheels: there a fixed ``*_rotor`` link is a motor's; nor a
+    wheel-named link fixed below a motor (``front_left_motor_link_to_front_left_wheel_link``:
+    a trimmed ground base's wheel, its joint named for both links).
     """
     legs_or_wheels = any(
         j.movable and (tree.matches("leg", j) or tree.matches("wheel", j)) for j in tree.urdf.joints
@@ -167,6 +169,7 @@ def fixed_rotors(tree: JointTree) -> list[str]:
         if j.type == "fixed"
         and not tree.urdf.children(j.child)
         and j.parent in on_the_hull
+        and not tree.matches("wheel", j)
         and (tree.matches("rotor", j) or (still and MOTOR.search(f"{j.name} {j.child}")))
     ]
     if still and len(found) < tree.profile.limb("min_rotors"):

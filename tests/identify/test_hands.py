@@ -569,6 +569,28 @@ def test_two_hinges_swinging_both_ways_on_one_axis_line_on_a_head_are_ears() -> 
     assert grippers_of(placeholders.replace('lower="-1" upper="1"', 'lower="0" upper="0"')) == 1
 
 
+def side_mounts(axis: str, travel: tuple[float, float] = (-0.8, 0.8)) -> RobotText:
+    """A body whose only motions are two servos at its sides, each tilting a mount."""
+    robot = RobotText("servo_pair", root="base")
+    limit = f'<limit lower="{travel[0]}" upper="{travel[1]}" effort="1" velocity="1"/>'
+    for side, y in (("left", "0.11"), ("right", "-0.11")):
+        body = f'<origin xyz="0 {y} 0.12"/><axis xyz="{axis}"/>{limit}'
+        robot.joint(f"servo_{side}", "revolute", "base", f"mount_{side}", body)
+    return robot
+
+
+def test_a_bodys_only_two_hinges_swinging_both_ways_about_the_line_between_them_are_no_jaws() -> (
+    None
+):
+    # They turn about the line that joins them: they never close on each other (a tilt-rotor's
+    # two motor mounts, a pair of ears), whatever they are.
+    assert grippers(side_mounts("0 1 0")) == 0
+    assert identify_urdf(side_mounts("0 1 0").text()).structure == "Other"
+    # Hinged across that line, or curling one way (pliers' blades on one pin), they close.
+    assert grippers(side_mounts("1 0 0")) == 1
+    assert grippers(side_mounts("0 1 0", (0.0, 1.2))) == 1
+
+
 def test_jaws_one_motion_closes_at_an_arms_end_stay_jaws_below_a_shoulder_pan() -> None:
     # A UR-style arm: "pan" names its shoulder far above the gripper, no head's.
     names = ["shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint", "wrist_1_joint"]

@@ -464,6 +464,54 @@ def test_a_snake_named_so_whose_chain_slides_or_ends_in_a_gripper_is_no_snake() 
     assert identify_urdf(gripping.text()).structure == "Manipulator"
 
 
+def cart_pole(name: str) -> str:
+    """A control course's cart-pole: a cart sliding on a rail bolted to the world, a pole
+    hinged on it, both driven (a transmission on each), nothing else."""
+    robot = RobotText(name, root="world")
+    robot.fixed("world", "rail")
+    cart = builders.placed(robot, "cart_joint", "prismatic", "rail", "cart", axis="1 0 0")
+    pole = '<origin xyz="0 0 0.1"/><axis xyz="0 1 0"/>'
+    robot.joint("pole_joint", "continuous", cart, "pole", pole)
+    robot.add(builders.transmission("cart_joint", "EffortJointInterface"))
+    robot.add(builders.transmission("pole_joint", "EffortJointInterface"))
+    return robot.text()
+
+
+@pytest.mark.parametrize(
+    "name", ["cart_pole", "cartpole", "furuta_pendulum", "acrobot", "Pendubot", "double_pendulum"]
+)
+def test_a_robot_named_a_pendulum_rig_swings_its_one_chain_it_is_no_arm(name: str) -> None:
+    result = identify_urdf(cart_pole(name))
+    assert result.structure == "Other"
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["other"]
+    assert "a pendulum rig's links" in result.body.limbs[0].why
+    # Its actuators are commanded one by one: the plant's joints take the controller's output.
+    assert [c.motion_control for c in result.motion_controls] == ["Joint"]
+
+
+def test_without_a_pendulums_name_the_same_chain_is_an_arm() -> None:
+    assert identify_urdf(cart_pole("slider_arm")).structure == "Manipulator"
+
+
+def test_a_pendulum_named_manipulator_or_one_ending_in_a_gripper_is_an_arm() -> None:
+    assert identify_urdf(cart_pole("pendulum_arm")).structure == "Manipulator"
+    gripping = cart_pole("cart_pole").replace(
+        "</robot>",
+        '<link name="gripper_finger"/><joint name="gripper_finger_joint" type="prismatic">'
+        '<parent link="pole"/><child link="gripper_finger"/><axis xyz="0 0 1"/>'
+        '<limit lower="0" upper="0.04" effort="1" velocity="1"/></joint></robot>',
+    )
+    assert identify_urdf(gripping).structure == "Manipulator"
+
+
+def test_a_robot_named_a_pendulum_that_balances_on_wheels_is_a_vehicle() -> None:
+    robot = RobotText("inverted_pendulum_robot", root="base_link")
+    builders.wheeled_base(robot)
+    robot.add(builders.model_plugin("drive", "libgazebo_ros_diff_drive.so"))
+    assert identify_urdf(robot.text()).structure == "UGV"
+
+
 @pytest.mark.parametrize("fixed_to_the_world", [False, True])
 def test_a_short_chain_carrying_a_whole_hand_is_its_wrist_not_an_arm(
     fixed_to_the_world: bool,

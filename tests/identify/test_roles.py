@@ -415,7 +415,8 @@ def test_a_plugin_of_its_own_that_names_a_left_and_a_right_track_moves_the_body_
 
 def two_hinges(word: str) -> RobotText:
     """Two hinges with stops on level axles, one on each side, named ``WORD_izquierda_joint``
-    and ``WORD_derecha_joint``: wheels only by their name (a gripper's two fingers else)."""
+    and ``WORD_derecha_joint``: wheels only by their name (else two hinges that swing about the
+    line between them: no jaws either, they never close on each other)."""
     base = RobotText("base")
     for side, y in (("izquierda", 0.3), ("derecha", -0.3)):
         builders.placed(
@@ -435,7 +436,7 @@ def test_a_wheel_named_in_spanish_or_french_is_a_wheel(word: str) -> None:
 @pytest.mark.parametrize("word", ["proue", "rouet", "ruota", "ruotante"])
 def test_a_word_holding_roue_inside_it_or_italians_rotate_names_no_wheel(word: str) -> None:
     result = identify_urdf(two_hinges(word).text())
-    assert (result.structure, {role.role for role in result.roles}) == ("Gripper", {"finger"})
+    assert (result.structure, {role.role for role in result.roles}) == ("Other", {"other"})
 
 
 def jaws(word: str) -> RobotText:

@@ -815,6 +815,9 @@ def test_a_walker_whose_packages_configure_its_legs_controllers_and_no_gait_is_c
         "type: velocity_controllers/JointVelocityController",
         "type: forward_command_controller/ForwardCommandController",
         "type: JointPositionController",
+        # A ros_gz bridge carrying a Gazebo Sim joint position controller's command topic.
+        "gz_topic_name: /model/craft/joint/RR_calf/0/cmd_pos, ros_type_name: std_msgs/msg/Float64",
+        "gz_topic_name: /model/craft/joint/RR_calf/cmd_force",
     ],
 )
 def test_each_kind_of_joint_controller_naming_a_leg_commands_it(

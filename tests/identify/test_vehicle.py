@@ -81,6 +81,22 @@ def test_fixed_rotor_links_beside_moving_joints_are_motors_not_flight() -> None:
     assert result.body.fixed_rotors == ()
 
 
+def test_wheels_fixed_below_motor_links_on_a_still_body_are_a_trimmed_base_not_rotors() -> None:
+    # Each wheel's joint is named for both links (``fl_motor_link_to_fl_wheel_link_joint``), as
+    # an exporter names them; a planar-move plugin slides the base: a ground robot.
+    robot = RobotText("omni", root="base_link")
+    for corner in ("front_left", "front_right", "back_left", "back_right"):
+        motor = robot.fixed("base_link", f"{corner}_motor_link")
+        wheel = f"{corner}_wheel_link"
+        robot.joint(f"{motor}_to_{wheel}_joint", "fixed", motor, wheel)
+    robot.add(builders.model_plugin("mover", "libgazebo_ros_planar_move.so"))
+    result = identify_urdf(robot.text())
+    assert result.structure == "UGV"
+    assert result.body is not None
+    assert result.body.fixed_rotors == ()
+    assert [c.motion_control for c in result.motion_controls] == ["Driving"]
+
+
 def thrusters_by_name(count: int = 4) -> RobotText:
     """``count`` joints named as thrusters on a hull; no plugin, no sensor says where it swims."""
     robot = RobotText("hull")
