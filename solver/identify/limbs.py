@@ -12,7 +12,8 @@ carrying wheels, rotors or thrusters (Pepper's hip/knee over its wheeled base, a
 unit, a boat's steered engine) is a *mount*, not a limb, except legs that each end in a wheel,
 three or more of them (a wheel-legged robot walks on them). Anything else (a flipper, a 2-joint
 pan unit without a name) is *other*, unless it carries a camera or a range sensor: a short
-unnamed chain pointing one is a *head* (a pan/tilt unit).
+unnamed chain pointing one is a *head* (a pan/tilt unit), but on a robot that calls itself an
+arm it is that arm, the camera at its tip (:data:`_ARM_NAME`).
 
 Where names say nothing, the chains' places and shapes still speak:
 
@@ -200,6 +201,10 @@ _LIMB_JOINT_WORDS = re.compile(
     r"shoulder|elbow|wrist|forearm|upper_?arm|hip|knee|ankle|thigh|shin|foot", re.IGNORECASE
 )
 _NAMED_SPINE_JOINTS = 2
+# A robot that calls itself an arm, read as a word (``simple_arm``, ``Arm``,
+# ``camera_manipulator``; not ``xarm``'s product name, nor ``armadillo``): a short unnamed chain
+# carrying its camera is that arm, the camera at its tip, no pan/tilt unit.
+_ARM_NAME = re.compile(r"(^|[^a-z])(arm|manipulator)([^a-z]|$)", re.IGNORECASE)
 # A robot that calls itself a pendulum rig, a control course's plant (``cart_pole``,
 # ``furuta_pendulum``, ``acrobot``, ``pendubot``, ``double_pendulum``): not a manipulator
 # named for its shape (``pendulum_arm``: :data:`_MANIPULATOR_NAME`).
@@ -1915,6 +1920,11 @@ def _unnamed_kind(
         and _turns(chain)
         and points_a_sensor(tree, chain[-1])
     ):
+        if _ARM_NAME.search(tree.urdf.name):
+            return "arm", (
+                f"a chain of {length} joint(s) carrying a camera or a range sensor, on a robot"
+                f" named an arm ({shown(tree.urdf.name)}): its camera rides the arm's tip"
+            )
         return "head", (
             f"a chain of {length} joint(s) carrying a camera or a range sensor (a pan/tilt unit)"
         )

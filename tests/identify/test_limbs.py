@@ -658,6 +658,34 @@ def test_a_short_unnamed_chain_carrying_a_camera_is_a_head() -> None:
     assert "a pan/tilt unit" in result.body.limbs[0].why
 
 
+def pan_and_tilt(name: str) -> str:
+    """A pan joint, a tilt joint and a camera fixed at the tip, bolted to the world."""
+    return (
+        f'<robot name="{name}"><link name="world"/><link name="l1"/><link name="l2"/>'
+        '<link name="camera_link"/>'
+        + builders.joint_xml("joint_1", "continuous", "world", "l1", "0 0 0.1", "0 0 1")
+        + builders.joint_xml("joint_2", "continuous", "l1", "l2", "0 0 0.5", "0 1 0")
+        + '<joint name="camera_joint" type="fixed"><parent link="l2"/><child link="camera_link"/>'
+        '<origin xyz="0 0 0.5"/></joint>'
+        '<gazebo reference="camera_link"><sensor name="cam" type="camera"/></gazebo></robot>'
+    )
+
+
+@pytest.mark.parametrize("name", ["simple_arm", "Arm", "camera_manipulator", "arm_v2"])
+def test_a_robot_named_an_arm_carries_its_camera_on_that_short_chain_no_pan_tilt_unit(
+    name: str,
+) -> None:
+    result = identify_urdf(pan_and_tilt(name))
+    assert result.structure == "Manipulator"
+    assert result.body is not None
+    assert "on a robot named an arm" in result.body.limbs[0].why
+
+
+@pytest.mark.parametrize("name", ["camera_rig", "xarm_head", "armadillo", "pan_tilt"])
+def test_without_an_arms_name_the_chain_turning_a_camera_is_a_pan_tilt_unit(name: str) -> None:
+    assert identify_urdf(pan_and_tilt(name)).structure == "Pan/Tilt Unit"
+
+
 def limb_kinds(robot: RobotText) -> list[str]:
     body = identify_urdf(robot.text()).body
     assert body is not None
