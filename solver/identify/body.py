@@ -41,6 +41,7 @@ from solver.identify.limbs import (
     Limb,
     arms_beside_legs,
     bolted_chain,
+    camera_arm,
     closed_arms,
     closed_loops,
     drives_beside_legs,
@@ -578,8 +579,10 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
     moves = flying or grounded(tree, parts.roles)
     parts.limbs = bolted_chain(tree, parts.limbs, moves)
     parts.limbs = gripping_leg(lone_leg(tree, parts.limbs, moves))
-    if not parts.roles and not parts.trunk:  # a pendulum rig is its one chain, too
-        parts.limbs = pendulum(tree, parts.limbs)
+    if not parts.roles and not parts.trunk:
+        # Read by the robot's name, once every chain has its kind (a short chain bolted to the
+        # world is an arm by then): a pendulum rig's one chain, an arm's camera on its tip.
+        parts.limbs = camera_arm(tree, pendulum(tree, parts.limbs))
 
 
 def _trunks(tree: JointTree, limbs: list[Limb]) -> frozenset[str | None]:

@@ -9,7 +9,8 @@ gripper's pair, short and close together (:func:`finger_groups`).
 Jaws are told by where they are too (:func:`jaws`): joints side by side on one link that turn
 or slide about one line with nothing beyond them but their own followers (a linkage of mimic
 joints), closed by one motion (mimic joints follow one driver; not on a head, where a mirrored
-pair, or a pair swinging both ways about the line between them, is ears or eyelids) or, at the
+pair, or a pair swinging both ways about the line between them, is ears or eyelids, nor such a
+swinging pair that is a body's only motions, a tilt-rotor's two motor mounts) or, at the
 end of a chain of two joints or more, each by its own (a humanoid's split gripper); so are the
 joints of a body whose every motion is one motor's, turning on its link about three directions
 or more (a linkage gripper's fingers spread about its palm). A hand is counted by its fingers,
@@ -210,8 +211,9 @@ def _head_parts(pair: list[Joint]) -> bool:
 
 def _ears(pair: list[Joint]) -> bool:
     """Two hinges placed apart along their own axis, each with written limits (no placeholder)
-    travelling as far either way: on a head, ears that swing (a head's jaws would close one
-    way, as pliers' or a clamshell's do on a gripper, which this is not asked of)."""
+    travelling as far either way: they never close on each other (jaws close one way, as
+    pliers' or a clamshell's do). On a head, ears that swing; as a body's only motions, a
+    tilt-rotor's two motor mounts (:func:`_pair_why`)."""
     one, other = pair
     (ax, ay, az), (bx, by, bz) = one.origin, other.origin
     between = (bx - ax, by - ay, bz - az)

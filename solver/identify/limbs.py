@@ -12,8 +12,8 @@ carrying wheels, rotors or thrusters (Pepper's hip/knee over its wheeled base, a
 unit, a boat's steered engine) is a *mount*, not a limb, except legs that each end in a wheel,
 three or more of them (a wheel-legged robot walks on them). Anything else (a flipper, a 2-joint
 pan unit without a name) is *other*, unless it carries a camera or a range sensor: a short
-unnamed chain pointing one is a *head* (a pan/tilt unit), but on a robot that calls itself an
-arm it is that arm, the camera at its tip (:data:`_ARM_NAME`).
+unnamed chain pointing one is a *head* (a pan/tilt unit), but the only limb of a robot that
+calls itself an arm is that arm, the camera at its tip (:func:`camera_arm`).
 
 Where names say nothing, the chains' places and shapes still speak:
 
@@ -92,6 +92,7 @@ __all__ = [
     "Limb",
     "arms_beside_legs",
     "bolted_chain",
+    "camera_arm",
     "chain_ends",
     "closed_loops",
     "find_limbs",
@@ -201,14 +202,16 @@ _LIMB_JOINT_WORDS = re.compile(
     r"shoulder|elbow|wrist|forearm|upper_?arm|hip|knee|ankle|thigh|shin|foot", re.IGNORECASE
 )
 _NAMED_SPINE_JOINTS = 2
-# A robot that calls itself an arm, read as a word (``simple_arm``, ``Arm``,
-# ``camera_manipulator``; not ``xarm``'s product name, nor ``armadillo``): a short unnamed chain
-# carrying its camera is that arm, the camera at its tip, no pan/tilt unit.
-_ARM_NAME = re.compile(r"(^|[^a-z])(arm|manipulator)([^a-z]|$)", re.IGNORECASE)
+# A robot that calls itself an arm, read as a word of its name, camelCase split (``simple_arm``,
+# ``SimpleArm``, ``camera_manipulator``; not ``xarm``'s product name, nor ``armadillo``).
+_ARM_NAME = re.compile(r"(^|[^a-z])(arm|manipulator)s?([^a-z]|$)", re.IGNORECASE)
 # A robot that calls itself a pendulum rig, a control course's plant (``cart_pole``,
-# ``furuta_pendulum``, ``acrobot``, ``pendubot``, ``double_pendulum``): not a manipulator
-# named for its shape (``pendulum_arm``: :data:`_MANIPULATOR_NAME`).
+# ``furuta_pendulum``, ``acrobot``, ``pendubot``, ``double_pendulum_2dof``): not an arm that
+# balances one (``pendulum_arm``: :data:`_ARM_NAME`).
 _PENDULUM_NAME = re.compile(r"pendul|cart[_\s-]?pole|acrobot|pendubot|furuta", re.IGNORECASE)
+# The most joints a pendulum rig's chain has (a triple pendulum); an arm balancing a pole
+# (a UR5's six joints and the pole's) is longer.
+_PENDULUM_JOINTS = 3
 # A linear actuator drawn open beside a leg: at most this many joints (two pivots, a rod).
 _DRIVE_JOINTS = 3
 # A spine carries at least this many single leaf joints to be read with side wheels.
@@ -1518,17 +1521,45 @@ def spine(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
 
 def pendulum(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     """The body's one arm as a pendulum rig's links (*other*) when the robot's name says one
-    (:data:`_PENDULUM_NAME`, not a manipulator's) and the chain ends in no gripper: a control
-    course's plant, its joints swung by their actuators to balance it, carrying no tool. Asked
-    only of a body with nothing else (no wheels: a robot balancing on them is a vehicle)."""
+    (:data:`_PENDULUM_NAME`) and no arm (:func:`_named_arm`), and the chain is short
+    (:data:`_PENDULUM_JOINTS`) with no arm's or leg's joint words (:func:`_limb_joint_words`):
+    a control course's plant, its joints swung by their actuators to balance it, carrying no
+    tool. Asked only of a body with nothing else (no wheels, a robot balancing on them, and
+    no gripper: both are roles)."""
     name = tree.urdf.name
-    if len(limbs) != 1 or not _PENDULUM_NAME.search(name) or _MANIPULATOR_NAME.search(name):
+    if len(limbs) != 1 or not _PENDULUM_NAME.search(name) or _named_arm(name):
         return limbs
     limb = limbs[0]
-    if limb.kind != "arm" or limb.gripper:
+    joints = [j for j in (tree.urdf.joint(n) for n in limb.joints) if j is not None]
+    if limb.kind != "arm" or len(joints) > _PENDULUM_JOINTS or _limb_joint_words(joints):
         return limbs
     why = f"a pendulum rig's links, on a robot named one ({shown(name)})"
     return [replace(limb, kind="other", why=why)]
+
+
+def camera_arm(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
+    """The body's one limb, a short unnamed chain read as a pan/tilt head (it turns a camera
+    or a range sensor), as an arm when the robot's name says one (:func:`_named_arm`): the
+    camera rides the arm's tip (a course's two-joint ``simple_arm``). Asked only of a body
+    with nothing else (no wheels, no other limb: a mobile base's or an arm's pan/tilt camera
+    stays a head)."""
+    if len(limbs) != 1 or limbs[0].kind != "head" or limbs[0].named:
+        return limbs
+    name = tree.urdf.name
+    if not _named_arm(name):
+        return limbs
+    why = f"a short chain turning a camera, on a robot named an arm ({shown(name)})"
+    return [replace(limbs[0], kind="arm", why=why)]
+
+
+def _named_arm(name: str) -> bool:
+    """The robot's name says an arm or a manipulator as a word (:data:`_ARM_NAME`), a
+    camelCase name split into its words first (``SimpleArm``)."""
+    return bool(_ARM_NAME.search(_CAMEL.sub("_", name)))
+
+
+# Where a camelCase name's next word starts (``Simple|Arm``).
+_CAMEL = re.compile(r"(?<=[a-z0-9])(?=[A-Z])")
 
 
 def _named_snake(tree: JointTree) -> bool:
@@ -1920,11 +1951,6 @@ def _unnamed_kind(
         and _turns(chain)
         and points_a_sensor(tree, chain[-1])
     ):
-        if _ARM_NAME.search(tree.urdf.name):
-            return "arm", (
-                f"a chain of {length} joint(s) carrying a camera or a range sensor, on a robot"
-                f" named an arm ({shown(tree.urdf.name)}): its camera rides the arm's tip"
-            )
         return "head", (
             f"a chain of {length} joint(s) carrying a camera or a range sensor (a pan/tilt unit)"
         )

@@ -110,8 +110,10 @@ def joint_controllers(
     ``motion.flight``) and no other package of the workspace is named for it (a
     ``gait_planner`` beside them that names none of them): a body whose author ships those
     joints' controllers and nothing that moves the body as a whole is commanded joint by joint,
-    whatever it could do (:func:`solver.identify.motion.controls_from_description`). None when a
-    bound stopped the reading: what was not read may move it."""
+    whatever it could do (:func:`solver.identify.motion.controls_from_description`). A ``ros_gz``
+    bridge's command topic of a Gazebo Sim joint controller for one of the ``joints``
+    configures one too (:func:`_commanded_in_gazebo`). None when a bound stopped the reading:
+    what was not read may move it."""
     # Each joint by its name after a namespace (``firefly/rotor_0_joint``), as a controller's
     # list names it; a name no word can be is not taken as named here: this is a claim.
     words = {tail for name in joints if _WORD.fullmatch(tail := name.rsplit("/", 1)[-1])}
@@ -125,7 +127,29 @@ def joint_controllers(
         matched = rule.controllers.find(shipped.text)
         if matched is not None and named_joints(replace(workspace, files=(shipped,)), words):
             return _shown_file(shipped.package, shipped.path, matched)
+        topic = _commanded_in_gazebo(shipped.text, words)
+        if topic is not None:
+            return _shown_file(shipped.package, shipped.path, topic)
     return None
+
+
+def _commanded_in_gazebo(text: str, joints: Collection[str]) -> str | None:
+    """The first Gazebo Sim joint controller's command topic in ``text`` (a ``ros_gz`` bridge
+    configuration's ``/model/h1/joint/left_knee_joint/0/cmd_pos``, or ``.../cmd_force``) whose
+    joint is one of ``joints``, or None: that joint's controller is configured, as a
+    ``ros2_control`` one would be. A topic naming another joint (a flipper's) says nothing of
+    these."""
+    for found in _GAZEBO_JOINT_COMMAND.finditer(text):
+        if found.group("joint") in joints:
+            return found.group(0)
+    return None
+
+
+# A Gazebo Sim joint position or force controller's command topic (``joint/J/0/cmd_pos``; a
+# velocity controller's ``cmd_vel`` is read as a velocity command, shipped software).
+_GAZEBO_JOINT_COMMAND = re.compile(
+    r"(?<![\w-])joint/(?P<joint>[\w.-]+)/(?:\d+/)?cmd_(?:pos|force)\b"
+)
 
 
 def named_joints(workspace: Workspace, joints: Collection[str]) -> frozenset[str]:

@@ -150,8 +150,8 @@ def fixed_rotors(tree: JointTree) -> list[str]:
     names (:func:`_discs`).
 
     Not on a body with legs or wheels: there a fixed ``*_rotor`` link is a motor's; nor a
-    wheel-named link fixed below a motor (``front_left_motor_link_to_front_left_wheel_link``:
-    a trimmed ground base's wheel, its joint named for both links).
+    wheel-named link, fixed wherever (a trimmed ground base's wheel below its motor link,
+    ``front_left_motor_link_to_front_left_wheel_link``, its joint named for both links).
     """
     legs_or_wheels = any(
         j.movable and (tree.matches("leg", j) or tree.matches("wheel", j)) for j in tree.urdf.joints

@@ -478,7 +478,8 @@ def cart_pole(name: str) -> str:
 
 
 @pytest.mark.parametrize(
-    "name", ["cart_pole", "cartpole", "furuta_pendulum", "acrobot", "Pendubot", "double_pendulum"]
+    "name",
+    ["cart_pole", "cartpole", "furuta_pendulum", "acrobot", "Pendubot", "double_pendulum_2dof"],
 )
 def test_a_robot_named_a_pendulum_rig_swings_its_one_chain_it_is_no_arm(name: str) -> None:
     result = identify_urdf(cart_pole(name))
@@ -503,6 +504,14 @@ def test_a_pendulum_named_manipulator_or_one_ending_in_a_gripper_is_an_arm() -> 
         '<limit lower="0" upper="0.04" effort="1" velocity="1"/></joint></robot>',
     )
     assert identify_urdf(gripping).structure == "Manipulator"
+
+
+def test_an_arm_balancing_a_pendulum_is_an_arm() -> None:
+    # Six joints named as an arm's, and the pole's hinge at its tip: a UR5 balancing a pole.
+    robot = RobotText("ur5_inverted_pendulum", root="base_link")
+    tip = builders.arm(robot, "base_link", joints=6, gripper=False)
+    robot.joint("pole_joint", "continuous", tip, "pole", '<axis xyz="0 1 0"/>')
+    assert identify_urdf(robot.text()).structure == "Manipulator"
 
 
 def test_a_robot_named_a_pendulum_that_balances_on_wheels_is_a_vehicle() -> None:
@@ -671,7 +680,7 @@ def pan_and_tilt(name: str) -> str:
     )
 
 
-@pytest.mark.parametrize("name", ["simple_arm", "Arm", "camera_manipulator", "arm_v2"])
+@pytest.mark.parametrize("name", ["simple_arm", "Arm", "SimpleArm", "camera_manipulator", "arm_v2"])
 def test_a_robot_named_an_arm_carries_its_camera_on_that_short_chain_no_pan_tilt_unit(
     name: str,
 ) -> None:
@@ -679,6 +688,25 @@ def test_a_robot_named_an_arm_carries_its_camera_on_that_short_chain_no_pan_tilt
     assert result.structure == "Manipulator"
     assert result.body is not None
     assert "on a robot named an arm" in result.body.limbs[0].why
+
+
+def test_a_pan_tilt_camera_beside_a_base_or_an_arm_stays_a_head_whatever_the_robot_is_named() -> (
+    None
+):
+    # Only a body's one limb is read by the robot's name: a rover's or an arm's pan/tilt
+    # camera is still its head.
+    rover = builders.ugv()
+    rover.name = "arm_rover"
+    tip = rover.chain(rover.root, ["j1", "j2"])
+    rover.fixed(tip, "cam_frame")
+    rover.add(builders.gazebo_sensor("cam_frame", "camera", "cam"))
+    assert identify_urdf(rover.text()).structure == "UGV"
+    arm = builders.manipulator()
+    arm.name = "robot_arm"
+    tip = arm.chain(arm.root, ["j1", "j2"])
+    arm.fixed(tip, "cam_frame")
+    arm.add(builders.gazebo_sensor("cam_frame", "camera", "cam"))
+    assert identify_urdf(arm.text()).structure == "Manipulator"
 
 
 @pytest.mark.parametrize("name", ["camera_rig", "xarm_head", "armadillo", "pan_tilt"])

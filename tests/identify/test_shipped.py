@@ -815,9 +815,6 @@ def test_a_walker_whose_packages_configure_its_legs_controllers_and_no_gait_is_c
         "type: velocity_controllers/JointVelocityController",
         "type: forward_command_controller/ForwardCommandController",
         "type: JointPositionController",
-        # A ros_gz bridge carrying a Gazebo Sim joint position controller's command topic.
-        "gz_topic_name: /model/craft/joint/RR_calf/0/cmd_pos, ros_type_name: std_msgs/msg/Float64",
-        "gz_topic_name: /model/craft/joint/RR_calf/cmd_force",
     ],
 )
 def test_each_kind_of_joint_controller_naming_a_leg_commands_it(
@@ -825,6 +822,35 @@ def test_each_kind_of_joint_controller_naming_a_leg_commands_it(
 ) -> None:
     bringup = f"legs: {{{controller}, joint: RR_calf}}"
     assert set(controls_of(described(tmp_path, quadruped(), bringup))) == {"Joint"}
+
+
+# A ros_gz bridge's entry carrying a Gazebo Sim joint controller's command topic.
+def bridged(topic: str) -> str:
+    return (
+        f'- ros_topic_name: "/craft/cmd"\n  gz_topic_name: "{topic}"\n'
+        '  ros_type_name: "std_msgs/msg/Float64"\n  direction: ROS_TO_GZ'
+    )
+
+
+@pytest.mark.parametrize(
+    "topic", ["/model/craft/joint/RR_calf/0/cmd_pos", "joint/RR_calf/cmd_force"]
+)
+def test_a_bridged_gazebo_command_topic_of_a_legs_joint_commands_it(
+    tmp_path: Path, topic: str
+) -> None:
+    found = controls_of(described(tmp_path, quadruped(), bridged(topic)))
+    assert set(found) == {"Joint"}
+    assert "(joint/RR_calf/" in found["Joint"]
+
+
+def test_a_bridged_command_topic_of_no_leg_leaves_the_guess_of_a_gait(tmp_path: Path) -> None:
+    # A flipper's position topic, beside a leg joint named in a sensor's topic: no leg command.
+    bridge = (
+        bridged("/model/craft/joint/front_flipper/0/cmd_pos")
+        + "\n"
+        + bridged("/model/craft/joint/RR_calf/sensor/force_torque/forcetorque")
+    )
+    assert "Walking" in controls_of(described(tmp_path, quadruped(), bridge))
 
 
 @pytest.mark.parametrize(
