@@ -800,7 +800,7 @@ def meeting_tips(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     platform), one manipulator, not legs: a walker's feet stand at least as far apart as its
     hips. Its longest chain is the arm, the others are its linkage."""
     legs = [limb for limb in limbs if limb.kind == "leg"]
-    if not _MEETING_LEGS <= len(legs) <= _MOST_MEETING_LEGS:
+    if not _MEETING_LEGS <= len(legs) <= _MOST_MEETING_LEGS or _coxae(tree, legs):
         return limbs  # a stranger's thousands of chains are not compared pair by pair
     starts = [_start(tree, limb) for limb in legs]
     tips = [tree.poses.place(limb.tip) for limb in legs]
@@ -815,6 +815,22 @@ def meeting_tips(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
         else limb
         for limb in limbs
     ]
+
+
+def _coxae(tree: JointTree, legs: list[Limb]) -> bool:
+    """Every leg's first joint turns about the vertical as the body rests: a walker's hips
+    swinging its legs fore and aft (a hexapod's coxae), whose feet may be tucked together
+    under the body as drawn (a morphing robot's ball); a parallel robot's motors turn its arms
+    up and down, about level axes."""
+    firsts = [tree.urdf.joint(limb.joints[0]) for limb in legs]
+    return all(
+        joint is not None and joint.type in _TURNING and abs(tree.poses.axis(joint)[2]) >= _COXA
+        for joint in firsts
+    )
+
+
+# How upright (the z part of the unit axis at rest) a walker's hip yaw turns.
+_COXA = 0.9
 
 
 def tips_meet(
@@ -1412,7 +1428,11 @@ def _one_leg(tree: JointTree, one: Limb, other: Limb) -> str:
             "two motors of one five-bar leg (their first joints turn about one line, "
             "their chains close a loop)"
         )
-    if _beside(tree, one, other, on_line=False) and _ends_meet(tree, one, other):
+    if (
+        _beside(tree, one, other, on_line=False)
+        and _ends_meet(tree, one, other)
+        and not _coxae(tree, [one, other])  # two hips' yaws, their feet tucked together
+    ):
         return (
             "two chains of one parallel-linkage leg (their first joints turn about "
             "parallel axes side by side, their ends meet)"
@@ -1489,7 +1509,7 @@ def spine(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     if len(limbs) != 1:
         return limbs
     limb = limbs[0]
-    snake = _named_snake(tree)
+    snake = _named_snake(tree, len(limb.joints))
     least = _NAMED_SPINE_JOINTS if snake else tree.profile.limb("spine_min_joints")
     if limb.kind not in ("arm", "other") or limb.gripper or len(limb.joints) < least:
         return limbs
@@ -1562,13 +1582,19 @@ def _named_arm(name: str) -> bool:
 _CAMEL = re.compile(r"(?<=[a-z0-9])(?=[A-Z])")
 
 
-def _named_snake(tree: JointTree) -> bool:
+def _named_snake(tree: JointTree, joints: int) -> bool:
     """The robot's name says a snake and no manipulator (:data:`_SNAKE_NAME`), and no plugin
-    drives, tracks or flies its body (a base a plugin moves carries an arm, however named)."""
+    drives, tracks or flies its body (a base a plugin moves carries an arm, however named); but
+    a plugin that only slides the body (a planar move, nothing of it on the ground) under a
+    chain of a snake's length (``spine_min_joints``, ``joints`` long) moves a snake the
+    simulator cannot crawl (its modules' sine is the robot's, the slide the simulator's)."""
     name = tree.urdf.name
     if not _SNAKE_NAME.search(name) or _MANIPULATOR_NAME.search(name):
         return False
-    return not any(tree.labels(kind) for kind in ("drive", "track", "flight"))
+    if tree.labels("track") or tree.labels("flight"):
+        return False
+    slides = set(tree.labels("mover")) if joints >= tree.profile.limb("spine_min_joints") else set()
+    return set(tree.labels("drive")) <= slides
 
 
 def _limb_joint_words(joints: list[Joint]) -> bool:

@@ -696,6 +696,24 @@ def test_unnamed_caster_wheels_one_on_each_swivel_are_told_by_sides_across_the_b
     assert "leg" not in [limb.kind for limb in result.body.limbs]
 
 
+def test_the_endless_last_joints_of_two_long_unnamed_chains_are_wrists_not_wheels() -> None:
+    # Two seven-joint chains of endless joints on a fixed base, one on each side (a tutorial's
+    # dual arm drawn without limits): each last joint ends an arm, six joints below the body.
+    robot = RobotText("dual", root="root")
+    for side, y in (("r", -0.2), ("l", 0.2)):
+        parent = "root"
+        for i in range(1, 8):
+            axis = "1 0 0" if i % 2 else "0 0 1"
+            xyz = f"0 {y} 0.1" if i == 1 else "0 0 0.1"
+            parent = builders.placed(
+                robot, f"j{side}{i}", "continuous", parent, f"{side}{i}", xyz=xyz, axis=axis
+            )
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert result.body.wheels == ()
+    assert result.structure == "Torso"
+
+
 def test_many_road_wheels_of_a_tracked_body_are_wheels_not_a_walkers_legs() -> None:
     robot = RobotText("r")
     for i in range(8):

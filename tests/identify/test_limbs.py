@@ -442,6 +442,29 @@ def test_a_manipulator_named_for_a_snakes_shape_is_an_arm(name: str) -> None:
     assert identify_urdf(builders.snake(3, name=name).text()).structure == "Manipulator"
 
 
+def yawing_modules(name: str, plugin: str) -> str:
+    """Nine modules 0.1 m apart, each turning about the vertical (too few for a planar snake
+    by shape alone), a plugin of file ``plugin`` in the description."""
+    robot = RobotText(name, root="link_1")
+    link = "link_1"
+    for i in range(2, 11):
+        link = builders.placed(robot, f"j{i}", "revolute", link, f"link_{i}", xyz="0.1 0 0")
+    robot.add(builders.model_plugin("plugin", plugin))
+    return robot.text()
+
+
+def test_a_long_snake_named_so_that_a_plugin_slides_is_still_a_snake() -> None:
+    # A simulator slides the body on velocity commands (a planar move, no wheel); the chain of
+    # nine modules is the snake's own: a spine, Driving from the plugin.
+    result = identify_urdf(yawing_modules("snakebot", "libgazebo_ros_planar_move.so"))
+    assert result.structure == "Serpentine"
+    assert "Driving" in {c.motion_control for c in result.motion_controls}
+    # A wheel drive moves a base, whatever rides it; and a short chain a plugin slides is an
+    # arm on a base (the test below).
+    wheeled = yawing_modules("snakebot", "libgazebo_ros_diff_drive.so")
+    assert identify_urdf(wheeled).structure == "Mobile Manipulator"
+
+
 def test_a_robot_named_a_snake_whose_joints_are_an_arms_or_a_plugin_drives_it_is_no_snake() -> None:
     # Shoulder, elbow and wrist joints name an arm, whatever the robot is called.
     robot = RobotText("snake_v2", root="base_link")
@@ -1717,6 +1740,35 @@ def test_three_legs_whose_tips_meet_are_one_parallel_manipulator() -> None:
     assert result.structure == "Manipulator"
     assert result.body is not None
     assert [limb.kind for limb in result.body.limbs] == ["arm", "other", "other"]
+
+
+def tucked_hexapod() -> str:
+    """Six legs named by their parts (a hip yaw about the vertical, two pitches), drawn folded
+    so that every foot lies tucked under the middle of the body (a morphing hexapod's ball)."""
+    links, joints = ["body"], []
+    for i in range(6):
+        angle = 2 * math.pi * i / 6
+        x, y = 0.1 * math.cos(angle), 0.1 * math.sin(angle)
+        names = (f"coxa_{i}", f"femur_{i}", f"tibia_{i}")
+        links += [f"{name}_link" for name in names]
+        places = ((f"{x} {y} 0", "0 0 1"), ("0 0 0", "1 0 0"), (f"{-x} {-y} -0.05", "1 0 0"))
+        parent = "body"
+        for name, (xyz, axis) in zip(names, places, strict=True):
+            joints.append(builders.joint_xml(name, "revolute", parent, f"{name}_link", xyz, axis))
+            parent = f"{name}_link"
+    body = "".join(f'<link name="{link}"/>' for link in links) + "".join(joints)
+    return f'<robot name="morphing">{body}</robot>'
+
+
+def test_legs_whose_hips_turn_about_the_vertical_are_a_walkers_however_their_feet_are_tucked() -> (
+    None
+):
+    # Their feet meet under the body as drawn, but a parallel robot's motors turn its arms up
+    # and down about level axes (the delta above), and a five-bar leg's two motors too.
+    result = identify_urdf(tucked_hexapod())
+    assert result.structure == "Hexapod"
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["leg"] * 6
 
 
 def test_three_legs_whose_tips_stand_apart_stay_legs() -> None:
