@@ -78,7 +78,7 @@ ADDED_SET = ROOT / "tools" / "generalization_set"
 # brief of the one before after it was read, and moved on the day given here: moving the next
 # one is adding its number and day.
 MOVED_ON = dict.fromkeys(range(52, 130), "2026-11-30")
-MOVED_ON |= dict.fromkeys(range(130, 181), "2026-12-01")
+MOVED_ON |= dict.fromkeys(range(130, 182), "2026-12-01")
 LAST_MOVED = max(MOVED_ON)
 BLIND_NEXT = LAST_MOVED + 1
 MOVED_SETS = tuple(ROOT / "tools" / f"fresh_set_{n}" for n in range(1, LAST_MOVED + 1))
