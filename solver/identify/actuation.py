@@ -55,10 +55,11 @@ _ROLLERS = 3
 _A_RIMS_PARTS = frozenset({"leg", "wheel"})
 # As many endless joints level with one link are a wheel-leg walker's legs, not its wheels.
 _WHEEL_LEGS = 6
-# The most movable joints above an unnamed wheel that hangs alone from its link (a caster's
-# swivel; a rover's rocker, bogie and steering): below more, an endless leaf ends a limb (an
-# arm's wrist that turns for ever), no wheel.
-_MOST_ABOVE_A_WHEEL = 3
+# The most endless joints above an unnamed wheel that hangs alone from its link (a caster's
+# swivel; a rover's rocker, bogie and steering): below more, the endless leaf ends a limb drawn
+# without limits (an arm's wrist that turns for ever), no wheel. Limited, sliding, planar and
+# floating joints are not counted (a leg's, a suspension's, a planner's virtual root joints).
+_MOST_ENDLESS_ABOVE_A_WHEEL = 3
 # Wheel-legged robots roll on two legs' wheels or four (bipeds, quadrupeds).
 _WHEEL_LEGGED = (2, 4)
 # A leg's last joint named for a foot's part turns a foot, whatever its range (an ankle, a toe).
@@ -271,17 +272,18 @@ def _hangs_freely(tree: JointTree, leaf: Joint, known: dict[bool, dict[str, str 
     return nearest_above(tree.urdf, leaf.parent, known.setdefault(rolls, {}), lifts) is None
 
 
-def _few_above(tree: JointTree, leaf: Joint) -> bool:
-    """At most :data:`_MOST_ABOVE_A_WHEEL` movable joints between the root and ``leaf``'s
-    link (walked up once, no further than the tree has joints, stopping past that many)."""
+def _few_endless_above(tree: JointTree, leaf: Joint) -> bool:
+    """At most :data:`_MOST_ENDLESS_ABOVE_A_WHEEL` endless joints between the root and
+    ``leaf``'s link (walked up once, no further than the tree has joints, stopping past that
+    many)."""
     above = 0
     joint = tree.urdf.parent_joint(leaf.parent)
     for _ in tree.urdf.joints:
-        if joint is None or above > _MOST_ABOVE_A_WHEEL:
+        if joint is None or above > _MOST_ENDLESS_ABOVE_A_WHEEL:
             break
-        above += joint.movable
+        above += joint.endless
         joint = tree.urdf.parent_joint(joint.parent)
-    return above <= _MOST_ABOVE_A_WHEEL
+    return above <= _MOST_ENDLESS_ABOVE_A_WHEEL
 
 
 def _rollers_only(tree: JointTree, joint: Joint, roles: Mapping[str, Role]) -> bool:
@@ -332,11 +334,12 @@ def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
             apart.extend(joints)
     # One on a caster's swivel or a steering knuckle, two on a rocker: sides told across the
     # whole body instead, for those that hang from the body through no driven joint but a
-    # steering one (a driven flipper's sprocket is the flipper's), and few joints of any kind
-    # (:func:`_few_above`: two arms' last joints are no wheels).
+    # steering one (a driven flipper's sprocket is the flipper's), and few that turn for ever
+    # (:func:`_few_endless_above`: the last joints of two arms drawn without limits are no
+    # wheels).
     # By whether a leaf's axle is level at rest: link -> the nearest driven joint above it.
     known: dict[bool, dict[str, str | None]] = {}
-    apart = [j for j in apart if _hangs_freely(tree, j, known) and _few_above(tree, j)]
+    apart = [j for j in apart if _hangs_freely(tree, j, known) and _few_endless_above(tree, j)]
     if len(apart) >= 2 and _sides({tree.poses.place(j.child)[1] for j in apart}):
         found.extend(j.name for j in apart)
     return found

@@ -818,18 +818,24 @@ def meeting_tips(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
 
 
 def _coxae(tree: JointTree, legs: list[Limb]) -> bool:
-    """Every leg's first joint turns about the vertical as the body rests: a walker's hips
-    swinging its legs fore and aft (a hexapod's coxae), whose feet may be tucked together
-    under the body as drawn (a morphing robot's ball); a parallel robot's motors turn its arms
-    up and down, about level axes."""
-    firsts = [tree.urdf.joint(limb.joints[0]) for limb in legs]
-    return all(
-        joint is not None and joint.type in _TURNING and abs(tree.poses.axis(joint)[2]) >= _COXA
-        for joint in firsts
-    )
+    """Every leg is a walker's: its first joint turns about the vertical as the body rests (a
+    hip swinging the leg fore and aft, a hexapod's coxa), a later one about a level axis (the
+    leg's lift), and none slides. Its feet may be tucked together under the body as drawn (a
+    morphing robot's ball); a parallel robot's motors turn its arms up and down about level
+    axes, a planar one's all turn about the vertical, and a Stewart platform's legs slide."""
+    return all(_coxa(tree, limb) for limb in legs)
 
 
-# How upright (the z part of the unit axis at rest) a walker's hip yaw turns.
+def _coxa(tree: JointTree, leg: Limb) -> bool:
+    joints = [tree.urdf.joint(name) for name in leg.joints]
+    if any(joint is None or joint.type not in _TURNING for joint in joints):
+        return False
+    axes = [abs(tree.poses.axis(joint)[2]) for joint in joints if joint is not None]
+    return axes[0] >= _COXA and any(z < 1 - _COXA for z in axes[1:])
+
+
+# How upright (the z part of the unit axis at rest) a walker's hip yaw turns; a lift's axis
+# is level within the rest.
 _COXA = 0.9
 
 
@@ -1505,15 +1511,16 @@ def spine(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     every spacing between joints alike, or every other one, a module's two joints maybe at one
     point), each joint's axis square to the last's and none along the chain (:func:`_bends`),
     on a body that has nothing else (no wheels, rotors, legs or other chains); on a robot
-    named a snake (:data:`_SNAKE_NAME`), any such chain of two turning joints or more."""
+    named a snake (:data:`_SNAKE_NAME`), any such chain of two turning joints or more (of
+    equal modules as long as a snake when a plugin slides the body: :func:`_named_snake`)."""
     if len(limbs) != 1:
         return limbs
     limb = limbs[0]
-    snake = _named_snake(tree, len(limb.joints))
+    joints = [j for j in (tree.urdf.joint(name) for name in limb.joints) if j is not None]
+    snake = _named_snake(tree, joints)
     least = _NAMED_SPINE_JOINTS if snake else tree.profile.limb("spine_min_joints")
     if limb.kind not in ("arm", "other") or limb.gripper or len(limb.joints) < least:
         return limbs
-    joints = [j for j in (tree.urdf.joint(name) for name in limb.joints) if j is not None]
     # A snake may have a head; arm or leg names say it is something else (on a robot named a
     # snake, the words of an arm's or a leg's joints: its modules may be labelled ``arm_1``).
     # Its modules turn: a chain with a slide in it is an arm on a rail or a lift.
@@ -1582,19 +1589,20 @@ def _named_arm(name: str) -> bool:
 _CAMEL = re.compile(r"(?<=[a-z0-9])(?=[A-Z])")
 
 
-def _named_snake(tree: JointTree, joints: int) -> bool:
+def _named_snake(tree: JointTree, joints: list[Joint]) -> bool:
     """The robot's name says a snake and no manipulator (:data:`_SNAKE_NAME`), and no plugin
     drives, tracks or flies its body (a base a plugin moves carries an arm, however named); but
     a plugin that only slides the body (a planar move, nothing of it on the ground) under a
-    chain of a snake's length (``spine_min_joints``, ``joints`` long) moves a snake the
-    simulator cannot crawl (its modules' sine is the robot's, the slide the simulator's)."""
+    chain of ``joints`` of a snake's length (``spine_min_joints``) and of equal modules
+    (:func:`_modules`) moves a snake the simulator cannot crawl (its modules' sine is the
+    robot's, the slide the simulator's)."""
     name = tree.urdf.name
     if not _SNAKE_NAME.search(name) or _MANIPULATOR_NAME.search(name):
         return False
     if tree.labels("track") or tree.labels("flight"):
         return False
-    slides = set(tree.labels("mover")) if joints >= tree.profile.limb("spine_min_joints") else set()
-    return set(tree.labels("drive")) <= slides
+    long = len(joints) >= tree.profile.limb("spine_min_joints") and _modules(tree, joints)
+    return set(tree.labels("drive")) <= (set(tree.labels("mover")) if long else set())
 
 
 def _limb_joint_words(joints: list[Joint]) -> bool:

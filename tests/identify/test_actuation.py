@@ -662,16 +662,17 @@ def test_ankles_that_turn_for_ever_carrying_toes_are_no_wheels() -> None:
     assert not {"lf_leg_ankle", "rf_leg_ankle", "lh_leg_ankle"} & set(result.body.wheels)
 
 
-def base_on_casters() -> RobotText:
+def base_on_casters(robot: RobotText | None = None, base: str = "base_link") -> RobotText:
     """Two unnamed driven wheels on the axle line, and four unnamed casters at the corners: a
-    vertical endless swivel each, carrying one endless wheel below it."""
-    robot = RobotText("r")
+    vertical endless swivel each, carrying one endless wheel below it (on ``base`` of
+    ``robot``, by default a robot of its own)."""
+    robot = robot if robot is not None else RobotText("r", root=base)
     for side, y in (("a", 0.2), ("b", -0.2)):
         builders.placed(
             robot,
             f"d{side}",
             "continuous",
-            robot.root,
+            base,
             f"d{side}_l",
             xyz=f"0 {y} -0.05",
             axis="0 1 0",
@@ -679,7 +680,7 @@ def base_on_casters() -> RobotText:
         robot.add(builders.transmission(f"d{side}", "VelocityJointInterface"))
     for i, (x, y) in enumerate(((0.3, 0.15), (0.3, -0.15), (-0.3, 0.15), (-0.3, -0.15))):
         swivel = builders.placed(
-            robot, f"s{i}", "continuous", robot.root, f"s{i}_l", xyz=f"{x} {y} -0.02", axis="0 0 1"
+            robot, f"s{i}", "continuous", base, f"s{i}_l", xyz=f"{x} {y} -0.02", axis="0 0 1"
         )
         builders.placed(
             robot, f"w{i}", "continuous", swivel, f"w{i}_l", xyz="-0.03 0 -0.05", axis="0 1 0"
@@ -712,6 +713,18 @@ def test_the_endless_last_joints_of_two_long_unnamed_chains_are_wrists_not_wheel
     assert result.body is not None
     assert result.body.wheels == ()
     assert result.structure == "Torso"
+
+
+def test_caster_wheels_below_a_planners_virtual_root_joints_are_still_wheels() -> None:
+    # A whole-body planner's x, y and yaw joints above the base: only endless joints count
+    # against a wheel, and the planner's slides and limited yaw do not.
+    robot = RobotText("r", root="world")
+    builders.placed(robot, "x", "prismatic", "world", "x_l", axis="1 0 0")
+    builders.placed(robot, "y", "prismatic", "x_l", "y_l", axis="0 1 0")
+    builders.placed(robot, "yaw", "revolute", "y_l", "base", axis="0 0 1")
+    result = identify_urdf(base_on_casters(robot, "base").text())
+    assert result.body is not None
+    assert set(result.body.wheels) == {"da", "db", "w0", "w1", "w2", "w3"}
 
 
 def test_many_road_wheels_of_a_tracked_body_are_wheels_not_a_walkers_legs() -> None:

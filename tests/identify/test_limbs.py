@@ -442,13 +442,14 @@ def test_a_manipulator_named_for_a_snakes_shape_is_an_arm(name: str) -> None:
     assert identify_urdf(builders.snake(3, name=name).text()).structure == "Manipulator"
 
 
-def yawing_modules(name: str, plugin: str) -> str:
-    """Nine modules 0.1 m apart, each turning about the vertical (too few for a planar snake
-    by shape alone), a plugin of file ``plugin`` in the description."""
+def yawing_modules(name: str, plugin: str, spacings: tuple[float, ...] = (0.1,) * 9) -> str:
+    """Modules ``spacings`` apart (by default nine, 0.1 m), each turning about the vertical
+    (too few for a planar snake by shape alone), a plugin of file ``plugin`` in the
+    description."""
     robot = RobotText(name, root="link_1")
     link = "link_1"
-    for i in range(2, 11):
-        link = builders.placed(robot, f"j{i}", "revolute", link, f"link_{i}", xyz="0.1 0 0")
+    for i, gap in enumerate(spacings, start=2):
+        link = builders.placed(robot, f"j{i}", "revolute", link, f"link_{i}", xyz=f"{gap} 0 0")
     robot.add(builders.model_plugin("plugin", plugin))
     return robot.text()
 
@@ -463,6 +464,10 @@ def test_a_long_snake_named_so_that_a_plugin_slides_is_still_a_snake() -> None:
     # arm on a base (the test below).
     wheeled = yawing_modules("snakebot", "libgazebo_ros_diff_drive.so")
     assert identify_urdf(wheeled).structure == "Mobile Manipulator"
+    # Links of unequal lengths are an arm's, not a snake's modules, whatever the robot's name.
+    uneven = (0.1, 0.4, 0.1, 0.3, 0.1, 0.2)
+    arm = yawing_modules("snakebot", "libgazebo_ros_planar_move.so", uneven)
+    assert identify_urdf(arm).structure == "Mobile Manipulator"
 
 
 def test_a_robot_named_a_snake_whose_joints_are_an_arms_or_a_plugin_drives_it_is_no_snake() -> None:
@@ -1769,6 +1774,13 @@ def test_legs_whose_hips_turn_about_the_vertical_are_a_walkers_however_their_fee
     assert result.structure == "Hexapod"
     assert result.body is not None
     assert [limb.kind for limb in result.body.limbs] == ["leg"] * 6
+
+
+def test_legs_turning_only_about_the_vertical_whose_tips_meet_are_a_planar_parallel_robot() -> None:
+    # Every joint about the vertical: a planar parallel robot's arms, no walker's legs (a
+    # walker's hip yaw is followed by a lift about a level axis).
+    planar = delta(reach=1.0).replace('<axis xyz="0 1 0"/>', '<axis xyz="0 0 1"/>')
+    assert identify_urdf(planar).structure == "Manipulator"
 
 
 def test_three_legs_whose_tips_stand_apart_stay_legs() -> None:
