@@ -48,8 +48,9 @@ Where names say nothing, the chains' places and shapes still speak:
   (:func:`wheeled_spine`); on a robot that calls itself a snake, any one chain of two turning
   joints or more is (:data:`_SNAKE_NAME`);
 * on a robot that calls itself a pendulum rig (a control course's plant: a cart-pole, a Furuta
-  pendulum, an acrobot), its one chain ending in no gripper is the plant's links, swung by
-  their actuators: *other*, no arm (:func:`pendulum`, :data:`_PENDULUM_NAME`);
+  pendulum, an acrobot), its one short chain (three joints at most, none named as an arm's or
+  a leg's) is the plant's links, swung by their actuators: *other*, no arm
+  (:func:`pendulum`, :data:`_PENDULUM_NAME`);
 * a short chain from the root that carries a whole hand and nothing else is that hand's *wrist*
   (a hand hung from its forearm), no arm (:func:`wrist`);
 * trunk joints that carry a gripper chain too short to be an arm, every link on the way from
