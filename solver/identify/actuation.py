@@ -272,18 +272,22 @@ def _hangs_freely(tree: JointTree, leaf: Joint, known: dict[bool, dict[str, str 
     return nearest_above(tree.urdf, leaf.parent, known.setdefault(rolls, {}), lifts) is None
 
 
-def _few_endless_above(tree: JointTree, leaf: Joint) -> bool:
+def _few_endless_above(tree: JointTree, leaf: Joint, known: dict[str, str | None]) -> bool:
     """At most :data:`_MOST_ENDLESS_ABOVE_A_WHEEL` endless joints between the root and
-    ``leaf``'s link (walked up once, no further than the tree has joints, stopping past that
-    many)."""
-    above = 0
-    joint = tree.urdf.parent_joint(leaf.parent)
-    for _ in tree.urdf.joints:
-        if joint is None or above > _MOST_ENDLESS_ABOVE_A_WHEEL:
-            break
-        above += joint.endless
-        joint = tree.urdf.parent_joint(joint.parent)
-    return above <= _MOST_ENDLESS_ABOVE_A_WHEEL
+    ``leaf``'s link: each found by :func:`nearest_above`, whose walks ``known`` remembers, so
+    many leaves cost one walk of the tree at most."""
+    link = leaf.parent
+    for _ in range(_MOST_ENDLESS_ABOVE_A_WHEEL + 1):
+        above = nearest_above(tree.urdf, link, known, _endless)
+        joint = tree.urdf.joint(above) if above is not None else None
+        if joint is None:
+            return True
+        link = joint.parent
+    return False
+
+
+def _endless(joint: Joint) -> bool:
+    return joint.endless
 
 
 def _rollers_only(tree: JointTree, joint: Joint, roles: Mapping[str, Role]) -> bool:
@@ -339,7 +343,10 @@ def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     # wheels).
     # By whether a leaf's axle is level at rest: link -> the nearest driven joint above it.
     known: dict[bool, dict[str, str | None]] = {}
-    apart = [j for j in apart if _hangs_freely(tree, j, known) and _few_endless_above(tree, j)]
+    endless: dict[str, str | None] = {}  # link -> the nearest endless joint above it
+    apart = [
+        j for j in apart if _hangs_freely(tree, j, known) and _few_endless_above(tree, j, endless)
+    ]
     if len(apart) >= 2 and _sides({tree.poses.place(j.child)[1] for j in apart}):
         found.extend(j.name for j in apart)
     return found
