@@ -49,6 +49,7 @@ from solver.identify.limbs import (
     five_bars,
     flippers,
     gripping_leg,
+    legs_alike,
     legs_at_the_pelvis,
     legs_by_place,
     legs_by_reach,
@@ -564,7 +565,7 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
         legged = legs_by_reach(tree, legs_at_the_pelvis(tree, parts.limbs))
     parts.limbs, parts.trunk = legs_through_linkages(tree, legged, parts.trunk)
     parts.limbs = five_bars(tree, parts.limbs)
-    parts.limbs = arms_beside_legs(tree, parts.limbs)
+    parts.limbs = arms_beside_legs(tree, legs_alike(tree, parts.limbs))
     parts.limbs = drives_beside_legs(tree, parts.limbs)
     parts.limbs = flippers(tree, parts.limbs)
     parts.limbs = parallel_robot(tree, meeting_tips(tree, parts.limbs))

@@ -23,7 +23,12 @@ Where names say nothing, the chains' places and shapes still speak:
   starts, are legs: a walker's, whatever their number (:func:`legs_by_place`; fingers point
   away from their palm, legs down to the ground), when the link is the trunk's (at most three
   joints turning above it, a waist's or a simulator's floating base's: a hand's fingers hanging
-  from an arm's wrist are no legs);
+  from an arm's wrist are no legs); longer unnamed chains, two hanging straight down from the
+  bottom of a free body, are a biped's legs, and four or more so hanging, their feet level,
+  a walker's (:func:`legs_by_reach`);
+* a chain built as the legs beside it (joint for joint: type, axis, span of limits), its tip
+  level with their feet, is one of them, whatever its words say (a hexapod's middle pair named
+  ``shoulder``, ``elbow``, ``knee``; :func:`legs_alike`);
 * two leg chains whose first joints turn about one line, side by side on one side of the
   body, are the two motors of one leg closed by a linkage (a five-bar leg, the loop a URDF
   cannot write): one leg (:func:`five_bars`), when the graph shows the loop: their ends meet
@@ -100,6 +105,7 @@ __all__ = [
     "five_bars",
     "flippers",
     "gripping_leg",
+    "legs_alike",
     "legs_at_the_pelvis",
     "legs_by_place",
     "legs_by_reach",
@@ -419,7 +425,11 @@ def legs_by_reach(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     that each end below where they start by most of their reach (``_LEG_STRAIGHT``), whose tips
     are the body's lowest and below its root by half their reach, and that start no higher
     than any other chain (arms hang from shoulders above the hips). Not on a body bolted to
-    the world (a torso's arms may hang down too), nor when legs were found otherwise.
+    the world (a torso's arms may hang down too), nor when legs were found otherwise. Four
+    chains or more like the pair, hanging as straight, their feet level with its own
+    (:func:`_level_with`), are a walker's legs, every one of them: a quadruped's legs too long
+    for :func:`legs_by_place` (six joints, ``joint11`` .. ``joint16``) are no biped's two
+    beside two arms.
     """
     if any(limb.kind == "leg" for limb in limbs) or _world_root(tree):
         return limbs
@@ -431,12 +441,69 @@ def legs_by_reach(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     pair = _hanging_pair(tree, limbs, placed)
     if pair is None:
         return limbs
-    why = "one of two equal unnamed chains hanging straight down from the bottom of the body"
-    legs = {id(limb) for limb in pair}
+    level = _level_with(tree, limbs, placed, pair)
+    if len(level) >= _WALKER_LEGS:  # a quadruped's, a hexapod's: every one of them a leg
+        why = "one of equal unnamed chains hanging straight down, their feet level (legs by reach)"
+        legs = {id(limb) for limb in level}
+    else:
+        why = "one of two equal unnamed chains hanging straight down from the bottom of the body"
+        legs = {id(limb) for limb in pair}
     return sort_limbs(
         tree,
         [replace(limb, kind="leg", why=why) if id(limb) in legs else limb for limb in limbs],
     )
+
+
+def legs_alike(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
+    """Chains built as the body's legs are, standing with them: legs too.
+
+    A walker's legs are alike, and the words of a middle pair (``shoulder_middle_left``,
+    ``elbow_middle_left``, ``knee_middle_left``) may name an arm's joints as often as a leg's.
+    A chain of no gripper, read as an arm or as nothing, on the rigid body two legs or more hang
+    from, whose joints are one of those legs' joint for joint (type, axis up to its sign, the
+    span of its limits) and whose tip is level with their feet (within :data:`_FEET_LEVEL` of
+    the shortest leg's reach, hip to foot: legs drawn spread flat too) is one of them: an arm
+    a legged robot carries is built as an arm, and held above its feet."""
+    legs = [limb for limb in limbs if limb.kind == "leg"]
+    if len(legs) < _BIPED_LEGS:
+        return limbs
+    placed = chain_ends(tree, legs)
+    if placed is None:
+        return limbs
+    reach = min(distance(start, end) for start, end in placed)
+    if reach == 0:
+        return limbs  # legs drawn with no length say nothing of where feet stand
+    feet = min(end[2] for _, end in placed)
+    known: dict[str, str | None] = {}
+    hung = Counter(moved_by(tree.urdf, limb.base, known) for limb in legs)
+    bodies = {body for body, count in hung.items() if count >= _BIPED_LEGS}
+    builds = {_build(tree, limb) for limb in legs}
+    why = "a chain built as the legs beside it are, its tip level with their feet (a leg)"
+    found = [
+        replace(limb, kind="leg", why=why)
+        if limb.kind in ("arm", "other")
+        and not limb.gripper
+        and moved_by(tree.urdf, limb.base, known) in bodies
+        and _build(tree, limb) in builds
+        and abs(tree.poses.place(limb.tip)[2] - feet) <= _FEET_LEVEL * reach
+        else limb
+        for limb in limbs
+    ]
+    return sort_limbs(tree, found) if found != limbs else limbs
+
+
+def _build(tree: JointTree, limb: Limb) -> tuple[tuple[str, tuple[float, ...], float], ...]:
+    """A chain's joints as built: each one's type, axis (up to its sign) and span of limits,
+    rounded so that a mirrored twin's floating-point noise reads the same."""
+    built = []
+    for name in limb.joints:
+        joint = tree.urdf.joint(name)
+        if joint is None:
+            return ()
+        span = (joint.upper or 0.0) - (joint.lower or 0.0)
+        axis = tuple(round(abs(value), 3) for value in joint.axis)
+        built.append((joint.type, axis, round(span, 3)))
+    return tuple(built)
 
 
 def arms_beside_legs(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
@@ -586,6 +653,33 @@ def _hanging_pair(
     ):
         return None
     return one, other
+
+
+def _level_with(
+    tree: JointTree,
+    limbs: list[Limb],
+    placed: dict[int, tuple[Place, Place]],
+    pair: tuple[Limb, Limb],
+) -> list[Limb]:
+    """The chains like ``pair`` (a biped's legs by reach), the pair included: of as many joints,
+    each hanging nearly straight down, their tips as low as the pair's (within
+    :data:`_FEET_LEVEL` of the shortest drop). Four or more are a walker's legs, not a biped's
+    two beside two arms hanging as low (arms hang from shoulders, their hands above the feet)."""
+    drops = []
+    level = []
+    for limb in _leg_candidates(tree, limbs, placed):
+        start, end = placed[id(limb)]
+        reach = distance(start, end)
+        if len(limb.joints) != len(pair[0].joints) or reach == 0:
+            continue
+        if start[2] - end[2] >= _LEG_STRAIGHT * reach:
+            level.append(limb)
+            drops.append(start[2] - end[2])
+    if not level:
+        return []
+    lowest = min(placed[id(limb)][1][2] for limb in pair)
+    tolerance = _FEET_LEVEL * min(drops)
+    return [limb for limb in level if placed[id(limb)][1][2] - lowest <= tolerance]
 
 
 def _leg_candidates(

@@ -1320,6 +1320,84 @@ def test_the_same_chains_on_a_body_bolted_to_the_world_stay_arms() -> None:
     assert "leg" not in [limb.kind for limb in result.body.limbs]
 
 
+def pony(*, neck: bool = True) -> RobotText:
+    """Four unnamed six-joint chains (too long for legs by place) hanging 0.3 m straight down
+    from the corners of a free body, and a two-joint neck on its front pointing up."""
+    robot = RobotText("r", root="body")
+    for side, (x, y) in enumerate(((0.08, 0.04), (0.08, -0.04), (-0.08, 0.04), (-0.08, -0.04))):
+        placed_chain(robot, "body", f"j{side}", start=f"{x} {y} -0.03", steps=["0 0 -0.05"] * 5)
+    if neck:
+        placed_chain(robot, "body", "n", start="0.09 0 0.02", steps=["0 0 0.05"])
+    return robot
+
+
+def test_four_unnamed_chains_hanging_straight_down_their_feet_level_are_a_quadrupeds_legs() -> None:
+    # Four equal chains as low as one another: no biped's two legs beside two arms.
+    result = identify_urdf(pony().text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs].count("leg") == 4
+    assert "feet level" in result.body.limbs[0].why
+    assert result.structure == "Quadruped"
+
+
+def test_a_nameless_humanoids_arms_hanging_straight_down_as_long_as_its_legs_stay_arms() -> None:
+    # Six-joint arms hanging straight down from shoulders 0.45 m above the hips: their hands
+    # end above the feet, so the body still stands on two legs.
+    robot = RobotText("r", root="pelvis")
+    for side, y in (("a", 0.1), ("b", -0.1)):
+        placed_chain(robot, "pelvis", f"{side}j", start=f"0 {y} -0.05", steps=["0 0 -0.1"] * 5)
+    for side, y in (("c", 0.25), ("d", -0.25)):
+        placed_chain(robot, "pelvis", f"{side}j", start=f"0 {y} 0.4", steps=["0 0 -0.08"] * 5)
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert sorted(limb.kind for limb in result.body.limbs) == ["arm", "arm", "leg", "leg"]
+    assert result.structure == "Humanoid"
+
+
+def hexapod_with_a_middle_pair_named_as_arms(*, middle_raised: bool = False) -> RobotText:
+    """Six legs of a shoulder, an elbow and a knee spread flat from a box, the middle pair's
+    words (``shoulder_middle_left``, ``elbow_middle_left``) an arm's; ``middle_raised``: the
+    middle pair's knees held 0.3 m up."""
+    robot = RobotText("hexapod", root="base_link")
+    for row, x in (("front", 0.45), ("middle", 0.0), ("back", -0.45)):
+        for side, y in (("left", 0.2), ("right", -0.2)):
+            at = f"{row}_{side}"
+            out = "0.24" if side == "left" else "-0.24"
+            link = builders.placed(
+                robot, f"shoulder_{at}_joint", "revolute", "base_link", f"shoulder_{at}",
+                xyz=f"{x} {y} 0", axis="0 1 0",
+            )  # fmt: skip
+            lift = "0.3" if middle_raised and row == "middle" else "0"
+            for part, z in (("elbow", "0"), ("knee", lift)):
+                link = builders.placed(
+                    robot, f"{part}_{at}_joint", "revolute", link, f"{part}_{at}",
+                    xyz=f"0 {out} {z}", axis="-1 0 0",
+                )  # fmt: skip
+    return robot
+
+
+def test_a_pair_built_as_the_legs_beside_it_and_standing_with_them_are_legs_whatever_their_words(
+) -> None:  # fmt: skip
+    result = identify_urdf(hexapod_with_a_middle_pair_named_as_arms().text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["leg"] * 6
+    assert any("built as the legs" in limb.why for limb in result.body.limbs)
+    assert result.structure == "Hexapod"
+
+
+def test_a_pair_built_as_the_legs_but_held_above_their_feet_stays_a_pair_of_arms() -> None:
+    result = identify_urdf(hexapod_with_a_middle_pair_named_as_arms(middle_raised=True).text())
+    assert result.body is not None
+    assert sorted(limb.kind for limb in result.body.limbs) == ["arm"] * 2 + ["leg"] * 4
+    assert result.structure == "Legged Mobile Manipulator"
+
+
+def test_an_arm_built_otherwise_than_the_legs_it_stands_beside_stays_an_arm() -> None:
+    assert identify_urdf(builders.legged_manipulator().text()).structure == (
+        "Legged Mobile Manipulator"
+    )
+
+
 def small_humanoid() -> RobotText:
     """The nameless humanoid's legs, with two-joint arms (a small humanoid's) and a two-joint
     neck on the body: three short chains on one link, as a hand's fingers are."""
