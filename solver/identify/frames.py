@@ -12,7 +12,9 @@ a driver that stamps its data with that frame (``frame_id: imu_link`` in its con
   (:mod:`solver.identify.readers.workspace`) gives a driver a link of the description as its
   frame id: a key ``frame_id``, ``frame``, ``frame_name`` or one a device's word begins
   (``imu_frame``, ``camera_frame_id``; not a node's ``target_frame``, where it looks a
-  transform up), the value naming the link whole or by its last ``/`` segment; or when it names
+  transform up), the value naming the link whole or by its last ``/`` segment (and a link the
+  description writes under a namespace of its own, ``rc_12345/front_lidar``, by its last
+  segment, when no other link ends so: ``$(var rc)/front_lidar``); or when it names
   a camera driver (``camera_name``) from which the driver builds its frames (realsense2_camera,
   orbbec_camera): the link of that name, else ``NAME_link``, else the first link whose name
   begins ``NAME_`` and reads as a camera. A file that launches a depth camera's driver
@@ -181,12 +183,28 @@ class _Naming:
         self.found: dict[str, str] = {}
         self.depth: set[str] = set()
         self.cameras: dict[str, str | None] = {}
+        self.tails: dict[str, list[str]] | None = None
+
+    def link(self, value: str) -> str | None:
+        """The link a frame id names (:func:`_link`), else the one link the description writes
+        under a namespace of its own (``rc_12345/front_lidar``) whose last ``/`` segment is the
+        frame id's (``$(var rc)/front_lidar``); None when none is, or more than one."""
+        found = _link(value, self.urdf)
+        if found is not None:
+            return found
+        if self.tails is None:  # every link's last segment, once per description
+            self.tails = {}
+            for link in self.urdf.links:
+                if "/" in link.name:
+                    self.tails.setdefault(link.name.rsplit("/", 1)[-1], []).append(link.name)
+        links = self.tails.get(value.rsplit("/", 1)[-1], [])
+        return links[0] if len(links) == 1 else None
 
     def read(self, text: str, path: str) -> None:
         """What one file names: frame ids, camera names, and a depth camera's driver's."""
         for pattern in (_ASSIGNED, _PARAMETER):
             for match in pattern.finditer(text):
-                self.note(_link(_value(match), self.urdf), f"frame id in {path}")
+                self.note(self.link(_value(match)), f"frame id in {path}")
         named = False
         for match in _DEVICE_NAME.finditer(text):
             named = True
@@ -201,7 +219,7 @@ class _Naming:
         if not drivers:
             return
         for match in _PARENT_FRAME.finditer(text):
-            link = _link(_value(match), self.urdf)
+            link = self.link(_value(match))
             self.note(link, f"parent frame in {path}")
             if link is not None:
                 self.depth.add(link)

@@ -22,6 +22,7 @@ Not here: the limb a hand ends (:mod:`solver.identify.limbs`), the other single-
 
 from __future__ import annotations
 
+import math
 import re
 from itertools import pairwise
 
@@ -48,6 +49,8 @@ _FINGERTIP = re.compile(r"(finger|thumb)[_-]?tip", re.IGNORECASE)
 _CHAIN_BEFORE_JAWS = 2
 # Places this close (metres) are one place.
 _SAME = 1e-4
+# A joint turning through this much goes all the way round: no finger's.
+_FULL_TURN = 2 * math.pi - 1e-6
 # Two sliding jaws sit apart along one line within this share of their distance across it
 # (a CAD export places a finger a few millimetres off the line).
 _ASIDE = 0.1
@@ -535,7 +538,8 @@ def _spread_fingers(tree: JointTree, by_base: dict[str, list[Limb]]) -> set[str]
     """Fingers that each spread on a joint of their own (abduction) before they branch: the
     short chains' bases each moved by one joint from one body (the palm), in threes or more,
     no chain counting its spreading joint longer than a finger. The spreading joints are
-    fingers' too."""
+    fingers' too. A joint that turns all the way round spreads no finger (a finger swings
+    aside a little): a wheel-leg's hub, its two rim halves on it, is no finger."""
     longest = tree.profile.limb("finger_max_joints")
     by_palm: dict[str | None, list[Joint]] = {}
     known: dict[str, str | None] = {}
@@ -544,6 +548,7 @@ def _spread_fingers(tree: JointTree, by_base: dict[str, list[Limb]]) -> set[str]
         if (
             spread is None
             or not spread.movable
+            or spread.turns(_FULL_TURN)
             or any(len(limb.joints) + 1 > longest for limb in group)
         ):
             continue

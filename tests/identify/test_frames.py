@@ -96,6 +96,20 @@ def test_every_way_a_driver_is_given_its_frame_id_is_read() -> None:
     }
 
 
+def test_a_link_written_under_a_namespace_of_its_own_is_named_by_its_last_segment() -> None:
+    # The description's xacro wrote its prefix (rc_1/), the driver's launch a variable of its
+    # own ($(var rc)/): the one link ending so is the frame.
+    urdf = parse_urdf(drawn(("base_link", "rc_1/front_lidar"), ("base_link", "rc_1/imu")), "r")
+    drivers = shipping(lidar_yaml='laser_frame_id: "$(var rc)/front_lidar"\n')
+    assert named_frames(drivers, urdf, PROFILE) == {"rc_1/front_lidar": "frame id in lidar_yaml"}
+
+
+def test_a_last_segment_two_namespaced_links_end_in_names_neither() -> None:
+    urdf = parse_urdf(drawn(("base_link", "a/front_lidar"), ("base_link", "b/front_lidar")), "r")
+    drivers = shipping(lidar_yaml='laser_frame_id: "$(var rc)/front_lidar"\n')
+    assert named_frames(drivers, urdf, PROFILE) == {}
+
+
 @pytest.mark.parametrize(
     "default",
     [

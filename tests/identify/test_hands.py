@@ -422,6 +422,38 @@ def test_two_spreading_chains_on_one_palm_are_no_hand() -> None:
     assert identify_urdf(spread_hand(2).text()).structure != "Hand"
 
 
+def wheel_legs(hubs: int = 6) -> RobotText:
+    """A wheel-leg walker: hubs that turn all the way round, each carrying two rim halves on
+    joints of their own (they open into a leg, close into a wheel)."""
+    robot = RobotText("wheel_legs", root="body")
+    for i in range(hubs):
+        hub = robot.chain("body", [f"hub{i}"], "continuous")
+        robot.chain(hub, [f"rim{i}a"], "continuous")
+        robot.chain(hub, [f"rim{i}b"], "continuous")
+    return robot
+
+
+def test_a_hub_turning_all_the_way_round_spreads_no_finger() -> None:
+    result = identify_urdf(wheel_legs().text())
+    assert result.structure != "Hand"
+    assert not [role for role in result.roles if role.role == "finger"]
+
+
+def test_a_five_finger_hand_named_by_its_bones_is_a_hand() -> None:
+    # index, middle, ring, pinky and a thumb of five joints each (a display hand's): no
+    # finger word but the thumb's, the bones' are (metacarpals, a phalanx's).
+    robot = RobotText("one_finger", root="left_base")
+    limits = '<limit lower="-1.6" upper="1.6" effort="30" velocity="1"/>'
+    bones = ("metacarpals", "metacarpals_2", "proximal", "intermediate", "distal")
+    joints = ("base", "metacarpals", "metacarpals_2", "proximal", "intermediate")
+    for finger in ("index", "middle", "ring", "pinky", "thumb"):
+        link = "left_base"
+        for joint, bone in zip(joints, bones, strict=True):
+            name = f"left_{finger}_{joint}_joint"
+            link = robot.joint(name, "revolute", link, f"left_{finger}_{bone}", limits)
+    assert identify_urdf(robot.text()).structure == "Hand"
+
+
 def sliding_jaws(*, third: bool = False) -> RobotText:
     """Two unnamed prismatic joints on the root at one place, sliding opposite ways, each with
     its own drive (no mimic); ``third`` adds an unnamed hinge elsewhere on the body."""
