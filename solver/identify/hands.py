@@ -43,6 +43,10 @@ _NOT_JAWS = ("head", "leg", "wheel", "caster", "rotor", "thruster", "fin", "wing
 _HEAD_PARTS = re.compile(r"antenna|(^|[_/])ears?([_/]|$)|eyelid|eyebrow", re.IGNORECASE)
 # Words of a finger's joints (or the links they move): a hand's finger, not a gripper's jaw.
 _FINGER = re.compile(r"finger|thumb|knuckle|phalan", re.IGNORECASE)
+# A hand's bones, as a display hand names its fingers' joints and links (``metacarpals``,
+# ``proximal``, ``intermediate``, ``distal``, a phalanx): a chain of them one joint longer than a
+# finger is one (:func:`_finger_like`).
+_FINGER_BONE = re.compile(r"metacarpal|phalan|proximal|intermediate|distal", re.IGNORECASE)
 # A frame at a finger's end (``fingertip_1``, ``thumb_tip``).
 _FINGERTIP = re.compile(r"(finger|thumb)[_-]?tip", re.IGNORECASE)
 # A split gripper's jaws hang at the end of a chain of at least this many driven joints.
@@ -420,9 +424,22 @@ def _finger_like(tree: JointTree, limb: Limb, longest: int) -> str | None:
     """How an unnamed chain is a finger's: ``"joints"`` (no more joints than a finger has, one
     more ending in a named fingertip), ``"size"`` (:func:`_finger_sized`), or ``None``."""
     joints = len(limb.joints)
-    if joints <= longest or (joints == longest + 1 and _ends_in_a_fingertip(tree, limb)):
+    if joints <= longest or (
+        joints == longest + 1 and (_ends_in_a_fingertip(tree, limb) or _named_by_bones(tree, limb))
+    ):
         return "joints"
     return "size" if _finger_sized(tree, limb) else None
+
+
+def _named_by_bones(tree: JointTree, limb: Limb) -> bool:
+    """Every joint of the chain, or the link it moves, names a hand's bone
+    (:data:`_FINGER_BONE`: ``left_index_metacarpals_joint``, ``left_proximal``)."""
+    for name in limb.joints:
+        joint = tree.urdf.joint(name)
+        words = name if joint is None else f"{name} {joint.child}"
+        if not _FINGER_BONE.search(words):
+            return False
+    return True
 
 
 def _finger_sized(tree: JointTree, limb: Limb) -> bool:
@@ -538,8 +555,9 @@ def _spread_fingers(tree: JointTree, by_base: dict[str, list[Limb]]) -> set[str]
     """Fingers that each spread on a joint of their own (abduction) before they branch: the
     short chains' bases each moved by one joint from one body (the palm), in threes or more,
     no chain counting its spreading joint longer than a finger. The spreading joints are
-    fingers' too. A joint that turns all the way round spreads no finger (a finger swings
-    aside a little): a wheel-leg's hub, its two rim halves on it, is no finger."""
+    fingers' too. A joint that turns all the way round and carries only chains of one joint
+    spreads no finger: a wheel-leg's hub with its two rim halves (a hand exported with every
+    joint continuous still spreads fingers of two joints or more)."""
     longest = tree.profile.limb("finger_max_joints")
     by_palm: dict[str | None, list[Joint]] = {}
     known: dict[str, str | None] = {}
@@ -548,7 +566,7 @@ def _spread_fingers(tree: JointTree, by_base: dict[str, list[Limb]]) -> set[str]
         if (
             spread is None
             or not spread.movable
-            or spread.turns(_FULL_TURN)
+            or (spread.turns(_FULL_TURN) and all(len(limb.joints) == 1 for limb in group))
             or any(len(limb.joints) + 1 > longest for limb in group)
         ):
             continue

@@ -459,50 +459,91 @@ def legs_alike(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
 
     A walker's legs are alike, and the words of a middle pair (``shoulder_middle_left``,
     ``elbow_middle_left``, ``knee_middle_left``) may name an arm's joints as often as a leg's.
-    A chain of no gripper, read as an arm or as nothing, on the rigid body two legs or more hang
-    from, whose joints are one of those legs' joint for joint (type, axis up to its sign, the
-    span of its limits) and whose tip is level with their feet (within :data:`_FEET_LEVEL` of
-    the shortest leg's reach, hip to foot: legs drawn spread flat too) is one of them: an arm
-    a legged robot carries is built as an arm, and held above its feet."""
-    legs = [limb for limb in limbs if limb.kind == "leg"]
-    if len(legs) < _BIPED_LEGS:
-        return limbs
-    placed = chain_ends(tree, legs)
+    A chain of no gripper, read as an arm or as nothing, named no arm or manipulator as a word
+    (:data:`_ARM_NAME`), on a rigid body two legs or more hang from, built as one of those legs
+    joint for joint (:func:`_build`: type, axis up to its sign, span of limits, length of each
+    link), whose tip is level with their feet (within :data:`_FEET_LEVEL` of the shortest leg's
+    reach, hip to foot), is one of them: an arm a legged robot carries is built as an arm, and
+    held above its feet. Legs that hang (each ending below its hip by :data:`_LEG_DROP` of its
+    reach) take only a chain that hangs too; legs drawn spread flat, four or more of them, only
+    a chain that starts among their hips (a hexapod's middle pair), so that a humanoid drawn
+    lying down, arms and legs reaching one way, keeps its arms."""
+    known: dict[str, str | None] = {}
+    hung = Counter(moved_by(tree.urdf, limb.base, known) for limb in limbs if limb.kind == "leg")
+    bodies = {body for body, count in hung.items() if count >= _BIPED_LEGS}
+    legs = [
+        limb
+        for limb in limbs
+        if limb.kind == "leg" and moved_by(tree.urdf, limb.base, known) in bodies
+    ]
+    placed = chain_ends(tree, legs) if legs else None
     if placed is None:
         return limbs
     reach = min(distance(start, end) for start, end in placed)
     if reach == 0:
         return limbs  # legs drawn with no length say nothing of where feet stand
+    hanging = all(start[2] - end[2] >= _LEG_DROP * distance(start, end) for start, end in placed)
+    if not hanging and len(legs) < _WALKER_LEGS:
+        return limbs  # two legs reaching sideways: a body drawn lying down, not standing
     feet = min(end[2] for _, end in placed)
-    known: dict[str, str | None] = {}
-    hung = Counter(moved_by(tree.urdf, limb.base, known) for limb in legs)
-    bodies = {body for body, count in hung.items() if count >= _BIPED_LEGS}
-    builds = {_build(tree, limb) for limb in legs}
+    hips = [start for start, _ in placed]
+    builds = {built for limb in legs if (built := _build(tree, limb)) is not None}
+
+    def alike(limb: Limb) -> bool:
+        if limb.kind not in ("arm", "other") or limb.gripper or _names_an_arm(tree, limb):
+            return False
+        if moved_by(tree.urdf, limb.base, known) not in bodies or _build(tree, limb) not in builds:
+            return False
+        ends = chain_ends(tree, [limb])
+        if ends is None:
+            return False
+        start, end = ends[0]
+        if abs(end[2] - feet) > _FEET_LEVEL * reach:
+            return False
+        if hanging:
+            return start[2] - end[2] >= _LEG_DROP * distance(start, end)
+        return all(
+            min(hip[axis] for hip in hips) - _SAME_PLACE
+            <= start[axis]
+            <= max(hip[axis] for hip in hips) + _SAME_PLACE
+            for axis in (0, 1)
+        )
+
     why = "a chain built as the legs beside it are, its tip level with their feet (a leg)"
-    found = [
-        replace(limb, kind="leg", why=why)
-        if limb.kind in ("arm", "other")
-        and not limb.gripper
-        and moved_by(tree.urdf, limb.base, known) in bodies
-        and _build(tree, limb) in builds
-        and abs(tree.poses.place(limb.tip)[2] - feet) <= _FEET_LEVEL * reach
-        else limb
-        for limb in limbs
-    ]
+    found = [replace(limb, kind="leg", why=why) if alike(limb) else limb for limb in limbs]
     return sort_limbs(tree, found) if found != limbs else limbs
 
 
-def _build(tree: JointTree, limb: Limb) -> tuple[tuple[str, tuple[float, ...], float], ...]:
-    """A chain's joints as built: each one's type, axis (up to its sign) and span of limits,
-    rounded so that a mirrored twin's floating-point noise reads the same."""
-    built = []
+def _names_an_arm(tree: JointTree, limb: Limb) -> bool:
+    """A joint of the chain, or the link it moves, names an arm or a manipulator as a word."""
     for name in limb.joints:
         joint = tree.urdf.joint(name)
-        if joint is None:
-            return ()
+        words = name if joint is None else f"{name} {joint.child}"
+        if _ARM_NAME.search(words):
+            return True
+    return False
+
+
+_Built = tuple[tuple[str, tuple[float, ...], float, float], ...]
+
+
+def _build(tree: JointTree, limb: Limb) -> _Built | None:
+    """A chain's joints as built: each one's type, axis (its sign turned so that its first
+    component not zero is positive), span of limits and the length of the link it moves (to
+    the next joint, the last one's to the tip), rounded to a thousandth so that a mirrored
+    twin's floating-point noise reads the same; None when a joint is missing."""
+    joints = [tree.urdf.joint(name) for name in limb.joints]
+    if any(joint is None for joint in joints):
+        return None
+    places = [tree.poses.place(joint.child) for joint in joints if joint is not None]
+    places.append(tree.poses.place(limb.tip))
+    built = []
+    for joint, (here, there) in zip(joints, pairwise(places), strict=True):
+        assert joint is not None
         span = (joint.upper or 0.0) - (joint.lower or 0.0)
-        axis = tuple(round(abs(value), 3) for value in joint.axis)
-        built.append((joint.type, axis, round(span, 3)))
+        first = next((value for value in joint.axis if abs(value) > _SAME_PLACE), 1.0)
+        axis = tuple(round(value if first > 0 else -value, 3) + 0.0 for value in joint.axis)
+        built.append((joint.type, axis, round(span, 3), round(distance(here, there), 3)))
     return tuple(built)
 
 

@@ -104,7 +104,7 @@ def test_a_link_written_under_a_namespace_of_its_own_is_named_by_its_last_segmen
     assert named_frames(drivers, urdf, PROFILE) == {"rc_1/front_lidar": "frame id in lidar_yaml"}
 
 
-def test_a_last_segment_two_namespaced_links_end_in_names_neither() -> None:
+def test_a_last_segment_two_namespaced_links_share_names_neither() -> None:
     urdf = parse_urdf(drawn(("base_link", "a/front_lidar"), ("base_link", "b/front_lidar")), "r")
     drivers = shipping(lidar_yaml='laser_frame_id: "$(var rc)/front_lidar"\n')
     assert named_frames(drivers, urdf, PROFILE) == {}

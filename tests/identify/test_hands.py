@@ -439,6 +439,13 @@ def test_a_hub_turning_all_the_way_round_spreads_no_finger() -> None:
     assert not [role for role in result.roles if role.role == "finger"]
 
 
+def test_a_hand_exported_with_every_joint_continuous_still_spreads_its_fingers() -> None:
+    # A CAD export writes no limits: the spreading joints turn whole as written, but each
+    # carries a finger of three joints, no rim half of one.
+    text = spread_hand().text().replace('type="revolute"', 'type="continuous"')
+    assert identify_urdf(text).structure == "Hand"
+
+
 def test_a_five_finger_hand_named_by_its_bones_is_a_hand() -> None:
     # index, middle, ring, pinky and a thumb of five joints each (a display hand's): no
     # finger word but the thumb's, the bones' are (metacarpals, a phalanx's).

@@ -1398,6 +1398,53 @@ def test_an_arm_built_otherwise_than_the_legs_it_stands_beside_stays_an_arm() ->
     )
 
 
+def named_humanoid(*, lying: bool = False) -> RobotText:
+    """A humanoid whose legs (hip, knee, ankle) and arms (shoulder, elbow, wrist) are built
+    alike, three hinges 0.15 m apart each; ``lying``: drawn lying down, every limb reaching
+    along -x and the torso 0.5 m along +x from the pelvis."""
+    robot = RobotText("h", root="pelvis")
+    torso = "0.5 0 0" if lying else "0 0 0.5"
+    robot.joint("waist", "fixed", "pelvis", "torso", f'<origin xyz="{torso}"/>')
+    step = "-0.15 0 0" if lying else "0 0 -0.15"
+    for side, y in (("l", 0.1), ("r", -0.1)):
+        for body, words, across in (
+            ("pelvis", ("hip", "knee", "ankle"), y),
+            ("torso", ("shoulder", "elbow", "wrist"), 2 * y),
+        ):
+            link, xyz = body, f"0 {across} 0"
+            for word in words:
+                link = builders.placed(
+                    robot, f"{side}_{word}", "revolute", link, f"{side}_{word}_link", xyz=xyz,
+                    axis="0 1 0",
+                )  # fmt: skip
+                xyz = step
+            robot.joint(f"{side}_{words[-1]}_end", "fixed", link, f"{side}_{words[-1]}_tip",
+                        f'<origin xyz="{step}"/>')  # fmt: skip
+    return robot
+
+
+def test_a_humanoid_drawn_lying_down_keeps_its_arms_built_as_its_legs() -> None:
+    # Every tip is level when the body lies down: two legs reaching sideways say nothing of
+    # where feet stand, and arms built as the legs stay arms.
+    for lying in (False, True):
+        assert identify_urdf(named_humanoid(lying=lying).text()).structure == "Humanoid"
+
+
+def test_a_chain_named_as_an_arm_built_as_the_legs_stays_an_arm() -> None:
+    robot = hexapod_with_a_middle_pair_named_as_arms()
+    link = builders.placed(
+        robot, "arm_base_joint", "revolute", "base_link", "arm_base", xyz="0.3 0 0", axis="0 1 0"
+    )
+    for part in ("arm_elbow", "arm_wrist"):
+        link = builders.placed(
+            robot, f"{part}_joint", "revolute", link, part, xyz="0 0.24 0", axis="-1 0 0"
+        )
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs].count("arm") == 1
+    assert result.structure == "Legged Mobile Manipulator"
+
+
 def small_humanoid() -> RobotText:
     """The nameless humanoid's legs, with two-joint arms (a small humanoid's) and a two-joint
     neck on the body: three short chains on one link, as a hand's fingers are."""
