@@ -476,42 +476,72 @@ def legs_alike(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
         for limb in limbs
         if limb.kind == "leg" and moved_by(tree.urdf, limb.base, known) in bodies
     ]
-    placed = chain_ends(tree, legs) if legs else None
-    if placed is None:
+    stance = _stance(tree, legs)
+    if stance is None:
         return limbs
-    reach = min(distance(start, end) for start, end in placed)
-    if reach == 0:
-        return limbs  # legs drawn with no length say nothing of where feet stand
-    hanging = all(start[2] - end[2] >= _LEG_DROP * distance(start, end) for start, end in placed)
-    if not hanging and len(legs) < _WALKER_LEGS:
-        return limbs  # two legs reaching sideways: a body drawn lying down, not standing
-    feet = min(end[2] for _, end in placed)
-    hips = [start for start, _ in placed]
-    builds = {built for limb in legs if (built := _build(tree, limb)) is not None}
 
     def alike(limb: Limb) -> bool:
         if limb.kind not in ("arm", "other") or limb.gripper or _names_an_arm(tree, limb):
             return False
-        if moved_by(tree.urdf, limb.base, known) not in bodies or _build(tree, limb) not in builds:
-            return False
-        ends = chain_ends(tree, [limb])
-        if ends is None:
-            return False
-        start, end = ends[0]
-        if abs(end[2] - feet) > _FEET_LEVEL * reach:
-            return False
-        if hanging:
-            return start[2] - end[2] >= _LEG_DROP * distance(start, end)
-        return all(
-            min(hip[axis] for hip in hips) - _SAME_PLACE
-            <= start[axis]
-            <= max(hip[axis] for hip in hips) + _SAME_PLACE
-            for axis in (0, 1)
+        return (
+            moved_by(tree.urdf, limb.base, known) in bodies
+            and _build(tree, limb) in stance.builds
+            and _stands_with(tree, limb, stance)
         )
 
     why = "a chain built as the legs beside it are, its tip level with their feet (a leg)"
     found = [replace(limb, kind="leg", why=why) if alike(limb) else limb for limb in limbs]
     return sort_limbs(tree, found) if found != limbs else limbs
+
+
+@dataclass(frozen=True)
+class _Stance:
+    """How a body's legs stand: the lowest foot's height, the shortest leg's reach, whether
+    every leg hangs, where the hips are, and how each leg is built (:func:`_build`)."""
+
+    feet: float
+    reach: float
+    hanging: bool
+    hips: tuple[Place, ...]
+    builds: frozenset[_Built]
+
+
+def _stance(tree: JointTree, legs: list[Limb]) -> _Stance | None:
+    """The legs' stance, or None when there are none, a first joint is missing, the legs are
+    drawn with no length, or two legs or three reach sideways (a body drawn lying down)."""
+    placed = chain_ends(tree, legs) if legs else None
+    if placed is None:
+        return None
+    reach = min(distance(start, end) for start, end in placed)
+    hanging = all(start[2] - end[2] >= _LEG_DROP * distance(start, end) for start, end in placed)
+    if reach == 0 or (not hanging and len(legs) < _WALKER_LEGS):
+        return None
+    return _Stance(
+        feet=min(end[2] for _, end in placed),
+        reach=reach,
+        hanging=hanging,
+        hips=tuple(start for start, _ in placed),
+        builds=frozenset(built for limb in legs if (built := _build(tree, limb)) is not None),
+    )
+
+
+def _stands_with(tree: JointTree, limb: Limb, stance: _Stance) -> bool:
+    """``limb``'s tip is level with the legs' feet, and it hangs as they do, or (legs spread
+    flat) starts among their hips."""
+    ends = chain_ends(tree, [limb])
+    if ends is None:
+        return False
+    start, end = ends[0]
+    if abs(end[2] - stance.feet) > _FEET_LEVEL * stance.reach:
+        return False
+    if stance.hanging:
+        return start[2] - end[2] >= _LEG_DROP * distance(start, end)
+    return all(
+        min(hip[axis] for hip in stance.hips) - _SAME_PLACE
+        <= start[axis]
+        <= max(hip[axis] for hip in stance.hips) + _SAME_PLACE
+        for axis in (0, 1)
+    )
 
 
 def _names_an_arm(tree: JointTree, limb: Limb) -> bool:

@@ -1566,6 +1566,23 @@ def test_a_hexapods_coxa_femur_and_tibia_abbreviated_are_leg_names() -> None:
         assert not leg.search(name), name
 
 
+def test_leg_inside_a_hand_makers_name_names_no_leg() -> None:
+    leg = load_profile().pattern("leg")
+    assert leg is not None
+    for name in ("LLEG_JOINT0", "legRF_joint", "FL_leg", "left_leg", "leg", "rleg_ro"):
+        assert leg.search(name), name
+    for name in ("l_allegro_joint_12", "allegro_hand_link_3.0", "allegro"):
+        assert not leg.search(name), name
+
+
+def test_a_hand_named_for_its_maker_is_a_hand_not_four_legs() -> None:
+    # Four fingers named l_allegro_joint_0 .. 15 on a palm: no leg word in them.
+    robot = RobotText("hand", root="l_allegro_base_link")
+    for finger in range(4):
+        robot.chain(robot.root, [f"l_allegro_joint_{4 * finger + k}" for k in range(4)])
+    assert identify_urdf(robot.text()).structure == "Hand"
+
+
 def test_a_continuous_track_plugin_moves_a_body_on_tracks_too() -> None:
     """The ContinuousTrack Gazebo plugin drives tracks: chains at the corners are flippers."""
     robot = folded_quadruped()
