@@ -26,9 +26,9 @@ Where names say nothing, the chains' places and shapes still speak:
   from an arm's wrist are no legs); longer unnamed chains, two hanging straight down from the
   bottom of a free body, are a biped's legs, and four or more so hanging, their feet level,
   a walker's (:func:`legs_by_reach`);
-* a chain built as the legs beside it (joint for joint: type, axis, span of limits), its tip
-  level with their feet, is one of them, whatever its words say (a hexapod's middle pair named
-  ``shoulder``, ``elbow``, ``knee``; :func:`legs_alike`);
+* a chain built as the legs beside it (joint for joint: type, axis, span of limits, length of
+  link), its tip level with their feet, is one of them, whatever its words say but an arm's
+  (a hexapod's middle pair named ``shoulder``, ``elbow``, ``knee``; :func:`legs_alike`);
 * two leg chains whose first joints turn about one line, side by side on one side of the
   body, are the two motors of one leg closed by a linkage (a five-bar leg, the loop a URDF
   cannot write): one leg (:func:`five_bars`), when the graph shows the loop: their ends meet
@@ -562,14 +562,13 @@ def _build(tree: JointTree, limb: Limb) -> _Built | None:
     component not zero is positive), span of limits and the length of the link it moves (to
     the next joint, the last one's to the tip), rounded to a thousandth so that a mirrored
     twin's floating-point noise reads the same; None when a joint is missing."""
-    joints = [tree.urdf.joint(name) for name in limb.joints]
-    if any(joint is None for joint in joints):
+    joints = [joint for name in limb.joints if (joint := tree.urdf.joint(name)) is not None]
+    if len(joints) != len(limb.joints):
         return None
-    places = [tree.poses.place(joint.child) for joint in joints if joint is not None]
+    places = [tree.poses.place(joint.child) for joint in joints]
     places.append(tree.poses.place(limb.tip))
     built = []
     for joint, (here, there) in zip(joints, pairwise(places), strict=True):
-        assert joint is not None
         span = (joint.upper or 0.0) - (joint.lower or 0.0)
         first = next((value for value in joint.axis if abs(value) > _SAME_PLACE), 1.0)
         axis = tuple(round(value if first > 0 else -value, 3) + 0.0 for value in joint.axis)
