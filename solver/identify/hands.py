@@ -27,7 +27,7 @@ import re
 from itertools import pairwise
 
 from solver.identify.couplings import Walk, jaw_groups
-from solver.identify.limbs import Limb, chain_ends, moved_by, tips_meet
+from solver.identify.limbs import Limb, chain_ends, joint_words, moved_by, tips_meet
 from solver.identify.pose import distance, local_axis, parallel, perpendicular
 from solver.identify.readers.urdf import Joint
 from solver.identify.tree import JointTree
@@ -434,12 +434,7 @@ def _finger_like(tree: JointTree, limb: Limb, longest: int) -> str | None:
 def _named_by_bones(tree: JointTree, limb: Limb) -> bool:
     """Every joint of the chain, or the link it moves, names a hand's bone
     (:data:`_FINGER_BONE`: ``left_index_metacarpals_joint``, ``left_proximal``)."""
-    for name in limb.joints:
-        joint = tree.urdf.joint(name)
-        words = name if joint is None else f"{name} {joint.child}"
-        if not _FINGER_BONE.search(words):
-            return False
-    return True
+    return all(_FINGER_BONE.search(words) for words in joint_words(tree, limb))
 
 
 def _finger_sized(tree: JointTree, limb: Limb) -> bool:

@@ -105,6 +105,7 @@ __all__ = [
     "five_bars",
     "flippers",
     "gripping_leg",
+    "joint_words",
     "legs_alike",
     "legs_at_the_pelvis",
     "legs_by_place",
@@ -438,10 +439,11 @@ def legs_by_reach(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
         first = tree.urdf.joint(limb.joints[0])
         if first is not None:
             placed[id(limb)] = (tree.poses.place(first.child), tree.poses.place(limb.tip))
-    pair = _hanging_pair(tree, limbs, placed)
+    candidates = _leg_candidates(tree, limbs, placed)
+    pair = _hanging_pair(tree, limbs, candidates, placed)
     if pair is None:
         return limbs
-    level = _level_with(tree, limbs, placed, pair)
+    level = _level_with(candidates, placed, pair)
     if len(level) >= _WALKER_LEGS:  # a quadruped's, a hexapod's: every one of them a leg
         why = "one of equal unnamed chains hanging straight down, their feet level (legs by reach)"
         legs = {id(limb) for limb in level}
@@ -546,12 +548,16 @@ def _stands_with(tree: JointTree, limb: Limb, stance: _Stance) -> bool:
 
 def _names_an_arm(tree: JointTree, limb: Limb) -> bool:
     """A joint of the chain, or the link it moves, names an arm or a manipulator as a word."""
-    for name in limb.joints:
-        joint = tree.urdf.joint(name)
-        words = name if joint is None else f"{name} {joint.child}"
-        if _ARM_NAME.search(words):
-            return True
-    return False
+    return any(_ARM_NAME.search(words) for words in joint_words(tree, limb))
+
+
+def joint_words(tree: JointTree, limb: Limb) -> list[str]:
+    """Each joint of the chain with the link it moves (``"elbow_joint forearm_link"``), as the
+    words its name and its part's say; a joint the description lacks, by its name alone."""
+    return [
+        name if (joint := tree.urdf.joint(name)) is None else f"{name} {joint.child}"
+        for name in limb.joints
+    ]
 
 
 _Built = tuple[tuple[str, tuple[float, ...], float, float], ...]
@@ -691,10 +697,13 @@ def _across_from(a: Place, b: Place) -> bool:
 
 
 def _hanging_pair(
-    tree: JointTree, limbs: list[Limb], placed: dict[int, tuple[Place, Place]]
+    tree: JointTree,
+    limbs: list[Limb],
+    candidates: list[Limb],
+    placed: dict[int, tuple[Place, Place]],
 ) -> tuple[Limb, Limb] | None:
-    """The two limbs whose tips are lowest, when they are a biped's legs (``legs_by_reach``)."""
-    candidates = _leg_candidates(tree, limbs, placed)
+    """The two ``candidates`` (:func:`_leg_candidates`) whose tips are lowest, when they are a
+    biped's legs (``legs_by_reach``)."""
     if len(candidates) < _BIPED_LEGS:
         return None
     lowest = sorted(candidates, key=lambda limb: placed[id(limb)][1][2])
@@ -726,18 +735,15 @@ def _hanging_pair(
 
 
 def _level_with(
-    tree: JointTree,
-    limbs: list[Limb],
-    placed: dict[int, tuple[Place, Place]],
-    pair: tuple[Limb, Limb],
+    candidates: list[Limb], placed: dict[int, tuple[Place, Place]], pair: tuple[Limb, Limb]
 ) -> list[Limb]:
-    """The chains like ``pair`` (a biped's legs by reach), the pair included: of as many joints,
-    each hanging nearly straight down, their tips as low as the pair's (within
+    """The ``candidates`` like ``pair`` (a biped's legs by reach), the pair included: of as many
+    joints, each hanging nearly straight down, their tips as low as the pair's (within
     :data:`_FEET_LEVEL` of the shortest drop). Four or more are a walker's legs, not a biped's
     two beside two arms hanging as low (arms hang from shoulders, their hands above the feet)."""
     drops = []
     level = []
-    for limb in _leg_candidates(tree, limbs, placed):
+    for limb in candidates:
         start, end = placed[id(limb)]
         reach = distance(start, end)
         if len(limb.joints) != len(pair[0].joints) or reach == 0:
