@@ -79,7 +79,8 @@ PARTS = (
 # surface has (plugins and sensors: hydrodynamics, buoyancy, a DVL, a pressure sensor); space:
 # plugins of a craft thrusters fly in air or space (a reaction wheel, air thrusters); spring:
 # plugins that hold a joint on a spring (a joint they name yields: passive, no limb's); force:
-# plugins that push a link with a commanded force (in water, a thruster's link).
+# plugins that push a link with a commanded force (in water, a thruster's link); grasp: plugins
+# that hold what a gripper closes on (the links they name as its fingers: gripper joints).
 PLUGIN_PARTS = (
     "drive",
     "track",
@@ -93,6 +94,7 @@ PLUGIN_PARTS = (
     "spring",
     "mover",
     "force",
+    "grasp",
 )
 FEATURES = (
     "wheels",

@@ -34,6 +34,7 @@ Not here: chains and limbs (:mod:`solver.identify.limbs`), the structure
 from __future__ import annotations
 
 import re
+from collections.abc import Iterator
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -52,6 +53,7 @@ _PLUGIN_ROLES = (
     ("drive", "wheel"),
     ("lift", "fin"),
     ("spring", "passive"),  # a joint held on a spring yields: nobody drives it
+    ("grasp", "gripper"),  # a grasp plugin's <gripper_link>: a finger (not its <palm_link>)
 )
 _Z = 2
 # The evidence of a propeller a simulator poses on a floating joint (counted however few).
@@ -72,6 +74,8 @@ _TRACK_SIDES = frozenset({"lefttrack", "righttrack"})
 # The parameters of such a plugin that name its wheels (``<leftJoint>``, ``<wheel_joint>``); a
 # robot's own plugin may name other joints too (an arm's, a head's), which it drives otherwise.
 _WHEEL_TAG = re.compile(r"left|right|wheel|front|rear|back|steer", re.IGNORECASE)
+# Plugins that name links, not joints: a joint is named by the link it moves.
+_BY_LINK = frozenset({"thruster", "grasp"})
 
 
 def _pattern_parts(plugin: PluginTag, profile: Profile) -> frozenset[str]:
@@ -273,27 +277,12 @@ class RoleReader:
 
     def _named_by_plugins(self) -> dict[str, Role]:
         """Joints a plugin names in a parameter, with the role that plugin gives them."""
-        joints = {j.name for j in self.urdf.joints if j.movable}
-        by_link = {j.child: j.name for j in self.urdf.joints if j.movable}
         found: dict[str, Role] = {}
-        drive = self.profile.plugin_pattern("drive")
         for part, role in _PLUGIN_ROLES:
             for plugin in self.plugins_of(part):
                 label = self.plugin_label(plugin)
-                # A drive plugin known by its wheel geometry alone names its wheels by side.
-                by_geometry = part == "drive" and not (drive and drive.search(_said(plugin)))
-                for tag, text in plugin.params:
-                    if by_geometry and not _WHEEL_TAG.search(tag):
-                        continue
-                    # A thruster plugin may list its thrusters by link (a hull's thruster list).
-                    joint = (
-                        text
-                        if text in joints
-                        else by_link.get(text)
-                        if part == "thruster"
-                        else None
-                    )
-                    if joint is None or joint in found:
+                for tag, joint in self._joints_named(part, plugin):
+                    if joint in found:
                         continue
                     kind = "steering" if role == "wheel" and "steer" in tag.lower() else role
                     why = f"<{tag}> of {part} plugin {label}"
@@ -303,6 +292,34 @@ class RoleReader:
                         kind, why = "rotor", why + ", turning without limits (a propeller)"
                     found[joint] = Role(joint, kind, why)
         return found
+
+    def _joints_named(self, part: str, plugin: PluginTag) -> Iterator[tuple[str, str]]:
+        """The movable joints ``plugin`` (read as ``part``) names, each with the parameter's tag:
+        by their names; a thruster plugin may list its thrusters, a grasp plugin its fingers,
+        by the links they move (a hull's thruster list, ``<gripper_link>``, not the grasp
+        plugin's ``<palm_link>``). A drive plugin known by its wheel geometry alone names its
+        wheels by side."""
+        drive = self.profile.plugin_pattern("drive")
+        by_geometry = part == "drive" and not (drive and drive.search(_said(plugin)))
+        for tag, text in plugin.params:
+            if by_geometry and not _WHEEL_TAG.search(tag):
+                continue
+            if part == "grasp" and "gripper" not in tag.lower():
+                continue
+            name = text.strip()
+            if name in self._movable:
+                yield tag, name
+            elif part in _BY_LINK and name in self._moved_by:
+                yield tag, self._moved_by[name]
+
+    @cached_property
+    def _movable(self) -> frozenset[str]:
+        return frozenset(j.name for j in self.urdf.joints if j.movable)
+
+    @cached_property
+    def _moved_by(self) -> dict[str, str]:
+        """Each link a movable joint moves, with that joint."""
+        return {j.child: j.name for j in self.urdf.joints if j.movable}
 
     def _pushed_thrusters(self) -> dict[str, Role]:
         """On a body in water, the joint whose link a force plugin pushes on command (its

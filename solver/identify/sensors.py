@@ -126,7 +126,7 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
         simulated = plugin_kind(plugin, profile)
         if simulated is None or _same_plugin(plugin) in inside:
             continue
-        link = plugin.param(*_LINK_PARAMS) or plugin.reference
+        link = _plugin_link(plugin, simulated, found)
         joint = urdf.joint(plugin.param(*_JOINT_PARAMS) or "")
         if link is None and joint is not None:
             link = joint.child  # a sensor on a joint measures at the joint's child link
@@ -192,6 +192,19 @@ def under_water(detections: Iterable[Detection]) -> tuple[Detection, ...]:
         if d.kind == "barometer"
         else d
         for d in detections
+    )
+
+
+def _plugin_link(plugin: PluginTag, kind: str, found: list[tuple[Detection, str]]) -> str | None:
+    """The link a sensor plugin outside any ``<sensor>`` reports on: of the links it names (its
+    body, its frame), one where an element of its kind sits, the device declared twice (an
+    IMU's element on ``imu_link``, its plugin's ``<bodyName>`` the chassis and ``<frameName>``
+    ``imu_link``); else the first it names, else its ``<gazebo reference>``."""
+    tags = {tag.lower() for tag in _LINK_PARAMS}
+    named = [text for tag, text in plugin.params if tag.lower() in tags]
+    declared = {d.link for d, origin in found if d.kind == kind and origin != "plugin"}
+    return next((link for link in named if link in declared), None) or (
+        named[0] if named else plugin.reference
     )
 
 

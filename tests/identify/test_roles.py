@@ -233,6 +233,38 @@ def test_joints_a_spring_plugin_holds_are_passive_and_leave_a_one_joint_tool_no_
     assert identify_urdf(sampling_rover(springs=False).text()).structure == "Mobile Manipulator"
 
 
+def arm_car(*, grasp: bool) -> RobotText:
+    """A wheeled base carrying a chain of six unnamed joints whose last link holds two one-joint
+    chains turning without limits (``j7``, ``j8``: a sloppy gripper's jaws, no word says so); with
+    ``grasp``, a grasp plugin names their links as the gripper's and the last link as its palm
+    (``libgazebo_grasp_fix.so``'s ``<arm>`` entry)."""
+    robot = builders.ugv()
+    tip = robot.chain(robot.root, [f"j{i}" for i in range(1, 7)])
+    for name, side in (("j7", "0.08"), ("j8", "-0.08")):
+        builders.placed(robot, name, "continuous", tip, f"{name}_link", xyz=f"0.05 {side} 0")
+    if grasp:
+        robot.add(
+            builders.model_plugin(
+                "gazebo_grasp_fix",
+                "libgazebo_grasp_fix.so",
+                f"<arm><arm_name>my_arm</arm_name><palm_link>{tip}</palm_link>"
+                "<gripper_link> j7_link </gripper_link><gripper_link>j8_link</gripper_link>"
+                "</arm><update_rate>50</update_rate>",
+            )
+        )
+    return robot
+
+
+def test_the_links_a_grasp_plugin_names_as_a_grippers_are_moved_by_its_fingers() -> None:
+    found = roles(arm_car(grasp=True))
+    assert found["j7"] == ("finger", "<gripper_link> of grasp plugin libgazebo_grasp_fix.so")
+    assert found["j8"][0] == "finger"
+    assert found["j6"][0] == "arm"  # its palm is the arm's last link, no finger
+    assert identify_urdf(arm_car(grasp=True).text()).structure == "Mobile Manipulator"
+    # Without the plugin nothing says the two turning joints close on anything.
+    assert identify_urdf(arm_car(grasp=False).text()).structure != "Mobile Manipulator"
+
+
 def test_a_swivel_named_joint_that_carries_a_finger_is_no_caster() -> None:
     # Three fingers on a palm, two of them on preshape joints into links named swivel_N: the
     # swivels turn fingers, not wheels, so the hand is no mobile base.

@@ -227,6 +227,21 @@ def test_a_plugin_feeding_a_counted_element_is_the_same_sensor() -> None:
     assert found == [("imu", None, 1)]
 
 
+def test_a_plugin_naming_its_body_and_the_frame_an_element_of_its_kind_is_on_feeds_it() -> None:
+    # The plugin hangs on the base (its <bodyName>) and reports in imu_link (its <frameName>),
+    # where the element is: one IMU declared twice. Naming only the base, it is a device of
+    # its own.
+    element = builders.gazebo_sensor("imu_link", "imu", "imu")
+    for params, count in (
+        ("<bodyName>base_link</bodyName><frameName>imu_link</frameName>", 1),
+        ("<bodyName>base_link</bodyName>", 2),
+    ):
+        robot = builders.ugv()
+        robot.fixed(robot.root, "imu_link")
+        plugin = builders.model_plugin("imu_plugin", "libgazebo_ros_imu.so", params)
+        assert kinds(element, plugin, robot=robot) == [("imu", None, count)]
+
+
 def test_a_force_plugin_naming_the_joint_a_gazebo_force_sensor_is_on_is_the_same_sensor() -> None:
     # builders.ugv() has wheel_left_joint: a force/torque sensor on a joint measures at its
     # child link, the link a plugin naming the joint measures at.
