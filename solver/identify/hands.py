@@ -11,7 +11,9 @@ or slide about one line with nothing beyond them but their own followers (a link
 joints), closed by one motion (mimic joints follow one driver; not on a head, where a mirrored
 pair, or a pair swinging both ways about the line between them, is ears or eyelids, nor such a
 swinging pair that is a body's only motions, a tilt-rotor's two motor mounts) or, at the
-end of a chain of two joints or more, each by its own (a humanoid's split gripper); so are the
+end of a chain of two joints or more, each by its own (a humanoid's split gripper; two that
+turn without limits, as a sloppy file writes jaws, only at the end of an arm: a wheel-leg's hub
+on the slides that place it in a simulator's world carries rim halves, no jaws); so are the
 joints of a body whose every motion is one motor's, turning on its link about three directions
 or more (a linkage gripper's fingers spread about its palm). A hand is counted by its fingers,
 one tip per finger (:func:`finger_tips`).
@@ -28,12 +30,15 @@ from itertools import pairwise
 
 from solver.identify.couplings import Walk, jaw_groups
 from solver.identify.limbs import Limb, chain_ends, joint_words, moved_by, tips_meet
+from solver.identify.placement import MACHINE_TRAVEL
 from solver.identify.pose import distance, local_axis, parallel, perpendicular
 from solver.identify.readers.urdf import Joint
 from solver.identify.tree import JointTree
 
 __all__ = ["finger_groups", "finger_tips", "gripper_closure", "jaws", "stacked_grippers"]
 
+# Joints with a travel a file writes (a jaw's, a finger's).
+_LIMITED = ("revolute", "prismatic")
 # Parts whose names make a joint no jaw (a pair of eyes, two wheels, two legs).
 _NOT_JAWS = ("head", "leg", "wheel", "caster", "rotor", "thruster", "fin", "wing", "track")
 # A head's own moving parts, by their names (a droid's antennas, a pet's ears, eyelids): on a
@@ -49,7 +54,8 @@ _FINGER = re.compile(r"finger|thumb|knuckle|phalan", re.IGNORECASE)
 _FINGER_BONE = re.compile(r"metacarpal|phalan|proximal|intermediate|distal", re.IGNORECASE)
 # A frame at a finger's end (``fingertip_1``, ``thumb_tip``).
 _FINGERTIP = re.compile(r"(finger|thumb)[_-]?tip", re.IGNORECASE)
-# A split gripper's jaws hang at the end of a chain of at least this many driven joints.
+# A split gripper's jaws hang at the end of a chain of at least this many driven joints; jaws
+# written as joints that turn without limits, at the end of an arm's (``arm_min_joints``).
 _CHAIN_BEFORE_JAWS = 2
 # Places this close (metres) are one place.
 _SAME = 1e-4
@@ -135,7 +141,8 @@ def _about_one_line(directions: list[tuple[float, float, float]]) -> bool:
 def _jaw_pairs(tree: JointTree, taken: set[str]) -> dict[str, str]:
     """Two limited joints side by side on one link, each driven on its own and moving nothing
     but its own followers (a leaf, or a jaw's linkage of mimic joints): jaws at the end of a
-    chain, or a gripper's whole body (its only motions), unless they swing both ways about the
+    chain (two endless ones at the end of an arm: :func:`_ends_an_arm`), or a gripper's whole
+    body (its only motions), unless they swing both ways about the
     line between them (:func:`_ears`: they never close on each other; a tilt-rotor's two motor
     mounts). At the end of a chain that is no head's, two hinges mirroring each other
     (:func:`_twins`) are jaws too."""
@@ -144,8 +151,7 @@ def _jaw_pairs(tree: JointTree, taken: set[str]) -> dict[str, str]:
     for joint in tree.urdf.joints:
         if (
             joint.actuated
-            and joint.type in ("revolute", "prismatic")
-            and joint.lower is not None
+            and (joint.type == "continuous" or (joint.type in _LIMITED and joint.lower is not None))
             and _moves_alone(tree, joint, walk)
             and joint.name not in taken
         ):
@@ -164,6 +170,11 @@ def _jaw_pairs(tree: JointTree, taken: set[str]) -> dict[str, str]:
 def _pair_why(tree: JointTree, link: str, pair: list[Joint], motions: list[str]) -> str:
     """Why two joints on ``link`` are jaws (see :func:`_jaw_pairs`), or "" when they are not."""
     beside = _side_by_side(pair, exactly=_on_a_head(tree, link))
+    if any(joint.type == "continuous" for joint in pair):
+        # Jaws a sloppy file lets turn for ever: side by side at the end of an arm, no head's.
+        if beside and _ends_an_arm(tree, link) and not _on_a_head(tree, link):
+            return f"one of two jaws side by side at the end of an arm ({link}), turning freely"
+        return ""
     at_the_end = _ends_a_chain(tree, link)
     if at_the_end and beside and not (_head_parts(pair) and _on_a_head(tree, link)):
         return f"one of two jaws side by side at the end of a chain ({link})"
@@ -278,16 +289,40 @@ def _parent_link(tree: JointTree, name: str) -> str:
 
 def _ends_a_chain(tree: JointTree, link: str) -> bool:
     """At least two driven joints move ``link`` (it is the end of a chain, not the base)."""
+    return _driven_above(tree, link, _CHAIN_BEFORE_JAWS, placing=True)
+
+
+def _ends_an_arm(tree: JointTree, link: str) -> bool:
+    """At least an arm's joints (``arm_min_joints``) drive ``link``, not counting slides that
+    travel as far as a simulator places a body (:data:`MACHINE_TRAVEL`: a wheel-leg's hub on
+    the slides that move it in its plane is no arm's end)."""
+    return _driven_above(tree, link, tree.profile.limb("arm_min_joints"), placing=False)
+
+
+def _driven_above(tree: JointTree, link: str, joints: int, *, placing: bool) -> bool:
+    """At least ``joints`` driven joints move ``link`` (with ``placing``, slides that place
+    the body count too)."""
     driven = 0
     joint = tree.urdf.parent_joint(link)
     for _ in range(64):
         if joint is None:
             break
-        driven += tree.drives(joint)
-        if driven >= _CHAIN_BEFORE_JAWS:
+        driven += tree.drives(joint) and (placing or not _places(joint))
+        if driven >= joints:
             return True
         joint = tree.urdf.parent_joint(joint.parent)
     return False
+
+
+def _places(joint: Joint) -> bool:
+    """A slide whose written travel reaches a simulator's world (:data:`MACHINE_TRAVEL` or
+    more): it places the body, no arm's."""
+    return (
+        joint.type == "prismatic"
+        and joint.lower is not None
+        and joint.upper is not None
+        and joint.upper - joint.lower >= MACHINE_TRAVEL
+    )
 
 
 def stacked_grippers(tree: JointTree, grippers: list[str]) -> list[str]:

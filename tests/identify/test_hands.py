@@ -347,6 +347,35 @@ def test_two_jaws_side_by_side_at_the_end_of_an_arm_make_it_end_in_a_gripper() -
     assert [limb.gripper for limb in result.body.limbs if limb.kind == "arm"] == [True, True]
 
 
+def spinning_pair(robot: RobotText, link: str) -> None:
+    """Two unnamed joints that turn without limits side by side on ``link`` (a sloppy file's
+    jaws, or a hub's rim halves)."""
+    for name, side in (("a", "0.04"), ("b", "-0.04")):
+        builders.placed(robot, name, "continuous", link, f"{name}_link", xyz=f"0.05 {side} 0")
+
+
+def test_two_jaws_turning_without_limits_at_the_end_of_an_arm_make_it_end_in_a_gripper() -> None:
+    robot = builders.ugv()
+    spinning_pair(robot, robot.chain(robot.root, [f"j{i}" for i in range(1, 7)]))
+    result = identify_urdf(robot.text())
+    assert result.structure == "Mobile Manipulator"
+    assert result.body is not None
+    assert [limb.gripper for limb in result.body.limbs if limb.kind == "arm"] == [True]
+    # On a short chain, or on a hub that slides far enough to place the body in a
+    # simulator's world (a wheel-leg's rim halves), they close on nothing.
+    short = builders.ugv()
+    spinning_pair(short, short.chain(short.root, ["j1", "j2"]))
+    slid = RobotText("segway", root="world_base")
+    travel = '<limit lower="-200" upper="200" effort="1" velocity="1"/>'
+    for name, axis in (("z_slide", "0 0 1"), ("x_slide", "1 0 0")):
+        slid.joint(
+            name, "prismatic", slid.links[-1], f"{name}_link", f'<axis xyz="{axis}"/>{travel}'
+        )
+    spinning_pair(slid, slid.chain(slid.links[-1], ["hub"], "continuous"))
+    for robot in (short, slid):
+        assert "finger" not in {role.role for role in identify_urdf(robot.text()).roles}
+
+
 def test_jaws_apart_along_one_line_but_a_hair_across_it_are_side_by_side() -> None:
     # A CAD export places a six-joint arm's two unnamed sliding fingers 0.8 m apart across the
     # tool and 0.03 m apart along its axis (the second finger turned half a turn about x):

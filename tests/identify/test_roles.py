@@ -235,13 +235,13 @@ def test_joints_a_spring_plugin_holds_are_passive_and_leave_a_one_joint_tool_no_
 
 def arm_car(*, grasp: bool) -> RobotText:
     """A wheeled base carrying a chain of six unnamed joints whose last link holds two one-joint
-    chains turning without limits (``j7``, ``j8``: a sloppy gripper's jaws, no word says so); with
-    ``grasp``, a grasp plugin names their links as the gripper's and the last link as its palm
-    (``libgazebo_grasp_fix.so``'s ``<arm>`` entry)."""
+    chains turning without limits, not side by side (``j7``, ``j8``: a sloppy gripper's jaws, no
+    word or shape says so); with ``grasp``, a grasp plugin names their links as the gripper's
+    and the last link as its palm (``libgazebo_grasp_fix.so``'s ``<arm>`` entry)."""
     robot = builders.ugv()
     tip = robot.chain(robot.root, [f"j{i}" for i in range(1, 7)])
-    for name, side in (("j7", "0.08"), ("j8", "-0.08")):
-        builders.placed(robot, name, "continuous", tip, f"{name}_link", xyz=f"0.05 {side} 0")
+    for name, place in (("j7", "0.05 0.08 0"), ("j8", "0.03 -0.08 0.02")):
+        builders.placed(robot, name, "continuous", tip, f"{name}_link", xyz=place)
     if grasp:
         robot.add(
             builders.model_plugin(
