@@ -60,6 +60,11 @@ _WHEEL_LEGS = 6
 # without limits (an arm's wrist that turns for ever), no wheel. Limited, sliding, planar and
 # floating joints are not counted (a leg's, a suspension's, a planner's virtual root joints).
 _MOST_ENDLESS_ABOVE_A_WHEEL = 3
+# Nor below more movable joints than this in one unbranched chain, of any kind: a rover's
+# steering, a wheel-leg's hip, thigh and knee; a seven-joint arm's last endless joint ends six.
+_MOST_JOINTS_ABOVE_A_WHEEL = 5
+# The most joints a walk up the tree takes (fixed ones included; a stranger's file is bounded).
+_DEEPEST_WALK = 64
 # Wheel-legged robots roll on two legs' wheels or four (bipeds, quadrupeds).
 _WHEEL_LEGGED = (2, 4)
 # A leg's last joint named for a foot's part turns a foot, whatever its range (an ankle, a toe).
@@ -286,6 +291,30 @@ def _few_endless_above(tree: JointTree, leaf: Joint, known: dict[str, str | None
     return False
 
 
+def _few_joints_above(tree: JointTree, leaf: Joint) -> bool:
+    """At most :data:`_MOST_JOINTS_ABOVE_A_WHEEL` movable joints in the one unbranched chain
+    that carries ``leaf``'s link, up to the nearest link that carries another moving part
+    (the body, a bogie): an arm's, not a wheel's, past that (a walk of a few dozen joints at
+    most; a planner's root joints above the body are not counted)."""
+    movable = 0
+    link = leaf.parent
+    for _ in range(_DEEPEST_WALK):
+        joint = tree.urdf.parent_joint(link)
+        if joint is None or _branches(tree, link):
+            return True
+        movable += joint.movable
+        if movable > _MOST_JOINTS_ABOVE_A_WHEEL:
+            return False
+        link = joint.parent
+    return True
+
+
+def _branches(tree: JointTree, link: str) -> bool:
+    """More than one joint on ``link`` moves or carries something that moves."""
+    moving = (j for j in tree.urdf.children(link) if j.movable or j.child in tree.moving_below)
+    return next(moving, None) is not None and next(moving, None) is not None
+
+
 def _endless(joint: Joint) -> bool:
     return joint.endless
 
@@ -345,7 +374,11 @@ def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     known: dict[bool, dict[str, str | None]] = {}
     endless: dict[str, str | None] = {}  # link -> the nearest endless joint above it
     apart = [
-        j for j in apart if _hangs_freely(tree, j, known) and _few_endless_above(tree, j, endless)
+        j
+        for j in apart
+        if _hangs_freely(tree, j, known)
+        and _few_endless_above(tree, j, endless)
+        and _few_joints_above(tree, j)
     ]
     if len(apart) >= 2 and _sides({tree.poses.place(j.child)[1] for j in apart}):
         found.extend(j.name for j in apart)

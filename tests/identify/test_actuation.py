@@ -715,6 +715,26 @@ def test_the_endless_last_joints_of_two_long_unnamed_chains_are_wrists_not_wheel
     assert result.structure == "Torso"
 
 
+def test_the_endless_last_joints_of_two_seven_joint_arms_on_a_wheeled_base_are_no_wheels() -> None:
+    # Two unnamed seven-joint arms on a wheeled base, one on each side, their odd joints endless
+    # and their even ones limited (a Kinova Gen3's): only three endless joints hang above each
+    # last one, but six joints of one chain do, more than any wheel's leg or suspension.
+    robot = builders.ugv()
+    for side, y in (("r", -0.2), ("l", 0.2)):
+        parent = robot.root
+        for i in range(1, 8):
+            kind = "continuous" if i % 2 else "revolute"
+            xyz = f"0 {y} 0.3" if i == 1 else "0 0 0.1"
+            axis = "0 1 0" if i == 7 else "0 0 1"  # the last one about a level axle at rest
+            parent = builders.placed(
+                robot, f"{side}{i}", kind, parent, f"{side}{i}_l", xyz=xyz, axis=axis
+            )
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert not {"r7", "l7"} & set(result.body.wheels)
+    assert result.structure == "Mobile Manipulator"
+
+
 def test_caster_wheels_below_a_planners_virtual_root_joints_are_still_wheels() -> None:
     # A whole-body planner's x, y and yaw joints above the base: only endless joints count
     # against a wheel, and the planner's slides and limited yaw do not.
