@@ -28,9 +28,10 @@ from __future__ import annotations
 
 import math
 import re
+from collections import Counter
 from collections.abc import Iterator, Mapping
 
-from solver.identify.hands import gripper_closure, jaws
+from solver.identify.hands import endless_jaws, gripper_closure, jaws
 from solver.identify.limbs import moved_by, nearest_above, points_a_sensor
 from solver.identify.pose import Vector, local_axis, parallel, spread
 from solver.identify.readers.urdf import Joint
@@ -62,7 +63,9 @@ _WHEEL_LEGS = 6
 _MOST_ENDLESS_ABOVE_A_WHEEL = 3
 # Nor below more movable joints than this in one unbranched chain, of any kind: a rover's
 # steering, a wheel-leg's hip, thigh and knee; a seven-joint arm's last endless joint ends six.
+# As many such leaves as this or more are wheeled feet (six-joint legs each ending in a wheel).
 _MOST_JOINTS_ABOVE_A_WHEEL = 5
+_WHEELED_FEET = 4
 # The most joints a walk up the tree takes (fixed ones included; a stranger's file is bounded).
 _DEEPEST_WALK = 64
 # Wheel-legged robots roll on two legs' wheels or four (bipeds, quadrupeds).
@@ -135,6 +138,8 @@ def joint_roles(tree: JointTree) -> dict[str, Role]:
     roles.update(_steering_beside(tree, roles))
     _drop_lone_rotors(tree, roles)
     roles.update(_coupled_drives(tree, roles))
+    for name, why in endless_jaws(tree, set(roles)).items():
+        roles[name] = Role(name, "gripper", why)
     grippers = gripper_closure(tree, {n for n, r in roles.items() if r.role == "gripper"})
     for name in grippers - set(roles):
         roles[name] = Role(name, "gripper", "moves a finger: below a gripper joint")
@@ -291,28 +296,42 @@ def _few_endless_above(tree: JointTree, leaf: Joint, known: dict[str, str | None
     return False
 
 
-def _few_joints_above(tree: JointTree, leaf: Joint) -> bool:
-    """At most :data:`_MOST_JOINTS_ABOVE_A_WHEEL` movable joints in the one unbranched chain
-    that carries ``leaf``'s link, up to the nearest link that carries another moving part
-    (the body, a bogie): an arm's, not a wheel's, past that (a walk of a few dozen joints at
-    most; a planner's root joints above the body are not counted)."""
+def _wrists_dropped(tree: JointTree, leaves: list[Joint]) -> list[Joint]:
+    """``leaves`` but the last joints of arms: fewer than :data:`_WHEELED_FEET` leaves that
+    each end more than :data:`_MOST_JOINTS_ABOVE_A_WHEEL` movable joints of one unbranched chain
+    (up to the nearest link that carries another moving part: the body, a bogie) are wrists (a
+    robot's one or two arms); four or more so deep are a walker's wheeled feet (six-joint legs,
+    each ending in a wheel)."""
+    branching = _branching_links(tree)
+    deep = {j.name for j in leaves if _deep(tree, j, branching)}
+    if not deep or len(deep) >= _WHEELED_FEET:
+        return leaves
+    return [j for j in leaves if j.name not in deep]
+
+
+def _deep(tree: JointTree, leaf: Joint, branching: frozenset[str]) -> bool:
+    """More than :data:`_MOST_JOINTS_ABOVE_A_WHEEL` movable joints between ``leaf``'s link and
+    the nearest link of ``branching`` above it (a walk of a few dozen joints at most)."""
     movable = 0
     link = leaf.parent
     for _ in range(_DEEPEST_WALK):
         joint = tree.urdf.parent_joint(link)
-        if joint is None or _branches(tree, link):
-            return True
+        if joint is None or link in branching:
+            return False
         movable += joint.movable
         if movable > _MOST_JOINTS_ABOVE_A_WHEEL:
-            return False
+            return True
         link = joint.parent
-    return True
+    return False
 
 
-def _branches(tree: JointTree, link: str) -> bool:
-    """More than one joint on ``link`` moves or carries something that moves."""
-    moving = (j for j in tree.urdf.children(link) if j.movable or j.child in tree.moving_below)
-    return next(moving, None) is not None and next(moving, None) is not None
+def _branching_links(tree: JointTree) -> frozenset[str]:
+    """Links on which more than one joint moves or carries something that moves, in one pass
+    over the joints."""
+    moving = Counter(
+        j.parent for j in tree.urdf.joints if j.movable or j.child in tree.moving_below
+    )
+    return frozenset(link for link, count in moving.items() if count > 1)
 
 
 def _endless(joint: Joint) -> bool:
@@ -374,12 +393,9 @@ def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     known: dict[bool, dict[str, str | None]] = {}
     endless: dict[str, str | None] = {}  # link -> the nearest endless joint above it
     apart = [
-        j
-        for j in apart
-        if _hangs_freely(tree, j, known)
-        and _few_endless_above(tree, j, endless)
-        and _few_joints_above(tree, j)
+        j for j in apart if _hangs_freely(tree, j, known) and _few_endless_above(tree, j, endless)
     ]
+    apart = _wrists_dropped(tree, apart)
     if len(apart) >= 2 and _sides({tree.poses.place(j.child)[1] for j in apart}):
         found.extend(j.name for j in apart)
     return found

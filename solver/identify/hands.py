@@ -30,12 +30,19 @@ from itertools import pairwise
 
 from solver.identify.couplings import Walk, jaw_groups
 from solver.identify.limbs import Limb, chain_ends, joint_words, moved_by, tips_meet
-from solver.identify.placement import MACHINE_TRAVEL
+from solver.identify.placement import MACHINE_TRAVEL, placement
 from solver.identify.pose import distance, local_axis, parallel, perpendicular
 from solver.identify.readers.urdf import Joint
 from solver.identify.tree import JointTree
 
-__all__ = ["finger_groups", "finger_tips", "gripper_closure", "jaws", "stacked_grippers"]
+__all__ = [
+    "endless_jaws",
+    "finger_groups",
+    "finger_tips",
+    "gripper_closure",
+    "jaws",
+    "stacked_grippers",
+]
 
 # Joints with a travel a file writes (a jaw's, a finger's).
 _LIMITED = ("revolute", "prismatic")
@@ -93,6 +100,13 @@ def jaws(tree: JointTree, taken: set[str]) -> dict[str, str]:
     return found
 
 
+def endless_jaws(tree: JointTree, taken: set[str]) -> dict[str, str]:
+    """Two endless joints side by side at the end of an arm (:func:`_jaw_pairs`), each with
+    the evidence that found it: read once the wheels are known (``taken``), as a sloppy file
+    writes a gripper's jaws, and twin wheels on a wheel-leg's shin are wheels first."""
+    return _jaw_pairs(tree, taken, endless=True)
+
+
 def _one_motion(tree: JointTree, taken: set[str]) -> dict[str, str]:
     """A body whose every motion is one limited driver's (:func:`_sole_driver`), the joints of
     that motion on the driver's link turning about :data:`_ABOUT_A_PALM` directions or more,
@@ -138,11 +152,12 @@ def _about_one_line(directions: list[tuple[float, float, float]]) -> bool:
     return all(perpendicular(normal, axis) for axis in directions[2:])
 
 
-def _jaw_pairs(tree: JointTree, taken: set[str]) -> dict[str, str]:
-    """Two limited joints side by side on one link, each driven on its own and moving nothing
-    but its own followers (a leaf, or a jaw's linkage of mimic joints): jaws at the end of a
-    chain (two endless ones at the end of an arm: :func:`_ends_an_arm`), or a gripper's whole
-    body (its only motions), unless they swing both ways about the
+def _jaw_pairs(tree: JointTree, taken: set[str], *, endless: bool = False) -> dict[str, str]:
+    """Two limited joints (with ``endless``, two endless ones) side by side on one link, each
+    driven on its own and moving nothing but its own followers (a leaf, or a jaw's linkage of
+    mimic joints): jaws at the end of a chain (endless ones at the end of an arm:
+    :func:`_ends_an_arm`), or a gripper's whole body (its only motions), unless they swing both
+    ways about the
     line between them (:func:`_ears`: they never close on each other; a tilt-rotor's two motor
     mounts). At the end of a chain that is no head's, two hinges mirroring each other
     (:func:`_twins`) are jaws too."""
@@ -151,7 +166,11 @@ def _jaw_pairs(tree: JointTree, taken: set[str]) -> dict[str, str]:
     for joint in tree.urdf.joints:
         if (
             joint.actuated
-            and (joint.type == "continuous" or (joint.type in _LIMITED and joint.lower is not None))
+            and (
+                joint.type == "continuous"
+                if endless
+                else joint.type in _LIMITED and joint.lower is not None
+            )
             and _moves_alone(tree, joint, walk)
             and joint.name not in taken
         ):
@@ -289,25 +308,30 @@ def _parent_link(tree: JointTree, name: str) -> str:
 
 def _ends_a_chain(tree: JointTree, link: str) -> bool:
     """At least two driven joints move ``link`` (it is the end of a chain, not the base)."""
-    return _driven_above(tree, link, _CHAIN_BEFORE_JAWS, placing=True)
+    return _driven_above(tree, link, _CHAIN_BEFORE_JAWS)
 
 
 def _ends_an_arm(tree: JointTree, link: str) -> bool:
-    """At least an arm's joints (``arm_min_joints``) drive ``link``, not counting slides that
-    travel as far as a simulator places a body (:data:`MACHINE_TRAVEL`: a wheel-leg's hub on
-    the slides that move it in its plane is no arm's end)."""
-    return _driven_above(tree, link, tree.profile.limb("arm_min_joints"), placing=False)
+    """At least an arm's joints (``arm_min_joints``) drive ``link``, not counting the joints
+    that place the body in the world (a floating or planar joint, a simulator's or a planner's
+    root joints: :func:`~solver.identify.placement.placement`) nor slides that travel as far
+    (:data:`MACHINE_TRAVEL`: a wheel-leg's hub on the slides that move it in its plane is no
+    arm's end)."""
+    where = placement(tree)
+    placing = {*where.placing, *where.floating, *where.planar}
+    return _driven_above(tree, link, tree.profile.limb("arm_min_joints"), placing)
 
 
-def _driven_above(tree: JointTree, link: str, joints: int, *, placing: bool) -> bool:
-    """At least ``joints`` driven joints move ``link`` (with ``placing``, slides that place
-    the body count too)."""
+def _driven_above(tree: JointTree, link: str, joints: int, placing: set[str] | None = None) -> bool:
+    """At least ``joints`` driven joints move ``link`` (with ``placing``, not those it names nor
+    slides that place the body)."""
     driven = 0
     joint = tree.urdf.parent_joint(link)
     for _ in range(64):
         if joint is None:
             break
-        driven += tree.drives(joint) and (placing or not _places(joint))
+        placed = placing is not None and (joint.name in placing or _places(joint))
+        driven += tree.drives(joint) and not placed
         if driven >= joints:
             return True
         joint = tree.urdf.parent_joint(joint.parent)

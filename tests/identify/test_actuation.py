@@ -735,6 +735,39 @@ def test_the_endless_last_joints_of_two_seven_joint_arms_on_a_wheeled_base_are_n
     assert result.structure == "Mobile Manipulator"
 
 
+def limbs_ending_in_endless_leaves(limbs: int, joints: int, *, fork: bool = False) -> RobotText:
+    """A body with ``limbs`` unnamed chains of ``joints`` limited joints round it, each ending
+    in an endless leaf turning about a level axle (with ``fork``, each chain's fourth link also
+    carries a second joint)."""
+    robot = RobotText("limbs")
+    for i in range(limbs):
+        y = 0.3 if i % 2 else -0.3
+        parent = robot.root
+        for j in range(1, joints + 1):
+            xyz = f"{0.2 * (i // 2)} {y} 0" if j == 1 else "0 0 -0.1"
+            parent = builders.placed(robot, f"l{i}_{j}", "revolute", parent, f"l{i}_{j}_l", xyz=xyz)
+            if fork and j == 4:
+                builders.placed(robot, f"l{i}_side", "revolute", parent, f"l{i}_side_l")
+        builders.placed(robot, f"l{i}_hub", "continuous", parent, f"l{i}_hub_l", axis="0 1 0")
+    return robot
+
+
+def test_two_endless_leaves_ending_six_joints_of_one_chain_are_wrists_five_or_a_fork_wheels() -> (
+    None
+):
+    def wheels(robot: RobotText) -> set[str]:
+        body = identify_urdf(robot.text()).body
+        assert body is not None
+        return {name for name in body.wheels if name.endswith("_hub")}
+
+    assert wheels(limbs_ending_in_endless_leaves(2, 6)) == set()
+    assert wheels(limbs_ending_in_endless_leaves(2, 5)) == {"l0_hub", "l1_hub"}
+    # Counted from the nearest link that carries another moving part (a fork at the fourth).
+    assert wheels(limbs_ending_in_endless_leaves(2, 6, fork=True)) == {"l0_hub", "l1_hub"}
+    # Four or more so deep are a walker's wheeled feet (six-joint legs, each with a wheel).
+    assert len(wheels(limbs_ending_in_endless_leaves(4, 6))) == 4
+
+
 def test_caster_wheels_below_a_planners_virtual_root_joints_are_still_wheels() -> None:
     # A whole-body planner's x, y and yaw joints above the base: only endless joints count
     # against a wheel, and the planner's slides and limited yaw do not.

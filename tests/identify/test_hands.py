@@ -376,6 +376,45 @@ def test_two_jaws_turning_without_limits_at_the_end_of_an_arm_make_it_end_in_a_g
         assert "finger" not in {role.role for role in identify_urdf(robot.text()).roles}
 
 
+def test_twin_wheels_on_a_shin_or_wheels_under_a_planners_root_joints_are_no_endless_jaws() -> None:
+    # A wheel-legged quadruped whose shins each carry twin endless wheels: wheels, read before
+    # any jaw. A wheeled base placed by a planner's six root joints (x, y, z and three turns):
+    # the root joints are no arm, so its two wheels close on nothing.
+    walker = RobotText("twin")
+    for leg, y in (("fl", 0.2), ("fr", -0.2), ("rl", 0.2), ("rr", -0.2)):
+        shin = walker.chain(walker.root, [f"{leg}_haa", f"{leg}_hfe", f"{leg}_kfe"])
+        for wheel, dy in (("a", 0.03), ("b", 0.08)):
+            side = dy if y > 0 else -dy
+            builders.placed(
+                walker,
+                f"{leg}_{wheel}",
+                "continuous",
+                shin,
+                f"{leg}_{wheel}_link",
+                xyz=f"0 {side} -0.3",
+                axis="0 1 0",
+            )
+    placed = RobotText("planned", root="world")
+    link = "world"
+    for name, kind, axis in (
+        ("x", "prismatic", "1 0 0"),
+        ("y", "prismatic", "0 1 0"),
+        ("z", "prismatic", "0 0 1"),
+        ("roll", "revolute", "1 0 0"),
+        ("pitch", "revolute", "0 1 0"),
+        ("yaw", "continuous", "0 0 1"),
+    ):
+        link = builders.placed(placed, name, kind, link, f"{name}_link", axis=axis)
+    for name, y in (("a", "0.2"), ("b", "-0.2")):
+        builders.placed(
+            placed, name, "continuous", link, f"{name}_link", xyz=f"0 {y} -0.05", axis="0 1 0"
+        )
+    for robot in (walker, placed):
+        result = identify_urdf(robot.text())
+        assert "finger" not in {role.role for role in result.roles}
+        assert "Driving" in {c.motion_control for c in result.motion_controls}
+
+
 def test_jaws_apart_along_one_line_but_a_hair_across_it_are_side_by_side() -> None:
     # A CAD export places a six-joint arm's two unnamed sliding fingers 0.8 m apart across the
     # tool and 0.03 m apart along its axis (the second finger turned half a turn about x):

@@ -553,8 +553,15 @@ def test_the_operators_choice_of_a_characteristic_of_the_users_own_changes_the_a
     try:
         operator.select("autonomy", "teleoperated")
         operator.activate("/uav1")
+        # The choice and the activation are two messages: an answer for /uav1 may come before
+        # the choice reaches the watcher (on a busy machine), so wait for the one with it.
         first = wait_until(
-            lambda: (a := operator.answer()) and a.get("robot") == "/uav1" and a,
+            lambda: (
+                (a := operator.answer())
+                and a.get("robot") == "/uav1"
+                and a.get("combination", {}).get("autonomy") == "teleoperated"
+                and a
+            ),
             TIMEOUT,
             "the answer for /uav1, teleoperated",
         )
