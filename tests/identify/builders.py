@@ -388,6 +388,23 @@ def linkage_biped() -> RobotText:
     return robot
 
 
+def simulated_root(robot: RobotText, body: str) -> str:
+    """The six joints a simulator's or a planner's description writes for a floating base, from
+    ``robot``'s root to ``body`` (three slides, then roll, pitch and yaw): ``body``."""
+    link = robot.root
+    for name, kind, axis in (
+        ("x", "prismatic", "1 0 0"),
+        ("y", "prismatic", "0 1 0"),
+        ("z", "prismatic", "0 0 1"),
+        ("roll", "revolute", "1 0 0"),
+        ("pitch", "revolute", "0 1 0"),
+        ("yaw", "revolute", "0 0 1"),
+    ):
+        child = body if name == "yaw" else f"base_{name}_link"
+        link = placed(robot, f"base_{name}", kind, link, child, axis=axis)
+    return link
+
+
 def walker(legs: int = 6, *, simulated_base: bool = False) -> RobotText:
     """A walker whose joints say nothing (j0a, j0b, ...): alike 3-joint chains around its body,
     each ending in a tip below where it starts. ``simulated_base``: the body hangs from a
@@ -395,17 +412,7 @@ def walker(legs: int = 6, *, simulated_base: bool = False) -> RobotText:
     (three slides, then roll, pitch and yaw)."""
     robot = RobotText("walker", root="world" if simulated_base else "body")
     if simulated_base:
-        link = "world"
-        for name, kind, axis in (
-            ("x", "prismatic", "1 0 0"),
-            ("y", "prismatic", "0 1 0"),
-            ("z", "prismatic", "0 0 1"),
-            ("roll", "revolute", "1 0 0"),
-            ("pitch", "revolute", "0 1 0"),
-            ("yaw", "revolute", "0 0 1"),
-        ):
-            child = "body" if name == "yaw" else f"base_{name}_link"
-            link = placed(robot, f"base_{name}", kind, link, child, axis=axis)
+        simulated_root(robot, "body")
     for i in range(legs):
         x = 0.1 * (i % (legs // 2)) - 0.1
         y = 0.08 if i < legs // 2 else -0.08

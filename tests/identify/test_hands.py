@@ -395,16 +395,7 @@ def test_twin_wheels_on_a_shin_or_wheels_under_a_planners_root_joints_are_no_end
                 axis="0 1 0",
             )
     placed = RobotText("planned", root="world")
-    link = "world"
-    for name, kind, axis in (
-        ("x", "prismatic", "1 0 0"),
-        ("y", "prismatic", "0 1 0"),
-        ("z", "prismatic", "0 0 1"),
-        ("roll", "revolute", "1 0 0"),
-        ("pitch", "revolute", "0 1 0"),
-        ("yaw", "continuous", "0 0 1"),
-    ):
-        link = builders.placed(placed, name, kind, link, f"{name}_link", axis=axis)
+    link = builders.simulated_root(placed, "base")
     for name, y in (("a", "0.2"), ("b", "-0.2")):
         builders.placed(
             placed, name, "continuous", link, f"{name}_link", xyz=f"0 {y} -0.05", axis="0 1 0"
