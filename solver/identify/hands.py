@@ -176,22 +176,30 @@ def _jaw_pairs(tree: JointTree, taken: set[str], *, endless: bool = False) -> di
         ):
             by_parent.setdefault(joint.parent, []).append(joint)
     motions = [joint.name for joint in tree.urdf.joints if joint.movable]
+    placing = _placing(tree) if endless else frozenset()  # once, not for every pair
     found: dict[str, str] = {}
     for link, pair in by_parent.items():
         if len(pair) != 2 or any(_named_otherwise(tree, j.name) for j in pair):
             continue
-        why = _pair_why(tree, link, pair, motions)
+        why = _pair_why(tree, link, pair, motions, placing)
         if why:
             found.update(dict.fromkeys((j.name for j in pair), why))
     return found
 
 
-def _pair_why(tree: JointTree, link: str, pair: list[Joint], motions: list[str]) -> str:
-    """Why two joints on ``link`` are jaws (see :func:`_jaw_pairs`), or "" when they are not."""
+def _pair_why(
+    tree: JointTree,
+    link: str,
+    pair: list[Joint],
+    motions: list[str],
+    placing: frozenset[str] = frozenset(),
+) -> str:
+    """Why two joints on ``link`` are jaws (see :func:`_jaw_pairs`), or "" when they are not
+    (``placing``: the joints that place the body, for endless ones)."""
     beside = _side_by_side(pair, exactly=_on_a_head(tree, link))
     if any(joint.type == "continuous" for joint in pair):
         # Jaws a sloppy file lets turn for ever: side by side at the end of an arm, no head's.
-        if beside and _ends_an_arm(tree, link) and not _on_a_head(tree, link):
+        if beside and _ends_an_arm(tree, link, placing) and not _on_a_head(tree, link):
             return f"one of two jaws side by side at the end of an arm ({link}), turning freely"
         return ""
     at_the_end = _ends_a_chain(tree, link)
@@ -311,18 +319,24 @@ def _ends_a_chain(tree: JointTree, link: str) -> bool:
     return _driven_above(tree, link, _CHAIN_BEFORE_JAWS)
 
 
-def _ends_an_arm(tree: JointTree, link: str) -> bool:
+def _ends_an_arm(tree: JointTree, link: str, placing: frozenset[str]) -> bool:
     """At least an arm's joints (``arm_min_joints``) drive ``link``, not counting the joints
-    that place the body in the world (a floating or planar joint, a simulator's or a planner's
-    root joints: :func:`~solver.identify.placement.placement`) nor slides that travel as far
-    (:data:`MACHINE_TRAVEL`: a wheel-leg's hub on the slides that move it in its plane is no
+    that place the body in the world (``placing``: :func:`_placing`) nor slides that travel as
+    far (:data:`MACHINE_TRAVEL`: a wheel-leg's hub on the slides that move it in its plane is no
     arm's end)."""
-    where = placement(tree)
-    placing = {*where.placing, *where.floating, *where.planar}
     return _driven_above(tree, link, tree.profile.limb("arm_min_joints"), placing)
 
 
-def _driven_above(tree: JointTree, link: str, joints: int, placing: set[str] | None = None) -> bool:
+def _placing(tree: JointTree) -> frozenset[str]:
+    """The joints that place the body in the world: a floating or planar joint, a simulator's
+    or a planner's root joints (:func:`~solver.identify.placement.placement`)."""
+    where = placement(tree)
+    return frozenset((*where.placing, *where.floating, *where.planar))
+
+
+def _driven_above(
+    tree: JointTree, link: str, joints: int, placing: frozenset[str] | None = None
+) -> bool:
     """At least ``joints`` driven joints move ``link`` (with ``placing``, not those it names nor
     slides that place the body)."""
     driven = 0
