@@ -396,9 +396,9 @@ def test_twin_wheels_on_a_shin_or_wheels_under_a_planners_root_joints_are_no_end
             )
     placed = RobotText("planned", root="world")
     link = builders.simulated_root(placed, "base")
-    for name, y in (("a", "0.2"), ("b", "-0.2")):
+    for name, across in (("a", "0.2"), ("b", "-0.2")):
         builders.placed(
-            placed, name, "continuous", link, f"{name}_link", xyz=f"0 {y} -0.05", axis="0 1 0"
+            placed, name, "continuous", link, f"{name}_link", xyz=f"0 {across} -0.05", axis="0 1 0"
         )
     for robot in (walker, placed):
         result = identify_urdf(robot.text())
