@@ -176,7 +176,9 @@ def _jaw_pairs(tree: JointTree, taken: set[str], *, endless: bool = False) -> di
         ):
             by_parent.setdefault(joint.parent, []).append(joint)
     motions = [joint.name for joint in tree.urdf.joints if joint.movable]
-    placing = _placing(tree) if endless else frozenset()  # once, not for every pair
+    # The joints that place the body, once (not for every pair), when an endless pair needs them.
+    pairs = endless and any(len(pair) == 2 for pair in by_parent.values())
+    placing = _placing(tree) if pairs else frozenset()
     found: dict[str, str] = {}
     for link, pair in by_parent.items():
         if len(pair) != 2 or any(_named_otherwise(tree, j.name) for j in pair):

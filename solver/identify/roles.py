@@ -306,20 +306,11 @@ class RoleReader:
                 continue
             if part == "grasp" and "gripper" not in tag.lower():
                 continue
-            name = text.strip()
-            if name in self._movable:
-                yield tag, name
-            elif part in _BY_LINK and name in self._moved_by:
-                yield tag, self._moved_by[name]
-
-    @cached_property
-    def _movable(self) -> frozenset[str]:
-        return frozenset(j.name for j in self.urdf.joints if j.movable)
-
-    @cached_property
-    def _moved_by(self) -> dict[str, str]:
-        """Each link a movable joint moves, with that joint."""
-        return {j.child: j.name for j in self.urdf.joints if j.movable}
+            joint = self.urdf.joint(text)
+            if (joint is None or not joint.movable) and part in _BY_LINK:
+                joint = self.urdf.parent_joint(text)  # the joint that moves the link named
+            if joint is not None and joint.movable:
+                yield tag, joint.name
 
     def _pushed_thrusters(self) -> dict[str, Role]:
         """On a body in water, the joint whose link a force plugin pushes on command (its

@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Iterable, Sequence
+from collections.abc import Container, Iterable, Sequence
 from dataclasses import dataclass
 
 from solver.core.ruleset import RuleSet
@@ -122,11 +122,15 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
     # A plugin a <sensor> runs, written again outside it (the same name, file and settings):
     # the element's, declared twice.
     inside = {_same_plugin(p) for tag in urdf.sensors for p in tag.plugins}
+    # The links elements of each kind sit on (where a plugin of that kind may report).
+    elements: dict[str, set[str | None]] = {}
+    for detection, _ in found:
+        elements.setdefault(detection.kind, set()).add(detection.link)
     for plugin in urdf.plugins:
         simulated = plugin_kind(plugin, profile)
         if simulated is None or _same_plugin(plugin) in inside:
             continue
-        link = _plugin_link(plugin, simulated, found)
+        link = _plugin_link(plugin, elements.get(simulated, frozenset()))
         joint = urdf.joint(plugin.param(*_JOINT_PARAMS) or "")
         if link is None and joint is not None:
             link = joint.child  # a sensor on a joint measures at the joint's child link
@@ -195,14 +199,13 @@ def under_water(detections: Iterable[Detection]) -> tuple[Detection, ...]:
     )
 
 
-def _plugin_link(plugin: PluginTag, kind: str, found: list[tuple[Detection, str]]) -> str | None:
+def _plugin_link(plugin: PluginTag, declared: Container[str | None]) -> str | None:
     """The link a sensor plugin outside any ``<sensor>`` reports on: of the links it names (its
-    body, its frame), one where an element of its kind sits, the device declared twice (an
-    IMU's element on ``imu_link``, its plugin's ``<bodyName>`` the chassis and ``<frameName>``
-    ``imu_link``); else the first it names, else its ``<gazebo reference>``."""
+    body, its frame), one where an element of its kind sits (``declared``), the device declared
+    twice (an IMU's element on ``imu_link``, its plugin's ``<bodyName>`` the chassis and
+    ``<frameName>`` ``imu_link``); else the first it names, else its ``<gazebo reference>``."""
     tags = {tag.lower() for tag in _LINK_PARAMS}
     named = [text for tag, text in plugin.params if tag.lower() in tags]
-    declared = {d.link for d, origin in found if d.kind == kind and origin != "plugin"}
     return next((link for link in named if link in declared), None) or (
         named[0] if named else plugin.reference
     )
