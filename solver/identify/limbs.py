@@ -1951,10 +1951,16 @@ def wrist(tree: JointTree, limbs: list[Limb], tips: list[str]) -> list[Limb]:
     an arm. Short is fewer joints than an arm's, or up to three joints all named as a wrist's
     (a pitch, a yaw and a pitch under the palm). Two such chains side by side (a pair of hands
     on fixed forearms) are wrists too when each carries a whole hand of its own and neither
-    is named but as a wrist (short arms named ``shoulder`` or ``elbow`` are a torso's)."""
+    is named but as a wrist (short arms named ``shoulder`` or ``elbow`` are a torso's). A
+    chain whose axes pass farther apart than the hand reaches is no wrist
+    (:func:`_turns_in_place`)."""
     minimum = tree.profile.limb("hand_min_fingers")
     if len(limbs) == 1:
-        if len(tips) < minimum or not _wrist(tree, limbs[0]):
+        if (
+            len(tips) < minimum
+            or not _wrist(tree, limbs[0])
+            or not _turns_in_place(tree, limbs[0], tips)
+        ):
             return limbs
     elif len(limbs) == _HANDS:
         if not all(
@@ -1976,6 +1982,34 @@ def _wrist(tree: JointTree, limb: Limb) -> bool:
         len(limb.joints) <= _WRIST_JOINTS and all(_WRIST.search(name) for name in limb.joints)
     )
     return limb.kind == "arm" and limb.gripper and _on_the_root(tree, limb.base) and short
+
+
+def _turns_in_place(tree: JointTree, limb: Limb, tips: list[str]) -> bool:
+    """Each two turning joints of ``limb`` turn about axes that pass no farther apart (at
+    rest) than the hand reaches from the chain's end to its fingers' last links: a wrist turns
+    the hand where it is (a pitch and a yaw under the palm); two upright axes an arm's length
+    apart (a SCARA's shoulder and elbow) carry it across a table."""
+    base = tree.poses.place(limb.tip)
+    fingers = (tree.urdf.joint(name) for name in tips)
+    reach = max(
+        (distance(base, tree.poses.place(f.child)) for f in fingers if f is not None), default=0
+    )
+    turning = [
+        joint
+        for name in limb.joints
+        if (joint := tree.urdf.joint(name)) is not None and joint.type in _TURNING
+    ]
+    return all(_axes_apart(tree, one, other) <= reach for one, other in pairwise(turning))
+
+
+def _axes_apart(tree: JointTree, one: Joint, other: Joint) -> float:
+    """How far apart the axes of two turning joints pass, as the body rests."""
+    along, across = tree.poses.axis(one), tree.poses.axis(other)
+    gap = minus(tree.poses.place(other.child), tree.poses.place(one.child))
+    if parallel(along, across):
+        return math.hypot(*cross(gap, along)) / max(math.hypot(*along), 1e-12)
+    normal = cross(along, across)
+    return abs(dot(gap, normal)) / math.hypot(*normal)
 
 
 def _named_as_a_wrist(tree: JointTree, limb: Limb) -> bool:

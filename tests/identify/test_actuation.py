@@ -1157,3 +1157,31 @@ def test_corners_under_swivels_named_for_nothing_are_a_quadrupeds_legs() -> None
     roles = roles_of(four_wheel_steered(steer="hip"))
     assert not with_role(roles, "steering")
     assert identify_urdf(four_wheel_steered(steer="hip").text()).structure == "Quadruped"
+
+
+def base_on_corner_leaves(word: str = "") -> RobotText:
+    """A CAD export's base: four endless leaves named only for the corner they sit at
+    (``rear_left_joint`` turning ``rear_left_link``), below the body about axles across it;
+    ``word`` added to each name (``leg``) says what they are."""
+    robot = RobotText("export", root="base_link")
+    for corner, (x, y) in CORNERS.items():
+        builders.placed(
+            robot,
+            f"{corner}{word}_joint",
+            "continuous",
+            "base_link",
+            f"{corner}{word}_link",
+            xyz=f"{x * 0.2} {y / 3} -0.02",
+            axis="0 1 0",
+        )
+    return robot
+
+
+def test_endless_leaves_named_only_for_their_corner_are_wheels() -> None:
+    roles = roles_of(base_on_corner_leaves())
+    assert with_role(roles, "wheel") == [f"{c}_joint" for c in CORNERS]
+    assert identify_urdf(base_on_corner_leaves().text()).structure == "UGV"
+
+
+def test_endless_leaves_named_for_a_leg_beside_their_corner_are_no_wheels_by_place() -> None:
+    assert not with_role(roles_of(base_on_corner_leaves("_leg")), "wheel")

@@ -567,6 +567,39 @@ def test_a_short_chain_carrying_a_whole_hand_is_its_wrist_not_an_arm(
     assert result.structure == "Hand"
 
 
+def scara(elbow: str = "0 -1 0.1") -> RobotText:
+    """Two upright axes on a fixed base, the elbow at ``elbow`` from the shoulder, then a
+    palm 0.8 m on with four sliding fingers 0.23 m below it (a conveyor-sorting SCARA)."""
+    robot = RobotText("scara", root="base_link")
+    builders.placed(robot, "rotation1", "revolute", "base_link", "arm1", xyz="0 0 0.4")
+    builders.placed(robot, "rotation2", "revolute", "arm1", "arm2", xyz=elbow)
+    builders.placed(robot, "palm_fixed", "fixed", "arm2", "palm", xyz="0 -0.8 0")
+    for i, (x, y) in enumerate(((0, -0.04), (0.04, 0), (0, 0.04), (-0.04, 0)), start=1):
+        axis = "0 1 0" if x == 0 else "1 0 0"
+        builders.placed(
+            robot,
+            f"finger{i}_joint",
+            "prismatic",
+            "palm",
+            f"finger{i}",
+            xyz=f"{x} {y} -0.23",
+            axis=axis,
+        )
+    return robot
+
+
+def test_two_upright_axes_an_arms_length_apart_carrying_a_hand_are_an_arm_not_its_wrist() -> None:
+    result = identify_urdf(scara().text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["arm"]
+    assert result.structure == "Manipulator"
+
+
+def test_two_axes_passing_within_the_hands_reach_carrying_it_are_its_wrist() -> None:
+    result = identify_urdf(scara(elbow="0 -0.05 0.1").text())
+    assert result.structure == "Hand"
+
+
 def pair_of_hands(fingers: tuple[int, int] = (5, 5), joint: str = "wrist") -> RobotText:
     """Two hands on forearms fixed 0.4 m apart on one stand, each a one-joint chain named
     ``joint`` into its palm and ``fingers`` three-joint fingers (a bimanual hand rig, no arm)."""
