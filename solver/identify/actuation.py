@@ -71,7 +71,8 @@ _DEEPEST_WALK = 64
 # A name that says only which corner of the body a part is at (``rear_left_joint``,
 # ``front_right``): the leg pattern's word for a four-legged body's legs, and as often a wheel's.
 _ONLY_A_CORNER = re.compile(
-    r"^(?:(?:left|right)_?(?:front|rear|hind|back)|(?:front|rear|hind|back)_?(?:left|right))"
+    r"^(?:(?:joint|link|jnt|lnk|j|l)[_-]?)?"
+    r"(?:(?:left|right)_?(?:front|rear|hind|back)|(?:front|rear|hind|back)_?(?:left|right))"
     r"(?:[_-]?(?:joint|link|jnt|lnk|j|l))?[_\d]*$",
     re.IGNORECASE,
 )
@@ -729,20 +730,29 @@ def _unnamed_spinners(tree: JointTree, taken: set[str]) -> Iterator[Joint]:
             joint.endless
             and joint.actuated
             and joint.name not in taken
-            and not _named_for_a_part(tree, joint, known)
+            and not _named_for_a_part(tree, joint)
             and not points_a_sensor(tree, joint)
             and not _on_a_spinning_part(tree, joint, known)
         ):
             yield joint
 
 
-def _named_for_a_part(tree: JointTree, joint: Joint, known: dict[str, str | None]) -> bool:
+def _named_for_a_part(tree: JointTree, joint: Joint) -> bool:
     """``joint`` or its link is named for a part; a leaf named only for a corner of the body
-    (``front_right_j`` on ``front_right``), hanging from the body itself (nothing that moves
-    above it), says where it is, not what it is: it is named for none."""
+    (``front_right_j`` on ``front_right``, ``joint_frontLeft``) below no joint named for a
+    part (a leg's hip above it makes the corner a leg's) says where it is, not what it is: it
+    is named for none."""
     named = [name for name in (joint.name, joint.child) if tree.parts_of(name)]
     if not named:
         return False
     if not all(_ONLY_A_CORNER.match(name) for name in named):
         return True
-    return moved_by(tree.urdf, joint.parent, known) is not None
+    link = joint.parent
+    for _ in range(_DEEPEST_WALK):
+        above = tree.urdf.parent_joint(link)
+        if above is None:
+            return False
+        if above.movable and (tree.parts_of(above.name) or tree.parts_of(above.child)):
+            return True
+        link = above.parent
+    return False

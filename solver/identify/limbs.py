@@ -129,6 +129,9 @@ _WRIST_JOINTS = 3
 _WRIST = re.compile("wrist", re.IGNORECASE)
 # A camera's frame by its name (camera_link, cam_1, gimbal_camera).
 _CAMERA = re.compile(r"camera|(^|[_/])cam([_/\d]|$)", re.IGNORECASE)
+# The most camera frames a pan/tilt unit carries fixed below its last link (a stereo pair with
+# their optical frames).
+_MOST_CAMERAS = 4
 LIMB_KINDS = ("leg", "arm", "head")
 # An unnamed pair of chains on the root this long, beside named arms higher up, are legs.
 _LEG_BY_PLACE_JOINTS = 5
@@ -2159,13 +2162,11 @@ def _classify(
         not gripper
         and length <= tree.profile.limb("head_max_joints")
         and _turns(chain)
-        and _CAMERA.search(chain[-1].child)
+        and (cameras := _cameras_turned(tree, chain[-1], named=named))
     ):
         # A camera's own frame turned by the chain's last joint: a gimbal, whatever the chain
         # is named (a drone's gimbal arms); an arm's camera hangs fixed below its wrist.
-        why = (
-            f"its last joint turns a camera's frame ({chain[-1].child}): a gimbal or pan/tilt unit"
-        )
+        why = f"its last joint turns a camera's frame ({cameras}): a gimbal or pan/tilt unit"
         return Limb("head", names, base, tip, gripper, named, why)
     kind, why = _named_kind(tree, scores, length, gripper)
     kind, why = _ends_in_a_foot(tree, kind, why, tip, length=length, gripper=gripper)
@@ -2177,6 +2178,22 @@ def _classify(
         return Limb(kind, names, base, tip, gripper, named, why)
     kind, why = _unnamed_kind(tree, chain, length, gripper=gripper, named=named, flying=flying)
     return Limb(kind, names, base, tip, gripper, named, why)
+
+
+def _cameras_turned(tree: JointTree, last: Joint, *, named: bool) -> str:
+    """The camera frame ``last`` turns: its own link named for a camera; or, in a chain its
+    names call a limb (an unnamed one pointing a sensor is a head already), the links fixed
+    below it when all are cameras' and nothing else hangs there (a pan/tilt's tilt link
+    carrying ``camera_1`` and ``camera_2``; an arm's wrist carries a tool or a flange too);
+    empty when it turns none."""
+    if _CAMERA.search(last.child):
+        return last.child
+    if not named or any(joint.movable for joint in tree.urdf.subtree_joints(last.child)):
+        return ""
+    below = list(islice(tree.urdf.fixed_below(last.child), _MOST_CAMERAS + 1))
+    if not below or len(below) > _MOST_CAMERAS or not all(_CAMERA.search(b) for b in below):
+        return ""
+    return ", ".join(below)
 
 
 def _unnamed_kind(

@@ -1185,3 +1185,34 @@ def test_endless_leaves_named_only_for_their_corner_are_wheels() -> None:
 
 def test_endless_leaves_named_for_a_leg_beside_their_corner_are_no_wheels_by_place() -> None:
     assert not with_role(roles_of(base_on_corner_leaves("_leg")), "wheel")
+
+
+def two_wagons(word: str = "body_angle") -> RobotText:
+    """A field robot of two wagons steered by an upright joint ``word`` between them, each
+    wagon's axle carrying two endless leaves named only for their corner (``joint_frontLeft``
+    turning ``frontLeft``), level with the axle."""
+    robot = RobotText("wagons", root="base_link")
+    robot.fixed(robot.root, "axesFront")
+    builders.placed(robot, word, "revolute", "axesFront", "axesRear", xyz="-0.7 0 0")
+    for axle, end in (("axesFront", "front"), ("axesRear", "rear")):
+        for side, y in (("Left", 0.17), ("Right", -0.17)):
+            builders.placed(
+                robot,
+                f"joint_{end}{side}",
+                "continuous",
+                axle,
+                f"{end}{side}",
+                xyz=f"0 {y} 0",
+                axis="0 1 0",
+            )
+    return robot
+
+
+def test_leaves_named_for_their_corner_on_wagons_steered_by_an_unnamed_joint_are_wheels() -> None:
+    assert len(with_role(roles_of(two_wagons()), "wheel")) == 4
+    assert identify_urdf(two_wagons().text()).structure == "UGV"
+
+
+def test_leaves_named_for_their_corner_below_a_hip_are_not_wheels_by_place() -> None:
+    wheels = with_role(roles_of(two_wagons("hip")), "wheel")
+    assert not {"joint_rearLeft", "joint_rearRight"} & set(wheels)

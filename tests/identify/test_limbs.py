@@ -600,6 +600,32 @@ def test_two_axes_passing_within_the_hands_reach_carrying_it_are_its_wrist() -> 
     assert result.structure == "Hand"
 
 
+def rover_with_a_camera_head(below: tuple[str, ...] = ("camera_1", "camera_2")) -> RobotText:
+    """A wheeled base with a pan and a tilt joint in links named as an arm's (``arm_1`` ..
+    ``arm_3``), the links ``below`` fixed to the last."""
+    robot = RobotText("rover", root="base_link")
+    builders.wheeled_base(robot)
+    robot.add(builders.model_plugin("drive", "libgazebo_ros_diff_drive.so"))
+    robot.fixed(robot.root, "arm_1")
+    builders.placed(robot, "joint_7", "revolute", "arm_1", "arm_2", xyz="0 0 0.1")
+    builders.placed(robot, "joint_8", "revolute", "arm_2", "arm_3", xyz="0 0 0.04", axis="0 1 0")
+    for link in below:
+        robot.fixed("arm_3", link)
+    return robot
+
+
+def test_a_pan_and_tilt_named_as_an_arm_carrying_only_cameras_is_a_head() -> None:
+    result = identify_urdf(rover_with_a_camera_head().text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["head"]
+    assert result.structure == "UGV"
+
+
+def test_a_short_arm_carrying_a_tool_beside_its_camera_stays_an_arm() -> None:
+    robot = rover_with_a_camera_head(("camera_1", "tool0"))
+    assert identify_urdf(robot.text()).structure == "Mobile Manipulator"
+
+
 def pair_of_hands(fingers: tuple[int, int] = (5, 5), joint: str = "wrist") -> RobotText:
     """Two hands on forearms fixed 0.4 m apart on one stand, each a one-joint chain named
     ``joint`` into its palm and ``fingers`` three-joint fingers (a bimanual hand rig, no arm)."""

@@ -999,3 +999,13 @@ def test_a_reaction_wheel_with_no_thruster_says_nothing_of_flight() -> None:
     result = identify_urdf(rover.text())
     assert result.structure == "UGV"
     assert not any("air or space" in line for line in result.evidence)
+
+
+def test_links_named_for_a_thrusters_model_fixed_to_a_hull_are_its_thrusters() -> None:
+    # A student ROV: six BlueRobotics T200 frames fixed to a body of no mass, nothing else.
+    rov = RobotText("rov", root="base_link")
+    for i in range(1, 7):
+        rov.fixed(rov.root, f"t200_link_t{i}")
+    result = identify_urdf(rov.text())
+    assert result.structure == "Underwater Vehicle"
+    assert any("t200_link_t1 (fixed)" in line for line in result.evidence)
