@@ -708,7 +708,7 @@ class _Builder:
             if sensor.tag == "sensor":
                 found.append(self._sensor(sensor, reference, "gazebo"))
             elif _legacy(sensor, "sensor"):
-                kind = str(sensor.tag).rsplit("}", 1)[1]
+                kind = _local_name(str(sensor.tag))
                 found.append(self._sensor(sensor, reference, "gazebo", kind))
         return found + self._link_sensors(_sdf_links(gazebo), "gazebo")
 
@@ -1018,11 +1018,20 @@ _GRAVITY_OFF = {"turnGravityOff": ("1", "true"), "gravity": ("0", "false")}
 
 def _legacy(element: etree._Element, kind: str) -> bool:
     """A Gazebo 0.x namespaced element of ``kind`` (``<sensor:ray>``, ``<controller:gazebo_ros_imu
-    plugin="...">``), as URDFs written for ROS in 2010-2012 still have them."""
+    plugin="...">``), as URDFs written for ROS in 2010-2012 still have them: its namespace
+    declared, or not (a file that never declared it, read with the element kept under its
+    prefixed name: :func:`~solver.identify.readers.safexml.parse_xml`'s recovery)."""
     tag = element.tag
-    return (
-        isinstance(tag, str) and tag.startswith("{") and tag[1:].split("}")[0].endswith(f"#{kind}")
-    )
+    if not isinstance(tag, str):
+        return False
+    if tag.startswith("{"):
+        return tag[1:].split("}")[0].endswith(f"#{kind}")
+    return tag.startswith(f"{kind}:")
+
+
+def _local_name(tag: str) -> str:
+    """A tag without its namespace (``{...#sensor}ray``) or undeclared prefix (``sensor:ray``)."""
+    return tag.rsplit("}", 1)[-1].rsplit(":", 1)[-1]
 
 
 def _uncompiled_xacro(root: etree._Element, file: str) -> list[Fault]:
