@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import math
 import re
-from itertools import pairwise
+from itertools import islice, pairwise
 
 from solver.identify.couplings import Walk, jaw_groups
 from solver.identify.limbs import Limb, chain_ends, joint_words, moved_by, tips_meet
@@ -155,7 +155,7 @@ def _about_one_line(directions: list[tuple[float, float, float]]) -> bool:
 def _jaw_pairs(tree: JointTree, taken: set[str], *, endless: bool = False) -> dict[str, str]:
     """Two limited joints (with ``endless``, two endless ones) side by side on one link, each
     driven on its own and moving nothing but its own followers (a leaf, or a jaw's linkage of
-    mimic joints): jaws at the end of a chain (endless ones at the end of an arm:
+    mimic joints) or, limited, one fingertip hinge of its own (:func:`_may_be_a_jaw`): jaws at the end of a chain (endless ones at the end of an arm:
     :func:`_ends_an_arm`), or a gripper's whole body (its only motions), unless they swing both
     ways about the
     line between them (:func:`_ears`: they never close on each other; a tilt-rotor's two motor
@@ -164,16 +164,7 @@ def _jaw_pairs(tree: JointTree, taken: set[str], *, endless: bool = False) -> di
     by_parent: dict[str, list[Joint]] = {}
     walk = Walk(tree.urdf)
     for joint in tree.urdf.joints:
-        if (
-            joint.actuated
-            and (
-                joint.type == "continuous"
-                if endless
-                else joint.type in _LIMITED and joint.lower is not None
-            )
-            and _moves_alone(tree, joint, walk)
-            and joint.name not in taken
-        ):
+        if joint.name not in taken and _may_be_a_jaw(tree, joint, walk, endless=endless):
             by_parent.setdefault(joint.parent, []).append(joint)
     motions = [joint.name for joint in tree.urdf.joints if joint.movable]
     # The joints that place the body, once (not for every pair), when an endless pair needs them.
@@ -187,6 +178,18 @@ def _jaw_pairs(tree: JointTree, taken: set[str], *, endless: bool = False) -> di
         if why:
             found.update(dict.fromkeys((j.name for j in pair), why))
     return found
+
+
+def _may_be_a_jaw(tree: JointTree, joint: Joint, walk: Walk, *, endless: bool) -> bool:
+    """``joint`` is driven, limited (with ``endless``, turns for ever) and moves nothing but
+    its own followers, or (limited) one fingertip hinge of its own (:func:`_tipped`)."""
+    if not joint.actuated:
+        return False
+    if endless:
+        return joint.type == "continuous" and _moves_alone(tree, joint, walk)
+    if joint.type not in _LIMITED or joint.lower is None:
+        return False
+    return _moves_alone(tree, joint, walk) or _tipped(tree, joint)
 
 
 def _pair_why(
@@ -222,6 +225,22 @@ def _moves_alone(tree: JointTree, joint: Joint, walk: Walk) -> bool:
         return True
     followers = set(tree.couplings.followers.get(joint.name, ()))
     return not walk.moves_beyond(joint.name, followers)
+
+
+def _tipped(tree: JointTree, joint: Joint) -> bool:
+    """What ``joint`` moves carries one limited hinge of its own and nothing else that moves,
+    a leaf: a jaw whose tip an open linkage draws as a joint of its own (a servo gripper's
+    finger and fingertip, each written as a hinge, no mimic between them)."""
+    if joint.child not in tree.moving_below:
+        return False
+    # Two movable joints at most are looked for (a long chain below is walked no further).
+    below = list(islice((j for j in tree.urdf.subtree_joints(joint.child) if j.movable), 2))
+    return (
+        len(below) == 1
+        and below[0].parent == joint.child
+        and below[0].type == "revolute"
+        and below[0].lower is not None
+    )
 
 
 def _only_motions(tree: JointTree, pair: list[Joint], motions: list[str]) -> bool:

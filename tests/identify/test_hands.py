@@ -347,6 +347,43 @@ def test_two_jaws_side_by_side_at_the_end_of_an_arm_make_it_end_in_a_gripper() -
     assert [limb.gripper for limb in result.body.limbs if limb.kind == "arm"] == [True, True]
 
 
+def servo_arm(tip_joints: int = 1) -> RobotText:
+    """Four numbered hinges, then two mirrored hinges side by side on the last link, each
+    carrying ``tip_joints`` more hinges of its own (a servo gripper whose fingers and fingertips
+    an open linkage draws, no mimic between them)."""
+    robot = RobotText("servo_arm", root="base_link")
+    link = "base_link"
+    for i in range(1, 5):
+        link = builders.placed(robot, f"J{i}", "revolute", link, f"link{i}", xyz="0 0 0.1")
+    for name, y, limits in (("J5", 0.014, "0 1.5"), ("J6", -0.014, "-1.5 0")):
+        lower, upper = limits.split()
+        part = robot.joint(
+            name,
+            "revolute",
+            link,
+            f"{name}_link",
+            f'<origin xyz="0 {y} 0.05"/><axis xyz="1 0 0"/>'
+            f'<limit lower="{lower}" upper="{upper}" effort="1" velocity="1"/>',
+        )
+        for k in range(tip_joints):
+            part = builders.placed(robot, f"{name}_tip{k}", "revolute", part, f"{name}_t{k}")
+    return robot
+
+
+def test_mirrored_hinges_each_carrying_a_fingertip_hinge_at_an_arms_end_are_its_jaws() -> None:
+    result = identify_urdf(servo_arm().text())
+    assert result.structure == "Manipulator"
+    assert result.body is not None
+    assert [limb.gripper for limb in result.body.limbs] == [True]
+
+
+def test_mirrored_chains_of_three_hinges_at_an_arms_end_are_a_torsos_arms_not_jaws() -> None:
+    # Three hinges each, as long as the four below them: two short arms on a trunk.
+    result = identify_urdf(servo_arm(tip_joints=2).text())
+    assert not [role.joint for role in result.roles if role.role == "finger"]
+    assert result.structure == "Torso"
+
+
 def spinning_pair(robot: RobotText, link: str) -> None:
     """Two unnamed joints that turn without limits side by side on ``link`` (a sloppy file's
     jaws, or a hub's rim halves)."""
