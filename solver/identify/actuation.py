@@ -70,10 +70,12 @@ _WHEELED_FEET = 4
 _DEEPEST_WALK = 64
 # A name that says only which corner of the body a part is at (``rear_left_joint``,
 # ``front_right``): the leg pattern's word for a four-legged body's legs, and as often a wheel's.
+# Matched whole, after any namespace (``robot1/rear_left_joint``). Its corner words are the leg
+# pattern's (rules/identification.yaml, ``leg``).
 _ONLY_A_CORNER = re.compile(
-    r"^(?:(?:joint|link|jnt|lnk|j|l)[_-]?)?"
+    r"(?:[\w.-]+/)*(?:(?:joint|link|jnt|lnk|j|l)[_-]?)?"
     r"(?:(?:left|right)_?(?:front|rear|hind|back)|(?:front|rear|hind|back)_?(?:left|right))"
-    r"(?:[_-]?(?:joint|link|jnt|lnk|j|l))?[_\d]*$",
+    r"(?:[_-]?(?:joint|link|jnt|lnk|j|l))?[_\d]*",
     re.IGNORECASE,
 )
 # Wheel-legged robots roll on two legs' wheels or four (bipeds, quadrupeds).
@@ -739,14 +741,19 @@ def _unnamed_spinners(tree: JointTree, taken: set[str]) -> Iterator[Joint]:
 
 def _named_for_a_part(tree: JointTree, joint: Joint) -> bool:
     """``joint`` or its link is named for a part; a leaf named only for a corner of the body
-    (``front_right_j`` on ``front_right``, ``joint_frontLeft``) below no joint named for a
-    part (a leg's hip above it makes the corner a leg's) says where it is, not what it is: it
-    is named for none."""
+    (``front_right_j`` on ``front_right``, ``joint_frontLeft``) says where it is, not what it
+    is, and is named for none when it hangs from the body itself or from a part carrying more
+    than it that moves (a wagon's axle), below no joint named for a part (a hip above it makes
+    the corner a leg's). One alone on a swivel (a steering knuckle, a caster) keeps its
+    corner's word: the steered-wheel rules read it."""
     named = [name for name in (joint.name, joint.child) if tree.parts_of(name)]
     if not named:
         return False
-    if not all(_ONLY_A_CORNER.match(name) for name in named):
+    if not all(_ONLY_A_CORNER.fullmatch(name) for name in named):
         return True
+    alone = not any(o.movable and o is not joint for o in tree.urdf.children(joint.parent))
+    if alone and _nearest_moving(tree, joint.parent) is not None:
+        return True  # alone on a part that moves: a knuckle's or a swivel's wheel
     link = joint.parent
     for _ in range(_DEEPEST_WALK):
         above = tree.urdf.parent_joint(link)
@@ -756,3 +763,13 @@ def _named_for_a_part(tree: JointTree, joint: Joint) -> bool:
             return True
         link = above.parent
     return False
+
+
+def _nearest_moving(tree: JointTree, link: str) -> Joint | None:
+    """The nearest movable joint above ``link`` (a walk of :data:`_DEEPEST_WALK` at most)."""
+    for _ in range(_DEEPEST_WALK):
+        above = tree.urdf.parent_joint(link)
+        if above is None or above.movable:
+            return above
+        link = above.parent
+    return None

@@ -155,17 +155,23 @@ def _about_one_line(directions: list[tuple[float, float, float]]) -> bool:
 def _jaw_pairs(tree: JointTree, taken: set[str], *, endless: bool = False) -> dict[str, str]:
     """Two limited joints (with ``endless``, two endless ones) side by side on one link, each
     driven on its own and moving nothing but its own followers (a leaf, or a jaw's linkage of
-    mimic joints) or, limited, one fingertip hinge of its own (:func:`_may_be_a_jaw`): jaws at the end of a chain (endless ones at the end of an arm:
+    mimic joints): jaws at the end of a chain (endless ones at the end of an arm:
     :func:`_ends_an_arm`), or a gripper's whole body (its only motions), unless they swing both
-    ways about the
-    line between them (:func:`_ears`: they never close on each other; a tilt-rotor's two motor
-    mounts). At the end of a chain that is no head's, two hinges mirroring each other
-    (:func:`_twins`) are jaws too."""
+    ways about the line between them (:func:`_ears`: they never close on each other; a
+    tilt-rotor's two motor mounts). At the end of a chain that is no head's, two hinges
+    mirroring each other (:func:`_twins`) are jaws too, and so are such twins that each carry
+    one fingertip hinge of their own within a finger's reach (:func:`_tipped_twins`)."""
     by_parent: dict[str, list[Joint]] = {}
+    tipped: set[str] = set()  # jaws that carry a fingertip hinge of their own
     walk = Walk(tree.urdf)
     for joint in tree.urdf.joints:
-        if joint.name not in taken and _may_be_a_jaw(tree, joint, walk, endless=endless):
-            by_parent.setdefault(joint.parent, []).append(joint)
+        if joint.name in taken or not _may_be_a_jaw(joint, endless=endless):
+            continue
+        if not _moves_alone(tree, joint, walk):
+            if endless or not _tipped(tree, joint):
+                continue
+            tipped.add(joint.name)
+        by_parent.setdefault(joint.parent, []).append(joint)
     motions = [joint.name for joint in tree.urdf.joints if joint.movable]
     # The joints that place the body, once (not for every pair), when an endless pair needs them.
     pairs = endless and any(len(pair) == 2 for pair in by_parent.values())
@@ -174,22 +180,38 @@ def _jaw_pairs(tree: JointTree, taken: set[str], *, endless: bool = False) -> di
     for link, pair in by_parent.items():
         if len(pair) != 2 or any(_named_otherwise(tree, j.name) for j in pair):
             continue
-        why = _pair_why(tree, link, pair, motions, placing)
+        if tipped & {joint.name for joint in pair}:
+            why = _tipped_twins(tree, link, pair)
+        else:
+            why = _pair_why(tree, link, pair, motions, placing)
         if why:
             found.update(dict.fromkeys((j.name for j in pair), why))
     return found
 
 
-def _may_be_a_jaw(tree: JointTree, joint: Joint, walk: Walk, *, endless: bool) -> bool:
-    """``joint`` is driven, limited (with ``endless``, turns for ever) and moves nothing but
-    its own followers, or (limited) one fingertip hinge of its own (:func:`_tipped`)."""
+def _may_be_a_jaw(joint: Joint, *, endless: bool) -> bool:
+    """``joint`` is driven and limited (with ``endless``, turns for ever)."""
     if not joint.actuated:
         return False
     if endless:
-        return joint.type == "continuous" and _moves_alone(tree, joint, walk)
-    if joint.type not in _LIMITED or joint.lower is None:
-        return False
-    return _moves_alone(tree, joint, walk) or _tipped(tree, joint)
+        return joint.type == "continuous"
+    return joint.type in _LIMITED and joint.lower is not None
+
+
+def _tipped_twins(tree: JointTree, link: str, pair: list[Joint]) -> str:
+    """Why two hinges on ``link``, one at least carrying a fingertip hinge (:func:`_tipped`),
+    are jaws: they mirror each other (:func:`_twins`) at the end of a chain that is no head's,
+    each reaching no farther than a finger (its fingertip's joint within
+    :data:`_FINGER_REACH`); "" when they are not (two short arms on a torso travel alike)."""
+    if not (_twins(pair) and _ends_a_chain(tree, link) and not _on_a_head(tree, link)):
+        return ""
+    for joint in pair:
+        tip = next((j for j in tree.urdf.children(joint.child) if j.movable), None)
+        if tip is None:
+            continue
+        if distance(tree.poses.place(joint.child), tree.poses.place(tip.child)) > _FINGER_REACH:
+            return ""
+    return f"one of two hinges mirroring each other at the end of a chain ({link}), tipped"
 
 
 def _pair_why(

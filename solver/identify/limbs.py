@@ -74,7 +74,7 @@ import re
 from collections import Counter, deque
 from collections.abc import Callable
 from dataclasses import dataclass, replace
-from itertools import islice, pairwise
+from itertools import combinations, islice, pairwise
 from typing import NamedTuple
 
 from solver.identify.pose import (
@@ -129,9 +129,9 @@ _WRIST_JOINTS = 3
 _WRIST = re.compile("wrist", re.IGNORECASE)
 # A camera's frame by its name (camera_link, cam_1, gimbal_camera).
 _CAMERA = re.compile(r"camera|(^|[_/])cam([_/\d]|$)", re.IGNORECASE)
-# The most camera frames a pan/tilt unit carries fixed below its last link (a stereo pair with
-# their optical frames).
-_MOST_CAMERAS = 4
+# The most camera frames a pan/tilt unit carries fixed below its last link (an RGB-D camera's
+# link, its colour and depth frames and their optical frames; a stereo pair's).
+_MOST_CAMERA_FRAMES = 8
 LIMB_KINDS = ("leg", "arm", "head")
 # An unnamed pair of chains on the root this long, beside named arms higher up, are legs.
 _LEG_BY_PLACE_JOINTS = 5
@@ -1970,6 +1970,7 @@ def wrist(tree: JointTree, limbs: list[Limb], tips: list[str]) -> list[Limb]:
             _wrist(tree, limb)
             and _named_as_a_wrist(tree, limb)
             and _fingers_below(tree, limb.tip, tips) >= minimum
+            and _turns_in_place(tree, limb, tips)
             for limb in limbs
         ):
             return limbs
@@ -1988,10 +1989,11 @@ def _wrist(tree: JointTree, limb: Limb) -> bool:
 
 
 def _turns_in_place(tree: JointTree, limb: Limb, tips: list[str]) -> bool:
-    """Each two turning joints of ``limb`` turn about axes that pass no farther apart (at
+    """Every two turning joints of ``limb`` turn about axes that pass no farther apart (at
     rest) than the hand reaches from the chain's end to its fingers' last links: a wrist turns
     the hand where it is (a pitch and a yaw under the palm); two upright axes an arm's length
-    apart (a SCARA's shoulder and elbow) carry it across a table."""
+    apart (a SCARA's shoulder and elbow) carry it across a table. A hinge about no axis (a file's
+    ``0 0 0``) turns nothing and is not compared."""
     base = tree.poses.place(limb.tip)
     fingers = (tree.urdf.joint(name) for name in tips)
     reach = max(
@@ -2000,18 +2002,24 @@ def _turns_in_place(tree: JointTree, limb: Limb, tips: list[str]) -> bool:
     turning = [
         joint
         for name in limb.joints
-        if (joint := tree.urdf.joint(name)) is not None and joint.type in _TURNING
+        if (joint := tree.urdf.joint(name)) is not None
+        and joint.type in _TURNING
+        and math.hypot(*tree.poses.axis(joint)) > _SAME_PLACE
     ]
-    return all(_axes_apart(tree, one, other) <= reach for one, other in pairwise(turning))
+    return all(
+        _axes_apart(tree, one, other) <= reach + _SAME_PLACE
+        for one, other in combinations(turning, 2)
+    )
 
 
 def _axes_apart(tree: JointTree, one: Joint, other: Joint) -> float:
-    """How far apart the axes of two turning joints pass, as the body rests."""
+    """How far apart the axes of two turning joints pass, as the body rests (both axes of some
+    length: :func:`_turns_in_place`)."""
     along, across = tree.poses.axis(one), tree.poses.axis(other)
     gap = minus(tree.poses.place(other.child), tree.poses.place(one.child))
-    if parallel(along, across):
-        return math.hypot(*cross(gap, along)) / max(math.hypot(*along), 1e-12)
     normal = cross(along, across)
+    if parallel(along, across) or math.hypot(*normal) <= _SAME_PLACE:
+        return math.hypot(*cross(gap, along)) / math.hypot(*along)
     return abs(dot(gap, normal)) / math.hypot(*normal)
 
 
@@ -2188,10 +2196,10 @@ def _cameras_turned(tree: JointTree, last: Joint, *, named: bool) -> str:
     empty when it turns none."""
     if _CAMERA.search(last.child):
         return last.child
-    if not named or any(joint.movable for joint in tree.urdf.subtree_joints(last.child)):
+    if not named or last.child in tree.moving_below:
         return ""
-    below = list(islice(tree.urdf.fixed_below(last.child), _MOST_CAMERAS + 1))
-    if not below or len(below) > _MOST_CAMERAS or not all(_CAMERA.search(b) for b in below):
+    below = list(islice(tree.urdf.fixed_below(last.child), _MOST_CAMERA_FRAMES + 1))
+    if not below or len(below) > _MOST_CAMERA_FRAMES or not all(_CAMERA.search(b) for b in below):
         return ""
     return ", ".join(below)
 

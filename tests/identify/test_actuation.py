@@ -1216,3 +1216,28 @@ def test_leaves_named_for_their_corner_on_wagons_steered_by_an_unnamed_joint_are
 def test_leaves_named_for_their_corner_below_a_hip_are_not_wheels_by_place() -> None:
     wheels = with_role(roles_of(two_wagons("hip")), "wheel")
     assert not {"joint_rearLeft", "joint_rearRight"} & set(wheels)
+
+
+@pytest.mark.parametrize("swivel", ["continuous", "revolute"])
+def test_leaves_named_for_their_corner_alone_on_steering_swivels_are_steered_wheels(
+    swivel: str,
+) -> None:
+    # Alone on a part that turns, the corner's word is kept: the steered-wheel rules read them.
+    robot = RobotText("double_ackermann")
+    for i, (corner, (x, y)) in enumerate(CORNERS.items()):
+        knuckle = builders.placed(
+            robot, f"steer_{i}", swivel, robot.root, f"steer_{i}_link", xyz=f"{x} {y} -0.4"
+        )
+        builders.placed(
+            robot,
+            f"{corner}_joint",
+            "continuous",
+            knuckle,
+            f"{corner}_link",
+            xyz="0 0 -0.3",
+            axis="0 1 0",
+        )
+    roles = roles_of(robot)
+    assert with_role(roles, "steering") == [f"steer_{i}" for i in range(4)]
+    assert with_role(roles, "wheel") == [f"{c}_joint" for c in CORNERS]
+    assert not with_role(roles, "caster")

@@ -384,6 +384,22 @@ def test_mirrored_chains_of_three_hinges_at_an_arms_end_are_a_torsos_arms_not_ja
     assert result.structure == "Torso"
 
 
+@pytest.mark.parametrize("named", [True, False])
+def test_two_short_arms_travelling_alike_on_a_waist_are_no_tipped_jaws(named: bool) -> None:
+    # A waist of two joints carrying two arms of a shoulder and an elbow each, limits -1..1:
+    # they do not mirror each other (a travel symmetric about zero), so they are no jaws.
+    robot = RobotText("torso", root="base_link")
+    waist = robot.chain("base_link", ["waist_yaw", "waist_pitch"] if named else ["j1", "j2"])
+    for side, y in (("l", 0.2), ("r", -0.2)):
+        names = [f"{side}_shoulder", f"{side}_elbow"] if named else [f"{side}1", f"{side}2"]
+        upper = builders.placed(
+            robot, names[0], "revolute", waist, f"{names[0]}_link", xyz=f"0 {y} 0"
+        )
+        builders.placed(robot, names[1], "revolute", upper, f"{names[1]}_link", xyz="0.25 0 0")
+    result = identify_urdf(robot.text())
+    assert not [role.joint for role in result.roles if role.role == "finger"]
+
+
 def spinning_pair(robot: RobotText, link: str) -> None:
     """Two unnamed joints that turn without limits side by side on ``link`` (a sloppy file's
     jaws, or a hub's rim halves)."""

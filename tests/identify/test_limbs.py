@@ -595,6 +595,17 @@ def test_two_upright_axes_an_arms_length_apart_carrying_a_hand_are_an_arm_not_it
     assert result.structure == "Manipulator"
 
 
+def test_a_hinge_about_no_axis_in_a_hands_short_chain_is_not_compared() -> None:
+    # A file's axis 0 0 0: the joint turns nothing; the one turning joint left is the wrist.
+    text = scara(elbow="0 -0.05 0.1").text()
+    text = text.replace(
+        '<origin xyz="0 -0.05 0.1" rpy="0 0 0"/><axis xyz="0 0 1"/>',
+        '<origin xyz="0 -0.05 0.1" rpy="0 0 0"/><axis xyz="0 0 0"/>',
+    )
+    assert '<axis xyz="0 0 0"/>' in text
+    assert identify_urdf(text).structure == "Hand"
+
+
 def test_two_axes_passing_within_the_hands_reach_carrying_it_are_its_wrist() -> None:
     result = identify_urdf(scara(elbow="0 -0.05 0.1").text())
     assert result.structure == "Hand"

@@ -987,19 +987,35 @@ def _interface_kind(text: str) -> str:
 def _tags(root: etree._Element) -> frozenset[str]:
     """The element names of the description itself, not inside a ``<sensor>`` or a
     ``<plugin>`` (their words are a device's settings: a barometer's water-surface offset says
-    nothing of the hull; plugins keep theirs in :attr:`PluginTag.params`)."""
+    nothing of the hull; plugins keep theirs in :attr:`PluginTag.params`), nor inside a Gazebo
+    0.x ``<sensor:...>`` or ``<controller:...>``."""
     # The elements themselves are kept (not their ids): lxml makes a proxy per access, and a
     # freed proxy's id may be another element's.
     inside = {
         element
-        for device in root.iter("sensor", "plugin", "{*}sensor")
+        for device in root.iter()
+        if _a_device(device)
         for element in device.iterdescendants()
     }
     found: set[str] = set()
     for element in root.iter():
         if isinstance(element.tag, str) and element not in inside and len(found) < _MAX_TAGS:
-            found.add(element.tag.rsplit("}", 1)[-1].lower())
+            found.add(_local_name(element.tag).lower())
     return frozenset(found)
+
+
+def _a_device(element: etree._Element) -> bool:
+    """A sensor or a plugin element, of any Gazebo's spelling (``<sensor>``, ``<plugin>``, a
+    namespaced ``<sensor>``, Gazebo 0.x's ``<sensor:ray>`` and ``<controller:...>``)."""
+    tag = element.tag
+    if not isinstance(tag, str):
+        return False
+    return (
+        tag in ("sensor", "plugin")
+        or (tag.startswith("{") and tag.endswith("}sensor"))
+        or _legacy(element, "sensor")
+        or _legacy(element, "controller")
+    )
 
 
 def _gravity_off(root: etree._Element) -> bool:
