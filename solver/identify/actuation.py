@@ -732,14 +732,14 @@ def _unnamed_spinners(tree: JointTree, taken: set[str]) -> Iterator[Joint]:
             joint.endless
             and joint.actuated
             and joint.name not in taken
-            and not _named_for_a_part(tree, joint)
+            and not _named_for_a_part(tree, joint, known)
             and not points_a_sensor(tree, joint)
             and not _on_a_spinning_part(tree, joint, known)
         ):
             yield joint
 
 
-def _named_for_a_part(tree: JointTree, joint: Joint) -> bool:
+def _named_for_a_part(tree: JointTree, joint: Joint, known: dict[str, str | None]) -> bool:
     """``joint`` or its link is named for a part; a leaf named only for a corner of the body
     (``front_right_j`` on ``front_right``, ``joint_frontLeft``) says where it is, not what it
     is, and is named for none when it hangs from the body itself or from a part carrying more
@@ -752,7 +752,7 @@ def _named_for_a_part(tree: JointTree, joint: Joint) -> bool:
     if not all(_ONLY_A_CORNER.fullmatch(name) for name in named):
         return True
     alone = not any(o.movable and o is not joint for o in tree.urdf.children(joint.parent))
-    if alone and _nearest_moving(tree, joint.parent) is not None:
+    if alone and moved_by(tree.urdf, joint.parent, known) is not None:
         return True  # alone on a part that moves: a knuckle's or a swivel's wheel
     link = joint.parent
     for _ in range(_DEEPEST_WALK):
@@ -763,13 +763,3 @@ def _named_for_a_part(tree: JointTree, joint: Joint) -> bool:
             return True
         link = above.parent
     return False
-
-
-def _nearest_moving(tree: JointTree, link: str) -> Joint | None:
-    """The nearest movable joint above ``link`` (a walk of :data:`_DEEPEST_WALK` at most)."""
-    for _ in range(_DEEPEST_WALK):
-        above = tree.urdf.parent_joint(link)
-        if above is None or above.movable:
-            return above
-        link = above.parent
-    return None
