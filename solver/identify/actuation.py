@@ -727,39 +727,39 @@ def _unnamed_spinners(tree: JointTree, taken: set[str]) -> Iterator[Joint]:
     lidar or a range finder: a wheel's contact or IMU sensor turns with it): what could be
     wheels or rotors, told by place."""
     known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
+    named: dict[str, str | None] = {}  # link -> the nearest movable joint named for a part
     for joint in tree.urdf.joints:
         if (
             joint.endless
             and joint.actuated
             and joint.name not in taken
-            and not _named_for_a_part(tree, joint, known)
+            and not _named_for_a_part(tree, joint, known, named)
             and not points_a_sensor(tree, joint)
             and not _on_a_spinning_part(tree, joint, known)
         ):
             yield joint
 
 
-def _named_for_a_part(tree: JointTree, joint: Joint, known: dict[str, str | None]) -> bool:
+def _named_for_a_part(
+    tree: JointTree, joint: Joint, known: dict[str, str | None], named: dict[str, str | None]
+) -> bool:
     """``joint`` or its link is named for a part; a leaf named only for a corner of the body
     (``front_right_j`` on ``front_right``, ``joint_frontLeft``) says where it is, not what it
     is, and is named for none when it hangs from the body itself or from a part carrying more
     than it that moves (a wagon's axle), below no joint named for a part (a hip above it makes
     the corner a leg's). One alone on a swivel (a steering knuckle, a caster) keeps its
-    corner's word: the steered-wheel rules read it."""
-    named = [name for name in (joint.name, joint.child) if tree.parts_of(name)]
-    if not named:
+    corner's word: the steered-wheel rules read it. ``known`` and ``named`` remember the walks
+    up the tree (:func:`~solver.identify.limbs.nearest_above`)."""
+    words = [name for name in (joint.name, joint.child) if tree.parts_of(name)]
+    if not words:
         return False
-    if not all(_ONLY_A_CORNER.fullmatch(name) for name in named):
+    if not all(_ONLY_A_CORNER.fullmatch(name) for name in words):
         return True
     alone = not any(o.movable and o is not joint for o in tree.urdf.children(joint.parent))
     if alone and moved_by(tree.urdf, joint.parent, known) is not None:
         return True  # alone on a part that moves: a knuckle's or a swivel's wheel
-    link = joint.parent
-    for _ in range(_DEEPEST_WALK):
-        above = tree.urdf.parent_joint(link)
-        if above is None:
-            return False
-        if above.movable and (tree.parts_of(above.name) or tree.parts_of(above.child)):
-            return True
-        link = above.parent
-    return False
+
+    def part_named(above: Joint) -> bool:
+        return above.movable and bool(tree.parts_of(above.name) or tree.parts_of(above.child))
+
+    return nearest_above(tree.urdf, joint.parent, named, part_named) is not None

@@ -54,6 +54,7 @@ __all__ = [
 # Sensor elements a DVL's beams are written as (a range ray each).
 _BEAM_TYPES = ("ray", "gpu_ray", "sonar")
 _LINK_PARAMS = ("linkName", "bodyName", "frameName", "frameId", "frame_name", "link_name")
+_LINK_TAGS = frozenset(tag.lower() for tag in _LINK_PARAMS)
 _JOINT_PARAMS = ("jointName", "joint_name", "joint")
 # How many joints that do not move may separate one device's frames (a sensor link, its
 # optical frame, a beam).
@@ -204,8 +205,7 @@ def _plugin_link(plugin: PluginTag, declared: Container[str | None]) -> str | No
     body, its frame), one where an element of its kind sits (``declared``), the device declared
     twice (an IMU's element on ``imu_link``, its plugin's ``<bodyName>`` the chassis and
     ``<frameName>`` ``imu_link``); else the first it names, else its ``<gazebo reference>``."""
-    tags = {tag.lower() for tag in _LINK_PARAMS}
-    named = [text for tag, text in plugin.params if tag.lower() in tags]
+    named = [text for tag, text in plugin.params if tag.lower() in _LINK_TAGS]
     return next((link for link in named if link in declared), None) or (
         named[0] if named else plugin.reference
     )
