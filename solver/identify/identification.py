@@ -69,6 +69,7 @@ from solver.identify.shipped import (
     controls_from_workspace,
     joint_controllers,
     named_joints,
+    per_joint_controllers,
 )
 from solver.limits import limit
 from solver.ros.description import TeleopDescription, description_beside, load_description
@@ -211,6 +212,11 @@ def identify_urdf(
             guess_navigation=packages is None or not packages.complete,
             named=_named(packages, body),
             leg_controllers=_joint_controllers(packages, profile.gait, _legs(body)),
+            leg_joint_controllers=(
+                None
+                if packages is None
+                else per_joint_controllers(packages, profile.gait, _legs(body))
+            ),
             rotor_controllers=_joint_controllers(packages, profile.flight, body.rotors),
         ),
         shipped,

@@ -206,13 +206,16 @@ def _limbs(
     urdf_source: str,
     urdf: Urdf | None = None,
     named: Collection[str] | None = None,
+    *,
     leg_controllers: str | None = None,
+    leg_joint_controllers: str | None = None,
 ) -> _Shown:
     """Limb joints a controller drives (declared); arms of actuated joints (roles), but for
     an arm nothing commands (:func:`_shown_only`); a pan/tilt unit alone
     (:attr:`Body.head_alone`); legs to walk on, or, when the robot's packages configure
     joint controllers and ship no gait (``leg_controllers``, the file that shows it), legs
-    commanded joint by joint."""
+    commanded joint by joint; legs with a controller of a joint's own in the packages
+    (``leg_joint_controllers``, the file that shows it) take joint commands beside the gait."""
     found = []
     if body.controlled_joints:
         count = len(body.controlled_joints)
@@ -276,6 +279,9 @@ def _limbs(
         found.append(("leg_controllers", why))
     elif legs >= _WALKING_LEGS:
         found.append(("legs", f"{urdf_source}: likely, not declared: {legs} legs to walk on"))
+        if leg_joint_controllers is not None:
+            why = f"{leg_joint_controllers}: a controller of a joint's own on joints of {legs} legs"
+            found.append(("leg_joint_controllers", why))
     return found
 
 
@@ -392,6 +398,7 @@ def controls_from_description(
     guess_navigation: bool = True,
     named: Collection[str] | None = None,
     leg_controllers: str | None = None,
+    leg_joint_controllers: str | None = None,
     rotor_controllers: str | None = None,
 ) -> tuple[Control, ...]:
     """The motion controls the body (and SRDF) show, each with what shows it; with the kinds
@@ -400,13 +407,22 @@ def controls_from_description(
     joints the robot's packages name, when they were read whole; ``leg_controllers`` and
     ``rotor_controllers``: the file of the robot's packages that configures joint controllers
     of its legs or rotors, when they ship no gait or no flight software
-    (:func:`solver.identify.shipped.joint_controllers`)."""
+    (:func:`solver.identify.shipped.joint_controllers`); ``leg_joint_controllers``: the file
+    that configures a controller of a leg joint's own
+    (:func:`solver.identify.shipped.per_joint_controllers`)."""
     effectors = () if srdf is None else hand_effectors(body, srdf, urdf)  # once per SRDF
     shown = [
         *_ground(body, urdf_source),
         *_water(body, urdf_source),
         *_flight(body, urdf_source, rotor_controllers),
-        *_limbs(body, urdf_source, urdf, named, leg_controllers),
+        *_limbs(
+            body,
+            urdf_source,
+            urdf,
+            named,
+            leg_controllers=leg_controllers,
+            leg_joint_controllers=leg_joint_controllers,
+        ),
         *_planned(body, srdf, profile, urdf, srdf_source, effectors=effectors),
     ]
     if _feet_only(srdf, effectors) or _balances(body):

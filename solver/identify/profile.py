@@ -177,6 +177,7 @@ CONTROL_SOURCES = (
     "srdf_walker_group",
     "srdf_end_effector",
     "leg_controllers",
+    "leg_joint_controllers",
     "rotor_controllers",
     *ROLE_SOURCES,
 )
@@ -209,7 +210,7 @@ _ELEMENT_KEYS = {"kind", "types", "match", "max_rays", "wider_than"}
 _PLUGIN_RULE_KEYS = {"kind", "match"}
 _TOPIC_SENSOR_KEYS = {"kind", "types", "match", "direction"}
 _TOPIC_CONTROL_KEYS = {"control", "types", "match", "direction"}
-_PACKAGE_KEYS = {"control", "match", "not_for"}
+_PACKAGE_KEYS = {"control", "match", "not_for", "unless"}
 # What the robot's packages may say a body travels in (``body_packages``).
 GROUND = "ground"
 VEHICLE_MEDIA = ("flight", "underwater", "surface", GROUND)
@@ -427,22 +428,27 @@ class SoftwareRule:
     """What tells a body's own software from its joint controllers in the texts of its
     packages (:func:`solver.identify.shipped.joint_controllers`): ``shipped``, the software
     (a walker's gait, a flown body's flight controller, a velocity command, a teleop);
-    ``controllers``, joint controllers configured."""
+    ``controllers``, joint controllers configured; ``per_joint`` (optional), a controller of
+    a joint's own (ROS 1's ``JointPositionController``: a command topic for that joint),
+    which takes commands for the joint whatever software ships beside it."""
 
     shipped: Pattern
     controllers: Pattern
+    per_joint: Pattern | None = None
 
 
 @dataclass(frozen=True, slots=True)
 class PackageRule:
     """What a text of the robot's packages shows (:mod:`solver.identify.shipped`): ``match``
     found in a launch, configuration or script file means ``control`` (``velocity``: the
-    structure's velocity control), except for a structure in ``not_for``."""
+    structure's velocity control), except for a structure in ``not_for`` and in a file
+    ``unless`` finds text in (a MoveIt script's waypoints are its arm's Cartesian path)."""
 
     control: str
     match: Pattern
     not_for: frozenset[str] = frozenset()
     location: Location | None = field(default=None, compare=False)
+    unless: Pattern | None = None
 
 
 @dataclass(frozen=True)
@@ -959,6 +965,7 @@ def _package_rules(reader: Reader, structures: set[str]) -> tuple[PackageRule, .
     for item, spec in _rules(reader, path, "package rule", _PACKAGE_KEYS):
         control = reader.string((*item, "control"), "motion control")
         match = _pattern(reader, (*item, "match"))
+        unless = _pattern(reader, (*item, "unless"), required=False)
         not_for = []
         listed = reader.names((*item, "not_for"), "structures") if "not_for" in spec else []
         for where, structure in listed:
@@ -966,7 +973,9 @@ def _package_rules(reader: Reader, structures: set[str]) -> tuple[PackageRule, .
             not_for.append(structure)
         if control and match is not None:
             found.append(
-                PackageRule(control, match, frozenset(not_for), reader.document.location(item))
+                PackageRule(
+                    control, match, frozenset(not_for), reader.document.location(item), unless
+                )
             )
     return tuple(found)
 
@@ -978,12 +987,13 @@ def _software(reader: Reader, key: str) -> SoftwareRule | None:
     spec = reader.mapping(path, key, required=False)
     if not spec:
         return None
-    reader.unknown_keys(path, spec, {"shipped", "controllers"}, f"{key} field")
+    reader.unknown_keys(path, spec, {"shipped", "controllers", "per_joint"}, f"{key} field")
     shipped = _pattern(reader, (*path, "shipped"))
     controllers = _pattern(reader, (*path, "controllers"))
     if shipped is None or controllers is None:
         return None
-    return SoftwareRule(shipped, controllers)
+    per_joint = _pattern(reader, (*path, "per_joint"), required=False)
+    return SoftwareRule(shipped, controllers, per_joint)
 
 
 def _navigation(

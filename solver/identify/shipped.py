@@ -41,27 +41,43 @@ from dataclasses import replace
 
 from solver.identify.body import Body
 from solver.identify.interfaces import Control
-from solver.identify.profile import GROUND, VELOCITY, Pattern, Profile, SoftwareRule
+from solver.identify.profile import (
+    GROUND,
+    VELOCITY,
+    PackageRule,
+    Pattern,
+    Profile,
+    SoftwareRule,
+)
 from solver.identify.readers.workspace import Workspace
 from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
-__all__ = ["body_from_workspace", "controls_from_workspace", "joint_controllers", "named_joints"]
+__all__ = [
+    "body_from_workspace",
+    "controls_from_workspace",
+    "joint_controllers",
+    "named_joints",
+    "per_joint_controllers",
+]
 
 
 def controls_from_workspace(
     workspace: Workspace, profile: Profile, structure: str
 ) -> tuple[Control, ...]:
-    """One control per rule that a file of the robot's packages matches, with that file."""
-    found: dict[str, str] = {}
+    """One control per rule that a file of the robot's packages matches, with the first file
+    (in the order the packages were read) that one of the control's rules matches."""
+    rules: dict[str, list[PackageRule]] = {}
     for rule in profile.package_controls:
-        if structure in rule.not_for:
-            continue
-        control = profile.velocity_control(structure) if rule.control == VELOCITY else rule.control
-        if control in found:
-            continue
-        shown_file = _first_found(workspace, rule.match)
-        if shown_file is not None:
-            found[control] = shown_file
+        if structure not in rule.not_for:
+            control = (
+                profile.velocity_control(structure) if rule.control == VELOCITY else rule.control
+            )
+            rules.setdefault(control, []).append(rule)
+    found = {
+        control: shown_file
+        for control, listed in rules.items()
+        if (shown_file := _first_found(workspace, *listed)) is not None
+    }
     return tuple(Control(control, source) for control, source in found.items())
 
 
@@ -133,6 +149,25 @@ def joint_controllers(
     return None
 
 
+def per_joint_controllers(
+    workspace: Workspace, rule: SoftwareRule | None, joints: Collection[str]
+) -> str | None:
+    """The first file of the robot's packages that configures a controller of a joint's own
+    (``rule.per_joint``: ROS 1's ``JointPositionController``, a command topic for one joint)
+    and names one of the ``joints`` (a walker's legs'): those joints take commands one by one,
+    whatever else the packages ship (a gait beside them walks the body through them). A
+    joint group's or trajectory controller is what a gait writes to: not read here. Found in
+    packages read in part too: what was read says it."""
+    if rule is None or rule.per_joint is None:
+        return None
+    words = {tail for name in joints if _WORD.fullmatch(tail := name.rsplit("/", 1)[-1])}
+    for shipped in workspace.files:
+        matched = rule.per_joint.find(shipped.text)
+        if matched is not None and named_joints(replace(workspace, files=(shipped,)), words):
+            return _shown_file(shipped.package, shipped.path, matched)
+    return None
+
+
 def _commanded_in_gazebo(text: str, joints: Collection[str]) -> str | None:
     """The first Gazebo Sim joint controller's command topic in ``text`` (a ``ros_gz`` bridge
     configuration's ``/model/h1/joint/left_knee_joint/0/cmd_pos``, or ``.../cmd_force``) whose
@@ -190,13 +225,20 @@ _WORD = re.compile(r"[\w.\-]+")
 _PART = re.compile(r"\w+")
 
 
-def _first_found(workspace: Workspace, pattern: Pattern) -> str | None:
-    """The first file of the robot's packages ``pattern`` finds text in, as evidence shows it
+def _first_found(workspace: Workspace, *patterns: Pattern | PackageRule) -> str | None:
+    """The first file of the robot's packages one of the ``patterns`` finds text in (a
+    package rule's ``match``, in a file its ``unless`` finds none in), as evidence shows it
     (in the order the packages were read), or None."""
     for shipped in workspace.files:
-        matched = pattern.find(shipped.text)
-        if matched is not None:
-            return _shown_file(shipped.package, shipped.path, matched)
+        for pattern in patterns:
+            match, unless = (
+                (pattern.match, pattern.unless)
+                if isinstance(pattern, PackageRule)
+                else (pattern, None)
+            )
+            matched = match.find(shipped.text)
+            if matched is not None and (unless is None or not unless.search(shipped.text)):
+                return _shown_file(shipped.package, shipped.path, matched)
     return None
 
 

@@ -142,6 +142,16 @@ def test_a_navigation_need_for_nothing_that_moves_a_body_is_a_located_fault() ->
     assert "wheels" in fault.message
 
 
+def test_a_gait_may_name_the_controllers_of_a_joints_own_and_a_flight_need_not() -> None:
+    gait, flight = load_profile().gait, load_profile().flight
+    assert gait is not None
+    assert gait.per_joint is not None
+    assert gait.per_joint.search("type: effort_controllers/JointPositionController")
+    assert not gait.per_joint.search("type: effort_controllers/JointGroupPositionController")
+    assert flight is not None
+    assert flight.per_joint is None
+
+
 @pytest.mark.parametrize(
     ("key", "software", "controllers", "field"),
     [
@@ -187,6 +197,7 @@ def test_package_rules_are_optional_and_their_structures_are_checked() -> None:
         "Waypoint",
         "Waypoint",
         "Waypoint",
+        "Waypoint",
         "velocity",
         "End Effector",
         "End Effector",
@@ -194,6 +205,10 @@ def test_package_rules_are_optional_and_their_structures_are_checked() -> None:
         "End Effector",
     ]
     assert "Manipulator" in shipped[0].not_for
+    # A rule may leave out the files another pattern finds text in.
+    assert shipped[1].unless is not None
+    assert shipped[1].unless.search("import moveit_commander")
+    assert shipped[5].unless is None
     text = SHIPPED.replace(
         "      not_for: [Manipulator, Pan/Tilt Unit, Gripper, Hand, Torso]\n",
         "      not_for: [Manipulater, Pan/Tilt Unit, Gripper, Hand, Torso]\n",

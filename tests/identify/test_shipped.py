@@ -351,6 +351,28 @@ def test_a_flown_bodys_goal_words_inside_other_words_are_not_read(text: str) -> 
     assert shipped("UAV", text) == {}
 
 
+@pytest.mark.parametrize(
+    "script",
+    [
+        "waypoints = [start, lift]; plan, _ = arm.compute_cartesian_path(waypoints, 0.01)",
+        "#include <moveit/move_group_interface/move_group_interface.h>\n"
+        "std::vector<Pose> waypoints;",
+    ],
+)
+def test_the_waypoints_of_a_moveit_scripts_cartesian_path_are_no_navigation(script: str) -> None:
+    assert "Waypoint" not in shipped("Mobile Manipulator", script)
+    # The same word in a script of no arm's path is a base's goals.
+    assert "Waypoint" in shipped("Mobile Manipulator", "waypoints = [start, dock]")
+
+
+def test_a_mavros_plugin_configuration_lists_set_points_and_missions_nobody_sends() -> None:
+    # MAVROS' stock configuration names every plugin, used or not.
+    config = "conn:\n  heartbeat_rate: 1.0\nmission:\n  pull_after_gcs: true\nsetpoint_position:\n"
+    assert shipped("UAV", config) == {}
+    # A script that streams set-points on its topic sends goals.
+    assert "Waypoint" in shipped("UAV", config, "pub('mavros/setpoint_position/local', pose)")
+
+
 def test_the_first_file_that_shows_a_control_is_named() -> None:
     found = shipped("UGV", "nothing here", "waypoint_follower", "bt_navigator")
     assert found["Waypoint"].endswith("1.launch.py (waypoint)")
@@ -904,6 +926,45 @@ def test_a_walker_whose_packages_ship_a_gait_is_still_walked(tmp_path: Path, gai
     found = controls_of(described(tmp_path, quadruped(), f"{JOINT_CONTROLLERS}\n{gait}"))
     assert "Walking" in found
     assert "Joint" not in found
+
+
+@pytest.mark.parametrize(
+    "controller",
+    [
+        "type: effort_controllers/JointPositionController",
+        "type: position_controllers/JointPositionController",
+        "type: velocity_controllers/JointVelocityController",
+        "type: effort_controllers/JointEffortController",
+    ],
+)
+def test_a_controller_of_a_legs_joint_its_own_takes_joint_commands_beside_the_gait(
+    tmp_path: Path, controller: str
+) -> None:
+    bringup = f"FL_calf_position_controller: {{{controller}, joint: FL_calf}}\ngait: trot"
+    found = controls_of(described(tmp_path, quadruped(), bringup))
+    assert found == {
+        "Walking": "urdf: likely, not declared: 4 legs to walk on",
+        "Joint": f"package craft_bringup: craft_bringup/launch/bringup.launch "
+        f"({controller.rsplit('/', 1)[-1]}): a controller of a joint's own on joints of 4 legs",
+    }
+
+
+@pytest.mark.parametrize(
+    "bringup",
+    [
+        # What a gait writes to: the legs' group or trajectory controller.
+        f"{JOINT_CONTROLLERS}\ngait: trot",
+        "legs: {type: position_controllers/JointGroupPositionController, joints: [FL_calf]}\n"
+        "gait: trot",
+        # A joint's own controller, of no leg (a head's).
+        "neck_position_controller: {type: effort_controllers/JointPositionController, "
+        "joint: neck}\ngait: trot",
+    ],
+)
+def test_a_gaits_group_controller_or_a_joints_own_of_no_leg_gives_no_joint_commands(
+    tmp_path: Path, bringup: str
+) -> None:
+    assert set(controls_of(described(tmp_path, quadruped(), bringup))) == {"Walking"}
 
 
 def test_a_gait_planner_package_beside_the_robots_keeps_the_guess_of_a_gait(
