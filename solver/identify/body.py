@@ -151,6 +151,9 @@ class Body:
     vessel_name: tuple[str, ...] = ()
     # Flying known only from a model plugin's parameters (a vehicle plugin of its own).
     flight_hints: tuple[str, ...] = ()
+    # The robot's name as a rig of sensors a vehicle carries (a sensor kit, a sensor rack), when
+    # nothing else says how the body travels: its packages' vehicle is not it.
+    rig_name: tuple[str, ...] = ()
     # The medium the robot's packages say the body travels in (flight, underwater, surface),
     # when its description shows no way, and the file that says it (solver.identify.shipped).
     shipped_as: str = ""
@@ -367,6 +370,11 @@ class Body:
             lines.append(f"drive plugin(s): {_names(self.drive_plugins)}")
         if self.shipped_as == GROUND:
             lines.append(f"a ground vehicle by its packages alone: {self.shipped_by}")
+        if self.rig_name and self.travels_no_way:
+            lines.append(
+                f"a rig of sensors by its name: {_names(self.rig_name)} (its packages' vehicle "
+                "is not read as it)"
+            )
         return lines
 
     def evidence(self, root: str) -> tuple[str, ...]:
@@ -490,6 +498,7 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
         underwater_hints=underwater_hints(tree),
         water_frames=water_frames(tree),
         vessel_name=vessel_name(tree, parts.roles, parts.limbs),
+        rig_name=(f"robot name {urdf.name}",) if tree.reader.named_rig else (),
         flight_hints=flight_hints(tree, parts.roles, parts.limbs),
         finger_motions=sum(1 for name in parts.grippers if (j := urdf.joint(name)) and j.actuated),
         roles=_all_roles(tree, parts),

@@ -128,6 +128,13 @@ _VESSEL_NAME = re.compile(
 # A robot name that says a craft below the surface, read as whole words (``rov_model``,
 # ``my_auv``, ``submarine``; not ``rover``), an ROV's or AUV's with a usual prefix too
 # (``AROV``, ``bluerov2``, ``openrov``; not ``petrov`` or ``improv``).
+# A robot named for a rig of sensors a vehicle carries (``mid360_sensor_kit``, ``sensor_rack``,
+# a ``backpack``), whole words: a kit mounted on a vehicle, not the vehicle.
+_RIG_NAME = re.compile(
+    r"sensors?[_-]?(kit|rig|rack|suite|tower|box|pod|array|mount)s?([_/\d-]|$)"
+    r"|(^|[_/\d-])(rig|backpack)s?([_/\d-]|$)",
+    re.IGNORECASE,
+)
 _SUBMERSIBLE_NAME = re.compile(
     r"(^|[_/\d-])((a|b|blue|open|mini|micro|sea|deep|sub|my)?(auv|rov)|uuv|submarine|submersible)"
     r"s?([_/\d-]|$)",
@@ -172,6 +179,7 @@ class RoleReader:
         self.named_vessel = self._named_vessel()
         self.named_submersible = self._name_says(_SUBMERSIBLE_NAME)
         self.named_airship = self._name_says(_AIRSHIP_NAME)
+        self.named_rig = bool(_RIG_NAME.search(urdf.name))
         # A craft its thrusters fly in air or space (a reaction wheel, air thrusters), nothing
         # of water beside them (no water plugin, no name of a boat or a submersible): the
         # thrusters do not put it in water.

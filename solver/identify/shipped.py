@@ -89,9 +89,11 @@ def body_from_workspace(body: Body, workspace: Workspace, profile: Profile) -> B
     by a teleop node its packages ship (:func:`_driven`). The ground is read only for a body
     with no head: a pan/tilt unit in a rover's packages is the rover's sensor head, no rover.
     A ground word beside another medium's says nothing either way (a flight stack that lists
-    rovers among its vehicles, a rover's packages that mention a drone)."""
+    rovers among its vehicles, a rover's packages that mention a drone). A body named for a
+    rig of sensors (:attr:`Body.rig_name`: a sensor kit a vehicle carries) is not read: its
+    packages' vehicle is the one that carries it."""
     body = _driven(body, workspace, profile)
-    if not (body.travels_no_way or body.moved_by_plugin_alone):
+    if not (body.travels_no_way or body.moved_by_plugin_alone) or body.rig_name:
         return body
     said = {
         medium: shown_file

@@ -722,6 +722,21 @@ def test_a_body_that_shows_no_way_of_travelling_drives_when_its_packages_are_a_g
     )
 
 
+@pytest.mark.parametrize("name", ["mid360_sensor_kit", "roof_sensor_rack", "lidar_backpack"])
+def test_a_rig_of_sensors_a_vehicle_carries_is_not_that_vehicle(tmp_path: Path, name: str) -> None:
+    result = identify(described(tmp_path, one_link(name), "<node pkg='ackermann_steering'/>"))
+    assert result.structure == "Other"
+    assert (
+        f"a rig of sensors by its name: robot name {name} (its packages' vehicle is not read as it)"
+        in (result.evidence)
+    )
+
+
+def test_a_body_named_for_a_kit_of_no_sensors_is_still_its_packages_vehicle(tmp_path: Path) -> None:
+    for name in ("starter_kit", "sensorless_rover", "rigid_body"):
+        assert read_with(tmp_path / name, one_link(name), "ugv_base: {}")[0] == "UGV", name
+
+
 def test_ground_words_inside_longer_words_say_nothing(tmp_path: Path) -> None:
     assert read_with(tmp_path, one_link(), "amrita grovers ramrod")[0] == "Other"
 

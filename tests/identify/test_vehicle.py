@@ -323,6 +323,15 @@ def test_wings_are_wing_links_with_the_control_surfaces_beside_them() -> None:
     assert wings(tree_of(tail_only), {}) == []
 
 
+def test_an_aileron_misspelled_as_cad_exports_write_it_is_a_wing() -> None:
+    # A fuselage mesh carrying its wings, with ailerons spelt `airelon` and a tail.
+    plane = RobotText("iha")
+    for link in ("airelon1", "airelon2", "rudder", "elevator1"):
+        plane.fixed("base_link", link)
+    assert wings(tree_of(plane), {}) == ["airelon1", "airelon2", "rudder", "elevator1"]
+    assert identify_urdf(plane.text()).structure == "UAV"
+
+
 def test_a_thruster_plugin_listing_a_fixed_link_names_a_thruster() -> None:
     robot = RobotText("hull")
     robot.fixed("base_link", "stern_thruster")
