@@ -737,6 +737,21 @@ def test_a_body_named_for_a_kit_of_no_sensors_is_still_its_packages_vehicle(tmp_
         assert read_with(tmp_path / name, one_link(name), "ugv_base: {}")[0] == "UGV", name
 
 
+def test_a_gazebo_models_manifest_says_what_a_hull_drawn_alone_is(tmp_path: Path) -> None:
+    path = described(tmp_path, one_link("ben"), "<node pkg='robot_state_publisher'/>")
+    manifest = path.parent.parent / "models" / "ben" / "model.config"
+    manifest.parent.mkdir(parents=True)
+    manifest.write_text(
+        "<model><name>ben</name><!-- a drone's --><description>A survey ASV</description></model>"
+    )
+    result = identify(path)
+    assert result.structure == "Surface Vessel"
+    assert (
+        "in water at the surface by its packages alone: "
+        "package craft_description: craft_description/models/ben/model.config (ASV)"
+    ) in result.evidence
+
+
 def test_ground_words_inside_longer_words_say_nothing(tmp_path: Path) -> None:
     assert read_with(tmp_path, one_link(), "amrita grovers ramrod")[0] == "Other"
 
