@@ -370,10 +370,10 @@ class Body:
             lines.append(f"drive plugin(s): {_names(self.drive_plugins)}")
         if self.shipped_as == GROUND:
             lines.append(f"a ground vehicle by its packages alone: {self.shipped_by}")
-        if self.rig_name and self.travels_no_way:
+        if self.rig_name and (self.travels_no_way or self.moved_by_plugin_alone):
             lines.append(
-                f"a rig of sensors by its name: {_names(self.rig_name)} (its packages' vehicle "
-                "is not read as it)"
+                f"a rig of sensors by its name: {_names(self.rig_name)} (no vehicle its "
+                "packages name is read as it)"
             )
         return lines
 

@@ -2214,6 +2214,7 @@ def _unnamed_kind(
         and length <= tree.profile.limb("head_max_joints")
         and _turns(chain)
         and points_a_sensor(tree, chain[-1])
+        and not _shoulder_and_elbow(tree, chain)
     ):
         return "head", (
             f"a chain of {length} joint(s) carrying a camera or a range sensor (a pan/tilt unit)"
@@ -2227,6 +2228,27 @@ def _unnamed_kind(
     if flying and length >= _FLYING_ARM_JOINTS and not named:
         return "arm", f"a chain of {length} joints hanging from a flying body"
     return "other", "no name or shape of a limb"
+
+
+def _shoulder_and_elbow(tree: JointTree, chain: list[Joint]) -> bool:
+    """Two joints of the chain turn about parallel axes apart from each other, as an arm's
+    shoulder and elbow do: the chain carries what it holds across space (a camera an arm moves
+    round an object), where a pan/tilt unit turns it where it is, about axes that cross or
+    are one (a pan, then a tilt square to it). A hinge about no axis is not compared."""
+    turning = [
+        joint
+        for joint in chain
+        if joint.type in _TURNING and math.hypot(*tree.poses.axis(joint)) > _SAME_PLACE
+    ]
+    return any(
+        parallel(tree.poses.axis(one), tree.poses.axis(other))
+        and _axes_apart(tree, one, other) > _SAME_AXIS_GAP
+        for one, other in combinations(turning, 2)
+    )
+
+
+# How far apart two parallel axes may pass and still be one (a file's rounding).
+_SAME_AXIS_GAP = 1e-3
 
 
 def _turns(chain: list[Joint]) -> bool:

@@ -125,16 +125,17 @@ _VESSEL_NAME = re.compile(
 )
 
 
+# A robot named for a rig of sensors a vehicle carries: a sensor kit, rack, suite, tower, box,
+# pod, array or mount (``mid360_sensor_kit``, ``multisensor_rack``), a sensor backpack: a kit
+# mounted on a vehicle or a person, not the vehicle.
+_RIG_NAME = re.compile(
+    r"sensors?[_-]?(kit|rig|rack|suite|tower|box(es)?|pod|array|mount)s?([_/\d-]|$)"
+    r"|(^|[_/\d-])backpacks?([_/\d-]|$)",
+    re.IGNORECASE,
+)
 # A robot name that says a craft below the surface, read as whole words (``rov_model``,
 # ``my_auv``, ``submarine``; not ``rover``), an ROV's or AUV's with a usual prefix too
 # (``AROV``, ``bluerov2``, ``openrov``; not ``petrov`` or ``improv``).
-# A robot named for a rig of sensors a vehicle carries (``mid360_sensor_kit``, ``sensor_rack``,
-# a ``backpack``), whole words: a kit mounted on a vehicle, not the vehicle.
-_RIG_NAME = re.compile(
-    r"sensors?[_-]?(kit|rig|rack|suite|tower|box|pod|array|mount)s?([_/\d-]|$)"
-    r"|(^|[_/\d-])(rig|backpack)s?([_/\d-]|$)",
-    re.IGNORECASE,
-)
 _SUBMERSIBLE_NAME = re.compile(
     r"(^|[_/\d-])((a|b|blue|open|mini|micro|sea|deep|sub|my)?(auv|rov)|uuv|submarine|submersible)"
     r"s?([_/\d-]|$)",

@@ -92,8 +92,10 @@ def body_from_workspace(body: Body, workspace: Workspace, profile: Profile) -> B
     rovers among its vehicles, a rover's packages that mention a drone). A body named for a
     rig of sensors (:attr:`Body.rig_name`: a sensor kit a vehicle carries) is not read: its
     packages' vehicle is the one that carries it."""
+    if body.rig_name:
+        return body
     body = _driven(body, workspace, profile)
-    if not (body.travels_no_way or body.moved_by_plugin_alone) or body.rig_name:
+    if not (body.travels_no_way or body.moved_by_plugin_alone):
         return body
     said = {
         medium: shown_file
@@ -155,19 +157,46 @@ def per_joint_controllers(
     workspace: Workspace, rule: SoftwareRule | None, joints: Collection[str]
 ) -> str | None:
     """The first file of the robot's packages that configures a controller of a joint's own
-    (``rule.per_joint``: ROS 1's ``JointPositionController``, a command topic for one joint)
-    and names one of the ``joints`` (a walker's legs'): those joints take commands one by one,
-    whatever else the packages ship (a gait beside them walks the body through them). A
-    joint group's or trajectory controller is what a gait writes to: not read here. Found in
-    packages read in part too: what was read says it."""
+    (``rule.per_joint``: ROS 1's ``effort_controllers/JointPositionController``, a command
+    topic for one joint) for one of the ``joints`` (a walker's legs'): the ``joint:`` key
+    nearest the controller's type names it. Those joints take commands one by one, whatever
+    else the packages ship (a gait beside them walks the body through them). A joint group's
+    or trajectory controller is what a gait writes to, and a controller of a joint's own for a
+    head or a gripper says nothing of the legs: not read here. Found in packages read in part
+    too: what was read says it."""
     if rule is None or rule.per_joint is None:
         return None
-    words = {tail for name in joints if _WORD.fullmatch(tail := name.rsplit("/", 1)[-1])}
+    names = {
+        tail: name
+        for name in joints
+        for tail in (name.rsplit("/", 1)[-1], *_prefixed(name.rsplit("/", 1)[-1]))
+    }
+    if not names:
+        return None
     for shipped in workspace.files:
-        matched = rule.per_joint.find(shipped.text)
-        if matched is not None and named_joints(replace(workspace, files=(shipped,)), words):
-            return _shown_file(shipped.package, shipped.path, matched)
+        for found in rule.per_joint.compiled.finditer(shipped.text):
+            if _nearest_joint(shipped.text, found.start(), found.end()) in names:
+                return _shown_file(shipped.package, shipped.path, found.group(0))
     return None
+
+
+def _nearest_joint(text: str, start: int, end: int) -> str | None:
+    """The value of the ``joint:`` key nearest a controller's type found at ``start:end``
+    (a block's joint is written just before or after its type), within a few lines, by its
+    name after a namespace; None when there is none."""
+    before = text[max(0, start - _BLOCK_REACH) : start]
+    after = text[end : end + _BLOCK_REACH]
+    keys = [(len(before) - m.end(), m.group(1)) for m in _JOINT_KEY.finditer(before)]
+    keys += [(m.start(), m.group(1)) for m in _JOINT_KEY.finditer(after)]
+    if not keys:
+        return None
+    return min(keys)[1].rsplit("/", 1)[-1]
+
+
+# A controller's one joint, as ROS 1 configurations write it (``joint: FL_calf``,
+# ``"joint": "FL_calf"``), and how far around its type it is looked for.
+_JOINT_KEY = re.compile(r"""(?<![\w])["']?joint["']?\s*:\s*["']?([\w./-]+)""")
+_BLOCK_REACH = 240
 
 
 def _commanded_in_gazebo(text: str, joints: Collection[str]) -> str | None:

@@ -765,6 +765,28 @@ def test_a_short_unnamed_chain_carrying_a_camera_is_a_head() -> None:
     assert "a pan/tilt unit" in result.body.limbs[0].why
 
 
+def test_an_unnamed_chain_swinging_a_camera_on_a_shoulder_and_an_elbow_is_an_arm() -> None:
+    """A pan, then two hinges about parallel axes 1.5 m apart, the camera at the far end: it
+    carries the camera round an object, where a pan/tilt unit turns it where it is."""
+    robot = (
+        '<robot name="scanner"><link name="world"/><link name="l1"/><link name="l2"/>'
+        '<link name="l3"/><link name="kinect"/>'
+        + builders.joint_xml("j0", "continuous", "world", "l1", "0 0 3.5", "0 0 1")
+        + builders.joint_xml("j1", "continuous", "l1", "l2", "0 0.1 0.1", "0 1 0")
+        + builders.joint_xml("j2", "continuous", "l2", "l3", "0 0.1 1.5", "0 1 0")
+        + '<joint name="mount" type="fixed"><parent link="l3"/><child link="kinect"/>'
+        '<origin xyz="0 0 1.8"/></joint>'
+        '<gazebo reference="kinect"><sensor name="depth" type="depth"/></gazebo></robot>'
+    )
+    result = identify_urdf(robot)
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["arm"]
+    assert result.structure == "Manipulator"
+    # The same chain whose two hinges turn about one line is a pan/tilt unit's.
+    one_line = robot.replace('"0 0.1 1.5"', '"0 0 0"')
+    assert identify_urdf(one_line).structure == "Pan/Tilt Unit"
+
+
 def pan_and_tilt(name: str) -> str:
     """A pan joint, a tilt joint and a camera fixed at the tip, bolted to the world."""
     return (

@@ -365,12 +365,22 @@ def test_the_waypoints_of_a_moveit_scripts_cartesian_path_are_no_navigation(scri
     assert "Waypoint" in shipped("Mobile Manipulator", "waypoints = [start, dock]")
 
 
+def test_moveit_inside_another_word_leaves_a_files_waypoints_read() -> None:
+    assert "Waypoint" in shipped("UGV", "waypoint_combo->removeItem(i); moveItem(waypoints)")
+
+
 def test_a_mavros_plugin_configuration_lists_set_points_and_missions_nobody_sends() -> None:
     # MAVROS' stock configuration names every plugin, used or not.
     config = "conn:\n  heartbeat_rate: 1.0\nmission:\n  pull_after_gcs: true\nsetpoint_position:\n"
     assert shipped("UAV", config) == {}
     # A script that streams set-points on its topic sends goals.
     assert "Waypoint" in shipped("UAV", config, "pub('mavros/setpoint_position/local', pose)")
+    # The stock configuration names no navigation a base runs either.
+    assert shipped("UGV", f"{config}move_base: {{}}") == {}
+    # A launch file that sets MAVROS' heartbeat as a parameter is no stock configuration.
+    bringup = "<param name='/mavros/conn/heartbeat_rate' value='1.0'/><node pkg='move_base'/>"
+    assert "Waypoint" in shipped("UGV", bringup)
+    assert "Waypoint" in shipped("UAV", f"{bringup}<node pkg='drone' type='offboard_node.py'/>")
 
 
 def test_the_first_file_that_shows_a_control_is_named() -> None:
@@ -722,34 +732,19 @@ def test_a_body_that_shows_no_way_of_travelling_drives_when_its_packages_are_a_g
     )
 
 
-@pytest.mark.parametrize("name", ["mid360_sensor_kit", "roof_sensor_rack", "lidar_backpack"])
+@pytest.mark.parametrize(
+    "name", ["mid360_sensor_kit", "roof_sensor_rack", "multisensor_boxes", "lidar_backpack"]
+)
 def test_a_rig_of_sensors_a_vehicle_carries_is_not_that_vehicle(tmp_path: Path, name: str) -> None:
     result = identify(described(tmp_path, one_link(name), "<node pkg='ackermann_steering'/>"))
     assert result.structure == "Other"
-    assert (
-        f"a rig of sensors by its name: robot name {name} (its packages' vehicle is not read as it)"
-        in (result.evidence)
-    )
+    said = f"a rig of sensors by its name: robot name {name} (no vehicle its packages name is "
+    assert f"{said}read as it)" in result.evidence
 
 
 def test_a_body_named_for_a_kit_of_no_sensors_is_still_its_packages_vehicle(tmp_path: Path) -> None:
-    for name in ("starter_kit", "sensorless_rover", "rigid_body"):
+    for name in ("starter_kit", "sensorless_rover", "rigid_body", "drilling_rig", "leg_test_rig"):
         assert read_with(tmp_path / name, one_link(name), "ugv_base: {}")[0] == "UGV", name
-
-
-def test_a_gazebo_models_manifest_says_what_a_hull_drawn_alone_is(tmp_path: Path) -> None:
-    path = described(tmp_path, one_link("ben"), "<node pkg='robot_state_publisher'/>")
-    manifest = path.parent.parent / "models" / "ben" / "model.config"
-    manifest.parent.mkdir(parents=True)
-    manifest.write_text(
-        "<model><name>ben</name><!-- a drone's --><description>A survey ASV</description></model>"
-    )
-    result = identify(path)
-    assert result.structure == "Surface Vessel"
-    assert (
-        "in water at the surface by its packages alone: "
-        "package craft_description: craft_description/models/ben/model.config (ASV)"
-    ) in result.evidence
 
 
 def test_ground_words_inside_longer_words_say_nothing(tmp_path: Path) -> None:
@@ -970,12 +965,13 @@ def test_a_walker_whose_packages_ship_a_gait_is_still_walked(tmp_path: Path, gai
 def test_a_controller_of_a_legs_joint_its_own_takes_joint_commands_beside_the_gait(
     tmp_path: Path, controller: str
 ) -> None:
-    bringup = f"FL_calf_position_controller: {{{controller}, joint: FL_calf}}\ngait: trot"
+    # Written as ROS 1 configurations write it: the controller's name, its type, its joint.
+    bringup = f"FL_calf_position_controller:\n  {controller}\n  joint: FL_calf\ngait: trot"
     found = controls_of(described(tmp_path, quadruped(), bringup))
     assert found == {
         "Walking": "urdf: likely, not declared: 4 legs to walk on",
         "Joint": f"package craft_bringup: craft_bringup/launch/bringup.launch "
-        f"({controller.rsplit('/', 1)[-1]}): a controller of a joint's own on joints of 4 legs",
+        f"({controller.removeprefix('type: ')}): a controller of a joint's own on joints of 4 legs",
     }
 
 
@@ -986,9 +982,12 @@ def test_a_controller_of_a_legs_joint_its_own_takes_joint_commands_beside_the_ga
         f"{JOINT_CONTROLLERS}\ngait: trot",
         "legs: {type: position_controllers/JointGroupPositionController, joints: [FL_calf]}\n"
         "gait: trot",
-        # A joint's own controller, of no leg (a head's).
+        # A joint's own controller, of no leg (a head's), beside the legs' group controller.
         "neck_position_controller: {type: effort_controllers/JointPositionController, "
-        "joint: neck}\ngait: trot",
+        f"joint: neck}}\n{JOINT_CONTROLLERS}\ngait: trot",
+        # A group controller named like a joint's own.
+        "joint_position_controller: {type: forward_command_controller/ForwardCommandController, "
+        "joints: [FL_hip, FL_thigh]}\ngait: trot",
     ],
 )
 def test_a_gaits_group_controller_or_a_joints_own_of_no_leg_gives_no_joint_commands(

@@ -22,11 +22,10 @@ imported or parsed as code.
 * Files are read in the order the robot's packages are likeliest: the description's, those
   named for the robot, those whose ``package.xml`` names one of them, then the rest; so a bound
   spent on a vendored library leaves the robot's own packages read. Text files
-  (:data:`TEXT_SUFFIXES`, a Gazebo model's manifest :data:`MODEL_MANIFEST`, and files with no
-  suffix in ``scripts`` and ``nodes`` folders, ROS 1 nodes) are opened only when they are
-  regular files (a link, a FIFO or a device is passed by, never opened), at most
-  :data:`MAX_FILE_BYTES` of each, :data:`MAX_FILES` files and :data:`MAX_TOTAL_BYTES` in all;
-  XML comments are removed.
+  (:data:`TEXT_SUFFIXES`, and files with no suffix in ``scripts`` and ``nodes`` folders, ROS 1
+  nodes) are opened only when they are regular files (a link, a FIFO or a device is passed by,
+  never opened), at most :data:`MAX_FILE_BYTES` of each, :data:`MAX_FILES` files and
+  :data:`MAX_TOTAL_BYTES` in all; XML comments are removed.
 * The *robot's packages*: the description's and, for a package named ``ROBOT_description``,
   every package named ``ROBOT_...`` (the ROS convention: ``jackal_navigation`` is the Jackal's
   though it never names ``jackal_description``); then every package that *uses* one of them
@@ -84,8 +83,6 @@ MAX_MANIFEST_BYTES = 64 * 1024
 SHOWN_PACKAGES = 12
 
 TEXT_SUFFIXES = (".launch", ".xml", ".yaml", ".yml", ".py", ".cpp", ".cc", ".hpp", ".sh")
-# A Gazebo model's manifest (XML): its name and the author's description of what it is.
-MODEL_MANIFEST = "model.config"
 # Folders whose files with no suffix are scripts (ROS 1 nodes: scripts/teleop, nodes/walker).
 SCRIPT_FOLDERS = frozenset({"scripts", "nodes", "bin"})
 # Folders no package ships controls in: builds, installs, logs, caches and tests.
@@ -400,8 +397,7 @@ def _texts(folder: str, files: list[str]) -> list[str]:
     return [
         name
         for name in sorted(files)
-        if name != "package.xml"
-        and (name.endswith(TEXT_SUFFIXES) or name == MODEL_MANIFEST or (script and "." not in name))
+        if name != "package.xml" and (name.endswith(TEXT_SUFFIXES) or (script and "." not in name))
     ]
 
 
@@ -446,7 +442,7 @@ def _read_into(owner: _Package, path: str, top: str, names: set[str], budget: _B
     budget.files += 1
     budget.total += len(data)
     text = _text(data)
-    if path.endswith((".launch", ".xml", MODEL_MANIFEST)):
+    if path.endswith((".launch", ".xml")):
         text = _uncommented(text)
     else:
         text = _without_comment_lines(text, "//" if path.endswith(_CPP_SUFFIXES) else "#")
