@@ -191,13 +191,20 @@ def _hardware_kept(found: list[tuple[Detection, str]]) -> list[tuple[Detection, 
 
 def under_water(detections: Iterable[Detection]) -> tuple[Detection, ...]:
     """The sensors of a body below the water: a barometer there reads the water's pressure,
-    which is its depth (a depth gauge, kind ``pressure``, as the labelled sets count it)."""
+    which is its depth (a depth gauge, kind ``pressure``, as the labelled sets count it); so
+    does a range finder its author names for depth (``depth_sensor``, a Bar30's link): a
+    simulator fakes the gauge with a ray, the device is the gauge."""
     return tuple(
         Detection("pressure", d.name, d.source, d.link, d.vertical_samples)
         if d.kind == "barometer"
+        or (d.kind == "ir_range" and _DEPTH_GAUGE.search(f"{d.name} {d.link or ''}"))
         else d
         for d in detections
     )
+
+
+# A depth gauge by its name: depth, or Blue Robotics' Bar30 and Bar02 pressure sensors.
+_DEPTH_GAUGE = re.compile(r"depth|(^|[^a-z])bar(30|02)([^0-9]|$)", re.IGNORECASE)
 
 
 def _plugin_link(plugin: PluginTag, declared: Container[str | None]) -> str | None:

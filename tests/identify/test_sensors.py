@@ -613,6 +613,28 @@ def test_a_barometer_on_a_body_below_the_water_is_a_depth_gauge() -> None:
     assert found(builders.surface_vessel()) == {"barometer": 1}
 
 
+# A depth gauge a simulator fakes with one ray cast down, as student AUVs write it.
+ONE_RAY = (
+    "<ray><scan><horizontal><samples>1</samples><min_angle>0</min_angle>"
+    "<max_angle>0</max_angle></horizontal></scan><range><min>0.5</min><max>30</max></range></ray>"
+)
+
+
+@pytest.mark.parametrize(("link", "name"), [("base_link", "depth_sensor"), ("bar30_link", "ray")])
+def test_a_range_finder_named_for_depth_below_the_water_is_a_depth_gauge(
+    link: str, name: str
+) -> None:
+    def found(robot: builders.RobotText) -> dict[str, int]:
+        if link != robot.root:
+            robot.fixed(robot.root, link)
+        robot.add(builders.gazebo_sensor(link, "ray", name, ONE_RAY))
+        return {s.kind: s.count for s in identify_urdf(robot.text()).sensors}
+
+    assert found(builders.underwater_vehicle()) == {"pressure": 1}
+    # In the air or on the ground, one ray is a range finder, whatever its name.
+    assert found(builders.ugv()) == {"ir_range": 1}
+
+
 def rgbd_on_sibling_frames(mount_on_root: bool = False) -> builders.RobotText:
     """A Kinect declared as two Gazebo sensors, a colour stream on its rgb frame and a depth
     stream on its depth frame, both fixed to the camera's own link (or straight to the root)."""
