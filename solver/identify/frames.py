@@ -14,7 +14,9 @@ a driver that stamps its data with that frame (``frame_id: imu_link`` in its con
   (``imu_frame``, ``camera_frame_id``; not a node's ``target_frame``, where it looks a
   transform up), the value naming the link whole or by its last ``/`` segment (and a link the
   description writes under a namespace of its own, ``rc_12345/front_lidar``, by its last
-  segment, when no other link ends so: ``$(var rc)/front_lidar``); or when it names
+  segment, when no other link ends so: ``$(var rc)/front_lidar``); or lists several, one per
+  device (a key ending ``frame_id`` or ``frame_ids`` and a list on one line: a cleaning
+  robot's ``cliff_frame_id[4] = {...}``); or when it names
   a camera driver (``camera_name``) from which the driver builds its frames (realsense2_camera,
   orbbec_camera): the link of that name, else ``NAME_link``, else the first link whose name
   begins ``NAME_`` and reads as a camera. A file that launches a depth camera's driver
@@ -40,7 +42,8 @@ a driver that stamps its data with that frame (``frame_id: imu_link`` in its con
 * The description's own word wins: no device is added for a kind the description declares
   (its camera's optical frame is that camera), nor on a device that carries a sensor the
   description declares.
-* Bounds: the patterns are linear in the texts; each link's rule is found once; a device's
+* Bounds: the patterns are linear in the texts; a list's first 64 items are read; each
+  link's rule is found once; a device's
   body is at most three joints up and its camera frames at most three down; at most 64 camera
   names are looked up among the links; one body's frames are told apart at eight places at
   most.
@@ -102,6 +105,20 @@ _ASSIGNED = re.compile(
     + _VALUE,
     re.IGNORECASE,
 )  # fmt: skip
+# A list of frame ids a driver is given, one per device of a kind (a cleaning robot's driver:
+# `std::string cliff_frame_id[4] = {"left_cliff_sensor_link", ...}`, `bumper_frame_ids:
+# [left_bumper_link, right_bumper_link]`): a key ending in `frame_id` or `frame_ids`, any word
+# before it but a consumer's (`target_`, `base_`, `odom_`, `map_`, `world_`, `global_`,
+# `fixed_`, `parent_`, `child_`: frames a node looks transforms up in), then a brace or bracket
+# list on one line; its items are read as frame ids.
+_LISTED = re.compile(
+    r"(?<![A-Za-z0-9_])(?!(?:target|base|odom|map|world|global|fixed|parent|child)_)"
+    r"[A-Za-z0-9_]{0,40}frame_?ids?(?:[ \t]{0,3}\[[ \t]{0,3}\d{0,4}[ \t]{0,3}\])?"
+    r"[ \t]{0,3}(?::|=)[ \t]{0,8}[{\[]([^{}\[\]\n]{0,2000})[}\]]",
+    re.IGNORECASE,
+)
+# The most items of one list read (a stranger's file may list any number).
+_MOST_LISTED = 64
 # A launch parameter or argument: <param name="frame_id" type="string" value="x"/>,
 # <arg name="imu_frame" default="x"/>.
 _PARAMETER = re.compile(
@@ -205,6 +222,11 @@ class _Naming:
         for pattern in (_ASSIGNED, _PARAMETER):
             for match in pattern.finditer(text):
                 self.note(self.link(_value(match)), f"frame id in {path}")
+        for match in _LISTED.finditer(text):
+            for item in match.group(1).split(",")[:_MOST_LISTED]:
+                value = item.strip().strip("\"'").lstrip("/")
+                if value:
+                    self.note(self.link(value), f"frame id in {path}")
         named = False
         for match in _DEVICE_NAME.finditer(text):
             named = True

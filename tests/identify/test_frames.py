@@ -96,6 +96,36 @@ def test_every_way_a_driver_is_given_its_frame_id_is_read() -> None:
     }
 
 
+# A cleaning robot drawn as frames: four cliff sensors, two light-bumper IR sensors, two
+# bumper switches, and its driver's lists of their frames.
+CLEANER = drawn(
+    *[("base_link", f"{side}_cliff_sensor_link") for side in ("left", "front_left", "right")],
+    *[("base_link", f"{side}_ir_sensor_link") for side in ("left", "right")],
+    *[("base_link", f"{side}_bumper_link") for side in ("left", "right")],
+)
+
+
+@pytest.mark.parametrize(
+    "driver",
+    [
+        'std::string cliff_frame_id[3] = {"left_cliff_sensor_link", "front_left_cliff_sensor_link",'
+        ' "right_cliff_sensor_link"};\n'
+        'std::string ir_bumper_frame_id[2] = {"left_ir_sensor_link", "right_ir_sensor_link"};\n'
+        'std::string bumper_frame_id[2] = {"left_bumper_link", "right_bumper_link"};',
+        "cliff_frame_ids: [left_cliff_sensor_link, front_left_cliff_sensor_link, "
+        "/right_cliff_sensor_link]\nir_frame_ids: ['left_ir_sensor_link', 'right_ir_sensor_link']\n"
+        "bumper_frame_ids: [left_bumper_link, right_bumper_link]",
+    ],
+)
+def test_a_list_of_frame_ids_a_driver_is_given_names_a_device_each(driver: str) -> None:
+    assert kinds(shipping(driver_cpp=driver), CLEANER) == {"ir_range": 5, "contact": 2}
+    # Without the driver's lists, bare frames are no sensors; nor with a list of the frames a
+    # node looks transforms up in.
+    assert kinds(shipping(driver_cpp="int cliff_count = 3;"), CLEANER) == {}
+    looked_up = "target_frame_ids: [left_bumper_link, right_bumper_link]"
+    assert kinds(shipping(listener_yaml=looked_up), CLEANER) == {}
+
+
 def test_a_link_written_under_a_namespace_of_its_own_is_named_by_its_last_segment() -> None:
     # The description's xacro wrote its prefix (rc_1/), the driver's launch a variable of its
     # own ($(var rc)/): the one link ending so is the frame.
