@@ -15,8 +15,8 @@ a driver that stamps its data with that frame (``frame_id: imu_link`` in its con
   transform up), the value naming the link whole or by its last ``/`` segment (and a link the
   description writes under a namespace of its own, ``rc_12345/front_lidar``, by its last
   segment, when no other link ends so: ``$(var rc)/front_lidar``); or lists several, one per
-  device (a key ending ``frame_id`` or ``frame_ids`` and a list on one line: a cleaning
-  robot's ``cliff_frame_id[4] = {...}``); or when it names
+  device (a device's word before ``frame_id`` or ``frame_ids`` and a list on one line: a
+  cleaning robot's ``cliff_frame_id[4] = {...}``); or when it names
   a camera driver (``camera_name``) from which the driver builds its frames (realsense2_camera,
   orbbec_camera): the link of that name, else ``NAME_link``, else the first link whose name
   begins ``NAME_`` and reads as a camera. A file that launches a depth camera's driver
@@ -107,13 +107,14 @@ _ASSIGNED = re.compile(
 )  # fmt: skip
 # A list of frame ids a driver is given, one per device of a kind (a cleaning robot's driver:
 # `std::string cliff_frame_id[4] = {"left_cliff_sensor_link", ...}`, `bumper_frame_ids:
-# [left_bumper_link, right_bumper_link]`): a key ending in `frame_id` or `frame_ids`, any word
-# before it but a consumer's (`target_`, `base_`, `odom_`, `map_`, `world_`, `global_`,
-# `fixed_`, `parent_`, `child_`: frames a node looks transforms up in), then a brace or bracket
-# list on one line; its items are read as frame ids.
+# [left_bumper_link, right_bumper_link]`): a key whose word before `frame_id` or `frame_ids`
+# is a device's (a node's `source_frame_ids`, `ignore_frame_ids` or `self.frame_ids` are frames
+# it looks up), then a brace or bracket list on one line; its items are read as frame ids.
 _LISTED = re.compile(
-    r"(?<![A-Za-z0-9_])(?!(?:target|base|odom|map|world|global|fixed|parent|child)_)"
-    r"[A-Za-z0-9_]{0,40}frame_?ids?(?:[ \t]{0,3}\[[ \t]{0,3}\d{0,4}[ \t]{0,3}\])?"
+    r"(?<![A-Za-z0-9_])(?:[A-Za-z0-9]{1,20}_){0,3}"
+    r"(?:imu|gps|gnss|navsat|laser|lidar|scan|camera|cam|sensor|depth|color|rgb|sonar|dvl|range"
+    r"|cliff|ir|bumper|contact|ultrasonic|tof|proximity)s?_frame_?ids?"
+    r"(?:[ \t]{0,3}\[[ \t]{0,3}\d{0,4}[ \t]{0,3}\])?"
     r"[ \t]{0,3}(?::|=)[ \t]{0,8}[{\[]([^{}\[\]\n]{0,2000})[}\]]",
     re.IGNORECASE,
 )

@@ -196,15 +196,26 @@ def under_water(detections: Iterable[Detection]) -> tuple[Detection, ...]:
     simulator fakes the gauge with a ray, the device is the gauge."""
     return tuple(
         Detection("pressure", d.name, d.source, d.link, d.vertical_samples)
-        if d.kind == "barometer"
-        or (d.kind == "ir_range" and _DEPTH_GAUGE.search(f"{d.name} {d.link or ''}"))
+        if d.kind == "barometer" or (d.kind == "ir_range" and _named_for_depth(d))
         else d
         for d in detections
     )
 
 
-# A depth gauge by its name: depth, or Blue Robotics' Bar30 and Bar02 pressure sensors.
-_DEPTH_GAUGE = re.compile(r"depth|(^|[^a-z])bar(30|02)([^0-9]|$)", re.IGNORECASE)
+def _named_for_depth(detection: Detection) -> bool:
+    """The device's own name or its link says a depth gauge (not a file a frame was found in:
+    a frame's detection names its file after the link, ``imu_link (frame id in ...)``)."""
+    name = detection.name.split(" (", 1)[0]
+    return any(_DEPTH_GAUGE.search(text) for text in (name, detection.link or ""))
+
+
+# A depth gauge by its name, a word of its own: `depth`, `depth_sensor`, `depth_gauge_link`
+# (not `depth_camera_link`, `depth_sounder`, `max_depth_range`), or Blue Robotics' Bar30 and
+# Bar02 pressure sensors.
+_DEPTH_GAUGE = re.compile(
+    r"(^|[^a-z])depth(_?(sensor|gauge|link|frame))*([^a-z_]|$)|(^|[^a-z])bar_?(30|02)([^0-9]|$)",
+    re.IGNORECASE,
+)
 
 
 def _plugin_link(plugin: PluginTag, declared: Container[str | None]) -> str | None:

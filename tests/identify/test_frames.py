@@ -122,8 +122,20 @@ def test_a_list_of_frame_ids_a_driver_is_given_names_a_device_each(driver: str) 
     # Without the driver's lists, bare frames are no sensors; nor with a list of the frames a
     # node looks transforms up in.
     assert kinds(shipping(driver_cpp="int cliff_count = 3;"), CLEANER) == {}
-    looked_up = "target_frame_ids: [left_bumper_link, right_bumper_link]"
-    assert kinds(shipping(listener_yaml=looked_up), CLEANER) == {}
+    for looked_up in (
+        "target_frame_ids: [left_bumper_link, right_bumper_link]",
+        "source_frame_ids: [left_cliff_sensor_link]",
+        "ignore_frame_ids: [left_bumper_link]",
+        "self.frame_ids = ['base_link', 'left_cliff_sensor_link', 'left_bumper_link']",
+        "keyframe_ids: [left_bumper_link]",
+    ):
+        assert kinds(shipping(listener_yaml=looked_up), CLEANER) == {}, looked_up
+
+
+def test_a_cars_front_or_rear_bumper_is_part_of_its_body_no_switch() -> None:
+    car = drawn(("base_link", "front_bumper_link"), ("base_link", "left_bumper"))
+    named = shipping(radar_yaml="frame_id: front_bumper_link", bumper_yaml="frame_id: left_bumper")
+    assert kinds(named, car) == {"contact": 1}
 
 
 def test_a_link_written_under_a_namespace_of_its_own_is_named_by_its_last_segment() -> None:

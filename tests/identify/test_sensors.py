@@ -635,6 +635,24 @@ def test_a_range_finder_named_for_depth_below_the_water_is_a_depth_gauge(
     assert found(builders.ugv()) == {"ir_range": 1}
 
 
+@pytest.mark.parametrize(
+    ("link", "name"),
+    [
+        ("base_link", "depth_sounder"),
+        ("depth_camera_link", "ray"),
+        ("base_link", "max_depth_range"),
+    ],
+)
+def test_a_range_finder_whose_name_only_holds_depth_stays_a_range_finder(
+    link: str, name: str
+) -> None:
+    robot = builders.underwater_vehicle()
+    if link != robot.root:
+        robot.fixed(robot.root, link)
+    robot.add(builders.gazebo_sensor(link, "ray", name, ONE_RAY))
+    assert {s.kind: s.count for s in identify_urdf(robot.text()).sensors} == {"ir_range": 1}
+
+
 def rgbd_on_sibling_frames(mount_on_root: bool = False) -> builders.RobotText:
     """A Kinect declared as two Gazebo sensors, a colour stream on its rgb frame and a depth
     stream on its depth frame, both fixed to the camera's own link (or straight to the root)."""
