@@ -133,6 +133,7 @@ _RIG_NAME = re.compile(
     r"|(^|[_/\d-])backpacks?([_/\d-]|$)",
     re.IGNORECASE,
 )
+
 # A robot name that says a craft below the surface, read as whole words (``rov_model``,
 # ``my_auv``, ``submarine``; not ``rover``), an ROV's or AUV's with a usual prefix too
 # (``AROV``, ``bluerov2``, ``openrov``; not ``petrov`` or ``improv``).
