@@ -82,11 +82,12 @@ _MOST_PLACES = 8
 _MAX_CAMERA_NAMES = 64
 # A frame id a driver is given: `frame_id`, `frame`, `frame_name`, or one of a device's
 # (`camera_frame_id`, `imu_frame`), a word of its own; not a consumer's (`target_frame`,
-# `base_frame`: what a node looks a transform up in).
-_KEY_WORD = (
-    r"(?:(?:imu|gps|gnss|navsat|laser|lidar|scan|camera|cam|sensor|depth|color|rgb|sonar|dvl|"
-    r"range)_)?frame(?:_?id|_?name)?"
+# `base_frame`: what a node looks a transform up in). The devices' words, shared with a list of
+# frame ids (`_LISTED`).
+_DEVICE_WORDS = (
+    "imu|gps|gnss|navsat|laser|lidar|scan|camera|cam|sensor|depth|color|rgb|sonar|dvl|range"
 )
+_KEY_WORD = r"(?:(?:" + _DEVICE_WORDS + r")_)?frame(?:_?id|_?name)?"
 _KEY = r"(?<![A-Za-z0-9_])" + _KEY_WORD
 # A value: a link's name (which may begin with a digit: `3d_camera_link`), after an optional
 # `$(arg ns)/` or `/`, up to 200 characters.
@@ -112,8 +113,7 @@ _ASSIGNED = re.compile(
 # it looks up), then a brace or bracket list on one line; its items are read as frame ids.
 _LISTED = re.compile(
     r"(?<![A-Za-z0-9_])(?:[A-Za-z0-9]{1,20}_){0,3}"
-    r"(?:imu|gps|gnss|navsat|laser|lidar|scan|camera|cam|sensor|depth|color|rgb|sonar|dvl|range"
-    r"|cliff|ir|bumper|contact|ultrasonic|tof|proximity)s?_frame_?ids?"
+    r"(?:" + _DEVICE_WORDS + r"|cliff|ir|bumper|contact|ultrasonic|tof|proximity)s?_frame_?ids?"
     r"(?:[ \t]{0,3}\[[ \t]{0,3}\d{0,4}[ \t]{0,3}\])?"
     r"[ \t]{0,3}(?::|=)[ \t]{0,8}[{\[]([^{}\[\]\n]{0,2000})[}\]]",
     re.IGNORECASE,

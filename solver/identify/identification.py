@@ -201,6 +201,7 @@ def identify_urdf(
     shipped = (
         () if packages is None else controls_from_workspace(packages, profile, reading.structure)
     )
+    legs = _legs(body)
     controls = [
         controls_from_description(
             body,
@@ -211,11 +212,9 @@ def identify_urdf(
             srdf_source=Path(srdf_file).name,
             guess_navigation=packages is None or not packages.complete,
             named=_named(packages, body),
-            leg_controllers=_joint_controllers(packages, profile.gait, _legs(body)),
+            leg_controllers=_joint_controllers(packages, profile.gait, legs),
             leg_joint_controllers=(
-                None
-                if packages is None
-                else per_joint_controllers(packages, profile.gait, _legs(body))
+                None if packages is None else per_joint_controllers(packages, profile.gait, legs)
             ),
             rotor_controllers=_joint_controllers(packages, profile.flight, body.rotors),
         ),

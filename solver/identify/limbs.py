@@ -1999,17 +1999,21 @@ def _turns_in_place(tree: JointTree, limb: Limb, tips: list[str]) -> bool:
     reach = max(
         (distance(base, tree.poses.place(f.child)) for f in fingers if f is not None), default=0
     )
-    turning = [
-        joint
-        for name in limb.joints
-        if (joint := tree.urdf.joint(name)) is not None
-        and joint.type in _TURNING
-        and math.hypot(*tree.poses.axis(joint)) > _SAME_PLACE
-    ]
+    turning = _about_an_axis(tree, [j for name in limb.joints if (j := tree.urdf.joint(name))])
     return all(
         _axes_apart(tree, one, other) <= reach + _SAME_PLACE
         for one, other in combinations(turning, 2)
     )
+
+
+def _about_an_axis(tree: JointTree, joints: list[Joint]) -> list[Joint]:
+    """The ``joints`` that turn about an axis (a hinge about a file's ``0 0 0`` turns nothing):
+    those whose axes :func:`_axes_apart` compares."""
+    return [
+        joint
+        for joint in joints
+        if joint.type in _TURNING and math.hypot(*tree.poses.axis(joint)) > _SAME_PLACE
+    ]
 
 
 def _axes_apart(tree: JointTree, one: Joint, other: Joint) -> float:
@@ -2235,11 +2239,7 @@ def _shoulder_and_elbow(tree: JointTree, chain: list[Joint]) -> bool:
     shoulder and elbow do: the chain carries what it holds across space (a camera an arm moves
     round an object), where a pan/tilt unit turns it where it is, about axes that cross or
     are one (a pan, then a tilt square to it). A hinge about no axis is not compared."""
-    turning = [
-        joint
-        for joint in chain
-        if joint.type in _TURNING and math.hypot(*tree.poses.axis(joint)) > _SAME_PLACE
-    ]
+    turning = _about_an_axis(tree, chain)
     return any(
         parallel(tree.poses.axis(one), tree.poses.axis(other))
         and _axes_apart(tree, one, other) > _SAME_AXIS_GAP

@@ -166,16 +166,14 @@ def per_joint_controllers(
     too: what was read says it."""
     if rule is None or rule.per_joint is None:
         return None
-    names = {
-        tail: name
-        for name in joints
-        for tail in (name.rsplit("/", 1)[-1], *_prefixed(name.rsplit("/", 1)[-1]))
-    }
-    if not names:
+    # Each joint by its name after a namespace, and without a prefix a launch file adds.
+    tails = {name.rsplit("/", 1)[-1] for name in joints}
+    words = tails.union(*map(_prefixed, tails))
+    if not words:
         return None
     for shipped in workspace.files:
         for found in rule.per_joint.compiled.finditer(shipped.text):
-            if _nearest_joint(shipped.text, found.start(), found.end()) in names:
+            if _nearest_joint(shipped.text, found.start(), found.end()) in words:
                 return _shown_file(shipped.package, shipped.path, found.group(0))
     return None
 
