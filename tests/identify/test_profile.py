@@ -142,6 +142,22 @@ def test_a_navigation_need_for_nothing_that_moves_a_body_is_a_located_fault() ->
     assert "wheels" in fault.message
 
 
+@pytest.mark.parametrize(
+    ("written", "path"),
+    [
+        ("unless: 'compute_?cartesian", "motion.packages[1].unless"),
+        ("per_joint: '", "motion.gait.per_joint"),
+    ],
+)
+def test_a_pattern_re2_cannot_run_in_the_new_keys_is_a_located_fault(
+    written: str, path: str
+) -> None:
+    fault = the_fault(SHIPPED.replace(written, written.replace("'", "'(?<=x)", 1), 1))
+    assert fault.location.path == path
+    assert fault.location.line is not None
+    assert "invalid regular expression" in fault.message
+
+
 def test_a_gait_may_name_the_controllers_of_a_joints_own_and_a_flight_need_not() -> None:
     gait, flight = load_profile().gait, load_profile().flight
     assert gait is not None
