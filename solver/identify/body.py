@@ -64,8 +64,9 @@ from solver.identify.limbs import (
     wrist,
 )
 from solver.identify.placement import MACHINE_TRAVEL, Placement, placement
+from solver.identify.pose import cross, distance, dot, minus, parallel
 from solver.identify.profile import GROUND, Profile
-from solver.identify.readers.urdf import Urdf
+from solver.identify.readers.urdf import Joint, Urdf
 from solver.identify.roles import Role
 from solver.identify.tree import JointTree
 from solver.identify.vehicle import (
@@ -631,6 +632,7 @@ def _commanded(tree: JointTree, parts: _Parts, track_names: tuple[str, ...]) -> 
     ]
     joints = [name for limb in limbs for name in limb.joints]
     joints += _placed_slides(tree, parts, vehicle)
+    joints += _swung_mounts(tree, parts, vehicle)
     carrying = _above(tree, [limb.joints[0] for limb in limbs])
     return joints + [name for name in parts.trunk if name in carrying]
 
@@ -665,6 +667,56 @@ def _placed_slides(tree: JointTree, parts: _Parts, vehicle: bool) -> list[str]:
         and "position" in tree.urdf.interfaces(name)
         and abs(tree.poses.axis(joint)[2]) < _UPRIGHT
     ]
+
+
+def _swung_mounts(tree: JointTree, parts: _Parts, vehicle: bool) -> list[str]:
+    """Mounts' hinges that swing the wheels they carry, all on one side of the hinge, about an
+    axis along the wheels' own (a track's flipper with the wheel at its end, a turret's pitch
+    with a shooter's friction wheels): set one joint at a time, they do not move the vehicle as
+    a steering hinge (its axis across the wheel's) or a drive joint does. A rocker's pivot lies
+    between its wheels (it carries them over the ground); a hinge on a wheel's own line spins
+    with it; a flying or swimming body's (``vehicle``) move its rotors or thrusters; a hinge
+    nothing drives is left out by the caller."""
+    if vehicle:
+        return []
+    wheels = [joint for name in parts.of("wheel") if (joint := tree.urdf.joint(name))]
+    return [
+        name
+        for limb in parts.limbs
+        if limb.kind == "mount"
+        for name in limb.joints
+        if (joint := tree.urdf.joint(name)) is not None
+        and (joint.type == "revolute" or "position" in tree.urdf.interfaces(name))
+        and _swings(tree, joint, [wheel for wheel in wheels if _carries(tree, joint, wheel)])
+    ]
+
+
+def _carries(tree: JointTree, hinge: Joint, wheel: Joint) -> bool:
+    """``hinge`` is above ``wheel`` in the tree."""
+    above = tree.urdf.parent_joint(wheel.parent)
+    while above is not None and above.name != hinge.name:
+        above = tree.urdf.parent_joint(above.parent)
+    return above is not None
+
+
+def _swings(tree: JointTree, hinge: Joint, wheels: list[Joint]) -> bool:
+    """The wheels ``hinge`` carries turn about axes parallel to its own, away from it
+    (:data:`_SWUNG`), all on one side of it (not a rocker's pivot between them)."""
+    axis = tree.poses.axis(hinge)
+    arms = [
+        cross(axis, minus(tree.poses.place(wheel.child), tree.poses.place(hinge.child)))
+        for wheel in wheels
+        if parallel(axis, tree.poses.axis(wheel))
+    ]
+    return (
+        bool(arms)
+        and all(distance(arm, (0.0, 0.0, 0.0)) > _SWUNG for arm in arms)
+        and all(dot(arm, arms[0]) > 0 for arm in arms)
+    )
+
+
+# How far (m) a wheel's centre is from a hinge's axis for the hinge to swing it, not spin it.
+_SWUNG = 0.01
 
 
 # How upright a slide's axis is (its cosine to the vertical) to hold a wheel to the ground.

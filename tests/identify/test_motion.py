@@ -597,6 +597,43 @@ def test_slides_that_carry_wheels_set_to_a_position_are_joint_control() -> None:
     assert set(controls(rover)) == {"Driving"}
 
 
+def swinging(wheels_at: tuple[str, ...], driven: bool = True) -> RobotText:
+    """A base on four drive wheels with a hinge on each side about its width (y) carrying
+    wheels at ``wheels_at`` (their places along x from the hinge), a transmission on each hinge
+    when ``driven``."""
+    robot = RobotText("crawler")
+    for corner, y in (("fl", "0.2"), ("fr", "-0.2"), ("rl", "0.2"), ("rr", "-0.2")):
+        x = "0.3" if corner[0] == "f" else "-0.3"
+        robot.add(builders.joint_xml(f"{corner}_wheel_joint", "continuous", robot.root,
+                                     f"{corner}_wheel", f"{x} {y} 0", "0 1 0"))  # fmt: skip
+        robot.links.append(f"{corner}_wheel")
+    for side, y in (("left", "0.25"), ("right", "-0.25")):
+        robot.add(builders.joint_xml(f"{side}_hinge", "revolute", robot.root, f"{side}_arm",
+                                     f"0.3 {y} 0", "0 1 0"))  # fmt: skip
+        robot.links.append(f"{side}_arm")
+        for i, x in enumerate(wheels_at):
+            robot.add(builders.joint_xml(f"{side}_end_wheel_{i}_joint", "continuous",
+                                         f"{side}_arm", f"{side}_end_wheel_{i}", f"{x} 0 0",
+                                         "0 1 0"))  # fmt: skip
+            robot.links.append(f"{side}_end_wheel_{i}")
+        if driven:
+            robot.add(builders.transmission(f"{side}_hinge"))
+    robot.add(builders.model_plugin("drive", "libgazebo_ros_diff_drive.so"))
+    return robot
+
+
+def test_driven_hinges_that_swing_a_wheel_at_their_end_are_joint_control() -> None:
+    # A flipper raising the wheel at its end, each set one by one.
+    assert set(controls(swinging(("0.3",)))) == {"Driving", "Joint"}
+    assert controls(swinging(("0.3",)))["Joint"] == "urdf: 2 limb joint(s) a controller drives"
+    # No controller on them: nothing commands them (a suspension's arm).
+    assert set(controls(swinging(("0.3",), driven=False))) == {"Driving"}
+    # A rocker's pivot between its wheels carries them over the ground: the vehicle's motion.
+    assert set(controls(swinging(("0.3", "-0.3")))) == {"Driving"}
+    # A hinge on the wheel's own line spins with it.
+    assert set(controls(swinging(("0",)))) == {"Driving"}
+
+
 def test_slides_that_hold_wheels_up_or_move_rotors_are_the_vehicles_own() -> None:
     # Each wheel on an upright slide (a suspension, even one held to a position).
     rover = RobotText("sprung")
