@@ -206,7 +206,7 @@ _STRUCTURE_KEYS = {"name", "when", "expect", "kinematic_types", "confidence", "d
 # Degrees in a full turn: a field of view written wider says nothing (degrees where radians
 # belong).
 _FULL_TURN = 360
-_ELEMENT_KEYS = {"kind", "types", "match", "max_rays", "wider_than"}
+_ELEMENT_KEYS = {"kind", "types", "match", "max_rays", "max_range", "wider_than"}
 _PLUGIN_RULE_KEYS = {"kind", "match"}
 _TOPIC_SENSOR_KEYS = {"kind", "types", "match", "direction"}
 _TOPIC_CONTROL_KEYS = {"control", "types", "match", "direction"}
@@ -357,21 +357,28 @@ class SensorRule:
     # camera sees more than a half-turn; a fisheye lens less): one that says none, or more
     # than a full turn (degrees written where radians belong), is not.
     wider_than: int | None = None
+    # Ray sensors only: reaching no farther than this many metres (a proximity ranger's
+    # metre; a lidar sees tens): one that says no range is not.
+    max_range: int | None = None
 
     def accepts(
         self,
         kind_or_type: str | None,
         text: str,
         direction: str | None = None,
+        *,
         rays: int | None = None,
         fov: float | None = None,
+        reach: float | None = None,
     ) -> bool:
         """This rule takes a sensor of ``kind_or_type`` whose names are ``text`` (a topic's
-        ``direction``; a ray sensor's ``rays``; its horizontal field of view ``fov`` in
-        radians, when it says one)."""
+        ``direction``; a ray sensor's ``rays`` and farthest ``reach`` in metres; its horizontal
+        field of view ``fov`` in radians, when it says one)."""
         if self.types and kind_or_type not in self.types:
             return False
         if self.max_rays is not None and (rays is None or rays > self.max_rays):
+            return False
+        if self.max_range is not None and (reach is None or reach > self.max_range):
             return False
         if self.wider_than is not None and not (
             fov is not None and self.wider_than < math.degrees(fov) <= _FULL_TURN
@@ -847,8 +854,12 @@ def _sensor_rules(
         if wider is not None and not 0 <= wider < _FULL_TURN:
             reader.fault((*item, "wider_than"), f"wider_than must be 0 to 359 degrees, got {wider}")
             wider = None
+        reach = reader.integer((*item, "max_range"), "metres", required=False)
+        if reach is not None and reach < 1:
+            reader.fault((*item, "max_range"), f"max_range must be 1 metre or more, got {reach}")
+            reach = None
         location = reader.document.location(item)
-        found.append(SensorRule(kind, allowed, match, direction, location, rays, wider))
+        found.append(SensorRule(kind, allowed, match, direction, location, rays, wider, reach))
     return tuple(found)
 
 

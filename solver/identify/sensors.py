@@ -516,11 +516,12 @@ def element_kind(tag: SensorTag, profile: Profile) -> str:
     kind = tag.type or "unknown"  # a URDF <sensor> with no kind element: told by its name
     rays = _rays(tag)
     fov = tag.horizontal_fov
+    reach = tag.max_range
     for rule in profile.element_rules:
-        if rule.accepts(kind, tag.device_text, rays=rays, fov=fov):
+        if rule.accepts(kind, tag.device_text, rays=rays, fov=fov, reach=reach):
             return rule.kind
     for rule in profile.element_rules:  # topic names last
-        if rule.match is not None and rule.accepts(kind, tag.text, rays=rays, fov=fov):
+        if rule.match is not None and rule.accepts(kind, tag.text, rays=rays, fov=fov, reach=reach):
             return rule.kind
     return kind
 

@@ -134,6 +134,13 @@ def test_a_field_of_view_no_camera_can_have_is_a_located_fault(degrees: int) -> 
     assert f"0 to 359 degrees, got {degrees}" in fault.message
 
 
+def test_a_range_no_ranger_can_have_is_a_located_fault() -> None:
+    text = SHIPPED.replace("max_range: 1}", "max_range: 0}")
+    fault = the_fault(text)
+    assert fault.location.path.endswith(".max_range")
+    assert "max_range must be 1 metre or more, got 0" in fault.message
+
+
 def test_a_navigation_need_for_nothing_that_moves_a_body_is_a_located_fault() -> None:
     text = SHIPPED.replace("      wheels: [lidar, gps]\n", "      wheel: [lidar, gps]\n")
     fault = the_fault(text)

@@ -490,6 +490,16 @@ def test_a_one_ray_range_sensor_is_no_lidar_and_four_of_them_stay_four() -> None
     assert found == [("ir_range", None, 4), ("lidar", "LIDAR", 1)]
 
 
+def test_a_fan_of_rays_that_reaches_a_metre_at_most_is_a_proximity_ranger_not_a_lidar() -> None:
+    # A ring of proximity sensors a simulator fakes with one full turn of rays half a metre
+    # long; the same fan reaching twelve metres, or saying no range, is a lidar.
+    assert kinds(ray("laser_link", "hero_laser", 360, 6.28, 0.5)) == [("ir_range", None, 1)]
+    assert kinds(ray("laser_link", "hero_laser", 360, 6.28, 1.0)) == [("ir_range", None, 1)]
+    assert kinds(ray("laser_link", "hero_laser", 360, 6.28, 12.0)) == [("lidar", "LIDAR", 1)]
+    fan = "<ray><scan><horizontal><samples>360</samples></horizontal></scan></ray>"
+    assert kinds(builders.gazebo_sensor("laser", "ray", "laser", fan)) == [("lidar", "LIDAR", 1)]
+
+
 def test_rays_fanned_over_less_than_twenty_degrees_are_one_beam_a_range_finder() -> None:
     # A single-beam laser written as two samples 0.02 degrees apart measures one distance, and
     # so does a narrow laser ranger's fan of three rays over 3.6 degrees; rays fanned over 30
