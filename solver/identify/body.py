@@ -32,6 +32,7 @@ Not here: deciding the structure (:mod:`solver.identify.classifier`).
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable
 from dataclasses import dataclass, field, replace
 
@@ -163,6 +164,9 @@ class Body:
     # to a base's sensor head: no pan/tilt unit alone).
     driven_by: str = ""
     finger_motions: int = 0
+    # A link named as a gripper or an end effector that no joint of the body moves: held on
+    # fixed joints to the body that carries it (a drone's boom ending in a claw).
+    rigid_tool: str = ""
     # Every moving joint's role and the evidence that decided it.
     roles: tuple[Role, ...] = field(default=(), compare=False)
 
@@ -280,6 +284,7 @@ class Body:
             "tracks": len(self.tracks),
             "rotors": len(self.rotors),
             "arms": self.count("arm"),
+            "tools": self.count("arm") + int(bool(self.rigid_tool)),
             "legs": self.count("leg"),
             "heads": self.count("head"),
             "fingers": len(self.fingers),
@@ -328,6 +333,18 @@ class Body:
             lines.append(f"flight named in: {_names(self.flight_hints)}")
         if self.shipped_as == "flight":
             lines.append(f"a flying body by its packages alone: {self.shipped_by}")
+        return lines
+
+    def _tools(self) -> list[str]:
+        """The evidence of what the body holds: a rigid tool, fingers and grippers."""
+        lines = []
+        if self.rigid_tool:
+            lines.append(f"a rigid tool: {shown(self.rigid_tool)}, held on fixed joints")
+        if self.fingers:
+            lines.append(
+                f"{len(self.fingers)} finger/gripper joint chain(s) on "
+                f"{self.grippers} hand(s)/gripper(s): {_names(self.fingers)}"
+            )
         return lines
 
     def _water(self) -> list[str]:
@@ -405,11 +422,7 @@ class Body:
         if self.trunk:
             lines.append(f"trunk joint(s) below the limbs: {_names(self.trunk)}")
         lines += [limb.describe() for limb in self.limbs]
-        if self.fingers:
-            lines.append(
-                f"{len(self.fingers)} finger/gripper joint chain(s) on "
-                f"{self.grippers} hand(s)/gripper(s): {_names(self.fingers)}"
-            )
+        lines += self._tools()
         if self.not_rotors:
             lines.append(
                 f"not flight: {len(self.not_rotors)} rotor-named joint(s) "
@@ -502,8 +515,34 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
         rig_name=(f"robot name {urdf.name}",) if tree.reader.named_rig else (),
         flight_hints=flight_hints(tree, parts.roles, parts.limbs),
         finger_motions=sum(1 for name in parts.grippers if (j := urdf.joint(name)) and j.actuated),
+        rigid_tool=_rigid_tool(tree),
         roles=_all_roles(tree, parts),
     )
+
+
+def _rigid_tool(tree: JointTree) -> str:
+    """The first link (document order) named as a gripper (the profile's ``gripper`` pattern)
+    or an end effector that no joint of the body moves: only fixed joints up from it to the
+    link that carries the body's moving joints (or to the root: a tree rooted at the tool). A
+    gripper on an arm is the arm's."""
+    urdf = tree.urdf
+    for link in urdf.links:
+        name = link.name
+        if "gripper" not in tree.parts_of(name) and not _END_EFFECTOR.search(name):
+            continue
+        joint = urdf.parent_joint(name)
+        while joint is not None and not joint.movable:
+            if any(child.movable for child in urdf.children(joint.parent)):
+                return name
+            joint = urdf.parent_joint(joint.parent)
+        if joint is None:
+            return name
+    return ""
+
+
+# An end effector's or a tool's frame by its name (`end_effector`, `endeffector_link`, `ee_link`,
+# `tool0`, `tcp`).
+_END_EFFECTOR = re.compile(r"end_?effector|(^|_)(ee|tcp|tool0?)(_|$)", re.IGNORECASE)
 
 
 def _rollers(tree: JointTree, roles: dict[str, Role]) -> dict[str, Role]:

@@ -101,6 +101,7 @@ FEATURES = (
     "tracks",
     "rotors",
     "arms",
+    "tools",
     "legs",
     "heads",
     "fingers",
@@ -123,6 +124,7 @@ FEATURES = (
     "serpentine",
     "head_alone",
 )
+# tools: arms, and a rigid tool (a link named as a gripper or an end effector on fixed joints).
 # thrusters / fins / casters: joints (or plugin-named links) in those roles; finger_motions: the
 # finger joints that move on their own (not mimic); marine: a body in water (thrusters, marine
 # plugins); surface: floating at the surface (a hull's buoyancy hints, a surface plugin);

@@ -109,6 +109,29 @@ def test_equal_limits_on_joints_coupled_by_mimic_are_placeholders_not_a_lock() -
     assert [locked.joint(n).movable for n in ("f1", "f2")] == [False, False]  # type: ignore[union-attr]
 
 
+def test_a_multirotor_holding_a_gripper_on_a_rigid_boom_is_an_aerial_manipulator() -> None:
+    # A boom fixed under the body ends in a claw that no joint moves: built to manipulate.
+    drone = builders.quadrotor()
+    boom = drone.fixed(drone.root, "boom")
+    drone.fixed(boom, "claw_gripper")
+    result = identify_urdf(drone.text())
+    assert result.structure == "Aerial Manipulator"
+    assert "a rigid tool: claw_gripper, held on fixed joints" in result.evidence
+    # A tree rooted at the tool's frame (a controller's reference) holds it the same way.
+    rooted = RobotText("uam", root="end_effector")
+    body = rooted.fixed(rooted.root, "vehicle")
+    for i in range(4):
+        rooted.joint(f"rotor_{i}_joint", "continuous", body, f"rotor_{i}")
+    assert identify_urdf(rooted.text()).structure == "Aerial Manipulator"
+    # A boom carrying a camera, and a gripper a wheeled base carries, are no such thing.
+    camera = builders.quadrotor()
+    camera.fixed(camera.fixed(camera.root, "boom"), "camera_link")
+    assert identify_urdf(camera.text()).structure == "UAV"
+    rover = builders.ugv()
+    rover.fixed(rover.root, "claw_gripper")
+    assert identify_urdf(rover.text()).structure == "UGV"
+
+
 def test_limits_all_equal_on_every_joint_are_a_cad_exporters_placeholders_not_a_lock() -> None:
     # An aerial manipulator exported from CAD: every joint revolute with limits 0..0.
     zero = '<axis xyz="1 0 0"/><limit lower="0" upper="0" effort="0" velocity="0"/>'
