@@ -167,6 +167,9 @@ class Body:
     # A link named as a gripper or an end effector that no joint of the body moves: held on
     # fixed joints to the body that carries it (a drone's boom ending in a claw).
     rigid_tool: str = ""
+    # A link named as a gripper in a description where nothing moves: an end effector alone
+    # whose cups or jaws no joint moves (a vacuum gripper), counted as one gripper.
+    fixed_gripper: str = ""
     # Every moving joint's role and the evidence that decided it.
     roles: tuple[Role, ...] = field(default=(), compare=False)
 
@@ -340,6 +343,10 @@ class Body:
         lines = []
         if self.rigid_tool:
             lines.append(f"a rigid tool: {shown(self.rigid_tool)}, held on fixed joints")
+        if self.fixed_gripper:
+            lines.append(
+                f"a gripper no joint moves: {shown(self.fixed_gripper)} (nothing in it moves)"
+            )
         if self.fingers:
             lines.append(
                 f"{len(self.fingers)} finger/gripper joint chain(s) on "
@@ -470,6 +477,7 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
         *listed_thrusters(tree, parts.roles),
         *fixed_thrusters(tree),
     )
+    fixed_gripper = _fixed_gripper(tree)
     return Body(
         wheels=tuple(wheels),
         rotors=tuple(parts.of("rotor")),
@@ -480,7 +488,7 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
         limbs=tuple(parts.limbs),
         trunk=tuple(parts.trunk),
         fingers=tuple(finger_tips(tree, parts.grippers)),
-        grippers=len(parts.hosts),
+        grippers=len(parts.hosts) or int(bool(fixed_gripper)),
         floating_base=parts.placement.floating,
         planar_base=parts.placement.planar,
         machine_axes=parts.placement.machine,
@@ -516,6 +524,7 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
         flight_hints=flight_hints(tree, parts.roles, parts.limbs),
         finger_motions=sum(1 for name in parts.grippers if (j := urdf.joint(name)) and j.actuated),
         rigid_tool=_rigid_tool(tree),
+        fixed_gripper=fixed_gripper,
         roles=_all_roles(tree, parts),
     )
 
@@ -538,6 +547,16 @@ def _rigid_tool(tree: JointTree) -> str:
         if joint is None:
             return name
     return ""
+
+
+def _fixed_gripper(tree: JointTree) -> str:
+    """The first link named as a gripper (the profile's ``gripper`` pattern: ``suction``,
+    ``claw``, ``jaw``) in a description where no joint moves: the end effector is all there is."""
+    if any(joint.movable for joint in tree.urdf.joints):
+        return ""
+    return next(
+        (link.name for link in tree.urdf.links if "gripper" in tree.parts_of(link.name)), ""
+    )
 
 
 # An end effector's or a tool's frame by its name (`end_effector`, `endeffector_link`, `ee_link`,

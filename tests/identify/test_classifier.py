@@ -132,6 +132,25 @@ def test_a_multirotor_holding_a_gripper_on_a_rigid_boom_is_an_aerial_manipulator
     assert identify_urdf(rover.text()).structure == "UGV"
 
 
+def test_a_gripper_nothing_in_which_moves_is_a_gripper_alone() -> None:
+    # A vacuum gripper: four suction cups on fixed joints, the end effector all there is.
+    vacuum = RobotText("vgc10")
+    plate = vacuum.fixed(vacuum.root, "suction")
+    for i in range(1, 5):
+        vacuum.fixed(plate, f"suction{i}")
+    result = identify_urdf(vacuum.text())
+    assert result.structure == "Gripper"
+    assert "a gripper no joint moves: suction (nothing in it moves)" in result.evidence
+    # A tool of no gripper's name is none (a screwdriver's shank), nor is a named cup where a
+    # joint moves (there the moving parts say what the body is).
+    driver = RobotText("screwdriver")
+    driver.fixed(driver.root, "shank")
+    assert identify_urdf(driver.text()).structure == "Other"
+    turned = RobotText("turned")
+    turned.fixed(turned.chain(turned.root, ["wrist_roll"]), "suction_cup")
+    assert identify_urdf(turned.text()).structure != "Gripper"
+
+
 def test_limits_all_equal_on_every_joint_are_a_cad_exporters_placeholders_not_a_lock() -> None:
     # An aerial manipulator exported from CAD: every joint revolute with limits 0..0.
     zero = '<axis xyz="1 0 0"/><limit lower="0" upper="0" effort="0" velocity="0"/>'
