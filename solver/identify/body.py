@@ -729,37 +729,37 @@ def _placed_slides(tree: JointTree, parts: _Parts, vehicle: bool) -> list[str]:
 
 def _swung_mounts(tree: JointTree, parts: _Parts, vehicle: bool) -> list[str]:
     """Mounts' hinges that swing the wheels they carry, all on one side of the hinge, about an
-    axis along the wheels' own (a track's flipper with the wheel at its end, a turret's pitch
-    with a shooter's friction wheels): set one joint at a time, they do not move the vehicle as
-    a steering hinge (its axis across the wheel's) or a drive joint does. A rocker's pivot lies
-    between its wheels (it carries them over the ground); a hinge on a wheel's own line spins
-    with it; a flying or swimming body's (``vehicle``) move its rotors or thrusters; a hinge
-    nothing drives is left out by the caller."""
+    axis along the wheels' own (a track's flipper with the wheel at its end): set one joint at
+    a time, they do not move the vehicle as a steering hinge (its axis across the wheel's) or a
+    drive joint does. A rocker's pivot lies between its wheels (it carries them over the
+    ground); a hinge on a wheel's own line spins with it; a flying or swimming body's
+    (``vehicle``) move its rotors or thrusters; a hinge nothing drives is left out by the
+    caller. Each wheel is carried by the nearest movable joint above it (one walk of the tree
+    for all, :func:`moved_by`)."""
     if vehicle:
         return []
-    wheels = [joint for name in parts.of("wheel") if (joint := tree.urdf.joint(name))]
+    known: dict[str, str | None] = {}
+    carried: dict[str, list[Joint]] = {}
+    for name in parts.of("wheel"):
+        wheel = tree.urdf.joint(name)
+        if wheel is not None and (hinge := moved_by(tree.urdf, wheel.parent, known)) is not None:
+            carried.setdefault(hinge, []).append(wheel)
     return [
         name
         for limb in parts.limbs
         if limb.kind == "mount"
         for name in limb.joints
-        if (joint := tree.urdf.joint(name)) is not None
+        if name in carried
+        and (joint := tree.urdf.joint(name)) is not None
         and (joint.type == "revolute" or "position" in tree.urdf.interfaces(name))
-        and _swings(tree, joint, [wheel for wheel in wheels if _carries(tree, joint, wheel)])
+        and _swings(tree, joint, carried[name])
     ]
 
 
-def _carries(tree: JointTree, hinge: Joint, wheel: Joint) -> bool:
-    """``hinge`` is above ``wheel`` in the tree."""
-    above = tree.urdf.parent_joint(wheel.parent)
-    while above is not None and above.name != hinge.name:
-        above = tree.urdf.parent_joint(above.parent)
-    return above is not None
-
-
 def _swings(tree: JointTree, hinge: Joint, wheels: list[Joint]) -> bool:
-    """The wheels ``hinge`` carries turn about axes parallel to its own, away from it
-    (:data:`_SWUNG`), all on one side of it (not a rocker's pivot between them)."""
+    """The wheels ``hinge`` carries (it is the nearest movable joint above each) turn about
+    axes parallel to its own, away from it (:data:`_SWUNG`), all on one side of it (not a
+    rocker's pivot between them)."""
     axis = tree.poses.axis(hinge)
     arms = [
         cross(axis, minus(tree.poses.place(wheel.child), tree.poses.place(hinge.child)))
