@@ -65,6 +65,17 @@ def test_chains_of_arm_named_modules_that_end_in_a_foot_are_legs() -> None:
     assert identify_urdf(modular_walker("TOOL").text()).structure == "Torso"
 
 
+def test_six_legs_on_wheeled_feet_are_a_hexapod_with_doubt_not_a_quadruped() -> None:
+    # Each of six legs ends in a driven wheel: the body rolls and steps, its legs are six.
+    robot = RobotText("leg_wheel")
+    for i in range(1, 7):
+        foot = robot.chain("base_link", [f"leg{i}_hip", f"leg{i}_thigh", f"leg{i}_knee"])
+        robot.joint(f"leg{i}_wheel_joint", "continuous", foot, f"leg{i}_wheel")
+    result = identify_urdf(robot.text())
+    assert result.structure == "Hexapod"
+    assert result.confidence < identify_urdf(modular_walker("FOOT").text()).confidence
+
+
 def test_unnamed_legs_on_the_pelvis_below_named_arms_make_a_humanoid() -> None:
     robot = RobotText("abbreviated", root="pelvis")
     for side in ("L", "R"):
