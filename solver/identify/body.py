@@ -32,8 +32,9 @@ Not here: deciding the structure (:mod:`solver.identify.classifier`).
 
 from __future__ import annotations
 
+import itertools
 import re
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field, replace
 
 from solver.identify.actuation import joint_roles, with_role
@@ -58,6 +59,7 @@ from solver.identify.limbs import (
     lone_leg,
     meeting_tips,
     moved_by,
+    nearest_above,
     parallel_robot,
     pendulum,
     spine,
@@ -164,11 +166,12 @@ class Body:
     # to a base's sensor head: no pan/tilt unit alone).
     driven_by: str = ""
     finger_motions: int = 0
-    # A link named as a gripper or an end effector that no joint of the body moves: held on
+    # On a flying body, a link the profile's `tool` pattern names that no joint moves: held on
     # fixed joints to the body that carries it (a drone's boom ending in a claw).
     rigid_tool: str = ""
-    # A link named as a gripper in a description where nothing moves: an end effector alone
-    # whose cups or jaws no joint moves (a vacuum gripper), counted as one gripper.
+    # Links the profile's `tool` pattern names (two or more) in a description where nothing
+    # moves: an end effector alone whose cups or jaws no joint moves (a vacuum gripper), counted
+    # as one gripper.
     fixed_gripper: str = ""
     # Every moving joint's role and the evidence that decided it.
     roles: tuple[Role, ...] = field(default=(), compare=False)
@@ -478,7 +481,7 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
         *fixed_thrusters(tree),
     )
     fixed_gripper = _fixed_gripper(tree)
-    return Body(
+    body = Body(
         wheels=tuple(wheels),
         rotors=tuple(parts.of("rotor")),
         tracks=track_names,
@@ -523,45 +526,71 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
         rig_name=(f"robot name {urdf.name}",) if tree.reader.named_rig else (),
         flight_hints=flight_hints(tree, parts.roles, parts.limbs),
         finger_motions=sum(1 for name in parts.grippers if (j := urdf.joint(name)) and j.actuated),
-        rigid_tool=_rigid_tool(tree),
         fixed_gripper=fixed_gripper,
         roles=_all_roles(tree, parts),
     )
+    # A flying body's rigid tool (a boom ending in a claw) makes it an aerial manipulator; on
+    # anything else such a link is its arm's or its hand's, and not read.
+    return replace(body, rigid_tool=_rigid_tool(tree)) if body.flying else body
 
 
 def _rigid_tool(tree: JointTree) -> str:
-    """The first link (document order) named as a gripper (the profile's ``gripper`` pattern)
-    or an end effector that no joint of the body moves: only fixed joints up from it to the
-    link that carries the body's moving joints (or to the root: a tree rooted at the tool). A
-    gripper on an arm is the arm's."""
+    """The first link (document order) of :func:`_tool_links` held on fixed joints only, up
+    from it to a link that carries a moving joint (the body) or to the root (a tree rooted at
+    the tool's frame). Read on a flying body only (the caller): on an arm or a hand such a link
+    is the arm's or the hand's. One walk up the tree for all links (:func:`_held`)."""
     urdf = tree.urdf
-    for link in urdf.links:
-        name = link.name
-        if "gripper" not in tree.parts_of(name) and not _END_EFFECTOR.search(name):
-            continue
-        joint = urdf.parent_joint(name)
-        while joint is not None and not joint.movable:
-            if any(child.movable for child in urdf.children(joint.parent)):
-                return name
-            joint = urdf.parent_joint(joint.parent)
-        if joint is None:
-            return name
-    return ""
+    carriers = {joint.parent for joint in urdf.joints if joint.movable}
+    known: dict[str, bool] = {}
+    return next((name for name in _tool_links(tree) if _held(urdf, name, carriers, known)), "")
+
+
+def _held(urdf: Urdf, link: str, carriers: set[str], known: dict[str, bool]) -> bool:
+    """Only fixed joints lead up from ``link`` to one of ``carriers`` or to the root; every
+    link walked is remembered in ``known``, so many links cost one walk of the tree at most."""
+    walked = []
+    current = link
+    while current not in known:
+        walked.append(current)
+        joint = urdf.parent_joint(current)
+        if joint is None or joint.movable or joint.parent in carriers:
+            found = joint is None or not joint.movable
+            break
+        current = joint.parent
+    else:
+        found = known[current]
+    for name in walked:
+        known[name] = found
+    return found
 
 
 def _fixed_gripper(tree: JointTree) -> str:
-    """The first link named as a gripper (the profile's ``gripper`` pattern: ``suction``,
-    ``claw``, ``jaw``) in a description where no joint moves: the end effector is all there is."""
+    """The first of two or more links of :func:`_tool_links` (a vacuum gripper's cups, a
+    gripper's jaws) in a description where no joint moves: the end effector is all there is.
+    One such link is no gripper (a kit's `gripper_coupling`, an arm drawn rigid)."""
     if any(joint.movable for joint in tree.urdf.joints):
         return ""
-    return next(
-        (link.name for link in tree.urdf.links if "gripper" in tree.parts_of(link.name)), ""
-    )
+    tools = list(itertools.islice(_tool_links(tree), 2))
+    return tools[0] if len(tools) == 2 else ""
 
 
-# An end effector's or a tool's frame by its name (`end_effector`, `endeffector_link`, `ee_link`,
-# `tool0`, `tcp`).
-_END_EFFECTOR = re.compile(r"end_?effector|(^|_)(ee|tcp|tool0?)(_|$)", re.IGNORECASE)
+def _tool_links(tree: JointTree) -> Iterator[str]:
+    """The links the profile's ``tool`` pattern names (a gripper, a claw, a suction cup, an end
+    effector), in document order, but for a mount's (`gripper_camera_mount`) and a link the
+    sensor frame rules read (`end_effector_cam`): no tool itself."""
+    frames = tree.profile.frame_rules
+    for link in tree.urdf.links:
+        name = link.name
+        if (
+            "tool" in tree.parts_of(name)
+            and not _MOUNT.search(name)
+            and not any(rule.accepts(None, name) for rule in frames)
+        ):
+            yield name
+
+
+# A link that holds a tool or a sensor, named so: no tool itself.
+_MOUNT = re.compile(r"mount|holder|bracket", re.IGNORECASE)
 
 
 def _rollers(tree: JointTree, roles: dict[str, Role]) -> dict[str, Role]:
@@ -692,7 +721,7 @@ def _commanded(tree: JointTree, parts: _Parts, track_names: tuple[str, ...]) -> 
     joints += _placed_slides(tree, parts, vehicle)
     joints += _swung_mounts(tree, parts, vehicle)
     carrying = _above(tree, [limb.joints[0] for limb in limbs])
-    return joints + [name for name in parts.trunk if name in carrying]
+    return list(dict.fromkeys(joints + [name for name in parts.trunk if name in carrying]))
 
 
 def _vehicle(tree: JointTree, parts: _Parts) -> bool:
@@ -728,49 +757,74 @@ def _placed_slides(tree: JointTree, parts: _Parts, vehicle: bool) -> list[str]:
 
 
 def _swung_mounts(tree: JointTree, parts: _Parts, vehicle: bool) -> list[str]:
-    """Mounts' hinges that swing the wheels they carry, all on one side of the hinge, about an
-    axis along the wheels' own (a track's flipper with the wheel at its end): set one joint at
-    a time, they do not move the vehicle as a steering hinge (its axis across the wheel's) or a
-    drive joint does. A rocker's pivot lies between its wheels (it carries them over the
-    ground); a hinge on a wheel's own line spins with it; a flying or swimming body's
-    (``vehicle``) move its rotors or thrusters; a hinge nothing drives is left out by the
-    caller. Each wheel is carried by the nearest movable joint above it (one walk of the tree
-    for all, :func:`moved_by`)."""
+    """Mounts' driven hinges that swing the wheels they carry, all on one side of the hinge,
+    about an axis along the wheels' own (a track's flipper with the wheel at its end, on a
+    spring or not): set one joint at a time, they do not move the vehicle as a steering hinge
+    (its axis across the wheel's) or a drive joint does. A rocker's pivot lies between its
+    front wheel and its bogie; a hinge on a wheel's own line spins with it; a flying or
+    swimming body's (``vehicle``) move its rotors or thrusters. Each wheel is carried by the
+    nearest driven joint above it (a transmission or ``ros2_control`` interface: a passive
+    spring or bogie between is looked through); each driven joint that carries a wheel is a
+    point its own nearest driven joint carries too (a driven bogie under a rocker). One walk of
+    the tree for all (:func:`nearest_above`)."""
     if vehicle:
         return []
+    urdf = tree.urdf
+    driven = set(urdf.controlled_joints)
     known: dict[str, str | None] = {}
-    carried: dict[str, list[Joint]] = {}
+
+    def carrier(link: str) -> str | None:
+        return nearest_above(urdf, link, known, lambda joint: joint.name in driven)
+
+    wheels: dict[str, list[Joint]] = {}
+    pivots: dict[str, list[Joint]] = {}
+    marked: set[str] = set()
     for name in parts.of("wheel"):
-        wheel = tree.urdf.joint(name)
-        if wheel is not None and (hinge := moved_by(tree.urdf, wheel.parent, known)) is not None:
-            carried.setdefault(hinge, []).append(wheel)
+        wheel = urdf.joint(name)
+        hinge = None if wheel is None else carrier(wheel.parent)
+        if wheel is not None and hinge is not None:
+            wheels.setdefault(hinge, []).append(wheel)
+        while hinge is not None and hinge not in marked:  # each driven joint once
+            marked.add(hinge)
+            joint = urdf.joint(hinge)
+            above = None if joint is None else carrier(joint.parent)
+            if joint is not None and above is not None:
+                pivots.setdefault(above, []).append(joint)
+            hinge = above
     return [
         name
         for limb in parts.limbs
         if limb.kind == "mount"
         for name in limb.joints
-        if name in carried
-        and (joint := tree.urdf.joint(name)) is not None
-        and (joint.type == "revolute" or "position" in tree.urdf.interfaces(name))
-        and _swings(tree, joint, carried[name])
+        if name in wheels
+        and (joint := urdf.joint(name)) is not None
+        and (
+            joint.type == "revolute"
+            or (joint.type == "continuous" and "position" in urdf.interfaces(name))
+        )
+        and _swings(tree, joint, wheels[name], pivots.get(name, []))
     ]
 
 
-def _swings(tree: JointTree, hinge: Joint, wheels: list[Joint]) -> bool:
-    """The wheels ``hinge`` carries (it is the nearest movable joint above each) turn about
-    axes parallel to its own, away from it (:data:`_SWUNG`), all on one side of it (not a
-    rocker's pivot between them)."""
+def _swings(tree: JointTree, hinge: Joint, wheels: list[Joint], pivots: list[Joint]) -> bool:
+    """Some of the ``wheels`` ``hinge`` carries turn about axes parallel to its own, and those
+    and the driven ``pivots`` it carries lie away from its axis (:data:`_SWUNG`), all on one
+    side of it: every two within a quarter turn of each other about the axis (not a rocker
+    between its front wheel and its bogie). More than :data:`_MOST_SWUNG` is no flipper."""
     axis = tree.poses.axis(hinge)
-    arms = [
-        cross(axis, minus(tree.poses.place(wheel.child), tree.poses.place(hinge.child)))
-        for wheel in wheels
-        if parallel(axis, tree.poses.axis(wheel))
-    ]
-    return (
-        bool(arms)
-        and all(distance(arm, (0.0, 0.0, 0.0)) > _SWUNG for arm in arms)
-        and all(dot(arm, arms[0]) > 0 for arm in arms)
+    origin = tree.poses.place(hinge.child)
+    carried = [wheel for wheel in wheels if parallel(axis, tree.poses.axis(wheel))]
+    points = [*carried, *pivots]
+    if not carried or len(points) > _MOST_SWUNG:
+        return False
+    arms = [cross(axis, minus(tree.poses.place(point.child), origin)) for point in points]
+    return all(distance(arm, (0.0, 0.0, 0.0)) > _SWUNG for arm in arms) and all(
+        dot(one, other) > 0 for one in arms for other in arms
     )
+
+
+# The most wheels and pivots a swinging hinge carries (a flipper's one to three wheels).
+_MOST_SWUNG = 8
 
 
 # How far (m) a wheel's centre is from a hinge's axis for the hinge to swing it, not spin it.

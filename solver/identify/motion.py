@@ -286,8 +286,10 @@ def _limbs(
 
 
 def _end_effector_alone(body: Body) -> bool:
-    """A gripper or a hand with nothing else: no arm, leg, spine, mobile base or vehicle."""
-    return bool(body.grippers or body.fingers) and not (
+    """A gripper or a hand with nothing else: no arm, leg, spine, mobile base or vehicle. Not a
+    gripper nothing in which moves (:attr:`Body.fixed_gripper`): no joint of it takes a command
+    (a vacuum gripper's suction is switched, not read from the description)."""
+    return bool(body.fingers or (body.grippers and not body.fixed_gripper)) and not (
         body.limbs or body.mobile_base or body.flying or body.marine
     )
 

@@ -72,6 +72,7 @@ PARTS = (
     "fin",
     "wing",
     "caster",
+    "tool",
 )
 # drive/track/flight/thruster/lift: plugins that move the robot (a joint they name takes their
 # role); marine: plugins of a body in water; surface: hints of a hull floating at the surface
@@ -124,7 +125,7 @@ FEATURES = (
     "serpentine",
     "head_alone",
 )
-# tools: arms, and a rigid tool (a link named as a gripper or an end effector on fixed joints).
+# tools: arms, and a flying body's rigid tool (a link the `tool` pattern names, on fixed joints).
 # thrusters / fins / casters: joints (or plugin-named links) in those roles; finger_motions: the
 # finger joints that move on their own (not mimic); marine: a body in water (thrusters, marine
 # plugins); surface: floating at the surface (a hull's buoyancy hints, a surface plugin);
@@ -360,7 +361,7 @@ class SensorRule:
     # than a full turn (degrees written where radians belong), is not.
     wider_than: int | None = None
     # Ray sensors only: reaching no farther than this many metres (a proximity ranger's
-    # metre; a lidar sees tens): one that says no range is not.
+    # metre; a lidar sees tens): one that says no range, or one of zero or less, is not.
     max_range: int | None = None
 
     def accepts(
@@ -380,8 +381,8 @@ class SensorRule:
             return False
         if self.max_rays is not None and (rays is None or rays > self.max_rays):
             return False
-        if self.max_range is not None and (reach is None or reach > self.max_range):
-            return False
+        if self.max_range is not None and (reach is None or not 0 < reach <= self.max_range):
+            return False  # a range of zero or less, which no simulator casts, says nothing
         if self.wider_than is not None and not (
             fov is not None and self.wider_than < math.degrees(fov) <= _FULL_TURN
         ):

@@ -123,13 +123,56 @@ def test_a_multirotor_holding_a_gripper_on_a_rigid_boom_is_an_aerial_manipulator
     for i in range(4):
         rooted.joint(f"rotor_{i}_joint", "continuous", body, f"rotor_{i}")
     assert identify_urdf(rooted.text()).structure == "Aerial Manipulator"
+    # On a body a floating joint places in the world, the tool is held up to the body.
+    placed = RobotText("placed", root="world")
+    placed.joint("pose", "floating", "world", "body", "")
+    for i in range(4):
+        placed.joint(f"rotor_{i}_joint", "continuous", "body", f"rotor_{i}")
+    placed.fixed(placed.fixed("body", "boom"), "uav/eef_link")
+    assert identify_urdf(placed.text()).structure == "Aerial Manipulator"
     # A boom carrying a camera, and a gripper a wheeled base carries, are no such thing.
     camera = builders.quadrotor()
     camera.fixed(camera.fixed(camera.root, "boom"), "camera_link")
     assert identify_urdf(camera.text()).structure == "UAV"
     rover = builders.ugv()
     rover.fixed(rover.root, "claw_gripper")
-    assert identify_urdf(rover.text()).structure == "UGV"
+    result = identify_urdf(rover.text())
+    assert result.structure == "UGV"
+    assert not any("rigid tool" in line for line in result.evidence)
+
+
+@pytest.mark.parametrize(
+    "name",
+    ["hand_launch", "palm", "jaw", "tool0", "tcp", "ee", "camera_tool_frame",
+     "gripper_camera_mount", "gripper_mount", "end_effector_cam", "arm_1", "payload_hook"],
+)  # fmt: skip
+def test_a_multirotors_frames_and_mounts_of_no_tool_leave_it_a_uav(name: str) -> None:
+    drone = builders.quadrotor()
+    drone.fixed(drone.root, name)
+    assert identify_urdf(drone.text()).structure == "UAV"
+
+
+@pytest.mark.parametrize("shape", ["chain", "star"])
+def test_a_rigid_tool_is_found_in_one_walk_of_many_fixed_tool_links(shape: str) -> None:
+    # 20,000 links named as grippers, fixed one under the next (or all on one hub) on a
+    # quadrotor: each link is walked up once, not once per link below it (which took minutes).
+    parts = ['<robot name="r"><link name="base_link"/><link name="hub"/>',
+             '<joint name="hub_joint" type="fixed"><parent link="base_link"/>'
+             '<child link="hub"/></joint>']  # fmt: skip
+    for i in range(4):
+        parts.append(
+            f'<link name="rotor_{i}"/><joint name="rotor_{i}_joint" type="continuous">'
+            f'<parent link="base_link"/><child link="rotor_{i}"/></joint>'
+        )
+    for i in range(20_000):
+        parent = "hub" if shape == "star" or i == 0 else f"gripper_{i - 1}"
+        parts.append(
+            f'<link name="gripper_{i}"/><joint name="g{i}" type="fixed">'
+            f'<parent link="{parent}"/><child link="gripper_{i}"/></joint>'
+        )
+    result = identify_urdf("".join(parts) + "</robot>")
+    assert result.body is not None
+    assert result.body.rigid_tool == "gripper_0"
 
 
 def test_a_gripper_nothing_in_which_moves_is_a_gripper_alone() -> None:
@@ -141,11 +184,19 @@ def test_a_gripper_nothing_in_which_moves_is_a_gripper_alone() -> None:
     result = identify_urdf(vacuum.text())
     assert result.structure == "Gripper"
     assert "a gripper no joint moves: suction (nothing in it moves)" in result.evidence
+    # No joint of it takes a command: its suction is switched, which no description says.
+    assert result.motion_controls == ()
     # A tool of no gripper's name is none (a screwdriver's shank), nor is a named cup where a
     # joint moves (there the moving parts say what the body is).
     driver = RobotText("screwdriver")
     driver.fixed(driver.root, "shank")
     assert identify_urdf(driver.text()).structure == "Other"
+    # Nor is one link of a tool's name (a sensor kit's coupling), a hand's camera, a palm tree.
+    for names in (["ft300", "gripper_coupling"], ["hand_camera_link"], ["palm_tree"]):
+        kit = RobotText("kit")
+        for name in names:
+            kit.fixed(kit.root, name)
+        assert identify_urdf(kit.text()).structure == "Other"
     turned = RobotText("turned")
     turned.fixed(turned.chain(turned.root, ["wrist_roll"]), "suction_cup")
     assert identify_urdf(turned.text()).structure != "Gripper"

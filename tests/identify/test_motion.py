@@ -634,6 +634,126 @@ def test_driven_hinges_that_swing_a_wheel_at_their_end_are_joint_control() -> No
     assert set(controls(swinging(("0",)))) == {"Driving"}
 
 
+def carried(
+    places: tuple[str, ...],
+    *,
+    axis: str = "0 1 0",
+    kind: str = "revolute",
+    base: str = "drive",
+) -> RobotText:
+    """A base on four drive wheels (``base`` ``drive``: a drive plugin; ``flying``: four rotors
+    instead) with one driven joint of ``kind`` about ``axis`` (a position transmission) carrying
+    a wheel (axis y) at each of ``places`` (xyz from the joint)."""
+    robot = RobotText("carrier")
+    if base == "flying":
+        for i in range(4):
+            robot.joint(f"rotor_{i}_joint", "continuous", robot.root, f"rotor_{i}")
+    else:
+        builders.wheeled_base(robot, 4)
+        robot.add(builders.model_plugin("drive", "libgazebo_ros_diff_drive.so"))
+    robot.add(builders.joint_xml("hinge", kind, robot.root, "arm", "0.3 0.25 0", axis))
+    robot.links.append("arm")
+    for i, place in enumerate(places):
+        robot.add(builders.joint_xml(f"end_wheel_{i}_joint", "continuous", "arm",
+                                     f"end_wheel_{i}", place, "0 1 0"))  # fmt: skip
+        robot.links.append(f"end_wheel_{i}")
+    robot.add(builders.transmission("hinge"))
+    return robot
+
+
+def test_a_hinge_swings_wheels_only_about_their_axis_away_from_it_and_on_one_side() -> None:
+    assert set(controls(carried(("0.3 0 0",)))) == {"Driving", "Joint"}
+    # A wheel 5 mm off the hinge's line turns with it, as one on the line does.
+    assert set(controls(carried(("0.005 0 0",)))) == {"Driving"}
+    # A steering hinge turns its wheel about an axis across the wheel's, and so does a hinge
+    # rolling a wheel hung below it.
+    assert set(controls(carried(("0.3 0 0",), axis="0 0 1"))) == {"Driving"}
+    assert set(controls(carried(("0 0 -0.3",), axis="1 0 0"))) == {"Driving"}
+    # Wheels at 0 and 80 degrees either way round the hinge: not all on one side of it.
+    spread = ("0.3 0 0", "0.052 0 0.295", "0.052 0 -0.295")
+    assert set(controls(carried(spread))) == {"Driving"}
+    # A body that flies moves its own parts so (a swinging landing wheel).
+    assert "Joint" not in controls(carried(("0.3 0 0",), base="flying"))
+
+
+def test_a_slide_carrying_a_wheel_is_set_to_a_position_not_swung() -> None:
+    # Set one by one (the slide's rule), not swung (a hinge's): listed once.
+    robot = carried(("0.3 0 0",), kind="prismatic")
+    assert controls(robot)["Joint"] == "urdf: 1 limb joint(s) a controller drives"
+    # Moved by velocity, it carries its wheel as a steering mount does.
+    robot.extra[-1] = builders.transmission("hinge", "VelocityJointInterface")
+    assert set(controls(robot)) == {"Driving"}
+
+
+def test_the_knees_of_legs_on_wheeled_feet_are_the_gaits_not_swinging_hinges() -> None:
+    # Each calf swings the wheel at its foot about a parallel axis, one side: a leg's knee, which
+    # the walker's gait drives, not a mount's hinge.
+    robot = RobotText("wheel_dog")
+    for corner, x, y in (
+        ("FL", 0.3, 0.2),
+        ("FR", 0.3, -0.2),
+        ("RL", -0.3, 0.2),
+        ("RR", -0.3, -0.2),
+    ):
+        links = [f"{corner}_{part}" for part in ("hip", "thigh", "calf", "wheel")]
+        places = (f"{x} {y} 0", "0 0 0", "0 0 -0.25", "0 0 -0.25")
+        axes = ("1 0 0", "0 1 0", "0 1 0", "0 1 0")
+        kinds = ("revolute", "revolute", "revolute", "continuous")
+        parent = robot.root
+        for link, place, axis, kind in zip(links, places, axes, kinds, strict=True):
+            robot.add(builders.joint_xml(f"{link}_joint", kind, parent, link, place, axis))
+            robot.add(builders.transmission(f"{link}_joint"))
+            robot.links.append(link)
+            parent = link
+    result = identify_urdf(robot.text())
+    assert result.structure == "Quadruped"
+    assert "Joint" not in {c.motion_control for c in result.motion_controls}
+
+
+def rocker_bogie(*, driven_bogies: bool) -> RobotText:
+    """A six-wheeled rover whose rocker on each side carries its front wheel and a bogie that
+    carries the middle and rear wheels, each rocker driven (and each bogie when
+    ``driven_bogies``)."""
+    robot = RobotText("rover")
+    robot.add(builders.model_plugin("drive", "libgazebo_ros_diff_drive.so"))
+    for side, y in (("left", "0.3"), ("right", "-0.3")):
+        robot.add(builders.joint_xml(f"{side}_rocker_joint", "revolute", robot.root,
+                                     f"{side}_rocker", f"0 {y} 0", "0 1 0"))  # fmt: skip
+        robot.add(builders.joint_xml(f"{side}_front_wheel_joint", "continuous",
+                                     f"{side}_rocker", f"{side}_front_wheel", "0.4 0 -0.2",
+                                     "0 1 0"))  # fmt: skip
+        robot.add(builders.joint_xml(f"{side}_bogie_joint", "revolute", f"{side}_rocker",
+                                     f"{side}_bogie", "-0.2 0 -0.1", "0 1 0"))  # fmt: skip
+        for end, x in (("middle", "0.2"), ("rear", "-0.2")):
+            robot.add(builders.joint_xml(f"{side}_{end}_wheel_joint", "continuous",
+                                         f"{side}_bogie", f"{side}_{end}_wheel", f"{x} 0 -0.1",
+                                         "0 1 0"))  # fmt: skip
+        parts = ("rocker", "front_wheel", "bogie", "middle_wheel", "rear_wheel")
+        robot.links += [f"{side}_{part}" for part in parts]
+        robot.add(builders.transmission(f"{side}_rocker_joint"))
+        if driven_bogies:
+            robot.add(builders.transmission(f"{side}_bogie_joint"))
+    return robot
+
+
+def test_a_rockers_pivot_between_its_front_wheel_and_its_bogie_swings_nothing() -> None:
+    # A passive bogie is looked through: the rocker carries three wheels on both sides of it.
+    assert set(controls(rocker_bogie(driven_bogies=False))) == {"Driving"}
+    # A driven bogie is a point the rocker carries, behind its pivot; the bogie carries a wheel
+    # either side of its own.
+    assert set(controls(rocker_bogie(driven_bogies=True))) == {"Driving"}
+
+
+def test_a_flippers_wheel_on_a_spring_is_still_the_flippers() -> None:
+    robot = carried(())
+    robot.add(builders.joint_xml("tensioner", "revolute", "arm", "tension_arm", "0.25 0 0",
+                                 "0 1 0"))  # fmt: skip
+    robot.add(builders.joint_xml("end_wheel_joint", "continuous", "tension_arm", "end_wheel",
+                                 "0.05 0 0", "0 1 0"))  # fmt: skip
+    robot.links += ["tension_arm", "end_wheel"]
+    assert controls(robot)["Joint"] == "urdf: 1 limb joint(s) a controller drives"
+
+
 def test_slides_that_hold_wheels_up_or_move_rotors_are_the_vehicles_own() -> None:
     # Each wheel on an upright slide (a suspension, even one held to a position).
     rover = RobotText("sprung")

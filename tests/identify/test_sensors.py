@@ -498,6 +498,9 @@ def test_a_fan_of_rays_that_reaches_a_metre_at_most_is_a_proximity_ranger_not_a_
     assert kinds(ray("laser_link", "hero_laser", 360, 6.28, 12.0)) == [("lidar", "LIDAR", 1)]
     fan = "<ray><scan><horizontal><samples>360</samples></horizontal></scan></ray>"
     assert kinds(builders.gazebo_sensor("laser", "ray", "laser", fan)) == [("lidar", "LIDAR", 1)]
+    # A range of zero or less, which no simulator casts, says nothing of the device.
+    assert kinds(ray("laser_link", "hokuyo", 720, 4.7, 0.0)) == [("lidar", "LIDAR", 1)]
+    assert kinds(ray("laser_link", "hokuyo", 720, 4.7, -30.0)) == [("lidar", "LIDAR", 1)]
 
 
 def test_rays_fanned_over_less_than_twenty_degrees_are_one_beam_a_range_finder() -> None:
