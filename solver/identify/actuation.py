@@ -201,7 +201,7 @@ def _driven_casters(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Rol
     for name, role in roles.items():
         driven = tree.urdf.joint(name)
         if role.role == "caster" and driven is not None and name in tree.urdf.controlled_joints:
-            if main_axis(driven.axis) == _Z_AXIS:
+            if main_axis(local_axis(driven)) == _Z_AXIS:
                 found[name] = Role(name, "steering", "a vertical swivel with a transmission")
             else:
                 found[name] = Role(name, "wheel", "a caster's wheel with a transmission")
@@ -225,7 +225,7 @@ def _steering_beside(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Ro
             joint.name not in roles
             and joint.type in ("revolute", "continuous")
             and joint.name in tree.urdf.controlled_joints
-            and main_axis(joint.axis) == _Z_AXIS
+            and main_axis(local_axis(joint)) == _Z_AXIS
             and joint.child not in tree.moving_below
             and not (tree.parts_of(joint.name) | tree.parts_of(joint.child))
             and not points_a_sensor(tree, joint)  # a spinning scanner's mount is a head

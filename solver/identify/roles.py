@@ -38,6 +38,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from functools import cached_property
 
+from solver.identify.pose import local_axis
 from solver.identify.profile import PartMatcher, Profile
 from solver.identify.readers.urdf import Joint, PluginTag, Urdf
 
@@ -464,7 +465,7 @@ class RoleReader:
                 swivel is None
                 or swivel.type not in _ROTATING
                 or not swivel.movable
-                or main_axis(swivel.axis) != _Z
+                or main_axis(local_axis(swivel)) != _Z
                 or len([j for j in self.urdf.children(wheel.parent) if j.movable]) != 1
             ):
                 continue

@@ -640,10 +640,13 @@ def carried(
     axis: str = "0 1 0",
     kind: str = "revolute",
     base: str = "drive",
+    rpy: str = "",
+    wheel_axis: str = "0 1 0",
 ) -> RobotText:
     """A base on four drive wheels (``base`` ``drive``: a drive plugin; ``flying``: four rotors
-    instead) with one driven joint of ``kind`` about ``axis`` (a position transmission) carrying
-    a wheel (axis y) at each of ``places`` (xyz from the joint)."""
+    instead) with one driven joint of ``kind`` about ``axis`` (its frame turned by ``rpy``; a
+    position transmission) carrying a wheel (axis ``wheel_axis`` in the joint's frame) at each of
+    ``places`` (xyz from the joint)."""
     robot = RobotText("carrier")
     if base == "flying":
         for i in range(4):
@@ -652,10 +655,13 @@ def carried(
         builders.wheeled_base(robot, 4)
         robot.add(builders.model_plugin("drive", "libgazebo_ros_diff_drive.so"))
     robot.add(builders.joint_xml("hinge", kind, robot.root, "arm", "0.3 0.25 0", axis))
+    if rpy:  # the hinge's frame turned on the base: its axis is written in the turned frame
+        turned = f'<origin xyz="0.3 0.25 0" rpy="{rpy}"/>'
+        robot.extra[-1] = robot.extra[-1].replace('<origin xyz="0.3 0.25 0"/>', turned)
     robot.links.append("arm")
     for i, place in enumerate(places):
         robot.add(builders.joint_xml(f"end_wheel_{i}_joint", "continuous", "arm",
-                                     f"end_wheel_{i}", place, "0 1 0"))  # fmt: skip
+                                     f"end_wheel_{i}", place, wheel_axis))  # fmt: skip
         robot.links.append(f"end_wheel_{i}")
     robot.add(builders.transmission("hinge"))
     return robot
@@ -669,6 +675,10 @@ def test_a_hinge_swings_wheels_only_about_their_axis_away_from_it_and_on_one_sid
     # rolling a wheel hung below it.
     assert set(controls(carried(("0.3 0 0",), axis="0 0 1"))) == {"Driving"}
     assert set(controls(carried(("0 0 -0.3",), axis="1 0 0"))) == {"Driving"}
+    # A hinge whose frame is turned a quarter about x, its axis written along z: its axis is
+    # the wheel's (y), not upright; it swings the wheel, it is no steering swivel.
+    turned = carried(("0.3 0 0",), axis="0 0 1", rpy="-1.5707963 0 0", wheel_axis="0 0 1")
+    assert set(controls(turned)) == {"Driving", "Joint"}
     # Wheels at 0 and 80 degrees either way round the hinge: not all on one side of it.
     spread = ("0.3 0 0", "0.052 0 0.295", "0.052 0 -0.295")
     assert set(controls(carried(spread))) == {"Driving"}
