@@ -460,6 +460,14 @@ class PackageRule:
     location: Location | None = field(default=None, compare=False)
     unless: Pattern | None = None
 
+    def find(self, text: str) -> str | None:
+        """The first text ``match`` finds in ``text``, or None (also when ``unless`` finds
+        any: the file is not read for the rule)."""
+        found = self.match.find(text)
+        if found is None or (self.unless is not None and self.unless.search(text)):
+            return None
+        return found
+
 
 @dataclass(frozen=True)
 class Profile:

@@ -116,7 +116,7 @@ def _driven(body: Body, workspace: Workspace, profile: Profile) -> Body:
     if not body.head_alone:
         return body
     for rule in profile.package_controls:
-        if rule.control == VELOCITY and (found := _first_found(workspace, rule.match)):
+        if rule.control == VELOCITY and (found := _first_found(workspace, rule)):
             return replace(body, driven_by=found)
     return body
 
@@ -256,17 +256,13 @@ _PART = re.compile(r"\w+")
 
 def _first_found(workspace: Workspace, *patterns: Pattern | PackageRule) -> str | None:
     """The first file of the robot's packages one of the ``patterns`` finds text in (a
-    package rule's ``match``, in a file its ``unless`` finds none in), as evidence shows it
-    (in the order the packages were read), or None."""
+    package rule's :meth:`~solver.identify.profile.PackageRule.find`: its ``match``, in a file
+    its ``unless`` finds none in), as evidence shows it (in the order the packages were
+    read), or None."""
     for shipped in workspace.files:
         for pattern in patterns:
-            match, unless = (
-                (pattern.match, pattern.unless)
-                if isinstance(pattern, PackageRule)
-                else (pattern, None)
-            )
-            matched = match.find(shipped.text)
-            if matched is not None and (unless is None or not unless.search(shipped.text)):
+            matched = pattern.find(shipped.text)
+            if matched is not None:
                 return _shown_file(shipped.package, shipped.path, matched)
     return None
 
