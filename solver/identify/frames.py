@@ -16,7 +16,11 @@ a driver that stamps its data with that frame (``frame_id: imu_link`` in its con
   description writes under a namespace of its own, ``rc_12345/front_lidar``, by its last
   segment, when no other link ends so: ``$(var rc)/front_lidar``); or lists several, one per
   device (a device's word before ``frame_id`` or ``frame_ids`` and a list on one line: a
-  cleaning robot's ``cliff_frame_id[4] = {...}``); or when it names
+  cleaning robot's ``cliff_frame_id[4] = {...}``); or gives a frame id no link has that two
+  numbered links or more begin (``ultrasonic_link`` for ``ultrasonic_link_0`` ...
+  ``ultrasonic_link_7``, a driver stamping each device's readings with its index), or makes
+  frame names from a quoted template with one number in it (``"US%d_link"``,
+  ``f"sonar{i}_link"``) that two links or more fit; or when it names
   a camera driver (``camera_name``) from which the driver builds its frames (realsense2_camera,
   orbbec_camera): the link of that name, else ``NAME_link``, else the first link whose name
   begins ``NAME_`` and reads as a camera. A file that launches a depth camera's driver
@@ -127,6 +131,16 @@ _PARAMETER = re.compile(
     + r"""["'][^<>]{0,120}?(?:value|default)\s{0,3}=\s{0,3}["']""" + _VALUE,
     re.IGNORECASE,
 )  # fmt: skip
+# A number in a link's name (``US3_link``, ``ultrasonic_link_7``): up to three digits between
+# non-digits.
+_NUMBER = re.compile(r"(?<![0-9])[0-9]{1,3}(?![0-9])")
+# A frame name made from a template with one number in it, quoted: C's and Python's
+# ``"US%d_link"``, ``"sonar_%02d"``, a format string's ``"sonar{}_link"`` or ``f"sonar{i}_link"``
+# (the text before and after the number, up to 80 characters each).
+_TEMPLATE = re.compile(
+    r"""["']([A-Za-z0-9_/]{0,80})(?:%0?[0-9]?[diu]|\{[A-Za-z0-9_]{0,20}(?::0?[0-9]?d)?\})"""
+    r"""([A-Za-z0-9_/]{0,80})["']"""
+)
 # A camera driver's name, from which it builds its frames (realsense2_camera, orbbec_camera:
 # camera_name:=camera_front publishes in camera_front_link, camera_front_color_optical_frame).
 _DEVICE_NAME = re.compile(
@@ -202,6 +216,7 @@ class _Naming:
         self.depth: set[str] = set()
         self.cameras: dict[str, str | None] = {}
         self.tails: dict[str, list[str]] | None = None
+        self.numbers: dict[tuple[str, str], list[str]] | None = None
 
     def link(self, value: str) -> str | None:
         """The link a frame id names (:func:`_link`), else the one link the description writes
@@ -218,11 +233,35 @@ class _Naming:
         links = self.tails.get(value.rsplit("/", 1)[-1], [])
         return links[0] if len(links) == 1 else None
 
+    def numbered(self, before: str, after: str = "") -> list[str]:
+        """The links named ``before``, a number, then ``after`` (``US3_link``), when two or
+        more are: one device's frame each, a driver stamping each device's readings with its
+        index. The index of every link's numbers is made once per description."""
+        if self.numbers is None:
+            self.numbers = {}
+            for link in self.urdf.links:
+                for number in _NUMBER.finditer(link.name):
+                    key = (link.name[: number.start()], link.name[number.end() :])
+                    self.numbers.setdefault(key, []).append(link.name)
+        links = self.numbers.get((before, after), [])
+        return links if len(links) > 1 else []
+
     def read(self, text: str, path: str) -> None:
-        """What one file names: frame ids, camera names, and a depth camera's driver's."""
+        """What one file names: frame ids (a device's own, or a frame id no link has that
+        numbered links begin with: ``ultrasonic_link`` for ``ultrasonic_link_0`` ...), frame
+        names made from a template (``"US%d_link"``), camera names, and a depth camera's
+        driver's."""
         for pattern in (_ASSIGNED, _PARAMETER):
             for match in pattern.finditer(text):
-                self.note(self.link(_value(match)), f"frame id in {path}")
+                value = _value(match)
+                link = self.link(value)
+                self.note(link, f"frame id in {path}")
+                if link is None:
+                    for each in self.numbered(f"{value}_") or self.numbered(value):
+                        self.note(each, f"numbered frame id in {path}")
+        for match in _TEMPLATE.finditer(text):
+            for each in self.numbered(match[1], match[2]):
+                self.note(each, f"frame name template in {path}")
         for match in _LISTED.finditer(text):
             for item in match.group(1).split(",")[:_MOST_LISTED]:
                 value = item.strip().strip("\"'").lstrip("/")

@@ -73,6 +73,9 @@ STREAM_REACH = 0.1
 _CAMERA_BODY = re.compile(r"camera|realsense|kinect|openni|xtion", re.IGNORECASE)
 # A side of a stereo pair in a sensor name: l, r, left or right between separators.
 _SIDE = re.compile(r"(^|[_/-])(l|r|left|right)([_/-]|$)", re.IGNORECASE)
+# A side last in a sensor name: one device's two channels (``nav_cam/left``, ``nav_cam/right``),
+# not two devices named for their sides (``left_eye_camera``).
+_LAST_SIDE = re.compile(r"[_/-](l|r|left|right)$", re.IGNORECASE)
 # The widest baseline of a stereo camera (metres): two frames farther apart are two cameras.
 _BASELINE = 0.3
 # A horizontal fan of rays narrower than this (radians, twenty degrees) points one way: a range
@@ -393,9 +396,11 @@ def _stream_of(
 
 def _stereo_pairs(found: list[Detection], urdf: Urdf) -> list[Detection]:
     """Two cameras that are one stereo camera, where the first of them was: named stereo, with
-    names that differ only by a side (``wide_stereo_l_...`` and ``wide_stereo_r_...``); or with
+    names that differ only by a side (``wide_stereo_l_...`` and ``wide_stereo_r_...``); with
     one name on two frames that differ only by a side (``duo3d_left_link`` and
-    ``duo3d_right_link``) on one rigid body, a stereo baseline apart and facing one way."""
+    ``duo3d_right_link``) on one rigid body, a stereo baseline apart and facing one way; or on
+    one frame, named for one device and then a side (``nav_cam/left`` and ``nav_cam/right``, a
+    stereo head's two channels; ``left_eye_camera`` and ``right_eye_camera`` are two eyes)."""
     pairs: dict[tuple[str, str, str], list[Detection]] = {}  # (by what, name, frame)
     for detection in found:
         if detection.kind != "camera":
@@ -404,6 +409,9 @@ def _stereo_pairs(found: list[Detection], urdf: Urdf) -> list[Detection]:
             pairs.setdefault(("name", _unsided(detection.name), ""), []).append(detection)
         elif detection.link is not None and _SIDE.search(detection.link):
             key = ("frame", detection.name, _unsided(detection.link))
+            pairs.setdefault(key, []).append(detection)
+        elif detection.link is not None and _LAST_SIDE.search(detection.name):
+            key = ("sides", _unsided(detection.name), detection.link)
             pairs.setdefault(key, []).append(detection)
     poses: list[Poses] = []  # computed once, when two frames are compared
     known: dict[str, str | None] = {}  # link -> the nearest movable joint above it

@@ -450,6 +450,37 @@ def test_a_frame_named_for_a_sonar_model_is_a_sonar() -> None:
     assert kinds(drivers, vehicle) == {"sonar": 2}
 
 
+def sonar_ring(names: list[str]) -> str:
+    """A base with a sonar frame per name, each 0.2 m farther along x."""
+    frames = "".join(placed("base_link", name, 0.2 * i) for i, name in enumerate(names))
+    return f'<robot name="r"><link name="base_link"/>{frames}</robot>'
+
+
+def test_a_frame_id_no_link_has_names_the_numbered_links_it_begins_a_device_each() -> None:
+    ring = sonar_ring([f"ultrasonic_link_{i}" for i in range(4)])
+    driver = shipping(kit_yaml="ultrasonic_sensor_node:\n  frame_id: ultrasonic_link\n")
+    assert kinds(driver, ring) == {"sonar": 4}
+    assert kinds(driver, sonar_ring(["ultrasonic_link_0", "ultrasonic_link"])) == {"sonar": 1}
+    # One numbered link is no series: the frame id names nothing.
+    assert kinds(driver, sonar_ring(["ultrasonic_link_0"])) == {}
+
+
+@pytest.mark.parametrize(
+    "code",
+    [
+        'sprintf(buffer, "sonar%d_link", i);',
+        'frame = "sonar%02d_link" % i',
+        'frame = f"sonar{i}_link"',
+        'frame = "sonar{}_link".format(i)',
+    ],
+)
+def test_a_frame_name_made_from_a_numbered_template_names_each_link_it_makes(code: str) -> None:
+    ring = sonar_ring(["sonar0_link", "sonar1_link", "sonar2_link", "bumper_link"])
+    assert kinds(shipping(driver_cpp=code), ring) == {"sonar": 3}
+    # A template no two links fit names none.
+    assert kinds(shipping(driver_cpp=code.replace("_link", "_frame")), ring) == {}
+
+
 def placed(parent: str, child: str, x: float) -> str:
     return (
         f'<link name="{child}"/><joint name="{child}_joint" type="fixed">'

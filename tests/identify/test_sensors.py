@@ -387,6 +387,29 @@ def test_a_stereo_pair_declared_as_two_cameras_is_one_stereo_camera() -> None:
     ]
 
 
+@pytest.mark.parametrize("sides", [("left", "right"), ("l", "r")])
+def test_a_devices_two_sided_channels_on_one_frame_are_one_stereo_camera(
+    sides: tuple[str, str],
+) -> None:
+    robot = builders.ugv()
+    for side in sides:
+        robot.add(builders.gazebo_sensor("head", "camera", f"nav_cam/{side}"))
+        robot.add(builders.gazebo_sensor("mast", "camera", f"loc_cam_{side}"))
+    found = [(d.kind, d.name) for d in sensors_from_urdf(parse_urdf(robot.text()), load_profile())]
+    assert found == [
+        ("stereo_camera", f"nav_cam/{sides[0]}+{sides[1]}"),
+        ("stereo_camera", f"loc_cam_{sides[0]}+{sides[1]}"),
+    ]
+
+
+def test_sided_channels_on_two_frames_no_side_names_stay_two_cameras() -> None:
+    robot = builders.ugv()
+    robot.add(builders.gazebo_sensor("head", "camera", "cam_left"))
+    robot.add(builders.gazebo_sensor("mast", "camera", "cam_right"))
+    found = [d.kind for d in sensors_from_urdf(parse_urdf(robot.text()), load_profile())]
+    assert found == ["camera", "camera"]
+
+
 def side_cameras(*, gap: float, yaw: float) -> list[tuple[str, str]]:
     """Two cameras named alike on a left and a right frame ``gap`` apart, each turned by
     ``yaw`` away from the middle."""
