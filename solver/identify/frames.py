@@ -24,12 +24,16 @@ a driver that stamps its data with that frame (``frame_id: imu_link`` in its con
   a camera driver (``camera_name``) from which the driver builds its frames (realsense2_camera,
   orbbec_camera): the link of that name, else ``NAME_link``, else the first link whose name
   begins ``NAME_`` and reads as a camera. A file that launches a depth camera's driver
-  (a node of realsense2_camera, orbbec_camera or depthai_ros_driver, or their launch files)
-  and names no camera names the link it gives the driver as its ``parent_frame`` (depthai's
-  mount), the one its ROS 1 launch file's ``camera`` argument gives, else the driver's default
-  name (``camera``, depthai's ``oak``); the camera so named is a depth camera, whatever its
-  frame's name says (a ``camera_name`` in such a file may be another driver's, and says no
-  kind).
+  (a node of realsense2_camera, orbbec_camera, depthai_ros_driver, the Kinects' and Astra's
+  drivers, or their launch files) and names no camera names the link it gives the driver as
+  its ``parent_frame`` (depthai's mount), the one its ROS 1 launch file's ``camera`` argument
+  gives, else the driver's default name (``camera``, depthai's ``oak``, kinect2_bridge's
+  ``kinect2``), else, when no link has that name, the description's one camera (its only
+  link read as a camera that hangs from no other); the camera so named is a depth camera,
+  whatever its frame's name says (a ``camera_name`` in such a file may be another driver's,
+  and says no kind). A file that launches a plain camera's driver (usb_cam, cv_camera,
+  v4l2_camera, camera_ros, raspicam_node, gscam), which publishes in a frame id of its own,
+  names the description's one camera so too.
 * The profile's ``sensors.frames`` rules tell a named link's kind by its name (``imu``,
   ``gps``, ``lidar``, ``camera``, ...); a link no rule matches (``base_link``, ``odom``) is
   no sensor.
@@ -160,6 +164,12 @@ _DEPTH_DRIVERS = {
     "realsense2_camera": "camera",
     "orbbec_camera": "camera",
     "depthai_ros_driver": "oak",
+    "openni_launch": "camera",
+    "openni2_launch": "camera",
+    "freenect_launch": "camera",
+    "astra_camera": "camera",
+    "kinect2_bridge": "kinect2",
+    "azure_kinect_ros_driver": "camera",
 }
 _DRIVER = "(" + "|".join(_DEPTH_DRIVERS) + ")"
 _DEPTH_LAUNCH = re.compile(
@@ -167,6 +177,19 @@ _DEPTH_LAUNCH = re.compile(
     + r"|\$\(find(?:-pkg-share)?[ \t]{1,3}" + _DRIVER + r"\)"
     + r"""|(?:get_package_share_directory|FindPackageShare)\(\s{0,3}["']""" + _DRIVER
     + r"""["']|(?:ros2[ \t]+launch|roslaunch)[ \t]+""" + _DRIVER + r"(?![A-Za-z0-9_])",
+)  # fmt: skip
+# A camera driver that publishes a plain camera's images in a frame id of its own (usb_cam's
+# ``head_camera``, raspicam_node's ``raspicam``), launched in a file as a depth camera's is.
+_CAMERA_DRIVER = (
+    "(usb_cam|cv_camera|v4l2_camera|camera_ros|raspicam_node|gscam|video_stream_opencv"
+    "|gscam2|libcamera_ros)"
+)
+_CAMERA_LAUNCH = re.compile(
+    r"""(?<![A-Za-z0-9_])(?:pkg|package)\s{0,3}=\s{0,3}["']""" + _CAMERA_DRIVER + r"""["']"""
+    + r"|\$\(find(?:-pkg-share)?[ \t]{1,3}" + _CAMERA_DRIVER + r"\)"
+    + r"""|(?:get_package_share_directory|FindPackageShare)\(\s{0,3}["']""" + _CAMERA_DRIVER
+    + r"""["']|(?:ros2[ \t]+launch|roslaunch|ros2[ \t]+run|rosrun)[ \t]+""" + _CAMERA_DRIVER
+    + r"(?![A-Za-z0-9_])",
 )  # fmt: skip
 # The name a ROS 1 depth camera's launch file takes its camera's by (``rs_camera.launch``'s
 # ``<arg name="camera" value="d435"/>``), read only in a file that launches such a driver.
@@ -217,6 +240,7 @@ class _Naming:
         self.cameras: dict[str, str | None] = {}
         self.tails: dict[str, list[str]] | None = None
         self.numbers: dict[tuple[str, str], list[str]] | None = None
+        self.sole: tuple[str | None] | None = None
 
     def link(self, value: str) -> str | None:
         """The link a frame id names (:func:`_link`), else the one link the description writes
@@ -273,6 +297,8 @@ class _Naming:
             self.camera(_last(match), f"camera name in {path}")
         if not named:
             self.depth_cameras(text, path)
+        if _CAMERA_LAUNCH.search(text):
+            self.note(self.sole_camera(), f"camera driver launched in {path}")
 
     def depth_cameras(self, text: str, path: str) -> None:
         """The depth cameras a file that launches their driver names (and names no camera):
@@ -290,6 +316,9 @@ class _Naming:
             (_DEPTH_DRIVERS[driver], "default camera name") for driver in sorted(drivers)
         ]:
             link = self.camera(name, f"{how} in {path}")
+            if link is None and how == "default camera name":
+                link = self.sole_camera()
+                self.note(link, f"depth camera driver launched in {path}")
             if link is not None:
                 self.depth.add(link)
 
@@ -300,6 +329,28 @@ class _Naming:
         link = self.cameras.get(name)
         self.note(link, how)
         return link
+
+    def sole_camera(self) -> str | None:
+        """The description's one camera, when it draws one: the one link the frame rules read
+        as a camera of any kind that hangs from no such link through a fixed joint (a camera's
+        body, its stream frames beneath it); None when it draws none or several (a driver that
+        names no link of them says nothing of which). Found once per description."""
+        if self.sole is None:
+            bodies = []
+            for link in self.urdf.links:
+                if not self.is_camera(link.name):
+                    continue
+                joint = self.urdf.parent_joint(link.name)
+                if joint is None or joint.movable or not self.is_camera(joint.parent):
+                    bodies.append(link.name)
+                if len(bodies) > 1:
+                    break
+            self.sole = (bodies[0] if len(bodies) == 1 else None,)
+        return self.sole[0]
+
+    def is_camera(self, link: str) -> bool:
+        rule = _rule(link, self.profile)
+        return rule is not None and self.profile.frame_rules[rule].kind in _CAMERAS
 
     def note(self, link: str | None, how: str) -> None:
         if link is not None and link not in self.found:

@@ -335,7 +335,6 @@ def test_a_depth_camera_driver_mentioned_but_not_launched_names_no_camera() -> N
 def test_a_camera_another_driver_names_is_the_camera_its_frame_says() -> None:
     usb = shipping(cam_launch='<node pkg="usb_cam"><param name="camera_name" value="camera"/>')
     assert kinds(usb, CAR) == {"camera": 1}
-    assert kinds(shipping(cam_launch='<node pkg="usb_cam"/>'), CAR) == {}
     # Beside a depth camera's driver in one file, a name given is no sign of which driver
     # takes it: the camera is the one its frame says.
     beside = shipping(
@@ -343,6 +342,46 @@ def test_a_camera_another_driver_names_is_the_camera_its_frame_says() -> None:
         '<node pkg="usb_cam"><param name="camera_name" value="camera"/></node>'
     )
     assert kinds(beside, CAR) == {"camera": 1}
+
+
+@pytest.mark.parametrize(
+    "launch",
+    [
+        '<node pkg="usb_cam" type="usb_cam_node"/>',
+        '<node type="raspicam_node" pkg="raspicam_node">'
+        '<param name="camera_frame_id" value="raspicam"/></node>',
+        "Node(package='camera_ros', executable='camera_node', name='webcam_node')",
+        "ros2 run v4l2_camera v4l2_camera_node",
+    ],
+)
+def test_a_camera_driver_launched_naming_no_link_names_the_descriptions_one_camera(
+    launch: str,
+) -> None:
+    # The driver publishes in a frame id of its own (`raspicam`): the camera it runs is the one
+    # the description draws, its body with its optical frame beneath it.
+    car = drawn(("base_link", "cam_link"), ("cam_link", "cam_optical_frame"))
+    assert frames_and_kinds(shipping(launch=launch), car) == (
+        {"cam_link": "camera driver launched in launch"},
+        {"camera": 1},
+    )
+    # Of two cameras it says nothing of which; a mention launches nothing.
+    two = drawn(("base_link", "front_camera_link"), ("base_link", "rear_camera_link"))
+    assert kinds(shipping(launch=launch), two) == {}
+    assert kinds(shipping(notes_yaml="# usb_cam and camera_ros are not used\n"), car) == {}
+
+
+def test_a_depth_camera_driver_whose_default_name_is_no_link_names_the_one_camera() -> None:
+    # openni_launch's camera is `camera`, kinect2_bridge's `kinect2`: the description calls its
+    # one Kinect `kinect`, with its depth frame beneath.
+    kinect = drawn(("base_link", "kinect"), ("kinect", "kinect_depth_frame"))
+    for launch in (
+        '<include file="$(find openni_launch)/launch/openni.launch"/>',
+        '<include file="$(find kinect2_bridge)/launch/kinect2_bridge.launch"/>',
+    ):
+        assert frames_and_kinds(shipping(launch=launch), kinect) == (
+            {"kinect": "depth camera driver launched in launch"},
+            {"depth_camera": 1},
+        )
 
 
 def test_an_infrared_range_frame_a_driver_publishes_in_is_an_ir_range_sensor() -> None:
