@@ -33,7 +33,8 @@ a driver that stamps its data with that frame (``frame_id: imu_link`` in its con
   whatever its frame's name says (a ``camera_name`` in such a file may be another driver's,
   and says no kind). A file that launches a plain camera's driver (usb_cam, cv_camera,
   v4l2_camera, camera_ros, raspicam_node, gscam), which publishes in a frame id of its own,
-  names the description's one camera so too.
+  names the description's one camera so too, and one that launches an IMU's driver (bno055,
+  xsens_mti_driver, openzen_sensor, a WitMotion's, ...) its one IMU.
 * The profile's ``sensors.frames`` rules tell a named link's kind by its name (``imu``,
   ``gps``, ``lidar``, ``camera``, ...); a link no rule matches (``base_link``, ``odom``) is
   no sensor.
@@ -191,6 +192,22 @@ _CAMERA_LAUNCH = re.compile(
     + r"""["']|(?:ros2[ \t]+launch|roslaunch|ros2[ \t]+run|rosrun)[ \t]+""" + _CAMERA_DRIVER
     + r"(?![A-Za-z0-9_])",
 )  # fmt: skip
+# An IMU's driver, which publishes in a frame id of its own (bno055's ``bno055``), launched
+# in a file as a camera's is: it names the description's one IMU.
+_IMU_DRIVER = (
+    "(bno055|ros_imu_bno055|imu_bno055|witmotion_ros|wit_ros_imu|wit_ros2_imu|openzen_sensor"
+    "|xsens_mti_driver|xsens_driver|bluespace_ai_xsens_mti_driver|microstrain_inertial_driver"
+    "|um7|um6|phidgets_spatial|phidgets_imu|razor_imu_9dof|mpu6050_driver|ros2_mpu6050"
+    "|vectornav|imu_vn_100|adi_imu|sbg_driver|myahrs_driver|lpms_ig1|hipnuc_imu)"
+)
+_IMU_LAUNCH = re.compile(
+    r"""(?<![A-Za-z0-9_])(?:pkg|package)\s{0,3}=\s{0,3}["']""" + _IMU_DRIVER + r"""["']"""
+    + r"|\$\(find(?:-pkg-share)?[ \t]{1,3}" + _IMU_DRIVER + r"\)"
+    + r"""|(?:get_package_share_directory|FindPackageShare)\(\s{0,3}["']""" + _IMU_DRIVER
+    + r"""["']|(?:ros2[ \t]+launch|roslaunch|ros2[ \t]+run|rosrun)[ \t]+""" + _IMU_DRIVER
+    + r"(?![A-Za-z0-9_])",
+)  # fmt: skip
+_IMUS = frozenset({"imu"})
 # The name a ROS 1 depth camera's launch file takes its camera's by (``rs_camera.launch``'s
 # ``<arg name="camera" value="d435"/>``), read only in a file that launches such a driver.
 _CAMERA_ARGUMENT = re.compile(
@@ -240,7 +257,7 @@ class _Naming:
         self.cameras: dict[str, str | None] = {}
         self.tails: dict[str, list[str]] | None = None
         self.numbers: dict[tuple[str, str], list[str]] | None = None
-        self.sole: tuple[str | None] | None = None
+        self.sole: dict[frozenset[str], str | None] = {}
 
     def link(self, value: str) -> str | None:
         """The link a frame id names (:func:`_link`), else the one link the description writes
@@ -271,10 +288,23 @@ class _Naming:
         return links if len(links) > 1 else []
 
     def read(self, text: str, path: str) -> None:
-        """What one file names: frame ids (a device's own, or a frame id no link has that
-        numbered links begin with: ``ultrasonic_link`` for ``ultrasonic_link_0`` ...), frame
-        names made from a template (``"US%d_link"``), camera names, and a depth camera's
-        driver's."""
+        """What one file names: frame ids, camera names, and the drivers it launches'."""
+        self.frame_ids(text, path)
+        named = False
+        for match in _DEVICE_NAME.finditer(text):
+            named = True
+            self.camera(_last(match), f"camera name in {path}")
+        if not named:
+            self.depth_cameras(text, path)
+        if _CAMERA_LAUNCH.search(text):
+            self.note(self.sole_camera(), f"camera driver launched in {path}")
+        if _IMU_LAUNCH.search(text):
+            self.note(self.sole_device(_IMUS), f"IMU driver launched in {path}")
+
+    def frame_ids(self, text: str, path: str) -> None:
+        """The frame ids one file gives: a device's own, a frame id no link has that numbered
+        links begin with (``ultrasonic_link`` for ``ultrasonic_link_0`` ...), frame names made
+        from a template (``"US%d_link"``), and lists of them."""
         for pattern in (_ASSIGNED, _PARAMETER):
             for match in pattern.finditer(text):
                 value = _value(match)
@@ -291,14 +321,6 @@ class _Naming:
                 value = item.strip().strip("\"'").lstrip("/")
                 if value:
                     self.note(self.link(value), f"frame id in {path}")
-        named = False
-        for match in _DEVICE_NAME.finditer(text):
-            named = True
-            self.camera(_last(match), f"camera name in {path}")
-        if not named:
-            self.depth_cameras(text, path)
-        if _CAMERA_LAUNCH.search(text):
-            self.note(self.sole_camera(), f"camera driver launched in {path}")
 
     def depth_cameras(self, text: str, path: str) -> None:
         """The depth cameras a file that launches their driver names (and names no camera):
@@ -334,23 +356,29 @@ class _Naming:
         """The description's one camera, when it draws one: the one link the frame rules read
         as a camera of any kind that hangs from no such link through a fixed joint (a camera's
         body, its stream frames beneath it); None when it draws none or several (a driver that
-        names no link of them says nothing of which). Found once per description."""
-        if self.sole is None:
+        names no link of them says nothing of which)."""
+        return self.sole_device(_CAMERAS)
+
+    def sole_device(self, kinds: frozenset[str]) -> str | None:
+        """The description's one device of ``kinds``: the one link the frame rules read as
+        one of them that hangs from no such link through a fixed joint; None when it draws
+        none or several. Found once per description and kinds."""
+        if kinds not in self.sole:
             bodies = []
             for link in self.urdf.links:
-                if not self.is_camera(link.name):
+                if not self.reads_as(link.name, kinds):
                     continue
                 joint = self.urdf.parent_joint(link.name)
-                if joint is None or joint.movable or not self.is_camera(joint.parent):
+                if joint is None or joint.movable or not self.reads_as(joint.parent, kinds):
                     bodies.append(link.name)
                 if len(bodies) > 1:
                     break
-            self.sole = (bodies[0] if len(bodies) == 1 else None,)
-        return self.sole[0]
+            self.sole[kinds] = bodies[0] if len(bodies) == 1 else None
+        return self.sole[kinds]
 
-    def is_camera(self, link: str) -> bool:
+    def reads_as(self, link: str, kinds: frozenset[str]) -> bool:
         rule = _rule(link, self.profile)
-        return rule is not None and self.profile.frame_rules[rule].kind in _CAMERAS
+        return rule is not None and self.profile.frame_rules[rule].kind in kinds
 
     def note(self, link: str | None, how: str) -> None:
         if link is not None and link not in self.found:

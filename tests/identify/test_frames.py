@@ -370,6 +370,25 @@ def test_a_camera_driver_launched_naming_no_link_names_the_descriptions_one_came
     assert kinds(shipping(notes_yaml="# usb_cam and camera_ros are not used\n"), car) == {}
 
 
+@pytest.mark.parametrize(
+    "launch",
+    [
+        "Node(package='bno055', executable='bno055', parameters=[params])",
+        '<node pkg="openzen_sensor" type="openzen_sensor_node" name="imu"/>',
+        '<include file="$(find xsens_mti_driver)/launch/xsens_mti_node.launch"/>',
+    ],
+)
+def test_an_imu_driver_launched_naming_no_link_names_the_descriptions_one_imu(launch: str) -> None:
+    body = drawn(("base_link", "imu_link"), ("base_link", "laser"))
+    assert frames_and_kinds(shipping(launch=launch), body) == (
+        {"imu_link": "IMU driver launched in launch"},
+        {"imu": 1},
+    )
+    # Of two IMUs it says nothing of which.
+    two = drawn(("base_link", "imu_front"), ("base_link", "imu_back"))
+    assert kinds(shipping(launch=launch), two) == {}
+
+
 def test_a_depth_camera_driver_whose_default_name_is_no_link_names_the_one_camera() -> None:
     # openni_launch's camera is `camera`, kinect2_bridge's `kinect2`: the description calls its
     # one Kinect `kinect`, with its depth frame beneath.
