@@ -72,7 +72,7 @@ from __future__ import annotations
 import math
 import re
 from collections import Counter, deque
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, replace
 from itertools import combinations, islice, pairwise
 from typing import NamedTuple
@@ -194,6 +194,10 @@ _AT_ONE_POINT = 1e-6
 # A snake that moves in a plane (every axis parallel) has at least this many modules; planar
 # arms of equal links are far shorter.
 _PLANAR_SPINE_JOINTS = 12
+# The fewest wheels a body rolls on of its own (:func:`raised_legs`), and the most legs whose
+# chains are walked for wheels (a stranger's thousands are not).
+_BODY_WHEELS = 3
+_MOST_RAISED_LEGS = 16
 # A robot that calls itself a snake, read as a word (``snake``, ``robosnake``, ``snakebot``,
 # ``sea_snake``, ``Snake Robot``): its one chain of turning joints, nothing else, is a spine
 # however short or unevenly drawn (a bare chain with no axes or geometry, a two-joint student
@@ -966,6 +970,39 @@ def flippers(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
         return limbs
     why = "a flipper: a chain on a body that tracks move"
     return [replace(limb, kind="other", why=why) if limb.kind == "leg" else limb for limb in limbs]
+
+
+def raised_legs(tree: JointTree, limbs: list[Limb], roles: Mapping[str, Role]) -> list[Limb]:
+    """On a body that rolls on wheels of its own (three or more, each a joint that turns its
+    wheel and carries nothing that moves, none carried by a chain read as a leg), chains read
+    as legs (by a corner's name: ``panel_back_right``) whose tips stand higher than every
+    wheel's axle as drawn reach no ground: a rover's solar panels or a mast, not legs. A
+    wheel-legged robot's legs carry its wheels; a walker rolls on none; a leg-named chain
+    ending in a gripper is an arm (:func:`gripping_leg`)."""
+    legs = [limb for limb in limbs if limb.kind == "leg" and not limb.gripper]
+    wheels = [
+        j
+        for j in tree.urdf.joints
+        if j.name in roles and roles[j.name].role == "wheel" and j.child not in tree.moving_below
+    ]
+    if not legs or len(wheels) < _BODY_WHEELS or len(legs) > _MOST_RAISED_LEGS:
+        return limbs
+    carried = set()
+    for leg in legs:
+        first = tree.urdf.joint(leg.joints[0])
+        if first is not None:
+            below = islice(tree.urdf.subtree_joints(first.child), _MOST_LOOP_JOINTS)
+            carried |= {j.name for j in below}
+    if any(wheel.name in carried for wheel in wheels):
+        return limbs
+    axles = max(tree.poses.place(wheel.child)[2] for wheel in wheels)
+    why = "a chain named as a leg above the axles of the wheels the body rolls on (no leg)"
+    return [
+        replace(limb, kind="other", why=why)
+        if limb in legs and tree.poses.place(limb.tip)[2] > axles
+        else limb
+        for limb in limbs
+    ]
 
 
 def meeting_tips(tree: JointTree, limbs: list[Limb]) -> list[Limb]:

@@ -1736,6 +1736,97 @@ def test_corner_named_chains_on_a_body_tracks_move_are_flippers_not_legs() -> No
     assert any(limb.why.startswith("a flipper") for limb in result.body.limbs)
 
 
+def rover_with_panels(*, panel_z: float | None) -> RobotText:
+    """Six wheels on the body's sides and two two-joint panels named by their corner
+    (``panel_back_left`` ..) hinged at ``panel_z`` above the body's origin (none: no panels)."""
+    robot = RobotText("rover")
+    for i, x in enumerate((0.5, 0.0, -0.5)):
+        for side, y in (("left", 0.4), ("right", -0.4)):
+            builders.placed(
+                robot,
+                f"drive_{i}_{side}",
+                "continuous",
+                robot.root,
+                f"wheel_{i}_{side}",
+                xyz=f"{x} {y} -0.15",
+                axis="0 1 0",
+            )
+    robot.fixed(robot.root, "panel_top")
+    for side, y in (("left", 0.3), ("right", -0.3)) if panel_z is not None else ():
+        centre = builders.placed(
+            robot,
+            f"panel_center_{side}_joint",
+            "revolute",
+            "panel_top",
+            f"panel_center_{side}",
+            xyz=f"0 {y} {panel_z}",
+            axis="1 0 0",
+        )
+        builders.placed(
+            robot,
+            f"panel_back_{side}_joint",
+            "revolute",
+            centre,
+            f"panel_back_{side}",
+            xyz=f"-0.4 {y} 0",
+            axis="1 0 0",
+        )
+    return robot
+
+
+def test_corner_named_chains_above_the_axles_of_a_wheeled_body_are_no_legs() -> None:
+    result = identify_urdf(rover_with_panels(panel_z=0.5).text())
+    assert result.structure == "UGV"
+    assert result.body is not None
+    assert "leg" not in [limb.kind for limb in result.body.limbs]
+    # Hanging below the axles, they may reach the ground: legs still.
+    low = identify_urdf(rover_with_panels(panel_z=-0.3).text())
+    assert low.body is not None
+    assert [limb.kind for limb in low.body.limbs].count("leg") == 2
+
+
+def test_legs_drawn_raised_beside_two_wheel_modules_are_still_legs() -> None:
+    # Two wheel modules of two joints each (four joints read as wheels, two wheels that turn
+    # as leaves) and four legs drawn with their feet up: a leg-and-wheel hybrid.
+    robot = RobotText("hybrid")
+    for side, y in (("a", 0.2), ("b", -0.2)):
+        hip = builders.placed(
+            robot, f"wheel_{side}_j1", "revolute", robot.root, f"wheel_{side}_l1", xyz=f"0 {y} 0"
+        )
+        builders.placed(
+            robot,
+            f"wheel_{side}_j2",
+            "continuous",
+            hip,
+            f"wheel_{side}_l2",
+            xyz="0 0 -0.1",
+            axis="0 1 0",
+        )
+    for i, (x, y) in enumerate(((0.2, 0.15), (0.2, -0.15), (-0.2, 0.15), (-0.2, -0.15))):
+        top = builders.placed(
+            robot, f"leg_{i}_j1", "revolute", robot.root, f"leg_{i}_l1", xyz=f"{x} {y} 0"
+        )
+        knee = builders.placed(
+            robot, f"leg_{i}_j2", "revolute", top, f"leg_{i}_l2", xyz="0.1 0 0.05", axis="0 1 0"
+        )
+        builders.placed(
+            robot, f"leg_{i}_j3", "revolute", knee, f"leg_{i}_foot", xyz="0.1 0 0.05", axis="0 1 0"
+        )
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs].count("leg") == 4
+
+
+def test_a_leg_named_chain_ending_in_a_gripper_above_the_wheels_is_still_an_arm() -> None:
+    robot = rover_with_panels(panel_z=None)
+    tip = robot.chain(robot.root, ["leg1_2_joint", "leg2_3_joint", "leg3_4_joint"])
+    for jaw in ("claw_top_joint", "claw_bottom_joint"):
+        builders.placed(robot, jaw, "prismatic", tip, jaw.replace("_joint", ""), xyz="0 0 0.6")
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert "arm" in [limb.kind for limb in result.body.limbs]
+
+
 def forearm_hand_on(wrist_joints: list[str]) -> RobotText:
     """Five three-joint fingers on a palm, the palm on ``wrist_joints`` from a free forearm."""
     robot = RobotText("hand", root="forearm")
