@@ -717,7 +717,7 @@ def _hanging_pair(
     one, other = lowest[0], lowest[1]
     if len(one.joints) != len(other.joints):
         return None
-    root = tree.poses.place(tree.urdf.root)[2]
+    root = tree.poses.place(_free_body(tree))[2]
     below_the_root = at_the_root = True
     for limb in (one, other):
         start, end = placed[id(limb)]
@@ -2140,8 +2140,20 @@ def bolted_chain(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
 
 
 def _world_root(tree: JointTree) -> bool:
-    """The description's root link is ``world``: the robot is bolted to the ground."""
-    return tree.urdf.root.lower() == "world"
+    """The description's root link is ``world``, the robot bolted to the ground by it: not hung
+    from it on a ``floating`` joint (a simulator's free body, as good as no world)."""
+    root = tree.urdf.root
+    return root.lower() == "world" and not any(
+        joint.type == "floating" for joint in tree.urdf.children(root)
+    )
+
+
+def _free_body(tree: JointTree) -> str:
+    """The body's root: the description's root link, or the one link it carries on a
+    ``floating`` joint (a simulator's ``world`` holding the free body it spawns)."""
+    root = tree.urdf.root
+    floating = [joint.child for joint in tree.urdf.children(root) if joint.type == "floating"]
+    return floating[0] if len(floating) == 1 else root
 
 
 def _on_the_root(tree: JointTree, link: str) -> bool:

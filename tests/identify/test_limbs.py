@@ -1423,6 +1423,19 @@ def test_the_same_chains_on_a_body_bolted_to_the_world_stay_arms() -> None:
     assert "leg" not in [limb.kind for limb in result.body.limbs]
 
 
+def test_two_chains_hanging_from_a_body_a_world_holds_on_a_floating_joint_are_its_legs() -> None:
+    # A simulator's world holds the free body it spawns 0.3 m up: the body, not the world, is
+    # what the legs hang below; a floating joint bolts nothing.
+    robot = RobotText("r", root="world")
+    builders.placed(robot, "body_base", "floating", "world", "body", xyz="0 0 0.3")
+    for side, y in (("a", 0.08), ("b", -0.08)):
+        placed_chain(robot, "body", f"{side}j", start=f"0 {y} -0.05", steps=["0 0 -0.12"] * 2)
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["leg", "leg"]
+    assert result.structure == "Biped"
+
+
 def pony(*, neck: bool = True) -> RobotText:
     """Four unnamed six-joint chains (too long for legs by place) hanging 0.3 m straight down
     from the corners of a free body, and a two-joint neck on its front pointing up."""
