@@ -172,40 +172,41 @@ _DEPTH_DRIVERS = {
     "kinect2_bridge": "kinect2",
     "azure_kinect_ros_driver": "camera",
 }
-_DRIVER = "(" + "|".join(_DEPTH_DRIVERS) + ")"
-_DEPTH_LAUNCH = re.compile(
-    r"""(?<![A-Za-z0-9_])(?:pkg|package)\s{0,3}=\s{0,3}["']""" + _DRIVER + r"""["']"""
-    + r"|\$\(find(?:-pkg-share)?[ \t]{1,3}" + _DRIVER + r"\)"
-    + r"""|(?:get_package_share_directory|FindPackageShare)\(\s{0,3}["']""" + _DRIVER
-    + r"""["']|(?:ros2[ \t]+launch|roslaunch)[ \t]+""" + _DRIVER + r"(?![A-Za-z0-9_])",
-)  # fmt: skip
+
+
+def _launching(drivers: Iterable[str]) -> re.Pattern[str]:
+    """A file that launches one of ``drivers`` (package names): a node of its package, its
+    package's launch file, ``ros2 launch``/``run``; each form captures the driver's name."""
+    driver = "(" + "|".join(drivers) + ")"
+    return re.compile(
+        r"""(?<![A-Za-z0-9_])(?:pkg|package)\s{0,3}=\s{0,3}["']""" + driver + r"""["']"""
+        + r"|\$\(find(?:-pkg-share)?[ \t]{1,3}" + driver + r"\)"
+        + r"""|(?:get_package_share_directory|FindPackageShare)\(\s{0,3}["']""" + driver
+        + r"""["']|(?:ros2[ \t]+launch|roslaunch|ros2[ \t]+run|rosrun)[ \t]+""" + driver
+        + r"(?![A-Za-z0-9_])",
+    )  # fmt: skip
+
+
+_DEPTH_LAUNCH = _launching(_DEPTH_DRIVERS)
 # A camera driver that publishes a plain camera's images in a frame id of its own (usb_cam's
 # ``head_camera``, raspicam_node's ``raspicam``), launched in a file as a depth camera's is.
-_CAMERA_DRIVER = (
-    "(usb_cam|cv_camera|v4l2_camera|camera_ros|raspicam_node|gscam|video_stream_opencv"
-    "|gscam2|libcamera_ros)"
-)
-_CAMERA_LAUNCH = re.compile(
-    r"""(?<![A-Za-z0-9_])(?:pkg|package)\s{0,3}=\s{0,3}["']""" + _CAMERA_DRIVER + r"""["']"""
-    + r"|\$\(find(?:-pkg-share)?[ \t]{1,3}" + _CAMERA_DRIVER + r"\)"
-    + r"""|(?:get_package_share_directory|FindPackageShare)\(\s{0,3}["']""" + _CAMERA_DRIVER
-    + r"""["']|(?:ros2[ \t]+launch|roslaunch|ros2[ \t]+run|rosrun)[ \t]+""" + _CAMERA_DRIVER
-    + r"(?![A-Za-z0-9_])",
+_CAMERA_LAUNCH = _launching(
+    (
+        "usb_cam", "cv_camera", "v4l2_camera", "camera_ros", "raspicam_node", "gscam",
+        "video_stream_opencv", "gscam2", "libcamera_ros",
+    )
 )  # fmt: skip
 # An IMU's driver, which publishes in a frame id of its own (bno055's ``bno055``), launched
 # in a file as a camera's is: it names the description's one IMU.
-_IMU_DRIVER = (
-    "(bno055|ros_imu_bno055|imu_bno055|witmotion_ros|wit_ros_imu|wit_ros2_imu|openzen_sensor"
-    "|xsens_mti_driver|xsens_driver|bluespace_ai_xsens_mti_driver|microstrain_inertial_driver"
-    "|um7|um6|phidgets_spatial|phidgets_imu|razor_imu_9dof|mpu6050_driver|ros2_mpu6050"
-    "|vectornav|imu_vn_100|adi_imu|sbg_driver|myahrs_driver|lpms_ig1|hipnuc_imu)"
-)
-_IMU_LAUNCH = re.compile(
-    r"""(?<![A-Za-z0-9_])(?:pkg|package)\s{0,3}=\s{0,3}["']""" + _IMU_DRIVER + r"""["']"""
-    + r"|\$\(find(?:-pkg-share)?[ \t]{1,3}" + _IMU_DRIVER + r"\)"
-    + r"""|(?:get_package_share_directory|FindPackageShare)\(\s{0,3}["']""" + _IMU_DRIVER
-    + r"""["']|(?:ros2[ \t]+launch|roslaunch|ros2[ \t]+run|rosrun)[ \t]+""" + _IMU_DRIVER
-    + r"(?![A-Za-z0-9_])",
+_IMU_LAUNCH = _launching(
+    (
+        "bno055", "ros_imu_bno055", "imu_bno055", "witmotion_ros", "wit_ros_imu",
+        "wit_ros2_imu", "openzen_sensor", "xsens_mti_driver", "xsens_driver",
+        "bluespace_ai_xsens_mti_driver", "microstrain_inertial_driver", "um7", "um6",
+        "phidgets_spatial", "phidgets_imu", "razor_imu_9dof", "mpu6050_driver", "ros2_mpu6050",
+        "vectornav", "imu_vn_100", "adi_imu", "sbg_driver", "myahrs_driver", "lpms_ig1",
+        "hipnuc_imu",
+    )
 )  # fmt: skip
 _IMUS = frozenset({"imu"})
 # The name a ROS 1 depth camera's launch file takes its camera's by (``rs_camera.launch``'s
