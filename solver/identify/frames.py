@@ -28,13 +28,15 @@ a driver that stamps its data with that frame (``frame_id: imu_link`` in its con
   drivers, or their launch files) and names no camera names the link it gives the driver as
   its ``parent_frame`` (depthai's mount), the one its ROS 1 launch file's ``camera`` argument
   gives, else the driver's default name (``camera``, depthai's ``oak``, kinect2_bridge's
-  ``kinect2``), else, when no link has that name, the description's one camera (its only
-  link read as a camera that hangs from no other); the camera so named is a depth camera,
-  whatever its frame's name says (a ``camera_name`` in such a file may be another driver's,
-  and says no kind). A file that launches a plain camera's driver (usb_cam, cv_camera,
-  v4l2_camera, camera_ros, raspicam_node, gscam), which publishes in a frame id of its own,
-  names the description's one camera so too, and one that launches an IMU's driver (bno055,
-  xsens_mti_driver, openzen_sensor, a WitMotion's, ...) its one IMU.
+  ``kinect2``), else, when no link has that name, the description's one camera
+  (:meth:`_Naming.sole_device`); the camera so named is a depth camera, whatever its frame's
+  name says (a ``camera_name`` in such a file may be another driver's, and says no kind). A
+  file that launches a plain camera's driver (usb_cam, cv_camera, v4l2_camera, camera_ros,
+  raspicam_node, gscam), which publishes in a frame id of its own, names the description's one
+  camera so too, and one that launches an IMU's driver (bno055, xsens_mti_driver,
+  openzen_sensor, a WitMotion's, ...) its one IMU: weighed once every file is read
+  (:meth:`_Naming.launched_drivers`), a device a file names by a frame of its own staying as
+  that file says.
 * The profile's ``sensors.frames`` rules tell a named link's kind by its name (``imu``,
   ``gps``, ``lidar``, ``camera``, ...); a link no rule matches (``base_link``, ``odom``) is
   no sensor.
@@ -209,6 +211,8 @@ _IMU_LAUNCH = _launching(
     )
 )  # fmt: skip
 _IMUS = frozenset({"imu"})
+# A camera whose name says it is no depth camera: a depth camera's driver does not name it.
+_NOT_DEPTH = re.compile(r"thermal|flir|lepton|fisheye|webcam|usb", re.IGNORECASE)
 # The name a ROS 1 depth camera's launch file takes its camera's by (``rs_camera.launch``'s
 # ``<arg name="camera" value="d435"/>``), read only in a file that launches such a driver.
 _CAMERA_ARGUMENT = re.compile(
@@ -242,6 +246,7 @@ def _named(
     naming = _Naming(urdf, profile)
     for shipped in workspace.files:
         naming.read(shipped.text, shown(shipped.path))
+    naming.launched_drivers()
     return naming.found, frozenset(naming.depth)
 
 
@@ -258,7 +263,10 @@ class _Naming:
         self.cameras: dict[str, str | None] = {}
         self.tails: dict[str, list[str]] | None = None
         self.numbers: dict[tuple[str, str], list[str]] | None = None
-        self.sole: dict[frozenset[str], str | None] = {}
+        self.tops: dict[frozenset[str], dict[str, str | None]] = {}
+        self.seen_numbered: set[tuple[str, str]] = set()
+        # Where a driver that names no link of the description was launched, by what it reads.
+        self.launches: dict[str, list[str]] = {"camera": [], "depth": [], "imu": []}
 
     def link(self, value: str) -> str | None:
         """The link a frame id names (:func:`_link`), else the one link the description writes
@@ -285,6 +293,9 @@ class _Naming:
                 for number in _NUMBER.finditer(link.name):
                     key = (link.name[: number.start()], link.name[number.end() :])
                     self.numbers.setdefault(key, []).append(link.name)
+        if (before, after) in self.seen_numbered:
+            return []  # noted once already: a stranger's file may repeat it a million times
+        self.seen_numbered.add((before, after))
         links = self.numbers.get((before, after), [])
         return links if len(links) > 1 else []
 
@@ -298,9 +309,32 @@ class _Naming:
         if not named:
             self.depth_cameras(text, path)
         if _CAMERA_LAUNCH.search(text):
-            self.note(self.sole_camera(), f"camera driver launched in {path}")
+            self.launches["camera"].append(path)
         if _IMU_LAUNCH.search(text):
-            self.note(self.sole_device(_IMUS), f"IMU driver launched in {path}")
+            self.launches["imu"].append(path)
+
+    def launched_drivers(self) -> None:
+        """Once every file is read: a driver launched that names no link of the description
+        names its one device of the driver's kind, unless a file names that device's frames
+        already. A plain camera's driver makes the one camera a camera; else a depth camera's
+        driver (whose default name was no link) an RGB-D camera, unless its name says another
+        kind of camera (thermal, fisheye, a webcam)."""
+        imu = self.sole_device(_IMUS)
+        if self.launches["imu"] and imu is not None and not self.named(imu, _IMUS):
+            self.note(imu, f"IMU driver launched in {self.launches['imu'][0]}")
+        camera = self.sole_camera()
+        if camera is None or self.named(camera, _CAMERAS):
+            return
+        if self.launches["camera"]:
+            self.note(camera, f"camera driver launched in {self.launches['camera'][0]}")
+        elif self.launches["depth"] and not _NOT_DEPTH.search(camera):
+            self.note(camera, f"depth camera driver launched in {self.launches['depth'][0]}")
+            self.depth.add(camera)
+
+    def named(self, device: str, kinds: frozenset[str]) -> bool:
+        """A file names ``device`` or one of its frames already (a link whose topmost link of
+        ``kinds`` is the device)."""
+        return any(self.top(link, kinds) == device for link in self.found)
 
     def frame_ids(self, text: str, path: str) -> None:
         """The frame ids one file gives: a device's own, a frame id no link has that numbered
@@ -340,8 +374,7 @@ class _Naming:
         ]:
             link = self.camera(name, f"{how} in {path}")
             if link is None and how == "default camera name":
-                link = self.sole_camera()
-                self.note(link, f"depth camera driver launched in {path}")
+                self.launches["depth"].append(path)
             if link is not None:
                 self.depth.add(link)
 
@@ -354,28 +387,45 @@ class _Naming:
         return link
 
     def sole_camera(self) -> str | None:
-        """The description's one camera, when it draws one: the one link the frame rules read
-        as a camera of any kind that hangs from no such link through a fixed joint (a camera's
-        body, its stream frames beneath it); None when it draws none or several (a driver that
-        names no link of them says nothing of which)."""
+        """The description's one camera, when it draws one (:meth:`sole_device`: a camera's
+        body with its stream frames beneath it, a pan/tilt camera's links with it)."""
         return self.sole_device(_CAMERAS)
 
     def sole_device(self, kinds: frozenset[str]) -> str | None:
-        """The description's one device of ``kinds``: the one link the frame rules read as
-        one of them that hangs from no such link through a fixed joint; None when it draws
-        none or several. Found once per description and kinds."""
-        if kinds not in self.sole:
-            bodies = []
-            for link in self.urdf.links:
-                if not self.reads_as(link.name, kinds):
-                    continue
-                joint = self.urdf.parent_joint(link.name)
-                if joint is None or joint.movable or not self.reads_as(joint.parent, kinds):
-                    bodies.append(link.name)
-                if len(bodies) > 1:
-                    break
-            self.sole[kinds] = bodies[0] if len(bodies) == 1 else None
-        return self.sole[kinds]
+        """The description's one device of ``kinds``: the links the frame rules read as one
+        of them, each taken to the topmost of the unbroken run of such links above it
+        (:meth:`top`), are all one link; None when the description draws none or several (a
+        driver that names no link of them says nothing of which)."""
+        found: str | None = None
+        for link in self.urdf.links:
+            top = self.top(link.name, kinds)
+            if top is not None and top != found:
+                if found is not None:
+                    return None
+                found = top
+        return found
+
+    def top(self, link: str, kinds: frozenset[str]) -> str | None:
+        """The topmost link of the unbroken run of links read as ``kinds`` from ``link`` up
+        (``link`` itself when its parent reads as none; None when ``link`` reads as none).
+        Each link is walked once per kinds (memoised: a link read as none is None)."""
+        tops = self.tops.setdefault(kinds, {})
+        path: list[str] = []
+        current = link
+        while current not in tops:
+            if not self.reads_as(current, kinds):
+                tops[current] = None
+                break
+            path.append(current)
+            joint = self.urdf.parent_joint(current)
+            if joint is None:
+                break
+            current = joint.parent
+        above = tops.get(current)
+        found = above if above is not None else (path[-1] if path else None)
+        for each in path:
+            tops[each] = found
+        return tops[link]
 
     def reads_as(self, link: str, kinds: frozenset[str]) -> bool:
         rule = _rule(link, self.profile)

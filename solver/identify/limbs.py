@@ -198,6 +198,12 @@ _PLANAR_SPINE_JOINTS = 12
 # chains are walked for wheels (a stranger's thousands are not).
 _BODY_WHEELS = 3
 _MOST_RAISED_LEGS = 16
+# A body's corner in a name (``front_left``, ``rear_right``, ``left_back``): a leg's name on a
+# walker, a panel's or a bumper's on a rover.
+_CORNER = re.compile(
+    r"(left|right)[_-]?(front|rear|hind|back)|(front|rear|hind|back)[_-]?(left|right)",
+    re.IGNORECASE,
+)
 # A robot that calls itself a snake, read as a word (``snake``, ``robosnake``, ``snakebot``,
 # ``sea_snake``, ``Snake Robot``): its one chain of turning joints, nothing else, is a spine
 # however short or unevenly drawn (a bare chain with no axes or geometry, a two-joint student
@@ -975,11 +981,17 @@ def flippers(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
 def raised_legs(tree: JointTree, limbs: list[Limb], roles: Mapping[str, Role]) -> list[Limb]:
     """On a body that rolls on wheels of its own (three or more, each a joint that turns its
     wheel and carries nothing that moves, none carried by a chain read as a leg), chains read
-    as legs (by a corner's name: ``panel_back_right``) whose tips stand higher than every
-    wheel's axle as drawn reach no ground: a rover's solar panels or a mast, not legs. A
-    wheel-legged robot's legs carry its wheels; a walker rolls on none; a leg-named chain
-    ending in a gripper is an arm (:func:`gripping_leg`)."""
-    legs = [limb for limb in limbs if limb.kind == "leg" and not limb.gripper]
+    as legs by a corner's name alone (``panel_back_right``: no leg's word, hip, knee, foot ...,
+    on any of their joints and links) whose tips stand higher than every wheel's axle as drawn
+    reach no ground: a rover's solar panels or a mast, not legs. A wheel-legged robot's legs
+    carry its wheels; a walker rolls on none; legs named as legs stay legs however drawn (a
+    humanoid standing on a cart); a leg-named chain ending in a gripper is an arm
+    (:func:`gripping_leg`)."""
+    legs = [
+        limb
+        for limb in limbs
+        if limb.kind == "leg" and not limb.gripper and _named_by_corner_only(tree, limb)
+    ]
     wheels = [
         j
         for j in tree.urdf.joints
@@ -987,12 +999,7 @@ def raised_legs(tree: JointTree, limbs: list[Limb], roles: Mapping[str, Role]) -
     ]
     if not legs or len(wheels) < _BODY_WHEELS or len(legs) > _MOST_RAISED_LEGS:
         return limbs
-    carried = set()
-    for leg in legs:
-        first = tree.urdf.joint(leg.joints[0])
-        if first is not None:
-            below = islice(tree.urdf.subtree_joints(first.child), _MOST_LOOP_JOINTS)
-            carried |= {j.name for j in below}
+    carried = _carried_by(tree, legs)
     if any(wheel.name in carried for wheel in wheels):
         return limbs
     axles = max(tree.poses.place(wheel.child)[2] for wheel in wheels)
@@ -1003,6 +1010,28 @@ def raised_legs(tree: JointTree, limbs: list[Limb], roles: Mapping[str, Role]) -
         else limb
         for limb in limbs
     ]
+
+
+def _carried_by(tree: JointTree, limbs: list[Limb]) -> set[str]:
+    """The joints below each of ``limbs``' first joints (at most ``_MOST_LOOP_JOINTS`` each)."""
+    carried: set[str] = set()
+    for limb in limbs:
+        first = tree.urdf.joint(limb.joints[0])
+        if first is not None:
+            below = islice(tree.urdf.subtree_joints(first.child), _MOST_LOOP_JOINTS)
+            carried |= {joint.name for joint in below}
+    return carried
+
+
+def _named_by_corner_only(tree: JointTree, limb: Limb) -> bool:
+    """No joint or link of ``limb`` reads as a leg's once the body's corners are taken out of
+    its name (``front_left_hip`` still says hip; ``panel_back_right`` says nothing)."""
+    for name in limb.joints:
+        joint = tree.urdf.joint(name)
+        for text in (name, joint.child if joint is not None else ""):
+            if "leg" in tree.parts_of(_CORNER.sub("_", text)):
+                return False
+    return True
 
 
 def meeting_tips(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
@@ -2141,19 +2170,24 @@ def bolted_chain(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
 
 def _world_root(tree: JointTree) -> bool:
     """The description's root link is ``world``, the robot bolted to the ground by it: not hung
-    from it on a ``floating`` joint (a simulator's free body, as good as no world)."""
+    from it on a ``floating`` joint (a simulator's free body, as good as no world). A world
+    holding anything on another joint (the robot fixed to it beside a free ball) bolts."""
     root = tree.urdf.root
-    return root.lower() == "world" and not any(
-        joint.type == "floating" for joint in tree.urdf.children(root)
+    children = tree.urdf.children(root)
+    return root.lower() == "world" and not (
+        children and all(joint.type == "floating" for joint in children)
     )
 
 
 def _free_body(tree: JointTree) -> str:
-    """The body's root: the description's root link, or the one link it carries on a
-    ``floating`` joint (a simulator's ``world`` holding the free body it spawns)."""
+    """The body's root: the description's root link, or the one link it carries, on a
+    ``floating`` joint (a simulator's ``world`` holding the free body it spawns, and nothing
+    else)."""
     root = tree.urdf.root
-    floating = [joint.child for joint in tree.urdf.children(root) if joint.type == "floating"]
-    return floating[0] if len(floating) == 1 else root
+    children = tree.urdf.children(root)
+    if len(children) == 1 and children[0].type == "floating":
+        return children[0].child
+    return root
 
 
 def _on_the_root(tree: JointTree, link: str) -> bool:

@@ -76,6 +76,8 @@ _SIDE = re.compile(r"(^|[_/-])(l|r|left|right)([_/-]|$)", re.IGNORECASE)
 # A side last in a sensor name: one device's two channels (``nav_cam/left``, ``nav_cam/right``),
 # not two devices named for their sides (``left_eye_camera``).
 _LAST_SIDE = re.compile(r"[_/-](l|r|left|right)$", re.IGNORECASE)
+# A link named for a camera (``camera_link``, ``link_nav_cam``, ``bb2_cam``; not ``camshaft``).
+_CAMERA_LINK = re.compile(r"cam(era)?([^a-z]|$)|realsense|kinect|openni|xtion", re.IGNORECASE)
 # The widest baseline of a stereo camera (metres): two frames farther apart are two cameras.
 _BASELINE = 0.3
 # A horizontal fan of rays narrower than this (radians, twenty degrees) points one way: a range
@@ -399,8 +401,9 @@ def _stereo_pairs(found: list[Detection], urdf: Urdf) -> list[Detection]:
     names that differ only by a side (``wide_stereo_l_...`` and ``wide_stereo_r_...``); with
     one name on two frames that differ only by a side (``duo3d_left_link`` and
     ``duo3d_right_link``) on one rigid body, a stereo baseline apart and facing one way; or on
-    one frame, named for one device and then a side (``nav_cam/left`` and ``nav_cam/right``, a
-    stereo head's two channels; ``left_eye_camera`` and ``right_eye_camera`` are two eyes)."""
+    one frame named for a camera, not the root, named for one device and then a side
+    (``nav_cam/left`` and ``nav_cam/right``, a stereo head's two channels; ``left_eye_camera``
+    and ``right_eye_camera`` are two eyes: :func:`_stereo_head`)."""
     pairs: dict[tuple[str, str, str], list[Detection]] = {}  # (by what, name, frame)
     for detection in found:
         if detection.kind != "camera":
@@ -410,8 +413,8 @@ def _stereo_pairs(found: list[Detection], urdf: Urdf) -> list[Detection]:
         elif detection.link is not None and _SIDE.search(detection.link):
             key = ("frame", detection.name, _unsided(detection.link))
             pairs.setdefault(key, []).append(detection)
-        elif detection.link is not None and _LAST_SIDE.search(detection.name):
-            key = ("sides", _unsided(detection.name), detection.link)
+        elif _stereo_head(detection, urdf):
+            key = ("sides", _unsided(detection.name), detection.link or "")
             pairs.setdefault(key, []).append(detection)
     poses: list[Poses] = []  # computed once, when two frames are compared
     known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
@@ -434,6 +437,16 @@ def _stereo_pairs(found: list[Detection], urdf: Urdf) -> list[Detection]:
                 Detection("stereo_camera", _pair_name(*both), detection.source, detection.link)
             )
     return kept
+
+
+def _stereo_head(detection: Detection, urdf: Urdf) -> bool:
+    """A camera named for one device and then a side (``nav_cam/left``) on a link named for a
+    camera (``link_nav_cam``), not the root: a stereo head's channel. Cameras a description
+    puts all on its body or root (each with a pose of its own, facing any way) say nothing."""
+    link = detection.link
+    if link is None or link == urdf.root or not _LAST_SIDE.search(detection.name):
+        return False
+    return bool(_CAMERA_LINK.search(link))
 
 
 def _unsided(name: str) -> str:

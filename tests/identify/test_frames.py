@@ -6,7 +6,7 @@ from __future__ import annotations
 import pytest
 
 from solver.identify import load_profile
-from solver.identify.frames import named_frames, sensors_on_frames
+from solver.identify.frames import _Naming, named_frames, sensors_on_frames
 from solver.identify.identification import identify_urdf
 from solver.identify.readers.urdf import parse_urdf
 from solver.identify.readers.workspace import ShippedFile, Workspace
@@ -389,6 +389,43 @@ def test_an_imu_driver_launched_naming_no_link_names_the_descriptions_one_imu(la
     assert kinds(shipping(launch=launch), two) == {}
 
 
+def test_a_driver_naming_no_link_leaves_a_camera_another_file_names_as_that_file_says() -> None:
+    # A webcam named by its optical frame, and a RealSense launched whose frames the
+    # description does not draw: the drawn camera stays the webcam.
+    car = drawn(("base_link", "front_camera_link"), ("front_camera_link", "front_camera_optical"))
+    files = shipping(
+        usb_launch='<node pkg="usb_cam"><param name="frame_id" value="front_camera_optical"/>',
+        rs_launch='<include file="$(find realsense2_camera)/launch/rs_camera.launch"/>',
+    )
+    assert kinds(files, car) == {"camera": 1}
+    # A camera whose name says thermal is no depth camera's.
+    thermal = drawn(("base_link", "thermal_camera_link"))
+    assert kinds(shipping(rs_launch=files.files[1].text), thermal) == {}
+
+
+def test_a_pan_tilt_cameras_links_are_its_one_camera() -> None:
+    # camera_pan_link -> camera_tilt_link -> camera_link: one camera, the run's topmost link.
+    head = (
+        '<robot name="r"><link name="base_link"/>'
+        + "".join(
+            f'<link name="{child}"/><joint name="{child}_j" type="{kind}"><parent link="{parent}"/>'
+            f'<child link="{child}"/><axis xyz="0 0 1"/>'
+            '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint>'
+            for parent, child, kind in (
+                ("base_link", "camera_pan_link", "revolute"),
+                ("camera_pan_link", "camera_tilt_link", "revolute"),
+                ("camera_tilt_link", "camera_link", "fixed"),
+            )
+        )
+        + "</robot>"
+    )
+    launched = shipping(launch='<node pkg="usb_cam" type="usb_cam_node"/>')
+    assert frames_and_kinds(launched, head) == (
+        {"camera_pan_link": "camera driver launched in launch"},
+        {"camera": 1},
+    )
+
+
 def test_a_depth_camera_driver_whose_default_name_is_no_link_names_the_one_camera() -> None:
     # openni_launch's camera is `camera`, kinect2_bridge's `kinect2`: the description calls its
     # one Kinect `kinect`, with its depth frame beneath.
@@ -519,8 +556,21 @@ def test_a_frame_id_no_link_has_names_the_numbered_links_it_begins_a_device_each
     driver = shipping(kit_yaml="ultrasonic_sensor_node:\n  frame_id: ultrasonic_link\n")
     assert kinds(driver, ring) == {"sonar": 4}
     assert kinds(driver, sonar_ring(["ultrasonic_link_0", "ultrasonic_link"])) == {"sonar": 1}
+    # A link of the frame id's own name is the one it names, numbered links beside it or not.
+    both = sonar_ring(["ultrasonic_link", "ultrasonic_link_0", "ultrasonic_link_1"])
+    assert kinds(driver, both) == {"sonar": 1}
     # One numbered link is no series: the frame id names nothing.
     assert kinds(driver, sonar_ring(["ultrasonic_link_0"])) == {}
+    # The number may follow the name with no separator (`sonar1`, `sonar2`).
+    plain = shipping(kit_yaml="frame_id: sonar\n")
+    assert kinds(plain, sonar_ring(["sonar1", "sonar2"])) == {"sonar": 2}
+
+
+def test_a_numbered_series_is_named_once_however_often_the_files_give_it() -> None:
+    # A stranger's file may give one frame id a million times: the series is walked once.
+    naming = _Naming(parse_urdf(sonar_ring(["s_0", "s_1", "s_2"]), "r.urdf"), PROFILE)
+    assert naming.numbered("s_") == ["s_0", "s_1", "s_2"]
+    assert naming.numbered("s_") == []
 
 
 @pytest.mark.parametrize(

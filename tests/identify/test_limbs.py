@@ -1423,6 +1423,12 @@ def test_the_same_chains_on_a_body_bolted_to_the_world_stay_arms() -> None:
     assert "leg" not in [limb.kind for limb in result.body.limbs]
 
 
+def test_a_world_holding_the_robot_fixed_beside_a_free_ball_still_bolts_it() -> None:
+    robot = nameless_humanoid(root="world")
+    builders.placed(robot, "ball_joint", "floating", "world", "ball", xyz="1 0 0.5")
+    assert "leg" not in leg_kinds(robot)
+
+
 def test_two_chains_hanging_from_a_body_a_world_holds_on_a_floating_joint_are_its_legs() -> None:
     # A simulator's world holds the free body it spawns 0.3 m up: the body, not the world, is
     # what the legs hang below; a floating joint bolts nothing.
@@ -1749,19 +1755,24 @@ def test_corner_named_chains_on_a_body_tracks_move_are_flippers_not_legs() -> No
     assert any(limb.why.startswith("a flipper") for limb in result.body.limbs)
 
 
-def rover_with_panels(*, panel_z: float | None) -> RobotText:
-    """Six wheels on the body's sides and two two-joint panels named by their corner
-    (``panel_back_left`` ..) hinged at ``panel_z`` above the body's origin (none: no panels)."""
+def rover_with_panels(
+    *, panel_z: float | None, wheels: tuple[float, ...] = (0.5, 0.0, -0.5), front_z: float = -0.15
+) -> RobotText:
+    """A pair of wheels on the body's sides at each x of ``wheels`` (the first pair's axle at
+    ``front_z``, the others' at -0.15; three wheels when one x is given as ``-x``: a tricycle's
+    front wheel alone) and two two-joint panels named by their corner (``panel_back_left`` ..)
+    hinged at ``panel_z`` above the body's origin (none: no panels)."""
     robot = RobotText("rover")
-    for i, x in enumerate((0.5, 0.0, -0.5)):
-        for side, y in (("left", 0.4), ("right", -0.4)):
+    for i, x in enumerate(wheels):
+        sides = (("mid", 0.0),) if x < 0 and i == 0 else (("left", 0.4), ("right", -0.4))
+        for side, y in sides:
             builders.placed(
                 robot,
                 f"drive_{i}_{side}",
                 "continuous",
                 robot.root,
                 f"wheel_{i}_{side}",
-                xyz=f"{x} {y} -0.15",
+                xyz=f"{abs(x)} {y} {front_z if i == 0 else -0.15}",
                 axis="0 1 0",
             )
     robot.fixed(robot.root, "panel_top")
@@ -1787,24 +1798,51 @@ def rover_with_panels(*, panel_z: float | None) -> RobotText:
     return robot
 
 
+def leg_kinds(robot: RobotText) -> list[str]:
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    return [limb.kind for limb in result.body.limbs]
+
+
 def test_corner_named_chains_above_the_axles_of_a_wheeled_body_are_no_legs() -> None:
     result = identify_urdf(rover_with_panels(panel_z=0.5).text())
     assert result.structure == "UGV"
     assert result.body is not None
     assert "leg" not in [limb.kind for limb in result.body.limbs]
     # Hanging below the axles, they may reach the ground: legs still.
-    low = identify_urdf(rover_with_panels(panel_z=-0.3).text())
-    assert low.body is not None
-    assert [limb.kind for limb in low.body.limbs].count("leg") == 2
+    assert leg_kinds(rover_with_panels(panel_z=-0.3)).count("leg") == 2
+    # Three wheels are enough to roll on (a tricycle's front wheel and a rear pair).
+    assert "leg" not in leg_kinds(rover_with_panels(panel_z=0.5, wheels=(-0.5, -0.5)))
+    # Above every axle: a pair of wheels drawn higher (0.2) keeps tips at 0.0 legs.
+    assert leg_kinds(rover_with_panels(panel_z=0.0, front_z=0.2)).count("leg") == 2
+
+
+def test_legs_named_as_legs_above_the_axles_of_a_cart_stay_legs() -> None:
+    # A humanoid standing on a four-wheeled cart: its hips, knees and ankles say legs.
+    robot = rover_with_panels(panel_z=None, wheels=(0.3, -0.3))
+    robot.fixed(robot.root, "pelvis")
+    for side, y in (("left", 0.1), ("right", -0.1)):
+        placed_chain(robot, "pelvis", f"{side}_hip", start=f"0 {y} 0.9", steps=["0 0 -0.3"] * 2)
+        placed_chain(
+            robot, "pelvis", f"{side}_shoulder", start=f"0 {y * 2} 1.4", steps=["0 0 -0.25"] * 2
+        )
+    assert leg_kinds(robot).count("leg") == 2
 
 
 def test_legs_drawn_raised_beside_two_wheel_modules_are_still_legs() -> None:
     # Two wheel modules of two joints each (four joints read as wheels, two wheels that turn
-    # as leaves) and four legs drawn with their feet up: a leg-and-wheel hybrid.
+    # as leaves) and four legs named by their corners drawn with their feet up: a leg-and-wheel
+    # hybrid.
     robot = RobotText("hybrid")
     for side, y in (("a", 0.2), ("b", -0.2)):
         hip = builders.placed(
-            robot, f"wheel_{side}_j1", "revolute", robot.root, f"wheel_{side}_l1", xyz=f"0 {y} 0"
+            robot,
+            f"wheel_{side}_j1",
+            "continuous",
+            robot.root,
+            f"wheel_{side}_l1",
+            xyz=f"0 {y} 0",
+            axis="0 1 0",
         )
         builders.placed(
             robot,
@@ -1815,15 +1853,15 @@ def test_legs_drawn_raised_beside_two_wheel_modules_are_still_legs() -> None:
             xyz="0 0 -0.1",
             axis="0 1 0",
         )
-    for i, (x, y) in enumerate(((0.2, 0.15), (0.2, -0.15), (-0.2, 0.15), (-0.2, -0.15))):
-        top = builders.placed(
-            robot, f"leg_{i}_j1", "revolute", robot.root, f"leg_{i}_l1", xyz=f"{x} {y} 0"
-        )
+    corners = {"front_left": (0.2, 0.15), "front_right": (0.2, -0.15)}
+    corners |= {"rear_left": (-0.2, 0.15), "rear_right": (-0.2, -0.15)}
+    for i, (x, y) in corners.items():
+        top = builders.placed(robot, f"{i}_j1", "revolute", robot.root, f"{i}_l1", xyz=f"{x} {y} 0")
         knee = builders.placed(
-            robot, f"leg_{i}_j2", "revolute", top, f"leg_{i}_l2", xyz="0.1 0 0.05", axis="0 1 0"
+            robot, f"{i}_j2", "revolute", top, f"{i}_l2", xyz="0.1 0 0.05", axis="0 1 0"
         )
         builders.placed(
-            robot, f"leg_{i}_j3", "revolute", knee, f"leg_{i}_foot", xyz="0.1 0 0.05", axis="0 1 0"
+            robot, f"{i}_j3", "revolute", knee, f"{i}_tip", xyz="0.1 0 0.05", axis="0 1 0"
         )
     result = identify_urdf(robot.text())
     assert result.body is not None

@@ -393,8 +393,8 @@ def test_a_devices_two_sided_channels_on_one_frame_are_one_stereo_camera(
 ) -> None:
     robot = builders.ugv()
     for side in sides:
-        robot.add(builders.gazebo_sensor("head", "camera", f"nav_cam/{side}"))
-        robot.add(builders.gazebo_sensor("mast", "camera", f"loc_cam_{side}"))
+        robot.add(builders.gazebo_sensor("link_nav_cam", "camera", f"nav_cam/{side}"))
+        robot.add(builders.gazebo_sensor("loc_camera_link", "camera", f"loc_cam_{side}"))
     found = [(d.kind, d.name) for d in sensors_from_urdf(parse_urdf(robot.text()), load_profile())]
     assert found == [
         ("stereo_camera", f"nav_cam/{sides[0]}+{sides[1]}"),
@@ -402,10 +402,18 @@ def test_a_devices_two_sided_channels_on_one_frame_are_one_stereo_camera(
     ]
 
 
-def test_sided_channels_on_two_frames_no_side_names_stay_two_cameras() -> None:
+@pytest.mark.parametrize(
+    ("left", "right"),
+    [
+        ("nav_camera_link", "mast_camera_link"),  # two frames named by no side
+        ("mast", "mast"),  # one frame not named for a camera
+        ("base_link", "base_link"),  # the root, where a description puts any sensor
+    ],
+)
+def test_sided_cameras_not_on_one_camera_frame_stay_two_cameras(left: str, right: str) -> None:
     robot = builders.ugv()
-    robot.add(builders.gazebo_sensor("head", "camera", "cam_left"))
-    robot.add(builders.gazebo_sensor("mast", "camera", "cam_right"))
+    robot.add(builders.gazebo_sensor(left, "camera", "cam_left"))
+    robot.add(builders.gazebo_sensor(right, "camera", "cam_right"))
     found = [d.kind for d in sensors_from_urdf(parse_urdf(robot.text()), load_profile())]
     assert found == ["camera", "camera"]
 
