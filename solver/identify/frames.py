@@ -300,7 +300,7 @@ class _Naming:
         return links if len(links) > 1 else []
 
     def read(self, text: str, path: str) -> None:
-        """What one file names: frame ids, camera names, and the drivers it launches'."""
+        """What one file names: frame ids, camera names, and the drivers it launches."""
         self.frame_ids(text, path)
         named = False
         for match in _DEVICE_NAME.finditer(text):
