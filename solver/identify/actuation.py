@@ -32,7 +32,7 @@ from collections import Counter
 from collections.abc import Iterator, Mapping
 
 from solver.identify.hands import endless_jaws, gripper_closure, jaws
-from solver.identify.limbs import moved_by, nearest_above, points_a_sensor
+from solver.identify.limbs import CORNER, moved_by, nearest_above, points_a_sensor
 from solver.identify.pose import Vector, local_axis, parallel, spread
 from solver.identify.readers.urdf import Joint
 from solver.identify.roles import POSED, Role, main_axis
@@ -74,8 +74,8 @@ _DEEPEST_WALK = 64
 # pattern's (rules/identification.yaml, ``leg``).
 _ONLY_A_CORNER = re.compile(
     r"(?:[\w.-]+/)*(?:(?:joint|link|jnt|lnk|j|l)[_-]?)?"
-    r"(?:(?:left|right)_?(?:front|rear|hind|back)|(?:front|rear|hind|back)_?(?:left|right))"
-    r"(?:[_-]?(?:joint|link|jnt|lnk|j|l))?[_\d]*",
+    + CORNER
+    + r"(?:[_-]?(?:joint|link|jnt|lnk|j|l))?[_\d]*",
     re.IGNORECASE,
 )
 # Wheel-legged robots roll on two legs' wheels or four (bipeds, quadrupeds).

@@ -72,7 +72,7 @@ from __future__ import annotations
 import math
 import re
 from collections import Counter, deque
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, replace
 from itertools import combinations, islice, pairwise
 from typing import NamedTuple
@@ -94,6 +94,7 @@ from solver.identify.tree import JointTree
 from solver.untrusted import shown
 
 __all__ = [
+    "CORNER",
     "LIMB_KINDS",
     "Limb",
     "arms_beside_legs",
@@ -199,11 +200,10 @@ _PLANAR_SPINE_JOINTS = 12
 _BODY_WHEELS = 3
 _MOST_RAISED_LEGS = 16
 # A body's corner in a name (``front_left``, ``rear_right``, ``left_back``): a leg's name on a
-# walker, a panel's or a bumper's on a rover.
-_CORNER = re.compile(
-    r"(left|right)[_-]?(front|rear|hind|back)|(front|rear|hind|back)[_-]?(left|right)",
-    re.IGNORECASE,
-)
+# walker, a panel's or a bumper's on a rover, as often a wheel's. Its words are the leg
+# pattern's (rules/identification.yaml, ``leg``).
+CORNER = r"(?:(?:left|right)_?(?:front|rear|hind|back)|(?:front|rear|hind|back)_?(?:left|right))"
+_CORNER = re.compile(CORNER, re.IGNORECASE)
 # A robot that calls itself a snake, read as a word (``snake``, ``robosnake``, ``snakebot``,
 # ``sea_snake``, ``Snake Robot``): its one chain of turning joints, nothing else, is a spine
 # however short or unevenly drawn (a bare chain with no axes or geometry, a two-joint student
@@ -999,7 +999,7 @@ def raised_legs(tree: JointTree, limbs: list[Limb], roles: Mapping[str, Role]) -
     ]
     if not legs or len(wheels) < _BODY_WHEELS or len(legs) > _MOST_RAISED_LEGS:
         return limbs
-    carried = _carried_by(tree, legs)
+    carried = set().union(*(_below(tree, first) for first in _first_joints(tree, legs)))
     if any(wheel.name in carried for wheel in wheels):
         return limbs
     axles = max(tree.poses.place(wheel.child)[2] for wheel in wheels)
@@ -1012,15 +1012,12 @@ def raised_legs(tree: JointTree, limbs: list[Limb], roles: Mapping[str, Role]) -
     ]
 
 
-def _carried_by(tree: JointTree, limbs: list[Limb]) -> set[str]:
-    """The joints below each of ``limbs``' first joints (at most ``_MOST_LOOP_JOINTS`` each)."""
-    carried: set[str] = set()
+def _first_joints(tree: JointTree, limbs: list[Limb]) -> Iterator[Joint]:
+    """Each of ``limbs``' first joints (those the description has)."""
     for limb in limbs:
         first = tree.urdf.joint(limb.joints[0])
         if first is not None:
-            below = islice(tree.urdf.subtree_joints(first.child), _MOST_LOOP_JOINTS)
-            carried |= {joint.name for joint in below}
-    return carried
+            yield first
 
 
 def _named_by_corner_only(tree: JointTree, limb: Limb) -> bool:
