@@ -524,7 +524,7 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
         underwater_hints=underwater_hints(tree),
         water_frames=water_frames(tree),
         vessel_name=vessel_name(tree, parts.roles, parts.limbs),
-        rig_name=(f"robot name {urdf.name}",) if tree.reader.named_rig else (),
+        rig_name=(tree.reader.named_rig,) if tree.reader.named_rig else (),
         flight_hints=flight_hints(tree, parts.roles, parts.limbs),
         finger_motions=sum(1 for name in parts.grippers if (j := urdf.joint(name)) and j.actuated),
         fixed_gripper=fixed_gripper,

@@ -12,7 +12,9 @@ a driver that stamps its data with that frame (``frame_id: imu_link`` in its con
   (:mod:`solver.identify.readers.workspace`) gives a driver a link of the description as its
   frame id: a key ``frame_id``, ``frame``, ``frame_name`` or one a device's word begins
   (``imu_frame``, ``camera_frame_id``; not a node's ``target_frame``, where it looks a
-  transform up), the value naming the link whole or by its last ``/`` segment (and a link the
+  transform up), the value (quoted after a prefix the node joins to it too:
+  ``tf::resolve(tf_prefix_, "imu_link")``, ``prefix + "/imu_link"``) naming the link whole or by
+  its last ``/`` segment (and a link the
   description writes under a namespace of its own, ``rc_12345/front_lidar``, by its last
   segment, when no other link ends so: ``$(var rc)/front_lidar``); or lists several, one per
   device (a device's word before ``frame_id`` or ``frame_ids`` and a list on one line: a
@@ -109,8 +111,14 @@ _VALUE = r"(?:\$\([^()\n]{0,80}\))?/?([A-Za-z0-9_][A-Za-z0-9_/.-]{0,199})"
 # roscpp's `nh.param("frame_id", frame_id_, std::string("x"))`, a variable between, only in a
 # `param` call (a log line's `("frame_id", frame, "x")` gives no frame).
 _QUOTED_KEY = r"""["'][~/]?""" + _KEY + r"""["'][ \t]{0,3},[ \t]{0,8}"""
+# A prefix a node joins before the quoted frame id: roscpp's `tf::resolve(tf_prefix_, "x")`,
+# a namespace added `prefix + "/x"` (a variable, then the value in quotes).
+_PREFIXED = (
+    r"""(?:[A-Za-z_][A-Za-z0-9_:.]{0,40}\([ \t]{0,3}[A-Za-z_][A-Za-z0-9_.]{0,40}[ \t]{0,3},"""
+    r"""|[A-Za-z_][A-Za-z0-9_.]{0,40}[ \t]{0,3}\+)[ \t]{0,8}["']"""
+)
 _ASSIGNED = re.compile(
-    _KEY + r"""["']?[ \t]{0,3}(?::=|:|=)[ \t]{0,8}["']?""" + _VALUE
+    _KEY + r"""["']?[ \t]{0,3}(?::=|:|=)[ \t]{0,8}(?:""" + _PREFIXED + r"""|["']?)""" + _VALUE
     + r"|" + _QUOTED_KEY + r"""(?:default(?:_value)?[ \t]{0,3}=[ \t]{0,3})?["']""" + _VALUE
     + r"""|(?<![A-Za-z0-9_])param(?:<[A-Za-z0-9_:]{0,30}>)?\([ \t]{0,3}""" + _QUOTED_KEY
     + r"""[A-Za-z_][A-Za-z0-9_.]{0,60}[ \t]{0,3},[ \t]{0,8}(?:std::string\([ \t]{0,3})?["']"""

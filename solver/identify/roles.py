@@ -135,6 +135,25 @@ _RIG_NAME = re.compile(
     re.IGNORECASE,
 )
 
+
+def _rig_on_undeclared_root(urdf: Urdf) -> str | None:
+    """The link that names the body a rig of sensors, when the description hangs from a link
+    it never declares (a vehicle's ``base_link``, which the vehicle's own description makes)
+    and a link fixed to it is named for one (``sensor_kit_base_link``): a kit made to be
+    included by a vehicle, not the vehicle. None otherwise."""
+    root = urdf.link(urdf.root)
+    if root is None or root.declared:
+        return None
+    return next(
+        (
+            f"link {joint.child} on undeclared {root.name}"
+            for joint in urdf.children(root.name)
+            if not joint.movable and _RIG_NAME.search(joint.child)
+        ),
+        None,
+    )
+
+
 # A robot name that says a craft below the surface, read as whole words (``rov_model``,
 # ``my_auv``, ``submarine``; not ``rover``), an ROV's or AUV's with a usual prefix too
 # (``AROV``, ``bluerov2``, ``openrov``; not ``petrov`` or ``improv``).
@@ -182,7 +201,12 @@ class RoleReader:
         self.named_vessel = self._named_vessel()
         self.named_submersible = self._name_says(_SUBMERSIBLE_NAME)
         self.named_airship = self._name_says(_AIRSHIP_NAME)
-        self.named_rig = bool(_RIG_NAME.search(urdf.name))
+        # What names the body a rig of sensors (the robot's name, else a kit's link), or None.
+        self.named_rig = (
+            f"robot name {urdf.name}"
+            if _RIG_NAME.search(urdf.name)
+            else _rig_on_undeclared_root(urdf)
+        )
         # A craft its thrusters fly in air or space (a reaction wheel, air thrusters), nothing
         # of water beside them (no water plugin, no name of a boat or a submersible): the
         # thrusters do not put it in water.

@@ -96,6 +96,23 @@ def test_every_way_a_driver_is_given_its_frame_id_is_read() -> None:
     }
 
 
+def test_a_frame_id_a_node_joins_to_its_prefix_names_the_frame() -> None:
+    """roscpp's ``tf::resolve(tf_prefix_, "x")`` and a namespace added before the quoted
+    frame id (``prefix + "/x"``) give the frame ``x``; a variable alone names none."""
+    urdf = parse_urdf(ROVER, "r")
+    written = {
+        "a": 'range.header.frame_id = tf::resolve(tf_prefix_, "imu_link");',
+        "b": 'fix.header.frame_id = tf_prefix_ + "/gps_link";',
+        "c": "self.frame_id = self.namespace + 'laser'",
+        "d": "msg.header.frame_id = frame_id_;  // camera_link",
+    }
+    assert named_frames(shipping(**written), urdf, PROFILE) == {
+        "imu_link": "frame id in a",
+        "gps_link": "frame id in b",
+        "laser": "frame id in c",
+    }
+
+
 # A cleaning robot drawn as frames: four cliff sensors, two light-bumper IR sensors, two
 # bumper switches, and its driver's lists of their frames.
 CLEANER = drawn(
@@ -454,6 +471,24 @@ def test_an_infrared_range_frame_a_driver_publishes_in_is_an_ir_range_sensor() -
     )
     # The camera's infrared stream is the camera's.
     assert kinds(broadcasters, base) == {"ir_range": 2, "camera": 1}
+
+
+def test_an_ultrasound_frame_a_driver_publishes_in_is_a_sonar() -> None:
+    base = drawn(("base_link", "ultrasound_front"), ("base_link", "ultrasonic_rear"))
+    named = shipping(
+        driver_cc='range.header.frame_id = "ultrasound_front";\n'
+        'range.header.frame_id = "ultrasonic_rear";\n'
+    )
+    assert kinds(named, base) == {"sonar": 2}
+
+
+def test_a_time_of_flight_rangers_frame_a_driver_publishes_in_is_an_ir_range_sensor() -> None:
+    base = drawn(("base_link", "vl53l0x_0"), ("base_link", "tof_rear"), ("base_link", "toffee"))
+    named = shipping(
+        driver_cc='msg.header.frame_id = "vl53l0x_0";\nmsg.header.frame_id = "tof_rear";\n'
+        'msg.header.frame_id = "toffee";\n'
+    )
+    assert kinds(named, base) == {"ir_range": 2}
 
 
 def test_a_frame_whose_name_holds_ir_inside_a_word_is_no_ir_range_sensor() -> None:

@@ -742,6 +742,41 @@ def test_a_rig_of_sensors_a_vehicle_carries_is_not_that_vehicle(tmp_path: Path, 
     assert f"{said}read as it)" in result.evidence
 
 
+class _Undeclared(RobotText):
+    """A description hung from its root link without declaring it (a vehicle's ``base_link``,
+    which the vehicle's own description makes)."""
+
+    def text(self) -> str:
+        return super().text().replace(f'  <link name="{self.root}"/>\n', "", 1)
+
+
+def kit(top: str) -> RobotText:
+    """A kit whose ``top`` link hangs from an undeclared ``base_link``, a lidar frame on it."""
+    robot = _Undeclared("vehicle")
+    robot.fixed(robot.fixed(robot.root, top), "lidar_link")
+    return robot
+
+
+def test_a_kit_hung_from_a_link_its_description_never_declares_is_a_rig_of_sensors(
+    tmp_path: Path,
+) -> None:
+    structure, evidence = read_with(tmp_path, kit("sensor_kit_base_link"), "ugv_base: {}")
+    assert structure == "Other"
+    said = "a rig of sensors by its name: link sensor_kit_base_link on undeclared base_link"
+    assert f"{said} (no vehicle its packages name is read as it)" in evidence
+
+
+def test_a_kits_link_on_a_declared_base_or_a_plain_mount_leaves_the_packages_vehicle(
+    tmp_path: Path,
+) -> None:
+    """A vehicle that declares its base and carries the kit is the vehicle; a part hung from
+    an undeclared link whose name says no rig is its packages' vehicle too."""
+    vehicle = RobotText("vehicle")
+    vehicle.fixed(vehicle.fixed(vehicle.root, "sensor_kit_base_link"), "lidar_link")
+    assert read_with(tmp_path / "vehicle", vehicle, "ugv_base: {}")[0] == "UGV"
+    assert read_with(tmp_path / "mount", kit("lidar_mount"), "ugv_base: {}")[0] == "UGV"
+
+
 def test_a_body_named_for_a_kit_of_no_sensors_is_still_its_packages_vehicle(tmp_path: Path) -> None:
     for name in ("starter_kit", "sensorless_rover", "rigid_body", "drilling_rig", "leg_test_rig"):
         assert read_with(tmp_path / name, one_link(name), "ugv_base: {}")[0] == "UGV", name

@@ -75,6 +75,9 @@ class Link:
     # Its first <visual> when that is a cylinder: what its shape says (a propeller's disc, a
     # wheel); None for a mesh, a box, or no visual.
     cylinder: Cylinder | None = None
+    # False for a link a joint names that no <link> declares, read as an implicit link: the
+    # link of another description this one is made to hang from (a vehicle's base_link).
+    declared: bool = True
 
 
 @dataclass(frozen=True, slots=True)
@@ -557,7 +560,7 @@ class _Builder:
                     code="urdf-missing-link",
                 )
                 # Read as an implicit link: an attachment described alone still has a body.
-                links[link] = Link(link, line_of(tag))
+                links[link] = Link(link, line_of(tag), declared=False)
             ends[end] = link
         if ends["parent"] == ends["child"]:
             self.fault(

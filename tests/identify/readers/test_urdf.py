@@ -46,6 +46,19 @@ def test_a_joint_naming_a_missing_link_is_located_at_that_element() -> None:
     ]
 
 
+def test_a_link_a_joint_names_but_no_element_declares_is_read_as_undeclared() -> None:
+    text = (
+        '<robot name="kit">\n<link name="kit_link"/>\n<joint name="j" type="fixed">\n'
+        '<parent link="base_link"/>\n<child link="kit_link"/>\n</joint>\n</robot>'
+    )
+    urdf = parse_urdf(text, "kit.urdf", strict=False)
+    assert urdf.root == "base_link"
+    assert [(link.name, link.declared) for link in urdf.links] == [
+        ("kit_link", True),
+        ("base_link", False),
+    ]
+
+
 def test_every_problem_of_a_file_is_reported_at_once() -> None:
     text = (
         '<robot name="r">\n<link name="a"/>\n<link name="a"/>\n'
