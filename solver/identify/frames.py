@@ -111,14 +111,18 @@ _VALUE = r"(?:\$\([^()\n]{0,80}\))?/?([A-Za-z0-9_][A-Za-z0-9_/.-]{0,199})"
 # roscpp's `nh.param("frame_id", frame_id_, std::string("x"))`, a variable between, only in a
 # `param` call (a log line's `("frame_id", frame, "x")` gives no frame).
 _QUOTED_KEY = r"""["'][~/]?""" + _KEY + r"""["'][ \t]{0,3},[ \t]{0,8}"""
-# A prefix a node joins before the quoted frame id: roscpp's `tf::resolve(tf_prefix_, "x")`,
-# a namespace added `prefix + "/x"` (a variable, then the value in quotes).
+# A prefix a node joins before the quoted frame id, after `=` or `:=` only (not a statement's
+# colon): roscpp's `tf::resolve(tf_prefix_, "x")` or another call named to resolve or join a
+# name (`os.path.join(ns, "x")`; not `putText(frame, "x")` or `lookup_transform(a, "x")`), or a
+# namespace added `prefix + "/x"` (a variable, then the value in quotes).
 _PREFIXED = (
-    r"""(?:[A-Za-z_][A-Za-z0-9_:.]{0,40}\([ \t]{0,3}[A-Za-z_][A-Za-z0-9_.]{0,40}[ \t]{0,3},"""
+    r"""(?::=|=)[ \t]{0,8}"""
+    r"""(?:(?:[A-Za-z_][A-Za-z0-9_]{0,30}(?:::|\.)){0,3}(?:resolve|join)[ \t]{0,3}\([ \t]{0,3}"""
+    r"""[A-Za-z_][A-Za-z0-9_.]{0,40}[ \t]{0,3},"""
     r"""|[A-Za-z_][A-Za-z0-9_.]{0,40}[ \t]{0,3}\+)[ \t]{0,8}["']"""
 )
 _ASSIGNED = re.compile(
-    _KEY + r"""["']?[ \t]{0,3}(?::=|:|=)[ \t]{0,8}(?:""" + _PREFIXED + r"""|["']?)""" + _VALUE
+    _KEY + r"""["']?[ \t]{0,3}(?:""" + _PREFIXED + r"""|(?::=|:|=)[ \t]{0,8}["']?)""" + _VALUE
     + r"|" + _QUOTED_KEY + r"""(?:default(?:_value)?[ \t]{0,3}=[ \t]{0,3})?["']""" + _VALUE
     + r"""|(?<![A-Za-z0-9_])param(?:<[A-Za-z0-9_:]{0,30}>)?\([ \t]{0,3}""" + _QUOTED_KEY
     + r"""[A-Za-z_][A-Za-z0-9_.]{0,60}[ \t]{0,3},[ \t]{0,8}(?:std::string\([ \t]{0,3})?["']"""

@@ -137,21 +137,25 @@ _RIG_NAME = re.compile(
 
 
 def _rig_on_undeclared_root(urdf: Urdf) -> str | None:
-    """The link that names the body a rig of sensors, when the description hangs from a link
-    it never declares (a vehicle's ``base_link``, which the vehicle's own description makes)
-    and a link fixed to it is named for one (``sensor_kit_base_link``): a kit made to be
-    included by a vehicle, not the vehicle. None otherwise."""
+    """What names the body a rig of sensors when the description hangs from a link it never
+    declares (a vehicle's ``base_link``, which the vehicle's own description makes) and is a
+    kit that vehicle includes: all it fixes to that link is a link named for a rig of sensors
+    (``sensor_kit_base_link``) and mounts that carry a declared sensor (a rear lidar beside the
+    kit), nothing that moves and no body of its own. None otherwise (a vehicle's body beside
+    its kit, a pan/tilt head on the undeclared link)."""
     root = urdf.link(urdf.root)
     if root is None or root.declared:
         return None
-    return next(
-        (
-            f"link {joint.child} on undeclared {root.name}"
-            for joint in urdf.children(root.name)
-            if not joint.movable and _RIG_NAME.search(joint.child)
-        ),
-        None,
-    )
+    sensed = {tag.link for tag in urdf.sensors}
+    kit = None
+    for joint in urdf.children(root.name):
+        if joint.movable:
+            return None
+        if _RIG_NAME.search(joint.child):
+            kit = kit or joint.child
+        elif not sensed.intersection((joint.child, *urdf.fixed_below(joint.child))):
+            return None
+    return None if kit is None else f"the undeclared root's link {kit}"
 
 
 # A robot name that says a craft below the surface, read as whole words (``rov_model``,

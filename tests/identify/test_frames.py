@@ -104,13 +104,29 @@ def test_a_frame_id_a_node_joins_to_its_prefix_names_the_frame() -> None:
         "a": 'range.header.frame_id = tf::resolve(tf_prefix_, "imu_link");',
         "b": 'fix.header.frame_id = tf_prefix_ + "/gps_link";',
         "c": "self.frame_id = self.namespace + 'laser'",
-        "d": "msg.header.frame_id = frame_id_;  // camera_link",
+        "d": 'camera.frame_id = os.path.join(ns, "camera_link")',
     }
     assert named_frames(shipping(**written), urdf, PROFILE) == {
         "imu_link": "frame id in a",
         "gps_link": "frame id in b",
         "laser": "frame id in c",
+        "camera_link": "frame id in d",
     }
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        'frame = cv2.putText(frame, "laser offline", (10, 30), font, 1, color)',
+        'frame_id = tf_buffer.lookup_transform(target, "imu_link", now)',
+        'if not frame_id: print(node_name, "gps_link frame_id not set")',
+        'if frame_id == prefix + "laser": pass',
+    ],
+)
+def test_a_quoted_name_in_another_call_or_a_test_names_no_frame(text: str) -> None:
+    """Only a call that resolves or joins a name, or a prefix added, after an assignment: a
+    text drawn on an image, a transform looked up, a log line, a comparison name none."""
+    assert named_frames(shipping(node_py=text), parse_urdf(ROVER, "r"), PROFILE) == {}
 
 
 # A cleaning robot drawn as frames: four cliff sensors, two light-bumper IR sensors, two
@@ -483,12 +499,16 @@ def test_an_ultrasound_frame_a_driver_publishes_in_is_a_sonar() -> None:
 
 
 def test_a_time_of_flight_rangers_frame_a_driver_publishes_in_is_an_ir_range_sensor() -> None:
-    base = drawn(("base_link", "vl53l0x_0"), ("base_link", "tof_rear"), ("base_link", "toffee"))
-    named = shipping(
-        driver_cc='msg.header.frame_id = "vl53l0x_0";\nmsg.header.frame_id = "tof_rear";\n'
-        'msg.header.frame_id = "toffee";\n'
-    )
-    assert kinds(named, base) == {"ir_range": 2}
+    frames = ("vl53l0x_0", "tof_rear", "time_of_flight_left", "toffee")
+    base = drawn(*(("base_link", frame) for frame in frames))
+    named = shipping(driver_cc="".join(f'msg.header.frame_id = "{f}";\n' for f in frames))
+    assert kinds(named, base) == {"ir_range": 3}
+
+
+def test_a_time_of_flight_cameras_depth_frame_is_a_depth_camera() -> None:
+    base = drawn(("base_link", "tof_depth_frame"))
+    named = shipping(driver_yaml="frame_id: tof_depth_frame\n")
+    assert kinds(named, base) == {"depth_camera": 1}
 
 
 def test_a_frame_whose_name_holds_ir_inside_a_word_is_no_ir_range_sensor() -> None:

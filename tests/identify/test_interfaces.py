@@ -43,6 +43,8 @@ def test_device_of_strips_stream_segments_but_keeps_one() -> None:
         (Topic("/speech", "audio_common_msgs/AudioData", "subscribed"), "speaker"),
         (Topic("/robotsound", "sound_play/SoundRequest", "subscribed"), "speaker"),
         (Topic("/sonar_front", "sensor_msgs/Range"), "sonar"),
+        (Topic("/ultrasound/rear", "sensor_msgs/Range"), "sonar"),
+        (Topic("/cliff/left", "sensor_msgs/Range"), "ir_range"),
         (Topic("/theta/image_raw", "sensor_msgs/Image"), "camera"),
         (Topic("/omni_camera/image_raw", "sensor_msgs/Image"), "wide_angle_camera"),
     ],

@@ -17,6 +17,7 @@ from tests.identify.builders import (
     RobotText,
     arm,
     biped,
+    gazebo_sensor,
     humanoid,
     legged_manipulator,
     manipulator,
@@ -760,9 +761,14 @@ def kit(top: str) -> RobotText:
 def test_a_kit_hung_from_a_link_its_description_never_declares_is_a_rig_of_sensors(
     tmp_path: Path,
 ) -> None:
-    structure, evidence = read_with(tmp_path, kit("sensor_kit_base_link"), "ugv_base: {}")
+    robot = kit("sensor_kit_base_link")
+    # A mount beside the kit that carries a declared sensor (a rear lidar) is the kit's too.
+    robot.fixed(robot.root, "rear_lidar_mount")
+    robot.fixed("rear_lidar_mount", "rear_lidar")
+    robot.add(gazebo_sensor("rear_lidar", "ray", "rear_scan"))
+    structure, evidence = read_with(tmp_path, robot, "ugv_base: {}")
     assert structure == "Other"
-    said = "a rig of sensors by its name: link sensor_kit_base_link on undeclared base_link"
+    said = "a rig of sensors by its name: the undeclared root's link sensor_kit_base_link"
     assert f"{said} (no vehicle its packages name is read as it)" in evidence
 
 
@@ -775,6 +781,15 @@ def test_a_kits_link_on_a_declared_base_or_a_plain_mount_leaves_the_packages_veh
     vehicle.fixed(vehicle.fixed(vehicle.root, "sensor_kit_base_link"), "lidar_link")
     assert read_with(tmp_path / "vehicle", vehicle, "ugv_base: {}")[0] == "UGV"
     assert read_with(tmp_path / "mount", kit("lidar_mount"), "ugv_base: {}")[0] == "UGV"
+    # Under an undeclared root: a body of its own beside the kit (no sensor on it) is the
+    # vehicle's body; a kit's link on a joint that moves is no rig a vehicle bolts on.
+    beside = kit("sensor_kit_base_link")
+    beside.fixed(beside.root, "chassis_link")
+    assert read_with(tmp_path / "beside", beside, "ugv_base: {}")[0] == "UGV"
+    turning = _Undeclared("vehicle")
+    turning.joint("spin", "continuous", turning.root, "sensor_kit_base_link")
+    turning.fixed("sensor_kit_base_link", "lidar_link")
+    assert read_with(tmp_path / "turning", turning, "ugv_base: {}")[0] != "Other"
 
 
 def test_a_body_named_for_a_kit_of_no_sensors_is_still_its_packages_vehicle(tmp_path: Path) -> None:
