@@ -965,7 +965,7 @@ def _rolls(tree: JointTree) -> bool:
 def _tracked(tree: JointTree) -> bool:
     """Tracks move the body: a track plugin, or track-named joints."""
     return bool(tree.labels("track")) or any(
-        tree.matches("track", joint) for joint in tree.urdf.joints if joint.movable
+        tree.tread(joint) for joint in tree.urdf.joints if joint.movable
     )
 
 

@@ -82,6 +82,12 @@ class JointTree:
         """The profile's pattern for ``part`` names the joint or its child link."""
         return part in self.parts_of(joint.name) or part in self.parts_of(joint.child)
 
+    def tread(self, joint: Joint) -> bool:
+        """The joint is named as a track's and does not slide: a tread's sprocket or segment.
+        A carriage that slides on a linear track (a rail, a gantry's axis, a table game's
+        pusher) moves along it; nothing rolls."""
+        return self.matches("track", joint) and not (joint.type == "prismatic" and joint.movable)
+
     def labels(self, part: str) -> tuple[str, ...]:
         """The model plugins the profile reads as ``part``, each named once."""
         return tuple(

@@ -90,9 +90,9 @@ def grounded(tree: JointTree, roles: dict[str, Role]) -> bool:
 
 
 def tracks(tree: JointTree) -> tuple[str, ...]:
-    """Track plugins and track-named joints, each once."""
+    """Track plugins and track-named joints (:meth:`JointTree.tread`), each once."""
     found = list(tree.labels("track"))
-    found += [j.name for j in tree.urdf.joints if tree.matches("track", j)]
+    found += [j.name for j in tree.urdf.joints if tree.tread(j)]
     return tuple(dict.fromkeys(found))
 
 

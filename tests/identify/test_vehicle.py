@@ -281,6 +281,17 @@ def test_tracks_are_a_track_plugin_and_track_named_joints_each_once() -> None:
     assert grounded(tree, {})
 
 
+def test_a_carriage_sliding_on_a_linear_track_is_no_tread() -> None:
+    """Two pushers each carried by a slide along a track and a slide across it (a table
+    game's gantries): the slides are no tracks, so the body is no tracked vehicle."""
+    robot = RobotText("table")
+    for side in ("1", "2"):
+        robot.chain(robot.root, [f"base_to_track_{side}", f"track_{side}_to_pusher"], "prismatic")
+    tree = tree_of(robot)
+    assert tracks(tree) == ()
+    assert identify_urdf(robot.text()).structure != "UGV"
+
+
 def test_a_body_with_casters_alone_is_grounded_and_a_bare_one_is_not() -> None:
     tree = tree_of(RobotText("bare"))
     assert not grounded(tree, {})
