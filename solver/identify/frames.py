@@ -331,10 +331,13 @@ class _Naming:
         already. A plain camera's driver makes the one camera a camera; else a depth camera's
         driver (whose default name was no link) an RGB-D camera, unless its name says another
         kind of camera (thermal, fisheye, a webcam)."""
-        imu = self.sole_device(_IMUS)
-        if self.launches["imu"] and imu is not None and not self.named(imu, _IMUS):
+        # The description's devices are looked for only when a driver was launched.
+        imu = self.sole_device(_IMUS) if self.launches["imu"] else None
+        if imu is not None and not self.named(imu, _IMUS):
             self.note(imu, f"IMU driver launched in {self.launches['imu'][0]}")
-        camera = self.sole_camera()
+        if not (self.launches["camera"] or self.launches["depth"]):
+            return
+        camera = self.sole_device(_CAMERAS)
         if camera is None or self.named(camera, _CAMERAS):
             return
         if self.launches["camera"]:
@@ -398,15 +401,11 @@ class _Naming:
         self.note(link, how)
         return link
 
-    def sole_camera(self) -> str | None:
-        """The description's one camera, when it draws one (:meth:`sole_device`: a camera's
-        body with its stream frames beneath it, a pan/tilt camera's links with it)."""
-        return self.sole_device(_CAMERAS)
-
     def sole_device(self, kinds: frozenset[str]) -> str | None:
         """The description's one device of ``kinds``: the links the frame rules read as one
         of them, each taken to the topmost of the unbroken run of such links above it
-        (:meth:`top`), are all one link; None when the description draws none or several (a
+        (:meth:`top`: a camera's body with its stream frames beneath it, a pan/tilt camera's
+        links with it), are all one link; None when the description draws none or several (a
         driver that names no link of them says nothing of which)."""
         found: str | None = None
         for link in self.urdf.links:
