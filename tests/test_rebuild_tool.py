@@ -188,6 +188,19 @@ def test_a_source_names_the_repository_commit_file_arguments_and_srdf() -> None:
     assert tool.parse_source("PyPI example-robot-data 6.0.0 robots/x.urdf", srdf=False) is None
 
 
+def test_a_file_the_licence_note_names_is_not_the_description() -> None:
+    tool = load()
+    source = tool.parse_source(
+        "github a/b@0123abcd (LICENCE: BSD, in the header of old/b_v1.urdf (kept); no LICENSE "
+        "file) src/b_description/urdf/b.urdf.xacro [xacro->urdf]",
+        srdf=False,
+    )
+    assert source.path == "src/b_description/urdf/b.urdf.xacro"
+    # A note left open is read as the rest of the text.
+    unclosed = tool.parse_source("github a/b@0123abcd (BSD urdf/b.urdf [plain URDF]", srdf=False)
+    assert unclosed.path == "urdf/b.urdf"
+
+
 def test_a_file_xacro_expands_under_another_name_and_an_environment_it_sets_are_read() -> None:
     tool = load()
     source = tool.parse_source(

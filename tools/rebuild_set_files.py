@@ -100,7 +100,7 @@ def parse_source(text: str, *, srdf: bool) -> Source | None:
     if not found:
         return None
     first = found[0]
-    rest = text[first.end() :]
+    rest = _after_licence(text[first.end() :])
     description = next(
         (
             match
@@ -381,6 +381,21 @@ def _compiled(file: Path, source: Source, trees: Trees, roots: list[Path], taken
             roots = [*roots, added]
             taken.append(f"package {package} taken from {holder}")
     raise LookupError(f"{file}: more than 8 packages from other repositories")
+
+
+def _after_licence(rest: str) -> str:
+    """What follows the recipe's licence note: ``(LICENCE: where it says so)`` right after the
+    commit is prose, and a file it names (``BSD in robot.urdf's header``) is not the
+    description. A note left open is kept whole."""
+    stripped = rest.lstrip()
+    if not stripped.startswith("("):
+        return rest
+    depth = 0
+    for index, char in enumerate(stripped):
+        depth += {"(": 1, ")": -1}.get(char, 0)
+        if depth == 0:
+            return stripped[index + 1 :]
+    return rest
 
 
 def _placed(value: str, places: dict[str, str]) -> str:
