@@ -196,6 +196,10 @@ LIMB_KEYS = (
 # Thresholds a profile written before they existed may leave out.
 LIMB_DEFAULTS = {"finger_max_joints": 4, "min_rotors": 2, "spine_min_joints": 6}
 VELOCITY = "velocity"
+# A package rule's control that is the structure's velocity control too, commanded by the
+# navigation stack the packages ship rather than by a person: a teleop node drives a sensor
+# head trimmed from its base (solver/identify/shipped.py), navigation does not.
+NAVIGATION_VELOCITY = "navigation velocity"
 
 # The sections only a profile has are the ones that tell a profile from a rule set.
 _TOP_KEYS = {"name", "description", "characteristics", *PROFILE_SECTIONS}
@@ -450,8 +454,9 @@ class SoftwareRule:
 @dataclass(frozen=True, slots=True)
 class PackageRule:
     """What a text of the robot's packages shows (:mod:`solver.identify.shipped`): ``match``
-    found in a launch, configuration or script file means ``control`` (``velocity``: the
-    structure's velocity control), except for a structure in ``not_for`` and in a file
+    found in a launch, configuration or script file means ``control`` (``velocity``, or
+    ``navigation velocity`` for a navigation stack's commands: the structure's velocity
+    control), except for a structure in ``not_for`` and in a file
     ``unless`` finds text in (a MoveIt script's waypoints are its arm's Cartesian path)."""
 
     control: str

@@ -43,6 +43,7 @@ from solver.identify.body import Body
 from solver.identify.interfaces import Control
 from solver.identify.profile import (
     GROUND,
+    NAVIGATION_VELOCITY,
     VELOCITY,
     PackageRule,
     Pattern,
@@ -70,7 +71,9 @@ def controls_from_workspace(
     for rule in profile.package_controls:
         if structure not in rule.not_for:
             control = (
-                profile.velocity_control(structure) if rule.control == VELOCITY else rule.control
+                profile.velocity_control(structure)
+                if rule.control in (VELOCITY, NAVIGATION_VELOCITY)
+                else rule.control
             )
             rules.setdefault(control, []).append(rule)
     found = {

@@ -73,9 +73,23 @@ def test_code_commented_out_in_a_script_or_a_node_ships_nothing(
 
 
 def test_a_bringup_that_runs_nav2_ships_waypoint_goals_named_by_its_file() -> None:
-    assert shipped("UGV", "IncludeLaunchDescription('nav2_bringup')") == {
-        "Waypoint": "package craft_bringup: craft_bringup/launch/0.launch.py (nav2_bringup)"
-    }
+    assert shipped("UGV", "IncludeLaunchDescription('nav2_bringup')")["Waypoint"] == (
+        "package craft_bringup: craft_bringup/launch/0.launch.py (nav2_bringup)"
+    )
+
+
+def test_navigation_shipped_for_a_body_on_the_ground_drives_its_base() -> None:
+    # The stack that takes the goals sends the base velocity commands, whatever wheels the
+    # description draws.
+    nav2 = "IncludeLaunchDescription('nav2_bringup')"
+    for structure in ("UGV", "Mobile Manipulator", "Other"):
+        assert shipped(structure, nav2) == {
+            "Waypoint": "package craft_bringup: craft_bringup/launch/0.launch.py (nav2_bringup)",
+            "Driving": "package craft_bringup: craft_bringup/launch/0.launch.py (nav2_bringup)",
+        }, structure
+    # A vessel's, a walker's or a flier's navigation commands it another way.
+    for structure in ("Surface Vessel", "Quadruped", "UAV", "Serpentine"):
+        assert "Driving" not in shipped(structure, nav2), structure
 
 
 def test_move_base_and_position_set_points_are_navigation_too() -> None:
@@ -633,8 +647,10 @@ def test_a_file_name_is_shown_with_its_unprintable_characters_escaped() -> None:
         ("p",),
         (ShippedFile("p", "p/\x1b[2Jnav\n.launch", "<node pkg='move_base'/>"),),
     )
-    [control] = controls_from_workspace(hostile, PROFILE, "UGV")
-    assert control.source == "package p: p/\\x1b[2Jnav\\n.launch (move_base)"
+    controls = controls_from_workspace(hostile, PROFILE, "UGV")
+    assert {control.source for control in controls} == {
+        "package p: p/\\x1b[2Jnav\\n.launch (move_base)"
+    }
 
 
 def test_a_description_package_alone_read_whole_ships_no_navigation(tmp_path: Path) -> None:
