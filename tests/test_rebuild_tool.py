@@ -196,9 +196,30 @@ def test_a_file_the_licence_note_names_is_not_the_description() -> None:
         srdf=False,
     )
     assert source.path == "src/b_description/urdf/b.urdf.xacro"
-    # A note left open is read as the rest of the text.
+    # How the file was made is read right after it, past a long note.
+    made = tool.parse_source(
+        "github a/b@0123abcd (BSD, as the package.xml of the description package says it, "
+        "with no LICENSE file in the repository) urdf/b.urdf [xacro->urdf, no args]",
+        srdf=False,
+    )
+    assert (made.path, made.xacro) == ("urdf/b.urdf", True)
+    # A note left open, or one that names the only file, is read as the rest of the text.
     unclosed = tool.parse_source("github a/b@0123abcd (BSD urdf/b.urdf [plain URDF]", srdf=False)
     assert unclosed.path == "urdf/b.urdf"
+    inside = tool.parse_source("github a/b@0123abcd (BSD; the file: urdf/b.urdf)", srdf=False)
+    assert inside.path == "urdf/b.urdf"
+    # Arguments, the SRDF and other repositories are read in the whole text, the note too.
+    noted = tool.parse_source(
+        "github a/b@0123abcd (BSD; with arm:=true as launch/a.launch passes it, SRDF "
+        "moveit/b.srdf, $(find c) from github c/c@89abcdef) urdf/b.urdf.xacro [xacro->urdf]",
+        srdf=True,
+    )
+    assert (noted.path, noted.args, noted.srdf, noted.others) == (
+        "urdf/b.urdf.xacro",
+        (("arm", "true"),),
+        "moveit/b.srdf",
+        (("c/c", "89abcdef"),),
+    )
 
 
 def test_a_file_xacro_expands_under_another_name_and_an_environment_it_sets_are_read() -> None:

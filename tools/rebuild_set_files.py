@@ -14,7 +14,8 @@ development part on any machine:
 
 * a row's source is read for the repository and commit (``github owner/name@commit`` or
   ``https://github.com/owner/name @commit``), the file's path in it (the first ``.urdf``,
-  ``.xacro``, ``.gazebo`` or ``.xml`` after them, in any case, never a ``package.xml``), the
+  ``.xacro``, ``.gazebo`` or ``.xml`` after them, in any case, never a ``package.xml``; after
+  the licence note in parentheses that follows the commit, when one follows it), the
   xacro arguments it names (``name:=value``, the first value of each name; ``NAME=value`` for
   an environment variable), the SRDF's path when the row has one, and the other repositories
   it names, with ``github`` or bare (their packages resolve ``$(find ...)``);
@@ -100,18 +101,12 @@ def parse_source(text: str, *, srdf: bool) -> Source | None:
     if not found:
         return None
     first = found[0]
-    rest = _after_licence(text[first.end() :])
-    description = next(
-        (
-            match
-            for match in DESCRIPTION.finditer(rest)
-            if not match.group(1).lower().endswith(NOT_DESCRIPTIONS)
-        ),
-        None,
-    )
-    quoted = QUOTED_DESCRIPTION.search(rest)
-    if quoted is not None and (description is None or quoted.start() < description.start()):
-        description = quoted
+    rest = text[first.end() :]
+    # The text the description is named in: after the licence note, else the whole rest.
+    named_in = _after_licence(rest)
+    description = _description(named_in)
+    if description is None:
+        named_in, description = rest, _description(rest)
     if description is None:
         return None
     # The recipe's own arguments come first; the same name later is prose ("own:=false would
@@ -140,7 +135,7 @@ def parse_source(text: str, *, srdf: bool) -> Source | None:
     )
     path = description.group(1)
     # How it was made is said right after the path: "[xacro->urdf ...]", "[plain URDF ...]".
-    how = rest[description.end() : description.end() + 40]
+    how = named_in[description.end() : description.end() + 40]
     xacro = path.endswith(".xacro") or ("xacro" in how and "plain" not in how)
     return Source(
         first.group(1),
@@ -383,10 +378,29 @@ def _compiled(file: Path, source: Source, trees: Trees, roots: list[Path], taken
     raise LookupError(f"{file}: more than 8 packages from other repositories")
 
 
+def _description(text: str) -> re.Match[str] | None:
+    """The first description path ``text`` names (a ``package.xml`` is none): bare, or with
+    spaces between backquotes."""
+    description = next(
+        (
+            match
+            for match in DESCRIPTION.finditer(text)
+            if not match.group(1).lower().endswith(NOT_DESCRIPTIONS)
+        ),
+        None,
+    )
+    quoted = QUOTED_DESCRIPTION.search(text)
+    if quoted is not None and (description is None or quoted.start() < description.start()):
+        return quoted
+    return description
+
+
 def _after_licence(rest: str) -> str:
     """What follows the recipe's licence note: ``(LICENCE: where it says so)`` right after the
     commit is prose, and a file it names (``BSD in robot.urdf's header``) is not the
-    description. A note left open is kept whole."""
+    description, when a file follows the note (else the note's is: the caller looks again in
+    the whole text). A note left open gives nothing; a parenthesis the note quotes unpaired
+    (a commit message's ``:)``) ends it early or late, as it balances."""
     stripped = rest.lstrip()
     if not stripped.startswith("("):
         return rest
@@ -395,7 +409,7 @@ def _after_licence(rest: str) -> str:
         depth += {"(": 1, ")": -1}.get(char, 0)
         if depth == 0:
             return stripped[index + 1 :]
-    return rest
+    return ""
 
 
 def _placed(value: str, places: dict[str, str]) -> str:

@@ -231,6 +231,13 @@ class Body:
         return bool(self.drive_plugins) or self.count("leg") >= _WALKING_LEGS
 
     @property
+    def carried_rig(self) -> bool:
+        """A rig of sensors by its name (:attr:`rig_name`: a sensor kit a vehicle carries) that
+        travels no way of its own, or only as a simulator slides it: its packages are its
+        vehicle's, and what they ship moves the vehicle, not the rig."""
+        return bool(self.rig_name) and (self.travels_no_way or self.moved_by_plugin_alone)
+
+    @property
     def moved_by_plugin_alone(self) -> bool:
         """Plugins that move the body itself move it (a planar move, a velocity control: the
         profile's ``mover`` plugins; no diff-drive or other wheel drive among its drive
@@ -399,10 +406,10 @@ class Body:
             lines.append(f"drive plugin(s): {_names(self.drive_plugins)}")
         if self.shipped_as == GROUND:
             lines.append(f"a ground vehicle by its packages alone: {self.shipped_by}")
-        if self.rig_name and (self.travels_no_way or self.moved_by_plugin_alone):
+        if self.carried_rig:
             lines.append(
                 f"a rig of sensors by its name: {_names(self.rig_name)} (no vehicle its "
-                "packages name is read as it)"
+                "packages name is read as it, no control they ship)"
             )
         return lines
 

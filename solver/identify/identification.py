@@ -198,8 +198,11 @@ def identify_urdf(
     dives = body.marine and not body.surface_hints
     if dives:
         detections = list(under_water(detections))
+    # A rig of sensors a vehicle carries: its packages' controls move the vehicle.
     shipped = (
-        () if packages is None else controls_from_workspace(packages, profile, reading.structure)
+        ()
+        if packages is None or body.carried_rig
+        else controls_from_workspace(packages, profile, reading.structure)
     )
     legs = _legs(body)
     controls = [

@@ -217,7 +217,7 @@ _ELEMENT_KEYS = {"kind", "types", "match", "max_rays", "max_range", "wider_than"
 _PLUGIN_RULE_KEYS = {"kind", "match"}
 _TOPIC_SENSOR_KEYS = {"kind", "types", "match", "direction"}
 _TOPIC_CONTROL_KEYS = {"control", "types", "match", "direction"}
-_PACKAGE_KEYS = {"control", "match", "not_for", "unless"}
+_PACKAGE_KEYS = {"control", "match", "not_for", "only_for", "unless"}
 # What the robot's packages may say a body travels in (``body_packages``).
 GROUND = "ground"
 VEHICLE_MEDIA = ("flight", "underwater", "surface", GROUND)
@@ -456,7 +456,8 @@ class PackageRule:
     """What a text of the robot's packages shows (:mod:`solver.identify.shipped`): ``match``
     found in a launch, configuration or script file means ``control`` (``velocity``, or
     ``navigation velocity`` for a navigation stack's commands: the structure's velocity
-    control), except for a structure in ``not_for`` and in a file
+    control), except for a structure in ``not_for`` (or, when ``only_for`` lists any, one
+    not in it: a structure a profile adds is then left out too) and in a file
     ``unless`` finds text in (a MoveIt script's waypoints are its arm's Cartesian path)."""
 
     control: str
@@ -464,6 +465,12 @@ class PackageRule:
     not_for: frozenset[str] = frozenset()
     location: Location | None = field(default=None, compare=False)
     unless: Pattern | None = None
+    only_for: frozenset[str] = frozenset()
+
+    def reads(self, structure: str) -> bool:
+        """The rule is read for ``structure``: not in ``not_for``, and in ``only_for`` when
+        that lists any."""
+        return structure not in self.not_for and (not self.only_for or structure in self.only_for)
 
     def find(self, text: str) -> str | None:
         """The first text ``match`` finds in ``text``, or None (also when ``unless`` finds
@@ -993,18 +1000,25 @@ def _package_rules(reader: Reader, structures: set[str]) -> tuple[PackageRule, .
         control = reader.string((*item, "control"), "motion control")
         match = _pattern(reader, (*item, "match"))
         unless = _pattern(reader, (*item, "unless"), required=False)
-        not_for = []
-        listed = reader.names((*item, "not_for"), "structures") if "not_for" in spec else []
-        for where, structure in listed:
-            _known_structure(reader, where, structure, structures)
-            not_for.append(structure)
+        not_for, only_for = (
+            _listed_structures(reader, (*item, key), structures) if key in spec else frozenset()
+            for key in ("not_for", "only_for")
+        )
         if control and match is not None:
             found.append(
                 PackageRule(
-                    control, match, frozenset(not_for), reader.document.location(item), unless
+                    control, match, not_for, reader.document.location(item), unless, only_for
                 )
             )
     return tuple(found)
+
+
+def _listed_structures(reader: Reader, path: YPath, structures: set[str]) -> frozenset[str]:
+    """A list of the profile's structures at ``path``; an unknown one is a located fault."""
+    listed = reader.names(path, "structures")
+    for where, structure in listed:
+        _known_structure(reader, where, structure, structures)
+    return frozenset(structure for _, structure in listed)
 
 
 def _software(reader: Reader, key: str) -> SoftwareRule | None:

@@ -4,10 +4,12 @@ files run, read as text (:mod:`solver.identify.readers.workspace` finds and read
 The profile's ``motion.packages`` rules say which texts mean which control: a bringup that
 runs Nav2 or move_base, a script that streams MAVROS position set-points or follows waypoints
 (Waypoint); a teleop node (a velocity control, read by structure as topics are: Driving for a
-base, Flight for a drone, Walking for a walker); a MoveIt ``move_group`` or servo (End
-Effector). A rule may exclude structures (no navigation for an arm bolted to a table, whatever
-its repository holds). Each control names the file that shows it, the first one found in the
-order the packages were read (the description's package first).
+base, Flight for a drone, Walking for a walker), and the navigation above for a body on the
+ground, which the stack drives (Driving); a MoveIt ``move_group`` or servo (End Effector). A
+rule may exclude structures (no navigation for an arm bolted to a table, whatever its
+repository holds), or name the only ones it is read for. Each control names the file that
+shows it, the first one found in the order the packages were read (the description's package
+first).
 
 The same texts tell a body's own software from its joint controllers: packages read whole
 with a file that configures joint controllers naming a joint of its legs, shipping no gait (no
@@ -69,7 +71,7 @@ def controls_from_workspace(
     (in the order the packages were read) that one of the control's rules matches."""
     rules: dict[str, list[PackageRule]] = {}
     for rule in profile.package_controls:
-        if structure not in rule.not_for:
+        if rule.reads(structure):
             control = (
                 profile.velocity_control(structure)
                 if rule.control in (VELOCITY, NAVIGATION_VELOCITY)

@@ -241,6 +241,13 @@ def test_package_rules_are_optional_and_their_structures_are_checked() -> None:
     fault = the_fault(text)
     assert fault.location.path == "motion.packages[0].not_for[0]"
     assert "unknown structure 'Manipulater' (did you mean 'Manipulator'?)" in fault.message
+    # The structures a rule is read for only are checked as well.
+    listed = "      only_for: [UGV, Mobile Manipulator, Other]\n"
+    only = SHIPPED.replace(listed, "      only_for: [UVG]\n", 1)
+    assert only != SHIPPED
+    fault = the_fault(only)
+    assert fault.location.path.endswith("].only_for[0]")
+    assert "unknown structure 'UVG'" in fault.message
 
 
 def test_body_package_words_are_optional_and_name_only_known_media() -> None:

@@ -78,18 +78,28 @@ def test_a_bringup_that_runs_nav2_ships_waypoint_goals_named_by_its_file() -> No
     )
 
 
-def test_navigation_shipped_for_a_body_on_the_ground_drives_its_base() -> None:
+@pytest.mark.parametrize("structure", PROFILE.structure_names)
+def test_navigation_shipped_drives_a_body_on_the_ground_and_no_other(structure: str) -> None:
     # The stack that takes the goals sends the base velocity commands, whatever wheels the
-    # description draws.
+    # description draws; a vessel's, a walker's or a flier's navigation commands it another
+    # way, and an arm, a head or a hand is sent no goals at all.
     nav2 = "IncludeLaunchDescription('nav2_bringup')"
-    for structure in ("UGV", "Mobile Manipulator", "Other"):
-        assert shipped(structure, nav2) == {
-            "Waypoint": "package craft_bringup: craft_bringup/launch/0.launch.py (nav2_bringup)",
-            "Driving": "package craft_bringup: craft_bringup/launch/0.launch.py (nav2_bringup)",
-        }, structure
-    # A vessel's, a walker's or a flier's navigation commands it another way.
-    for structure in ("Surface Vessel", "Quadruped", "UAV", "Serpentine"):
-        assert "Driving" not in shipped(structure, nav2), structure
+    velocity = PROFILE.velocity_control(structure)
+    shown = shipped(structure, nav2)
+    if structure in ("UGV", "Mobile Manipulator", "Other"):
+        assert (
+            shown["Driving"]
+            == shown["Waypoint"]
+            == ("package craft_bringup: craft_bringup/launch/0.launch.py (nav2_bringup)")
+        )
+    else:
+        assert velocity not in shown
+
+
+def test_a_structure_a_profile_adds_is_not_driven_by_navigation() -> None:
+    rule = next(r for r in PROFILE.package_controls if r.control == "navigation velocity")
+    assert not rule.reads("Blimp")
+    assert rule.reads("UGV")
 
 
 def test_move_base_and_position_set_points_are_navigation_too() -> None:
@@ -756,7 +766,17 @@ def test_a_rig_of_sensors_a_vehicle_carries_is_not_that_vehicle(tmp_path: Path, 
     result = identify(described(tmp_path, one_link(name), "<node pkg='ackermann_steering'/>"))
     assert result.structure == "Other"
     said = f"a rig of sensors by its name: robot name {name} (no vehicle its packages name is "
-    assert f"{said}read as it)" in result.evidence
+    assert f"{said}read as it, no control they ship)" in result.evidence
+
+
+def test_the_controls_a_rigs_packages_ship_are_its_vehicles(tmp_path: Path) -> None:
+    # The vehicle's packages run Nav2 and a teleop node: they move the vehicle, not the kit.
+    bringup = "IncludeLaunchDescription('nav2_bringup')\nNode(package='teleop_twist_keyboard')"
+    kit = identify(described(tmp_path / "kit", one_link("mid360_sensor_kit"), bringup))
+    assert (kit.structure, kit.motion_controls) == ("Other", ())
+    # A body of no such name, that travels no way either, is driven and navigated by them.
+    plain = identify(described(tmp_path / "plain", one_link("mid360"), bringup))
+    assert {c.motion_control for c in plain.motion_controls} == {"Driving", "Waypoint"}
 
 
 class _Undeclared(RobotText):
@@ -785,7 +805,7 @@ def test_a_kit_hung_from_a_link_its_description_never_declares_is_a_rig_of_senso
     structure, evidence = read_with(tmp_path, robot, "ugv_base: {}")
     assert structure == "Other"
     said = "a rig of sensors by its name: the undeclared root's link sensor_kit_base_link"
-    assert f"{said} (no vehicle its packages name is read as it)" in evidence
+    assert f"{said} (no vehicle its packages name is read as it, no control they ship)" in evidence
 
 
 def test_a_kits_link_on_a_declared_base_or_a_plain_mount_leaves_the_packages_vehicle(

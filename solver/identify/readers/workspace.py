@@ -26,9 +26,8 @@ imported or parsed as code.
   nodes) are opened only when they are regular files (a link, a FIFO or a device is passed by,
   never opened), at most :data:`MAX_FILE_BYTES` of each, :data:`MAX_FILES` files and
   :data:`MAX_TOTAL_BYTES` in all; XML comments are removed.
-* The *robot's packages*: the description's and, for a package named ``ROBOT_description``
-  (or ``ROBOT`` itself, the description kept in the robot's own package), every package
-  named ``ROBOT_...`` (the ROS convention: ``jackal_navigation`` is the Jackal's
+* The *robot's packages*: the description's and, for a package named ``ROBOT_description``,
+  every package named ``ROBOT_...`` (the ROS convention: ``jackal_navigation`` is the Jackal's
   though it never names ``jackal_description``); then every package that *uses* one of them
   (names it as a word in its ``package.xml`` or its files: a bringup that finds the
   description); then every package one of those uses (the navigation package a bringup
@@ -94,12 +93,7 @@ SKIPPED_FOLDERS = frozenset(
 INSTALL = "install"
 _PREFIX_FOLDERS = frozenset({"lib", "include", "bin"})
 # Stems too generic to name a robot (``robot_description`` beside ``robot_localization``).
-GENERIC_STEMS = frozenset(
-    {"robot_", "my_robot_", "ros_", "ros2_", "test_", "my_", "urdf_", "gazebo_", "description_"}
-)
-# A package holding a description under a name this short (``ur``, ``sim``) is not named for
-# one robot: its name's packages (``ur_...``) may be a whole vendor's.
-_SHORTEST_NAME = 4
+GENERIC_STEMS = frozenset({"robot_", "my_robot_", "ros_", "ros2_", "test_", "my_"})
 # A name written by more than this share of the workspace's packages (and by more than
 # MIN_COMMON of them) is a word of every launch file, not a use.
 COMMON_SHARE = 0.5
@@ -261,16 +255,14 @@ def read_workspace(package: str | Path, root: str | Path | None = None) -> Works
 
 
 def _stem(name: str) -> str | None:
-    """``jackal_`` for ``jackal_description``, ``maxwell_`` for a description kept in a
-    package named ``maxwell``: the prefix of the packages a robot's authors name for it
-    (``jackal_navigation``, ``maxwell_defs``), the ROS convention; None for a package named
-    for no robot in particular (``robot_description``, ``urdf_tutorial``)."""
+    """``jackal_`` for ``jackal_description``: the prefix of the packages a robot's authors
+    name for it (``jackal_navigation``, ``jackal_bringup``), the ROS convention; None for a
+    package not named ``ROBOT_description(s)``, or named for no robot in particular."""
     for suffix in ("_descriptions", "_description"):
         if name.endswith(suffix) and len(name) > len(suffix):
             stem = name[: -len(suffix)] + "_"
             return None if stem in GENERIC_STEMS else stem
-    stem = name + "_"
-    return None if stem in GENERIC_STEMS or len(name) < _SHORTEST_NAME else stem
+    return None
 
 
 def _core(own: _Package, packages: list[_Package]) -> list[_Package]:

@@ -96,24 +96,6 @@ def test_packages_named_for_the_robot_are_its_own_though_they_never_name_its_des
     assert read(described).packages == ("jackal_description", "jackal_navigation")
 
 
-def test_a_description_kept_in_the_robots_own_package_claims_the_packages_named_for_it(
-    tmp_path: Path,
-) -> None:
-    src = tmp_path / "src"
-    described = package(src, "maxwell")
-    package(src, "maxwell_defs", {"launch/base_laser.launch": "<node pkg='urg_node'/>"})
-    package(src, "maxwellian_tools", {"launch/a.launch": "x"})
-    assert read(described).packages == ("maxwell", "maxwell_defs")
-
-
-def test_a_short_or_generic_package_name_claims_no_packages_named_for_it(tmp_path: Path) -> None:
-    src = tmp_path / "src"
-    for name, neighbour in (("sim", "sim_worlds"), ("urdf", "urdf_tutorial")):
-        described = package(src / name, name)
-        package(src / name, neighbour, {"launch/a.launch": "x"})
-        assert read(described).packages == (name,)
-
-
 def test_a_name_inside_a_longer_word_is_no_use(tmp_path: Path) -> None:
     src = tmp_path / "src"
     described = package(src, "arm")
