@@ -276,9 +276,9 @@ def find_limbs(
         while len(children.get(chain[-1].name, [])) == 1:
             chain.append(children[chain[-1].name][0])
         branches = children.get(chain[-1].name, [])
-        if branches:
+        starts.extend(branches)
+        if branches and not _tool_leaves(tree, chain, branches, children):
             trunk.extend(j.name for j in chain)
-            starts.extend(branches)
             continue
         limbs.append(_classify(tree, chain, chain[0].parent, _marks(chain, carries), flying))
     limbs, trunk = _carried_grippers(tree, limbs, trunk, (children, carries), flying)
@@ -290,6 +290,25 @@ def find_limbs(
         for limb in limbs
     ]
     return sort_limbs(tree, _short_pair(tree, limbs)), trunk, hosts
+
+
+def _tool_leaves(
+    tree: JointTree, chain: list[Joint], branches: list[Joint], children: dict[str, list[Joint]]
+) -> bool:
+    """The chain is an arm's and its branches the parts of the tool at its end, no trunk: it
+    is long enough to be an arm, more of its joints are named as an arm's than as anything
+    else's, and it branches only into single joints that carry nothing (a suction tool's two
+    sliding pipes, which no rule reads as jaws). A trunk branches into limbs (a torso into
+    arms, a body into legs); two one-joint leaves are none, but a chain not named as an arm
+    may be a body's (a neck carrying a head's two antennas)."""
+    scores = _name_scores(tree, chain)
+    return (
+        len(chain) >= tree.profile.limb("arm_min_joints")
+        and scores["arm"] > 0
+        and scores["arm"] == max(scores.values())
+        and len(branches) > 1  # (one joint below would have continued the chain)
+        and not any(children.get(joint.name) for joint in branches)
+    )
 
 
 # A humanoid's two pairs of limbs: one pair found, the other sought among one-joint chains.
@@ -2243,8 +2262,7 @@ def _classify(
     tip = _tip(tree, chain[-1])
     gripper = "gripper" in marks
     mounted = sorted(marks & set(_MOUNTED))
-    named_parts = [tree.parts_of(j.name) | tree.parts_of(j.child) for j in chain]
-    scores = {kind: sum(1 for parts in named_parts if kind in parts) for kind in LIMB_KINDS}
+    scores = _name_scores(tree, chain)
     if _tip_matches(tree, "leg", chain[-1]):
         scores["leg"] += 1
     named = any(scores.values())
@@ -2270,6 +2288,12 @@ def _classify(
         return Limb(kind, names, base, tip, gripper, named, why)
     kind, why = _unnamed_kind(tree, chain, length, gripper=gripper, named=named, flying=flying)
     return Limb(kind, names, base, tip, gripper, named, why)
+
+
+def _name_scores(tree: JointTree, chain: list[Joint]) -> dict[str, int]:
+    """How many of the chain's joints (each with its child link) are named as each limb's."""
+    named_parts = [tree.parts_of(j.name) | tree.parts_of(j.child) for j in chain]
+    return {kind: sum(1 for parts in named_parts if kind in parts) for kind in LIMB_KINDS}
 
 
 def _cameras_turned(tree: JointTree, last: Joint, *, named: bool) -> str:

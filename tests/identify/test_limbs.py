@@ -2689,3 +2689,58 @@ def test_one_hinge_shoulders_in_a_pair_on_a_biped_are_arms() -> None:
     result = identify_urdf(robot.text())
     assert result.body is not None
     assert (result.structure, result.body.count("arm")) == ("Humanoid", 2)
+
+
+def two_arms_one_with_a_suction_tool(second: list[str] | None = None, pipe_joints: int = 1) -> str:
+    """A waist carrying a seven-joint chain named as an arm and a ``second`` chain (default:
+    another such arm) that ends in a suction tool whose two pipes slide, each on
+    ``pipe_joints`` joints of their own (no pair of jaws)."""
+    robot = RobotText("picker")
+    waist = robot.chain(robot.root, ["torso_turn"])
+    robot.chain(waist, [f"left_arm_joint_{i}" for i in range(1, 8)])
+    tool = robot.chain(waist, second or [f"right_arm_joint_{i}" for i in range(1, 8)])
+    for pipe, axis in (("front", "0 0 1"), ("side", "1 0 0")):
+        link = tool
+        for i in range(pipe_joints):
+            link = robot.joint(
+                f"{pipe}_pipe_{i}",
+                "prismatic",
+                link,
+                f"{pipe}_pipe_{i}_link",
+                f'<axis xyz="{axis}"/><limit lower="0" upper="0.1" effort="1" velocity="1"/>',
+            )
+    return robot.text()
+
+
+def kinds_of_long_chains(text: str) -> list[str]:
+    result = identify_urdf(text)
+    assert result.body is not None
+    return [limb.kind for limb in result.body.limbs if len(limb.joints) == 7]
+
+
+def test_an_arm_that_ends_in_a_tools_single_joints_is_an_arm_not_a_trunk() -> None:
+    assert identify_urdf(two_arms_one_with_a_suction_tool()).structure == "Torso"
+    assert kinds_of_long_chains(two_arms_one_with_a_suction_tool()) == ["arm", "arm"]
+
+
+@pytest.mark.parametrize(
+    ("second", "pipe_joints"),
+    [
+        # A neck and head carrying two antennas: the body's, no arm.
+        ([f"neck_head_joint_{i}" for i in range(1, 8)], 1),
+        # Named more as a head's than an arm's.
+        ([*(f"arm_{i}" for i in range(1, 3)), *(f"head_{i}" for i in range(3, 8))], 1),
+        # Named as nothing: no word says it is an arm.
+        ([f"j{i}" for i in range(1, 8)], 1),
+        # Too short to be an arm.
+        (["arm_lift", "arm_turn"], 1),
+        # What it branches into are limbs of two joints: it is a trunk carrying them.
+        ([f"right_arm_joint_{i}" for i in range(1, 8)], 2),
+    ],
+)
+def test_a_chain_that_is_no_named_arm_or_branches_into_limbs_stays_a_trunk(
+    second: list[str], pipe_joints: int
+) -> None:
+    result = identify_urdf(two_arms_one_with_a_suction_tool(second, pipe_joints))
+    assert result.body is not None
+    assert not any(limb.joints == tuple(second) for limb in result.body.limbs)

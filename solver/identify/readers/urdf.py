@@ -78,6 +78,8 @@ class Link:
     # False for a link a joint names that no <link> declares, read as an implicit link: the
     # link of another description this one is made to hang from (a vehicle's base_link).
     declared: bool = True
+    # A declared <link/> with nothing in it: no visual, collision or inertial (a frame).
+    empty: bool = False
 
 
 @dataclass(frozen=True, slots=True)
@@ -118,10 +120,17 @@ class Joint:
     # (it follows another joint that is no fixed joint, or such a joint follows it), or every
     # joint with limits in the file has equal ones (:func:`_placeholders`).
     unlocked: bool = False
+    # Its <limit effort>: what its actuator may exert (None when not written).
+    effort: float | None = None
+    # It moves nothing and exerts nothing: its limit's effort is zero, its child an empty leaf
+    # (a frame with nothing in it, nothing hung from it), and nothing couples or commands it. A
+    # model's bookkeeping, not a joint of the body (the Pisa/IIT LWR's joint-stiffness
+    # pseudo-joints, one beside each joint): :func:`_phantoms`.
+    phantom: bool = False
 
     @property
     def movable(self) -> bool:
-        if self.type == "fixed":
+        if self.type == "fixed" or self.phantom:
             return False
         # RotorS and others mount sensors on revolute joints with lower == upper: fixed in effect.
         # Not an unlocked joint: nobody couples a joint that cannot move, nor locks every joint
@@ -478,7 +487,11 @@ class _Builder:
                 )
             else:
                 found[name] = Link(
-                    name, line_of(element), _compensation(element), _cylinder(element)
+                    name,
+                    line_of(element),
+                    _compensation(element),
+                    _cylinder(element),
+                    empty=not any(isinstance(part.tag, str) for part in element),
                 )
         return found
 
@@ -504,9 +517,13 @@ class _Builder:
                 )
                 continue
             found[joint.name] = joint
-        unlocked = _coupled(found) | _placeholders(found) | (commanded & found.keys())
+        coupled = _coupled(found)
+        unlocked = coupled | _placeholders(found) | (commanded & found.keys())
+        phantoms = _phantoms(found, links) - coupled - commanded
         return [
-            replace(joint, unlocked=True) if name in unlocked else joint
+            replace(joint, unlocked=name in unlocked, phantom=name in phantoms)
+            if name in unlocked | phantoms
+            else joint
             for name, joint in found.items()
         ]
 
@@ -588,6 +605,7 @@ class _Builder:
             _vector(parts.get("origin"), (0.0, 0.0, 0.0), "rpy"),
             self._multiplier(mimic),
             parts.get("axis") is not None,
+            effort=self._number(limit, "effort", path),
         )
 
     @staticmethod
@@ -893,6 +911,26 @@ def _coupled(joints: dict[str, Joint]) -> set[str]:
         and leader.type != "fixed"
     }
     return followers | {joints[name].mimic or "" for name in followers}
+
+
+def _phantoms(joints: dict[str, Joint], links: dict[str, Link]) -> set[str]:
+    """The joints that move nothing and exert nothing (:attr:`Joint.phantom`): not fixed, a
+    zero ``<limit effort>``, the child a declared link with nothing in it from which no joint
+    hangs; none when no joint of the file has an effort other than zero (a file whose efforts
+    are all placeholders says nothing by them). The caller leaves out those a mimic couples or
+    a controller commands."""
+    if not any(joint.effort for joint in joints.values()):
+        return set()
+    parents = {joint.parent for joint in joints.values()}
+    return {
+        name
+        for name, joint in joints.items()
+        if joint.type != "fixed"
+        and joint.effort == 0
+        and joint.child not in parents
+        and (child := links.get(joint.child)) is not None
+        and child.empty
+    }
 
 
 def _placeholders(joints: dict[str, Joint]) -> set[str]:

@@ -253,3 +253,71 @@ def test_a_links_first_visual_is_kept_when_it_is_a_readable_cylinder(
     link = urdf.link("base")
     assert link is not None
     assert link.cylinder == expected
+
+
+def stiffness_arm(*, dummy: str = "", effort: str = "0") -> str:
+    """An arm of three joints, each with a pseudo-joint beside it (a joint's stiffness, as the
+    Pisa/IIT LWR writes it): ``effort`` and a ``<link/>`` with ``dummy`` in it."""
+    robot = builders.RobotText("lwr")
+    link = robot.root
+    for i in range(1, 4):
+        robot.joint(
+            f"a{i}_stiffness",
+            "revolute",
+            link,
+            f"link_{i}_dummy",
+            f'<limit effort="{effort}" lower="0" upper="5000" velocity="20000"/>',
+        )
+        link = robot.chain(link, [f"a{i}"])
+    text = robot.text()
+    return text.replace('<link name="link_1_dummy"/>', f'<link name="link_1_dummy">{dummy}</link>')
+
+
+def test_a_joint_that_moves_nothing_and_exerts_nothing_is_no_joint_of_the_body() -> None:
+    urdf = parse_urdf(stiffness_arm(), "lwr.urdf")
+    assert [j.name for j in urdf.joints if j.movable] == ["a1", "a2", "a3"]
+    assert all(j.phantom for j in urdf.joints if j.name.endswith("_stiffness"))
+
+
+@pytest.mark.parametrize(
+    ("text", "moving"),
+    [
+        # A link with something in it is a body the joint moves.
+        (stiffness_arm(dummy='<inertial><mass value="0.1"/></inertial>'), "a1_stiffness"),
+        # A joint that may exert a force moves its link, whatever the link holds.
+        (stiffness_arm(effort="2"), "a1_stiffness"),
+        # A link something hangs from is no leaf: the joint carries it.
+        (
+            stiffness_arm().replace(
+                "</robot>",
+                '<link name="below"/><joint name="below_j" type="fixed">'
+                '<parent link="link_2_dummy"/><child link="below"/></joint>\n</robot>',
+            ),
+            "a2_stiffness",
+        ),
+        # Commanded or coupled, it is a joint.
+        (
+            stiffness_arm().replace(
+                "</robot>", builders.transmission("a2_stiffness") + "\n</robot>"
+            ),
+            "a2_stiffness",
+        ),
+        (
+            stiffness_arm().replace(
+                '<child link="link_3_dummy"/>', '<child link="link_3_dummy"/><mimic joint="a3"/>'
+            ),
+            "a3_stiffness",
+        ),
+    ],
+)
+def test_a_joint_to_an_empty_leaf_moves_when_it_may_exert_or_carry_or_is_driven(
+    text: str, moving: str
+) -> None:
+    urdf = parse_urdf(text, "lwr.urdf")
+    assert next(j for j in urdf.joints if j.name == moving).movable
+
+
+def test_efforts_all_zero_are_placeholders_that_lock_nothing() -> None:
+    text = stiffness_arm().replace('effort="1"', 'effort="0"')
+    urdf = parse_urdf(text, "lwr.urdf")
+    assert all(j.movable for j in urdf.joints)
