@@ -196,6 +196,11 @@ def test_a_file_the_licence_note_names_is_not_the_description() -> None:
         srdf=False,
     )
     assert source.path == "src/b_description/urdf/b.urdf.xacro"
+    # A description kept as text is that file; a backup's name is no description.
+    text = tool.parse_source("github a/b@0123abcd urdf/my_robot.urdf.txt [plain URDF]", srdf=False)
+    assert (text.path, text.xacro) == ("urdf/my_robot.urdf.txt", False)
+    backup = tool.parse_source("github a/b@0123abcd urdf/old.urdf.bak, urdf/b.urdf", srdf=False)
+    assert backup.path == "urdf/b.urdf"
     # How the file was made is read right after it, past a long note.
     made = tool.parse_source(
         "github a/b@0123abcd (BSD, as the package.xml of the description package says it, "

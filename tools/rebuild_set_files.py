@@ -14,7 +14,8 @@ development part on any machine:
 
 * a row's source is read for the repository and commit (``github owner/name@commit`` or
   ``https://github.com/owner/name @commit``), the file's path in it (the first ``.urdf``,
-  ``.xacro``, ``.gazebo`` or ``.xml`` after them, in any case, never a ``package.xml``; after
+  ``.xacro``, ``.gazebo`` or ``.xml`` after them, in any case, or such a name kept as ``.txt``
+  (``robot.urdf.txt``; ``robot.urdf.bak`` is none), never a ``package.xml``; after
   the licence note in parentheses that follows the commit, when one follows it), the
   xacro arguments it names (``name:=value``, the first value of each name; ``NAME=value`` for
   an environment variable), the SRDF's path when the row has one, and the other repositories
@@ -65,7 +66,7 @@ REPOSITORY = re.compile(
 # A second repository is often named bare: "... resolved to uuvsimulator/uuv_simulator@ed260c82".
 SECOND = re.compile(r"(?<![\w./-])([\w.-]+/[\w.-]+?)(?:\.git)?\s*@\s*([0-9a-f]{7,40})\b")
 DESCRIPTION = re.compile(
-    r"(?<![\w/.-])((?:[\w.+-]+/)*[\w.+-]+\.(?:urdf\.xacro|xacro|urdf|gazebo|xml))\b",
+    r"(?<![\w/.-])((?:[\w.+-]+/)*[\w.+-]+\.(?:urdf\.xacro|xacro|urdf|gazebo|xml)(?:\.txt)?)\b(?!\.\w)",
     re.IGNORECASE,
 )
 # A path with a space in it, written between backquotes (`Mechanical Design/x/robot.urdf`).
