@@ -196,11 +196,6 @@ def test_a_file_the_licence_note_names_is_not_the_description() -> None:
         srdf=False,
     )
     assert source.path == "src/b_description/urdf/b.urdf.xacro"
-    # A description kept as text is that file; a backup's name is no description.
-    text = tool.parse_source("github a/b@0123abcd urdf/my_robot.urdf.txt [plain URDF]", srdf=False)
-    assert (text.path, text.xacro) == ("urdf/my_robot.urdf.txt", False)
-    backup = tool.parse_source("github a/b@0123abcd urdf/old.urdf.bak, urdf/b.urdf", srdf=False)
-    assert backup.path == "urdf/b.urdf"
     # How the file was made is read right after it, past a long note.
     made = tool.parse_source(
         "github a/b@0123abcd (BSD, as the package.xml of the description package says it, "
@@ -225,6 +220,14 @@ def test_a_file_the_licence_note_names_is_not_the_description() -> None:
         "moveit/b.srdf",
         (("c/c", "89abcdef"),),
     )
+
+
+def test_a_description_kept_as_text_is_that_file_and_a_backups_name_is_none() -> None:
+    tool = load()
+    text = tool.parse_source("github a/b@0123abcd urdf/my_robot.urdf.txt [plain URDF]", srdf=False)
+    assert (text.path, text.xacro) == ("urdf/my_robot.urdf.txt", False)
+    backup = tool.parse_source("github a/b@0123abcd urdf/old.urdf.bak, urdf/b.urdf", srdf=False)
+    assert backup.path == "urdf/b.urdf"
 
 
 def test_a_file_xacro_expands_under_another_name_and_an_environment_it_sets_are_read() -> None:
