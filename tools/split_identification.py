@@ -79,7 +79,7 @@ ADDED_SET = ROOT / "tools" / "generalization_set"
 # one is adding its number and day.
 MOVED_ON = dict.fromkeys(range(52, 130), "2026-11-30")
 MOVED_ON |= dict.fromkeys(range(130, 182), "2026-12-01")
-MOVED_ON |= dict.fromkeys(range(182, 275), "2026-12-02")
+MOVED_ON |= dict.fromkeys(range(182, 278), "2026-12-02")
 LAST_MOVED = max(MOVED_ON)
 BLIND_NEXT = LAST_MOVED + 1
 MOVED_SETS = tuple(ROOT / "tools" / f"fresh_set_{n}" for n in range(1, LAST_MOVED + 1))
