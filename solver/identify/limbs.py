@@ -277,7 +277,7 @@ def find_limbs(
             chain.append(children[chain[-1].name][0])
         branches = children.get(chain[-1].name, [])
         starts.extend(branches)
-        if branches and not _tool_leaves(tree, chain, branches, children):
+        if branches and not _tool_leaves(tree, chain, branches, (children, carries)):
             trunk.extend(j.name for j in chain)
             continue
         limbs.append(_classify(tree, chain, chain[0].parent, _marks(chain, carries), flying))
@@ -293,7 +293,10 @@ def find_limbs(
 
 
 def _tool_leaves(
-    tree: JointTree, chain: list[Joint], branches: list[Joint], children: dict[str, list[Joint]]
+    tree: JointTree,
+    chain: list[Joint],
+    branches: list[Joint],
+    contracted: tuple[dict[str, list[Joint]], dict[str, set[str]]],
 ) -> bool:
     """The chain is an arm's and its branches the parts of the tool at its end, no trunk: it
     is long enough to be an arm, more of its joints are named as an arm's than as anything
@@ -301,13 +304,14 @@ def _tool_leaves(
     sliding pipes, which no rule reads as jaws). A trunk branches into limbs (a torso into
     arms, a body into legs); two one-joint leaves are none, but a chain not named as an arm
     may be a body's (a neck carrying a head's two antennas)."""
+    children, carries = contracted
+    if len(chain) < tree.profile.limb("arm_min_joints") or len(branches) < 2:
+        return False  # (one joint below would have continued the chain)
     scores = _name_scores(tree, chain)
     return (
-        len(chain) >= tree.profile.limb("arm_min_joints")
-        and scores["arm"] > 0
+        scores["arm"] > 0
         and scores["arm"] == max(scores.values())
-        and len(branches) > 1  # (one joint below would have continued the chain)
-        and not any(children.get(joint.name) for joint in branches)
+        and not any(children.get(joint.name) or carries.get(joint.name) for joint in branches)
     )
 
 

@@ -2691,10 +2691,13 @@ def test_one_hinge_shoulders_in_a_pair_on_a_biped_are_arms() -> None:
     assert (result.structure, result.body.count("arm")) == ("Humanoid", 2)
 
 
-def two_arms_one_with_a_suction_tool(second: list[str] | None = None, pipe_joints: int = 1) -> str:
+def two_arms_one_with_a_suction_tool(
+    second: list[str] | None = None, pipe_joints: int = 1, *, jaws: bool = False
+) -> str:
     """A waist carrying a seven-joint chain named as an arm and a ``second`` chain (default:
     another such arm) that ends in a suction tool whose two pipes slide, each on
-    ``pipe_joints`` joints of their own (no pair of jaws)."""
+    ``pipe_joints`` joints of their own (no pair of jaws); with ``jaws``, each pipe carries a
+    gripper's two jaws."""
     robot = RobotText("picker")
     waist = robot.chain(robot.root, ["torso_turn"])
     robot.chain(waist, [f"left_arm_joint_{i}" for i in range(1, 8)])
@@ -2709,6 +2712,9 @@ def two_arms_one_with_a_suction_tool(second: list[str] | None = None, pipe_joint
                 f"{pipe}_pipe_{i}_link",
                 f'<axis xyz="{axis}"/><limit lower="0" upper="0.1" effort="1" velocity="1"/>',
             )
+        if jaws:
+            robot.chain(link, [f"{pipe}_gripper_finger_left"], "prismatic")
+            robot.chain(link, [f"{pipe}_gripper_finger_right"], "prismatic")
     return robot.text()
 
 
@@ -2742,5 +2748,13 @@ def test_a_chain_that_is_no_named_arm_or_branches_into_limbs_stays_a_trunk(
     second: list[str], pipe_joints: int
 ) -> None:
     result = identify_urdf(two_arms_one_with_a_suction_tool(second, pipe_joints))
+    assert result.body is not None
+    assert not any(limb.joints == tuple(second) for limb in result.body.limbs)
+
+
+def test_an_arm_named_chain_whose_single_joints_carry_grippers_stays_a_trunk() -> None:
+    # Each one-joint branch carries a gripper: they are chains the trunk carries, no tool's.
+    second = [f"right_arm_joint_{i}" for i in range(1, 8)]
+    result = identify_urdf(two_arms_one_with_a_suction_tool(second, jaws=True))
     assert result.body is not None
     assert not any(limb.joints == tuple(second) for limb in result.body.limbs)
