@@ -81,6 +81,8 @@ ENVIRONMENT = re.compile(r"(?<![\w$(=])([A-Z][A-Z0-9_]*)=(?!=)([^\s,;\])'\"]+)")
 # Placeholders the sources write in argument values: the repository's tree, the package's folder.
 PLACEHOLDERS = ("<repo>", "<fetched>", "<package>")
 MISSING_PACKAGE = re.compile(r"ROS package '([^']+)' not found")
+# How a parenthesis changes the depth of a note's nesting.
+_DEPTH = {"(": 1, ")": -1}
 
 
 @dataclass(frozen=True, slots=True)
@@ -407,7 +409,7 @@ def _after_licence(rest: str) -> str:
         return rest
     depth = 0
     for index, char in enumerate(stripped):
-        depth += {"(": 1, ")": -1}.get(char, 0)
+        depth += _DEPTH.get(char, 0)
         if depth == 0:
             return stripped[index + 1 :]
     return ""

@@ -520,9 +520,10 @@ class _Builder:
         coupled = _coupled(found)
         unlocked = coupled | _placeholders(found) | (commanded & found.keys())
         phantoms = _phantoms(found, links) - coupled - commanded
+        changed = unlocked | phantoms
         return [
             replace(joint, unlocked=name in unlocked, phantom=name in phantoms)
-            if name in unlocked | phantoms
+            if name in changed
             else joint
             for name, joint in found.items()
         ]
