@@ -67,6 +67,10 @@ _COMPOSED = ("imu", "depth_camera")
 _IMAGING = frozenset(
     {"camera", "depth_camera", "stereo_camera", "wide_angle_camera", "thermal_camera", "lidar"}
 )
+# The parts of an IMU a description may declare one by one (iDynTree's URDF ``<sensor
+# type="accelerometer">``): parts of one type with names of their own on one link are as many
+# devices (a skin's accelerometers), an accelerometer and a gyroscope on it one device's.
+_IMU_PARTS = frozenset({"accelerometer", "gyroscope", "gyro"})
 # How far apart two frames on one link may sit and still be one device's streams (metres).
 STREAM_REACH = 0.1
 # A link that is a camera's own body (its streams' frames are fixed to it), by its name.
@@ -124,7 +128,7 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
     ``<ros2_control>`` sensor (told by what it reads, else by its name) counts when no element
     or plugin declares a device of its kind, and not when neither tells its kind.
     """
-    found, beams = _element_detections(urdf, profile, source)
+    found, beams, parts = _element_detections(urdf, profile, source)
     # A plugin a <sensor> runs, written again outside it (the same name, file and settings):
     # the element's, declared twice.
     inside = {_same_plugin(p) for tag in urdf.sensors for p in tag.plugins}
@@ -150,7 +154,7 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
         included = _model_kind(model.model, profile)
         if included is not None:
             found.append((Detection(included, model.name, source, model.link), "model"))
-    return tuple(_devices(_hardware_kept(found), urdf, beams))
+    return tuple(_devices(_hardware_kept(found), urdf, beams, _imu_devices(found, parts)))
 
 
 def _same_plugin(plugin: PluginTag) -> tuple[str, str, tuple[tuple[str, str], ...]]:
@@ -160,11 +164,13 @@ def _same_plugin(plugin: PluginTag) -> tuple[str, str, tuple[tuple[str, str], ..
 
 def _element_detections(
     urdf: Urdf, profile: Profile, source: str
-) -> tuple[list[tuple[Detection, str]], set[int]]:
-    """One detection per sensor element, with where it was declared; and the ids of those that
-    are a DVL's beams (range rays its name marks), parts of a device rather than devices."""
+) -> tuple[list[tuple[Detection, str]], set[int], dict[int, str]]:
+    """One detection per sensor element, with where it was declared; the ids of those that
+    are a DVL's beams (range rays its name marks), parts of a device rather than devices; and
+    the part of an IMU each element declared as one is (:data:`_IMU_PARTS`), by id."""
     found: list[tuple[Detection, str]] = []
     beams: set[int] = set()
+    parts: dict[int, str] = {}
     urdf_links = {t.name: t.link for t in urdf.sensors if t.origin == "urdf" and t.link}
     for tag in urdf.sensors:
         kind = element_kind(tag, profile)
@@ -179,8 +185,22 @@ def _element_detections(
         detection = Detection(kind, tag.name or tag.type, source, link, tag.vertical_samples)
         if kind == "dvl" and tag.type in _BEAM_TYPES:
             beams.add(id(detection))
+        if kind == "imu" and (tag.type or "").lower() in _IMU_PARTS:
+            parts[id(detection)] = (tag.type or "").lower()
         found.append((detection, tag.origin))
-    return found, beams
+    return found, beams, parts
+
+
+def _imu_devices(found: list[tuple[Detection, str]], parts: dict[int, str]) -> dict[str, set[str]]:
+    """Per link where an IMU is declared as its parts, the names of its devices: the parts of
+    the type declared most there, each with a name of its own (51 skin accelerometers on 11
+    links are 51 devices; an accelerometer and a gyroscope beside it, one)."""
+    named: dict[str, dict[str, set[str]]] = {}
+    for detection, _ in found:
+        part = parts.get(id(detection))
+        if part is not None and detection.link is not None:
+            named.setdefault(detection.link, {}).setdefault(part, set()).add(detection.name)
+    return {link: max(kinds.values(), key=len) for link, kinds in named.items()}
 
 
 def _hardware_kept(found: list[tuple[Detection, str]]) -> list[tuple[Detection, str]]:
@@ -244,9 +264,16 @@ def _model_kind(model: str, profile: Profile) -> str | None:
     return None if kind == "unknown" else kind
 
 
-def _devices(found: list[tuple[Detection, str]], urdf: Urdf, beams: set[int]) -> list[Detection]:
+def _devices(
+    found: list[tuple[Detection, str]],
+    urdf: Urdf,
+    beams: set[int],
+    imus: dict[str, set[str]],
+) -> list[Detection]:
     """One detection per physical device (see :func:`sensors_from_urdf`); linear in their
-    number (an index by kind and link, a few links up each)."""
+    number (an index by kind and link, a few links up each). On a link where an IMU is
+    declared as its parts, ``imus`` names its devices: one detection each, whatever declared it
+    (a Gazebo twin of the same name), and nothing else of that kind there."""
     origins: dict[tuple[str, str], set[str]] = {}
     for detection, origin in found:
         if detection.link is not None:
@@ -263,6 +290,11 @@ def _devices(found: list[tuple[Detection, str]], urdf: Urdf, beams: set[int]) ->
         # A part of a device declared above it elsewhere (a DVL plugin's range beams, a
         # sensor's optical frame); two elements of one kind (a shin and a foot contact) stay.
         if any(origins.get((detection.kind, up), {origin}) - {origin} for up in _above(link, urdf)):
+            continue
+        if detection.kind == "imu" and link in imus:
+            if detection.name in imus[link]:
+                imus[link].discard(detection.name)
+                kept.append(detection)
             continue
         names, places = seen.setdefault((detection.kind, link), (set(), set()))
         if _same(detection, origin, names, places):

@@ -1117,3 +1117,27 @@ def test_an_imu_declared_for_gazebo_again_as_an_accelerometer_and_its_plugin_out
     waist = plugin.replace("head_inertial", "waist_inertial")
     robot.add(f"  <gazebo>{waist}</gazebo>")
     assert _kinds(robot.text()) == {"imu": 2}
+
+
+def test_accelerometers_declared_apart_on_one_link_are_as_many_imus_and_a_gyroscope_pairs_up() -> (
+    None
+):
+    # A skin's boards each carry an accelerometer: iDynTree-style descriptions declare each as a
+    # URDF <sensor type="accelerometer"> with a Gazebo <sensor type="imu"> twin of its name. Three
+    # on a forearm are three devices; a gyroscope beside one of them is that board's, and a
+    # chest's accelerometer and gyroscope are one IMU.
+    robot = builders.ugv()
+    robot.fixed(robot.root, "forearm")
+    robot.fixed(robot.root, "chest")
+    for link, name, part in [
+        ("forearm", "forearm_acc_1", "accelerometer"),
+        ("forearm", "forearm_acc_2", "accelerometer"),
+        ("forearm", "forearm_acc_3", "accelerometer"),
+        ("forearm", "forearm_gyro_1", "gyroscope"),
+        ("chest", "chest_acc", "accelerometer"),
+        ("chest", "chest_gyro", "gyroscope"),
+    ]:
+        twin = f'<sensor name="{name}" type="imu"><always_on>1</always_on></sensor>'
+        robot.add(f'  <gazebo reference="{link}">{twin}</gazebo>')
+        robot.add(f'  <sensor name="{name}" type="{part}"><parent link="{link}"/></sensor>')
+    assert _kinds(robot.text()) == {"imu": 4}
