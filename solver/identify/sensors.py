@@ -185,8 +185,9 @@ def _element_detections(
         detection = Detection(kind, tag.name or tag.type, source, link, tag.vertical_samples)
         if kind == "dvl" and tag.type in _BEAM_TYPES:
             beams.add(id(detection))
-        if kind == "imu" and (tag.type or "").lower() in _IMU_PARTS:
-            parts[id(detection)] = (tag.type or "").lower()
+        part = (tag.type or "").lower()
+        if kind == "imu" and part in _IMU_PARTS:
+            parts[id(detection)] = part
         found.append((detection, tag.origin))
     return found, beams, parts
 
@@ -282,6 +283,7 @@ def _devices(
     # Per kind and link: the names and the origins kept so far (what :func:`_same` compares a
     # new declaration with, by sets: many sensors on one link stay linear).
     seen: dict[tuple[str, str], tuple[set[str], set[str]]] = {}
+    counted: set[tuple[str, str]] = set()  # the IMUs of ``imus`` kept, by link and name
     for detection, origin in found:
         link = detection.link
         if link is None:
@@ -292,8 +294,8 @@ def _devices(
         if any(origins.get((detection.kind, up), {origin}) - {origin} for up in _above(link, urdf)):
             continue
         if detection.kind == "imu" and link in imus:
-            if detection.name in imus[link]:
-                imus[link].discard(detection.name)
+            if detection.name in imus[link] and (link, detection.name) not in counted:
+                counted.add((link, detection.name))
                 kept.append(detection)
             continue
         names, places = seen.setdefault((detection.kind, link), (set(), set()))
