@@ -33,7 +33,7 @@ from collections.abc import Iterator, Mapping
 
 from solver.identify.hands import endless_jaws, gripper_closure, jaws
 from solver.identify.limbs import CORNER, moved_by, nearest_above, points_a_sensor
-from solver.identify.pose import Vector, local_axis, parallel, spread
+from solver.identify.pose import Vector, dot, local_axis, minus, parallel, spread
 from solver.identify.readers.urdf import Joint
 from solver.identify.roles import POSED, Role, main_axis
 from solver.identify.tree import JointTree
@@ -56,6 +56,9 @@ _ROLLERS = 3
 _A_RIMS_PARTS = frozenset({"leg", "wheel"})
 # As many endless joints level with one link are a wheel-leg walker's legs, not its wheels.
 _WHEEL_LEGS = 6
+# How far (metres) a wheel's mass centre may lie off its axle (a CAD export's rounding); the
+# whole-turning legs of the sets' wheel-leg walkers hang theirs 5 to 12 cm out.
+_ON_THE_AXLE = 0.005
 # The most endless joints above an unnamed wheel that hangs alone from its link (a caster's
 # swivel; a rover's rocker, bogie and steering): below more, the endless leaf ends a limb drawn
 # without limits (an arm's wrist that turns for ever), no wheel. Limited, sliding, planar and
@@ -380,13 +383,16 @@ def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     fixed to the body or sliding on it), at least one on each side of it.
     Fingers have limits; rotors sit level with or above their body and turn about an upright
     axis; a propeller on a wing turns about the axis it flies along. Six or more level with a
-    link are a wheel-leg walker's whole-turning legs (:func:`~solver.identify.limbs.find_limbs`).
+    link are a wheel-leg walker's whole-turning legs (:func:`~solver.identify.limbs.find_limbs`),
+    unless each carries its mass on its axle (:func:`_balanced`): a leg that turns whole hangs
+    its mass out along the leg, a wheel is round about its axle (an eight-wheeled skid-steer
+    base, a tracked base's road wheels).
     """
     below, level = _wheel_candidates(tree, roles)
     driven = bool(tree.labels("drive") or tree.labels("track"))
     for link, joints in level.items():
-        if len(joints) < _WHEEL_LEGS or driven:  # road wheels of a driven body, not legs
-            below.setdefault(link, []).extend(joints)
+        if len(joints) < _WHEEL_LEGS or driven or all(_balanced(tree, j) for j in joints):
+            below.setdefault(link, []).extend(joints)  # road wheels, not legs
     found: list[str] = []
     apart: list[Joint] = []
     for joints in below.values():
@@ -409,6 +415,21 @@ def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     if len(apart) >= 2 and _sides({tree.poses.place(j.child)[1] for j in apart}):
         found.extend(j.name for j in apart)
     return found
+
+
+def _balanced(tree: JointTree, joint: Joint) -> bool:
+    """The part ``joint`` turns has its mass centre on the joint's axis (within
+    :data:`_ON_THE_AXLE`): a wheel's, round about its axle. False when its link declares no
+    mass (nothing is known of it)."""
+    link = tree.urdf.link(joint.child)
+    centre = None if link is None else link.mass_centre
+    length = math.hypot(*joint.axis)
+    if centre is None or length == 0:
+        return False
+    axis = (joint.axis[0] / length, joint.axis[1] / length, joint.axis[2] / length)  # the link's
+    along = dot(centre, axis)
+    off = minus(centre, (along * axis[0], along * axis[1], along * axis[2]))
+    return math.hypot(*off) <= _ON_THE_AXLE
 
 
 def _roller_wheels(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
@@ -677,9 +698,27 @@ def _wheel_candidates(
             continue
         if joint.origin[2] < 0:
             below.setdefault(joint.parent, []).append(joint)
-        elif _axle(_resting_axis(tree, joint, known)):
+        elif _axle(_resting_axis(tree, joint, known)) or _caster_wheel(tree, joint, known):
             level.setdefault(joint.parent, []).append(joint)
     return below, level
+
+
+def _caster_wheel(tree: JointTree, joint: Joint, known: dict[str, str | None]) -> bool:
+    """``joint`` turns a part that carries its mass on its axle (:func:`_balanced`) about a
+    level axle as the body rests, below one joint that turns, a swivel about the upright as the
+    body rests, on the body: a caster's wheel. Turning about the upright keeps an axle level
+    whatever the swivel's angle, so the rest pose says what the axle is (a leg's or an arm's
+    does not); a leg's shin hangs its mass off its knee."""
+    above = nearest_above(tree.urdf, joint.parent, known, _turns)
+    swivel = tree.urdf.joint(above) if above is not None else None
+    return (
+        swivel is not None
+        and swivel.endless
+        and nearest_above(tree.urdf, swivel.parent, known, _turns) is None
+        and _upright(tree.poses.axis(swivel))
+        and _axle(tree.poses.axis(joint))
+        and _balanced(tree, joint)
+    )
 
 
 def _resting_axis(tree: JointTree, joint: Joint, known: dict[str, str | None]) -> Vector:

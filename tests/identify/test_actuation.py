@@ -1241,3 +1241,57 @@ def test_leaves_named_for_their_corner_alone_on_steering_swivels_are_steered_whe
     assert with_role(roles, "steering") == [f"steer_{i}" for i in range(4)]
     assert with_role(roles, "wheel") == [f"{c}_joint" for c in CORNERS]
     assert not with_role(roles, "caster")
+
+
+def caster_base(leaf_mass_at: str) -> str:
+    """An unnamed base: two drive wheels below it, and at its four corners a swivel about the
+    upright (its frame turned a quarter about x, its axis y) carrying one leaf that turns about
+    its own z, level as the base rests; each leaf's mass centre at ``leaf_mass_at`` on its link.
+    """
+    robot = RobotText("cart", root="b")
+    for i, y in enumerate((0.17, -0.17)):
+        builders.placed(
+            robot, f"d{i}", "continuous", "b", f"dw{i}", xyz=f"0 {y} -0.08", axis="0 1 0"
+        )
+    corners = ((0.19, 0.17), (0.19, -0.17), (-0.19, -0.17), (-0.19, 0.17))
+    for i, (x, y) in enumerate(corners):
+        swivel = builders.placed(
+            robot,
+            f"s{i}",
+            "continuous",
+            "b",
+            f"sw{i}",
+            xyz=f"{x} {y} -0.04",
+            rpy="-1.57 0 0",
+            axis="0 1 0",
+        )
+        builders.placed(robot, f"c{i}", "continuous", swivel, f"cw{i}", xyz="-0.02 0.07 0")
+    text = robot.text()
+    for i in range(4):
+        text = text.replace(
+            f'<link name="cw{i}"/>',
+            f'<link name="cw{i}"><inertial><origin xyz="{leaf_mass_at}"/><mass value="0.1"/>'
+            '<inertia ixx="0.001" ixy="0" ixz="0" iyy="0.001" iyz="0" izz="0.001"/>'
+            "</inertial></link>",
+        )
+    return text
+
+
+@pytest.mark.parametrize("mass_at", ["0 0 0", "0 0 0.01"])
+def test_a_leaf_on_a_swivel_about_the_upright_carrying_its_mass_on_its_level_axle_is_a_wheel(
+    mass_at: str,
+) -> None:
+    text = caster_base(mass_at)
+    roles = joint_roles(JointTree(parse_urdf(text), load_profile()))
+    assert {name for name, role in roles.items() if role.role == "wheel"} >= {
+        "c0",
+        "c1",
+        "c2",
+        "c3",
+    }
+    assert identify_urdf(text).structure == "UGV"
+
+
+def test_a_leaf_on_a_swivel_hanging_its_mass_off_its_axle_is_no_wheel() -> None:
+    roles = joint_roles(JointTree(parse_urdf(caster_base("0.05 0 0")), load_profile()))
+    assert {name for name, role in roles.items() if role.role == "wheel"} == {"d0", "d1"}

@@ -1092,6 +1092,36 @@ def test_one_joint_chains_that_are_few_or_turn_partly_are_no_legs(
     assert "leg" not in [limb.kind for limb in result.body.limbs]
 
 
+def with_masses(robot: RobotText, centre: str) -> str:
+    """``robot``'s text with each spoke's mass centre at ``centre`` on its link."""
+    text = robot.text()
+    for i in range(len(robot.joints)):
+        text = text.replace(
+            f'<link name="spoke{i}"/>',
+            f'<link name="spoke{i}"><inertial><origin xyz="{centre}"/><mass value="0.2"/>'
+            '<inertia ixx="0.001" ixy="0" ixz="0" iyy="0.001" iyz="0" izz="0.001"/>'
+            "</inertial></link>",
+        )
+    return text
+
+
+@pytest.mark.parametrize("centre", ["0 0 0", "0 0.03 0", "0.001 0 0.002"])
+def test_six_one_joint_chains_carrying_their_mass_on_their_axles_are_wheels(centre: str) -> None:
+    result = identify_urdf(with_masses(whole_turn_legs(), centre))
+    assert sorted(role.joint for role in result.roles if role.role == "wheel") == [
+        f"L{i}" for i in range(6)
+    ]
+    assert result.structure == "UGV"
+
+
+@pytest.mark.parametrize("centre", ["0 0 -0.08", "-0.06 0.007 -0.095", "0.01 0 0"])
+def test_six_one_joint_chains_hanging_their_mass_off_their_axles_stay_a_wheel_leg_walker(
+    centre: str,
+) -> None:
+    result = identify_urdf(with_masses(whole_turn_legs(), centre))
+    assert result.structure == "Hexapod"
+
+
 def planar_snake(modules: int) -> RobotText:
     """A chain of equal modules 0.15 m apart, every axis vertical, its first link fixed to a
     world link."""

@@ -80,6 +80,9 @@ class Link:
     declared: bool = True
     # A declared <link/> with nothing in it: no visual, collision or inertial (a frame).
     empty: bool = False
+    # Where its <inertial> puts its mass centre on the link (its <origin xyz>; the link's origin
+    # when it writes none); None when it declares no inertial. A wheel's lies on its axle.
+    mass_centre: tuple[float, float, float] | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -492,6 +495,7 @@ class _Builder:
                     _compensation(element),
                     _cylinder(element),
                     empty=not any(isinstance(part.tag, str) for part in element),
+                    mass_centre=_mass_centre(element),
                 )
         return found
 
@@ -1190,6 +1194,20 @@ def _cylinder(link: etree._Element) -> Cylinder | None:
     origin = visual.find("origin")
     zero = (0.0, 0.0, 0.0)
     return Cylinder(radius, length, _vector(origin, zero, "rpy"), _vector(origin, zero))
+
+
+def _mass_centre(link: etree._Element) -> tuple[float, float, float] | None:
+    """Where a link's first ``<inertial>`` puts its mass centre, or None when it has none or
+    writes a place that cannot be read."""
+    inertial = link.find("inertial")
+    if inertial is None:
+        return None
+    origin = inertial.find("origin")
+    if origin is None or origin.get("xyz") is None:
+        return (0.0, 0.0, 0.0)
+    unread = (math.nan, math.nan, math.nan)
+    found = _vector(origin, unread)
+    return None if found is unread else found
 
 
 def _integer(text: str | None) -> int | None:

@@ -255,6 +255,27 @@ def test_a_links_first_visual_is_kept_when_it_is_a_readable_cylinder(
     assert link.cylinder == expected
 
 
+@pytest.mark.parametrize(
+    ("inertial", "expected"),
+    [
+        ('<inertial><origin xyz="0 0 -0.08"/><mass value="1"/></inertial>', (0.0, 0.0, -0.08)),
+        ('<inertial><mass value="1"/></inertial>', (0.0, 0.0, 0.0)),
+        ('<inertial><origin rpy="0 1 0"/><mass value="1"/></inertial>', (0.0, 0.0, 0.0)),
+        ('<inertial><origin xyz="0 nan 1"/><mass value="1"/></inertial>', None),
+        ('<inertial><origin xyz="0 1"/><mass value="1"/></inertial>', None),
+        ("", None),
+    ],
+    ids=["placed", "no origin", "turned only", "not a number", "two numbers", "no inertial"],
+)
+def test_a_links_mass_centre_is_where_its_inertial_puts_it_and_unknown_when_unreadable(
+    inertial: str, expected: tuple[float, float, float] | None
+) -> None:
+    urdf = parse_urdf(f'<robot name="r"><link name="base">{inertial}</link></robot>', "r.urdf")
+    link = urdf.link("base")
+    assert link is not None
+    assert link.mass_centre == expected
+
+
 def stiffness_arm(*, dummy: str = "", effort: str = "0") -> str:
     """An arm of three joints, each with a pseudo-joint beside it (a joint's stiffness, as the
     Pisa/IIT LWR writes it): ``effort`` and a ``<link/>`` with ``dummy`` in it."""
