@@ -46,6 +46,9 @@ _LEVEL = 0.2
 # Twin screws sit apart across their axes; along them, at most this share of that (wheels on
 # one axle sit apart along it).
 _SCREWS_ALONG = 0.25
+# A bicycle's wheels sit one behind the other: apart across their axles; along them, at most
+# this share of that.
+_IN_LINE = 0.25
 # How many screws a vessel has, in mirrored pairs.
 _SCREWS = (2, 4)
 # How far (metres) two mirrored places may miss each other's mirror image.
@@ -412,9 +415,37 @@ def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
         j for j in apart if _hangs_freely(tree, j, known) and _few_endless_above(tree, j, endless)
     ]
     apart = _wrists_dropped(tree, apart)
-    if len(apart) >= 2 and _sides({tree.poses.place(j.child)[1] for j in apart}):
+    side_by_side = len(apart) >= 2 and _sides({tree.poses.place(j.child)[1] for j in apart})
+    if side_by_side or _in_line(tree, apart):
         found.extend(j.name for j in apart)
     return found
+
+
+def _in_line(tree: JointTree, leaves: list[Joint]) -> bool:
+    """Two leaves, each carrying its mass on its axle (:func:`_balanced`), about parallel
+    level axles as the body rests, one behind the other (apart across their axles, not along
+    them), one on the body and the other below one swivel about the upright, the only joint
+    that turns between it and the body: a bicycle's or a scooter's wheels, the front one
+    steered. Wheels side by side are told by :func:`_sides`."""
+    if len(leaves) != 2 or not all(_balanced(tree, leaf) for leaf in leaves):
+        return False
+    axes = [tree.poses.axis(leaf) for leaf in leaves]
+    if not all(_axle(axis) for axis in axes) or not parallel(axes[0], axes[1]):
+        return False
+    known: dict[str, str | None] = {}
+    above = [nearest_above(tree.urdf, leaf.parent, known, _turns) for leaf in leaves]
+    swivels = [tree.urdf.joint(name) for name in above if name is not None]
+    if len(swivels) != 1 or swivels[0] is None:
+        return False
+    swivel = swivels[0]
+    if nearest_above(tree.urdf, swivel.parent, known, _turns) is not None or not _upright(
+        tree.poses.axis(swivel)
+    ):
+        return False
+    gap = minus(tree.poses.place(leaves[0].child), tree.poses.place(leaves[1].child))
+    along = abs(dot(gap, axes[0]))
+    across = math.sqrt(max(dot(gap, gap) - along * along, 0.0))
+    return across > 0 and along <= _IN_LINE * across
 
 
 def _balanced(tree: JointTree, joint: Joint) -> bool:

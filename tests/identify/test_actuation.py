@@ -1295,3 +1295,44 @@ def test_a_leaf_on_a_swivel_about_the_upright_carrying_its_mass_on_its_level_axl
 def test_a_leaf_on_a_swivel_hanging_its_mass_off_its_axle_is_no_wheel() -> None:
     roles = joint_roles(JointTree(parse_urdf(caster_base("0.05 0 0")), load_profile()))
     assert {name for name, role in roles.items() if role.role == "wheel"} == {"d0", "d1"}
+
+
+def bicycle(*, front_mass_at: str = "0 0 0", front_axis: str = "0 1 0", fork: str = "0 0 1") -> str:
+    """An unnamed bicycle: a rear leaf on the frame and a front leaf below a fork turning about
+    ``fork``, both about y (the front about ``front_axis``), 0.8 m apart along x; each wheel's
+    mass centre on its axle, the front's at ``front_mass_at``."""
+    robot = RobotText("two", root="f")
+    builders.placed(robot, "r", "continuous", "f", "rw", xyz="-0.4 0 0", axis="0 1 0")
+    fork_link = builders.placed(robot, "s", "revolute", "f", "fk", xyz="0.4 0 0.2", axis=fork)
+    builders.placed(robot, "w", "continuous", fork_link, "fw", xyz="0 0 -0.2", axis=front_axis)
+    text = robot.text()
+    for link, centre in (("rw", "0 0 0"), ("fw", front_mass_at)):
+        text = text.replace(
+            f'<link name="{link}"/>',
+            f'<link name="{link}"><inertial><origin xyz="{centre}"/><mass value="1"/>'
+            '<inertia ixx="0.01" ixy="0" ixz="0" iyy="0.02" iyz="0" izz="0.01"/>'
+            "</inertial></link>",
+        )
+    return text
+
+
+def test_two_balanced_leaves_in_line_the_front_one_below_an_upright_swivel_are_wheels() -> None:
+    roles = joint_roles(JointTree(parse_urdf(bicycle()), load_profile()))
+    # The front wheel on its fork, undriven, is read as a caster's (a swivel carrying one wheel).
+    assert (roles["r"].role, roles["w"].role) == ("wheel", "caster")
+    assert identify_urdf(bicycle()).structure == "UGV"
+
+
+@pytest.mark.parametrize(
+    "drawn",
+    [
+        {"front_mass_at": "0 0 -0.1"},  # a pendulum's bob, not a wheel
+        {"front_axis": "0.23 1 0"},  # axles 13 degrees apart: not parallel, yet in line
+        {"fork": "0 1 0"},  # hung from a hinge about a level axis: an arm's joint
+    ],
+)
+def test_two_leaves_in_line_that_are_unbalanced_askew_or_below_a_level_hinge_are_no_wheels(
+    drawn: dict[str, str],
+) -> None:
+    roles = joint_roles(JointTree(parse_urdf(bicycle(**drawn)), load_profile()))
+    assert not any(role.role == "wheel" for role in roles.values())
