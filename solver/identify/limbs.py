@@ -1461,11 +1461,12 @@ def five_bars(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
         return limbs  # no walker has so many: a stranger's file is not paired leg by leg
     merged: dict[int, Limb] = {}
     used: set[int] = set()
+    hips = _hip_points(tree, legs)
     for index, one in enumerate(legs):
         if id(one) in used:
             continue
         for other in legs[index + 1 :]:
-            why = "" if id(other) in used else _one_leg(tree, one, other)
+            why = "" if id(other) in used else _one_leg(tree, one, other, several_hips=hips > 1)
             if why:
                 merged[id(one)] = replace(one, joints=one.joints + other.joints, why=why)
                 used.update((id(one), id(other)))
@@ -1687,12 +1688,31 @@ def _limb_below(
     return None
 
 
-def _one_leg(tree: JointTree, one: Limb, other: Limb) -> str:
-    """Why two leg chains are one leg (a five-bar or a parallel linkage), or ""."""
+def _hip_points(tree: JointTree, legs: list[Limb]) -> int:
+    """How many places the leg chains start at (their first joints' places, told apart at
+    :data:`_AT_ONE_POINT`)."""
+    places: list[Vector] = []
+    for leg in legs:
+        first = tree.urdf.joint(leg.joints[0])
+        at = tree.poses.place(first.child) if first is not None else None
+        if at is not None and all(distance(at, place) >= _AT_ONE_POINT for place in places):
+            places.append(at)
+    return len(places)
+
+
+def _one_leg(tree: JointTree, one: Limb, other: Limb, *, several_hips: bool) -> str:
+    """Why two leg chains are one leg (a five-bar or a parallel linkage), or "". Chains from
+    one hip point are one leg's motors only where legs start at ``several_hips`` points: a
+    planar walker's model hangs both its legs from one point."""
     if _coaxial(tree, one, other) and _closed(tree, one, other):
         return (
             "two motors of one five-bar leg (their first joints turn about one line, "
             "their chains close a loop)"
+        )
+    if several_hips and _one_hip(tree, one, other):
+        return (
+            "two motors of one four-bar leg (their first joints turn about one axis at one "
+            "point, both chains in one plane)"
         )
     if (
         _beside(tree, one, other, on_line=False)
@@ -1704,6 +1724,21 @@ def _one_leg(tree: JointTree, one: Limb, other: Limb) -> str:
             "parallel axes side by side, their ends meet)"
         )
     return ""
+
+
+def _one_hip(tree: JointTree, one: Limb, other: Limb) -> bool:
+    """The first joints of two chains sit at one point, and every joint of both is a hinge
+    about one axis: two legs cannot share a hip's place and plane, so the two are one leg's
+    coaxial motors driving its linkage (a four-bar leg whose loop the file leaves open)."""
+    first, second = tree.urdf.joint(one.joints[0]), tree.urdf.joint(other.joints[0])
+    if first is None or second is None:
+        return False
+    if distance(tree.poses.place(first.child), tree.poses.place(second.child)) >= _AT_ONE_POINT:
+        return False
+    joints = [tree.urdf.joint(name) for name in (*one.joints, *other.joints)]
+    return all(joint is not None for joint in joints) and _planar(
+        tree, [joint for joint in joints if joint is not None]
+    )
 
 
 def _coaxial(tree: JointTree, one: Limb, other: Limb) -> bool:

@@ -723,6 +723,56 @@ def test_coaxial_leg_chains_that_end_as_far_apart_as_they_start_are_two_legs() -
     assert body.count("leg") == 4
 
 
+def four_bar_legs(*, knee_axis: str = "0 1 0", apart: float = 0.0) -> RobotText:
+    """Two legs, each of two motors about y at one hip point (``apart`` metres between them
+    along y), one chain's knee 10 cm below, the other's 15 cm (its own knee about
+    ``knee_axis``): a four-bar leg whose loop the file leaves open, its ends 5 cm apart."""
+    robot = RobotText("four_bar")
+    for side, y in (("left", 0.1), ("right", -0.1)):
+        for half, depth, offset in (("a", 0.1, 0.0), ("b", 0.15, apart)):
+            motor = builders.placed(
+                robot, f"{side}_{half}_motor", "revolute", robot.root,
+                f"{side}_{half}_motor_link", xyz=f"0 {y + offset} 0", axis="0 1 0",
+            )  # fmt: skip
+            axis = knee_axis if half == "b" else "0 1 0"
+            builders.placed(
+                robot, f"{side}_{half}_knee", "revolute", motor, f"{side}_{half}_knee_link",
+                xyz=f"0 0 -{depth}", axis=axis,
+            )  # fmt: skip
+    return robot
+
+
+def test_two_leg_chains_from_one_hip_point_hinged_in_one_plane_are_one_four_bar_leg() -> None:
+    body = detect_body(parse_urdf(four_bar_legs().text()), load_profile())
+    assert body.count("leg") == 2
+    assert all(len(limb.joints) == 4 for limb in body.limbs)
+    assert all("four-bar" in limb.why for limb in body.limbs)
+
+
+def test_a_planar_walkers_two_legs_from_its_one_hip_point_stay_two_legs() -> None:
+    robot = RobotText("planar_biped", root="torso")
+    for side in ("left", "right"):
+        thigh = builders.placed(
+            robot, f"{side}_hip", "revolute", "torso", f"{side}_thigh", xyz="0 0 -0.1",
+            axis="0 1 0",
+        )  # fmt: skip
+        builders.placed(
+            robot, f"{side}_knee", "revolute", thigh, f"{side}_shin", xyz="0 0 -0.4", axis="0 1 0"
+        )
+    body = detect_body(parse_urdf(robot.text()), load_profile())
+    assert body.count("leg") == 2
+
+
+@pytest.mark.parametrize(
+    "drawn", [{"knee_axis": "1 0 0"}, {"apart": 0.01}], ids=["out of plane", "hips apart"]
+)
+def test_leg_chains_out_of_one_plane_or_from_two_hip_points_are_no_four_bar_leg(
+    drawn: dict[str, Any],
+) -> None:
+    body = detect_body(parse_urdf(four_bar_legs(**drawn).text()), load_profile())
+    assert not any("four-bar" in limb.why for limb in body.limbs)
+
+
 def test_front_and_rear_hips_turning_about_one_line_along_the_body_are_two_legs() -> None:
     """Four 3-joint legs whose hips roll about the body's long axis: on each side the front
     and the rear hip turn about one line, 12 cm apart, and their feet are as far apart."""
