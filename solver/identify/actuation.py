@@ -156,6 +156,8 @@ def joint_roles(tree: JointTree) -> dict[str, Role]:
     roles.update(_coupled_drives(tree, roles))
     for name, why in endless_jaws(tree, set(roles)).items():
         roles[name] = Role(name, "gripper", why)
+    for name in _gripper_carriers(tree, roles):
+        del roles[name]
     grippers = gripper_closure(tree, {n for n, r in roles.items() if r.role == "gripper"})
     for name in grippers - set(roles):
         roles[name] = Role(name, "gripper", "moves a finger: below a gripper joint")
@@ -685,6 +687,39 @@ def _side_by_side(tree: JointTree, joints: list[Joint]) -> bool:
     along_spread = spread([sum(a * b for a, b in zip(p, axis, strict=True)) for p in places])
     across_spread = spread([sum(a * b for a, b in zip(p, across, strict=True)) for p in places])
     return across_spread > 0 and along_spread <= _SCREWS_ALONG * across_spread
+
+
+def _gripper_carriers(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
+    """Joints read as a gripper's by their names that carry the whole gripper: each alone on
+    its link (no movable joint beside it), coupled to no joint (a mimic's driver or follower
+    is the gripper's own drive), with jaws below it (two gripper joints or more side by side on
+    one link). Such a joint moves the gripper, not a finger (a slide that reaches out with it,
+    a servo that turns it): it is its arm's. Fingers hang side by side from the palm, and a
+    finger's own phalanges carry no jaws."""
+    grippers = {name for name, role in roles.items() if role.role == "gripper"}
+    coupled = {*tree.couplings.driver_of, *tree.couplings.driver_of.values()}
+    jaw_links = {
+        link
+        for link in {j.parent for j in tree.urdf.joints if j.name in grippers}
+        if sum(j.name in grippers for j in tree.urdf.children(link)) >= 2
+    }
+    above_jaws: set[str] = set()  # links with jaws on them or below them
+    for link in jaw_links:
+        current: str | None = link
+        while current is not None and current not in above_jaws:
+            above_jaws.add(current)
+            parent = tree.urdf.parent_joint(current)
+            current = None if parent is None else parent.parent
+    return [
+        name
+        for name in sorted(grippers, key=tree.order)
+        if (joint := tree.urdf.joint(name)) is not None
+        and joint.movable
+        and name not in coupled
+        and joint.parent not in jaw_links
+        and joint.child in above_jaws
+        and not any(o.movable and o is not joint for o in tree.urdf.children(joint.parent))
+    ]
 
 
 def _unnamed_rotors(tree: JointTree, taken: set[str]) -> list[str]:

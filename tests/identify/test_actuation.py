@@ -1336,3 +1336,39 @@ def test_two_leaves_in_line_that_are_unbalanced_askew_or_below_a_level_hinge_are
 ) -> None:
     roles = joint_roles(JointTree(parse_urdf(bicycle(**drawn)), load_profile()))
     assert not any(role.role == "wheel" for role in roles.values())
+
+
+def lift_and_gripper(*, coupled: bool = False) -> RobotText:
+    """A wheeled base whose lift raises a slide and a servo, both named for the gripper they
+    carry, and at the end two jaws side by side; when ``coupled``, the second jaw mimics the
+    first and the slide mimics the lift."""
+    robot = RobotText("lifter")
+    builders.wheeled_base(robot)
+    lift = builders.placed(robot, "mast_lift", "prismatic", robot.root, "carriage", xyz="0 0 0.5")
+    slide = builders.placed(robot, "gripper_slide", "prismatic", lift, "gripper_arm", axis="1 0 0")
+    palm = builders.placed(robot, "gripper_wrist", "revolute", slide, "gripper_palm", xyz="0.3 0 0")
+    builders.placed(robot, "gripper_left", "prismatic", palm, "jaw_l", xyz="0 0.03 0", axis="0 1 0")
+    mimic = '<mimic joint="gripper_left" multiplier="-1"/>' if coupled else ""
+    builders.placed(
+        robot, "gripper_right", "prismatic", palm, "jaw_r", xyz="0 -0.03 0", axis="0 1 0",
+        extra=mimic,
+    )  # fmt: skip
+    if coupled:  # the slide's joint, before the wrist's and the two jaws'
+        robot.joints[-4] = robot.joints[-4].replace(
+            "</joint>", '<mimic joint="mast_lift"/></joint>'
+        )
+    return robot
+
+
+def test_gripper_named_joints_that_carry_the_jaws_alone_are_the_arms_not_fingers() -> None:
+    roles = roles_of(lift_and_gripper())
+    assert "gripper_slide" not in roles
+    assert "gripper_wrist" not in roles
+    assert (roles["gripper_left"].role, roles["gripper_right"].role) == ("gripper", "gripper")
+    result = identify_urdf(lift_and_gripper().text())
+    assert result.structure == "Mobile Manipulator"
+
+
+def test_a_gripper_named_joint_carrying_the_jaws_that_a_mimic_couples_stays_the_grippers() -> None:
+    roles = roles_of(lift_and_gripper(coupled=True))
+    assert roles["gripper_slide"].role == "gripper"

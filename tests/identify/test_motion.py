@@ -990,6 +990,15 @@ def test_a_gripper_alone_is_opened_and_closed_on_command_a_guess_said_so() -> No
     assert "gripper or hand alone" not in sources
 
 
+def test_a_hand_alone_on_its_wrist_is_opened_and_closed_on_command_a_guess_said_so() -> None:
+    result = identify_urdf(builders.forearm_hand().text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["wrist"]
+    (control,) = result.motion_controls
+    assert control.motion_control == "Joint"
+    assert "likely, not declared: a gripper or hand alone" in control.source
+
+
 def test_a_vessel_whose_propulsion_is_not_drawn_is_driven() -> None:
     # A hull, a GPS and an IMU frame, and the buoyancy plugin that floats it: the thrusters are
     # a driver's, not the description's.
