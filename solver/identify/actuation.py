@@ -697,29 +697,47 @@ def _gripper_carriers(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     a servo that turns it): it is its arm's. Fingers hang side by side from the palm, and a
     finger's own phalanges carry no jaws."""
     grippers = {name for name, role in roles.items() if role.role == "gripper"}
+    jaws_on = _jaw_links(tree, grippers)
+    above_jaws = _up_from(tree, jaws_on)
     coupled = {*tree.couplings.driver_of, *tree.couplings.driver_of.values()}
-    jaw_links = {
-        link
-        for link in {j.parent for j in tree.urdf.joints if j.name in grippers}
-        if sum(j.name in grippers for j in tree.urdf.children(link)) >= 2
-    }
-    above_jaws: set[str] = set()  # links with jaws on them or below them
-    for link in jaw_links:
-        current: str | None = link
-        while current is not None and current not in above_jaws:
-            above_jaws.add(current)
-            parent = tree.urdf.parent_joint(current)
-            current = None if parent is None else parent.parent
     return [
         name
         for name in sorted(grippers, key=tree.order)
         if (joint := tree.urdf.joint(name)) is not None
         and joint.movable
         and name not in coupled
-        and joint.parent not in jaw_links
+        and joint.parent not in jaws_on
         and joint.child in above_jaws
-        and not any(o.movable and o is not joint for o in tree.urdf.children(joint.parent))
+        and _alone_on_its_link(tree, joint)
     ]
+
+
+def _jaw_links(tree: JointTree, grippers: set[str]) -> set[str]:
+    """Links that carry two of the ``grippers`` joints or more side by side (jaws)."""
+    carriers = {joint.parent for joint in tree.urdf.joints if joint.name in grippers}
+    return {
+        link
+        for link in carriers
+        if sum(joint.name in grippers for joint in tree.urdf.children(link)) >= 2
+    }
+
+
+def _up_from(tree: JointTree, links: set[str]) -> set[str]:
+    """``links`` and every link above one of them, up to the root: one walk of the tree at
+    most, however many links (a walk stops where another passed)."""
+    found: set[str] = set()
+    for link in links:
+        current: str | None = link
+        while current is not None and current not in found:
+            found.add(current)
+            parent = tree.urdf.parent_joint(current)
+            current = None if parent is None else parent.parent
+    return found
+
+
+def _alone_on_its_link(tree: JointTree, joint: Joint) -> bool:
+    """No other movable joint hangs from ``joint``'s parent link."""
+    return not any(o.movable and o is not joint for o in tree.urdf.children(joint.parent))
 
 
 def _unnamed_rotors(tree: JointTree, taken: set[str]) -> list[str]:
@@ -860,7 +878,7 @@ def _named_for_a_part(
         return False
     if not all(_ONLY_A_CORNER.fullmatch(name) for name in words):
         return True
-    alone = not any(o.movable and o is not joint for o in tree.urdf.children(joint.parent))
+    alone = _alone_on_its_link(tree, joint)
     if alone and moved_by(tree.urdf, joint.parent, known) is not None:
         return True  # alone on a part that moves: a knuckle's or a swivel's wheel
 
