@@ -427,8 +427,8 @@ def _in_line(tree: JointTree, leaves: list[Joint]) -> bool:
     """Two leaves, each carrying its mass on its axle (:func:`_balanced`), about parallel
     level axles as the body rests, one behind the other (apart across their axles, not along
     them), one on the body and the other below one swivel about the upright, the only joint
-    that turns between it and the body: a bicycle's or a scooter's wheels, the front one
-    steered. Wheels side by side are told by :func:`_sides`."""
+    that turns between it and the body, hanging lower than its pivot: a bicycle's or a
+    scooter's wheels, the front one steered. Wheels side by side are told by :func:`_sides`."""
     if len(leaves) != 2 or not all(_balanced(tree, leaf) for leaf in leaves):
         return False
     axes = [tree.poses.axis(leaf) for leaf in leaves]
@@ -443,6 +443,9 @@ def _in_line(tree: JointTree, leaves: list[Joint]) -> bool:
     if nearest_above(tree.urdf, swivel.parent, known, _turns) is not None or not _upright(
         tree.poses.axis(swivel)
     ):
+        return False
+    steered = leaves[0] if above[0] is not None else leaves[1]
+    if not _hangs_below(tree, steered, swivel):
         return False
     gap = minus(tree.poses.place(leaves[0].child), tree.poses.place(leaves[1].child))
     along = abs(dot(gap, axes[0]))
@@ -790,9 +793,10 @@ def _wheel_candidates(
 def _caster_wheel(tree: JointTree, joint: Joint, known: dict[str, str | None]) -> bool:
     """``joint`` turns a part that carries its mass on its axle (:func:`_balanced`) about a
     level axle as the body rests, below one joint that turns, a swivel about the upright as the
-    body rests, on the body: a caster's wheel. Turning about the upright keeps an axle level
-    whatever the swivel's angle, so the rest pose says what the axle is (a leg's or an arm's
-    does not); a leg's shin hangs its mass off its knee."""
+    body rests, on the body, and hangs lower than the swivel's pivot: a caster's wheel.
+    Turning about the upright keeps an axle level whatever the swivel's angle, so the rest pose
+    says what the axle is (a leg's or an arm's does not); a leg's shin hangs its mass off its
+    knee, and a head's tilt sits above its pan."""
     above = nearest_above(tree.urdf, joint.parent, known, _turns)
     swivel = tree.urdf.joint(above) if above is not None else None
     return (
@@ -802,7 +806,14 @@ def _caster_wheel(tree: JointTree, joint: Joint, known: dict[str, str | None]) -
         and _upright(tree.poses.axis(swivel))
         and _axle(tree.poses.axis(joint))
         and _balanced(tree, joint)
+        and _hangs_below(tree, joint, swivel)
     )
+
+
+def _hangs_below(tree: JointTree, leaf: Joint, swivel: Joint) -> bool:
+    """``leaf``'s axle is lower than ``swivel``'s pivot as the body rests: a caster's or a
+    fork's wheel hangs below what steers it (a head's tilt sits above its pan)."""
+    return tree.poses.place(leaf.child)[2] < tree.poses.place(swivel.child)[2]
 
 
 def _resting_axis(tree: JointTree, joint: Joint, known: dict[str, str | None]) -> Vector:

@@ -1243,10 +1243,11 @@ def test_leaves_named_for_their_corner_alone_on_steering_swivels_are_steered_whe
     assert not with_role(roles, "caster")
 
 
-def caster_base(leaf_mass_at: str) -> str:
+def caster_base(leaf_mass_at: str, leaf_at: str = "-0.02 0.07 0") -> str:
     """An unnamed base: two drive wheels below it, and at its four corners a swivel about the
     upright (its frame turned a quarter about x, its axis y) carrying one leaf that turns about
-    its own z, level as the base rests; each leaf's mass centre at ``leaf_mass_at`` on its link.
+    its own z, level as the base rests; each leaf's mass centre at ``leaf_mass_at`` on its link,
+    each leaf at ``leaf_at`` in its swivel's frame (its y is down as the base rests).
     """
     robot = RobotText("cart", root="b")
     for i, y in enumerate((0.17, -0.17)):
@@ -1265,7 +1266,7 @@ def caster_base(leaf_mass_at: str) -> str:
             rpy="-1.57 0 0",
             axis="0 1 0",
         )
-        builders.placed(robot, f"c{i}", "continuous", swivel, f"cw{i}", xyz="-0.02 0.07 0")
+        builders.placed(robot, f"c{i}", "continuous", swivel, f"cw{i}", xyz=leaf_at)
     text = robot.text()
     for i in range(4):
         text = text.replace(
@@ -1292,19 +1293,33 @@ def test_a_leaf_on_a_swivel_about_the_upright_carrying_its_mass_on_its_level_axl
     assert identify_urdf(text).structure == "UGV"
 
 
-def test_a_leaf_on_a_swivel_hanging_its_mass_off_its_axle_is_no_wheel() -> None:
-    roles = joint_roles(JointTree(parse_urdf(caster_base("0.05 0 0")), load_profile()))
+@pytest.mark.parametrize(
+    "drawn",
+    [{"leaf_mass_at": "0.05 0 0"}, {"leaf_mass_at": "0 0 0", "leaf_at": "-0.02 -0.07 0"}],
+    ids=["its mass off its axle", "above its swivel (a head's tilt)"],
+)
+def test_a_leaf_on_a_swivel_hanging_its_mass_off_its_axle_or_above_it_is_no_wheel(
+    drawn: dict[str, str],
+) -> None:
+    roles = joint_roles(JointTree(parse_urdf(caster_base(**drawn)), load_profile()))
     assert {name for name, role in roles.items() if role.role == "wheel"} == {"d0", "d1"}
 
 
-def bicycle(*, front_mass_at: str = "0 0 0", front_axis: str = "0 1 0", fork: str = "0 0 1") -> str:
+def bicycle(
+    *,
+    front_mass_at: str = "0 0 0",
+    front_axis: str = "0 1 0",
+    fork: str = "0 0 1",
+    front_at: str = "0 0 -0.2",
+) -> str:
     """An unnamed bicycle: a rear leaf on the frame and a front leaf below a fork turning about
-    ``fork``, both about y (the front about ``front_axis``), 0.8 m apart along x; each wheel's
-    mass centre on its axle, the front's at ``front_mass_at``."""
+    ``fork``, both about y (the front about ``front_axis``), 0.8 m apart along x, the front
+    one at ``front_at`` from the fork's pivot; each wheel's mass centre on its axle, the
+    front's at ``front_mass_at``."""
     robot = RobotText("two", root="f")
     builders.placed(robot, "r", "continuous", "f", "rw", xyz="-0.4 0 0", axis="0 1 0")
     fork_link = builders.placed(robot, "s", "revolute", "f", "fk", xyz="0.4 0 0.2", axis=fork)
-    builders.placed(robot, "w", "continuous", fork_link, "fw", xyz="0 0 -0.2", axis=front_axis)
+    builders.placed(robot, "w", "continuous", fork_link, "fw", xyz=front_at, axis=front_axis)
     text = robot.text()
     for link, centre in (("rw", "0 0 0"), ("fw", front_mass_at)):
         text = text.replace(
@@ -1329,6 +1344,7 @@ def test_two_balanced_leaves_in_line_the_front_one_below_an_upright_swivel_are_w
         {"front_mass_at": "0 0 -0.1"},  # a pendulum's bob, not a wheel
         {"front_axis": "0.23 1 0"},  # axles 13 degrees apart: not parallel, yet in line
         {"fork": "0 1 0"},  # hung from a hinge about a level axis: an arm's joint
+        {"front_at": "0 0 0.1"},  # above its swivel: a head's tilt, no fork's wheel
     ],
 )
 def test_two_leaves_in_line_that_are_unbalanced_askew_or_below_a_level_hinge_are_no_wheels(
