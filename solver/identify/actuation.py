@@ -389,14 +389,14 @@ def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     Fingers have limits; rotors sit level with or above their body and turn about an upright
     axis; a propeller on a wing turns about the axis it flies along. Six or more level with a
     link are a wheel-leg walker's whole-turning legs (:func:`~solver.identify.limbs.find_limbs`),
-    unless each carries its mass on its axle (:func:`_balanced`): a leg that turns whole hangs
-    its mass out along the leg, a wheel is round about its axle (an eight-wheeled skid-steer
-    base, a tracked base's road wheels).
+    unless they carry their mass on their axles (:func:`_mostly_balanced`): a leg that turns
+    whole hangs its mass out along the leg, a wheel is round about its axle (an eight-wheeled
+    skid-steer base, a tracked base's road wheels).
     """
     below, level = _wheel_candidates(tree, roles)
     driven = bool(tree.labels("drive") or tree.labels("track"))
     for link, joints in level.items():
-        if len(joints) < _WHEEL_LEGS or driven or all(_balanced(tree, j) for j in joints):
+        if len(joints) < _WHEEL_LEGS or driven or _mostly_balanced(tree, joints):
             below.setdefault(link, []).extend(joints)  # road wheels, not legs
     found: list[str] = []
     apart: list[Joint] = []
@@ -426,9 +426,10 @@ def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
 def _in_line(tree: JointTree, leaves: list[Joint]) -> bool:
     """Two leaves, each carrying its mass on its axle (:func:`_balanced`), about parallel
     level axles as the body rests, one behind the other (apart across their axles, not along
-    them), one on the body and the other below one swivel about the upright, the only joint
-    that turns between it and the body, hanging lower than its pivot: a bicycle's or a
-    scooter's wheels, the front one steered. Wheels side by side are told by :func:`_sides`."""
+    them), one on the body and the other below one swivel about the upright (endless or
+    limited: a fork steers within stops), the only joint that turns between it and the body,
+    hanging lower than its pivot: a bicycle's or a scooter's wheels, the front one steered.
+    Wheels side by side are told by :func:`_sides`."""
     if len(leaves) != 2 or not all(_balanced(tree, leaf) for leaf in leaves):
         return False
     axes = [tree.poses.axis(leaf) for leaf in leaves]
@@ -454,17 +455,44 @@ def _in_line(tree: JointTree, leaves: list[Joint]) -> bool:
 
 
 def _balanced(tree: JointTree, joint: Joint) -> bool:
-    """The part ``joint`` turns has its mass centre on the joint's axis (within
-    :data:`_ON_THE_AXLE`): a wheel's, round about its axle. False when its link declares no
-    mass (nothing is known of it)."""
-    link = tree.urdf.link(joint.child)
-    centre = None if link is None else link.mass_centre
-    length = math.hypot(*joint.axis)
-    if centre is None or length == 0:
-        return False
-    axis = (joint.axis[0] / length, joint.axis[1] / length, joint.axis[2] / length)  # the link's
-    along = dot(centre, axis)
-    off = minus(centre, (along * axis[0], along * axis[1], along * axis[2]))
+    """The part ``joint`` turns is known to carry its mass on its axle (:func:`_balance`)."""
+    return _balance(tree, joint) is True
+
+
+def _mostly_balanced(tree: JointTree, joints: list[Joint]) -> bool:
+    """None of the parts ``joints`` turn is known to hang its mass off its axle, and more than
+    half are known to carry it on the axle (:func:`_balance`): a row of road wheels whose few
+    idlers' files leave out where their mass is."""
+    verdicts = [_balance(tree, joint) for joint in joints]
+    return False not in verdicts and 2 * verdicts.count(True) > len(verdicts)
+
+
+def _balance(tree: JointTree, joint: Joint) -> bool | None:
+    """Whether the part ``joint`` turns (its link and the links fixed below it) has its mass
+    centre on the joint's axis (within :data:`_ON_THE_AXLE`), read as the body rests: a
+    wheel's, round about its axle; a leg drawn as a motor's hub with the leg fixed below it
+    hangs its mass out. None when nothing is known of it: a link of the part with a mass gives
+    no place for it, or none has a mass."""
+    total = 0.0
+    moment = [0.0, 0.0, 0.0]
+    for name in (joint.child, *tree.urdf.fixed_below(joint.child)):
+        link = tree.urdf.link(name)
+        if link is None or link.mass is None:
+            continue
+        if link.mass_centre is None:
+            return None
+        offset = tree.poses.turned(name, (0.0, 0.0, 0.0), link.mass_centre)
+        place = tree.poses.place(name)
+        total += link.mass
+        for k in range(3):
+            moment[k] += link.mass * (place[k] + offset[k])
+    if total <= 0 or not math.isfinite(total):
+        return None
+    centre = (moment[0] / total, moment[1] / total, moment[2] / total)
+    axis = tree.poses.axis(joint)  # a unit vector through the joint's place
+    lever = minus(centre, tree.poses.place(joint.child))
+    along = dot(lever, axis)
+    off = minus(lever, (along * axis[0], along * axis[1], along * axis[2]))
     return math.hypot(*off) <= _ON_THE_AXLE
 
 
@@ -695,14 +723,16 @@ def _side_by_side(tree: JointTree, joints: list[Joint]) -> bool:
 def _gripper_carriers(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     """Joints read as a gripper's by their names that carry the whole gripper: each alone on
     its link (no movable joint beside it), coupled to no joint (a mimic's driver or follower
-    is the gripper's own drive), with jaws below it (two gripper joints or more side by side on
-    one link). Such a joint moves the gripper, not a finger (a slide that reaches out with it,
-    a servo that turns it): it is its arm's. Fingers hang side by side from the palm, and a
-    finger's own phalanges carry no jaws."""
+    is the gripper's own drive), below a joint that moves (a lift, an arm's joint), with jaws
+    below it (two gripper joints or more on one link). Such a joint moves the gripper, not a
+    finger (a slide that reaches out with it, a servo that turns it): it is its arm's. Fingers
+    hang from the palm beside each other, a finger's own phalanges carry no jaws, and the
+    first joint of a gripper alone (nothing moves above it) stays the gripper's."""
     grippers = {name for name, role in roles.items() if role.role == "gripper"}
     jaws_on = _jaw_links(tree, grippers)
     above_jaws = _up_from(tree, jaws_on)
     coupled = {*tree.couplings.driver_of, *tree.couplings.driver_of.values()}
+    known: dict[str, str | None] = {}
     return [
         name
         for name in sorted(grippers, key=tree.order)
@@ -712,11 +742,12 @@ def _gripper_carriers(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
         and joint.parent not in jaws_on
         and joint.child in above_jaws
         and _alone_on_its_link(tree, joint)
+        and moved_by(tree.urdf, joint.parent, known) is not None
     ]
 
 
 def _jaw_links(tree: JointTree, grippers: set[str]) -> set[str]:
-    """Links that carry two of the ``grippers`` joints or more side by side (jaws)."""
+    """Links that carry two of the ``grippers`` joints or more (jaws)."""
     carriers = {joint.parent for joint in tree.urdf.joints if joint.name in grippers}
     return {
         link
@@ -792,8 +823,9 @@ def _wheel_candidates(
 
 def _caster_wheel(tree: JointTree, joint: Joint, known: dict[str, str | None]) -> bool:
     """``joint`` turns a part that carries its mass on its axle (:func:`_balanced`) about a
-    level axle as the body rests, below one joint that turns, a swivel about the upright as the
-    body rests, on the body, and hangs lower than the swivel's pivot: a caster's wheel.
+    level axle as the body rests, below one joint that turns, an endless swivel about the
+    upright as the body rests, on the body, and hangs lower than the swivel's pivot: a caster's
+    wheel.
     Turning about the upright keeps an axle level whatever the swivel's angle, so the rest pose
     says what the axle is (a leg's or an arm's does not); a leg's shin hangs its mass off its
     knee, and a head's tilt sits above its pan."""

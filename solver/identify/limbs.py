@@ -1727,17 +1727,37 @@ def _one_leg(tree: JointTree, one: Limb, other: Limb, *, several_hips: bool) -> 
 
 
 def _one_hip(tree: JointTree, one: Limb, other: Limb) -> bool:
-    """The first joints of two chains sit at one point, and every joint of both is a hinge
-    about one axis: two legs cannot share a hip's place and plane, so the two are one leg's
-    coaxial motors driving its linkage (a four-bar leg whose loop the file leaves open)."""
+    """The first joints of two chains sit at one point, every joint of both is a hinge about
+    one axis, and the two are not drawn over each other (:func:`_drawn_over`): two motors at
+    one hip driving one leg's linkage (a four-bar leg whose loop the file leaves open). A
+    model drawn in a side view puts a left and a right leg at one point, joint over joint."""
     first, second = tree.urdf.joint(one.joints[0]), tree.urdf.joint(other.joints[0])
     if first is None or second is None:
         return False
     if distance(tree.poses.place(first.child), tree.poses.place(second.child)) >= _AT_ONE_POINT:
         return False
     joints = [tree.urdf.joint(name) for name in (*one.joints, *other.joints)]
-    return all(joint is not None for joint in joints) and _planar(
-        tree, [joint for joint in joints if joint is not None]
+    return (
+        all(joint is not None for joint in joints)
+        and _planar(tree, [joint for joint in joints if joint is not None])
+        and not _drawn_over(tree, one, other)
+    )
+
+
+def _drawn_over(tree: JointTree, one: Limb, other: Limb) -> bool:
+    """Two chains of as many joints, each joint at the place of the other's: one limb drawn
+    over another (a left and a right leg in a side view), no linkage."""
+    if len(one.joints) != len(other.joints):
+        return False
+    return all(
+        a is not None
+        and b is not None
+        and distance(tree.poses.place(a.child), tree.poses.place(b.child)) < _LOOP_CLOSED
+        for a, b in zip(
+            (tree.urdf.joint(name) for name in one.joints),
+            (tree.urdf.joint(name) for name in other.joints),
+            strict=True,
+        )
     )
 
 

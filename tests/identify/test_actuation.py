@@ -1388,3 +1388,20 @@ def test_gripper_named_joints_that_carry_the_jaws_alone_are_the_arms_not_fingers
 def test_a_gripper_named_joint_carrying_the_jaws_that_a_mimic_couples_stays_the_grippers() -> None:
     roles = roles_of(lift_and_gripper(coupled=True))
     assert roles["gripper_slide"].role == "gripper"
+    assert roles["gripper_wrist"].role == "gripper"  # below a gripper joint: a finger's
+
+
+def test_a_gripper_alone_whose_first_joint_carries_the_jaws_stays_a_gripper_opened_on_command() -> (
+    None
+):
+    robot = RobotText("rotating_gripper", root="base")
+    palm = builders.placed(robot, "gripper_rotate", "revolute", "base", "gripper_palm")
+    for side, y in (("left", 0.03), ("right", -0.03)):
+        builders.placed(
+            robot, f"gripper_{side}", "prismatic", palm, f"jaw_{side}", xyz=f"0 {y} 0.05",
+            axis="0 1 0",
+        )  # fmt: skip
+    assert roles_of(robot)["gripper_rotate"].role == "gripper"
+    result = identify_urdf(robot.text())
+    assert result.structure == "Gripper"
+    assert {c.motion_control for c in result.motion_controls} == {"Joint"}

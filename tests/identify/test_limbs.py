@@ -763,6 +763,25 @@ def test_a_planar_walkers_two_legs_from_its_one_hip_point_stay_two_legs() -> Non
     assert body.count("leg") == 2
 
 
+def test_a_side_views_left_and_right_legs_drawn_over_each_other_stay_two_legs() -> None:
+    """A quadruped drawn in its plane: at the front hip and at the rear hip a left and a
+    right leg, each of a hip and a knee, joint over joint."""
+    robot = RobotText("side_view_dog", root="trunk")
+    for end, x in (("front", 0.2), ("rear", -0.2)):
+        for side in ("a", "b"):
+            thigh = builders.placed(
+                robot, f"{end}_{side}_hip", "revolute", "trunk", f"{end}_{side}_thigh",
+                xyz=f"{x} 0 -0.05", axis="0 1 0",
+            )  # fmt: skip
+            builders.placed(
+                robot, f"{end}_{side}_knee", "revolute", thigh, f"{end}_{side}_shin",
+                xyz="0 0 -0.2", axis="0 1 0",
+            )  # fmt: skip
+    body = detect_body(parse_urdf(robot.text()), load_profile())
+    assert body.count("leg") == 4
+    assert not any("four-bar" in limb.why for limb in body.limbs)
+
+
 @pytest.mark.parametrize(
     "drawn", [{"knee_axis": "1 0 0"}, {"apart": 0.01}], ids=["out of plane", "hips apart"]
 )
@@ -1164,12 +1183,49 @@ def test_six_one_joint_chains_carrying_their_mass_on_their_axles_are_wheels(cent
     assert result.structure == "UGV"
 
 
-@pytest.mark.parametrize("centre", ["0 0 -0.08", "-0.06 0.007 -0.095", "0.01 0 0"])
+@pytest.mark.parametrize("centre", ["0 0 -0.08", "-0.06 0.007 -0.095", "0.01 0 0", None])
 def test_six_one_joint_chains_hanging_their_mass_off_their_axles_stay_a_wheel_leg_walker(
-    centre: str,
+    centre: str | None,
 ) -> None:
-    result = identify_urdf(with_masses(whole_turn_legs(), centre))
-    assert result.structure == "Hexapod"
+    text = with_masses(whole_turn_legs(), "0 0 0")
+    if centre is None:  # an inertial that leaves its origin out says nothing of where
+        text = text.replace('<origin xyz="0 0 0"/><mass', "<mass")
+    else:
+        text = with_masses(whole_turn_legs(), centre)
+    assert identify_urdf(text).structure == "Hexapod"
+
+
+def test_road_wheels_whose_few_idlers_leave_their_mass_unplaced_are_wheels() -> None:
+    text = with_masses(whole_turn_legs(), "0 0 0")
+    for i in (0, 3):  # two of six: an inertial with no origin says nothing of where
+        text = text.replace(
+            f'<link name="spoke{i}"><inertial><origin xyz="0 0 0"/>',
+            f'<link name="spoke{i}"><inertial>',
+        )
+    assert identify_urdf(text).structure == "UGV"
+
+
+def test_one_leg_known_to_hang_its_mass_out_keeps_the_six_a_wheel_leg_walker() -> None:
+    text = with_masses(whole_turn_legs(), "0 0 0").replace(
+        '<link name="spoke2"><inertial><origin xyz="0 0 0"/>',
+        '<link name="spoke2"><inertial><origin xyz="0 0 -0.08"/>',
+    )
+    assert identify_urdf(text).structure == "Hexapod"
+
+
+def test_six_hubs_turning_legs_fixed_below_them_are_a_wheel_leg_walker() -> None:
+    """Each joint turns a motor's hub balanced on its axle, and the leg, fixed to the hub,
+    hangs 8 cm out: the part that turns is out of balance."""
+    text = with_masses(whole_turn_legs(), "0 0 0")
+    for i in range(6):
+        text = text.replace(
+            "</robot>",
+            f'<link name="leg{i}"><inertial><origin xyz="0 0 -0.08"/><mass value="0.5"/>'
+            '<inertia ixx="0.001" ixy="0" ixz="0" iyy="0.001" iyz="0" izz="0.001"/></inertial>'
+            f'</link><joint name="leg{i}_fixed" type="fixed"><parent link="spoke{i}"/>'
+            f'<child link="leg{i}"/></joint></robot>',
+        )
+    assert identify_urdf(text).structure == "Hexapod"
 
 
 def planar_snake(modules: int) -> RobotText:

@@ -80,8 +80,10 @@ class Link:
     declared: bool = True
     # A declared <link/> with nothing in it: no visual, collision or inertial (a frame).
     empty: bool = False
-    # Where its <inertial> puts its mass centre on the link (its <origin xyz>; the link's origin
-    # when it writes none); None when it declares no inertial. A wheel's lies on its axle.
+    # Its <inertial>'s mass and where its <origin xyz> puts the mass centre on the link; None
+    # when it writes no inertial, no positive mass or no readable place (an origin left out is
+    # a macro's default, not a measurement). A wheel's mass centre lies on its axle.
+    mass: float | None = None
     mass_centre: tuple[float, float, float] | None = None
 
 
@@ -495,6 +497,7 @@ class _Builder:
                     _compensation(element),
                     _cylinder(element),
                     empty=not any(isinstance(part.tag, str) for part in element),
+                    mass=_mass(element),
                     mass_centre=_mass_centre(element),
                 )
         return found
@@ -1196,15 +1199,19 @@ def _cylinder(link: etree._Element) -> Cylinder | None:
     return Cylinder(radius, length, _vector(origin, zero, "rpy"), _vector(origin, zero))
 
 
+def _mass(link: etree._Element) -> float | None:
+    """A link's first ``<inertial>``'s positive mass, or None."""
+    found = link.find("inertial/mass")
+    value = None if found is None else _float(found.get("value"))
+    return value if value is not None and value > 0 else None
+
+
 def _mass_centre(link: etree._Element) -> tuple[float, float, float] | None:
-    """Where a link's first ``<inertial>`` puts its mass centre, or None when it has none or
-    writes a place that cannot be read."""
-    inertial = link.find("inertial")
-    if inertial is None:
-        return None
-    origin = inertial.find("origin")
+    """Where a link's first ``<inertial>`` puts its mass centre (its ``<origin xyz>``), or None
+    when it writes no inertial, no such origin or one that cannot be read."""
+    origin = link.find("inertial/origin")
     if origin is None or origin.get("xyz") is None:
-        return (0.0, 0.0, 0.0)
+        return None
     unread = (math.nan, math.nan, math.nan)
     found = _vector(origin, unread)
     return None if found is unread else found

@@ -258,9 +258,28 @@ def test_a_links_first_visual_is_kept_when_it_is_a_readable_cylinder(
 @pytest.mark.parametrize(
     ("inertial", "expected"),
     [
+        ('<inertial><mass value="2.5"/></inertial>', 2.5),
+        ('<inertial><mass value="0"/></inertial>', None),
+        ('<inertial><mass value="-1"/></inertial>', None),
+        ('<inertial><mass value="nan"/></inertial>', None),
+        ("<inertial/>", None),
+        ("", None),
+    ],
+    ids=["positive", "zero", "negative", "not a number", "no mass", "no inertial"],
+)
+def test_a_links_mass_is_its_inertials_positive_mass(inertial: str, expected: float | None) -> None:
+    urdf = parse_urdf(f'<robot name="r"><link name="base">{inertial}</link></robot>', "r.urdf")
+    link = urdf.link("base")
+    assert link is not None
+    assert link.mass == expected
+
+
+@pytest.mark.parametrize(
+    ("inertial", "expected"),
+    [
         ('<inertial><origin xyz="0 0 -0.08"/><mass value="1"/></inertial>', (0.0, 0.0, -0.08)),
-        ('<inertial><mass value="1"/></inertial>', (0.0, 0.0, 0.0)),
-        ('<inertial><origin rpy="0 1 0"/><mass value="1"/></inertial>', (0.0, 0.0, 0.0)),
+        ('<inertial><mass value="1"/></inertial>', None),  # a macro's default, not a place
+        ('<inertial><origin rpy="0 1 0"/><mass value="1"/></inertial>', None),
         ('<inertial><origin xyz="0 nan 1"/><mass value="1"/></inertial>', None),
         ('<inertial><origin xyz="0 1"/><mass value="1"/></inertial>', None),
         ("", None),
