@@ -7,7 +7,7 @@ from pathlib import Path
 import pytest
 
 from solver.errors import InputError
-from solver.identify.readers.urdf import Cylinder, parse_urdf
+from solver.identify.readers.urdf import Cylinder, Link, parse_urdf
 from tests.conftest import run_cli
 from tests.identify import builders
 
@@ -212,6 +212,15 @@ def test_a_gazebo_block_that_turns_gravity_off_is_read(block: str, off: bool) ->
     assert parse_urdf(text, "r.urdf").gravity_off is off
 
 
+def base_link(inner: str) -> Link:
+    """The link ``base`` of a one-link robot whose ``<link>`` holds ``inner``."""
+    link = parse_urdf(f'<robot name="r"><link name="base">{inner}</link></robot>', "r.urdf").link(
+        "base"
+    )
+    assert link is not None
+    return link
+
+
 @pytest.mark.parametrize(
     ("visual", "expected"),
     [
@@ -249,9 +258,7 @@ def test_a_gazebo_block_that_turns_gravity_off_is_read(block: str, off: bool) ->
 def test_a_links_first_visual_is_kept_when_it_is_a_readable_cylinder(
     visual: str, expected: Cylinder | None
 ) -> None:
-    urdf = parse_urdf(f'<robot name="r"><link name="base">{visual}</link></robot>', "r.urdf")
-    link = urdf.link("base")
-    assert link is not None
+    link = base_link(visual)
     assert link.cylinder == expected
 
 
@@ -268,9 +275,7 @@ def test_a_links_first_visual_is_kept_when_it_is_a_readable_cylinder(
     ids=["positive", "zero", "negative", "not a number", "no mass", "no inertial"],
 )
 def test_a_links_mass_is_its_inertials_positive_mass(inertial: str, expected: float | None) -> None:
-    urdf = parse_urdf(f'<robot name="r"><link name="base">{inertial}</link></robot>', "r.urdf")
-    link = urdf.link("base")
-    assert link is not None
+    link = base_link(inertial)
     assert link.mass == expected
 
 
@@ -289,9 +294,7 @@ def test_a_links_mass_is_its_inertials_positive_mass(inertial: str, expected: fl
 def test_a_links_mass_centre_is_where_its_inertial_puts_it_and_unknown_when_unreadable(
     inertial: str, expected: tuple[float, float, float] | None
 ) -> None:
-    urdf = parse_urdf(f'<robot name="r"><link name="base">{inertial}</link></robot>', "r.urdf")
-    link = urdf.link("base")
-    assert link is not None
+    link = base_link(inertial)
     assert link.mass_centre == expected
 
 
