@@ -32,8 +32,8 @@ from collections import Counter
 from collections.abc import Iterator, Mapping
 
 from solver.identify.hands import endless_jaws, gripper_closure, jaws
-from solver.identify.limbs import CORNER, moved_by, nearest_above, points_a_sensor
-from solver.identify.pose import Vector, dot, local_axis, minus, parallel, spread
+from solver.identify.limbs import CORNER, joints_above, moved_by, nearest_above, points_a_sensor
+from solver.identify.pose import Vector, dot, local_axis, minus, off_axis, parallel, spread
 from solver.identify.readers.urdf import Joint
 from solver.identify.roles import POSED, Role, main_axis
 from solver.identify.tree import JointTree
@@ -426,9 +426,8 @@ def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
 def _in_line(tree: JointTree, leaves: list[Joint]) -> bool:
     """Two leaves, each carrying its mass on its axle (:func:`_balanced`), about parallel
     level axles as the body rests, one behind the other (apart across their axles, not along
-    them), one on the body and the other below one swivel about the upright (endless or
-    limited: a fork steers within stops), the only joint that turns between it and the body,
-    hanging lower than its pivot: a bicycle's or a scooter's wheels, the front one steered.
+    them), one on the body and the other steered (:func:`_steered_by`; endless or limited: a
+    fork steers within stops): a bicycle's or a scooter's wheels, the front one steered.
     Wheels side by side are told by :func:`_sides`."""
     if len(leaves) != 2 or not all(_balanced(tree, leaf) for leaf in leaves):
         return False
@@ -437,21 +436,14 @@ def _in_line(tree: JointTree, leaves: list[Joint]) -> bool:
         return False
     known: dict[str, str | None] = {}
     above = [nearest_above(tree.urdf, leaf.parent, known, _turns) for leaf in leaves]
-    swivels = [tree.urdf.joint(name) for name in above if name is not None]
-    if len(swivels) != 1 or swivels[0] is None:
-        return False
-    swivel = swivels[0]
-    if nearest_above(tree.urdf, swivel.parent, known, _turns) is not None or not _upright(
-        tree.poses.axis(swivel)
-    ):
+    if above.count(None) != 1:
         return False
     steered = leaves[0] if above[0] is not None else leaves[1]
-    if not _hangs_below(tree, steered, swivel):
+    if _steered_by(tree, steered, known) is None:
         return False
     gap = minus(tree.poses.place(leaves[0].child), tree.poses.place(leaves[1].child))
-    along = abs(dot(gap, axes[0]))
-    across = math.sqrt(max(dot(gap, gap) - along * along, 0.0))
-    return across > 0 and along <= _IN_LINE * across
+    across = off_axis(gap, axes[0])
+    return across > 0 and abs(dot(gap, axes[0])) <= _IN_LINE * across
 
 
 def _balanced(tree: JointTree, joint: Joint) -> bool:
@@ -489,11 +481,8 @@ def _balance(tree: JointTree, joint: Joint) -> bool | None:
     if total <= 0 or not math.isfinite(total):
         return None
     centre = (moment[0] / total, moment[1] / total, moment[2] / total)
-    axis = tree.poses.axis(joint)  # a unit vector through the joint's place
-    lever = minus(centre, tree.poses.place(joint.child))
-    along = dot(lever, axis)
-    off = minus(lever, (along * axis[0], along * axis[1], along * axis[2]))
-    return math.hypot(*off) <= _ON_THE_AXLE
+    lever = minus(centre, tree.poses.place(joint.child))  # from the joint, on its axis
+    return off_axis(lever, tree.poses.axis(joint)) <= _ON_THE_AXLE
 
 
 def _roller_wheels(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
@@ -730,7 +719,7 @@ def _gripper_carriers(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     first joint of a gripper alone (nothing moves above it) stays the gripper's."""
     grippers = {name for name, role in roles.items() if role.role == "gripper"}
     jaws_on = _jaw_links(tree, grippers)
-    above_jaws = _up_from(tree, jaws_on)
+    above_jaws = joints_above(tree, (j.name for j in tree.urdf.joints if j.parent in jaws_on))
     coupled = {*tree.couplings.driver_of, *tree.couplings.driver_of.values()}
     known: dict[str, str | None] = {}
     return [
@@ -740,7 +729,7 @@ def _gripper_carriers(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
         and joint.movable
         and name not in coupled
         and joint.parent not in jaws_on
-        and joint.child in above_jaws
+        and name in above_jaws
         and _alone_on_its_link(tree, joint)
         and moved_by(tree.urdf, joint.parent, known) is not None
     ]
@@ -754,19 +743,6 @@ def _jaw_links(tree: JointTree, grippers: set[str]) -> set[str]:
         for link in carriers
         if sum(joint.name in grippers for joint in tree.urdf.children(link)) >= 2
     }
-
-
-def _up_from(tree: JointTree, links: set[str]) -> set[str]:
-    """``links`` and every link above one of them, up to the root: one walk of the tree at
-    most, however many links (a walk stops where another passed)."""
-    found: set[str] = set()
-    for link in links:
-        current: str | None = link
-        while current is not None and current not in found:
-            found.add(current)
-            parent = tree.urdf.parent_joint(current)
-            current = None if parent is None else parent.parent
-    return found
 
 
 def _alone_on_its_link(tree: JointTree, joint: Joint) -> bool:
@@ -823,29 +799,35 @@ def _wheel_candidates(
 
 def _caster_wheel(tree: JointTree, joint: Joint, known: dict[str, str | None]) -> bool:
     """``joint`` turns a part that carries its mass on its axle (:func:`_balanced`) about a
-    level axle as the body rests, below one joint that turns, an endless swivel about the
-    upright as the body rests, on the body, and hangs lower than the swivel's pivot: a caster's
-    wheel.
-    Turning about the upright keeps an axle level whatever the swivel's angle, so the rest pose
-    says what the axle is (a leg's or an arm's does not); a leg's shin hangs its mass off its
-    knee, and a head's tilt sits above its pan."""
-    above = nearest_above(tree.urdf, joint.parent, known, _turns)
-    swivel = tree.urdf.joint(above) if above is not None else None
+    level axle as the body rests, steered by an endless swivel (:func:`_steered_by`): a
+    caster's wheel. Turning about the upright keeps an axle level whatever the swivel's angle,
+    so the rest pose says what the axle is (a leg's or an arm's does not); a leg's shin hangs
+    its mass off its knee."""
+    swivel = _steered_by(tree, joint, known)
     return (
         swivel is not None
         and swivel.endless
-        and nearest_above(tree.urdf, swivel.parent, known, _turns) is None
-        and _upright(tree.poses.axis(swivel))
         and _axle(tree.poses.axis(joint))
         and _balanced(tree, joint)
-        and _hangs_below(tree, joint, swivel)
     )
 
 
-def _hangs_below(tree: JointTree, leaf: Joint, swivel: Joint) -> bool:
-    """``leaf``'s axle is lower than ``swivel``'s pivot as the body rests: a caster's or a
-    fork's wheel hangs below what steers it (a head's tilt sits above its pan)."""
-    return tree.poses.place(leaf.child)[2] < tree.poses.place(swivel.child)[2]
+def _steered_by(tree: JointTree, leaf: Joint, known: dict[str, str | None]) -> Joint | None:
+    """The swivel that steers ``leaf``: the only joint that turns between it and the body,
+    about the upright as the body rests, with ``leaf``'s axle lower than its pivot (a caster's
+    or a fork's wheel hangs below what steers it; a head's tilt sits above its pan). None when
+    there is no such swivel. ``known`` remembers the walks up the tree (one per :func:`_turns`).
+    """
+    above = nearest_above(tree.urdf, leaf.parent, known, _turns)
+    swivel = tree.urdf.joint(above) if above is not None else None
+    if (
+        swivel is None
+        or nearest_above(tree.urdf, swivel.parent, known, _turns) is not None
+        or not _upright(tree.poses.axis(swivel))
+        or tree.poses.place(leaf.child)[2] >= tree.poses.place(swivel.child)[2]
+    ):
+        return None
+    return swivel
 
 
 def _resting_axis(tree: JointTree, joint: Joint, known: dict[str, str | None]) -> Vector:

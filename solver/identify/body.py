@@ -51,6 +51,7 @@ from solver.identify.limbs import (
     five_bars,
     flippers,
     gripping_leg,
+    joints_above,
     legs_alike,
     legs_at_the_pelvis,
     legs_by_place,
@@ -728,7 +729,7 @@ def _commanded(tree: JointTree, parts: _Parts, track_names: tuple[str, ...]) -> 
     joints = [name for limb in limbs for name in limb.joints]
     joints += _placed_slides(tree, parts, vehicle)
     joints += _swung_mounts(tree, parts, vehicle)
-    carrying = _above(tree, [limb.joints[0] for limb in limbs])
+    carrying = joints_above(tree, [limb.joints[0] for limb in limbs])
     return list(dict.fromkeys(joints + [name for name in parts.trunk if name in carrying]))
 
 
@@ -853,19 +854,6 @@ def _sprockets(tree: JointTree, track_names: tuple[str, ...]) -> list[str]:
         and joint.type == "continuous"
         and "position" not in tree.urdf.interfaces(name)
     ]
-
-
-def _above(tree: JointTree, names: list[str]) -> set[str]:
-    """The joints above any of ``names`` (their ancestors in the tree): one walk up from each,
-    stopping where an earlier walk passed, so linear in the joints however deep the tree."""
-    seen: set[str] = set()
-    for name in names:
-        joint = tree.urdf.joint(name)
-        above = tree.urdf.parent_joint(joint.parent) if joint is not None else None
-        while above is not None and above.name not in seen:
-            seen.add(above.name)
-            above = tree.urdf.parent_joint(above.parent)
-    return seen
 
 
 def _all_roles(tree: JointTree, parts: _Parts) -> tuple[Role, ...]:

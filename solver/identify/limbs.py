@@ -72,7 +72,7 @@ from __future__ import annotations
 import math
 import re
 from collections import Counter, deque
-from collections.abc import Callable, Iterator, Mapping
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, replace
 from itertools import combinations, islice, pairwise
 from typing import NamedTuple
@@ -107,6 +107,7 @@ __all__ = [
     "flippers",
     "gripping_leg",
     "joint_words",
+    "joints_above",
     "legs_alike",
     "legs_at_the_pelvis",
     "legs_by_place",
@@ -2001,6 +2002,19 @@ def moved_by(urdf: Urdf, link: str, known: dict[str, str | None]) -> str | None:
     lead up to it); every link walked is remembered in ``known``, so many links cost one walk
     of the tree at most."""
     return nearest_above(urdf, link, known, lambda joint: joint.movable)
+
+
+def joints_above(tree: JointTree, names: Iterable[str]) -> set[str]:
+    """The joints above any of ``names`` (their ancestors in the tree): one walk up from each,
+    stopping where an earlier walk passed, so linear in the joints however deep the tree."""
+    seen: set[str] = set()
+    for name in names:
+        joint = tree.urdf.joint(name)
+        above = tree.urdf.parent_joint(joint.parent) if joint is not None else None
+        while above is not None and above.name not in seen:
+            seen.add(above.name)
+            above = tree.urdf.parent_joint(above.parent)
+    return seen
 
 
 def nearest_above(

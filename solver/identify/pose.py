@@ -114,6 +114,13 @@ def cross(one: Vector, other: Vector) -> Vector:
     )
 
 
+def off_axis(vector: Vector, axis: Vector) -> float:
+    """How far ``vector`` reaches square to the unit ``axis`` (its length less its part along
+    it): a point's distance from the line along ``axis`` through where ``vector`` starts."""
+    along = dot(vector, axis)
+    return math.sqrt(max(dot(vector, vector) - along * along, 0.0))
+
+
 def minus(one: Vector, other: Vector) -> Vector:
     """``one`` less ``other``: the way from ``other`` to ``one``."""
     return (one[0] - other[0], one[1] - other[1], one[2] - other[2])
