@@ -151,6 +151,9 @@ _TRUNK_TURNS = 3
 # How far from a mirror image across the body a pair of hips may be (a share of the width).
 _MIRRORED = 0.25
 _LEG_JOINTS = (2, 4)
+# ... and up to this many joints in groups of six or more (:data:`_WHOLE_TURN_LEGS`): a
+# hexapod's five-joint legs; four long chains on one link may be a multi-arm cell's arms.
+_MOST_LEG_JOINTS = 6
 # Six or more such chains that lie flat at rest, each reaching out from the body by this share
 # of its reach, are a walker's legs too (a hexapod drawn with its legs stretched out).
 _LEG_SPREAD = 0.5
@@ -902,7 +905,8 @@ def _turning(joint: Joint) -> bool:
 
 
 def legs_by_place(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
-    """Alike unnamed chains on one link, four or more, on both its sides or at the corners
+    """Alike unnamed chains on one link, four or more (of two to four joints; six or more of
+    five or six joints, a hexapod's long legs), on both its sides or at the corners
     around their own middle, each ending below where it starts, the feet level: legs (a
     hexapod's, a quadruped's whose joints carry no leg names), when the link is the trunk's: at
     most :data:`_TRUNK_TURNS` joints turn above it (slides do not count; a simulator's floating
@@ -919,7 +923,7 @@ def legs_by_place(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
             limb.kind in ("arm", "other")
             and not limb.named
             and not limb.gripper
-            and _LEG_JOINTS[0] <= len(limb.joints) <= _LEG_JOINTS[1]
+            and _LEG_JOINTS[0] <= len(limb.joints) <= _MOST_LEG_JOINTS
         ):
             # Chains on links fixed to one body hang from that body (a hip bracket each).
             by_base.setdefault((_carrier(tree, limb.base, known), False), []).append(limb)
@@ -931,6 +935,8 @@ def legs_by_place(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     for (base, _), group in by_base.items():
         lengths = {len(limb.joints) for limb in group}
         if len(group) < _WALKER_LEGS or len(lengths) != 1:
+            continue
+        if max(lengths) > _LEG_JOINTS[1] and len(group) < _WHOLE_TURN_LEGS:
             continue
         if not _on_the_trunk(tree, base, turns):
             continue  # a hand's fingers past an arm's joints: legs hang from the trunk

@@ -405,21 +405,31 @@ def simulated_root(robot: RobotText, body: str) -> str:
     return link
 
 
-def walker(legs: int = 6, *, simulated_base: bool = False) -> RobotText:
-    """A walker whose joints say nothing (j0a, j0b, ...): alike 3-joint chains around its body,
-    each ending in a tip below where it starts. ``simulated_base``: the body hangs from a
-    ``world`` link by the six joints a simulator's description writes for a floating base
-    (three slides, then roll, pitch and yaw)."""
+def walker(legs: int = 6, *, simulated_base: bool = False, joints: int = 3) -> RobotText:
+    """A walker whose joints say nothing (j0a, j0b, ...): alike chains of ``joints`` joints
+    (three or more) around its body, each ending in a tip below where it starts.
+    ``simulated_base``: the body hangs from a ``world`` link by the six joints a simulator's
+    description writes for a floating base (three slides, then roll, pitch and yaw)."""
     robot = RobotText("walker", root="world" if simulated_base else "body")
     if simulated_base:
         simulated_root(robot, "body")
     for i in range(legs):
         x = 0.1 * (i % (legs // 2)) - 0.1
         y = 0.08 if i < legs // 2 else -0.08
-        first = placed(robot, f"j{i}a", "revolute", "body", f"l{i}a", xyz=f"{x} {y} 0")
-        second = placed(robot, f"j{i}b", "revolute", first, f"l{i}b", xyz="0.05 0 0", axis="0 1 0")
-        third = placed(robot, f"j{i}c", "revolute", second, f"l{i}c", xyz="0.06 0 0", axis="0 1 0")
-        robot.joint(f"tip{i}", "fixed", third, f"tip{i}_link", '<origin xyz="0.05 0 -0.1"/>')
+        link = placed(robot, f"j{i}a", "revolute", "body", f"l{i}a", xyz=f"{x} {y} 0")
+        link = placed(robot, f"j{i}b", "revolute", link, f"l{i}b", xyz="0.05 0 0", axis="0 1 0")
+        for extra in range(joints - 3):  # more pitch joints along the leg, 0.03 m apart
+            link = placed(
+                robot,
+                f"j{i}x{extra}",
+                "revolute",
+                link,
+                f"l{i}x{extra}",
+                xyz="0.03 0 0",
+                axis="0 1 0",
+            )
+        last = placed(robot, f"j{i}c", "revolute", link, f"l{i}c", xyz="0.06 0 0", axis="0 1 0")
+        robot.joint(f"tip{i}", "fixed", last, f"tip{i}_link", '<origin xyz="0.05 0 -0.1"/>')
     return robot
 
 

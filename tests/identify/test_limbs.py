@@ -181,6 +181,30 @@ def test_four_alike_unnamed_chains_ending_below_the_body_are_a_quadrupeds_legs()
     assert identify_urdf(builders.walker(4).text()).structure == "Quadruped"
 
 
+@pytest.mark.parametrize("joints", [5, 6])
+def test_six_alike_unnamed_chains_of_five_or_six_joints_below_the_body_are_a_hexapods_legs(
+    joints: int,
+) -> None:
+    result = identify_urdf(builders.walker(6, joints=joints).text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["leg"] * 6
+    assert result.structure == "Hexapod"
+
+
+def test_four_alike_unnamed_chains_of_five_joints_on_one_body_are_no_legs_by_place() -> None:
+    # Four long chains around one link may be a multi-arm cell's arms: only six or more
+    # chains that long are a walker's legs by place.
+    result = identify_urdf(builders.walker(4, joints=5).text())
+    assert result.body is not None
+    assert all("legs by place" not in limb.why for limb in result.body.limbs)
+
+
+def test_seven_joint_chains_are_no_legs_by_place_however_many() -> None:
+    result = identify_urdf(builders.walker(6, joints=7).text())
+    assert result.body is not None
+    assert all("legs by place" not in limb.why for limb in result.body.limbs)
+
+
 def cornered_walker(hips: list[tuple[float, float]], *, tip_z: float) -> RobotText:
     """An unnamed four-legged CAD export: the body's origin at a corner of it (every hip on one
     side of it), a 3-joint chain at each of ``hips``, its tip ``tip_z`` from its last joint."""
