@@ -462,7 +462,8 @@ def legs_by_reach(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     """Two unnamed chains that hang straight down from the bottom of a free body: its legs.
 
     When no name says which chains are legs (``j0`` .. ``j17``), a biped's still show where
-    they are in the zero pose: a mirrored pair of equal chains (two joints or more, no gripper)
+    they are in the zero pose: a mirrored pair of equal chains (two joints or more, no gripper;
+    mirrored across the root's origin, or side by side about a plane off it, :func:`_side_by_side`)
     that each end below where they start by most of their reach (``_LEG_STRAIGHT``), whose tips
     are the body's lowest and below its root by half their reach, and that start no higher
     than any other chain (arms hang from shoulders above the hips). Not on a body bolted to
@@ -731,6 +732,19 @@ def _facing_y(place: Place) -> Place:
     return (place[1], place[0], place[2])
 
 
+def _a_pair_alone(a: Place, b: Place, others: list[Place]) -> bool:
+    """``a`` and ``b`` side by side (:func:`_side_by_side`) with none of ``others`` in line with
+    them: two hips, not two of a row of fingers or tool heads."""
+    return _side_by_side(a, b) and not any(_side_by_side(a, c) for c in others)
+
+
+def _side_by_side(a: Place, b: Place) -> bool:
+    """Apart across the body (y), at one height and one place along it (x): mirror images about
+    the plane halfway between them, wherever the body's frame is."""
+    across = abs(a[1] - b[1])
+    return across > 0 and max(abs(a[0] - b[0]), abs(a[2] - b[2])) <= _MIRRORED * across
+
+
 def _across_from(a: Place, b: Place) -> bool:
     """One on each side of the body (across y), as far out."""
     return a[1] * b[1] < 0 and abs(a[1] + b[1]) <= _MIRRORED * abs(a[1] - b[1])
@@ -760,8 +774,16 @@ def _hanging_pair(
         below_the_root = below_the_root and root - end[2] >= reach / 2
         at_the_root = at_the_root and abs(root - end[2]) <= reach / 2
     (a, _), (b, _) = placed[id(one)], placed[id(other)]
-    # Side by side across the body (y), or across x in a file drawn facing y.
-    if not (_across_from(a, b) or _across_from(_facing_y(a), _facing_y(b))):
+    # Side by side across the body (y), or across x in a file drawn facing y; or at one height
+    # and one place along it, apart across it, about a plane off the root's origin (a CAD
+    # export whose body frame is not on the robot's middle).
+    others = [placed[id(limb)][0] for limb in candidates if limb not in (one, other)]
+    if not (
+        _across_from(a, b)
+        or _across_from(_facing_y(a), _facing_y(b))
+        or _a_pair_alone(a, b, others)
+        or _a_pair_alone(_facing_y(a), _facing_y(b), [_facing_y(c) for c in others])
+    ):
         return None
     hips = max(a[2], b[2])
     if not _trunk_above(tree, limbs, (one, other), placed, hips):

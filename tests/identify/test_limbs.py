@@ -1532,16 +1532,21 @@ def placed_chain(
     return link
 
 
-def nameless_humanoid(*, root: str = "pelvis") -> RobotText:
+def nameless_humanoid(*, root: str = "pelvis", middle: float = 0.0) -> RobotText:
     """Links and joints named by letters only: from the root two six-joint chains hang 0.6 m
-    straight down, two three-joint chains start 0.4 m higher and reach out sideways."""
+    straight down, two three-joint chains start 0.4 m higher and reach out sideways; the body's
+    middle ``middle`` m across from the root's origin (a CAD export's frame off the middle)."""
     robot = RobotText("r", root=root)
     down = ["0 0 -0.1"] * 5
     for side, y in (("a", 0.1), ("b", -0.1)):
-        placed_chain(robot, root, f"{side}j", start=f"0 {y} -0.05", steps=down)
+        placed_chain(robot, root, f"{side}j", start=f"0 {middle + y} -0.05", steps=down)
     for side, y in (("c", 0.2), ("d", -0.2)):
         placed_chain(
-            robot, root, f"{side}j", start=f"0 {y} 0.4", steps=[f"0 {y / 2} 0", f"0 {y / 2} 0"]
+            robot,
+            root,
+            f"{side}j",
+            start=f"0 {middle + y} 0.4",
+            steps=[f"0 {y / 2} 0", f"0 {y / 2} 0"],
         )
     return robot
 
@@ -1552,6 +1557,15 @@ def test_two_unnamed_chains_hanging_straight_down_from_a_free_body_are_its_legs(
     assert sorted(limb.kind for limb in result.body.limbs) == ["arm", "arm", "leg", "leg"]
     assert result.structure == "Humanoid"
     assert any("hanging straight down" in limb.why for limb in result.body.limbs)
+
+
+def test_legs_hanging_side_by_side_about_a_middle_off_the_roots_origin_are_legs() -> None:
+    # Hips at y = 0.16 and -0.04: not across the root's origin as far out each way, but at one
+    # height and one place along the body, mirror images about the plane y = 0.06.
+    result = identify_urdf(nameless_humanoid(middle=0.06).text())
+    assert result.body is not None
+    assert sorted(limb.kind for limb in result.body.limbs) == ["arm", "arm", "leg", "leg"]
+    assert result.structure == "Humanoid"
 
 
 def test_a_bipeds_legs_are_found_though_its_hands_hang_lower_than_its_hips() -> None:
