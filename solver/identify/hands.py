@@ -540,6 +540,11 @@ def _finger_like(tree: JointTree, limb: Limb, longest: int) -> str | None:
     """How an unnamed chain is a finger's: ``"joints"`` (no more joints than a finger has, one
     more ending in a named fingertip), ``"size"`` (:func:`_finger_sized`), or ``None``."""
     joints = len(limb.joints)
+    types = [joint.type for name in limb.joints if (joint := tree.urdf.joint(name)) is not None]
+    if types and types[-1] == "continuous" and set(types[:-1]) - {"continuous"}:
+        # A finger bends within limits, or turns endless all through where a CAD export wrote
+        # no limits; an endless joint at the end of limited ones spins a wheel on its pivot.
+        return None
     if joints <= longest or (
         joints == longest + 1 and (_ends_in_a_fingertip(tree, limb) or _named_by_bones(tree, limb))
     ):

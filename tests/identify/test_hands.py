@@ -558,6 +558,37 @@ def test_a_hand_exported_with_every_joint_continuous_still_spreads_its_fingers()
     assert identify_urdf(text).structure == "Hand"
 
 
+def test_endless_joints_at_the_ends_of_limited_ones_are_wheels_on_pivots_not_fingers() -> None:
+    # Four unnamed chains on one frame, each a pivot with limits carrying a joint that turns
+    # endless (a rover's wheel on a rocker, drawn folded): no finger spins whole.
+    robot = RobotText("r", root="frame")
+    corners = (
+        (0.05, 0.05, 0.1, -1),
+        (0.05, 0.55, 0.2, 1),
+        (0.55, 0.05, 0.1, -1),
+        (0.55, 0.55, 0.2, 1),
+    )
+    for i, (x, y, z, turn) in enumerate(corners):
+        pivot = builders.placed(
+            robot, f"p{i}", "revolute", "frame", f"k{i}", xyz=f"{x} {y} {z}",
+            rpy=f"{1.5708 * turn} 0 0", axis=f"0 0 {turn}",
+        )  # fmt: skip
+        builders.placed(
+            robot, f"w{i}", "continuous", pivot, f"t{i}", xyz="0.01 0.05 0.3", axis=f"0 0 {turn}"
+        )
+    # And a boom with a bucket above them (two hinges).
+    boom = builders.placed(
+        robot, "b0", "revolute", "frame", "boom", xyz="0 -0.05 1.1", rpy="1.5708 0 0",
+        axis="0 -1 0",
+    )  # fmt: skip
+    builders.placed(
+        robot, "b1", "revolute", boom, "bucket", xyz="1.65 0.05 0.35", rpy="1.5708 0 1.5708"
+    )
+    result = identify_urdf(robot.text())
+    assert not [role for role in result.roles if role.role == "finger"]
+    assert result.structure != "Hand"
+
+
 def test_a_five_finger_hand_named_by_its_bones_is_a_hand() -> None:
     # index, middle, ring, pinky and a thumb of five joints each (a display hand's): no
     # finger word but the thumb's, the bones' are (metacarpals, a phalanx's).
