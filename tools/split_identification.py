@@ -80,6 +80,9 @@ ADDED_SET = ROOT / "tools" / "generalization_set"
 MOVED_ON = dict.fromkeys(range(52, 130), "2026-11-30")
 MOVED_ON |= dict.fromkeys(range(130, 182), "2026-12-01")
 MOVED_ON |= dict.fromkeys(range(182, 278), "2026-12-02")
+MOVED_ON |= dict.fromkeys(range(278, 279), "2026-12-03")
+# Sets labelled from a brief rewritten on a new machine (the earlier one lost with the old).
+REWRITTEN = frozenset({278})
 LAST_MOVED = max(MOVED_ON)
 BLIND_NEXT = LAST_MOVED + 1
 MOVED_SETS = tuple(ROOT / "tools" / f"fresh_set_{n}" for n in range(1, LAST_MOVED + 1))
@@ -181,6 +184,13 @@ def moved_rows() -> list[dict[str, str]]:
         if (folder / "truth.csv").is_file():
             entries += split_rows([(folder.name, folder)], files_kept_out=True)
     return [{**entry, "part": DEVELOPMENT} for entry in entries]
+
+
+def _brief(n: int) -> str:
+    """Which brief fresh set ``n``'s labellers worked from (for the file's header)."""
+    if n in REWRITTEN:
+        return "a brief rewritten on a new machine"
+    return f"that brief after fresh set {n - 1} was read"
 
 
 HEADER = (
@@ -352,7 +362,7 @@ HEADER = (
 """
     + "".join(
         f"""\
-# Rows of tools/fresh_set_{n} were labelled blind from that brief after fresh set {n - 1} was read,
+# Rows of tools/fresh_set_{n} were labelled blind from {_brief(n)},
 # and measured blind once as held-out with the rules then committed; its misses were read in
 # the same stop, and on {day} they were moved whole to the development part (its README
 # gives the figures).
