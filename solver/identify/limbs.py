@@ -936,31 +936,11 @@ def legs_by_place(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     way below (legs spread flat, at the corners, one-joint legs that turn whole)."""
     if _rolls(tree):
         return limbs  # chains on a body tracks or a drive plugin move are flippers, road wheels
-    # By the body carrying them, and whether they are one-joint chains that turn whole (a
-    # wheel-leg walker's) or not: a spinning leaf beside a hexapod's legs is no leg of it.
-    by_base: dict[tuple[str, bool], list[Limb]] = {}
-    known: dict[str, str | None] = {}
-    for limb in limbs:
-        if (
-            limb.kind in ("arm", "other")
-            and not limb.named
-            and not limb.gripper
-            and _LEG_JOINTS[0] <= len(limb.joints) <= _MOST_LEG_JOINTS
-        ):
-            # Chains on links fixed to one body hang from that body (a hip bracket each).
-            by_base.setdefault((_carrier(tree, limb.base, known), False), []).append(limb)
-        elif limb.kind == "other" and len(limb.joints) == 1 and _turns_whole(tree, limb):
-            by_base.setdefault((_carrier(tree, limb.base, known), True), []).append(limb)
     legs: dict[int, str] = {}
     turns: dict[str, int] = {}
     wheeled = _wheeled(tree)
-    for (base, _), group in by_base.items():
-        lengths = {len(limb.joints) for limb in group}
-        if len(group) < _WALKER_LEGS or len(lengths) != 1:
-            continue
-        if max(lengths) > _LEG_JOINTS[1] and len(group) < _WHOLE_TURN_LEGS:
-            continue
-        if not _on_the_trunk(tree, base, turns):
+    for base, group in _chains_by_carrier(tree, limbs):
+        if not _alike_enough(group) or not _on_the_trunk(tree, base, turns):
             continue  # a hand's fingers past an arm's joints: legs hang from the trunk
         why = _legs_why(tree, base, group, wheeled=wheeled)
         if why:
@@ -974,6 +954,35 @@ def legs_by_place(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
             for limb in limbs
         ],
     )
+
+
+def _chains_by_carrier(tree: JointTree, limbs: list[Limb]) -> list[tuple[str, list[Limb]]]:
+    """The unnamed chains that could be legs, grouped by the body carrying them and by whether
+    they are one-joint chains that turn whole (a wheel-leg walker's) or not: a spinning leaf
+    beside a hexapod's legs is no leg of it. Chains on links fixed to one body hang from that
+    body (a hip bracket each)."""
+    by_base: dict[tuple[str, bool], list[Limb]] = {}
+    known: dict[str, str | None] = {}
+    for limb in limbs:
+        if (
+            limb.kind in ("arm", "other")
+            and not limb.named
+            and not limb.gripper
+            and _LEG_JOINTS[0] <= len(limb.joints) <= _MOST_LEG_JOINTS
+        ):
+            by_base.setdefault((_carrier(tree, limb.base, known), False), []).append(limb)
+        elif limb.kind == "other" and len(limb.joints) == 1 and _turns_whole(tree, limb):
+            by_base.setdefault((_carrier(tree, limb.base, known), True), []).append(limb)
+    return [(base, group) for (base, _), group in by_base.items()]
+
+
+def _alike_enough(group: list[Limb]) -> bool:
+    """Enough chains of one length to be a walker's legs: four or more, six or more when each
+    has five or six joints (a hexapod's long legs; four such chains are arms)."""
+    lengths = {len(limb.joints) for limb in group}
+    if len(group) < _WALKER_LEGS or len(lengths) != 1:
+        return False
+    return max(lengths) <= _LEG_JOINTS[1] or len(group) >= _WHOLE_TURN_LEGS
 
 
 def _legs_why(tree: JointTree, base: str, group: list[Limb], *, wheeled: bool) -> str:

@@ -335,9 +335,12 @@ def test_the_active_motion_control_topic_selects_as_the_ros1_parameter_does(
     try:
         operator.control("Flight")  # a UGV never flies: the default configuration, and why
         operator.activate("/ugv1")
+        # The two may reach the watcher apart: Flight with no robot active is answered first.
         refused = watch.wait_for(
             lambda d: (
-                d["event"] == "selection_changed" and d["active"]["motion_control"] == "Flight"
+                d["event"] == "selection_changed"
+                and d["robot"] == "/ugv1"
+                and d["active"]["motion_control"] == "Flight"
             ),
             "Flight for /ugv1",
         )
