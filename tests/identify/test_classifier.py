@@ -235,6 +235,39 @@ def test_limits_all_equal_on_every_joint_are_a_cad_exporters_placeholders_not_a_
     assert identify_urdf(rig.text()).structure == "Other"
 
 
+def test_three_blank_joints_in_a_row_are_an_exporters_limbs_and_every_blank_joint_moves() -> None:
+    # A service robot exported from CAD: its wheels continuous, its arm's joints written 0..0
+    # with zero effort (no limits were given). A camera on a two-joint mount written so stays
+    # locked, as sensor mounts are.
+    blank = '<axis xyz="0 0 1"/><limit lower="0" upper="0" effort="0" velocity="0"/>'
+    robot = builders.ugv()
+    parent = robot.root
+    for i in range(1, 5):
+        robot.joint(f"j{i}", "revolute", parent, f"segment{i}", blank)
+        parent = f"segment{i}"
+    urdf = parse_urdf(robot.text())
+    assert all(urdf.joint(f"j{i}").movable for i in range(1, 5))  # type: ignore[union-attr]
+    assert identify_urdf(robot.text()).structure == "Mobile Manipulator"
+    # Such an export writes its wheels' joints blank too: they turn.
+    loader = RobotText("loader")
+    for side in ("left", "right", "rear_left", "rear_right"):
+        loader.joint(f"wheel_{side}_joint", "revolute", loader.root, f"wheel_{side}", blank)
+    loader.joint("boom", "revolute", loader.root, "boom_link", blank)
+    loader.joint("stick", "revolute", "boom_link", "stick_link", blank)
+    loader.joint("bucket", "revolute", "stick_link", "bucket_link", blank)
+    limited = '<axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="0" velocity="0"/>'
+    loader.joint("camera_pan", "revolute", loader.root, "camera", limited)  # not all blank
+    urdf = parse_urdf(loader.text())
+    assert all(joint.movable for joint in urdf.joints)
+    assert identify_urdf(loader.text()).structure == "Mobile Manipulator"
+    mount = builders.ugv()
+    mount.joint("m1", "revolute", mount.root, "bracket", blank)
+    mount.joint("m2", "revolute", "bracket", "camera", blank)
+    urdf = parse_urdf(mount.text())
+    assert [urdf.joint(name).movable for name in ("m1", "m2")] == [False, False]  # type: ignore[union-attr]
+    assert identify_urdf(mount.text()).structure == "UGV"
+
+
 def ros2_control(*joints: tuple[str, str]) -> str:
     """A ``<ros2_control>`` block: each joint with a command interface of the kind given, or
     with a state interface only (kind ``""``)."""

@@ -57,6 +57,9 @@ _MODEL_URI = "model://"
 _ENDLESS_RANGE = 100.0
 # Joints that move without limits: beside them, equal limits are a lock, not placeholders.
 _UNLIMITED = frozenset({"continuous", "floating", "planar"})
+# The fewest blank joints (limits 0..0, effort 0) in a row that are an exporter's limbs, not
+# locked mounts (:func:`_blank_chains`).
+_BLANK_CHAIN = 3
 # Distinct element names kept from the whole document (hull and buoyancy hints live there).
 _MAX_TAGS = 2000
 # Warnings of one kind listed per description; the rest are counted.
@@ -525,7 +528,9 @@ class _Builder:
                 continue
             found[joint.name] = joint
         coupled = _coupled(found)
-        unlocked = coupled | _placeholders(found) | (commanded & found.keys())
+        unlocked = (
+            coupled | _placeholders(found) | _blank_chains(found) | (commanded & found.keys())
+        )
         phantoms = _phantoms(found, links) - coupled - commanded
         changed = unlocked | phantoms
         return [
@@ -955,6 +960,52 @@ def _placeholders(joints: dict[str, Joint]) -> set[str]:
     if not any(j.parent in carried for j in limited.values()):
         return set()
     return set(limited)
+
+
+def _blank_chains(joints: dict[str, Joint]) -> set[str]:
+    """Every blank joint (:func:`_blank`) when :data:`_BLANK_CHAIN` of them are in a row, each
+    carried by the one before (through fixed links): nobody locks an arm joint by joint that
+    way, so the file is an export that wrote no limits, its wheels' joints too. A sensor mount
+    written so is a leaf on the body, or two (a camera and its gimbal) in a row, and stays
+    locked."""
+    blank = {name for name, joint in joints.items() if _blank(joint)}
+    if len(blank) < _BLANK_CHAIN:
+        return set()
+    above = {joint.child: joint for joint in joints.values()}
+    carrier: dict[str, str | None] = {}
+    for name in blank:
+        link, seen = joints[name].parent, 0
+        while (up := above.get(link)) is not None and up.type == "fixed" and seen < len(joints):
+            link, seen = up.parent, seen + 1
+        carrier[name] = up.name if up is not None and up.name in blank else None
+    return blank if _longest_row(carrier) >= _BLANK_CHAIN else set()
+
+
+def _blank(joint: Joint) -> bool:
+    """A revolute or prismatic joint with limits 0..0 and a zero effort: what a CAD exporter
+    writes when it was given no limits."""
+    return (
+        joint.type in ("revolute", "prismatic")
+        and joint.lower == 0
+        and joint.upper == 0
+        and joint.effort == 0
+    )
+
+
+def _longest_row(carrier: dict[str, str | None]) -> int:
+    """The most joints in a row, each carried by the next in ``carrier`` (``None``: by none of
+    them); every joint walked once, a loop cut where it closes."""
+    depth: dict[str, int] = {}
+    for name in carrier:
+        path: list[str] = []
+        here: str | None = name
+        while here is not None and here not in depth and here not in path:
+            path.append(here)
+            here = carrier[here]
+        base = depth[here] if here is not None and here in depth else 0
+        for level, joint_name in enumerate(reversed(path), start=base + 1):
+            depth[joint_name] = level
+    return max(depth.values(), default=0)
 
 
 def _closures(root: etree._Element, links: dict[str, Link]) -> tuple[tuple[str, str], ...]:
