@@ -546,12 +546,27 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
 def _rigid_tool(tree: JointTree) -> str:
     """The first link (document order) of :func:`_tool_links` held on fixed joints only, up
     from it to a link that carries a moving joint (the body) or to the root (a tree rooted at
-    the tool's frame). Read on a flying body only (the caller): on an arm or a hand such a link
-    is the arm's or the hand's. One walk up the tree for all links (:func:`_held`)."""
+    the tool's frame), and no empty leaf: a ``<link/>`` with nothing in it and nothing below it
+    is a controller's reference frame (an ``end_effector`` point on the body), not a tool one
+    could hold. Read on a flying body only (the caller): on an arm or a hand such a link is the
+    arm's or the hand's. One walk up the tree for all links (:func:`_held`)."""
     urdf = tree.urdf
     carriers = {joint.parent for joint in urdf.joints if joint.movable}
     known: dict[str, bool] = {}
-    return next((name for name in _tool_links(tree) if _held(urdf, name, carriers, known)), "")
+    return next(
+        (
+            name
+            for name in _tool_links(tree)
+            if not _empty_leaf(urdf, name) and _held(urdf, name, carriers, known)
+        ),
+        "",
+    )
+
+
+def _empty_leaf(urdf: Urdf, name: str) -> bool:
+    """``name`` is a declared link with nothing in it from which no joint hangs: a frame."""
+    link = urdf.link(name)
+    return link is not None and link.empty and not urdf.children(name)
 
 
 def _held(urdf: Urdf, link: str, carriers: set[str], known: dict[str, bool]) -> bool:
