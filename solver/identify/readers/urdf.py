@@ -972,13 +972,33 @@ def _blank_chains(joints: dict[str, Joint]) -> set[str]:
     if len(blank) < _BLANK_CHAIN:
         return set()
     above = {joint.child: joint for joint in joints.values()}
+    known: dict[str, str | None] = {}
     carrier: dict[str, str | None] = {}
     for name in blank:
-        link, seen = joints[name].parent, 0
-        while (up := above.get(link)) is not None and up.type == "fixed" and seen < len(joints):
-            link, seen = up.parent, seen + 1
-        carrier[name] = up.name if up is not None and up.name in blank else None
+        up = _moved_by(joints[name].parent, above, known)
+        carrier[name] = up if up in blank else None
     return blank if _longest_row(carrier) >= _BLANK_CHAIN else set()
+
+
+def _moved_by(link: str, above: dict[str, Joint], known: dict[str, str | None]) -> str | None:
+    """The nearest joint above ``link`` that is not fixed (``None``: none, or a loop); every
+    link walked is remembered in ``known``, so many links cost one walk of the tree at most."""
+    walked: list[str] = []
+    seen: set[str] = set()
+    found: str | None = None
+    while link not in known:
+        walked.append(link)
+        seen.add(link)
+        up = above.get(link)
+        if up is None or up.type != "fixed" or up.parent in seen:
+            found = up.name if up is not None and up.type != "fixed" else None
+            break
+        link = up.parent
+    else:
+        found = known[link]
+    for name in walked:
+        known[name] = found
+    return found
 
 
 def _blank(joint: Joint) -> bool:
@@ -998,9 +1018,11 @@ def _longest_row(carrier: dict[str, str | None]) -> int:
     depth: dict[str, int] = {}
     for name in carrier:
         path: list[str] = []
+        on_path: set[str] = set()
         here: str | None = name
-        while here is not None and here not in depth and here not in path:
+        while here is not None and here not in depth and here not in on_path:
             path.append(here)
+            on_path.add(here)
             here = carrier[here]
         base = depth[here] if here is not None and here in depth else 0
         for level, joint_name in enumerate(reversed(path), start=base + 1):

@@ -364,3 +364,37 @@ def test_efforts_all_zero_are_placeholders_that_lock_nothing() -> None:
     text = stiffness_arm().replace('effort="1"', 'effort="0"')
     urdf = parse_urdf(text, "lwr.urdf")
     assert all(j.movable for j in urdf.joints)
+
+
+@pytest.mark.parametrize("shape", ["row", "under_a_fixed_mast"])
+def test_blank_joints_are_read_in_one_walk_however_many(shape: str) -> None:
+    # 20,000 joints written 0..0 with zero effort, in one row, or each a leaf at the foot of a
+    # mast of 10,000 fixed joints with three in a row beside them: each link is walked up once,
+    # not once per joint below it, and every blank joint moves (an export that wrote no limits).
+    blank = '<limit lower="0" upper="0" effort="0" velocity="0"/>'
+    parts = ['<robot name="r"><link name="l0"/>']
+    if shape == "row":
+        for i in range(1, 20_001):
+            parts.append(
+                f'<link name="l{i}"/><joint name="j{i}" type="revolute"><parent link="l{i - 1}"/>'
+                f'<child link="l{i}"/>{blank}</joint>'
+            )
+    else:
+        for i in range(1, 10_001):
+            parts.append(
+                f'<link name="l{i}"/><joint name="f{i}" type="fixed"><parent link="l{i - 1}"/>'
+                f'<child link="l{i}"/></joint>'
+            )
+        for i in range(10_000):
+            parts.append(
+                f'<link name="leaf{i}"/><joint name="b{i}" type="revolute">'
+                f'<parent link="l10000"/><child link="leaf{i}"/>{blank}</joint>'
+            )
+        for i in range(3):
+            parent = "l0" if i == 0 else f"arm{i - 1}"
+            parts.append(
+                f'<link name="arm{i}"/><joint name="a{i}" type="revolute">'
+                f'<parent link="{parent}"/><child link="arm{i}"/>{blank}</joint>'
+            )
+    urdf = parse_urdf("".join(parts) + "</robot>")
+    assert all(joint.movable for joint in urdf.joints if joint.type == "revolute")
