@@ -386,6 +386,7 @@ def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     moves, hanging below the link they are on or turning about a level axis across it (a
     wheel's axle, whatever the height of the link's origin; in the body's frame too on a link
     fixed to the body or sliding on it), at least one on each side of it.
+    Sides are told from the link's mass centre when its file gives one (:func:`_middle`).
     Fingers have limits; rotors sit level with or above their body and turn about an upright
     axis; a propeller on a wing turns about the axis it flies along. Six or more level with a
     link are a wheel-leg walker's whole-turning legs (:func:`~solver.identify.limbs.find_limbs`),
@@ -400,8 +401,9 @@ def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
             below.setdefault(link, []).extend(joints)  # road wheels, not legs
     found: list[str] = []
     apart: list[Joint] = []
-    for joints in below.values():
-        if len(joints) >= 2 and _sides({j.origin[1] for j in joints}):
+    for link, joints in below.items():
+        middle = _middle(tree, link)
+        if len(joints) >= 2 and _sides({j.origin[1] - middle for j in joints}):
             found.extend(j.name for j in joints)
         else:
             apart.extend(joints)
@@ -774,8 +776,16 @@ def _unnamed_rotors(tree: JointTree, taken: set[str]) -> list[str]:
     return found
 
 
+def _middle(tree: JointTree, link: str) -> float:
+    """Where across (y) the middle of ``link`` is in its own frame: its mass centre when its
+    file gives one, else its origin (a CAD export puts a body's origin at a corner of it)."""
+    found = tree.urdf.link(link)
+    return found.mass_centre[1] if found is not None and found.mass_centre is not None else 0.0
+
+
 def _sides(across: set[float]) -> bool:
-    """Some of these places are on one side of a link's origin (> 0) and some on the other."""
+    """Some of these places are on one side of a link's origin (> 0) and some on the other
+    (of its middle, :func:`_middle`, when they are measured from there)."""
     return {y > 0 for y in across if y != 0} == {True, False}
 
 

@@ -73,6 +73,36 @@ def test_unnamed_endless_joints_below_a_body_on_both_sides_are_wheels() -> None:
     assert result.body.wheels == ("fl_joint", "fr_joint", "rl_joint", "rr_joint")
 
 
+def test_a_cad_exports_blank_wheels_are_told_by_sides_of_the_bodys_mass_centre() -> None:
+    # A small tracked rover exported from CAD: its only joints four unnamed revolute leaves
+    # written 0..0 with zero effort (no limits given: they turn), axles across the body, below
+    # it; the body's origin at its right-hand corner, so every wheel lies left of the origin,
+    # and its mass centre in the middle, with wheels on both sides of it.
+    blank = '<axis xyz="0 0 1"/><limit lower="0" upper="0" effort="0" velocity="0"/>'
+    robot = RobotText("explorer")
+    for corner, (x, y) in {
+        "a": (0, 0.05),
+        "b": (0.2, 0.05),
+        "c": (0, 0.25),
+        "d": (0.2, 0.25),
+    }.items():
+        origin = f'<origin xyz="{x} {y} -0.02" rpy="1.5708 0 0"/>'
+        robot.joint(f"{corner}_joint", "revolute", "base_link", f"{corner}_link", origin + blank)
+    inertia = '<inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/>'
+    body = (
+        '<link name="base_link"><inertial><origin xyz="0.1 0.15 0"/><mass value="1"/>'
+        f"{inertia}</inertial></link>"
+    )
+    result = identify_urdf(robot.text().replace('<link name="base_link"/>', body))
+    assert result.body is not None
+    assert (result.structure, result.body.wheels) == (
+        "UGV",
+        ("a_joint", "b_joint", "c_joint", "d_joint"),
+    )
+    # A body whose file gives no mass centre is told from its origin: all on one side.
+    assert identify_urdf(robot.text()).structure != "UGV"
+
+
 def test_unnamed_endless_joints_carrying_sensors_are_turning_mounts_not_wheels() -> None:
     robot = RobotText("rover")
     _four_spinning_leaves(robot, -0.1)

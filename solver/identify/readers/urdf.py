@@ -152,8 +152,10 @@ class Joint:
         )
 
     def turns(self, at_least: float) -> bool:
-        """It turns through ``at_least`` radians: continuous, or revolute with that range."""
-        if self.type == "continuous":
+        """It turns through ``at_least`` radians: continuous, or revolute with that range, or
+        blank and unlocked (:func:`_blank_chains`: an export that wrote no limits says nothing
+        of how far the joint turns, a wheel's as much as an arm's)."""
+        if self.type == "continuous" or (self.unlocked and _blank(self)):
             return True
         return (
             self.type == "revolute"
@@ -964,13 +966,16 @@ def _placeholders(joints: dict[str, Joint]) -> set[str]:
 
 def _blank_chains(joints: dict[str, Joint]) -> set[str]:
     """Every blank joint (:func:`_blank`) when :data:`_BLANK_CHAIN` of them are in a row, each
-    carried by the one before (through fixed links): nobody locks an arm joint by joint that
-    way, so the file is an export that wrote no limits, its wheels' joints too. A sensor mount
-    written so is a leaf on the body, or two (a camera and its gimbal) in a row, and stays
-    locked."""
+    carried by the one before (through fixed links), or when there are that many and every
+    joint of the file that is not fixed is blank: nobody locks an arm joint by joint that way,
+    nor every joint of a robot, so the file is an export that wrote no limits, its wheels'
+    joints too. A sensor mount written so is a leaf on the body, or two (a camera and its
+    gimbal) in a row, and stays locked beside joints that move."""
     blank = {name for name, joint in joints.items() if _blank(joint)}
     if len(blank) < _BLANK_CHAIN:
         return set()
+    if all(name in blank or joint.type == "fixed" for name, joint in joints.items()):
+        return blank
     above = {joint.child: joint for joint in joints.values()}
     known: dict[str, str | None] = {}
     carrier: dict[str, str | None] = {}

@@ -398,3 +398,33 @@ def test_blank_joints_are_read_in_one_walk_however_many(shape: str) -> None:
             )
     urdf = parse_urdf("".join(parts) + "</robot>")
     assert all(joint.movable for joint in urdf.joints if joint.type == "revolute")
+
+
+def test_a_file_whose_every_moving_joint_is_written_blank_gave_no_limits_and_all_turn() -> None:
+    # A CAD export of a rover: its four wheels, leaves on the body, none carrying another, are
+    # its only joints, each written 0..0 with zero effort. Nobody locks every joint of a robot:
+    # they move, and turn as far as they like (the export said nothing of their range).
+    blank = '<axis xyz="0 0 1"/><limit lower="0" upper="0" effort="0" velocity="0"/>'
+    wheels = "".join(
+        f'<link name="w{i}"/><joint name="j{i}" type="revolute"><parent link="base"/>'
+        f'<child link="w{i}"/>{blank}</joint>'
+        for i in range(4)
+    )
+    urdf = parse_urdf(f'<robot name="r"><link name="base"/>{wheels}</robot>')
+    assert all(joint.movable and joint.endless for joint in urdf.joints)
+    # Two such joints alone are a camera's mount, and three beside a joint with real limits
+    # are mounts a robot locked: they stay locked.
+    two = "".join(
+        f'<link name="m{i}"/><joint name="m{i}" type="revolute"><parent link="base"/>'
+        f'<child link="m{i}"/>{blank}</joint>'
+        for i in range(2)
+    )
+    urdf = parse_urdf(f'<robot name="r"><link name="base"/>{two}</robot>')
+    assert not any(joint.movable for joint in urdf.joints)
+    arm = (
+        '<link name="arm"/><joint name="shoulder" type="revolute"><parent link="base"/>'
+        '<child link="arm"/><axis xyz="0 0 1"/>'
+        '<limit lower="-1" upper="1" effort="5" velocity="1"/></joint>'
+    )
+    urdf = parse_urdf(f'<robot name="r"><link name="base"/>{wheels}{arm}</robot>')
+    assert [joint.movable for joint in urdf.joints] == [False] * 4 + [True]
