@@ -523,6 +523,55 @@ def test_a_hull_that_does_not_float_by_its_compensation_stays_underwater(hull: s
     assert not any("floats" in line for line in result.evidence)  # is not the body's
 
 
+def hull_with_volume(volume: str, mass: str, *, neutral: str = "0", density: str = "") -> str:
+    """A hull of ``mass`` kg under the UUV simulator's hydrodynamics plugin, which lists it
+    with the ``volume`` (m3) it displaces, in water of ``density`` (none written: sea water),
+    its thrusters named so."""
+    robot = RobotText("craft", root="hull")
+    for i in range(2):
+        robot.joint(f"thruster_{i}_joint", "continuous", "hull", f"thruster_{i}")
+    fluid = f"<fluid_density>{density}</fluid_density>" if density else ""
+    entry = (
+        f'{fluid}<link name="hull"><neutrally_buoyant>{neutral}</neutrally_buoyant>'
+        f"<volume>{volume}</volume></link>"
+    )
+    robot.add(builders.model_plugin("uuv", "libuuv_underwater_object_ros_plugin.so", entry))
+    inertia = '<inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/>'
+    hull = f'<link name="hull"><inertial><mass value="{mass}"/>{inertia}</inertial></link>'
+    return robot.text().replace('<link name="hull"/>', hull)
+
+
+def test_a_hull_displacing_three_times_its_weight_of_water_floats_at_the_surface() -> None:
+    # 1.776 m3 of sea water (1,826 kg) under a 600 kg hull: it floats, whatever plugin moves it.
+    result = identify_urdf(hull_with_volume("1.776", "600"))
+    assert result.structure == "Surface Vessel"
+    assert any(
+        line.startswith("floats at the surface: hull buoyancy 3.04") for line in result.evidence
+    )
+    # In fresh water of half the density, the same hull floats too (1.52 x its weight).
+    assert identify_urdf(hull_with_volume("1.776", "600", density="500")).structure == (
+        "Surface Vessel"
+    )
+
+
+@pytest.mark.parametrize(
+    ("volume", "mass", "neutral"),
+    [
+        ("1.838", "1862.87", "0"),  # a work-class ROV trimmed 1.4 % light: it dives
+        ("0.068", "80", "0"),  # a glider heavier than its water
+        ("1.776", "600", "1"),  # made neutrally buoyant by the plugin, whatever the volume
+        ("1e999", "600", "0"),  # no finite volume
+        ("-2", "600", "0"),
+    ],
+)
+def test_a_hull_trimmed_near_neutral_or_made_neutral_stays_underwater(
+    volume: str, mass: str, neutral: str
+) -> None:
+    result = identify_urdf(hull_with_volume(volume, mass, neutral=neutral))
+    assert result.structure == "Underwater Vehicle"
+    assert not any("floats" in line for line in result.evidence)
+
+
 def test_a_buoyancy_plugin_with_no_depth_cue_is_said_in_water_without_denying_the_plugin() -> None:
     robot = thrusters_by_name()
     robot.add(builders.model_plugin("float", "libbuoyancy_gazebo_plugin.so"))

@@ -57,6 +57,8 @@ _MODEL_URI = "model://"
 _ENDLESS_RANGE = 100.0
 # Joints that move without limits: beside them, equal limits are a lock, not placeholders.
 _UNLIMITED = frozenset({"continuous", "floating", "planar"})
+# Sea water's density (kg/m3): what a hydrodynamics plugin assumes when it names none.
+_SEA_WATER = 1028.0
 # The fewest blank joints (limits 0..0, effort 0) in a row that are an exporter's limbs, not
 # locked mounts (:func:`_blank_chains`).
 _BLANK_CHAIN = 3
@@ -72,8 +74,10 @@ MAX_CLOSURES = 256
 class Link:
     name: str
     line: int | None = None
-    # Its <buoyancy><compensation> (freefloating_gazebo, the usv plugins): buoyancy force over
-    # weight; above 1 the link floats. None when it gives none (or not a finite number).
+    # Its <buoyancy><compensation> (freefloating_gazebo, the usv plugins), or the water a
+    # hydrodynamics plugin says it displaces over its mass (the UUV simulator's <volume>):
+    # buoyancy force over weight; above 1 the link floats. None when nothing gives it (or not a
+    # finite number).
     buoyancy: float | None = None
     # Its first <visual> when that is a cylinder: what its shape says (a propeller's disc, a
     # wheel); None for a mesh, a box, or no visual.
@@ -451,7 +455,7 @@ class _Builder:
                 path="robot",
                 code="urdf-empty",
             )
-        links = self._links(link_elements)
+        links = self._links(link_elements, _displacements(root))
         plugins = tuple(
             _plugin(p, g.get("reference"))
             for g in root.findall("gazebo")
@@ -483,7 +487,11 @@ class _Builder:
             _closures(root, links),
         )
 
-    def _links(self, elements: list[etree._Element]) -> dict[str, Link]:
+    def _links(
+        self, elements: list[etree._Element], displaced: dict[str, float]
+    ) -> dict[str, Link]:
+        """The links; ``displaced``: the mass of water each displaces, where a plugin says
+        (:func:`_displacements`), for those whose file gives no buoyancy of its own."""
         found: dict[str, Link] = {}
         for element in elements:
             name = (element.get("name") or "").strip()
@@ -496,13 +504,17 @@ class _Builder:
                     f"duplicate link {shown(name, quoted=True)} (first at line {found[name].line})",
                 )
             else:
+                mass = _mass(element)
+                buoyancy = _compensation(element)
+                if buoyancy is None and mass is not None and name in displaced:
+                    buoyancy = displaced[name] / mass
                 found[name] = Link(
                     name,
                     line_of(element),
-                    _compensation(element),
+                    buoyancy,
                     _cylinder(element),
                     empty=not any(isinstance(part.tag, str) for part in element),
-                    mass=_mass(element),
+                    mass=mass,
                     mass_centre=_mass_centre(element),
                 )
         return found
@@ -1255,6 +1267,28 @@ def _vector(
         return default
     x, y, z = (p or 0.0 for p in parts)
     return (x, y, z)
+
+
+def _displacements(root: etree._Element) -> dict[str, float]:
+    """The mass of water each link displaces, as a hydrodynamics plugin of the UUV simulator's
+    kind lists it (a ``<link name>`` entry with its ``<volume>``, in the plugin's
+    ``<fluid_density>``, 1028 kg/m3 of sea water when it gives none): its buoyancy over its
+    weight is that over its mass. Not a link the entry makes neutrally buoyant (the plugin
+    then sets the volume to balance the weight, whatever is written)."""
+    found: dict[str, float] = {}
+    for plugin in root.iterfind("gazebo/plugin"):
+        density = _float(plugin.findtext("fluid_density"))
+        density = density if density is not None and density > 0 else _SEA_WATER
+        for entry in plugin.iterfind("link"):
+            if len(found) >= _MAX_PARAMS:
+                return found
+            name = (entry.get("name") or "").strip()
+            volume = _float(entry.findtext("volume"))
+            neutral = (entry.findtext("neutrally_buoyant") or "").strip().lower()
+            water = volume * density if volume is not None and volume > 0 else math.nan
+            if name and math.isfinite(water) and neutral not in ("1", "true"):
+                found.setdefault(name, water)
+    return found
 
 
 def _compensation(link: etree._Element) -> float | None:
