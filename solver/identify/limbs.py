@@ -465,8 +465,10 @@ def legs_by_reach(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     they are in the zero pose: a mirrored pair of equal chains (two joints or more, no gripper;
     mirrored across the root's origin, or side by side about a plane off it, :func:`_side_by_side`)
     that each end below where they start by most of their reach (``_LEG_STRAIGHT``), whose tips
-    are the body's lowest and below its root by half their reach, and that start no higher
-    than any other chain (arms hang from shoulders above the hips). Not on a body bolted to
+    are the body's lowest and below its root by half their reach (or within half their reach
+    of it, a root drawn at the feet, below a pair of arms or with no other limb: a lower body
+    exported from the floor up), and that start no higher than any other chain (arms hang
+    from shoulders above the hips). Not on a body bolted to
     the world (a torso's arms may hang down too), nor when legs were found otherwise. Four
     chains or more like the pair, hanging as straight, their feet level with its own
     (:func:`_level_with`), are a walker's legs, every one of them: a quadruped's legs too long
@@ -764,15 +766,10 @@ def _hanging_pair(
     one, other = lowest[0], lowest[1]
     if len(one.joints) != len(other.joints):
         return None
-    root = tree.poses.place(_free_body(tree))[2]
-    below_the_root = at_the_root = True
-    for limb in (one, other):
-        start, end = placed[id(limb)]
-        reach = distance(start, end)
-        if reach == 0 or start[2] - end[2] < _LEG_STRAIGHT * reach:
-            return None
-        below_the_root = below_the_root and root - end[2] >= reach / 2
-        at_the_root = at_the_root and abs(root - end[2]) <= reach / 2
+    feet = _feet(tree, (one, other), placed)
+    if feet is None:
+        return None
+    below_the_root, at_the_root = feet
     (a, _), (b, _) = placed[id(one)], placed[id(other)]
     # Side by side across the body (y), or across x in a file drawn facing y; or at one height
     # and one place along it, apart across it, about a plane off the root's origin (a CAD
@@ -788,12 +785,32 @@ def _hanging_pair(
     hips = max(a[2], b[2])
     if not _trunk_above(tree, limbs, (one, other), placed, hips):
         return None
-    # Feet below the root's frame, or at it (a root drawn at the feet) below a pair of arms.
+    # Feet below the root's frame, or at it (a root drawn at the feet) below a pair of arms, or
+    # with no other limb at all (a lower body drawn from the floor up).
+    alone = all(limb in (one, other) for limb in limbs)
     if not below_the_root and not (
-        at_the_root and _pair_above(tree, limbs, (one, other), placed, hips)
+        at_the_root and (alone or _pair_above(tree, limbs, (one, other), placed, hips))
     ):
         return None
     return one, other
+
+
+def _feet(
+    tree: JointTree, pair: tuple[Limb, Limb], placed: dict[int, tuple[Place, Place]]
+) -> tuple[bool, bool] | None:
+    """Where the tips of ``pair`` are against the root's frame: whether both are below it by
+    half their reach, and whether both are within half their reach of it (a root drawn at the
+    feet). None when one of them does not hang nearly straight down (``_LEG_STRAIGHT``)."""
+    root = tree.poses.place(_free_body(tree))[2]
+    below_the_root = at_the_root = True
+    for limb in pair:
+        start, end = placed[id(limb)]
+        reach = distance(start, end)
+        if reach == 0 or start[2] - end[2] < _LEG_STRAIGHT * reach:
+            return None
+        below_the_root = below_the_root and root - end[2] >= reach / 2
+        at_the_root = at_the_root and abs(root - end[2]) <= reach / 2
+    return below_the_root, at_the_root
 
 
 def _level_with(

@@ -2110,12 +2110,12 @@ def test_chains_hanging_down_left_and_right_of_their_middle_are_legs_wherever_th
 
 
 def nameless_humanoid_drawn_from_its_feet(
-    *, arms: bool = True, facing_y: bool = False, hands: bool = False
+    *, arms: bool = True, facing_y: bool = False, hands: bool = False, upper: bool = True
 ) -> RobotText:
     """Letters only, the root's frame at the feet: two six-joint chains hang straight down
     from hips 0.5 m up to 0.05 m; above them two five-joint chains hang from shoulders 0.75 m
-    up (``arms``), or two one-joint ears turn on a head. ``facing_y``: left and right along x;
-    ``hands``: each arm ends in a gripper's jaw."""
+    up (``arms``), or two one-joint ears turn on a head, or nothing (``upper`` False: a lower
+    body). ``facing_y``: left and right along x; ``hands``: each arm ends in a gripper's jaw."""
 
     def across(offset: float) -> str:
         return f"{offset} 0" if facing_y else f"0 {offset}"
@@ -2124,7 +2124,7 @@ def nameless_humanoid_drawn_from_its_feet(
     for side, y in (("a", 0.08), ("b", -0.08)):
         start = f"{across(y)} 0.5"
         placed_chain(robot, robot.root, f"{side}j", start=start, steps=["0 0 -0.09"] * 5)
-    for side, y in (("c", 0.18), ("d", -0.18)):
+    for side, y in (("c", 0.18), ("d", -0.18)) if upper else ():
         steps = ["0 0 -0.06"] * 4 if arms else []
         tip = placed_chain(robot, robot.root, f"{side}j", start=f"{across(y)} 0.75", steps=steps)
         if hands:
@@ -2148,6 +2148,13 @@ def test_legs_hang_from_the_hips_below_a_pair_of_arms_though_the_root_is_drawn_a
         "Biped",
         "Humanoid",
     )
+
+
+def test_two_chains_hanging_to_the_feet_of_a_root_drawn_there_with_nothing_else_are_legs() -> None:
+    # A lower body exported from the floor up: its two legs are all it has. Nothing hangs
+    # beside them that could be a torso's arms, and they reach down to the root's frame.
+    result = identify_urdf(nameless_humanoid_drawn_from_its_feet(upper=False).text())
+    assert result.structure == "Biped"
 
 
 def test_a_shoulder_written_shld_names_an_arm_as_shoulder_does() -> None:
