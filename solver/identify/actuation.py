@@ -34,7 +34,7 @@ from collections.abc import Iterator, Mapping
 from solver.identify.hands import endless_jaws, gripper_closure, jaws
 from solver.identify.limbs import CORNER, joints_above, moved_by, nearest_above, points_a_sensor
 from solver.identify.pose import Vector, dot, local_axis, minus, off_axis, parallel, spread
-from solver.identify.readers.urdf import Joint
+from solver.identify.readers.urdf import Joint, written_blank
 from solver.identify.roles import POSED, Role, main_axis
 from solver.identify.tree import JointTree
 
@@ -883,12 +883,13 @@ def _unnamed_spinners(tree: JointTree, taken: set[str]) -> Iterator[Joint]:
     """Endless joints of no role yet and no part's name, not on a part an endless joint turns
     about a level axle (a rim's rollers) nor carrying a sensor a mount points (a camera, a
     lidar or a range finder: a wheel's contact or IMU sensor turns with it): what could be
-    wheels or rotors, told by place."""
+    wheels or rotors, told by place. An export that wrote no limits (:func:`_unbounded`) says
+    nothing of how far a joint turns: one turning a part balanced on its axle is read so too."""
     known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
     named: dict[str, str | None] = {}  # link -> the nearest movable joint named for a part
     for joint in tree.urdf.joints:
         if (
-            joint.endless
+            (joint.endless or _unbounded(tree, joint))
             and joint.actuated
             and joint.name not in taken
             and not _named_for_a_part(tree, joint, known, named)
@@ -896,6 +897,19 @@ def _unnamed_spinners(tree: JointTree, taken: set[str]) -> Iterator[Joint]:
             and not _on_a_spinning_part(tree, joint, known)
         ):
             yield joint
+
+
+def _unbounded(tree: JointTree, joint: Joint) -> bool:
+    """A revolute joint written blank (:func:`~solver.identify.readers.urdf.written_blank`) and
+    unlocked as an export's (its range unwritten, not zero), turning a part that carries its
+    mass on its axle (:func:`_balanced`): a wheel, as far as the file says; a jaw or a finger
+    hangs its mass off its hinge."""
+    return (
+        joint.type == "revolute"
+        and joint.unlocked
+        and written_blank(joint)
+        and _balanced(tree, joint)
+    )
 
 
 def _named_for_a_part(

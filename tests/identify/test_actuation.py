@@ -73,34 +73,61 @@ def test_unnamed_endless_joints_below_a_body_on_both_sides_are_wheels() -> None:
     assert result.body.wheels == ("fl_joint", "fr_joint", "rl_joint", "rr_joint")
 
 
+def _with_masses(text: str, centres: dict[str, str]) -> str:
+    """``text`` with each link named in ``centres`` given a mass there (its inertial origin)."""
+    inertia = '<inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/>'
+    for link, centre in centres.items():
+        text = text.replace(
+            f'<link name="{link}"/>',
+            f'<link name="{link}"><inertial><origin xyz="{centre}"/><mass value="1"/>'
+            f"{inertia}</inertial></link>",
+        )
+    return text
+
+
+BLANK = '<axis xyz="0 0 1"/><limit lower="0" upper="0" effort="0" velocity="0"/>'
+
+
 def test_a_cad_exports_blank_wheels_are_told_by_sides_of_the_bodys_mass_centre() -> None:
     # A small tracked rover exported from CAD: its only joints four unnamed revolute leaves
-    # written 0..0 with zero effort (no limits given: they turn), axles across the body, below
-    # it; the body's origin at its right-hand corner, so every wheel lies left of the origin,
-    # and its mass centre in the middle, with wheels on both sides of it.
-    blank = '<axis xyz="0 0 1"/><limit lower="0" upper="0" effort="0" velocity="0"/>'
+    # written 0..0 with zero effort (no limits given: they move, how far unsaid), axles across
+    # the body, below it, each turning a part balanced on its axle; the body's origin at its
+    # right-hand corner, so every wheel lies left of the origin, and its mass centre in the
+    # middle, with wheels on both sides of it.
     robot = RobotText("explorer")
-    for corner, (x, y) in {
-        "a": (0, 0.05),
-        "b": (0.2, 0.05),
-        "c": (0, 0.25),
-        "d": (0.2, 0.25),
-    }.items():
+    places = {"a": (0, 0.05), "b": (0.2, 0.05), "c": (0, 0.25), "d": (0.2, 0.25)}
+    for corner, (x, y) in places.items():
         origin = f'<origin xyz="{x} {y} -0.02" rpy="1.5708 0 0"/>'
-        robot.joint(f"{corner}_joint", "revolute", "base_link", f"{corner}_link", origin + blank)
-    inertia = '<inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/>'
-    body = (
-        '<link name="base_link"><inertial><origin xyz="0.1 0.15 0"/><mass value="1"/>'
-        f"{inertia}</inertial></link>"
-    )
-    result = identify_urdf(robot.text().replace('<link name="base_link"/>', body))
+        robot.joint(f"{corner}_joint", "revolute", "base_link", f"{corner}_link", origin + BLANK)
+    wheels = {f"{corner}_link": "0 0 0" for corner in places}
+    result = identify_urdf(_with_masses(robot.text(), {"base_link": "0.1 0.15 0", **wheels}))
     assert result.body is not None
     assert (result.structure, result.body.wheels) == (
         "UGV",
         ("a_joint", "b_joint", "c_joint", "d_joint"),
     )
     # A body whose file gives no mass centre is told from its origin: all on one side.
-    assert identify_urdf(robot.text()).structure != "UGV"
+    assert identify_urdf(_with_masses(robot.text(), wheels)).structure != "UGV"
+
+
+def test_blank_jaws_hanging_their_mass_off_their_hinges_are_no_wheels() -> None:
+    # A claw exported blank, no part named: a wrist and two jaws below the link it turns, one
+    # on each side, each jaw's mass 5 cm out from its hinge. Written so, every joint moves, but
+    # nothing says a jaw turns for ever: it is no wheel, balanced on no axle.
+    robot = RobotText("claw")
+    robot.joint("joint1", "revolute", "base_link", "link1", BLANK)
+    for side, y in (("l", 0.03), ("r", -0.03)):
+        origin = f'<origin xyz="0 {y} -0.02" rpy="1.5708 0 0"/>'
+        robot.joint(f"joint_{side}", "revolute", "link1", f"link_{side}", origin + BLANK)
+    jaws = {"link_l": "0 -0.05 0", "link_r": "0 -0.05 0"}
+    result = identify_urdf(_with_masses(robot.text(), jaws))
+    assert result.body is not None
+    assert result.body.wheels == ()
+    assert result.structure != "UGV"
+    # Balanced on their hinges, the same two are a pair of wheels on a turning mount.
+    balanced = identify_urdf(_with_masses(robot.text(), dict.fromkeys(jaws, "0 0 0")))
+    assert balanced.body is not None
+    assert balanced.body.wheels == ("joint_l", "joint_r")
 
 
 def test_unnamed_endless_joints_carrying_sensors_are_turning_mounts_not_wheels() -> None:

@@ -156,10 +156,8 @@ class Joint:
         )
 
     def turns(self, at_least: float) -> bool:
-        """It turns through ``at_least`` radians: continuous, or revolute with that range, or
-        blank and unlocked (:func:`_blank_chains`: an export that wrote no limits says nothing
-        of how far the joint turns, a wheel's as much as an arm's)."""
-        if self.type == "continuous" or (self.unlocked and _blank(self)):
+        """It turns through ``at_least`` radians: continuous, or revolute with that range."""
+        if self.type == "continuous":
             return True
         return (
             self.type == "revolute"
@@ -977,13 +975,13 @@ def _placeholders(joints: dict[str, Joint]) -> set[str]:
 
 
 def _blank_chains(joints: dict[str, Joint]) -> set[str]:
-    """Every blank joint (:func:`_blank`) when :data:`_BLANK_CHAIN` of them are in a row, each
-    carried by the one before (through fixed links), or when there are that many and every
-    joint of the file that is not fixed is blank: nobody locks an arm joint by joint that way,
-    nor every joint of a robot, so the file is an export that wrote no limits, its wheels'
+    """Every blank joint (:func:`written_blank`) when :data:`_BLANK_CHAIN` of them are in a
+    row, each carried by the one before (through fixed links), or when there are that many and
+    every joint of the file that is not fixed is blank: nobody locks an arm joint by joint that
+    way, nor every joint of a robot, so the file is an export that wrote no limits, its wheels'
     joints too. A sensor mount written so is a leaf on the body, or two (a camera and its
     gimbal) in a row, and stays locked beside joints that move."""
-    blank = {name for name, joint in joints.items() if _blank(joint)}
+    blank = {name for name, joint in joints.items() if written_blank(joint)}
     if len(blank) < _BLANK_CHAIN:
         return set()
     if all(name in blank or joint.type == "fixed" for name, joint in joints.items()):
@@ -1018,7 +1016,7 @@ def _moved_by(link: str, above: dict[str, Joint], known: dict[str, str | None]) 
     return found
 
 
-def _blank(joint: Joint) -> bool:
+def written_blank(joint: Joint) -> bool:
     """A revolute or prismatic joint with limits 0..0 and a zero effort: what a CAD exporter
     writes when it was given no limits."""
     return (
