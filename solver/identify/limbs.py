@@ -88,7 +88,7 @@ from solver.identify.pose import (
     perpendicular,
     spread,
 )
-from solver.identify.readers.urdf import Joint, Urdf
+from solver.identify.readers.urdf import Joint, Urdf, walk_up
 from solver.identify.roles import Role
 from solver.identify.tree import JointTree
 from solver.untrusted import shown
@@ -2076,23 +2076,8 @@ def nearest_above(
 ) -> str | None:
     """The nearest joint above ``link`` that is ``wanted`` (None when none is, up to the root);
     every link walked is remembered in ``known`` (one ``known`` per ``wanted``), so many links
-    cost one walk of the tree at most."""
-    walked = []
-    found: str | None = None
-    current: str | None = link
-    while current is not None and current not in known:
-        walked.append(current)
-        joint = urdf.parent_joint(current)
-        if joint is None or wanted(joint):
-            found = None if joint is None else joint.name
-            current = None
-        else:
-            current = joint.parent
-    if current is not None:
-        found = known[current]
-    for name in walked:
-        known[name] = found
-    return found
+    cost one walk of the tree at most (:func:`~solver.identify.readers.urdf.walk_up`)."""
+    return walk_up(urdf.parent_joint, link, known, wanted)
 
 
 def _named_limb(tree: JointTree, joints: list[Joint]) -> bool:

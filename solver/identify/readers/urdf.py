@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, replace
 from functools import cached_property
 from typing import TYPE_CHECKING
@@ -990,30 +990,43 @@ def _blank_chains(joints: dict[str, Joint]) -> set[str]:
     known: dict[str, str | None] = {}
     carrier: dict[str, str | None] = {}
     for name in blank:
-        up = _moved_by(joints[name].parent, above, known)
+        up = walk_up(above.get, joints[name].parent, known, _not_fixed)
         carrier[name] = up if up in blank else None
     return blank if _longest_row(carrier) >= _BLANK_CHAIN else set()
 
 
-def _moved_by(link: str, above: dict[str, Joint], known: dict[str, str | None]) -> str | None:
-    """The nearest joint above ``link`` that is not fixed (``None``: none, or a loop); every
-    link walked is remembered in ``known``, so many links cost one walk of the tree at most."""
+def walk_up(
+    parent_joint: Callable[[str], Joint | None],
+    link: str,
+    known: dict[str, str | None],
+    wanted: Callable[[Joint], bool],
+) -> str | None:
+    """The nearest joint above ``link`` that is ``wanted`` (None when none is, up to the root,
+    or when the joints above close a loop: a file read before its tree is checked);
+    ``parent_joint`` gives the joint a link hangs from. Every link walked is remembered in
+    ``known`` (one ``known`` per ``wanted``), so many links cost one walk of the tree at most."""
     walked: list[str] = []
     seen: set[str] = set()
     found: str | None = None
     while link not in known:
         walked.append(link)
         seen.add(link)
-        up = above.get(link)
-        if up is None or up.type != "fixed" or up.parent in seen:
-            found = up.name if up is not None and up.type != "fixed" else None
+        joint = parent_joint(link)
+        if joint is None or wanted(joint):
+            found = None if joint is None else joint.name
             break
-        link = up.parent
+        if joint.parent in seen:
+            break
+        link = joint.parent
     else:
         found = known[link]
     for name in walked:
         known[name] = found
     return found
+
+
+def _not_fixed(joint: Joint) -> bool:
+    return joint.type != "fixed"
 
 
 def written_blank(joint: Joint) -> bool:
