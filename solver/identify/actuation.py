@@ -26,6 +26,7 @@ Not here: the roles of the chains the other joints form (:mod:`solver.identify.l
 
 from __future__ import annotations
 
+import itertools
 import math
 import re
 from collections import Counter
@@ -90,6 +91,11 @@ _WHEEL_LEGGED = (2, 4)
 _FOOT_JOINT = re.compile(r"ankle|toe", re.IGNORECASE)
 # Unnamed upright spinning leaves on one link are rotors from this many (a tricopter's).
 _FEWEST_UNNAMED_ROTORS = 3
+# An omni base's wheels, told by their axles alone: this many or more (a kiwi drive's three),
+# each axle within this share of pointing at the middle of them all (the cosine of the angle
+# between the axle and the line from the middle to the wheel, 0.95: 18 degrees).
+_FEWEST_OMNI_WHEELS = 3
+_POINTS_IN = 0.95
 # A ball joint written as hinges: one about each axis.
 _BALL_AXES = 3
 # A motor named as such (``arm1_motor_link``, ``motor_2``), not ``motorcycle`` or ``rotor``.
@@ -124,12 +130,8 @@ def joint_roles(tree: JointTree) -> dict[str, Role]:
             "unnamed endless joints below the body, side by side, turning about the line they "
             "push along (screws)",
         )
-    for name in _unnamed_wheels(tree, roles):
-        roles[name] = Role(
-            name,
-            "wheel",
-            "an unnamed endless joint below its link or on a level axle, wheels on both sides",
-        )
+    for name, why in _unnamed_wheels(tree, roles).items():
+        roles[name] = Role(name, "wheel", why)
     for name in _roller_wheels(tree, roles):
         roles[name] = Role(
             name,
@@ -378,7 +380,14 @@ def _on_a_spinning_part(tree: JointTree, joint: Joint, known: dict[str, str | No
     return carrier is not None and carrier.type == "continuous" and _axle(local_axis(carrier))
 
 
-def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
+_SIDES = "an unnamed endless joint below its link or on a level axle, wheels on both sides"
+_POINTING_IN = (
+    "an unnamed endless joint on a level axle pointing at the middle of the others all round "
+    "it (an omni base's wheels)"
+)
+
+
+def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, str]:
     """Unnamed spinning leaves below a link, on both its sides: wheels.
 
     A base whose wheel joints carry no name (``fl_joint`` on ``fl_Link``) still has them where
@@ -386,8 +395,10 @@ def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     moves, hanging below the link they are on or turning about a level axis across it (a
     wheel's axle, whatever the height of the link's origin; in the body's frame too on a link
     fixed to the body or sliding on it), at least one on each side of it.
-    Sides are told from the link's mass centre when its file gives one (:func:`_middle`).
-    Fingers have limits; rotors sit level with or above their body and turn about an upright
+    Sides are told from the link's mass centre when its file gives one (:func:`_middle`); three
+    or more all round the middle of them, their axles pointing at it, are an omni base's wheels
+    wherever the link's origin is (:func:`_pointing_in`). Each with its evidence. Fingers have
+    limits; rotors sit level with or above their body and turn about an upright
     axis; a propeller on a wing turns about the axis it flies along. Six or more level with a
     link are a wheel-leg walker's whole-turning legs (:func:`~solver.identify.limbs.find_limbs`),
     unless they carry their mass on their axles (:func:`_mostly_balanced`): a leg that turns
@@ -399,14 +410,7 @@ def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     for link, joints in level.items():
         if len(joints) < _WHEEL_LEGS or driven or _mostly_balanced(tree, joints):
             below.setdefault(link, []).extend(joints)  # road wheels, not legs
-    found: list[str] = []
-    apart: list[Joint] = []
-    for link, joints in below.items():
-        middle = _middle(tree, link)
-        if len(joints) >= 2 and _sides({j.origin[1] - middle for j in joints}):
-            found.extend(j.name for j in joints)
-        else:
-            apart.extend(joints)
+    found, apart = _told_on_their_link(tree, below)
     # One on a caster's swivel or a steering knuckle, two on a rocker: sides told across the
     # whole body instead, for those that hang from the body through no driven joint but a
     # steering one (a driven flipper's sprocket is the flipper's), and few that turn for ever
@@ -421,8 +425,54 @@ def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     apart = _wrists_dropped(tree, apart)
     side_by_side = len(apart) >= 2 and _sides({tree.poses.place(j.child)[1] for j in apart})
     if side_by_side or _in_line(tree, apart):
-        found.extend(j.name for j in apart)
+        found.update(dict.fromkeys((j.name for j in apart), _SIDES))
     return found
+
+
+def _told_on_their_link(
+    tree: JointTree, below: dict[str, list[Joint]]
+) -> tuple[dict[str, str], list[Joint]]:
+    """The wheels among ``below`` (link -> the candidates it carries) told on their own link:
+    two or more on both sides of its middle, or three or more pointing in
+    (:func:`_pointing_in`), each with its evidence; and the rest, to be told across the body."""
+    found: dict[str, str] = {}
+    apart: list[Joint] = []
+    for link, joints in below.items():
+        middle = _middle(tree, link)
+        if len(joints) >= 2 and _sides({j.origin[1] - middle for j in joints}):
+            found.update(dict.fromkeys((j.name for j in joints), _SIDES))
+        elif _pointing_in(tree, joints):
+            found.update(dict.fromkeys((j.name for j in joints), _POINTING_IN))
+        else:
+            apart.extend(joints)
+    return found, apart
+
+
+def _pointing_in(tree: JointTree, joints: list[Joint]) -> bool:
+    """Three or more (:data:`_FEWEST_OMNI_WHEELS`) turning about level axles as the body
+    rests, all round the middle of them (no gap of half a turn between them, seen from above),
+    each axle pointing at that middle (:data:`_POINTS_IN`): an omni base's wheels (a kiwi
+    drive's three at 120 degrees, four at the corners), wherever its link's origin is (a CAD
+    export puts it at a corner, so sides of it say nothing). A car's axles lie across the
+    body, a caster's behind its swivel; a hand's fingers stop, a rotor turns upright."""
+    if len(joints) < _FEWEST_OMNI_WHEELS:
+        return False
+    places = [tree.poses.place(joint.child) for joint in joints]
+    middle = [sum(place[k] for place in places) / len(places) for k in range(2)]
+    bearings: list[float] = []
+    for joint, place in zip(joints, places, strict=True):
+        axis = tree.poses.axis(joint)
+        out = (place[0] - middle[0], place[1] - middle[1])
+        reach = math.hypot(*out) * math.hypot(axis[0], axis[1])
+        if not _axle(axis) or reach == 0:
+            return False
+        if abs(out[0] * axis[0] + out[1] * axis[1]) < _POINTS_IN * reach:
+            return False
+        bearings.append(math.atan2(out[1], out[0]))
+    bearings.sort()
+    gaps = [b - a for a, b in itertools.pairwise(bearings)]
+    gaps.append(bearings[0] + 2 * math.pi - bearings[-1])
+    return max(gaps) < math.pi
 
 
 def _in_line(tree: JointTree, leaves: list[Joint]) -> bool:

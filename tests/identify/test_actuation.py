@@ -3,6 +3,8 @@ too few to fly, the joints below a gripper."""
 
 from __future__ import annotations
 
+import math
+
 import pytest
 
 from solver.identify import identify_urdf, load_profile
@@ -108,6 +110,33 @@ def test_a_cad_exports_blank_wheels_are_told_by_sides_of_the_bodys_mass_centre()
     )
     # A body whose file gives no mass centre is told from its origin: all on one side.
     assert identify_urdf(_with_masses(robot.text(), wheels)).structure != "UGV"
+
+
+def three_spinning_leaves(yaws: tuple[float, float, float]) -> RobotText:
+    """Three unnamed endless leaves below a base whose origin is at a corner of them (none on
+    its left), at 120 degrees round their middle (0.2, -0.2), each frame turned a quarter
+    about y (its z axle level) and then by ``yaws``."""
+    robot = RobotText("kiwi")
+    for index, bearing in enumerate((90, 210, 330)):
+        x = 0.2 + 0.2 * math.cos(math.radians(bearing))
+        y = -0.2 + 0.2 * math.sin(math.radians(bearing))
+        turned = f'<origin xyz="{x:.4f} {y:.4f} -0.03" rpy="0 1.5708 {yaws[index]:.4f}"/>'
+        turned += '<axis xyz="0 0 1"/>'
+        robot.joint(f"j{index}", "continuous", "base_link", f"l{index}", turned)
+    return robot
+
+
+def test_three_unnamed_endless_joints_whose_axles_point_at_their_middle_are_an_omni_base() -> None:
+    # A kiwi drive exported with its origin at a corner: sides of it say nothing, but each
+    # wheel's axle points at the middle of the three, all round it.
+    pointing_in = tuple(math.radians(b + 180) for b in (90, 210, 330))
+    result = identify_urdf(three_spinning_leaves(pointing_in).text())
+    assert result.body is not None
+    assert (result.structure, result.body.wheels) == ("UGV", ("j0", "j1", "j2"))
+    # The same three with their axles all one way (across one line) are no omni base.
+    across = identify_urdf(three_spinning_leaves((0.0, 0.0, 0.0)).text())
+    assert across.body is not None
+    assert across.body.wheels == ()
 
 
 def test_blank_jaws_hanging_their_mass_off_their_hinges_are_no_wheels() -> None:
