@@ -119,7 +119,8 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
     """The sensors a URDF declares, one per physical device, in document order.
 
     One device declared twice (a Gazebo ``<sensor>`` and a URDF ``<sensor>``, a plugin feeding
-    an element or written again outside it, two parts of one IMU on one link) counts once; so
+    an element or written again outside it, a model plugin publishing on the topic an element
+    of its kind publishes on, two parts of one IMU on one link) counts once; so
     does a device whose beams hang from its own link on joints that do not move (a DVL plugin
     and its four range rays), and a colour and a depth stream on one link are one RGB-D
     camera. Distinct devices count apart even when they share a name (one force sensor per
@@ -132,6 +133,14 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
     # A plugin a <sensor> runs, written again outside it (the same name, file and settings):
     # the element's, declared twice.
     inside = {_same_plugin(p) for tag in urdf.sensors for p in tag.plugins}
+    # A model plugin publishing on the topic a <sensor> of its kind publishes on: the element's
+    # device, declared twice (an IMU plugin on the body beside the IMU sensor, one stream).
+    streams = {
+        (element_kind(tag, profile), topic)
+        for tag in urdf.sensors
+        for p in tag.plugins
+        if (topic := _topic(p)) is not None
+    }
     # The links elements of each kind sit on (where a plugin of that kind may report).
     elements: dict[str, set[str | None]] = {}
     for detection, _ in found:
@@ -147,6 +156,8 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
         name = plugin.name or plugin.filename
         if simulated == "unknown" and _RAY_PLUGIN.search(plugin.filename or plugin.name):
             simulated = _ray_plugin_kind(plugin, profile)
+        if (simulated, _topic(plugin)) in streams:
+            continue
         if simulated == "unknown":
             name = f"{name} ({plugin.filename or plugin.name})"
         found.append((Detection(simulated, name, source, link), "plugin"))
@@ -155,6 +166,13 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
         if included is not None:
             found.append((Detection(included, model.name, source, model.link), "model"))
     return tuple(_devices(_hardware_kept(found), urdf, beams, _imu_devices(found, parts)))
+
+
+def _topic(plugin: PluginTag) -> str | None:
+    """The topic ``plugin`` publishes on (``topicName``, ``topic``), without a leading slash;
+    None when it names none."""
+    topic = (plugin.param("topicName", "topic") or "").strip().lstrip("/")
+    return topic or None
 
 
 def _same_plugin(plugin: PluginTag) -> tuple[str, str, tuple[tuple[str, str], ...]]:

@@ -243,6 +243,22 @@ def test_a_plugin_naming_its_body_and_the_frame_an_element_of_its_kind_is_on_fee
         assert kinds(element, plugin, robot=robot) == [("imu", None, count)]
 
 
+def test_a_plugin_on_the_body_publishing_where_an_element_of_its_kind_does_is_that_sensor() -> None:
+    # An IMU plugin on the base (its <bodyName>) and an IMU element on imu_link, both
+    # publishing on /quad_imu: one stream, one IMU declared twice. On a topic of its own, the
+    # plugin is a device of its own.
+    inner = '<plugin name="imu_sensor_plugin" filename="libgazebo_ros_imu_sensor.so">'
+    element = builders.gazebo_sensor(
+        "imu_link", "imu", "imu", inner + "<topicName>quad_imu</topicName></plugin>"
+    )
+    for topic, count in (("/quad_imu", 1), ("body_imu", 2)):
+        robot = builders.ugv()
+        robot.fixed(robot.root, "imu_link")
+        params = f"<bodyName>base_link</bodyName><topicName>{topic}</topicName>"
+        plugin = builders.model_plugin("imu_plugin", "libgazebo_ros_imu.so", params)
+        assert kinds(element, plugin, robot=robot) == [("imu", None, count)]
+
+
 def test_a_force_plugin_naming_the_joint_a_gazebo_force_sensor_is_on_is_the_same_sensor() -> None:
     # builders.ugv() has wheel_left_joint: a force/torque sensor on a joint measures at its
     # child link, the link a plugin naming the joint measures at.
