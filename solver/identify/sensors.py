@@ -130,11 +130,22 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
     or plugin declares a device of its kind, and not when neither tells its kind.
     """
     found, beams, parts = _element_detections(urdf, profile, source)
-    # A plugin a <sensor> runs, written again outside it (the same name, file and settings):
-    # the element's, declared twice.
+    found += _plugin_detections(urdf, profile, source, found)
+    for model in urdf.models:
+        included = _model_kind(model.model, profile)
+        if included is not None:
+            found.append((Detection(included, model.name, source, model.link), "model"))
+    return tuple(_devices(_hardware_kept(found), urdf, beams, _imu_devices(found, parts)))
+
+
+def _plugin_detections(
+    urdf: Urdf, profile: Profile, source: str, found: list[tuple[Detection, str]]
+) -> list[tuple[Detection, str]]:
+    """One detection per model plugin that simulates a sensor and is not one of the elements
+    in ``found`` declared again: a plugin a ``<sensor>`` runs, written again outside it (the
+    same name, file and settings), or one publishing on the topic a ``<sensor>`` of its kind
+    publishes on (an IMU plugin on the body beside the IMU sensor, one stream)."""
     inside = {_same_plugin(p) for tag in urdf.sensors for p in tag.plugins}
-    # A model plugin publishing on the topic a <sensor> of its kind publishes on: the element's
-    # device, declared twice (an IMU plugin on the body beside the IMU sensor, one stream).
     streams = {
         (element_kind(tag, profile), topic)
         for tag in urdf.sensors
@@ -145,6 +156,7 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
     elements: dict[str, set[str | None]] = {}
     for detection, _ in found:
         elements.setdefault(detection.kind, set()).add(detection.link)
+    plugins: list[tuple[Detection, str]] = []
     for plugin in urdf.plugins:
         simulated = plugin_kind(plugin, profile)
         if simulated is None or _same_plugin(plugin) in inside:
@@ -160,12 +172,8 @@ def sensors_from_urdf(urdf: Urdf, profile: Profile, source: str = "urdf") -> tup
             continue
         if simulated == "unknown":
             name = f"{name} ({plugin.filename or plugin.name})"
-        found.append((Detection(simulated, name, source, link), "plugin"))
-    for model in urdf.models:
-        included = _model_kind(model.model, profile)
-        if included is not None:
-            found.append((Detection(included, model.name, source, model.link), "model"))
-    return tuple(_devices(_hardware_kept(found), urdf, beams, _imu_devices(found, parts)))
+        plugins.append((Detection(simulated, name, source, link), "plugin"))
+    return plugins
 
 
 def _topic(plugin: PluginTag) -> str | None:

@@ -112,7 +112,7 @@ def test_a_cad_exports_blank_wheels_are_told_by_sides_of_the_bodys_mass_centre()
     assert identify_urdf(_with_masses(robot.text(), wheels)).structure != "UGV"
 
 
-def three_spinning_leaves(yaws: tuple[float, float, float]) -> RobotText:
+def three_spinning_leaves(yaws: tuple[float, ...]) -> RobotText:
     """Three unnamed endless leaves below a base whose origin is at a corner of them (none on
     its left), at 120 degrees round their middle (0.2, -0.2), each frame turned a quarter
     about y (its z axle level) and then by ``yaws``."""
