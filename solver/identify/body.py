@@ -670,6 +670,7 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
         tree,
         parts.limbs,
         grounded=grounded(tree, parts.roles),
+        flying=flying,
         walks_on=_trunks(tree, legged),
         grippers=frozenset(parts.grippers),
     )

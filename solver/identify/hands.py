@@ -465,6 +465,7 @@ def finger_groups(
     limbs: list[Limb],
     *,
     grounded: bool = False,
+    flying: bool = False,
     walks_on: frozenset[str | None] = frozenset(),
     grippers: frozenset[str] = frozenset(),
 ) -> set[str]:
@@ -478,9 +479,11 @@ def finger_groups(
 
     A claw or a hand whose fingers carry no names still has them side by side on a palm; arms
     and legs on one link come in ones and twos. On a body that moves on the ground, chains on
-    its root link are the base's own (a tracked vehicle's flippers), not fingers; nor are
-    chains on the trunk a pair of legs hangs from (``walks_on``: the nearest joint above each
-    leg's base that moves, None for the root's rigid body): a humanoid's two arms and neck.
+    its root link are the base's own (a tracked vehicle's flippers), not fingers; on a body that
+    flies, chains on the airframe (the root and the links fixed to it) are its own (a blimp's
+    rudders and elevators); nor are chains on the trunk a pair of legs hangs from
+    (``walks_on``: the nearest joint above each leg's base that moves, None for the root's
+    rigid body): a humanoid's two arms and neck.
     """
     by_base: dict[str, list[Limb]] = {}  # short unnamed chains, by the link they start on
     # By the rigid body the chains start on (a finger may start on a metacarpal link of its own,
@@ -495,6 +498,8 @@ def finger_groups(
             continue
         body = moved_by(tree.urdf, limb.base, known)
         if (walks_on and body in walks_on) or limb.kind not in ("arm", "other"):
+            continue
+        if flying and body is None:
             continue
         on_palm.setdefault(body, []).append(limb)
         taken = None if limb.named else _finger_like(tree, limb, longest)

@@ -207,6 +207,24 @@ def test_three_short_unnamed_chains_on_one_link_are_fingers_and_two_are_not() ->
     assert finger_groups(tree, three + two, grounded=True) == set()
 
 
+def test_short_unnamed_chains_on_a_flying_bodys_airframe_are_its_own_and_no_fingers() -> None:
+    # Four single hinges on links fixed to the root, and three short chains on a link a joint
+    # away: on a body that does not fly, two groups of fingers; on one that flies the four are
+    # its own (a blimp's rudders and elevators), the three still a claw's fingers.
+    robot = RobotText("airship")
+    airframe = []
+    for i in range(4):
+        base = robot.fixed("base_link", f"part{i}")
+        airframe.append(Limb("other", (f"h{i}",), base, robot.chain(base, [f"h{i}"])))
+    mount = robot.chain("base_link", ["mount"])
+    claw = _chains(robot, mount, 3)
+    tree = tree_of(robot)
+    hinges = {name for limb in airframe for name in limb.joints}
+    fingers = {name for limb in claw for name in limb.joints}
+    assert finger_groups(tree, airframe + claw) == hinges | fingers
+    assert finger_groups(tree, airframe + claw, flying=True) == fingers
+
+
 def segmented(steps: list[list[tuple[float, float, float]]]) -> RobotText:
     """A body with one unnamed chain per entry of ``steps``, starting 0.03 m apart across it:
     a joint at each step (an offset from the joint before), its tip one step further."""
