@@ -123,13 +123,8 @@ def joint_roles(tree: JointTree) -> dict[str, Role]:
             f"named as a rotor ({roles[name].evidence}), but below the body beside its "
             "partner, turning about the line it pushes along (a screw)",
         )
-    for name in _unnamed_screws(tree, roles):
-        roles[name] = Role(
-            name,
-            "thruster",
-            "unnamed endless joints below the body, side by side, turning about the line they "
-            "push along (screws)",
-        )
+    for name, why in _screws_by_place(tree, roles).items():
+        roles[name] = Role(name, "thruster", why)
     for name, why in _unnamed_wheels(tree, roles).items():
         roles[name] = Role(name, "wheel", why)
     for name in _roller_wheels(tree, roles):
@@ -716,6 +711,42 @@ def _unnamed_screws(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
         return []
     below, _ = _wheel_candidates(tree, roles)
     return [j.name for joints in below.values() if _screws(tree, joints) for j in joints]
+
+
+def _screws_by_place(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, str]:
+    """Unnamed screws (:func:`_unnamed_screws`, else :func:`_lone_screw`), each with its
+    evidence."""
+    twins = _unnamed_screws(tree, roles)
+    if twins:
+        why = (
+            "unnamed endless joints below the body, side by side, turning about the line they "
+            "push along (screws)"
+        )
+        return dict.fromkeys(twins, why)
+    why = (
+        "a lone unnamed endless joint below a body in water, on its middle line, turning about "
+        "the line it travels along (a single screw)"
+    )
+    return dict.fromkeys(_lone_screw(tree, roles), why)
+
+
+def _lone_screw(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
+    """The one unnamed spinning leaf below a link (:func:`_wheel_candidates`) of a body a
+    water plugin puts in water, turning about the line the body travels along (x) as it rests
+    and on its middle line: a single screw at the stern, whatever steers beside it (a rudder, a
+    sail). Twin screws are :func:`_unnamed_screws`'; a wheel turns about an axle across the
+    body, and a body no water plugin names may be an aircraft with one propeller."""
+    if not tree.labels("marine") or any(tree.labels(kind) for kind in ("drive", "track", "flight")):
+        return []
+    below, _ = _wheel_candidates(tree, roles)
+    leaves = [joint for joints in below.values() for joint in joints]
+    if len(leaves) != 1:
+        return []
+    axis = tree.poses.axis(leaves[0])
+    across = tree.poses.place(leaves[0].child)[1] - _body_origin(tree, None)[1]
+    if abs(axis[0]) < 1 - _LEVEL or abs(across) > _MIRROR_TOLERANCE:
+        return []
+    return [leaves[0].name]
 
 
 def _screws(tree: JointTree, joints: list[Joint]) -> bool:

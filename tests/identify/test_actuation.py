@@ -251,6 +251,32 @@ def test_spinners_below_a_body_a_drive_plugin_moves_or_with_control_surfaces_are
         assert result.structure not in ("Surface Vessel", "Underwater Vehicle")
 
 
+def one_screw(*, water: bool, y: float = 0.0) -> RobotText:
+    """A hull steered by a rudder, one unnamed endless leaf below its stern at ``y`` across
+    it, turning about x; ``water`` adds a surface vessel's dynamics plugin."""
+    robot = RobotText("sloop")
+    limit = '<limit lower="-1" upper="1" effort="1" velocity="1"/>'
+    robot.joint("rudder_joint", "revolute", "base_link", "rudder", limit)
+    place = f'<origin xyz="-1.5 {y} -0.5"/><axis xyz="1 0 0"/>'
+    robot.joint("m0", "continuous", "base_link", "p0", place)
+    if water:
+        robot.add(builders.model_plugin("dynamics", "libusv_gazebo_dynamics_plugin.so"))
+    return robot
+
+
+def test_a_lone_spinner_below_a_hull_in_water_on_its_middle_line_is_its_screw() -> None:
+    result = identify_urdf(one_screw(water=True).text())
+    assert result.body is not None
+    assert (result.structure, result.body.thrusters) == ("Surface Vessel", ("m0",))
+    assert {c.motion_control for c in result.motion_controls} == {"Driving"}
+    # Off the middle line, or on a body no water plugin names (an aircraft with one
+    # propeller and a rudder has the same parts), it is no screw.
+    for robot in (one_screw(water=True, y=0.4), one_screw(water=False)):
+        other = identify_urdf(robot.text())
+        assert other.body is not None
+        assert other.body.thrusters == ()
+
+
 def test_a_row_of_spinners_below_a_body_is_no_pair_of_screws() -> None:
     # Three in a row across the body (not mirrored pairs), turning about x.
     robot = RobotText("row")
