@@ -26,18 +26,18 @@ imported or parsed as code.
   nodes) are opened only when they are regular files (a link, a FIFO or a device is passed by,
   never opened), at most :data:`MAX_FILE_BYTES` of each, :data:`MAX_FILES` files and
   :data:`MAX_TOTAL_BYTES` in all; XML comments are removed.
-* The *robot's packages*: the description's and, for a package named ``ROBOT_description``,
-  every package named ``ROBOT_...`` (the ROS convention: ``jackal_navigation`` is the Jackal's
-  though it never names ``jackal_description``); then every package that *uses* one of them
-  (names it as a word in its ``package.xml`` or its files: a bringup that finds the
-  description); then every package one of those uses (the navigation package a bringup
-  includes). A package another robot's package uses is not reached through a dependency both
-  share (a vendored ``gazebo_ros`` used by every robot of the workspace), and a name most
-  packages of the workspace write (``robot_description``, the parameter) is no evidence that
-  the package of that name is used. A package named like that parameter is used only where a
-  file names it as a package (found, launched, run: :data:`PARAMETER_NAMES`), so that a
-  description package named ``robot_description`` does not take in every neighbour that sets
-  its own robot's parameter.
+* The *robot's packages*: the description's and, for a package named ``ROBOT_description`` (or
+  named ``ROBOT_...`` beside a ``ROBOT_description`` package: a description kept in a control
+  package), every package named ``ROBOT_...`` (the ROS convention: ``jackal_navigation`` is the
+  Jackal's though it never names ``jackal_description``); then every package that *uses* one of
+  them (names it as a word in its ``package.xml`` or its files: a bringup that finds the
+  description); then every package one of those uses (the navigation package a bringup includes).
+  A package another robot's package uses is not reached through a dependency both share (a
+  vendored ``gazebo_ros`` used by every robot of the workspace), and a name most packages of the
+  workspace write (``robot_description``, the parameter) is no evidence that the package of that
+  name is used. A package named like that parameter is used only where a file names it as a
+  package (found, launched, run: :data:`PARAMETER_NAMES`), so that a description package named
+  ``robot_description`` does not take in every neighbour that sets its own robot's parameter.
 
 Past a bound the rest is not read and a note says so; the workspace is then *incomplete*, and
 what it does not say is not taken as said (:mod:`solver.identify.shipped`). A workspace that
@@ -266,8 +266,18 @@ def _stem(name: str) -> str | None:
 
 
 def _core(own: _Package, packages: list[_Package]) -> list[_Package]:
-    """The description's package, then those named for the robot (by folder)."""
-    stem = _stem(own.name)
+    """The description's package, then those named for the robot (by folder): for the stem of
+    its own name (:func:`_stem`), else of a ``ROBOT_description`` package of the workspace
+    whose stem its name begins with (a description kept in ``jackal_control`` beside
+    ``jackal_description``)."""
+    stem = _stem(own.name) or next(
+        (
+            found
+            for p in packages
+            if (found := _stem(p.name)) is not None and own.name.startswith(found)
+        ),
+        None,
+    )
     if stem is None:
         return [own]
     return [own, *_by_folder([p for p in packages if p is not own and p.name.startswith(stem)])]

@@ -96,6 +96,25 @@ def test_packages_named_for_the_robot_are_its_own_though_they_never_name_its_des
     assert read(described).packages == ("jackal_description", "jackal_navigation")
 
 
+def test_a_description_kept_beside_the_robots_description_package_takes_in_the_robots_packages(
+    tmp_path: Path,
+) -> None:
+    # The URDF lives in jackal_control; jackal_description beside it names the robot, and
+    # jackal_navigation is the robot's too. With no jackal_description, the name alone says
+    # nothing of a robot (control packages are named ROBOT_control and ros_control alike).
+    src = tmp_path / "src"
+    described = package(src, "jackal_control")
+    package(src, "jackal_navigation", {"launch/amcl.launch": "<node pkg='move_base'/>"})
+    package(src, "husky_navigation", {"launch/amcl.launch": "<node pkg='move_base'/>"})
+    assert read(described).packages == ("jackal_control",)
+    package(src, "jackal_description")
+    assert read(described).packages == (
+        "jackal_control",
+        "jackal_description",
+        "jackal_navigation",
+    )
+
+
 def test_a_name_inside_a_longer_word_is_no_use(tmp_path: Path) -> None:
     src = tmp_path / "src"
     described = package(src, "arm")
