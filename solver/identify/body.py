@@ -690,7 +690,7 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
     parts.limbs = arms_beside_legs(tree, legs_alike(tree, parts.limbs))
     parts.limbs = drives_beside_legs(tree, parts.limbs)
     parts.limbs = raised_legs(tree, flippers(tree, parts.limbs), parts.roles)
-    parts.limbs = parallel_robot(tree, meeting_tips(tree, parts.limbs))
+    parts.limbs = parallel_robot(tree, meeting_tips(tree, parts.limbs), flying=flying)
     parts.limbs = closed_arms(tree, closed_loops(tree, parts.limbs))
     if not parts.roles and not parts.trunk:  # a snake is its one chain, with nothing else
         parts.limbs = spine(tree, parts.limbs)

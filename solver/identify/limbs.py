@@ -1164,7 +1164,7 @@ def tips_meet(
     return apart > 0 and max(measure(a, b) for a in tips for b in tips) < _MEETING * apart
 
 
-def parallel_robot(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
+def parallel_robot(tree: JointTree, limbs: list[Limb], *, flying: bool = False) -> list[Limb]:
     """Three or six alike chains, all the body's limbs, none a leg or ending in a gripper, on
     one rigid body, starting on a circle whose third of a turn maps their starts onto each
     other: a parallel robot (a delta's three arms, a Stewart platform's six), one manipulator
@@ -1173,11 +1173,15 @@ def parallel_robot(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     as legs count when they are struts on a body bolted to the world (:func:`_struts`): a
     walker is not bolted down, and does not walk on linear actuators. Three chains named as
     legs on the root bolted to the world are a delta's arms beside other limbs too
-    (:func:`_bolted_legs`: the platform a simulator moves on a chain of its own)."""
+    (:func:`_bolted_legs`: the platform a simulator moves on a chain of its own). On a body
+    that flies, single joints on the airframe (its root and the links fixed to it) are its own,
+    no mechanism (:func:`_on_the_airframe`: six propellers' mounts, written alike)."""
     bolted = _bolted_legs(tree, limbs)
     group = bolted or limbs
     struts = bool(bolted) or _struts(tree, limbs)
     if len(group) not in _PARALLEL_CHAINS or not _alike_chains(tree, group, legs=struts):
+        return limbs
+    if flying and _on_the_airframe(tree, group):
         return limbs
     starts = [_start(tree, limb) for limb in group]
     if not _third_turn_symmetric(starts):
@@ -1196,6 +1200,14 @@ def parallel_robot(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
         else limb
         for limb in limbs
     ]
+
+
+def _on_the_airframe(tree: JointTree, group: list[Limb]) -> bool:
+    """Every chain of ``group`` is one joint starting on the root's rigid body."""
+    known: dict[str, str | None] = {}
+    return all(
+        len(limb.joints) == 1 and moved_by(tree.urdf, limb.base, known) is None for limb in group
+    )
 
 
 def _bolted_legs(tree: JointTree, limbs: list[Limb]) -> list[Limb]:

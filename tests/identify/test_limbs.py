@@ -10,7 +10,7 @@ import pytest
 
 from solver.identify import identify_urdf, load_profile
 from solver.identify.body import detect_body
-from solver.identify.limbs import Limb, find_limbs, sort_limbs
+from solver.identify.limbs import Limb, find_limbs, parallel_robot, sort_limbs
 from solver.identify.readers.urdf import parse_urdf
 from solver.identify.tree import JointTree
 from tests.identify import builders
@@ -2939,3 +2939,20 @@ def test_an_arm_named_chain_whose_single_joints_carry_grippers_stays_a_trunk() -
     result = identify_urdf(two_arms_one_with_a_suction_tool(second, jaws=True))
     assert result.body is not None
     assert not any(limb.joints == tuple(second) for limb in result.body.limbs)
+
+
+def test_six_single_hinges_round_a_flying_bodys_airframe_are_no_parallel_mechanism() -> None:
+    # Six one-joint chains a sixth of a turn apart on arms fixed to the root (a hexacopter's
+    # propeller mounts, written alike): on the ground a parallel mechanism (a claw's jaws), on
+    # a body that flies the craft's own.
+    robot = RobotText("hexa")
+    chains = []
+    for i in range(6):
+        angle = 2 * math.pi * i / 6
+        arm = robot.fixed("base_link", f"arm{i}")
+        place = f'<origin xyz="{0.25 * math.cos(angle):.4f} {0.25 * math.sin(angle):.4f} 0"/>'
+        robot.joint(f"j{i}", "revolute", arm, f"l{i}", place + '<axis xyz="1 0 0"/>')
+        chains.append(Limb("other", (f"j{i}",), arm, f"l{i}"))
+    tree = tree_of(robot)
+    assert "arm" in [limb.kind for limb in parallel_robot(tree, chains)]
+    assert parallel_robot(tree, chains, flying=True) == chains
