@@ -377,8 +377,8 @@ def _on_a_spinning_part(tree: JointTree, joint: Joint, known: dict[str, str | No
 
 _SIDES = "an unnamed endless joint below its link or on a level axle, wheels on both sides"
 _POINTING_IN = (
-    "an unnamed endless joint on a level axle pointing at the middle of the others all round "
-    "it (an omni base's wheels)"
+    "an unnamed endless joint on a level axle pointing at the middle of them all, the others "
+    "all round it (an omni base's wheels)"
 )
 
 
@@ -449,7 +449,8 @@ def _pointing_in(tree: JointTree, joints: list[Joint]) -> bool:
     each axle pointing at that middle (:data:`_POINTS_IN`): an omni base's wheels (a kiwi
     drive's three at 120 degrees, four at the corners), wherever its link's origin is (a CAD
     export puts it at a corner, so sides of it say nothing). A car's axles lie across the
-    body, a caster's behind its swivel; a hand's fingers stop, a rotor turns upright."""
+    body, a caster's behind its swivel; a hand's fingers stop, a rotor turns upright. Each
+    test is written so that a stranger's overflowing numbers (NaN, infinite) fail it."""
     if len(joints) < _FEWEST_OMNI_WHEELS:
         return False
     places = [tree.poses.place(joint.child) for joint in joints]
@@ -459,9 +460,9 @@ def _pointing_in(tree: JointTree, joints: list[Joint]) -> bool:
         axis = tree.poses.axis(joint)
         out = (place[0] - middle[0], place[1] - middle[1])
         reach = math.hypot(*out) * math.hypot(axis[0], axis[1])
-        if not _axle(axis) or reach == 0:
+        if not (_axle(axis) and math.isfinite(reach) and reach > 0):
             return False
-        if abs(out[0] * axis[0] + out[1] * axis[1]) < _POINTS_IN * reach:
+        if not abs(out[0] * axis[0] + out[1] * axis[1]) >= _POINTS_IN * reach:
             return False
         bearings.append(math.atan2(out[1], out[0]))
     bearings.sort()
@@ -743,8 +744,9 @@ def _lone_screw(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     if len(leaves) != 1:
         return []
     axis = tree.poses.axis(leaves[0])
-    across = tree.poses.place(leaves[0].child)[1] - _body_origin(tree, None)[1]
-    if abs(axis[0]) < 1 - _LEVEL or abs(across) > _MIRROR_TOLERANCE:
+    across = tree.poses.place(leaves[0].child)[1]  # from the root's origin: the middle line
+    # Written so that a stranger's overflowing numbers (NaN) fail it.
+    if not (abs(axis[0]) >= 1 - _LEVEL and abs(across) <= _MIRROR_TOLERANCE):
         return []
     return [leaves[0].name]
 

@@ -143,8 +143,9 @@ def _plugin_detections(
 ) -> list[tuple[Detection, str]]:
     """One detection per model plugin that simulates a sensor and is not one of the elements
     in ``found`` declared again: a plugin a ``<sensor>`` runs, written again outside it (the
-    same name, file and settings), or one publishing on the topic a ``<sensor>`` of its kind
-    publishes on (an IMU plugin on the body beside the IMU sensor, one stream)."""
+    same name, file and settings), or one publishing on the topic a plugin of a ``<sensor>`` of
+    its kind publishes on (:func:`_topic`; an IMU plugin on the body beside the IMU sensor,
+    one stream)."""
     inside = {_same_plugin(p) for tag in urdf.sensors for p in tag.plugins}
     streams = {
         (element_kind(tag, profile), topic)
@@ -177,10 +178,12 @@ def _plugin_detections(
 
 
 def _topic(plugin: PluginTag) -> str | None:
-    """The topic ``plugin`` publishes on (``topicName``, ``topic``), without a leading slash;
-    None when it names none."""
+    """The topic ``plugin`` publishes on (``topicName``, ``topic``) under the namespace it
+    names (``robotNamespace``, ``namespace``), without leading slashes; None when it names no
+    topic. A ``<sensor>``'s own ``<topic>`` element is not read."""
     topic = (plugin.param("topicName", "topic") or "").strip().lstrip("/")
-    return topic or None
+    space = (plugin.param("robotNamespace", "namespace") or "").strip().strip("/")
+    return (f"{space}/{topic}" if space else topic) if topic else None
 
 
 def _same_plugin(plugin: PluginTag) -> tuple[str, str, tuple[tuple[str, str], ...]]:

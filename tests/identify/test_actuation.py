@@ -264,6 +264,21 @@ def one_screw(*, water: bool, y: float = 0.0) -> RobotText:
     return robot
 
 
+@pytest.mark.parametrize("first", [0, 2])
+def test_overflowing_places_make_no_omni_base_whatever_the_order(first: int) -> None:
+    # A mount 1e308 out, three leaves 1e308 back (two at 0, one at infinity): no middle.
+    robot = RobotText("overflow")
+    robot.joint("mount_joint", "fixed", "base_link", "mount", '<origin xyz="1e308 0 0"/>')
+    places = [("-1e308", "1"), ("-1e308", "2"), ("1e308", "0")]
+    order = places[first:] + places[:first]
+    for index, (x, y) in enumerate(order):
+        place = f'<origin xyz="{x} {y} -0.1"/><axis xyz="1 0 0"/>'
+        robot.joint(f"j{index}", "continuous", "mount", f"l{index}", place)
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert result.body.wheels == ()
+
+
 def test_a_lone_spinner_below_a_hull_in_water_on_its_middle_line_is_its_screw() -> None:
     result = identify_urdf(one_screw(water=True).text())
     assert result.body is not None

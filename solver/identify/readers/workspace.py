@@ -268,15 +268,17 @@ def _stem(name: str) -> str | None:
 def _core(own: _Package, packages: list[_Package]) -> list[_Package]:
     """The description's package, then those named for the robot (by folder): for the stem of
     its own name (:func:`_stem`), else of a ``ROBOT_description`` package of the workspace
-    whose stem its name begins with (a description kept in ``jackal_control`` beside
-    ``jackal_description``)."""
-    stem = _stem(own.name) or next(
+    whose stem its name begins with, the longest such (a description kept in
+    ``jackal_control`` beside ``jackal_description``; ``abb_irb_control`` is
+    ``abb_irb_description``'s, not ``abb_description``'s)."""
+    stem = _stem(own.name) or max(
         (
             found
             for p in packages
             if (found := _stem(p.name)) is not None and own.name.startswith(found)
         ),
-        None,
+        key=lambda found: (len(found), found),
+        default=None,
     )
     if stem is None:
         return [own]

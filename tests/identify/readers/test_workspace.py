@@ -115,6 +115,17 @@ def test_a_description_kept_beside_the_robots_description_package_takes_in_the_r
     )
 
 
+def test_of_two_description_packages_beside_it_the_longest_name_names_the_robot(
+    tmp_path: Path,
+) -> None:
+    src = tmp_path / "src"
+    described = package(src / "m", "abb_irb_control")
+    package(src / "a", "abb_description")
+    package(src / "z", "abb_irb_description")
+    package(src / "b", "abb_yumi_bringup", {"launch/a.launch": "<node pkg='move_base'/>"})
+    assert read(described).packages == ("abb_irb_control", "abb_irb_description")
+
+
 def test_a_name_inside_a_longer_word_is_no_use(tmp_path: Path) -> None:
     src = tmp_path / "src"
     described = package(src, "arm")
