@@ -691,11 +691,16 @@ def _named_screws(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
 def _may_have_screws(tree: JointTree, roles: Mapping[str, Role]) -> bool:
     """No drive, track or flight plugin moves the body, and it has no control surface nor a
     wing (an aircraft's propellers)."""
-    if tree.labels("drive") or tree.labels("track") or tree.labels("flight"):
+    if _plugin_moved(tree):
         return False
     if any(role.role == "fin" for role in roles.values()):
         return False
     return not any("wing" in tree.parts_of(joint.child) for joint in tree.urdf.joints)
+
+
+def _plugin_moved(tree: JointTree) -> bool:
+    """A drive, track or flight plugin moves the body (its spinning leaves are no screws)."""
+    return any(tree.labels(kind) for kind in ("drive", "track", "flight"))
 
 
 def _unnamed_screws(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
@@ -737,7 +742,7 @@ def _lone_screw(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     and on its middle line: a single screw at the stern, whatever steers beside it (a rudder, a
     sail). Twin screws are :func:`_unnamed_screws`'; a wheel turns about an axle across the
     body, and a body no water plugin names may be an aircraft with one propeller."""
-    if not tree.labels("marine") or any(tree.labels(kind) for kind in ("drive", "track", "flight")):
+    if not tree.labels("marine") or _plugin_moved(tree):
         return []
     below, _ = _wheel_candidates(tree, roles)
     leaves = [joint for joints in below.values() for joint in joints]

@@ -86,13 +86,18 @@ def test_another_robots_package_is_not_read_however_much_it_holds(tmp_path: Path
     assert all(f.package != "drone_navigation" for f in found.files)
 
 
+def beside_two_navigations(src: Path, described: str) -> Path:
+    """The package ``described`` in ``src``, beside a Jackal's and a Husky's navigation
+    packages (each runs move_base, neither names ``described``)."""
+    for robot in ("jackal", "husky"):
+        package(src, f"{robot}_navigation", {"launch/amcl.launch": "<node pkg='move_base'/>"})
+    return package(src, described)
+
+
 def test_packages_named_for_the_robot_are_its_own_though_they_never_name_its_description(
     tmp_path: Path,
 ) -> None:
-    src = tmp_path / "src"
-    described = package(src, "jackal_description")
-    package(src, "jackal_navigation", {"launch/amcl.launch": "<node pkg='move_base'/>"})
-    package(src, "husky_navigation", {"launch/amcl.launch": "<node pkg='move_base'/>"})
+    described = beside_two_navigations(tmp_path / "src", "jackal_description")
     assert read(described).packages == ("jackal_description", "jackal_navigation")
 
 
@@ -103,9 +108,7 @@ def test_a_description_kept_beside_the_robots_description_package_takes_in_the_r
     # jackal_navigation is the robot's too. With no jackal_description, the name alone says
     # nothing of a robot (control packages are named ROBOT_control and ros_control alike).
     src = tmp_path / "src"
-    described = package(src, "jackal_control")
-    package(src, "jackal_navigation", {"launch/amcl.launch": "<node pkg='move_base'/>"})
-    package(src, "husky_navigation", {"launch/amcl.launch": "<node pkg='move_base'/>"})
+    described = beside_two_navigations(src, "jackal_control")
     assert read(described).packages == ("jackal_control",)
     package(src, "jackal_description")
     assert read(described).packages == (
