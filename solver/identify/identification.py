@@ -162,7 +162,7 @@ def content_key(
 
 
 def identify_urdf(
-    urdf_text: str | bytes,
+    urdf_text: str | bytes | Urdf,
     *,
     file: str = "<string>",
     robot: str | None = None,
@@ -176,7 +176,8 @@ def identify_urdf(
     warnings: Sequence[Fault] = (),
     packages: Workspace | None = None,
 ) -> Identification:
-    """Identify a robot from URDF text; :class:`~solver.errors.InputError` if unusable.
+    """Identify a robot from URDF text (or a description already parsed, read tolerantly);
+    :class:`~solver.errors.InputError` if unusable.
 
     ``description``: the robot's teleoperation description, whose values win; ``warnings``:
     flaws of supporting files read before (a description that could not be read);
@@ -184,7 +185,7 @@ def identify_urdf(
     the controls they ship (:mod:`solver.identify.shipped`)."""
     rules = rules if rules is not None else load_rules(default_rules_path())
     profile = profile if profile is not None else load_profile()
-    urdf = parse_urdf(urdf_text, file, strict=False)
+    urdf = urdf_text if isinstance(urdf_text, Urdf) else parse_urdf(urdf_text, file, strict=False)
     srdf, srdf_warnings = (None, ()) if srdf_text is None else _srdf(srdf_text, srdf_file, urdf)
     found_warnings = (*urdf.warnings, *srdf_warnings, *warnings)
     body = detect_body(urdf, profile)
@@ -373,9 +374,10 @@ def identify(
     if beside is not None and beside.is_file():
         teleop = beside
     declared, flaws = _description(teleop)
-    around, unused = _packages(file, package, workspace, look_around)
+    urdf = parse_urdf(text, file, strict=False)
+    around, unused = _packages(file, package, workspace, look_around, urdf.name)
     return identify_urdf(
-        text,
+        urdf,
         file=file,
         srdf_text=srdf_text,
         srdf_file=str(srdf) if srdf is not None else "<srdf>",
@@ -390,10 +392,14 @@ def identify(
 
 
 def _packages(
-    file: str, package: str | Path | None, workspace: str | Path | None, look_around: bool
+    file: str,
+    package: str | Path | None,
+    workspace: str | Path | None,
+    look_around: bool,
+    robot: str,
 ) -> tuple[Workspace | None, tuple[str, ...]]:
-    """The robot's packages around ``file`` (or in the ``package`` named), and a note for a
-    folder the caller named that is not used."""
+    """The packages of the ``robot`` (the name its URDF gives it) around ``file`` (or in the
+    ``package`` named), and a note for a folder the caller named that is not used."""
     from solver.identify.readers.workspace import description_package, read_workspace
 
     named = package is not None
@@ -403,7 +409,7 @@ def _packages(
         if workspace is None or not look_around:
             return None, ()
         return None, (f"workspace {workspace}: no package holds the description; none is read",)
-    around = read_workspace(package, workspace)
+    around = read_workspace(package, workspace, robot)
     if around is None and named:
         return None, (f"package {package}: no package.xml names a package there; none is read",)
     return around, ()

@@ -469,6 +469,19 @@ def test_packages_that_ship_no_navigation_leave_no_guess_of_it(tmp_path: Path) -
     assert guessed["Waypoint"].startswith("urdf: likely, not declared")
 
 
+def test_the_navigation_named_for_the_robot_its_urdf_names_is_read_with_its_bringup(
+    tmp_path: Path,
+) -> None:
+    # The URDF (<robot name="rover">) kept in rover_bringup; rover_navigation never names it.
+    src = tmp_path / "ws" / "src"
+    own = package(src, "rover_bringup", {"urdf/rover.urdf": rover_with_a_lidar().text()})
+    package(src, "rover_navigation", {"launch/nav.launch": "<node pkg='move_base'/>"})
+    package(src, "drone_navigation", {"launch/nav.launch": "<node pkg='move_base'/>"})
+    assert controls_of(own / "urdf" / "rover.urdf")["Waypoint"] == (
+        "package rover_navigation: rover_navigation/launch/nav.launch (move_base)"
+    )
+
+
 def test_a_package_can_be_named_for_a_description_kept_elsewhere(tmp_path: Path) -> None:
     path = described(tmp_path, quadrotor(), "<node pkg='teleop_twist_keyboard'/>")
     copy = tmp_path / "copter.urdf"

@@ -220,10 +220,13 @@ class _Budget:
             self.notes.append(why)
 
 
-def read_workspace(package: str | Path, root: str | Path | None = None) -> Workspace | None:
+def read_workspace(
+    package: str | Path, root: str | Path | None = None, robot: str | None = None
+) -> Workspace | None:
     """The robot's packages in the workspace around the description's ``package`` folder
-    (``root``: the workspace; default: :func:`workspace_of`). None when the package has no
-    readable ``package.xml`` (no package, no evidence)."""
+    (``root``: the workspace; default: :func:`workspace_of`; ``robot``: the name its URDF
+    gives the robot). None when the package has no readable ``package.xml`` (no package, no
+    evidence)."""
     folder = os.path.abspath(package)
     top = os.path.abspath(root) if root is not None else str(workspace_of(folder))
     budget = _Budget()
@@ -232,7 +235,7 @@ def read_workspace(package: str | Path, root: str | Path | None = None) -> Works
     if own is None:
         return None
     packages.update(_walk(top, budget, skip=folder, holding=_above(folder)))
-    core = _core(own, list(packages.values()))
+    core = _core(own, list(packages.values()), robot)
     ordered = _reading_order(core, list(packages.values()))
     names = {p.name for p in ordered}
     for each in ordered:
@@ -265,24 +268,41 @@ def _stem(name: str) -> str | None:
     return None
 
 
-def _core(own: _Package, packages: list[_Package]) -> list[_Package]:
+def _core(own: _Package, packages: list[_Package], robot: str | None = None) -> list[_Package]:
     """The description's package, then those named for the robot (by folder): for the stem of
     its own name (:func:`_stem`), else of a ``ROBOT_description`` package of the workspace
     whose stem its name begins with, the longest such (a description kept in
     ``jackal_control`` beside ``jackal_description``; ``abb_irb_control`` is
-    ``abb_irb_description``'s, not ``abb_description``'s)."""
-    stem = _stem(own.name) or max(
-        (
-            found
-            for p in packages
-            if (found := _stem(p.name)) is not None and own.name.startswith(found)
-        ),
-        key=lambda found: (len(found), found),
-        default=None,
+    ``abb_irb_description``'s, not ``abb_description``'s), else of the ``robot`` its URDF
+    names when its own name begins with it (a description kept in ``deliverybot_bringup``
+    for ``<robot name="deliverybot">``, beside ``deliverybot_navigation``)."""
+    stem = (
+        _stem(own.name)
+        or max(
+            (
+                found
+                for p in packages
+                if (found := _stem(p.name)) is not None and own.name.startswith(found)
+            ),
+            key=lambda found: (len(found), found),
+            default=None,
+        )
+        or _named_stem(own.name, robot)
     )
     if stem is None:
         return [own]
     return [own, *_by_folder([p for p in packages if p is not own and p.name.startswith(stem)])]
+
+
+def _named_stem(name: str, robot: str | None) -> str | None:
+    """``deliverybot_`` for the package ``deliverybot_bringup`` of the robot its URDF names
+    ``deliverybot``: the package is named for the robot (a name of no robot in particular,
+    ``robot`` or ``my_robot``, says nothing)."""
+    if robot is None:
+        return None
+    stem = f"{robot.lower()}_"
+    named = name.startswith(stem) and len(name) > len(stem)
+    return stem if named and stem not in GENERIC_STEMS else None
 
 
 def _reading_order(core: list[_Package], packages: list[_Package]) -> list[_Package]:

@@ -118,6 +118,28 @@ def test_a_description_kept_beside_the_robots_description_package_takes_in_the_r
     )
 
 
+def test_a_description_in_a_package_named_for_the_robot_its_urdf_names_takes_in_its_packages(
+    tmp_path: Path,
+) -> None:
+    # No jackal_description: the URDF in jackal_bringup names the robot ``jackal``, and the
+    # bringup's name begins with it; a URDF naming another robot, or a name of no robot in
+    # particular, takes in nothing more.
+    src = tmp_path / "src"
+    described = beside_two_navigations(src, "jackal_bringup")
+    found = read_workspace(described, robot="Jackal")
+    assert found is not None
+    assert found.packages == ("jackal_bringup", "jackal_navigation")
+    for robot in (None, "husky", "jackal_bringup"):
+        found = read_workspace(described, robot=robot)
+        assert found is not None
+        assert found.packages == ("jackal_bringup",)
+    generic = beside_two_navigations(tmp_path / "other", "robot_bringup")
+    package(tmp_path / "other", "robot_navigation", {"launch/a.launch": "<node pkg='move_base'/>"})
+    found = read_workspace(generic, robot="robot")
+    assert found is not None
+    assert found.packages == ("robot_bringup",)
+
+
 def test_of_two_description_packages_beside_it_the_longest_name_names_the_robot(
     tmp_path: Path,
 ) -> None:
