@@ -285,14 +285,18 @@ def _hangs_freely(tree: JointTree, leaf: Joint, known: dict[bool, dict[str, str 
     ros2_control) but about an upright axis (steering): upright in its parent's frame, or as
     the body rests when ``leaf`` turns about a level axle as the body rests (a rover's steering
     joint on a deployment link whose frame is turned; above a leaf upright at rest too, a
-    turned-frame SCARA's tool, it is no steering). ``known`` caches the walks by that axle."""
+    turned-frame SCARA's tool, it is no steering). Above a leaf upright at rest, a joint
+    upright only in its parent's frame, level as the body rests, is no steering either (an
+    arm drawn with every joint about its parent's z axis: its wrist's last joint is no swivel
+    of the base). ``known`` caches the walks by that axle."""
     driven = tree.urdf.controlled_joints
     rolls = _axle(tree.poses.axis(leaf))
 
     def lifts(joint: Joint) -> bool:
-        if not (joint.movable and joint.name in driven) or _upright(local_axis(joint)):
+        if not (joint.movable and joint.name in driven):
             return False
-        return not (rolls and _upright(tree.poses.axis(joint)))
+        here, at_rest = _upright(local_axis(joint)), _upright(tree.poses.axis(joint))
+        return not (here or at_rest) if rolls else not (here and at_rest)
 
     return nearest_above(tree.urdf, leaf.parent, known.setdefault(rolls, {}), lifts) is None
 

@@ -465,6 +465,22 @@ def test_an_arms_last_driven_swivel_on_a_steered_base_stays_the_arms() -> None:
     assert identify_urdf(robot.text()).structure == "Mobile Manipulator"
 
 
+def test_an_arm_drawn_about_its_parents_z_axes_keeps_its_last_swivel_on_a_steered_base() -> None:
+    # Each joint turns about its parent's z axis, each frame turned a quarter about x: upright
+    # in its parent's frame, level or upright as the arm rests. The wrist's last joint is
+    # upright at rest, the one below it level: it is lifted, no swivel of the base.
+    robot = ackermann_car(virtual=False)
+    link = robot.root
+    for i in range(5):
+        link = builders.placed(
+            robot, f"a{i}", "revolute", link, f"a{i}_link",
+            xyz="0 0 0.1", rpy="-1.5707963267949 0 0", axis="0 -1 0",
+        )  # fmt: skip
+        robot.add(builders.transmission(f"a{i}"))
+    assert "a4" not in with_role(roles_of(robot), "steering")
+    assert identify_urdf(robot.text()).structure == "Mobile Manipulator"
+
+
 def test_a_driven_swivel_on_a_base_with_no_steering_is_not_read_as_steering() -> None:
     robot = builders.ugv()
     robot.joint(
