@@ -216,6 +216,9 @@ def test_an_arm_moved_by_inverse_kinematics_to_a_target_is_sent_end_effector_goa
     script = "from ikpy.chain import Chain\nangles = chain.inverse_kinematics(target)"
     assert list(shipped("Manipulator", script)) == ["End Effector"]
     assert list(shipped("Manipulator", "q = solve_ik(x, y, z)")) == ["End Effector"]
+    # Spelled as other languages do (Indonesian ``invers``, German ``Kinematik``).
+    for spelled in ("rospy.init_node('invers_kinematics_gui')", "inverseKinematik(x)"):
+        assert list(shipped("Manipulator", spelled)) == ["End Effector"]
     # A walker's inverse kinematics places its feet: no end effector of its own.
     assert shipped("Humanoid", script) == {}
     assert shipped("Quadruped", "legs = inverse_kinematics(foot)") == {}
