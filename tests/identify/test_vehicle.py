@@ -554,6 +554,25 @@ def test_a_hull_displacing_three_times_its_weight_of_water_floats_at_the_surface
     )
 
 
+def test_a_hulls_reserve_that_the_arm_it_carries_takes_up_floats_nothing() -> None:
+    # 1.167 m3 of sea water (1,200 kg) under a 1,000 kg hull: 1.2 times its weight. An arm of
+    # 190 kg that displaces nothing trims the whole to neutral: it dives; one of 10 kg does not.
+    def with_arm(kg: str) -> str:
+        text = hull_with_volume("1.167", "1000")
+        inertia = '<inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/>'
+        arm = (
+            '<joint name="shoulder" type="revolute"><parent link="hull"/><child link="arm"/>'
+            '<axis xyz="0 1 0"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>'
+            f'<link name="arm"><inertial><mass value="{kg}"/>{inertia}</inertial></link>'
+        )
+        return text.replace("</robot>", arm + "</robot>")
+
+    assert identify_urdf(with_arm("10")).structure == "Surface Vessel"
+    result = identify_urdf(with_arm("190"))
+    assert result.structure == "Underwater Vehicle"
+    assert not any("floats" in line for line in result.evidence)
+
+
 @pytest.mark.parametrize(
     ("volume", "mass", "neutral"),
     [
