@@ -44,6 +44,8 @@ __all__ = ["MOTOR", "joint_roles", "with_role"]
 _Z_AXIS = 2
 # How far from level an axle may lean (the z part of its unit axis).
 _LEVEL = 0.2
+# A rocker's wheels lie ahead of its pivot and behind it, each more than this (m) across its axle.
+_STRADDLE = 0.01
 # Twin screws sit apart across their axes; along them, at most this share of that (wheels on
 # one axle sit apart along it).
 _SCREWS_ALONG = 0.25
@@ -280,7 +282,12 @@ def _upright(axis: tuple[float, float, float]) -> bool:
     return abs(axis[_Z_AXIS]) >= 1 - _LEVEL
 
 
-def _hangs_freely(tree: JointTree, leaf: Joint, known: dict[bool, dict[str, str | None]]) -> bool:
+def _hangs_freely(
+    tree: JointTree,
+    leaf: Joint,
+    known: dict[bool, dict[str, str | None]],
+    rockers: frozenset[str] = frozenset(),
+) -> bool:
     """No joint above ``leaf`` (a wheel, a swivel) up to the root is driven (a transmission or
     ros2_control) but about an upright axis (steering): upright in its parent's frame, or as
     the body rests when ``leaf`` turns about a level axle as the body rests (a rover's steering
@@ -288,9 +295,22 @@ def _hangs_freely(tree: JointTree, leaf: Joint, known: dict[bool, dict[str, str 
     turned-frame SCARA's tool, it is no steering). Above a leaf upright at rest, a joint
     upright only in its parent's frame, level as the body rests, is no steering either (an
     arm drawn with every joint about its parent's z axis: its wrist's last joint is no swivel
-    of the base). ``known`` caches the walks by that axle."""
-    driven = tree.urdf.controlled_joints
+    of the base). A driven rocker (``rockers``, :func:`_rockers`) lifts nothing: the walk goes
+    on above it. ``known`` caches the walks by that axle."""
     rolls = _axle(tree.poses.axis(leaf))
+    lifter = _lifter(tree, leaf.parent, rolls, known)
+    while lifter is not None and lifter in rockers:
+        rocker = tree.urdf.joint(lifter)
+        lifter = None if rocker is None else _lifter(tree, rocker.parent, rolls, known)
+    return lifter is None
+
+
+def _lifter(
+    tree: JointTree, link: str, rolls: bool, known: dict[bool, dict[str, str | None]]
+) -> str | None:
+    """The nearest driven joint above ``link`` that is no steering (:func:`_hangs_freely`)
+    for a leaf that turns about a level axle at rest (``rolls``) or not."""
+    driven = tree.urdf.controlled_joints
 
     def lifts(joint: Joint) -> bool:
         if not (joint.movable and joint.name in driven):
@@ -298,7 +318,38 @@ def _hangs_freely(tree: JointTree, leaf: Joint, known: dict[bool, dict[str, str 
         here, at_rest = _upright(local_axis(joint)), _upright(tree.poses.axis(joint))
         return not (here or at_rest) if rolls else not (here and at_rest)
 
-    return nearest_above(tree.urdf, leaf.parent, known.setdefault(rolls, {}), lifts) is None
+    return nearest_above(tree.urdf, link, known.setdefault(rolls, {}), lifts)
+
+
+def _rockers(
+    tree: JointTree, leaves: list[Joint], known: dict[bool, dict[str, str | None]]
+) -> frozenset[str]:
+    """Driven joints about a level axle, each the nearest driven joint above two or more of
+    ``leaves`` (wheels to be), some ahead of its pivot and some behind as the body rests: a
+    rover's rockers, whose suspension a simulator drives. A rocker balances what it carries on
+    the ground and lifts none of it (a flipper's sprocket and idler lie on one side of its
+    pivot, a wheel-legged robot's leg carries one wheel)."""
+    carried: dict[str, list[Joint]] = {}
+    for leaf in leaves:
+        lifter = _lifter(tree, leaf.parent, _axle(tree.poses.axis(leaf)), known)
+        if lifter is not None:
+            carried.setdefault(lifter, []).append(leaf)
+    return frozenset(name for name, below in carried.items() if _straddles(tree, name, below))
+
+
+def _straddles(tree: JointTree, name: str, leaves: list[Joint]) -> bool:
+    """The joint ``name`` turns about a level axle and ``leaves`` lie both ahead of its pivot
+    and behind it (more than :data:`_STRADDLE` each way, across the axle, as the body rests)."""
+    joint = tree.urdf.joint(name)
+    if joint is None or len(leaves) < 2:
+        return False
+    axis = tree.poses.axis(joint)
+    if not _axle(axis):
+        return False
+    ahead = (axis[1], -axis[0], 0.0)  # level, across the axle
+    pivot = tree.poses.place(joint.child)
+    reach = [dot(minus(tree.poses.place(leaf.child), pivot), ahead) for leaf in leaves]
+    return min(reach) < -_STRADDLE and max(reach) > _STRADDLE
 
 
 def _few_endless_above(tree: JointTree, leaf: Joint, known: dict[str, str | None]) -> bool:
@@ -412,14 +463,18 @@ def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, str
     found, apart = _told_on_their_link(tree, below)
     # One on a caster's swivel or a steering knuckle, two on a rocker: sides told across the
     # whole body instead, for those that hang from the body through no driven joint but a
-    # steering one (a driven flipper's sprocket is the flipper's), and few that turn for ever
+    # steering one or a rocker (a driven flipper's sprocket is the flipper's), and few that
+    # turn for ever
     # (:func:`_few_endless_above`: the last joints of two arms drawn without limits are no
     # wheels).
     # By whether a leaf's axle is level at rest: link -> the nearest driven joint above it.
     known: dict[bool, dict[str, str | None]] = {}
     endless: dict[str, str | None] = {}  # link -> the nearest endless joint above it
+    rockers = _rockers(tree, apart, known)
     apart = [
-        j for j in apart if _hangs_freely(tree, j, known) and _few_endless_above(tree, j, endless)
+        j
+        for j in apart
+        if _hangs_freely(tree, j, known, rockers) and _few_endless_above(tree, j, endless)
     ]
     apart = _wrists_dropped(tree, apart)
     side_by_side = len(apart) >= 2 and _sides({tree.poses.place(j.child)[1] for j in apart})

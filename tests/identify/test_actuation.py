@@ -1057,6 +1057,41 @@ def test_unnamed_wheels_on_driven_steering_knuckles_are_wheels_and_a_flippers_ar
     assert roles["fa"] not in ("wheel", "caster")
 
 
+def unnamed_rocker_rover(front: str = "0.35", back: str = "-0.35") -> RobotText:
+    """A rover written blank: on each side a driven joint about a level axle (a rocker, its
+    suspension driven in a simulator) carrying two driven steering swivels, ``front`` and
+    ``back`` of its pivot (m), each with a driven unnamed wheel below it."""
+    rover = RobotText("rover")
+    for side, y in (("a", 0.3), ("b", -0.3)):
+        rocker = builders.placed(
+            rover, f"r{side}", "revolute", rover.root, f"r{side}_l", xyz=f"0 {y} -0.1",
+            axis="0 1 0",
+        )  # fmt: skip
+        rover.add(builders.transmission(f"r{side}"))
+        for end, x in (("f", front), ("h", back)):
+            swivel = builders.placed(
+                rover, f"s{side}{end}", "revolute", rocker, f"s{side}{end}_l", xyz=f"{x} 0 0"
+            )
+            rover.add(builders.transmission(f"s{side}{end}"))
+            builders.placed(
+                rover, f"w{side}{end}", "continuous", swivel, f"w{side}{end}_l",
+                xyz="0 0 -0.25", axis="0 1 0",
+            )  # fmt: skip
+            rover.add(builders.transmission(f"w{side}{end}", "VelocityJointInterface"))
+    return rover
+
+
+def test_a_driven_rocker_lifts_none_of_the_wheels_it_carries_ahead_of_it_and_behind_it() -> None:
+    result = identify_urdf(unnamed_rocker_rover().text())
+    assert result.structure == "UGV"
+    assert result.body is not None
+    assert sorted(result.body.wheels) == ["waf", "wah", "wbf", "wbh"]
+    # Both wheels ahead of the driven joint's pivot: a flipper's, no wheels of the body.
+    flippers = identify_urdf(unnamed_rocker_rover(front="0.35", back="0.05").text())
+    assert flippers.body is not None
+    assert not set(flippers.body.wheels) & {"waf", "wah", "wbf", "wbh"}
+
+
 def test_a_steering_joint_whose_link_is_named_like_a_finger_still_steers_its_wheel() -> None:
     # A rover model names each wheel-walking joint's link wrist_* and each driven steering
     # knuckle's link finger_*: a joint named for steering, about an upright axis, carrying
