@@ -1337,15 +1337,15 @@ def test_corners_under_swivels_named_for_nothing_are_a_quadrupeds_legs() -> None
     assert identify_urdf(four_wheel_steered(steer="hip").text()).structure == "Quadruped"
 
 
-def base_on_corner_leaves(word: str = "") -> RobotText:
+def base_on_corner_leaves(word: str = "", joint: str = "_joint") -> RobotText:
     """A CAD export's base: four endless leaves named only for the corner they sit at
     (``rear_left_joint`` turning ``rear_left_link``), below the body about axles across it;
-    ``word`` added to each name (``leg``) says what they are."""
+    ``word`` added to each name (``leg``) says what they are; ``joint`` ends the joints'."""
     robot = RobotText("export", root="base_link")
     for corner, (x, y) in CORNERS.items():
         builders.placed(
             robot,
-            f"{corner}{word}_joint",
+            f"{corner}{word}{joint}",
             "continuous",
             "base_link",
             f"{corner}{word}_link",
@@ -1355,10 +1355,12 @@ def base_on_corner_leaves(word: str = "") -> RobotText:
     return robot
 
 
-def test_endless_leaves_named_only_for_their_corner_are_wheels() -> None:
-    roles = roles_of(base_on_corner_leaves())
-    assert with_role(roles, "wheel") == [f"{c}_joint" for c in CORNERS]
-    assert identify_urdf(base_on_corner_leaves().text()).structure == "UGV"
+@pytest.mark.parametrize("joint", ["_joint", "_rev", "_continuous"])
+def test_endless_leaves_named_only_for_their_corner_are_wheels(joint: str) -> None:
+    # The joint's name ends in a word for a joint or for its type (``right_front_rev``).
+    roles = roles_of(base_on_corner_leaves(joint=joint))
+    assert with_role(roles, "wheel") == [f"{c}{joint}" for c in CORNERS]
+    assert identify_urdf(base_on_corner_leaves(joint=joint).text()).structure == "UGV"
 
 
 def test_endless_leaves_named_for_a_leg_beside_their_corner_are_no_wheels_by_place() -> None:
