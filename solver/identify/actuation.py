@@ -46,6 +46,8 @@ _Z_AXIS = 2
 _LEVEL = 0.2
 # A rocker's wheels lie ahead of its pivot and behind it, each more than this (m) across its axle.
 _STRADDLE = 0.01
+# Rockers are found this many levels up from the wheels at most (a rocker over a bogie).
+_ROCKER_LEVELS = 3
 # Twin screws sit apart across their axes; along them, at most this share of that (wheels on
 # one axle sit apart along it).
 _SCREWS_ALONG = 0.25
@@ -292,28 +294,29 @@ def _hangs_freely(
     ros2_control) but about an upright axis (steering): upright in its parent's frame, or as
     the body rests when ``leaf`` turns about a level axle as the body rests (a rover's steering
     joint on a deployment link whose frame is turned; above a leaf upright at rest too, a
-    turned-frame SCARA's tool, it is no steering). Above a leaf upright at rest, a joint
-    upright only in its parent's frame, level as the body rests, is no steering either (an
-    arm drawn with every joint about its parent's z axis: its wrist's last joint is no swivel
-    of the base). A driven rocker (``rockers``, :func:`_rockers`) lifts nothing: the walk goes
-    on above it. ``known`` caches the walks by that axle."""
+    turned-frame SCARA's tool, it is no steering). Above a leaf not level at rest, a joint
+    upright in its parent's frame but not as the body rests is no steering either (an arm
+    drawn with every joint about its parent's z axis: its wrist's last joint is no swivel of
+    the base). A driven rocker (``rockers``, :func:`_rockers`) lifts nothing. ``known`` caches
+    the walks by that axle, for these ``rockers``."""
     rolls = _axle(tree.poses.axis(leaf))
-    lifter = _lifter(tree, leaf.parent, rolls, known)
-    while lifter is not None and lifter in rockers:
-        rocker = tree.urdf.joint(lifter)
-        lifter = None if rocker is None else _lifter(tree, rocker.parent, rolls, known)
-    return lifter is None
+    return _lifter(tree, leaf.parent, rolls, known, rockers) is None
 
 
 def _lifter(
-    tree: JointTree, link: str, rolls: bool, known: dict[bool, dict[str, str | None]]
+    tree: JointTree,
+    link: str,
+    rolls: bool,
+    known: dict[bool, dict[str, str | None]],
+    rockers: frozenset[str] = frozenset(),
 ) -> str | None:
-    """The nearest driven joint above ``link`` that is no steering (:func:`_hangs_freely`)
-    for a leaf that turns about a level axle at rest (``rolls``) or not."""
+    """The nearest driven joint above ``link`` that is no steering nor one of the ``rockers``
+    (:func:`_hangs_freely`), for a leaf that turns about a level axle at rest (``rolls``) or
+    not."""
     driven = tree.urdf.controlled_joints
 
     def lifts(joint: Joint) -> bool:
-        if not (joint.movable and joint.name in driven):
+        if not (joint.movable and joint.name in driven) or joint.name in rockers:
             return False
         here, at_rest = _upright(local_axis(joint)), _upright(tree.poses.axis(joint))
         return not (here or at_rest) if rolls else not (here and at_rest)
@@ -321,25 +324,34 @@ def _lifter(
     return nearest_above(tree.urdf, link, known.setdefault(rolls, {}), lifts)
 
 
-def _rockers(
-    tree: JointTree, leaves: list[Joint], known: dict[bool, dict[str, str | None]]
-) -> frozenset[str]:
+def _rockers(tree: JointTree, leaves: list[Joint]) -> frozenset[str]:
     """Driven joints about a level axle, each the nearest driven joint above two or more of
     ``leaves`` (wheels to be), some ahead of its pivot and some behind as the body rests: a
     rover's rockers, whose suspension a simulator drives. A rocker balances what it carries on
     the ground and lifts none of it (a flipper's sprocket and idler lie on one side of its
-    pivot, a wheel-legged robot's leg carries one wheel)."""
-    carried: dict[str, list[Joint]] = {}
-    for leaf in leaves:
-        lifter = _lifter(tree, leaf.parent, _axle(tree.poses.axis(leaf)), known)
-        if lifter is not None:
-            carried.setdefault(lifter, []).append(leaf)
-    return frozenset(name for name, below in carried.items() if _straddles(tree, name, below))
+    pivot, a wheel-legged robot's leg carries one wheel). Found from the wheels up, passing
+    over the rockers found, at most :data:`_ROCKER_LEVELS` deep (a rocker carrying a bogie
+    that is one, and a wheel of its own)."""
+    found: frozenset[str] = frozenset()
+    for _ in range(_ROCKER_LEVELS):
+        known: dict[bool, dict[str, str | None]] = {}  # for these rockers
+        carried: dict[str, list[Joint]] = {}
+        for leaf in leaves:
+            rolls = _axle(tree.poses.axis(leaf))
+            lifter = _lifter(tree, leaf.parent, rolls, known, found)
+            if lifter is not None:
+                carried.setdefault(lifter, []).append(leaf)
+        more = {name for name, below in carried.items() if _straddles(tree, name, below)}
+        if not more:
+            break
+        found |= more
+    return found
 
 
 def _straddles(tree: JointTree, name: str, leaves: list[Joint]) -> bool:
     """The joint ``name`` turns about a level axle and ``leaves`` lie both ahead of its pivot
-    and behind it (more than :data:`_STRADDLE` each way, across the axle, as the body rests)."""
+    and behind it (more than :data:`_STRADDLE` each way, across the axle, as the body rests; a
+    place that overflows is neither)."""
     joint = tree.urdf.joint(name)
     if joint is None or len(leaves) < 2:
         return False
@@ -349,7 +361,7 @@ def _straddles(tree: JointTree, name: str, leaves: list[Joint]) -> bool:
     ahead = (axis[1], -axis[0], 0.0)  # level, across the axle
     pivot = tree.poses.place(joint.child)
     reach = [dot(minus(tree.poses.place(leaf.child), pivot), ahead) for leaf in leaves]
-    return min(reach) < -_STRADDLE and max(reach) > _STRADDLE
+    return any(r < -_STRADDLE for r in reach) and any(r > _STRADDLE for r in reach)
 
 
 def _few_endless_above(tree: JointTree, leaf: Joint, known: dict[str, str | None]) -> bool:
@@ -470,7 +482,7 @@ def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, str
     # By whether a leaf's axle is level at rest: link -> the nearest driven joint above it.
     known: dict[bool, dict[str, str | None]] = {}
     endless: dict[str, str | None] = {}  # link -> the nearest endless joint above it
-    rockers = _rockers(tree, apart, known)
+    rockers = _rockers(tree, apart)
     apart = [
         j
         for j in apart

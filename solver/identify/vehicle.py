@@ -35,7 +35,7 @@ from collections.abc import Collection, Sequence
 from solver.identify.actuation import MOTOR, with_role
 from solver.identify.limbs import Limb, moved_by
 from solver.identify.pose import Vector, parallel
-from solver.identify.readers.urdf import Cylinder, Joint, Link
+from solver.identify.readers.urdf import Cylinder, Joint
 from solver.identify.roles import Role
 from solver.identify.sensors import element_kind, plugin_kind
 from solver.identify.tree import JointTree
@@ -369,23 +369,27 @@ def _floating_hull(tree: JointTree) -> list[str]:
     """The body (its root link, or a link fixed to it) declares a buoyancy compensation with a
     hull's reserve (``_HULL_RESERVE`` or more): buoyancy over weight, it floats (a part of it, a
     thruster, may sink: not the body), when the whole body keeps that reserve
-    (:func:`_afloat`). A body trimmed just above neutral is a submersible's."""
+    (:func:`_afloat`; a hull of no mass written cannot be weighed against the rest: its own
+    reserve says it). A body trimmed just above neutral is a submersible's."""
     known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
+    afloat: bool | None = None  # the whole body's, weighed once
     for link in tree.urdf.links:
         floats = link.buoyancy is not None and link.buoyancy >= _HULL_RESERVE
-        if floats and moved_by(tree.urdf, link.name, known) is None and _afloat(tree, link):
-            return [f"{link.name} buoyancy {link.buoyancy:g} x weight (floats)"]
+        if floats and moved_by(tree.urdf, link.name, known) is None:
+            if link.mass is not None:
+                afloat = _afloat(tree) if afloat is None else afloat
+                floats = afloat
+            if floats:
+                return [f"{link.name} buoyancy {link.buoyancy:g} x weight (floats)"]
     return []
 
 
-def _afloat(tree: JointTree, hull: Link) -> bool:
-    """The whole body has the ``hull``'s reserve too: its buoyancy over its whole weight, each
-    link's buoyancy over weight by its mass (a link that writes none displaces nothing), is
-    ``_HULL_RESERVE`` or more. A hull's reserve that the arm it carries takes up (a
-    submersible trimmed to neutral with its arm) floats nothing. A hull of no mass written
-    cannot be weighed against the rest: its own reserve says it."""
-    if hull.mass is None:
-        return True
+def _afloat(tree: JointTree) -> bool:
+    """The whole body has a hull's reserve: its buoyancy over its whole weight, each link's
+    buoyancy over weight by its mass (a link that writes none displaces nothing; one a
+    hydrodynamics plugin makes neutrally buoyant, its weight), is ``_HULL_RESERVE`` or more.
+    A hull's reserve that the arm it carries takes up (a submersible trimmed to neutral with
+    its arm) floats nothing."""
     weight = lift = 0.0
     for link in tree.urdf.links:
         if link.mass is not None:

@@ -1092,6 +1092,35 @@ def test_a_driven_rocker_lifts_none_of_the_wheels_it_carries_ahead_of_it_and_beh
     assert not set(flippers.body.wheels) & {"waf", "wah", "wbf", "wbh"}
 
 
+def test_a_driven_rocker_over_a_driven_bogie_lifts_none_of_their_six_wheels() -> None:
+    # A rocker-bogie written blank, both driven: the rocker carries a front wheel of its own
+    # and the bogie, whose two wheels straddle its pivot; with the bogie passed over, the
+    # rocker's three wheels straddle its own.
+    rover = RobotText("rover")
+    for side, y in (("a", 0.3), ("b", -0.3)):
+        rocker = builders.placed(
+            rover, f"r{side}", "revolute", rover.root, f"r{side}_l", xyz=f"0 {y} -0.1",
+            axis="0 1 0",
+        )  # fmt: skip
+        bogie = builders.placed(
+            rover, f"g{side}", "revolute", rocker, f"g{side}_l", xyz="-0.2 0 -0.05",
+            axis="0 1 0",
+        )  # fmt: skip
+        rover.add(builders.transmission(f"r{side}") + builders.transmission(f"g{side}"))
+        for name, parent, x in ((f"w{side}f", rocker, 0.35), (f"w{side}m", bogie, 0.15)):
+            builders.placed(
+                rover, name, "continuous", parent, f"{name}_l", xyz=f"{x} 0 -0.2", axis="0 1 0"
+            )
+        builders.placed(
+            rover, f"w{side}h", "continuous", bogie, f"w{side}h_l", xyz="-0.15 0 -0.2",
+            axis="0 1 0",
+        )  # fmt: skip
+    result = identify_urdf(rover.text())
+    assert result.structure == "UGV"
+    assert result.body is not None
+    assert len(result.body.wheels) == 6
+
+
 def test_a_steering_joint_whose_link_is_named_like_a_finger_still_steers_its_wheel() -> None:
     # A rover model names each wheel-walking joint's link wrist_* and each driven steering
     # knuckle's link finger_*: a joint named for steering, about an upright axis, carrying
@@ -1355,7 +1384,7 @@ def base_on_corner_leaves(word: str = "", joint: str = "_joint") -> RobotText:
     return robot
 
 
-@pytest.mark.parametrize("joint", ["_joint", "_rev", "_continuous"])
+@pytest.mark.parametrize("joint", ["_joint", "_rev", "_revolute", "_cont", "_continuous"])
 def test_endless_leaves_named_only_for_their_corner_are_wheels(joint: str) -> None:
     # The joint's name ends in a word for a joint or for its type (``right_front_rev``).
     roles = roles_of(base_on_corner_leaves(joint=joint))

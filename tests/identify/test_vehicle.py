@@ -571,6 +571,11 @@ def test_a_hulls_reserve_that_the_arm_it_carries_takes_up_floats_nothing() -> No
     result = identify_urdf(with_arm("190"))
     assert result.structure == "Underwater Vehicle"
     assert not any("floats" in line for line in result.evidence)
+    # The same arm that the hydrodynamics plugin makes neutrally buoyant weighs nothing.
+    neutral = "<link name='arm'><neutrally_buoyant>1</neutrally_buoyant></link></plugin>"
+    assert identify_urdf(with_arm("190").replace("</plugin>", neutral, 1)).structure == (
+        "Surface Vessel"
+    )
 
 
 @pytest.mark.parametrize(

@@ -486,10 +486,11 @@ class _Builder:
         )
 
     def _links(
-        self, elements: list[etree._Element], displaced: dict[str, float]
+        self, elements: list[etree._Element], displaced: dict[str, float | None]
     ) -> dict[str, Link]:
         """The links; ``displaced``: the mass of water each displaces, where a plugin says
-        (:func:`_displacements`), for those whose file gives no buoyancy of its own."""
+        (:func:`_displacements`; None: as much as it weighs), for those whose file gives no
+        buoyancy of its own."""
         found: dict[str, Link] = {}
         for element in elements:
             name = (element.get("name") or "").strip()
@@ -505,7 +506,8 @@ class _Builder:
                 mass = _mass(element)
                 buoyancy = _compensation(element)
                 if buoyancy is None and mass is not None and name in displaced:
-                    buoyancy = displaced[name] / mass
+                    water = displaced[name]
+                    buoyancy = 1.0 if water is None else water / mass
                 found[name] = Link(
                     name,
                     line_of(element),
@@ -1280,13 +1282,14 @@ def _vector(
     return (x, y, z)
 
 
-def _displacements(root: etree._Element) -> dict[str, float]:
+def _displacements(root: etree._Element) -> dict[str, float | None]:
     """The mass of water each link displaces, as a hydrodynamics plugin of the UUV simulator's
     kind lists it (a ``<link name>`` entry with its ``<volume>``, in the plugin's
     ``<fluid_density>``, 1028 kg/m3 of sea water when it gives none): its buoyancy over its
-    weight is that over its mass. Not a link the entry makes neutrally buoyant (the plugin
-    then sets the volume to balance the weight, whatever is written)."""
-    found: dict[str, float] = {}
+    weight is that over its mass. None for a link the entry makes neutrally buoyant (the
+    plugin then sets the volume to balance the weight, whatever is written: its buoyancy is
+    its weight)."""
+    found: dict[str, float | None] = {}
     for plugin in root.iterfind("gazebo/plugin"):
         density = _float(plugin.findtext("fluid_density"))
         density = density if density is not None and density > 0 else _SEA_WATER
@@ -1297,7 +1300,9 @@ def _displacements(root: etree._Element) -> dict[str, float]:
             volume = _float(entry.findtext("volume"))
             neutral = (entry.findtext("neutrally_buoyant") or "").strip().lower()
             water = volume * density if volume is not None and volume > 0 else math.nan
-            if name and math.isfinite(water) and neutral not in ("1", "true"):
+            if name and neutral in ("1", "true"):
+                found.setdefault(name, None)
+            elif name and math.isfinite(water):
                 found.setdefault(name, water)
     return found
 

@@ -94,6 +94,10 @@ INSTALL = "install"
 _PREFIX_FOLDERS = frozenset({"lib", "include", "bin"})
 # Stems too generic to name a robot (``robot_description`` beside ``robot_localization``).
 GENERIC_STEMS = frozenset({"robot_", "my_robot_", "ros_", "ros2_", "test_", "my_"})
+# Names a URDF gives a robot of no robot in particular: no stem of packages named for it.
+GENERIC_ROBOT_STEMS = frozenset(
+    {"test_robot_", "mobile_robot_", "urdf_", "model_", "base_", "arm_", "bot_"}
+)
 # A name written by more than this share of the workspace's packages (and by more than
 # MIN_COMMON of them) is a word of every launch file, not a use.
 COMMON_SHARE = 0.5
@@ -270,39 +274,36 @@ def _stem(name: str) -> str | None:
 
 def _core(own: _Package, packages: list[_Package], robot: str | None = None) -> list[_Package]:
     """The description's package, then those named for the robot (by folder): for the stem of
-    its own name (:func:`_stem`), else of a ``ROBOT_description`` package of the workspace
-    whose stem its name begins with, the longest such (a description kept in
-    ``jackal_control`` beside ``jackal_description``; ``abb_irb_control`` is
-    ``abb_irb_description``'s, not ``abb_description``'s), else of the ``robot`` its URDF
-    names when its own name begins with it (a description kept in ``deliverybot_bringup``
-    for ``<robot name="deliverybot">``, beside ``deliverybot_navigation``)."""
-    stem = (
-        _stem(own.name)
-        or max(
-            (
-                found
-                for p in packages
-                if (found := _stem(p.name)) is not None and own.name.startswith(found)
-            ),
-            key=lambda found: (len(found), found),
-            default=None,
-        )
-        or _named_stem(own.name, robot)
+    its own name (:func:`_stem`), else the longest stem its name begins with of a
+    ``ROBOT_description`` package of the workspace (a description kept in ``jackal_control``
+    beside ``jackal_description``; ``abb_irb_control`` is ``abb_irb_description``'s, not
+    ``abb_description``'s) or of the ``robot`` its URDF names (a description kept in
+    ``deliverybot_bringup`` for ``<robot name="deliverybot">``, beside
+    ``deliverybot_navigation``)."""
+    stems = [_named_stem(robot), *(_stem(p.name) for p in packages)]
+    stem = _stem(own.name) or max(
+        (found for found in stems if found is not None and _begins(own.name, found)),
+        key=lambda found: (len(found), found),
+        default=None,
     )
     if stem is None:
         return [own]
-    return [own, *_by_folder([p for p in packages if p is not own and p.name.startswith(stem)])]
+    return [own, *_by_folder([p for p in packages if p is not own and _begins(p.name, stem)])]
 
 
-def _named_stem(name: str, robot: str | None) -> str | None:
-    """``deliverybot_`` for the package ``deliverybot_bringup`` of the robot its URDF names
-    ``deliverybot``: the package is named for the robot (a name of no robot in particular,
-    ``robot`` or ``my_robot``, says nothing)."""
-    if robot is None:
+def _named_stem(robot: str | None) -> str | None:
+    """``deliverybot_`` for the robot a URDF names ``deliverybot``: the stem of the packages
+    named for it; None for a name of no robot in particular (``robot``, ``my_robot``)."""
+    if not robot or not robot.strip():
         return None
-    stem = f"{robot.lower()}_"
-    named = name.startswith(stem) and len(name) > len(stem)
-    return stem if named and stem not in GENERIC_STEMS else None
+    stem = f"{robot.strip().lower()}_"
+    return None if stem in GENERIC_STEMS or stem in GENERIC_ROBOT_STEMS else stem
+
+
+def _begins(name: str, stem: str) -> bool:
+    """The package ``name`` is named for the robot of ``stem`` (``jackal_`` for
+    ``Jackal_navigation``): it begins with the stem and goes on."""
+    return len(name) > len(stem) and name.lower().startswith(stem)
 
 
 def _reading_order(core: list[_Package], packages: list[_Package]) -> list[_Package]:

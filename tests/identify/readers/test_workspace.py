@@ -140,6 +140,27 @@ def test_a_description_in_a_package_named_for_the_robot_its_urdf_names_takes_in_
     assert found.packages == ("robot_bringup",)
 
 
+def test_the_robot_its_urdf_names_wins_over_a_shorter_description_package_beside_it(
+    tmp_path: Path,
+) -> None:
+    # abb_description names every ABB robot; the URDF names this one, abb_irb.
+    src = tmp_path / "src"
+    described = package(src / "m", "abb_irb_bringup")
+    package(src / "a", "abb_description")
+    package(src / "b", "abb_irb_navigation")
+    package(src / "c", "abb_yumi_navigation")
+    found = read_workspace(described, robot="abb_irb")
+    assert found is not None
+    assert found.packages == ("abb_irb_bringup", "abb_irb_navigation")
+    # A name of no robot in particular, or none, names no packages.
+    generic = package(tmp_path / "g", "mobile_robot_bringup")
+    package(tmp_path / "g", "mobile_robot_navigation")
+    for nobody in ("", " ", "mobile_robot", "Robot"):
+        found = read_workspace(generic, robot=nobody)
+        assert found is not None
+        assert found.packages == ("mobile_robot_bringup",)
+
+
 def test_of_two_description_packages_beside_it_the_longest_name_names_the_robot(
     tmp_path: Path,
 ) -> None:
