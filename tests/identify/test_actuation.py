@@ -1057,17 +1057,21 @@ def test_unnamed_wheels_on_driven_steering_knuckles_are_wheels_and_a_flippers_ar
     assert roles["fa"] not in ("wheel", "caster")
 
 
+def driven_rocker(rover: RobotText, name: str, parent: str, xyz: str) -> str:
+    """A joint ``name`` about a level axle across the body, with a transmission, at ``xyz``
+    on ``parent``; its link."""
+    link = builders.placed(rover, name, "revolute", parent, f"{name}_l", xyz=xyz, axis="0 1 0")
+    rover.add(builders.transmission(name))
+    return link
+
+
 def unnamed_rocker_rover(front: str = "0.35", back: str = "-0.35") -> RobotText:
     """A rover written blank: on each side a driven joint about a level axle (a rocker, its
     suspension driven in a simulator) carrying two driven steering swivels, ``front`` and
     ``back`` of its pivot (m), each with a driven unnamed wheel below it."""
     rover = RobotText("rover")
     for side, y in (("a", 0.3), ("b", -0.3)):
-        rocker = builders.placed(
-            rover, f"r{side}", "revolute", rover.root, f"r{side}_l", xyz=f"0 {y} -0.1",
-            axis="0 1 0",
-        )  # fmt: skip
-        rover.add(builders.transmission(f"r{side}"))
+        rocker = driven_rocker(rover, f"r{side}", rover.root, f"0 {y} -0.1")
         for end, x in (("f", front), ("h", back)):
             swivel = builders.placed(
                 rover, f"s{side}{end}", "revolute", rocker, f"s{side}{end}_l", xyz=f"{x} 0 0"
@@ -1098,15 +1102,8 @@ def test_a_driven_rocker_over_a_driven_bogie_lifts_none_of_their_six_wheels() ->
     # rocker's three wheels straddle its own.
     rover = RobotText("rover")
     for side, y in (("a", 0.3), ("b", -0.3)):
-        rocker = builders.placed(
-            rover, f"r{side}", "revolute", rover.root, f"r{side}_l", xyz=f"0 {y} -0.1",
-            axis="0 1 0",
-        )  # fmt: skip
-        bogie = builders.placed(
-            rover, f"g{side}", "revolute", rocker, f"g{side}_l", xyz="-0.2 0 -0.05",
-            axis="0 1 0",
-        )  # fmt: skip
-        rover.add(builders.transmission(f"r{side}") + builders.transmission(f"g{side}"))
+        rocker = driven_rocker(rover, f"r{side}", rover.root, f"0 {y} -0.1")
+        bogie = driven_rocker(rover, f"g{side}", rocker, "-0.2 0 -0.05")
         for name, parent, x in ((f"w{side}f", rocker, 0.35), (f"w{side}m", bogie, 0.15)):
             builders.placed(
                 rover, name, "continuous", parent, f"{name}_l", xyz=f"{x} 0 -0.2", axis="0 1 0"

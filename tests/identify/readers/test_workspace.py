@@ -50,8 +50,8 @@ def rover_workspace(tmp_path: Path) -> Path:
     return described
 
 
-def read(described: Path, root: Path | None = None) -> reader.Workspace:
-    found = read_workspace(described, root)
+def read(described: Path, root: Path | None = None, robot: str | None = None) -> reader.Workspace:
+    found = read_workspace(described, root, robot)
     assert found is not None
     return found
 
@@ -122,46 +122,22 @@ def test_a_description_in_a_package_named_for_the_robot_its_urdf_names_takes_in_
     tmp_path: Path,
 ) -> None:
     # No jackal_description: the URDF in jackal_bringup names the robot ``jackal``, and the
-    # bringup's name begins with it; a URDF naming another robot, or a name of no robot in
-    # particular, takes in nothing more.
-    src = tmp_path / "src"
-    described = beside_two_navigations(src, "jackal_bringup")
-    found = read_workspace(described, robot="Jackal")
-    assert found is not None
-    assert found.packages == ("jackal_bringup", "jackal_navigation")
+    # bringup's name begins with it; a URDF naming another robot takes in nothing more.
+    described = beside_two_navigations(tmp_path / "src", "jackal_bringup")
+    assert read(described, robot="Jackal").packages == ("jackal_bringup", "jackal_navigation")
     for robot in (None, "husky", "jackal_bringup"):
-        found = read_workspace(described, robot=robot)
-        assert found is not None
-        assert found.packages == ("jackal_bringup",)
-    generic = beside_two_navigations(tmp_path / "other", "robot_bringup")
-    package(tmp_path / "other", "robot_navigation", {"launch/a.launch": "<node pkg='move_base'/>"})
-    found = read_workspace(generic, robot="robot")
-    assert found is not None
-    assert found.packages == ("robot_bringup",)
+        assert read(described, robot=robot).packages == ("jackal_bringup",)
 
 
-def test_the_robot_its_urdf_names_wins_over_a_shorter_description_package_beside_it(
-    tmp_path: Path,
-) -> None:
-    # abb_description names every ABB robot; the URDF names this one, abb_irb.
-    src = tmp_path / "src"
-    described = package(src / "m", "abb_irb_bringup")
-    package(src / "a", "abb_description")
-    package(src / "b", "abb_irb_navigation")
-    package(src / "c", "abb_yumi_navigation")
-    found = read_workspace(described, robot="abb_irb")
-    assert found is not None
-    assert found.packages == ("abb_irb_bringup", "abb_irb_navigation")
-    # A name of no robot in particular, or none, names no packages.
-    generic = package(tmp_path / "g", "mobile_robot_bringup")
-    package(tmp_path / "g", "mobile_robot_navigation")
-    for nobody in ("", " ", "mobile_robot", "Robot"):
-        found = read_workspace(generic, robot=nobody)
-        assert found is not None
-        assert found.packages == ("mobile_robot_bringup",)
+def test_a_robot_named_as_no_robot_in_particular_names_no_packages(tmp_path: Path) -> None:
+    for stem in ("robot", "mobile_robot"):
+        described = beside_two_navigations(tmp_path / stem, f"{stem}_bringup")
+        package(tmp_path / stem, f"{stem}_navigation")
+        for nobody in ("", " ", stem, stem.title()):
+            assert read(described, robot=nobody).packages == (f"{stem}_bringup",)
 
 
-def test_of_two_description_packages_beside_it_the_longest_name_names_the_robot(
+def test_of_the_stems_beside_it_and_the_robots_own_the_longest_names_the_robot(
     tmp_path: Path,
 ) -> None:
     src = tmp_path / "src"
@@ -170,6 +146,11 @@ def test_of_two_description_packages_beside_it_the_longest_name_names_the_robot(
     package(src / "z", "abb_irb_description")
     package(src / "b", "abb_yumi_bringup", {"launch/a.launch": "<node pkg='move_base'/>"})
     assert read(described).packages == ("abb_irb_control", "abb_irb_description")
+    # With no abb_irb_description, the URDF's name for the robot, abb_irb, is the longest.
+    (src / "z" / "abb_irb_description" / "package.xml").unlink()
+    assert read(described, robot="abb_irb").packages == ("abb_irb_control",)
+    package(src / "n", "abb_irb_navigation")
+    assert read(described, robot="abb_irb").packages == ("abb_irb_control", "abb_irb_navigation")
 
 
 def test_a_name_inside_a_longer_word_is_no_use(tmp_path: Path) -> None:
