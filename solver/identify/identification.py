@@ -185,7 +185,7 @@ def identify_urdf(
     the controls they ship (:mod:`solver.identify.shipped`)."""
     rules = rules if rules is not None else load_rules(default_rules_path())
     profile = profile if profile is not None else load_profile()
-    urdf = urdf_text if isinstance(urdf_text, Urdf) else parse_urdf(urdf_text, file, strict=False)
+    urdf = _parsed(urdf_text, file)
     srdf, srdf_warnings = (None, ()) if srdf_text is None else _srdf(srdf_text, srdf_file, urdf)
     found_warnings = (*urdf.warnings, *srdf_warnings, *warnings)
     body = detect_body(urdf, profile)
@@ -262,6 +262,11 @@ def identify_urdf(
         declared=None if description is None else description.file,
         disagreements=found.disagreements,
     )
+
+
+def _parsed(urdf: str | bytes | Urdf, file: str) -> Urdf:
+    """The description, parsed tolerantly from its text unless it already is."""
+    return urdf if isinstance(urdf, Urdf) else parse_urdf(urdf, file, strict=False)
 
 
 def _joint_controllers(
