@@ -117,10 +117,10 @@ class Role:
 
 
 # A robot name that says a craft at the surface, read as whole words (``simple_boat``,
-# ``sailboat001``, ``chelon_asv``, ``stinger_tug``; not ``airship``, ``mothership``, ``tugger``
-# or a lab's ``vessel``).
+# ``sailboat001``, ``chelon_asv``, ``stinger_tug``; a word ending in boat, ``blueboat``; not
+# ``airship``, ``mothership``, ``tugger``, ``boathouse`` or a lab's ``vessel``).
 _VESSEL_NAME = re.compile(
-    r"(^|[_/\d-])(boat|sailboat|tugboat|tug|ship|asv|usv|catamaran|yacht|kayak|canoe|barge"
+    r"(^|[_/\d-])([a-z]*boat|tug|ship|asv|usv|catamaran|yacht|kayak|canoe|barge"
     r"|ferry|sail)s?([_/\d-]|$)",
     re.IGNORECASE,
 )

@@ -790,7 +790,7 @@ def named_hull(name: str) -> RobotText:
 
 
 def test_a_robot_named_as_a_boat_that_shows_no_other_way_of_travelling_floats_with_doubt() -> None:
-    for name in ("sailboat001", "boat", "harbour_usv"):
+    for name in ("sailboat001", "boat", "harbour_usv", "BlueBoat"):
         result = identify_urdf(named_hull(name).text())
         assert result.structure == "Surface Vessel", name
         assert result.confidence == pytest.approx(0.9 * 0.8, abs=0.01)
@@ -882,6 +882,14 @@ def test_a_water_word_inside_another_word_or_a_tag_floats_nothing() -> None:
     auv = hull_with_hydrodynamics("auv")
     auv.add("<gazebo><relationship>none</relationship><ownership/></gazebo>")
     assert identify_urdf(auv.text()).structure == "Underwater Vehicle"
+
+
+def test_a_boat_name_floats_a_hull_its_hydrodynamics_plugin_moves() -> None:
+    # A hydrodynamics plugin moves hulls at the surface too (Gazebo's, a BlueBoat's).
+    assert identify_urdf(hull_with_hydrodynamics("blueboat").text()).structure == ("Surface Vessel")
+    assert identify_urdf(hull_with_hydrodynamics("boathouse").text()).structure == (
+        "Underwater Vehicle"
+    )
 
 
 def test_a_boat_name_does_not_float_a_body_with_a_dvl() -> None:
