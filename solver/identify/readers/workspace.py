@@ -303,7 +303,7 @@ def _named_stem(robot: str | None) -> str | None:
 def _begins(name: str, stem: str) -> bool:
     """The package ``name`` is named for the robot of ``stem`` (``jackal_`` for
     ``Jackal_navigation``): it begins with the stem and goes on."""
-    return len(name) > len(stem) and name.lower().startswith(stem)
+    return len(name) > len(stem) and name.lower().startswith(stem.lower())
 
 
 def _reading_order(core: list[_Package], packages: list[_Package]) -> list[_Package]:
