@@ -372,15 +372,17 @@ def _floating_hull(tree: JointTree) -> list[str]:
     (:func:`_afloat`; a hull of no mass written cannot be weighed against the rest: its own
     reserve says it). A body trimmed just above neutral is a submersible's."""
     known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
-    afloat: bool | None = None  # the whole body's, weighed once
-    for link in tree.urdf.links:
-        floats = link.buoyancy is not None and link.buoyancy >= _HULL_RESERVE
-        if floats and moved_by(tree.urdf, link.name, known) is None:
-            if link.mass is not None:
-                afloat = _afloat(tree) if afloat is None else afloat
-                floats = afloat
-            if floats:
-                return [f"{link.name} buoyancy {link.buoyancy:g} x weight (floats)"]
+    hulls = [
+        link
+        for link in tree.urdf.links
+        if link.buoyancy is not None
+        and link.buoyancy >= _HULL_RESERVE
+        and moved_by(tree.urdf, link.name, known) is None
+    ]
+    afloat = any(hull.mass is not None for hull in hulls) and _afloat(tree)  # weighed once
+    for hull in hulls:
+        if hull.mass is None or afloat:
+            return [f"{hull.name} buoyancy {hull.buoyancy:g} x weight (floats)"]
     return []
 
 
