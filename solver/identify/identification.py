@@ -214,7 +214,7 @@ def identify_urdf(
             urdf=urdf,
             sensor_kinds={d.kind for d in detections},
             srdf_source=Path(srdf_file).name,
-            guess_navigation=packages is None or not packages.complete,
+            guess_software=packages is None or not packages.complete,
             named=_named(packages, body),
             leg_controllers=_joint_controllers(packages, profile.gait, legs),
             leg_joint_controllers=(

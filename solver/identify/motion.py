@@ -398,15 +398,16 @@ def controls_from_description(
     sensor_kinds: Collection[str] = (),
     urdf_source: str = "urdf",
     srdf_source: str = "srdf",
-    guess_navigation: bool = True,
+    guess_software: bool = True,
     named: Collection[str] | None = None,
     leg_controllers: str | None = None,
     leg_joint_controllers: str | None = None,
     rotor_controllers: str | None = None,
 ) -> tuple[Control, ...]:
     """The motion controls the body (and SRDF) show, each with what shows it; with the kinds
-    of the sensors the description declares, the profile's navigation guess too (not with
-    ``guess_navigation=False``: the robot's packages were read, and say). ``named``: the
+    of the sensors the description declares, the profile's navigation guess too; neither that
+    guess nor an arm's guess of Cartesian goals with ``guess_software=False`` (the robot's
+    packages were read whole, and say what software they ship). ``named``: the
     joints the robot's packages name, when they were read whole; ``leg_controllers`` and
     ``rotor_controllers``: the file of the robot's packages that configures joint controllers
     of its legs or rotors, when they ship no gait or no flight software
@@ -428,9 +429,11 @@ def controls_from_description(
         ),
         *_planned(body, srdf, profile, urdf, srdf_source, effectors=effectors),
     ]
-    if _feet_only(srdf, effectors) or _balances(body):
+    if _feet_only(srdf, effectors) or _balances(body) or not guess_software:
         # The SRDF says where the end effectors are, and none is on an arm; or the arms are a
-        # biped's (measured: no labelled biped of the development part offers them): no guess.
+        # biped's (measured: no labelled biped of the development part offers them); or the
+        # robot's packages, read whole, say whether Cartesian goals are shipped (a MoveIt
+        # node, a Cartesian controller, inverse kinematics: shipped.py): no guess.
         shown = [(source, text) for source, text in shown if source != "arm_gripper"]
     found: dict[str, list[str]] = {}
     by_roles: dict[str, list[str]] = {}
@@ -444,6 +447,6 @@ def controls_from_description(
     controls = tuple(
         Control(name, "; ".join(found[name])) for name in dict.fromkeys(order) if name in found
     )
-    if not guess_navigation:
+    if not guess_software:
         return controls
     return controls + _navigation(shown, controls, sensor_kinds, profile, urdf_source)

@@ -493,13 +493,21 @@ def test_a_package_can_be_named_for_a_description_kept_elsewhere(tmp_path: Path)
     assert controls_of(copy) == controls_of(copy, look_around=False)
 
 
-def test_an_arms_guess_of_end_effector_goals_is_joined_by_the_moveit_it_ships(
-    tmp_path: Path,
-) -> None:
+def test_an_arms_end_effector_goals_are_the_moveit_its_packages_ship(tmp_path: Path) -> None:
     path = described(tmp_path, manipulator(), "<include file='move_group.launch'/>")
-    guess, shown = controls_of(path)["End Effector"].split("; ")
+    assert controls_of(path)["End Effector"] == (
+        "package craft_bringup: craft_bringup/launch/bringup.launch (move_group)"
+    )
+    # Read alone, the arm's six joints and gripper make the Cartesian goals a guess.
+    guess = controls_of(path, look_around=False)["End Effector"]
     assert guess.startswith("urdf: likely, not declared")
-    assert shown == "package craft_bringup: craft_bringup/launch/bringup.launch (move_group)"
+
+
+def test_packages_that_ship_no_cartesian_goals_leave_no_guess_of_them(tmp_path: Path) -> None:
+    # Joint controllers and the sliders only: the arm takes joint goals, and no pose goal.
+    path = described(tmp_path, manipulator(), "<node pkg='joint_state_publisher_gui'/>")
+    assert set(controls_of(path)) == {"Joint"}
+    assert "End Effector" in controls_of(path, look_around=False)
 
 
 def picker(*extra: str) -> RobotText:
@@ -531,10 +539,13 @@ def test_an_arm_only_drawn_on_a_driven_rover_is_commanded_by_nothing(tmp_path: P
         (picker(transmission("elbow")), ""),  # the description commands one
     ],
 )
-def test_an_arm_a_package_or_the_description_commands_keeps_its_controls(
+def test_an_arm_a_package_or_the_description_commands_keeps_its_joint_goals(
     tmp_path: Path, robot: RobotText, bringup: str
 ) -> None:
-    assert {"Joint", "End Effector"} <= set(controls_of(described(tmp_path, robot, bringup)))
+    found = set(controls_of(described(tmp_path, robot, bringup)))
+    # Its pose goals are what the packages ship, and these ship none.
+    assert "Joint" in found
+    assert "End Effector" not in found
 
 
 def test_an_arm_a_trajectory_plugin_plays_is_commanded(tmp_path: Path) -> None:
