@@ -172,6 +172,7 @@ def _jaw_pairs(tree: JointTree, taken: set[str], *, endless: bool = False) -> di
                 continue
             tipped.add(joint.name)
         by_parent.setdefault(joint.parent, []).append(joint)
+    _pair_on_one_body(tree, by_parent)
     motions = [joint.name for joint in tree.urdf.joints if joint.movable]
     # The joints that place the body, once (not for every pair), when an endless pair needs them.
     pairs = endless and any(len(pair) == 2 for pair in by_parent.values())
@@ -187,6 +188,33 @@ def _jaw_pairs(tree: JointTree, taken: set[str], *, endless: bool = False) -> di
         if why:
             found.update(dict.fromkeys((j.name for j in pair), why))
     return found
+
+
+def _pair_on_one_body(tree: JointTree, by_parent: dict[str, list[Joint]]) -> None:
+    """Two joints of ``by_parent``, each alone on its link, whose links are fixed to one body
+    and no other joint of it is there: a pair on that body, each written in its frame
+    (:meth:`~solver.identify.pose.Poses.hung_from`), as a gripper whose two jaws hinge on
+    plates fixed to its palm is (``by_parent`` changed in place)."""
+    on_body: dict[str, list[str]] = {}
+    for link in by_parent:
+        on_body.setdefault(_rigid_top(tree, link), []).append(link)
+    for body, links in on_body.items():
+        if len(links) != 2 or body in links or any(len(by_parent[k]) != 1 for k in links):
+            continue
+        pair = [tree.poses.hung_from(body, by_parent.pop(link)[0]) for link in links]
+        by_parent[body] = pair
+
+
+def _rigid_top(tree: JointTree, link: str) -> str:
+    """The link ``link`` is fixed below (through joints that cannot move), itself when it
+    hangs from a movable joint or from none; every link walked once (a loop ends the walk)."""
+    seen = {link}
+    while (joint := tree.urdf.parent_joint(link)) is not None and not joint.movable:
+        if joint.parent in seen:
+            break
+        link = joint.parent
+        seen.add(link)
+    return link
 
 
 def _may_be_a_jaw(joint: Joint, *, endless: bool) -> bool:

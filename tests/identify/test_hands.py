@@ -3,6 +3,8 @@ by where they hang, and a hand is counted by its fingers' tips."""
 
 from __future__ import annotations
 
+import math
+
 import pytest
 
 from solver.identify import identify_urdf, load_profile
@@ -386,6 +388,50 @@ def servo_arm(tip_joints: int = 1) -> RobotText:
         for k in range(tip_joints):
             part = builders.placed(robot, f"{name}_tip{k}", "revolute", part, f"{name}_t{k}")
     return robot
+
+
+def plated_arm(plates: int = 2) -> RobotText:
+    """Four numbered hinges, then ``plates`` plates fixed to the last link (every other one
+    turned half round), each carrying one hinge about x with the same limits: a gripper whose
+    jaws hinge on plates fixed to its palm, named nothing."""
+    robot = RobotText("plated_arm", root="base_link")
+    link = "base_link"
+    for i in range(1, 5):
+        link = builders.placed(robot, f"J{i}", "revolute", link, f"link{i}", xyz="0 0 0.1")
+    for k in range(plates):
+        plate = builders.placed(
+            robot,
+            f"F{k}",
+            "fixed",
+            link,
+            f"plate{k}",
+            xyz=f"0.02 {0.018 * (-1) ** k * (k // 2 + 1)} 0.08",
+            rpy=f"0 0 {math.pi * (k % 2)}",
+        )
+        robot.joint(
+            f"H{k}",
+            "revolute",
+            plate,
+            f"piece{k}",
+            '<axis xyz="1 0 0"/><limit lower="-0.03" upper="0.7" effort="3" velocity="1"/>',
+        )
+    return robot
+
+
+def test_two_hinges_on_plates_fixed_to_an_arms_last_link_are_its_jaws() -> None:
+    result = identify_urdf(plated_arm().text())
+    assert result.structure == "Manipulator"
+    assert result.body is not None
+    assert [limb.gripper for limb in result.body.limbs if limb.kind == "arm"] == [True]
+    # Two such hinges on plates of two links apart are no pair of jaws.
+    apart = plated_arm()
+    apart.joints = [
+        j.replace('"link4"/><child link="plate1"', '"link3"/><child link="plate1"')
+        for j in apart.joints
+    ]
+    body = identify_urdf(apart.text()).body
+    assert body is not None
+    assert not any(limb.gripper for limb in body.limbs)
 
 
 def test_mirrored_hinges_each_carrying_a_fingertip_hinge_at_an_arms_end_are_its_jaws() -> None:
