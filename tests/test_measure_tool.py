@@ -13,6 +13,7 @@ from typing import Any
 from tests.identify.builders import (
     gazebo_sensor,
     manipulator,
+    mobile_manipulator,
     model_plugin,
     pan_tilt_only,
     parallel_gripper,
@@ -134,6 +135,14 @@ def test_a_gripper_counts_for_a_hand_and_a_pan_tilt_unit_for_an_uncertain_manipu
     assert "structure correct: 1/3 strict, 2/3 lenient" in output
     assert "ptu_certain: structure Pan/Tilt Unit, labelled Manipulator" in output
     assert "jaws: structure" not in output
+
+
+def test_the_corpus_readmes_short_name_mm_labels_a_mobile_manipulator(tmp_path: Path) -> None:
+    folder = tmp_path / "bases"
+    (folder / "urdf").mkdir(parents=True)
+    (folder / "urdf" / "mm.urdf").write_text(mobile_manipulator().text(), encoding="utf-8")
+    write_truth(folder, [{"robot": "mm", "file": "urdf/mm.urdf", "kinematic_type": "MM"}])
+    assert "structure correct: 1/1 strict, 1/1 lenient" in measure("--set", str(folder))
 
 
 def test_a_row_whose_file_is_missing_is_counted_absent_not_measured(tmp_path: Path) -> None:

@@ -102,6 +102,7 @@ PART_ORDER = ("development", "held-out", FRESH_PART, "unsplit")
 SPLIT = ROOT / "tools" / "identification_split.csv"
 # Truth labels spelled differently from the profile's structure names.
 ALIASES = {
+    "mm": "Mobile Manipulator",  # the corpus README's short name for it
     "biped/lower-body": "Biped",
     "legged mobile manipulator": "Legged Mobile Manipulator",
     "aerial manipulator": "Aerial Manipulator",
