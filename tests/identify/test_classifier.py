@@ -84,6 +84,31 @@ def test_zero_range_revolute_joints_are_fixed_and_mimic_joints_not_actuated() ->
     assert not arm.actuated
 
 
+def test_limits_closer_than_a_nanometre_lock_a_joint_as_equal_ones_do() -> None:
+    # A rover converted from SDF: its turret and camera frame on revolute joints of +-1e-16,
+    # a pan/tilt head between them; no actuator places a part that finely.
+    shut = '<axis xyz="0 0 1"/><limit lower="-1e-16" upper="1e-16" effort="1000" velocity="1"/>'
+    turn = '<axis xyz="0 0 1"/><limit lower="-3.14" upper="3.14" effort="1000" velocity="1"/>'
+    rover = builders.ugv()
+    rover.joint("turret_mount", "revolute", rover.root, "turret", shut)
+    rover.joint("turret_pan", "revolute", "turret", "tilt_base", turn)
+    rover.joint("turret_tilt", "revolute", "tilt_base", "hinge", turn)
+    rover.joint("camera_hinge", "revolute", "hinge", "depth_camera_link", shut)
+    urdf = parse_urdf(rover.text())
+    shut_joints = [urdf.joint(name) for name in ("turret_mount", "camera_hinge")]
+    assert [joint is not None and joint.movable for joint in shut_joints] == [False, False]
+    result = identify_urdf(rover.text())
+    assert result.structure == "UGV"
+    assert [control.motion_control for control in result.motion_controls] == ["Driving"]
+    # A small range a joint can travel (a fifth of a millimetre) still moves.
+    fine = '<axis xyz="1 0 0"/><limit lower="0" upper="0.0002" effort="10" velocity="1"/>'
+    slide = RobotText("stage")
+    slide.joint("stage_joint", "prismatic", slide.root, "stage", fine)
+    stage = parse_urdf(slide.text()).joint("stage_joint")
+    assert stage is not None
+    assert stage.movable
+
+
 def test_equal_limits_on_joints_coupled_by_mimic_are_placeholders_not_a_lock() -> None:
     # A kinematic simulator's gripper: limits all zero, one finger following the other.
     robot = RobotText("gripper", root="world")

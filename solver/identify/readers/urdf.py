@@ -55,6 +55,10 @@ _MAX_PARAMS = 400
 _MODEL_URI = "model://"
 # A revolute joint whose range spans this many radians (16 turns) has no stop: it is endless.
 _ENDLESS_RANGE = 100.0
+# A range narrower than this (a nanometre, a nanoradian) leaves a joint no room to move: no
+# actuator places a part so finely, so limits this close are a lock written with a rounding
+# (an SDF converter's +-1e-16 on a sensor's frame), as equal limits are.
+_NO_ROOM = 1e-9
 # Joints that move without limits: beside them, equal limits are a lock, not placeholders.
 _UNLIMITED = frozenset({"continuous", "floating", "planar"})
 # Sea water's density (kg/m3): what a hydrodynamics plugin assumes when it names none.
@@ -144,15 +148,21 @@ class Joint:
     def movable(self) -> bool:
         if self.type == "fixed" or self.phantom:
             return False
-        # RotorS and others mount sensors on revolute joints with lower == upper: fixed in effect.
+        # RotorS and others mount sensors on revolute joints with lower == upper: fixed in effect,
+        # and so are limits closer than a nanometre or a nanoradian (:attr:`closed`).
         # Not an unlocked joint: nobody couples a joint that cannot move, nor locks every joint
         # of a robot, so such equal limits are placeholders (a kinematic simulator's fingers, a
         # CAD exporter's limits all zero).
-        return not (
-            self.type in ("revolute", "prismatic")
-            and self.lower is not None
-            and self.lower == self.upper
-            and not self.unlocked
+        return not (self.type in ("revolute", "prismatic") and self.closed and not self.unlocked)
+
+    @property
+    def closed(self) -> bool:
+        """Its limits leave it no room: equal, or closer than :data:`_NO_ROOM` (whether that
+        locks it is :attr:`movable`'s question)."""
+        return (
+            self.lower is not None
+            and self.upper is not None
+            and (self.lower == self.upper or abs(self.upper - self.lower) < _NO_ROOM)
         )
 
     def turns(self, at_least: float) -> bool:
@@ -967,7 +977,7 @@ def _placeholders(joints: dict[str, Joint]) -> set[str]:
     mounts written so (RotorS, the UUV simulator: each a leaf on the body) stay locked."""
     limited = {j.name: j for j in joints.values() if j.type in ("revolute", "prismatic")}
     if any(j.type in _UNLIMITED for j in joints.values()) or not all(
-        j.lower is not None and j.lower == j.upper for j in limited.values()
+        j.closed for j in limited.values()
     ):
         return set()
     carried = {j.child for j in limited.values()}
