@@ -914,8 +914,9 @@ def _alone_on_its_link(tree: JointTree, joint: Joint) -> bool:
 def _unnamed_rotors(tree: JointTree, taken: set[str]) -> list[str]:
     """Unnamed endless leaves turning about upright axes, three or more on one rigid body (a
     link, or links fixed to it: a frame's arms, one rotor on each) and all round its frame's
-    origin (before and behind, left and right): a multirotor's propellers. A wheel turns about
-    a level axle, a caster's swivel carries its wheel, a spinning lidar is one."""
+    origin (before and behind, left and right): a multirotor's propellers; or two on one
+    upright line (:func:`_coaxial`): a coaxial helicopter's, one above the other. A wheel turns
+    about a level axle, a caster's swivel carries its wheel, a spinning lidar is one."""
     around: dict[str | None, list[Joint]] = {}
     known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
     turning: dict[str, str | None] = {}  # link -> the nearest joint above it that turns
@@ -930,9 +931,18 @@ def _unnamed_rotors(tree: JointTree, taken: set[str]) -> list[str]:
             len(joints) >= _FEWEST_UNNAMED_ROTORS
             and _sides({place[0] - centre[0] for place in places})
             and _sides({place[1] - centre[1] for place in places})
-        ):
+        ) or _coaxial(places):
             found.extend(j.name for j in joints)
     return found
+
+
+def _coaxial(places: list[tuple[float, float, float]]) -> bool:
+    """Two upright spinning leaves on one upright line (one place across the ground, any
+    height): contra-rotating rotors, the one lift a coaxial helicopter has. Nothing else turns
+    two parts for ever about one upright line; a spinning lidar is one leaf."""
+    return len(places) == 2 and all(
+        math.isclose(places[0][axis], places[1][axis], abs_tol=_MIRROR_TOLERANCE) for axis in (0, 1)
+    )
 
 
 def _middle(tree: JointTree, link: str) -> float:

@@ -951,6 +951,26 @@ def test_unnamed_endless_leaves_on_upright_axes_all_round_a_body_are_its_rotors(
     assert identify_urdf(row.text()).structure != "UAV"
 
 
+def test_two_unnamed_endless_leaves_on_one_upright_line_are_a_coaxial_helicopters_rotors() -> None:
+    # Contra-rotating rotors, one above the other on the body's mast; four legs turning about
+    # level axes beside them, and nothing named.
+    robot = RobotText("r")
+    builders.placed(robot, "s0", "continuous", robot.root, "top", xyz="0 0 0.12")
+    builders.placed(robot, "s1", "continuous", robot.root, "bottom", xyz="0 0 0.08")
+    for i, (x, y) in enumerate(((0.08, 0.09), (0.08, -0.09), (-0.08, 0.09), (-0.08, -0.09))):
+        builders.placed(
+            robot, f"g{i}", "continuous", robot.root, f"g{i}_l", xyz=f"{x} {y} 0", axis="1 0 0"
+        )
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert (result.structure, set(result.body.rotors)) == ("UAV", {"s0", "s1"})
+    # Two upright spinners side by side are not on one line: no lift from them.
+    apart = RobotText("apart")
+    builders.placed(apart, "s0", "continuous", apart.root, "a", xyz="0 0.1 0.1")
+    builders.placed(apart, "s1", "continuous", apart.root, "b", xyz="0 -0.1 0.1")
+    assert identify_urdf(apart.text()).structure != "UAV"
+
+
 def test_unnamed_rotors_each_on_an_arm_fixed_to_the_frame_are_all_round_one_body() -> None:
     # A frame whose four arms are links of their own, fixed to it, one rotor at each arm's end.
     robot = RobotText("r")
