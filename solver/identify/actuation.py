@@ -922,7 +922,7 @@ def _unnamed_rotors(tree: JointTree, taken: set[str]) -> list[str]:
     turning: dict[str, str | None] = {}  # link -> the nearest joint above it that turns
     for joint in (*_unnamed_spinners(tree, taken), *_motor_leaves(tree, taken)):
         if joint.child not in tree.moving_below and _upright(_resting_axis(tree, joint, turning)):
-            around.setdefault(moved_by(tree.urdf, joint.parent, known), []).append(joint)
+            around.setdefault(_rotor_carrier(tree, joint, known), []).append(joint)
     found: list[str] = []
     for carrier, joints in around.items():
         places = [tree.poses.place(j.child) for j in joints]
@@ -934,6 +934,21 @@ def _unnamed_rotors(tree: JointTree, taken: set[str]) -> list[str]:
         ) or _coaxial(places):
             found.extend(j.name for j in joints)
     return found
+
+
+def _rotor_carrier(tree: JointTree, joint: Joint, known: dict[str, str | None]) -> str | None:
+    """The movable joint that moves the body a spinning leaf ``joint`` is on (None: the
+    root's), past a mount that only swivels about the leaf's own line (a tilt-rotor's motor
+    mount written about its shaft): such a mount carries the rotor where the body does."""
+    carrier = moved_by(tree.urdf, joint.parent, known)
+    mount = tree.urdf.joint(carrier) if carrier is not None else None
+    if (
+        mount is not None
+        and _turns(mount)
+        and parallel(tree.poses.axis(mount), tree.poses.axis(joint))
+    ):
+        return moved_by(tree.urdf, mount.parent, known)
+    return carrier
 
 
 def _coaxial(places: list[tuple[float, float, float]]) -> bool:
@@ -1012,9 +1027,16 @@ def _steered_by(tree: JointTree, leaf: Joint, known: dict[str, str | None]) -> J
 def _resting_axis(tree: JointTree, joint: Joint, known: dict[str, str | None]) -> Vector:
     """``joint``'s axis as the body carries it: in the body's frame when nothing that turns is
     above it (a link fixed to the body or sliding on it: a motor mount tipped upright, a
-    wheel-drop suspension's frame turned to slide along its own axis), else in its parent's
-    frame (a leg's or a steering link's rest pose says nothing of the axle's)."""
-    if nearest_above(tree.urdf, joint.parent, known, _turns) is None:
+    wheel-drop suspension's frame turned to slide along its own axis), or when the one joint
+    that turns above it turns about a parallel axis (a motor mount swivelling about the line
+    of the shaft it carries: turning it leaves the shaft's direction as it is); else in its
+    parent's frame (a leg's or a steering link's rest pose says nothing of the axle's)."""
+    above = nearest_above(tree.urdf, joint.parent, known, _turns)
+    turner = tree.urdf.joint(above) if above is not None else None
+    if turner is None or (
+        parallel(tree.poses.axis(turner), tree.poses.axis(joint))
+        and nearest_above(tree.urdf, turner.parent, known, _turns) is None
+    ):
         return tree.poses.axis(joint)
     return local_axis(joint)
 

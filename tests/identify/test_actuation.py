@@ -971,6 +971,31 @@ def test_two_unnamed_endless_leaves_on_one_upright_line_are_a_coaxial_helicopter
     assert identify_urdf(apart.text()).structure != "UAV"
 
 
+def test_unnamed_rotors_on_mounts_swivelling_about_their_shafts_are_rotors_not_wheels() -> None:
+    # A hexacopter's motor mounts, each turned a quarter so its x is upright and written as a
+    # joint about that x, carry shafts turning about the same line: turning a mount leaves its
+    # shaft upright, so the shafts are no wheels on level axles, and the mounts carry them
+    # where the frame does (all round it).
+    robot = RobotText("r")
+    for i in range(6):
+        yaw = i * math.pi / 3
+        x, y = 0.29 * math.cos(yaw), 0.29 * math.sin(yaw)
+        mount = builders.placed(
+            robot,
+            f"m{i}",
+            "revolute",
+            robot.root,
+            f"mount{i}",
+            xyz=f"{x} {y} 0.01",
+            rpy="0 -1.5708 0",
+            axis="1 0 0",
+        )
+        builders.placed(robot, f"s{i}", "continuous", mount, f"p{i}", xyz="0.005 0 0", axis="1 0 0")
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert (result.structure, len(result.body.rotors), result.body.wheels) == ("UAV", 6, ())
+
+
 def test_unnamed_rotors_each_on_an_arm_fixed_to_the_frame_are_all_round_one_body() -> None:
     # A frame whose four arms are links of their own, fixed to it, one rotor at each arm's end.
     robot = RobotText("r")
