@@ -95,6 +95,8 @@ _WHEEL_LEGGED = (2, 4)
 _FOOT_JOINT = re.compile(r"ankle|toe", re.IGNORECASE)
 # Unnamed upright spinning leaves on one link are rotors from this many (a tricopter's).
 _FEWEST_UNNAMED_ROTORS = 3
+# ... and from this many when they are all on one upright line (a coaxial helicopter's).
+_COAXIAL_ROTORS = 2
 # An omni base's wheels, told by their axles alone: this many or more (a kiwi drive's three),
 # each axle within this share of pointing at the middle of them all (the cosine of the angle
 # between the axle and the line from the middle to the wheel, 0.95: 18 degrees).
@@ -952,11 +954,15 @@ def _rotor_carrier(tree: JointTree, joint: Joint, known: dict[str, str | None]) 
 
 
 def _coaxial(places: list[tuple[float, float, float]]) -> bool:
-    """Two upright spinning leaves on one upright line (one place across the ground, any
-    height): contra-rotating rotors, the one lift a coaxial helicopter has. Nothing else turns
-    two parts for ever about one upright line; a spinning lidar is one leaf."""
-    return len(places) == 2 and all(
-        math.isclose(places[0][axis], places[1][axis], abs_tol=_MIRROR_TOLERANCE) for axis in (0, 1)
+    """Two upright spinning leaves or more, all on one upright line (one place across the
+    ground, any height): contra-rotating rotors, the one lift a coaxial helicopter has (a
+    model that leaves its rotors' places to its simulator writes them all at its centre).
+    Nothing else turns two parts for ever about one upright line; a spinning lidar is one
+    leaf."""
+    return len(places) >= _COAXIAL_ROTORS and all(
+        math.isclose(place[axis], places[0][axis], abs_tol=_MIRROR_TOLERANCE)
+        for place in places[1:]
+        for axis in (0, 1)
     )
 
 

@@ -964,6 +964,11 @@ def test_two_unnamed_endless_leaves_on_one_upright_line_are_a_coaxial_helicopter
     result = identify_urdf(robot.text())
     assert result.body is not None
     assert (result.structure, set(result.body.rotors)) == ("UAV", {"s0", "s1"})
+    # A model that leaves its rotors' places to its simulator writes all four at its centre.
+    centred = RobotText("centred")
+    for i in range(4):
+        builders.placed(centred, f"s{i}", "continuous", centred.root, f"p{i}", xyz="0 0 0.01")
+    assert identify_urdf(centred.text()).structure == "UAV"
     # Two upright spinners side by side are not on one line: no lift from them.
     apart = RobotText("apart")
     builders.placed(apart, "s0", "continuous", apart.root, "a", xyz="0 0.1 0.1")
