@@ -146,7 +146,7 @@ def joint_roles(tree: JointTree) -> dict[str, Role]:
             "wheel",
             "an endless leaf ending a leg of limited joints (a wheel-legged robot's wheel)",
         )
-    for name in _unnamed_rotors(tree, set(roles)):
+    for name in _unnamed_rotors(tree, roles):
         roles[name] = Role(
             name, "rotor", "an unnamed endless leaf on an upright axis, with others all round"
         )
@@ -913,18 +913,21 @@ def _alone_on_its_link(tree: JointTree, joint: Joint) -> bool:
     return not any(o.movable and o is not joint for o in tree.urdf.children(joint.parent))
 
 
-def _unnamed_rotors(tree: JointTree, taken: set[str]) -> list[str]:
+def _unnamed_rotors(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     """Unnamed endless leaves turning about upright axes, three or more on one rigid body (a
     link, or links fixed to it: a frame's arms, one rotor on each) and all round its frame's
-    origin (before and behind, left and right): a multirotor's propellers; or two on one
-    upright line (:func:`_coaxial`): a coaxial helicopter's, one above the other. A wheel turns
-    about a level axle, a caster's swivel carries its wheel, a spinning lidar is one."""
+    origin (before and behind, left and right): a multirotor's propellers; or, on a body with
+    no wheel, two or more on one upright line (:func:`_coaxial`): a coaxial helicopter's, one
+    above the other (a wheeled base's mast stacks spinning sensors so). A wheel turns about a
+    level axle, a caster's swivel carries its wheel, a spinning lidar is one."""
+    taken = set(roles)
+    wheeled = any(role.role == "wheel" for role in roles.values())
     around: dict[str | None, list[Joint]] = {}
     known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
     turning: dict[str, str | None] = {}  # link -> the nearest joint above it that turns
     for joint in (*_unnamed_spinners(tree, taken), *_motor_leaves(tree, taken)):
         if joint.child not in tree.moving_below and _upright(_resting_axis(tree, joint, turning)):
-            around.setdefault(_rotor_carrier(tree, joint, known), []).append(joint)
+            around.setdefault(_rotor_carrier(tree, joint, known, turning), []).append(joint)
     found: list[str] = []
     for carrier, joints in around.items():
         places = [tree.poses.place(j.child) for j in joints]
@@ -933,21 +936,25 @@ def _unnamed_rotors(tree: JointTree, taken: set[str]) -> list[str]:
             len(joints) >= _FEWEST_UNNAMED_ROTORS
             and _sides({place[0] - centre[0] for place in places})
             and _sides({place[1] - centre[1] for place in places})
-        ) or _coaxial(places):
+        ) or (not wheeled and _coaxial(places)):
             found.extend(j.name for j in joints)
     return found
 
 
-def _rotor_carrier(tree: JointTree, joint: Joint, known: dict[str, str | None]) -> str | None:
+def _rotor_carrier(
+    tree: JointTree, joint: Joint, known: dict[str, str | None], turning: dict[str, str | None]
+) -> str | None:
     """The movable joint that moves the body a spinning leaf ``joint`` is on (None: the
-    root's), past a mount that only swivels about the leaf's own line (a tilt-rotor's motor
-    mount written about its shaft): such a mount carries the rotor where the body does."""
+    root's), past a mount that swivels about an axis parallel to the leaf's, with nothing
+    that turns above it (a motor mount written about its shaft): such a mount carries the
+    rotor where the body does (``known`` and ``turning``: the walks' memos)."""
     carrier = moved_by(tree.urdf, joint.parent, known)
     mount = tree.urdf.joint(carrier) if carrier is not None else None
     if (
         mount is not None
         and _turns(mount)
         and parallel(tree.poses.axis(mount), tree.poses.axis(joint))
+        and nearest_above(tree.urdf, mount.parent, turning, _turns) is None
     ):
         return moved_by(tree.urdf, mount.parent, known)
     return carrier

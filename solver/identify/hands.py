@@ -196,8 +196,9 @@ def _pair_on_one_body(tree: JointTree, by_parent: dict[str, list[Joint]]) -> Non
     (:meth:`~solver.identify.pose.Poses.hung_from`), as a gripper whose two jaws hinge on
     plates fixed to its palm is (``by_parent`` changed in place)."""
     on_body: dict[str, list[str]] = {}
+    tops: dict[str, str] = {}  # one memo for every walk: each link walked once in all
     for link in by_parent:
-        on_body.setdefault(_rigid_top(tree, link), []).append(link)
+        on_body.setdefault(_rigid_top(tree, link, tops), []).append(link)
     for body, links in on_body.items():
         if len(links) != 2 or body in links or any(len(by_parent[k]) != 1 for k in links):
             continue
@@ -205,16 +206,24 @@ def _pair_on_one_body(tree: JointTree, by_parent: dict[str, list[Joint]]) -> Non
         by_parent[body] = pair
 
 
-def _rigid_top(tree: JointTree, link: str) -> str:
+def _rigid_top(tree: JointTree, link: str, tops: dict[str, str]) -> str:
     """The link ``link`` is fixed below (through joints that cannot move), itself when it
-    hangs from a movable joint or from none; every link walked once (a loop ends the walk)."""
+    hangs from a movable joint or from none (a loop ends the walk); every link walked is
+    remembered in ``tops``, so many links cost one walk of the tree at most."""
+    walked = [link]
     seen = {link}
-    while (joint := tree.urdf.parent_joint(link)) is not None and not joint.movable:
-        if joint.parent in seen:
+    top = link
+    while top not in tops:
+        joint = tree.urdf.parent_joint(top)
+        if joint is None or joint.movable or joint.parent in seen:
             break
-        link = joint.parent
-        seen.add(link)
-    return link
+        top = joint.parent
+        walked.append(top)
+        seen.add(top)
+    top = tops.get(top, top)
+    for each in walked:
+        tops[each] = top
+    return top
 
 
 def _may_be_a_jaw(joint: Joint, *, endless: bool) -> bool:

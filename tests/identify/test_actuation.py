@@ -952,14 +952,14 @@ def test_unnamed_endless_leaves_on_upright_axes_all_round_a_body_are_its_rotors(
 
 
 def test_two_unnamed_endless_leaves_on_one_upright_line_are_a_coaxial_helicopters_rotors() -> None:
-    # Contra-rotating rotors, one above the other on the body's mast; four legs turning about
-    # level axes beside them, and nothing named.
+    # Contra-rotating rotors, one above the other on the body's mast; four landing legs that
+    # fold about level axes beside them, and nothing named.
     robot = RobotText("r")
     builders.placed(robot, "s0", "continuous", robot.root, "top", xyz="0 0 0.12")
     builders.placed(robot, "s1", "continuous", robot.root, "bottom", xyz="0 0 0.08")
     for i, (x, y) in enumerate(((0.08, 0.09), (0.08, -0.09), (-0.08, 0.09), (-0.08, -0.09))):
         builders.placed(
-            robot, f"g{i}", "continuous", robot.root, f"g{i}_l", xyz=f"{x} {y} 0", axis="1 0 0"
+            robot, f"g{i}", "revolute", robot.root, f"g{i}_l", xyz=f"{x} {y} 0", axis="1 0 0"
         )
     result = identify_urdf(robot.text())
     assert result.body is not None
@@ -969,6 +969,11 @@ def test_two_unnamed_endless_leaves_on_one_upright_line_are_a_coaxial_helicopter
     for i in range(4):
         builders.placed(centred, f"s{i}", "continuous", centred.root, f"p{i}", xyz="0 0 0.01")
     assert identify_urdf(centred.text()).structure == "UAV"
+    # A wheeled base's mast stacking two spinning sensors is no helicopter.
+    rover = builders.ugv()
+    builders.placed(rover, "s0", "continuous", rover.root, "radar", xyz="0 0 0.3")
+    builders.placed(rover, "s1", "continuous", rover.root, "scanner", xyz="0 0 0.1")
+    assert identify_urdf(rover.text()).structure == "UGV"
     # Two upright spinners side by side are not on one line: no lift from them.
     apart = RobotText("apart")
     builders.placed(apart, "s0", "continuous", apart.root, "a", xyz="0 0.1 0.1")
