@@ -949,15 +949,26 @@ def _rotor_carrier(
     that turns above it (a motor mount written about its shaft): such a mount carries the
     rotor where the body does (``known`` and ``turning``: the walks' memos)."""
     carrier = moved_by(tree.urdf, joint.parent, known)
-    mount = tree.urdf.joint(carrier) if carrier is not None else None
+    mount = _shaft_mount(tree, joint, turning)
+    if mount is not None and mount.name == carrier:
+        return moved_by(tree.urdf, mount.parent, known)
+    return carrier
+
+
+def _shaft_mount(tree: JointTree, joint: Joint, turning: dict[str, str | None]) -> Joint | None:
+    """The one joint that turns above ``joint`` when it turns about an axis parallel to
+    ``joint``'s and nothing turns above it (a motor mount swivelling about the line of the
+    shaft it carries: turning it leaves the shaft's direction as it is); else None
+    (``turning``: the walks' memo)."""
+    above = nearest_above(tree.urdf, joint.parent, turning, _turns)
+    mount = tree.urdf.joint(above) if above is not None else None
     if (
         mount is not None
-        and _turns(mount)
         and parallel(tree.poses.axis(mount), tree.poses.axis(joint))
         and nearest_above(tree.urdf, mount.parent, turning, _turns) is None
     ):
-        return moved_by(tree.urdf, mount.parent, known)
-    return carrier
+        return mount
+    return None
 
 
 def _coaxial(places: list[tuple[float, float, float]]) -> bool:
@@ -1040,15 +1051,12 @@ def _steered_by(tree: JointTree, leaf: Joint, known: dict[str, str | None]) -> J
 def _resting_axis(tree: JointTree, joint: Joint, known: dict[str, str | None]) -> Vector:
     """``joint``'s axis as the body carries it: in the body's frame when nothing that turns is
     above it (a link fixed to the body or sliding on it: a motor mount tipped upright, a
-    wheel-drop suspension's frame turned to slide along its own axis), or when the one joint
-    that turns above it turns about a parallel axis (a motor mount swivelling about the line
-    of the shaft it carries: turning it leaves the shaft's direction as it is); else in its
-    parent's frame (a leg's or a steering link's rest pose says nothing of the axle's)."""
-    above = nearest_above(tree.urdf, joint.parent, known, _turns)
-    turner = tree.urdf.joint(above) if above is not None else None
-    if turner is None or (
-        parallel(tree.poses.axis(turner), tree.poses.axis(joint))
-        and nearest_above(tree.urdf, turner.parent, known, _turns) is None
+    wheel-drop suspension's frame turned to slide along its own axis), or on a mount that
+    swivels about its line (:func:`_shaft_mount`); else in its parent's frame (a leg's or a
+    steering link's rest pose says nothing of the axle's)."""
+    if (
+        nearest_above(tree.urdf, joint.parent, known, _turns) is None
+        or _shaft_mount(tree, joint, known) is not None
     ):
         return tree.poses.axis(joint)
     return local_axis(joint)

@@ -192,15 +192,14 @@ class Poses:
     def hung_from(self, link: str, joint: Joint) -> Joint:
         """``joint`` as if it hung from ``link`` (a link its parent is fixed below): its place
         and its axis written in ``link``'s frame, as two joints on one link are compared."""
-        turn, place = self._frames.get(link, (_IDENTITY, (0.0, 0.0, 0.0)))
-        child_turn, child_place = self._frames.get(joint.child, (_IDENTITY, (0.0, 0.0, 0.0)))
+        turn = self._frames.get(link, (_IDENTITY, (0.0, 0.0, 0.0)))[0]
         back = (
             (turn[0][0], turn[1][0], turn[2][0]),
             (turn[0][1], turn[1][1], turn[2][1]),
             (turn[0][2], turn[1][2], turn[2][2]),
         )  # a turn's inverse is its transpose
-        origin = _turn(back, minus(child_place, place))
-        axis = _turn(back, _turn(child_turn, joint.axis))
+        origin = _turn(back, minus(self.place(joint.child), self.place(link)))
+        axis = _turn(back, self.axis(joint))
         return replace(joint, parent=link, origin=origin, rpy=(0.0, 0.0, 0.0), axis=axis)
 
 

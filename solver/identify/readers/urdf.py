@@ -162,6 +162,7 @@ class Joint:
         return (
             self.lower is not None
             and self.upper is not None
+            # Equal infinities are closed too (their difference is no number).
             and (self.lower == self.upper or abs(self.upper - self.lower) < _NO_ROOM)
         )
 
