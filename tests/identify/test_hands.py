@@ -11,13 +11,14 @@ from solver.identify import identify_urdf, load_profile
 from solver.identify.hands import (
     _MOST_SIZED_FINGERS,
     _finger_sized,
+    _pair_on_one_body,
     _tips_meet,
     finger_groups,
     finger_tips,
     gripper_closure,
 )
 from solver.identify.limbs import Limb
-from solver.identify.readers.urdf import parse_urdf
+from solver.identify.readers.urdf import Joint, parse_urdf
 from solver.identify.tree import JointTree
 from tests.identify import builders
 from tests.identify.builders import RobotText
@@ -432,6 +433,47 @@ def test_two_hinges_on_plates_fixed_to_an_arms_last_link_are_its_jaws() -> None:
     body = identify_urdf(apart.text()).body
     assert body is not None
     assert not any(limb.gripper for limb in body.limbs)
+
+
+def hinges_by_plate(tree: JointTree, names: list[str]) -> dict[str, list[Joint]]:
+    """The named joints of ``tree``, by the link each hangs from (as the jaw search keeps them)."""
+    by_parent: dict[str, list[Joint]] = {}
+    for name in names:
+        joint = tree.urdf.joint(name)
+        assert joint is not None
+        by_parent.setdefault(joint.parent, []).append(joint)
+    return by_parent
+
+
+def test_one_hinge_on_each_of_two_plates_fixed_to_one_body_is_a_pair_on_that_body() -> None:
+    by_parent = hinges_by_plate(tree_of(plated_arm()), ["H0", "H1"])
+    _pair_on_one_body(tree_of(plated_arm()), by_parent)
+    assert list(by_parent) == ["link4"]
+    assert [(j.name, j.parent) for j in by_parent["link4"]] == [("H0", "link4"), ("H1", "link4")]
+
+
+def test_a_hinge_on_the_body_itself_and_one_on_a_plate_are_left_where_they_hang() -> None:
+    robot = plated_arm(plates=1)
+    robot.joint("H_body", "revolute", "link4", "piece_body", '<axis xyz="1 0 0"/>')
+    tree = tree_of(robot)
+    by_parent = hinges_by_plate(tree, ["H0", "H_body"])
+    _pair_on_one_body(tree, by_parent)
+    assert {link: [j.name for j in joints] for link, joints in by_parent.items()} == {
+        "plate0": ["H0"],
+        "link4": ["H_body"],
+    }
+
+
+def test_a_plate_with_two_hinges_keeps_them_and_is_paired_with_no_other_plate() -> None:
+    robot = plated_arm()
+    robot.joint("H0b", "revolute", "plate0", "piece0b", '<axis xyz="1 0 0"/>')
+    tree = tree_of(robot)
+    by_parent = hinges_by_plate(tree, ["H0", "H0b", "H1"])
+    _pair_on_one_body(tree, by_parent)
+    assert {link: [j.name for j in joints] for link, joints in by_parent.items()} == {
+        "plate0": ["H0", "H0b"],
+        "plate1": ["H1"],
+    }
 
 
 def test_mirrored_hinges_each_carrying_a_fingertip_hinge_at_an_arms_end_are_its_jaws() -> None:

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import pytest
 
 from solver.identify import identify_urdf
@@ -31,6 +33,27 @@ def test_an_axis_is_turned_by_every_turn_above_it() -> None:
     assert joint is not None
     assert Poses(urdf).axis(joint) == pytest.approx((0.0, 1.0, 0.0), abs=1e-9)
     assert Poses(urdf).local_axis(joint) == pytest.approx((1.0, 0.0, 0.0))
+
+
+def test_a_joint_hung_from_a_body_above_it_is_written_in_that_bodys_frame() -> None:
+    # A palm 1 m out and turned a quarter about y; a plate 0.1 m out along the palm's x,
+    # rolled a quarter; a hinge 0.05 m up the plate's z, yawed a quarter, about its own x.
+    robot = RobotText("hung", root="base")
+    quarter = math.pi / 2
+    palm = builders.placed(robot, "p", "fixed", "base", "palm", xyz="1 0 0", rpy=f"0 {quarter} 0")
+    plate = builders.placed(robot, "f", "fixed", palm, "plate", xyz="0.1 0 0", rpy=f"{quarter} 0 0")
+    builders.placed(
+        robot, "h", "revolute", plate, "jaw", xyz="0 0 0.05", rpy=f"0 0 {quarter}", axis="1 0 0"
+    )
+    urdf = parse_urdf(robot.text(), strict=False)
+    joint = urdf.joint("h")
+    assert joint is not None
+    hung = Poses(urdf).hung_from("palm", joint)
+    # The plate's roll takes its z to the palm's -y; the hinge's yaw takes x to y, the roll y to z.
+    assert hung.parent == "palm"
+    assert hung.origin == pytest.approx((0.1, -0.05, 0.0), abs=1e-9)
+    assert hung.rpy == (0.0, 0.0, 0.0)
+    assert hung.axis == pytest.approx((0.0, 0.0, 1.0), abs=1e-9)
 
 
 def test_roll_pitch_yaw_is_urdfs_fixed_axis_order() -> None:
