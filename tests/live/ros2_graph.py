@@ -133,11 +133,13 @@ class Operator:
             for name in ("active_robot", "active_motion_control")
         }
         self.writer = self.writers["active_robot"]
-        self.reader: Any = DataReader(
-            self.participant,
-            Topic(self.participant, "rt/teleop_ui/ui_configuration", self.String),
-            qos=LATCHED,
+        # One topic object for the answers: a test writing hostile answers reuses it rather
+        # than creating the same topic again in this participant while the watcher's thread
+        # creates its own (once seen failing with DDS_RETCODE_BAD_PARAMETER under load).
+        self.answer_topic: Any = Topic(
+            self.participant, "rt/teleop_ui/ui_configuration", self.String
         )
+        self.reader: Any = DataReader(self.participant, self.answer_topic, qos=LATCHED)
         self.answers: list[Any] = []
 
     def activate(self, robot: str) -> None:

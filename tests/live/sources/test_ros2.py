@@ -411,7 +411,6 @@ def test_hostile_answers_and_a_10_mb_selection_end_in_notes_not_a_crash(
     """Issue 23 item 6, issue 30 item 7: `'[' * 200000` and a deeply nested object on the answer
     topic, a 10 MB active robot: bounded before decoding or echoing."""
     from cyclonedds.pub import DataWriter
-    from cyclonedds.topic import Topic
 
     from tests.live.ros2_robot import LATCHED
 
@@ -419,11 +418,7 @@ def test_hostile_answers_and_a_10_mb_selection_end_in_notes_not_a_crash(
     watch = watch_ros2()
     watch.wait_for(configured("/ugv1", rover_configuration(solution)), "/ugv1")
     operator = Operator(domain.id)
-    hostile: Any = DataWriter(
-        operator.participant,
-        Topic(operator.participant, "rt/teleop_ui/ui_configuration", operator.String),
-        qos=LATCHED,
-    )
+    hostile: Any = DataWriter(operator.participant, operator.answer_topic, qos=LATCHED)
     try:
         for text in ("[" * 200_000, '{"a":' * 100_000 + "1" + "}" * 100_000):
             mark = watch.mark()
