@@ -82,6 +82,9 @@ _SIDE = re.compile(r"(^|[_/-])(l|r|left|right)([_/-]|$)", re.IGNORECASE)
 _LAST_SIDE = re.compile(r"[_/-](l|r|left|right)$", re.IGNORECASE)
 # A link named for a camera (``camera_link``, ``link_nav_cam``, ``bb2_cam``; not ``camshaft``).
 _CAMERA_LINK = re.compile(r"cam(era)?([^a-z]|$)|realsense|kinect|openni|xtion", re.IGNORECASE)
+# A stereo pair's side in a camera's topic: a path segment ``stereo`` (``/stereo/left/image_raw``,
+# stereo_image_proc's layout), not ``stereographic``.
+_STEREO_TOPIC = re.compile(r"(^|/)stereo(/|$)", re.IGNORECASE)
 # The widest baseline of a stereo camera (metres): two frames farther apart are two cameras.
 _BASELINE = 0.3
 # A horizontal fan of rays narrower than this (radians, twenty degrees) points one way: a range
@@ -103,6 +106,8 @@ class Detection:
     source: str
     link: str | None = None
     vertical_samples: int | None = None
+    # Where a camera's images go (:func:`_image_topic`), "" when the description does not say.
+    topic: str = ""
 
 
 @dataclass(frozen=True, slots=True)
@@ -186,6 +191,20 @@ def _topic(plugin: PluginTag) -> str | None:
     return (f"{space}/{topic}" if space else topic) if topic else None
 
 
+def _image_topic(tag: SensorTag) -> str:
+    """Where a ``<sensor>``'s images go: its own ``<topic>``, else the camera name one of its
+    plugins publishes under (``cameraName``, ``camera_name``), in the namespace it names; ""
+    when neither is written."""
+    if tag.topic:
+        return tag.topic
+    for plugin in tag.plugins:
+        camera = (plugin.param("cameraName", "camera_name") or "").strip().strip("/")
+        if camera:
+            space = (plugin.param("robotNamespace", "namespace") or "").strip().strip("/")
+            return f"{space}/{camera}" if space else camera
+    return ""
+
+
 def _same_plugin(plugin: PluginTag) -> tuple[str, str, tuple[tuple[str, str], ...]]:
     """What makes two plugin declarations one: name, file name and settings."""
     return (plugin.name, plugin.filename, plugin.params)
@@ -211,7 +230,9 @@ def _element_detections(
                 link = urdf_links[link]  # a Gazebo <sensor> referring to a URDF <sensor> by name
             elif (joint := urdf.joint(link)) is not None:
                 link = joint.child  # a Gazebo <sensor> on a joint (a force/torque sensor)
-        detection = Detection(kind, tag.name or tag.type, source, link, tag.vertical_samples)
+        detection = Detection(
+            kind, tag.name or tag.type, source, link, tag.vertical_samples, _image_topic(tag)
+        )
         if kind == "dvl" and tag.type in _BEAM_TYPES:
             beams.add(id(detection))
         part = (tag.type or "").lower()
@@ -462,22 +483,17 @@ def _stream_of(
 def _stereo_pairs(found: list[Detection], urdf: Urdf) -> list[Detection]:
     """Two cameras that are one stereo camera, where the first of them was: named stereo, with
     names that differ only by a side (``wide_stereo_l_...`` and ``wide_stereo_r_...``); with
-    one name on two frames that differ only by a side (``duo3d_left_link`` and
-    ``duo3d_right_link``) on one rigid body, a stereo baseline apart and facing one way; or on
+    topics that differ only by a side under a ``stereo`` segment (``/stereo/left/image_raw``
+    and ``/stereo/right/image_raw``: :func:`_image_topic`) or with one name on two frames
+    that differ only by a side (``duo3d_left_link`` and ``duo3d_right_link``), on one rigid
+    body a stereo baseline apart and facing one way (:func:`_side_by_side`); or on
     one frame named for a camera, not the root, named for one device and then a side
     (``nav_cam/left`` and ``nav_cam/right``, a stereo head's two channels; ``left_eye_camera``
     and ``right_eye_camera`` are two eyes: :func:`_stereo_head`)."""
     pairs: dict[tuple[str, str, str], list[Detection]] = {}  # (by what, name, frame)
     for detection in found:
-        if detection.kind != "camera":
-            continue
-        if "stereo" in detection.name.lower():
-            pairs.setdefault(("name", _unsided(detection.name), ""), []).append(detection)
-        elif detection.link is not None and _SIDE.search(detection.link):
-            key = ("frame", detection.name, _unsided(detection.link))
-            pairs.setdefault(key, []).append(detection)
-        elif _stereo_head(detection, urdf):
-            key = ("sides", _unsided(detection.name), detection.link or "")
+        key = _pair_key(detection, urdf) if detection.kind == "camera" else None
+        if key is not None:
             pairs.setdefault(key, []).append(detection)
     poses: list[Poses] = []  # computed once, when two frames are compared
     known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
@@ -485,7 +501,7 @@ def _stereo_pairs(found: list[Detection], urdf: Urdf) -> list[Detection]:
     for key, pair in pairs.items():
         if len(pair) != 2:
             continue
-        if key[0] == "frame":
+        if key[0] in ("frame", "topic"):
             poses = poses or [Poses(urdf)]
             if not _side_by_side(pair[0], pair[1], poses[0], known):
                 continue
@@ -500,6 +516,20 @@ def _stereo_pairs(found: list[Detection], urdf: Urdf) -> list[Detection]:
                 Detection("stereo_camera", _pair_name(*both), detection.source, detection.link)
             )
     return kept
+
+
+def _pair_key(detection: Detection, urdf: Urdf) -> tuple[str, str, str] | None:
+    """What a camera and the other side of its stereo pair share (by what, name, frame), as
+    :func:`_stereo_pairs` tells them; None for a camera no pair can hold."""
+    if "stereo" in detection.name.lower():
+        return ("name", _unsided(detection.name), "")
+    if _STEREO_TOPIC.search(detection.topic):
+        return ("topic", _unsided(detection.topic), "")
+    if detection.link is not None and _SIDE.search(detection.link):
+        return ("frame", detection.name, _unsided(detection.link))
+    if _stereo_head(detection, urdf):
+        return ("sides", _unsided(detection.name), detection.link or "")
+    return None
 
 
 def _stereo_head(detection: Detection, urdf: Urdf) -> bool:

@@ -460,6 +460,56 @@ def test_two_cameras_on_a_left_and_a_right_frame_otherwise_stay_two(gap: float, 
     assert side_cameras(gap=gap, yaw=yaw) == [("camera", "camera"), ("camera", "camera")]
 
 
+def topic_cameras(*, gap: float, streams: tuple[str, str]) -> list[tuple[str, str]]:
+    """Two cameras named for their sides on two frames ``gap`` apart looking one way, each
+    publishing as ``streams`` says (a Gazebo ``<topic>`` or a ROS 1 plugin's camera name)."""
+    robot = builders.ugv()
+    for side, sign, stream in (("left", 1, streams[0]), ("right", -1, streams[1])):
+        link = builders.placed(
+            robot, f"{side}_eye_joint", "fixed", "base_link", f"{side}_eye",
+            xyz=f"0.2 {sign * gap / 2} 0.1",
+        )  # fmt: skip
+        robot.add(builders.gazebo_sensor(link, "camera", f"{side}_camera_sensor", stream))
+    return [(d.kind, d.name) for d in sensors_from_urdf(parse_urdf(robot.text()), load_profile())]
+
+
+def plugin_named(camera: str) -> str:
+    plugin = '<plugin name="cam" filename="libgazebo_ros_camera.so">'
+    return f"{plugin}<cameraName>{camera}</cameraName></plugin>"
+
+
+@pytest.mark.parametrize(
+    "streams",
+    [
+        ("<topic>/stereo/left/image_raw</topic>", "<topic>/stereo/right/image_raw</topic>"),
+        (plugin_named("stereo/left"), plugin_named("stereo/right")),
+    ],
+    ids=["gazebo topics", "ros 1 camera names"],
+)
+def test_two_cameras_publishing_as_a_stereo_pairs_sides_are_one_stereo_camera(
+    streams: tuple[str, str],
+) -> None:
+    assert topic_cameras(gap=0.1, streams=streams) == [
+        ("stereo_camera", "left+right_camera_sensor")
+    ]
+
+
+@pytest.mark.parametrize(
+    ("gap", "streams"),
+    [
+        (0.1, ("<topic>/cameras/left/image</topic>", "<topic>/cameras/right/image</topic>")),
+        (0.6, ("<topic>/stereo/left/image_raw</topic>", "<topic>/stereo/right/image_raw</topic>")),
+        (0.1, ("<topic>/stereographic/left</topic>", "<topic>/stereographic/right</topic>")),
+    ],
+    ids=["no stereo in the topics", "farther apart than a stereo baseline", "stereographic"],
+)
+def test_two_cameras_publishing_otherwise_stay_two(gap: float, streams: tuple[str, str]) -> None:
+    assert topic_cameras(gap=gap, streams=streams) == [
+        ("camera", "left_camera_sensor"),
+        ("camera", "right_camera_sensor"),
+    ]
+
+
 def test_two_cameras_of_one_name_on_two_wrists_that_move_apart_stay_two() -> None:
     robot = builders.ugv()
     for side, y in (("left", 0.03), ("right", -0.03)):

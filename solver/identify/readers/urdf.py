@@ -247,6 +247,9 @@ class SensorTag:
     sweep: float | None = None
     vertical_sweep: float | None = None
     max_range: float | None = None
+    # The topic a Gazebo ``<sensor>`` publishes on, its own ``<topic>`` element ("" when none;
+    # cut as a plugin setting is).
+    topic: str = ""
 
     @property
     def text(self) -> str:
@@ -838,6 +841,7 @@ def _sensor(
         sweep=None if low_angle is None or high_angle is None else abs(high_angle - low_angle),
         vertical_sweep=None if low_tilt is None or high_tilt is None else abs(high_tilt - low_tilt),
         max_range=_float(farthest.text if farthest is not None else None),
+        topic=(element.findtext("topic") or "").strip()[:_MAX_PARAM_TEXT],
     )
 
 
