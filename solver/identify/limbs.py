@@ -157,6 +157,9 @@ _MOST_LEG_JOINTS = 6
 # Six or more such chains that lie flat at rest, each reaching out from the body by this share
 # of its reach, are a walker's legs too (a hexapod drawn with its legs stretched out).
 _LEG_SPREAD = 0.5
+# Four or five such chains are legs too when they reach every way: their directions' mean (each
+# of length one) is shorter than this (a hand's fingers drawn flat reach one way, near 1).
+_EVERY_WAY = 0.5
 # One-joint chains turning whole (a wheel-leg walker's, RHex-like) on one body: legs when this
 # many, about parallel axes, on both sides and at this many places along the body.
 _WHOLE_TURN_LEGS = 6
@@ -1004,7 +1007,8 @@ def _alike_enough(group: list[Limb]) -> bool:
 
 def _legs_why(tree: JointTree, base: str, group: list[Limb], *, wheeled: bool) -> str:
     """Why alike chains around ``base`` are legs, or "" when they are not; ``wheeled``: the
-    body has wheels of its own (:func:`_at_corners`)."""
+    body has wheels of its own (:func:`_at_corners`; four chains reaching every way on it are
+    a rover's flippers or rockers, no legs)."""
     if len(group[0].joints) == 1:
         if len(group) >= _WHOLE_TURN_LEGS and _around(tree, base, group) and _parallel(tree, group):
             return (
@@ -1031,6 +1035,11 @@ def _legs_why(tree: JointTree, base: str, group: list[Limb], *, wheeled: bool) -
         return (
             "one of alike chains starting in mirrored pairs at the corners of one link (a"
             " walker's hips, its legs folded at rest: legs by place)"
+        )
+    if not wheeled and _spreads(tree, base, group) and _every_way(tree, group):
+        return (
+            "one of alike chains around one link, each reaching out flat from it, every way"
+            " (a walker's legs sprawled at rest, by place)"
         )
     return ""
 
@@ -1396,6 +1405,28 @@ def _spreads(tree: JointTree, base: str, group: list[Limb]) -> bool:
         if reach == 0 or out < _LEG_SPREAD * reach or end[2] - start[2] > _LEG_DROP * reach:
             return False
     return _both_sides(centre, placed)
+
+
+def _every_way(tree: JointTree, group: list[Limb]) -> bool:
+    """The chains reach every way from where they start: their directions at rest (first
+    joint to tip, each of length one) cancel, their mean shorter than :data:`_EVERY_WAY`. A
+    walker's legs sprawl around its body; a hand's fingers, drawn flat, reach one way."""
+    placed = chain_ends(tree, group)
+    if placed is None:
+        return False
+    units = [_unit_or_none(minus(end, start)) for start, end in placed]
+    if any(unit is None for unit in units):
+        return False
+    mean = centroid([unit for unit in units if unit is not None])
+    return math.hypot(*mean) < _EVERY_WAY
+
+
+def _unit_or_none(vector: Place) -> Place | None:
+    """``vector`` of length one, or None when it has no length (or a stranger's overflows)."""
+    length = math.hypot(*vector)
+    if not (math.isfinite(length) and length > _SAME_PLACE):
+        return None
+    return (vector[0] / length, vector[1] / length, vector[2] / length)
 
 
 def _spreads_from_hips(tree: JointTree, group: list[Limb]) -> bool:

@@ -1088,6 +1088,47 @@ def test_four_chains_reaching_out_flat_are_not_legs_by_that_rule() -> None:
     assert all("corners" in limb.why and "flat" not in limb.why for limb in legs)
 
 
+def sprawled_spider(*, every_way: bool = True) -> RobotText:
+    """Four unnamed three-joint chains, a yaw and two pitches each, each reaching 0.15 m out
+    flat and ending 2 cm below where it starts: with ``every_way``, from hips around a body
+    whose origin is off their middle (a CAD export's), out from its four sides (a spider's legs
+    sprawled at rest); else from one edge of it, side by side, all out along x (a hand's
+    fingers drawn flat)."""
+    robot = RobotText("sprawled", root="body")
+    hips = [(0.08, -0.1), (-0.12, -0.1), (0.08, 0.06), (-0.12, 0.06)]
+    if not every_way:
+        hips = [(0.1, y) for y in (-0.03, -0.01, 0.01, 0.03)]
+    for i, (x, y) in enumerate(hips):
+        out = (0.05 if x > 0 else -0.05, 0.05 if y > 0 else -0.05) if every_way else (0.07, 0.0)
+        step = f"{out[0]} {out[1]} -0.01"
+        hip = builders.placed(robot, f"j{3 * i}", "revolute", "body", f"a{i}", xyz=f"{x} {y} 0")
+        thigh = builders.placed(
+            robot, f"j{3 * i + 1}", "revolute", hip, f"b{i}", xyz=step, axis="1 0 0"
+        )
+        builders.placed(robot, f"j{3 * i + 2}", "revolute", thigh, f"c{i}", xyz=step, axis="1 0 0")
+    return robot
+
+
+def test_four_chains_sprawled_flat_every_way_from_a_body_are_a_walkers_legs() -> None:
+    result = identify_urdf(sprawled_spider().text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["leg"] * 4
+    assert "every way" in result.body.limbs[0].why
+    assert result.structure == "Quadruped"
+
+
+def test_four_chains_reaching_flat_one_way_or_on_a_wheeled_body_are_no_legs() -> None:
+    body = identify_urdf(sprawled_spider(every_way=False).text()).body
+    assert body is not None
+    assert not any(limb.kind == "leg" for limb in body.limbs)
+    # On a body with wheels of its own, four chains reaching every way are a rover's flippers.
+    rover = sprawled_spider()
+    builders.placed(rover, "wheel_joint", "continuous", "body", "wheel", axis="0 1 0")
+    body = identify_urdf(rover.text()).body
+    assert body is not None
+    assert not any(limb.kind == "leg" for limb in body.limbs)
+
+
 def tilted_hexapod(
     *,
     reach: float = 1.0,
