@@ -769,6 +769,8 @@ def test_a_body_that_shows_no_way_of_travelling_floats_when_its_packages_are_a_b
         "amr_fleet.launch",
         "lawn_mower: true",
         "mower_blade: off",
+        "<node pkg='lawn_tractor_sim'/>",
+        "tractor_params.yaml",
         "wheelchair_driver",
         "<node pkg='segway_sim'/>",
     ],
