@@ -219,6 +219,14 @@ def test_an_arm_moved_by_inverse_kinematics_to_a_target_is_sent_end_effector_goa
     # Spelled as other languages do (Indonesian ``invers``, German ``Kinematik``).
     for spelled in ("rospy.init_node('invers_kinematics_gui')", "inverseKinematik(x)"):
         assert list(shipped("Manipulator", spelled)) == ["End Effector"]
+    # KDL's chain solvers and TRAC-IK, by their headers and names.
+    for solver in (
+        "#include <kdl/chainiksolverpos_nr.hpp>",
+        "KDL::ChainIkSolverPos_LMA solver(chain);",
+        'result = arm_KDL_IK(result, rpy, xyz, "ur5");',
+        "#include <trac_ik/trac_ik.hpp>",
+    ):
+        assert list(shipped("Mobile Manipulator", solver)) == ["End Effector"]
     # A walker's inverse kinematics places its feet: no end effector of its own.
     assert shipped("Humanoid", script) == {}
     assert shipped("Quadruped", "legs = inverse_kinematics(foot)") == {}
