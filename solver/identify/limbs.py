@@ -790,12 +790,24 @@ def _hanging_pair(
         return None
     # Feet below the root's frame, or at it (a root drawn at the feet) below a pair of arms, or
     # with no other limb at all (a lower body drawn from the floor up).
-    alone = all(limb in (one, other) for limb in limbs)
+    alone = all(limb in (one, other) for limb in limbs) and not _on_a_waist(tree, one)
     if not below_the_root and not (
         at_the_root and (alone or _pair_above(tree, limbs, (one, other), placed, hips))
     ):
         return None
     return one, other
+
+
+def _on_a_waist(tree: JointTree, limb: Limb) -> bool:
+    """``limb`` hangs from a body that one hinge about the vertical turns on the root's rigid
+    body, nothing else movable between (a waist on a pedestal, a turntable): two arms hanging
+    at rest from its shoulders down to the pedestal, no lower body drawn from the floor up,
+    whose legs hang from the root's own body (or from a simulator's floating base)."""
+    name = moved_by(tree.urdf, limb.base, {})
+    joint = tree.urdf.joint(name) if name is not None else None
+    if joint is None or joint.type not in _TURNING or not _on_the_root(tree, joint.parent):
+        return False
+    return parallel(tree.poses.axis(joint), _UP)
 
 
 def _feet(

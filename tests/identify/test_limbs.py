@@ -2198,6 +2198,23 @@ def test_two_chains_hanging_to_the_feet_of_a_root_drawn_there_with_nothing_else_
     assert result.structure == "Biped"
 
 
+def test_two_chains_hanging_from_a_waist_that_turns_on_a_pedestal_are_a_torsos_arms() -> None:
+    # A torso on a pedestal: one hinge about the vertical turns it on the root, and its two
+    # six-joint arms hang at rest from shoulders 0.5 m up down to the pedestal. The same two
+    # chains on the root's own body are a lower body drawn from the floor up (above).
+    robot = RobotText("r")
+    waist = builders.placed(robot, "w", "revolute", robot.root, "torso")
+    for side, y in (("a", 0.08), ("b", -0.08)):
+        placed_chain(robot, waist, f"{side}j", start=f"0 {y} 0.5", steps=["0 0 -0.09"] * 5)
+    assert identify_urdf(robot.text()).structure == "Torso"
+    # A hinge about a level axis there (a body that bows) is no waist on a pedestal.
+    bowing = RobotText("r")
+    hip = builders.placed(bowing, "w", "revolute", bowing.root, "torso", axis="0 1 0")
+    for side, y in (("a", 0.08), ("b", -0.08)):
+        placed_chain(bowing, hip, f"{side}j", start=f"0 {y} 0.5", steps=["0 0 -0.09"] * 5)
+    assert identify_urdf(bowing.text()).structure == "Biped"
+
+
 def test_a_shoulder_written_shld_names_an_arm_as_shoulder_does() -> None:
     robot = RobotText("r")
     builders.wheeled_base(robot, 4)
