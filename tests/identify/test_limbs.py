@@ -1079,8 +1079,9 @@ def test_six_chains_on_brackets_fixed_to_one_body_reaching_out_flat_are_a_hexapo
 
 
 def test_four_chains_reaching_out_flat_are_not_legs_by_that_rule() -> None:
-    # Flat chains are legs only six or more at once (four could be a torso's arms); these four
-    # start in mirrored pairs at the body's corners, which is a walker's hips by another rule.
+    # The flat rule takes six or more at once; four reaching every way are legs by a later one
+    # (below), but these four start in mirrored pairs at the body's corners, a walker's hips by
+    # the rule read before it.
     result = identify_urdf(stretched_hexapod(4).text())
     assert result.body is not None
     legs = [limb for limb in result.body.limbs if limb.kind == "leg"]
