@@ -160,6 +160,8 @@ _LEG_SPREAD = 0.5
 # Four or five such chains are legs too when they reach every way: their directions' mean (each
 # of length one) is shorter than this (a hand's fingers drawn flat reach one way, near 1).
 _EVERY_WAY = 0.5
+# ... each chain counted as reaching along x or y where it goes this share of its length that way.
+_ALONG = 0.3
 # One-joint chains turning whole (a wheel-leg walker's, RHex-like) on one body: legs when this
 # many, about parallel axes, on both sides and at this many places along the body.
 _WHOLE_TURN_LEGS = 6
@@ -1421,16 +1423,19 @@ def _spreads(tree: JointTree, base: str, group: list[Limb]) -> bool:
 
 def _every_way(tree: JointTree, group: list[Limb]) -> bool:
     """The chains reach every way from where they start: their directions at rest (first
-    joint to tip, each of length one) cancel, their mean shorter than :data:`_EVERY_WAY`. A
-    walker's legs sprawl around its body; a hand's fingers, drawn flat, reach one way."""
+    joint to tip, each of length one) cancel, their mean shorter than :data:`_EVERY_WAY`, and
+    they reach both ways along x and both ways along y (each counted along an axis where it
+    goes at least :data:`_ALONG` of its length). A walker's legs sprawl around its body; a
+    hand's fingers, drawn flat, reach one way; a torso's arms held out, left and right."""
     placed = chain_ends(tree, group)
     if placed is None:
         return False
     units = [_unit_or_none(minus(end, start)) for start, end in placed]
     if any(unit is None for unit in units):
         return False
-    mean = centroid([unit for unit in units if unit is not None])
-    return math.hypot(*mean) < _EVERY_WAY
+    kept = [unit for unit in units if unit is not None]
+    ways = {(axis, unit[axis] > 0) for unit in kept for axis in (0, 1) if abs(unit[axis]) >= _ALONG}
+    return math.hypot(*centroid(kept)) < _EVERY_WAY and len(ways) == 4
 
 
 def _unit_or_none(vector: Place) -> Place | None:

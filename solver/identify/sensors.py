@@ -82,9 +82,10 @@ _SIDE = re.compile(r"(^|[_/-])(l|r|left|right)([_/-]|$)", re.IGNORECASE)
 _LAST_SIDE = re.compile(r"[_/-](l|r|left|right)$", re.IGNORECASE)
 # A link named for a camera (``camera_link``, ``link_nav_cam``, ``bb2_cam``; not ``camshaft``).
 _CAMERA_LINK = re.compile(r"cam(era)?([^a-z]|$)|realsense|kinect|openni|xtion", re.IGNORECASE)
-# A stereo pair's side in a camera's topic: a path segment ``stereo`` (``/stereo/left/image_raw``,
-# stereo_image_proc's layout), not ``stereographic``.
-_STEREO_TOPIC = re.compile(r"(^|/)stereo(/|$)", re.IGNORECASE)
+# A stereo pair in a camera's topic: ``stereo`` as a word (``/stereo/left/image_raw``,
+# stereo_image_proc's layout; ``/front_stereo/left``, ``/stereo_camera/right``), not
+# ``stereographic``.
+_STEREO_TOPIC = re.compile(r"(^|[^a-z])stereo([^a-z]|$)", re.IGNORECASE)
 # The widest baseline of a stereo camera (metres): two frames farther apart are two cameras.
 _BASELINE = 0.3
 # A horizontal fan of rays narrower than this (radians, twenty degrees) points one way: a range
@@ -187,8 +188,13 @@ def _topic(plugin: PluginTag) -> str | None:
     names (``robotNamespace``, ``namespace``), without leading slashes; None when it names no
     topic. A ``<sensor>``'s own ``<topic>`` element is not read."""
     topic = (plugin.param("topicName", "topic") or "").strip().lstrip("/")
+    return _namespaced(plugin, topic) if topic else None
+
+
+def _namespaced(plugin: PluginTag, name: str) -> str:
+    """``name`` under the namespace ``plugin`` names (``robotNamespace``, ``namespace``)."""
     space = (plugin.param("robotNamespace", "namespace") or "").strip().strip("/")
-    return (f"{space}/{topic}" if space else topic) if topic else None
+    return f"{space}/{name}" if space else name
 
 
 def _image_topic(tag: SensorTag) -> str:
@@ -200,8 +206,7 @@ def _image_topic(tag: SensorTag) -> str:
     for plugin in tag.plugins:
         camera = (plugin.param("cameraName", "camera_name") or "").strip().strip("/")
         if camera:
-            space = (plugin.param("robotNamespace", "namespace") or "").strip().strip("/")
-            return f"{space}/{camera}" if space else camera
+            return _namespaced(plugin, camera)
     return ""
 
 
@@ -483,7 +488,7 @@ def _stream_of(
 def _stereo_pairs(found: list[Detection], urdf: Urdf) -> list[Detection]:
     """Two cameras that are one stereo camera, where the first of them was: named stereo, with
     names that differ only by a side (``wide_stereo_l_...`` and ``wide_stereo_r_...``); with
-    topics that differ only by a side under a ``stereo`` segment (``/stereo/left/image_raw``
+    topics that differ only by a side beside a ``stereo`` word (``/stereo/left/image_raw``
     and ``/stereo/right/image_raw``: :func:`_image_topic`) or with one name on two frames
     that differ only by a side (``duo3d_left_link`` and ``duo3d_right_link``), on one rigid
     body a stereo baseline apart and facing one way (:func:`_side_by_side`); or on
@@ -495,6 +500,13 @@ def _stereo_pairs(found: list[Detection], urdf: Urdf) -> list[Detection]:
         key = _pair_key(detection, urdf) if detection.kind == "camera" else None
         if key is not None:
             pairs.setdefault(key, []).append(detection)
+    # Topics that pair no two cameras (two rigs of one macro, each on its own frames, publish
+    # alike): those cameras pair as their frames say.
+    for key in [key for key, group in pairs.items() if key[0] == "topic" and len(group) != 2]:
+        for detection in pairs.pop(key):
+            fallback = _pair_key(detection, urdf, by_topic=False)
+            if fallback is not None:
+                pairs.setdefault(fallback, []).append(detection)
     poses: list[Poses] = []  # computed once, when two frames are compared
     known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
     merged: dict[int, list[Detection]] = {}
@@ -518,13 +530,17 @@ def _stereo_pairs(found: list[Detection], urdf: Urdf) -> list[Detection]:
     return kept
 
 
-def _pair_key(detection: Detection, urdf: Urdf) -> tuple[str, str, str] | None:
+def _pair_key(
+    detection: Detection, urdf: Urdf, *, by_topic: bool = True
+) -> tuple[str, str, str] | None:
     """What a camera and the other side of its stereo pair share (by what, name, frame), as
-    :func:`_stereo_pairs` tells them; None for a camera no pair can hold."""
+    :func:`_stereo_pairs` tells them (``by_topic``: a stereo topic naming a side counts);
+    None for a camera no pair can hold."""
     if "stereo" in detection.name.lower():
         return ("name", _unsided(detection.name), "")
-    if _STEREO_TOPIC.search(detection.topic):
-        return ("topic", _unsided(detection.topic), "")
+    topic = detection.topic
+    if by_topic and _STEREO_TOPIC.search(topic) and _SIDE.search(topic):
+        return ("topic", _unsided(topic), "")
     if detection.link is not None and _SIDE.search(detection.link):
         return ("frame", detection.name, _unsided(detection.link))
     if _stereo_head(detection, urdf):

@@ -1089,19 +1089,24 @@ def test_four_chains_reaching_out_flat_are_not_legs_by_that_rule() -> None:
     assert all("corners" in limb.why and "flat" not in limb.why for limb in legs)
 
 
-def sprawled_spider(*, every_way: bool = True) -> RobotText:
-    """Four unnamed three-joint chains, a yaw and two pitches each, each reaching 0.15 m out
-    flat and ending 2 cm below where it starts: with ``every_way``, from hips around a body
+def sprawled_spider(*, way: str = "every", rise: float = -0.01) -> RobotText:
+    """Four unnamed three-joint chains, a yaw and two pitches each, each of two steps that
+    rise by ``rise`` (2 cm down, at -0.01): with ``way`` "every", from hips around a body
     whose origin is off their middle (a CAD export's), out from its four sides (a spider's legs
-    sprawled at rest); else from one edge of it, side by side, all out along x (a hand's
-    fingers drawn flat)."""
+    sprawled at rest); "one", from one edge of it, side by side, all out along x (a hand's
+    fingers drawn flat); "sideways", two on each side reaching straight out along y (a
+    torso's four arms held out)."""
     robot = RobotText("sprawled", root="body")
     hips = [(0.08, -0.1), (-0.12, -0.1), (0.08, 0.06), (-0.12, 0.06)]
-    if not every_way:
+    if way == "one":
         hips = [(0.1, y) for y in (-0.03, -0.01, 0.01, 0.03)]
     for i, (x, y) in enumerate(hips):
-        out = (0.05 if x > 0 else -0.05, 0.05 if y > 0 else -0.05) if every_way else (0.07, 0.0)
-        step = f"{out[0]} {out[1]} -0.01"
+        out = {
+            "every": (0.05 if x > 0 else -0.05, 0.05 if y > 0 else -0.05),
+            "one": (0.07, 0.0),
+            "sideways": (0.0, 0.07 if y > 0 else -0.07),
+        }[way]
+        step = f"{out[0]} {out[1]} {rise}"
         hip = builders.placed(robot, f"j{3 * i}", "revolute", "body", f"a{i}", xyz=f"{x} {y} 0")
         thigh = builders.placed(
             robot, f"j{3 * i + 1}", "revolute", hip, f"b{i}", xyz=step, axis="1 0 0"
@@ -1118,10 +1123,22 @@ def test_four_chains_sprawled_flat_every_way_from_a_body_are_a_walkers_legs() ->
     assert result.structure == "Quadruped"
 
 
-def test_four_chains_reaching_flat_one_way_or_on_a_wheeled_body_are_no_legs() -> None:
-    body = identify_urdf(sprawled_spider(every_way=False).text()).body
+@pytest.mark.parametrize(
+    "robot",
+    [
+        sprawled_spider(way="one"),
+        sprawled_spider(way="sideways"),
+        sprawled_spider(rise=0.025),
+    ],
+    ids=["a hand's fingers drawn flat", "a torso's arms held out", "chains rising every way"],
+)
+def test_four_chains_not_sprawled_flat_every_way_are_no_legs(robot: RobotText) -> None:
+    body = identify_urdf(robot.text()).body
     assert body is not None
     assert not any(limb.kind == "leg" for limb in body.limbs)
+
+
+def test_four_chains_sprawled_every_way_on_a_wheeled_body_are_no_legs() -> None:
     # On a body with wheels of its own, four chains reaching every way are a rover's flippers.
     rover = sprawled_spider()
     builders.placed(rover, "wheel_joint", "continuous", "body", "wheel", axis="0 1 0")
@@ -2199,21 +2216,38 @@ def test_two_chains_hanging_to_the_feet_of_a_root_drawn_there_with_nothing_else_
     assert result.structure == "Biped"
 
 
+def hanging_from(joints: list[tuple[str, str]]) -> RobotText:
+    """Two six-joint chains hanging straight down from shoulders 0.5 m up to a hand's breadth
+    below the root, on a body that ``joints`` (kind, axis each) carry from the root."""
+    robot = RobotText("r")
+    body = robot.root
+    for i, (kind, axis) in enumerate(joints):
+        body = builders.placed(robot, f"w{i}", kind, body, f"torso{i}", axis=axis)
+    for side, y in (("a", 0.08), ("b", -0.08)):
+        placed_chain(robot, body, f"{side}j", start=f"0 {y} 0.5", steps=["0 0 -0.09"] * 5)
+    return robot
+
+
 def test_two_chains_hanging_from_a_waist_that_turns_on_a_pedestal_are_a_torsos_arms() -> None:
     # A torso on a pedestal: one hinge about the vertical turns it on the root, and its two
-    # six-joint arms hang at rest from shoulders 0.5 m up down to the pedestal. The same two
-    # chains on the root's own body are a lower body drawn from the floor up (above).
-    robot = RobotText("r")
-    waist = builders.placed(robot, "w", "revolute", robot.root, "torso")
-    for side, y in (("a", 0.08), ("b", -0.08)):
-        placed_chain(robot, waist, f"{side}j", start=f"0 {y} 0.5", steps=["0 0 -0.09"] * 5)
-    assert identify_urdf(robot.text()).structure == "Torso"
-    # A hinge about a level axis there (a body that bows) is no waist on a pedestal.
-    bowing = RobotText("r")
-    hip = builders.placed(bowing, "w", "revolute", bowing.root, "torso", axis="0 1 0")
-    for side, y in (("a", 0.08), ("b", -0.08)):
-        placed_chain(bowing, hip, f"{side}j", start=f"0 {y} 0.5", steps=["0 0 -0.09"] * 5)
-    assert identify_urdf(bowing.text()).structure == "Biped"
+    # six-joint arms hang at rest down to the pedestal. The same two chains on the root's own
+    # body are a lower body drawn from the floor up (above).
+    assert identify_urdf(hanging_from([("revolute", "0 0 1")]).text()).structure == "Torso"
+
+
+@pytest.mark.parametrize(
+    "joints",
+    [
+        [("revolute", "0 1 0")],
+        [("prismatic", "0 0 1")],
+        [("revolute", "0 1 0"), ("revolute", "0 0 1")],
+    ],
+    ids=["a hinge about a level axis", "a vertical slide", "a vertical hinge not on the root"],
+)
+def test_two_chains_hanging_from_a_body_no_waist_turns_on_the_root_stay_legs(
+    joints: list[tuple[str, str]],
+) -> None:
+    assert identify_urdf(hanging_from(joints).text()).structure == "Biped"
 
 
 def test_a_shoulder_written_shld_names_an_arm_as_shoulder_does() -> None:

@@ -483,8 +483,9 @@ def plugin_named(camera: str) -> str:
     [
         ("<topic>/stereo/left/image_raw</topic>", "<topic>/stereo/right/image_raw</topic>"),
         (plugin_named("stereo/left"), plugin_named("stereo/right")),
+        ("<topic>/front_stereo/left</topic>", "<topic>/front_stereo/right</topic>"),
     ],
-    ids=["gazebo topics", "ros 1 camera names"],
+    ids=["gazebo topics", "ros 1 camera names", "a stereo word in a topic's segment"],
 )
 def test_two_cameras_publishing_as_a_stereo_pairs_sides_are_one_stereo_camera(
     streams: tuple[str, str],
@@ -500,14 +501,36 @@ def test_two_cameras_publishing_as_a_stereo_pairs_sides_are_one_stereo_camera(
         (0.1, ("<topic>/cameras/left/image</topic>", "<topic>/cameras/right/image</topic>")),
         (0.6, ("<topic>/stereo/left/image_raw</topic>", "<topic>/stereo/right/image_raw</topic>")),
         (0.1, ("<topic>/stereographic/left</topic>", "<topic>/stereographic/right</topic>")),
+        (0.1, ("<topic>/stereo/image_raw</topic>", "<topic>/stereo/image_raw</topic>")),
     ],
-    ids=["no stereo in the topics", "farther apart than a stereo baseline", "stereographic"],
+    ids=[
+        "no stereo in the topics",
+        "farther apart than a stereo baseline",
+        "stereographic",
+        "one topic naming no side",
+    ],
 )
 def test_two_cameras_publishing_otherwise_stay_two(gap: float, streams: tuple[str, str]) -> None:
     assert topic_cameras(gap=gap, streams=streams) == [
         ("camera", "left_camera_sensor"),
         ("camera", "right_camera_sensor"),
     ]
+
+
+def test_two_rigs_of_one_macro_publishing_alike_are_two_stereo_cameras_by_their_frames() -> None:
+    # A front and a rear rig, every camera named alike and publishing on the macro's fixed
+    # topics: four cameras on one topic pair no two by it, and each rig pairs by its frames.
+    robot = builders.ugv()
+    for rig, x in (("front", 0.3), ("rear", -0.3)):
+        for side, y in (("left", 0.05), ("right", -0.05)):
+            link = builders.placed(
+                robot, f"{rig}_{side}_joint", "fixed", "base_link", f"{rig}_{side}_cam",
+                xyz=f"{x} {y} 0.2",
+            )  # fmt: skip
+            topic = f"<topic>/stereo/{side}/image_raw</topic>"
+            robot.add(builders.gazebo_sensor(link, "camera", "cam", topic))
+    found = [d.kind for d in sensors_from_urdf(parse_urdf(robot.text()), load_profile())]
+    assert found == ["stereo_camera", "stereo_camera"]
 
 
 def test_two_cameras_of_one_name_on_two_wrists_that_move_apart_stay_two() -> None:
