@@ -157,7 +157,7 @@ _MOST_LEG_JOINTS = 6
 # Six or more such chains that lie flat at rest, each reaching out from the body by this share
 # of its reach, are a walker's legs too (a hexapod drawn with its legs stretched out).
 _LEG_SPREAD = 0.5
-# Four or five such chains are legs too when they reach every way: their directions' mean (each
+# Four or more such chains are legs too when they reach every way: their directions' mean (each
 # of length one) is shorter than this (a hand's fingers drawn flat reach one way, near 1).
 _EVERY_WAY = 0.5
 # ... each chain counted as reaching along x or y where it goes this share of its length that way.
