@@ -1430,12 +1430,16 @@ def _every_way(tree: JointTree, group: list[Limb]) -> bool:
     placed = chain_ends(tree, group)
     if placed is None:
         return False
-    units = [_unit_or_none(minus(end, start)) for start, end in placed]
-    if any(unit is None for unit in units):
-        return False
-    kept = [unit for unit in units if unit is not None]
-    ways = {(axis, unit[axis] > 0) for unit in kept for axis in (0, 1) if abs(unit[axis]) >= _ALONG}
-    return math.hypot(*centroid(kept)) < _EVERY_WAY and len(ways) == 4
+    units = []
+    for start, end in placed:
+        unit = _unit_or_none(minus(end, start))
+        if unit is None:
+            return False
+        units.append(unit)
+    ways = {
+        (axis, unit[axis] > 0) for unit in units for axis in (0, 1) if abs(unit[axis]) >= _ALONG
+    }
+    return math.hypot(*centroid(units)) < _EVERY_WAY and len(ways) == 4
 
 
 def _unit_or_none(vector: Place) -> Place | None:
