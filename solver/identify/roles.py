@@ -419,7 +419,8 @@ class RoleReader:
         # Wheels first: a wheel's motor link may be named *_rotor.
         if self.matches("wheel", joint):
             return Role(joint.name, "wheel", self._named("wheel", joint))
-        if self.matches("rotor", joint) and not carries:
+        # A gripper's part first: an arm's gripper servo horn may be named *_prop_link.
+        if self.matches("rotor", joint) and not carries and not self.matches("gripper", joint):
             return Role(joint.name, "rotor", self._named("rotor", joint) + ", a spinning leaf")
         if carries or not joint.endless:
             return None

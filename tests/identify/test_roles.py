@@ -355,6 +355,21 @@ def test_steering_motors_carrying_wheels_are_no_rotors() -> None:
     assert identify_urdf(swerve.text()).structure != "UAV"
 
 
+def test_a_grippers_spinning_part_named_a_prop_is_the_grippers_and_flies_nothing() -> None:
+    # A servo gripper's horn turns without limits on a leaf link named after it
+    # (``left_gripper`` into ``left/gripper_prop_link``): one on each of two arms is no pair
+    # of rotors, and the wheeled base carrying the arms is not flown.
+    robot = RobotText("two_armed_base")
+    builders.wheeled_base(robot, 4)
+    for side in ("left", "right"):
+        tip = builders.arm(robot, robot.root, f"{side}_")
+        robot.joint(f"{side}_gripper", "continuous", tip, f"{side}/gripper_prop_link")
+    result = identify_urdf(robot.text())
+    assert result.structure == "Mobile Manipulator"
+    found = {role.joint: role.role for role in result.roles}
+    assert found["left_gripper"] == found["right_gripper"] == "finger"
+
+
 def ball_robot(params: str) -> RobotText:
     """A ball that rolls on two unnamed joints (a spin about z, a roll about x), moved by a
     plugin of its own (``libball_controller.so``) with ``params``."""
