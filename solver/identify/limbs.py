@@ -162,6 +162,8 @@ _LEG_SPREAD = 0.5
 _EVERY_WAY = 0.5
 # ... each chain counted as reaching along x or y where it goes this share of its length that way.
 _ALONG = 0.3
+# Chains named as arms are legs so sprawled when there are this many (a torso holds fewer).
+_SPRAWLED_ARMS = 5
 # One-joint chains turning whole (a wheel-leg walker's, RHex-like) on one body: legs when this
 # many, about parallel axes, on both sides and at this many places along the body.
 _WHOLE_TURN_LEGS = 6
@@ -973,10 +975,13 @@ def legs_by_place(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     legs: dict[int, str] = {}
     turns: dict[str, int] = {}
     wheeled = _wheeled(tree)
-    for base, group in _chains_by_carrier(tree, limbs):
+    for base, kind, group in _chains_by_carrier(tree, limbs):
         if not _alike_enough(group) or not _on_the_trunk(tree, base, turns):
             continue  # a hand's fingers past an arm's joints: legs hang from the trunk
-        why = _legs_why(tree, base, group, wheeled=wheeled)
+        if kind == "named":
+            why = _sprawled_arms_why(tree, base, group, wheeled=wheeled)
+        else:
+            why = _legs_why(tree, base, group, wheeled=wheeled)
         if why:
             legs.update((id(limb), why) for limb in group)
     if not legs:
@@ -990,24 +995,24 @@ def legs_by_place(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     )
 
 
-def _chains_by_carrier(tree: JointTree, limbs: list[Limb]) -> list[tuple[str, list[Limb]]]:
-    """The unnamed chains that could be legs, grouped by the body carrying them and by whether
-    they are one-joint chains that turn whole (a wheel-leg walker's) or not: a spinning leaf
-    beside a hexapod's legs is no leg of it. Chains on links fixed to one body hang from that
-    body (a hip bracket each)."""
-    by_base: dict[tuple[str, bool], list[Limb]] = {}
+def _chains_by_carrier(
+    tree: JointTree, limbs: list[Limb]
+) -> list[tuple[str, str, list[Limb]]]:
+    """The chains that could be legs, grouped by the body carrying them and by their kind:
+    unnamed chains (``chain``), one-joint chains that turn whole (``whole``, a wheel-leg
+    walker's: a spinning leaf beside a hexapod's legs is no leg of it), and chains named as
+    arms with no gripper (``named``). Chains on links fixed to one body hang from that body (a
+    hip bracket each)."""
+    by_base: dict[tuple[str, str], list[Limb]] = {}
     known: dict[str, str | None] = {}
     for limb in limbs:
-        if (
-            limb.kind in ("arm", "other")
-            and not limb.named
-            and not limb.gripper
-            and _LEG_JOINTS[0] <= len(limb.joints) <= _MOST_LEG_JOINTS
-        ):
-            by_base.setdefault((_carrier(tree, limb.base, known), False), []).append(limb)
+        long_enough = _LEG_JOINTS[0] <= len(limb.joints) <= _MOST_LEG_JOINTS
+        if limb.kind in ("arm", "other") and not limb.gripper and long_enough:
+            kind = "named" if limb.named else "chain"
+            by_base.setdefault((_carrier(tree, limb.base, known), kind), []).append(limb)
         elif limb.kind == "other" and len(limb.joints) == 1 and _turns_whole(tree, limb):
-            by_base.setdefault((_carrier(tree, limb.base, known), True), []).append(limb)
-    return [(base, group) for (base, _), group in by_base.items()]
+            by_base.setdefault((_carrier(tree, limb.base, known), "whole"), []).append(limb)
+    return [(base, kind, group) for (base, kind), group in by_base.items()]
 
 
 def _alike_enough(group: list[Limb]) -> bool:
@@ -1056,6 +1061,21 @@ def _legs_why(tree: JointTree, base: str, group: list[Limb], *, wheeled: bool) -
             " (a walker's legs sprawled at rest, by place)"
         )
     return ""
+
+
+def _sprawled_arms_why(tree: JointTree, base: str, group: list[Limb], *, wheeled: bool) -> str:
+    """Why alike chains named as arms are legs, or "": :data:`_SPRAWLED_ARMS` or more with no
+    gripper, on a body with no wheels, each reaching out flat from the link they hang from,
+    every way (a walker whose makers named its legs' parts shoulders and arms; no body holds
+    so many arms sprawled so)."""
+    if len(group) < _SPRAWLED_ARMS or wheeled:
+        return ""
+    if not (_spreads(tree, base, group) and _every_way(tree, group)):
+        return ""
+    return (
+        f"one of {len(group)} alike chains named as arms around one link, each reaching out flat"
+        " from it, every way (a walker's legs sprawled at rest, named as arms: by place)"
+    )
 
 
 def _rolls(tree: JointTree) -> bool:

@@ -1147,6 +1147,74 @@ def test_four_chains_sprawled_every_way_on_a_wheeled_body_are_no_legs() -> None:
     assert not any(limb.kind == "leg" for limb in body.limbs)
 
 
+def star_of_arms(count: int, *, fan: bool = False) -> RobotText:
+    """``count`` alike three-joint chains whose makers named them as arms (``limb<i>_shoulder``,
+    ``limb<i>_upper_arm``, ``limb<i>_lower_arm``), spaced evenly round a disc and reaching
+    straight out from it, flat, a little down: a pentapod's legs drawn sprawled at rest; with
+    ``fan``, spaced over its front half only (arms fanned out forward, not every way)."""
+    robot = RobotText("star", root="disc")
+    for i in range(count):
+        turn = (i / (count - 1) - 0.5) * 0.9 * math.pi if fan else 2 * math.pi * i / count
+        x, y = round(math.cos(turn), 4), round(math.sin(turn), 4)
+        step = f"{0.06 * x} {0.06 * y} -0.01"
+        shoulder = builders.placed(
+            robot,
+            f"limb{i}_shoulder",
+            "revolute",
+            "disc",
+            f"limb{i}_shoulder_link",
+            xyz=f"{0.1 * x} {0.1 * y} 0",
+        )
+        upper = builders.placed(
+            robot,
+            f"limb{i}_upper_arm_joint",
+            "revolute",
+            shoulder,
+            f"limb{i}_upper_arm",
+            xyz=step,
+            axis=f"{-y} {x} 0",
+        )
+        builders.placed(
+            robot,
+            f"limb{i}_lower_arm_joint",
+            "revolute",
+            upper,
+            f"limb{i}_lower_arm",
+            xyz=step,
+            axis=f"{-y} {x} 0",
+        )
+    return robot
+
+
+def test_five_chains_named_as_arms_sprawled_flat_every_way_are_a_walkers_legs() -> None:
+    result = identify_urdf(star_of_arms(5).text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["leg"] * 5
+    assert "named as arms" in result.body.limbs[0].why
+    assert result.structure == "Hexapod"
+
+
+@pytest.mark.parametrize(
+    ("robot", "arms"),
+    [(star_of_arms(4), 4), (star_of_arms(5, fan=True), 5)],
+    ids=["four every way, a torso's arms may be", "five fanned out forward"],
+)
+def test_chains_named_as_arms_fewer_than_five_or_not_every_way_stay_arms(
+    robot: RobotText, arms: int
+) -> None:
+    body = identify_urdf(robot.text()).body
+    assert body is not None
+    assert [limb.kind for limb in body.limbs] == ["arm"] * arms
+
+
+def test_five_chains_named_as_arms_on_a_wheeled_body_stay_arms() -> None:
+    rover = star_of_arms(5)
+    builders.placed(rover, "wheel_joint", "continuous", "disc", "wheel", axis="0 1 0")
+    body = identify_urdf(rover.text()).body
+    assert body is not None
+    assert [limb.kind for limb in body.limbs].count("arm") == 5
+
+
 def tilted_hexapod(
     *,
     reach: float = 1.0,
