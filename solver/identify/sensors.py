@@ -62,8 +62,9 @@ _DEVICE_DEPTH = 2
 # Kinds whose one device is declared as parts on one link: an IMU's accelerometer and
 # gyrometer, an RGB-D camera's colour and depth streams (each read as a depth camera).
 _COMPOSED = ("imu", "depth_camera")
-# Kinds a ros2_control sensor cannot be, whatever its name: its state interfaces carry numbers,
-# no image or scan (a `camera_pose` reads a pose).
+# Kinds a ros2_control sensor cannot be told by its name: its state interfaces carry numbers,
+# no image or scan (a `camera_pose` reads a pose); a camera a simulator's hardware renders says
+# so by the image topics its parameters name (readers/urdf.py).
 _IMAGING = frozenset(
     {"camera", "depth_camera", "stereo_camera", "wide_angle_camera", "thermal_camera", "lidar"}
 )
@@ -227,7 +228,7 @@ def _element_detections(
     urdf_links = {t.name: t.link for t in urdf.sensors if t.origin == "urdf" and t.link}
     for tag in urdf.sensors:
         kind = element_kind(tag, profile)
-        if tag.origin == "ros2_control" and kind in _IMAGING:
+        if tag.origin == "ros2_control" and tag.type == "unknown" and kind in _IMAGING:
             kind = "unknown"  # told by a name it cannot be: dropped with the other unknown ones
         link = tag.link
         if link is not None and not urdf.has_link(link):

@@ -1016,6 +1016,26 @@ def test_a_ros2_control_sensor_is_told_by_what_it_reads() -> None:
     assert sorted(found) == [("force_torque", "Force Sensor", 2), ("imu", None, 1)]
 
 
+def rendered_camera(name: str, *topics: str) -> str:
+    """A ``<ros2_control>`` system with one ``<sensor>`` naming ``topics`` (parameters
+    ``<topic>_topic``), as mujoco_ros2_control declares a camera it renders."""
+    params = "".join(f'<param name="{t}_topic">/{name}/{t}</param>' for t in topics)
+    return (
+        f'<ros2_control name="{name}_sim" type="system"><hardware><plugin>mujoco</plugin></hardware>'
+        f'<sensor name="{name}"><param name="frame_name">{name}_frame</param>{params}'
+        "</sensor></ros2_control>"
+    )
+
+
+def test_a_ros2_control_sensor_naming_where_its_images_go_is_a_camera_a_simulator_renders() -> None:
+    found = kinds(
+        rendered_camera("front", "info", "image", "depth"),
+        rendered_camera("rear", "image"),
+        rendered_camera("mast", "info"),  # no image topic: told by its name, and it says nothing
+    )
+    assert sorted(found) == [("camera", "2D Camera", 1), ("depth_camera", "RGB-D Camera", 1)]
+
+
 def test_a_ros2_control_sensor_whose_readings_say_nothing_is_told_by_its_name() -> None:
     """A hand's fingertip sensors read x, y, z and its palm's ranger a value (a MuJoCo hand's
     ros2_control): their names say what they are; a name that says nothing adds none."""

@@ -876,7 +876,10 @@ def _hardware_sensors(root: etree._Element) -> list[SensorTag]:
     angular velocity or linear acceleration an IMU, a magnetic field a magnetometer, a fluid
     pressure a barometer (a depth gauge below the water), a velocity a DVL named so; a
     ``<sensor>`` whose readings say none of these (``x``, ``y``, ``z``; ``value``) is of type
-    ``unknown``, told by its name as a URDF ``<sensor>`` with no type is. A pose
+    ``unknown``, told by its name as a URDF ``<sensor>`` with no type is (but never as a camera
+    or a lidar by its name alone); one whose parameters name an image topic is a camera a
+    simulator renders (mujoco_ros2_control's), a depth camera when they name a depth topic
+    too. A pose
     (``tcp_pose``) is computed, not read, and a block named as an estimate
     (``external_wrench_in_base``) is the controller's reckoning from the joints' torques, not a
     device of its own. A block of ``type="sensor"`` that writes its readings on joints instead
@@ -900,7 +903,7 @@ def _device(element: etree._Element, states: list[etree._Element]) -> SensorTag 
     read, or None (see :func:`_hardware_sensors`)."""
     name = (element.get("name") or "").strip()
     readings = {(state.get("name") or "").strip().lower().split(".", 1)[0] for state in states}
-    kind = _hardware_kind(name, readings)
+    kind = _hardware_kind(name, readings) or _camera_by_topics(element)
     if kind is None and element.tag == "sensor":
         kind = "unknown"  # its readings do not say (x, y, z; value): told by its name
     if kind is None or _ESTIMATE.search(name):
@@ -914,6 +917,20 @@ def _device(element: etree._Element, states: list[etree._Element]) -> SensorTag 
         None,
     )
     return SensorTag(name, kind, frame, line_of(element), "ros2_control")
+
+
+def _camera_by_topics(element: etree._Element) -> str | None:
+    """A camera a simulator's hardware interface renders (mujoco_ros2_control's ``<sensor>``
+    whose parameters name the topics its images go to): ``depth`` when it names a depth image's
+    topic too, else ``camera``; None when it names no image topic."""
+    topics = {
+        (param.get("name") or "").strip()
+        for param in element.findall("param")
+        if (param.text or "").strip()
+    }
+    if "image_topic" not in topics:
+        return None
+    return "depth" if "depth_topic" in topics else "camera"
 
 
 def _hardware_kind(name: str, readings: set[str]) -> str | None:
@@ -937,7 +954,7 @@ _HARDWARE_READINGS = (
 _DVL_NAME = re.compile(r"dvl|doppler", re.IGNORECASE)
 # An attitude a ros2_control sensor reads (its roll and pitch): an IMU's.
 _ATTITUDE = frozenset({"roll", "pitch"})
-_FRAME_PARAMS = frozenset({"frame_id", "sensor_frame", "frame"})
+_FRAME_PARAMS = frozenset({"frame_id", "sensor_frame", "frame", "frame_name"})
 _ESTIMATE = re.compile(r"estimat|external_(wrench|force|torque)", re.IGNORECASE)
 
 
