@@ -995,9 +995,7 @@ def legs_by_place(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     )
 
 
-def _chains_by_carrier(
-    tree: JointTree, limbs: list[Limb]
-) -> list[tuple[str, str, list[Limb]]]:
+def _chains_by_carrier(tree: JointTree, limbs: list[Limb]) -> list[tuple[str, str, list[Limb]]]:
     """The chains that could be legs, grouped by the body carrying them and by their kind:
     unnamed chains (``chain``), one-joint chains that turn whole (``whole``, a wheel-leg
     walker's: a spinning leaf beside a hexapod's legs is no leg of it), and chains named as
