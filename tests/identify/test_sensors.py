@@ -1021,7 +1021,8 @@ def rendered_camera(name: str, *topics: str) -> str:
     ``<topic>_topic``), as mujoco_ros2_control declares a camera it renders."""
     params = "".join(f'<param name="{t}_topic">/{name}/{t}</param>' for t in topics)
     return (
-        f'<ros2_control name="{name}_sim" type="system"><hardware><plugin>mujoco</plugin></hardware>'
+        f'<ros2_control name="{name}_sim" type="system">'
+        "<hardware><plugin>mujoco</plugin></hardware>"
         f'<sensor name="{name}"><param name="frame_name">{name}_frame</param>{params}'
         "</sensor></ros2_control>"
     )
