@@ -424,6 +424,10 @@ class RoleReader:
             return Role(joint.name, "rotor", self._named("rotor", joint) + ", a spinning leaf")
         if carries or not joint.endless:
             return None
+        return self._by_turned_part(joint)
+
+    def _by_turned_part(self, joint: Joint) -> Role | None:
+        """An endless joint carrying nothing that moves, by the named part fixed below it."""
         propeller = self._turns(joint, "rotor")
         if propeller is not None:
             kind = "thruster" if self.marine else "rotor"
