@@ -150,7 +150,9 @@ def _compile(request: dict[str, Any], *, seccomp: bool) -> dict[str, Any]:
             text = document.toxml()
     if len(text.encode("utf-8")) > _MAX_FILE_BYTES:
         raise Refused(f"xacro output is larger than {_MAX_FILE_BYTES} bytes; refused")
-    warnings = [line.strip() for line in captured.getvalue().splitlines() if line.strip()]
+    warnings = fence.flaws + [
+        line.strip() for line in captured.getvalue().splitlines() if line.strip()
+    ]
     missing = fence.confinement.missing
     if missing:
         warnings.insert(
@@ -185,6 +187,7 @@ class _Fence:
         self.roots = tuple(root.resolve() for root in roots)
         self._open: Callable[..., Any] = builtins.open
         self.confinement = Confinement(0, seccomp=seccomp)
+        self.flaws: list[str] = []  # what the lenient parse of each file read past
 
     def check(self, file: str | os.PathLike[str]) -> Path:
         path = Path(os.fspath(file))
@@ -206,11 +209,14 @@ class _Fence:
         return data
 
     def read_text(self, file: str | os.PathLike[str]) -> str:
+        from solver.errors import Fault
         from solver.identify.readers.safexml import parse_xml
 
         data = self.read_bytes(file)
         if not os.fspath(file).endswith((".yaml", ".yml")):
-            parse_xml(data, os.fspath(file))  # entity bombs and DTDs stop here
+            flaws: list[Fault] = []
+            parse_xml(data, os.fspath(file), warnings=flaws)  # entity bombs and DTDs stop here
+            self.flaws += [str(flaw) for flaw in flaws]
         return data.decode("utf-8")
 
     def fenced_open(self, file: Any, mode: str = "r", *_: Any, **__: Any) -> Any:
@@ -243,7 +249,7 @@ class _Fence:
         xacro.init_stacks(None)
         xacro.process_doc(xacro.parse(warm_up))
         yaml.safe_load("a: [1, 2.5, b]")
-        parse_xml(warm_up.encode(), "<warm-up>")
+        parse_xml(warm_up.encode(), "<warm-up>", warnings=[])
         xml.dom.minidom.parseString(warm_up).toxml()
 
         # Reads beneath the roots only from now on (Landlock); the system calls were refused

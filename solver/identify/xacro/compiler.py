@@ -69,7 +69,10 @@ def compile_xacro(
     name = display if display is not None else str(path)
     source = Path(path).resolve()
     data = read_bytes(path, display=name)
-    parse_xml(data, name)  # refuse entity bombs and malformed XML before xacro sees them
+    # Refuse entity bombs and malformed XML before xacro sees them, but read what xacro reads
+    # (its minidom knows no namespace URIs: a markdown link pasted as xmlns:xacro); the child
+    # warns of each file's flaws as it reads it.
+    parse_xml(data, name, warnings=[])
     folders = [Path(p) for p in package_path]
     for folder in folders:
         if not folder.is_dir():

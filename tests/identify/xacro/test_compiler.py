@@ -121,6 +121,24 @@ def test_xacro_errors_are_reported_not_raised_raw(tmp_path: Path) -> None:
         compile_xacro(path)
 
 
+def test_a_xacro_namespace_that_is_no_uri_is_compiled_as_xacro_reads_it(tmp_path: Path) -> None:
+    # A markdown link pasted as the namespace (a real robot's file): libxml2 calls it no URI,
+    # xacro's minidom does not check; the file compiles, with the flaw's line in a warning.
+    path = tmp_path / "copter.xacro"
+    path.write_text(
+        '<?xml version="1.0"?>\n<robot name="copter" '
+        'xmlns:xacro="[http://www.ros.org/wiki/xacro](http://www.ros.org/wiki/xacro)">\n'
+        '<xacro:macro name="arm" params="n"><link name="arm_${n}"/></xacro:macro>\n'
+        '<link name="base_link"/><xacro:arm n="1"/><xacro:arm n="2"/>\n</robot>\n'
+    )
+    compiled = compile_xacro(path)
+    assert '<link name="arm_1"/>' in compiled.text
+    assert '<link name="arm_2"/>' in compiled.text
+    assert any(
+        w.startswith(f"{path}:2:") and "is not a valid URI" in w for w in compiled.warnings
+    ), compiled.warnings
+
+
 # --- trust -----------------------------------------------------------------------------------
 
 
