@@ -7,7 +7,9 @@ them and reads their launch, configuration and script files as text; nothing in 
 imported or parsed as code.
 
 * The description's *package* is the nearest folder above the file (at most
-  :data:`MAX_LEVELS_UP` folders up) holding a ``package.xml``. The *workspace* is the nearest
+  :data:`MAX_LEVELS_UP` folders up) holding a ``package.xml``, or a rosbuild ``manifest.xml``
+  (ROS 1's packages before catkin, to 2013: a ``<package>`` with no ``<name>``, the package
+  named by its folder). The *workspace* is the nearest
   folder named ``src`` at most two folders above that package's folder (a colcon or catkin
   workspace, where a bringup may sit in a sibling repository); for a package colcon installed
   (``install/NAME/share/NAME``) the install space its neighbours were installed in; else the
@@ -122,6 +124,12 @@ _AS_PACKAGE = re.compile(
     r"([A-Za-z0-9_]+)"
 )
 _NAME = re.compile(r"<name>\s*([A-Za-z0-9_.-]{1,200})\s*</name>")
+# A rosbuild package's manifest (``manifest.xml``): a ``<package>`` root, after at most an XML
+# declaration (comments removed first); a folder name a package may have.
+ROSBUILD_MANIFEST = "manifest.xml"
+_ROSBUILD_ROOT = re.compile(r"\s*(?:<\?xml[^<>]*\?>\s*)?<package[\s/>]")
+_FOLDER_NAME = re.compile(r"[A-Za-z0-9_.-]{1,200}")
+_MANIFESTS = frozenset({"package.xml", ROSBUILD_MANIFEST})
 _WORD = re.compile(r"[A-Za-z0-9_]+")
 # A metapackage exports ``<metapackage/>`` (``<metapackage />``, ``<metapackage></metapackage>``).
 _EXPORT = re.compile(r"<export(?:\s[^<>]*)?>")
@@ -169,10 +177,11 @@ class Workspace:
 
 def description_package(path: str | Path) -> Path | None:
     """The folder of the ROS package holding ``path``: the nearest folder above it (at most
-    :data:`MAX_LEVELS_UP` up) with a ``package.xml`` that is a regular file; else None."""
+    :data:`MAX_LEVELS_UP` up) with a ``package.xml`` that is a regular file, or a rosbuild
+    ``manifest.xml`` (:func:`_rosbuild_name`); else None."""
     here = Path(os.path.abspath(path)).parent
     for _ in range(MAX_LEVELS_UP):
-        if _regular(str(here / "package.xml")):
+        if _regular(str(here / "package.xml")) or _rosbuild_name(str(here)) is not None:
             return here
         if here.parent == here:
             return None
@@ -374,16 +383,15 @@ def _walk(
         if folder == skip:
             continue
         files, subfolders = _list(folder, budget, holding)
-        if "package.xml" in files:
-            manifest = _text(_read(os.path.join(folder, "package.xml"), MAX_MANIFEST_BYTES))
-            found = _NAME.search(manifest)
-            if found is not None:
-                owner = packages[folder] = _Package(
-                    folder,
-                    found.group(1),
-                    set(_WORD.findall(manifest)),
-                    meta=_exports_metapackage(_uncommented(manifest)),
-                )
+        found = _package_in(folder, files)
+        if found is not None:
+            name, manifest = found
+            owner = packages[folder] = _Package(
+                folder,
+                name,
+                set(_WORD.findall(manifest)),
+                meta=_exports_metapackage(_uncommented(manifest)),
+            )
         if owner is not None:
             owner.paths += [os.path.join(folder, name) for name in _texts(folder, files)]
         elif _install_prefix(folder, subfolders):
@@ -395,6 +403,32 @@ def _walk(
         elif subfolders:
             stack += [(os.path.join(folder, n), level + 1, owner) for n in sorted(subfolders)[::-1]]
     return packages
+
+
+def _package_in(folder: str, files: list[str]) -> tuple[str, str] | None:
+    """The name and manifest text of the package whose folder is ``folder`` (its files
+    ``files``): its ``package.xml``'s ``<name>``; with none, a rosbuild ``manifest.xml``'s
+    folder name; else None."""
+    if "package.xml" in files:
+        manifest = _text(_read(os.path.join(folder, "package.xml"), MAX_MANIFEST_BYTES))
+        found = _NAME.search(manifest)
+        return None if found is None else (found.group(1), manifest)
+    if ROSBUILD_MANIFEST in files:
+        name = _rosbuild_name(folder)
+        if name is not None:
+            return name, _text(_read(os.path.join(folder, ROSBUILD_MANIFEST), MAX_MANIFEST_BYTES))
+    return None
+
+
+def _rosbuild_name(folder: str) -> str | None:
+    """The name of the rosbuild package whose folder is ``folder``: the folder's name, when
+    it holds a ``manifest.xml`` whose root is a ``<package>`` (other tools write files of that
+    name too: an Android or .NET manifest is no ROS package); else None."""
+    name = os.path.basename(folder)
+    if _FOLDER_NAME.fullmatch(name) is None:
+        return None
+    manifest = _text(_read(os.path.join(folder, ROSBUILD_MANIFEST), MAX_MANIFEST_BYTES))
+    return name if _ROSBUILD_ROOT.match(_uncommented(manifest)) else None
 
 
 def _exports_metapackage(manifest: str) -> bool:
@@ -430,7 +464,7 @@ def _texts(folder: str, files: list[str]) -> list[str]:
     return [
         name
         for name in sorted(files)
-        if name != "package.xml" and (name.endswith(TEXT_SUFFIXES) or (script and "." not in name))
+        if name not in _MANIFESTS and (name.endswith(TEXT_SUFFIXES) or (script and "." not in name))
     ]
 
 

@@ -249,6 +249,43 @@ def test_a_package_xml_without_a_name_is_no_package(tmp_path: Path) -> None:
     assert read_workspace(folder) is None
 
 
+ROSBUILD_MANIFEST = """<!-- a rosbuild package: ROS 1 before catkin -->
+<package>
+  <description brief="navigation">Moves the vehicle from point to point</description>
+  <depend package="move_base"/>
+</package>
+"""
+
+
+def test_a_rosbuild_package_is_named_by_its_folder_and_read(tmp_path: Path) -> None:
+    # ROS 1 packages before catkin (to 2013) have a manifest.xml and no package.xml.
+    folder = tmp_path / "stack" / "auv_navigation"
+    (folder / "description").mkdir(parents=True)
+    (folder / "launch").mkdir()
+    (folder / "manifest.xml").write_text(ROSBUILD_MANIFEST)
+    (folder / "launch" / "move_base.launch").write_text('<node pkg="move_base" type="move_base"/>')
+    assert description_package(folder / "description" / "auv.urdf") == folder
+    found = read(folder)
+    assert found.package == "auv_navigation"
+    assert [f.path for f in found.files] == ["auv_navigation/launch/move_base.launch"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        '<?xml version="1.0"?><manifest xmlns:android="http://x"><application/></manifest>',
+        "<assembly><package>not a ROS package</package></assembly>",
+        "<!-- <package> -->\n<manifest/>",
+    ],
+)
+def test_a_manifest_xml_of_another_tool_is_no_package(text: str, tmp_path: Path) -> None:
+    folder = tmp_path / "app"
+    folder.mkdir()
+    (folder / "manifest.xml").write_text(text)
+    assert description_package(folder / "robot.urdf") is None
+    assert read_workspace(folder) is None
+
+
 def test_a_workspace_that_does_not_exist_leaves_the_package_read_alone(tmp_path: Path) -> None:
     described = package(tmp_path / "src", "rover_description", {"a.yaml": "x: 1"})
     found = read(described, tmp_path / "no such folder")
