@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import math
 import re
+from collections import Counter
 from itertools import islice, pairwise
 
 from solver.identify.couplings import Walk, jaw_groups
@@ -444,24 +445,35 @@ def _places(joint: Joint) -> bool:
 
 
 def stacked_grippers(tree: JointTree, grippers: list[str]) -> list[str]:
-    """The gripper-named joints that are an arm: every gripper joint of the body driven on its
-    own, one upon another in one unbranched chain of more than ``arm_min_joints`` (a lift, a
-    tilt and a turn, then the jaw), and more than ``finger_max_joints`` when one of them is
-    named as a finger's (a finger of four joints is a finger). A gripper's jaws stand side by
-    side or follow one motion; stacked so, all but the last are the arm that carries it.
-    Those, in document order."""
+    """The gripper-named joints that are an arm: every gripper joint of the body one upon
+    another in one unbranched chain, each driven on its own, of more than ``arm_min_joints``
+    (a lift, a tilt and a turn, then the jaw), and more than ``finger_max_joints`` when one of
+    them is named as a finger's (a finger of four joints is a finger); or such a chain of more
+    than both whose last joint carries the gripper's jaws side by side, each carrying no other
+    (an exporter that named every part of a six-joint arm ``Jaw_N``; a gripper's own lift,
+    tilt and wrist under its jaws stay the gripper's). A gripper's
+    jaws stand side by side or follow one motion; stacked so, the joints that carry the others
+    are the arm that carries it. Those, in document order."""
     joints = [j for j in (tree.urdf.joint(name) for name in grippers) if j is not None]
     shortest = tree.profile.limb("arm_min_joints")
     if any(_FINGER.search(f"{joint.name} {joint.child}") for joint in joints):
         shortest = max(shortest, tree.profile.limb("finger_max_joints"))
-    if len(joints) <= shortest or not all(j.actuated for j in joints):
-        return []
     known: dict[str, str | None] = {}
     above = {joint.name: moved_by(tree.urdf, joint.parent, known) for joint in joints}
-    carried = [name for name in above.values() if name is not None and name in above]
-    if len(carried) != len(joints) - 1 or len(set(carried)) != len(carried):
-        return []  # two chains, or two joints on one (fingers side by side)
-    return sorted(carried, key=tree.order)
+    carried = Counter(name for name in above.values() if name is not None and name in above)
+    carriers = sorted(carried, key=tree.order)
+    driven = {joint.name for joint in joints if joint.actuated}
+    roots = len(joints) - sum(carried.values())
+    if roots != 1 or not set(carriers) <= driven:
+        return []  # two chains, or a carrier that follows another's motion
+    fans = [name for name in carriers if carried[name] > 1]
+    if not fans:  # one chain: the jaw at its end driven too (jaws following one motion)
+        return carriers if len(joints) > shortest and len(driven) == len(joints) else []
+    # The chain's last joint carries the jaws: one fan, at the end (jaws carry nothing); and
+    # more joints than a finger's most below them (a gripper's own lift, tilt and wrist under
+    # its two jaws are the gripper's).
+    longest = max(shortest, tree.profile.limb("finger_max_joints"))
+    return carriers if fans == carriers[-1:] and len(carriers) > longest else []
 
 
 def gripper_closure(tree: JointTree, grippers: set[str]) -> set[str]:

@@ -1110,6 +1110,23 @@ def test_stacked_gripper_joints_with_two_jaws_side_by_side_or_a_follower_stay_a_
         assert result.body.limbs == ()
 
 
+def test_an_arm_whose_every_part_is_named_a_jaw_carrying_two_jaws_is_an_arm() -> None:
+    """An exporter's names: six joints one upon another, every link named ``Jaw_N``, the last
+    carrying two jaws side by side (each driven alone): an arm ending in a gripper."""
+    robot = RobotText("exported")
+    limit = '<limit lower="-1" upper="1" effort="1" velocity="1"/>'
+    link = "base_link"
+    for i in range(1, 7):
+        link = robot.joint(f"L{i - 1}_L{i}", "revolute", link, f"Jaw_{i}_1", limit)
+    robot.joint("L6_GL", "revolute", link, "Jaw_7_copy_1", limit)
+    robot.joint("L6_GR", "revolute", link, "Jaw_7_copy_2", limit)
+    result = identify_urdf(robot.text())
+    assert result.structure == "Manipulator"
+    assert result.body is not None
+    assert [(limb.kind, len(limb.joints)) for limb in result.body.limbs] == [("arm", 6)]
+    assert result.body.fingers == ("L6_GL", "L6_GR")
+
+
 def two_chains(apart: float, link: float, *, on: str = "", third: bool = False) -> RobotText:
     """Two unnamed three-joint chains on one link, their first joints ``apart`` metres from
     each other, each link of them ``link`` metres long (straight up); ``on``: that link is
