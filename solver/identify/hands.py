@@ -458,9 +458,7 @@ def stacked_grippers(tree: JointTree, grippers: list[str]) -> list[str]:
     shortest = tree.profile.limb("arm_min_joints")
     if any(_FINGER.search(f"{joint.name} {joint.child}") for joint in joints):
         shortest = max(shortest, tree.profile.limb("finger_max_joints"))
-    known: dict[str, str | None] = {}
-    above = {joint.name: moved_by(tree.urdf, joint.parent, known) for joint in joints}
-    carried = Counter(name for name in above.values() if name is not None and name in above)
+    carried = _carried(tree, joints)
     carriers = sorted(carried, key=tree.order)
     driven = {joint.name for joint in joints if joint.actuated}
     roots = len(joints) - sum(carried.values())
@@ -474,6 +472,13 @@ def stacked_grippers(tree: JointTree, grippers: list[str]) -> list[str]:
     # its two jaws are the gripper's).
     longest = max(shortest, tree.profile.limb("finger_max_joints"))
     return carriers if fans == carriers[-1:] and len(carriers) > longest else []
+
+
+def _carried(tree: JointTree, joints: list[Joint]) -> Counter[str]:
+    """How many of ``joints`` each of them carries (is the nearest movable joint above)."""
+    known: dict[str, str | None] = {}
+    above = {joint.name: moved_by(tree.urdf, joint.parent, known) for joint in joints}
+    return Counter(name for name in above.values() if name is not None and name in above)
 
 
 def gripper_closure(tree: JointTree, grippers: set[str]) -> set[str]:
