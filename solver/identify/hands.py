@@ -451,9 +451,9 @@ def stacked_grippers(tree: JointTree, grippers: list[str]) -> list[str]:
     them is named as a finger's (a finger of four joints is a finger); or such a chain of more
     than both whose last joint carries the gripper's jaws side by side, each carrying no other
     (an exporter that named every part of a six-joint arm ``Jaw_N``; a gripper's own lift,
-    tilt and wrist under its jaws stay the gripper's). A gripper's
-    jaws stand side by side or follow one motion; stacked so, the joints that carry the others
-    are the arm that carries it. Those, in document order."""
+    tilt and wrist under its jaws stay the gripper's). A gripper's jaws stand side by side or
+    follow one motion; stacked so, the joints that carry the others are the arm that carries
+    it. Those, in document order."""
     joints = [j for j in (tree.urdf.joint(name) for name in grippers) if j is not None]
     shortest = tree.profile.limb("arm_min_joints")
     if any(_FINGER.search(f"{joint.name} {joint.child}") for joint in joints):
