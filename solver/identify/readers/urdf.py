@@ -923,14 +923,14 @@ def _camera_by_topics(element: etree._Element) -> str | None:
     """A camera a simulator's hardware interface renders (mujoco_ros2_control's ``<sensor>``
     whose parameters name the topics its images go to): ``depth`` when it names a depth image's
     topic too, else ``camera``; None when it names no image topic."""
-    topics = {
+    named = {
         (param.get("name") or "").strip()
         for param in element.findall("param")
         if (param.text or "").strip()
     }
-    if "image_topic" not in topics:
+    if "image_topic" not in named:
         return None
-    return "depth" if "depth_topic" in topics else "camera"
+    return "depth" if "depth_topic" in named else "camera"
 
 
 def _hardware_kind(name: str, readings: set[str]) -> str | None:

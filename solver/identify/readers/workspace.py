@@ -178,10 +178,10 @@ class Workspace:
 def description_package(path: str | Path) -> Path | None:
     """The folder of the ROS package holding ``path``: the nearest folder above it (at most
     :data:`MAX_LEVELS_UP` up) with a ``package.xml`` that is a regular file, or a rosbuild
-    ``manifest.xml`` (:func:`_rosbuild_name`); else None."""
+    ``manifest.xml`` (:func:`_rosbuild_manifest`); else None."""
     here = Path(os.path.abspath(path)).parent
     for _ in range(MAX_LEVELS_UP):
-        if _regular(str(here / "package.xml")) or _rosbuild_name(str(here)) is not None:
+        if _regular(str(here / "package.xml")) or _rosbuild_manifest(str(here)) is not None:
             return here
         if here.parent == here:
             return None
@@ -414,21 +414,21 @@ def _package_in(folder: str, files: list[str]) -> tuple[str, str] | None:
         found = _NAME.search(manifest)
         return None if found is None else (found.group(1), manifest)
     if ROSBUILD_MANIFEST in files:
-        name = _rosbuild_name(folder)
-        if name is not None:
-            return name, _text(_read(os.path.join(folder, ROSBUILD_MANIFEST), MAX_MANIFEST_BYTES))
+        rosbuild = _rosbuild_manifest(folder)
+        if rosbuild is not None:
+            return os.path.basename(folder), rosbuild
     return None
 
 
-def _rosbuild_name(folder: str) -> str | None:
-    """The name of the rosbuild package whose folder is ``folder``: the folder's name, when
-    it holds a ``manifest.xml`` whose root is a ``<package>`` (other tools write files of that
-    name too: an Android or .NET manifest is no ROS package); else None."""
-    name = os.path.basename(folder)
-    if _FOLDER_NAME.fullmatch(name) is None:
+def _rosbuild_manifest(folder: str) -> str | None:
+    """The text of the rosbuild package's manifest in ``folder`` (the package is named by the
+    folder): a ``manifest.xml`` whose root is a ``<package>``, in a folder a package may be
+    named by (other tools write files of that name too: an Android or .NET manifest is no ROS
+    package); else None."""
+    if _FOLDER_NAME.fullmatch(os.path.basename(folder)) is None:
         return None
     manifest = _text(_read(os.path.join(folder, ROSBUILD_MANIFEST), MAX_MANIFEST_BYTES))
-    return name if _ROSBUILD_ROOT.match(_uncommented(manifest)) else None
+    return manifest if _ROSBUILD_ROOT.match(_uncommented(manifest)) else None
 
 
 def _exports_metapackage(manifest: str) -> bool:
