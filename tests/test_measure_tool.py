@@ -17,6 +17,7 @@ from tests.identify.builders import (
     model_plugin,
     pan_tilt_only,
     parallel_gripper,
+    snake,
     ugv,
 )
 
@@ -484,3 +485,29 @@ def test_a_rows_kept_repository_is_read_for_the_controls_its_packages_ship(
     read = measure("--set", str(tmp_path / "tiny"), "--workspaces", str(kept))
     # Its packages ship no navigation: none is guessed.
     assert row_of(read, "mobile base", "tiny")[7:9] == ["1/1 (100%)", "1/1 (100%)"]
+
+
+def test_the_briefs_snake_labels_a_serpentine_reading_in_a_label_and_in_a_note(
+    tmp_path: Path,
+) -> None:
+    folder = tmp_path / "snakes"
+    (folder / "urdf").mkdir(parents=True)
+    (folder / "urdf" / "snake.urdf").write_text(snake().text(), encoding="utf-8")
+    rows = [
+        {"robot": "named", "file": "urdf/snake.urdf", "kinematic_type": "Snake"},
+        {
+            "robot": "doubted",
+            "file": "urdf/snake.urdf",
+            "kinematic_type": "Manipulator?",
+            "uncertainty_note": "Snake would also fit: its authors call it one.",
+        },
+        {
+            "robot": "unnamed_in_note",
+            "file": "urdf/snake.urdf",
+            "kinematic_type": "Manipulator?",
+            "uncertainty_note": "the snakes of its repository are other robots",
+        },
+    ]
+    write_truth(folder, rows)
+    # The label and the word in the note are the Serpentine structure; "snakes" names none.
+    assert "structure correct: 1/3 strict, 2/3 lenient" in measure("--set", str(folder))

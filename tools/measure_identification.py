@@ -23,9 +23,9 @@ Each robot is identified from its URDF (and SRDF when it has one) with the shipp
 the article's rule set, exactly as ``teleop-ui identify`` would. Printed, as Markdown, per
 family and per source (the repository or package in ``source``), each set's rows side by side:
 structure accuracy on the certain labels (no trailing ``?``), the lenient score (a label ending
-in ``?`` also accepts a structure its ``uncertainty_note`` names, and the ``LENIENT_ACCEPTS``
-readings of its label), descriptions refused (exit
-2), sensor precision and recall (kinds with counts), and motion-control precision and recall
+in ``?`` also accepts a structure its ``uncertainty_note`` names, by its name or a word of
+``ALIASES`` such as the brief's Snake, and the ``LENIENT_ACCEPTS`` readings of its label),
+descriptions refused (exit 2), sensor precision and recall (kinds with counts), and motion-control precision and recall
 (robots whose ``motion_control_kinds`` is empty are not labelled for controls); then per set the
 per-label table, the structure confusion table, each motion control's precision and recall
 and every miss.
@@ -106,6 +106,9 @@ ALIASES = {
     "biped/lower-body": "Biped",
     "legged mobile manipulator": "Legged Mobile Manipulator",
     "aerial manipulator": "Aerial Manipulator",
+    # The labelling brief's word for a snake robot (tools/labelling_brief.md), the kinematic
+    # type the rule set gives its Serpentine structure.
+    "snake": "Serpentine",
 }
 # Labels with no structure of their own in the article: the reading they are scored against
 # while the profile has no structure of that name.
@@ -215,6 +218,9 @@ class Score:
         alternatives = {label, *ACCEPTS.get(label, set())}
         if row["kinematic_type"].endswith("?"):
             alternatives |= {s for s in self.structures if s.casefold() in note}
+            alternatives |= {
+                s for a, s in ALIASES.items() if re.search(rf"\b{re.escape(a)}\b", note)
+            }
             alternatives |= LENIENT_ACCEPTS.get(label, set())
         self.strict += right
         self.lenient += result.structure in alternatives
