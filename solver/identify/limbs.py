@@ -314,16 +314,22 @@ def _tool_leaves(
     else's, and it branches only into single joints that carry nothing (a suction tool's two
     sliding pipes, which no rule reads as jaws). A trunk branches into limbs (a torso into
     arms, a body into legs); two one-joint leaves are none, but a chain not named as an arm
-    may be a body's (a neck carrying a head's two antennas)."""
+    may be a body's (a neck carrying a head's two antennas). A chain named as no limb's at
+    all, ending in exactly two slides, is an arm's with its jaws: a trunk's leaves turn (a
+    head's antennas, ears), a gripper's two jaws slide."""
     children, carries = contracted
     if len(chain) < tree.profile.limb("arm_min_joints") or len(branches) < 2:
         return False  # (one joint below would have continued the chain)
+    if any(children.get(joint.name) or carries.get(joint.name) for joint in branches):
+        return False
     scores = _name_scores(tree, chain)
-    return (
-        scores["arm"] > 0
-        and scores["arm"] == max(scores.values())
-        and not any(children.get(joint.name) or carries.get(joint.name) for joint in branches)
-    )
+    if not any(scores.values()):
+        return len(branches) == _JAWS and all(joint.type == "prismatic" for joint in branches)
+    return scores["arm"] > 0 and scores["arm"] == max(scores.values())
+
+
+# A parallel gripper's jaws: two slides.
+_JAWS = 2
 
 
 # A humanoid's two pairs of limbs: one pair found, the other sought among one-joint chains.

@@ -3034,29 +3034,33 @@ def test_one_hinge_shoulders_in_a_pair_on_a_biped_are_arms() -> None:
 
 
 def two_arms_one_with_a_suction_tool(
-    second: list[str] | None = None, pipe_joints: int = 1, *, jaws: bool = False
+    second: list[str] | None = None,
+    pipe_joints: int = 1,
+    *,
+    jaws: bool = False,
+    pipe: str = "prismatic",
 ) -> str:
     """A waist carrying a seven-joint chain named as an arm and a ``second`` chain (default:
-    another such arm) that ends in a suction tool whose two pipes slide, each on
-    ``pipe_joints`` joints of their own (no pair of jaws); with ``jaws``, each pipe carries a
-    gripper's two jaws."""
+    another such arm) that ends in a suction tool whose two pipes slide (or move as ``pipe``
+    says), each on ``pipe_joints`` joints of their own (no pair of jaws); with ``jaws``, each
+    pipe carries a gripper's two jaws."""
     robot = RobotText("picker")
     waist = robot.chain(robot.root, ["torso_turn"])
     robot.chain(waist, [f"left_arm_joint_{i}" for i in range(1, 8)])
     tool = robot.chain(waist, second or [f"right_arm_joint_{i}" for i in range(1, 8)])
-    for pipe, axis in (("front", "0 0 1"), ("side", "1 0 0")):
+    for side, axis in (("front", "0 0 1"), ("side", "1 0 0")):
         link = tool
         for i in range(pipe_joints):
             link = robot.joint(
-                f"{pipe}_pipe_{i}",
-                "prismatic",
+                f"{side}_pipe_{i}",
+                pipe,
                 link,
-                f"{pipe}_pipe_{i}_link",
+                f"{side}_pipe_{i}_link",
                 f'<axis xyz="{axis}"/><limit lower="0" upper="0.1" effort="1" velocity="1"/>',
             )
         if jaws:
-            robot.chain(link, [f"{pipe}_gripper_finger_left"], "prismatic")
-            robot.chain(link, [f"{pipe}_gripper_finger_right"], "prismatic")
+            robot.chain(link, [f"{side}_gripper_finger_left"], "prismatic")
+            robot.chain(link, [f"{side}_gripper_finger_right"], "prismatic")
     return robot.text()
 
 
@@ -3071,6 +3075,11 @@ def test_an_arm_that_ends_in_a_tools_single_joints_is_an_arm_not_a_trunk() -> No
     assert kinds_of_long_chains(two_arms_one_with_a_suction_tool()) == ["arm", "arm"]
 
 
+def test_a_chain_named_as_nothing_that_ends_in_two_slides_is_an_arm_with_its_jaws() -> None:
+    unnamed = [f"j{i}" for i in range(1, 8)]
+    assert kinds_of_long_chains(two_arms_one_with_a_suction_tool(unnamed)) == ["arm", "arm"]
+
+
 @pytest.mark.parametrize(
     ("second", "pipe_joints"),
     [
@@ -3078,8 +3087,6 @@ def test_an_arm_that_ends_in_a_tools_single_joints_is_an_arm_not_a_trunk() -> No
         ([f"neck_head_joint_{i}" for i in range(1, 8)], 1),
         # Named more as a head's than an arm's.
         ([*(f"arm_{i}" for i in range(1, 3)), *(f"head_{i}" for i in range(3, 8))], 1),
-        # Named as nothing: no word says it is an arm.
-        ([f"j{i}" for i in range(1, 8)], 1),
         # Too short to be an arm.
         (["arm_lift", "arm_turn"], 1),
         # What it branches into are limbs of two joints: it is a trunk carrying them.
@@ -3092,6 +3099,14 @@ def test_a_chain_that_is_no_named_arm_or_branches_into_limbs_stays_a_trunk(
     result = identify_urdf(two_arms_one_with_a_suction_tool(second, pipe_joints))
     assert result.body is not None
     assert not any(limb.joints == tuple(second) for limb in result.body.limbs)
+
+
+def test_a_chain_named_as_nothing_whose_two_leaves_turn_stays_a_trunk() -> None:
+    # A neck's two turning leaves (a head's ears), no jaws: no word says it is an arm.
+    unnamed = [f"j{i}" for i in range(1, 8)]
+    result = identify_urdf(two_arms_one_with_a_suction_tool(unnamed, pipe="revolute"))
+    assert result.body is not None
+    assert not any(limb.joints == tuple(unnamed) for limb in result.body.limbs)
 
 
 def test_an_arm_named_chain_whose_single_joints_carry_grippers_stays_a_trunk() -> None:
