@@ -1052,7 +1052,7 @@ def _legs_why(tree: JointTree, base: str, group: list[Limb], *, wheeled: bool) -
         return (
             "one of six or more alike chains starting on one plane around their middle, each"
             " reaching out from it and not up from that plane (a walker's legs, its body drawn"
-            " tilted in the file: legs by place)"
+            " tilted or away from its link's origin in the file: legs by place)"
         )
     if _at_corners(tree, base, group, wheeled=wheeled):
         return (
@@ -1475,11 +1475,12 @@ def _unit_or_none(vector: Place) -> Place | None:
 
 
 def _spreads_from_hips(tree: JointTree, group: list[Limb]) -> bool:
-    """:func:`_spreads` on a body the file draws tilted (a CAD export's): "up" read from the
-    plane the chains start on (a walker's hips, around their middle), tilted from the file's z
-    but not standing on edge, taken on its side where z rises. Each chain ends farther out from
-    the hips' middle along that plane than it starts, by most of its reach, and not up from the
-    plane by more than a leg's drop share. A body drawn level is :func:`_spreads`'s."""
+    """:func:`_spreads` on a body the file draws tilted or away from its link's origin (a CAD
+    export's, the origin at a corner of the body): "up" read from the plane the chains start on
+    (a walker's hips, around their middle), the file's z or tilted from it but not standing on
+    edge, taken on its side where z rises. Each chain ends farther out from the hips' middle
+    along that plane than it starts, by most of its reach, and not up from the plane by more
+    than a leg's drop share. Hips along one line (a hand's fingers in a row) are on no plane."""
     placed = chain_ends(tree, group)
     if placed is None or len(placed) > _MOST_FIVE_BAR_LEGS:
         return False  # a stranger's thousands of chains are not paired hip by hip
@@ -1492,8 +1493,10 @@ def _spreads_from_hips(tree: JointTree, group: list[Limb]) -> bool:
         (_scaled(start, middle, radius), _scaled(end, middle, radius)) for start, end in placed
     ]
     normal = _plane([start for start, _ in scaled])
-    if normal is None or parallel(normal, _UP) or perpendicular(normal, _UP):
-        return False  # level (the file's z is "up"), or on edge (no side is "up")
+    if normal is None or perpendicular(normal, _UP):
+        return False  # on edge (no side is "up")
+    if parallel(normal, _UP):
+        normal = _UP  # level: the file's z is "up"
     if normal[2] < 0:
         normal = (-normal[0], -normal[1], -normal[2])
     for start, end in scaled:

@@ -1257,6 +1257,30 @@ def test_six_chains_reaching_out_and_down_from_a_tilted_body_are_a_hexapods_legs
         assert identify_urdf(tilted_hexapod(scale=scale).text()).structure == "Hexapod"
 
 
+def hexapod_drawn_from_a_corner(*, out: float = 1.0) -> RobotText:
+    """Six unnamed three-joint chains in two rows of three hips 0.22 m apart across x, the
+    body's link origin at the first row's end (a CAD export's): each reaches out along x,
+    away from the other row (``out`` -1: towards it), dropping and rising a little."""
+    robot = RobotText("r", root="body")
+    for i, (x, y) in enumerate((x, y) for x in (0.0, 0.22) for y in (-0.03, 0.1, 0.23)):
+        way = (1 if x else -1) * out
+        placed_chain(
+            robot,
+            "body",
+            f"k{i}_",
+            start=f"{x:.6g} {y:.6g} 0.04",
+            steps=[f"{0.07 * way:.6g} -0.03 -0.08", f"{0.07 * way:.6g} 0 0.07"],
+        )
+    return robot
+
+
+def test_six_chains_reaching_out_flat_from_their_middle_away_from_the_origin_are_legs() -> None:
+    # Out from their own middle, though the first row's far one reaches no farther from the
+    # link's origin than it starts.
+    assert identify_urdf(hexapod_drawn_from_a_corner().text()).structure == "Hexapod"
+    assert identify_urdf(hexapod_drawn_from_a_corner(out=-1.0).text()).structure != "Hexapod"
+
+
 @pytest.mark.parametrize(
     "drawn",
     [
