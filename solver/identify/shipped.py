@@ -132,7 +132,7 @@ def joint_controllers(
     """The first file of the robot's packages that configures joint controllers and names one
     of the ``joints`` (a walker's legs', a flown body's rotors'), when the packages were read
     whole, none ships the body's own software (``rule``: the profile's ``motion.gait`` or
-    ``motion.flight``) and no other package of the workspace is named for it (a
+    ``motion.flight``) and no package of the workspace is named for it (one of its own, or a
     ``gait_planner`` beside them that names none of them): a body whose author ships those
     joints' controllers and nothing that moves the body as a whole is commanded joint by joint,
     whatever it could do (:func:`solver.identify.motion.controls_from_description`). A ``ros_gz``
@@ -145,7 +145,7 @@ def joint_controllers(
     if rule is None or not words or not workspace.complete:
         return None
     if _first_found(workspace, rule.shipped) or any(
-        rule.shipped.find(name) is not None for name in workspace.neighbours
+        rule.shipped.find(name) is not None for name in (*workspace.packages, *workspace.neighbours)
     ):
         return None  # software its packages ship, or a package of the workspace named for it
     for shipped in workspace.files:

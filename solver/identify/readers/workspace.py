@@ -40,6 +40,10 @@ imported or parsed as code.
   name is used. A package named like that parameter is used only where a file names it as a
   package (found, launched, run: :data:`PARAMETER_NAMES`), so that a description package named
   ``robot_description`` does not take in every neighbour that sets its own robot's parameter.
+  A source workspace (a ``src`` folder, or the one the caller names) walked whole in which no
+  other package holds a description (a ``.urdf`` or ``.xacro`` file) is one robot's: every
+  package of it is the robot's (its navigation and mission packages need name no package of
+  the description's, :func:`_one_robots`).
 
 Past a bound the rest is not read and a note says so; the workspace is then *incomplete*, and
 what it does not say is not taken as said (:mod:`solver.identify.shipped`). A workspace that
@@ -85,6 +89,8 @@ MAX_MANIFEST_BYTES = 64 * 1024
 SHOWN_PACKAGES = 12
 
 TEXT_SUFFIXES = (".launch", ".xml", ".yaml", ".yml", ".py", ".cpp", ".cc", ".hpp", ".sh")
+# A file of these suffixes in a package is a robot's description (a URDF, a xacro).
+DESCRIPTION_SUFFIXES = (".urdf", ".xacro")
 # Folders whose files with no suffix are scripts (ROS 1 nodes: scripts/teleop, nodes/walker).
 SCRIPT_FOLDERS = frozenset({"scripts", "nodes", "bin"})
 # Folders no package ships controls in: builds, installs, logs, caches and tests.
@@ -216,6 +222,8 @@ class _Package:
     # Package names this package writes (its package.xml and its files), once all are known.
     mentions: set[str] = field(default_factory=set)
     files: list[ShippedFile] = field(default_factory=list)
+    # It holds a robot description (:data:`DESCRIPTION_SUFFIXES`).
+    describes: bool = False
 
 
 @dataclass(slots=True)
@@ -256,6 +264,8 @@ def read_workspace(
         for path in each.paths:
             _read_into(each, path, top, names, budget)
     ours = _robots_packages(core, ordered)
+    if _one_robots(own, ordered, top, named=root is not None, budget=budget):
+        ours = ordered
     return Workspace(
         top,
         own.name,
@@ -268,6 +278,19 @@ def read_workspace(
         ),
         tuple(sorted({p.name for p in ordered} - {p.name for p in ours})),
     )
+
+
+def _one_robots(
+    own: _Package, packages: list[_Package], top: str, *, named: bool, budget: _Budget
+) -> bool:
+    """The workspace is the robot's alone, every package of it the robot's: a source
+    workspace (a ``src`` folder, or one the caller names) walked whole in which no package but
+    the description's holds a robot description (a repository of one robot: its navigation,
+    mission and arm packages need not name the description's package, as one named
+    ``robot_description`` is not named as a package). An install space or a ``share`` folder
+    holds every installed package, none of them the robot's for that."""
+    source = named or os.path.basename(top) == "src"
+    return source and not budget.stopped and not any(p.describes for p in packages if p is not own)
 
 
 def _stem(name: str) -> str | None:
@@ -394,6 +417,9 @@ def _walk(
             )
         if owner is not None:
             owner.paths += [os.path.join(folder, name) for name in _texts(folder, files)]
+            owner.describes = owner.describes or any(
+                name.endswith(DESCRIPTION_SUFFIXES) for name in files
+            )
         elif _install_prefix(folder, subfolders):
             # An install prefix: its packages are in share/NAME; its libraries and headers
             # belong to none (read nothing, and would spend the walk's bound).

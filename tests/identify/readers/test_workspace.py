@@ -47,6 +47,7 @@ def rover_workspace(tmp_path: Path) -> Path:
     )
     package(src, "rover_navigation", {"launch/nav.launch.py": "nav2_bringup"})
     package(src, "drone_navigation", {"launch/nav.launch.py": "nav2_bringup"})
+    package(src, "drone_description", {"urdf/drone.urdf": "<robot name='drone'/>"})
     return described
 
 
@@ -88,9 +89,10 @@ def test_another_robots_package_is_not_read_however_much_it_holds(tmp_path: Path
 
 def beside_two_navigations(src: Path, described: str) -> Path:
     """The package ``described`` in ``src``, beside a Jackal's and a Husky's navigation
-    packages (each runs move_base, neither names ``described``)."""
+    packages (each runs move_base, neither names ``described``) and the Husky's description."""
     for robot in ("jackal", "husky"):
         package(src, f"{robot}_navigation", {"launch/amcl.launch": "<node pkg='move_base'/>"})
+    package(src, "husky_description", {"urdf/husky.urdf.xacro": "<robot name='husky'/>"})
     return package(src, described)
 
 
@@ -142,7 +144,7 @@ def test_of_the_stems_beside_it_and_the_robots_own_the_longest_names_the_robot(
 ) -> None:
     src = tmp_path / "src"
     described = package(src / "m", "abb_irb_control")
-    package(src / "a", "abb_description")
+    package(src / "a", "abb_description", {"urdf/yumi.xacro": "<robot name='yumi'/>"})
     package(src / "z", "abb_irb_description")
     package(src / "b", "abb_yumi_bringup", {"launch/a.launch": "<node pkg='move_base'/>"})
     assert read(described).packages == ("abb_irb_control", "abb_irb_description")
@@ -157,6 +159,7 @@ def test_a_name_inside_a_longer_word_is_no_use(tmp_path: Path) -> None:
     src = tmp_path / "src"
     described = package(src, "arm")
     package(src, "farm_tools", {"launch/a.launch": "<node pkg='farming_arms'/>"})
+    package(src, "tractor_description", {"urdf/tractor.urdf": "<robot name='tractor'/>"})
     assert read(described).packages == ("arm",)
 
 
@@ -299,7 +302,11 @@ def test_a_dependency_shared_with_another_robot_brings_none_of_that_robots_packa
     src = tmp_path / "src"
     described = package(src, "rover_description", {"launch/sim.launch": "gazebo_ros"})
     package(src, "gazebo_ros")
-    package(src, "drone_gazebo", {"launch/sim.launch": "gazebo_ros drone_navigation"})
+    package(
+        src,
+        "drone_gazebo",
+        {"launch/sim.launch": "gazebo_ros drone_navigation", "urdf/drone.urdf": "<robot/>"},
+    )
     package(src, "drone_navigation", {"launch/nav.launch": "move_base"})
     assert read(described).packages == ("rover_description", "gazebo_ros")
 
@@ -313,7 +320,11 @@ def test_a_name_most_packages_write_is_no_evidence_that_its_package_is_used(
     package(src, "rover_bringup", {"launch/a.launch": launch})
     for name in ("arm_bringup", "cam_bringup", "lidar_bringup", "sim_bringup"):
         package(src, name, {"launch/a.launch": "robot_description"})
-    package(src, "robot_description", {"launch/display.launch": "move_base"})
+    package(
+        src,
+        "robot_description",
+        {"launch/display.launch": "move_base", "urdf/other.urdf": "<robot name='other'/>"},
+    )
     assert read(described).packages == ("rover_description", "rover_bringup")
 
 
@@ -329,7 +340,7 @@ def test_a_neighbours_robot_description_parameter_does_not_use_a_package_of_that
         "Node(package='robot_state_publisher', parameters=[robot_description])\n"
         "Node(package='gazebo_ros', arguments=['-topic', '/robot_description'])\n"
     )
-    package(src, "arm_demo", {"launch/arm.launch.py": launch})
+    package(src, "arm_demo", {"launch/arm.launch.py": launch, "urdf/arm.urdf": "<robot/>"})
     assert read(described).packages == ("robot_description",)
 
 
@@ -375,7 +386,11 @@ def test_a_metapackage_grouping_every_robot_of_a_repository_uses_none_of_them(
         "<package><name>vendor</name><exec_depend>irb5400_support</exec_depend>"
         f"<exec_depend>irb2400_moveit_config</exec_depend>{export}</package>"
     )
-    package(src, "irb2400_moveit_config", {"launch/demo.launch": "move_group"})
+    package(
+        src,
+        "irb2400_moveit_config",
+        {"launch/demo.launch": "move_group", "config/irb2400.urdf.xacro": "<robot/>"},
+    )
     assert read(described).packages == ("irb5400_support",)
 
 
@@ -404,6 +419,7 @@ def test_a_generic_stem_names_no_robot(tmp_path: Path) -> None:
     src = tmp_path / "src"
     described = package(src, "robot_description")
     package(src, "robot_localization", {"launch/ekf.launch": "x"})
+    package(src, "arm_description", {"urdf/arm.urdf": "<robot name='arm'/>"})
     assert read(described).packages == ("robot_description",)
 
 
@@ -618,3 +634,37 @@ def test_a_manifest_of_many_unclosed_exports_is_read_once_through() -> None:
 )
 def test_only_a_metapackage_inside_an_export_block_counts(manifest: str, meta: bool) -> None:
     assert reader._exports_metapackage(manifest) is meta
+
+
+def one_robots_repository(src: Path) -> Path:
+    """A repository of one robot in ``src``: its description package, named like the
+    parameter and named as a package by none of the others, its navigation package and a
+    mission package that sends it navigation goals; the description's package folder."""
+    described = package(src, "robot_description", {"urdf/amr.urdf.xacro": "<robot name='amr'/>"})
+    package(src, "robot_navigation", {"config/nav2_params.yaml": "bt_navigator:"})
+    package(src, "mission_manager", {"mission_manager/node.py": "NavigateToPose"})
+    return described
+
+
+def test_a_workspace_where_no_other_package_holds_a_description_is_all_the_robots(
+    tmp_path: Path,
+) -> None:
+    found = read(one_robots_repository(tmp_path / "ws" / "src"))
+    assert found.packages == ("robot_description", "mission_manager", "robot_navigation")
+    assert found.neighbours == ()
+
+
+def test_a_second_description_in_the_workspace_leaves_the_others_unread(tmp_path: Path) -> None:
+    src = tmp_path / "ws" / "src"
+    described = one_robots_repository(src)
+    package(src, "arm_description", {"urdf/arm.urdf": "<robot name='arm'/>"})
+    assert read(described).packages == ("robot_description",)
+
+
+def test_a_folder_that_is_no_source_workspace_is_nobodys_whole(tmp_path: Path) -> None:
+    # Packages beside one another in a folder not named src (a share folder of installed
+    # packages): only the caller, naming it the robot's workspace, makes it one robot's.
+    described = one_robots_repository(tmp_path / "share")
+    assert read(described).packages == ("robot_description",)
+    named = read(described, root=tmp_path / "share")
+    assert named.packages == ("robot_description", "mission_manager", "robot_navigation")
