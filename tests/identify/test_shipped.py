@@ -284,9 +284,20 @@ def test_a_body_of_no_arm_is_sent_no_cartesian_goals_whatever_its_packages_hold(
 @pytest.mark.parametrize(
     "text",
     [
-        "client = ActionClient(node, GripperCommand, 'gripper_controller/gripper_cmd')",
         "gripper_controller: {type: position_controllers/GripperActionController}",
         "type: gripper_action_controller/GripperActionController",
+    ],
+)
+def test_a_gripper_action_controller_an_arms_packages_configure_is_an_end_effector_control(
+    text: str,
+) -> None:
+    assert shipped_to_arms(text) == [["End Effector"], ["End Effector"]]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "client = ActionClient(node, GripperCommand, 'gripper_controller/gripper_cmd')",
         "sub = rospy.Subscriber('gripper_cmd', Float64, cb)",
         "robot.open_gripper()",
         "close_gripper: 5  # joystick button",
@@ -296,18 +307,9 @@ def test_a_body_of_no_arm_is_sent_no_cartesian_goals_whatever_its_packages_hold(
         "client = SimpleActionClient('gripper', GripperCommandAction)",
     ],
 )
-def test_a_grippers_open_and_close_an_arms_packages_command_is_an_end_effector_control(
-    text: str,
-) -> None:
-    assert shipped_to_arms(text) == [["End Effector"], ["End Effector"]]
-
-
-@pytest.mark.parametrize(
-    "text",
-    ["reopen_gripper_log()", "open_grippers = 2", "disclose_gripper", "nogripper_commandline"],
-)
-def test_gripper_command_words_inside_other_words_are_not_read(text: str) -> None:
-    assert shipped("Manipulator", text) == {}
+def test_a_grippers_open_and_close_alone_is_no_end_effector_control(text: str) -> None:
+    # The gripper's joint, opened and closed: no Cartesian goal for the arm's end.
+    assert shipped_to_arms(text) == [[], []]
 
 
 @pytest.mark.parametrize(
@@ -328,17 +330,18 @@ def test_gripper_command_words_inside_other_words_are_not_read(text: str) -> Non
         "Other",
     ],
 )
-def test_a_body_with_no_arm_is_not_given_end_effector_goals_by_a_grippers_commands(
+def test_a_body_with_no_arm_is_not_given_end_effector_goals_by_a_gripper_action_controller(
     structure: str,
 ) -> None:
-    assert shipped(structure, "client = ActionClient(node, GripperCommand, 'g')") == {}
+    assert shipped(structure, "type: gripper_action_controller/GripperActionController") == {}
 
 
 @pytest.mark.parametrize("structure", ["Torso", "Legged Mobile Manipulator", "Aerial Manipulator"])
-def test_every_body_with_an_arm_is_given_end_effector_goals_by_a_grippers_commands(
+def test_every_body_with_an_arm_is_given_end_effector_goals_by_a_gripper_action_controller(
     structure: str,
 ) -> None:
-    assert list(shipped(structure, "robot.close_gripper()")) == ["End Effector"]
+    text = "type: gripper_action_controller/GripperActionController"
+    assert list(shipped(structure, text)) == ["End Effector"]
 
 
 @pytest.mark.parametrize(
