@@ -867,7 +867,8 @@ def _leg_candidates(
 ) -> list[Limb]:
     """Unnamed chains of two joints or more, no gripper's, placed, on the trunk
     (:func:`_on_the_trunk`: past an arm's joints, hanging fingers are a hand's, as
-    :func:`legs_by_place` reads them)."""
+    :func:`legs_by_place` reads them), not every joint of them turning without end (a
+    caster's swivel and its wheel turn for ever; a leg's hip and knee stop)."""
     turns: dict[str, int] = {}
     return [
         limb
@@ -878,7 +879,15 @@ def _leg_candidates(
         and len(limb.joints) >= _LEG_JOINTS[0]
         and id(limb) in placed
         and _on_the_trunk(tree, limb.base, turns)
+        and not _spins_all_through(tree, limb)
     ]
+
+
+def _spins_all_through(tree: JointTree, limb: Limb) -> bool:
+    """Every joint of the chain turns without end (continuous, or a range no stop has)."""
+    return all(
+        (joint := tree.urdf.joint(name)) is not None and joint.endless for name in limb.joints
+    )
 
 
 def _pair_above(

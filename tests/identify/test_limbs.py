@@ -3156,3 +3156,30 @@ def test_six_single_hinges_round_a_flying_bodys_airframe_are_no_parallel_mechani
     tree = tree_of(robot)
     assert "arm" in [limb.kind for limb in parallel_robot(tree, chains)]
     assert parallel_robot(tree, chains, flying=True) == chains
+
+
+def base_on_two_swivel_casters(kind: str = "continuous") -> RobotText:
+    """A body named by letters only on two drive wheels, left and right, and two swivel
+    casters, front and back: each a swivel about the vertical and a wheel on it 0.1 m below,
+    both of ``kind``."""
+    robot = RobotText("r", root="b")
+    for name, y in (("p", 0.2), ("q", -0.2)):
+        builders.placed(robot, name, "continuous", "b", f"{name}l", xyz=f"0 {y} 0", axis="0 1 0")
+    for name, x in (("s", 0.25), ("t", -0.25)):
+        swivel = builders.placed(
+            robot, f"{name}0", kind, "b", f"{name}l0", xyz=f"{x} 0 -0.02", axis="0 0 1"
+        )
+        builders.placed(
+            robot, f"{name}1", kind, swivel, f"{name}l1", xyz="-0.03 0 -0.1", axis="0 1 0"
+        )
+    return robot
+
+
+def test_two_chains_hanging_down_whose_joints_all_turn_for_ever_are_no_legs() -> None:
+    # Two swivel casters, a swivel and a wheel each: no biped's legs.
+    result = identify_urdf(base_on_two_swivel_casters().text())
+    assert result.body is not None
+    assert result.body.count("leg") == 0
+    assert result.structure == "UGV"
+    # The same chains on joints that stop hang as a lower body's legs.
+    assert identify_urdf(base_on_two_swivel_casters("revolute").text()).structure == "Biped"
