@@ -25,8 +25,9 @@ family and per source (the repository or package in ``source``), each set's rows
 structure accuracy on the certain labels (no trailing ``?``), the lenient score (a label ending
 in ``?`` also accepts a structure its ``uncertainty_note`` names, by its name or a word of
 ``ALIASES`` such as the brief's Snake, and the ``LENIENT_ACCEPTS`` readings of its label),
-descriptions refused (exit 2), sensor precision and recall (kinds with counts), and motion-control precision and recall
-(robots whose ``motion_control_kinds`` is empty are not labelled for controls); then per set the
+descriptions refused (exit 2), sensor precision and recall (kinds with counts), and
+motion-control precision and recall (robots whose ``motion_control_kinds`` is empty are not
+labelled for controls); then per set the
 per-label table, the structure confusion table, each motion control's precision and recall
 and every miss.
 
