@@ -79,8 +79,9 @@ __all__ = [
 # Seconds to wait for the watcher's answer, unless told otherwise (``switch --wait``).
 DEFAULT_WAIT: Final = 5.0
 # Looking for the robot and the watchers' announcements on a graph whose participants are
-# discovered one by one: until nothing new for LOOK_QUIET seconds, at most LOOK_LIMIT (and, on
-# DDS, a watcher that announced a rule set is waited for until LOOK_LIMIT, not LOOK_QUIET).
+# discovered one by one: until nothing new (no robot, announcement, endpoint or parameter name)
+# for LOOK_QUIET seconds, at most LOOK_LIMIT (and, on DDS, a watcher that announced a rule set
+# is waited for until LOOK_LIMIT, not LOOK_QUIET).
 LOOK_QUIET: Final = 0.5
 LOOK_LIMIT: Final = 5.0
 # Seconds between looks at the answer when the source wakes no one (a ROS 1 master).
@@ -271,7 +272,16 @@ class Station:
                 return robots, params
             now = time.monotonic()
             announced = sorted(map(str, _mapping(params.get(ANNOUNCEMENTS))))
-            state = (robots, announced, running)
+            # Anything newly discovered (a participant's writers and readers, a parameter's
+            # name) is news: a watcher's announcement comes after its endpoints are found.
+            state = (
+                robots,
+                announced,
+                running,
+                observation.publishers,
+                observation.subscribers,
+                observation.param_names,
+            )
             awaited = self._discovers and bool(announced) and robot in robots
             if state != seen:
                 seen, quiet_since = state, now

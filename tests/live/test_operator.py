@@ -6,6 +6,7 @@ announcement, a hostile answer) neither answers a switch nor reaches the termina
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import math
 from collections.abc import Callable, Iterator
@@ -393,6 +394,30 @@ def test_an_announced_watcher_not_yet_seen_running_is_looked_for_past_a_quiet_gr
     observed.clear()
     ros1_station.look("/uav1", announcements=True)
     assert len(observed) == 2
+
+
+def test_a_graph_still_discovering_endpoints_is_not_yet_quiet(
+    node: TestNode, ros1_station: Station, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # A participant's endpoints found one by one (DDS on a busy machine) are news: the look
+    # goes on while they come, for the watcher's announcement that follows them.
+    from solver.live import operator
+
+    put_drone(node, "/uav1")
+    monkeypatch.setattr(operator, "LOOK_QUIET", 0.0)
+    monkeypatch.setattr(operator, "LOOK_LIMIT", 2.0)
+    observed: list[object] = []
+    observe = ros1_station.source.observe
+
+    def discovering(*args: Any) -> Any:
+        observed.append(args)
+        found = observe(*args)
+        late = tuple((f"/late_{i}", ("/late",)) for i in range(min(len(observed), 4)))
+        return dataclasses.replace(found, publishers=found.publishers + late)
+
+    monkeypatch.setattr(ros1_station.source, "observe", discovering)
+    ros1_station.look("/uav1", announcements=True)
+    assert len(observed) == 5  # four looks each finding a new writer, then one quiet look
 
 
 def test_a_switch_on_a_master_is_answered_and_the_parameters_hold_it(
