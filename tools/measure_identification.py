@@ -27,9 +27,8 @@ in ``?`` also accepts a structure its ``uncertainty_note`` names, by its name or
 ``ALIASES`` such as the brief's Snake, and the ``LENIENT_ACCEPTS`` readings of its label),
 descriptions refused (exit 2), sensor precision and recall (kinds with counts), and
 motion-control precision and recall (robots whose ``motion_control_kinds`` is empty are not
-labelled for controls); then per set the
-per-label table, the structure confusion table, each motion control's precision and recall
-and every miss.
+labelled for controls); then per set the per-label table, the structure confusion table, each
+motion control's precision and recall and every miss.
 
 Labels that name no structure of the profile are scored against the article's fallback: a
 ``Surface vessel`` or ``Underwater vehicle`` is right as ``Other`` until the profile has a

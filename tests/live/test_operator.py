@@ -352,29 +352,41 @@ def test_a_forged_announcement_tells_no_rule_set(node: TestNode, ros1_station: S
     assert why == f"no running watcher on {ros1_station.name} announces its rule set"
 
 
+def counted_looks(
+    station: Station,
+    monkeypatch: pytest.MonkeyPatch,
+    found: Callable[[Any, int], Any] = lambda observation, _count: observation,
+) -> list[object]:
+    """The station's observations from now on, counted (each call's arguments), with the look
+    ended by the first quiet one (at most 2 s); ``found`` makes each observation from the
+    graph's and how many were made."""
+    from solver.live import operator
+
+    monkeypatch.setattr(operator, "LOOK_QUIET", 0.0)
+    monkeypatch.setattr(operator, "LOOK_LIMIT", 2.0)
+    observed: list[object] = []
+    observe = station.source.observe
+
+    def counted(*args: Any) -> Any:
+        observed.append(args)
+        return found(observe(*args), len(observed))
+
+    monkeypatch.setattr(station.source, "observe", counted)
+    return observed
+
+
 def test_an_announced_watcher_not_yet_seen_running_is_looked_for_past_a_quiet_graph(
     node: TestNode, ros1_station: Station, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     # A quiet graph ends the look after two observations; on a graph that discovers its
     # participants late (DDS), an announcement whose watcher is not seen running keeps it
     # looking. A master tells at once: a stale announcement there costs no wait.
-    from solver.live import operator
-
     put_drone(node, "/uav1")
     node.set_param(
         "/teleop_ui/watchers/late",
         {"watcher": "/late", "team": "Case 3", "rules": "Mortimer et al. 2017"},
     )
-    monkeypatch.setattr(operator, "LOOK_QUIET", 0.0)
-    monkeypatch.setattr(operator, "LOOK_LIMIT", 2.0)
-    observed: list[object] = []
-    observe = ros1_station.source.observe
-
-    def counted(*args: Any) -> Any:
-        observed.append(args)
-        return observe(*args)
-
-    monkeypatch.setattr(ros1_station.source, "observe", counted)
+    observed = counted_looks(ros1_station, monkeypatch)
     ros1_station.look("/uav1", announcements=True)
     assert len(observed) == 2
     observed.clear()
@@ -401,21 +413,13 @@ def test_a_graph_still_discovering_endpoints_is_not_yet_quiet(
 ) -> None:
     # A participant's endpoints found one by one (DDS on a busy machine) are news: the look
     # goes on while they come, for the watcher's announcement that follows them.
-    from solver.live import operator
-
     put_drone(node, "/uav1")
-    monkeypatch.setattr(operator, "LOOK_QUIET", 0.0)
-    monkeypatch.setattr(operator, "LOOK_LIMIT", 2.0)
-    observed: list[object] = []
-    observe = ros1_station.source.observe
 
-    def discovering(*args: Any) -> Any:
-        observed.append(args)
-        found = observe(*args)
-        late = tuple((f"/late_{i}", ("/late",)) for i in range(min(len(observed), 4)))
-        return dataclasses.replace(found, publishers=found.publishers + late)
+    def discovering(observation: Any, count: int) -> Any:
+        late = tuple((f"/late_{i}", ("/late",)) for i in range(min(count, 4)))
+        return dataclasses.replace(observation, publishers=observation.publishers + late)
 
-    monkeypatch.setattr(ros1_station.source, "observe", discovering)
+    observed = counted_looks(ros1_station, monkeypatch, discovering)
     ros1_station.look("/uav1", announcements=True)
     assert len(observed) == 5  # four looks each finding a new writer, then one quiet look
 

@@ -263,9 +263,10 @@ def read_workspace(
         each.mentions = each.manifest & names
         for path in each.paths:
             _read_into(each, path, top, names, budget)
-    ours = _robots_packages(core, ordered)
     if _one_robots(own, ordered, top, named=root is not None, budget=budget):
         ours = ordered
+    else:
+        ours = _robots_packages(core, ordered)
     return Workspace(
         top,
         own.name,
