@@ -237,6 +237,9 @@ _NAMED_SPINE_JOINTS = 2
 # A robot that calls itself an arm, read as a word of its name, camelCase split (``simple_arm``,
 # ``SimpleArm``, ``camera_manipulator``; not ``xarm``'s product name, nor ``armadillo``).
 _ARM_NAME = re.compile(r"(^|[^a-z])(arm|manipulator)s?([^a-z]|$)", re.IGNORECASE)
+# A robot that calls itself something that walks: its hanging chains are legs whatever else
+# its name says (``biped_with_arms``).
+_LEGGED_NAME = re.compile(r"leg|biped|humanoid|walk|ped($|[^a-z])|dog", re.IGNORECASE)
 # A robot that calls itself a pendulum rig, a control course's plant (``cart_pole``,
 # ``furuta_pendulum``, ``acrobot``, ``pendubot``, ``double_pendulum_2dof``): not an arm that
 # balances one (``pendulum_arm``: :data:`_ARM_NAME`).
@@ -486,7 +489,9 @@ def legs_by_reach(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     chains or more like the pair, hanging as straight, their feet level with its own
     (:func:`_level_with`), are a walker's legs, every one of them: a quadruped's legs too long
     for :func:`legs_by_place` (six joints, ``joint11`` .. ``joint16``) are no biped's two
-    beside two arms.
+    beside two arms. A pair alone (no walker's four) on a robot whose name calls it an arm and
+    nothing that walks (``two_arm``, :data:`_LEGGED_NAME`) is a dual-arm robot's arms hanging
+    at rest.
     """
     if any(limb.kind == "leg" for limb in limbs) or _world_root(tree):
         return limbs
@@ -503,6 +508,8 @@ def legs_by_reach(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     if len(level) >= _WALKER_LEGS:  # a quadruped's, a hexapod's: every one of them a leg
         why = "one of equal unnamed chains hanging straight down, their feet level (legs by reach)"
         legs = {id(limb) for limb in level}
+    elif _named_arm(tree.urdf.name) and not _LEGGED_NAME.search(tree.urdf.name):
+        return limbs
     else:
         why = "one of two equal unnamed chains hanging straight down from the bottom of the body"
         legs = {id(limb) for limb in pair}

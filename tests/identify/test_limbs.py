@@ -1767,6 +1767,33 @@ def test_two_chains_hanging_from_a_body_a_world_holds_on_a_floating_joint_are_it
     assert result.structure == "Biped"
 
 
+def hanging_pair(name: str) -> RobotText:
+    """A robot named ``name``: two unnamed six-joint chains hanging 0.6 m straight down, side
+    by side, from a free body, nothing else."""
+    robot = RobotText(name, root="body")
+    for side, y in (("a", 0.1), ("b", -0.1)):
+        placed_chain(robot, "body", f"{side}j", start=f"0 {y} -0.05", steps=["0 0 -0.1"] * 5)
+    return robot
+
+
+def test_two_chains_hanging_from_a_free_body_are_a_bipeds_legs_when_no_name_says_otherwise() -> (
+    None
+):
+    assert identify_urdf(hanging_pair("r").text()).structure == "Biped"
+
+
+def test_the_same_chains_on_a_robot_named_for_its_arms_are_a_dual_arm_robots_arms() -> None:
+    # A student's dual-arm robot (``two_arm_URDF``) drawn with its arms hanging at rest.
+    result = identify_urdf(hanging_pair("two_arm_URDF").text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["arm", "arm"]
+    assert result.structure == "Torso"
+
+
+def test_a_robot_named_both_a_walker_and_an_arm_stands_on_its_hanging_chains() -> None:
+    assert identify_urdf(hanging_pair("biped_with_arms").text()).structure == "Biped"
+
+
 def pony(*, neck: bool = True) -> RobotText:
     """Four unnamed six-joint chains (too long for legs by place) hanging 0.3 m straight down
     from the corners of a free body, and a two-joint neck on its front pointing up."""
