@@ -135,6 +135,8 @@ _CAMERA = re.compile(r"camera|(^|[_/])cam([_/\d]|$)", re.IGNORECASE)
 # link, its colour and depth frames and their optical frames; a stereo pair's).
 _MOST_CAMERA_FRAMES = 8
 LIMB_KINDS = ("leg", "arm", "head")
+# A chain with this many joints named an arm's is an arm though it turns a camera.
+_NAMED_ARM_JOINTS = 2
 # An unnamed pair of chains on the root this long, beside named arms higher up, are legs.
 _LEG_BY_PLACE_JOINTS = 5
 # Legs that each end in a wheel are legs (a wheel-legged robot) when there are this many.
@@ -2491,6 +2493,7 @@ def _classify(
         not gripper
         and length <= tree.profile.limb("head_max_joints")
         and _turns(chain)
+        and not _an_arm_by_name(tree, chain, flying=flying)
         and (cameras := _cameras_turned(tree, chain[-1], named=named))
     ):
         # A camera's own frame turned by the chain's last joint: a gimbal, whatever the chain
@@ -2507,6 +2510,19 @@ def _classify(
         return Limb(kind, names, base, tip, gripper, named, why)
     kind, why = _unnamed_kind(tree, chain, length, gripper=gripper, named=named, flying=flying)
     return Limb(kind, names, base, tip, gripper, named, why)
+
+
+def _an_arm_by_name(tree: JointTree, chain: list[Joint], *, flying: bool) -> bool:
+    """A chain whose joints themselves, two or more, are named an arm's and none a head's, on
+    a body that does not fly: an arm pointing a camera at its tip (a patrol robot's
+    ``arm_joint_01`` ..), not a gimbal (a drone's gimbal arms are a head whatever their names)
+    nor a pan/tilt unit whose links only an exporter named (``joint_7`` moving ``arm_2``)."""
+    if flying:
+        return False
+    parts = [tree.parts_of(j.name) | tree.parts_of(j.child) for j in chain]
+    if any("head" in named for named in parts):
+        return False
+    return sum(1 for j in chain if "arm" in tree.parts_of(j.name)) >= _NAMED_ARM_JOINTS
 
 
 def _name_scores(tree: JointTree, chain: list[Joint]) -> dict[str, int]:

@@ -672,6 +672,40 @@ def test_a_short_arm_carrying_a_tool_beside_its_camera_stays_an_arm() -> None:
     assert identify_urdf(robot.text()).structure == "Mobile Manipulator"
 
 
+def rover_with_a_camera_on(joints: tuple[str, str, str], tip: str = "arm_link_3") -> RobotText:
+    """A wheeled base with a turn, a tilt and a roll named ``joints`` on a post, the last
+    moving ``tip`` with a camera fixed to it (a patrol robot's camera arm)."""
+    robot = RobotText("rover", root="base_link")
+    builders.wheeled_base(robot)
+    robot.add(builders.model_plugin("drive", "libgazebo_ros_diff_drive.so"))
+    robot.fixed(robot.root, "post")
+    links = ("arm_link_1", "arm_link_2", tip)
+    parent = "post"
+    for name, link, axis in zip(joints, links, ("0 0 1", "1 0 0", "0 1 0"), strict=True):
+        builders.placed(robot, name, "revolute", parent, link, xyz="0 0 0.15", axis=axis)
+        parent = link
+    robot.fixed(tip, "camera_link")
+    return robot
+
+
+def test_a_chain_whose_joints_are_named_an_arms_pointing_a_camera_is_an_arm() -> None:
+    robot = rover_with_a_camera_on(("arm_joint_01", "arm_joint_02", "arm_joint_03"))
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["arm"]
+    assert result.structure == "Mobile Manipulator"
+
+
+def test_the_same_chain_with_only_its_links_named_an_arms_points_a_camera() -> None:
+    robot = rover_with_a_camera_on(("joint_7", "joint_8", "joint_9"))
+    assert identify_urdf(robot.text()).structure == "UGV"
+
+
+def test_the_same_arm_named_chain_ending_in_a_head_is_a_head() -> None:
+    robot = rover_with_a_camera_on(("arm_joint_01", "arm_joint_02", "arm_joint_03"), "head")
+    assert identify_urdf(robot.text()).structure == "UGV"
+
+
 def pair_of_hands(fingers: tuple[int, int] = (5, 5), joint: str = "wrist") -> RobotText:
     """Two hands on forearms fixed 0.4 m apart on one stand, each a one-joint chain named
     ``joint`` into its palm and ``fingers`` three-joint fingers (a bimanual hand rig, no arm)."""
