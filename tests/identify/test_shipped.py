@@ -146,6 +146,9 @@ def test_move_base_and_position_set_points_are_navigation_too() -> None:
     # A target pose is a vehicle's goal, but a walker's foot in its leg kinematics, and a
     # mobile manipulator's arm goal (its base's navigation shows otherwise).
     assert "Waypoint" in shipped("UGV", "self.target_pose = goal")
+    # A number is no pose: a balancing robot's state feedback on its wheel's position.
+    assert shipped("UGV", "self.target_pose = 0.0") == {}
+    assert "Waypoint" in shipped("UGV", "self.target_pose = 0.0\nself.target_pose = msg.pose")
     assert shipped("Hexapod", "foot.target_pose = ik(leg)") == {}
     assert shipped("Mobile Manipulator", "arm.setPoseTarget(target_pose)") == {}
     assert shipped("Legged Mobile Manipulator", "arm.set_pose_target(target_pose)") == {}
