@@ -248,6 +248,8 @@ def test_an_arm_moved_by_inverse_kinematics_to_a_target_is_sent_end_effector_goa
         "gantry.move_to_cartesian(x, y, z)",
         "robot.movel(pose)",
         "dobot.MovL(x, y, z, r)",  # a maker's linear move
+        "mc.send_coords([x, y, z, rx, ry, rz], 30, 0)",  # pymycobot's Cartesian move
+        "mc.sync_send_coords(coords, 20)",
         "MoveLinear.srv",
         "pub = rospy.Publisher('/ee_target', PoseStamped)",
         "goal = end_effector_goal(x)",
@@ -273,6 +275,7 @@ def test_a_cartesian_controller_or_goal_an_arms_packages_ship_is_an_end_effector
         "planning_scene.remove_pose(marker)",
         "saved_move_poses = []",
         "moveline = 3",
+        "send_coordsys(frame)",  # another word
     ],
 )
 def test_the_word_cartesian_or_a_logged_pose_is_no_end_effector_control(text: str) -> None:
