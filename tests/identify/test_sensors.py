@@ -72,6 +72,8 @@ def bare(name: str, link: str = "base_link") -> str:
             ("sonar", None, 1),
         ),
         (builders.gazebo_sensor("cliff_left", "ray", "cliff_sensor_left"), ("ir_range", None, 1)),
+        # A line follower's reflectance sensor, faked with a camera of one pixel.
+        (builders.gazebo_sensor("lt", "camera", "line_tracking_left"), ("ir_range", None, 1)),
         (
             builders.gazebo_sensor(
                 "tof_1", "ray", "tof_1", RAY.format(h=10, v=10), "libhector_gazebo_ros_sonar.so"
