@@ -81,7 +81,7 @@ MOVED_ON = dict.fromkeys(range(52, 130), "2026-11-30")
 MOVED_ON |= dict.fromkeys(range(130, 182), "2026-12-01")
 MOVED_ON |= dict.fromkeys(range(182, 278), "2026-12-02")
 MOVED_ON |= dict.fromkeys(range(278, 279), "2026-12-03")
-MOVED_ON |= dict.fromkeys(range(279, 395), "2026-12-04")
+MOVED_ON |= dict.fromkeys(range(279, 396), "2026-12-04")
 # Sets labelled from a brief rewritten on a new machine (the earlier one lost with the old).
 REWRITTEN = frozenset({278, 328})
 LAST_MOVED = max(MOVED_ON)
