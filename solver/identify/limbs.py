@@ -2493,7 +2493,7 @@ def _classify(
         not gripper
         and length <= tree.profile.limb("head_max_joints")
         and _turns(chain)
-        and not _an_arm_by_name(tree, chain, flying=flying)
+        and not _an_arm_by_name(tree, chain, scores, flying=flying)
         and (cameras := _cameras_turned(tree, chain[-1], named=named))
     ):
         # A camera's own frame turned by the chain's last joint: a gimbal, whatever the chain
@@ -2512,15 +2512,15 @@ def _classify(
     return Limb(kind, names, base, tip, gripper, named, why)
 
 
-def _an_arm_by_name(tree: JointTree, chain: list[Joint], *, flying: bool) -> bool:
-    """A chain whose joints themselves, two or more, are named an arm's and none a head's, on
-    a body that does not fly: an arm pointing a camera at its tip (a patrol robot's
-    ``arm_joint_01`` ..), not a gimbal (a drone's gimbal arms are a head whatever their names)
-    nor a pan/tilt unit whose links only an exporter named (``joint_7`` moving ``arm_2``)."""
-    if flying:
-        return False
-    parts = [tree.parts_of(j.name) | tree.parts_of(j.child) for j in chain]
-    if any("head" in named for named in parts):
+def _an_arm_by_name(
+    tree: JointTree, chain: list[Joint], scores: dict[str, int], *, flying: bool
+) -> bool:
+    """A chain whose joints themselves, two or more, are named an arm's and none of whose
+    parts a head's (``scores``: :func:`_name_scores`), on a body that does not fly: an arm
+    pointing a camera at its tip (a patrol robot's ``arm_joint_01`` ..), not a gimbal (a
+    drone's gimbal arms are a head whatever their names) nor a pan/tilt unit whose links only
+    an exporter named (``joint_7`` moving ``arm_2``)."""
+    if flying or scores["head"]:
         return False
     return sum(1 for j in chain if "arm" in tree.parts_of(j.name)) >= _NAMED_ARM_JOINTS
 
