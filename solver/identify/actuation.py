@@ -97,6 +97,12 @@ _FOOT_JOINT = re.compile(r"ankle|toe", re.IGNORECASE)
 _FEWEST_UNNAMED_ROTORS = 3
 # ... and from this many when they are all on one upright line (a coaxial helicopter's).
 _COAXIAL_ROTORS = 2
+# Spinning leaves spaced round their own middle (:func:`_ring`): their distances from it, and
+# their heights, differ by at most this share of the mean distance.
+_RING_TOLERANCE = 0.1
+# A revolute joint whose range spans this (a whole turn, pi rounded to 3.14 each way) may spin
+# a propeller: an export that bounds every joint at +-pi writes its rotors so.
+_WHOLE_TURN = 6.28
 # An omni base's wheels, told by their axles alone: this many or more (a kiwi drive's three),
 # each axle within this share of pointing at the middle of them all (the cosine of the angle
 # between the axle and the line from the middle to the wheel, 0.95: 18 degrees).
@@ -923,11 +929,15 @@ def _unnamed_rotors(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     taken = set(roles)
     wheeled = any(role.role == "wheel" for role in roles.values())
     around: dict[str | None, list[Joint]] = {}
+    whole_turns: dict[str | None, list[Joint]] = {}
     known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
     turning: dict[str, str | None] = {}  # link -> the nearest joint above it that turns
     for joint in (*_unnamed_spinners(tree, taken), *_motor_leaves(tree, taken)):
         if joint.child not in tree.moving_below and _upright(_resting_axis(tree, joint, turning)):
             around.setdefault(_rotor_carrier(tree, joint, known, turning), []).append(joint)
+    for joint in _whole_turn_leaves(tree, taken | {j.name for js in around.values() for j in js}):
+        if _upright(_resting_axis(tree, joint, turning)):
+            whole_turns.setdefault(_rotor_carrier(tree, joint, known, turning), []).append(joint)
     found: list[str] = []
     for carrier, joints in around.items():
         places = [tree.poses.place(j.child) for j in joints]
@@ -938,7 +948,48 @@ def _unnamed_rotors(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
             and _sides({place[1] - centre[1] for place in places})
         ) or (not wheeled and _coaxial(places)):
             found.extend(j.name for j in joints)
+    for joints in whole_turns.values():
+        if _ring([tree.poses.place(j.child) for j in joints]):
+            found.extend(j.name for j in joints)
     return found
+
+
+def _whole_turn_leaves(tree: JointTree, taken: set[str]) -> Iterator[Joint]:
+    """Revolute leaves of no role yet and no part's name that turn a whole turn but not for
+    ever (an export that bounds every joint at +-pi), pointing no sensor: what could be
+    propellers, told as such only when spaced round their own middle (:func:`_ring`). A
+    finger or a jaw stops well short of a turn."""
+    known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
+    named: dict[str, str | None] = {}  # link -> the nearest movable joint named for a part
+    for joint in tree.urdf.joints:
+        if (
+            joint.type == "revolute"
+            and not joint.endless
+            and joint.turns(_WHOLE_TURN)
+            and joint.actuated
+            and joint.name not in taken
+            and joint.child not in tree.moving_below
+            and not _named_for_a_part(tree, joint, known, named)
+            and not points_a_sensor(tree, joint)
+        ):
+            yield joint
+
+
+def _ring(places: list[tuple[float, float, float]]) -> bool:
+    """Three places or more at one height, each one distance from the middle of them all (a
+    frame's corners): a multirotor's propellers, wherever its frame's origin is (a CAD export
+    puts it at a corner of the body, so the test round the origin fails)."""
+    if len(places) < _FEWEST_UNNAMED_ROTORS:
+        return False
+    middle = [sum(place[axis] for place in places) / len(places) for axis in range(3)]
+    radii = [math.hypot(place[0] - middle[0], place[1] - middle[1]) for place in places]
+    mean = sum(radii) / len(radii)
+    spread = _RING_TOLERANCE * mean
+    return (
+        mean > _MIRROR_TOLERANCE
+        and max(radii) - min(radii) <= spread
+        and max(place[2] for place in places) - min(place[2] for place in places) <= spread
+    )
 
 
 def _rotor_carrier(

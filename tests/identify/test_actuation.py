@@ -1052,9 +1052,44 @@ def test_revolute_leaves_with_a_range_no_stop_has_spin_as_rotors_and_limited_one
     endless = identify_urdf(revolute_rotors("1e+16").text())
     assert endless.body is not None
     assert (endless.structure, len(endless.body.rotors)) == ("UAV", 4)
-    limited = identify_urdf(revolute_rotors("3.1416").text())
+    limited = identify_urdf(revolute_rotors("2").text())
     assert limited.body is not None
     assert not limited.body.rotors
+
+
+def test_unnamed_leaves_of_a_whole_turn_spaced_round_their_middle_are_rotors() -> None:
+    # A CAD export: every joint bounded at +-3.14, the frame's origin at a corner of the body,
+    # so the four propellers all sit before and right of it, spaced round their own middle.
+    robot = RobotText("r")
+    for i, (x, y) in enumerate(((0.16, -0.04), (-0.03, -0.04), (-0.03, -0.22), (0.16, -0.22))):
+        robot.joint(
+            f"j{i}",
+            "revolute",
+            robot.root,
+            f"l{i}",
+            f'<origin xyz="{x} {y} 0.11" rpy="1.5708 0 0"/><axis xyz="0 1 0"/>'
+            '<limit lower="-3.14" upper="3.14" effort="0" velocity="0"/>',
+        )
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert (result.structure, len(result.body.rotors)) == ("UAV", 4)
+    # Three leaves in a row are not spaced round their middle (the two ends are twice as far
+    # from it as the middle one): spinning tools, no rotors.
+    row = RobotText("row")
+    for i in range(3):
+        row.joint(
+            f"j{i}",
+            "revolute",
+            row.root,
+            f"l{i}",
+            f'<origin xyz="{0.1 * i} 0.1 0.1"/><axis xyz="0 0 1"/>'
+            '<limit lower="-3.14" upper="3.14" effort="0" velocity="0"/>',
+        )
+    assert identify_urdf(row.text()).structure != "UAV"
+    # Nor are leaves that stop short of a whole turn, wherever they are.
+    short = identify_urdf(revolute_rotors("3.1").text())
+    assert short.body is not None
+    assert not short.body.rotors
 
 
 def test_limited_leaves_named_as_motors_all_round_a_body_are_its_rotors() -> None:
