@@ -27,7 +27,7 @@ from __future__ import annotations
 import math
 import re
 from collections import Counter
-from itertools import islice, pairwise
+from itertools import combinations, islice, pairwise
 
 from solver.identify.couplings import Walk, jaw_groups
 from solver.identify.limbs import Limb, chain_ends, joint_words, moved_by, tips_meet
@@ -67,6 +67,10 @@ _FINGERTIP = re.compile(r"(finger|thumb)[_-]?tip", re.IGNORECASE)
 _CHAIN_BEFORE_JAWS = 2
 # Places this close (metres) are one place.
 _SAME = 1e-4
+# The farthest apart (metres) the first joints of a palm's fingers are: a hand's breadth (the
+# sets' hands, a humanoid's to a three-finger industrial gripper's, span up to 0.19 m). Chains
+# farther apart on one body are its own parts: an aircraft's control surfaces, a base's flaps.
+_HAND_BREADTH = 0.3
 # A joint turning through this much goes all the way round: no finger's.
 _FULL_TURN = 2 * math.pi - 1e-6
 # Two sliding jaws sit apart along one line within this share of their distance across it
@@ -590,9 +594,30 @@ def _on_one_palm(
         for body, group in by_palm.items()
         if len(group) >= tree.profile.limb("hand_min_fingers")
         and (body not in sized or not _tips_meet(tree, group))
+        and _within_a_hand(tree, group)
         for limb in group
         for name in limb.joints
     }
+
+
+def _within_a_hand(tree: JointTree, group: list[Limb]) -> bool:
+    """Chains of more than one joint or that slide, or single hinges all within a hand's
+    breadth of each other (:data:`_HAND_BREADTH`): fingers on one palm, not an aircraft's
+    ailerons and tail (a hinge bends no finger of its own that far from the others; a tool
+    turret's slides and caps, a cart's drawers, are left as they were read)."""
+    if any(
+        len(limb.joints) > 1
+        or (joint := tree.urdf.joint(limb.joints[0])) is None
+        or joint.type != "revolute"
+        for limb in group
+    ):
+        return True
+    places = [
+        tree.poses.place(joint.child)
+        for limb in group
+        if (joint := tree.urdf.joint(limb.joints[0])) is not None
+    ]
+    return all(distance(a, b) <= _HAND_BREADTH for a, b in combinations(places, 2))
 
 
 def _finger_like(tree: JointTree, limb: Limb, longest: int) -> str | None:

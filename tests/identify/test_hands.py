@@ -228,6 +228,19 @@ def test_short_unnamed_chains_on_a_flying_bodys_airframe_are_its_own_and_no_fing
     assert finger_groups(tree, airframe + claw, flying=True) == fingers
 
 
+def test_single_hinges_farther_apart_than_a_hand_is_broad_are_no_fingers() -> None:
+    # A small aircraft with every name removed: two ailerons 0.55 m apart across its wings, an
+    # elevator and a rudder 0.6 m behind; and a claw's three hinges 4 cm apart on one palm.
+    def hinges(places: list[tuple[float, float, float]]) -> str:
+        robot = RobotText("r")
+        for i, (x, y, z) in enumerate(places):
+            builders.placed(robot, f"j{i}", "revolute", robot.root, f"l{i}", xyz=f"{x} {y} {z}")
+        return identify_urdf(robot.text()).structure
+
+    assert hinges([(-0.03, 0.28, 0), (-0.03, -0.28, 0), (-0.58, 0, 0), (-0.65, 0, 0.02)]) != "Hand"
+    assert hinges([(0, 0.04, 0), (0, 0, 0), (0, -0.04, 0)]) == "Hand"
+
+
 def segmented(steps: list[list[tuple[float, float, float]]]) -> RobotText:
     """A body with one unnamed chain per entry of ``steps``, starting 0.03 m apart across it:
     a joint at each step (an offset from the joint before), its tip one step further."""
