@@ -30,7 +30,7 @@ import itertools
 import math
 import re
 from collections import Counter
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterable, Iterator, Mapping
 
 from solver.identify.hands import endless_jaws, gripper_closure, jaws
 from solver.identify.limbs import CORNER, joints_above, moved_by, nearest_above, points_a_sensor
@@ -928,30 +928,54 @@ def _unnamed_rotors(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     level axle, a caster's swivel carries its wheel, a spinning lidar is one."""
     taken = set(roles)
     wheeled = any(role.role == "wheel" for role in roles.values())
-    around: dict[str | None, list[Joint]] = {}
-    whole_turns: dict[str | None, list[Joint]] = {}
     known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
     turning: dict[str, str | None] = {}  # link -> the nearest joint above it that turns
-    for joint in (*_unnamed_spinners(tree, taken), *_motor_leaves(tree, taken)):
-        if joint.child not in tree.moving_below and _upright(_resting_axis(tree, joint, turning)):
-            around.setdefault(_rotor_carrier(tree, joint, known, turning), []).append(joint)
-    for joint in _whole_turn_leaves(tree, taken | {j.name for js in around.values() for j in js}):
-        if _upright(_resting_axis(tree, joint, turning)):
-            whole_turns.setdefault(_rotor_carrier(tree, joint, known, turning), []).append(joint)
-    found: list[str] = []
-    for carrier, joints in around.items():
-        places = [tree.poses.place(j.child) for j in joints]
-        centre = _body_origin(tree, carrier)
-        if (
-            len(joints) >= _FEWEST_UNNAMED_ROTORS
-            and _sides({place[0] - centre[0] for place in places})
-            and _sides({place[1] - centre[1] for place in places})
-        ) or (not wheeled and _coaxial(places)):
-            found.extend(j.name for j in joints)
-    for joints in whole_turns.values():
-        if _ring([tree.poses.place(j.child) for j in joints]):
-            found.extend(j.name for j in joints)
+    spinning = (*_unnamed_spinners(tree, taken), *_motor_leaves(tree, taken))
+    around = _upright_by_carrier(tree, spinning, known, turning)
+    seen = taken | {joint.name for joints in around.values() for joint in joints}
+    whole_turns = _upright_by_carrier(tree, _whole_turn_leaves(tree, seen), known, turning)
+    found = [
+        joint.name
+        for carrier, joints in around.items()
+        if _round_its_origin(tree, carrier, joints, wheeled)
+        for joint in joints
+    ]
+    found += [
+        joint.name
+        for joints in whole_turns.values()
+        if _ring([tree.poses.place(joint.child) for joint in joints])
+        for joint in joints
+    ]
     return found
+
+
+def _upright_by_carrier(
+    tree: JointTree,
+    joints: Iterable[Joint],
+    known: dict[str, str | None],
+    turning: dict[str, str | None],
+) -> dict[str | None, list[Joint]]:
+    """The ``joints`` that end the tree and turn about an upright axis, by the movable joint
+    that moves the body they are on (:func:`_rotor_carrier`)."""
+    by_carrier: dict[str | None, list[Joint]] = {}
+    for joint in joints:
+        if joint.child not in tree.moving_below and _upright(_resting_axis(tree, joint, turning)):
+            by_carrier.setdefault(_rotor_carrier(tree, joint, known, turning), []).append(joint)
+    return by_carrier
+
+
+def _round_its_origin(
+    tree: JointTree, carrier: str | None, joints: list[Joint], wheeled: bool
+) -> bool:
+    """Three leaves or more before and behind, left and right of their body's origin; or, on
+    a body with no wheel, two or more on one upright line (:func:`_coaxial`)."""
+    places = [tree.poses.place(joint.child) for joint in joints]
+    centre = _body_origin(tree, carrier)
+    return (
+        len(joints) >= _FEWEST_UNNAMED_ROTORS
+        and _sides({place[0] - centre[0] for place in places})
+        and _sides({place[1] - centre[1] for place in places})
+    ) or (not wheeled and _coaxial(places))
 
 
 def _whole_turn_leaves(tree: JointTree, taken: set[str]) -> Iterator[Joint]:
