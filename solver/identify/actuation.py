@@ -580,10 +580,29 @@ def _balanced(tree: JointTree, joint: Joint) -> bool:
 
 def _mostly_balanced(tree: JointTree, joints: list[Joint]) -> bool:
     """None of the parts ``joints`` turn is known to hang its mass off its axle, and more than
-    half are known to carry it on the axle (:func:`_balance`): a row of road wheels whose few
-    idlers' files leave out where their mass is."""
+    half are known to carry it on the axle (:func:`_balance`) or, where the file leaves that
+    out, drawn round it (:func:`_drawn_round`): a row of road wheels whose few idlers' files
+    leave out where their mass is."""
     verdicts = [_balance(tree, joint) for joint in joints]
+    verdicts = [
+        (_drawn_round(tree, joint) or None) if verdict is None else verdict
+        for verdict, joint in zip(verdicts, joints, strict=True)
+    ]
     return False not in verdicts and 2 * verdicts.count(True) > len(verdicts)
+
+
+def _drawn_round(tree: JointTree, joint: Joint) -> bool:
+    """The part ``joint`` turns is drawn as a cylinder about the joint's axis and centred on
+    it (within :data:`_ON_THE_AXLE`): a tyre round its axle, where the file leaves out where its
+    mass is. A whole-turning leg is drawn out along the leg, or as a rod across its axle."""
+    link = tree.urdf.link(joint.child)
+    shape = None if link is None else link.cylinder
+    if shape is None:
+        return False
+    axis = tree.poses.axis(joint)
+    along = tree.poses.turned(joint.child, shape.rpy, (0.0, 0.0, 1.0))
+    centre = tree.poses.turned(joint.child, (0.0, 0.0, 0.0), shape.xyz)
+    return parallel(along, axis) and off_axis(centre, axis) <= _ON_THE_AXLE
 
 
 def _balance(tree: JointTree, joint: Joint) -> bool | None:

@@ -1422,6 +1422,46 @@ def test_one_leg_known_to_hang_its_mass_out_keeps_the_six_a_wheel_leg_walker() -
     assert identify_urdf(text).structure == "Hexapod"
 
 
+def with_shapes(robot: RobotText, *, rpy: str, xyz: str = "0 0 0", mass: str = "") -> str:
+    """``robot``'s text with each spoke drawn as a cylinder turned by ``rpy`` and placed at
+    ``xyz`` on its link, with ``mass`` (an inertial's text) or none."""
+    text = robot.text()
+    for i in range(len(robot.joints)):
+        text = text.replace(
+            f'<link name="spoke{i}"/>',
+            f'<link name="spoke{i}"><visual><origin rpy="{rpy}" xyz="{xyz}"/><geometry>'
+            f'<cylinder radius="0.05" length="0.03"/></geometry></visual>{mass}</link>',
+        )
+    return text
+
+
+@pytest.mark.parametrize("mass", ["", '<inertial><mass value="0.2"/></inertial>'])
+def test_six_one_joint_chains_drawn_as_tyres_round_their_axles_are_wheels(mass: str) -> None:
+    # A six-wheeled rover whose file says nothing of where its wheels' mass is: each is drawn
+    # as a cylinder about its axle (turned a quarter about x, its z along the axle y).
+    text = with_shapes(whole_turn_legs(), rpy="1.5708 0 0", mass=mass)
+    assert identify_urdf(text).structure == "UGV"
+
+
+@pytest.mark.parametrize(
+    ("rpy", "xyz", "mass"),
+    [
+        ("0 0 0", "0 0 0", ""),  # a rod across the axle
+        ("1.5708 0 0", "0 0 -0.08", ""),  # a tyre hung below the axle
+        (  # a tyre, but the part's mass is known to hang out
+            "1.5708 0 0",
+            "0 0 0",
+            '<inertial><origin xyz="0 0 -0.08"/><mass value="0.2"/></inertial>',
+        ),
+    ],
+)
+def test_six_one_joint_chains_drawn_off_or_across_their_axles_stay_a_wheel_leg_walker(
+    rpy: str, xyz: str, mass: str
+) -> None:
+    text = with_shapes(whole_turn_legs(), rpy=rpy, xyz=xyz, mass=mass)
+    assert identify_urdf(text).structure == "Hexapod"
+
+
 def test_six_hubs_turning_legs_fixed_below_them_are_a_wheel_leg_walker() -> None:
     """Each joint turns a motor's hub balanced on its axle, and the leg, fixed to the hub,
     hangs 8 cm out: the part that turns is out of balance."""
