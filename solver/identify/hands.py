@@ -232,12 +232,13 @@ def _rigid_top(tree: JointTree, link: str, tops: dict[str, str]) -> str:
 
 
 def _may_be_a_jaw(joint: Joint, *, endless: bool) -> bool:
-    """``joint`` is driven and limited (with ``endless``, turns for ever)."""
+    """``joint`` is driven and limited (with ``endless``, turns for ever: continuous, or
+    revolute with a range no real stop has, which no limited jaw has either)."""
     if not joint.actuated:
         return False
     if endless:
-        return joint.type == "continuous"
-    return joint.type in _LIMITED and joint.lower is not None
+        return joint.endless
+    return joint.type in _LIMITED and joint.lower is not None and not joint.endless
 
 
 def _tipped_twins(tree: JointTree, link: str, pair: list[Joint]) -> str:

@@ -578,6 +578,40 @@ def test_twin_wheels_on_a_shin_or_wheels_under_a_planners_root_joints_are_no_end
         assert "Driving" in {c.motion_control for c in result.motion_controls}
 
 
+def test_hinges_whose_range_no_stop_has_behind_an_articulated_waist_are_wheels_not_jaws() -> None:
+    # An articulated rover written by a simulator's export: every wheel a revolute joint of
+    # +-1.8e308 rad, the rear pair on an axle that rolls behind a waist that yaws, no names.
+    robot = RobotText("articulated", root="l0")
+    endless = '<limit lower="-1.79769e+308" upper="1.79769e+308" effort="1" velocity="1"/>'
+    for name, parent, xyz in (("j0", "l0", "0 0.25 0.18"), ("j1", "l0", "0 -0.25 0.18")):
+        robot.joint(
+            name,
+            "revolute",
+            parent,
+            f"{name}_l",
+            f'<origin xyz="{xyz}"/><axis xyz="0 1 0"/>{endless}',
+        )
+    builders.placed(robot, "j4", "revolute", "l0", "rear", xyz="-0.35 0 0.22", axis="0 0 1")
+    builders.placed(robot, "j5", "revolute", "rear", "axle", xyz="-0.7 0 -0.04", axis="1 0 0")
+    for name, y in (("j2", "0.25"), ("j3", "-0.25")):
+        robot.joint(
+            name,
+            "revolute",
+            "axle",
+            f"{name}_l",
+            f'<origin xyz="0 {y} 0"/><axis xyz="0 1 0"/>{endless}',
+        )
+    result = identify_urdf(robot.text())
+    assert "finger" not in {role.role for role in result.roles}
+    assert sorted(role.joint for role in result.roles if role.role == "wheel") == [
+        "j0",
+        "j1",
+        "j2",
+        "j3",
+    ]
+    assert result.structure == "UGV"
+
+
 def test_jaws_apart_along_one_line_but_a_hair_across_it_are_side_by_side() -> None:
     # A CAD export places a six-joint arm's two unnamed sliding fingers 0.8 m apart across the
     # tool and 0.03 m apart along its axis (the second finger turned half a turn about x):
