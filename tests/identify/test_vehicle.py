@@ -1022,6 +1022,24 @@ def test_discs_side_by_side_on_a_body_where_nothing_moves_are_propellers_whateve
     assert result.body.fixed_rotors == ("j1", "j2", "j3", "j4")
 
 
+def test_discs_a_body_collides_as_under_propellers_drawn_as_meshes_are_propellers() -> None:
+    # A simulator's model converted to URDF: each propeller drawn as a mesh, colliding as a
+    # disc (its first <collision> a cylinder), the visual's shape saying nothing.
+    meshes = (
+        disc_body(CORNERS).replace("<visual>", "<collision>").replace("</visual>", "</collision>")
+    )
+    mesh = '<visual><geometry><mesh filename="prop.dae"/></geometry></visual>'
+    text = meshes
+    for i in range(1, 5):
+        text = text.replace(
+            f'<link name="l{i}"><collision>', f'<link name="l{i}">{mesh}<collision>'
+        )
+    result = identify_urdf(text)
+    assert result.structure == "UAV"
+    assert result.body is not None
+    assert result.body.fixed_rotors == ("j1", "j2", "j3", "j4")
+
+
 @pytest.mark.parametrize(
     ("places", "rpy", "radius", "extra"),
     [

@@ -83,8 +83,8 @@ class Link:
     # buoyancy force over weight; above 1 the link floats. None when nothing gives it (or not a
     # finite number).
     buoyancy: float | None = None
-    # Its first <visual> when that is a cylinder: what its shape says (a propeller's disc, a
-    # wheel); None for a mesh, a box, or no visual.
+    # Its first <visual> when that is a cylinder, else its first <collision> when that is one:
+    # what its shape says (a propeller's disc, a wheel); None for meshes, boxes, or neither.
     cylinder: Cylinder | None = None
     # False for a link a joint names that no <link> declares, read as an implicit link: the
     # link of another description this one is made to hang from (a vehicle's base_link).
@@ -1346,15 +1346,25 @@ def _compensation(link: etree._Element) -> float | None:
 
 
 def _cylinder(link: etree._Element) -> Cylinder | None:
-    """A link's first ``<visual>``, when it is a cylinder of a readable size, or None."""
-    visual = link.find("visual")
-    shape = None if visual is None else visual.find("geometry/cylinder")
-    if visual is None or shape is None:
+    """A link's first ``<visual>`` when it is a cylinder of a readable size, else its first
+    ``<collision>`` when that is one (a propeller or a wheel drawn as a mesh collides as a
+    disc), or None."""
+    for kind in ("visual", "collision"):
+        found = _shape_cylinder(link.find(kind))
+        if found is not None:
+            return found
+    return None
+
+
+def _shape_cylinder(element: etree._Element | None) -> Cylinder | None:
+    """A ``<visual>`` or ``<collision>`` when it is a cylinder of a readable size, or None."""
+    shape = None if element is None else element.find("geometry/cylinder")
+    if element is None or shape is None:
         return None
     radius, length = _float(shape.get("radius")), _float(shape.get("length"))
     if radius is None or length is None or radius <= 0 or length <= 0:
         return None
-    origin = visual.find("origin")
+    origin = element.find("origin")
     zero = (0.0, 0.0, 0.0)
     return Cylinder(radius, length, _vector(origin, zero, "rpy"), _vector(origin, zero))
 
