@@ -802,8 +802,9 @@ def _plugin_moved(tree: JointTree) -> bool:
 
 
 def _unnamed_screws(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
-    """Unnamed spinning leaves below one link, two or more side by side, turning about the
-    line the body travels along and sitting apart across it: a vessel's screws, pushing it.
+    """Unnamed spinning leaves below one link (or each alone below its own link, all fixed to
+    one body), two or more side by side, turning about the line the body travels along and
+    sitting apart across it: a vessel's screws, pushing it.
 
     Wheels on axles sit apart along the axle they share (a left and a right wheel), or turn
     about lines that are not one (an omni base's rims); twin propellers under a hull turn about
@@ -814,7 +815,17 @@ def _unnamed_screws(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     if not _may_have_screws(tree, roles):
         return []
     below, _ = _wheel_candidates(tree, roles)
-    return [j.name for joints in below.values() if _screws(tree, joints) for j in joints]
+    found = [j.name for joints in below.values() if _screws(tree, joints) for j in joints]
+    if found:
+        return found
+    # Each alone below a link of its own, fixed to one body (a catamaran's screw under each
+    # hull): told on that body.
+    known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
+    on_body: dict[str | None, list[Joint]] = {}
+    for joints in below.values():
+        if len(joints) == 1:
+            on_body.setdefault(moved_by(tree.urdf, joints[0].parent, known), []).append(joints[0])
+    return [j.name for joints in on_body.values() if _screws(tree, joints) for j in joints]
 
 
 def _screws_by_place(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, str]:

@@ -236,6 +236,28 @@ def test_unnamed_spinners_side_by_side_below_a_hull_turning_along_it_are_its_scr
     assert identify_urdf(twin_screws(gps=True).text()).structure == "Surface Vessel"
 
 
+def catamaran(*, across: float = 0.4) -> RobotText:
+    """Two hulls fixed either side of a deck, each with one unnamed endless leaf below its
+    stern turning about x; the right one ``across`` from the middle."""
+    robot = RobotText("catamaran")
+    for index, (hull, y) in enumerate((("h0", across), ("h1", -0.4))):
+        robot.joint(f"f{index}", "fixed", "base_link", hull, f'<origin xyz="0 {y} 0.1"/>')
+        place = '<origin xyz="-1 0 -0.1"/><axis xyz="1 0 0"/>'
+        robot.joint(f"m{index}", "continuous", hull, f"p{index}", place)
+    return robot
+
+
+def test_one_spinner_below_each_hull_of_a_catamaran_turning_along_it_are_its_screws() -> None:
+    result = identify_urdf(catamaran().text())
+    assert result.body is not None
+    assert (result.body.wheels, result.body.thrusters) == ((), ("m0", "m1"))
+    assert result.structure == "Surface Vessel"
+    # Not mirrored across the deck: no pair of screws.
+    lopsided = identify_urdf(catamaran(across=0.9).text())
+    assert lopsided.body is not None
+    assert lopsided.body.thrusters == ()
+
+
 def test_spinners_below_a_body_a_drive_plugin_moves_or_with_control_surfaces_are_no_screws() -> (
     None
 ):
