@@ -63,6 +63,7 @@ from solver.identify.limbs import (
     nearest_above,
     parallel_robot,
     pendulum,
+    planar_arm,
     raised_legs,
     spine,
     wheeled_spine,
@@ -700,7 +701,7 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
             parts.roles[name] = Role(name, "passive", "a leaf joint beside a spine (a side wheel)")
     parts.limbs = wrist(tree, parts.limbs, finger_tips(tree, parts.grippers))
     moves = flying or grounded(tree, parts.roles)
-    parts.limbs = bolted_chain(tree, parts.limbs, moves)
+    parts.limbs = planar_arm(tree, bolted_chain(tree, parts.limbs, moves), moves)
     parts.limbs = gripping_leg(lone_leg(tree, parts.limbs, moves))
     if not parts.roles and not parts.trunk:
         # Read by the robot's name, once every chain has its kind (a short chain bolted to the

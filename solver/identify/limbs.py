@@ -114,6 +114,7 @@ __all__ = [
     "legs_by_reach",
     "lone_leg",
     "pendulum",
+    "planar_arm",
     "sort_limbs",
     "spine",
     "tips_meet",
@@ -2403,6 +2404,43 @@ def bolted_chain(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
         f" to the world (a short arm {what})"
     )
     return [replace(limb, kind="arm", why=why)]
+
+
+def planar_arm(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
+    """The only limb of a body that moves as a whole (``moves``: it rolls, flies or swims), an
+    unnamed chain (carrying no sensor, or it would be a head) of two limited hinges about
+    parallel level axes as the body rests, the second at least :data:`_PLANAR_REACH` from the
+    first: a two-link arm swinging in a vertical plane, what the base carries to lift or push.
+    A pan/tilt unit turns about square axes, a flipper's track or a wheel turns for ever, a
+    suspension carries wheels (a mount)."""
+    if not moves or len(limbs) != 1 or limbs[0].kind != "other" or limbs[0].named:
+        return limbs
+    limb = limbs[0]
+    hinges = [tree.urdf.joint(name) for name in limb.joints]
+    if len(hinges) != 2 or not all(
+        joint is not None and joint.type == "revolute" and not joint.endless for joint in hinges
+    ):
+        return limbs
+    first, second = (joint for joint in hinges if joint is not None)
+    axis = tree.poses.axis(first)
+    if (
+        abs(axis[2]) > _LEVEL_AXIS
+        or not parallel(axis, tree.poses.axis(second))
+        or distance(tree.poses.place(first.child), tree.poses.place(second.child)) < _PLANAR_REACH
+    ):
+        return limbs
+    why = (
+        "the body's only limb, an unnamed chain of two hinges about parallel level axes "
+        "(a two-link arm swinging in a vertical plane) on a body that moves"
+    )
+    return [replace(limb, kind="arm", why=why)]
+
+
+# How far (metres) a two-link arm's second hinge is from its first, at least (a wrist's two
+# hinges on one servo bracket sit closer).
+_PLANAR_REACH = 0.1
+# How level an axis is: the most its upright part may be (the sine of its tilt).
+_LEVEL_AXIS = 0.1
 
 
 def _world_root(tree: JointTree) -> bool:

@@ -1624,6 +1624,38 @@ def test_a_two_joint_chain_every_joint_of_which_a_controller_drives_is_an_arm() 
     assert identify_urdf(half.text()).structure == "Other"
 
 
+def base_with_two_hinges(*, second_axis: str = "0 1 0", reach: float = 0.3) -> RobotText:
+    """A wheeled base carrying one unnamed chain of two hinges, the first about y, the second
+    ``reach`` above it about ``second_axis``."""
+    robot = builders.ugv()
+    builders.placed(robot, "j1", "revolute", robot.root, "l1", xyz="0.3 0 0.2", axis="0 1 0")
+    builders.placed(robot, "j2", "revolute", "l1", "l2", xyz=f"0 0 {reach}", axis=second_axis)
+    return robot
+
+
+def test_two_hinges_about_parallel_level_axes_on_a_wheeled_base_are_its_arm() -> None:
+    result = identify_urdf(base_with_two_hinges().text())
+    assert result.structure == "Mobile Manipulator"
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["arm"]
+    assert "two-link arm" in result.body.limbs[0].why
+
+
+@pytest.mark.parametrize(
+    ("second_axis", "reach"),
+    [
+        ("0 0 1", 0.3),  # square axes: a pan and a tilt, no planar arm
+        ("0 1 0", 0.03),  # two hinges on one bracket: no reach
+    ],
+)
+def test_two_hinges_that_are_square_or_close_together_on_a_base_are_no_arm(
+    second_axis: str, reach: float
+) -> None:
+    result = identify_urdf(base_with_two_hinges(second_axis=second_axis, reach=reach).text())
+    assert result.body is not None
+    assert "arm" not in [limb.kind for limb in result.body.limbs]
+
+
 def test_the_same_chain_on_a_free_root_or_with_head_names_stays_a_pan_tilt_unit() -> None:
     free = RobotText("camera_mount")
     tip = free.chain(free.root, ["joint1", "joint2"])
