@@ -83,6 +83,10 @@ _STILL = 1e-6
 # The farthest a finger reaches from its first joint to its tip (metres): a hand's finger is
 # about 0.1 m, a gripper's jaw less; an arm, even a small one, reaches farther.
 _FINGER_REACH = 0.15
+# The farthest a finger's last joint is from its first (metres): a hand's longest finger's
+# knuckles span under 0.1 m, a large gripper's finger less than this; an arm's shoulder and
+# elbow are farther apart.
+_FINGER_LENGTH = 0.2
 # Chains taken as fingers by their size on one palm, at most (a hand has five, a claw a few
 # more): past this, a stranger's thousands of chains are no fingers, not compared pair by pair.
 _MOST_SIZED_FINGERS = 16
@@ -606,6 +610,8 @@ def _within_a_hand(tree: JointTree, group: list[Limb]) -> bool:
     breadth of each other (:data:`_HAND_BREADTH`): fingers on one palm, not an aircraft's
     ailerons and tail (a hinge bends no finger of its own that far from the others; a tool
     turret's slides and caps, a cart's drawers, are left as they were read)."""
+    if any(_reach(tree, limb) > _FINGER_LENGTH for limb in group if len(limb.joints) > 1):
+        return False
     if any(
         len(limb.joints) > 1
         or (joint := tree.urdf.joint(limb.joints[0])) is None
@@ -619,6 +625,14 @@ def _within_a_hand(tree: JointTree, group: list[Limb]) -> bool:
         if (joint := tree.urdf.joint(limb.joints[0])) is not None
     ]
     return all(distance(a, b) <= _HAND_BREADTH for a, b in combinations(places, 2))
+
+
+def _reach(tree: JointTree, limb: Limb) -> float:
+    """How far a chain's last joint is from its first, at rest (metres)."""
+    first, last = tree.urdf.joint(limb.joints[0]), tree.urdf.joint(limb.joints[-1])
+    if first is None or last is None:
+        return 0.0
+    return distance(tree.poses.place(first.child), tree.poses.place(last.child))
 
 
 def _finger_like(tree: JointTree, limb: Limb, longest: int) -> str | None:

@@ -210,6 +210,31 @@ def test_three_short_unnamed_chains_on_one_link_are_fingers_and_two_are_not() ->
     assert finger_groups(tree, three + two, grounded=True) == set()
 
 
+def upper_body(elbow: float) -> RobotText:
+    """A chest turned by three hinges, carrying a neck of three hinges at one place and two
+    chains of a shoulder's three hinges and an elbow ``elbow`` metres below them, no names."""
+    robot = RobotText("character", root="l0")
+    chest = robot.chain("l0", ["j0", "j1", "j2"])
+    robot.chain(chest, ["j3", "j4", "j5"])
+    for side, y in (("a", 0.18), ("b", -0.18)):
+        link = builders.placed(robot, f"{side}0", "revolute", chest, f"{side}0_l", xyz=f"0 {y} 0.2")
+        link = robot.chain(link, [f"{side}1", f"{side}2"])
+        builders.placed(robot, f"{side}3", "revolute", link, f"{side}3_l", xyz=f"0 0 -{elbow}")
+    return robot
+
+
+def test_chains_on_one_body_one_of_which_reaches_farther_than_a_finger_are_no_fingers() -> None:
+    # An animated character's neck and arms, each joint of a ball written as three hinges:
+    # the arms' elbows 0.27 m from their shoulders, as no finger's last knuckle is from its
+    # first.
+    result = identify_urdf(upper_body(0.27).text())
+    assert "finger" not in {role.role for role in result.roles}
+    assert result.structure != "Hand"
+    # Knuckles 4 cm apart are a hand's fingers.
+    hand = identify_urdf(upper_body(0.04).text())
+    assert "finger" in {role.role for role in hand.roles}
+
+
 def test_short_unnamed_chains_on_a_flying_bodys_airframe_are_its_own_and_no_fingers() -> None:
     # Four single hinges on links fixed to the root, and three short chains on a link a joint
     # away: on a body that does not fly, two groups of fingers; on one that flies the four are
