@@ -30,7 +30,7 @@ from collections import Counter
 from itertools import combinations, islice, pairwise
 
 from solver.identify.couplings import Walk, jaw_groups
-from solver.identify.limbs import Limb, chain_ends, joint_words, moved_by, tips_meet
+from solver.identify.limbs import Limb, chain_ends, joint_span, joint_words, moved_by, tips_meet
 from solver.identify.placement import MACHINE_TRAVEL, placement
 from solver.identify.pose import distance, local_axis, parallel, perpendicular
 from solver.identify.readers.urdf import Joint
@@ -610,7 +610,7 @@ def _within_a_hand(tree: JointTree, group: list[Limb]) -> bool:
     breadth of each other (:data:`_HAND_BREADTH`): fingers on one palm, not an aircraft's
     ailerons and tail (a hinge bends no finger of its own that far from the others; a tool
     turret's slides and caps, a cart's drawers, are left as they were read)."""
-    if any(_reach(tree, limb) > _FINGER_LENGTH for limb in group if len(limb.joints) > 1):
+    if any(joint_span(tree, limb) > _FINGER_LENGTH for limb in group if len(limb.joints) > 1):
         return False
     if any(
         len(limb.joints) > 1
@@ -625,14 +625,6 @@ def _within_a_hand(tree: JointTree, group: list[Limb]) -> bool:
         if (joint := tree.urdf.joint(limb.joints[0])) is not None
     ]
     return all(distance(a, b) <= _HAND_BREADTH for a, b in combinations(places, 2))
-
-
-def _reach(tree: JointTree, limb: Limb) -> float:
-    """How far a chain's last joint is from its first, at rest (metres)."""
-    first, last = tree.urdf.joint(limb.joints[0]), tree.urdf.joint(limb.joints[-1])
-    if first is None or last is None:
-        return 0.0
-    return distance(tree.poses.place(first.child), tree.poses.place(last.child))
 
 
 def _finger_like(tree: JointTree, limb: Limb, longest: int) -> str | None:

@@ -106,6 +106,7 @@ __all__ = [
     "five_bars",
     "flippers",
     "gripping_leg",
+    "joint_span",
     "joint_words",
     "joints_above",
     "legs_alike",
@@ -2426,7 +2427,7 @@ def planar_arm(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
     if (
         abs(axis[2]) > _LEVEL_AXIS
         or not parallel(axis, tree.poses.axis(second))
-        or distance(tree.poses.place(first.child), tree.poses.place(second.child)) < _PLANAR_REACH
+        or joint_span(tree, limb) < _PLANAR_REACH
     ):
         return limbs
     why = (
@@ -2441,6 +2442,15 @@ def planar_arm(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
 _PLANAR_REACH = 0.1
 # How level an axis is: the most its upright part may be (the sine of its tilt).
 _LEVEL_AXIS = 0.1
+
+
+def joint_span(tree: JointTree, limb: Limb) -> float:
+    """How far a chain's last joint is from its first, at rest (metres): a finger's knuckles
+    span a few centimetres, an arm's shoulder and elbow more."""
+    first, last = tree.urdf.joint(limb.joints[0]), tree.urdf.joint(limb.joints[-1])
+    if first is None or last is None:
+        return 0.0
+    return distance(tree.poses.place(first.child), tree.poses.place(last.child))
 
 
 def _world_root(tree: JointTree) -> bool:
