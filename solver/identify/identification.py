@@ -217,10 +217,9 @@ def identify_urdf(
             guess_software=packages is None or not packages.complete,
             named=_named(packages, body),
             leg_controllers=_joint_controllers(packages, profile.gait, legs),
-            leg_joint_controllers=(
-                None if packages is None else per_joint_controllers(packages, profile.gait, legs)
-            ),
+            leg_joint_controllers=_own_controllers(packages, profile.gait, legs),
             rotor_controllers=_joint_controllers(packages, profile.flight, body.rotors),
+            mount_joint_controllers=_own_controllers(packages, profile.gait, _vehicle_mounts(body)),
         ),
         shipped,
     ]
@@ -278,9 +277,25 @@ def _joint_controllers(
     return None if packages is None else joint_controllers(packages, rule, joints)
 
 
+def _own_controllers(
+    packages: Workspace | None, rule: SoftwareRule | None, joints: Collection[str]
+) -> str | None:
+    """The file of the robot's packages that configures a controller of one of the
+    ``joints``' own (:func:`~solver.identify.shipped.per_joint_controllers`); else None."""
+    return None if packages is None else per_joint_controllers(packages, rule, joints)
+
+
 def _legs(body: Body) -> list[str]:
     """The joints of the body's legs."""
     return [j for limb in body.limbs if limb.kind == "leg" for j in limb.joints]
+
+
+def _vehicle_mounts(body: Body) -> list[str]:
+    """The joints of the mounts that carry a flown or swimming body's rotors or thrusters (a
+    tilting rotor's arm); none on the ground, where a mount carries a wheel."""
+    if not (body.flying or body.marine):
+        return []
+    return [j for limb in body.limbs if limb.kind == "mount" for j in limb.joints]
 
 
 def _named(packages: Workspace | None, body: Body) -> frozenset[str] | None:

@@ -177,6 +177,21 @@ def _flight(body: Body, urdf_source: str, rotor_controllers: str | None = None) 
     return [("flight", f"{urdf_source}: {what}")]
 
 
+def _mounts(mount_joint_controllers: str | None) -> _Shown:
+    """A vehicle's mount (a tilting rotor's arm) with a controller of a joint's own in its
+    packages (``mount_joint_controllers``, the file that shows it): that joint takes commands
+    by itself, beside the flight or the thrust."""
+    if mount_joint_controllers is None:
+        return []
+    mount = "a rotor's or thruster's mount"
+    return [
+        (
+            "mount_joint_controllers",
+            f"{mount_joint_controllers}: a controller of a joint's own on {mount}",
+        )
+    ]
+
+
 def _motions(joints: tuple[str, ...], urdf: Urdf | None) -> int:
     """How many motions a chain of joints has: a prismatic joint that slides on the previous
     one along the same axis (no turn between them: a telescope's segments) adds none."""
@@ -403,6 +418,7 @@ def controls_from_description(
     leg_controllers: str | None = None,
     leg_joint_controllers: str | None = None,
     rotor_controllers: str | None = None,
+    mount_joint_controllers: str | None = None,
 ) -> tuple[Control, ...]:
     """The motion controls the body (and SRDF) show, each with what shows it; with the kinds
     of the sensors the description declares, the profile's navigation guess too; neither that
@@ -419,6 +435,7 @@ def controls_from_description(
         *_ground(body, urdf_source),
         *_water(body, urdf_source),
         *_flight(body, urdf_source, rotor_controllers),
+        *_mounts(mount_joint_controllers),
         *_limbs(
             body,
             urdf_source,

@@ -181,6 +181,7 @@ CONTROL_SOURCES = (
     "srdf_end_effector",
     "leg_controllers",
     "leg_joint_controllers",
+    "mount_joint_controllers",
     "rotor_controllers",
     *ROLE_SOURCES,
 )

@@ -25,6 +25,7 @@ from tests.identify.builders import (
     parallel_gripper,
     quadrotor,
     quadruped,
+    tilt_rotor,
     transmission,
     ugv,
 )
@@ -1259,6 +1260,36 @@ def test_namespaced_rotors_are_named_by_their_name_after_the_namespace(tmp_path:
     assert "Joint" not in controls_of(described(tmp_path / "g", namespaced_quadrotor(), gimbal))
     found = controls_of(described(tmp_path / "r", namespaced_quadrotor(), ROTOR_CONTROLLERS))
     assert "joint controllers naming its rotors" in found["Joint"]
+
+
+def test_a_controller_of_a_tilting_rotors_mount_its_own_takes_joint_commands_beside_flight(
+    tmp_path: Path,
+) -> None:
+    # Written as ROS 1 configurations write it: the controller's name, its type, its joint.
+    bringup = "tilt_left:\n  type: position_controllers/JointPositionController\n  joint: tilt_left"
+    found = controls_of(described(tmp_path, tilt_rotor(), bringup))
+    assert found["Flight"] == "urdf: 2 rotor joint(s)"
+    assert found["Joint"] == (
+        "package craft_bringup: craft_bringup/launch/bringup.launch "
+        "(position_controllers/JointPositionController): a controller of a joint's own on a "
+        "rotor's or thruster's mount"
+    )
+
+
+@pytest.mark.parametrize(
+    "bringup",
+    [
+        # A joint's own controller of no mount (an aileron's).
+        "aileron: {type: position_controllers/JointPositionController, joint: aileron_left}",
+        # The mounts named in a group controller, what a flight controller writes to.
+        "tilts: {type: position_controllers/JointGroupPositionController, "
+        "joints: [tilt_left, tilt_right]}",
+    ],
+)
+def test_no_mounts_controller_of_its_own_gives_a_flown_body_no_joint_commands(
+    tmp_path: Path, bringup: str
+) -> None:
+    assert "Joint" not in controls_of(described(tmp_path, tilt_rotor(), bringup))
 
 
 def test_a_flight_stack_package_beside_the_robots_keeps_its_rotors_to_it(tmp_path: Path) -> None:
