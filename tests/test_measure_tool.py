@@ -487,6 +487,23 @@ def test_a_rows_kept_repository_is_read_for_the_controls_its_packages_ship(
     assert row_of(read, "mobile base", "tiny")[7:9] == ["1/1 (100%)", "1/1 (100%)"]
 
 
+def test_a_rows_repository_of_no_package_is_read_under_the_descriptions_own_file_name(
+    tmp_path: Path,
+) -> None:
+    tiny_set(tmp_path / "tiny")
+    repository = tmp_path / "sims"
+    (repository / "models").mkdir(parents=True)
+    for name in ("rover_mk2", "drone_mk1"):  # two robots: its scripts are those naming it
+        (repository / "models" / f"{name}.xacro").write_text("<robot/>", encoding="utf-8")
+    (repository / "teleop.py").write_text("load('rover_mk2.xacro')", encoding="utf-8")
+    (repository / "mission.py").write_text("load('drone_mk1.xacro'); follow_waypoints()")
+    kept = tmp_path / "workspaces.tsv"
+    kept.write_text(f"tiny\trover\t{repository}\tmodels/rover_mk2.xacro\n", encoding="utf-8")
+    read = measure("--set", str(tmp_path / "tiny"), "--workspaces", str(kept))
+    # The drone's mission is not the rover's: no navigation, none guessed.
+    assert row_of(read, "mobile base", "tiny")[7:9] == ["1/1 (100%)", "1/1 (100%)"]
+
+
 def test_the_briefs_snake_labels_a_serpentine_reading_in_a_label_and_in_a_note(
     tmp_path: Path,
 ) -> None:

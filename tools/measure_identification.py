@@ -452,16 +452,26 @@ def parts_of(
     return [split.get((set_name, robot), "unsplit")]
 
 
-def read_workspaces(path: Path) -> dict[tuple[str, str], tuple[Path, Path | None]]:
-    """(set, robot) -> (workspace, the description's package in it) from a --workspaces file;
-    a row whose description is in no package has none (its workspace is not read)."""
-    found: dict[tuple[str, str], tuple[Path, Path | None]] = {}
+@dataclass(frozen=True)
+class Kept:
+    """Where a row's repository was kept: the ``workspace``, the description's ``package`` in
+    it (None: in no package, the workspace is read as its repository) and the description's
+    file ``name`` there (what a repository's scripts name it by)."""
+
+    workspace: Path
+    package: Path | None
+    name: str
+
+
+def read_workspaces(path: Path) -> dict[tuple[str, str], Kept]:
+    """(set, robot) -> where its repository was kept, from a --workspaces file."""
+    found: dict[tuple[str, str], Kept] = {}
     for line in path.read_text(encoding="utf-8").splitlines():
         fields = line.split("\t")
         if len(fields) == 4 and not line.startswith("#"):
             set_name, robot, workspace, inside = fields
             package = description_package(Path(workspace) / inside)
-            found[(set_name, robot)] = (Path(workspace), package)
+            found[(set_name, robot)] = Kept(Path(workspace), package, Path(inside).name)
     return found
 
 
@@ -616,7 +626,8 @@ def parser() -> argparse.ArgumentParser:
         help="where rows' repositories were kept: lines 'SET<TAB>ROBOT<TAB>WORKSPACE<TAB>PATH' "
         "(PATH: the row's description inside WORKSPACE); such a row's packages are read for "
         "the controls they ship (solver/identify/readers/workspace.py), as identify reads them "
-        "around a description in its package",
+        "around a description in its package; a description in no package is read with "
+        "WORKSPACE as its repository, under its file name there",
     )
     found.add_argument(
         "--rebuilt",
@@ -659,17 +670,32 @@ def main(argv: list[str] | None = None) -> int:
                 return identify(
                     nameless, rules=rules, profile=profile, look_beside=False, look_around=False
                 )
-        workspace, package = kept.get(row, (None, None))
-        return identify(
-            urdf,
-            srdf=srdf,
-            rules=rules,
-            profile=profile,
-            look_beside=False,
-            look_around=False,
-            package=package,
-            workspace=workspace,
-        )
+        where = kept.get(row)
+        if where is None or where.package is not None:
+            return identify(
+                urdf,
+                srdf=srdf,
+                rules=rules,
+                profile=profile,
+                look_beside=False,
+                look_around=False,
+                package=None if where is None else where.package,
+                workspace=None if where is None else where.workspace,
+            )
+        # In no package: read with its repository, under the file name its scripts know it by
+        # (a rebuilt xacro is URDF now).
+        with tempfile.TemporaryDirectory() as folder:
+            named = Path(folder) / f"{where.name.split('.', 1)[0]}.urdf"
+            named.write_bytes(urdf.read_bytes())
+            return identify(
+                named,
+                srdf=srdf,
+                rules=rules,
+                profile=profile,
+                look_beside=False,
+                look_around=False,
+                workspace=where.workspace,
+            )
 
     split = read_split(args.split) if args.split else None
     blind = blind_sets((f.name for f in folders), split) if split is not None else frozenset()

@@ -84,7 +84,8 @@ def register(subparsers: Any) -> None:
         "--workspace",
         metavar="DIR",
         help="the folder the robot's packages are found in (default: the workspace's src folder "
-        "above the description's package, else the folder above that package)",
+        "above the description's package, else the folder above that package); for a "
+        "description in no package, the repository it lies in (read only when named)",
     )
     parser.add_argument(
         "--no-packages",
@@ -135,7 +136,7 @@ def run(args: argparse.Namespace) -> int:
             teleop=None if args.describe else args.teleop,
             look_beside=not args.describe,
             package=None if args.no_packages else args.package,
-            workspace=args.workspace,
+            workspace=None if args.no_packages else args.workspace,
             look_around=not args.no_packages,
         )
     if args.strict and result.warnings:

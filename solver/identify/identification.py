@@ -419,16 +419,25 @@ def _packages(
     robot: str,
 ) -> tuple[Workspace | None, tuple[str, ...]]:
     """The packages of the ``robot`` (the name its URDF gives it) around ``file`` (or in the
-    ``package`` named), and a note for a folder the caller named that is not used."""
-    from solver.identify.readers.workspace import description_package, read_workspace
+    ``package`` named), and a note for a folder the caller named that is not used. A
+    description in no package is read with the repository the ``workspace`` names
+    (:func:`~solver.identify.readers.workspace.read_repository`), never one found around it."""
+    from solver.identify.readers.workspace import (
+        description_package,
+        read_repository,
+        read_workspace,
+    )
 
     named = package is not None
     if package is None and look_around:
         package = description_package(file)
     if package is None:
-        if workspace is None or not look_around:
+        if workspace is None:
             return None, ()
-        return None, (f"workspace {workspace}: no package holds the description; none is read",)
+        read = read_repository(workspace, file, robot)
+        if read is None:
+            return None, (f"workspace {workspace}: no folder there; none is read",)
+        return read, ()
     around = read_workspace(package, workspace, robot)
     if around is None and named:
         return None, (f"package {package}: no package.xml names a package there; none is read",)

@@ -281,14 +281,32 @@ def test_identify_reads_the_packages_around_a_description_for_the_controls_they_
     assert "package rover_navigation: rover_navigation/launch/nav.launch" in named.stdout
 
 
-def test_a_workspace_named_for_a_description_in_no_package_is_said_in_a_note(
+def test_a_workspace_named_for_a_description_in_no_package_is_read_as_its_repository(
     tmp_path: Path,
 ) -> None:
-    urdf = tmp_path / "rover.urdf"
+    urdf = tmp_path / "sim" / "rover.urdf"
+    urdf.parent.mkdir()
     urdf.write_text(_rover_with_sensors().text(), encoding="utf-8")
-    result = run_cli("identify", urdf, "--workspace", tmp_path)
+    (tmp_path / "sim" / "go.py").write_text("nav2_simple_commander", encoding="utf-8")
+    result = run_cli("identify", urdf, "--workspace", tmp_path / "sim")
     assert result.returncode == 0, result.stderr
-    assert (
-        f"  note: workspace {tmp_path}: no package holds the description; none is read\n"
-        in result.stdout
-    )
+    assert "  Waypoint        package sim: go.py (nav2_simple_commander)\n" in result.stdout
+    gone = run_cli("identify", urdf, "--workspace", tmp_path / "gone")
+    assert f"  note: workspace {tmp_path / 'gone'}: no folder there; none is read\n" in gone.stdout
+
+
+def test_a_description_in_no_package_is_read_with_no_repository_unless_one_is_named(
+    tmp_path: Path,
+) -> None:
+    # A clone around it may be a tool's own, its code naming the example robots it ships.
+    clone = tmp_path / "rover_sim"
+    (clone / ".git").mkdir(parents=True)
+    (clone / "models").mkdir()
+    urdf = clone / "models" / "rover.urdf"
+    urdf.write_text(_rover_with_sensors().text(), encoding="utf-8")
+    (clone / "go.py").write_text("nav2_simple_commander", encoding="utf-8")
+    assert "package rover_sim" not in run_cli("identify", urdf).stdout
+    named = run_cli("identify", urdf, "--workspace", clone)
+    assert "  Waypoint        package rover_sim: go.py (nav2_simple_commander)\n" in named.stdout
+    alone = run_cli("identify", urdf, "--workspace", clone, "--no-packages")
+    assert "package rover_sim" not in alone.stdout

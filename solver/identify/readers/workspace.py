@@ -45,6 +45,13 @@ imported or parsed as code.
   package of it is the robot's (its navigation and mission packages need name no package of
   the description's, :func:`_one_robots`).
 
+* A description in *no* package (a simulator's or a learning framework's repository) is read
+  with the *repository* the caller names (:func:`read_repository`; never one found around the
+  file: a tool's own repository names its example robots in its code and rules): its files in
+  no package are one package named for its folder, the ROS packages inside it a workspace's.
+  Of a repository of several descriptions, a file in no package is the robot's only where its
+  text or its path names the robot.
+
 Past a bound the rest is not read and a note says so; the workspace is then *incomplete*, and
 what it does not say is not taken as said (:mod:`solver.identify.shipped`). A workspace that
 cannot be read (no such folder, no permission) is no evidence, never an error: the description
@@ -71,6 +78,7 @@ __all__ = [
     "ShippedFile",
     "Workspace",
     "description_package",
+    "read_repository",
     "read_workspace",
     "workspace_of",
 ]
@@ -222,8 +230,12 @@ class _Package:
     # Package names this package writes (its package.xml and its files), once all are known.
     mentions: set[str] = field(default_factory=set)
     files: list[ShippedFile] = field(default_factory=list)
-    # It holds a robot description (:data:`DESCRIPTION_SUFFIXES`).
-    describes: bool = False
+    # How many robot descriptions it holds (:data:`DESCRIPTION_SUFFIXES`).
+    descriptions: int = 0
+
+    @property
+    def describes(self) -> bool:
+        return self.descriptions > 0
 
 
 @dataclass(slots=True)
@@ -279,6 +291,92 @@ def read_workspace(
         ),
         tuple(sorted({p.name for p in ordered} - {p.name for p in ours})),
     )
+
+
+def read_repository(
+    root: str | Path, description: str | Path, robot: str | None = None
+) -> Workspace | None:
+    """The robot's files in the repository at ``root`` that holds its ``description`` in no
+    ROS package (a simulator's or a learning framework's repository: scripts beside the model,
+    no ``package.xml``), read as one package named for the repository's folder, with the ROS
+    packages inside it as a workspace's (:func:`read_workspace`). Of a repository holding more
+    than one description, the files outside any package are the robot's where they name it
+    (:func:`_names_robot`: its description's file name, or its URDF's or file's distinctive
+    name): a repository of many robots' scripts says nothing of this one through a file that
+    names none of them. None when ``root`` is no folder (no repository, no evidence)."""
+    top = os.path.abspath(root)
+    if not os.path.isdir(top):
+        return None
+    budget = _Budget()
+    own = _Package(top, os.path.basename(top) or "repository", set())
+    packages = _walk(top, budget, owner=own)
+    own = packages.get(top, own)  # a package.xml at the root: the repository is that package
+    others = [p for p in packages.values() if p is not own]
+    ordered = [own, *_by_folder(others)]
+    names = {p.name for p in ordered}
+    for each in ordered:
+        each.mentions = each.manifest & names
+        for path in each.paths:
+            _read_into(each, path, top, names, budget)
+    if own.descriptions > 1 and top not in packages:
+        words = _robot_words(description, robot)
+        folders = _robot_folders(description, robot)
+        own.files = [f for f in own.files if _names_robot(f, words, folders)]
+    # The packages inside are the robot's when none holds another description; no package
+    # uses the repository's files by its folder's name (``main``, ``repo``: any word).
+    ours = ordered if _one_robots(own, ordered, top, named=True, budget=budget) else [own]
+    return Workspace(
+        top,
+        own.name,
+        tuple(p.name for p in ours),
+        tuple(f for p in ours for f in p.files),
+        tuple(
+            f"repository {top}: {why}; the rest of it is not read "
+            "(docs/identify.md, The robot's packages)"
+            for why in budget.notes
+        ),
+        tuple(sorted({p.name for p in ordered} - {p.name for p in ours})),
+    )
+
+
+def _robot_words(description: str | Path, robot: str | None) -> tuple[re.Pattern[str], ...]:
+    """What names the robot described in ``description``: its file name (``leg.urdf``), and
+    its URDF's name and its file's stem where they are distinctive (:data:`_DISTINCTIVE`:
+    ``go2_arx``, ``pupper_arm``; not ``leg`` or ``robot``), each as a word of its own."""
+    name = os.path.basename(str(description))
+    stem = name.split(".", 1)[0]
+    found = [name, *(w for w in (robot or "", stem) if _DISTINCTIVE.fullmatch(w))]
+    return tuple(
+        re.compile(rf"(?<![A-Za-z0-9-]){re.escape(w)}(?![A-Za-z0-9-])", re.IGNORECASE)
+        for w in dict.fromkeys(found)
+        if w
+    )
+
+
+def _robot_folders(description: str | Path, robot: str | None) -> frozenset[str]:
+    """The names a folder or a file of the robot's is named by: its URDF's name and its
+    file's stem, lower case, but a name of no robot in particular (``robot``, ``model``)."""
+    stem = os.path.basename(str(description)).split(".", 1)[0]
+    return frozenset(
+        name.lower() for name in (robot or "", stem) if name and _named_stem(name) is not None
+    )
+
+
+def _names_robot(
+    shipped: ShippedFile, words: tuple[re.Pattern[str], ...], folders: frozenset[str]
+) -> bool:
+    """``shipped`` is the robot's: its text names it (``words``), or its path does, a folder
+    or the file named for it (``envs/airbot/airbot_robot.py`` for ``airbot``)."""
+    *parts, name = shipped.path.lower().replace(os.sep, "/").split("/")
+    named = [*parts, name.split(".", 1)[0]]
+    return any(
+        part == folder or part.startswith(f"{folder}_") for part in named for folder in folders
+    ) or any(word.search(shipped.text) for word in words)
+
+
+# A name distinctive enough to tell one robot of a repository from another: two words or a
+# digit in it (``go2_arx``, ``XBot-L``, ``pupper_v2``), at least four characters.
+_DISTINCTIVE = re.compile(r"(?=.{4,200}$)(?=.*[_\-0-9])[A-Za-z0-9_.\-]+")
 
 
 def _one_robots(
@@ -395,13 +493,18 @@ def _above(folder: str) -> frozenset[str]:
 
 
 def _walk(
-    start: str, budget: _Budget, skip: str | None = None, holding: frozenset[str] = frozenset()
+    start: str,
+    budget: _Budget,
+    skip: str | None = None,
+    holding: frozenset[str] = frozenset(),
+    owner: _Package | None = None,
 ) -> dict[str, _Package]:
     """Every package under ``start`` (by folder) with its manifest's words and its text files'
     paths; a package owns the folders below it (links not followed, skipped folders but those
-    in ``holding`` and ``skip`` left out)."""
+    in ``holding`` and ``skip`` left out); ``owner`` owns what no package below it does (a
+    repository's files)."""
     packages: dict[str, _Package] = {}
-    stack: list[tuple[str, int, _Package | None]] = [(start, 0, None)]
+    stack: list[tuple[str, int, _Package | None]] = [(start, 0, owner)]
     while stack and not budget.stopped:
         folder, level, owner = stack.pop()
         if folder == skip:
@@ -418,9 +521,7 @@ def _walk(
             )
         if owner is not None:
             owner.paths += [os.path.join(folder, name) for name in _texts(folder, files)]
-            owner.describes = owner.describes or any(
-                name.endswith(DESCRIPTION_SUFFIXES) for name in files
-            )
+            owner.descriptions += sum(name.endswith(DESCRIPTION_SUFFIXES) for name in files)
         elif _install_prefix(folder, subfolders):
             # An install prefix: its packages are in share/NAME; its libraries and headers
             # belong to none (read nothing, and would spend the walk's bound).

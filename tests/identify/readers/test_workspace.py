@@ -11,6 +11,7 @@ from solver.identify.readers import workspace as reader
 from solver.identify.readers.workspace import (
     _uncommented,
     description_package,
+    read_repository,
     read_workspace,
     workspace_of,
 )
@@ -668,3 +669,81 @@ def test_a_folder_that_is_no_source_workspace_is_nobodys_whole(tmp_path: Path) -
     assert read(described).packages == ("robot_description",)
     named = read(described, root=tmp_path / "share")
     assert named.packages == ("robot_description", "mission_manager", "robot_navigation")
+
+
+def files_of(found: reader.Workspace | None) -> list[str]:
+    assert found is not None
+    return [shipped.path for shipped in found.files]
+
+
+def repository(root: Path, files: dict[str, str]) -> Path:
+    """A repository at ``root`` holding ``files`` (relative path -> text) and no package."""
+    for relative, text in files.items():
+        path = root / relative
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text)
+    return root
+
+
+def test_a_repository_of_one_description_is_read_whole_as_the_robots(tmp_path: Path) -> None:
+    root = repository(
+        tmp_path / "leg_sim",
+        {"model/leg.urdf": "<robot name='leg'/>", "sim/sim.py": "inverse_kinematics(target)"},
+    )
+    found = read_repository(root, root / "model" / "leg.urdf", "leg")
+    assert found is not None
+    assert (found.package, found.packages, files_of(found)) == (
+        "leg_sim",
+        ("leg_sim",),
+        ["sim/sim.py"],
+    )
+
+
+def test_of_a_repository_of_several_robots_only_the_files_naming_this_one_are_its(
+    tmp_path: Path,
+) -> None:
+    root = repository(
+        tmp_path / "gym",
+        {
+            "robots/go2_arx/go2_arx.urdf": "<robot name='go2_arx'/>",
+            "robots/airbot/airbot.urdf": "<robot name='airbot'/>",
+            "robots/leg/leg.urdf": "<robot name='leg'/>",
+            "envs/go2_arx/config.py": "asset = 'go2_arx.urdf'",  # its file name
+            "envs/go2_arx/robot.py": "from .go2_arx_config import Cfg",  # a name made of it
+            "envs/airbot/airbot_robot.py": "ee_goal = 1",  # its path names airbot
+            "envs/leg/sim.py": "p.loadURDF('leg.urdf')",  # leg, named by its file name alone
+            "envs/play.py": "legs = 4",  # a plain word is no robot's name
+        },
+    )
+    go2 = files_of(read_repository(root, root / "robots/go2_arx/go2_arx.urdf", "go2_arx"))
+    assert go2 == ["envs/go2_arx/config.py", "envs/go2_arx/robot.py"]
+    airbot = files_of(read_repository(root, root / "robots/airbot/airbot.urdf", "airbot"))
+    assert airbot == ["envs/airbot/airbot_robot.py"]
+    assert files_of(read_repository(root, root / "robots/leg/leg.urdf", "leg")) == [
+        "envs/leg/sim.py"
+    ]
+
+
+def test_a_repository_named_robot_names_nothing_by_its_paths(tmp_path: Path) -> None:
+    root = repository(
+        tmp_path / "examples",
+        {
+            "a/robot.urdf": "<robot name='robot'/>",
+            "b/robot.urdf": "<robot name='robot'/>",
+            "robot/teleop.py": "teleop_twist_keyboard",
+        },
+    )
+    assert files_of(read_repository(root, root / "a" / "robot.urdf", "robot")) == []
+
+
+def test_the_ros_packages_inside_a_repository_are_read_as_a_workspaces(tmp_path: Path) -> None:
+    root = repository(tmp_path / "ship", {"models/ship.urdf": "<robot name='ship'/>"})
+    package(root, "ship_control", {"scripts/drive.py": "teleop_twist_keyboard"})
+    found = read_repository(root, root / "models" / "ship.urdf", "ship")
+    assert found is not None
+    assert found.packages == ("ship", "ship_control")
+    assert files_of(found) == ["ship_control/scripts/drive.py"]
+
+
+def test_a_repository_that_is_no_folder_is_no_evidence(tmp_path: Path) -> None:
+    assert read_repository(tmp_path / "gone", tmp_path / "gone" / "r.urdf") is None
