@@ -301,10 +301,16 @@ def _limbs(
 
 
 def _end_effector_alone(body: Body) -> bool:
-    """A gripper or a hand with nothing else but its wrist: no arm, leg, spine, mobile base or
-    vehicle. Not a gripper nothing in which moves (:attr:`Body.fixed_gripper`): no joint of it
-    takes a command (a vacuum gripper's suction is switched, not read from the description)."""
-    limbs = [limb for limb in body.limbs if limb.kind != "wrist"]
+    """A gripper or a hand with nothing else but its wrist (a wrist carrying a whole hand, or a
+    chain of no limb's kind ending in the gripper: a forceps' pitch): no arm, leg, spine,
+    mobile base or vehicle. Not a gripper nothing in which moves (:attr:`Body.fixed_gripper`):
+    no joint of it takes a command (a vacuum gripper's suction is switched, not read from the
+    description)."""
+    limbs = [
+        limb
+        for limb in body.limbs
+        if limb.kind != "wrist" and not (limb.kind == "other" and limb.gripper)
+    ]
     return bool(body.fingers or (body.grippers and not body.fixed_gripper)) and not (
         limbs or body.mobile_base or body.flying or body.marine
     )

@@ -999,6 +999,20 @@ def test_a_hand_alone_on_its_wrist_is_opened_and_closed_on_command_a_guess_said_
     assert "likely, not declared: a gripper or hand alone" in control.source
 
 
+def test_a_gripper_turned_by_one_joint_of_no_limbs_kind_is_still_a_gripper_alone() -> None:
+    # A surgical forceps: a pitch, and two jaws on it.
+    robot = RobotText("forceps")
+    pitch = robot.chain(robot.root, ["pitch_joint"])
+    robot.chain(pitch, ["finger_left_joint"])
+    robot.chain(pitch, ["finger_right_joint"])
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert [(limb.kind, limb.gripper) for limb in result.body.limbs] == [("other", True)]
+    (control,) = result.motion_controls
+    assert control.motion_control == "Joint"
+    assert "likely, not declared: a gripper or hand alone" in control.source
+
+
 def test_a_vessel_whose_propulsion_is_not_drawn_is_driven() -> None:
     # A hull, a GPS and an IMU frame, and the buoyancy plugin that floats it: the thrusters are
     # a driver's, not the description's.
