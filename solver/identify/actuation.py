@@ -39,7 +39,7 @@ from solver.identify.readers.urdf import Joint, written_blank
 from solver.identify.roles import POSED, Role, main_axis
 from solver.identify.tree import JointTree
 
-__all__ = ["MOTOR", "joint_roles", "with_role"]
+__all__ = ["MOTOR", "joint_roles", "mirrored_across", "with_role"]
 
 _Z_AXIS = 2
 # How far from level an axle may lean (the z part of its unit axis).
@@ -58,6 +58,9 @@ _IN_LINE = 0.25
 _SCREWS = (2, 4)
 # How far (metres) two mirrored places may miss each other's mirror image.
 _MIRROR_TOLERANCE = 0.02
+# The fewest control surfaces an airframe's hinges are told by: two ailerons, a rudder and an
+# elevator.
+_CONTROL_SURFACES = 4
 # The fewest free rollers on an omni or mecanum wheel's rim.
 _ROLLERS = 3
 # What a rim of rollers may be named for: a wheel, or a corner of the body (a leg's word too).
@@ -152,6 +155,7 @@ def joint_roles(tree: JointTree) -> dict[str, Role]:
             "wheel",
             "an endless leaf ending a leg of limited joints (a wheel-legged robot's wheel)",
         )
+    roles.update(_control_surfaces(tree, roles))
     for name in _unnamed_rotors(tree, roles):
         roles[name] = Role(
             name, "rotor", "an unnamed endless leaf on an upright axis, with others all round"
@@ -171,6 +175,76 @@ def joint_roles(tree: JointTree) -> dict[str, Role]:
     for name in grippers - set(roles):
         roles[name] = Role(name, "gripper", "moves a finger: below a gripper joint")
     return roles
+
+
+def _control_surfaces(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Role]:
+    """Unnamed limited hinges carrying nothing that moves, all on the root's rigid body, that
+    are an airframe's control surfaces: a pair mirrored across the body turning about axes
+    across it (ailerons), and behind them a hinge on the body's middle line about an upright
+    axis (a rudder) and one more about an axis across the body (an elevator, on the middle line
+    or mirrored). A tracked robot's flippers come in mirrored pairs too, about axes across the
+    body, but no rudder turns behind them."""
+    hinges = _lone_hinges(tree, roles)
+    if len(hinges) < _CONTROL_SURFACES:
+        return {}
+    for first, second in mirrored_across(tree, hinges):
+        ahead = tree.poses.place(first.child)[0]
+        behind = [j for j in hinges if tree.poses.place(j.child)[0] < ahead]
+        tail = _tail(tree, behind)
+        if tail:
+            why = (
+                "an unnamed hinge of an airframe's control surfaces: ailerons mirrored across "
+                "the body, a rudder and an elevator behind them"
+            )
+            return {j.name: Role(j.name, "fin", why) for j in (first, second, *tail)}
+    return {}
+
+
+def _lone_hinges(tree: JointTree, roles: Mapping[str, Role]) -> list[Joint]:
+    """Limited hinges with no role, carrying nothing that moves, on the root's rigid body."""
+    known: dict[str, str | None] = {}
+    return [
+        joint
+        for joint in tree.urdf.joints
+        if joint.name not in roles
+        and joint.type == "revolute"
+        and joint.child not in tree.moving_below
+        and moved_by(tree.urdf, joint.parent, known) is None
+    ]
+
+
+def _tail(tree: JointTree, behind: list[Joint]) -> list[Joint]:
+    """The rudders (on the middle line, about upright axes) and elevators (about axes across
+    the body, on the middle line or mirrored) among ``behind``; none unless there are both."""
+    rudders = [
+        j
+        for j in behind
+        if abs(tree.poses.axis(j)[_Z_AXIS]) >= 1 - _LEVEL and _on_the_middle_line(tree, j)
+    ]
+    paired = {j.name for pair in mirrored_across(tree, behind) for j in pair}
+    elevators = [
+        j for j in behind if _across(tree, j) and (_on_the_middle_line(tree, j) or j.name in paired)
+    ]
+    return [*rudders, *elevators] if rudders and elevators else []
+
+
+def mirrored_across(tree: JointTree, joints: list[Joint]) -> Iterator[tuple[Joint, Joint]]:
+    """Each pair of ``joints`` mirrored across the body's middle (:func:`_mirrored_pairs`),
+    both turning about axes across it (a wing's ailerons, a tracked robot's flippers)."""
+    across = [j for j in joints if _across(tree, j)]
+    for first, second in itertools.combinations(across, 2):
+        if _mirrored_pairs(tree, [first, second]):
+            yield first, second
+
+
+def _across(tree: JointTree, joint: Joint) -> bool:
+    """``joint`` turns about an axis across the body (y, level)."""
+    return abs(tree.poses.axis(joint)[1]) >= 1 - _LEVEL
+
+
+def _on_the_middle_line(tree: JointTree, joint: Joint) -> bool:
+    """``joint`` sits on the body's middle line (y = 0 in its root's frame)."""
+    return abs(tree.poses.place(joint.child)[1]) <= _MIRROR_TOLERANCE
 
 
 def _ball_casters(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Role]:

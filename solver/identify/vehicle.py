@@ -32,7 +32,7 @@ import math
 import re
 from collections.abc import Collection, Sequence
 
-from solver.identify.actuation import MOTOR, with_role
+from solver.identify.actuation import MOTOR, mirrored_across, with_role
 from solver.identify.limbs import Limb, moved_by
 from solver.identify.pose import Vector, parallel
 from solver.identify.readers.urdf import Cylinder, Joint
@@ -268,8 +268,25 @@ def wings(tree: JointTree, roles: dict[str, Role]) -> list[str]:
     found += [
         n for n in with_role(roles, "fin") if (j := tree.urdf.joint(n)) and tree.matches("wing", j)
     ]
+    found += _ailerons(tree, roles, found)
     surfaces = [j.child for j in fixed if "fin" in tree.parts_of(j.child)]
     return found + surfaces if found else []
+
+
+def _ailerons(tree: JointTree, roles: dict[str, Role], found: list[str]) -> list[str]:
+    """Control-surface joints (fins) that are a wing's ailerons whatever their names: a pair
+    mirrored across the body, turning about axes across it
+    (:func:`~solver.identify.actuation.mirrored_across`), with a fin behind them (a rudder or
+    an elevator; :func:`solver.identify.actuation.joint_roles` tells an unnamed airframe's
+    so). None when a wing is already found."""
+    if found:
+        return []
+    fins = [j for n in with_role(roles, "fin") if (j := tree.urdf.joint(n)) is not None]
+    for first, second in mirrored_across(tree, fins):
+        ahead = tree.poses.place(first.child)[0]
+        if any(tree.poses.place(j.child)[0] < ahead for j in fins):
+            return [first.child, second.child]
+    return []
 
 
 def surface_hints(tree: JointTree, *, thrusters: int = 0) -> tuple[str, ...]:

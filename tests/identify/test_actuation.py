@@ -236,6 +236,34 @@ def test_unnamed_spinners_side_by_side_below_a_hull_turning_along_it_are_its_scr
     assert identify_urdf(twin_screws(gps=True).text()).structure == "Surface Vessel"
 
 
+def airframe(*, rudder: bool = True) -> RobotText:
+    """Four unnamed limited hinges on one body, carrying nothing: two mirrored across it about
+    axes across it (ailerons), and behind them on its middle line one about an axis across it
+    (an elevator) and, with ``rudder``, one about an upright axis."""
+    robot = RobotText("craft")
+    limit = '<limit lower="-0.5" upper="0.5" effort="1" velocity="1"/>'
+    hinges = [("0 0.3 0", "0 1 0"), ("0 -0.3 0", "0 1 0"), ("-0.6 0 0", "0 1 0")]
+    if rudder:
+        hinges.append(("-0.65 0 0.05", "0 0 1"))
+    for index, (place, axis) in enumerate(hinges):
+        shape = f'<origin xyz="{place}"/><axis xyz="{axis}"/>{limit}'
+        robot.joint(f"j{index}", "revolute", "base_link", f"l{index}", shape)
+    return robot
+
+
+def test_unnamed_ailerons_a_rudder_and_an_elevator_are_an_airframes_control_surfaces() -> None:
+    result = identify_urdf(airframe().text())
+    assert result.body is not None
+    assert sorted(result.body.fins) == ["j0", "j1", "j2", "j3"]
+    assert result.body.wings == ("l0", "l1")  # the ailerons' surfaces: a wing's
+    assert result.structure == "UAV"
+    # Mirrored hinges about axes across the body with no rudder behind (a tracked robot's
+    # flippers, a tail's one hinge): nothing flies.
+    flippers = identify_urdf(airframe(rudder=False).text())
+    assert flippers.body is not None
+    assert (flippers.body.fins, flippers.structure) == ((), "Other")
+
+
 def catamaran(*, across: float = 0.4) -> RobotText:
     """Two hulls fixed either side of a deck, each with one unnamed endless leaf below its
     stern turning about x; the right one ``across`` from the middle."""
