@@ -65,6 +65,7 @@ from solver.identify.limbs import (
     pendulum,
     planar_arm,
     raised_legs,
+    small_pan_tilt,
     spine,
     wheeled_spine,
     wrist,
@@ -701,6 +702,7 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
             parts.roles[name] = Role(name, "passive", "a leaf joint beside a spine (a side wheel)")
     parts.limbs = wrist(tree, parts.limbs, finger_tips(tree, parts.grippers))
     moves = flying or grounded(tree, parts.roles)
+    parts.limbs = small_pan_tilt(tree, parts.limbs, moves)
     parts.limbs = planar_arm(tree, bolted_chain(tree, parts.limbs, moves), moves)
     parts.limbs = gripping_leg(lone_leg(tree, parts.limbs, moves))
     if not parts.roles and not parts.trunk:

@@ -116,6 +116,7 @@ __all__ = [
     "lone_leg",
     "pendulum",
     "planar_arm",
+    "small_pan_tilt",
     "sort_limbs",
     "spine",
     "tips_meet",
@@ -2375,6 +2376,39 @@ def gripping_leg(limbs: list[Limb]) -> list[Limb]:
     return [replace(limb, kind="arm", why=why) if limb is legs[0] else limb for limb in limbs]
 
 
+def small_pan_tilt(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
+    """The only limb of a body that does not move, an unnamed chain of two hinges, one about
+    an upright axis and the other square to it (pan then tilt, or tilt then pan), the second
+    within :data:`_PAN_TILT_SPAN` of the first: a pan/tilt unit whose payload the file names
+    no sensor of (a servo bracket's two motors sit a few centimetres apart; a two-link arm's
+    shoulder and elbow farther)."""
+    if moves or len(limbs) != 1 or limbs[0].kind != "other" or limbs[0].named:
+        return limbs
+    limb = limbs[0]
+    hinges = [tree.urdf.joint(name) for name in limb.joints]
+    if len(hinges) != 2 or not all(
+        joint is not None and joint.type in ("revolute", "continuous") for joint in hinges
+    ):
+        return limbs
+    first, second = (joint for joint in hinges if joint is not None)
+    if not _square_turns(tree, first, second) or joint_span(tree, limb) > _PAN_TILT_SPAN:
+        return limbs
+    why = (
+        "the body's only limb, an unnamed chain of two hinges about an upright axis and one "
+        "square to it, a few centimetres apart (a pan/tilt unit)"
+    )
+    return [replace(limb, kind="head", why=why)]
+
+
+# How far (metres) a pan/tilt unit's second hinge is from its first, at most.
+_PAN_TILT_SPAN = 0.06
+
+
+def _square_turns(tree: JointTree, first: Joint, second: Joint) -> bool:
+    """Pan then tilt, or tilt then pan (:func:`_pan_then_tilt`)."""
+    return _pan_then_tilt(tree, first, second) or _pan_then_tilt(tree, second, first)
+
+
 def bolted_chain(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
     """A short unnamed chain, the body's only limb, hanging from a root fixed to ``world`` (or
     every joint of it driven by a controller) on a body that does not move: the base is bolted
@@ -2396,7 +2430,7 @@ def bolted_chain(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
         limb.kind == "head"
         and pan is not None
         and tilt is not None
-        and _pan_then_tilt(tree, pan, tilt)
+        and _square_turns(tree, pan, tilt)
     ):
         return limbs  # a pan/tilt unit bolted down is still a head
     what = "carrying a sensor" if limb.kind == "head" else "of no limb's name"

@@ -1656,6 +1656,42 @@ def test_two_hinges_that_are_square_or_close_together_on_a_base_are_no_arm(
     assert "arm" not in [limb.kind for limb in result.body.limbs]
 
 
+def two_hinges_alone(
+    *, axes: tuple[str, str] = ("0 0 1", "0 1 0"), reach: float = 0.02
+) -> RobotText:
+    """A body whose only limb is an unnamed chain of two hinges about ``axes``, the second
+    ``reach`` above the first; no sensor, no world link."""
+    robot = RobotText("bracket")
+    builders.placed(robot, "j1", "revolute", robot.root, "l1", xyz="0 0 0.05", axis=axes[0])
+    builders.placed(robot, "j2", "revolute", "l1", "l2", xyz=f"0 0 {reach}", axis=axes[1])
+    return robot
+
+
+@pytest.mark.parametrize("axes", [("0 0 1", "0 1 0"), ("0 1 0", "0 0 1")])
+def test_two_square_hinges_close_together_as_a_bodys_only_limb_are_a_pan_tilt_unit(
+    axes: tuple[str, str],
+) -> None:
+    # Pan then tilt, or tilt then pan, a servo bracket apart: no sensor named, still a head.
+    result = identify_urdf(two_hinges_alone(axes=axes).text())
+    assert result.structure == "Pan/Tilt Unit"
+    assert result.body is not None
+    assert "a pan/tilt unit" in result.body.limbs[0].why
+
+
+@pytest.mark.parametrize(
+    ("axes", "reach"),
+    [
+        (("0 0 1", "0 1 0"), 0.3),  # a shoulder and an elbow apart: no bracket
+        (("0 1 0", "0 1 0"), 0.02),  # parallel axes: no pan and tilt
+    ],
+)
+def test_two_hinges_far_apart_or_parallel_alone_are_no_pan_tilt_unit(
+    axes: tuple[str, str], reach: float
+) -> None:
+    result = identify_urdf(two_hinges_alone(axes=axes, reach=reach).text())
+    assert result.structure != "Pan/Tilt Unit"
+
+
 def test_the_same_chain_on_a_free_root_or_with_head_names_stays_a_pan_tilt_unit() -> None:
     free = RobotText("camera_mount")
     tip = free.chain(free.root, ["joint1", "joint2"])
