@@ -920,23 +920,52 @@ def _screws_by_place(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, st
 
 
 def _lone_screw(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
-    """The one unnamed spinning leaf below a link (:func:`_wheel_candidates`) of a body a
-    water plugin puts in water, turning about the line the body travels along (x) as it rests
-    and on its middle line: a single screw at the stern, whatever steers beside it (a rudder, a
-    sail). Twin screws are :func:`_unnamed_screws`'; a wheel turns about an axle across the
-    body, and a body no water plugin names may be an aircraft with one propeller."""
-    if not tree.labels("marine") or _plugin_moved(tree):
+    """The one unnamed spinning leaf below a link (:func:`_wheel_candidates`), turning about
+    the line the body travels along (x) as it rests and on its middle line, of a body a water
+    plugin puts in water; or the one spinning leaf, unnamed or named as a rotor, of a body whose
+    only other moving part is a rudder behind it (:func:`_rudder_behind`): a single screw at
+    the stern, whatever steers beside it (a
+    rudder, a sail). Twin screws are :func:`_unnamed_screws`'; a wheel turns about an axle
+    across the body, and a body no water plugin names may be an aircraft with one propeller
+    (its control surfaces beside the rudder)."""
+    if _plugin_moved(tree):
         return []
-    below, _ = _wheel_candidates(tree, roles)
-    leaves = [joint for joints in below.values() for joint in joints]
+    in_water = bool(tree.labels("marine"))
+    if in_water:
+        below, _ = _wheel_candidates(tree, roles)
+        leaves = [joint for joints in below.values() for joint in joints]
+    else:  # beside a rudder, at any height (a hull drawn with its origin on its keel), and
+        # named as a rotor or not (a propeller)
+        rotors = {name for name, role in roles.items() if role.role == "rotor"}
+        spinners = [*_unnamed_spinners(tree, set(roles)), *map(tree.urdf.joint, sorted(rotors))]
+        leaves = [j for j in spinners if j is not None and j.child not in tree.moving_below]
     if len(leaves) != 1:
         return []
-    axis = tree.poses.axis(leaves[0])
-    across = tree.poses.place(leaves[0].child)[1]  # from the root's origin: the middle line
+    screw = leaves[0]
+    axis = tree.poses.axis(screw)
+    across = tree.poses.place(screw.child)[1]  # from the root's origin: the middle line
     # Written so that a stranger's overflowing numbers (NaN) fail it.
     if not (abs(axis[0]) >= 1 - _LEVEL and abs(across) <= _MIRROR_TOLERANCE):
         return []
-    return [leaves[0].name]
+    return [screw.name] if in_water or _rudder_behind(tree, screw) else []
+
+
+def _rudder_behind(tree: JointTree, screw: Joint) -> bool:
+    """``screw`` sits behind the body's origin (at the stern), and the body's only other
+    movable joint is a limited hinge about an upright axis on its middle line behind it: a
+    ship's rudder behind its screw. An aircraft's propeller turns at its nose, ahead of the
+    rudder, and a pusher's comes with more control surfaces (an elevator, ailerons)."""
+    others = [joint for joint in tree.urdf.joints if joint.movable and joint is not screw]
+    if len(others) != 1 or others[0].type != "revolute":
+        return False
+    rudder = others[0]
+    stern = tree.poses.place(screw.child)[0]
+    return (
+        stern < 0
+        and abs(tree.poses.axis(rudder)[_Z_AXIS]) >= 1 - _LEVEL
+        and _on_the_middle_line(tree, rudder)
+        and tree.poses.place(rudder.child)[0] < stern
+    )
 
 
 def _screws(tree: JointTree, joints: list[Joint]) -> bool:

@@ -342,6 +342,37 @@ def test_a_lone_spinner_below_a_hull_in_water_on_its_middle_line_is_its_screw() 
         assert other.body.thrusters == ()
 
 
+def screw_and_rudder(
+    *, screw_x: float = -3.0, rudder_x: float = -3.5, more: bool = False
+) -> RobotText:
+    """A hull with no water plugin: one unnamed endless leaf at ``screw_x`` on its middle line,
+    turning about x, and one limited hinge about z at ``rudder_x``; ``more`` adds an elevator."""
+    robot = RobotText("ship")
+    builders.placed(robot, "j0", "continuous", robot.root, "l0", xyz=f"{screw_x} 0 0", axis="1 0 0")
+    builders.placed(
+        robot, "j1", "revolute", robot.root, "l1", xyz=f"{rudder_x} 0 0.5", axis="0 0 1"
+    )
+    if more:
+        builders.placed(robot, "j2", "revolute", robot.root, "l2", xyz="-3.6 0 0.6", axis="0 1 0")
+    return robot
+
+
+def test_a_lone_spinner_at_the_stern_with_only_a_rudder_behind_it_is_a_ships_screw() -> None:
+    result = identify_urdf(screw_and_rudder().text())
+    assert result.body is not None
+    assert (result.structure, result.body.thrusters) == ("Surface Vessel", ("j0",))
+    # A propeller at the nose ahead of the rudder (an aircraft's), a rudder ahead of the
+    # spinner, or an elevator beside the rudder: no screw.
+    for robot in (
+        screw_and_rudder(screw_x=1.0),
+        screw_and_rudder(rudder_x=-2.0),
+        screw_and_rudder(more=True),
+    ):
+        other = identify_urdf(robot.text())
+        assert other.body is not None
+        assert other.body.thrusters == ()
+
+
 def test_a_row_of_spinners_below_a_body_is_no_pair_of_screws() -> None:
     # Three in a row across the body (not mirrored pairs), turning about x.
     robot = RobotText("row")
