@@ -2382,15 +2382,10 @@ def small_pan_tilt(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb
     within :data:`_PAN_TILT_SPAN` of the first: a pan/tilt unit whose payload the file names
     no sensor of (a servo bracket's two motors sit a few centimetres apart; a two-link arm's
     shoulder and elbow farther)."""
-    if moves or len(limbs) != 1 or limbs[0].kind != "other" or limbs[0].named:
+    found = None if moves else _two_hinges_alone(tree, limbs, endless=True)
+    if found is None:
         return limbs
-    limb = limbs[0]
-    hinges = [tree.urdf.joint(name) for name in limb.joints]
-    if len(hinges) != 2 or not all(
-        joint is not None and joint.type in ("revolute", "continuous") for joint in hinges
-    ):
-        return limbs
-    first, second = (joint for joint in hinges if joint is not None)
+    limb, first, second = found
     if not _square_turns(tree, first, second) or joint_span(tree, limb) > _PAN_TILT_SPAN:
         return limbs
     why = (
@@ -2398,6 +2393,27 @@ def small_pan_tilt(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb
         "square to it, a few centimetres apart (a pan/tilt unit)"
     )
     return [replace(limb, kind="head", why=why)]
+
+
+def _two_hinges_alone(
+    tree: JointTree, limbs: list[Limb], *, endless: bool
+) -> tuple[Limb, Joint, Joint] | None:
+    """The body's only limb and its two joints, when it is an unnamed chain of no limb's kind
+    of two hinges (limited ones, or also endless ones with ``endless``); else None."""
+    if len(limbs) != 1 or limbs[0].kind != "other" or limbs[0].named:
+        return None
+    hinges = [tree.urdf.joint(name) for name in limbs[0].joints]
+    turning = [joint for joint in hinges if joint is not None and _hinge(joint, endless=endless)]
+    if len(hinges) != 2 or len(turning) != 2:
+        return None
+    return limbs[0], turning[0], turning[1]
+
+
+def _hinge(joint: Joint, *, endless: bool) -> bool:
+    """``joint`` turns within limits, or for ever too with ``endless``."""
+    if joint.type == "continuous" or joint.endless:
+        return endless
+    return joint.type == "revolute"
 
 
 # How far (metres) a pan/tilt unit's second hinge is from its first, at most.
@@ -2448,15 +2464,10 @@ def planar_arm(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
     first: a two-link arm swinging in a vertical plane, what the base carries to lift or push.
     A pan/tilt unit turns about square axes, a flipper's track or a wheel turns for ever, a
     suspension carries wheels (a mount)."""
-    if not moves or len(limbs) != 1 or limbs[0].kind != "other" or limbs[0].named:
+    found = _two_hinges_alone(tree, limbs, endless=False) if moves else None
+    if found is None:
         return limbs
-    limb = limbs[0]
-    hinges = [tree.urdf.joint(name) for name in limb.joints]
-    if len(hinges) != 2 or not all(
-        joint is not None and joint.type == "revolute" and not joint.endless for joint in hinges
-    ):
-        return limbs
-    first, second = (joint for joint in hinges if joint is not None)
+    limb, first, second = found
     axis = tree.poses.axis(first)
     if (
         abs(axis[2]) > _LEVEL_AXIS

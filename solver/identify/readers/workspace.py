@@ -270,22 +270,41 @@ def read_workspace(
     packages.update(_walk(top, budget, skip=folder, holding=_above(folder)))
     core = _core(own, list(packages.values()), robot)
     ordered = _reading_order(core, list(packages.values()))
+    _read_all(ordered, top, budget)
+    if _one_robots(own, ordered, top, named=root is not None, budget=budget):
+        ours = ordered
+    else:
+        ours = _robots_packages(core, ordered)
+    return _workspace("workspace", top, own=own, ours=ours, ordered=ordered, budget=budget)
+
+
+def _read_all(ordered: list[_Package], top: str, budget: _Budget) -> None:
+    """Read the files of the ``ordered`` packages, in order, within the bounds."""
     names = {p.name for p in ordered}
     for each in ordered:
         each.mentions = each.manifest & names
         for path in each.paths:
             _read_into(each, path, top, names, budget)
-    if _one_robots(own, ordered, top, named=root is not None, budget=budget):
-        ours = ordered
-    else:
-        ours = _robots_packages(core, ordered)
+
+
+def _workspace(
+    what: str,
+    top: str,
+    *,
+    own: _Package,
+    ours: list[_Package],
+    ordered: list[_Package],
+    budget: _Budget,
+) -> Workspace:
+    """The robot's packages ``ours`` (``own`` the description's) of the ``ordered`` packages
+    read at ``top`` (a ``what``: a workspace, a repository), with a note per bound reached."""
     return Workspace(
         top,
         own.name,
         tuple(p.name for p in ours),
         tuple(f for p in ours for f in p.files),
         tuple(
-            f"workspace {top}: {why}; the rest of it is not read "
+            f"{what} {top}: {why}; the rest of it is not read "
             "(docs/identify.md, The robot's packages)"
             for why in budget.notes
         ),
@@ -313,11 +332,7 @@ def read_repository(
     own = packages.get(top, own)  # a package.xml at the root: the repository is that package
     others = [p for p in packages.values() if p is not own]
     ordered = [own, *_by_folder(others)]
-    names = {p.name for p in ordered}
-    for each in ordered:
-        each.mentions = each.manifest & names
-        for path in each.paths:
-            _read_into(each, path, top, names, budget)
+    _read_all(ordered, top, budget)
     if own.descriptions > 1 and top not in packages:
         words = _robot_words(description, robot)
         folders = _robot_folders(description, robot)
@@ -325,18 +340,7 @@ def read_repository(
     # The packages inside are the robot's when none holds another description; no package
     # uses the repository's files by its folder's name (``main``, ``repo``: any word).
     ours = ordered if _one_robots(own, ordered, top, named=True, budget=budget) else [own]
-    return Workspace(
-        top,
-        own.name,
-        tuple(p.name for p in ours),
-        tuple(f for p in ours for f in p.files),
-        tuple(
-            f"repository {top}: {why}; the rest of it is not read "
-            "(docs/identify.md, The robot's packages)"
-            for why in budget.notes
-        ),
-        tuple(sorted({p.name for p in ordered} - {p.name for p in ours})),
-    )
+    return _workspace("repository", top, own=own, ours=ours, ordered=ordered, budget=budget)
 
 
 def _robot_words(description: str | Path, robot: str | None) -> tuple[re.Pattern[str], ...]:
