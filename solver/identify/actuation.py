@@ -473,6 +473,12 @@ def _wrists_dropped(tree: JointTree, leaves: list[Joint]) -> list[Joint]:
     return [j for j in leaves if j.name not in deep]
 
 
+def _grounded(tree: JointTree, leaves: list[Joint]) -> list[Joint]:
+    """``leaves`` but those turning about an upright axis as the body rests: a wheel rolls on a
+    level axle; a humanoid's wrists that turn for ever (a yaw under the forearm) point down."""
+    return [j for j in leaves if not _upright(tree.poses.axis(j))]
+
+
 def _deep(tree: JointTree, leaf: Joint, branching: frozenset[str]) -> bool:
     """More than :data:`_MOST_JOINTS_ABOVE_A_WHEEL` movable joints between ``leaf``'s link and
     the nearest link of ``branching`` above it (a walk of a few dozen joints at most)."""
@@ -570,7 +576,7 @@ def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, str
         for j in apart
         if _hangs_freely(tree, j, known, rockers) and _few_endless_above(tree, j, endless)
     ]
-    apart = _wrists_dropped(tree, apart)
+    apart = _grounded(tree, _wrists_dropped(tree, apart))
     side_by_side = len(apart) >= 2 and _sides({tree.poses.place(j.child)[1] for j in apart})
     if side_by_side or _in_line(tree, apart):
         found.update(dict.fromkeys((j.name for j in apart), _SIDES))

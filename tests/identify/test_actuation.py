@@ -214,6 +214,34 @@ def test_unnamed_wheels_on_sliding_suspension_links_turn_about_level_axles_in_th
     assert turned.body.wheels == ()
 
 
+def arms_with_endless_wrists(wrist_axis: str) -> RobotText:
+    """A trunk with two unnamed arms of four limited hinges hanging at its sides, each ending
+    in an endless leaf below its forearm about ``wrist_axis``."""
+    robot = RobotText("trunk")
+    for side, y in (("a", 0.2), ("b", -0.2)):
+        parent = robot.root
+        for index, xyz in enumerate((f"0 {y} 0.3", "0 0 0", "0 0 0", "0 0 -0.2")):
+            axis = "0 1 0" if index % 2 == 0 else "1 0 0"
+            child = f"{side}{index}"
+            builders.placed(robot, f"j{side}{index}", "revolute", parent, child, xyz=xyz, axis=axis)
+            parent = child
+        builders.placed(
+            robot, f"w{side}", "continuous", parent, f"h{side}", xyz="0 0 -0.07", axis=wrist_axis
+        )
+    return robot
+
+
+def test_endless_leaves_turning_about_an_upright_axis_at_the_end_of_arms_are_no_wheels() -> None:
+    # A humanoid's wrist yaw drawn without limits points down under the forearm: no axle.
+    result = identify_urdf(arms_with_endless_wrists("0 0 1").text())
+    assert result.body is not None
+    assert result.body.wheels == ()
+    # About a level axle, the same leaves roll: wheels on two short legs.
+    rolling = identify_urdf(arms_with_endless_wrists("0 1 0").text())
+    assert rolling.body is not None
+    assert sorted(rolling.body.wheels) == ["wa", "wb"]
+
+
 def twin_screws(*, gps: bool = False, axis: str = "1 0 0", named: str = "m") -> RobotText:
     """Two endless leaves (``<named>0_joint`` ..) hanging below a hull at its stern, side by
     side, turning about ``axis`` (x: the line the body travels along); ``gps`` adds a GPS
