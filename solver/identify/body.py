@@ -34,6 +34,7 @@ from __future__ import annotations
 
 import itertools
 import re
+from collections import Counter
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field, replace
 
@@ -673,7 +674,7 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
         parts.limbs,
         grounded=grounded(tree, parts.roles),
         flying=flying,
-        walks_on=_trunks(tree, legged),
+        walks_on=_trunks(tree, legged, parts.trunk),
         grippers=frozenset(parts.grippers),
     )
     if fingers:
@@ -711,14 +712,23 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
         parts.limbs = camera_arm(tree, pendulum(tree, parts.limbs))
 
 
-def _trunks(tree: JointTree, limbs: list[Limb]) -> frozenset[str | None]:
+def _trunks(tree: JointTree, limbs: list[Limb], trunk: list[str]) -> frozenset[str | None]:
     """The rigid bodies two legs or more of ``limbs`` hang from, as :func:`finger_groups` is
-    told them: the nearest joint above each leg's base that moves (None: the root's)."""
+    told them: the nearest joint above each leg's base that moves (None: the root's); and the
+    bodies the ``trunk`` joints turn on them (a waist, its chest: where a walker's arms and
+    neck hang)."""
     legs = [limb for limb in limbs if limb.kind == "leg"]
     if len(legs) < 2:
         return frozenset()
     known: dict[str, str | None] = {}
-    return frozenset(moved_by(tree.urdf, limb.base, known) for limb in legs)
+    bodies = {moved_by(tree.urdf, limb.base, known) for limb in legs}
+    waist = [joint for name in trunk if (joint := tree.urdf.joint(name)) is not None]
+    on_body = Counter(moved_by(tree.urdf, joint.parent, known) for joint in waist)
+    for joint in waist:  # in the tree's order: a waist's roll, then its pitch on it
+        body = moved_by(tree.urdf, joint.parent, known)
+        if body in bodies and on_body[body] == 1:  # one chain up: a waist, not two arms
+            bodies.add(joint.name)
+    return frozenset(bodies)
 
 
 def _commanded(tree: JointTree, parts: _Parts, track_names: tuple[str, ...]) -> list[str]:

@@ -896,10 +896,23 @@ def _leg_candidates(
 
 
 def _spins_all_through(tree: JointTree, limb: Limb) -> bool:
-    """Every joint of the chain turns without end (continuous, or a range no stop has)."""
+    """Every joint of the chain turns without end (continuous, or a range no stop has), but
+    continuous joints whose written limits are less than a whole turn apart: their author
+    meant stops (a Unity import writes every hinge of a humanoid continuous, +-90 degrees)."""
     return all(
-        (joint := tree.urdf.joint(name)) is not None and joint.endless for name in limb.joints
+        (joint := tree.urdf.joint(name)) is not None and joint.endless and not _stops_written(joint)
+        for name in limb.joints
     )
+
+
+def _stops_written(joint: Joint) -> bool:
+    """Limits written on the joint, less than a whole turn apart (and more than nothing)."""
+    lower, upper = joint.lower, joint.upper
+    return lower is not None and upper is not None and 0 < upper - lower < _WRITTEN_STOPS
+
+
+# Written limits this far apart (radians) or more are a whole turn's (a wheel's +-pi).
+_WRITTEN_STOPS = 1.5 * math.pi
 
 
 def _pair_above(

@@ -1656,6 +1656,54 @@ def test_two_hinges_that_are_square_or_close_together_on_a_base_are_no_arm(
     assert "arm" not in [limb.kind for limb in result.body.limbs]
 
 
+def waisted_humanoid(kind: str = "revolute") -> RobotText:
+    """A small humanoid drawn from its feet up with every joint unnamed (``j0`` ..), each of
+    ``kind`` with stops at +-90 degrees written: two six-joint legs hanging from the root to
+    the floor, a waist turning a chest above them, and on the chest two four-joint arms and a
+    neck."""
+    robot = RobotText("kit")
+    limit = '<limit lower="-1.5708" upper="1.5708" effort="1" velocity="1"/>'
+    count = iter(range(100))
+
+    def hinge(parent: str, xyz: str, axis: str) -> str:
+        index = next(count)
+        child = f"l{index}"
+        shape = f'<origin xyz="{xyz}"/><axis xyz="{axis}"/>{limit}'
+        robot.joint(f"j{index}", kind, parent, child, shape)
+        return child
+
+    for y in (0.03, -0.03):
+        link = hinge(robot.root, f"0 {y} 0.25", "0 0 1")
+        for xyz, axis in (
+            ("0.01 0 -0.02", "1 0 0"),
+            ("0 0 -0.04", "0 1 0"),
+            ("0 0 -0.065", "0 1 0"),
+            ("0 0 -0.065", "0 1 0"),
+            ("0.02 0 -0.04", "1 0 0"),
+        ):
+            link = hinge(link, xyz, axis)
+    chest = hinge(robot.root, "0 0 0.3", "0 0 1")
+    for y in (0.05, -0.05):
+        link = hinge(chest, f"0 {y} 0.05", "0 1 0")
+        for xyz, axis in (("0.015 0 0", "1 0 0"), ("0 0 -0.07", "0 0 1"), ("0 0 -0.015", "0 1 0")):
+            link = hinge(link, xyz, axis)
+    hinge(chest, "0 0 0.06", "0 0 1")
+    return robot
+
+
+@pytest.mark.parametrize("kind", ["revolute", "continuous"])
+def test_a_small_unnamed_humanoid_whose_arms_hang_from_a_chest_on_a_waist_is_a_humanoid(
+    kind: str,
+) -> None:
+    # Arms of four joints on a chest a waist turns are no hand's fingers: the legs' trunk
+    # carries them. Continuous joints with stops written a quarter turn each way are hinges
+    # (legs), not a caster's endless joints.
+    result = identify_urdf(waisted_humanoid(kind).text())
+    assert result.body is not None
+    assert sorted(limb.kind for limb in result.body.limbs) == ["arm", "arm", "leg", "leg", "other"]
+    assert result.structure == "Humanoid"
+
+
 def two_hinges_alone(
     *, axes: tuple[str, str] = ("0 0 1", "0 1 0"), reach: float = 0.02
 ) -> RobotText:
