@@ -481,6 +481,7 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
         roles=joint_roles(tree), placement=placement(tree), fixed_rotors=tuple(fixed_rotors(tree))
     )
     parts.roles.update(_rollers(tree, parts.roles))
+    parts.roles.update(_loop_linkages(tree, parts.roles))
     for name in stacked_grippers(tree, parts.of("gripper")):
         del parts.roles[name]  # an arm's joint, though named as a gripper's
     _body_parts(tree, parts)
@@ -618,6 +619,33 @@ def _tool_links(tree: JointTree) -> Iterator[str]:
 
 # A link that holds a tool or a sensor, named so: no tool itself.
 _MOUNT = re.compile(r"mount|holder|bracket", re.IGNORECASE)
+
+
+def _loop_linkages(tree: JointTree, roles: dict[str, Role]) -> dict[str, Role]:
+    """The movable joints of no role on the way down to each end of a loop an exporter cut
+    (the frames a file names as its two ends, :attr:`Urdf.cut_loops`), from the nearest link
+    above where another movable joint branches off: a parallel linkage's rods and cranks beside
+    the limb they drive (a closed-chain leg's ankle and knee linkages), passive for the limb's
+    shape, whatever transmission is written on them. (A loop a ``<gazebo>`` joint closes joins
+    two chains instead: :func:`~solver.identify.limbs.closed_loops`.)"""
+    found: dict[str, Role] = {}
+    movable_children = Counter(j.parent for j in tree.urdf.joints if j.movable)
+    for end in sorted({link for pair in tree.urdf.cut_loops for link in pair}):
+        link = end
+        for _ in range(_LINKAGE_JOINTS):
+            joint = tree.urdf.parent_joint(link)
+            if joint is None:
+                break
+            if joint.movable and joint.name not in roles:
+                found[joint.name] = Role(joint.name, "passive", f"a linkage closed at {end}")
+            link = joint.parent
+            if movable_children[link] > 1:
+                break
+    return found
+
+
+# The most joints a linkage's branch has from where it leaves its limb to a loop's end.
+_LINKAGE_JOINTS = 4
 
 
 def _rollers(tree: JointTree, roles: dict[str, Role]) -> dict[str, Role]:

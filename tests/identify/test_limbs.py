@@ -2982,6 +2982,49 @@ def test_the_urdf_keeps_only_the_gazebo_closures_between_its_own_links() -> None
     assert closures == (("l_rear_shin", "l_wheel"), ("r_rear_shin", "r_wheel"))
 
 
+def cut_loop_biped(*, marked: bool = True) -> RobotText:
+    """Two legs (hip, knee, ankle down to a foot), each with a knee linkage and two ankle
+    linkages an exporter cut open (a closed-chain biped's: two actuators tilt the foot): a
+    motor crank and a rod per loop, ending in frames named as that loop's two ends
+    (``closedloop_knee_<side>_A`` / ``_B``; with ``marked`` False, plain frames)."""
+    robot = RobotText("walker")
+
+    def hinge(name: str, parent: str, child: str, xyz: str) -> str:
+        return builders.placed(robot, name, "revolute", parent, child, xyz=xyz, axis="0 1 0")
+
+    for side, y in (("left", 0.1), ("right", -0.1)):
+        thigh = hinge(f"hip_{side}", robot.root, f"thigh_{side}", f"0 {y} -0.1")
+        shin = hinge(f"knee_{side}", thigh, f"shin_{side}", "0 0 -0.3")
+        foot = hinge(f"ankle_{side}", shin, f"foot_{side}", "0 0 -0.3")
+        loops = (("knee", (thigh, shin)), ("ankle1", (shin, foot)), ("ankle2", (shin, foot)))
+        for loop, (crank_on, rod_on) in loops:
+            a, b = (
+                (f"closedloop_{loop}_{side}_A", f"closedloop_{loop}_{side}_B")
+                if marked
+                else (f"end_{loop}_{side}_1", f"end_{loop}_{side}_2")
+            )
+            robot.fixed(
+                hinge(f"motor_{loop}_{side}", crank_on, f"crank_{loop}_{side}", "0.05 0 -0.05"), a
+            )
+            robot.fixed(
+                hinge(f"free_{loop}_{side}", rod_on, f"rod_{loop}_{side}", "0.05 0 0.05"), b
+            )
+    return robot
+
+
+def test_a_linkage_cut_open_at_frames_named_as_one_loops_ends_is_no_limb_of_its_own() -> None:
+    urdf = parse_urdf(cut_loop_biped().text())
+    assert len(urdf.cut_loops) == 6
+    assert ("closedloop_ankle1_left_A", "closedloop_ankle1_left_B") in urdf.cut_loops
+    result = identify_urdf(cut_loop_biped().text())
+    assert result.body is not None
+    assert [(limb.kind, len(limb.joints)) for limb in result.body.limbs] == [("leg", 3), ("leg", 3)]
+    assert result.structure == "Biped"
+    # The same frames named as no loop's ends: the cranks and rods branch the legs.
+    assert parse_urdf(cut_loop_biped(marked=False).text()).cut_loops == ()
+    assert identify_urdf(cut_loop_biped(marked=False).text()).structure != "Biped"
+
+
 def circle_of_arms(count: int, *, turn: float = 0.0, rise: float = 0.0) -> str:
     """``count`` alike two-joint chains named as arms on a circle 0.2 m out, evenly spaced
     (the first turned ``turn`` radians further; each ``rise`` metres above the one before)."""

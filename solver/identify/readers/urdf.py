@@ -296,6 +296,8 @@ class Urdf:
     # Loops a URDF cannot write, closed by SDF joints in <gazebo> blocks (<joint><parent>
     # <child>): (parent link, child link), both links of the description.
     closures: tuple[tuple[str, str], ...] = ()
+    # Loops an exporter cut, its two ends named as one loop's (:func:`_cut_loops`): (A, B).
+    cut_loops: tuple[tuple[str, str], ...] = ()
 
     @cached_property
     def _children(self) -> dict[str, tuple[Joint, ...]]:
@@ -497,6 +499,7 @@ class _Builder:
             models,
             _gravity_off(root),
             _closures(root, links),
+            _cut_loops(links),
         )
 
     def _links(
@@ -1105,6 +1108,27 @@ def _closures(root: etree._Element, links: dict[str, Link]) -> tuple[tuple[str, 
                 if len(found) >= MAX_CLOSURES:
                     return tuple(found)
     return tuple(found)
+
+
+def _cut_loops(links: dict[str, Link]) -> tuple[tuple[str, str], ...]:
+    """Pairs of links named as the two ends of one cut loop: ``closedloop`` in the name and an
+    ``A`` and a ``B`` in one place of it, the rest alike (``closedloop13_A_3D`` and
+    ``closedloop13_B_3D``, ``closedloop_knee_right_A`` and ``..._B``: an exporter's frames for a
+    parallel linkage's loop, to be joined in a simulator)."""
+    ends: dict[str, dict[str, str]] = {}
+    for name in links:
+        if _LOOP_WORD.search(name) is None:
+            continue
+        for marker in _LOOP_END.finditer(name):
+            key = f"{name[: marker.start()]}*{name[marker.end() :]}"
+            ends.setdefault(key, {})[marker.group()] = name
+    found = [(pair["A"], pair["B"]) for pair in ends.values() if len(pair) == 2]
+    return tuple(found[:MAX_CLOSURES])
+
+
+# A cut loop's frames (Gepetto's exports of closed-chain legs), and the end each one is.
+_LOOP_WORD = re.compile(r"closed_?loop", re.IGNORECASE)
+_LOOP_END = re.compile(r"(?<=[_0-9])[AB](?=_|$)")
 
 
 # A simulator's joint controller plugin (Gazebo Sim's JointPositionController and
