@@ -720,6 +720,19 @@ def _two_fingers(
     return {name for limb in group for name in limb.joints}
 
 
+def _palm_of(
+    tree: JointTree, spread: Joint, known: dict[str, str | None], carried: Counter[str | None]
+) -> str | None:
+    """The body a finger's spreading joint hangs from (by the joint that moves it; None: the
+    root's), or, when that body is turned by one joint carrying this spread alone (a thumb's
+    rotation toward the palm), the body that joint hangs from."""
+    body = moved_by(tree.urdf, spread.parent, known)
+    rotation = None if body is None else tree.urdf.joint(body)
+    if rotation is None or carried[body] != 1:
+        return body
+    return moved_by(tree.urdf, rotation.parent, known)
+
+
 def _beside_a_thumb(
     tree: JointTree, by_body: dict[str | None, list[Limb]], palms: frozenset[str | None]
 ) -> set[str]:
@@ -768,6 +781,10 @@ def _spread_fingers(tree: JointTree, by_base: dict[str, list[Limb]]) -> set[str]
     longest = tree.profile.limb("finger_max_joints")
     by_palm: dict[str | None, list[Joint]] = {}
     known: dict[str, str | None] = {}
+    # How many movable joints each body (by the joint that moves it) carries.
+    alone = Counter(
+        moved_by(tree.urdf, joint.parent, known) for joint in tree.urdf.joints if joint.movable
+    )
     for base, group in by_base.items():
         spread = tree.urdf.parent_joint(base)
         if (
@@ -777,8 +794,9 @@ def _spread_fingers(tree: JointTree, by_base: dict[str, list[Limb]]) -> set[str]
             or any(len(limb.joints) + 1 > longest for limb in group)
         ):
             continue
-        # The palm: what carries the spreading joint's link (a metacarpal fixed to it each).
-        by_palm.setdefault(moved_by(tree.urdf, spread.parent, known), []).append(spread)
+        # The palm: what carries the spreading joint's link (a metacarpal fixed to it each),
+        # through a thumb's rotation that carries this spread alone.
+        by_palm.setdefault(_palm_of(tree, spread, known, alone), []).append(spread)
     found: set[str] = set()
     for spreads in by_palm.values():
         if len(spreads) >= tree.profile.limb("hand_min_fingers"):

@@ -712,6 +712,39 @@ def test_two_spreading_chains_on_one_palm_are_no_hand() -> None:
     assert identify_urdf(spread_hand(2).text()).structure != "Hand"
 
 
+def crank_hand() -> RobotText:
+    """A hand of joints and links no name says anything of (``jN``, ``lN``; a crank-driven
+    design): two fingers and a thumb, each spreading on a joint of its own (``j1``, ``j6``,
+    ``j12``) into a knuckle link carrying the finger's two flexions and, beside them, its
+    crank and pusher; the thumb's spread sits on a link its rotation (``j11``) turns, which
+    carries nothing else. Every limit zero, as its exporter wrote them (placeholders)."""
+    robot = RobotText("r", root="l0")
+    count = iter(range(1, 100))
+
+    def hinge(parent: str, xyz: str, rpy: str) -> str:
+        index = next(count)
+        shape = f'<origin xyz="{xyz}" rpy="{rpy}"/><axis xyz="0 0 1"/>'
+        limit = '<limit lower="0" upper="0" effort="1" velocity="1"/>'
+        return robot.joint(f"j{index}", "revolute", parent, f"l{index}", shape + limit)
+
+    for parent, xyz in (("l0", "-0.022 0 0"), ("l0", "0.022 0 0"), (None, "0 0.021 0.02")):
+        # The thumb's spread on its rotation.
+        on = parent or hinge("l0", "0.0392 -0.031 -0.062", "1.5708 0 0")
+        knuckle = hinge(on, xyz, "1.5708 -1.5708 0")
+        hinge(hinge(knuckle, "0 0 0.0135", "-1.5708 -0.13963 0"), "0.05 0 0", "0 0 -0.34703")
+        hinge(hinge(knuckle, "0.034 0 -0.0065", "1.5708 -1.1692 3.1416"), "-0.062 0 0", "0 0 0.45")
+    return robot
+
+
+def test_a_thumb_spreading_from_a_rotation_of_its_own_counts_on_the_palm() -> None:
+    # Two fingers spread on the palm; the thumb spreads on a link its rotation turns toward
+    # the palm, carrying that spread alone: three fingers on one palm, a hand.
+    result = identify_urdf(crank_hand().text())
+    assert result.structure == "Hand"
+    roles = {role.joint: role.role for role in result.roles}
+    assert {roles["j1"], roles["j6"], roles["j12"]} == {"finger"}
+
+
 def wheel_legs(hubs: int = 6) -> RobotText:
     """A wheel-leg walker: hubs that turn all the way round, each carrying two rim halves on
     joints of their own (they open into a leg, close into a wheel)."""
