@@ -34,7 +34,16 @@ from collections.abc import Iterable, Iterator, Mapping
 
 from solver.identify.hands import endless_jaws, gripper_closure, jaws
 from solver.identify.limbs import CORNER, joints_above, moved_by, nearest_above, points_a_sensor
-from solver.identify.pose import Vector, dot, local_axis, minus, off_axis, parallel, spread
+from solver.identify.pose import (
+    Vector,
+    dot,
+    local_axis,
+    minus,
+    off_axis,
+    parallel,
+    perpendicular,
+    spread,
+)
 from solver.identify.readers.urdf import Joint, written_blank
 from solver.identify.roles import POSED, Role, main_axis
 from solver.identify.tree import JointTree
@@ -1219,14 +1228,49 @@ def _wheel_candidates(
     below: dict[str, list[Joint]] = {}
     level: dict[str, list[Joint]] = {}
     known: dict[str, str | None] = {}  # link -> the nearest joint above it that turns
-    for joint in _unnamed_spinners(tree, set(roles)):
-        if joint.child in tree.moving_below and not _rollers_only(tree, joint, roles):
+    spinners = [
+        joint
+        for joint in _unnamed_spinners(tree, set(roles))
+        if joint.child not in tree.moving_below or _rollers_only(tree, joint, roles)
+    ]
+    square = _square_to_the_rest(tree, spinners, known)
+    for joint in spinners:
+        if joint.name in square:
             continue
         if joint.origin[2] < 0:
             below.setdefault(joint.parent, []).append(joint)
         elif _axle(_resting_axis(tree, joint, known)) or _caster_wheel(tree, joint, known):
             level.setdefault(joint.parent, []).append(joint)
     return below, level
+
+
+def _square_to_the_rest(
+    tree: JointTree, spinners: list[Joint], known: dict[str, str | None]
+) -> set[str]:
+    """The names of ``spinners`` on the hull (no joint that turns above them) whose axle, as
+    the body rests, lies level and square to the axle more than half of those level ones share
+    (two or more): wheels that roll together turn about one line, so a spinner across it pulls
+    along the body (a plane's propeller beside its landing gear's wheels). None when they all
+    point in (an omni base's wheels, :func:`_pointing_in`). Axles below a joint that turns
+    (a steering knuckle, a rocker) are left out: their rest pose says nothing of the body's.
+    The shared line is found by a majority vote, one pass and a count: linear in the joints."""
+    on_the_hull = [j for j in spinners if nearest_above(tree.urdf, j.parent, known, _turns) is None]
+    axes = {j.name: tree.poses.axis(j) for j in on_the_hull}
+    level = [j for j in on_the_hull if _axle(axes[j.name])]
+    leader: Vector | None = None
+    votes = 0
+    for joint in level:
+        axis = axes[joint.name]
+        if votes == 0:
+            leader, votes = axis, 1
+        else:
+            votes += 1 if leader is not None and parallel(axis, leader) else -1
+    if leader is None or _pointing_in(tree, level):
+        return set()
+    sharing = sum(1 for joint in level if parallel(axes[joint.name], leader))
+    if sharing < 2 or 2 * sharing <= len(level):
+        return set()
+    return {joint.name for joint in level if perpendicular(axes[joint.name], leader)}
 
 
 def _caster_wheel(tree: JointTree, joint: Joint, known: dict[str, str | None]) -> bool:

@@ -86,6 +86,7 @@ from solver.identify.vehicle import (
     grounded,
     listed_thrusters,
     not_rotors,
+    propellers,
     surface_hints,
     tracks,
     underwater_hints,
@@ -143,6 +144,9 @@ class Body:
     casters: tuple[str, ...] = ()
     # Wings and ailerons: fixed links (a fixed-wing model without joints) or moving surfaces.
     wings: tuple[str, ...] = ()
+    # Endless leaves about the body's long axis beside a wing drawn as a board: a plane's
+    # propellers, whatever their names.
+    propellers: tuple[str, ...] = ()
     # Plugins of a body in water (thrusters, hydrodynamics, buoyancy) and hints of a hull at
     # the surface (a surface plugin, <metacentric_width>, wind on its buoyancy).
     marine_plugins: tuple[str, ...] = ()
@@ -282,8 +286,9 @@ class Body:
 
     @property
     def aero(self) -> bool:
-        """Wings and control surfaces, two or more, one of them a wing: a fixed-wing craft."""
-        return bool(self.wings) and len({*self.wings, *self.fins}) >= 2
+        """Wings and control surfaces, two or more, one of them a wing, or a wing and a
+        propeller that pulls along the body: a fixed-wing craft."""
+        return bool(self.wings) and (len({*self.wings, *self.fins}) >= 2 or bool(self.propellers))
 
     @property
     def weak_flight(self) -> bool:
@@ -347,6 +352,8 @@ class Body:
             )
         if self.wings:
             lines.append(f"wing and control-surface link(s): {_names(self.wings)}")
+        if self.propellers:
+            lines.append(f"propeller joint(s) pulling along the body: {_names(self.propellers)}")
         if self.flight_hints:
             lines.append(f"flight named in: {_names(self.flight_hints)}")
         if self.shipped_as == "flight":
@@ -524,6 +531,7 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
         fins=tuple(parts.of("fin")),
         casters=tuple(parts.of("caster")),
         wings=tuple(wings(tree, parts.roles)),
+        propellers=tuple(propellers(tree, parts.roles)),
         marine_plugins=()
         if tree.reader.spaceborne
         else tuple(

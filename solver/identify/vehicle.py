@@ -48,6 +48,7 @@ __all__ = [
     "grounded",
     "listed_thrusters",
     "not_rotors",
+    "propellers",
     "surface_hints",
     "tracks",
     "underwater_hints",
@@ -64,6 +65,11 @@ _DISC = 2.0
 _DISC_SPREAD = 0.1
 _FEWEST_DISCS = 3
 _MOST_DISCS = 16
+# A wing drawn as a board: a box, as the body rests, at least this many times as wide across
+# the body (its span) as it is long along it (its chord), and its chord at least this many
+# times its thickness (a bar, a bumper or a sensor rail is as thick as it is long).
+_SPAN_OVER_CHORD = 3.0
+_CHORD_OVER_THICKNESS = 3.0
 # Parts whose fixed joints say a body stands on the ground, whatever discs it has.
 _NOT_ROTORS = ("wheel", "caster", "track", "leg")
 # A plugin that sets a body's twist in space (Gazebo Sim's VelocityControl), air or ground alike.
@@ -260,7 +266,8 @@ def _stands(tree: JointTree) -> bool:
 
 def wings(tree: JointTree, roles: dict[str, Role]) -> list[str]:
     """Wings and ailerons (fixed links, or fin joints named so) and, beside a wing, fixed
-    control surfaces (a tail, a rudder)."""
+    control surfaces (a tail, a rudder); with none of them, boards beside a propeller
+    (:func:`propellers`)."""
     if tree.reader.marine:
         return []
     fixed = [j for j in tree.urdf.joints if not j.movable]
@@ -270,7 +277,54 @@ def wings(tree: JointTree, roles: dict[str, Role]) -> list[str]:
     ]
     found += _ailerons(tree, roles, found)
     surfaces = [j.child for j in fixed if "fin" in tree.parts_of(j.child)]
+    if not found and _pulled_along(tree, roles):
+        return _boards(tree)
     return found + surfaces if found else []
+
+
+def propellers(tree: JointTree, roles: dict[str, Role]) -> list[str]:
+    """Endless leaves of no role on the hull (a part no joint moves) turning about the body's
+    long axis as it rests (level, along x), beside a wing drawn as a board (:func:`_boards`):
+    a plane's propellers, pulling or pushing it along, whatever their names. None on a body in
+    water (a ship's screws turn so) or where a wing is named (that wing says it flies)."""
+    if tree.reader.marine or not _boards(tree):
+        return []
+    return _pulled_along(tree, roles)
+
+
+def _pulled_along(tree: JointTree, roles: dict[str, Role]) -> list[str]:
+    """The joints :func:`propellers` reads, whether or not a board is beside them."""
+    on_the_hull = tree.reader.still
+    along = (1.0, 0.0, 0.0)
+    return [
+        joint.name
+        for joint in tree.urdf.joints
+        if joint.name not in roles
+        and joint.endless
+        and joint.parent in on_the_hull
+        and joint.child not in tree.moving_below
+        and parallel(tree.poses.axis(joint), along)
+    ]
+
+
+def _boards(tree: JointTree) -> list[str]:
+    """Links on the hull drawn as a box that, as the body rests, spans the body (across, y)
+    :data:`_SPAN_OVER_CHORD` times its chord (along, x) and whose chord is
+    :data:`_CHORD_OVER_THICKNESS` times its thickness (upright, z): a wing, a tailplane, drawn
+    as a board. A fin stands upright, a bumper or a sensor bar is as thick as it is long."""
+    found = []
+    for name in sorted(tree.reader.still):
+        link = tree.urdf.link(name)
+        box = None if link is None else link.box
+        if box is None:
+            continue
+        x, y, z = box.size
+        sides: tuple[Vector, ...] = ((x, 0.0, 0.0), (0.0, y, 0.0), (0.0, 0.0, z))
+        edges = [tree.poses.turned(name, box.rpy, side) for side in sides]
+        along, across, upright = (sum(abs(edge[k]) for edge in edges) for k in range(3))
+        if across >= _SPAN_OVER_CHORD * along and along >= _CHORD_OVER_THICKNESS * upright:
+            found.append(name)
+    return found
 
 
 def _ailerons(tree: JointTree, roles: dict[str, Role], found: list[str]) -> list[str]:

@@ -75,6 +75,33 @@ def test_unnamed_endless_joints_below_a_body_on_both_sides_are_wheels() -> None:
     assert result.body.wheels == ("fl_joint", "fr_joint", "rl_joint", "rr_joint")
 
 
+def test_a_spinner_square_to_the_axle_the_wheels_share_is_no_wheel() -> None:
+    # Four wheels about axles across the body, and at its nose a spinner about the line the
+    # body rolls along: a propeller, no wheel (it would roll the body sideways).
+    robot = RobotText("rover")
+    _four_spinning_leaves(robot, -0.1)
+    robot.joint(
+        "nose", "continuous", "base_link", "spinner", '<origin xyz="0.4 0 0"/><axis xyz="1 0 0"/>'
+    )
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert result.body.wheels == ("fl_joint", "fr_joint", "rl_joint", "rr_joint")
+    # An omni base's four wheels at its sides' middles, two axles along it and two across,
+    # each pointing in: no axle most of them share, all four wheels.
+    omni = RobotText("omni")
+    for name, (x, y), axis in (
+        ("f", (0.2, 0), "1 0 0"),
+        ("b", (-0.2, 0), "1 0 0"),
+        ("l", (0, 0.2), "0 1 0"),
+        ("r", (0, -0.2), "0 1 0"),
+    ):
+        place = f'<origin xyz="{x} {y} -0.1"/><axis xyz="{axis}"/>'
+        omni.joint(f"{name}_joint", "continuous", "base_link", f"{name}_link", place)
+    found = identify_urdf(omni.text())
+    assert found.body is not None
+    assert sorted(found.body.wheels) == ["b_joint", "f_joint", "l_joint", "r_joint"]
+
+
 def _with_masses(text: str, centres: dict[str, str]) -> str:
     """``text`` with each link named in ``centres`` given a mass there (its inertial origin)."""
     inertia = '<inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/>'

@@ -334,6 +334,43 @@ def test_wings_are_wing_links_with_the_control_surfaces_beside_them() -> None:
     assert wings(tree_of(tail_only), {}) == []
 
 
+def landing_plane(*, board: str = "0.3 1.4 0.02", turned: str = "0 0 0") -> str:
+    """A plane of unnamed parts: a body, a board fixed on it (``board``, its box's size, turned
+    by ``turned``), an endless leaf at its nose turning about the body's long axis, and two
+    wheels below it about axles across it (landing gear)."""
+    spin = '<axis xyz="1 0 0"/>'
+    return f"""<robot name="p">
+  <link name="l0"/>
+  <link name="l1"><visual><origin rpy="{turned}"/><geometry><box size="{board}"/></geometry>
+  </visual></link>
+  <link name="l2"/><link name="l3"/><link name="l4"/>
+  <joint name="j0" type="fixed"><parent link="l0"/><child link="l1"/>
+    <origin xyz="-0.7 0 0.05"/></joint>
+  <joint name="j1" type="continuous"><parent link="l0"/><child link="l2"/>
+    <origin xyz="0.6 0 0"/>{spin}</joint>
+  <joint name="j2" type="continuous"><parent link="l0"/><child link="l3"/>
+    <origin xyz="0.2 0.2 -0.1"/><axis xyz="0 1 0"/></joint>
+  <joint name="j3" type="continuous"><parent link="l0"/><child link="l4"/>
+    <origin xyz="0.2 -0.2 -0.1"/><axis xyz="0 1 0"/></joint>
+</robot>"""
+
+
+def test_a_board_across_the_body_beside_a_propeller_pulling_along_it_is_a_wing() -> None:
+    result = identify_urdf(landing_plane())
+    assert result.body is not None
+    assert (result.body.wings, result.body.propellers) == (("l1",), ("j1",))
+    assert result.body.wheels == ("j2", "j3")  # its landing gear
+    assert result.structure == "UAV"
+    # A board standing upright is a fin, one along the body a deck, one as thick as it is
+    # long a bar: no wing, and the wheels drive the body on the ground.
+    for board, turned in (("0.3 1.4 0.02", "1.5708 0 0"), ("1.4 0.3 0.02", "0 0 0")):
+        rover = identify_urdf(landing_plane(board=board, turned=turned))
+        assert rover.body is not None
+        assert (rover.body.wings, rover.body.propellers) == ((), ())
+        assert rover.structure == "UGV"
+    assert identify_urdf(landing_plane(board="0.02 1.4 0.02")).structure == "UGV"
+
+
 def test_an_aileron_misspelled_as_cad_exports_write_it_is_a_wing() -> None:
     # A fuselage mesh carrying its wings, with ailerons spelt `airelon` and a tail.
     plane = RobotText("iha")

@@ -32,6 +32,7 @@ if TYPE_CHECKING:
 __all__ = [
     "JOINT_TYPES",
     "MAX_PARTS",
+    "Box",
     "Cylinder",
     "Joint",
     "Link",
@@ -96,6 +97,19 @@ class Link:
     # a macro's default, not a measurement). A wheel's mass centre lies on its axle.
     mass: float | None = None
     mass_centre: tuple[float, float, float] | None = None
+    # Its first <visual> when that is a box, else its first <collision> when that is one: a
+    # plate's shape (a wing drawn as a board); None for meshes, cylinders, or neither.
+    box: Box | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class Box:
+    """A link's ``<visual>`` box: its size along its own x, y and z, and where it sits and how
+    it is turned on the link."""
+
+    size: tuple[float, float, float]
+    rpy: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    xyz: tuple[float, float, float] = (0.0, 0.0, 0.0)
 
 
 @dataclass(frozen=True, slots=True)
@@ -533,6 +547,7 @@ class _Builder:
                     empty=not any(isinstance(part.tag, str) for part in element),
                     mass=mass,
                     mass_centre=_mass_centre(element),
+                    box=_box(element),
                 )
         return found
 
@@ -1391,6 +1406,24 @@ def _shape_cylinder(element: etree._Element | None) -> Cylinder | None:
     origin = element.find("origin")
     zero = (0.0, 0.0, 0.0)
     return Cylinder(radius, length, _vector(origin, zero, "rpy"), _vector(origin, zero))
+
+
+def _box(link: etree._Element) -> Box | None:
+    """A link's first ``<visual>`` when it is a box of a readable size, else its first
+    ``<collision>`` when that is one, or None."""
+    for kind in ("visual", "collision"):
+        element = link.find(kind)
+        shape = None if element is None else element.find("geometry/box")
+        if element is None or shape is None:
+            continue
+        parts = (shape.get("size") or "").split()
+        size = tuple(_float(part) for part in parts)
+        if len(size) == 3 and all(side is not None and side > 0 for side in size):
+            origin = element.find("origin")
+            zero = (0.0, 0.0, 0.0)
+            x, y, z = (float(side or 0.0) for side in size)
+            return Box((x, y, z), _vector(origin, zero, "rpy"), _vector(origin, zero))
+    return None
 
 
 def _mass(link: etree._Element) -> float | None:
