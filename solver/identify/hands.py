@@ -586,6 +586,7 @@ def finger_groups(
         _spread_fingers(tree, by_base)
         or _beside_a_thumb(tree, on_palm, palms)
         or _two_fingers(tree, by_palm, on_palm)
+        or _two_fingers_on_an_arm(tree, by_palm, on_palm)
     )
 
 
@@ -718,6 +719,57 @@ def _two_fingers(
     if not _SAME < apart <= min(reaches) / 2:
         return set()
     return {name for limb in group for name in limb.joints}
+
+
+def _two_fingers_on_an_arm(
+    tree: JointTree,
+    by_palm: dict[str | None, list[Limb]],
+    on_palm: dict[str | None, list[Limb]],
+) -> set[str]:
+    """Two unnamed short chains, the only chains on a body that ends an arm (:func:`_arm_end`),
+    each reaching no farther than a finger (:data:`_FINGER_REACH`, from its first joint to its
+    last link) and starting apart within that reach: a two-finger gripper whose fingers bend
+    on joints of their own, at an arm's wrist. A torso's two arms reach farther, a head's two
+    eyes turn about one point each (they reach nowhere)."""
+    found: set[str] = set()
+    for palm, group in by_palm.items():
+        if palm is None or len(group) != 2 or len(on_palm.get(palm, [])) != 2:
+            continue
+        ends = chain_ends(tree, group)
+        if ends is None or not _arm_end(tree, palm):
+            continue
+        reaches = [distance(start, end) for start, end in ends]
+        apart = distance(ends[0][0], ends[1][0])
+        if (
+            min(reaches) > _SAME
+            and max(reaches) <= _FINGER_REACH
+            and _SAME < apart <= _FINGER_REACH
+        ):
+            found.update(name for limb in group for name in limb.joints)
+    return found
+
+
+def _arm_end(tree: JointTree, palm: str) -> bool:
+    """The body ``palm`` (by the joint that moves it) ends a chain of at least the profile's
+    ``arm_min_joints`` movable joints from the root's body, each body on the way carrying
+    nothing else that moves (an arm's links, one after the other)."""
+    known: dict[str, str | None] = {}
+    carrying = Counter(
+        moved_by(tree.urdf, joint.parent, known) for joint in tree.urdf.joints if joint.movable
+    )
+    joints, body = 0, palm
+    while joints <= tree.profile.limb("arm_min_joints"):
+        joint = tree.urdf.joint(body)
+        if joint is None:
+            return False
+        joints += 1
+        above = moved_by(tree.urdf, joint.parent, known)
+        if above is None:
+            break
+        if carrying[above] != 1:
+            return False
+        body = above
+    return joints >= tree.profile.limb("arm_min_joints")
 
 
 def _palm_of(

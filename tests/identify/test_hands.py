@@ -1276,3 +1276,43 @@ def test_two_short_unnamed_chains_close_together_are_a_two_finger_grippers_finge
     # Beside a third chain of the body (an arm on the same base), no gripper alone.
     beside = identify_urdf(two_chains(apart=0.016, link=0.04, third=True).text())
     assert "finger" not in {role.role for role in beside.roles}
+
+
+def arm_with_fingers(finger_joints: int, *, spacing: float = 0.03, apart: float = 0.02) -> str:
+    """Six unnamed hinges one above the other, 0.2 m apart (an arm), and at its end two unnamed
+    chains of ``finger_joints`` hinges, ``spacing`` apart, starting ``apart`` either side."""
+    limit = '<limit lower="-1" upper="1" effort="1" velocity="1"/>'
+    robot = RobotText("arm")
+    link = robot.root
+    for index in range(6):
+        axis = "0 0 1" if index in (0, 3, 5) else "0 1 0"
+        place = f'<origin xyz="0 0 0.2"/><axis xyz="{axis}"/>{limit}'
+        link = robot.joint(f"joint{index + 1}", "revolute", link, f"link{index + 1}", place)
+    number = 7
+    for side in (apart, -apart):
+        finger = link
+        for step in range(finger_joints):
+            across = side if step == 0 else 0.0
+            place = f'<origin xyz="0 {across} {spacing}"/><axis xyz="1 0 0"/>{limit}'
+            finger = robot.joint(f"joint{number}", "revolute", finger, f"link{number}", place)
+            number += 1
+    return robot.text()
+
+
+@pytest.mark.parametrize("finger_joints", [2, 3, 4])
+def test_two_short_unnamed_chains_ending_an_unnamed_arm_are_its_grippers_fingers(
+    finger_joints: int,
+) -> None:
+    result = identify_urdf(arm_with_fingers(finger_joints))
+    assert result.structure == "Manipulator"
+    assert result.body is not None
+    assert [(limb.kind, len(limb.joints), limb.gripper) for limb in result.body.limbs] == [
+        ("arm", 6, True)
+    ]
+    # Chains reaching as far as arms (0.2 m and more) at the end of a chain are a torso's arms
+    # on its waist, and two turning about one point each (a head's eyes) reach nowhere: no
+    # fingers.
+    for far in (arm_with_fingers(finger_joints, spacing=0.2), arm_with_fingers(2, spacing=0.0)):
+        other = identify_urdf(far)
+        assert other.body is not None
+        assert not any(limb.gripper for limb in other.body.limbs)
