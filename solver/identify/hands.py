@@ -732,11 +732,16 @@ def _two_fingers_on_an_arm(
     on joints of their own, at an arm's wrist. A torso's two arms reach farther, a head's two
     eyes turn about one point each (they reach nowhere)."""
     found: set[str] = set()
+    known: dict[str, str | None] = {}
+    # How many movable joints each body (by the joint that moves it) carries.
+    carrying = Counter(
+        moved_by(tree.urdf, joint.parent, known) for joint in tree.urdf.joints if joint.movable
+    )
     for palm, group in by_palm.items():
         if palm is None or len(group) != 2 or len(on_palm.get(palm, [])) != 2:
             continue
         ends = chain_ends(tree, group)
-        if ends is None or not _arm_end(tree, palm):
+        if ends is None or not _arm_end(tree, palm, known, carrying):
             continue
         reaches = [distance(start, end) for start, end in ends]
         apart = distance(ends[0][0], ends[1][0])
@@ -749,16 +754,15 @@ def _two_fingers_on_an_arm(
     return found
 
 
-def _arm_end(tree: JointTree, palm: str) -> bool:
+def _arm_end(
+    tree: JointTree, palm: str, known: dict[str, str | None], carrying: Counter[str | None]
+) -> bool:
     """The body ``palm`` (by the joint that moves it) ends a chain of at least the profile's
     ``arm_min_joints`` movable joints from the root's body, each body on the way carrying
-    nothing else that moves (an arm's links, one after the other)."""
-    known: dict[str, str | None] = {}
-    carrying = Counter(
-        moved_by(tree.urdf, joint.parent, known) for joint in tree.urdf.joints if joint.movable
-    )
+    nothing else that moves (``carrying``: how many movable joints each body carries; an arm's
+    links, one after the other). Walks up at most that many joints."""
     joints, body = 0, palm
-    while joints <= tree.profile.limb("arm_min_joints"):
+    while joints < tree.profile.limb("arm_min_joints"):
         joint = tree.urdf.joint(body)
         if joint is None:
             return False

@@ -1416,7 +1416,7 @@ def _box(link: etree._Element) -> Box | None:
         shape = None if element is None else element.find("geometry/box")
         if element is None or shape is None:
             continue
-        parts = (shape.get("size") or "").split()
+        parts = (shape.get("size") or "").split(None, 3)  # a fourth part: no box's size
         size = tuple(_float(part) for part in parts)
         if len(size) == 3 and all(side is not None and side > 0 for side in size):
             origin = element.find("origin")
