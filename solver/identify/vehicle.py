@@ -270,6 +270,15 @@ def wings(tree: JointTree, roles: dict[str, Role]) -> list[str]:
     (:func:`propellers`)."""
     if tree.reader.marine:
         return []
+    found = _named_wings(tree, roles)
+    if found:
+        return found
+    return _boards(tree) if _pulled_along(tree, roles) else []
+
+
+def _named_wings(tree: JointTree, roles: dict[str, Role]) -> list[str]:
+    """Wings and ailerons named so or told by their hinges, and the fixed control surfaces
+    beside them; none without a wing."""
     fixed = [j for j in tree.urdf.joints if not j.movable]
     found = [j.child for j in fixed if "wing" in tree.parts_of(j.child)]
     found += [
@@ -277,8 +286,6 @@ def wings(tree: JointTree, roles: dict[str, Role]) -> list[str]:
     ]
     found += _ailerons(tree, roles, found)
     surfaces = [j.child for j in fixed if "fin" in tree.parts_of(j.child)]
-    if not found and _pulled_along(tree, roles):
-        return _boards(tree)
     return found + surfaces if found else []
 
 
@@ -287,7 +294,7 @@ def propellers(tree: JointTree, roles: dict[str, Role]) -> list[str]:
     long axis as it rests (level, along x), beside a wing drawn as a board (:func:`_boards`):
     a plane's propellers, pulling or pushing it along, whatever their names. None on a body in
     water (a ship's screws turn so) or where a wing is named (that wing says it flies)."""
-    if tree.reader.marine or not _boards(tree):
+    if tree.reader.marine or _named_wings(tree, roles) or not _boards(tree):
         return []
     return _pulled_along(tree, roles)
 
