@@ -36,6 +36,8 @@ from solver.identify.hands import endless_jaws, gripper_closure, jaws
 from solver.identify.limbs import CORNER, joints_above, moved_by, nearest_above, points_a_sensor
 from solver.identify.pose import (
     Vector,
+    cross,
+    distance,
     dot,
     local_axis,
     minus,
@@ -529,6 +531,40 @@ def _rollers_only(tree: JointTree, joint: Joint, roles: Mapping[str, Role]) -> b
             return False  # a finger on a wrist that rolls, a blade on a propeller's hub
         rollers += 1
     return rollers >= _ROLLERS
+
+
+def _spokes_only(tree: JointTree, joint: Joint) -> bool:
+    """Everything that moves below ``joint`` is a slide leaf of no name starting on its axle
+    and sliding square to it, three or more of them spread all round it (no gap of half a turn
+    between them): the spokes a transformable wheel extends (a wheel-leg's whegs). A chuck's
+    jaws sit ahead of their flange, off the axle's point."""
+    spokes = _carried(tree, joint)
+    if len(spokes) < _ROLLERS:
+        return False
+    axis = tree.poses.axis(joint)
+    start = tree.poses.place(joint.child)
+    bearings: list[Vector] = []
+    for spoke in spokes:
+        if (
+            spoke.type != "prismatic"
+            or spoke.child in tree.moving_below
+            or tree.parts_of(spoke.name) | tree.parts_of(spoke.child)
+            or distance(tree.poses.place(spoke.child), start) > _ON_THE_AXLE
+            or not perpendicular(tree.poses.axis(spoke), axis)
+        ):
+            return False
+        bearings.append(tree.poses.axis(spoke))
+    return _all_round(bearings, axis)
+
+
+def _all_round(directions: list[Vector], axis: Vector) -> bool:
+    """The ``directions`` (square to ``axis``) leave no gap of half a turn about it."""
+    first = directions[0]
+    side = cross(axis, first)
+    angles = sorted(math.atan2(dot(d, side), dot(d, first)) for d in directions)
+    gaps = [b - a for a, b in itertools.pairwise(angles)]
+    gaps.append(angles[0] + 2 * math.pi - angles[-1])
+    return max(gaps) < math.pi
 
 
 def _on_a_spinning_part(tree: JointTree, joint: Joint, known: dict[str, str | None]) -> bool:
@@ -1231,7 +1267,9 @@ def _wheel_candidates(
     spinners = [
         joint
         for joint in _unnamed_spinners(tree, set(roles))
-        if joint.child not in tree.moving_below or _rollers_only(tree, joint, roles)
+        if joint.child not in tree.moving_below
+        or _rollers_only(tree, joint, roles)
+        or _spokes_only(tree, joint)
     ]
     square = _square_to_the_rest(tree, spinners, known)
     for joint in spinners:

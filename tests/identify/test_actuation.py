@@ -1837,3 +1837,32 @@ def test_a_gripper_alone_whose_first_joint_carries_the_jaws_stays_a_gripper_open
     result = identify_urdf(robot.text())
     assert result.structure == "Gripper"
     assert {c.motion_control for c in result.motion_controls} == {"Joint"}
+
+
+def spoked_rover(*, ahead: float = 0.0) -> RobotText:
+    """Four unnamed wheels, each carrying five unnamed slides spread round its axle (a
+    transformable wheel's spokes), starting ``ahead`` along the axle from the wheel's centre."""
+    robot = RobotText("spokes")
+    limit = '<limit lower="0" upper="0.05" effort="1" velocity="1"/>'
+    for index, (x, y) in enumerate(((0.15, 0.2), (0.15, -0.2), (-0.15, 0.2), (-0.15, -0.2))):
+        place = f'<origin xyz="{x} {y} 0"/><axis xyz="0 1 0"/>'
+        hub = robot.joint(f"j{index}", "continuous", "base_link", f"hub{index}", place)
+        for spoke in range(5):
+            turn = 2 * math.pi * spoke / 5
+            body = f'<origin xyz="0 {ahead} 0" rpy="0 {turn:.4f} 0"/><axis xyz="1 0 0"/>{limit}'
+            robot.joint(f"s{index}_{spoke}", "prismatic", hub, f"spoke{index}_{spoke}", body)
+    return robot
+
+
+def test_unnamed_wheels_extending_spokes_spread_round_their_axles_are_wheels() -> None:
+    result = identify_urdf(spoked_rover().text())
+    assert result.structure == "UGV"
+    assert result.body is not None
+    assert result.body.wheels == ("j0", "j1", "j2", "j3")
+    roles = {role.joint: role.role for role in result.body.roles}
+    assert {roles[f"s{i}_{k}"] for i in range(4) for k in range(5)} == {"passive"}
+    # Slides starting ahead of the part that turns them (a chuck's jaws on its flange) are no
+    # spokes: those spinners are no wheels.
+    chucks = identify_urdf(spoked_rover(ahead=0.05).text())
+    assert chucks.body is not None
+    assert chucks.body.wheels == ()
