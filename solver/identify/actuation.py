@@ -561,9 +561,15 @@ def _all_round(directions: list[Vector], axis: Vector) -> bool:
     """The ``directions`` (square to ``axis``) leave no gap of half a turn about it."""
     first = directions[0]
     side = cross(axis, first)
-    angles = sorted(math.atan2(dot(d, side), dot(d, first)) for d in directions)
-    gaps = [b - a for a, b in itertools.pairwise(angles)]
-    gaps.append(angles[0] + 2 * math.pi - angles[-1])
+    return _no_half_turn_gap([math.atan2(dot(d, side), dot(d, first)) for d in directions])
+
+
+def _no_half_turn_gap(angles: list[float]) -> bool:
+    """The ``angles`` (radians) leave no gap of half a turn between neighbours, round the
+    circle."""
+    ordered = sorted(angles)
+    gaps = [b - a for a, b in itertools.pairwise(ordered)]
+    gaps.append(ordered[0] + 2 * math.pi - ordered[-1])
     return max(gaps) < math.pi
 
 
@@ -669,10 +675,7 @@ def _pointing_in(tree: JointTree, joints: list[Joint]) -> bool:
         if not abs(out[0] * axis[0] + out[1] * axis[1]) >= _POINTS_IN * reach:
             return False
         bearings.append(math.atan2(out[1], out[0]))
-    bearings.sort()
-    gaps = [b - a for a, b in itertools.pairwise(bearings)]
-    gaps.append(bearings[0] + 2 * math.pi - bearings[-1])
-    return max(gaps) < math.pi
+    return _no_half_turn_gap(bearings)
 
 
 def _in_line(tree: JointTree, leaves: list[Joint]) -> bool:
