@@ -294,9 +294,10 @@ def propellers(tree: JointTree, roles: dict[str, Role]) -> list[str]:
     long axis as it rests (level, along x), beside a wing drawn as a board (:func:`_boards`):
     a plane's propellers, pulling or pushing it along, whatever their names. None on a body in
     water (a ship's screws turn so) or where a wing is named (that wing says it flies)."""
-    if tree.reader.marine or _named_wings(tree, roles) or not _boards(tree):
+    if tree.reader.marine:
         return []
-    return _pulled_along(tree, roles)
+    pulled = _pulled_along(tree, roles)  # the cheapest test first: most bodies have none
+    return pulled if pulled and not _named_wings(tree, roles) and _boards(tree) else []
 
 
 def _pulled_along(tree: JointTree, roles: dict[str, Role]) -> list[str]:
