@@ -253,10 +253,11 @@ class Station:
         (and, with ``announcements``, a watcher that announced its rule set is seen running), or
         once the graph has been quiet for :data:`LOOK_QUIET` seconds (at most
         :data:`LOOK_LIMIT`). On a DDS graph a rule set announced by a watcher not yet seen
-        running is waited for until :data:`LOOK_LIMIT`: on a busy machine the watcher's
-        participant may be discovered long after its announcement, and a switch that stopped
-        looking would check its values for syntax only and write a misspelt one (a ROS master
-        tells at once: a stale announcement there costs no wait)."""
+        running is waited for until :data:`LOOK_LIMIT`, and so is an announcement whose writer
+        is found before its sample: on a busy machine either may come long after the rest of
+        the graph, and a switch that stopped looking would check its values for syntax only
+        and write a misspelt one (a ROS master tells at once: a stale announcement there costs
+        no wait)."""
         start = quiet_since = time.monotonic()
         seen: Any = None
         while True:
@@ -282,7 +283,13 @@ class Station:
                 observation.subscribers,
                 observation.param_names,
             )
-            awaited = self._discovers and bool(announced) and robot in robots
+            # On DDS an announcement is awaited once its writer is found (its sample comes
+            # after the match), and its watcher once the announcement is read.
+            awaited = (
+                self._discovers
+                and robot in robots
+                and (bool(announced) or _announcing(observation.param_names))
+            )
             if state != seen:
                 seen, quiet_since = state, now
             elif now - start >= LOOK_LIMIT or (now - quiet_since >= LOOK_QUIET and not awaited):
@@ -472,6 +479,13 @@ def _no_robot(robot: str, graph: str, robots: tuple[str, ...]) -> InputError:
         f"{did_you_mean(robot, robots)}; robots there: {listed}{more}",
         path="ROBOT",
     )
+
+
+def _announcing(param_names: Iterable[str]) -> bool:
+    """Someone writes the watchers' announcements (on DDS: a writer of ``/teleop_ui/watchers``
+    is found, whether or not its sample has come)."""
+    key = f"{NAMESPACE}/{ANNOUNCEMENTS}"
+    return any(name == key or name.startswith(f"{key}/") for name in param_names)
 
 
 def _mapping(value: Any) -> Mapping[Any, Any]:

@@ -424,6 +424,28 @@ def test_a_graph_still_discovering_endpoints_is_not_yet_quiet(
     assert len(observed) == 5  # four looks each finding a new writer, then one quiet look
 
 
+def test_an_announcement_whose_writer_is_found_before_its_sample_is_waited_for(
+    node: TestNode, ros1_station: Station, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # On DDS a watcher's announcement writer is found first and its sample comes after the
+    # match: until the sample is read the graph only names /teleop_ui/watchers. Without the
+    # wait a busy machine's switch checked its values for syntax only and wrote a misspelt one.
+    put_drone(node, "/uav1")
+
+    def writer_found(observation: Any, count: int) -> Any:
+        # The writer is found in the first five looks, and gone from the sixth on.
+        names = ("/teleop_ui/watchers",) if count <= 5 else ()
+        return dataclasses.replace(observation, param_names=observation.param_names + names)
+
+    observed = counted_looks(ros1_station, monkeypatch, writer_found)
+    ros1_station.look("/uav1", announcements=True)
+    assert len(observed) < 5  # a master tells at once: the quiet ends the look
+    observed.clear()
+    monkeypatch.setattr(ros1_station, "_discovers", True)  # as a DDS graph's station
+    ros1_station.look("/uav1", announcements=True)
+    assert len(observed) > 5  # looked for while the writer was there
+
+
 def test_a_switch_on_a_master_is_answered_and_the_parameters_hold_it(
     master: Roscore,
     node: TestNode,
