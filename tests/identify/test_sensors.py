@@ -1039,6 +1039,21 @@ def test_a_ros2_control_sensor_naming_where_its_images_go_is_a_camera_a_simulato
     assert sorted(found) == [("camera", "2D Camera", 1), ("depth_camera", "RGB-D Camera", 1)]
 
 
+def test_a_rendered_camera_naming_its_point_cloud_is_a_depth_camera_and_a_scan_a_lidar() -> None:
+    # A fork of mujoco_ros2_control renders a camera's depth as a cloud (``pointcloud_topic``,
+    # no image topic); its rangefinder lidar names its scan's settings and topic.
+    lidar = rendered_camera("mast", "laserscan").replace(
+        "</sensor>", '<param name="angle_increment">0.01</param></sensor>'
+    )
+    found = kinds(
+        rendered_camera("left", "pointcloud"),
+        rendered_camera("right", "pointcloud"),
+        rendered_camera("front", "depth"),
+        lidar,
+    )
+    assert sorted(found) == [("depth_camera", "RGB-D Camera", 3), ("lidar", "LIDAR", 1)]
+
+
 def test_a_ros2_control_sensor_whose_readings_say_nothing_is_told_by_its_name() -> None:
     """A hand's fingertip sensors read x, y, z and its palm's ranger a value (a MuJoCo hand's
     ros2_control): their names say what they are; a name that says nothing adds none."""

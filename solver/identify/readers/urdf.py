@@ -921,7 +921,7 @@ def _device(element: etree._Element, states: list[etree._Element]) -> SensorTag 
     read, or None (see :func:`_hardware_sensors`)."""
     name = (element.get("name") or "").strip()
     readings = {(state.get("name") or "").strip().lower().split(".", 1)[0] for state in states}
-    kind = _hardware_kind(name, readings) or _camera_by_topics(element)
+    kind = _hardware_kind(name, readings) or _rendered_kind(element)
     if kind is None and element.tag == "sensor":
         kind = "unknown"  # its readings do not say (x, y, z; value): told by its name
     if kind is None or _ESTIMATE.search(name):
@@ -937,18 +937,29 @@ def _device(element: etree._Element, states: list[etree._Element]) -> SensorTag 
     return SensorTag(name, kind, frame, line_of(element), "ros2_control")
 
 
-def _camera_by_topics(element: etree._Element) -> str | None:
-    """A camera a simulator's hardware interface renders (mujoco_ros2_control's ``<sensor>``
-    whose parameters name the topics its images go to): ``depth`` when it names a depth image's
-    topic too, else ``camera``; None when it names no image topic."""
+def _rendered_kind(element: etree._Element) -> str | None:
+    """A device a simulator's hardware interface renders, by the outputs and settings its
+    parameters name (mujoco_ros2_control's ``<sensor>``, which reads no state interface): a
+    lidar by its scan settings (``laserscan_topic``, ``angle_increment``, ``min_angle``); a
+    camera by its image topic, ``depth`` when it names a depth image's or a point cloud's topic
+    too or alone (a fork renders the depth as a cloud: ``pointcloud_topic``); None when it names
+    none of them."""
     named = {
         (param.get("name") or "").strip()
         for param in element.findall("param")
         if (param.text or "").strip()
     }
-    if "image_topic" not in named:
-        return None
-    return "depth" if "depth_topic" in named else "camera"
+    if named & _SCAN_PARAMS:
+        return "lidar"
+    if named & _DEPTH_PARAMS:
+        return "depth"
+    return "camera" if "image_topic" in named else None
+
+
+# What a simulator's hardware interface names for a lidar it renders (mujoco_ros2_control's
+# rangefinder lidar) and for a camera's depth (an image, or a cloud).
+_SCAN_PARAMS = frozenset({"laserscan_topic", "angle_increment", "min_angle"})
+_DEPTH_PARAMS = frozenset({"depth_topic", "pointcloud_topic"})
 
 
 def _hardware_kind(name: str, readings: set[str]) -> str | None:
