@@ -220,6 +220,7 @@ def identify_urdf(
             leg_joint_controllers=_own_controllers(packages, profile.gait, legs),
             rotor_controllers=_joint_controllers(packages, profile.flight, body.rotors),
             mount_joint_controllers=_own_controllers(packages, profile.gait, _vehicle_mounts(body)),
+            head_joint_controllers=_own_controllers(packages, profile.gait, _heads(body)),
         ),
         shipped,
     ]
@@ -288,6 +289,11 @@ def _own_controllers(
 def _legs(body: Body) -> list[str]:
     """The joints of the body's legs."""
     return [j for limb in body.limbs if limb.kind == "leg" for j in limb.joints]
+
+
+def _heads(body: Body) -> list[str]:
+    """The joints of the body's heads (pan/tilt units pointing a sensor)."""
+    return [j for limb in body.limbs if limb.kind == "head" for j in limb.joints]
 
 
 def _vehicle_mounts(body: Body) -> list[str]:

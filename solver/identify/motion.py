@@ -192,6 +192,20 @@ def _mounts(mount_joint_controllers: str | None) -> _Shown:
     ]
 
 
+def _heads(head_joint_controllers: str | None) -> _Shown:
+    """A head (a pan/tilt unit pointing a sensor) with a controller of a joint's own in its
+    packages (``head_joint_controllers``, the file that shows it): that joint takes commands
+    by itself, wherever the head is (a transmission alone says nothing of who commands it)."""
+    if head_joint_controllers is None:
+        return []
+    return [
+        (
+            "head_joint_controllers",
+            f"{head_joint_controllers}: a controller of a joint's own on a pan/tilt head",
+        )
+    ]
+
+
 def _motions(joints: tuple[str, ...], urdf: Urdf | None) -> int:
     """How many motions a chain of joints has: a prismatic joint that slides on the previous
     one along the same axis (no turn between them: a telescope's segments) adds none."""
@@ -425,6 +439,7 @@ def controls_from_description(
     leg_joint_controllers: str | None = None,
     rotor_controllers: str | None = None,
     mount_joint_controllers: str | None = None,
+    head_joint_controllers: str | None = None,
 ) -> tuple[Control, ...]:
     """The motion controls the body (and SRDF) show, each with what shows it; with the kinds
     of the sensors the description declares, the profile's navigation guess too; neither that
@@ -442,6 +457,7 @@ def controls_from_description(
         *_water(body, urdf_source),
         *_flight(body, urdf_source, rotor_controllers),
         *_mounts(mount_joint_controllers),
+        *_heads(head_joint_controllers),
         *_limbs(
             body,
             urdf_source,

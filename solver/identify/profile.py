@@ -182,6 +182,7 @@ CONTROL_SOURCES = (
     "leg_controllers",
     "leg_joint_controllers",
     "mount_joint_controllers",
+    "head_joint_controllers",
     "rotor_controllers",
     *ROLE_SOURCES,
 )

@@ -1276,6 +1276,47 @@ def test_a_controller_of_a_tilting_rotors_mount_its_own_takes_joint_commands_bes
     )
 
 
+def rover_with_a_camera_head() -> RobotText:
+    """A wheeled rover whose camera turns on a pan joint with a transmission (what a course's
+    robot pet draws): the head points a sensor."""
+    robot = ugv()
+    head = robot.chain(robot.root, ["camera_pan"])
+    robot.add(gazebo_sensor(head, "camera", "front_camera"))
+    robot.add(transmission("camera_pan", "EffortJointInterface"))
+    return robot
+
+
+def test_a_controller_of_a_heads_joint_its_own_takes_joint_commands_on_a_vehicle(
+    tmp_path: Path,
+) -> None:
+    # Written as ROS 1 configurations write it: the controller's name, its type, its joint.
+    bringup = "camera_position_controller:\n  type: effort_controllers/JointPositionController\n"
+    found = controls_of(
+        described(tmp_path, rover_with_a_camera_head(), bringup + "  joint: camera_pan")
+    )
+    assert found["Joint"] == (
+        "package craft_bringup: craft_bringup/launch/bringup.launch "
+        "(effort_controllers/JointPositionController): a controller of a joint's own on a "
+        "pan/tilt head"
+    )
+
+
+@pytest.mark.parametrize(
+    "bringup",
+    [
+        # A transmission alone: who commands the head is not said.
+        "joint_state_controller: {type: joint_state_controller/JointStateController}",
+        # The head in a group controller (what a tracker writes to), or another joint's own.
+        "head: {type: position_controllers/JointGroupPositionController, joints: [camera_pan]}",
+        "mast: {type: position_controllers/JointPositionController, joint: mast_lift}",
+    ],
+)
+def test_no_heads_controller_of_its_own_gives_a_vehicle_no_joint_commands(
+    tmp_path: Path, bringup: str
+) -> None:
+    assert "Joint" not in controls_of(described(tmp_path, rover_with_a_camera_head(), bringup))
+
+
 @pytest.mark.parametrize(
     "bringup",
     [
