@@ -32,7 +32,7 @@ from itertools import combinations, islice, pairwise
 from solver.identify.couplings import Walk, jaw_groups
 from solver.identify.limbs import Limb, chain_ends, joint_span, joint_words, moved_by, tips_meet
 from solver.identify.placement import MACHINE_TRAVEL, placement
-from solver.identify.pose import distance, local_axis, parallel, perpendicular
+from solver.identify.pose import Vector, distance, local_axis, parallel, perpendicular
 from solver.identify.readers.urdf import Joint
 from solver.identify.tree import JointTree
 
@@ -728,8 +728,9 @@ def _two_fingers_on_an_arm(
 ) -> set[str]:
     """Two unnamed short chains, the only chains on a body that ends an arm (:func:`_arm_end`),
     each reaching no farther than a finger (:data:`_FINGER_REACH`, from its first joint to its
-    last link) and starting apart within that reach: a two-finger gripper whose fingers bend
-    on joints of their own, at an arm's wrist. A torso's two arms reach farther, a head's two
+    last link, or to that link's mass centre: a jaw of one joint reaches as far as its mass
+    sits) and starting apart within that reach: a two-finger gripper whose fingers bend on
+    joints of their own, at an arm's wrist. A torso's two arms reach farther, a head's two
     eyes turn about one point each (they reach nowhere)."""
     found: set[str] = set()
     known: dict[str, str | None] = {}
@@ -743,7 +744,10 @@ def _two_fingers_on_an_arm(
         ends = chain_ends(tree, group)
         if ends is None or not _arm_end(tree, palm, known, carrying):
             continue
-        reaches = [distance(start, end) for start, end in ends]
+        reaches = [
+            max(distance(start, end), distance(start, _mass_place(tree, limb.tip)))
+            for (start, end), limb in zip(ends, group, strict=True)
+        ]
         apart = distance(ends[0][0], ends[1][0])
         if (
             min(reaches) > _SAME
@@ -752,6 +756,17 @@ def _two_fingers_on_an_arm(
         ):
             found.update(name for limb in group for name in limb.joints)
     return found
+
+
+def _mass_place(tree: JointTree, link: str) -> Vector:
+    """Where ``link``'s mass centre is, in the root's frame (its frame's place when its
+    inertial says none)."""
+    place = tree.poses.place(link)
+    found = tree.urdf.link(link)
+    if found is None or found.mass_centre is None:
+        return place
+    offset = tree.poses.turned(link, (0.0, 0.0, 0.0), found.mass_centre)
+    return (place[0] + offset[0], place[1] + offset[1], place[2] + offset[2])
 
 
 def _arm_end(

@@ -1316,3 +1316,30 @@ def test_two_short_unnamed_chains_ending_an_unnamed_arm_are_its_grippers_fingers
         other = identify_urdf(far)
         assert other.body is not None
         assert not any(limb.gripper for limb in other.body.limbs)
+
+
+def test_two_one_joint_jaws_ending_an_unnamed_arm_reach_as_far_as_their_mass_sits() -> None:
+    # A CAD export's jaws, placed apart across the wrist's frame diagonally (not side by side
+    # along one of its axes), one hinge each: no second joint measures them, their mass centres,
+    # 5 cm out, say how far they reach. Drawn as bare frames, they reach nowhere: no fingers.
+    bare = (
+        arm_with_fingers(1)
+        .replace('<origin xyz="0 0.02 0.03"/>', '<origin xyz="0.02 0.02 0.03"/>')
+        .replace('<origin xyz="0 -0.02 0.03"/>', '<origin xyz="-0.02 -0.02 0.03"/>')
+    )
+    jaw = (
+        '<link name="{}"><inertial><origin xyz="0 0 0.05"/><mass value="0.1"/>'
+        '<inertia ixx="1e-5" ixy="0" ixz="0" iyy="1e-5" iyz="0" izz="1e-5"/></inertial></link>'
+    )
+    weighed = bare
+    for link in ("link7", "link8"):
+        weighed = weighed.replace(f'<link name="{link}"/>', jaw.format(link))
+    result = identify_urdf(weighed)
+    assert result.structure == "Manipulator"
+    assert result.body is not None
+    assert [(limb.kind, len(limb.joints), limb.gripper) for limb in result.body.limbs] == [
+        ("arm", 6, True)
+    ]
+    unweighed = identify_urdf(bare)
+    assert unweighed.body is not None
+    assert not any(limb.gripper for limb in unweighed.body.limbs)
