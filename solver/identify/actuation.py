@@ -1072,23 +1072,47 @@ def _gripper_carriers(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     below it (two gripper joints or more on one link). Such a joint moves the gripper, not a
     finger (a slide that reaches out with it, a servo that turns it): it is its arm's. Fingers
     hang from the palm beside each other, a finger's own phalanges carry no jaws, and the
-    first joint of a gripper alone (nothing moves above it) stays the gripper's."""
+    first joint of a gripper alone (nothing moves above it) stays the gripper's, unless it
+    starts a serial chain of such joints as long as an arm (the profile's ``arm_min_joints``,
+    :func:`_serial_carriers`), alone on its link or beside its twin (two such arms on one
+    base): a small arm named for the gripper it ends in."""
     grippers = {name for name, role in roles.items() if role.role == "gripper"}
     jaws_on = _jaw_links(tree, grippers)
     above_jaws = joints_above(tree, (j.name for j in tree.urdf.joints if j.parent in jaws_on))
     coupled = {*tree.couplings.driver_of, *tree.couplings.driver_of.values()}
     known: dict[str, str | None] = {}
-    return [
-        name
+    candidates = [
+        joint
         for name in sorted(grippers, key=tree.order)
         if (joint := tree.urdf.joint(name)) is not None
         and joint.movable
         and name not in coupled
-        and joint.parent not in jaws_on
         and name in above_jaws
-        and _alone_on_its_link(tree, joint)
-        and moved_by(tree.urdf, joint.parent, known) is not None
     ]
+    alone = {
+        joint.name
+        for joint in candidates
+        if joint.parent not in jaws_on and _alone_on_its_link(tree, joint)
+    }
+    arm = tree.profile.limb("arm_min_joints")
+    return [
+        joint.name
+        for joint in candidates
+        if (joint.name in alone and moved_by(tree.urdf, joint.parent, known) is not None)
+        or _serial_carriers(tree, joint, alone) >= arm
+    ]
+
+
+def _serial_carriers(tree: JointTree, joint: Joint, alone: set[str]) -> int:
+    """How many joints follow one another from ``joint`` down (itself counted), each after it
+    one of ``alone`` and the only movable joint on the link the one before moves."""
+    count, current = 1, joint
+    while count <= len(alone):
+        below = [j for j in tree.urdf.children(current.child) if j.movable]
+        if len(below) != 1 or below[0].name not in alone:
+            break
+        count, current = count + 1, below[0]
+    return count
 
 
 def _jaw_links(tree: JointTree, grippers: set[str]) -> set[str]:

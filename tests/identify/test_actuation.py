@@ -1839,6 +1839,45 @@ def test_a_gripper_alone_whose_first_joint_carries_the_jaws_stays_a_gripper_open
     assert {c.motion_control for c in result.motion_controls} == {"Joint"}
 
 
+def named_gripper_arms(wrist_joints: int) -> RobotText:
+    """A wheeled base carrying, on each side, a chain of ``wrist_joints`` hinges named for the
+    gripper they carry, ending in two jaws side by side (a competition robot's small arms, its
+    files calling each arm a gripper)."""
+    robot = RobotText("picker")
+    builders.wheeled_base(robot)
+    for side, y in (("left", 0.2), ("right", -0.2)):
+        link = robot.root
+        for index in range(wrist_joints):
+            link = builders.placed(
+                robot, f"{side}_gripper_df{index}", "revolute", link, f"{side}_gripper_l{index}",
+                xyz=f"0 {y if index == 0 else 0} 0.1", axis="0 1 0" if index else "0 0 1",
+            )  # fmt: skip
+        for jaw, offset in (("a", 0.03), ("b", -0.03)):
+            builders.placed(
+                robot, f"{side}_{jaw}_gripper_hand", "prismatic", link, f"{side}_jaw_{jaw}",
+                xyz=f"0 {offset} 0.05", axis="0 1 0",
+            )  # fmt: skip
+    return robot
+
+
+def test_a_gripper_named_chain_as_long_as_an_arm_is_an_arm_ending_in_a_gripper() -> None:
+    # Three hinges from the base to the jaws: an arm's worth, each side (the first two beside
+    # each other on the base). Two hinges are a gripper's own wrist: it stays the gripper's.
+    roles = roles_of(named_gripper_arms(3))
+    assert "left_gripper_df0" not in roles
+    assert "right_gripper_df0" not in roles
+    result = identify_urdf(named_gripper_arms(3).text())
+    assert result.structure == "Mobile Manipulator"
+    assert result.body is not None
+    assert [(limb.kind, len(limb.joints), limb.gripper) for limb in result.body.limbs] == [
+        ("arm", 3, True),
+        ("arm", 3, True),
+    ]
+    short = roles_of(named_gripper_arms(2))
+    assert short["left_gripper_df0"].role == "gripper"
+    assert identify_urdf(named_gripper_arms(2).text()).structure == "UGV"
+
+
 def spoked_rover(*, ahead: float = 0.0) -> RobotText:
     """Four unnamed wheels, each carrying five unnamed slides spread round its axle (a
     transformable wheel's spokes), starting ``ahead`` along the axle from the wheel's centre."""

@@ -1197,22 +1197,32 @@ def test_a_finger_no_longer_than_an_arms_minimum_or_a_fingers_most_stays_a_finge
     assert result.body.fingers == (tip,)  # one finger, counted by its tip
 
 
-def test_stacked_gripper_joints_with_two_jaws_side_by_side_or_a_follower_stay_a_gripper() -> None:
+def test_stacked_gripper_joints_carrying_two_jaws_are_an_arm_and_with_a_follower_a_gripper() -> (
+    None
+):
+    # A lift, a tilt and a wrist named for the gripper they carry, then two jaws side by side:
+    # three joints that place the jaws, an arm's worth, are the arm (as with every name
+    # removed). Ended by a claw that follows the turn's motion, they stay the gripper's.
     branched = builders.ugv()
     wrist = branched.chain("base_link", ["gripper_lift", "gripper_tilt", "gripper_wrist"])
     branched.chain(wrist, ["gripper_left_jaw"], "prismatic")
     branched.chain(wrist, ["gripper_right_jaw"], "prismatic")
+    placed = identify_urdf(branched.text())
+    assert placed.structure == "Mobile Manipulator"
+    assert placed.body is not None
+    assert [(limb.kind, limb.joints, limb.gripper) for limb in placed.body.limbs] == [
+        ("arm", ("gripper_lift", "gripper_tilt", "gripper_wrist"), True)
+    ]
     following = builders.ugv()
     turn = following.chain("base_link", ["gripper_lift", "gripper_tilt", "gripper_turn"])
     following.joint(
         "gripper_claw", "revolute", turn, "claw",
         '<mimic joint="gripper_turn"/><limit lower="0" upper="1" effort="1" velocity="1"/>',
     )  # fmt: skip
-    for robot in (branched, following):
-        result = identify_urdf(robot.text())
-        assert result.structure == "UGV"
-        assert result.body is not None
-        assert result.body.limbs == ()
+    result = identify_urdf(following.text())
+    assert result.structure == "UGV"
+    assert result.body is not None
+    assert result.body.limbs == ()
 
 
 def test_an_arm_whose_every_part_is_named_a_jaw_carrying_two_jaws_is_an_arm() -> None:
