@@ -253,9 +253,14 @@ class Pattern:
         return self.compiled.search(text) is not None
 
     def find(self, text: str) -> str | None:
-        """The first text this pattern matches in ``text``, or None."""
+        """The first text this pattern matches in ``text`` (its group named ``shown``, when it
+        names one and that took part: a pattern that reads on past the word it reports), or
+        None."""
         found = self.compiled.search(text)
-        return None if found is None else str(found.group(0))
+        if found is None:
+            return None
+        shown = found.group("shown") if "shown" in self.compiled.groupindex else None
+        return str(found.group(0) if shown is None else shown)
 
 
 class PartMatcher:

@@ -302,3 +302,12 @@ def test_a_profile_extending_a_file_that_is_no_profile_quotes_nothing_of_it(tmp_
         f"{tmp_path / 'shadow'}:1:1: not an identification profile: it has no "
         "'characteristics:' field"
     )
+
+
+def test_a_pattern_that_reads_past_the_word_it_reports_shows_its_shown_group() -> None:
+    from solver.identify.profile import Pattern
+
+    pattern = Pattern(r"key_teleop|(?P<shown>joy_teleop)[\s\S]{0,1000}?cmd_vel")
+    assert pattern.find("joy_teleop:\n  topic_name: /cmd_vel\n") == "joy_teleop"
+    assert pattern.find("Node(package='key_teleop')") == "key_teleop"
+    assert pattern.find("joy_teleop:\n  topic_name: /pan/commands\n") is None

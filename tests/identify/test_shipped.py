@@ -610,6 +610,30 @@ def test_only_a_teleop_node_drives_a_pan_tilt_head_and_only_a_head_alone_is_driv
     assert not any("teleop node" in line for line in rover.evidence)
 
 
+def test_a_joy_teleop_aiming_the_heads_joints_drives_no_base_and_one_sending_a_twist_does(
+    tmp_path: Path,
+) -> None:
+    # joy_teleop maps a joystick to any message: to the head's position controller, it aims
+    # the pan/tilt unit (no base); to a Twist on cmd_vel, it drives the base the head is on.
+    aiming = (
+        "joy_teleop:\n  ros__parameters:\n    pantilt:\n      type: topic\n"
+        "      interface_type: std_msgs/msg/Float64MultiArray\n"
+        "      topic_name: /pantilt_controller/commands\n"
+    )
+    aimed = identify(described(tmp_path / "aim", pan_tilt_only(), aiming))
+    assert (aimed.structure, [c.motion_control for c in aimed.motion_controls]) == (
+        "Pan/Tilt Unit",
+        ["Joint"],
+    )
+    driving = aiming.replace("std_msgs/msg/Float64MultiArray", "geometry_msgs/msg/Twist")
+    driven = identify(described(tmp_path / "drive", pan_tilt_only(), driving))
+    assert driven.structure == "Other"
+    assert (
+        "a base driven by its packages' teleop node: package craft_bringup: "
+        "craft_bringup/launch/bringup.launch (joy_teleop)"
+    ) in driven.evidence
+
+
 def read_in_part(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch, robot: RobotText, bringup: str
 ) -> Path:
