@@ -220,6 +220,15 @@ def test_model_plugins_count_as_sensors_but_ground_truth_does_not() -> None:
     assert found == [("imu", None, 1), ("gps", None, 1), ("barometer", None, 1)]
 
 
+def test_a_plugin_is_an_imu_by_the_word_imu_not_by_those_letters_inside_another() -> None:
+    # A go-kart's vehicle simulator plugin holds the letters of "imu" (s-imu-lator).
+    found = kinds(
+        builders.model_plugin("simulator_gazebo_plugin", "libsimulator_gazebo_plugin.so"),
+        builders.model_plugin("imu_plugin", "libgazebo_ros_imu.so"),
+    )
+    assert found == [("imu", None, 1)]
+
+
 def test_a_plugin_feeding_a_counted_element_is_the_same_sensor() -> None:
     found = kinds(
         builders.gazebo_sensor("imu_link", "imu", "imu"),
