@@ -87,6 +87,7 @@ from solver.identify.vehicle import (
     listed_thrusters,
     not_rotors,
     propellers,
+    pushing_rotors,
     surface_hints,
     tracks,
     underwater_hints,
@@ -487,6 +488,7 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
     parts = _Parts(
         roles=joint_roles(tree), placement=placement(tree), fixed_rotors=tuple(fixed_rotors(tree))
     )
+    parts.roles.update(pushing_rotors(tree, parts.roles))
     parts.roles.update(_rollers(tree, parts.roles))
     parts.roles.update(_loop_linkages(tree, parts.roles))
     for name in stacked_grippers(tree, parts.of("gripper")):

@@ -10,7 +10,9 @@ body travels in a few more ways, each read here:
   or in the robot's name when the body is bare (no movable joint, plugin or sensor: an
   aircraft exported as one mesh); rotor-named joints too few to fly, said as such.
 * *Water*: thrusters a thruster plugin lists by a link no joint moves (a hull's list), and
-  thruster-named leaf links fixed to the hull, two or more (propellers left out); hints
+  thruster-named leaf links fixed to the hull, two or more (propellers left out); rotors by
+  their names that all turn about level axes on a body with no wheel or wing, two or more,
+  which push it along and lift nothing (a boat's outboards: :func:`pushing_rotors`); hints
   of a hull at the surface (a surface plugin, ``<metacentric_width>``; a body whose buoyancy
   compensation, buoyancy over weight, has a hull's reserve (1.1 or more): it floats; a GPS or
   a lidar where nothing says the body dives: satellites are heard and laser light carries only
@@ -49,6 +51,7 @@ __all__ = [
     "listed_thrusters",
     "not_rotors",
     "propellers",
+    "pushing_rotors",
     "surface_hints",
     "tracks",
     "underwater_hints",
@@ -274,6 +277,42 @@ def wings(tree: JointTree, roles: dict[str, Role]) -> list[str]:
     if found:
         return found
     return _boards(tree) if _pulled_along(tree, roles) else []
+
+
+def pushing_rotors(tree: JointTree, roles: dict[str, Role]) -> dict[str, Role]:
+    """Rotors by their names, two or more (the profile's ``min_rotors``), every one turning for
+    ever about a level axis written (URDF's default axis, x, says nothing, nor a CAD export's
+    placeholder limits) as the body rests, on a body with no wheel, no wing (:func:`wings`, or
+    any link named so), no flight plugin and no airship's name: they push the body along and
+    lift nothing (a boat's outboard propellers, swivelling on their engines), so they are
+    thrusters. A plane's propellers turn so too, beside its wings and over its landing gear; a
+    multirotor's, about the upright."""
+    rotors = [tree.urdf.joint(name) for name in with_role(roles, "rotor")]
+    if (
+        len(rotors) < tree.profile.limb("min_rotors")
+        or tree.labels("flight")
+        or tree.reader.named_airship
+        or any(
+            j is None
+            or not (j.endless and j.axis_written)
+            or abs(tree.poses.axis(j)[_UP]) > _LEVEL_AXIS
+            for j in rotors
+        )
+        or with_role(roles, "wheel")
+        or any("wing" in tree.parts_of(link.name) for link in tree.urdf.links)
+        or wings(tree, roles)
+    ):
+        return {}
+    why = (
+        "named as a rotor, but turning about a level axis on a body with no wing: it pushes "
+        "the body along, lifting nothing (a boat's propeller)"
+    )
+    return {j.name: Role(j.name, "thruster", why) for j in rotors if j is not None}
+
+
+# The up part of a unit axis at most this far from level (about 11 degrees) is level.
+_UP = 2
+_LEVEL_AXIS = 0.2
 
 
 def _named_wings(tree: JointTree, roles: dict[str, Role]) -> list[str]:

@@ -1165,3 +1165,32 @@ def test_links_named_for_a_thrusters_model_fixed_to_a_hull_are_its_thrusters() -
     result = identify_urdf(rov.text())
     assert result.structure == "Underwater Vehicle"
     assert any("t200_link_t1 (fixed)" in line for line in result.evidence)
+
+
+def outboards(*, spin: str = "1 0 0", wheels: bool = False) -> RobotText:
+    """A hull with two outboard engines at its stern, each swivelling about the upright on its
+    mount and turning a propeller about ``spin`` (a WAM-V's azimuthing outboards)."""
+    robot = RobotText("craft")
+    limit = '<limit lower="-3.14" upper="3.14" effort="10" velocity="10"/>'
+    for side, y in (("left", 1.0), ("right", -1.0)):
+        mount = f'<origin xyz="-2.4 {y} 0.3"/><axis xyz="0 0 1"/>{limit}'
+        engine = robot.joint(
+            f"{side}_engine_joint", "revolute", "base_link", f"{side}_engine", mount
+        )
+        spin_at = f'<origin xyz="-0.3 0 -0.5"/><axis xyz="{spin}"/>'
+        robot.joint(f"{side}_propeller_joint", "continuous", engine, f"{side}_propeller", spin_at)
+    if wheels:
+        builders.wheeled_base(robot)
+    return robot
+
+
+def test_propellers_turning_about_a_level_axis_on_a_wingless_body_push_it_as_a_boats_do() -> None:
+    result = identify_urdf(outboards().text())
+    assert result.structure == "Surface Vessel"
+    assert result.body is not None
+    assert result.body.thrusters == ("left_propeller_joint", "right_propeller_joint")
+    # About the upright they lift (a multirotor's); over wheels they are a plane's on its gear.
+    for robot in (outboards(spin="0 0 1"), outboards(wheels=True)):
+        other = identify_urdf(robot.text())
+        assert other.body is not None
+        assert other.body.thrusters == ()
