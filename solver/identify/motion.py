@@ -8,7 +8,8 @@ Two kinds of evidence, the declared first:
   transmission mean its joints are commanded one by one (a head's pan/tilt points a sensor, a
   rotor or wheel mount moves the vehicle: neither is joint control; but a flown body whose
   packages, read whole, configure its rotors' joint controllers and ship no flight software
-  has its rotors commanded one by one). From the SRDF: a MoveIt
+  has its rotors commanded one by one, and a head or a mount whose packages configure a
+  controller of one of its joints' own has that joint commanded). From the SRDF: a MoveIt
   planning group over an arm means joint-space and end-effector goals; an ``<end_effector>`` not
   on a leg means end-effector goals (:mod:`solver.identify.planning_groups`). An SRDF whose end
   effectors are all feet models a walker's whole body for its balance controller: its arm
@@ -450,7 +451,8 @@ def controls_from_description(
     of its legs or rotors, when they ship no gait or no flight software
     (:func:`solver.identify.shipped.joint_controllers`); ``leg_joint_controllers``: the file
     that configures a controller of a leg joint's own
-    (:func:`solver.identify.shipped.per_joint_controllers`)."""
+    (:func:`solver.identify.shipped.per_joint_controllers`); ``mount_joint_controllers`` and
+    ``head_joint_controllers``: the same for a flown or swimming body's mount and for a head."""
     effectors = () if srdf is None else hand_effectors(body, srdf, urdf)  # once per SRDF
     shown = [
         *_ground(body, urdf_source),
