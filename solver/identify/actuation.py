@@ -1074,8 +1074,9 @@ def _gripper_carriers(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     hang from the palm beside each other, a finger's own phalanges carry no jaws, and the
     first joint of a gripper alone (nothing moves above it) stays the gripper's, unless it
     starts a serial chain of such joints as long as an arm (the profile's ``arm_min_joints``,
-    :func:`_serial_carriers`), alone on its link or beside its twin (two such arms on one
-    base): a small arm named for the gripper it ends in."""
+    :func:`_serial_carriers`) on a body where something else moves beside it (its twin, the
+    base's wheels): a small arm named for the gripper it ends in. A gripper alone, its drive
+    train or its own wrist however long, stays one."""
     grippers = {name for name, role in roles.items() if role.role == "gripper"}
     jaws_on = _jaw_links(tree, grippers)
     above_jaws = joints_above(tree, (j.name for j in tree.urdf.joints if j.parent in jaws_on))
@@ -1099,7 +1100,7 @@ def _gripper_carriers(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
         joint.name
         for joint in candidates
         if (joint.name in alone and moved_by(tree.urdf, joint.parent, known) is not None)
-        or _serial_carriers(tree, joint, alone) >= arm
+        or (not _alone_on_its_link(tree, joint) and _serial_carriers(tree, joint, alone) >= arm)
     ]
 
 

@@ -280,34 +280,58 @@ def wings(tree: JointTree, roles: dict[str, Role]) -> list[str]:
 
 
 def pushing_rotors(tree: JointTree, roles: dict[str, Role]) -> dict[str, Role]:
-    """Rotors by their names, two or more (the profile's ``min_rotors``), every one turning for
-    ever about a level axis written (URDF's default axis, x, says nothing, nor a CAD export's
-    placeholder limits) as the body rests, on a body with no wheel, no wing (:func:`wings`, or
-    any link named so), no flight plugin and no airship's name: they push the body along and
-    lift nothing (a boat's outboard propellers, swivelling on their engines), so they are
-    thrusters. A plane's propellers turn so too, beside its wings and over its landing gear; a
-    multirotor's, about the upright."""
+    """Rotors by their names, two or more (the profile's ``min_rotors``), each turning for ever
+    about a level axis written (URDF's default axis, x, says nothing, nor a CAD export's
+    placeholder limits) as the body rests, each on an engine that swivels about the upright on
+    the hull and carries nothing else that moves (:func:`_on_an_outboard`), on a body with no
+    wheel (turning, or fixed: a trimmed model's gear, :func:`fixed_wheels`), no wing (:func:`wings`,
+    or any link named so), no flight plugin and neither an aircraft's nor an airship's name:
+    a boat's outboards, which push it along and lift nothing, so they are thrusters. A
+    multirotor's rotors sit on its frame (an export drawn with y up turns them level), a
+    plane's on fixed nacelles beside its wings, an arm's or a leg's motor rotors on links that
+    carry the next joint."""
     rotors = [tree.urdf.joint(name) for name in with_role(roles, "rotor")]
+    flight = tree.profile.plugin_pattern("flight")
     if (
         len(rotors) < tree.profile.limb("min_rotors")
         or tree.labels("flight")
         or tree.reader.named_airship
+        or (flight is not None and flight.search(tree.urdf.name))
         or any(
             j is None
             or not (j.endless and j.axis_written)
             or abs(tree.poses.axis(j)[_UP]) > _LEVEL_AXIS
+            or not _on_an_outboard(tree, j)
             for j in rotors
         )
         or with_role(roles, "wheel")
+        or fixed_wheels(tree, roles)
         or any("wing" in tree.parts_of(link.name) for link in tree.urdf.links)
         or wings(tree, roles)
     ):
         return {}
     why = (
-        "named as a rotor, but turning about a level axis on a body with no wing: it pushes "
-        "the body along, lifting nothing (a boat's propeller)"
+        "named as a rotor, but turning about a level axis on an engine that swivels about the "
+        "upright, on a body with no wheel or wing: it pushes the body along, lifting nothing "
+        "(a boat's outboard)"
     )
     return {j.name: Role(j.name, "thruster", why) for j in rotors if j is not None}
+
+
+def _on_an_outboard(tree: JointTree, rotor: Joint) -> bool:
+    """``rotor`` turns on an engine: the nearest movable joint above it swivels about the
+    upright, hangs from the hull (no movable joint above it) and moves nothing but ``rotor``."""
+    known: dict[str, str | None] = {}
+    name = moved_by(tree.urdf, rotor.parent, known)
+    engine = None if name is None else tree.urdf.joint(name)
+    if engine is None or engine.type not in _ROTATING:
+        return False
+    if abs(tree.poses.axis(engine)[_UP]) < 1 - _LEVEL_AXIS:
+        return False
+    if moved_by(tree.urdf, engine.parent, known) is not None:
+        return False
+    moving = [j for j in tree.urdf.subtree_joints(engine.child) if j.movable]
+    return [j.name for j in moving] == [rotor.name]
 
 
 # The up part of a unit axis at most this far from level (about 11 degrees) is level.

@@ -1878,6 +1878,23 @@ def test_a_gripper_named_chain_as_long_as_an_arm_is_an_arm_ending_in_a_gripper()
     assert identify_urdf(named_gripper_arms(2).text()).structure == "UGV"
 
 
+def test_a_gripper_alone_with_a_drive_train_as_long_as_an_arm_stays_a_gripper() -> None:
+    # A motor, a crank and a slider named for the gripper, then two jaws: nothing else moves
+    # on the body, so the chain is the gripper's own drive, no arm.
+    robot = RobotText("gripper", root="base")
+    link = "base"
+    for part in ("motor", "crank", "slider"):
+        link = builders.placed(robot, f"gripper_{part}", "revolute", link, f"{part}_link")
+    for side, y in (("left", 0.03), ("right", -0.03)):
+        builders.placed(
+            robot, f"gripper_{side}", "prismatic", link, f"jaw_{side}", xyz=f"0 {y} 0.05",
+            axis="0 1 0",
+        )  # fmt: skip
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert not any(limb.kind == "arm" for limb in result.body.limbs)
+
+
 def spoked_rover(*, ahead: float = 0.0) -> RobotText:
     """Four unnamed wheels, each carrying five unnamed slides spread round its axle (a
     transformable wheel's spokes), starting ``ahead`` along the axle from the wheel's centre."""

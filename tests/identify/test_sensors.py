@@ -227,6 +227,9 @@ def test_a_plugin_is_an_imu_by_the_word_imu_not_by_those_letters_inside_another(
         builders.model_plugin("imu_plugin", "libgazebo_ros_imu.so"),
     )
     assert found == [("imu", None, 1)]
+    # A CamelCase plugin name says IMU as a word.
+    camel = kinds(builders.model_plugin("body_imu", "libMyRobotIMU.so"))
+    assert camel == [("imu", None, 1)]
 
 
 def test_a_plugin_feeding_a_counted_element_is_the_same_sensor() -> None:
@@ -1054,11 +1057,16 @@ def test_a_rendered_camera_naming_its_point_cloud_is_a_depth_camera_and_a_scan_a
     lidar = rendered_camera("mast", "laserscan").replace(
         "</sensor>", '<param name="angle_increment">0.01</param></sensor>'
     )
+    # One angle alone is any sensor's setting (an encoder's range): no lidar by it.
+    angle = rendered_camera("dial").replace(
+        "</sensor>", '<param name="min_angle">-1.0</param></sensor>'
+    )
     found = kinds(
         rendered_camera("left", "pointcloud"),
         rendered_camera("right", "pointcloud"),
         rendered_camera("front", "depth"),
         lidar,
+        angle,
     )
     assert sorted(found) == [("depth_camera", "RGB-D Camera", 3), ("lidar", "LIDAR", 1)]
 

@@ -632,6 +632,16 @@ def test_a_joy_teleop_aiming_the_heads_joints_drives_no_base_and_one_sending_a_t
         "a base driven by its packages' teleop node: package craft_bringup: "
         "craft_bringup/launch/bringup.launch (joy_teleop)"
     ) in driven.evidence
+    # ROS 1's way: the launch file starts joy_teleop, a configuration of its own maps a
+    # button to a Twist on cmd_vel (its root named `teleop`).
+    split = described(tmp_path / "split", pan_tilt_only(), "<node pkg='joy_teleop'/>")
+    config = tmp_path / "split" / "ws" / "src" / "craft_bringup" / "config" / "teleop.yaml"
+    config.parent.mkdir(parents=True)
+    config.write_text(
+        "teleop:\n  walk:\n    type: topic\n    message_type: geometry_msgs/Twist\n"
+        "    topic_name: cmd_vel\n"
+    )
+    assert identify(split).structure == "Other"
 
 
 def read_in_part(

@@ -1189,8 +1189,24 @@ def test_propellers_turning_about_a_level_axis_on_a_wingless_body_push_it_as_a_b
     assert result.structure == "Surface Vessel"
     assert result.body is not None
     assert result.body.thrusters == ("left_propeller_joint", "right_propeller_joint")
-    # About the upright they lift (a multirotor's); over wheels they are a plane's on its gear.
-    for robot in (outboards(spin="0 0 1"), outboards(wheels=True)):
+    # About the upright they lift (a multirotor's); over wheels they are a plane's on its gear;
+    # on an aircraft's name, an aircraft's.
+    named = outboards()
+    named.name = "twin_engine_aircraft"
+    for robot in (outboards(spin="0 0 1"), outboards(wheels=True), named):
         other = identify_urdf(robot.text())
         assert other.body is not None
         assert other.body.thrusters == ()
+
+
+def test_level_rotors_on_the_frame_itself_are_no_outboards() -> None:
+    # A quadrotor exported with y up: its rotors turn about a level axis, on the frame, on no
+    # swivelling engine. They stay rotors.
+    robot = RobotText("quad_export")
+    for index, (x, z) in enumerate(((0.2, 0.2), (0.2, -0.2), (-0.2, 0.2), (-0.2, -0.2))):
+        place = f'<origin xyz="{x} 0.05 {z}"/><axis xyz="0 1 0"/>'
+        robot.joint(f"rotor_{index}_joint", "continuous", "base_link", f"rotor_{index}", place)
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert result.body.thrusters == ()
+    assert len(result.body.rotors) == 4

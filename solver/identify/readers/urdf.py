@@ -896,8 +896,9 @@ def _hardware_sensors(root: etree._Element) -> list[SensorTag]:
     ``<sensor>`` whose readings say none of these (``x``, ``y``, ``z``; ``value``) is of type
     ``unknown``, told by its name as a URDF ``<sensor>`` with no type is (but never as a camera
     or a lidar by its name alone); one whose parameters name an image topic is a camera a
-    simulator renders (mujoco_ros2_control's), a depth camera when they name a depth topic
-    too. A pose
+    simulator renders (mujoco_ros2_control's), a depth camera when they name a depth image's or
+    a point cloud's topic, and a lidar when they name a scan's topic or settings
+    (:func:`_rendered_kind`). A pose
     (``tcp_pose``) is computed, not read, and a block named as an estimate
     (``external_wrench_in_base``) is the controller's reckoning from the joints' torques, not a
     device of its own. A block of ``type="sensor"`` that writes its readings on joints instead
@@ -940,7 +941,8 @@ def _device(element: etree._Element, states: list[etree._Element]) -> SensorTag 
 def _rendered_kind(element: etree._Element) -> str | None:
     """A device a simulator's hardware interface renders, by the outputs and settings its
     parameters name (mujoco_ros2_control's ``<sensor>``, which reads no state interface): a
-    lidar by its scan settings (``laserscan_topic``, ``angle_increment``, ``min_angle``); a
+    lidar by its scan's topic (``laserscan_topic``) or two of its settings (``angle_increment``,
+    ``min_angle``, ``max_angle``, ``range_min``, ``range_max``); a
     camera by its image topic, ``depth`` when it names a depth image's or a point cloud's topic
     too or alone (a fork renders the depth as a cloud: ``pointcloud_topic``); None when it names
     none of them."""
@@ -949,7 +951,7 @@ def _rendered_kind(element: etree._Element) -> str | None:
         for param in element.findall("param")
         if (param.text or "").strip()
     }
-    if named & _SCAN_PARAMS:
+    if "laserscan_topic" in named or len(named & _SCAN_PARAMS) >= _SCAN_SETTINGS:
         return "lidar"
     if named & _DEPTH_PARAMS:
         return "depth"
@@ -958,7 +960,9 @@ def _rendered_kind(element: etree._Element) -> str | None:
 
 # What a simulator's hardware interface names for a lidar it renders (mujoco_ros2_control's
 # rangefinder lidar) and for a camera's depth (an image, or a cloud).
-_SCAN_PARAMS = frozenset({"laserscan_topic", "angle_increment", "min_angle"})
+_SCAN_PARAMS = frozenset({"angle_increment", "min_angle", "max_angle", "range_min", "range_max"})
+# A lidar names its scan's topic, or two of its settings (one angle may be any sensor's).
+_SCAN_SETTINGS = 2
 _DEPTH_PARAMS = frozenset({"depth_topic", "pointcloud_topic"})
 
 

@@ -456,7 +456,10 @@ class DdsGraph:
             self.participant, answer, qos=_latched(), listener=self.params_listener
         )
         watchers = Topic(self.participant, dds_topic(WATCHERS_TOPIC), self.string_type)
-        self._announce_writer = DataWriter(self.participant, watchers, qos=_latched())
+        # Made on the first announcement: a graph that only looks (a snapshot, an operator's
+        # station) writes none, so a switch does not wait for a sample that never comes.
+        self._watchers_topic = watchers
+        self._announce_writer: Any = None
         self._announce_reader = DataReader(
             self.participant,
             watchers,
@@ -581,6 +584,12 @@ class DdsGraph:
         """Publish who this watcher is on ``/teleop_ui/watchers`` (gone with the participant)."""
         text = json.dumps(value, sort_keys=True)
         if text != self._announcement:
+            if self._announce_writer is None:
+                from cyclonedds.pub import DataWriter
+
+                self._announce_writer = DataWriter(
+                    self.participant, self._watchers_topic, qos=_latched()
+                )
             write(self._announce_writer, self.string_type(text))
             self._announcement = text
 
