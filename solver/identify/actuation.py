@@ -745,13 +745,12 @@ def _balance(tree: JointTree, joint: Joint) -> bool | None:
         link = tree.urdf.link(name)
         if link is None or link.mass is None:
             continue
-        if link.mass_centre is None:
+        place = tree.poses.mass_centre(name)
+        if place is None:
             return None
-        offset = tree.poses.turned(name, (0.0, 0.0, 0.0), link.mass_centre)
-        place = tree.poses.place(name)
         total += link.mass
         for k in range(3):
-            moment[k] += link.mass * (place[k] + offset[k])
+            moment[k] += link.mass * place[k]
     if total <= 0 or not math.isfinite(total):
         return None
     centre = (moment[0] / total, moment[1] / total, moment[2] / total)
@@ -1090,17 +1089,18 @@ def _gripper_carriers(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
         and name not in coupled
         and name in above_jaws
     ]
+    on_own_link = {joint.name for joint in candidates if _alone_on_its_link(tree, joint)}
     alone = {
         joint.name
         for joint in candidates
-        if joint.parent not in jaws_on and _alone_on_its_link(tree, joint)
+        if joint.name in on_own_link and joint.parent not in jaws_on
     }
     arm = tree.profile.limb("arm_min_joints")
     return [
         joint.name
         for joint in candidates
         if (joint.name in alone and moved_by(tree.urdf, joint.parent, known) is not None)
-        or (not _alone_on_its_link(tree, joint) and _serial_carriers(tree, joint, alone) >= arm)
+        or (joint.name not in on_own_link and _serial_carriers(tree, joint, alone) >= arm)
     ]
 
 

@@ -32,7 +32,7 @@ from itertools import combinations, islice, pairwise
 from solver.identify.couplings import Walk, jaw_groups
 from solver.identify.limbs import Limb, chain_ends, joint_span, joint_words, moved_by, tips_meet
 from solver.identify.placement import MACHINE_TRAVEL, placement
-from solver.identify.pose import Vector, distance, local_axis, parallel, perpendicular
+from solver.identify.pose import distance, local_axis, parallel, perpendicular
 from solver.identify.readers.urdf import Joint
 from solver.identify.tree import JointTree
 
@@ -745,7 +745,7 @@ def _two_fingers_on_an_arm(
         if ends is None or not _arm_end(tree, palm, known, carrying):
             continue
         reaches = [
-            max(distance(start, end), distance(start, _mass_place(tree, limb.tip)))
+            max(distance(start, end), distance(start, tree.poses.mass_centre(limb.tip) or end))
             for (start, end), limb in zip(ends, group, strict=True)
         ]
         apart = distance(ends[0][0], ends[1][0])
@@ -756,17 +756,6 @@ def _two_fingers_on_an_arm(
         ):
             found.update(name for limb in group for name in limb.joints)
     return found
-
-
-def _mass_place(tree: JointTree, link: str) -> Vector:
-    """Where ``link``'s mass centre is, in the root's frame (its frame's place when its
-    inertial says none)."""
-    place = tree.poses.place(link)
-    found = tree.urdf.link(link)
-    if found is None or found.mass_centre is None:
-        return place
-    offset = tree.poses.turned(link, (0.0, 0.0, 0.0), found.mass_centre)
-    return (place[0] + offset[0], place[1] + offset[1], place[2] + offset[2])
 
 
 def _arm_end(

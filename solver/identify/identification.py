@@ -205,7 +205,7 @@ def identify_urdf(
         if packages is None or body.carried_rig
         else controls_from_workspace(packages, profile, reading.structure)
     )
-    legs = _legs(body)
+    legs = _limb_joints(body, "leg")
     controls = [
         controls_from_description(
             body,
@@ -220,7 +220,9 @@ def identify_urdf(
             leg_joint_controllers=_own_controllers(packages, profile.gait, legs),
             rotor_controllers=_joint_controllers(packages, profile.flight, body.rotors),
             mount_joint_controllers=_own_controllers(packages, profile.gait, _vehicle_mounts(body)),
-            head_joint_controllers=_own_controllers(packages, profile.gait, _heads(body)),
+            head_joint_controllers=_own_controllers(
+                packages, profile.gait, _limb_joints(body, "head")
+            ),
         ),
         shipped,
     ]
@@ -286,22 +288,16 @@ def _own_controllers(
     return None if packages is None else per_joint_controllers(packages, rule, joints)
 
 
-def _legs(body: Body) -> list[str]:
-    """The joints of the body's legs."""
-    return [j for limb in body.limbs if limb.kind == "leg" for j in limb.joints]
-
-
-def _heads(body: Body) -> list[str]:
-    """The joints of the body's heads (pan/tilt units pointing a sensor)."""
-    return [j for limb in body.limbs if limb.kind == "head" for j in limb.joints]
+def _limb_joints(body: Body, kind: str) -> list[str]:
+    """The joints of the body's limbs of ``kind`` (legs; heads, pan/tilt units pointing a
+    sensor)."""
+    return [j for limb in body.limbs if limb.kind == kind for j in limb.joints]
 
 
 def _vehicle_mounts(body: Body) -> list[str]:
     """The joints of the mounts that carry a flown or swimming body's rotors or thrusters (a
     tilting rotor's arm); none on the ground, where a mount carries a wheel."""
-    if not (body.flying or body.marine):
-        return []
-    return [j for limb in body.limbs if limb.kind == "mount" for j in limb.joints]
+    return _limb_joints(body, "mount") if body.flying or body.marine else []
 
 
 def _named(packages: Workspace | None, body: Body) -> frozenset[str] | None:

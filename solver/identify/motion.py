@@ -178,33 +178,14 @@ def _flight(body: Body, urdf_source: str, rotor_controllers: str | None = None) 
     return [("flight", f"{urdf_source}: {what}")]
 
 
-def _mounts(mount_joint_controllers: str | None) -> _Shown:
-    """A vehicle's mount (a tilting rotor's arm) with a controller of a joint's own in its
-    packages (``mount_joint_controllers``, the file that shows it): that joint takes commands
-    by itself, beside the flight or the thrust."""
-    if mount_joint_controllers is None:
+def _own_controller(source: str, shown_file: str | None, where: str) -> _Shown:
+    """A part ``where`` names (a vehicle's mount, a pan/tilt head) with a controller of a
+    joint's own in its packages (``shown_file``, the file that shows it): that joint takes
+    commands by itself (beside the flight or the thrust; wherever the head is: a transmission
+    alone says nothing of who commands it)."""
+    if shown_file is None:
         return []
-    mount = "a rotor's or thruster's mount"
-    return [
-        (
-            "mount_joint_controllers",
-            f"{mount_joint_controllers}: a controller of a joint's own on {mount}",
-        )
-    ]
-
-
-def _heads(head_joint_controllers: str | None) -> _Shown:
-    """A head (a pan/tilt unit pointing a sensor) with a controller of a joint's own in its
-    packages (``head_joint_controllers``, the file that shows it): that joint takes commands
-    by itself, wherever the head is (a transmission alone says nothing of who commands it)."""
-    if head_joint_controllers is None:
-        return []
-    return [
-        (
-            "head_joint_controllers",
-            f"{head_joint_controllers}: a controller of a joint's own on a pan/tilt head",
-        )
-    ]
+    return [(source, f"{shown_file}: a controller of a joint's own on {where}")]
 
 
 def _motions(joints: tuple[str, ...], urdf: Urdf | None) -> int:
@@ -458,8 +439,10 @@ def controls_from_description(
         *_ground(body, urdf_source),
         *_water(body, urdf_source),
         *_flight(body, urdf_source, rotor_controllers),
-        *_mounts(mount_joint_controllers),
-        *_heads(head_joint_controllers),
+        *_own_controller(
+            "mount_joint_controllers", mount_joint_controllers, "a rotor's or thruster's mount"
+        ),
+        *_own_controller("head_joint_controllers", head_joint_controllers, "a pan/tilt head"),
         *_limbs(
             body,
             urdf_source,

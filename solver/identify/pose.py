@@ -175,6 +175,16 @@ class Poses:
         turn = self._frames.get(link, (_IDENTITY, (0.0, 0.0, 0.0)))[0]
         return _turn(_compose(turn, _rotation(rpy)), vector)
 
+    def mass_centre(self, link: str) -> Vector | None:
+        """Where ``link``'s mass centre is (its first ``<inertial>``'s origin), in the root's
+        frame; None when its inertial says no place."""
+        found = self.urdf.link(link)
+        if found is None or found.mass_centre is None:
+            return None
+        offset = self.turned(link, (0.0, 0.0, 0.0), found.mass_centre)
+        place = self.place(link)
+        return (place[0] + offset[0], place[1] + offset[1], place[2] + offset[2])
+
     def facing(self, link: str) -> Vector:
         """Where ``link``'s x axis points, in the root's frame (a camera's view, when its
         sensor is not turned on the link)."""
