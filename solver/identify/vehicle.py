@@ -33,6 +33,7 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Collection, Sequence
+from itertools import islice
 
 from solver.identify.actuation import MOTOR, mirrored_across, with_role
 from solver.identify.limbs import Limb, moved_by
@@ -330,7 +331,8 @@ def _on_an_outboard(tree: JointTree, rotor: Joint) -> bool:
         return False
     if moved_by(tree.urdf, engine.parent, known) is not None:
         return False
-    moving = [j for j in tree.urdf.subtree_joints(engine.child) if j.movable]
+    # Two movable joints at most are looked for (a big subtree below is walked no further).
+    moving = list(islice((j for j in tree.urdf.subtree_joints(engine.child) if j.movable), 2))
     return [j.name for j in moving] == [rotor.name]
 
 
