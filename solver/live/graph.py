@@ -77,7 +77,9 @@ class Observation:
     ``publishers`` / ``subscribers``: (topic, node names) pairs (ROS 1's getSystemState);
     ``topic_types``: (topic, message type) pairs (a ROS 1 master never forgets a type, so it
     lists topics nobody uses any more); ``params``: the parameter subtree the caller asked for,
-    as (key, value) pairs, empty when it is not set.
+    as (key, value) pairs, empty when it is not set; ``discovering``: a participant is found
+    whose readers and writers are not yet (DDS discovers a participant before its endpoints,
+    long before on a busy machine; a ROS master answers at once, so never there).
     """
 
     pid: int
@@ -86,6 +88,7 @@ class Observation:
     topic_types: tuple[tuple[str, str], ...]
     param_names: tuple[str, ...]
     params: tuple[tuple[str, Any], ...] = ()
+    discovering: bool = False
 
 
 class DescriptionStore(Protocol):

@@ -18,7 +18,8 @@ feed), or announced by the graph's running watchers (``/teleop_ui/watchers``,
 Where the graph does not tell, only the names' syntax is checked, and :attr:`Switched.rules`
 says why. The robot must be on the graph (a namespace with a ``robot_description``); a DDS
 graph's participants are discovered one by one, so it is looked for until discovery is quiet
-(:data:`LOOK_QUIET`, at most :data:`LOOK_LIMIT` seconds), as a one-shot look at DDS waits; a
+(:data:`LOOK_QUIET`, and no participant found whose endpoints are not; at most
+:data:`LOOK_LIMIT` seconds), as a one-shot look at DDS waits; a
 rule set a watcher announced there is looked for until that watcher is seen running (at most
 :data:`LOOK_LIMIT`).
 
@@ -80,8 +81,9 @@ __all__ = [
 DEFAULT_WAIT: Final = 5.0
 # Looking for the robot and the watchers' announcements on a graph whose participants are
 # discovered one by one: until nothing new (no robot, announcement, endpoint or parameter name)
-# for LOOK_QUIET seconds, at most LOOK_LIMIT (and, on DDS, a watcher that announced a rule set
-# is waited for until LOOK_LIMIT, not LOOK_QUIET).
+# for LOOK_QUIET seconds, at most LOOK_LIMIT (and, on DDS, a participant found before its
+# endpoints, or a watcher that announced a rule set, is waited for until LOOK_LIMIT, not
+# LOOK_QUIET).
 LOOK_QUIET: Final = 0.5
 LOOK_LIMIT: Final = 5.0
 # Seconds between looks at the answer when the source wakes no one (a ROS 1 master).
@@ -254,10 +256,10 @@ class Station:
         once the graph has been quiet for :data:`LOOK_QUIET` seconds (at most
         :data:`LOOK_LIMIT`). On a DDS graph a rule set announced by a watcher not yet seen
         running is waited for until :data:`LOOK_LIMIT`, and so is an announcement whose writer
-        is found before its sample: on a busy machine either may come long after the rest of
-        the graph, and a switch that stopped looking would check its values for syntax only
-        and write a misspelt one (a ROS master tells at once: a stale announcement there costs
-        no wait)."""
+        is found before its sample, and a participant found before its readers and writers: on
+        a busy machine each may come long after the rest of the graph, and a switch that
+        stopped looking would check its values for syntax only and write a misspelt one (a ROS
+        master tells at once: a stale announcement there costs no wait)."""
         start = quiet_since = time.monotonic()
         seen: Any = None
         while True:
@@ -282,13 +284,14 @@ class Station:
                 observation.publishers,
                 observation.subscribers,
                 observation.param_names,
+                observation.discovering,
             )
-            # On DDS an announcement is awaited once its writer is found (its sample comes
-            # after the match), and its watcher once the announcement is read.
-            awaited = (
-                self._discovers
-                and robot in robots
-                and (bool(announced) or _announcing(observation.param_names))
+            # On DDS a participant found is awaited until its endpoints are (the robot, or a
+            # watcher, may be that one), an announcement once its writer is found (its sample
+            # comes after the match), and its watcher once the announcement is read.
+            awaited = self._discovers and (
+                observation.discovering
+                or (robot in robots and (bool(announced) or _announcing(observation.param_names)))
             )
             if state != seen:
                 seen, quiet_since = state, now

@@ -450,6 +450,31 @@ def test_an_announcement_whose_writer_is_found_before_its_sample_is_waited_for(
     assert len(observed) > 5  # looked for while the writer was there
 
 
+def test_a_participant_found_before_its_endpoints_is_waited_for_even_for_a_robot_not_seen(
+    node: TestNode, ros1_station: Station, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # DDS finds a participant, then its readers and writers: that one may be the robot asked
+    # for, or the watcher whose announcement tells the rule set. Without the wait a busy
+    # machine's switch checked its values for syntax only (tests/cli/test_switch.py, in CI).
+    put_drone(node, "/uav1")
+
+    def participant_found(observation: Any, count: int) -> Any:
+        # A participant without its endpoints in the first five looks, complete from the sixth.
+        return dataclasses.replace(observation, discovering=count <= 5)
+
+    observed = counted_looks(ros1_station, monkeypatch, participant_found)
+    from solver.live import operator
+
+    monkeypatch.setattr(operator, "LOOK_LIMIT", 60.0)
+    ros1_station.look("/uav9", announcements=True)
+    assert len(observed) < 5  # a master tells at once: the quiet ends the look
+    monkeypatch.setattr(ros1_station, "_discovers", True)  # as a DDS graph's station
+    for robot in ("/uav9", "/uav1"):
+        observed.clear()
+        ros1_station.look(robot, announcements=True)
+        assert len(observed) > 5, robot  # looked for while the participant was incomplete
+
+
 def test_a_switch_on_a_master_is_answered_and_the_parameters_hold_it(
     master: Roscore,
     node: TestNode,

@@ -402,6 +402,7 @@ class DdsGraph:
         _require_cyclonedds()
         from cyclonedds.builtin import (
             BuiltinDataReader,
+            BuiltinTopicDcpsParticipant,
             BuiltinTopicDcpsPublication,
             BuiltinTopicDcpsSubscription,
         )
@@ -436,6 +437,11 @@ class DdsGraph:
         self._subscriptions = BuiltinDataReader(
             self.participant, BuiltinTopicDcpsSubscription, listener=self.listener
         )
+        # Participants are found before their endpoints: one found with none yet is still
+        # being discovered (Observation.discovering).
+        self._participant_reader = BuiltinDataReader(
+            self.participant, BuiltinTopicDcpsParticipant, listener=self.listener
+        )
         self._discovery = [
             DataReader(
                 self.participant,
@@ -469,6 +475,7 @@ class DdsGraph:
         self._descriptions = _DescriptionReaders(self, limit or MAX_XML_BYTES)
         self.descriptions: DescriptionStore = self._descriptions
         self._endpoints: dict[bytes, _Endpoint] = {}
+        self._participants: set[bytes] = set()  # the others found, alive
         self._nodes: dict[bytes, dict[bytes, str]] = {}  # participant -> endpoint -> node
         self._request_values: dict[str, Any] = {}
         self._announced: dict[str, tuple[bytes | None, Any]] = {}  # key -> (participant, value)
@@ -607,7 +614,8 @@ class DdsGraph:
         limit: float = DISCOVERY_LIMIT,
     ) -> None:
         """Wait until discovery is quiet (nothing new for ``quiet`` seconds: no endpoint,
-        node, description or robot value; at most ``limit``, or until ``stopped()``): what a
+        node, description or robot value, and no participant found without its endpoints; at
+        most ``limit``, or until ``stopped()``): what a
         snapshot reports as every robot must give the other participants time to be found."""
         start = last_change = time.monotonic()
         seen: tuple[Any, ...] = ()
@@ -618,12 +626,13 @@ class DdsGraph:
             now = (observation, tuple(self.descriptions.get(key) is MISSING for key in followed))
             if now != seen:
                 seen, last_change = now, time.monotonic()
-            elif time.monotonic() - last_change >= quiet:
+            elif time.monotonic() - last_change >= quiet and not observation.discovering:
                 return
             time.sleep(0.05)
 
     def observe(self, namespace: str) -> Observation:
         """The graph now, as the watcher reads a ROS 1 master (see the module docstring)."""
+        self._read_participants()
         self._read_endpoints()
         self._read_discovery()
         self._descriptions.read()
@@ -641,6 +650,7 @@ class DdsGraph:
             topic_types=tuple(sorted(types.items())),
             param_names=tuple(sorted(written | {f"{namespace}/{k}" for k, _ in params})),
             params=params,
+            discovering=self._discovering(),
         )
 
     def observe_params(self, namespace: str) -> tuple[int, tuple[tuple[str, Any], ...]]:  # noqa: ARG002 - the protocol's
@@ -755,6 +765,24 @@ class DdsGraph:
             for key, (participant, value) in list(self._announced.items())[-MAX_ANNOUNCEMENTS:]
             if participant in alive
         }
+
+    def _read_participants(self) -> None:
+        from cyclonedds.core import InstanceState
+
+        for sample in self._participant_reader.take(N=10_000):
+            key = sample.key.bytes
+            info = getattr(sample, "sample_info", None)
+            if info is None or info.instance_state == InstanceState.Alive:
+                if key != self._own:
+                    self._participants.add(key)
+            else:
+                self._participants.discard(key)
+
+    def _discovering(self) -> bool:
+        """Another participant is found whose endpoints are not yet (every ROS 2 node's
+        participant has some: its ``ros_discovery_info`` writer and reader)."""
+        found = {endpoint.participant for endpoint in self._endpoints.values()}
+        return not self._participants <= found
 
     def _read_endpoints(self) -> None:
         from cyclonedds.core import InstanceState

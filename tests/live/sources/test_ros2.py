@@ -325,6 +325,28 @@ def test_a_participant_that_only_reads_is_no_writer_of_the_answer(
         operator.close()
 
 
+def test_a_participant_found_before_its_readers_and_writers_is_still_being_discovered(
+    domain: Domain,
+) -> None:
+    """A participant is found first, its endpoints after (long after, on a busy machine): a
+    look that stopped in between would miss the robot or the watcher it is."""
+    from cyclonedds.domain import DomainParticipant
+    from cyclonedds.pub import DataWriter
+    from cyclonedds.topic import Topic
+
+    station = DdsGraph(domain.id, answers=False)
+    bare = DomainParticipant(domain.id)
+    try:
+        wait_until(lambda: station.observe("/teleop_ui").discovering, TIMEOUT, "the participant")
+        _writer = DataWriter(bare, Topic(bare, "rt/chatter", station.string_type))  # kept
+        wait_until(
+            lambda: not station.observe("/teleop_ui").discovering, TIMEOUT, "its writer found"
+        )
+    finally:
+        station.close()
+        bare.__del__()  # the writer with it
+
+
 def test_the_active_motion_control_topic_selects_as_the_ros1_parameter_does(
     domain: Domain, watch_ros2: Callable[..., Recorder], solution: Solution
 ) -> None:
