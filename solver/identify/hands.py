@@ -27,12 +27,12 @@ from __future__ import annotations
 import math
 import re
 from collections import Counter
-from itertools import combinations, islice, pairwise
+from itertools import islice, pairwise
 
 from solver.identify.couplings import Walk, jaw_groups
 from solver.identify.limbs import Limb, chain_ends, joint_span, joint_words, moved_by, tips_meet
 from solver.identify.placement import MACHINE_TRAVEL, placement
-from solver.identify.pose import distance, local_axis, parallel, perpendicular
+from solver.identify.pose import distance, local_axis, parallel, perpendicular, within
 from solver.identify.readers.urdf import Joint
 from solver.identify.tree import JointTree
 
@@ -625,7 +625,7 @@ def _within_a_hand(tree: JointTree, group: list[Limb]) -> bool:
         for limb in group
         if (joint := tree.urdf.joint(limb.joints[0])) is not None
     ]
-    return all(distance(a, b) <= _HAND_BREADTH for a, b in combinations(places, 2))
+    return within(places, _HAND_BREADTH)
 
 
 def _finger_like(tree: JointTree, limb: Limb, longest: int) -> str | None:

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import replace
+from itertools import combinations
 
 from solver.identify.readers.urdf import Joint, Urdf
 
@@ -35,6 +36,7 @@ __all__ = [
     "perpendicular",
     "same_way",
     "spread",
+    "within",
 ]
 
 Vector = tuple[float, float, float]
@@ -145,6 +147,30 @@ def spread(values: list[float]) -> float:
 def distance(one: Vector, other: Vector) -> float:
     """How far apart two places are; ``inf`` for places too far out to square (1e200)."""
     return math.dist(one, other)
+
+
+# Distinct places compared two by two at most (half a million pairs): past that, where the box
+# around them settles nothing, they are taken as too many to lie that close (a hostile
+# description's thousands of parts must not cost a square of their number).
+_PAIRWISE_LIMIT = 1000
+
+
+def within(places: list[Vector], reach: float) -> bool:
+    """Whether every two of ``places`` lie within ``reach`` of each other. The box around them
+    settles it at once where it is as small (all within) or one side is longer (not all);
+    otherwise the distinct places are compared two by two (at most :data:`_PAIRWISE_LIMIT`;
+    more are not all within)."""
+    distinct = sorted(set(places))
+    if len(distinct) < 2:
+        return True
+    sides = [max(p[i] for p in distinct) - min(p[i] for p in distinct) for i in range(3)]
+    if any(side > reach for side in sides):
+        return False
+    if math.hypot(*sides) <= reach:
+        return True
+    if len(distinct) > _PAIRWISE_LIMIT:
+        return False
+    return all(distance(a, b) <= reach for a, b in combinations(distinct, 2))
 
 
 class Poses:

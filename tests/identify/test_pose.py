@@ -7,7 +7,7 @@ import math
 import pytest
 
 from solver.identify import identify_urdf
-from solver.identify.pose import Poses, distance, parallel, perpendicular, spread
+from solver.identify.pose import Poses, distance, parallel, perpendicular, spread, within
 from solver.identify.readers.urdf import parse_urdf
 from tests.identify import builders
 from tests.identify.builders import RobotText
@@ -97,3 +97,30 @@ def test_a_chain_hanging_from_an_origin_far_out_is_read_not_a_traceback() -> Non
 def test_the_spread_of_values_is_how_far_apart_the_farthest_two_lie() -> None:
     assert spread([0.5, -0.25, 0.125]) == 0.75
     assert spread([3.0]) == 0.0
+
+
+def test_places_within_reach_of_each_other_are_told_by_their_box_or_two_by_two() -> None:
+    # A hundred parts at one place, or in a box whose diagonal is within reach: all within.
+    assert within([(0.1, 0.2, 0.3)] * 100, 0.3)
+    assert within([(0.0, 0.0, 0.0), (0.1, 0.1, 0.1), (0.2, 0.0, 0.1)], 0.3)
+    # One side of the box longer than the reach: not all within.
+    assert not within([(0.0, 0.0, 0.0), (0.31, 0.0, 0.0), (0.1, 0.0, 0.0)], 0.3)
+    # Where the box settles nothing, each two are compared: the six ends of a ball's three
+    # axes are each within its diameter of the others, but its box's diagonal is not.
+    ends = [
+        (s * 0.14 * (i == 0), s * 0.14 * (i == 1), s * 0.14 * (i == 2))
+        for i in range(3)
+        for s in (1, -1)
+    ]
+    assert math.hypot(0.28, 0.28, 0.28) > 0.3
+    assert within(ends, 0.3)
+    # A corner of the box added: that one is too far from the opposite end.
+    assert not within([*ends, (0.14, 0.14, 0.14)], 0.3)
+    assert within([], 0.3)
+
+
+def test_past_a_thousand_distinct_places_the_box_alone_tells_and_says_no_where_it_cannot() -> None:
+    # Two by two, 1,885 places would be 1.8 million pairs: a hostile description's size.
+    ring = [(0.14 * math.cos(k / 300), 0.14 * math.sin(k / 300), 0.0) for k in range(1885)]
+    assert within(ring[:1000], 0.3)  # a ring within its own diameter, compared two by two
+    assert not within(ring, 0.3)  # too many to compare: not taken as within
