@@ -4,7 +4,8 @@ MoveIt configurations plan more than arms: legs (a quadruped's ``lf_leg``), a to
 whole body, pairs of limbs, a gripper's jaws. :func:`arm_plans` keeps the planning groups that
 move an arm: not only over a gripper's joints, of as many joints as an arm needs (a chain to a
 spinning lidar's motor is none), not mostly on the legs, on a head (a pan/tilt pointing a
-sensor) or on the trunk, over fewer than three limbs, and not extending another such group
+sensor), on the trunk or on what moves the body along (a rover's group of its wheels), over
+fewer than three limbs, and not extending another such group
 (Fetch's ``arm_with_torso``; chains are expanded to their joints through the URDF, so a chain
 group from the torso to a hand extends the hand's arm). :func:`hand_effectors`
 keeps the end effectors that are not feet (a leg's end effector is where it stands);
@@ -31,6 +32,8 @@ __all__ = ["MOST_GROUPS", "arm_plans", "hand_effectors", "leg_plans"]
 # _MOST_STEPS joints in all: a hostile SRDF ends in milliseconds, not minutes.
 MOST_GROUPS = 256
 _MOST_STEPS = 200_000
+# The joint roles that move the body along (solver.identify.roles): no arm is planned on them.
+_LOCOMOTION = frozenset({"wheel", "steering", "caster", "rotor", "thruster", "fin"})
 
 
 def arm_plans(
@@ -40,11 +43,7 @@ def arm_plans(
     :data:`MOST_GROUPS` candidates); groups with the same joints count once."""
     limb_of = {j: index for index, limb in enumerate(body.limbs) for j in limb.joints}
     fingers = {role.joint for role in body.roles if role.role == "finger"}
-    # Joints a group may not lie mostly on: legs, heads (a pan/tilt pointing a sensor), trunk.
-    not_arms = [
-        {j for limb in body.limbs if limb.kind == kind for j in limb.joints}
-        for kind in ("leg", "head")
-    ] + [set(body.trunk)]
+    not_arms = _not_arms(body)
     walker = _Chains(urdf)
     by_joints: dict[frozenset[str], Group] = {}
     for group in srdf.arm_groups(min_joints)[:MOST_GROUPS]:
@@ -62,6 +61,18 @@ def arm_plans(
         for joints, group in by_joints.items()
         if not any(other < joints for other in by_joints)
     )
+
+
+def _not_arms(body: Body) -> list[set[str]]:
+    """The joints a group planning an arm may not lie mostly on: each kind of them. Legs, heads
+    (a pan/tilt pointing a sensor), the trunk, and what moves the body along (a rover's SRDF
+    grouping its wheels plans no arm)."""
+    limbs = [
+        {j for limb in body.limbs if limb.kind == kind for j in limb.joints}
+        for kind in ("leg", "head")
+    ]
+    moving = {role.joint for role in body.roles if role.role in _LOCOMOTION}
+    return [*limbs, set(body.trunk), moving]
 
 
 def leg_plans(

@@ -76,3 +76,16 @@ def test_groups_that_point_a_sensor_or_spin_a_lidar_plan_no_arm() -> None:
     assert "SRDF: 0 arm planning group(s)" in planned.evidence
     assert planned.confidence == plain.confidence
     assert planned.motion_controls == plain.motion_controls
+
+
+def test_a_rovers_group_of_its_wheels_plans_no_arm() -> None:
+    # A rover's MoveIt set-up grouping its four wheels (and its fixed body): the wheels move
+    # the body along, nothing plans their joints' goals.
+    robot = builders.ugv()
+    sides = ("left", "right", "rear_left", "rear_right")
+    wheels = "".join(f'<joint name="wheel_{side}_joint"/>' for side in sides)
+    groups = f'<group name="wheel">{wheels}</group>'
+    plain = identify_urdf(robot.text())
+    planned = identify_urdf(robot.text(), srdf_text=f'<robot name="r">{groups}</robot>')
+    assert "SRDF: 0 arm planning group(s)" in planned.evidence
+    assert planned.motion_controls == plain.motion_controls
