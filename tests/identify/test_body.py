@@ -153,6 +153,17 @@ def test_a_pan_tilt_head_is_alone_only_with_nothing_else_on_its_body() -> None:
         assert not body_of(robot).head_alone, robot.name
 
 
+def test_a_camera_gimbal_on_a_rover_is_its_head_not_an_arm() -> None:
+    # A height slide and two servos named for the gimbal they make, ending at the camera's
+    # frame: no pan or tilt word, but a gimbal aims what it carries, as a head does.
+    rover = builders.ugv()
+    rover.chain(rover.root, ["gimbal_slider_joint", "gimbal_hservo_joint", "gimbal_vservo_joint"])
+    result = identify_urdf(rover.text())
+    assert (result.structure, result.kinematic_type) == ("UGV", "UGV")
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["head"]
+
+
 def test_a_pan_tilt_head_driven_by_its_packages_teleop_node_is_no_unit_alone() -> None:
     driven = replace(body_of(builders.pan_tilt_only()), driven_by="bringup/teleop.launch")
     assert not driven.head_alone
