@@ -683,8 +683,9 @@ def test_a_ray_sensor_left_at_zero_samples_is_read_by_its_type_not_as_one_ray() 
         assert kinds(ray("laser", "head_hokuyo", samples, 3.14, 25.0)) == [("lidar", "LIDAR", 1)]
 
 
-def range_finder(name: str, radiation: str) -> str:
-    """A cone of 10 x 10 rays (a range plugin's beam) whose plugin says what it casts."""
+def range_finder(name: str, radiation: str, *, ros2: bool = False) -> str:
+    """A cone of 10 x 10 rays (a range plugin's beam) whose plugin says what it casts (ROS 1's
+    gazebo_ros_range, or ROS 2's ray sensor plugin putting out a Range)."""
     grid = "<samples>10</samples><min_angle>-0.13</min_angle><max_angle>0.13</max_angle>"
     scan = (
         f"<ray><scan><horizontal>{grid}</horizontal><vertical>{grid}</vertical></scan>"
@@ -694,6 +695,12 @@ def range_finder(name: str, radiation: str) -> str:
         f'<plugin name="{name}_range" filename="libgazebo_ros_range.so">'
         f"<topicName>{name}</topicName><radiation>{radiation}</radiation></plugin>"
     )
+    if ros2:
+        plugin = (
+            f'<plugin name="{name}_controller" filename="libgazebo_ros_ray_sensor.so">'
+            "<output_type>sensor_msgs/Range</output_type>"
+            f"<radiation_type>{radiation}</radiation_type></plugin>"
+        )
     return builders.gazebo_sensor(f"{name}_link", "ray", name, scan + plugin)
 
 
@@ -703,6 +710,13 @@ def test_a_range_plugins_radiation_tells_a_sonar_and_an_infrared_ranger_from_a_l
         range_finder("front_c", "ultrasound"),
         range_finder("front_l", "ultrasound"),
         range_finder("rear", "infrared"),
+    )
+    assert found == [("sonar", None, 2), ("ir_range", None, 1)]
+    # ROS 2's ray sensor plugin says it in <radiation_type>: six sonars were read as lidars.
+    found = kinds(
+        range_finder("front", "ultrasound", ros2=True),
+        range_finder("side_left", "ultrasound", ros2=True),
+        range_finder("rear", "infrared", ros2=True),
     )
     assert found == [("sonar", None, 2), ("ir_range", None, 1)]
 

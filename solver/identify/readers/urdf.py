@@ -273,9 +273,13 @@ class SensorTag:
     @property
     def device_text(self) -> str:
         """What names the device itself: its name, link and plugins, and the wave a range
-        plugin says it casts (``<radiation>ultrasound</radiation>``), not the topics it feeds
-        (a plain camera whose plugin publishes ``depth/...`` topics is still a camera)."""
-        plugins = (f"{p.name} {p.filename} {p.param('radiation') or ''}" for p in self.plugins)
+        plugin says it casts (ROS 1's ``<radiation>ultrasound</radiation>``, ROS 2's
+        ``<radiation_type>``), not the topics it feeds (a plain camera whose plugin publishes
+        ``depth/...`` topics is still a camera)."""
+        plugins = (
+            f"{p.name} {p.filename} {p.param('radiation') or ''} {p.param('radiation_type') or ''}"
+            for p in self.plugins
+        )
         return " ".join([self.name, self.link or "", *plugins])
 
 
