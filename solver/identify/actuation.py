@@ -98,7 +98,11 @@ _DEEPEST_WALK = 64
 # Matched whole, after any namespace (``robot1/rear_left_joint``), with a word for a joint or
 # a link, or for the joint's type (``right_front_rev``), before or after. Its corner words are
 # the leg pattern's (rules/identification.yaml, ``leg``).
-_CORNER = re.compile(CORNER, re.IGNORECASE)
+_JOINT_WORD = r"(?:joint|link|jnt|lnk|j|l|rev|revolute|cont|continuous)"
+_ONLY_A_CORNER = re.compile(
+    rf"(?:[\w.-]+/)*(?:{_JOINT_WORD}[_-]?)?" + CORNER + rf"(?:[_-]?{_JOINT_WORD})?[_\d]*",
+    re.IGNORECASE,
+)
 # Wheel-legged robots roll on two legs' wheels or four (bipeds, quadrupeds).
 _WHEEL_LEGGED = (2, 4)
 # A leg's last joint named for a foot's part turns a foot, whatever its range (an ankle, a toe).
@@ -518,16 +522,11 @@ def _endless(joint: Joint) -> bool:
 def _rollers_only(tree: JointTree, joint: Joint, roles: Mapping[str, Role]) -> bool:
     """Everything that moves below ``joint`` is an endless leaf hanging from the part it turns
     (its child, or a hub fixed to it), three or more of them, none with a role but a wheel's (a
-    finger, a rotor's blade), none turning about the line the part turns about (a flipper's
-    road wheels do, a rim's rollers lie across it): the free rollers on the rim of an omni or
-    mecanum wheel."""
+    finger, a rotor's blade): the free rollers on the rim of an omni or mecanum wheel."""
     rollers = 0
-    axle = tree.poses.axis(joint)
     for below in _carried(tree, joint):
         if not below.endless or below.child in tree.moving_below:
             return False  # a limited joint, or something moves deeper: no rim of rollers
-        if parallel(tree.poses.axis(below), axle):
-            return False  # a wheel carried round a pivot (a flipper's), not a roller
         if below.name in roles and roles[below.name].role != "wheel":
             return False  # a finger on a wrist that rolls, a blade on a propeller's hub
         rollers += 1
@@ -1449,28 +1448,20 @@ def _unbounded(tree: JointTree, joint: Joint) -> bool:
     )
 
 
-def _only_a_corner(tree: JointTree, name: str) -> bool:
-    """``name`` holds a corner of the body and no part's name beside it: the joint's word, the
-    parent's (``base_to_front_left``), a word no part has (``tyer_front_left``) say where the
-    part is, not what it is (``front_left_hip``, ``wheel_front_left`` say both)."""
-    return _CORNER.search(name) is not None and not tree.parts_of(_CORNER.sub("_", name))
-
-
 def _named_for_a_part(
     tree: JointTree, joint: Joint, known: dict[str, str | None], named: dict[str, str | None]
 ) -> bool:
     """``joint`` or its link is named for a part; a leaf named only for a corner of the body
-    (``front_right_j`` on ``front_right``, ``joint_frontLeft``, ``base_to_front_left`` on
-    ``tyer_front_left``: :func:`_only_a_corner`) says where it is, not what it is, and is
-    named for none when it hangs from the body itself or from a part carrying more than it that
-    moves (a wagon's axle), below no joint named for a part (a hip above it makes the corner a
-    leg's). One alone on a swivel (a steering knuckle, a caster) keeps its
+    (``front_right_j`` on ``front_right``, ``joint_frontLeft``) says where it is, not what it
+    is, and is named for none when it hangs from the body itself or from a part carrying more
+    than it that moves (a wagon's axle), below no joint named for a part (a hip above it makes
+    the corner a leg's). One alone on a swivel (a steering knuckle, a caster) keeps its
     corner's word: the steered-wheel rules read it. ``known`` and ``named`` remember the walks
     up the tree (:func:`~solver.identify.limbs.nearest_above`)."""
     words = [name for name in (joint.name, joint.child) if tree.parts_of(name)]
     if not words:
         return False
-    if not all(_only_a_corner(tree, name) for name in words):
+    if not all(_ONLY_A_CORNER.fullmatch(name) for name in words):
         return True
     alone = _alone_on_its_link(tree, joint)
     if alone and moved_by(tree.urdf, joint.parent, known) is not None:

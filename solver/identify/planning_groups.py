@@ -3,11 +3,11 @@
 MoveIt configurations plan more than arms: legs (a quadruped's ``lf_leg``), a torso lift, the
 whole body, pairs of limbs, a gripper's jaws. :func:`arm_plans` keeps the planning groups that
 move an arm: not only over a gripper's joints, of as many joints as an arm needs (a chain to a
-spinning lidar's motor is none), not mostly on the legs, on a head (a pan/tilt pointing a
-sensor), on the trunk or on what moves the body along (a rover's group of its wheels), over
-fewer than three limbs, and not extending another such group
-(Fetch's ``arm_with_torso``; chains are expanded to their joints through the URDF, so a chain
-group from the torso to a hand extends the hand's arm). :func:`hand_effectors`
+spinning lidar's motor is none), its joints that move the body along (wheels, casters,
+steering, rotors, thrusters, fins) aside, not mostly on the legs, on a head (a pan/tilt
+pointing a sensor) or on the trunk, over fewer than three limbs, and not extending another
+such group (Fetch's ``arm_with_torso``; chains are expanded to their joints through the URDF,
+so a chain group from the torso to a hand extends the hand's arm). :func:`hand_effectors`
 keeps the end effectors that are not feet (a leg's end effector is where it stands);
 :func:`leg_plans` the groups each on a leg (a walker's MoveIt configuration plans its legs).
 
@@ -44,10 +44,13 @@ def arm_plans(
     limb_of = {j: index for index, limb in enumerate(body.limbs) for j in limb.joints}
     fingers = {role.joint for role in body.roles if role.role == "finger"}
     not_arms = _not_arms(body)
+    # What moves the body along plans no arm: a group is judged by its other joints (a rover's
+    # group of its wheels has none; a whole body's, wheels and arm, is its arm's).
+    moving = {role.joint for role in body.roles if role.role in _LOCOMOTION}
     walker = _Chains(urdf)
     by_joints: dict[frozenset[str], Group] = {}
     for group in srdf.arm_groups(min_joints)[:MOST_GROUPS]:
-        joints = walker.joints(group)
+        joints = walker.joints(group) - moving
         if (
             not joints <= fingers  # a gripper's group, however it is named
             # a chain of fewer joints than an arm (a spinning lidar's motor) plans none
@@ -65,14 +68,12 @@ def arm_plans(
 
 def _not_arms(body: Body) -> list[set[str]]:
     """The joints a group planning an arm may not lie mostly on: each kind of them. Legs, heads
-    (a pan/tilt pointing a sensor), the trunk, and what moves the body along (a rover's SRDF
-    grouping its wheels plans no arm)."""
+    (a pan/tilt pointing a sensor), the trunk."""
     limbs = [
         {j for limb in body.limbs if limb.kind == kind for j in limb.joints}
         for kind in ("leg", "head")
     ]
-    moving = {role.joint for role in body.roles if role.role in _LOCOMOTION}
-    return [*limbs, set(body.trunk), moving]
+    return [*limbs, set(body.trunk)]
 
 
 def leg_plans(

@@ -159,7 +159,11 @@ def within(places: list[Vector], reach: float) -> bool:
     """Whether every two of ``places`` lie within ``reach`` of each other. The box around them
     settles it at once where it is as small (all within) or one side is longer (not all);
     otherwise the distinct places are compared two by two (at most :data:`_PAIRWISE_LIMIT`;
-    more are not all within)."""
+    more are not all within). A place not finite is within reach of none, itself included."""
+    if len(places) < 2:
+        return True
+    if not all(math.isfinite(c) for place in places for c in place):
+        return False  # a place too far out (or no number) is within reach of no other
     distinct = sorted(set(places))
     if len(distinct) < 2:
         return True

@@ -293,9 +293,12 @@ class Station:
                 observation.discovering
                 or (robot in robots and (bool(announced) or _announcing(observation.param_names)))
             )
-            if state != seen:
+            changed = state != seen
+            if changed:
                 seen, quiet_since = state, now
-            elif now - start >= LOOK_LIMIT or (now - quiet_since >= LOOK_QUIET and not awaited):
+            # The limit holds however often the graph changes (a participant that flaps).
+            quiet = not changed and now - quiet_since >= LOOK_QUIET and not awaited
+            if quiet or now - start >= LOOK_LIMIT:
                 return robots, params
             self._woken.wait(POLL)
 

@@ -75,37 +75,6 @@ def test_unnamed_endless_joints_below_a_body_on_both_sides_are_wheels() -> None:
     assert result.body.wheels == ("fl_joint", "fr_joint", "rl_joint", "rr_joint")
 
 
-def test_leaves_named_for_the_bodys_corners_beside_no_parts_word_are_unnamed_wheels() -> None:
-    # base_to_front_left on tyer_front_left (a tyre misspelt): the corner says where the part
-    # is, the parent's name and a word no part has say nothing of what it is. A corner is a
-    # leg's word, so the wheels were taken for a leg's and the rover read as Other.
-    robot = RobotText("mower")
-    for corner, (x, y) in {"front_left": (1, 1), "front_right": (1, -1)}.items():
-        for end, sign in (("", 1), ("back", -1)):
-            where = corner.replace("front", "back") if end else corner
-            origin = f'<origin xyz="{0.14 * x * sign} {0.13 * y} -0.01"/><axis xyz="0 1 0"/>'
-            robot.joint(f"base_to_{where}", "continuous", "base_link", f"tyer_{where}", origin)
-    result = identify_urdf(robot.text())
-    assert (result.structure, result.kinematic_type) == ("UGV", "UGV")
-    assert result.body is not None
-    assert set(result.body.wheels) == {
-        "base_to_front_left",
-        "base_to_front_right",
-        "base_to_back_left",
-        "base_to_back_right",
-    }
-    # A part's word beside the corner still names the part: four hips are a walker's.
-    walker = RobotText("walker")
-    for corner, (x, y) in {"front_left": (1, 1), "front_right": (1, -1)}.items():
-        for end, sign in (("", 1), ("back", -1)):
-            where = corner.replace("front", "back") if end else corner
-            origin = f'<origin xyz="{0.14 * x * sign} {0.13 * y} -0.01"/><axis xyz="0 1 0"/>'
-            walker.joint(f"{where}_hip", "continuous", "base_link", f"{where}_hip_link", origin)
-    legged = identify_urdf(walker.text())
-    assert legged.body is not None
-    assert legged.body.wheels == ()
-
-
 def test_a_spinner_square_to_the_axle_the_wheels_share_is_no_wheel() -> None:
     # Four wheels about axles across the body, and at its nose a spinner about the line the
     # body rolls along: a propeller, no wheel (it would roll the body sideways).

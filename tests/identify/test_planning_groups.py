@@ -89,3 +89,16 @@ def test_a_rovers_group_of_its_wheels_plans_no_arm() -> None:
     planned = identify_urdf(robot.text(), srdf_text=f'<robot name="r">{groups}</robot>')
     assert "SRDF: 0 arm planning group(s)" in planned.evidence
     assert planned.motion_controls == plain.motion_controls
+
+
+def test_a_whole_body_group_of_wheels_and_an_arm_plans_the_arm() -> None:
+    # The wheels are set aside, not counted against it: what is left is the arm's three joints.
+    robot = builders.ugv()
+    builders.arm(robot, robot.root, joints=3, gripper=False)
+    sides = ("left", "right", "rear_left", "rear_right")
+    joints = [f"wheel_{side}_joint" for side in sides] + ["shoulder_pan", "shoulder_lift", "elbow"]
+    group = "".join(f'<joint name="{name}"/>' for name in joints)
+    srdf = f'<robot name="r"><group name="whole_body">{group}</group></robot>'
+    planned = identify_urdf(robot.text(), srdf_text=srdf)
+    assert "SRDF: 1 arm planning group(s) (whole_body)" in planned.evidence
+    assert "End Effector" in {control.motion_control for control in planned.motion_controls}

@@ -117,6 +117,11 @@ def test_places_within_reach_of_each_other_are_told_by_their_box_or_two_by_two()
     # A corner of the box added: that one is too far from the opposite end.
     assert not within([*ends, (0.14, 0.14, 0.14)], 0.3)
     assert within([], 0.3)
+    # A place too far out to measure (or no number) is within reach of none, even its twin.
+    far = (math.inf, 0.0, 0.0)
+    assert not within([far, far], 0.3)
+    assert not within([(math.nan, 0.0, 0.0), (0.0, 0.0, 0.0)], 0.3)
+    assert within([far], 0.3)
 
 
 def test_past_a_thousand_distinct_places_the_box_alone_tells_and_says_no_where_it_cannot() -> None:

@@ -475,6 +475,28 @@ def test_a_participant_found_before_its_endpoints_is_waited_for_even_for_a_robot
         assert len(observed) > 5, robot  # looked for while the participant was incomplete
 
 
+def test_a_graph_that_changes_at_every_look_ends_the_look_at_its_limit(
+    node: TestNode, ros1_station: Station, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # A participant that comes and goes at every poll never lets the graph be quiet: the limit
+    # ends the look all the same (it was only read on a look that found nothing new).
+    put_drone(node, "/uav1")
+
+    def flapping(observation: Any, count: int) -> Any:
+        if count > 1_000:
+            raise AssertionError("the look never ended")
+        flap = (("/flapping", ("/flapper",)),) if count % 2 else ()
+        return dataclasses.replace(observation, publishers=observation.publishers + flap)
+
+    observed = counted_looks(ros1_station, monkeypatch, flapping)
+    from solver.live import operator
+
+    monkeypatch.setattr(operator, "LOOK_LIMIT", 0.5)
+    robots, _params = ros1_station.look("/uav9", announcements=True)
+    assert "/uav9" not in robots
+    assert len(observed) > 2  # each look found something new
+
+
 def test_a_switch_on_a_master_is_answered_and_the_parameters_hold_it(
     master: Roscore,
     node: TestNode,
