@@ -29,6 +29,7 @@ from solver.live.operator import (
     switch_robot,
     switched_data,
 )
+from solver.live.selection import NAMESPACE
 from solver.live.sources import graph_address, open_source
 from solver.live.sources.ros2 import DdsGraph
 from solver.live.watcher import Watcher
@@ -366,6 +367,9 @@ def counted_looks(
     monkeypatch.setattr(operator, "LOOK_LIMIT", 2.0)
     observed: list[object] = []
     observe = station.source.observe
+    # The shared master settles first (a test before may still be taking its values back):
+    # the looks counted then see only what the test does.
+    wait_until(lambda: observe(NAMESPACE) == observe(NAMESPACE), 60, "a quiet master")
 
     def counted(*args: Any) -> Any:
         observed.append(args)
