@@ -164,7 +164,7 @@ def within(places: list[Vector], reach: float) -> bool:
         return True
     if not all(math.isfinite(c) for place in places for c in place):
         return False  # a place too far out (or no number) is within reach of no other
-    distinct = sorted(set(places))
+    distinct = list(set(places))
     if len(distinct) < 2:
         return True
     sides = [max(p[i] for p in distinct) - min(p[i] for p in distinct) for i in range(3)]

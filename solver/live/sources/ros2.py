@@ -634,7 +634,10 @@ class DdsGraph:
         """The graph now, as the watcher reads a ROS 1 master (see the module docstring)."""
         self._read_participants()
         self._read_endpoints()
-        self._read_discovery()
+        # The participants that have an endpoint, once per look: a participant found without
+        # one is still being discovered, and one with none left takes its node names with it.
+        alive = {endpoint.participant for endpoint in self._endpoints.values()}
+        self._read_discovery(alive)
         self._descriptions.read()
         self._follow_requests()
         self._read_requests()
@@ -650,7 +653,9 @@ class DdsGraph:
             topic_types=tuple(sorted(types.items())),
             param_names=tuple(sorted(written | {f"{namespace}/{k}" for k, _ in params})),
             params=params,
-            discovering=self._discovering(),
+            # Every ROS 2 node's participant has endpoints (its ros_discovery_info writer and
+            # reader): one found with none yet is still being discovered.
+            discovering=not self._participants <= alive,
         )
 
     def observe_params(self, namespace: str) -> tuple[int, tuple[tuple[str, Any], ...]]:  # noqa: ARG002 - the protocol's
@@ -778,12 +783,6 @@ class DdsGraph:
             else:
                 self._participants.discard(key)
 
-    def _discovering(self) -> bool:
-        """Another participant is found whose endpoints are not yet (every ROS 2 node's
-        participant has some: its ``ros_discovery_info`` writer and reader)."""
-        found = {endpoint.participant for endpoint in self._endpoints.values()}
-        return not self._participants <= found
-
     def _read_endpoints(self) -> None:
         from cyclonedds.core import InstanceState
 
@@ -799,7 +798,9 @@ class DdsGraph:
                 else:
                     self._endpoints.pop(key, None)
 
-    def _read_discovery(self) -> None:
+    def _read_discovery(self, alive: set[bytes]) -> None:
+        """The node names each participant announces; ``alive``: the participants with an
+        endpoint (the others' names are dropped)."""
         for reader in self._discovery:
             try:
                 samples = reader.take(N=10_000)
@@ -816,8 +817,6 @@ class DdsGraph:
                     for endpoint in (*info.reader_gid_seq, *info.writer_gid_seq):
                         nodes[bytes(endpoint.data)[:16]] = node
                 self._nodes[bytes(gid.data)[:16]] = nodes
-        # Participants that left take their node names with them.
-        alive = {endpoint.participant for endpoint in self._endpoints.values()}
         for participant in [p for p in self._nodes if p not in alive]:
             del self._nodes[participant]
 
