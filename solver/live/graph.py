@@ -78,8 +78,9 @@ class Observation:
     ``topic_types``: (topic, message type) pairs (a ROS 1 master never forgets a type, so it
     lists topics nobody uses any more); ``params``: the parameter subtree the caller asked for,
     as (key, value) pairs, empty when it is not set; ``discovering``: a participant is found
-    whose readers and writers are not yet (DDS discovers a participant before its endpoints,
-    long before on a busy machine; a ROS master answers at once, so never there).
+    whose readers and writers are not yet, or not all those its nodes name (DDS discovers a
+    participant before its endpoints, long before on a busy machine, and each endpoint apart;
+    a ROS master answers at once, so never there).
     """
 
     pid: int

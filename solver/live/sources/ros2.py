@@ -653,10 +653,17 @@ class DdsGraph:
             topic_types=tuple(sorted(types.items())),
             param_names=tuple(sorted(written | {f"{namespace}/{k}" for k, _ in params})),
             params=params,
-            # Every ROS 2 node's participant has endpoints (its ros_discovery_info writer and
-            # reader): one found with none yet is still being discovered.
-            discovering=not self._participants <= alive,
+            discovering=self._discovering(alive),
         )
+
+    def _discovering(self, alive: set[bytes]) -> bool:
+        """A participant is found whose endpoints are not all found yet: it has none (every
+        ROS 2 node's participant has some: its ``ros_discovery_info`` writer and reader), or
+        its ``ros_discovery_info`` names a reader or writer not yet discovered (DDS announces
+        each endpoint apart; the rmw announces the node's list anew at each one it makes)."""
+        if not self._participants <= alive:
+            return True
+        return any(gid not in self._endpoints for nodes in self._nodes.values() for gid in nodes)
 
     def observe_params(self, namespace: str) -> tuple[int, tuple[tuple[str, Any], ...]]:  # noqa: ARG002 - the protocol's
         """The selection, the answer and the announcements read now; the graph as last read."""

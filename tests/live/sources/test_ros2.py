@@ -23,6 +23,7 @@ from solver.live.sources.ros2 import (
     dds_type,
     ros_name,
     ros_type,
+    write,
 )
 from solver.live.watcher import Watcher
 from solver.solving.solution import Solution
@@ -345,6 +346,50 @@ def test_a_participant_found_before_its_readers_and_writers_is_still_being_disco
     finally:
         station.close()
         bare.__del__()  # the writer with it
+
+
+def test_a_participant_whose_nodes_name_an_endpoint_not_found_yet_is_still_being_discovered(
+    domain: Domain,
+) -> None:
+    """DDS announces each endpoint apart, and a node's ``ros_discovery_info`` lists every one
+    it made: while one it lists is not found, the look is not done (a robot's description
+    writer may come after its node's other endpoints)."""
+    from cyclonedds.domain import DomainParticipant
+    from cyclonedds.pub import DataWriter
+    from cyclonedds.topic import Topic
+
+    from solver.live.sources.ros2 import message_types
+    from tests.live.ros2_robot import LATCHED
+
+    station = DdsGraph(domain.id, answers=False)
+    node = DomainParticipant(domain.id)
+    string, discovery = message_types()
+    gid, entities, info = discovery[16]
+    try:
+        chatter = DataWriter(node, Topic(node, "rt/chatter", string))
+        announce = DataWriter(node, Topic(node, "ros_discovery_info", info), qos=LATCHED)
+
+        def names(*writers: bytes) -> None:
+            listed = [gid(list(w)) for w in writers]
+            write(announce, info(gid(list(node.guid.bytes)), [entities("/", "talker", [], listed)]))
+
+        not_found_yet = bytes(range(16))  # the GUID of a writer the domain has not shown
+        names(chatter.guid.bytes, not_found_yet)
+        wait_until(
+            lambda: (
+                (look := station.observe("/teleop_ui")).discovering
+                and "/talker" in dict(look.publishers).get("/chatter", ())
+            ),
+            TIMEOUT,
+            "the node's list read while a writer it names is not found",
+        )
+        names(chatter.guid.bytes)
+        wait_until(
+            lambda: not station.observe("/teleop_ui").discovering, TIMEOUT, "every named writer"
+        )
+    finally:
+        station.close()
+        node.__del__()
 
 
 def test_the_active_motion_control_topic_selects_as_the_ros1_parameter_does(
