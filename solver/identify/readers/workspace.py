@@ -125,15 +125,15 @@ MIN_COMMON = 3
 PARAMETER_NAMES = frozenset({"robot_description"})
 # A package named as one: found (``$(find P)``, ``find-pkg-share``, ``package://P``, the
 # Python, C++ and CMake lookups), launched or run (``roslaunch P``, ``ros2 run P``, a node's
-# ``pkg``/``package``), or given as a package argument's value (``pkg_name = 'P'``,
-# ``'description_package', default_value='P'``).
+# ``pkg``/``package``), or given as a package argument's or variable's value (``pkg_name = 'P'``,
+# ``robot_description_pkg = 'P'``, ``'description_package', default_value='P'``).
 _AS_PACKAGE = re.compile(
     r"(?:\$\((?:find|find-pkg-share|find-pkg-prefix)\s+|package://|"
     r"(?:get_package_share_directory|get_package_share_path|get_package_prefix|"
     r"FindPackageShare|FindPackagePrefix|get_path|getPath|get_pkg_dir|find_package)"
     r"\(\s*(?:package\s*=\s*)?['\"]?|"
     r"(?:roslaunch|rosrun|roscd|rospack\s+find|ros2\s+(?:launch|run|pkg\s+prefix))\s+|"
-    r"(?<![A-Za-z0-9_])(?:pkg|package)(?:_name)?['\"]?\s*[=:]\s*['\"]?|"
+    r"(?<![A-Za-z0-9_])(?:[A-Za-z0-9]+_)*(?:pkg|package)(?:_name)?['\"]?\s*[=:]\s*['\"]?|"
     r"package['\"]\s*,\s*default_value\s*=\s*['\"])"
     r"([A-Za-z0-9_]+)"
 )

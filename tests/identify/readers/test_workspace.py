@@ -370,6 +370,24 @@ def test_a_package_named_like_the_parameter_is_used_where_a_file_names_it_as_a_p
 
 
 @pytest.mark.parametrize(
+    "assignment",
+    ["robot_description_pkg = 'robot_description'", 'description_package = "robot_description"'],
+)
+def test_a_package_named_like_the_parameter_is_used_where_a_variable_named_for_a_package_holds_it(
+    tmp_path: Path, assignment: str
+) -> None:
+    # A bringup keeps the package's name in a variable it finds the package with; another
+    # package of the repository holds a description too (a simulated opponent), so the
+    # repository is not one robot's.
+    src = tmp_path / "src"
+    described = package(src, "robot_description")
+    launch = f"{assignment}\nshare = FindPackageShare({assignment.split(maxsplit=1)[0]})\n"
+    package(src, "rover_bringup", {"launch/rover.launch.py": launch})
+    package(src, "arena_gazebo", {"models/opponent.xacro": "<robot/>"})
+    assert read(described).packages == ("robot_description", "rover_bringup")
+
+
+@pytest.mark.parametrize(
     "export",
     [
         "<export><metapackage/></export>",
