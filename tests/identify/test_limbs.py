@@ -1414,12 +1414,32 @@ def test_road_wheels_whose_few_idlers_leave_their_mass_unplaced_are_wheels() -> 
     assert identify_urdf(text).structure == "UGV"
 
 
-def test_one_leg_known_to_hang_its_mass_out_keeps_the_six_a_wheel_leg_walker() -> None:
-    text = with_masses(whole_turn_legs(), "0 0 0").replace(
-        '<link name="spoke2"><inertial><origin xyz="0 0 0"/>',
-        '<link name="spoke2"><inertial><origin xyz="0 0 -0.08"/>',
-    )
+def test_two_legs_known_to_hang_their_mass_out_keep_the_six_a_wheel_leg_walker() -> None:
+    # Four carried on their axles for two off them: fewer than three for each one off.
+    text = with_masses(whole_turn_legs(), "0 0 0")
+    for i in (2, 5):
+        text = text.replace(
+            f'<link name="spoke{i}"><inertial><origin xyz="0 0 0"/>',
+            f'<link name="spoke{i}"><inertial><origin xyz="0 0 -0.08"/>',
+        )
     assert identify_urdf(text).structure == "Hexapod"
+
+
+def test_road_wheels_whose_sprockets_carry_a_track_drawn_rigid_on_them_are_wheels() -> None:
+    # Twelve wheels, six a side: each side's sprocket carries its track as a link fixed on it,
+    # its mass far off the axle; the ten idlers carry theirs on their axles.
+    text = with_masses(whole_turn_legs(12), "0 0 0")
+    for i in (0, 6):
+        text = text.replace(
+            f'<link name="spoke{i}"><inertial>',
+            f'<link name="track{i}"><inertial><origin xyz="0.3 0 0"/><mass value="1"/>'
+            '<inertia ixx="0.001" ixy="0" ixz="0" iyy="0.001" iyz="0" izz="0.001"/></inertial>'
+            f'</link><joint name="T{i}" type="fixed"><parent link="spoke{i}"/>'
+            f'<child link="track{i}"/></joint><link name="spoke{i}"><inertial>',
+        )
+    result = identify_urdf(text)
+    assert len([role for role in result.roles if role.role == "wheel"]) == 12
+    assert result.structure == "UGV"
 
 
 def with_shapes(robot: RobotText, *, rpy: str, xyz: str = "0 0 0", mass: str = "") -> str:
