@@ -78,8 +78,9 @@ _ROLLERS = 3
 _A_RIMS_PARTS = frozenset({"leg", "wheel"})
 # As many endless joints level with one link are a wheel-leg walker's legs, not its wheels.
 _WHEEL_LEGS = 6
-# A row of six or more is road wheels with this many carrying their mass on their axles for each
-# one known to hang it off (a sprocket carrying its track drawn rigid on it).
+# A row of six or more is road wheels with this many known to carry their mass on their axles
+# (by their inertials) for each one known to hang it off (a sprocket carrying its track drawn
+# rigid on it).
 _ON_AXLE_PER_OFF = 3
 # How far (metres) a wheel's mass centre may lie off its axle (a CAD export's rounding); the
 # whole-turning legs of the sets' wheel-leg walkers hang theirs 5 to 12 cm out.
@@ -712,17 +713,18 @@ def _balanced(tree: JointTree, joint: Joint) -> bool:
 def _mostly_balanced(tree: JointTree, joints: list[Joint]) -> bool:
     """More than half of the parts ``joints`` turn are known to carry their mass on the axle
     (:func:`_balance`) or, where the file leaves that out, drawn round it
-    (:func:`_drawn_round`), at least :data:`_ON_AXLE_PER_OFF` times as many as are known to hang
-    it off: a row of road wheels whose few idlers' files leave out where their mass is, or
-    whose drive sprockets carry a track drawn rigid on them. A whole-turning leg hangs its mass
-    out along the leg: a walker's legs are all off their axles."""
-    verdicts = [_balance(tree, joint) for joint in joints]
+    (:func:`_drawn_round`): a row of road wheels whose few idlers' files leave out where their
+    mass is. A part known to hang its mass off its axle (a whole-turning leg hangs it out along
+    the leg) is outvoted only by :data:`_ON_AXLE_PER_OFF` times as many whose mass is known on
+    it, a drawing's guess aside: a tracked base's drive sprockets carrying the tracks drawn
+    rigid on them among idlers that carry theirs on their axles."""
+    known = [_balance(tree, joint) for joint in joints]
     verdicts = [
         (_drawn_round(tree, joint) or None) if verdict is None else verdict
-        for verdict, joint in zip(verdicts, joints, strict=True)
+        for verdict, joint in zip(known, joints, strict=True)
     ]
-    on = verdicts.count(True)
-    return 2 * on > len(verdicts) and on >= _ON_AXLE_PER_OFF * verdicts.count(False)
+    on, off = known.count(True), known.count(False)
+    return 2 * verdicts.count(True) > len(verdicts) and on >= _ON_AXLE_PER_OFF * off
 
 
 def _drawn_round(tree: JointTree, joint: Joint) -> bool:

@@ -1425,6 +1425,37 @@ def test_two_legs_known_to_hang_their_mass_out_keep_the_six_a_wheel_leg_walker()
     assert identify_urdf(text).structure == "Hexapod"
 
 
+@pytest.mark.parametrize(("off", "structure"), [((0, 3, 6), "UGV"), ((0, 3, 6, 9), "Quadruped")])
+def test_parts_known_on_their_axles_outvote_those_known_off_three_to_one(
+    off: tuple[int, ...], structure: str
+) -> None:
+    # Twelve: nine on for three off is road wheels; eight on for four off, whole-turning legs.
+    text = with_masses(whole_turn_legs(12), "0 0 0")
+    for i in off:
+        text = text.replace(
+            f'<link name="spoke{i}"><inertial><origin xyz="0 0 0"/>',
+            f'<link name="spoke{i}"><inertial><origin xyz="0 0 -0.08"/>',
+        )
+    assert identify_urdf(text).structure == structure
+
+
+def test_parts_only_drawn_round_do_not_outvote_one_known_to_hang_its_mass_out() -> None:
+    # Five whose file places no mass centre, drawn as cylinders about their axles (a leg's
+    # hub), and one whose mass is known 8 cm off its axle: a drawing does not outvote a mass.
+    mass = '<inertial><mass value="0.2"/></inertial>'
+    text = with_shapes(whole_turn_legs(), rpy="1.5708 0 0", mass=mass)
+    start = text.index('<link name="spoke2">')
+    end = text.index("</link>", start)
+    text = (
+        text[:start]
+        + text[start:end].replace(
+            mass, '<inertial><origin xyz="0 0 -0.08"/><mass value="0.2"/></inertial>'
+        )
+        + text[end:]
+    )
+    assert identify_urdf(text).structure == "Hexapod"
+
+
 def test_road_wheels_whose_sprockets_carry_a_track_drawn_rigid_on_them_are_wheels() -> None:
     # Twelve wheels, six a side: each side's sprocket carries its track as a link fixed on it,
     # its mass far off the axle; the ten idlers carry theirs on their axles.
