@@ -122,6 +122,10 @@ REASSERT_FIRST = 1.0
 REASSERT_LIMIT = 30.0
 _STRING = "std_msgs::msg::dds_::String_"
 _DISCOVERY = "ros_discovery_info"
+# The topic has no key: every participant's node list is one instance. Lists of participants
+# found at once (each writer's last, sent as it is matched) are kept until a poll takes them,
+# not written over.
+_DISCOVERY_DEPTH = 256
 _PREFIXES = {"rt/": "", "rq/": "Request", "rr/": "Reply"}
 
 
@@ -446,7 +450,7 @@ class DdsGraph:
             DataReader(
                 self.participant,
                 Topic(self.participant, _DISCOVERY, types[2]),
-                qos=_latched(),
+                qos=_latched(_DISCOVERY_DEPTH),
                 listener=self.listener,
             )
             for types in discovery.values()
@@ -807,7 +811,9 @@ class DdsGraph:
 
     def _read_discovery(self, alive: set[bytes]) -> None:
         """The node names each participant announces; ``alive``: the participants with an
-        endpoint (the others' names are dropped)."""
+        endpoint (the others' names are dropped). A list is taken only from the participant it
+        names (its writer's): another participant's would rename that one's nodes, or keep a
+        look waiting for endpoints it never makes."""
         for reader in self._discovery:
             try:
                 samples = reader.take(N=10_000)
@@ -815,7 +821,7 @@ class DdsGraph:
                 continue
             for sample in samples:
                 gid = getattr(sample, "gid", None)
-                if gid is None:
+                if gid is None or _writer_participant(reader, sample) != bytes(gid.data)[:16]:
                     continue
                 nodes: dict[bytes, str] = {}
                 for info in sample.node_entities_info_seq:
@@ -826,6 +832,19 @@ class DdsGraph:
                 self._nodes[bytes(gid.data)[:16]] = nodes
         for participant in [p for p in self._nodes if p not in alive]:
             del self._nodes[participant]
+
+
+def _writer_participant(reader: Any, sample: Any) -> bytes | None:
+    """The GUID of the participant whose writer sent ``sample`` to ``reader``, or ``None`` when
+    that writer is not known (it left)."""
+    info = getattr(sample, "sample_info", None)
+    if info is None:
+        return None
+    try:
+        writer = reader.get_matched_publication_data(info.publication_handle)
+    except Exception:  # a writer gone between the sample and the question
+        return None
+    return None if writer is None else bytes(writer.participant_key.bytes)
 
 
 def _selection_key(key: str) -> bool:

@@ -15,6 +15,7 @@ import pytest
 
 from solver.identify.profile import Profile
 from solver.identify.readers.safexml import MAX_XML_BYTES
+from solver.live.graph import Observation
 from solver.live.sources.ros2 import (
     REASSERT_FIRST,
     REASSERT_LIMIT,
@@ -390,6 +391,98 @@ def test_a_participant_whose_nodes_name_an_endpoint_not_found_yet_is_still_being
     finally:
         station.close()
         node.__del__()
+
+
+def test_the_node_lists_of_participants_found_at_once_are_all_read(domain: Domain) -> None:
+    """Each participant's last node list reaches a new reader as it is matched, all at once:
+    none is written over by another's before a look takes them (the topic has no key)."""
+    from cyclonedds.domain import DomainParticipant
+    from cyclonedds.pub import DataWriter
+    from cyclonedds.topic import Topic
+
+    from solver.live.sources.ros2 import message_types
+    from tests.live.ros2_robot import LATCHED
+
+    string, discovery = message_types()
+    gid, entities, info = discovery[16]
+    nodes = [DomainParticipant(domain.id) for _ in range(5)]
+    kept = []
+    try:
+        for i, node in enumerate(nodes):
+            writer = DataWriter(node, Topic(node, f"rt/topic_{i}", string))
+            announce = DataWriter(node, Topic(node, "ros_discovery_info", info), qos=LATCHED)
+            listed = [entities("/", f"node_{i}", [], [gid(list(writer.guid.bytes))])]
+            write(announce, info(gid(list(node.guid.bytes)), listed))
+            kept += [writer, announce]
+        station = DdsGraph(domain.id, answers=False)
+        try:
+            wait_until(
+                lambda: any(len(r.get_matched_publications()) >= 5 for r in station._discovery),
+                TIMEOUT,
+                "the five lists' writers matched",
+            )
+            wanted = {(f"/topic_{i}", (f"/node_{i}",)) for i in range(5)}
+            wait_until(
+                lambda: wanted <= set(station.observe("/teleop_ui").publishers),
+                TIMEOUT,
+                "every node's name",
+            )
+        finally:
+            station.close()
+    finally:
+        for node in nodes:
+            node.__del__()
+
+
+def test_a_node_list_another_participant_writes_for_one_is_not_taken(domain: Domain) -> None:
+    """Anyone on the domain can write ``ros_discovery_info``: a list naming another
+    participant renames none of its nodes and makes no look wait for endpoints never made."""
+    from cyclonedds.domain import DomainParticipant
+    from cyclonedds.pub import DataWriter
+    from cyclonedds.topic import Topic
+
+    from solver.live.sources.ros2 import message_types
+    from tests.live.ros2_robot import LATCHED
+
+    string, discovery = message_types()
+    gid, entities, info = discovery[16]
+    station = DdsGraph(domain.id, answers=False)
+    node, forger = DomainParticipant(domain.id), DomainParticipant(domain.id)
+    try:
+        chatter = DataWriter(node, Topic(node, "rt/chatter", string))
+        own = DataWriter(node, Topic(node, "ros_discovery_info", info), qos=LATCHED)
+        named = gid(list(chatter.guid.bytes))
+        write(own, info(gid(list(node.guid.bytes)), [entities("/", "talker", [], [named])]))
+        wait_until(
+            lambda: ("/chatter", ("/talker",)) in station.observe("/teleop_ui").publishers,
+            TIMEOUT,
+            "the node's own list",
+        )
+        witness = DataWriter(forger, Topic(forger, "rt/witness", string))
+        lists = DataWriter(forger, Topic(forger, "ros_discovery_info", info), qos=LATCHED)
+        never = gid(list(range(16)))  # a writer the domain never shows
+        forged = [entities("/", "forged", [], [named, never])]
+        write(lists, info(gid(list(node.guid.bytes)), forged))
+        # Then the forger's own list, after the forged one from the same writer: once it is
+        # read, the forged one was read before it.
+        mine = [entities("/", "witness", [], [gid(list(witness.guid.bytes))])]
+        write(lists, info(gid(list(forger.guid.bytes)), mine))
+        look = wait_until(
+            lambda: (
+                (found := station.observe("/teleop_ui")).publishers
+                and ("/witness", ("/witness",)) in found.publishers
+                and found
+            ),
+            TIMEOUT,
+            "the forger's own list",
+        )
+        assert isinstance(look, Observation)
+        assert ("/chatter", ("/talker",)) in look.publishers
+        assert not look.discovering
+    finally:
+        station.close()
+        node.__del__()
+        forger.__del__()
 
 
 def test_the_active_motion_control_topic_selects_as_the_ros1_parameter_does(
