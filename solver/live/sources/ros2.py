@@ -783,26 +783,18 @@ class DdsGraph:
         }
 
     def _read_participants(self) -> None:
-        from cyclonedds.core import InstanceState
-
         for sample in self._participant_reader.take(N=10_000):
             key = sample.key.bytes
-            info = getattr(sample, "sample_info", None)
-            if info is None or info.instance_state == InstanceState.Alive:
-                if key != self._own:
-                    self._participants.add(key)
-            else:
+            if not _alive(sample):
                 self._participants.discard(key)
+            elif key != self._own:
+                self._participants.add(key)
 
     def _read_endpoints(self) -> None:
-        from cyclonedds.core import InstanceState
-
         for reader, writer in ((self._publications, True), (self._subscriptions, False)):
             for sample in reader.take(N=100_000):
                 key = sample.key.bytes
-                info = getattr(sample, "sample_info", None)
-                alive = info is None or info.instance_state == InstanceState.Alive
-                if alive and getattr(sample, "topic_name", None) is not None:
+                if _alive(sample) and getattr(sample, "topic_name", None) is not None:
                     self._endpoints[key] = _Endpoint(
                         sample.topic_name, sample.type_name, sample.participant_key.bytes, writer
                     )
@@ -821,7 +813,8 @@ class DdsGraph:
                 continue
             for sample in samples:
                 gid = getattr(sample, "gid", None)
-                if gid is None or _writer_participant(reader, sample) != bytes(gid.data)[:16]:
+                owner = None if gid is None else bytes(gid.data)[:16]
+                if owner is None or _writer_participant(reader, sample) != owner:
                     continue
                 nodes: dict[bytes, str] = {}
                 for info in sample.node_entities_info_seq:
@@ -829,9 +822,17 @@ class DdsGraph:
                     node = (namespace.rstrip("/") + "/" + str(info.node_name)).replace("//", "/")
                     for endpoint in (*info.reader_gid_seq, *info.writer_gid_seq):
                         nodes[bytes(endpoint.data)[:16]] = node
-                self._nodes[bytes(gid.data)[:16]] = nodes
+                self._nodes[owner] = nodes
         for participant in [p for p in self._nodes if p not in alive]:
             del self._nodes[participant]
+
+
+def _alive(sample: Any) -> bool:
+    """A built-in topic's sample says its entity is there (not disposed or gone)."""
+    from cyclonedds.core import InstanceState
+
+    info = getattr(sample, "sample_info", None)
+    return info is None or info.instance_state == InstanceState.Alive
 
 
 def _writer_participant(reader: Any, sample: Any) -> bytes | None:

@@ -349,6 +349,37 @@ def test_a_participant_found_before_its_readers_and_writers_is_still_being_disco
         bare.__del__()  # the writer with it
 
 
+class _NodeLists:
+    """A participant's ``ros_discovery_info`` as the rmw writes it (16-byte gids, reliable,
+    transient-local): the nodes' lists, and plain String writers to list."""
+
+    def __init__(self, participant: Any) -> None:
+        from cyclonedds.pub import DataWriter
+        from cyclonedds.topic import Topic
+
+        from solver.live.sources.ros2 import message_types
+        from tests.live.ros2_robot import LATCHED
+
+        self.participant = participant
+        self.string, discovery = message_types()
+        self.gid, self.entities, self.info = discovery[16]
+        topic = Topic(participant, "ros_discovery_info", self.info)
+        self.writer = DataWriter(participant, topic, qos=LATCHED)
+
+    def string_writer(self, topic: str) -> Any:
+        from cyclonedds.pub import DataWriter
+        from cyclonedds.topic import Topic
+
+        return DataWriter(self.participant, Topic(self.participant, topic, self.string))
+
+    def name(self, node: str, writers: list[bytes], *, of: Any = None) -> None:
+        """List the node ``node`` with ``writers`` (their GUIDs) as the participant ``of``'s
+        (this one's unless said)."""
+        owner = self.gid(list((of or self.participant).guid.bytes))
+        listed = [self.entities("/", node, [], [self.gid(list(w)) for w in writers])]
+        write(self.writer, self.info(owner, listed))
+
+
 def test_a_participant_whose_nodes_name_an_endpoint_not_found_yet_is_still_being_discovered(
     domain: Domain,
 ) -> None:
@@ -356,26 +387,14 @@ def test_a_participant_whose_nodes_name_an_endpoint_not_found_yet_is_still_being
     it made: while one it lists is not found, the look is not done (a robot's description
     writer may come after its node's other endpoints)."""
     from cyclonedds.domain import DomainParticipant
-    from cyclonedds.pub import DataWriter
-    from cyclonedds.topic import Topic
-
-    from solver.live.sources.ros2 import message_types
-    from tests.live.ros2_robot import LATCHED
 
     station = DdsGraph(domain.id, answers=False)
     node = DomainParticipant(domain.id)
-    string, discovery = message_types()
-    gid, entities, info = discovery[16]
     try:
-        chatter = DataWriter(node, Topic(node, "rt/chatter", string))
-        announce = DataWriter(node, Topic(node, "ros_discovery_info", info), qos=LATCHED)
-
-        def names(*writers: bytes) -> None:
-            listed = [gid(list(w)) for w in writers]
-            write(announce, info(gid(list(node.guid.bytes)), [entities("/", "talker", [], listed)]))
-
+        lists = _NodeLists(node)
+        chatter = lists.string_writer("rt/chatter")
         not_found_yet = bytes(range(16))  # the GUID of a writer the domain has not shown
-        names(chatter.guid.bytes, not_found_yet)
+        lists.name("talker", [chatter.guid.bytes, not_found_yet])
         wait_until(
             lambda: (
                 (look := station.observe("/teleop_ui")).discovering
@@ -384,7 +403,7 @@ def test_a_participant_whose_nodes_name_an_endpoint_not_found_yet_is_still_being
             TIMEOUT,
             "the node's list read while a writer it names is not found",
         )
-        names(chatter.guid.bytes)
+        lists.name("talker", [chatter.guid.bytes])
         wait_until(
             lambda: not station.observe("/teleop_ui").discovering, TIMEOUT, "every named writer"
         )
@@ -397,23 +416,15 @@ def test_the_node_lists_of_participants_found_at_once_are_all_read(domain: Domai
     """Each participant's last node list reaches a new reader as it is matched, all at once:
     none is written over by another's before a look takes them (the topic has no key)."""
     from cyclonedds.domain import DomainParticipant
-    from cyclonedds.pub import DataWriter
-    from cyclonedds.topic import Topic
 
-    from solver.live.sources.ros2 import message_types
-    from tests.live.ros2_robot import LATCHED
-
-    string, discovery = message_types()
-    gid, entities, info = discovery[16]
     nodes = [DomainParticipant(domain.id) for _ in range(5)]
-    kept = []
+    kept = []  # the writers, alive while the station looks
     try:
         for i, node in enumerate(nodes):
-            writer = DataWriter(node, Topic(node, f"rt/topic_{i}", string))
-            announce = DataWriter(node, Topic(node, "ros_discovery_info", info), qos=LATCHED)
-            listed = [entities("/", f"node_{i}", [], [gid(list(writer.guid.bytes))])]
-            write(announce, info(gid(list(node.guid.bytes)), listed))
-            kept += [writer, announce]
+            lists = _NodeLists(node)
+            writer = lists.string_writer(f"rt/topic_{i}")
+            lists.name(f"node_{i}", [writer.guid.bytes])
+            kept += [lists, writer]
         station = DdsGraph(domain.id, answers=False)
         try:
             wait_until(
@@ -438,35 +449,25 @@ def test_a_node_list_another_participant_writes_for_one_is_not_taken(domain: Dom
     """Anyone on the domain can write ``ros_discovery_info``: a list naming another
     participant renames none of its nodes and makes no look wait for endpoints never made."""
     from cyclonedds.domain import DomainParticipant
-    from cyclonedds.pub import DataWriter
-    from cyclonedds.topic import Topic
 
-    from solver.live.sources.ros2 import message_types
-    from tests.live.ros2_robot import LATCHED
-
-    string, discovery = message_types()
-    gid, entities, info = discovery[16]
     station = DdsGraph(domain.id, answers=False)
     node, forger = DomainParticipant(domain.id), DomainParticipant(domain.id)
     try:
-        chatter = DataWriter(node, Topic(node, "rt/chatter", string))
-        own = DataWriter(node, Topic(node, "ros_discovery_info", info), qos=LATCHED)
-        named = gid(list(chatter.guid.bytes))
-        write(own, info(gid(list(node.guid.bytes)), [entities("/", "talker", [], [named])]))
+        own = _NodeLists(node)
+        chatter = own.string_writer("rt/chatter")
+        own.name("talker", [chatter.guid.bytes])
         wait_until(
             lambda: ("/chatter", ("/talker",)) in station.observe("/teleop_ui").publishers,
             TIMEOUT,
             "the node's own list",
         )
-        witness = DataWriter(forger, Topic(forger, "rt/witness", string))
-        lists = DataWriter(forger, Topic(forger, "ros_discovery_info", info), qos=LATCHED)
-        never = gid(list(range(16)))  # a writer the domain never shows
-        forged = [entities("/", "forged", [], [named, never])]
-        write(lists, info(gid(list(node.guid.bytes)), forged))
+        forged = _NodeLists(forger)
+        witness = forged.string_writer("rt/witness")
+        never = bytes(range(16))  # a writer the domain never shows
+        forged.name("forged", [chatter.guid.bytes, never], of=node)
         # Then the forger's own list, after the forged one from the same writer: once it is
         # read, the forged one was read before it.
-        mine = [entities("/", "witness", [], [gid(list(witness.guid.bytes))])]
-        write(lists, info(gid(list(forger.guid.bytes)), mine))
+        forged.name("witness", [witness.guid.bytes])
         look = wait_until(
             lambda: (
                 (found := station.observe("/teleop_ui")).publishers
