@@ -414,17 +414,41 @@ def _rgbd_frames(found: list[Detection], urdf: Urdf) -> list[Detection]:
                 here.append((detection, joint))
             owner_of[id(detection)] = near or detection
     bodies = _depth_bodies(found)
+    depths = _depth_streams(found)
+    poses: list[Poses] = []  # computed once, when a camera and a depth stream are compared
     kept = []
     for detection in found:
         owner = owner_of.get(id(detection))
         own = owner is None or owner is detection or owner.link == detection.link
-        if (
-            own
-            and not _stream_of(detection, owners, urdf)
-            and not _stream_beneath_body(detection, bodies, urdf)
+        if own and not _a_cameras_stream(
+            detection, urdf, poses, owners=owners, bodies=bodies, depths=depths
         ):
             kept.append(detection)
     return kept
+
+
+def _a_cameras_stream(
+    detection: Detection,
+    urdf: Urdf,
+    poses: list[Poses],
+    *,
+    owners: dict[str, list[tuple[Detection, Joint]]],
+    bodies: dict[str, str],
+    depths: list[Detection],
+) -> bool:
+    """A plain camera that is an RGB-D camera's colour or infrared stream, by one of the three
+    ways a description writes them (:func:`_stream_of`, :func:`_stream_beneath_body`,
+    :func:`_stream_beside_depth`)."""
+    return (
+        _stream_of(detection, owners, urdf)
+        or _stream_beneath_body(detection, bodies, urdf)
+        or _stream_beside_depth(detection, depths, urdf, poses)
+    )
+
+
+def _depth_streams(found: list[Detection]) -> list[Detection]:
+    """The depth cameras found on a frame of the description."""
+    return [d for d in found if d.kind == "depth_camera" and d.link is not None]
 
 
 def _depth_bodies(found: list[Detection]) -> dict[str, str]:
@@ -459,6 +483,65 @@ def _stream_beneath_body(detection: Detection, bodies: dict[str, str], urdf: Urd
         if link in bodies:
             return reach <= STREAM_REACH and detection.link.startswith(bodies[link])
     return False
+
+
+def _stream_beside_depth(
+    detection: Detection, depths: list[Detection], urdf: Urdf, poses: list[Poses]
+) -> bool:
+    """A plain camera on a frame that hangs, as a depth stream's frame does, from one camera's
+    body (a link named for a camera, the camera's frame named for it up to its camera word;
+    each frame :data:`_DEVICE_DEPTH` fixed joints down at most, their offsets adding up to
+    :data:`STREAM_REACH` at most) and faces the depth stream's way (its x and z axes the depth
+    frame's, every joint at rest) is that camera's colour stream: an RGB-D macro's colour and
+    depth optical frames, each turned the optical way under the camera's link. A camera turned
+    another way (a rear camera on the same bracket) is a camera of its own. ``poses``: the
+    caller's, filled on the first comparison."""
+    if detection.kind != "camera" or detection.link is None or not depths:
+        return False
+    for body, reach in _fixed_above(detection.link, urdf):
+        named = _CAMERA_BODY.search(body)
+        if (
+            named is None
+            or reach > STREAM_REACH
+            or not detection.link.startswith(body[: named.end()])
+        ):
+            continue
+        for depth in depths:
+            if depth.link is None:
+                continue
+            theirs = dict([(depth.link, 0.0), *_fixed_above(depth.link, urdf)]).get(body)
+            if theirs is not None and theirs <= STREAM_REACH:
+                if not poses:
+                    poses.append(Poses(urdf))
+                if _facing_alike(detection.link, depth.link, poses[0]):
+                    return True
+    return False
+
+
+def _fixed_above(link: str, urdf: Urdf) -> list[tuple[str, float]]:
+    """The links above ``link`` through :data:`_DEVICE_DEPTH` fixed joints at most, nearest
+    first, each with the joints' offsets added up to it."""
+    found = []
+    reach = 0.0
+    for _ in range(_DEVICE_DEPTH):
+        joint = urdf.parent_joint(link)
+        if joint is None or joint.movable:
+            break
+        reach += math.hypot(*joint.origin)
+        link = joint.parent
+        found.append((link, reach))
+    return found
+
+
+def _facing_alike(one: str, other: str, poses: Poses) -> bool:
+    """The two links' frames are turned alike (their x and z axes point one way)."""
+    return all(
+        same_way(poses.turned(one, _AT_REST, axis), poses.turned(other, _AT_REST, axis))
+        for axis in ((1.0, 0.0, 0.0), (0.0, 0.0, 1.0))
+    )
+
+
+_AT_REST = (0.0, 0.0, 0.0)
 
 
 def _one_device(first: Joint, second: Joint) -> bool:

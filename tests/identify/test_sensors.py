@@ -892,6 +892,34 @@ def test_cameras_on_frames_beneath_an_rgbd_cameras_body_carrying_its_depth_are_i
     assert realsense_below_its_body("head_link") == {"camera": 3, "depth_camera": 1}
 
 
+def realsense_on_optical_frames(colour_turn: str) -> dict[str, int]:
+    """A D435 as the realsense2_description macro draws it, with Gazebo Sim sensors on its
+    optical frames: ``head_camera_link`` on a head, a colour and a depth frame fixed beneath
+    it (the colour frame 1.5 cm across), each with an optical frame turned the optical way
+    (``-pi/2 0 -pi/2``) carrying the stream; the colour optical frame turned ``colour_turn``."""
+    robot = builders.ugv()
+    head = robot.fixed(robot.root, "head_link")
+    body = robot.fixed(head, "head_camera_link")
+    optical = "-1.5708 0 -1.5708"
+    for stream, y, turn, kind in (
+        ("color", "0.015", colour_turn, "camera"),
+        ("depth", "0", optical, "depth"),
+    ):
+        frame = builders.placed(
+            robot, f"{stream}_joint", "fixed", body, f"head_camera_{stream}_frame", xyz=f"0 {y} 0"
+        )
+        link = f"head_camera_{stream}_optical_frame"
+        builders.placed(robot, f"{stream}_optical_joint", "fixed", frame, link, rpy=turn)
+        robot.add(builders.gazebo_sensor(link, kind, f"head_camera_{stream}"))
+    return {s.kind: s.count for s in identify_urdf(robot.text()).sensors}
+
+
+def test_colour_and_depth_streams_on_an_rgbd_cameras_optical_frames_are_one_device() -> None:
+    assert realsense_on_optical_frames("-1.5708 0 -1.5708") == {"depth_camera": 1}
+    # A colour stream turned another way (facing back) is a camera of its own.
+    assert realsense_on_optical_frames("-1.5708 0 1.5708") == {"camera": 1, "depth_camera": 1}
+
+
 def bolted(name: str, joint: str, *, under: str = "camera_link") -> str:
     """A camera ``name`` on its own frame under ``under``, by ``joint``'s kind and place."""
     kind, _, place = joint.partition(" ")
