@@ -66,6 +66,7 @@ from solver.identify.sensors import (
 )
 from solver.identify.shipped import (
     body_from_workspace,
+    controller_joints,
     controls_from_workspace,
     joint_controllers,
     named_joints,
@@ -223,6 +224,7 @@ def identify_urdf(
             head_joint_controllers=_own_controllers(
                 packages, profile.gait, _limb_joints(body, "head")
             ),
+            vehicle_joint_controllers=_configured(packages, profile.gait, _vehicle_joints(body)),
         ),
         shipped,
     ]
@@ -286,6 +288,26 @@ def _own_controllers(
     """The file of the robot's packages that configures a controller of one of the
     ``joints``' own (:func:`~solver.identify.shipped.per_joint_controllers`); else None."""
     return None if packages is None else per_joint_controllers(packages, rule, joints)
+
+
+def _configured(
+    packages: Workspace | None, rule: SoftwareRule | None, joints: Collection[str]
+) -> str | None:
+    """The controller configuration of the robot's packages that gives a joint controller one
+    of the ``joints`` (:func:`~solver.identify.shipped.controller_joints`, with the ``rule``'s
+    controllers); else None."""
+    if packages is None or rule is None:
+        return None
+    return controller_joints(packages, rule.controllers, joints)
+
+
+def _vehicle_joints(body: Body) -> list[str]:
+    """The joints a ground vehicle moves besides its wheels' spin: its mounts' (a suspension,
+    a steering knuckle, a wheel-leg's hip) and its heads' (a sensor's pan or tilt); none on a
+    body that is no ground vehicle."""
+    if not body.mobile_base or body.flying or body.marine:
+        return []
+    return [*_limb_joints(body, "mount"), *_limb_joints(body, "head")]
 
 
 def _limb_joints(body: Body, kind: str) -> list[str]:

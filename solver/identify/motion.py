@@ -188,6 +188,17 @@ def _own_controller(source: str, shown_file: str | None, where: str) -> _Shown:
     return [(source, f"{shown_file}: a controller of a joint's own on {where}")]
 
 
+def _configured(shown_file: str | None) -> _Shown:
+    """A ground vehicle's mount or head joints (a suspension, a steering knuckle, a wheel-leg's
+    hip, a sensor's pan or tilt) named by a joint controller its packages configure
+    (``shown_file``, the file that shows it): they take commands one by one, beside the drive
+    (a transmission or a ``ros2_control`` block alone says nothing of who commands them)."""
+    if shown_file is None:
+        return []
+    why = f"{shown_file}: joint controllers naming a ground vehicle's mount or head joint"
+    return [("vehicle_joint_controllers", why)]
+
+
 def _motions(joints: tuple[str, ...], urdf: Urdf | None) -> int:
     """How many motions a chain of joints has: a prismatic joint that slides on the previous
     one along the same axis (no turn between them: a telescope's segments) adds none."""
@@ -422,6 +433,7 @@ def controls_from_description(
     rotor_controllers: str | None = None,
     mount_joint_controllers: str | None = None,
     head_joint_controllers: str | None = None,
+    vehicle_joint_controllers: str | None = None,
 ) -> tuple[Control, ...]:
     """The motion controls the body (and SRDF) show, each with what shows it; with the kinds
     of the sensors the description declares, the profile's navigation guess too; neither that
@@ -433,7 +445,9 @@ def controls_from_description(
     (:func:`solver.identify.shipped.joint_controllers`); ``leg_joint_controllers``: the file
     that configures a controller of a leg joint's own
     (:func:`solver.identify.shipped.per_joint_controllers`); ``mount_joint_controllers`` and
-    ``head_joint_controllers``: the same for a flown or swimming body's mount and for a head."""
+    ``head_joint_controllers``: the same for a flown or swimming body's mount and for a head;
+    ``vehicle_joint_controllers``: the file that configures joint controllers naming a ground
+    vehicle's mount or head joint (:func:`solver.identify.shipped.configured_joints`)."""
     effectors = () if srdf is None else hand_effectors(body, srdf, urdf)  # once per SRDF
     shown = [
         *_ground(body, urdf_source),
@@ -443,6 +457,7 @@ def controls_from_description(
             "mount_joint_controllers", mount_joint_controllers, "a rotor's or thruster's mount"
         ),
         *_own_controller("head_joint_controllers", head_joint_controllers, "a pan/tilt head"),
+        *_configured(vehicle_joint_controllers),
         *_limbs(
             body,
             urdf_source,

@@ -183,6 +183,7 @@ CONTROL_SOURCES = (
     "leg_joint_controllers",
     "mount_joint_controllers",
     "head_joint_controllers",
+    "vehicle_joint_controllers",
     "rotor_controllers",
     *ROLE_SOURCES,
 )

@@ -41,6 +41,8 @@ import string
 from collections.abc import Collection
 from dataclasses import replace
 
+from solver.errors import InputError
+from solver.files.yamlio import parse_document
 from solver.identify.body import Body
 from solver.identify.interfaces import Control
 from solver.identify.profile import (
@@ -156,6 +158,67 @@ def joint_controllers(
         if topic is not None:
             return _shown_file(shipped.package, shipped.path, topic)
     return None
+
+
+def controller_joints(
+    workspace: Workspace, controllers: Pattern, joints: Collection[str]
+) -> str | None:
+    """The first controller configuration of the robot's packages (a YAML file) that gives a
+    joint controller (its ``type`` found by ``controllers``, the profile's
+    ``motion.gait.controllers``) one of the ``joints`` to command, by its name after a
+    namespace: in its ``joints`` list or as its ``joint``, beside its type (ROS 1) or under
+    its ``ros__parameters`` (ROS 2, its type given to the controller manager). A joint only a
+    state broadcaster lists, or another controller in the same file commands, is not one.
+    A file YAML cannot read (a tab, a template) says nothing; found in packages read in part
+    too: what was read says it."""
+    words = {tail for name in joints if _WORD.fullmatch(tail := name.rsplit("/", 1)[-1])}
+    for shipped in workspace.files:
+        if not words or not shipped.path.endswith((".yaml", ".yml")):
+            continue
+        if controllers.find(shipped.text) is None or not named_joints(
+            replace(workspace, files=(shipped,)), words
+        ):
+            continue  # the cheap look first: no parse of a file that cannot hold one
+        for kind, commanded in _controllers(shipped.text, shipped.path):
+            matched = controllers.find(kind)
+            if matched is not None and words & {j.rsplit("/", 1)[-1] for j in commanded}:
+                return _shown_file(shipped.package, shipped.path, matched)
+    return None
+
+
+def _controllers(text: str, name: str) -> list[tuple[str, frozenset[str]]]:
+    """Each controller a YAML configuration declares, by the key it is under: its type and
+    the joints it is given (``joints`` or ``joint``, beside the type or under the key's
+    ``ros__parameters`` anywhere in the file). Nothing from a text YAML cannot read."""
+    try:
+        data = parse_document(text, name, tolerate=("duplicate-key",)).data
+    except InputError:
+        return []
+    types: dict[str, str] = {}
+    given: dict[str, set[str]] = {}
+    stack: list[tuple[str, object]] = [("", data)]
+    while stack:
+        key, value = stack.pop()
+        if isinstance(value, list):
+            stack.extend((key, item) for item in value)
+            continue
+        if not isinstance(value, dict):
+            continue
+        if isinstance(value.get("type"), str):
+            types[key] = value["type"]
+        for held in (value, value.get("ros__parameters")):
+            if isinstance(held, dict):
+                given.setdefault(key, set()).update(_joint_names(held))
+        stack.extend((str(k), v) for k, v in value.items())
+    return [(kind, frozenset(given.get(key, ()))) for key, kind in types.items()]
+
+
+def _joint_names(block: dict[object, object]) -> set[str]:
+    """The joints a controller's block gives it: its ``joints`` list, its ``joint``."""
+    found = block.get("joints")
+    names = [n for n in found if isinstance(n, str)] if isinstance(found, list) else []
+    one = block.get("joint")
+    return {*names, *([one] if isinstance(one, str) else [])}
 
 
 def per_joint_controllers(

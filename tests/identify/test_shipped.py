@@ -23,6 +23,7 @@ from tests.identify.builders import (
     manipulator,
     pan_tilt_only,
     parallel_gripper,
+    placed,
     quadrotor,
     quadruped,
     tilt_rotor,
@@ -1328,7 +1329,7 @@ def test_a_controller_of_a_heads_joint_its_own_takes_joint_commands_on_a_vehicle
     found = controls_of(
         described(tmp_path, rover_with_a_camera_head(), bringup + "  joint: camera_pan")
     )
-    assert found["Joint"] == (
+    assert found["Joint"].startswith(
         "package craft_bringup: craft_bringup/launch/bringup.launch "
         "(effort_controllers/JointPositionController): a controller of a joint's own on a "
         "pan/tilt head"
@@ -1340,8 +1341,7 @@ def test_a_controller_of_a_heads_joint_its_own_takes_joint_commands_on_a_vehicle
     [
         # A transmission alone: who commands the head is not said.
         "joint_state_controller: {type: joint_state_controller/JointStateController}",
-        # The head in a group controller (what a tracker writes to), or another joint's own.
-        "head: {type: position_controllers/JointGroupPositionController, joints: [camera_pan]}",
+        # A controller of another joint's own (no joint the description draws).
         "mast: {type: position_controllers/JointPositionController, joint: mast_lift}",
     ],
 )
@@ -1349,6 +1349,101 @@ def test_no_heads_controller_of_its_own_gives_a_vehicle_no_joint_commands(
     tmp_path: Path, bringup: str
 ) -> None:
     assert "Joint" not in controls_of(described(tmp_path, rover_with_a_camera_head(), bringup))
+
+
+def rover_on_suspensions() -> RobotText:
+    """A four-wheeled rover whose wheels each hang from a vertical slide (a suspension)."""
+    robot = RobotText("rover")
+    for i, (x, y) in enumerate([(0.3, 0.25), (0.3, -0.25), (-0.3, 0.25), (-0.3, -0.25)]):
+        placed(robot, f"sus{i}_joint", "prismatic", robot.root, f"sus{i}", xyz=f"{x} {y} 0")
+        placed(robot, f"wheel{i}_joint", "continuous", f"sus{i}", f"wheel{i}", axis="0 1 0")
+    return robot
+
+
+def configured(tmp_path: Path, robot: RobotText, controllers: str) -> Path:
+    """A description package holding ``robot`` and a controller configuration
+    (``config/controllers.yaml``); the description file."""
+    files = {"urdf/craft.urdf": robot.text(), "config/controllers.yaml": controllers}
+    return package(tmp_path / "ws" / "src", "craft_description", files) / "urdf" / "craft.urdf"
+
+
+# ROS 2's way: the controller manager is given each controller's type, and each controller
+# its joints under its own parameters; a state broadcaster beside them lists every joint.
+SUSPENSIONS = """
+controller_manager:
+  ros__parameters:
+    suspension_controller:
+      type: position_controllers/JointGroupPositionController
+    wheel_controller:
+      type: velocity_controllers/JointGroupVelocityController
+    joint_state_broadcaster:
+      type: joint_state_broadcaster/JointStateBroadcaster
+suspension_controller:
+  ros__parameters:
+    joints: [sus0_joint, sus1_joint, sus2_joint, sus3_joint]
+wheel_controller:
+  ros__parameters:
+    joints: [wheel0_joint, wheel1_joint, wheel2_joint, wheel3_joint]
+joint_state_broadcaster:
+  ros__parameters:
+    extra_joints: [sus0_joint, sus1_joint]
+"""
+
+
+@pytest.mark.parametrize(
+    ("robot", "controllers"),
+    [
+        (rover_on_suspensions, SUSPENSIONS),
+        # ROS 1's way: a forward command or a trajectory controller of a camera's pan joint,
+        # its type and its joints side by side (under a namespace).
+        (
+            rover_with_a_camera_head,
+            "rover:\n  scanner:\n    type: forward_command_controller/ForwardCommandController\n"
+            "    joints: [camera_pan]",
+        ),
+        (
+            rover_with_a_camera_head,
+            "head: {type: position_controllers/JointTrajectoryController, joints: [camera_pan]}",
+        ),
+    ],
+    ids=["suspensions", "forward", "trajectory"],
+)
+def test_joint_controllers_given_a_ground_vehicles_mounts_or_head_take_joint_commands(
+    tmp_path: Path, robot: Callable[[], RobotText], controllers: str
+) -> None:
+    found = controls_of(configured(tmp_path, robot(), controllers))
+    assert found["Driving"]
+    assert found["Joint"].startswith("package craft_description: craft_description/config/")
+    assert found["Joint"].endswith(
+        "joint controllers naming a ground vehicle's mount or head joint"
+    )
+
+
+@pytest.mark.parametrize(
+    "controllers",
+    [
+        # The wheels' own speeds alone: the drive, no mount's joint.
+        SUSPENSIONS.replace("sus0_joint, sus1_joint, sus2_joint, sus3_joint", "wheel0_joint"),
+        # The suspensions only a state broadcaster lists.
+        SUSPENSIONS.replace("joints: [sus0_joint, sus1_joint, sus2_joint, sus3_joint]", "{}"),
+        # A file YAML cannot read (a tab before a key) says nothing.
+        SUSPENSIONS.replace("suspension_controller:\n  ros__parameters:", "x:\n\tros__parameters:"),
+    ],
+    ids=["wheels", "broadcaster", "unreadable"],
+)
+def test_no_controller_given_a_ground_vehicles_mounts_gives_it_no_joint_commands(
+    tmp_path: Path, controllers: str
+) -> None:
+    assert "Joint" not in controls_of(configured(tmp_path, rover_on_suspensions(), controllers))
+
+
+def test_a_flown_bodys_head_given_to_a_joint_controller_is_no_ground_vehicles(
+    tmp_path: Path,
+) -> None:
+    robot = quadrotor()
+    robot.chain(robot.root, ["camera_pan"])
+    head = "gimbal: {type: position_controllers/JointGroupPositionController, joints: [camera_pan]}"
+    assert "Joint" not in controls_of(configured(tmp_path, robot, head))
 
 
 @pytest.mark.parametrize(
