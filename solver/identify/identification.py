@@ -224,7 +224,9 @@ def identify_urdf(
             head_joint_controllers=_own_controllers(
                 packages, profile.gait, _limb_joints(body, "head")
             ),
-            vehicle_joint_controllers=_configured(packages, profile.gait, _vehicle_joints(body)),
+            vehicle_joint_controllers=_given_controllers(
+                packages, profile.gait, _vehicle_joints(body)
+            ),
         ),
         shipped,
     ]
@@ -290,7 +292,7 @@ def _own_controllers(
     return None if packages is None else per_joint_controllers(packages, rule, joints)
 
 
-def _configured(
+def _given_controllers(
     packages: Workspace | None, rule: SoftwareRule | None, joints: Collection[str]
 ) -> str | None:
     """The controller configuration of the robot's packages that gives a joint controller one

@@ -188,7 +188,7 @@ def _own_controller(source: str, shown_file: str | None, where: str) -> _Shown:
     return [(source, f"{shown_file}: a controller of a joint's own on {where}")]
 
 
-def _configured(shown_file: str | None) -> _Shown:
+def _vehicle_controllers(shown_file: str | None) -> _Shown:
     """A ground vehicle's mount or head joints (a suspension, a steering knuckle, a wheel-leg's
     hip, a sensor's pan or tilt) named by a joint controller its packages configure
     (``shown_file``, the file that shows it): they take commands one by one, beside the drive
@@ -447,7 +447,7 @@ def controls_from_description(
     (:func:`solver.identify.shipped.per_joint_controllers`); ``mount_joint_controllers`` and
     ``head_joint_controllers``: the same for a flown or swimming body's mount and for a head;
     ``vehicle_joint_controllers``: the file that configures joint controllers naming a ground
-    vehicle's mount or head joint (:func:`solver.identify.shipped.configured_joints`)."""
+    vehicle's mount or head joint (:func:`solver.identify.shipped.controller_joints`)."""
     effectors = () if srdf is None else hand_effectors(body, srdf, urdf)  # once per SRDF
     shown = [
         *_ground(body, urdf_source),
@@ -457,7 +457,7 @@ def controls_from_description(
             "mount_joint_controllers", mount_joint_controllers, "a rotor's or thruster's mount"
         ),
         *_own_controller("head_joint_controllers", head_joint_controllers, "a pan/tilt head"),
-        *_configured(vehicle_joint_controllers),
+        *_vehicle_controllers(vehicle_joint_controllers),
         *_limbs(
             body,
             urdf_source,

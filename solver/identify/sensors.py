@@ -33,7 +33,7 @@ from dataclasses import dataclass
 
 from solver.core.ruleset import RuleSet
 from solver.identify.limbs import moved_by
-from solver.identify.pose import Poses, distance, same_way
+from solver.identify.pose import Poses, Vector, distance, same_way
 from solver.identify.profile import SENSOR_TYPE, Profile
 from solver.identify.readers.urdf import Joint, PluginTag, SensorTag, Urdf
 from solver.untrusted import shown
@@ -395,8 +395,9 @@ def _rgbd_frames(found: list[Detection], urdf: Urdf) -> list[Detection]:
     device's name, ``kinect``), is one device: the first stays. Two depth cameras on one mount
     further apart or facing apart (a front and a rear camera on ``base_link``) are two. Plain
     cameras beside a depth camera stay cameras (a head's two cameras and its depth sensor),
-    unless the link they share is the camera's own body (:func:`_stream_of`) or they hang
-    beneath the body that carries the depth stream (:func:`_stream_beneath_body`)."""
+    unless the link they share is the camera's own body (:func:`_stream_of`), they hang
+    beneath the body that carries the depth stream (:func:`_stream_beneath_body`), or they hang
+    from a camera's body beside the depth stream's frame (:meth:`_DepthFrames.holds_stream`)."""
     mounts: dict[int, Joint] = {}
     for detection in found:
         if detection.kind == "depth_camera" and detection.link is not None:
@@ -414,41 +415,19 @@ def _rgbd_frames(found: list[Detection], urdf: Urdf) -> list[Detection]:
                 here.append((detection, joint))
             owner_of[id(detection)] = near or detection
     bodies = _depth_bodies(found)
-    depths = _depth_streams(found)
-    poses: list[Poses] = []  # computed once, when a camera and a depth stream are compared
+    beside = _DepthFrames(found, urdf)
     kept = []
     for detection in found:
         owner = owner_of.get(id(detection))
         own = owner is None or owner is detection or owner.link == detection.link
-        if own and not _a_cameras_stream(
-            detection, urdf, poses, owners=owners, bodies=bodies, depths=depths
+        if (
+            own
+            and not _stream_of(detection, owners, urdf)
+            and not _stream_beneath_body(detection, bodies, urdf)
+            and not beside.holds_stream(detection)
         ):
             kept.append(detection)
     return kept
-
-
-def _a_cameras_stream(
-    detection: Detection,
-    urdf: Urdf,
-    poses: list[Poses],
-    *,
-    owners: dict[str, list[tuple[Detection, Joint]]],
-    bodies: dict[str, str],
-    depths: list[Detection],
-) -> bool:
-    """A plain camera that is an RGB-D camera's colour or infrared stream, by one of the three
-    ways a description writes them (:func:`_stream_of`, :func:`_stream_beneath_body`,
-    :func:`_stream_beside_depth`)."""
-    return (
-        _stream_of(detection, owners, urdf)
-        or _stream_beneath_body(detection, bodies, urdf)
-        or _stream_beside_depth(detection, depths, urdf, poses)
-    )
-
-
-def _depth_streams(found: list[Detection]) -> list[Detection]:
-    """The depth cameras found on a frame of the description."""
-    return [d for d in found if d.kind == "depth_camera" and d.link is not None]
 
 
 def _depth_bodies(found: list[Detection]) -> dict[str, str]:
@@ -485,63 +464,79 @@ def _stream_beneath_body(detection: Detection, bodies: dict[str, str], urdf: Urd
     return False
 
 
-def _stream_beside_depth(
-    detection: Detection, depths: list[Detection], urdf: Urdf, poses: list[Poses]
-) -> bool:
-    """A plain camera on a frame that hangs, as a depth stream's frame does, from one camera's
-    body (a link named for a camera, the camera's frame named for it up to its camera word;
-    each frame :data:`_DEVICE_DEPTH` fixed joints down at most, their offsets adding up to
-    :data:`STREAM_REACH` at most) and faces the depth stream's way (its x and z axes the depth
-    frame's, every joint at rest) is that camera's colour stream: an RGB-D macro's colour and
-    depth optical frames, each turned the optical way under the camera's link. A camera turned
-    another way (a rear camera on the same bracket) is a camera of its own. ``poses``: the
-    caller's, filled on the first comparison."""
-    if detection.kind != "camera" or detection.link is None or not depths:
-        return False
-    for body, reach in _fixed_above(detection.link, urdf):
-        named = _CAMERA_BODY.search(body)
-        if (
-            named is None
-            or reach > STREAM_REACH
-            or not detection.link.startswith(body[: named.end()])
-        ):
-            continue
-        for depth in depths:
-            if depth.link is None:
-                continue
-            theirs = dict([(depth.link, 0.0), *_fixed_above(depth.link, urdf)]).get(body)
-            if theirs is not None and theirs <= STREAM_REACH:
-                if not poses:
-                    poses.append(Poses(urdf))
-                if _facing_alike(detection.link, depth.link, poses[0]):
-                    return True
-    return False
+class _DepthFrames:
+    """The depth streams' frames by the camera's body each hangs from (a link named for a
+    camera, the frame named for it up to its camera word, :data:`_DEVICE_DEPTH` fixed joints
+    down at most, their offsets adding up to :data:`STREAM_REACH` at most), found once; every
+    link's place and turn computed once, when a camera is first compared with one."""
+
+    def __init__(self, found: list[Detection], urdf: Urdf) -> None:
+        self.urdf = urdf
+        self._by_body: dict[str, set[str]] = {}
+        self._poses: Poses | None = None
+        self._frames: dict[str, tuple[Vector, Vector, Vector]] = {}
+        for detection in found:
+            if detection.kind == "depth_camera" and detection.link is not None:
+                for body in _bodies_above(detection.link, urdf, with_itself=True):
+                    self._by_body.setdefault(body, set()).add(detection.link)
+
+    def holds_stream(self, detection: Detection) -> bool:
+        """A plain camera on a frame that hangs from a camera's body as a depth stream's frame
+        does, within :data:`STREAM_REACH` of it and turned as it is (their x and z axes one way,
+        every joint at rest), is that RGB-D camera's colour stream: an RGB-D macro's colour and
+        depth optical frames, each turned the optical way under the camera's link. A camera
+        turned another way (a rear camera on the same bracket) or further off is one of its
+        own; a turn its sensor's own ``<pose>`` gives is not read."""
+        if detection.kind != "camera" or detection.link is None:
+            return False
+        return any(
+            self._alike(detection.link, depth)
+            for body in _bodies_above(detection.link, self.urdf)
+            for depth in self._by_body.get(body, ())
+        )
+
+    def _alike(self, one: str, other: str) -> bool:
+        (place, x, z), (theirs, their_x, their_z) = self._frame(one), self._frame(other)
+        near = distance(place, theirs) <= STREAM_REACH
+        return near and same_way(x, their_x) and same_way(z, their_z)
+
+    def _frame(self, link: str) -> tuple[Vector, Vector, Vector]:
+        """The link's place and its x and z axes, in the root's frame."""
+        if link not in self._frames:
+            if self._poses is None:
+                self._poses = Poses(self.urdf)
+            poses = self._poses
+            turned = [poses.turned(link, _AT_REST, axis) for axis in (_X, _Z)]
+            self._frames[link] = (poses.place(link), turned[0], turned[1])
+        return self._frames[link]
 
 
-def _fixed_above(link: str, urdf: Urdf) -> list[tuple[str, float]]:
-    """The links above ``link`` through :data:`_DEVICE_DEPTH` fixed joints at most, nearest
-    first, each with the joints' offsets added up to it."""
-    found = []
+def _bodies_above(link: str, urdf: Urdf, *, with_itself: bool = False) -> list[str]:
+    """The links named for a camera's body that ``link`` hangs from (itself too, with
+    ``with_itself``) through :data:`_DEVICE_DEPTH` fixed joints at most, their offsets adding
+    up to :data:`STREAM_REACH` at most, ``link`` named for each (up to its camera word)."""
+    found = [link] if with_itself else []
     reach = 0.0
+    here = link
     for _ in range(_DEVICE_DEPTH):
-        joint = urdf.parent_joint(link)
+        joint = urdf.parent_joint(here)
         if joint is None or joint.movable:
             break
         reach += math.hypot(*joint.origin)
-        link = joint.parent
-        found.append((link, reach))
-    return found
-
-
-def _facing_alike(one: str, other: str, poses: Poses) -> bool:
-    """The two links' frames are turned alike (their x and z axes point one way)."""
-    return all(
-        same_way(poses.turned(one, _AT_REST, axis), poses.turned(other, _AT_REST, axis))
-        for axis in ((1.0, 0.0, 0.0), (0.0, 0.0, 1.0))
-    )
+        if reach > STREAM_REACH:
+            break
+        here = joint.parent
+        found.append(here)
+    return [
+        body
+        for body in found
+        if (named := _CAMERA_BODY.search(body)) is not None and link.startswith(body[: named.end()])
+    ]
 
 
 _AT_REST = (0.0, 0.0, 0.0)
+_X = (1.0, 0.0, 0.0)
+_Z = (0.0, 0.0, 1.0)
 
 
 def _one_device(first: Joint, second: Joint) -> bool:

@@ -59,6 +59,7 @@ from solver.untrusted import SHOWN_FILE_NAME_CHARS, shown
 
 __all__ = [
     "body_from_workspace",
+    "controller_joints",
     "controls_from_workspace",
     "joint_controllers",
     "named_joints",
@@ -166,14 +167,19 @@ def controller_joints(
     """The first controller configuration of the robot's packages (a YAML file) that gives a
     joint controller (its ``type`` found by ``controllers``, the profile's
     ``motion.gait.controllers``) one of the ``joints`` to command, by its name after a
-    namespace: in its ``joints`` list or as its ``joint``, beside its type (ROS 1) or under
-    its ``ros__parameters`` (ROS 2, its type given to the controller manager). A joint only a
-    state broadcaster lists, or another controller in the same file commands, is not one.
-    A file YAML cannot read (a tab, a template) says nothing; found in packages read in part
-    too: what was read says it."""
+    namespace: in its ``joints`` list or as its ``joint``, in the controller's own block (ROS 1,
+    or ROS 2 with the type under its ``ros__parameters``), or under the ``ros__parameters`` of
+    the block named as the controller the controller manager is given (ROS 2; a node name by
+    its last part, ``/rover/sus_ctrl``). A joint only a state broadcaster lists, or another
+    controller commands, is not one. A file YAML cannot read, or longer than any controller
+    configuration (:data:`_CONFIGURATION_CHARS`), says nothing; a joint written through a
+    launch argument (``$(arg prefix)sus0_joint``) is no joint's name. Found in packages read in
+    part too: what was read says it."""
     words = {tail for name in joints if _WORD.fullmatch(tail := name.rsplit("/", 1)[-1])}
+    if not words:
+        return None
     for shipped in workspace.files:
-        if not words or not shipped.path.endswith((".yaml", ".yml")):
+        if not shipped.path.endswith((".yaml", ".yml")) or len(shipped.text) > _CONFIGURATION_CHARS:
             continue
         if controllers.find(shipped.text) is None or not named_joints(
             replace(workspace, files=(shipped,)), words
@@ -186,16 +192,23 @@ def controller_joints(
     return None
 
 
+# The longest controller configuration read (characters): the sample's are 13 kB at most; a
+# longer YAML file is a map or a data set, and parsing it would cost seconds for nothing.
+_CONFIGURATION_CHARS = 64 * 1024
+
+
 def _controllers(text: str, name: str) -> list[tuple[str, frozenset[str]]]:
-    """Each controller a YAML configuration declares, by the key it is under: its type and
-    the joints it is given (``joints`` or ``joint``, beside the type or under the key's
-    ``ros__parameters`` anywhere in the file). Nothing from a text YAML cannot read."""
+    """Each controller a YAML configuration declares: its type and the joints it is given. A
+    block with a ``type`` (beside it or under its ``ros__parameters``) is a controller, given
+    the joints of that block; one given none there (a controller manager's list of types) is
+    given those of the block named as it elsewhere in the file that has no type of its own.
+    Nothing from a text YAML cannot read."""
     try:
         data = parse_document(text, name, tolerate=("duplicate-key",)).data
     except InputError:
         return []
-    types: dict[str, str] = {}
-    given: dict[str, set[str]] = {}
+    typed: list[tuple[str, str, frozenset[str]]] = []  # (name, type, joints of its block)
+    untyped: dict[str, set[str]] = {}  # a block's name -> the joints it lists, no type beside
     stack: list[tuple[str, object]] = [("", data)]
     while stack:
         key, value = stack.pop()
@@ -204,13 +217,19 @@ def _controllers(text: str, name: str) -> list[tuple[str, frozenset[str]]]:
             continue
         if not isinstance(value, dict):
             continue
-        if isinstance(value.get("type"), str):
-            types[key] = value["type"]
-        for held in (value, value.get("ros__parameters")):
-            if isinstance(held, dict):
-                given.setdefault(key, set()).update(_joint_names(held))
-        stack.extend((str(k), v) for k, v in value.items())
-    return [(kind, frozenset(given.get(key, ()))) for key, kind in types.items()]
+        own = value.get("ros__parameters")
+        blocks = [value, *([own] if isinstance(own, dict) else [])]
+        kind = next((b["type"] for b in blocks if isinstance(b.get("type"), str)), None)
+        listed = frozenset(n for block in blocks for n in _joint_names(block))
+        if kind is not None:
+            typed.append((key, kind, listed))
+        elif listed:
+            untyped.setdefault(key, set()).update(listed)
+        # Each block below, its own parameters' too (a manager's controllers), named by its key;
+        # a node's name by its last part (``/rover/sus_ctrl``), as the manager names it.
+        below = [(k, v) for block in blocks for k, v in block.items() if v is not own]
+        stack.extend((str(k).rsplit("/", 1)[-1], v) for k, v in below)
+    return [(kind, listed or frozenset(untyped.get(key, ()))) for key, kind, listed in typed]
 
 
 def _joint_names(block: dict[object, object]) -> set[str]:

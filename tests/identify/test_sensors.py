@@ -920,6 +920,20 @@ def test_colour_and_depth_streams_on_an_rgbd_cameras_optical_frames_are_one_devi
     assert realsense_on_optical_frames("-1.5708 0 1.5708") == {"camera": 1, "depth_camera": 1}
 
 
+def test_a_camera_and_a_depth_camera_of_two_devices_on_one_camera_bracket_stay_two() -> None:
+    robot = builders.ugv()
+    bracket = robot.fixed(robot.root, "camera_mount")
+    # A webcam named for the bracket and a time-of-flight camera named for nothing, 16 cm apart.
+    for frame, y, kind in (
+        ("camera_webcam_link", "0.08", "camera"),
+        ("tof_link", "-0.08", "depth"),
+    ):
+        builders.placed(robot, f"{frame}_joint", "fixed", bracket, frame, xyz=f"0 {y} 0")
+        robot.add(builders.gazebo_sensor(frame, kind, frame))
+    found = {s.kind: s.count for s in identify_urdf(robot.text()).sensors}
+    assert found == {"camera": 1, "depth_camera": 1}
+
+
 def bolted(name: str, joint: str, *, under: str = "camera_link") -> str:
     """A camera ``name`` on its own frame under ``under``, by ``joint``'s kind and place."""
     kind, _, place = joint.partition(" ")

@@ -1405,8 +1405,15 @@ joint_state_broadcaster:
             rover_with_a_camera_head,
             "head: {type: position_controllers/JointTrajectoryController, joints: [camera_pan]}",
         ),
+        # ROS 2 nodes named with a namespace: the manager names the controller by its last part.
+        (
+            rover_on_suspensions,
+            "/rover/controller_manager:\n  ros__parameters:\n    sus:\n"
+            "      type: position_controllers/JointGroupPositionController\n"
+            "/rover/sus:\n  ros__parameters:\n    joints: [sus0_joint]",
+        ),
     ],
-    ids=["suspensions", "forward", "trajectory"],
+    ids=["suspensions", "forward", "trajectory", "node-names"],
 )
 def test_joint_controllers_given_a_ground_vehicles_mounts_or_head_take_joint_commands(
     tmp_path: Path, robot: Callable[[], RobotText], controllers: str
@@ -1428,8 +1435,15 @@ def test_joint_controllers_given_a_ground_vehicles_mounts_or_head_take_joint_com
         SUSPENSIONS.replace("joints: [sus0_joint, sus1_joint, sus2_joint, sus3_joint]", "{}"),
         # A file YAML cannot read (a tab before a key) says nothing.
         SUSPENSIONS.replace("suspension_controller:\n  ros__parameters:", "x:\n\tros__parameters:"),
+        # Each controller's type under its own parameters: the broadcaster's joints are its own.
+        "mast: {ros__parameters: {type: position_controllers/JointGroupPositionController, "
+        "joints: [mast_joint]}}\n"
+        "broadcaster: {ros__parameters: {type: joint_state_broadcaster/JointStateBroadcaster, "
+        "joints: [sus0_joint]}}",
+        # Longer than any controller configuration: a map or a data set, not read.
+        SUSPENSIONS + "# " + "x" * 70_000 + "\npoints: [" + "0, " * 30_000 + "0]\n",
     ],
-    ids=["wheels", "broadcaster", "unreadable"],
+    ids=["wheels", "broadcaster", "unreadable", "own-parameters", "too-long"],
 )
 def test_no_controller_given_a_ground_vehicles_mounts_gives_it_no_joint_commands(
     tmp_path: Path, controllers: str
