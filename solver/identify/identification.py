@@ -305,8 +305,8 @@ def _given_controllers(
 
 def _vehicle_joints(body: Body) -> list[str]:
     """The joints a ground vehicle moves besides its wheels' spin: its mounts' (a suspension,
-    a steering knuckle, a wheel-leg's hip) and its heads' (a sensor's pan or tilt); none on a
-    body that is no ground vehicle."""
+    a steered axle, a wheel-leg's hip; not a joint read as steering) and its heads' (a
+    sensor's pan or tilt); none on a body that is no ground vehicle."""
     if not body.mobile_base or body.flying or body.marine:
         return []
     return [*_limb_joints(body, "mount"), *_limb_joints(body, "head")]

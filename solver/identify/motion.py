@@ -189,7 +189,7 @@ def _own_controller(source: str, shown_file: str | None, where: str) -> _Shown:
 
 
 def _vehicle_controllers(shown_file: str | None) -> _Shown:
-    """A ground vehicle's mount or head joints (a suspension, a steering knuckle, a wheel-leg's
+    """A ground vehicle's mount or head joints (a suspension, a steered axle, a wheel-leg's
     hip, a sensor's pan or tilt) named by a joint controller its packages configure
     (``shown_file``, the file that shows it): they take commands one by one, beside the drive
     (a transmission or a ``ros2_control`` block alone says nothing of who commands them)."""
