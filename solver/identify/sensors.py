@@ -395,9 +395,9 @@ def _rgbd_frames(found: list[Detection], urdf: Urdf) -> list[Detection]:
     device's name, ``kinect``), is one device: the first stays. Two depth cameras on one mount
     further apart or facing apart (a front and a rear camera on ``base_link``) are two. Plain
     cameras beside a depth camera stay cameras (a head's two cameras and its depth sensor),
-    unless the link they share is the camera's own body (:func:`_stream_of`), they hang
-    beneath the body that carries the depth stream (:func:`_stream_beneath_body`), or they hang
-    from a camera's body beside the depth stream's frame (:meth:`_DepthFrames.holds_stream`)."""
+    unless the link they share is the camera's own body (:func:`_stream_of`) or they hang from
+    a camera's body as the depth stream's frame does, or from the body that carries it
+    (:meth:`_DepthFrames.holds_stream`)."""
     mounts: dict[int, Joint] = {}
     for detection in found:
         if detection.kind == "depth_camera" and detection.link is not None:
@@ -414,54 +414,14 @@ def _rgbd_frames(found: list[Detection], urdf: Urdf) -> list[Detection]:
             if near is None:
                 here.append((detection, joint))
             owner_of[id(detection)] = near or detection
-    bodies = _depth_bodies(found)
     beside = _DepthFrames(found, urdf)
     kept = []
     for detection in found:
         owner = owner_of.get(id(detection))
         own = owner is None or owner is detection or owner.link == detection.link
-        if (
-            own
-            and not _stream_of(detection, owners, urdf)
-            and not _stream_beneath_body(detection, bodies, urdf)
-            and not beside.holds_stream(detection)
-        ):
+        if own and not _stream_of(detection, owners, urdf) and not beside.holds_stream(detection):
             kept.append(detection)
     return kept
-
-
-def _depth_bodies(found: list[Detection]) -> dict[str, str]:
-    """The links named as a camera's body (:data:`_CAMERA_BODY`) that carry a depth stream,
-    each with the name its streams' frames begin with (its own, up to its camera word)."""
-    return {
-        d.link: d.link[: named.end()]
-        for d in found
-        if d.kind == "depth_camera"
-        and d.link is not None
-        and (named := _CAMERA_BODY.search(d.link)) is not None
-    }
-
-
-def _stream_beneath_body(detection: Detection, bodies: dict[str, str], urdf: Urdf) -> bool:
-    """A plain camera on a frame named for a camera's body that carries a depth stream (as the
-    body's name up to its camera word: ``camera_color_frame`` for ``camera_link`` or
-    ``camera_depth_frame``), fixed beneath it facing its way (:data:`_DEVICE_DEPTH` fixed joints
-    down at most, none turned, their offsets adding up to :data:`STREAM_REACH` at most: a
-    RealSense macro's colour and infrared frames under the ``camera_link`` its depth sensor is
-    on) is one of that camera's streams; a thermal camera or a rear camera bolted to its bracket
-    is not."""
-    if detection.kind != "camera" or detection.link is None:
-        return False
-    link, reach = detection.link, 0.0
-    for _ in range(_DEVICE_DEPTH):
-        joint = urdf.parent_joint(link)
-        if joint is None or joint.movable or any(abs(turn) > 1e-6 for turn in joint.rpy):
-            return False
-        reach += math.hypot(*joint.origin)
-        link = joint.parent
-        if link in bodies:
-            return reach <= STREAM_REACH and detection.link.startswith(bodies[link])
-    return False
 
 
 class _DepthFrames:
@@ -482,11 +442,14 @@ class _DepthFrames:
 
     def holds_stream(self, detection: Detection) -> bool:
         """A plain camera on a frame that hangs from a camera's body as a depth stream's frame
-        does, within :data:`STREAM_REACH` of it and turned as it is (their x and z axes one way,
-        every joint at rest), is that RGB-D camera's colour stream: an RGB-D macro's colour and
-        depth optical frames, each turned the optical way under the camera's link. A camera
-        turned another way (a rear camera on the same bracket) or further off is one of its
-        own; a turn its sensor's own ``<pose>`` gives is not read."""
+        does, or from the body that carries the depth stream itself, within
+        :data:`STREAM_REACH` of it and turned as it is (their x and z axes one way, every joint
+        at rest), is that RGB-D camera's colour or infrared stream: an RGB-D macro's colour and
+        depth optical frames, each turned the optical way under the camera's link; a RealSense
+        macro's colour and infrared frames beneath the ``camera_link`` its depth sensor is on.
+        A camera turned another way (a rear camera on the same bracket), further off, or on a
+        frame not named for the body (a thermal camera bolted to it) is one of its own; a turn
+        its sensor's own ``<pose>`` gives is not read."""
         if detection.kind != "camera" or detection.link is None:
             return False
         return any(
@@ -506,7 +469,7 @@ class _DepthFrames:
             if self._poses is None:
                 self._poses = Poses(self.urdf)
             poses = self._poses
-            turned = [poses.turned(link, _AT_REST, axis) for axis in (_X, _Z)]
+            turned = [poses.turned(link, _NO_TURN, axis) for axis in (_X, _Z)]
             self._frames[link] = (poses.place(link), turned[0], turned[1])
         return self._frames[link]
 
@@ -534,7 +497,7 @@ def _bodies_above(link: str, urdf: Urdf, *, with_itself: bool = False) -> list[s
     ]
 
 
-_AT_REST = (0.0, 0.0, 0.0)
+_NO_TURN = (0.0, 0.0, 0.0)
 _X = (1.0, 0.0, 0.0)
 _Z = (0.0, 0.0, 1.0)
 
