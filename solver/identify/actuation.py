@@ -813,36 +813,24 @@ def _rolls_across(tree: JointTree, joint: Joint) -> bool:
 
 def _steered_wheels(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Role]:
     """Endless leaves of no role yet, or wheels already, each the only moving joint on the link
-    of a joint named for steering (``steer_front_left_joint``) of no role yet, or read as a
-    gripper's (a link named ``finger_*`` or ``knuckle``: a wheel hangs from no gripper), that
-    turns about an upright axis, the leaf about a level one (both as the body rests), on both
-    sides of the body: steered wheels (a wheel keeps the evidence it was found by) and their
-    steering, whatever corner words their names carry (``front_left`` names a leg's corner as
-    well as a wheel's; a leg is never steered)."""
+    of a joint of no role yet, or read as a gripper's (a link named ``finger_*`` or
+    ``knuckle``: a wheel hangs from no gripper), that turns about an upright axis, the leaf
+    about a level one (both as the body rests), on both sides of the body: steered wheels (a
+    wheel keeps the evidence it was found by) and their steering, when the joint above is
+    named for steering (``steer_front_left_joint``) or the leaf turns a tyre
+    (:func:`_a_tyre`), whatever corner or limb words their names carry (``front_left`` names a
+    leg's corner as well as a wheel's, ``front_right_arm`` a disc on a swivel; a leg is never
+    steered)."""
     found: dict[str, Role] = {}
     wheels: list[Joint] = []
     for leaf in tree.urdf.joints:
-        if (
-            not leaf.endless
-            or _role(roles, leaf.name) not in (None, "wheel")
-            or leaf.child in tree.moving_below
-        ):
-            continue
-        steer = tree.urdf.parent_joint(leaf.parent)
-        if (
-            steer is None
-            or _role(roles, steer.name) not in (None, "gripper")
-            or not steer.movable
-            or steer.type not in ("revolute", "continuous")
-            or not _STEER.search(steer.name)
-            or not _upright(tree.poses.axis(steer))
-            or not _axle(tree.poses.axis(leaf))
-            or len([j for j in tree.urdf.children(leaf.parent) if j.movable]) != 1
-        ):
+        steer = _steering_above(tree, leaf, roles)
+        if steer is None:
             continue
         wheels.append(leaf)
+        said = "named for steering" if _STEER.search(steer.name) else "a swivel carrying a tyre"
         found[steer.name] = Role(
-            steer.name, "steering", f"named for steering, an upright axis carrying {leaf.name}"
+            steer.name, "steering", f"{said}, an upright axis carrying {leaf.name}"
         )
         found[leaf.name] = roles.get(leaf.name) or Role(
             leaf.name, "wheel", f"an endless leaf turning about a level axle below {steer.name}"
@@ -850,6 +838,35 @@ def _steered_wheels(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Rol
     if len(wheels) < 2 or not _sides({tree.poses.place(j.child)[1] for j in wheels}):
         return {}
     return found
+
+
+def _steering_above(tree: JointTree, leaf: Joint, roles: Mapping[str, Role]) -> Joint | None:
+    """The joint that steers ``leaf`` as :func:`_steered_wheels` reads it, or None."""
+    if (
+        not leaf.endless
+        or _role(roles, leaf.name) not in (None, "wheel")
+        or leaf.child in tree.moving_below
+    ):
+        return None
+    steer = tree.urdf.parent_joint(leaf.parent)
+    if (
+        steer is None
+        or _role(roles, steer.name) not in (None, "gripper")
+        or not steer.movable
+        or steer.type not in ("revolute", "continuous")
+        or not (_STEER.search(steer.name) or _a_tyre(tree, leaf))
+        or not _upright(tree.poses.axis(steer))
+        or not _axle(tree.poses.axis(leaf))
+        or len([j for j in tree.urdf.children(leaf.parent) if j.movable]) != 1
+    ):
+        return None
+    return steer
+
+
+def _a_tyre(tree: JointTree, joint: Joint) -> bool:
+    """The part ``joint`` turns is drawn as a cylinder round its axle (:func:`_drawn_round`)
+    and not known to hang its mass off it (:func:`_balance`): a tyre, whatever its name."""
+    return _drawn_round(tree, joint) and _balance(tree, joint) is not False
 
 
 def _role(roles: Mapping[str, Role], name: str) -> str | None:

@@ -1372,6 +1372,52 @@ def test_a_steering_joint_whose_link_is_named_like_a_finger_still_steers_its_whe
     assert (result.structure, result.body.grippers) == ("UGV", 0)
 
 
+def swivelled_discs(shape: str) -> str:
+    """A box with, at each corner, a swivel about the upright (``<corner>_arm_turn``) carrying
+    one endless joint about a level axle (``<corner>_arm``) that turns a part drawn as
+    ``shape`` (a disc stood on its edge, or a bar hanging down), its mass at the joint: names
+    a four-legged body's corners and an arm's, no wheel's or steering's."""
+    parts = ['<link name="base_link"/>']
+    for corner, x, y in (("front_right", 0.6, -0.6), ("front_left", 0.6, 0.6),
+                         ("back_right", -0.6, -0.6), ("back_left", -0.6, 0.6)):  # fmt: skip
+        parts += [
+            f'<link name="{corner}_arm_turn"/>',
+            f'<link name="{corner}_arm"><visual><origin rpy="1.5708 0 0"/><geometry>{shape}'
+            '</geometry></visual><inertial><mass value="1"/>'
+            '<inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.1"/></inertial></link>',
+            builders.joint_xml(
+                f"base_to_{corner}_arm_turn", "continuous", "base_link", f"{corner}_arm_turn",
+                f"{x} {y} 0", "0 0 1",
+            ),
+            builders.joint_xml(
+                f"base_to_{corner}_arm", "continuous", f"{corner}_arm_turn", f"{corner}_arm",
+                "0 0 0", "0 1 0",
+            ),
+        ]  # fmt: skip
+    return '<robot name="discs">' + "".join(parts) + "</robot>"
+
+
+def test_discs_on_swivels_at_the_corners_are_steered_wheels_whatever_their_names_say() -> None:
+    # Fresh set 588: a student's four-wheel-steered robot names its wheels front_right_arm
+    # (a leg's corner and an arm's word) and its swivels front_right_arm_turn; each turns a
+    # cylinder about its own axis, a tyre, about a level axle below an upright swivel.
+    result = identify_urdf(swivelled_discs('<cylinder radius="0.5" length="0.125"/>'))
+    assert result.body is not None
+    roles = {role.joint: role for role in result.body.roles}
+    assert roles["base_to_front_right_arm_turn"].role == "steering"
+    assert "tyre" in roles["base_to_front_right_arm_turn"].evidence
+    assert roles["base_to_front_right_arm"].role == "wheel"
+    assert (result.structure, result.body.count("leg")) == ("UGV", 0)
+
+
+def test_a_bar_on_a_swivel_is_no_steered_wheel() -> None:
+    # The same joints turning a bar stood across the axle (no cylinder round it): nothing
+    # says a wheel, and a swivel that steers no wheel steers nothing.
+    result = identify_urdf(swivelled_discs('<box size="0.05 1.0 0.05"/>'))
+    assert result.body is not None
+    assert not [role for role in result.body.roles if role.role in ("steering", "wheel")]
+
+
 def test_unnamed_wheels_steered_by_joints_upright_only_as_the_body_rests_are_wheels() -> None:
     # A planetary rover: each wheel on a driven steering joint hung from a passive deployment
     # link whose frame is turned (a quarter about x, then about z), so the steering axis,
