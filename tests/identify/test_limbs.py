@@ -807,6 +807,39 @@ def test_two_leg_chains_from_one_hip_point_hinged_in_one_plane_are_one_four_bar_
     assert all("four-bar" in limb.why for limb in body.limbs)
 
 
+def abducted_five_bar_legs(*, hip: str = "revolute") -> RobotText:
+    """A biped (fresh set 585's, its five-bar legs drawn open): on each side an abduction
+    joint about x (``hip``: its kind) carries two motors about y, side by side on one axle
+    2 cm apart, their chains 18 and 24 cm long to their knees, ending far apart."""
+    robot = RobotText("five_bar_biped")
+    for side, sign in (("left", 1), ("right", -1)):
+        abad = builders.placed(
+            robot, f"{side}_abad_joint", hip, robot.root, f"leg_{side}_abad", axis="1 0 0"
+        )
+        for half, y, depth in (("front", 0.088, 0.182), ("rear", 0.109, 0.242)):
+            top = builders.placed(
+                robot, f"{side}_{half}_joint", "revolute", abad, f"leg_{side}_{half}_top",
+                xyz=f"0 {sign * y} 0", axis="0 1 0",
+            )  # fmt: skip
+            builders.placed(
+                robot, f"{side}_{half}_joint2", "revolute", top, f"leg_{side}_{half}_bot",
+                xyz=f"0 0 -{depth}", axis="0 1 0",
+            )  # fmt: skip
+    return robot
+
+
+def test_two_motors_side_by_side_on_one_axle_a_hips_abduction_carries_are_one_leg() -> None:
+    body = detect_body(parse_urdf(abducted_five_bar_legs().text()), load_profile())
+    assert body.count("leg") == 2
+    assert all(len(limb.joints) == 4 for limb in body.limbs if limb.kind == "leg")
+
+
+def test_motors_side_by_side_on_one_axle_of_a_sliding_part_are_two_legs_each() -> None:
+    # Below a slide, no hip's hinge: the link is no leg's place, each chain a leg of its own.
+    body = detect_body(parse_urdf(abducted_five_bar_legs(hip="prismatic").text()), load_profile())
+    assert body.count("leg") == 4
+
+
 def test_a_planar_walkers_two_legs_from_its_one_hip_point_stay_two_legs() -> None:
     robot = RobotText("planar_biped", root="torso")
     for side in ("left", "right"):
