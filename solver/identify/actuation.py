@@ -812,23 +812,17 @@ def _rolls_across(tree: JointTree, joint: Joint) -> bool:
 
 
 def _steered_wheels(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Role]:
-    """Endless leaves of no role yet, or wheels already, each the only moving joint on the link
-    of a joint of no role yet, or read as a gripper's (a link named ``finger_*`` or
-    ``knuckle``: a wheel hangs from no gripper), that turns about an upright axis, the leaf
-    about a level one (both as the body rests), on both sides of the body: steered wheels (a
-    wheel keeps the evidence it was found by) and their steering, when the joint above is
-    named for steering (``steer_front_left_joint``) or the leaf turns a tyre
-    (:func:`_a_tyre`), whatever corner or limb words their names carry (``front_left`` names a
-    leg's corner as well as a wheel's, ``front_right_arm`` a disc on a swivel; a leg is never
-    steered)."""
+    """Steered wheels (a wheel keeps the evidence it was found by) and their steering, each
+    read by :func:`_steering_above`, when they are two or more on both sides of the body."""
     found: dict[str, Role] = {}
     wheels: list[Joint] = []
+    lowest = min((tree.poses.place(link.name)[2] for link in tree.urdf.links), default=0.0)
     for leaf in tree.urdf.joints:
-        steer = _steering_above(tree, leaf, roles)
-        if steer is None:
+        steered = _steering_above(tree, leaf, roles, lowest)
+        if steered is None:
             continue
+        steer, said = steered
         wheels.append(leaf)
-        said = "named for steering" if _STEER.search(steer.name) else "a swivel carrying a tyre"
         found[steer.name] = Role(
             steer.name, "steering", f"{said}, an upright axis carrying {leaf.name}"
         )
@@ -840,8 +834,19 @@ def _steered_wheels(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Rol
     return found
 
 
-def _steering_above(tree: JointTree, leaf: Joint, roles: Mapping[str, Role]) -> Joint | None:
-    """The joint that steers ``leaf`` as :func:`_steered_wheels` reads it, or None."""
+def _steering_above(
+    tree: JointTree, leaf: Joint, roles: Mapping[str, Role], lowest: float
+) -> tuple[Joint, str] | None:
+    """The joint that steers ``leaf`` and why, or None. ``leaf`` is endless, of no role yet or
+    a wheel already, and the only moving joint on the link of a joint of no role yet, or read
+    as a gripper's (a link named ``finger_*`` or ``knuckle``: a wheel hangs from no gripper),
+    that turns about an upright axis, the leaf about a level one (both as the body rests);
+    the joint above is named for steering (``steer_front_left_joint``), or the leaf turns a
+    tyre that reaches the ground (:func:`_a_tyre`, its bottom no higher than ``lowest``, the
+    lowest link frame, and a centimetre), whatever corner or limb words their names carry
+    (``front_left`` names a leg's corner as well as a wheel's, ``front_right_arm`` a disc on a
+    swivel; a leg is never steered; a wrist's flange or a camera's drum on a tilt is no
+    tyre: it hangs above the body's lowest frames)."""
     if (
         not leaf.endless
         or _role(roles, leaf.name) not in (None, "wheel")
@@ -854,19 +859,35 @@ def _steering_above(tree: JointTree, leaf: Joint, roles: Mapping[str, Role]) -> 
         or _role(roles, steer.name) not in (None, "gripper")
         or not steer.movable
         or steer.type not in ("revolute", "continuous")
-        or not (_STEER.search(steer.name) or _a_tyre(tree, leaf))
         or not _upright(tree.poses.axis(steer))
         or not _axle(tree.poses.axis(leaf))
         or len([j for j in tree.urdf.children(leaf.parent) if j.movable]) != 1
     ):
         return None
-    return steer
+    if _STEER.search(steer.name):
+        return steer, "named for steering"
+    if _a_tyre(tree, leaf, lowest):
+        return steer, "a swivel carrying a tyre"
+    return None
 
 
-def _a_tyre(tree: JointTree, joint: Joint) -> bool:
-    """The part ``joint`` turns is drawn as a cylinder round its axle (:func:`_drawn_round`)
-    and not known to hang its mass off it (:func:`_balance`): a tyre, whatever its name."""
-    return _drawn_round(tree, joint) and _balance(tree, joint) is not False
+def _a_tyre(tree: JointTree, joint: Joint, lowest: float) -> bool:
+    """The part ``joint`` turns is drawn as a cylinder round its axle (:func:`_drawn_round`),
+    is not known to hang its mass off it (:func:`_balance`) and reaches down to ``lowest``
+    (within :data:`_GROUND_GAP`): a tyre on the ground, whatever its name."""
+    link = tree.urdf.link(joint.child)
+    shape = None if link is None else link.cylinder
+    return (
+        shape is not None
+        and tree.poses.place(joint.child)[2] - shape.radius <= lowest + _GROUND_GAP
+        and _drawn_round(tree, joint)
+        and _balance(tree, joint) is not False
+    )
+
+
+# How far above the body's lowest link frame a tyre's bottom may be (metres): a wheel's
+# bottom is the ground, where a footprint frame is drawn, or below every frame.
+_GROUND_GAP = 0.01
 
 
 def _role(roles: Mapping[str, Role], name: str) -> str | None:

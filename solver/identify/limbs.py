@@ -33,8 +33,9 @@ Where names say nothing, the chains' places and shapes still speak:
   body, are the two motors of one leg closed by a linkage (a five-bar leg, the loop a URDF
   cannot write): one leg (:func:`five_bars`), when the graph shows the loop: their ends meet
   (closer than their motors sit), or a mimic joint of one follows a joint of the other; or
-  when both hinge in one plane from one hip: at one point, or side by side on a link a hip's
-  hinge turns (its abduction carrying the leg's two motors on one axle). Two
+  when both hinge in one plane from one hip: at one point, or side by side on one side of
+  the hinge that turns their link (a hip's abduction carrying the leg's two motors on one
+  axle; a waist carries its two hips on either side). Two
   legs that hang from different points of the base and end as far apart as they start (a
   front and a rear hip turning about one line along the body) are two legs;
 * three or six alike chains, the body's only limbs, starting on a level circle a third of a
@@ -1894,7 +1895,12 @@ def _one_leg(tree: JointTree, one: Limb, other: Limb, *, several_hips: bool) -> 
     if several_hips and _one_hip(tree, one, other):
         return (
             "two motors of one four-bar leg (their first joints turn about one axis at one "
-            "point or side by side on it, both chains in one plane)"
+            "point, both chains in one plane)"
+        )
+    if _one_axle(tree, one, other):
+        return (
+            "two motors of one five-bar leg (side by side on one axle that a hip's hinge "
+            "carries, both chains in one plane)"
         )
     if (
         _beside(tree, one, other, on_line=False)
@@ -1909,37 +1915,48 @@ def _one_leg(tree: JointTree, one: Limb, other: Limb, *, several_hips: bool) -> 
 
 
 def _one_hip(tree: JointTree, one: Limb, other: Limb) -> bool:
-    """The first joints of two chains sit at one point, or side by side on one line on one
-    link a hinge turns (:func:`_on_one_hip`: two motors on one axle, 2 cm apart, that a hip's
-    abduction carries), every joint of both is a hinge about one axis, and the two are not
-    drawn over each other (:func:`_drawn_over`): two motors at one hip driving one leg's
-    linkage (a four-bar or a five-bar leg whose loop the file leaves open). A model drawn in a
-    side view puts a left and a right leg at one point, joint over joint; a walker's legs
-    side by side on one line (a hexapod's row) hang from its body, each its own hip."""
+    """The first joints of two chains sit at one point, every joint of both is a hinge about
+    one axis, and the two are not drawn over each other (:func:`_one_plane`): two motors at
+    one hip driving one leg's linkage (a four-bar leg whose loop the file leaves open). A
+    model drawn in a side view puts a left and a right leg at one point, joint over joint."""
     first, second = tree.urdf.joint(one.joints[0]), tree.urdf.joint(other.joints[0])
     if first is None or second is None:
         return False
-    apart = distance(tree.poses.place(first.child), tree.poses.place(second.child))
-    if apart >= _AT_ONE_POINT and not (
-        _coaxial(tree, one, other) and _on_one_hip(tree, first, second)
-    ):
+    if distance(tree.poses.place(first.child), tree.poses.place(second.child)) >= _AT_ONE_POINT:
         return False
+    return _one_plane(tree, one, other)
+
+
+def _one_axle(tree: JointTree, one: Limb, other: Limb) -> bool:
+    """The first joints of two chains sit side by side on one line (:func:`_coaxial`) on one
+    link, both on one side along that line of the hinge that turns the link (the nearest
+    movable joint above it), and the chains lie in one plane (:func:`_one_plane`): a hip's
+    abduction carrying one leg's two motors on one axle (a five-bar leg whose loop the file
+    leaves open). A waist turning a pelvis carries two hips on either side of it, and a
+    hexapod's row of legs on one line hangs from its body, each leg its own hip."""
+    first, second = tree.urdf.joint(one.joints[0]), tree.urdf.joint(other.joints[0])
+    if first is None or second is None or first.parent != second.parent:
+        return False
+    above = moved_by(tree.urdf, first.parent, {})
+    hip = None if above is None else tree.urdf.joint(above)
+    if hip is None or hip.type not in ("revolute", "continuous"):
+        return False
+    if not _coaxial(tree, one, other):
+        return False
+    pivot, axle = tree.poses.place(hip.child), tree.poses.axis(first)
+    sides = [dot(minus(tree.poses.place(j.child), pivot), axle) for j in (first, second)]
+    return sides[0] * sides[1] > 0 and _one_plane(tree, one, other)
+
+
+def _one_plane(tree: JointTree, one: Limb, other: Limb) -> bool:
+    """Every joint of both chains is a hinge about one axis, and the two are not drawn over
+    each other (:func:`_drawn_over`)."""
     joints = [tree.urdf.joint(name) for name in (*one.joints, *other.joints)]
     return (
         all(joint is not None for joint in joints)
         and _planar(tree, [joint for joint in joints if joint is not None])
         and not _drawn_over(tree, one, other)
     )
-
-
-def _on_one_hip(tree: JointTree, first: Joint, second: Joint) -> bool:
-    """``first`` and ``second`` hang from one link whose nearest movable joint above is a
-    hinge (a hip's abduction carrying both): one leg's place, not the body's."""
-    if first.parent != second.parent:
-        return False
-    hip = moved_by(tree.urdf, first.parent, {})
-    joint = None if hip is None else tree.urdf.joint(hip)
-    return joint is not None and joint.type in ("revolute", "continuous")
 
 
 def _drawn_over(tree: JointTree, one: Limb, other: Limb) -> bool:

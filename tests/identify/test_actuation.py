@@ -1372,11 +1372,12 @@ def test_a_steering_joint_whose_link_is_named_like_a_finger_still_steers_its_whe
     assert (result.structure, result.body.grippers) == ("UGV", 0)
 
 
-def swivelled_discs(shape: str) -> str:
-    """A box with, at each corner, a swivel about the upright (``<corner>_arm_turn``) carrying
-    one endless joint about a level axle (``<corner>_arm``) that turns a part drawn as
-    ``shape`` (a disc stood on its edge, or a bar hanging down), its mass at the joint: names
-    a four-legged body's corners and an arm's, no wheel's or steering's."""
+def swivelled_discs(shape: str, *, height: float = 0.0) -> str:
+    """A box with, at each corner, ``height`` metres up, a swivel about the upright
+    (``<corner>_arm_turn``) carrying one endless joint about a level axle (``<corner>_arm``)
+    that turns a part drawn as ``shape`` (a disc stood on its edge, or a bar hanging down),
+    its mass at the joint: names a four-legged body's corners and an arm's, no wheel's or
+    steering's."""
     parts = ['<link name="base_link"/>']
     for corner, x, y in (("front_right", 0.6, -0.6), ("front_left", 0.6, 0.6),
                          ("back_right", -0.6, -0.6), ("back_left", -0.6, 0.6)):  # fmt: skip
@@ -1387,7 +1388,7 @@ def swivelled_discs(shape: str) -> str:
             '<inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.1"/></inertial></link>',
             builders.joint_xml(
                 f"base_to_{corner}_arm_turn", "continuous", "base_link", f"{corner}_arm_turn",
-                f"{x} {y} 0", "0 0 1",
+                f"{x} {y} {height}", "0 0 1",
             ),
             builders.joint_xml(
                 f"base_to_{corner}_arm", "continuous", f"{corner}_arm_turn", f"{corner}_arm",
@@ -1408,6 +1409,15 @@ def test_discs_on_swivels_at_the_corners_are_steered_wheels_whatever_their_names
     assert "tyre" in roles["base_to_front_right_arm_turn"].evidence
     assert roles["base_to_front_right_arm"].role == "wheel"
     assert (result.structure, result.body.count("leg")) == ("UGV", 0)
+
+
+def test_discs_on_swivels_high_above_the_body_are_no_steered_wheels() -> None:
+    # Drums on two pan/tilt heads, a wrist's flange on each of two arms: a cylinder round the
+    # last joint's axle, under a swivel about the upright, on both sides of the body, whose
+    # bottom hangs above the body's lowest frame: no tyre on the ground (found in review).
+    result = identify_urdf(swivelled_discs('<cylinder radius="0.5" length="0.125"/>', height=0.8))
+    assert result.body is not None
+    assert not [role for role in result.body.roles if role.role in ("steering", "wheel")]
 
 
 def test_a_bar_on_a_swivel_is_no_steered_wheel() -> None:

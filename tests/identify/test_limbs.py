@@ -834,6 +834,25 @@ def test_two_motors_side_by_side_on_one_axle_a_hips_abduction_carries_are_one_le
     assert all(len(limb.joints) == 4 for limb in body.limbs if limb.kind == "leg")
 
 
+def test_a_waists_two_hips_on_one_axle_either_side_of_it_are_two_legs() -> None:
+    # A servo biped whose waist turns its pelvis, the torso's origin 10 cm to one side (an
+    # export's): both hips hang on the body's one side of that origin, on one axle 10 cm
+    # apart, hinged in one plane, but on either side of the waist: two legs (found in review).
+    robot = RobotText("waist_biped", root="torso")
+    pelvis = builders.placed(robot, "waist", "revolute", "torso", "pelvis", xyz="0 0.1 0")
+    for side, y in (("left", 0.05), ("right", -0.05)):
+        link = pelvis
+        for joint, xyz in (("hip_pitch", f"0 {y} -0.02"), ("knee", "0 0 -0.07"),
+                           ("ankle_pitch", "0 0 -0.07")):  # fmt: skip
+            link = builders.placed(
+                robot, f"{side}_{joint}", "revolute", link, f"{side}_{joint}_link", xyz=xyz,
+                axis="0 1 0",
+            )  # fmt: skip
+    body = detect_body(parse_urdf(robot.text()), load_profile())
+    assert body.count("leg") == 2
+    assert all(len(limb.joints) == 3 for limb in body.limbs if limb.kind == "leg")
+
+
 def test_motors_side_by_side_on_one_axle_of_a_sliding_part_are_two_legs_each() -> None:
     # Below a slide, no hip's hinge: the link is no leg's place, each chain a leg of its own.
     body = detect_body(parse_urdf(abducted_five_bar_legs(hip="prismatic").text()), load_profile())
