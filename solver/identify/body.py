@@ -61,6 +61,7 @@ from solver.identify.limbs import (
     lone_leg,
     meeting_tips,
     moved_by,
+    named_pan_tilt,
     nearest_above,
     parallel_robot,
     pendulum,
@@ -746,8 +747,9 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
     parts.limbs = gripping_leg(lone_leg(tree, parts.limbs, moves))
     if not parts.roles and not parts.trunk:
         # Read by the robot's name, once every chain has its kind (a short chain bolted to the
-        # world is an arm by then): a pendulum rig's one chain, an arm's camera on its tip.
-        parts.limbs = camera_arm(tree, pendulum(tree, parts.limbs))
+        # world is an arm by then): a pendulum rig's one chain, an arm's camera on its tip, a
+        # pan/tilt unit's hinges.
+        parts.limbs = named_pan_tilt(tree, camera_arm(tree, pendulum(tree, parts.limbs)))
 
 
 def _trunks(tree: JointTree, limbs: list[Limb], trunk: list[str]) -> frozenset[str | None]:

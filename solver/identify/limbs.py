@@ -117,6 +117,7 @@ __all__ = [
     "legs_by_place",
     "legs_by_reach",
     "lone_leg",
+    "named_pan_tilt",
     "pendulum",
     "planar_arm",
     "small_pan_tilt",
@@ -252,6 +253,9 @@ _LEGGED_NAME = re.compile(r"leg|biped|humanoid|walk|ped($|[^a-z])|dog", re.IGNOR
 # ``furuta_pendulum``, ``acrobot``, ``pendubot``, ``double_pendulum_2dof``): not an arm that
 # balances one (``pendulum_arm``: :data:`_ARM_NAME`).
 _PENDULUM_NAME = re.compile(r"pendul|cart[_\s-]?pole|acrobot|pendubot|furuta", re.IGNORECASE)
+# A robot that calls itself a pan/tilt unit (``pan_tilt``, ``PanTilt``, ``ptu_d46``): its one
+# short chain of hinges is the unit's pan and tilt.
+_PAN_TILT_NAME = re.compile(r"pan[_\s-]?tilt|(^|[^a-z])ptu([^a-z]|$)", re.IGNORECASE)
 # The most joints a pendulum rig's chain has (a triple pendulum); an arm balancing a pole
 # (a UR5's six joints and the pole's) is longer.
 _PENDULUM_JOINTS = 3
@@ -2092,6 +2096,28 @@ def pendulum(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
         return limbs
     why = f"a pendulum rig's links, on a robot named one ({shown(name)})"
     return [replace(limb, kind="other", why=why)]
+
+
+def named_pan_tilt(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
+    """The body's one limb, a short chain of turning joints read as no limb's (*other*: a
+    servo bracket drawn too large for :func:`small_pan_tilt`, a link an exporter named
+    ``lower_arm``), as a head when the robot's name says a pan/tilt unit
+    (:data:`_PAN_TILT_NAME`) and no arm (:func:`_named_arm`): the unit's pan and tilt, its
+    payload named nowhere. Asked only of a body with nothing else (no wheels, no gripper:
+    both are roles)."""
+    name = tree.urdf.name
+    if len(limbs) != 1 or not _PAN_TILT_NAME.search(name) or _named_arm(name):
+        return limbs
+    limb = limbs[0]
+    joints = [j for j in (tree.urdf.joint(n) for n in limb.joints) if j is not None]
+    if (
+        limb.kind != "other"
+        or len(joints) > tree.profile.limb("head_max_joints")
+        or not all(_hinge(joint, endless=True) for joint in joints)
+    ):
+        return limbs
+    why = f"a short chain of hinges, on a robot named a pan/tilt unit ({shown(name)})"
+    return [replace(limb, kind="head", why=why)]
 
 
 def camera_arm(tree: JointTree, limbs: list[Limb]) -> list[Limb]:

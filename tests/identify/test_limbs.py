@@ -1024,6 +1024,33 @@ def test_without_an_arms_name_the_chain_turning_a_camera_is_a_pan_tilt_unit(name
     assert identify_urdf(pan_and_tilt(name)).structure == "Pan/Tilt Unit"
 
 
+def bracket(name: str) -> str:
+    """Fresh set 599's hobby unit: a pan about the upright, then a tilt about x 34 cm away on
+    a link named ``lower_arm``, no sensor, ``name`` the robot's."""
+    return (
+        f'<robot name="{name}"><link name="base_link"/><link name="platform"/>'
+        '<link name="lower_arm"/>'
+        + builders.joint_xml("joint1", "revolute", "base_link", "platform", "0 0 0.48", "0 0 1")
+        + builders.joint_xml("joint2", "revolute", "platform", "lower_arm", "0 0.19 0.28", "1 0 0")
+        + "</robot>"
+    )
+
+
+@pytest.mark.parametrize("name", ["pan_tilt", "PanTilt", "pan-tilt unit", "ptu_d46"])
+def test_a_robot_named_a_pan_tilt_unit_turns_its_one_short_chain_as_one(name: str) -> None:
+    result = identify_urdf(bracket(name))
+    assert result.structure == "Pan/Tilt Unit"
+    assert result.body is not None
+    assert "on a robot named a pan/tilt unit" in result.body.limbs[0].why
+
+
+@pytest.mark.parametrize("name", ["two_link", "pan_tilt_arm", "captured"])
+def test_without_a_pan_tilt_units_name_or_named_an_arm_the_same_chain_is_no_head(
+    name: str,
+) -> None:
+    assert identify_urdf(bracket(name)).structure != "Pan/Tilt Unit"
+
+
 def limb_kinds(robot: RobotText) -> list[str]:
     body = identify_urdf(robot.text()).body
     assert body is not None
