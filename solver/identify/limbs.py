@@ -58,7 +58,9 @@ Where names say nothing, the chains' places and shapes still speak:
 * on a robot that calls itself a pendulum rig (a control course's plant: a cart-pole, a Furuta
   pendulum, an acrobot), its one short chain (three joints at most, none named as an arm's or
   a leg's) is the plant's links, swung by their actuators: *other*, no arm
-  (:func:`pendulum`, :data:`_PENDULUM_NAME`);
+  (:func:`pendulum`, :data:`_PENDULUM_NAME`); on a robot that calls itself a pan/tilt unit,
+  its one short chain of hinges read as no limb's is the unit's *head*, its payload named
+  nowhere (:func:`named_pan_tilt`, :data:`_PAN_TILT_NAME`);
 * a short chain from the root that carries a whole hand and nothing else is that hand's *wrist*
   (a hand hung from its forearm), no arm (:func:`wrist`);
 * trunk joints that carry a gripper chain too short to be an arm, every link on the way from
