@@ -816,9 +816,8 @@ def _steered_wheels(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Rol
     read by :func:`_steering_above`, when they are two or more on both sides of the body."""
     found: dict[str, Role] = {}
     wheels: list[Joint] = []
-    lowest = min((tree.poses.place(link.name)[2] for link in tree.urdf.links), default=0.0)
     for leaf in tree.urdf.joints:
-        steered = _steering_above(tree, leaf, roles, lowest)
+        steered = _steering_above(tree, leaf, roles)
         if steered is None:
             continue
         steer, said = steered
@@ -835,15 +834,14 @@ def _steered_wheels(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Rol
 
 
 def _steering_above(
-    tree: JointTree, leaf: Joint, roles: Mapping[str, Role], lowest: float
+    tree: JointTree, leaf: Joint, roles: Mapping[str, Role]
 ) -> tuple[Joint, str] | None:
     """The joint that steers ``leaf`` and why, or None. ``leaf`` is endless, of no role yet or
     a wheel already, and the only moving joint on the link of a joint of no role yet, or read
     as a gripper's (a link named ``finger_*`` or ``knuckle``: a wheel hangs from no gripper),
     that turns about an upright axis, the leaf about a level one (both as the body rests);
     the joint above is named for steering (``steer_front_left_joint``), or the leaf turns a
-    tyre that reaches the ground (:func:`_a_tyre`, its bottom no higher than ``lowest``, the
-    lowest link frame, and a centimetre), whatever corner or limb words their names carry
+    tyre that reaches the ground (:func:`_a_tyre`), whatever corner or limb words their names carry
     (``front_left`` names a leg's corner as well as a wheel's, ``front_right_arm`` a disc on a
     swivel; a leg is never steered; a wrist's flange or a camera's drum on a tilt is no
     tyre: it hangs above the body's lowest frames)."""
@@ -866,20 +864,21 @@ def _steering_above(
         return None
     if _STEER.search(steer.name):
         return steer, "named for steering"
-    if _a_tyre(tree, leaf, lowest):
+    if _a_tyre(tree, leaf):
         return steer, "a swivel carrying a tyre"
     return None
 
 
-def _a_tyre(tree: JointTree, joint: Joint, lowest: float) -> bool:
+def _a_tyre(tree: JointTree, joint: Joint) -> bool:
     """The part ``joint`` turns is drawn as a cylinder round its axle (:func:`_drawn_round`),
-    is not known to hang its mass off it (:func:`_balance`) and reaches down to ``lowest``
-    (within :data:`_GROUND_GAP`): a tyre on the ground, whatever its name."""
+    is not known to hang its mass off it (:func:`_balance`) and reaches down to the body's
+    lowest link frame (:attr:`JointTree.lowest_frame`, within :data:`_GROUND_GAP`): a tyre on
+    the ground, whatever its name."""
     link = tree.urdf.link(joint.child)
     shape = None if link is None else link.cylinder
     return (
         shape is not None
-        and tree.poses.place(joint.child)[2] - shape.radius <= lowest + _GROUND_GAP
+        and tree.poses.place(joint.child)[2] - shape.radius <= tree.lowest_frame + _GROUND_GAP
         and _drawn_round(tree, joint)
         and _balance(tree, joint) is not False
     )

@@ -183,20 +183,12 @@ def _own_controller(source: str, shown_file: str | None, where: str) -> _Shown:
     joint's own in its packages (``shown_file``, the file that shows it): that joint takes
     commands by itself (beside the flight or the thrust; wherever the head is: a transmission
     alone says nothing of who commands it)."""
-    if shown_file is None:
-        return []
-    return [(source, f"{shown_file}: a controller of a joint's own on {where}")]
+    return _shown_by(source, shown_file, f"a controller of a joint's own on {where}")
 
 
-def _vehicle_controllers(shown_file: str | None) -> _Shown:
-    """A ground vehicle's mount or head joints (a suspension, a steered axle, a wheel-leg's
-    hip, a sensor's pan or tilt) named by a joint controller its packages configure
-    (``shown_file``, the file that shows it): they take commands one by one, beside the drive
-    (a transmission or a ``ros2_control`` block alone says nothing of who commands them)."""
-    if shown_file is None:
-        return []
-    why = f"{shown_file}: joint controllers naming a ground vehicle's mount or head joint"
-    return [("vehicle_joint_controllers", why)]
+def _shown_by(source: str, shown_file: str | None, what: str) -> _Shown:
+    """``source``, with ``what`` the file ``shown_file`` shows, when a file shows it."""
+    return [] if shown_file is None else [(source, f"{shown_file}: {what}")]
 
 
 def _motions(joints: tuple[str, ...], urdf: Urdf | None) -> int:
@@ -457,7 +449,15 @@ def controls_from_description(
             "mount_joint_controllers", mount_joint_controllers, "a rotor's or thruster's mount"
         ),
         *_own_controller("head_joint_controllers", head_joint_controllers, "a pan/tilt head"),
-        *_vehicle_controllers(vehicle_joint_controllers),
+        # A ground vehicle's mount or head joints (a suspension, a steered axle, a wheel-leg's
+        # hip, a sensor's pan or tilt) a joint controller of its packages is given: they take
+        # commands one by one, beside the drive (a transmission or a ros2_control block alone
+        # says nothing of who commands them).
+        *_shown_by(
+            "vehicle_joint_controllers",
+            vehicle_joint_controllers,
+            "joint controllers naming a ground vehicle's mount or head joint",
+        ),
         *_limbs(
             body,
             urdf_source,

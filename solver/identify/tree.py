@@ -57,6 +57,12 @@ class JointTree:
         return Poses(self.urdf)
 
     @cached_property
+    def lowest_frame(self) -> float:
+        """The height of the lowest link frame as the body rests (0 with no link): where a
+        wheel's bottom reaches, the ground or a footprint frame drawn on it."""
+        return min((self.poses.place(link.name)[2] for link in self.urdf.links), default=0.0)
+
+    @cached_property
     def bolted(self) -> frozenset[str]:
         """The links fixed to a root named ``world`` (the root too: a body bolted in place, no
         joint between them moves); none when the root is named otherwise."""
