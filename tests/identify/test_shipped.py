@@ -240,6 +240,39 @@ def test_an_arm_moved_by_inverse_kinematics_to_a_target_is_sent_end_effector_goa
 @pytest.mark.parametrize(
     "text",
     [
+        "from arm_ik.IKNode import main",  # IK in upper case, a word of a name
+        "q = robot.iterativeIK(pose, q0)",
+        "IK_SEED_BANK = [q0, q1]",
+        "rospy.init_node('arm_ik')",  # joined by an underscore
+        "self._ik_left = ArmKinematics('left')",
+        "'console_scripts': ['arm_inv_kine_control = robot_arm_control.arm_inv_kine_control']",
+        "from scaraKinematics import invKine",
+        "J_inv = np.linalg.pinv(compute_jacobian(q))",  # a Cartesian velocity, through J
+    ],
+)
+def test_inverse_kinematics_by_a_short_name_or_a_jacobian_inverted_is_an_arms_end_effector_control(
+    text: str,
+) -> None:
+    assert shipped_to_arms(text) == [["End Effector"], ["End Effector"]]
+    assert shipped("Hexapod", text) == {}  # a walker's places its feet
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "# ik heb de arm gekalibreerd",  # Dutch: "I calibrated the arm"
+        "bike_lane = True",
+        "kiosk_mode: false",
+        "pick_and_place(obj)",
+    ],
+)
+def test_ik_in_other_words_or_alone_in_lower_case_shows_no_end_effector(text: str) -> None:
+    assert shipped_to_arms(text) == [[], []]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
         "arm_cartesian_controller: {type: cartesian_controllers/CartesianMotionController}",
         "cartesian_impedance_example_controller",
         "twist_controller/command_twist",
