@@ -248,6 +248,8 @@ def test_an_arm_moved_by_inverse_kinematics_to_a_target_is_sent_end_effector_goa
         "'console_scripts': ['arm_inv_kine_control = robot_arm_control.arm_inv_kine_control']",
         "from scaraKinematics import invKine",
         "J_inv = np.linalg.pinv(compute_jacobian(q))",  # a Cartesian velocity, through J
+        "# taking jacobian inverse with current joint angles",
+        "invJ = inverse_jacobian(q)",
     ],
 )
 def test_inverse_kinematics_by_a_short_name_or_a_jacobian_inverted_is_an_arms_end_effector_control(
@@ -264,9 +266,13 @@ def test_inverse_kinematics_by_a_short_name_or_a_jacobian_inverted_is_an_arms_en
         "bike_lane = True",
         "kiosk_mode: false",
         "pick_and_place(obj)",
+        "def compute_jacobian(q):",  # a Jacobian computed, not inverted
+        "// Generated Jacobian code to link 3",  # a model's code generator
     ],
 )
-def test_ik_in_other_words_or_alone_in_lower_case_shows_no_end_effector(text: str) -> None:
+def test_ik_in_other_words_alone_in_lower_case_or_a_jacobian_only_computed_shows_no_end_effector(
+    text: str,
+) -> None:
     assert shipped_to_arms(text) == [[], []]
 
 
