@@ -250,6 +250,7 @@ def test_an_arm_moved_by_inverse_kinematics_to_a_target_is_sent_end_effector_goa
         "J_inv = np.linalg.pinv(compute_jacobian(q))",  # a Cartesian velocity, through J
         "# taking jacobian inverse with current joint angles",
         "invJ = inverse_jacobian(q)",
+        "dq = invJacobian @ x_dot",
     ],
 )
 def test_inverse_kinematics_by_a_short_name_or_a_jacobian_inverted_is_an_arms_end_effector_control(
@@ -268,6 +269,8 @@ def test_inverse_kinematics_by_a_short_name_or_a_jacobian_inverted_is_an_arms_en
         "pick_and_place(obj)",
         "def compute_jacobian(q):",  # a Jacobian computed, not inverted
         "// Generated Jacobian code to link 3",  # a model's code generator
+        "raise ValueError('invalid jacobian')",
+        "SHELF_FRAME = 'IKEA_KALLAX'",  # a word of capitals IK begins
     ],
 )
 def test_ik_in_other_words_alone_in_lower_case_or_a_jacobian_only_computed_shows_no_end_effector(
