@@ -248,7 +248,7 @@ def test_an_arm_moved_by_inverse_kinematics_to_a_target_is_sent_end_effector_goa
         "'console_scripts': ['arm_inv_kine_control = robot_arm_control.arm_inv_kine_control']",
         "from scaraKinematics import invKine",
         "J_inv = np.linalg.pinv(compute_jacobian(q))",  # a Cartesian velocity, through J
-        "# taking jacobian inverse with current joint angles",
+        "q_dot = J_inv @ v  # taking jacobian inverse with current joint angles",
         "invJ = inverse_jacobian(q)",
         "dq = invJacobian @ x_dot",
     ],
@@ -263,12 +263,18 @@ def test_inverse_kinematics_by_a_short_name_or_a_jacobian_inverted_is_an_arms_en
 @pytest.mark.parametrize(
     "text",
     [
-        "# ik heb de arm gekalibreerd",  # Dutch: "I calibrated the arm"
+        "print('ik heb de arm gekalibreerd')",  # Dutch: "I calibrated the arm"
         "bike_lane = True",
         "kiosk_mode: false",
         "pick_and_place(obj)",
         "def compute_jacobian(q):",  # a Jacobian computed, not inverted
-        "// Generated Jacobian code to link 3",  # a model's code generator
+        "print('    // Generated Jacobian code to link %i' % (i + 1))",  # a code generator
+        "self.jacobian = None\ninv_dt = 1.0 / dt",  # an inverse on the next line
+        "bool jacobian_invalid = false;",
+        "AÇIK = 1  # a gripper's state, Turkish for open",
+        "T_ik = T_ij @ T_jk",  # an index
+        "maintainer_email='dong_ik@example.com'",
+        "T_inv_kinect = T.inverse()",
         "raise ValueError('invalid jacobian')",
         "SHELF_FRAME = 'IKEA_KALLAX'",  # a word of capitals IK begins
     ],
