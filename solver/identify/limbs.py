@@ -2089,14 +2089,13 @@ def pendulum(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     a control course's plant, its joints swung by their actuators to balance it, carrying no
     tool. Asked only of a body with nothing else (no wheels, a robot balancing on them, and
     no gripper: both are roles)."""
-    name = tree.urdf.name
-    if len(limbs) != 1 or not _PENDULUM_NAME.search(name) or _named_arm(name):
+    sole = _sole_limb_named(tree, limbs, _PENDULUM_NAME)
+    if sole is None:
         return limbs
-    limb = limbs[0]
-    joints = [j for j in (tree.urdf.joint(n) for n in limb.joints) if j is not None]
+    limb, joints = sole
     if limb.kind != "arm" or len(joints) > _PENDULUM_JOINTS or _limb_joint_words(joints):
         return limbs
-    why = f"a pendulum rig's links, on a robot named one ({shown(name)})"
+    why = f"a pendulum rig's links, on a robot named one ({shown(tree.urdf.name)})"
     return [replace(limb, kind="other", why=why)]
 
 
@@ -2107,19 +2106,30 @@ def named_pan_tilt(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     (:data:`_PAN_TILT_NAME`) and no arm (:func:`_named_arm`): the unit's pan and tilt, its
     payload named nowhere. Asked only of a body with nothing else (no wheels, no gripper:
     both are roles)."""
-    name = tree.urdf.name
-    if len(limbs) != 1 or not _PAN_TILT_NAME.search(name) or _named_arm(name):
+    sole = _sole_limb_named(tree, limbs, _PAN_TILT_NAME)
+    if sole is None:
         return limbs
-    limb = limbs[0]
-    joints = [j for j in (tree.urdf.joint(n) for n in limb.joints) if j is not None]
+    limb, joints = sole
     if (
         limb.kind != "other"
         or len(joints) > tree.profile.limb("head_max_joints")
         or not all(_hinge(joint, endless=True) for joint in joints)
     ):
         return limbs
-    why = f"a short chain of hinges, on a robot named a pan/tilt unit ({shown(name)})"
+    why = f"a short chain of hinges, on a robot named a pan/tilt unit ({shown(tree.urdf.name)})"
     return [replace(limb, kind="head", why=why)]
+
+
+def _sole_limb_named(
+    tree: JointTree, limbs: list[Limb], named: re.Pattern[str]
+) -> tuple[Limb, list[Joint]] | None:
+    """The body's one limb and its joints, when the robot's name matches ``named`` and says
+    no arm (:func:`_named_arm`); else None."""
+    name = tree.urdf.name
+    if len(limbs) != 1 or not named.search(name) or _named_arm(name):
+        return None
+    joints = [j for j in (tree.urdf.joint(n) for n in limbs[0].joints) if j is not None]
+    return limbs[0], joints
 
 
 def camera_arm(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
