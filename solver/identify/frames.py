@@ -57,7 +57,9 @@ a driver that stamps its data with that frame (``frame_id: imu_link`` in its con
   description declares.
 * Bounds: the patterns are linear in the texts; a list's first 64 items are read; each
   link's rule is found once; a device's
-  body is at most three joints up and its camera frames at most three down; at most 64 camera
+  body is climbed to from each link once (the top of its run, however deep: a camera's
+  frames four and five joints below a gripper's camera mount are one camera) and its camera
+  frames are looked for at most three down; at most 64 camera
   names are looked up among the links; one body's frames are told apart at eight places at
   most.
 """
@@ -508,16 +510,18 @@ def sensors_on_frames(
         kind = rules[rule].kind
         return "camera" if kind in _CAMERAS else kind
 
+    tops: dict[tuple[str, str], str] = {}
+
     def body(link: str, rule: int) -> str:
         """The device's body: up through fixed joints while the parent reads as a device of
-        the same family (a camera's optical frame under its camera link)."""
-        for _ in range(_DEVICE_DEPTH):
-            joint = urdf.parent_joint(link)
-            above = None if joint is None or joint.movable else kind_of(joint.parent)
-            if joint is None or above is None or family(above) != family(rule):
-                break
-            link = joint.parent
-        return link
+        the same family (a camera's optical frame under its camera link; :func:`_run_top`)."""
+        kin = family(rule)
+
+        def alike(parent: str) -> bool:
+            above = kind_of(parent)
+            return above is not None and family(above) == kin
+
+        return _run_top(urdf, link, kin, alike, tops)
 
     def streams(device: str, rule: int) -> list[int]:
         """The camera rules of the frames fixed beneath a camera's body, a few levels down
@@ -563,6 +567,26 @@ def sensors_on_frames(
                 continue
             found.append(Detection(kind, f"{shown(link)} ({how})", SOURCE, device))
     return tuple(found)
+
+
+def _run_top(
+    urdf: Urdf, link: str, kin: str, alike: Callable[[str], bool], tops: dict[tuple[str, str], str]
+) -> str:
+    """The top of the run of links fixed beneath one another that ``alike`` says read as one
+    device's (``kin``), from ``link`` up, however deep ``link`` hangs in it: two frames of one
+    device share it. Each link is climbed from once per kind (``tops`` remembers)."""
+    path: list[str] = []
+    current = link
+    while (current, kin) not in tops and len(path) <= len(urdf.links):
+        path.append(current)
+        joint = urdf.parent_joint(current)
+        if joint is None or joint.movable or not alike(joint.parent):
+            break
+        current = joint.parent
+    top = tops.get((current, kin), current)
+    for each in path:
+        tops[(each, kin)] = top
+    return top
 
 
 def _apart(

@@ -697,6 +697,23 @@ def test_a_cameras_streams_far_apart_are_still_one_camera() -> None:
     assert kinds(driver, camera) == {"depth_camera": 1}
 
 
+def test_one_cameras_frames_named_at_two_depths_of_a_deep_mount_are_one_camera() -> None:
+    """A RealSense on a gripper: its frames hang four and five joints below the mount's camera
+    link, and a script names the depth frame and its optical frame: one camera, not two."""
+    camera = drawn(
+        ("base_link", "gripper_camera_link"),
+        ("gripper_camera_link", "camera_bottom_screw_frame"),
+        ("camera_bottom_screw_frame", "camera_link"),
+        ("camera_link", "camera_depth_frame"),
+        ("camera_depth_frame", "camera_depth_optical_frame"),
+    )
+    scripts = shipping(
+        calibrate_py='pose.header.frame_id = "camera_depth_optical_frame"\n',
+        pick_py='cloud.header.frame_id = "camera_depth_frame"\n',
+    )
+    assert kinds(scripts, camera) == {"depth_camera": 1}
+
+
 def test_one_bodys_frames_are_told_apart_at_eight_places_at_most() -> None:
     eight = [float(i) for i in range(8)]
     assert kinds(drivers_of(8), lasers_at(*eight)) == {"lidar": 8}
