@@ -252,6 +252,24 @@ def test_a_file_xacro_expands_under_another_name_and_an_environment_it_sets_are_
     assert expanded.xacro
 
 
+def test_plain_says_a_urdf_is_copied_only_where_the_bracket_begins_with_it() -> None:
+    tool = load()
+    named = tool.parse_source(
+        "github a/b@0123abcd urdf/plain_vehicle.urdf [xacro->urdf: the plain vehicle's launch]",
+        srdf=False,
+    )
+    assert named.xacro
+    run_on = tool.parse_source(
+        "github a/b@0123abcd urdf/arm.urdf [xacro->urdf without arguments (a plain URDF)]",
+        srdf=False,
+    )
+    assert run_on.xacro
+    copied = tool.parse_source(
+        "github a/b@0123abcd urdf/b.urdf [ Plain URDF, xacro output]", srdf=False
+    )
+    assert not copied.xacro
+
+
 def test_a_description_path_with_spaces_is_read_whole_between_backquotes() -> None:
     tool = load()
     source = tool.parse_source(

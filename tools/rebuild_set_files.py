@@ -77,6 +77,7 @@ SRDF = re.compile(r"(?<![\w/.-])((?:[\w.+-]+/)*[\w.+-]+\.srdf(?:\.xacro)?)\b")
 # name:=value, name:='a b' or name:="a b".
 ARGUMENT = re.compile(r"(?<![\w$(])([A-Za-z_][\w-]*):=(?:'([^']*)'|\"([^\"]*)\"|([^\s,;\])'\"]*))")
 # An environment variable a source sets (``SPOT_ARM=1``): what $(optenv SPOT_ARM) reads.
+PLAIN = re.compile(r"\s*\[?\s*plain\b", re.IGNORECASE)
 ENVIRONMENT = re.compile(r"(?<![\w$(=])([A-Z][A-Z0-9_]*)=(?!=)([^\s,;\])'\"]+)")
 # Placeholders the sources write in argument values: the repository's tree, the package's folder.
 PLACEHOLDERS = ("<repo>", "<fetched>", "<package>")
@@ -137,9 +138,11 @@ def parse_source(text: str, *, srdf: bool) -> Source | None:
         )
     )
     path = description.group(1)
-    # How it was made is said right after the path: "[xacro->urdf ...]", "[plain URDF ...]".
+    # How it was made is said right after the path: "[xacro->urdf ...]", "[plain URDF ...]"
+    # (a bracket that begins with "plain": the word later on is a robot's name, "a plain
+    # vehicle", or says what xacro was run on, "(a plain URDF)").
     how = named_in[description.end() : description.end() + 40]
-    xacro = path.endswith(".xacro") or ("xacro" in how and "plain" not in how)
+    xacro = path.endswith(".xacro") or ("xacro" in how and not PLAIN.match(how))
     return Source(
         first.group(1),
         first.group(2),
