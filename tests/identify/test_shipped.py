@@ -217,6 +217,18 @@ def test_a_base_or_a_gripper_alone_has_no_end_effector_whatever_moveit_its_repos
     assert list(shipped("Mobile Manipulator", moveit)) == ["End Effector"]
 
 
+def test_a_hand_alone_has_no_end_effector_whatever_its_arms_software_in_the_repository() -> None:
+    # A vendor's repository holds the hand and the arm that carries it: the arm's MoveIt, its
+    # driver's Cartesian poses and its inverse kinematics move the arm, not the hand alone.
+    for arms in (
+        "<include file='$(find lm3_moveit_config)/launch/move_group.launch'/>",
+        "handler = CartesianPose(stream)\nhandler.move_to_cartesian(pose)",
+        "q = solve_ik(x, y, z)",
+    ):
+        assert shipped("Hand", arms) == {}, arms
+        assert list(shipped("Manipulator", arms)) == ["End Effector"], arms
+
+
 def test_an_arm_moved_by_inverse_kinematics_to_a_target_is_sent_end_effector_goals() -> None:
     script = "from ikpy.chain import Chain\nangles = chain.inverse_kinematics(target)"
     assert list(shipped("Manipulator", script)) == ["End Effector"]
