@@ -57,9 +57,10 @@ a driver that stamps its data with that frame (``frame_id: imu_link`` in its con
   description declares.
 * Bounds: the patterns are linear in the texts; a list's first 64 items are read; each
   link's rule is found once; a device's
-  body is climbed to from each link once (the top of its run, however deep: a camera's
-  frames four and five joints below a gripper's camera mount are one camera) and its camera
-  frames are looked for at most three down; at most 64 camera
+  body is at most three joints up (from the topmost of the named frames in its run: a
+  camera's depth frame and its optical frame, both named, three and four joints below a
+  gripper's camera mount, are one camera; each link is climbed from once) and its camera
+  frames at most three down; at most 64 camera
   names are looked up among the links; one body's frames are told apart at eight places at
   most.
 """
@@ -67,7 +68,7 @@ a driver that stamps its data with that frame (``frame_id: imu_link`` in its con
 from __future__ import annotations
 
 import re
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Collection, Iterable
 
 from solver.identify.pose import Poses, Vector, distance
 from solver.identify.profile import Profile, SensorRule
@@ -510,18 +511,16 @@ def sensors_on_frames(
         kind = rules[rule].kind
         return "camera" if kind in _CAMERAS else kind
 
-    tops: dict[tuple[str, str], str] = {}
-
     def body(link: str, rule: int) -> str:
         """The device's body: up through fixed joints while the parent reads as a device of
-        the same family (a camera's optical frame under its camera link; :func:`_run_top`)."""
-        kin = family(rule)
-
-        def alike(parent: str) -> bool:
-            above = kind_of(parent)
-            return above is not None and family(above) == kin
-
-        return _run_top(urdf, link, kin, alike, tops)
+        the same family (a camera's optical frame under its camera link)."""
+        for _ in range(_DEVICE_DEPTH):
+            joint = urdf.parent_joint(link)
+            above = None if joint is None or joint.movable else kind_of(joint.parent)
+            if joint is None or above is None or family(above) != family(rule):
+                break
+            link = joint.parent
+        return link
 
     def streams(device: str, rule: int) -> list[int]:
         """The camera rules of the frames fixed beneath a camera's body, a few levels down
@@ -540,10 +539,11 @@ def sensors_on_frames(
     bodies_declared = {body_of(d.link) for d in declared if d.link is not None}
     devices: dict[str, list[tuple[int, str, str]]] = {}  # body -> (rule, frame, how)
     frame_ids, depth = _named(workspace, urdf, profile)
+    named_top = _NamedTop(urdf, kind_of, family, frame_ids)
     for link, how in frame_ids.items():
         rule = kind_of(link)
         if rule is not None:
-            devices.setdefault(body(link, rule), []).append((rule, link, how))
+            devices.setdefault(body(named_top(link, rule), rule), []).append((rule, link, how))
     poses: Poses | None = None
 
     def place(link: str) -> Vector:
@@ -569,24 +569,50 @@ def sensors_on_frames(
     return tuple(found)
 
 
-def _run_top(
-    urdf: Urdf, link: str, kin: str, alike: Callable[[str], bool], tops: dict[tuple[str, str], str]
-) -> str:
-    """The top of the run of links fixed beneath one another that ``alike`` says read as one
-    device's (``kin``), from ``link`` up, however deep ``link`` hangs in it: two frames of one
-    device share it. Each link is climbed from once per kind (``tops`` remembers)."""
-    path: list[str] = []
-    current = link
-    while (current, kin) not in tops and len(path) <= len(urdf.links):
-        path.append(current)
-        joint = urdf.parent_joint(current)
-        if joint is None or joint.movable or not alike(joint.parent):
-            break
-        current = joint.parent
-    top = tops.get((current, kin), current)
-    for each in path:
-        tops[(each, kin)] = top
-    return top
+class _NamedTop:
+    """The topmost of the named frames in the run of fixed links of one device family from a
+    named frame up (:meth:`__call__`)."""
+
+    def __init__(
+        self,
+        urdf: Urdf,
+        kind_of: Callable[[str], int | None],
+        family: Callable[[int], str],
+        named: Collection[str],
+    ) -> None:
+        self.urdf = urdf
+        self.kind_of = kind_of
+        self.family = family
+        self.named = named
+        self.tops: dict[tuple[str, str], str | None] = {}
+
+    def __call__(self, link: str, rule: int) -> str:
+        """The topmost of the named frames in the run of fixed links of ``rule``'s family from
+        ``link`` up, ``link`` included: a stream's frame above its optical frame, both named,
+        are one device's however deep they hang under its mount (a wrist camera's depth frame
+        and its optical frame, three and four joints below the gripper's camera link). Two
+        cameras' frames under one mount named like a camera stay apart: neither is above the
+        other. Each link is climbed from once per family (memoised)."""
+        kin = self.family(rule)
+        path: list[str] = []
+        current = link
+        while (current, kin) not in self.tops:
+            path.append(current)
+            parent = self._alike_parent(current, kin)
+            if parent is None or len(path) > len(self.urdf.links):
+                break
+            current = parent
+        top = self.tops.get((current, kin))
+        for each in reversed(path):
+            top = top if top is not None else (each if each in self.named else None)
+            self.tops[(each, kin)] = top
+        return self.tops[(link, kin)] or link
+
+    def _alike_parent(self, link: str, kin: str) -> str | None:
+        """``link``'s parent when a fixed joint holds it and it reads as a device of ``kin``."""
+        joint = self.urdf.parent_joint(link)
+        above = None if joint is None or joint.movable else self.kind_of(joint.parent)
+        return None if joint is None or above is None or self.family(above) != kin else joint.parent
 
 
 def _apart(

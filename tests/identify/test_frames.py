@@ -698,8 +698,8 @@ def test_a_cameras_streams_far_apart_are_still_one_camera() -> None:
 
 
 def test_one_cameras_frames_named_at_two_depths_of_a_deep_mount_are_one_camera() -> None:
-    """A RealSense on a gripper: its frames hang four and five joints below the mount's camera
-    link, and a script names the depth frame and its optical frame: one camera, not two."""
+    """A RealSense on a gripper: its depth frame and optical frame hang three and four joints
+    below the gripper's camera link, and a script names both: one camera, not two."""
     camera = drawn(
         ("base_link", "gripper_camera_link"),
         ("gripper_camera_link", "camera_bottom_screw_frame"),
@@ -712,6 +712,26 @@ def test_one_cameras_frames_named_at_two_depths_of_a_deep_mount_are_one_camera()
         pick_py='cloud.header.frame_id = "camera_depth_frame"\n',
     )
     assert kinds(scripts, camera) == {"depth_camera": 1}
+
+
+def test_two_cameras_under_one_mount_named_like_a_camera_stay_two_cameras() -> None:
+    """Two RealSense trees hung from one ``camera_mount``: a script names a frame of each, deep
+    in its own tree; neither frame is above the other, so they are two cameras."""
+    trees = [("base_link", "camera_mount")]
+    for side in ("front", "rear"):
+        trees += [
+            ("camera_mount", f"{side}_camera_bottom_screw_frame"),
+            (f"{side}_camera_bottom_screw_frame", f"{side}_camera_link"),
+            (f"{side}_camera_link", f"{side}_camera_depth_frame"),
+            (f"{side}_camera_depth_frame", f"{side}_camera_depth_optical_frame"),
+            (f"{side}_camera_link", f"{side}_camera_color_frame"),
+            (f"{side}_camera_color_frame", f"{side}_camera_color_optical_frame"),
+        ]
+    scripts = shipping(
+        front_py='cloud.header.frame_id = "front_camera_depth_optical_frame"\n',
+        rear_py='image.header.frame_id = "rear_camera_color_optical_frame"\n',
+    )
+    assert sum(kinds(scripts, drawn(*trees)).values()) == 2
 
 
 def test_one_bodys_frames_are_told_apart_at_eight_places_at_most() -> None:

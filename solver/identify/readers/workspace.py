@@ -414,9 +414,7 @@ def _core(own: _Package, packages: list[_Package], robot: str | None = None) -> 
     beside ``jackal_description``; ``abb_irb_control`` is ``abb_irb_description``'s, not
     ``abb_description``'s) or of the ``robot`` its URDF names (a description kept in
     ``deliverybot_bringup`` for ``<robot name="deliverybot">``, beside
-    ``deliverybot_navigation``); a variant's description package named for the robot its URDF
-    names, beside that robot's own (``antworker_moveit_description`` for ``antworker``, beside
-    ``antworker_description``), takes in the robot's (``antworker_navigation``)."""
+    ``deliverybot_navigation``)."""
     stems = [_named_stem(robot), *(_stem(p.name) for p in packages)]
     stem = _stem(own.name) or max(
         (found for found in stems if found is not None and _begins(own.name, found)),
@@ -425,13 +423,6 @@ def _core(own: _Package, packages: list[_Package], robot: str | None = None) -> 
     )
     if stem is None:
         return [own]
-    # A description kept in a package named for a variant of the robot its URDF names, beside
-    # that robot's own description package (``antworker_moveit_description`` for
-    # ``<robot name="antworker">`` beside ``antworker_description``): the robot's packages are
-    # the ones named for the robot (``antworker_navigation``), the variant's among them.
-    named = _named_stem(robot)
-    if named is not None and _begins(stem, named) and any(_stem(p.name) == named for p in packages):
-        stem = named
     return [own, *_by_folder([p for p in packages if p is not own and _begins(p.name, stem)])]
 
 

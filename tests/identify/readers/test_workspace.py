@@ -156,32 +156,6 @@ def test_of_the_stems_beside_it_and_the_robots_own_the_longest_names_the_robot(
     assert read(described, robot="abb_irb").packages == ("abb_irb_control", "abb_irb_navigation")
 
 
-def test_a_description_in_a_variants_package_takes_in_the_packages_named_for_the_robot(
-    tmp_path: Path,
-) -> None:
-    # The arm's variant of a rail cart kept in antworker_moveit_description, its URDF naming the
-    # robot antworker, beside antworker_description (the cart's own): antworker_navigation is
-    # the robot's too. Without antworker_description, or with the URDF naming another robot,
-    # only the variant's own packages are.
-    src = tmp_path / "src"
-    urdf = {"urdf/antworker.urdf": "<robot name='antworker'/>"}
-    described = package(src, "antworker_moveit_description", urdf)
-    package(src, "antworker_moveit_bringup")
-    package(src, "antworker_navigation", {"launch/nav.launch.py": "nav2_bringup"})
-    package(src, "drone_description", {"urdf/drone.urdf": "<robot name='drone'/>"})
-    variant = ("antworker_moveit_description", "antworker_moveit_bringup")
-    assert read(described, robot="antworker").packages == variant
-    package(src, "antworker_description", urdf)
-    assert read(described, robot="antworker").packages == (
-        "antworker_moveit_description",
-        "antworker_description",
-        "antworker_moveit_bringup",
-        "antworker_navigation",
-    )
-    for robot in (None, "husky", "antworker_moveit"):
-        assert read(described, robot=robot).packages == variant
-
-
 def test_a_name_inside_a_longer_word_is_no_use(tmp_path: Path) -> None:
     src = tmp_path / "src"
     described = package(src, "arm")
