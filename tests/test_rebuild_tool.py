@@ -264,10 +264,13 @@ def test_plain_says_a_urdf_is_copied_only_where_the_bracket_begins_with_it() -> 
         srdf=False,
     )
     assert run_on.xacro
-    copied = tool.parse_source(
-        "github a/b@0123abcd urdf/b.urdf [ Plain URDF, xacro output]", srdf=False
-    )
-    assert not copied.xacro
+    for copied in (
+        "urdf/b.urdf [ Plain URDF, xacro output]",
+        "urdf/b.urdf (plain URDF, the xacro output, copied)",
+        "urdf/b.urdf with config/b.srdf.xacro [plain URDF]",
+        "urdf/b.urdf plain URDF, the xacro output",
+    ):
+        assert not tool.parse_source(f"github a/b@0123abcd {copied}", srdf=False).xacro, copied
 
 
 def test_a_description_path_with_spaces_is_read_whole_between_backquotes() -> None:

@@ -76,8 +76,12 @@ NOT_DESCRIPTIONS = ("package.xml", "manifest.xml", "launch.xml")
 SRDF = re.compile(r"(?<![\w/.-])((?:[\w.+-]+/)*[\w.+-]+\.srdf(?:\.xacro)?)\b")
 # name:=value, name:='a b' or name:="a b".
 ARGUMENT = re.compile(r"(?<![\w$(])([A-Za-z_][\w-]*):=(?:'([^']*)'|\"([^\"]*)\"|([^\s,;\])'\"]*))")
+# How a plain URDF's recipe says it is copied: "plain" first, or first in the first bracket
+# or parenthesis after the path ("[plain URDF ...]", "(plain URDF, copied ...)", "with
+# config/x.srdf.xacro [plain URDF]"), not later in one ("[xacro->urdf: the plain vehicle's
+# launch]", "[xacro->urdf without arguments (a plain URDF)]").
+PLAIN = re.compile(r"\s*plain\b|[^\[(]*[\[(]\s*plain\b", re.IGNORECASE)
 # An environment variable a source sets (``SPOT_ARM=1``): what $(optenv SPOT_ARM) reads.
-PLAIN = re.compile(r"\s*\[?\s*plain\b", re.IGNORECASE)
 ENVIRONMENT = re.compile(r"(?<![\w$(=])([A-Z][A-Z0-9_]*)=(?!=)([^\s,;\])'\"]+)")
 # Placeholders the sources write in argument values: the repository's tree, the package's folder.
 PLACEHOLDERS = ("<repo>", "<fetched>", "<package>")
@@ -139,8 +143,7 @@ def parse_source(text: str, *, srdf: bool) -> Source | None:
     )
     path = description.group(1)
     # How it was made is said right after the path: "[xacro->urdf ...]", "[plain URDF ...]"
-    # (a bracket that begins with "plain": the word later on is a robot's name, "a plain
-    # vehicle", or says what xacro was run on, "(a plain URDF)").
+    # (:data:`PLAIN`).
     how = named_in[description.end() : description.end() + 40]
     xacro = path.endswith(".xacro") or ("xacro" in how and not PLAIN.match(how))
     return Source(
