@@ -7,7 +7,9 @@ waist, a torso lift). :func:`find_limbs` finds them.
 
 Each limb is a *leg*, *head* or *arm* by which pattern most of its joints and links match,
 within the profile's thresholds; an unnamed chain of at least ``arm_min_joints`` joints, or one
-ending in a gripper, is an arm; on a flying body any chain of two joints or more is. A limb
+ending in a gripper, is an arm; on a flying body any chain of two joints or more is, and so is
+one of two joints or more that turns on a link named as an arm's base or mount
+(``manipulator_base_link``: a course's two-joint arm on a mobile base). A limb
 carrying wheels, rotors or thrusters (Pepper's hip/knee over its wheeled base, a tilt-rotor
 unit, a boat's steered engine) is a *mount*, not a limb, except legs that each end in a wheel,
 three or more of them (a wheel-legged robot walks on them). Anything else (a flipper, a 2-joint
@@ -2749,7 +2751,20 @@ def _unnamed_kind(
         return "arm", "ends in a gripper" if gripper else f"an unnamed chain of {length} joints"
     if flying and length >= _FLYING_ARM_JOINTS and not named:
         return "arm", f"a chain of {length} joints hanging from a flying body"
+    if not named and length >= 2 and _on_an_arm_base(chain[0]):
+        return "arm", f"a chain of {length} joints on a link named as an arm's base"
     return "other", "no name or shape of a limb"
+
+
+def _on_an_arm_base(first: Joint) -> bool:
+    """The chain's first joint turns on a link named as an arm's base or mount (``arm_base``,
+    ``manipulator_base_link``, ``arm_mount``): what it carries is that arm, however short."""
+    return bool(_ARM_WORD.search(first.parent) and _BASE_WORD.search(first.parent))
+
+
+# An arm or a manipulator as a word of a link's name, and a base or a mount.
+_ARM_WORD = re.compile(r"(^|[^a-z])(arm|manipulator)([^a-z]|$)", re.IGNORECASE)
+_BASE_WORD = re.compile(r"base|mount", re.IGNORECASE)
 
 
 def _shoulder_and_elbow(tree: JointTree, chain: list[Joint]) -> bool:

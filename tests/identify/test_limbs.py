@@ -3573,3 +3573,49 @@ def test_two_chains_hanging_down_whose_joints_all_turn_for_ever_are_no_legs() ->
     assert result.structure == "UGV"
     # The same chains on joints that stop hang as a lower body's legs.
     assert identify_urdf(base_on_two_swivel_casters("revolute").text()).structure == "Biped"
+
+
+def two_joints_on(mount: str, *, camera: bool = False) -> RobotText:
+    """A two-wheeled base carrying, on a link fixed to it named ``mount``, an unnamed chain of
+    a yaw and a pitch (``joint1``, ``joint2``): a course's two-joint arm on its own mount;
+    with ``camera``, a camera fixed at the chain's tip."""
+    robot = RobotText("tb3_with_payload", root="base_link")
+    builders.wheeled_base(robot)
+    robot.fixed("base_link", mount)
+    link1 = builders.placed(robot, "joint1", "revolute", mount, "link1", xyz="0 0 0.01")
+    tip = builders.placed(robot, "joint2", "revolute", link1, "link2", xyz="0 0 0.2", axis="0 1 0")
+    if camera:
+        robot.fixed(tip, "camera_link")
+        robot.add(builders.gazebo_sensor("camera_link", "camera", "cam"))
+    return robot
+
+
+@pytest.mark.parametrize("mount", ["manipulator_base_link", "arm_base", "arm1_mount"])
+def test_a_two_joint_chain_on_a_link_named_as_an_arms_base_is_that_arm(mount: str) -> None:
+    result = identify_urdf(two_joints_on(mount).text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["arm"]
+    assert "arm's base" in result.body.limbs[0].why
+    assert result.structure == "Mobile Manipulator"
+
+
+@pytest.mark.parametrize(
+    ("mount", "camera", "kind"),
+    [
+        ("payload_mount", False, "other"),
+        ("alarm_base", False, "other"),
+        ("armature", False, "other"),
+        ("arm_base", True, "head"),
+    ],
+    ids=[
+        "a mount named for no arm",
+        "arm inside another word",
+        "an arm's word with no base or mount",
+        "a camera at its tip: a pan/tilt unit",
+    ],
+)
+def test_a_two_joint_chain_on_any_other_link_is_no_arm(mount: str, camera: bool, kind: str) -> None:
+    result = identify_urdf(two_joints_on(mount, camera=camera).text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == [kind]
+    assert result.structure == "UGV"
