@@ -869,6 +869,17 @@ def test_a_body_that_shows_no_way_of_travelling_floats_when_its_packages_are_a_b
     assert structure == "Surface Vessel"
 
 
+def test_a_message_package_named_for_a_submersible_does_not_put_a_boat_under_water(
+    tmp_path: Path,
+) -> None:
+    # A lab's boat pilot uses the lab's shared `auv_msgs`: its packages still name one medium.
+    pilot = "<node pkg='asv_pilot'/>\nfrom auv_msgs.msg import NavSts"
+    assert read_with(tmp_path / "boat", one_link(), pilot)[0] == "Surface Vessel"
+    # A submersible's own words beside a boat's still name two media, which say nothing.
+    both = "<node pkg='asv_pilot'/>\n<node pkg='auv_control'/>"
+    assert read_with(tmp_path / "both", one_link(), both)[0] == "Other"
+
+
 @pytest.mark.parametrize(
     "bringup",
     [
