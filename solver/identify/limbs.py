@@ -2758,12 +2758,12 @@ def _unnamed_kind(
 
 def _on_an_arm_base(first: Joint) -> bool:
     """The chain's first joint turns on a link named as an arm's base or mount (``arm_base``,
-    ``manipulator_base_link``, ``arm_mount``): what it carries is that arm, however short."""
-    return bool(_ARM_WORD.search(first.parent) and _BASE_WORD.search(first.parent))
+    ``manipulator_base_link``, ``ArmMount``: an arm or a manipulator as a word,
+    :func:`_named_arm`, and a base or a mount): what it carries is that arm, however short."""
+    return _named_arm(first.parent) and bool(_BASE_WORD.search(first.parent))
 
 
-# An arm or a manipulator as a word of a link's name, and a base or a mount.
-_ARM_WORD = re.compile(r"(^|[^a-z])(arm|manipulator)([^a-z]|$)", re.IGNORECASE)
+# A base or a mount in a link's name.
 _BASE_WORD = re.compile(r"base|mount", re.IGNORECASE)
 
 

@@ -3590,7 +3590,9 @@ def two_joints_on(mount: str, *, camera: bool = False) -> RobotText:
     return robot
 
 
-@pytest.mark.parametrize("mount", ["manipulator_base_link", "arm_base", "arm1_mount"])
+@pytest.mark.parametrize(
+    "mount", ["manipulator_base_link", "arm_base", "arm1_mount", "ArmMount", "arms_base"]
+)
 def test_a_two_joint_chain_on_a_link_named_as_an_arms_base_is_that_arm(mount: str) -> None:
     result = identify_urdf(two_joints_on(mount).text())
     assert result.body is not None
