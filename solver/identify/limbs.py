@@ -2747,13 +2747,23 @@ def _unnamed_kind(
         # Three turns in one ball on a wheeled body, no joint after it: a ball caster, a
         # rolling robot's shell (elsewhere an unnamed ball may be a shoulder).
         return "other", "a lone ball joint on a wheeled body (a ball caster or a shell)"
+    why = _arm_why(tree, chain, length, gripper=gripper, named=named, flying=flying)
+    return ("arm", why) if why else ("other", "no name or shape of a limb")
+
+
+def _arm_why(
+    tree: JointTree, chain: list[Joint], length: int, *, gripper: bool, named: bool, flying: bool
+) -> str:
+    """Why a chain the names do not decide is an arm, or "": long enough for one, or ending in
+    a gripper; short, unnamed, hanging from a flying body or turning on a link named as an
+    arm's base (:func:`_on_an_arm_base`)."""
     if length >= tree.profile.limb("arm_min_joints") or (gripper and length >= 2):
-        return "arm", "ends in a gripper" if gripper else f"an unnamed chain of {length} joints"
+        return "ends in a gripper" if gripper else f"an unnamed chain of {length} joints"
     if flying and length >= _FLYING_ARM_JOINTS and not named:
-        return "arm", f"a chain of {length} joints hanging from a flying body"
+        return f"a chain of {length} joints hanging from a flying body"
     if not named and length >= 2 and _on_an_arm_base(chain[0]):
-        return "arm", f"a chain of {length} joints on a link named as an arm's base"
-    return "other", "no name or shape of a limb"
+        return f"a chain of {length} joints on a link named as an arm's base"
+    return ""
 
 
 def _on_an_arm_base(first: Joint) -> bool:
