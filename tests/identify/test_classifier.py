@@ -84,7 +84,7 @@ def test_zero_range_revolute_joints_are_fixed_and_mimic_joints_not_actuated() ->
     assert not arm.actuated
 
 
-def test_limits_closer_than_a_nanometre_lock_a_joint_as_equal_ones_do() -> None:
+def test_limits_closer_than_a_tenth_of_a_millimetre_lock_a_joint_as_equal_ones_do() -> None:
     # A rover converted from SDF: its turret and camera frame on revolute joints of +-1e-16,
     # a pan/tilt head between them; no actuator places a part that finely.
     shut = '<axis xyz="0 0 1"/><limit lower="-1e-16" upper="1e-16" effort="1000" velocity="1"/>'
@@ -100,6 +100,13 @@ def test_limits_closer_than_a_nanometre_lock_a_joint_as_equal_ones_do() -> None:
     result = identify_urdf(rover.text())
     assert result.structure == "UGV"
     assert [control.motion_control for control in result.motion_controls] == ["Driving"]
+    # A force sensor's joint left a gap of 1e-5 rad for the simulator to measure across it.
+    gap = '<axis xyz="0 0 1"/><limit lower="0" upper="0.00001" effort="10" velocity="1"/>'
+    arm = builders.manipulator()
+    arm.joint("ft_sensor_joint", "revolute", "wrist_3_link", "ft_link", gap)
+    sensor = parse_urdf(arm.text()).joint("ft_sensor_joint")
+    assert sensor is not None
+    assert not sensor.movable
     # A small range a joint can travel (a fifth of a millimetre) still moves.
     fine = '<axis xyz="1 0 0"/><limit lower="0" upper="0.0002" effort="10" velocity="1"/>'
     slide = RobotText("stage")

@@ -56,10 +56,18 @@ _MAX_PARAMS = 400
 _MODEL_URI = "model://"
 # A revolute joint whose range spans this many radians (16 turns) has no stop: it is endless.
 _ENDLESS_RANGE = 100.0
-# A range narrower than this (a nanometre, a nanoradian) leaves a joint no room to move: no
-# actuator places a part so finely, so limits this close are a lock written with a rounding
-# (an SDF converter's +-1e-16 on a sensor's frame), as equal limits are.
-_NO_ROOM = 1e-9
+# A range narrower than this (a tenth of a millimetre, a tenth of a milliradian) leaves a joint
+# no room to move: no joint of a robot's description moves so little, so limits this close are
+# a lock written with a rounding (an SDF converter's +-1e-16 on a sensor's frame) or a gap left
+# on purpose (a force sensor's revolute joint of 0..1e-5 rad, for a simulator to measure the
+# wrench across it), as equal limits are.
+_NO_ROOM = 1e-4
+# The most a link may weigh (kg) and be a simulator's mass point, not a part (:func:`_mass_points`):
+# a few grams, what a simulator is given for a link it must keep.
+_MASS_POINT = 0.005
+# How deep below a joint its mass points are looked through (:func:`_mass_points`): bounds a
+# stranger's chain; deeper is read as a part.
+_MASS_POINT_DEPTH = 64
 # Joints that move without limits: beside them, equal limits are a lock, not placeholders.
 _UNLIMITED = frozenset({"continuous", "floating", "planar"})
 # Sea water's density (kg/m3): what a hydrodynamics plugin assumes when it names none.
@@ -92,6 +100,9 @@ class Link:
     declared: bool = True
     # A declared <link/> with nothing in it: no visual, collision or inertial (a frame).
     empty: bool = False
+    # It has a <visual> or a <collision>: a part one can see or touch, not a frame or a
+    # simulator's mass point.
+    drawn: bool = False
     # Its <inertial>'s mass and where its <origin xyz> puts the mass centre on the link; None
     # when it writes no inertial, no positive mass or no readable place (an origin left out is
     # a macro's default, not a measurement). A wheel's mass centre lies on its axle.
@@ -155,7 +166,10 @@ class Joint:
     # It moves nothing and exerts nothing: its limit's effort is zero, its child an empty leaf
     # (a frame with nothing in it, nothing hung from it), and nothing couples or commands it. A
     # model's bookkeeping, not a joint of the body (the Pisa/IIT LWR's joint-stiffness
-    # pseudo-joints, one beside each joint): :func:`_phantoms`.
+    # pseudo-joints, one beside each joint). Or a limited joint that moves mass points only:
+    # nothing below it is drawn or senses, and each link there weighs a few grams at most, in a
+    # file that draws its body (a simulator's helper chain at an arm's end). :func:`_phantoms`,
+    # :func:`_mass_points`.
     phantom: bool = False
 
     @property
@@ -496,7 +510,9 @@ class _Builder:
         )
         simulated = _plugin_commands(plugins)
         commands = _merged_commands(_command_interfaces(root), simulated)
-        joints = self._joints(joint_elements, links, {name for name, _ in commands})
+        joints = self._joints(
+            joint_elements, links, {name for name, _ in commands}, _sensing_links(root)
+        )
         tree, top = self._tree(root, links, joints)
         sensors = self._sensors(root, {j.name: j.child for j in tree})
         controlled = frozenset(self._controlled(root)) | {name for name, _ in simulated}
@@ -549,6 +565,7 @@ class _Builder:
                     buoyancy,
                     _cylinder(element),
                     empty=not any(isinstance(part.tag, str) for part in element),
+                    drawn=any(part.tag in ("visual", "collision") for part in element),
                     mass=mass,
                     mass_centre=_mass_centre(element),
                     box=_box(element),
@@ -556,11 +573,16 @@ class _Builder:
         return found
 
     def _joints(
-        self, elements: list[etree._Element], links: dict[str, Link], commanded: set[str]
+        self,
+        elements: list[etree._Element],
+        links: dict[str, Link],
+        commanded: set[str],
+        sensing: set[str],
     ) -> list[Joint]:
         """The joints, those whose equal limits are placeholders unlocked: coupled by
         ``<mimic>``, all equal (:func:`_placeholders`), or ``commanded`` by a controller (a
-        joint a controller moves is not fixed: a CAD exporter wrote every slide 0..0)."""
+        joint a controller moves is not fixed: a CAD exporter wrote every slide 0..0); the
+        phantoms marked (:func:`_phantoms`; ``sensing``: the links a sensor is on)."""
         found: dict[str, Joint] = {}
         for element in elements:
             joint = self._joint(element, links)
@@ -581,7 +603,8 @@ class _Builder:
         unlocked = (
             coupled | _placeholders(found) | _blank_chains(found) | (commanded & found.keys())
         )
-        phantoms = _phantoms(found, links) - coupled - commanded
+        phantoms = _phantoms(found, links) | _mass_points(found, links, sensing)
+        phantoms -= coupled | commanded
         changed = unlocked | phantoms
         return [
             replace(joint, unlocked=name in unlocked, phantom=name in phantoms)
@@ -1027,6 +1050,57 @@ def _phantoms(joints: dict[str, Joint], links: dict[str, Link]) -> set[str]:
         and (child := links.get(joint.child)) is not None
         and child.empty
     }
+
+
+def _mass_points(joints: dict[str, Joint], links: dict[str, Link], sensing: set[str]) -> set[str]:
+    """The limited joints (revolute, prismatic) that move mass points only: every link below
+    them writes a mass of at most :data:`_MASS_POINT` and is neither drawn (:attr:`Link.drawn`)
+    nor carries a sensor (``sensing``), in a file that draws some link. A helper a simulator
+    needs (a mass for each link), not a part of the body: Velma's keep-upright chains at its
+    wrists. A bare chain (no geometry in the file, or links with no mass written) says nothing
+    by it; an endless joint's undrawn mass point is a rotor's or a wheel's stand-in."""
+    if not any(link.drawn for link in links.values()):
+        return set()
+    below: dict[str, list[str]] = {}
+    for joint in joints.values():
+        below.setdefault(joint.parent, []).append(joint.child)
+    seen: dict[str, bool] = {}
+
+    def points(link: str, depth: int = 0) -> bool:
+        if link not in seen:
+            found = links.get(link)
+            seen[link] = False  # a cycle (refused later) reads as drawn
+            seen[link] = (
+                depth < _MASS_POINT_DEPTH
+                and found is not None
+                and found.mass is not None
+                and found.mass <= _MASS_POINT
+                and not found.drawn
+                and link not in sensing
+                and all(points(child, depth + 1) for child in below.get(link, ()))
+            )
+        return seen[link]
+
+    return {
+        name
+        for name, joint in joints.items()
+        if joint.type in ("revolute", "prismatic") and not joint.endless and points(joint.child)
+    }
+
+
+def _sensing_links(root: etree._Element) -> set[str]:
+    """The links a sensor is on: a ``<gazebo reference>`` holding a ``<sensor>``, a URDF
+    ``<sensor>``'s ``<parent link>``."""
+    found = {
+        (block.get("reference") or "").strip()
+        for block in root.findall("gazebo")
+        if block.find("sensor") is not None
+    }
+    for sensor in root.findall("sensor"):
+        parent = sensor.find("parent")
+        if parent is not None:
+            found.add((parent.get("link") or "").strip())
+    return found
 
 
 def _placeholders(joints: dict[str, Joint]) -> set[str]:

@@ -360,6 +360,45 @@ def test_a_joint_to_an_empty_leaf_moves_when_it_may_exert_or_carry_or_is_driven(
     assert next(j for j in urdf.joints if j.name == moving).movable
 
 
+def wrist_helpers(*, mass: str = "0.002", inside: str = "") -> str:
+    """A drawn three-joint arm whose last link carries a simulator's helper chain: two
+    revolute joints to links of ``mass`` with ``inside`` in them (Velma's keep-upright chain at
+    each wrist)."""
+    drawn = '<visual><geometry><box size="0.1 0.1 0.1"/></geometry></visual>'
+    robot = builders.RobotText("velma")
+    tip = robot.chain(robot.root, ["a1", "a2", "a3"])
+    helper = robot.chain(tip, ["upright0", "upright1"])
+    text = robot.text()
+    for link in (robot.root, "a1_link", "a2_link", tip):
+        text = text.replace(f'<link name="{link}"/>', f'<link name="{link}">{drawn}</link>')
+    point = f'<inertial><mass value="{mass}"/></inertial>{inside}'
+    for link in ("upright0_link", helper):
+        text = text.replace(f'<link name="{link}"/>', f'<link name="{link}">{point}</link>')
+    return text
+
+
+def test_a_chain_of_undrawn_mass_points_is_no_part_of_the_body() -> None:
+    urdf = parse_urdf(wrist_helpers(), "velma.urdf")
+    assert [j.name for j in urdf.joints if j.movable] == ["a1", "a2", "a3"]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        wrist_helpers(mass="0.05"),  # fifty grams is a part
+        wrist_helpers(inside='<visual><geometry><sphere radius="0.01"/></geometry></visual>'),
+        wrist_helpers().replace(  # a sensor rides it
+            "</robot>", builders.gazebo_sensor("upright1_link", "camera", "cam") + "\n</robot>"
+        ),
+        wrist_helpers().replace("<visual>", "<inertial>").replace("</visual>", "</inertial>"),
+    ],
+    ids=["heavy", "drawn", "sensing", "nothing drawn in the file"],
+)
+def test_a_chain_below_a_part_a_sensor_or_in_an_undrawn_file_still_moves(text: str) -> None:
+    urdf = parse_urdf(text, "velma.urdf")
+    assert all(j.movable for j in urdf.joints)
+
+
 def test_efforts_all_zero_are_placeholders_that_lock_nothing() -> None:
     text = stiffness_arm().replace('effort="1"', 'effort="0"')
     urdf = parse_urdf(text, "lwr.urdf")
