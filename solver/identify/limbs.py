@@ -2050,7 +2050,17 @@ def spine(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     point), each joint's axis square to the last's and none along the chain (:func:`_bends`),
     on a body that has nothing else (no wheels, rotors, legs or other chains); on a robot
     named a snake (:data:`_SNAKE_NAME`), any such chain of two turning joints or more (of
-    equal modules as long as a snake when a plugin slides the body: :func:`_named_snake`)."""
+    equal modules as long as a snake when a plugin slides the body: :func:`_named_snake`).
+    Two chains from one link, and nothing else, are read as one through it (the file's root
+    is a module inside the snake, not its end): a spine when that one chain is."""
+    if len(limbs) == _THROUGH_ONE_LINK and limbs[0].base == limbs[1].base:
+        first, second = limbs
+        through = Limb("other", first.joints[::-1] + second.joints, first.tip, second.tip)
+        if first.kind in ("arm", "other") and not first.gripper:
+            found = spine(tree, [replace(through, gripper=second.gripper, kind=second.kind)])
+            if found[0].kind == "spine":
+                return found
+        return limbs
     if len(limbs) != 1:
         return limbs
     limb = limbs[0]
@@ -2082,6 +2092,10 @@ def spine(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     else:
         return limbs
     return [replace(limb, kind="spine", why=why)]
+
+
+# Chains from one link read as one snake through it (:func:`spine`): the two ways out of it.
+_THROUGH_ONE_LINK = 2
 
 
 def pendulum(tree: JointTree, limbs: list[Limb]) -> list[Limb]:

@@ -14,7 +14,7 @@ from solver.identify.limbs import Limb, find_limbs, parallel_robot, sort_limbs
 from solver.identify.readers.urdf import parse_urdf
 from solver.identify.tree import JointTree
 from tests.identify import builders
-from tests.identify.builders import RobotText
+from tests.identify.builders import RobotText, placed
 
 
 def tree_of(robot: RobotText) -> JointTree:
@@ -285,6 +285,24 @@ def test_a_chain_of_equal_modules_with_alternating_axes_is_a_snakes_spine() -> N
     assert [limb.kind for limb in result.body.limbs] == ["spine"]
     assert result.structure == "Serpentine"
     assert result.kinematic_type is None  # the article has no snake
+
+
+def test_a_snake_whose_file_roots_it_at_a_module_inside_is_one_spine_through_that_module() -> None:
+    # A modular snake written from its second module: one joint out to its tail, nine along
+    # the rest, the two chains meeting on the root's link. Read as one chain through it.
+    robot = RobotText("module11", root="m0")
+    placed(robot, "tail", "revolute", "m0", "t1", xyz="-0.1 0 0", axis="0 1 0")
+    link = "m0"
+    for i in range(1, 10):
+        axis = "0 0 1" if i % 2 else "0 1 0"
+        step = "0 0 0" if i == 1 else "0.1 0 0"  # the module's first joint is on its link
+        link = placed(robot, f"j{i}", "revolute", link, f"m{i}", xyz=step, axis=axis)
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert [(limb.kind, len(limb.joints)) for limb in result.body.limbs] == [("spine", 10)]
+    assert result.structure == "Serpentine"
+    # Two arms from one torso are no such chain: their modules differ, and they hold grippers.
+    assert identify_urdf(builders.torso().text()).structure == "Torso"
 
 
 def test_the_same_chain_on_a_rail_is_an_arm_not_a_snake() -> None:
