@@ -1109,7 +1109,48 @@ def _legs_why(tree: JointTree, base: str, group: list[Limb], *, wheeled: bool) -
             "one of alike chains around one link, each reaching out flat from it, every way"
             " (a walker's legs sprawled at rest, by place)"
         )
+    if not wheeled and _named_corners(group):
+        return (
+            "one of alike chains named for the four corners of one body (FL, FR, RL, RR: a"
+            " walker's legs, whichever way the file stands it up)"
+        )
     return ""
+
+
+def _named_corners(group: list[Limb]) -> bool:
+    """Each chain names one corner of a body the same way in its joints and links, as a
+    walker's legs are short-named (``L1_FL1``, ``LF_HFE``, ``rr_knee``: front or rear, left or
+    right, either first), and together they name all four. A hand's fingers share one side's
+    letters (``rh_``) and name no corners."""
+    corners = set()
+    for limb in group:
+        found = {
+            _corner(token) for name in (*limb.joints, limb.tip) for token in _TOKEN.findall(name)
+        }
+        found.discard(None)
+        if len(found) != 1:
+            return False
+        corners |= found
+    return len(corners) == _CORNERS
+
+
+def _corner(token: str) -> tuple[str, str] | None:
+    """The corner a two-letter token names (front or rear, then left or right), or None."""
+    token = token.lower()
+    if len(token) != _CORNER_LETTERS:
+        return None
+    first, second = token[0], token[1]
+    if first in "fbhr" and second in "lr":
+        return ("front" if first == "f" else "rear", second)
+    if first in "lr" and second in "fbh":
+        return ("front" if second == "f" else "rear", first)
+    return None
+
+
+# A name's short words, between separators or digits (``L1_FL1``: ``L``, ``FL``).
+_TOKEN = re.compile(r"[A-Za-z]+")
+_CORNER_LETTERS = 2
+_CORNERS = 4
 
 
 def _sprawled_arms_why(tree: JointTree, base: str, group: list[Limb], *, wheeled: bool) -> str:

@@ -305,6 +305,28 @@ def test_a_snake_whose_file_roots_it_at_a_module_inside_is_one_spine_through_tha
     assert identify_urdf(builders.torso().text()).structure == "Torso"
 
 
+def crawler(corners: tuple[str, ...]) -> str:
+    """A body drawn y-up (as a physics engine's exporter leaves it): four two-joint chains
+    hanging along -y from the corners of the x-z plane, every hinge about x, each chain's links
+    named ``L1_<corner>``, ``L2_<corner>``."""
+    robot = RobotText("crawly")
+    places = ("0.09 0 0.07", "-0.09 0 0.07", "0.09 0 -0.07", "-0.09 0 -0.07")
+    for i, (corner, xyz) in enumerate(zip(corners, places, strict=True), start=1):
+        hip = placed(
+            robot, f"th_{i}", "revolute", robot.root, f"L1_{corner}1", xyz=xyz, axis="1 0 0"
+        )
+        placed(robot, f"th_{i + 4}", "revolute", hip, f"L2_{corner}1", xyz="0 -0.1 0", axis="1 0 0")
+    return robot.text()
+
+
+def test_four_chains_named_for_a_bodys_four_corners_are_legs_whichever_way_it_stands() -> None:
+    assert identify_urdf(crawler(("FL", "FR", "BL", "BR"))).structure == "Quadruped"
+    assert identify_urdf(crawler(("LF", "RF", "LH", "RH"))).structure == "Quadruped"  # ANYmal's
+    # One side's letters on every chain (a right hand's `rh_`), or no corner at all, name none.
+    assert identify_urdf(crawler(("RH", "RH", "RH", "RH"))).structure != "Quadruped"
+    assert identify_urdf(crawler(("A", "B", "C", "D"))).structure != "Quadruped"
+
+
 def test_the_same_chain_on_a_rail_is_an_arm_not_a_snake() -> None:
     """Equal modules with alternating axes behind a slide (a linear rail carrying the chain):
     a snake's modules only turn, so the chain is an arm on a rail."""
