@@ -2094,14 +2094,8 @@ def spine(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     equal modules as long as a snake when a plugin slides the body: :func:`_named_snake`).
     Two chains from one link, and nothing else, are read as one through it (the file's root
     is a module inside the snake, not its end): a spine when that one chain is."""
-    if len(limbs) == _THROUGH_ONE_LINK and limbs[0].base == limbs[1].base:
-        first, second = limbs
-        through = Limb("other", first.joints[::-1] + second.joints, first.tip, second.tip)
-        if first.kind in ("arm", "other") and not first.gripper:
-            found = spine(tree, [replace(through, gripper=second.gripper, kind=second.kind)])
-            if found[0].kind == "spine":
-                return found
-        return limbs
+    if len(limbs) == _THROUGH_ONE_LINK:
+        return _spine_through(tree, limbs)
     if len(limbs) != 1:
         return limbs
     limb = limbs[0]
@@ -2133,6 +2127,18 @@ def spine(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     else:
         return limbs
     return [replace(limb, kind="spine", why=why)]
+
+
+def _spine_through(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
+    """Two chains from one link read as one through it (:func:`spine`): the spine, when that
+    one chain is a snake's; else the two as they were."""
+    first, second = limbs
+    if first.base != second.base or first.kind not in ("arm", "other") or first.gripper:
+        return limbs
+    joints = first.joints[::-1] + second.joints
+    through = Limb(second.kind, joints, first.tip, second.tip, gripper=second.gripper)
+    found = spine(tree, [through])
+    return found if found[0].kind == "spine" else limbs
 
 
 # Chains from one link read as one snake through it (:func:`spine`): the two ways out of it.
