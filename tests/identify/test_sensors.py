@@ -1064,12 +1064,10 @@ def test_an_ultrasonic_rangers_name_cut_short_still_says_sonar() -> None:
     # A farm robot's four ultrasonic rangers as gpu_lidars of ten rays over 60 degrees,
     # reaching 4 m: `US1_sensor` on `US1_scan_link`, `ultra_front`. A word holding the letters
     # (`status`, `bus_link`, `ultralight`) is no such name.
-    fan = "<samples>10</samples><min_angle>-0.52</min_angle><max_angle>0.52</max_angle>"
-    scan = f"<ray><scan><horizontal>{fan}</horizontal></scan><range><max>4.0</max></range></ray>"
     found = kinds(
-        builders.gazebo_sensor("US1_scan_link", "gpu_lidar", "US1_sensor", scan),
-        builders.gazebo_sensor("front_link", "gpu_lidar", "ultra_front", scan),
-        builders.gazebo_sensor("bus_link", "gpu_lidar", "ultralight_status", scan),
+        ray("US1_scan_link", "US1_sensor", 10, 1.04, 4.0),
+        ray("front_link", "ultra_front", 10, 1.04, 4.0),
+        ray("bus_link", "ultralight_status", 10, 1.04, 4.0),
     )
     assert found == [("sonar", None, 2), ("lidar", "LIDAR", 1)]
 
