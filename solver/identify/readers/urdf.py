@@ -177,7 +177,7 @@ class Joint:
         if self.type == "fixed" or self.phantom:
             return False
         # RotorS and others mount sensors on revolute joints with lower == upper: fixed in effect,
-        # and so are limits closer than a nanometre or a nanoradian (:attr:`closed`).
+        # and so are limits closer than a tenth of a millimetre or milliradian (:attr:`closed`).
         # Not an unlocked joint: nobody couples a joint that cannot move, nor locks every joint
         # of a robot, so such equal limits are placeholders (a kinematic simulator's fingers, a
         # CAD exporter's limits all zero).
