@@ -123,6 +123,24 @@ MIN_COMMON = 3
 # (:data:`_AS_PACKAGE`; or where its package.xml names it), never by the parameter: a
 # neighbouring robot's launch file setting its own ``robot_description`` does not use it.
 PARAMETER_NAMES = frozenset({"robot_description"})
+# The ROS interfaces of a simulator (Gazebo's, Gazebo Sim's), vendored into a robot's workspace
+# as source: their plugins' code poses and drives any model, none of it the robot's software.
+SIMULATOR_PACKAGES = frozenset(
+    {
+        "gazebo_dev",
+        "gazebo_msgs",
+        "gazebo_plugins",
+        "gazebo_ros",
+        "gazebo_ros_control",
+        "gazebo_ros_pkgs",
+        "gazebo_ros2_control",
+        "gz_ros2_control",
+        "ros_gz_bridge",
+        "ros_gz_sim",
+        "ros_ign_bridge",
+        "ros_ign_gazebo",
+    }
+)
 # A package named as one: found (``$(find P)``, ``find-pkg-share``, ``package://P``, the
 # Python, C++ and CMake lookups), launched or run (``roslaunch P``, ``ros2 run P``, a node's
 # ``pkg``/``package``), or given as a package argument's or variable's value (``pkg_name = 'P'``,
@@ -297,7 +315,10 @@ def _workspace(
     budget: _Budget,
 ) -> Workspace:
     """The robot's packages ``ours`` (``own`` the description's) of the ``ordered`` packages
-    read at ``top`` (a ``what``: a workspace, a repository), with a note per bound reached."""
+    read at ``top`` (a ``what``: a workspace, a repository), with a note per bound reached; a
+    simulator's ROS interface vendored beside them is none of the robot's, whatever uses it
+    (:data:`SIMULATOR_PACKAGES`)."""
+    ours = [p for p in ours if p is own or p.name not in SIMULATOR_PACKAGES]
     return Workspace(
         top,
         own.name,

@@ -301,15 +301,15 @@ def test_a_dependency_shared_with_another_robot_brings_none_of_that_robots_packa
     tmp_path: Path,
 ) -> None:
     src = tmp_path / "src"
-    described = package(src, "rover_description", {"launch/sim.launch": "gazebo_ros"})
-    package(src, "gazebo_ros")
+    described = package(src, "rover_description", {"launch/sim.launch": "field_worlds"})
+    package(src, "field_worlds")
     package(
         src,
         "drone_gazebo",
-        {"launch/sim.launch": "gazebo_ros drone_navigation", "urdf/drone.urdf": "<robot/>"},
+        {"launch/sim.launch": "field_worlds drone_navigation", "urdf/drone.urdf": "<robot/>"},
     )
     package(src, "drone_navigation", {"launch/nav.launch": "move_base"})
-    assert read(described).packages == ("rover_description", "gazebo_ros")
+    assert read(described).packages == ("rover_description", "field_worlds")
 
 
 def test_a_name_most_packages_write_is_no_evidence_that_its_package_is_used(
@@ -671,6 +671,37 @@ def test_a_workspace_where_no_other_package_holds_a_description_is_all_the_robot
     found = read(one_robots_repository(tmp_path / "ws" / "src"))
     assert found.packages == ("robot_description", "mission_manager", "robot_navigation")
     assert found.neighbours == ()
+
+
+def test_a_simulators_ros_interface_vendored_in_a_one_robot_workspace_is_not_the_robots(
+    tmp_path: Path,
+) -> None:
+    src = tmp_path / "ws" / "src"
+    described = one_robots_repository(src)
+    plugin = {"src/gazebo_ros_force_system.cpp": "target_pose = model->WorldPose();"}
+    package(src / "gazebo_ros_pkgs", "gazebo_ros", plugin)
+    assert read(described).packages == (
+        "robot_description",
+        "mission_manager",
+        "robot_navigation",
+    )
+
+
+def test_a_simulators_ros_interface_a_robots_package_uses_is_not_the_robots(
+    tmp_path: Path,
+) -> None:
+    described = rover_workspace(tmp_path)
+    package(described.parent, "gazebo_ros", {"src/api_plugin.cpp": "target_pose = pose;"})
+    uses = "<package><name>rover_gazebo</name><depend>rover_description</depend>"
+    package(
+        described.parent,
+        "rover_gazebo",
+        {"package.xml": uses + "<depend>gazebo_ros</depend></package>"},
+    )
+    found = read(described)
+    assert found is not None
+    assert "rover_gazebo" in found.packages
+    assert "gazebo_ros" not in found.packages
 
 
 def test_a_second_description_in_the_workspace_leaves_the_others_unread(tmp_path: Path) -> None:
