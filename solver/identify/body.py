@@ -69,6 +69,7 @@ from solver.identify.limbs import (
     raised_legs,
     small_pan_tilt,
     spine,
+    sprawling,
     wheeled_spine,
     wrist,
 )
@@ -177,6 +178,9 @@ class Body:
     # to a base's sensor head: no pan/tilt unit alone).
     driven_by: str = ""
     finger_motions: int = 0
+    # Three legs or more slung out from the body, each first swung about the vertical (a
+    # hexapod's, a spider's: limbs.sprawling).
+    sprawled: bool = False
     # On a flying body, a link the profile's `tool` pattern names that no joint moves: held on
     # fixed joints to the body that carries it (a drone's boom ending in a claw).
     rigid_tool: str = ""
@@ -550,6 +554,7 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
         rig_name=(tree.reader.named_rig,) if tree.reader.named_rig else (),
         flight_hints=flight_hints(tree, parts.roles, parts.limbs),
         finger_motions=sum(1 for name in parts.grippers if (j := urdf.joint(name)) and j.actuated),
+        sprawled=sprawling(tree, parts.limbs),
         fixed_gripper=fixed_gripper,
         roles=_all_roles(tree, parts),
     )

@@ -127,6 +127,7 @@ __all__ = [
     "small_pan_tilt",
     "sort_limbs",
     "spine",
+    "sprawling",
     "tips_meet",
     "wheeled_spine",
     "wrist",
@@ -1263,6 +1264,19 @@ def meeting_tips(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
         else limb
         for limb in limbs
     ]
+
+
+def sprawling(tree: JointTree, limbs: list[Limb]) -> bool:
+    """The legs of ``limbs``, three or more, each a walker's with a coxa (:func:`_coxae`): a
+    body slung between sprawled legs, as an insect's or a spider's is (a hexapod, a "spider"
+    quadruped), not a mammal's legs under it (a hip rolling the leg out first) nor a biped's,
+    whose hip yaw turns a leg standing under it."""
+    legs = [limb for limb in limbs if limb.kind == "leg"]
+    return len(legs) >= _SPRAWLING_LEGS and _coxae(tree, legs)
+
+
+# Legs a sprawled body is slung between, at least (two legs stand under a biped).
+_SPRAWLING_LEGS = 3
 
 
 def _coxae(tree: JointTree, legs: list[Limb]) -> bool:

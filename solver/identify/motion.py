@@ -229,7 +229,8 @@ def _limbs(
     (:attr:`Body.head_alone`); legs to walk on, or, when the robot's packages configure
     joint controllers and ship no gait (``leg_controllers``, the file that shows it), legs
     commanded joint by joint; legs with a controller of a joint's own in the packages
-    (``leg_joint_controllers``, the file that shows it) take joint commands beside the gait."""
+    (``leg_joint_controllers``, the file that shows it) take joint commands beside the gait;
+    so do sprawled legs (:attr:`Body.sprawled`), a guess."""
     found = []
     if body.controlled_joints:
         count = len(body.controlled_joints)
@@ -293,6 +294,16 @@ def _limbs(
         found.append(("leg_controllers", why))
     elif legs >= _WALKING_LEGS:
         found.append(("legs", f"{urdf_source}: likely, not declared: {legs} legs to walk on"))
+        # A body slung between sprawled legs (a hexapod's, a spider's) is a servo walker
+        # whose joints are commanded one by one, gait or none.
+        if body.sprawled:
+            found.append(
+                (
+                    "sprawled_legs",
+                    f"{urdf_source}: likely, not declared: {legs} sprawled legs, each swung "
+                    "about the vertical first, commanded joint by joint",
+                )
+            )
         if leg_joint_controllers is not None:
             why = f"{leg_joint_controllers}: a controller of a joint's own on joints of {legs} legs"
             found.append(("leg_joint_controllers", why))

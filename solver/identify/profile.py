@@ -168,6 +168,7 @@ ROLE_SOURCES = (
     "gripper_alone",
     "head_alone",
     "legs",
+    "sprawled_legs",
 )
 CONTROL_SOURCES = (
     "drive_plugin",

@@ -3,6 +3,7 @@ roles show; a guess says it is one."""
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 
 import pytest
@@ -278,6 +279,50 @@ def test_legs_show_the_body_walks_and_say_it_is_a_guess(
     build: Callable[[], RobotText], legs: int
 ) -> None:
     assert controls(build())["Walking"] == f"urdf: likely, not declared: {legs} legs to walk on"
+
+
+def sprawled_walker(legs: int, hip_axis: str = "0 0 1") -> str:
+    """``legs`` legs of three joints around a body, each swung first about ``hip_axis`` (the
+    vertical: a coxa, as a hexapod's or a spider's is) then lifted about level axes, its foot
+    further out than its hip."""
+    links, joints = ["body"], []
+    for i in range(legs):
+        angle = 2 * math.pi * i / legs
+        x, y = math.cos(angle), math.sin(angle)
+        names = (f"coxa_{i}", f"femur_{i}", f"tibia_{i}")
+        links += [f"{name}_link" for name in names]
+        level = f"{-y:.3f} {x:.3f} 0"
+        places = ((f"{0.1 * x} {0.1 * y} 0", hip_axis), (f"{0.05 * x} {0.05 * y} 0", level))
+        places += ((f"{0.1 * x} {0.1 * y} -0.05", level),)
+        parent = "body"
+        for name, (xyz, axis) in zip(names, places, strict=True):
+            joints.append(builders.joint_xml(name, "revolute", parent, f"{name}_link", xyz, axis))
+            parent = f"{name}_link"
+    body = "".join(f'<link name="{link}"/>' for link in links) + "".join(joints)
+    return f'<robot name="crawler">{body}</robot>'
+
+
+@pytest.mark.parametrize("legs", [6, 4])
+def test_sprawled_legs_swung_about_the_vertical_first_take_joint_commands_beside_the_gait(
+    legs: int,
+) -> None:
+    found = identify_urdf(sprawled_walker(legs)).motion_controls
+    assert {c.motion_control: c.source for c in found} == {
+        "Walking": f"urdf: likely, not declared: {legs} legs to walk on",
+        "Joint": f"urdf: likely, not declared: {legs} sprawled legs, each swung about the "
+        "vertical first, commanded joint by joint",
+    }
+
+
+def test_legs_under_a_body_lifted_about_a_level_axis_first_only_walk() -> None:
+    # A mammal's hip rolls its leg out first (about the body's long axis): no sprawl.
+    found = identify_urdf(sprawled_walker(4, hip_axis="1 0 0")).motion_controls
+    assert [c.motion_control for c in found] == ["Walking"]
+
+
+def test_two_legs_whose_hips_yaw_first_stand_under_a_biped_and_only_walk() -> None:
+    found = identify_urdf(sprawled_walker(2)).motion_controls
+    assert [c.motion_control for c in found] == ["Walking"]
 
 
 def test_one_leg_walks_nowhere() -> None:
