@@ -7,6 +7,8 @@ quadrupeds, bipeds, hands, aerial and legged manipulators).
 
 from __future__ import annotations
 
+import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 
@@ -94,6 +96,25 @@ def joint_xml(name: str, kind: str, parent: str, child: str, *pose: str) -> str:
         f'<joint name="{name}" type="{kind}"><parent link="{parent}"/><child link="{child}"/>'
         f'<origin xyz="{xyz}"/><axis xyz="{axis}"/>{limit}</joint>'
     )
+
+
+def ring_of_legs(
+    name: str, legs: int, places: Callable[[float, float], tuple[tuple[str, str], ...]]
+) -> str:
+    """A robot ``name`` written whole: ``legs`` legs (coxa, femur, tibia) around a body, the
+    ``i``-th one's joints placed by ``places(x, y)`` (each an origin's xyz and an axis, as
+    :func:`joint_xml` takes them) for the unit vector ``(x, y)`` of its bearing."""
+    links, joints = ["body"], []
+    for i in range(legs):
+        angle = 2 * math.pi * i / legs
+        names = (f"coxa_{i}", f"femur_{i}", f"tibia_{i}")
+        links += [f"{part}_link" for part in names]
+        parent = "body"
+        for part, (xyz, axis) in zip(names, places(math.cos(angle), math.sin(angle)), strict=True):
+            joints.append(joint_xml(part, "revolute", parent, f"{part}_link", xyz, axis))
+            parent = f"{part}_link"
+    body = "".join(f'<link name="{link}"/>' for link in links) + "".join(joints)
+    return f'<robot name="{name}">{body}</robot>'
 
 
 def wheeled_base(robot: RobotText, wheels: int = 2) -> None:

@@ -2890,19 +2890,12 @@ def test_three_legs_whose_tips_meet_are_one_parallel_manipulator() -> None:
 def tucked_hexapod() -> str:
     """Six legs named by their parts (a hip yaw about the vertical, two pitches), drawn folded
     so that every foot lies tucked under the middle of the body (a morphing hexapod's ball)."""
-    links, joints = ["body"], []
-    for i in range(6):
-        angle = 2 * math.pi * i / 6
-        x, y = 0.1 * math.cos(angle), 0.1 * math.sin(angle)
-        names = (f"coxa_{i}", f"femur_{i}", f"tibia_{i}")
-        links += [f"{name}_link" for name in names]
-        places = ((f"{x} {y} 0", "0 0 1"), ("0 0 0", "1 0 0"), (f"{-x} {-y} -0.05", "1 0 0"))
-        parent = "body"
-        for name, (xyz, axis) in zip(names, places, strict=True):
-            joints.append(builders.joint_xml(name, "revolute", parent, f"{name}_link", xyz, axis))
-            parent = f"{name}_link"
-    body = "".join(f'<link name="{link}"/>' for link in links) + "".join(joints)
-    return f'<robot name="morphing">{body}</robot>'
+
+    def places(x: float, y: float) -> tuple[tuple[str, str], ...]:
+        x, y = 0.1 * x, 0.1 * y
+        return ((f"{x} {y} 0", "0 0 1"), ("0 0 0", "1 0 0"), (f"{-x} {-y} -0.05", "1 0 0"))
+
+    return builders.ring_of_legs("morphing", 6, places)
 
 
 def test_legs_whose_hips_turn_about_the_vertical_are_a_walkers_however_their_feet_are_tucked() -> (

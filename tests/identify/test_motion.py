@@ -3,7 +3,6 @@ roles show; a guess says it is one."""
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 
 import pytest
@@ -285,21 +284,16 @@ def sprawled_walker(legs: int, hip_axis: str = "0 0 1") -> str:
     """``legs`` legs of three joints around a body, each swung first about ``hip_axis`` (the
     vertical: a coxa, as a hexapod's or a spider's is) then lifted about level axes, its foot
     further out than its hip."""
-    links, joints = ["body"], []
-    for i in range(legs):
-        angle = 2 * math.pi * i / legs
-        x, y = math.cos(angle), math.sin(angle)
-        names = (f"coxa_{i}", f"femur_{i}", f"tibia_{i}")
-        links += [f"{name}_link" for name in names]
+
+    def places(x: float, y: float) -> tuple[tuple[str, str], ...]:
         level = f"{-y:.3f} {x:.3f} 0"
-        places = ((f"{0.1 * x} {0.1 * y} 0", hip_axis), (f"{0.05 * x} {0.05 * y} 0", level))
-        places += ((f"{0.1 * x} {0.1 * y} -0.05", level),)
-        parent = "body"
-        for name, (xyz, axis) in zip(names, places, strict=True):
-            joints.append(builders.joint_xml(name, "revolute", parent, f"{name}_link", xyz, axis))
-            parent = f"{name}_link"
-    body = "".join(f'<link name="{link}"/>' for link in links) + "".join(joints)
-    return f'<robot name="crawler">{body}</robot>'
+        return (
+            (f"{0.1 * x} {0.1 * y} 0", hip_axis),
+            (f"{0.05 * x} {0.05 * y} 0", level),
+            (f"{0.1 * x} {0.1 * y} -0.05", level),
+        )
+
+    return builders.ring_of_legs("crawler", legs, places)
 
 
 @pytest.mark.parametrize("legs", [6, 4])
