@@ -71,7 +71,6 @@ from solver.identify.shipped import (
     joint_controllers,
     named_joints,
     per_joint_controllers,
-    ships_none,
 )
 from solver.limits import limit
 from solver.ros.description import TeleopDescription, description_beside, load_description
@@ -220,7 +219,6 @@ def identify_urdf(
             named=_named(packages, body),
             leg_controllers=_joint_controllers(packages, profile.gait, legs),
             leg_joint_controllers=_own_controllers(packages, profile.gait, legs),
-            gaitless=_gaitless(packages, profile.gait),
             rotor_controllers=_joint_controllers(packages, profile.flight, body.rotors),
             mount_joint_controllers=_own_controllers(packages, profile.gait, _vehicle_mounts(body)),
             head_joint_controllers=_own_controllers(
@@ -284,14 +282,6 @@ def _joint_controllers(
     its rotors'), when they ship none of the body's own software (``rule``: a gait, flight
     software; :func:`~solver.identify.shipped.joint_controllers`); else None."""
     return None if packages is None else joint_controllers(packages, rule, joints)
-
-
-def _gaitless(packages: Workspace | None, rule: SoftwareRule | None) -> str | None:
-    """The robot's packages as a line shows them, when read whole they ship no gait (``rule``,
-    :func:`~solver.identify.shipped.ships_none`); else None."""
-    if packages is None or rule is None or not ships_none(packages, rule):
-        return None
-    return packages.shown_packages
 
 
 def _own_controllers(

@@ -223,16 +223,14 @@ def _limbs(
     *,
     leg_controllers: str | None = None,
     leg_joint_controllers: str | None = None,
-    gaitless: str | None = None,
 ) -> _Shown:
     """Limb joints a controller drives (declared); arms of actuated joints (roles), but for
     an arm nothing commands (:func:`_shown_only`); a pan/tilt unit alone
     (:attr:`Body.head_alone`); legs to walk on, or, when the robot's packages configure
     joint controllers and ship no gait (``leg_controllers``, the file that shows it), legs
-    commanded joint by joint, as are legs whose packages, read whole, ship no gait and
-    configure no controller (``gaitless``, the packages); legs with a controller of a joint's
-    own in the packages (``leg_joint_controllers``, the file that shows it) take joint commands
-    beside the gait; so do sprawled legs (:attr:`Body.sprawled`), a guess."""
+    commanded joint by joint; legs with a controller of a joint's own in the packages
+    (``leg_joint_controllers``, the file that shows it) take joint commands beside the gait;
+    so do sprawled legs (:attr:`Body.sprawled`), a guess."""
     found = []
     if body.controlled_joints:
         count = len(body.controlled_joints)
@@ -288,51 +286,27 @@ def _limbs(
                 f"{urdf_source}: likely, not declared: a pan/tilt unit alone, aimed on command",
             )
         )
-    found += _legs(
-        body,
-        urdf_source,
-        leg_controllers=leg_controllers,
-        leg_joint_controllers=leg_joint_controllers,
-        gaitless=gaitless,
-    )
-    return found
-
-
-def _legs(
-    body: Body,
-    urdf_source: str,
-    *,
-    leg_controllers: str | None,
-    leg_joint_controllers: str | None,
-    gaitless: str | None,
-) -> _Shown:
-    """What two legs or more show (see :func:`_limbs`); nothing for fewer."""
     legs = body.count("leg")
-    if legs < _WALKING_LEGS:
-        return []
     # Legs are there to walk on; the gait that walks them is software, not in the description.
-    # Packages read whole that ship no gait say it is not there: the joints are commanded.
-    if leg_controllers is not None:
+    # Packages read whole that configure joint controllers and ship no gait say it is not there.
+    if legs >= _WALKING_LEGS and leg_controllers is not None:
         why = f"{leg_controllers}: joint controllers naming joints of {legs} legs, no gait shipped"
-        return [("leg_controllers", why)]
-    if gaitless is not None:
-        return [
-            ("gaitless_legs", f"packages {gaitless}: read whole, no gait shipped for {legs} legs")
-        ]
-    found = [("legs", f"{urdf_source}: likely, not declared: {legs} legs to walk on")]
-    # A body slung between sprawled legs (a hexapod's, a spider's) is a servo walker whose
-    # joints are commanded one by one, gait or none.
-    if body.sprawled:
-        found.append(
-            (
-                "sprawled_legs",
-                f"{urdf_source}: likely, not declared: {legs} sprawled legs, each swung "
-                "about the vertical first, commanded joint by joint",
+        found.append(("leg_controllers", why))
+    elif legs >= _WALKING_LEGS:
+        found.append(("legs", f"{urdf_source}: likely, not declared: {legs} legs to walk on"))
+        # A body slung between sprawled legs (a hexapod's, a spider's) is a servo walker
+        # whose joints are commanded one by one, gait or none.
+        if body.sprawled:
+            found.append(
+                (
+                    "sprawled_legs",
+                    f"{urdf_source}: likely, not declared: {legs} sprawled legs, each swung "
+                    "about the vertical first, commanded joint by joint",
+                )
             )
-        )
-    if leg_joint_controllers is not None:
-        why = f"{leg_joint_controllers}: a controller of a joint's own on joints of {legs} legs"
-        found.append(("leg_joint_controllers", why))
+        if leg_joint_controllers is not None:
+            why = f"{leg_joint_controllers}: a controller of a joint's own on joints of {legs} legs"
+            found.append(("leg_joint_controllers", why))
     return found
 
 
@@ -459,7 +433,6 @@ def controls_from_description(
     named: Collection[str] | None = None,
     leg_controllers: str | None = None,
     leg_joint_controllers: str | None = None,
-    gaitless: str | None = None,
     rotor_controllers: str | None = None,
     mount_joint_controllers: str | None = None,
     head_joint_controllers: str | None = None,
@@ -472,9 +445,7 @@ def controls_from_description(
     joints the robot's packages name, when they were read whole; ``leg_controllers`` and
     ``rotor_controllers``: the file of the robot's packages that configures joint controllers
     of its legs or rotors, when they ship no gait or no flight software
-    (:func:`solver.identify.shipped.joint_controllers`); ``gaitless``: the robot's packages
-    (as a line shows them) when, read whole, they ship no gait and configure no leg's
-    controller (:func:`solver.identify.shipped.ships_none`); ``leg_joint_controllers``: the file
+    (:func:`solver.identify.shipped.joint_controllers`); ``leg_joint_controllers``: the file
     that configures a controller of a leg joint's own
     (:func:`solver.identify.shipped.per_joint_controllers`); ``mount_joint_controllers`` and
     ``head_joint_controllers``: the same for a flown or swimming body's mount and for a head;
@@ -505,7 +476,6 @@ def controls_from_description(
             named,
             leg_controllers=leg_controllers,
             leg_joint_controllers=leg_joint_controllers,
-            gaitless=gaitless,
         ),
         *_planned(body, srdf, profile, urdf, srdf_source, effectors=effectors),
     ]

@@ -181,7 +181,6 @@ CONTROL_SOURCES = (
     "srdf_walker_group",
     "srdf_end_effector",
     "leg_controllers",
-    "gaitless_legs",
     "leg_joint_controllers",
     "mount_joint_controllers",
     "head_joint_controllers",

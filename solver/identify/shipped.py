@@ -64,7 +64,6 @@ __all__ = [
     "joint_controllers",
     "named_joints",
     "per_joint_controllers",
-    "ships_none",
 ]
 
 
@@ -146,8 +145,12 @@ def joint_controllers(
     # Each joint by its name after a namespace (``firefly/rotor_0_joint``), as a controller's
     # list names it; a name no word can be is not taken as named here: this is a claim.
     words = {tail for name in joints if _WORD.fullmatch(tail := name.rsplit("/", 1)[-1])}
-    if rule is None or not words or not ships_none(workspace, rule):
+    if rule is None or not words or not workspace.complete:
         return None
+    if _first_found(workspace, rule.shipped) or any(
+        rule.shipped.find(name) is not None for name in (*workspace.packages, *workspace.neighbours)
+    ):
+        return None  # software its packages ship, or a package of the workspace named for it
     for shipped in workspace.files:
         matched = rule.controllers.find(shipped.text)
         if matched is not None and named_joints(replace(workspace, files=(shipped,)), words):
@@ -156,21 +159,6 @@ def joint_controllers(
         if topic is not None:
             return _shown_file(shipped.package, shipped.path, topic)
     return None
-
-
-def ships_none(workspace: Workspace, rule: SoftwareRule) -> bool:
-    """The robot's packages were read whole and none ships the body's own software (``rule``:
-    the profile's ``motion.gait`` or ``motion.flight``), nor is a package of the workspace
-    named for it (one of its own, or a ``gait_planner`` beside them that names none of them):
-    what they do not ship is not there."""
-    return (
-        workspace.complete
-        and _first_found(workspace, rule.shipped) is None
-        and not any(
-            rule.shipped.find(name) is not None
-            for name in (*workspace.packages, *workspace.neighbours)
-        )
-    )
 
 
 def controller_joints(
