@@ -510,11 +510,11 @@ class _Builder:
         )
         simulated = _plugin_commands(plugins)
         commands = _merged_commands(_command_interfaces(root), simulated)
-        joints = self._joints(
-            joint_elements, links, {name for name, _ in commands}, _sensing_links(root)
-        )
+        commanded = {name for name, _ in commands}
+        joints = self._joints(joint_elements, links, commanded)
         tree, top = self._tree(root, links, joints)
         sensors = self._sensors(root, {j.name: j.child for j in tree})
+        tree = _without_mass_points(tree, links, {s.link for s in sensors if s.link}, commanded)
         controlled = frozenset(self._controlled(root)) | {name for name, _ in simulated}
         self.faults += _uncompiled_xacro(root, self.file)  # read as URDF, never compiled: say so
         models = self._models(root)
@@ -573,16 +573,13 @@ class _Builder:
         return found
 
     def _joints(
-        self,
-        elements: list[etree._Element],
-        links: dict[str, Link],
-        commanded: set[str],
-        sensing: set[str],
+        self, elements: list[etree._Element], links: dict[str, Link], commanded: set[str]
     ) -> list[Joint]:
         """The joints, those whose equal limits are placeholders unlocked: coupled by
         ``<mimic>``, all equal (:func:`_placeholders`), or ``commanded`` by a controller (a
         joint a controller moves is not fixed: a CAD exporter wrote every slide 0..0); the
-        phantoms marked (:func:`_phantoms`; ``sensing``: the links a sensor is on)."""
+        phantoms marked (:func:`_phantoms`; mass points once the sensors are known,
+        :func:`_without_mass_points`)."""
         found: dict[str, Joint] = {}
         for element in elements:
             joint = self._joint(element, links)
@@ -603,8 +600,7 @@ class _Builder:
         unlocked = (
             coupled | _placeholders(found) | _blank_chains(found) | (commanded & found.keys())
         )
-        phantoms = _phantoms(found, links) | _mass_points(found, links, sensing)
-        phantoms -= coupled | commanded
+        phantoms = _phantoms(found, links) - coupled - commanded
         changed = unlocked | phantoms
         return [
             replace(joint, unlocked=name in unlocked, phantom=name in phantoms)
@@ -1088,19 +1084,19 @@ def _mass_points(joints: dict[str, Joint], links: dict[str, Link], sensing: set[
     }
 
 
-def _sensing_links(root: etree._Element) -> set[str]:
-    """The links a sensor is on: a ``<gazebo reference>`` holding a ``<sensor>``, a URDF
-    ``<sensor>``'s ``<parent link>``."""
-    found = {
-        (block.get("reference") or "").strip()
-        for block in root.findall("gazebo")
-        if block.find("sensor") is not None
-    }
-    for sensor in root.findall("sensor"):
-        parent = sensor.find("parent")
-        if parent is not None:
-            found.add((parent.get("link") or "").strip())
-    return found
+def _without_mass_points(
+    joints: tuple[Joint, ...], links: dict[str, Link], sensing: set[str], commanded: set[str]
+) -> tuple[Joint, ...]:
+    """``joints`` with those that move mass points only (:func:`_mass_points`; ``sensing``: the
+    links a sensor is on) marked phantoms, but for one ``<mimic>`` couples or a controller
+    ``commanded``."""
+    found = {joint.name: joint for joint in joints}
+    points = _mass_points(found, links, sensing) - _coupled(found) - commanded
+    if not points:
+        return joints
+    return tuple(
+        replace(joint, phantom=True) if joint.name in points else joint for joint in joints
+    )
 
 
 def _placeholders(joints: dict[str, Joint]) -> set[str]:
