@@ -2541,19 +2541,28 @@ def gripping_leg(limbs: list[Limb]) -> list[Limb]:
 
 def small_pan_tilt(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
     """The only limb of a body that does not move, an unnamed chain of two hinges, one about
-    an upright axis and the other square to it (pan then tilt, or tilt then pan), the second
-    within :data:`_PAN_TILT_SPAN` of the first: a pan/tilt unit whose payload the file names
-    no sensor of (a servo bracket's two motors sit a few centimetres apart; a two-link arm's
-    shoulder and elbow farther)."""
+    an upright axis and the other square to it: a pan/tilt unit whose payload the file names
+    no sensor of. Tilt then pan only with the second hinge within :data:`_PAN_TILT_SPAN` of
+    the first (a servo bracket's two motors sit a few centimetres apart); pan then tilt at any
+    span with the pan on the base (a yoke turning about the vertical, tilting what it holds: a
+    two-link arm's shoulder and elbow turn about parallel axes, and a third joint or a
+    gripper makes an arm of it; measured: every such body of the development part is
+    labelled a pan/tilt unit, spans 7 to 34 cm)."""
     found = None if moves else _two_hinges_alone(tree, limbs, endless=True)
     if found is None:
         return limbs
     limb, first, second = found
-    if not _square_turns(tree, first, second) or joint_span(tree, limb) > _PAN_TILT_SPAN:
+    if not _square_turns(tree, first, second):
+        return limbs
+    if joint_span(tree, limb) <= _PAN_TILT_SPAN:
+        apart = "a few centimetres apart"
+    elif _pan_then_tilt(tree, first, second) and _on_the_root(tree, limb.base):
+        apart = "the upright one on the base"
+    else:
         return limbs
     why = (
         "the body's only limb, an unnamed chain of two hinges about an upright axis and one "
-        "square to it, a few centimetres apart (a pan/tilt unit)"
+        f"square to it, {apart} (a pan/tilt unit)"
     )
     return [replace(limb, kind="head", why=why)]
 

@@ -1896,14 +1896,22 @@ def test_two_square_hinges_close_together_as_a_bodys_only_limb_are_a_pan_tilt_un
     assert "a pan/tilt unit" in result.body.limbs[0].why
 
 
+def test_a_pan_on_the_base_tilting_what_it_holds_far_above_is_a_pan_tilt_unit() -> None:
+    # A yoke: the upright hinge on the base, the square one 30 cm above it.
+    result = identify_urdf(two_hinges_alone(axes=("0 0 1", "0 1 0"), reach=0.3).text())
+    assert result.structure == "Pan/Tilt Unit"
+    assert result.body is not None
+    assert "the upright one on the base" in result.body.limbs[0].why
+
+
 @pytest.mark.parametrize(
     ("axes", "reach"),
     [
-        (("0 0 1", "0 1 0"), 0.3),  # a shoulder and an elbow apart: no bracket
+        (("0 1 0", "0 0 1"), 0.3),  # a tilt, then a pan far from it: no bracket, no yoke
         (("0 1 0", "0 1 0"), 0.02),  # parallel axes: no pan and tilt
     ],
 )
-def test_two_hinges_far_apart_or_parallel_alone_are_no_pan_tilt_unit(
+def test_a_tilt_far_below_a_pan_or_parallel_hinges_alone_are_no_pan_tilt_unit(
     axes: tuple[str, str], reach: float
 ) -> None:
     result = identify_urdf(two_hinges_alone(axes=axes, reach=reach).text())
