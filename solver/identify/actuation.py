@@ -586,6 +586,7 @@ def _on_a_spinning_part(tree: JointTree, joint: Joint, known: dict[str, str | No
 
 
 _SIDES = "an unnamed endless joint below its link or on a level axle, wheels on both sides"
+_AXLE_ENDS = "an unnamed endless joint at one end of a level axle, another at its other end"
 _POINTING_IN = (
     "an unnamed endless joint on a level axle pointing at the middle of them all, the others "
     "all round it (an omni base's wheels)"
@@ -635,6 +636,8 @@ def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, str
     side_by_side = len(apart) >= 2 and _sides({tree.poses.place(j.child)[1] for j in apart})
     if side_by_side or _in_line(tree, apart):
         found.update(dict.fromkeys((j.name for j in apart), _SIDES))
+    elif _axle_ends(tree, tree.urdf.root, apart):  # a steered pair, on a body facing along y
+        found.update(dict.fromkeys((j.name for j in apart), _AXLE_ENDS))
     return found
 
 
@@ -650,11 +653,34 @@ def _told_on_their_link(
         middle = _middle(tree, link)
         if len(joints) >= 2 and _sides({j.origin[1] - middle for j in joints}):
             found.update(dict.fromkeys((j.name for j in joints), _SIDES))
+        elif _axle_ends(tree, link, joints):
+            found.update(dict.fromkeys((j.name for j in joints), _AXLE_ENDS))
         elif _pointing_in(tree, joints):
             found.update(dict.fromkeys((j.name for j in joints), _POINTING_IN))
         else:
             apart.extend(joints)
     return found, apart
+
+
+def _axle_ends(tree: JointTree, link: str, joints: list[Joint]) -> bool:
+    """Two, about one level axle as the body rests, one at each end of it and the link's
+    middle between them: a pair of wheels side by side on a body drawn facing another way
+    than x (its wheels apart along x, not y: a balancing robot's CAD frame), where sides
+    across y say nothing."""
+    if len(joints) != 2:
+        return False
+    axes = [tree.poses.axis(joint) for joint in joints]
+    if not all(_axle(axis) for axis in axes) or not parallel(axes[0], axes[1]):
+        return False
+    ends = [tree.poses.place(joint.child) for joint in joints]
+    if not off_axis(minus(ends[1], ends[0]), axes[0]) <= _AXLE_OFFSET:  # NaN fails too
+        return False
+    middle = tree.poses.mass_centre(link) or tree.poses.place(link)
+    return dot(minus(ends[0], middle), axes[0]) * dot(minus(ends[1], middle), axes[0]) < 0
+
+
+# How far (metres) two wheels on one axle may lie off the line of the first one's axis.
+_AXLE_OFFSET = 0.01
 
 
 def _pointing_in(tree: JointTree, joints: list[Joint]) -> bool:

@@ -75,6 +75,38 @@ def test_unnamed_endless_joints_below_a_body_on_both_sides_are_wheels() -> None:
     assert result.body.wheels == ("fl_joint", "fr_joint", "rl_joint", "rr_joint")
 
 
+def test_two_unnamed_endless_joints_at_the_ends_of_one_axle_are_wheels_on_a_body_facing_y() -> None:
+    # A balancing robot drawn facing along y: its two wheels apart along x, both on y = 0, so
+    # no side of y tells them; at either end of one level axle, the body between them.
+    robot = RobotText("balancer")
+    for name, x in (("a", -0.06), ("b", 0.06)):
+        builders.placed(
+            robot,
+            f"{name}_joint",
+            "continuous",
+            "base_link",
+            f"{name}_link",
+            xyz=f"{x} 0 -0.06",
+            axis="1 0 0",
+        )
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert (result.structure, result.body.wheels) == ("UGV", ("a_joint", "b_joint"))
+    # The same two joints one above the other's axle, not at its ends: no wheels.
+    off = RobotText("balancer")
+    for name, x, z in (("a", -0.06, -0.06), ("b", 0.06, 0.1)):
+        builders.placed(
+            off,
+            f"{name}_joint",
+            "continuous",
+            "base_link",
+            f"{name}_link",
+            xyz=f"{x} 0 {z}",
+            axis="1 0 0",
+        )
+    assert identify_urdf(off.text()).structure != "UGV"
+
+
 def test_a_spinner_square_to_the_axle_the_wheels_share_is_no_wheel() -> None:
     # Four wheels about axles across the body, and at its nose a spinner about the line the
     # body rolls along: a propeller, no wheel (it would roll the body sideways).
