@@ -807,7 +807,10 @@ def _hanging_pair(
     if feet is None:
         return None
     below_the_root, at_the_root = feet
-    (a, _), (b, _) = placed[id(one)], placed[id(other)]
+    (a, a_tip), (b, b_tip) = placed[id(one)], placed[id(other)]
+    hips = max(a[2], b[2])
+    if distance(a, b) < _AT_ONE_POINT:
+        a, b = a_tip, b_tip  # both hips' first joints at the pelvis's middle: the feet tell
     # Side by side across the body (y), or across x in a file drawn facing y; or at one height
     # and one place along it, apart across it, about a plane off the root's origin (a CAD
     # export whose body frame is not on the robot's middle).
@@ -819,7 +822,6 @@ def _hanging_pair(
         or _a_pair_alone(_facing_y(a), _facing_y(b), [_facing_y(c) for c in others])
     ):
         return None
-    hips = max(a[2], b[2])
     if not _trunk_above(tree, limbs, (one, other), placed, hips):
         return None
     # Feet below the root's frame, or at it (a root drawn at the feet) below a pair of arms, or

@@ -2087,6 +2087,23 @@ def test_legs_hanging_side_by_side_about_a_middle_off_the_roots_origin_are_legs(
     assert result.structure == "Humanoid"
 
 
+def test_legs_whose_first_joints_sit_at_the_pelvis_middle_are_told_apart_by_their_feet() -> None:
+    # Both hips' first joints at one point on the middle line, each leg stepping out to its
+    # side below it: the starts say no side, the feet do.
+    robot = RobotText("r", root="pelvis")
+    for side, y in (("a", 0.1), ("b", -0.1)):
+        steps = [f"0 {y} -0.1", *["0 0 -0.1"] * 4]
+        placed_chain(robot, "pelvis", f"{side}j", start="0 0 -0.05", steps=steps)
+    for side, y in (("c", 0.2), ("d", -0.2)):
+        placed_chain(
+            robot, "pelvis", f"{side}j", start=f"0 {y} 0.4", steps=[f"0 {y / 2} 0", f"0 {y / 2} 0"]
+        )
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert sorted(limb.kind for limb in result.body.limbs) == ["arm", "arm", "leg", "leg"]
+    assert result.structure == "Humanoid"
+
+
 def test_a_bipeds_legs_are_found_though_its_hands_hang_lower_than_its_hips() -> None:
     # Arms hanging straight down at rest, each ending in a hand of three long fingers (five
     # joints each, as a hand with mimic knuckles has) whose bases are below the hips: chains
