@@ -181,6 +181,7 @@ def joint_roles(tree: JointTree) -> dict[str, Role]:
     roles.update(_driven_casters(tree, roles))
     roles.update(_steering_beside(tree, roles))
     _drop_lone_rotors(tree, roles)
+    _drop_flywheel(tree, roles)
     roles.update(_coupled_drives(tree, roles))
     for name, why in endless_jaws(tree, set(roles)).items():
         roles[name] = Role(name, "gripper", why)
@@ -350,6 +351,36 @@ def _drop_lone_rotors(tree: JointTree, roles: dict[str, Role]) -> None:
     if rotors and len(rotors) < tree.profile.limb("min_rotors") and not posed:
         for name in rotors:
             del roles[name]
+
+
+def _drop_flywheel(tree: JointTree, roles: dict[str, Role]) -> None:
+    """The body's only wheel, with no drive or track plugin, drawn as a disc whose rim stays
+    above the bottom of the box its link is drawn as, is no wheel: nothing it turns reaches
+    the ground (a reaction wheel in a balancing cube, a flywheel; a wheel's rim reaches below
+    its body)."""
+    wheels = [name for name, role in roles.items() if role.role == "wheel"]
+    if len(wheels) != 1 or tree.labels("drive") or tree.labels("track"):
+        return
+    joint = tree.urdf.joint(wheels[0])
+    body = None if joint is None else tree.urdf.link(joint.parent)
+    disc = None if joint is None else tree.urdf.link(joint.child)
+    if joint is None or body is None or body.box is None or disc is None or disc.cylinder is None:
+        return
+    box = body.box
+    centre = (
+        tree.poses.place(body.name)[2] + tree.poses.turned(body.name, (0.0, 0.0, 0.0), box.xyz)[2]
+    )
+    reach = sum(
+        abs(tree.poses.turned(body.name, box.rpy, side)[2])
+        for side in (
+            (box.size[0] / 2, 0.0, 0.0),
+            (0.0, box.size[1] / 2, 0.0),
+            (0.0, 0.0, box.size[2] / 2),
+        )
+    )
+    rim = tree.poses.place(disc.name)[2] - disc.cylinder.radius
+    if rim > centre - reach + _GROUND_GAP:  # NaN compares false: a wheel still
+        del roles[wheels[0]]
 
 
 def _coupled_drives(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Role]:

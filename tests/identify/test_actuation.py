@@ -66,6 +66,38 @@ def _four_spinning_leaves(
         robot.joint(f"{corner}_joint", kind, "base_link", f"{corner}_Link", origin)
 
 
+def _cube_with_a_disc(height: float) -> str:
+    """A 15 cm box and one endless joint named for a wheel, turning a 4 cm disc ``height``
+    below the box's middle (its side face)."""
+    robot = RobotText("cube")
+    robot.joint(
+        "motor_joint",
+        "continuous",
+        "base_link",
+        "wheel_link",
+        f'<origin xyz="0.08 0 {-height}"/><axis xyz="1 0 0"/>',
+    )
+    box = '<visual><geometry><box size="0.15 0.15 0.15"/></geometry></visual>'
+    disc = '<visual><geometry><cylinder radius="0.04" length="0.01"/></geometry></visual>'
+    return (
+        robot.text()
+        .replace('<link name="base_link"/>', f'<link name="base_link">{box}</link>')
+        .replace('<link name="wheel_link"/>', f'<link name="wheel_link">{disc}</link>')
+    )
+
+
+def test_a_bodys_only_wheel_whose_rim_stays_inside_its_box_is_a_flywheel() -> None:
+    # A reaction-wheel cube: the disc turns beside the box's middle, its rim 3.5 cm above the
+    # box's bottom; nothing reaches the ground.
+    inside = identify_urdf(_cube_with_a_disc(0.0))
+    assert inside.body is not None
+    assert (inside.structure, inside.body.wheels) == ("Other", ())
+    # The same disc hung low enough to reach below the box: a wheel.
+    below = identify_urdf(_cube_with_a_disc(0.05))
+    assert below.body is not None
+    assert below.body.wheels == ("motor_joint",)
+
+
 def test_unnamed_endless_joints_below_a_body_on_both_sides_are_wheels() -> None:
     robot = RobotText("rover")
     _four_spinning_leaves(robot, -0.1)
