@@ -71,6 +71,11 @@ _WHEEL_SIZE = frozenset({"wheeldiameter", "wheelradius"})
 # plugins written after it): the link of each side's track.
 _TRACK_SIDES = frozenset({"lefttrack", "righttrack"})
 
+# A plugin's parameter that names the topic it takes commands on, and a velocity command's
+# topic (its last part): a Twist on ``cmd_vel``, as every drive plugin takes it.
+_COMMAND_TOPICS = frozenset({"commandtopic", "cmdveltopic"})
+_VELOCITY_TOPIC = re.compile(r"\s*cmd_vel\s*", re.IGNORECASE)
+
 
 # The parameters of such a plugin that name its wheels (``<leftJoint>``, ``<wheel_joint>``); a
 # robot's own plugin may name other joints too (an arm's, a head's), which it drives otherwise.
@@ -290,6 +295,14 @@ class RoleReader:
         # called (a robot's own drive plugin, ``<wheelSeparation>`` and ``<wheelDiameter>``).
         tags = _tags(plugin)
         if _wheel_geometry(tags):
+            found.add("drive")
+        # One that takes a command topic of velocities (``<commandTopic>ropod/cmd_vel``) moves
+        # the body on them, whatever it is called (a robot's own holonomic drive), unless a
+        # plugin says water (a vessel's or a vehicle's thrusters take them too).
+        if not self.water_plugins and any(
+            _plain(tag) in _COMMAND_TOPICS and _VELOCITY_TOPIC.fullmatch(text.rsplit("/", 1)[-1])
+            for tag, text in plugin.params
+        ):
             found.add("drive")
         # A plugin that names a left and a right track, each a link of the body, moves the body
         # on them, whatever it is called (a tracked wheelchair's ``libsimple.so``).

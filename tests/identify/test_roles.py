@@ -425,6 +425,27 @@ def test_the_joints_such_a_plugin_names_not_as_wheels_keep_their_own_roles() -> 
     assert {r.role for r in result.roles if r.joint.startswith("j")} == {"arm"}
 
 
+@pytest.mark.parametrize(
+    ("tag", "topic", "drives"),
+    [
+        ("commandTopic", "pod/cmd_vel", True),  # a robot's own holonomic drive
+        ("cmd_vel_topic", "cmd_vel", True),
+        ("commandTopic", "pod/joint_command", False),  # not a velocity command
+        ("topicName", "cmd_vel", False),  # the tag every plugin names its own topic by
+    ],
+)
+def test_a_plugin_of_its_own_taking_velocity_commands_drives_the_body(
+    tag: str, topic: str, *, drives: bool
+) -> None:
+    # A pod on spheres fixed under it, moved only by its own plugin.
+    pod = RobotText("pod")
+    pod.fixed(pod.root, "left_wheel")
+    pod.fixed(pod.root, "right_wheel")
+    pod.add(builders.model_plugin("ctl", "libpod_control.so", f"<{tag}>{topic}</{tag}>"))
+    result = identify_urdf(pod.text())
+    assert ("Driving" in {c.motion_control for c in result.motion_controls}) is drives
+
+
 def test_a_plugin_that_gives_a_wheel_size_alone_drives_nothing() -> None:
     result = identify_urdf(ball_robot("<wheelDiameter>0.2</wheelDiameter>").text())
     assert result.structure != "UGV"
