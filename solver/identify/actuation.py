@@ -370,14 +370,7 @@ def _drop_flywheel(tree: JointTree, roles: dict[str, Role]) -> None:
     centre = (
         tree.poses.place(body.name)[2] + tree.poses.turned(body.name, (0.0, 0.0, 0.0), box.xyz)[2]
     )
-    reach = sum(
-        abs(tree.poses.turned(body.name, box.rpy, side)[2])
-        for side in (
-            (box.size[0] / 2, 0.0, 0.0),
-            (0.0, box.size[1] / 2, 0.0),
-            (0.0, 0.0, box.size[2] / 2),
-        )
-    )
+    reach = tree.poses.extent(body.name, box.rpy, box.size)[2] / 2
     rim = tree.poses.place(disc.name)[2] - disc.cylinder.radius
     if rim > centre - reach + _GROUND_GAP:  # NaN compares false: a wheel still
         del roles[wheels[0]]

@@ -205,6 +205,14 @@ class Poses:
         turn = self._frames.get(link, (_IDENTITY, (0.0, 0.0, 0.0)))[0]
         return _turn(_compose(turn, _rotation(rpy)), vector)
 
+    def extent(self, link: str, rpy: Vector, size: Vector) -> Vector:
+        """How far a box of ``size`` (along its own x, y and z), turned by ``rpy`` on ``link``,
+        reaches along the root's x, y and z, end to end."""
+        sides: tuple[Vector, ...] = ((size[0], 0.0, 0.0), (0.0, size[1], 0.0), (0.0, 0.0, size[2]))
+        edges = [self.turned(link, rpy, side) for side in sides]
+        x, y, z = (sum(abs(edge[k]) for edge in edges) for k in range(3))
+        return (x, y, z)
+
     def mass_centre(self, link: str) -> Vector | None:
         """Where ``link``'s mass centre is (its first ``<inertial>``'s origin), in the root's
         frame; None when its inertial says no place."""

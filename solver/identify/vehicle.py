@@ -391,10 +391,7 @@ def _boards(tree: JointTree) -> list[str]:
         box = None if link is None else link.box
         if box is None:
             continue
-        x, y, z = box.size
-        sides: tuple[Vector, ...] = ((x, 0.0, 0.0), (0.0, y, 0.0), (0.0, 0.0, z))
-        edges = [tree.poses.turned(name, box.rpy, side) for side in sides]
-        along, across, upright = (sum(abs(edge[k]) for edge in edges) for k in range(3))
+        along, across, upright = tree.poses.extent(name, box.rpy, box.size)
         if across >= _SPAN_OVER_CHORD * along and along >= _CHORD_OVER_THICKNESS * upright:
             found.append(name)
     return found
