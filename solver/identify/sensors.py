@@ -227,6 +227,8 @@ def _element_detections(
     parts: dict[int, str] = {}
     urdf_links = {t.name: t.link for t in urdf.sensors if t.origin == "urdf" and t.link}
     for tag in urdf.sensors:
+        if _publishes_truth(tag, profile):
+            continue
         kind = element_kind(tag, profile)
         if tag.origin == "ros2_control" and tag.type == "unknown" and kind in _IMAGING:
             kind = "unknown"  # told by a name it cannot be: dropped with the other unknown ones
@@ -246,6 +248,17 @@ def _element_detections(
             parts[id(detection)] = part
         found.append((detection, tag.origin))
     return found, beams, parts
+
+
+def _publishes_truth(tag: SensorTag, profile: Profile) -> bool:
+    """Whether every plugin a ``<sensor>`` runs publishes simulation ground truth (a noise-free
+    twin of a ranger on the ranger's link, named and published as ``gt_lidar``): no device."""
+    truth = profile.ground_truth
+    return (
+        truth is not None
+        and bool(tag.plugins)
+        and all(truth.search(plugin.text) for plugin in tag.plugins)
+    )
 
 
 def _imu_devices(found: list[tuple[Detection, str]], parts: dict[int, str]) -> dict[str, set[str]]:

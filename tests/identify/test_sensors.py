@@ -220,6 +220,16 @@ def test_model_plugins_count_as_sensors_but_ground_truth_does_not() -> None:
     assert found == [("imu", None, 1), ("gps", None, 1), ("barometer", None, 1)]
 
 
+def test_a_sensor_element_whose_plugin_publishes_ground_truth_is_no_device() -> None:
+    # A ranger and, on its link, its noise-free twin a comment calls ground truth.
+    ray = "libgazebo_ros_ray_sensor.so"
+    found = kinds(
+        builders.gazebo_sensor("laser", "ray", "front_laser", plugin=ray),
+        builders.gazebo_sensor("laser", "ray", "gt_laser", plugin=ray),
+    )
+    assert found == [("lidar", "LIDAR", 1)]
+
+
 def test_a_plugin_is_an_imu_by_the_word_imu_not_by_those_letters_inside_another() -> None:
     # A go-kart's vehicle simulator plugin holds the letters of "imu" (s-imu-lator).
     found = kinds(
