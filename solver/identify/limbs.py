@@ -217,9 +217,9 @@ _MOST_FIVE_BAR_LEGS = 64
 _MODULE_SPREAD = 0.1
 # Two joints of one module this close (metres) sit at one point (a universal joint).
 _AT_ONE_POINT = 1e-6
-# A snake that moves in a plane (every axis parallel) has at least this many modules; planar
-# arms of equal links are far shorter.
-_PLANAR_SPINE_JOINTS = 12
+# A snake that moves in a plane (every axis parallel) has at least this many modules; an arm
+# has at most seven joints.
+_PLANAR_SPINE_JOINTS = 8
 # The fewest wheels a body rolls on of its own (:func:`raised_legs`), and the most legs whose
 # chains are walked for wheels (a stranger's thousands are not).
 _BODY_WHEELS = 3
@@ -2105,7 +2105,8 @@ def spine(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     (no slide) with no arm or leg names and no gripper, of equal modules (:func:`_modules`:
     every spacing between joints alike, or every other one, a module's two joints maybe at one
     point), each joint's axis square to the last's and none along the chain (:func:`_bends`),
-    on a body that has nothing else (no wheels, rotors, legs or other chains); on a robot
+    on a body that has nothing else (no wheels, rotors, legs or other chains) and that no plugin
+    moves but one that slides it (:func:`_slid_at_most`); on a robot
     named a snake (:data:`_SNAKE_NAME`), any such chain of two turning joints or more (of
     equal modules as long as a snake when a plugin slides the body: :func:`_named_snake`).
     Two chains from one link, and nothing else, are read as one through it (the file's root
@@ -2127,22 +2128,31 @@ def spine(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     if named or not all(j.type in _TURNING for j in joints):
         return limbs
     if snake:
-        why = (
+        why: str | None = (
             f"a chain of {len(joints)} turning joints, nothing else, on a robot named a snake"
             f" ({shown(tree.urdf.name)})"
         )
-    elif not _modules(tree, joints) or not _bends(tree, joints):
-        return limbs
-    elif _alternating(tree, joints):
-        why = f"a chain of {len(joints)} equal modules whose axes alternate, nothing else (a spine)"
-    elif len(joints) >= _PLANAR_SPINE_JOINTS and _planar(tree, joints):
-        why = (
+    else:
+        why = _spine_shape(tree, joints)
+    return limbs if why is None else [replace(limb, kind="spine", why=why)]
+
+
+def _spine_shape(tree: JointTree, joints: list[Joint]) -> str | None:
+    """Why an unnamed chain of ``joints`` is a snake's spine by its shape (:func:`spine`):
+    equal modules that bend, on a body no plugin moves but one that slides it, whose axes
+    alternate, or, in a chain longer than any arm, are all parallel; None when it is not."""
+    if not _modules(tree, joints) or not _bends(tree, joints) or not _slid_at_most(tree):
+        return None
+    if _alternating(tree, joints):
+        return (
+            f"a chain of {len(joints)} equal modules whose axes alternate, nothing else (a spine)"
+        )
+    if len(joints) >= _PLANAR_SPINE_JOINTS and _planar(tree, joints):
+        return (
             f"a chain of {len(joints)} equal modules turning about parallel axes, nothing else"
             " (a planar snake's spine)"
         )
-    else:
-        return limbs
-    return [replace(limb, kind="spine", why=why)]
+    return None
 
 
 def _spine_through(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
@@ -2246,9 +2256,16 @@ def _named_snake(tree: JointTree, joints: list[Joint]) -> bool:
     name = tree.urdf.name
     if not _SNAKE_NAME.search(name) or _MANIPULATOR_NAME.search(name):
         return False
+    long = len(joints) >= tree.profile.limb("spine_min_joints") and _modules(tree, joints)
+    return _slid_at_most(tree, long=long)
+
+
+def _slid_at_most(tree: JointTree, *, long: bool = True) -> bool:
+    """No plugin tracks or flies the body, and none drives it but one that only slides it (a
+    planar move: the simulator's, under a ``long`` snake's modules); a body a wheel drive moves
+    is a base, whatever chain rides it."""
     if tree.labels("track") or tree.labels("flight"):
         return False
-    long = len(joints) >= tree.profile.limb("spine_min_joints") and _modules(tree, joints)
     return set(tree.labels("drive")) <= (set(tree.labels("mover")) if long else set())
 
 

@@ -435,7 +435,7 @@ def test_an_arm_of_unequal_links_is_no_spine() -> None:
 
 
 def test_a_chain_of_modules_whose_axes_do_not_alternate_is_no_spine() -> None:
-    text = builders.snake(8).text().replace('<axis xyz="0 1 0"/>', '<axis xyz="0 0 1"/>')
+    text = builders.snake(7).text().replace('<axis xyz="0 1 0"/>', '<axis xyz="0 0 1"/>')
     assert identify_urdf(text).structure == "Manipulator"
 
 
@@ -543,6 +543,15 @@ def test_a_long_snake_named_so_that_a_plugin_slides_is_still_a_snake() -> None:
     uneven = (0.1, 0.4, 0.1, 0.3, 0.1, 0.2)
     arm = yawing_modules("snakebot", "libgazebo_ros_planar_move.so", uneven)
     assert identify_urdf(arm).structure == "Mobile Manipulator"
+
+
+def test_nine_unnamed_equal_modules_about_the_vertical_that_a_plugin_slides_are_a_snake() -> None:
+    # Longer than any arm, every axis parallel: a planar snake, whatever its names say.
+    result = identify_urdf(yawing_modules("robot", "libgazebo_ros_planar_move.so"))
+    assert result.structure == "Serpentine"
+    # Seven such modules are as long as an arm: an arm on a base the plugin slides.
+    short = yawing_modules("robot", "libgazebo_ros_planar_move.so", (0.1,) * 6)
+    assert identify_urdf(short).structure == "Mobile Manipulator"
 
 
 def test_a_robot_named_a_snake_whose_joints_are_an_arms_or_a_plugin_drives_it_is_no_snake() -> None:
@@ -1969,7 +1978,7 @@ def test_a_planar_chain_named_as_an_arm_on_its_joints_is_no_spine_whatever_its_p
 
 def test_a_short_planar_chain_whose_leaves_turn_is_no_spine() -> None:
     # Leaf joints that turn (fingers, wheels) do not anchor a planar snake: 6 parallel joints of
-    # equal links with them is no snake (planar snakes of bare modules need 12).
+    # equal links with them is no snake (planar snakes of bare modules need 8).
     text = concertina_snake().text().replace('type="prismatic"', 'type="revolute"')
     assert identify_urdf(text).structure != "Serpentine"
 
