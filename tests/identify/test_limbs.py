@@ -552,6 +552,9 @@ def test_nine_unnamed_equal_modules_about_the_vertical_that_a_plugin_slides_are_
     # Seven such modules are as long as an arm: an arm on a base the plugin slides.
     short = yawing_modules("robot", "libgazebo_ros_planar_move.so", (0.1,) * 6)
     assert identify_urdf(short).structure == "Mobile Manipulator"
+    # A wheel drive moves a base, whatever chain rides it.
+    wheeled = yawing_modules("robot", "libgazebo_ros_diff_drive.so")
+    assert identify_urdf(wheeled).structure == "Mobile Manipulator"
 
 
 def test_a_robot_named_a_snake_whose_joints_are_an_arms_or_a_plugin_drives_it_is_no_snake() -> None:
