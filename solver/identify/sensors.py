@@ -253,12 +253,14 @@ def _element_detections(
 def _publishes_truth(tag: SensorTag, profile: Profile) -> bool:
     """Whether every plugin a ``<sensor>`` runs publishes simulation ground truth (a noise-free
     twin of a ranger on the ranger's link, named and published as ``gt_lidar``): no device."""
+    return bool(tag.plugins) and all(_ground_truth(plugin.text, profile) for plugin in tag.plugins)
+
+
+def _ground_truth(text: str, profile: Profile) -> bool:
+    """Whether ``text`` (what names a plugin or a model) is of one publishing simulation ground
+    truth, by the profile's ``sensors.ground_truth``."""
     truth = profile.ground_truth
-    return (
-        truth is not None
-        and bool(tag.plugins)
-        and all(truth.search(plugin.text) for plugin in tag.plugins)
-    )
+    return truth is not None and bool(truth.search(text))
 
 
 def _imu_devices(found: list[tuple[Detection, str]], parts: dict[int, str]) -> dict[str, set[str]]:
@@ -327,8 +329,7 @@ def _plugin_link(plugin: PluginTag, declared: Container[str | None]) -> str | No
 def _model_kind(model: str, profile: Profile) -> str | None:
     """The sensor a Gazebo model include adds (``model://gps``), read by its model name with
     the rules for plugins that simulate a sensor: a kind they name, not just ``sensor``."""
-    truth = profile.ground_truth
-    if truth is not None and truth.search(model):
+    if _ground_truth(model, profile):
         return None
     kind = next((rule.kind for rule in profile.plugin_rules if rule.accepts(None, model)), None)
     return None if kind == "unknown" else kind
@@ -753,8 +754,7 @@ def _rays(tag: SensorTag) -> int | None:
 def plugin_kind(plugin: PluginTag, profile: Profile) -> str | None:
     """The sensor kind a Gazebo plugin simulates by the profile's plugin rules; None for ground
     truth, a simulator system or a plugin of no sensor."""
-    truth = profile.ground_truth
-    if truth is not None and truth.search(plugin.text):
+    if _ground_truth(plugin.text, profile):
         return None
     systems = profile.simulator_systems
     if systems is not None and systems.search(f"{plugin.name} {plugin.filename}"):
