@@ -546,7 +546,7 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
                 (*tree.labels("thruster"), *tree.labels("marine"), *tree.labels("underwater"))
             )
         ),
-        space_plugins=tree.labels("space") if tree.reader.spaceborne else (),
+        space_plugins=_space_plugins(tree),
         surface_hints=surface_hints(tree, thrusters=len(thrusters)),
         underwater_hints=underwater_hints(tree),
         water_frames=water_frames(tree),
@@ -928,6 +928,15 @@ def _sprockets(tree: JointTree, track_names: tuple[str, ...]) -> list[str]:
         and joint.type == "continuous"
         and "position" not in tree.urdf.interfaces(name)
     ]
+
+
+def _space_plugins(tree: JointTree) -> tuple[str, ...]:
+    """The plugins that say a craft's thrusters fly it in air or space (RoleReader.spaceborne):
+    a space plugin, or a plugin that gives its medium air's density."""
+    if not tree.reader.spaceborne:
+        return ()
+    air = (tree.reader.plugin_label(p) for p in tree.reader.air_plugins)
+    return tuple(dict.fromkeys((*tree.labels("space"), *air)))
 
 
 def _all_roles(tree: JointTree, parts: _Parts) -> tuple[Role, ...]:

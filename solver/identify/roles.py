@@ -181,6 +181,12 @@ _AIRSHIP_NAME = re.compile(
 )
 
 
+# The tags in which plugins give the density of the medium they work in, and the density (kg/m³)
+# below which it is air's: air's is about 1.2, fresh water's 1000, sea water's about 1027.
+_DENSITY_TAGS = ("fluid_density", "air_density")
+_AIR_DENSITY = 100.0
+
+
 # A plugin's entry that is a rotorcraft's (``<rotor>``, ``<rotors>``), read as a whole tag;
 # and the plugin parts that put a body in water (such a plugin's rotor entries are not flown).
 _ROTOR_ENTRY = re.compile(r"rotors?", re.IGNORECASE)
@@ -216,19 +222,9 @@ class RoleReader:
             if _RIG_NAME.search(urdf.name)
             else _rig_on_undeclared_root(urdf)
         )
-        # A craft its thrusters fly in air or space (a reaction wheel, air thrusters), nothing
-        # of water beside them (no water plugin, no name of a boat or a submersible): the
-        # thrusters do not put it in water.
-        self.spaceborne = (
-            bool(self.plugins_of("space"))
-            and bool(self.plugins_of("thruster") or self.fixed_thrusters)
-            and not (
-                self.plugins_of("marine")
-                or self.plugins_of("underwater")
-                or self.named_vessel
-                or self.named_submersible
-            )
-        )
+        # Plugins that say the body works in air by the density they give its medium.
+        self.air_plugins = self._air_plugins()
+        self.spaceborne = self._spaceborne()
         self.marine = not self.spaceborne and (
             bool(self.plugins_of("marine") or self.plugins_of("thruster") or self.fixed_thrusters)
             # A plugin only a submerged body runs (a subsea pressure gauge, a DVL): in water.
@@ -240,6 +236,32 @@ class RoleReader:
         )
         # A plugin that names a joint outright speaks before a force plugin pushing its link.
         self.named = {**self._pushed_thrusters(), **self._named_by_plugins()}
+
+    def _spaceborne(self) -> bool:
+        """A craft its thrusters fly in air or space (a reaction wheel, air thrusters, thrusters
+        given air's density), no name of a boat or a submersible: the thrusters do not put it
+        in water. Nothing of water beside space plugins; the density air's whatever plugin
+        damps the body (a hydrodynamics plugin as an aircraft's drag)."""
+        if not (self.plugins_of("thruster") or self.fixed_thrusters):
+            return False
+        if self.named_vessel or self.named_submersible:
+            return False
+        if self.air_plugins:
+            return True
+        water = self.plugins_of("marine") or self.plugins_of("underwater")
+        return bool(self.plugins_of("space")) and not water
+
+    def _air_plugins(self) -> tuple[PluginTag, ...]:
+        """The plugins that give the density of the medium they work in (a thruster plugin's
+        ``<fluid_density>``, a lift and drag plugin's ``<air_density>``), when every density
+        given is air's (an aircraft's thrusters at 1.204 kg/m³, its wings' lift at 1.225); none
+        when one is water's (a submersible's thrusters and fins at 1000 or more; a sailboat's
+        sail in air, its hull in water)."""
+        given = [(p, p.numbers(*_DENSITY_TAGS)) for p in self.urdf.plugins]
+        given = [(p, values) for p, values in given if values]
+        if not given or max(max(values) for _, values in given) >= _AIR_DENSITY:
+            return ()
+        return tuple(p for p, _ in given)
 
     def _name_says(self, words: re.Pattern[str]) -> bool:
         """The robot's own name holds one of ``words`` and no flight plugin flies it."""

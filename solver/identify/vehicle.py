@@ -413,6 +413,12 @@ def _ailerons(tree: JointTree, roles: dict[str, Role], found: list[str]) -> list
     return []
 
 
+def _on_a_hull(tree: JointTree, thrusters: int) -> bool:
+    """Something puts the body in water (its plugins or names, or ``thrusters``), and no
+    plugin says its thrusters fly it in air or space (RoleReader.spaceborne)."""
+    return not tree.reader.spaceborne and (tree.reader.marine or thrusters > 0)
+
+
 def surface_hints(tree: JointTree, *, thrusters: int = 0) -> tuple[str, ...]:
     """A body in water at the surface: surface plugins, and the words the profile's ``surface``
     pattern reads in the hull's own elements (``<metacentric_width>``, wind on its buoyancy)
@@ -430,7 +436,7 @@ def surface_hints(tree: JointTree, *, thrusters: int = 0) -> tuple[str, ...]:
     body in water whatever its water plugins are also used for (a hydrodynamics plugin moves
     hulls at the surface too), unless a flight plugin or a DVL or depth sensor says otherwise."""
     pattern = tree.profile.plugin_pattern("surface")
-    if pattern is None or not (tree.reader.marine or thrusters):
+    if pattern is None or not _on_a_hull(tree, thrusters):
         return ()
     hints = list(tree.labels("surface"))
     if tree.reader.named_vessel:  # a boat, a catamaran, an ASV: a hull at the surface

@@ -784,6 +784,12 @@ def test_a_barometer_on_a_body_below_the_water_is_a_depth_gauge() -> None:
     assert found(builders.surface_vessel()) == {"barometer": 1}
 
 
+def test_a_pitot_tube_of_gazebo_sim_is_an_airspeed_sensor_as_the_airspeed_plugins_are() -> None:
+    plane = builders.quadrotor()
+    plane.add(builders.gazebo_sensor("base_link", "air_speed", "pitot"))
+    assert {s.kind: s.count for s in identify_urdf(plane.text()).sensors} == {"airspeed": 1}
+
+
 # A depth gauge a simulator fakes with one ray cast down, as student AUVs write it.
 ONE_RAY = (
     "<ray><scan><horizontal><samples>1</samples><min_angle>0</min_angle>"

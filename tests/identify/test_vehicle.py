@@ -1149,6 +1149,40 @@ def test_thrusters_with_a_reaction_wheel_and_a_water_plugin_or_name_stay_in_wate
     assert identify_urdf(auv.text()).structure == "Underwater Vehicle"
 
 
+def densities(thrusters: str, *others: tuple[str, str]) -> RobotText:
+    """Three thruster plugins on joints of their own, each given ``thrusters`` as the density of
+    its medium, a hydrodynamics plugin damping the body, and ``others`` (file, parameters)."""
+    craft = RobotText("craft")
+    for i in range(3):
+        craft.joint(f"t{i}_joint", "continuous", "base_link", f"t{i}", '<axis xyz="0 1 0"/>')
+        params = f"<joint_name>t{i}_joint</joint_name><fluid_density>{thrusters}</fluid_density>"
+        craft.add(builders.model_plugin(f"t{i}", "libgz-sim8-thruster-system.so", params))
+    damping = "<link_name>base_link</link_name><xU>-6.0</xU>"
+    craft.add(builders.model_plugin("drag", "libgz-sim8-hydrodynamics-system.so", damping))
+    for i, (filename, params) in enumerate(others):
+        craft.add(builders.model_plugin(f"other{i}", filename, params))
+    return craft
+
+
+def test_thrusters_given_airs_density_fly_the_craft_whatever_plugin_damps_it() -> None:
+    # A fixed-wing aircraft a maker pushes with Gazebo Sim's thruster plugin in air (1.204 kg/m³),
+    # its drag a hydrodynamics plugin's, its wings' lift given air's density too.
+    lift = ("gz-sim-advanced-lift-drag-system", "<air_density>1.225</air_density>")
+    result = identify_urdf(densities("1.204", lift).text())
+    assert result.structure == "UAV"
+    assert [c.motion_control for c in result.motion_controls][:1] == ["Flight"]
+    assert not any("surface" in line for line in result.evidence)
+
+
+def test_thrusters_given_waters_density_or_air_and_water_stay_in_water() -> None:
+    assert identify_urdf(densities("1000").text()).structure == "Underwater Vehicle"
+    # A submersible's fins given water's density in a lift plugin's air tag (LRAUV-style).
+    fins = ("gz-sim-lift-drag-system", "<air_density>1000</air_density>")
+    assert identify_urdf(densities("1.2", fins).text()).structure == "Underwater Vehicle"
+    # An unexpanded density is none: the plugins' words decide.
+    assert identify_urdf(densities("${rho}").text()).structure == "Underwater Vehicle"
+
+
 def test_a_reaction_wheel_with_no_thruster_says_nothing_of_flight() -> None:
     rover = builders.ugv()
     rover.add(builders.model_plugin("wheel", "libreaction_wheel.so"))

@@ -236,6 +236,13 @@ class PluginTag:
         wanted = {t.lower() for t in tags}
         return next((text for tag, text in self.params if tag.lower() in wanted), None)
 
+    def numbers(self, *tags: str) -> tuple[float, ...]:
+        """The finite numbers the plugin sets in any of ``tags`` (case-insensitive), in order;
+        a text that is no number (``${rho}``, an unexpanded argument) is left out."""
+        wanted = {t.lower() for t in tags}
+        found = (_float(text) for tag, text in self.params if tag.lower() in wanted)
+        return tuple(value for value in found if value is not None)
+
     @property
     def text(self) -> str:
         """Everything that names this plugin, for pattern matching."""
