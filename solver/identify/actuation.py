@@ -95,6 +95,9 @@ _MOST_ENDLESS_ABOVE_A_WHEEL = 3
 # As many such leaves as this or more are wheeled feet (six-joint legs each ending in a wheel).
 _MOST_JOINTS_ABOVE_A_WHEEL = 5
 _WHEELED_FEET = 4
+# A chain of this many movable joints or more from the body, its last a spinning leaf, may be a
+# leg whose foot turns for ever (a hip, a thigh, a shin: :func:`_feet_dropped`).
+_LEG_CHAIN_JOINTS = 3
 # The most joints a walk up the tree takes (fixed ones included; a stranger's file is bounded).
 _DEEPEST_WALK = 64
 # A name that says only which corner of the body a part is at (``rear_left_joint``,
@@ -512,6 +515,46 @@ def _wrists_dropped(tree: JointTree, leaves: list[Joint]) -> list[Joint]:
     return [j for j in leaves if j.name not in deep]
 
 
+def _feet_dropped(tree: JointTree, leaves: list[Joint]) -> list[Joint]:
+    """``leaves`` but a walker's feet: a leaf ending an unbranched chain of
+    :data:`_LEG_CHAIN_JOINTS` movable joints or more from a link that carries other moving
+    parts (the body), when more chains of that link with as many movable joints end in no leaf
+    of ``leaves`` than in one (a hexapod drawn without limits: two of its six feet turn about
+    level axles, four do not). A wheel-legged robot's legs all end in wheels."""
+    if not leaves:
+        return leaves
+    branching = _branching_links(tree)
+    tips = (j for j in tree.urdf.joints if j.movable and j.child not in tree.moving_below)
+    chains = {tip.name: _chain_from_branch(tree, tip, branching) for tip in tips}
+    candidates = {leaf.name for leaf in leaves}
+    shared = Counter(chain for chain in chains.values() if chain is not None)
+    rolling = Counter(chains[name] for name in candidates if chains.get(name) is not None)
+    return [
+        leaf
+        for leaf in leaves
+        if (chain := chains.get(leaf.name)) is None
+        or chain[1] < _LEG_CHAIN_JOINTS
+        or shared[chain] - rolling[chain] <= rolling[chain]
+    ]
+
+
+def _chain_from_branch(
+    tree: JointTree, tip: Joint, branching: frozenset[str]
+) -> tuple[str, int] | None:
+    """The link of ``branching`` an unbranched chain ending in ``tip`` hangs from and how many
+    movable joints it has; None when the walk finds none within :data:`_DEEPEST_WALK` joints."""
+    movable = 0
+    joint: Joint | None = tip
+    for _ in range(_DEEPEST_WALK):
+        if joint is None:
+            return None
+        movable += joint.movable
+        if joint.parent in branching:
+            return joint.parent, movable
+        joint = tree.urdf.parent_joint(joint.parent)
+    return None
+
+
 def _grounded(tree: JointTree, leaves: list[Joint]) -> list[Joint]:
     """``leaves`` but those turning about an upright axis as the body rests: a wheel rolls on a
     level axle; a humanoid's wrists that turn for ever (a yaw under the forearm) point down."""
@@ -656,7 +699,7 @@ def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, str
         for j in apart
         if _hangs_freely(tree, j, known, rockers) and _few_endless_above(tree, j, endless)
     ]
-    apart = _grounded(tree, _wrists_dropped(tree, apart))
+    apart = _feet_dropped(tree, _grounded(tree, _wrists_dropped(tree, apart)))
     side_by_side = len(apart) >= 2 and _sides({tree.poses.place(j.child)[1] for j in apart})
     if side_by_side or _in_line(tree, apart):
         found.update(dict.fromkeys((j.name for j in apart), _SIDES))

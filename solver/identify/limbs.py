@@ -1326,7 +1326,7 @@ def parallel_robot(tree: JointTree, limbs: list[Limb], *, flying: bool = False) 
     that flies, single joints on the airframe (its root and the links fixed to it) are its own,
     no mechanism (:func:`_on_the_airframe`: six propellers' mounts, written alike)."""
     bolted = _bolted_legs(tree, limbs)
-    group = bolted or limbs
+    group = bolted or _beside_a_slid_platform(tree, limbs) or limbs
     struts = bool(bolted) or _struts(tree, limbs)
     if len(group) not in _PARALLEL_CHAINS or not _alike_chains(tree, group, legs=struts):
         return limbs
@@ -1349,6 +1349,21 @@ def parallel_robot(tree: JointTree, limbs: list[Limb], *, flying: bool = False) 
         else limb
         for limb in limbs
     ]
+
+
+def _beside_a_slid_platform(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
+    """All but one of ``limbs``, three or six of one sequence of joint types, when the other is
+    a chain of slides alone: a parallel robot's arms beside the platform its author places on
+    slides of their own (x, y and z prismatic joints standing in for the loops the description
+    cannot close). That chain is then its reach (:func:`parallel_robot`)."""
+    if len(limbs) - 1 not in _PARALLEL_CHAINS:
+        return []
+    kinds = [_joint_types(tree, limb) for limb in limbs]
+    slid = [i for i, types in enumerate(kinds) if set(types) == {"prismatic"}]
+    if len(slid) != 1:
+        return []
+    rest = [limb for i, limb in enumerate(limbs) if i != slid[0]]
+    return rest if len({kinds[i] for i in range(len(limbs)) if i != slid[0]}) == 1 else []
 
 
 def _on_the_airframe(tree: JointTree, group: list[Limb]) -> bool:

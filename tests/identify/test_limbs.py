@@ -1243,6 +1243,41 @@ def test_six_chains_on_brackets_fixed_to_one_body_reaching_out_flat_are_a_hexapo
     assert result.structure == "Hexapod"
 
 
+def endless_hexapod() -> RobotText:
+    """Six four-joint legs round a body, every joint continuous and numbered (an exporter's, no
+    limits, no names): a hip turning about the vertical, two joints about axes slanted across
+    the leg, and a foot joint at its end, about a level axle on the two middle legs and a
+    slanted one on the others (as a CAD export's frames leave them)."""
+    robot = RobotText("hexabot", root="base_link")
+    for i in range(6):
+        angle = math.pi / 6 + i * math.pi / 3
+        out = (math.cos(angle), math.sin(angle))
+        across = f"{-out[1]:.4f} {out[0]:.4f} 0"
+        step = f"{0.06 * out[0]:.4f} {0.06 * out[1]:.4f} -0.02"
+        slanted = f"{0.5 * out[0]:.4f} {0.5 * out[1]:.4f} 0.866"
+        tilted = f"{-0.5 * out[1]:.4f} {0.5 * out[0]:.4f} 0.866"
+        places = [
+            (f"{0.07 * out[0]:.4f} {0.07 * out[1]:.4f} 0", "0 0 1"),
+            (step, tilted),
+            (step, tilted),
+            ("0 0 -0.06", across if i in (1, 4) else slanted),
+        ]
+        link = "base_link"
+        for k, (xyz, axis) in enumerate(places):
+            n = 4 * i + k
+            link = builders.placed(robot, f"j{n}", "continuous", link, f"l{n}", xyz=xyz, axis=axis)
+    return robot
+
+
+def test_level_axled_feet_of_two_of_six_alike_legs_are_no_wheels() -> None:
+    # A student's hexapod drawn without limits: its two middle legs' feet turn about level
+    # axles, nothing below them, and are feet as the other four legs' are, not wheels.
+    result = identify_urdf(endless_hexapod().text())
+    assert result.structure == "Hexapod"
+    assert result.body is not None
+    assert not result.body.wheels
+
+
 def test_four_chains_reaching_out_flat_are_not_legs_by_that_rule() -> None:
     # The flat rule takes six or more at once; four reaching every way are legs by a later one
     # (below), but these four start in mirrored pairs at the body's corners, a walker's hips by
@@ -3265,6 +3300,30 @@ def test_alike_chains_a_third_of_a_turn_apart_are_one_parallel_manipulator(count
 def test_chains_not_a_third_of_a_turn_apart_or_four_of_them_stay_arms() -> None:
     assert identify_urdf(circle_of_arms(3, turn=0.5)).structure == "Torso"
     assert identify_urdf(circle_of_arms(4)).structure == "Torso"
+
+
+def test_alike_chains_on_a_circle_beside_a_platform_placed_by_slides_are_one_manipulator() -> None:
+    # A thesis's delta: three arms driven at the base and the platform its author places on x, y
+    # and z slides of its own, standing in for the loops the file cannot close.
+    slides = "".join(
+        builders.joint_xml(f"act_{axis}", "prismatic", parent, child, "0 0 0", direction)
+        for axis, parent, child, direction in (
+            ("x", "base_link", "aux1", "1 0 0"),
+            ("y", "aux1", "aux2", "0 1 0"),
+            ("z", "aux2", "platform", "0 0 1"),
+        )
+    )
+    links = '<link name="aux1"/><link name="aux2"/><link name="platform"/>'
+    delta = circle_of_arms(3).replace("</robot>", f"{links}{slides}</robot>")
+    result = identify_urdf(delta)
+    assert result.structure == "Manipulator"
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs].count("arm") == 1
+    # The same slides beside four arms, or a fourth chain that turns, leave them arms.
+    four = circle_of_arms(4).replace("</robot>", f"{links}{slides}</robot>")
+    assert identify_urdf(four).structure == "Torso"
+    turning = delta.replace('type="prismatic"', 'type="revolute"')
+    assert identify_urdf(turning).structure == "Torso"
 
 
 def test_a_chain_of_closures_drops_no_chain() -> None:
