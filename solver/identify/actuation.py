@@ -518,23 +518,23 @@ def _wrists_dropped(tree: JointTree, leaves: list[Joint]) -> list[Joint]:
 def _feet_dropped(tree: JointTree, leaves: list[Joint]) -> list[Joint]:
     """``leaves`` but a walker's feet: a leaf ending an unbranched chain of
     :data:`_LEG_CHAIN_JOINTS` movable joints or more from a link that carries other moving
-    parts (the body), when more chains of that link with as many movable joints end in no leaf
-    of ``leaves`` than in one (a hexapod drawn without limits: two of its six feet turn about
-    level axles, four do not). A wheel-legged robot's legs all end in wheels."""
+    parts (the body), when that link carries more such chains with as many movable joints
+    ending in no leaf of ``leaves`` than ending in one (a hexapod drawn without limits: two of
+    its six feet turn about level axles, four do not). Chains are told alike by where they
+    start and how many joints move in them. A wheel-legged robot's legs all end in wheels."""
     if not leaves:
         return leaves
     branching = _branching_links(tree)
     tips = (j for j in tree.urdf.joints if j.movable and j.child not in tree.moving_below)
     chains = {tip.name: _chain_from_branch(tree, tip, branching) for tip in tips}
-    candidates = {leaf.name for leaf in leaves}
-    shared = Counter(chain for chain in chains.values() if chain is not None)
-    rolling = Counter(chains[name] for name in candidates if chains.get(name) is not None)
+    alike = Counter(chain for chain in chains.values() if chain is not None)
+    rolling = Counter(chain for leaf in leaves if (chain := chains.get(leaf.name)) is not None)
     return [
         leaf
         for leaf in leaves
         if (chain := chains.get(leaf.name)) is None
         or chain[1] < _LEG_CHAIN_JOINTS
-        or shared[chain] - rolling[chain] <= rolling[chain]
+        or alike[chain] - rolling[chain] <= rolling[chain]
     ]
 
 

@@ -157,8 +157,9 @@ class Body:
     # What a body below the surface has: a buoyancy or hydrodynamics plugin, a thruster plugin,
     # a DVL or pressure sensor. A body in water by thruster names alone has none.
     underwater_hints: tuple[str, ...] = ()
-    # Plugins of a craft its thrusters fly in air or space (a reaction wheel, air thrusters),
-    # nothing of water beside them (RoleReader.spaceborne).
+    # Plugins of a craft its thrusters fly in air or space (a reaction wheel, air thrusters;
+    # plugins that give its medium air's density), nothing of water beside them
+    # (RoleReader.spaceborne).
     space_plugins: tuple[str, ...] = ()
     # Frames fixed to the body named as an underwater sensor's (a DVL), with nothing behind them:
     # a body in water below the surface, though no plugin says so.

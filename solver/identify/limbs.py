@@ -1314,7 +1314,8 @@ def tips_meet(
 
 
 def parallel_robot(tree: JointTree, limbs: list[Limb], *, flying: bool = False) -> list[Limb]:
-    """Three or six alike chains, all the body's limbs, none a leg or ending in a gripper, on
+    """Three or six alike chains, all the body's limbs (or all but one chain of slides that
+    places the platform: :func:`_beside_a_slid_platform`), none a leg or ending in a gripper, on
     one rigid body, starting on a circle whose third of a turn maps their starts onto each
     other: a parallel robot (a delta's three arms, a Stewart platform's six), one manipulator
     whose platform the description cannot hold. Its longest chain is the arm, the others its
@@ -1327,7 +1328,7 @@ def parallel_robot(tree: JointTree, limbs: list[Limb], *, flying: bool = False) 
     no mechanism (:func:`_on_the_airframe`: six propellers' mounts, written alike)."""
     bolted = _bolted_legs(tree, limbs)
     group = bolted or _beside_a_slid_platform(tree, limbs) or limbs
-    struts = bool(bolted) or _struts(tree, limbs)
+    struts = bool(bolted) or _struts(tree, group)
     if len(group) not in _PARALLEL_CHAINS or not _alike_chains(tree, group, legs=struts):
         return limbs
     if flying and _on_the_airframe(tree, group):
@@ -1353,17 +1354,31 @@ def parallel_robot(tree: JointTree, limbs: list[Limb], *, flying: bool = False) 
 
 def _beside_a_slid_platform(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     """All but one of ``limbs``, three or six of one sequence of joint types, when the other is
-    a chain of slides alone: a parallel robot's arms beside the platform its author places on
-    slides of their own (x, y and z prismatic joints standing in for the loops the description
-    cannot close). That chain is then its reach (:func:`parallel_robot`)."""
+    a chain of two slides or more alone, each along its own line (no two parallel): a parallel
+    robot's arms beside the platform its author places on slides of its own (x, y and z
+    prismatic joints standing in for the loops the description cannot close). That chain is
+    then its reach (:func:`parallel_robot`); one slide alone is a lift, no platform."""
     if len(limbs) - 1 not in _PARALLEL_CHAINS:
         return []
     kinds = [_joint_types(tree, limb) for limb in limbs]
     slid = [i for i, types in enumerate(kinds) if set(types) == {"prismatic"}]
-    if len(slid) != 1:
+    if len(slid) != 1 or not _slides_apart(tree, limbs[slid[0]]):
         return []
     rest = [limb for i, limb in enumerate(limbs) if i != slid[0]]
     return rest if len({kinds[i] for i in range(len(limbs)) if i != slid[0]}) == 1 else []
+
+
+def _slides_apart(tree: JointTree, limb: Limb) -> bool:
+    """Two slides or more in ``limb``, no two along parallel lines as the body rests."""
+    joints = [j for j in (tree.urdf.joint(name) for name in limb.joints) if j is not None]
+    axes = [tree.poses.axis(joint) for joint in joints]
+    return len(axes) >= _PLATFORM_SLIDES and not any(
+        parallel(one, other) for one, other in combinations(axes, 2)
+    )
+
+
+# A platform placed on slides of its own moves along two lines at least (x and y, or x, y, z).
+_PLATFORM_SLIDES = 2
 
 
 def _on_the_airframe(tree: JointTree, group: list[Limb]) -> bool:

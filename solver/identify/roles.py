@@ -181,9 +181,10 @@ _AIRSHIP_NAME = re.compile(
 )
 
 
-# The tags in which plugins give the density of the medium they work in, and the density (kg/m³)
-# below which it is air's: air's is about 1.2, fresh water's 1000, sea water's about 1027.
-_DENSITY_TAGS = ("fluid_density", "air_density")
+# The tags in which plugins give the density of the medium they work in (thrusters, lift and
+# drag, Gazebo Sim's buoyancy and hydrodynamics), and the density (kg/m³) below which it is
+# air's: air's is about 1.2, fresh water's 1000, sea water's about 1027.
+_DENSITY_TAGS = ("fluid_density", "air_density", "uniform_fluid_density", "water_density")
 _AIR_DENSITY = 100.0
 
 
@@ -238,10 +239,10 @@ class RoleReader:
         self.named = {**self._pushed_thrusters(), **self._named_by_plugins()}
 
     def _spaceborne(self) -> bool:
-        """A craft its thrusters fly in air or space (a reaction wheel, air thrusters, thrusters
-        given air's density), no name of a boat or a submersible: the thrusters do not put it
-        in water. Nothing of water beside space plugins; the density air's whatever plugin
-        damps the body (a hydrodynamics plugin as an aircraft's drag)."""
+        """A craft its thrusters fly in air or space, no name of a boat or a submersible: beside
+        a space plugin (a reaction wheel, air or cold-gas thrusters) and nothing of water, or
+        given air's density (:meth:`_air_plugins`), whatever plugin damps the body (a
+        hydrodynamics plugin as an aircraft's drag). Its thrusters do not put it in water."""
         if not (self.plugins_of("thruster") or self.fixed_thrusters):
             return False
         if self.named_vessel or self.named_submersible:
@@ -253,13 +254,18 @@ class RoleReader:
 
     def _air_plugins(self) -> tuple[PluginTag, ...]:
         """The plugins that give the density of the medium they work in (a thruster plugin's
-        ``<fluid_density>``, a lift and drag plugin's ``<air_density>``), when every density
-        given is air's (an aircraft's thrusters at 1.204 kg/m³, its wings' lift at 1.225); none
-        when one is water's (a submersible's thrusters and fins at 1000 or more; a sailboat's
-        sail in air, its hull in water)."""
+        ``<fluid_density>``, a lift and drag plugin's ``<air_density>``, a buoyancy or
+        hydrodynamics plugin's water density), when a thruster plugin gives one and every
+        density given is air's, above nothing and under :data:`_AIR_DENSITY` (an aircraft's
+        thrusters at 1.204 kg/m³, its wings' lift at 1.225); none when one is water's (a
+        submersible's thrusters and fins at 1000 or more; a sailboat's sail in air, its hull in
+        water) or no thruster gives its own (a sail's lift alone says nothing of them)."""
         given = [(p, p.numbers(*_DENSITY_TAGS)) for p in self.urdf.plugins]
         given = [(p, values) for p, values in given if values]
-        if not given or max(max(values) for _, values in given) >= _AIR_DENSITY:
+        thrusters = {id(p) for p in self.plugins_of("thruster")}
+        if not any(id(p) in thrusters for p, _ in given):
+            return ()
+        if not all(0 < value < _AIR_DENSITY for _, values in given for value in values):
             return ()
         return tuple(p for p, _ in given)
 

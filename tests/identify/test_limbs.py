@@ -1243,11 +1243,12 @@ def test_six_chains_on_brackets_fixed_to_one_body_reaching_out_flat_are_a_hexapo
     assert result.structure == "Hexapod"
 
 
-def endless_hexapod() -> RobotText:
+def endless_hexapod(*, level_feet: tuple[int, ...] = (1, 4)) -> RobotText:
     """Six four-joint legs round a body, every joint continuous and numbered (an exporter's, no
     limits, no names): a hip turning about the vertical, two joints about axes slanted across
     the leg, and a foot joint at its end, about a level axle on the two middle legs and a
-    slanted one on the others (as a CAD export's frames leave them)."""
+    slanted one on the others (as a CAD export's frames leave them); ``level_feet``: the legs
+    whose foot turns about a level axle."""
     robot = RobotText("hexabot", root="base_link")
     for i in range(6):
         angle = math.pi / 6 + i * math.pi / 3
@@ -1260,7 +1261,7 @@ def endless_hexapod() -> RobotText:
             (f"{0.07 * out[0]:.4f} {0.07 * out[1]:.4f} 0", "0 0 1"),
             (step, tilted),
             (step, tilted),
-            ("0 0 -0.06", across if i in (1, 4) else slanted),
+            ("0 0 -0.06", across if i in level_feet else slanted),
         ]
         link = "base_link"
         for k, (xyz, axis) in enumerate(places):
@@ -1276,6 +1277,10 @@ def test_level_axled_feet_of_two_of_six_alike_legs_are_no_wheels() -> None:
     assert result.structure == "Hexapod"
     assert result.body is not None
     assert not result.body.wheels
+    # Every leg ending in a leaf about a level axle: wheels on legs, kept.
+    rolling = identify_urdf(endless_hexapod(level_feet=tuple(range(6))).text())
+    assert rolling.body is not None
+    assert len(rolling.body.wheels) == 6
 
 
 def test_four_chains_reaching_out_flat_are_not_legs_by_that_rule() -> None:
@@ -3324,6 +3329,10 @@ def test_alike_chains_on_a_circle_beside_a_platform_placed_by_slides_are_one_man
     assert identify_urdf(four).structure == "Torso"
     turning = delta.replace('type="prismatic"', 'type="revolute"')
     assert identify_urdf(turning).structure == "Torso"
+    # One slide alone is a lift beside three arms, no platform placed on slides.
+    lift = builders.joint_xml("lift", "prismatic", "base_link", "platform", "0 0 0", "0 0 1")
+    lifted = circle_of_arms(3).replace("</robot>", f'<link name="platform"/>{lift}</robot>')
+    assert identify_urdf(lifted).structure == "Torso"
 
 
 def test_a_chain_of_closures_drops_no_chain() -> None:

@@ -1181,6 +1181,12 @@ def test_thrusters_given_waters_density_or_air_and_water_stay_in_water() -> None
     assert identify_urdf(densities("1.2", fins).text()).structure == "Underwater Vehicle"
     # An unexpanded density is none: the plugins' words decide.
     assert identify_urdf(densities("${rho}").text()).structure == "Underwater Vehicle"
+    # Thrusters that give no density of their own are not flown by a sail's lift in the air.
+    sail = ("gz-sim-lift-drag-system", "<air_density>1.2</air_density>")
+    assert identify_urdf(densities("${rho}", sail).text()).structure == "Underwater Vehicle"
+    # Air for the thrusters, water for the hull's buoyancy: in water.
+    hull = ("gz-sim-buoyancy-system", "<uniform_fluid_density>1025</uniform_fluid_density>")
+    assert identify_urdf(densities("1.2", hull).text()).structure != "UAV"
 
 
 def test_a_reaction_wheel_with_no_thruster_says_nothing_of_flight() -> None:
