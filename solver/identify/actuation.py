@@ -502,20 +502,19 @@ def _few_endless_above(tree: JointTree, leaf: Joint, known: dict[str, str | None
     return False
 
 
-def _wrists_dropped(tree: JointTree, leaves: list[Joint]) -> list[Joint]:
+def _wrists_dropped(tree: JointTree, leaves: list[Joint], branching: frozenset[str]) -> list[Joint]:
     """``leaves`` but the last joints of arms: fewer than :data:`_WHEELED_FEET` leaves that
     each end more than :data:`_MOST_JOINTS_ABOVE_A_WHEEL` movable joints of one unbranched chain
     (up to the nearest link that carries another moving part: the body, a bogie) are wrists (a
     robot's one or two arms); four or more so deep are a walker's wheeled feet (six-joint legs,
     each ending in a wheel)."""
-    branching = _branching_links(tree)
     deep = {j.name for j in leaves if _deep(tree, j, branching)}
     if not deep or len(deep) >= _WHEELED_FEET:
         return leaves
     return [j for j in leaves if j.name not in deep]
 
 
-def _feet_dropped(tree: JointTree, leaves: list[Joint]) -> list[Joint]:
+def _feet_dropped(tree: JointTree, leaves: list[Joint], branching: frozenset[str]) -> list[Joint]:
     """``leaves`` but a walker's feet: a leaf ending an unbranched chain of
     :data:`_LEG_CHAIN_JOINTS` movable joints or more from a link that carries other moving
     parts (the body), when that link carries more such chains with as many movable joints
@@ -524,7 +523,6 @@ def _feet_dropped(tree: JointTree, leaves: list[Joint]) -> list[Joint]:
     start and how many joints move in them. A wheel-legged robot's legs all end in wheels."""
     if not leaves:
         return leaves
-    branching = _branching_links(tree)
     tips = (j for j in tree.urdf.joints if j.movable and j.child not in tree.moving_below)
     chains = {tip.name: _chain_from_branch(tree, tip, branching) for tip in tips}
     alike = Counter(chain for chain in chains.values() if chain is not None)
@@ -699,7 +697,9 @@ def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, str
         for j in apart
         if _hangs_freely(tree, j, known, rockers) and _few_endless_above(tree, j, endless)
     ]
-    apart = _feet_dropped(tree, _grounded(tree, _wrists_dropped(tree, apart)))
+    branching = _branching_links(tree)  # links that carry more than one moving part
+    apart = _wrists_dropped(tree, apart, branching)
+    apart = _feet_dropped(tree, _grounded(tree, apart), branching)
     side_by_side = len(apart) >= 2 and _sides({tree.poses.place(j.child)[1] for j in apart})
     if side_by_side or _in_line(tree, apart):
         found.update(dict.fromkeys((j.name for j in apart), _SIDES))

@@ -1364,8 +1364,9 @@ def _beside_a_slid_platform(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     slid = [i for i, types in enumerate(kinds) if set(types) == {"prismatic"}]
     if len(slid) != 1 or not _slides_apart(tree, limbs[slid[0]]):
         return []
-    rest = [limb for i, limb in enumerate(limbs) if i != slid[0]]
-    return rest if len({kinds[i] for i in range(len(limbs)) if i != slid[0]}) == 1 else []
+    odd = slid[0]
+    arms = limbs[:odd] + limbs[odd + 1 :]
+    return arms if len(set(kinds[:odd] + kinds[odd + 1 :])) == 1 else []
 
 
 def _slides_apart(tree: JointTree, limb: Limb) -> bool:
