@@ -668,6 +668,7 @@ def _read_into(owner: _Package, path: str, top: str, names: set[str], budget: _B
         text = _without_comment_lines(text, "//" if path.endswith(_CPP_SUFFIXES) else "#")
     if "kill" in text:
         text = _KILLS.sub("", text)
+    text = _ENCODED.sub("", text)
     written = names.intersection(_WORD.findall(text))
     if not written.isdisjoint(PARAMETER_NAMES):
         written -= PARAMETER_NAMES - set(_AS_PACKAGE.findall(text))
@@ -714,6 +715,12 @@ def _read(path: str, limit: int) -> bytes | None:
 # kill``) names what a script ends, not what it runs: it is left out up to the end of the
 # command (a newline, ``;``, ``&`` or ``|`` outside quotes), the rest of its line kept.
 _KILLS = re.compile(r"\b(pkill|killall|rosnode[ \t]+kill)\b(?:\"[^\"\n]*\"|'[^'\n]*'|[^\n;&|\"'])*")
+
+
+# A block of encoded data (three or more lines in a row of 60 characters or more, none a space:
+# base64, base85 or hex, as a vendored ``get-pip.py`` carries a wheel in) is data, not code:
+# a word a pattern reads in it (``mIK``) is chance. Code and configuration space their words.
+_ENCODED = re.compile(r"(?:^[^\s]{60,}\r?\n){3,}", re.MULTILINE)
 
 
 # C++ sources, whose comments open with ``//`` (``#`` opens a preprocessor line); Python,

@@ -207,6 +207,25 @@ def test_xml_comments_are_removed_from_launch_files(tmp_path: Path) -> None:
     assert read(described).files[0].text == "<launch><arg/></launch>"
 
 
+def test_a_block_of_encoded_data_is_left_out_and_the_code_around_it_kept(tmp_path: Path) -> None:
+    blob = "".join(f"{n}mIK{'x_Z9?' * 14}\n" for n in range(3))
+    described = package(
+        tmp_path / "src",
+        "rover_description",
+        {"get.py": f'import base64\nDATA = b"""\n{blob}"""\nmain()\n'},
+    )
+    assert read(described).files[0].text == 'import base64\nDATA = b"""\n"""\nmain()\n'
+
+
+def test_long_lines_of_code_that_space_their_words_or_stand_alone_are_kept(
+    tmp_path: Path,
+) -> None:
+    spaced = "ik = solve_ik(target_pose, seed=current_joint_positions, timeout=0.05)\n" * 3
+    alone = f"{'pub=rospy.Publisher(' * 4}\nx = 1\n{'ik_solver=IKSolver(' * 4}\n"
+    described = package(tmp_path / "src", "rover_description", {"a.py": spaced, "b.py": alone})
+    assert [f.text for f in read(described).files] == [spaced, alone]
+
+
 def test_an_unclosed_comment_runs_to_the_end_of_the_text() -> None:
     assert _uncommented("a<!--b-->c<!--d") == "ac"
     assert _uncommented("<!--" * 100_000) == ""
