@@ -449,10 +449,15 @@ class _DepthFrames:
         self._by_body: dict[str, set[str]] = {}
         self._poses: Poses | None = None
         self._frames: dict[str, tuple[Vector, Vector, Vector]] = {}
+        # The camera words of depth streams on frames the file does not draw (a RealSense
+        # macro's ``camera_depth_frame`` left out): their place cannot be compared, only named.
+        self._undrawn: set[str] = set()
         for detection in found:
             if detection.kind == "depth_camera" and detection.link is not None:
                 for body in _bodies_above(detection.link, urdf, with_itself=True):
                     self._by_body.setdefault(body, set()).add(detection.link)
+                if not urdf.has_link(detection.link):
+                    self._undrawn.add(_camera_word(detection.link))
 
     def holds_stream(self, detection: Detection) -> bool:
         """A plain camera on a frame that hangs from a camera's body as a depth stream's frame
@@ -463,9 +468,14 @@ class _DepthFrames:
         macro's colour and infrared frames beneath the ``camera_link`` its depth sensor is on.
         A camera turned another way (a rear camera on the same bracket), further off, or on a
         frame not named for the body (a thermal camera bolted to it) is one of its own; a turn
-        its sensor's own ``<pose>`` gives is not read."""
+        its sensor's own ``<pose>`` gives is not read. Streams on frames the file does not draw
+        are one camera's where their names begin with one camera word (``camera_color_frame``
+        beside the depth stream's ``camera_depth_frame``: a RealSense macro whose frames were
+        left out)."""
         if detection.kind != "camera" or detection.link is None:
             return False
+        if not self.urdf.has_link(detection.link):
+            return _camera_word(detection.link) in self._undrawn - {""}
         return any(
             self._alike(detection.link, depth)
             for body in _bodies_above(detection.link, self.urdf)
@@ -486,6 +496,13 @@ class _DepthFrames:
             turned = [poses.turned(link, _NO_TURN, axis) for axis in (_X, _Z)]
             self._frames[link] = (poses.place(link), turned[0], turned[1])
         return self._frames[link]
+
+
+def _camera_word(frame: str) -> str:
+    """``frame`` up to the end of its first camera word (``camera`` of ``camera_color_frame``,
+    ``head_realsense`` of ``head_realsense_depth_frame``); empty when it has none."""
+    named = _CAMERA_BODY.search(frame)
+    return "" if named is None else frame[: named.end()]
 
 
 def _bodies_above(link: str, urdf: Urdf, *, with_itself: bool = False) -> list[str]:

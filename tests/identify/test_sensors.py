@@ -908,6 +908,23 @@ def test_cameras_on_frames_beneath_an_rgbd_cameras_body_carrying_its_depth_are_i
     assert realsense_below_its_body("head_link") == {"camera": 3, "depth_camera": 1}
 
 
+def realsense_on_undrawn_frames(*streams: str) -> dict[str, int]:
+    """A D435's four Gazebo sensors on frames the file does not draw (a realsense macro whose
+    frames were left out): ``camera_depth_frame`` and a camera on each of ``streams``."""
+    robot = builders.ugv()
+    robot.add(builders.gazebo_sensor("camera_depth_frame", "depth", "depth"))
+    for frame in streams:
+        robot.add(builders.gazebo_sensor(frame, "camera", frame))
+    return {s.kind: s.count for s in identify_urdf(robot.text()).sensors}
+
+
+def test_streams_on_frames_not_drawn_named_for_one_camera_are_one_rgbd_camera() -> None:
+    frames = ("camera_color_frame", "camera_infra1_frame", "camera_infra2_frame")
+    assert realsense_on_undrawn_frames(*frames) == {"depth_camera": 1}
+    # A camera on an undrawn frame named for another camera's body is a camera of its own.
+    assert realsense_on_undrawn_frames("rear_camera_frame") == {"camera": 1, "depth_camera": 1}
+
+
 def realsense_on_optical_frames(colour_turn: str) -> dict[str, int]:
     """A D435 as the realsense2_description macro draws it, with Gazebo Sim sensors on its
     optical frames: ``head_camera_link`` on a head, a colour and a depth frame fixed beneath
