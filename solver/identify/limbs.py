@@ -2596,7 +2596,8 @@ def small_pan_tilt(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb
     the first (a servo bracket's two motors sit a few centimetres apart); pan then tilt at any
     span with the pan on the base (a yoke turning about the vertical, tilting what it holds: a
     two-link arm's shoulder and elbow turn about parallel axes, and a third joint or a
-    gripper makes an arm of it; measured: every such body of the development part is
+    gripper makes an arm of it, a third locked by its limits between them too (a modular
+    arm's middle module locked in its file); measured: every such body of the development part is
     labelled a pan/tilt unit, spans 7 to 34 cm)."""
     found = None if moves else _two_hinges_alone(tree, limbs, endless=True)
     if found is None:
@@ -2604,6 +2605,12 @@ def small_pan_tilt(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb
     limb, first, second = found
     if not _square_turns(tree, first, second):
         return limbs
+    if _locked_between(tree, first, second):
+        why = (
+            "the body's only limb, an unnamed chain of two hinges with a third between them "
+            "locked by its limits (an arm, one joint locked in this file)"
+        )
+        return [replace(limb, kind="arm", why=why)]
     if joint_span(tree, limb) <= _PAN_TILT_SPAN:
         apart = "a few centimetres apart"
     elif _pan_then_tilt(tree, first, second) and _on_the_root(tree, limb.base):
@@ -2615,6 +2622,21 @@ def small_pan_tilt(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb
         f"square to it, {apart} (a pan/tilt unit)"
     )
     return [replace(limb, kind="head", why=why)]
+
+
+def _locked_between(tree: JointTree, first: Joint, second: Joint) -> bool:
+    """A hinge or a slide locked by its limits (:attr:`Joint.closed`) lies between ``first``
+    and ``second``: a third joint of an arm, locked in this file (a modular arm's middle
+    module); a pan/tilt yoke has none between its two."""
+    here = second.parent
+    while here != first.child:
+        joint = tree.urdf.parent_joint(here)
+        if joint is None:
+            return False
+        if joint.type in ("revolute", "prismatic") and joint.closed:
+            return True
+        here = joint.parent
+    return False
 
 
 def _two_hinges_alone(

@@ -105,16 +105,38 @@ def body_from_workspace(body: Body, workspace: Workspace, profile: Profile) -> B
     body = _driven(body, workspace, profile)
     if not (body.travels_no_way or body.moved_by_plugin_alone):
         return body
+    # An object detector's classes (COCO's, Pascal VOC's) name what the robot sees: a ``boat``
+    # among them is none of its own.
+    told = replace(workspace, files=tuple(f for f in workspace.files if not _label_map(f.text)))
     said = {
         medium: shown_file
         for medium, pattern in profile.body_packages
         if (medium != GROUND or not body.count("head"))
-        and (shown_file := _first_found(workspace, pattern)) is not None
+        and (shown_file := _first_found(told, pattern)) is not None
     }
     if len(said) != 1:
         return body
     ((medium, evidence),) = said.items()
     return replace(body, shipped_as=medium, shipped_by=evidence)
+
+
+def _label_map(text: str) -> bool:
+    """``text`` lists an object detector's classes: :data:`_LABEL_MAP_CLASSES` of the classes
+    of COCO or Pascal VOC that no robot's software names otherwise (``teddy bear``,
+    ``fire hydrant``, ``pottedplant``)."""
+    found = {re.sub("[ _]", "", m.group(0).lower()) for m in _DETECTOR_CLASS.finditer(text)}
+    return len(found) >= _LABEL_MAP_CLASSES
+
+
+# Classes of COCO's and Pascal VOC's label maps a robot's own software has no word for, and
+# how many of them make a file a label map.
+_DETECTOR_CLASS = re.compile(
+    r"teddy[ _]?bear|hair[ _]?drier|toothbrush|fire[ _]?hydrant|parking[ _]?meter|"
+    r"potted[ _]?plant|dining[ _]?table|tv[ _]?monitor|wine[ _]?glass|baseball[ _]?(bat|glove)|"
+    r"tennis[ _]?racket|sports[ _]?ball|hot[ _]?dog|aeroplane|giraffe|zebra",
+    re.IGNORECASE,
+)
+_LABEL_MAP_CLASSES = 3
 
 
 def _driven(body: Body, workspace: Workspace, profile: Profile) -> Body:
@@ -279,8 +301,9 @@ def _nearest_joint(text: str, start: int, end: int) -> str | None:
 
 
 # A controller's one joint, as ROS 1 configurations write it (``joint: FL_calf``,
-# ``"joint": "FL_calf"``), and how far around its type it is looked for.
-_JOINT_KEY = re.compile(r"""(?<![\w])["']?joint["']?\s*:\s*["']?([\w./-]+)""")
+# ``"joint": "FL_calf"``; a Dynamixel controller's ``joint_name: pan``), and how far around its
+# type it is looked for.
+_JOINT_KEY = re.compile(r"""(?<![\w])["']?joint(?:_name)?["']?\s*:\s*["']?([\w./-]+)""")
 _BLOCK_REACH = 240
 
 

@@ -1956,6 +1956,28 @@ def test_a_pan_on_the_base_tilting_what_it_holds_far_above_is_a_pan_tilt_unit() 
     assert "the upright one on the base" in result.body.limbs[0].why
 
 
+def locked(robot: RobotText, parent: str, child: str) -> None:
+    """A hinge from ``parent`` to ``child`` 10 cm up, locked by limits of 0 to 0."""
+    limits = '<limit lower="0" upper="0" effort="1" velocity="1"/>'
+    robot.joint(f"{child}_lock", "revolute", parent, child, f'<origin xyz="0 0 0.1"/>{limits}')
+
+
+def test_a_pan_and_a_tilt_with_a_third_hinge_locked_between_them_are_an_arm() -> None:
+    # A modular arm's three modules, the middle one locked in its file.
+    robot = RobotText("bracket")
+    builders.placed(robot, "j1", "revolute", robot.root, "l1", xyz="0 0 0.05")
+    locked(robot, "l1", "l2")
+    builders.placed(robot, "j2", "revolute", "l2", "l3", xyz="0 0 0.15", axis="0 1 0")
+    result = identify_urdf(robot.text())
+    assert result.structure == "Manipulator"
+    assert result.body is not None
+    assert "locked by its limits" in result.body.limbs[0].why
+    # Locked below the tilt (what it holds is bolted on so): still a yoke.
+    yoke = two_hinges_alone(axes=("0 0 1", "0 1 0"), reach=0.3)
+    locked(yoke, "l2", "l3")
+    assert identify_urdf(yoke.text()).structure == "Pan/Tilt Unit"
+
+
 @pytest.mark.parametrize(
     ("axes", "reach"),
     [

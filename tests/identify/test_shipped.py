@@ -1013,6 +1013,25 @@ def test_a_pan_tilt_unit_in_a_rovers_packages_stays_a_pan_tilt_unit(tmp_path: Pa
     assert structure == "Pan/Tilt Unit"
 
 
+@pytest.mark.parametrize(
+    "classes",
+    [
+        # COCO's, as a detector's script lists them, and Pascal VOC's.
+        "CLASSES = ['person', 'car', 'boat', 'traffic light', 'fire hydrant', 'stop sign', "
+        "'parking meter', 'teddy bear', 'hair drier', 'toothbrush']",
+        "labels: [aeroplane, bicycle, boat, bottle, diningtable, pottedplant, tvmonitor]",
+    ],
+)
+def test_a_boat_among_an_object_detectors_classes_puts_no_body_in_water(
+    tmp_path: Path, classes: str
+) -> None:
+    structure, _ = read_with(tmp_path, one_link(), classes)
+    assert structure == "Other"
+    # Two of those classes make no label map: a boat named beside them is the robot.
+    structure, _ = read_with(tmp_path / "two", one_link(), "boat_control # a teddy bear's zebra")
+    assert structure == "Surface Vessel"
+
+
 def test_read_alone_the_same_body_is_nothing_in_particular(tmp_path: Path) -> None:
     path = described(tmp_path, one_link(), "rospy.ServiceProxy('takeoff')")
     assert identify(path, look_around=False).structure == "Other"
@@ -1405,6 +1424,24 @@ def test_a_controller_of_a_heads_joint_its_own_takes_joint_commands_on_a_vehicle
         "(effort_controllers/JointPositionController): a controller of a joint's own on a "
         "pan/tilt head"
     )
+
+
+def test_a_dynamixel_controller_of_a_heads_joint_its_own_takes_joint_commands_on_a_vehicle(
+    tmp_path: Path,
+) -> None:
+    # As dynamixel_controllers' ROS 1 configurations write it: its module, the joint's name.
+    bringup = (
+        "camera_pan_controller:\n  controller:\n    package: dynamixel_controllers\n"
+        "    module: joint_position_controller\n    type: JointPositionController\n"
+        "  joint_name: camera_pan\n  joint_speed: 4.0\n"
+    )
+    found = controls_of(described(tmp_path, rover_with_a_camera_head(), bringup))
+    assert found["Joint"].endswith("a controller of a joint's own on a pan/tilt head")
+    # Its torque module too; another joint's (no joint the description draws) commands none.
+    torque = bringup.replace("position", "torque")
+    assert "Joint" in controls_of(described(tmp_path / "t", rover_with_a_camera_head(), torque))
+    other = bringup.replace("joint_name: camera_pan", "joint_name: mast_lift")
+    assert "Joint" not in controls_of(described(tmp_path / "o", rover_with_a_camera_head(), other))
 
 
 @pytest.mark.parametrize(
