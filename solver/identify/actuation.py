@@ -124,6 +124,8 @@ _RING_TOLERANCE = 0.1
 # A revolute joint whose range spans this (a whole turn, pi rounded to 3.14 each way) may spin
 # a propeller: an export that bounds every joint at +-pi writes its rotors so.
 _WHOLE_TURN = 6.28
+# How many revolute joints bounded alike a whole turn make an export's placeholder bounds.
+_ALIKE_BOUNDED = 3
 # An omni base's wheels, told by their axles alone: this many or more (a kiwi drive's three),
 # each axle within this share of pointing at the middle of them all (the cosine of the angle
 # between the axle and the line from the middle to the wheel, 0.95: 18 degrees).
@@ -1561,9 +1563,10 @@ def _unnamed_spinners(tree: JointTree, taken: set[str]) -> Iterator[Joint]:
     nothing of how far a joint turns: one turning a part balanced on its axle is read so too."""
     known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
     named: dict[str, str | None] = {}  # link -> the nearest movable joint named for a part
+    whole = _bounded_alike(tree)
     for joint in tree.urdf.joints:
         if (
-            (joint.endless or _unbounded(tree, joint))
+            (joint.endless or _unbounded(tree, joint, whole))
             and joint.actuated
             and joint.name not in taken
             and not _named_for_a_part(tree, joint, known, named)
@@ -1573,17 +1576,29 @@ def _unnamed_spinners(tree: JointTree, taken: set[str]) -> Iterator[Joint]:
             yield joint
 
 
-def _unbounded(tree: JointTree, joint: Joint) -> bool:
+def _unbounded(tree: JointTree, joint: Joint, whole: bool = False) -> bool:
     """A revolute joint written blank (:func:`~solver.identify.readers.urdf.written_blank`) and
-    unlocked as an export's (its range unwritten, not zero), turning a part that carries its
-    mass on its axle (:func:`_balanced`): a wheel, as far as the file says; a jaw or a finger
-    hangs its mass off its hinge."""
+    unlocked as an export's (its range unwritten, not zero), or, with ``whole``, bounded a
+    whole turn as every revolute joint of the file is (:func:`_bounded_alike`), turning a part
+    that carries its mass on its axle (:func:`_balanced`): a wheel, as far as the file says; a
+    jaw or a finger hangs its mass off its hinge."""
     return (
         joint.type == "revolute"
-        and joint.unlocked
-        and written_blank(joint)
+        and ((joint.unlocked and written_blank(joint)) or (whole and joint.turns(_WHOLE_TURN)))
         and _balanced(tree, joint)
     )
+
+
+def _bounded_alike(tree: JointTree) -> bool:
+    """Every revolute joint of the file is bounded alike, a whole turn (an export that writes
+    +-pi on every joint, wheels and arm alike), three of them or more: the limits say nothing
+    of which joints turn for ever."""
+    bounds = {(j.lower, j.upper) for j in tree.urdf.joints if j.type == "revolute"}
+    revolute = sum(1 for j in tree.urdf.joints if j.type == "revolute")
+    if revolute < _ALIKE_BOUNDED or len(bounds) != 1:
+        return False
+    lower, upper = next(iter(bounds))
+    return lower is not None and upper is not None and upper - lower >= _WHOLE_TURN
 
 
 def _named_for_a_part(

@@ -203,6 +203,46 @@ def test_a_cad_exports_blank_wheels_are_told_by_sides_of_the_bodys_mass_centre()
     assert identify_urdf(_with_masses(robot.text(), wheels)).structure != "UGV"
 
 
+def whole_turn_export(*, arm_bounds: str = 'lower="-3.14159" upper="3.14159"') -> str:
+    """An export that bounds every joint +-pi: four unnamed leaves at a base's corners, axles
+    across it, each turning a part balanced on its axle, and a three-joint arm on top (bounded
+    ``arm_bounds``)."""
+    robot = RobotText("rover")
+    whole = '<axis xyz="0 0 1"/><limit lower="-3.14159" upper="3.14159" effort="1" velocity="1"/>'
+    for corner, (x, y) in {
+        "a": (0, 0.05),
+        "b": (0.3, 0.05),
+        "c": (0, 0.35),
+        "d": (0.3, 0.35),
+    }.items():
+        origin = f'<origin xyz="{x} {y} -0.02" rpy="1.5708 0 0"/>'
+        robot.joint(f"{corner}_joint", "revolute", "base_link", f"{corner}_link", origin + whole)
+    arm = f'<axis xyz="0 1 0"/><limit {arm_bounds} effort="1" velocity="1"/>'
+    parent = "base_link"
+    for i in range(3):
+        robot.joint(f"j{i}", "revolute", parent, f"l{i}", f'<origin xyz="0.15 0.2 0.2"/>{arm}')
+        parent = f"l{i}"
+    wheels = {f"{corner}_link": "0 0 0" for corner in "abcd"}
+    return _with_masses(robot.text(), {"base_link": "0.15 0.2 0", **wheels})
+
+
+def test_balanced_leaves_on_level_axles_of_an_export_bounding_every_joint_alike_are_wheels() -> (
+    None
+):
+    # Onshape's export writes +-pi on every revolute joint, the wheels' too: their limits say
+    # nothing, their place and balance do.
+    result = identify_urdf(whole_turn_export())
+    assert result.body is not None
+    assert (result.structure, result.body.wheels) == (
+        "Mobile Manipulator",
+        ("a_joint", "b_joint", "c_joint", "d_joint"),
+    )
+    # Where the arm's joints are bounded otherwise, a whole turn may be a stop: no wheels.
+    other = identify_urdf(whole_turn_export(arm_bounds='lower="-1.5" upper="1.5"'))
+    assert other.body is not None
+    assert other.body.wheels == ()
+
+
 def three_spinning_leaves(yaws: tuple[float, ...]) -> RobotText:
     """Three unnamed endless leaves below a base whose origin is at a corner of them (none on
     its left), at 120 degrees round their middle (0.2, -0.2), each frame turned a quarter
