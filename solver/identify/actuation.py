@@ -126,6 +126,12 @@ _RING_TOLERANCE = 0.1
 _WHOLE_TURN = 6.28
 # How many revolute joints bounded alike a whole turn make an export's placeholder bounds.
 _ALIKE_BOUNDED = 3
+# How near a twin rotor is to the mirror image of a rotor a plugin names: this share of that
+# rotor's distance from the root, at least this many metres.
+_TWIN_SLACK = 0.05
+# How many joints (fixed frames too) a whole-turn export's wheel may hang below the root.
+_WHEEL_DEPTH = 32
+_TWIN_FLOOR = 0.01
 # An omni base's wheels, told by their axles alone: this many or more (a kiwi drive's three),
 # each axle within this share of pointing at the middle of them all (the cosine of the angle
 # between the axle and the line from the middle to the wheel, 0.95: 18 degrees).
@@ -350,12 +356,50 @@ def _steering_beside(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Ro
 
 def _drop_lone_rotors(tree: JointTree, roles: dict[str, Role]) -> None:
     """Rotors too few to fly are none (one spinning leaf is a motor or a tool), unless a
-    simulator poses them."""
+    simulator poses them, or their twins make up the number (:func:`_rotor_twins`)."""
     rotors = [n for n, r in roles.items() if r.role == "rotor"]
     posed = any(roles[n].evidence.endswith(POSED) for n in rotors)
-    if rotors and len(rotors) < tree.profile.limb("min_rotors") and not posed:
-        for name in rotors:
-            del roles[name]
+    if not rotors or posed or len(rotors) >= tree.profile.limb("min_rotors"):
+        return
+    twins = _rotor_twins(tree, roles, rotors)
+    if len(rotors) + len(twins) >= tree.profile.limb("min_rotors"):
+        roles.update(twins)
+        return
+    for name in rotors:
+        del roles[name]
+
+
+def _rotor_twins(tree: JointTree, roles: Mapping[str, Role], rotors: list[str]) -> dict[str, Role]:
+    """Endless leaves of no role, each where one of the ``rotors`` a plugin names (too few to
+    fly) is seen in a mirror through the root (left for right, front for back, or both),
+    within :data:`_TWIN_SLACK` of that rotor's distance from it: its twin, a motor whose plugin
+    its author did not write yet (a bicopter's second motor). Sought only for so few rotors."""
+    named = [(n, tree.poses.place(j.child)) for n in rotors if (j := tree.urdf.joint(n))]
+    found: dict[str, Role] = {}
+    for joint in tree.urdf.joints:
+        if (
+            joint.name in roles
+            or not (joint.endless and joint.actuated)
+            or joint.child in tree.moving_below
+        ):
+            continue
+        place = tree.poses.place(joint.child)
+        twin = next((name for name, at in named if _mirror_image(place, at)), None)
+        if twin is not None:
+            why = f"the mirror image of rotor {twin}, an endless leaf no plugin names (its twin)"
+            found[joint.name] = Role(joint.name, "rotor", why)
+    return found
+
+
+def _mirror_image(place: Vector, other: Vector) -> bool:
+    """``place`` is ``other`` seen in a mirror through the root's origin (left for right, front
+    for back, or both), within :data:`_TWIN_SLACK` of its distance from the origin (a CAD
+    export's few millimetres; at least :data:`_TWIN_FLOOR`), and not ``other`` itself."""
+    slack = max(_TWIN_FLOOR, _TWIN_SLACK * math.dist(other, (0.0, 0.0, 0.0)))
+    if math.dist(place, other) <= slack:
+        return False
+    x, y, z = other
+    return any(math.dist(place, image) <= slack for image in ((x, -y, z), (-x, y, z), (-x, -y, z)))
 
 
 def _drop_flywheel(tree: JointTree, roles: dict[str, Role]) -> None:
@@ -1559,8 +1603,9 @@ def _unnamed_spinners(tree: JointTree, taken: set[str]) -> Iterator[Joint]:
     """Endless joints of no role yet and no part's name, not on a part an endless joint turns
     about a level axle (a rim's rollers) nor carrying a sensor a mount points (a camera, a
     lidar or a range finder: a wheel's contact or IMU sensor turns with it): what could be
-    wheels or rotors, told by place. An export that wrote no limits (:func:`_unbounded`) says
-    nothing of how far a joint turns: one turning a part balanced on its axle is read so too."""
+    wheels or rotors, told by place. An export that wrote no limits, or bounded every revolute
+    joint alike a whole turn (:func:`_unbounded`), says nothing of how far a joint turns: one
+    turning a part balanced on its axle is read so too."""
     known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
     named: dict[str, str | None] = {}  # link -> the nearest movable joint named for a part
     whole = _bounded_alike(tree)
@@ -1579,14 +1624,34 @@ def _unnamed_spinners(tree: JointTree, taken: set[str]) -> Iterator[Joint]:
 def _unbounded(tree: JointTree, joint: Joint, whole: bool = False) -> bool:
     """A revolute joint written blank (:func:`~solver.identify.readers.urdf.written_blank`) and
     unlocked as an export's (its range unwritten, not zero), or, with ``whole``, bounded a
-    whole turn as every revolute joint of the file is (:func:`_bounded_alike`), turning a part
-    that carries its mass on its axle (:func:`_balanced`): a wheel, as far as the file says; a
-    jaw or a finger hangs its mass off its hinge."""
+    whole turn as every revolute joint of the file is (:func:`_bounded_alike`) and hanging as
+    a wheel does (:func:`_moved_by_few`), turning a part that carries its mass on its axle
+    (:func:`_balanced`): a wheel, as far as the file says; a jaw or a finger hangs its mass off
+    its hinge."""
     return (
         joint.type == "revolute"
-        and ((joint.unlocked and written_blank(joint)) or (whole and joint.turns(_WHOLE_TURN)))
+        and (
+            (joint.unlocked and written_blank(joint))
+            or (whole and joint.turns(_WHOLE_TURN) and _moved_by_few(tree, joint.parent))
+        )
         and _balanced(tree, joint)
     )
+
+
+def _moved_by_few(tree: JointTree, link: str) -> bool:
+    """At most one movable joint moves ``link`` (a steering knuckle, a suspension's arm, or
+    none: the body itself), as a wheel hangs, within :data:`_WHEEL_DEPTH` joints of the root;
+    a flange at an arm's end hangs below many."""
+    moving = 0
+    joint = tree.urdf.parent_joint(link)
+    for _ in range(_WHEEL_DEPTH):
+        if joint is None:
+            return True
+        moving += joint.movable
+        if moving > 1:
+            return False
+        joint = tree.urdf.parent_joint(joint.parent)
+    return False
 
 
 def _bounded_alike(tree: JointTree) -> bool:

@@ -2625,15 +2625,15 @@ def small_pan_tilt(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb
 
 
 def _locked_between(tree: JointTree, first: Joint, second: Joint) -> bool:
-    """A hinge or a slide locked by its limits (:attr:`Joint.closed`) lies between ``first``
+    """A hinge locked by its limits (equal ones, :attr:`Joint.closed`) lies between ``first``
     and ``second``: a third joint of an arm, locked in this file (a modular arm's middle
-    module); a pan/tilt yoke has none between its two."""
+    module); a pan/tilt yoke has none between its two (a mast's slide locked there lifts it)."""
     here = second.parent
     while here != first.child:
         joint = tree.urdf.parent_joint(here)
         if joint is None:
             return False
-        if joint.type in ("revolute", "prismatic") and joint.closed:
+        if joint.type == "revolute" and joint.closed:
             return True
         here = joint.parent
     return False

@@ -33,13 +33,12 @@ Not here: chains and limbs (:mod:`solver.identify.limbs`), the structure
 
 from __future__ import annotations
 
-import math
 import re
 from collections.abc import Iterator
 from dataclasses import dataclass
 from functools import cached_property
 
-from solver.identify.pose import Poses, Vector, local_axis
+from solver.identify.pose import local_axis
 from solver.identify.profile import PartMatcher, Profile
 from solver.identify.readers.urdf import Joint, PluginTag, Urdf
 
@@ -238,7 +237,6 @@ class RoleReader:
         )
         # A plugin that names a joint outright speaks before a force plugin pushing its link.
         self.named = {**self._pushed_thrusters(), **self._named_by_plugins()}
-        self.named |= self._rotor_twins(self.named)
 
     def _spaceborne(self) -> bool:
         """A craft its thrusters fly in air or space, no name of a boat or a submersible: beside
@@ -373,26 +371,6 @@ class RoleReader:
                         # blade (how Gazebo models rotors), not a control surface's travel.
                         kind, why = "rotor", why + ", turning without limits (a propeller)"
                     found[joint] = Role(joint, kind, why)
-        return found
-
-    def _rotor_twins(self, named: dict[str, Role]) -> dict[str, Role]:
-        """Endless leaves the plugins name nothing of, each where a rotor they name is seen in a
-        mirror through the body's root (left for right, front for back): that rotor's twin, a
-        motor whose plugin its author did not write yet (a bicopter's second motor)."""
-        rotors = [name for name, role in named.items() if role.role == "rotor"]
-        if not rotors:
-            return {}
-        poses = Poses(self.urdf)
-        places = [(n, poses.place(joint.child)) for n in rotors if (joint := self.urdf.joint(n))]
-        found: dict[str, Role] = {}
-        for joint in self.urdf.joints:
-            if joint.name in named or joint.type != "continuous" or self.urdf.children(joint.child):
-                continue
-            place = poses.place(joint.child)
-            twin = next((n for n, at in places if _mirrored(place, at)), None)
-            if twin is not None:
-                why = f"the mirror image of rotor {twin} a motor plugin names (its twin)"
-                found[joint.name] = Role(joint.name, "rotor", why)
         return found
 
     def _joints_named(self, part: str, plugin: PluginTag) -> Iterator[tuple[str, str]]:
@@ -572,20 +550,3 @@ class RoleReader:
             )
             found[name] = Role(name, "caster", f"the wheel of the caster swivel {swivel.name}")
         return found
-
-
-def _mirrored(place: Vector, other: Vector) -> bool:
-    """``place`` is ``other`` seen in a mirror through the root's origin, left for right or
-    front for back, within :data:`_MIRROR_SLACK` of its distance from the origin (a CAD
-    export's few millimetres), and not ``other`` itself."""
-    slack = max(_MIRROR_FLOOR, _MIRROR_SLACK * math.dist(other, (0.0, 0.0, 0.0)))
-    if math.dist(place, other) <= slack:
-        return False
-    x, y, z = other
-    return any(math.dist(place, image) <= slack for image in ((x, -y, z), (-x, y, z)))
-
-
-# How near a twin rotor is to the mirror image of another: this share of its distance from the
-# root, at least this many metres.
-_MIRROR_SLACK = 0.05
-_MIRROR_FLOOR = 0.01

@@ -500,9 +500,18 @@ class _DepthFrames:
 
 def _camera_word(frame: str) -> str:
     """``frame`` up to the end of its first camera word (``camera`` of ``camera_color_frame``,
-    ``head_realsense`` of ``head_realsense_depth_frame``); empty when it has none."""
+    ``head_realsense`` of ``head_realsense_depth_frame``), when a stream's word follows it
+    (:data:`_STREAM_WORD`: a colour, infrared or depth frame; not ``camera_rear_frame`` or a
+    second device's ``camera2_color_frame``); empty otherwise."""
     named = _CAMERA_BODY.search(frame)
-    return "" if named is None else frame[: named.end()]
+    if named is None or _STREAM_WORD.match(frame, named.end()) is None:
+        return ""
+    return frame[: named.end()]
+
+
+# What names an RGB-D camera's stream right after its camera word (``_color``, ``_infra1``,
+# ``_depth``, ``_aligned_depth_to_color``).
+_STREAM_WORD = re.compile(r"_(colou?r|rgb|infra|ir|depth|aligned)", re.IGNORECASE)
 
 
 def _bodies_above(link: str, urdf: Urdf, *, with_itself: bool = False) -> list[str]:

@@ -105,19 +105,28 @@ def body_from_workspace(body: Body, workspace: Workspace, profile: Profile) -> B
     body = _driven(body, workspace, profile)
     if not (body.travels_no_way or body.moved_by_plugin_alone):
         return body
-    # An object detector's classes (COCO's, Pascal VOC's) name what the robot sees: a ``boat``
-    # among them is none of its own.
-    told = replace(workspace, files=tuple(f for f in workspace.files if not _label_map(f.text)))
     said = {
         medium: shown_file
         for medium, pattern in profile.body_packages
         if (medium != GROUND or not body.count("head"))
-        and (shown_file := _first_found(told, pattern)) is not None
+        and (shown_file := _first_telling(workspace, pattern)) is not None
     }
     if len(said) != 1:
         return body
     ((medium, evidence),) = said.items()
     return replace(body, shipped_as=medium, shipped_by=evidence)
+
+
+def _first_telling(workspace: Workspace, pattern: Pattern) -> str | None:
+    """The first file of the robot's packages ``pattern`` finds a medium's word in, as evidence
+    shows it, that is no object detector's list of classes (:func:`_label_map`: a ``boat``
+    among them is what the robot sees, none of its own); or None. Only a file the pattern
+    finds something in is asked whether it is one."""
+    for shipped in workspace.files:
+        matched = pattern.find(shipped.text)
+        if matched is not None and not _label_map(shipped.text):
+            return _shown_file(shipped.package, shipped.path, matched)
+    return None
 
 
 def _label_map(text: str) -> bool:
@@ -267,8 +276,9 @@ def per_joint_controllers(
 ) -> str | None:
     """The first file of the robot's packages that configures a controller of a joint's own
     (``rule.per_joint``: ROS 1's ``effort_controllers/JointPositionController``, a command
-    topic for one joint) for one of the ``joints`` (a walker's legs'): the ``joint:`` key
-    nearest the controller's type names it. Those joints take commands one by one, whatever
+    topic for one joint; a Dynamixel's ``joint_position_controller`` module) for one of the
+    ``joints`` (a walker's legs'): the ``joint:`` (or ``joint_name:``) key nearest the
+    controller's type names it. Those joints take commands one by one, whatever
     else the packages ship (a gait beside them walks the body through them). A joint group's
     or trajectory controller is what a gait writes to, and a controller of a joint's own for a
     head or a gripper says nothing of the legs: not read here. Found in packages read in part
@@ -288,9 +298,9 @@ def per_joint_controllers(
 
 
 def _nearest_joint(text: str, start: int, end: int) -> str | None:
-    """The value of the ``joint:`` key nearest a controller's type found at ``start:end``
-    (a block's joint is written just before or after its type), within a few lines, by its
-    name after a namespace; None when there is none."""
+    """The value of the ``joint:`` (or ``joint_name:``) key nearest a controller's type found
+    at ``start:end`` (a block's joint is written just before or after its type), within a few
+    lines, by its name after a namespace; None when there is none."""
     before = text[max(0, start - _BLOCK_REACH) : start]
     after = text[end : end + _BLOCK_REACH]
     keys = [(len(before) - m.end(), m.group(1)) for m in _JOINT_KEY.finditer(before)]
@@ -380,9 +390,10 @@ def _first_found(workspace: Workspace, *patterns: Pattern | PackageRule) -> str 
 def _shown_file(package: str, path: str, matched: str) -> str:
     """A file of the robot's packages and the text found in it, as evidence shows them, the
     punctuation and spaces a pattern's word boundary matched stripped from its ends
-    (``'takeoff(`` shows as ``takeoff``; an underscore or a digit stays)."""
+    (``'takeoff(`` shows as ``takeoff``; an underscore or a digit stays), and its line breaks
+    and indents shown as one space (a match over two lines of a configuration)."""
     where = shown(path, limit=SHOWN_FILE_NAME_CHARS)
-    word = matched.strip(_BOUNDS) or matched
+    word = " ".join((matched.strip(_BOUNDS) or matched).split()) or matched
     return f"package {shown(package)}: {where} ({shown(word)})"
 
 

@@ -237,10 +237,86 @@ def test_balanced_leaves_on_level_axles_of_an_export_bounding_every_joint_alike_
         "Mobile Manipulator",
         ("a_joint", "b_joint", "c_joint", "d_joint"),
     )
+    # Flanges at two arms' ends, balanced and turning about level axles left and right, are
+    # no wheels: many joints move them.
+    torso = RobotText("torso")
+    whole = '<limit lower="-3.14159" upper="3.14159" effort="1" velocity="1"/>'
+    for side, y in (("a", 0.3), ("b", -0.3)):
+        parent = "base_link"
+        for i, axis in enumerate(("0 0 1", "0 1 0", "0 1 0", "0 1 0")):
+            child = f"{side}{i}"
+            origin = f'<origin xyz="0.1 {y if i == 0 else 0} 0.3"/><axis xyz="{axis}"/>'
+            torso.joint(f"{side}j{i}", "revolute", parent, child, origin + whole)
+            parent = child
+    flanges = _with_masses(torso.text(), {"a3": "0 0 0", "b3": "0 0 0"})
+    found = identify_urdf(flanges)
+    assert found.body is not None
+    assert (found.structure, found.body.wheels) == ("Torso", ())
     # Where the arm's joints are bounded otherwise, a whole turn may be a stop: no wheels.
     other = identify_urdf(whole_turn_export(arm_bounds='lower="-1.5" upper="1.5"'))
     assert other.body is not None
     assert other.body.wheels == ()
+
+
+def bicopter(*, second: str = "0 -0.15 0.2") -> RobotText:
+    """Two unnamed servos left and right of the body, each tilting a motor on an endless joint
+    (``m1``, ``m2``, the second at ``second``); a motor model plugin for ``m1`` only, as an
+    unfinished model writes it."""
+    robot = RobotText("r")
+    for i, xyz in ((1, "0 0.15 0.2"), (2, second)):
+        builders.placed(robot, f"s{i}", "revolute", robot.root, f"servo{i}", xyz=xyz, axis="0 1 0")
+        builders.placed(robot, f"m{i}", "continuous", f"servo{i}", f"motor{i}", xyz="0 0 0.04")
+    plugin = "<jointName>m1</jointName><linkName>motor1</linkName><motorNumber>0</motorNumber>"
+    robot.add(builders.model_plugin("motor_1", "librotors_gazebo_motor_model.so", plugin))
+    return robot
+
+
+def test_the_mirror_image_of_a_rotor_a_motor_plugin_names_is_its_twin_rotor() -> None:
+    result = identify_urdf(bicopter().text())
+    assert result.structure == "UAV"
+    found = {r.joint: r for r in result.roles}
+    assert found["m2"].role == "rotor"
+    assert found["m2"].evidence.startswith("the mirror image of rotor m1")
+    # Elsewhere on the body (not where m1 is seen in a mirror) it is no twin: one rotor is
+    # too few to fly.
+    elsewhere = identify_urdf(bicopter(second="0.1 -0.05 0.2").text())
+    assert "m2" not in {r.joint for r in elsewhere.roles if r.role == "rotor"}
+    # A PX4-style motor (revolute, +-1e16 rad) is endless too: a twin.
+    px4 = (
+        bicopter()
+        .text()
+        .replace('<joint name="m2" type="continuous"', '<joint name="m2" type="revolute"')
+    )
+    px4 = px4.replace(
+        '<child link="motor2"/>',
+        '<child link="motor2"/><limit lower="-1e16" upper="1e16" effort="1" velocity="1"/>',
+    )
+    assert 'name="m2" type="revolute"' in px4
+    assert "1e16" in px4
+    assert identify_urdf(px4).structure == "UAV"
+
+
+def test_a_quadcopter_whose_plugins_name_one_rotor_keeps_all_four() -> None:
+    # An X quadcopter's four propeller discs; a motor model plugin for the first only. The
+    # other three are rotors by their ring round the body.
+    inertia = '<inertia ixx="0.001" ixy="0" ixz="0" iyy="0.001" iyz="0" izz="0.001"/>'
+    parts = [f'<link name="base"><inertial><mass value="1.5"/>{inertia}</inertial></link>']
+    for i, (x, y) in enumerate(((0.2, 0.2), (-0.2, -0.2), (0.2, -0.2), (-0.2, 0.2)), start=1):
+        disc = '<geometry><cylinder radius="0.1" length="0.005"/></geometry>'
+        parts.append(
+            f'<link name="p{i}"><inertial><mass value="0.01"/>{inertia}</inertial>'
+            f"<visual>{disc}</visual></link>"
+            f'<joint name="m{i}" type="continuous"><parent link="base"/><child link="p{i}"/>'
+            f'<origin xyz="{x} {y} 0.05"/><axis xyz="0 0 1"/></joint>'
+        )
+    parts.append(
+        '<gazebo><plugin name="motor_1" filename="librotors_gazebo_motor_model.so">'
+        "<jointName>m1</jointName><linkName>p1</linkName><motorNumber>1</motorNumber>"
+        "</plugin></gazebo>"
+    )
+    result = identify_urdf(f'<robot name="r">{"".join(parts)}</robot>')
+    assert result.body is not None
+    assert (result.structure, sorted(result.body.rotors)) == ("UAV", ["m1", "m2", "m3", "m4"])
 
 
 def three_spinning_leaves(yaws: tuple[float, ...]) -> RobotText:

@@ -1972,6 +1972,13 @@ def test_a_pan_and_a_tilt_with_a_third_hinge_locked_between_them_are_an_arm() ->
     assert result.structure == "Manipulator"
     assert result.body is not None
     assert "locked by its limits" in result.body.limbs[0].why
+    # A mast's slide locked between them lifts the yoke: still a pan/tilt unit.
+    mast = RobotText("bracket")
+    builders.placed(mast, "j1", "revolute", mast.root, "l1", xyz="0 0 0.05")
+    limits = '<limit lower="0" upper="0" effort="1" velocity="1"/>'
+    mast.joint("lift", "prismatic", "l1", "l2", f'<origin xyz="0 0 0.1"/>{limits}')
+    builders.placed(mast, "j2", "revolute", "l2", "l3", xyz="0 0 0.15", axis="0 1 0")
+    assert identify_urdf(mast.text()).structure == "Pan/Tilt Unit"
     # Locked below the tilt (what it holds is bolted on so): still a yoke.
     yoke = two_hinges_alone(axes=("0 0 1", "0 1 0"), reach=0.3)
     locked(yoke, "l2", "l3")

@@ -43,30 +43,6 @@ def test_a_joint_a_thruster_plugin_names_is_a_thruster_and_says_which_plugin() -
     assert found["surface0"][0] == "fin"
 
 
-def bicopter(*, second: str = "0 -0.15 0.2") -> RobotText:
-    """Two unnamed servos left and right of the body, each tilting a motor on an endless joint
-    (``m1``, ``m2``, the second at ``second``); a motor model plugin for ``m1`` only, as an
-    unfinished model writes it."""
-    robot = RobotText("r")
-    for i, xyz in ((1, "0 0.15 0.2"), (2, second)):
-        builders.placed(robot, f"s{i}", "revolute", robot.root, f"servo{i}", xyz=xyz, axis="0 1 0")
-        builders.placed(robot, f"m{i}", "continuous", f"servo{i}", f"motor{i}", xyz="0 0 0.04")
-    plugin = "<jointName>m1</jointName><linkName>motor1</linkName><motorNumber>0</motorNumber>"
-    robot.add(builders.model_plugin("motor_1", "librotors_gazebo_motor_model.so", plugin))
-    return robot
-
-
-def test_the_mirror_image_of_a_rotor_a_motor_plugin_names_is_its_twin_rotor() -> None:
-    result = identify_urdf(bicopter().text())
-    assert result.structure == "UAV"
-    found = {r.joint: r for r in result.roles}
-    assert found["m2"].role == "rotor"
-    assert found["m2"].evidence.startswith("the mirror image of rotor m1")
-    # Elsewhere on the body (not where m1 is seen in a mirror) it is no twin: one rotor is
-    # too few to fly.
-    assert roles(bicopter(second="0.1 -0.05 0.2")).get("m2", ("",))[0] != "rotor"
-
-
 def pushed_pods(*, in_water: bool) -> RobotText:
     """Two unnamed pods on swivels (``p1_yaw``, ``p2_yaw``) that force plugins push on command,
     on a hull a buoyancy plugin floats (``in_water``) or on a bare body."""

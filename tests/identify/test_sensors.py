@@ -921,8 +921,10 @@ def realsense_on_undrawn_frames(*streams: str) -> dict[str, int]:
 def test_streams_on_frames_not_drawn_named_for_one_camera_are_one_rgbd_camera() -> None:
     frames = ("camera_color_frame", "camera_infra1_frame", "camera_infra2_frame")
     assert realsense_on_undrawn_frames(*frames) == {"depth_camera": 1}
-    # A camera on an undrawn frame named for another camera's body is a camera of its own.
-    assert realsense_on_undrawn_frames("rear_camera_frame") == {"camera": 1, "depth_camera": 1}
+    # A camera on an undrawn frame named for another camera's body, or for no stream after
+    # the camera word (a rear camera, a second device's colour frame), is a camera of its own.
+    for other in ("rear_camera_frame", "camera_rear_frame", "camera2_color_frame"):
+        assert realsense_on_undrawn_frames(other) == {"camera": 1, "depth_camera": 1}
 
 
 def realsense_on_optical_frames(colour_turn: str) -> dict[str, int]:

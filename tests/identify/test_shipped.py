@@ -1440,6 +1440,16 @@ def test_a_dynamixel_controller_of_a_heads_joint_its_own_takes_joint_commands_on
     # Its torque module too; another joint's (no joint the description draws) commands none.
     torque = bringup.replace("position", "torque")
     assert "Joint" in controls_of(described(tmp_path / "t", rover_with_a_camera_head(), torque))
+    # Written module first, or in flow style: the same.
+    for written in (
+        "camera_pan_controller:\n  controller: {module: joint_position_controller,\n"
+        "    type: JointPositionController, package: dynamixel_controllers}\n"
+        "  joint_name: camera_pan\n",
+        "camera_pan_controller: {controller: {package: dynamixel_controllers, "
+        "module: joint_position_controller}, joint_name: camera_pan}\n",
+    ):
+        folder = tmp_path / f"w{len(written)}"
+        assert "Joint" in controls_of(described(folder, rover_with_a_camera_head(), written))
     other = bringup.replace("joint_name: camera_pan", "joint_name: mast_lift")
     assert "Joint" not in controls_of(described(tmp_path / "o", rover_with_a_camera_head(), other))
 

@@ -717,10 +717,11 @@ def _read(path: str, limit: int) -> bytes | None:
 _KILLS = re.compile(r"\b(pkill|killall|rosnode[ \t]+kill)\b(?:\"[^\"\n]*\"|'[^'\n]*'|[^\n;&|\"'])*")
 
 
-# A block of encoded data (three or more lines in a row of 60 characters or more, none a space:
-# base64, base85 or hex, as a vendored ``get-pip.py`` carries a wheel in) is data, not code:
-# a word a pattern reads in it (``mIK``) is chance. Code and configuration space their words.
-_ENCODED = re.compile(r"(?:^[^\s]{60,}\r?\n){3,}", re.MULTILINE)
+# A block of encoded data (three or more lines in a row of 60 characters or more, none a space,
+# a full stop, a comma or a quote: base64, base85 or hex, as a vendored ``get-pip.py`` carries a
+# wheel in) is data, not code: a word a pattern reads in it (``mIK``) is chance. Code and
+# configuration space their words, or call, list and quote them (``pub=rospy.Publisher('/a',T)``).
+_ENCODED = re.compile(r"""(?:^[^\s.,'"]{60,}(?:\r?\n|\Z)){3,}""", re.MULTILINE)
 
 
 # C++ sources, whose comments open with ``//`` (``#`` opens a preprocessor line); Python,

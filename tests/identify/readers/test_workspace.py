@@ -215,6 +215,9 @@ def test_a_block_of_encoded_data_is_left_out_and_the_code_around_it_kept(tmp_pat
         {"get.py": f'import base64\nDATA = b"""\n{blob}"""\nmain()\n'},
     )
     assert read(described).files[0].text == 'import base64\nDATA = b"""\n"""\nmain()\n'
+    # At the end of a file with no line break after it, too.
+    ending = package(tmp_path / "ws2", "rover_description", {"b.py": f"x = 1\n{blob.rstrip()}"})
+    assert read(ending).files[0].text == "x = 1\n"
 
 
 def test_long_lines_of_code_that_space_their_words_or_stand_alone_are_kept(
@@ -222,8 +225,12 @@ def test_long_lines_of_code_that_space_their_words_or_stand_alone_are_kept(
 ) -> None:
     spaced = "ik = solve_ik(target_pose, seed=current_joint_positions, timeout=0.05)\n" * 3
     alone = f"{'pub=rospy.Publisher(' * 4}\nx = 1\n{'ik_solver=IKSolver(' * 4}\n"
-    described = package(tmp_path / "src", "rover_description", {"a.py": spaced, "b.py": alone})
-    assert [f.text for f in read(described).files] == [spaced, alone]
+    # Code written with no space, three lines in a row: its calls, lists and quotes say so.
+    unspaced = "pub=rospy.Publisher('/mobile_base/commands/velocity',Twist,queue_size=10)\n" * 3
+    described = package(
+        tmp_path / "src", "rover_description", {"a.py": spaced, "b.py": alone, "c.py": unspaced}
+    )
+    assert [f.text for f in read(described).files] == [spaced, alone, unspaced]
 
 
 def test_an_unclosed_comment_runs_to_the_end_of_the_text() -> None:
