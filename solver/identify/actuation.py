@@ -129,9 +129,9 @@ _ALIKE_BOUNDED = 3
 # How near a twin rotor is to the mirror image of a rotor a plugin names: this share of that
 # rotor's distance from the root, at least this many metres.
 _TWIN_SLACK = 0.05
+_TWIN_FLOOR = 0.01
 # How many joints (fixed frames too) a whole-turn export's wheel may hang below the root.
 _WHEEL_DEPTH = 32
-_TWIN_FLOOR = 0.01
 # An omni base's wheels, told by their axles alone: this many or more (a kiwi drive's three),
 # each axle within this share of pointing at the middle of them all (the cosine of the angle
 # between the axle and the line from the middle to the wheel, 0.95: 18 degrees).
