@@ -130,8 +130,6 @@ _ALIKE_BOUNDED = 3
 # rotor's distance from the root, at least this many metres.
 _TWIN_SLACK = 0.05
 _TWIN_FLOOR = 0.01
-# How many joints (fixed frames too) a whole-turn export's wheel may hang below the root.
-_WHEEL_DEPTH = 32
 # An omni base's wheels, told by their axles alone: this many or more (a kiwi drive's three),
 # each axle within this share of pointing at the middle of them all (the cosine of the angle
 # between the axle and the line from the middle to the wheel, 0.95: 18 degrees).
@@ -1640,11 +1638,11 @@ def _unbounded(tree: JointTree, joint: Joint, whole: bool = False) -> bool:
 
 def _moved_by_few(tree: JointTree, link: str) -> bool:
     """At most one movable joint moves ``link`` (a steering knuckle, a suspension's arm, or
-    none: the body itself), as a wheel hangs, within :data:`_WHEEL_DEPTH` joints of the root;
+    none: the body itself), as a wheel hangs, within :data:`_DEEPEST_WALK` joints of the root;
     a flange at an arm's end hangs below many."""
     moving = 0
     joint = tree.urdf.parent_joint(link)
-    for _ in range(_WHEEL_DEPTH):
+    for _ in range(_DEEPEST_WALK):
         if joint is None:
             return True
         moving += joint.movable
@@ -1658,9 +1656,9 @@ def _bounded_alike(tree: JointTree) -> bool:
     """Every revolute joint of the file is bounded alike, a whole turn (an export that writes
     +-pi on every joint, wheels and arm alike), three of them or more: the limits say nothing
     of which joints turn for ever."""
-    bounds = {(j.lower, j.upper) for j in tree.urdf.joints if j.type == "revolute"}
-    revolute = sum(1 for j in tree.urdf.joints if j.type == "revolute")
-    if revolute < _ALIKE_BOUNDED or len(bounds) != 1:
+    revolute = [j for j in tree.urdf.joints if j.type == "revolute"]
+    bounds = {(j.lower, j.upper) for j in revolute}
+    if len(revolute) < _ALIKE_BOUNDED or len(bounds) != 1:
         return False
     lower, upper = next(iter(bounds))
     return lower is not None and upper is not None and upper - lower >= _WHOLE_TURN

@@ -456,8 +456,8 @@ class _DepthFrames:
             if detection.kind == "depth_camera" and detection.link is not None:
                 for body in _bodies_above(detection.link, urdf, with_itself=True):
                     self._by_body.setdefault(body, set()).add(detection.link)
-                if not urdf.has_link(detection.link):
-                    self._undrawn.add(_camera_word(detection.link))
+                if not urdf.has_link(detection.link) and (word := _camera_word(detection.link)):
+                    self._undrawn.add(word)
 
     def holds_stream(self, detection: Detection) -> bool:
         """A plain camera on a frame that hangs from a camera's body as a depth stream's frame
@@ -475,7 +475,7 @@ class _DepthFrames:
         if detection.kind != "camera" or detection.link is None:
             return False
         if not self.urdf.has_link(detection.link):
-            return _camera_word(detection.link) in self._undrawn - {""}
+            return _camera_word(detection.link) in self._undrawn
         return any(
             self._alike(detection.link, depth)
             for body in _bodies_above(detection.link, self.urdf)

@@ -38,7 +38,7 @@ from __future__ import annotations
 
 import re
 import string
-from collections.abc import Collection
+from collections.abc import Callable, Collection
 from dataclasses import replace
 
 from solver.errors import InputError
@@ -109,7 +109,7 @@ def body_from_workspace(body: Body, workspace: Workspace, profile: Profile) -> B
         medium: shown_file
         for medium, pattern in profile.body_packages
         if (medium != GROUND or not body.count("head"))
-        and (shown_file := _first_telling(workspace, pattern)) is not None
+        and (shown_file := _first_found(workspace, pattern, skip=_label_map)) is not None
     }
     if len(said) != 1:
         return body
@@ -117,20 +117,9 @@ def body_from_workspace(body: Body, workspace: Workspace, profile: Profile) -> B
     return replace(body, shipped_as=medium, shipped_by=evidence)
 
 
-def _first_telling(workspace: Workspace, pattern: Pattern) -> str | None:
-    """The first file of the robot's packages ``pattern`` finds a medium's word in, as evidence
-    shows it, that is no object detector's list of classes (:func:`_label_map`: a ``boat``
-    among them is what the robot sees, none of its own); or None. Only a file the pattern
-    finds something in is asked whether it is one."""
-    for shipped in workspace.files:
-        matched = pattern.find(shipped.text)
-        if matched is not None and not _label_map(shipped.text):
-            return _shown_file(shipped.package, shipped.path, matched)
-    return None
-
-
 def _label_map(text: str) -> bool:
-    """``text`` lists an object detector's classes: :data:`_LABEL_MAP_CLASSES` of the classes
+    """``text`` lists an object detector's classes (a ``boat`` among them is what the robot
+    sees, none of its own): :data:`_LABEL_MAP_CLASSES` of the classes
     of COCO or Pascal VOC that no robot's software names otherwise (``teddy bear``,
     ``fire hydrant``, ``pottedplant``)."""
     found = {re.sub("[ _]", "", m.group(0).lower()) for m in _DETECTOR_CLASS.finditer(text)}
@@ -374,15 +363,20 @@ _WORD = re.compile(r"[\w.\-]+")
 _PART = re.compile(r"\w+")
 
 
-def _first_found(workspace: Workspace, *patterns: Pattern | PackageRule) -> str | None:
+def _first_found(
+    workspace: Workspace,
+    *patterns: Pattern | PackageRule,
+    skip: Callable[[str], bool] | None = None,
+) -> str | None:
     """The first file of the robot's packages one of the ``patterns`` finds text in (a
     package rule's :meth:`~solver.identify.profile.PackageRule.find`: its ``match``, in a file
     its ``unless`` finds none in), as evidence shows it (in the order the packages were
-    read), or None."""
+    read), or None; a file ``skip`` says of its text (asked only of a file something was found
+    in) is passed by."""
     for shipped in workspace.files:
         for pattern in patterns:
             matched = pattern.find(shipped.text)
-            if matched is not None:
+            if matched is not None and not (skip and skip(shipped.text)):
                 return _shown_file(shipped.package, shipped.path, matched)
     return None
 
