@@ -1362,9 +1362,16 @@ def _round_its_origin(
     tree: JointTree, carrier: str | None, joints: list[Joint], wheeled: bool
 ) -> bool:
     """Three leaves or more before and behind, left and right of their body's origin; or, on
-    a body with no wheel, two or more on one upright line (:func:`_coaxial`)."""
-    places = [tree.poses.place(joint.child) for joint in joints]
-    centre = _body_origin(tree, carrier)
+    a body with no wheel, two or more on one upright line (:func:`_coaxial`). A body a joint
+    that turns carries is measured in its own frame, as its leaves' axes are
+    (:func:`_resting_axis`): a drone hung from a load by ball joints sits tilted at rest."""
+    body = tree.urdf.joint(carrier) if carrier is not None else None
+    if body is not None and _turns(body):
+        places = [tree.poses.hung_from(body.child, joint).origin for joint in joints]
+        centre = (0.0, 0.0, 0.0)
+    else:
+        places = [tree.poses.place(joint.child) for joint in joints]
+        centre = _body_origin(tree, carrier)
     return (
         len(joints) >= _FEWEST_UNNAMED_ROTORS
         and _sides({place[0] - centre[0] for place in places})

@@ -1416,6 +1416,21 @@ def test_limited_leaves_named_as_motors_all_round_a_body_are_its_rotors() -> Non
     assert identify_urdf(revolute_rotors("2", name="motorcycle_").text()).structure != "UAV"
 
 
+def test_unnamed_rotors_of_a_drone_hung_tilted_from_ball_joints_are_read_in_its_frame() -> None:
+    # A load carried by a drone on a rod: a ball joint written as hinges, and the drone on
+    # the rod's end turned a radian about x at rest. Its four unnamed propellers, 6 cm up its
+    # own axis, are all round its own frame but all on one side of it across the ground.
+    robot = RobotText("load")
+    builders.placed(robot, "bx", "continuous", robot.root, "rod", axis="1 0 0")
+    builders.placed(robot, "by", "continuous", "rod", "knot", xyz="0 0 1", axis="0 1 0")
+    builders.placed(robot, "bz", "continuous", "knot", "drone", rpy="-1 0 0")
+    for i, (x, y) in enumerate(((0.08, 0.08), (0.08, -0.08), (-0.08, 0.08), (-0.08, -0.08))):
+        builders.placed(robot, f"s{i}", "continuous", "drone", f"p{i}", xyz=f"{x} {y} 0.06")
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert (result.structure, set(result.body.rotors)) == ("UAV", {"s0", "s1", "s2", "s3"})
+
+
 def test_unnamed_upright_spinners_all_on_one_side_of_a_frame_are_no_rotors() -> None:
     # Three fans off a straight line, all before and left of the frame's origin.
     robot = RobotText("fans")

@@ -494,14 +494,15 @@ def two_hinges(word: str) -> RobotText:
     return base
 
 
-@pytest.mark.parametrize("word", ["wheel", "rueda", "llanta", "roue"])
-def test_a_wheel_named_in_spanish_or_french_is_a_wheel(word: str) -> None:
-    """``Acople_1__rueda_1``: the wheel's name in the language its makers wrote."""
+@pytest.mark.parametrize("word", ["wheel", "rueda", "llanta", "roue", "whl"])
+def test_a_wheel_named_in_spanish_or_french_or_shortened_is_a_wheel(word: str) -> None:
+    """``Acople_1__rueda_1``: the wheel's name in the language its makers wrote;
+    ``front_left_whl_joint``: its name shortened."""
     result = identify_urdf(two_hinges(word).text())
     assert (result.structure, {role.role for role in result.roles}) == ("UGV", {"wheel"})
 
 
-@pytest.mark.parametrize("word", ["proue", "rouet", "ruota", "ruotante"])
+@pytest.mark.parametrize("word", ["proue", "rouet", "ruota", "ruotante", "whlx"])
 def test_a_word_holding_roue_inside_it_or_italians_rotate_names_no_wheel(word: str) -> None:
     result = identify_urdf(two_hinges(word).text())
     assert (result.structure, {role.role for role in result.roles}) == ("Other", {"other"})
