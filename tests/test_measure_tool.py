@@ -528,3 +528,31 @@ def test_the_briefs_snake_labels_a_serpentine_reading_in_a_label_and_in_a_note(
     write_truth(folder, rows)
     # The label and the word in the note are the Serpentine structure; "snakes" names none.
     assert "structure correct: 1/3 strict, 2/3 lenient" in measure("--set", str(folder))
+
+
+def test_a_structure_named_inside_a_longer_ones_name_in_a_note_is_not_named_by_it(
+    tmp_path: Path,
+) -> None:
+    folder = tmp_path / "flyers"
+    (folder / "urdf").mkdir(parents=True)
+    (folder / "urdf" / "arm.urdf").write_text(manipulator().text(), encoding="utf-8")
+    rows = [
+        {
+            "robot": "in_a_longer_name",
+            "file": "urdf/arm.urdf",
+            "kinematic_type": "UAV?",
+            "uncertainty_note": "an Aerial manipulator would also fit",
+        },
+        {
+            "robot": "named_alone",
+            "file": "urdf/arm.urdf",
+            "kinematic_type": "UAV?",
+            "uncertainty_note": "a Manipulator would also fit",
+        },
+    ]
+    write_truth(folder, rows)
+    # The arm is right only where the note names a Manipulator, not an Aerial manipulator.
+    assert "structure correct: 0/2 strict, 1/2 lenient" in measure("--set", str(folder))
+    structures = ["Manipulator", "Aerial Manipulator", "Mobile Manipulator", "UGV"]
+    named = _measure_tool().named_structures("an aerial manipulator or a ugv", structures)
+    assert named == {"Aerial Manipulator", "UGV"}

@@ -70,7 +70,7 @@ import re
 import sys
 import tempfile
 from collections import Counter
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -150,6 +150,19 @@ def share(part: int, whole: int) -> str:
     return f"{part}/{whole} ({100 * part / whole:.0f}%)" if whole else "-"
 
 
+def named_structures(note: str, structures: Sequence[str]) -> set[str]:
+    """The structures ``note`` (case-folded) names, each read as a whole: a longer name first
+    and then out of the way, so that a note naming an Aerial Manipulator or a Mobile
+    Manipulator names no Manipulator by it."""
+    named: set[str] = set()
+    for structure in sorted(structures, key=len, reverse=True):
+        name = structure.casefold()
+        if name in note:
+            named.add(structure)
+            note = note.replace(name, " ")
+    return named
+
+
 @dataclass
 class Score:
     """Running totals over some rows of a set, and the misses with their reasons."""
@@ -217,7 +230,7 @@ class Score:
         note = row.get("uncertainty_note", "").casefold()
         alternatives = {label, *ACCEPTS.get(label, set())}
         if row["kinematic_type"].endswith("?"):
-            alternatives |= {s for s in self.structures if s.casefold() in note}
+            alternatives |= named_structures(note, self.structures)
             alternatives |= {
                 s for a, s in ALIASES.items() if re.search(rf"\b{re.escape(a)}\b", note)
             }
