@@ -63,6 +63,7 @@ from solver.identify.limbs import (
     moved_by,
     named_pan_tilt,
     nearest_above,
+    open_linkages,
     parallel_robot,
     pendulum,
     planar_arm,
@@ -739,7 +740,7 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
     parts.limbs = drives_beside_legs(tree, parts.limbs)
     parts.limbs = raised_legs(tree, flippers(tree, parts.limbs), parts.roles)
     parts.limbs = parallel_robot(tree, meeting_tips(tree, parts.limbs), flying=flying)
-    parts.limbs = closed_arms(tree, closed_loops(tree, parts.limbs))
+    parts.limbs = open_linkages(tree, closed_arms(tree, closed_loops(tree, parts.limbs)))
     if not parts.roles and not parts.trunk:  # a snake is its one chain, with nothing else
         parts.limbs = spine(tree, parts.limbs)
     elif not parts.roles and not parts.grippers:  # or its chain, with side wheels on it

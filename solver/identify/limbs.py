@@ -122,6 +122,7 @@ __all__ = [
     "legs_by_reach",
     "lone_leg",
     "named_pan_tilt",
+    "open_linkages",
     "pendulum",
     "planar_arm",
     "small_pan_tilt",
@@ -1906,6 +1907,81 @@ def closed_arms(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     return sort_limbs(tree, kept)
 
 
+def open_linkages(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
+    """An arm and an unnamed chain beside it on one body, the chain planar (every joint a
+    hinge about parallel axes, :func:`_planar_arm`) about the arm's first axis, starting apart
+    from the arm's first joint but within :data:`_LINKAGE_GAP` of it in the plane it turns in,
+    shorter than the arm and ending in a bare link: the arm's parallelogram (a desktop arm's,
+    that keeps its tool level) written as an open chain, the loop a URDF cannot close. Merged
+    into the arm, as :func:`closed_arms` merges a five-bar's; two arms of a torso start apart,
+    across the body."""
+    arms = [limb for limb in limbs if limb.kind == "arm"]
+    if not 2 <= len(arms) <= _MOST_FIVE_BAR_LEGS:
+        return limbs  # a stranger's thousands of chains are not paired one by one
+    known: dict[str, str | None] = {}
+    planar = {id(arm): found for arm in arms if (found := _planar_arm(tree, arm, known))}
+    into: dict[int, Limb] = {}  # the open side's id -> the arm it is merged into
+    for arm in arms:
+        for side in arms:
+            found = planar.get(id(side))
+            if (
+                side is arm
+                or id(side) in into
+                or id(arm) in into
+                or found is None
+                or side.named
+                or len(side.joints) >= len(arm.joints)
+                or _carries(tree, side)
+                or not _open_side(tree, arm, found, known)
+            ):
+                continue
+            into[id(side)] = arm
+    if not into:
+        return limbs
+    why = "an arm and its parallelogram, written as an open chain beside it (one arm)"
+    grown: dict[int, list[str]] = {id(arm): [] for arm in into.values()}
+    for limb in limbs:
+        if id(limb) in into:
+            grown[id(into[id(limb)])] += limb.joints
+    return [
+        replace(limb, joints=limb.joints + tuple(grown[id(limb)]), why=why)
+        if id(limb) in grown
+        else limb
+        for limb in limbs
+        if id(limb) not in into
+    ]
+
+
+def _carries(tree: JointTree, limb: Limb) -> bool:
+    """A link hangs below the chain's last joint's (a frame, a tool): it ends in no bare link."""
+    last = tree.urdf.joint(limb.joints[-1])
+    return last is None or bool(tree.urdf.children(last.child))
+
+
+def _open_side(tree: JointTree, arm: Limb, side: _Planar, known: dict[str, str | None]) -> bool:
+    """``side`` (a planar chain) hangs from the body ``arm`` hangs from and starts apart from
+    it but within :data:`_LINKAGE_GAP`, in the plane its first hinge turns in (about a
+    parallel axis, its start off that plane by less than :data:`_LINKAGE_PLANE`)."""
+    first = tree.urdf.joint(arm.joints[0])
+    if first is None or first.type not in ("revolute", "continuous"):
+        return False
+    axis = tree.poses.axis(first)
+    start = _start(tree, arm)
+    off = [side.start[k] - start[k] for k in range(3)]
+    return (
+        moved_by(tree.urdf, arm.base, known) == side.body
+        and parallel(axis, side.axis)
+        and 0 < distance(start, side.start) < _LINKAGE_GAP
+        and abs(sum(off[k] * axis[k] for k in range(3))) < _LINKAGE_PLANE
+    )
+
+
+# How near an arm's first joint a parallelogram's open side starts (metres), and how far off
+# the plane the arm's first hinge turns in.
+_LINKAGE_GAP = 0.1
+_LINKAGE_PLANE = 0.03
+
+
 class _Planar(NamedTuple):
     """An arm read once for :func:`closed_arms`."""
 
@@ -2702,28 +2778,43 @@ def bolted_chain(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
 
 
 def planar_arm(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
-    """The only limb of a body that moves as a whole (``moves``: it rolls, flies or swims), an
-    unnamed chain (carrying no sensor, or it would be a head) of two limited hinges about
-    parallel level axes as the body rests, the second at least :data:`_PLANAR_REACH` from the
-    first: a two-link arm swinging in a vertical plane, what the base carries to lift or push.
-    A pan/tilt unit turns about square axes, a flipper's track or a wheel turns for ever, a
-    suspension carries wheels (a mount)."""
-    found = _two_hinges_alone(tree, limbs, endless=False) if moves else None
+    """The only limb of a body that moves as a whole (``moves``: it rolls, flies or swims), or
+    its only two, one on each side of it (:func:`_opposite`), each an unnamed chain (carrying
+    no sensor, or it would be a head) of two limited hinges about parallel level axes as the
+    body rests, the second at least :data:`_PLANAR_REACH` from the first: a two-link arm
+    swinging in a vertical plane, what the base carries to lift or push (a delivery robot's
+    pair of them). A pan/tilt unit turns about square axes, a flipper's track or a wheel turns
+    for ever, a suspension carries wheels (a mount)."""
+    if not moves or len(limbs) not in (1, 2) or not all(_two_link(tree, limb) for limb in limbs):
+        return limbs
+    if len(limbs) == 1:
+        why = (
+            "the body's only limb, an unnamed chain of two hinges about parallel level axes "
+            "(a two-link arm swinging in a vertical plane) on a body that moves"
+        )
+    elif _opposite(tree, limbs):
+        why = (
+            "one of the body's only two limbs, one on each side of it, each an unnamed chain of "
+            "two hinges about parallel level axes (two-link arms) on a body that moves"
+        )
+    else:
+        return limbs
+    return [replace(limb, kind="arm", why=why) for limb in limbs]
+
+
+def _two_link(tree: JointTree, limb: Limb) -> bool:
+    """``limb`` is an unnamed chain of no limb's kind of two limited hinges about parallel
+    level axes, the second at least :data:`_PLANAR_REACH` from the first."""
+    found = _two_hinges_alone(tree, [limb], endless=False)
     if found is None:
-        return limbs
-    limb, first, second = found
+        return False
+    _, first, second = found
     axis = tree.poses.axis(first)
-    if (
-        abs(axis[2]) > _LEVEL_AXIS
-        or not parallel(axis, tree.poses.axis(second))
-        or joint_span(tree, limb) < _PLANAR_REACH
-    ):
-        return limbs
-    why = (
-        "the body's only limb, an unnamed chain of two hinges about parallel level axes "
-        "(a two-link arm swinging in a vertical plane) on a body that moves"
+    return (
+        abs(axis[2]) <= _LEVEL_AXIS
+        and parallel(axis, tree.poses.axis(second))
+        and joint_span(tree, limb) >= _PLANAR_REACH
     )
-    return [replace(limb, kind="arm", why=why)]
 
 
 # How far (metres) a two-link arm's second hinge is from its first, at least (a wrist's two

@@ -1863,6 +1863,52 @@ def test_two_hinges_about_parallel_level_axes_on_a_wheeled_base_are_its_arm() ->
     assert "two-link arm" in result.body.limbs[0].why
 
 
+def test_two_two_link_arms_one_on_each_side_of_a_wheeled_base_are_its_arms() -> None:
+    # A delivery base's two arms on its front corners, each two hinges about y, unnamed.
+    robot = builders.ugv()
+    for side, y in (("a", 0.2), ("b", -0.2)):
+        builders.placed(
+            robot,
+            f"{side}1",
+            "revolute",
+            robot.root,
+            f"{side}_l1",
+            xyz=f"0.3 {y} 0.2",
+            axis="0 1 0",
+        )
+        builders.placed(
+            robot, f"{side}2", "revolute", f"{side}_l1", f"{side}_l2", xyz="0 0 0.2", axis="0 1 0"
+        )
+    result = identify_urdf(robot.text())
+    assert result.structure == "Mobile Manipulator"
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["arm", "arm"]
+    # Both on one side of the base: no pair of arms (a mast's hinges, a boom's).
+    lopsided = builders.ugv()
+    for side, x in (("a", 0.3), ("b", -0.3)):
+        builders.placed(
+            lopsided,
+            f"{side}1",
+            "revolute",
+            lopsided.root,
+            f"{side}_l1",
+            xyz=f"{x} 0.2 0.2",
+            axis="0 1 0",
+        )
+        builders.placed(
+            lopsided,
+            f"{side}2",
+            "revolute",
+            f"{side}_l1",
+            f"{side}_l2",
+            xyz="0 0 0.2",
+            axis="0 1 0",
+        )
+    result = identify_urdf(lopsided.text())
+    assert result.body is not None
+    assert "arm" not in [limb.kind for limb in result.body.limbs]
+
+
 @pytest.mark.parametrize(
     ("second_axis", "reach"),
     [
@@ -3115,6 +3161,52 @@ def test_two_arm_chains_whose_ends_meet_are_one_five_bar_arm() -> None:
 )
 def test_two_arms_apart_or_not_in_one_plane_stay_two_arms(arms: dict[str, Any]) -> None:
     result = identify_urdf(five_bar_arm(**arms).text())
+    assert result.body is not None
+    assert result.body.count("arm") == 2
+
+
+def desktop_arm_drawn_open(*, gap: float = 0.05, side_end: bool = False) -> RobotText:
+    """A desktop arm on a table, its base turning about z, then three hinges about y and the
+    tool's turn about z; beside the arm's first hinge (``gap`` before it) its parallelogram's
+    other side, three hinges about y ending in a bare link (or, with ``side_end``, in a fixed
+    frame of its own)."""
+    robot = RobotText("desktop", root="table")
+    base = builders.placed(robot, "j1", "revolute", "table", "turret", xyz="0 0 0.1")
+    link = base
+    for index, xyz in enumerate(("0 0 0.1", "0 0 0.17", "0.17 0 0"), start=2):
+        link = builders.placed(
+            robot, f"j{index}", "revolute", link, f"arm{index}", xyz=xyz, axis="0 1 0"
+        )
+    tool = builders.placed(robot, "j5", "revolute", link, "flange", xyz="0.06 0 0")
+    robot.fixed(tool, "tool")
+    link = base
+    for index, xyz in enumerate((f"{-gap} 0 0.12", "0 0 0.17", "0.07 0 0")):
+        link = builders.placed(
+            robot, f"p{index}", "revolute", link, f"rod{index}", xyz=xyz, axis="0 1 0"
+        )
+    if side_end:
+        robot.fixed(link, "rod_end")
+    return robot
+
+
+def test_an_arms_parallelogram_drawn_as_an_open_chain_beside_it_is_part_of_the_arm() -> None:
+    result = identify_urdf(desktop_arm_drawn_open().text())
+    assert result.structure == "Manipulator"
+    assert result.body is not None
+    assert [(limb.kind, len(limb.joints)) for limb in result.body.limbs] == [("arm", 7)]
+
+
+@pytest.mark.parametrize(
+    "drawn",
+    [
+        {"gap": 0.4},  # starting far from the arm's first hinge: an arm of its own
+        {"side_end": True},  # ending in a frame of its own, not in a bare link
+    ],
+)
+def test_a_chain_beside_an_arm_far_from_it_or_carrying_a_frame_stays_an_arm(
+    drawn: dict[str, Any],
+) -> None:
+    result = identify_urdf(desktop_arm_drawn_open(**drawn).text())
     assert result.body is not None
     assert result.body.count("arm") == 2
 
