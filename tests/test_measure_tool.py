@@ -553,6 +553,8 @@ def test_a_structure_named_inside_a_longer_ones_name_in_a_note_is_not_named_by_i
     write_truth(folder, rows)
     # The arm is right only where the note names a Manipulator, not an Aerial manipulator.
     assert "structure correct: 0/2 strict, 1/2 lenient" in measure("--set", str(folder))
-    structures = ["Manipulator", "Aerial Manipulator", "Mobile Manipulator", "UGV"]
-    named = _measure_tool().named_structures("an aerial manipulator or a ugv", structures)
-    assert named == {"Aerial Manipulator", "UGV"}
+    structures = ["Manipulator", "Aerial Manipulator", "Mobile Manipulator", "UGV", "Hand", "Other"]
+    named = _measure_tool().named_structures
+    assert named("an aerial manipulator or two ugvs", structures) == {"Aerial Manipulator", "UGV"}
+    # Its words as words, however joined: none inside another word.
+    assert named("an aerial-manipulator, handheld, another", structures) == {"Aerial Manipulator"}

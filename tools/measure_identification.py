@@ -151,15 +151,20 @@ def share(part: int, whole: int) -> str:
 
 
 def named_structures(note: str, structures: Sequence[str]) -> set[str]:
-    """The structures ``note`` (case-folded) names, each read as a whole: a longer name first
-    and then out of the way, so that a note naming an Aerial Manipulator or a Mobile
-    Manipulator names no Manipulator by it."""
+    """The structures ``note`` (case-folded) names, each by its words as words (a plural too,
+    joined by spaces, hyphens, underscores or a slash: an ``aerial-manipulator``, ``UGVs``; no
+    ``hand`` in ``handheld``, no ``other`` in ``another``), a longer name first and then out of
+    the way, so that a note naming an Aerial Manipulator or a Mobile Manipulator names no
+    Manipulator by it."""
     named: set[str] = set()
     for structure in sorted(structures, key=len, reverse=True):
-        name = structure.casefold()
-        if name in note:
+        words = re.split(r"[\s/]+", structure.casefold())
+        pattern = re.compile(
+            r"(?<![a-z0-9])" + r"[\s_/-]+".join(map(re.escape, words)) + r"s?(?![a-z0-9])"
+        )
+        if pattern.search(note):
             named.add(structure)
-            note = note.replace(name, " ")
+            note = pattern.sub(" ", note)
     return named
 
 

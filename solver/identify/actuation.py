@@ -1362,16 +1362,18 @@ def _round_its_origin(
     tree: JointTree, carrier: str | None, joints: list[Joint], wheeled: bool
 ) -> bool:
     """Three leaves or more before and behind, left and right of their body's origin; or, on
-    a body with no wheel, two or more on one upright line (:func:`_coaxial`). A body a joint
-    that turns carries is measured in its own frame, as its leaves' axes are
-    (:func:`_resting_axis`): a drone hung from a load by ball joints sits tilted at rest."""
+    a body with no wheel, two or more on one upright line (:func:`_coaxial`). On a body a
+    joint that turns carries, the leaves' axes are read in the frame of the link they hang from
+    (:func:`_resting_axis`), and so are their places and the body's origin here: a drone hung
+    from a load by ball joints sits tilted at rest, its frame link perhaps turned on it as a
+    CAD export writes one."""
     body = tree.urdf.joint(carrier) if carrier is not None else None
+    places = [tree.poses.place(joint.child) for joint in joints]
+    centre = _body_origin(tree, carrier)
     if body is not None and _turns(body):
-        places = [tree.poses.hung_from(body.child, joint).origin for joint in joints]
-        centre = (0.0, 0.0, 0.0)
-    else:
-        places = [tree.poses.place(joint.child) for joint in joints]
-        centre = _body_origin(tree, carrier)
+        frame = joints[0].parent
+        places = [tree.poses.seen_from(frame, place) for place in places]
+        centre = tree.poses.seen_from(frame, centre)
     return (
         len(joints) >= _FEWEST_UNNAMED_ROTORS
         and _sides({place[0] - centre[0] for place in places})

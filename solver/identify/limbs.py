@@ -1910,32 +1910,15 @@ def closed_arms(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
 def open_linkages(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     """An arm and an unnamed chain beside it on one body, the chain planar (every joint a
     hinge about parallel axes, :func:`_planar_arm`) about the arm's first axis, starting apart
-    from the arm's first joint but within :data:`_LINKAGE_GAP` of it in the plane it turns in,
-    shorter than the arm and ending in a bare link: the arm's parallelogram (a desktop arm's,
-    that keeps its tool level) written as an open chain, the loop a URDF cannot close. Merged
-    into the arm, as :func:`closed_arms` merges a five-bar's; two arms of a torso start apart,
-    across the body."""
+    from the arm's first joint but within :data:`_LINKAGE_GAP` of it and less than
+    :data:`_LINKAGE_PLANE` off the plane it turns in, shorter than the arm and ending in a bare
+    link: the arm's parallelogram (a desktop arm's, that keeps its tool level) written as an
+    open chain, the loop a URDF cannot close. Merged into the arm, as :func:`closed_arms`
+    merges a five-bar's; two arms of a torso start apart, across the body."""
     arms = [limb for limb in limbs if limb.kind == "arm"]
     if not 2 <= len(arms) <= _MOST_FIVE_BAR_LEGS:
         return limbs  # a stranger's thousands of chains are not paired one by one
-    known: dict[str, str | None] = {}
-    planar = {id(arm): found for arm in arms if (found := _planar_arm(tree, arm, known))}
-    into: dict[int, Limb] = {}  # the open side's id -> the arm it is merged into
-    for arm in arms:
-        for side in arms:
-            found = planar.get(id(side))
-            if (
-                side is arm
-                or id(side) in into
-                or id(arm) in into
-                or found is None
-                or side.named
-                or len(side.joints) >= len(arm.joints)
-                or _carries(tree, side)
-                or not _open_side(tree, arm, found, known)
-            ):
-                continue
-            into[id(side)] = arm
+    into = _open_sides(tree, arms)
     if not into:
         return limbs
     why = "an arm and its parallelogram, written as an open chain beside it (one arm)"
@@ -1952,32 +1935,62 @@ def open_linkages(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     ]
 
 
+def _open_sides(tree: JointTree, arms: list[Limb]) -> dict[int, Limb]:
+    """Each open side's id, and the arm it is part of (:func:`open_linkages`): the longest arm
+    first, whatever the order of the file, takes the chains beside it; an arm that took one is
+    no other's side, and a side is one arm's."""
+    known: dict[str, str | None] = {}
+    planar = {id(arm): found for arm in arms if (found := _planar_arm(tree, arm, known))}
+    into: dict[int, Limb] = {}
+    taking: set[int] = set()
+    ranked = sorted(arms, key=lambda limb: (-len(limb.joints), limb.joints))
+    for arm in ranked:
+        if id(arm) in into:
+            continue
+        for side in ranked:
+            found = planar.get(id(side))
+            free = side is not arm and id(side) not in into and id(side) not in taking
+            if free and found is not None and _open_side(tree, arm, side, found, known):
+                into[id(side)] = arm
+                taking.add(id(arm))
+    return into
+
+
 def _carries(tree: JointTree, limb: Limb) -> bool:
     """A link hangs below the chain's last joint's (a frame, a tool): it ends in no bare link."""
     last = tree.urdf.joint(limb.joints[-1])
     return last is None or bool(tree.urdf.children(last.child))
 
 
-def _open_side(tree: JointTree, arm: Limb, side: _Planar, known: dict[str, str | None]) -> bool:
-    """``side`` (a planar chain) hangs from the body ``arm`` hangs from and starts apart from
-    it but within :data:`_LINKAGE_GAP`, in the plane its first hinge turns in (about a
-    parallel axis, its start off that plane by less than :data:`_LINKAGE_PLANE`)."""
+def _open_side(
+    tree: JointTree, arm: Limb, side: Limb, planar: _Planar, known: dict[str, str | None]
+) -> bool:
+    """``side`` (a planar chain, ``planar`` read of it), unnamed, shorter than ``arm`` and
+    ending in a bare link, hangs from the body ``arm`` hangs from, turns about an axis parallel
+    to the arm's first hinge's and starts apart from that hinge but within
+    :data:`_LINKAGE_GAP` of it, less than :data:`_LINKAGE_PLANE` off the plane it turns in."""
     first = tree.urdf.joint(arm.joints[0])
-    if first is None or first.type not in ("revolute", "continuous"):
+    if (
+        side.named
+        or len(side.joints) >= len(arm.joints)
+        or _carries(tree, side)
+        or first is None
+        or first.type not in ("revolute", "continuous")
+    ):
         return False
     axis = tree.poses.axis(first)
     start = _start(tree, arm)
-    off = [side.start[k] - start[k] for k in range(3)]
+    off = [planar.start[k] - start[k] for k in range(3)]
     return (
-        moved_by(tree.urdf, arm.base, known) == side.body
-        and parallel(axis, side.axis)
-        and 0 < distance(start, side.start) < _LINKAGE_GAP
+        moved_by(tree.urdf, arm.base, known) == planar.body
+        and parallel(axis, planar.axis)
+        and 0 < distance(start, planar.start) < _LINKAGE_GAP
         and abs(sum(off[k] * axis[k] for k in range(3))) < _LINKAGE_PLANE
     )
 
 
-# How near an arm's first joint a parallelogram's open side starts (metres), and how far off
-# the plane the arm's first hinge turns in.
+# How near an arm's first joint a parallelogram's open side starts (metres, the distance
+# between them), and how far off the plane the arm's first hinge turns in.
 _LINKAGE_GAP = 0.1
 _LINKAGE_PLANE = 0.03
 
@@ -2783,8 +2796,8 @@ def planar_arm(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
     no sensor, or it would be a head) of two limited hinges about parallel level axes as the
     body rests, the second at least :data:`_PLANAR_REACH` from the first: a two-link arm
     swinging in a vertical plane, what the base carries to lift or push (a delivery robot's
-    pair of them). A pan/tilt unit turns about square axes, a flipper's track or a wheel turns
-    for ever, a suspension carries wheels (a mount)."""
+    pair of them; a tracked body's pair are its flippers). A pan/tilt unit turns about square
+    axes, a flipper's track or a wheel turns for ever, a suspension carries wheels (a mount)."""
     if not moves or len(limbs) not in (1, 2) or not all(_two_link(tree, limb) for limb in limbs):
         return limbs
     if len(limbs) == 1:
@@ -2792,7 +2805,7 @@ def planar_arm(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
             "the body's only limb, an unnamed chain of two hinges about parallel level axes "
             "(a two-link arm swinging in a vertical plane) on a body that moves"
         )
-    elif _opposite(tree, limbs):
+    elif _opposite(tree, limbs) and not _tracked(tree):
         why = (
             "one of the body's only two limbs, one on each side of it, each an unnamed chain of "
             "two hinges about parallel level axes (two-link arms) on a body that moves"

@@ -199,6 +199,16 @@ class Poses:
         """Where ``link``'s frame is, in the root's frame (the root's place for a link it lacks)."""
         return self._frames.get(link, (_IDENTITY, (0.0, 0.0, 0.0)))[1]
 
+    def seen_from(self, link: str, place: Vector) -> Vector:
+        """``place`` (in the root's frame) written in ``link``'s frame."""
+        turn = self._frames.get(link, (_IDENTITY, (0.0, 0.0, 0.0)))[0]
+        back = (
+            (turn[0][0], turn[1][0], turn[2][0]),
+            (turn[0][1], turn[1][1], turn[2][1]),
+            (turn[0][2], turn[1][2], turn[2][2]),
+        )  # a turn's inverse is its transpose
+        return _turn(back, minus(place, self.place(link)))
+
     def turned(self, link: str, rpy: Vector, vector: Vector) -> Vector:
         """``vector``, written in a frame turned by ``rpy`` on ``link`` (a visual's), in the
         root's frame."""
@@ -246,7 +256,7 @@ class Poses:
             (turn[0][1], turn[1][1], turn[2][1]),
             (turn[0][2], turn[1][2], turn[2][2]),
         )  # a turn's inverse is its transpose
-        origin = _turn(back, minus(self.place(joint.child), self.place(link)))
+        origin = self.seen_from(link, self.place(joint.child))
         axis = _turn(back, self.axis(joint))
         return replace(joint, parent=link, origin=origin, rpy=(0.0, 0.0, 0.0), axis=axis)
 

@@ -1431,6 +1431,22 @@ def test_unnamed_rotors_of_a_drone_hung_tilted_from_ball_joints_are_read_in_its_
     assert (result.structure, set(result.body.rotors)) == ("UAV", {"s0", "s1", "s2", "s3"})
 
 
+def test_unnamed_rotors_of_a_hung_drone_whose_frame_a_cad_export_turns_are_its_rotors() -> None:
+    # The drone level at rest, but its body turned a quarter about x on the last ball hinge and
+    # its frame link turned back on it (a CAD export's y-up frame): the propellers, upright in
+    # the frame's own axes, are all round it there.
+    robot = RobotText("load")
+    builders.placed(robot, "bx", "continuous", robot.root, "rod", axis="1 0 0")
+    builders.placed(robot, "by", "continuous", "rod", "knot", xyz="0 0 1", axis="0 1 0")
+    builders.placed(robot, "bz", "continuous", "knot", "drone", rpy="1.5708 0 0", axis="0 1 0")
+    builders.placed(robot, "mount", "fixed", "drone", "frame", rpy="-1.5708 0 0")
+    for i, (x, y) in enumerate(((0.08, 0.08), (0.08, -0.08), (-0.08, 0.08), (-0.08, -0.08))):
+        builders.placed(robot, f"s{i}", "continuous", "frame", f"p{i}", xyz=f"{x} {y} 0.06")
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert (result.structure, set(result.body.rotors)) == ("UAV", {"s0", "s1", "s2", "s3"})
+
+
 def test_unnamed_upright_spinners_all_on_one_side_of_a_frame_are_no_rotors() -> None:
     # Three fans off a straight line, all before and left of the frame's origin.
     robot = RobotText("fans")

@@ -1907,6 +1907,11 @@ def test_two_two_link_arms_one_on_each_side_of_a_wheeled_base_are_its_arms() -> 
     result = identify_urdf(lopsided.text())
     assert result.body is not None
     assert "arm" not in [limb.kind for limb in result.body.limbs]
+    # On a tracked body the pair are its flippers.
+    robot.add(builders.model_plugin("tracks", "libSimpleTrackedVehiclePlugin.so"))
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert "arm" not in [limb.kind for limb in result.body.limbs]
 
 
 @pytest.mark.parametrize(
@@ -3165,11 +3170,20 @@ def test_two_arms_apart_or_not_in_one_plane_stay_two_arms(arms: dict[str, Any]) 
     assert result.body.count("arm") == 2
 
 
-def desktop_arm_drawn_open(*, gap: float = 0.05, side_end: bool = False) -> RobotText:
+def desktop_arm_drawn_open(
+    *,
+    gap: float = 0.05,
+    side_end: bool = False,
+    off_plane: float = 0.0,
+    side_axis: str = "0 1 0",
+    side_hinges: int = 3,
+    side_name: str = "p",
+) -> RobotText:
     """A desktop arm on a table, its base turning about z, then three hinges about y and the
-    tool's turn about z; beside the arm's first hinge (``gap`` before it) its parallelogram's
-    other side, three hinges about y ending in a bare link (or, with ``side_end``, in a fixed
-    frame of its own)."""
+    tool's turn about z; beside the arm's first hinge (``gap`` before it, ``off_plane`` across
+    the plane it turns in) its parallelogram's other side, ``side_hinges`` hinges about
+    ``side_axis`` named ``side_name`` and a number, ending in a bare link (or, with
+    ``side_end``, in a fixed frame of its own)."""
     robot = RobotText("desktop", root="table")
     base = builders.placed(robot, "j1", "revolute", "table", "turret", xyz="0 0 0.1")
     link = base
@@ -3180,9 +3194,10 @@ def desktop_arm_drawn_open(*, gap: float = 0.05, side_end: bool = False) -> Robo
     tool = builders.placed(robot, "j5", "revolute", link, "flange", xyz="0.06 0 0")
     robot.fixed(tool, "tool")
     link = base
-    for index, xyz in enumerate((f"{-gap} 0 0.12", "0 0 0.17", "0.07 0 0")):
+    steps = (f"{-gap} {off_plane} 0.12", "0 0 0.17", "0.07 0 0", "0.05 0 0")
+    for index, xyz in enumerate(steps[:side_hinges]):
         link = builders.placed(
-            robot, f"p{index}", "revolute", link, f"rod{index}", xyz=xyz, axis="0 1 0"
+            robot, f"{side_name}{index}", "revolute", link, f"rod{index}", xyz=xyz, axis=side_axis
         )
     if side_end:
         robot.fixed(link, "rod_end")
@@ -3201,14 +3216,44 @@ def test_an_arms_parallelogram_drawn_as_an_open_chain_beside_it_is_part_of_the_a
     [
         {"gap": 0.4},  # starting far from the arm's first hinge: an arm of its own
         {"side_end": True},  # ending in a frame of its own, not in a bare link
+        {"off_plane": 0.06},  # starting off the plane the arm turns in
+        {"side_axis": "1 0 0"},  # turning about another axis than the arm's
+        {"side_hinges": 4},  # as long as the arm
+        {"side_name": "elbow_"},  # named as an arm's
     ],
 )
-def test_a_chain_beside_an_arm_far_from_it_or_carrying_a_frame_stays_an_arm(
+def test_a_chain_beside_an_arm_far_from_it_or_unlike_a_linkage_stays_an_arm(
     drawn: dict[str, Any],
 ) -> None:
     result = identify_urdf(desktop_arm_drawn_open(**drawn).text())
     assert result.body is not None
     assert result.body.count("arm") == 2
+
+
+@pytest.mark.parametrize("order", ["abc", "cab", "bac"])
+def test_chains_each_beside_the_next_are_read_alike_whatever_their_order_in_the_file(
+    order: str,
+) -> None:
+    # Three unnamed planar chains on one turret, of five, four and three hinges, each starting
+    # 6 or 7 cm from the next: the longest takes the next as its parallelogram, the shortest,
+    # 13 cm from the longest, stays an arm of its own; no joint is lost.
+    robot = RobotText("nested", root="table")
+    base = builders.placed(robot, "j0", "revolute", "table", "turret", xyz="0 0 0.1")
+    chains = {"c": (5, 0.0), "a": (4, -0.06), "b": (3, -0.13)}
+    for name in order:
+        hinges, x = chains[name]
+        link = base
+        for index in range(hinges):
+            xyz = f"{x} 0 0.1" if index == 0 else ("0.1 0 0" if index == hinges - 1 else "0 0 0.15")
+            link = builders.placed(
+                robot, f"{name}{index}", "revolute", link, f"{name}_l{index}", xyz=xyz, axis="0 1 0"
+            )
+        if name == "c":
+            robot.fixed(link, "tool")
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    arms = sorted(sorted(limb.joints) for limb in result.body.limbs)
+    assert arms == [["a0", "a1", "a2", "a3", "c0", "c1", "c2", "c3", "c4"], ["b0", "b1", "b2"]]
 
 
 def branching_biped(end: str = "foot") -> RobotText:
