@@ -201,13 +201,17 @@ class Poses:
 
     def seen_from(self, link: str, place: Vector) -> Vector:
         """``place`` (in the root's frame) written in ``link``'s frame."""
+        return _turn(self._back(link), minus(place, self.place(link)))
+
+    def _back(self, link: str) -> _Matrix:
+        """The turn from the root's frame into ``link``'s: its frame's turn's inverse, which is
+        its transpose."""
         turn = self._frames.get(link, (_IDENTITY, (0.0, 0.0, 0.0)))[0]
-        back = (
+        return (
             (turn[0][0], turn[1][0], turn[2][0]),
             (turn[0][1], turn[1][1], turn[2][1]),
             (turn[0][2], turn[1][2], turn[2][2]),
-        )  # a turn's inverse is its transpose
-        return _turn(back, minus(place, self.place(link)))
+        )
 
     def turned(self, link: str, rpy: Vector, vector: Vector) -> Vector:
         """``vector``, written in a frame turned by ``rpy`` on ``link`` (a visual's), in the
@@ -250,14 +254,8 @@ class Poses:
     def hung_from(self, link: str, joint: Joint) -> Joint:
         """``joint`` as if it hung from ``link`` (a link its parent is fixed below): its place
         and its axis written in ``link``'s frame, as two joints on one link are compared."""
-        turn = self._frames.get(link, (_IDENTITY, (0.0, 0.0, 0.0)))[0]
-        back = (
-            (turn[0][0], turn[1][0], turn[2][0]),
-            (turn[0][1], turn[1][1], turn[2][1]),
-            (turn[0][2], turn[1][2], turn[2][2]),
-        )  # a turn's inverse is its transpose
         origin = self.seen_from(link, self.place(joint.child))
-        axis = _turn(back, self.axis(joint))
+        axis = _turn(self._back(link), self.axis(joint))
         return replace(joint, parent=link, origin=origin, rpy=(0.0, 0.0, 0.0), axis=axis)
 
 

@@ -1416,33 +1416,37 @@ def test_limited_leaves_named_as_motors_all_round_a_body_are_its_rotors() -> Non
     assert identify_urdf(revolute_rotors("2", name="motorcycle_").text()).structure != "UAV"
 
 
-def test_unnamed_rotors_of_a_drone_hung_tilted_from_ball_joints_are_read_in_its_frame() -> None:
-    # A load carried by a drone on a rod: a ball joint written as hinges, and the drone on
-    # the rod's end turned a radian about x at rest. Its four unnamed propellers, 6 cm up its
-    # own axis, are all round its own frame but all on one side of it across the ground.
+def _hung_drone(turn: str, *, frame_turn: str = "") -> RobotText:
+    """A load carried by a drone on a rod: a ball joint written as hinges, the drone on the
+    rod's end turned by ``turn`` (and a frame link fixed on it turned by ``frame_turn``), four
+    unnamed propellers 6 cm up the frame's own axis, round its middle."""
     robot = RobotText("load")
     builders.placed(robot, "bx", "continuous", robot.root, "rod", axis="1 0 0")
     builders.placed(robot, "by", "continuous", "rod", "knot", xyz="0 0 1", axis="0 1 0")
-    builders.placed(robot, "bz", "continuous", "knot", "drone", rpy="-1 0 0")
+    builders.placed(robot, "bz", "continuous", "knot", "drone", rpy=turn, axis="0 1 0")
+    frame = "drone"
+    if frame_turn:
+        frame = builders.placed(robot, "mount", "fixed", "drone", "frame", rpy=frame_turn)
     for i, (x, y) in enumerate(((0.08, 0.08), (0.08, -0.08), (-0.08, 0.08), (-0.08, -0.08))):
-        builders.placed(robot, f"s{i}", "continuous", "drone", f"p{i}", xyz=f"{x} {y} 0.06")
-    result = identify_urdf(robot.text())
-    assert result.body is not None
-    assert (result.structure, set(result.body.rotors)) == ("UAV", {"s0", "s1", "s2", "s3"})
+        builders.placed(robot, f"s{i}", "continuous", frame, f"p{i}", xyz=f"{x} {y} 0.06")
+    return robot
 
 
-def test_unnamed_rotors_of_a_hung_drone_whose_frame_a_cad_export_turns_are_its_rotors() -> None:
-    # The drone level at rest, but its body turned a quarter about x on the last ball hinge and
-    # its frame link turned back on it (a CAD export's y-up frame): the propellers, upright in
-    # the frame's own axes, are all round it there.
-    robot = RobotText("load")
-    builders.placed(robot, "bx", "continuous", robot.root, "rod", axis="1 0 0")
-    builders.placed(robot, "by", "continuous", "rod", "knot", xyz="0 0 1", axis="0 1 0")
-    builders.placed(robot, "bz", "continuous", "knot", "drone", rpy="1.5708 0 0", axis="0 1 0")
-    builders.placed(robot, "mount", "fixed", "drone", "frame", rpy="-1.5708 0 0")
-    for i, (x, y) in enumerate(((0.08, 0.08), (0.08, -0.08), (-0.08, 0.08), (-0.08, -0.08))):
-        builders.placed(robot, f"s{i}", "continuous", "frame", f"p{i}", xyz=f"{x} {y} 0.06")
-    result = identify_urdf(robot.text())
+@pytest.mark.parametrize(
+    "hung",
+    [
+        # Turned a radian about x at rest: the propellers, all round the drone's own frame,
+        # lie all on one side of it across the ground.
+        {"turn": "-1 0 0"},
+        # Level at rest, but the body turned a quarter and its frame link turned back on it
+        # (a CAD export's y-up frame): upright in the frame's own axes, all round it there.
+        {"turn": "1.5708 0 0", "frame_turn": "-1.5708 0 0"},
+    ],
+)
+def test_unnamed_rotors_of_a_drone_hung_from_ball_joints_are_read_in_its_frames_axes(
+    hung: dict[str, str],
+) -> None:
+    result = identify_urdf(_hung_drone(**hung).text())
     assert result.body is not None
     assert (result.structure, set(result.body.rotors)) == ("UAV", {"s0", "s1", "s2", "s3"})
 

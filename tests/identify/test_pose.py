@@ -56,6 +56,17 @@ def test_a_joint_hung_from_a_body_above_it_is_written_in_that_bodys_frame() -> N
     assert hung.axis == pytest.approx((0.0, 0.0, 1.0), abs=1e-9)
 
 
+def test_a_place_is_written_in_a_turned_links_frame() -> None:
+    # A link 1 m up, turned a quarter about z: a place 1 m along the root's y beside it is 1 m
+    # along the link's x, and its own origin is its frame's.
+    robot = RobotText("seen", root="base")
+    quarter = math.pi / 2
+    builders.placed(robot, "t", "fixed", "base", "top", xyz="0 0 1", rpy=f"0 0 {quarter}")
+    poses = poses_of(robot)
+    assert poses.seen_from("top", (0.0, 1.0, 1.0)) == pytest.approx((1.0, 0.0, 0.0), abs=1e-9)
+    assert poses.seen_from("top", poses.place("top")) == pytest.approx((0.0, 0.0, 0.0))
+
+
 def test_roll_pitch_yaw_is_urdfs_fixed_axis_order() -> None:
     # Roll 90 then yaw 90 (about the fixed axes): x stays along the yawed x, z goes to x.
     robot = RobotText("rpy", root="a")
