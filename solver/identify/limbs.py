@@ -1980,12 +1980,11 @@ def _open_side(
         return False
     axis = tree.poses.axis(first)
     start = _start(tree, arm)
-    off = [planar.start[k] - start[k] for k in range(3)]
     return (
         moved_by(tree.urdf, arm.base, known) == planar.body
         and parallel(axis, planar.axis)
         and 0 < distance(start, planar.start) < _LINKAGE_GAP
-        and abs(sum(off[k] * axis[k] for k in range(3))) < _LINKAGE_PLANE
+        and abs(dot(minus(planar.start, start), axis)) < _LINKAGE_PLANE
     )
 
 

@@ -1863,47 +1863,29 @@ def test_two_hinges_about_parallel_level_axes_on_a_wheeled_base_are_its_arm() ->
     assert "two-link arm" in result.body.limbs[0].why
 
 
+def base_with_two_link_pair(*starts: str) -> RobotText:
+    """A wheeled base carrying unnamed chains of two hinges about y, one starting at each of
+    ``starts``, the second hinge 0.2 m above the first."""
+    robot = builders.ugv()
+    for side, xyz in zip("ab", starts, strict=True):
+        link = builders.placed(
+            robot, f"{side}1", "revolute", robot.root, f"{side}_l1", xyz=xyz, axis="0 1 0"
+        )
+        builders.placed(
+            robot, f"{side}2", "revolute", link, f"{side}_l2", xyz="0 0 0.2", axis="0 1 0"
+        )
+    return robot
+
+
 def test_two_two_link_arms_one_on_each_side_of_a_wheeled_base_are_its_arms() -> None:
     # A delivery base's two arms on its front corners, each two hinges about y, unnamed.
-    robot = builders.ugv()
-    for side, y in (("a", 0.2), ("b", -0.2)):
-        builders.placed(
-            robot,
-            f"{side}1",
-            "revolute",
-            robot.root,
-            f"{side}_l1",
-            xyz=f"0.3 {y} 0.2",
-            axis="0 1 0",
-        )
-        builders.placed(
-            robot, f"{side}2", "revolute", f"{side}_l1", f"{side}_l2", xyz="0 0 0.2", axis="0 1 0"
-        )
+    robot = base_with_two_link_pair("0.3 0.2 0.2", "0.3 -0.2 0.2")
     result = identify_urdf(robot.text())
     assert result.structure == "Mobile Manipulator"
     assert result.body is not None
     assert [limb.kind for limb in result.body.limbs] == ["arm", "arm"]
     # Both on one side of the base: no pair of arms (a mast's hinges, a boom's).
-    lopsided = builders.ugv()
-    for side, x in (("a", 0.3), ("b", -0.3)):
-        builders.placed(
-            lopsided,
-            f"{side}1",
-            "revolute",
-            lopsided.root,
-            f"{side}_l1",
-            xyz=f"{x} 0.2 0.2",
-            axis="0 1 0",
-        )
-        builders.placed(
-            lopsided,
-            f"{side}2",
-            "revolute",
-            f"{side}_l1",
-            f"{side}_l2",
-            xyz="0 0 0.2",
-            axis="0 1 0",
-        )
+    lopsided = base_with_two_link_pair("0.3 0.2 0.2", "-0.3 0.2 0.2")
     result = identify_urdf(lopsided.text())
     assert result.body is not None
     assert "arm" not in [limb.kind for limb in result.body.limbs]
