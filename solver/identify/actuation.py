@@ -85,6 +85,9 @@ _ON_AXLE_PER_OFF = 3
 # How far (metres) a wheel's mass centre may lie off its axle (a CAD export's rounding); the
 # whole-turning legs of the sets' wheel-leg walkers hang theirs 5 to 12 cm out.
 _ON_THE_AXLE = 0.005
+# A swing arm carries its wheel at least this far (metres) from its hinge's line (a flipper's
+# motor turning on the flipper's own axis is no wheel it swings).
+_SWING_ARM = 0.02
 # The most endless joints above an unnamed wheel that hangs alone from its link (a caster's
 # swivel; a rover's rocker, bogie and steering): below more, the endless leaf ends a limb drawn
 # without limits (an arm's wrist that turns for ever), no wheel. Limited, sliding, planar and
@@ -471,6 +474,29 @@ def _hangs_freely(
     return _lifter(tree, leaf.parent, rolls, known, rockers) is None
 
 
+def _on_a_swing_arm(tree: JointTree, leaf: Joint, known: dict[str, str | None]) -> bool:
+    """``leaf`` turns about a level axle, carrying its mass on it (:func:`_balanced`, or drawn
+    round it where the file leaves its mass out), and hangs from the body by one hinge about
+    an axis parallel to it, away from its line (:data:`_SWING_ARM`), nothing moving above that
+    hinge: a wheel on a swing arm that lifts it (a rover's leg raising a corner, a
+    wheel-legged base's single-joint leg). A walker's
+    knee turning for ever carries its shank and foot off its axis; one hinge makes no leg to
+    walk on (``known``: the walk's memo)."""
+    axle = tree.poses.axis(leaf)
+    above = moved_by(tree.urdf, leaf.parent, known)
+    arm = tree.urdf.joint(above) if above is not None else None
+    return (
+        arm is not None
+        and _turns(arm)
+        and _axle(axle)
+        and parallel(tree.poses.axis(arm), axle)
+        and moved_by(tree.urdf, arm.parent, known) is None
+        and off_axis(minus(tree.poses.place(leaf.child), tree.poses.place(arm.child)), axle)
+        > _SWING_ARM
+        and (_balance(tree, leaf) or (_balance(tree, leaf) is None and _drawn_round(tree, leaf)))
+    )
+
+
 def _lifter(
     tree: JointTree,
     link: str,
@@ -736,10 +762,12 @@ def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, str
     known: dict[bool, dict[str, str | None]] = {}
     endless: dict[str, str | None] = {}  # link -> the nearest endless joint above it
     rockers = _rockers(tree, apart)
+    swung: dict[str, str | None] = {}  # link -> the nearest movable joint above it
     apart = [
         j
         for j in apart
-        if _hangs_freely(tree, j, known, rockers) and _few_endless_above(tree, j, endless)
+        if (_hangs_freely(tree, j, known, rockers) or _on_a_swing_arm(tree, j, swung))
+        and _few_endless_above(tree, j, endless)
     ]
     branching = _branching_links(tree)  # links that carry more than one moving part
     apart = _wrists_dropped(tree, apart, branching)
@@ -1427,7 +1455,7 @@ def _rotor_carrier(
     that turns above it (a motor mount written about its shaft): such a mount carries the
     rotor where the body does (``known`` and ``turning``: the walks' memos)."""
     carrier = moved_by(tree.urdf, joint.parent, known)
-    mount = _shaft_mount(tree, joint, turning)
+    mount = _shaft_mount(tree, joint, turning) or _tilt_mount(tree, joint, turning)
     if mount is not None and mount.name == carrier:
         return moved_by(tree.urdf, mount.parent, known)
     return carrier
@@ -1443,6 +1471,23 @@ def _shaft_mount(tree: JointTree, joint: Joint, turning: dict[str, str | None]) 
     if (
         mount is not None
         and parallel(tree.poses.axis(mount), tree.poses.axis(joint))
+        and nearest_above(tree.urdf, mount.parent, turning, _turns) is None
+    ):
+        return mount
+    return None
+
+
+def _tilt_mount(tree: JointTree, joint: Joint, turning: dict[str, str | None]) -> Joint | None:
+    """The one joint that turns above ``joint`` when it tilts it about a level axis square to
+    its shaft, the shaft upright at rest, and nothing turns above it (a tilt-rotor's servo,
+    one under each propeller: tilting it turns the thrust, the propeller stays on the body's
+    frame where it was); else None (``turning``: the walks' memo)."""
+    above = nearest_above(tree.urdf, joint.parent, turning, _turns)
+    mount = tree.urdf.joint(above) if above is not None else None
+    if (
+        mount is not None
+        and _upright(tree.poses.axis(joint))
+        and _axle(tree.poses.axis(mount))
         and nearest_above(tree.urdf, mount.parent, turning, _turns) is None
     ):
         return mount

@@ -110,6 +110,9 @@ _WALKING_LEGS = 2
 
 # The media the robot's packages may put a body in that are water (solver.identify.shipped).
 _WATER = ("underwater", "surface")
+# A leg of this many movable joints or more is a serial leg (the profile's ``serial_legs``):
+# no half of a five-bar leg drawn open, which is a chain of two.
+_SERIAL_LEG_JOINTS = 3
 
 
 @dataclass(frozen=True)
@@ -317,6 +320,11 @@ class Body:
             "arms": self.count("arm"),
             "tools": self.count("arm") + int(bool(self.rigid_tool)),
             "legs": self.count("leg"),
+            "serial_legs": sum(
+                1
+                for limb in self.limbs
+                if limb.kind == "leg" and len(limb.joints) >= _SERIAL_LEG_JOINTS
+            ),
             "heads": self.count("head"),
             "fingers": len(self.fingers),
             "grippers": self.grippers,

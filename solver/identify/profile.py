@@ -104,6 +104,7 @@ FEATURES = (
     "arms",
     "tools",
     "legs",
+    "serial_legs",
     "heads",
     "fingers",
     "grippers",
@@ -126,6 +127,7 @@ FEATURES = (
     "head_alone",
 )
 # tools: arms, and a flying body's rigid tool (a link the `tool` pattern names, on fixed joints).
+# serial_legs: legs of three movable joints or more (half of a five-bar leg drawn open is none).
 # thrusters / fins / casters: joints (or plugin-named links) in those roles; finger_motions: the
 # finger joints that move on their own (not mimic); marine: a body in water (thrusters, marine
 # plugins); surface: floating at the surface (a hull's buoyancy hints, a surface plugin);
@@ -453,11 +455,14 @@ class SoftwareRule:
     (a walker's gait, a flown body's flight controller, a velocity command, a teleop);
     ``controllers``, joint controllers configured; ``per_joint`` (optional), a controller of
     a joint's own (ROS 1's ``JointPositionController``: a command topic for that joint),
-    which takes commands for the joint whatever software ships beside it."""
+    which takes commands for the joint whatever software ships beside it; ``named``
+    (optional), the software as a file's name says it (``normal_walk.py``), in words no
+    abbreviation of another thing can be."""
 
     shipped: Pattern
     controllers: Pattern
     per_joint: Pattern | None = None
+    named: Pattern | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -1037,13 +1042,16 @@ def _software(reader: Reader, key: str) -> SoftwareRule | None:
     spec = reader.mapping(path, key, required=False)
     if not spec:
         return None
-    reader.unknown_keys(path, spec, {"shipped", "controllers", "per_joint"}, f"{key} field")
+    reader.unknown_keys(
+        path, spec, {"shipped", "controllers", "per_joint", "named"}, f"{key} field"
+    )
     shipped = _pattern(reader, (*path, "shipped"))
     controllers = _pattern(reader, (*path, "controllers"))
     if shipped is None or controllers is None:
         return None
     per_joint = _pattern(reader, (*path, "per_joint"), required=False)
-    return SoftwareRule(shipped, controllers, per_joint)
+    named = _pattern(reader, (*path, "named"), required=False)
+    return SoftwareRule(shipped, controllers, per_joint, named)
 
 
 def _navigation(

@@ -14,7 +14,7 @@ first).
 The same texts tell a body's own software from its joint controllers: packages read whole
 with a file that configures joint controllers naming a joint of its legs, shipping no gait (no
 walking software, velocity command, teleop or joystick) beside a workspace with no package
-named for one, command its joints one by one, and no gait is guessed for its legs; a flown
+or file named for one, command its joints one by one, and no gait is guessed for its legs; a flown
 body's packages that so name its rotors (by their names after a namespace) and ship no flight
 software (an attitude controller, a flight stack, a teleop) command its rotors one by one, and
 no flight is guessed (:func:`joint_controllers`, with the profile's ``motion.gait`` or
@@ -167,10 +167,15 @@ def joint_controllers(
     words = {tail for name in joints if _WORD.fullmatch(tail := name.rsplit("/", 1)[-1])}
     if rule is None or not words or not workspace.complete:
         return None
-    if _first_found(workspace, rule.shipped) or any(
-        rule.shipped.find(name) is not None for name in (*workspace.packages, *workspace.neighbours)
+    if (
+        _first_found(workspace, rule.shipped)
+        or any(
+            rule.shipped.find(name) is not None
+            for name in (*workspace.packages, *workspace.neighbours)
+        )
+        or (rule.named is not None and _a_file_named(workspace, rule.named))
     ):
-        return None  # software its packages ship, or a package of the workspace named for it
+        return None  # software its packages ship, or a package or file named for it
     for shipped in workspace.files:
         matched = rule.controllers.find(shipped.text)
         if matched is not None and named_joints(replace(workspace, files=(shipped,)), words):
@@ -179,6 +184,13 @@ def joint_controllers(
         if topic is not None:
             return _shown_file(shipped.package, shipped.path, topic)
     return None
+
+
+def _a_file_named(workspace: Workspace, named: Pattern) -> bool:
+    """A file of the packages is named for the software (``named``), its folders left out: a
+    script named for a gait (``normal_walk.py``, replaying recorded joint angles) is one,
+    whatever its text says."""
+    return any(named.search(shipped.path.rsplit("/", 1)[-1]) for shipped in workspace.files)
 
 
 def controller_joints(

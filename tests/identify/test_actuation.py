@@ -203,6 +203,32 @@ def test_a_cad_exports_blank_wheels_are_told_by_sides_of_the_bodys_mass_centre()
     assert identify_urdf(_with_masses(robot.text(), wheels)).structure != "UGV"
 
 
+def _swing_legs(wheel_centre: str) -> str:
+    """A body with a hinge about a level axis at each corner, driven, carrying an unnamed
+    endless leaf about a parallel axle 15 cm below it, the leaf's mass at ``wheel_centre``
+    in its own frame."""
+    robot = RobotText("rover")
+    centres = {"base_link": "0 0 0"}
+    for i, (x, y) in enumerate(((0.12, 0.14), (0.12, -0.14), (-0.12, 0.14), (-0.12, -0.14))):
+        arm = builders.placed(
+            robot, f"h{i}", "revolute", robot.root, f"a{i}", xyz=f"{x} {y} -0.05", axis="0 1 0"
+        )
+        builders.placed(robot, f"w{i}", "continuous", arm, f"b{i}", xyz="0 0 -0.15", axis="0 1 0")
+        robot.add(builders.transmission(f"h{i}"))
+        centres[f"b{i}"] = wheel_centre
+    return _with_masses(robot.text(), centres)
+
+
+def test_balanced_leaves_each_on_a_driven_hinge_about_a_parallel_axis_ride_on_swing_arms() -> None:
+    # A rover whose corners are legs of one hinge raising a wheel, nothing named: the wheels
+    # carry their mass on their axles, and one hinge makes no leg to walk on.
+    result = identify_urdf(_swing_legs("0 0 0"))
+    assert result.body is not None
+    assert (result.structure, result.body.wheels) == ("UGV", ("w0", "w1", "w2", "w3"))
+    # A walker's knee that turns for ever carries its shank and foot off its axis: legs.
+    assert identify_urdf(_swing_legs("0 0 -0.08")).structure == "Quadruped"
+
+
 def whole_turn_export(*, arm_bounds: str = 'lower="-3.14159" upper="3.14159"') -> str:
     """An export that bounds every joint +-pi: four unnamed leaves at a base's corners, axles
     across it, each turning a part balanced on its axle, and a three-joint arm on top (bounded
@@ -1320,6 +1346,38 @@ def test_unnamed_rotors_on_mounts_swivelling_about_their_shafts_are_rotors_not_w
     result = identify_urdf(robot.text())
     assert result.body is not None
     assert (result.structure, len(result.body.rotors), result.body.wheels) == ("UAV", 6, ())
+
+
+def test_unnamed_rotors_each_on_a_servo_tilting_it_about_its_arm_are_all_round_one_body() -> None:
+    # A tilt-rotor: each propeller spins about an upright shaft on a servo that tilts it about
+    # its arm's level line, one servo under each, nothing named; the servos carry the
+    # propellers where the frame does, so they are rotors all round it, not four folded legs.
+    robot = RobotText("r")
+    for i, (x, y) in enumerate(((0.18, 0.18), (-0.18, 0.18), (-0.18, -0.18), (0.18, -0.18))):
+        arm = builders.placed(
+            robot,
+            f"a{i}",
+            "fixed",
+            robot.root,
+            f"arm{i}",
+            xyz=f"{x} {y} 0.02",
+            rpy=f"0 0 {math.atan2(y, x)}",
+        )
+        servo = builders.placed(robot, f"t{i}", "revolute", arm, f"servo{i}", axis="1 0 0")
+        builders.placed(robot, f"s{i}", "continuous", servo, f"p{i}", xyz="0.02 0 0")
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert (result.structure, len(result.body.rotors)) == ("UAV", 4)
+    # A servo with a hip turning above it is a leg's knee, no tilt-rotor's servo: four legs
+    # whose knees tilt a spinning foot each are no rotors all round the body.
+    legs = RobotText("legs")
+    for i, (x, y) in enumerate(((0.18, 0.18), (-0.18, 0.18), (-0.18, -0.18), (0.18, -0.18))):
+        hip = builders.placed(
+            legs, f"h{i}", "revolute", legs.root, f"hip{i}", xyz=f"{x} {y} 0.02", axis="0 0 1"
+        )
+        knee = builders.placed(legs, f"k{i}", "revolute", hip, f"knee{i}", axis="1 0 0")
+        builders.placed(legs, f"s{i}", "continuous", knee, f"p{i}", xyz="0.02 0 0")
+    assert identify_urdf(legs.text()).structure != "UAV"
 
 
 def test_unnamed_rotors_each_on_an_arm_fixed_to_the_frame_are_all_round_one_body() -> None:

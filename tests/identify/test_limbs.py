@@ -181,6 +181,28 @@ def test_four_alike_unnamed_chains_ending_below_the_body_are_a_quadrupeds_legs()
     assert identify_urdf(builders.walker(4).text()).structure == "Quadruped"
 
 
+def test_eight_serial_legs_make_no_quadruped_and_eight_two_joint_chains_may() -> None:
+    # An octopod's eight legs of three joints each are no four five-bar legs drawn open: no
+    # structure of the profile names eight legs.
+    assert identify_urdf(builders.walker(8).text()).structure == "Other"
+    # Eight chains of two joints (motor and knee) are the halves of four five-bar legs whose
+    # loops the file leaves open: a quadruped.
+    halves = five_bar_legs(close="open")
+    for corner, x, y in (("rear_left", -0.2, 0.1), ("rear_right", -0.2, -0.1)):
+        for half, dy in (("a", -0.02), ("b", 0.02)):
+            motor = builders.placed(
+                halves, f"{corner}_{half}_motor", "revolute", halves.root,
+                f"{corner}_{half}_motor_link", xyz=f"{x} {y + dy} 0", axis="0 1 0",
+            )  # fmt: skip
+            builders.placed(
+                halves, f"{corner}_{half}_knee", "revolute", motor, f"{corner}_{half}_knee_link",
+                xyz="0 0 -0.1", axis="0 1 0",
+            )  # fmt: skip
+    result = identify_urdf(halves.text())
+    assert result.body is not None
+    assert (result.structure, result.body.count("leg")) == ("Quadruped", 8)
+
+
 @pytest.mark.parametrize("joints", [5, 6])
 def test_six_alike_unnamed_chains_of_five_or_six_joints_below_the_body_are_a_hexapods_legs(
     joints: int,

@@ -33,7 +33,9 @@ def with_wheel(pattern: str) -> str:
 def test_every_problem_of_a_profile_is_reported_with_its_location() -> None:
     text = (
         with_wheel("'(unclosed'")
-        .replace("when: {legs: {min: 4}, arms: 0}", "when: {paws: 4, arms: 0}")
+        .replace(
+            "when: {legs: {min: 4}, serial_legs: {max: 7}, arms: 0}", "when: {paws: 4, arms: 0}"
+        )
         .replace("doubt_factor: 0.8", "doubt_factor: 3")
         .replace(
             "{kind: imu, types: [sensor_msgs/Imu]}",

@@ -312,6 +312,8 @@ def test_ik_in_other_words_alone_in_lower_case_or_a_jacobian_only_computed_shows
         "dobot.MovL(x, y, z, r)",  # a maker's linear move
         "mc.send_coords([x, y, z, rx, ry, rz], 30, 0)",  # pymycobot's Cartesian move
         "mc.sync_send_coords(coords, 20)",
+        "'set_servo_move': ('/xarm/set_position', MoveCartesian)",  # xArm's Cartesian move
+        "arm.set_servo_cartesian(mvpose)",
         "MoveLinear.srv",
         "pub = rospy.Publisher('/ee_target', PoseStamped)",
         "goal = end_effector_goal(x)",
@@ -1209,6 +1211,21 @@ def test_a_walker_whose_packages_ship_a_gait_is_still_walked(tmp_path: Path, gai
     found = controls_of(described(tmp_path, quadruped(), f"{JOINT_CONTROLLERS}\n{gait}"))
     assert "Walking" in found
     assert "Joint" not in found
+
+
+def test_a_script_named_for_a_gait_is_one_whatever_its_text_says(tmp_path: Path) -> None:
+    # A script replaying recorded joint angles through the legs' controllers, its text
+    # naming no gait, its file's name one.
+    path = described(tmp_path, quadruped(), JOINT_CONTROLLERS)
+    scripts = path.parents[2] / "craft_bringup" / "scripts"
+    scripts.mkdir()
+    (scripts / "normal_walk.py").write_text("angles = load('joint_angle_1.npy')\n")
+    assert "Walking" in controls_of(path)
+    # A folder's name is not the file's: a plain script in a folder named for a gait says
+    # nothing.
+    (scripts / "normal_walk.py").rename(scripts / "replay.py")
+    scripts.rename(scripts.parent / "walking")
+    assert set(controls_of(path)) == {"Joint"}
 
 
 @pytest.mark.parametrize(
