@@ -121,6 +121,9 @@ _FOOT_JOINT = re.compile(r"ankle|toe", re.IGNORECASE)
 _FEWEST_UNNAMED_ROTORS = 3
 # ... and from this many when they are all on one upright line (a coaxial helicopter's).
 _COAXIAL_ROTORS = 2
+# On a wheeled body, an unnamed upright spinner no higher than this (metres) above its highest
+# wheel axle is a caster's swivel drawn without its wheel, no rotor.
+_CASTER_RISE = 0.05
 # Spinning leaves spaced round their own middle (:func:`_ring`): their distances from it, and
 # their heights, differ by at most this share of the mean distance.
 _RING_TOLERANCE = 0.1
@@ -1352,7 +1355,9 @@ def _unnamed_rotors(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     wheeled = any(role.role == "wheel" for role in roles.values())
     known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
     turning: dict[str, str | None] = {}  # link -> the nearest joint above it that turns
-    spinning = (*_unnamed_spinners(tree, taken), *_motor_leaves(tree, taken))
+    spinning = _above_the_axles(
+        tree, roles, (*_unnamed_spinners(tree, taken), *_motor_leaves(tree, taken))
+    )
     around = _upright_by_carrier(tree, spinning, known, turning)
     seen = taken | {joint.name for joints in around.values() for joint in joints}
     whole_turns = _upright_by_carrier(tree, _whole_turn_leaves(tree, seen), known, turning)
@@ -1369,6 +1374,23 @@ def _unnamed_rotors(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
         for joint in joints
     ]
     return found
+
+
+def _above_the_axles(
+    tree: JointTree, roles: Mapping[str, Role], leaves: Iterable[Joint]
+) -> list[Joint]:
+    """``leaves`` but, on a body with wheels, those no higher than :data:`_CASTER_RISE` above
+    its highest wheel axle: casters' swivels drawn without their wheels turn there; a wheeled
+    drone's rotors sit above its wheels."""
+    axles = [
+        tree.poses.place(joint.child)[_Z_AXIS]
+        for name, role in roles.items()
+        if role.role == "wheel" and (joint := tree.urdf.joint(name)) is not None
+    ]
+    if not axles:
+        return list(leaves)
+    top = max(axles) + _CASTER_RISE
+    return [leaf for leaf in leaves if tree.poses.place(leaf.child)[_Z_AXIS] > top]
 
 
 def _upright_by_carrier(

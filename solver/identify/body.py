@@ -318,7 +318,7 @@ class Body:
             "tracks": len(self.tracks),
             "rotors": len(self.rotors),
             "arms": self.count("arm"),
-            "tools": self.count("arm") + int(bool(self.rigid_tool)),
+            "tools": self.count("arm") + int(bool(self.rigid_tool) or self.grippers > 0),
             "legs": self.count("leg"),
             "serial_legs": sum(
                 1

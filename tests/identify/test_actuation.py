@@ -1293,6 +1293,31 @@ def test_unnamed_endless_leaves_on_upright_axes_all_round_a_body_are_its_rotors(
     assert identify_urdf(row.text()).structure != "UAV"
 
 
+def _wheels_and_spinners(height: float) -> str:
+    """Two wheels a drive plugin names, axles 5 cm up, and four unnamed endless leaves about
+    upright axes all round the body at ``height``."""
+    robot = RobotText("r")
+    for side, y in (("l", 0.1), ("r", -0.1)):
+        builders.placed(
+            robot, f"{side}_motor", "continuous", robot.root, f"{side}_disc", xyz=f"0 {y} 0.05",
+            axis="0 1 0",
+        )  # fmt: skip
+    params = "<leftJoint>l_motor</leftJoint><rightJoint>r_motor</rightJoint>"
+    robot.add(builders.model_plugin("drive", "libgazebo_ros_diff_drive.so", params))
+    for i, (x, y) in enumerate(((0.15, 0.1), (0.15, -0.1), (-0.15, 0.1), (-0.15, -0.1))):
+        builders.placed(robot, f"s{i}", "continuous", robot.root, f"p{i}", xyz=f"{x} {y} {height}")
+    return robot.text()
+
+
+def test_unnamed_spinners_at_a_wheeled_bodys_axles_are_casters_and_above_them_rotors() -> None:
+    # Casters' swivels drawn without their wheels turn at about the axles' height: no rotors.
+    result = identify_urdf(_wheels_and_spinners(0.06))
+    assert result.body is not None
+    assert (result.structure, result.body.rotors) == ("UGV", ())
+    # A wheeled drone's propellers turn well above its wheels.
+    assert identify_urdf(_wheels_and_spinners(0.2)).structure == "UAV"
+
+
 def test_two_unnamed_endless_leaves_on_one_upright_line_are_a_coaxial_helicopters_rotors() -> None:
     # Contra-rotating rotors, one above the other on the body's mast; four landing legs that
     # fold about level axes beside them, and nothing named.

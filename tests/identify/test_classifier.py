@@ -185,6 +185,21 @@ def test_a_multirotor_holding_a_gripper_on_a_rigid_boom_is_an_aerial_manipulator
     assert not any("rigid tool" in line for line in result.evidence)
 
 
+def test_a_multirotor_carrying_a_gripper_with_no_arm_is_an_aerial_manipulator() -> None:
+    # A two-finger gripper on a slide that lowers it from the body: no arm, a gripper.
+    drone = builders.quadrotor()
+    palm = drone.chain(drone.root, ["palm_riser"], kind="prismatic")
+    for side in ("left", "right"):
+        drone.chain(palm, [f"{side}_finger_joint"])
+    result = identify_urdf(drone.text())
+    assert result.body is not None
+    assert (result.structure, result.body.count("arm"), result.body.grippers) == (
+        "Aerial Manipulator",
+        0,
+        1,
+    )
+
+
 @pytest.mark.parametrize(
     "name",
     ["hand_launch", "palm", "jaw", "tool0", "tcp", "ee", "camera_tool_frame",
