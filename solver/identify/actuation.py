@@ -121,9 +121,6 @@ _FOOT_JOINT = re.compile(r"ankle|toe", re.IGNORECASE)
 _FEWEST_UNNAMED_ROTORS = 3
 # ... and from this many when they are all on one upright line (a coaxial helicopter's).
 _COAXIAL_ROTORS = 2
-# On a wheeled body, an unnamed upright spinner no higher than this (metres) above its highest
-# wheel axle is a caster's swivel drawn without its wheel, no rotor.
-_CASTER_RISE = 0.05
 # Spinning leaves spaced round their own middle (:func:`_ring`): their distances from it, and
 # their heights, differ by at most this share of the mean distance.
 _RING_TOLERANCE = 0.1
@@ -478,13 +475,14 @@ def _hangs_freely(
 
 
 def _on_a_swing_arm(tree: JointTree, leaf: Joint, known: dict[str, str | None]) -> bool:
-    """``leaf`` turns about a level axle, carrying its mass on it (:func:`_balanced`, or drawn
-    round it where the file leaves its mass out), and hangs from the body by one hinge about
-    an axis parallel to it, away from its line (:data:`_SWING_ARM`), nothing moving above that
-    hinge: a wheel on a swing arm that lifts it (a rover's leg raising a corner, a
-    wheel-legged base's single-joint leg). A walker's
-    knee turning for ever carries its shank and foot off its axis; one hinge makes no leg to
-    walk on (``known``: the walk's memo)."""
+    """``leaf`` turns about a level axle, drawn round it (:func:`_drawn_round`: a cylinder
+    about the axle, centred on it) and not known to hang its mass off it (:func:`_balance`),
+    and hangs from the body by one hinge about an axis parallel to it, more than
+    :data:`_SWING_ARM` from its line, nothing moving above that hinge but a joint placing the
+    whole body (:func:`_places_the_body`): a wheel on a swing arm that lifts it (a rover's
+    leg raising a corner, a wheel-legged base's single-joint leg). A walker's knee turning for
+    ever is drawn along its shank, not round its axis, and one hinge makes no leg to walk on
+    (``known``: the walk's memo)."""
     axle = tree.poses.axis(leaf)
     above = moved_by(tree.urdf, leaf.parent, known)
     arm = tree.urdf.joint(above) if above is not None else None
@@ -493,10 +491,11 @@ def _on_a_swing_arm(tree: JointTree, leaf: Joint, known: dict[str, str | None]) 
         and _turns(arm)
         and _axle(axle)
         and parallel(tree.poses.axis(arm), axle)
-        and moved_by(tree.urdf, arm.parent, known) is None
+        and _places_the_body(tree, moved_by(tree.urdf, arm.parent, known))
         and off_axis(minus(tree.poses.place(leaf.child), tree.poses.place(arm.child)), axle)
         > _SWING_ARM
-        and (_balance(tree, leaf) or (_balance(tree, leaf) is None and _drawn_round(tree, leaf)))
+        and _drawn_round(tree, leaf)
+        and _balance(tree, leaf) is not False
     )
 
 
@@ -755,10 +754,10 @@ def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, str
         if len(joints) < _WHEEL_LEGS or driven or _mostly_balanced(tree, joints):
             below.setdefault(link, []).extend(joints)  # road wheels, not legs
     found, apart = _told_on_their_link(tree, below)
-    # One on a caster's swivel or a steering knuckle, two on a rocker: sides told across the
-    # whole body instead, for those that hang from the body through no driven joint but a
-    # steering one or a rocker (a driven flipper's sprocket is the flipper's), and few that
-    # turn for ever
+    # One on a caster's swivel or a steering knuckle, two on a rocker, one on a swing arm:
+    # sides told across the whole body instead, for those that hang from the body through no
+    # driven joint but a steering one or a rocker (a driven flipper's sprocket is the
+    # flipper's), or on a swing arm (:func:`_on_a_swing_arm`), and few that turn for ever
     # (:func:`_few_endless_above`: the last joints of two arms drawn without limits are no
     # wheels).
     # By whether a leaf's axle is level at rest: link -> the nearest driven joint above it.
@@ -1355,12 +1354,13 @@ def _unnamed_rotors(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     wheeled = any(role.role == "wheel" for role in roles.values())
     known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
     turning: dict[str, str | None] = {}  # link -> the nearest joint above it that turns
-    spinning = _above_the_axles(
-        tree, roles, (*_unnamed_spinners(tree, taken), *_motor_leaves(tree, taken))
+    spinning = _no_casters(
+        tree, wheeled, (*_unnamed_spinners(tree, taken), *_motor_leaves(tree, taken))
     )
     around = _upright_by_carrier(tree, spinning, known, turning)
     seen = taken | {joint.name for joints in around.values() for joint in joints}
-    whole_turns = _upright_by_carrier(tree, _whole_turn_leaves(tree, seen), known, turning)
+    whole = _no_casters(tree, wheeled, _whole_turn_leaves(tree, seen))
+    whole_turns = _upright_by_carrier(tree, whole, known, turning)
     found = [
         joint.name
         for carrier, joints in around.items()
@@ -1376,21 +1376,12 @@ def _unnamed_rotors(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     return found
 
 
-def _above_the_axles(
-    tree: JointTree, roles: Mapping[str, Role], leaves: Iterable[Joint]
-) -> list[Joint]:
-    """``leaves`` but, on a body with wheels, those no higher than :data:`_CASTER_RISE` above
-    its highest wheel axle: casters' swivels drawn without their wheels turn there; a wheeled
-    drone's rotors sit above its wheels."""
-    axles = [
-        tree.poses.place(joint.child)[_Z_AXIS]
-        for name, role in roles.items()
-        if role.role == "wheel" and (joint := tree.urdf.joint(name)) is not None
-    ]
-    if not axles:
-        return list(leaves)
-    top = max(axles) + _CASTER_RISE
-    return [leaf for leaf in leaves if tree.poses.place(leaf.child)[_Z_AXIS] > top]
+def _no_casters(tree: JointTree, wheeled: bool, leaves: Iterable[Joint]) -> list[Joint]:
+    """``leaves`` but, on a body with wheels (``wheeled``), those whose part is known to hang
+    its mass off the axis they turn about (:func:`_balance`): a caster's swivel drawn without
+    its wheel trails its fork and wheel behind and below it; a propeller, a wheeled drone's
+    too, is balanced on its shaft."""
+    return [leaf for leaf in leaves if not wheeled or _balance(tree, leaf) is not False]
 
 
 def _upright_by_carrier(
@@ -1474,8 +1465,9 @@ def _rotor_carrier(
 ) -> str | None:
     """The movable joint that moves the body a spinning leaf ``joint`` is on (None: the
     root's), past a mount that swivels about an axis parallel to the leaf's, with nothing
-    that turns above it (a motor mount written about its shaft): such a mount carries the
-    rotor where the body does (``known`` and ``turning``: the walks' memos)."""
+    that turns above it (a motor mount written about its shaft, :func:`_shaft_mount`), or one
+    that tilts it (a tilt-rotor's servo, :func:`_tilt_mount`): such a mount carries the rotor
+    where the body does (``known`` and ``turning``: the walks' memos)."""
     carrier = moved_by(tree.urdf, joint.parent, known)
     mount = _shaft_mount(tree, joint, turning) or _tilt_mount(tree, joint, turning)
     if mount is not None and mount.name == carrier:
@@ -1500,20 +1492,28 @@ def _shaft_mount(tree: JointTree, joint: Joint, turning: dict[str, str | None]) 
 
 
 def _tilt_mount(tree: JointTree, joint: Joint, turning: dict[str, str | None]) -> Joint | None:
-    """The one joint that turns above ``joint`` when it tilts it about a level axis square to
-    its shaft, the shaft upright at rest, and nothing turns above it (a tilt-rotor's servo,
-    one under each propeller: tilting it turns the thrust, the propeller stays on the body's
-    frame where it was); else None (``turning``: the walks' memo)."""
+    """The one joint that turns above ``joint`` when it tilts it about a level axis, the shaft
+    upright at rest, and nothing turns above it but a joint that places the whole body (a
+    floating or planar root: :func:`_places_the_body`): a tilt-rotor's servo, one under each
+    propeller (tilting it turns the thrust, the propeller stays on the body's frame where it
+    was); else None (``turning``: the walks' memo)."""
     above = nearest_above(tree.urdf, joint.parent, turning, _turns)
     mount = tree.urdf.joint(above) if above is not None else None
     if (
         mount is not None
         and _upright(tree.poses.axis(joint))
         and _axle(tree.poses.axis(mount))
-        and nearest_above(tree.urdf, mount.parent, turning, _turns) is None
+        and _places_the_body(tree, nearest_above(tree.urdf, mount.parent, turning, _turns))
     ):
         return mount
     return None
+
+
+def _places_the_body(tree: JointTree, name: str | None) -> bool:
+    """``name`` is no joint (the root's body), or a floating or planar one: a simulator's or a
+    planner's joint placing the whole body, no part of it."""
+    joint = tree.urdf.joint(name) if name is not None else None
+    return joint is None or joint.type in ("floating", "planar")
 
 
 def _coaxial(places: list[tuple[float, float, float]]) -> bool:
@@ -1634,11 +1634,13 @@ def _resting_axis(tree: JointTree, joint: Joint, known: dict[str, str | None]) -
     """``joint``'s axis as the body carries it: in the body's frame when nothing that turns is
     above it (a link fixed to the body or sliding on it: a motor mount tipped upright, a
     wheel-drop suspension's frame turned to slide along its own axis), or on a mount that
-    swivels about its line (:func:`_shaft_mount`); else in its parent's frame (a leg's or a
+    swivels about its line (:func:`_shaft_mount`) or tilts it from upright
+    (:func:`_tilt_mount`); else in its parent's frame (a leg's or a
     steering link's rest pose says nothing of the axle's)."""
     if (
         nearest_above(tree.urdf, joint.parent, known, _turns) is None
         or _shaft_mount(tree, joint, known) is not None
+        or _tilt_mount(tree, joint, known) is not None
     ):
         return tree.poses.axis(joint)
     return local_axis(joint)
@@ -1696,16 +1698,19 @@ def _unnamed_spinners(tree: JointTree, taken: set[str]) -> Iterator[Joint]:
 
 
 def _unbounded(tree: JointTree, joint: Joint, whole: bool = False) -> bool:
-    """A revolute joint written blank (:func:`~solver.identify.readers.urdf.written_blank`) and
-    unlocked as an export's (its range unwritten, not zero), or, with ``whole``, bounded a
-    whole turn as every revolute joint of the file is (:func:`_bounded_alike`) and hanging as
-    a wheel does (:func:`_moved_by_few`), turning a part that carries its mass on its axle
-    (:func:`_balanced`): a wheel, as far as the file says; a jaw or a finger hangs its mass off
-    its hinge."""
+    """A revolute joint turning a part that carries its mass on its axle (:func:`_balanced`):
+    a wheel, as far as the file says (a jaw or a finger hangs its mass off its hinge), when it
+    is written blank (:func:`~solver.identify.readers.urdf.written_blank`) and unlocked as an
+    export's (its range unwritten, not zero); when its limit writes no range at all and it
+    hangs as a wheel does (:func:`_moved_by_few`: a hand-written file leaves `lower` and
+    `upper` out beside an effort, and a linkage's free joints deep in a leg are written so
+    too); or, with ``whole``, when it is bounded a whole turn as every revolute joint of the
+    file is (:func:`_bounded_alike`) and hangs as a wheel does."""
     return (
         joint.type == "revolute"
         and (
             (joint.unlocked and written_blank(joint))
+            or (joint.lower is None and joint.upper is None and _moved_by_few(tree, joint.parent))
             or (whole and joint.turns(_WHOLE_TURN) and _moved_by_few(tree, joint.parent))
         )
         and _balanced(tree, joint)

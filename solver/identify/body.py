@@ -130,6 +130,10 @@ class Body:
     trunk: tuple[str, ...] = ()
     fingers: tuple[str, ...] = ()
     grippers: int = 0
+    # A joint of its grippers, or the link it moves, is named for one (a finger, a jaw, a
+    # claw): a gripper built to hold, not a mirrored pair of hinges read as jaws (a drone's
+    # landing gear, a bay's doors).
+    named_gripper: bool = False
     floating_base: tuple[str, ...] = ()
     planar_base: tuple[str, ...] = ()
     # Root slides that travel as a machine's axes (an XY table's, a Cartesian gantry's): no base.
@@ -318,7 +322,7 @@ class Body:
             "tracks": len(self.tracks),
             "rotors": len(self.rotors),
             "arms": self.count("arm"),
-            "tools": self.count("arm") + int(bool(self.rigid_tool) or self.grippers > 0),
+            "tools": self.count("arm") + int(bool(self.rigid_tool) or self.named_gripper),
             "legs": self.count("leg"),
             "serial_legs": sum(
                 1
@@ -529,6 +533,11 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
         trunk=tuple(parts.trunk),
         fingers=tuple(finger_tips(tree, parts.grippers)),
         grippers=len(parts.hosts) or int(bool(fixed_gripper)),
+        named_gripper=any(
+            "gripper" in tree.parts_of(name) | tree.parts_of(joint.child)
+            for name in parts.grippers
+            if (joint := urdf.joint(name)) is not None
+        ),
         floating_base=parts.placement.floating,
         planar_base=parts.placement.planar,
         machine_axes=parts.placement.machine,

@@ -127,7 +127,8 @@ FEATURES = (
     "head_alone",
 )
 # tools: arms, and a flying body's rigid tool (a link the `tool` pattern names, on fixed joints)
-# or a gripper (one for either or both).
+# or a gripper named for one (one for either or both; a mirrored pair of hinges read as jaws,
+# a drone's landing gear, is none).
 # serial_legs: legs of three movable joints or more (half of a five-bar leg drawn open is none).
 # thrusters / fins / casters: joints (or plugin-named links) in those roles; finger_motions: the
 # finger joints that move on their own (not mimic); marine: a body in water (thrusters, marine

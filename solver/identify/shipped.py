@@ -156,7 +156,8 @@ def joint_controllers(
     of the ``joints`` (a walker's legs', a flown body's rotors'), when the packages were read
     whole, none ships the body's own software (``rule``: the profile's ``motion.gait`` or
     ``motion.flight``) and no package of the workspace is named for it (one of its own, or a
-    ``gait_planner`` beside them that names none of them): a body whose author ships those
+    ``gait_planner`` beside them that names none of them), nor a file of its packages (the
+    rule's ``named``: ``normal_walk.py``): a body whose author ships those
     joints' controllers and nothing that moves the body as a whole is commanded joint by joint,
     whatever it could do (:func:`solver.identify.motion.controls_from_description`). A ``ros_gz``
     bridge's command topic of a Gazebo Sim joint controller for one of the ``joints``

@@ -203,30 +203,52 @@ def test_a_cad_exports_blank_wheels_are_told_by_sides_of_the_bodys_mass_centre()
     assert identify_urdf(_with_masses(robot.text(), wheels)).structure != "UGV"
 
 
-def _swing_legs(wheel_centre: str) -> str:
+def _with_bodies(text: str, bodies: dict[str, str]) -> str:
+    """``text`` with each link named in ``bodies`` given that inner XML."""
+    for link, body in bodies.items():
+        text = text.replace(f'<link name="{link}"/>', f'<link name="{link}">{body}</link>')
+    return text
+
+
+INERTIA = '<inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/>'
+TYRE = (
+    '<visual><origin rpy="1.5708 0 0"/>'
+    '<geometry><cylinder radius="0.08" length="0.04"/></geometry></visual>'
+)
+SHANK = (
+    '<visual><origin xyz="0 0 -0.08"/>'
+    '<geometry><cylinder radius="0.02" length="0.16"/></geometry></visual>'
+)
+
+
+def _swing_legs(part: str) -> str:
     """A body with a hinge about a level axis at each corner, driven, carrying an unnamed
-    endless leaf about a parallel axle 15 cm below it, the leaf's mass at ``wheel_centre``
-    in its own frame."""
+    endless leaf about a parallel axle 15 cm below it, the leaf's link ``part`` (inner XML)."""
     robot = RobotText("rover")
-    centres = {"base_link": "0 0 0"}
+    bodies = {}
     for i, (x, y) in enumerate(((0.12, 0.14), (0.12, -0.14), (-0.12, 0.14), (-0.12, -0.14))):
         arm = builders.placed(
             robot, f"h{i}", "revolute", robot.root, f"a{i}", xyz=f"{x} {y} -0.05", axis="0 1 0"
         )
         builders.placed(robot, f"w{i}", "continuous", arm, f"b{i}", xyz="0 0 -0.15", axis="0 1 0")
         robot.add(builders.transmission(f"h{i}"))
-        centres[f"b{i}"] = wheel_centre
-    return _with_masses(robot.text(), centres)
+        bodies[f"b{i}"] = part
+    return _with_bodies(robot.text(), bodies)
 
 
-def test_balanced_leaves_each_on_a_driven_hinge_about_a_parallel_axis_ride_on_swing_arms() -> None:
+def test_round_leaves_each_on_a_driven_hinge_about_a_parallel_axis_ride_on_swing_arms() -> None:
     # A rover whose corners are legs of one hinge raising a wheel, nothing named: the wheels
-    # carry their mass on their axles, and one hinge makes no leg to walk on.
-    result = identify_urdf(_swing_legs("0 0 0"))
+    # are drawn round their axles, their mass on them, and one hinge makes no leg to walk on.
+    mass = f'<inertial><origin xyz="0 0 0"/><mass value="1"/>{INERTIA}</inertial>'
+    result = identify_urdf(_swing_legs(TYRE + mass))
     assert result.body is not None
     assert (result.structure, result.body.wheels) == ("UGV", ("w0", "w1", "w2", "w3"))
-    # A walker's knee that turns for ever carries its shank and foot off its axis: legs.
-    assert identify_urdf(_swing_legs("0 0 -0.08")).structure == "Quadruped"
+    # A walker's knee turning for ever is drawn along its shank, its mass written at the knee
+    # or not: legs.
+    assert identify_urdf(_swing_legs(SHANK + mass)).structure == "Quadruped"
+    # A tyre hanging its mass off its axle is known to be none.
+    off = f'<inertial><origin xyz="0 0 -0.08"/><mass value="1"/>{INERTIA}</inertial>'
+    assert identify_urdf(_swing_legs(TYRE + off)).structure == "Quadruped"
 
 
 def whole_turn_export(*, arm_bounds: str = 'lower="-3.14159" upper="3.14159"') -> str:
@@ -1293,9 +1315,10 @@ def test_unnamed_endless_leaves_on_upright_axes_all_round_a_body_are_its_rotors(
     assert identify_urdf(row.text()).structure != "UAV"
 
 
-def _wheels_and_spinners(height: float) -> str:
+def _wheels_and_spinners(centre: str) -> str:
     """Two wheels a drive plugin names, axles 5 cm up, and four unnamed endless leaves about
-    upright axes all round the body at ``height``."""
+    upright axes all round the body 1 cm above the axles, each part's mass at ``centre`` in
+    its own frame."""
     robot = RobotText("r")
     for side, y in (("l", 0.1), ("r", -0.1)):
         builders.placed(
@@ -1305,17 +1328,17 @@ def _wheels_and_spinners(height: float) -> str:
     params = "<leftJoint>l_motor</leftJoint><rightJoint>r_motor</rightJoint>"
     robot.add(builders.model_plugin("drive", "libgazebo_ros_diff_drive.so", params))
     for i, (x, y) in enumerate(((0.15, 0.1), (0.15, -0.1), (-0.15, 0.1), (-0.15, -0.1))):
-        builders.placed(robot, f"s{i}", "continuous", robot.root, f"p{i}", xyz=f"{x} {y} {height}")
-    return robot.text()
+        builders.placed(robot, f"s{i}", "continuous", robot.root, f"p{i}", xyz=f"{x} {y} 0.06")
+    return _with_masses(robot.text(), {f"p{i}": centre for i in range(4)})
 
 
-def test_unnamed_spinners_at_a_wheeled_bodys_axles_are_casters_and_above_them_rotors() -> None:
-    # Casters' swivels drawn without their wheels turn at about the axles' height: no rotors.
-    result = identify_urdf(_wheels_and_spinners(0.06))
+def test_unnamed_spinners_of_a_wheeled_body_trailing_their_mass_are_casters_not_rotors() -> None:
+    # Casters' swivels drawn without their wheels trail their fork and wheel behind and below.
+    result = identify_urdf(_wheels_and_spinners("-0.02 0 -0.04"))
     assert result.body is not None
     assert (result.structure, result.body.rotors) == ("UGV", ())
-    # A wheeled drone's propellers turn well above its wheels.
-    assert identify_urdf(_wheels_and_spinners(0.2)).structure == "UAV"
+    # A wheeled drone's propellers are balanced on their shafts, however low they turn.
+    assert identify_urdf(_wheels_and_spinners("0 0 0")).structure == "UAV"
 
 
 def test_two_unnamed_endless_leaves_on_one_upright_line_are_a_coaxial_helicopters_rotors() -> None:
@@ -1393,6 +1416,13 @@ def test_unnamed_rotors_each_on_a_servo_tilting_it_about_its_arm_are_all_round_o
     result = identify_urdf(robot.text())
     assert result.body is not None
     assert (result.structure, len(result.body.rotors)) == ("UAV", 4)
+    # A simulator's floating joint placing the whole body moves no servo.
+    floating = robot.text().replace(
+        '<link name="base_link"/>',
+        '<link name="world"/><link name="base_link"/><joint name="pose" type="floating">'
+        '<parent link="world"/><child link="base_link"/></joint>',
+    )
+    assert identify_urdf(floating).structure == "UAV"
     # A servo with a hip turning above it is a leg's knee, no tilt-rotor's servo: four legs
     # whose knees tilt a spinning foot each are no rotors all round the body.
     legs = RobotText("legs")

@@ -198,6 +198,15 @@ def test_a_multirotor_carrying_a_gripper_with_no_arm_is_an_aerial_manipulator() 
         0,
         1,
     )
+    # Landing gear: a mirrored pair of hinges, one following the other, read as jaws but named
+    # for no gripper, holds nothing.
+    gear = builders.quadrotor()
+    for side, y, extra in (("left", 0.1, ""), ("right", -0.1, '<mimic joint="gear_left"/>')):
+        builders.placed(
+            gear, f"gear_{side}", "revolute", gear.root, f"gear_{side}_leg", xyz=f"0 {y} -0.05",
+            axis="1 0 0", extra=extra,
+        )  # fmt: skip
+    assert identify_urdf(gear.text()).structure == "UAV"
 
 
 @pytest.mark.parametrize(

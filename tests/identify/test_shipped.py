@@ -1226,6 +1226,9 @@ def test_a_script_named_for_a_gait_is_one_whatever_its_text_says(tmp_path: Path)
     (scripts / "normal_walk.py").rename(scripts / "replay.py")
     scripts.rename(scripts.parent / "walking")
     assert set(controls_of(path)) == {"Joint"}
+    # A word that holds a gait's word is none: a sidewalk's map, a walkthrough.
+    (scripts.parent / "walking" / "sidewalk_map.yaml").write_text("frame: map\n")
+    assert set(controls_of(path)) == {"Joint"}
 
 
 @pytest.mark.parametrize(
