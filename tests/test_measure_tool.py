@@ -71,13 +71,19 @@ def row_of(output: str, first: str, second: str) -> list[str]:
     raise AssertionError(f"no row {first} | {second} in:\n{output}")
 
 
+def with_urdfs(folder: Path, **files: str) -> Path:
+    """``folder`` with each of ``files`` (name -> URDF text) written as ``urdf/<name>.urdf``."""
+    (folder / "urdf").mkdir(parents=True)
+    for name, text in files.items():
+        (folder / "urdf" / f"{name}.urdf").write_text(text, encoding="utf-8")
+    return folder
+
+
 def tiny_set(folder: Path) -> None:
     rover = ugv()
     rover.add(gazebo_sensor("base_link", "ray", "front_laser"))
     rover.add(model_plugin("drive", "libgazebo_ros_skid_steer_drive.so"))
-    (folder / "urdf").mkdir(parents=True)
-    (folder / "urdf" / "rover.urdf").write_text(rover.text(), encoding="utf-8")
-    (folder / "urdf" / "arm.urdf").write_text(manipulator().text(), encoding="utf-8")
+    with_urdfs(folder, rover=rover.text(), arm=manipulator().text())
     rows = [
         {
             "robot": "rover",
@@ -121,10 +127,9 @@ def test_a_set_is_reported_per_family_with_what_was_right(tmp_path: Path) -> Non
 def test_a_gripper_counts_for_a_hand_and_a_pan_tilt_unit_for_an_uncertain_manipulator(
     tmp_path: Path,
 ) -> None:
-    folder = tmp_path / "heads"
-    (folder / "urdf").mkdir(parents=True)
-    (folder / "urdf" / "ptu.urdf").write_text(pan_tilt_only().text(), encoding="utf-8")
-    (folder / "urdf" / "jaws.urdf").write_text(parallel_gripper().text(), encoding="utf-8")
+    folder = with_urdfs(
+        tmp_path / "heads", ptu=pan_tilt_only().text(), jaws=parallel_gripper().text()
+    )
     rows = [
         {"robot": "ptu_certain", "file": "urdf/ptu.urdf", "kinematic_type": "Manipulator"},
         {"robot": "ptu_doubted", "file": "urdf/ptu.urdf", "kinematic_type": "Manipulator?"},
@@ -139,9 +144,7 @@ def test_a_gripper_counts_for_a_hand_and_a_pan_tilt_unit_for_an_uncertain_manipu
 
 
 def test_the_corpus_readmes_short_name_mm_labels_a_mobile_manipulator(tmp_path: Path) -> None:
-    folder = tmp_path / "bases"
-    (folder / "urdf").mkdir(parents=True)
-    (folder / "urdf" / "mm.urdf").write_text(mobile_manipulator().text(), encoding="utf-8")
+    folder = with_urdfs(tmp_path / "bases", mm=mobile_manipulator().text())
     write_truth(folder, [{"robot": "mm", "file": "urdf/mm.urdf", "kinematic_type": "MM"}])
     assert "structure correct: 1/1 strict, 1/1 lenient" in measure("--set", str(folder))
 
@@ -507,9 +510,7 @@ def test_a_rows_repository_of_no_package_is_read_under_the_descriptions_own_file
 def test_the_briefs_snake_labels_a_serpentine_reading_in_a_label_and_in_a_note(
     tmp_path: Path,
 ) -> None:
-    folder = tmp_path / "snakes"
-    (folder / "urdf").mkdir(parents=True)
-    (folder / "urdf" / "snake.urdf").write_text(snake().text(), encoding="utf-8")
+    folder = with_urdfs(tmp_path / "snakes", snake=snake().text())
     rows = [
         {"robot": "named", "file": "urdf/snake.urdf", "kinematic_type": "Snake"},
         {
@@ -533,9 +534,7 @@ def test_the_briefs_snake_labels_a_serpentine_reading_in_a_label_and_in_a_note(
 def test_a_structure_named_inside_a_longer_ones_name_in_a_note_is_not_named_by_it(
     tmp_path: Path,
 ) -> None:
-    folder = tmp_path / "flyers"
-    (folder / "urdf").mkdir(parents=True)
-    (folder / "urdf" / "arm.urdf").write_text(manipulator().text(), encoding="utf-8")
+    folder = with_urdfs(tmp_path / "flyers", arm=manipulator().text())
     rows = [
         {
             "robot": "in_a_longer_name",

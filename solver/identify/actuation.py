@@ -1469,10 +1469,16 @@ def _rotor_carrier(
     that tilts it (a tilt-rotor's servo, :func:`_tilt_mount`): such a mount carries the rotor
     where the body does (``known`` and ``turning``: the walks' memos)."""
     carrier = moved_by(tree.urdf, joint.parent, known)
-    mount = _shaft_mount(tree, joint, turning) or _tilt_mount(tree, joint, turning)
+    mount = _rotor_mount(tree, joint, turning)
     if mount is not None and mount.name == carrier:
         return moved_by(tree.urdf, mount.parent, known)
     return carrier
+
+
+def _rotor_mount(tree: JointTree, joint: Joint, turning: dict[str, str | None]) -> Joint | None:
+    """The mount that carries a spinning leaf ``joint`` where the body is: one swivelling about
+    its shaft (:func:`_shaft_mount`) or tilting it (:func:`_tilt_mount`); else None."""
+    return _shaft_mount(tree, joint, turning) or _tilt_mount(tree, joint, turning)
 
 
 def _shaft_mount(tree: JointTree, joint: Joint, turning: dict[str, str | None]) -> Joint | None:
@@ -1634,13 +1640,11 @@ def _resting_axis(tree: JointTree, joint: Joint, known: dict[str, str | None]) -
     """``joint``'s axis as the body carries it: in the body's frame when nothing that turns is
     above it (a link fixed to the body or sliding on it: a motor mount tipped upright, a
     wheel-drop suspension's frame turned to slide along its own axis), or on a mount that
-    swivels about its line (:func:`_shaft_mount`) or tilts it from upright
-    (:func:`_tilt_mount`); else in its parent's frame (a leg's or a
-    steering link's rest pose says nothing of the axle's)."""
+    swivels about its line or tilts it from upright (:func:`_rotor_mount`); else in its
+    parent's frame (a leg's or a steering link's rest pose says nothing of the axle's)."""
     if (
         nearest_above(tree.urdf, joint.parent, known, _turns) is None
-        or _shaft_mount(tree, joint, known) is not None
-        or _tilt_mount(tree, joint, known) is not None
+        or _rotor_mount(tree, joint, known) is not None
     ):
         return tree.poses.axis(joint)
     return local_axis(joint)
