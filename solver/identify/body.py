@@ -62,6 +62,7 @@ from solver.identify.limbs import (
     meeting_tips,
     moved_by,
     named_pan_tilt,
+    named_wheeled_snake,
     nearest_above,
     open_linkages,
     parallel_robot,
@@ -758,12 +759,7 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
     parts.limbs = raised_legs(tree, flippers(tree, parts.limbs), parts.roles)
     parts.limbs = parallel_robot(tree, meeting_tips(tree, parts.limbs), flying=flying)
     parts.limbs = open_linkages(tree, closed_arms(tree, closed_loops(tree, parts.limbs)))
-    if not parts.roles and not parts.trunk:  # a snake is its one chain, with nothing else
-        parts.limbs = spine(tree, parts.limbs)
-    elif not parts.roles and not parts.grippers:  # or its chain, with side wheels on it
-        parts.limbs, parts.trunk, side = wheeled_spine(tree, parts.limbs, parts.trunk)
-        for name in side:
-            parts.roles[name] = Role(name, "passive", "a leaf joint beside a spine (a side wheel)")
+    _snake(tree, parts)
     parts.limbs = wrist(tree, parts.limbs, finger_tips(tree, parts.grippers))
     moves = flying or grounded(tree, parts.roles)
     parts.limbs = small_pan_tilt(tree, parts.limbs, moves)
@@ -776,11 +772,28 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
         parts.limbs = named_pan_tilt(tree, camera_arm(tree, pendulum(tree, parts.limbs)))
 
 
+def _snake(tree: JointTree, parts: _Parts) -> None:
+    """A snake's spine: its one chain with nothing else (:func:`spine`), or with side wheels
+    on it (:func:`wheeled_spine`), or, on a robot named a snake, gliding on a wheel per module
+    (:func:`named_wheeled_snake`); the wheels it carries passive."""
+    if not parts.roles and not parts.trunk:  # a snake is its one chain, with nothing else
+        parts.limbs = spine(tree, parts.limbs)
+    elif not parts.roles and not parts.grippers:  # or its chain, with side wheels on it
+        parts.limbs, parts.trunk, side = wheeled_spine(tree, parts.limbs, parts.trunk)
+        for name in side:
+            parts.roles[name] = Role(name, "passive", "a leaf joint beside a spine (a side wheel)")
+    elif {role.role for role in parts.roles.values()} == {"wheel"} and not parts.trunk:
+        parts.limbs, side = named_wheeled_snake(tree, parts.limbs, parts.of("wheel"))
+        for name in side:
+            parts.roles[name] = Role(name, "passive", "a wheel on a snake's module (passive)")
+
+
 def _trunks(tree: JointTree, limbs: list[Limb], trunk: list[str]) -> frozenset[str | None]:
     """The rigid bodies two legs or more of ``limbs`` hang from, as :func:`finger_groups` is
     told them: the nearest joint above each leg's base that moves (None: the root's); and the
     bodies the ``trunk`` joints turn on them (a waist, its chest: where a walker's arms and
-    neck hang)."""
+    neck hang), or that carry a trunk joint turning the legs' body (a file rooted in the chest,
+    its waist turning the hips below)."""
     legs = [limb for limb in limbs if limb.kind == "leg"]
     if len(legs) < 2:
         return frozenset()
@@ -792,6 +805,8 @@ def _trunks(tree: JointTree, limbs: list[Limb], trunk: list[str]) -> frozenset[s
         body = moved_by(tree.urdf, joint.parent, known)
         if body in bodies and on_body[body] == 1:  # one chain up: a waist, not two arms
             bodies.add(joint.name)
+        elif joint.name in bodies:  # a waist turning the hips under a chest the file roots
+            bodies.add(body)
     return frozenset(bodies)
 
 

@@ -122,6 +122,7 @@ __all__ = [
     "legs_by_reach",
     "lone_leg",
     "named_pan_tilt",
+    "named_wheeled_snake",
     "open_linkages",
     "pendulum",
     "planar_arm",
@@ -895,7 +896,9 @@ def _leg_candidates(
     """Unnamed chains of two joints or more, no gripper's, placed, on the trunk
     (:func:`_on_the_trunk`: past an arm's joints, hanging fingers are a hand's, as
     :func:`legs_by_place` reads them), not every joint of them turning without end (a
-    caster's swivel and its wheel turn for ever; a leg's hip and knee stop)."""
+    caster's swivel and its wheel turn for ever; a leg's hip and knee stop), unless there are
+    as many as a humanoid's leg has (a model that writes every joint continuous, with no
+    limit, as a kid-size humanoid's of 2013 does, still hangs its legs so)."""
     turns: dict[str, int] = {}
     return [
         limb
@@ -906,8 +909,13 @@ def _leg_candidates(
         and len(limb.joints) >= _LEG_JOINTS[0]
         and id(limb) in placed
         and _on_the_trunk(tree, limb.base, turns)
-        and not _spins_all_through(tree, limb)
+        and (len(limb.joints) >= _ENDLESS_LEG_JOINTS or not _spins_all_through(tree, limb))
     ]
+
+
+# A chain of endless joints is a leg only when as long as a humanoid's leg (hip, knee, ankle);
+# shorter, it may be a caster's swivel and wheel, or an arm hanging at rest on a wheeled base.
+_ENDLESS_LEG_JOINTS = 5
 
 
 def _spins_all_through(tree: JointTree, limb: Limb) -> bool:
@@ -941,7 +949,9 @@ def _pair_above(
     unnamed ones, no head's, on the trunk (the body and a waist above it, as
     :func:`_trunk_above` reads it), start mirrored across it higher than ``hips``: a pair of
     arms above a pair of legs (a head's two ears turn on one joint each, a camera's pan and
-    tilt are a head; a few chains only are compared, pair by pair)."""
+    tilt are a head; a few chains only are compared, pair by pair). Mirrored across the root's
+    frame, or across the plane the legs' hips are mirrored about (a CAD export whose body frame
+    is not on the robot's middle)."""
     depth: dict[str, int] = {}
     above = [
         limb
@@ -955,9 +965,14 @@ def _pair_above(
     ]
     if len(above) > _MOST_ABOVE_THE_HIPS:
         return False
+    (a, _), (b, _) = placed[id(pair[0])], placed[id(pair[1])]
+    middle = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2, 0.0)
     return any(
         len(one.joints) == len(other.joints)
-        and _mirrored_either_way(placed[id(one)][0], placed[id(other)][0])
+        and any(
+            _mirrored_either_way(minus(placed[id(one)][0], at), minus(placed[id(other)][0], at))
+            for at in ((0.0, 0.0, 0.0), middle)
+        )
         for index, one in enumerate(above)
         for other in above[index + 1 :]
     )
@@ -2438,6 +2453,44 @@ def wheeled_spine(
     return [spine_limb], [], [limb.joints[0] for limb in limbs]
 
 
+def named_wheeled_snake(
+    tree: JointTree, limbs: list[Limb], wheels: list[str]
+) -> tuple[list[Limb], list[str]]:
+    """A robot named a snake (:func:`_named_snake`) whose one chain of turning joints, as long
+    as a snake (``spine_min_joints``) in equal modules, runs link after link from the root, and
+    whose ``wheels`` each turn on a link of that chain: a snake on passive wheels (as Hirose's
+    Active Cord Mechanism glides; its hinges may all turn about the vertical), its chain the
+    spine, no base's mount. Returns the limbs (the spine alone) and the wheels it carries; else
+    what it was given and none."""
+    unchanged: tuple[list[Limb], list[str]] = (limbs, [])
+    if len(limbs) != 1 or not wheels or limbs[0].gripper:
+        return unchanged
+    limb = limbs[0]
+    joints = [j for j in (tree.urdf.joint(name) for name in limb.joints) if j is not None]
+    if (
+        len(joints) != len(limb.joints)
+        or len(joints) < tree.profile.limb("spine_min_joints")
+        or not all(joint.type in _TURNING for joint in joints)
+        or not _one_path(tree, joints)
+        or not _named_snake(tree, joints)
+        or not _modules(tree, joints)
+        or _limb_joint_words(joints)
+    ):
+        return unchanged
+    links = {tree.urdf.root, *(joint.child for joint in joints)}
+    known: dict[str, str | None] = {}
+    wheel_joints = [tree.urdf.joint(name) for name in wheels]
+    if not all(
+        joint is not None and _carrier(tree, joint.parent, known) in links for joint in wheel_joints
+    ):
+        return unchanged
+    why = (
+        f"a chain of {len(joints)} turning joints in equal modules on {len(wheels)} wheel(s),"
+        f" on a robot named a snake ({shown(tree.urdf.name)}): a spine on passive wheels"
+    )
+    return [replace(limb, kind="spine", why=why)], list(wheels)
+
+
 def _pads(tree: JointTree, limbs: list[Limb]) -> bool:
     """Every side joint slides (a pad pressed down and lifted: a snake moving in a plane, as a
     concertina, anchors its modules so)."""
@@ -2759,7 +2812,8 @@ def _square_turns(tree: JointTree, first: Joint, second: Joint) -> bool:
 
 def bolted_chain(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
     """A short unnamed chain, the body's only limb, hanging from a root fixed to ``world`` (or
-    every joint of it driven by a controller) on a body that does not move: the base is bolted
+    every joint of it driven by a controller, or on a robot whose name says an arm or a
+    manipulator and nothing that walks) on a body that does not move: the base is bolted
     down and the chain is what it is there for. It is an arm (of two joints or more), whether
     it carries a sensor at its tip (read as a pan/tilt unit only for that) or nothing the names
     tell (a two-link teaching arm)."""
@@ -2771,7 +2825,9 @@ def bolted_chain(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
     driven = all(name in tree.urdf.controlled_joints for name in limb.joints)
     if len(limb.joints) < 2 or not _on_the_root(tree, limb.base):
         return limbs
-    if not (_world_root(tree) or driven):
+    name = tree.urdf.name
+    named = _named_arm(name) and not _LEGGED_NAME.search(name)
+    if not (_world_root(tree) or driven or named):
         return limbs
     pan, tilt = (tree.urdf.joint(name) for name in limb.joints[:2])
     if (
@@ -2782,9 +2838,12 @@ def bolted_chain(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
     ):
         return limbs  # a pan/tilt unit bolted down is still a head
     what = "carrying a sensor" if limb.kind == "head" else "of no limb's name"
+    bolted = (
+        "fixed to the world" if _world_root(tree) or driven else f"of a robot named {shown(name)}"
+    )
     why = (
-        f"the body's only limb, an unnamed chain of {len(limb.joints)} joints on a root fixed"
-        f" to the world (a short arm {what})"
+        f"the body's only limb, an unnamed chain of {len(limb.joints)} joints on a root"
+        f" {bolted} (a short arm {what})"
     )
     return [replace(limb, kind="arm", why=why)]
 

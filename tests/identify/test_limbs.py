@@ -4,6 +4,7 @@ mounts or other by their names, their length and what they carry; trunk where th
 from __future__ import annotations
 
 import math
+import re
 from typing import Any
 
 import pytest
@@ -441,6 +442,33 @@ def test_a_snake_of_two_joint_modules_with_passive_side_wheels_is_still_a_spine(
     assert {c.motion_control: c.source for c in result.motion_controls} == {
         "Joint": "urdf: 8 limb joint(s) a controller drives"
     }
+
+
+def yawing_snake_on_wheels(name: str, modules: int = 8) -> str:
+    """``modules`` modules 0.1 m apart, each after the first on a hinge about the vertical, each
+    gliding on one wheel named so (a continuous joint about its own axle): a planar snake on
+    passive wheels, as Hirose's Active Cord Mechanism."""
+    robot = RobotText(name, root="m1")
+    link = "m1"
+    for i in range(1, modules + 1):
+        if i > 1:
+            link = builders.placed(robot, f"h{i}", "revolute", link, f"m{i}", xyz="0.1 0 0")
+        builders.placed(
+            robot, f"wheel_{i}", "continuous", link, f"wheel_link_{i}", xyz="0 0 -0.03",
+            axis="0 1 0",
+        )  # fmt: skip
+    return robot.text()
+
+
+def test_a_robot_named_a_snake_gliding_on_a_wheel_per_module_is_a_spine_not_a_base() -> None:
+    result = identify_urdf(yawing_snake_on_wheels("snake_robot"))
+    assert result.structure == "Serpentine"
+    roles = {role.joint: role.role for role in result.roles}
+    assert {roles[f"wheel_{i}"] for i in range(1, 9)} == {"passive"}
+    # Not named a snake: the same wheels carry a base, its chain of hinges their mount.
+    assert identify_urdf(yawing_snake_on_wheels("train")).structure == "UGV"
+    # A snake's name, but too few modules for a snake's length: a base with its hinges.
+    assert identify_urdf(yawing_snake_on_wheels("snake_robot", modules=4)).structure == "UGV"
 
 
 def test_a_chain_named_as_an_arm_with_leaves_on_it_is_no_spine() -> None:
@@ -1854,6 +1882,26 @@ def test_a_two_joint_chain_of_no_limb_name_bolted_to_the_world_is_an_arm() -> No
     assert identify_urdf(free.text()).structure == "Other"  # not bolted down: nothing says arm
 
 
+@pytest.mark.parametrize("name", ["manipulator", "two_link_arm", "SimpleArm"])
+def test_a_two_joint_chain_of_a_robot_named_an_arm_is_its_arm_though_not_bolted_down(
+    name: str,
+) -> None:
+    # A class's teaching model: no world link, no controller, but its name says what it is.
+    robot = RobotText(name)
+    robot.fixed(robot.chain(robot.root, ["joint1", "joint2"]), "link_ee")
+    result = identify_urdf(robot.text())
+    assert result.structure == "Manipulator"
+    assert result.body is not None
+    assert f"of a robot named {name}" in result.body.limbs[0].why
+
+
+@pytest.mark.parametrize("name", ["leg_arm_rig", "double_pendulum"])
+def test_a_two_joint_chain_of_a_robot_named_otherwise_or_for_a_walker_is_no_arm(name: str) -> None:
+    robot = RobotText(name)
+    robot.fixed(robot.chain(robot.root, ["joint1", "joint2"]), "link_ee")
+    assert identify_urdf(robot.text()).structure != "Manipulator"
+
+
 def test_a_two_joint_chain_every_joint_of_which_a_controller_drives_is_an_arm() -> None:
     # No world link: the controller on each joint says the base holds the chain to move it.
     robot = RobotText("leg_test_rig")
@@ -2212,6 +2260,43 @@ def test_two_unnamed_chains_hanging_straight_down_from_a_free_body_are_its_legs(
     assert sorted(limb.kind for limb in result.body.limbs) == ["arm", "arm", "leg", "leg"]
     assert result.structure == "Humanoid"
     assert any("hanging straight down" in limb.why for limb in result.body.limbs)
+
+
+def humanoid_rooted_in_its_chest() -> RobotText:
+    """Letters only, the file's root the chest: a hinge about the vertical turns the hips
+    0.2 m below it, two six-joint chains hang 0.6 m down from the hips; on the chest two
+    three-joint chains start 0.15 m out each side and reach down, and a two-joint chain stands
+    on top (arms and a neck)."""
+    robot = RobotText("r", root="chest")
+    hips = builders.placed(robot, "w", "revolute", "chest", "hips", xyz="0 0 -0.2", axis="0 0 1")
+    for side, y in (("a", 0.08), ("b", -0.08)):
+        placed_chain(robot, hips, f"{side}j", start=f"0 {y} -0.05", steps=["0 0 -0.1"] * 5)
+    for side, y in (("c", 0.15), ("d", -0.15)):
+        placed_chain(robot, "chest", f"{side}j", start=f"0 {y} 0.1", steps=["0 0 -0.1"] * 2)
+    placed_chain(robot, "chest", "n", start="0 0 0.15", steps=["0 0 0.05"])
+    return robot
+
+
+def test_arms_and_a_neck_on_a_chest_above_a_waist_turning_the_hips_are_no_fingers() -> None:
+    # The legs hang from the hips a waist turns below the chest the file roots: the chains on
+    # that chest are the walker's arms and neck, not a hand's fingers.
+    result = identify_urdf(humanoid_rooted_in_its_chest().text())
+    assert result.structure == "Humanoid"
+    assert result.body is not None
+    assert sorted(limb.kind for limb in result.body.limbs).count("arm") == 2
+
+
+def test_legs_whose_every_joint_is_written_continuous_with_no_limit_are_still_legs() -> None:
+    # An old model writes every joint continuous: a chain of six endless joints is no caster
+    # (a swivel and its wheel), and hangs as a leg does.
+    text = nameless_humanoid().text().replace('type="revolute"', 'type="continuous"')
+    text = re.sub("<limit [^>]*/>", "", text)
+    assert 'type="revolute"' not in text
+    assert "<limit" not in text
+    result = identify_urdf(text)
+    assert result.structure == "Humanoid"
+    assert result.body is not None
+    assert sorted(limb.kind for limb in result.body.limbs) == ["arm", "arm", "leg", "leg"]
 
 
 def test_legs_hanging_side_by_side_about_a_middle_off_the_roots_origin_are_legs() -> None:
@@ -2809,14 +2894,21 @@ def test_chains_hanging_down_left_and_right_of_their_middle_are_legs_wherever_th
 
 
 def nameless_humanoid_drawn_from_its_feet(
-    *, arms: bool = True, facing_y: bool = False, hands: bool = False, upper: bool = True
+    *,
+    arms: bool = True,
+    facing_y: bool = False,
+    hands: bool = False,
+    upper: bool = True,
+    aside: float = 0.0,
 ) -> RobotText:
     """Letters only, the root's frame at the feet: two six-joint chains hang straight down
     from hips 0.5 m up to 0.05 m; above them two five-joint chains hang from shoulders 0.75 m
     up (``arms``), or two one-joint ears turn on a head, or nothing (``upper`` False: a lower
-    body). ``facing_y``: left and right along x; ``hands``: each arm ends in a gripper's jaw."""
+    body). ``facing_y``: left and right along x; ``hands``: each arm ends in a gripper's jaw;
+    ``aside``: the body's middle this far to the left of the root's frame (a CAD export)."""
 
     def across(offset: float) -> str:
+        offset += aside
         return f"{offset} 0" if facing_y else f"0 {offset}"
 
     robot = RobotText("r")
@@ -2847,6 +2939,20 @@ def test_legs_hang_from_the_hips_below_a_pair_of_arms_though_the_root_is_drawn_a
         "Biped",
         "Humanoid",
     )
+
+
+def test_arms_mirrored_about_the_legs_middle_off_the_roots_frame_make_the_legs_a_humanoids() -> (
+    None
+):
+    # A CAD export whose frame is at the feet and off to one side of the body: the arms are
+    # mirrored about the plane the hips are, not about the frame.
+    drawn = nameless_humanoid_drawn_from_its_feet(aside=0.3)
+    assert identify_urdf(drawn.text()).structure == "Humanoid"
+    drawn = nameless_humanoid_drawn_from_its_feet(aside=0.3, facing_y=True)
+    assert identify_urdf(drawn.text()).structure == "Humanoid"
+    # Ears on a head still say nothing, wherever the frame is.
+    ears = nameless_humanoid_drawn_from_its_feet(arms=False, aside=0.3)
+    assert identify_urdf(ears.text()).structure not in ("Biped", "Humanoid")
 
 
 def test_two_chains_hanging_to_the_feet_of_a_root_drawn_there_with_nothing_else_are_legs() -> None:
