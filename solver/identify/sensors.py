@@ -83,6 +83,9 @@ _SIDE = re.compile(r"(^|[_/-])(l|r|left|right)([_/-]|$)", re.IGNORECASE)
 _LAST_SIDE = re.compile(r"[_/-](l|r|left|right)$", re.IGNORECASE)
 # A link named for a camera (``camera_link``, ``link_nav_cam``, ``bb2_cam``; not ``camshaft``).
 _CAMERA_LINK = re.compile(r"cam(era)?([^a-z]|$)|realsense|kinect|openni|xtion", re.IGNORECASE)
+# A camera named for a stereo camera: ``stereo`` anywhere in its name, or a ZED's
+# (Stereolabs' stereo cameras, ``zed2_left_camera_sensor``), as the profile's frames read them.
+_STEREO_NAME = re.compile(r"stereo|(^|[_/-])zed", re.IGNORECASE)
 # A stereo pair in a camera's topic: ``stereo`` as a word (``/stereo/left/image_raw``,
 # stereo_image_proc's layout; ``/front_stereo/left``, ``/stereo_camera/right``), not
 # ``stereographic``.
@@ -568,8 +571,9 @@ def _stream_of(
 
 
 def _stereo_pairs(found: list[Detection], urdf: Urdf) -> list[Detection]:
-    """Two cameras that are one stereo camera, where the first of them was: named stereo, with
-    names that differ only by a side (``wide_stereo_l_...`` and ``wide_stereo_r_...``); with
+    """Two cameras that are one stereo camera, where the first of them was: named stereo (or
+    for a ZED), with names that differ only by a side (``wide_stereo_l_...`` and
+    ``wide_stereo_r_...``, ``zed2_left_camera_sensor`` and ``zed2_right_...``); with
     topics that differ only by a side beside a ``stereo`` word (``/stereo/left/image_raw``
     and ``/stereo/right/image_raw``: :func:`_image_topic`) or with one name on two frames
     that differ only by a side (``duo3d_left_link`` and ``duo3d_right_link``), on one rigid
@@ -618,7 +622,7 @@ def _pair_key(
     """What a camera and the other side of its stereo pair share (by what, name, frame), as
     :func:`_stereo_pairs` tells them (``by_topic``: a stereo topic naming a side counts);
     None for a camera no pair can hold."""
-    if "stereo" in detection.name.lower():
+    if _STEREO_NAME.search(detection.name):
         return ("name", _unsided(detection.name), "")
     topic = detection.topic
     if by_topic and _STEREO_TOPIC.search(topic) and _SIDE.search(topic):

@@ -427,6 +427,16 @@ def test_a_stereo_pair_declared_as_two_cameras_is_one_stereo_camera() -> None:
     ]
 
 
+def test_a_zeds_two_sided_cameras_are_one_stereo_camera() -> None:
+    # Stereolabs' ZED 2, each side declared as a camera on its own optical frame.
+    robot = builders.ugv()
+    for side in ("left", "right"):
+        frame = f"zed2_{side}_camera_optical_frame"
+        robot.add(builders.gazebo_sensor(frame, "camera", f"zed2_{side}_camera_sensor"))
+    found = [(d.kind, d.name) for d in sensors_from_urdf(parse_urdf(robot.text()), load_profile())]
+    assert found == [("stereo_camera", "zed2_left+right_camera_sensor")]
+
+
 @pytest.mark.parametrize("sides", [("left", "right"), ("l", "r")])
 def test_a_devices_two_sided_channels_on_one_frame_are_one_stereo_camera(
     sides: tuple[str, str],
