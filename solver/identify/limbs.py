@@ -897,9 +897,11 @@ def _leg_candidates(
     (:func:`_on_the_trunk`: past an arm's joints, hanging fingers are a hand's, as
     :func:`legs_by_place` reads them), not every joint of them turning without end (a
     caster's swivel and its wheel turn for ever; a leg's hip and knee stop), unless there are
-    as many as a humanoid's leg has (a model that writes every joint continuous, with no
-    limit, as a kid-size humanoid's of 2013 does, still hangs its legs so)."""
+    as many as a humanoid's leg has and nothing spins on the body itself (a model that writes
+    every joint continuous, with no limit, as a kid-size humanoid's of 2013 does, still hangs
+    its legs so; a wheeled base's arms drawn so hang at rest beside its wheels)."""
     turns: dict[str, int] = {}
+    long_legs = _ENDLESS_LEG_JOINTS if not _spins_on_the_body(tree) else _NO_LENGTH
     return [
         limb
         for limb in limbs
@@ -909,13 +911,27 @@ def _leg_candidates(
         and len(limb.joints) >= _LEG_JOINTS[0]
         and id(limb) in placed
         and _on_the_trunk(tree, limb.base, turns)
-        and (len(limb.joints) >= _ENDLESS_LEG_JOINTS or not _spins_all_through(tree, limb))
+        and (len(limb.joints) >= long_legs or not _spins_all_through(tree, limb))
     ]
+
+
+def _spins_on_the_body(tree: JointTree) -> bool:
+    """An endless joint carrying nothing that moves turns on the root's rigid body (a wheel, a
+    rotor)."""
+    known: dict[str, str | None] = {}
+    movable = [joint for joint in tree.urdf.joints if joint.movable]
+    above = {joint.name: moved_by(tree.urdf, joint.parent, known) for joint in movable}
+    carrying = set(above.values())
+    return any(
+        joint.endless and joint.name not in carrying and above[joint.name] is None
+        for joint in movable
+    )
 
 
 # A chain of endless joints is a leg only when as long as a humanoid's leg (hip, knee, ankle);
 # shorter, it may be a caster's swivel and wheel, or an arm hanging at rest on a wheeled base.
 _ENDLESS_LEG_JOINTS = 5
+_NO_LENGTH = 10**6  # no chain is so long
 
 
 def _spins_all_through(tree: JointTree, limb: Limb) -> bool:
@@ -950,8 +966,9 @@ def _pair_above(
     :func:`_trunk_above` reads it), start mirrored across it higher than ``hips``: a pair of
     arms above a pair of legs (a head's two ears turn on one joint each, a camera's pan and
     tilt are a head; a few chains only are compared, pair by pair). Mirrored across the root's
-    frame, or across the plane the legs' hips are mirrored about (a CAD export whose body frame
-    is not on the robot's middle)."""
+    frame, or, chains of three joints or more (an arm's shoulder and elbow, no antenna's or
+    eye's two hinges), across the plane the legs' hips are mirrored about (a CAD export whose
+    body frame is not on the robot's middle)."""
     depth: dict[str, int] = {}
     above = [
         limb
@@ -967,15 +984,21 @@ def _pair_above(
         return False
     (a, _), (b, _) = placed[id(pair[0])], placed[id(pair[1])]
     middle = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2, 0.0)
+    origins = ((0.0, 0.0, 0.0), middle)
     return any(
         len(one.joints) == len(other.joints)
         and any(
             _mirrored_either_way(minus(placed[id(one)][0], at), minus(placed[id(other)][0], at))
-            for at in ((0.0, 0.0, 0.0), middle)
+            for at in origins[: 2 if len(one.joints) >= _ARM_ABOVE_JOINTS else 1]
         )
         for index, one in enumerate(above)
         for other in above[index + 1 :]
     )
+
+
+# Chains this long at least are arms above legs when mirrored about the hips' plane off the
+# root's frame (two hinges may be a head's antennae or eyes).
+_ARM_ABOVE_JOINTS = 3
 
 
 def _trunk_above(
@@ -2459,9 +2482,9 @@ def named_wheeled_snake(
     """A robot named a snake (:func:`_named_snake`) whose one chain of turning joints, as long
     as a snake (``spine_min_joints``) in equal modules, runs link after link from the root, and
     whose ``wheels`` each turn on a link of that chain: a snake on passive wheels (as Hirose's
-    Active Cord Mechanism glides; its hinges may all turn about the vertical), its chain the
-    spine, no base's mount. Returns the limbs (the spine alone) and the wheels it carries; else
-    what it was given and none."""
+    Active Cord Mechanism glides; its hinges may all turn about the vertical; the wheels as
+    :func:`_wheel_per_module` says), its chain the spine, no base's mount. Returns the limbs
+    (the spine alone) and the wheels it carries; else what it was given and none."""
     unchanged: tuple[list[Limb], list[str]] = (limbs, [])
     if len(limbs) != 1 or not wheels or limbs[0].gripper:
         return unchanged
@@ -2477,18 +2500,35 @@ def named_wheeled_snake(
         or _limb_joint_words(joints)
     ):
         return unchanged
-    links = {tree.urdf.root, *(joint.child for joint in joints)}
-    known: dict[str, str | None] = {}
-    wheel_joints = [tree.urdf.joint(name) for name in wheels]
-    if not all(
-        joint is not None and _carrier(tree, joint.parent, known) in links for joint in wheel_joints
-    ):
+    if not _wheel_per_module(tree, joints, wheels):
         return unchanged
     why = (
         f"a chain of {len(joints)} turning joints in equal modules on {len(wheels)} wheel(s),"
         f" on a robot named a snake ({shown(tree.urdf.name)}): a spine on passive wheels"
     )
     return [replace(limb, kind="spine", why=why)], list(wheels)
+
+
+def _wheel_per_module(tree: JointTree, joints: list[Joint], wheels: list[str]) -> bool:
+    """Every wheel turns on the root or a link of the chain of ``joints``, no controller
+    drives any (a snake's wheels glide; a base's are driven), half the chain's modules carry
+    one at least, and the root no more than a module does (a base under a long arm carries
+    them all; a snake's head module one, as the others)."""
+    if any(name in tree.urdf.controlled_joints for name in wheels):
+        return False
+    known: dict[str, str | None] = {}
+    on: dict[str, int] = {}
+    for name in wheels:
+        joint = tree.urdf.joint(name)
+        if joint is None:
+            return False
+        carrier = _carrier(tree, joint.parent, known)
+        on[carrier] = on.get(carrier, 0) + 1
+    modules = [joint.child for joint in joints]
+    if not set(on) <= {tree.urdf.root, *modules}:
+        return False
+    carried = [on[link] for link in modules if link in on]
+    return 2 * len(carried) >= len(modules) and on.get(tree.urdf.root, 0) <= max(carried)
 
 
 def _pads(tree: JointTree, limbs: list[Limb]) -> bool:

@@ -83,9 +83,9 @@ _SIDE = re.compile(r"(^|[_/-])(l|r|left|right)([_/-]|$)", re.IGNORECASE)
 _LAST_SIDE = re.compile(r"[_/-](l|r|left|right)$", re.IGNORECASE)
 # A link named for a camera (``camera_link``, ``link_nav_cam``, ``bb2_cam``; not ``camshaft``).
 _CAMERA_LINK = re.compile(r"cam(era)?([^a-z]|$)|realsense|kinect|openni|xtion", re.IGNORECASE)
-# A camera named for a stereo camera: ``stereo`` anywhere in its name, or a ZED's
-# (Stereolabs' stereo cameras, ``zed2_left_camera_sensor``), as the profile's frames read them.
-_STEREO_NAME = re.compile(r"stereo|(^|[_/-])zed", re.IGNORECASE)
+# A camera named for a ZED, Stereolabs' stereo camera (``zed2_left_camera_sensor``), as the
+# profile's frames read them.
+_ZED_NAME = re.compile(r"(^|[_/-])zed", re.IGNORECASE)
 # A stereo pair in a camera's topic: ``stereo`` as a word (``/stereo/left/image_raw``,
 # stereo_image_proc's layout; ``/front_stereo/left``, ``/stereo_camera/right``), not
 # ``stereographic``.
@@ -571,13 +571,14 @@ def _stream_of(
 
 
 def _stereo_pairs(found: list[Detection], urdf: Urdf) -> list[Detection]:
-    """Two cameras that are one stereo camera, where the first of them was: named stereo (or
-    for a ZED), with names that differ only by a side (``wide_stereo_l_...`` and
-    ``wide_stereo_r_...``, ``zed2_left_camera_sensor`` and ``zed2_right_...``); with
+    """Two cameras that are one stereo camera, where the first of them was: named stereo, with
+    names that differ only by a side (``wide_stereo_l_...`` and ``wide_stereo_r_...``); with
     topics that differ only by a side beside a ``stereo`` word (``/stereo/left/image_raw``
-    and ``/stereo/right/image_raw``: :func:`_image_topic`) or with one name on two frames
-    that differ only by a side (``duo3d_left_link`` and ``duo3d_right_link``), on one rigid
-    body a stereo baseline apart and facing one way (:func:`_side_by_side`); or on
+    and ``/stereo/right/image_raw``: :func:`_image_topic`), or names for a ZED that differ only
+    by a side (``zed2_left_camera_sensor``, ``zed2_right_...``; two ZEDs of one macro, named
+    alike, pair by their frames), or with one name on two frames that differ only by a side
+    (``duo3d_left_link`` and ``duo3d_right_link``), on one rigid body a stereo baseline apart
+    and facing one way (:func:`_side_by_side`); or on
     one frame named for a camera, not the root, named for one device and then a side
     (``nav_cam/left`` and ``nav_cam/right``, a stereo head's two channels; ``left_eye_camera``
     and ``right_eye_camera`` are two eyes: :func:`_stereo_head`)."""
@@ -586,9 +587,11 @@ def _stereo_pairs(found: list[Detection], urdf: Urdf) -> list[Detection]:
         key = _pair_key(detection, urdf) if detection.kind == "camera" else None
         if key is not None:
             pairs.setdefault(key, []).append(detection)
-    # Topics that pair no two cameras (two rigs of one macro, each on its own frames, publish
-    # alike): those cameras pair as their frames say.
-    for key in [key for key, group in pairs.items() if key[0] == "topic" and len(group) != 2]:
+    # Topics or ZED names that pair no two cameras (two rigs of one macro, each on its own
+    # frames, publish or are named alike): those cameras pair as their frames say.
+    for key in [
+        key for key, group in pairs.items() if key[0] in ("topic", "zed") and len(group) != 2
+    ]:
         for detection in pairs.pop(key):
             fallback = _pair_key(detection, urdf, by_topic=False)
             if fallback is not None:
@@ -599,7 +602,7 @@ def _stereo_pairs(found: list[Detection], urdf: Urdf) -> list[Detection]:
     for key, pair in pairs.items():
         if len(pair) != 2:
             continue
-        if key[0] in ("frame", "topic"):
+        if key[0] in ("frame", "topic", "zed"):
             poses = poses or [Poses(urdf)]
             if not _side_by_side(pair[0], pair[1], poses[0], known):
                 continue
@@ -620,13 +623,19 @@ def _pair_key(
     detection: Detection, urdf: Urdf, *, by_topic: bool = True
 ) -> tuple[str, str, str] | None:
     """What a camera and the other side of its stereo pair share (by what, name, frame), as
-    :func:`_stereo_pairs` tells them (``by_topic``: a stereo topic naming a side counts);
+    :func:`_stereo_pairs` tells them (``by_topic``: a stereo topic or a ZED's name naming a side
+    counts; else a ZED pairs by its frames);
     None for a camera no pair can hold."""
-    if _STEREO_NAME.search(detection.name):
+    if "stereo" in detection.name.lower():
         return ("name", _unsided(detection.name), "")
     topic = detection.topic
     if by_topic and _STEREO_TOPIC.search(topic) and _SIDE.search(topic):
         return ("topic", _unsided(topic), "")
+    if _ZED_NAME.search(detection.name) and _SIDE.search(detection.name):
+        if by_topic:
+            return ("zed", _unsided(detection.name), "")
+        if detection.link is not None and _SIDE.search(detection.link):
+            return ("frame", _unsided(detection.name), _unsided(detection.link))
     if detection.link is not None and _SIDE.search(detection.link):
         return ("frame", detection.name, _unsided(detection.link))
     if _stereo_head(detection, urdf):

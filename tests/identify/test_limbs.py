@@ -444,10 +444,11 @@ def test_a_snake_of_two_joint_modules_with_passive_side_wheels_is_still_a_spine(
     }
 
 
-def yawing_snake_on_wheels(name: str, modules: int = 8) -> str:
+def yawing_snake_on_wheels(name: str, modules: int = 8, *, driven: bool = False) -> str:
     """``modules`` modules 0.1 m apart, each after the first on a hinge about the vertical, each
     gliding on one wheel named so (a continuous joint about its own axle): a planar snake on
-    passive wheels, as Hirose's Active Cord Mechanism."""
+    passive wheels, as Hirose's Active Cord Mechanism (``driven``: a transmission on each
+    wheel)."""
     robot = RobotText(name, root="m1")
     link = "m1"
     for i in range(1, modules + 1):
@@ -457,6 +458,20 @@ def yawing_snake_on_wheels(name: str, modules: int = 8) -> str:
             robot, f"wheel_{i}", "continuous", link, f"wheel_link_{i}", xyz="0 0 -0.03",
             axis="0 1 0",
         )  # fmt: skip
+        if driven:
+            robot.add(builders.transmission(f"wheel_{i}"))
+    return robot.text()
+
+
+def rover_named_a_snake_with_a_long_arm() -> str:
+    """A base named ``snake_inspection_rover`` on four wheels, carrying an unnamed chain of six
+    hinges 0.1 m apart: the wheels all on the base, none on the chain."""
+    robot = RobotText("snake_inspection_rover")
+    builders.wheeled_base(robot, 4)
+    link = robot.root
+    for i in range(6):
+        axis = "0 0 1" if i % 2 == 0 else "0 1 0"
+        link = builders.placed(robot, f"c{i}", "revolute", link, f"cl{i}", xyz="0.1 0 0", axis=axis)
     return robot.text()
 
 
@@ -469,6 +484,14 @@ def test_a_robot_named_a_snake_gliding_on_a_wheel_per_module_is_a_spine_not_a_ba
     assert identify_urdf(yawing_snake_on_wheels("train")).structure == "UGV"
     # A snake's name, but too few modules for a snake's length: a base with its hinges.
     assert identify_urdf(yawing_snake_on_wheels("snake_robot", modules=4)).structure == "UGV"
+    # Wheels a controller drives are a base's, not a gliding snake's.
+    driven = yawing_snake_on_wheels("snake_robot", driven=True)
+    assert identify_urdf(driven).structure == "UGV"
+
+
+def test_a_base_named_a_snake_carrying_a_long_arm_keeps_its_wheels_and_its_arm() -> None:
+    # Its wheels are all on the base, none on the chain: no snake's modules glide on them.
+    assert identify_urdf(rover_named_a_snake_with_a_long_arm()).structure == "Mobile Manipulator"
 
 
 def test_a_chain_named_as_an_arm_with_leaves_on_it_is_no_spine() -> None:
@@ -2299,6 +2322,22 @@ def test_legs_whose_every_joint_is_written_continuous_with_no_limit_are_still_le
     assert sorted(limb.kind for limb in result.body.limbs) == ["arm", "arm", "leg", "leg"]
 
 
+def test_endless_arms_hanging_at_rest_on_a_wheeled_base_stay_arms() -> None:
+    # The same long endless chains beside wheels turning on the body: a base's arms at rest.
+    robot = RobotText("r", root="torso")
+    for side, y in (("a", 0.2), ("b", -0.2)):
+        placed_chain(
+            robot, "torso", f"{side}j", start=f"0 {y} -0.05", steps=["0 0 -0.1"] * 4,
+            kind="continuous",
+        )  # fmt: skip
+    for side, y in (("l", 0.25), ("r", -0.25)):
+        builders.placed(
+            robot, f"w{side}", "continuous", "torso", f"w{side}_link", xyz=f"0 {y} -0.6",
+            axis="0 1 0",
+        )  # fmt: skip
+    assert identify_urdf(robot.text()).structure != "Biped"
+
+
 def test_legs_hanging_side_by_side_about_a_middle_off_the_roots_origin_are_legs() -> None:
     # Hips at y = 0.16 and -0.04: not across the root's origin as far out each way, but at one
     # height and one place along the body, mirror images about the plane y = 0.06.
@@ -2950,9 +2989,14 @@ def test_arms_mirrored_about_the_legs_middle_off_the_roots_frame_make_the_legs_a
     assert identify_urdf(drawn.text()).structure == "Humanoid"
     drawn = nameless_humanoid_drawn_from_its_feet(aside=0.3, facing_y=True)
     assert identify_urdf(drawn.text()).structure == "Humanoid"
-    # Ears on a head still say nothing, wherever the frame is.
+    # Ears on a head still say nothing, wherever the frame is; nor, off the frame, do two
+    # chains of two hinges (a head's antennae or eyes as well as arms).
     ears = nameless_humanoid_drawn_from_its_feet(arms=False, aside=0.3)
     assert identify_urdf(ears.text()).structure not in ("Biped", "Humanoid")
+    robot = nameless_humanoid_drawn_from_its_feet(upper=False, aside=0.3)
+    for side, y in (("c", 0.48), ("d", 0.12)):
+        placed_chain(robot, robot.root, f"{side}j", start=f"0 {y} 0.75", steps=["0 0 -0.06"])
+    assert identify_urdf(robot.text()).structure not in ("Biped", "Humanoid")
 
 
 def test_two_chains_hanging_to_the_feet_of_a_root_drawn_there_with_nothing_else_are_legs() -> None:

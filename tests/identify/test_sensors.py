@@ -427,14 +427,41 @@ def test_a_stereo_pair_declared_as_two_cameras_is_one_stereo_camera() -> None:
     ]
 
 
-def test_a_zeds_two_sided_cameras_are_one_stereo_camera() -> None:
-    # Stereolabs' ZED 2, each side declared as a camera on its own optical frame.
+def zeds(*rigs: tuple[str, float, float]) -> list[tuple[str, str]]:
+    """A ZED 2 per rig (prefix, x, yaw), each side a camera named ``zed2_<side>_camera_sensor``
+    (one macro's names) on an optical frame of its own 6 cm apart across the rig."""
     robot = builders.ugv()
-    for side in ("left", "right"):
-        frame = f"zed2_{side}_camera_optical_frame"
-        robot.add(builders.gazebo_sensor(frame, "camera", f"zed2_{side}_camera_sensor"))
-    found = [(d.kind, d.name) for d in sensors_from_urdf(parse_urdf(robot.text()), load_profile())]
-    assert found == [("stereo_camera", "zed2_left+right_camera_sensor")]
+    for prefix, x, yaw in rigs:
+        for side, y in (("left", 0.03), ("right", -0.03)):
+            frame = f"{prefix}zed2_{side}_camera_optical_frame"
+            builders.placed(
+                robot, f"{frame}_joint", "fixed", "base_link", frame,
+                xyz=f"{x} {y} 0.3", rpy=f"0 0 {yaw}",
+            )  # fmt: skip
+            robot.add(builders.gazebo_sensor(frame, "camera", f"zed2_{side}_camera_sensor"))
+    return [(d.kind, d.name) for d in sensors_from_urdf(parse_urdf(robot.text()), load_profile())]
+
+
+def test_a_zeds_two_sided_cameras_are_one_stereo_camera() -> None:
+    # Stereolabs' ZED 2, each side declared as a camera on its own optical frame; two of one
+    # macro, named alike, front and rear, pair by their frames.
+    assert zeds(("", 0.2, 0)) == [("stereo_camera", "zed2_left+right_camera_sensor")]
+    assert [kind for kind, _ in zeds(("front_", 0.3, 0), ("rear_", -0.3, 3.14))] == [
+        "stereo_camera",
+        "stereo_camera",
+    ]
+
+
+def test_two_zeds_cameras_far_apart_looking_away_stay_two_cameras() -> None:
+    robot = builders.ugv()
+    for side, y, yaw in (("left", 0.4, 1.57), ("right", -0.4, -1.57)):
+        builders.placed(
+            robot, f"{side}_mount", "fixed", "base_link", f"{side}_zed_link",
+            xyz=f"0 {y} 0.3", rpy=f"0 0 {yaw}",
+        )  # fmt: skip
+        robot.add(builders.gazebo_sensor(f"{side}_zed_link", "camera", f"{side}_zed_camera"))
+    found = [d.kind for d in sensors_from_urdf(parse_urdf(robot.text()), load_profile())]
+    assert found == ["camera", "camera"]
 
 
 @pytest.mark.parametrize("sides", [("left", "right"), ("l", "r")])
