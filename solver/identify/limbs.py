@@ -901,7 +901,7 @@ def _leg_candidates(
     every joint continuous, with no limit, as a kid-size humanoid's of 2013 does, still hangs
     its legs so; a wheeled base's arms drawn so hang at rest beside its wheels)."""
     turns: dict[str, int] = {}
-    long_legs = _ENDLESS_LEG_JOINTS if not _spins_on_the_body(tree) else _NO_LENGTH
+    endless_legs = not _spins_on_the_body(tree)
     return [
         limb
         for limb in limbs
@@ -911,7 +911,10 @@ def _leg_candidates(
         and len(limb.joints) >= _LEG_JOINTS[0]
         and id(limb) in placed
         and _on_the_trunk(tree, limb.base, turns)
-        and (len(limb.joints) >= long_legs or not _spins_all_through(tree, limb))
+        and (
+            (endless_legs and len(limb.joints) >= _ENDLESS_LEG_JOINTS)
+            or not _spins_all_through(tree, limb)
+        )
     ]
 
 
@@ -931,7 +934,6 @@ def _spins_on_the_body(tree: JointTree) -> bool:
 # A chain of endless joints is a leg only when as long as a humanoid's leg (hip, knee, ankle);
 # shorter, it may be a caster's swivel and wheel, or an arm hanging at rest on a wheeled base.
 _ENDLESS_LEG_JOINTS = 5
-_NO_LENGTH = 10**6  # no chain is so long
 
 
 def _spins_all_through(tree: JointTree, limb: Limb) -> bool:
@@ -2865,8 +2867,8 @@ def bolted_chain(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
     driven = all(name in tree.urdf.controlled_joints for name in limb.joints)
     if len(limb.joints) < 2 or not _on_the_root(tree, limb.base):
         return limbs
-    name = tree.urdf.name
-    named = _named_arm(name) and not _LEGGED_NAME.search(name)
+    robot = tree.urdf.name
+    named = _named_arm(robot) and not _LEGGED_NAME.search(robot)
     if not (_world_root(tree) or driven or named):
         return limbs
     pan, tilt = (tree.urdf.joint(name) for name in limb.joints[:2])
@@ -2879,7 +2881,7 @@ def bolted_chain(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
         return limbs  # a pan/tilt unit bolted down is still a head
     what = "carrying a sensor" if limb.kind == "head" else "of no limb's name"
     bolted = (
-        "fixed to the world" if _world_root(tree) or driven else f"of a robot named {shown(name)}"
+        "fixed to the world" if _world_root(tree) or driven else f"of a robot named {shown(robot)}"
     )
     why = (
         f"the body's only limb, an unnamed chain of {len(limb.joints)} joints on a root"

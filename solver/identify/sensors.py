@@ -624,8 +624,7 @@ def _pair_key(
 ) -> tuple[str, str, str] | None:
     """What a camera and the other side of its stereo pair share (by what, name, frame), as
     :func:`_stereo_pairs` tells them (``by_topic``: a stereo topic or a ZED's name naming a side
-    counts; else a ZED pairs by its frames);
-    None for a camera no pair can hold."""
+    counts; else a ZED pairs by its frames); None for a camera no pair can hold."""
     if "stereo" in detection.name.lower():
         return ("name", _unsided(detection.name), "")
     topic = detection.topic
