@@ -248,12 +248,18 @@ class _Package:
     # Package names this package writes (its package.xml and its files), once all are known.
     mentions: set[str] = field(default_factory=set)
     files: list[ShippedFile] = field(default_factory=list)
-    # How many robot descriptions it holds (:data:`DESCRIPTION_SUFFIXES`).
-    descriptions: int = 0
+    # The names of the robot descriptions it holds (:data:`DESCRIPTION_SUFFIXES`).
+    described: list[str] = field(default_factory=list)
 
     @property
-    def describes(self) -> bool:
-        return self.descriptions > 0
+    def descriptions(self) -> int:
+        return len(self.described)
+
+    def describes_another(self, names: frozenset[str]) -> bool:
+        """It holds a description of a robot but the one ``names`` name (:func:`_robot_folders`):
+        a description file whose name is not one of them (``arlobot.urdf``, the robot's own
+        file made from the xacro source elsewhere, is no other robot's)."""
+        return any(name.split(".", 1)[0].lower() not in names for name in self.described)
 
 
 @dataclass(slots=True)
@@ -289,7 +295,8 @@ def read_workspace(
     core = _core(own, list(packages.values()), robot)
     ordered = _reading_order(core, list(packages.values()))
     _read_all(ordered, top, budget)
-    if _one_robots(own, ordered, top, named=root is not None, budget=budget):
+    same = _robot_folders("", robot)
+    if _one_robots(own, ordered, top, named=root is not None, budget=budget, same=same):
         ours = ordered
     else:
         ours = _robots_packages(core, ordered)
@@ -360,7 +367,10 @@ def read_repository(
         own.files = [f for f in own.files if _names_robot(f, words, folders)]
     # The packages inside are the robot's when none holds another description; no package
     # uses the repository's files by its folder's name (``main``, ``repo``: any word).
-    ours = ordered if _one_robots(own, ordered, top, named=True, budget=budget) else [own]
+    same = _robot_folders(description, robot)
+    ours = (
+        ordered if _one_robots(own, ordered, top, named=True, budget=budget, same=same) else [own]
+    )
     return _workspace("repository", top, own=own, ours=ours, ordered=ordered, budget=budget)
 
 
@@ -405,16 +415,27 @@ _DISTINCTIVE = re.compile(r"(?=.{4,200}$)(?=.*[_\-0-9])[A-Za-z0-9_.\-]+")
 
 
 def _one_robots(
-    own: _Package, packages: list[_Package], top: str, *, named: bool, budget: _Budget
+    own: _Package,
+    packages: list[_Package],
+    top: str,
+    *,
+    named: bool,
+    budget: _Budget,
+    same: frozenset[str],
 ) -> bool:
     """The workspace is the robot's alone, every package of it the robot's: a source
     workspace (a ``src`` folder, or one the caller names) walked whole in which no package but
-    the description's holds a robot description (a repository of one robot: its navigation,
-    mission and arm packages need not name the description's package, as one named
+    the description's holds a description of another robot than the one ``same`` names
+    (:meth:`_Package.describes_another`; a repository of one robot: its navigation, mission
+    and arm packages need not name the description's package, as one named
     ``robot_description`` is not named as a package). An install space or a ``share`` folder
     holds every installed package, none of them the robot's for that."""
     source = named or os.path.basename(top) == "src"
-    return source and not budget.stopped and not any(p.describes for p in packages if p is not own)
+    return (
+        source
+        and not budget.stopped
+        and not any(p.describes_another(same) for p in packages if p is not own)
+    )
 
 
 def _stem(name: str) -> str | None:
@@ -546,7 +567,7 @@ def _walk(
             )
         if owner is not None:
             owner.paths += [os.path.join(folder, name) for name in _texts(folder, files)]
-            owner.descriptions += sum(name.endswith(DESCRIPTION_SUFFIXES) for name in files)
+            owner.described += [name for name in files if name.endswith(DESCRIPTION_SUFFIXES)]
         elif _install_prefix(folder, subfolders):
             # An install prefix: its packages are in share/NAME; its libraries and headers
             # belong to none (read nothing, and would spend the walk's bound).

@@ -125,10 +125,12 @@ def test_a_description_in_a_package_named_for_the_robot_its_urdf_names_takes_in_
     tmp_path: Path,
 ) -> None:
     # No jackal_description: the URDF in jackal_bringup names the robot ``jackal``, and the
-    # bringup's name begins with it; a URDF naming another robot takes in nothing more.
+    # bringup's name begins with it; a URDF naming another robot takes in nothing more (one
+    # the workspace holds no description of: a URDF naming ``husky`` is the Husky's, whose
+    # description is there, and the workspace is then one robot's).
     described = beside_two_navigations(tmp_path / "src", "jackal_bringup")
     assert read(described, robot="Jackal").packages == ("jackal_bringup", "jackal_navigation")
-    for robot in (None, "husky", "jackal_bringup"):
+    for robot in (None, "summit", "jackal_bringup"):
         assert read(described, robot=robot).packages == ("jackal_bringup",)
 
 
@@ -737,6 +739,23 @@ def test_a_second_description_in_the_workspace_leaves_the_others_unread(tmp_path
     assert read(described).packages == ("robot_description",)
 
 
+def test_a_second_copy_of_the_robots_own_description_leaves_the_workspace_the_robots(
+    tmp_path: Path,
+) -> None:
+    # The bringup package keeps the URDF made from the description's xacro, named for the
+    # robot: the same robot's file, no other robot's.
+    src = tmp_path / "ws" / "src"
+    described = one_robots_repository(src)
+    package(src, "amr_bringup", {"urdf/amr.urdf": "<robot name='amr'/>"})
+    found = read(described, robot="amr")
+    assert found.packages == (
+        "robot_description",
+        "amr_bringup",
+        "mission_manager",
+        "robot_navigation",
+    )
+
+
 def test_a_folder_that_is_no_source_workspace_is_nobodys_whole(tmp_path: Path) -> None:
     # Packages beside one another in a folder not named src (a share folder of installed
     # packages): only the caller, naming it the robot's workspace, makes it one robot's.
@@ -818,6 +837,26 @@ def test_the_ros_packages_inside_a_repository_are_read_as_a_workspaces(tmp_path:
     assert found is not None
     assert found.packages == ("ship", "ship_control")
     assert files_of(found) == ["ship_control/scripts/drive.py"]
+
+
+def test_a_package_keeping_the_robots_urdf_made_from_the_repositorys_xacro_is_the_robots(
+    tmp_path: Path,
+) -> None:
+    # The xacro source outside any package; the ROS package beside it holds the URDF made
+    # from it (named for the robot), its drive node and its navigation.
+    root = repository(tmp_path / "rover", {"xacro/common.urdf.xacro": "<robot name='rover'/>"})
+    package(
+        root,
+        "rover_ros",
+        {"rover.urdf": "<robot name='rover'/>", "launch/robot.py": "teleop_twist_joy"},
+    )
+    found = read_repository(root, root / "xacro" / "common.urdf.xacro", "rover")
+    assert found is not None
+    assert found.packages == ("rover", "rover_ros")
+    assert files_of(found) == ["rover_ros/launch/robot.py"]
+    other = read_repository(root, root / "xacro" / "common.urdf.xacro", "lander")
+    assert other is not None
+    assert other.packages == ("rover",)
 
 
 def test_a_repository_that_is_no_folder_is_no_evidence(tmp_path: Path) -> None:
