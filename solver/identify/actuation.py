@@ -106,11 +106,15 @@ _DEEPEST_WALK = 64
 # A name that says only which corner of the body a part is at (``rear_left_joint``,
 # ``front_right``): the leg pattern's word for a four-legged body's legs, and as often a wheel's.
 # Matched whole, after any namespace (``robot1/rear_left_joint``), with a word for a joint or
-# a link, or for the joint's type (``right_front_rev``), before or after. Its corner words are
-# the leg pattern's (rules/identification.yaml, ``leg``).
+# a link, or for the joint's type (``right_front_rev``), before or after, or the body it hangs
+# from named first (``base_to_front_left``, the URDF tutorial's parent_to_child). Its corner
+# words are the leg pattern's (rules/identification.yaml, ``leg``).
 _JOINT_WORD = r"(?:joint|link|jnt|lnk|j|l|rev|revolute|cont|continuous)"
+_FROM_THE_BODY = r"(?:(?:base|body|chassis|frame|hull|platform)(?:_link)?_to_)"
 _ONLY_A_CORNER = re.compile(
-    rf"(?:[\w.-]+/)*(?:{_JOINT_WORD}[_-]?)?" + CORNER + rf"(?:[_-]?{_JOINT_WORD})?[_\d]*",
+    rf"(?:[\w.-]+/)*(?:{_FROM_THE_BODY}|{_JOINT_WORD}[_-]?)?"
+    + CORNER
+    + rf"(?:[_-]?{_JOINT_WORD})?[_\d]*",
     re.IGNORECASE,
 )
 # Wheel-legged robots roll on two legs' wheels or four (bipeds, quadrupeds).

@@ -310,7 +310,10 @@ def find_limbs(
             chain.append(children[chain[-1].name][0])
         branches = children.get(chain[-1].name, [])
         starts.extend(branches)
-        if branches and not _tool_leaves(tree, chain, branches, (children, carries)):
+        if branches and not (
+            _tool_leaves(tree, chain, branches, (children, carries))
+            or _hand_leaves(tree, chain, branches, children)
+        ):
             trunk.extend(j.name for j in chain)
             continue
         limbs.append(_classify(tree, chain, chain[0].parent, _marks(chain, carries), flying))
@@ -352,6 +355,52 @@ def _tool_leaves(
 
 # A parallel gripper's jaws: two slides.
 _JAWS = 2
+# A hand at an unnamed arm's end has at least this many fingers (two are a gripper's jaws, or
+# a head's antennas: :func:`_tool_leaves`).
+_HAND_FINGERS = 3
+# Every link of a hand's fingers lies this close (metres) to where the arm ends (a hand's
+# length; the sets' hands and three-finger grippers reach under 0.25 m)...
+_HAND_REACH = 0.3
+# ...and the arm reaches at least this many times as far as the hand does: a trunk's limbs are
+# as long as the trunk.
+_ARM_TO_HAND = 2.0
+
+
+def _hand_leaves(
+    tree: JointTree, chain: list[Joint], branches: list[Joint], children: dict[str, list[Joint]]
+) -> bool:
+    """The chain is an unnamed arm's and its branches the fingers of a hand at its end: it is
+    long enough to be an arm, no name says what it is, and it branches into fingers, three or
+    more, or two that bend (two joints or more each: a head's antennas or ears are single
+    hinges), each no longer than a finger and branching no further, whose links all lie within
+    a hand's reach (:data:`_HAND_REACH`) of the link the chain ends on, and the chain reaches
+    from where it starts several times as far (:data:`_ARM_TO_HAND`): a three-finger hand on a
+    six-joint arm, its fingers' first joints coupled to one actuator; a servo arm's two
+    two-joint fingers. The chain's reach is measured along its links (an arm may be folded at
+    rest). A trunk branches into limbs as long as itself (a torso's arms, a body's legs)."""
+    if len(chain) < tree.profile.limb("arm_min_joints") or len(branches) < _JAWS:
+        return False
+    if any(_name_scores(tree, chain).values()):
+        return False
+    longest = tree.profile.limb("finger_max_joints")
+    palm = tree.poses.place(chain[-1].child)
+    farthest = 0.0
+    bending = True
+    for first in branches:
+        finger = [first]
+        while len(below := children.get(finger[-1].name, [])) == 1:
+            finger.append(below[0])
+        if children.get(finger[-1].name) or len(finger) > longest:
+            return False
+        bending = bending and len(finger) > 1
+        farthest = max(
+            farthest, *(distance(tree.poses.place(joint.child), palm) for joint in finger)
+        )
+    if len(branches) < _HAND_FINGERS and not bending:
+        return False
+    places = [tree.poses.place(chain[0].parent), *(tree.poses.place(j.child) for j in chain)]
+    reach = sum(distance(one, other) for one, other in pairwise(places))
+    return farthest <= _HAND_REACH and reach >= _ARM_TO_HAND * max(farthest, _HAND_REACH / 2)
 
 
 # A humanoid's two pairs of limbs: one pair found, the other sought among one-joint chains.
@@ -2395,6 +2444,14 @@ def camera_arm(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     return [replace(limbs[0], kind="arm", why=why)]
 
 
+def _named_as_arm(tree: JointTree, limb: Limb) -> bool:
+    """More of the limb's joints (with their links) are named as an arm's than as any other
+    limb's, and some are."""
+    joints = [joint for name in limb.joints if (joint := tree.urdf.joint(name)) is not None]
+    scores = _name_scores(tree, joints)
+    return scores["arm"] > 0 and scores["arm"] == max(scores.values())
+
+
 def _named_arm(name: str) -> bool:
     """The robot's name says an arm or a manipulator as a word (:data:`_ARM_NAME`), a
     camelCase name split into its words first (``SimpleArm``)."""
@@ -2853,15 +2910,18 @@ def _square_turns(tree: JointTree, first: Joint, second: Joint) -> bool:
 
 
 def bolted_chain(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
-    """A short unnamed chain, the body's only limb, hanging from a root fixed to ``world`` (or
+    """A short chain, unnamed or named as an arm's (too short for its names to make it one:
+    ``arm_link`` on a turret), the body's only limb, hanging from a root fixed to ``world`` (or
     every joint of it driven by a controller, or on a robot whose name says an arm or a
     manipulator and nothing that walks) on a body that does not move: the base is bolted
     down and the chain is what it is there for. It is an arm (of two joints or more), whether
     it carries a sensor at its tip (read as a pan/tilt unit only for that) or nothing the names
     tell (a two-link teaching arm)."""
-    if moves or len(limbs) != 1 or limbs[0].kind not in ("head", "other") or limbs[0].named:
+    if moves or len(limbs) != 1 or limbs[0].kind not in ("head", "other"):
         return limbs
     limb = limbs[0]
+    if limb.named and not _named_as_arm(tree, limb):
+        return limbs  # its names made it what it is
     # Bolted down: the root fixed to the world, or every joint of the chain commanded by a
     # controller (a transmission or ros2_control) on a body that does not move itself.
     driven = all(name in tree.urdf.controlled_joints for name in limb.joints)
@@ -2879,15 +2939,22 @@ def bolted_chain(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
         and _square_turns(tree, pan, tilt)
     ):
         return limbs  # a pan/tilt unit bolted down is still a head
-    what = "carrying a sensor" if limb.kind == "head" else "of no limb's name"
-    bolted = (
-        "fixed to the world" if _world_root(tree) or driven else f"of a robot named {shown(robot)}"
+    named_only = None if _world_root(tree) or driven else robot
+    return [replace(limb, kind="arm", why=_bolted_why(limb, named_only))]
+
+
+def _bolted_why(limb: Limb, robot: str | None) -> str:
+    """Why :func:`bolted_chain` reads ``limb`` as an arm: its root fixed to the world (or every
+    joint driven), or, ``robot`` given, only the robot's name."""
+    if limb.kind == "head":
+        what = "carrying a sensor"
+    else:
+        what = "named as an arm's" if limb.named else "of no limb's name"
+    root = "fixed to the world" if robot is None else f"of a robot named {shown(robot)}"
+    return (
+        f"the body's only limb, a chain of {len(limb.joints)} joints on a root {root}"
+        f" (a short arm {what})"
     )
-    why = (
-        f"the body's only limb, an unnamed chain of {len(limb.joints)} joints on a root"
-        f" {bolted} (a short arm {what})"
-    )
-    return [replace(limb, kind="arm", why=why)]
 
 
 def planar_arm(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:

@@ -1973,15 +1973,16 @@ def test_corners_under_swivels_named_for_nothing_are_a_quadrupeds_legs() -> None
     assert identify_urdf(four_wheel_steered(steer="hip").text()).structure == "Quadruped"
 
 
-def base_on_corner_leaves(word: str = "", joint: str = "_joint") -> RobotText:
+def base_on_corner_leaves(word: str = "", joint: str = "_joint", prefix: str = "") -> RobotText:
     """A CAD export's base: four endless leaves named only for the corner they sit at
     (``rear_left_joint`` turning ``rear_left_link``), below the body about axles across it;
-    ``word`` added to each name (``leg``) says what they are; ``joint`` ends the joints'."""
+    ``word`` added to each name (``leg``) says what they are; ``joint`` ends the joints' and
+    ``prefix`` begins them."""
     robot = RobotText("export", root="base_link")
     for corner, (x, y) in CORNERS.items():
         builders.placed(
             robot,
-            f"{corner}{word}{joint}",
+            f"{prefix}{corner}{word}{joint}",
             "continuous",
             "base_link",
             f"{corner}{word}_link",
@@ -1997,6 +1998,22 @@ def test_endless_leaves_named_only_for_their_corner_are_wheels(joint: str) -> No
     roles = roles_of(base_on_corner_leaves(joint=joint))
     assert with_role(roles, "wheel") == [f"{c}{joint}" for c in CORNERS]
     assert identify_urdf(base_on_corner_leaves(joint=joint).text()).structure == "UGV"
+
+
+@pytest.mark.parametrize("prefix", ["base_to_", "chassis_link_to_"])
+def test_endless_leaves_named_for_the_body_they_hang_from_and_their_corner_are_wheels(
+    prefix: str,
+) -> None:
+    # The URDF tutorial's parent_to_child names (``base_to_front_left``) say where, not what.
+    robot = base_on_corner_leaves(joint="", prefix=prefix)
+    assert with_role(roles_of(robot), "wheel") == [f"{prefix}{c}" for c in CORNERS]
+    assert identify_urdf(robot.text()).structure == "UGV"
+
+
+def test_endless_leaves_named_from_a_part_of_a_limb_to_their_corner_are_no_wheels() -> None:
+    # A thigh's joint to a corner is a leg's (``thigh_to_front_left``): a part's name, no body.
+    robot = base_on_corner_leaves(joint="", prefix="thigh_to_")
+    assert not with_role(roles_of(robot), "wheel")
 
 
 def test_endless_leaves_named_for_a_leg_beside_their_corner_are_no_wheels_by_place() -> None:

@@ -1918,6 +1918,23 @@ def test_a_two_joint_chain_of_a_robot_named_an_arm_is_its_arm_though_not_bolted_
     assert f"of a robot named {name}" in result.body.limbs[0].why
 
 
+def test_a_two_joint_chain_named_as_an_arms_on_a_robot_named_an_arm_is_its_arm() -> None:
+    # A turret and a boom: too short for its names (``arm_link``) to make it an arm, but the
+    # robot's name says what it is.
+    robot = RobotText("crane_arm")
+    turret = robot.joint("joint_1", "revolute", robot.root, "turret_link")
+    robot.joint("joint_2", "revolute", turret, "arm_link")
+    result = identify_urdf(robot.text())
+    assert result.structure == "Manipulator"
+    assert result.body is not None
+    assert "named as an arm's" in result.body.limbs[0].why
+    # Named as a head's, the same chain is no arm.
+    head = RobotText("crane_arm")
+    robot_neck = head.joint("neck_pan", "revolute", head.root, "neck_link")
+    head.joint("head_tilt", "revolute", robot_neck, "head_link")
+    assert identify_urdf(head.text()).structure != "Manipulator"
+
+
 @pytest.mark.parametrize("name", ["leg_arm_rig", "double_pendulum"])
 def test_a_two_joint_chain_of_a_robot_named_otherwise_or_for_a_walker_is_no_arm(name: str) -> None:
     robot = RobotText(name)
@@ -3979,6 +3996,47 @@ def test_a_chain_named_as_nothing_whose_two_leaves_turn_stays_a_trunk() -> None:
     result = identify_urdf(two_arms_one_with_a_suction_tool(unnamed, pipe="revolute"))
     assert result.body is not None
     assert not any(limb.joints == tuple(unnamed) for limb in result.body.limbs)
+
+
+def unnamed_arm_ending_in(fingers: list[tuple[int, float]]) -> str:
+    """Six unnamed joints rising 0.15 m apart (0.9 m in all), then, on the link they end on,
+    one unnamed chain per ``fingers`` entry: that many joints, each ``length`` metres past the
+    one before, side by side 0.03 m apart."""
+    robot = RobotText("r", root="l0")
+    link = "l0"
+    for i in range(1, 7):
+        link = placed(robot, f"j{i}", "revolute", link, f"l{i}", xyz="0 0 0.15")
+    for f, (joints, length) in enumerate(fingers):
+        below, offset = link, f"{0.03 * f} 0 {length}"
+        for k in range(joints):
+            below = placed(robot, f"f{f}{k}", "revolute", below, f"fl{f}{k}", xyz=offset)
+            offset = f"0 0 {length}"
+    return robot.text()
+
+
+def test_an_unnamed_arm_ending_in_a_hands_short_fingers_is_an_arm_not_a_trunk() -> None:
+    # A three-finger hand on a six-joint arm, no name anywhere (a gripper whose fingers'
+    # first joints follow one actuator leave three short chains where the arm ends).
+    text = unnamed_arm_ending_in([(2, 0.05), (1, 0.05), (1, 0.05)])
+    result = identify_urdf(text)
+    assert result.structure == "Manipulator"
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs if len(limb.joints) == 6] == ["arm"]
+
+
+def test_an_unnamed_arm_ending_in_two_bending_fingers_is_an_arm_not_a_trunk() -> None:
+    # A servo arm's two fingers of two joints each.
+    result = identify_urdf(unnamed_arm_ending_in([(2, 0.05), (2, 0.05)]))
+    assert result.structure == "Manipulator"
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs if len(limb.joints) == 6] == ["arm"]
+
+
+def test_an_unnamed_chain_branching_into_limbs_as_long_as_a_trunks_stays_a_trunk() -> None:
+    # Three chains of three joints, each reaching 0.9 m: a trunk's arms, no hand's fingers.
+    result = identify_urdf(unnamed_arm_ending_in([(3, 0.3), (3, 0.3), (3, 0.3)]))
+    assert result.body is not None
+    assert result.body.trunk == ("j1", "j2", "j3", "j4", "j5", "j6")
 
 
 def test_an_arm_named_chain_whose_single_joints_carry_grippers_stays_a_trunk() -> None:
