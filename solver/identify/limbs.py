@@ -312,7 +312,7 @@ def find_limbs(
         starts.extend(branches)
         if branches and not (
             _tool_leaves(tree, chain, branches, (children, carries))
-            or _hand_leaves(tree, chain, branches, children)
+            or _hand_leaves(tree, chain, branches, (children, carries))
         ):
             trunk.extend(j.name for j in chain)
             continue
@@ -356,29 +356,37 @@ def _tool_leaves(
 # A parallel gripper's jaws: two slides.
 _JAWS = 2
 # A hand at an unnamed arm's end has at least this many fingers (two are a gripper's jaws, or
-# a head's antennas: :func:`_tool_leaves`).
+# a head's antennas: :func:`_tool_leaves`)...
 _HAND_FINGERS = 3
+# ...and the arm at least this many joints (the sets' arms carrying hands have six or seven; a
+# humanoid's waist or a test rig carrying legs has three).
+_HAND_ARM_JOINTS = 5
 # Every link of a hand's fingers lies this close (metres) to where the arm ends (a hand's
 # length; the sets' hands and three-finger grippers reach under 0.25 m)...
 _HAND_REACH = 0.3
-# ...and the arm reaches at least this many times as far as the hand does: a trunk's limbs are
-# as long as the trunk.
+# ...and the arm reaches at least this many times as far as the hand does.
 _ARM_TO_HAND = 2.0
 
 
 def _hand_leaves(
-    tree: JointTree, chain: list[Joint], branches: list[Joint], children: dict[str, list[Joint]]
+    tree: JointTree,
+    chain: list[Joint],
+    branches: list[Joint],
+    contracted: tuple[dict[str, list[Joint]], dict[str, set[str]]],
 ) -> bool:
-    """The chain is an unnamed arm's and its branches the fingers of a hand at its end: it is
-    long enough to be an arm, no name says what it is, and it branches into fingers, three or
-    more, or two that bend (two joints or more each: a head's antennas or ears are single
-    hinges), each no longer than a finger and branching no further, whose links all lie within
-    a hand's reach (:data:`_HAND_REACH`) of the link the chain ends on, and the chain reaches
-    from where it starts several times as far (:data:`_ARM_TO_HAND`): a three-finger hand on a
+    """The chain is an unnamed arm's and its branches the fingers of a hand at its end: it has
+    an arm's joints (:data:`_HAND_ARM_JOINTS`: a humanoid's waist, a test rig's have fewer), no
+    name says what it or any branch is, and it branches into fingers, three or more, or two
+    that bend (two joints or more each), each no longer than a finger, carrying nothing
+    (:func:`_tool_leaves`) and branching no further, whose links all lie within a hand's reach
+    (:data:`_HAND_REACH`) of the link the chain ends on, while the chain reaches, along its
+    links (an arm may be folded at rest), at least twice as far as the farthest of them
+    (:data:`_ARM_TO_HAND`, and at least as far as the hand's reach): a three-finger hand on a
     six-joint arm, its fingers' first joints coupled to one actuator; a servo arm's two
-    two-joint fingers. The chain's reach is measured along its links (an arm may be folded at
-    rest). A trunk branches into limbs as long as itself (a torso's arms, a body's legs)."""
-    if len(chain) < tree.profile.limb("arm_min_joints") or len(branches) < _JAWS:
+    two-joint fingers. Branches named as limbs are a trunk's (a torso's arms and head, a rig's
+    legs)."""
+    children, carries = contracted
+    if len(chain) < _HAND_ARM_JOINTS or len(branches) < _JAWS:
         return False
     if any(_name_scores(tree, chain).values()):
         return False
@@ -390,7 +398,12 @@ def _hand_leaves(
         finger = [first]
         while len(below := children.get(finger[-1].name, [])) == 1:
             finger.append(below[0])
-        if children.get(finger[-1].name) or len(finger) > longest:
+        if (
+            children.get(finger[-1].name)
+            or len(finger) > longest
+            or any(carries.get(joint.name) for joint in finger)
+            or any(_name_scores(tree, finger).values())
+        ):
             return False
         bending = bending and len(finger) > 1
         farthest = max(

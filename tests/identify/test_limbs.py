@@ -4039,6 +4039,35 @@ def test_an_unnamed_chain_branching_into_limbs_as_long_as_a_trunks_stays_a_trunk
     assert result.body.trunk == ("j1", "j2", "j3", "j4", "j5", "j6")
 
 
+def test_short_limbs_named_as_arms_and_a_head_on_an_unnamed_chain_leave_it_a_trunk() -> None:
+    # A small torso: six unnamed joints carrying two short named arms and a head.
+    robot = RobotText("r", root="l0")
+    link = "l0"
+    for i in range(1, 7):
+        link = placed(robot, f"j{i}", "revolute", link, f"l{i}", xyz="0 0 0.15")
+    for side, y in (("left", 0.05), ("right", -0.05)):
+        below = placed(robot, f"{side}_shoulder", "revolute", link, f"{side}_s", xyz=f"0 {y} 0")
+        placed(robot, f"{side}_elbow", "revolute", below, f"{side}_e", xyz="0 0 0.05")
+    placed(robot, "head_pan", "revolute", link, "head", xyz="0 0 0.05")
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert result.body.trunk == ("j1", "j2", "j3", "j4", "j5", "j6")
+
+
+def test_a_rig_of_three_unnamed_joints_carrying_four_short_legs_stays_a_trunk() -> None:
+    # Too few joints for an arm carrying a hand: a test rig's yaw, pitch and slide.
+    robot = RobotText("r", root="l0")
+    link = "l0"
+    for i in range(1, 4):
+        link = placed(robot, f"j{i}", "revolute", link, f"l{i}", xyz="0 0 0.2")
+    for k, (x, y) in enumerate(((0.05, 0.05), (0.05, -0.05), (-0.05, 0.05), (-0.05, -0.05))):
+        below = placed(robot, f"a{k}", "revolute", link, f"a{k}_l", xyz=f"{x} {y} -0.02")
+        placed(robot, f"b{k}", "revolute", below, f"b{k}_l", xyz="0 0 -0.05")
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert result.body.trunk == ("j1", "j2", "j3")
+
+
 def test_an_arm_named_chain_whose_single_joints_carry_grippers_stays_a_trunk() -> None:
     # Each one-joint branch carries a gripper: they are chains the trunk carries, no tool's.
     second = [f"right_arm_joint_{i}" for i in range(1, 8)]

@@ -256,7 +256,7 @@ class _Package:
         return len(self.described)
 
     def describes_another(self, names: frozenset[str]) -> bool:
-        """It holds a description of a robot but the one ``names`` name (:func:`_robot_folders`):
+        """It holds a description of a robot but the one ``names`` name (:func:`_robot_name`):
         a description file whose name is not one of them (``arlobot.urdf``, the robot's own
         file made from the xacro source elsewhere, is no other robot's)."""
         return any(name.split(".", 1)[0].lower() not in names for name in self.described)
@@ -295,7 +295,7 @@ def read_workspace(
     core = _core(own, list(packages.values()), robot)
     ordered = _reading_order(core, list(packages.values()))
     _read_all(ordered, top, budget)
-    same = _robot_folders("", robot)
+    same = _robot_name(robot)
     if _one_robots(own, ordered, top, named=root is not None, budget=budget, same=same):
         ours = ordered
     else:
@@ -367,7 +367,7 @@ def read_repository(
         own.files = [f for f in own.files if _names_robot(f, words, folders)]
     # The packages inside are the robot's when none holds another description; no package
     # uses the repository's files by its folder's name (``main``, ``repo``: any word).
-    same = _robot_folders(description, robot)
+    same = _robot_name(robot)
     ours = (
         ordered if _one_robots(own, ordered, top, named=True, budget=budget, same=same) else [own]
     )
@@ -386,6 +386,14 @@ def _robot_words(description: str | Path, robot: str | None) -> tuple[re.Pattern
         for w in dict.fromkeys(found)
         if w
     )
+
+
+def _robot_name(robot: str | None) -> frozenset[str]:
+    """The name the URDF gives the robot, lower case, as a description file of its own is
+    named (``arlobot`` for ``arlobot.urdf``); none for a name of no robot in particular
+    (``robot``, ``my_robot``). Not the description's file name: ``main.urdf.xacro`` or
+    ``common.urdf.xacro`` may name any robot's."""
+    return _robot_folders("", robot)
 
 
 def _robot_folders(description: str | Path, robot: str | None) -> frozenset[str]:

@@ -132,6 +132,14 @@ def test_a_description_in_a_package_named_for_the_robot_its_urdf_names_takes_in_
     assert read(described, robot="Jackal").packages == ("jackal_bringup", "jackal_navigation")
     for robot in (None, "summit", "jackal_bringup"):
         assert read(described, robot=robot).packages == ("jackal_bringup",)
+    # Named ``husky``: the only other description is the Husky's own, so the source workspace
+    # is that robot's alone and read whole.
+    assert read(described, robot="husky").packages == (
+        "jackal_bringup",
+        "husky_description",
+        "husky_navigation",
+        "jackal_navigation",
+    )
 
 
 def test_a_robot_named_as_no_robot_in_particular_names_no_packages(tmp_path: Path) -> None:
@@ -857,6 +865,18 @@ def test_a_package_keeping_the_robots_urdf_made_from_the_repositorys_xacro_is_th
     other = read_repository(root, root / "xacro" / "common.urdf.xacro", "lander")
     assert other is not None
     assert other.packages == ("rover",)
+
+
+def test_a_package_holding_a_description_named_like_the_robots_file_is_another_robots(
+    tmp_path: Path,
+) -> None:
+    # Files named ``main`` or ``common`` may be any robot's: only the robot's own name counts.
+    root = repository(tmp_path / "robots", {"rover/urdf/main.urdf.xacro": "<robot name='rover'/>"})
+    package(root, "lander_description", {"urdf/main.urdf.xacro": "<robot name='lander'/>"})
+    package(root, "lander_control", {"launch/drive.py": "teleop_twist_keyboard"})
+    found = read_repository(root, root / "rover" / "urdf" / "main.urdf.xacro", "rover")
+    assert found is not None
+    assert found.packages == ("robots",)
 
 
 def test_a_repository_that_is_no_folder_is_no_evidence(tmp_path: Path) -> None:
