@@ -396,13 +396,32 @@ def test_a_plugin_listing_thruster_entries_drives_a_vessel_whatever_it_is_called
     assert "Driving" not in {c.motion_control for c in identify_urdf(other).motion_controls}
 
 
-def test_a_base_the_model_moves_in_the_plane_is_driven() -> None:
+def planar_base() -> builders.RobotText:
+    """A base the model moves in the plane: root joints along x and y and about z."""
     robot = builders.RobotText("omni", root="world")
     link = robot.joint("base_x", "prismatic", "world", "x_link", '<axis xyz="1 0 0"/>' + LIMIT)
     link = robot.joint("base_y", "prismatic", link, "y_link", '<axis xyz="0 1 0"/>' + LIMIT)
     link = robot.joint("base_yaw", "continuous", link, "base_link", '<axis xyz="0 0 1"/>')
     robot.fixed(link, "front_left_wheel")
-    assert controls(robot) == {"Driving": "urdf: a base moved in the plane"}
+    return robot
+
+
+def test_a_base_the_model_moves_in_the_plane_is_mobile_but_commanded_by_nothing() -> None:
+    # A planner's convention (Drake's, a whole-body MoveIt model's), as an SRDF's planar
+    # virtual joint is: no command reaches the base through it (measured, the journal).
+    result = identify_urdf(planar_base().text())
+    assert result.body is not None
+    assert result.body.planar_base
+    assert controls(planar_base()) == {}
+
+
+def test_a_profile_may_take_a_base_moved_in_the_plane_for_a_driven_one() -> None:
+    text = SHIPPED.replace("planar_base: []", "planar_base: Driving")
+    profile = parse_profile(parse_document(text, "mine.yaml"))
+    found = identify_urdf(planar_base().text(), profile=profile)
+    assert {c.motion_control: c.source for c in found.motion_controls} == {
+        "Driving": "urdf: a base moved in the plane"
+    }
 
 
 FOOT_EFFECTORS = (
