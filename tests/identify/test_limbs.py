@@ -3998,14 +3998,21 @@ def test_a_chain_named_as_nothing_whose_two_leaves_turn_stays_a_trunk() -> None:
     assert not any(limb.joints == tuple(unnamed) for limb in result.body.limbs)
 
 
+def unnamed_column(joints: int, step: float) -> tuple[RobotText, str]:
+    """A robot of ``joints`` unnamed joints ``j1``.. rising ``step`` metres apart from its root,
+    and the link they end on."""
+    robot = RobotText("r", root="l0")
+    link = "l0"
+    for i in range(1, joints + 1):
+        link = placed(robot, f"j{i}", "revolute", link, f"l{i}", xyz=f"0 0 {step}")
+    return robot, link
+
+
 def unnamed_arm_ending_in(fingers: list[tuple[int, float]]) -> str:
     """Six unnamed joints rising 0.15 m apart (0.9 m in all), then, on the link they end on,
     one unnamed chain per ``fingers`` entry: that many joints, each ``length`` metres past the
     one before, side by side 0.03 m apart."""
-    robot = RobotText("r", root="l0")
-    link = "l0"
-    for i in range(1, 7):
-        link = placed(robot, f"j{i}", "revolute", link, f"l{i}", xyz="0 0 0.15")
+    robot, link = unnamed_column(6, 0.15)
     for f, (joints, length) in enumerate(fingers):
         below, offset = link, f"{0.03 * f} 0 {length}"
         for k in range(joints):
@@ -4041,10 +4048,7 @@ def test_an_unnamed_chain_branching_into_limbs_as_long_as_a_trunks_stays_a_trunk
 
 def test_short_limbs_named_as_arms_and_a_head_on_an_unnamed_chain_leave_it_a_trunk() -> None:
     # A small torso: six unnamed joints carrying two short named arms and a head.
-    robot = RobotText("r", root="l0")
-    link = "l0"
-    for i in range(1, 7):
-        link = placed(robot, f"j{i}", "revolute", link, f"l{i}", xyz="0 0 0.15")
+    robot, link = unnamed_column(6, 0.15)
     for side, y in (("left", 0.05), ("right", -0.05)):
         below = placed(robot, f"{side}_shoulder", "revolute", link, f"{side}_s", xyz=f"0 {y} 0")
         placed(robot, f"{side}_elbow", "revolute", below, f"{side}_e", xyz="0 0 0.05")
@@ -4056,10 +4060,7 @@ def test_short_limbs_named_as_arms_and_a_head_on_an_unnamed_chain_leave_it_a_tru
 
 def test_a_rig_of_three_unnamed_joints_carrying_four_short_legs_stays_a_trunk() -> None:
     # Too few joints for an arm carrying a hand: a test rig's yaw, pitch and slide.
-    robot = RobotText("r", root="l0")
-    link = "l0"
-    for i in range(1, 4):
-        link = placed(robot, f"j{i}", "revolute", link, f"l{i}", xyz="0 0 0.2")
+    robot, link = unnamed_column(3, 0.2)
     for k, (x, y) in enumerate(((0.05, 0.05), (0.05, -0.05), (-0.05, 0.05), (-0.05, -0.05))):
         below = placed(robot, f"a{k}", "revolute", link, f"a{k}_l", xyz=f"{x} {y} -0.02")
         placed(robot, f"b{k}", "revolute", below, f"b{k}_l", xyz="0 0 -0.05")
