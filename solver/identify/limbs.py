@@ -712,7 +712,7 @@ def _build(tree: JointTree, limb: Limb) -> _Built | None:
     component not zero is positive), span of limits and the length of the link it moves (to
     the next joint, the last one's to the tip), rounded to a thousandth so that a mirrored
     twin's floating-point noise reads the same; None when a joint is missing."""
-    joints = [joint for name in limb.joints if (joint := tree.urdf.joint(name)) is not None]
+    joints = _joints_of(tree, limb)
     if len(joints) != len(limb.joints):
         return None
     places = [tree.poses.place(joint.child) for joint in joints]
@@ -788,7 +788,7 @@ def _drive_beside(tree: JointTree, limb: Limb, hips: set[str]) -> bool:
         return False
     if len(limb.joints) > _DRIVE_JOINTS:
         return False
-    kinds = [j.type for j in (tree.urdf.joint(name) for name in limb.joints) if j is not None]
+    kinds = [joint.type for joint in _joints_of(tree, limb)]
     return "prismatic" in kinds
 
 
@@ -1474,7 +1474,7 @@ def _beside_a_slid_platform(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
 
 def _slides_apart(tree: JointTree, limb: Limb) -> bool:
     """Two slides or more in ``limb``, no two along parallel lines as the body rests."""
-    joints = [j for j in (tree.urdf.joint(name) for name in limb.joints) if j is not None]
+    joints = _joints_of(tree, limb)
     axes = [tree.poses.axis(joint) for joint in joints]
     return len(axes) >= _PLATFORM_SLIDES and not any(
         parallel(one, other) for one, other in combinations(axes, 2)
@@ -2337,7 +2337,7 @@ def spine(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     if len(limbs) != 1:
         return limbs
     limb = limbs[0]
-    joints = [j for j in (tree.urdf.joint(name) for name in limb.joints) if j is not None]
+    joints = _joints_of(tree, limb)
     snake = _named_snake(tree, joints)
     least = _NAMED_SPINE_JOINTS if snake else tree.profile.limb("spine_min_joints")
     if limb.kind not in ("arm", "other") or limb.gripper or len(limb.joints) < least:
@@ -2457,10 +2457,15 @@ def camera_arm(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     return [replace(limbs[0], kind="arm", why=why)]
 
 
+def _joints_of(tree: JointTree, limb: Limb) -> list[Joint]:
+    """The joints of ``limb`` the file has, in the limb's order."""
+    return [joint for name in limb.joints if (joint := tree.urdf.joint(name)) is not None]
+
+
 def _named_as_arm(tree: JointTree, limb: Limb) -> bool:
     """More of the limb's joints (with their links) are named as an arm's than as any other
     limb's, and some are."""
-    joints = [joint for name in limb.joints if (joint := tree.urdf.joint(name)) is not None]
+    joints = _joints_of(tree, limb)
     scores = _name_scores(tree, joints)
     return scores["arm"] > 0 and scores["arm"] == max(scores.values())
 
@@ -2561,7 +2566,7 @@ def named_wheeled_snake(
     if len(limbs) != 1 or not wheels or limbs[0].gripper:
         return unchanged
     limb = limbs[0]
-    joints = [j for j in (tree.urdf.joint(name) for name in limb.joints) if j is not None]
+    joints = _joints_of(tree, limb)
     if (
         len(joints) != len(limb.joints)
         or len(joints) < tree.profile.limb("spine_min_joints")
@@ -2942,7 +2947,8 @@ def bolted_chain(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
         return limbs
     robot = tree.urdf.name
     named = _named_arm(robot) and not _LEGGED_NAME.search(robot)
-    if not (_world_root(tree) or driven or named):
+    bolted = _world_root(tree) or driven
+    if not (bolted or named):
         return limbs
     pan, tilt = (tree.urdf.joint(name) for name in limb.joints[:2])
     if (
@@ -2952,7 +2958,7 @@ def bolted_chain(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
         and _square_turns(tree, pan, tilt)
     ):
         return limbs  # a pan/tilt unit bolted down is still a head
-    named_only = None if _world_root(tree) or driven else robot
+    named_only = None if bolted else robot
     return [replace(limb, kind="arm", why=_bolted_why(limb, named_only))]
 
 

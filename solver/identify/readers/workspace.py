@@ -393,7 +393,7 @@ def _robot_name(robot: str | None) -> frozenset[str]:
     named (``arlobot`` for ``arlobot.urdf``); none for a name of no robot in particular
     (``robot``, ``my_robot``). Not the description's file name: ``main.urdf.xacro`` or
     ``common.urdf.xacro`` may name any robot's."""
-    return _robot_folders("", robot)
+    return frozenset({robot.lower()} if robot and _named_stem(robot) is not None else ())
 
 
 def _robot_folders(description: str | Path, robot: str | None) -> frozenset[str]:
