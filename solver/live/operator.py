@@ -250,7 +250,9 @@ class Station:
             return dict(self.source.observe(NAMESPACE).params)
         return dict(self.source.observe_params(NAMESPACE)[1])
 
-    def look(self, robot: str, *, announcements: bool) -> tuple[tuple[str, ...], dict[str, Any]]:
+    def look(
+        self, robot: str, *, announcements: bool, wants_rules: bool = False
+    ) -> tuple[tuple[str, ...], dict[str, Any]]:
         """The robots on the graph and the ``/teleop_ui`` parameters, once ``robot`` is there
         (and, with ``announcements``, a watcher that announced its rule set is seen running), or
         once the graph has been quiet for :data:`LOOK_QUIET` seconds (at most
@@ -259,7 +261,11 @@ class Station:
         is found before its sample, and a participant found before its readers and writers: on
         a busy machine each may come long after the rest of the graph, and a switch that
         stopped looking would check its values for syntax only and write a misspelt one (a ROS
-        master tells at once: a stale announcement there costs no wait)."""
+        master tells at once: a stale announcement there costs no wait). With ``wants_rules``
+        (values to check and no rule set given), a running watcher that announces one is
+        waited for until :data:`LOOK_LIMIT` once the robot is there: a watcher's participant
+        may be discovered well after the robot's, and nothing on the graph says one is
+        coming."""
         start = quiet_since = time.monotonic()
         seen: Any = None
         while True:
@@ -291,7 +297,14 @@ class Station:
             # comes after the match), and its watcher once the announcement is read.
             awaited = self._discovers and (
                 observation.discovering
-                or (robot in robots and (bool(announced) or _announcing(observation.param_names)))
+                or (
+                    robot in robots
+                    and (
+                        bool(announced)
+                        or _announcing(observation.param_names)
+                        or (wants_rules and not running)
+                    )
+                )
             )
             changed = state != seen
             if changed:
@@ -442,7 +455,11 @@ def switch_robot(
     if not station.busy.acquire(timeout=wait):
         raise InputError.at(station.name, "another switch is under way from this station")
     try:
-        robots, params = station.look(switch.robot, announcements=rules is None)
+        robots, params = station.look(
+            switch.robot,
+            announcements=rules is None,
+            wants_rules=rules is None and (bool(values) or clear),
+        )
         why = None
         if rules is None:
             rules, said = station.announced_rules(params)

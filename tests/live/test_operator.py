@@ -412,6 +412,26 @@ def test_an_announced_watcher_not_yet_seen_running_is_looked_for_past_a_quiet_gr
     assert len(observed) == 2
 
 
+def test_a_switch_with_values_to_check_looks_past_a_quiet_dds_graph_for_a_watcher(
+    node: TestNode, ros1_station: Station, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # On DDS a watcher's participant may be discovered well after the robot's, and nothing on
+    # the graph says one is coming: a switch with values to check and no rule set given keeps
+    # looking for a watcher that announces one, to its limit. A master tells at once.
+    put_drone(node, "/uav1")
+    observed = counted_looks(ros1_station, monkeypatch)
+    ros1_station.look("/uav1", announcements=True, wants_rules=True)
+    assert len(observed) == 2
+    observed.clear()
+    monkeypatch.setattr(ros1_station, "_discovers", True)  # as a DDS graph's station
+    ros1_station.look("/uav1", announcements=True, wants_rules=True)
+    assert len(observed) > 2
+    # With nothing to check (the robot alone), the quiet graph ends it.
+    observed.clear()
+    ros1_station.look("/uav1", announcements=True)
+    assert len(observed) == 2
+
+
 def test_a_graph_still_discovering_endpoints_is_not_yet_quiet(
     node: TestNode, ros1_station: Station, monkeypatch: pytest.MonkeyPatch
 ) -> None:
