@@ -11,9 +11,11 @@ axes (an XY table or a Cartesian gantry turning a tool): they place nothing, and
 joints.
 
 A ``floating`` joint that carries only a leaf part is no base: it is a part a simulator poses
-(a propeller drawn turning, :mod:`solver.identify.roles`). An SRDF's virtual joint is a
-planning convention (MoveIt's setup assistant writes a ``planar`` one by default): it says
-nothing about whether the base moves, and is not read here.
+(a propeller drawn turning, :mod:`solver.identify.roles`); nor is a ``floating`` or ``planar``
+joint that carries fewer of the description's actuated joints than lie outside it (a contest
+field's box sliding on a planar joint beside a gantry arm fixed to the world). An SRDF's
+virtual joint is a planning convention (MoveIt's setup assistant writes a ``planar`` one by
+default): it says nothing about whether the base moves, and is not read here.
 
 Not here: what moves the body (:mod:`solver.identify.vehicle`).
 """
@@ -63,9 +65,17 @@ def placement(tree: JointTree) -> Placement:
 
 
 def _carries(tree: JointTree, joint: Joint) -> bool:
-    """The joint carries more of the body than one part: a joint below it, or it is the only
-    joint on the root (a body of one link placed in the world)."""
-    return bool(tree.urdf.children(joint.child)) or len(tree.urdf.children(tree.urdf.root)) == 1
+    """The joint carries the body: more of it than one part (a joint below it, or it is the
+    only joint on the root: a body of one link placed in the world), and no fewer of its
+    actuated joints than the rest of the description holds (a box that slides on a planar
+    joint beside an arm fixed to the world, a ball a floating joint places beside a robot, is
+    no base)."""
+    urdf = tree.urdf
+    if not urdf.children(joint.child) and len(urdf.children(urdf.root)) != 1:
+        return False
+    inside = sum(1 for below in urdf.subtree_joints(joint.child) if below.actuated)
+    elsewhere = sum(1 for other in urdf.joints if other.actuated and other is not joint)
+    return inside >= elsewhere - inside
 
 
 def _root_axes(tree: JointTree) -> list[str]:

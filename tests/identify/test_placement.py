@@ -202,6 +202,26 @@ def test_a_floating_joint_that_carries_the_body_is_a_floating_base() -> None:
     assert placement(tree_of(robot)) == Placement(floating=("world_float",))
 
 
+def test_a_part_sliding_on_a_planar_joint_beside_an_arm_places_no_body() -> None:
+    # A contest field's box slides on a planar joint beside a gantry arm fixed to the world:
+    # it carries a part of its own, but none of the arm's joints.
+    robot = RobotText("contest_cell", root="world")
+    robot.joint("world_fixed", "fixed", "world", "base_link")
+    box = robot.joint("box_slide", "planar", "base_link", "box")
+    robot.joint("box_lid", "fixed", box, "box_lid")
+    builders.arm(robot, "base_link", joints=3, gripper=True)
+    assert placement(tree_of(robot)) == Placement()
+    assert identify_urdf(robot.text()).structure == "Manipulator"
+
+
+def test_a_planar_joint_carrying_the_arm_beside_a_fixed_part_is_still_a_base() -> None:
+    robot = RobotText("planar_beside", root="world")
+    base = robot.joint("world_planar", "planar", "world", "base_link")
+    robot.joint("stand", "fixed", "world", "stand_link")
+    builders.arm(robot, base, joints=3, gripper=False)
+    assert placement(tree_of(robot)) == Placement(planar=("world_planar",))
+
+
 def test_an_srdf_virtual_joint_places_nothing() -> None:
     # MoveIt's setup assistant writes a planar virtual joint for an arm bolted to a table.
     robot = builders.manipulator()
