@@ -65,17 +65,24 @@ def placement(tree: JointTree) -> Placement:
 
 
 def _carries(tree: JointTree, joint: Joint) -> bool:
-    """The joint carries the body: more of it than one part (a joint below it, or it is the
-    only joint on the root: a body of one link placed in the world), and no fewer of its
-    actuated joints than the rest of the description holds (a box that slides on a planar
-    joint beside an arm fixed to the world, a ball a floating joint places beside a robot, is
-    no base)."""
+    """The joint carries the body: more of it than one part (a joint below it, or the root
+    has no other joint: a body of one link placed in the world), and no fewer of the
+    description's actuated joints than lie outside it, above it or beside it (a box that
+    slides on a planar joint beside an arm fixed to the world, a ball a floating joint places
+    beside a robot, is no base). Mimic joints follow another and are not counted, nor are
+    floating and planar joints (two robots placed side by side in one file each carry a
+    body)."""
     urdf = tree.urdf
     if not urdf.children(joint.child) and len(urdf.children(urdf.root)) != 1:
         return False
-    inside = sum(1 for below in urdf.subtree_joints(joint.child) if below.actuated)
-    elsewhere = sum(1 for other in urdf.joints if other.actuated and other is not joint)
-    return inside >= elsewhere - inside
+    inside = sum(1 for below in urdf.subtree_joints(joint.child) if _moves_the_body(below))
+    everywhere = sum(1 for other in urdf.joints if _moves_the_body(other))
+    return inside >= everywhere - inside
+
+
+def _moves_the_body(joint: Joint) -> bool:
+    """An actuated joint of a body, not one that places a body in the world."""
+    return joint.actuated and joint.type not in ("floating", "planar")
 
 
 def _root_axes(tree: JointTree) -> list[str]:

@@ -262,10 +262,10 @@ class Station:
         a busy machine each may come long after the rest of the graph, and a switch that
         stopped looking would check its values for syntax only and write a misspelt one (a ROS
         master tells at once: a stale announcement there costs no wait). With ``wants_rules``
-        (values to check and no rule set given), a running watcher that announces one is
-        waited for until :data:`LOOK_LIMIT` once the robot is there: a watcher's participant
-        may be discovered well after the robot's, and nothing on the graph says one is
-        coming."""
+        (values to check or ``--clear``, and no rule set given; it needs ``announcements``), a
+        running watcher that announces one is waited for until :data:`LOOK_LIMIT` once the
+        robot is there: a watcher's participant may be discovered well after the robot's, and
+        nothing on the graph says one is coming."""
         start = quiet_since = time.monotonic()
         seen: Any = None
         while True:

@@ -222,6 +222,15 @@ def test_a_planar_joint_carrying_the_arm_beside_a_fixed_part_is_still_a_base() -
     assert placement(tree_of(robot)) == Placement(planar=("world_planar",))
 
 
+def test_two_robots_placed_side_by_side_each_keep_their_base() -> None:
+    # Another robot's planar joint is no joint of this one's body: each carries its own arm.
+    robot = RobotText("two_mobile_arms", root="odom")
+    for name in ("a", "b"):
+        base = robot.joint(f"{name}_planar", "planar", "odom", f"{name}_base")
+        builders.arm(robot, base, joints=3, gripper=False, prefix=f"{name}_")
+    assert placement(tree_of(robot)) == Placement(planar=("a_planar", "b_planar"))
+
+
 def test_an_srdf_virtual_joint_places_nothing() -> None:
     # MoveIt's setup assistant writes a planar virtual joint for an arm bolted to a table.
     robot = builders.manipulator()

@@ -95,8 +95,25 @@ class Roscore:
                 STARTUP_TIMEOUT,
                 f"roscore on port {self.port} (log: {self.home})",
             )
+            # The master answers before roslaunch has written its parameters and rosout has
+            # registered: a test that counts the graph's changes would count those.
+            wait_until(
+                lambda: self._settled(client),
+                STARTUP_TIMEOUT,
+                f"roscore's own parameters and rosout on port {self.port} (log: {self.home})",
+            )
         finally:
             client.close()
+
+    def _settled(self, client: MasterClient) -> bool:
+        graph = client.observe(None)
+        names = set(graph.param_names)
+        return (
+            ROSCORE_PARAMS - {"/roslaunch"} <= names
+            and any(name.startswith("/roslaunch/uris/") for name in names)
+            and any(topic == "/rosout_agg" for topic, _ in graph.publishers)
+            and any(topic == "/rosout" for topic, _ in graph.subscribers)
+        )
 
     def _answers(self, client: MasterClient) -> bool:
         if self.process is not None and self.process.poll() is not None:
