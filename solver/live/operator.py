@@ -299,11 +299,8 @@ class Station:
                 observation.discovering
                 or (
                     robot in robots
-                    and (
-                        bool(announced)
-                        or _announcing(observation.param_names)
-                        or (wants_rules and not running)
-                    )
+                    # (a running announcer with the robot there ended the look above)
+                    and (bool(announced) or _announcing(observation.param_names) or wants_rules)
                 )
             )
             changed = state != seen

@@ -107,10 +107,8 @@ class Roscore:
 
     def _settled(self, client: MasterClient) -> bool:
         graph = client.observe(None)
-        names = set(graph.param_names)
         return (
-            ROSCORE_PARAMS - {"/roslaunch"} <= names
-            and any(name.startswith("/roslaunch/uris/") for name in names)
+            _top_level(graph.param_names) >= ROSCORE_PARAMS
             and any(topic == "/rosout_agg" for topic, _ in graph.publishers)
             and any(topic == "/rosout" for topic, _ in graph.subscribers)
         )
@@ -149,6 +147,11 @@ class Roscore:
         left = marked(self.mark, variable=ROSCORE_MARK)
         end(left)
         return not left
+
+
+def _top_level(param_names: Iterable[str]) -> set[str]:
+    """The top-level names of ``param_names`` (``/roslaunch`` for ``/roslaunch/uris/host``)."""
+    return {"/" + name.strip("/").split("/")[0] for name in param_names}
 
 
 def wait_until(
@@ -224,7 +227,7 @@ class TestNode:
         roscore's own: the master is as roscore started it."""
         self.unregister_all()
         client = self.client("/test_cleaner")
-        for name in {"/" + n.strip("/").split("/")[0] for n in client.observe().param_names}:
+        for name in _top_level(client.observe().param_names):
             if name not in ROSCORE_PARAMS:
                 client.delete_param(name)
         client.close()
