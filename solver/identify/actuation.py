@@ -808,20 +808,23 @@ def _told_on_their_link(
 
 
 def _axle_ends(tree: JointTree, link: str, joints: list[Joint]) -> bool:
-    """Two, about one level axle as the body rests, one at each end of it and the link's
+    """Two or more, about one level axle as the body rests, at both ends of it and the link's
     middle between them: a pair of wheels side by side on a body drawn facing another way
     than x (its wheels apart along x, not y: a balancing robot's CAD frame), where sides
-    across y say nothing."""
-    if len(joints) != 2:
+    across y say nothing; a tracked hull's sprocket and road wheel drawn at one place at each
+    end of its axle are two pairs."""
+    if len(joints) < 2:
         return False
     axes = [tree.poses.axis(joint) for joint in joints]
-    if not all(_axle(axis) for axis in axes) or not parallel(axes[0], axes[1]):
+    if not all(_axle(axis) and parallel(axes[0], axis) for axis in axes):
         return False
     ends = [tree.poses.place(joint.child) for joint in joints]
-    if not off_axis(minus(ends[1], ends[0]), axes[0]) <= _AXLE_OFFSET:  # NaN fails too
+    # NaN fails the test too.
+    if not all(off_axis(minus(end, ends[0]), axes[0]) <= _AXLE_OFFSET for end in ends[1:]):
         return False
     middle = tree.poses.mass_centre(link) or tree.poses.place(link)
-    return dot(minus(ends[0], middle), axes[0]) * dot(minus(ends[1], middle), axes[0]) < 0
+    sides = [dot(minus(end, middle), axes[0]) for end in ends]
+    return min(sides) < 0 < max(sides)
 
 
 # How far (metres) two wheels on one axle may lie off the line of the first one's axis.

@@ -1837,18 +1837,36 @@ def _flat(one: Place, other: Place) -> float:
 
 
 def five_bars(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
-    """Pairs of leg chains that are one five-bar leg (see the module docstring), merged."""
+    """Pairs of leg chains that are one five-bar leg (see the module docstring), merged; then
+    pairs of the legs left that hang from one hip's hinge (:func:`_one_hinge`), merged."""
     legs = [limb for limb in limbs if limb.kind == "leg"]
     if len(legs) > _MOST_FIVE_BAR_LEGS:
         return limbs  # no walker has so many: a stranger's file is not paired leg by leg
+    several_hips = _hip_points(tree, legs) > 1
+    limbs = _merge_legs(
+        tree, limbs, lambda one, other, _: _one_leg(tree, one, other, several_hips=several_hips)
+    )
+    if not several_hips:
+        return limbs
+    above: dict[str, list[str]] = {}
+    return _merge_legs(
+        tree, limbs, lambda one, other, legs: _one_hinge(tree, one, other, legs, above)
+    )
+
+
+def _merge_legs(
+    tree: JointTree, limbs: list[Limb], why_one: Callable[[Limb, Limb, list[Limb]], str]
+) -> list[Limb]:
+    """Each leg chain merged with the first later one ``why_one`` gives a reason for (the
+    legs are passed as a third argument), each chain in one merge at most."""
+    legs = [limb for limb in limbs if limb.kind == "leg"]
     merged: dict[int, Limb] = {}
     used: set[int] = set()
-    hips = _hip_points(tree, legs)
     for index, one in enumerate(legs):
         if id(one) in used:
             continue
         for other in legs[index + 1 :]:
-            why = "" if id(other) in used else _one_leg(tree, one, other, several_hips=hips > 1)
+            why = "" if id(other) in used else why_one(one, other, legs)
             if why:
                 merged[id(one)] = replace(one, joints=one.joints + other.joints, why=why)
                 used.update((id(one), id(other)))
@@ -2232,6 +2250,72 @@ def _one_axle(tree: JointTree, one: Limb, other: Limb) -> bool:
     pivot, axle = tree.poses.place(hip.child), tree.poses.axis(first)
     sides = [dot(minus(tree.poses.place(j.child), pivot), axle) for j in (first, second)]
     return sides[0] * sides[1] > 0 and _one_plane(tree, one, other)
+
+
+def _one_hinge(
+    tree: JointTree, one: Limb, other: Limb, legs: list[Limb], above: dict[str, list[str]]
+) -> str:
+    """Why two leg chains are one leg's thigh and linkage bar, or "": both hang from one hinge
+    that carries no other of the ``legs`` (the nearest movable joint above both), start side
+    by side on one side of it (:func:`_one_side`) and hinge in one plane (:func:`_one_plane`):
+    a hip's yaw carrying its leg's thigh and the bars of the leg's linkage, which the file
+    leaves open. A waist carries two legs on either side of it, a spine's joint its two front
+    legs. ``above`` keeps each chain's movable joints above it, nearest first."""
+    hinge = _shared_hinge(tree, one, other, above)
+    if hinge is None or not _one_side(tree, hinge, one, other):
+        return ""
+    under = [leg for leg in legs if hinge in _movable_above(tree, leg.joints[0], above)]
+    if len(under) != 2 or not _one_plane(tree, one, other):
+        return ""
+    return (
+        f"a leg and its linkage's bar drawn open (both hang from {shown(hinge)}, which carries "
+        "no other leg, on one side of the body, in one plane)"
+    )
+
+
+def _shared_hinge(
+    tree: JointTree, one: Limb, other: Limb, above: dict[str, list[str]]
+) -> str | None:
+    """The nearest movable joint above the first joints of both chains, when it is a hinge."""
+    shared = set(_movable_above(tree, other.joints[0], above))
+    for name in _movable_above(tree, one.joints[0], above):
+        if name in shared:
+            joint = tree.urdf.joint(name)
+            return name if joint is not None and joint.type in _TURNING else None
+    return None
+
+
+def _movable_above(tree: JointTree, name: str, above: dict[str, list[str]]) -> list[str]:
+    """The movable joints above joint ``name``, nearest first (kept in ``above``)."""
+    if name not in above:
+        found: list[str] = []
+        joint = tree.urdf.joint(name)
+        parent = tree.urdf.parent_joint(joint.parent) if joint is not None else None
+        while parent is not None:
+            if parent.movable:
+                found.append(parent.name)
+            parent = tree.urdf.parent_joint(parent.parent)
+        above[name] = found
+    return above[name]
+
+
+def _one_side(tree: JointTree, hinge: str, one: Limb, other: Limb) -> bool:
+    """The first joints of two chains sit on one side of ``hinge``, across y (not a
+    centimetre or more to either side of it), and lie beside each other more than along their
+    first joint's axis: a hip's thigh and bar side by side in the leg's plane, where a waist
+    or a spine's joint carries its two legs on either side of it, apart along their axes."""
+    first, second = tree.urdf.joint(one.joints[0]), tree.urdf.joint(other.joints[0])
+    joint = tree.urdf.joint(hinge)
+    if first is None or second is None or joint is None:
+        return False
+    centre = tree.poses.place(joint.child)
+    a, b = tree.poses.place(first.child), tree.poses.place(second.child)
+    across = (a[1] - centre[1], b[1] - centre[1])
+    if across[0] * across[1] < 0 and min(abs(y) for y in across) >= _LOOP_CLOSED:
+        return False
+    apart = minus(b, a)
+    along = abs(dot(apart, tree.poses.axis(first)))
+    return along < math.sqrt(max(dot(apart, apart) - along * along, 0.0))
 
 
 def _one_plane(tree: JointTree, one: Limb, other: Limb) -> bool:

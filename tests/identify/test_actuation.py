@@ -139,6 +139,28 @@ def test_two_unnamed_endless_joints_at_the_ends_of_one_axle_are_wheels_on_a_body
     assert identify_urdf(off.text()).structure != "UGV"
 
 
+def test_two_unnamed_endless_joints_at_each_end_of_one_axle_are_a_tracked_hulls_wheels() -> None:
+    # A tank's hull drawn facing along y (fresh set 1248's, named in Turkish): at each end of
+    # one level axle along x a sprocket and a road wheel drawn at one place.
+    robot = RobotText("hull")
+    for name, x in (("a", -1.0), ("b", -1.0), ("c", 1.0), ("d", 1.0)):
+        builders.placed(
+            robot, f"{name}_joint", "continuous", "base_link", f"{name}_link",
+            xyz=f"{x} 0 -0.6", axis="1 0 0",
+        )  # fmt: skip
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert (result.structure, len(result.body.wheels)) == ("UGV", 4)
+    # All four at one end of the axle: no wheels.
+    one_end = RobotText("hull")
+    for name, x in (("a", 0.5), ("b", 0.5), ("c", 1.0), ("d", 1.0)):
+        builders.placed(
+            one_end, f"{name}_joint", "continuous", "base_link", f"{name}_link",
+            xyz=f"{x} 0 -0.6", axis="1 0 0",
+        )  # fmt: skip
+    assert identify_urdf(one_end.text()).structure != "UGV"
+
+
 def test_a_spinner_square_to_the_axle_the_wheels_share_is_no_wheel() -> None:
     # Four wheels about axles across the body, and at its nose a spinner about the line the
     # body rolls along: a propeller, no wheel (it would roll the body sideways).

@@ -984,6 +984,61 @@ def test_motors_side_by_side_on_one_axle_of_a_sliding_part_are_two_legs_each() -
     assert body.count("leg") == 4
 
 
+def open_bar_biped() -> RobotText:
+    """A biped (fresh set 1215's, its knee's linkage drawn open): on each side a hip's yaw
+    carries a thigh chain (hip pitch, knee, ankle about y) and, 4.5 cm below the yaw, a
+    two-joint bar of the thigh about y whose far end the file leaves free."""
+    robot = RobotText("open_bar_biped")
+    for side, y in (("left", 0.05), ("right", -0.05)):
+        hip = builders.placed(
+            robot, f"{side}_hip_yaw", "revolute", robot.root, f"{side}_hip", xyz=f"0 {y} -0.2",
+            axis="0 0 1",
+        )  # fmt: skip
+        link = hip
+        for joint, xyz in (("hip_pitch", "-0.03 0 -0.066"), ("knee", "0 0 -0.08"),
+                           ("ankle", "0 0 -0.0625")):  # fmt: skip
+            link = builders.placed(
+                robot, f"{side}_{joint}", "revolute", link, f"{side}_{joint}_link", xyz=xyz,
+                axis="0 1 0",
+            )  # fmt: skip
+        bar = builders.placed(
+            robot, f"{side}_thigh_bar", "revolute", hip, f"{side}_thigh_bar_link", xyz="0 0 -0.045",
+            axis="0 -1 0",
+        )  # fmt: skip
+        builders.placed(
+            robot, f"{side}_thigh_bar_end", "revolute", bar, f"{side}_bar_end_link",
+            xyz="0.025 0 0", axis="0 1 0",
+        )  # fmt: skip
+    return robot
+
+
+def test_a_thigh_and_an_open_linkage_bar_from_one_hips_yaw_are_one_leg() -> None:
+    body = detect_body(parse_urdf(open_bar_biped().text()), load_profile())
+    assert body.count("leg") == 2
+    assert all(len(limb.joints) == 5 for limb in body.limbs if limb.kind == "leg")
+    assert identify_urdf(open_bar_biped().text()).structure == "Biped"
+
+
+def test_a_spine_joints_two_front_legs_on_either_side_of_the_body_stay_two_legs() -> None:
+    # One hinge carries both front legs, as a hip's yaw carries a leg and its bar, but on
+    # both sides of the body: two legs.
+    robot = RobotText("spine_dog", root="rear_body")
+    front = builders.placed(
+        robot, "spine", "revolute", "rear_body", "front_body", xyz="0.2 0 0", axis="0 0 1"
+    )
+    for end, body_link, x in (("front", front, 0.1), ("rear", "rear_body", -0.1)):
+        for side, y in (("left", 0.1), ("right", -0.1)):
+            thigh = builders.placed(
+                robot, f"{end}_{side}_hip", "revolute", body_link, f"{end}_{side}_thigh",
+                xyz=f"{x} {y} -0.05", axis="0 1 0",
+            )  # fmt: skip
+            builders.placed(
+                robot, f"{end}_{side}_knee", "revolute", thigh, f"{end}_{side}_shin",
+                xyz="0 0 -0.2", axis="0 1 0",
+            )  # fmt: skip
+    assert detect_body(parse_urdf(robot.text()), load_profile()).count("leg") == 4
+
+
 def test_a_planar_walkers_two_legs_from_its_one_hip_point_stay_two_legs() -> None:
     robot = RobotText("planar_biped", root="torso")
     for side in ("left", "right"):
@@ -1796,14 +1851,14 @@ def test_a_short_planar_chain_of_equal_links_stays_an_arm() -> None:
     assert identify_urdf(planar_snake(6).text()).structure == "Manipulator"
 
 
-def parallel_linkage_legs(*, meet: bool = True) -> RobotText:
-    """A humanoid whose legs each have a parallel copy: from one hip link a 3-joint leg and,
-    3.5 cm ahead of its first joint, a 2-joint copy turning about parallel axes whose end meets
-    the leg's foot (``meet``) or stays 3.5 cm ahead of it."""
+def parallel_linkage_legs(*, meet: bool = True, yaw: str = "revolute") -> RobotText:
+    """A humanoid whose legs each have a parallel copy: from one hip link (on a yaw joint of
+    kind ``yaw``) a 3-joint leg and, 3.5 cm ahead of its first joint, a 2-joint copy turning
+    about parallel axes whose end meets the leg's foot (``meet``) or stays 3.5 cm ahead of it."""
     robot = RobotText("parallel_legs", root="trunk")
     for side, y in (("left", 0.08), ("right", -0.08)):
         hip = builders.placed(
-            robot, f"{side}_hip_yaw", "revolute", "trunk", f"{side}_hip", xyz=f"0 {y} -0.05"
+            robot, f"{side}_hip_yaw", yaw, "trunk", f"{side}_hip", xyz=f"0 {y} -0.05"
         )
         thigh = builders.placed(
             robot, f"{side}_hip_pitch", "revolute", hip, f"{side}_thigh", axis="0 1 0"
@@ -1867,9 +1922,18 @@ def test_a_legs_parallel_copy_whose_end_meets_its_foot_is_folded_into_the_leg() 
 
 
 def test_a_legs_parallel_copy_whose_end_stays_apart_is_another_chain() -> None:
-    result = identify_urdf(parallel_linkage_legs(meet=False).text())
+    # Bolted to the trunk, no hip's hinge of its own carries the two: only meeting ends join.
+    result = identify_urdf(parallel_linkage_legs(meet=False, yaw="fixed").text())
     assert result.body is not None
     assert result.body.count("leg") == 4
+
+
+def test_a_legs_parallel_copy_from_the_hinge_of_its_hip_is_folded_into_the_leg() -> None:
+    result = identify_urdf(parallel_linkage_legs(meet=False).text())
+    assert result.body is not None
+    assert result.body.count("leg") == 2
+    assert any("linkage's bar drawn open" in limb.why for limb in result.body.limbs)
+    assert result.structure == "Humanoid"
 
 
 def test_a_two_joint_chain_carrying_a_sensor_on_a_base_fixed_to_the_world_is_an_arm() -> None:
