@@ -808,11 +808,12 @@ def _told_on_their_link(
 
 
 def _axle_ends(tree: JointTree, link: str, joints: list[Joint]) -> bool:
-    """Two or more, about one level axle as the body rests, at both ends of it and the link's
-    middle between them: a pair of wheels side by side on a body drawn facing another way
-    than x (its wheels apart along x, not y: a balancing robot's CAD frame), where sides
-    across y say nothing; a tracked hull's sprocket and road wheel drawn at one place at each
-    end of its axle are two pairs."""
+    """Two or more, about one level axle as the body rests, at its two ends (those at one end
+    at one place) and the link's middle between them: a pair of wheels side by side on a body
+    drawn facing another way than x (its wheels apart along x, not y: a balancing robot's CAD
+    frame), where sides across y say nothing; a tracked hull's sprocket and road wheel drawn
+    at one place at each end of its axle are two pairs. A hand's knuckles in a row along one
+    line sit at as many places as there are fingers."""
     if len(joints) < 2:
         return False
     axes = [tree.poses.axis(joint) for joint in joints]
@@ -824,7 +825,13 @@ def _axle_ends(tree: JointTree, link: str, joints: list[Joint]) -> bool:
         return False
     middle = tree.poses.mass_centre(link) or tree.poses.place(link)
     sides = [dot(minus(end, middle), axes[0]) for end in ends]
-    return min(sides) < 0 < max(sides)
+    if not min(sides) < 0 < max(sides):
+        return False
+    for negative in (True, False):
+        at_end = [end for end, side in zip(ends, sides, strict=True) if (side < 0) == negative]
+        if any(distance(end, at_end[0]) > _AXLE_OFFSET for end in at_end[1:]):
+            return False
+    return True
 
 
 # How far (metres) two wheels on one axle may lie off the line of the first one's axis.

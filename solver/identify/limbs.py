@@ -39,7 +39,11 @@ Where names say nothing, the chains' places and shapes still speak:
   the hinge that turns their link (a hip's abduction carrying the leg's two motors on one
   axle; a waist carries its two hips on either side). Two
   legs that hang from different points of the base and end as far apart as they start (a
-  front and a rear hip turning about one line along the body) are two legs;
+  front and a rear hip turning about one line along the body) are two legs. A leg chain and a
+  shorter one beside it, both hanging from one hinge that carries no other leg, side by side
+  on one side of it within a five-bar's gap, about one axis, are one leg and its linkage's
+  bar drawn open (a hip's yaw carrying the thigh and the knee's bar); a rocker's front and
+  rear legs are built alike and far apart, and stay two;
 * three or six alike chains, the body's only limbs, starting on a level circle a third of a
   turn apart, are one parallel manipulator (:func:`parallel_robot`: a delta, a Stewart
   platform), and so are three chains named as legs on a root bolted to the world beside other
@@ -1848,10 +1852,8 @@ def five_bars(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     )
     if not several_hips:
         return limbs
-    above: dict[str, list[str]] = {}
-    return _merge_legs(
-        tree, limbs, lambda one, other, legs: _one_hinge(tree, one, other, legs, above)
-    )
+    hinges = _hinges(tree, [limb for limb in limbs if limb.kind == "leg"])
+    return _merge_legs(tree, limbs, lambda one, other, _: _one_hinge(tree, one, other, hinges))
 
 
 def _merge_legs(
@@ -2252,51 +2254,68 @@ def _one_axle(tree: JointTree, one: Limb, other: Limb) -> bool:
     return sides[0] * sides[1] > 0 and _one_plane(tree, one, other)
 
 
-def _one_hinge(
-    tree: JointTree, one: Limb, other: Limb, legs: list[Limb], above: dict[str, list[str]]
-) -> str:
-    """Why two leg chains are one leg's thigh and linkage bar, or "": both hang from one hinge
-    that carries no other of the ``legs`` (the nearest movable joint above both), start side
-    by side on one side of it (:func:`_one_side`) and hinge in one plane (:func:`_one_plane`):
-    a hip's yaw carrying its leg's thigh and the bars of the leg's linkage, which the file
-    leaves open. A waist carries two legs on either side of it, a spine's joint its two front
-    legs. ``above`` keeps each chain's movable joints above it, nearest first."""
-    hinge = _shared_hinge(tree, one, other, above)
-    if hinge is None or not _one_side(tree, hinge, one, other):
-        return ""
-    under = [leg for leg in legs if hinge in _movable_above(tree, leg.joints[0], above)]
-    if len(under) != 2 or not _one_plane(tree, one, other):
-        return ""
-    return (
-        f"a leg and its linkage's bar drawn open (both hang from {shown(hinge)}, which carries "
-        "no other leg, on one side of the body, in one plane)"
-    )
+class _Hinges(NamedTuple):
+    """The movable joints above each leg chain's first joint (nearest first, and as a set),
+    and how many leg chains hang below each movable joint."""
+
+    above: dict[str, tuple[str, ...]]
+    sets: dict[str, frozenset[str]]
+    legs_under: Counter[str]
 
 
-def _shared_hinge(
-    tree: JointTree, one: Limb, other: Limb, above: dict[str, list[str]]
-) -> str | None:
-    """The nearest movable joint above the first joints of both chains, when it is a hinge."""
-    shared = set(_movable_above(tree, other.joints[0], above))
-    for name in _movable_above(tree, one.joints[0], above):
-        if name in shared:
-            joint = tree.urdf.joint(name)
-            return name if joint is not None and joint.type in _TURNING else None
-    return None
-
-
-def _movable_above(tree: JointTree, name: str, above: dict[str, list[str]]) -> list[str]:
-    """The movable joints above joint ``name``, nearest first (kept in ``above``)."""
-    if name not in above:
+def _hinges(tree: JointTree, legs: list[Limb]) -> _Hinges:
+    """The :class:`_Hinges` of ``legs``: one walk up from each."""
+    above: dict[str, tuple[str, ...]] = {}
+    for leg in legs:
         found: list[str] = []
-        joint = tree.urdf.joint(name)
+        joint = tree.urdf.joint(leg.joints[0])
         parent = tree.urdf.parent_joint(joint.parent) if joint is not None else None
         while parent is not None:
             if parent.movable:
                 found.append(parent.name)
             parent = tree.urdf.parent_joint(parent.parent)
-        above[name] = found
-    return above[name]
+        above[leg.joints[0]] = tuple(found)
+    sets = {name: frozenset(names) for name, names in above.items()}
+    return _Hinges(above, sets, Counter(name for names in above.values() for name in names))
+
+
+def _one_hinge(tree: JointTree, one: Limb, other: Limb, hinges: _Hinges) -> str:
+    """Why two leg chains are one leg and its linkage's bar, or "": both hang from one hinge
+    that carries no other leg chain (the nearest movable joint above both), they are unlike
+    (one has more joints than the other: two legs of one robot are built alike, a bar is
+    shorter than its leg), their first joints are no further apart than a five-bar's motors
+    (:data:`_FIVE_BAR_GAP`), side by side on one side of the hinge (:func:`_one_side`), and
+    both hinge about one axis (:func:`_one_plane`): a hip's yaw carrying its leg's thigh and
+    the bar of the leg's linkage, which the file leaves open. A waist carries two legs on
+    either side of it, a spine's joint its two front legs, a rocker a front and a rear leg,
+    alike and far apart."""
+    if len(one.joints) == len(other.joints):
+        return ""
+    hinge = _shared_hinge(tree, one, other, hinges)
+    if hinge is None or hinges.legs_under[hinge] != 2:
+        return ""
+    first, second = tree.urdf.joint(one.joints[0]), tree.urdf.joint(other.joints[0])
+    if first is None or second is None:
+        return ""
+    gap = distance(tree.poses.place(first.child), tree.poses.place(second.child))
+    if not gap <= _FIVE_BAR_GAP or not _one_side(tree, hinge, one, other):  # NaN fails too
+        return ""
+    if not _one_plane(tree, one, other):
+        return ""
+    return (
+        f"a leg and its linkage's bar drawn open (both hang from {shown(hinge)}, which carries "
+        "no other leg, side by side on one side of it, about one axis)"
+    )
+
+
+def _shared_hinge(tree: JointTree, one: Limb, other: Limb, hinges: _Hinges) -> str | None:
+    """The nearest movable joint above the first joints of both chains, when it is a hinge."""
+    shared = hinges.sets.get(other.joints[0], frozenset())
+    for name in hinges.above.get(one.joints[0], ()):
+        if name in shared:
+            joint = tree.urdf.joint(name)
+            return name if joint is not None and joint.type in _TURNING else None
+    return None
 
 
 def _one_side(tree: JointTree, hinge: str, one: Limb, other: Limb) -> bool:

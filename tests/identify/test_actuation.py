@@ -151,14 +151,18 @@ def test_two_unnamed_endless_joints_at_each_end_of_one_axle_are_a_tracked_hulls_
     result = identify_urdf(robot.text())
     assert result.body is not None
     assert (result.structure, len(result.body.wheels)) == ("UGV", 4)
-    # All four at one end of the axle: no wheels.
-    one_end = RobotText("hull")
-    for name, x in (("a", 0.5), ("b", 0.5), ("c", 1.0), ("d", 1.0)):
-        builders.placed(
-            one_end, f"{name}_joint", "continuous", "base_link", f"{name}_link",
-            xyz=f"{x} 0 -0.6", axis="1 0 0",
-        )  # fmt: skip
-    assert identify_urdf(one_end.text()).structure != "UGV"
+    # All four at one end of the axle, or a hand's four knuckles in a row along it (found in
+    # review): no wheels.
+    for places in ((0.5, 0.5, 1.0, 1.0), (-0.03, -0.01, 0.01, 0.03)):
+        other = RobotText("hull")
+        for name, x in zip("abcd", places, strict=True):
+            builders.placed(
+                other, f"{name}_joint", "continuous", "base_link", f"{name}_link",
+                xyz=f"{x} 0 -0.6", axis="1 0 0",
+            )  # fmt: skip
+        result = identify_urdf(other.text())
+        assert result.body is not None
+        assert result.body.wheels == ()
 
 
 def test_a_spinner_square_to_the_axle_the_wheels_share_is_no_wheel() -> None:

@@ -1019,6 +1019,27 @@ def test_a_thigh_and_an_open_linkage_bar_from_one_hips_yaw_are_one_leg() -> None
     assert identify_urdf(open_bar_biped().text()).structure == "Biped"
 
 
+def test_a_rockers_front_and_rear_legs_alike_and_far_apart_stay_two_legs() -> None:
+    # Found in review: on each side a passive rocker carries a front and a rear leg, all
+    # hinges about y, side by side on its side: built alike and 40 cm apart, two legs each.
+    robot = RobotText("rocker_walker")
+    for side, y in (("left", 0.15), ("right", -0.15)):
+        rocker = builders.placed(
+            robot, f"{side}_rocker", "revolute", robot.root, f"{side}_rocker_link",
+            xyz=f"0 {y} 0", axis="0 1 0",
+        )  # fmt: skip
+        for end, x in (("front", 0.2), ("rear", -0.2)):
+            thigh = builders.placed(
+                robot, f"{side}_{end}_hip", "revolute", rocker, f"{side}_{end}_thigh",
+                xyz=f"{x} 0 -0.05", axis="0 1 0",
+            )  # fmt: skip
+            builders.placed(
+                robot, f"{side}_{end}_knee", "revolute", thigh, f"{side}_{end}_shin",
+                xyz="0 0 -0.2", axis="0 1 0",
+            )  # fmt: skip
+    assert detect_body(parse_urdf(robot.text()), load_profile()).count("leg") == 4
+
+
 def test_a_spine_joints_two_front_legs_on_either_side_of_the_body_stay_two_legs() -> None:
     # One hinge carries both front legs, as a hip's yaw carries a leg and its bar, but on
     # both sides of the body: two legs.
