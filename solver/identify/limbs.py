@@ -1848,19 +1848,19 @@ def five_bars(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
         return limbs  # no walker has so many: a stranger's file is not paired leg by leg
     several_hips = _hip_points(tree, legs) > 1
     limbs = _merge_legs(
-        tree, limbs, lambda one, other, _: _one_leg(tree, one, other, several_hips=several_hips)
+        tree, limbs, lambda one, other: _one_leg(tree, one, other, several_hips=several_hips)
     )
     if not several_hips:
         return limbs
     hinges = _hinges(tree, [limb for limb in limbs if limb.kind == "leg"])
-    return _merge_legs(tree, limbs, lambda one, other, _: _one_hinge(tree, one, other, hinges))
+    return _merge_legs(tree, limbs, lambda one, other: _one_hinge(tree, one, other, hinges))
 
 
 def _merge_legs(
-    tree: JointTree, limbs: list[Limb], why_one: Callable[[Limb, Limb, list[Limb]], str]
+    tree: JointTree, limbs: list[Limb], why_one: Callable[[Limb, Limb], str]
 ) -> list[Limb]:
-    """Each leg chain merged with the first later one ``why_one`` gives a reason for (the
-    legs are passed as a third argument), each chain in one merge at most."""
+    """Each leg chain merged with the first later one ``why_one`` gives a reason for, each
+    chain in one merge at most."""
     legs = [limb for limb in limbs if limb.kind == "leg"]
     merged: dict[int, Limb] = {}
     used: set[int] = set()
@@ -1868,7 +1868,7 @@ def _merge_legs(
         if id(one) in used:
             continue
         for other in legs[index + 1 :]:
-            why = "" if id(other) in used else why_one(one, other, legs)
+            why = "" if id(other) in used else why_one(one, other)
             if why:
                 merged[id(one)] = replace(one, joints=one.joints + other.joints, why=why)
                 used.update((id(one), id(other)))
