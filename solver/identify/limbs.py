@@ -2264,16 +2264,15 @@ class _Hinges(NamedTuple):
 
 
 def _hinges(tree: JointTree, legs: list[Limb]) -> _Hinges:
-    """The :class:`_Hinges` of ``legs``: one walk up from each."""
+    """The :class:`_Hinges` of ``legs``, from one walk up the tree (:func:`moved_by`)."""
     above: dict[str, tuple[str, ...]] = {}
+    known: dict[str, str | None] = {}
     for leg in legs:
         found: list[str] = []
         joint = tree.urdf.joint(leg.joints[0])
-        parent = tree.urdf.parent_joint(joint.parent) if joint is not None else None
-        while parent is not None:
-            if parent.movable:
-                found.append(parent.name)
-            parent = tree.urdf.parent_joint(parent.parent)
+        while joint is not None and (name := moved_by(tree.urdf, joint.parent, known)):
+            found.append(name)
+            joint = tree.urdf.joint(name)
         above[leg.joints[0]] = tuple(found)
     sets = {name: frozenset(names) for name, names in above.items()}
     return _Hinges(above, sets, Counter(name for names in above.values() for name in names))

@@ -139,30 +139,29 @@ def test_two_unnamed_endless_joints_at_the_ends_of_one_axle_are_wheels_on_a_body
     assert identify_urdf(off.text()).structure != "UGV"
 
 
-def test_two_unnamed_endless_joints_at_each_end_of_one_axle_are_a_tracked_hulls_wheels() -> None:
-    # A tank's hull drawn facing along y (fresh set 1248's, named in Turkish): at each end of
-    # one level axle along x a sprocket and a road wheel drawn at one place.
+def _hull(places: tuple[float, ...]) -> tuple[str | None, tuple[str, ...]]:
+    """The structure and the wheels read on a hull drawn facing along y, with one unnamed
+    endless joint about x at each of ``places`` along x, all on one level axle 0.6 m below."""
     robot = RobotText("hull")
-    for name, x in (("a", -1.0), ("b", -1.0), ("c", 1.0), ("d", 1.0)):
+    for index, x in enumerate(places):
         builders.placed(
-            robot, f"{name}_joint", "continuous", "base_link", f"{name}_link",
+            robot, f"j{index}_joint", "continuous", "base_link", f"j{index}_link",
             xyz=f"{x} 0 -0.6", axis="1 0 0",
         )  # fmt: skip
     result = identify_urdf(robot.text())
     assert result.body is not None
-    assert (result.structure, len(result.body.wheels)) == ("UGV", 4)
+    return result.structure, result.body.wheels
+
+
+def test_two_unnamed_endless_joints_at_each_end_of_one_axle_are_a_tracked_hulls_wheels() -> None:
+    # A tank's hull drawn facing along y (fresh set 1248's, named in Turkish): at each end of
+    # one level axle along x a sprocket and a road wheel drawn at one place.
+    structure, wheels = _hull((-1.0, -1.0, 1.0, 1.0))
+    assert (structure, len(wheels)) == ("UGV", 4)
     # All four at one end of the axle, or a hand's four knuckles in a row along it (found in
     # review): no wheels.
-    for places in ((0.5, 0.5, 1.0, 1.0), (-0.03, -0.01, 0.01, 0.03)):
-        other = RobotText("hull")
-        for name, x in zip("abcd", places, strict=True):
-            builders.placed(
-                other, f"{name}_joint", "continuous", "base_link", f"{name}_link",
-                xyz=f"{x} 0 -0.6", axis="1 0 0",
-            )  # fmt: skip
-        result = identify_urdf(other.text())
-        assert result.body is not None
-        assert result.body.wheels == ()
+    assert _hull((0.5, 0.5, 1.0, 1.0))[1] == ()
+    assert _hull((-0.03, -0.01, 0.01, 0.03))[1] == ()
 
 
 def test_a_spinner_square_to_the_axle_the_wheels_share_is_no_wheel() -> None:
