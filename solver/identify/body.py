@@ -33,7 +33,6 @@ Not here: deciding the structure (:mod:`solver.identify.classifier`).
 from __future__ import annotations
 
 import itertools
-import re
 from collections import Counter
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field, replace
@@ -63,6 +62,7 @@ from solver.identify.limbs import (
     moved_by,
     named_pan_tilt,
     named_wheeled_snake,
+    names_a_tool,
     nearest_above,
     open_linkages,
     parallel_robot,
@@ -640,21 +640,10 @@ def _fixed_gripper(tree: JointTree) -> str:
 
 def _tool_links(tree: JointTree) -> Iterator[str]:
     """The links the profile's ``tool`` pattern names (a gripper, a claw, a suction cup, an end
-    effector), in document order, but for a mount's (`gripper_camera_mount`) and a link the
-    sensor frame rules read (`end_effector_cam`): no tool itself."""
-    frames = tree.profile.frame_rules
+    effector), in document order (:func:`~solver.identify.limbs.names_a_tool`)."""
     for link in tree.urdf.links:
-        name = link.name
-        if (
-            "tool" in tree.parts_of(name)
-            and not _MOUNT.search(name)
-            and not any(rule.accepts(None, name) for rule in frames)
-        ):
-            yield name
-
-
-# A link that holds a tool or a sensor, named so: no tool itself.
-_MOUNT = re.compile(r"mount|holder|bracket", re.IGNORECASE)
+        if names_a_tool(tree, link.name):
+            yield link.name
 
 
 def _loop_linkages(tree: JointTree, roles: dict[str, Role]) -> dict[str, Role]:

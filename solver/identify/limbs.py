@@ -3311,7 +3311,43 @@ def _arm_why(
         return f"a chain of {length} joints hanging from a flying body"
     if not named and length >= 2 and _on_an_arm_base(chain[0]):
         return f"a chain of {length} joints on a link named as an arm's base"
+    if length >= 2 and (tool := _rigid_tool_at(tree, chain[-1])):
+        return f"a chain of {length} joints holding a tool fixed to its last link ({tool})"
     return ""
+
+
+def _rigid_tool_at(tree: JointTree, last: Joint) -> str:
+    """The first link fixed below ``last`` that :func:`names_a_tool` and that has something in
+    it: a gripper whose jaws are drawn fixed (a lift and a wrist roll holding ``Gripper_1``
+    and its two jaws), a claw or a suction cup; empty when there is none. A camera mast's
+    head carries cameras, no tool."""
+    below = islice(tree.urdf.fixed_below(last.child), _MOST_TOOL_LINKS)
+    return next((name for name in below if names_a_tool(tree, name) and _solid(tree, name)), "")
+
+
+# The most links fixed below a chain's tip read for a tool (a gripper's body and its jaws).
+_MOST_TOOL_LINKS = 16
+
+
+def _solid(tree: JointTree, name: str) -> bool:
+    """``name`` is a link with something in it (a shape or a mass), not a bare frame."""
+    link = tree.urdf.link(name)
+    return link is not None and not link.empty
+
+
+def names_a_tool(tree: JointTree, name: str) -> bool:
+    """The profile's ``tool`` pattern names the link (a gripper, a claw, a suction cup, an end
+    effector), and it is neither a mount's (``gripper_camera_mount``) nor a frame the sensor
+    frame rules read (``end_effector_cam``): no tool itself."""
+    return (
+        "tool" in tree.parts_of(name)
+        and not _TOOL_MOUNT.search(name)
+        and not any(rule.accepts(None, name) for rule in tree.profile.frame_rules)
+    )
+
+
+# A link that holds a tool or a sensor, named so: no tool itself.
+_TOOL_MOUNT = re.compile(r"mount|holder|bracket", re.IGNORECASE)
 
 
 def _on_an_arm_base(first: Joint) -> bool:

@@ -61,6 +61,16 @@ class RobotText:
         )
 
 
+def solid(text: str, *links: str) -> str:
+    """``text`` with each of ``links`` given a mass: a part one could hold, not a frame."""
+    for link in links:
+        text = text.replace(
+            f'<link name="{link}"/>',
+            f'<link name="{link}"><inertial><mass value="0.2"/></inertial></link>',
+        )
+    return text
+
+
 def gazebo_sensor(link: str, kind: str, name: str, inner: str = "", plugin: str = "") -> str:
     plugin_xml = f'<plugin name="{name}_plugin" filename="{plugin}"/>' if plugin else ""
     return (

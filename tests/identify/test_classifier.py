@@ -141,22 +141,12 @@ def test_equal_limits_on_joints_coupled_by_mimic_are_placeholders_not_a_lock() -
     assert [locked.joint(n).movable for n in ("f1", "f2")] == [False, False]  # type: ignore[union-attr]
 
 
-def solid(text: str, *links: str) -> str:
-    """``text`` with each of ``links`` given a mass: a part one could hold, not a frame."""
-    for link in links:
-        text = text.replace(
-            f'<link name="{link}"/>',
-            f'<link name="{link}"><inertial><mass value="0.2"/></inertial></link>',
-        )
-    return text
-
-
 def test_a_multirotor_holding_a_gripper_on_a_rigid_boom_is_an_aerial_manipulator() -> None:
     # A boom fixed under the body ends in a claw that no joint moves: built to manipulate.
     drone = builders.quadrotor()
     boom = drone.fixed(drone.root, "boom")
     drone.fixed(boom, "claw_gripper")
-    result = identify_urdf(solid(drone.text(), "claw_gripper"))
+    result = identify_urdf(builders.solid(drone.text(), "claw_gripper"))
     assert result.structure == "Aerial Manipulator"
     assert "a rigid tool: claw_gripper, held on fixed joints" in result.evidence
     # The same link as a frame with nothing in it (a controller's reference point) is no tool.
@@ -173,7 +163,10 @@ def test_a_multirotor_holding_a_gripper_on_a_rigid_boom_is_an_aerial_manipulator
     for i in range(4):
         placed.joint(f"rotor_{i}_joint", "continuous", "body", f"rotor_{i}")
     placed.fixed(placed.fixed("body", "boom"), "uav/eef_link")
-    assert identify_urdf(solid(placed.text(), "uav/eef_link")).structure == "Aerial Manipulator"
+    assert (
+        identify_urdf(builders.solid(placed.text(), "uav/eef_link")).structure
+        == "Aerial Manipulator"
+    )
     # A boom carrying a camera, and a gripper a wheeled base carries, are no such thing.
     camera = builders.quadrotor()
     camera.fixed(camera.fixed(camera.root, "boom"), "camera_link")

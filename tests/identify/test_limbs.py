@@ -4252,3 +4252,53 @@ def test_a_two_joint_chain_on_any_other_link_is_no_arm(mount: str, camera: bool,
     assert result.body is not None
     assert [limb.kind for limb in result.body.limbs] == [kind]
     assert result.structure == "UGV"
+
+
+def lift_and_roll_holding(*tools: str, joints: int = 2) -> RobotText:
+    """A wheeled base carrying a lift (a slide up) and a roll about the lift's forward line,
+    whose last link holds ``tools`` on fixed joints, each given a mass (a gripper whose body
+    and jaws are drawn fixed); with ``joints=1``, the roll alone."""
+    robot = RobotText("lift_car", root="base_link")
+    builders.wheeled_base(robot)
+    tip = "base_link"
+    if joints == 2:
+        tip = placed(robot, "link_slide", "prismatic", tip, "link_slide_1", xyz="0 0 0.1")
+    tip = placed(robot, "link_rotate", "continuous", tip, "link_rotate_1", axis="1 0 0")
+    for tool in tools:
+        robot.fixed(tip, tool)
+    return robot
+
+
+def test_a_lift_and_roll_holding_a_gripper_drawn_fixed_is_an_arm() -> None:
+    robot = lift_and_roll_holding("Gripper_1", "link_gripper_left_1", "link_gripper_right_1")
+    result = identify_urdf(builders.solid(robot.text(), "Gripper_1", "link_gripper_left_1"))
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["arm"]
+    assert "holding a tool fixed to its last link (Gripper_1)" in result.body.limbs[0].why
+    assert result.structure == "Mobile Manipulator"
+
+
+@pytest.mark.parametrize(
+    ("tool", "joints", "mass"),
+    [
+        ("end_effector", 2, False),
+        ("gripper_camera_mount", 2, True),
+        ("camera_link", 2, True),
+        ("claw", 1, True),
+    ],
+    ids=[
+        "a bare frame named for a tool",
+        "a mount named for a gripper",
+        "a camera",
+        "one joint holding the claw",
+    ],
+)
+def test_a_chain_holding_no_tool_or_too_short_stays_no_arm(
+    tool: str, joints: int, mass: bool
+) -> None:
+    robot = lift_and_roll_holding(tool, joints=joints)
+    text = builders.solid(robot.text(), tool) if mass else robot.text()
+    result = identify_urdf(text)
+    assert result.body is not None
+    assert result.body.count("arm") == 0
+    assert result.structure == "UGV"
