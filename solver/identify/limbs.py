@@ -3462,8 +3462,15 @@ _FOOT = re.compile(
 
 
 def _tip_matches(tree: JointTree, part: str, joint: Joint) -> bool:
-    """A link held by a fixed joint somewhere below ``joint`` is named as ``part`` (a foot)."""
+    """A link held by a fixed joint somewhere below ``joint`` is named as ``part`` (a foot),
+    and not as a wheel or a caster: a corner's words in a caster's name
+    (``front_right_caster_link`` on a bogie's shaft) say where it rolls, not that it is a
+    leg's."""
     return any(
-        not below.movable and part in tree.parts_of(below.child)
+        not below.movable and part in (parts := tree.parts_of(below.child)) and not parts & _ROLLING
         for below in tree.urdf.subtree_joints(joint.child)
     )
+
+
+# The parts that roll: a link named so is no other part, whatever corner its name gives.
+_ROLLING = frozenset({"wheel", "caster"})

@@ -4302,3 +4302,30 @@ def test_a_chain_holding_no_tool_or_too_short_stays_no_arm(
     assert result.body is not None
     assert result.body.count("arm") == 0
     assert result.structure == "UGV"
+
+
+def base_on_caster_bogies(tip: str) -> RobotText:
+    """A two-wheeled base whose body rides on a front and a back bogie, each a pitch then a
+    roll, each roll's shaft holding two links named ``{end}_right_{tip}`` and
+    ``{end}_left_{tip}`` on fixed joints (a self-levelling delivery robot's caster bogies)."""
+    robot = RobotText("levelling_base", root="base_link")
+    builders.wheeled_base(robot)
+    for end, x in (("front", "0.11"), ("back", "-0.11")):
+        pitch = placed(
+            robot, f"{end}_pitch", "revolute", "base_link", f"{end}_pitch_link", xyz=f"{x} 0 0.05"
+        )
+        pitch = placed(robot, f"{end}_roll", "revolute", pitch, f"{end}_shaft", axis="1 0 0")
+        for side in ("right", "left"):
+            robot.fixed(pitch, f"{end}_{side}_{tip}")
+    return robot
+
+
+def test_bogies_whose_shafts_hold_casters_named_for_their_corners_are_no_legs() -> None:
+    result = identify_urdf(base_on_caster_bogies("caster_link").text())
+    assert result.body is not None
+    assert result.body.count("leg") == 0
+    assert result.structure == "UGV"
+    # The same chains holding links named for their corners alone end in a leg's corner.
+    result = identify_urdf(base_on_caster_bogies("link").text())
+    assert result.body is not None
+    assert result.body.count("leg") == 2
