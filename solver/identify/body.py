@@ -51,6 +51,7 @@ from solver.identify.limbs import (
     five_bars,
     flippers,
     gripping_leg,
+    holding_tools,
     joints_above,
     legs_alike,
     legs_at_the_pelvis,
@@ -759,6 +760,7 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
         # world is an arm by then): a pendulum rig's one chain, an arm's camera on its tip, a
         # pan/tilt unit's hinges.
         parts.limbs = named_pan_tilt(tree, camera_arm(tree, pendulum(tree, parts.limbs)))
+    parts.limbs = holding_tools(tree, parts.limbs)
 
 
 def _snake(tree: JointTree, parts: _Parts) -> None:

@@ -3311,18 +3311,57 @@ def _arm_why(
         return f"a chain of {length} joints hanging from a flying body"
     if not named and length >= 2 and _on_an_arm_base(chain[0]):
         return f"a chain of {length} joints on a link named as an arm's base"
-    if length >= 2 and (tool := _rigid_tool_at(tree, chain[-1])):
-        return f"a chain of {length} joints holding a tool fixed to its last link ({tool})"
     return ""
 
 
-def _rigid_tool_at(tree: JointTree, last: Joint) -> str:
-    """The first link fixed below ``last`` that :func:`names_a_tool` and that has something in
-    it: a gripper whose jaws are drawn fixed (a lift and a wrist roll holding ``Gripper_1``
-    and its two jaws), a claw or a suction cup; empty when there is none. A camera mast's
-    head carries cameras, no tool."""
-    below = islice(tree.urdf.fixed_below(last.child), _MOST_TOOL_LINKS)
-    return next((name for name in below if names_a_tool(tree, name) and _solid(tree, name)), "")
+def holding_tools(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
+    """A chain of two joints or more that no other reading made a limb (still ``other``, once
+    legs, heads and pan/tilt units are found), whose last link holds a tool on fixed joints
+    (:func:`_rigid_tool_at`), is an arm: a car's lift and wrist roll holding a gripper whose
+    jaws the file draws fixed, a waiter robot's lift and swing holding its tray's end effector.
+    Read last, so a humanoid's arm holding a tool is found with its other arm, and a pan/tilt
+    unit whose tip frame is an ``end_effector`` stays a head."""
+    return [_holding_a_tool(tree, limb) if limb.kind == "other" else limb for limb in limbs]
+
+
+def _holding_a_tool(tree: JointTree, limb: Limb) -> Limb:
+    """``limb`` made an arm when it has two degrees of freedom or more and holds a tool."""
+    joints = [joint for name in limb.joints if (joint := tree.urdf.joint(name)) is not None]
+    length = sum(3 if joint.type == "spherical" else 1 for joint in joints)
+    tool = _rigid_tool_at(tree, joints) if length >= 2 else ""
+    if not tool:
+        return limb
+    why = f"a chain of {length} joints holding a tool fixed to its last link ({tool})"
+    return replace(limb, kind="arm", why=why)
+
+
+def _rigid_tool_at(tree: JointTree, chain: list[Joint]) -> str:
+    """The first link fixed below the chain's last joint that :func:`names_a_tool` and that
+    has something in it (a gripper's body, a claw, a suction cup, an end effector); empty when
+    there is none. Only a grasping tool's name (the profile's gripper words) counts on a chain
+    that points a camera (a camera frame or a sensor below its last joint: a mast's head) or
+    turns as a pan/tilt unit does (two hinges about square axes): an ``end_effector`` or
+    ``eef`` there is the frame a controller aims, no tool."""
+    last = chain[-1]
+    below = list(islice(tree.urdf.fixed_below(last.child), _MOST_TOOL_LINKS))
+    tools = [name for name in below if names_a_tool(tree, name) and _solid(tree, name)]
+    if not tools:
+        return ""
+    aims = (
+        _pan_tilt_turns(tree, chain)
+        or any(_CAMERA.search(name) for name in below)
+        or points_a_sensor(tree, last)
+    )
+    return next((name for name in tools if not aims or "gripper" in tree.parts_of(name)), "")
+
+
+def _pan_tilt_turns(tree: JointTree, chain: list[Joint]) -> bool:
+    """The chain is two hinges about square axes (:func:`_square_turns`): a pan/tilt unit's."""
+    return (
+        len(chain) == 2
+        and all(joint.type in ("revolute", "continuous") for joint in chain)
+        and _square_turns(tree, chain[0], chain[1])
+    )
 
 
 # The most links fixed below a chain's tip read for a tool (a gripper's body and its jaws).

@@ -4278,6 +4278,56 @@ def test_a_lift_and_roll_holding_a_gripper_drawn_fixed_is_an_arm() -> None:
     assert result.structure == "Mobile Manipulator"
 
 
+def test_a_pan_tilt_units_tip_frame_named_an_end_effector_leaves_it_a_pan_tilt_unit() -> None:
+    robot = RobotText("pan_tilt", root="base_link")
+    link = placed(robot, "joint1", "revolute", "base_link", "link1", xyz="0 0 0.05")
+    tip = placed(robot, "joint2", "revolute", link, "link2", xyz="0 0 0.03", axis="0 1 0")
+    robot.fixed(tip, "end_effector")
+    result = identify_urdf(builders.solid(robot.text(), "end_effector"))
+    assert result.structure == "Pan/Tilt Unit"
+    # On a wheeled base, the same chain pointing a camera frame beside it is no arm either.
+    rover = lift_and_roll_holding("camera_link", "end_effector")
+    result = identify_urdf(builders.solid(rover.text(), "end_effector"))
+    assert result.body is not None
+    assert result.body.count("arm") == 0
+    # A gripper it holds is grasped, whatever it points: an arm.
+    rover = lift_and_roll_holding("camera_link", "gripper_link")
+    result = identify_urdf(builders.solid(rover.text(), "gripper_link"))
+    assert result.structure == "Mobile Manipulator"
+
+
+def test_a_small_humanoids_arm_holding_a_tool_is_found_with_its_other_arm() -> None:
+    robot = RobotText("minihum", root="base_link")
+    for side, y in (("l", 1), ("r", -1)):
+        hip = placed(
+            robot,
+            f"{side}_hip",
+            "revolute",
+            "base_link",
+            f"{side}_thigh",
+            xyz=f"0 {0.05 * y} -0.05",
+            axis="0 1 0",
+        )
+        placed(robot, f"{side}_knee", "revolute", hip, f"{side}_shin", xyz="0 0 -0.1", axis="0 1 0")
+        shoulder = placed(
+            robot,
+            f"{side}_j1",
+            "revolute",
+            "base_link",
+            f"{side}_a1",
+            xyz=f"0 {0.1 * y} 0.15",
+            axis="0 1 0",
+        )
+        placed(
+            robot, f"{side}_j2", "revolute", shoulder, f"{side}_a2", xyz="0 0 -0.07", axis="1 0 0"
+        )
+    robot.fixed("l_a2", "l_gripper")
+    result = identify_urdf(builders.solid(robot.text(), "l_gripper"))
+    assert result.body is not None
+    assert sorted(limb.kind for limb in result.body.limbs) == ["arm", "arm", "leg", "leg"]
+    assert result.structure == "Humanoid"
+
+
 @pytest.mark.parametrize(
     ("tool", "joints", "mass"),
     [
