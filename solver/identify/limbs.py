@@ -3216,8 +3216,7 @@ def _classify(
     if _tip_matches(tree, "leg", chain[-1]):
         scores["leg"] += 1
     named = any(scores.values())
-    # Degrees of freedom, not joints: a ball-joint shoulder moves like three hinges.
-    length = sum(3 if j.type == "spherical" else 1 for j in chain)
+    length = _freedom(chain)
     if (
         not gripper
         and length <= tree.profile.limb("head_max_joints")
@@ -3239,6 +3238,12 @@ def _classify(
         return Limb(kind, names, base, tip, gripper, named, why)
     kind, why = _unnamed_kind(tree, chain, length, gripper=gripper, named=named, flying=flying)
     return Limb(kind, names, base, tip, gripper, named, why)
+
+
+def _freedom(chain: list[Joint]) -> int:
+    """The chain's degrees of freedom, not its joints: a ball-joint shoulder moves like three
+    hinges."""
+    return sum(3 if joint.type == "spherical" else 1 for joint in chain)
 
 
 def _an_arm_by_name(
@@ -3326,8 +3331,8 @@ def holding_tools(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
 
 def _holding_a_tool(tree: JointTree, limb: Limb) -> Limb:
     """``limb`` made an arm when it has two degrees of freedom or more and holds a tool."""
-    joints = [joint for name in limb.joints if (joint := tree.urdf.joint(name)) is not None]
-    length = sum(3 if joint.type == "spherical" else 1 for joint in joints)
+    joints = _joints_of(tree, limb)
+    length = _freedom(joints)
     tool = _rigid_tool_at(tree, joints) if length >= 2 else ""
     if not tool:
         return limb

@@ -1019,6 +1019,15 @@ def test_a_thigh_and_an_open_linkage_bar_from_one_hips_yaw_are_one_leg() -> None
     assert identify_urdf(open_bar_biped().text()).structure == "Biped"
 
 
+def hip_and_knee(robot: RobotText, leg: str, parent: str, *, xyz: str, shin: float = 0.2) -> str:
+    """A leg of two hinges about y on ``parent``: ``{leg}_hip`` at ``xyz`` turning
+    ``{leg}_thigh``, then ``{leg}_knee`` ``shin`` metres below turning ``{leg}_shin``."""
+    thigh = placed(robot, f"{leg}_hip", "revolute", parent, f"{leg}_thigh", xyz=xyz, axis="0 1 0")
+    return placed(
+        robot, f"{leg}_knee", "revolute", thigh, f"{leg}_shin", xyz=f"0 0 {-shin}", axis="0 1 0"
+    )
+
+
 def test_a_rockers_front_and_rear_legs_alike_and_far_apart_stay_two_legs() -> None:
     # Found in review: on each side a passive rocker carries a front and a rear leg, all
     # hinges about y, side by side on its side: built alike and 40 cm apart, two legs each.
@@ -1029,14 +1038,7 @@ def test_a_rockers_front_and_rear_legs_alike_and_far_apart_stay_two_legs() -> No
             xyz=f"0 {y} 0", axis="0 1 0",
         )  # fmt: skip
         for end, x in (("front", 0.2), ("rear", -0.2)):
-            thigh = builders.placed(
-                robot, f"{side}_{end}_hip", "revolute", rocker, f"{side}_{end}_thigh",
-                xyz=f"{x} 0 -0.05", axis="0 1 0",
-            )  # fmt: skip
-            builders.placed(
-                robot, f"{side}_{end}_knee", "revolute", thigh, f"{side}_{end}_shin",
-                xyz="0 0 -0.2", axis="0 1 0",
-            )  # fmt: skip
+            hip_and_knee(robot, f"{side}_{end}", rocker, xyz=f"{x} 0 -0.05")
     assert detect_body(parse_urdf(robot.text()), load_profile()).count("leg") == 4
 
 
@@ -1049,27 +1051,14 @@ def test_a_spine_joints_two_front_legs_on_either_side_of_the_body_stay_two_legs(
     )
     for end, body_link, x in (("front", front, 0.1), ("rear", "rear_body", -0.1)):
         for side, y in (("left", 0.1), ("right", -0.1)):
-            thigh = builders.placed(
-                robot, f"{end}_{side}_hip", "revolute", body_link, f"{end}_{side}_thigh",
-                xyz=f"{x} {y} -0.05", axis="0 1 0",
-            )  # fmt: skip
-            builders.placed(
-                robot, f"{end}_{side}_knee", "revolute", thigh, f"{end}_{side}_shin",
-                xyz="0 0 -0.2", axis="0 1 0",
-            )  # fmt: skip
+            hip_and_knee(robot, f"{end}_{side}", body_link, xyz=f"{x} {y} -0.05")
     assert detect_body(parse_urdf(robot.text()), load_profile()).count("leg") == 4
 
 
 def test_a_planar_walkers_two_legs_from_its_one_hip_point_stay_two_legs() -> None:
     robot = RobotText("planar_biped", root="torso")
     for side in ("left", "right"):
-        thigh = builders.placed(
-            robot, f"{side}_hip", "revolute", "torso", f"{side}_thigh", xyz="0 0 -0.1",
-            axis="0 1 0",
-        )  # fmt: skip
-        builders.placed(
-            robot, f"{side}_knee", "revolute", thigh, f"{side}_shin", xyz="0 0 -0.4", axis="0 1 0"
-        )
+        hip_and_knee(robot, side, "torso", xyz="0 0 -0.1", shin=0.4)
     body = detect_body(parse_urdf(robot.text()), load_profile())
     assert body.count("leg") == 2
 
@@ -1080,14 +1069,7 @@ def test_a_side_views_left_and_right_legs_drawn_over_each_other_stay_two_legs() 
     robot = RobotText("side_view_dog", root="trunk")
     for end, x in (("front", 0.2), ("rear", -0.2)):
         for side in ("a", "b"):
-            thigh = builders.placed(
-                robot, f"{end}_{side}_hip", "revolute", "trunk", f"{end}_{side}_thigh",
-                xyz=f"{x} 0 -0.05", axis="0 1 0",
-            )  # fmt: skip
-            builders.placed(
-                robot, f"{end}_{side}_knee", "revolute", thigh, f"{end}_{side}_shin",
-                xyz="0 0 -0.2", axis="0 1 0",
-            )  # fmt: skip
+            hip_and_knee(robot, f"{end}_{side}", "trunk", xyz=f"{x} 0 -0.05")
     body = detect_body(parse_urdf(robot.text()), load_profile())
     assert body.count("leg") == 4
     assert not any("four-bar" in limb.why for limb in body.limbs)
@@ -4299,16 +4281,7 @@ def test_a_pan_tilt_units_tip_frame_named_an_end_effector_leaves_it_a_pan_tilt_u
 def test_a_small_humanoids_arm_holding_a_tool_is_found_with_its_other_arm() -> None:
     robot = RobotText("minihum", root="base_link")
     for side, y in (("l", 1), ("r", -1)):
-        hip = placed(
-            robot,
-            f"{side}_hip",
-            "revolute",
-            "base_link",
-            f"{side}_thigh",
-            xyz=f"0 {0.05 * y} -0.05",
-            axis="0 1 0",
-        )
-        placed(robot, f"{side}_knee", "revolute", hip, f"{side}_shin", xyz="0 0 -0.1", axis="0 1 0")
+        hip_and_knee(robot, side, "base_link", xyz=f"0 {0.05 * y} -0.05", shin=0.1)
         shoulder = placed(
             robot,
             f"{side}_j1",
