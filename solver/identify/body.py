@@ -73,6 +73,7 @@ from solver.identify.limbs import (
     small_pan_tilt,
     spine,
     sprawling,
+    swinging_booms,
     wheeled_spine,
     wrist,
 )
@@ -760,7 +761,7 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
         # world is an arm by then): a pendulum rig's one chain, an arm's camera on its tip, a
         # pan/tilt unit's hinges.
         parts.limbs = named_pan_tilt(tree, camera_arm(tree, pendulum(tree, parts.limbs)))
-    parts.limbs = holding_tools(tree, parts.limbs)
+    parts.limbs = swinging_booms(tree, holding_tools(tree, parts.limbs))
 
 
 def _snake(tree: JointTree, parts: _Parts) -> None:

@@ -95,6 +95,7 @@ from solver.identify.pose import (
     distance,
     dot,
     minus,
+    off_axis,
     parallel,
     perpendicular,
     spread,
@@ -3327,6 +3328,52 @@ def holding_tools(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     Read last, so a humanoid's arm holding a tool is found with its other arm, and a pan/tilt
     unit whose tip frame is an ``end_effector`` stays a head."""
     return [_holding_a_tool(tree, limb) if limb.kind == "other" else limb for limb in limbs]
+
+
+def swinging_booms(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
+    """A chain of a slide and a turn about one line that no other reading made a limb (still
+    ``other``), not pointing a camera or a sensor, whose last link's mass sits well out from
+    that line (:func:`_boom_reach`), is an arm: a lift raising a boom that swings round the
+    column it rides (a cylindrical arm on a tracked base, its links named in no language the
+    profile reads). A tray, a turntable or a jacking plate on a lift and a turn holds its mass
+    on the axis, and a mast's pan head points a sensor: none is an arm. Read after
+    :func:`holding_tools`."""
+    return [_swinging_a_boom(tree, limb) if limb.kind == "other" else limb for limb in limbs]
+
+
+def _swinging_a_boom(tree: JointTree, limb: Limb) -> Limb:
+    """``limb`` made an arm when it is a slide and a turn about one line swinging a boom."""
+    joints = _joints_of(tree, limb)
+    reach = _boom_reach(tree, joints)
+    if reach < _BOOM_REACH:
+        return limb
+    names = ", ".join(shown(joint.name) for joint in joints)
+    why = f"a lift and a swing about one line ({names}) carrying a boom {reach:.2f} m out"
+    return replace(limb, kind="arm", why=why)
+
+
+def _boom_reach(tree: JointTree, chain: list[Joint]) -> float:
+    """How far the chain's last link's mass centre sits from its turn's axis, when the chain is
+    one slide and one turn along one line (either first) and points no camera or sensor; 0
+    otherwise (or when the link's inertial says no place)."""
+    slides = [joint for joint in chain if joint.type == "prismatic"]
+    turns = [joint for joint in chain if joint.type in ("revolute", "continuous")]
+    if len(chain) != 2 or len(slides) != 1 or len(turns) != 1:
+        return 0.0
+    (slide,), (turn,) = slides, turns
+    last = chain[-1]
+    if not parallel(tree.poses.axis(slide), tree.poses.axis(turn)) or points_a_sensor(tree, last):
+        return 0.0
+    below = islice(tree.urdf.fixed_below(last.child), _MOST_TOOL_LINKS)
+    centre = tree.poses.mass_centre(last.child)
+    if centre is None or any(_CAMERA.search(name) for name in below):
+        return 0.0
+    return off_axis(minus(centre, tree.poses.place(turn.child)), tree.poses.axis(turn))
+
+
+# How far out from its turn's axis a boom's mass sits, at the least: a tray's, a turntable's or
+# a jacking plate's sits on the axis (within millimetres), a boom's along its length.
+_BOOM_REACH = 0.1
 
 
 def _holding_a_tool(tree: JointTree, limb: Limb) -> Limb:

@@ -71,6 +71,15 @@ def solid(text: str, *links: str) -> str:
     return text
 
 
+def weighted(text: str, link: str, centre: str) -> str:
+    """``text`` with ``link`` given a mass whose centre is at ``centre`` in its own frame."""
+    return text.replace(
+        f'<link name="{link}"/>',
+        f'<link name="{link}"><inertial><origin xyz="{centre}"/><mass value="1.5"/></inertial>'
+        "</link>",
+    )
+
+
 def gazebo_sensor(link: str, kind: str, name: str, inner: str = "", plugin: str = "") -> str:
     plugin_xml = f'<plugin name="{name}_plugin" filename="{plugin}"/>' if plugin else ""
     return (

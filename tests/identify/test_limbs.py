@@ -4327,6 +4327,55 @@ def test_a_chain_holding_no_tool_or_too_short_stays_no_arm(
     assert result.structure == "UGV"
 
 
+def column_lifting_a_boom(
+    *, reach: float = 0.23, swing: str = "0 0 1", swing_first: bool = False, tip: str = ""
+) -> str:
+    """The text of a wheeled base with a fixed column, a lift up it and a swing about ``swing``
+    (about the lift's line, by default; ``swing_first``: the swing below the lift), the last
+    link a boom whose mass sits ``reach`` m out along x, holding ``tip`` on a fixed joint when
+    given."""
+    robot = RobotText("tank", root="base_link")
+    builders.wheeled_base(robot)
+    robot.fixed(robot.root, "khau_1")
+    kinds = [("khop_joint", "prismatic", "0 0 1"), ("khau_2_joint", "continuous", swing)]
+    link = "khau_1"
+    for name, kind, axis in reversed(kinds) if swing_first else kinds:
+        link = placed(robot, name, kind, link, name.replace("_joint", "_link"), axis=axis)
+    if tip:
+        robot.fixed(link, tip)
+    return builders.weighted(robot.text(), link, f"{reach} 0 0")
+
+
+@pytest.mark.parametrize("swing_first", [False, True], ids=["lift then swing", "swing then lift"])
+def test_a_lift_and_a_swing_about_one_line_carrying_a_boom_out_is_an_arm(
+    swing_first: bool,
+) -> None:
+    result = identify_urdf(column_lifting_a_boom(swing_first=swing_first))
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["arm"]
+    assert "a lift and a swing about one line" in result.body.limbs[0].why
+    assert "a boom 0.23 m out" in result.body.limbs[0].why
+    assert result.structure == "Mobile Manipulator"
+
+
+@pytest.mark.parametrize(
+    ("reach", "swing", "tip"),
+    [(0.0, "0 0 1", ""), (0.23, "0 1 0", ""), (0.23, "0 0 1", "camera_link")],
+    ids=[
+        "its mass on the axis: a tray or a jacking plate",
+        "a tilt square to the lift: a forklift's",
+        "a camera on it: a mast's head",
+    ],
+)
+def test_a_lift_and_a_turn_swinging_no_boom_stays_no_arm(
+    reach: float, swing: str, tip: str
+) -> None:
+    result = identify_urdf(column_lifting_a_boom(reach=reach, swing=swing, tip=tip))
+    assert result.body is not None
+    assert result.body.count("arm") == 0
+    assert result.structure == "UGV"
+
+
 def base_on_caster_bogies(tip: str) -> RobotText:
     """A two-wheeled base whose body rides on a front and a back bogie, each a pitch then a
     roll, each roll's shaft holding two links named ``{end}_right_{tip}`` and
