@@ -91,6 +91,7 @@ from typing import NamedTuple
 from solver.identify.pose import (
     Vector,
     centroid,
+    cosine,
     cross,
     distance,
     dot,
@@ -3331,49 +3332,73 @@ def holding_tools(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
 
 
 def swinging_booms(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
-    """A chain of a slide and a turn about one line that no other reading made a limb (still
-    ``other``), not pointing a camera or a sensor, whose last link's mass sits well out from
-    that line (:func:`_boom_reach`), is an arm: a lift raising a boom that swings round the
+    """A chain of a slide along a turn's axis and that turn that no other reading made a limb
+    (still ``other``), whose last link is a boom (:func:`_boom_reach`: long, reaching out from
+    the axis, carrying no sensor), is an arm: a lift raising a boom that swings round the
     column it rides (a cylindrical arm on a tracked base, its links named in no language the
-    profile reads). A tray, a turntable or a jacking plate on a lift and a turn holds its mass
-    on the axis, and a mast's pan head points a sensor: none is an arm. Read after
-    :func:`holding_tools`."""
+    profile reads). A tray, a turntable or a jacking plate is flat and holds its mass on or
+    near the axis, a mast is long along the axis, and a pan head carries a sensor: none is an
+    arm. Read after :func:`holding_tools`."""
     return [_swinging_a_boom(tree, limb) if limb.kind == "other" else limb for limb in limbs]
 
 
 def _swinging_a_boom(tree: JointTree, limb: Limb) -> Limb:
-    """``limb`` made an arm when it is a slide and a turn about one line swinging a boom."""
+    """``limb`` made an arm when it is a slide and a turn swinging a boom."""
     joints = _joints_of(tree, limb)
     reach = _boom_reach(tree, joints)
-    if reach < _BOOM_REACH:
+    if reach is None:
         return limb
     names = ", ".join(shown(joint.name) for joint in joints)
-    why = f"a lift and a swing about one line ({names}) carrying a boom {reach:.2f} m out"
+    why = f"a lift and a swing about its axis ({names}) carrying a boom {reach:.2f} m out"
     return replace(limb, kind="arm", why=why)
 
 
-def _boom_reach(tree: JointTree, chain: list[Joint]) -> float:
-    """How far the chain's last link's mass centre sits from its turn's axis, when the chain is
-    one slide and one turn along one line (either first) and points no camera or sensor; 0
-    otherwise (or when the link's inertial says no place)."""
+def _boom_reach(tree: JointTree, chain: list[Joint]) -> float | None:
+    """How far out from the turn's axis the chain's last link's mass centre sits, when the
+    chain is one slide along one turn's axis and that turn (either first) and its last link is
+    a boom: its mass at least :data:`_BOOM_REACH` out, its inertia long (:meth:`long_axis`)
+    along the line out from the axis, and no sensor on it (:func:`_carries_a_sensor`); None
+    otherwise (or when the link's inertial says no place or no inertia)."""
     slides = [joint for joint in chain if joint.type == "prismatic"]
     turns = [joint for joint in chain if joint.type in ("revolute", "continuous")]
     if len(chain) != 2 or len(slides) != 1 or len(turns) != 1:
-        return 0.0
-    (slide,), (turn,) = slides, turns
-    last = chain[-1]
-    if not parallel(tree.poses.axis(slide), tree.poses.axis(turn)) or points_a_sensor(tree, last):
-        return 0.0
-    below = islice(tree.urdf.fixed_below(last.child), _MOST_TOOL_LINKS)
-    centre = tree.poses.mass_centre(last.child)
-    if centre is None or any(_CAMERA.search(name) for name in below):
-        return 0.0
-    return off_axis(minus(centre, tree.poses.place(turn.child)), tree.poses.axis(turn))
+        return None
+    axis = tree.poses.axis(turns[0])
+    link = chain[-1].child
+    if not parallel(tree.poses.axis(slides[0]), axis) or _carries_a_sensor(tree, chain[-1]):
+        return None
+    centre, long = tree.poses.mass_centre(link), tree.poses.long_axis(link)
+    if centre is None or long is None:
+        return None
+    offset = minus(centre, tree.poses.place(turns[0].child))
+    out = cross(axis, cross(offset, axis))  # the offset's part square to the (unit) axis
+    reach = off_axis(offset, axis)
+    if reach < _BOOM_REACH or cosine(long, out) < _ALONG_THE_BOOM:
+        return None
+    return reach
+
+
+def _carries_a_sensor(tree: JointTree, last: Joint) -> bool:
+    """``last`` moves a sensor: one declared on its link or below it (:func:`points_a_sensor`),
+    or its link or one fixed below it named as a camera's or a sensor's frame
+    (:func:`_names_a_sensor_frame`: a ``zed2`` or ``velodyne`` frame on a mast's head)."""
+    links = [last.child, *islice(tree.urdf.fixed_below(last.child), _MOST_TOOL_LINKS)]
+    return points_a_sensor(tree, last) or any(
+        _CAMERA.search(name) or _names_a_sensor_frame(tree, name) for name in links
+    )
+
+
+def _names_a_sensor_frame(tree: JointTree, name: str) -> bool:
+    """A rule of the profile's sensor frames (``frame_rules``) reads ``name`` as a sensor's."""
+    return any(rule.accepts(None, name) for rule in tree.profile.frame_rules)
 
 
 # How far out from its turn's axis a boom's mass sits, at the least: a tray's, a turntable's or
-# a jacking plate's sits on the axis (within millimetres), a boom's along its length.
+# a jacking plate's sits on the axis or near it, a boom's along its length.
 _BOOM_REACH = 0.1
+# How nearly a boom's long axis points out from the turn's axis (the cosine of the angle
+# between them: a boom raised or lowered by a quarter of a right angle, or less).
+_ALONG_THE_BOOM = 0.9
 
 
 def _holding_a_tool(tree: JointTree, limb: Limb) -> Limb:
@@ -3391,19 +3416,15 @@ def _rigid_tool_at(tree: JointTree, chain: list[Joint]) -> str:
     """The first link fixed below the chain's last joint that :func:`names_a_tool` and that
     has something in it (a gripper's body, a claw, a suction cup, an end effector); empty when
     there is none. Only a grasping tool's name (the profile's gripper words) counts on a chain
-    that points a camera (a camera frame or a sensor below its last joint: a mast's head) or
-    turns as a pan/tilt unit does (two hinges about square axes): an ``end_effector`` or
-    ``eef`` there is the frame a controller aims, no tool."""
+    that points a camera or a sensor (:func:`_carries_a_sensor`: a mast's head) or turns as a
+    pan/tilt unit does (two hinges about square axes): an ``end_effector`` or ``eef`` there is
+    the frame a controller aims, no tool."""
     last = chain[-1]
     below = list(islice(tree.urdf.fixed_below(last.child), _MOST_TOOL_LINKS))
     tools = [name for name in below if names_a_tool(tree, name) and _solid(tree, name)]
     if not tools:
         return ""
-    aims = (
-        _pan_tilt_turns(tree, chain)
-        or any(_CAMERA.search(name) for name in below)
-        or points_a_sensor(tree, last)
-    )
+    aims = _pan_tilt_turns(tree, chain) or _carries_a_sensor(tree, last)
     return next((name for name in tools if not aims or "gripper" in tree.parts_of(name)), "")
 
 
@@ -3433,7 +3454,7 @@ def names_a_tool(tree: JointTree, name: str) -> bool:
     return (
         "tool" in tree.parts_of(name)
         and not _TOOL_MOUNT.search(name)
-        and not any(rule.accepts(None, name) for rule in tree.profile.frame_rules)
+        and not _names_a_sensor_frame(tree, name)
     )
 
 

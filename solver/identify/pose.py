@@ -46,6 +46,9 @@ _IDENTITY: _Matrix = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))
 # as perpendicular.
 _PARALLEL = 0.98
 _PERPENDICULAR = 0.1
+# A link is long when its least principal moment is at most this part of the next: a rod about
+# three times as long as it is thick, or longer (a plate's two least moments are alike).
+_SLENDER = 0.25
 
 
 def _rotation(rpy: Vector) -> _Matrix:
@@ -86,6 +89,37 @@ def _unit(vector: Vector) -> Vector:
 
 def _cosine(one: Vector, other: Vector) -> float:
     return abs(dot(_unit(one), _unit(other)))
+
+
+def cosine(one: Vector, other: Vector) -> float:
+    """How nearly the two axes lie along one line: the cosine of the angle between them, either
+    way round (1 along one line, 0 square)."""
+    return _cosine(one, other)
+
+
+def principal_axes(matrix: _Matrix) -> list[tuple[float, Vector]]:
+    """A symmetric matrix's eigenvalues and unit eigenvectors, least value first (Jacobi's
+    rotations, a bounded number of sweeps: an inertia tensor's principal moments and axes)."""
+    a = [list(row) for row in matrix]
+    v = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
+    for _ in range(_JACOBI_SWEEPS):
+        p, q = max(((0, 1), (0, 2), (1, 2)), key=lambda pq: abs(a[pq[0]][pq[1]]))
+        if abs(a[p][q]) <= 1e-12 * (abs(a[p][p]) + abs(a[q][q])):
+            break
+        theta = 0.5 * math.atan2(2 * a[p][q], a[q][q] - a[p][p])
+        c, s = math.cos(theta), math.sin(theta)
+        for k in range(3):  # columns p and q turned, then rows: A <- G^T A G
+            a[k][p], a[k][q] = c * a[k][p] - s * a[k][q], s * a[k][p] + c * a[k][q]
+        for k in range(3):
+            a[p][k], a[q][k] = c * a[p][k] - s * a[q][k], s * a[p][k] + c * a[q][k]
+        for k in range(3):
+            v[k][p], v[k][q] = c * v[k][p] - s * v[k][q], s * v[k][p] + c * v[k][q]
+    found = [(a[i][i], (v[0][i], v[1][i], v[2][i])) for i in range(3)]
+    return sorted(found, key=lambda pair: pair[0])
+
+
+# Jacobi's rotations on a 3 x 3 matrix converge in a few sweeps; more is no matter of accuracy.
+_JACOBI_SWEEPS = 50
 
 
 def parallel(one: Vector, other: Vector) -> bool:
@@ -226,6 +260,21 @@ class Poses:
         edges = [self.turned(link, rpy, side) for side in sides]
         x, y, z = (sum(abs(edge[k]) for edge in edges) for k in range(3))
         return (x, y, z)
+
+    def long_axis(self, link: str) -> Vector | None:
+        """The direction, in the root's frame, along which ``link``'s inertia says it is long
+        (a rod's, a boom's): the principal axis of its least moment, when that moment is at
+        most a :data:`_SLENDER` part of the next; None for a plate, a block or a ball, or a
+        link whose inertia is not written."""
+        found = self.urdf.link(link)
+        if found is None or found.inertia is None:
+            return None
+        xx, xy, xz, yy, yz, zz = found.inertia.terms
+        axes = principal_axes(((xx, xy, xz), (xy, yy, yz), (xz, yz, zz)))
+        (least, along), (next_least, _) = axes[0], axes[1]
+        if least > _SLENDER * next_least:
+            return None
+        return self.turned(link, found.inertia.rpy, along)
 
     def mass_centre(self, link: str) -> Vector | None:
         """Where ``link``'s mass centre is (its first ``<inertial>``'s origin), in the root's

@@ -71,12 +71,18 @@ def solid(text: str, *links: str) -> str:
     return text
 
 
-def weighted(text: str, link: str, centre: str) -> str:
-    """``text`` with ``link`` given a mass whose centre is at ``centre`` in its own frame."""
+# A rod's inertia, long along its own x (its least moment a twelfth of the others).
+ROD_ALONG_X = 'ixx="0.002" ixy="0" ixz="0" iyy="0.025" iyz="0" izz="0.025"'
+
+
+def weighted(text: str, link: str, centre: str, inertia: str = ROD_ALONG_X) -> str:
+    """``text`` with ``link`` given a mass whose centre is at ``centre`` in its own frame, and
+    ``inertia``'s terms (a rod along x unless told; none when empty)."""
+    terms = f"<inertia {inertia}/>" if inertia else ""
     return text.replace(
         f'<link name="{link}"/>',
-        f'<link name="{link}"><inertial><origin xyz="{centre}"/><mass value="1.5"/></inertial>'
-        "</link>",
+        f'<link name="{link}"><inertial><origin xyz="{centre}"/><mass value="1.5"/>{terms}'
+        "</inertial></link>",
     )
 
 

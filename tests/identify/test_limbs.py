@@ -4328,49 +4328,81 @@ def test_a_chain_holding_no_tool_or_too_short_stays_no_arm(
 
 
 def column_lifting_a_boom(
-    *, reach: float = 0.23, swing: str = "0 0 1", swing_first: bool = False, tip: str = ""
+    *,
+    reach: float = 0.23,
+    swing: str = "0 0 1",
+    swing_first: bool = False,
+    tip: str = "",
+    inertia: str = builders.ROD_ALONG_X,
+    names: tuple[str, str] = ("khop_joint", "khau_2_joint"),
 ) -> str:
     """The text of a wheeled base with a fixed column, a lift up it and a swing about ``swing``
-    (about the lift's line, by default; ``swing_first``: the swing below the lift), the last
-    link a boom whose mass sits ``reach`` m out along x, holding ``tip`` on a fixed joint when
+    (about the lift's line, by default; ``swing_first``: the swing below the lift), joints
+    named ``names``, the last link a boom whose mass sits ``reach`` m out along x, with
+    ``inertia``'s terms (a rod along x, by default), holding ``tip`` on a fixed joint when
     given."""
     robot = RobotText("tank", root="base_link")
     builders.wheeled_base(robot)
     robot.fixed(robot.root, "khau_1")
-    kinds = [("khop_joint", "prismatic", "0 0 1"), ("khau_2_joint", "continuous", swing)]
+    kinds = [(names[0], "prismatic", "0 0 1"), (names[1], "continuous", swing)]
     link = "khau_1"
     for name, kind, axis in reversed(kinds) if swing_first else kinds:
-        link = placed(robot, name, kind, link, name.replace("_joint", "_link"), axis=axis)
+        link = placed(robot, name, kind, link, f"{name}_link", axis=axis)
     if tip:
         robot.fixed(link, tip)
-    return builders.weighted(robot.text(), link, f"{reach} 0 0")
+    return builders.weighted(robot.text(), link, f"{reach} 0 0", inertia)
 
 
-@pytest.mark.parametrize("swing_first", [False, True], ids=["lift then swing", "swing then lift"])
-def test_a_lift_and_a_swing_about_one_line_carrying_a_boom_out_is_an_arm(
-    swing_first: bool,
+@pytest.mark.parametrize(
+    ("swing_first", "names"),
+    [
+        (False, ("khop_joint", "khau_2_joint")),
+        (True, ("khop_joint", "khau_2_joint")),
+        (False, ("boom_lift_joint", "boom_swing_joint")),
+    ],
+    ids=["lift then swing", "swing then lift", "named a lift and a swing, no wing"],
+)
+def test_a_lift_and_a_swing_about_its_axis_carrying_a_boom_out_is_an_arm(
+    swing_first: bool, names: tuple[str, str]
 ) -> None:
-    result = identify_urdf(column_lifting_a_boom(swing_first=swing_first))
+    result = identify_urdf(column_lifting_a_boom(swing_first=swing_first, names=names))
     assert result.body is not None
     assert [limb.kind for limb in result.body.limbs] == ["arm"]
-    assert "a lift and a swing about one line" in result.body.limbs[0].why
+    assert "a lift and a swing about its axis" in result.body.limbs[0].why
     assert "a boom 0.23 m out" in result.body.limbs[0].why
     assert result.structure == "Mobile Manipulator"
 
 
+_PLATE = 'ixx="0.02" ixy="0" ixz="0" iyy="0.02" iyz="0" izz="0.04"'
+_MAST = 'ixx="0.025" ixy="0" ixz="0" iyy="0.025" iyz="0" izz="0.002"'
+
+
 @pytest.mark.parametrize(
-    ("reach", "swing", "tip"),
-    [(0.0, "0 0 1", ""), (0.23, "0 1 0", ""), (0.23, "0 0 1", "camera_link")],
+    ("reach", "swing", "tip", "inertia"),
+    [
+        (0.0, "0 0 1", "", builders.ROD_ALONG_X),
+        (0.23, "0 0 1", "", _PLATE),
+        (0.23, "0 0 1", "", _MAST),
+        (0.23, "0 0 1", "", ""),
+        (0.23, "0 1 0", "", builders.ROD_ALONG_X),
+        (0.23, "0 0 1", "camera_link", builders.ROD_ALONG_X),
+        (0.23, "0 0 1", "zed2_left_frame", builders.ROD_ALONG_X),
+    ],
     ids=[
-        "its mass on the axis: a tray or a jacking plate",
+        "its mass on the axis",
+        "flat: a jacking plate whose mass a CAD export puts off the axis",
+        "long along the axis: a mast",
+        "no inertia written",
         "a tilt square to the lift: a forklift's",
         "a camera on it: a mast's head",
+        "a sensor's frame on it, named for its device",
     ],
 )
 def test_a_lift_and_a_turn_swinging_no_boom_stays_no_arm(
-    reach: float, swing: str, tip: str
+    reach: float, swing: str, tip: str, inertia: str
 ) -> None:
-    result = identify_urdf(column_lifting_a_boom(reach=reach, swing=swing, tip=tip))
+    text = column_lifting_a_boom(reach=reach, swing=swing, tip=tip, inertia=inertia)
+    result = identify_urdf(text)
     assert result.body is not None
     assert result.body.count("arm") == 0
     assert result.structure == "UGV"

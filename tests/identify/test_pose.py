@@ -7,7 +7,15 @@ import math
 import pytest
 
 from solver.identify import identify_urdf
-from solver.identify.pose import Poses, distance, parallel, perpendicular, spread, within
+from solver.identify.pose import (
+    Poses,
+    distance,
+    parallel,
+    perpendicular,
+    principal_axes,
+    spread,
+    within,
+)
 from solver.identify.readers.urdf import parse_urdf
 from tests.identify import builders
 from tests.identify.builders import RobotText
@@ -140,3 +148,50 @@ def test_past_a_thousand_distinct_places_the_box_alone_tells_and_says_no_where_i
     ring = [(0.14 * math.cos(k / 300), 0.14 * math.sin(k / 300), 0.0) for k in range(1885)]
     assert within(ring[:1000], 0.3)  # a ring within its own diameter, compared two by two
     assert not within(ring, 0.3)  # too many to compare: not taken as within
+
+
+def test_a_symmetric_matrixs_principal_axes_come_least_first() -> None:
+    # Along x + y and x - y, a coupling of 1 beside moments of 2 gives 3 and 1; z keeps 5.
+    axes = principal_axes(((2.0, 1.0, 0.0), (1.0, 2.0, 0.0), (0.0, 0.0, 5.0)))
+    assert [value for value, _ in axes] == pytest.approx([1.0, 3.0, 5.0])
+    half = math.sqrt(0.5)
+    assert parallel(axes[0][1], (half, -half, 0.0))
+    assert parallel(axes[1][1], (half, half, 0.0))
+    assert parallel(axes[2][1], (0.0, 0.0, 1.0))
+
+
+def rod(inertia: str) -> Poses:
+    """The poses of a base with one link whose inertial writes ``inertia``."""
+    robot = RobotText("rod", root="base")
+    builders.placed(robot, "j", "revolute", "base", "link", xyz="0 0 0.1")
+    text = robot.text().replace(
+        '<link name="link"/>',
+        f'<link name="link"><inertial><mass value="1"/>{inertia}</inertial></link>',
+    )
+    return Poses(parse_urdf(text, strict=False))
+
+
+@pytest.mark.parametrize(
+    ("inertia", "expected"),
+    [
+        ('<inertia ixx="0.002" ixy="0" ixz="0" iyy="0.03" iyz="0" izz="0.03"/>', (1.0, 0, 0)),
+        (
+            '<origin rpy="0 0 1.5707963267948966"/>'
+            '<inertia ixx="0.002" ixy="0" ixz="0" iyy="0.03" iyz="0" izz="0.03"/>',
+            (0.0, 1.0, 0.0),
+        ),
+        ('<inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.02"/>', None),
+        ('<inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/>', None),
+        ("", None),
+    ],
+    ids=["a rod along x", "the rod turned by its inertial", "a plate", "a ball", "no inertia"],
+)
+def test_a_link_is_long_along_its_least_moments_axis_when_it_is_a_rod(
+    inertia: str, expected: tuple[float, float, float] | None
+) -> None:
+    found = rod(inertia).long_axis("link")
+    if expected is None:
+        assert found is None
+    else:
+        assert found is not None
+        assert parallel(found, expected)

@@ -313,3 +313,25 @@ def test_a_pattern_that_reads_past_the_word_it_reports_shows_its_shown_group() -
     assert pattern.find("joy_teleop:\n  topic_name: /cmd_vel\n") == "joy_teleop"
     assert pattern.find("Node(package='key_teleop')") == "key_teleop"
     assert pattern.find("joy_teleop:\n  topic_name: /pan/commands\n") is None
+
+
+@pytest.mark.parametrize(
+    ("name", "wing"),
+    [
+        ("main_wing_joint", True),
+        ("rwing_joint", True),
+        ("fixedwing/base_link", True),
+        ("left_aileron", True),
+        ("boom_swing_joint", False),
+        ("rr_swing_link", False),
+        ("state_following_offset", False),
+        ("mowing_blade_joint", False),
+    ],
+)
+def test_the_default_profile_names_a_wing_not_a_swing_nor_a_word_ending_in_wing(
+    name: str, wing: bool
+) -> None:
+    from solver.identify.profile import PartMatcher
+
+    parts_of = PartMatcher(load_profile().patterns)
+    assert ("wing" in parts_of(name)) is wing

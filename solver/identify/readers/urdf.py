@@ -108,9 +108,22 @@ class Link:
     # a macro's default, not a measurement). A wheel's mass centre lies on its axle.
     mass: float | None = None
     mass_centre: tuple[float, float, float] | None = None
+    # Its first <inertial>'s <inertia>, when it writes all six terms readably and positive
+    # moments; None otherwise.
+    inertia: Inertia | None = None
     # Its first <visual> when that is a box, else its first <collision> when that is one: a
     # plate's shape (a wing drawn as a board); None for meshes, cylinders, or neither.
     box: Box | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class Inertia:
+    """A link's inertia about its mass centre as its ``<inertial>`` writes it: the moments and
+    products (``ixx``, ``ixy``, ``ixz``, ``iyy``, ``iyz``, ``izz``) in a frame turned by the
+    inertial's ``<origin rpy>`` on the link."""
+
+    terms: tuple[float, float, float, float, float, float]
+    rpy: tuple[float, float, float] = (0.0, 0.0, 0.0)
 
 
 @dataclass(frozen=True, slots=True)
@@ -575,6 +588,7 @@ class _Builder:
                     drawn=any(part.tag in ("visual", "collision") for part in element),
                     mass=mass,
                     mass_centre=_mass_centre(element),
+                    inertia=_inertia(element),
                     box=_box(element),
                 )
         return found
@@ -1538,6 +1552,20 @@ def _mass_centre(link: etree._Element) -> tuple[float, float, float] | None:
     unread = (math.nan, math.nan, math.nan)
     found = _vector(origin, unread)
     return None if found is unread else found
+
+
+def _inertia(link: etree._Element) -> Inertia | None:
+    """A link's first ``<inertial>``'s ``<inertia>``, or None when a term is missing or
+    unreadable or a moment is not positive."""
+    found = link.find("inertial/inertia")
+    if found is None:
+        return None
+    terms = [_float(found.get(name)) for name in ("ixx", "ixy", "ixz", "iyy", "iyz", "izz")]
+    xx, xy, xz, yy, yz, zz = (term if term is not None else math.nan for term in terms)
+    if not all(moment > 0 for moment in (xx, yy, zz)) or any(math.isnan(t) for t in (xy, xz, yz)):
+        return None
+    zero = (0.0, 0.0, 0.0)
+    return Inertia((xx, xy, xz, yy, yz, zz), _vector(link.find("inertial/origin"), zero, "rpy"))
 
 
 def _integer(text: str | None) -> int | None:

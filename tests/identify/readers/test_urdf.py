@@ -7,7 +7,7 @@ from pathlib import Path
 import pytest
 
 from solver.errors import InputError
-from solver.identify.readers.urdf import Cylinder, Link, parse_urdf
+from solver.identify.readers.urdf import Cylinder, Inertia, Link, parse_urdf
 from tests.conftest import run_cli
 from tests.identify import builders
 
@@ -296,6 +296,27 @@ def test_a_links_mass_centre_is_where_its_inertial_puts_it_and_unknown_when_unre
 ) -> None:
     link = base_link(inertial)
     assert link.mass_centre == expected
+
+
+@pytest.mark.parametrize(
+    ("inertia", "expected"),
+    [
+        (
+            '<origin rpy="0 0 1"/><inertia ixx="1" ixy="0.1" ixz="0" iyy="2" iyz="0" izz="3"/>',
+            Inertia((1.0, 0.1, 0.0, 2.0, 0.0, 3.0), (0.0, 0.0, 1.0)),
+        ),
+        ('<inertia ixx="1" ixy="0" ixz="0" iyy="2" iyz="0"/>', None),
+        ('<inertia ixx="1" ixy="0" ixz="0" iyy="0" iyz="0" izz="3"/>', None),
+        ('<inertia ixx="1" ixy="x" ixz="0" iyy="2" iyz="0" izz="3"/>', None),
+        ("", None),
+    ],
+    ids=["turned by its origin", "a term missing", "a moment of zero", "a term unreadable", "none"],
+)
+def test_a_links_inertia_is_its_inertials_six_terms_when_all_are_readable(
+    inertia: str, expected: Inertia | None
+) -> None:
+    link = base_link(f'<inertial><mass value="1"/>{inertia}</inertial>')
+    assert link.inertia == expected
 
 
 def stiffness_arm(*, dummy: str = "", effort: str = "0") -> str:
