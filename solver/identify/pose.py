@@ -87,14 +87,10 @@ def _unit(vector: Vector) -> Vector:
     return (0.0, 0.0, 0.0) if size == 0 else (vector[0] / size, vector[1] / size, vector[2] / size)
 
 
-def _cosine(one: Vector, other: Vector) -> float:
-    return abs(dot(_unit(one), _unit(other)))
-
-
 def cosine(one: Vector, other: Vector) -> float:
     """How nearly the two axes lie along one line: the cosine of the angle between them, either
     way round (1 along one line, 0 square)."""
-    return _cosine(one, other)
+    return abs(dot(_unit(one), _unit(other)))
 
 
 def principal_axes(matrix: _Matrix) -> list[tuple[float, Vector]]:
@@ -124,7 +120,7 @@ _JACOBI_SWEEPS = 50
 
 def parallel(one: Vector, other: Vector) -> bool:
     """The two axes lie along one line (either way round)."""
-    return _cosine(one, other) >= _PARALLEL
+    return cosine(one, other) >= _PARALLEL
 
 
 def same_way(one: Vector, other: Vector) -> bool:
@@ -134,7 +130,7 @@ def same_way(one: Vector, other: Vector) -> bool:
 
 def perpendicular(one: Vector, other: Vector) -> bool:
     """The two axes are square to each other."""
-    return _cosine(one, other) <= _PERPENDICULAR
+    return cosine(one, other) <= _PERPENDICULAR
 
 
 def dot(one: Vector, other: Vector) -> float:
@@ -264,16 +260,17 @@ class Poses:
     def long_axis(self, link: str) -> Vector | None:
         """The direction, in the root's frame, along which ``link``'s inertia says it is long
         (a rod's, a boom's): the principal axis of its least moment, when that moment is at
-        most a :data:`_SLENDER` part of the next; None for a plate, a block or a ball, or a
-        link whose inertia is not written."""
+        most a :data:`_SLENDER` part of the next; None for a plate, a block or a ball, a link
+        whose inertia is not written, or one no body has (a principal moment of 0 or less, or
+        terms too large to turn)."""
         found = self.urdf.link(link)
         if found is None or found.inertia is None:
             return None
         xx, xy, xz, yy, yz, zz = found.inertia.terms
         axes = principal_axes(((xx, xy, xz), (xy, yy, yz), (xz, yz, zz)))
         (least, along), (next_least, _) = axes[0], axes[1]
-        if least > _SLENDER * next_least:
-            return None
+        if not (0 < least <= _SLENDER * next_least) or not all(map(math.isfinite, along)):
+            return None  # a plate, a block or a ball; or no body's inertia (a moment of 0 or less)
         return self.turned(link, found.inertia.rpy, along)
 
     def mass_centre(self, link: str) -> Vector | None:

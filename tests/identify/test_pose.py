@@ -182,9 +182,22 @@ def rod(inertia: str) -> Poses:
         ),
         ('<inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.02"/>', None),
         ('<inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/>', None),
+        ('<inertia ixx="1" ixy="5" ixz="0" iyy="1" iyz="0" izz="1"/>', None),
+        (
+            '<inertia ixx="1e308" ixy="1e308" ixz="1e308" iyy="1e308" iyz="-1e308" izz="1e308"/>',
+            None,
+        ),
         ("", None),
     ],
-    ids=["a rod along x", "the rod turned by its inertial", "a plate", "a ball", "no inertia"],
+    ids=[
+        "a rod along x",
+        "the rod turned by its inertial",
+        "a plate",
+        "a ball",
+        "no body's: a principal moment below 0",
+        "no body's: terms too large to turn",
+        "no inertia",
+    ],
 )
 def test_a_link_is_long_along_its_least_moments_axis_when_it_is_a_rod(
     inertia: str, expected: tuple[float, float, float] | None
