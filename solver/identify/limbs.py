@@ -96,7 +96,6 @@ from solver.identify.pose import (
     distance,
     dot,
     minus,
-    off_axis,
     parallel,
     perpendicular,
     spread,
@@ -1122,7 +1121,7 @@ def _on_the_trunk(tree: JointTree, link: str, turns: dict[str, int]) -> bool:
 def _turning(joint: Joint) -> bool:
     """A joint that turns (a hip, a shoulder, a wrist); not a slide nor a floating or planar
     base a simulator's description writes as joints above the body."""
-    return joint.movable and joint.type in ("revolute", "continuous")
+    return joint.movable and joint.type in _TURNING
 
 
 def legs_by_place(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
@@ -2099,7 +2098,7 @@ def _open_side(
         or len(side.joints) >= len(arm.joints)
         or _carries(tree, side)
         or first is None
-        or first.type not in ("revolute", "continuous")
+        or first.type not in _TURNING
     ):
         return False
     axis = tree.poses.axis(first)
@@ -2131,7 +2130,7 @@ def _planar_arm(tree: JointTree, arm: Limb, known: dict[str, str | None]) -> _Pl
     """The body an arm hangs from, where it starts and ends and its hinges' one axis; None when
     a joint slides or turns about another axis."""
     joints = [tree.urdf.joint(name) for name in arm.joints]
-    hinges = [j for j in joints if j is not None and j.type in ("revolute", "continuous")]
+    hinges = [j for j in joints if j is not None and j.type in _TURNING]
     if not hinges or len(hinges) != len(joints):
         return None
     axis = tree.poses.axis(hinges[0])
@@ -2247,7 +2246,7 @@ def _one_axle(tree: JointTree, one: Limb, other: Limb) -> bool:
         return False
     above = moved_by(tree.urdf, first.parent, {})
     hip = None if above is None else tree.urdf.joint(above)
-    if hip is None or hip.type not in ("revolute", "continuous"):
+    if hip is None or hip.type not in _TURNING:
         return False
     if not _coaxial(tree, one, other):
         return False
@@ -3360,7 +3359,7 @@ def _boom_reach(tree: JointTree, chain: list[Joint]) -> float | None:
     along the line out from the axis, and no sensor on it (:func:`_carries_a_sensor`); None
     otherwise (or when the link's inertial says no place or no inertia)."""
     slides = [joint for joint in chain if joint.type == "prismatic"]
-    turns = [joint for joint in chain if joint.type in ("revolute", "continuous")]
+    turns = [joint for joint in chain if joint.type in _TURNING]
     if len(chain) != 2 or len(slides) != 1 or len(turns) != 1:
         return None
     axis = tree.poses.axis(turns[0])
@@ -3372,7 +3371,7 @@ def _boom_reach(tree: JointTree, chain: list[Joint]) -> float | None:
         return None
     offset = minus(centre, tree.poses.place(turns[0].child))
     out = cross(axis, cross(offset, axis))  # the offset's part square to the (unit) axis
-    reach = off_axis(offset, axis)
+    reach = math.hypot(*out)
     if reach < _BOOM_REACH or cosine(long, out) < _ALONG_THE_BOOM:
         return None
     return reach
@@ -3432,7 +3431,7 @@ def _pan_tilt_turns(tree: JointTree, chain: list[Joint]) -> bool:
     """The chain is two hinges about square axes (:func:`_square_turns`): a pan/tilt unit's."""
     return (
         len(chain) == 2
-        and all(joint.type in ("revolute", "continuous") for joint in chain)
+        and all(joint.type in _TURNING for joint in chain)
         and _square_turns(tree, chain[0], chain[1])
     )
 

@@ -959,6 +959,20 @@ def test_two_motors_side_by_side_on_one_axle_a_hips_abduction_carries_are_one_le
     assert all(len(limb.joints) == 4 for limb in body.limbs if limb.kind == "leg")
 
 
+def pitches_down(
+    robot: RobotText, side: str, parent: str, joints: tuple[tuple[str, str], ...]
+) -> str:
+    """A chain of hinges about y from ``parent``: ``{side}_{joint}`` at each ``xyz`` of
+    ``joints`` turning ``{side}_{joint}_link``; the last link."""
+    link = parent
+    for joint, xyz in joints:
+        link = placed(
+            robot, f"{side}_{joint}", "revolute", link, f"{side}_{joint}_link", xyz=xyz,
+            axis="0 1 0",
+        )  # fmt: skip
+    return link
+
+
 def test_a_waists_two_hips_on_one_axle_either_side_of_it_are_two_legs() -> None:
     # A servo biped whose waist turns its pelvis, the torso's origin 10 cm to one side (an
     # export's): both hips hang on the body's one side of that origin, on one axle 10 cm
@@ -966,13 +980,10 @@ def test_a_waists_two_hips_on_one_axle_either_side_of_it_are_two_legs() -> None:
     robot = RobotText("waist_biped", root="torso")
     pelvis = builders.placed(robot, "waist", "revolute", "torso", "pelvis", xyz="0 0.1 0")
     for side, y in (("left", 0.05), ("right", -0.05)):
-        link = pelvis
-        for joint, xyz in (("hip_pitch", f"0 {y} -0.02"), ("knee", "0 0 -0.07"),
-                           ("ankle_pitch", "0 0 -0.07")):  # fmt: skip
-            link = builders.placed(
-                robot, f"{side}_{joint}", "revolute", link, f"{side}_{joint}_link", xyz=xyz,
-                axis="0 1 0",
-            )  # fmt: skip
+        pitches_down(
+            robot, side, pelvis,
+            (("hip_pitch", f"0 {y} -0.02"), ("knee", "0 0 -0.07"), ("ankle_pitch", "0 0 -0.07")),
+        )  # fmt: skip
     body = detect_body(parse_urdf(robot.text()), load_profile())
     assert body.count("leg") == 2
     assert all(len(limb.joints) == 3 for limb in body.limbs if limb.kind == "leg")
@@ -994,13 +1005,10 @@ def open_bar_biped() -> RobotText:
             robot, f"{side}_hip_yaw", "revolute", robot.root, f"{side}_hip", xyz=f"0 {y} -0.2",
             axis="0 0 1",
         )  # fmt: skip
-        link = hip
-        for joint, xyz in (("hip_pitch", "-0.03 0 -0.066"), ("knee", "0 0 -0.08"),
-                           ("ankle", "0 0 -0.0625")):  # fmt: skip
-            link = builders.placed(
-                robot, f"{side}_{joint}", "revolute", link, f"{side}_{joint}_link", xyz=xyz,
-                axis="0 1 0",
-            )  # fmt: skip
+        pitches_down(
+            robot, side, hip,
+            (("hip_pitch", "-0.03 0 -0.066"), ("knee", "0 0 -0.08"), ("ankle", "0 0 -0.0625")),
+        )  # fmt: skip
         bar = builders.placed(
             robot, f"{side}_thigh_bar", "revolute", hip, f"{side}_thigh_bar_link", xyz="0 0 -0.045",
             axis="0 -1 0",
