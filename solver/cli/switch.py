@@ -69,6 +69,14 @@ def register(subparsers: Any) -> None:
         metavar="S",
         help="seconds to wait for the watcher's answer (default: 5; none: exit status 1)",
     )
+    parser.add_argument(
+        "--look",
+        type=seconds,
+        metavar="S",
+        help="seconds at most to look for the robot and a running watcher's rule set before "
+        "writing (default: 5; the look ends once both are found; a DDS graph is discovered "
+        "one participant at a time, slowly on a busy machine)",
+    )
     add_format(parser, ("text", "json"))
     parser.set_defaults(run=run)
 
@@ -84,7 +92,13 @@ def run(args: argparse.Namespace) -> int:
     station = open_station(address, timeout=args.timeout)
     try:
         switched = switch_robot(
-            station, args.robot, values, rules=rules, clear=args.clear, wait=args.wait
+            station,
+            args.robot,
+            values,
+            rules=rules,
+            clear=args.clear,
+            wait=args.wait,
+            look=args.look,
         )
     finally:
         station.close()

@@ -251,7 +251,12 @@ class Station:
         return dict(self.source.observe_params(NAMESPACE)[1])
 
     def look(
-        self, robot: str, *, announcements: bool, wants_rules: bool = False
+        self,
+        robot: str,
+        *,
+        announcements: bool,
+        wants_rules: bool = False,
+        limit: float | None = None,
     ) -> tuple[tuple[str, ...], dict[str, Any]]:
         """The robots on the graph and the ``/teleop_ui`` parameters, once ``robot`` is there
         (and, with ``announcements``, a watcher that announced its rule set is seen running), or
@@ -265,7 +270,9 @@ class Station:
         (values to check or ``--clear``, and no rule set given; it needs ``announcements``), a
         running watcher that announces one is waited for until :data:`LOOK_LIMIT` once the
         robot is there: a watcher's participant may be discovered well after the robot's, and
-        nothing on the graph says one is coming."""
+        nothing on the graph says one is coming. ``limit``: seconds instead of
+        :data:`LOOK_LIMIT` (``switch --look``)."""
+        limit = LOOK_LIMIT if limit is None else limit
         start = quiet_since = time.monotonic()
         seen: Any = None
         while True:
@@ -276,7 +283,7 @@ class Station:
             params = dict(observation.params)
             # A watcher's announcement may come before its answer's writer is discovered
             # (a busy machine): it counts once that watcher is seen running.
-            running = announcements and self._an_announcer_runs(params, start)
+            running = announcements and self._an_announcer_runs(params, start, limit)
             if robot in robots and (not announcements or running):
                 return robots, params
             now = time.monotonic()
@@ -308,16 +315,16 @@ class Station:
                 seen, quiet_since = state, now
             # The limit holds however often the graph changes (a participant that flaps).
             quiet = not changed and now - quiet_since >= LOOK_QUIET and not awaited
-            if quiet or now - start >= LOOK_LIMIT:
+            if quiet or now - start >= limit:
                 return robots, params
             self._woken.wait(POLL)
 
-    def _an_announcer_runs(self, params: Mapping[str, Any], start: float) -> bool:
+    def _an_announcer_runs(self, params: Mapping[str, Any], start: float, limit: float) -> bool:
         """A watcher that announces a rule set in ``params`` is seen running: asked one by one,
-        the first running one ends the asking, and none is asked past :data:`LOOK_LIMIT` from
+        the first running one ends the asking, and none is asked past ``limit`` seconds from
         ``start`` (on ROS 1 each asking may wait for a node that does not answer)."""
         for announced in announcements(params):
-            if time.monotonic() - start >= LOOK_LIMIT:
+            if time.monotonic() - start >= limit:
                 return False
             if announced.rules is not None and self._runs(announced.watcher):
                 return True
@@ -440,12 +447,15 @@ def switch_robot(
     rules: RuleSet | None = None,
     clear: bool = False,
     wait: float = DEFAULT_WAIT,
+    look: float | None = None,
 ) -> Switched:
     """Make ``robot`` the active one on ``station``'s graph with ``values`` (NAME -> VALUE;
     ``""`` clears one), checked against ``rules`` (else the rule set the graph's watchers
     announce), and wait up to ``wait`` seconds for the answer (see the module docstring).
     ``clear``: every other selection of a value (of the rule set, and on the graph) is
-    cleared, so the robot's own values apply. A located :class:`InputError`, with nothing
+    cleared, so the robot's own values apply. ``look``: seconds at most to look for the robot
+    and a running watcher's rule set before writing (default :data:`LOOK_LIMIT`; each look ends
+    as soon as they are found). A located :class:`InputError`, with nothing
     written, for a switch that cannot be made: a name or value refused, no such robot."""
     values = dict(values or {})
     switch = check_switch(robot, values, rules)
@@ -456,6 +466,7 @@ def switch_robot(
             switch.robot,
             announcements=rules is None,
             wants_rules=rules is None and (bool(values) or clear),
+            limit=look,
         )
         why = None
         if rules is None:

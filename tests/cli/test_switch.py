@@ -76,7 +76,12 @@ def ros2_watch(
 
 
 def switch_ros2(domain: Domain, *args: str) -> Any:
-    return run_cli("switch", "--ros2", "--domain", str(domain.id), *args)
+    """``switch`` on the domain, looking for the robot and a running watcher, and waiting for its
+    answer, for up to a minute each (both end on what they wait for: a busy machine may discover
+    a watcher's participant seconds late); ``args`` may give shorter ones."""
+    return run_cli(
+        "switch", "--ros2", "--domain", str(domain.id), "--look", "60", "--wait", "60", *args
+    )
 
 
 def test_switch_on_ros2_makes_the_robot_active_and_prints_the_watchers_answer(
@@ -192,7 +197,7 @@ def test_switch_refuses_what_is_no_selection_and_writes_nothing(
 
 def test_a_selection_no_watcher_answers_says_so_within_the_wait(domain: Domain) -> None:
     domain.drone("/uav1")
-    result = switch_ros2(domain, "/uav1", "motion_control=Flight", "--wait", "1")
+    result = switch_ros2(domain, "/uav1", "motion_control=Flight", "--wait", "1", "--look", "1")
     assert (result.returncode, result.stdout) == (1, "")
     # No watcher announces a rule set: the names were checked for their syntax only.
     assert result.stderr == (
