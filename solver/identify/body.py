@@ -65,6 +65,7 @@ from solver.identify.limbs import (
     named_wheeled_snake,
     names_a_tool,
     nearest_above,
+    one_joint_legs,
     open_linkages,
     parallel_robot,
     pendulum,
@@ -756,6 +757,7 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
     parts.limbs = small_pan_tilt(tree, parts.limbs, moves)
     parts.limbs = planar_arm(tree, bolted_chain(tree, parts.limbs, moves), moves)
     parts.limbs = gripping_leg(lone_leg(tree, parts.limbs, moves))
+    parts.limbs = one_joint_legs(tree, parts.limbs, moves)
     if not parts.roles and not parts.trunk:
         # Read by the robot's name, once every chain has its kind (a short chain bolted to the
         # world is an arm by then): a pendulum rig's one chain, an arm's camera on its tip, a

@@ -273,6 +273,8 @@ _PAN_TILT_NAME = re.compile(r"pan[_\s-]?tilt|(^|[^a-z])ptu([^a-z]|$)", re.IGNORE
 _PENDULUM_JOINTS = 3
 # A linear actuator drawn open beside a leg: at most this many joints (two pivots, a rod).
 _DRIVE_JOINTS = 3
+# One-hinge chains named as legs are legs when the body has at least this many (a RHex's six).
+_ONE_JOINT_LEGS = 4
 # A spine carries at least this many single leaf joints to be read with side wheels.
 _SIDE_WHEELS = 2
 # Joints (or the links they move) with arm or leg names that make a chain a named limb.
@@ -3390,6 +3392,40 @@ def _carries_a_sensor(tree: JointTree, last: Joint) -> bool:
 def _names_a_sensor_frame(tree: JointTree, name: str) -> bool:
     """A rule of the profile's sensor frames (``frame_rules``) reads ``name`` as a sensor's."""
     return any(rule.accepts(None, name) for rule in tree.profile.frame_rules)
+
+
+def one_joint_legs(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
+    """Chains of one hinge each, named as legs, that no other reading made a limb (still
+    ``other``), at least :data:`_ONE_JOINT_LEGS` of them on one rigid body that neither rolls
+    nor flies (``moves``), alike, turning about parallel axes, at the body's corners: a toy
+    walker's legs, each swinging round whole or back and forth on one servo. A leg needs two
+    joints by its name alone (``leg_min_joints``), and one-joint chains are legs by place only
+    when six or more turn whole (:func:`legs_by_place`: a RHex's); a wheeled base's
+    stabilisers, a crane's outriggers, are not read here."""
+    if moves:
+        return limbs
+    named = [limb for limb in limbs if _a_one_joint_leg(tree, limb)]
+    group = [limb for limb in named if limb.base == named[0].base] if named else []
+    if (
+        len(group) < _ONE_JOINT_LEGS
+        or not _alike_chains(tree, group)
+        or not _parallel(tree, group)
+        or not _at_corners(tree, group[0].base, group, wheeled=False)
+    ):
+        return limbs
+    names = ", ".join(shown(limb.joints[0]) for limb in group)
+    why = f"one of {len(group)} one-hinge chains named as legs at the body's corners ({names})"
+    return [replace(limb, kind="leg", why=why) if limb in group else limb for limb in limbs]
+
+
+def _a_one_joint_leg(tree: JointTree, limb: Limb) -> bool:
+    """``limb`` is still ``other``, one hinge, no gripper, and its names call it a leg more
+    than any other limb."""
+    joints = _joints_of(tree, limb)
+    if limb.kind != "other" or limb.gripper or len(joints) != 1 or joints[0].type not in _TURNING:
+        return False
+    scores = _name_scores(tree, joints)
+    return scores["leg"] > 0 and scores["leg"] == max(scores.values())
 
 
 # How far out from its turn's axis a boom's mass sits, at the least: a tray's, a turntable's or

@@ -4441,3 +4441,67 @@ def test_bogies_whose_shafts_hold_casters_named_for_their_corners_are_no_legs() 
     result = identify_urdf(base_on_caster_bogies("link").text())
     assert result.body is not None
     assert result.body.count("leg") == 2
+
+
+def body_on_one_hinge_legs(
+    legs: int = 4,
+    *,
+    name: str = "leg",
+    kind: str = "continuous",
+    axes: tuple[str, str] = ("0 1 0", "0 1 0"),
+) -> RobotText:
+    """A body on ``legs`` chains of one ``kind`` hinge each, named ``{name}_{i}_joint``, in
+    mirrored pairs along the body (0.3 m apart, 0.2 m out to each side), the left ones turning
+    about ``axes[0]`` and the right ones about ``axes[1]``: a toy walker's legs, each swinging
+    round whole (continuous) or back and forth (revolute)."""
+    robot = RobotText("walker_toy", root="body")
+    pairs = legs // 2
+    for i in range(legs):
+        x = 0.3 * (i % pairs) - 0.15 * (pairs - 1)
+        left = i < pairs
+        placed(
+            robot,
+            f"{name}_{i}_joint",
+            kind,
+            "body",
+            f"{name}_{i}_link",
+            xyz=f"{x} {0.2 if left else -0.2} 0",
+            axis=axes[0] if left else axes[1],
+        )
+    return robot
+
+
+@pytest.mark.parametrize(
+    ("legs", "kind", "structure"),
+    [(4, "continuous", "Quadruped"), (4, "revolute", "Quadruped"), (6, "revolute", "Hexapod")],
+)
+def test_one_hinge_chains_named_as_legs_at_the_corners_are_legs(
+    legs: int, kind: str, structure: str
+) -> None:
+    # (Six or more turning whole are legs by place, named or not: a RHex's.)
+    result = identify_urdf(body_on_one_hinge_legs(legs, kind=kind).text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["leg"] * legs
+    assert f"one of {legs} one-hinge chains named as legs" in result.body.limbs[0].why
+    assert result.structure == structure
+
+
+def test_one_hinge_chains_named_otherwise_or_too_few_or_unlike_are_no_legs() -> None:
+    for robot in (
+        body_on_one_hinge_legs(4, name="flap"),
+        body_on_one_hinge_legs(2),
+        body_on_one_hinge_legs(4, axes=("0 1 0", "0 0 1")),
+    ):
+        result = identify_urdf(robot.text())
+        assert result.body is not None
+        assert result.body.count("leg") == 0
+        assert result.structure not in ("Quadruped", "Hexapod")
+
+
+def test_one_hinge_legs_on_a_body_with_wheels_stay_what_they_were() -> None:
+    # A wheeled base's four stabiliser legs, each one hinge: the base rolls, they hold it.
+    robot = body_on_one_hinge_legs(4)
+    builders.wheeled_base(robot)
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert result.body.count("leg") == 0
