@@ -581,7 +581,7 @@ def legs_by_reach(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     nothing that walks (``two_arm``, :data:`_LEGGED_NAME`) is a dual-arm robot's arms hanging
     at rest.
     """
-    if any(limb.kind == "leg" for limb in limbs) or _world_root(tree):
+    if any(limb.kind == "leg" for limb in limbs) or (_world_root(tree) and not _walks(tree)):
         return limbs
     placed: dict[int, tuple[Place, Place]] = {}
     for limb in limbs:
@@ -922,8 +922,11 @@ def _feet(
 ) -> tuple[bool, bool] | None:
     """Where the tips of ``pair`` are against the root's frame: whether both are below it by
     half their reach, and whether both are within half their reach of it (a root drawn at the
-    feet). None when one of them does not hang nearly straight down (``_LEG_STRAIGHT``)."""
-    root = tree.poses.place(_free_body(tree))[2]
+    feet). None when one of them does not hang nearly straight down (``_LEG_STRAIGHT``). A
+    walker bolted to the world (read only when its name says it walks) is measured from the
+    body its legs hang from, set up in the air, not from the world's origin on the floor."""
+    body = pair[0].base if _world_root(tree) else _free_body(tree)
+    root = tree.poses.place(body)[2]
     below_the_root = at_the_root = True
     for limb in pair:
         start, end = placed[id(limb)]
@@ -3135,6 +3138,12 @@ def joint_span(tree: JointTree, limb: Limb) -> float:
     if first is None or last is None:
         return 0.0
     return distance(tree.poses.place(first.child), tree.poses.place(last.child))
+
+
+def _walks(tree: JointTree) -> bool:
+    """The robot's name calls it something that walks (:data:`_LEGGED_NAME`) and no arm."""
+    name = tree.urdf.name
+    return bool(_LEGGED_NAME.search(name)) and not _named_arm(name)
 
 
 def _world_root(tree: JointTree) -> bool:

@@ -4505,3 +4505,33 @@ def test_one_hinge_legs_on_a_body_with_wheels_stay_what_they_were() -> None:
     result = identify_urdf(robot.text())
     assert result.body is not None
     assert result.body.count("leg") == 0
+
+
+def pair_bolted_up_in_the_air(name: str) -> RobotText:
+    """A robot ``name`` whose body is fixed to ``world`` 1 m up, two unnamed chains of six
+    hinges (``a_m1`` .. ``b_m6``) hanging straight down from it, 0.12 m apart: a walker's legs
+    shown in a viewer, or a torso's arms at rest."""
+    robot = RobotText(name, root="world")
+    robot.joint("mount", "fixed", "world", "body", '<origin xyz="0 0 1"/>')
+    steps = tuple((f"m{i}", "0 0 -0.08") for i in range(2, 7))
+    for side, y in (("a", 0.06), ("b", -0.06)):
+        pitches_down(robot, side, "body", (("m1", f"0 {y} -0.05"), *steps))
+    return robot
+
+
+def test_a_walker_bolted_in_the_air_by_its_name_hangs_its_legs() -> None:
+    # A servo humanoid's legs (fresh set 1360's "UXALeg"), their pelvis fixed 1 m above the
+    # world's origin for a viewer: the pair hangs straight down from the body as a biped's.
+    result = identify_urdf(pair_bolted_up_in_the_air("UXALeg").text())
+    assert result.body is not None
+    assert [limb.kind for limb in result.body.limbs] == ["leg", "leg"]
+    assert result.structure == "Biped"
+
+
+@pytest.mark.parametrize("name", ["stand", "two_arm_walker"])
+def test_a_pair_bolted_in_the_air_is_a_torsos_arms_unless_the_name_walks(name: str) -> None:
+    # Bolted to the world, a torso's arms may hang down too; a name that calls it an arm wins.
+    result = identify_urdf(pair_bolted_up_in_the_air(name).text())
+    assert result.body is not None
+    assert result.body.count("leg") == 0
+    assert result.structure == "Torso"
