@@ -273,8 +273,21 @@ _PAN_TILT_NAME = re.compile(r"pan[_\s-]?tilt|(^|[^a-z])ptu([^a-z]|$)", re.IGNORE
 _PENDULUM_JOINTS = 3
 # A linear actuator drawn open beside a leg: at most this many joints (two pivots, a rod).
 _DRIVE_JOINTS = 3
-# One-hinge chains named as legs are legs when the body has at least this many (a RHex's six).
-_ONE_JOINT_LEGS = 4
+# One-hinge chains named as legs are legs when the body has this many (a toy walker's four, a
+# RHex's six; eight one-hinge "legs" are no walker's read here).
+_ONE_JOINT_LEGS = (4, 6)
+# A leg that holds something up without walking: it folds, deploys, levels or props (a table's,
+# a lander's, an outrigger, a drone's landing gear, a flipper).
+_SUPPORT = re.compile(
+    r"fold|deploy|landing|outrigger|stabili[sz]|support|jack|level|flipper|gear", re.IGNORECASE
+)
+# A thing on legs that does not walk, by its name as a word (camelCase split): furniture, a
+# lander, a crane, a stand (not ``standard``).
+_STANDS = re.compile(
+    r"(^|[^a-z])(table|bench|bed|desk|chair|stand|cart|crane|lander)s?([^a-z]|$)", re.IGNORECASE
+)
+# A leg called so as a word (``leg_fr_joint``, ``FrontLeg``, ``legs_2``), camelCase split.
+_LEG_WORD = re.compile(r"(^|[^a-z])legs?([^a-z]|$)|(?-i:Legs?)(?![a-z])", re.IGNORECASE)
 # A spine carries at least this many single leaf joints to be read with side wheels.
 _SIDE_WHEELS = 2
 # Joints (or the links they move) with arm or leg names that make a chain a named limb.
@@ -925,11 +938,14 @@ def _feet(
     feet). None when one of them does not hang nearly straight down (``_LEG_STRAIGHT``). A
     walker bolted to the world (read only when its name says it walks) is measured from the
     body its legs hang from, set up in the air, not from the world's origin on the floor."""
-    body = pair[0].base if _world_root(tree) else _free_body(tree)
+    bolted = _world_root(tree)
+    body = pair[0].base if bolted else _free_body(tree)
     root = tree.poses.place(body)[2]
     below_the_root = at_the_root = True
     for limb in pair:
         start, end = placed[id(limb)]
+        if bolted and start[2] > root + _SAME_PLACE:
+            return None  # hips hang from the bottom of their body, shoulders from above it
         reach = distance(start, end)
         if reach == 0 or start[2] - end[2] < _LEG_STRAIGHT * reach:
             return None
@@ -3141,9 +3157,22 @@ def joint_span(tree: JointTree, limb: Limb) -> float:
 
 
 def _walks(tree: JointTree) -> bool:
-    """The robot's name calls it something that walks (:data:`_LEGGED_NAME`) and no arm."""
-    name = tree.urdf.name
-    return bool(_LEGGED_NAME.search(name)) and not _named_arm(name)
+    """The robot's name calls it something that walks, as a word (:data:`_WALKER_WORD`, its
+    camelCase and acronyms split: ``UXALeg``; not ``college``, ``legacy`` nor ``watchdog``), and
+    no arm nor an upper body (:data:`_UPPER_BODY`: ``humanoid_upper``)."""
+    name = _CAMEL.sub("_", _ACRONYM.sub("_", tree.urdf.name))
+    return bool(_WALKER_WORD.search(name)) and not _named_arm(name) and not _UPPER_BODY.search(name)
+
+
+# A walker's name as a word (``uxa_leg``, ``biped_rig``, ``robot_dog``, ``legged_test``).
+_WALKER_WORD = re.compile(
+    r"(^|[^a-z])(legs?|legged|biped|humanoid|walker|walking|quadruped|hexapod|dog)([^a-z]|$)",
+    re.IGNORECASE,
+)
+# An upper body's name: its arms may hang down when it is bolted to the world.
+_UPPER_BODY = re.compile(r"upper|torso|bust|chest|arms|dual|twin", re.IGNORECASE)
+# Where an acronym ends and a capitalised word starts (``UXA|Leg``).
+_ACRONYM = re.compile(r"(?<=[A-Z])(?=[A-Z][a-z])")
 
 
 def _world_root(tree: JointTree) -> bool:
@@ -3404,21 +3433,27 @@ def _names_a_sensor_frame(tree: JointTree, name: str) -> bool:
 
 
 def one_joint_legs(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb]:
-    """Chains of one hinge each, named as legs, that no other reading made a limb (still
-    ``other``), at least :data:`_ONE_JOINT_LEGS` of them on one rigid body that neither rolls
-    nor flies (``moves``), alike, turning about parallel axes, at the body's corners: a toy
-    walker's legs, each swinging round whole or back and forth on one servo. A leg needs two
-    joints by its name alone (``leg_min_joints``), and one-joint chains are legs by place only
-    when six or more turn whole (:func:`legs_by_place`: a RHex's); a wheeled base's
-    stabilisers, a crane's outriggers, are not read here."""
-    if moves:
+    """Chains of one hinge each, called legs (:func:`_a_one_joint_leg`), that no other reading
+    made a limb (still ``other``), four or six of them (:data:`_ONE_JOINT_LEGS`) on one rigid
+    body, alike, turning about parallel level axes, at the body's corners: a toy walker's legs,
+    each swinging round whole or back and forth on one servo. A leg needs two joints by its
+    name alone (``leg_min_joints``), and one-joint chains are legs by place only when six or
+    more turn whole (:func:`legs_by_place`: a RHex's). Not on a body that rolls or flies
+    (``moves``), that any joint's name says rolls or flies (a wheel, a rotor or a track, fixed
+    ones too: a trimmed model's), whose name says it flies or stands (a drone's landing legs, a
+    table's), that carries an arm (a crane's outriggers) or that is bolted to the world (a test
+    stand); nor legs named as supports that fold or deploy (:data:`_SUPPORT`)."""
+    if moves or _world_root(tree) or _rolls_or_flies_by_name(tree):
+        return limbs
+    if any(limb.kind == "arm" for limb in limbs):
         return limbs
     named = [limb for limb in limbs if _a_one_joint_leg(tree, limb)]
     group = [limb for limb in named if limb.base == named[0].base] if named else []
     if (
-        len(group) < _ONE_JOINT_LEGS
+        len(group) not in _ONE_JOINT_LEGS
         or not _alike_chains(tree, group)
         or not _parallel(tree, group)
+        or parallel(tree.poses.axis(_joints_of(tree, group[0])[0]), _UP)
         or not _at_corners(tree, group[0].base, group, wheeled=False)
     ):
         return limbs
@@ -3428,13 +3463,35 @@ def one_joint_legs(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb
 
 
 def _a_one_joint_leg(tree: JointTree, limb: Limb) -> bool:
-    """``limb`` is still ``other``, one hinge, no gripper, and its names call it a leg more
+    """``limb`` is still ``other``, one hinge, no gripper, its joint or the link it turns
+    called a leg as a word (:data:`_LEG_WORD`: not only a corner, a hip or a foot) and not a
+    support that folds, deploys or holds (:data:`_SUPPORT`), and its names call it a leg more
     than any other limb."""
     joints = _joints_of(tree, limb)
     if limb.kind != "other" or limb.gripper or len(joints) != 1 or joints[0].type not in _TURNING:
         return False
+    names = (joints[0].name, joints[0].child)
+    if not any(_LEG_WORD.search(name) for name in names) or any(
+        _SUPPORT.search(name) for name in names
+    ):
+        return False
     scores = _name_scores(tree, joints)
-    return scores["leg"] > 0 and scores["leg"] == max(scores.values())
+    return all(scores["leg"] > count for kind, count in scores.items() if kind != "leg")
+
+
+def _rolls_or_flies_by_name(tree: JointTree) -> bool:
+    """A joint of the description, fixed ones too, or the link it holds, is named as a wheel's,
+    a rotor's or a track's, or the robot's name says it flies (the profile's flight words) or
+    stands on its legs without walking (:data:`_STANDS`: furniture, a lander)."""
+    flight = tree.profile.plugin_pattern("flight")
+    name = tree.urdf.name
+    if (flight is not None and flight.search(name)) or _STANDS.search(_CAMEL.sub("_", name)):
+        return True
+    return any(
+        tree.matches(part, joint)
+        for joint in tree.urdf.joints
+        for part in ("wheel", "rotor", "track")
+    )
 
 
 # How far out from its turn's axis a boom's mass sits, at the least: a tray's, a turntable's or

@@ -4449,12 +4449,13 @@ def body_on_one_hinge_legs(
     name: str = "leg",
     kind: str = "continuous",
     axes: tuple[str, str] = ("0 1 0", "0 1 0"),
+    robot_name: str = "walker_toy",
 ) -> RobotText:
-    """A body on ``legs`` chains of one ``kind`` hinge each, named ``{name}_{i}_joint``, in
-    mirrored pairs along the body (0.3 m apart, 0.2 m out to each side), the left ones turning
-    about ``axes[0]`` and the right ones about ``axes[1]``: a toy walker's legs, each swinging
-    round whole (continuous) or back and forth (revolute)."""
-    robot = RobotText("walker_toy", root="body")
+    """A robot ``robot_name``: a body on ``legs`` chains of one ``kind`` hinge each, named
+    ``{name}_{i}_joint``, in mirrored pairs along the body (0.3 m apart, 0.2 m out to each
+    side), the left ones turning about ``axes[0]`` and the right ones about ``axes[1]``: a toy
+    walker's legs, each swinging round whole (continuous) or back and forth (revolute)."""
+    robot = RobotText(robot_name, root="body")
     pairs = legs // 2
     for i in range(legs):
         x = 0.3 * (i % pairs) - 0.15 * (pairs - 1)
@@ -4486,16 +4487,63 @@ def test_one_hinge_chains_named_as_legs_at_the_corners_are_legs(
     assert result.structure == structure
 
 
-def test_one_hinge_chains_named_otherwise_or_too_few_or_unlike_are_no_legs() -> None:
-    for robot in (
+def bolted(robot: RobotText) -> RobotText:
+    """``robot`` with its root fixed to a ``world`` link (a test stand)."""
+    robot.links.append("world")
+    robot.joint("stand", "fixed", "world", robot.root)
+    return robot
+
+
+def with_a_fixed_wheel(robot: RobotText) -> RobotText:
+    """``robot`` with a caster wheel link fixed under its root (a trimmed model's)."""
+    robot.fixed(robot.root, "caster_wheel_link")
+    return robot
+
+
+def with_an_arm(robot: RobotText) -> RobotText:
+    """``robot`` carrying a six-joint arm with a gripper on its root (a crane on outriggers)."""
+    builders.arm(robot, robot.root)
+    return robot
+
+
+@pytest.mark.parametrize(
+    "robot",
+    [
         body_on_one_hinge_legs(4, name="flap"),
+        body_on_one_hinge_legs(4, name="front_left"),
         body_on_one_hinge_legs(2),
+        body_on_one_hinge_legs(8, kind="revolute"),
         body_on_one_hinge_legs(4, axes=("0 1 0", "0 0 1")),
-    ):
-        result = identify_urdf(robot.text())
-        assert result.body is not None
-        assert result.body.count("leg") == 0
-        assert result.structure not in ("Quadruped", "Hexapod")
+        body_on_one_hinge_legs(4, axes=("0 0 1", "0 0 1")),
+        body_on_one_hinge_legs(4, name="fold_leg"),
+        body_on_one_hinge_legs(4, name="landing_leg"),
+        body_on_one_hinge_legs(4, robot_name="FoldingTable"),
+        body_on_one_hinge_legs(4, robot_name="quadcopter_x"),
+        bolted(body_on_one_hinge_legs(4)),
+        with_a_fixed_wheel(body_on_one_hinge_legs(4)),
+        with_an_arm(body_on_one_hinge_legs(4)),
+    ],
+    ids=[
+        "named otherwise",
+        "named for their corners only",
+        "two",
+        "eight servos (eight turning whole are a RHex-like walker's, by place)",
+        "about unlike axes",
+        "about the vertical",
+        "legs that fold",
+        "a drone's landing legs by their name",
+        "a table by its name",
+        "a drone by its name",
+        "bolted to the world",
+        "beside a wheel, fixed",
+        "beside an arm",
+    ],
+)
+def test_one_hinge_chains_that_are_no_walkers_legs_stay_no_legs(robot: RobotText) -> None:
+    result = identify_urdf(robot.text())
+    assert result.body is not None
+    assert result.body.count("leg") == 0
+    assert result.structure not in ("Quadruped", "Hexapod", "Legged Mobile Manipulator")
 
 
 def test_one_hinge_legs_on_a_body_with_wheels_stay_what_they_were() -> None:
@@ -4507,15 +4555,15 @@ def test_one_hinge_legs_on_a_body_with_wheels_stay_what_they_were() -> None:
     assert result.body.count("leg") == 0
 
 
-def pair_bolted_up_in_the_air(name: str) -> RobotText:
+def pair_bolted_up_in_the_air(name: str, *, start: float = -0.05) -> RobotText:
     """A robot ``name`` whose body is fixed to ``world`` 1 m up, two unnamed chains of six
-    hinges (``a_m1`` .. ``b_m6``) hanging straight down from it, 0.12 m apart: a walker's legs
-    shown in a viewer, or a torso's arms at rest."""
+    hinges (``a_m1`` .. ``b_m6``) hanging straight down from ``start`` m above its origin,
+    0.12 m apart: a walker's legs shown in a viewer, or a torso's arms at rest."""
     robot = RobotText(name, root="world")
     robot.joint("mount", "fixed", "world", "body", '<origin xyz="0 0 1"/>')
     steps = tuple((f"m{i}", "0 0 -0.08") for i in range(2, 7))
     for side, y in (("a", 0.06), ("b", -0.06)):
-        pitches_down(robot, side, "body", (("m1", f"0 {y} -0.05"), *steps))
+        pitches_down(robot, side, "body", (("m1", f"0 {y} {start}"), *steps))
     return robot
 
 
@@ -4528,10 +4576,31 @@ def test_a_walker_bolted_in_the_air_by_its_name_hangs_its_legs() -> None:
     assert result.structure == "Biped"
 
 
-@pytest.mark.parametrize("name", ["stand", "two_arm_walker"])
-def test_a_pair_bolted_in_the_air_is_a_torsos_arms_unless_the_name_walks(name: str) -> None:
-    # Bolted to the world, a torso's arms may hang down too; a name that calls it an arm wins.
-    result = identify_urdf(pair_bolted_up_in_the_air(name).text())
+@pytest.mark.parametrize(
+    ("name", "start"),
+    [
+        ("stand", -0.05),
+        ("two_arm_walker", -0.05),
+        ("college_robot", -0.05),
+        ("legacy_cell", -0.05),
+        ("humanoid_upper", -0.05),
+        ("UXALeg", 0.05),
+    ],
+    ids=[
+        "no walker's name",
+        "a name that also says arm",
+        "leg inside a word",
+        "leg starting a longer word",
+        "an upper body",
+        "hanging from above the body's origin: shoulders",
+    ],
+)
+def test_a_pair_bolted_in_the_air_is_a_torsos_arms_unless_a_walkers_legs(
+    name: str, start: float
+) -> None:
+    # Bolted to the world, a torso's arms may hang down too: only a walker's name, as a word and
+    # no arm's nor an upper body's, with the pair hanging from the bottom of its body, is legs.
+    result = identify_urdf(pair_bolted_up_in_the_air(name, start=start).text())
     assert result.body is not None
     assert result.body.count("leg") == 0
     assert result.structure == "Torso"
