@@ -2319,7 +2319,7 @@ def _one_hinge(tree: JointTree, one: Limb, other: Limb, hinges: _Hinges) -> str:
     if first is None or second is None:
         return ""
     gap = distance(tree.poses.place(first.child), tree.poses.place(second.child))
-    if not gap <= _FIVE_BAR_GAP or not _one_side(tree, hinge, one, other):  # NaN fails too
+    if not gap <= _FIVE_BAR_GAP or not _one_side(tree, hinge, first, second):  # NaN fails too
         return ""
     if not _one_plane(tree, one, other):
         return ""
@@ -2339,14 +2339,13 @@ def _shared_hinge(tree: JointTree, one: Limb, other: Limb, hinges: _Hinges) -> s
     return None
 
 
-def _one_side(tree: JointTree, hinge: str, one: Limb, other: Limb) -> bool:
-    """The first joints of two chains sit on one side of ``hinge``, across y (not a
-    centimetre or more to either side of it), and lie beside each other more than along their
-    first joint's axis: a hip's thigh and bar side by side in the leg's plane, where a waist
+def _one_side(tree: JointTree, hinge: str, first: Joint, second: Joint) -> bool:
+    """Two chains' first joints, ``first`` and ``second``, sit on one side of ``hinge``, across
+    y (not a centimetre or more to either side of it), and lie beside each other more than
+    along ``first``'s axis: a hip's thigh and bar side by side in the leg's plane, where a waist
     or a spine's joint carries its two legs on either side of it, apart along their axes."""
-    first, second = tree.urdf.joint(one.joints[0]), tree.urdf.joint(other.joints[0])
     joint = tree.urdf.joint(hinge)
-    if first is None or second is None or joint is None:
+    if joint is None:
         return False
     centre = tree.poses.place(joint.child)
     a, b = tree.poses.place(first.child), tree.poses.place(second.child)
@@ -3443,14 +3442,13 @@ def one_joint_legs(tree: JointTree, limbs: list[Limb], moves: bool) -> list[Limb
     ones too: a trimmed model's), whose name says it flies or stands (a drone's landing legs, a
     table's), that carries an arm (a crane's outriggers) or that is bolted to the world (a test
     stand); nor legs named as supports that fold or deploy (:data:`_SUPPORT`)."""
-    if moves or _world_root(tree) or _rolls_or_flies_by_name(tree):
-        return limbs
-    if any(limb.kind == "arm" for limb in limbs):
+    if moves or _world_root(tree) or any(limb.kind == "arm" for limb in limbs):
         return limbs
     named = [limb for limb in limbs if _a_one_joint_leg(tree, limb)]
     group = [limb for limb in named if limb.base == named[0].base] if named else []
     if (
         len(group) not in _ONE_JOINT_LEGS
+        or _rolls_or_flies_by_name(tree)
         or not _alike_chains(tree, group)
         or not _parallel(tree, group)
         or parallel(tree.poses.axis(_joints_of(tree, group[0])[0]), _UP)
