@@ -37,7 +37,7 @@ from itertools import islice
 
 from solver.identify.actuation import MOTOR, mirrored_across, with_role
 from solver.identify.limbs import Limb, moved_by
-from solver.identify.pose import Vector, parallel
+from solver.identify.pose import Vector, parallel, perpendicular
 from solver.identify.readers.urdf import Cylinder, Joint
 from solver.identify.roles import Role
 from solver.identify.sensors import element_kind, plugin_kind
@@ -284,25 +284,24 @@ def pushing_rotors(tree: JointTree, roles: dict[str, Role]) -> dict[str, Role]:
     """Rotors by their names, two or more (the profile's ``min_rotors``), each turning for ever
     about a level axis written (URDF's default axis, x, says nothing, nor a CAD export's
     placeholder limits) as the body rests, each on an engine that swivels about the upright on
-    the hull and carries nothing else that moves (:func:`_on_an_outboard`), on a body with no
+    the hull and carries nothing else that moves (:func:`_on_an_outboard`), or some two of them
+    square to each other (:func:`_push_many_ways`), on a body with no
     wheel (turning, or fixed: a trimmed model's gear, :func:`fixed_wheels`), no wing (:func:`wings`,
     or any link named so), no flight plugin and neither an aircraft's nor an airship's name:
     a boat's outboards, which push it along and lift nothing, so they are thrusters. A
     multirotor's rotors sit on its frame (an export drawn with y up turns them level), a
     plane's on fixed nacelles beside its wings, an arm's or a leg's motor rotors on links that
     carry the next joint."""
-    rotors = [tree.urdf.joint(name) for name in with_role(roles, "rotor")]
+    names = with_role(roles, "rotor")
+    rotors = [j for j in map(tree.urdf.joint, names) if j is not None]
     flight = tree.profile.plugin_pattern("flight")
     if (
-        len(rotors) < tree.profile.limb("min_rotors")
+        len(rotors) < max(len(names), tree.profile.limb("min_rotors"))
         or tree.labels("flight")
         or tree.reader.named_airship
         or (flight is not None and flight.search(tree.urdf.name))
         or any(
-            j is None
-            or not (j.endless and j.axis_written)
-            or abs(tree.poses.axis(j)[_UP]) > _LEVEL_AXIS
-            or not _on_an_outboard(tree, j)
+            not (j.endless and j.axis_written) or abs(tree.poses.axis(j)[_UP]) > _LEVEL_AXIS
             for j in rotors
         )
         or with_role(roles, "wheel")
@@ -311,12 +310,29 @@ def pushing_rotors(tree: JointTree, roles: dict[str, Role]) -> dict[str, Role]:
         or wings(tree, roles)
     ):
         return {}
-    why = (
-        "named as a rotor, but turning about a level axis on an engine that swivels about the "
-        "upright, on a body with no wheel or wing: it pushes the body along, lifting nothing "
-        "(a boat's outboard)"
-    )
-    return {j.name: Role(j.name, "thruster", why) for j in rotors if j is not None}
+    if all(_on_an_outboard(tree, j) for j in rotors):
+        why = (
+            "named as a rotor, but turning about a level axis on an engine that swivels about "
+            "the upright, on a body with no wheel or wing: it pushes the body along, lifting "
+            "nothing (a boat's outboard)"
+        )
+    elif _push_many_ways(tree, rotors):
+        why = (
+            "named as a rotor, but turning about a level axis square to another's, on a body "
+            "with no wheel or wing: they push the body every way on the level, lifting nothing "
+            "(a vessel's thrusters set around its hull)"
+        )
+    else:
+        return {}
+    return {j.name: Role(j.name, "thruster", why) for j in rotors}
+
+
+def _push_many_ways(tree: JointTree, rotors: Sequence[Joint]) -> bool:
+    """Level rotors that do not all lie along one line (some two square to each other): they
+    push the body every way on the level, as a vessel's thrusters set around its hull do. A
+    multirotor drawn with y up turns its rotors level too, but all along one line (its up)."""
+    axes = [tree.poses.axis(j) for j in rotors]
+    return any(perpendicular(one, other) for at, one in enumerate(axes) for other in axes[at + 1 :])
 
 
 def _on_an_outboard(tree: JointTree, rotor: Joint) -> bool:

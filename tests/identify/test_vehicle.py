@@ -4,6 +4,8 @@ what a model trimmed of its moving parts still shows."""
 
 from __future__ import annotations
 
+import math
+
 import pytest
 
 from solver.identify import identify_urdf, load_profile
@@ -1237,6 +1239,37 @@ def test_propellers_turning_about_a_level_axis_on_a_wingless_body_push_it_as_a_b
         other = identify_urdf(robot.text())
         assert other.body is not None
         assert other.body.thrusters == ()
+
+
+def tub(*, turned: tuple[float, ...] = (0.0, 1.5708, 3.1416, -1.5708)) -> RobotText:
+    """A round hull with a propeller on a fixed guard at each side, each turning about its
+    guard's y axis, the guards turned about the upright by ``turned`` (tangent to the hull)."""
+    robot = RobotText("tub")
+    for index, yaw in enumerate(turned):
+        x, y = 0.1 * math.cos(yaw - 1.5708), 0.1 * math.sin(yaw - 1.5708)
+        place = f'<origin xyz="{x} {y} -0.1" rpy="0 0 {yaw}"/>'
+        guard = robot.joint(f"guard_{index}_joint", "fixed", "base_link", f"guard_{index}", place)
+        spin = '<origin xyz="0 0 0"/><axis xyz="0 1 0"/>'
+        robot.joint(f"propeller_{index}_joint", "continuous", guard, f"propeller_{index}", spin)
+    return robot
+
+
+def test_level_propellers_square_to_each_other_push_a_hull_every_way_as_a_vessels_do() -> None:
+    result = identify_urdf(tub().text())
+    assert result.structure == "Surface Vessel"
+    assert result.body is not None
+    assert len(result.body.thrusters) == 4
+    assert result.body.rotors == ()
+    # All along one line (a multirotor drawn with y up), they stay rotors; so they do on an
+    # aircraft's name.
+    parallel = identify_urdf(tub(turned=(0.0, 0.0, 3.1416, 3.1416)).text())
+    assert parallel.body is not None
+    assert parallel.body.thrusters == ()
+    named = tub()
+    named.name = "tub_drone"
+    flown = identify_urdf(named.text())
+    assert flown.body is not None
+    assert flown.body.thrusters == ()
 
 
 def test_level_rotors_on_the_frame_itself_are_no_outboards() -> None:
