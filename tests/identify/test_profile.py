@@ -224,6 +224,7 @@ def test_package_rules_are_optional_and_their_structures_are_checked() -> None:
         "Waypoint",
         "Waypoint",
         "velocity",
+        "velocity",
         "navigation velocity",
         "End Effector",
         "End Effector",

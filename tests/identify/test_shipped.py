@@ -203,6 +203,36 @@ def test_a_teleop_node_is_the_structures_velocity_control() -> None:
     assert list(shipped("Quadruped", teleop)) == ["Walking"]
 
 
+@pytest.mark.parametrize(
+    "node",
+    [
+        # ROS 1 in C++: a joystick callback that publishes a Twist on cmd_vel.
+        "#include <ros/ros.h>\n#include <geometry_msgs/Twist.h>\n#include <sensor_msgs/Joy.h>\n",
+        # ROS 2 in Python, among other messages, a stamped Twist.
+        "from sensor_msgs.msg import Imu, Joy\nfrom geometry_msgs.msg import TwistStamped\n",
+        # ROS 2 in C++.
+        '#include "sensor_msgs/msg/joy.hpp"\n#include "geometry_msgs/msg/twist.hpp"\n',
+        # A keyboard teleop of its own: keys read from the terminal, a Twist sent.
+        "from geometry_msgs.msg import Twist\n\nimport sys, tty, termios\n",
+        "#include <termios.h>\n#include <geometry_msgs/msg/twist.hpp>\n",
+    ],
+)
+def test_a_node_of_the_robots_own_turning_a_joystick_or_keys_into_a_twist_is_a_teleop_node(
+    node: str,
+) -> None:
+    assert list(shipped("UGV", node)) == ["Driving"]
+    assert shipped("Manipulator", node) == {}
+
+
+def test_a_node_sending_a_twist_with_no_joystick_or_keys_is_no_teleop_node() -> None:
+    for node in (
+        "from sensor_msgs.msg import Imu\nfrom geometry_msgs.msg import Twist\n",
+        "from sensor_msgs.msg import JoyFeedback\nfrom geometry_msgs.msg import Twist\n",
+        "import termios\nfrom std_msgs.msg import Float64\n",
+    ):
+        assert shipped("UGV", node) == {}, node
+
+
 def test_moveits_planning_node_means_end_effector_goals() -> None:
     moveit = "<include file='$(find arm_moveit)/launch/move_group.launch'/>"
     assert list(shipped("Manipulator", moveit)) == ["End Effector"]
