@@ -35,7 +35,7 @@ from solver.core.ruleset import RuleSet
 from solver.identify.limbs import moved_by
 from solver.identify.pose import Poses, Vector, distance, same_way
 from solver.identify.profile import SENSOR_TYPE, Profile
-from solver.identify.readers.urdf import Joint, PluginTag, SensorTag, Urdf
+from solver.identify.readers.urdf import SCAN_OUTPUT, Joint, PluginTag, SensorTag, Urdf
 from solver.untrusted import shown
 
 __all__ = [
@@ -96,10 +96,8 @@ _BASELINE = 0.3
 # finder's beam or cone, one distance. A lidar sweeps wider: every labelled ray sensor of the
 # development rows this narrow is a range finder, a sonar or a DVL's beam (docs/identify.md).
 _POINT_SWEEP = math.radians(20.0)
-# A Gazebo plugin that casts rays (gazebo_ros_ray_sensor, a GPU ray sensor), and the outputs of
-# one that sweeps a scan.
+# A Gazebo plugin that casts rays (gazebo_ros_ray_sensor, a GPU ray sensor).
 _RAY_PLUGIN = re.compile(r"(^|[^a-z])(gpu_?)?ray([^a-z]|$)", re.IGNORECASE)
-_SCAN_OUTPUT = re.compile(r"laserscan|pointcloud", re.IGNORECASE)
 
 
 @dataclass(frozen=True, slots=True)
@@ -761,7 +759,7 @@ def _ray_plugin_kind(plugin: PluginTag, profile: Profile) -> str:
     for rule in profile.element_rules:
         if rule.match is not None and rule.accepts("ray", text):
             return rule.kind
-    if _SCAN_OUTPUT.search(plugin.param("output_type") or ""):
+    if SCAN_OUTPUT.search(plugin.param("output_type") or ""):
         return "lidar"
     ranges = (rule for rule in profile.element_rules if rule.kind == "ir_range")
     return "ir_range" if any(rule.accepts("unknown", text) for rule in ranges) else "lidar"

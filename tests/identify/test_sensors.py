@@ -768,6 +768,24 @@ def test_a_range_plugins_radiation_tells_a_sonar_and_an_infrared_ranger_from_a_l
     assert found == [("sonar", None, 2), ("ir_range", None, 1)]
 
 
+def test_a_ray_plugin_putting_out_a_scan_is_a_lidar_whatever_wave_it_was_copied_with() -> None:
+    # ROS 2's ray sensor plugin copied from a range finder's example keeps its
+    # <radiation_type>infrared</radiation_type> when made to put out a LaserScan: a sweep of
+    # 720 rays over a whole turn, 10 m, was read as an infrared ranger.
+    sweep = (
+        "<ray><scan><horizontal><samples>720</samples><min_angle>-3.14</min_angle>"
+        "<max_angle>3.14</max_angle></horizontal></scan><range><max>10.0</max></range></ray>"
+    )
+    for output in ("sensor_msgs/LaserScan", "sensor_msgs/PointCloud2"):
+        plugin = (
+            '<plugin name="lidar_controller" filename="libgazebo_ros_ray_sensor.so">'
+            f"<output_type>{output}</output_type><radiation_type>infrared</radiation_type>"
+            "</plugin>"
+        )
+        found = kinds(builders.gazebo_sensor("base_scan", "ray", "head_sensor", sweep + plugin))
+        assert found == [("lidar", "LIDAR", 1)], output
+
+
 def test_a_ray_sensor_read_from_its_element_knows_its_sweep_and_reach() -> None:
     robot = builders.ugv()
     robot.add(ray("laser", "rplidar", 1600, 6.28, 12.0))

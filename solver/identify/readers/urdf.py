@@ -308,13 +308,29 @@ class SensorTag:
     def device_text(self) -> str:
         """What names the device itself: its name, link and plugins, and the wave a range
         plugin says it casts (ROS 1's ``<radiation>ultrasound</radiation>``, ROS 2's
-        ``<radiation_type>``), not the topics it feeds (a plain camera whose plugin publishes
-        ``depth/...`` topics is still a camera)."""
+        ``<radiation_type>``, unless its ``<output_type>`` is a scan or a point cloud: a ray
+        sensor's plugin that sweeps casts no wave it names, whatever it was copied with),
+        not the topics it feeds (a plain camera whose plugin publishes ``depth/...`` topics is
+        still a camera)."""
         plugins = (
-            f"{p.name} {p.filename} {p.param('radiation') or ''} {p.param('radiation_type') or ''}"
+            f"{p.name} {p.filename} {p.param('radiation') or ''} {_ranged_wave(p)}"
             for p in self.plugins
         )
         return " ".join([self.name, self.link or "", *plugins])
+
+
+# What a ray sensor's plugin outputs when it sweeps (its ``<output_type>``): a scan or a point
+# cloud.
+SCAN_OUTPUT = re.compile(r"laserscan|pointcloud", re.IGNORECASE)
+
+
+def _ranged_wave(plugin: PluginTag) -> str:
+    """The wave a ROS 2 ray sensor's plugin names (``<radiation_type>``), unless it says it
+    outputs a scan or a point cloud (``sensor_msgs/LaserScan``, ``PointCloud2``): a wave is a
+    range's, and a plugin copied from a range finder's keeps it when made a lidar."""
+    if SCAN_OUTPUT.search(plugin.param("output_type") or ""):
+        return ""
+    return plugin.param("radiation_type") or ""
 
 
 @dataclass(frozen=True)
