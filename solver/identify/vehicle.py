@@ -316,7 +316,7 @@ def pushing_rotors(tree: JointTree, roles: dict[str, Role]) -> dict[str, Role]:
             "the upright, on a body with no wheel or wing: it pushes the body along, lifting "
             "nothing (a boat's outboard)"
         )
-    elif _push_many_ways(tree, rotors):
+    elif _push_many_ways(tree, roles, rotors):
         why = (
             "named as a rotor, but turning about a level axis square to another's, on a body "
             "with no wheel or wing: they push the body every way on the level, lifting nothing "
@@ -327,12 +327,34 @@ def pushing_rotors(tree: JointTree, roles: dict[str, Role]) -> dict[str, Role]:
     return {j.name: Role(j.name, "thruster", why) for j in rotors}
 
 
-def _push_many_ways(tree: JointTree, rotors: Sequence[Joint]) -> bool:
-    """Level rotors that do not all lie along one line (some two square to each other): they
-    push the body every way on the level, as a vessel's thrusters set around its hull do. A
-    multirotor drawn with y up turns its rotors level too, but all along one line (its up)."""
+def _push_many_ways(tree: JointTree, roles: dict[str, Role], rotors: Sequence[Joint]) -> bool:
+    """Three level rotors or more, some two square to each other, each on the hull (no joint
+    moves it), all at one height (they spread over the upright at most :data:`_FLAT` of their
+    spread on the level), on a body that neither goes on the ground nor walks: they push the
+    hull every way on the level, as a vessel's thrusters set around it do. A multirotor drawn
+    with y up turns its rotors level too, but all along one line (its up), and a helicopter's
+    or a quadplane's drawn so spread over the upright (its up, again); a vectored airship's
+    swing on mounts; a walker's or a tracked base's fans, a cube's momentum wheels are one or
+    two."""
+    if len(rotors) < _MANY_WAYS or grounded(tree, roles):
+        return False
+    if any(j.movable and tree.matches("leg", j) for j in tree.urdf.joints):
+        return False
+    if any(j.parent not in tree.reader.still for j in rotors):
+        return False
+    places = [tree.poses.place(j.child) for j in rotors]
+    ups = [place[_UP] for place in places]
+    spread = max(math.dist(one[:2], other[:2]) for one in places for other in places)
+    if max(ups) - min(ups) > _FLAT * spread:
+        return False
     axes = [tree.poses.axis(j) for j in rotors]
     return any(perpendicular(one, other) for at, one in enumerate(axes) for other in axes[at + 1 :])
+
+
+# Rotors that push a hull every way: three at least (one or two on a body are fans or momentum
+# wheels); and how far over the upright they may spread, as a part of their spread on the level.
+_MANY_WAYS = 3
+_FLAT = 0.25
 
 
 def _on_an_outboard(tree: JointTree, rotor: Joint) -> bool:

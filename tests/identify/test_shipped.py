@@ -207,14 +207,19 @@ def test_a_teleop_node_is_the_structures_velocity_control() -> None:
     "node",
     [
         # ROS 1 in C++: a joystick callback that publishes a Twist on cmd_vel.
-        "#include <ros/ros.h>\n#include <geometry_msgs/Twist.h>\n#include <sensor_msgs/Joy.h>\n",
+        "#include <geometry_msgs/Twist.h>\n#include <sensor_msgs/Joy.h>\n"
+        'pub = nh.advertise<geometry_msgs::Twist>("cmd_vel", 128);\n',
         # ROS 2 in Python, among other messages, a stamped Twist.
-        "from sensor_msgs.msg import Imu, Joy\nfrom geometry_msgs.msg import TwistStamped\n",
+        "from sensor_msgs.msg import (\n    Imu,\n    Joy,\n)\n"
+        "from geometry_msgs.msg import TwistStamped\n"
+        "self.pub = self.create_publisher(TwistStamped, '/robot/cmd_vel', 10)\n",
         # ROS 2 in C++.
-        '#include "sensor_msgs/msg/joy.hpp"\n#include "geometry_msgs/msg/twist.hpp"\n',
+        '#include "sensor_msgs/msg/joy.hpp"\n#include "geometry_msgs/msg/twist_stamped.hpp"\n'
+        'create_publisher<geometry_msgs::msg::TwistStamped>("cmd_vel", 10);\n',
         # A keyboard teleop of its own: keys read from the terminal, a Twist sent.
-        "from geometry_msgs.msg import Twist\n\nimport sys, tty, termios\n",
-        "#include <termios.h>\n#include <geometry_msgs/msg/twist.hpp>\n",
+        "from geometry_msgs.msg import Twist\n\nimport sys, tty, termios\n"
+        "self.publisher_ = self.create_publisher(Twist, 'cmd_vel', 10)\n",
+        '#include <termios.h>\n#include <geometry_msgs/msg/twist.hpp>\nadvertise("cmd_vel");\n',
     ],
 )
 def test_a_node_of_the_robots_own_turning_a_joystick_or_keys_into_a_twist_is_a_teleop_node(
@@ -224,11 +229,17 @@ def test_a_node_of_the_robots_own_turning_a_joystick_or_keys_into_a_twist_is_a_t
     assert shipped("Manipulator", node) == {}
 
 
-def test_a_node_sending_a_twist_with_no_joystick_or_keys_is_no_teleop_node() -> None:
+def test_a_node_sending_a_twist_with_no_joystick_or_keys_or_to_no_base_is_no_teleop_node() -> None:
     for node in (
-        "from sensor_msgs.msg import Imu\nfrom geometry_msgs.msg import Twist\n",
-        "from sensor_msgs.msg import JoyFeedback\nfrom geometry_msgs.msg import Twist\n",
-        "import termios\nfrom std_msgs.msg import Float64\n",
+        "from sensor_msgs.msg import Imu\nfrom geometry_msgs.msg import Twist\npub('cmd_vel')\n",
+        "from sensor_msgs.msg import JoyFeedback\nfrom geometry_msgs.msg import Twist\n"
+        "pub('cmd_vel')\n",
+        "import termios\nfrom std_msgs.msg import Float64\npub('cmd_vel')\n",
+        # A joystick's Twist to an arm's end effector, a gimbal's rates: no base's velocity.
+        "from sensor_msgs.msg import Joy\nfrom geometry_msgs.msg import TwistStamped\n"
+        "pub('/servo_node/delta_twist_cmds')\n",
+        "#include <sensor_msgs/Joy.h>\n#include <geometry_msgs/Twist.h>\n"
+        'advertise("gimbal/rate");\n',
     ):
         assert shipped("UGV", node) == {}, node
 

@@ -1272,6 +1272,50 @@ def test_level_propellers_square_to_each_other_push_a_hull_every_way_as_a_vessel
     assert flown.body.thrusters == ()
 
 
+def rotors_at(*places: tuple[str, str], vectored: bool = False) -> RobotText:
+    """A body with a rotor at each (place, axis), on the body itself, or on a mount that
+    swings it (``vectored``)."""
+    robot = RobotText("craft")
+    for index, (place, axis) in enumerate(places):
+        parent, xyz = robot.root, place
+        if vectored:
+            swing = f'<origin xyz="{xyz}"/><axis xyz="0 1 0"/>'
+            limit = '<limit lower="-1.57" upper="1.57" effort="1" velocity="1"/>'
+            parent = robot.joint(
+                f"mount_{index}_joint", "revolute", parent, f"mount_{index}", swing + limit
+            )
+            xyz = "0 0 0"
+        spin = f'<origin xyz="{xyz}"/><axis xyz="{axis}"/>'
+        robot.joint(f"propeller_{index}_joint", "continuous", parent, f"propeller_{index}", spin)
+    return robot
+
+
+@pytest.mark.parametrize(
+    "craft",
+    [
+        # A quadplane drawn with y up: four lift rotors about y, a pusher about x behind them;
+        # the lift rotors spread over what reads as the upright (the drawing's sides).
+        rotors_at(
+            ("0.4 0 0.4", "0 1 0"),
+            ("-0.4 0 0.4", "0 1 0"),
+            ("0.4 0 -0.4", "0 1 0"),
+            ("-0.4 0 -0.4", "0 1 0"),
+            ("-0.8 0 0", "1 0 0"),
+        ),
+        # An airship's propellers swung by vectoring mounts.
+        rotors_at(("0 1 0", "1 0 0"), ("0 -1 0", "1 0 0"), ("-2 0 0", "0 1 0"), vectored=True),
+        # Two fans square to each other: fans, not a hull's thrusters.
+        rotors_at(("0.2 0 0", "1 0 0"), ("0 0.2 0", "0 1 0")),
+    ],
+)
+def test_level_rotors_square_to_each_other_stay_rotors_off_one_height_on_mounts_or_two(
+    craft: RobotText,
+) -> None:
+    result = identify_urdf(craft.text())
+    assert result.body is not None
+    assert result.body.thrusters == ()
+
+
 def test_level_rotors_on_the_frame_itself_are_no_outboards() -> None:
     # A quadrotor exported with y up: its rotors turn about a level axis, on the frame, on no
     # swivelling engine. They stay rotors.
