@@ -294,20 +294,13 @@ def pushing_rotors(tree: JointTree, roles: dict[str, Role]) -> dict[str, Role]:
     carry the next joint."""
     names = with_role(roles, "rotor")
     rotors = [j for j in map(tree.urdf.joint, names) if j is not None]
-    flight = tree.profile.plugin_pattern("flight")
     if (
         len(rotors) < max(len(names), tree.profile.limb("min_rotors"))
-        or tree.labels("flight")
-        or tree.reader.named_airship
-        or (flight is not None and flight.search(tree.urdf.name))
         or any(
             not (j.endless and j.axis_written) or abs(tree.poses.axis(j)[_UP]) > _LEVEL_AXIS
             for j in rotors
         )
-        or with_role(roles, "wheel")
-        or fixed_wheels(tree, roles)
-        or any("wing" in tree.parts_of(link.name) for link in tree.urdf.links)
-        or wings(tree, roles)
+        or _flies_or_rolls(tree, roles)
     ):
         return {}
     if all(_on_an_outboard(tree, j) for j in rotors):
@@ -325,6 +318,22 @@ def pushing_rotors(tree: JointTree, roles: dict[str, Role]) -> dict[str, Role]:
     else:
         return {}
     return {j.name: Role(j.name, "thruster", why) for j in rotors}
+
+
+def _flies_or_rolls(tree: JointTree, roles: dict[str, Role]) -> bool:
+    """The body is an aircraft's or stands on wheels: a flight plugin, an airship's or an
+    aircraft's name, a wheel (turning, or fixed: a trimmed model's gear), a wing (named, or a
+    link named so)."""
+    flight = tree.profile.plugin_pattern("flight")
+    return bool(
+        tree.labels("flight")
+        or tree.reader.named_airship
+        or (flight is not None and flight.search(tree.urdf.name))
+        or with_role(roles, "wheel")
+        or fixed_wheels(tree, roles)
+        or any("wing" in tree.parts_of(link.name) for link in tree.urdf.links)
+        or wings(tree, roles)
+    )
 
 
 def _push_many_ways(tree: JointTree, roles: dict[str, Role], rotors: Sequence[Joint]) -> bool:
