@@ -360,17 +360,34 @@ def _tool_leaves(
     sliding pipes, which no rule reads as jaws). A trunk branches into limbs (a torso into
     arms, a body into legs); two one-joint leaves are none, but a chain not named as an arm
     may be a body's (a neck carrying a head's two antennas). A chain named as no limb's at
-    all, ending in exactly two slides, is an arm's with its jaws: a trunk's leaves turn (a
-    head's antennas, ears), a gripper's two jaws slide."""
+    all, ending in exactly two slides, is an arm's with its jaws, each slide bare or carrying
+    a finger of the gripper and nothing else (a jaw that slides, then closes its tip): a
+    trunk's leaves turn (a head's antennas, ears), a gripper's two jaws slide."""
     children, carries = contracted
     if len(chain) < tree.profile.limb("arm_min_joints") or len(branches) < 2:
         return False  # (one joint below would have continued the chain)
-    if any(children.get(joint.name) or carries.get(joint.name) for joint in branches):
+    if any(children.get(joint.name) for joint in branches):
         return False
     scores = _name_scores(tree, chain)
     if not any(scores.values()):
-        return len(branches) == _JAWS and all(joint.type == "prismatic" for joint in branches)
+        return (
+            len(branches) == _JAWS
+            and all(joint.type == "prismatic" for joint in branches)
+            and all(_bare_or_one_finger(tree, joint, carries) for joint in branches)
+        )
+    if any(carries.get(joint.name) for joint in branches):
+        return False
     return scores["arm"] > 0 and scores["arm"] == max(scores.values())
+
+
+def _bare_or_one_finger(tree: JointTree, jaw: Joint, carries: dict[str, set[str]]) -> bool:
+    """``jaw`` carries nothing, or one finger of the gripper and nothing else: a slide that
+    closes a hinged tip, not a gripper of its own (two jaws) on a slide."""
+    kinds = carries.get(jaw.name, set())
+    if not kinds:
+        return True
+    moving = list(islice((j for j in tree.urdf.subtree_joints(jaw.child) if j.movable), 2))
+    return kinds == {"gripper"} and len(moving) == 1
 
 
 # A parallel gripper's jaws: two slides.

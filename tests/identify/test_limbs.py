@@ -4002,12 +4002,13 @@ def two_arms_one_with_a_suction_tool(
     pipe_joints: int = 1,
     *,
     jaws: bool = False,
+    finger: bool = False,
     pipe: str = "prismatic",
 ) -> str:
     """A waist carrying a seven-joint chain named as an arm and a ``second`` chain (default:
     another such arm) that ends in a suction tool whose two pipes slide (or move as ``pipe``
     says), each on ``pipe_joints`` joints of their own (no pair of jaws); with ``jaws``, each
-    pipe carries a gripper's two jaws."""
+    pipe carries a gripper's two jaws; with ``finger``, one hinged finger of a gripper."""
     robot = RobotText("picker")
     waist = robot.chain(robot.root, ["torso_turn"])
     robot.chain(waist, [f"left_arm_joint_{i}" for i in range(1, 8)])
@@ -4025,6 +4026,8 @@ def two_arms_one_with_a_suction_tool(
         if jaws:
             robot.chain(link, [f"{side}_gripper_finger_left"], "prismatic")
             robot.chain(link, [f"{side}_gripper_finger_right"], "prismatic")
+        if finger:
+            robot.chain(link, [f"{side}_gripper_joint"])
     return robot.text()
 
 
@@ -4042,6 +4045,17 @@ def test_an_arm_that_ends_in_a_tools_single_joints_is_an_arm_not_a_trunk() -> No
 def test_a_chain_named_as_nothing_that_ends_in_two_slides_is_an_arm_with_its_jaws() -> None:
     unnamed = [f"j{i}" for i in range(1, 8)]
     assert kinds_of_long_chains(two_arms_one_with_a_suction_tool(unnamed)) == ["arm", "arm"]
+    # Each slide may close a hinged finger of the gripper (fresh set 1428's telescoping arm).
+    fingered = two_arms_one_with_a_suction_tool(unnamed, finger=True)
+    assert kinds_of_long_chains(fingered) == ["arm", "arm"]
+
+
+def test_a_chain_named_as_nothing_whose_two_slides_each_carry_a_gripper_stays_a_trunk() -> None:
+    # Two slides each carrying a gripper of its own (two jaws): a trunk carrying two tools.
+    unnamed = [f"j{i}" for i in range(1, 8)]
+    result = identify_urdf(two_arms_one_with_a_suction_tool(unnamed, jaws=True))
+    assert result.body is not None
+    assert not any(limb.joints == tuple(unnamed) for limb in result.body.limbs)
 
 
 @pytest.mark.parametrize(
