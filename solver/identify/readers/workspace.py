@@ -20,7 +20,8 @@ imported or parsed as code.
   lies in: its neighbours are installed beside it), at most :data:`MAX_DEPTH` folders deep and
   :data:`MAX_ENTRIES` entries; an install prefix (``install`` or ``install/NAME``: ``share``
   beside ``lib``, ``include`` or ``bin``) is walked in ``share`` alone. Each file belongs to
-  the nearest package above it; a file in no package is nobody's.
+  the nearest package above it; a file in no package is nobody's, but in a workspace of one
+  robot the caller names (below).
 * Files are read in the order the robot's packages are likeliest: the description's, those
   named for the robot, those whose ``package.xml`` names one of them, then the rest; so a bound
   spent on a vendored library leaves the robot's own packages read. Text files
@@ -43,7 +44,10 @@ imported or parsed as code.
   A source workspace (a ``src`` folder, or the one the caller names) walked whole in which no
   other package holds a description (a ``.urdf`` or ``.xacro`` file) is one robot's: every
   package of it is the robot's (its navigation and mission packages need name no package of
-  the description's, :func:`_one_robots`).
+  the description's, :func:`_one_robots`). When the caller named that workspace (a
+  repository), its files in no package are the robot's too (a top-level ``launch`` and
+  ``config`` beside the packages, as a repository's are: :func:`read_repository`), read last,
+  unless they hold another robot's description.
 
 * A description in *no* package (a simulator's or a learning framework's repository) is read
   with the *repository* the caller names (:func:`read_repository`; never one found around the
@@ -291,16 +295,37 @@ def read_workspace(
     own = packages.get(folder)
     if own is None:
         return None
-    packages.update(_walk(top, budget, skip=folder, holding=_above(folder)))
+    named = root is not None
+    # Files in no package of the workspace the caller names (a repository): the robot's when
+    # the workspace is one robot's, as a repository's are (:func:`read_repository`).
+    loose = _Package(top, os.path.basename(top) or "workspace", set())
+    holding = _above(folder)
+    packages.update(
+        _walk(top, budget, skip=folder, holding=holding, owner=loose if named else None)
+    )
     core = _core(own, list(packages.values()), robot)
     ordered = _reading_order(core, list(packages.values()))
     _read_all(ordered, top, budget)
     same = _robot_name(robot)
-    if _one_robots(own, ordered, top, named=root is not None, budget=budget, same=same):
-        ours = ordered
+    if _one_robots(own, ordered, top, named=named, budget=budget, same=same):
+        ours = [*ordered, *_loose_files(loose, top, budget, same)]
     else:
         ours = _robots_packages(core, ordered)
     return _workspace("workspace", top, own=own, ours=ours, ordered=ordered, budget=budget)
+
+
+def _loose_files(
+    loose: _Package, top: str, budget: _Budget, same: frozenset[str]
+) -> list[_Package]:
+    """The files of a one robot's workspace the caller named that lie in no package (a
+    repository's top-level ``launch`` and ``config`` folders beside its packages, a web or
+    teleop script), read after the packages as one more of the robot's, named for the
+    workspace's folder; none when they hold a description of another robot."""
+    if not loose.paths or loose.describes_another(same):
+        return []
+    for path in loose.paths:
+        _read_into(loose, path, top, set(), budget)
+    return [loose]
 
 
 def _read_all(ordered: list[_Package], top: str, budget: _Budget) -> None:

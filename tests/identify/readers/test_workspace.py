@@ -740,6 +740,46 @@ def test_a_simulators_ros_interface_a_robots_package_uses_is_not_the_robots(
     assert "gazebo_ros" not in found.packages
 
 
+def repository_with_loose_files(root: Path) -> Path:
+    """A repository at ``root`` holding one robot's description package and, in no package,
+    its top-level navigation launch file and parameters; the description's package folder."""
+    described = package(root, "robot_description", {"urdf/ugv.urdf": "<robot name='ugv'/>"})
+    (root / "launch").mkdir()
+    (root / "launch" / "nav.launch.py").write_text("nav2_bringup")
+    (root / "config").mkdir()
+    (root / "config" / "nav2_params.yaml").write_text("bt_navigator:")
+    return described
+
+
+def test_files_in_no_package_of_a_named_one_robot_repository_are_the_robots(
+    tmp_path: Path,
+) -> None:
+    described = repository_with_loose_files(tmp_path / "repo")
+    found = read(described, tmp_path / "repo", robot="ugv")
+    assert found.packages == ("robot_description", "repo")
+    assert sorted(f.path for f in found.files if f.package == "repo") == [
+        "config/nav2_params.yaml",
+        "launch/nav.launch.py",
+    ]
+
+
+def test_files_in_no_package_beside_another_robots_description_are_not_read(
+    tmp_path: Path,
+) -> None:
+    described = repository_with_loose_files(tmp_path / "repo")
+    (tmp_path / "repo" / "models").mkdir()
+    (tmp_path / "repo" / "models" / "drone.urdf").write_text("<robot name='drone'/>")
+    found = read(described, tmp_path / "repo", robot="ugv")
+    assert found.packages == ("robot_description",)
+
+
+def test_files_in_no_package_of_a_workspace_found_around_the_description_are_not_read(
+    tmp_path: Path,
+) -> None:
+    described = repository_with_loose_files(tmp_path / "ws" / "src")
+    assert read(described, robot="ugv").packages == ("robot_description",)
+
+
 def test_a_second_description_in_the_workspace_leaves_the_others_unread(tmp_path: Path) -> None:
     src = tmp_path / "ws" / "src"
     described = one_robots_repository(src)
