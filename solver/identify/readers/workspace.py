@@ -598,13 +598,14 @@ def _walk(
                 set(_WORD.findall(manifest)),
                 meta=_exports_metapackage(_uncommented(manifest)),
             )
-        if owner is not None:
+        if found is None and _install_prefix(folder, subfolders):
+            # An install prefix: its packages are in share/NAME; its libraries and headers
+            # belong to none (read nothing, and would spend the walk's bound), not even to a
+            # workspace's or a repository's files in no package.
+            subfolders = ["share"]
+        elif owner is not None:
             owner.paths += [os.path.join(folder, name) for name in _texts(folder, files)]
             owner.described += [name for name in files if name.endswith(DESCRIPTION_SUFFIXES)]
-        elif _install_prefix(folder, subfolders):
-            # An install prefix: its packages are in share/NAME; its libraries and headers
-            # belong to none (read nothing, and would spend the walk's bound).
-            subfolders = ["share"]
         if level >= MAX_DEPTH and subfolders:
             budget.note(f"folders deeper than {MAX_DEPTH} levels are not walked", stop=False)
         elif subfolders:

@@ -631,6 +631,24 @@ def test_an_install_prefix_is_walked_in_its_share_folder_alone(
     assert found.packages == ("dog_description", "dog_bringup")
 
 
+def test_a_named_install_space_is_walked_in_its_share_folders_alone(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Named as the workspace, an install space's libraries are no files in no package of the
+    robot's: they are not listed, and the robot's packages are read whole."""
+    monkeypatch.setattr(reader, "MAX_ENTRIES", 200)
+    install = tmp_path / "ws" / "install"
+    described = installed(install / "dog_description", "dog_description")
+    installed(install / "dog_bringup", "dog_bringup", {"launch/a.launch": "dog_description"})
+    many = install / "dog_bringup" / "lib" / "python3" / "dog_bringup"
+    many.mkdir(parents=True)
+    for n in range(250):
+        (many / f"f{n}.py").write_text("nav2_bringup")
+    found = read(described, install)
+    assert found.complete
+    assert found.packages == ("dog_description", "dog_bringup")
+
+
 def test_a_source_folder_shaped_like_an_install_prefix_is_walked_whole(tmp_path: Path) -> None:
     repo = tmp_path / "ws" / "src" / "myrepo"
     described = package(repo, "rover_description")
