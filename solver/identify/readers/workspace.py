@@ -45,9 +45,12 @@ imported or parsed as code.
   other package holds a description (a ``.urdf`` or ``.xacro`` file) is one robot's: every
   package of it is the robot's (its navigation and mission packages need name no package of
   the description's, :func:`_one_robots`). When the caller named that workspace (a
-  repository), its files in no package are the robot's too (a top-level ``launch`` and
-  ``config`` beside the packages, as a repository's are: :func:`read_repository`), read last,
-  unless they hold another robot's description.
+  repository, a ``src`` folder), its files in no package are the robot's too (a top-level
+  ``launch`` and ``config`` beside the packages, as a repository's are:
+  :func:`read_repository`), shown as :data:`NO_PACKAGE` and read last, with what the packages
+  left of the bounds (a bound they reach leaves the workspace complete: the packages were read
+  whole); none of them when a description among them is not named for the robot (another
+  robot's, a macro file), and nothing in an install space (its setup scripts, its libraries).
 
 * A description in *no* package (a simulator's or a learning framework's repository) is read
   with the *repository* the caller names (:func:`read_repository`; never one found around the
@@ -111,6 +114,10 @@ SKIPPED_FOLDERS = frozenset(
 )
 # An install space's folder name, and the folders beside share/ that tell an install prefix.
 INSTALL = "install"
+# What the files of a named workspace that lie in no package are shown as: a name no ROS
+# package can have, so that no rule reads a package's name into it (a clone folder named
+# ``quadruped_walking``) and no package of the same name is shadowed.
+NO_PACKAGE = "(no package)"
 _PREFIX_FOLDERS = frozenset({"lib", "include", "bin"})
 # Stems too generic to name a robot (``robot_description`` beside ``robot_localization``).
 GENERIC_STEMS = frozenset({"robot_", "my_robot_", "ros_", "ros2_", "test_", "my_"})
@@ -247,6 +254,8 @@ class _Package:
     name: str
     manifest: set[str]
     paths: list[str] = field(default_factory=list)
+    # The files of a named workspace that lie in no package (:data:`NO_PACKAGE`).
+    loose: bool = False
     # A metapackage (``<metapackage/>`` exported): it only groups packages, uses none.
     meta: bool = False
     # Package names this package writes (its package.xml and its files), once all are known.
@@ -298,7 +307,7 @@ def read_workspace(
     named = root is not None
     # Files in no package of the workspace the caller names (a repository): the robot's when
     # the workspace is one robot's, as a repository's are (:func:`read_repository`).
-    loose = _Package(top, os.path.basename(top) or "workspace", set())
+    loose = _Package(top, NO_PACKAGE, set(), loose=True)
     holding = _above(folder)
     packages.update(
         _walk(top, budget, skip=folder, holding=holding, owner=loose if named else None)
@@ -319,11 +328,15 @@ def _loose_files(
 ) -> list[_Package]:
     """The files of a one robot's workspace the caller named that lie in no package (a
     repository's top-level ``launch`` and ``config`` folders beside its packages, a web or
-    teleop script), read after the packages as one more of the robot's, named for the
-    workspace's folder; none when they hold a description of another robot."""
+    teleop script), read after the packages as one more of the robot's (:data:`NO_PACKAGE`),
+    with what the packages left of the bounds: a bound they reach stops them unsaid, the
+    packages having been read whole. None when a description among them is not named for the
+    robot (:meth:`_Package.describes_another`: another robot's, or a macro file)."""
     if not loose.paths or loose.describes_another(same):
         return []
     for path in loose.paths:
+        if budget.files >= MAX_FILES or budget.total >= MAX_TOTAL_BYTES:
+            break
         _read_into(loose, path, top, set(), budget)
     return [loose]
 
@@ -598,12 +611,14 @@ def _walk(
                 set(_WORD.findall(manifest)),
                 meta=_exports_metapackage(_uncommented(manifest)),
             )
-        if found is None and _install_prefix(folder, subfolders):
+        # A workspace's files in no package take nothing in an install space (its setup
+        # scripts, its libraries): they are no robot's.
+        installed = owner is not None and owner.loose and _installed(folder, start)
+        if (owner is None or installed) and _install_prefix(folder, subfolders):
             # An install prefix: its packages are in share/NAME; its libraries and headers
-            # belong to none (read nothing, and would spend the walk's bound), not even to a
-            # workspace's or a repository's files in no package.
+            # belong to none (read nothing, and would spend the walk's bound).
             subfolders = ["share"]
-        elif owner is not None:
+        elif owner is not None and not installed:
             owner.paths += [os.path.join(folder, name) for name in _texts(folder, files)]
             owner.described += [name for name in files if name.endswith(DESCRIPTION_SUFFIXES)]
         if level >= MAX_DEPTH and subfolders:
@@ -656,6 +671,12 @@ def _exports_metapackage(manifest: str) -> bool:
             return False
         end = close.end()
     return False
+
+
+def _installed(folder: str, start: str) -> bool:
+    """``folder`` lies in an install space at or below ``start`` (a folder named ``install``
+    on the way)."""
+    return INSTALL in Path(os.path.relpath(folder, os.path.dirname(start))).parts
 
 
 def _install_prefix(folder: str, subfolders: list[str]) -> bool:

@@ -649,6 +649,26 @@ def test_a_named_install_space_is_walked_in_its_share_folders_alone(
     assert found.packages == ("dog_description", "dog_bringup")
 
 
+def test_a_named_install_spaces_setup_scripts_are_no_files_of_the_robots(tmp_path: Path) -> None:
+    install = tmp_path / "ws" / "install"
+    described = installed(install / "dog_description", "dog_description")
+    for name in ("setup.sh", "local_setup.sh", "_local_setup_util_sh.py"):
+        (install / name).write_text("nav2_bringup")
+    for top in (install, tmp_path / "ws"):
+        assert read(described, top).packages == ("dog_description",)
+
+
+def test_a_repository_inside_an_install_prefix_is_read_whole(tmp_path: Path) -> None:
+    # A simulator's repository installed as a prefix: its files in no package are its own.
+    repo = tmp_path / "install" / "simrepo"
+    for relative in ("models/bot.urdf", "bin/teleop.py", "lib/ctl.py", "share/x.yaml"):
+        (repo / relative).parent.mkdir(parents=True, exist_ok=True)
+        (repo / relative).write_text("<robot name='bot'/>" if relative.endswith("urdf") else "")
+    found = read_repository(repo, repo / "models" / "bot.urdf", "bot")
+    assert found is not None
+    assert sorted(f.path for f in found.files) == ["bin/teleop.py", "lib/ctl.py", "share/x.yaml"]
+
+
 def test_a_source_folder_shaped_like_an_install_prefix_is_walked_whole(tmp_path: Path) -> None:
     repo = tmp_path / "ws" / "src" / "myrepo"
     described = package(repo, "rover_description")
@@ -761,7 +781,8 @@ def test_a_simulators_ros_interface_a_robots_package_uses_is_not_the_robots(
 def repository_with_loose_files(root: Path) -> Path:
     """A repository at ``root`` holding one robot's description package and, in no package,
     its top-level navigation launch file and parameters; the description's package folder."""
-    described = package(root, "robot_description", {"urdf/ugv.urdf": "<robot name='ugv'/>"})
+    files = {"urdf/ugv.urdf": "<robot name='ugv'/>", "launch/view.launch": "<launch/>"}
+    described = package(root, "robot_description", files)
     (root / "launch").mkdir()
     (root / "launch" / "nav.launch.py").write_text("nav2_bringup")
     (root / "config").mkdir()
@@ -774,11 +795,50 @@ def test_files_in_no_package_of_a_named_one_robot_repository_are_the_robots(
 ) -> None:
     described = repository_with_loose_files(tmp_path / "repo")
     found = read(described, tmp_path / "repo", robot="ugv")
-    assert found.packages == ("robot_description", "repo")
-    assert sorted(f.path for f in found.files if f.package == "repo") == [
-        "config/nav2_params.yaml",
-        "launch/nav.launch.py",
+    assert found.packages == ("robot_description", reader.NO_PACKAGE)
+    assert [(f.package, f.path) for f in found.files] == [
+        ("robot_description", "robot_description/launch/view.launch"),
+        (reader.NO_PACKAGE, "config/nav2_params.yaml"),
+        (reader.NO_PACKAGE, "launch/nav.launch.py"),
     ]
+
+
+def test_files_in_no_package_are_shown_under_no_name_a_package_or_a_rule_could_have(
+    tmp_path: Path,
+) -> None:
+    # A clone folder named like a gait package, or like a package of the workspace.
+    for folder in ("quadruped_walking", "robot_description"):
+        described = repository_with_loose_files(tmp_path / folder / "x")
+        found = read(described, tmp_path / folder / "x", robot="ugv")
+        assert found.packages == ("robot_description", reader.NO_PACKAGE)
+
+
+def test_files_in_no_package_are_read_with_what_the_packages_left_of_the_bounds(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(reader, "MAX_FILES", 3)
+    described = repository_with_loose_files(tmp_path / "repo")
+    for n in range(5):
+        (tmp_path / "repo" / "launch" / f"more{n}.launch.py").write_text("nav2_bringup")
+    found = read(described, tmp_path / "repo", robot="ugv")
+    assert found.complete
+    assert len([f for f in found.files if f.package == reader.NO_PACKAGE]) == 2
+
+
+def test_files_in_no_package_beside_a_macro_file_are_not_read(tmp_path: Path) -> None:
+    described = repository_with_loose_files(tmp_path / "repo")
+    (tmp_path / "repo" / "urdf").mkdir()
+    (tmp_path / "repo" / "urdf" / "wheel.xacro").write_text("<robot/>")
+    assert read(described, tmp_path / "repo", robot="ugv").packages == ("robot_description",)
+
+
+def test_files_in_no_package_beside_a_copy_of_the_robots_own_description_are_read(
+    tmp_path: Path,
+) -> None:
+    described = repository_with_loose_files(tmp_path / "repo")
+    (tmp_path / "repo" / "ugv.urdf").write_text("<robot name='ugv'/>")
+    found = read(described, tmp_path / "repo", robot="ugv")
+    assert found.packages == ("robot_description", reader.NO_PACKAGE)
 
 
 def test_files_in_no_package_beside_another_robots_description_are_not_read(
