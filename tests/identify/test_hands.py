@@ -1353,3 +1353,26 @@ def test_two_one_joint_jaws_ending_an_unnamed_arm_reach_as_far_as_their_mass_sit
     unweighed = identify_urdf(bare)
     assert unweighed.body is not None
     assert not any(limb.gripper for limb in unweighed.body.limbs)
+
+
+def test_a_jaws_massless_tip_frame_says_nothing_of_how_far_the_jaw_reaches() -> None:
+    # Fresh set 1527's servo claw: a SolidWorks export ends each jaw in a tip frame whose
+    # inertial writes a mass of 0 at an origin 0.2 m off; no mass, no centre of it.
+    bare = (
+        arm_with_fingers(1)
+        .replace('<origin xyz="0 0.02 0.03"/>', '<origin xyz="0.02 0.02 0.03"/>')
+        .replace('<origin xyz="0 -0.02 0.03"/>', '<origin xyz="-0.02 -0.02 0.03"/>')
+    )
+    tips = "".join(
+        f'<link name="tip{n}"><inertial><origin xyz="-0.2 0 0"/><mass value="0"/>'
+        f'<inertia ixx="0" ixy="0" ixz="0" iyy="0" iyz="0" izz="0"/></inertial></link>'
+        f'<joint name="tip{n}_joint" type="fixed"><parent link="link{n}"/>'
+        f'<child link="tip{n}"/><origin xyz="0 0 0.05"/></joint>'
+        for n in (7, 8)
+    )
+    result = identify_urdf(bare.replace("</robot>", tips + "</robot>"))
+    assert result.structure == "Manipulator"
+    assert result.body is not None
+    assert [(limb.kind, len(limb.joints), limb.gripper) for limb in result.body.limbs] == [
+        ("arm", 6, True)
+    ]

@@ -1561,9 +1561,11 @@ def _mass(link: etree._Element) -> float | None:
 
 def _mass_centre(link: etree._Element) -> tuple[float, float, float] | None:
     """Where a link's first ``<inertial>`` puts its mass centre (its ``<origin xyz>``), or None
-    when it writes no inertial, no such origin or one that cannot be read."""
+    when it writes no inertial, no positive mass (a frame a CAD export writes with a mass of 0
+    and an origin anywhere: no mass, no centre of it), no such origin or one that cannot be
+    read."""
     origin = link.find("inertial/origin")
-    if origin is None or origin.get("xyz") is None:
+    if origin is None or origin.get("xyz") is None or _mass(link) is None:
         return None
     unread = (math.nan, math.nan, math.nan)
     found = _vector(origin, unread)

@@ -287,9 +287,21 @@ def test_a_links_mass_is_its_inertials_positive_mass(inertial: str, expected: fl
         ('<inertial><origin rpy="0 1 0"/><mass value="1"/></inertial>', None),
         ('<inertial><origin xyz="0 nan 1"/><mass value="1"/></inertial>', None),
         ('<inertial><origin xyz="0 1"/><mass value="1"/></inertial>', None),
+        # A CAD export's frame: a mass of 0 and an origin anywhere (fresh set 1527's claw tips).
+        ('<inertial><origin xyz="-0.2 0 0"/><mass value="0"/></inertial>', None),
+        ('<inertial><origin xyz="-0.2 0 0"/></inertial>', None),
         ("", None),
     ],
-    ids=["placed", "no origin", "turned only", "not a number", "two numbers", "no inertial"],
+    ids=[
+        "placed",
+        "no origin",
+        "turned only",
+        "not a number",
+        "two numbers",
+        "no mass",
+        "mass unwritten",
+        "no inertial",
+    ],
 )
 def test_a_links_mass_centre_is_where_its_inertial_puts_it_and_unknown_when_unreadable(
     inertial: str, expected: tuple[float, float, float] | None
