@@ -611,11 +611,13 @@ def test_only_the_install_space_a_description_lies_in_is_walked(tmp_path: Path) 
     assert read(described, repo).packages == ("car_description",)
 
 
+@pytest.mark.parametrize("named", [False, True], ids=["found", "named"])
 def test_an_install_prefix_is_walked_in_its_share_folder_alone(
-    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+    named: bool, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     """Libraries and headers beside share/ belong to no package: listing them would spend the
-    walk's bound and leave the robot's packages read in part."""
+    walk's bound and leave the robot's packages read in part. Named as the workspace, an
+    install space's libraries are no files in no package of the robot's either."""
     monkeypatch.setattr(reader, "MAX_ENTRIES", 200)
     install = tmp_path / "ws" / "install"
     described = installed(install / "dog_description", "dog_description")
@@ -625,26 +627,8 @@ def test_an_install_prefix_is_walked_in_its_share_folder_alone(
             many = install / prefix / folder / prefix
             many.mkdir(parents=True)
             for n in range(150):
-                (many / f"f{n}.py").write_text("")
-    found = read(described)
-    assert found.complete
-    assert found.packages == ("dog_description", "dog_bringup")
-
-
-def test_a_named_install_space_is_walked_in_its_share_folders_alone(
-    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
-) -> None:
-    """Named as the workspace, an install space's libraries are no files in no package of the
-    robot's: they are not listed, and the robot's packages are read whole."""
-    monkeypatch.setattr(reader, "MAX_ENTRIES", 200)
-    install = tmp_path / "ws" / "install"
-    described = installed(install / "dog_description", "dog_description")
-    installed(install / "dog_bringup", "dog_bringup", {"launch/a.launch": "dog_description"})
-    many = install / "dog_bringup" / "lib" / "python3" / "dog_bringup"
-    many.mkdir(parents=True)
-    for n in range(250):
-        (many / f"f{n}.py").write_text("nav2_bringup")
-    found = read(described, install)
+                (many / f"f{n}.py").write_text("nav2_bringup")
+    found = read(described, install if named else None)
     assert found.complete
     assert found.packages == ("dog_description", "dog_bringup")
 
