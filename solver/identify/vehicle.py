@@ -344,8 +344,8 @@ def _push_many_ways(tree: JointTree, roles: dict[str, Role], rotors: Sequence[Jo
     with y up turns its rotors level too, but all along one line (its up), and a helicopter's
     or a quadplane's drawn so spread over the upright (its up, again); a vectored airship's
     swing on mounts; a walker's or a tracked base's fans, a cube's momentum wheels are one or
-    two."""
-    if len(rotors) < _MANY_WAYS or grounded(tree, roles):
+    two. More than :data:`_MOST_THRUSTERS` are no hull's, and are not compared pair by pair."""
+    if not _MANY_WAYS <= len(rotors) <= _MOST_THRUSTERS or grounded(tree, roles):
         return False
     if any(j.movable and tree.matches("leg", j) for j in tree.urdf.joints):
         return False
@@ -364,6 +364,9 @@ def _push_many_ways(tree: JointTree, roles: dict[str, Role], rotors: Sequence[Jo
 # wheels); and how far over the upright they may spread, as a part of their spread on the level.
 _MANY_WAYS = 3
 _FLAT = 0.25
+# A vessel's thrusters are a few (the sets' have four to eight): past this many, a stranger's
+# thousands of level rotors are no hull's, not compared pair by pair (a bound on the work).
+_MOST_THRUSTERS = 16
 
 
 def _on_an_outboard(tree: JointTree, rotor: Joint) -> bool:

@@ -1272,6 +1272,18 @@ def test_level_propellers_square_to_each_other_push_a_hull_every_way_as_a_vessel
     assert flown.body.thrusters == ()
 
 
+def test_more_level_propellers_than_a_hull_carries_are_no_thrusters() -> None:
+    # Sixteen set around a tub are its thrusters; a stranger's seventeen or more are no hull's
+    # (compared pair by pair, thousands would cost minutes).
+    around = [index * 2 * math.pi / 16 for index in range(16)]
+    sixteen = identify_urdf(tub(turned=tuple(around)).text())
+    assert sixteen.body is not None
+    assert len(sixteen.body.thrusters) == 16
+    more = identify_urdf(tub(turned=(*around, 0.0)).text())
+    assert more.body is not None
+    assert more.body.thrusters == ()
+
+
 def rotors_at(*places: tuple[str, str], vectored: bool = False) -> RobotText:
     """A body with a rotor at each (place, axis), on the body itself, or on a mount that
     swings it (``vectored``)."""
