@@ -74,6 +74,28 @@ _IMAGING = frozenset(
 _IMU_PARTS = frozenset({"accelerometer", "gyroscope", "gyro"})
 # How far apart two frames on one link may sit and still be one device's streams (metres).
 STREAM_REACH = 0.1
+# Two devices of one kind cannot share a place: frames fixed to one body closer than this
+# (metres) and facing one way hold one device declared twice (two lidar macros included at one
+# mount, 7 mm apart). A lidar or a camera is centimetres across; a stereo pair's eyes are
+# further apart than this.
+TWIN_REACH = 0.015
+# How many kept frames of one grid cell a frame is compared with: a ring of cameras at one
+# point is a few; a stranger's thousands cost no more than this each.
+_CELL = 8
+# The kinds whose devices look out from their frame, each a body of its own.
+_VIEWING = frozenset(
+    {
+        "lidar",
+        "camera",
+        "depth_camera",
+        "stereo_camera",
+        "wide_angle_camera",
+        "thermal_camera",
+        "sonar",
+        "ir_range",
+        "radar",
+    }
+)
 # A link that is a camera's own body (its streams' frames are fixed to it), by its name.
 _CAMERA_BODY = re.compile(r"camera|realsense|kinect|openni|xtion", re.IGNORECASE)
 # A side of a stereo pair in a sensor name: l, r, left or right between separators.
@@ -375,11 +397,66 @@ def _devices(
         names.add(detection.name)
         places.add(origin)
         kept.append(detection)
+    kept = _twins(kept, urdf)
     depth = {d.link for d in kept if d.kind == "depth_camera"}
     # A colour camera on the link of a depth camera is the RGB-D camera's colour stream.
     kept = [d for d in kept if not (d.kind == "camera" and d.link in depth)]
     cameras = _stereo_pairs(_rgbd_frames(_dvl_beams(kept, urdf, beams), urdf), urdf)
     return _stereo_depth(cameras, urdf)
+
+
+def _twins(found: list[Detection], urdf: Urdf) -> list[Detection]:
+    """One device declared on two frames: two detections of one kind that looks out
+    (:data:`_VIEWING`), on two frames fixed to one body within :data:`TWIN_REACH` of each
+    other and facing the same way (their x and z axes), are one device; the first stays. On
+    one frame the names tell (:func:`_same`); frames apart, or turned apart (a ring of cameras
+    at one point), hold as many devices, and so do frames at their body's origin (a description
+    that places no frame, or places its sensors by their own ``<pose>``, says nothing of where
+    they are). Linear in their number: each frame is compared with
+    the first kept frames (:data:`_CELL`) of the grid cells of :data:`TWIN_REACH` around its
+    place."""
+    if sum(1 for d in found if d.kind in _VIEWING and d.link is not None) < 2:
+        return found
+    poses = Poses(urdf)
+    known: dict[str, str | None] = {}
+    cells: dict[tuple[str, str | None, int, int, int], list[str]] = {}
+    kept: list[Detection] = []
+    for detection in found:
+        link = detection.link
+        if detection.kind not in _VIEWING or link is None or not urdf.has_link(link):
+            kept.append(detection)
+            continue
+        place = poses.place(link)
+        if not all(math.isfinite(c) and abs(c) < 1e6 for c in place):
+            kept.append(detection)  # a place too far out is near no other
+            continue
+        body = moved_by(urdf, link, known)
+        moved = urdf.joint(body) if body is not None else None
+        if distance(place, poses.place(moved.child if moved else urdf.root)) <= 1e-9:
+            kept.append(detection)  # a frame at its body's origin: its place is not said
+            continue
+        x, y, z = (math.floor(c / TWIN_REACH) for c in place)
+        near = (
+            other
+            for dx in (-1, 0, 1)
+            for dy in (-1, 0, 1)
+            for dz in (-1, 0, 1)
+            for other in cells.get((detection.kind, body, x + dx, y + dy, z + dz), [])[:_CELL]
+        )
+        if any(other != link and _twin_frames(poses, link, other) for other in near):
+            continue
+        cells.setdefault((detection.kind, body, x, y, z), []).append(link)
+        kept.append(detection)
+    return kept
+
+
+def _twin_frames(poses: Poses, link: str, other: str) -> bool:
+    """Two frames within :data:`TWIN_REACH` of each other whose x and z axes point one way."""
+    return (
+        distance(poses.place(link), poses.place(other)) <= TWIN_REACH
+        and same_way(poses.facing(link), poses.facing(other))
+        and same_way(poses.turned(link, _NO_TURN, _Z), poses.turned(other, _NO_TURN, _Z))
+    )
 
 
 def _dvl_beams(found: list[Detection], urdf: Urdf, beams: set[int]) -> list[Detection]:

@@ -1443,3 +1443,64 @@ def test_accelerometers_declared_apart_on_one_link_are_as_many_imus_and_a_gyrosc
         robot.add(f'  <gazebo reference="{link}">{twin}</gazebo>')
         robot.add(f'  <sensor name="{name}" type="{part}"><parent link="{link}"/></sensor>')
     assert _kinds(robot.text()) == {"imu": 4}
+
+
+def lidars_at(*mounts: tuple[str, str, str]) -> dict[str, int]:
+    """A base carrying one lidar ``<sensor>`` on each of ``mounts`` (a frame, its origin's xyz
+    and rpy, fixed to the base), as two lidar macros included at one mount write it."""
+    robot = builders.ugv()
+    for frame, xyz, rpy in mounts:
+        robot.joint(
+            f"{frame}_joint", "fixed", robot.root, frame, f'<origin xyz="{xyz}" rpy="{rpy}"/>'
+        )
+        robot.add(builders.gazebo_sensor(frame, "ray", frame))
+    return {s.kind: s.count for s in identify_urdf(robot.text()).sensors}
+
+
+def test_one_lidar_declared_on_two_frames_at_one_place_is_one_device() -> None:
+    # Two frames 7 mm apart facing forward: no two lidars fit there.
+    twins = lidars_at(
+        ("lidar_link", "0.074 -0.04 0.0845", "0 0 0"), ("laser", "0.074 -0.04 0.0775", "0 0 0")
+    )
+    assert twins == {"lidar": 1}
+
+
+def test_lidars_a_hand_apart_or_facing_apart_at_one_place_are_two() -> None:
+    stacked = lidars_at(("lidar_2d", "0 0 0.2", "0 0 0"), ("lidar_3d", "0 0 0.3", "0 0 0"))
+    assert stacked == {"lidar": 2}
+    back_to_back = lidars_at(
+        ("front_laser", "0 0 0.2", "0 0 0"), ("rear_laser", "0 0 0.2", "0 0 3.14159")
+    )
+    assert back_to_back == {"lidar": 2}
+
+
+def test_a_lidar_on_a_turret_and_one_on_the_base_below_it_are_two() -> None:
+    # One place at rest, two bodies: the turret's lidar turns with it.
+    robot = builders.ugv()
+    robot.joint("turret", "continuous", robot.root, "turret_link", '<axis xyz="0 0 1"/>')
+    robot.fixed("turret_link", "turret_lidar")
+    robot.fixed(robot.root, "base_lidar")
+    robot.add(builders.gazebo_sensor("turret_lidar", "ray", "turret_lidar"))
+    robot.add(builders.gazebo_sensor("base_lidar", "ray", "base_lidar"))
+    assert {s.kind: s.count for s in identify_urdf(robot.text()).sensors} == {"lidar": 2}
+
+
+def test_a_ring_of_cameras_at_one_point_facing_apart_is_as_many_cameras() -> None:
+    robot = builders.ugv()
+    for i in range(8):
+        robot.joint(
+            f"cam{i}_joint",
+            "fixed",
+            robot.root,
+            f"cam{i}",
+            f'<origin xyz="0 0 0.5" rpy="0 0 {i * 0.785398}"/>',
+        )
+        robot.add(builders.gazebo_sensor(f"cam{i}", "camera", f"cam{i}"))
+    assert {s.kind: s.count for s in identify_urdf(robot.text()).sensors} == {"camera": 8}
+
+
+def test_ten_thousand_lidars_at_one_place_facing_two_ways_are_two_in_linear_time() -> None:
+    # Each frame is compared with the first kept frames of the cells around it (pair by pair
+    # with every kept frame, a stranger's crowd of frames facing apart would cost n squared).
+    mounts = [(f"laser{i}", "0 0 0.5", f"0 0 {3.14159 * (i % 2)}") for i in range(10_000)]
+    assert lidars_at(*mounts) == {"lidar": 2}
