@@ -422,25 +422,15 @@ def _twins(found: list[Detection], urdf: Urdf) -> list[Detection]:
     cells: dict[tuple[str, str | None, int, int, int], list[str]] = {}
     kept: list[Detection] = []
     for detection in found:
-        link = detection.link
-        if detection.kind not in _VIEWING or link is None or not urdf.has_link(link):
+        placed = _placed_on_body(detection, urdf, poses, known)
+        if placed is None:
             kept.append(detection)
             continue
-        place = poses.place(link)
-        if not all(math.isfinite(c) and abs(c) < 1e6 for c in place):
-            kept.append(detection)  # a place too far out is near no other
-            continue
-        body = moved_by(urdf, link, known)
-        moved = urdf.joint(body) if body is not None else None
-        if distance(place, poses.place(moved.child if moved else urdf.root)) <= 1e-9:
-            kept.append(detection)  # a frame at its body's origin: its place is not said
-            continue
+        link, body, place = placed
         x, y, z = (math.floor(c / TWIN_REACH) for c in place)
         near = (
             other
-            for dx in (-1, 0, 1)
-            for dy in (-1, 0, 1)
-            for dz in (-1, 0, 1)
+            for dx, dy, dz in _AROUND
             for other in cells.get((detection.kind, body, x + dx, y + dy, z + dz), [])[:_CELL]
         )
         if any(other != link and _twin_frames(poses, link, other) for other in near):
@@ -448,6 +438,29 @@ def _twins(found: list[Detection], urdf: Urdf) -> list[Detection]:
         cells.setdefault((detection.kind, body, x, y, z), []).append(link)
         kept.append(detection)
     return kept
+
+
+# The grid cells around one, itself among them.
+_AROUND = tuple((dx, dy, dz) for dx in (-1, 0, 1) for dy in (-1, 0, 1) for dz in (-1, 0, 1))
+
+
+def _placed_on_body(
+    detection: Detection, urdf: Urdf, poses: Poses, known: dict[str, str | None]
+) -> tuple[str, str | None, Vector] | None:
+    """A looking-out detection's frame, the body it is fixed to (the nearest movable joint
+    above it, None for the root's) and its place; None for another kind, a frame the file
+    lacks, a place too far out, or a frame at its body's origin (no place said)."""
+    link = detection.link
+    if detection.kind not in _VIEWING or link is None or not urdf.has_link(link):
+        return None
+    place = poses.place(link)
+    if not all(math.isfinite(c) and abs(c) < 1e6 for c in place):
+        return None
+    body = moved_by(urdf, link, known)
+    moved = urdf.joint(body) if body is not None else None
+    if distance(place, poses.place(moved.child if moved else urdf.root)) <= 1e-9:
+        return None
+    return link, body, place
 
 
 def _twin_frames(poses: Poses, link: str, other: str) -> bool:
