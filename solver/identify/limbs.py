@@ -3287,6 +3287,9 @@ def _classify(
         return Limb("head", names, base, tip, gripper, named, why)
     kind, why = _named_kind(tree, scores, length, gripper)
     kind, why = _ends_in_a_foot(tree, kind, why, tip, length=length, gripper=gripper)
+    if kind is None and not named and not gripper and _TAIL.search(tip):
+        # A tail (a walker's, balancing it) moves as an arm does, but carries nothing.
+        kind, why = "head", f"an unnamed chain ending in a tail ({tip}): an appendage, no arm"
     if mounted:
         if mounted == ["wheel"] and kind == "leg":
             return Limb("wheel_leg", names, base, tip, gripper, named, f"{why}, on a wheel")
@@ -3687,6 +3690,10 @@ _FOOT = re.compile(
     r"foot|feet|(^|[_/])(soles?|toes?)([_/\d]|$)|(?-i:(?<=[a-z])(Soles?|Toes?)(?=[A-Z_/\d]|$))",
     re.IGNORECASE,
 )
+
+
+# A tail's name at a limb's tip (``tail_end``, ``tail_tip``).
+_TAIL = re.compile(r"(^|[_/])tails?([_/\d]|$)", re.IGNORECASE)
 
 
 def _tip_matches(tree: JointTree, part: str, joint: Joint) -> bool:

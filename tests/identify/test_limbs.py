@@ -66,6 +66,26 @@ def test_chains_of_arm_named_modules_that_end_in_a_foot_are_legs() -> None:
     assert identify_urdf(modular_walker("TOOL").text()).structure == "Torso"
 
 
+def quadruped_with_a_chain_ending_in(tip: str) -> RobotText:
+    """A four-legged body carrying an unnamed chain of three hinges on its back, a fixed frame
+    named ``tip`` at its end."""
+    robot = builders.quadruped()
+    last = robot.chain(robot.root, ["joint1", "joint2", "joint3"])
+    robot.fixed(last, tip)
+    return robot
+
+
+def test_an_unnamed_chain_on_a_walker_that_ends_in_a_tail_is_no_arm() -> None:
+    # A walker's tail balances it, as an arm would move, and carries nothing.
+    assert identify_urdf(quadruped_with_a_chain_ending_in("tail_end").text()).structure == (
+        "Quadruped"
+    )
+    # The same chain ending in anything else is an arm on a walker.
+    assert identify_urdf(quadruped_with_a_chain_ending_in("tool0").text()).structure == (
+        "Legged Mobile Manipulator"
+    )
+
+
 def test_six_legs_on_wheeled_feet_are_a_hexapod_with_doubt_not_a_quadruped() -> None:
     # Each of six legs ends in a driven wheel: the body rolls and steps, its legs are six.
     robot = RobotText("leg_wheel")
