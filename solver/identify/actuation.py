@@ -117,6 +117,7 @@ _ONLY_A_CORNER = re.compile(
     + rf"(?:[_-]?{_JOINT_WORD})?[_\d]*",
     re.IGNORECASE,
 )
+_CORNER_WORDS = re.compile(CORNER, re.IGNORECASE)
 # Wheel-legged robots roll on two legs' wheels or four (bipeds, quadrupeds).
 _WHEEL_LEGGED = (2, 4)
 # A leg's last joint named for a foot's part turns a foot, whatever its range (an ankle, a toe).
@@ -1763,6 +1764,17 @@ def _bounded_alike(tree: JointTree) -> bool:
     return lower is not None and upper is not None and upper - lower >= _WHOLE_TURN
 
 
+def _only_a_corner(tree: JointTree, name: str) -> bool:
+    """``name`` names a corner of the body and no part: a corner and a joint's word
+    (:data:`_ONLY_A_CORNER`), or a corner beside words no part's pattern knows
+    (``Front_left_plate_continuous_joint``, a mecanum wheel's hub)."""
+    if _ONLY_A_CORNER.fullmatch(name):
+        return True
+    return _CORNER_WORDS.search(name) is not None and not tree.parts_of(
+        _CORNER_WORDS.sub("_", name)
+    )
+
+
 def _named_for_a_part(
     tree: JointTree, joint: Joint, known: dict[str, str | None], named: dict[str, str | None]
 ) -> bool:
@@ -1776,7 +1788,7 @@ def _named_for_a_part(
     words = [name for name in (joint.name, joint.child) if tree.parts_of(name)]
     if not words:
         return False
-    if not all(_ONLY_A_CORNER.fullmatch(name) for name in words):
+    if not all(_only_a_corner(tree, name) for name in words):
         return True
     alone = _alone_on_its_link(tree, joint)
     if alone and moved_by(tree.urdf, joint.parent, known) is not None:

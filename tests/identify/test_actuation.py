@@ -2348,3 +2348,31 @@ def test_unnamed_wheels_extending_spokes_spread_round_their_axles_are_wheels() -
     chucks = identify_urdf(spoked_rover(ahead=0.05).text())
     assert chucks.body is not None
     assert chucks.body.wheels == ()
+
+
+def _corner_hubs(word: str) -> str:
+    """A base with an endless joint about a level axle at each corner, each named for its
+    corner and ``word`` (``Front_left_<word>_continuous_joint`` on ``Front_left_<word>_link``)."""
+    robot = RobotText("omni")
+    for corner, (x, y) in {
+        "Front_left": (1, 1),
+        "Front_right": (1, -1),
+        "Rear_left": (-1, 1),
+        "Rear_right": (-1, -1),
+    }.items():
+        origin = f'<origin xyz="{0.2 * x} {0.15 * y} -0.04"/><axis xyz="0 1 0"/>'
+        robot.joint(
+            f"{corner}_{word}_continuous_joint",
+            "continuous",
+            "base_link",
+            f"{corner}_{word}_link",
+            origin,
+        )
+    return robot.text()
+
+
+def test_corner_named_endless_joints_with_words_of_no_part_are_wheels() -> None:
+    # A mecanum wheel's hub (``plate``) named for its corner: the corner says where, not what.
+    assert identify_urdf(_corner_hubs("plate")).structure == "UGV"
+    # A corner with a leg's word (``hip``) names a part: no wheel by place.
+    assert identify_urdf(_corner_hubs("hip")).structure != "UGV"
