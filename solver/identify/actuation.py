@@ -1764,15 +1764,16 @@ def _bounded_alike(tree: JointTree) -> bool:
     return lower is not None and upper is not None and upper - lower >= _WHOLE_TURN
 
 
-def _only_a_corner(tree: JointTree, name: str) -> bool:
+def _only_a_corner(tree: JointTree, name: str, *, leaf: bool) -> bool:
     """``name`` names a corner of the body and no part: a corner and a joint's word
-    (:data:`_ONLY_A_CORNER`), or a corner beside words no part's pattern knows
-    (``Front_left_plate_continuous_joint``, a mecanum wheel's hub)."""
+    (:data:`_ONLY_A_CORNER`); or, for a ``leaf`` (carrying nothing that moves), a corner
+    beside words no part's pattern knows (``Front_left_plate_continuous_joint``, a mecanum
+    wheel's hub whose rollers are fixed; a flipper carries road wheels)."""
     if _ONLY_A_CORNER.fullmatch(name):
         return True
-    return _CORNER_WORDS.search(name) is not None and not tree.parts_of(
-        _CORNER_WORDS.sub("_", name)
-    )
+    if not leaf or _CORNER_WORDS.search(name) is None:
+        return False
+    return not tree.parts_of(_CORNER_WORDS.sub("_", name))
 
 
 def _named_for_a_part(
@@ -1788,7 +1789,8 @@ def _named_for_a_part(
     words = [name for name in (joint.name, joint.child) if tree.parts_of(name)]
     if not words:
         return False
-    if not all(_only_a_corner(tree, name) for name in words):
+    leaf = joint.child not in tree.moving_below
+    if not all(_only_a_corner(tree, name, leaf=leaf) for name in words):
         return True
     alone = _alone_on_its_link(tree, joint)
     if alone and moved_by(tree.urdf, joint.parent, known) is not None:
