@@ -619,7 +619,8 @@ def _walk(
             # belong to none (read nothing, and would spend the walk's bound).
             subfolders = ["share"]
         elif owner is not None and not installed:
-            owner.paths += [os.path.join(folder, name) for name in _texts(folder, files)]
+            texts = _texts(folder, files, headers=_own_headers(owner, folder))
+            owner.paths += [os.path.join(folder, name) for name in texts]
             owner.described += [name for name in files if name.endswith(DESCRIPTION_SUFFIXES)]
         if level >= MAX_DEPTH and subfolders:
             budget.note(f"folders deeper than {MAX_DEPTH} levels are not walked", stop=False)
@@ -687,14 +688,33 @@ def _install_prefix(folder: str, subfolders: list[str]) -> bool:
     return named and "share" in subfolders and not _PREFIX_FOLDERS.isdisjoint(subfolders)
 
 
-def _texts(folder: str, files: list[str]) -> list[str]:
-    """The names of ``files`` (in ``folder``) read as text: by suffix, and scripts with none."""
+def _texts(folder: str, files: list[str], *, headers: bool = False) -> list[str]:
+    """The names of ``files`` (in ``folder``) read as text: by suffix, and scripts with none;
+    with ``headers``, C headers too (:func:`_own_headers`)."""
     script = os.path.basename(folder) in SCRIPT_FOLDERS
     return [
         name
         for name in sorted(files)
-        if name not in _MANIFESTS and (name.endswith(TEXT_SUFFIXES) or (script and "." not in name))
+        if name not in _MANIFESTS
+        and (
+            name.endswith(TEXT_SUFFIXES)
+            or (script and "." not in name)
+            or (headers and name.endswith(_C_HEADER))
+        )
     ]
+
+
+# A C or C++ header: read in a package's own header folder only (:func:`_own_headers`).
+_C_HEADER = ".h"
+
+
+def _own_headers(owner: _Package, folder: str) -> bool:
+    """``folder`` is ``owner``'s own header folder, ``include/<its name>``, or below it: where a
+    ROS 1 package writes its nodes' classes (``include/legged_controllers/...Publisher.h``
+    subscribing to a goal topic). A vendor's SDK keeps its ``.h`` files elsewhere
+    (``include/sdk/can.h``), unread."""
+    own = os.path.join(owner.folder, "include", owner.name)
+    return folder == own or folder.startswith(own + os.sep)
 
 
 def _list(
@@ -802,7 +822,7 @@ _ENCODED = re.compile(r"""(?:^[^\s.,'"]{60,}(?:\r?\n|\Z)){3,}""", re.MULTILINE)
 
 # C++ sources, whose comments open with ``//`` (``#`` opens a preprocessor line); Python,
 # YAML, shell and suffixless scripts comment with ``#``.
-_CPP_SUFFIXES = (".cpp", ".cc", ".hpp")
+_CPP_SUFFIXES = (".cpp", ".cc", ".hpp", ".h")
 
 
 # A whole line of comment: its first text is the mark (``#!`` is an interpreter's line).

@@ -513,18 +513,22 @@ def test_ros1_scripts_without_a_suffix_are_read(tmp_path: Path) -> None:
     assert [f.path for f in read(described).files] == ["rover_description/scripts/teleop"]
 
 
-def test_a_nodes_cpp_header_is_read_and_a_c_header_is_not(tmp_path: Path) -> None:
-    # A ROS 2 node class is often written whole in its .hpp; a .h is mostly a vendor's SDK.
+def test_a_nodes_headers_are_read_and_a_vendors_c_header_is_not(tmp_path: Path) -> None:
+    # A node class is often written whole in its header, in include/<package>/ (a ROS 2
+    # .hpp, a ROS 1 .h); a .h elsewhere is mostly a vendor's SDK.
     described = package(
         tmp_path / "src",
         "arm_controller",
         {
             "include/arm_controller/node.hpp": "create_subscription",
+            "include/arm_controller/goal_publisher.h": "subscribe(goal)",
             "include/sdk/can.h": "struct frame;",
+            "src/can.h": "struct frame;",
         },
     )
     assert [f.path for f in read(described).files] == [
-        "arm_controller/include/arm_controller/node.hpp"
+        "arm_controller/include/arm_controller/goal_publisher.h",
+        "arm_controller/include/arm_controller/node.hpp",
     ]
 
 
