@@ -79,6 +79,9 @@ STREAM_REACH = 0.1
 # mount, 7 mm apart). A lidar or a camera is centimetres across; a stereo pair's eyes are
 # further apart than this.
 TWIN_REACH = 0.015
+# Gazebo Sim's cameras that draw the simulator's own labels (boxes round each model, a colour
+# per label): ground truth for training, beside the camera whose frame they share, no device.
+_ANNOTATIONS = frozenset({"boundingbox_camera", "segmentation_camera", "segmentation"})
 # How many kept frames of one grid cell a frame is compared with: a ring of cameras at one
 # point is a few; a stranger's thousands cost no more than this each.
 _CELL = 8
@@ -250,7 +253,7 @@ def _element_detections(
     parts: dict[int, str] = {}
     urdf_links = {t.name: t.link for t in urdf.sensors if t.origin == "urdf" and t.link}
     for tag in urdf.sensors:
-        if _publishes_truth(tag, profile):
+        if _publishes_truth(tag, profile) or (tag.type or "").lower() in _ANNOTATIONS:
             continue
         kind = element_kind(tag, profile)
         if tag.origin == "ros2_control" and tag.type == "unknown" and kind in _IMAGING:

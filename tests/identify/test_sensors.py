@@ -1504,3 +1504,16 @@ def test_ten_thousand_lidars_at_one_place_facing_two_ways_are_two_in_linear_time
     # with every kept frame, a stranger's crowd of frames facing apart would cost n squared).
     mounts = [(f"laser{i}", "0 0 0.5", f"0 0 {3.14159 * (i % 2)}") for i in range(10_000)]
     assert lidars_at(*mounts) == {"lidar": 2}
+
+
+def test_gazebo_sims_label_cameras_beside_a_camera_are_no_devices() -> None:
+    # A bounding-box or segmentation camera draws the simulator's labels: ground truth.
+    robot = builders.ugv()
+    robot.fixed(robot.root, "camera_optical_frame")
+    for kind, name in (
+        ("camera", "front"),
+        ("boundingbox_camera", "bb_front"),
+        ("segmentation_camera", "seg_front"),
+    ):
+        robot.add(builders.gazebo_sensor("camera_optical_frame", kind, name))
+    assert {s.kind: s.count for s in identify_urdf(robot.text()).sensors} == {"camera": 1}
