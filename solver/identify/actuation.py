@@ -199,6 +199,7 @@ def joint_roles(tree: JointTree) -> dict[str, Role]:
     roles.update(_steering_beside(tree, roles))
     _drop_lone_rotors(tree, roles)
     _drop_flywheel(tree, roles)
+    _drop_reaction_wheels(tree, roles)
     roles.update(_coupled_drives(tree, roles))
     for name, why in endless_jaws(tree, set(roles)).items():
         roles[name] = Role(name, "gripper", why)
@@ -429,6 +430,29 @@ def _drop_flywheel(tree: JointTree, roles: dict[str, Role]) -> None:
     rim = tree.poses.place(disc.name)[2] - disc.cylinder.radius
     if rim > centre - reach + _GROUND_GAP:  # NaN compares false: a wheel still
         del roles[wheels[0]]
+
+
+def _drop_reaction_wheels(tree: JointTree, roles: dict[str, Role]) -> None:
+    """Wheels that turn about three square axes as the body rests, one of them upright, with
+    no drive or track plugin, are no wheels: a spacecraft's reaction wheels, a pair or one per
+    axis, turn it in place (a CubeSat's attitude testbed). A ground vehicle's wheels roll on
+    level axles; an omni base's point two ways, both level."""
+    wheels = [name for name, role in roles.items() if role.role == "wheel"]
+    if len(wheels) < _AXES or tree.labels("drive") or tree.labels("track"):
+        return
+    axes = [tree.poses.axis(joint) for name in wheels if (joint := tree.urdf.joint(name))]
+    upright = [axis for axis in axes if _upright(axis)]
+    level = [axis for axis in axes if _axle(axis)]
+    if not upright or len(upright) + len(level) != len(axes):
+        return  # no wheel upright, or one tilted: no three square axes
+    if any(perpendicular(one, other) for one in level[:1] for other in level[1:]):
+        why = "a reaction wheel: the body's wheels turn about three square axes, none rolls"
+        for name in wheels:
+            roles[name] = Role(name, "passive", why)
+
+
+# A body turns about three axes.
+_AXES = 3
 
 
 def _coupled_drives(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, Role]:

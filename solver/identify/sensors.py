@@ -253,7 +253,7 @@ def _element_detections(
     parts: dict[int, str] = {}
     urdf_links = {t.name: t.link for t in urdf.sensors if t.origin == "urdf" and t.link}
     for tag in urdf.sensors:
-        if _publishes_truth(tag, profile) or (tag.type or "").lower() in _ANNOTATIONS:
+        if _publishes_truth(tag, profile):
             continue
         kind = element_kind(tag, profile)
         if tag.origin == "ros2_control" and tag.type == "unknown" and kind in _IMAGING:
@@ -277,8 +277,11 @@ def _element_detections(
 
 
 def _publishes_truth(tag: SensorTag, profile: Profile) -> bool:
-    """Whether every plugin a ``<sensor>`` runs publishes simulation ground truth (a noise-free
-    twin of a ranger on the ranger's link, named and published as ``gt_lidar``): no device."""
+    """Whether a ``<sensor>`` gives simulation ground truth, no device: every plugin it runs
+    publishes it (a noise-free twin of a ranger on the ranger's link, named and published as
+    ``gt_lidar``), or it is one of Gazebo Sim's label cameras (:data:`_ANNOTATIONS`)."""
+    if (tag.type or "").lower() in _ANNOTATIONS:
+        return True
     return bool(tag.plugins) and all(_ground_truth(plugin.text, profile) for plugin in tag.plugins)
 
 

@@ -2376,3 +2376,39 @@ def test_corner_named_endless_joints_with_words_of_no_part_are_wheels() -> None:
     assert identify_urdf(_corner_hubs("plate")).structure == "UGV"
     # A corner with a leg's word (``hip``) names a part: no wheel by place.
     assert identify_urdf(_corner_hubs("hip")).structure != "UGV"
+
+
+def _wheels_about(*turns: tuple[str, str]) -> str:
+    """A box carrying one endless joint named for a wheel per ``turns`` (its place and its
+    axis), no drive plugin."""
+    robot = RobotText("craft")
+    for i, (xyz, axis) in enumerate(turns):
+        robot.joint(
+            f"wheel_{i}_joint",
+            "continuous",
+            "base_link",
+            f"wheel_{i}",
+            f'<origin xyz="{xyz}"/><axis xyz="{axis}"/>',
+        )
+    return robot.text()
+
+
+def test_wheels_turning_about_three_square_axes_are_a_spacecrafts_reaction_wheels() -> None:
+    # A CubeSat's attitude testbed: a pair of wheels about each of its axes turns it in place.
+    cubesat = _wheels_about(
+        ("0 -0.05 0", "0 1 0"),
+        ("0 0.05 0", "0 1 0"),
+        ("0.05 0 0", "1 0 0"),
+        ("-0.05 0 0", "1 0 0"),
+        ("0 0 0.15", "0 0 1"),
+        ("0 0 -0.15", "0 0 1"),
+    )
+    assert identify_urdf(cubesat).structure == "Other"
+    # The same wheels on level axles alone, two ways: an omni base rolls on them.
+    omni = _wheels_about(
+        ("0 -0.2 -0.05", "0 1 0"),
+        ("0 0.2 -0.05", "0 1 0"),
+        ("0.2 0 -0.05", "1 0 0"),
+        ("-0.2 0 -0.05", "1 0 0"),
+    )
+    assert identify_urdf(omni).structure == "UGV"
