@@ -46,6 +46,7 @@ from solver.identify.limbs import (
     camera_arm,
     closed_arms,
     closed_loops,
+    drive_rods,
     drives_beside_legs,
     find_limbs,
     five_bars,
@@ -751,6 +752,7 @@ def _body_parts(tree: JointTree, parts: _Parts) -> None:
     parts.limbs = raised_legs(tree, flippers(tree, parts.limbs), parts.roles)
     parts.limbs = parallel_robot(tree, meeting_tips(tree, parts.limbs), flying=flying)
     parts.limbs = open_linkages(tree, closed_arms(tree, closed_loops(tree, parts.limbs)))
+    parts.limbs = drive_rods(tree, parts.limbs)
     _snake(tree, parts)
     parts.limbs = wrist(tree, parts.limbs, finger_tips(tree, parts.grippers))
     moves = flying or grounded(tree, parts.roles)

@@ -100,7 +100,7 @@ from solver.identify.pose import (
     perpendicular,
     spread,
 )
-from solver.identify.readers.urdf import Joint, Urdf, walk_up
+from solver.identify.readers.urdf import Joint, Urdf, walk_up, written_blank
 from solver.identify.roles import Role
 from solver.identify.tree import JointTree
 from solver.untrusted import shown
@@ -1952,6 +1952,95 @@ def closed_loops(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     return [merged.get(i, limb) for i, limb in enumerate(limbs) if i not in into]
 
 
+def drive_rods(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
+    """A chain with no gripper whose joints after its first are all free (hinges written blank,
+    0..0 with no effort, or mimic followers) and whose end stands within :data:`_LOOP_CLOSED`
+    of a link another limb moves is that limb's drive rod, the loop a URDF cannot close: merged
+    into it (a dexterous hand's wrist tilted by two rods on slides, each drawn as its slide and
+    the free hinges of its ball joints, ending at the wrist's pins). Linear: each end is
+    compared with the first links (:data:`_CELL_LINKS`) of the cells of
+    :data:`_LOOP_CLOSED` around it."""
+    if not 2 <= len(limbs) <= _MOST_FIVE_BAR_LEGS:
+        return limbs
+    rods = [i for i, limb in enumerate(limbs) if _a_rod(tree, limb)]
+    if not rods:
+        return limbs
+    owner = {name: index for index, limb in enumerate(limbs) for name in limb.joints}
+    cells = _links_by_cell(tree)
+    known: dict[str, str | None] = {}
+    into: dict[int, int] = {}
+    for i in rods:
+        tip = tree.poses.place(limbs[i].tip)
+        for link in _links_near(tree, cells, tip):
+            held = _limb_below(tree, link, owner, known)
+            if held is not None and held != i and held not in into:
+                into[i] = held
+                break
+    if not into:
+        return limbs
+    merged = {kept: limbs[kept] for kept in into.values()}
+    for rod, kept in into.items():
+        limb = merged[kept]
+        why = f"{limb.why}; driven by a rod closed onto it ({shown(limbs[rod].joints[0])}'s chain)"
+        merged[kept] = replace(limb, joints=limb.joints + limbs[rod].joints, why=why)
+    return [merged.get(i, limb) for i, limb in enumerate(limbs) if i not in into]
+
+
+def _a_rod(tree: JointTree, limb: Limb) -> bool:
+    """``limb`` carries no gripper, and every joint after its first is free: written blank or
+    a mimic follower (a rod's ball joints, drawn as hinges)."""
+    if limb.gripper or len(limb.joints) < _BIPED_LEGS:
+        return False
+    rest = [tree.urdf.joint(name) for name in limb.joints[1:]]
+    return all(j is not None and (written_blank(j) or j.mimic) for j in rest)
+
+
+# A cell's links a rod's end is compared with (a stranger's crowd of links at one point costs
+# no more).
+_CELL_LINKS = 8
+
+
+def _links_by_cell(tree: JointTree) -> dict[tuple[int, int, int], list[str]]:
+    """Every link with a place, by the cell of :data:`_LOOP_CLOSED` it stands in."""
+    cells: dict[tuple[int, int, int], list[str]] = {}
+    for link in tree.urdf.links:
+        cell = _cell(tree.poses.place(link.name))
+        if cell is not None:
+            cells.setdefault(cell, []).append(link.name)
+    return cells
+
+
+def _cell(place: Vector) -> tuple[int, int, int] | None:
+    """The cell of :data:`_LOOP_CLOSED` ``place`` stands in; None for a place too far out."""
+    if not all(math.isfinite(c) and abs(c) < _FAR for c in place):
+        return None
+    x, y, z = (math.floor(c / _LOOP_CLOSED) for c in place)
+    return x, y, z
+
+
+# Places further out than this (metres) are no robot's: not compared.
+_FAR = 1e6
+
+
+def _links_near(
+    tree: JointTree, cells: dict[tuple[int, int, int], list[str]], place: Vector
+) -> list[str]:
+    """The links of the cells around ``place`` (at most :data:`_CELL_LINKS` of each) within
+    :data:`_LOOP_CLOSED` of it."""
+    cell = _cell(place)
+    if cell is None:
+        return []
+    x, y, z = cell
+    return [
+        link
+        for dx in (-1, 0, 1)
+        for dy in (-1, 0, 1)
+        for dz in (-1, 0, 1)
+        for link in cells.get((x + dx, y + dy, z + dz), [])[:_CELL_LINKS]
+        if distance(tree.poses.place(link), place) <= _LOOP_CLOSED
+    ]
+
+
 def legs_through_linkages(
     tree: JointTree, limbs: list[Limb], trunk: list[str]
 ) -> tuple[list[Limb], list[str]]:
@@ -2898,11 +2987,22 @@ def wrist(tree: JointTree, limbs: list[Limb], tips: list[str]) -> list[Limb]:
 
 
 def _wrist(tree: JointTree, limb: Limb) -> bool:
-    """``limb`` is a short arm from the root ending in a gripper (:func:`wrist`)."""
-    short = len(limb.joints) < tree.profile.limb("arm_min_joints") or (
-        len(limb.joints) <= _WRIST_JOINTS and all(_WRIST.search(name) for name in limb.joints)
+    """``limb`` is a short arm from the root ending in a gripper (:func:`wrist`); the rods
+    that drive it (:func:`drive_rods`), off the path to its tip, are not counted."""
+    path = _on_the_path(tree, limb)
+    short = len(path) < tree.profile.limb("arm_min_joints") or (
+        len(path) <= _WRIST_JOINTS and all(_WRIST.search(name) for name in path)
     )
     return limb.kind == "arm" and limb.gripper and _on_the_root(tree, limb.base) and short
+
+
+def _on_the_path(tree: JointTree, limb: Limb) -> list[str]:
+    """``limb``'s joints on the way from its base to its tip, in its order."""
+    last = tree.urdf.parent_joint(limb.tip)
+    if last is None:
+        return []
+    above = joints_above(tree, [last.name]) | {last.name}
+    return [name for name in limb.joints if name in above]
 
 
 def _turns_in_place(tree: JointTree, limb: Limb, tips: list[str]) -> bool:
@@ -2916,7 +3016,8 @@ def _turns_in_place(tree: JointTree, limb: Limb, tips: list[str]) -> bool:
     reach = max(
         (distance(base, tree.poses.place(f.child)) for f in fingers if f is not None), default=0
     )
-    turning = _about_an_axis(tree, [j for name in limb.joints if (j := tree.urdf.joint(name))])
+    path = _on_the_path(tree, limb)  # the rods that drive it turn it from elsewhere
+    turning = _about_an_axis(tree, [j for name in path if (j := tree.urdf.joint(name))])
     return all(
         _axes_apart(tree, one, other) <= reach + _SAME_PLACE
         for one, other in combinations(turning, 2)

@@ -86,6 +86,44 @@ def test_an_unnamed_chain_on_a_walker_that_ends_in_a_tail_is_no_arm() -> None:
     )
 
 
+def hand_on_a_wrist_with_rods(reach: float) -> RobotText:
+    """A five-fingered hand on a two-hinge wrist fixed to a forearm, the wrist tilted by two
+    rods: each a slide on the forearm, then three free hinges in a row (written blank, 0..0
+    with no effort: an export's, unlocked) ending ``reach`` metres above the forearm, where
+    the wrist's pins stand 0.21 m up."""
+    robot = RobotText("dexhand", root="forearm")
+    placed(robot, "wrist_1", "revolute", "forearm", "wrist_1_link", xyz="0 0 0.2", axis="1 0 0")
+    placed(robot, "wrist_2", "revolute", "wrist_1_link", "palm", axis="0 1 0")
+    for side, y in (("left", 0.02), ("right", -0.02)):
+        robot.joint(f"{side}_pin", "fixed", "palm", f"{side}_pin", f'<origin xyz="0 {y} 0.01"/>')
+        placed(robot, f"{side}_rod", "prismatic", "forearm", f"{side}_rod", xyz=f"0 {y} 0.1")
+        blank = '<limit lower="0" upper="0" effort="0" velocity="0"/>'
+        link = f"{side}_rod"
+        for i, rise in enumerate((0.0, 0.05, reach - 0.15)):
+            child = f"{side}_ball_{i}"
+            robot.joint(
+                f"{side}_ball_{i}",
+                "revolute",
+                link,
+                child,
+                f'<origin xyz="0 0 {rise}"/><axis xyz="1 0 0"/>{blank}',
+            )
+            link = child
+    for finger in ("index", "middle", "ring", "little", "thumb"):
+        robot.chain("palm", [f"{finger}_finger_{i}" for i in range(3)])
+    return robot
+
+
+def test_rods_whose_free_ends_meet_a_wrists_pins_drive_the_wrist_of_a_hand() -> None:
+    # A dexterous hand's wrist tilted by two rods on slides: the loops a URDF cannot close.
+    balls = [f"{side}_ball_{i}" for side in ("left", "right") for i in range(3)]
+    closed = builders.solid(hand_on_a_wrist_with_rods(0.21).text(), *balls)
+    assert identify_urdf(closed).structure == "Hand"
+    # Rods ending 5 cm short of the pins close no loop: two more chains beside the wrist.
+    short = builders.solid(hand_on_a_wrist_with_rods(0.16).text(), *balls)
+    assert identify_urdf(short).structure != "Hand"
+
+
 def test_six_legs_on_wheeled_feet_are_a_hexapod_with_doubt_not_a_quadruped() -> None:
     # Each of six legs ends in a driven wheel: the body rolls and steps, its legs are six.
     robot = RobotText("leg_wheel")
