@@ -200,6 +200,7 @@ def joint_roles(tree: JointTree) -> dict[str, Role]:
     _drop_lone_rotors(tree, roles)
     _drop_flywheel(tree, roles)
     _drop_reaction_wheels(tree, roles)
+    _drop_wheel_on_a_stand(tree, roles)
     roles.update(_coupled_drives(tree, roles))
     for name, why in endless_jaws(tree, set(roles)).items():
         roles[name] = Role(name, "gripper", why)
@@ -449,6 +450,17 @@ def _drop_reaction_wheels(tree: JointTree, roles: dict[str, Role]) -> None:
         why = "a reaction wheel: the body's wheels turn about three square axes, none rolls"
         for name in wheels:
             roles[name] = Role(name, "passive", why)
+
+
+def _drop_wheel_on_a_stand(tree: JointTree, roles: dict[str, Role]) -> None:
+    """A wheel that is the robot's only moving joint, with no drive or track plugin, moves no
+    vehicle: one wheel alone can neither steer nor stand (a wheel on a test stand, a rig a
+    script spins). A unicycle or a monowheel balances on more joints than its wheel."""
+    wheels = [name for name, role in roles.items() if role.role == "wheel"]
+    if len(wheels) != 1 or tree.labels("drive") or tree.labels("track"):
+        return
+    if sum(1 for joint in tree.urdf.joints if joint.movable) == 1:
+        del roles[wheels[0]]
 
 
 # A body turns about three axes.

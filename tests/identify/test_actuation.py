@@ -14,7 +14,7 @@ from solver.identify.readers.urdf import parse_urdf
 from solver.identify.roles import Role
 from solver.identify.tree import JointTree
 from tests.identify import builders
-from tests.identify.builders import RobotText
+from tests.identify.builders import RobotText, placed
 
 
 def roles_of(robot: RobotText) -> dict[str, Role]:
@@ -68,8 +68,10 @@ def _four_spinning_leaves(
 
 def _cube_with_a_disc(height: float) -> str:
     """A 15 cm box and one endless joint named for a wheel, turning a 4 cm disc ``height``
-    below the box's middle (its side face)."""
+    below the box's middle (its side face), and a hinged flap on top (so the wheel is not the
+    robot's only moving joint, which alone moves no vehicle)."""
     robot = RobotText("cube")
+    placed(robot, "flap_joint", "revolute", "base_link", "flap", xyz="0 0 0.08", axis="1 0 0")
     robot.joint(
         "motor_joint",
         "continuous",
@@ -2412,3 +2414,12 @@ def test_wheels_turning_about_three_square_axes_are_a_spacecrafts_reaction_wheel
         ("-0.2 0 -0.05", "1 0 0"),
     )
     assert identify_urdf(omni).structure == "UGV"
+
+
+def test_a_wheel_that_is_the_robots_only_moving_joint_moves_no_vehicle() -> None:
+    # A wheel on a test stand: one wheel alone can neither steer nor stand.
+    stand = _wheels_about(("0 0 0.3", "0 1 0"))
+    assert identify_urdf(stand).structure == "Other"
+    # The same wheel beside a second one rolls a base.
+    pair = _wheels_about(("0 0.2 -0.05", "0 1 0"), ("0 -0.2 -0.05", "0 1 0"))
+    assert identify_urdf(pair).structure == "UGV"
