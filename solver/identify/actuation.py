@@ -442,14 +442,23 @@ def _drop_reaction_wheels(tree: JointTree, roles: dict[str, Role]) -> None:
     if len(wheels) < _AXES or tree.labels("drive") or tree.labels("track"):
         return
     axes = [tree.poses.axis(joint) for name in wheels if (joint := tree.urdf.joint(name))]
-    upright = [axis for axis in axes if _upright(axis)]
-    level = [axis for axis in axes if _axle(axis)]
-    if not upright or len(upright) + len(level) != len(axes):
-        return  # no wheel upright, or one tilted: no three square axes
-    if any(perpendicular(one, other) for one in level[:1] for other in level[1:]):
+    if _as_many_about_three_axes(axes):
         why = "a reaction wheel: the body's wheels turn about three square axes, none rolls"
         for name in wheels:
             roles[name] = Role(name, "passive", why)
+
+
+def _as_many_about_three_axes(axes: list[Vector]) -> bool:
+    """``axes`` lie along three square lines, one upright, as many along each (one or a pair
+    each): an omni base's four level wheels and a turntable are no such set."""
+    upright = [axis for axis in axes if _upright(axis)]
+    level = [axis for axis in axes if _axle(axis)]
+    if not upright or len(upright) + len(level) != len(axes):
+        return False  # no wheel upright, or one tilted
+    along = [axis for axis in level if parallel(axis, level[0])]
+    across = [axis for axis in level if perpendicular(axis, level[0])]
+    whole = len(along) + len(across) == len(level)
+    return whole and len(along) == len(across) == len(upright)
 
 
 def _drop_wheel_on_a_stand(tree: JointTree, roles: dict[str, Role]) -> None:
@@ -1802,9 +1811,10 @@ def _bounded_alike(tree: JointTree) -> bool:
 
 def _only_a_corner(tree: JointTree, name: str, *, leaf: bool) -> bool:
     """``name`` names a corner of the body and no part: a corner and a joint's word
-    (:data:`_ONLY_A_CORNER`); or, for a ``leaf`` (carrying nothing that moves), a corner
-    beside words no part's pattern knows (``Front_left_plate_continuous_joint``, a mecanum
-    wheel's hub whose rollers are fixed; a flipper carries road wheels)."""
+    (:data:`_ONLY_A_CORNER`); or, for a ``leaf`` (a hub: carrying nothing that moves, its mass
+    known to lie on its axle), a corner beside words no part's pattern knows
+    (``Front_left_plate_continuous_joint``, a mecanum wheel's hub whose rollers are fixed; a
+    flipper carries road wheels, or hangs its mass out along itself)."""
     if _ONLY_A_CORNER.fullmatch(name):
         return True
     if not leaf or _CORNER_WORDS.search(name) is None:
@@ -1825,8 +1835,9 @@ def _named_for_a_part(
     words = [name for name in (joint.name, joint.child) if tree.parts_of(name)]
     if not words:
         return False
-    leaf = joint.child not in tree.moving_below
-    if not all(_only_a_corner(tree, name, leaf=leaf) for name in words):
+    # A hub: a leaf whose part carries its mass on its axle (a flipper hangs it out).
+    hub = joint.child not in tree.moving_below and _balanced(tree, joint)
+    if not all(_only_a_corner(tree, name, leaf=hub) for name in words):
         return True
     alone = _alone_on_its_link(tree, joint)
     if alone and moved_by(tree.urdf, joint.parent, known) is not None:

@@ -1962,9 +1962,13 @@ def drive_rods(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     :data:`_LOOP_CLOSED` around it."""
     if not 2 <= len(limbs) <= _MOST_FIVE_BAR_LEGS:
         return limbs
+    movable = [joint for joint in tree.urdf.joints if joint.movable]
+    if all(written_blank(joint) for joint in movable):
+        return limbs  # an export that wrote no limits: its free joints say nothing
     rods = [i for i, limb in enumerate(limbs) if _a_rod(tree, limb)]
     if not rods:
         return limbs
+    rod_set = set(rods)
     owner = {name: index for index, limb in enumerate(limbs) for name in limb.joints}
     cells = _links_by_cell(tree)
     known: dict[str, str | None] = {}
@@ -1973,7 +1977,7 @@ def drive_rods(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
         tip = tree.poses.place(limbs[i].tip)
         for link in _links_near(tree, cells, tip):
             held = _limb_below(tree, link, owner, known)
-            if held is not None and held != i and held not in into:
+            if held is not None and held not in rod_set:  # a rod drives no rod
                 into[i] = held
                 break
     if not into:
@@ -1987,12 +1991,24 @@ def drive_rods(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
 
 
 def _a_rod(tree: JointTree, limb: Limb) -> bool:
-    """``limb`` carries no gripper, and every joint after its first is free: written blank or
-    a mimic follower (a rod's ball joints, drawn as hinges)."""
-    if limb.gripper or len(limb.joints) < _BIPED_LEGS:
+    """``limb`` is no leg and carries no gripper; its first joint is driven (neither written
+    blank nor a mimic follower: the rod's motor or slide) and every joint after it is free (a
+    rod's ball joints, drawn as hinges); and it reaches out, its end farther than
+    :data:`_LOOP_CLOSED` from where it starts (chains drawn at one point close no loop)."""
+    if limb.kind == "leg" or limb.gripper or len(limb.joints) < _ROD_JOINTS:
         return False
-    rest = [tree.urdf.joint(name) for name in limb.joints[1:]]
-    return all(j is not None and (written_blank(j) or j.mimic) for j in rest)
+    joints = [tree.urdf.joint(name) for name in limb.joints]
+    first, rest = joints[0], joints[1:]
+    if first is None or written_blank(first) or first.mimic:
+        return False
+    if not all(j is not None and (written_blank(j) or j.mimic) for j in rest):
+        return False
+    start = tree.poses.place(first.parent)
+    return distance(start, tree.poses.place(limb.tip)) > _LOOP_CLOSED
+
+
+# A rod is its drive and at least one free joint.
+_ROD_JOINTS = 2
 
 
 # A cell's links a rod's end is compared with (a stranger's crowd of links at one point costs
@@ -2983,7 +2999,9 @@ def wrist(tree: JointTree, limbs: list[Limb], tips: list[str]) -> list[Limb]:
     else:
         return limbs
     why = f"joint(s) from the root carrying a hand ({len(tips)} fingers on {len(limbs)} hand(s))"
-    return [replace(limb, kind="wrist", why=f"{len(limb.joints)} {why}") for limb in limbs]
+    return [
+        replace(limb, kind="wrist", why=f"{len(_on_the_path(tree, limb))} {why}") for limb in limbs
+    ]
 
 
 def _wrist(tree: JointTree, limb: Limb) -> bool:
@@ -3388,8 +3406,10 @@ def _classify(
         return Limb("head", names, base, tip, gripper, named, why)
     kind, why = _named_kind(tree, scores, length, gripper)
     kind, why = _ends_in_a_foot(tree, kind, why, tip, length=length, gripper=gripper)
-    if kind is None and not named and not gripper and _TAIL.search(tip):
-        # A tail (a walker's, balancing it) moves as an arm does, but carries nothing.
+    tail_length = length <= tree.profile.limb("head_max_joints")
+    if kind is None and not named and not gripper and tail_length and _TAIL.search(tip):
+        # A tail (a walker's, balancing it; a head's few joints at most) moves as an arm
+        # does, but carries nothing.
         kind, why = "head", f"an unnamed chain ending in a tail ({tip}): an appendage, no arm"
     if mounted:
         if mounted == ["wheel"] and kind == "leg":

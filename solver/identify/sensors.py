@@ -26,6 +26,7 @@ Not here: reading topic lists (:mod:`solver.identify.readers.topics`).
 
 from __future__ import annotations
 
+import itertools
 import math
 import re
 from collections.abc import Container, Iterable, Sequence
@@ -76,15 +77,21 @@ _IMU_PARTS = frozenset({"accelerometer", "gyroscope", "gyro"})
 STREAM_REACH = 0.1
 # Two devices of one kind cannot share a place: frames fixed to one body closer than this
 # (metres) and facing one way hold one device declared twice (two lidar macros included at one
-# mount, 7 mm apart). A lidar or a camera is centimetres across; a stereo pair's eyes are
-# further apart than this.
+# mount, 7 mm apart; a RealSense's colour and depth streams, 15 mm). A lidar or a camera is
+# centimetres across; a stereo pair's eyes are further apart than this, and so is a row of
+# line sensors (19 mm).
 TWIN_REACH = 0.015
 # Gazebo Sim's cameras that draw the simulator's own labels (boxes round each model, a colour
-# per label): ground truth for training, beside the camera whose frame they share, no device.
-_ANNOTATIONS = frozenset({"boundingbox_camera", "segmentation_camera", "segmentation"})
+# per label; each under its two names): ground truth for training, no device, wherever it is.
+_ANNOTATIONS = frozenset(
+    {"boundingbox_camera", "boundingbox", "segmentation_camera", "segmentation"}
+)
 # How many kept frames of one grid cell a frame is compared with: a ring of cameras at one
 # point is a few; a stranger's thousands cost no more than this each.
 _CELL = 8
+# How far a place may be off by the rounding of the turns that put it there (metres): a
+# RealSense's streams 15 mm apart stay within reach however its mount is turned.
+_ROUNDING = 1e-6
 # The kinds whose devices look out from their frame, each a body of its own.
 _VIEWING = frozenset(
     {
@@ -414,34 +421,36 @@ def _devices(
 def _twins(found: list[Detection], urdf: Urdf) -> list[Detection]:
     """One device declared on two frames: two detections of one kind that looks out
     (:data:`_VIEWING`), on two frames fixed to one body within :data:`TWIN_REACH` of each
-    other and facing the same way (their x and z axes), are one device; the first stays. On
-    one frame the names tell (:func:`_same`); frames apart, or turned apart (a ring of cameras
-    at one point), hold as many devices, and so do frames at their body's origin (a description
-    that places no frame, or places its sensors by their own ``<pose>``, says nothing of where
-    they are). Linear in their number: each frame is compared with
-    the first kept frames (:data:`_CELL`) of the grid cells of :data:`TWIN_REACH` around its
-    place."""
+    other and facing the same way (their x and z axes within about 11 degrees), are one
+    device; the first stays. On one frame the names tell (:func:`_same`); frames apart, or
+    turned apart (a ring of cameras at one point), hold as many devices, and so do frames at
+    their body's origin (a description that places no frame, or places its sensors by their
+    own ``<pose>``, says nothing of where they are). Linear in their number: each frame is
+    compared with at most :data:`_CELL` kept frames of the grid cells of :data:`TWIN_REACH`
+    around its place, each frame's place and axes worked out once."""
     if sum(1 for d in found if d.kind in _VIEWING and d.link is not None) < 2:
         return found
     poses = Poses(urdf)
     known: dict[str, str | None] = {}
-    cells: dict[tuple[str, str | None, int, int, int], list[str]] = {}
+    cells: dict[tuple[str, str | None, int, int, int], list[_Frame]] = {}
     kept: list[Detection] = []
     for detection in found:
-        placed = _placed_on_body(detection, urdf, poses, known)
-        if placed is None:
+        frame = _placed_on_body(detection, urdf, poses, known)
+        if frame is None:
             kept.append(detection)
             continue
-        link, body, place = placed
-        x, y, z = (math.floor(c / TWIN_REACH) for c in place)
-        near = (
-            other
-            for dx, dy, dz in _AROUND
-            for other in cells.get((detection.kind, body, x + dx, y + dy, z + dz), [])[:_CELL]
+        x, y, z = (math.floor(c / TWIN_REACH) for c in frame.place)
+        near = itertools.islice(
+            (
+                other
+                for dx, dy, dz in _AROUND
+                for other in cells.get((detection.kind, frame.body, x + dx, y + dy, z + dz), [])
+            ),
+            _CELL,
         )
-        if any(other != link and _twin_frames(poses, link, other) for other in near):
+        if any(other.link != frame.link and _twin_frames(frame, other) for other in near):
             continue
-        cells.setdefault((detection.kind, body, x, y, z), []).append(link)
+        cells.setdefault((detection.kind, frame.body, x, y, z), []).append(frame)
         kept.append(detection)
     return kept
 
@@ -450,12 +459,23 @@ def _twins(found: list[Detection], urdf: Urdf) -> list[Detection]:
 _AROUND = tuple((dx, dy, dz) for dx in (-1, 0, 1) for dy in (-1, 0, 1) for dz in (-1, 0, 1))
 
 
+@dataclass(frozen=True, slots=True)
+class _Frame:
+    """A looking-out sensor's frame: its link, the body it is fixed to (the nearest movable
+    joint above it, None for the root's), its place and where its x and z axes point."""
+
+    link: str
+    body: str | None
+    place: Vector
+    facing: Vector
+    up: Vector
+
+
 def _placed_on_body(
     detection: Detection, urdf: Urdf, poses: Poses, known: dict[str, str | None]
-) -> tuple[str, str | None, Vector] | None:
-    """A looking-out detection's frame, the body it is fixed to (the nearest movable joint
-    above it, None for the root's) and its place; None for another kind, a frame the file
-    lacks, a place too far out, or a frame at its body's origin (no place said)."""
+) -> _Frame | None:
+    """A looking-out detection's frame (:class:`_Frame`); None for another kind, a frame the
+    file lacks, a place too far out, or a frame at its body's origin (no place said)."""
     link = detection.link
     if detection.kind not in _VIEWING or link is None or not urdf.has_link(link):
         return None
@@ -466,15 +486,15 @@ def _placed_on_body(
     moved = urdf.joint(body) if body is not None else None
     if distance(place, poses.place(moved.child if moved else urdf.root)) <= 1e-9:
         return None
-    return link, body, place
+    return _Frame(link, body, place, poses.facing(link), poses.turned(link, _NO_TURN, _Z))
 
 
-def _twin_frames(poses: Poses, link: str, other: str) -> bool:
+def _twin_frames(one: _Frame, other: _Frame) -> bool:
     """Two frames within :data:`TWIN_REACH` of each other whose x and z axes point one way."""
     return (
-        distance(poses.place(link), poses.place(other)) <= TWIN_REACH
-        and same_way(poses.facing(link), poses.facing(other))
-        and same_way(poses.turned(link, _NO_TURN, _Z), poses.turned(other, _NO_TURN, _Z))
+        distance(one.place, other.place) <= TWIN_REACH + _ROUNDING
+        and same_way(one.facing, other.facing)
+        and same_way(one.up, other.up)
     )
 
 

@@ -2352,9 +2352,10 @@ def test_unnamed_wheels_extending_spokes_spread_round_their_axles_are_wheels() -
     assert chucks.body.wheels == ()
 
 
-def _corner_hubs(word: str) -> str:
+def _corner_hubs(word: str, centre: str = "0 0 0") -> str:
     """A base with an endless joint about a level axle at each corner, each named for its
-    corner and ``word`` (``Front_left_<word>_continuous_joint`` on ``Front_left_<word>_link``)."""
+    corner and ``word`` (``Front_left_<word>_continuous_joint`` on ``Front_left_<word>_link``),
+    each part's mass centred at ``centre`` in its frame (on its axle unless told)."""
     robot = RobotText("omni")
     for corner, (x, y) in {
         "Front_left": (1, 1),
@@ -2370,7 +2371,10 @@ def _corner_hubs(word: str) -> str:
             f"{corner}_{word}_link",
             origin,
         )
-    return robot.text()
+    text = robot.text()
+    for corner in ("Front_left", "Front_right", "Rear_left", "Rear_right"):
+        text = builders.weighted(text, f"{corner}_{word}_link", centre, "")
+    return text
 
 
 def test_corner_named_endless_joints_with_words_of_no_part_are_wheels() -> None:
@@ -2423,3 +2427,23 @@ def test_a_wheel_that_is_the_robots_only_moving_joint_moves_no_vehicle() -> None
     # The same wheel beside a second one rolls a base.
     pair = _wheels_about(("0 0.2 -0.05", "0 1 0"), ("0 -0.2 -0.05", "0 1 0"))
     assert identify_urdf(pair).structure == "UGV"
+
+
+def test_an_omni_base_with_an_upright_wheel_beside_it_is_no_spacecraft() -> None:
+    # Four level wheels pointing two ways and one upright (a turntable named a wheel): not as
+    # many about each axis, so no reaction wheels.
+    base = _wheels_about(
+        ("0 -0.2 -0.05", "0 1 0"),
+        ("0 0.2 -0.05", "0 1 0"),
+        ("0.2 0 -0.05", "1 0 0"),
+        ("-0.2 0 -0.05", "1 0 0"),
+        ("0 0 0.2", "0 0 1"),
+    )
+    assert identify_urdf(base).structure == "UGV"
+
+
+def test_corner_named_leaves_that_hang_their_mass_out_are_no_wheels() -> None:
+    # A flipper at each corner, its mass 0.15 m out along it: no hub, so no wheel by place.
+    assert identify_urdf(_corner_hubs("flipper", centre="0.15 0 0")).structure != "UGV"
+    # The same leaves carrying their mass on their axles are hubs: wheels.
+    assert identify_urdf(_corner_hubs("flipper")).structure == "UGV"

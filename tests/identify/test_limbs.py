@@ -4676,3 +4676,39 @@ def test_a_pair_bolted_in_the_air_is_a_torsos_arms_unless_a_walkers_legs(
     assert result.body is not None
     assert result.body.count("leg") == 0
     assert result.structure == "Torso"
+
+
+def test_a_long_arm_ending_in_a_link_named_tail_stays_an_arm() -> None:
+    # A tail has a head's few joints at most; six joints ending in `tail_link` are an arm.
+    robot = builders.quadruped()
+    last = robot.chain(robot.root, [f"joint{i}" for i in range(1, 7)])
+    robot.fixed(last, "tail_link")
+    assert identify_urdf(robot.text()).structure == "Legged Mobile Manipulator"
+
+
+def test_a_rod_whose_end_meets_another_rod_is_merged_into_no_rod() -> None:
+    # Rod a ends on rod b's link, rod b on arm c's: b drives c, and a (closed onto a rod, no
+    # limb) stays a chain of its own; no joint is lost from every limb.
+    robot = RobotText("chained_rods")
+    blank = '<limit lower="0" upper="0" effort="0" velocity="0"/>'
+    driven = '<limit lower="-1" upper="1" effort="10" velocity="1"/>'
+    joints = (
+        ("a_slide", "prismatic", "base_link", "0.3 0.4 0", "0 0 1", driven),
+        ("a_ball_0", "revolute", "a_slide", "0 0 0.01", "1 0 0", blank),
+        ("a_ball_1", "revolute", "a_ball_0", "0 -0.2 0.04", "1 0 0", blank),
+        ("b_slide", "prismatic", "base_link", "0.3 0.2 0", "0 0 1", driven),
+        ("b_ball_0", "revolute", "b_slide", "0 0 0.05", "1 0 0", blank),
+        ("b_ball_1", "revolute", "b_ball_0", "0 -0.1 0.1", "1 0 0", blank),
+        ("b_ball_2", "revolute", "b_ball_1", "0 -0.1 0.15", "1 0 0", blank),
+        ("c1", "revolute", "base_link", "0 0 0.1", "0 0 1", driven),
+        ("c2", "revolute", "c1", "0 0 0.2", "0 1 0", driven),
+        ("c3", "revolute", "c2", "0.3 0 0", "0 1 0", driven),
+        ("c4", "revolute", "c3", "0 0 0", "1 0 0", driven),
+    )
+    for name, kind, parent, xyz, axis, limit in joints:
+        robot.joint(name, kind, parent, name, f'<origin xyz="{xyz}"/><axis xyz="{axis}"/>{limit}')
+    text = builders.solid(robot.text(), *[name for name, *_ in joints])
+    body = detect_body(parse_urdf(text), load_profile())
+    in_limbs = {name for limb in body.limbs for name in limb.joints}
+    assert in_limbs == {name for name, *_ in joints}
+    assert any({"b_slide", "c1"} <= set(limb.joints) for limb in body.limbs)

@@ -1474,15 +1474,31 @@ def test_lidars_a_hand_apart_or_facing_apart_at_one_place_are_two() -> None:
     assert back_to_back == {"lidar": 2}
 
 
-def test_a_lidar_on_a_turret_and_one_on_the_base_below_it_are_two() -> None:
-    # One place at rest, two bodies: the turret's lidar turns with it.
+def lidars_on_a_turret_and_below_it(turret: str) -> dict[str, int]:
+    """A base with a turret on a joint of type ``turret`` 0.2 m up, one lidar fixed on the
+    turret 0.1 m out and one fixed on the base at that same place."""
     robot = builders.ugv()
-    robot.joint("turret", "continuous", robot.root, "turret_link", '<axis xyz="0 0 1"/>')
-    robot.fixed("turret_link", "turret_lidar")
-    robot.fixed(robot.root, "base_lidar")
+    robot.joint(
+        "turret",
+        turret,
+        robot.root,
+        "turret_link",
+        '<origin xyz="0 0 0.2"/><axis xyz="0 0 1"/>',
+    )
+    robot.joint(
+        "turret_lidar_joint", "fixed", "turret_link", "turret_lidar", '<origin xyz="0.1 0 0"/>'
+    )
+    robot.joint("base_lidar_joint", "fixed", robot.root, "base_lidar", '<origin xyz="0.1 0 0.2"/>')
     robot.add(builders.gazebo_sensor("turret_lidar", "ray", "turret_lidar"))
     robot.add(builders.gazebo_sensor("base_lidar", "ray", "base_lidar"))
-    assert {s.kind: s.count for s in identify_urdf(robot.text()).sensors} == {"lidar": 2}
+    return {s.kind: s.count for s in identify_urdf(robot.text()).sensors}
+
+
+def test_a_lidar_on_a_turret_and_one_on_the_base_below_it_are_two() -> None:
+    # One place at rest, two bodies: the turret's lidar turns with it.
+    assert lidars_on_a_turret_and_below_it("continuous") == {"lidar": 2}
+    # The turret welded fast: one body, one place, one lidar declared twice.
+    assert lidars_on_a_turret_and_below_it("fixed") == {"lidar": 1}
 
 
 def test_a_ring_of_cameras_at_one_point_facing_apart_is_as_many_cameras() -> None:
