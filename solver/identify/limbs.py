@@ -1942,14 +1942,7 @@ def closed_loops(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
         # chain of closures never drops the chain in its middle.
         if other not in into and one not in into and other not in into.values():
             into[other] = one
-    if not into:
-        return limbs
-    merged = {kept: limbs[kept] for kept in into.values()}
-    for closed, kept in into.items():
-        limb = merged[kept]
-        why = f"{limb.why}; closed by a loop joint with {shown(limbs[closed].joints[0])}'s chain"
-        merged[kept] = replace(limb, joints=limb.joints + limbs[closed].joints, why=why)
-    return [merged.get(i, limb) for i, limb in enumerate(limbs) if i not in into]
+    return _merged(limbs, into, "closed by a loop joint with {}'s chain")
 
 
 def drive_rods(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
@@ -1980,13 +1973,20 @@ def drive_rods(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
             if held is not None and held not in rod_set:  # a rod drives no rod
                 into[i] = held
                 break
+    return _merged(limbs, into, "driven by a rod closed onto it ({}'s chain)")
+
+
+def _merged(limbs: list[Limb], into: dict[int, int], reason: str) -> list[Limb]:
+    """``limbs`` with each of ``into``'s keys merged into the limb it maps to (no key is a
+    value), its joints after the kept limb's; ``reason`` says why, its ``{}`` the merged
+    chain's first joint."""
     if not into:
         return limbs
     merged = {kept: limbs[kept] for kept in into.values()}
-    for rod, kept in into.items():
+    for closed, kept in into.items():
         limb = merged[kept]
-        why = f"{limb.why}; driven by a rod closed onto it ({shown(limbs[rod].joints[0])}'s chain)"
-        merged[kept] = replace(limb, joints=limb.joints + limbs[rod].joints, why=why)
+        why = f"{limb.why}; {reason.format(shown(limbs[closed].joints[0]))}"
+        merged[kept] = replace(limb, joints=limb.joints + limbs[closed].joints, why=why)
     return [merged.get(i, limb) for i, limb in enumerate(limbs) if i not in into]
 
 
