@@ -410,13 +410,21 @@ def _mirror_image(place: Vector, other: Vector) -> bool:
     return any(math.dist(place, image) <= slack for image in ((x, -y, z), (-x, y, z), (-x, -y, z)))
 
 
+def _undriven_wheels(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
+    """The joints ``roles`` reads as wheels, when no drive or track plugin moves the body (what
+    the rules below may find turns no wheel that rolls); none when one does."""
+    if tree.labels("drive") or tree.labels("track"):
+        return []
+    return [name for name, role in roles.items() if role.role == "wheel"]
+
+
 def _drop_flywheel(tree: JointTree, roles: dict[str, Role]) -> None:
     """The body's only wheel, with no drive or track plugin, drawn as a disc whose rim stays
     above the bottom of the box its link is drawn as, is no wheel: nothing it turns reaches
     the ground (a reaction wheel in a balancing cube, a flywheel; a wheel's rim reaches below
     its body)."""
-    wheels = [name for name, role in roles.items() if role.role == "wheel"]
-    if len(wheels) != 1 or tree.labels("drive") or tree.labels("track"):
+    wheels = _undriven_wheels(tree, roles)
+    if len(wheels) != 1:
         return
     joint = tree.urdf.joint(wheels[0])
     body = None if joint is None else tree.urdf.link(joint.parent)
@@ -438,8 +446,8 @@ def _drop_reaction_wheels(tree: JointTree, roles: dict[str, Role]) -> None:
     no drive or track plugin, are no wheels: a spacecraft's reaction wheels, a pair or one per
     axis, turn it in place (a CubeSat's attitude testbed). A ground vehicle's wheels roll on
     level axles; an omni base's point two ways, both level."""
-    wheels = [name for name, role in roles.items() if role.role == "wheel"]
-    if len(wheels) < _AXES or tree.labels("drive") or tree.labels("track"):
+    wheels = _undriven_wheels(tree, roles)
+    if len(wheels) < _AXES:
         return
     axes = [tree.poses.axis(joint) for name in wheels if (joint := tree.urdf.joint(name))]
     if _as_many_about_three_axes(axes):
@@ -465,10 +473,8 @@ def _drop_wheel_on_a_stand(tree: JointTree, roles: dict[str, Role]) -> None:
     """A wheel that is the robot's only moving joint, with no drive or track plugin, moves no
     vehicle: one wheel alone can neither steer nor stand (a wheel on a test stand, a rig a
     script spins). A unicycle or a monowheel balances on more joints than its wheel."""
-    wheels = [name for name, role in roles.items() if role.role == "wheel"]
-    if len(wheels) != 1 or tree.labels("drive") or tree.labels("track"):
-        return
-    if sum(1 for joint in tree.urdf.joints if joint.movable) == 1:
+    wheels = _undriven_wheels(tree, roles)
+    if len(wheels) == 1 and sum(1 for joint in tree.urdf.joints if joint.movable) == 1:
         del roles[wheels[0]]
 
 

@@ -89,12 +89,14 @@ from itertools import combinations, islice, pairwise
 from typing import NamedTuple
 
 from solver.identify.pose import (
+    CELLS_AROUND,
     Vector,
     centroid,
     cosine,
     cross,
     distance,
     dot,
+    grid_cell,
     minus,
     parallel,
     perpendicular,
@@ -2020,22 +2022,10 @@ def _links_by_cell(tree: JointTree) -> dict[tuple[int, int, int], list[str]]:
     """Every link with a place, by the cell of :data:`_LOOP_CLOSED` it stands in."""
     cells: dict[tuple[int, int, int], list[str]] = {}
     for link in tree.urdf.links:
-        cell = _cell(tree.poses.place(link.name))
+        cell = grid_cell(tree.poses.place(link.name), _LOOP_CLOSED)
         if cell is not None:
             cells.setdefault(cell, []).append(link.name)
     return cells
-
-
-def _cell(place: Vector) -> tuple[int, int, int] | None:
-    """The cell of :data:`_LOOP_CLOSED` ``place`` stands in; None for a place too far out."""
-    if not all(math.isfinite(c) and abs(c) < _FAR for c in place):
-        return None
-    x, y, z = (math.floor(c / _LOOP_CLOSED) for c in place)
-    return x, y, z
-
-
-# Places further out than this (metres) are no robot's: not compared.
-_FAR = 1e6
 
 
 def _links_near(
@@ -2043,15 +2033,13 @@ def _links_near(
 ) -> list[str]:
     """The links of the cells around ``place`` (at most :data:`_CELL_LINKS` of each) within
     :data:`_LOOP_CLOSED` of it."""
-    cell = _cell(place)
+    cell = grid_cell(place, _LOOP_CLOSED)
     if cell is None:
         return []
     x, y, z = cell
     return [
         link
-        for dx in (-1, 0, 1)
-        for dy in (-1, 0, 1)
-        for dz in (-1, 0, 1)
+        for dx, dy, dz in CELLS_AROUND
         for link in cells.get((x + dx, y + dy, z + dz), [])[:_CELL_LINKS]
         if distance(tree.poses.place(link), place) <= _LOOP_CLOSED
     ]

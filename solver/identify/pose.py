@@ -24,12 +24,14 @@ from itertools import combinations
 from solver.identify.readers.urdf import Joint, Urdf
 
 __all__ = [
+    "CELLS_AROUND",
     "Poses",
     "Vector",
     "centroid",
     "cross",
     "distance",
     "dot",
+    "grid_cell",
     "local_axis",
     "minus",
     "parallel",
@@ -177,6 +179,23 @@ def spread(values: list[float]) -> float:
 def distance(one: Vector, other: Vector) -> float:
     """How far apart two places are; ``inf`` for places too far out to square (1e200)."""
     return math.dist(one, other)
+
+
+# Places further out than this (metres) are no robot's: they stand in no grid cell.
+_FAR = 1e6
+# The grid cells around one, itself among them (offsets along x, y and z).
+CELLS_AROUND = tuple((dx, dy, dz) for dx in (-1, 0, 1) for dy in (-1, 0, 1) for dz in (-1, 0, 1))
+
+
+def grid_cell(place: Vector, size: float) -> tuple[int, int, int] | None:
+    """The cell of a grid of cubes of side ``size`` that ``place`` stands in: places within
+    ``size`` of it stand in it or in the cells :data:`CELLS_AROUND` it, so near places are
+    found by looking there, not by comparing every two. None for a place too far out (or no
+    number): it is near nothing."""
+    if not all(math.isfinite(c) and abs(c) < _FAR for c in place):
+        return None
+    x, y, z = (math.floor(c / size) for c in place)
+    return x, y, z
 
 
 # Distinct places compared two by two at most (half a million pairs): past that, where the box

@@ -34,7 +34,7 @@ from dataclasses import dataclass
 
 from solver.core.ruleset import RuleSet
 from solver.identify.limbs import moved_by
-from solver.identify.pose import Poses, Vector, distance, same_way
+from solver.identify.pose import CELLS_AROUND, Poses, Vector, distance, grid_cell, same_way
 from solver.identify.profile import SENSOR_TYPE, Profile
 from solver.identify.readers.urdf import SCAN_OUTPUT, Joint, PluginTag, SensorTag, Urdf
 from solver.untrusted import shown
@@ -439,11 +439,11 @@ def _twins(found: list[Detection], urdf: Urdf) -> list[Detection]:
         if frame is None:
             kept.append(detection)
             continue
-        x, y, z = (math.floor(c / TWIN_REACH) for c in frame.place)
+        x, y, z = frame.cell
         near = itertools.islice(
             (
                 other
-                for dx, dy, dz in _AROUND
+                for dx, dy, dz in CELLS_AROUND
                 for other in cells.get((detection.kind, frame.body, x + dx, y + dy, z + dz), [])
             ),
             _CELL,
@@ -455,18 +455,16 @@ def _twins(found: list[Detection], urdf: Urdf) -> list[Detection]:
     return kept
 
 
-# The grid cells around one, itself among them.
-_AROUND = tuple((dx, dy, dz) for dx in (-1, 0, 1) for dy in (-1, 0, 1) for dz in (-1, 0, 1))
-
-
 @dataclass(frozen=True, slots=True)
 class _Frame:
     """A looking-out sensor's frame: its link, the body it is fixed to (the nearest movable
-    joint above it, None for the root's), its place and where its x and z axes point."""
+    joint above it, None for the root's), its place, the grid cell of :data:`TWIN_REACH` it
+    stands in, and where its x and z axes point."""
 
     link: str
     body: str | None
     place: Vector
+    cell: tuple[int, int, int]
     facing: Vector
     up: Vector
 
@@ -480,13 +478,15 @@ def _placed_on_body(
     if detection.kind not in _VIEWING or link is None or not urdf.has_link(link):
         return None
     place = poses.place(link)
-    if not all(math.isfinite(c) and abs(c) < 1e6 for c in place):
+    cell = grid_cell(place, TWIN_REACH)
+    if cell is None:
         return None
     body = moved_by(urdf, link, known)
     moved = urdf.joint(body) if body is not None else None
     if distance(place, poses.place(moved.child if moved else urdf.root)) <= 1e-9:
         return None
-    return _Frame(link, body, place, poses.facing(link), poses.turned(link, _NO_TURN, _Z))
+    facing, up = poses.facing(link), poses.turned(link, _NO_TURN, _Z)
+    return _Frame(link, body, place, cell, facing, up)
 
 
 def _twin_frames(one: _Frame, other: _Frame) -> bool:
