@@ -852,14 +852,19 @@ def _above(link: str, urdf: Urdf) -> list[str]:
 def element_kind(tag: SensorTag, profile: Profile) -> str:
     """The kind of device a sensor element is, by the profile's element rules."""
     kind = tag.type or "unknown"  # a URDF <sensor> with no kind element: told by its name
+    # Gazebo Sim's `custom` sensor is a plugin's own device (RGL's GPU lidar): told by its
+    # names as one with no kind element is; a kind they do not tell stays `custom`.
+    asked = "unknown" if kind == "custom" else kind
     rays = _rays(tag)
     fov = tag.horizontal_fov
     reach = tag.max_range
     for rule in profile.element_rules:
-        if rule.accepts(kind, tag.device_text, rays=rays, fov=fov, reach=reach):
+        if rule.accepts(asked, tag.device_text, rays=rays, fov=fov, reach=reach):
             return rule.kind
     for rule in profile.element_rules:  # topic names last
-        if rule.match is not None and rule.accepts(kind, tag.text, rays=rays, fov=fov, reach=reach):
+        if rule.match is not None and rule.accepts(
+            asked, tag.text, rays=rays, fov=fov, reach=reach
+        ):
             return rule.kind
     return kind
 

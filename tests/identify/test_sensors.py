@@ -627,6 +627,16 @@ def test_gazebo_sim_systems_are_no_sensors_their_sensor_elements_are() -> None:
     assert found == [("imu", None, 1)]
 
 
+def test_a_gazebo_sim_custom_sensor_is_told_by_its_names_as_one_with_no_type() -> None:
+    # Robotec's GPU lidar (RGL) runs as a `custom` sensor on the lidar's link.
+    rgl = builders.gazebo_sensor(
+        "lidar_link", "custom", "RGLsensor", plugin="RGLServerPluginInstance"
+    )
+    assert kinds(rgl) == [("lidar", "LIDAR", 1)]
+    # One whose names tell nothing stays a device of its own kind.
+    assert kinds(builders.gazebo_sensor("box", "custom", "thing")) == [("custom", None, 1)]
+
+
 def ray(link: str, name: str, samples: int, sweep: float, reach: float) -> str:
     scan = (
         f"<ray><scan><horizontal><samples>{samples}</samples><min_angle>{-sweep / 2}</min_angle>"

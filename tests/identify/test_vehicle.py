@@ -221,6 +221,23 @@ def test_underwater_evidence_keeps_an_underwater_reading_certain(evidence: str) 
     assert any(line.startswith("below the surface: ") for line in result.evidence)
 
 
+def test_a_uuv_plugin_puts_a_body_its_propellers_spin_below_the_surface() -> None:
+    # PX4's simulation spins a submarine's propellers with the multicopters' motor model; the
+    # unmanned underwater vehicle's (UUV's) plugin gives it buoyancy and drag.
+    robot = builders.quadrotor()
+    for i in range(4):
+        robot.add(
+            builders.model_plugin(
+                f"motor_{i}", "libgazebo_motor_model.so", f"<jointName>rotor_{i}_joint</jointName>"
+            )
+        )
+    assert identify_urdf(robot.text()).structure == "UAV"
+    robot.add(builders.model_plugin("uuv_forces", "libgazebo_uuv_plugin.so"))
+    result = identify_urdf(robot.text())
+    assert result.structure == "Underwater Vehicle"
+    assert "below the surface: libgazebo_uuv_plugin.so" in result.evidence
+
+
 def test_flight_words_in_a_plugins_parameters_fly_only_a_body_that_cannot_roll_or_walk() -> None:
     # A vehicle plugin of its own that sets a drone's topics: the one sign the body flies.
     plugin = builders.model_plugin(
