@@ -149,6 +149,9 @@ _BALL_AXES = 3
 MOTOR = re.compile(r"(^|[_/\s])motors?([_/\d\s]|$)", re.IGNORECASE)
 # A joint named for steering (``fl_steer_motor``): it turns a wheel's heading, no propeller.
 _STEER = re.compile(r"steer", re.IGNORECASE)
+# A swerve drive's module (``module_1``, ``swerve_fl``, ``drive_module_2``): a wheel's heading
+# and drive in one unit.
+_MODULE = re.compile(r"swerve|(^|[_/])(drive_?)?modules?([_/\d]|$)", re.IGNORECASE)
 # Roles a motor takes from the joints it turns through a coupling.
 _DRIVEN = ("wheel", "rotor", "thruster")
 
@@ -174,24 +177,34 @@ def joint_roles(tree: JointTree) -> dict[str, Role]:
         roles[name] = Role(name, "thruster", why)
     for name, why in _unnamed_wheels(tree, roles).items():
         roles[name] = Role(name, "wheel", why)
-    for name in _roller_wheels(tree, roles):
-        roles[name] = Role(
-            name,
-            "wheel",
-            "an endless joint on a level axle carrying free rollers round its rim (an omni or "
-            "mecanum wheel), whatever its name",
-        )
-    for name in _leg_wheels(tree, set(roles)):
-        roles[name] = Role(
-            name,
-            "wheel",
-            "an endless leaf ending a leg of limited joints (a wheel-legged robot's wheel)",
-        )
+    _give(
+        roles,
+        _roller_wheels(tree, roles),
+        "wheel",
+        "an endless joint on a level axle carrying free rollers round its rim (an omni or "
+        "mecanum wheel), whatever its name",
+    )
+    _give(
+        roles,
+        _leg_wheels(tree, set(roles)),
+        "wheel",
+        "an endless leaf ending a leg of limited joints (a wheel-legged robot's wheel)",
+    )
     roles.update(_control_surfaces(tree, roles))
-    for name in _unnamed_rotors(tree, roles):
-        roles[name] = Role(
-            name, "rotor", "an unnamed endless leaf on an upright axis, with others all round"
-        )
+    _give(
+        roles,
+        _drive_modules(tree, roles),
+        "wheel",
+        "a swerve drive's module (a wheel's heading and drive in one unit, its wheel not "
+        "drawn): one of three or more endless leaves named as modules, on upright axes "
+        "round their body",
+    )
+    _give(
+        roles,
+        _unnamed_rotors(tree, roles),
+        "rotor",
+        "an unnamed endless leaf on an upright axis, with others all round",
+    )
     roles.update(tree.reader.casters({n: r for n, r in roles.items() if r.role == "wheel"}))
     roles.update(_steered_wheels(tree, roles))
     roles.update(_ball_casters(tree, roles))
@@ -1463,6 +1476,34 @@ def _upright_by_carrier(
         if joint.child not in tree.moving_below and _upright(_resting_axis(tree, joint, turning)):
             by_carrier.setdefault(_rotor_carrier(tree, joint, known, turning), []).append(joint)
     return by_carrier
+
+
+def _give(roles: dict[str, Role], names: Iterable[str], role: str, why: str) -> None:
+    """Each of ``names`` takes ``role`` in ``roles``, for the one reason ``why``."""
+    for name in list(names):
+        roles[name] = Role(name, role, why)
+
+
+def _drive_modules(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
+    """Endless leaves of no role yet named as drive modules (:data:`_MODULE`), turning about
+    upright axes, three or more round their body's origin (:func:`_round_its_origin`): a swerve
+    drive's modules, each a wheel's heading and drive, drawn without their wheels. A propeller
+    is no module; a snake's modules are chained, no leaves."""
+    leaves = [
+        joint
+        for joint in tree.urdf.joints
+        if joint.endless
+        and joint.actuated
+        and joint.name not in roles
+        and _MODULE.search(f"{joint.name} {joint.child}")
+    ]
+    around = _upright_by_carrier(tree, leaves, {}, {})
+    return [
+        joint.name
+        for carrier, joints in around.items()
+        if len(joints) >= _FEWEST_UNNAMED_ROTORS and _round_its_origin(tree, carrier, joints, True)
+        for joint in joints
+    ]
 
 
 def _round_its_origin(

@@ -36,6 +36,29 @@ def test_wheels_named_only_by_a_drive_plugin_are_wheels() -> None:
     assert body.wheels == ("left_motor", "right_motor")
 
 
+def corner_leaves(name: str) -> RobotText:
+    """Four endless leaves on upright axes at a body's corners, named ``name`` and a number."""
+    robot = RobotText("corners")
+    for i, xyz in enumerate(("0.1 0.1 0", "0.1 -0.1 0", "-0.1 0.1 0", "-0.1 -0.1 0"), 1):
+        placed(robot, f"base_to_{name}_{i}", "continuous", "base_link", f"{name}_{i}", xyz=xyz)
+    return robot
+
+
+def test_endless_leaves_named_as_modules_round_a_body_are_a_swerve_drive_not_rotors() -> None:
+    # A swerve drive drawn without its wheels: each module turns a wheel's heading and drives it.
+    swerve = identify_urdf(corner_leaves("module").text())
+    assert swerve.structure == "UGV"
+    assert [c.motion_control for c in swerve.motion_controls] == ["Driving"]
+    # The same leaves with no part's name are a multirotor's propellers.
+    assert identify_urdf(corner_leaves("link").text()).structure == "UAV"
+
+
+def test_a_chain_of_modules_is_no_swerve_drive() -> None:
+    snake = RobotText("snake")
+    snake.chain(snake.root, [f"module_{i}" for i in range(1, 9)])
+    assert not any(role.role == "wheel" for role in roles_of(snake).values())
+
+
 def test_one_continuous_prop_joint_in_an_arm_is_never_flight() -> None:
     robot = builders.manipulator()
     robot.joint("prop_joint", "continuous", "wrist_3_link", "prop_link")
