@@ -940,6 +940,9 @@ def test_a_message_package_named_for_a_submersible_does_not_put_a_boat_under_wat
         "tractor_params.yaml",
         "wheelchair_driver",
         "<node pkg='segway_sim'/>",
+        "<node pkg='forklift_firmware'/>",
+        "scooter_controller.py",
+        "hoverboard_driver: {port: /dev/ttyUSB0}",
     ],
 )
 def test_a_body_that_shows_no_way_of_travelling_drives_when_its_packages_are_a_ground_vehicles(
