@@ -607,19 +607,12 @@ def _on_one_palm(
 
 
 def _within_a_hand(tree: JointTree, group: list[Limb]) -> bool:
-    """Chains of more than one joint or that slide, or single hinges all within a hand's
-    breadth of each other (:data:`_HAND_BREADTH`): fingers on one palm, not an aircraft's
-    ailerons and tail (a hinge bends no finger of its own that far from the others; a tool
-    turret's slides and caps, a cart's drawers, are left as they were read)."""
+    """Chains each no longer than a finger, starting within a hand's breadth of each other
+    (:data:`_HAND_BREADTH`): fingers on one palm, not an aircraft's ailerons and tail, nor a
+    frame's pendulums two metres apart beside a stage that slides (a hinge or a slide moves
+    no finger of its own that far from the others)."""
     if any(joint_span(tree, limb) > _FINGER_LENGTH for limb in group if len(limb.joints) > 1):
         return False
-    if any(
-        len(limb.joints) > 1
-        or (joint := tree.urdf.joint(limb.joints[0])) is None
-        or joint.type != "revolute"
-        for limb in group
-    ):
-        return True
     places = [
         tree.poses.place(joint.child)
         for limb in group

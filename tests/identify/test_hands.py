@@ -210,13 +210,14 @@ def test_three_short_unnamed_chains_on_one_link_are_fingers_and_two_are_not() ->
     assert finger_groups(tree, three + two, grounded=True) == set()
 
 
-def upper_body(elbow: float) -> RobotText:
+def upper_body(elbow: float, shoulder: float = 0.18) -> RobotText:
     """A chest turned by three hinges, carrying a neck of three hinges at one place and two
-    chains of a shoulder's three hinges and an elbow ``elbow`` metres below them, no names."""
+    chains ``shoulder`` metres to each side of it of a shoulder's three hinges and an elbow
+    ``elbow`` metres below them, no names."""
     robot = RobotText("character", root="l0")
     chest = robot.chain("l0", ["j0", "j1", "j2"])
     robot.chain(chest, ["j3", "j4", "j5"])
-    for side, y in (("a", 0.18), ("b", -0.18)):
+    for side, y in (("a", shoulder), ("b", -shoulder)):
         link = builders.placed(robot, f"{side}0", "revolute", chest, f"{side}0_l", xyz=f"0 {y} 0.2")
         link = robot.chain(link, [f"{side}1", f"{side}2"])
         builders.placed(robot, f"{side}3", "revolute", link, f"{side}3_l", xyz=f"0 0 -{elbow}")
@@ -230,9 +231,11 @@ def test_chains_on_one_body_one_of_which_reaches_farther_than_a_finger_are_no_fi
     result = identify_urdf(upper_body(0.27).text())
     assert "finger" not in {role.role for role in result.roles}
     assert result.structure != "Hand"
-    # Knuckles 4 cm apart are a hand's fingers.
-    hand = identify_urdf(upper_body(0.04).text())
+    # Knuckles 4 cm apart are a hand's fingers, where the chains start within a hand's
+    # breadth of each other; not 36 cm apart.
+    hand = identify_urdf(upper_body(0.04, shoulder=0.04).text())
     assert "finger" in {role.role for role in hand.roles}
+    assert "finger" not in {role.role for role in identify_urdf(upper_body(0.04).text()).roles}
 
 
 def test_short_unnamed_chains_on_a_flying_bodys_airframe_are_its_own_and_no_fingers() -> None:
@@ -264,6 +267,21 @@ def test_single_hinges_farther_apart_than_a_hand_is_broad_are_no_fingers() -> No
 
     assert hinges([(-0.03, 0.28, 0), (-0.03, -0.28, 0), (-0.58, 0, 0), (-0.65, 0, 0.02)]) != "Hand"
     assert hinges([(0, 0.04, 0), (0, 0, 0), (0, -0.04, 0)]) == "Hand"
+
+
+def test_a_slide_beside_hinges_farther_apart_than_a_hand_is_broad_is_no_hand() -> None:
+    # A cable robot drawn as a stage sliding three ways in the middle of its frame, and a cable
+    # hanging on a hinge from each of its four pillars' tops, 2 m apart; then the same stage
+    # among three hinges 4 cm apart (a jaw that slides beside three fingers).
+    def stage_and_hinges(places: list[tuple[float, float, float]]) -> str:
+        robot = RobotText("r")
+        robot.chain(robot.root, ["x", "y", "z"], "prismatic")
+        for i, (x, y, z) in enumerate(places):
+            builders.placed(robot, f"j{i}", "revolute", robot.root, f"l{i}", xyz=f"{x} {y} {z}")
+        return identify_urdf(robot.text()).structure
+
+    assert stage_and_hinges([(1, 1, 2), (1, -1, 2), (-1, 1, 2), (-1, -1, 2)]) != "Hand"
+    assert stage_and_hinges([(0, 0.04, 0), (0, 0, 0), (0, -0.04, 0)]) == "Hand"
 
 
 def segmented(steps: list[list[tuple[float, float, float]]]) -> RobotText:
