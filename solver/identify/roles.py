@@ -452,7 +452,13 @@ class RoleReader:
             return Role(joint.name, "thruster", self._named("thruster", joint))
         if self.marine and self.matches("rotor", joint) and not carries:
             return Role(joint.name, "thruster", self._named("rotor", joint) + " on a body in water")
-        if not carries and (self.matches("fin", joint) or self.matches("wing", joint)):
+        # A control surface deflects within limits; a wing or fin on a joint that turns without
+        # limits flaps or spins (a toy's wings on a wheeled base, a propeller named for a wing).
+        if (
+            not carries
+            and (self.matches("fin", joint) or self.matches("wing", joint))
+            and not self._spins(joint.name)
+        ):
             part = "fin" if self.matches("fin", joint) else "wing"
             return Role(joint.name, "fin", self._named(part, joint) + " (a control surface)")
         if self.matches("caster", joint) and self._rolls_on(joint, moving_below):

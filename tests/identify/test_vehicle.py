@@ -238,6 +238,20 @@ def test_a_uuv_plugin_puts_a_body_its_propellers_spin_below_the_surface() -> Non
     assert "below the surface: libgazebo_uuv_plugin.so" in result.evidence
 
 
+def test_wings_that_turn_without_limits_on_a_wheeled_base_are_no_control_surfaces() -> None:
+    # A toy's two wings flapping on endless joints beside its wheels; an aileron deflects within
+    # limits.
+    def base_with_wings(kind: str) -> str:
+        robot = builders.ugv()
+        for side in ("left", "right"):
+            limits = '<limit lower="-0.5" upper="0.5" effort="1" velocity="1"/>'
+            robot.joint(f"wing_{side}_joint", kind, robot.root, f"wing_{side}", limits)
+        return identify_urdf(robot.text()).structure
+
+    assert base_with_wings("continuous") == "UGV"
+    assert base_with_wings("revolute") == "UAV"
+
+
 def test_flight_words_in_a_plugins_parameters_fly_only_a_body_that_cannot_roll_or_walk() -> None:
     # A vehicle plugin of its own that sets a drone's topics: the one sign the body flies.
     plugin = builders.model_plugin(
