@@ -92,6 +92,8 @@ _CELL = 8
 # How far a place may be off by the rounding of the turns that put it there (metres): a
 # RealSense's streams 15 mm apart stay within reach however its mount is turned.
 _ROUNDING = 1e-6
+# Two fields of view further apart than this share of the wider are two lenses: two devices.
+_LENS = 0.1
 # The kinds whose devices look out from their frame, each a body of its own.
 _VIEWING = frozenset(
     {
@@ -143,6 +145,8 @@ class Detection:
     vertical_samples: int | None = None
     # Where a camera's images go (:func:`_image_topic`), "" when the description does not say.
     topic: str = ""
+    # The horizontal field of view its element declares (radians), None when it says none.
+    fov: float | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -272,7 +276,13 @@ def _element_detections(
             elif (joint := urdf.joint(link)) is not None:
                 link = joint.child  # a Gazebo <sensor> on a joint (a force/torque sensor)
         detection = Detection(
-            kind, tag.name or tag.type, source, link, tag.vertical_samples, _image_topic(tag)
+            kind,
+            tag.name or tag.type,
+            source,
+            link,
+            tag.vertical_samples,
+            _image_topic(tag),
+            tag.horizontal_fov,
         )
         if kind == "dvl" and tag.type in _BEAM_TYPES:
             beams.add(id(detection))
@@ -467,6 +477,7 @@ class _Frame:
     cell: tuple[int, int, int]
     facing: Vector
     up: Vector
+    fov: float | None
 
 
 def _placed_on_body(
@@ -486,16 +497,24 @@ def _placed_on_body(
     if distance(place, poses.place(moved.child if moved else urdf.root)) <= 1e-9:
         return None
     facing, up = poses.facing(link), poses.turned(link, _NO_TURN, _Z)
-    return _Frame(link, body, place, cell, facing, up)
+    return _Frame(link, body, place, cell, facing, up, detection.fov)
 
 
 def _twin_frames(one: _Frame, other: _Frame) -> bool:
-    """Two frames within :data:`TWIN_REACH` of each other whose x and z axes point one way."""
+    """Two frames within :data:`TWIN_REACH` of each other whose x and z axes point one way,
+    of sensors seeing as wide (a narrow and a wide lens at one mount are two cameras)."""
     return (
         distance(one.place, other.place) <= TWIN_REACH + _ROUNDING
         and same_way(one.facing, other.facing)
         and same_way(one.up, other.up)
+        and not _other_lens(one.fov, other.fov)
     )
+
+
+def _other_lens(one: float | None, other: float | None) -> bool:
+    """Two fields of view both declared and more than :data:`_LENS` apart (a share of the
+    wider)."""
+    return one is not None and other is not None and abs(one - other) > _LENS * max(one, other)
 
 
 def _dvl_beams(found: list[Detection], urdf: Urdf, beams: set[int]) -> list[Detection]:

@@ -1475,6 +1475,23 @@ def test_one_lidar_declared_on_two_frames_at_one_place_is_one_device() -> None:
     assert twins == {"lidar": 1}
 
 
+def cameras_at_one_mount(*fovs: float) -> dict[str, int]:
+    """A base carrying cameras of the fields of view ``fovs`` (radians), each on a frame of its
+    own, all at one place facing one way (a sensor kit whose calibration is still a guess)."""
+    robot = builders.ugv()
+    for i, fov in enumerate(fovs):
+        frame = f"camera_{i}_link"
+        robot.joint(f"camera_{i}_joint", "fixed", robot.root, frame, '<origin xyz="0.3 0 0.3"/>')
+        lens = f"<camera><horizontal_fov>{fov}</horizontal_fov></camera>"
+        robot.add(builders.gazebo_sensor(frame, "camera", f"camera_{i}", lens))
+    return {s.kind: s.count for s in identify_urdf(robot.text()).sensors}
+
+
+def test_a_narrow_and_a_wide_camera_at_one_mount_are_two_one_declared_twice_is_one() -> None:
+    assert cameras_at_one_mount(0.52, 2.1) == {"camera": 2}
+    assert cameras_at_one_mount(1.2, 1.2) == {"camera": 1}
+
+
 def test_lidars_a_hand_apart_or_facing_apart_at_one_place_are_two() -> None:
     stacked = lidars_at(("lidar_2d", "0 0 0.2", "0 0 0"), ("lidar_3d", "0 0 0.3", "0 0 0"))
     assert stacked == {"lidar": 2}
