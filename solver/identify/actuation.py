@@ -1488,14 +1488,16 @@ def _drive_modules(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     """Endless leaves of no role yet named as drive modules (:data:`_MODULE`), turning about
     upright axes, three or more round their body's origin (:func:`_round_its_origin`): a swerve
     drive's modules, each a wheel's heading and drive, drawn without their wheels. A propeller
-    is no module; a snake's modules are chained, no leaves."""
+    is no module, nor a motor module (a multirotor's); a snake's modules are chained, no
+    leaves."""
     leaves = [
         joint
         for joint in tree.urdf.joints
         if joint.endless
         and joint.actuated
         and joint.name not in roles
-        and _MODULE.search(f"{joint.name} {joint.child}")
+        and _MODULE.search(words := f"{joint.name} {joint.child}")
+        and not MOTOR.search(words)  # a multirotor's motor modules turn its propellers
     ]
     around = _upright_by_carrier(tree, leaves, {}, {})
     return [

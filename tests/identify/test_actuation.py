@@ -49,8 +49,10 @@ def test_endless_leaves_named_as_modules_round_a_body_are_a_swerve_drive_not_rot
     swerve = identify_urdf(corner_leaves("module").text())
     assert swerve.structure == "UGV"
     assert [c.motion_control for c in swerve.motion_controls] == ["Driving"]
-    # The same leaves with no part's name are a multirotor's propellers.
+    # The same leaves with no part's name, or named as motor modules, are a multirotor's
+    # propellers.
     assert identify_urdf(corner_leaves("link").text()).structure == "UAV"
+    assert identify_urdf(corner_leaves("motor_module").text()).structure == "UAV"
 
 
 def test_a_chain_of_modules_is_no_swerve_drive() -> None:
