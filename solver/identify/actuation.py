@@ -1503,7 +1503,7 @@ def _drive_modules(tree: JointTree, roles: Mapping[str, Role]) -> list[str]:
     return [
         joint.name
         for carrier, joints in around.items()
-        if len(joints) >= _FEWEST_UNNAMED_ROTORS and _round_its_origin(tree, carrier, joints, True)
+        if _round_its_origin(tree, carrier, joints, wheeled=True)  # three or more, all round
         for joint in joints
     ]
 

@@ -2424,6 +2424,15 @@ def _wheels_about(*turns: tuple[str, str]) -> str:
     return robot.text()
 
 
+# An omni base's four wheels on level axles pointing two ways (place, axis).
+OMNI_WHEELS = (
+    ("0 -0.2 -0.05", "0 1 0"),
+    ("0 0.2 -0.05", "0 1 0"),
+    ("0.2 0 -0.05", "1 0 0"),
+    ("-0.2 0 -0.05", "1 0 0"),
+)
+
+
 def test_wheels_turning_about_three_square_axes_are_a_spacecrafts_reaction_wheels() -> None:
     # A CubeSat's attitude testbed: a pair of wheels about each of its axes turns it in place.
     cubesat = _wheels_about(
@@ -2436,12 +2445,7 @@ def test_wheels_turning_about_three_square_axes_are_a_spacecrafts_reaction_wheel
     )
     assert identify_urdf(cubesat).structure == "Other"
     # The same wheels on level axles alone, two ways: an omni base rolls on them.
-    omni = _wheels_about(
-        ("0 -0.2 -0.05", "0 1 0"),
-        ("0 0.2 -0.05", "0 1 0"),
-        ("0.2 0 -0.05", "1 0 0"),
-        ("-0.2 0 -0.05", "1 0 0"),
-    )
+    omni = _wheels_about(*OMNI_WHEELS)
     assert identify_urdf(omni).structure == "UGV"
 
 
@@ -2457,13 +2461,7 @@ def test_a_wheel_that_is_the_robots_only_moving_joint_moves_no_vehicle() -> None
 def test_an_omni_base_with_an_upright_wheel_beside_it_is_no_spacecraft() -> None:
     # Four level wheels pointing two ways and one upright (a turntable named a wheel): not as
     # many about each axis, so no reaction wheels.
-    base = _wheels_about(
-        ("0 -0.2 -0.05", "0 1 0"),
-        ("0 0.2 -0.05", "0 1 0"),
-        ("0.2 0 -0.05", "1 0 0"),
-        ("-0.2 0 -0.05", "1 0 0"),
-        ("0 0 0.2", "0 0 1"),
-    )
+    base = _wheels_about(*OMNI_WHEELS, ("0 0 0.2", "0 0 1"))
     assert identify_urdf(base).structure == "UGV"
 
 
