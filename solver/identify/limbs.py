@@ -2581,6 +2581,9 @@ def spine(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     named = _limb_joint_words(joints) if snake else _named_limb(tree, joints)
     if named or not all(j.type in _TURNING for j in joints):
         return limbs
+    # A snake carries no tool: a chain whose tip is an arm's tool frame is an arm's.
+    if not snake and _tool_frame_at(tree, joints[-1]):
+        return limbs
     if snake:
         why: str | None = (
             f"a chain of {len(joints)} turning joints, nothing else, on a robot named a snake"
@@ -2589,6 +2592,21 @@ def spine(tree: JointTree, limbs: list[Limb]) -> list[Limb]:
     else:
         why = _spine_shape(tree, joints)
     return limbs if why is None else [replace(limb, kind="spine", why=why)]
+
+
+def _tool_frame_at(tree: JointTree, last: Joint) -> str:
+    """The first link fixed below ``last`` (or its own child) named as an arm's tool frame
+    (:data:`_TOOL_FRAME`: ``tool0``, ``flange``, ``tcp``, ``ee_link``, ``end_effector``), where
+    an arm's controllers aim it; empty when there is none."""
+    below = [last.child, *islice(tree.urdf.fixed_below(last.child), _MOST_TOOL_LINKS)]
+    return next((name for name in below if _TOOL_FRAME.search(name)), "")
+
+
+# An arm's tool frame, by the names industrial and MoveIt descriptions give it.
+_TOOL_FRAME = re.compile(
+    r"(^|[_/])(tool0|tool_?frame|tool_?link|flange|tcp|ee_?link|eef|end_?effector)([_/\d]|$)",
+    re.IGNORECASE,
+)
 
 
 def _spine_shape(tree: JointTree, joints: list[Joint]) -> str | None:

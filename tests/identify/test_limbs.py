@@ -552,6 +552,21 @@ def test_a_base_named_a_snake_carrying_a_long_arm_keeps_its_wheels_and_its_arm()
     assert identify_urdf(rover_named_a_snake_with_a_long_arm()).structure == "Mobile Manipulator"
 
 
+@pytest.mark.parametrize("frame", ["tool0", "flange", "ee_link", "tcp"])
+def test_a_chain_of_snake_modules_ending_in_an_arms_tool_frame_is_an_arm(frame: str) -> None:
+    # Fresh set 1740's teaching arm: eight equal segments whose axes alternate, its tip a
+    # flange and a tool0 that MoveIt plans to. A snake carries no tool.
+    robot = builders.snake(8)
+    robot.fixed("m8", frame)
+    assert identify_urdf(robot.text()).structure == "Manipulator"
+
+
+def test_a_snake_whose_tip_is_a_head_stays_a_spine() -> None:
+    robot = builders.snake(8)
+    robot.fixed("m8", "head")
+    assert identify_urdf(robot.text()).structure == "Serpentine"
+
+
 def test_a_chain_named_as_an_arm_with_leaves_on_it_is_no_spine() -> None:
     result = identify_urdf(wheeled_snake(names="arm").text())
     assert result.body is not None
