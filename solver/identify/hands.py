@@ -574,7 +574,7 @@ def finger_groups(
         by_palm.setdefault(body, []).append(limb)
     found = _on_one_palm(tree, by_palm, sized)
     if found:
-        return found
+        return found | _thumbs_spun_at_the_tip(tree, by_palm, on_palm, found)
     # The bodies a gripper joint starts from: a thumb named so, on a carpal link fixed to the
     # palm.
     palms = frozenset(
@@ -621,12 +621,41 @@ def _within_a_hand(tree: JointTree, group: list[Limb]) -> bool:
     return within(places, _HAND_BREADTH)
 
 
+def _thumbs_spun_at_the_tip(
+    tree: JointTree,
+    by_palm: dict[str | None, list[Limb]],
+    on_palm: dict[str | None, list[Limb]],
+    found: set[str],
+) -> set[str]:
+    """The joints of the unnamed chains no longer than a finger whose last joint turns endless
+    (:func:`_spun_at_its_tip`) on a palm whose other chains are a hand's fingers (``found``),
+    within a hand's breadth of them: that hand's thumb, its tip's joint written endless by a
+    CAD export (a hand carries no wheel on a pivot among its fingers)."""
+    longest = tree.profile.limb("finger_max_joints")
+    thumbs: set[str] = set()
+    for body, chains in on_palm.items():
+        fingers = [limb for limb in by_palm.get(body, []) if set(limb.joints) <= found]
+        if len(fingers) < tree.profile.limb("hand_min_fingers"):
+            continue
+        for limb in chains:
+            spun = len(limb.joints) <= longest and _spun_at_its_tip(tree, limb)
+            if spun and not limb.named and _within_a_hand(tree, [*fingers, limb]):
+                thumbs.update(limb.joints)
+    return thumbs
+
+
+def _spun_at_its_tip(tree: JointTree, limb: Limb) -> bool:
+    """The chain's last joint turns endless at the end of limited ones: a wheel spun on its
+    pivot, unless it is a hand's (:func:`_thumbs_spun_at_the_tip`)."""
+    types = [joint.type for name in limb.joints if (joint := tree.urdf.joint(name)) is not None]
+    return bool(types) and types[-1] == "continuous" and bool(set(types[:-1]) - {"continuous"})
+
+
 def _finger_like(tree: JointTree, limb: Limb, longest: int) -> str | None:
     """How an unnamed chain is a finger's: ``"joints"`` (no more joints than a finger has, one
     more ending in a named fingertip), ``"size"`` (:func:`_finger_sized`), or ``None``."""
     joints = len(limb.joints)
-    types = [joint.type for name in limb.joints if (joint := tree.urdf.joint(name)) is not None]
-    if types and types[-1] == "continuous" and set(types[:-1]) - {"continuous"}:
+    if _spun_at_its_tip(tree, limb):
         # A finger bends within limits, or turns endless all through where a CAD export wrote
         # no limits; an endless joint at the end of limited ones spins a wheel on its pivot.
         return None

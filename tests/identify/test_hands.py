@@ -1394,3 +1394,38 @@ def test_a_jaws_massless_tip_frame_says_nothing_of_how_far_the_jaw_reaches() -> 
     assert [(limb.kind, len(limb.joints), limb.gripper) for limb in result.body.limbs] == [
         ("arm", 6, True)
     ]
+
+
+def _five_chain_hand(thumb_tip: str) -> RobotText:
+    """Four unnamed four-joint fingers in a row on a palm (named for no part) and a thumb
+    beside them, its last joint ``thumb_tip`` (a CAD export writes some tips endless)."""
+    robot = RobotText("montage", root="base_link")
+    number = 0
+    starts = [(-0.04, 0.02), (-0.02, 0.03), (0.01, 0.03), (0.035, 0.03), (0.03, -0.003)]
+    for finger, (x, y) in enumerate(starts):
+        link = robot.root
+        for step in range(4):
+            number += 1
+            kind = thumb_tip if finger == 4 and step == 3 else "revolute"
+            xyz = f"{x} {y} 0" if step == 0 else "0 0.02 0"
+            link = builders.placed(
+                robot, f"joint{number}", kind, link, f"link{number}", xyz=xyz, axis="1 0 0"
+            )
+    return robot
+
+
+@pytest.mark.parametrize("thumb_tip", ["revolute", "continuous"])
+def test_a_thumb_whose_tip_joint_is_endless_is_a_finger_beside_four_others(thumb_tip: str) -> None:
+    # Fresh set 1743's mechanical hand: its thumb's last joint is written continuous; beside
+    # four fingers on one palm it is the hand's thumb, no wheel on a pivot.
+    assert identify_urdf(_five_chain_hand(thumb_tip).text()).structure == "Hand"
+
+
+def test_chains_each_ending_in_an_endless_joint_are_no_fingers_on_their_own() -> None:
+    # Four hip-knee-wheel legs close together: wheels spun on pivots, not a hand.
+    robot = RobotText("wheel_legs", root="body")
+    for i, (x, y) in enumerate([(0.02, 0.02), (0.02, -0.02), (-0.02, 0.02), (-0.02, -0.02)]):
+        hip = builders.placed(robot, f"h{i}", "revolute", "body", f"h{i}_link", xyz=f"{x} {y} 0")
+        knee = builders.placed(robot, f"k{i}", "revolute", hip, f"k{i}_link", xyz="0 0 -0.02")
+        builders.placed(robot, f"w{i}", "continuous", knee, f"w{i}_link", xyz="0 0 -0.02")
+    assert identify_urdf(robot.text()).structure != "Hand"
