@@ -91,8 +91,23 @@ class JointTree:
     def tread(self, joint: Joint) -> bool:
         """The joint is named as a track's and does not slide: a tread's sprocket or segment.
         A carriage that slides on a linear track (a rail, a gantry's axis, a table game's
-        pusher) moves along it; nothing rolls."""
-        return self.matches("track", joint) and not (joint.type == "prismatic" and joint.movable)
+        pusher) moves along it; nothing rolls. On a body whose carriages slide on such a track
+        (:attr:`on_a_rail`), a track-named joint that cannot move fixes the rail's frames: no
+        tread either."""
+        if not self.matches("track", joint) or self._slides(joint):
+            return False
+        return joint.movable or not self.on_a_rail
+
+    @cached_property
+    def on_a_rail(self) -> bool:
+        """A track-named joint slides: a carriage on a linear track (a robot's floor rail)."""
+        return any(
+            self._slides(joint) and self.matches("track", joint) for joint in self.urdf.joints
+        )
+
+    @staticmethod
+    def _slides(joint: Joint) -> bool:
+        return joint.type == "prismatic" and joint.movable
 
     def labels(self, part: str) -> tuple[str, ...]:
         """The model plugins the profile reads as ``part``, each named once."""

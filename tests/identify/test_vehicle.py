@@ -1370,3 +1370,23 @@ def test_level_rotors_on_the_frame_itself_are_no_outboards() -> None:
     assert result.body is not None
     assert result.body.thrusters == ()
     assert len(result.body.rotors) == 4
+
+
+def test_a_floor_track_whose_carriages_slide_on_it_is_no_tracked_vehicle() -> None:
+    # Fresh set 1748's robot track: two carriages slide on a rail whose frame a fixed joint
+    # named for the track holds. A rail is no tread, its fixed frame neither.
+    robot = RobotText("robot_track", root="track")
+    robot.chain("track", ["track_joint_1"], "prismatic")
+    robot.chain("track", ["track_joint_2"], "prismatic")
+    robot.joint("track_base_link-base", "fixed", "track", "track_base")
+    tree = tree_of(robot)
+    assert tree.on_a_rail
+    assert tracks(tree) == ()
+    assert identify_urdf(robot.text()).structure != "UGV"
+
+
+def test_a_tracked_vehicle_drawn_with_fixed_tracks_is_still_tracked() -> None:
+    robot = RobotText("crawler")
+    robot.joint("left_track_joint", "fixed", robot.root, "left_track")
+    robot.joint("right_track_joint", "fixed", robot.root, "right_track")
+    assert tracks(tree_of(robot)) == ("left_track_joint", "right_track_joint")
