@@ -1208,11 +1208,25 @@ def _chains_by_carrier(tree: JointTree, limbs: list[Limb]) -> list[tuple[str, st
     for limb in limbs:
         long_enough = _LEG_JOINTS[0] <= len(limb.joints) <= _MOST_LEG_JOINTS
         if limb.kind in ("arm", "other") and not limb.gripper and long_enough:
-            kind = "named" if limb.named else "chain"
+            kind = "named" if limb.named and not _elbows_only(tree, limb) else "chain"
             by_base.setdefault((_carrier(tree, limb.base, known), kind), []).append(limb)
         elif limb.kind == "other" and len(limb.joints) == 1 and _turns_whole(tree, limb):
             by_base.setdefault((_carrier(tree, limb.base, known), "whole"), []).append(limb)
     return [(base, kind, group) for (base, kind), group in by_base.items()]
+
+
+def _elbows_only(tree: JointTree, limb: Limb) -> bool:
+    """The chain is named as an arm's only by an elbow (``elbow_fl_1``): a bending joint a
+    four-legged animal's foreleg has too, so its place tells (:func:`legs_by_place`) as an
+    unnamed chain's does; an arm's, a shoulder's or a wrist's name says arm."""
+    names = [name for joint in _joints_of(tree, limb) for name in (joint.name, joint.child)]
+    return any(_ELBOW.search(name) for name in names) and not any(
+        "arm" in tree.parts_of(_ELBOW.sub("", name)) for name in names
+    )
+
+
+# An elbow in a part's name.
+_ELBOW = re.compile("elbow", re.IGNORECASE)
 
 
 def _alike_enough(group: list[Limb]) -> bool:

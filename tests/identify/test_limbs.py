@@ -4727,3 +4727,32 @@ def test_a_rod_whose_end_meets_another_rod_is_merged_into_no_rod() -> None:
     in_limbs = {name for limb in body.limbs for name in limb.joints}
     assert in_limbs == {name for name, *_ in joints}
     assert any({"b_slide", "c1"} <= set(limb.joints) for limb in body.limbs)
+
+
+def elbowed_walker(first_link: str) -> RobotText:
+    """Fresh set 1772's servo quadruped, as drawn: at each corner of a box a chain of three
+    hinges hanging down, its first link named ``<first_link>_<corner>_1`` and the others
+    ``upper_<corner>_1`` and ``lower_<corner>_1``; the joints named by number."""
+    robot = RobotText("spot_v1")
+    number = 0
+    corners = {"fl": (0.06, 0.14), "fr": (-0.06, 0.14), "bl": (0.06, -0.19), "br": (-0.06, -0.19)}
+    for corner, (x, y) in corners.items():
+        parent = robot.root
+        steps = [(f"{x} {y} 0.17", "0 1 0"), ("0.04 0 0", "1 0 0"), ("0 0.02 -0.08", "1 0 0")]
+        for (xyz, axis), part in zip(steps, (first_link, "upper", "lower"), strict=True):
+            number += 1
+            parent = builders.placed(
+                robot, f"Revolute {number}", "revolute", parent, f"{part}_{corner}_1",
+                xyz=xyz, axis=axis,
+            )  # fmt: skip
+        robot.joint(f"foot_{corner}", "fixed", parent, f"tip_{corner}", '<origin xyz="0 0 -0.08"/>')
+    return robot
+
+
+def test_four_chains_at_the_corners_named_only_by_an_elbow_are_told_by_place() -> None:
+    # A four-legged animal's foreleg bends at an elbow too: the name says no arm on its own.
+    assert identify_urdf(elbowed_walker("elbow").text()).structure == "Quadruped"
+
+
+def test_four_chains_at_the_corners_named_as_shoulders_stay_arms() -> None:
+    assert identify_urdf(elbowed_walker("shoulder").text()).structure != "Quadruped"
