@@ -629,19 +629,46 @@ def _thumbs_spun_at_the_tip(
 ) -> set[str]:
     """The joints of the unnamed chains no longer than a finger whose last joint turns endless
     (:func:`_spun_at_its_tip`) on a palm whose other chains are a hand's fingers (``found``),
-    within a hand's breadth of them: that hand's thumb, its tip's joint written endless by a
-    CAD export (a hand carries no wheel on a pivot among its fingers)."""
+    starting within a hand's breadth of them (:func:`_in_the_hand`): that hand's thumb, its
+    tip's joint written endless by a CAD export (a hand carries no wheel on a pivot among its
+    fingers)."""
     longest = tree.profile.limb("finger_max_joints")
     thumbs: set[str] = set()
     for body, chains in on_palm.items():
         fingers = [limb for limb in by_palm.get(body, []) if set(limb.joints) <= found]
         if len(fingers) < tree.profile.limb("hand_min_fingers"):
             continue
+        box = _box([_start(tree, limb) for limb in fingers])
         for limb in chains:
             spun = len(limb.joints) <= longest and _spun_at_its_tip(tree, limb)
-            if spun and not limb.named and _within_a_hand(tree, [*fingers, limb]):
+            if spun and not limb.named and _in_the_hand(tree, limb, box):
                 thumbs.update(limb.joints)
     return thumbs
+
+
+def _start(tree: JointTree, limb: Limb) -> tuple[float, float, float]:
+    """Where the chain's first joint turns, at rest."""
+    joint = tree.urdf.joint(limb.joints[0])
+    return (math.nan,) * 3 if joint is None else tree.poses.place(joint.child)
+
+
+def _box(places: list[tuple[float, float, float]]) -> tuple[tuple[float, ...], tuple[float, ...]]:
+    """The smallest box round ``places`` (its two opposite corners)."""
+    return tuple(map(min, zip(*places, strict=True))), tuple(map(max, zip(*places, strict=True)))
+
+
+def _in_the_hand(
+    tree: JointTree, limb: Limb, box: tuple[tuple[float, ...], tuple[float, ...]]
+) -> bool:
+    """The chain is no longer than a finger and starts where the box round the fingers' starts,
+    grown to hold it, still fits in a hand's breadth (its diagonal: every two starts within
+    reach, checked once per chain however many fingers the palm holds)."""
+    if len(limb.joints) > 1 and joint_span(tree, limb) > _FINGER_LENGTH:
+        return False
+    start = _start(tree, limb)
+    low, high = box
+    sides = [max(h, c) - min(lo, c) for lo, h, c in zip(low, high, start, strict=True)]
+    return all(math.isfinite(side) for side in sides) and math.hypot(*sides) <= _HAND_BREADTH
 
 
 def _spun_at_its_tip(tree: JointTree, limb: Limb) -> bool:
