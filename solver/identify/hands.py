@@ -32,7 +32,7 @@ from itertools import islice, pairwise
 from solver.identify.couplings import Walk, jaw_groups
 from solver.identify.limbs import Limb, chain_ends, joint_span, joint_words, moved_by, tips_meet
 from solver.identify.placement import MACHINE_TRAVEL, placement
-from solver.identify.pose import distance, local_axis, parallel, perpendicular, within
+from solver.identify.pose import Vector, distance, local_axis, parallel, perpendicular, within
 from solver.identify.readers.urdf import Joint
 from solver.identify.tree import JointTree
 
@@ -611,14 +611,21 @@ def _within_a_hand(tree: JointTree, group: list[Limb]) -> bool:
     (:data:`_HAND_BREADTH`): fingers on one palm, not an aircraft's ailerons and tail, nor a
     frame's pendulums two metres apart beside a stage that slides (a hinge or a slide moves
     no finger of its own that far from the others)."""
-    if any(joint_span(tree, limb) > _FINGER_LENGTH for limb in group if len(limb.joints) > 1):
+    if any(_longer_than_a_finger(tree, limb) for limb in group):
         return False
-    places = [
-        tree.poses.place(joint.child)
-        for limb in group
-        if (joint := tree.urdf.joint(limb.joints[0])) is not None
-    ]
+    places = [place for limb in group if (place := _start(tree, limb)) is not None]
     return within(places, _HAND_BREADTH)
+
+
+def _longer_than_a_finger(tree: JointTree, limb: Limb) -> bool:
+    """The chain's last joint is farther from its first than a finger's knuckles reach."""
+    return len(limb.joints) > 1 and joint_span(tree, limb) > _FINGER_LENGTH
+
+
+def _start(tree: JointTree, limb: Limb) -> Vector | None:
+    """Where the chain's first joint turns, at rest; None for a joint the file lacks."""
+    joint = tree.urdf.joint(limb.joints[0])
+    return None if joint is None else tree.poses.place(joint.child)
 
 
 def _thumbs_spun_at_the_tip(
@@ -638,7 +645,10 @@ def _thumbs_spun_at_the_tip(
         fingers = [limb for limb in by_palm.get(body, []) if set(limb.joints) <= found]
         if len(fingers) < tree.profile.limb("hand_min_fingers"):
             continue
-        box = _box([_start(tree, limb) for limb in fingers])
+        starts = [place for limb in fingers if (place := _start(tree, limb)) is not None]
+        if not starts:
+            continue
+        box = _box(starts)
         for limb in chains:
             spun = len(limb.joints) <= longest and _spun_at_its_tip(tree, limb)
             if spun and not limb.named and _in_the_hand(tree, limb, box):
@@ -646,13 +656,7 @@ def _thumbs_spun_at_the_tip(
     return thumbs
 
 
-def _start(tree: JointTree, limb: Limb) -> tuple[float, float, float]:
-    """Where the chain's first joint turns, at rest."""
-    joint = tree.urdf.joint(limb.joints[0])
-    return (math.nan,) * 3 if joint is None else tree.poses.place(joint.child)
-
-
-def _box(places: list[tuple[float, float, float]]) -> tuple[tuple[float, ...], tuple[float, ...]]:
+def _box(places: list[Vector]) -> tuple[tuple[float, ...], tuple[float, ...]]:
     """The smallest box round ``places`` (its two opposite corners)."""
     return tuple(map(min, zip(*places, strict=True))), tuple(map(max, zip(*places, strict=True)))
 
@@ -663,9 +667,9 @@ def _in_the_hand(
     """The chain is no longer than a finger and starts where the box round the fingers' starts,
     grown to hold it, still fits in a hand's breadth (its diagonal: every two starts within
     reach, checked once per chain however many fingers the palm holds)."""
-    if len(limb.joints) > 1 and joint_span(tree, limb) > _FINGER_LENGTH:
-        return False
     start = _start(tree, limb)
+    if start is None or _longer_than_a_finger(tree, limb):
+        return False
     low, high = box
     sides = [max(h, c) - min(lo, c) for lo, h, c in zip(low, high, start, strict=True)]
     return all(math.isfinite(side) for side in sides) and math.hypot(*sides) <= _HAND_BREADTH
