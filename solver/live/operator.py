@@ -114,8 +114,9 @@ class Switched:
     ``answer``, the running watcher's answer naming the robot with the values asked (``None``
     when none came within ``wait`` seconds; ``there`` is then what the graph held);
     ``rules``, the file of the rule set the switch was checked against (``None``: only the
-    syntax was, and ``why`` says why); ``cleared``, the selections cleared beside; ``order``,
-    the rule set's characteristics in order (what the text shows the combination in)."""
+    syntax was, and ``why`` says why, when there were values or ``clear``); ``cleared``, the
+    selections cleared beside; ``order``, the rule set's characteristics in order (what the
+    text shows the combination in)."""
 
     graph: str
     switch: Switch
@@ -471,7 +472,8 @@ def switch_robot(
         why = None
         if rules is None:
             rules, said = station.announced_rules(params)
-            why = None if rules is not None else said
+            # Without values or --clear the rule set only orders the text: nothing to warn of.
+            why = None if rules is not None or not (values or clear) else said
             switch = check_switch(robot, values, rules)
         if switch.robot not in robots:
             raise _no_robot(switch.robot, station.name, robots)

@@ -432,6 +432,20 @@ def test_a_switch_with_values_to_check_looks_past_a_quiet_dds_graph_for_a_watche
     assert len(observed) == 2
 
 
+def test_a_switch_says_its_values_were_checked_for_syntax_only_only_when_it_has_some(
+    node: TestNode, ros1_station: Station
+) -> None:
+    # No watcher announces a rule set. A switch of the robot alone has nothing to check (the
+    # rule set would only order the answer's text): no warning. One with a value, or --clear,
+    # is told why its names were checked for their syntax only.
+    put_drone(node, "/uav1")
+    assert switch_robot(ros1_station, "/uav1", wait=0.0).why is None
+    expected = f"no running watcher on {ros1_station.name} announces its rule set"
+    with_value = switch_robot(ros1_station, "/uav1", {"motion_control": "Flight"}, wait=0.0)
+    assert with_value.why == expected
+    assert switch_robot(ros1_station, "/uav1", clear=True, wait=0.0).why == expected
+
+
 def test_a_graph_still_discovering_endpoints_is_not_yet_quiet(
     node: TestNode, ros1_station: Station, monkeypatch: pytest.MonkeyPatch
 ) -> None:
