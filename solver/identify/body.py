@@ -38,7 +38,13 @@ from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field, replace
 
 from solver.identify.actuation import joint_roles, with_role
-from solver.identify.hands import finger_groups, finger_tips, gripper_closure, stacked_grippers
+from solver.identify.hands import (
+    finger_groups,
+    finger_tips,
+    gripper_closure,
+    limbs_named_for_a_hand,
+    stacked_grippers,
+)
 from solver.identify.limbs import (
     Limb,
     arms_beside_legs,
@@ -515,7 +521,8 @@ def detect_body(urdf: Urdf, profile: Profile) -> Body:
     parts.roles.update(pushing_rotors(tree, parts.roles))
     parts.roles.update(_rollers(tree, parts.roles))
     parts.roles.update(_loop_linkages(tree, parts.roles))
-    for name in stacked_grippers(tree, parts.of("gripper")):
+    grippers = parts.of("gripper")
+    for name in {*stacked_grippers(tree, grippers), *limbs_named_for_a_hand(tree, grippers)}:
         del parts.roles[name]  # an arm's joint, though named as a gripper's
     _body_parts(tree, parts)
     controlled = urdf.controlled_joints

@@ -42,6 +42,7 @@ __all__ = [
     "finger_tips",
     "gripper_closure",
     "jaws",
+    "limbs_named_for_a_hand",
     "stacked_grippers",
 ]
 
@@ -56,6 +57,9 @@ _NOT_JAWS = ("head", "leg", "wheel", "caster", "rotor", "thruster", "fin", "wing
 _HEAD_PARTS = re.compile(r"antenna|(^|[_/])ears?([_/]|$)|eyelid|eyebrow", re.IGNORECASE)
 # Words of a finger's joints (or the links they move): a hand's finger, not a gripper's jaw.
 _FINGER = re.compile(r"finger|thumb|knuckle|phalan", re.IGNORECASE)
+# A link named as a hand, and the names of a hand's parts that are no whole arm.
+_HAND = re.compile(r"(^|[_/lr])hand([_/]|$)", re.IGNORECASE)
+_NOT_A_HAND = re.compile(r"finger|thumb|knuckle|phalan|palm|jaw|claw|grip", re.IGNORECASE)
 # A hand's bones, as a display hand names its fingers' joints and links (``metacarpals``,
 # ``proximal``, ``intermediate``, ``distal``, a phalanx): a chain of them one joint longer than a
 # finger is one (:func:`_finger_like`).
@@ -481,6 +485,63 @@ def stacked_grippers(tree: JointTree, grippers: list[str]) -> list[str]:
     # its two jaws are the gripper's).
     longest = max(shortest, tree.profile.limb("finger_max_joints"))
     return carriers if fans == carriers[-1:] and len(carriers) > longest else []
+
+
+def limbs_named_for_a_hand(tree: JointTree, grippers: list[str]) -> list[str]:
+    """The gripper-named joints that are an arm named for the hand it ends in: a chain whose
+    first joint, on the body nothing moves, carries a link named as a hand (``Right_hand``; no
+    finger's, jaw's or palm's part), below which one unbranched chain of joints named for no
+    gripper part goes on, ``arm_min_joints`` in all or more. A hand carries its fingers side by
+    side from a palm at an arm's end; one named so at the body, carrying a single chain of
+    joints, is the arm a small humanoid's exporter named for its hand (1805). Those, in
+    document order."""
+    found: list[str] = []
+    known: dict[str, str | None] = {}
+    named = set(grippers)
+    for name in grippers:
+        joint = tree.urdf.joint(name)
+        if joint is None or not joint.movable or not _HAND.search(joint.child):
+            continue
+        if _NOT_A_HAND.search(f"{joint.name} {joint.child}"):
+            continue
+        if moved_by(tree.urdf, joint.parent, known) is not None:
+            continue  # at an arm's end, or on a wrist
+        chain = [joint, *_one_chain_below(tree, joint)]
+        if len(chain) < tree.profile.limb("arm_min_joints") or any(
+            "gripper" in tree.parts_of(below.name) | tree.parts_of(below.child)
+            for below in chain[1:]
+        ):
+            continue
+        found += [below.name for below in chain if below.name in named]
+    return sorted(found, key=tree.order)
+
+
+def _one_chain_below(tree: JointTree, joint: Joint) -> list[Joint]:
+    """The movable joints below ``joint``, one under another, while each link carries one
+    (through fixed joints); empty when some link carries two or more (fingers side by side)."""
+    chain: list[Joint] = []
+    link = joint.child
+    while True:
+        below = _nearest_movable(tree, link)
+        if not below:
+            return chain
+        if len(below) > 1:
+            return []
+        chain.append(below[0])
+        link = below[0].child
+
+
+def _nearest_movable(tree: JointTree, link: str) -> list[Joint]:
+    """The movable joints nearest below ``link``, through fixed ones."""
+    found: list[Joint] = []
+    stack = [link]
+    while stack:
+        for child in tree.urdf.children(stack.pop()):
+            if child.movable:
+                found.append(child)
+            else:
+                stack.append(child.child)
+    return found
 
 
 def _carried(tree: JointTree, joints: list[Joint]) -> Counter[str]:

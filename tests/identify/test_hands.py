@@ -1260,6 +1260,51 @@ def test_an_arm_whose_every_part_is_named_a_jaw_carrying_two_jaws_is_an_arm() ->
     assert result.body.fingers == ("L6_GL", "L6_GR")
 
 
+def hand_named_chain(robot: RobotText, side: str, joints: int) -> None:
+    """A chain on the root whose first link is named ``<Side>_hand``, then unnamed links."""
+    link = robot.chain(robot.root, [f"{side[0]}hj"])
+    robot.links[-1] = f"{side}_hand"  # the chain's first link, as an exporter named it
+    robot.joints[-1] = robot.joints[-1].replace(link, f"{side}_hand")
+    link = f"{side}_hand"
+    for i in range(1, joints):
+        link = robot.joint(
+            f"{side[0]}hj{i}", "revolute", link, f"{side[0]}h{i}",
+            '<limit lower="-1" upper="1" effort="1" velocity="1"/>',
+        )  # fmt: skip
+
+
+def test_a_chain_named_for_its_hand_at_the_body_is_an_arm() -> None:
+    # A small humanoid's exporter named each arm for its hand: the link the shoulder turns is
+    # `Right_hand`, and three unnamed joints follow one under another. A hand's fingers stand
+    # side by side from a palm at an arm's end; this is the arm (1805, read as a Biped).
+    robot = builders.biped()
+    for side in ("Right", "Left"):
+        hand_named_chain(robot, side, 4)
+    result = identify_urdf(robot.text())
+    assert result.structure == "Humanoid"
+    assert result.body is not None
+    assert [(limb.kind, limb.joints[0]) for limb in result.body.limbs if limb.kind == "arm"] == [
+        ("arm", "Rhj"),
+        ("arm", "Lhj"),
+    ]
+
+
+def test_a_hand_turned_at_the_body_that_carries_fingers_side_by_side_stays_a_hand() -> None:
+    # A wrist on the mount turns a palm named as a hand, which carries three fingers side by
+    # side, or one short chain (a two-joint hand-named chain is no arm's worth).
+    robot = RobotText("hand_on_wrist")
+    palm = robot.joint("wrist", "revolute", robot.root, "right_hand",
+                       '<limit lower="-1" upper="1" effort="1" velocity="1"/>')  # fmt: skip
+    for finger in ("a", "b", "c"):
+        robot.chain(palm, [f"{finger}_1", f"{finger}_2"])
+    result = identify_urdf(robot.text())
+    assert result.structure == "Hand"
+    short = builders.biped()
+    hand_named_chain(short, "Right", 2)
+    hand_named_chain(short, "Left", 2)
+    assert identify_urdf(short.text()).structure == "Biped"
+
+
 def two_chains(apart: float, link: float, *, on: str = "", third: bool = False) -> RobotText:
     """Two unnamed three-joint chains on one link, their first joints ``apart`` metres from
     each other, each link of them ``link`` metres long (straight up); ``on``: that link is
