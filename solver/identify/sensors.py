@@ -296,8 +296,10 @@ def _element_detections(
 def _publishes_truth(tag: SensorTag, profile: Profile) -> bool:
     """Whether a ``<sensor>`` gives simulation ground truth, no device: every plugin it runs
     publishes it (a noise-free twin of a ranger on the ranger's link, named and published as
-    ``gt_lidar``), or it is one of Gazebo Sim's label cameras (:data:`_ANNOTATIONS`)."""
-    if (tag.type or "").lower() in _ANNOTATIONS:
+    ``gt_lidar``), its own name says so (``front_laser_truth``, the twin of an Ouster an SDF
+    export kept without its plugins), or it is one of Gazebo Sim's label cameras
+    (:data:`_ANNOTATIONS`)."""
+    if (tag.type or "").lower() in _ANNOTATIONS or _ground_truth(tag.name, profile):
         return True
     return bool(tag.plugins) and all(_ground_truth(plugin.text, profile) for plugin in tag.plugins)
 

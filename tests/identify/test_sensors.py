@@ -230,6 +230,19 @@ def test_a_sensor_element_whose_plugin_publishes_ground_truth_is_no_device() -> 
     assert found == [("lidar", "LIDAR", 1)]
 
 
+def test_a_sensor_element_named_for_ground_truth_is_no_device_even_without_a_plugin() -> None:
+    # An SDF export keeps a 3D lidar and its noise-free twin, each with no plugin: the twin's
+    # name says what it is (fresh set 1815). A word that only holds the letters is a device.
+    fan = "<ray><scan><horizontal><samples>512</samples></horizontal></scan></ray>"
+    found = kinds(
+        builders.gazebo_sensor("laser", "ray", "front_laser", fan),
+        builders.gazebo_sensor("laser", "ray", "front_laser_truth", fan),
+    )
+    assert found == [("lidar", "LIDAR", 1)]
+    trusty = kinds(builders.gazebo_sensor("laser", "ray", "trusty_laser", fan))
+    assert trusty == [("lidar", "LIDAR", 1)]
+
+
 def test_a_plugin_is_an_imu_by_the_word_imu_not_by_those_letters_inside_another() -> None:
     # A go-kart's vehicle simulator plugin holds the letters of "imu" (s-imu-lator).
     found = kinds(
