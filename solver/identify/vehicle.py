@@ -184,7 +184,25 @@ def fixed_rotors(tree: JointTree) -> list[str]:
     ]
     if still and len(found) < tree.profile.limb("min_rotors"):
         found = _discs(tree, on_the_hull)
+    if _ride_on_modules(tree, on_the_hull, len(found)):
+        return []
     return found if len(found) >= tree.profile.limb("min_rotors") else []
+
+
+def _ride_on_modules(tree: JointTree, on_the_hull: Collection[str], found: int) -> bool:
+    """As many rotor-named leaves or more are fixed to links that joints move as to the hull:
+    the parts every module of a chain carries (a screw-driven snake's `propeller_<n>` on each
+    unit, fresh set 1862), not a trimmed multirotor's rotors, which all sit on its hull."""
+    riding = sum(
+        1
+        for j in tree.urdf.joints
+        if j.type == "fixed"
+        and not tree.urdf.children(j.child)
+        and j.parent not in on_the_hull
+        and tree.matches("rotor", j)
+        and not tree.matches("wheel", j)
+    )
+    return found > 0 and riding >= found
 
 
 def _discs(tree: JointTree, on_the_hull: Collection[str]) -> list[str]:

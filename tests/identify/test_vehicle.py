@@ -72,6 +72,31 @@ def test_motors_fixed_at_the_leaves_of_a_body_where_nothing_moves_fly_it_with_do
     assert identify_urdf(motor_arms(word="motorcycle").text()).structure == "Other"
 
 
+def test_propellers_fixed_to_every_module_of_a_chain_are_no_trimmed_multirotor() -> None:
+    # A screw-driven snake: five units turning one after another, each carrying two fixed
+    # `propeller` screws (fresh set 1862). Those on the moving units outnumber those on the
+    # hull: the units' parts, not a multirotor's rotors, which all sit on its hull.
+    snake = RobotText("snake")
+    link = snake.root
+    for i in range(5):
+        for side in ("left", "right"):
+            snake.fixed(link, f"propeller_{i}_{side}")
+        if i < 4:
+            link = snake.joint(f"unit_{i}", "continuous", link, f"unit_{i}_link",
+                               '<axis xyz="0 0 1"/>')  # fmt: skip
+    result = identify_urdf(snake.text())
+    assert result.body is not None
+    assert result.body.fixed_rotors == ()
+    assert result.structure != "UAV"
+    # A trimmed quadrotor with a one-joint camera tilt keeps its four rotors on the hull.
+    tilted = RobotText("trimmed quadrotor")
+    for i in range(4):
+        tilted.fixed("base_link", f"prop{i}_link")
+    tilted.chain("base_link", ["camera_tilt"])
+    tilted.fixed("camera_tilt_link", "camera_prop_guard")
+    assert len(identify_urdf(tilted.text()).body.fixed_rotors) == 4  # type: ignore[union-attr]
+
+
 def test_fixed_rotor_links_beside_moving_joints_are_motors_not_flight() -> None:
     legged = RobotText("legged")
     for corner in ("front_left", "front_right", "rear_left", "rear_right"):
