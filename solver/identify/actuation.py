@@ -822,7 +822,8 @@ def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, str
     for link, joints in level.items():
         if len(joints) < _WHEEL_LEGS or driven or _mostly_balanced(tree, joints):
             below.setdefault(link, []).extend(joints)  # road wheels, not legs
-    found, apart = _told_on_their_link(tree, below)
+    endless: dict[str, str | None] = {}  # link -> the nearest endless joint above it
+    found, apart = _told_on_their_link(tree, below, endless)
     # One on a caster's swivel or a steering knuckle, two on a rocker, one on a swing arm:
     # sides told across the whole body instead, for those that hang from the body through no
     # driven joint but a steering one or a rocker (a driven flipper's sprocket is the
@@ -831,7 +832,6 @@ def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, str
     # wheels).
     # By whether a leaf's axle is level at rest: link -> the nearest driven joint above it.
     known: dict[bool, dict[str, str | None]] = {}
-    endless: dict[str, str | None] = {}  # link -> the nearest endless joint above it
     rockers = _rockers(tree, apart)
     swung: dict[str, str | None] = {}  # link -> the nearest movable joint above it
     apart = [
@@ -852,14 +852,20 @@ def _unnamed_wheels(tree: JointTree, roles: Mapping[str, Role]) -> dict[str, str
 
 
 def _told_on_their_link(
-    tree: JointTree, below: dict[str, list[Joint]]
+    tree: JointTree, below: dict[str, list[Joint]], endless: dict[str, str | None]
 ) -> tuple[dict[str, str], list[Joint]]:
     """The wheels among ``below`` (link -> the candidates it carries) told on their own link:
     two or more on both sides of its middle, or three or more pointing in
-    (:func:`_pointing_in`), each with its evidence; and the rest, to be told across the body."""
+    (:func:`_pointing_in`), each with its evidence; and the rest, to be told across the body.
+    Not on a link below more endless joints than a wheel hangs from
+    (:func:`_few_endless_above`, whose walks ``endless`` remembers): two jaws that turn for
+    ever at the end of an arm drawn without limits (fresh set 1879's five-joint arm)."""
     found: dict[str, str] = {}
     apart: list[Joint] = []
     for link, joints in below.items():
+        if not _few_endless_above(tree, joints[0], endless):
+            apart.extend(joints)  # told across the body, where such leaves are no wheels
+            continue
         middle = _middle(tree, link)
         if len(joints) >= 2 and _sides({j.origin[1] - middle for j in joints}):
             found.update(dict.fromkeys((j.name for j in joints), _SIDES))

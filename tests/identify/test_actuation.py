@@ -1274,6 +1274,31 @@ def test_the_endless_last_joints_of_two_long_unnamed_chains_are_wrists_not_wheel
     assert result.structure == "Torso"
 
 
+def test_two_endless_jaws_on_the_link_an_unlimited_arm_ends_in_are_no_pair_of_wheels() -> None:
+    # A five-joint arm drawn without limits ends in a link carrying two endless jaws on both
+    # sides of it, about one level axis (fresh set 1879): five endless joints above them, more
+    # than a wheel hangs from.
+    arm = RobotText("eureka", root="dummy_root")
+    parent = arm.joint("dummy_root_to_base", "fixed", "dummy_root", "base_link")
+    joints = (
+        ("0 0 0.104", "0 0 1"), ("-0.15 0 0.14", "0 1 0"), ("0 0 0.35", "0 -1 0"),
+        ("0 0.0125 0.135", "0 1 0"), ("0 -0.012 0.104", "0 0 1"),
+    )  # fmt: skip
+    for i, (xyz, axis) in enumerate(joints, start=1):
+        if i == 4:  # a rigid link between the elbow and the wrist
+            parent = builders.placed(arm, "rigid1", "fixed", parent, "link3b",
+                                     xyz="0.045 -0.028 0.226")  # fmt: skip
+        parent = builders.placed(arm, f"joint{i}", "continuous", parent, f"link{i}",
+                                 xyz=xyz, axis=axis)  # fmt: skip
+    for side, x, axis in (("a", 0.04, "0 1 0"), ("b", -0.04, "0 -1 0")):  # the jaws, unnamed
+        builders.placed(arm, f"joint6{side}", "continuous", parent, f"link7{side}",
+                        xyz=f"{x} {x / 4.5} 0.023", axis=axis)  # fmt: skip
+    result = identify_urdf(arm.text())
+    assert result.body is not None
+    assert result.body.wheels == ()
+    assert result.structure != "UGV"
+
+
 def test_the_endless_last_joints_of_two_seven_joint_arms_on_a_wheeled_base_are_no_wheels() -> None:
     # Two unnamed seven-joint arms on a wheeled base, one on each side, their odd joints endless
     # and their even ones limited (a Kinova Gen3's): only three endless joints hang above each
