@@ -193,6 +193,8 @@ def _ride_on_modules(tree: JointTree, on_the_hull: Collection[str], found: int) 
     """As many rotor-named leaves or more are fixed to links that joints move as to the hull:
     the parts every module of a chain carries (a screw-driven snake's `propeller_<n>` on each
     unit, fresh set 1862), not a trimmed multirotor's rotors, which all sit on its hull."""
+    if found == 0:
+        return False
     riding = sum(
         1
         for j in tree.urdf.joints
@@ -202,7 +204,7 @@ def _ride_on_modules(tree: JointTree, on_the_hull: Collection[str], found: int) 
         and tree.matches("rotor", j)
         and not tree.matches("wheel", j)
     )
-    return found > 0 and riding >= found
+    return riding >= found
 
 
 def _discs(tree: JointTree, on_the_hull: Collection[str]) -> list[str]:
