@@ -59,7 +59,7 @@ _HEAD_PARTS = re.compile(r"antenna|(^|[_/])ears?([_/]|$)|eyelid|eyebrow", re.IGN
 _FINGER = re.compile(r"finger|thumb|knuckle|phalan", re.IGNORECASE)
 # A link named as a hand, and the names of a hand's parts that are no whole arm.
 _HAND = re.compile(r"(^|[_/lr])hand([_/]|$)", re.IGNORECASE)
-_NOT_A_HAND = re.compile(r"finger|thumb|knuckle|phalan|palm|jaw|claw|grip", re.IGNORECASE)
+_NOT_A_HAND = re.compile(rf"{_FINGER.pattern}|palm|jaw|claw|grip", re.IGNORECASE)
 # A hand's bones, as a display hand names its fingers' joints and links (``metacarpals``,
 # ``proximal``, ``intermediate``, ``distal``, a phalanx): a chain of them one joint longer than a
 # finger is one (:func:`_finger_like`).
@@ -522,26 +522,14 @@ def _one_chain_below(tree: JointTree, joint: Joint) -> list[Joint]:
     chain: list[Joint] = []
     link = joint.child
     while True:
-        below = _nearest_movable(tree, link)
+        rigid = (link, *tree.urdf.fixed_below(link))
+        below = [j for part in rigid for j in tree.urdf.children(part) if j.movable]
         if not below:
             return chain
         if len(below) > 1:
             return []
         chain.append(below[0])
         link = below[0].child
-
-
-def _nearest_movable(tree: JointTree, link: str) -> list[Joint]:
-    """The movable joints nearest below ``link``, through fixed ones."""
-    found: list[Joint] = []
-    stack = [link]
-    while stack:
-        for child in tree.urdf.children(stack.pop()):
-            if child.movable:
-                found.append(child)
-            else:
-                stack.append(child.child)
-    return found
 
 
 def _carried(tree: JointTree, joints: list[Joint]) -> Counter[str]:

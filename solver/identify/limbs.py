@@ -2612,8 +2612,7 @@ def _tool_frame_at(tree: JointTree, last: Joint) -> str:
     """The first link fixed below ``last`` (or its own child) named as an arm's tool frame
     (:data:`_TOOL_FRAME`: ``tool0``, ``flange``, ``tcp``, ``ee_link``, ``end_effector``), where
     an arm's controllers aim it; empty when there is none."""
-    below = [last.child, *islice(tree.urdf.fixed_below(last.child), _MOST_TOOL_LINKS)]
-    return next((name for name in below if _TOOL_FRAME.search(name)), "")
+    return next((name for name in _rigid_end(tree, last) if _TOOL_FRAME.search(name)), "")
 
 
 # An arm's tool frame, by the names industrial and MoveIt descriptions give it.
@@ -3581,10 +3580,15 @@ def _carries_a_sensor(tree: JointTree, last: Joint) -> bool:
     """``last`` moves a sensor: one declared on its link or below it (:func:`points_a_sensor`),
     or its link or one fixed below it named as a camera's or a sensor's frame
     (:func:`_names_a_sensor_frame`: a ``zed2`` or ``velodyne`` frame on a mast's head)."""
-    links = [last.child, *islice(tree.urdf.fixed_below(last.child), _MOST_TOOL_LINKS)]
     return points_a_sensor(tree, last) or any(
-        _CAMERA.search(name) or _names_a_sensor_frame(tree, name) for name in links
+        _CAMERA.search(name) or _names_a_sensor_frame(tree, name) for name in _rigid_end(tree, last)
     )
+
+
+def _rigid_end(tree: JointTree, last: Joint) -> list[str]:
+    """``last``'s link and the links fixed below it, :data:`_MOST_TOOL_LINKS` of those at most:
+    the part the chain's last joint moves, where a tool, a sensor or a tool frame sits."""
+    return [last.child, *islice(tree.urdf.fixed_below(last.child), _MOST_TOOL_LINKS)]
 
 
 def _names_a_sensor_frame(tree: JointTree, name: str) -> bool:

@@ -173,38 +173,33 @@ def fixed_rotors(tree: JointTree) -> list[str]:
     # a wheel would be modelled (a wheel link), so it is a propeller's (a quadcopter of fixed
     # arm and motor links that a force plugin moves).
     still = not any(j.movable for j in tree.urdf.joints)
+    leaves = [
+        j
+        for j in tree.urdf.joints
+        if j.type == "fixed" and not tree.urdf.children(j.child) and not tree.matches("wheel", j)
+    ]
     found = [
         j.name
-        for j in tree.urdf.joints
-        if j.type == "fixed"
-        and not tree.urdf.children(j.child)
-        and j.parent in on_the_hull
-        and not tree.matches("wheel", j)
+        for j in leaves
+        if j.parent in on_the_hull
         and (tree.matches("rotor", j) or (still and MOTOR.search(f"{j.name} {j.child}")))
     ]
     if still and len(found) < tree.profile.limb("min_rotors"):
         found = _discs(tree, on_the_hull)
-    if _ride_on_modules(tree, on_the_hull, len(found)):
+    if _ride_on_modules(tree, leaves, on_the_hull, len(found)):
         return []
     return found if len(found) >= tree.profile.limb("min_rotors") else []
 
 
-def _ride_on_modules(tree: JointTree, on_the_hull: Collection[str], found: int) -> bool:
-    """As many rotor-named leaves or more are fixed to links that joints move as to the hull:
-    the parts every module of a chain carries (a screw-driven snake's `propeller_<n>` on each
-    unit, fresh set 1862), not a trimmed multirotor's rotors, which all sit on its hull."""
-    if found == 0:
-        return False
-    riding = sum(
-        1
-        for j in tree.urdf.joints
-        if j.type == "fixed"
-        and not tree.urdf.children(j.child)
-        and j.parent not in on_the_hull
-        and tree.matches("rotor", j)
-        and not tree.matches("wheel", j)
-    )
-    return riding >= found
+def _ride_on_modules(
+    tree: JointTree, leaves: list[Joint], on_the_hull: Collection[str], found: int
+) -> bool:
+    """As many rotor-named ``leaves`` (fixed leaf joints) or more are fixed to links that joints
+    move as to the hull: the parts every module of a chain carries (a screw-driven snake's
+    `propeller_<n>` on each unit, fresh set 1862), not a trimmed multirotor's rotors, which all
+    sit on its hull."""
+    riding = sum(1 for j in leaves if j.parent not in on_the_hull and tree.matches("rotor", j))
+    return found > 0 and riding >= found
 
 
 def _discs(tree: JointTree, on_the_hull: Collection[str]) -> list[str]:
