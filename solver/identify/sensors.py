@@ -124,6 +124,9 @@ _ZED_NAME = re.compile(r"(^|[_/-])zed", re.IGNORECASE)
 # stereo_image_proc's layout; ``/front_stereo/left``, ``/stereo_camera/right``), not
 # ``stereographic``.
 _STEREO_TOPIC = re.compile(r"(^|[^a-z])stereo([^a-z]|$)", re.IGNORECASE)
+# The streams a stereo camera's eye gives: images, and depth where the simulation computes it
+# on one eye's frame.
+_EYES = frozenset({"camera", "depth_camera"})
 # The widest baseline of a stereo camera (metres): two frames farther apart are two cameras.
 _BASELINE = 0.3
 # A horizontal fan of rays narrower than this (radians, twenty degrees) points one way: a range
@@ -716,10 +719,13 @@ def _stereo_pairs(found: list[Detection], urdf: Urdf) -> list[Detection]:
     and facing one way (:func:`_side_by_side`); or on
     one frame named for a camera, not the root, named for one device and then a side
     (``nav_cam/left`` and ``nav_cam/right``, a stereo head's two channels; ``left_eye_camera``
-    and ``right_eye_camera`` are two eyes: :func:`_stereo_head`)."""
+    and ``right_eye_camera`` are two eyes: :func:`_stereo_head`). One of the two may be a
+    depth stream (a simulated eye that also gives the pair's depth, as a ZED's left one does;
+    two depth cameras are two), and any other camera or depth stream on an eye's own frame is
+    one of the pair's (a raw and a rectified image of one eye)."""
     pairs: dict[tuple[str, str, str], list[Detection]] = {}  # (by what, name, frame)
     for detection in found:
-        key = _pair_key(detection, urdf) if detection.kind == "camera" else None
+        key = _pair_key(detection, urdf) if detection.kind in _EYES else None
         if key is not None:
             pairs.setdefault(key, []).append(detection)
     # Topics or ZED names that pair no two cameras (two rigs of one macro, each on its own
@@ -735,18 +741,27 @@ def _stereo_pairs(found: list[Detection], urdf: Urdf) -> list[Detection]:
     known: dict[str, str | None] = {}  # link -> the nearest movable joint above it
     merged: dict[int, list[Detection]] = {}
     for key, pair in pairs.items():
-        if len(pair) != 2:
+        if len(pair) != 2 or all(d.kind == "depth_camera" for d in pair):
             continue
         if key[0] in ("frame", "topic", "zed"):
             poses = poses or [Poses(urdf)]
             if not _side_by_side(pair[0], pair[1], poses[0], known):
                 continue
         merged.update({id(d): pair for d in pair})
+    return _paired(found, merged)
+
+
+def _paired(found: list[Detection], merged: dict[int, list[Detection]]) -> list[Detection]:
+    """``found`` with each pair of ``merged`` (by its detections' ids) one stereo camera, where
+    its first was, and the other streams on an eye's own frame dropped (a pair on one frame, a
+    head's, shares it with other cameras)."""
+    eyes = {d.link for pair in merged.values() if pair[0].link != pair[1].link for d in pair}
     kept = []
     for detection in found:
         both = merged.get(id(detection))
         if both is None:
-            kept.append(detection)
+            if detection.kind not in _EYES or detection.link not in eyes:
+                kept.append(detection)
         elif detection is both[0]:
             kept.append(
                 Detection("stereo_camera", _pair_name(*both), detection.source, detection.link)

@@ -465,6 +465,28 @@ def test_a_zeds_two_sided_cameras_are_one_stereo_camera() -> None:
     ]
 
 
+def zed_eyes(left: tuple[str, ...], right: tuple[str, ...]) -> list[str]:
+    """A ZED 2 whose eyes' frames, 12 cm apart, carry the streams named (``raw``: a camera
+    ``zed2_<side>_raw_camera``; ``rect``: a camera ``zed2_<side>_camera``; ``depth``: a depth
+    sensor ``zed2_<side>_camera``); the kinds read."""
+    robot = builders.ugv()
+    for side, y, streams in (("left", 0.06, left), ("right", -0.06, right)):
+        frame = f"{side}_camera_link"
+        builders.placed(robot, f"{side}_joint", "fixed", "base_link", frame, xyz=f"0 {y} 0.3")
+        for stream in streams:
+            name = f"zed2_{side}_raw_camera" if stream == "raw" else f"zed2_{side}_camera"
+            kind = "depth" if stream == "depth" else "camera"
+            robot.add(builders.gazebo_sensor(frame, kind, name))
+    return [d.kind for d in sensors_from_urdf(parse_urdf(robot.text()), load_profile())]
+
+
+def test_a_zed_whose_left_eye_gives_the_depth_is_one_stereo_camera() -> None:
+    # A simulated ZED 2: raw and depth streams on the left eye, raw and rectified on the right.
+    assert zed_eyes(("raw", "depth"), ("raw", "rect")) == ["stereo_camera"]
+    # Both eyes simulated as depth sensors: two depth cameras, no camera to pair.
+    assert zed_eyes(("depth",), ("depth",)) == ["depth_camera", "depth_camera"]
+
+
 def test_two_zeds_cameras_far_apart_looking_away_stay_two_cameras() -> None:
     robot = builders.ugv()
     for side, y, yaw in (("left", 0.4, 1.57), ("right", -0.4, -1.57)):
