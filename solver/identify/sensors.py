@@ -108,6 +108,8 @@ _VIEWING = frozenset(
         "radar",
     }
 )
+# A depth stream named for an RGB-D camera, a device of its own (not a stereo pair's depth).
+_RGBD_DEVICE = re.compile(r"xtion|kinect|realsense|primesense|orbbec|(^|[_/-])astra", re.IGNORECASE)
 # A link that is a camera's own body (its streams' frames are fixed to it), by its name.
 _CAMERA_BODY = re.compile(r"camera|realsense|kinect|openni|xtion", re.IGNORECASE)
 # A side of a stereo pair in a sensor name: l, r, left or right between separators.
@@ -827,12 +829,21 @@ def _side_by_side(
 def _stereo_depth(found: list[Detection], urdf: Urdf) -> list[Detection]:
     """A depth stream on the frame of a stereo camera, or on a frame fixed to it within
     :data:`STREAM_REACH` and facing its way (either above the other), is the depth the pair
-    computes: one stereo camera. Linear: a set of the stereo cameras' links, one joint up and
-    the joints down from each depth stream's link."""
+    computes: one stereo camera, unless it is named for an RGB-D camera of its own
+    (:data:`_RGBD_DEVICE`: an ASUS Xtion on a head beside its stereo pair). Linear: a set of the
+    stereo cameras' links, one joint up and the joints down from each depth stream's link."""
     stereo = {d.link for d in found if d.kind == "stereo_camera" and d.link is not None}
     if not stereo:
         return found
-    return [d for d in found if not (d.kind == "depth_camera" and _beside_stereo(d, stereo, urdf))]
+    return [
+        d
+        for d in found
+        if not (
+            d.kind == "depth_camera"
+            and _RGBD_DEVICE.search(d.name) is None
+            and _beside_stereo(d, stereo, urdf)
+        )
+    ]
 
 
 def _beside_stereo(detection: Detection, stereo: set[str], urdf: Urdf) -> bool:

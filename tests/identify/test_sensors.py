@@ -1165,19 +1165,29 @@ def test_a_camera_element_with_a_colour_plugin_is_a_camera_whatever_the_product_
     assert kinds(kinect) == [("depth_camera", "RGB-D Camera", 1)]
 
 
-def stereo_with_depth(depth_origin: str) -> list[tuple[str, str | None, int]]:
+def stereo_with_depth(
+    depth_origin: str, depth: str = "zed_depth"
+) -> list[tuple[str, str | None, int]]:
     """A stereo pair on a camera's centre frame and a depth stream on a frame fixed to it."""
     robot = builders.ugv()
     robot.joint("center_joint", "fixed", robot.root, "zed_center", '<origin xyz="0.2 0 0.4"/>')
     robot.joint("pair_joint", "fixed", "zed_center", "zed_pair", f'<origin xyz="{depth_origin}"/>')
     robot.add(builders.gazebo_sensor("zed_pair", "multicamera", "zed_stereo"))
-    robot.add(builders.gazebo_sensor("zed_center", "depth", "zed_depth"))
+    robot.add(builders.gazebo_sensor("zed_center", "depth", depth))
     return [(s.kind, s.sensor_type, s.count) for s in identify_urdf(robot.text()).sensors]
 
 
 def test_a_depth_stream_beside_a_stereo_pair_is_the_pairs_depth_one_device() -> None:
     assert stereo_with_depth("0.01 0 0.01") == [("stereo_camera", "3D Camera", 1)]
     assert sorted(stereo_with_depth("0.5 0 0")) == [  # half a metre apart: two devices
+        ("depth_camera", "RGB-D Camera", 1),
+        ("stereo_camera", "3D Camera", 1),
+    ]
+
+
+def test_an_rgbd_cameras_depth_beside_a_stereo_pair_is_a_device_of_its_own() -> None:
+    # A head carrying a stereo pair and an ASUS Xtion on one frame.
+    assert sorted(stereo_with_depth("0.01 0 0.01", depth="asus_xtion_depth")) == [
         ("depth_camera", "RGB-D Camera", 1),
         ("stereo_camera", "3D Camera", 1),
     ]
