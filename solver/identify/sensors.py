@@ -135,6 +135,8 @@ _BASELINE = 0.3
 # finder's beam or cone, one distance. A lidar sweeps wider: every labelled ray sensor of the
 # development rows this narrow is a range finder, a sonar or a DVL's beam (docs/identify.md).
 _POINT_SWEEP = math.radians(20.0)
+# The element types of a sensor that casts rays (Gazebo's and Gazebo Sim's spellings).
+_RANGING = frozenset({"ray", "gpu_ray", "lidar", "gpu_lidar", "sonar"})
 # A Gazebo plugin that casts rays (gazebo_ros_ray_sensor, a GPU ray sensor).
 _RAY_PLUGIN = re.compile(r"(^|[^a-z])(gpu_?)?ray([^a-z]|$)", re.IGNORECASE)
 
@@ -897,7 +899,10 @@ def _above(link: str, urdf: Urdf) -> list[str]:
 
 
 def element_kind(tag: SensorTag, profile: Profile) -> str:
-    """The kind of device a sensor element is, by the profile's element rules."""
+    """The kind of device a sensor element is, by the profile's element rules: first those
+    that read names, on what names the device itself; then, for a ray sensor, on what it
+    publishes too (a one-ray Gazebo Sim ``gpu_lidar`` publishing on ``.../sonar``); then those
+    that read its rays, reach or field of view; then names anywhere (a plugin's settings)."""
     kind = tag.type or "unknown"  # a URDF <sensor> with no kind element: told by its name
     # Gazebo Sim's `custom` sensor is a plugin's own device (RGL's GPU lidar): told by its
     # names as one with no kind element is; a kind they do not tell stays `custom`.
@@ -905,8 +910,17 @@ def element_kind(tag: SensorTag, profile: Profile) -> str:
     rays = _rays(tag)
     fov = tag.horizontal_fov
     reach = tag.max_range
-    for rule in profile.element_rules:
+    named = [rule for rule in profile.element_rules if rule.match is not None]
+    for rule in named:
         if rule.accepts(asked, tag.device_text, rays=rays, fov=fov, reach=reach):
+            return rule.kind
+    if asked in _RANGING:  # where a ranging device publishes says it, before its rays do
+        published = " ".join([tag.topic, *(_topic(plugin) or "" for plugin in tag.plugins)])
+        for rule in named:
+            if rule.accepts(asked, published, rays=rays, fov=fov, reach=reach):
+                return rule.kind
+    for rule in profile.element_rules:
+        if rule.match is None and rule.accepts(asked, "", rays=rays, fov=fov, reach=reach):
             return rule.kind
     for rule in profile.element_rules:  # topic names last
         if rule.match is not None and rule.accepts(

@@ -1205,6 +1205,23 @@ def test_gazebo_sims_lidar_spelling_of_a_ray_sensor_is_told_apart_by_the_same_wo
     assert found == [("ir_range", None, 1), ("sonar", None, 1), ("lidar", "LIDAR", 1)]
 
 
+def test_a_one_ray_rangers_own_topic_says_its_device_before_its_one_ray_does() -> None:
+    # Gazebo Sim's one-ray gpu_lidar named for nothing, publishing on `.../sonar`: a sonar; with
+    # a topic that names nothing, a range finder by its one ray. A camera publishing on a depth
+    # topic stays a camera (topics are what a device feeds, read for rangers only).
+    one_ray = "<lidar><scan><horizontal><samples>1</samples></horizontal></scan></lidar>"
+    found = kinds(
+        builders.gazebo_sensor(
+            "front", "gpu_lidar", "gpu_lidar", f"<topic>model/r/sonar</topic>{one_ray}"
+        ),
+        builders.gazebo_sensor(
+            "rear", "gpu_lidar", "gpu_lidar_2", f"<topic>model/r/range</topic>{one_ray}"
+        ),
+        builders.gazebo_sensor("eye", "camera", "eye", "<topic>eye/depth/image</topic>"),
+    )
+    assert found == [("sonar", None, 1), ("ir_range", None, 1), ("camera", "2D Camera", 1)]
+
+
 def test_an_ultrasonic_rangers_name_cut_short_still_says_sonar() -> None:
     # A farm robot's four ultrasonic rangers as gpu_lidars of ten rays over 60 degrees,
     # reaching 4 m: `US1_sensor` on `US1_scan_link`, `ultra_front`. A word holding the letters
