@@ -419,6 +419,12 @@ def test_a_magnetic_plugin_is_a_magnetometer_but_a_magnetic_wheel_is_none() -> N
     assert _kinds(robot.text()) == {"magnetometer": 4}
 
 
+def test_gazebos_logical_camera_is_the_camera_a_robot_detects_objects_with() -> None:
+    robot = builders.ugv()
+    robot.add(builders.gazebo_sensor("gripper", "logical_camera", "gripper_logical_camera"))
+    assert _kinds(robot.text()) == {"camera": 1}
+
+
 def test_a_wind_sensor_plugin_is_an_anemometer() -> None:
     robot = builders.surface_vessel()
     robot.add(builders.model_plugin("wind_sensor", "libWindSensorPlugin.so"))
