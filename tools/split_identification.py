@@ -87,7 +87,7 @@ MOVED_ON |= dict.fromkeys(range(525, 559), "2026-12-06")
 MOVED_ON |= dict.fromkeys(range(559, 995), "2026-12-06")
 MOVED_ON |= dict.fromkeys(range(995, 1789), "2026-12-07")
 MOVED_ON |= dict.fromkeys(range(1789, 1891), "2026-12-08")
-MOVED_ON |= dict.fromkeys(range(1891, 1897), "2026-12-08")
+MOVED_ON |= dict.fromkeys(range(1891, 1898), "2026-12-08")
 # Sets labelled from a brief rewritten on a new machine (the earlier one lost with the old).
 REWRITTEN = frozenset({278, 328})
 LAST_MOVED = max(MOVED_ON)
