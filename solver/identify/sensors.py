@@ -759,7 +759,13 @@ def _paired(found: list[Detection], merged: dict[int, list[Detection]]) -> list[
     """``found`` with each pair of ``merged`` (by its detections' ids) one stereo camera, where
     its first was, and the other streams on an eye's own frame dropped (a pair on one frame, a
     head's, shares it with other cameras)."""
-    eyes = {d.link for pair in merged.values() if pair[0].link != pair[1].link for d in pair}
+    eyes = {
+        d.link
+        for pair in merged.values()
+        if pair[0].link != pair[1].link
+        for d in pair
+        if d.link is not None
+    }
     kept = []
     for detection in found:
         both = merged.get(id(detection))
